@@ -121,8 +121,9 @@ def check_conventions(obj: xr.Dataset | xr.DataTree) -> None:
             numeric = var.dtype.kind in "iufcbmM"
             if not is_index_dim or numeric:
                 for key in ("units", "long_name"):
-                    if key not in var.attrs and not (is_index_dim and key == "units"
-                                                      and not numeric):
+                    if key not in var.attrs and not (
+                        is_index_dim and key == "units" and not numeric
+                    ):
                         problems.append(f"{path}:{name} has no {key!r}")
             for key, val in var.attrs.items():
                 try:

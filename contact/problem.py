@@ -1,0 +1,362 @@
+"""The loaded-contact problem of a gear mesh and its certified solution.
+
+At one pinion roll position the N contact segments of all tooth pairs that may
+share the load satisfy (seed Eq. 3.12–3.14, after Conry & Seireg 1972)::
+
+    compatibility   C F + s − R Θ = Y,   Y ≥ 0
+    complementarity F ≥ 0,  F·Y = 0
+    equilibrium     Rᵀ F = T
+
+with C the total compliance [mm/N], s the initial separations [mm], R the moment
+arms about the gear axis [mm], T the gear torque [N·mm], F the segment forces [N],
+Y the gaps after loading [mm] and Θ the gear's rigid-body rotation [rad] — the
+loaded transmission error. For symmetric positive definite C these are the KKT
+conditions of the convex QP
+
+    minimise ½ Fᵀ C F + sᵀ F   subject to  F ≥ 0,  Rᵀ F = T
+
+whose equality multiplier is Θ. The seed's Eq. 3.12–3.14 are garbled in the
+text extraction; the form above is the reading adopted in ``DESIGN.md``.
+
+Residuals are always computed here from the returned F and Θ, never taken from
+a backend (:func:`contact_residuals`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import scipy.linalg
+
+from contact.errors import NotPositiveDefiniteError, ProblemInputError
+
+__all__ = [
+    "DEFAULT_TOLERANCE",
+    "ContactProblem",
+    "ContactSolution",
+    "ProblemScale",
+    "contact_residuals",
+    "solve_on_contact_set",
+]
+
+#: Relative tolerance on each of the four residuals for a solution to count as found.
+#: 1e-7 is far below what any physical input is known to (compliances to ~1 %,
+#: separations to ~0.1 µm of a ~10 µm scale) and above what double precision
+#: reaches on the reduced KKT system for condition numbers up to ~1e8.
+DEFAULT_TOLERANCE = 1e-7
+
+
+def _as_float_array(name: str, value: Any, ndim: int) -> np.ndarray:
+    try:
+        arr = np.array(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ProblemInputError(
+            f"{name}: must be a numeric array, got {type(value).__name__}"
+        ) from exc
+    if arr.ndim != ndim:
+        raise ProblemInputError(f"{name}: must be {ndim}-dimensional, got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        bad = int(np.size(arr) - np.count_nonzero(np.isfinite(arr)))
+        raise ProblemInputError(f"{name}: must be finite, found {bad} NaN or infinite entries")
+    return arr
+
+
+@dataclass(frozen=True)
+class ProblemScale:
+    """Reference magnitudes that make a contact problem dimensionless.
+
+    Attributes
+    ----------
+    force : float — [N]
+        f₀ = T / Σ R⁺, the segment force if every segment with a positive moment
+        arm carried an equal share.
+    length : float — [mm]
+        δ₀ = f₀ · mean(diag C), the deflection of one segment under f₀.
+    arm : float — [mm]
+        r₀ = max |R|.
+    """
+
+    force: float
+    length: float
+    arm: float
+
+    @property
+    def rotation(self) -> float:
+        """Θ₀ = δ₀ / r₀ — [rad]."""
+        return self.length / self.arm
+
+
+@dataclass(frozen=True, eq=False)
+class ContactProblem:
+    """The loaded-contact problem at one roll position (seed Eq. 3.12–3.14).
+
+    Parameters
+    ----------
+    compliance : array_like, shape (N, N) — [mm/N]
+        Total compliance C: deflection along the contact normal at segment i due to
+        a unit force at segment j (pinion + gear bending/shear + contact + base).
+        Symmetrised on construction, ½(C + Cᵀ); the relative asymmetry
+        ‖C − Cᵀ‖_F / ‖C‖_F is kept in :attr:`asymmetry`.
+    separation : array_like, shape (N,) — [mm]
+        Initial separations s (ease-off relative to the unloaded transmission error).
+    moment_arm : array_like, shape (N,) — [mm]
+        Moment arms R of the segment normals about the gear axis; at least one > 0.
+    torque : float — [N·mm]
+        Gear torque T > 0.
+    name : str, optional
+        Label used in reports.
+
+    Raises
+    ------
+    ProblemInputError
+        Wrong shapes, non-finite entries, no positive moment arm, T ≤ 0 or N = 0.
+    NotPositiveDefiniteError
+        C (after symmetrisation) is not positive definite: its Cholesky fails.
+    """
+
+    compliance: np.ndarray
+    separation: np.ndarray
+    moment_arm: np.ndarray
+    torque: float
+    name: str = ""
+    asymmetry: float = field(init=False)
+    scale: ProblemScale = field(init=False)
+
+    def __post_init__(self) -> None:
+        C = _as_float_array("compliance", self.compliance, 2)
+        s = _as_float_array("separation", self.separation, 1)
+        R = _as_float_array("moment_arm", self.moment_arm, 1)
+        n = s.size
+        if n == 0:
+            raise ProblemInputError("separation: needs at least one segment, got 0")
+        if C.shape != (n, n):
+            raise ProblemInputError(
+                f"compliance: must be square N×N with N = len(separation) = {n}, got {C.shape}"
+            )
+        if R.shape != (n,):
+            raise ProblemInputError(f"moment_arm: must have shape ({n},), got {R.shape}")
+        if not np.any(R > 0):
+            raise ProblemInputError(
+                "moment_arm: at least one entry must be > 0 (no segment can carry the torque)"
+            )
+        try:
+            T = float(self.torque)
+        except (TypeError, ValueError) as exc:
+            raise ProblemInputError(
+                f"torque: must be a number [N·mm], got {self.torque!r}"
+            ) from exc
+        if not math.isfinite(T) or T <= 0:
+            raise ProblemInputError(f"torque: must be finite and > 0 [N·mm], got {T}")
+        norm = np.linalg.norm(C)
+        if norm == 0:
+            raise NotPositiveDefiniteError("compliance: is the zero matrix, not positive definite")
+        asym = float(np.linalg.norm(C - C.T) / norm)
+        C = 0.5 * (C + C.T)
+        try:
+            np.linalg.cholesky(C)
+        except np.linalg.LinAlgError as exc:
+            eig_min = float(np.linalg.eigvalsh(C)[0])
+            raise NotPositiveDefiniteError(
+                "compliance: is not positive definite (Cholesky failed; smallest eigenvalue "
+                f"{eig_min:.3e} mm/N); a physical compliance matrix must be SPD"
+            ) from exc
+        for arr in (C, s, R):
+            arr.setflags(write=False)
+        f0 = T / float(R[R > 0].sum())
+        d0 = f0 * float(np.mean(np.diag(C)))
+        r0 = float(np.max(np.abs(R)))
+        object.__setattr__(self, "compliance", C)
+        object.__setattr__(self, "separation", s)
+        object.__setattr__(self, "moment_arm", R)
+        object.__setattr__(self, "torque", T)
+        object.__setattr__(self, "asymmetry", asym)
+        object.__setattr__(self, "scale", ProblemScale(force=f0, length=d0, arm=r0))
+
+    @property
+    def size(self) -> int:
+        """Number of segments N."""
+        return int(self.separation.size)
+
+    def gap(self, force: np.ndarray, rotation: float) -> np.ndarray:
+        """Gaps after loading Y = C F + s − R Θ — [mm], shape (N,) (seed Eq. 3.13)."""
+        return self.compliance @ force + self.separation - self.moment_arm * rotation
+
+    def scaled(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+        """The dimensionless QP handed to backends.
+
+        With f₀, δ₀, r₀ from :attr:`scale`: C̃ = C f₀/δ₀, s̃ = s/δ₀, R̃ = R/r₀,
+        T̃ = T/(r₀ f₀); then F = f₀ F̃ and Θ = (δ₀/r₀) Θ̃. Absolute tolerances of a
+        backend then mean the same for every case.
+
+        Returns
+        -------
+        (C̃ (N, N), s̃ (N,), R̃ (N,), T̃)
+        """
+        sc = self.scale
+        return (
+            self.compliance * (sc.force / sc.length),
+            self.separation / sc.length,
+            self.moment_arm / sc.arm,
+            self.torque / (sc.arm * sc.force),
+        )
+
+    def with_torque(self, torque: float) -> ContactProblem:
+        """The same contact with another torque [N·mm]."""
+        return dataclasses.replace(self, torque=torque)
+
+
+def contact_residuals(
+    problem: ContactProblem, force: np.ndarray, rotation: float
+) -> dict[str, float]:
+    """Relative residuals of the four contact conditions, computed from F and Θ.
+
+    With Y = C F + s − R Θ, reference force f = max(‖F‖∞, f₀) and reference length
+    d = max(‖C F‖∞, |Θ| ‖R‖∞, δ₀):
+
+    - ``primal``: ‖min(F, 0)‖∞ / f — forces are compressive (F ≥ 0);
+    - ``dual``: ‖min(Y, 0)‖∞ / d — no penetration after loading (Y ≥ 0);
+    - ``complementarity``: maxᵢ min(Fᵢ⁺/f, Yᵢ⁺/d) — no segment both loaded and open;
+    - ``equilibrium``: |Rᵀ F − T| / T (seed Eq. 3.14).
+
+    Parameters
+    ----------
+    problem : ContactProblem
+    force : array, shape (N,) — [N]
+    rotation : float — [rad]
+
+    Returns
+    -------
+    dict of str to float
+        Non-finite inputs give ``inf`` residuals, never NaN.
+    """
+    F = np.asarray(force, dtype=float)
+    if F.shape != (problem.size,) or not np.all(np.isfinite(F)) or not np.isfinite(rotation):
+        return {k: math.inf for k in ("primal", "dual", "complementarity", "equilibrium")}
+    sc = problem.scale
+    CF = problem.compliance @ F
+    Y = CF + problem.separation - problem.moment_arm * rotation
+    f_ref = max(float(np.max(np.abs(F))), sc.force)
+    d_ref = max(
+        float(np.max(np.abs(CF))),
+        abs(rotation) * float(np.max(np.abs(problem.moment_arm))),
+        sc.length,
+    )
+    return {
+        "primal": float(np.max(np.maximum(-F, 0.0))) / f_ref,
+        "dual": float(np.max(np.maximum(-Y, 0.0))) / d_ref,
+        "complementarity": float(
+            np.max(np.minimum(np.maximum(F, 0.0) / f_ref, np.maximum(Y, 0.0) / d_ref))
+        ),
+        "equilibrium": abs(float(problem.moment_arm @ F) - problem.torque) / problem.torque,
+    }
+
+
+def solve_on_contact_set(
+    problem: ContactProblem, active: np.ndarray
+) -> tuple[np.ndarray, float] | None:
+    """Solve the equality-constrained KKT system on a given contact set exactly.
+
+    On the set A of loaded segments: C_AA F_A − R_A Θ = −s_A and R_Aᵀ F_A = T.
+    With one Cholesky factorisation of C_AA and two right-hand sides,
+    x_s = C_AA⁻¹ s_A, x_r = C_AA⁻¹ R_A, the scalar Schur complement gives
+    Θ = (T + R_Aᵀ x_s)/(R_Aᵀ x_r) and F_A = Θ x_r − x_s; F is zero off A.
+
+    Parameters
+    ----------
+    problem : ContactProblem
+    active : bool array, shape (N,)
+        The contact set A.
+
+    Returns
+    -------
+    (F [N] shape (N,), Θ [rad]) or None
+        None when A is empty or R_Aᵀ C_AA⁻¹ R_A ≤ 0 (A cannot carry the torque).
+    """
+    idx = np.flatnonzero(active)
+    if idx.size == 0:
+        return None
+    C_AA = problem.compliance[np.ix_(idx, idx)]
+    rhs = np.column_stack((problem.separation[idx], problem.moment_arm[idx]))
+    try:
+        factor = scipy.linalg.cho_factor(C_AA, lower=True, check_finite=False)
+        x = scipy.linalg.cho_solve(factor, rhs, check_finite=False)
+    except (np.linalg.LinAlgError, ValueError):
+        return None
+    R_A = problem.moment_arm[idx]
+    schur = float(R_A @ x[:, 1])
+    sc = problem.scale
+    if not schur > 1e-14 * sc.arm**2 / (sc.length / sc.force):
+        return None
+    theta = (problem.torque + float(R_A @ x[:, 0])) / schur
+    F = np.zeros(problem.size)
+    F[idx] = theta * x[:, 1] - x[:, 0]
+    return F, theta
+
+
+@dataclass(frozen=True, eq=False)
+class ContactSolution:
+    """A solution of :class:`ContactProblem`, certified by our own residuals.
+
+    Attributes
+    ----------
+    force : ndarray, shape (N,) — [N]
+        Segment forces F.
+    rotation : float — [rad]
+        Gear rigid-body rotation Θ: the loaded transmission error.
+    slack : ndarray, shape (N,) — [mm]
+        Gaps after loading Y = C F + s − R Θ.
+    found : bool
+        True only if every residual ≤ ``tolerance`` (checked here, not by the backend).
+    status : str
+        ``"solved"``, ``"solved (polished)"``, or why not.
+    solver : str
+        Registry name of the backend.
+    build_time, solve_time : float — [s]
+        Problem conversion (scaling, dense → sparse) and backend wall time.
+    residuals : dict of str to float
+        ``primal``, ``dual``, ``complementarity``, ``equilibrium`` (see
+        :func:`contact_residuals`).
+    tolerance : float
+        The tolerance ``found`` was judged against.
+    iterations : int
+        Backend iterations where reported (-1 otherwise).
+    extras : dict
+        Backend-specific information (e.g. raw residuals before polishing).
+    """
+
+    force: np.ndarray
+    rotation: float
+    slack: np.ndarray
+    found: bool
+    status: str
+    solver: str
+    build_time: float
+    solve_time: float
+    residuals: Mapping[str, float]
+    tolerance: float = DEFAULT_TOLERANCE
+    iterations: int = -1
+    extras: Mapping[str, Any] = field(default_factory=dict)
+
+    @property
+    def active_set(self) -> np.ndarray:
+        """Segments in contact, shape (N,) bool: a warm start for the next roll position.
+
+        A segment is in contact when its force exceeds ``tolerance`` times the
+        largest force: interior-point and first-order backends leave forces of
+        round-off size on open segments, which certification bounds by the same
+        tolerance (complementarity residual).
+        """
+        F = self.force
+        if not np.all(np.isfinite(F)):
+            return np.zeros(F.shape, dtype=bool)
+        return F > self.tolerance * max(float(np.max(F)), 0.0)
+
+    @property
+    def max_residual(self) -> float:
+        """The largest of the four relative residuals."""
+        return max(self.residuals.values())

@@ -1,0 +1,287 @@
+"""One registry of interchangeable solvers for the loaded-contact problem.
+
+``available_solvers()`` lists every backend that works here: our own exact
+solver ``active_set`` (the default and the reference), each installed
+``qpsolvers`` backend by its qpsolvers name, ``cvxpy`` and ``cvxpy:NAME``.
+``solve_contact(problem, solver=NAME)`` runs one, optionally polishes its answer
+(the reduced KKT system on its contact set, solved exactly) and certifies the
+result with our own residuals: ``found`` is never taken from a backend.
+
+Modelled on qpsolvers' registry (Caron et al.): backends register under
+try/except so a missing package removes a backend instead of breaking import.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import time
+from functools import cache
+from typing import Any
+
+import numpy as np
+
+from contact.errors import SolverNotFoundError
+from contact.problem import (
+    DEFAULT_TOLERANCE,
+    ContactProblem,
+    ContactSolution,
+    contact_residuals,
+    solve_on_contact_set,
+)
+from contact.solvers.active_set import block_pivoting
+from contact.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
+
+__all__ = [
+    "DEFAULT_SOLVER",
+    "available_solvers",
+    "get_backend",
+    "polish",
+    "solve_contact",
+]
+
+log = logging.getLogger(__name__)
+
+#: The default solver: our own exact block-pivoting method.
+DEFAULT_SOLVER = "active_set"
+
+
+def _solve_active_set(
+    problem: ContactProblem,
+    *,
+    accuracy: str = "high",
+    initial: np.ndarray | None = None,
+    initial_active_set: np.ndarray | None = None,
+    max_iterations: int = 50,
+    fallback: bool = True,
+) -> RawResult:
+    del accuracy  # exact method: the accuracy level does not apply
+    if initial_active_set is None and initial is not None:
+        initial_active_set = np.asarray(initial) > 0
+    out = block_pivoting(
+        problem,
+        initial_active_set=initial_active_set,
+        max_iterations=max_iterations,
+        fallback=fallback,
+    )
+    return RawResult(
+        out["force"],
+        out["rotation"],
+        out["converged"],
+        out["status"],
+        0.0,
+        out["solve_time"],
+        out["iterations"],
+        {"fallback": out["fallback"]},
+    )
+
+
+@cache
+def _registry() -> dict[str, Backend]:
+    reg: dict[str, Backend] = {
+        DEFAULT_SOLVER: Backend(
+            DEFAULT_SOLVER,
+            "active-set",
+            _solve_active_set,
+            True,
+            "exact block principal pivoting on the KKT system (Cholesky per contact set), "
+            "guarded by a primal active-set fallback",
+        )
+    }
+    try:
+        from contact.solvers import qpsolvers_backend
+
+        reg.update({b.name: b for b in qpsolvers_backend.backends()})
+    except Exception as exc:  # pragma: no cover - a broken install must not break the toolkit
+        log.warning("qpsolvers backends unavailable: %s", exc)
+    try:
+        from contact.solvers import cvxpy_backend
+
+        reg.update({b.name: b for b in cvxpy_backend.backends()})
+    except Exception as exc:  # pragma: no cover
+        log.warning("cvxpy backends unavailable: %s", exc)
+    return reg
+
+
+def available_solvers() -> list[str]:
+    """Names of every solver backend that works in this environment.
+
+    Returns
+    -------
+    list of str
+        ``active_set`` first, then qpsolvers backends, then ``cvxpy`` and ``cvxpy:NAME``.
+    """
+    return list(_registry())
+
+
+def get_backend(name: str) -> Backend:
+    """The registered :class:`Backend` for ``name``.
+
+    Raises
+    ------
+    SolverNotFoundError
+        Unknown or uninstalled name; the message lists the available solvers.
+    """
+    reg = _registry()
+    if name not in reg:
+        raise SolverNotFoundError(
+            f"solver {name!r} is not available; available: {', '.join(reg)}. "
+            "qpsolvers backends install from PyPI by their package names "
+            "(e.g. `pip install qpsolvers[open_source_solvers]`)."
+        )
+    return reg[name]
+
+
+def polish(
+    problem: ContactProblem, force: np.ndarray, rotation: float
+) -> tuple[np.ndarray, float] | None:
+    """Polish an approximate solution by solving the KKT system on its contact set exactly.
+
+    The contact set is read from the approximate answer: segment i is taken as in
+    contact when its relative force exceeds its relative gap, Fᵢ/f > Yᵢ/d (the
+    reference magnitudes of :func:`contact_residuals`). The reduced system is
+    solved with :func:`solve_on_contact_set`; the caller keeps the polished answer
+    only if it certifies (complementarity holds).
+
+    Returns
+    -------
+    (F [N], Θ [rad]) or None
+    """
+    F = np.asarray(force, float)
+    sc = problem.scale
+    Y = problem.gap(F, rotation)
+    f_ref = max(float(np.max(np.abs(F))), sc.force)
+    d_ref = max(float(np.max(np.abs(problem.compliance @ F))), sc.length)
+    active = F / f_ref > Y / d_ref
+    return solve_on_contact_set(problem, active)
+
+
+def _certified(res: dict[str, float], tolerance: float) -> bool:
+    return all(math.isfinite(v) and v <= tolerance for v in res.values())
+
+
+def solve_contact(
+    problem: ContactProblem,
+    solver: str = DEFAULT_SOLVER,
+    *,
+    accuracy: str = "high",
+    polish_solution: bool = True,
+    tolerance: float = DEFAULT_TOLERANCE,
+    initial: ContactSolution | np.ndarray | None = None,
+    **options: Any,
+) -> ContactSolution:
+    """Solve the loaded-contact problem with a named backend and certify the answer.
+
+    Parameters
+    ----------
+    problem : ContactProblem
+    solver : str
+        A name from :func:`available_solvers` (default ``active_set``, our exact solver).
+    accuracy : {"high", "default", "low"}
+        Accuracy level mapped onto each backend's own tolerance parameters on the
+        scaled problem (1e-9, backend defaults, 1e-3).
+    polish_solution : bool
+        If the backend's answer does not certify, solve the KKT system on its
+        contact set exactly and keep that if it certifies (default True).
+    tolerance : float
+        Relative tolerance on every residual for ``found`` (default 1e-7).
+    initial : ContactSolution or array (N,) of forces [N], optional
+        Warm start (the previous roll position's solution); ignored by backends
+        that cannot use it.
+    **options
+        Passed to the backend (its own parameter names override the accuracy map;
+        for ``active_set``: ``max_iterations``, ``fallback``).
+
+    Returns
+    -------
+    ContactSolution
+        ``found`` is True only if our own residuals are within ``tolerance``.
+        A backend that raises, returns nothing, or returns an uncertifiable answer
+        gives ``found=False`` with the reason in ``status``; this function does not
+        raise for solver failures.
+
+    Raises
+    ------
+    SolverNotFoundError
+        Unknown solver name.
+    ProblemInputError
+        Unknown accuracy level or a non-positive tolerance.
+    """
+    from contact.errors import ProblemInputError
+
+    backend = get_backend(solver)
+    if accuracy not in ACCURACY_LEVELS:
+        raise ProblemInputError(
+            f"accuracy: must be one of {sorted(ACCURACY_LEVELS)}, got {accuracy!r}"
+        )
+    if not (isinstance(tolerance, (int, float)) and 0 < tolerance < 1):
+        raise ProblemInputError(f"tolerance: must be in (0, 1), got {tolerance!r}")
+    if not isinstance(problem, ContactProblem):
+        raise ProblemInputError(f"problem: must be a ContactProblem, got {type(problem).__name__}")
+    init = initial.force if isinstance(initial, ContactSolution) else initial
+    if init is not None:
+        init = np.asarray(init, float)
+        if init.shape != (problem.size,) or not backend.warm_start:
+            init = None
+    try:
+        raw = backend.solve(problem, accuracy=accuracy, initial=init, **options)
+    except Exception as exc:  # any backend failure becomes a reported, unfound solution
+        log.info("backend %s raised %s: %s", solver, type(exc).__name__, exc)
+        raw = RawResult(None, None, False, f"backend raised {type(exc).__name__}: {exc}", 0.0, 0.0)
+    n = problem.size
+    extras = dict(raw.extras)
+    extras["claimed_success"] = raw.claimed
+    if raw.force is None or raw.rotation is None:
+        nan = np.full(n, np.nan)
+        res = {k: math.inf for k in ("primal", "dual", "complementarity", "equilibrium")}
+        return ContactSolution(
+            nan,
+            math.nan,
+            nan,
+            False,
+            f"failed: {raw.status}",
+            solver,
+            raw.build_time,
+            raw.solve_time,
+            res,
+            tolerance,
+            raw.iterations,
+            extras,
+        )
+    F, theta = np.asarray(raw.force, float), float(raw.rotation)
+    res = contact_residuals(problem, F, theta)
+    status = "solved" if raw.status == "solved" or raw.claimed else raw.status
+    if not _certified(res, tolerance) and polish_solution:
+        t0 = time.perf_counter()
+        pol = polish(problem, F, theta) if np.all(np.isfinite(F)) and math.isfinite(theta) else None
+        extras["polish_time"] = time.perf_counter() - t0
+        raw.solve_time += extras["polish_time"]  # the time to a certified answer includes it
+        if pol is not None:
+            res_p = contact_residuals(problem, *pol)
+            if _certified(res_p, tolerance):
+                extras["raw_residuals"] = res
+                F, theta, res = pol[0], pol[1], res_p
+                status = "solved (polished)"
+    found = _certified(res, tolerance)
+    if not found:
+        worst = max(res, key=res.get)
+        status = (
+            f"not certified: {worst} residual {res[worst]:.2e} > {tolerance:.0e} "
+            f"(backend: {raw.status})"
+        )
+    elif raw.status.startswith("solved") and "fallback" in raw.status:
+        status = raw.status
+    return ContactSolution(
+        force=F,
+        rotation=theta,
+        slack=problem.gap(F, theta),
+        found=found,
+        status=status,
+        solver=solver,
+        build_time=raw.build_time,
+        solve_time=raw.solve_time,
+        residuals=res,
+        tolerance=tolerance,
+        iterations=raw.iterations,
+        extras=extras,
+    )

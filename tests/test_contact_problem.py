@@ -1,0 +1,117 @@
+"""ContactProblem validation and the toolkit's error family."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from contact import (
+    ContactError,
+    ContactProblem,
+    NotPositiveDefiniteError,
+    ProblemInputError,
+    SolverNotFoundError,
+    available_solvers,
+    solve_contact,
+)
+from geometry.errors import InputError, LTCAError
+
+
+def _good(n=4):
+    rng = np.random.default_rng(1)
+    A = rng.normal(size=(n, n))
+    C = A @ A.T + n * np.eye(n)
+    return C * 1e-5, np.linspace(0, 0.01, n), np.full(n, 80.0), 2e5
+
+
+def test_valid_problem_records_symmetrisation():
+    C, s, R, T = _good()
+    Cn = C.copy()
+    Cn[0, 1] += 1e-7
+    p = ContactProblem(Cn, s, R, T)
+    np.testing.assert_allclose(p.compliance, p.compliance.T, rtol=0, atol=0)
+    expected = np.linalg.norm(Cn - Cn.T) / np.linalg.norm(Cn)
+    assert p.asymmetry == pytest.approx(expected, rel=1e-12)
+    assert ContactProblem(C, s, R, T).asymmetry == 0.0
+
+
+def test_problem_arrays_are_read_only():
+    p = ContactProblem(*_good())
+    with pytest.raises(ValueError):
+        p.separation[0] = 1.0
+
+
+@pytest.mark.parametrize(
+    ("mutate", "field"),
+    [
+        (lambda C, s, R, T: (C[:, :-1], s, R, T), "compliance"),
+        (lambda C, s, R, T: (C[0], s, R, T), "compliance"),
+        (lambda C, s, R, T: (C, s[:-1], R, T), "compliance"),
+        (lambda C, s, R, T: (C, s, R[:-1], T), "moment_arm"),
+        (lambda C, s, R, T: (C, np.array([]), np.array([]), T), "separation"),
+        (lambda C, s, R, T: (np.where(np.eye(len(s)) > 0, np.nan, C), s, R, T), "compliance"),
+        (lambda C, s, R, T: (C, np.r_[s[:-1], np.inf], R, T), "separation"),
+        (lambda C, s, R, T: (C, s, -R, T), "moment_arm"),
+        (lambda C, s, R, T: (C, s, np.zeros_like(R), T), "moment_arm"),
+        (lambda C, s, R, T: (C, s, R, 0.0), "torque"),
+        (lambda C, s, R, T: (C, s, R, -5.0), "torque"),
+        (lambda C, s, R, T: (C, s, R, float("nan")), "torque"),
+        (lambda C, s, R, T: (C, s, R, "lots"), "torque"),
+        (lambda C, s, R, T: ("abc", s, R, T), "compliance"),
+    ],
+)
+def test_bad_input_names_the_field(mutate, field):
+    with pytest.raises(ProblemInputError, match=field):
+        ContactProblem(*mutate(*_good()))
+
+
+def test_not_positive_definite_is_refused():
+    C, s, R, T = _good()
+    C = C.copy()
+    C[0, 0] = -1e-3
+    with pytest.raises(NotPositiveDefiniteError, match="not positive definite"):
+        ContactProblem(C, s, R, T)
+    with pytest.raises(NotPositiveDefiniteError):
+        ContactProblem(np.zeros_like(C), s, R, T)
+
+
+def test_errors_are_one_family():
+    assert issubclass(ProblemInputError, ContactError)
+    assert issubclass(ContactError, LTCAError)
+    assert issubclass(ProblemInputError, InputError)
+    assert issubclass(ProblemInputError, ValueError)  # users catching ValueError still work
+    assert issubclass(NotPositiveDefiniteError, ProblemInputError)
+    assert issubclass(SolverNotFoundError, LTCAError)
+
+
+def test_unknown_solver_lists_available():
+    p = ContactProblem(*_good())
+    with pytest.raises(SolverNotFoundError) as info:
+        solve_contact(p, "no-such-solver")
+    for name in available_solvers():
+        assert name in str(info.value)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        ({"accuracy": "extreme"}, "accuracy"),
+        ({"tolerance": 0.0}, "tolerance"),
+        ({"tolerance": 2.0}, "tolerance"),
+    ],
+)
+def test_bad_solve_options(kwargs, field):
+    p = ContactProblem(*_good())
+    with pytest.raises(ProblemInputError, match=field):
+        solve_contact(p, **kwargs)
+
+
+def test_bad_problem_type():
+    with pytest.raises(ProblemInputError, match="problem"):
+        solve_contact({"compliance": 1})
+
+
+def test_at_least_ten_backends_and_ours_first():
+    names = available_solvers()
+    assert names[0] == "active_set"
+    assert len(names) >= 10
