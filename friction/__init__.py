@@ -1,1 +1,5 @@
-"""Mechanical power loss and efficiency: lubricant, film thickness, friction, losses (seed ch. 5)."""
+"""Mechanical power loss and efficiency (seed chapter 5).
+
+Lubricant properties, film thickness and lambda ratio, friction coefficient
+models, rolling loss, power loss and efficiency.
+"""

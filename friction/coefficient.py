@@ -1,0 +1,610 @@
+"""Sliding friction coefficient models, chosen by name from a registry.
+
+The seed (section 5.2.2–5.2.3) computes the sliding friction coefficient μ of each
+contact segment from a regression to mixed-EHL simulations (seed Eq. 5.11). This module
+offers that family of models behind one interface::
+
+    >>> from friction.coefficient import available_friction_models, friction_coefficient
+    >>> available_friction_models()
+    ('benedict_kelley', 'constant', 'xu2007')
+    >>> mu = friction_coefficient("xu2007", hertz_pressure=1000.0, slide_to_roll=0.5,
+    ...                           entraining_velocity=10.0, viscosity=0.0163, radius=20.0,
+    ...                           roughness_1=0.8, roughness_2=0.8)
+    >>> round(mu, 3)
+    0.029
+
+Every model takes keyword inputs from one vocabulary (:data:`STANDARD_INPUTS`, in the
+toolkit's units), so a pipeline can hand all segment quantities to whichever model the
+user names; :func:`friction_coefficient` passes each model the inputs it uses, refuses a
+name outside the vocabulary (a typo), and broadcasts the result to the inputs' shape.
+
+Each model validates its inputs (:class:`InputError` naming the field), warns with
+:class:`FrictionModelRangeWarning` where inputs leave the range the model was fitted on,
+and never returns NaN: where a formula breaks down the value is clipped and the warning
+says so.
+
+``kolivand2009`` (seed Eq. 5.11 with Table 5.3) is registered as *unavailable*: asking
+for it raises :class:`ModelUnavailableError` quoting :data:`UNAVAILABLE_MODELS`.
+"""
+
+from __future__ import annotations
+
+import inspect
+import logging
+import math
+import warnings
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from friction.hertz import _broadcast, _checked, _result
+from geometry.errors import InputError, ModelUnavailableError
+
+__all__ = [
+    "MU_CAP",
+    "STANDARD_INPUTS",
+    "UNAVAILABLE_MODELS",
+    "XU2007_COEFFICIENTS",
+    "FrictionModel",
+    "FrictionModelRangeWarning",
+    "available_friction_models",
+    "benedict_kelley",
+    "constant",
+    "friction_coefficient",
+    "get_friction_model",
+    "unavailable_friction_models",
+    "xu2007",
+]
+
+log = logging.getLogger(__name__)
+
+Array = NDArray[np.float64]
+
+
+class FrictionModelRangeWarning(UserWarning):
+    """Inputs leave the range a friction/lubrication correlation was fitted on.
+
+    The result is still finite (clipped where the formula breaks down, as the message
+    says) but is an extrapolation.
+    """
+
+
+#: The input vocabulary shared by all friction models: name → "[units] meaning".
+STANDARD_INPUTS: Mapping[str, str] = MappingProxyType(
+    {
+        "hertz_pressure": "[MPa] peak Hertz pressure p_h of the segment",
+        "slide_to_roll": "[1] SR = V_s / V_e (sign ignored by the models)",
+        "entraining_velocity": "[m/s] mean entraining (rolling) velocity V_e = (u1 + u2)/2",
+        "sliding_velocity": "[m/s] sliding velocity V_s = |u1 - u2|",
+        "load_per_length": "[N/mm] normal load per unit length w'",
+        "viscosity": "[Pa s] inlet dynamic viscosity at ambient pressure",
+        "radius": "[mm] equivalent radius of curvature R",
+        "roughness_1": "[µm] RMS roughness Rq of surface 1",
+        "roughness_2": "[µm] RMS roughness Rq of surface 2",
+        "lambda_ratio": "[1] film parameter h_min / sigma",
+        "pressure_viscosity": "[1/GPa] pressure-viscosity coefficient",
+        "e_prime": "[MPa] combined modulus E' = 2 / sum((1 - nu^2)/E)",
+        "temperature": "[degC] inlet oil temperature",
+    }
+)
+
+
+def _warn_outside(model: str, name: str, values: Array, low: float, high: float, units: str):
+    outside = (values < low) | (values > high)
+    n = int(np.count_nonzero(outside))
+    if n:
+        warnings.warn(
+            f"{model}: {name} outside the fitted range [{low:g}, {high:g}] [{units}] at {n} of"
+            f" {values.size} point(s) (e.g. {values[outside].flat[0]:g}); result extrapolated",
+            FrictionModelRangeWarning,
+            stacklevel=3,
+        )
+
+
+#: Upper clip of every regression: no lubricated steel contact reaches it, so a larger
+#: value means the formula is far outside its fitted range (a warning says so).
+MU_CAP = 0.3
+
+
+def _cap(model: str, mu: Array) -> Array:
+    over = ~(mu <= MU_CAP)  # also catches inf
+    if np.any(over):
+        warnings.warn(
+            f"{model}: μ above {MU_CAP} (or overflowing) at {int(np.count_nonzero(over))}"
+            " point(s) — inputs far outside the fitted range; μ clipped to"
+            f" {MU_CAP} there",
+            FrictionModelRangeWarning,
+            stacklevel=3,
+        )
+    return np.where(over, MU_CAP, mu)
+
+
+# ----------------------------------------------------------------------------- xu2007
+#: b1 … b9 of Xu, Kahraman, Anderson & Maddock (2007), Eq. for μ (seed/NOTES.md).
+XU2007_COEFFICIENTS: tuple[float, ...] = (
+    -8.916465,
+    1.03303,
+    1.036077,
+    -0.354068,
+    2.812084,
+    -0.100601,
+    0.752755,
+    -0.390958,
+    0.620305,
+)
+
+#: Fitted ranges used for the xu2007 warnings: (low, high, units) in toolkit units.
+XU2007_RANGE: Mapping[str, tuple[float, float, str]] = MappingProxyType(
+    {
+        "hertz_pressure": (500.0, 2500.0, "MPa"),
+        "slide_to_roll": (0.025, 1.0, "1"),
+        "entraining_velocity": (1.0, 20.0, "m/s"),
+        "viscosity": (0.0106, 0.1626, "Pa s"),
+        "radius": (5.0, 40.0, "mm"),
+        "roughness": (0.1, 1.0, "µm"),
+    }
+)
+
+
+def xu2007(
+    *,
+    hertz_pressure: ArrayLike,
+    slide_to_roll: ArrayLike,
+    entraining_velocity: ArrayLike,
+    viscosity: ArrayLike,
+    radius: ArrayLike,
+    roughness_1: ArrayLike,
+    roughness_2: ArrayLike,
+    coefficients: tuple[float, ...] = XU2007_COEFFICIENTS,
+) -> NDArray[np.float64] | float:
+    """Mixed-EHL regression friction coefficient of Xu, Kahraman, Anderson & Maddock (2007).
+
+    μ = e^f · P_h^b2 · |SR|^b3 · V_e^b6 · ν₀^b7 · R^b8, with
+    f = b1 + b4 |SR| P_h log₁₀ν₀ + b5 exp(−|SR| P_h log₁₀ν₀) + b9 e^S,
+
+    evaluated in the paper's units: P_h [GPa], ν₀ [cP] (= mPa s, dynamic), V_e [m/s],
+    R [m], S [µm]. Inputs are converted from the toolkit units at this boundary.
+
+    Parameters
+    ----------
+    hertz_pressure : float or array — [MPa]
+        Peak Hertz pressure p_h, ≥ 0.
+    slide_to_roll : float or array — [1]
+        SR = V_s / V_e; only |SR| is used.
+    entraining_velocity : float or array — [m/s]
+        Mean entraining velocity V_e = (u₁ + u₂)/2, > 0.
+    viscosity : float or array — [Pa s]
+        Inlet dynamic viscosity η₀ at ambient pressure, > 0.
+    radius : float or array — [mm]
+        Equivalent radius of curvature R, > 0.
+    roughness_1, roughness_2 : float or array — [µm]
+        RMS roughness of each surface, ≥ 0; S = (Rq₁ + Rq₂)/2.
+    coefficients : tuple of 9 floats
+        b1 … b9; default :data:`XU2007_COEFFICIENTS` (fitted for a 75W90 axle oil).
+
+    Returns
+    -------
+    float or array — [1]
+        μ, broadcast shape of the inputs.
+
+    Raises
+    ------
+    InputError
+        An input outside its accepted range (the message names it).
+
+    Warns
+    -----
+    FrictionModelRangeWarning
+        Inputs outside the fitted ranges of :data:`XU2007_RANGE`: p_h 500–2500 MPa,
+        |SR| 0.025–1, V_e 1–20 m/s, η₀ 0.0106–0.1626 Pa s (75W90 at 100–25 °C),
+        R 5–40 mm, S 0.1–1 µm.
+
+    Notes
+    -----
+    Source: Xu, H., Kahraman, A., Anderson, N. E., Maddock, D. G., "Prediction of
+    mechanical efficiency of parallel-axis gear pairs", J. Mech. Des. 129 (2007) 58–68,
+    friction formula and its coefficient table (quoted in seed/NOTES.md with the check
+    μ ≈ 0.029 at p_h = 1 GPa, SR = 0.5, V_e = 10 m/s, ν₀ = 16.3 cP, R = 0.02 m,
+    S = 0.8 µm). Assumptions to verify against the paper: (i) V_e is the mean
+    entraining velocity (if the paper's V_e were u₁ + u₂ the result would change by
+    2^−0.1, i.e. −7 %); (ii) S is the mean of the two surfaces' RMS roughness (the check
+    case has equal surfaces); (iii) the fitted ranges are those of the seed's Table 5.1,
+    which follows Xu et al.'s parametric methodology for a 75W90 oil. SR = 0 gives μ = 0
+    (|SR|^b3), the pure-rolling limit.
+    """
+    if len(coefficients) != 9:
+        raise InputError(f"coefficients must have 9 values b1..b9; got {len(coefficients)}")
+    ph = _checked("hertz_pressure", hertz_pressure, low=0.0, units="MPa")
+    sr = np.abs(_checked("slide_to_roll", slide_to_roll, units="1"))
+    ve = _checked("entraining_velocity", entraining_velocity, low=0.0, low_open=True, units="m/s")
+    eta = _checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
+    r = _checked("radius", radius, low=0.0, low_open=True, units="mm")
+    s1 = _checked("roughness_1", roughness_1, low=0.0, high=100.0, units="µm")
+    s2 = _checked("roughness_2", roughness_2, low=0.0, high=100.0, units="µm")
+    ph, sr, ve, eta, r, s1, s2 = _broadcast(
+        hertz_pressure=ph,
+        slide_to_roll=sr,
+        entraining_velocity=ve,
+        viscosity=eta,
+        radius=r,
+        roughness_1=s1,
+        roughness_2=s2,
+    )
+    s = 0.5 * (s1 + s2)
+    for name, vals in (
+        ("hertz_pressure", ph),
+        ("slide_to_roll", sr),
+        ("entraining_velocity", ve),
+        ("viscosity", eta),
+        ("radius", r),
+        ("roughness", s),
+    ):
+        lo, hi, units = XU2007_RANGE[name]
+        _warn_outside("xu2007", name, vals, lo, hi, units)
+    b1, b2, b3, b4, b5, b6, b7, b8, b9 = coefficients
+    p_gpa = ph * 1e-3
+    nu_cp = eta * 1e3
+    r_m = r * 1e-3
+    zero = (sr == 0.0) | (p_gpa == 0.0)  # μ → 0 in pure rolling or without load
+    sr_, p_ = np.where(zero, 1.0, sr), np.where(zero, 1.0, p_gpa)
+    group = sr_ * p_ * np.log10(nu_cp)
+    with np.errstate(over="ignore"):
+        # evaluated as ln μ so no intermediate product overflows; inf is capped below
+        ln_mu = (
+            b1
+            + b4 * group
+            + b5 * np.exp(-group)
+            + b9 * np.exp(s)
+            + b2 * np.log(p_)
+            + b3 * np.log(sr_)
+            + b6 * np.log(ve)
+            + b7 * np.log(nu_cp)
+            + b8 * np.log(r_m)
+        )
+        mu = np.exp(np.minimum(ln_mu, 700.0))
+    mu = _cap("xu2007", mu)
+    return _result(np.where(zero, 0.0, mu))
+
+
+# ----------------------------------------------------------------------------- B&K
+_N_PER_MM_TO_LBF_PER_IN = 25.4 / 4.4482216152605  # 1 N/mm in lbf/in
+_M_PER_S_TO_IN_PER_S = 1.0 / 0.0254
+_RA_OVER_RQ = math.sqrt(2.0 / math.pi)  # Gaussian height distribution
+_UM_TO_UIN = 1.0 / 0.0254
+
+
+def benedict_kelley(
+    *,
+    load_per_length: ArrayLike,
+    sliding_velocity: ArrayLike,
+    entraining_velocity: ArrayLike,
+    viscosity: ArrayLike,
+    roughness_1: ArrayLike,
+    roughness_2: ArrayLike,
+) -> NDArray[np.float64] | float:
+    """Empirical gear-tooth friction coefficient of Benedict & Kelley (1960).
+
+    μ = 0.0127 C_R log₁₀(3.17·10⁸ W′ / (ν₀ V_s V_t²)),  C_R = 50 / (50 − S_avg),
+
+    in the published (US customary) units: W′ load per unit face width [lbf/in],
+    ν₀ dynamic viscosity at the oil inlet temperature [cP], V_s sliding velocity
+    [in/s], V_t sum (entraining) velocity u₁ + u₂ [in/s], S_avg average roughness
+    [µin]. Inputs are converted from the toolkit units at this boundary.
+
+    Parameters
+    ----------
+    load_per_length : float or array — [N/mm]
+        Normal load per unit length w′, > 0.
+    sliding_velocity : float or array — [m/s]
+        V_s = |u₁ − u₂|, ≥ 0.
+    entraining_velocity : float or array — [m/s]
+        Mean entraining velocity (u₁ + u₂)/2, > 0; V_t = 2 × this.
+    viscosity : float or array — [Pa s]
+        Inlet dynamic viscosity, > 0.
+    roughness_1, roughness_2 : float or array — [µm]
+        RMS roughness Rq of each surface, ≥ 0. Converted to arithmetic-mean roughness
+        by Ra = √(2/π) Rq (Gaussian surfaces) and averaged: S_avg = (Ra₁ + Ra₂)/2.
+
+    Returns
+    -------
+    float or array — [1]
+        μ ≥ 0, broadcast shape.
+
+    Raises
+    ------
+    InputError
+        An input outside its accepted range, or S_avg ≥ 50 µin (≈ 1.27 µm Ra), where
+        C_R is undefined.
+
+    Warns
+    -----
+    FrictionModelRangeWarning
+        Where V_s = 0 (pure rolling; the formula diverges) μ is set to 0 — the sliding
+        loss μ f V_s is zero there anyway; where the log argument is ≤ 1 (μ ≤ 0, very
+        high speed/viscosity for the load) μ is clipped to 0.
+
+    Notes
+    -----
+    Source: Benedict, G. H., Kelley, B. W., "Instantaneous coefficients of gear tooth
+    friction", ASLE Trans. 4 (1961) 59–70 (presented 1960; seed ref. [5.8]), from
+    roller tests; the form with the roughness factor C_R as it is usually quoted in
+    the gear-efficiency literature (the constants 0.0127, 3.17·10⁸ and 50 µin were not
+    re-checked against the original here). The original measured CLA (Ra) roughness:
+    the Rq → Ra conversion is an assumption of this implementation.
+    """
+    w = _checked("load_per_length", load_per_length, low=0.0, low_open=True, units="N/mm")
+    vs = _checked("sliding_velocity", sliding_velocity, low=0.0, units="m/s")
+    ve = _checked("entraining_velocity", entraining_velocity, low=0.0, low_open=True, units="m/s")
+    eta = _checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
+    s1 = _checked("roughness_1", roughness_1, low=0.0, high=100.0, units="µm")
+    s2 = _checked("roughness_2", roughness_2, low=0.0, high=100.0, units="µm")
+    w, vs, ve, eta, s1, s2 = _broadcast(
+        load_per_length=w,
+        sliding_velocity=vs,
+        entraining_velocity=ve,
+        viscosity=eta,
+        roughness_1=s1,
+        roughness_2=s2,
+    )
+    s_avg = 0.5 * (s1 + s2) * _RA_OVER_RQ * _UM_TO_UIN
+    if np.any(s_avg >= 50.0):
+        raise InputError(
+            "roughness_1, roughness_2: benedict_kelley needs the mean Ra = √(2/π)·mean(Rq) below"
+            f" 50 µin (mean Rq < {50.0 * 0.0254 / _RA_OVER_RQ:.3f} µm) for C_R = 50/(50 − S);"
+            f" got {s_avg.max():.1f} µin"
+        )
+    c_r = 50.0 / (50.0 - s_avg)
+    w_lbf = w * _N_PER_MM_TO_LBF_PER_IN
+    nu_cp = eta * 1e3
+    vs_in = vs * _M_PER_S_TO_IN_PER_S
+    vt_in = 2.0 * ve * _M_PER_S_TO_IN_PER_S
+    rolling = vs_in == 0.0
+    with np.errstate(divide="ignore", over="ignore"):
+        arg = 3.17e8 * w_lbf / (nu_cp * np.where(rolling, 1.0, vs_in) * vt_in**2)
+    mu = 0.0127 * c_r * np.log10(arg)
+    if np.any(rolling):
+        warnings.warn(
+            f"benedict_kelley: sliding_velocity = 0 at {int(np.count_nonzero(rolling))} point(s);"
+            " the formula diverges in pure rolling — μ set to 0 there (no sliding loss)",
+            FrictionModelRangeWarning,
+            stacklevel=2,
+        )
+    low = (arg <= 1.0) & ~rolling
+    if np.any(low):
+        warnings.warn(
+            f"benedict_kelley: log argument 3.17e8 W/(ν V_s V_t²) ≤ 1 at"
+            f" {int(np.count_nonzero(low))} point(s) (outside the roller-test range); μ clipped"
+            " to 0 there",
+            FrictionModelRangeWarning,
+            stacklevel=2,
+        )
+    mu = np.where(rolling | low, 0.0, mu)
+    return _result(_cap("benedict_kelley", mu))
+
+
+# ----------------------------------------------------------------------------- constant
+def constant(*, value: float = 0.05) -> float:
+    """A constant friction coefficient (Coleman's assumption for bevel and hypoid gears).
+
+    Parameters
+    ----------
+    value : float — [1]
+        μ, in [0, 1]; default 0.05.
+
+    Returns
+    -------
+    float — [1]
+        ``value`` (:func:`friction_coefficient` broadcasts it to the inputs' shape).
+
+    Raises
+    ------
+    InputError
+        ``value`` outside [0, 1] or not finite.
+
+    Notes
+    -----
+    Source: Coleman, W., "Computing efficiency for bevel and hypoid gears", Machine
+    Design 47 (1975) 64–65 (seed ref. [5.1]: "a constant friction coefficient of 0.05 at
+    every contact point").
+    No validity range, hence no warnings.
+    """
+    v = _checked("value", value, low=0.0, high=1.0, units="1")
+    if v.ndim:
+        raise InputError(f"value must be a scalar friction coefficient; got shape {v.shape}")
+    return float(v)
+
+
+# ----------------------------------------------------------------------------- registry
+@dataclass(frozen=True)
+class FrictionModel:
+    """A registered friction model.
+
+    Attributes
+    ----------
+    name : str
+    function : callable
+        Keyword-only model function returning μ [1].
+    required : tuple of str
+        Inputs the model needs (names of :data:`STANDARD_INPUTS`).
+    optional : tuple of str
+        Inputs or model parameters with defaults.
+    source : str
+        The reference the model implements.
+    """
+
+    name: str
+    function: Callable[..., Any]
+    required: tuple[str, ...]
+    optional: tuple[str, ...]
+    source: str
+
+    def __call__(self, **inputs: Any) -> NDArray[np.float64] | float:
+        """Evaluate the model (see :func:`friction_coefficient`)."""
+        return _evaluate(self, inputs)
+
+
+def _register(name: str, function: Callable[..., Any], source: str) -> FrictionModel:
+    params = inspect.signature(function).parameters.values()
+    required = tuple(p.name for p in params if p.default is inspect.Parameter.empty)
+    optional = tuple(p.name for p in params if p.default is not inspect.Parameter.empty)
+    return FrictionModel(name, function, required, optional, source)
+
+
+_MODELS: Mapping[str, FrictionModel] = MappingProxyType(
+    {
+        "xu2007": _register(
+            "xu2007", xu2007, "Xu, Kahraman, Anderson & Maddock, J. Mech. Des. 129 (2007) 58"
+        ),
+        "benedict_kelley": _register(
+            "benedict_kelley", benedict_kelley, "Benedict & Kelley, ASLE Trans. 4 (1961) 59"
+        ),
+        "constant": _register("constant", constant, "Coleman (1975); constant μ"),
+    }
+)
+
+#: Models of the literature that are known but not offered, with the reason.
+UNAVAILABLE_MODELS: Mapping[str, str] = MappingProxyType(
+    {
+        "kolivand2009": (
+            "the seed's regression (Kolivand 2009, Eq. 5.11a-c with Table 5.3) is not"
+            " recoverable from the text extraction: the λ symbol, the exponents, the"
+            " operators and the grouping of the three regime formulas were lost, so which"
+            " of the 35 Table 5.3 coefficients multiplies which group (λ, SR, U, G, H, S_c,"
+            " S_eq), and whether inside a log, an exponent or a power, is undetermined; a"
+            " term structure picked so that μ lands in 0.01-0.06 and is continuous at"
+            " λ = 1 and 3 would be fitted to those acceptance checks rather than recovered"
+            " from the source. Use 'xu2007' (same methodology and oil class) instead."
+        ),
+    }
+)
+
+
+def available_friction_models() -> tuple[str, ...]:
+    """Names of the friction models that can be evaluated.
+
+    Returns
+    -------
+    tuple of str
+        Sorted names, e.g. ``("benedict_kelley", "constant", "xu2007")``.
+
+    Notes
+    -----
+    Source: the registry of this module; each model's docstring gives its reference.
+    """
+    return tuple(sorted(_MODELS))
+
+
+def unavailable_friction_models() -> Mapping[str, str]:
+    """Known models that are not offered, with the reason for each.
+
+    Returns
+    -------
+    mapping of str to str
+        Name → reason (read-only).
+
+    Notes
+    -----
+    Source: seed/NOTES.md on seed Eq. 5.11 (kolivand2009).
+    """
+    return UNAVAILABLE_MODELS
+
+
+def get_friction_model(name: str) -> FrictionModel:
+    """Return the registered friction model ``name``.
+
+    Parameters
+    ----------
+    name : str
+        One of :func:`available_friction_models`.
+
+    Returns
+    -------
+    FrictionModel
+        Callable with keyword inputs; ``required`` and ``optional`` list them.
+
+    Raises
+    ------
+    ModelUnavailableError
+        ``name`` is unavailable (the message quotes the reason) or unknown (the message
+        lists the available names).
+
+    Notes
+    -----
+    Source: registry pattern of the toolkit's STYLE (qpsolvers-like).
+    """
+    if name in _MODELS:
+        return _MODELS[name]
+    if name in UNAVAILABLE_MODELS:
+        raise ModelUnavailableError(
+            f"friction model {name!r} is unavailable: {UNAVAILABLE_MODELS[name]}"
+            f" (available: {available_friction_models()})"
+        )
+    raise ModelUnavailableError(
+        f"unknown friction model {name!r}; available: {available_friction_models()};"
+        f" known but unavailable: {tuple(sorted(UNAVAILABLE_MODELS))}"
+    )
+
+
+def _evaluate(model: FrictionModel, inputs: Mapping[str, Any]) -> NDArray[np.float64] | float:
+    accepted = set(model.required) | set(model.optional)
+    unknown = sorted(set(inputs) - set(STANDARD_INPUTS) - accepted)
+    if unknown:
+        raise InputError(
+            f"unknown input(s) {unknown} for friction model {model.name!r}; the vocabulary is"
+            f" {sorted(STANDARD_INPUTS)} plus the model's parameters {sorted(model.optional)}"
+        )
+    missing = [k for k in model.required if k not in inputs]
+    if missing:
+        meaning = "; ".join(f"{k} {STANDARD_INPUTS.get(k, '')}" for k in missing)
+        raise InputError(f"friction model {model.name!r} needs input(s) {missing} ({meaning})")
+    mu = np.asarray(model.function(**{k: v for k, v in inputs.items() if k in accepted}))
+    shapes = [np.shape(v) for k, v in inputs.items() if k in STANDARD_INPUTS]
+    try:
+        shape = np.broadcast_shapes(mu.shape, *shapes)
+    except ValueError as exc:
+        raise InputError(f"input shapes do not broadcast together: {shapes}") from exc
+    out = np.broadcast_to(mu, shape).astype(float)
+    if not np.all(np.isfinite(out)):  # a guard: every model is written to stay finite
+        raise InputError(f"friction model {model.name!r} produced a non-finite μ for these inputs")
+    return _result(out)
+
+
+def friction_coefficient(name: str, **inputs: Any) -> NDArray[np.float64] | float:
+    """Friction coefficient μ of the model ``name`` for the given segment inputs.
+
+    Parameters
+    ----------
+    name : str
+        One of :func:`available_friction_models`.
+    **inputs : float or array
+        Keyword inputs from :data:`STANDARD_INPUTS` (units there) plus the model's own
+        parameters (e.g. ``value`` for ``constant``). Inputs a model does not use are
+        ignored; names outside the vocabulary are refused.
+
+    Returns
+    -------
+    float or array — [1]
+        μ, broadcast to the shape of all the standard inputs passed.
+
+    Raises
+    ------
+    ModelUnavailableError
+        Unknown or unavailable model.
+    InputError
+        A missing, unknown or out-of-range input.
+
+    Warns
+    -----
+    FrictionModelRangeWarning
+        Inputs outside the model's fitted range.
+
+    Notes
+    -----
+    Source: each model's reference (see the model functions); the registry pattern and
+    the seed's per-segment use are seed section 5.2.2–5.2.4.
+    """
+    return _evaluate(get_friction_model(name), inputs)

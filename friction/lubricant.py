@@ -1,0 +1,804 @@
+"""Lubricant properties versus temperature: viscosity fits, pressure–viscosity coefficient, density.
+
+A :class:`Lubricant` holds a property table at a few temperatures (the seed's Table 5.2
+for 75W90 is bundled as ``friction/data/75W90.toml``); the functions here evaluate the
+properties at any temperature inside a plausible extrapolation range:
+
+================================  =========================================  ===========
+property                          how it is evaluated                        units
+================================  =========================================  ===========
+dynamic viscosity η₀              Vogel fit (default) or Walther/ASTM D341   Pa s
+pressure–viscosity coefficient α  piecewise log-linear in T                  1/GPa
+density ρ                         straight line fitted by least squares      kg/m3
+thermal conductivity k            constant, or piecewise linear              W/(m K)
+temperature–viscosity coeff. β    −d ln η₀/dT of the Vogel fit, or tabulated 1/K
+================================  =========================================  ===========
+
+Units: temperature in degC at the boundary (the Vogel constant c is in degC, so the fit
+is the same in K or degC); viscosity in Pa s and the pressure–viscosity coefficient in
+1/GPa because those are the units of the seed's table and of lubricant data sheets —
+:mod:`friction.film` and :mod:`friction.rolling` take them in exactly these units and
+convert at their boundary.
+
+Oil files are TOML with the schema of ``friction/data/75W90.toml``: ``name``, ``source``,
+``temperature``, ``dynamic_viscosity``, ``pressure_viscosity_coefficient``, ``density``,
+``thermal_conductivity`` (one value or one per temperature), optional
+``temperature_viscosity_coefficient``, ``thermal_conductivity_source``, ``notes``,
+``schema``, an ``[extrapolation]`` table (``below``, ``above`` in K) and a required
+``[units]`` table that must state the units above (so a file in other units is refused,
+not misread).
+"""
+
+from __future__ import annotations
+
+import itertools
+import logging
+import math
+import tomllib
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import minimize_scalar
+
+from friction.hertz import _as_array, _result
+from geometry.errors import InputError, ModelUnavailableError
+
+__all__ = [
+    "VISCOSITY_MODELS",
+    "Lubricant",
+    "VogelFit",
+    "WaltherFit",
+    "available_lubricants",
+    "density",
+    "fit_vogel",
+    "fit_walther",
+    "kinematic_viscosity",
+    "load_lubricant",
+    "lubricant_from_mapping",
+    "pressure_viscosity_coefficient",
+    "temperature_range",
+    "temperature_viscosity_coefficient",
+    "thermal_conductivity",
+    "viscosity",
+]
+
+log = logging.getLogger(__name__)
+
+_ABSOLUTE_ZERO_C = -273.15
+_WALTHER_SHIFT = 0.7  # ASTM D341: Z = ν + 0.7 for ν ≥ 2 mm²/s
+
+#: Units each field of an oil file must declare in its ``[units]`` table.
+_REQUIRED_UNITS: Mapping[str, str] = MappingProxyType(
+    {
+        "temperature": "degC",
+        "dynamic_viscosity": "Pa s",
+        "pressure_viscosity_coefficient": "1/GPa",
+        "density": "kg/m3",
+        "thermal_conductivity": "W/(m K)",
+    }
+)
+_OPTIONAL_UNITS: Mapping[str, str] = MappingProxyType(
+    {"temperature_viscosity_coefficient": "1/K", "extrapolation": "K"}
+)
+_KNOWN_KEYS = frozenset(
+    {
+        "schema",
+        "name",
+        "source",
+        "notes",
+        "temperature",
+        "dynamic_viscosity",
+        "pressure_viscosity_coefficient",
+        "density",
+        "thermal_conductivity",
+        "thermal_conductivity_source",
+        "temperature_viscosity_coefficient",
+        "extrapolation",
+        "units",
+    }
+)
+
+
+# ----------------------------------------------------------------------------- fits
+@dataclass(frozen=True)
+class VogelFit:
+    """Vogel equation η = a · exp(b / (T − c)).
+
+    Attributes
+    ----------
+    a : float — [Pa s]
+    b : float — [K]
+    c : float — [degC]
+    rms_log_residual : float — [1]
+        RMS of ln η_fit − ln η_table at the table points.
+    """
+
+    a: float
+    b: float
+    c: float
+    rms_log_residual: float
+
+
+@dataclass(frozen=True)
+class WaltherFit:
+    """Walther equation (ASTM D341): log₁₀ log₁₀(ν + 0.7) = A − B log₁₀(T_K), ν in mm²/s.
+
+    Attributes
+    ----------
+    A : float — [1]
+    B : float — [1]
+    rms_log_residual : float — [1]
+        RMS of ln ν_fit − ln ν_table at the table points.
+    """
+
+    A: float
+    B: float
+    rms_log_residual: float
+
+
+def _vogel_lsq(c: float, t: NDArray[np.float64], ln_eta: NDArray[np.float64]):
+    design = np.column_stack([np.ones_like(t), 1.0 / (t - c)])
+    coef, *_ = np.linalg.lstsq(design, ln_eta, rcond=None)
+    resid = design @ coef - ln_eta
+    return coef, resid
+
+
+def fit_vogel(temperature: ArrayLike, dynamic_viscosity: ArrayLike) -> VogelFit:
+    """Least-squares Vogel fit ln η = ln a + b/(T − c) to a viscosity table.
+
+    For fixed c the problem is linear in (ln a, b); c is found by a bounded 1-D search
+    over (−273.15 °C, min T − 1 K) after a coarse grid (variable projection).
+
+    Parameters
+    ----------
+    temperature : array (n,) — [degC]
+        At least 3 distinct temperatures.
+    dynamic_viscosity : array (n,) — [Pa s]
+        Positive viscosities at those temperatures.
+
+    Returns
+    -------
+    VogelFit
+        a [Pa s], b [K], c [degC] and the RMS residual of ln η.
+
+    Raises
+    ------
+    InputError
+        Fewer than 3 points, non-positive viscosity, or a fit with b ≤ 0 (viscosity not
+        decreasing with temperature).
+
+    Notes
+    -----
+    Source: Vogel, H., Phys. Z. 22 (1921) 645; the form used for gear oils in e.g.
+    Seeton, C. J., Tribol. Lett. 22 (2006) 67. The seed interpolates Table 5.2 without
+    saying how (NOTES.md asks for a Vogel or Walther fit, not linear).
+    """
+    t = _as_array("temperature", temperature).ravel()
+    eta = _as_array("dynamic_viscosity", dynamic_viscosity).ravel()
+    if t.size < 3 or t.size != eta.size:
+        raise InputError(
+            "temperature and dynamic_viscosity must have the same length, at least 3, for a"
+            f" Vogel fit; got {t.size} and {eta.size}"
+        )
+    if np.any(eta <= 0) or not np.all(np.isfinite(eta)):
+        raise InputError("dynamic_viscosity must be finite and in (0, inf) [Pa s]")
+    ln_eta = np.log(eta)
+    lo, hi = _ABSOLUTE_ZERO_C, float(t.min()) - 1.0
+
+    def sse(c: float) -> float:
+        return float(np.sum(_vogel_lsq(c, t, ln_eta)[1] ** 2))
+
+    grid = np.linspace(lo, hi, 200)
+    k = int(np.argmin([sse(c) for c in grid]))
+    bracket = (grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)])
+    opt = minimize_scalar(sse, bounds=bracket, method="bounded", options={"xatol": 1e-8})
+    c = float(opt.x)
+    (ln_a, b), resid = _vogel_lsq(c, t, ln_eta)
+    if b <= 0:
+        raise InputError(
+            "dynamic_viscosity must decrease with temperature for a Vogel fit (fitted b ="
+            f" {b:g} K ≤ 0)"
+        )
+    return VogelFit(
+        a=math.exp(ln_a),
+        b=float(b),
+        c=c,
+        rms_log_residual=float(np.sqrt(np.mean(resid**2))),
+    )
+
+
+def fit_walther(temperature: ArrayLike, kinematic_viscosity: ArrayLike) -> WaltherFit:
+    """Least-squares Walther (ASTM D341) fit log₁₀ log₁₀(ν + 0.7) = A − B log₁₀ T_K.
+
+    Parameters
+    ----------
+    temperature : array (n,) — [degC]
+        At least 2 distinct temperatures.
+    kinematic_viscosity : array (n,) — [mm²/s] (cSt)
+        Kinematic viscosities, each ≥ 2 mm²/s (range of the simple D341 form).
+
+    Returns
+    -------
+    WaltherFit
+        A, B [1] and the RMS residual of ln ν.
+
+    Raises
+    ------
+    InputError
+        Fewer than 2 points or a viscosity below 2 mm²/s.
+
+    Notes
+    -----
+    Source: ASTM D341, "Standard practice for viscosity–temperature equations and charts
+    for liquid petroleum or hydrocarbon products", Eq. (1)–(2) with Z = ν + 0.7 (the
+    additional terms of Z below 2 mm²/s are not implemented).
+    """
+    t = _as_array("temperature", temperature).ravel()
+    nu = _as_array("kinematic_viscosity", kinematic_viscosity).ravel()
+    if t.size < 2 or t.size != nu.size:
+        raise InputError(
+            "temperature and kinematic_viscosity must have the same length, at least 2, for a"
+            f" Walther fit; got {t.size} and {nu.size}"
+        )
+    if np.any(nu < 2.0) or not np.all(np.isfinite(nu)):
+        raise InputError("kinematic_viscosity must be finite and ≥ 2 [mm2/s] for ASTM D341")
+    x = np.log10(t - _ABSOLUTE_ZERO_C)
+    y = np.log10(np.log10(nu + _WALTHER_SHIFT))
+    slope, intercept = np.polyfit(x, y, 1)
+    fitted = 10.0 ** (10.0 ** (intercept + slope * x)) - _WALTHER_SHIFT
+    return WaltherFit(
+        A=float(intercept),
+        B=float(-slope),
+        rms_log_residual=float(np.sqrt(np.mean(np.log(fitted / nu) ** 2))),
+    )
+
+
+# ----------------------------------------------------------------------------- dataclass
+def _float_tuple(field_name: str, value: Any) -> tuple[float, ...]:
+    if isinstance(value, (str, bytes)) or not isinstance(value, (Sequence, np.ndarray)):
+        value = [value]
+    try:
+        out = tuple(float(v) for v in value)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{field_name} must be a list of numbers; got {value!r}") from exc
+    return out
+
+
+def _check_positive(field_name: str, values: tuple[float, ...], units: str) -> None:
+    if not values or not all(math.isfinite(v) and v > 0 for v in values):
+        raise InputError(f"{field_name} must be finite and in (0, inf) [{units}]; got {values!r}")
+
+
+@dataclass(frozen=True)
+class Lubricant:
+    """A lubricant's property table versus temperature.
+
+    Parameters
+    ----------
+    name : str
+        Oil name, e.g. ``"75W90"``.
+    temperature : sequence of float (n ≥ 3) — [degC]
+        Strictly increasing table temperatures.
+    dynamic_viscosity : sequence of float (n) — [Pa s]
+        Ambient-pressure dynamic viscosity η₀, strictly decreasing with temperature.
+    pressure_viscosity_coefficient : sequence of float (n) — [1/GPa]
+        Barus pressure–viscosity coefficient α (η = η₀ e^{αp}).
+    density : sequence of float (n) — [kg/m3]
+    thermal_conductivity : float or sequence of float (1 or n) — [W/(m K)]
+    source : str
+        Where the table comes from (paper, table number, data sheet).
+    temperature_viscosity_coefficient : sequence of float (n) or None — [1/K]
+        β = −(1/η) dη/dT; if None it is derived from the Vogel fit.
+    extrapolation_below, extrapolation_above : float — [K]
+        The accepted temperature range is [min T − below, max T + above].
+    thermal_conductivity_source, notes : str
+
+    Raises
+    ------
+    InputError
+        On construction, naming the field, if a table is empty, of unequal length, not
+        finite, not positive, the temperatures are not strictly increasing or the
+        viscosity does not decrease with temperature.
+
+    Notes
+    -----
+    The Vogel and Walther fits are made once, at construction (attributes ``vogel`` and
+    ``walther``). Instances are immutable and hashable by value.
+    """
+
+    name: str
+    temperature: tuple[float, ...]
+    dynamic_viscosity: tuple[float, ...]
+    pressure_viscosity_coefficient: tuple[float, ...]
+    density: tuple[float, ...]
+    thermal_conductivity: tuple[float, ...]
+    source: str
+    temperature_viscosity_coefficient: tuple[float, ...] | None = None
+    extrapolation_below: float = 20.0
+    extrapolation_above: float = 40.0
+    thermal_conductivity_source: str = ""
+    notes: str = ""
+    vogel: VogelFit = field(init=False, repr=False, compare=False)
+    walther: WaltherFit = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not self.name.strip():
+            raise InputError(f"name must be a non-empty string; got {self.name!r}")
+        if not isinstance(self.source, str) or not self.source.strip():
+            raise InputError("source must be a non-empty string naming where the table comes from")
+        tables = {
+            "temperature": "degC",
+            "dynamic_viscosity": "Pa s",
+            "pressure_viscosity_coefficient": "1/GPa",
+            "density": "kg/m3",
+            "thermal_conductivity": "W/(m K)",
+        }
+        for key in tables:
+            object.__setattr__(self, key, _float_tuple(key, getattr(self, key)))
+        if self.temperature_viscosity_coefficient is not None:
+            object.__setattr__(
+                self,
+                "temperature_viscosity_coefficient",
+                _float_tuple(
+                    "temperature_viscosity_coefficient", self.temperature_viscosity_coefficient
+                ),
+            )
+        t = self.temperature
+        if len(t) < 3:
+            raise InputError(f"temperature must have at least 3 values [degC]; got {len(t)}")
+        if not all(math.isfinite(v) and v > _ABSOLUTE_ZERO_C for v in t):
+            raise InputError(f"temperature must be finite and in (-273.15, inf) [degC]; got {t!r}")
+        if any(b <= a for a, b in itertools.pairwise(t)):
+            raise InputError(f"temperature must be strictly increasing [degC]; got {t!r}")
+        for key, units in tables.items():
+            if key != "temperature":
+                _check_positive(key, getattr(self, key), units)
+        for key in ("dynamic_viscosity", "pressure_viscosity_coefficient", "density"):
+            if len(getattr(self, key)) != len(t):
+                raise InputError(
+                    f"{key} must have one value per temperature ({len(t)}); got"
+                    f" {len(getattr(self, key))}"
+                )
+        if len(self.thermal_conductivity) not in (1, len(t)):
+            raise InputError(
+                f"thermal_conductivity must have 1 value or one per temperature ({len(t)});"
+                f" got {len(self.thermal_conductivity)}"
+            )
+        beta = self.temperature_viscosity_coefficient
+        if beta is not None:
+            _check_positive("temperature_viscosity_coefficient", beta, "1/K")
+            if len(beta) != len(t):
+                raise InputError(
+                    f"temperature_viscosity_coefficient must have one value per temperature"
+                    f" ({len(t)}); got {len(beta)}"
+                )
+        eta = self.dynamic_viscosity
+        if any(b >= a for a, b in itertools.pairwise(eta)):
+            raise InputError(
+                f"dynamic_viscosity must decrease strictly with temperature [Pa s]; got {eta!r}"
+            )
+        for key in ("extrapolation_below", "extrapolation_above"):
+            val = getattr(self, key)
+            if not isinstance(val, (int, float)) or not math.isfinite(val) or val < 0:
+                raise InputError(f"{key} must be finite and in [0, inf) [K]; got {val!r}")
+        vogel = fit_vogel(t, eta)
+        if vogel.c >= t[0] - self.extrapolation_below:
+            raise InputError(
+                f"extrapolation_below must keep the range above the Vogel pole c = {vogel.c:.1f}"
+                f" degC; got {self.extrapolation_below!r} K"
+            )
+        object.__setattr__(self, "vogel", vogel)
+        nu = np.asarray(eta) / np.asarray(self.density) * 1e6
+        object.__setattr__(self, "walther", fit_walther(t, nu))
+        log.debug("lubricant %s: %s, %s", self.name, vogel, self.walther)
+
+
+# ----------------------------------------------------------------------------- evaluation
+def temperature_range(lubricant: Lubricant) -> tuple[float, float]:
+    """Accepted temperature range of a lubricant's fits.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+
+    Returns
+    -------
+    (float, float) — [degC]
+        ``(min T − extrapolation_below, max T + extrapolation_above)``.
+
+    Notes
+    -----
+    Source: a choice of this toolkit (defaults 20 K below, 40 K above the table, set per
+    oil file): the Vogel and Walther fits of the seed's table diverge by < 0.2 % inside
+    it and by ≈ 2 % at 140 °C, so farther extrapolation is refused.
+    """
+    return (
+        lubricant.temperature[0] - lubricant.extrapolation_below,
+        lubricant.temperature[-1] + lubricant.extrapolation_above,
+    )
+
+
+def _temperature(lubricant: Lubricant, temperature: ArrayLike) -> NDArray[np.float64]:
+    t = _as_array("temperature", temperature)
+    lo, hi = temperature_range(lubricant)
+    bad = ~np.isfinite(t) | (t < lo) | (t > hi)
+    if np.any(bad):
+        first = t[bad].flat[0] if t.ndim else float(t)
+        raise InputError(
+            f"temperature must be in [{lo:g}, {hi:g}] [degC] for lubricant {lubricant.name!r}"
+            f" (table {lubricant.temperature[0]:g}–{lubricant.temperature[-1]:g} degC plus the"
+            f" extrapolation margins); got {first!r}"
+        )
+    return t
+
+
+def _vogel_eval(lubricant: Lubricant, t: NDArray[np.float64]) -> NDArray[np.float64]:
+    v = lubricant.vogel
+    return v.a * np.exp(v.b / (t - v.c))
+
+
+def _walther_eval(lubricant: Lubricant, t: NDArray[np.float64]) -> NDArray[np.float64]:
+    w = lubricant.walther
+    nu = 10.0 ** (10.0 ** (w.A - w.B * np.log10(t - _ABSOLUTE_ZERO_C))) - _WALTHER_SHIFT
+    return nu * _density_eval(lubricant, t) * 1e-6
+
+
+#: Viscosity–temperature models by name: ``(lubricant, T [degC]) -> η₀ [Pa s]``.
+VISCOSITY_MODELS: Mapping[str, Callable[[Lubricant, NDArray[np.float64]], NDArray[np.float64]]] = (
+    MappingProxyType({"vogel": _vogel_eval, "walther": _walther_eval})
+)
+
+
+def viscosity(
+    lubricant: Lubricant, temperature: ArrayLike, method: str = "vogel"
+) -> NDArray[np.float64] | float:
+    """Dynamic viscosity η₀ at ambient pressure.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+    temperature : float or array — [degC]
+        Inside :func:`temperature_range`.
+    method : {"vogel", "walther"}
+        ``"vogel"``: η = a exp(b/(T − c)) (see :func:`fit_vogel`); ``"walther"``: ASTM D341
+        on the kinematic viscosity ν = η/ρ, times the fitted density.
+
+    Returns
+    -------
+    float or array — [Pa s]
+        Same shape as ``temperature``.
+
+    Raises
+    ------
+    InputError
+        Temperature outside the accepted range (the message gives the range).
+    ModelUnavailableError
+        Unknown ``method`` (the message lists the available ones).
+
+    Notes
+    -----
+    Source: seed Table 5.2 values; Vogel (1921); ASTM D341.
+    """
+    try:
+        model = VISCOSITY_MODELS[method]
+    except KeyError:
+        raise ModelUnavailableError(
+            f"unknown viscosity method {method!r}; available: {sorted(VISCOSITY_MODELS)}"
+        ) from None
+    return _result(model(lubricant, _temperature(lubricant, temperature)))
+
+
+def kinematic_viscosity(
+    lubricant: Lubricant, temperature: ArrayLike, method: str = "vogel"
+) -> NDArray[np.float64] | float:
+    """Kinematic viscosity ν = η₀/ρ.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+    temperature : float or array — [degC]
+    method : {"vogel", "walther"}
+        As :func:`viscosity`.
+
+    Returns
+    -------
+    float or array — [mm²/s] (cSt)
+
+    Raises
+    ------
+    InputError, ModelUnavailableError
+        As :func:`viscosity`.
+
+    Notes
+    -----
+    Source: definition; density from :func:`density`.
+    """
+    eta = np.asarray(viscosity(lubricant, temperature, method))
+    return _result(eta / _density_eval(lubricant, _as_array("temperature", temperature)) * 1e6)
+
+
+def pressure_viscosity_coefficient(
+    lubricant: Lubricant, temperature: ArrayLike
+) -> NDArray[np.float64] | float:
+    """Pressure–viscosity coefficient α, interpolated log-linearly in temperature.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+    temperature : float or array — [degC]
+        Inside :func:`temperature_range`; outside the table the end segments are
+        extended.
+
+    Returns
+    -------
+    float or array — [1/GPa]
+
+    Raises
+    ------
+    InputError
+        Temperature outside the accepted range.
+
+    Notes
+    -----
+    Source: seed Table 5.2. ln α is close to linear in T for mineral oils (e.g. the
+    75W90 table: ln α falls by 0.26, 0.20, 0.16 per 25 K); piecewise-linear ln α is
+    the reconstruction used here.
+    """
+    t = _temperature(lubricant, temperature)
+    ln_alpha = np.log(lubricant.pressure_viscosity_coefficient)
+    return _result(np.exp(_piecewise_linear(t, lubricant.temperature, ln_alpha)))
+
+
+def _piecewise_linear(
+    t: NDArray[np.float64], xs: Sequence[float], ys: ArrayLike
+) -> NDArray[np.float64]:
+    """Piecewise-linear interpolation with the end segments extended linearly."""
+    x = np.asarray(xs, dtype=float)
+    y = np.asarray(ys, dtype=float)
+    out = np.interp(t, x, y)
+    lo_slope = (y[1] - y[0]) / (x[1] - x[0])
+    hi_slope = (y[-1] - y[-2]) / (x[-1] - x[-2])
+    out = np.where(t < x[0], y[0] + lo_slope * (t - x[0]), out)
+    return np.where(t > x[-1], y[-1] + hi_slope * (t - x[-1]), out)
+
+
+def _density_eval(lubricant: Lubricant, t: NDArray[np.float64]) -> NDArray[np.float64]:
+    slope, intercept = np.polyfit(lubricant.temperature, lubricant.density, 1)
+    return intercept + slope * t
+
+
+def density(lubricant: Lubricant, temperature: ArrayLike) -> NDArray[np.float64] | float:
+    """Density from a straight line fitted to the table by least squares.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+    temperature : float or array — [degC]
+
+    Returns
+    -------
+    float or array — [kg/m3]
+
+    Raises
+    ------
+    InputError
+        Temperature outside the accepted range.
+
+    Notes
+    -----
+    Source: seed Table 5.2 (whose densities fall exactly 0.6 kg/m3 per K).
+    """
+    return _result(_density_eval(lubricant, _temperature(lubricant, temperature)))
+
+
+def thermal_conductivity(
+    lubricant: Lubricant, temperature: ArrayLike
+) -> NDArray[np.float64] | float:
+    """Thermal conductivity k: constant, or piecewise linear in T if tabulated.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+    temperature : float or array — [degC]
+
+    Returns
+    -------
+    float or array — [W/(m K)]
+
+    Raises
+    ------
+    InputError
+        Temperature outside the accepted range.
+
+    Notes
+    -----
+    Source: the lubricant file (``thermal_conductivity_source``); for the bundled 75W90
+    an assumed typical value, since the seed gives none.
+    """
+    t = _temperature(lubricant, temperature)
+    k = lubricant.thermal_conductivity
+    if len(k) == 1:
+        return _result(np.full_like(t, k[0], dtype=float))
+    return _result(_piecewise_linear(t, lubricant.temperature, k))
+
+
+def temperature_viscosity_coefficient(
+    lubricant: Lubricant, temperature: ArrayLike
+) -> NDArray[np.float64] | float:
+    """Temperature–viscosity coefficient β = −(1/η₀) dη₀/dT.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+    temperature : float or array — [degC]
+
+    Returns
+    -------
+    float or array — [1/K]
+        From the tabulated values (piecewise linear) if the lubricant has them, else the
+        derivative of the Vogel fit, β = b/(T − c)².
+
+    Raises
+    ------
+    InputError
+        Temperature outside the accepted range.
+
+    Notes
+    -----
+    Source: definition used in the thermal loading factor L = β η₀ u²/k of Gupta et
+    al. (1992) (see :func:`friction.film.thermal_loading`).
+    """
+    t = _temperature(lubricant, temperature)
+    if lubricant.temperature_viscosity_coefficient is not None:
+        return _result(
+            _piecewise_linear(t, lubricant.temperature, lubricant.temperature_viscosity_coefficient)
+        )
+    v = lubricant.vogel
+    return _result(v.b / (t - v.c) ** 2)
+
+
+# ----------------------------------------------------------------------------- loading
+def _bundled() -> dict[str, Any]:
+    folder = resources.files("friction").joinpath("data")
+    return {
+        entry.name[: -len(".toml")]: entry
+        for entry in folder.iterdir()
+        if entry.name.endswith(".toml")
+    }
+
+
+def available_lubricants() -> tuple[str, ...]:
+    """Names of the lubricants bundled with the toolkit (``friction/data/*.toml``).
+
+    Returns
+    -------
+    tuple of str
+        Sorted names (file stems), e.g. ``("75W90",)``.
+
+    Notes
+    -----
+    Source: each file's ``source`` field (75W90: seed Table 5.2).
+    """
+    return tuple(sorted(_bundled()))
+
+
+def lubricant_from_mapping(data: Mapping[str, Any], origin: str = "<mapping>") -> Lubricant:
+    """Build a :class:`Lubricant` from a parsed oil-file mapping, validating every field.
+
+    Parameters
+    ----------
+    data : mapping
+        Parsed TOML with the schema of ``friction/data/75W90.toml`` (see module docstring).
+    origin : str
+        Where the data came from, quoted in error messages.
+
+    Returns
+    -------
+    Lubricant
+
+    Raises
+    ------
+    InputError
+        Naming the field: a missing or unknown key, a ``[units]`` entry that differs from
+        the required unit, or any check of :class:`Lubricant`.
+
+    Notes
+    -----
+    Source: the schema of this module (module docstring); the bundled 75W90 file holds
+    seed Table 5.2.
+    """
+    unknown = sorted(set(data) - _KNOWN_KEYS)
+    if unknown:
+        raise InputError(f"{origin}: unknown field(s) {unknown}; known: {sorted(_KNOWN_KEYS)}")
+    required = ("name", "source", *_REQUIRED_UNITS, "units")
+    missing = [k for k in required if k not in data]
+    if missing:
+        raise InputError(f"{origin}: missing field(s) {missing}")
+    units = data["units"]
+    if not isinstance(units, Mapping):
+        raise InputError(f"{origin}: units must be a table of field = unit string")
+    expected = dict(_REQUIRED_UNITS)
+    expected.update({k: v for k, v in _OPTIONAL_UNITS.items() if k in data})
+    for key, unit in expected.items():
+        if units.get(key) != unit:
+            raise InputError(
+                f"{origin}: units.{key} must be {unit!r} (the unit this schema uses); got"
+                f" {units.get(key)!r}"
+            )
+    extra = data.get("extrapolation", {})
+    if not isinstance(extra, Mapping) or set(extra) - {"below", "above"}:
+        raise InputError(f"{origin}: extrapolation must be a table with keys below, above [K]")
+    kwargs: dict[str, Any] = {
+        key: data[key]
+        for key in (
+            "name",
+            "source",
+            "temperature",
+            "dynamic_viscosity",
+            "pressure_viscosity_coefficient",
+            "density",
+            "thermal_conductivity",
+        )
+    }
+    for key in ("temperature_viscosity_coefficient", "thermal_conductivity_source", "notes"):
+        if key in data:
+            kwargs[key] = data[key]
+    if "below" in extra:
+        kwargs["extrapolation_below"] = extra["below"]
+    if "above" in extra:
+        kwargs["extrapolation_above"] = extra["above"]
+    try:
+        return Lubricant(**kwargs)
+    except InputError as exc:
+        raise InputError(f"{origin}: {exc}") from exc
+
+
+def load_lubricant(path_or_name: str | Path) -> Lubricant:
+    """Load a lubricant by bundled name (e.g. ``"75W90"``) or from a TOML file path.
+
+    Parameters
+    ----------
+    path_or_name : str or Path
+        A bundled name (case-insensitive; see :func:`available_lubricants`) or the path
+        of a TOML file with the schema of the module docstring.
+
+    Returns
+    -------
+    Lubricant
+
+    Raises
+    ------
+    ModelUnavailableError
+        Neither a bundled name nor an existing file (the message lists the bundled names).
+    InputError
+        The file is not valid TOML or fails validation (the message names the field).
+
+    Notes
+    -----
+    Source: bundled files in ``friction/data`` (75W90: seed Table 5.2, thermal
+    conductivity assumed — see the file's header).
+    """
+    bundled = {k.lower(): v for k, v in _bundled().items()}
+    key = str(path_or_name).lower()
+    if isinstance(path_or_name, str) and key in bundled:
+        text = bundled[key].read_text(encoding="utf-8")
+        origin = f"bundled lubricant {path_or_name!r}"
+    else:
+        path = Path(path_or_name)
+        if not path.is_file():
+            raise ModelUnavailableError(
+                f"no lubricant named or at {str(path_or_name)!r}; bundled: {available_lubricants()}"
+            )
+        text = path.read_text(encoding="utf-8")
+        origin = str(path)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{origin}: not valid TOML: {exc}") from exc
+    return lubricant_from_mapping(data, origin)
