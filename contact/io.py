@@ -106,8 +106,9 @@ def _datasets(obj: xr.Dataset | xr.DataTree) -> list[tuple[str, xr.Dataset]]:
 def check_conventions(obj: xr.Dataset | xr.DataTree) -> None:
     """Check a Dataset or every node of a DataTree against the toolkit's conventions.
 
-    Every data variable and every non-index coordinate with a numeric dtype must
-    carry ``units`` and ``long_name``; every attribute must be netCDF-safe.
+    Every numeric variable (data or coordinate) must carry ``units`` and
+    ``long_name``; every text variable a ``long_name``; every attribute must be
+    netCDF-safe.
 
     Raises
     ------
@@ -117,14 +118,11 @@ def check_conventions(obj: xr.Dataset | xr.DataTree) -> None:
     problems: list[str] = []
     for path, ds in _datasets(obj):
         for name, var in ds.variables.items():
-            is_index_dim = name in ds.dims
             numeric = var.dtype.kind in "iufcbmM"
-            if not is_index_dim or numeric:
-                for key in ("units", "long_name"):
-                    if key not in var.attrs and not (
-                        is_index_dim and key == "units" and not numeric
-                    ):
-                        problems.append(f"{path}:{name} has no {key!r}")
+            required = ("units", "long_name") if numeric else ("long_name",)
+            for key in required:
+                if key not in var.attrs:
+                    problems.append(f"{path}:{name} has no {key!r}")
             for key, val in var.attrs.items():
                 try:
                     _safe_value(key, val)

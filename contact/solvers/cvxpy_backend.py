@@ -63,8 +63,8 @@ def _accuracy_options(solver: str | None, accuracy: str) -> dict[str, Any]:
         return {}
     table = {
         "CLARABEL": {"tol_feas": eps, "tol_gap_abs": eps, "tol_gap_rel": 0.0, "tol_ktratio": eps},
-        "OSQP": {"eps_abs": eps, "eps_rel": 0.0, "max_iter": 400_000, "polishing": True},
-        "SCS": {"eps_abs": eps, "eps_rel": 0.0, "max_iters": 200_000},
+        "OSQP": {"eps_abs": eps, "eps_rel": 0.0, "max_iter": 20_000, "polishing": True},
+        "SCS": {"eps_abs": eps, "eps_rel": 0.0, "max_iters": 20_000},
         "ECOS": {"feastol": eps, "abstol": eps, "reltol": eps},
         "PIQP": {"eps_abs": eps, "eps_rel": 0.0},
         "PROXQP": {"eps_abs": eps, "eps_rel": 0.0},

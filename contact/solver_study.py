@@ -1,0 +1,285 @@
+"""The solver-comparison study: every backend on a set of contact problems.
+
+Results are a labelled ``xarray.Dataset`` over (``solver``, ``problem``); the
+summary follows qpbenchmark (Caron et al.): success rate, shifted geometric mean
+of the solve time relative to the best backend, worst residuals.
+
+Conventions of the summary
+--------------------------
+- *Success*: the solution is certified by our own residuals (``found``).
+- *Time*: build + solve (+ polish) wall time, the minimum over ``repeats`` runs.
+  Failures are charged ``time_limit`` as qpbenchmark charges its time limit.
+- *Shifted geometric mean*: exp(mean(ln(t + sh))) − sh with t in milliseconds and
+  sh = 1 ms (qpbenchmark uses sh = 10 on seconds-scale problems; LTCA problems
+  solve in milliseconds), divided by the smallest over backends.
+- *Force error*: ‖F − F_ref‖∞ / ‖F_ref‖∞ against our exact solver ``active_set``.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from collections.abc import Iterable, Sequence
+
+import numpy as np
+import xarray as xr
+
+from contact.problem import DEFAULT_TOLERANCE
+from contact.problem_set import TestProblem
+from contact.solvers import DEFAULT_SOLVER, available_solvers, get_backend, solve_contact
+
+__all__ = ["compare_solvers", "default_study_solvers", "shifted_geometric_mean", "summarize"]
+
+log = logging.getLogger(__name__)
+
+_RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
+
+
+def shifted_geometric_mean(values: Iterable[float], shift: float) -> float:
+    """exp(mean(ln(v + sh))) − sh (Mittelmann; qpbenchmark ``shgeom``).
+
+    Parameters
+    ----------
+    values : iterable of float, ≥ 0
+    shift : float, ≥ 1 (same unit as ``values``)
+
+    Returns
+    -------
+    float
+    """
+    v = np.asarray(list(values), float)
+    if v.size == 0 or np.any(v < 0) or shift < 1:
+        raise ValueError("shifted_geometric_mean: needs non-negative values and shift ≥ 1")
+    return float(np.exp(np.mean(np.log(v + shift))) - shift)
+
+
+def default_study_solvers() -> list[str]:
+    """Every available backend except the ``cvxpy:NAME`` variants (``cvxpy`` stays)."""
+    return [s for s in available_solvers() if not s.startswith("cvxpy:")]
+
+
+def compare_solvers(
+    problems: Sequence[TestProblem],
+    solvers: Sequence[str] | None = None,
+    *,
+    accuracy: str = "high",
+    polish: bool = True,
+    tolerance: float = DEFAULT_TOLERANCE,
+    repeats: int = 1,
+    max_size: dict[str, int] | None = None,
+    progress: bool = False,
+) -> xr.Dataset:
+    """Run every solver on every problem and collect certified results.
+
+    Parameters
+    ----------
+    problems : sequence of TestProblem
+    solvers : sequence of str, optional
+        Registry names; default :func:`default_study_solvers`.
+    accuracy, polish, tolerance
+        Passed to :func:`contact.solve_contact`.
+    repeats : int
+        Runs per (solver, problem); the minimum time is kept (≥ 1).
+    max_size : dict of str to int, optional
+        Skip a solver on problems larger than this N (recorded as not run, status
+        ``skipped``); for backends known to take minutes on large dense problems.
+    progress : bool
+        Show a tqdm progress bar.
+
+    Returns
+    -------
+    xarray.Dataset
+        dims (``solver``, ``problem``): ``found``, ``claimed_success``, ``polished``,
+        ``ran`` [0/1], ``solve_time``, ``build_time`` [s], residuals
+        ``residual_primal`` … [1], ``force_error``, ``rotation_error`` [1], ``iterations``,
+        ``status``; coords ``problem_size``, ``problem_kind``, ``solver_family``.
+    """
+    solvers = list(solvers) if solvers is not None else default_study_solvers()
+    for name in solvers:
+        get_backend(name)  # unknown names fail before any work
+    if repeats < 1:
+        raise ValueError(f"repeats: must be ≥ 1, got {repeats}")
+    max_size = dict(max_size or {})
+    ns, npb = len(solvers), len(problems)
+    f = lambda: np.full((ns, npb), np.nan)  # noqa: E731
+    out = {
+        k: f()
+        for k in (
+            "solve_time",
+            "build_time",
+            "force_error",
+            "rotation_error",
+            *(f"residual_{r}" for r in _RESIDUALS),
+        )
+    }
+    ints = {
+        k: np.zeros((ns, npb), dtype=np.int8)
+        for k in ("found", "claimed_success", "polished", "ran")
+    }
+    iterations = np.full((ns, npb), -1, dtype=np.int64)
+    status = np.full((ns, npb), "", dtype=object)
+    refs = [solve_contact(tp.problem, DEFAULT_SOLVER) for tp in problems]
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=ns * npb, desc="compare-solvers", unit="solve")
+    for j, (tp, ref) in enumerate(zip(problems, refs, strict=True)):
+        for i, name in enumerate(solvers):
+            if bar is not None:
+                bar.set_postfix_str(f"{name} on {tp.name}", refresh=False)
+            if tp.problem.size > max_size.get(name, math.inf):
+                status[i, j] = f"skipped: N = {tp.problem.size} > {max_size[name]}"
+                if bar is not None:
+                    bar.update()
+                continue
+            best = None
+            for _ in range(repeats):
+                sol = solve_contact(
+                    tp.problem, name, accuracy=accuracy, polish_solution=polish, tolerance=tolerance
+                )
+                t = sol.solve_time + sol.build_time
+                if best is None or t < best[0]:
+                    best = (t, sol)
+            sol = best[1]
+            ints["ran"][i, j] = 1
+            ints["found"][i, j] = sol.found
+            ints["claimed_success"][i, j] = bool(sol.extras.get("claimed_success", False))
+            ints["polished"][i, j] = sol.status == "solved (polished)"
+            out["solve_time"][i, j] = sol.solve_time
+            out["build_time"][i, j] = sol.build_time
+            for r in _RESIDUALS:
+                out[f"residual_{r}"][i, j] = min(sol.residuals[r], 1e300)
+            if np.all(np.isfinite(sol.force)) and ref.found:
+                out["force_error"][i, j] = float(
+                    np.max(np.abs(sol.force - ref.force)) / np.max(np.abs(ref.force))
+                )
+                out["rotation_error"][i, j] = abs(sol.rotation - ref.rotation) / abs(ref.rotation)
+            iterations[i, j] = sol.iterations
+            status[i, j] = sol.status
+            if bar is not None:
+                bar.update()
+    if bar is not None:
+        bar.close()
+    dims = ("solver", "problem")
+    meta = {
+        "solve_time": ("s", "backend wall time incl. polishing (min over repeats)"),
+        "build_time": ("s", "problem conversion time (scaling, dense to sparse, modelling)"),
+        "force_error": ("1", "max force error relative to the exact active-set solution"),
+        "rotation_error": (
+            "1",
+            "transmission-error (rotation) error relative to the exact solution",
+        ),
+        **{
+            f"residual_{r}": ("1", f"relative {r} residual computed by the toolkit")
+            for r in _RESIDUALS
+        },
+    }
+    data = {k: (dims, v, {"units": meta[k][0], "long_name": meta[k][1]}) for k, v in out.items()}
+    flags = {
+        "found": "certified solution found (1) or not (0)",
+        "claimed_success": "backend claimed success (1) or not (0)",
+        "polished": "answer certified only after polishing (1) or not (0)",
+        "ran": "backend was run on this problem (1) or skipped (0)",
+    }
+    data.update({k: (dims, v, {"units": "1", "long_name": flags[k]}) for k, v in ints.items()})
+    data["iterations"] = (
+        dims,
+        iterations,
+        {"units": "1", "long_name": "backend iterations (-1: not reported)"},
+    )
+    data["status"] = (dims, status.astype(str), {"long_name": "solution status"})
+    coords = {
+        "solver": ("solver", list(solvers), {"long_name": "solver backend (registry name)"}),
+        "problem": ("problem", [tp.name for tp in problems], {"long_name": "problem name"}),
+        "problem_size": (
+            "problem",
+            np.array([tp.problem.size for tp in problems]),
+            {"units": "1", "long_name": "number of contact segments N"},
+        ),
+        "problem_kind": ("problem", [tp.kind for tp in problems], {"long_name": "problem family"}),
+        "solver_family": (
+            "solver",
+            [get_backend(s).family for s in solvers],
+            {"long_name": "algorithm family"},
+        ),
+    }
+    attrs = {
+        "title": "hypoid-ltca solver comparison",
+        "accuracy": accuracy,
+        "polish": int(polish),
+        "tolerance": tolerance,
+        "repeats": repeats,
+        "reference_solver": DEFAULT_SOLVER,
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def summarize(
+    results: xr.Dataset, *, time_limit: float = 10.0, shift_ms: float = 1.0
+) -> xr.Dataset:
+    """qpbenchmark-style summary per solver of a :func:`compare_solvers` result.
+
+    Parameters
+    ----------
+    results : xarray.Dataset
+    time_limit : float — [s]
+        Time charged for a failure or a skipped problem.
+    shift_ms : float — [ms]
+        Shift of the shifted geometric mean.
+
+    Returns
+    -------
+    xarray.Dataset over ``solver``: ``success_rate`` [%], ``time_shgeom`` [ms],
+    ``time_relative`` [1] (to the best), ``worst_residual``, ``worst_force_error`` [1]
+    (over certified solutions), ``polished_rate`` [%].
+    """
+    found = results["found"].values.astype(bool)
+    t = (results["solve_time"] + results["build_time"]).values * 1e3
+    t = np.where(found, t, time_limit * 1e3)
+    sg = np.array([shifted_geometric_mean(row, shift_ms) for row in t])
+    res = np.max(np.stack([results[f"residual_{r}"].values for r in _RESIDUALS]), axis=0)
+    worst_res = np.array(
+        [np.max(r[f], initial=0.0) if f.any() else np.inf for r, f in zip(res, found, strict=True)]
+    )
+    ferr = results["force_error"].values
+    worst_ferr = np.array(
+        [np.max(e[f], initial=0.0) if f.any() else np.inf for e, f in zip(ferr, found, strict=True)]
+    )
+    n = found.shape[1]
+    return xr.Dataset(
+        {
+            "success_rate": (
+                "solver",
+                100.0 * found.sum(axis=1) / n,
+                {"units": "percent", "long_name": "certified solutions"},
+            ),
+            "time_shgeom": (
+                "solver",
+                sg,
+                {"units": "ms", "long_name": "shifted geometric mean of time"},
+            ),
+            "time_relative": (
+                "solver",
+                sg / np.min(sg),
+                {"units": "1", "long_name": "shifted geometric mean time / best"},
+            ),
+            "worst_residual": (
+                "solver",
+                worst_res,
+                {"units": "1", "long_name": "worst residual of certified solutions"},
+            ),
+            "worst_force_error": (
+                "solver",
+                worst_ferr,
+                {"units": "1", "long_name": "worst force error (certified)"},
+            ),
+            "polished_rate": (
+                "solver",
+                100.0 * results["polished"].values.sum(axis=1) / n,
+                {"units": "percent", "long_name": "certified only after polishing"},
+            ),
+        },
+        coords={"solver": results["solver"], "solver_family": results["solver_family"]},
+        attrs={"time_limit_s": time_limit, "shift_ms": shift_ms},
+    ).sortby("time_relative")

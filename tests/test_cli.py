@@ -1,0 +1,74 @@
+"""The ``ltca`` command line: commands listed, compare-solvers writes a readable netCDF."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from contact.cli import main
+from contact.io import read_netcdf, write_netcdf
+from contact.problem_set import ltca_like_problem
+from contact.solver_study import compare_solvers, shifted_geometric_mean, summarize
+
+
+def test_help_lists_commands(capsys):
+    with pytest.raises(SystemExit) as info:
+        main(["--help"])
+    assert info.value.code == 0
+    assert "compare-solvers" in capsys.readouterr().out
+
+
+def test_python_dash_m_contact():
+    out = subprocess.run(
+        [sys.executable, "-m", "contact", "--version"], capture_output=True, text=True, check=True
+    )
+    assert "hypoid-ltca" in out.stdout
+
+
+def test_compare_solvers_command_writes_netcdf(tmp_path, capsys):
+    path = tmp_path / "cmp.nc"
+    code = main(
+        [
+            "compare-solvers",
+            "--quick",
+            "--solvers",
+            "active_set",
+            "daqp",
+            "osqp",
+            "--no-progress",
+            "-o",
+            str(path),
+        ]
+    )
+    assert code == 0
+    out = capsys.readouterr().out
+    assert "active_set" in out and "time / best" in out
+    ds = read_netcdf(path)
+    assert ds.sizes["solver"] == 3
+    assert int(ds["found"].sum()) == ds.sizes["solver"] * ds.sizes["problem"]
+    xr.testing.assert_identical(read_netcdf(write_netcdf(ds, tmp_path / "again.nc")), ds)
+
+
+def test_unknown_solver_is_a_clean_error(capsys):
+    assert main(["compare-solvers", "--quick", "--solvers", "nope", "--no-progress"]) == 2
+    assert "available" in capsys.readouterr().err
+
+
+def test_summary_success_rate_and_relative_time():
+    problems = [ltca_like_problem(40, seed=s) for s in range(3)]
+    res = compare_solvers(problems, ["active_set", "quadprog"])
+    summ = summarize(res)
+    assert np.all(summ.success_rate.values == 100.0)
+    assert np.min(summ.time_relative.values) == pytest.approx(1.0)
+    assert np.all(summ.worst_force_error.values < 1e-8)
+
+
+def test_shifted_geometric_mean():
+    # sh-geom of constant values is that value; against a hand computation otherwise.
+    assert shifted_geometric_mean([3.0, 3.0, 3.0], 1.0) == pytest.approx(3.0)
+    expected = np.exp((np.log(2.0) + np.log(9.0)) / 2) - 1
+    assert shifted_geometric_mean([1.0, 8.0], 1.0) == pytest.approx(expected)
