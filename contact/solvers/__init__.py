@@ -250,7 +250,7 @@ def solve_contact(
         )
     F, theta = np.asarray(raw.force, float), float(raw.rotation)
     res = contact_residuals(problem, F, theta)
-    status = "solved" if raw.status == "solved" or raw.claimed else raw.status
+    polished = False
     if not _certified(res, tolerance) and polish_solution:
         t0 = time.perf_counter()
         pol = polish(problem, F, theta) if np.all(np.isfinite(F)) and math.isfinite(theta) else None
@@ -261,7 +261,7 @@ def solve_contact(
             if _certified(res_p, tolerance):
                 extras["raw_residuals"] = res
                 F, theta, res = pol[0], pol[1], res_p
-                status = "solved (polished)"
+                polished = True
     found = _certified(res, tolerance)
     if not found:
         worst = max(res, key=res.get)
@@ -269,8 +269,14 @@ def solve_contact(
             f"not certified: {worst} residual {res[worst]:.2e} > {tolerance:.0e} "
             f"(backend: {raw.status})"
         )
-    elif raw.status.startswith("solved") and "fallback" in raw.status:
-        status = raw.status
+    elif polished:
+        status = "solved (polished)"
+    elif raw.status.startswith("solved"):
+        status = raw.status  # our own solver, possibly naming its fallback
+    elif raw.claimed:
+        status = "solved"
+    else:
+        status = f"solved (certified, although the backend reported: {raw.status})"
     return ContactSolution(
         force=F,
         rotation=theta,
