@@ -41,7 +41,7 @@ def _cmd_compare_solvers(args: argparse.Namespace) -> int:
         solvers,
         accuracy=args.accuracy,
         polish=not args.no_polish,
-        repeats=args.repeats,
+        repeats=args.repeats or (3 if args.quick else 1),
         progress=not args.no_progress,
     )
     summary = summarize(results)
@@ -124,7 +124,12 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="report backends' raw answers (no exact polishing on their contact set)",
     )
-    p.add_argument("--repeats", type=int, default=1, help="runs per pair; the fastest counts")
+    p.add_argument(
+        "--repeats",
+        type=int,
+        default=None,
+        help="runs per (solver, problem); the fastest counts (default 3 with --quick, else 1)",
+    )
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.add_argument("-o", "--output", help="write the full results as netCDF")
     p.set_defaults(func=_cmd_compare_solvers)
