@@ -1,0 +1,557 @@
+"""Case files: one gear pair in TOML, loaded into frozen dataclasses (see ``docs/cases.md``).
+
+A case holds the pair data (shaft angle, offset, method, hands, drive flank), and per member
+its blank, and per member and flank the blade and the machine settings of the cradle-type
+generator. Angles are degrees in files and radians in the dataclasses (converted once
+here); lengths are mm. Every field is validated on load; an error names the field by its
+dotted path and the accepted range, e.g.
+``pinion.machine.concave.ratio_of_roll: must be > 0 for a generated member, got -1.0``.
+
+Settings are read for a right-hand member (see :mod:`geometry.machine`); a left-hand member
+is generated as the mirror image of the right-hand one.
+
+Public functions
+----------------
+Blank, FlankTool, Member, Pair, Case     frozen dataclasses
+load_case                                 read and validate a TOML case file
+case_from_dict                            the same from an already parsed mapping
+Case.to_toml                              the case as TOML text (round-trips through load)
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import math
+import os
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import MappingProxyType
+from typing import Any
+
+from geometry.assembly import HANDS, Misalignment
+from geometry.cutter import PROFILE_TYPES, Blade
+from geometry.errors import InputError, ModelUnavailableError
+from geometry.machine import PROCESSES, MachineSettings
+
+__all__ = [
+    "FLANKS",
+    "METHODS",
+    "Blank",
+    "Case",
+    "FlankTool",
+    "Member",
+    "Pair",
+    "case_from_dict",
+    "load_case",
+]
+
+log = logging.getLogger(__name__)
+
+#: flank name → the blade that cuts it
+FLANKS: dict[str, str] = {"concave": "outside", "convex": "inside"}
+#: cutting methods: name → implemented
+METHODS: dict[str, bool] = {"FM": True, "FH": False}
+
+_DEG = math.pi / 180.0
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.6g}"
+
+
+@dataclass(frozen=True)
+class Blank:
+    """Blank of one member, as a case file gives it (ISO 23509 names; angles rad, lengths mm).
+
+    Parameters
+    ----------
+    teeth : int
+        Number of teeth z, in [3, 500].
+    face_width : float — [mm]
+        b, in (0, outer_cone_distance).
+    outer_cone_distance : float — [mm]
+        R_e > 0, along the pitch cone from the pitch apex to the heel.
+    pitch_angle, face_angle, root_angle : float — [rad]
+        δ, δ_a, δ_f in (0, 90°], with δ_f ≤ δ ≤ δ_a and δ_f < δ_a.
+    pitch_apex, face_apex, root_apex : float — [mm]
+        Apex positions "beyond the crossing point" (ISO 23509 t_zm, t_zF, t_zR: positive when
+        the apex lies beyond the crossing point, away from the member body); |t| < R_e.
+    outer_addendum, outer_dedendum : float — [mm]
+        h_ae ≥ 0, h_fe > 0 at R_e, measured perpendicular to the pitch cone; the face and
+        root cones must pass through these points within max(0.02 mm, 1 % of h_ae + h_fe).
+
+    Raises
+    ------
+    InputError
+        Naming the field and its range.
+    """
+
+    teeth: int
+    face_width: float
+    outer_cone_distance: float
+    pitch_angle: float
+    face_angle: float
+    root_angle: float
+    pitch_apex: float
+    face_apex: float
+    root_apex: float
+    outer_addendum: float
+    outer_dedendum: float
+
+    def __post_init__(self) -> None:
+        if isinstance(self.teeth, bool) or not isinstance(self.teeth, int) or not (
+                3 <= self.teeth <= 500):
+            raise InputError(f"teeth: must be an integer in [3, 500], got {self.teeth!r}")
+        for name in ("face_width", "outer_cone_distance", "pitch_angle", "face_angle",
+                     "root_angle", "pitch_apex", "face_apex", "root_apex", "outer_addendum",
+                     "outer_dedendum"):
+            val = getattr(self, name)
+            if isinstance(val, bool) or not isinstance(val, (int, float)) or not math.isfinite(
+                    val):
+                raise InputError(f"{name}: must be a finite number, got {val!r}")
+            object.__setattr__(self, name, float(val))
+        if self.outer_cone_distance <= 0:
+            raise InputError(
+                f"outer_cone_distance: must be > 0 mm, got {self.outer_cone_distance}")
+        if not 0 < self.face_width < self.outer_cone_distance:
+            raise InputError(
+                f"face_width: must be in (0, outer_cone_distance = {self.outer_cone_distance}) "
+                f"mm, got {self.face_width}")
+        for name in ("pitch_angle", "face_angle", "root_angle"):
+            v = getattr(self, name)
+            if not 0 < v <= 0.5 * math.pi + 1e-12:
+                raise InputError(f"{name}: must be in (0, 90] deg, got {_fmt(v / _DEG)}")
+        if not (self.root_angle <= self.pitch_angle <= self.face_angle
+                and self.root_angle < self.face_angle):
+            raise InputError(
+                "pitch_angle: must satisfy root_angle <= pitch_angle <= face_angle and "
+                f"root_angle < face_angle, got root {_fmt(self.root_angle / _DEG)}, pitch "
+                f"{_fmt(self.pitch_angle / _DEG)}, face {_fmt(self.face_angle / _DEG)} deg")
+        for name in ("pitch_apex", "face_apex", "root_apex"):
+            if abs(getattr(self, name)) >= self.outer_cone_distance:
+                raise InputError(
+                    f"{name}: must be in (-R_e, R_e) = (-{self.outer_cone_distance}, "
+                    f"{self.outer_cone_distance}) mm, got {getattr(self, name)}")
+        if self.outer_addendum < 0:
+            raise InputError(f"outer_addendum: must be >= 0 mm, got {self.outer_addendum}")
+        if self.outer_dedendum <= 0:
+            raise InputError(f"outer_dedendum: must be > 0 mm, got {self.outer_dedendum}")
+        # consistency: face and root cones through the outer addendum / dedendum points
+        d = self.pitch_angle
+        zp = -self.pitch_apex
+        tol = max(0.02, 0.01 * (self.outer_addendum + self.outer_dedendum))
+        for name, h, apex, angle in (
+                ("face_apex", self.outer_addendum, self.face_apex, self.face_angle),
+                ("root_apex", -self.outer_dedendum, self.root_apex, self.root_angle)):
+            z = zp + self.outer_cone_distance * math.cos(d) - h * math.sin(d)
+            rho = self.outer_cone_distance * math.sin(d) + h * math.cos(d)
+            # distance of the point from the cone line through (-apex, 0) at ``angle``
+            dist = abs((z + apex) * math.sin(angle) - rho * math.cos(angle))
+            if dist > tol:
+                raise InputError(
+                    f"{name}: the cone through this apex misses the outer "
+                    f"{'addendum' if h >= 0 else 'dedendum'} point by {dist:.4g} mm "
+                    f"(accepted {tol:.3g} mm); check the apex sign (positive beyond the "
+                    "crossing point) and the cone angle")
+
+
+@dataclass(frozen=True)
+class FlankTool:
+    """Blade and machine settings that cut one flank."""
+
+    blade: Blade
+    machine: MachineSettings
+
+
+@dataclass(frozen=True)
+class Member:
+    """One member (pinion or gear): blank and the tools of its two flanks."""
+
+    name: str
+    hand: str
+    process: str
+    blank: Blank
+    concave: FlankTool
+    convex: FlankTool
+
+    def flank(self, name: str) -> FlankTool:
+        """The tool of flank ``name`` (``"concave"`` or ``"convex"``)."""
+        if name not in FLANKS:
+            raise InputError(f"flank: must be one of {list(FLANKS)}, got {name!r}")
+        return getattr(self, name)
+
+
+@dataclass(frozen=True)
+class Pair:
+    """Pair data: Σ [rad], E [mm] (ISO 23509 sign), method, drive flank of the pinion."""
+
+    shaft_angle: float
+    offset: float
+    method: str
+    drive_flank: str
+
+
+@dataclass(frozen=True)
+class Case:
+    """A whole case file. ``extra`` keeps other stages' tables (unvalidated here)."""
+
+    name: str
+    source: str
+    pair: Pair
+    pinion: Member
+    gear: Member
+    misalignment: Misalignment = field(default_factory=Misalignment)
+    synthesised: tuple[str, ...] = ()
+    extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
+
+    def member(self, name: str) -> Member:
+        """The member called ``name`` (``"pinion"`` or ``"gear"``)."""
+        if name not in ("pinion", "gear"):
+            raise InputError(f"member: must be 'pinion' or 'gear', got {name!r}")
+        return getattr(self, name)
+
+    def to_toml(self) -> str:
+        """The case as TOML text; :func:`case_from_dict` of its parse equals the case.
+
+        Returns
+        -------
+        str
+            Angles in degrees, lengths in mm, as in a case file.
+        """
+        return _dump_toml(_case_to_dict(self))
+
+
+# ---------------------------------------------------------------------------- schema
+# field → (unit, required, default); unit "deg" is converted to rad, "list" is a list of
+# numbers, "str" a string, "mm"/"1" plain numbers
+_BLANK_FIELDS = {
+    "teeth": ("int", True, None),
+    "face_width": ("mm", True, None),
+    "outer_cone_distance": ("mm", True, None),
+    "pitch_angle": ("deg", True, None),
+    "face_angle": ("deg", True, None),
+    "root_angle": ("deg", True, None),
+    "pitch_apex": ("mm", False, 0.0),
+    "face_apex": ("mm", False, 0.0),
+    "root_apex": ("mm", False, 0.0),
+    "outer_addendum": ("mm", True, None),
+    "outer_dedendum": ("mm", True, None),
+}
+_BLADE_FIELDS = {
+    "point_radius": ("mm", True, None),
+    "blade_angle": ("deg", True, None),
+    "edge_radius": ("mm", False, 0.0),
+    "profile": ("str", False, "straight"),
+    "profile_radius": ("mm", False, 0.0),
+    "profile_reference_height": ("mm", False, 0.0),
+    "toprem_angle": ("deg", False, 0.0),
+    "toprem_height": ("mm", False, 0.0),
+    "flankrem_angle": ("deg", False, 0.0),
+    "flankrem_height": ("mm", False, 0.0),
+}
+_MACHINE_FIELDS = {
+    "radial_setting": ("mm", True, None),
+    "cradle_angle": ("deg", True, None),
+    "swivel": ("deg", False, 0.0),
+    "tilt": ("deg", False, 0.0),
+    "machine_root_angle": ("deg", True, None),
+    "machine_center_to_back": ("mm", False, 0.0),
+    "sliding_base": ("mm", False, 0.0),
+    "blank_offset": ("mm", False, 0.0),
+    "ratio_of_roll": ("1", False, 0.0),
+    "modified_roll": ("list", False, ()),
+    "helical_motion": ("list", False, ()),
+    "vertical_motion": ("list", False, ()),
+}
+_PAIR_FIELDS = {
+    "shaft_angle": ("deg", True, None),
+    "offset": ("mm", False, 0.0),
+    "method": ("str", False, "FM"),
+    "pinion_hand": ("str", True, None),
+    "gear_hand": ("str", True, None),
+    "drive_flank": ("str", False, "concave"),
+}
+_MISALIGNMENT_FIELDS = {
+    "delta_E": ("mm", False, 0.0),
+    "delta_P": ("mm", False, 0.0),
+    "delta_G": ("mm", False, 0.0),
+    "delta_Sigma": ("deg", False, 0.0),
+}
+_MEMBER_KEYS = {"process", "blank", "cutter", "machine"}
+_TOP_KEYS = {"name", "source", "synthesised", "pair", "pinion", "gear", "misalignment"}
+
+
+def _table(parent: Mapping, key: str, path: str, required: bool = True) -> Mapping:
+    if key not in parent:
+        if required:
+            raise InputError(f"{path}: missing table")
+        return {}
+    val = parent[key]
+    if not isinstance(val, Mapping):
+        raise InputError(f"{path}: must be a table, got {type(val).__name__}")
+    return val
+
+
+def _fields(table: Mapping, schema: dict, path: str) -> dict[str, Any]:
+    unknown = sorted(set(table) - set(schema))
+    if unknown:
+        raise InputError(f"{path}.{unknown[0]}: unknown field; accepted: {', '.join(schema)}")
+    out: dict[str, Any] = {}
+    for key, (unit, required, default) in schema.items():
+        where = f"{path}.{key}"
+        if key not in table:
+            if required:
+                raise InputError(f"{where}: missing (required, unit {unit})")
+            out[key] = default
+            continue
+        val = table[key]
+        if unit == "str":
+            if not isinstance(val, str):
+                raise InputError(f"{where}: must be a string, got {val!r}")
+            out[key] = val
+        elif unit == "int":
+            if isinstance(val, bool) or not isinstance(val, int):
+                raise InputError(f"{where}: must be an integer, got {val!r}")
+            out[key] = val
+        elif unit == "list":
+            if not isinstance(val, list) or any(
+                    isinstance(v, bool) or not isinstance(v, (int, float)) for v in val):
+                raise InputError(f"{where}: must be a list of numbers, got {val!r}")
+            if not all(math.isfinite(v) for v in val):
+                raise InputError(f"{where}: must be finite, got {val!r}")
+            out[key] = tuple(float(v) for v in val)
+        else:
+            if isinstance(val, bool) or not isinstance(val, (int, float)):
+                raise InputError(f"{where}: must be a number ({unit}), got {val!r}")
+            if not math.isfinite(val):
+                raise InputError(f"{where}: must be finite, got {val!r}")
+            out[key] = float(val) * (_DEG if unit == "deg" else 1.0)
+    return out
+
+
+def _build(cls, kwargs: dict, path: str):
+    try:
+        return cls(**kwargs)
+    except InputError as exc:
+        raise InputError(f"{path}.{exc}") from None
+
+
+def _member(raw: Mapping, name: str, hand: str) -> Member:
+    unknown = sorted(set(raw) - _MEMBER_KEYS)
+    if unknown:
+        raise InputError(f"{name}.{unknown[0]}: unknown field; accepted: "
+                         f"{', '.join(sorted(_MEMBER_KEYS))}")
+    process = raw.get("process")
+    if process not in PROCESSES:
+        raise InputError(f"{name}.process: must be one of {sorted(PROCESSES)}, got {process!r}")
+    blank = _build(Blank, _fields(_table(raw, "blank", f"{name}.blank"), _BLANK_FIELDS,
+                                  f"{name}.blank"), f"{name}.blank")
+    cutter = _table(raw, "cutter", f"{name}.cutter")
+    machine = _table(raw, "machine", f"{name}.machine")
+    tools = {}
+    for tab, where in ((cutter, "cutter"), (machine, "machine")):
+        unknown = sorted(set(tab) - set(FLANKS))
+        if unknown:
+            raise InputError(f"{name}.{where}.{unknown[0]}: unknown flank; accepted: "
+                             f"{', '.join(FLANKS)}")
+    for flank, side in FLANKS.items():
+        bpath = f"{name}.cutter.{flank}"
+        bkw = _fields(_table(cutter, flank, bpath), _BLADE_FIELDS, bpath)
+        if bkw["profile"] not in PROFILE_TYPES:
+            raise InputError(f"{bpath}.profile: must be one of {list(PROFILE_TYPES)}, got "
+                             f"{bkw['profile']!r}")
+        blade = _build(Blade, {"side": side, **bkw}, bpath)
+        mpath = f"{name}.machine.{flank}"
+        mkw = _fields(_table(machine, flank, mpath), _MACHINE_FIELDS, mpath)
+        settings = _build(MachineSettings, {"process": process, **mkw}, mpath)
+        tools[flank] = FlankTool(blade, settings)
+    return Member(name=name, hand=hand, process=process, blank=blank, **tools)
+
+
+def _paths(obj: Any, prefix: str = "") -> set[str]:
+    out = set()
+    if isinstance(obj, Mapping):
+        for k, v in obj.items():
+            p = f"{prefix}.{k}" if prefix else str(k)
+            out.add(p)
+            out |= _paths(v, p)
+    return out
+
+
+def case_from_dict(raw: Mapping[str, Any]) -> Case:
+    """Validate a parsed case mapping and build the :class:`Case`.
+
+    Parameters
+    ----------
+    raw : mapping
+        The parsed TOML document (degrees and mm, as in files).
+
+    Returns
+    -------
+    Case
+
+    Raises
+    ------
+    InputError
+        For a missing, unknown, mistyped or out-of-range field (the message names it by its
+        dotted path, e.g. ``gear.blank.teeth``) or inconsistent fields.
+    ModelUnavailableError
+        For ``pair.method = "FH"`` (face hobbing is reserved, not implemented yet).
+    """
+    if not isinstance(raw, Mapping):
+        raise InputError(f"case: must be a table, got {type(raw).__name__}")
+    for key in ("name", "source"):
+        if not isinstance(raw.get(key), str) or not raw.get(key).strip():
+            raise InputError(f"{key}: required non-empty string, got {raw.get(key)!r}")
+    synth = raw.get("synthesised", [])
+    if not isinstance(synth, list) or not all(isinstance(s, str) for s in synth):
+        raise InputError(f"synthesised: must be a list of field paths, got {synth!r}")
+    known = _paths(raw)
+    for s in synth:
+        if s not in known:
+            raise InputError(f"synthesised: {s!r} names no field of this case")
+    pr = _fields(_table(raw, "pair", "pair"), _PAIR_FIELDS, "pair")
+    if pr["method"] not in METHODS:
+        raise InputError(f"pair.method: must be one of {sorted(METHODS)}, got {pr['method']!r}")
+    if not METHODS[pr["method"]]:
+        raise ModelUnavailableError(
+            f"pair.method: {pr['method']!r} (face hobbing) is reserved and not implemented; "
+            f"available: {[m for m, ok in METHODS.items() if ok]}")
+    if not 0 < pr["shaft_angle"] < math.pi:
+        raise InputError(
+            f"pair.shaft_angle: must be in (0, 180) deg, got {_fmt(pr['shaft_angle'] / _DEG)}")
+    for key in ("pinion_hand", "gear_hand"):
+        if pr[key] not in HANDS:
+            raise InputError(f"pair.{key}: must be one of {sorted(HANDS)}, got {pr[key]!r}")
+    if pr["pinion_hand"] == pr["gear_hand"]:
+        raise InputError(
+            f"pair.gear_hand: must be the opposite of pair.pinion_hand ({pr['pinion_hand']}) "
+            "for an external bevel or hypoid pair")
+    if pr["drive_flank"] not in FLANKS:
+        raise InputError(
+            f"pair.drive_flank: must be one of {list(FLANKS)} (the pinion flank that drives), "
+            f"got {pr['drive_flank']!r}")
+    pair = Pair(pr["shaft_angle"], pr["offset"], pr["method"], pr["drive_flank"])
+    pinion = _member(_table(raw, "pinion", "pinion"), "pinion", pr["pinion_hand"])
+    gear = _member(_table(raw, "gear", "gear"), "gear", pr["gear_hand"])
+    mis = _build(Misalignment, _fields(_table(raw, "misalignment", "misalignment", False),
+                                       _MISALIGNMENT_FIELDS, "misalignment"), "misalignment")
+    extra = {k: v for k, v in raw.items() if k not in _TOP_KEYS}
+    if extra:
+        log.info("case %s: tables %s kept unvalidated for other stages", raw["name"],
+                 sorted(extra))
+    return Case(name=raw["name"], source=raw["source"], pair=pair, pinion=pinion, gear=gear,
+                misalignment=mis, synthesised=tuple(synth),
+                extra=MappingProxyType(json.loads(json.dumps(extra, default=str))))
+
+
+def load_case(path: str | os.PathLike[str]) -> Case:
+    """Read and validate a TOML case file.
+
+    Parameters
+    ----------
+    path : path-like
+        A ``cases/*.toml`` file (schema in ``docs/cases.md``).
+
+    Returns
+    -------
+    Case
+        Angles converted to rad, lengths in mm.
+
+    Raises
+    ------
+    InputError
+        If the file is missing, is not valid TOML, or a field is invalid (named by its path).
+    ModelUnavailableError
+        For a method that is reserved but not implemented (``"FH"``).
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"case file: no such file {str(p)!r}")
+    try:
+        raw = tomllib.loads(p.read_text(encoding="utf-8"))
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"case file {str(p)!r}: invalid TOML: {exc}") from None
+    return case_from_dict(raw)
+
+
+# ---------------------------------------------------------------------------- writing
+def _values(obj, schema: dict) -> dict[str, Any]:
+    out = {}
+    for key, (unit, _required, _default) in schema.items():
+        val = getattr(obj, key)
+        if unit == "deg":
+            val = val / _DEG
+        elif unit == "list":
+            val = list(val)
+        out[key] = val
+    return out
+
+
+def _case_to_dict(case: Case) -> dict[str, Any]:
+    pair = case.pair
+    doc: dict[str, Any] = {"name": case.name, "source": case.source,
+                           "synthesised": list(case.synthesised)}
+    doc["pair"] = {"shaft_angle": pair.shaft_angle / _DEG, "offset": pair.offset,
+                   "method": pair.method, "pinion_hand": case.pinion.hand,
+                   "gear_hand": case.gear.hand, "drive_flank": pair.drive_flank}
+    for m in (case.pinion, case.gear):
+        doc[m.name] = {
+            "process": m.process,
+            "blank": _values(m.blank, _BLANK_FIELDS),
+            "cutter": {f: _values(m.flank(f).blade, _BLADE_FIELDS) for f in FLANKS},
+            "machine": {f: _values(m.flank(f).machine, _MACHINE_FIELDS) for f in FLANKS},
+        }
+    doc["misalignment"] = _values(case.misalignment, _MISALIGNMENT_FIELDS)
+    for k, v in case.extra.items():
+        doc[k] = v
+    return doc
+
+
+def _toml_value(v: Any) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        if not math.isfinite(v):
+            raise InputError(f"to_toml: non-finite value {v!r}")
+        return repr(v)
+    if isinstance(v, str):
+        return json.dumps(v, ensure_ascii=False)
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    raise InputError(f"to_toml: cannot write a value of type {type(v).__name__}")
+
+
+def _toml_key(k: str) -> str:
+    if k and all(c.isalnum() or c in "-_" for c in k):
+        return k
+    return json.dumps(k)
+
+
+def _dump_toml(doc: Mapping[str, Any], prefix: str = "") -> str:
+    lines: list[str] = []
+    tables = []
+    for k, v in doc.items():
+        if isinstance(v, Mapping):
+            tables.append((k, v))
+        elif isinstance(v, list) and v and all(isinstance(x, Mapping) for x in v):
+            tables.append((k, v))
+        else:
+            lines.append(f"{_toml_key(k)} = {_toml_value(v)}")
+    for k, v in tables:
+        name = f"{prefix}.{_toml_key(k)}" if prefix else _toml_key(k)
+        if isinstance(v, list):
+            for item in v:
+                lines.append(f"\n[[{name}]]")
+                lines.append(_dump_toml(item, name).rstrip("\n"))
+        else:
+            lines.append(f"\n[{name}]")
+            body = _dump_toml(v, name).rstrip("\n")
+            if body:
+                lines.append(body)
+    return "\n".join(line for line in lines) + "\n"
