@@ -1,93 +1,32 @@
 """The ``ltca`` command line: a thin layer that parses, calls library functions, prints, writes.
 
-No physics here: every command calls a function users can call from Python.
+No physics here: every command calls functions users can call from Python. Each
+sub-command lives in its own module of :mod:`contact.commands` with a
+``register(subparsers)`` function; :data:`COMMANDS` is the registry.
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import logging
 import sys
 from collections.abc import Sequence
-from pathlib import Path
 
 from geometry._version import __version__
 from geometry.errors import LTCAError
 
 log = logging.getLogger("ltca")
 
-
-def _cmd_compare_solvers(args: argparse.Namespace) -> int:
-    from tabulate import tabulate
-
-    from contact.io import write_netcdf
-    from contact.problem_set import standard_problem_set
-    from contact.solver_study import compare_solvers, default_study_solvers, summarize
-
-    if args.case is not None:
-        raise LTCAError(
-            "compare-solvers CASE: running on a case's real LTCA problems needs the LTCA "
-            "pipeline, which is not in this version; run without CASE for the standard set"
-        )
-    problems = standard_problem_set(quick=args.quick)
-    solvers = args.solvers or default_study_solvers()
-    print(
-        f"hypoid-ltca {__version__}: {len(solvers)} solvers × {len(problems)} problems "
-        f"(N = {min(p.problem.size for p in problems)}…{max(p.problem.size for p in problems)}), "
-        f"accuracy {args.accuracy}, polish {'on' if not args.no_polish else 'off'}"
-    )
-    results = compare_solvers(
-        problems,
-        solvers,
-        accuracy=args.accuracy,
-        polish=not args.no_polish,
-        repeats=args.repeats or (3 if args.quick else 1),
-        progress=not args.no_progress,
-    )
-    summary = summarize(results)
-    rows = [
-        (
-            str(s),
-            str(summary.solver_family.sel(solver=s).item()),
-            f"{summary.success_rate.sel(solver=s).item():.0f}",
-            f"{summary.time_relative.sel(solver=s).item():.1f}",
-            f"{summary.time_shgeom.sel(solver=s).item():.3g}",
-            f"{summary.worst_residual.sel(solver=s).item():.1e}",
-            f"{summary.worst_force_error.sel(solver=s).item():.1e}",
-            f"{summary.polished_rate.sel(solver=s).item():.0f}",
-        )
-        for s in summary.solver.values
-    ]
-    print(
-        tabulate(
-            rows,
-            headers=[
-                "solver",
-                "family",
-                "success [%]",
-                "time / best",
-                "shgeom time [ms]",
-                "worst residual",
-                "worst force err",
-                "polished [%]",
-            ],
-            tablefmt="github",
-        )
-    )
-    print(
-        "\nsuccess: certified by the toolkit's residuals "
-        f"(tolerance {results.attrs['tolerance']:.0e}); "
-        f"time: shifted geometric mean (shift {summary.attrs['shift_ms']} ms, failures charged "
-        f"{summary.attrs['time_limit_s']} s); force error against the exact active-set solver."
-    )
-    if args.output:
-        path = write_netcdf(results, Path(args.output), inputs=" ".join(sys.argv[1:]))
-        print(f"wrote {path}")
-    return 0
+#: Sub-command modules, in the order ``ltca --help`` lists them.
+COMMANDS = (
+    "contact.commands.compare_solvers",
+    "contact.commands.geometry",
+)
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of ``ltca`` (one sub-command per study)."""
+    """The argument parser of ``ltca`` (one sub-command per module in :data:`COMMANDS`)."""
     parser = argparse.ArgumentParser(
         prog="ltca",
         description="Loaded tooth contact analysis of hypoid and spiral bevel gears.",
@@ -97,42 +36,8 @@ def build_parser() -> argparse.ArgumentParser:
         "-v", "--verbose", action="count", default=0, help="more log output (-v info, -vv debug)"
     )
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-
-    p = sub.add_parser(
-        "compare-solvers",
-        help="run every solver backend on a problem set and print a comparison",
-        description="Run every available solver backend on the standard contact "
-        "problem set (Hertz problems, random LTCA-like instances) and "
-        "print a qpbenchmark-style table.",
-    )
-    p.add_argument(
-        "case",
-        nargs="?",
-        default=None,
-        help="case file whose real LTCA problems to use (needs the LTCA pipeline)",
-    )
-    p.add_argument("--quick", action="store_true", help="a small problem set (N ≤ 250)")
-    p.add_argument(
-        "--solvers",
-        nargs="+",
-        metavar="NAME",
-        help="solver names (default: all but the cvxpy:NAME variants)",
-    )
-    p.add_argument("--accuracy", choices=["high", "default", "low"], default="high")
-    p.add_argument(
-        "--no-polish",
-        action="store_true",
-        help="report backends' raw answers (no exact polishing on their contact set)",
-    )
-    p.add_argument(
-        "--repeats",
-        type=int,
-        default=None,
-        help="runs per (solver, problem); the fastest counts (default 3 with --quick, else 1)",
-    )
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
-    p.add_argument("-o", "--output", help="write the full results as netCDF")
-    p.set_defaults(func=_cmd_compare_solvers)
+    for name in COMMANDS:
+        importlib.import_module(name).register(sub)
     return parser
 
 
@@ -140,10 +45,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
     args = parser.parse_args(argv)
-    logging.basicConfig(
-        level=[logging.WARNING, logging.INFO, logging.DEBUG][min(args.verbose, 2)],
-        format="%(levelname)s %(name)s: %(message)s",
-    )
+    level = [logging.WARNING, logging.INFO, logging.DEBUG][min(args.verbose, 2)]
+    logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
     try:
         return int(args.func(args) or 0)
     except LTCAError as exc:

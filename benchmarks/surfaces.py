@@ -2,7 +2,7 @@
 
 Run from the repository root::
 
-    python benchmarks/geometry.py [--repeat N]
+    python benchmarks/surfaces.py [--repeat N]
 
 Prints, per case and flank, the best-of-N wall time of :func:`geometry.flank.flank_surface`
 (equation of meshing + curvatures), the generated fraction of the grid and the largest

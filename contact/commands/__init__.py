@@ -1,0 +1,1 @@
+"""Sub-commands of ``ltca``, one module each, registered in :data:`contact.cli.COMMANDS`."""

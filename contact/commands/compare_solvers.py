@@ -1,0 +1,118 @@
+"""``ltca compare-solvers``: every solver backend on a contact problem set, as a table."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from geometry._version import __version__
+from geometry.errors import LTCAError
+
+
+def register(sub) -> None:
+    """Add the sub-command to an ``argparse`` sub-parser collection."""
+    p = sub.add_parser(
+        "compare-solvers",
+        help="run every solver backend on a problem set and print a comparison",
+        description="Run every available solver backend on the standard contact "
+        "problem set (Hertz problems, random LTCA-like instances) and "
+        "print a qpbenchmark-style table.",
+    )
+    p.add_argument(
+        "case",
+        nargs="?",
+        default=None,
+        help="case file whose real LTCA problems to use (needs the LTCA pipeline)",
+    )
+    p.add_argument("--quick", action="store_true", help="a small problem set (N ≤ 250)")
+    p.add_argument(
+        "--solvers",
+        nargs="+",
+        metavar="NAME",
+        help="solver names (default: all but the cvxpy:NAME variants)",
+    )
+    p.add_argument("--accuracy", choices=["high", "default", "low"], default="high")
+    p.add_argument(
+        "--no-polish",
+        action="store_true",
+        help="report backends' raw answers (no exact polishing on their contact set)",
+    )
+    p.add_argument(
+        "--repeats",
+        type=int,
+        default=None,
+        help="runs per (solver, problem); the fastest counts (default 3 with --quick, else 1)",
+    )
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    p.add_argument("-o", "--output", help="write the full results as netCDF")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from tabulate import tabulate
+
+    from contact.io import write_netcdf
+    from contact.problem_set import standard_problem_set
+    from contact.solver_study import compare_solvers, default_study_solvers, summarize
+
+    if args.case is not None:
+        raise LTCAError(
+            "compare-solvers CASE: running on a case's real LTCA problems needs the LTCA "
+            "pipeline, which is not in this version; run without CASE for the standard set"
+        )
+    problems = standard_problem_set(quick=args.quick)
+    solvers = args.solvers or default_study_solvers()
+    print(
+        f"hypoid-ltca {__version__}: {len(solvers)} solvers × {len(problems)} problems "
+        f"(N = {min(p.problem.size for p in problems)}…{max(p.problem.size for p in problems)}), "
+        f"accuracy {args.accuracy}, polish {'on' if not args.no_polish else 'off'}"
+    )
+    results = compare_solvers(
+        problems,
+        solvers,
+        accuracy=args.accuracy,
+        polish=not args.no_polish,
+        repeats=args.repeats or (3 if args.quick else 1),
+        progress=not args.no_progress,
+    )
+    summary = summarize(results)
+    rows = [
+        (
+            str(s),
+            str(summary.solver_family.sel(solver=s).item()),
+            f"{summary.success_rate.sel(solver=s).item():.0f}",
+            f"{summary.time_relative.sel(solver=s).item():.1f}",
+            f"{summary.time_shgeom.sel(solver=s).item():.3g}",
+            f"{summary.worst_residual.sel(solver=s).item():.1e}",
+            f"{summary.worst_force_error.sel(solver=s).item():.1e}",
+            f"{summary.polished_rate.sel(solver=s).item():.0f}",
+        )
+        for s in summary.solver.values
+    ]
+    print(
+        tabulate(
+            rows,
+            headers=[
+                "solver",
+                "family",
+                "success [%]",
+                "time / best",
+                "shgeom time [ms]",
+                "worst residual",
+                "worst force err",
+                "polished [%]",
+            ],
+            tablefmt="github",
+        )
+    )
+    print(
+        "\nsuccess: certified by the toolkit's residuals "
+        f"(tolerance {results.attrs['tolerance']:.0e}); "
+        f"time: shifted geometric mean (shift {summary.attrs['shift_ms']} ms, failures charged "
+        f"{summary.attrs['time_limit_s']} s); force error against the exact active-set solver."
+    )
+    if args.output:
+        path = write_netcdf(results, Path(args.output), inputs=" ".join(sys.argv[1:]))
+        print(f"wrote {path}")
+    return 0

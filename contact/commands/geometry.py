@@ -1,0 +1,80 @@
+"""``ltca geometry`` and ``ltca plot-geometry``: tooth surfaces of a case, as netCDF and plots."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+
+def register(sub) -> None:
+    """Add the sub-commands to an ``argparse`` sub-parser collection."""
+    p = sub.add_parser(
+        "geometry",
+        help="generate both flanks of both members of a case and write them as netCDF",
+        description="Generate the tooth surfaces of a case from its machine settings "
+        "(equation of meshing on the projection-plane grid) and write one netCDF file "
+        "with a group per member and flank.",
+    )
+    p.add_argument("case", help="case file (TOML)")
+    p.add_argument("-o", "--output", required=True, help="netCDF file to write")
+    p.add_argument("--nu", type=int, default=41, help="lengthwise grid points (default 41)")
+    p.add_argument("--nv", type=int, default=21, help="profile grid points (default 21)")
+    p.set_defaults(func=run_geometry)
+
+    q = sub.add_parser(
+        "plot-geometry",
+        help="plot both members' flanks in mesh and each flank's projection-plane grid",
+    )
+    q.add_argument("case", help="case file (TOML)")
+    q.add_argument("-o", "--output-dir", default=".", help="directory for the PNG files")
+    q.add_argument("--nu", type=int, default=41)
+    q.add_argument("--nv", type=int, default=21)
+    q.set_defaults(func=run_plot_geometry)
+
+
+def geometry_tree(case, nu: int = 41, nv: int = 21):
+    """All four flanks of a case as an ``xarray.DataTree`` (``/pinion/concave`` …)."""
+    import xarray as xr
+
+    from geometry.flank import geometry_datasets
+
+    sets = geometry_datasets(case, nu=nu, nv=nv)
+    tree = {"/": xr.Dataset(attrs={"case": case.name, "title": "tooth surfaces"})}
+    tree.update({f"/{m}/{f}": ds for (m, f), ds in sets.items()})
+    return xr.DataTree.from_dict(tree)
+
+
+def run_geometry(args: argparse.Namespace) -> int:
+    from contact.io import write_netcdf
+    from geometry.case import load_case
+
+    case = load_case(args.case)
+    tree = geometry_tree(case, args.nu, args.nv)
+    path = write_netcdf(tree, Path(args.output), inputs=case.to_toml())
+    for node in tree.subtree:
+        if "mask" in node.dataset:
+            ok = int(node.dataset["mask"].sum())
+            print(f"{node.path:16s} {ok} of {node.dataset['mask'].size} grid points generated")
+    print(f"wrote {path}")
+    return 0
+
+
+def run_plot_geometry(args: argparse.Namespace) -> int:
+    from geometry.case import load_case
+    from geometry.flank import flank_surface
+    from geometry.plot import plot_flanks_in_mesh, plot_projection_grid
+
+    case = load_case(args.case)
+    out = Path(args.output_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    surfaces = {
+        (m, f): flank_surface(case, m, f, nu=args.nu, nv=args.nv)
+        for m in ("pinion", "gear")
+        for f in ("concave", "convex")
+    }
+    written = [plot_flanks_in_mesh(case, surfaces.values(), out / "flanks_in_mesh.png")]
+    for (m, f), s in surfaces.items():
+        written.append(plot_projection_grid(s, case.member(m).blank, out / f"grid_{m}_{f}.png"))
+    for w in written:
+        print(f"wrote {w}")
+    return 0

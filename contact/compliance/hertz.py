@@ -1,0 +1,338 @@
+"""Contact (Hertzian) deformation of a tooth pair by Weber's formula.
+
+Seed section 3.2 (p. 78): "Closed-form formula of Weber [3.8] was used here for
+computing the Hertzian deformations". Weber's formula gives the approach of a
+point on the tooth centreline towards the contact of a line contact, per body and
+per unit length of the contact line; it grows like w′ ln(1/w′), so the contact
+compliance depends on the load.
+
+Conventions (stated once, used everywhere in this module)
+---------------------------------------------------------
+* ``E*`` is the *contact modulus* of Johnson (*Contact Mechanics*, 1985, Eq. 4.22):
+  1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ (not the plane-strain modulus of one body, not
+  twice it). For steel on steel (E = 206 000 MPa, ν = 0.3) E* = 113 187 MPa.
+* Hertz half-width of a line contact (Johnson Eq. 4.43 with this E*):
+  b = sqrt(4 w′ R_eq / (π E*)), R_eq = R₁R₂/(R₁ + R₂) (seed Eq. 2.13's R_eq).
+* Weber (1949), per body i (NOTES.md; Weber & Banaschek 1953):
+  δ_i = (2 w′ (1 − ν_i²)/(π E_i)) · [ln(2 h_i / b) − ν_i / (2 (1 − ν_i))],
+  h_i the distance from the contact to the tooth centreline; the pair deforms by
+  δ₁ + δ₂.
+* Units: w′ [N/mm], lengths [mm], moduli [MPa] → δ [mm], compliance [mm/N].
+
+How the LTCA uses it
+--------------------
+The contact term is diagonal (a segment's contact deformation depends on its own
+load only) and load-dependent. Evaluate :func:`weber_compliance` at a reference
+load per segment (e.g. the mean load T/(R·N)), add it to the diagonal of the
+bending/base compliance, solve the contact QP, then re-evaluate at the computed
+segment loads and re-solve until the loads stop changing (fixed point
+F → C_H(F) → F). With the *secant* compliance δ(F)/F the converged loads satisfy
+the nonlinear compatibility exactly; the *tangent* compliance dδ/dF is what a
+Newton iteration needs. Segments that end with no load are evaluated at
+``load_floor``; their compliance multiplies a zero force, so it does not enter
+the solution.
+
+Public API
+----------
+contact_modulus            E* [MPa]
+hertz_half_width           b [mm] of a line contact
+weber_deformation          δ_i [mm] of one body
+weber_pair_deformation     δ₁ + δ₂ [mm]
+weber_compliance           diagonal contact compliance [mm/N] of loaded segments
+WEBER_COMPLIANCE_KINDS     registry: "secant", "tangent"
+
+References
+----------
+Weber, C. (1949). The deformation of loaded gears and the effect on their
+load-carrying capacity. Sponsored Research (Germany), British Dept. of Scientific
+and Industrial Research, Report No. 3.
+Weber, C., Banaschek, K. (1953). Formänderung und Profilrücknahme bei gerad- und
+schrägverzahnten Rädern. Schriftenreihe Antriebstechnik 11, Vieweg.
+Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from geometry.errors import InputError, ModelUnavailableError
+
+__all__ = [
+    "WEBER_COMPLIANCE_KINDS",
+    "contact_modulus",
+    "hertz_half_width",
+    "weber_compliance",
+    "weber_deformation",
+    "weber_pair_deformation",
+]
+
+
+def _material(name_e: str, e: float, name_nu: str, nu: float) -> tuple[float, float]:
+    try:
+        e, nu = float(e), float(nu)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{name_e} and {name_nu} must be real numbers") from exc
+    if not (math.isfinite(e) and e > 0.0):
+        raise InputError(f"{name_e} must be finite and > 0 MPa [got {e!r}]")
+    if not (math.isfinite(nu) and 0.0 <= nu < 0.5):
+        raise InputError(f"{name_nu} must be in [0, 0.5) [got {nu!r}]")
+    return e, nu
+
+
+def _positive_array(name: str, value: np.ndarray | float, unit: str) -> np.ndarray:
+    a = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(a)) or np.any(a <= 0.0):
+        raise InputError(f"{name} must be finite and > 0 {unit}")
+    return a
+
+
+def contact_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float:
+    """Contact modulus E* of two elastic bodies [MPa].
+
+    Parameters
+    ----------
+    e1, e2 : float — [MPa] Young's moduli
+    nu1, nu2 : float — [1] Poisson ratios, in [0, 0.5)
+
+    Returns
+    -------
+    float — [MPa] E* = 1 / ((1 − ν₁²)/E₁ + (1 − ν₂²)/E₂)
+
+    Raises
+    ------
+    InputError
+        A modulus not finite and positive or a Poisson ratio out of [0, 0.5).
+
+    Notes
+    -----
+    Johnson (1985) Eq. 4.22; the convention of this module (see its docstring).
+    """
+    e1, nu1 = _material("e1", e1, "nu1", nu1)
+    e2, nu2 = _material("e2", e2, "nu2", nu2)
+    return 1.0 / ((1.0 - nu1**2) / e1 + (1.0 - nu2**2) / e2)
+
+
+def hertz_half_width(
+    load_per_length: np.ndarray | float,
+    r_eq: np.ndarray | float,
+    e1: float,
+    nu1: float,
+    e2: float,
+    nu2: float,
+) -> np.ndarray:
+    """Hertz half-width of a line contact [mm].
+
+    Parameters
+    ----------
+    load_per_length : float or ndarray (N,) — [N/mm] w′ > 0
+    r_eq : float or ndarray (N,) — [mm] equivalent radius R₁R₂/(R₁ + R₂) > 0
+    e1, e2 : float — [MPa]; nu1, nu2 : float — [1]
+
+    Returns
+    -------
+    ndarray — [mm] b = sqrt(4 w′ R_eq / (π E*)), broadcast shape of the inputs
+
+    Raises
+    ------
+    InputError
+        w′ or R_eq not finite and positive; bad material constants.
+
+    Notes
+    -----
+    Johnson (1985) Eq. 4.43 with E* of :func:`contact_modulus`.
+    """
+    w = _positive_array("load_per_length", load_per_length, "N/mm")
+    r = _positive_array("r_eq", r_eq, "mm")
+    e_star = contact_modulus(e1, nu1, e2, nu2)
+    return np.sqrt(4.0 * w * r / (math.pi * e_star))
+
+
+def _weber_bracket(depth: np.ndarray, half_width: np.ndarray, nu: float, name: str) -> np.ndarray:
+    bracket = np.log(2.0 * depth / half_width) - nu / (2.0 * (1.0 - nu))
+    if np.any(bracket <= 0.0):
+        raise InputError(
+            f"{name} must exceed half the Hertz half-width times exp(nu/(2(1-nu))) "
+            "(Weber's formula is for a contact much narrower than the tooth)"
+        )
+    return bracket
+
+
+def weber_deformation(
+    load_per_length: np.ndarray | float,
+    half_width: np.ndarray | float,
+    depth: np.ndarray | float,
+    youngs_modulus: float,
+    poisson_ratio: float,
+) -> np.ndarray:
+    """Weber's contact deformation of one body [mm].
+
+    Parameters
+    ----------
+    load_per_length : float or ndarray — [N/mm] w′ > 0
+    half_width : float or ndarray — [mm] Hertz half-width b > 0
+    depth : float or ndarray — [mm] h, distance from the contact to the tooth
+        centreline (> b/2 · e^(ν/(2(1−ν))))
+    youngs_modulus : float — [MPa]; poisson_ratio : float — [1]
+
+    Returns
+    -------
+    ndarray — [mm] δ = (2 w′ (1 − ν²)/(π E)) [ln(2h/b) − ν/(2(1 − ν))]
+
+    Raises
+    ------
+    InputError
+        Non-positive or non-finite inputs; a depth so small that the bracket is
+        not positive.
+
+    Notes
+    -----
+    Weber (1949); NOTES.md. Seed p. 78 cites Weber [3.8] without the formula.
+    """
+    w = _positive_array("load_per_length", load_per_length, "N/mm")
+    b = _positive_array("half_width", half_width, "mm")
+    h = _positive_array("depth", depth, "mm")
+    e, nu = _material("youngs_modulus", youngs_modulus, "poisson_ratio", poisson_ratio)
+    return 2.0 * w * (1.0 - nu**2) / (math.pi * e) * _weber_bracket(h, b, nu, "depth")
+
+
+def weber_pair_deformation(
+    load_per_length: np.ndarray | float,
+    r_eq: np.ndarray | float,
+    depth_1: np.ndarray | float,
+    depth_2: np.ndarray | float,
+    e1: float,
+    nu1: float,
+    e2: float,
+    nu2: float,
+) -> np.ndarray:
+    """Contact deformation δ₁ + δ₂ of a tooth pair [mm] (Weber 1949 + Hertz b).
+
+    Parameters
+    ----------
+    load_per_length : float or ndarray (N,) — [N/mm] w′
+    r_eq : float or ndarray (N,) — [mm] equivalent radius of curvature
+    depth_1, depth_2 : float or ndarray (N,) — [mm] contact-to-centreline distances
+    e1, nu1, e2, nu2 : float — [MPa], [1] materials of members 1 and 2
+
+    Returns
+    -------
+    ndarray — [mm]
+
+    Raises
+    ------
+    InputError
+        As :func:`weber_deformation` and :func:`hertz_half_width`.
+    """
+    b = hertz_half_width(load_per_length, r_eq, e1, nu1, e2, nu2)
+    return weber_deformation(load_per_length, b, depth_1, e1, nu1) + weber_deformation(
+        load_per_length, b, depth_2, e2, nu2
+    )
+
+
+def _secant(kb: np.ndarray, ks: np.ndarray) -> np.ndarray:
+    return kb + 0.0 * ks
+
+
+def _tangent(kb: np.ndarray, ks: np.ndarray) -> np.ndarray:
+    # d/dw′ [w′ k (ln(2h/b) − c)] = k (ln(2h/b) − c) − k · dln b/dln w′
+    return kb - ks
+
+
+#: Kinds of contact compliance: ``"secant"`` δ(F)/F (fixed-point iteration) and
+#: ``"tangent"`` dδ/dF (Newton). Each maps (Σ_i k_i B_i, Σ_i k_i · dln b/dln w′),
+#: both [mm²/N], to the compliance times the segment length [mm²/N].
+WEBER_COMPLIANCE_KINDS: dict[str, Callable[[np.ndarray, np.ndarray], np.ndarray]] = {
+    "secant": _secant,
+    "tangent": _tangent,
+}
+
+
+def weber_compliance(
+    load: np.ndarray | float,
+    length: np.ndarray | float,
+    depth_1: np.ndarray | float,
+    depth_2: np.ndarray | float,
+    *,
+    e1: float,
+    nu1: float,
+    e2: float,
+    nu2: float,
+    r_eq: np.ndarray | float | None = None,
+    half_width_fn: Callable[[np.ndarray], np.ndarray] | None = None,
+    kind: str = "secant",
+    load_floor: float = 1.0,
+) -> np.ndarray:
+    """Diagonal contact compliance of loaded contact segments [mm/N].
+
+    Parameters
+    ----------
+    load : float or ndarray (N,) — [N] segment forces F ≥ 0
+    length : float or ndarray (N,) — [mm] segment lengths L > 0; w′ = F / L
+    depth_1, depth_2 : float or ndarray (N,) — [mm] contact-to-centreline
+        distances of the two members at each segment
+    e1, nu1, e2, nu2 : float — [MPa], [1] materials
+    r_eq : float or ndarray (N,), optional — [mm] equivalent radius; gives the
+        Hertz half-width of :func:`hertz_half_width`
+    half_width_fn : callable, optional — w′ [N/mm] (N,) → b [mm] (N,), instead of
+        ``r_eq`` (e.g. an elliptical-contact or EHL half-width); exactly one of
+        ``r_eq`` and ``half_width_fn`` must be given
+    kind : {"secant", "tangent"} — see :data:`WEBER_COMPLIANCE_KINDS`
+    load_floor : float — [N/mm] w′ below this is evaluated at this value
+        (unloaded segments; their compliance multiplies a zero force)
+
+    Returns
+    -------
+    ndarray (N,) — [mm/N] the diagonal term to add to the compliance matrix:
+        secant δ(F)/F or tangent dδ/dF along the contact normal
+
+    Raises
+    ------
+    InputError
+        Negative or non-finite loads, non-positive lengths/depths/floor, both or
+        neither of ``r_eq`` / ``half_width_fn``, a half-width function returning
+        non-positive values, a depth too small for Weber's formula.
+    ModelUnavailableError
+        Unknown ``kind`` (lists the available ones).
+
+    Notes
+    -----
+    With k_i = 2(1 − ν_i²)/(π E_i) and B_i = ln(2h_i/b) − ν_i/(2(1 − ν_i)) (Weber),
+    δ = w′ Σ k_i B_i, so secant = Σ k_i B_i / L and tangent = Σ k_i (B_i − s) / L
+    with s = d ln b / d ln w′ (½ for Hertz; by central difference for
+    ``half_width_fn``). Usage in the LTCA: see the module docstring.
+    """
+    if kind not in WEBER_COMPLIANCE_KINDS:
+        raise ModelUnavailableError(
+            f"kind {kind!r} is not available; choose one of {sorted(WEBER_COMPLIANCE_KINDS)}"
+        )
+    f = np.asarray(load, dtype=float)
+    if not np.all(np.isfinite(f)) or np.any(f < 0.0):
+        raise InputError("load must be finite and >= 0 N")
+    length_a = _positive_array("length", length, "mm")
+    floor = float(_positive_array("load_floor", load_floor, "N/mm"))
+    w = np.maximum(f / length_a, floor)
+    if (r_eq is None) == (half_width_fn is None):
+        raise InputError("give exactly one of r_eq [mm] and half_width_fn (w' -> b)")
+    if half_width_fn is None:
+        b = hertz_half_width(w, r_eq, e1, nu1, e2, nu2)
+        slope = np.full_like(b, 0.5)
+    else:
+        b = np.asarray(half_width_fn(w), dtype=float)
+        if b.shape != w.shape or not np.all(np.isfinite(b)) or np.any(b <= 0.0):
+            raise InputError("half_width_fn must return finite half-widths > 0 mm, one per load")
+        step = 1e-4
+        bp = np.asarray(half_width_fn(w * (1.0 + step)), dtype=float)
+        bm = np.asarray(half_width_fn(w * (1.0 - step)), dtype=float)
+        slope = (np.log(bp) - np.log(bm)) / (math.log1p(step) - math.log1p(-step))
+    e1f, nu1f = _material("e1", e1, "nu1", nu1)
+    e2f, nu2f = _material("e2", e2, "nu2", nu2)
+    h1 = _positive_array("depth_1", depth_1, "mm")
+    h2 = _positive_array("depth_2", depth_2, "mm")
+    k1 = 2.0 * (1.0 - nu1f**2) / (math.pi * e1f)
+    k2 = 2.0 * (1.0 - nu2f**2) / (math.pi * e2f)
+    kb = k1 * _weber_bracket(h1, b, nu1f, "depth_1") + k2 * _weber_bracket(h2, b, nu2f, "depth_2")
+    out = WEBER_COMPLIANCE_KINDS[kind](kb, (k1 + k2) * slope)
+    return np.broadcast_to(out / length_a, np.broadcast_shapes(w.shape, b.shape)).copy()
