@@ -2,7 +2,8 @@
 
 No physics here: every command calls functions users can call from Python. Each
 sub-command lives in its own module of :mod:`contact.commands` with a
-``register(subparsers)`` function; :data:`COMMANDS` is the registry.
+``register(subparsers)`` function and an integer ``ORDER`` (its place in
+``ltca --help``); the modules are found by :func:`command_modules`.
 """
 
 from __future__ import annotations
@@ -10,23 +11,32 @@ from __future__ import annotations
 import argparse
 import importlib
 import logging
+import pkgutil
 import sys
 from collections.abc import Sequence
+from types import ModuleType
 
 from geometry._version import __version__
 from geometry.errors import LTCAError
 
 log = logging.getLogger("ltca")
 
-#: Sub-command modules, in the order ``ltca --help`` lists them.
-COMMANDS = (
-    "contact.commands.compare_solvers",
-    "contact.commands.geometry",
-)
+
+
+def command_modules() -> list[ModuleType]:
+    """Every module of :mod:`contact.commands`, sorted by its ``ORDER``."""
+    import contact.commands as pkg
+
+    mods = [
+        importlib.import_module(f"{pkg.__name__}.{info.name}")
+        for info in pkgutil.iter_modules(pkg.__path__)
+        if not info.name.startswith("_")
+    ]
+    return sorted(mods, key=lambda m: (getattr(m, "ORDER", 100), m.__name__))
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of ``ltca`` (one sub-command per module in :data:`COMMANDS`)."""
+    """The argument parser of ``ltca`` (one sub-command group per command module)."""
     parser = argparse.ArgumentParser(
         prog="ltca",
         description="Loaded tooth contact analysis of hypoid and spiral bevel gears.",
@@ -36,8 +46,8 @@ def build_parser() -> argparse.ArgumentParser:
         "-v", "--verbose", action="count", default=0, help="more log output (-v info, -vv debug)"
     )
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    for name in COMMANDS:
-        importlib.import_module(name).register(sub)
+    for module in command_modules():
+        module.register(sub)
     return parser
 
 

@@ -1,1 +1,1 @@
-"""Sub-commands of ``ltca``, one module each, registered in :data:`contact.cli.COMMANDS`."""
+"""Sub-commands of ``ltca``, one module each with ``register(subparsers)`` and ``ORDER``."""

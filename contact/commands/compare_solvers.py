@@ -9,6 +9,9 @@ from pathlib import Path
 from geometry._version import __version__
 from geometry.errors import LTCAError
 
+#: Place in ``ltca --help``.
+ORDER = 90
+
 
 def register(sub) -> None:
     """Add the sub-command to an ``argparse`` sub-parser collection."""

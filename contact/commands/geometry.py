@@ -5,6 +5,9 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+#: Place in ``ltca --help``.
+ORDER = 20
+
 
 def register(sub) -> None:
     """Add the sub-commands to an ``argparse`` sub-parser collection."""
