@@ -68,6 +68,7 @@ def compare_solvers(
     repeats: int = 1,
     max_size: dict[str, int] | None = None,
     progress: bool = False,
+    blas_threads: int | None = 1,
 ) -> xr.Dataset:
     """Run every solver on every problem and collect certified results.
 
@@ -85,6 +86,10 @@ def compare_solvers(
         ``skipped``); for backends known to take minutes on large dense problems.
     progress : bool
         Show a tqdm progress bar.
+    blas_threads : int or None
+        BLAS threads during the study (default 1: the compiled backends are
+        single-threaded, so one thread compares like with like, and on a shared
+        machine a threaded BLAS oversubscribes the cores; None leaves BLAS as is).
 
     Returns
     -------
@@ -94,6 +99,21 @@ def compare_solvers(
         ``residual_primal`` … [1], ``force_error``, ``rotation_error`` [1], ``iterations``,
         ``status``; coords ``problem_size``, ``problem_kind``, ``solver_family``.
     """
+    if blas_threads is not None:
+        from threadpoolctl import threadpool_limits
+
+        with threadpool_limits(limits=blas_threads, user_api="blas"):
+            return compare_solvers(
+                problems,
+                solvers,
+                accuracy=accuracy,
+                polish=polish,
+                tolerance=tolerance,
+                repeats=repeats,
+                max_size=max_size,
+                progress=progress,
+                blas_threads=None,
+            )
     solvers = list(solvers) if solvers is not None else default_study_solvers()
     for name in solvers:
         get_backend(name)  # unknown names fail before any work
