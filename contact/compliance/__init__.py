@@ -7,7 +7,11 @@ Three parts add up to a tooth pair's compliance along the contact normal:
 * :mod:`contact.compliance.hertz` — contact deformation by Weber (1949), diagonal,
   load-dependent;
 * :mod:`contact.compliance.base` — fillet-foundation deflection by Sainsot, Velex &
-  Duverger (2004), rank ≤ 3 per tooth.
+  Duverger (2004), rank ≤ 3 per tooth;
+* :mod:`contact.compliance.tooth` — the shell idealisation fitted to a generated tooth
+  and the mapping of flank points to shell coordinates;
+* :mod:`contact.compliance.mesh` — the total compliance of the contact segments of a
+  roll position (both members, contact, foundation; block-diagonal by tooth pair).
 """
 
 from contact.compliance.base import (
@@ -27,6 +31,12 @@ from contact.compliance.hertz import (
     weber_deformation,
     weber_pair_deformation,
 )
+from contact.compliance.mesh import (
+    ContactSegments,
+    PairComplianceModel,
+    mesh_compliance,
+    pair_compliance_model,
+)
 from contact.compliance.shell import (
     THEORIES,
     ComplianceMatrix,
@@ -37,15 +47,24 @@ from contact.compliance.shell import (
     flank_normals,
     shell_deflection,
 )
+from contact.compliance.tooth import (
+    ToothModelData,
+    member_compliance,
+    shell_coordinates,
+    shell_tooth_from_case,
+)
 
 __all__ = [
     "SAINSOT_COEFFICIENTS",
     "THEORIES",
     "WEBER_COMPLIANCE_KINDS",
     "ComplianceMatrix",
+    "ContactSegments",
+    "PairComplianceModel",
     "ShellModel",
     "ShellTooth",
     "ToothFoundation",
+    "ToothModelData",
     "build_shell_model",
     "compliance_matrix",
     "contact_modulus",
@@ -55,8 +74,13 @@ __all__ = [
     "hertz_half_width",
     "load_angle_from_normals",
     "load_line_height",
+    "member_compliance",
+    "mesh_compliance",
+    "pair_compliance_model",
     "sainsot_coefficients",
+    "shell_coordinates",
     "shell_deflection",
+    "shell_tooth_from_case",
     "weber_compliance",
     "weber_deformation",
     "weber_pair_deformation",

@@ -1,0 +1,395 @@
+"""Total compliance of the contact segments of a gear mesh at one roll position.
+
+The LTCA (seed §3.3, Eq. 3.12–3.14; ``DESIGN.md``) needs at every pinion roll
+position the N×N compliance C [mm/N] of the N contact segments of all tooth pairs
+that may share the load. Seed §3.2 (p. 78, Fig. 3.2: "construct compliance matrix
+for pinion and gear and calculate total compliance matrix") adds, along the
+contact normal,
+
+    C = C_pinion + C_gear            bending and shear, tapered shell (Eq. 3.1–3.11)
+      + C_foundation,p + C_foundation,g   fillet foundation (Sainsot et al. 2004)
+      + diag(c_Weber)               contact deformation (Weber 1949), secant at the loads
+
+Loads on different tooth pairs do not couple (each tooth is its own shell on its
+own foundation): C is block diagonal by tooth pair. Each member's tooth model is
+measured and its shell stiffness factorised once per case and reused for every
+roll position (:func:`pair_compliance_model`, memoised).
+
+Public API
+----------
+ContactSegments       frozen dataclass: the segments of one roll position (pair frame)
+PairComplianceModel   both members' tooth models and the shell settings
+pair_compliance_model build (memoised per case text and settings)
+clear_model_cache     forget the memoised models
+mesh_compliance       C and its parts
+"""
+
+from __future__ import annotations
+
+import functools
+import logging
+import math
+import time
+import tomllib
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from contact.compliance.hertz import weber_compliance
+from contact.compliance.tooth import (
+    END_TOLERANCE,
+    N_FACE,
+    N_HEIGHT,
+    ShellPoints,
+    ToothModelData,
+    _shell_matrix,
+    member_foundation,
+    shell_coordinates,
+    shell_tooth_from_case,
+    weber_depth,
+)
+from geometry.assembly import case_transforms
+from geometry.case import case_from_dict
+from geometry.errors import InputError
+
+if TYPE_CHECKING:
+    from geometry.case import Case
+
+__all__ = [
+    "ContactSegments",
+    "PairComplianceModel",
+    "clear_model_cache",
+    "mesh_compliance",
+    "pair_compliance_model",
+]
+
+log = logging.getLogger(__name__)
+
+_MEMO_SIZE = 4  # cases whose tooth models are kept by pair_compliance_model
+
+
+def _array(name: str, value: Any, shape: tuple[int, ...], unit: str) -> np.ndarray:
+    try:
+        a = np.array(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{name} must be a numeric array [{unit}]") from exc
+    if a.ndim == 0 and len(shape) == 1:
+        a = np.full(shape, float(a))
+    if a.shape != shape:
+        raise InputError(f"{name} must have shape {shape} [{unit}], got {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise InputError(f"{name} must be finite [{unit}]")
+    return a
+
+
+@dataclass(frozen=True, eq=False)
+class ContactSegments:
+    """Contact segments of one roll position, in the pair frame.
+
+    Parameters
+    ----------
+    midpoints : array_like (N, 3) — [mm] segment midpoints (load points)
+    ends : array_like (N, 2, 3) — [mm] the two end points of each straight segment
+    normals : array_like (N, 3) — [1] unit contact normal at each midpoint, pointing
+        OUT of the pinion flank (into the gear); the gear's outward normal is −n
+    length : array_like (N,) or float — [mm] segment length L > 0 (w′ = F/L for Weber)
+    r_eq : array_like (N,) or float — [mm] equivalent radius of curvature R_eq > 0
+        (seed Eq. 2.13) along the segment's normal section across the contact line
+    pair_index : array_like (N,) of int — [1] tooth pair of each segment (−1, 0, 1 …)
+    load : array_like (N,) or float — [N] segment loads F ≥ 0 at which Weber's
+        contact compliance is linearised (secant δ(F)/F)
+    pinion_rotation, gear_rotation : float — [rad] member rotations of this roll
+        position about their own axes, as in :func:`geometry.assembly.case_transforms`
+
+    Raises
+    ------
+    InputError
+        Wrong shapes, non-finite values, non-unit normals, L or R_eq ≤ 0, F < 0,
+        a non-integer pair index.
+    """
+
+    midpoints: np.ndarray
+    ends: np.ndarray
+    normals: np.ndarray
+    length: np.ndarray
+    r_eq: np.ndarray
+    pair_index: np.ndarray
+    load: np.ndarray
+    pinion_rotation: float = 0.0
+    gear_rotation: float = 0.0
+
+    def __post_init__(self) -> None:
+        mid = np.array(self.midpoints, dtype=float)
+        if mid.ndim != 2 or mid.shape[1] != 3 or mid.shape[0] == 0:
+            raise InputError(f"midpoints must have shape (N, 3), N >= 1 [mm], got {mid.shape}")
+        n = mid.shape[0]
+        mid = _array("midpoints", mid, (n, 3), "mm")
+        ends = _array("ends", self.ends, (n, 2, 3), "mm")
+        nrm = _array("normals", self.normals, (n, 3), "1")
+        if np.any(np.abs(np.linalg.norm(nrm, axis=1) - 1.0) > 1e-6):
+            raise InputError("normals must be unit vectors (|n| = 1 within 1e-6)")
+        length = _array("length", self.length, (n,), "mm")
+        r_eq = _array("r_eq", self.r_eq, (n,), "mm")
+        load = _array("load", self.load, (n,), "N")
+        for name, a in (("length", length), ("r_eq", r_eq)):
+            if np.any(a <= 0.0):
+                raise InputError(f"{name} must be > 0 mm")
+        if np.any(load < 0.0):
+            raise InputError("load must be >= 0 N")
+        try:
+            pairs = np.asarray(self.pair_index, dtype=float)
+        except (TypeError, ValueError) as exc:
+            raise InputError(f"pair_index must be ({n},) integers") from exc
+        if pairs.shape != (n,) or not np.all(np.isfinite(pairs)) or np.any(pairs % 1 != 0):
+            raise InputError(f"pair_index must be ({n},) integers [got shape {pairs.shape}]")
+        rot = []
+        for name in ("pinion_rotation", "gear_rotation"):
+            v = getattr(self, name)
+            try:
+                v = float(v)
+            except (TypeError, ValueError) as exc:
+                raise InputError(f"{name} must be a real number [rad]") from exc
+            if not math.isfinite(v):
+                raise InputError(f"{name} must be finite [rad]")
+            rot.append(v)
+        for name, val in (("midpoints", mid), ("ends", ends), ("normals", nrm),
+                          ("length", length), ("r_eq", r_eq), ("load", load),
+                          ("pair_index", pairs.astype(int)), ("pinion_rotation", rot[0]),
+                          ("gear_rotation", rot[1])):
+            object.__setattr__(self, name, val)
+
+    @property
+    def size(self) -> int:
+        """Number of segments N."""
+        return int(self.midpoints.shape[0])
+
+
+@dataclass(frozen=True, eq=False)
+class PairComplianceModel:
+    """Both members' tooth models of one case, with the shell settings.
+
+    Attributes
+    ----------
+    pinion, gear : ToothModelData — :func:`contact.compliance.tooth.shell_tooth_from_case`
+    theory : str — shell kinematics; n_height, n_face : int — Ritz modes
+    build_time : float — [s] measuring both teeth and factorising both shells
+    """
+
+    pinion: ToothModelData
+    gear: ToothModelData
+    theory: str
+    n_height: int
+    n_face: int
+    build_time: float
+
+    def member(self, name: str) -> ToothModelData:
+        """The tooth model of ``"pinion"`` or ``"gear"``."""
+        if name not in ("pinion", "gear"):
+            raise InputError(f"member must be 'pinion' or 'gear', got {name!r}")
+        return getattr(self, name)
+
+
+def _build_pair(case: Case, theory: str, n_height: int, n_face: int,
+                materials: tuple[float, float, float, float],
+                bores: tuple[float | None, float | None]) -> PairComplianceModel:
+    t0 = time.perf_counter()
+    teeth = {}
+    for k, name in enumerate(("pinion", "gear")):
+        data = shell_tooth_from_case(case, name, youngs_modulus=materials[2 * k],
+                                     poisson_ratio=materials[2 * k + 1], bore_radius=bores[k])
+        data.shell_model(theory, n_height, n_face)  # factorise now, once
+        teeth[name] = data
+    return PairComplianceModel(pinion=teeth["pinion"], gear=teeth["gear"], theory=theory,
+                               n_height=n_height, n_face=n_face,
+                               build_time=time.perf_counter() - t0)
+
+
+@functools.lru_cache(maxsize=_MEMO_SIZE)
+def _memo_pair(case_toml: str, theory: str, n_height: int, n_face: int,
+               materials: tuple[float, float, float, float],
+               bores: tuple[float | None, float | None]) -> PairComplianceModel:
+    return _build_pair(case_from_dict(tomllib.loads(case_toml)), theory, n_height, n_face,
+                       materials, bores)
+
+
+def pair_compliance_model(
+    case: Case,
+    *,
+    theory: str = "seed",
+    n_height: int = N_HEIGHT,
+    n_face: int = N_FACE,
+    pinion_material: tuple[float, float] = (206000.0, 0.3),
+    gear_material: tuple[float, float] = (206000.0, 0.3),
+    pinion_bore: float | None = None,
+    gear_bore: float | None = None,
+) -> PairComplianceModel:
+    """Tooth models and factorised shells of both members, built once per case.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    theory : str — shell kinematics (:data:`contact.compliance.shell.THEORIES`)
+    n_height, n_face : int — [1] Ritz modes (default 6 × 21, see
+        :data:`contact.compliance.tooth.N_FACE`)
+    pinion_material, gear_material : (float, float) — ([MPa], [1]) E and ν
+    pinion_bore, gear_bore : float, optional — [mm] bore radii for the Sainsot
+        foundation (default: half the mean root radius, see
+        :func:`contact.compliance.tooth.shell_tooth_from_case`)
+
+    Returns
+    -------
+    PairComplianceModel
+        Memoised: a second call with an equal case (same TOML text) and equal
+        settings returns the same object without measuring or factorising again
+        (the last 4 cases are kept).
+
+    Raises
+    ------
+    InputError, ModelUnavailableError, LTCAError
+        As :func:`contact.compliance.tooth.shell_tooth_from_case` and
+        :func:`contact.compliance.shell.build_shell_model`.
+
+    Notes
+    -----
+    Seed Fig. 3.2: the Ritz coefficients are computed once and are "valid for all
+    mesh positions". The memo (``functools.lru_cache`` of 4 entries, the only state
+    of this module; :func:`clear_model_cache` empties it) is keyed by
+    :meth:`geometry.case.Case.to_toml`, which round-trips the case exactly, so two
+    equal cases share one model. A caller that keeps the model (e.g. the LTCA
+    pipeline) can pass it to :func:`mesh_compliance` and need not rely on the memo.
+    """
+    try:
+        materials = (float(pinion_material[0]), float(pinion_material[1]),
+                     float(gear_material[0]), float(gear_material[1]))
+    except (TypeError, ValueError, IndexError) as exc:
+        raise InputError(
+            "pinion_material and gear_material must be (youngs_modulus [MPa], poisson_ratio)"
+        ) from exc
+    bores = tuple(None if b is None else float(b) for b in (pinion_bore, gear_bore))
+    if isinstance(n_height, bool) or isinstance(n_face, bool) or not (
+            isinstance(n_height, (int, np.integer)) and isinstance(n_face, (int, np.integer))):
+        raise InputError(f"n_height and n_face must be integers, got {n_height!r}, {n_face!r}")
+    return _memo_pair(case.to_toml(), str(theory), int(n_height), int(n_face), materials, bores)
+
+
+def clear_model_cache() -> None:
+    """Forget the memoised tooth models of :func:`pair_compliance_model` (frees memory)."""
+    _memo_pair.cache_clear()
+
+
+def _take(sp: ShellPoints, idx: np.ndarray) -> ShellPoints:
+    return ShellPoints(*(None if a is None else a[idx] for a in sp))
+
+
+def mesh_compliance(
+    case: Case,
+    contact_segments: ContactSegments,
+    *,
+    model: PairComplianceModel | None = None,
+    weber_kind: str = "secant",
+    load_floor: float = 1.0,
+    **model_options: Any,
+) -> tuple[np.ndarray, dict[str, Any]]:
+    """Total compliance of the contact segments of one roll position [mm/N].
+
+    Parameters
+    ----------
+    case : geometry.case.Case — the gear pair (misalignments from ``case.misalignment``)
+    contact_segments : ContactSegments — N segments in the pair frame
+    model : PairComplianceModel, optional — both members' tooth models; default
+        :func:`pair_compliance_model` of the case (memoised: built on the first call,
+        reused afterwards) with ``model_options``
+    weber_kind : {"secant", "tangent"} — Weber linearisation
+        (:data:`contact.compliance.hertz.WEBER_COMPLIANCE_KINDS`)
+    load_floor : float — [N/mm] w′ below this is evaluated at this value
+    **model_options — ``theory``, ``n_height``, ``n_face``, ``pinion_material``,
+        ``gear_material``, ``pinion_bore``, ``gear_bore`` of :func:`pair_compliance_model`
+
+    Returns
+    -------
+    C : ndarray (N, N) — [mm/N] total compliance along the contact normals,
+        symmetric, block diagonal by ``pair_index`` (order of the segments kept)
+    info : dict
+        ``"pinion_shell"``, ``"gear_shell"`` (N, N) [mm/N] bending and shear;
+        ``"pinion_foundation"``, ``"gear_foundation"`` (N, N) [mm/N] Sainsot;
+        ``"weber"`` (N, N) [mm/N] diagonal contact compliance; ``"asymmetry"`` [1]
+        largest ‖C − Cᵀ‖/‖C‖ of the shell blocks before symmetrisation;
+        ``"pinion_points"``, ``"gear_points"`` (:class:`ShellPoints`);
+        ``"weber_depth"`` (N, 2) [mm]; ``"blocks"`` {pair: segment indices};
+        ``"model"`` the PairComplianceModel; ``"time"`` [s].
+
+    Raises
+    ------
+    InputError
+        Midpoints off a member's tooth (segment ends may overhang by
+        :data:`contact.compliance.tooth.END_TOLERANCE` and are clipped), normals
+        pointing into the pinion (the contact normal must point out of the pinion),
+        bad Weber inputs.
+    ModelUnavailableError
+        Unknown shell theory or Weber kind.
+
+    Notes
+    -----
+    Seed §3.2 (Eq. 3.11 per member, Fig. 3.2 "calculate total compliance matrix")
+    and p. 78 (Weber [3.8]; base effects — Sainsot et al. 2004 here, as the seed's
+    Stegemiller interpolation is not published). Per member the segments are
+    mapped to its shell by :func:`contact.compliance.tooth.shell_coordinates`
+    with the member's transform at this roll position; each pinion load acts
+    along −n on the pinion flank, each gear load along +n on the gear flank, so
+    the four flexibilities add up as approaches along the contact normal. Weber's
+    depths are the members' contact-to-centreline distances
+    (:func:`contact.compliance.tooth.weber_depth`).
+    """
+    t0 = time.perf_counter()
+    if not isinstance(contact_segments, ContactSegments):
+        raise InputError("contact_segments must be a ContactSegments")
+    seg = contact_segments
+    if model is None:
+        model = pair_compliance_model(case, **model_options)
+    elif model_options:
+        raise InputError(f"give either model or model options, not both: {sorted(model_options)}")
+    n = seg.size
+    t_p, t_g = case_transforms(case, seg.pinion_rotation, seg.gear_rotation)
+    ends_flat = np.concatenate([seg.ends[:, 0], seg.ends[:, 1]])
+    points = {}
+    ends = {}
+    for name, transform, sign in (("pinion", t_p, 1.0), ("gear", t_g, -1.0)):
+        data = model.member(name)
+        points[name] = shell_coordinates(data, seg.midpoints, sign * seg.normals,
+                                         transform=transform)
+        ends[name] = shell_coordinates(data, ends_flat, transform=transform,
+                                       tolerance=END_TOLERANCE)
+    parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",
+                                           "gear_foundation")}
+    blocks = {}
+    asym = 0.0
+    for pair in np.unique(seg.pair_index):
+        idx = np.flatnonzero(seg.pair_index == pair)
+        blocks[int(pair)] = idx
+        ix = np.ix_(idx, idx)
+        for name in ("pinion", "gear"):
+            data = model.member(name)
+            sp = _take(points[name], idx)
+            ep = _take(ends[name], np.concatenate([idx, idx + n]))
+            cm = _shell_matrix(data, sp, ep, model.theory, model.n_height, model.n_face)
+            parts[f"{name}_shell"][ix] = cm.matrix
+            parts[f"{name}_foundation"][ix] = member_foundation(data, sp)
+            asym = max(asym, cm.asymmetry)
+    depth = np.column_stack([weber_depth(model.pinion, points["pinion"]),
+                             weber_depth(model.gear, points["gear"])])
+    tp, tg = model.pinion.tooth, model.gear.tooth
+    c_w = weber_compliance(seg.load, seg.length, depth[:, 0], depth[:, 1],
+                           e1=tp.youngs_modulus, nu1=tp.poisson_ratio,
+                           e2=tg.youngs_modulus, nu2=tg.poisson_ratio, r_eq=seg.r_eq,
+                           kind=weber_kind, load_floor=load_floor)
+    parts["weber"] = np.diag(c_w)
+    total = sum(parts.values())
+    total = 0.5 * (total + total.T)
+    info: dict[str, Any] = dict(parts)
+    info.update(asymmetry=asym, pinion_points=points["pinion"], gear_points=points["gear"],
+                weber_depth=depth, blocks=blocks, model=model,
+                time=time.perf_counter() - t0)
+    log.debug("mesh compliance: %d segments in %d tooth pairs, %.4f s", n, len(blocks),
+              info["time"])
+    return total, info

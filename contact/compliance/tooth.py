@@ -1,0 +1,1078 @@
+"""The shell compliance model of a GENERATED tooth: dimensions, coordinates, normals.
+
+Connects the Rayleigh–Ritz shell of :mod:`contact.compliance.shell` (seed §3.2,
+Eq. 3.1–3.11) to the tooth surfaces that :mod:`geometry.flank` generates from the
+machine settings, so that the LTCA can build the compliance of real contact
+segments. Per member it measures, on the generated flanks of one tooth,
+
+* the normal tooth thickness across the tooth and the tooth height along the
+  profile, and fits them by the linear two-variable thickness function and the
+  linear height function of seed Eq. 3.1 → a :class:`~contact.compliance.shell.ShellTooth`;
+* the tooth mid-surface and, at every point of the tooth, the local shell frame
+  (e_x along the height root → tip, e_θ along the face toe → heel, e_z the
+  mid-surface normal towards the convex flank) in which the real flank normals
+  are expressed for :func:`~contact.compliance.shell.compliance_matrix`;
+* the mid-face virtual spur gear of the Sainsot foundation term
+  (:class:`~contact.compliance.base.ToothFoundation`) and the Weber depth.
+
+One tooth
+---------
+Both reference flanks of a member are generated in its own frame (z along the
+member axis, reference slot near +x). The tooth's material lies on the side of
+the convex flank opposite to its outward normal; the concave flank that bounds
+the same tooth is the reference concave flank turned by k pitches 2π/z about the
+member axis, k ∈ {−1, 0, 1} chosen so that it lies on the material side within
+one pitch. For the example cases this gives k = 0 for the pinions (their two
+reference flanks bound a tooth) and k = ±1 for the Formate gears (theirs bound a
+slot), as the geometry engineers said — found, not assumed.
+
+Shell coordinates
+-----------------
+A point of the tooth is turned about the member axis by whole pitches onto the
+reference tooth and projected along the mid-surface normal onto the tooth's
+mid-surface (the shell's z = 0); its foot is located by the blank's bilinear
+projection-plane fractions (u, v) of :func:`geometry.flank.projection_grid` (u toe
+→ heel, v root cone → face cone). Then
+
+    θ = (arc length from the toe, along the mid-height lengthwise curve, of the
+         mid-surface curve orthogonal to the lengthwise curves through the foot) / R
+    x = v h(θ)
+
+i.e. the shell's generators (θ = const) are the real mid-surface's curves
+orthogonal to its lengthwise curves, and its face angle measures arc length along
+the tooth. The offset of the point from the mid-surface along e_z is ≈ ±t/2 on a
+flank. Every tooth maps to the same shell.
+
+Public API
+----------
+ToothModelData         frozen dataclass: the fitted ShellTooth, foundation, frames
+ShellPoints            shell coordinates, local normals and frames of flank points
+shell_tooth_from_case  measure and fit one member's tooth (seed Eq. 3.1)
+shell_coordinates      member/pair-frame points and normals → shell coordinates
+flank_points           shell coordinates → points on the generated flanks (inverse)
+weber_depth            contact-to-centreline distance for Weber's formula
+member_foundation      Sainsot coupling matrix of loads on one tooth
+member_compliance      N×N bending/shear compliance of points on one tooth
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, NamedTuple
+
+import numpy as np
+from numpy.polynomial import legendre as leg
+
+from contact.compliance.base import (
+    ToothFoundation,
+    foundation_matrix,
+    load_angle_from_normals,
+    load_line_height,
+)
+from contact.compliance.shell import (
+    ComplianceMatrix,
+    ShellModel,
+    ShellTooth,
+    build_shell_model,
+    compliance_matrix,
+)
+from geometry.cutter import profile_sections
+from geometry.errors import InputError, LTCAError
+from geometry.flank import blank_outline, flank_surface
+from geometry.meshing import solve_envelope
+
+if TYPE_CHECKING:
+    from geometry.case import Case
+
+__all__ = [
+    "END_TOLERANCE",
+    "N_FACE",
+    "N_HEIGHT",
+    "SIDES",
+    "ShellPoints",
+    "ToothModelData",
+    "flank_points",
+    "member_compliance",
+    "member_foundation",
+    "shell_coordinates",
+    "shell_tooth_from_case",
+    "weber_depth",
+]
+
+log = logging.getLogger(__name__)
+
+#: side code of a flank in the shell frame: convex at z = +t/2, concave at z = −t/2
+SIDES: dict[str, int] = {"convex": 1, "concave": -1}
+
+#: Default Ritz modes for generated teeth (height ICF × face IFF). Real teeth are long for
+#: their height (tooth length / mean height 4–8 for the example cases, against ~3 for the
+#: benchmark tooth of :mod:`contact.compliance.shell`), so a point load needs more face
+#: modes: against 3-D FE of the generated teeth (benchmarks/compliance_tooth.py) the tip
+#: deflection with 5 × 9 modes is 1–30 % low, with 6 × 21 within −9 … +12 % of the FE and
+#: within 3 % of 8 × 30 modes.
+N_HEIGHT = 6
+N_FACE = 21
+
+#: [1] segment end points may overhang the blank by this fraction of the face width or
+#: depth (a discretised contact curve's last segment); they are clipped onto the tooth
+END_TOLERANCE = 0.05
+
+_MIRROR = np.array([1.0, -1.0, 1.0])  # left hand = mirror y → −y (geometry.flank)
+_FIT_DEGREE = (6, 4)  # Legendre degrees in (u, v) of the flank-angle fits
+_TRAJ_STEPS = 8  # RK4 steps along an orthogonal trajectory (error < 1e-9 in u)
+_REF_V = 0.5  # the shell's face angle is measured along the mid-height lengthwise curve
+_ARC_MARGIN = 0.3  # the arc-length table extends this far beyond the toe and heel
+_ARC_POINTS = 801
+_PROJ_ITER = 30
+
+
+# ---------------------------------------------------------------------------------------
+# data
+# ---------------------------------------------------------------------------------------
+@dataclass(frozen=True, eq=False)
+class ToothModelData:
+    """Everything the compliance needs about one member's generated tooth.
+
+    Build it with :func:`shell_tooth_from_case`. Lengths [mm], angles [rad].
+
+    Attributes
+    ----------
+    member : str — ``"pinion"`` or ``"gear"``
+    tooth : ShellTooth — the fitted tapered shell (seed Eq. 3.1): thicknesses,
+        heights, shell radius R (cutter radius), Θ₀ = tooth length / R, E, ν
+    foundation : ToothFoundation — mid-face virtual spur gear (Sainsot 2004)
+    teeth : int — [1] number of teeth z
+    concave_shift : int — [1] k: the tooth's concave flank is the reference
+        concave flank turned by k · 2π/z about the member axis
+    corners : ndarray (2, 2, 2) — [mm] projection-plane corners [u][v] = (z, ρ)
+        of the blank (:func:`geometry.flank.blank_outline`)
+    angle_coef : ndarray (2, 7, 5) — [rad] Legendre coefficients in (2u − 1, 2v − 1)
+        of the angular positions about the member axis of the tooth's convex (0) and
+        concave (1) flanks
+    arc_table : ndarray (2, K) — ([1], [mm]) face fraction u at mid height and the
+        mid-surface arc length from the toe along the mid-height lengthwise curve
+        (R θ of the shell)
+    fillet_radius : tuple (float, float) — [mm] blade edge radii of the convex and
+        concave flanks (the root fillets)
+    mean_spiral_angle : float — [rad] β_m of the tooth's mid-surface at the mean point
+    virtual_pitch_radius : float — [mm] r_m / (cos δ cos² β_m), normal-section
+        virtual spur gear at mid face
+    mean_dedendum : float — [mm] pitch cone to root cone at the mean point
+    measured_thickness : ndarray (nu, nv) — [mm] normal thickness measured on the grid
+        (NaN where a flank is not generated by its blade's profile section)
+    measured_height : ndarray (nu,) — [mm] tooth height along the mid-surface profile
+    grid_u, grid_v : ndarray — [1] the measurement grid fractions
+    thickness_fit_error : float — [mm] max |measured − fitted| thickness
+    height_fit_error : float — [mm] max |measured − fitted| height
+    angle_fit_error : float — [rad] max residual of the flank-angle fits
+    build_time : float — [s]
+    """
+
+    member: str
+    tooth: ShellTooth
+    foundation: ToothFoundation
+    teeth: int
+    concave_shift: int
+    corners: np.ndarray
+    angle_coef: np.ndarray
+    arc_table: np.ndarray
+    fillet_radius: tuple[float, float]
+    mean_spiral_angle: float
+    virtual_pitch_radius: float
+    mean_dedendum: float
+    measured_thickness: np.ndarray
+    measured_height: np.ndarray
+    grid_u: np.ndarray
+    grid_v: np.ndarray
+    thickness_fit_error: float
+    height_fit_error: float
+    angle_fit_error: float
+    build_time: float
+    case: Case = field(repr=False)
+    _models: dict = field(default_factory=dict, repr=False)
+
+    def face_angle(self, xi: np.ndarray) -> np.ndarray:
+        """Shell face angle θ [rad] of the trajectory through face fraction ``xi`` at mid height."""
+        return np.interp(xi, self.arc_table[0], self.arc_table[1]) / self.tooth.radius
+
+    def face_fraction(self, theta: np.ndarray) -> np.ndarray:
+        """Inverse of :meth:`face_angle`: face fraction at mid height [1] of θ [rad]."""
+        return np.interp(np.asarray(theta) * self.tooth.radius, self.arc_table[1],
+                         self.arc_table[0])
+
+    @property
+    def pitch(self) -> float:
+        """Angular pitch 2π/z [rad]."""
+        return 2.0 * math.pi / self.teeth
+
+    def shell_model(
+        self, theory: str = "seed", n_height: int = N_HEIGHT, n_face: int = N_FACE
+    ) -> ShellModel:
+        """The built, factorised shell model of this tooth, memoised on this object.
+
+        Parameters
+        ----------
+        theory : str — key of :data:`contact.compliance.shell.THEORIES`
+        n_height, n_face : int — [1] Ritz modes (ICF, IFF)
+
+        Returns
+        -------
+        ShellModel — built once per (theory, n_height, n_face) and reused (seed
+            Fig. 3.2: "it is done only once and is valid for all mesh positions")
+
+        Raises
+        ------
+        InputError, ModelUnavailableError, LTCAError
+            As :func:`contact.compliance.shell.build_shell_model`.
+        """
+        key = (theory, n_height, n_face)
+        model = self._models.get(key)
+        if model is None:
+            model = build_shell_model(self.tooth, n_height, n_face, theory=theory)
+            self._models[key] = model
+            log.debug("%s shell model %s built in %.3f s", self.member, key, model.build_time)
+        return model
+
+
+class ShellPoints(NamedTuple):
+    """Flank points in shell coordinates (result of :func:`shell_coordinates`).
+
+    x : (N,) [mm] height from the root along the tooth; theta : (N,) [rad] face
+    angle from the toe; u, v : (N,) [1] projection-plane fractions of the point's foot
+    on the mid-surface (v = x/h; u differs from θ/Θ₀ by the spiral's skew);
+    normal : (N, 3) [1] outward flank normal on (e_x, e_θ, e_z), or None;
+    side : (N,) [1] +1 convex flank, −1 concave flank; offset : (N,) [mm] signed
+    distance of the point from the mid-surface along e_z (≈ side · t/2 on a flank);
+    frame : (N, 3, 3) [1] rows e_x, e_θ, e_z in the input frame (member or pair).
+    """
+
+    x: np.ndarray
+    theta: np.ndarray
+    u: np.ndarray
+    v: np.ndarray
+    normal: np.ndarray | None
+    side: np.ndarray
+    offset: np.ndarray
+    frame: np.ndarray
+
+
+# ---------------------------------------------------------------------------------------
+# projection-plane (u, v) map and flank-angle fits
+# ---------------------------------------------------------------------------------------
+def _bilinear(corners: np.ndarray, u: np.ndarray, v: np.ndarray):
+    """(z, ρ) and their u- and v-derivatives of the blank's bilinear map."""
+    c = corners
+    u = np.asarray(u, dtype=float)[..., None]
+    v = np.asarray(v, dtype=float)[..., None]
+    p = (1 - u) * (1 - v) * c[0, 0] + u * (1 - v) * c[1, 0] + (1 - u) * v * c[0, 1] \
+        + u * v * c[1, 1]
+    pu = (1 - v) * (c[1, 0] - c[0, 0]) + v * (c[1, 1] - c[0, 1])
+    pv = (1 - u) * (c[0, 1] - c[0, 0]) + u * (c[1, 1] - c[1, 0])
+    return p, pu, pv
+
+
+def _invert_bilinear(corners: np.ndarray, z: np.ndarray, rho: np.ndarray):
+    """(u, v) with bilinear(u, v) = (z, ρ), Newton from the centre (exact to 1e-13)."""
+    target = np.stack([z, rho], axis=-1)
+    u = np.full(z.shape, 0.5)
+    v = np.full(z.shape, 0.5)
+    for _ in range(30):
+        p, pu, pv = _bilinear(corners, u, v)
+        r = p - target
+        det = pu[..., 0] * pv[..., 1] - pu[..., 1] * pv[..., 0]
+        du = (r[..., 0] * pv[..., 1] - r[..., 1] * pv[..., 0]) / det
+        dv = (pu[..., 0] * r[..., 1] - pu[..., 1] * r[..., 0]) / det
+        u = u - du
+        v = v - dv
+        if np.all(np.abs(du) + np.abs(dv) < 1e-14):
+            break
+    return u, v
+
+
+def _angles(coef: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Flank angles and their u- and v-derivatives from the Legendre fits.
+
+    Returns an array (…, 3, 2): [value, ∂/∂u, ∂/∂v] × [convex, concave] [rad].
+    """
+    nu_c, nv_c = coef.shape[1:]
+    cols = []
+    for axis in (None, 1, 2):
+        for k in range(2):
+            c = coef[k][None] if axis is None else leg.legder(coef[k][None], scl=2.0, axis=axis)
+            full = np.zeros((nu_c, nv_c))
+            full[: c.shape[1], : c.shape[2]] = c[0]
+            cols.append(full.ravel())
+    basis = leg.legvander2d(2.0 * np.asarray(u, dtype=float) - 1.0,
+                            2.0 * np.asarray(v, dtype=float) - 1.0, (nu_c - 1, nv_c - 1))
+    out = basis @ np.stack(cols, axis=1)
+    return out.reshape(*out.shape[:-1], 3, 2)
+
+
+def _mid_surface(data_corners: np.ndarray, coef: np.ndarray, u: np.ndarray, v: np.ndarray):
+    """Mid-surface point M and its tangents M_u, M_v in the member frame (…, 3)."""
+    p, pu, pv = _bilinear(data_corners, u, v)
+    ang = _angles(coef, u, v).mean(axis=-1)
+    phi, phi_u, phi_v = ang[..., 0], ang[..., 1], ang[..., 2]
+    z, rho = p[..., 0], p[..., 1]
+    c, s = np.cos(phi), np.sin(phi)
+
+    def vec(dz, drho, dphi):
+        return np.stack([drho * c - rho * s * dphi, drho * s + rho * c * dphi, dz], axis=-1)
+
+    m = np.stack([rho * c, rho * s, z], axis=-1)
+    return m, vec(pu[..., 0], pu[..., 1], phi_u), vec(pv[..., 0], pv[..., 1], phi_v)
+
+
+def _frames(corners: np.ndarray, coef: np.ndarray, u: np.ndarray, v: np.ndarray):
+    """Mid-surface point and local shell frame (…, 3, 3) rows e_x, e_θ, e_z at (u, v).
+
+    e_z: unit mid-surface normal towards the convex flank; e_θ: unit tangent of the
+    lengthwise curve v = const (toe → heel); e_x = ±e_z × e_θ, the in-surface
+    direction orthogonal to it (root → tip), i.e. along the shell's generator. The
+    handedness of (e_x, e_θ, e_z) follows the member's hand; the shell model only
+    needs the components along these directions.
+    """
+    m, mu, mv = _mid_surface(corners, coef, u, v)
+    n = np.cross(mu, mv)
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    ang = _angles(coef, u, v)[..., 0, :]
+    # towards the convex flank: the convex flank lies at angle ang[0] > or < ang[1]
+    phi = ang.mean(axis=-1)
+    e_phi = np.stack([-np.sin(phi), np.cos(phi), np.zeros_like(phi)], axis=-1)
+    sgn = np.sign(np.sum(n * e_phi, axis=-1) * (ang[..., 0] - ang[..., 1]))
+    e_z = n * sgn[..., None]
+    e_t = mu / np.linalg.norm(mu, axis=-1, keepdims=True)
+    e_x = np.cross(e_z, e_t)
+    e_x *= np.sign(np.sum(e_x * mv, axis=-1))[..., None]
+    return m, np.stack([e_x, e_t, e_z], axis=-2)
+
+
+def _slope(corners: np.ndarray, coef: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """du/dv along the mid-surface curves orthogonal to the lengthwise curves v = const."""
+    _, mu, mv = _mid_surface(corners, coef, u, v)
+    return -np.sum(mu * mv, axis=-1) / np.sum(mu * mu, axis=-1)
+
+
+def _trajectory(corners: np.ndarray, coef: np.ndarray, u, v0, v1) -> np.ndarray:
+    """u at profile fraction v1 on the orthogonal trajectory through (u, v0) (RK4)."""
+    u = np.asarray(u, dtype=float).copy()
+    v = np.broadcast_to(np.asarray(v0, dtype=float), u.shape).copy()
+    h = (np.asarray(v1, dtype=float) - v) / _TRAJ_STEPS
+    for _ in range(_TRAJ_STEPS):
+        k1 = _slope(corners, coef, u, v)
+        k2 = _slope(corners, coef, u + 0.5 * h * k1, v + 0.5 * h)
+        k3 = _slope(corners, coef, u + 0.5 * h * k2, v + 0.5 * h)
+        k4 = _slope(corners, coef, u + h * k3, v + h)
+        u = u + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+        v = v + h
+    return u
+
+
+def _rot_z(angle: np.ndarray, vec: np.ndarray) -> np.ndarray:
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * vec[..., 0] - s * vec[..., 1], s * vec[..., 0] + c * vec[..., 1],
+                     vec[..., 2]], axis=-1)
+
+
+# ---------------------------------------------------------------------------------------
+# measurement and fit (seed Eq. 3.1)
+# ---------------------------------------------------------------------------------------
+def _positive(name: str, value: float, unit: str) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{name} must be a real number [{unit}], got {value!r}") from exc
+    if not (math.isfinite(v) and v > 0.0):
+        raise InputError(f"{name} must be finite and > 0 {unit}, got {value!r}")
+    return v
+
+
+def _grid_size(name: str, value: int, lo: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not (
+            lo <= value <= 200):
+        raise InputError(f"{name} must be an integer in [{lo}, 200], got {value!r}")
+    return int(value)
+
+
+class _ToothFlanks(NamedTuple):
+    """Both flanks of one tooth on the same (u, v) grid (member frame)."""
+
+    u: np.ndarray  # (nu,) [1]
+    v: np.ndarray  # (nv,) [1]
+    convex: np.ndarray  # (nu, nv, 3) [mm]
+    concave: np.ndarray  # (nu, nv, 3) [mm], turned onto the tooth
+    phi: tuple[np.ndarray, np.ndarray]  # angles about the member axis [rad], continuous
+    ok: tuple[np.ndarray, np.ndarray]  # generated by the blades' profile sections
+    shift: int  # pitches the reference concave flank is turned by
+
+
+def _tooth_flanks(case: Case, member: str, nu: int, nv: int) -> _ToothFlanks:
+    """Both flanks on the same (u, v) grid, the concave one turned onto the tooth."""
+    mem = case.member(member)
+    cvx = flank_surface(case, member, "convex", nu=nu, nv=nv, v_limits=(0.0, 1.0))
+    ccv = flank_surface(case, member, "concave", nu=nu, nv=nv, v_limits=(0.0, 1.0))
+    main = {f: profile_sections(mem.flank(f).blade).main for f in SIDES}
+    ok_v = cvx.valid & (cvx.section == main["convex"])
+    ok_c = ccv.valid & (ccv.section == main["concave"])
+    both = ok_v & ok_c
+    if both.sum() < 12:
+        raise LTCAError(
+            f"{member}: only {int(both.sum())} grid points are generated on both flanks by "
+            "the blades' profile sections; cannot measure the tooth")
+    pitch = 2.0 * math.pi / mem.blank.teeth
+    phi_v = np.arctan2(cvx.position[..., 1], cvx.position[..., 0])
+    phi_c = np.arctan2(ccv.position[..., 1], ccv.position[..., 0])
+    # the material is on the side of the convex flank opposite to its outward normal;
+    # the tooth's concave flank is the one within a pitch on that side
+    idx = tuple(np.argwhere(both)[int(both.sum()) // 2])
+    p, n = cvx.position[idx], cvx.normal[idx]
+    e_phi = np.array([-p[1], p[0], 0.0]) / math.hypot(p[0], p[1])
+    material = -math.copysign(1.0, float(n @ e_phi))
+    gap = math.remainder(float(phi_c[idx] - phi_v[idx]), 2.0 * math.pi)
+    shifts = [k for k in (-1, 0, 1) if 0.0 < material * (gap + k * pitch) < pitch]
+    if len(shifts) != 1:
+        raise LTCAError(f"{member}: cannot find the concave flank that bounds the tooth")
+    k = shifts[0]
+    # angles continuous over the grid, within ±π of the reference point's (a tooth
+    # turns by well under π about the member axis from toe to heel)
+    ref = float(phi_v[idx])
+    phi_v = ref + np.remainder(phi_v - ref + math.pi, 2 * math.pi) - math.pi
+    phi_c = ref + np.remainder(phi_c + k * pitch - ref + math.pi, 2 * math.pi) - math.pi
+    return _ToothFlanks(u=cvx.grid.u, v=cvx.grid.v, convex=cvx.position,
+                        concave=_rot_z(np.full(phi_c.shape, k * pitch), ccv.position),
+                        phi=(phi_v, phi_c), ok=(ok_v, ok_c), shift=k)
+
+
+def _fit_angles(u, v, phi, ok) -> tuple[np.ndarray, float]:
+    uu, vv = np.meshgrid(u, v, indexing="ij")
+    a = leg.legvander2d(2 * uu[ok] - 1, 2 * vv[ok] - 1, _FIT_DEGREE)
+    coef, *_ = np.linalg.lstsq(a, phi[ok], rcond=None)
+    resid = float(np.max(np.abs(a @ coef - phi[ok])))
+    return coef.reshape(_FIT_DEGREE[0] + 1, _FIT_DEGREE[1] + 1), resid
+
+
+def _gauss01(n: int) -> tuple[np.ndarray, np.ndarray]:
+    t, w = leg.leggauss(n)
+    return 0.5 * (t + 1.0), 0.5 * w
+
+
+def _arc_table(corners: np.ndarray, coef: np.ndarray) -> tuple[np.ndarray, float]:
+    """Arc length [mm] from the toe along the mid-height lengthwise curve vs u; its length."""
+    xi = np.linspace(-_ARC_MARGIN, 1.0 + _ARC_MARGIN, _ARC_POINTS)
+    _, mu, _ = _mid_surface(corners, coef, xi, np.full_like(xi, _REF_V))
+    speed = np.linalg.norm(mu, axis=-1)
+    arc = np.concatenate([[0.0], np.cumsum(0.5 * (speed[1:] + speed[:-1]) * np.diff(xi))])
+    arc -= np.interp(0.0, xi, arc)
+    return np.stack([xi, arc]), float(np.interp(1.0, xi, arc))
+
+
+def _fit_thickness(corners, coef, fl: _ToothFlanks, table: np.ndarray, length: float):
+    """Measured normal thickness on the grid and its least-squares fit (seed Eq. 3.1a)."""
+    both = fl.ok[0] & fl.ok[1]
+    uu, vv = np.meshgrid(fl.u, fl.v, indexing="ij")
+    _, frame = _frames(corners, coef, uu, vv)
+    t_meas = np.abs(np.sum((fl.convex - fl.concave) * frame[..., 2, :], axis=-1))
+    t_meas = np.where(both, t_meas, np.nan)
+    # face fraction s = θ/Θ₀ of each grid point, through its orthogonal trajectory
+    ss = np.interp(_trajectory(corners, coef, uu, vv, _REF_V), table[0], table[1]) / length
+    a = np.column_stack([((1 - ss) * (1 - vv))[both], (ss * (1 - vv))[both], vv[both]])
+    fit, *_ = np.linalg.lstsq(a, t_meas[both], rcond=None)
+    return fit, t_meas, float(np.max(np.abs(a @ fit - t_meas[both])))
+
+
+def _fit_heights(corners, coef, table: np.ndarray, length: float, n: int):
+    """Lengths of the orthogonal trajectories root cone → face cone, and their linear fit."""
+    s = np.linspace(0.0, 1.0, n)
+    xi = np.interp(s * length, table[1], table[0])
+    vg, wg = _gauss01(12)
+    vv = np.broadcast_to(vg, (n, vg.size))
+    ug = _trajectory(corners, coef, np.broadcast_to(xi[:, None], vv.shape), _REF_V, vv)
+    _, mu, mv = _mid_surface(corners, coef, ug, vv)
+    # the trajectory's tangent: M_v minus its part along the lengthwise tangent M_u
+    tangent = mv - (np.sum(mu * mv, axis=-1) / np.sum(mu * mu, axis=-1))[..., None] * mu
+    h_meas = np.linalg.norm(tangent, axis=-1) @ wg
+    a = np.column_stack([1 - s, s])
+    fit, *_ = np.linalg.lstsq(a, h_meas, rcond=None)
+    return fit, h_meas, float(np.max(np.abs(a @ fit - h_meas)))
+
+
+class _VirtualGear(NamedTuple):
+    foundation: ToothFoundation
+    spiral_angle: float  # [rad]
+    pitch_radius: float  # [mm]
+    dedendum: float  # [mm]
+
+
+def _virtual_gear(member: str, blank, corners, coef, blades, t_root: float, length: float,
+                  bore_radius: float | None, youngs_modulus: float) -> _VirtualGear:
+    """Mid-face normal-section virtual spur gear for the Sainsot foundation."""
+    zm, pm = blank_outline(blank).mean_point
+    um, vm = _invert_bilinear(corners, np.array([zm]), np.array([pm]))
+    mpt, mu_m, _ = _mid_surface(corners, coef, um, vm)
+    d = blank.pitch_angle
+    e_r = np.array([mpt[0, 0], mpt[0, 1], 0.0]) / math.hypot(mpt[0, 0], mpt[0, 1])
+    gen = math.sin(d) * e_r + math.cos(d) * np.array([0.0, 0.0, 1.0])
+    e_t = np.cross([0.0, 0.0, 1.0], e_r)
+    beta = math.atan2(abs(float(mu_m[0] @ e_t)), abs(float(mu_m[0] @ gen)))
+    # mean dedendum: from the mean point along the pitch-cone normal to the root cone
+    root_dir = np.array([math.cos(blank.root_angle), math.sin(blank.root_angle)])
+    perp = np.array([-math.sin(d), math.cos(d)])
+    s_perp, _ = np.linalg.solve(np.column_stack([perp, -root_dir]),
+                                np.array([-blank.root_apex - zm, -pm]))
+    h_fm = float(-s_perp)
+    scale = 1.0 / (math.cos(d) * math.cos(beta) ** 2)
+    r_vn = float(pm) * scale
+    r_root = r_vn - h_fm
+    r_root_real = float(pm) - h_fm * math.cos(d)
+    fillet = sum(b.edge_radius * math.tan(0.25 * math.pi - 0.5 * b.blade_angle)
+                 for b in blades.values())
+    if bore_radius is None:
+        bore = 0.5 * r_root_real
+        log.info("%s: bore radius not given, using half the mean root radius: %.3f mm",
+                 member, bore)
+    else:
+        bore = _positive("bore_radius", bore_radius, "mm")
+        if bore >= r_root_real:
+            raise InputError(f"bore_radius must be in (0, {r_root_real:.4g}) mm (below the "
+                             f"mean root radius), got {bore_radius!r}")
+    foundation = ToothFoundation(root_radius=r_root, inner_radius=bore * scale,
+                                 root_half_angle=(t_root + fillet) / (2.0 * r_root),
+                                 face_width=length, youngs_modulus=youngs_modulus)
+    return _VirtualGear(foundation, beta, r_vn, h_fm)
+
+
+def shell_tooth_from_case(
+    case: Case,
+    member: str,
+    *,
+    youngs_modulus: float = 206000.0,
+    poisson_ratio: float = 0.3,
+    bore_radius: float | None = None,
+    nu: int = 17,
+    nv: int = 11,
+) -> ToothModelData:
+    """Measure one member's generated tooth and fit the shell of seed Eq. 3.1.
+
+    Parameters
+    ----------
+    case : geometry.case.Case — a loaded case (face milling)
+    member : str — ``"pinion"`` or ``"gear"``
+    youngs_modulus : float — [MPa] E of the member's material
+    poisson_ratio : float — [1] ν, in [0, 0.5)
+    bore_radius : float, optional — [mm] radius of the member's bore (the inner
+        boundary of the gear body under the teeth), used for the Sainsot foundation;
+        default half the mean root radius of the member (logged), since case files
+        do not give it
+    nu, nv : int — [1] measurement grid over the flank, lengthwise × profile
+        (toe → heel, root cone → face cone), 5–200 and 4–200
+
+    Returns
+    -------
+    ToothModelData
+        The fitted :class:`ShellTooth` (shell radius R = cutter radius: the mean
+        of the point radii of the two blades that cut this member's flanks;
+        Θ₀ = tooth length / R), the foundation and the frame data.
+
+    Raises
+    ------
+    InputError
+        Bad member name, material constants or grid sizes.
+    LTCAError
+        The flanks do not overlap enough to measure a tooth, or the fitted
+        dimensions are not physical (non-positive thickness or height).
+
+    Notes
+    -----
+    Seed §3.2, Eq. 3.1 and Fig. 3.1–3.2 ("tooth thickness and height
+    calculation", "fit a linear function to tooth thickness and height"). The
+    extraction loses Eq. 3.1; we use the reconstruction of
+    :class:`~contact.compliance.shell.ShellTooth` (root thickness linear from toe
+    to heel, constant tip thickness, linear in between; height linear toe → heel)
+    and fit its parameters by least squares, which is linear in them:
+
+    * normal thickness t at every grid point where both flanks are generated by
+      the blades' profile sections (edge-radius fillets excluded): the chord
+      between the two flanks at the same projection-plane place projected on the
+      mid-surface normal, t = |(P_convex − P_concave) · e_z|; fitted by
+      t = [t_toe (1 − s) + t_heel s] (1 − v) + t_tip v, with v = x/h the profile
+      fraction and s = θ/Θ₀ the face fraction of the point's shell coordinates
+      (:func:`shell_coordinates`);
+    * height h(s): the length of the mid-surface curve orthogonal to the
+      lengthwise curves (the shell's generator) from the root cone to the face
+      cone; fitted by h = h_toe (1 − s) + h_heel s;
+    * tooth length = the mid-surface arc from toe to heel along the mid-height
+      lengthwise curve (along the spiral, not the face width b along the pitch
+      cone, which is shorter by ~cos β_m); Θ₀ = length / R.
+
+    The mid-surface M(u, v) lies midway (in angle about the member axis) between
+    the flanks at each projection-plane place; the flank angles are fitted by
+    Legendre polynomials of degree (6, 4) in (u, v) (residual ~1e-7 rad for the
+    Formate gears, ~2e-4 rad for the generated pinions), which also extrapolate
+    the gear's mid-surface into the root region that the flank grid does not reach
+    (fillets). The seed's linear thickness cannot follow a generated pinion's
+    curved profile nor a topland that narrows toe → heel; the least-squares misfit
+    is kept in ``thickness_fit_error`` (0.05–0.95 mm for the example cases).
+
+    Sainsot foundation (:class:`~contact.compliance.base.ToothFoundation`), our
+    reading of "base rotation … by an interpolation method" (seed p. 78, whose
+    Stegemiller tables are not published): the mid-face normal-section virtual
+    spur gear, r_vn = r_m / (cos δ cos² β_m) (Tredgold's approximation and the
+    normal section of a helical gear, as ISO 10300-1 builds the virtual gear), root
+    radius r_f = r_vn − h_fm, inner radius r_int = r_bore / (cos δ cos² β_m) (the
+    bore seen along the back cone in the same section), root thickness
+    S_f = t_root(mid face) + Σ r_e tan(π/4 − α/2) — the fitted flank thickness at
+    the root plus what each root fillet of radius r_e (the blade edge radius, blade
+    angle α) adds at the root line — θ_f = S_f / (2 r_f), face width = the tooth
+    length.
+    """
+    t_start = time.perf_counter()
+    if member not in ("pinion", "gear"):
+        raise InputError(f"member must be 'pinion' or 'gear', got {member!r}")
+    e_mod = _positive("youngs_modulus", youngs_modulus, "MPa")
+    try:
+        nu_p = float(poisson_ratio)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"poisson_ratio must be a real number, got {poisson_ratio!r}") from exc
+    if not (math.isfinite(nu_p) and 0.0 <= nu_p < 0.5):
+        raise InputError(f"poisson_ratio must be in [0, 0.5), got {poisson_ratio!r}")
+    nu = _grid_size("nu", nu, 5)
+    nv = _grid_size("nv", nv, 4)
+    mem = case.member(member)
+    blank = mem.blank
+
+    fl = _tooth_flanks(case, member, nu, nv)
+    corners = blank_outline(blank).corners
+    coef_v, res_v = _fit_angles(fl.u, fl.v, fl.phi[0], fl.ok[0])
+    coef_c, res_c = _fit_angles(fl.u, fl.v, fl.phi[1], fl.ok[1])
+    coef = np.stack([coef_v, coef_c])
+    table, length = _arc_table(corners, coef)
+    (t_toe, t_heel, t_tip), t_meas, t_err = _fit_thickness(corners, coef, fl, table, length)
+    (h_toe, h_heel), h_meas, h_err = _fit_heights(corners, coef, table, length, nu)
+
+    blades = {f: mem.flank(f).blade for f in SIDES}
+    radius = 0.5 * (blades["convex"].point_radius + blades["concave"].point_radius)
+    dims = {"thickness_toe_root": t_toe, "thickness_heel_root": t_heel,
+            "thickness_tip": t_tip, "height_toe": h_toe, "height_heel": h_heel}
+    bad = {k: val for k, val in dims.items() if not val > 0.0}
+    if bad:
+        raise LTCAError(f"{member}: fitted tooth dimensions are not physical: {bad}")
+    tooth = ShellTooth.from_face_width(
+        **{k: float(val) for k, val in dims.items()}, face_width=length, radius=radius,
+        youngs_modulus=e_mod, poisson_ratio=nu_p)
+    vg = _virtual_gear(member, blank, corners, coef, blades, 0.5 * (t_toe + t_heel), length,
+                       bore_radius, e_mod)
+    elapsed = time.perf_counter() - t_start
+    log.debug("%s tooth measured in %.3f s: %s", member, elapsed, tooth)
+    return ToothModelData(
+        member=member, tooth=tooth, foundation=vg.foundation, teeth=blank.teeth,
+        concave_shift=fl.shift, corners=corners, angle_coef=coef, arc_table=table,
+        fillet_radius=(blades["convex"].edge_radius, blades["concave"].edge_radius),
+        mean_spiral_angle=vg.spiral_angle, virtual_pitch_radius=vg.pitch_radius,
+        mean_dedendum=vg.dedendum, measured_thickness=t_meas, measured_height=h_meas,
+        grid_u=fl.u, grid_v=fl.v, thickness_fit_error=t_err, height_fit_error=h_err,
+        angle_fit_error=max(res_v, res_c), build_time=elapsed, case=case)
+
+
+# ---------------------------------------------------------------------------------------
+# coordinates
+# ---------------------------------------------------------------------------------------
+def _as_vectors(name: str, value, n: int | None = None) -> np.ndarray:
+    a = np.asarray(value, dtype=float)
+    if a.ndim == 1 and a.shape[0] == 3:
+        a = a[None, :]
+    if a.ndim != 2 or a.shape[1] != 3 or (n is not None and a.shape[0] != n):
+        want = f"({n}, 3)" if n is not None else "(N, 3)"
+        raise InputError(f"{name} must have shape {want} [got {a.shape}]")
+    if not np.all(np.isfinite(a)):
+        raise InputError(f"{name} must be finite")
+    return a
+
+
+def _to_member(transform, points: np.ndarray, normals: np.ndarray | None):
+    if transform is None:
+        return points, normals
+    t = np.asarray(transform, dtype=float)
+    if t.shape != (4, 4) or not np.all(np.isfinite(t)):
+        raise InputError(f"transform must be a finite (4, 4) member → pair matrix [got {t.shape}]")
+    rot, off = t[:3, :3], t[:3, 3]
+    if not np.allclose(rot.T @ rot, np.eye(3), atol=1e-9):
+        raise InputError("transform must be a rigid motion (orthonormal rotation block)")
+    p = (points - off) @ rot
+    return p, (None if normals is None else normals @ rot)
+
+
+def _project_to_mid(corners: np.ndarray, coef: np.ndarray, p: np.ndarray, u, v):
+    """Foot (u, v) of points p on the mid-surface along its normal (Gauss–Newton).
+
+    Solves (p − M)·M_u = (p − M)·M_v = 0; the neglected curvature terms are
+    O(offset / radius of curvature) ≈ 0.05, so each step gains > 1 digit.
+    """
+    u = np.array(u, dtype=float)
+    v = np.array(v, dtype=float)
+    for _ in range(_PROJ_ITER):
+        m, mu, mv = _mid_surface(corners, coef, u, v)
+        r = p - m
+        g1, g2 = np.sum(r * mu, axis=-1), np.sum(r * mv, axis=-1)
+        a11, a12, a22 = (np.sum(mu * mu, axis=-1), np.sum(mu * mv, axis=-1),
+                         np.sum(mv * mv, axis=-1))
+        det = a11 * a22 - a12 * a12
+        du = (a22 * g1 - a12 * g2) / det
+        dv = (a11 * g2 - a12 * g1) / det
+        u += du
+        v += dv
+        if np.all(np.abs(du) + np.abs(dv) < 1e-14):
+            break
+    return u, v
+
+
+def _reference_tooth(data: ToothModelData, pm: np.ndarray, u: np.ndarray, v: np.ndarray):
+    """Turn points by whole pitches onto the reference tooth; returns (turn, points)."""
+    m, _, _ = _mid_surface(data.corners, data.angle_coef, u, v)
+    gap = np.remainder(np.arctan2(m[:, 1], m[:, 0]) - np.arctan2(pm[:, 1], pm[:, 0]) + math.pi,
+                       2 * math.pi) - math.pi
+    turn = data.pitch * np.round(gap / data.pitch)
+    return turn, _rot_z(turn, pm)
+
+
+def shell_coordinates(
+    data: ToothModelData,
+    points,
+    normals=None,
+    *,
+    transform=None,
+    tolerance: float = 1e-6,
+) -> ShellPoints:
+    """Shell coordinates and local normals of points on a member's teeth.
+
+    Parameters
+    ----------
+    data : ToothModelData
+    points : array_like (N, 3) — [mm] points on (or in) any tooth of the member,
+        in the member frame, or in the pair frame with ``transform``
+    normals : array_like (N, 3), optional — [1] outward unit normals of the flank
+        at the points (out of the member's material), same frame as ``points``
+    transform : array_like (4, 4), optional — the member → pair transform of the
+        roll position (:func:`geometry.assembly.member_transform` with the
+        member's rotation and the misalignments); ``None``: member frame
+    tolerance : float — [1] how far (as a fraction of the face width / depth)
+        a point's projection-plane place may lie outside the blank and still be
+        clipped onto it
+
+    Returns
+    -------
+    ShellPoints
+        x [mm], θ [rad], (u, v) [1] of the point's foot on the mid-surface, the
+        normal on (e_x, e_θ, e_z) [1] (None without normals), the flank side (+1
+        convex / −1 concave: from the normal when given, else from the offset),
+        the offset [mm] from the mid-surface along e_z and the frames (rows e_x,
+        e_θ, e_z in the input frame).
+
+    Raises
+    ------
+    InputError
+        Bad shapes, non-finite values, non-unit normals, a bad transform, points
+        whose (axial position, radius) lies outside the blank by more than
+        ``tolerance``, or a normal that points into the tooth (its flank side
+        disagrees with the point's side of the mid-surface).
+
+    Notes
+    -----
+    The point is turned about the member axis by a whole number of pitches onto
+    the reference tooth and projected along the mid-surface normal onto the
+    tooth's mid-surface (the shell's z = 0): its foot (u, v) — NOT the mid-surface
+    point at the point's own projection-plane place, which on a spiral tooth lies
+    lengthwise ~t/2 · tan β away (≈ 4 % of the face width for the example gear;
+    a 3-D FE model of the generated tooth shows the deflection peak there). Then
+    θ = (arc length from the toe along the mid-height lengthwise curve) / R of the
+    point where the mid-surface curve orthogonal to the lengthwise curves through
+    the foot crosses mid height (the shell's generators are orthogonal to its
+    lengthwise circles), clipped to [0, Θ₀] (the real toe and heel are oblique,
+    the shell's are not), and x = v h(θ). The normal is projected on the frame of
+    the foot — orthonormal, so a unit normal stays a unit vector: the "flank
+    normal expressed in the local shell frame" that
+    :func:`contact.compliance.shell.compliance_matrix` expects (the load acts
+    along the flank normal, not the shell normal).
+    """
+    pts = _as_vectors("points", points)
+    nrm = None if normals is None else _as_vectors("normals", normals, pts.shape[0])
+    if nrm is not None and np.any(np.abs(np.linalg.norm(nrm, axis=1) - 1.0) > 1e-6):
+        raise InputError("normals must be unit vectors (|n| = 1 within 1e-6)")
+    tol = _positive("tolerance", tolerance, "")
+    pm, nm = _to_member(transform, pts, nrm)
+    rho = np.hypot(pm[:, 0], pm[:, 1])
+    u0, v0 = _invert_bilinear(data.corners, pm[:, 2], rho)
+    outside = (u0 < -tol) | (u0 > 1 + tol) | (v0 < -tol) | (v0 > 1 + tol)
+    if np.any(outside):
+        i = int(np.flatnonzero(outside)[0])
+        raise InputError(
+            f"points must lie on the {data.member}'s tooth flanks: face fraction u and "
+            f"profile fraction v in [0, 1] (±{tol:g}); point {i} has u = {u0[i]:.6g}, "
+            f"v = {v0[i]:.6g}")
+    turn, p_ref = _reference_tooth(data, pm, u0, v0)
+    u, v = _project_to_mid(data.corners, data.angle_coef, p_ref, u0, v0)
+    m, frame = _frames(data.corners, data.angle_coef, u, v)
+    offset = np.sum((p_ref - m) * frame[:, 2, :], axis=-1)
+    tooth = data.tooth
+    xi = _trajectory(data.corners, data.angle_coef, u, v, _REF_V)
+    theta = np.clip(data.face_angle(xi), 0.0, tooth.subtended_angle)
+    v = np.clip(v, 0.0, 1.0)
+    x = v * tooth.height(theta)
+    if nm is None:
+        local = None
+        side = np.where(offset >= 0.0, 1, -1)
+    else:
+        local = np.einsum("nij,nj->ni", frame, _rot_z(turn, nm))
+        side = np.where(local[:, 2] >= 0.0, 1, -1)
+        half = 0.5 * tooth.thickness(x, theta)
+        wrong = (offset * side < 0.0) & (np.abs(offset) > 0.25 * half)
+        if np.any(wrong):
+            i = int(np.flatnonzero(wrong)[0])
+            raise InputError(
+                f"normals must point out of the {data.member}'s material: normal {i} points "
+                f"to the {'convex' if side[i] > 0 else 'concave'} side but the point lies "
+                f"{offset[i]:.4g} mm from the mid-surface (half thickness {half[i]:.4g} mm)")
+    # frames back in the input frame (undo the turn, then the transform's rotation)
+    frame_in = _rot_z(-turn[:, None], frame)
+    if transform is not None:
+        frame_in = frame_in @ np.asarray(transform, dtype=float)[:3, :3].T
+    return ShellPoints(x=x, theta=theta, u=u, v=v, normal=local, side=side, offset=offset,
+                       frame=frame_in)
+
+
+def _flank_at(data: ToothModelData, u: float, v: float, flank: str):
+    """Generated flank point and normal at projection-plane fractions (u, v), on the tooth."""
+    mem = data.case.member(data.member)
+    tool = mem.flank(flank)
+    blank = mem.blank
+    p, _, _ = _bilinear(data.corners, np.array([u]), np.array([v]))
+    sol = solve_envelope(tool.blade, tool.machine, p[:, 0], p[:, 1],
+                         length_scale=blank.outer_cone_distance,
+                         depth=blank.outer_addendum + blank.outer_dedendum)
+    pos, nn = sol.position[0], sol.normal[0]
+    if mem.hand == "left":
+        pos, nn = pos * _MIRROR, nn * _MIRROR
+    if flank == "concave":
+        turn = np.array(data.concave_shift * data.pitch)
+        pos, nn = _rot_z(turn, pos), _rot_z(turn, nn)
+    return pos, nn
+
+
+def flank_points(data: ToothModelData, x, theta, side) -> tuple[np.ndarray, np.ndarray]:
+    """Points and outward normals of the generated flanks at shell coordinates.
+
+    The inverse of :func:`shell_coordinates` on the reference tooth: the flank
+    point whose foot on the mid-surface has the shell coordinates (x, θ).
+
+    Parameters
+    ----------
+    data : ToothModelData
+    x : array_like (N,) — [mm] height from the root, 0 ≤ x ≤ h(θ)
+    theta : array_like (N,) — [rad] face angle, 0 ≤ θ ≤ Θ₀
+    side : array_like (N,) or int — [1] +1 convex flank, −1 concave flank
+
+    Returns
+    -------
+    points : ndarray (N, 3) — [mm] member frame (NaN where the flank is not generated)
+    normals : ndarray (N, 3) — [1] out of the material, member frame
+
+    Raises
+    ------
+    InputError
+        Shapes differ, values not finite, off the tooth, or side not ±1.
+
+    Notes
+    -----
+    (x, θ) → the foot (u, v) on the mid-surface (orthogonal trajectory from mid
+    height, :func:`shell_coordinates`); then a fixed-point iteration on the
+    projection-plane place (axial position, radius) of the flank point until its
+    foot is (u, v) to 1e-12, each flank point solved by the equation of meshing
+    (seed Eq. 2.7a–2.8, :func:`geometry.meshing.solve_envelope`; a left-hand member
+    is the mirror image y → −y, as in :func:`geometry.flank.flank_surface`). Each
+    point is solved on its own with a coarse search, so this is for checks and
+    plots, not for the roll loop.
+    """
+    xs = np.atleast_1d(np.asarray(x, dtype=float))
+    ts = np.atleast_1d(np.asarray(theta, dtype=float))
+    if xs.shape != ts.shape or xs.ndim != 1:
+        raise InputError(f"x and theta must be 1-D of equal length [got {xs.shape}, {ts.shape}]")
+    sd = np.broadcast_to(np.atleast_1d(np.asarray(side, dtype=float)), xs.shape)
+    if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(ts))):
+        raise InputError("x [mm] and theta [rad] must be finite")
+    if not np.all(np.abs(np.abs(sd) - 1.0) == 0.0):
+        raise InputError("side must be +1 (convex flank) or -1 (concave flank)")
+    tooth = data.tooth
+    th0 = tooth.subtended_angle
+    h = tooth.height(np.clip(ts, 0.0, th0))
+    v_t = xs / h
+    if np.any((ts < -1e-12 * th0) | (ts > th0 * (1 + 1e-12)) | (v_t < -1e-12)
+              | (v_t > 1 + 1e-12)):
+        raise InputError(
+            f"points must lie on the tooth: 0 <= theta <= {th0:.6g} rad and 0 <= x <= h(theta) mm")
+    u_t = _trajectory(data.corners, data.angle_coef, data.face_fraction(ts), _REF_V, v_t)
+    pts = np.full((xs.size, 3), np.nan)
+    nrm = np.full((xs.size, 3), np.nan)
+    for i in range(xs.size):
+        flank = "convex" if sd[i] > 0 else "concave"
+        u, v = float(u_t[i]), float(v_t[i])
+        for _ in range(_PROJ_ITER):
+            pos, _ = _flank_at(data, u, v, flank)
+            if not np.all(np.isfinite(pos)):
+                break
+            uf, vf = _project_to_mid(data.corners, data.angle_coef, pos[None, :],
+                                     np.array([u]), np.array([v]))
+            du, dv = float(u_t[i] - uf[0]), float(v_t[i] - vf[0])
+            u, v = u + du, v + dv
+            if abs(du) + abs(dv) < 1e-12:
+                break
+        pts[i], nrm[i] = _flank_at(data, u, v, flank)
+    return pts, nrm
+
+
+# ---------------------------------------------------------------------------------------
+# compliance parts of one member
+# ---------------------------------------------------------------------------------------
+def weber_depth(data: ToothModelData, shell_points: ShellPoints) -> np.ndarray:
+    """Distance from the contact to the tooth centreline along the load [mm].
+
+    Parameters
+    ----------
+    data : ToothModelData
+    shell_points : ShellPoints — with normals (:func:`shell_coordinates`)
+
+    Returns
+    -------
+    ndarray (N,) — [mm] h = (t(x, θ)/2) / cos α_m, the depth h of Weber's formula
+        (:func:`contact.compliance.hertz.weber_compliance`)
+
+    Raises
+    ------
+    InputError
+        ``shell_points`` without normals.
+
+    Notes
+    -----
+    Weber (1949) measures h from the contact point to the tooth centreline along
+    the line of action; with the fitted thickness t of seed Eq. 3.1 and the load
+    angle α_m of :func:`contact.compliance.base.load_angle_from_normals`.
+    """
+    if shell_points.normal is None:
+        raise InputError("shell_points must carry the flank normals (give normals)")
+    alpha = load_angle_from_normals(shell_points.normal)
+    t = data.tooth.thickness(shell_points.x, shell_points.theta)
+    return 0.5 * t / np.cos(alpha)
+
+
+def member_foundation(data: ToothModelData, shell_points: ShellPoints) -> np.ndarray:
+    """Sainsot fillet-foundation coupling of loads on one tooth [mm/N].
+
+    Parameters
+    ----------
+    data : ToothModelData
+    shell_points : ShellPoints — with normals, all on ONE tooth
+
+    Returns
+    -------
+    ndarray (N, N) — [mm/N] :func:`contact.compliance.base.foundation_matrix` of
+        the mid-face virtual spur gear, load heights u_f from the contact heights x,
+        the fitted thickness and the load angles of the real flank normals
+
+    Raises
+    ------
+    InputError
+        ``shell_points`` without normals; load angles beyond ±π/2.
+
+    Notes
+    -----
+    Sainsot, Velex & Duverger (2004) (see :mod:`contact.compliance.base`); the
+    virtual gear is described in :func:`shell_tooth_from_case`.
+    """
+    if shell_points.normal is None:
+        raise InputError("shell_points must carry the flank normals (give normals)")
+    alpha = load_angle_from_normals(shell_points.normal)
+    t = data.tooth.thickness(shell_points.x, shell_points.theta)
+    u_f = load_line_height(shell_points.x, t, alpha)
+    return foundation_matrix(data.foundation, u_f, alpha)
+
+
+def _shell_matrix(
+    data: ToothModelData,
+    sp: ShellPoints,
+    ends_sp: ShellPoints | None,
+    theory: str,
+    n_height: int,
+    n_face: int,
+) -> ComplianceMatrix:
+    model = data.shell_model(theory, n_height, n_face)
+    n = sp.x.size
+    if ends_sp is None:
+        pts = np.column_stack([sp.x, sp.theta])
+    else:
+        pts = np.stack([np.column_stack([ends_sp.x[:n], ends_sp.theta[:n]]),
+                        np.column_stack([ends_sp.x[n:], ends_sp.theta[n:]])], axis=1)
+    return compliance_matrix(model, pts, sp.normal)
+
+
+def member_compliance(
+    data: ToothModelData,
+    points,
+    normals,
+    segment_ends=None,
+    theory: str = "seed",
+    n_height: int = N_HEIGHT,
+    n_face: int = N_FACE,
+    *,
+    transform=None,
+) -> np.ndarray:
+    """Bending and shear compliance of loads on one tooth of a member [mm/N].
+
+    Parameters
+    ----------
+    data : ToothModelData
+    points : array_like (N, 3) — [mm] load points (segment midpoints) on the
+        flanks of one tooth, member frame (or pair frame with ``transform``)
+    normals : array_like (N, 3) — [1] outward unit flank normals at the points;
+        each load acts along −n (into the tooth), the deflection is read along −n
+    segment_ends : array_like (N, 2, 3), optional — [mm] end points of straight
+        contact segments (same frame); each load is then spread uniformly along the
+        segment (in shell coordinates), which removes the point-load singularity
+        of Mindlin theory; ends overhanging the blank by up to :data:`END_TOLERANCE`
+        are clipped onto the tooth. Default: point loads at ``points``
+    theory : str — shell kinematics (:data:`contact.compliance.shell.THEORIES`)
+    n_height, n_face : int — [1] Ritz modes, default :data:`N_HEIGHT` × :data:`N_FACE`
+        = 6 × 21 (not the 5 × 9 that suffices for the short benchmark tooth of
+        :mod:`contact.compliance.shell`: see :data:`N_FACE`); the shell model is built
+        once per (data, theory, modes) and reused (:meth:`ToothModelData.shell_model`)
+    transform : array_like (4, 4), optional — member → pair transform
+
+    Returns
+    -------
+    ndarray (N, N) — [mm/N] symmetric (Maxwell–Betti), C_ij = deflection along
+        load i due to a unit load j (seed Eq. 3.11)
+
+    Raises
+    ------
+    InputError
+        As :func:`shell_coordinates` and
+        :func:`contact.compliance.shell.compliance_matrix`.
+    ModelUnavailableError
+        Unknown ``theory``.
+
+    Notes
+    -----
+    Seed Eq. 3.10–3.11 through :func:`contact.compliance.shell.compliance_matrix`,
+    with the real flank normals expressed in the local shell frame
+    (:func:`shell_coordinates`).
+    """
+    sp = shell_coordinates(data, points, normals, transform=transform)
+    ends_sp = None
+    if segment_ends is not None:
+        ends = np.asarray(segment_ends, dtype=float)
+        if ends.shape != (sp.x.size, 2, 3):
+            raise InputError(f"segment_ends must have shape ({sp.x.size}, 2, 3) [got "
+                             f"{ends.shape}]")
+        ends_sp = shell_coordinates(data, np.concatenate([ends[:, 0], ends[:, 1]]),
+                                    transform=transform, tolerance=END_TOLERANCE)
+    return _shell_matrix(data, sp, ends_sp, theory, n_height, n_face).matrix
