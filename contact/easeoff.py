@@ -1,0 +1,989 @@
+"""Surface of action, surface of roll angle (Q) and ease-off (seed §2.3.2.1, §4.2).
+
+The seed replaces the five-equation contact search of the conventional TCA (Eq. 2.14) by
+two surfaces on the gear projection plane (the gear's axial section: axial position z ×
+radius ρ):
+
+* **Roll angle.** Every point of the real pinion flank, with its unit normal, is turned
+  about the pinion axis until it satisfies the conjugacy condition of the two axes
+  (seed Eq. 2.19 / 4.1): there it lies on the *surface of action* and is a contact point
+  of the pinion with its own conjugate gear. The pinion rotation needed is the point's
+  roll angle; plotted on the gear projection plane it is the surface Q, shifted so that
+  its smallest value is zero (Eq. 4.2 text).
+* **Ease-off.** The action-surface points turned back about the gear axis by the gear's
+  kinematic rotation form the conjugate of the pinion in the gear frame (Eq. 2.20, 4.2a).
+  The ease-off is the distance from the real gear flank to this conjugate, after the
+  conjugate is turned about the gear axis until it touches the real gear at one point
+  (seed §4.2): as an angle about the gear axis (directly a transmission error) and as a
+  distance along the gear normal.
+
+Conjugacy condition (our reading of Eq. 2.19)
+----------------------------------------------
+In the pair frame of :mod:`geometry.assembly` the members turn with opposite signs,
+φ_g = −φ_p / R with R = z_g / z_p. The relative velocity of the pinion with respect to the
+gear at a point r per unit pinion rotation is
+v₁₂ = a_p × (r − O_p) + (1/R) a_g × (r − O_g), and the equation of meshing n·v₁₂ = 0
+(Litvin & Fuentes 2004, §6.1, crossed axes) reads
+
+    R · a_p·((r − O_p) × n) + a_g·((r − O_g) × n) = 0.
+
+The extracted seed prints R (a_p·r×n) = (a_g·r×n): the same relation with both position
+vectors taken from the respective crossing points and the gear rotation counted in the
+opposite sense. The first term is invariant under rotation about the pinion axis; the
+second is A + B cos φ + C sin φ (Rodrigues' formula), so the roll angle of every point is
+found **in closed form**: φ = α ± arccos(−(R c₁ + A)/√(B² + C²)), α = atan2(C, B). The
+sign of the arccos selects the branch on which ∂(n·v₁₂)/∂φ has one sign; the branch whose
+action points lie nearest to the gear flank is the mesh zone (the other one is half a turn
+away).
+
+Gear projection-plane grid (instead of resampling)
+--------------------------------------------------
+The real gear flank is generated on its projection-plane grid
+(:func:`geometry.flank.flank_surface`). Rather than resampling scattered conjugate points
+onto that grid, for every gear node the pinion point whose action-surface image has the
+node's (z, ρ) is found by Newton's method: a bicubic spline of the forward map (pinion
+projection plane → gear projection plane, on an extended 41 × 21 pinion grid, built on the
+pinion blade's main section) gives the start and the first Jacobian; each iteration then
+evaluates the real pinion exactly (:func:`geometry.meshing.solve_envelope`) and maps it
+exactly, with Broyden updates of the Jacobian and, for the nodes left after four
+iterations, finite-difference Jacobians of the exact map (the map is strongly stretched
+next to the pinion's fillet junction). Nodes are placed to |Δz|, |Δρ| < 1e-7 mm and the
+conjugate's polar angle is carried the remaining distance with the gear surface's slope,
+so the residual placement enters at second order: the ease-off and Q are **exact at the
+nodes** (no interpolation error; the conjugate examples give |ε| < 1e-5 µrad). Nodes with
+no mate (beyond a fold of the map, where the pinion's flank meets its fillet) are masked
+as ``no_conjugate_mate``; nodes whose mate lies beyond the pinion blank are computed but
+masked as ``outside_pinion_blank`` (contact impossible there).
+
+Signs
+-----
+* ``drive_sense`` s_p = sign(a_p·((r − O_p) × n_p)): the sign of the pinion rotation that
+  drives (moves its flank along its outward normal). Q grows in the driving direction:
+  pinion rotation φ_p = ``roll_zero`` + s_p Q.
+* ``lag_sense`` s_g = sign(n_g·e_θ): a gear rotation s_g δ moves the gear flank towards the
+  pinion, i.e. makes the gear **lag** by δ. The angular ease-off ε = s_g (θ_conjugate −
+  θ_real) ≥ 0 is the lag the gear needs for its real flank to reach the conjugate point —
+  the transmission-error convention of the seed's Fig. 2.9 (gear lag behind the ideal
+  kinematic position, ≥ 0). The ideal kinematic gear rotation is
+  ψ = ``gear_phase`` − φ_p / R, with ``gear_phase`` fixed so that min ε = 0.
+* The normal ease-off is the distance from the real gear surface to the touching conjugate
+  point along the gear normal, (c − r_g)·n_g = ρ[sin(s_g ε)(e_θ·n_g) + (cos ε − 1)(e_ρ·n_g)]
+  ≥ 0 (chord of the rotation; its distance to the curved surface differs by ½κ d_t² with
+  d_t the chord's tangential part: below 0.05 µm for ease-off up to 100 µm).
+
+Second-order data
+-----------------
+``gap_curvature`` K (per node): the pinion turned away from its contact roll by t is
+separated from its conjugate at the node by ½ K t² (angle about the gear axis), from the
+relative velocity and acceleration of the members and the pinion's normal curvature along
+the relative velocity (:func:`_gap_curvature`). :mod:`contact.utca` uses it to correct the
+seed's first-order UTE.
+
+Public functions
+----------------
+FLANK_ROLES            flank role name → pinion flank of a case (drive, coast)
+MATING_FLANK           pinion flank → the gear flank it meshes with
+MeshKinematics         axes, crossing points, ratio and placements of the two members
+mesh_kinematics        build them for a case (with misalignments, optional phases)
+action_roll_angle      closed-form roll angle of pinion points (Eq. 2.19)
+action_surface         roll angle, action-surface points and normals in the pair frame
+conjugate_points       conjugate-gear points in the gear frame (Eq. 2.20)
+roll_angle_surface     roll angle of every grid point of the real pinion flank
+EaseOff                ease-off and Q on the gear projection-plane grid
+ease_off               build it for a case (Eq. 2.19–2.20, 4.1–4.2)
+easeoff_dataset        the ``/easeoff`` xarray Dataset
+
+References
+----------
+M. Kolivand, PhD dissertation, Ohio State University, 2009 (the seed), §2.3.2, §4.2.
+F. L. Litvin, A. Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §6.1.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, NamedTuple
+
+import numpy as np
+import xarray as xr
+from scipy.interpolate import RectBivariateSpline
+
+from geometry._version import __version__
+from geometry.assembly import Misalignment, case_transforms
+from geometry.curvature import normal_curvature, surface_curvatures
+from geometry.cutter import profile_sections
+from geometry.errors import InputError
+from geometry.flank import DEFAULT_GRID, blank_outline, flank_surface
+from geometry.meshing import solve_envelope
+
+if TYPE_CHECKING:
+    from geometry.case import Case
+
+__all__ = [
+    "EASEOFF_REASONS",
+    "FLANK_ROLES",
+    "MATING_FLANK",
+    "EaseOff",
+    "MeshKinematics",
+    "action_roll_angle",
+    "action_surface",
+    "conjugate_points",
+    "ease_off",
+    "easeoff_dataset",
+    "mesh_kinematics",
+    "roll_angle_surface",
+]
+
+log = logging.getLogger(__name__)
+
+#: pinion flank → the gear flank it meshes with (concave pinion flanks mesh convex gear flanks)
+MATING_FLANK: dict[str, str] = {"concave": "convex", "convex": "concave"}
+
+#: flank role → the pinion flank of a case that plays it
+FLANK_ROLES: dict[str, Callable[[Case], str]] = {
+    "drive": lambda case: case.pair.drive_flank,
+    "coast": lambda case: MATING_FLANK[case.pair.drive_flank],
+}
+
+#: mask reason codes of an ease-off grid node
+EASEOFF_REASONS: dict[int, str] = {
+    0: "valid",
+    1: "gear_not_generated",  # the real gear flank has no point here (geometry mask)
+    2: "no_conjugate_mate",  # no pinion point maps here through the surface of action
+    3: "outside_pinion_blank",  # the mating pinion point lies beyond the pinion's blank
+}
+
+_MAP_TOL = 1e-7  # [mm] node-placement tolerance of the conjugate points
+_MAP_ITER = 10  # exact placement iterations
+_BROYDEN_ITER = 4  # of which with Broyden updates (then finite differences)
+_PINION_U = (-0.15, 1.15)  # extended pinion grid (fractions of face width / depth)
+_PINION_V = (-0.05, 1.2)
+_FORWARD_GRID = (41, 21)  # pinion grid of the forward-map spline (start values only)
+_MIRROR = np.array([1.0, -1.0, 1.0])
+
+
+# --------------------------------------------------------------------------- kinematics
+@dataclass(frozen=True)
+class MeshKinematics:
+    """Axes of the two members in the pair frame (see :mod:`geometry.assembly`).
+
+    Parameters
+    ----------
+    pinion_place, gear_place : ndarray (4, 4)
+        Member → pair transforms at zero rotation (misalignments and phases included).
+    ratio : float — [1]
+        R = z_g / z_p.
+    """
+
+    pinion_place: np.ndarray
+    gear_place: np.ndarray
+    ratio: float
+
+    @property
+    def pinion_axis(self) -> np.ndarray:
+        """Unit pinion axis a_p in the pair frame [1]."""
+        return self.pinion_place[:3, 2]
+
+    @property
+    def pinion_origin(self) -> np.ndarray:
+        """Pinion crossing point O_p in the pair frame [mm]."""
+        return self.pinion_place[:3, 3]
+
+    @property
+    def gear_axis(self) -> np.ndarray:
+        """Unit gear axis a_g in the pair frame [1]."""
+        return self.gear_place[:3, 2]
+
+    @property
+    def gear_origin(self) -> np.ndarray:
+        """Gear crossing point O_g in the pair frame [mm]."""
+        return self.gear_place[:3, 3]
+
+
+def mesh_kinematics(case: Case, misalignment: Misalignment | None = None, *,
+                    pinion_phase: float = 0.0, gear_phase: float = 0.0) -> MeshKinematics:
+    """Axes, crossing points and ratio of a case in the pair frame.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    misalignment : geometry.assembly.Misalignment, optional
+        ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own.
+    pinion_phase, gear_phase : float — [rad]
+        Rigid rotation of each member's teeth about its own axis before assembly (tooth
+        indexing); the ease-off and the shape of Q do not depend on them.
+
+    Returns
+    -------
+    MeshKinematics
+
+    Raises
+    ------
+    InputError
+        For non-finite phases (and as :func:`geometry.assembly.case_transforms`).
+
+    Notes
+    -----
+    Seed Eq. 2.14 (placement with the offset vector OE); frames of
+    :mod:`geometry.assembly`.
+    """
+    for name, val in (("pinion_phase", pinion_phase), ("gear_phase", gear_phase)):
+        if not math.isfinite(val):
+            raise InputError(f"{name}: must be a finite angle [rad], got {val!r}")
+    tp, tg = case_transforms(case, pinion_phase, gear_phase, misalignment)
+    return MeshKinematics(np.array(tp), np.array(tg),
+                          case.gear.blank.teeth / case.pinion.blank.teeth)
+
+
+def _rotate(axis: np.ndarray, angle, v: np.ndarray) -> np.ndarray:
+    """Rodrigues rotation of vectors v (..., 3) about a unit axis by angle (...)."""
+    c = np.cos(angle)[..., None]
+    s = np.sin(angle)[..., None]
+    return v * c + np.cross(axis, v) * s + axis * (v @ axis)[..., None] * (1.0 - c)
+
+
+def _to_pair(kin: MeshKinematics, position, normal):
+    p = np.asarray(position, dtype=float)
+    n = np.asarray(normal, dtype=float)
+    if p.shape != n.shape or p.shape[-1:] != (3,):
+        raise InputError(f"position, normal: must have equal shapes (..., 3), got {p.shape} "
+                         f"and {n.shape}")
+    rot = kin.pinion_place[:3, :3]
+    return p @ rot.T + kin.pinion_origin, n @ rot.T
+
+
+def _meshing_coefficients(kin: MeshKinematics, r0: np.ndarray, n0: np.ndarray):
+    """c₁, A, B, C of R c₁ + A + B cos φ + C sin φ = 0 (module docstring)."""
+    a = kin.pinion_axis
+    ag = kin.gear_axis
+    w0 = r0 - kin.pinion_origin
+    m0 = np.cross(w0, n0)
+    c1 = m0 @ a
+    k = np.cross(ag, kin.pinion_origin - kin.gear_origin)
+    ka, aga = float(k @ a), float(ag @ a)
+    na, ma = n0 @ a, m0 @ a
+    b = (n0 @ k - ka * na) + (m0 @ ag - aga * ma)
+    c = np.cross(a, n0) @ k + np.cross(a, m0) @ ag
+    a0 = ka * na + aga * ma
+    return c1, a0, b, c
+
+
+def action_roll_angle(kin: MeshKinematics, position, normal, *, branch: int | None = None,
+                      reference=None):
+    """Pinion rotation that brings each pinion point onto the surface of action (Eq. 2.19).
+
+    Parameters
+    ----------
+    kin : MeshKinematics
+    position : array_like (..., 3) — [mm]
+        Pinion surface points in the pinion frame (NaN allowed).
+    normal : array_like (..., 3) — [1]
+        Their unit normals (out of the pinion material).
+    branch : {+1, −1}, optional
+        Sign of the arccos root; by default the branch whose action points lie nearest
+        (median distance) to ``reference``.
+    reference : array_like (3,), optional — [mm]
+        A point of the gear flank in the pair frame that marks the mesh zone; required
+        when ``branch`` is not given.
+
+    Returns
+    -------
+    roll : ndarray (...) — [rad]
+        Pinion rotation φ_p about +a_p in (−π, π]; NaN where the point never meets the
+        surface of action.
+    branch : int
+        The branch used.
+
+    Raises
+    ------
+    InputError
+        For mismatched shapes, or neither ``branch`` nor ``reference``.
+
+    Notes
+    -----
+    Seed Eq. 2.19 / 4.1 in the form R a_p·((r − O_p) × n) + a_g·((r − O_g) × n) = 0
+    (module docstring: the opposite rotation senses of the pair frame give the plus sign;
+    Litvin & Fuentes 2004, §6.1), solved in closed form.
+    """
+    r0, n0 = _to_pair(kin, position, normal)
+    c1, a0, b, c = _meshing_coefficients(kin, r0, n0)
+    amp = np.hypot(b, c)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        arg = -(kin.ratio * c1 + a0) / amp
+    ok = np.isfinite(arg) & (np.abs(arg) <= 1.0)
+    beta = np.arccos(np.clip(np.where(ok, arg, 0.0), -1.0, 1.0))
+    alpha = np.arctan2(c, b)
+
+    def roots(sign):
+        phi = np.remainder(alpha + sign * beta + np.pi, 2.0 * np.pi) - np.pi
+        return np.where(ok, phi, np.nan)
+
+    if branch is None:
+        if reference is None:
+            raise InputError("reference: a gear-flank point is needed to pick the mesh zone "
+                             "when branch is not given")
+        ref = np.asarray(reference, dtype=float)
+        dist = {}
+        for sign in (1, -1):
+            phi = roots(sign)
+            ra = kin.pinion_origin + _rotate(kin.pinion_axis, phi, r0 - kin.pinion_origin)
+            d = np.linalg.norm(ra - ref, axis=-1)
+            dist[sign] = np.nanmedian(d) if np.isfinite(d).any() else np.inf
+        branch = 1 if dist[1] <= dist[-1] else -1
+    elif branch not in (1, -1):
+        raise InputError(f"branch: must be +1 or -1, got {branch!r}")
+    return roots(branch), int(branch)
+
+
+def action_surface(kin: MeshKinematics, position, normal, roll):
+    """Action-surface points and normals: pinion points turned by their roll angle.
+
+    Parameters
+    ----------
+    kin : MeshKinematics
+    position, normal : array_like (..., 3) — [mm], [1]
+        Pinion points and unit normals in the pinion frame.
+    roll : array_like (...) — [rad]
+        Pinion rotation of each point (e.g. from :func:`action_roll_angle`).
+
+    Returns
+    -------
+    points, normals : ndarray (..., 3) — [mm], [1]
+        In the pair frame.
+
+    Raises
+    ------
+    InputError
+        For mismatched shapes.
+
+    Notes
+    -----
+    Seed Eq. 2.19: the action surface r_a is the locus of the turned points.
+    """
+    r0, n0 = _to_pair(kin, position, normal)
+    phi = np.asarray(roll, dtype=float)
+    ra = kin.pinion_origin + _rotate(kin.pinion_axis, phi, r0 - kin.pinion_origin)
+    return ra, _rotate(kin.pinion_axis, phi, n0)
+
+
+def conjugate_points(kin: MeshKinematics, position, normal, roll, gear_phase: float = 0.0):
+    """Conjugate-gear points: action points turned back with the gear (Eq. 2.20, 4.2a).
+
+    Parameters
+    ----------
+    kin : MeshKinematics
+    position, normal : array_like (..., 3) — [mm], [1]
+        Pinion points and normals in the pinion frame.
+    roll : array_like (...) — [rad]
+        Their roll angles φ_p.
+    gear_phase : float — [rad]
+        Gear rotation ψ₀ at φ_p = 0; the kinematic gear rotation is ψ = ψ₀ − φ_p / R.
+
+    Returns
+    -------
+    points, normals : ndarray (..., 3) — [mm], [1]
+        In the gear frame (gear at zero rotation).
+    """
+    ra, na = action_surface(kin, position, normal, roll)
+    psi = gear_phase - np.asarray(roll, dtype=float) / kin.ratio
+    ag, og = kin.gear_axis, kin.gear_origin
+    back = _rotate(ag, -psi, ra - og)
+    nb = _rotate(ag, -psi, na)
+    rot = kin.gear_place[:3, :3]
+    return back @ rot, nb @ rot
+
+
+# --------------------------------------------------------------------------- helpers
+def _flank_names(case: Case, flank: str | None) -> tuple[str, str]:
+    if flank is None:
+        flank = "drive"
+    if flank in FLANK_ROLES:
+        pf = FLANK_ROLES[flank](case)
+    elif flank in MATING_FLANK:
+        pf = flank
+    else:
+        raise InputError(f"flank: must be one of {sorted(FLANK_ROLES)} or a pinion flank "
+                         f"{sorted(MATING_FLANK)}, got {flank!r}")
+    return pf, MATING_FLANK[pf]
+
+
+def _bilinear(corners: np.ndarray, u, v):
+    u = np.asarray(u, dtype=float)[..., None]
+    v = np.asarray(v, dtype=float)[..., None]
+    p = ((1 - u) * (1 - v) * corners[0, 0] + u * (1 - v) * corners[1, 0]
+         + (1 - u) * v * corners[0, 1] + u * v * corners[1, 1])
+    return p[..., 0], p[..., 1]
+
+
+def _fractions(corners: np.ndarray, z, rho, iters: int = 8):
+    """Inverse of :func:`_bilinear`: projection-plane fractions (u, v) of points (z, ρ)."""
+    z = np.asarray(z, dtype=float)
+    rho = np.asarray(rho, dtype=float)
+    u = np.full(z.shape, 0.5)
+    v = np.full(z.shape, 0.5)
+    c = corners
+    for _ in range(iters):
+        zz, rr = _bilinear(c, u, v)
+        du = (1 - v)[..., None] * (c[1, 0] - c[0, 0]) + v[..., None] * (c[1, 1] - c[0, 1])
+        dv = (1 - u)[..., None] * (c[0, 1] - c[0, 0]) + u[..., None] * (c[1, 1] - c[1, 0])
+        det = du[..., 0] * dv[..., 1] - du[..., 1] * dv[..., 0]
+        ez, er = z - zz, rho - rr
+        u = u + (ez * dv[..., 1] - er * dv[..., 0]) / det
+        v = v + (du[..., 0] * er - du[..., 1] * ez) / det
+    return u, v
+
+
+def _fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
+    """Fill invalid nodes of a 2-D field by linear extrapolation from valid neighbours.
+
+    Used only to give the interpolating splines a smooth field: filled nodes stay masked.
+    """
+    out = np.array(values, dtype=float)
+    have = np.array(valid, dtype=bool)
+    if not have.any():
+        raise InputError("no valid node to fill a field from")
+    while not have.all():
+        acc = np.zeros(out.shape)
+        cnt = np.zeros(out.shape)
+        for axis in (0, 1):
+            for step in (1, -1):
+                a1 = np.roll(out, step, axis)
+                a2 = np.roll(out, 2 * step, axis)
+                h1 = np.roll(have, step, axis)
+                h2 = np.roll(have, 2 * step, axis)
+                # forbid wrap-around
+                edge = [slice(None)] * 2
+                edge[axis] = slice(0, 2) if step == 1 else slice(-2, None)
+                h1 = h1.copy()
+                h2 = h2.copy()
+                h1[tuple(edge)] = False
+                h2[tuple(edge)] = False
+                two = ~have & h1 & h2
+                one = ~have & h1 & ~h2
+                acc[two] += 2 * a1[two] - a2[two]
+                cnt[two] += 1
+                acc[one] += a1[one]
+                cnt[one] += 1
+        new = ~have & (cnt > 0)
+        if not new.any():
+            break
+        out[new] = acc[new] / cnt[new]
+        have = have | new
+    return out
+
+
+class _Mates(NamedTuple):
+    """Pinion points at projection-plane places and their images through the action surface."""
+
+    z: np.ndarray  # [mm] pinion projection-plane place
+    rho: np.ndarray
+    position: np.ndarray  # pinion frame
+    normal: np.ndarray
+    roll: np.ndarray  # [rad] action roll angle φ_a
+    good: np.ndarray  # generated and on the surface of action
+    conjugate: np.ndarray  # conjugate-gear point (gear frame, ψ₀ = 0)
+    image: np.ndarray  # (..., 2) its (z, ρ) on the gear projection plane
+    kappa1: np.ndarray  # [1/mm] pinion principal curvatures and direction (pinion frame)
+    kappa2: np.ndarray
+    dir1: np.ndarray
+    section: np.ndarray  # blade section that generates the pinion point
+
+
+def _pinion_points(case: Case, flank: str, z, rho):
+    """Real pinion surface at projection-plane places: position, normal, reason, curvatures."""
+    mem = case.pinion
+    tool = mem.flank(flank)
+    bl = mem.blank
+    sol = solve_envelope(tool.blade, tool.machine, z, rho, length_scale=bl.outer_cone_distance,
+                         depth=bl.outer_addendum + bl.outer_dedendum)
+    mirror = _MIRROR if mem.hand == "left" else np.ones(3)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        pc = surface_curvatures(sol.family, tool.machine.process == "Generate",
+                                bl.outer_cone_distance)
+    return (sol.position * mirror, sol.normal * mirror, sol.reason, pc.kappa1, pc.kappa2,
+            pc.dir1 * mirror, sol.section)
+
+
+def _mates(case: Case, flank: str, kin: MeshKinematics, corners, u, v, *, branch=None,
+           reference=None) -> tuple[_Mates, int]:
+    """Evaluate the real pinion at fractions (u, v) and map it through the action surface."""
+    z, rho = _bilinear(corners, u, v)
+    pos, nrm, reason, k1, k2, e1, sec = _pinion_points(case, flank, z, rho)
+    roll, branch = action_roll_angle(kin, pos, nrm, branch=branch, reference=reference)
+    good = (reason == 0) & np.isfinite(roll)
+    conj, _ = conjugate_points(kin, pos, nrm, np.where(good, roll, 0.0))
+    img = np.stack([conj[..., 2], np.hypot(conj[..., 0], conj[..., 1])], -1)
+    return _Mates(z, rho, pos, nrm, roll, good, conj, img, k1, k2, e1, sec), branch
+
+
+def roll_angle_surface(case: Case, *, flank: str | None = None,
+                       misalignment: Misalignment | None = None, nu: int = 41, nv: int = 21,
+                       u_limits=(0.0, 1.0), v_limits=(0.0, 1.0)):
+    """Roll angle of every grid point of the real pinion flank (seed Eq. 2.19, 4.1).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str, optional
+        ``"drive"`` (default), ``"coast"``, or the pinion flank ``"concave"``/``"convex"``.
+    misalignment : geometry.assembly.Misalignment, optional
+        Defaults to the case's own.
+    nu, nv, u_limits, v_limits
+        Pinion projection-plane grid (see :func:`geometry.flank.projection_grid`).
+
+    Returns
+    -------
+    surface : geometry.flank.FlankSurface
+        The pinion flank.
+    roll : ndarray (nu, nv) — [rad]
+        Absolute pinion rotation φ_p at which each point lies on the surface of action
+        (NaN where it never does or the point is not generated).
+    action_points : ndarray (nu, nv, 3) — [mm]
+        The points on the surface of action, in the pair frame.
+
+    Raises
+    ------
+    InputError
+        For a bad flank name or grid (and as :func:`geometry.flank.flank_surface`).
+    """
+    pf, _ = _flank_names(case, flank)
+    kin = mesh_kinematics(case, misalignment)
+    ps = flank_surface(case, "pinion", pf, nu=nu, nv=nv, u_limits=u_limits, v_limits=v_limits)
+    roll, _ = action_roll_angle(kin, ps.position, ps.normal, reference=_gear_reference(case, kin))
+    ra, _ = action_surface(kin, ps.position, ps.normal, np.nan_to_num(roll))
+    ra[~np.isfinite(roll)] = np.nan
+    return ps, roll, ra
+
+
+def _gap_curvature(kin: MeshKinematics, position, normal, roll, kappa1, kappa2, dir1):
+    """K_n: normal gap between the pinion at roll φ_a + t and its conjugate ≈ ½ K_n t² [mm].
+
+    At the contact configuration (pinion turned by its roll angle φ_a) a point X fixed to
+    the gear moves relative to the pinion with velocity y' = X' − ω_p × (X − O_p) and
+    acceleration y'' = X'' − 2 ω_p × X' + ω_p × (ω_p × (X − O_p)) per unit pinion rotation
+    (ω_p = a_p, ω_g = −a_g/R, X' = ω_g × (X − O_g), X'' = ω_g × X'); y'·n = 0 is the
+    equation of meshing, so its distance from the pinion surface grows as
+    ½ (n·y'' + κ_p(y') |y'|²) t² (κ_p: the pinion's normal curvature along y', convex
+    positive; Euler's formula).
+    """
+    ra, na = action_surface(kin, position, normal, roll)
+    r0 = kin.pinion_place[:3, :3]
+    e1 = _rotate(kin.pinion_axis, roll, np.asarray(dir1) @ r0.T)
+    wp = kin.pinion_axis
+    wg = -kin.gear_axis / kin.ratio
+    xd = np.cross(wg, ra - kin.gear_origin)
+    xdd = np.cross(wg, xd)
+    w = ra - kin.pinion_origin
+    y1 = xd - np.cross(wp, w)
+    y2 = xdd - 2.0 * np.cross(wp, xd) + np.cross(wp, np.cross(wp, w))
+    speed2 = np.einsum("...i,...i", y1, y1)
+    kap = normal_curvature(kappa1, kappa2, e1, y1 + 1e-300)
+    return np.einsum("...i,...i", na, y2) + kap * speed2
+
+
+def _gear_reference(case: Case, kin: MeshKinematics) -> np.ndarray:
+    """The gear's mean pitch point turned into the mesh zone (+x side) in the pair frame."""
+    z, rho = blank_outline(case.gear.blank).mean_point
+    return kin.gear_place[:3, :3] @ np.array([rho, 0.0, z]) + kin.gear_origin
+
+
+# --------------------------------------------------------------------------- ease-off
+class EaseOff(NamedTuple):
+    """Ease-off and roll-angle surface on the gear projection-plane grid (nu, nv).
+
+    Angles in rad, lengths in mm; invalid nodes hold NaN in ``ease_off``, ``ease_off_angle``
+    and ``roll_angle`` (the ``raw_*`` fields keep the computed values wherever a conjugate
+    mate exists, for interpolation).
+    """
+
+    pinion_flank: str
+    gear_flank: str
+    u: np.ndarray  # (nu,) gear lengthwise fraction
+    v: np.ndarray  # (nv,) gear profile fraction
+    axial: np.ndarray  # (nu, nv) [mm] gear projection plane z
+    radius: np.ndarray  # (nu, nv) [mm] gear projection plane ρ
+    ease_off: np.ndarray  # [mm] along the gear normal, ≥ 0
+    ease_off_angle: np.ndarray  # [rad] gear lag, ≥ 0
+    roll_angle: np.ndarray  # [rad] Q, drive sense, ≥ 0
+    raw_ease_off_angle: np.ndarray  # [rad] as ease_off_angle where a mate exists
+    raw_roll_angle: np.ndarray  # [rad]
+    normal_arm: np.ndarray  # [mm] d(normal ease-off)/d(angle) = ρ |n·e_θ|
+    gap_curvature: np.ndarray  # [1/rad] K: pinion's angular gap at roll Q + t ≈ ½ K t²
+    gear_position: np.ndarray  # (nu, nv, 3) [mm] real gear flank, gear frame
+    gear_normal: np.ndarray  # (nu, nv, 3) [1]
+    pinion_axial: np.ndarray  # [mm] projection-plane place of the mating pinion point
+    pinion_radius: np.ndarray  # [mm]
+    pinion_u: np.ndarray  # [1] its fractions on the pinion blank (inside: 0..1)
+    pinion_v: np.ndarray  # [1]
+    placement_error: np.ndarray  # [mm] max |Δz|, |Δρ| of the conjugate point at the node
+    smooth: np.ndarray  # bool: computed, and both points on their blades' main sections
+    reason: np.ndarray  # int8, EASEOFF_REASONS
+    drive_sense: int  # s_p
+    lag_sense: int  # s_g
+    roll_zero: float  # [rad] pinion rotation at Q = 0 (on top of the pinion phase)
+    gear_phase: float  # [rad] gear rotation ψ₀ at pinion rotation 0 (ε min = 0; on top of
+    #                    the gear phase)
+    ratio: float  # z_g / z_p
+    pitch: float  # [rad] pinion angular pitch 2π/z_p = one mesh cycle of roll
+    kinematics: MeshKinematics
+
+    @property
+    def valid(self) -> np.ndarray:
+        """Nodes where the pinion can touch the real gear (reason 0)."""
+        return self.reason == 0
+
+    @property
+    def margin(self) -> np.ndarray:
+        """Signed distance (in blank fractions) of the mating pinion point inside its blank."""
+        return np.minimum(np.minimum(self.pinion_u, 1.0 - self.pinion_u),
+                          np.minimum(self.pinion_v, 1.0 - self.pinion_v))
+
+
+def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
+                    zt: np.ndarray, rt: np.ndarray, nu: int, nv: int):
+    """Pinion mates of the gear nodes (module docstring, "Gear projection-plane grid").
+
+    Returns (u_p, v_p, mates, err, pinned): the pinion fractions, the evaluated mates, the
+    placement error [mm] (inf where no mate) and the nodes whose Newton iterate ran to the
+    edge of the extended pinion grid (their mate lies beyond the pinion blank).
+    """
+    cp = blank_outline(case.pinion.blank).corners
+    up = np.linspace(*_PINION_U, _FORWARD_GRID[0])
+    vp = np.linspace(*_PINION_V, _FORWARD_GRID[1])
+    uu, vv = np.meshgrid(up, vp, indexing="ij")
+    fwd, branch = _mates(case, pf, kin, cp, uu, vv, reference=ref)
+    ok = fwd.good
+    if ok.sum() < 16:
+        raise InputError(
+            f"case: the {pf} pinion flank has no points on the surface of action of these "
+            "axes (check the misalignment and the machine settings)")
+    # the spline of the forward map is built on the main (profile) blade section only and
+    # continued linearly beyond it: the kink at a section junction (e.g. the fillet) would
+    # make a cubic spline ring over the whole flank
+    main = profile_sections(case.pinion.flank(pf).blade).main
+    smooth = ok & (fwd.section == main)
+    if smooth.sum() < 16:
+        smooth = ok
+    sz = RectBivariateSpline(up, vp, _fill_missing(fwd.image[..., 0], smooth))
+    sr = RectBivariateSpline(up, vp, _fill_missing(fwd.image[..., 1], smooth))
+    target = np.stack([zt, rt], -1)
+
+    def step(j, u, v, e, limit=0.1):
+        det = j[..., 0, 0] * j[..., 1, 1] - j[..., 0, 1] * j[..., 1, 0]
+        safe = np.abs(det) > 1e-12
+        det = np.where(safe, det, 1.0)
+        du = np.where(safe, (j[..., 1, 1] * e[..., 0] - j[..., 0, 1] * e[..., 1]) / det, 0.0)
+        dv = np.where(safe, (j[..., 0, 0] * e[..., 1] - j[..., 1, 0] * e[..., 0]) / det, 0.0)
+        scale = np.maximum(1.0, np.maximum(np.abs(du), np.abs(dv)) / limit)
+        return (np.clip(u + du / scale, up[0], up[-1]), np.clip(v + dv / scale, vp[0], vp[-1]))
+
+    def jac(u, v):
+        return np.stack([np.stack([sz.ev(u, v, dx=1), sz.ev(u, v, dy=1)], -1),
+                         np.stack([sr.ev(u, v, dx=1), sr.ev(u, v, dy=1)], -1)], -2)
+
+    def placement(m):
+        e = np.where(m.good[..., None], target - m.image, 0.0)
+        return e, np.where(m.good, np.abs(e).max(axis=-1), np.inf)
+
+    # start: nearest forward node, then Newton on the spline of the forward map
+    d2 = ((zt.reshape(-1, 1) - fwd.image[..., 0][ok].reshape(1, -1)) ** 2
+          + (rt.reshape(-1, 1) - fwd.image[..., 1][ok].reshape(1, -1)) ** 2)
+    k = np.argmin(d2, axis=1)
+    u = uu[ok][k].reshape(zt.shape)
+    v = vv[ok][k].reshape(zt.shape)
+    for _ in range(10):
+        spl = np.stack([sz.ev(u, v), sr.ev(u, v)], -1)
+        u, v = step(jac(u, v), u, v, target - spl)
+    # exact iterations: the real pinion at the current place, mapped exactly; first on the
+    # whole grid, then only on the nodes not yet placed, with Broyden updates of the spline
+    # Jacobian (the forward map is strongly stretched near the pinion's fillet junction)
+    shape = zt.shape
+    n = zt.size
+    m0, _ = _mates(case, pf, kin, cp, u, v, branch=branch)
+    store = [np.array(a).reshape(n, *np.shape(a)[len(shape):]) for a in m0]
+    uf, vf = u.ravel().copy(), v.ravel().copy()
+    tgt = target.reshape(n, 2)
+    jf = jac(uf, vf)
+
+    def place(idx, mm):
+        for full, part in zip(store, mm, strict=True):
+            full[idx] = part
+        ok_ = np.asarray(mm.good)
+        return np.where(ok_, np.abs(tgt[idx] - mm.image).max(axis=-1), np.inf)
+
+    err = place(np.arange(n), _Mates(*store))
+    h = 1e-6
+    for it in range(_MAP_ITER):
+        idx = np.flatnonzero(np.isfinite(err) & (err >= _MAP_TOL))
+        if idx.size == 0:
+            break
+        k = idx.size
+        e = tgt[idx] - store[7][idx]
+        u0, v0, img0 = uf[idx], vf[idx], store[7][idx]
+        late = it >= _BROYDEN_ITER
+        un, vn = step(jf[idx], u0, v0, e, limit=0.02 if late else 0.1)
+        if late or it == _BROYDEN_ITER - 1:
+            # the rest sit where the map is strongly stretched (near the pinion's fillet
+            # junction): evaluate the finite-difference stencil with the new point
+            mj, _ = _mates(case, pf, kin, cp, np.r_[un, un + h, un], np.r_[vn, vn, vn + h],
+                           branch=branch)
+            parts = [_Mates(*(np.asarray(a)[i * k:(i + 1) * k] for a in mj)) for i in range(3)]
+            mm = parts[0]
+            ok3 = parts[0].good & parts[1].good & parts[2].good
+            jnew = np.stack([(parts[1].image - mm.image) / h, (parts[2].image - mm.image) / h],
+                            -1)
+        else:
+            mm, _ = _mates(case, pf, kin, cp, un, vn, branch=branch)
+            ok3 = np.zeros(k, dtype=bool)
+            jnew = jf[idx]
+        # Broyden update of the per-node Jacobian with the secant of this step
+        dx = np.stack([un - u0, vn - v0], -1)
+        dy = np.where(mm.good[:, None], mm.image - img0, 0.0)
+        nx = np.einsum("...i,...i", dx, dx)
+        upd = mm.good & (nx > 1e-24)
+        corr = (dy - np.einsum("...ij,...j->...i", jf[idx], dx)) / np.where(upd, nx, 1.0)[
+            :, None]
+        jb = np.where(upd[:, None, None], jf[idx] + corr[:, :, None] * dx[:, None, :], jf[idx])
+        better = mm.good & (np.abs(tgt[idx] - mm.image).max(axis=-1) < err[idx])
+        # accepted steps take the finite-difference Jacobian at their new place if there is
+        # one; the others keep their place and retry with the secant-updated Jacobian
+        jf[idx] = np.where((better & ok3)[:, None, None], jnew, jb)
+        keep = idx[better]
+        err[keep] = place(keep, _Mates(*(np.asarray(a)[better] for a in mm)))
+        uf[keep], vf[keep] = un[better], vn[better]
+        err[idx[~mm.good]] = np.inf  # left the generated surface: dropped
+        log.debug("map iteration: %d of %d nodes placed", int((err < _MAP_TOL).sum()), n)
+    m = _Mates(*(a.reshape(shape + a.shape[1:]) for a in store))
+    u, v = uf.reshape(shape), vf.reshape(shape)
+    err = err.reshape(shape)
+    pinned = (np.isclose(u, up[0]) | np.isclose(u, up[-1]) | np.isclose(v, vp[0])
+              | np.isclose(v, vp[-1]))
+    return u, v, m, err, pinned
+
+
+def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment | None = None,
+             grid: dict | None = None, pinion_phase: float = 0.0,
+             gear_phase: float = 0.0) -> EaseOff:
+    """Ease-off topography and surface of roll angle on the gear projection plane.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str, optional
+        ``"drive"`` (default: the case's ``pair.drive_flank``), ``"coast"``, or the pinion
+        flank ``"concave"``/``"convex"``; the gear flank is the mating one.
+    misalignment : geometry.assembly.Misalignment, optional
+        ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own ``[misalignment]``.
+    grid : dict, optional
+        Gear grid ``nu``, ``nv``, ``u_limits``, ``v_limits`` (default
+        :data:`geometry.flank.DEFAULT_GRID`: 41 × 21).
+    pinion_phase, gear_phase : float — [rad]
+        Rigid rotation of each member about its axis before assembly (indexing); only
+        ``roll_zero`` and ``gear_phase`` of the result change.
+
+    Returns
+    -------
+    EaseOff
+        ε ≥ 0 [rad] (gear lag), normal ease-off ≥ 0 [mm], Q ≥ 0 [rad] on the (nu, nv) gear
+        grid, all shifted to touch zero over the valid nodes; see the module docstring for
+        signs.
+
+    Raises
+    ------
+    InputError
+        For a bad flank name or grid, if the pinion never meets the surface of action, or
+        no gear node can be touched by the pinion.
+    geometry.errors.ModelUnavailableError
+        For face hobbing (as :func:`geometry.flank.flank_surface`).
+
+    Notes
+    -----
+    Seed Eq. 2.19–2.20 and 4.1–4.2: action surface (closed form, module docstring),
+    conjugate gear (Eq. 4.2a: rotation about the gear axis by −φ_p/R), ease-off = real
+    gear − conjugate, shifted by a rigid rotation of the conjugate so that one node touches
+    (§4.2). The seed's "radial distance" between grid points is read as the distance along
+    the gear normal; the angular ease-off is exact (both points share (z, ρ)).
+    """
+    pf, gf = _flank_names(case, flank)
+    g = dict(DEFAULT_GRID)
+    if grid:
+        unknown = sorted(set(grid) - set(g))
+        if unknown:
+            raise InputError(f"grid: unknown keys {unknown}; accepted {sorted(g)}")
+        g.update(grid)
+    kin = mesh_kinematics(case, misalignment, pinion_phase=pinion_phase, gear_phase=gear_phase)
+    gs = flank_surface(case, "gear", gf, **g)
+    zt, rt = gs.grid.axial, gs.grid.radius
+    ref = _gear_reference(case, kin)
+    u_p, v_p, mt, err, pinned = _map_gear_nodes(case, pf, kin, ref, zt, rt,
+                                                len(gs.grid.u), len(gs.grid.v))
+    zq, rq, ppos, pnrm, roll, conj = mt.z, mt.rho, mt.position, mt.normal, mt.roll, mt.conjugate
+    kn = _gap_curvature(kin, ppos, pnrm, np.where(mt.good, roll, 0.0), mt.kappa1, mt.kappa2,
+                        mt.dir1)
+
+    mate = np.isfinite(err) & (err < _MAP_TOL)
+    reason = np.zeros(zt.shape, dtype=np.int8)
+    reason[~mate] = 2
+    reason[~mate & pinned] = 3  # Newton ran to the edge of the extended pinion grid
+    reason[~gs.valid] = 1
+    inside = (u_p >= 0) & (u_p <= 1) & (v_p >= 0) & (v_p <= 1)
+    reason[(reason == 0) & ~inside] = 3
+    if not np.any(reason == 0):
+        raise InputError("case: no gear grid node can be touched by the pinion (the blanks do "
+                         "not overlap on the surface of action; check the misalignment)")
+    n_bad = {EASEOFF_REASONS[c]: int((reason == c).sum()) for c in (1, 2, 3)}
+    log.info("ease_off: %d of %d gear nodes valid (%s)", int((reason == 0).sum()), reason.size,
+             ", ".join(f"{k}: {v}" for k, v in n_bad.items() if v))
+
+    # senses
+    r0, n0 = _to_pair(kin, ppos[mate], pnrm[mate])
+    c1, *_ = _meshing_coefficients(kin, r0, n0)
+    drive = 1 if np.median(c1) > 0 else -1
+    pg, ng = gs.position, gs.normal
+    rho = np.hypot(pg[..., 0], pg[..., 1])
+    e_t = np.stack([-pg[..., 1], pg[..., 0], np.zeros_like(rho)], -1) / rho[..., None]
+    e_r = np.stack([pg[..., 0], pg[..., 1], np.zeros_like(rho)], -1) / rho[..., None]
+    nt = np.einsum("...i,...i", ng, e_t)
+    nr = np.einsum("...i,...i", ng, e_r)
+    lag = 1 if np.nanmedian(nt[reason == 0]) > 0 else -1
+
+    # angular ease-off: lag the real gear needs to reach the conjugate point at (z, ρ);
+    # the conjugate's polar angle is carried from its place to the node with the slope of
+    # the (tangent) gear surface, dθ = −(n_z dz + n_ρ dρ)/(ρ n_θ): the residual placement
+    # (< 1e-7 mm) then enters only at second order
+    nz = ng[..., 2]
+    dz = zt - conj[..., 2]
+    drho = rt - np.hypot(conj[..., 0], conj[..., 1])
+    theta_c = np.arctan2(conj[..., 1], conj[..., 0]) - (nz * dz + nr * drho) / (rho * nt)
+    theta_r = np.arctan2(pg[..., 1], pg[..., 0])
+    diff = np.where(mate & gs.valid, lag * (theta_c - theta_r), np.nan)
+    ref_diff = np.nanmedian(diff[reason == 0])
+    diff = ref_diff + np.remainder(diff - ref_diff + np.pi, 2 * np.pi) - np.pi
+    shift = np.nanmin(diff[reason == 0])
+    eps_raw = diff - shift  # ε ≥ 0 on valid nodes
+    # the real gear turned by s_g·shift touches the conjugate (built with ψ₀ = 0) at one node
+    psi0 = float(lag * shift)
+    q_raw = np.where(mate, drive * roll, np.nan)
+    q_min = np.nanmin(q_raw[reason == 0])
+    roll_zero = float(drive * q_min)
+    q_raw = q_raw - q_min
+    arm = rho * np.abs(nt)
+    eps_s = lag * eps_raw
+    normal_raw = rho * (np.sin(eps_s) * nt + (np.cos(eps_s) - 1.0) * nr)
+    valid = reason == 0
+    gear_main = profile_sections(case.gear.flank(gf).blade).main
+    pinion_main = profile_sections(case.pinion.flank(pf).blade).main
+    smooth = mate & gs.valid & (gs.section == gear_main) & (mt.section == pinion_main)
+    return EaseOff(
+        pinion_flank=pf, gear_flank=gf, u=gs.grid.u, v=gs.grid.v, axial=zt, radius=rt,
+        ease_off=np.where(valid, normal_raw, np.nan),
+        ease_off_angle=np.where(valid, eps_raw, np.nan),
+        roll_angle=np.where(valid, q_raw, np.nan),
+        raw_ease_off_angle=eps_raw, raw_roll_angle=q_raw, normal_arm=arm,
+        gap_curvature=np.where(mate & gs.valid, kn / arm, np.nan),
+        gear_position=pg, gear_normal=ng, pinion_axial=zq, pinion_radius=rq,
+        pinion_u=np.where(mate, u_p, np.nan), pinion_v=np.where(mate, v_p, np.nan),
+        placement_error=np.where(mate, err, np.nan), smooth=smooth, reason=reason,
+        drive_sense=drive,
+        lag_sense=lag, roll_zero=roll_zero, gear_phase=psi0,
+        ratio=kin.ratio, pitch=2.0 * math.pi / case.pinion.blank.teeth, kinematics=kin)
+
+
+def _var(dims, data, units, long_name, **attrs):
+    return (dims, data, {"units": units, "long_name": long_name, **attrs})
+
+
+def easeoff_dataset(eo: EaseOff, case: Case, *,
+                    misalignment: Misalignment | None = None) -> xr.Dataset:
+    """The ``/easeoff`` Dataset (dims ``u``, ``v``, ``xyz``) with units and long names.
+
+    Parameters
+    ----------
+    eo : EaseOff
+        From :func:`ease_off`.
+    case : geometry.case.Case
+    misalignment : geometry.assembly.Misalignment, optional
+        The misalignment used (recorded in the attributes); defaults to the case's.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``ease_off`` [um] along the gear normal, ``ease_off_angle`` [urad] (gear lag),
+        ``roll_angle`` [rad] (Q), ``axial_position``/``radial_position`` [mm] (gear
+        projection plane), ``mask`` and ``mask_reason``, the mating pinion point's
+        projection-plane place, the real gear flank (``gear_position``, ``gear_normal``)
+        ``normal_arm`` [mm] and ``gap_curvature`` [1/rad]; attributes with the senses,
+        phases and inputs.
+    """
+    mis = case.misalignment if misalignment is None else misalignment
+    uv = ("u", "v")
+    codes = np.array(sorted(EASEOFF_REASONS), dtype=np.int8)
+    data = {
+        "ease_off": _var(uv, eo.ease_off * 1e3, "um",
+                         "ease-off: real gear to touching conjugate of the pinion, along the "
+                         "gear normal (>= 0: gap)"),
+        "ease_off_angle": _var(uv, eo.ease_off_angle * 1e6, "urad",
+                               "ease-off as gear lag about the gear axis (transmission error)"),
+        "roll_angle": _var(uv, eo.roll_angle, "rad",
+                           "surface of roll angle Q: pinion roll (driving sense) at which "
+                           "the node is in contact, shifted to touch zero"),
+        "axial_position": _var(uv, eo.axial, "mm", "gear projection-plane axial position"),
+        "radial_position": _var(uv, eo.radius, "mm", "gear projection-plane radius"),
+        "pinion_axial_position": _var(uv, eo.pinion_axial, "mm",
+                                      "pinion projection-plane axial position of the mate"),
+        "pinion_radial_position": _var(uv, eo.pinion_radius, "mm",
+                                       "pinion projection-plane radius of the mate"),
+        "pinion_u": _var(uv, eo.pinion_u, "1", "pinion lengthwise fraction of the mate"),
+        "pinion_v": _var(uv, eo.pinion_v, "1", "pinion profile fraction of the mate"),
+        "normal_arm": _var(uv, eo.normal_arm, "mm",
+                           "rho |n.e_theta|: normal displacement per radian of gear rotation"),
+        "gap_curvature": _var(uv, eo.gap_curvature, "1/rad",
+                              "K: angular gap of the pinion to its conjugate at roll Q + t is "
+                              "K t^2 / 2"),
+        "gear_position": _var(("u", "v", "xyz"), eo.gear_position, "mm",
+                              "real gear flank point in the gear frame"),
+        "gear_normal": _var(("u", "v", "xyz"), eo.gear_normal, "1",
+                            "real gear flank unit normal (out of the material)"),
+        "placement_error": _var(uv, eo.placement_error, "mm",
+                                "distance of the conjugate point from the node in the "
+                                "projection plane"),
+        "mask": _var(uv, eo.valid.astype(np.int8), "1",
+                     "1 where the pinion can touch the real gear"),
+        "mask_reason": _var(uv, eo.reason.astype(np.int8), "1", "why a node is masked",
+                            flag_values=codes,
+                            flag_meanings=" ".join(EASEOFF_REASONS[int(c)] for c in codes)),
+    }
+    coords = {
+        "u": ("u", eo.u, {"units": "1", "long_name": "gear lengthwise fraction, toe 0 to heel 1"}),
+        "v": ("v", eo.v, {"units": "1", "long_name": "gear profile fraction, root 0 to tip 1"}),
+        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
+    }
+    attrs = {
+        "title": f"{case.name}: ease-off and surface of roll angle",
+        "case": case.name,
+        "pinion_flank": eo.pinion_flank,
+        "gear_flank": eo.gear_flank,
+        "drive_sense": eo.drive_sense,
+        "lag_sense": eo.lag_sense,
+        "roll_zero": eo.roll_zero,
+        "roll_zero_units": "rad",
+        "gear_phase": eo.gear_phase,
+        "gear_phase_units": "rad",
+        "ratio": eo.ratio,
+        "mesh_period": eo.pitch,
+        "mesh_period_units": "rad",
+        "kinematics": "pinion rotation = roll_zero + drive_sense * Q; ideal gear rotation = "
+                      "gear_phase - pinion rotation / ratio (geometry.assembly frames)",
+        "misalignment": json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
+                                    "delta_G_mm": mis.delta_G,
+                                    "delta_Sigma_deg": math.degrees(mis.delta_Sigma)}),
+        "max_placement_error_mm": float(np.nanmax(eo.placement_error[eo.valid])),
+        "toolkit_version": __version__,
+        "source": "contact.easeoff.ease_off (seed Eq. 2.19-2.20, 4.1-4.2)",
+        "inputs": case.to_toml(),
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)

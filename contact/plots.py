@@ -1,0 +1,280 @@
+"""Plots of the unloaded TCA: ease-off topography, contact pattern, transmission error.
+
+matplotlib with the Agg backend (no display needed); every function takes the ``/easeoff``
+and ``/utca`` Datasets of :func:`contact.utca.unloaded_tca` (or read back from netCDF),
+writes one PNG and returns its path. The gear flank is drawn in its projection plane:
+axial position (toe → heel) horizontally, radius (root → tip) vertically, in mm.
+
+Public functions
+----------------
+plot_easeoff             ease-off topography with iso-lines of the roll angle (seed Fig. 2.7)
+plot_contact_pattern     contact lines, pattern, LPP/CPP/RPP and the M1, M2 bounds (Fig. 2.10)
+plot_transmission_error  UTE of adjacent pairs, lower envelope, M1, M2, peak-to-peak (Fig. 2.9)
+plot_utca                all three into a directory
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from geometry.errors import InputError
+
+__all__ = ["plot_contact_pattern", "plot_easeoff", "plot_transmission_error", "plot_utca"]
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _target(path) -> Path:
+    p = Path(path)
+    if not p.parent.exists():
+        raise InputError(f"path: directory {str(p.parent)!r} does not exist")
+    return p
+
+
+def _require(ds: xr.Dataset, names, what: str) -> None:
+    missing = [n for n in names if n not in ds.variables]
+    if missing:
+        raise InputError(f"{what}: dataset lacks {missing} (expected the output of "
+                         "contact.utca.unloaded_tca)")
+
+
+def _outline(ax, easeoff: xr.Dataset) -> None:
+    """Grid boundary of the gear flank and the toe/heel/root/tip labels."""
+    z = easeoff["axial_position"].values
+    r = easeoff["radial_position"].values
+    ring = np.concatenate([np.c_[z[:, 0], r[:, 0]], np.c_[z[-1, :], r[-1, :]],
+                           np.c_[z[::-1, -1], r[::-1, -1]], np.c_[z[0, ::-1], r[0, ::-1]]])
+    ax.plot(ring[:, 0], ring[:, 1], color="0.3", lw=0.8)
+    mid_u, mid_v = z.shape[0] // 2, z.shape[1] // 2
+    style = dict(fontsize=8, color="0.25", ha="center", va="center")
+    ax.annotate("toe", (z[0, mid_v], r[0, mid_v]), xytext=(-14, 0),
+                textcoords="offset points", **style)
+    ax.annotate("heel", (z[-1, mid_v], r[-1, mid_v]), xytext=(16, 0),
+                textcoords="offset points", **style)
+    ax.annotate("root", (z[mid_u, 0], r[mid_u, 0]), xytext=(0, -10),
+                textcoords="offset points", **style)
+    ax.annotate("tip", (z[mid_u, -1], r[mid_u, -1]), xytext=(0, 10),
+                textcoords="offset points", **style)
+    ax.set_xlabel("gear axial position [mm]")
+    ax.set_ylabel("gear radius [mm]")
+    ax.set_aspect("equal")
+
+
+def plot_easeoff(easeoff: xr.Dataset, path: str | os.PathLike[str]) -> Path:
+    """Ease-off topography over the gear flank, with iso-lines of the roll angle Q.
+
+    Parameters
+    ----------
+    easeoff : xarray.Dataset
+        The ``/easeoff`` group (``ease_off`` [um], ``roll_angle`` [rad], positions [mm]).
+    path : path-like
+        PNG to write; its directory must exist.
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    InputError
+        If the directory does not exist or the dataset lacks the variables.
+    """
+    _require(easeoff, ("ease_off", "roll_angle", "axial_position", "radial_position"),
+             "easeoff")
+    plt = _pyplot()
+    target = _target(path)
+    z = easeoff["axial_position"].values
+    r = easeoff["radial_position"].values
+    e = easeoff["ease_off"].values
+    q = easeoff["roll_angle"].values
+    fig, ax = plt.subplots(figsize=(8, 5))
+    levels = np.linspace(0.0, max(float(np.nanmax(e)), 1e-3), 16)
+    cs = ax.contourf(z, r, np.ma.masked_invalid(e), levels=levels, cmap="viridis")
+    fig.colorbar(cs, ax=ax, label="ease-off along the gear normal [µm]")
+    if np.isfinite(q).sum() > 4:
+        qd = np.degrees(q)
+        ql = ax.contour(z, r, np.ma.masked_invalid(qd), levels=10, colors="w",
+                        linewidths=0.6, linestyles="--")
+        ax.clabel(ql, fmt="%.0f°", fontsize=6)
+    _outline(ax, easeoff)
+    name, flank = easeoff.attrs.get("case", ""), easeoff.attrs.get("gear_flank", "")
+    ax.set_title(f"{name}: ease-off (gear {flank} flank) and roll angle Q (dashed)",
+                 fontsize=9)
+    fig.tight_layout()
+    fig.savefig(target, dpi=130)
+    plt.close(fig)
+    return target
+
+
+def plot_contact_pattern(easeoff: xr.Dataset, utca: xr.Dataset,
+                         path: str | os.PathLike[str]) -> Path:
+    """Unloaded contact pattern on the gear flank (seed Fig. 2.10).
+
+    Contact lines (stretches within the separation) of every pair at every roll position
+    are drawn on one flank (all teeth are alike), the active ones solid; the paths
+    LPP/CPP/RPP over the active rolls, and the reference pair's contact curves at the
+    transitions M1 and M2 that bound its pattern.
+
+    Parameters
+    ----------
+    easeoff, utca : xarray.Dataset
+        The ``/easeoff`` and ``/utca`` groups.
+    path : path-like
+        PNG to write.
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    InputError
+        If the directory does not exist or the datasets lack the variables.
+    """
+    _require(utca, ("curve_axial_position", "curve_radial_position", "contact_pattern",
+                    "path_axial_position", "path_radial_position", "active"), "utca")
+    plt = _pyplot()
+    target = _target(path)
+    cz = utca["curve_axial_position"].values
+    cr = utca["curve_radial_position"].values
+    pat = utca["contact_pattern"].values.astype(bool)
+    act = utca["active"].values.astype(bool)
+    pz = utca["path_axial_position"].values
+    pr = utca["path_radial_position"].values
+    pairs = utca["pair"].values
+    fig, ax = plt.subplots(figsize=(8, 5))
+    _outline(ax, easeoff)
+    colours = plt.get_cmap("tab10")
+    for j, k in enumerate(pairs):
+        c = colours(j % 10)
+        for i in range(cz.shape[0]):
+            ax.plot(cz[i, j], cr[i, j], color=c, lw=0.3, alpha=0.35)
+            if pat[i, j].any():
+                seg = np.where(pat[i, j], 1.0, np.nan)
+                ax.plot(cz[i, j] * seg, cr[i, j] * seg, color=c, lw=1.6, alpha=0.8)
+        a = act[:, j]
+        for m, (name, style) in enumerate((("LPP", ":"), ("CPP", "-"), ("RPP", ":"))):
+            x = np.where(a, pz[:, j, m], np.nan)
+            y = np.where(a, pr[:, j, m], np.nan)
+            ax.plot(x, y, color="k", ls=style, lw=1.0,
+                    label=name if j == 0 else None)
+        ax.plot([], [], color=c, lw=1.6, label=f"pair {int(k):+d}")
+    # the reference pair's bounds: its curves at M1 (first roll) and at M2 (pair −1 then)
+    if "transition_roll" in utca and np.isfinite(utca["transition_roll"].values).all():
+        k0 = int(np.flatnonzero(pairs == 0)[0])
+        ax.plot(cz[0, k0], cr[0, k0], color="r", lw=1.2, ls="--", label="M1, M2")
+        if -1 in pairs:
+            km = int(np.flatnonzero(pairs == -1)[0])
+            ax.plot(cz[0, km], cr[0, km], color="r", lw=1.2, ls="--")
+    ax.legend(fontsize=7, loc="upper left", ncol=2)
+    sep = float(utca["separation_threshold"]) if "separation_threshold" in utca else np.nan
+    ax.set_title(f"{utca.attrs.get('case', '')}: unloaded contact pattern "
+                 f"(separation {sep:.1f} µm)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(target, dpi=130)
+    plt.close(fig)
+    return target
+
+
+def plot_transmission_error(utca: xr.Dataset, path: str | os.PathLike[str]) -> Path:
+    """UTE curves of adjacent tooth pairs over three mesh cycles (seed Fig. 2.9).
+
+    Pair k's curve is the reference pair's UTE shifted by k mesh cycles, UTE_k(r) =
+    UTE_0(r − k·pitch); the dataset holds UTE_0 over three cycles (as pairs −1, 0, +1 over
+    one), from which every pair's curve is drawn over the three cycles.
+
+    Parameters
+    ----------
+    utca : xarray.Dataset
+        The ``/utca`` group.
+    path : path-like
+        PNG to write.
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    InputError
+        If the directory does not exist or the dataset lacks the variables.
+    """
+    _require(utca, ("pair_transmission_error", "unloaded_transmission_error"), "utca")
+    plt = _pyplot()
+    target = _target(path)
+    roll = utca["roll"].values
+    te = utca["pair_transmission_error"].values
+    pairs = utca["pair"].values
+    period = float(utca.attrs.get("mesh_period", roll[-1] - roll[0]))
+    start = roll[0]
+    # samples of UTE_0 at arguments r − k p
+    arg = (roll[:, None] - pairs[None, :] * period).ravel()
+    val = te.ravel()
+    order = np.argsort(arg)
+    arg, val = arg[order], val[order]
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for k in pairs:
+        x = (arg + k * period - start) / period
+        ax.plot(x, val, lw=1.0, label=f"pair {int(k):+d}")
+    x_all = np.unique(np.concatenate([arg + k * period for k in pairs]))
+    env = np.full(x_all.shape, np.inf)
+    for k in pairs:
+        y = np.interp(x_all, arg + k * period, val, left=np.nan, right=np.nan)
+        env = np.fmin(env, np.where(np.isfinite(y), y, np.inf))
+    env[~np.isfinite(env)] = np.nan
+    ax.plot((x_all - start) / period, env, color="k", lw=2.2, alpha=0.5, label="lower envelope")
+    if "transition_roll" in utca:
+        m = utca["transition_roll"].values
+        tv = utca["transition_transmission_error"].values
+        for name, mr, mv in zip(("M1", "M2"), m, tv, strict=True):
+            if np.isfinite(mr):
+                x = (mr - start) / period
+                ax.plot([x], [mv], "ro", ms=4)
+                ax.annotate(name, (x, mv), xytext=(0, 6), textcoords="offset points",
+                            ha="center", fontsize=8)
+    p2p = float(utca["peak_to_peak_transmission_error"]) if (
+        "peak_to_peak_transmission_error" in utca) else np.nan
+    lo = np.nanmin(utca["unloaded_transmission_error"].values)
+    ax.set_ylim(lo - 0.3 * max(p2p, 1.0), lo + 2.5 * max(p2p, 1.0))
+    ax.set_xlim(-1.0, 2.0)
+    ax.set_xlabel("mesh cycles from M1")
+    ax.set_ylabel("unloaded transmission error [µrad]")
+    ax.set_title(f"{utca.attrs.get('case', '')}: UTE, peak-to-peak {p2p:.2f} µrad", fontsize=9)
+    ax.legend(fontsize=7)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(target, dpi=130)
+    plt.close(fig)
+    return target
+
+
+def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
+              directory: str | os.PathLike[str]) -> list[Path]:
+    """All three UTCA plots into a directory (created if missing).
+
+    Parameters
+    ----------
+    easeoff, utca : xarray.Dataset
+    directory : path-like
+
+    Returns
+    -------
+    list of pathlib.Path
+        ``easeoff.png``, ``contact_pattern.png``, ``transmission_error.png``.
+    """
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    return [plot_easeoff(easeoff, d / "easeoff.png"),
+            plot_contact_pattern(easeoff, utca, d / "contact_pattern.png"),
+            plot_transmission_error(utca, d / "transmission_error.png")]

@@ -1,0 +1,898 @@
+"""Unloaded TCA from the ease-off and the surface of roll angle (seed §2.3.2.2, §4.4).
+
+For a pinion roll position (value q of the roll-angle surface Q, see
+:mod:`contact.easeoff`) all gear projection-plane points with Q = q are in contact with
+the pinion's conjugate at the same time: the iso-line Q = q is the instantaneous contact
+curve, and projected onto the ease-off its lowest point H gives the unloaded transmission
+error (UTE) of that tooth pair — the gear lag at which the real gear first touches the
+pinion (seed Fig. 2.8, 4.3). Adjacent tooth pairs are the same curves one angular pitch
+2π/z_p of pinion roll apart; the pair that carries the motion is the one with the smallest
+lag, so the actual UTE is the lower envelope of the pairs' curves, and their intersections
+are the transition points M1, M2 (seed Fig. 2.9). Along each contact curve the stretch
+where the ease-off exceeds the UTE by no more than a separation (6.3 µm by default,
+"0.006 mm" in the seed) is the unloaded contact line; its ends trace the left and right
+point paths LPP, RPP on either side of the contact point path CPP (seed Fig. 2.10).
+
+Contouring
+----------
+Q, the angular ease-off ε, the gap curvature K, the normal arm and the gear flank are
+represented by bicubic interpolating splines over the gear grid (u, v)
+(``scipy.interpolate.RectBivariateSpline``, s = 0), which reproduce the exact node values.
+ε, Q and K are built from the valid nodes and the computed nodes on the same smooth sheet
+beyond them (both points on their blades' main sections), continued linearly past those:
+a blade-section junction kinks the fields and a cubic spline would carry the kink back.
+Q is strictly monotone along the profile direction on bevel and hypoid flanks (checked;
+otherwise ``ModelUnavailableError``), so a contact curve is parameterised by the
+lengthwise fraction u and its profile place v*(u) solved by Newton's method on the spline
+(to |ΔQ| < 1e-13 rad). A curve ends where it leaves the contact region: where the mating
+pinion point leaves the pinion blank (a smooth level set of the pinion's projection-plane
+fractions), the grid's root or tip line, or a grid cell with an uncomputed corner; the ends
+are found by false position on that continuous measure (bisection where it jumps) to 1e-9
+of the face width, and the curve is resampled uniformly in u between them. The minimum
+along the curve is refined by a parabola through the three lowest samples.
+
+Interpolation error: built on every other node, the spline reproduces the skipped nodes'
+exact ε within 0.2–0.3 µrad away from the region's edges (``tests/test_utca.py``); the
+error falls as h⁴, so on the full 41 × 21 grid it is ≈ 0.01–0.02 µrad. Within a cell of a
+section junction (near the pinion tip or the gear's fillet) it reaches ~1 µrad.
+
+The UTE: seed's first-order method and its second-order correction
+-------------------------------------------------------------------
+The seed's contact curves are those between the real pinion and the conjugate gear (seed
+§2.3.2.2: "the contact curves are between real pinion and conjugate gear"), and its UTE is
+the minimum of ε along the iso-line Q = q (``method="seed"``). The real pinion at roll q
+is itself separated from its conjugate by ½ K (Q − q)² (``EaseOff.gap_curvature``), so the
+real first contact is min over t of UTE_seed(q + t) + ½ K t²; the default
+``method="second_order"`` takes t₀ = −(dUTE_seed/dq)/K and evaluates the shifted iso-line
+(error O((t − t₀)²)). Against the conventional TCA (seed Eq. 2.14) on a crowned hypoid the
+seed's method is off by up to ~3 µrad within the mesh cycle (16 µrad at 200 µrad of UTE),
+the second-order one by ≤ 0.03 µrad (0.35 µrad at 200 µrad); contact points within
+0.03 mm.
+
+Public functions
+----------------
+DEFAULT_SEPARATION       6.3 µm (0.0063 mm)
+UTE_METHODS              "seed", "second_order"
+ContactCurves            curves of a batch of roll targets: places, ease-off, UTE, H
+contact_curves           compute them from an EaseOff for roll values (Q units)
+pair_transmission_error  UTE of the reference tooth pair at roll values
+transitions              rolls M1, M2 bounding the reference pair's share of the envelope
+unloaded_tca             the whole UTCA of a case: (/easeoff, /utca) Datasets
+utca_dataset             the ``/utca`` Dataset from computed pieces
+
+References
+----------
+M. Kolivand, PhD dissertation, Ohio State University, 2009, §2.3.2.2, §2.4, §4.4.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import math
+from collections.abc import Callable
+from typing import TYPE_CHECKING, NamedTuple
+
+import numpy as np
+import xarray as xr
+from scipy.interpolate import RectBivariateSpline
+
+from contact.easeoff import EaseOff, _fill_missing, ease_off, easeoff_dataset
+from geometry._version import __version__
+from geometry.errors import InputError, ModelUnavailableError
+
+if TYPE_CHECKING:
+    from geometry.assembly import Misalignment
+    from geometry.case import Case
+
+__all__ = [
+    "DEFAULT_SEPARATION",
+    "UTE_METHODS",
+    "ContactCurves",
+    "contact_curves",
+    "pair_transmission_error",
+    "transitions",
+    "unloaded_tca",
+    "utca_dataset",
+]
+
+log = logging.getLogger(__name__)
+
+#: separation that bounds the unloaded contact line [mm] (6.3 µm, industry practice; the
+#: seed's example uses 0.006 mm)
+DEFAULT_SEPARATION = 0.0063
+
+_COARSE_PER_CELL = 2  # coarse samples per grid cell along a curve
+_END_ITER = 12  # false-position steps on a curve end (to 1e-9 of the face width)
+_V_NEWTON = 6
+
+
+class _Fields:
+    """Bicubic splines of the ease-off fields over the gear grid (u, v)."""
+
+    def __init__(self, eo: EaseOff):
+        self.eo = eo
+        self.u, self.v = eo.u, eo.v
+        computed = np.isfinite(eo.raw_ease_off_angle) & np.isfinite(eo.raw_roll_angle)
+        valid = eo.valid
+        if valid.sum() < 16:
+            raise InputError("easeoff: fewer than 16 valid nodes, nothing to contour")
+        self.computed = computed
+        gear_ok = np.all(np.isfinite(eo.gear_position), axis=-1)
+
+        def spl(a, ok):
+            return RectBivariateSpline(self.u, self.v, _fill_missing(a, ok))
+
+        # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
+        # smooth sheet (both points on their blades' main sections), continued linearly
+        # past those: a section junction (e.g. the gear's fillet) kinks the fields, and a
+        # cubic spline would carry the kink back into the contact region
+        sheet = valid | eo.smooth
+        self.q = spl(eo.raw_roll_angle, sheet)
+        self.eps = spl(eo.raw_ease_off_angle, sheet)
+        self.arm = spl(eo.normal_arm, gear_ok)
+        self.margin = spl(eo.margin, computed)
+        self.pos = [spl(eo.gear_position[..., k], gear_ok) for k in range(3)]
+        self.nrm = [spl(eo.gear_normal[..., k], gear_ok) for k in range(3)]
+        self.pu = spl(eo.pinion_u, computed)
+        self.pv = spl(eo.pinion_v, computed)
+        self.gap = spl(eo.gap_curvature, sheet)
+        dq = np.diff(np.where(valid, eo.raw_roll_angle, np.nan), axis=1)
+        signs = np.sign(dq[np.isfinite(dq)])
+        if signs.size == 0 or not (np.all(signs > 0) or np.all(signs < 0)):
+            raise ModelUnavailableError(
+                "contact curves: the roll-angle surface is not monotone along the profile "
+                "direction of the gear grid, so a contact curve cannot be parameterised by "
+                "the lengthwise position (not met by bevel or hypoid flanks so far)")
+        self.q_sign = int(signs[0])
+        # cell corners all computed (hard mask): cell (i, j) spans u[i]..u[i+1], v[j]..v[j+1]
+        c = computed
+        self.cell_ok = c[:-1, :-1] & c[1:, :-1] & c[:-1, 1:] & c[1:, 1:]
+
+    def inside(self, u, v):
+        """True where (u, v) can be touched: in the grid, good cell, pinion mate in blank."""
+        u0, u1, v0, v1 = self.u[0], self.u[-1], self.v[0], self.v[-1]
+        ok = (u >= u0) & (u <= u1) & (v >= v0) & (v <= v1) & np.isfinite(v)
+        iu = np.clip(np.searchsorted(self.u, np.where(ok, u, u0), side="right") - 1, 0,
+                     len(self.u) - 2)
+        iv = np.clip(np.searchsorted(self.v, np.where(ok, v, v0), side="right") - 1, 0,
+                     len(self.v) - 2)
+        ok &= self.cell_ok[iu, iv]
+        ok &= self.margin.ev(np.where(ok, u, u0), np.where(ok, v, v0)) >= 0.0
+        return ok
+
+    def lattice(self, uc):
+        """Q at the coarse places uc × the grid's profile nodes (cached)."""
+        key = (len(uc), float(uc[0]), float(uc[-1]))
+        if getattr(self, "_lat_key", None) != key:
+            self._lat = self.q(uc, self.v)
+            self._lat_key = key
+        return self._lat
+
+    def measure(self, u, v):
+        """Continuous inside measure: ≥ 0 inside the contact region, −1 where undefined."""
+        fin = np.isfinite(v)
+        vs = np.where(fin, v, self.v[0])
+        c = np.minimum(self.margin.ev(u, vs), np.minimum(vs - self.v[0], self.v[-1] - vs))
+        c = np.minimum(c, np.minimum(u - self.u[0], self.u[-1] - u))
+        iu = np.clip(np.searchsorted(self.u, u, side="right") - 1, 0, len(self.u) - 2)
+        iv = np.clip(np.searchsorted(self.v, vs, side="right") - 1, 0, len(self.v) - 2)
+        return np.where(fin & self.cell_ok[iu, iv], c, -1.0)
+
+    def solve_v(self, u, target, v_start=None, lattice=None):
+        """Profile place v*(u) with Q(u, v*) = target (NaN where Q misses target in [v0, v1]).
+
+        Either ``v_start`` (a nearby solution) or ``lattice`` (Q at u × profile nodes, for a
+        bracket) starts Newton's method on the spline.
+        """
+        u = np.asarray(u, dtype=float)
+        target = np.asarray(target, dtype=float)
+        shape = np.broadcast_shapes(u.shape, target.shape)
+        u = np.broadcast_to(u, shape)
+        target = np.broadcast_to(target, shape)
+        v0, v1 = self.v[0], self.v[-1]
+        miss = np.zeros(shape, dtype=bool)
+        if lattice is not None:
+            vn = self.v
+            qn = np.broadcast_to(lattice, (*shape, len(vn)))
+            s = self.q_sign
+            below = (s * (qn - target[..., None])) <= 0
+            k = np.clip(below.sum(-1) - 1, 0, len(vn) - 2)
+            qa = np.take_along_axis(qn, k[..., None], -1)[..., 0]
+            qb = np.take_along_axis(qn, (k + 1)[..., None], -1)[..., 0]
+            t = np.clip((target - qa) / np.where(qb != qa, qb - qa, 1.0), 0.0, 1.0)
+            v = vn[k] + t * (vn[k + 1] - vn[k])
+            miss = (s * (qn[..., 0] - target) > 0) | (s * (qn[..., -1] - target) < 0)
+        else:
+            v = np.array(np.broadcast_to(v_start, shape), dtype=float)
+            v = np.where(np.isfinite(v), v, 0.5 * (v0 + v1))
+        f = self.q.ev(u, v) - target
+        for _ in range(_V_NEWTON):
+            d = self.q.ev(u, v, dy=1)
+            # the spline is defined on [v0, v1] only (FITPACK clamps outside)
+            v = np.clip(v - f / np.where(d != 0, d, 1e-30), v0, v1)
+            f = self.q.ev(u, v) - target
+            if np.all(np.abs(f) < 1e-13):
+                break
+        tol = 1e-9 * (v1 - v0)
+        bad = miss | (v < v0 - tol) | (v > v1 + tol) | (np.abs(f) > 1e-9)
+        return np.where(bad, np.nan, np.clip(v, v0, v1))
+
+
+class ContactCurves(NamedTuple):
+    """Contact curves of a batch of roll targets (shape ``batch``), ``n_point`` samples each.
+
+    Places are gear projection-plane fractions (u, v); a curve that misses the contact
+    region holds NaN. Angles in rad, lengths in mm. The separation from the gear at lag λ
+    along the curve is ``normal_arm`` × (``ease_off_angle`` + ``gap`` − λ).
+    """
+
+    target: np.ndarray  # batch [rad] roll value of the pair (Q units)
+    shift: np.ndarray  # batch [rad] t: the curve drawn is the iso-line Q = target + t
+    u: np.ndarray  # batch + (n_point,)
+    v: np.ndarray
+    ease_off_angle: np.ndarray  # [rad] ε along the curve
+    gap: np.ndarray  # [rad] ½ K t² (the pinion's own gap to its conjugate); 0 for "seed"
+    normal_arm: np.ndarray  # [mm]
+    position: np.ndarray  # batch + (n_point, 3) [mm] gear frame
+    normal: np.ndarray  # batch + (n_point, 3) [1]
+    ute: np.ndarray  # batch [rad] unloaded transmission error of the pair (gear lag)
+    contact_u: np.ndarray  # batch: place of the contact point H
+    contact_v: np.ndarray
+    index: np.ndarray  # batch: sample index nearest to H (-1 where no curve)
+
+
+def _curves_seed(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
+    """Iso-lines Q = t (flat batch) and the minimum of ε along them (seed §2.3.2.2)."""
+    nb = t.size
+    u0, u1 = float(f.u[0]), float(f.u[-1])
+    nc = _COARSE_PER_CELL * (len(f.u) - 1) + 1
+    uc = np.linspace(u0, u1, nc)
+    vc = f.solve_v(uc[None, :], t[:, None], lattice=f.lattice(uc)[None, :, :])
+    ok = f.inside(np.broadcast_to(uc, vc.shape), vc)
+    # the largest contiguous run of valid samples of each curve
+    start = np.full(nb, -1)
+    stop = np.full(nb, -1)
+    for b in np.flatnonzero(ok.any(axis=1)):
+        idx = np.flatnonzero(ok[b])
+        breaks = np.flatnonzero(np.diff(idx) > 1)
+        seg_lo = np.r_[idx[0], idx[breaks + 1]]
+        seg_hi = np.r_[idx[breaks], idx[-1]]
+        k = int(np.argmax(seg_hi - seg_lo))
+        start[b], stop[b] = seg_lo[k], seg_hi[k]
+    have = start >= 0
+    ua = np.where(have, uc[np.clip(start, 0, nc - 1)], np.nan)
+    ub = np.where(have, uc[np.clip(stop, 0, nc - 1)], np.nan)
+
+    # ends: false position (Illinois) on the continuous inside measure between the last
+    # valid and the first invalid coarse sample (bisection where the measure jumps)
+    lo_end = have & (start > 0)
+    hi_end = have & (stop < nc - 1)
+    rows = np.r_[np.flatnonzero(lo_end), np.flatnonzero(hi_end)]
+    if rows.size:
+        j_in = np.r_[start[lo_end], stop[hi_end]]
+        j_out = np.r_[start[lo_end] - 1, stop[hi_end] + 1]
+        a, b = uc[j_in], uc[j_out]
+        va = vc[rows, j_in]
+        ca = f.measure(a, va)
+        cb = f.measure(b, f.solve_v(b, t[rows], v_start=va))
+        side = np.zeros(rows.size)
+        for _ in range(_END_ITER):
+            smooth = (cb > -0.5) & (ca < 0.5) & (cb != ca)
+            m = np.where(smooth, b - cb * (b - a) / np.where(smooth, cb - ca, 1.0), 0.5 * (a + b))
+            lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
+            m = np.clip(m, lo_m + 1e-3 * (hi_m - lo_m), hi_m - 1e-3 * (hi_m - lo_m))
+            vm = f.solve_v(m, t[rows], v_start=va)
+            cm = f.measure(m, vm)
+            good = cm >= 0
+            # Illinois: halve the value kept at the end that did not move twice running
+            cb = np.where(good & (side == 1) & smooth, 0.5 * cb, cb)
+            ca = np.where(~good & (side == -1) & smooth, 0.5 * ca, ca)
+            a, ca, va = np.where(good, m, a), np.where(good, cm, ca), np.where(good, vm, va)
+            b, cb = np.where(good, b, m), np.where(good, cb, cm)
+            side = np.where(good, 1, -1)
+            if np.all(np.abs(b - a) < 1e-9):
+                break
+        n_lo = int(lo_end.sum())
+        ua[rows[:n_lo]] = a[:n_lo]
+        ub[rows[n_lo:]] = a[n_lo:]
+    frac = np.linspace(0.0, 1.0, n_point)
+    up = ua[:, None] + (ub - ua)[:, None] * frac
+    up_safe = np.where(np.isfinite(up), up, u0)
+    vstart = np.full(up.shape, np.nan)
+    for b in np.flatnonzero(have):
+        run = slice(start[b], stop[b] + 1)
+        vstart[b] = np.interp(up_safe[b], uc[run], vc[b, run])
+    vp = f.solve_v(up_safe, t[:, None], v_start=vstart)
+    vp = np.where(have[:, None], vp, np.nan)
+    up = np.where(np.isfinite(vp), up, np.nan)
+    fin = np.isfinite(vp)
+    us, vs = np.where(fin, up, u0), np.where(fin, vp, f.v[0])
+    eps = np.where(fin, f.eps.ev(us, vs), np.nan)
+    arm = np.where(fin, f.arm.ev(us, vs), np.nan)
+    pos = np.stack([np.where(fin, s.ev(us, vs), np.nan) for s in f.pos], -1)
+    nrm = np.stack([s.ev(us, vs) for s in f.nrm], -1)
+    nrm = np.where(fin[..., None], nrm / np.linalg.norm(nrm, axis=-1, keepdims=True), np.nan)
+    # minimum with parabolic refinement through the lowest sample and its neighbours
+    ute = np.full(nb, np.nan)
+    cu = np.full(nb, np.nan)
+    cv = np.full(nb, np.nan)
+    index = np.full(nb, -1)
+    rows = np.flatnonzero(fin.any(axis=1))
+    if rows.size:
+        e = np.where(fin[rows], eps[rows], np.inf)
+        k = np.argmin(e, axis=1)
+        index[rows] = k
+        ute[rows] = e[np.arange(rows.size), k]
+        cu[rows] = up[rows, k]
+        cv[rows] = vp[rows, k]
+        inner = (k > 0) & (k < n_point - 1)
+        if inner.any():
+            r = rows[inner]
+            ki = k[inner]
+            em, ec, ep = eps[r, ki - 1], eps[r, ki], eps[r, ki + 1]
+            den = em - 2 * ec + ep
+            okp = np.isfinite(den) & (den > 0)
+            x = np.clip(np.where(okp, 0.5 * (em - ep) / np.where(okp, den, 1.0), 0.0),
+                        -0.5, 0.5)
+            ur = up[r, ki] + x * (up[r, ki + 1] - up[r, ki])
+            vr = f.solve_v(ur, t[r], v_start=vp[r, ki])
+            good = np.isfinite(vr)
+            er = np.where(good, f.eps.ev(ur, np.where(good, vr, f.v[0])), np.inf)
+            better = good & (er < ec)
+            ute[r] = np.where(better, er, ec)
+            cu[r] = np.where(better, ur, cu[r])
+            cv[r] = np.where(better, vr, cv[r])
+    return ContactCurves(
+        target=t, shift=np.zeros(nb), u=up, v=vp, ease_off_angle=eps,
+        gap=np.where(fin, 0.0, np.nan), normal_arm=arm, position=pos, normal=nrm, ute=ute,
+        contact_u=cu, contact_v=cv, index=index)
+
+
+def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
+    """The seed's curves corrected for the pinion's own gap to its conjugate.
+
+    The pinion at roll q is separated from its conjugate at a gear place x by
+    S ≈ ½ K(x) (Q(x) − q)² (K: ``EaseOff.gap_curvature``), so the real first contact is
+    min over t of UTE_seed(q + t) + ½ K t²: with g = dUTE_seed/dq and t₀ = −g/K the
+    iso-line Q = q + t₀ carries the contact point and UTE = UTE_seed(q + t₀) + ½ K t₀²
+    (error O((t − t₀)²) since the function is stationary at its minimum). g is the ease-off
+    derivative across the iso-line at H (envelope theorem), or the finite difference of
+    UTE_seed where H is an end of the curve (edge contact).
+    """
+    first = _curves_seed(f, t, n_point)
+    have = np.isfinite(first.ute)
+    cu = np.where(have, first.contact_u, f.u[0])
+    cv = np.where(have, first.contact_v, f.v[0])
+    qu, qv = f.q.ev(cu, cv, dx=1), f.q.ev(cu, cv, dy=1)
+    eu, ev = f.eps.ev(cu, cv, dx=1), f.eps.ev(cu, cv, dy=1)
+    g = (eu * qu + ev * qv) / (qu * qu + qv * qv)
+    edge = have & ((first.index == 0) | (first.index == n_point - 1))
+    if edge.any():
+        h = 1e-5
+        te = t[edge]
+        pair = _curves_seed(f, np.r_[te + h, te - h], n_point).ute
+        fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
+        g[np.flatnonzero(edge)] = np.where(np.isfinite(fd), fd, g[edge])
+    k = f.gap.ev(cu, cv)
+    shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), 0.0)
+    second = _curves_seed(f, t + shift, n_point)
+    ok2 = np.isfinite(second.ute)
+    # keep the first-order curve where the shifted one leaves the contact region
+    use = ok2 | ~have
+    shift = np.where(use, shift, 0.0)
+    cc = ContactCurves(*(np.where(use.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
+                         for a, b in zip(second, first, strict=True)))
+    fin = np.isfinite(cc.u)
+    us = np.where(fin, cc.u, f.u[0])
+    vs = np.where(fin, cc.v, f.v[0])
+    gap = np.where(fin, 0.5 * f.gap.ev(us, vs) * shift[:, None] ** 2, np.nan)
+    hu = np.where(np.isfinite(cc.contact_u), cc.contact_u, f.u[0])
+    hv = np.where(np.isfinite(cc.contact_v), cc.contact_v, f.v[0])
+    ute = cc.ute + 0.5 * f.gap.ev(hu, hv) * shift ** 2
+    return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
+
+
+#: UTE methods: name → contact curves of a flat batch of roll targets
+UTE_METHODS: dict[str, Callable[[_Fields, np.ndarray, int], ContactCurves]] = {
+    "seed": _curves_seed,
+    "second_order": _curves_second_order,
+}
+
+
+def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point: int = 41,
+                   fields: _Fields | None = None) -> ContactCurves:
+    """Instantaneous contact curves and the UTE of tooth pairs (seed §2.3.2.2, §4.4).
+
+    Parameters
+    ----------
+    eo : contact.easeoff.EaseOff
+    target : array_like — [rad]
+        Roll values q (Q units, driving sense; any shape ``batch``); the pair k at roll r
+        has q = r − k·pitch.
+    method : str
+        ``"seed"``: the iso-line Q = q and the minimum of ε along it (the seed's method,
+        first order); ``"second_order"`` (default): corrected for the pinion's own
+        separation from its conjugate (see :data:`UTE_METHODS`).
+    n_point : int
+        Samples along each curve (≥ 3), uniform in u between the curve's ends.
+    fields : optional
+        Pre-built splines (internal reuse).
+
+    Returns
+    -------
+    ContactCurves
+
+    Raises
+    ------
+    InputError
+        For ``n_point`` < 3, non-finite targets or an unknown method (the message lists
+        the methods).
+    ModelUnavailableError
+        If Q is not monotone along the profile direction.
+
+    Notes
+    -----
+    Seed §2.3.2.2: intersection of the plane z = q with Q, projected onto the projection
+    plane and then onto the ease-off; its lowest point H gives the UTE.
+    """
+    if method not in UTE_METHODS:
+        raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
+    if int(n_point) != n_point or n_point < 3:
+        raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
+    tgt = np.asarray(target, dtype=float)
+    if not np.all(np.isfinite(tgt)):
+        raise InputError("target: roll values must be finite [rad]")
+    f = fields if fields is not None else _Fields(eo)
+    batch = tgt.shape
+    cc = UTE_METHODS[method](f, tgt.reshape(-1), int(n_point))
+    return ContactCurves(*(np.reshape(a, batch + np.shape(a)[1:]) for a in cc))
+
+
+def pair_transmission_error(eo: EaseOff, roll, *, method: str = "second_order",
+                            fields: _Fields | None = None, n_point: int = 41) -> np.ndarray:
+    """UTE of the reference tooth pair at roll values.
+
+    Parameters
+    ----------
+    eo : contact.easeoff.EaseOff
+    roll : array_like — [rad]
+        Roll values (Q units, driving sense).
+    method : str
+        See :func:`contact_curves`.
+    n_point : int
+        Samples per curve.
+
+    Returns
+    -------
+    ndarray — [rad]
+        Gear lag (NaN where the pair is out of mesh).
+
+    Raises
+    ------
+    InputError
+        As :func:`contact_curves`.
+    """
+    return contact_curves(eo, roll, method=method, n_point=n_point, fields=fields).ute
+
+
+def transitions(eo: EaseOff, *, method: str = "second_order", fields: _Fields | None = None,
+                n_point: int = 41, samples: int = 8) -> tuple[float, float]:
+    """Rolls M1, M2 bounding the reference pair's share of the lower envelope (seed Fig. 2.9).
+
+    Parameters
+    ----------
+    eo : contact.easeoff.EaseOff
+    method : str
+        See :func:`contact_curves`.
+    n_point : int
+        Samples per contact curve.
+    samples : int
+        Roll samples per mesh cycle used to bracket each transition (≥ 4).
+
+    Returns
+    -------
+    (M1, M2) : (float, float) — [rad]
+        M1: pair −1 hands over to pair 0; M2: pair 0 hands over to pair +1. Starting from
+        the roll of the lowest ease-off node, the first sample where the neighbour is lower
+        (or pair 0 leaves the contact region) brackets each transition, which is then solved
+        by false position (Illinois) to 1e-12 rad at a crossing of the two UTE curves, or
+        by bisection to 1e-8 rad where a pair leaves the contact region first (the lower
+        envelope then jumps). NaN if pair 0 never carries the motion or is still the
+        lowest two cycles away.
+
+    Raises
+    ------
+    InputError
+        For ``samples`` < 4 (and as :func:`contact_curves`).
+    """
+    if int(samples) != samples or samples < 4:
+        raise InputError(f"samples: must be an integer >= 4, got {samples!r}")
+    f = fields if fields is not None else _Fields(eo)
+    p = eo.pitch
+    big = 1.0
+
+    def h(x, k):
+        """UTE₀(x) − UTE_k(x): ≤ 0 while pair 0 is the lower; ±big where one is out of mesh."""
+        x = np.asarray(x, dtype=float)
+        k = np.asarray(k, dtype=float)
+        u = pair_transmission_error(eo, np.stack([x, x - k * p]), method=method, fields=f,
+                                    n_point=n_point)
+        out = u[0] - u[1]
+        out = np.where(np.isnan(u[1]), -big, out)
+        return np.where(np.isnan(u[0]), big, out)
+
+    # start where the ease-off is lowest: the reference pair carries the motion there
+    i0 = np.nanargmin(np.where(eo.valid, eo.ease_off_angle, np.nan))
+    r_star = float(eo.roll_angle.ravel()[i0])
+    # one scan serves both directions and both neighbours: UTE₀ at r* + m·p/samples,
+    # m = −2·samples … 2·samples; pair k at r is UTE₀(r − k·p), a shift by samples
+    m_all = np.arange(-2 * samples, 2 * samples + 1)
+    u_all = pair_transmission_error(eo, r_star + m_all * p / samples, method=method,
+                                    fields=f, n_point=n_point)
+
+    def h_scan(k):
+        j = np.arange(2 * samples + 1)
+        own = u_all[2 * samples + k * j]
+        other = u_all[2 * samples + k * j - k * samples]
+        out = np.where(np.isnan(other), -big, own - other)
+        return r_star + k * j * p / samples, np.where(np.isnan(own), big, out)
+
+    ks = np.array([-1.0, 1.0])
+    x, hx = (np.stack(a) for a in zip(*(h_scan(int(k)) for k in ks), strict=True))
+    if np.any(hx[:, 0] > 0):
+        log.warning("transitions: the reference pair does not carry the motion at the "
+                    "lowest ease-off point")
+        return math.nan, math.nan
+    found = np.any(hx > 0, axis=1)
+    j = np.where(found, np.argmax(hx > 0, axis=1), 1)
+    rows = np.arange(2)
+    a, fa = x[rows, j - 1], hx[rows, j - 1]
+    b, fb = x[rows, j], hx[rows, j]
+    side = np.zeros(2)
+    done = ~found
+    for _ in range(80):
+        smooth = (np.abs(fa) < big) & (np.abs(fb) < big)
+        m = np.where(smooth & (fa != fb), (b * fa - a * fb) / np.where(fa != fb, fa - fb, 1.0),
+                     0.5 * (a + b))
+        lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
+        m = np.clip(m, lo_m + 1e-6 * (hi_m - lo_m), hi_m - 1e-6 * (hi_m - lo_m))
+        m = np.where(done, a, m)
+        fm = h(m, ks)
+        out = fm > 0
+        upd = ~done
+        # Illinois: halve the value kept at the end that did not move twice running
+        fa = np.where(upd & out & (side == -1) & smooth, 0.5 * fa, fa)
+        fb = np.where(upd & ~out & (side == 1) & smooth, 0.5 * fb, fb)
+        a, fa = np.where(upd & ~out, m, a), np.where(upd & ~out, fm, fa)
+        b, fb = np.where(upd & out, m, b), np.where(upd & out, fm, fb)
+        side = np.where(out, -1, 1)
+        tol = np.where(smooth, 1e-12, 1e-8)
+        done |= (np.abs(b - a) < tol) | (fm == 0.0)
+        if done.all():
+            break
+    res = np.where(found, a, np.nan)
+    return float(res[0]), float(res[1])
+
+
+def _stretch(sep, pos, k):
+    """Contact stretch around sample k where sep ≤ 0 (sep = separation − threshold).
+
+    Returns (lo, hi) fractional sample indices of its ends and the 3-D length [mm].
+    """
+    n = len(sep)
+    if k < 0 or not np.isfinite(sep[k]) or sep[k] > 0:
+        return math.nan, math.nan, 0.0
+    lo = k
+    while lo > 0 and np.isfinite(sep[lo - 1]) and sep[lo - 1] <= 0:
+        lo -= 1
+    hi = k
+    while hi < n - 1 and np.isfinite(sep[hi + 1]) and sep[hi + 1] <= 0:
+        hi += 1
+    flo, fhi = float(lo), float(hi)
+    if lo > 0 and np.isfinite(sep[lo - 1]):
+        flo = lo - (0.0 - sep[lo]) / (sep[lo - 1] - sep[lo])
+    if hi < n - 1 and np.isfinite(sep[hi + 1]):
+        fhi = hi + (0.0 - sep[hi]) / (sep[hi + 1] - sep[hi])
+    seg = np.linalg.norm(np.diff(pos, axis=0), axis=-1)
+    length = float(seg[lo:hi].sum())
+    if flo < lo:
+        length += (lo - flo) * float(seg[lo - 1])
+    if fhi > hi:
+        length += (fhi - hi) * float(seg[hi])
+    return flo, fhi, length
+
+
+def _interp_at(a, x):
+    """Linear interpolation of a 1-D array at a fractional index x (NaN-safe)."""
+    if not np.isfinite(x):
+        return math.nan
+    i = int(min(max(math.floor(x), 0), len(a) - 2))
+    t = x - i
+    return float((1 - t) * a[i] + t * a[i + 1])
+
+
+def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
+                 flank: str | None = None, n_roll: int = 30, pairs=(-1, 0, 1),
+                 separation: float = DEFAULT_SEPARATION, grid: dict | None = None,
+                 method: str = "second_order",
+                 n_point: int = 41) -> tuple[xr.Dataset, xr.Dataset]:
+    """Ease-off based unloaded TCA of a case over one mesh cycle (seed §2.3.2, §2.4, §4.4).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    misalignment : geometry.assembly.Misalignment, optional
+        ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own ``[misalignment]``; the whole
+        UTCA is recomputed in the misaligned frame.
+    flank : str, optional
+        ``"drive"`` (default), ``"coast"``, or a pinion flank name.
+    n_roll : int
+        Roll positions over one mesh cycle (≥ 4), from the transition M1 (uniform,
+        the end point M2 = M1 + pitch excluded).
+    pairs : sequence of int
+        Tooth-pair offsets; pair k is the pair that comes into mesh k mesh cycles after
+        the reference pair 0 (its contact curve at roll r is Q = r − k·pitch).
+    separation : float — [mm]
+        Separation bounding the unloaded contact line, > 0 (default 0.0063).
+    grid : dict, optional
+        Gear grid (``nu``, ``nv``, ``u_limits``, ``v_limits``).
+    method : str
+        ``"second_order"`` (default) or ``"seed"``, see :func:`contact_curves`.
+    n_point : int
+        Samples along each contact curve (≥ 3).
+
+    Returns
+    -------
+    easeoff : xarray.Dataset
+        See :func:`contact.easeoff.easeoff_dataset`.
+    utca : xarray.Dataset
+        Dims ``roll``, ``pair``, ``point``, ``path``, ``transition``, ``xyz``; see
+        :func:`utca_dataset`.
+
+    Raises
+    ------
+    InputError
+        For out-of-range arguments (message names the field and range), or when no pair
+        is in contact at some roll position.
+    ModelUnavailableError
+        For face hobbing, or a roll-angle surface that cannot be contoured.
+
+    Notes
+    -----
+    Seed §2.3.2.2: UTE of a pair = minimum of the ease-off along its contact curve; actual
+    UTE = lower envelope over the pairs; the pattern of the reference tooth is bounded by
+    the contact curves at M1 and M2 and by LPP and RPP. When adjacent pairs never cross
+    (contact ratio below one) the cycle is centred on the reference pair's lowest UTE and
+    M1, M2 are NaN.
+    """
+    if int(n_roll) != n_roll or n_roll < 4:
+        raise InputError(f"n_roll: must be an integer >= 4, got {n_roll!r}")
+    if not (math.isfinite(separation) and separation > 0):
+        raise InputError(f"separation: must be a finite length > 0 [mm], got {separation!r}")
+    pairs = tuple(int(k) for k in pairs)
+    if not pairs or len(set(pairs)) != len(pairs) or 0 not in pairs:
+        raise InputError(f"pairs: must be distinct integers including 0, got {pairs!r}")
+    if method not in UTE_METHODS:
+        raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
+    if int(n_point) != n_point or n_point < 3:
+        raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
+    eo = ease_off(case, flank=flank, misalignment=misalignment, grid=grid)
+    f = _Fields(eo)
+    p = eo.pitch
+    kw = dict(method=method, fields=f, n_point=n_point)
+    m1, m2 = transitions(eo, **kw)
+    if math.isfinite(m1):
+        start = m1
+    elif math.isfinite(m2):
+        start = m2 - p
+    else:
+        scan = np.linspace(0.0, float(np.nanmax(eo.roll_angle)), 65)
+        u0 = pair_transmission_error(eo, scan, **kw)
+        start = float(scan[int(np.nanargmin(u0))]) - 0.5 * p
+        log.warning("unloaded_tca: no transition between adjacent pairs found; the cycle is "
+                    "centred on the reference pair's lowest UTE")
+    roll = start + p * np.arange(int(n_roll)) / int(n_roll)
+    pk = np.array(pairs)
+    cc = contact_curves(eo, roll[:, None] - pk[None, :] * p, **kw)
+    envelope = np.min(np.where(np.isfinite(cc.ute), cc.ute, np.inf), axis=1)
+    if not np.all(np.isfinite(envelope)):
+        lost = roll[~np.isfinite(envelope)]
+        raise InputError(f"case: no tooth pair in contact at roll {lost[0]:.6g} rad "
+                         "(contact loss; check the misalignment)")
+    # extremes of the actual UTE over the cycle: the refined minimum of the reference pair
+    # and the values at the transitions (where the envelope peaks)
+    k0 = pairs.index(0)
+    u0 = cc.ute[:, k0]
+    te_min = float(envelope.min())
+    i = int(np.nanargmin(u0))
+    if 0 < i < len(roll) - 1 and np.all(np.isfinite(u0[i - 1:i + 2])):
+        # vertex of the parabola through the lowest sample and its neighbours
+        em, ec, ep = u0[i - 1], u0[i], u0[i + 1]
+        den = em - 2.0 * ec + ep
+        if den > 0:
+            te_min = min(te_min, float(ec - 0.125 * (em - ep) ** 2 / den))
+    te_tr = np.array([np.nan, np.nan])
+    for i, m in enumerate((m1, m2)):
+        if math.isfinite(m):
+            te_tr[i] = float(pair_transmission_error(eo, np.array([m]), **kw)[0])
+    te_max = float(np.nanmax(np.r_[envelope, te_tr]))
+    ds = utca_dataset(eo, cc, roll, pk, envelope, separation=separation,
+                      transitions=(m1, m2), transition_te=tuple(te_tr),
+                      te_range=(te_min, te_max), case=case, misalignment=misalignment,
+                      method=method)
+    return easeoff_dataset(eo, case, misalignment=misalignment), ds
+
+
+def _var(dims, data, units, long_name, **attrs):
+    return (dims, data, {"units": units, "long_name": long_name, **attrs})
+
+
+def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
+                 separation: float, transitions, transition_te, te_range, case: Case,
+                 misalignment: Misalignment | None = None,
+                 method: str = "second_order") -> xr.Dataset:
+    """Assemble the ``/utca`` Dataset from contact curves over (roll, pair).
+
+    Parameters
+    ----------
+    eo : contact.easeoff.EaseOff
+    cc : ContactCurves
+        Batch shape (n_roll, n_pair).
+    roll : array (n_roll,) — [rad]
+    pairs : array (n_pair,) of int
+    envelope : array (n_roll,) — [rad]
+        Lower envelope of the pairs' UTE.
+    separation : float — [mm]
+    transitions : (float, float) — [rad]
+        M1, M2 (NaN if none).
+    transition_te : (float, float) — [rad]
+        UTE at M1 and M2.
+    te_range : (float, float) — [rad]
+        Lowest and highest actual UTE over the cycle (refined).
+    case : geometry.case.Case
+    misalignment : Misalignment, optional
+
+    Returns
+    -------
+    xarray.Dataset
+        ``unloaded_transmission_error`` (roll) [urad], ``pair_transmission_error``
+        (roll, pair) [urad], ``active`` (roll, pair), curve places ``curve_u``,
+        ``curve_v``, ``curve_axial_position``, ``curve_radial_position`` and
+        ``curve_position``/``curve_normal`` (gear frame), ``curve_ease_off`` [urad],
+        ``separation`` [um] (normal gap to the actual gear position), ``contact_pattern``
+        (roll, pair, point), ``contact_line_length`` [mm], the paths LPP/CPP/RPP
+        (``path_u``, ``path_v``, ``path_axial_position``, ``path_radial_position``),
+        ``transition_roll``/``transition_transmission_error`` (M1, M2) and
+        ``peak_to_peak_transmission_error`` [urad].
+    """
+    mis = case.misalignment if misalignment is None else misalignment
+    n_roll, n_pair, n_point = cc.u.shape
+    te = cc.ute
+    active = np.isfinite(te) & (te <= envelope[:, None] + 1e-15)
+    # geometry of the places: projection-plane (z, ρ) by the grid's bilinear map
+    f_ax = RectBivariateSpline(eo.u, eo.v, eo.axial, kx=1, ky=1)
+    f_rd = RectBivariateSpline(eo.u, eo.v, eo.radius, kx=1, ky=1)
+
+    def zr(u, v):
+        fin = np.isfinite(u) & np.isfinite(v)
+        us, vs = np.where(fin, u, eo.u[0]), np.where(fin, v, eo.v[0])
+        return (np.where(fin, f_ax.ev(us, vs), np.nan), np.where(fin, f_rd.ev(us, vs), np.nan))
+
+    cz, cr = zr(cc.u, cc.v)
+    gap = cc.ease_off_angle + cc.gap
+    sep_env = cc.normal_arm * (gap - envelope[:, None, None])
+    sep_own = cc.normal_arm * (gap - te[..., None])
+    pattern = np.zeros((n_roll, n_pair, n_point), dtype=np.int8)
+    length = np.zeros((n_roll, n_pair))
+    path_u = np.full((n_roll, n_pair, 3), np.nan)
+    path_v = np.full((n_roll, n_pair, 3), np.nan)
+    for i in range(n_roll):
+        for j in range(n_pair):
+            k = int(cc.index[i, j])
+            if k < 0:
+                continue
+            s = sep_own[i, j] - separation
+            lo, hi, ln = _stretch(s, cc.position[i, j], k)
+            length[i, j] = ln
+            path_u[i, j] = (_interp_at(cc.u[i, j], lo), cc.contact_u[i, j],
+                            _interp_at(cc.u[i, j], hi))
+            path_v[i, j] = (_interp_at(cc.v[i, j], lo), cc.contact_v[i, j],
+                            _interp_at(cc.v[i, j], hi))
+            if active[i, j]:
+                pattern[i, j] = np.isfinite(s) & (s <= 0)
+    pz, pr = zr(path_u, path_v)
+    p2p = te_range[1] - te_range[0]
+    dims3 = ("roll", "pair", "point")
+    data = {
+        "unloaded_transmission_error": _var(
+            "roll", envelope * 1e6, "urad",
+            "unloaded transmission error: lower envelope of the pairs (gear lag)"),
+        "pair_transmission_error": _var(
+            ("roll", "pair"), te * 1e6, "urad",
+            "unloaded transmission error of each tooth pair (min of the ease-off on its "
+            "contact curve; NaN out of mesh)"),
+        "active": _var(("roll", "pair"), active.astype(np.int8), "1",
+                       "1 where the pair carries the motion (its UTE is the lower envelope)"),
+        "curve_u": _var(dims3, cc.u, "1", "contact curve: gear lengthwise fraction"),
+        "curve_v": _var(dims3, cc.v, "1", "contact curve: gear profile fraction"),
+        "curve_axial_position": _var(dims3, cz, "mm",
+                                     "contact curve: gear projection-plane axial position"),
+        "curve_radial_position": _var(dims3, cr, "mm",
+                                      "contact curve: gear projection-plane radius"),
+        "curve_position": _var((*dims3, "xyz"), cc.position, "mm",
+                               "contact curve point on the real gear flank (gear frame)"),
+        "curve_normal": _var((*dims3, "xyz"), cc.normal, "1",
+                             "real gear flank unit normal at the contact curve point"),
+        "curve_normal_arm": _var(dims3, cc.normal_arm, "mm",
+                                 "rho |n.e_theta| at the curve point: normal gap per radian "
+                                 "of gear rotation"),
+        "curve_ease_off": _var(dims3, cc.ease_off_angle * 1e6, "urad",
+                               "angular ease-off along the contact curve"),
+        "separation": _var(dims3, sep_env * 1e3, "um",
+                           "unloaded separation along the gear normal from the gear at its "
+                           "actual (lower-envelope) position"),
+        "contact_pattern": _var(dims3, pattern, "1",
+                                "1 where the pair is active and its separation is within "
+                                "the threshold"),
+        "contact_line_length": _var(("roll", "pair"), length, "mm",
+                                    "unloaded contact line length (on the gear flank) within "
+                                    "the separation of the pair's own UTE"),
+        "contact_u": _var(("roll", "pair"), cc.contact_u, "1", "contact point H: gear u"),
+        "contact_v": _var(("roll", "pair"), cc.contact_v, "1", "contact point H: gear v"),
+        "path_u": _var(("roll", "pair", "path"), path_u, "1",
+                       "LPP, CPP, RPP: gear lengthwise fraction"),
+        "path_v": _var(("roll", "pair", "path"), path_v, "1",
+                       "LPP, CPP, RPP: gear profile fraction"),
+        "path_axial_position": _var(("roll", "pair", "path"), pz, "mm",
+                                    "LPP, CPP, RPP: gear projection-plane axial position"),
+        "path_radial_position": _var(("roll", "pair", "path"), pr, "mm",
+                                     "LPP, CPP, RPP: gear projection-plane radius"),
+        "transition_roll": _var("transition", np.asarray(transitions, float), "rad",
+                                "roll at which the motion passes to the next pair (M1: pair "
+                                "-1 to 0, M2: pair 0 to +1)"),
+        "transition_transmission_error": _var("transition",
+                                              np.asarray(transition_te, float) * 1e6, "urad",
+                                              "unloaded transmission error at M1, M2"),
+        "peak_to_peak_transmission_error": _var((), p2p * 1e6, "urad",
+                                                "peak-to-peak unloaded transmission error"),
+        "separation_threshold": _var((), separation * 1e3, "um",
+                                     "separation bounding the unloaded contact line"),
+    }
+    coords = {
+        "roll": ("roll", np.asarray(roll, float),
+                 {"units": "rad", "long_name": "pinion roll (value of Q, driving sense)"}),
+        "pair": ("pair", np.asarray(pairs, dtype=np.int32),
+                 {"units": "1", "long_name": "tooth pair offset: mesh cycles after pair 0"}),
+        "point": ("point", np.arange(n_point, dtype=np.int32),
+                  {"units": "1", "long_name": "sample along the contact curve, toe to heel"}),
+        "path": ("path", np.array(["LPP", "CPP", "RPP"]),
+                 {"long_name": "left (toe-side) bound, contact point path, right bound"}),
+        "transition": ("transition", np.array(["M1", "M2"]),
+                       {"long_name": "transition points of the lower envelope"}),
+        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
+    }
+    attrs = {
+        "title": f"{case.name}: unloaded tooth contact analysis (ease-off method)",
+        "method": method,
+        "case": case.name,
+        "pinion_flank": eo.pinion_flank,
+        "gear_flank": eo.gear_flank,
+        "mesh_period": eo.pitch,
+        "mesh_period_units": "rad",
+        "roll_zero": eo.roll_zero,
+        "roll_zero_units": "rad",
+        "drive_sense": eo.drive_sense,
+        "gear_phase": eo.gear_phase,
+        "gear_phase_units": "rad",
+        "ratio": eo.ratio,
+        "kinematics": "pinion rotation = roll_zero + drive_sense * roll; ideal gear rotation = "
+                      "gear_phase - pinion rotation / ratio; transmission error = gear lag",
+        "misalignment": json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
+                                    "delta_G_mm": mis.delta_G,
+                                    "delta_Sigma_deg": math.degrees(mis.delta_Sigma)}),
+        "toolkit_version": __version__,
+        "source": "contact.utca.unloaded_tca (seed 2.3.2.2, 4.4)",
+        "inputs": case.to_toml(),
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)
