@@ -15,6 +15,7 @@ blank_outline      compute it from a Blank
 ProjectionGrid     (u, v) fractions and the (z, ρ) targets of a flank grid
 projection_grid    lay the grid
 flank_surface      solve one flank on its grid: points, normals, curvatures (FlankSurface)
+flank_at           the same at arbitrary projection-plane places
 flank_dataset      the same as an xarray.Dataset with units and long names
 geometry_datasets  all four flanks of a case
 """
@@ -43,6 +44,7 @@ __all__ = [
     "FlankSurface",
     "ProjectionGrid",
     "blank_outline",
+    "flank_at",
     "flank_dataset",
     "flank_surface",
     "geometry_datasets",
@@ -164,7 +166,7 @@ class FlankSurface(NamedTuple):
     member: str
     flank: str
     hand: str
-    grid: ProjectionGrid
+    grid: ProjectionGrid | None  # None for flank_at
     position: np.ndarray  # [mm]
     normal: np.ndarray  # [1] out of the material
     kappa1: np.ndarray  # [1/mm] convex positive
@@ -219,11 +221,45 @@ def flank_surface(case: Case, member: str, flank: str, *, nu: int = 41, nv: int 
     Seed Eq. 2.7a (machine chain), 2.8 (equation of meshing) and 2.9–2.13 (curvatures);
     the reference slot is the one cut at q = 0 near the +x side of the member frame.
     """
+    grid = projection_grid(case.member(member).blank, nu, nv, u_limits, v_limits)
+    return flank_at(case, member, flank, grid.axial, grid.radius)._replace(grid=grid)
+
+
+def flank_at(case: Case, member: str, flank: str, axial, radius) -> FlankSurface:
+    """One flank of one member solved at arbitrary projection-plane places (seed §2.2).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    member : str
+        ``"pinion"`` or ``"gear"``.
+    flank : str
+        ``"concave"`` or ``"convex"``.
+    axial, radius : array_like, same shape — [mm]
+        Axial position z and radius ρ in the member's projection plane.
+
+    Returns
+    -------
+    FlankSurface
+        As :func:`flank_surface` with ``grid=None`` and arrays of the shape of ``axial``.
+
+    Raises
+    ------
+    InputError
+        For bad names or mismatched shapes.
+
+    Notes
+    -----
+    Seed Eq. 2.7a, 2.8, 2.9–2.13; the hand is applied by mirroring y → −y.
+    """
     mem = case.member(member)
     tool = mem.flank(flank)
     blank = mem.blank
-    grid = projection_grid(blank, nu, nv, u_limits, v_limits)
-    sol = solve_envelope(tool.blade, tool.machine, grid.axial, grid.radius,
+    z = np.asarray(axial, dtype=float)
+    rho = np.asarray(radius, dtype=float)
+    if z.shape != rho.shape:
+        raise InputError(f"axial, radius: must have equal shapes, got {z.shape} and {rho.shape}")
+    sol = solve_envelope(tool.blade, tool.machine, z, rho,
                          length_scale=blank.outer_cone_distance,
                          depth=blank.outer_addendum + blank.outer_dedendum)
     pc = surface_curvatures(sol.family, tool.machine.process == "Generate",
@@ -236,7 +272,7 @@ def flank_surface(case: Case, member: str, flank: str, *, nu: int = 41, nv: int 
     if mem.hand == "left":
         pos, nrm, d1, d2 = pos * _MIRROR, nrm * _MIRROR, d1 * _MIRROR, -(d2 * _MIRROR)
     return FlankSurface(
-        member=member, flank=flank, hand=mem.hand, grid=grid, position=pos, normal=nrm,
+        member=member, flank=flank, hand=mem.hand, grid=None, position=pos, normal=nrm,
         kappa1=pc.kappa1 * nan1, kappa2=pc.kappa2 * nan1, dir1=d1, dir2=d2,
         meshing_residual=sol.meshing_residual, s=sol.s, theta=sol.theta, q=sol.q,
         section=sol.section, reason=sol.reason)

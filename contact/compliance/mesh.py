@@ -356,8 +356,11 @@ def mesh_compliance(
     ends = {}
     for name, transform, sign in (("pinion", t_p, 1.0), ("gear", t_g, -1.0)):
         data = model.member(name)
+        # midpoints may overhang slightly too: the LTCA takes them on the gear side, and
+        # the pinion mate differs by the ease-off (≤ tens of µm) along the normal; they
+        # are clipped onto the tooth like segment ends
         points[name] = shell_coordinates(data, seg.midpoints, sign * seg.normals,
-                                         transform=transform)
+                                         transform=transform, tolerance=END_TOLERANCE)
         ends[name] = shell_coordinates(data, ends_flat, transform=transform,
                                        tolerance=END_TOLERANCE)
     parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",

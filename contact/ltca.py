@@ -1,0 +1,565 @@
+"""Loaded tooth contact analysis over the mesh cycle (seed §3.3–3.4, Eq. 3.12–3.14).
+
+At each pinion roll position the instantaneous contact curves of every tooth pair that
+may share the load (from the ease-off UTCA, :mod:`contact.utca`) are split into
+segments; each segment carries its midpoint, normal, length, initial separation
+s = (ease-off − UTE) along the normal, moment arm R about the gear axis and the
+equivalent radius R_eq across the contact line. The compliance of the segments
+(:func:`contact.compliance.mesh_compliance`: both members' shells, Sainsot foundation,
+Weber contact) and these data form a :class:`contact.ContactProblem`, solved by any
+registered solver; the multiplier Θ is the loaded rotation, and the loaded transmission
+error is LTE = UTE + Θ (gear lag, the seed's Fig. 3.6 convention).
+
+Weber's contact compliance depends on the load (logarithmically). It is linearised as a
+secant about the current segment loads and iterated: solve, re-evaluate the Weber
+diagonal at the new loads, solve again, until the LTE changes by less than
+``weber_tolerance`` (default 1e-3 µrad); 3–6 iterations are typical. The first
+evaluation uses the load each segment would carry if the torque were shared evenly.
+
+Moment arm: a gear rotation δ closes the gap at a point by ρ |n·e_θ| δ — the distance of
+the normal's line of action from the gear axis — which is the ``normal_arm`` of the
+ease-off; so R = normal_arm, and s = R (ε + gap − UTE) with ε the angular ease-off.
+
+R_eq across the contact line: κ_rel(w) = κ_p(w) + κ_g(w) along w = n × t (t the
+contact-line tangent), each member's normal curvature from its principal curvatures
+(Euler), evaluated on the real surfaces at the segment midpoints
+(:func:`geometry.flank.flank_at`); R_eq = 1/κ_rel (seed Eq. 2.13).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+from scipy.interpolate import RectBivariateSpline
+
+from contact.compliance.hertz import hertz_half_width, weber_compliance
+from contact.compliance.mesh import ContactSegments, mesh_compliance, pair_compliance_model
+from contact.easeoff import EaseOff, ease_off
+from contact.problem import ContactProblem
+from contact.solvers import DEFAULT_SOLVER, get_backend, solve_contact
+from contact.transmission_error import transmission_error_summary
+from contact.utca import contact_curves, transitions
+from geometry._version import __version__
+from geometry.assembly import Misalignment
+from geometry.curvature import normal_curvature
+from geometry.errors import InputError
+from geometry.flank import flank_at
+
+__all__ = ["LTCAOptions", "loaded_tca", "segment_geometry"]
+
+log = logging.getLogger(__name__)
+
+_RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
+
+
+@dataclass(frozen=True)
+class LTCAOptions:
+    """Discretisation and solution settings of the LTCA.
+
+    Attributes
+    ----------
+    cycles : int
+        Mesh cycles analysed (≥ 1; default 2).
+    rolls_per_cycle : int
+        Roll positions per mesh cycle (≥ 4; default 20).
+    pairs : tuple of int
+        Tooth-pair offsets considered, relative to the pair that takes over at the
+        start of each mesh cycle (default −1, 0, 1, 2; see :func:`segment_geometry`).
+    segments : int
+        Segments per contact curve (≥ 4; default 24).
+    separation_limit : float or None — [mm]
+        Segments separated by more than this are left out (they cannot touch). Default:
+        0.05 mm + 0.15 mm per 1000 N·m of gear torque.
+    solver : str
+        Registered solver name (default our exact ``active_set``).
+    weber_tolerance : float — [urad]
+        Stop the Weber load iteration when the LTE changes by less (default 1e-3).
+    max_weber_iterations : int
+        Cap on the Weber iteration (default 12).
+    youngs_modulus, poisson_ratio : float — [MPa], [1]
+        Steel for both members (default 206 000 MPa, 0.3).
+    theory, n_height, n_face
+        Shell-model settings (:func:`contact.compliance.pair_compliance_model`).
+    """
+
+    cycles: int = 2
+    rolls_per_cycle: int = 20
+    pairs: tuple[int, ...] = (-1, 0, 1, 2)
+    segments: int = 24
+    separation_limit: float | None = None
+    solver: str = DEFAULT_SOLVER
+    weber_tolerance: float = 1e-3
+    max_weber_iterations: int = 12
+    youngs_modulus: float = 206_000.0
+    poisson_ratio: float = 0.3
+    theory: str = "seed"
+    n_height: int = 6
+    n_face: int = 21
+
+    def __post_init__(self) -> None:
+        checks = (
+            ("cycles", self.cycles, 1, 20),
+            ("rolls_per_cycle", self.rolls_per_cycle, 4, 400),
+            ("segments", self.segments, 4, 400),
+            ("max_weber_iterations", self.max_weber_iterations, 1, 100),
+        )
+        for name, val, lo, hi in checks:
+            if not (isinstance(val, int) and lo <= val <= hi):
+                raise InputError(f"{name}: must be an integer in [{lo}, {hi}], got {val!r}")
+        if not self.pairs or 0 not in self.pairs:
+            raise InputError(f"pairs: must contain the reference pair 0, got {self.pairs!r}")
+        if self.separation_limit is not None and not self.separation_limit > 0:
+            raise InputError(
+                f"separation_limit: must be > 0 [mm] or None, got {self.separation_limit!r}"
+            )
+        if not self.weber_tolerance > 0:
+            raise InputError(f"weber_tolerance: must be > 0 [urad], got {self.weber_tolerance}")
+        get_backend(self.solver)
+
+
+def _spline(eo: EaseOff, field: np.ndarray) -> RectBivariateSpline:
+    vals = np.array(field, dtype=float)
+    ok = np.isfinite(vals)
+    if not np.all(ok):  # fill masked nodes from the nearest valid node along the profile
+        for i in range(vals.shape[0]):
+            row = vals[i]
+            good = np.flatnonzero(np.isfinite(row))
+            if good.size:
+                vals[i] = np.interp(np.arange(row.size), good, row[good])
+        for j in range(vals.shape[1]):
+            col = vals[:, j]
+            good = np.flatnonzero(np.isfinite(col))
+            if good.size:
+                vals[:, j] = np.interp(np.arange(col.size), good, col[good])
+    return RectBivariateSpline(eo.u, eo.v, np.nan_to_num(vals), kx=3, ky=3, s=0)
+
+
+def _rotate_about(axis: np.ndarray, angle: np.ndarray, v: np.ndarray) -> np.ndarray:
+    c = np.cos(angle)[..., None]
+    s = np.sin(angle)[..., None]
+    return v * c + np.cross(axis, v) * s + axis * (v @ axis)[..., None] * (1.0 - c)
+
+
+def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], segments: int):
+    """Contact segments of every (roll, pair): the LTCA discretisation (seed §3.3, Fig. 3.3).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    eo : contact.easeoff.EaseOff
+    roll : array (J,) — [rad]
+        Pinion roll positions (Q units, driving sense).
+    pairs : sequence of int (K,)
+        Pair offsets relative to each roll's own mesh cycle: at roll r in cycle
+        c = ⌊(r − r₀)/pitch⌋ (r₀ the first roll), pair k is the tooth pair whose contact
+        curve is Q = r − (c + k)·pitch. The results are then periodic in the mesh cycle.
+    segments : int
+        Segments per contact curve.
+
+    Returns
+    -------
+    dict of arrays, shapes (J, K, S) (+ (3,) for vectors); NaN where a pair has no
+    curve: ``midpoint`` (gear frame) and ``midpoint_pair`` (pair frame) [mm],
+    ``ends_pair`` (J, K, S, 2, 3) [mm], ``normal_pair`` [1] (out of the pinion),
+    ``length`` [mm], ``moment_arm`` [mm], ``lag`` [rad] (ε + gap of the segment),
+    ``u``, ``v`` [1] gear projection-plane fractions, ``r_eq`` [mm]; (J, K): ``ute`` [rad];
+    (J,): ``pinion_rotation``, ``gear_rotation`` [rad] (of the cycle's reference pair, to
+    which each pair's points are consistent: pairs sit whole pitches apart).
+    """
+    roll = np.asarray(roll, float)
+    pairs = np.asarray(pairs, int)
+    cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
+    target = roll[:, None] - (cycle[:, None] + pairs[None, :]) * eo.pitch
+    cc = contact_curves(eo, target, n_point=segments + 1)
+    J, K, S = roll.size, pairs.size, segments
+
+    def mid(a):
+        return 0.5 * (a[..., 1:] + a[..., :-1])
+
+    u, v = mid(cc.u), mid(cc.v)
+    pos_g = 0.5 * (cc.position[..., 1:, :] + cc.position[..., :-1, :])
+    nrm_g = 0.5 * (cc.normal[..., 1:, :] + cc.normal[..., :-1, :])
+    nrm_g /= np.linalg.norm(nrm_g, axis=-1, keepdims=True)
+    length = np.linalg.norm(np.diff(cc.position, axis=-2), axis=-1)
+    lag = mid(cc.ease_off_angle + cc.gap)
+    arm = mid(cc.normal_arm)
+    kin = eo.kinematics
+    # member rotations of each curve: pinion φ = roll_zero + s_p q, gear at the ideal ψ;
+    # pair k's points then lie on the teeth k pitches away at the roll's own rotations
+    phi = eo.roll_zero + eo.drive_sense * target  # (J, K)
+    psi = eo.gear_phase - phi / eo.ratio
+    rot_g, rot_p = kin.gear_place[:3, :3], kin.pinion_place[:3, :3]
+    og, ag, ap = kin.gear_origin, kin.gear_axis, kin.pinion_axis
+
+    def gear_to_pair(x, vec=False):
+        q = _rotate_about(ag, np.broadcast_to(psi[..., None], x.shape[:-1]), x @ rot_g.T)
+        return q if vec else q + og
+
+    mid_pair = gear_to_pair(pos_g)
+    ends_pair = np.stack([gear_to_pair(cc.position[..., :-1, :]),
+                          gear_to_pair(cc.position[..., 1:, :])], axis=-2)
+    # the gear normal points out of the gear; the contact normal out of the pinion is −n_g
+    n_pair = -gear_to_pair(nrm_g, vec=True)
+    # R_eq across the contact line from both real surfaces at the midpoints
+    ok = np.isfinite(u) & np.isfinite(v)
+    r_eq = np.full(u.shape, np.nan)
+    if np.any(ok):
+        uu, vv = u[ok], v[ok]
+        pz = _spline(eo, eo.pinion_axial).ev(uu, vv)
+        pr = _spline(eo, eo.pinion_radius).ev(uu, vv)
+        gz, gr = pos_g[ok][:, 2], np.hypot(pos_g[ok][:, 0], pos_g[ok][:, 1])
+        gs = flank_at(case, "gear", eo.gear_flank, gz, gr)
+        ps = flank_at(case, "pinion", eo.pinion_flank, pz, pr)
+        # across-line direction w = n × t in the gear frame, carried to the pinion frame
+        t = np.diff(cc.position, axis=-2)[ok]
+        t /= np.linalg.norm(t, axis=-1, keepdims=True)
+        w_g = np.cross(nrm_g[ok], t)
+        w_pair = gear_to_pair(np.where(ok[..., None], np.cross(nrm_g, _tangent(cc)), 0.0),
+                              vec=True)[ok]
+        phi_seg = np.broadcast_to(phi[..., None], u.shape)[ok]
+        w_p = _rotate_about(ap, -phi_seg, w_pair) @ rot_p
+        kg = normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, w_g)
+        kp = normal_curvature(ps.kappa1, ps.kappa2, ps.dir1, w_p)
+        krel = kp + kg
+        r_eq[ok] = np.where(krel > 1e-6, 1.0 / np.maximum(krel, 1e-6), 1e6)
+    rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
+    return {
+        "u": u, "v": v, "midpoint": pos_g, "midpoint_pair": mid_pair, "ends_pair": ends_pair,
+        "normal_pair": n_pair, "length": length, "moment_arm": arm, "lag": lag, "r_eq": r_eq,
+        "ute": cc.ute.reshape(J, K), "pinion_rotation": rp,
+        "gear_rotation": eo.gear_phase - rp / eo.ratio, "shape": (J, K, S),
+    }
+
+
+def _tangent(cc) -> np.ndarray:
+    """Unit contact-line tangents of the segments (gear frame), shape (..., S, 3)."""
+    t = np.diff(cc.position, axis=-2)
+    return t / np.linalg.norm(t, axis=-1, keepdims=True)
+
+
+def _var(dims, data, units, long_name, **attrs):
+    a = {"long_name": long_name, **attrs}
+    if units is not None:
+        a["units"] = units
+    return (dims, data, a)
+
+
+def loaded_tca(
+    case,
+    torque: Sequence[float] | float,
+    *,
+    misalignment: Misalignment | None = None,
+    flank: str | None = None,
+    options: LTCAOptions | None = None,
+    easeoff: EaseOff | None = None,
+    progress: bool = False,
+) -> xr.Dataset:
+    """Loaded TCA of a case at one or more torques over whole mesh cycles (seed §3.3–3.4).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    torque : float or sequence of float — [N·m]
+        Gear torques (> 0).
+    misalignment : geometry.assembly.Misalignment, optional
+        ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own.
+    flank : str, optional
+        ``"drive"`` (default) or ``"coast"``.
+    options : LTCAOptions, optional
+    easeoff : contact.easeoff.EaseOff, optional
+        A precomputed ease-off of the same case, flank and misalignment.
+    progress : bool
+        Show a progress bar over roll positions.
+
+    Returns
+    -------
+    xarray.Dataset
+        The ``/ltca`` dataset (exchange names: ``transmission_error`` [urad] over
+        (``torque``, ``roll``); ``force`` [N] and ``pressure_max`` [MPa] over
+        (``torque``, ``roll``, ``pair``, ``segment``); ``load_share`` [1] over
+        (``torque``, ``roll``, ``pair``); ``torque`` coordinate [N m]), plus load per
+        length, half-width, contact and edge flags, separations, residuals, solver
+        status and times, and the LTE summary over the mesh cycles.
+
+    Raises
+    ------
+    InputError
+        For bad torques or options (the message names the field).
+    """
+    opts = options or LTCAOptions()
+    torques = np.atleast_1d(np.asarray(torque, dtype=float))
+    if torques.ndim != 1 or torques.size == 0 or not np.all(np.isfinite(torques)) or np.any(
+        torques <= 0
+    ):
+        raise InputError(f"torque: must be finite values > 0 [N m], got {torque!r}")
+    if misalignment is not None:
+        case = dataclasses.replace(case, misalignment=misalignment)
+    t0 = time.perf_counter()
+    eo = easeoff if easeoff is not None else ease_off(case, flank=flank)
+    t_easeoff = time.perf_counter() - t0
+    m1, m2 = transitions(eo)
+    start = m1 if math.isfinite(m1) else 0.0
+    n_roll = opts.cycles * opts.rolls_per_cycle
+    roll = start + np.arange(n_roll) * eo.pitch / opts.rolls_per_cycle
+    t1 = time.perf_counter()
+    seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments)
+    t_segments = time.perf_counter() - t1
+    J, K, S = seg["shape"]
+    ute_env = np.nanmin(seg["ute"], axis=1)  # (J,)
+    if not np.all(np.isfinite(ute_env)):
+        raise InputError("no tooth pair is in contact at some roll position (check the case)")
+    sep_all = seg["moment_arm"] * (seg["lag"] - ute_env[:, None, None])  # [mm]
+    model = pair_compliance_model(
+        case, theory=opts.theory, n_height=opts.n_height, n_face=opts.n_face,
+        pinion_material=(opts.youngs_modulus, opts.poisson_ratio),
+        gear_material=(opts.youngs_modulus, opts.poisson_ratio),
+    )
+    E, nu = opts.youngs_modulus, opts.poisson_ratio
+    NT = torques.size
+    shape4 = (NT, J, K, S)
+    out = {k: np.full(shape4, np.nan) for k in ("force", "load_per_length", "pressure_max",
+                                                "half_width")}
+    contact = np.zeros(shape4, np.int8)
+    in_problem = np.zeros(shape4, np.int8)
+    rotation = np.full((NT, J), np.nan)
+    resid = {r: np.full((NT, J), np.nan) for r in _RESIDUALS}
+    found = np.zeros((NT, J), np.int8)
+    status = np.full((NT, J), "", dtype=object)
+    solve_time = np.zeros((NT, J))
+    compliance_time = np.zeros(J)
+    weber_iters = np.zeros((NT, J), np.int64)
+    n_seg = np.zeros(J, np.int64)
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=J, desc="LTCA", unit="roll")
+    for j in range(J):
+        built_for = b""
+        ok = np.isfinite(sep_all[j]) & np.isfinite(seg["r_eq"][j]) & (seg["length"][j] > 0)
+        for it, T in enumerate(torques):
+            limit = opts.separation_limit or (0.05 + 0.15 * T / 1000.0)
+            sel = ok & (sep_all[j] <= limit)
+            idx = np.argwhere(sel)  # (N, 2): pair index, segment index
+            if idx.size == 0:
+                status[it, j] = "no segment within the separation limit"
+                continue
+            kk, ss = idx[:, 0], idx[:, 1]
+            key = sel.tobytes()
+            if key != built_for:
+                tc = time.perf_counter()
+                segs = ContactSegments(
+                    midpoints=seg["midpoint_pair"][j, kk, ss],
+                    ends=seg["ends_pair"][j, kk, ss],
+                    normals=seg["normal_pair"][j, kk, ss],
+                    length=seg["length"][j, kk, ss],
+                    r_eq=seg["r_eq"][j, kk, ss],
+                    pair_index=np.asarray(opts.pairs)[kk],
+                    load=np.ones(kk.size),
+                    pinion_rotation=float(seg["pinion_rotation"][j]),
+                    gear_rotation=float(seg["gear_rotation"][j]),
+                )
+                C_full, info = mesh_compliance(case, segs, model=model)
+                C_struct = C_full - info["weber"]
+                depth = info["weber_depth"]
+                compliance_time[j] += time.perf_counter() - tc
+                built_for = key
+            n_seg[j] = max(n_seg[j], kk.size)
+            L = seg["length"][j, kk, ss]
+            Req = seg["r_eq"][j, kk, ss]
+            R = seg["moment_arm"][j, kk, ss]
+            s = sep_all[j, kk, ss]
+            Tn = T * 1e3  # N·mm
+            load = np.full(kk.size, Tn / max(float(R.sum()), 1e-12))
+            lte_prev = None
+            sol = None
+            for w_it in range(1, opts.max_weber_iterations + 1):
+                cw = weber_compliance(load, L, depth[:, 0], depth[:, 1], e1=E, nu1=nu, e2=E,
+                                      nu2=nu, r_eq=Req, kind="secant")
+                problem = ContactProblem(C_struct + np.diag(cw), s, R, Tn,
+                                         name=f"{case.name} roll {j} T {T:g}")
+                sol = solve_contact(problem, opts.solver, initial=sol)
+                solve_time[it, j] += sol.solve_time + sol.build_time
+                if not sol.found:
+                    break
+                load = np.maximum(sol.force, 0.0)
+                lte = sol.rotation * 1e6
+                weber_iters[it, j] = w_it
+                if lte_prev is not None and abs(lte - lte_prev) < opts.weber_tolerance:
+                    break
+                lte_prev = lte
+            assert sol is not None
+            found[it, j] = int(sol.found)
+            status[it, j] = sol.status
+            for r in _RESIDUALS:
+                resid[r][it, j] = sol.residuals[r]
+            if not sol.found:
+                log.warning("roll %d, torque %g N m: %s", j, T, sol.status)
+                continue
+            F = sol.force
+            rotation[it, j] = sol.rotation
+            w = F / L
+            b = hertz_half_width(np.maximum(w, 1e-12), Req, E, nu, E, nu)
+            pmax = np.where(F > 0, 2 * w / (np.pi * b), 0.0)
+            out["force"][it, j, kk, ss] = F
+            out["load_per_length"][it, j, kk, ss] = w
+            out["half_width"][it, j, kk, ss] = np.where(F > 0, b, 0.0)
+            out["pressure_max"][it, j, kk, ss] = pmax
+            contact[it, j, kk, ss] = sol.active_set.astype(np.int8)
+            in_problem[it, j, kk, ss] = 1
+        if bar is not None:
+            bar.update()
+    if bar is not None:
+        bar.close()
+    return _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, contact,
+                         in_problem, rotation, resid, found, status, solve_time, weber_iters,
+                         compliance_time, n_seg, m1, m2,
+                         timing={"easeoff": t_easeoff, "segments": t_segments})
+
+
+def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, contact,
+                  in_problem, rotation, resid, found, status, solve_time, weber_iters,
+                  compliance_time, n_seg, m1, m2, timing) -> xr.Dataset:
+    NT, _J, _K, S = out["force"].shape
+    F = np.nan_to_num(out["force"])
+    R = np.nan_to_num(seg["moment_arm"])[None]
+    pair_torque = np.sum(F * R, axis=-1)  # (NT, J, K) N·mm
+    share = pair_torque / np.maximum(pair_torque.sum(axis=-1, keepdims=True), 1e-300)
+    share = np.where(found[..., None] > 0, share, np.nan)
+    lte = (ute_env[None, :] + rotation) * 1e6  # urad
+    # edge contact: a loaded first or last segment of a curve (the flank boundary)
+    loaded = contact > 0
+    edge = (loaded[..., 0] | loaded[..., -1]).astype(np.int8)
+    pairs_in_contact = np.sum(np.any(loaded, axis=-1), axis=-1)
+    # LTE summary over the mesh cycles
+    harm = np.full((NT, 3), np.nan)
+    summ = {k: np.full(NT, np.nan) for k in ("mean", "peak_to_peak", "rms", "harmonic_rss")}
+    for it in range(NT):
+        if np.all(np.isfinite(lte[it])):
+            s = transmission_error_summary(roll, lte[it], eo.pitch, 3)
+            harm[it] = s["harmonics"]
+            for k in summ:
+                summ[k][it] = s[k]
+    # loaded contact pattern: envelope of the maximum pressure on the gear grid nodes
+    nu, nv = eo.u.size, eo.v.size
+    env = np.zeros((NT, nu, nv))
+    # the ease-off grid fractions are uniform in [u0, u1] × [v0, v1]: nearest node
+    u0, u1 = float(eo.u[0]), float(eo.u[-1])
+    v0, v1 = float(eo.v[0]), float(eo.v[-1])
+    ui = np.rint((seg["u"] - u0) / (u1 - u0) * (nu - 1))
+    vi = np.rint((seg["v"] - v0) / (v1 - v0) * (nv - 1))
+    good = np.isfinite(ui) & np.isfinite(vi)
+    uu = np.clip(np.where(good, ui, 0), 0, nu - 1).astype(int)
+    vv = np.clip(np.where(good, vi, 0), 0, nv - 1).astype(int)
+    for it in range(NT):
+        p = np.nan_to_num(out["pressure_max"][it])
+        np.maximum.at(env[it], (uu[good], vv[good]), p[good])
+    pairs = np.asarray(opts.pairs)
+    dims4 = ("torque", "roll", "pair", "segment")
+    dims3 = ("torque", "roll", "pair")
+    dims2 = ("torque", "roll")
+    data = {
+        "transmission_error": _var(dims2, lte, "urad",
+                                   "loaded transmission error (gear lag, UTE + loaded rotation)"),
+        "loaded_rotation": _var(dims2, rotation * 1e6, "urad",
+                                "loaded rotation Theta of the contact problem"),
+        "unloaded_transmission_error": _var(("roll",), ute_env * 1e6, "urad",
+                                            "unloaded transmission error (lower envelope)"),
+        "force": _var(dims4, out["force"], "N", "segment force"),
+        "load_per_length": _var(dims4, out["load_per_length"], "N/mm", "load per unit length"),
+        "pressure_max": _var(dims4, out["pressure_max"], "MPa",
+                             "maximum Hertzian pressure (line contact)"),
+        "half_width": _var(dims4, out["half_width"], "mm", "Hertzian half-width"),
+        "contact": _var(dims4, contact, "1", "segment in contact (1) or open (0)"),
+        "in_problem": _var(dims4, in_problem, "1",
+                           "segment within the separation limit (1) or left out (0)"),
+        "separation": _var(("roll", "pair", "segment"), sep_all, "mm",
+                           "initial separation (ease-off relative to the UTE)"),
+        "moment_arm": _var(("roll", "pair", "segment"), seg["moment_arm"], "mm",
+                           "moment arm of the contact normal about the gear axis"),
+        "segment_length": _var(("roll", "pair", "segment"), seg["length"], "mm",
+                               "segment length"),
+        "equivalent_radius": _var(("roll", "pair", "segment"), seg["r_eq"], "mm",
+                                  "equivalent radius across the contact line"),
+        "segment_u": _var(("roll", "pair", "segment"), seg["u"], "1",
+                          "gear lengthwise fraction of the segment midpoint (toe 0, heel 1)"),
+        "segment_v": _var(("roll", "pair", "segment"), seg["v"], "1",
+                          "gear profile fraction of the segment midpoint (root 0, tip 1)"),
+        "segment_position": _var(("roll", "pair", "segment", "xyz"), seg["midpoint"], "mm",
+                                 "segment midpoint on the reference gear tooth, gear frame"),
+        "load_share": _var(dims3, share, "1", "share of the gear torque carried by the pair"),
+        "edge_contact": _var(dims3, edge, "1",
+                             "load reaches the end of the pair's contact curve (flank edge)"),
+        "pairs_in_contact": _var(dims2, pairs_in_contact, "1", "number of pairs in contact"),
+        "found": _var(dims2, found, "1", "certified solution found (1) or not (0)"),
+        "status": _var(dims2, status.astype(str), None, "solver status"),
+        "solve_time": _var(dims2, solve_time, "s", "solver time over the Weber iterations"),
+        "weber_iterations": _var(dims2, weber_iters, "1", "Weber linearisation iterations"),
+        "compliance_time": _var(("roll",), compliance_time, "s", "compliance assembly time"),
+        "n_segments": _var(("roll",), n_seg, "1", "segments in the contact problem"),
+        **{f"residual_{r}": _var(dims2, resid[r], "1", f"relative {r} residual")
+           for r in _RESIDUALS},
+        "lte_mean": _var(("torque",), summ["mean"], "urad", "mean loaded transmission error"),
+        "lte_peak_to_peak": _var(("torque",), summ["peak_to_peak"], "urad",
+                                 "peak-to-peak loaded transmission error"),
+        "lte_harmonics": _var(("torque", "harmonic"), harm, "urad",
+                              "amplitude of the mesh harmonics of the LTE"),
+        "lte_rms": _var(("torque",), summ["rms"], "urad", "RMS of the LTE about its mean"),
+        "lte_harmonic_rss": _var(("torque",), summ["harmonic_rss"], "urad",
+                                 "root-sum-square of the first three harmonic amplitudes "
+                                 "(the seed's Table 3.1 RMS)"),
+        "pressure_envelope": _var(("torque", "u", "v"), env, "MPa",
+                                  "loaded contact pattern: envelope of the maximum pressure "
+                                  "over the roll positions, on the gear grid"),
+    }
+    coords = {
+        "torque": ("torque", torques, {"units": "N m", "long_name": "gear torque"}),
+        "roll": ("roll", roll, {"units": "rad",
+                                "long_name": "pinion roll angle (Q units, driving sense)"}),
+        "pair": ("pair", pairs, {"units": "1", "long_name": "tooth-pair offset"}),
+        "segment": ("segment", np.arange(S), {"units": "1", "long_name": "segment index"}),
+        "harmonic": ("harmonic", np.arange(1, 4), {"units": "1",
+                                                   "long_name": "mesh harmonic order"}),
+        "u": ("u", np.asarray(eo.u), {"units": "1", "long_name": "gear lengthwise fraction"}),
+        "v": ("v", np.asarray(eo.v), {"units": "1", "long_name": "gear profile fraction"}),
+        "xyz": ("xyz", ["x", "y", "z"], {"long_name": "Cartesian component"}),
+        "mesh_cycle": ("roll", (roll - roll[0]) / eo.pitch,
+                       {"units": "1", "long_name": "mesh cycles from the first roll position"}),
+    }
+    attrs = {
+        "title": "loaded tooth contact analysis",
+        "case": case.name,
+        "toolkit_version": __version__,
+        "pinion_flank": eo.pinion_flank,
+        "gear_flank": eo.gear_flank,
+        "solver": opts.solver,
+        "mesh_period_rad": eo.pitch,
+        "transition_M1_rad": float(m1),
+        "transition_M2_rad": float(m2),
+        "options": json_options(opts),
+        "time_easeoff_s": timing["easeoff"],
+        "time_segments_s": timing["segments"],
+        "misalignment": json_misalignment(case.misalignment),
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def json_options(opts: LTCAOptions) -> str:
+    """The options as JSON text (netCDF-safe)."""
+    import json
+
+    return json.dumps(dataclasses.asdict(opts), sort_keys=True)
+
+
+def json_misalignment(m) -> str:
+    """A Misalignment as JSON text (ΔE, ΔP, ΔG [mm], ΔΣ [rad])."""
+    import json
+
+    return json.dumps(dataclasses.asdict(m), sort_keys=True, default=float)
