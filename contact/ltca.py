@@ -267,7 +267,9 @@ def loaded_tca(
     ----------
     case : geometry.case.Case
     torque : float or sequence of float — [N·m]
-        Gear torques (> 0).
+        Pinion torques T_p (> 0), the seed's operating variable (Fig. 3.6, Table 3.1).
+        The contact problem carries the gear torque T_g = T_p z_g/z_p (static and
+        lossless: friction enters only in the efficiency stage).
     misalignment : geometry.assembly.Misalignment, optional
         ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own.
     flank : str, optional
@@ -345,7 +347,7 @@ def loaded_tca(
         built_for = b""
         ok = np.isfinite(sep_all[j]) & np.isfinite(seg["r_eq"][j]) & (seg["length"][j] > 0)
         for it, T in enumerate(torques):
-            limit = opts.separation_limit or (0.05 + 0.15 * T / 1000.0)
+            limit = opts.separation_limit or (0.05 + 0.15 * T * eo.ratio / 1000.0)
             sel = ok & (sep_all[j] <= limit)
             idx = np.argwhere(sel)  # (N, 2): pair index, segment index
             if idx.size == 0:
@@ -376,7 +378,7 @@ def loaded_tca(
             Req = seg["r_eq"][j, kk, ss]
             R = seg["moment_arm"][j, kk, ss]
             s = sep_all[j, kk, ss]
-            Tn = T * 1e3  # N·mm
+            Tn = T * eo.ratio * 1e3  # gear torque [N·mm]
             load = np.full(kk.size, Tn / max(float(R.sum()), 1e-12))
             lte_prev = None
             sol = None
@@ -520,7 +522,9 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
                                   "over the roll positions, on the gear grid"),
     }
     coords = {
-        "torque": ("torque", torques, {"units": "N m", "long_name": "gear torque"}),
+        "torque": ("torque", torques, {"units": "N m", "long_name": "pinion torque"}),
+        "gear_torque": ("torque", torques * eo.ratio,
+                        {"units": "N m", "long_name": "gear torque (lossless)"}),
         "roll": ("roll", roll, {"units": "rad",
                                 "long_name": "pinion roll angle (Q units, driving sense)"}),
         "pair": ("pair", pairs, {"units": "1", "long_name": "tooth-pair offset"}),

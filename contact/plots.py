@@ -11,6 +11,12 @@ plot_easeoff             ease-off topography with iso-lines of the roll angle (s
 plot_contact_pattern     contact lines, pattern, LPP/CPP/RPP and the M1, M2 bounds (Fig. 2.10)
 plot_transmission_error  UTE of adjacent pairs, lower envelope, M1, M2, peak-to-peak (Fig. 2.9)
 plot_utca                all three into a directory
+plot_loaded_transmission_error  LTE over the mesh cycles for each torque (seed Fig. 3.6)
+plot_pressure            maximum pressure of every segment over the mesh cycles on the gear
+                         flank, and the loaded contact pattern (seed Fig. 3.7)
+plot_load_share          load share of each tooth pair over the mesh cycles
+plot_ltca                the LTCA plots into a directory
+plot_analysis            every plot of a whole analysis (DataTree), e.g. read back from netCDF
 """
 
 from __future__ import annotations
@@ -23,7 +29,17 @@ import xarray as xr
 
 from geometry.errors import InputError
 
-__all__ = ["plot_contact_pattern", "plot_easeoff", "plot_transmission_error", "plot_utca"]
+__all__ = [
+    "plot_analysis",
+    "plot_contact_pattern",
+    "plot_easeoff",
+    "plot_load_share",
+    "plot_loaded_transmission_error",
+    "plot_ltca",
+    "plot_pressure",
+    "plot_transmission_error",
+    "plot_utca",
+]
 
 
 def _pyplot():
@@ -278,3 +294,155 @@ def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
     return [plot_easeoff(easeoff, d / "easeoff.png"),
             plot_contact_pattern(easeoff, utca, d / "contact_pattern.png"),
             plot_transmission_error(utca, d / "transmission_error.png")]
+
+
+def plot_loaded_transmission_error(ltca: xr.Dataset, path: str | os.PathLike[str]) -> Path:
+    """Loaded transmission error over the mesh cycles, one curve per torque (seed Fig. 3.6).
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        The ``/ltca`` dataset of :func:`contact.ltca.loaded_tca`.
+    path : path-like
+        PNG to write (its directory must exist).
+
+    Returns
+    -------
+    pathlib.Path
+    """
+    _require(ltca, ["transmission_error", "mesh_cycle"], "ltca")
+    plt = _pyplot()
+    out = _target(path)
+    nt = ltca.sizes["torque"]
+    fig, axes = plt.subplots(nt, 1, figsize=(6.5, 2.2 * nt + 0.6), sharex=True, squeeze=False)
+    x = ltca["mesh_cycle"].values
+    for i, ax in enumerate(axes[:, 0]):
+        te = ltca["transmission_error"].isel(torque=i).values
+        T = float(ltca["torque"].values[i])
+        ax.plot(x, te, "o-", ms=3, lw=1.2, color="C0")
+        pp = float(np.nanmax(te) - np.nanmin(te)) if np.any(np.isfinite(te)) else float("nan")
+        ax.set_title(f"T_p = {T:g} N m: mean {np.nanmean(te):.1f} urad, p-p {pp:.1f} urad",
+                     fontsize=9)
+        ax.set_ylabel("LTE [urad]")
+        ax.grid(alpha=0.3)
+    axes[-1, 0].set_xlabel("mesh cycles")
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return out
+
+
+def _flank_xy(easeoff: xr.Dataset, u, v):
+    from scipy.interpolate import RegularGridInterpolator
+
+    uu, vv = easeoff["u"].values, easeoff["v"].values
+    z = easeoff["axial_position"].values
+    r = easeoff["radial_position"].values
+    pts = np.column_stack([np.clip(np.ravel(u), uu[0], uu[-1]),
+                           np.clip(np.ravel(v), vv[0], vv[-1])])
+    fz = RegularGridInterpolator((uu, vv), np.nan_to_num(z))
+    fr = RegularGridInterpolator((uu, vv), np.nan_to_num(r))
+    return fz(pts).reshape(np.shape(u)), fr(pts).reshape(np.shape(u))
+
+
+def plot_pressure(easeoff: xr.Dataset, ltca: xr.Dataset, path: str | os.PathLike[str],
+                  torque_index: int = -1) -> Path:
+    """Pressure distribution on the gear flank over the mesh cycles (seed Fig. 3.7).
+
+    Every loaded segment of every roll position and pair is drawn at its place on the gear
+    flank (projection plane), coloured by its maximum Hertzian pressure; the outline and
+    toe/heel/root/tip labels as in :func:`plot_easeoff`.
+
+    Parameters
+    ----------
+    easeoff, ltca : xarray.Dataset
+    path : path-like
+    torque_index : int
+        Which torque to draw (default the largest, the last).
+
+    Returns
+    -------
+    pathlib.Path
+    """
+    _require(ltca, ["pressure_max", "segment_u", "segment_v"], "ltca")
+    plt = _pyplot()
+    out = _target(path)
+    sel = ltca.isel(torque=torque_index)
+    p = sel["pressure_max"].values
+    u = np.broadcast_to(ltca["segment_u"].values, p.shape)
+    v = np.broadcast_to(ltca["segment_v"].values, p.shape)
+    m = np.isfinite(p) & (p > 0) & np.isfinite(u) & np.isfinite(v)
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    _outline(ax, easeoff)
+    if np.any(m):
+        x, y = _flank_xy(easeoff, u[m], v[m])
+        order = np.argsort(p[m])
+        sc = ax.scatter(x[order], y[order], c=p[m][order], s=6, cmap="jet", vmin=0)
+        fig.colorbar(sc, ax=ax, label="max. pressure [MPa]")
+    T = float(ltca["torque"].values[torque_index])
+    pmax = float(np.nanmax(p)) if np.any(np.isfinite(p)) else float("nan")
+    ax.set_title(f"gear flank pressure, T_p = {T:g} N m (peak {pmax:.0f} MPa)", fontsize=9)
+    ax.set_xlabel("axial position [mm]")
+    ax.set_ylabel("radius [mm]")
+    ax.set_aspect("equal", adjustable="datalim")
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+    return out
+
+
+def plot_load_share(ltca: xr.Dataset, path: str | os.PathLike[str]) -> Path:
+    """Load share of each tooth pair over the mesh cycles, one panel per torque."""
+    _require(ltca, ["load_share", "mesh_cycle"], "ltca")
+    plt = _pyplot()
+    out = _target(path)
+    nt = ltca.sizes["torque"]
+    fig, axes = plt.subplots(nt, 1, figsize=(6.5, 2.0 * nt + 0.6), sharex=True, squeeze=False)
+    x = ltca["mesh_cycle"].values
+    for i, ax in enumerate(axes[:, 0]):
+        share = ltca["load_share"].isel(torque=i)
+        for k, pair in enumerate(ltca["pair"].values):
+            y = share.isel(pair=k).values
+            if np.nanmax(np.nan_to_num(y)) > 0:
+                ax.plot(x, y, "o-", ms=2.5, lw=1, label=f"pair {int(pair):+d}")
+        ax.set_ylim(-0.02, 1.02)
+        ax.set_ylabel("load share")
+        ax.set_title(f"T_p = {float(ltca['torque'].values[i]):g} N m", fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, ncol=4)
+    axes[-1, 0].set_xlabel("mesh cycles")
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return out
+
+
+def plot_ltca(easeoff: xr.Dataset, ltca: xr.Dataset, directory: str | os.PathLike[str]
+              ) -> list[Path]:
+    """The LTCA plots (LTE, pressure at each torque, load share) into ``directory``."""
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    out = [plot_loaded_transmission_error(ltca, d / "ltca_transmission_error.png"),
+           plot_load_share(ltca, d / "ltca_load_share.png")]
+    for i, T in enumerate(ltca["torque"].values):
+        out.append(plot_pressure(easeoff, ltca, d / f"ltca_pressure_{float(T):g}Nm.png", i))
+    return out
+
+
+def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str]) -> list[Path]:
+    """Every plot of an analysis from its DataTree alone (e.g. ``read_netcdf(file)``).
+
+    Raises
+    ------
+    InputError
+        If the tree lacks the ``/easeoff`` group.
+    """
+    if "easeoff" not in tree.children:
+        raise InputError("tree: has no /easeoff group (not a hypoid-ltca analysis file)")
+    eo = tree["easeoff"].to_dataset()
+    out: list[Path] = []
+    if "utca" in tree.children:
+        out += plot_utca(eo, tree["utca"].to_dataset(), directory)
+    if "ltca" in tree.children:
+        out += plot_ltca(eo, tree["ltca"].to_dataset(), directory)
+    return out

@@ -616,7 +616,8 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
                  flank: str | None = None, n_roll: int = 30, pairs=(-1, 0, 1),
                  separation: float = DEFAULT_SEPARATION, grid: dict | None = None,
                  method: str = "second_order",
-                 n_point: int = 41) -> tuple[xr.Dataset, xr.Dataset]:
+                 n_point: int = 41,
+                 easeoff: EaseOff | None = None) -> tuple[xr.Dataset, xr.Dataset]:
     """Ease-off based unloaded TCA of a case over one mesh cycle (seed §2.3.2, §2.4, §4.4).
 
     Parameters
@@ -641,6 +642,10 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
         ``"second_order"`` (default) or ``"seed"``, see :func:`contact_curves`.
     n_point : int
         Samples along each contact curve (≥ 3).
+    easeoff : contact.easeoff.EaseOff, optional
+        A precomputed ease-off of the same case, flank, misalignment and grid (the LTCA
+        pipeline shares one); ``flank``, ``misalignment`` and ``grid`` are then not used
+        to rebuild it.
 
     Returns
     -------
@@ -677,7 +682,8 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
         raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
     if int(n_point) != n_point or n_point < 3:
         raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
-    eo = ease_off(case, flank=flank, misalignment=misalignment, grid=grid)
+    eo = easeoff if easeoff is not None else ease_off(case, flank=flank,
+                                                      misalignment=misalignment, grid=grid)
     f = _Fields(eo)
     p = eo.pitch
     kw = dict(method=method, fields=f, n_point=n_point)

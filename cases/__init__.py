@@ -1,0 +1,1 @@
+"""Bundled gear-pair cases (TOML), installed as the package data ``contact.cases``."""

@@ -1,0 +1,114 @@
+"""``ltca run`` and ``ltca plot``: the whole analysis of a case, and its plots from a file."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from pathlib import Path
+
+#: Place in ``ltca --help``.
+ORDER = 10
+
+
+def _misalignment_args(p) -> None:
+    p.add_argument("--dE", type=float, default=None, help="offset error ΔE [mm]")
+    p.add_argument("--dP", type=float, default=None, help="pinion mounting error ΔP [mm]")
+    p.add_argument("--dG", type=float, default=None, help="gear mounting error ΔG [mm]")
+    p.add_argument("--dSigma", type=float, default=None, help="shaft angle error ΔΣ [deg]")
+
+
+def misalignment_from_args(args, base):
+    """A Misalignment from ``--dE --dP --dG --dSigma`` over ``base`` (None: all unset)."""
+    from geometry.assembly import Misalignment
+
+    given = {k: getattr(args, k) for k in ("dE", "dP", "dG", "dSigma")}
+    if all(v is None for v in given.values()):
+        return base
+    b = base or Misalignment()
+    return Misalignment(
+        delta_E=b.delta_E if given["dE"] is None else given["dE"],
+        delta_P=b.delta_P if given["dP"] is None else given["dP"],
+        delta_G=b.delta_G if given["dG"] is None else given["dG"],
+        delta_Sigma=b.delta_Sigma if given["dSigma"] is None else math.radians(given["dSigma"]),
+    )
+
+
+def register(sub) -> None:
+    """Add the sub-commands to an ``argparse`` sub-parser collection."""
+    p = sub.add_parser(
+        "run",
+        help="loaded TCA of a case (default: the bundled 11x41 pair at the seed's Table 3.1)",
+        description="Geometry, ease-off UTCA and loaded TCA of a case at one or more torques; "
+        "prints a summary, writes one netCDF (/geometry, /easeoff, /utca, /ltca) and plots. "
+        "Without CASE: the bundled default case at the seed's Table 3.1 conditions "
+        "(pinion torque 50/250/500 N m, ΔE = 0.15 mm, ΔP = 0.12 mm).",
+    )
+    p.add_argument("case", nargs="?", default=None,
+                   help="case file (TOML) or bundled case name (default: the 11x41 pair)")
+    p.add_argument("--torque", type=float, nargs="+", default=None, metavar="N_M",
+                   help="pinion torques [N m] (default 50 250 500)")
+    _misalignment_args(p)
+    p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
+    p.add_argument("--flank", choices=["drive", "coast"], default=None)
+    p.add_argument("--rolls-per-cycle", type=int, default=20)
+    p.add_argument("--segments", type=int, default=24, help="segments per contact curve")
+    p.add_argument("-o", "--output", default="ltca.nc", help="netCDF file (default ltca.nc)")
+    p.add_argument("--plots", default=None, metavar="DIR", help="write PNG plots into DIR")
+    p.add_argument("--no-progress", action="store_true")
+    p.set_defaults(func=run)
+
+    q = sub.add_parser("plot", help="redraw every plot of an analysis from its netCDF file")
+    q.add_argument("file", help="netCDF file written by `ltca run`")
+    q.add_argument("--plots", default="plots", metavar="DIR", help="directory (default plots)")
+    q.set_defaults(func=plot)
+
+
+def run(args: argparse.Namespace) -> int:
+    from tabulate import tabulate
+
+    from contact.io import write_netcdf
+    from contact.ltca import LTCAOptions
+    from contact.pipeline import SEED_TABLE_3_1, resolve_case, run_analysis
+    from contact.plots import plot_analysis
+
+    case = resolve_case(args.case)
+    base = SEED_TABLE_3_1["misalignment"] if args.case is None else case.misalignment
+    mis = misalignment_from_args(args, base)
+    opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle, segments=args.segments,
+                       **({"solver": args.solver} if args.solver else {}))
+    tree = run_analysis(case, args.torque, misalignment=mis, flank=args.flank, options=opts,
+                        progress=not args.no_progress and sys.stderr.isatty())
+    lt = tree["ltca"].to_dataset()
+    print(f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
+          f"ΔG {mis.delta_G:g} mm, ΔΣ {math.degrees(mis.delta_Sigma) * 60:g}′; "
+          f"solver {lt.attrs['solver']}")
+    rows = []
+    for i, T in enumerate(lt["torque"].values):
+        h = lt["lte_harmonics"].values[i]
+        rows.append((f"{T:g}", f"{lt['lte_mean'].values[i]:.1f}",
+                     f"{lt['lte_peak_to_peak'].values[i]:.1f}", f"{h[0]:.1f}", f"{h[1]:.1f}",
+                     f"{h[2]:.1f}", f"{lt['lte_harmonic_rss'].values[i]:.1f}",
+                     f"{float(lt['pressure_max'].isel(torque=i).max()):.0f}",
+                     f"{int(lt['found'].isel(torque=i).sum())}/{lt.sizes['roll']}"))
+    print(tabulate(rows, headers=["T_p [N m]", "LTE mean [urad]", "p-p", "1st", "2nd", "3rd",
+                                  "RMS*", "p_max [MPa]", "certified"], tablefmt="github"))
+    print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
+    times = {k[5:-2]: v for k, v in tree.attrs.items() if k.startswith("time_")}
+    print("time [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in times.items()))
+    path = write_netcdf(tree, Path(args.output), inputs=tree.attrs["inputs"])
+    print(f"wrote {path}")
+    if args.plots:
+        for p in plot_analysis(tree, args.plots):
+            print(f"wrote {p}")
+    return 0
+
+
+def plot(args: argparse.Namespace) -> int:
+    from contact.io import read_netcdf
+    from contact.plots import plot_analysis
+
+    tree = read_netcdf(args.file, tree=True)
+    for p in plot_analysis(tree, args.plots):
+        print(f"wrote {p}")
+    return 0

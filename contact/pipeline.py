@@ -1,0 +1,176 @@
+"""The whole analysis of a case as one DataTree: geometry → ease-off/UTCA → LTCA.
+
+Like pvlib's ``ModelChain`` this only wires the stage functions together; each stage
+can be called on its own. The tree's groups are ``/geometry`` (``/geometry/pinion/
+concave`` …), ``/easeoff``, ``/utca`` and ``/ltca``; the root records the case (as
+TOML text), the toolkit version and the operating conditions, so the netCDF file alone
+says how it was produced.
+
+The bundled cases live in ``cases/`` (installed as the package data
+``contact.cases``); :data:`DEFAULT_CASE` is the seed's 11×41 face-milled hypoid pair,
+and :data:`SEED_TABLE_3_1` its operating points (seed Fig. 3.6, Table 3.1).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import os
+import time
+from importlib import resources
+from pathlib import Path
+
+import xarray as xr
+
+from contact.easeoff import ease_off
+from contact.ltca import LTCAOptions, loaded_tca
+from contact.utca import unloaded_tca
+from geometry._version import __version__
+from geometry.assembly import Misalignment
+from geometry.case import Case, load_case
+from geometry.errors import InputError
+from geometry.flank import geometry_datasets
+
+__all__ = [
+    "DEFAULT_CASE",
+    "SEED_TABLE_3_1",
+    "bundled_case_path",
+    "bundled_cases",
+    "resolve_case",
+    "run_analysis",
+]
+
+log = logging.getLogger(__name__)
+
+#: File name of the default case (the seed's Table 2.1 / 4.1 pair, synthesised).
+DEFAULT_CASE = "kolivand2009_fm_11x41.toml"
+
+#: The seed's Table 3.1 operating points: pinion torques [N·m] and misalignment
+#: ΔE = 0.15 mm, ΔP = 0.12 mm, ΔG = 0, ΔΣ = 0 (signs as printed; see docs/machine.md
+#: for the toolkit's convention).
+SEED_TABLE_3_1 = {"torque": (50.0, 250.0, 500.0),
+                  "misalignment": Misalignment(delta_E=0.15, delta_P=0.12)}
+
+
+def bundled_cases() -> list[str]:
+    """File names of the cases shipped with the toolkit."""
+    root = resources.files("contact.cases")
+    return sorted(p.name for p in root.iterdir() if p.name.endswith(".toml"))
+
+
+def bundled_case_path(name: str = DEFAULT_CASE) -> Path:
+    """Path of a bundled case file.
+
+    Raises
+    ------
+    InputError
+        Unknown name (the message lists the bundled cases).
+    """
+    root = resources.files("contact.cases")
+    fname = name if name.endswith(".toml") else f"{name}.toml"
+    path = root / fname
+    if not path.is_file():
+        raise InputError(f"case: no bundled case {name!r}; bundled: {', '.join(bundled_cases())}")
+    return Path(str(path))
+
+
+def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
+    """A Case from a Case, a file path, a bundled case name, or None (the default case)."""
+    if isinstance(case, Case):
+        return case
+    if case is None:
+        return load_case(bundled_case_path())
+    path = Path(case)
+    if path.is_file():
+        return load_case(path)
+    return load_case(bundled_case_path(str(case)))
+
+
+def run_analysis(
+    case: Case | str | os.PathLike[str] | None = None,
+    torque=None,
+    *,
+    misalignment: Misalignment | None = None,
+    solver: str | None = None,
+    flank: str | None = None,
+    options: LTCAOptions | None = None,
+    geometry: bool = True,
+    progress: bool = False,
+) -> xr.DataTree:
+    """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
+
+    Parameters
+    ----------
+    case : Case, path, bundled name, or None
+        None runs the bundled default case (:data:`DEFAULT_CASE`).
+    torque : float or sequence — [N·m], optional
+        Pinion torques; default the seed's Table 3.1 values (50, 250, 500).
+    misalignment : geometry.assembly.Misalignment, optional
+        Default: the case's own ``[misalignment]``.
+    solver : str, optional
+        Solver registry name (default our exact ``active_set``).
+    flank : str, optional
+        ``"drive"`` (default) or ``"coast"``.
+    options : contact.ltca.LTCAOptions, optional
+    geometry : bool
+        Include the four generated flanks as ``/geometry`` (default True).
+    progress : bool
+        Progress bar over the LTCA roll positions.
+
+    Returns
+    -------
+    xarray.DataTree
+        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca``; root attributes
+        ``case``, ``inputs`` (the case as TOML), per-stage times ``time_*_s``.
+
+    Raises
+    ------
+    InputError
+        Bad case, torque, misalignment or options (the message names the field).
+    """
+    c = resolve_case(case)
+    if misalignment is not None:
+        c = dataclasses.replace(c, misalignment=misalignment)
+    torques = SEED_TABLE_3_1["torque"] if torque is None else torque
+    opts = options or LTCAOptions()
+    if solver is not None:
+        opts = dataclasses.replace(opts, solver=solver)
+    times: dict[str, float] = {}
+    tree: dict[str, xr.Dataset] = {}
+    t0 = time.perf_counter()
+    if geometry:
+        for (m, f), ds in geometry_datasets(c).items():
+            tree[f"/geometry/{m}/{f}"] = ds
+    times["geometry"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    eo = ease_off(c, flank=flank)
+    times["easeoff"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
+    times["utca"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    ltca_ds = loaded_tca(c, torques, flank=flank, options=opts, easeoff=eo, progress=progress)
+    times["ltca"] = time.perf_counter() - t0
+    tree["/easeoff"] = eo_ds
+    tree["/utca"] = utca_ds
+    tree["/ltca"] = ltca_ds
+    mis = c.misalignment
+    root = xr.Dataset(attrs={
+        "title": f"hypoid-ltca analysis of {c.name}",
+        "case": c.name,
+        "case_source": c.source,
+        "toolkit_version": __version__,
+        "solver": opts.solver,
+        "misalignment_dE_mm": float(mis.delta_E),
+        "misalignment_dP_mm": float(mis.delta_P),
+        "misalignment_dG_mm": float(mis.delta_G),
+        "misalignment_dSigma_rad": float(mis.delta_Sigma),
+        **{f"time_{k}_s": v for k, v in times.items()},
+    })
+    tree["/"] = root
+    out = xr.DataTree.from_dict(tree)
+    out.attrs["inputs"] = c.to_toml()
+    if not math.isfinite(float(ltca_ds["transmission_error"].mean())):
+        log.warning("some roll positions have no certified solution (see /ltca status)")
+    return out
