@@ -343,36 +343,43 @@ def loaded_tca(
         from tqdm.auto import tqdm
 
         bar = tqdm(total=J, desc="LTCA", unit="roll")
+    def limit_of(T: float) -> float:
+        return opts.separation_limit or (0.05 + 0.15 * T * eo.ratio / 1000.0)
+
     for j in range(J):
-        built_for = b""
         ok = np.isfinite(sep_all[j]) & np.isfinite(seg["r_eq"][j]) & (seg["length"][j] > 0)
+        # compliance once per roll for the widest selection (the largest torque's limit):
+        # a smaller selection's structural compliance is its sub-matrix
+        wide = ok & (sep_all[j] <= max(limit_of(T) for T in torques))
+        widx = np.argwhere(wide)
+        if widx.size:
+            tc = time.perf_counter()
+            wk, ws = widx[:, 0], widx[:, 1]
+            segs = ContactSegments(
+                midpoints=seg["midpoint_pair"][j, wk, ws],
+                ends=seg["ends_pair"][j, wk, ws],
+                normals=seg["normal_pair"][j, wk, ws],
+                length=seg["length"][j, wk, ws],
+                r_eq=seg["r_eq"][j, wk, ws],
+                pair_index=np.asarray(opts.pairs)[wk],
+                load=np.ones(wk.size),
+                pinion_rotation=float(seg["pinion_rotation"][j]),
+                gear_rotation=float(seg["gear_rotation"][j]),
+            )
+            C_full, info = mesh_compliance(case, segs, model=model)
+            C_wide = C_full - info["weber"]
+            depth_wide = info["weber_depth"]
+            compliance_time[j] = time.perf_counter() - tc
         for it, T in enumerate(torques):
-            limit = opts.separation_limit or (0.05 + 0.15 * T * eo.ratio / 1000.0)
-            sel = ok & (sep_all[j] <= limit)
+            sel = ok & (sep_all[j] <= limit_of(T))
             idx = np.argwhere(sel)  # (N, 2): pair index, segment index
             if idx.size == 0:
                 status[it, j] = "no segment within the separation limit"
                 continue
             kk, ss = idx[:, 0], idx[:, 1]
-            key = sel.tobytes()
-            if key != built_for:
-                tc = time.perf_counter()
-                segs = ContactSegments(
-                    midpoints=seg["midpoint_pair"][j, kk, ss],
-                    ends=seg["ends_pair"][j, kk, ss],
-                    normals=seg["normal_pair"][j, kk, ss],
-                    length=seg["length"][j, kk, ss],
-                    r_eq=seg["r_eq"][j, kk, ss],
-                    pair_index=np.asarray(opts.pairs)[kk],
-                    load=np.ones(kk.size),
-                    pinion_rotation=float(seg["pinion_rotation"][j]),
-                    gear_rotation=float(seg["gear_rotation"][j]),
-                )
-                C_full, info = mesh_compliance(case, segs, model=model)
-                C_struct = C_full - info["weber"]
-                depth = info["weber_depth"]
-                compliance_time[j] += time.perf_counter() - tc
-                built_for = key
+            sub = np.flatnonzero(sel[wide])  # positions of the selection within the wide set
+            C_struct = C_wide[np.ix_(sub, sub)]
+            depth = depth_wide[sub]
             n_seg[j] = max(n_seg[j], kk.size)
             L = seg["length"][j, kk, ss]
             Req = seg["r_eq"][j, kk, ss]
@@ -443,10 +450,12 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
     # LTE summary over the mesh cycles
     harm = np.full((NT, 3), np.nan)
     summ = {k: np.full(NT, np.nan) for k in ("mean", "peak_to_peak", "rms", "harmonic_rss")}
+    # harmonics the roll sampling resolves: 2n + 1 ≤ samples per cycle (else NaN)
+    n_h = min(3, (roll.size // max(opts.cycles, 1) - 1) // 2)
     for it in range(NT):
-        if np.all(np.isfinite(lte[it])):
-            s = transmission_error_summary(roll, lte[it], eo.pitch, 3)
-            harm[it] = s["harmonics"]
+        if np.all(np.isfinite(lte[it])) and n_h >= 1:
+            s = transmission_error_summary(roll, lte[it], eo.pitch, n_h)
+            harm[it, :n_h] = s["harmonics"]
             for k in summ:
                 summ[k][it] = s[k]
     # loaded contact pattern: envelope of the maximum pressure on the gear grid nodes
