@@ -211,24 +211,36 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     ok = np.isfinite(u) & np.isfinite(v)
     r_eq = np.full(u.shape, np.nan)
     if np.any(ok):
-        uu, vv = u[ok], v[ok]
+        # the envelope solver continues from neighbouring targets, so the midpoints are
+        # handed over as a 2-D array of curves ordered (pair, roll): neighbours are close
+        order = np.transpose(np.arange(J * K).reshape(J, K))  # (K, J) → curve index
+        rows = order.reshape(-1)
+        okc = ok.reshape(J * K, S)[rows]
+        keep = np.any(okc, axis=1)
+        rows, okc = rows[keep], okc[keep]
+        uu = _fill_rows(u.reshape(J * K, S)[rows], okc)
+        vv = _fill_rows(v.reshape(J * K, S)[rows], okc)
+        pg = pos_g.reshape(J * K, S, 3)[rows]
+        pg = np.stack([_fill_rows(pg[..., i], okc) for i in range(3)], axis=-1)
         pz = _spline(eo, eo.pinion_axial).ev(uu, vv)
         pr = _spline(eo, eo.pinion_radius).ev(uu, vv)
-        gz, gr = pos_g[ok][:, 2], np.hypot(pos_g[ok][:, 0], pos_g[ok][:, 1])
-        gs = flank_at(case, "gear", eo.gear_flank, gz, gr)
+        gs = flank_at(case, "gear", eo.gear_flank, pg[..., 2], np.hypot(pg[..., 0], pg[..., 1]))
         ps = flank_at(case, "pinion", eo.pinion_flank, pz, pr)
         # across-line direction w = n × t in the gear frame, carried to the pinion frame
-        t = np.diff(cc.position, axis=-2)[ok]
-        t /= np.linalg.norm(t, axis=-1, keepdims=True)
-        w_g = np.cross(nrm_g[ok], t)
-        w_pair = gear_to_pair(np.where(ok[..., None], np.cross(nrm_g, _tangent(cc)), 0.0),
-                              vec=True)[ok]
-        phi_seg = np.broadcast_to(phi[..., None], u.shape)[ok]
+        w_g = np.cross(nrm_g, _tangent(cc))  # (J, K, S, 3)
+        w_pair = gear_to_pair(np.nan_to_num(w_g), vec=True)
+        phi_seg = np.broadcast_to(phi[..., None], u.shape)
         w_p = _rotate_about(ap, -phi_seg, w_pair) @ rot_p
-        kg = normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, w_g)
-        kp = normal_curvature(ps.kappa1, ps.kappa2, ps.dir1, w_p)
-        krel = kp + kg
-        r_eq[ok] = np.where(krel > 1e-6, 1.0 / np.maximum(krel, 1e-6), 1e6)
+        wg_r = w_g.reshape(J * K, S, 3)[rows]
+        wp_r = w_p.reshape(J * K, S, 3)[rows]
+        kg = normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, np.nan_to_num(wg_r))
+        kp = normal_curvature(ps.kappa1, ps.kappa2, ps.dir1, np.nan_to_num(wp_r))
+        krel = np.where(okc, kp + kg, np.nan)
+        # nearly conformal (κ_rel ≤ 1e-4 /mm): R_eq capped at 10 m; where a surface has
+        # no generated point (NaN curvature) the segment is left out (R_eq NaN)
+        flat = np.full((J * K, S), np.nan)
+        flat[rows] = np.where(np.isfinite(krel), 1.0 / np.maximum(krel, 1e-4), np.nan)
+        r_eq = flat.reshape(J, K, S)
     rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
     return {
         "u": u, "v": v, "midpoint": pos_g, "midpoint_pair": mid_pair, "ends_pair": ends_pair,
@@ -236,6 +248,16 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
         "ute": cc.ute.reshape(J, K), "pinion_rotation": rp,
         "gear_rotation": eo.gear_phase - rp / eo.ratio, "shape": (J, K, S),
     }
+
+
+def _fill_rows(a: np.ndarray, valid: np.ndarray) -> np.ndarray:
+    """Replace invalid entries of each row by linear interpolation/extension of the valid."""
+    out = np.array(a, dtype=float)
+    idx = np.arange(out.shape[1])
+    for i in range(out.shape[0]):
+        good = valid[i] & np.isfinite(out[i])
+        out[i] = np.interp(idx, idx[good], out[i, good])
+    return out
 
 
 def _tangent(cc) -> np.ndarray:
@@ -386,7 +408,13 @@ def loaded_tca(
             R = seg["moment_arm"][j, kk, ss]
             s = sep_all[j, kk, ss]
             Tn = T * eo.ratio * 1e3  # gear torque [N·mm]
-            load = np.full(kk.size, Tn / max(float(R.sum()), 1e-12))
+            # Weber's formula holds while the Hertz half-width b is well below the depth h
+            # (ln(2h/b) − ν/(2(1−ν)) > 0); loads are capped where b would reach h, i.e.
+            # w′ ≤ π E* h²/(4 R_eq) — beyond that a segment is in gross edge contact and
+            # the secant compliance is frozen at the cap (logged)
+            e_star = E / (2 * (1 - nu**2))
+            w_cap = np.pi * e_star * np.min(depth, axis=1) ** 2 / (4 * Req)
+            load = np.minimum(np.full(kk.size, Tn / max(float(R.sum()), 1e-12)), w_cap * L)
             lte_prev = None
             sol = None
             for w_it in range(1, opts.max_weber_iterations + 1):
@@ -398,7 +426,10 @@ def loaded_tca(
                 solve_time[it, j] += sol.solve_time + sol.build_time
                 if not sol.found:
                     break
-                load = np.maximum(sol.force, 0.0)
+                load = np.minimum(np.maximum(sol.force, 0.0), w_cap * L)
+                if np.any(sol.force > w_cap * L):
+                    log.info("roll %d: Weber load cap reached on %d segments", j,
+                             int(np.sum(sol.force > w_cap * L)))
                 lte = sol.rotation * 1e6
                 weber_iters[it, j] = w_it
                 if lte_prev is not None and abs(lte - lte_prev) < opts.weber_tolerance:

@@ -1,0 +1,172 @@
+"""Loaded TCA (contact.ltca, contact.pipeline) against identities and independent checks.
+
+Identities the contact conditions must satisfy are re-checked from the stored results
+(forces, moment arms, separations), not taken from the solver: torque equilibrium,
+F ≥ 0, no load where the gap stays open (s > R Θ implies F = 0 because C ≥ 0 entrywise),
+periodicity over mesh cycles. Every registered solver must give the same answer. The test
+pair is the hypoid example with profile-crowned pinion blades (as tests/test_utca.py).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from contact import available_solvers
+from contact.cli import main
+from contact.easeoff import ease_off
+from contact.io import check_conventions, read_netcdf, write_netcdf
+from contact.ltca import LTCAOptions, loaded_tca
+from contact.pipeline import run_analysis
+from geometry.assembly import Misalignment
+from geometry.case import load_case
+from geometry.errors import InputError
+
+ROOT = Path(__file__).resolve().parents[1]
+SMALL = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=10)
+
+
+@cache
+def _case():
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+
+    def crowned(tool):
+        return dataclasses.replace(tool, blade=dataclasses.replace(tool.blade,
+                                                                   profile_radius=-400.0))
+
+    pinion = dataclasses.replace(case.pinion, concave=crowned(case.pinion.concave),
+                                 convex=crowned(case.pinion.convex))
+    return dataclasses.replace(case, pinion=pinion)
+
+
+@cache
+def _easeoff():
+    return ease_off(_case())
+
+
+@cache
+def _run(torques=(60.0, 240.0), cycles=2, rolls=6, segments=16, pairs=(-1, 0, 1, 2)):
+    opts = LTCAOptions(cycles=cycles, rolls_per_cycle=rolls, segments=segments, pairs=pairs)
+    return loaded_tca(_case(), list(torques), options=opts, easeoff=_easeoff())
+
+
+def test_equilibrium_and_complementarity_from_stored_results():
+    ds = _run()
+    assert ds["found"].all()
+    ratio = _case().gear.blank.teeth / _case().pinion.blank.teeth
+    F = ds["force"].fillna(0.0)
+    R = ds["moment_arm"].fillna(0.0)
+    moment = (F * R).sum(("pair", "segment"))  # N·mm
+    target = ds["torque"] * ratio * 1e3
+    # equilibrium to 1e-9 relative (the exact solver reaches round-off, ~1e-15)
+    np.testing.assert_array_less(np.abs(moment / target - 1.0).values, 1e-9)
+    assert float(ds["force"].min()) >= 0.0
+    # no load where the gap stays open: s_i > R_i Θ ⇒ F_i = 0 (C is entrywise ≥ 0)
+    theta = ds["loaded_rotation"] * 1e-6
+    open_gap = ds["separation"] > ds["moment_arm"] * theta * (1 + 1e-9) + 1e-12
+    assert float(F.where(open_gap, 0.0).max()) == 0.0
+    # contact flags exactly where forces are positive
+    assert bool(((ds["contact"] > 0) == (F > 0)).all())
+    assert float(ds["residual_equilibrium"].max()) < 1e-9
+    assert float(ds["residual_complementarity"].max()) < 1e-9
+
+
+def test_periodic_over_mesh_cycles():
+    ds = _run()
+    lte = ds["transmission_error"].values
+    n = ds.sizes["roll"] // 2
+    np.testing.assert_allclose(lte[:, n:], lte[:, :n], atol=1e-6)
+
+
+def test_lte_grows_monotonically_and_nearly_linearly_with_torque():
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=12)
+    torques = [50.0, 100.0, 200.0, 400.0]
+    ds = loaded_tca(_case(), torques, options=opts, easeoff=_easeoff())
+    mean = ds["lte_mean"].values
+    assert np.all(np.diff(mean) > 0)
+    # nearly linear: the slope of each interval within ±40 % of the overall slope (Hertz's
+    # logarithm and the spreading contact make it mildly non-linear)
+    slopes = np.diff(mean) / np.diff(torques)
+    overall = (mean[-1] - mean[0]) / (torques[-1] - torques[0])
+    assert np.all(np.abs(slopes / overall - 1) < 0.4)
+    # the contact spreads: more segments carry load as the torque rises
+    loaded = (ds["contact"] > 0).sum(("roll", "pair", "segment")).values
+    assert np.all(np.diff(loaded) > 0)
+
+
+def test_one_more_pair_changes_nothing():
+    a = _run(pairs=(-1, 0, 1, 2))
+    b = _run(pairs=(-2, -1, 0, 1, 2, 3))
+    # 0.01 µrad: ten times the Weber iteration's stopping tolerance (1e-3 µrad)
+    np.testing.assert_allclose(b["transmission_error"], a["transmission_error"], atol=0.01)
+
+
+def test_segment_refinement_converges():
+    # doubling the segments per curve changes LTE by < 0.5 µrad (seed-scale resolution)
+    a = loaded_tca(_case(), [150.0], options=dataclasses.replace(SMALL, segments=20),
+                   easeoff=_easeoff())
+    b = loaded_tca(_case(), [150.0], options=dataclasses.replace(SMALL, segments=40),
+                   easeoff=_easeoff())
+    assert float(np.abs(a["transmission_error"] - b["transmission_error"]).max()) < 0.5
+    pa, pb = float(a["pressure_max"].max()), float(b["pressure_max"].max())
+    assert abs(pa / pb - 1) < 0.05
+
+
+@pytest.mark.parametrize("solver", available_solvers())
+def test_every_solver_gives_the_same_lte(solver):
+    ref = loaded_tca(_case(), [200.0], options=SMALL, easeoff=_easeoff())
+    ds = loaded_tca(_case(), [200.0], options=dataclasses.replace(SMALL, solver=solver),
+                    easeoff=_easeoff())
+    assert ds["found"].all(), ds["status"].values
+    np.testing.assert_allclose(ds["transmission_error"], ref["transmission_error"], atol=0.01)
+    assert float(ds["pressure_max"].max()) == pytest.approx(float(ref["pressure_max"].max()),
+                                                            rel=1e-3)
+
+
+def _pattern_centre(ds):
+    """Pressure-weighted lengthwise place (toe 0 … heel 1) of the loaded segments."""
+    p = ds["pressure_max"].fillna(0.0)
+    u = ds["segment_u"].broadcast_like(p).fillna(0.0)
+    return float((p * u).sum() / p.sum())
+
+
+def test_misalignment_moves_the_pattern_toe_or_heel():
+    # Directions implied by the toolkit's convention (docs/machine.md, geometry.assembly;
+    # confirmed by the UTCA tests): ΔE −0.08 / ΔP +0.10 → heel, ΔE +0.15 / ΔP −0.10 → toe.
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=12)
+    nominal = _pattern_centre(loaded_tca(_case(), [100.0], options=opts))
+    heel = _pattern_centre(loaded_tca(_case(), [100.0], options=opts,
+                                      misalignment=Misalignment(delta_E=-0.08, delta_P=0.10)))
+    toe = _pattern_centre(loaded_tca(_case(), [100.0], options=opts,
+                                     misalignment=Misalignment(delta_E=0.15, delta_P=-0.10)))
+    assert heel > nominal + 0.02
+    assert toe < nominal - 0.02
+
+
+def test_bad_input():
+    with pytest.raises(InputError, match="torque"):
+        loaded_tca(_case(), [-5.0], options=SMALL, easeoff=_easeoff())
+    with pytest.raises(InputError, match="segments"):
+        LTCAOptions(segments=2)
+    with pytest.raises(InputError, match="pairs"):
+        LTCAOptions(pairs=(1, 2))
+
+
+def test_whole_analysis_round_trip_and_plot_from_file(tmp_path):
+    tree = run_analysis(_case(), [100.0], options=SMALL, geometry=True)
+    assert {"geometry", "easeoff", "utca", "ltca"} <= set(tree.children)
+    check_conventions(tree)
+    path = write_netcdf(tree, tmp_path / "a.nc", inputs=tree.attrs["inputs"])
+    back = read_netcdf(path)
+    again = read_netcdf(write_netcdf(back, tmp_path / "b.nc"))
+    xr.testing.assert_identical(again, back)
+    assert "transmission_error" in back["ltca"].dataset
+    # `ltca plot` on a file from another run redraws everything from the file alone
+    assert main(["plot", str(path), "--plots", str(tmp_path / "png")]) == 0
+    pngs = sorted(p.name for p in (tmp_path / "png").glob("*.png"))
+    assert "ltca_transmission_error.png" in pngs and "easeoff.png" in pngs
