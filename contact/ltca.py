@@ -32,7 +32,7 @@ import dataclasses
 import logging
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -52,7 +52,7 @@ from geometry.curvature import normal_curvature
 from geometry.errors import InputError
 from geometry.flank import flank_at
 
-__all__ = ["LTCAOptions", "loaded_tca", "segment_geometry"]
+__all__ = ["LTCAOptions", "loaded_tca", "ltca_problems", "segment_geometry"]
 
 log = logging.getLogger(__name__)
 
@@ -282,6 +282,7 @@ def loaded_tca(
     options: LTCAOptions | None = None,
     easeoff: EaseOff | None = None,
     progress: bool = False,
+    problem_sink: Callable[[ContactProblem], None] | None = None,
 ) -> xr.Dataset:
     """Loaded TCA of a case at one or more torques over whole mesh cycles (seed §3.3–3.4).
 
@@ -301,6 +302,9 @@ def loaded_tca(
         A precomputed ease-off of the same case, flank and misalignment.
     progress : bool
         Show a progress bar over roll positions.
+    problem_sink : callable, optional
+        Called with the final :class:`contact.ContactProblem` of every (torque, roll)
+        (after the Weber iteration), e.g. to collect real problems for a solver study.
 
     Returns
     -------
@@ -436,6 +440,8 @@ def loaded_tca(
                     break
                 lte_prev = lte
             assert sol is not None
+            if problem_sink is not None:
+                problem_sink(problem)
             found[it, j] = int(sol.found)
             status[it, j] = sol.status
             for r in _RESIDUALS:
@@ -607,3 +613,32 @@ def json_misalignment(m) -> str:
     import json
 
     return json.dumps(dataclasses.asdict(m), sort_keys=True, default=float)
+
+
+def ltca_problems(case, torque, *, misalignment: Misalignment | None = None,
+                  options: LTCAOptions | None = None) -> list:
+    """The real contact problems of a case's LTCA, as a solver study's test set.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    torque : float or sequence — [N·m] pinion torques
+    misalignment : Misalignment, optional
+    options : LTCAOptions, optional
+
+    Returns
+    -------
+    list of contact.problem_set.TestProblem
+        One per (torque, roll position), kind ``ltca``, named
+        ``"<case> T<torque> roll<j>"``.
+    """
+    from contact.problem_set import TestProblem
+
+    collected: list[ContactProblem] = []
+    loaded_tca(case, torque, misalignment=misalignment, options=options,
+               problem_sink=collected.append)
+    out = []
+    for i, p in enumerate(collected):
+        name = p.name.replace(" ", "_") or f"{case.name}_{i}"
+        out.append(TestProblem(f"{name}_{i}", "ltca", p))
+    return out

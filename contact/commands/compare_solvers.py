@@ -7,7 +7,6 @@ import sys
 from pathlib import Path
 
 from geometry._version import __version__
-from geometry.errors import LTCAError
 
 #: Place in ``ltca --help``.
 ORDER = 90
@@ -26,9 +25,19 @@ def register(sub) -> None:
         "case",
         nargs="?",
         default=None,
-        help="case file whose real LTCA problems to use (needs the LTCA pipeline)",
+        help="case file or bundled case name: run on its real LTCA problems",
     )
     p.add_argument("--quick", action="store_true", help="a small problem set (N ≤ 250)")
+    p.add_argument("--torque", type=float, nargs="+", default=None, metavar="N_M",
+                   help="with CASE: pinion torques [N m] (default 50 250 500)")
+    p.add_argument("--dE", type=float, default=None, help="with CASE: ΔE [mm]")
+    p.add_argument("--dP", type=float, default=None, help="with CASE: ΔP [mm]")
+    p.add_argument("--dG", type=float, default=None, help="with CASE: ΔG [mm]")
+    p.add_argument("--dSigma", type=float, default=None, help="with CASE: ΔΣ [deg]")
+    p.add_argument("--rolls-per-cycle", type=int, default=20,
+                   help="with CASE: roll positions per mesh cycle (two cycles)")
+    p.add_argument("--with-standard", action="store_true",
+                   help="with CASE: also run the standard problem set")
     p.add_argument(
         "--solvers",
         nargs="+",
@@ -60,11 +69,20 @@ def run(args: argparse.Namespace) -> int:
     from contact.solver_study import compare_solvers, default_study_solvers, summarize
 
     if args.case is not None:
-        raise LTCAError(
-            "compare-solvers CASE: running on a case's real LTCA problems needs the LTCA "
-            "pipeline, which is not in this version; run without CASE for the standard set"
-        )
-    problems = standard_problem_set(quick=args.quick)
+        from contact.commands.run import misalignment_from_args
+        from contact.ltca import LTCAOptions, ltca_problems
+        from contact.pipeline import resolve_case
+
+        case = resolve_case(args.case)
+        mis = misalignment_from_args(args, case.misalignment)
+        torques = args.torque or [50.0, 250.0, 500.0]
+        opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle)
+        print(f"collecting the LTCA problems of {case.name} at T_p = {torques} N m ...")
+        problems = ltca_problems(case, torques, misalignment=mis, options=opts)
+        if args.with_standard:
+            problems += standard_problem_set(quick=args.quick)
+    else:
+        problems = standard_problem_set(quick=args.quick)
     solvers = args.solvers or default_study_solvers()
     print(
         f"hypoid-ltca {__version__}: {len(solvers)} solvers × {len(problems)} problems "
