@@ -3,6 +3,10 @@
 The loaded-contact problem and its solvers::
 
     from contact import ContactProblem, solve_contact, available_solvers
+
+The whole analysis of a case (geometry → ease-off UTCA → LTCA) as one DataTree::
+
+    from contact import run_analysis
 """
 
 from contact.errors import (
@@ -27,5 +31,15 @@ __all__ = [
     "__version__",
     "available_solvers",
     "contact_residuals",
+    "run_analysis",
     "solve_contact",
 ]
+
+
+def __getattr__(name: str):
+    # the pipeline pulls in geometry and plotting-free stages; import it only when used
+    if name == "run_analysis":
+        from contact.pipeline import run_analysis
+
+        return run_analysis
+    raise AttributeError(f"module 'contact' has no attribute {name!r}")

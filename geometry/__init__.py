@@ -5,6 +5,7 @@ normals and curvatures, assembly with misalignments (seed chapter 2).
 """
 
 from geometry._version import __version__
+from geometry.case import Case, load_case
 from geometry.errors import InputError, LTCAError, ModelUnavailableError
 
-__all__ = ["InputError", "LTCAError", "ModelUnavailableError", "__version__"]
+__all__ = ["Case", "InputError", "LTCAError", "ModelUnavailableError", "__version__", "load_case"]
