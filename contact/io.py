@@ -150,6 +150,12 @@ def _stamp(ds: xr.Dataset, inputs: str | None) -> xr.Dataset:
     return ds
 
 
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
 def write_netcdf(
     obj: xr.Dataset | xr.DataTree,
     path: str | os.PathLike[str],
@@ -203,6 +209,7 @@ def write_netcdf(
     os.close(fd)
     try:
         out.to_netcdf(tmp, engine=_ENGINE)
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp creates 0600; give the usual mode
         os.replace(tmp, path)
     except Exception as exc:
         Path(tmp).unlink(missing_ok=True)
