@@ -41,7 +41,7 @@ from scipy.interpolate import RectBivariateSpline
 
 from contact.compliance.hertz import hertz_half_width, weber_compliance
 from contact.compliance.mesh import ContactSegments, mesh_compliance, pair_compliance_model
-from contact.easeoff import EaseOff, ease_off
+from contact.easeoff import EaseOff, _fractions, ease_off
 from contact.problem import ContactProblem
 from contact.solvers import DEFAULT_SOLVER, get_backend, solve_contact
 from contact.transmission_error import transmission_error_summary
@@ -50,13 +50,17 @@ from geometry._version import __version__
 from geometry.assembly import Misalignment
 from geometry.curvature import normal_curvature
 from geometry.errors import InputError
-from geometry.flank import flank_at
+from geometry.flank import blank_outline, flank_at
 
 __all__ = ["LTCAOptions", "loaded_tca", "ltca_problems", "segment_geometry"]
 
 log = logging.getLogger(__name__)
 
 _RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
+
+#: [1] a segment midpoint may lie this fraction of the pinion's face width / depth beyond
+#: its blank outline before it is left out (the tip chamfer of a real blank is not modelled)
+_PINION_MARGIN = 0.01
 
 
 @dataclass(frozen=True)
@@ -207,6 +211,17 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
                           gear_to_pair(cc.position[..., 1:, :])], axis=-2)
     # the gear normal points out of the gear; the contact normal out of the pinion is −n_g
     n_pair = -gear_to_pair(nrm_g, vec=True)
+    # the real pinion touches the gear point at the pair's own instant, which near the
+    # pinion's tip or ends can lie just beyond its blank (the curve ends where the
+    # conjugate mate leaves it): such segments cannot carry load and are left out
+    op = kin.pinion_origin
+    xp = _rotate_about(ap, -np.broadcast_to(phi[..., None], mid_pair.shape[:-1]),
+                       mid_pair - op) @ rot_p
+    pu, pv = _fractions(blank_outline(case.pinion.blank).corners, xp[..., 2],
+                        np.hypot(xp[..., 0], xp[..., 1]))
+    beyond = (pu < -_PINION_MARGIN) | (pu > 1 + _PINION_MARGIN) | (pv > 1 + _PINION_MARGIN)
+    u = np.where(beyond, np.nan, u)
+    v = np.where(beyond, np.nan, v)
     # R_eq across the contact line from both real surfaces at the midpoints
     ok = np.isfinite(u) & np.isfinite(v)
     r_eq = np.full(u.shape, np.nan)
