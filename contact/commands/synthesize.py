@@ -1,0 +1,72 @@
+"""``ltca synthesize``: a complete case file from basic design data (local synthesis)."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import tempfile
+from pathlib import Path
+
+#: Place in ``ltca --help``.
+ORDER = 30
+
+_HEADER = ("# Written by `ltca synthesize {basic}` (geometry.synthesis: ISO 23509 blank, "
+           "Formate gear,\n# pinion by Litvin local synthesis); see `source` and "
+           "docs/synthesis.md. Do not edit by hand.\n")
+
+
+def register(sub) -> None:
+    """Add the sub-command to an ``argparse`` sub-parser collection."""
+    p = sub.add_parser(
+        "synthesize",
+        help="machine settings of a face-milled pair from basic design data (case TOML)",
+        description="Read a basic design file (cases/basic/*.toml: ISO 23509 inputs, "
+        "targets, synthesis options), compute the blanks, the Formate gear settings and the "
+        "generated pinion by local synthesis, and write a complete case file.",
+    )
+    p.add_argument("basic", help="basic design file (TOML, schema in docs/synthesis.md)")
+    p.add_argument("-o", "--output", required=True, help="case file to write (TOML)")
+    p.set_defaults(func=run_synthesize)
+
+
+def write_text_atomic(path: Path, text: str) -> Path:
+    """Write ``text`` to ``path`` through a temporary file in the same directory + rename."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+    return path
+
+
+def run_synthesize(args: argparse.Namespace) -> int:
+    import tomllib
+
+    from geometry.basic_design import load_basic
+    from geometry.case import case_from_dict
+    from geometry.synthesis import synthesize
+
+    basic = load_basic(args.basic)
+    case, report = synthesize(basic)
+    text = _HEADER.format(basic=Path(args.basic).as_posix()) + case.to_toml()
+    # the written text must load back to the same case
+    case_from_dict(tomllib.loads(text))
+    path = write_text_atomic(Path(args.output), text)
+    geom = report.blank
+    print(f"{case.name}: {geom.design.z1}x{geom.design.z2}, offset {geom.design.a:g} mm, "
+          f"beta_m {math.degrees(geom.pinion.beta_m):.2f}/{math.degrees(geom.gear.beta_m):.2f}"
+          f" deg, R_e {geom.pinion.Re:.2f}/{geom.gear.Re:.2f} mm")
+    for flank, fs in report.flanks.items():
+        s = fs.tools.settings
+        print(f"  pinion {flank}: r_p {fs.tools.blade.point_radius:.3f} mm, R_a "
+              f"{s.ratio_of_roll:.5f}, S_r {s.radial_setting:.3f} mm, E_m "
+              f"{s.blank_offset:.3f} mm, curvature residual {fs.tools.shape_error:.1e} 1/mm")
+    print(f"wrote {path}")
+    return 0

@@ -1,0 +1,409 @@
+"""Basic design data of a face-milled pair: the input of the machine-setting synthesis.
+
+A basic file (``cases/basic/*.toml``, schema in ``docs/synthesis.md``) holds
+
+* ``name``, ``source`` — the case to write and where the data come from;
+* ``[design]`` — the ISO 23509 inputs of :class:`geometry.pitch_cone.BevelGearDesign`
+  (angles in degrees, lengths in mm), from which the blanks follow
+  (:func:`geometry.blank.blank_geometry`);
+* ``[targets]`` (optional) — published values the blank must reproduce (mean spiral angle of
+  the gear, outer cone distances …) and the design fields ``adjust`` that are varied to hit
+  them (least squares; the achieved values are reported in the case ``source``);
+* ``[synthesis]`` — the synthesis options with documented defaults (:class:`SynthesisOptions`),
+  optionally overridden per pinion flank in ``[synthesis.concave]`` / ``[synthesis.convex]``.
+
+Public functions
+----------------
+FlankOptions, SynthesisOptions, BasicDesign   frozen dataclasses
+TARGETS                                       target name → how it is read from a blank
+load_basic                                    read and validate a basic file
+basic_from_dict                               the same from a parsed mapping
+fit_design                                    adjust design fields to hit the targets
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tomllib
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, fields, replace
+from pathlib import Path
+from typing import Any
+
+from scipy.optimize import least_squares
+
+from geometry.blank import BlankGeometry, blank_geometry
+from geometry.errors import InputError, ModelUnavailableError
+from geometry.pitch_cone import BevelGearDesign
+
+__all__ = [
+    "PROCESSES",
+    "TARGETS",
+    "BasicDesign",
+    "FlankOptions",
+    "SynthesisOptions",
+    "basic_from_dict",
+    "fit_design",
+    "load_basic",
+]
+
+#: (gear, pinion) processes the synthesis implements
+PROCESSES: dict[tuple[str, str], bool] = {("Formate", "Generate"): True,
+                                          ("Generate", "Generate"): False}
+
+#: target name → (unit, value read from a blank geometry); angles in degrees
+TARGETS: dict[str, tuple[str, Callable[[BlankGeometry], float]]] = {
+    "beta_m1": ("deg", lambda g: math.degrees(g.pinion.beta_m)),
+    "beta_m2": ("deg", lambda g: math.degrees(g.gear.beta_m)),
+    "Re1": ("mm", lambda g: g.pinion.Re),
+    "Re2": ("mm", lambda g: g.gear.Re),
+    "de2": ("mm", lambda g: g.gear.de),
+    "dm2": ("mm", lambda g: g.gear.dm),
+}
+_ADJUSTABLE = ("de2", "b2", "rc0", "beta_m", "theta_a2", "theta_f2", "c_ham")
+_DESIGN_ANGLES = {"Sigma", "beta_m", "alpha_dD", "alpha_dC", "theta_a2", "theta_f2"}
+
+
+def _num(where: str, v: Any, lo: float, hi: float, unit: str, *, lo_open=False,
+         hi_open=False) -> float:
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise InputError(f"{where}: must be a finite number [{unit}], got {v!r}")
+    v = float(v)
+    if v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi):
+        rng = f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+        raise InputError(f"{where}: must be in {rng} {unit}, got {v:g}")
+    return v
+
+
+@dataclass(frozen=True)
+class FlankOptions:
+    """Local-synthesis prescriptions for one pinion flank at the mean point M.
+
+    Parameters
+    ----------
+    path_angle : float — [rad]
+        Direction of the contact path on the gear flank at M: angle from the gear's
+        lengthwise direction (toe → heel) towards its profile direction (root → tip), in
+        (−90°, 90°). Default −45°: a diagonal path that falls towards the root going to the
+        heel. It must stay clear of the conjugate contact line at M (for a face-milled
+        Formate pair nearly lengthwise, about −10° to +25°), along which the contact point
+        would have to move infinitely fast (``docs/synthesis.md``).
+    te_level : float — [rad]
+        Unloaded TE of one tooth pair at ±1 pitch of pinion roll from M (the gear lag of
+        :mod:`contact.tca`): TE(roll) = a21/2 · roll², a21 = 2 te_level/(2π/z1)².
+        Default 45 µrad, in (0, 1000 µrad].
+    ellipse_length : float — [1]
+        Major axis 2a of the contact ellipse at M as a fraction of the gear face width, at
+        the elastic approach ``approach``. Default 0.275, in (0.02, 0.9).
+    approach : float — [mm]
+        Elastic approach δ (the separation that bounds the unloaded pattern), default
+        0.0063 mm, in (0, 0.1].
+    """
+
+    path_angle: float = math.radians(-45.0)
+    te_level: float = 45e-6
+    ellipse_length: float = 0.275
+    approach: float = 0.0063
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "path_angle", math.radians(_num(
+            "path_angle", math.degrees(self.path_angle), -90.0, 90.0, "deg", lo_open=True,
+            hi_open=True)))
+        object.__setattr__(self, "te_level", 1e-6 * _num(
+            "te_level", 1e6 * self.te_level, 0.0, 1000.0, "urad", lo_open=True))
+        object.__setattr__(self, "ellipse_length", _num(
+            "ellipse_length", self.ellipse_length, 0.02, 0.9, "(fraction of the face width)",
+            lo_open=True, hi_open=True))
+        object.__setattr__(self, "approach", _num("approach", self.approach, 0.0, 0.1, "mm",
+                                                  lo_open=True))
+
+
+@dataclass(frozen=True)
+class SynthesisOptions:
+    """Synthesis options (``[synthesis]`` of a basic file; defaults in ``docs/synthesis.md``).
+
+    Parameters
+    ----------
+    drive_flank : str
+        Pinion flank that drives, ``"concave"`` (default) or ``"convex"``.
+    gear_process, pinion_process : str
+        ``"Formate"`` and ``"Generate"`` (the only pair implemented).
+    cutter_radius : float or None — [mm]
+        Nominal gear cutter radius r_c0; default the design's ``rc0``.
+    blade_angle_drive, blade_angle_coast : float or None — [rad]
+        Gear blade angles of the flanks meshing the pinion's drive / coast flank; default the
+        generated normal pressure angles α_nD, α_nC of ISO 23509 (= design pressure angles
+        ± f_αlim α_lim).
+    point_width : float or None — [mm]
+        Gear cutter point width; default from the gear slot width at the mean point:
+        W = π m_mn − s_mn2 − h_fm2 (tan α_D + tan α_C).
+    edge_radius : float or None — [mm]
+        Blade edge radius of both members; default min(0.25 m_mn, 0.4 W).
+    concave, convex : FlankOptions
+        Local-synthesis prescriptions per pinion flank.
+    """
+
+    drive_flank: str = "concave"
+    gear_process: str = "Formate"
+    pinion_process: str = "Generate"
+    cutter_radius: float | None = None
+    blade_angle_drive: float | None = None
+    blade_angle_coast: float | None = None
+    point_width: float | None = None
+    edge_radius: float | None = None
+    concave: FlankOptions = field(default_factory=FlankOptions)
+    convex: FlankOptions = field(default_factory=FlankOptions)
+
+    def __post_init__(self) -> None:
+        if self.drive_flank not in ("concave", "convex"):
+            raise InputError(f"synthesis.drive_flank: must be 'concave' or 'convex', got "
+                             f"{self.drive_flank!r}")
+        procs = (self.gear_process, self.pinion_process)
+        if procs not in PROCESSES:
+            raise InputError(f"synthesis.gear_process, pinion_process: must be one of "
+                             f"{sorted(PROCESSES)}, got {procs!r}")
+        if not PROCESSES[procs]:
+            raise ModelUnavailableError(
+                f"synthesis.gear_process, pinion_process: {procs!r} is not implemented; "
+                f"available: {[p for p, ok in PROCESSES.items() if ok]}")
+        for name, lo, hi, unit in (("cutter_radius", 0.0, 1e4, "mm"),
+                                   ("point_width", 0.0, 100.0, "mm"),
+                                   ("edge_radius", 0.0, 20.0, "mm")):
+            v = getattr(self, name)
+            if v is not None:
+                object.__setattr__(self, name, _num(f"synthesis.{name}", v, lo, hi, unit,
+                                                    lo_open=name != "edge_radius"))
+        for name in ("blade_angle_drive", "blade_angle_coast"):
+            v = getattr(self, name)
+            if v is not None:
+                object.__setattr__(self, name, math.radians(_num(
+                    f"synthesis.{name}", math.degrees(v), 0.0, 45.0, "deg", lo_open=True,
+                    hi_open=True)))
+
+    def flank(self, name: str) -> FlankOptions:
+        """Prescriptions of pinion flank ``name``."""
+        return getattr(self, name)
+
+
+@dataclass(frozen=True)
+class BasicDesign:
+    """A parsed basic file: design data, targets and synthesis options.
+
+    Attributes
+    ----------
+    name, source : str
+    design : BevelGearDesign
+        After the fit to ``targets`` (if any).
+    targets : dict
+        Target name (:data:`TARGETS`) → value [deg or mm].
+    adjust : tuple of str
+        Design fields varied to hit the targets.
+    options : SynthesisOptions
+    comments : dict
+        Free-text notes kept from the file's ``[notes]`` table (copied into the case source).
+    """
+
+    name: str
+    source: str
+    design: BevelGearDesign
+    targets: Mapping[str, float]
+    adjust: tuple[str, ...]
+    options: SynthesisOptions
+    comments: Mapping[str, str] = field(default_factory=dict)
+
+    def blank(self) -> BlankGeometry:
+        """ISO 23509 blank geometry of the design (pitch cone and both members)."""
+        return blank_geometry(self.design)
+
+
+def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
+               adjust: tuple[str, ...]) -> BevelGearDesign:
+    """Adjust design fields so that the ISO 23509 blank hits published target values.
+
+    Parameters
+    ----------
+    design : BevelGearDesign
+        Start values (angles rad, lengths mm).
+    targets : mapping
+        Target name (a key of :data:`TARGETS`) → value [deg for angles, mm for lengths].
+    adjust : tuple of str
+        Design fields varied (a subset of ``de2, b2, rc0, beta_m, theta_a2, theta_f2,
+        c_ham``); at most as many as there are targets.
+
+    Returns
+    -------
+    BevelGearDesign
+        The fitted design (least squares; exact when the targets are reachable).
+
+    Raises
+    ------
+    InputError
+        For an unknown target or adjustable field, more fields than targets, or when no
+        valid design is found near the start.
+
+    Notes
+    -----
+    ``scipy.optimize.least_squares`` on the residuals value − target, each divided by 1 mm or
+    1°, with every evaluation a full ISO 23509 Method 0/1 blank (:func:`blank_geometry`).
+    Designs rejected by the standard's checks count as a large residual.
+    """
+    unknown = sorted(set(targets) - set(TARGETS))
+    if unknown:
+        raise InputError(f"targets.{unknown[0]}: unknown target; accepted: {sorted(TARGETS)}")
+    bad = sorted(set(adjust) - set(_ADJUSTABLE))
+    if bad:
+        raise InputError(f"targets.adjust: {bad[0]!r} cannot be adjusted; accepted: "
+                         f"{list(_ADJUSTABLE)}")
+    if len(adjust) > len(targets):
+        raise InputError(f"targets.adjust: {len(adjust)} fields for {len(targets)} targets; "
+                         "give at most as many fields as targets")
+    if not adjust:
+        return design
+    names = list(targets)
+    x0 = [getattr(design, a) for a in adjust]
+    scale = [1.0 if a not in _DESIGN_ANGLES else math.radians(1.0) for a in adjust]
+
+    def make(x):
+        return replace(design, **dict(zip(adjust, (v * s for v, s in zip(x, scale,
+                                                                          strict=True)),
+                                          strict=True)))
+
+    def residual(x):
+        try:
+            geom = blank_geometry(make(x))
+        except InputError:
+            return [1e3] * len(names)
+        return [TARGETS[n][1](geom) - targets[n] for n in names]
+
+    sol = least_squares(residual, [v / s for v, s in zip(x0, scale, strict=True)],
+                        xtol=1e-14, ftol=1e-14, gtol=1e-14)
+    if max(abs(r) for r in sol.fun) >= 1e2:
+        raise InputError(f"targets: no valid ISO 23509 design found by adjusting {adjust}")
+    return make(sol.x)
+
+
+_OPTION_FIELDS = {"drive_flank", "gear_process", "pinion_process", "cutter_radius",
+                  "blade_angle_drive", "blade_angle_coast", "point_width", "edge_radius"}
+_FLANK_FIELDS = {f.name for f in fields(FlankOptions)}
+_TOP = {"name", "source", "design", "targets", "synthesis", "notes"}
+
+
+def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -> FlankOptions:
+    unknown = sorted(set(raw) - _FLANK_FIELDS)
+    if unknown:
+        raise InputError(f"{where}.{unknown[0]}: unknown field; accepted: "
+                         f"{sorted(_FLANK_FIELDS)}")
+    kw: dict[str, Any] = {}
+    for k, v in raw.items():
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise InputError(f"{where}.{k}: must be a number, got {v!r}")
+        kw[k] = math.radians(v) if k == "path_angle" else (v * 1e-6 if k == "te_level" else v)
+    try:
+        return replace(base, **kw) if base is not None else FlankOptions(**kw)
+    except InputError as exc:
+        raise InputError(f"{where}.{exc}") from None
+
+
+def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
+    """Validate a parsed basic file and build the :class:`BasicDesign`.
+
+    Parameters
+    ----------
+    raw : mapping
+        Parsed TOML (angles in degrees, lengths in mm, ``te_level`` in µrad).
+    fit : bool
+        Fit the design to ``[targets]`` (default True).
+
+    Returns
+    -------
+    BasicDesign
+
+    Raises
+    ------
+    InputError
+        A missing, unknown or out-of-range field, named by its dotted path.
+    ModelUnavailableError
+        A process pair or ISO method that is not implemented.
+    """
+    if not isinstance(raw, Mapping):
+        raise InputError(f"basic file: must be a table, got {type(raw).__name__}")
+    unknown = sorted(set(raw) - _TOP)
+    if unknown:
+        raise InputError(f"{unknown[0]}: unknown table or field; accepted: {sorted(_TOP)}")
+    for key in ("name", "source"):
+        if not isinstance(raw.get(key), str) or not raw[key].strip():
+            raise InputError(f"{key}: required non-empty string, got {raw.get(key)!r}")
+    des = raw.get("design")
+    if not isinstance(des, Mapping):
+        raise InputError("design: missing table (the ISO 23509 inputs)")
+    try:
+        design = BevelGearDesign.from_degrees(**des)
+    except InputError as exc:
+        raise InputError(f"design.{exc}") from None
+    tg = dict(raw.get("targets", {}))
+    adjust = tg.pop("adjust", [])
+    if not isinstance(adjust, list) or not all(isinstance(a, str) for a in adjust):
+        raise InputError(f"targets.adjust: must be a list of design field names, got "
+                         f"{adjust!r}")
+    targets: dict[str, float] = {}
+    for k, v in tg.items():
+        if k not in TARGETS:
+            raise InputError(f"targets.{k}: unknown target; accepted: {sorted(TARGETS)}")
+        targets[k] = _num(f"targets.{k}", v, -1e5, 1e5, TARGETS[k][0])
+    if fit:
+        design = fit_design(design, targets, tuple(adjust))
+    syn = dict(raw.get("synthesis", {}))
+    flank_raw = {f: syn.pop(f, {}) for f in ("concave", "convex")}
+    flank_common = {k: syn.pop(k) for k in list(syn) if k in _FLANK_FIELDS}
+    unknown = sorted(set(syn) - _OPTION_FIELDS)
+    if unknown:
+        raise InputError(f"synthesis.{unknown[0]}: unknown field; accepted: "
+                         f"{sorted(_OPTION_FIELDS | _FLANK_FIELDS | {'concave', 'convex'})}")
+    common = _flank_options(flank_common, "synthesis")
+    per_flank = {f: _flank_options(flank_raw[f], f"synthesis.{f}", common)
+                 for f in ("concave", "convex")}
+    kw = dict(syn)
+    for name in ("blade_angle_drive", "blade_angle_coast"):
+        if name in kw:
+            v = kw[name]
+            if isinstance(v, bool) or not isinstance(v, (int, float)):
+                raise InputError(f"synthesis.{name}: must be a number [deg], got {v!r}")
+            kw[name] = math.radians(v)
+    options = SynthesisOptions(**kw, **per_flank)
+    notes = raw.get("notes", {})
+    if not isinstance(notes, Mapping) or not all(isinstance(v, str) for v in notes.values()):
+        raise InputError("notes: must be a table of strings")
+    return BasicDesign(name=raw["name"], source=raw["source"], design=design,
+                       targets=targets, adjust=tuple(adjust), options=options,
+                       comments=dict(notes))
+
+
+def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign:
+    """Read and validate a basic design file (``cases/basic/*.toml``).
+
+    Parameters
+    ----------
+    path : path-like
+    fit : bool
+        Fit the design to ``[targets]`` (default True).
+
+    Returns
+    -------
+    BasicDesign
+
+    Raises
+    ------
+    InputError
+        Missing file, invalid TOML, or an invalid field (named by its dotted path).
+    ModelUnavailableError
+        As :func:`basic_from_dict`.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"basic file: no such file {str(p)!r}")
+    try:
+        raw = tomllib.loads(p.read_text(encoding="utf-8"))
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"basic file {str(p)!r}: invalid TOML: {exc}") from None
+    return basic_from_dict(raw, fit=fit)
