@@ -72,3 +72,19 @@ def test_shifted_geometric_mean():
     assert shifted_geometric_mean([3.0, 3.0, 3.0], 1.0) == pytest.approx(3.0)
     expected = np.exp((np.log(2.0) + np.log(9.0)) / 2) - 1
     assert shifted_geometric_mean([1.0, 8.0], 1.0) == pytest.approx(expected)
+
+
+def test_geometry_commands(tmp_path, capsys):
+    case = "cases/kolivand2009_fm_11x41.toml"
+    out = tmp_path / "flanks.nc"
+    assert main(["geometry", case, "-o", str(out), "--nu", "9", "--nv", "5"]) == 0
+    tree = read_netcdf(out, tree=True)
+    assert {"pinion", "gear"} <= set(tree.children)
+    for member in ("pinion", "gear"):
+        for flank in ("concave", "convex"):
+            ds = tree[f"{member}/{flank}"].dataset
+            assert ds.sizes["u"] == 9 and ds.sizes["v"] == 5
+            assert int(ds["mask"].sum()) > 0.8 * 45  # most grid points generated
+    assert main(["plot-geometry", case, "-o", str(tmp_path / "png"), "--nu", "9", "--nv", "5"]) == 0
+    pngs = {p.name for p in (tmp_path / "png").glob("*.png")}
+    assert "flanks_in_mesh.png" in pngs and "grid_gear_convex.png" in pngs

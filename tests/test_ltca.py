@@ -36,11 +36,13 @@ def _case():
     case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
 
     def crowned(tool):
-        return dataclasses.replace(tool, blade=dataclasses.replace(tool.blade,
-                                                                   profile_radius=-400.0))
+        return dataclasses.replace(
+            tool, blade=dataclasses.replace(tool.blade, profile_radius=-400.0)
+        )
 
-    pinion = dataclasses.replace(case.pinion, concave=crowned(case.pinion.concave),
-                                 convex=crowned(case.pinion.convex))
+    pinion = dataclasses.replace(
+        case.pinion, concave=crowned(case.pinion.concave), convex=crowned(case.pinion.convex)
+    )
     return dataclasses.replace(case, pinion=pinion)
 
 
@@ -108,10 +110,12 @@ def test_one_more_pair_changes_nothing():
 
 def test_segment_refinement_converges():
     # doubling the segments per curve changes LTE by < 0.5 µrad (seed-scale resolution)
-    a = loaded_tca(_case(), [150.0], options=dataclasses.replace(SMALL, segments=20),
-                   easeoff=_easeoff())
-    b = loaded_tca(_case(), [150.0], options=dataclasses.replace(SMALL, segments=40),
-                   easeoff=_easeoff())
+    a = loaded_tca(
+        _case(), [150.0], options=dataclasses.replace(SMALL, segments=20), easeoff=_easeoff()
+    )
+    b = loaded_tca(
+        _case(), [150.0], options=dataclasses.replace(SMALL, segments=40), easeoff=_easeoff()
+    )
     assert float(np.abs(a["transmission_error"] - b["transmission_error"]).max()) < 0.5
     pa, pb = float(a["pressure_max"].max()), float(b["pressure_max"].max())
     assert abs(pa / pb - 1) < 0.05
@@ -120,12 +124,14 @@ def test_segment_refinement_converges():
 @pytest.mark.parametrize("solver", available_solvers())
 def test_every_solver_gives_the_same_lte(solver):
     ref = loaded_tca(_case(), [200.0], options=SMALL, easeoff=_easeoff())
-    ds = loaded_tca(_case(), [200.0], options=dataclasses.replace(SMALL, solver=solver),
-                    easeoff=_easeoff())
+    ds = loaded_tca(
+        _case(), [200.0], options=dataclasses.replace(SMALL, solver=solver), easeoff=_easeoff()
+    )
     assert ds["found"].all(), ds["status"].values
     np.testing.assert_allclose(ds["transmission_error"], ref["transmission_error"], atol=0.01)
-    assert float(ds["pressure_max"].max()) == pytest.approx(float(ref["pressure_max"].max()),
-                                                            rel=1e-3)
+    assert float(ds["pressure_max"].max()) == pytest.approx(
+        float(ref["pressure_max"].max()), rel=1e-3
+    )
 
 
 def _pattern_centre(ds):
@@ -140,10 +146,16 @@ def test_misalignment_moves_the_pattern_toe_or_heel():
     # confirmed by the UTCA tests): ΔE −0.08 / ΔP +0.10 → heel, ΔE +0.15 / ΔP −0.10 → toe.
     opts = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=12)
     nominal = _pattern_centre(loaded_tca(_case(), [100.0], options=opts))
-    heel = _pattern_centre(loaded_tca(_case(), [100.0], options=opts,
-                                      misalignment=Misalignment(delta_E=-0.08, delta_P=0.10)))
-    toe = _pattern_centre(loaded_tca(_case(), [100.0], options=opts,
-                                     misalignment=Misalignment(delta_E=0.15, delta_P=-0.10)))
+    heel = _pattern_centre(
+        loaded_tca(
+            _case(), [100.0], options=opts, misalignment=Misalignment(delta_E=-0.08, delta_P=0.10)
+        )
+    )
+    toe = _pattern_centre(
+        loaded_tca(
+            _case(), [100.0], options=opts, misalignment=Misalignment(delta_E=0.15, delta_P=-0.10)
+        )
+    )
     assert heel > nominal + 0.02
     assert toe < nominal - 0.02
 
@@ -170,3 +182,26 @@ def test_whole_analysis_round_trip_and_plot_from_file(tmp_path):
     assert main(["plot", str(path), "--plots", str(tmp_path / "png")]) == 0
     pngs = sorted(p.name for p in (tmp_path / "png").glob("*.png"))
     assert "ltca_transmission_error.png" in pngs and "easeoff.png" in pngs
+
+
+def test_weber_linearisation_converges_and_matters():
+    # Weber's contact compliance is load dependent; the LTCA iterates its secant to a
+    # fixed point. One iteration (secant at the even-share reference load) must differ
+    # from the converged answer, and a 100x tighter tolerance must not move the LTE by
+    # more than the default tolerance (1e-3 urad).
+    one = loaded_tca(
+        _case(),
+        [300.0],
+        options=dataclasses.replace(SMALL, max_weber_iterations=1),
+        easeoff=_easeoff(),
+    )
+    conv = loaded_tca(_case(), [300.0], options=SMALL, easeoff=_easeoff())
+    tight = loaded_tca(
+        _case(),
+        [300.0],
+        options=dataclasses.replace(SMALL, weber_tolerance=1e-5),
+        easeoff=_easeoff(),
+    )
+    assert int(conv["weber_iterations"].max()) < SMALL.max_weber_iterations
+    assert float(np.abs(one["transmission_error"] - conv["transmission_error"]).max()) > 0.01
+    assert float(np.abs(tight["transmission_error"] - conv["transmission_error"]).max()) < 1e-3
