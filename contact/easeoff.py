@@ -491,33 +491,44 @@ class _Mates(NamedTuple):
     kappa2: np.ndarray
     dir1: np.ndarray
     section: np.ndarray  # blade section that generates the pinion point
+    params: np.ndarray  # (..., 3) its envelope parameters (s, θ, q) [mm, rad, rad]
 
 
-def _pinion_points(case: Case, flank: str, z, rho):
-    """Real pinion surface at projection-plane places: position, normal, reason, curvatures."""
+def _pinion_points(case: Case, flank: str, z, rho, guess=None):
+    """Real pinion surface at projection-plane places: position, normal, reason, curvatures.
+
+    ``guess`` (params (..., 3), section) from nearby earlier points starts the envelope solver
+    (:func:`geometry.meshing.solve_envelope`) there instead of at its seed search.
+    """
     mem = case.pinion
     tool = mem.flank(flank)
     bl = mem.blank
+    if guess is not None:
+        params, sec0 = guess
+        guess = (params[..., 0], params[..., 1], params[..., 2], sec0)
     sol = solve_envelope(tool.blade, tool.machine, z, rho, length_scale=bl.outer_cone_distance,
-                         depth=bl.outer_addendum + bl.outer_dedendum)
+                         depth=bl.outer_addendum + bl.outer_dedendum, guess=guess)
     mirror = _MIRROR if mem.hand == "left" else np.ones(3)
     with np.errstate(invalid="ignore", divide="ignore"):
         pc = surface_curvatures(sol.family, tool.machine.process == "Generate",
                                 bl.outer_cone_distance)
     return (sol.position * mirror, sol.normal * mirror, sol.reason, pc.kappa1, pc.kappa2,
-            pc.dir1 * mirror, sol.section)
+            pc.dir1 * mirror, sol.section, np.stack([sol.s, sol.theta, sol.q], -1))
 
 
 def _mates(case: Case, flank: str, kin: MeshKinematics, corners, u, v, *, branch=None,
-           reference=None) -> tuple[_Mates, int]:
-    """Evaluate the real pinion at fractions (u, v) and map it through the action surface."""
+           reference=None, guess=None) -> tuple[_Mates, int]:
+    """Evaluate the real pinion at fractions (u, v) and map it through the action surface.
+
+    ``guess``: (params, section) of nearby pinion points, see :func:`_pinion_points`.
+    """
     z, rho = _bilinear(corners, u, v)
-    pos, nrm, reason, k1, k2, e1, sec = _pinion_points(case, flank, z, rho)
+    pos, nrm, reason, k1, k2, e1, sec, par = _pinion_points(case, flank, z, rho, guess)
     roll, branch = action_roll_angle(kin, pos, nrm, branch=branch, reference=reference)
     good = (reason == 0) & np.isfinite(roll)
     conj, _ = conjugate_points(kin, pos, nrm, np.where(good, roll, 0.0))
     img = np.stack([conj[..., 2], np.hypot(conj[..., 0], conj[..., 1])], -1)
-    return _Mates(z, rho, pos, nrm, roll, good, conj, img, k1, k2, e1, sec), branch
+    return _Mates(z, rho, pos, nrm, roll, good, conj, img, k1, k2, e1, sec, par), branch
 
 
 def roll_angle_surface(case: Case, *, flank: str | None = None,
@@ -703,7 +714,11 @@ def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
     # Jacobian (the forward map is strongly stretched near the pinion's fillet junction)
     shape = zt.shape
     n = zt.size
-    m0, _ = _mates(case, pf, kin, cp, u, v, branch=branch)
+    # the envelope solver starts from the forward node nearest to each place
+    iu = np.clip(np.rint((u - up[0]) / (up[1] - up[0])), 0, len(up) - 1).astype(int)
+    iv = np.clip(np.rint((v - vp[0]) / (vp[1] - vp[0])), 0, len(vp) - 1).astype(int)
+    m0, _ = _mates(case, pf, kin, cp, u, v, branch=branch,
+                   guess=(fwd.params[iu, iv], fwd.section[iu, iv]))
     store = [np.array(a).reshape(n, *np.shape(a)[len(shape):]) for a in m0]
     uf, vf = u.ravel().copy(), v.ravel().copy()
     tgt = target.reshape(n, 2)
@@ -729,15 +744,17 @@ def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
         if late or it == _BROYDEN_ITER - 1:
             # the rest sit where the map is strongly stretched (near the pinion's fillet
             # junction): evaluate the finite-difference stencil with the new point
+            g3 = (np.tile(store[12][idx], (3, 1)), np.tile(store[11][idx], 3))
             mj, _ = _mates(case, pf, kin, cp, np.r_[un, un + h, un], np.r_[vn, vn, vn + h],
-                           branch=branch)
+                           branch=branch, guess=g3)
             parts = [_Mates(*(np.asarray(a)[i * k:(i + 1) * k] for a in mj)) for i in range(3)]
             mm = parts[0]
             ok3 = parts[0].good & parts[1].good & parts[2].good
             jnew = np.stack([(parts[1].image - mm.image) / h, (parts[2].image - mm.image) / h],
                             -1)
         else:
-            mm, _ = _mates(case, pf, kin, cp, un, vn, branch=branch)
+            mm, _ = _mates(case, pf, kin, cp, un, vn, branch=branch,
+                           guess=(store[12][idx], store[11][idx]))
             ok3 = np.zeros(k, dtype=bool)
             jnew = jf[idx]
         # Broyden update of the per-node Jacobian with the secant of this step

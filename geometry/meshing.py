@@ -11,7 +11,10 @@ In Formate the member is the cutter's imprint (q ≡ 0) and only the two positio
 remain. The system is solved by a vectorised Newton method over all points at once with
 the analytic Jacobian of :mod:`geometry.machine`; the start comes from a coarse search at
 one seed point (the middle of the grid) followed by a first-order prediction for every
-other point, then continuation from converged neighbours for points that failed.
+other point, then continuation from converged neighbours for points that failed. A caller
+that re-solves targets near known solutions (an iteration moving its points a little) can
+pass those solutions as a starting guess: Newton then starts from them and the coarse seed
+search is skipped; points that do not converge from their guess take the path above.
 
 Each blade section (edge radius, toprem, profile, flankrem) is solved on its own analytic
 curve; a point whose solution leaves its section is re-solved on the neighbouring one.
@@ -347,8 +350,48 @@ def _continue_from_neighbours(ctx, x, section, reason, z, p, shape):
     reason[left] = fail[left]
 
 
+def _guess_start(guess, shape: tuple, sections, generate: bool):
+    """Starting points (n, m) and sections (n,) from a guess; ``have`` marks usable rows."""
+    if all(hasattr(guess, a) for a in ("s", "theta", "q")):
+        parts = [guess.s, guess.theta, guess.q, getattr(guess, "section", None)]
+    else:
+        try:
+            parts = list(guess)
+        except TypeError:
+            parts = []
+        if len(parts) == 3:
+            parts.append(None)
+        if len(parts) != 4:
+            raise InputError("guess: must be an EnvelopeSolution-like object with fields s, "
+                             "theta, q (and section) or a tuple (s, theta, q[, section]), got "
+                             f"{type(guess).__name__}")
+    try:
+        arrs = [np.broadcast_to(np.asarray(a, dtype=float), shape).ravel()
+                for a in parts[:3]]
+        sec = (None if parts[3] is None
+               else np.broadcast_to(np.asarray(parts[3], dtype=float), shape).ravel())
+    except ValueError as exc:
+        raise InputError(f"guess: s, theta, q and section must broadcast to the targets' "
+                         f"shape {shape} ({exc})") from None
+    x = np.stack(arrs if generate else arrs[:2], -1)
+    have = np.all(np.isfinite(x), axis=-1)
+    n_sec = len(sections.s_lo)
+    if sec is None:
+        # the section whose arc-length range holds s (sections are contiguous along s)
+        sec = np.searchsorted(sections.s_hi, np.where(have, x[:, 0], 0.0), side="left")
+        sec = np.minimum(sec, n_sec - 1)
+    else:
+        bad = have & ~((sec >= 0) & (sec < n_sec) & (sec == np.round(sec)))
+        if bad.any():
+            raise InputError(f"guess: section must be an integer in [0, {n_sec - 1}] where s, "
+                             f"theta, q are finite, got {sec[bad][0]!r}")
+        sec = np.where(have, sec, 0.0)
+    return x, sec.astype(np.intp), have
+
+
 def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
-                   length_scale: float, depth: float, seed_index=None) -> EnvelopeSolution:
+                   length_scale: float, depth: float, seed_index=None,
+                   guess=None) -> EnvelopeSolution:
     """Generated surface points at prescribed axial positions and radii (seed Eq. 2.7–2.8).
 
     Parameters
@@ -367,6 +410,16 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         Whole tooth depth; bounds the coarse search along the blade.
     seed_index : tuple of int, optional
         Index of the target used as the seed of the continuation (default: the middle).
+    guess : EnvelopeSolution-like or tuple, optional
+        Starting guess from a nearby earlier solve: an object with fields ``s`` [mm],
+        ``theta`` [rad], ``q`` [rad] and optionally ``section`` (an
+        :class:`EnvelopeSolution` or a :class:`geometry.flank.FlankSurface`), or a tuple
+        ``(s, theta, q[, section])``; each array broadcastable to the targets' shape
+        (``q`` is ignored in Formate). Newton starts from it and the coarse seed search is
+        skipped; points with a non-finite guess, or whose Newton from the guess does not
+        converge inside a blade section, are solved as without a guess (prediction from
+        the seed, continuation from neighbours), so the result is never worse. Without
+        ``section`` the section is the one whose arc-length range holds ``s``.
 
     Returns
     -------
@@ -375,15 +428,19 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     Raises
     ------
     InputError
-        If the shapes differ, a target is not finite, or no envelope solution exists at the
-        seed point (the settings do not generate a tooth surface inside the blank).
+        If the shapes differ, a target is not finite, the guess does not broadcast to the
+        targets or has a section index out of range, or no envelope solution exists at the
+        seed point when one is needed (the settings do not generate a tooth surface inside
+        the blank).
 
     Notes
     -----
     Seed §2.2.3: "each point on the generated surface can be found by solving a system of
     two implicit nonlinear equations"; with the point's projection-plane place prescribed
     the system is 3×3 in (s, θ, q) (2×2 in (s, θ) for Formate). Solved to |Δz|, |Δρ| <
-    1e-10 mm and |f| < 1e-12.
+    1e-10 mm and |f| < 1e-12. With a guess, the undercut test (reason 4) compares ∂f/∂q
+    with its sign at the seed target's solution, as without one; the seed search runs only
+    if the seed target or some other point does not converge from its guess.
     """
     z = np.asarray(axial, dtype=float)
     p = np.asarray(radius, dtype=float)
@@ -403,9 +460,41 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         seed = np.ravel_multi_index(tuple(d // 2 for d in shape), shape) if shape else 0
     else:
         seed = np.ravel_multi_index(seed_index, shape)
-    x_seed, jac_seed, sec_seed = _seed(ctx, zf[seed], pf[seed], depth)
-    x0 = _predict(x_seed, jac_seed, zf - zf[seed], pf - pf[seed])
-    x, section, reason = _solve_sections(ctx, x0, np.full(n, sec_seed), zf, pf)
+    m = 3 if gen else 2
+    x = np.full((n, m), np.nan)
+    section = np.zeros(n, dtype=np.intp)
+    reason = np.ones(n, dtype=np.int8)
+    if guess is not None:
+        xg, secg, have = _guess_start(guess, shape, sections, gen)
+        idx = np.flatnonzero(have)
+        if idx.size:
+            x[idx], section[idx], reason[idx] = _solve_sections(ctx, xg[idx], secg[idx],
+                                                                zf[idx], pf[idx])
+    if reason[seed] == 0 and section[seed] == sections.main:
+        # the seed target converged from its guess on the profile section: it is the
+        # reference, as the seed search's solution would be
+        x_seed, sec_seed = x[seed].copy(), int(section[seed])
+        _, jac, _ = _evaluate(ctx, x_seed[None], np.array([sec_seed]), zf[seed:seed + 1],
+                              pf[seed:seed + 1])
+        jac_seed = jac[0]
+    else:
+        x_seed, jac_seed, sec_seed = _seed(ctx, zf[seed], pf[seed], depth)
+    if guess is not None:
+        # near a section junction a place can have a root on two sections (one of them cut
+        # away); as without a guess, the seed's section wins where Newton from the
+        # prediction finds its root inside the section
+        other = np.flatnonzero((reason == 0) & (section != sec_seed))
+        if other.size:
+            x0 = _predict(x_seed, jac_seed, zf[other] - zf[seed], pf[other] - pf[seed])
+            xo, ok = _newton(ctx, x0, np.full(other.size, sec_seed), zf[other], pf[other])
+            ok &= ((xo[:, 0] >= sections.s_lo[sec_seed] - 1e-9)
+                   & (xo[:, 0] <= sections.s_hi[sec_seed] + 1e-9))
+            x[other[ok]], section[other[ok]] = xo[ok], sec_seed
+    rest = np.flatnonzero(reason != 0)
+    if rest.size:
+        x0 = _predict(x_seed, jac_seed, zf[rest] - zf[seed], pf[rest] - pf[seed])
+        x[rest], section[rest], reason[rest] = _solve_sections(
+            ctx, x0, np.full(rest.size, sec_seed), zf[rest], pf[rest])
     _continue_from_neighbours(ctx, x, section, reason, zf, pf, shape)
 
     q = x[:, 2] if gen else np.zeros(n)
