@@ -208,8 +208,8 @@ class _Eval:
         self.length = self.blank.outer_cone_distance
         self.depth = self.blank.outer_addendum + self.blank.outer_dedendum
 
-    def _solve(self, z: np.ndarray, p: np.ndarray):
-        kw = dict(length_scale=self.length, depth=self.depth)
+    def _solve(self, z: np.ndarray, p: np.ndarray, guess=None):
+        kw = dict(length_scale=self.length, depth=self.depth, guess=guess)
         mid = len(z) // 2
         order = sorted(range(len(z)), key=lambda i: abs(i - mid))[:2]
         for k in order:
@@ -222,6 +222,14 @@ class _Eval:
 
     def __call__(self, z, p):
         """Evaluate at arrays z, p (K,) [mm]; invalid points have ok = False (and NaN)."""
+        return self.evaluate(z, p)[:5]
+
+    def evaluate(self, z, p, guess=None):
+        """As :meth:`__call__`, plus the envelope parameters (K, 4): s, θ, q, section.
+
+        ``guess`` (K, 4) from nearby earlier points starts the envelope solver there
+        (:func:`geometry.meshing.solve_envelope`); NaN rows have no guess.
+        """
         z = np.asarray(z, dtype=float)
         p = np.asarray(p, dtype=float)
         k = len(z)
@@ -229,13 +237,21 @@ class _Eval:
         n = np.full((k, 3), np.nan)
         d = np.full((k, 3, 2), np.nan)
         w = np.full((k, 3, 3), np.nan)
+        par = np.full((k, 4), np.nan)
         ok = np.isfinite(z) & np.isfinite(p) & (p > 0)
         if not ok.any():
-            return r, n, d, w, ok
+            return r, n, d, w, ok, par
         idx = np.flatnonzero(ok)
-        sol = self._solve(z[idx], p[idx])
+        g = None
+        if guess is not None:
+            gi = np.asarray(guess, dtype=float)[idx]
+            have = np.all(np.isfinite(gi), axis=-1)
+            if have.any():
+                gi = np.where(have[:, None], gi, np.nan)
+                g = (gi[:, 0], gi[:, 1], gi[:, 2], np.where(have, gi[:, 3], 0.0))
+        sol = self._solve(z[idx], p[idx], g)
         if sol is None:
-            return r, n, d, w, np.zeros(k, bool)
+            return r, n, d, w, np.zeros(k, bool), par
         valid = sol.reason == 0
         fam = sol.family
         pc = surface_curvatures(fam, self.generate, self.length)
@@ -270,10 +286,11 @@ class _Eval:
         good = valid & np.all(np.isfinite(tang), axis=(1, 2)) & np.all(
             np.isfinite(shape), axis=(1, 2))
         r[idx], n[idx], d[idx], w[idx] = pos, nrm, tang, shape
+        par[idx] = np.stack([sol.s, sol.theta, sol.q, sol.section], -1)
         ok[idx] = good
         bad = ~ok
-        r[bad], n[bad], d[bad], w[bad] = np.nan, np.nan, np.nan, np.nan
-        return r, n, d, w, ok
+        r[bad], n[bad], d[bad], w[bad], par[bad] = np.nan, np.nan, np.nan, np.nan, np.nan
+        return r, n, d, w, ok, par
 
 
 def _inside(blank, z: np.ndarray, p: np.ndarray) -> np.ndarray:
@@ -310,8 +327,16 @@ class _Pair:
 
     def residual(self, phi_p, x):
         """Residuals (K, 6) [mm] and Jacobian (K, 6, 5) of x = (Z_p, P_p, Z_g, P_g, φ_g)."""
-        rp, n_p, dp, wp, okp = self.pinion(x[:, 0], x[:, 1])
-        rg, n_g, dg, wg, okg = self.gear(x[:, 2], x[:, 3])
+        return self._residual(phi_p, x)[:4]
+
+    def _residual(self, phi_p, x, guess=None):
+        """As :meth:`residual`, plus the envelope parameters (K, 8) of both flanks.
+
+        ``guess`` (K, 8): pinion then gear (s, θ, q, section) from nearby points.
+        """
+        gp, gg = (None, None) if guess is None else (guess[:, :4], guess[:, 4:])
+        rp, n_p, dp, wp, okp, pp_par = self.pinion.evaluate(x[:, 0], x[:, 1], gp)
+        rg, n_g, dg, wg, okg, pg_par = self.gear.evaluate(x[:, 2], x[:, 3], gg)
         tp, tg = self.transforms(phi_p, x[:, 4])
         a_p, a_g = tp[..., :3, :3], tg[..., :3, :3]
         pp = np.einsum("kij,kj->ki", a_p, rp) + tp[..., :3, 3]
@@ -329,9 +354,13 @@ class _Pair:
         jac[:, 3:, 4] = self.ln * np.cross(axis_g, ng)
         ok = okp & okg
         rel = (a_p @ wp @ np.swapaxes(a_p, -1, -2)) + (a_g @ wg @ np.swapaxes(a_g, -1, -2))
-        return f, jac, ok, (pp, pg, np_, ng, rel)
+        return f, jac, ok, (pp, pg, np_, ng, rel), np.concatenate([pp_par, pg_par], -1)
 
     def newton(self, phi_p, x0, max_iter: int = 15):
+        """Batched damped Gauss–Newton; returns x, done (see :meth:`newton_params`)."""
+        return self.newton_params(phi_p, x0, max_iter)[:2]
+
+    def newton_params(self, phi_p, x0, max_iter: int = 15):
         """Batched damped Gauss–Newton (Levenberg–Marquardt steps); returns x, done.
 
         Each roll position is its own 6 × 5 least-squares system; all are stepped together
@@ -342,14 +371,16 @@ class _Pair:
         contact point may lie anywhere on the contact line; nearly so just off it) it keeps
         the step from sliding far along the contact line. Steps are limited and halved
         while they leave the generated surface or more than double the residual. A position
-        is done when Eq. 2.14 holds to ``_STOP``.
+        is done when Eq. 2.14 holds to ``_STOP``. Each surface evaluation starts the envelope
+        solver from the previous iterate's surface parameters (returned as the third value,
+        (K, 8), to start :meth:`measure` too).
         """
         x = np.array(x0, dtype=float)
         k = len(x)
         scale = np.array([1.0, 1.0, 1.0, 1.0, 1.0 / self.rg])
         done = np.zeros(k, bool)
         dead = np.zeros(k, bool)
-        f, jac, ok, _ = self.residual(phi_p, x)
+        f, jac, ok, _, par = self._residual(phi_p, x)
         dead |= ~ok
         prev = np.full(k, np.inf)
         for _ in range(max_iter):
@@ -373,26 +404,29 @@ class _Pair:
             step = dx
             for _half in range(5):
                 xn = x[trial] + step
-                fn, jn, okn, _ = self.residual(phi_p[trial], xn)
+                fn, jn, okn, _, pn = self._residual(phi_p[trial], xn, par[trial])
                 good = okn & (np.linalg.norm(np.where(okn[:, None], fn, 0.0), axis=-1)
                               <= norm0 + _STOP)
                 x[trial[good]], f[trial[good]], jac[trial[good]] = xn[good], fn[good], jn[good]
+                par[trial[good]] = pn[good]
                 if good.all():
                     break
                 bad = ~good
                 trial, step, norm0 = trial[bad], 0.5 * step[bad], norm0[bad]
             else:
                 dead[trial] = True
-        return x, done
+        return x, done, par
 
     def solve_one(self, phi_p: float, x0: np.ndarray) -> np.ndarray:
         """Fallback for one roll position: scipy ``least_squares`` (Levenberg–Marquardt)."""
         phi = np.array([phi_p])
+        last = [None]  # surface parameters of the last generated evaluation: the next guess
 
         def fun(xf):
-            f, jac, ok, _ = self.residual(phi, xf[None])
+            f, jac, ok, _, par = self._residual(phi, xf[None], last[0])
             if not ok[0]:
                 return np.full(6, _PENALTY), np.zeros((6, 5))
+            last[0] = par
             return f[0], jac[0]
 
         cache: dict[bytes, tuple] = {}
@@ -410,14 +444,15 @@ class _Pair:
                             xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=12)
         return sol.x
 
-    def measure(self, phi_p, x):
+    def measure(self, phi_p, x, guess=None):
         """Residual of Eq. 2.14, the contact check and the placed points of a solution.
 
         A solution counts only if the relative curvature W_p + W_g is positive
         semi-definite in the tangent plane (to ``_PSD`` 1/mm): a local minimum of the
         separation, i.e. a contact point, not a saddle where the surfaces already cross.
+        ``guess`` (K, 8): surface parameters from :meth:`newton_params`.
         """
-        _, _, ok, (pp, pg, np_, ng, rel) = self.residual(phi_p, x)
+        _, _, ok, (pp, pg, np_, ng, rel), _ = self._residual(phi_p, x, guess)
         res = np.maximum(np.linalg.norm(pp - pg, axis=-1), np.linalg.norm(np_ + ng, axis=-1))
         res = np.where(ok, res, np.inf)
         nz = np.where(ok[:, None], np_, 0.0)
@@ -594,8 +629,8 @@ def _substeps(pair: _Pair, ref: MeanContact, known: dict[float, np.ndarray], r: 
     for m in range(1, n + 1):
         rm = r0 + (r - r0) * m / n
         phi = np.array([ref.pinion_rotation + ref.pinion_sense * rm])
-        xs, _ = pair.newton(phi, _extrapolate(known, rm)[None])
-        _, conv, _, _, _ = pair.measure(phi, xs)
+        xs, _, par = pair.newton_params(phi, _extrapolate(known, rm)[None])
+        _, conv, _, _, _ = pair.measure(phi, xs, par)
         if not conv[0]:
             x1 = pair.solve_one(float(phi[0]), _extrapolate(known, rm))
             _, conv, _, _, _ = pair.measure(phi, x1[None])
@@ -697,8 +732,8 @@ def conventional_tca(case: Case, pinion_roll, *, flank: str | None = None,
         for b in range(0, len(sweep), _BLOCK):
             idx = sweep[b:b + _BLOCK]
             x0 = np.stack([_extrapolate(known, roll[i]) for i in idx])
-            xs, _ = pair.newton(phi_p[idx], x0)
-            _, conv, _, _, _ = pair.measure(phi_p[idx], xs)
+            xs, _, par = pair.newton_params(phi_p[idx], x0)
+            _, conv, _, _, _ = pair.measure(phi_p[idx], xs, par)
             for j, i in enumerate(idx):
                 if not conv[j] and not frontier:
                     # fallback: continuation in small steps from the nearest solved position

@@ -417,9 +417,11 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         ``(s, theta, q[, section])``; each array broadcastable to the targets' shape
         (``q`` is ignored in Formate). Newton starts from it and the coarse seed search is
         skipped; points with a non-finite guess, or whose Newton from the guess does not
-        converge inside a blade section, are solved as without a guess (prediction from
-        the seed, continuation from neighbours), so the result is never worse. Without
-        ``section`` the section is the one whose arc-length range holds ``s``.
+        converge inside a blade section, or whose root lies farther from the guess than
+        one limited Newton step (2 mm, 0.15 rad, 0.15 rad: possibly another branch), are
+        solved as without a guess (prediction from the seed, continuation from
+        neighbours). Without ``section`` the section is the one whose arc-length range
+        holds ``s``.
 
     Returns
     -------
@@ -470,6 +472,10 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         if idx.size:
             x[idx], section[idx], reason[idx] = _solve_sections(ctx, xg[idx], secg[idx],
                                                                 zf[idx], pf[idx])
+            # a guess farther than one limited Newton step from its root was not from a
+            # nearby solve: the root may be another branch, so solve such points afresh
+            far = np.any(np.abs(x[idx] - xg[idx]) > _STEP_LIMIT[:m], axis=-1)
+            reason[idx[far]] = 1
     if reason[seed] == 0 and section[seed] == sections.main:
         # the seed target converged from its guess on the profile section: it is the
         # reference, as the seed search's solution would be
