@@ -211,6 +211,7 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
                           gear_to_pair(cc.position[..., 1:, :])], axis=-2)
     # the gear normal points out of the gear; the contact normal out of the pinion is −n_g
     n_pair = -gear_to_pair(nrm_g, vec=True)
+    t_pair = gear_to_pair(_tangent(cc), vec=True)
     # the real pinion touches the gear point at the pair's own instant, which near the
     # pinion's tip or ends can lie just beyond its blank (the curve ends where the
     # conjugate mate leaves it): such segments cannot carry load and are left out
@@ -259,7 +260,8 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
     return {
         "u": u, "v": v, "midpoint": pos_g, "midpoint_pair": mid_pair, "ends_pair": ends_pair,
-        "normal_pair": n_pair, "length": length, "moment_arm": arm, "lag": lag, "r_eq": r_eq,
+        "normal_pair": n_pair, "tangent_pair": t_pair, "length": length, "moment_arm": arm,
+        "lag": lag, "r_eq": r_eq,
         "ute": cc.ute.reshape(J, K), "pinion_rotation": rp,
         "gear_rotation": eo.gear_phase - rp / eo.ratio, "shape": (J, K, S),
     }
@@ -557,6 +559,12 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
                           "gear profile fraction of the segment midpoint (root 0, tip 1)"),
         "segment_position": _var(("roll", "pair", "segment", "xyz"), seg["midpoint"], "mm",
                                  "segment midpoint on the reference gear tooth, gear frame"),
+        "contact_point": _var(("roll", "pair", "segment", "xyz"), seg["midpoint_pair"], "mm",
+                              "segment midpoint in the pair frame at the roll position"),
+        "contact_normal": _var(("roll", "pair", "segment", "xyz"), seg["normal_pair"], "1",
+                               "contact normal (out of the pinion) in the pair frame"),
+        "contact_tangent": _var(("roll", "pair", "segment", "xyz"), seg["tangent_pair"], "1",
+                                "unit tangent of the contact line in the pair frame"),
         "load_share": _var(dims3, share, "1", "share of the gear torque carried by the pair"),
         "edge_contact": _var(dims3, edge, "1",
                              "load reaches the end of the pair's contact curve (flank edge)"),
@@ -612,6 +620,11 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
         "time_easeoff_s": timing["easeoff"],
         "time_segments_s": timing["segments"],
         "misalignment": json_misalignment(case.misalignment),
+        "ratio": float(eo.ratio),
+        "pinion_axis": np.asarray(eo.kinematics.pinion_axis, float),
+        "pinion_origin_mm": np.asarray(eo.kinematics.pinion_origin, float),
+        "gear_axis": np.asarray(eo.kinematics.gear_axis, float),
+        "gear_origin_mm": np.asarray(eo.kinematics.gear_origin, float),
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
