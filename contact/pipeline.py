@@ -49,8 +49,10 @@ DEFAULT_CASE = "kolivand2009_fm_11x41.toml"
 #: The seed's Table 3.1 operating points: pinion torques [N·m] and misalignment
 #: ΔE = 0.15 mm, ΔP = 0.12 mm, ΔG = 0, ΔΣ = 0 (signs as printed; see docs/machine.md
 #: for the toolkit's convention).
-SEED_TABLE_3_1 = {"torque": (50.0, 250.0, 500.0),
-                  "misalignment": Misalignment(delta_E=0.15, delta_P=0.12)}
+SEED_TABLE_3_1 = {
+    "torque": (50.0, 250.0, 500.0),
+    "misalignment": Misalignment(delta_E=0.15, delta_P=0.12),
+}
 
 
 def bundled_cases() -> list[str]:
@@ -97,6 +99,11 @@ def run_analysis(
     options: LTCAOptions | None = None,
     geometry: bool = True,
     progress: bool = False,
+    pinion_speed: float | None = None,
+    lubricant: str = "75W90",
+    temperature: float = 90.0,
+    roughness: float = 0.8,
+    friction_model: str = "xu2007",
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -117,11 +124,16 @@ def run_analysis(
         Include the four generated flanks as ``/geometry`` (default True).
     progress : bool
         Progress bar over the LTCA roll positions.
+    pinion_speed : float, optional — [rpm]
+        With a speed, the efficiency stage runs too (``/friction``,
+        :func:`friction.efficiency.efficiency_analysis`) with ``lubricant``,
+        ``temperature`` [degC], ``roughness`` (Rq [µm]) and ``friction_model``.
 
     Returns
     -------
     xarray.DataTree
-        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca``; root attributes
+        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca`` (and ``/friction`` with a
+        speed); root attributes
         ``case``, ``inputs`` (the case as TOML), per-stage times ``time_*_s``.
 
     Raises
@@ -155,19 +167,34 @@ def run_analysis(
     tree["/easeoff"] = eo_ds
     tree["/utca"] = utca_ds
     tree["/ltca"] = ltca_ds
+    if pinion_speed is not None:
+        from friction.efficiency import efficiency_analysis
+
+        t0 = time.perf_counter()
+        tree["/friction"] = efficiency_analysis(
+            ltca_ds,
+            pinion_speed=pinion_speed,
+            lubricant=lubricant,
+            temperature=temperature,
+            roughness=roughness,
+            friction_model=friction_model,
+        )
+        times["friction"] = time.perf_counter() - t0
     mis = c.misalignment
-    root = xr.Dataset(attrs={
-        "title": f"hypoid-ltca analysis of {c.name}",
-        "case": c.name,
-        "case_source": c.source,
-        "toolkit_version": __version__,
-        "solver": opts.solver,
-        "misalignment_dE_mm": float(mis.delta_E),
-        "misalignment_dP_mm": float(mis.delta_P),
-        "misalignment_dG_mm": float(mis.delta_G),
-        "misalignment_dSigma_rad": float(mis.delta_Sigma),
-        **{f"time_{k}_s": v for k, v in times.items()},
-    })
+    root = xr.Dataset(
+        attrs={
+            "title": f"hypoid-ltca analysis of {c.name}",
+            "case": c.name,
+            "case_source": c.source,
+            "toolkit_version": __version__,
+            "solver": opts.solver,
+            "misalignment_dE_mm": float(mis.delta_E),
+            "misalignment_dP_mm": float(mis.delta_P),
+            "misalignment_dG_mm": float(mis.delta_G),
+            "misalignment_dSigma_rad": float(mis.delta_Sigma),
+            **{f"time_{k}_s": v for k, v in times.items()},
+        }
+    )
     tree["/"] = root
     out = xr.DataTree.from_dict(tree)
     out.attrs["inputs"] = c.to_toml()

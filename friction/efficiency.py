@@ -20,6 +20,8 @@ is μ·F·V_s, totals are sums.
 
 from __future__ import annotations
 
+import json
+import logging
 import math
 import warnings
 
@@ -46,6 +48,8 @@ from friction.rolling import rolling_traction
 from geometry.errors import InputError
 
 __all__ = ["efficiency_analysis"]
+
+log = logging.getLogger(__name__)
 
 _E_STEEL, _NU_STEEL = 206_000.0, 0.3
 
@@ -90,7 +94,8 @@ def efficiency_analysis(
         ``film_thickness`` [um], ``lambda_ratio`` [1], ``friction_coefficient`` [1],
         ``sliding_loss``, ``rolling_loss`` [W]; over (``torque``, ``roll``)
         ``power_loss`` [W] and ``efficiency`` [1]; over ``torque`` the cycle means
-        ``power_loss_mean`` [W] and ``efficiency_mean`` [1].
+        ``power_loss_mean`` [W] and ``efficiency_mean`` [1]. Inputs outside a model's
+        fitted range are logged and listed in the ``model_range_warnings`` attribute.
 
     Raises
     ------
@@ -146,8 +151,8 @@ def efficiency_analysis(
     L = np.broadcast_to(ltca["segment_length"].values, shape)[loaded]
     R = np.broadcast_to(ltca["equivalent_radius"].values, shape)[loaded]
     vs, vr, sr = kin["sliding_velocity"], kin["rolling_velocity"], np.abs(kin["slide_to_roll"])
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", FrictionModelRangeWarning)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", FrictionModelRangeWarning)
         loading = thermal_loading(beta, eta0, vr, k_oil)
         phi_t = thermal_reduction_factor(loading, ph, e_prime, sr)
         h = np.asarray(
@@ -174,6 +179,10 @@ def efficiency_analysis(
             float,
         )
         fr = np.asarray(rolling_traction(vr, sr, eta0, alpha, w, R, e_prime, beta, k_oil), float)
+    range_notes = sorted({str(w.message) for w in caught
+                          if issubclass(w.category, FrictionModelRangeWarning)})
+    for note in range_notes:
+        log.warning("%s", note)
     mu = np.broadcast_to(mu, f.shape)
     p_slide = mu * f * vs  # N · m/s = W
     p_roll = fr * L * vr  # (N/mm) · mm · m/s = W

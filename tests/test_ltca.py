@@ -232,3 +232,11 @@ def test_stored_contact_points_satisfy_the_equation_of_meshing():
     # the normal velocities agree to well under 1 % of the surface speed
     assert np.max(out["normal_mismatch"] / speed) < 1e-2
     assert np.all(out["rolling_velocity"] > 0)
+
+
+def test_run_analysis_adds_friction_with_a_speed():
+    tree = run_analysis(_case(), [100.0], options=SMALL, geometry=False, pinion_speed=1500.0)
+    fr = tree["friction"].dataset
+    assert {"efficiency", "power_loss", "friction_coefficient", "lambda_ratio"} <= set(fr)
+    assert 0.9 < float(fr["efficiency_mean"]) < 1.0
+    check_conventions(tree)

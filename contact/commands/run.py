@@ -44,12 +44,33 @@ def register(sub) -> None:
         "Without CASE: the bundled default case at the seed's Table 3.1 conditions "
         "(pinion torque 50/250/500 N m, ΔE = 0.15 mm, ΔP = 0.12 mm).",
     )
-    p.add_argument("case", nargs="?", default=None,
-                   help="case file (TOML) or bundled case name (default: the 11x41 pair)")
-    p.add_argument("--torque", type=float, nargs="+", default=None, metavar="N_M",
-                   help="pinion torques [N m] (default 50 250 500)")
+    p.add_argument(
+        "case",
+        nargs="?",
+        default=None,
+        help="case file (TOML) or bundled case name (default: the 11x41 pair)",
+    )
+    p.add_argument(
+        "--torque",
+        type=float,
+        nargs="+",
+        default=None,
+        metavar="N_M",
+        help="pinion torques [N m] (default 50 250 500)",
+    )
     _misalignment_args(p)
     p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
+    p.add_argument(
+        "--speed",
+        type=float,
+        default=1500.0,
+        metavar="RPM",
+        help="pinion speed for the efficiency stage (default 1500; 0 skips it)",
+    )
+    p.add_argument("--lubricant", default="75W90", help="bundled oil name or TOML file")
+    p.add_argument("--temperature", type=float, default=90.0, help="oil inlet temperature [C]")
+    p.add_argument("--roughness", type=float, default=0.8, help="RMS roughness Rq [um]")
+    p.add_argument("--friction-model", default="xu2007", help="friction coefficient model")
     p.add_argument("--flank", choices=["drive", "coast"], default=None)
     p.add_argument("--rolls-per-cycle", type=int, default=20)
     p.add_argument("--segments", type=int, default=24, help="segments per contact curve")
@@ -75,24 +96,72 @@ def run(args: argparse.Namespace) -> int:
     case = resolve_case(args.case)
     base = SEED_TABLE_3_1["misalignment"] if args.case is None else case.misalignment
     mis = misalignment_from_args(args, base)
-    opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle, segments=args.segments,
-                       **({"solver": args.solver} if args.solver else {}))
-    tree = run_analysis(case, args.torque, misalignment=mis, flank=args.flank, options=opts,
-                        progress=not args.no_progress and sys.stderr.isatty())
+    opts = LTCAOptions(
+        rolls_per_cycle=args.rolls_per_cycle,
+        segments=args.segments,
+        **({"solver": args.solver} if args.solver else {}),
+    )
+    tree = run_analysis(
+        case,
+        args.torque,
+        misalignment=mis,
+        flank=args.flank,
+        options=opts,
+        progress=not args.no_progress and sys.stderr.isatty(),
+        pinion_speed=args.speed or None,
+        lubricant=args.lubricant,
+        temperature=args.temperature,
+        roughness=args.roughness,
+        friction_model=args.friction_model,
+    )
     lt = tree["ltca"].to_dataset()
-    print(f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
-          f"ΔG {mis.delta_G:g} mm, ΔΣ {math.degrees(mis.delta_Sigma) * 60:g}′; "
-          f"solver {lt.attrs['solver']}")
+    print(
+        f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
+        f"ΔG {mis.delta_G:g} mm, ΔΣ {math.degrees(mis.delta_Sigma) * 60:g}′; "
+        f"solver {lt.attrs['solver']}"
+    )
+    fr = tree["friction"].to_dataset() if "friction" in tree.children else None
     rows = []
     for i, T in enumerate(lt["torque"].values):
         h = lt["lte_harmonics"].values[i]
-        rows.append((f"{T:g}", f"{lt['lte_mean'].values[i]:.1f}",
-                     f"{lt['lte_peak_to_peak'].values[i]:.1f}", f"{h[0]:.1f}", f"{h[1]:.1f}",
-                     f"{h[2]:.1f}", f"{lt['lte_harmonic_rss'].values[i]:.1f}",
-                     f"{float(lt['pressure_max'].isel(torque=i).max()):.0f}",
-                     f"{int(lt['found'].isel(torque=i).sum())}/{lt.sizes['roll']}"))
-    print(tabulate(rows, headers=["T_p [N m]", "LTE mean [urad]", "p-p", "1st", "2nd", "3rd",
-                                  "RMS*", "p_max [MPa]", "certified"], tablefmt="github"))
+        rows.append(
+            (
+                f"{T:g}",
+                f"{lt['lte_mean'].values[i]:.1f}",
+                f"{lt['lte_peak_to_peak'].values[i]:.1f}",
+                f"{h[0]:.1f}",
+                f"{h[1]:.1f}",
+                f"{h[2]:.1f}",
+                f"{lt['lte_harmonic_rss'].values[i]:.1f}",
+                f"{float(lt['pressure_max'].isel(torque=i).max()):.0f}",
+                f"{int(lt['found'].isel(torque=i).sum())}/{lt.sizes['roll']}",
+                f"{100 * fr['efficiency_mean'].values[i]:.2f}" if fr is not None else "-",
+            )
+        )
+    print(
+        tabulate(
+            rows,
+            headers=[
+                "T_p [N m]",
+                "LTE mean [urad]",
+                "p-p",
+                "1st",
+                "2nd",
+                "3rd",
+                "RMS*",
+                "p_max [MPa]",
+                "certified",
+                "efficiency [%]",
+            ],
+            tablefmt="github",
+        )
+    )
+    if fr is not None:
+        print(
+            f"efficiency at {fr.attrs['pinion_speed_rpm']:g} rpm, {fr.attrs['lubricant']} at "
+            f"{fr.attrs['inlet_temperature_degC']:g} C, Rq {fr.attrs['roughness_rq_um']:g} um, "
+            f"friction model {fr.attrs['friction_model']}"
+        )
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     times = {k[5:-2]: v for k, v in tree.attrs.items() if k.startswith("time_")}
     print("time [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in times.items()))
