@@ -230,5 +230,6 @@ def efficiency_analysis(
         "friction_model": friction_model,
         "inlet_viscosity_Pa_s": eta0,
         "pressure_viscosity_1_per_GPa": alpha,
+        "model_range_warnings": json.dumps(range_notes),
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)

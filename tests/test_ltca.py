@@ -238,5 +238,5 @@ def test_run_analysis_adds_friction_with_a_speed():
     tree = run_analysis(_case(), [100.0], options=SMALL, geometry=False, pinion_speed=1500.0)
     fr = tree["friction"].dataset
     assert {"efficiency", "power_loss", "friction_coefficient", "lambda_ratio"} <= set(fr)
-    assert 0.9 < float(fr["efficiency_mean"]) < 1.0
+    assert 0.9 < float(fr["efficiency_mean"].item()) < 1.0
     check_conventions(tree)
