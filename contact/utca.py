@@ -187,11 +187,12 @@ class _Fields:
         """
         u = np.asarray(u, dtype=float)
         target = np.asarray(target, dtype=float)
-        shape = np.broadcast_shapes(u.shape, target.shape)
-        u = np.broadcast_to(u, shape)
-        target = np.broadcast_to(target, shape)
+        if u.shape != target.shape:
+            shape = np.broadcast_shapes(u.shape, target.shape)
+            u = np.broadcast_to(u, shape)
+            target = np.broadcast_to(target, shape)
+        shape = u.shape
         v0, v1 = self.v[0], self.v[-1]
-        miss = np.zeros(shape, dtype=bool)
         if lattice is not None:
             vn = self.v
             qn = np.broadcast_to(lattice, (*shape, len(vn)))
@@ -201,22 +202,29 @@ class _Fields:
             qa = np.take_along_axis(qn, k[..., None], -1)[..., 0]
             qb = np.take_along_axis(qn, (k + 1)[..., None], -1)[..., 0]
             t = np.clip((target - qa) / np.where(qb != qa, qb - qa, 1.0), 0.0, 1.0)
-            v = vn[k] + t * (vn[k + 1] - vn[k])
-            miss = (s * (qn[..., 0] - target) > 0) | (s * (qn[..., -1] - target) < 0)
+            v = (vn[k] + t * (vn[k + 1] - vn[k])).ravel()
+            miss = ((s * (qn[..., 0] - target) > 0) | (s * (qn[..., -1] - target) < 0)).ravel()
         else:
-            v = np.array(np.broadcast_to(v_start, shape), dtype=float)
-            v = np.where(np.isfinite(v), v, 0.5 * (v0 + v1))
-        f = self.q.ev(u, v) - target
+            v = np.array(np.broadcast_to(v_start, shape), dtype=float).ravel()
+            v[~np.isfinite(v)] = 0.5 * (v0 + v1)
+            miss = np.zeros(v.size, dtype=bool)
+        uf, tf = u.ravel(), target.ravel()
+        f = self.q.ev(uf, v) - tf
+        # Newton on the points not yet converged (and not known to miss) only
+        act = np.flatnonzero(~(np.abs(f) < 1e-13) & ~miss)
         for _ in range(_V_NEWTON):
-            d = self.q.ev(u, v, dy=1)
-            # the spline is defined on [v0, v1] only (FITPACK clamps outside)
-            v = np.clip(v - f / np.where(d != 0, d, 1e-30), v0, v1)
-            f = self.q.ev(u, v) - target
-            if np.all(np.abs(f) < 1e-13):
+            if act.size == 0:
                 break
+            ua, va = uf[act], v[act]
+            d = self.q.ev(ua, va, dy=1)
+            # the spline is defined on [v0, v1] only (FITPACK clamps outside)
+            va = np.minimum(np.maximum(va - f[act] / np.where(d != 0, d, 1e-30), v0), v1)
+            fa = self.q.ev(ua, va) - tf[act]
+            v[act], f[act] = va, fa
+            act = act[~(np.abs(fa) < 1e-13)]
         tol = 1e-9 * (v1 - v0)
         bad = miss | (v < v0 - tol) | (v > v1 + tol) | (np.abs(f) > 1e-9)
-        return np.where(bad, np.nan, np.clip(v, v0, v1))
+        return np.where(bad, np.nan, np.minimum(np.maximum(v, v0), v1)).reshape(shape)
 
 
 class ContactCurves(NamedTuple):
@@ -242,8 +250,9 @@ class ContactCurves(NamedTuple):
     index: np.ndarray  # batch: sample index nearest to H (-1 where no curve)
 
 
-def _curves_seed(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
-    """Iso-lines Q = t (flat batch) and the minimum of ε along them (seed §2.3.2.2)."""
+def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
+    """Places, ε and UTE of the iso-lines Q = t (flat batch), without the flank fields
+    (``normal_arm``, ``position``, ``normal`` are None; see :func:`_curve_fields`)."""
     nb = t.size
     u0, u1 = float(f.u[0]), float(f.u[-1])
     nc = _COARSE_PER_CELL * (len(f.u) - 1) + 1
@@ -309,10 +318,6 @@ def _curves_seed(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
     fin = np.isfinite(vp)
     us, vs = np.where(fin, up, u0), np.where(fin, vp, f.v[0])
     eps = np.where(fin, f.eps.ev(us, vs), np.nan)
-    arm = np.where(fin, f.arm.ev(us, vs), np.nan)
-    pos = np.stack([np.where(fin, s.ev(us, vs), np.nan) for s in f.pos], -1)
-    nrm = np.stack([s.ev(us, vs) for s in f.nrm], -1)
-    nrm = np.where(fin[..., None], nrm / np.linalg.norm(nrm, axis=-1, keepdims=True), np.nan)
     # minimum with parabolic refinement through the lowest sample and its neighbours
     ute = np.full(nb, np.nan)
     cu = np.full(nb, np.nan)
@@ -345,11 +350,30 @@ def _curves_seed(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
             cv[r] = np.where(better, vr, cv[r])
     return ContactCurves(
         target=t, shift=np.zeros(nb), u=up, v=vp, ease_off_angle=eps,
-        gap=np.where(fin, 0.0, np.nan), normal_arm=arm, position=pos, normal=nrm, ute=ute,
+        gap=np.where(fin, 0.0, np.nan), normal_arm=None, position=None, normal=None, ute=ute,
         contact_u=cu, contact_v=cv, index=index)
 
 
-def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
+def _curve_fields(f: _Fields, cc: ContactCurves) -> ContactCurves:
+    """Normal arm, gear flank point and unit normal along the curves of ``cc``."""
+    fin = np.isfinite(cc.v)
+    us, vs = np.where(fin, cc.u, f.u[0]), np.where(fin, cc.v, f.v[0])
+    arm = np.where(fin, f.arm.ev(us, vs), np.nan)
+    pos = np.stack([np.where(fin, s.ev(us, vs), np.nan) for s in f.pos], -1)
+    nrm = np.stack([s.ev(us, vs) for s in f.nrm], -1)
+    nrm = np.where(fin[..., None], nrm / np.linalg.norm(nrm, axis=-1, keepdims=True), np.nan)
+    return cc._replace(normal_arm=arm, position=pos, normal=nrm)
+
+
+def _curves_seed(f: _Fields, t: np.ndarray, n_point: int, *,
+                 flank_fields: bool = True) -> ContactCurves:
+    """Iso-lines Q = t (flat batch) and the minimum of ε along them (seed §2.3.2.2)."""
+    cc = _seed_places(f, t, n_point)
+    return _curve_fields(f, cc) if flank_fields else cc
+
+
+def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int, *,
+                         flank_fields: bool = True) -> ContactCurves:
     """The seed's curves corrected for the pinion's own gap to its conjugate.
 
     The pinion at roll q is separated from its conjugate at a gear place x by
@@ -358,9 +382,10 @@ def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurv
     iso-line Q = q + t₀ carries the contact point and UTE = UTE_seed(q + t₀) + ½ K t₀²
     (error O((t − t₀)²) since the function is stationary at its minimum). g is the ease-off
     derivative across the iso-line at H (envelope theorem), or the finite difference of
-    UTE_seed where H is an end of the curve (edge contact).
+    UTE_seed where H is an end of the curve (edge contact). ``flank_fields=False`` skips
+    the normal arm, flank point and normal (None), which the UTE does not need.
     """
-    first = _curves_seed(f, t, n_point)
+    first = _seed_places(f, t, n_point)
     have = np.isfinite(first.ute)
     cu = np.where(have, first.contact_u, f.u[0])
     cv = np.where(have, first.contact_v, f.v[0])
@@ -371,18 +396,21 @@ def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurv
     if edge.any():
         h = 1e-5
         te = t[edge]
-        pair = _curves_seed(f, np.r_[te + h, te - h], n_point).ute
+        pair = _seed_places(f, np.r_[te + h, te - h], n_point).ute
         fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
         g[np.flatnonzero(edge)] = np.where(np.isfinite(fd), fd, g[edge])
     k = f.gap.ev(cu, cv)
     shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), 0.0)
-    second = _curves_seed(f, t + shift, n_point)
+    second = _seed_places(f, t + shift, n_point)
     ok2 = np.isfinite(second.ute)
     # keep the first-order curve where the shifted one leaves the contact region
     use = ok2 | ~have
     shift = np.where(use, shift, 0.0)
-    cc = ContactCurves(*(np.where(use.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
-                         for a, b in zip(second, first, strict=True)))
+    cc = ContactCurves(
+        *(None if a is None else np.where(use.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
+          for a, b in zip(second, first, strict=True)))
+    if flank_fields:
+        cc = _curve_fields(f, cc)
     fin = np.isfinite(cc.u)
     us = np.where(fin, cc.u, f.u[0])
     vs = np.where(fin, cc.v, f.v[0])
@@ -394,7 +422,7 @@ def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurv
 
 
 #: UTE methods: name → contact curves of a flat batch of roll targets
-UTE_METHODS: dict[str, Callable[[_Fields, np.ndarray, int], ContactCurves]] = {
+UTE_METHODS: dict[str, Callable[..., ContactCurves]] = {
     "seed": _curves_seed,
     "second_order": _curves_second_order,
 }
@@ -436,6 +464,14 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
     Seed §2.3.2.2: intersection of the plane z = q with Q, projected onto the projection
     plane and then onto the ease-off; its lowest point H gives the UTE.
     """
+    tgt, f = _checked(eo, target, method, n_point, fields)
+    batch = tgt.shape
+    cc = UTE_METHODS[method](f, tgt.reshape(-1), int(n_point))
+    return ContactCurves(*(np.reshape(a, batch + np.shape(a)[1:]) for a in cc))
+
+
+def _checked(eo: EaseOff, target, method: str, n_point: int, fields: _Fields | None):
+    """Validated roll targets (float array) and the splines, for :func:`contact_curves`."""
     if method not in UTE_METHODS:
         raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
     if int(n_point) != n_point or n_point < 3:
@@ -443,10 +479,7 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
     tgt = np.asarray(target, dtype=float)
     if not np.all(np.isfinite(tgt)):
         raise InputError("target: roll values must be finite [rad]")
-    f = fields if fields is not None else _Fields(eo)
-    batch = tgt.shape
-    cc = UTE_METHODS[method](f, tgt.reshape(-1), int(n_point))
-    return ContactCurves(*(np.reshape(a, batch + np.shape(a)[1:]) for a in cc))
+    return tgt, (fields if fields is not None else _Fields(eo))
 
 
 def pair_transmission_error(eo: EaseOff, roll, *, method: str = "second_order",
@@ -473,7 +506,10 @@ def pair_transmission_error(eo: EaseOff, roll, *, method: str = "second_order",
     InputError
         As :func:`contact_curves`.
     """
-    return contact_curves(eo, roll, method=method, n_point=n_point, fields=fields).ute
+    tgt, f = _checked(eo, roll, method, n_point, fields)
+    # the UTE only: the flank point, normal and arm along the curves are not evaluated
+    cc = UTE_METHODS[method](f, tgt.reshape(-1), int(n_point), flank_fields=False)
+    return cc.ute.reshape(tgt.shape)
 
 
 def transitions(eo: EaseOff, *, method: str = "second_order", fields: _Fields | None = None,
