@@ -43,9 +43,9 @@ from contact.compliance.tooth import (
     N_HEIGHT,
     ShellPoints,
     ToothModelData,
-    _shell_matrix,
+    _shell_matrices,
+    _shell_points,
     member_foundation,
-    shell_coordinates,
     shell_tooth_from_case,
     weber_depth,
 )
@@ -355,29 +355,26 @@ def mesh_compliance(
     points = {}
     ends = {}
     for name, transform, sign in (("pinion", t_p, 1.0), ("gear", t_g, -1.0)):
-        data = model.member(name)
         # midpoints may overhang slightly too: the LTCA takes them on the gear side, and
         # the pinion mate differs by the ease-off (≤ tens of µm) along the normal; they
-        # are clipped onto the tooth like segment ends
-        points[name] = shell_coordinates(data, seg.midpoints, sign * seg.normals,
-                                         transform=transform, tolerance=END_TOLERANCE)
-        ends[name] = shell_coordinates(data, ends_flat, transform=transform,
-                                       tolerance=END_TOLERANCE)
+        # are clipped onto the tooth like segment ends. Midpoints and ends in one batch.
+        points[name], ends[name] = _shell_points(model.member(name), seg.midpoints,
+                                                 sign * seg.normals, transform, END_TOLERANCE,
+                                                 extra=ends_flat)
     parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",
                                            "gear_foundation")}
-    blocks = {}
+    blocks = {int(pair): np.flatnonzero(seg.pair_index == pair)
+              for pair in np.unique(seg.pair_index)}
     asym = 0.0
-    for pair in np.unique(seg.pair_index):
-        idx = np.flatnonzero(seg.pair_index == pair)
-        blocks[int(pair)] = idx
-        ix = np.ix_(idx, idx)
-        for name in ("pinion", "gear"):
-            data = model.member(name)
-            sp = _take(points[name], idx)
-            ep = _take(ends[name], np.concatenate([idx, idx + n]))
-            cm = _shell_matrix(data, sp, ep, model.theory, model.n_height, model.n_face)
+    for name in ("pinion", "gear"):
+        data = model.member(name)
+        # all tooth pairs' segments solved together (one cho_solve), one block each
+        mats = _shell_matrices(data, points[name], ends[name], model.theory, model.n_height,
+                               model.n_face, list(blocks.values()))
+        for idx, cm in zip(blocks.values(), mats, strict=True):
+            ix = np.ix_(idx, idx)
             parts[f"{name}_shell"][ix] = cm.matrix
-            parts[f"{name}_foundation"][ix] = member_foundation(data, sp)
+            parts[f"{name}_foundation"][ix] = member_foundation(data, _take(points[name], idx))
             asym = max(asym, cm.asymmetry)
     depth = np.column_stack([weber_depth(model.pinion, points["pinion"]),
                              weber_depth(model.gear, points["gear"])])

@@ -377,36 +377,81 @@ class ShellModel:
         -------
         ndarray, shape (n_dof, P) — [1]
         """
-        xi = np.atleast_1d(np.asarray(x, dtype=float)) / self.reference_height
-        eta = 2.0 * np.atleast_1d(np.asarray(theta, dtype=float)) / self.tooth.subtended_angle
-        eta = eta - 1.0
-        d = np.asarray(direction, dtype=float).reshape(xi.size, 3)
-        zs = np.broadcast_to(np.asarray(offset, dtype=float), (xi.size,))
+        xi = np.atleast_1d(np.asarray(x, dtype=float)).ravel() / self.reference_height
+        eta = 2.0 * np.atleast_1d(np.asarray(theta, dtype=float)).ravel()
+        eta = eta / self.tooth.subtended_angle - 1.0
+        n_pts = xi.size
+        d = np.asarray(direction, dtype=float).reshape(n_pts, 3)
+        zs = np.broadcast_to(np.asarray(offset, dtype=float), (n_pts,))
         dxi = 1.0 / self.reference_height
         deta = 2.0 / self.tooth.subtended_angle
-        g, dg, _ = face_basis(eta, self.n_face)
-        out = np.zeros((self.n_dof, xi.size))
+        g, dg = _legendre_rows(eta, self.n_face)
+        heights: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
+        out = np.empty((self.n_dof, n_pts))
+
+        def outer(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+            return (a[:, None, :] * b[None, :, :]).reshape(-1, n_pts)
+
         for fam, off, power, count in self._layout:
-            f, df, _ = height_basis(xi, power, count)
-            base = (f[:, None, :] * g[None, :, :]).reshape(-1, xi.size)
-            size = base.shape[0]
-            work = np.zeros_like(base)
-            if fam.rotates:  # U_z = −∂W/∂x, V_z = −∂W/∂θ / R at z = 0
-                w_x = (df[:, None, :] * g[None, :, :]).reshape(-1, xi.size) * dxi
-                w_t = (f[:, None, :] * dg[None, :, :]).reshape(-1, xi.size) * deta
-                work -= zs * (d[:, 0] * w_x + d[:, 1] * w_t / self.tooth.radius)
+            if (power, count) not in heights:
+                heights[(power, count)] = _height_rows(xi, power, count)
+            f, df = heights[(power, count)]
             comp = d[:, fam.component]
+            # work of the force on the family's field at the point (see the docstring)
             if fam.z_power == 0:
-                work += comp * base
+                scale = comp
             elif fam.z_power == 1 and fam.component != _W:
-                work += comp * zs * base
-            out[off : off + size] += work
+                scale = comp * zs
+            else:
+                scale = None
+            if fam.rotates:  # U_z = −∂W/∂x, V_z = −∂W/∂θ / R at z = 0
+                a_x = zs * d[:, 0] * dxi
+                a_t = zs * d[:, 1] * deta / self.tooth.radius
+                hx = -df * a_x if scale is None else f * scale - df * a_x
+                work = outer(hx, g) - outer(f * a_t, dg)
+            elif scale is None:
+                work = 0.0
+            else:
+                work = outer(f * scale, g)
+            out[off : off + f.shape[0] * g.shape[0]] = work
         return out
 
     def solve(self, loads: np.ndarray) -> np.ndarray:
         """Ritz unknowns ``K⁻¹ F`` for load vectors ``loads`` (n_dof, P) [per N]."""
         sc = self._scale[:, None]
         return sc * linalg.cho_solve(self._factor, sc * loads, check_finite=False)
+
+
+def _legendre_rows(t: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """P_0 … P_{count−1} and their derivatives at 1-D ``t``: two (count, T) arrays.
+
+    Bonnet's recurrence (k + 1) P_{k+1} = (2k + 1) t P_k − k P_{k−1} and
+    P′_{k+1} = P′_{k−1} + (2k + 1) P_k: the same functions as
+    :func:`contact.compliance._basis.face_basis` (values and first derivatives),
+    without its general polynomial evaluation (to round-off).
+    """
+    p = np.empty((count, t.size))
+    dp = np.empty((count, t.size))
+    p[0] = 1.0
+    dp[0] = 0.0
+    if count > 1:
+        p[1] = t
+        dp[1] = 1.0
+    for k in range(1, count - 1):
+        p[k + 1] = ((2 * k + 1) * t * p[k] - k * p[k - 1]) / (k + 1)
+        dp[k + 1] = dp[k - 1] + (2 * k + 1) * p[k]
+    return p, dp
+
+
+def _height_rows(xi: np.ndarray, power: int, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """f_k(ξ) = ξ^power P_k(2ξ − 1) and df_k/dξ at 1-D ``xi``: two (count, Q) arrays.
+
+    The functions of :func:`contact.compliance._basis.height_basis` (to round-off).
+    """
+    p, dp = _legendre_rows(2.0 * xi - 1.0, count)
+    xp = xi**power
+    xp1 = power * xi ** (power - 1) if power >= 1 else np.zeros_like(xi)
+    return xp * p, xp1 * p + 2.0 * xp * dp
 
 
 def _gauss(n: int, lo: float, hi: float) -> tuple[np.ndarray, np.ndarray]:
@@ -942,10 +987,29 @@ def compliance_matrix(
             _check_inside(tooth, ends[..., 0], ends[..., 1], "points ± segment_length/2")
     else:
         raise InputError(f"points must have shape (N, 2) or (N, 2, 2) [got {pts.shape}]")
+    return _compliance_blocks(model, ends, normals, None, n_segment_gauss)[0]
+
+
+def _compliance_blocks(
+    model: ShellModel,
+    ends: np.ndarray,
+    normals: np.ndarray | None,
+    blocks: list[np.ndarray] | None,
+    n_segment_gauss: int = 4,
+) -> list[ComplianceMatrix]:
+    """:func:`compliance_matrix` of several groups of segments on one tooth at once.
+
+    ``ends`` (N, 2, 2) [mm, rad] on the tooth (checked), ``normals`` (N, 3) or None,
+    ``blocks`` a list of index arrays into the N segments (None: one block of all).
+    The load vectors of all segments are built together and solved with one
+    ``cho_solve`` (all right-hand sides); each block's matrix and asymmetry are those
+    :func:`compliance_matrix` gives for that block alone (to round-off).
+    """
     n_pts = ends.shape[0]
     if n_pts == 0:
         raise InputError("points must hold at least one load")
     ng = _check_modes("n_segment_gauss", n_segment_gauss, 1, 32)
+    tooth = model.tooth
 
     # h(θ) is linear, so the developed tooth is convex: a chord between two
     # on-tooth end points stays on the tooth.
@@ -961,11 +1025,15 @@ def compliance_matrix(
     d, zs = _flank_loads(tooth, gp[:, 0], gp[:, 1], nrm)
     phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs)  # (n_dof, N·G)
     phi = (phi.reshape(phi.shape[0], n_pts, ng) * w[None, None, :]).sum(axis=2)
-
-    cmat = phi.T @ model.solve(phi)
-    norm = float(np.linalg.norm(cmat))
-    asym = float(np.linalg.norm(cmat - cmat.T) / norm) if norm > 0.0 else 0.0
-    if asym > 1e-8:
-        log.warning("shell compliance asymmetry %.3g before symmetrisation", asym)
-    cmat = 0.5 * (cmat + cmat.T)
-    return ComplianceMatrix(matrix=cmat, asymmetry=asym, centres=0.5 * (p0 + p1))
+    sol = model.solve(phi)
+    out = []
+    for idx in [slice(None)] if blocks is None else blocks:
+        cmat = phi[:, idx].T @ sol[:, idx]
+        norm = float(np.linalg.norm(cmat))
+        asym = float(np.linalg.norm(cmat - cmat.T) / norm) if norm > 0.0 else 0.0
+        if asym > 1e-8:
+            log.warning("shell compliance asymmetry %.3g before symmetrisation", asym)
+        cmat = 0.5 * (cmat + cmat.T)
+        out.append(ComplianceMatrix(matrix=cmat, asymmetry=asym,
+                                    centres=0.5 * (p0[idx] + p1[idx])))
+    return out

@@ -57,6 +57,7 @@ member_compliance      N×N bending/shear compliance of points on one tooth
 
 from __future__ import annotations
 
+import functools
 import logging
 import math
 import time
@@ -76,9 +77,10 @@ from contact.compliance.shell import (
     ComplianceMatrix,
     ShellModel,
     ShellTooth,
+    _compliance_blocks,
     build_shell_model,
-    compliance_matrix,
 )
+from contact.compliance.shell import _as_points as _as_shell_points
 from geometry.cutter import profile_sections
 from geometry.errors import InputError, LTCAError
 from geometry.flank import blank_outline, flank_surface
@@ -203,6 +205,11 @@ class ToothModelData:
         return np.interp(np.asarray(theta) * self.tooth.radius, self.arc_table[1],
                          self.arc_table[0])
 
+    @functools.cached_property
+    def surface(self) -> _Surface:
+        """The mid-surface map of :attr:`corners` and :attr:`angle_coef`, prepared once."""
+        return _make_surface(self.corners, self.angle_coef)
+
     @property
     def pitch(self) -> float:
         """Angular pitch 2π/z [rad]."""
@@ -292,41 +299,98 @@ def _invert_bilinear(corners: np.ndarray, z: np.ndarray, rho: np.ndarray):
     return u, v
 
 
-def _angles(coef: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """Flank angles and their u- and v-derivatives from the Legendre fits.
+class _Surface(NamedTuple):
+    """The tooth's mid-surface map M(u, v), prepared once for fast evaluation.
 
-    Returns an array (…, 3, 2): [value, ∂/∂u, ∂/∂v] × [convex, concave] [rad].
+    The flank-angle fits (Legendre in t_u = 2u − 1, t_v = 2v − 1) and their u- and
+    v-derivatives are converted once to power-basis coefficients in (t_u, t_v), so
+    that an evaluation at many points is one Vandermonde product and one small matrix
+    product (instead of ``legder``/``legvander2d`` per call); the bilinear blank map
+    (z, ρ)(u, v) = b₀ + u b_u + v b_v + u v b_uv is kept as its coefficients. The same
+    polynomials: results agree with direct Legendre evaluation to round-off
+    (~1e-15 rad). Points are evaluated as rows (quantity, point), i.e. flattened.
     """
+
+    z: tuple[float, float, float, float]  # [mm] z: b₀, b_u, b_v, b_uv
+    rho: tuple[float, float, float, float]  # [mm] ρ: b₀, b_u, b_v, b_uv
+    degree: tuple[int, int]  # [1] power-basis degrees in t_u, t_v
+    power: np.ndarray  # (5, (du+1)(dv+1)) [rad] rows φ, φ_u, φ_v (mid), φ convex, φ concave
+
+
+def _leg_to_power(n: int) -> np.ndarray:
+    """(n, n) matrix L with Σ_k c_k P_k(t) = Σ_j (L c)_j t^j."""
+    out = np.zeros((n, n))
+    for k in range(n):
+        p = leg.leg2poly(np.eye(n)[k])
+        out[: p.size, k] = p
+    return out
+
+
+def _make_surface(corners: np.ndarray, coef: np.ndarray) -> _Surface:
+    """Prepare the mid-surface map of blank corners (2, 2, 2) and angle fits (2, nu, nv)."""
     nu_c, nv_c = coef.shape[1:]
     cols = []
-    for axis in (None, 1, 2):
+    for axis in (None, 0, 1):
         for k in range(2):
-            c = coef[k][None] if axis is None else leg.legder(coef[k][None], scl=2.0, axis=axis)
+            c = coef[k] if axis is None else leg.legder(coef[k], scl=2.0, axis=axis)
             full = np.zeros((nu_c, nv_c))
-            full[: c.shape[1], : c.shape[2]] = c[0]
-            cols.append(full.ravel())
-    basis = leg.legvander2d(2.0 * np.asarray(u, dtype=float) - 1.0,
-                            2.0 * np.asarray(v, dtype=float) - 1.0, (nu_c - 1, nv_c - 1))
-    out = basis @ np.stack(cols, axis=1)
-    return out.reshape(*out.shape[:-1], 3, 2)
+            full[: c.shape[0], : c.shape[1]] = c
+            cols.append(full)
+    # [φ, φ_u, φ_v] of the mid-surface (mean of the flanks), then the two flanks' φ
+    leg_rows = np.stack([0.5 * (cols[0] + cols[1]), 0.5 * (cols[2] + cols[3]),
+                         0.5 * (cols[4] + cols[5]), cols[0], cols[1]])
+    power = np.einsum("ai,kij,bj->kab", _leg_to_power(nu_c), leg_rows, _leg_to_power(nv_c))
+    c = np.asarray(corners, dtype=float)
+    b = (c[0, 0], c[1, 0] - c[0, 0], c[0, 1] - c[0, 0], c[1, 1] - c[1, 0] - c[0, 1] + c[0, 0])
+    return _Surface(z=tuple(float(x[0]) for x in b), rho=tuple(float(x[1]) for x in b),
+                    degree=(nu_c - 1, nv_c - 1),
+                    power=np.ascontiguousarray(power.reshape(5, nu_c * nv_c)))
 
 
-def _mid_surface(data_corners: np.ndarray, coef: np.ndarray, u: np.ndarray, v: np.ndarray):
-    """Mid-surface point M and its tangents M_u, M_v in the member frame (…, 3)."""
-    p, pu, pv = _bilinear(data_corners, u, v)
-    ang = _angles(coef, u, v).mean(axis=-1)
-    phi, phi_u, phi_v = ang[..., 0], ang[..., 1], ang[..., 2]
-    z, rho = p[..., 0], p[..., 1]
+def _angle_rows(surf: _Surface, u: np.ndarray, v: np.ndarray, rows: slice) -> np.ndarray:
+    """Rows ``rows`` of [φ, φ_u, φ_v, φ_convex, φ_concave] [rad] at 1-D (u, v): (k, N)."""
+    du, dv = surf.degree
+    t = np.empty((max(du, dv) + 1, 2, u.size))
+    t[0] = 1.0
+    if t.shape[0] > 1:
+        np.subtract(2.0 * u, 1.0, out=t[1, 0])
+        np.subtract(2.0 * v, 1.0, out=t[1, 1])
+    for k in range(2, t.shape[0]):
+        np.multiply(t[k - 1], t[1], out=t[k])
+    basis = (t[: du + 1, 0, None, :] * t[None, : dv + 1, 1]).reshape(-1, u.size)
+    return surf.power[rows] @ basis
+
+
+def _blank_rows(surf: _Surface, u: np.ndarray, v: np.ndarray):
+    """z, ρ and their u- and v-derivatives of the blank's bilinear map (1-D each)."""
+    z0, zu, zv, zuv = surf.z
+    r0, ru, rv, ruv = surf.rho
+    pu_z, pu_r = zu + zuv * v, ru + ruv * v
+    pv_z, pv_r = zv + zuv * u, rv + ruv * u
+    return z0 + zu * u + v * pv_z, r0 + ru * u + v * pv_r, pu_z, pu_r, pv_z, pv_r
+
+
+def _mid_rows(surf: _Surface, u: np.ndarray, v: np.ndarray):
+    """M, M_u, M_v at 1-D (u, v) as nine rows (x, y, z components) [mm]."""
+    z, rho, pu_z, pu_r, pv_z, pv_r = _blank_rows(surf, u, v)
+    phi, phi_u, phi_v = _angle_rows(surf, u, v, slice(0, 3))
     c, s = np.cos(phi), np.sin(phi)
-
-    def vec(dz, drho, dphi):
-        return np.stack([drho * c - rho * s * dphi, drho * s + rho * c * dphi, dz], axis=-1)
-
-    m = np.stack([rho * c, rho * s, z], axis=-1)
-    return m, vec(pu[..., 0], pu[..., 1], phi_u), vec(pv[..., 0], pv[..., 1], phi_v)
+    rc, rs = rho * c, rho * s
+    return (rc, rs, z,
+            pu_r * c - rs * phi_u, pu_r * s + rc * phi_u, pu_z,
+            pv_r * c - rs * phi_v, pv_r * s + rc * phi_v, pv_z)
 
 
-def _frames(corners: np.ndarray, coef: np.ndarray, u: np.ndarray, v: np.ndarray):
+def _mid_surface(surf: _Surface, u: np.ndarray, v: np.ndarray):
+    """Mid-surface point M and its tangents M_u, M_v in the member frame (…, 3)."""
+    u = np.asarray(u, dtype=float)
+    v = np.broadcast_to(np.asarray(v, dtype=float), u.shape)
+    r = _mid_rows(surf, u.ravel(), v.ravel())
+    shape = (*u.shape, 3)
+    return tuple(np.stack(r[k : k + 3], axis=-1).reshape(shape) for k in (0, 3, 6))
+
+
+def _frames(surf: _Surface, u: np.ndarray, v: np.ndarray):
     """Mid-surface point and local shell frame (…, 3, 3) rows e_x, e_θ, e_z at (u, v).
 
     e_z: unit mid-surface normal towards the convex flank; e_θ: unit tangent of the
@@ -335,14 +399,17 @@ def _frames(corners: np.ndarray, coef: np.ndarray, u: np.ndarray, v: np.ndarray)
     handedness of (e_x, e_θ, e_z) follows the member's hand; the shell model only
     needs the components along these directions.
     """
-    m, mu, mv = _mid_surface(corners, coef, u, v)
+    u = np.asarray(u, dtype=float)
+    v = np.broadcast_to(np.asarray(v, dtype=float), u.shape)
+    m, mu, mv = _mid_surface(surf, u, v)
     n = np.cross(mu, mv)
     n /= np.linalg.norm(n, axis=-1, keepdims=True)
-    ang = _angles(coef, u, v)[..., 0, :]
-    # towards the convex flank: the convex flank lies at angle ang[0] > or < ang[1]
-    phi = ang.mean(axis=-1)
+    ang = _angle_rows(surf, u.ravel(), v.ravel(), slice(3, 5))  # convex, concave φ
+    cvx, ccv = ang[0].reshape(u.shape), ang[1].reshape(u.shape)
+    # towards the convex flank: the convex flank lies at angle cvx > or < ccv
+    phi = 0.5 * (cvx + ccv)
     e_phi = np.stack([-np.sin(phi), np.cos(phi), np.zeros_like(phi)], axis=-1)
-    sgn = np.sign(np.sum(n * e_phi, axis=-1) * (ang[..., 0] - ang[..., 1]))
+    sgn = np.sign(np.sum(n * e_phi, axis=-1) * (cvx - ccv))
     e_z = n * sgn[..., None]
     e_t = mu / np.linalg.norm(mu, axis=-1, keepdims=True)
     e_x = np.cross(e_z, e_t)
@@ -350,25 +417,38 @@ def _frames(corners: np.ndarray, coef: np.ndarray, u: np.ndarray, v: np.ndarray)
     return m, np.stack([e_x, e_t, e_z], axis=-2)
 
 
-def _slope(corners: np.ndarray, coef: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """du/dv along the mid-surface curves orthogonal to the lengthwise curves v = const."""
-    _, mu, mv = _mid_surface(corners, coef, u, v)
-    return -np.sum(mu * mv, axis=-1) / np.sum(mu * mu, axis=-1)
+def _slope(surf: _Surface, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """du/dv along the mid-surface curves orthogonal to the lengthwise curves v = const.
+
+    At 1-D (u, v): −(M_u·M_v)/(M_u·M_u) with M = (ρ cos φ, ρ sin φ, z); the rotation
+    terms cancel, M_u·M_v = p_u·p_v + ρ² φ_u φ_v and |M_u|² = |p_u|² + ρ² φ_u² with
+    p = (z, ρ) the blank map.
+    """
+    _, rho, pu_z, pu_r, pv_z, pv_r = _blank_rows(surf, u, v)
+    phi_u, phi_v = _angle_rows(surf, u, v, slice(1, 3))
+    rfu = rho * rho * phi_u
+    return -(pu_z * pv_z + pu_r * pv_r + rfu * phi_v) / (pu_z * pu_z + pu_r * pu_r
+                                                        + rfu * phi_u)
 
 
-def _trajectory(corners: np.ndarray, coef: np.ndarray, u, v0, v1) -> np.ndarray:
+def _trajectory(surf: _Surface, u, v0, v1) -> np.ndarray:
     """u at profile fraction v1 on the orthogonal trajectory through (u, v0) (RK4)."""
-    u = np.asarray(u, dtype=float).copy()
-    v = np.broadcast_to(np.asarray(v0, dtype=float), u.shape).copy()
-    h = (np.asarray(v1, dtype=float) - v) / _TRAJ_STEPS
+    u = np.asarray(u, dtype=float)
+    shape = u.shape
+    u = u.ravel().copy()
+    v = np.broadcast_to(np.asarray(v0, dtype=float), shape).ravel().copy()
+    h = (np.broadcast_to(np.asarray(v1, dtype=float), shape).ravel() - v) / _TRAJ_STEPS
+    h2 = 0.5 * h
+    h6 = h / 6.0
     for _ in range(_TRAJ_STEPS):
-        k1 = _slope(corners, coef, u, v)
-        k2 = _slope(corners, coef, u + 0.5 * h * k1, v + 0.5 * h)
-        k3 = _slope(corners, coef, u + 0.5 * h * k2, v + 0.5 * h)
-        k4 = _slope(corners, coef, u + h * k3, v + h)
-        u = u + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+        vh = v + h2
+        k1 = _slope(surf, u, v)
+        k2 = _slope(surf, u + h2 * k1, vh)
+        k3 = _slope(surf, u + h2 * k2, vh)
         v = v + h
-    return u
+        k4 = _slope(surf, u + h * k3, v)
+        u = u + h6 * (k1 + 2.0 * (k2 + k3) + k4)
+    return u.reshape(shape)
 
 
 def _rot_z(angle: np.ndarray, vec: np.ndarray) -> np.ndarray:
@@ -459,38 +539,38 @@ def _gauss01(n: int) -> tuple[np.ndarray, np.ndarray]:
     return 0.5 * (t + 1.0), 0.5 * w
 
 
-def _arc_table(corners: np.ndarray, coef: np.ndarray) -> tuple[np.ndarray, float]:
+def _arc_table(surf: _Surface) -> tuple[np.ndarray, float]:
     """Arc length [mm] from the toe along the mid-height lengthwise curve vs u; its length."""
     xi = np.linspace(-_ARC_MARGIN, 1.0 + _ARC_MARGIN, _ARC_POINTS)
-    _, mu, _ = _mid_surface(corners, coef, xi, np.full_like(xi, _REF_V))
+    _, mu, _ = _mid_surface(surf, xi, np.full_like(xi, _REF_V))
     speed = np.linalg.norm(mu, axis=-1)
     arc = np.concatenate([[0.0], np.cumsum(0.5 * (speed[1:] + speed[:-1]) * np.diff(xi))])
     arc -= np.interp(0.0, xi, arc)
     return np.stack([xi, arc]), float(np.interp(1.0, xi, arc))
 
 
-def _fit_thickness(corners, coef, fl: _ToothFlanks, table: np.ndarray, length: float):
+def _fit_thickness(surf: _Surface, fl: _ToothFlanks, table: np.ndarray, length: float):
     """Measured normal thickness on the grid and its least-squares fit (seed Eq. 3.1a)."""
     both = fl.ok[0] & fl.ok[1]
     uu, vv = np.meshgrid(fl.u, fl.v, indexing="ij")
-    _, frame = _frames(corners, coef, uu, vv)
+    _, frame = _frames(surf, uu, vv)
     t_meas = np.abs(np.sum((fl.convex - fl.concave) * frame[..., 2, :], axis=-1))
     t_meas = np.where(both, t_meas, np.nan)
     # face fraction s = θ/Θ₀ of each grid point, through its orthogonal trajectory
-    ss = np.interp(_trajectory(corners, coef, uu, vv, _REF_V), table[0], table[1]) / length
+    ss = np.interp(_trajectory(surf, uu, vv, _REF_V), table[0], table[1]) / length
     a = np.column_stack([((1 - ss) * (1 - vv))[both], (ss * (1 - vv))[both], vv[both]])
     fit, *_ = np.linalg.lstsq(a, t_meas[both], rcond=None)
     return fit, t_meas, float(np.max(np.abs(a @ fit - t_meas[both])))
 
 
-def _fit_heights(corners, coef, table: np.ndarray, length: float, n: int):
+def _fit_heights(surf: _Surface, table: np.ndarray, length: float, n: int):
     """Lengths of the orthogonal trajectories root cone → face cone, and their linear fit."""
     s = np.linspace(0.0, 1.0, n)
     xi = np.interp(s * length, table[1], table[0])
     vg, wg = _gauss01(12)
     vv = np.broadcast_to(vg, (n, vg.size))
-    ug = _trajectory(corners, coef, np.broadcast_to(xi[:, None], vv.shape), _REF_V, vv)
-    _, mu, mv = _mid_surface(corners, coef, ug, vv)
+    ug = _trajectory(surf, np.broadcast_to(xi[:, None], vv.shape), _REF_V, vv)
+    _, mu, mv = _mid_surface(surf, ug, vv)
     # the trajectory's tangent: M_v minus its part along the lengthwise tangent M_u
     tangent = mv - (np.sum(mu * mv, axis=-1) / np.sum(mu * mu, axis=-1))[..., None] * mu
     h_meas = np.linalg.norm(tangent, axis=-1) @ wg
@@ -506,12 +586,12 @@ class _VirtualGear(NamedTuple):
     dedendum: float  # [mm]
 
 
-def _virtual_gear(member: str, blank, corners, coef, blades, t_root: float, length: float,
+def _virtual_gear(member: str, blank, corners, surf: _Surface, blades, t_root: float, length: float,
                   bore_radius: float | None, youngs_modulus: float) -> _VirtualGear:
     """Mid-face normal-section virtual spur gear for the Sainsot foundation."""
     zm, pm = blank_outline(blank).mean_point
     um, vm = _invert_bilinear(corners, np.array([zm]), np.array([pm]))
-    mpt, mu_m, _ = _mid_surface(corners, coef, um, vm)
+    mpt, mu_m, _ = _mid_surface(surf, um, vm)
     d = blank.pitch_angle
     e_r = np.array([mpt[0, 0], mpt[0, 1], 0.0]) / math.hypot(mpt[0, 0], mpt[0, 1])
     gen = math.sin(d) * e_r + math.cos(d) * np.array([0.0, 0.0, 1.0])
@@ -648,9 +728,10 @@ def shell_tooth_from_case(
     coef_v, res_v = _fit_angles(fl.u, fl.v, fl.phi[0], fl.ok[0])
     coef_c, res_c = _fit_angles(fl.u, fl.v, fl.phi[1], fl.ok[1])
     coef = np.stack([coef_v, coef_c])
-    table, length = _arc_table(corners, coef)
-    (t_toe, t_heel, t_tip), t_meas, t_err = _fit_thickness(corners, coef, fl, table, length)
-    (h_toe, h_heel), h_meas, h_err = _fit_heights(corners, coef, table, length, nu)
+    surf = _make_surface(corners, coef)
+    table, length = _arc_table(surf)
+    (t_toe, t_heel, t_tip), t_meas, t_err = _fit_thickness(surf, fl, table, length)
+    (h_toe, h_heel), h_meas, h_err = _fit_heights(surf, table, length, nu)
 
     blades = {f: mem.flank(f).blade for f in SIDES}
     radius = 0.5 * (blades["convex"].point_radius + blades["concave"].point_radius)
@@ -662,7 +743,7 @@ def shell_tooth_from_case(
     tooth = ShellTooth.from_face_width(
         **{k: float(val) for k, val in dims.items()}, face_width=length, radius=radius,
         youngs_modulus=e_mod, poisson_ratio=nu_p)
-    vg = _virtual_gear(member, blank, corners, coef, blades, 0.5 * (t_toe + t_heel), length,
+    vg = _virtual_gear(member, blank, corners, surf, blades, 0.5 * (t_toe + t_heel), length,
                        bore_radius, e_mod)
     elapsed = time.perf_counter() - t_start
     log.debug("%s tooth measured in %.3f s: %s", member, elapsed, tooth)
@@ -704,7 +785,7 @@ def _to_member(transform, points: np.ndarray, normals: np.ndarray | None):
     return p, (None if normals is None else normals @ rot)
 
 
-def _project_to_mid(corners: np.ndarray, coef: np.ndarray, p: np.ndarray, u, v):
+def _project_to_mid(surf: _Surface, p: np.ndarray, u, v):
     """Foot (u, v) of points p on the mid-surface along its normal (Gauss–Newton).
 
     Solves (p − M)·M_u = (p − M)·M_v = 0; the neglected curvature terms are
@@ -712,25 +793,28 @@ def _project_to_mid(corners: np.ndarray, coef: np.ndarray, p: np.ndarray, u, v):
     """
     u = np.array(u, dtype=float)
     v = np.array(v, dtype=float)
+    px, py, pz = np.asarray(p, dtype=float).T
     for _ in range(_PROJ_ITER):
-        m, mu, mv = _mid_surface(corners, coef, u, v)
-        r = p - m
-        g1, g2 = np.sum(r * mu, axis=-1), np.sum(r * mv, axis=-1)
-        a11, a12, a22 = (np.sum(mu * mu, axis=-1), np.sum(mu * mv, axis=-1),
-                         np.sum(mv * mv, axis=-1))
+        mx, my, mz, ux, uy, uz, vx, vy, vz = _mid_rows(surf, u, v)
+        rx, ry, rz = px - mx, py - my, pz - mz
+        g1 = rx * ux + ry * uy + rz * uz
+        g2 = rx * vx + ry * vy + rz * vz
+        a11 = ux * ux + uy * uy + uz * uz
+        a12 = ux * vx + uy * vy + uz * vz
+        a22 = vx * vx + vy * vy + vz * vz
         det = a11 * a22 - a12 * a12
         du = (a22 * g1 - a12 * g2) / det
         dv = (a11 * g2 - a12 * g1) / det
         u += du
         v += dv
-        if np.all(np.abs(du) + np.abs(dv) < 1e-14):
+        if (np.abs(du) + np.abs(dv)).max() < 1e-14:
             break
     return u, v
 
 
 def _reference_tooth(data: ToothModelData, pm: np.ndarray, u: np.ndarray, v: np.ndarray):
     """Turn points by whole pitches onto the reference tooth; returns (turn, points)."""
-    m, _, _ = _mid_surface(data.corners, data.angle_coef, u, v)
+    m, _, _ = _mid_surface(data.surface, u, v)
     gap = np.remainder(np.arctan2(m[:, 1], m[:, 0]) - np.arctan2(pm[:, 1], pm[:, 0]) + math.pi,
                        2 * math.pi) - math.pi
     turn = data.pitch * np.round(gap / data.pitch)
@@ -801,33 +885,50 @@ def shell_coordinates(
     if nrm is not None and np.any(np.abs(np.linalg.norm(nrm, axis=1) - 1.0) > 1e-6):
         raise InputError("normals must be unit vectors (|n| = 1 within 1e-6)")
     tol = _positive("tolerance", tolerance, "")
-    pm, nm = _to_member(transform, pts, nrm)
+    return _shell_points(data, pts, nrm, transform, tol)[0]
+
+
+def _shell_points(data: ToothModelData, pts: np.ndarray, nrm: np.ndarray | None, transform,
+                  tol: float, extra: np.ndarray | None = None) -> list[ShellPoints]:
+    """:func:`shell_coordinates` of checked points (with normals ``nrm`` or None) and,
+    in the same batch, of ``extra`` points without normals (e.g. segment ends).
+
+    Returns [ShellPoints of ``pts``] or [that, ShellPoints of ``extra``]. One batch
+    evaluates the mid-surface once per iteration for all points (the cost is mostly
+    per call); each point's result is its own (to round-off: a batch iterates until
+    its slowest point has converged).
+    """
+    n = pts.shape[0]
+    every = pts if extra is None else np.concatenate([pts, extra])
+    pm, nm = _to_member(transform, every, nrm)
     rho = np.hypot(pm[:, 0], pm[:, 1])
     u0, v0 = _invert_bilinear(data.corners, pm[:, 2], rho)
     outside = (u0 < -tol) | (u0 > 1 + tol) | (v0 < -tol) | (v0 > 1 + tol)
-    if np.any(outside):
-        i = int(np.flatnonzero(outside)[0])
-        raise InputError(
-            f"points must lie on the {data.member}'s tooth flanks: face fraction u and "
-            f"profile fraction v in [0, 1] (±{tol:g}); point {i} has u = {u0[i]:.6g}, "
-            f"v = {v0[i]:.6g}")
+    for group in ((slice(0, n),) if extra is None else (slice(0, n), slice(n, None))):
+        if np.any(outside[group]):
+            i = int(np.flatnonzero(outside[group])[0])
+            uo, vo = u0[group][i], v0[group][i]
+            raise InputError(
+                f"points must lie on the {data.member}'s tooth flanks: face fraction u and "
+                f"profile fraction v in [0, 1] (±{tol:g}); point {i} has u = {uo:.6g}, "
+                f"v = {vo:.6g}")
     turn, p_ref = _reference_tooth(data, pm, u0, v0)
-    u, v = _project_to_mid(data.corners, data.angle_coef, p_ref, u0, v0)
-    m, frame = _frames(data.corners, data.angle_coef, u, v)
+    surf = data.surface
+    u, v = _project_to_mid(surf, p_ref, u0, v0)
+    m, frame = _frames(surf, u, v)
     offset = np.sum((p_ref - m) * frame[:, 2, :], axis=-1)
     tooth = data.tooth
-    xi = _trajectory(data.corners, data.angle_coef, u, v, _REF_V)
+    xi = _trajectory(surf, u, v, _REF_V)
     theta = np.clip(data.face_angle(xi), 0.0, tooth.subtended_angle)
     v = np.clip(v, 0.0, 1.0)
     x = v * tooth.height(theta)
-    if nm is None:
-        local = None
-        side = np.where(offset >= 0.0, 1, -1)
-    else:
-        local = np.einsum("nij,nj->ni", frame, _rot_z(turn, nm))
-        side = np.where(local[:, 2] >= 0.0, 1, -1)
-        half = 0.5 * tooth.thickness(x, theta)
-        wrong = (offset * side < 0.0) & (np.abs(offset) > 0.25 * half)
+    side = np.where(offset >= 0.0, 1, -1)
+    local = None
+    if nm is not None:
+        local = np.einsum("nij,nj->ni", frame[:n], _rot_z(turn[:n], nm))
+        side[:n] = np.where(local[:, 2] >= 0.0, 1, -1)
+        half = 0.5 * tooth.thickness(x[:n], theta[:n])
+        wrong = (offset[:n] * side[:n] < 0.0) & (np.abs(offset[:n]) > 0.25 * half)
         if np.any(wrong):
             i = int(np.flatnonzero(wrong)[0])
             raise InputError(
@@ -838,8 +939,12 @@ def shell_coordinates(
     frame_in = _rot_z(-turn[:, None], frame)
     if transform is not None:
         frame_in = frame_in @ np.asarray(transform, dtype=float)[:3, :3].T
-    return ShellPoints(x=x, theta=theta, u=u, v=v, normal=local, side=side, offset=offset,
-                       frame=frame_in)
+    out = [ShellPoints(x=x[:n], theta=theta[:n], u=u[:n], v=v[:n], normal=local,
+                       side=side[:n], offset=offset[:n], frame=frame_in[:n])]
+    if extra is not None:
+        out.append(ShellPoints(x=x[n:], theta=theta[n:], u=u[n:], v=v[n:], normal=None,
+                               side=side[n:], offset=offset[n:], frame=frame_in[n:]))
+    return out
 
 
 def _flank_at(data: ToothModelData, u: float, v: float, flank: str):
@@ -911,7 +1016,7 @@ def flank_points(data: ToothModelData, x, theta, side) -> tuple[np.ndarray, np.n
               | (v_t > 1 + 1e-12)):
         raise InputError(
             f"points must lie on the tooth: 0 <= theta <= {th0:.6g} rad and 0 <= x <= h(theta) mm")
-    u_t = _trajectory(data.corners, data.angle_coef, data.face_fraction(ts), _REF_V, v_t)
+    u_t = _trajectory(data.surface, data.face_fraction(ts), _REF_V, v_t)
     pts = np.full((xs.size, 3), np.nan)
     nrm = np.full((xs.size, 3), np.nan)
     for i in range(xs.size):
@@ -921,7 +1026,7 @@ def flank_points(data: ToothModelData, x, theta, side) -> tuple[np.ndarray, np.n
             pos, _ = _flank_at(data, u, v, flank)
             if not np.all(np.isfinite(pos)):
                 break
-            uf, vf = _project_to_mid(data.corners, data.angle_coef, pos[None, :],
+            uf, vf = _project_to_mid(data.surface, pos[None, :],
                                      np.array([u]), np.array([v]))
             du, dv = float(u_t[i] - uf[0]), float(v_t[i] - vf[0])
             u, v = u + du, v + dv
@@ -997,6 +1102,29 @@ def member_foundation(data: ToothModelData, shell_points: ShellPoints) -> np.nda
     return foundation_matrix(data.foundation, u_f, alpha)
 
 
+def _shell_matrices(
+    data: ToothModelData,
+    sp: ShellPoints,
+    ends_sp: ShellPoints | None,
+    theory: str,
+    n_height: int,
+    n_face: int,
+    blocks: list[np.ndarray] | None = None,
+) -> list[ComplianceMatrix]:
+    """Shell compliance of point loads at ``sp`` or of segments with ends ``ends_sp``
+    (first N then second N ends), for each block of segment indices (None: all)."""
+    model = data.shell_model(theory, n_height, n_face)
+    n = sp.x.size
+    if ends_sp is None:
+        pts = np.column_stack([sp.x, sp.theta])
+        pts = np.stack([pts, pts], axis=1)
+    else:
+        pts = np.stack([np.column_stack([ends_sp.x[:n], ends_sp.theta[:n]]),
+                        np.column_stack([ends_sp.x[n:], ends_sp.theta[n:]])], axis=1)
+    pts = _as_shell_points(model.tooth, pts, "shell", "points")
+    return _compliance_blocks(model, pts, sp.normal, blocks)
+
+
 def _shell_matrix(
     data: ToothModelData,
     sp: ShellPoints,
@@ -1005,14 +1133,7 @@ def _shell_matrix(
     n_height: int,
     n_face: int,
 ) -> ComplianceMatrix:
-    model = data.shell_model(theory, n_height, n_face)
-    n = sp.x.size
-    if ends_sp is None:
-        pts = np.column_stack([sp.x, sp.theta])
-    else:
-        pts = np.stack([np.column_stack([ends_sp.x[:n], ends_sp.theta[:n]]),
-                        np.column_stack([ends_sp.x[n:], ends_sp.theta[n:]])], axis=1)
-    return compliance_matrix(model, pts, sp.normal)
+    return _shell_matrices(data, sp, ends_sp, theory, n_height, n_face)[0]
 
 
 def member_compliance(
