@@ -28,6 +28,8 @@ import numpy as np
 import xarray as xr
 
 from geometry.errors import InputError
+from geometry.plot import png_target as _target
+from geometry.plot import pyplot as _pyplot
 
 __all__ = [
     "plot_analysis",
@@ -40,22 +42,6 @@ __all__ = [
     "plot_transmission_error",
     "plot_utca",
 ]
-
-
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-def _target(path) -> Path:
-    p = Path(path)
-    if not p.parent.exists():
-        raise InputError(f"path: directory {str(p.parent)!r} does not exist")
-    return p
 
 
 def _require(ds: xr.Dataset, names, what: str) -> None:

@@ -25,7 +25,8 @@ from geometry.flank import FlankSurface, blank_outline
 __all__ = ["plot_flanks_in_mesh", "plot_projection_grid"]
 
 
-def _pyplot():
+def pyplot():
+    """matplotlib.pyplot with the Agg backend (no display needed); shared by the toolkit's plots."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -34,7 +35,8 @@ def _pyplot():
     return plt
 
 
-def _target(path) -> Path:
+def png_target(path) -> Path:
+    """The PNG path to write, after checking its directory exists (InputError otherwise)."""
     p = Path(path)
     if not p.parent.exists():
         raise InputError(f"path: directory {str(p.parent)!r} does not exist")
@@ -69,8 +71,8 @@ def plot_flanks_in_mesh(case, surfaces: Iterable[FlankSurface], path: str | os.P
     """
     if int(teeth) < 1:
         raise InputError(f"teeth: must be >= 1, got {teeth!r}")
-    plt = _pyplot()
-    target = _target(path)
+    plt = pyplot()
+    target = png_target(path)
     fig = plt.figure(figsize=(8, 7))
     ax = fig.add_subplot(projection="3d")
     colours = {("pinion", "concave"): "tab:blue", ("pinion", "convex"): "tab:cyan",
@@ -119,8 +121,8 @@ def plot_projection_grid(surface: FlankSurface, blank, path: str | os.PathLike[s
     """
     from geometry.meshing import REASONS
 
-    plt = _pyplot()
-    target = _target(path)
+    plt = pyplot()
+    target = png_target(path)
     out = blank_outline(blank)
     c = out.corners
     fig, ax = plt.subplots(figsize=(7, 5))
