@@ -21,6 +21,7 @@ import time
 from importlib import resources
 from pathlib import Path
 
+import numpy as np
 import xarray as xr
 
 from contact.easeoff import ease_off
@@ -37,6 +38,7 @@ __all__ = [
     "SEED_TABLE_3_1",
     "bundled_case_path",
     "bundled_cases",
+    "efficiency_map",
     "resolve_case",
     "run_analysis",
 ]
@@ -201,3 +203,128 @@ def run_analysis(
     if not math.isfinite(float(ltca_ds["transmission_error"].mean())):
         log.warning("some roll positions have no certified solution (see /ltca status)")
     return out
+
+
+def efficiency_map(
+    case: Case | str | os.PathLike[str] | None = None,
+    torque=(100.0, 250.0, 500.0),
+    speed=(500.0, 1000.0, 1500.0, 2500.0, 4000.0),
+    *,
+    temperature=(90.0,),
+    roughness=(0.8,),
+    lubricant: str = "75W90",
+    friction_model: str = "xu2007",
+    misalignment: Misalignment | None = None,
+    options: LTCAOptions | None = None,
+    progress: bool = False,
+) -> xr.Dataset:
+    """Efficiency over operating points: speed × torque × temperature × roughness (seed §5.3).
+
+    The LTCA (static) runs once per torque; the efficiency stage
+    (:func:`friction.efficiency.efficiency_analysis`) then runs for every speed,
+    temperature and roughness on those loads.
+
+    Parameters
+    ----------
+    case : Case, path, bundled name or None (default case)
+    torque : sequence — [N·m] pinion torques
+    speed : sequence — [rpm] pinion speeds
+    temperature : sequence — [degC] oil inlet temperatures
+    roughness : sequence — [µm] RMS roughness Rq of each surface
+    lubricant, friction_model : str
+    misalignment, options
+        As :func:`run_analysis`.
+    progress : bool
+        tqdm progress bar over the operating points.
+
+    Returns
+    -------
+    xarray.Dataset
+        dims (``torque``, ``speed``, ``temperature``, ``roughness``): ``efficiency`` [1],
+        ``power_loss`` [W] (means over the mesh cycles), ``friction_coefficient_mean``,
+        ``lambda_ratio_mean`` [1] (load-weighted means over the loaded segments).
+    """
+    from friction.efficiency import efficiency_analysis
+
+    c = resolve_case(case)
+    if misalignment is not None:
+        c = dataclasses.replace(c, misalignment=misalignment)
+    lt = loaded_tca(c, list(torque), options=options or LTCAOptions())
+    shape = (len(torque), len(speed), len(temperature), len(roughness))
+    eff, loss, mu_m, lam_m = (np.full(shape, np.nan) for _ in range(4))
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=int(np.prod(shape[1:])), desc="efficiency map", unit="point")
+    F = lt["force"].fillna(0.0)
+    for j, n in enumerate(speed):
+        for k, temp in enumerate(temperature):
+            for m, rq in enumerate(roughness):
+                fr = efficiency_analysis(
+                    lt,
+                    pinion_speed=float(n),
+                    lubricant=lubricant,
+                    temperature=float(temp),
+                    roughness=float(rq),
+                    friction_model=friction_model,
+                )
+                eff[:, j, k, m] = fr["efficiency_mean"].values
+                loss[:, j, k, m] = fr["power_loss_mean"].values
+                dims = ("roll", "pair", "segment")
+                mu_m[:, j, k, m] = (
+                    (fr["friction_coefficient"].fillna(0) * F).sum(dims) / F.sum(dims)
+                ).values
+                lam_m[:, j, k, m] = (
+                    (fr["lambda_ratio"].fillna(0) * F).sum(dims) / F.sum(dims)
+                ).values
+                if bar is not None:
+                    bar.update()
+    if bar is not None:
+        bar.close()
+    dims4 = ("torque", "speed", "temperature", "roughness")
+    return xr.Dataset(
+        {
+            "efficiency": (dims4, eff, {"units": "1", "long_name": "mean mechanical efficiency"}),
+            "power_loss": (dims4, loss, {"units": "W", "long_name": "mean mesh power loss"}),
+            "friction_coefficient_mean": (
+                dims4,
+                mu_m,
+                {"units": "1", "long_name": "load-weighted mean friction coefficient"},
+            ),
+            "lambda_ratio_mean": (
+                dims4,
+                lam_m,
+                {"units": "1", "long_name": "load-weighted mean lambda ratio"},
+            ),
+        },
+        coords={
+            "torque": (
+                "torque",
+                np.asarray(torque, float),
+                {"units": "N m", "long_name": "pinion torque"},
+            ),
+            "speed": (
+                "speed",
+                np.asarray(speed, float),
+                {"units": "rpm", "long_name": "pinion speed"},
+            ),
+            "temperature": (
+                "temperature",
+                np.asarray(temperature, float),
+                {"units": "degC", "long_name": "oil inlet temperature"},
+            ),
+            "roughness": (
+                "roughness",
+                np.asarray(roughness, float),
+                {"units": "um", "long_name": "RMS roughness Rq of each surface"},
+            ),
+        },
+        attrs={
+            "title": "mechanical efficiency map",
+            "case": c.name,
+            "lubricant": lubricant,
+            "friction_model": friction_model,
+            "toolkit_version": __version__,
+        },
+    )

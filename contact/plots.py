@@ -35,6 +35,7 @@ __all__ = [
     "plot_analysis",
     "plot_contact_pattern",
     "plot_easeoff",
+    "plot_efficiency_map",
     "plot_load_share",
     "plot_loaded_transmission_error",
     "plot_ltca",
@@ -47,27 +48,38 @@ __all__ = [
 def _require(ds: xr.Dataset, names, what: str) -> None:
     missing = [n for n in names if n not in ds.variables]
     if missing:
-        raise InputError(f"{what}: dataset lacks {missing} (expected the output of "
-                         "contact.utca.unloaded_tca)")
+        raise InputError(
+            f"{what}: dataset lacks {missing} (expected the output of contact.utca.unloaded_tca)"
+        )
 
 
 def _outline(ax, easeoff: xr.Dataset) -> None:
     """Grid boundary of the gear flank and the toe/heel/root/tip labels."""
     z = easeoff["axial_position"].values
     r = easeoff["radial_position"].values
-    ring = np.concatenate([np.c_[z[:, 0], r[:, 0]], np.c_[z[-1, :], r[-1, :]],
-                           np.c_[z[::-1, -1], r[::-1, -1]], np.c_[z[0, ::-1], r[0, ::-1]]])
+    ring = np.concatenate(
+        [
+            np.c_[z[:, 0], r[:, 0]],
+            np.c_[z[-1, :], r[-1, :]],
+            np.c_[z[::-1, -1], r[::-1, -1]],
+            np.c_[z[0, ::-1], r[0, ::-1]],
+        ]
+    )
     ax.plot(ring[:, 0], ring[:, 1], color="0.3", lw=0.8)
     mid_u, mid_v = z.shape[0] // 2, z.shape[1] // 2
     style = dict(fontsize=8, color="0.25", ha="center", va="center")
-    ax.annotate("toe", (z[0, mid_v], r[0, mid_v]), xytext=(-14, 0),
-                textcoords="offset points", **style)
-    ax.annotate("heel", (z[-1, mid_v], r[-1, mid_v]), xytext=(16, 0),
-                textcoords="offset points", **style)
-    ax.annotate("root", (z[mid_u, 0], r[mid_u, 0]), xytext=(0, -10),
-                textcoords="offset points", **style)
-    ax.annotate("tip", (z[mid_u, -1], r[mid_u, -1]), xytext=(0, 10),
-                textcoords="offset points", **style)
+    ax.annotate(
+        "toe", (z[0, mid_v], r[0, mid_v]), xytext=(-14, 0), textcoords="offset points", **style
+    )
+    ax.annotate(
+        "heel", (z[-1, mid_v], r[-1, mid_v]), xytext=(16, 0), textcoords="offset points", **style
+    )
+    ax.annotate(
+        "root", (z[mid_u, 0], r[mid_u, 0]), xytext=(0, -10), textcoords="offset points", **style
+    )
+    ax.annotate(
+        "tip", (z[mid_u, -1], r[mid_u, -1]), xytext=(0, 10), textcoords="offset points", **style
+    )
     ax.set_xlabel("gear axial position [mm]")
     ax.set_ylabel("gear radius [mm]")
     ax.set_aspect("equal")
@@ -92,8 +104,7 @@ def plot_easeoff(easeoff: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     InputError
         If the directory does not exist or the dataset lacks the variables.
     """
-    _require(easeoff, ("ease_off", "roll_angle", "axial_position", "radial_position"),
-             "easeoff")
+    _require(easeoff, ("ease_off", "roll_angle", "axial_position", "radial_position"), "easeoff")
     plt = _pyplot()
     target = _target(path)
     z = easeoff["axial_position"].values
@@ -106,21 +117,22 @@ def plot_easeoff(easeoff: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     fig.colorbar(cs, ax=ax, label="ease-off along the gear normal [µm]")
     if np.isfinite(q).sum() > 4:
         qd = np.degrees(q)
-        ql = ax.contour(z, r, np.ma.masked_invalid(qd), levels=10, colors="w",
-                        linewidths=0.6, linestyles="--")
+        ql = ax.contour(
+            z, r, np.ma.masked_invalid(qd), levels=10, colors="w", linewidths=0.6, linestyles="--"
+        )
         ax.clabel(ql, fmt="%.0f°", fontsize=6)
     _outline(ax, easeoff)
     name, flank = easeoff.attrs.get("case", ""), easeoff.attrs.get("gear_flank", "")
-    ax.set_title(f"{name}: ease-off (gear {flank} flank) and roll angle Q (dashed)",
-                 fontsize=9)
+    ax.set_title(f"{name}: ease-off (gear {flank} flank) and roll angle Q (dashed)", fontsize=9)
     fig.tight_layout()
     fig.savefig(target, dpi=130)
     plt.close(fig)
     return target
 
 
-def plot_contact_pattern(easeoff: xr.Dataset, utca: xr.Dataset,
-                         path: str | os.PathLike[str]) -> Path:
+def plot_contact_pattern(
+    easeoff: xr.Dataset, utca: xr.Dataset, path: str | os.PathLike[str]
+) -> Path:
     """Unloaded contact pattern on the gear flank (seed Fig. 2.10).
 
     Contact lines (stretches within the separation) of every pair at every roll position
@@ -144,8 +156,18 @@ def plot_contact_pattern(easeoff: xr.Dataset, utca: xr.Dataset,
     InputError
         If the directory does not exist or the datasets lack the variables.
     """
-    _require(utca, ("curve_axial_position", "curve_radial_position", "contact_pattern",
-                    "path_axial_position", "path_radial_position", "active"), "utca")
+    _require(
+        utca,
+        (
+            "curve_axial_position",
+            "curve_radial_position",
+            "contact_pattern",
+            "path_axial_position",
+            "path_radial_position",
+            "active",
+        ),
+        "utca",
+    )
     plt = _pyplot()
     target = _target(path)
     cz = utca["curve_axial_position"].values
@@ -169,8 +191,7 @@ def plot_contact_pattern(easeoff: xr.Dataset, utca: xr.Dataset,
         for m, (name, style) in enumerate((("LPP", ":"), ("CPP", "-"), ("RPP", ":"))):
             x = np.where(a, pz[:, j, m], np.nan)
             y = np.where(a, pr[:, j, m], np.nan)
-            ax.plot(x, y, color="k", ls=style, lw=1.0,
-                    label=name if j == 0 else None)
+            ax.plot(x, y, color="k", ls=style, lw=1.0, label=name if j == 0 else None)
         ax.plot([], [], color=c, lw=1.6, label=f"pair {int(k):+d}")
     # the reference pair's bounds: its curves at M1 (first roll) and at M2 (pair −1 then)
     if "transition_roll" in utca and np.isfinite(utca["transition_roll"].values).all():
@@ -181,8 +202,10 @@ def plot_contact_pattern(easeoff: xr.Dataset, utca: xr.Dataset,
             ax.plot(cz[0, km], cr[0, km], color="r", lw=1.2, ls="--")
     ax.legend(fontsize=7, loc="upper left", ncol=2)
     sep = float(utca["separation_threshold"]) if "separation_threshold" in utca else np.nan
-    ax.set_title(f"{utca.attrs.get('case', '')}: unloaded contact pattern "
-                 f"(separation {sep:.1f} µm)", fontsize=9)
+    ax.set_title(
+        f"{utca.attrs.get('case', '')}: unloaded contact pattern (separation {sep:.1f} µm)",
+        fontsize=9,
+    )
     fig.tight_layout()
     fig.savefig(target, dpi=130)
     plt.close(fig)
@@ -243,10 +266,19 @@ def plot_transmission_error(utca: xr.Dataset, path: str | os.PathLike[str]) -> P
             if np.isfinite(mr):
                 x = (mr - start) / period
                 ax.plot([x], [mv], "ro", ms=4)
-                ax.annotate(name, (x, mv), xytext=(0, 6), textcoords="offset points",
-                            ha="center", fontsize=8)
-    p2p = float(utca["peak_to_peak_transmission_error"]) if (
-        "peak_to_peak_transmission_error" in utca) else np.nan
+                ax.annotate(
+                    name,
+                    (x, mv),
+                    xytext=(0, 6),
+                    textcoords="offset points",
+                    ha="center",
+                    fontsize=8,
+                )
+    p2p = (
+        float(utca["peak_to_peak_transmission_error"])
+        if ("peak_to_peak_transmission_error" in utca)
+        else np.nan
+    )
     lo = np.nanmin(utca["unloaded_transmission_error"].values)
     ax.set_ylim(lo - 0.3 * max(p2p, 1.0), lo + 2.5 * max(p2p, 1.0))
     ax.set_xlim(-1.0, 2.0)
@@ -261,8 +293,9 @@ def plot_transmission_error(utca: xr.Dataset, path: str | os.PathLike[str]) -> P
     return target
 
 
-def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
-              directory: str | os.PathLike[str]) -> list[Path]:
+def plot_utca(
+    easeoff: xr.Dataset, utca: xr.Dataset, directory: str | os.PathLike[str]
+) -> list[Path]:
     """All three UTCA plots into a directory (created if missing).
 
     Parameters
@@ -277,9 +310,11 @@ def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
     """
     d = Path(directory)
     d.mkdir(parents=True, exist_ok=True)
-    return [plot_easeoff(easeoff, d / "easeoff.png"),
-            plot_contact_pattern(easeoff, utca, d / "contact_pattern.png"),
-            plot_transmission_error(utca, d / "transmission_error.png")]
+    return [
+        plot_easeoff(easeoff, d / "easeoff.png"),
+        plot_contact_pattern(easeoff, utca, d / "contact_pattern.png"),
+        plot_transmission_error(utca, d / "transmission_error.png"),
+    ]
 
 
 def plot_loaded_transmission_error(ltca: xr.Dataset, path: str | os.PathLike[str]) -> Path:
@@ -307,8 +342,9 @@ def plot_loaded_transmission_error(ltca: xr.Dataset, path: str | os.PathLike[str
         T = float(ltca["torque"].values[i])
         ax.plot(x, te, "o-", ms=3, lw=1.2, color="C0")
         pp = float(np.nanmax(te) - np.nanmin(te)) if np.any(np.isfinite(te)) else float("nan")
-        ax.set_title(f"T_p = {T:g} N m: mean {np.nanmean(te):.1f} urad, p-p {pp:.1f} urad",
-                     fontsize=9)
+        ax.set_title(
+            f"T_p = {T:g} N m: mean {np.nanmean(te):.1f} urad, p-p {pp:.1f} urad", fontsize=9
+        )
         ax.set_ylabel("LTE [urad]")
         ax.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("mesh cycles")
@@ -324,15 +360,17 @@ def _flank_xy(easeoff: xr.Dataset, u, v):
     uu, vv = easeoff["u"].values, easeoff["v"].values
     z = easeoff["axial_position"].values
     r = easeoff["radial_position"].values
-    pts = np.column_stack([np.clip(np.ravel(u), uu[0], uu[-1]),
-                           np.clip(np.ravel(v), vv[0], vv[-1])])
+    pts = np.column_stack(
+        [np.clip(np.ravel(u), uu[0], uu[-1]), np.clip(np.ravel(v), vv[0], vv[-1])]
+    )
     fz = RegularGridInterpolator((uu, vv), np.nan_to_num(z))
     fr = RegularGridInterpolator((uu, vv), np.nan_to_num(r))
     return fz(pts).reshape(np.shape(u)), fr(pts).reshape(np.shape(u))
 
 
-def plot_pressure(easeoff: xr.Dataset, ltca: xr.Dataset, path: str | os.PathLike[str],
-                  torque_index: int = -1) -> Path:
+def plot_pressure(
+    easeoff: xr.Dataset, ltca: xr.Dataset, path: str | os.PathLike[str], torque_index: int = -1
+) -> Path:
     """Pressure distribution on the gear flank over the mesh cycles (seed Fig. 3.7).
 
     Every loaded segment of every roll position and pair is drawn at its place on the gear
@@ -403,13 +441,16 @@ def plot_load_share(ltca: xr.Dataset, path: str | os.PathLike[str]) -> Path:
     return out
 
 
-def plot_ltca(easeoff: xr.Dataset, ltca: xr.Dataset, directory: str | os.PathLike[str]
-              ) -> list[Path]:
+def plot_ltca(
+    easeoff: xr.Dataset, ltca: xr.Dataset, directory: str | os.PathLike[str]
+) -> list[Path]:
     """The LTCA plots (LTE, pressure at each torque, load share) into ``directory``."""
     d = Path(directory)
     d.mkdir(parents=True, exist_ok=True)
-    out = [plot_loaded_transmission_error(ltca, d / "ltca_transmission_error.png"),
-           plot_load_share(ltca, d / "ltca_load_share.png")]
+    out = [
+        plot_loaded_transmission_error(ltca, d / "ltca_transmission_error.png"),
+        plot_load_share(ltca, d / "ltca_load_share.png"),
+    ]
     for i, T in enumerate(ltca["torque"].values):
         out.append(plot_pressure(easeoff, ltca, d / f"ltca_pressure_{float(T):g}Nm.png", i))
     return out
@@ -431,4 +472,64 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str]) -> list[
         out += plot_utca(eo, tree["utca"].to_dataset(), directory)
     if "ltca" in tree.children:
         out += plot_ltca(eo, tree["ltca"].to_dataset(), directory)
+    return out
+
+
+def plot_efficiency_map(emap: xr.Dataset, directory: str | os.PathLike[str]) -> list[Path]:
+    """Efficiency against speed for each torque, and against roughness for each temperature.
+
+    Parameters
+    ----------
+    emap : xarray.Dataset
+        The output of :func:`contact.pipeline.efficiency_map`.
+    directory : path-like
+        Created if missing.
+
+    Returns
+    -------
+    list of pathlib.Path
+        ``efficiency_vs_speed.png``, ``power_loss_vs_speed.png``,
+        ``efficiency_vs_roughness.png`` (as the seed's Figs. 5.11–5.12).
+    """
+    _require(emap, ["efficiency", "power_loss"], "emap")
+    plt = _pyplot()
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    out = []
+    first = {"temperature": 0, "roughness": 0}
+    for var, label, name in (
+        ("efficiency", "efficiency [%]", "efficiency_vs_speed.png"),
+        ("power_loss", "power loss [W]", "power_loss_vs_speed.png"),
+    ):
+        fig, ax = plt.subplots(figsize=(6, 4))
+        sel = emap[var].isel(**first)
+        for T in emap["torque"].values:
+            y = sel.sel(torque=T).values * (100 if var == "efficiency" else 1)
+            ax.plot(emap["speed"].values, y, "o-", label=f"T_p = {T:g} N m")
+        ax.set_xlabel("pinion speed [rpm]")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(d / name, dpi=120)
+        plt.close(fig)
+        out.append(d / name)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    sel = emap["efficiency"].isel(torque=-1, speed=-1)
+    for t in emap["temperature"].values:
+        ax.plot(
+            emap["roughness"].values, 100 * sel.sel(temperature=t).values, "o-", label=f"{t:g} degC"
+        )
+    ax.set_xlabel("RMS roughness Rq [um]")
+    ax.set_ylabel("efficiency [%]")
+    ax.set_title(
+        f"T_p = {float(emap['torque'].values[-1]):g} N m, {float(emap['speed'].values[-1]):g} rpm",
+        fontsize=9,
+    )
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(d / "efficiency_vs_roughness.png", dpi=120)
+    plt.close(fig)
+    out.append(d / "efficiency_vs_roughness.png")
     return out

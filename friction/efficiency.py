@@ -95,7 +95,7 @@ def efficiency_analysis(
         ``sliding_loss``, ``rolling_loss`` [W]; over (``torque``, ``roll``)
         ``power_loss`` [W] and ``efficiency`` [1]; over ``torque`` the cycle means
         ``power_loss_mean`` [W] and ``efficiency_mean`` [1]. Inputs outside a model's
-        fitted range are logged and listed in the ``model_range_warnings`` attribute.
+        fitted range are logged (INFO) and listed in the ``model_range_warnings`` attribute.
 
     Raises
     ------
@@ -182,7 +182,7 @@ def efficiency_analysis(
     range_notes = sorted({str(w.message) for w in caught
                           if issubclass(w.category, FrictionModelRangeWarning)})
     for note in range_notes:
-        log.warning("%s", note)
+        log.info("%s", note)
     mu = np.broadcast_to(mu, f.shape)
     p_slide = mu * f * vs  # N · m/s = W
     p_roll = fr * L * vr  # (N/mm) · mm · m/s = W

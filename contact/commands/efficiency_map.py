@@ -1,0 +1,103 @@
+"""``ltca efficiency-map``: mechanical efficiency over speed, torque, temperature, roughness."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+#: Place in ``ltca --help``.
+ORDER = 15
+
+
+def register(sub) -> None:
+    """Add the sub-command to an ``argparse`` sub-parser collection."""
+    p = sub.add_parser(
+        "efficiency-map",
+        help="sweep speed, torque, oil temperature and roughness; write efficiency as netCDF",
+        description="Loaded TCA once per torque, then the efficiency stage at every operating "
+        "point; writes a netCDF over (torque, speed, temperature, roughness) and plots.",
+    )
+    p.add_argument("case", nargs="?", default=None, help="case file or bundled name")
+    p.add_argument(
+        "--speed",
+        type=float,
+        nargs="+",
+        default=[500, 1000, 1500, 2500, 4000],
+        metavar="RPM",
+        help="pinion speeds [rpm]",
+    )
+    p.add_argument(
+        "--torque",
+        type=float,
+        nargs="+",
+        default=[100, 250, 500],
+        metavar="N_M",
+        help="pinion torques [N m]",
+    )
+    p.add_argument(
+        "--temperature",
+        type=float,
+        nargs="+",
+        default=[90.0],
+        metavar="C",
+        help="oil inlet temperatures [C]",
+    )
+    p.add_argument(
+        "--roughness",
+        type=float,
+        nargs="+",
+        default=[0.8],
+        metavar="UM",
+        help="RMS roughness Rq of each surface [um]",
+    )
+    p.add_argument("--lubricant", default="75W90")
+    p.add_argument("--friction-model", default="xu2007")
+    p.add_argument("--rolls-per-cycle", type=int, default=10)
+    p.add_argument("-o", "--output", default="efficiency_map.nc")
+    p.add_argument("--plots", default=None, metavar="DIR")
+    p.add_argument("--no-progress", action="store_true")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from tabulate import tabulate
+
+    from contact.io import write_netcdf
+    from contact.ltca import LTCAOptions
+    from contact.pipeline import efficiency_map, resolve_case
+    from contact.plots import plot_efficiency_map
+
+    case = resolve_case(args.case)
+    emap = efficiency_map(
+        case,
+        args.torque,
+        args.speed,
+        temperature=args.temperature,
+        roughness=args.roughness,
+        lubricant=args.lubricant,
+        friction_model=args.friction_model,
+        options=LTCAOptions(rolls_per_cycle=args.rolls_per_cycle),
+        progress=not args.no_progress and sys.stderr.isatty(),
+    )
+    sel = emap["efficiency"].isel(temperature=0, roughness=0) * 100
+    rows = [
+        [f"{T:g}", *(f"{v:.2f}" for v in sel.sel(torque=T).values)] for T in emap["torque"].values
+    ]
+    print(
+        f"case {case.name}: efficiency [%] at {emap['temperature'].values[0]:g} C, "
+        f"Rq {emap['roughness'].values[0]:g} um ({args.lubricant}, {args.friction_model})"
+    )
+    print(
+        tabulate(
+            rows,
+            headers=["T_p [N m]", *(f"{n:g} rpm" for n in emap["speed"].values)],
+            tablefmt="github",
+        )
+    )
+    path = write_netcdf(emap, Path(args.output), inputs=case.to_toml())
+    print(f"wrote {path}")
+    if args.plots:
+        for p in plot_efficiency_map(emap, args.plots):
+            print(f"wrote {p}")
+    return 0
