@@ -36,6 +36,7 @@ __all__ = [
     "plot_contact_pattern",
     "plot_easeoff",
     "plot_efficiency_map",
+    "plot_friction",
     "plot_load_share",
     "plot_loaded_transmission_error",
     "plot_ltca",
@@ -368,6 +369,32 @@ def _flank_xy(easeoff: xr.Dataset, u, v):
     return fz(pts).reshape(np.shape(u)), fr(pts).reshape(np.shape(u))
 
 
+def _flank_scatter(
+    easeoff: xr.Dataset, ltca: xr.Dataset, values: np.ndarray, path, title: str, label: str
+) -> Path:
+    """Segment values (roll, pair, segment) drawn at their places on the gear flank."""
+    plt = _pyplot()
+    out = _target(path)
+    u = np.broadcast_to(ltca["segment_u"].values, values.shape)
+    v = np.broadcast_to(ltca["segment_v"].values, values.shape)
+    m = np.isfinite(values) & np.isfinite(u) & np.isfinite(v)
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    _outline(ax, easeoff)
+    if np.any(m):
+        x, y = _flank_xy(easeoff, u[m], v[m])
+        order = np.argsort(values[m])
+        sc = ax.scatter(x[order], y[order], c=values[m][order], s=6, cmap="jet")
+        fig.colorbar(sc, ax=ax, label=label)
+    ax.set_title(title, fontsize=9)
+    ax.set_xlabel("axial position [mm]")
+    ax.set_ylabel("radius [mm]")
+    ax.set_aspect("equal", adjustable="datalim")
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+    return out
+
+
 def plot_pressure(
     easeoff: xr.Dataset, ltca: xr.Dataset, path: str | os.PathLike[str], torque_index: int = -1
 ) -> Path:
@@ -389,29 +416,80 @@ def plot_pressure(
     pathlib.Path
     """
     _require(ltca, ["pressure_max", "segment_u", "segment_v"], "ltca")
-    plt = _pyplot()
-    out = _target(path)
-    sel = ltca.isel(torque=torque_index)
-    p = sel["pressure_max"].values
-    u = np.broadcast_to(ltca["segment_u"].values, p.shape)
-    v = np.broadcast_to(ltca["segment_v"].values, p.shape)
-    m = np.isfinite(p) & (p > 0) & np.isfinite(u) & np.isfinite(v)
-    fig, ax = plt.subplots(figsize=(7, 4.2))
-    _outline(ax, easeoff)
-    if np.any(m):
-        x, y = _flank_xy(easeoff, u[m], v[m])
-        order = np.argsort(p[m])
-        sc = ax.scatter(x[order], y[order], c=p[m][order], s=6, cmap="jet", vmin=0)
-        fig.colorbar(sc, ax=ax, label="max. pressure [MPa]")
+    p = ltca["pressure_max"].isel(torque=torque_index).values
+    p = np.where(p > 0, p, np.nan)
     T = float(ltca["torque"].values[torque_index])
     pmax = float(np.nanmax(p)) if np.any(np.isfinite(p)) else float("nan")
-    ax.set_title(f"gear flank pressure, T_p = {T:g} N m (peak {pmax:.0f} MPa)", fontsize=9)
-    ax.set_xlabel("axial position [mm]")
-    ax.set_ylabel("radius [mm]")
-    ax.set_aspect("equal", adjustable="datalim")
+    return _flank_scatter(
+        easeoff,
+        ltca,
+        p,
+        path,
+        f"gear flank pressure, T_p = {T:g} N m (peak {pmax:.0f} MPa)",
+        "max. pressure [MPa]",
+    )
+
+
+#: /friction variables drawn over the gear flank by :func:`plot_friction` (seed Figs. 5.5–5.10)
+FRICTION_FLANK_PLOTS = {
+    "sliding_velocity": "sliding velocity [m/s]",
+    "rolling_velocity": "rolling velocity [m/s]",
+    "slide_to_roll": "slide-to-roll ratio [1]",
+    "lambda_ratio": "lambda ratio [1]",
+    "friction_coefficient": "friction coefficient [1]",
+    "sliding_loss": "sliding power loss [W]",
+}
+
+
+def plot_friction(
+    easeoff: xr.Dataset,
+    ltca: xr.Dataset,
+    friction: xr.Dataset,
+    directory: str | os.PathLike[str],
+    torque_index: int = -1,
+) -> list[Path]:
+    """Distributions of the efficiency quantities over the gear flank (seed Figs. 5.5–5.10).
+
+    One PNG per variable of :data:`FRICTION_FLANK_PLOTS` at one torque, plus the
+    instantaneous efficiency over the mesh cycles.
+    """
+    _require(friction, list(FRICTION_FLANK_PLOTS), "friction")
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    T = float(friction["torque"].values[torque_index])
+    out = []
+    for name, label in FRICTION_FLANK_PLOTS.items():
+        vals = friction[name].isel(torque=torque_index).values
+        out.append(
+            _flank_scatter(
+                easeoff,
+                ltca,
+                vals,
+                d / f"friction_{name}_{T:g}Nm.png",
+                f"{label.split(' [')[0]}, T_p = {T:g} N m, "
+                f"{friction.attrs.get('pinion_speed_rpm', 0):g} rpm",
+                label,
+            )
+        )
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6.5, 3.2))
+    x = ltca["mesh_cycle"].values
+    for i, tq in enumerate(friction["torque"].values):
+        ax.plot(
+            x,
+            100 * friction["efficiency"].isel(torque=i).values,
+            "o-",
+            ms=2.5,
+            label=f"T_p = {tq:g} N m",
+        )
+    ax.set_xlabel("mesh cycles")
+    ax.set_ylabel("efficiency [%]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(out, dpi=130)
+    fig.savefig(d / "friction_efficiency.png", dpi=120)
     plt.close(fig)
+    out.append(d / "friction_efficiency.png")
     return out
 
 
@@ -472,6 +550,10 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str]) -> list[
         out += plot_utca(eo, tree["utca"].to_dataset(), directory)
     if "ltca" in tree.children:
         out += plot_ltca(eo, tree["ltca"].to_dataset(), directory)
+        if "friction" in tree.children:
+            out += plot_friction(
+                eo, tree["ltca"].to_dataset(), tree["friction"].to_dataset(), directory
+            )
     return out
 
 

@@ -170,8 +170,8 @@ def test_bad_input():
 
 
 def test_whole_analysis_round_trip_and_plot_from_file(tmp_path):
-    tree = run_analysis(_case(), [100.0], options=SMALL, geometry=True)
-    assert {"geometry", "easeoff", "utca", "ltca"} <= set(tree.children)
+    tree = run_analysis(_case(), [100.0], options=SMALL, geometry=True, pinion_speed=1500.0)
+    assert {"geometry", "easeoff", "utca", "ltca", "friction"} <= set(tree.children)
     check_conventions(tree)
     path = write_netcdf(tree, tmp_path / "a.nc", inputs=tree.attrs["inputs"])
     back = read_netcdf(path)
@@ -182,6 +182,7 @@ def test_whole_analysis_round_trip_and_plot_from_file(tmp_path):
     assert main(["plot", str(path), "--plots", str(tmp_path / "png")]) == 0
     pngs = sorted(p.name for p in (tmp_path / "png").glob("*.png"))
     assert "ltca_transmission_error.png" in pngs and "easeoff.png" in pngs
+    assert "friction_lambda_ratio_100Nm.png" in pngs and "friction_efficiency.png" in pngs
 
 
 def test_weber_linearisation_converges_and_matters():
