@@ -111,3 +111,69 @@ def test_bad_input():
         n = v / np.linalg.norm(v)
         t = np.cross(n, [0, 0, 1.0])
         surface_velocities(r, n, t / np.linalg.norm(t), pinion_speed=N_P, ratio=RATIO, **ax)
+
+
+@pytest.mark.parametrize(
+    "name", ["kolivand2009_fm_11x41", "iso23509_sample2_fm", "kolivand2009_table54_B_fm"]
+)
+def test_mean_pitch_point_against_the_pitch_cone_hand_calculation(name):
+    # The mean pitch point P of the ISO 23509 pitch cones (radius d_m/2 and axial place
+    # −t_z + R_m cos δ on both members) is located in the toolkit's pair frame; there the
+    # pitch-cone relations of hypoid gearing hold: v₁ cos β₁ = v₂ cos β₂ across the tooth
+    # trace (rolling), V_s = v₁ sin β₁ − v₂ sin β₂ along it (sliding), with v = ω d_m/2
+    # (ISO 23509 §5; Litvin & Fuentes 2004, ch. 21). Issue tolerance 2 %; the vector
+    # kinematics reproduce the hand values to round-off.
+    from pathlib import Path
+
+    from scipy.optimize import least_squares
+
+    from contact.easeoff import mesh_kinematics
+    from geometry.basic_design import load_basic
+    from geometry.case import load_case
+    from geometry.pitch_cone import pitch_cone
+
+    root = Path(__file__).resolve().parents[1] / "cases"
+    pc = pitch_cone(load_basic(root / "basic" / f"{name}.toml").design)
+    case = load_case(root / f"{name}.toml")
+    kin = mesh_kinematics(case)
+    members = (
+        (kin.pinion_axis, kin.pinion_origin, pc.t_z1, pc.Rm1, pc.delta1, pc.dm1),
+        (kin.gear_axis, kin.gear_origin, pc.t_z2, pc.Rm2, pc.delta2, pc.dm2),
+    )
+
+    def residual(p):
+        out = []
+        for a, o, tz, rm, delta, dm in members:
+            r = p - o
+            axial = r @ a
+            out += [axial - (-tz + rm * math.cos(delta)), np.linalg.norm(r - axial * a) - dm / 2]
+        return out
+
+    start = kin.gear_origin + np.array([pc.dm2 / 2, 0.0, -pc.t_z2 + pc.Rm2 * math.cos(pc.delta2)])
+    sol = least_squares(residual, start, xtol=1e-15, ftol=1e-15)
+    assert np.max(np.abs(sol.fun)) < 1e-6  # the pitch cones touch at P in our frame
+    p = sol.x
+    ratio = case.gear.blank.teeth / case.pinion.blank.teeth
+    w1 = 2 * math.pi * N_P / 60
+    v1, v2 = w1 * pc.dm1 / 2e3, w1 / ratio * pc.dm2 / 2e3
+    vp = w1 * np.cross(kin.pinion_axis, p - kin.pinion_origin)
+    vg = -w1 / ratio * np.cross(kin.gear_axis, p - kin.gear_origin)
+    n = np.cross(vp, vg)  # the pitch-plane normal
+    n /= np.linalg.norm(n)
+    trace = (vp - vg) / np.linalg.norm(vp - vg)  # relative velocity runs along the trace
+    out = surface_velocities(
+        p,
+        n,
+        trace,
+        pinion_speed=N_P,
+        ratio=ratio,
+        pinion_axis=kin.pinion_axis,
+        pinion_origin=kin.pinion_origin,
+        gear_axis=kin.gear_axis,
+        gear_origin=kin.gear_origin,
+    )
+    hand_sliding = v1 * math.sin(pc.beta_m1) - v2 * math.sin(pc.beta_m2)
+    hand_rolling = v1 * math.cos(pc.beta_m1)
+    assert v1 * math.cos(pc.beta_m1) == pytest.approx(v2 * math.cos(pc.beta_m2), rel=1e-9)
+    assert float(out["sliding_velocity"]) == pytest.approx(hand_sliding, rel=0.02)
+    assert float(out["rolling_velocity"]) == pytest.approx(hand_rolling, rel=0.02)
