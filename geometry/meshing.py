@@ -39,6 +39,12 @@ from geometry.errors import InputError
 from geometry.machine import (
     GeneratedFamily,
     MachineSettings,
+    _Chain,
+    _chain,
+    _cutter_buffer,
+    _family_buffer,
+    _family_views,
+    _meshing_buffer,
     generated_family,
     meshing_function,
 )
@@ -88,25 +94,33 @@ class _Context(NamedTuple):
     sections: object
     generate: bool
     length_scale: float
+    chain: _Chain  # the machine chain's constant factors, folded once per solve
+
+
+def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
+    """Family buffer (3, 11, n) of :func:`geometry.machine._family_buffer` at flat points."""
+    v = _cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
+    return _family_buffer(ctx.chain, ctx.settings, v, q)
 
 
 def _evaluate(ctx: _Context, x: np.ndarray, section: np.ndarray, z: np.ndarray, p: np.ndarray):
-    """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations."""
-    q = x[:, 2] if ctx.generate else np.zeros(len(x))
-    fam = generated_family(ctx.blade, ctx.settings, x[:, 0], x[:, 1], q, section, ctx.sections)
-    r = fam.r
-    rho = np.hypot(r[:, 0], r[:, 1])
+    """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations, family buffer."""
+    n, m = x.shape
+    q = x[:, 2] if ctx.generate else np.zeros(n)
+    buf = _family(ctx, x[:, 0], x[:, 1], q, section)
+    r = buf[:, 0]
+    rho = np.hypot(r[0], r[1])
     rho_safe = np.where(rho > 0, rho, 1.0)
-    derivs = [fam.r_s, fam.r_theta] + ([fam.r_q] if ctx.generate else [])
-    dz = np.stack([d[:, 2] for d in derivs], axis=-1)
-    drho = np.stack([(r[:, 0] * d[:, 0] + r[:, 1] * d[:, 1]) / rho_safe for d in derivs], -1)
-    rows_f = [r[:, 2] - z, rho - p]
-    rows_j = [dz, drho]
+    derivs = buf[:, [1, 2, 7]] if ctx.generate else buf[:, 1:3]  # r_s, r_θ (, r_q)
+    f = np.empty((m, n))
+    jac = np.empty((m, m, n))
+    f[0] = r[2] - z
+    f[1] = rho - p
+    jac[0] = derivs[2]
+    jac[1] = (r[0] * derivs[0] + r[1] * derivs[1]) / rho_safe
     if ctx.generate:
-        f, grad = meshing_function(fam, ctx.length_scale)
-        rows_f.append(f)
-        rows_j.append(grad)
-    return np.stack(rows_f, -1), np.stack(rows_j, -2), fam
+        f[2], jac[2] = _meshing_buffer(buf, ctx.length_scale)
+    return f.T, jac.transpose(2, 0, 1), buf
 
 
 def _converged(f: np.ndarray, generate: bool) -> np.ndarray:
@@ -175,11 +189,11 @@ def _seed_candidates(ctx: _Context, z0: float, p0: float, depth: float, q_vals, 
     s_vals = np.linspace(sec.s_lo[main], hi, 9)
     t_vals = np.linspace(-np.pi, np.pi, 72, endpoint=False)
     sg, tg, qg = (a.ravel() for a in np.meshgrid(s_vals, t_vals, q_vals, indexing="ij"))
-    fam = generated_family(ctx.blade, ctx.settings, sg, tg, qg, np.full(sg.shape, main), sec)
-    r = fam.r
-    obj = (r[:, 2] - z0) ** 2 + (np.hypot(r[:, 0], r[:, 1]) - p0) ** 2
+    buf = _family(ctx, sg, tg, qg, np.full(sg.shape, main))
+    r = buf[:, 0]
+    obj = (r[2] - z0) ** 2 + (np.hypot(r[0], r[1]) - p0) ** 2
     if ctx.generate and len(q_vals) > 1:
-        f, _ = meshing_function(fam, ctx.length_scale)
+        f, _ = _meshing_buffer(buf, ctx.length_scale)
         obj = obj + 0.1 * (ctx.length_scale * f) ** 2
     order = np.argsort(obj)[:12]
     return np.stack([sg[order], tg[order], qg[order]], -1)[:, : 3 if ctx.generate else 2]
@@ -457,7 +471,7 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     n = zf.size
     sections = profile_sections(blade)
     gen = settings.process == "Generate"
-    ctx = _Context(blade, settings, sections, gen, float(length_scale))
+    ctx = _Context(blade, settings, sections, gen, float(length_scale), _chain(settings))
     if seed_index is None:
         seed = np.ravel_multi_index(tuple(d // 2 for d in shape), shape) if shape else 0
     else:
@@ -504,15 +518,16 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     _continue_from_neighbours(ctx, x, section, reason, zf, pf, shape)
 
     q = x[:, 2] if gen else np.zeros(n)
-    fam = generated_family(blade, settings, x[:, 0], x[:, 1], q, section, sections)
+    buf = _family(ctx, x[:, 0], x[:, 1], q, section)
+    fam = _family_views(buf, (n,))
     if gen:
-        res, grad = meshing_function(fam, length_scale)
+        res, grad = _meshing_buffer(buf, length_scale)
         # undercut: ∂f/∂q of the opposite sign to the seed point's (Litvin & Fuentes 2004,
         # §6.3: the envelope's singular line separates the regular and the cut-away parts)
         _, grad_seed = meshing_function(
             generated_family(blade, settings, x_seed[0], x_seed[1], x_seed[2], sec_seed,
                              sections), length_scale)
-        reason[(reason == 0) & (np.sign(grad[:, 2]) != np.sign(grad_seed[2]))] = 4
+        reason[(reason == 0) & (np.sign(grad[2]) != np.sign(grad_seed[2]))] = 4
     else:
         res = np.zeros(n)
     r = fam.r
