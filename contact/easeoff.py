@@ -155,6 +155,7 @@ EASEOFF_REASONS: dict[int, str] = {
     1: "gear_not_generated",  # the real gear flank has no point here (geometry mask)
     2: "no_conjugate_mate",  # no pinion point maps here through the surface of action
     3: "outside_pinion_blank",  # the mating pinion point lies beyond the pinion's blank
+    4: "beyond_fold",  # the roll angle turns back along the profile: a fold of the mapping
 }
 
 _MAP_TOL = 1e-7  # [mm] node-placement tolerance of the conjugate points
@@ -435,6 +436,30 @@ def _fractions(corners: np.ndarray, z, rho, iters: int = 8):
         u = u + (ez * dv[..., 1] - er * dv[..., 0]) / det
         v = v + (du[..., 0] * er - du[..., 1] * ez) / det
     return u, v
+
+
+def _mask_folds(reason: np.ndarray, roll: np.ndarray) -> None:
+    """Mask gear nodes beyond a fold of the roll-angle surface along the profile (in place).
+
+    On a bevel or hypoid flank the roll angle of the conjugate mates changes monotonically
+    from root to tip; where it turns back at the end of a profile line (the mapping pinion
+    → gear folds, e.g. where the pinion's flank meets its fillet or tip), the nodes beyond
+    the fold have a second-sheet mate that cannot carry contact. They are given reason 4
+    (``beyond_fold``), counted from the fold towards the nearer end of the line.
+    """
+    valid = reason == 0
+    q = np.where(valid, roll, np.nan)
+    d = np.diff(q, axis=1)
+    ok = np.isfinite(d)
+    if not np.any(ok):
+        return
+    sense = 1.0 if np.median(np.sign(d[ok])) >= 0 else -1.0
+    nv = q.shape[1]
+    for i, j in np.argwhere(ok & (np.sign(d) * sense < 0)):
+        if j + 1 >= nv / 2:  # fold near the tip end: mask from j + 1 to the tip
+            reason[i, j + 1:][reason[i, j + 1:] == 0] = 4
+        else:  # near the root end: mask from the root up to j
+            reason[i, : j + 1][reason[i, : j + 1] == 0] = 4
 
 
 def _fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
@@ -867,6 +892,7 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     nt = np.einsum("...i,...i", ng, e_t)
     nr = np.einsum("...i,...i", ng, e_r)
     lag = 1 if np.nanmedian(nt[reason == 0]) > 0 else -1
+    _mask_folds(reason, np.where(mate, roll, np.nan))
 
     # angular ease-off: lag the real gear needs to reach the conjugate point at (z, ρ);
     # the conjugate's polar angle is carried from its place to the node with the slope of
