@@ -466,14 +466,17 @@ def _fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
     """Fill invalid nodes of a 2-D field by linear extrapolation from valid neighbours.
 
     Used only to give the interpolating splines a smooth field: filled nodes stay masked.
+    ``values`` may carry trailing axes (several fields on the same mask, filled at once;
+    each element's arithmetic is that of a single field).
     """
     out = np.array(values, dtype=float)
     have = np.array(valid, dtype=bool)
     if not have.any():
         raise InputError("no valid node to fill a field from")
+    trail = (1,) * (out.ndim - have.ndim)
     while not have.all():
         acc = np.zeros(out.shape)
-        cnt = np.zeros(out.shape)
+        cnt = np.zeros(have.shape)
         for axis in (0, 1):
             for step in (1, -1):
                 a1 = np.roll(out, step, axis)
@@ -496,7 +499,7 @@ def _fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
         new = ~have & (cnt > 0)
         if not new.any():
             break
-        out[new] = acc[new] / cnt[new]
+        out[new] = acc[new] / cnt[new].reshape(-1, *trail)
         have = have | new
     return out
 
@@ -704,8 +707,9 @@ def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
     smooth = ok & (fwd.section == main)
     if smooth.sum() < 16:
         smooth = ok
-    sz = RectBivariateSpline(up, vp, _fill_missing(fwd.image[..., 0], smooth))
-    sr = RectBivariateSpline(up, vp, _fill_missing(fwd.image[..., 1], smooth))
+    image = _fill_missing(fwd.image, smooth)
+    sz = RectBivariateSpline(up, vp, image[..., 0])
+    sr = RectBivariateSpline(up, vp, image[..., 1])
     target = np.stack([zt, rt], -1)
 
     def step(j, u, v, e, limit=0.1):

@@ -120,23 +120,24 @@ class _Fields:
         self.computed = computed
         gear_ok = np.all(np.isfinite(eo.gear_position), axis=-1)
 
-        def spl(a, ok):
-            return RectBivariateSpline(self.u, self.v, _fill_missing(a, ok))
+        def spl(fields, ok):
+            # the fields sharing a mask are filled together (same arithmetic per field)
+            filled = _fill_missing(np.stack(fields, -1), ok)
+            return [RectBivariateSpline(self.u, self.v, filled[..., k])
+                    for k in range(len(fields))]
 
         # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
         # smooth sheet (both points on their blades' main sections), continued linearly
         # past those: a section junction (e.g. the gear's fillet) kinks the fields, and a
         # cubic spline would carry the kink back into the contact region
         sheet = valid | eo.smooth
-        self.q = spl(eo.raw_roll_angle, sheet)
-        self.eps = spl(eo.raw_ease_off_angle, sheet)
-        self.arm = spl(eo.normal_arm, gear_ok)
-        self.margin = spl(eo.margin, computed)
-        self.pos = [spl(eo.gear_position[..., k], gear_ok) for k in range(3)]
-        self.nrm = [spl(eo.gear_normal[..., k], gear_ok) for k in range(3)]
-        self.pu = spl(eo.pinion_u, computed)
-        self.pv = spl(eo.pinion_v, computed)
-        self.gap = spl(eo.gap_curvature, sheet)
+        self.q, self.eps, self.gap = spl(
+            [eo.raw_roll_angle, eo.raw_ease_off_angle, eo.gap_curvature], sheet)
+        self.arm, *gear = spl(
+            [eo.normal_arm, *np.moveaxis(eo.gear_position, -1, 0),
+             *np.moveaxis(eo.gear_normal, -1, 0)], gear_ok)
+        self.pos, self.nrm = gear[:3], gear[3:]
+        self.margin, self.pu, self.pv = spl([eo.margin, eo.pinion_u, eo.pinion_v], computed)
         dq = np.diff(np.where(valid, eo.raw_roll_angle, np.nan), axis=1)
         signs = np.sign(dq[np.isfinite(dq)])
         if signs.size == 0 or not (np.all(signs > 0) or np.all(signs < 0)):
@@ -158,7 +159,8 @@ class _Fields:
         iv = np.clip(np.searchsorted(self.v, np.where(ok, v, v0), side="right") - 1, 0,
                      len(self.v) - 2)
         ok &= self.cell_ok[iu, iv]
-        ok &= self.margin.ev(np.where(ok, u, u0), np.where(ok, v, v0)) >= 0.0
+        # the margin only where the rest holds (the spline is evaluated point by point)
+        ok[ok] = self.margin.ev(u[ok], v[ok]) >= 0.0
         return ok
 
     def lattice(self, uc):
@@ -175,8 +177,11 @@ class _Fields:
         vs = np.where(fin, v, self.v[0])
         c = np.minimum(self.margin.ev(u, vs), np.minimum(vs - self.v[0], self.v[-1] - vs))
         c = np.minimum(c, np.minimum(u - self.u[0], self.u[-1] - u))
-        iu = np.clip(np.searchsorted(self.u, u, side="right") - 1, 0, len(self.u) - 2)
-        iv = np.clip(np.searchsorted(self.v, vs, side="right") - 1, 0, len(self.v) - 2)
+        # (np.minimum/np.maximum: np.clip's arithmetic without its wrapper's overhead)
+        iu = np.minimum(np.maximum(np.searchsorted(self.u, u, side="right") - 1, 0),
+                        len(self.u) - 2)
+        iv = np.minimum(np.maximum(np.searchsorted(self.v, vs, side="right") - 1, 0),
+                        len(self.v) - 2)
         return np.where(fin & self.cell_ok[iu, iv], c, -1.0)
 
     def solve_v(self, u, target, v_start=None, lattice=None):
@@ -192,7 +197,6 @@ class _Fields:
             u = np.broadcast_to(u, shape)
             target = np.broadcast_to(target, shape)
         shape = u.shape
-        v0, v1 = self.v[0], self.v[-1]
         if lattice is not None:
             vn = self.v
             qn = np.broadcast_to(lattice, (*shape, len(vn)))
@@ -205,26 +209,37 @@ class _Fields:
             v = (vn[k] + t * (vn[k + 1] - vn[k])).ravel()
             miss = ((s * (qn[..., 0] - target) > 0) | (s * (qn[..., -1] - target) < 0)).ravel()
         else:
-            v = np.array(np.broadcast_to(v_start, shape), dtype=float).ravel()
-            v[~np.isfinite(v)] = 0.5 * (v0 + v1)
-            miss = np.zeros(v.size, dtype=bool)
-        uf, tf = u.ravel(), target.ravel()
+            v_start = np.asarray(v_start, dtype=float)
+            v = (v_start.ravel() if v_start.shape == shape
+                 else np.broadcast_to(v_start, shape).ravel()).copy()
+            v[~np.isfinite(v)] = 0.5 * (self.v[0] + self.v[-1])
+            miss = None
+        return self._newton_v(u.ravel(), target.ravel(), v, miss).reshape(shape)
+
+    def _newton_v(self, uf, tf, v, miss=None):
+        """:meth:`solve_v` on flat arrays from a finite start ``v`` (overwritten)."""
+        v0, v1 = self.v[0], self.v[-1]
         f = self.q.ev(uf, v) - tf
         # Newton on the points not yet converged (and not known to miss) only
-        act = np.flatnonzero(~(np.abs(f) < 1e-13) & ~miss)
+        act = np.flatnonzero(~(np.abs(f) < 1e-13) if miss is None
+                             else ~(np.abs(f) < 1e-13) & ~miss)
         for _ in range(_V_NEWTON):
             if act.size == 0:
                 break
             ua, va = uf[act], v[act]
             d = self.q.ev(ua, va, dy=1)
             # the spline is defined on [v0, v1] only (FITPACK clamps outside)
-            va = np.minimum(np.maximum(va - f[act] / np.where(d != 0, d, 1e-30), v0), v1)
-            fa = self.q.ev(ua, va) - tf[act]
-            v[act], f[act] = va, fa
-            act = act[~(np.abs(fa) < 1e-13)]
+            vn = np.minimum(np.maximum(va - f[act] / np.where(d != 0, d, 1e-30), v0), v1)
+            fa = self.q.ev(ua, vn) - tf[act]
+            v[act], f[act] = vn, fa
+            # a point whose step left it in place (held at v0 or v1 by the clamp) would
+            # repeat the same step: it is finished (a miss unless |f| is already small)
+            act = act[~(np.abs(fa) < 1e-13) & (vn != va)]
         tol = 1e-9 * (v1 - v0)
-        bad = miss | (v < v0 - tol) | (v > v1 + tol) | (np.abs(f) > 1e-9)
-        return np.where(bad, np.nan, np.minimum(np.maximum(v, v0), v1)).reshape(shape)
+        bad = (v < v0 - tol) | (v > v1 + tol) | (np.abs(f) > 1e-9)
+        if miss is not None:
+            bad |= miss
+        return np.where(bad, np.nan, np.minimum(np.maximum(v, v0), v1))
 
 
 class ContactCurves(NamedTuple):
@@ -260,16 +275,17 @@ def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
     vc = f.solve_v(uc[None, :], t[:, None], lattice=f.lattice(uc)[None, :, :])
     ok = f.inside(np.broadcast_to(uc, vc.shape), vc)
     # the largest contiguous run of valid samples of each curve
-    start = np.full(nb, -1)
-    stop = np.full(nb, -1)
-    for b in np.flatnonzero(ok.any(axis=1)):
-        idx = np.flatnonzero(ok[b])
-        breaks = np.flatnonzero(np.diff(idx) > 1)
-        seg_lo = np.r_[idx[0], idx[breaks + 1]]
-        seg_hi = np.r_[idx[breaks], idx[-1]]
-        k = int(np.argmax(seg_hi - seg_lo))
-        start[b], stop[b] = seg_lo[k], seg_hi[k]
-    have = start >= 0
+    # (vectorised over the curves: a run starts where ok rises and ends before it falls;
+    # argmax takes the first of equally long runs)
+    edge = np.diff(np.pad(ok, ((0, 0), (1, 1))).astype(np.int8), axis=1)
+    col = np.arange(nc + 1)
+    falls = np.where(edge == -1, col, nc + 1)
+    run_end = np.minimum.accumulate(falls[:, ::-1], axis=1)[:, ::-1]  # first fall ≥ j
+    length = np.where(edge == 1, run_end - col, 0)[:, :nc]
+    have = length.max(axis=1, initial=0) > 0
+    first = np.argmax(length, axis=1)
+    start = np.where(have, first, -1)
+    stop = np.where(have, first + length[np.arange(nb), first] - 1, -1)
     ua = np.where(have, uc[np.clip(start, 0, nc - 1)], np.nan)
     ub = np.where(have, uc[np.clip(stop, 0, nc - 1)], np.nan)
 
@@ -285,21 +301,29 @@ def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
         va = vc[rows, j_in]
         ca = f.measure(a, va)
         cb = f.measure(b, f.solve_v(b, t[rows], v_start=va))
-        side = np.zeros(rows.size)
+        t_rows = t[rows]
+        # the last step moved a (prev_in) or b (prev_out); updates in place (own arrays)
+        prev_in = np.zeros(rows.size, dtype=bool)
+        prev_out = np.zeros(rows.size, dtype=bool)
         for _ in range(_END_ITER):
             smooth = (cb > -0.5) & (ca < 0.5) & (cb != ca)
             m = np.where(smooth, b - cb * (b - a) / np.where(smooth, cb - ca, 1.0), 0.5 * (a + b))
             lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
-            m = np.clip(m, lo_m + 1e-3 * (hi_m - lo_m), hi_m - 1e-3 * (hi_m - lo_m))
-            vm = f.solve_v(m, t[rows], v_start=va)
+            w = 1e-3 * (hi_m - lo_m)
+            m = np.minimum(np.maximum(m, lo_m + w), hi_m - w)
+            vm = f._newton_v(m, t_rows, va.copy())
             cm = f.measure(m, vm)
             good = cm >= 0
+            bad = ~good
             # Illinois: halve the value kept at the end that did not move twice running
-            cb = np.where(good & (side == 1) & smooth, 0.5 * cb, cb)
-            ca = np.where(~good & (side == -1) & smooth, 0.5 * ca, ca)
-            a, ca, va = np.where(good, m, a), np.where(good, cm, ca), np.where(good, vm, va)
-            b, cb = np.where(good, b, m), np.where(good, cb, cm)
-            side = np.where(good, 1, -1)
+            np.multiply(cb, 0.5, out=cb, where=good & prev_in & smooth)
+            np.multiply(ca, 0.5, out=ca, where=bad & prev_out & smooth)
+            np.copyto(a, m, where=good)
+            np.copyto(ca, cm, where=good)
+            np.copyto(va, vm, where=good)
+            np.copyto(b, m, where=bad)
+            np.copyto(cb, cm, where=bad)
+            prev_in, prev_out = good, bad
             if np.all(np.abs(b - a) < 1e-9):
                 break
         n_lo = int(lo_end.sum())
@@ -309,11 +333,27 @@ def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
     up = ua[:, None] + (ub - ua)[:, None] * frac
     up_safe = np.where(np.isfinite(up), up, u0)
     vstart = np.full(up.shape, np.nan)
-    for b in np.flatnonzero(have):
-        run = slice(start[b], stop[b] + 1)
-        vstart[b] = np.interp(up_safe[b], uc[run], vc[b, run])
-    vp = f.solve_v(up_safe, t[:, None], v_start=vstart)
-    vp = np.where(have[:, None], vp, np.nan)
+    hb = np.flatnonzero(have)
+    if hb.size:
+        # np.interp of each curve's run of coarse samples, vectorised over the curves (the
+        # same arithmetic: slope (y[j+1] − y[j]) / (x[j+1] − x[j]), ends held)
+        s0, s1 = start[hb][:, None], stop[hb][:, None]
+        x = up_safe[hb]
+        j = np.clip(np.searchsorted(uc, x, side="right") - 1, s0, s1)
+        jn = np.minimum(j + 1, s1)
+        vrun = vc[hb]
+        yj = np.take_along_axis(vrun, j, 1)
+        yn = np.take_along_axis(vrun, jn, 1)
+        step = jn != j
+        slope = (yn - yj) / np.where(step, uc[jn] - uc[j], 1.0)
+        val = np.where(step & (uc[j] != x), slope * (x - uc[j]) + yj, yj)
+        lo_v = np.take_along_axis(vrun, s0, 1)
+        hi_v = np.take_along_axis(vrun, s1, 1)
+        vstart[hb] = np.where(x < uc[s0], lo_v, np.where(x >= uc[s1], hi_v, val))
+    # only the curves that exist (Newton runs each point independently)
+    vp = np.full(up.shape, np.nan)
+    if hb.size:
+        vp[hb] = f.solve_v(up_safe[hb], t[hb, None], v_start=vstart[hb])
     up = np.where(np.isfinite(vp), up, np.nan)
     fin = np.isfinite(vp)
     us, vs = np.where(fin, up, u0), np.where(fin, vp, f.v[0])
@@ -592,7 +632,7 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: _Fields | 
         m = np.where(smooth & (fa != fb), (b * fa - a * fb) / np.where(fa != fb, fa - fb, 1.0),
                      0.5 * (a + b))
         lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
-        m = np.clip(m, lo_m + 1e-6 * (hi_m - lo_m), hi_m - 1e-6 * (hi_m - lo_m))
+        m = np.minimum(np.maximum(m, lo_m + 1e-6 * (hi_m - lo_m)), hi_m - 1e-6 * (hi_m - lo_m))
         m = np.where(done, a, m)
         fm = h(m, ks)
         out = fm > 0
@@ -617,18 +657,20 @@ def _stretch(sep, pos, k):
     Returns (lo, hi) fractional sample indices of its ends and the 3-D length [mm].
     """
     n = len(sep)
-    if k < 0 or not np.isfinite(sep[k]) or sep[k] > 0:
+    sep = sep.tolist()  # Python floats (exact): the scalar walk below without numpy overhead
+    isfinite = math.isfinite
+    if k < 0 or not isfinite(sep[k]) or sep[k] > 0:
         return math.nan, math.nan, 0.0
     lo = k
-    while lo > 0 and np.isfinite(sep[lo - 1]) and sep[lo - 1] <= 0:
+    while lo > 0 and isfinite(sep[lo - 1]) and sep[lo - 1] <= 0:
         lo -= 1
     hi = k
-    while hi < n - 1 and np.isfinite(sep[hi + 1]) and sep[hi + 1] <= 0:
+    while hi < n - 1 and isfinite(sep[hi + 1]) and sep[hi + 1] <= 0:
         hi += 1
     flo, fhi = float(lo), float(hi)
-    if lo > 0 and np.isfinite(sep[lo - 1]):
+    if lo > 0 and isfinite(sep[lo - 1]):
         flo = lo - (0.0 - sep[lo]) / (sep[lo - 1] - sep[lo])
-    if hi < n - 1 and np.isfinite(sep[hi + 1]):
+    if hi < n - 1 and isfinite(sep[hi + 1]):
         fhi = hi + (0.0 - sep[hi]) / (sep[hi + 1] - sep[hi])
     seg = np.linalg.norm(np.diff(pos, axis=0), axis=-1)
     length = float(seg[lo:hi].sum())
@@ -755,9 +797,11 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
         if den > 0:
             te_min = min(te_min, float(ec - 0.125 * (em - ep) ** 2 / den))
     te_tr = np.array([np.nan, np.nan])
-    for i, m in enumerate((m1, m2)):
-        if math.isfinite(m):
-            te_tr[i] = float(pair_transmission_error(eo, np.array([m]), **kw)[0])
+    at = np.flatnonzero(np.isfinite([m1, m2]))
+    if at.size:
+        # both transitions in one batch (the curve ends, to 1e-9 of the face width, may
+        # then differ at round-off level from separate evaluations: ~1e-16 rad of UTE)
+        te_tr[at] = pair_transmission_error(eo, np.array([m1, m2])[at], **kw)
     te_max = float(np.nanmax(np.r_[envelope, te_tr]))
     ds = utca_dataset(eo, cc, roll, pk, envelope, separation=separation,
                       transitions=(m1, m2), transition_te=tuple(te_tr),

@@ -45,8 +45,6 @@ from geometry.machine import (
     _family_buffer,
     _family_views,
     _meshing_buffer,
-    generated_family,
-    meshing_function,
 )
 
 __all__ = ["REASONS", "EnvelopeSolution", "solve_envelope"]
@@ -245,35 +243,46 @@ def _clamp_to(sections, k, s):
     return np.clip(s, sections.s_lo[k], np.minimum(sections.s_hi[k], sections.s_lo[k] + 1e3))
 
 
-def _solve_sections(ctx: _Context, x0, sec0, z, p):
+def _solve_sections(ctx: _Context, x0, sec0, z, p, first=None):
     """Newton on the given sections, moving points to neighbouring sections as needed.
 
-    Returns x, section, reason (0 valid, 1 no solution, 2 corner, 3 below the blade tip).
+    ``first``: the result (x, converged) of :func:`_newton` from ``x0`` on ``sec0`` if
+    already computed (Newton runs each point independently, so it may be part of a larger
+    batch). Returns x, section, reason (0 valid, 1 no solution, 2 corner, 3 below the
+    blade tip).
     """
     sections = ctx.sections
     n_sec = len(sections.s_lo)
     n = len(x0)
     rows = np.arange(n)
-    x, ok = _newton(ctx, x0, sec0, z, p)
+    x, ok = _newton(ctx, x0, sec0, z, p) if first is None else first
     section = sec0.copy()
     reason = np.where(ok, 0, 1).astype(np.int8)
     visited = np.zeros((n, n_sec), bool)
     visited[rows, section] = True
-    # failed points: try the sections next to the starting one from the same start
-    for step in (-1, 1):
-        retry = (reason == 1) & (section + step >= 0) & (section + step < n_sec)
-        if not retry.any():
-            continue
-        idx = np.flatnonzero(retry)
-        k = section[idx] + step
-        xs = x0[idx].copy()
-        xs[:, 0] = _clamp_to(sections, k, xs[:, 0])
-        xn, okn = _newton(ctx, xs, k, z[idx], p[idx])
-        good = idx[okn]
-        x[good] = xn[okn]
-        section[good] = k[okn]
-        reason[good] = 0
-        visited[good, section[good]] = True
+    # failed points: try the sections next to the starting one from the same start (the
+    # section below first; both tried in one batch, as each point's Newton is independent)
+    fail = reason == 1
+    tries = [(step, np.flatnonzero(fail & (section + step >= 0) & (section + step < n_sec)))
+             for step in (-1, 1)]
+    tries = [(step, idx) for step, idx in tries if idx.size]
+    if tries:
+        idx_all = np.concatenate([idx for _, idx in tries])
+        k_all = np.concatenate([section[idx] + step for step, idx in tries])
+        xs = x0[idx_all].copy()
+        xs[:, 0] = _clamp_to(sections, k_all, xs[:, 0])
+        xn_all, okn_all = _newton(ctx, xs, k_all, z[idx_all], p[idx_all])
+        at = 0
+        for _, idx in tries:
+            sl = slice(at, at + idx.size)
+            at += idx.size
+            # a point placed by the section below is not moved by the one above
+            use = okn_all[sl] & (reason[idx] == 1)
+            good = idx[use]
+            x[good] = xn_all[sl][use]
+            section[good] = k_all[sl][use]
+            reason[good] = 0
+            visited[good, section[good]] = True
     tol = 1e-9
     for _ in range(2 * n_sec):
         s = x[:, 0]
@@ -499,22 +508,27 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         jac_seed = jac[0]
     else:
         x_seed, jac_seed, sec_seed = _seed(ctx, zf[seed], pf[seed], depth)
-    if guess is not None:
-        # near a section junction a place can have a root on two sections (one of them cut
-        # away); as without a guess, the seed's section wins where Newton from the
-        # prediction finds its root inside the section
-        other = np.flatnonzero((reason == 0) & (section != sec_seed))
-        if other.size:
-            x0 = _predict(x_seed, jac_seed, zf[other] - zf[seed], pf[other] - pf[seed])
-            xo, ok = _newton(ctx, x0, np.full(other.size, sec_seed), zf[other], pf[other])
+    # near a section junction a place can have a root on two sections (one of them cut
+    # away); as without a guess, the seed's section wins where Newton from the prediction
+    # finds its root inside the section ("other"); the unresolved points ("rest") start
+    # from the same prediction: both in one Newton batch (each point runs independently)
+    other = (np.flatnonzero((reason == 0) & (section != sec_seed)) if guess is not None
+             else np.zeros(0, dtype=np.intp))
+    rest = np.flatnonzero(reason != 0)
+    both = np.r_[other, rest]
+    if both.size:
+        x0 = _predict(x_seed, jac_seed, zf[both] - zf[seed], pf[both] - pf[seed])
+        xb, okb = _newton(ctx, x0, np.full(both.size, sec_seed), zf[both], pf[both])
+        no = other.size
+        if no:
+            xo, ok = xb[:no], okb[:no].copy()
             ok &= ((xo[:, 0] >= sections.s_lo[sec_seed] - 1e-9)
                    & (xo[:, 0] <= sections.s_hi[sec_seed] + 1e-9))
             x[other[ok]], section[other[ok]] = xo[ok], sec_seed
-    rest = np.flatnonzero(reason != 0)
-    if rest.size:
-        x0 = _predict(x_seed, jac_seed, zf[rest] - zf[seed], pf[rest] - pf[seed])
-        x[rest], section[rest], reason[rest] = _solve_sections(
-            ctx, x0, np.full(rest.size, sec_seed), zf[rest], pf[rest])
+        if rest.size:
+            x[rest], section[rest], reason[rest] = _solve_sections(
+                ctx, x0[no:], np.full(rest.size, sec_seed), zf[rest], pf[rest],
+                first=(xb[no:], okb[no:]))
     _continue_from_neighbours(ctx, x, section, reason, zf, pf, shape)
 
     q = x[:, 2] if gen else np.zeros(n)
@@ -524,10 +538,11 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         res, grad = _meshing_buffer(buf, length_scale)
         # undercut: ∂f/∂q of the opposite sign to the seed point's (Litvin & Fuentes 2004,
         # §6.3: the envelope's singular line separates the regular and the cut-away parts)
-        _, grad_seed = meshing_function(
-            generated_family(blade, settings, x_seed[0], x_seed[1], x_seed[2], sec_seed,
-                             sections), length_scale)
-        reason[(reason == 0) & (np.sign(grad[2]) != np.sign(grad_seed[2]))] = 4
+        # (the seed point's family by the same buffer functions as generated_family)
+        _, grad_seed = _meshing_buffer(
+            _family(ctx, x_seed[0:1], x_seed[1:2], x_seed[2:3], np.array([sec_seed])),
+            length_scale)
+        reason[(reason == 0) & (np.sign(grad[2]) != np.sign(grad_seed[2, 0]))] = 4
     else:
         res = np.zeros(n)
     r = fam.r
