@@ -106,6 +106,7 @@ def run_analysis(
     temperature: float = 90.0,
     roughness: float = 0.8,
     friction_model: str = "xu2007",
+    deviations: tuple | None = None,
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -126,6 +127,11 @@ def run_analysis(
         Include the four generated flanks as ``/geometry`` (default True).
     progress : bool
         Progress bar over the LTCA roll positions.
+    deviations : (SurfaceDeviation or None, SurfaceDeviation or None), optional
+        Measured or wear deviations of the (pinion, gear) flanks in contact
+        (:mod:`contact.deviations`, seed ch. 4). The main groups then hold the deviated
+        surfaces' results and ``/theoretical/{easeoff,utca,ltca}`` the theoretical ones,
+        side by side; ``/easeoff`` gains ``ease_off_change`` [um].
     pinion_speed : float, optional — [rpm]
         With a speed, the efficiency stage runs too (``/friction``,
         :func:`friction.efficiency.efficiency_analysis`) with ``lubricant``,
@@ -160,9 +166,33 @@ def run_analysis(
     t0 = time.perf_counter()
     eo = ease_off(c, flank=flank)
     times["easeoff"] = time.perf_counter() - t0
+    if deviations is not None and any(d is not None for d in deviations):
+        from contact.deviations import apply_deviations
+
+        pin_dev, gear_dev = deviations
+        theo = {"easeoff": eo}
+        eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
+        t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=theo["easeoff"])
+        tree["/theoretical/easeoff"] = t_eo
+        tree["/theoretical/utca"] = t_ut
+        tree["/theoretical/ltca"] = loaded_tca(
+            c, torques, flank=flank, options=opts, easeoff=theo["easeoff"]
+        )
     t0 = time.perf_counter()
     eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
     times["utca"] = time.perf_counter() - t0
+    if "/theoretical/easeoff" in tree:
+        change = (eo_ds["ease_off"] - tree["/theoretical/easeoff"]["ease_off"]).astype(float)
+        eo_ds["ease_off_change"] = change.assign_attrs(
+            units=eo_ds["ease_off"].attrs.get("units", "um"),
+            long_name="ease-off change by the surface deviations (deviated - theoretical)",
+        )
+        eo_ds.attrs["deviations"] = (
+            "pinion: "
+            + ("yes" if deviations[0] is not None else "no")
+            + ", gear: "
+            + ("yes" if deviations[1] is not None else "no")
+        )
     t0 = time.perf_counter()
     ltca_ds = loaded_tca(c, torques, flank=flank, options=opts, easeoff=eo, progress=progress)
     times["ltca"] = time.perf_counter() - t0

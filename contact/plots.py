@@ -34,6 +34,7 @@ from geometry.plot import pyplot as _pyplot
 __all__ = [
     "plot_analysis",
     "plot_contact_pattern",
+    "plot_deviations",
     "plot_easeoff",
     "plot_efficiency_map",
     "plot_friction",
@@ -550,6 +551,10 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str]) -> list[
         out += plot_utca(eo, tree["utca"].to_dataset(), directory)
     if "ltca" in tree.children:
         out += plot_ltca(eo, tree["ltca"].to_dataset(), directory)
+        if "theoretical" in tree.children:
+            out += plot_deviations(
+                eo, tree["ltca"].to_dataset(), tree["theoretical/ltca"].to_dataset(), directory
+            )
         if "friction" in tree.children:
             out += plot_friction(
                 eo, tree["ltca"].to_dataset(), tree["friction"].to_dataset(), directory
@@ -614,4 +619,58 @@ def plot_efficiency_map(emap: xr.Dataset, directory: str | os.PathLike[str]) -> 
     fig.savefig(d / "efficiency_vs_roughness.png", dpi=120)
     plt.close(fig)
     out.append(d / "efficiency_vs_roughness.png")
+    return out
+
+
+def plot_deviations(
+    easeoff: xr.Dataset,
+    ltca: xr.Dataset,
+    theoretical_ltca: xr.Dataset,
+    directory: str | os.PathLike[str],
+) -> list[Path]:
+    """Ease-off change by surface deviations and LTE of deviated vs theoretical surfaces.
+
+    As the seed's Figs. 4.6–4.9 and 4.11–4.14: the change of the ease-off topography over
+    the gear flank, and the loaded transmission error of both surfaces per torque.
+    """
+    _require(easeoff, ["ease_off_change"], "easeoff")
+    plt = _pyplot()
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    _outline(ax, easeoff)
+    z = easeoff["axial_position"].values
+    r = easeoff["radial_position"].values
+    ch = easeoff["ease_off_change"].values
+    cs = ax.contourf(z, r, ch, levels=15, cmap="coolwarm")
+    fig.colorbar(cs, ax=ax, label="ease-off change [um]")
+    ax.set_title("ease-off change by the surface deviations", fontsize=9)
+    ax.set_xlabel("axial position [mm]")
+    ax.set_ylabel("radius [mm]")
+    ax.set_aspect("equal", adjustable="datalim")
+    fig.tight_layout()
+    out = [d / "deviations_easeoff_change.png"]
+    fig.savefig(out[0], dpi=130)
+    plt.close(fig)
+    nt = ltca.sizes["torque"]
+    fig, axes = plt.subplots(nt, 1, figsize=(6.5, 2.2 * nt + 0.6), sharex=True, squeeze=False)
+    x = ltca["mesh_cycle"].values
+    for i, ax in enumerate(axes[:, 0]):
+        ax.plot(
+            x,
+            theoretical_ltca["transmission_error"].isel(torque=i),
+            "o-",
+            ms=2.5,
+            label="theoretical",
+        )
+        ax.plot(x, ltca["transmission_error"].isel(torque=i), "s-", ms=2.5, label="deviated")
+        ax.set_title(f"T_p = {float(ltca['torque'].values[i]):g} N m", fontsize=9)
+        ax.set_ylabel("LTE [urad]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axes[-1, 0].set_xlabel("mesh cycles")
+    fig.tight_layout()
+    out.append(d / "deviations_transmission_error.png")
+    fig.savefig(out[-1], dpi=120)
+    plt.close(fig)
     return out

@@ -218,3 +218,33 @@ def test_bad_input_names_the_field(tmp_path, eo):
         read_deviation_csv(path)
     with pytest.raises(InputError, match="path"):
         read_deviation_csv(tmp_path / "missing.csv")
+
+
+def test_pipeline_with_deviations_side_by_side(tmp_path):
+    # zero deviations reproduce the theoretical results exactly; a wear-like deviation
+    # (the bundled example) changes the ease-off by up to the deviations' sum and is
+    # written next to the theoretical results; `ltca run --deviations` and `ltca plot`
+    from contact.cli import main
+    from contact.io import read_netcdf
+    from contact.ltca import LTCAOptions
+    from contact.pipeline import run_analysis
+
+    root = Path(__file__).resolve().parents[1] / "cases"
+    case = load_case(root / "kolivand2009_fm_11x41.toml")
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=10)
+    zero = run_analysis(case, [200.0], options=opts, geometry=False,
+                        deviations=(SurfaceDeviation.zero(), SurfaceDeviation.zero()))
+    np.testing.assert_array_equal(zero["ltca"]["transmission_error"].values,
+                                  zero["theoretical/ltca"]["transmission_error"].values)
+    assert float(np.nanmax(np.abs(zero["easeoff"]["ease_off_change"].values))) < 1e-9
+    dev = root / "deviations"
+    out = tmp_path / "dev.nc"
+    assert main(["run", str(root / "kolivand2009_fm_11x41.toml"), "--torque", "200",
+                 "--rolls-per-cycle", "4", "--segments", "10", "--speed", "0", "--no-progress",
+                 "--deviations", str(dev / "wear_11x41_pinion.csv"),
+                 str(dev / "wear_11x41_gear.csv"), "-o", str(out)]) == 0
+    tree = read_netcdf(out)
+    change = tree["easeoff"]["ease_off_change"].values
+    assert 5.0 < float(np.nanmax(change) - np.nanmin(change)) < 15.0 + 1e-6  # um
+    assert main(["plot", str(out), "--plots", str(tmp_path / "png")]) == 0
+    assert (tmp_path / "png" / "deviations_easeoff_change.png").exists()

@@ -61,6 +61,15 @@ def register(sub) -> None:
     _misalignment_args(p)
     p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
     p.add_argument(
+        "--deviations",
+        nargs=2,
+        metavar=("PINION_CSV", "GEAR_CSV"),
+        default=None,
+        help="measured/wear normal deviations of the pinion and gear flanks in "
+        "contact (CSV, see contact.deviations; '-' for none); the theoretical "
+        "results are kept under /theoretical",
+    )
+    p.add_argument(
         "--speed",
         type=float,
         default=1500.0,
@@ -101,12 +110,18 @@ def run(args: argparse.Namespace) -> int:
         segments=args.segments,
         **({"solver": args.solver} if args.solver else {}),
     )
+    devs = None
+    if args.deviations:
+        from contact.deviations import read_deviation_csv
+
+        devs = tuple(None if f == "-" else read_deviation_csv(f) for f in args.deviations)
     tree = run_analysis(
         case,
         args.torque,
         misalignment=mis,
         flank=args.flank,
         options=opts,
+        deviations=devs,
         progress=not args.no_progress and sys.stderr.isatty(),
         pinion_speed=args.speed or None,
         lubricant=args.lubricant,
@@ -163,6 +178,15 @@ def run(args: argparse.Namespace) -> int:
             f"friction model {fr.attrs['friction_model']}"
         )
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
+    if "theoretical" in tree.children:
+        th = tree["theoretical/ltca"].to_dataset()
+        print(
+            "theoretical surfaces (no deviations): LTE mean "
+            + ", ".join(f"{v:.1f}" for v in th["lte_mean"].values)
+            + " urad, p-p "
+            + ", ".join(f"{v:.1f}" for v in th["lte_peak_to_peak"].values)
+            + " urad"
+        )
     times = {k[5:-2]: v for k, v in tree.attrs.items() if k.startswith("time_")}
     print("time [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in times.items()))
     path = write_netcdf(tree, Path(args.output), inputs=tree.attrs["inputs"])
