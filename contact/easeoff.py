@@ -112,6 +112,7 @@ import numpy as np
 import xarray as xr
 from scipy.interpolate import RectBivariateSpline
 
+from contact.io import data_var as _var
 from geometry._version import __version__
 from geometry.assembly import Misalignment, case_transforms
 from geometry.curvature import normal_curvature, surface_curvatures
@@ -938,10 +939,6 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
         drive_sense=drive,
         lag_sense=lag, roll_zero=roll_zero, gear_phase=psi0,
         ratio=kin.ratio, pitch=2.0 * math.pi / case.pinion.blank.teeth, kinematics=kin)
-
-
-def _var(dims, data, units, long_name, **attrs):
-    return (dims, data, {"units": units, "long_name": long_name, **attrs})
 
 
 def easeoff_dataset(eo: EaseOff, case: Case, *,

@@ -21,6 +21,7 @@ import math
 
 import numpy as np
 
+from contact.compliance.hertz import contact_modulus  # the one E* of the toolkit
 from geometry.errors import InputError
 
 __all__ = [
@@ -37,28 +38,6 @@ def _positive(name: str, value: float) -> float:
     if not math.isfinite(v) or v <= 0:
         raise InputError(f"{name}: must be finite and > 0, got {value!r}")
     return v
-
-
-def contact_modulus(
-    youngs_modulus_1: float, poisson_1: float, youngs_modulus_2: float, poisson_2: float
-) -> float:
-    """Contact modulus E* = 1 / ((1 − ν₁²)/E₁ + (1 − ν₂²)/E₂) — [MPa] (Johnson Eq. 4.22).
-
-    Parameters
-    ----------
-    youngs_modulus_1, youngs_modulus_2 : float — [MPa], > 0
-    poisson_1, poisson_2 : float — [1], in [0, 0.5)
-
-    Raises
-    ------
-    InputError
-    """
-    E1 = _positive("youngs_modulus_1", youngs_modulus_1)
-    E2 = _positive("youngs_modulus_2", youngs_modulus_2)
-    for name, nu in (("poisson_1", poisson_1), ("poisson_2", poisson_2)):
-        if not (0.0 <= float(nu) < 0.5):
-            raise InputError(f"{name}: must be in [0, 0.5), got {nu!r}")
-    return 1.0 / ((1 - poisson_1**2) / E1 + (1 - poisson_2**2) / E2)
 
 
 def rectangle_influence(

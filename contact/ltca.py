@@ -41,7 +41,8 @@ from scipy.interpolate import RectBivariateSpline
 
 from contact.compliance.hertz import hertz_half_width, weber_compliance
 from contact.compliance.mesh import ContactSegments, mesh_compliance, pair_compliance_model
-from contact.easeoff import EaseOff, _fractions, ease_off
+from contact.easeoff import EaseOff, _fractions, _rotate, ease_off
+from contact.io import data_var as _var
 from contact.problem import ContactProblem
 from contact.solvers import DEFAULT_SOLVER, get_backend, solve_contact
 from contact.transmission_error import transmission_error_summary
@@ -145,12 +146,6 @@ def _spline(eo: EaseOff, field: np.ndarray) -> RectBivariateSpline:
     return RectBivariateSpline(eo.u, eo.v, np.nan_to_num(vals), kx=3, ky=3, s=0)
 
 
-def _rotate_about(axis: np.ndarray, angle: np.ndarray, v: np.ndarray) -> np.ndarray:
-    c = np.cos(angle)[..., None]
-    s = np.sin(angle)[..., None]
-    return v * c + np.cross(axis, v) * s + axis * (v @ axis)[..., None] * (1.0 - c)
-
-
 def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], segments: int):
     """Contact segments of every (roll, pair): the LTCA discretisation (seed §3.3, Fig. 3.3).
 
@@ -203,7 +198,7 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     og, ag, ap = kin.gear_origin, kin.gear_axis, kin.pinion_axis
 
     def gear_to_pair(x, vec=False):
-        q = _rotate_about(ag, np.broadcast_to(psi[..., None], x.shape[:-1]), x @ rot_g.T)
+        q = _rotate(ag, np.broadcast_to(psi[..., None], x.shape[:-1]), x @ rot_g.T)
         return q if vec else q + og
 
     mid_pair = gear_to_pair(pos_g)
@@ -216,7 +211,7 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     # pinion's tip or ends can lie just beyond its blank (the curve ends where the
     # conjugate mate leaves it): such segments cannot carry load and are left out
     op = kin.pinion_origin
-    xp = _rotate_about(ap, -np.broadcast_to(phi[..., None], mid_pair.shape[:-1]),
+    xp = _rotate(ap, -np.broadcast_to(phi[..., None], mid_pair.shape[:-1]),
                        mid_pair - op) @ rot_p
     pu, pv = _fractions(blank_outline(case.pinion.blank).corners, xp[..., 2],
                         np.hypot(xp[..., 0], xp[..., 1]))
@@ -246,7 +241,7 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
         w_g = np.cross(nrm_g, _tangent(cc))  # (J, K, S, 3)
         w_pair = gear_to_pair(np.nan_to_num(w_g), vec=True)
         phi_seg = np.broadcast_to(phi[..., None], u.shape)
-        w_p = _rotate_about(ap, -phi_seg, w_pair) @ rot_p
+        w_p = _rotate(ap, -phi_seg, w_pair) @ rot_p
         wg_r = w_g.reshape(J * K, S, 3)[rows]
         wp_r = w_p.reshape(J * K, S, 3)[rows]
         kg = normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, np.nan_to_num(wg_r))
@@ -281,13 +276,6 @@ def _tangent(cc) -> np.ndarray:
     """Unit contact-line tangents of the segments (gear frame), shape (..., S, 3)."""
     t = np.diff(cc.position, axis=-2)
     return t / np.linalg.norm(t, axis=-1, keepdims=True)
-
-
-def _var(dims, data, units, long_name, **attrs):
-    a = {"long_name": long_name, **attrs}
-    if units is not None:
-        a["units"] = units
-    return (dims, data, a)
 
 
 def loaded_tca(

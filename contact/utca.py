@@ -78,6 +78,7 @@ import xarray as xr
 from scipy.interpolate import RectBivariateSpline
 
 from contact.easeoff import EaseOff, _fill_missing, ease_off, easeoff_dataset
+from contact.io import data_var as _var
 from geometry._version import __version__
 from geometry.errors import InputError, ModelUnavailableError
 
@@ -808,10 +809,6 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
                       te_range=(te_min, te_max), case=case, misalignment=misalignment,
                       method=method)
     return easeoff_dataset(eo, case, misalignment=misalignment), ds
-
-
-def _var(dims, data, units, long_name, **attrs):
-    return (dims, data, {"units": units, "long_name": long_name, **attrs})
 
 
 def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
