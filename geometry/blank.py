@@ -24,9 +24,13 @@ checked against the Annex F examples (``tests/data/iso23509_annex_f_face_milling
   reproduces sample 2 to 0.01 mm at both ends;
 * backlash j_en is taken as measured perpendicular to the flanks (j_mn = j_en R_m2 /
   (R_e2 cos α_n)); with that the thicknesses of sample 1 agree to 0.002 mm;
-* spiral angles at heel and toe follow the cutter circle of radius r_c0 in the pitch plane.
-  For the gear this is the standard's result; for a hypoid pinion the standard uses
-  another construction that could not be reconstructed (sample 2: β_e1 +1.7°, β_i1 −1.0°).
+* spiral angles at heel and toe follow the cutter circle of radius r_c0 in the pitch plane
+  (:func:`spiral_angle_at`), for the gear at its own face-width ends. For the pinion of a
+  hypoid pair the cutter formula is evaluated at the gear cone distance R_e21 (R_i21) of
+  the pinion's face-width end, reached along the pinion generatrix through P in the pitch
+  plane, and the pitch-plane offset angle there, arcsin(a_p/R_x21), is added
+  (:func:`pinion_spiral_angle_at`). This reproduces sample 2 (β_e1 57.546° vs 57.544°,
+  β_i1 44.884° vs 44.879°) and reduces to the bevel result for a = 0 (sample 1 exact).
 
 Signs: apex distances t_z, t_zF, t_zR are "beyond the crossing point": measured along the
 member's axis from the crossing point away from the member's back (positive when the apex
@@ -57,6 +61,7 @@ __all__ = [
     "blank_geometry",
     "gear_dimensions",
     "in_degrees",
+    "pinion_spiral_angle_at",
     "spiral_angle_at",
 ]
 
@@ -261,6 +266,74 @@ def spiral_angle_at(R: float, Rm: float, beta_m: float, rc0: float) -> float:
     return math.asin(arg)
 
 
+def pinion_spiral_angle_at(
+    b_x1: float, Rm2: float, beta_m2: float, zeta_mp: float, rc0: float
+) -> float:
+    """Pinion spiral angle at a point of the pinion face width (face milling, hypoid).
+
+    Parameters
+    ----------
+    b_x1 : float
+        Signed distance [mm] from the calculation point P along the pinion pitch generatrix:
+        b_e1 = R_e1 − R_m1 > 0 towards the heel, −b_i1 = R_i1 − R_m1 < 0 towards the toe.
+    Rm2 : float
+        Mean cone distance of the gear R_m2 [mm], > 0.
+    beta_m2 : float
+        Mean spiral angle of the gear β_m2 [rad].
+    zeta_mp : float
+        Offset angle in the pitch plane ζ_mp = β_m1 − β_m2 [rad], [0, π/2).
+    rc0 : float
+        Cutter radius r_c0 [mm], > 0.
+
+    Returns
+    -------
+    float
+        β_x1 [rad] = β_x21 + ζ_xp21, where (law of cosines in the pitch plane)
+
+        R_x21 = sqrt(R_m2² + b_x1² + 2 R_m2 b_x1 cos ζ_mp)
+
+        is the gear cone distance of the pinion point, β_x21 the gear spiral angle at R_x21
+        (:func:`spiral_angle_at` with R_m2, β_m2, r_c0), and ζ_xp21 = arcsin(a_p / R_x21),
+        a_p = R_m2 sin ζ_mp, the offset angle in the pitch plane at that point.
+
+    Raises
+    ------
+    InputError
+        If R_m2 is not positive, ζ_mp is outside [0, π/2), the point reaches the foot of the
+        perpendicular from the gear apex (R_x21 ≤ a_p), or the cutter circle does not reach
+        R_x21.
+
+    Notes
+    -----
+    Source: ISO 23509:2016 cl. 6 (face widths and spiral angles at the outer and inner end
+    of the pinion, face milling), as in ANSI/AGMA 2005-D03 and Gleason's hypoid dimension
+    sheets: the pinion spiral angle at its heel (toe) is the gear's spiral angle at the
+    corresponding point plus the offset angle in the pitch plane there. Reconstructed (the
+    standard's text was not at hand): in the pitch plane the pinion generatrix through P
+    passes the gear apex at the distance a_p; the pinion face-width end lies on it at
+    b_x1 from P, i.e. at gear cone distance R_x21, where the offset angle is
+    arcsin(a_p/R_x21) — at P (b_x1 = 0) this is ζ_mp and β_x1 = β_m2 + ζ_mp = β_m1. For
+    a = 0 (ζ_mp = 0) it is :func:`spiral_angle_at` at R_m1 + b_x1. Reproduces ISO 23509
+    Annex F sample 2 (β_e1 = 57.544°, β_i1 = 44.879°) to 0.005°; the naive cutter formula
+    at the pinion's own cone distances misses by 1.7° and 1.0°.
+    """
+    if not (math.isfinite(Rm2) and Rm2 > 0.0):
+        raise InputError(f"Rm2 = {Rm2!r} mm is out of range: accepted (0, inf) mm")
+    if not 0.0 <= zeta_mp < 0.5 * math.pi:
+        raise InputError(f"zeta_mp = {zeta_mp!r} rad is out of range: accepted [0, pi/2) rad")
+    a_p = Rm2 * math.sin(zeta_mp)
+    # along the pinion generatrix: distance from the foot of the perpendicular from the gear
+    # apex is R_m2 cos ζ_mp + b_x1, at distance a_p from the apex
+    s_x = Rm2 * math.cos(zeta_mp) + b_x1
+    if not s_x > 0.0:
+        raise InputError(
+            f"b_x1 = {b_x1:.4g} mm is out of range: accepted (−R_m2 cos ζ_mp, inf) = "
+            f"({-Rm2 * math.cos(zeta_mp):.4g}, inf) mm (toe beyond the offset foot point)"
+        )
+    R_x21 = math.hypot(s_x, a_p)
+    return spiral_angle_at(R_x21, Rm2, beta_m2, rc0) + math.asin(a_p / R_x21)
+
+
 def _offset_azimuth(
     a: float, sigma: float, delta_cone: float, r_q: float, z_q: float
 ) -> float:
@@ -333,7 +406,10 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
     * d_e = 2 R_e sin δ, d_i = 2 R_i sin δ, d_ae = d_e + 2 h_ae cos δ, d_fe = d_e − 2 h_fe cos δ,
       d_ai = d_i + 2 h_ai cos δ, d_fi = d_i − 2 h_fi cos δ.
     * t_xo = R_e cos δ − h_ae sin δ − t_z, t_xi = R_i cos δ − h_ai sin δ − t_z.
-    * β_e, β_i from :func:`spiral_angle_at` with r_c0.
+    * gear β_e2, β_i2 from :func:`spiral_angle_at` at R_e2, R_i2 with r_c0; pinion β_e1,
+      β_i1 from :func:`pinion_spiral_angle_at` at b_e1 = R_e1 − R_m1, −b_i1 = R_i1 − R_m1
+      (gear spiral angle at the pinion end's gear cone distance plus the offset angle in
+      the pitch plane there; for a = 0 the same as the gear formula).
     * s_mn1 = π m_mn/2 + (h_am1 − h_am2)(tan α_nD + tan α_nC)/2 + k_t m_mn − j_mn/2,
       s_mn2 = π m_mn − s_mn1 − j_mn, j_mn from :data:`BACKLASH_TO_MEAN_NORMAL`.
 
@@ -401,15 +477,23 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
             f"s_mn1 = {smn1:.4g} mm, s_mn2 = {smn2:.4g} mm; accepted: both > 0"
         )
 
+    # spiral angles at heel and toe: gear on its own cutter circle, pinion via the gear's
+    # angle at the corresponding point plus the pitch-plane offset angle there
+    rc0 = design.rc0
+    beta_e2 = spiral_angle_at(Re2, Rm2, p.beta_m2, rc0)
+    beta_i2 = spiral_angle_at(Ri2, Rm2, p.beta_m2, rc0)
+    beta_e1 = pinion_spiral_angle_at(Re1 - p.Rm1, Rm2, p.beta_m2, p.zeta_mp, rc0)
+    beta_i1 = pinion_spiral_angle_at(Ri1 - p.Rm1, Rm2, p.beta_m2, p.zeta_mp, rc0)
+
     pinion = _member(
         z=design.z1, delta=p.delta1, delta_a=da1, delta_f=df1, Re=Re1, Rm=p.Rm1, Ri=Ri1,
-        beta_m=p.beta_m1, rc0=design.rc0, ham=ham1, hfm=hfm1, t_z=p.t_z1, t_zF=t_zF1,
-        t_zR=t_zR1, smn=smn1,
+        beta_e=beta_e1, beta_m=p.beta_m1, beta_i=beta_i1, ham=ham1, hfm=hfm1, t_z=p.t_z1,
+        t_zF=t_zF1, t_zR=t_zR1, smn=smn1,
     )
     gear = _member(
         z=design.z2, delta=d2, delta_a=da2, delta_f=df2, Re=Re2, Rm=Rm2, Ri=Ri2,
-        beta_m=p.beta_m2, rc0=design.rc0, ham=ham2, hfm=hfm2, t_z=p.t_z2, t_zF=t_zF2,
-        t_zR=t_zR2, smn=smn2,
+        beta_e=beta_e2, beta_m=p.beta_m2, beta_i=beta_i2, ham=ham2, hfm=hfm2, t_z=p.t_z2,
+        t_zF=t_zF2, t_zR=t_zR2, smn=smn2,
     )
     return BlankGeometry(
         design=design, pitch=p, pinion=pinion, gear=gear, met2=design.de2 / design.z2,
@@ -420,8 +504,8 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
 
 def _member(
     *, z: int, delta: float, delta_a: float, delta_f: float, Re: float, Rm: float, Ri: float,
-    beta_m: float, rc0: float, ham: float, hfm: float, t_z: float, t_zF: float, t_zR: float,
-    smn: float,
+    beta_e: float, beta_m: float, beta_i: float, ham: float, hfm: float, t_z: float,
+    t_zF: float, t_zR: float, smn: float,
 ) -> MemberBlank:
     theta_a, theta_f = delta_a - delta, delta - delta_f
     hae = ham + (Re - Rm) * math.tan(theta_a)
@@ -439,8 +523,7 @@ def _member(
     return MemberBlank(
         z=z, delta=delta, delta_a=delta_a, delta_f=delta_f, theta_a=theta_a, theta_f=theta_f,
         Re=Re, Rm=Rm, Ri=Ri, b=Re - Ri,
-        beta_e=spiral_angle_at(Re, Rm, beta_m, rc0), beta_m=beta_m,
-        beta_i=spiral_angle_at(Ri, Rm, beta_m, rc0),
+        beta_e=beta_e, beta_m=beta_m, beta_i=beta_i,
         ham=ham, hfm=hfm, hae=hae, hfe=hfe, hai=hai, hfi=hfi,
         de=de, dm=2.0 * Rm * s_d, di=di, dae=de + 2.0 * hae * c_d, dfe=de - 2.0 * hfe * c_d,
         dai=di + 2.0 * hai * c_d, dfi=di - 2.0 * hfi * c_d,
