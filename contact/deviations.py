@@ -36,9 +36,13 @@ is the same quantity divided by the gear's moment arm.
 
 Public functions
 ----------------
-SurfaceDeviation        normal deviations of one flank on a (u, v) grid, interpolated (TPS)
-read_deviation_csv      read one from a CSV file
-apply_deviations        update an EaseOff for pinion and gear deviations (Eq. 4.3–4.10)
+SurfaceDeviation            normal deviations of one flank on a (u, v) grid, interpolated (TPS)
+weighted_average_deviation  the seed's baseline interpolation (inverse-distance, Shepard)
+read_deviation_csv          read one from a CSV file
+read_deviation_netcdf       read one member's grid from a netCDF file
+write_deviation_netcdf      write the pinion and/or gear grids to a netCDF file (atomic)
+read_deviations             either reader, chosen by the file suffix
+apply_deviations            update an EaseOff for pinion and gear deviations (Eq. 4.3–4.10)
 
 References
 ----------
@@ -54,6 +58,7 @@ import logging
 import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -68,10 +73,16 @@ if TYPE_CHECKING:
 
 __all__ = [
     "DEFAULT_MEASUREMENT_GRID",
+    "DEVIATION_UNITS",
     "MAX_DEVIATION",
+    "READERS",
     "SurfaceDeviation",
     "apply_deviations",
     "read_deviation_csv",
+    "read_deviation_netcdf",
+    "read_deviations",
+    "weighted_average_deviation",
+    "write_deviation_netcdf",
 ]
 
 log = logging.getLogger(__name__)
@@ -219,6 +230,67 @@ class SurfaceDeviation:
         """The theoretical surface (δ = 0 on the default measurement grid)."""
         return cls.from_function(lambda u, v: np.zeros_like(u))
 
+    def weighted_average(self, u, v, *, power: float = 2.0) -> np.ndarray:
+        """The seed's weighted-average interpolation; see :func:`weighted_average_deviation`."""
+        return weighted_average_deviation(self, u, v, power=power)
+
+
+def weighted_average_deviation(deviation: SurfaceDeviation, u, v, *,
+                               power: float = 2.0) -> np.ndarray:
+    """Inverse-distance weighted average of the measured deviations (Shepard's method).
+
+    The seed's baseline (§4.5.2: "a simple weighted average is used to interpolate (or
+    extrapolate) the deviations"); the seed gives no weights, so this is a reconstruction:
+    δ(u, v) = Σ wᵢ δᵢ / Σ wᵢ with wᵢ = 1 / dᵢ^power over all grid points, dᵢ the distance
+    in the (u, v) fraction plane (D. Shepard, "A two-dimensional interpolation function for
+    irregularly-spaced data", Proc. 23rd ACM National Conference, 1968, Eq. 1 with
+    μ = power). It passes through the data and is bounded by their range (a convex
+    combination), but has flat spots at the nodes (zero gradient for power > 1) and tends
+    to the data mean away from the grid, so it cannot extrapolate a trend to the flank
+    edges. :class:`SurfaceDeviation` itself interpolates with a thin-plate spline; this
+    function is kept for comparison (tests/test_deviations.py).
+
+    Parameters
+    ----------
+    deviation : SurfaceDeviation
+        The measured grid.
+    u, v : array_like, broadcastable — [1]
+        Projection-plane fractions (NaN allowed: NaN out).
+    power : float
+        Distance exponent μ > 0 (default 2).
+
+    Returns
+    -------
+    ndarray — [mm]
+        δ at (u, v), positive = material added, shape of the broadcast inputs.
+
+    Raises
+    ------
+    InputError
+        ``deviation`` not a SurfaceDeviation, or ``power`` not a finite number > 0.
+    """
+    if not isinstance(deviation, SurfaceDeviation):
+        raise InputError(f"deviation: must be a SurfaceDeviation, got "
+                         f"{type(deviation).__name__}")
+    if isinstance(power, bool) or not isinstance(power, (int, float)) or not (
+            np.isfinite(power) and power > 0):
+        raise InputError(f"power: must be a finite number > 0, got {power!r}")
+    uu, vv = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
+    gu, gv = np.meshgrid(deviation.u, deviation.v, indexing="ij")
+    gu, gv, gd = gu.ravel(), gv.ravel(), deviation.deviation.ravel()
+    out = np.full(uu.shape, np.nan)
+    ok = np.isfinite(uu) & np.isfinite(vv)
+    pu, pv = uu[ok], vv[ok]
+    dist = np.hypot(pu[:, None] - gu[None, :], pv[:, None] - gv[None, :])
+    hit = dist == 0.0
+    with np.errstate(divide="ignore"):
+        w = np.where(hit, 0.0, dist ** -float(power))
+    val = (w @ gd) / w.sum(axis=1)
+    on_node = hit.any(axis=1)
+    val[on_node] = gd[np.argmax(hit[on_node], axis=1)]
+    out[ok] = val
+    return out
+
 
 def read_deviation_csv(path: str | os.PathLike[str]) -> SurfaceDeviation:
     """Read a deviation grid from a CSV file.
@@ -273,6 +345,208 @@ def read_deviation_csv(path: str | os.PathLike[str]) -> SurfaceDeviation:
         v.append(num(r[0], f"row {i} column 1"))
         d.append([num(c, f"row {i} column {j + 2}") for j, c in enumerate(r[1:])])
     return SurfaceDeviation(np.array(u), np.array(v), np.array(d).T)
+
+
+#: accepted ``units`` of a netCDF deviation variable → factor to mm
+DEVIATION_UNITS: dict[str, float] = {"mm": 1.0, "um": 1e-3, "µm": 1e-3, "micrometer": 1e-3}
+
+_MEMBERS = ("pinion", "gear")
+
+
+def _check_member(member: str) -> str:
+    if member not in _MEMBERS:
+        raise InputError(f"member: must be one of {list(_MEMBERS)}, got {member!r}")
+    return member
+
+
+def read_deviation_netcdf(path: str | os.PathLike[str], member: str = "pinion",
+                          ) -> SurfaceDeviation:
+    """Read one member's deviation grid from a netCDF file.
+
+    Format (as written by :func:`write_deviation_netcdf`): a Dataset with a variable
+    ``pinion_deviation`` and/or ``gear_deviation`` over two dimensions, the lengthwise
+    fraction ``u`` (toe 0 → heel 1) and the profile fraction ``v`` (root 0 → tip 1), each
+    with a coordinate of fractions; member-specific dimension names ``u_pinion``,
+    ``v_pinion`` (``u_gear``, ``v_gear``) are accepted for grids that differ between the
+    members, and either dimension order. The variable's ``units`` attribute must be one of
+    :data:`DEVIATION_UNITS` (``"mm"`` or ``"um"``); values are converted to mm. Positive =
+    material added (outward normal), as :class:`SurfaceDeviation`.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+    member : {"pinion", "gear"}
+        Which variable to read.
+
+    Returns
+    -------
+    SurfaceDeviation
+        Deviations in [mm] on the file's (u, v) grid.
+
+    Raises
+    ------
+    InputError
+        Unknown member, missing or unreadable file (``path``), missing variable (naming
+        it and listing the file's variables), wrong dimensions, missing coordinates, missing
+        or unknown ``units``, or as :class:`SurfaceDeviation`.
+
+    Notes
+    -----
+    Source: the measurement grid of the seed §4.5.2 (CMM deviations on a 5 × 9 grid along
+    the surface normal); the file layout is the toolkit's (contact.io conventions).
+    """
+    from contact.io import NetCDFError, read_netcdf
+
+    _check_member(member)
+    try:
+        ds = read_netcdf(path, tree=False)
+    except NetCDFError as exc:
+        raise InputError(f"path: cannot read deviation netCDF {os.fspath(path)!r}: {exc}"
+                         ) from exc
+    name = f"{member}_deviation"
+    if name not in ds.data_vars:
+        raise InputError(f"{name}: no such variable in {os.fspath(path)!r}; it has "
+                         f"{sorted(map(str, ds.data_vars))}")
+    var = ds[name]
+    dims = tuple(map(str, var.dims))
+    for du, dv in (("u", "v"), (f"u_{member}", f"v_{member}")):
+        if set(dims) == {du, dv}:
+            break
+    else:
+        raise InputError(f"{name}: must have the dimensions (u, v) or (u_{member}, "
+                         f"v_{member}) of lengthwise and profile fractions, got {dims}")
+    for d in (du, dv):
+        if d not in ds.coords:
+            raise InputError(f"{name}: dimension {d!r} has no coordinate of fractions")
+    units = var.attrs.get("units")
+    if units not in DEVIATION_UNITS:
+        raise InputError(f"{name}: units attribute must be one of {list(DEVIATION_UNITS)}, "
+                         f"got {units!r}")
+    values = var.transpose(du, dv).values * DEVIATION_UNITS[units]
+    return SurfaceDeviation(ds[du].values, ds[dv].values, values)
+
+
+def write_deviation_netcdf(path: str | os.PathLike[str], *,
+                           pinion: SurfaceDeviation | None = None,
+                           gear: SurfaceDeviation | None = None,
+                           units: str = "mm", description: str = "") -> Path:
+    """Write pinion and/or gear deviation grids to a netCDF file, atomically.
+
+    The layout is the one :func:`read_deviation_netcdf` reads: variables
+    ``pinion_deviation`` / ``gear_deviation`` over dimensions (``u``, ``v``) with fraction
+    coordinates when both members share one grid, else over (``u_pinion``, ``v_pinion``)
+    and (``u_gear``, ``v_gear``). Written with :func:`contact.io.write_netcdf` (conventions
+    checked, version stamped, temporary file + rename).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Target file (its directory must exist).
+    pinion, gear : SurfaceDeviation, optional
+        At least one is required.
+    units : {"mm", "um"}
+        Unit the values are stored in (converted from the grids' [mm]).
+    description : str
+        Free text stored as the ``description`` attribute (e.g. the CMM report).
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    InputError
+        Neither grid given, a grid not a SurfaceDeviation, or unknown ``units``.
+    contact.io.NetCDFError
+        If the file cannot be written (an existing file is left untouched).
+
+    Notes
+    -----
+    Source: as :func:`read_deviation_netcdf` (seed §4.5.2 grid; toolkit file layout).
+    """
+    import xarray as xr
+
+    from contact.io import write_netcdf
+
+    grids = {"pinion": pinion, "gear": gear}
+    if all(g is None for g in grids.values()):
+        raise InputError("pinion, gear: at least one deviation grid is needed")
+    for name, g in grids.items():
+        if g is not None and not isinstance(g, SurfaceDeviation):
+            raise InputError(f"{name}: must be a SurfaceDeviation or None, got "
+                             f"{type(g).__name__}")
+    if units not in ("mm", "um"):
+        raise InputError(f"units: must be 'mm' or 'um', got {units!r}")
+    given = {k: g for k, g in grids.items() if g is not None}
+    first = next(iter(given.values()))
+    shared = all(g.u.shape == first.u.shape and g.v.shape == first.v.shape
+                 and np.array_equal(g.u, first.u) and np.array_equal(g.v, first.v)
+                 for g in given.values())
+    data, coords = {}, {}
+    for name, g in given.items():
+        du, dv = ("u", "v") if shared else (f"u_{name}", f"v_{name}")
+        coords[du] = (du, g.u, {"units": "1", "long_name": "lengthwise fraction of the "
+                                "projection plane, toe 0 to heel 1"})
+        coords[dv] = (dv, g.v, {"units": "1", "long_name": "profile fraction of the "
+                                "projection plane, root 0 to tip 1"})
+        data[f"{name}_deviation"] = ((du, dv), g.deviation / DEVIATION_UNITS[units], {
+            "units": units,
+            "long_name": f"{name} flank normal deviation, positive = material added "
+                         "(outward normal)"})
+    ds = xr.Dataset(data, coords=coords, attrs={
+        "title": "hypoid-ltca flank deviations (seed section 4.3)",
+        "description": description or "normal deviations on a measurement grid"})
+    return write_netcdf(ds, path)
+
+
+def _read_netcdf_member(path: str | os.PathLike[str], member: str) -> SurfaceDeviation:
+    return read_deviation_netcdf(path, member=member)
+
+
+def _read_csv_member(path: str | os.PathLike[str], member: str) -> SurfaceDeviation:
+    return read_deviation_csv(path)
+
+
+#: file suffix → reader(path, member) of :func:`read_deviations`
+READERS: dict[str, Callable[[str | os.PathLike[str], str], SurfaceDeviation]] = {
+    ".csv": _read_csv_member,
+    ".nc": _read_netcdf_member,
+    ".nc4": _read_netcdf_member,
+    ".netcdf": _read_netcdf_member,
+}
+
+
+def read_deviations(path: str | os.PathLike[str], member: str = "pinion") -> SurfaceDeviation:
+    """Read a deviation grid from a CSV or netCDF file, chosen by the suffix (:data:`READERS`).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        ``*.csv`` (:func:`read_deviation_csv`, one grid per file) or ``*.nc``/``*.nc4``/
+        ``*.netcdf`` (:func:`read_deviation_netcdf`).
+    member : {"pinion", "gear"}
+        The member whose variable a netCDF file is read for (a CSV holds one grid).
+
+    Returns
+    -------
+    SurfaceDeviation
+        [mm], positive = material added.
+
+    Raises
+    ------
+    InputError
+        Unknown suffix (listing the accepted ones), unknown member, or as the reader.
+
+    Notes
+    -----
+    Source: seed §4.3 and §4.5.2 (deviations along the normal on the measurement grid).
+    """
+    _check_member(member)
+    suffix = Path(path).suffix.lower()
+    if suffix not in READERS:
+        raise InputError(f"path: unknown deviation file type {suffix or '(none)'!r} of "
+                         f"{os.fspath(path)!r}; accepted suffixes: {', '.join(READERS)}")
+    return READERS[suffix](path, member)
 
 
 def _pinion_arm(eo: EaseOff, case: Case | None) -> np.ndarray:

@@ -49,17 +49,31 @@ log = logging.getLogger(__name__)
 DEFAULT_CASE = "kolivand2009_fm_11x41.toml"
 
 #: The seed's Table 3.1 operating points: pinion torques [N·m] and misalignment
-#: ΔE = 0.15 mm, ΔP = 0.12 mm, ΔG = 0, ΔΣ = 0 (signs as printed; see docs/machine.md
-#: for the toolkit's convention).
+#: |ΔE| = 0.15 mm, |ΔP| = 0.12 mm, ΔG = 0, ΔΣ = 0. The text extraction lost the signs of
+#: the seed's ΔE, ΔP (Table 3.1, Figs. 2.11, 3.6, 3.7). In the toolkit's convention
+#: (docs/machine.md) we read ΔE = −0.15, ΔP = +0.12: of the four sign choices it is the one
+#: for which the seed's two other cases of Table 3.1 / Fig. 3.7 move the pattern as
+#: described there — (−0.08, +0.05) towards toe and root, (−0.26, +0.13) towards the heel
+#: (tests/test_ltca_seed.py) — and for which its Fig. 2.11 shifts (ΔE 0.08 → toe, ΔE 0.15 →
+#: heel) need opposite signs of ΔE, as they do.
 SEED_TABLE_3_1 = {
     "torque": (50.0, 250.0, 500.0),
-    "misalignment": Misalignment(delta_E=0.15, delta_P=0.12),
+    "misalignment": Misalignment(delta_E=-0.15, delta_P=0.12),
 }
+
+
+def _cases_root():
+    """The bundled cases: package data ``contact.cases`` once installed; in a source tree
+    (no install, e.g. ``python -m pytest`` from a clone) the repository's ``cases/``."""
+    try:
+        return resources.files("contact.cases")
+    except ModuleNotFoundError:
+        return Path(__file__).resolve().parents[1] / "cases"
 
 
 def bundled_cases() -> list[str]:
     """File names of the cases shipped with the toolkit."""
-    root = resources.files("contact.cases")
+    root = _cases_root()
     return sorted(p.name for p in root.iterdir() if p.name.endswith(".toml"))
 
 
@@ -71,7 +85,7 @@ def bundled_case_path(name: str = DEFAULT_CASE) -> Path:
     InputError
         Unknown name (the message lists the bundled cases).
     """
-    root = resources.files("contact.cases")
+    root = _cases_root()
     fname = name if name.endswith(".toml") else f"{name}.toml"
     path = root / fname
     if not path.is_file():
@@ -91,6 +105,25 @@ def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
     return load_case(bundled_case_path(str(case)))
 
 
+def _resolve_deviations(c: Case, deviations) -> tuple | None:
+    """(pinion, gear) SurfaceDeviations for run_analysis, or None for the theoretical only."""
+    if deviations is None:
+        files = c.deviations
+        deviations = None if files is None else (files.pinion, files.gear)
+    if deviations is None or deviations is False:
+        return None
+    if not isinstance(deviations, (tuple, list)) or len(deviations) != 2:
+        raise InputError("deviations: must be a (pinion, gear) pair of SurfaceDeviation, "
+                         f"file path or None, or False; got {deviations!r}")
+    from contact.deviations import read_deviations
+
+    out = tuple(
+        read_deviations(d, member) if isinstance(d, (str, os.PathLike)) else d
+        for d, member in zip(deviations, ("pinion", "gear"), strict=True)
+    )
+    return None if all(d is None for d in out) else out
+
+
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
     torque=None,
@@ -106,7 +139,7 @@ def run_analysis(
     temperature: float = 90.0,
     roughness: float = 0.8,
     friction_model: str = "xu2007",
-    deviations: tuple | None = None,
+    deviations: tuple | bool | None = None,
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -127,11 +160,15 @@ def run_analysis(
         Include the four generated flanks as ``/geometry`` (default True).
     progress : bool
         Progress bar over the LTCA roll positions.
-    deviations : (SurfaceDeviation or None, SurfaceDeviation or None), optional
+    deviations : (pinion, gear), False or None
         Measured or wear deviations of the (pinion, gear) flanks in contact
-        (:mod:`contact.deviations`, seed ch. 4). The main groups then hold the deviated
-        surfaces' results and ``/theoretical/{easeoff,utca,ltca}`` the theoretical ones,
-        side by side; ``/easeoff`` gains ``ease_off_change`` [um].
+        (:mod:`contact.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a CSV/netCDF
+        file path (:func:`contact.deviations.read_deviations`) or None. The main groups
+        then hold the deviated surfaces' results and ``/theoretical/{easeoff,utca,ltca}``
+        the theoretical ones, side by side; ``/easeoff`` gains ``ease_off_change`` [um].
+        None (default) uses the case's ``[deviations]`` table if it has one
+        (``Case.deviations``); ``False`` or ``(None, None)`` ignores it (theoretical
+        surfaces only).
     pinion_speed : float, optional — [rpm]
         With a speed, the efficiency stage runs too (``/friction``,
         :func:`friction.efficiency.efficiency_analysis`) with ``lubricant``,
@@ -166,7 +203,8 @@ def run_analysis(
     t0 = time.perf_counter()
     eo = ease_off(c, flank=flank)
     times["easeoff"] = time.perf_counter() - t0
-    if deviations is not None and any(d is not None for d in deviations):
+    deviations = _resolve_deviations(c, deviations)
+    if deviations is not None:
         from contact.deviations import apply_deviations
 
         pin_dev, gear_dev = deviations
@@ -194,7 +232,8 @@ def run_analysis(
             + ("yes" if deviations[1] is not None else "no")
         )
     t0 = time.perf_counter()
-    ltca_ds = loaded_tca(c, torques, flank=flank, options=opts, easeoff=eo, progress=progress)
+    ltca_ds = loaded_tca(c, torques, flank=flank, options=opts, easeoff=eo, progress=progress,
+                         transitions=tuple(utca_ds["transition_roll"].values))
     times["ltca"] = time.perf_counter() - t0
     tree["/easeoff"] = eo_ds
     tree["/utca"] = utca_ds

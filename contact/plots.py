@@ -552,8 +552,15 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str]) -> list[
     if "ltca" in tree.children:
         out += plot_ltca(eo, tree["ltca"].to_dataset(), directory)
         if "theoretical" in tree.children:
+            th = tree["theoretical"]
             out += plot_deviations(
-                eo, tree["ltca"].to_dataset(), tree["theoretical/ltca"].to_dataset(), directory
+                eo,
+                tree["ltca"].to_dataset(),
+                th["ltca"].to_dataset(),
+                directory,
+                utca=tree["utca"].to_dataset() if "utca" in tree.children else None,
+                theoretical_easeoff=th["easeoff"].to_dataset(),
+                theoretical_utca=th["utca"].to_dataset(),
             )
         if "friction" in tree.children:
             out += plot_friction(
@@ -627,11 +634,41 @@ def plot_deviations(
     ltca: xr.Dataset,
     theoretical_ltca: xr.Dataset,
     directory: str | os.PathLike[str],
+    *,
+    utca: xr.Dataset | None = None,
+    theoretical_easeoff: xr.Dataset | None = None,
+    theoretical_utca: xr.Dataset | None = None,
 ) -> list[Path]:
-    """Ease-off change by surface deviations and LTE of deviated vs theoretical surfaces.
+    """Theoretical against deviated surfaces (seed Figs. 4.6–4.9 and 4.11–4.14).
 
-    As the seed's Figs. 4.6–4.9 and 4.11–4.14: the change of the ease-off topography over
-    the gear flank, and the loaded transmission error of both surfaces per torque.
+    Parameters
+    ----------
+    easeoff, ltca : xarray.Dataset
+        ``/easeoff`` (with ``ease_off_change`` [um]) and ``/ltca`` of the deviated surfaces.
+    theoretical_ltca : xarray.Dataset
+        ``/theoretical/ltca``.
+    directory : path-like
+        Created if missing.
+    utca, theoretical_easeoff, theoretical_utca : xarray.Dataset, optional
+        ``/utca``, ``/theoretical/easeoff`` and ``/theoretical/utca``; with them the
+        unloaded patterns, UTE curves and pressure of both surfaces are drawn too.
+
+    Returns
+    -------
+    list of pathlib.Path
+        ``deviations_easeoff_change.png`` (Figs. 4.6(c), 4.11(c): change of the ease-off
+        topography), ``deviations_transmission_error.png`` (Figs. 4.8(b), 4.13(b): LTE of
+        both surfaces per torque) and, with the optional groups,
+        ``deviations_easeoff_{theoretical,deviated}.png`` (Figs. 4.6, 4.11),
+        ``deviations_contact_pattern_{theoretical,deviated}.png`` (Figs. 4.7, 4.12),
+        ``deviations_unloaded_transmission_error.png`` (Figs. 4.8(a), 4.13(a)) and
+        ``deviations_pressure_{theoretical,deviated}.png`` at the largest torque (Figs.
+        4.9, 4.14).
+
+    Raises
+    ------
+    InputError
+        If a dataset lacks the variables drawn.
     """
     _require(easeoff, ["ease_off_change"], "easeoff")
     plt = _pyplot()
@@ -671,6 +708,36 @@ def plot_deviations(
     axes[-1, 0].set_xlabel("mesh cycles")
     fig.tight_layout()
     out.append(d / "deviations_transmission_error.png")
+    fig.savefig(out[-1], dpi=120)
+    plt.close(fig)
+    if utca is None or theoretical_easeoff is None or theoretical_utca is None:
+        return out
+    both = {"theoretical": (theoretical_easeoff, theoretical_utca, theoretical_ltca),
+            "deviated": (easeoff, utca, ltca)}
+    for name, (e, u, lt) in both.items():
+        out.append(plot_easeoff(e, d / f"deviations_easeoff_{name}.png"))
+        out.append(plot_contact_pattern(e, u, d / f"deviations_contact_pattern_{name}.png"))
+        out.append(plot_pressure(e, lt, d / f"deviations_pressure_{name}.png"))
+    _require(utca, ["unloaded_transmission_error"], "utca")
+    _require(theoretical_utca, ["unloaded_transmission_error"], "theoretical_utca")
+    fig, ax = plt.subplots(figsize=(6.5, 3.6))
+    for (name, (_, u, _)), style in zip(both.items(), ("o-", "s-"), strict=True):
+        period = float(u.attrs.get("mesh_period", 1.0))
+        roll = u["roll"].values
+        ax.plot(
+            (roll - roll[0]) / period,
+            u["unloaded_transmission_error"].values,
+            style,
+            ms=2.5,
+            label=f"{name}: p-p {float(u['peak_to_peak_transmission_error']):.1f} urad",
+        )
+    ax.set_xlabel("mesh cycles")
+    ax.set_ylabel("UTE [urad]")
+    ax.set_title("unloaded transmission error (lower envelope)", fontsize=9)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    out.append(d / "deviations_unloaded_transmission_error.png")
     fig.savefig(out[-1], dpi=120)
     plt.close(fig)
     return out

@@ -13,6 +13,7 @@ is generated as the mirror image of the right-hand one.
 Public functions
 ----------------
 Blank, FlankTool, Member, Pair, Case     frozen dataclasses
+DeviationFiles                            the optional ``[deviations]`` table (resolved paths)
 load_case                                 read and validate a TOML case file
 case_from_dict                            the same from an already parsed mapping
 Case.to_toml                              the case as TOML text (round-trips through load)
@@ -41,6 +42,7 @@ __all__ = [
     "METHODS",
     "Blank",
     "Case",
+    "DeviationFiles",
     "FlankTool",
     "Member",
     "Pair",
@@ -195,8 +197,47 @@ class Pair:
 
 
 @dataclass(frozen=True)
+class DeviationFiles:
+    """The ``[deviations]`` table: files of measured / wear flank deviations (seed §4.3).
+
+    Only the paths are kept (the geometry package does not read them: the files are read by
+    :func:`contact.deviations.read_deviations` when the analysis runs).
+
+    Parameters
+    ----------
+    pinion, gear : str or None
+        Absolute paths of the deviation files (CSV or netCDF) of the pinion and gear flanks
+        in contact, resolved against the case file's directory when the file gives a
+        relative path; None when the table omits the member.
+
+    Raises
+    ------
+    InputError
+        ``deviations.pinion`` / ``deviations.gear``: not a string, or no such file.
+    """
+
+    pinion: str | None = None
+    gear: str | None = None
+
+    def __post_init__(self) -> None:
+        for name in ("pinion", "gear"):
+            val = getattr(self, name)
+            if val is None:
+                continue
+            if not isinstance(val, str) or not val.strip():
+                raise InputError(f"{name}: must be a path string (CSV or netCDF deviation "
+                                 f"file), got {val!r}")
+            if not Path(val).is_file():
+                raise InputError(f"{name}: no such deviation file {val!r}")
+
+
+@dataclass(frozen=True)
 class Case:
-    """A whole case file. ``extra`` keeps other stages' tables (unvalidated here)."""
+    """A whole case file. ``extra`` keeps other stages' tables (unvalidated here).
+
+    ``deviations`` holds the optional ``[deviations]`` table (:class:`DeviationFiles`) or
+    None.
+    """
 
     name: str
     source: str
@@ -206,6 +247,7 @@ class Case:
     misalignment: Misalignment = field(default_factory=Misalignment)
     synthesised: tuple[str, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
+    deviations: DeviationFiles | None = None
 
     def member(self, name: str) -> Member:
         """The member called ``name`` (``"pinion"`` or ``"gear"``)."""
@@ -280,8 +322,13 @@ _MISALIGNMENT_FIELDS = {
     "delta_G": ("mm", False, 0.0),
     "delta_Sigma": ("deg", False, 0.0),
 }
+_DEVIATION_FIELDS = {
+    "pinion": ("str", False, None),
+    "gear": ("str", False, None),
+}
 _MEMBER_KEYS = {"process", "blank", "cutter", "machine"}
-_TOP_KEYS = {"name", "source", "synthesised", "pair", "pinion", "gear", "misalignment"}
+_TOP_KEYS = {"name", "source", "synthesised", "pair", "pinion", "gear", "misalignment",
+             "deviations"}
 
 
 def _table(parent: Mapping, key: str, path: str, required: bool = True) -> Mapping:
@@ -381,13 +428,30 @@ def _paths(obj: Any, prefix: str = "") -> set[str]:
     return out
 
 
-def case_from_dict(raw: Mapping[str, Any]) -> Case:
+def _deviation_files(raw: Mapping, base_dir: str | os.PathLike[str] | None,
+                     ) -> DeviationFiles | None:
+    if "deviations" not in raw:
+        return None
+    kw = _fields(_table(raw, "deviations", "deviations"), _DEVIATION_FIELDS, "deviations")
+    base = Path.cwd() if base_dir is None else Path(base_dir)
+    for key, val in kw.items():
+        if val is not None:
+            p = Path(val).expanduser()
+            kw[key] = str((p if p.is_absolute() else base / p).resolve())
+    return _build(DeviationFiles, kw, "deviations")
+
+
+def case_from_dict(raw: Mapping[str, Any], *,
+                   base_dir: str | os.PathLike[str] | None = None) -> Case:
     """Validate a parsed case mapping and build the :class:`Case`.
 
     Parameters
     ----------
     raw : mapping
         The parsed TOML document (degrees and mm, as in files).
+    base_dir : path-like, optional
+        Directory against which relative paths of the ``[deviations]`` table are resolved
+        (:func:`load_case` passes the case file's directory); default the current directory.
 
     Returns
     -------
@@ -397,7 +461,8 @@ def case_from_dict(raw: Mapping[str, Any]) -> Case:
     ------
     InputError
         For a missing, unknown, mistyped or out-of-range field (the message names it by its
-        dotted path, e.g. ``gear.blank.teeth``) or inconsistent fields.
+        dotted path, e.g. ``gear.blank.teeth``), inconsistent fields, or a ``[deviations]``
+        file that does not exist (``deviations.pinion``, ``deviations.gear``).
     ModelUnavailableError
         For ``pair.method = "FH"`` (face hobbing is reserved, not implemented yet).
     """
@@ -439,13 +504,15 @@ def case_from_dict(raw: Mapping[str, Any]) -> Case:
     gear = _member(_table(raw, "gear", "gear"), "gear", pr["gear_hand"])
     mis = _build(Misalignment, _fields(_table(raw, "misalignment", "misalignment", False),
                                        _MISALIGNMENT_FIELDS, "misalignment"), "misalignment")
+    devs = _deviation_files(raw, base_dir)
     extra = {k: v for k, v in raw.items() if k not in _TOP_KEYS}
     if extra:
         log.info("case %s: tables %s kept unvalidated for other stages", raw["name"],
                  sorted(extra))
     return Case(name=raw["name"], source=raw["source"], pair=pair, pinion=pinion, gear=gear,
                 misalignment=mis, synthesised=tuple(synth),
-                extra=MappingProxyType(json.loads(json.dumps(extra, default=str))))
+                extra=MappingProxyType(json.loads(json.dumps(extra, default=str))),
+                deviations=devs)
 
 
 def load_case(path: str | os.PathLike[str]) -> Case:
@@ -459,7 +526,8 @@ def load_case(path: str | os.PathLike[str]) -> Case:
     Returns
     -------
     Case
-        Angles converted to rad, lengths in mm.
+        Angles converted to rad, lengths in mm; the paths of a ``[deviations]`` table
+        resolved against the file's directory.
 
     Raises
     ------
@@ -475,7 +543,7 @@ def load_case(path: str | os.PathLike[str]) -> Case:
         raw = tomllib.loads(p.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"case file {str(p)!r}: invalid TOML: {exc}") from None
-    return case_from_dict(raw)
+    return case_from_dict(raw, base_dir=p.resolve().parent)
 
 
 # ---------------------------------------------------------------------------- writing
@@ -508,6 +576,9 @@ def _case_to_dict(case: Case) -> dict[str, Any]:
     doc["misalignment"] = _values(case.misalignment, _MISALIGNMENT_FIELDS)
     for k, v in case.extra.items():
         doc[k] = v
+    if case.deviations is not None:
+        doc["deviations"] = {k: getattr(case.deviations, k) for k in _DEVIATION_FIELDS
+                             if getattr(case.deviations, k) is not None}
     return doc
 
 

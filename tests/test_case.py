@@ -213,3 +213,32 @@ def test_plots_write_png(tmp_path):
         assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10_000
     with pytest.raises(InputError, match="directory"):
         plot_projection_grid(surfaces[0], case.pinion.blank, tmp_path / "no" / "x.png")
+
+
+def test_deviations_table_resolves_round_trips_and_names_errors(tmp_path):
+    """[deviations]: paths relative to the case file, absolute in Case.deviations, written
+    back by to_toml (round trip), either member optional, a missing file named."""
+    wear = load_case(CASES / "kolivand2009_fm_11x41_wear.toml")
+    assert wear.deviations.pinion == str((CASES / "deviations/wear_11x41_pinion.csv").resolve())
+    assert wear.deviations.gear == str((CASES / "deviations/wear_11x41_gear.csv").resolve())
+    # the example is the base case plus the table (make_examples.py): same pair otherwise
+    base = load_case(CASES / "kolivand2009_fm_11x41.toml")
+    assert base.deviations is None and wear.pinion == base.pinion and wear.gear == base.gear
+    again = case_from_dict(tomllib.loads(wear.to_toml()))
+    _assert_close(wear, again)
+    # a case file elsewhere: relative to that file, not to the working directory
+    (tmp_path / "dev").mkdir()
+    (tmp_path / "dev" / "g.csv").write_text("v\\u,0,0.5,1\n0,0,0,0\n0.5,0,0,0\n1,0,0,0\n")
+    text = S2.read_text(encoding="utf-8") + '\n[deviations]\ngear = "dev/g.csv"\n'
+    (tmp_path / "c.toml").write_text(text, encoding="utf-8")
+    c = load_case(tmp_path / "c.toml")
+    assert c.deviations.pinion is None
+    assert c.deviations.gear == str((tmp_path / "dev" / "g.csv").resolve())
+    _assert_close(c, case_from_dict(tomllib.loads(c.to_toml())))
+    with pytest.raises(InputError, match=r"^deviations\.pinion: no such deviation file"):
+        case_from_dict(_mutated(S2, "deviations", {"pinion": "nowhere.csv"}),
+                       base_dir=tmp_path)
+    with pytest.raises(InputError, match=r"^deviations\.gear: must be a string"):
+        case_from_dict(_mutated(S2, "deviations", {"gear": 3}))
+    with pytest.raises(InputError, match=r"^deviations\.wheel: unknown field"):
+        case_from_dict(_mutated(S2, "deviations", {"wheel": "x.csv"}))

@@ -88,3 +88,53 @@ def test_geometry_commands(tmp_path, capsys):
     assert main(["plot-geometry", case, "-o", str(tmp_path / "png"), "--nu", "9", "--nv", "5"]) == 0
     pngs = {p.name for p in (tmp_path / "png").glob("*.png")}
     assert "flanks_in_mesh.png" in pngs and "grid_gear_convex.png" in pngs
+
+
+def test_run_prints_the_deviation_te_table_of_the_file(tmp_path, capsys):
+    """`ltca run` of a case with a [deviations] table: the theoretical/deviated TE table
+    (seed Tables 4.2, 4.4) shows the values stored in the netCDF; --no-deviations ignores
+    the table."""
+    from pathlib import Path
+
+    from contact.commands.run import TE_TABLE_HEADERS
+
+    case = Path(__file__).resolve().parents[1] / "cases" / "kolivand2009_fm_11x41_wear.toml"
+    quick = ["--torque", "200", "--rolls-per-cycle", "6", "--segments", "10", "--speed", "0",
+             "--no-progress"]
+    out = tmp_path / "wear.nc"
+    assert main(["run", str(case), *quick, "-o", str(out), "--plots", str(tmp_path / "png")]) == 0
+    text = capsys.readouterr().out
+    rows = {}
+    for line in text.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == len(TE_TABLE_HEADERS) and cells[1] in ("theoretical", "deviated"):
+            rows[cells[1]] = [float(c) for c in (cells[0], *cells[2:])]
+    assert set(rows) == {"theoretical", "deviated"}
+    tree = read_netcdf(out)
+    for name, lt, ut in (("deviated", tree["ltca"], tree["utca"]),
+                         ("theoretical", tree["theoretical/ltca"], tree["theoretical/utca"])):
+        h = lt["lte_harmonics"].values[0]
+        stored = [float(lt["torque"][0]), float(lt["lte_mean"][0]),
+                  float(lt["lte_peak_to_peak"][0]), h[0], h[1], h[2],
+                  float(lt["lte_harmonic_rss"][0]),
+                  float(ut["peak_to_peak_transmission_error"])]
+        # printed with two decimals: equal to the stored values within half a unit of the
+        # last printed digit (0.005 urad); a harmonic the 12 rolls cannot resolve is NaN in
+        # both (assert_allclose: NaN equals NaN)
+        np.testing.assert_allclose(rows[name], stored, rtol=0, atol=0.005 + 1e-9)
+    # the deviations change the result (the table is not two copies of one run)
+    assert abs(rows["deviated"][2] - rows["theoretical"][2]) > 1.0  # LTE mean, urad
+    pngs = {p.name for p in (tmp_path / "png").glob("*.png")}
+    assert {"deviations_easeoff_change.png", "deviations_transmission_error.png",
+            "deviations_unloaded_transmission_error.png",
+            "deviations_contact_pattern_theoretical.png",
+            "deviations_contact_pattern_deviated.png",
+            "deviations_pressure_deviated.png"} <= pngs
+    plain = tmp_path / "plain.nc"
+    assert main(["run", str(case), *quick, "--no-deviations", "-o", str(plain)]) == 0
+    assert "theoretical" not in capsys.readouterr().out
+    back = read_netcdf(plain)
+    assert "theoretical" not in back.children
+    # without the deviations the main groups are the theoretical results of the first run
+    np.testing.assert_array_equal(back["ltca"]["transmission_error"].values,
+                                  tree["theoretical/ltca"]["transmission_error"].values)

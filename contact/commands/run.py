@@ -42,7 +42,8 @@ def register(sub) -> None:
         description="Geometry, ease-off UTCA and loaded TCA of a case at one or more torques; "
         "prints a summary, writes one netCDF (/geometry, /easeoff, /utca, /ltca) and plots. "
         "Without CASE: the bundled default case at the seed's Table 3.1 conditions "
-        "(pinion torque 50/250/500 N m, ΔE = 0.15 mm, ΔP = 0.12 mm).",
+        "(pinion torque 50/250/500 N m, ΔE = −0.15 mm, ΔP = +0.12 mm; the seed lost the signs, "
+        "see contact.pipeline.SEED_TABLE_3_1).",
     )
     p.add_argument(
         "case",
@@ -60,14 +61,20 @@ def register(sub) -> None:
     )
     _misalignment_args(p)
     p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
-    p.add_argument(
+    dev = p.add_mutually_exclusive_group()
+    dev.add_argument(
         "--deviations",
         nargs=2,
-        metavar=("PINION_CSV", "GEAR_CSV"),
+        metavar=("PINION", "GEAR"),
         default=None,
         help="measured/wear normal deviations of the pinion and gear flanks in "
-        "contact (CSV, see contact.deviations; '-' for none); the theoretical "
-        "results are kept under /theoretical",
+        "contact (CSV or netCDF, see contact.deviations; '-' for none); overrides the "
+        "case's [deviations] table; the theoretical results are kept under /theoretical",
+    )
+    dev.add_argument(
+        "--no-deviations",
+        action="store_true",
+        help="ignore the case's [deviations] table (theoretical surfaces only)",
     )
     p.add_argument(
         "--speed",
@@ -94,6 +101,62 @@ def register(sub) -> None:
     q.set_defaults(func=plot)
 
 
+#: columns of the theoretical/deviated TE table (seed Tables 4.2, 4.4), all [urad] but T_p
+TE_TABLE_HEADERS = (
+    "T_p [N m]",
+    "surfaces",
+    "LTE mean",
+    "LTE p-p",
+    "1st",
+    "2nd",
+    "3rd",
+    "RMS*",
+    "UTE p-p",
+)
+
+
+def deviation_te_rows(tree) -> list[tuple[str, ...]]:
+    """Rows of the TE table of an analysis with deviations (seed Tables 4.2, 4.4).
+
+    Parameters
+    ----------
+    tree : xarray.DataTree
+        Output of :func:`contact.pipeline.run_analysis` with deviations: ``/ltca``,
+        ``/utca`` (deviated) and ``/theoretical/{ltca,utca}``.
+
+    Returns
+    -------
+    list of tuple of str
+        Per torque, a ``theoretical`` then a ``deviated`` row: T_p [N·m], LTE mean,
+        peak-to-peak, amplitudes of the first three mesh harmonics, the seed's RMS
+        (root-sum-square of those amplitudes, ``lte_harmonic_rss``) and the UTE
+        peak-to-peak, all [µrad] with two decimals, as stored in the datasets (columns
+        :data:`TE_TABLE_HEADERS`).
+    """
+    rows = []
+    groups = {
+        "theoretical": (tree["theoretical/ltca"].to_dataset(), tree["theoretical/utca"]),
+        "deviated": (tree["ltca"].to_dataset(), tree["utca"]),
+    }
+    for i, T in enumerate(tree["ltca"]["torque"].values):
+        for name, (lt, ut) in groups.items():
+            h = lt["lte_harmonics"].values[i]
+            rows.append(
+                (
+                    f"{T:g}",
+                    name,
+                    f"{lt['lte_mean'].values[i]:.2f}",
+                    f"{lt['lte_peak_to_peak'].values[i]:.2f}",
+                    f"{h[0]:.2f}",
+                    f"{h[1]:.2f}",
+                    f"{h[2]:.2f}",
+                    f"{lt['lte_harmonic_rss'].values[i]:.2f}",
+                    f"{float(ut['peak_to_peak_transmission_error']):.2f}",
+                )
+            )
+    return rows
+
+
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
@@ -110,11 +173,16 @@ def run(args: argparse.Namespace) -> int:
         segments=args.segments,
         **({"solver": args.solver} if args.solver else {}),
     )
-    devs = None
-    if args.deviations:
-        from contact.deviations import read_deviation_csv
+    devs = None  # the case's [deviations] table, if any
+    if args.no_deviations:
+        devs = False
+    elif args.deviations:
+        from contact.deviations import read_deviations
 
-        devs = tuple(None if f == "-" else read_deviation_csv(f) for f in args.deviations)
+        devs = tuple(
+            None if f == "-" else read_deviations(f, member)
+            for f, member in zip(args.deviations, ("pinion", "gear"), strict=True)
+        )
     tree = run_analysis(
         case,
         args.torque,
@@ -179,14 +247,11 @@ def run(args: argparse.Namespace) -> int:
         )
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     if "theoretical" in tree.children:
-        th = tree["theoretical/ltca"].to_dataset()
         print(
-            "theoretical surfaces (no deviations): LTE mean "
-            + ", ".join(f"{v:.1f}" for v in th["lte_mean"].values)
-            + " urad, p-p "
-            + ", ".join(f"{v:.1f}" for v in th["lte_peak_to_peak"].values)
-            + " urad"
+            "transmission error of the theoretical and deviated surfaces "
+            f"({tree['easeoff'].attrs.get('deviations', '')}; seed Tables 4.2, 4.4) [urad]:"
         )
+        print(tabulate(deviation_te_rows(tree), headers=TE_TABLE_HEADERS, tablefmt="github"))
     times = {k[5:-2]: v for k, v in tree.attrs.items() if k.startswith("time_")}
     print("time [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in times.items()))
     path = write_netcdf(tree, Path(args.output), inputs=tree.attrs["inputs"])
