@@ -1,0 +1,128 @@
+"""The seed's 11×41 pair at its Table 3.1 conditions (seed §3.4, Figs. 3.6, 3.7, Table 3.1).
+
+The seed's machine settings are not published: the bundled case is our synthesis of its
+basic data (cases/basic/kolivand2009_fm_11x41.toml, docs/synthesis.md), so these tests
+compare magnitudes and trends, with the bounds the LTCA issue states, not curves. The
+misalignment signs of Table 3.1 were lost in the text extraction; the reading used here
+is :data:`contact.pipeline.SEED_TABLE_3_1` (ΔE = −0.15 mm, ΔP = +0.12 mm), argued there.
+
+Seed values, read from Fig. 3.6 (axis ranges 90–130, 270–310, 580–620 µrad) and Table 3.1:
+LTE mean ≈ 110 / 290 / 600 µrad and LTE peak-to-peak 12.8 / 15.9 / 21.9 µrad at a pinion
+torque of 50 / 250 / 500 N·m.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+
+from contact.ltca import loaded_tca
+from contact.pipeline import DEFAULT_CASE, SEED_TABLE_3_1
+from geometry.assembly import Misalignment
+from geometry.case import load_case
+
+ROOT = Path(__file__).resolve().parents[1]
+TORQUES = SEED_TABLE_3_1["torque"]
+SEED_LTE_MEAN = np.array([110.0, 290.0, 600.0])  # [urad], seed Fig. 3.6
+
+
+@cache
+def _case():
+    return load_case(ROOT / "cases" / DEFAULT_CASE)
+
+
+@cache
+def _run(mis: Misalignment = SEED_TABLE_3_1["misalignment"], torques=TORQUES):
+    # the options of `ltca run` (two mesh cycles, 20 rolls per cycle, 24 segments per curve)
+    return loaded_tca(_case(), list(torques), misalignment=mis)
+
+
+def _centre(ds):
+    """Pressure-weighted place of the loaded contact on the gear flank, per torque:
+    (u toe 0 → heel 1, v root 0 → tip 1)."""
+    p = ds["pressure_max"].fillna(0.0)
+    dims = ("roll", "pair", "segment")
+    u = ds["segment_u"].broadcast_like(p).fillna(0.0)
+    v = ds["segment_v"].broadcast_like(p).fillna(0.0)
+    w = p.sum(dims)
+    return (p * u).sum(dims).values / w.values, (p * v).sum(dims).values / w.values
+
+
+def test_every_roll_position_is_solved_and_certified():
+    ds = _run()
+    assert ds["found"].all()
+    # equilibrium re-checked from the stored forces: Σ F R = T_g to 1e-9 relative
+    ratio = _case().gear.blank.teeth / _case().pinion.blank.teeth
+    moment = (ds["force"].fillna(0.0) * ds["moment_arm"]).sum(("pair", "segment"))
+    t_gear = ds["torque"] * ratio * 1e3  # [N mm]
+    assert float(np.abs(moment / t_gear - 1.0).max()) < 1e-9
+
+
+def test_lte_mean_is_of_the_seed_magnitude_and_nearly_linear():
+    """Within a factor of two of the seed's Fig. 3.6 (measured 147 / 401 / 657 µrad: 1.3,
+    1.4, 1.1 × the seed; our tooth compliance is checked against FE and ISO 6336 in the
+    compliance tests, so the difference is the unpublished design). Monotonic, and nearly
+    linear: the slopes over 50–250 and 250–500 N·m agree within a factor 1.5 (measured
+    1.27 and 1.02 µrad/(N·m); the seed's own 0.9 and 1.24 differ by 1.38)."""
+    mean = _run()["lte_mean"].values
+    ratio = mean / SEED_LTE_MEAN
+    assert np.all((ratio > 0.5) & (ratio < 2.0)), mean
+    slopes = np.diff(mean) / np.diff(TORQUES)
+    assert np.all(slopes > 0)
+    assert 1 / 1.5 < slopes[1] / slopes[0] < 1.5
+
+
+def test_lte_peak_to_peak_is_in_the_seed_range():
+    """5–40 µrad (the issue's bound around the seed's 12.8–21.9; measured 31 / 23 / 23)."""
+    pp = _run()["lte_peak_to_peak"].values
+    assert np.all((pp > 5.0) & (pp < 40.0)), pp
+
+
+def test_peak_pressure_grows_with_torque_and_stays_below_2_5_gpa():
+    """Measured 0.76 / 1.50 / 2.30 GPa; the peak lies where the loaded line meets the gear
+    tip edge (small R_eq of the pinion near its root)."""
+    p = _run()["pressure_max"].max(("roll", "pair", "segment")).values
+    assert np.all(np.diff(p) > 0)
+    assert p[-1] < 2500.0
+
+
+def test_contact_spreads_and_edge_load_grows_with_torque():
+    """Seed Fig. 3.7a–c: the pattern spreads as torque rises, with edge loading at the tip
+    and root. Measured: flank area of the pressure envelope 298 → 463 → 551 cells of the
+    41 × 21 grid; load per length at loaded curve ends (the gear tip, the pinion tip
+    boundary) that rises into the end on 46 → 92 → 132 curves. Unlike the seed's Fig. 3.7a,
+    our long-bearing pair already touches an edge at 50 N·m (see the LTCA issue note)."""
+    ds = _run()
+    area = (ds["pressure_envelope"].fillna(0.0) > 0).sum(("u", "v")).values
+    assert np.all(np.diff(area) > 0)
+    w = ds["load_per_length"].fillna(0.0).values  # (torque, roll, pair, segment)
+    rising = ((w[..., 0] > w[..., 1]) & (w[..., 0] > 0)).sum(axis=(1, 2)) + (
+        (w[..., -1] > w[..., -2]) & (w[..., -1] > 0)).sum(axis=(1, 2))
+    assert np.all(np.diff(rising) > 0)
+    assert np.all(ds["edge_contact"].any(("roll", "pair")).values[1:])
+
+
+def test_table_3_1_misalignments_move_the_pattern_as_the_seed_describes():
+    """Seed p. 91, Fig. 3.7d–e at 50 N·m: (0.08, 0.05) mm moves the loaded pattern towards
+    toe and root compared with (0.15, 0.12); (0.26, 0.13) towards the heel. In the reading
+    of SEED_TABLE_3_1 (ΔE negative, ΔP positive). Measured centres (u, v): (a) 0.708,
+    0.661; (d) 0.612, 0.640; (e) 0.805. Thresholds: 5 % of the face width lengthwise, 1 %
+    of the depth in profile (the seed's move is mainly lengthwise)."""
+    ua, va = _centre(_run(torques=(50.0,)))
+    ud, vd = _centre(_run(Misalignment(delta_E=-0.08, delta_P=0.05), (50.0,)))
+    ue, _ = _centre(_run(Misalignment(delta_E=-0.26, delta_P=0.13), (50.0,)))
+    assert ud[0] < ua[0] - 0.05 and vd[0] < va[0] - 0.01
+    assert ue[0] > ua[0] + 0.05
+
+
+def test_aligned_pair_is_centred_and_of_the_seed_magnitude():
+    """Aligned, the synthesised pair carries its load about the flank's middle (pressure
+    centre within 10 % of the face width of u = 0.5; measured 0.50–0.55) with LTE means
+    127 / 372 / 602 µrad (within a factor 2 of the seed's misaligned values)."""
+    ds = _run(Misalignment())
+    u, _ = _centre(ds)
+    assert np.all(np.abs(u - 0.5) < 0.1), u
+    ratio = ds["lte_mean"].values / SEED_LTE_MEAN
+    assert np.all((ratio > 0.5) & (ratio < 2.0))
