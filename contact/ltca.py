@@ -46,7 +46,8 @@ from contact.io import data_var as _var
 from contact.problem import ContactProblem
 from contact.solvers import DEFAULT_SOLVER, get_backend, solve_contact
 from contact.transmission_error import transmission_error_summary
-from contact.utca import contact_curves, transitions
+from contact.utca import contact_curves
+from contact.utca import transitions as _transitions
 from geometry._version import __version__
 from geometry.assembly import Misalignment
 from geometry.curvature import normal_curvature
@@ -170,14 +171,38 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     ``length`` [mm], ``moment_arm`` [mm], ``lag`` [rad] (ε + gap of the segment),
     ``u``, ``v`` [1] gear projection-plane fractions, ``r_eq`` [mm]; (J, K): ``ute`` [rad];
     (J,): ``pinion_rotation``, ``gear_rotation`` [rad] (of the cycle's reference pair, to
-    which each pair's points are consistent: pairs sit whole pitches apart).
+    which each pair's points are consistent: pairs sit whole pitches apart), ``source``
+    [1] the first roll with the same curves (rolls whole mesh cycles apart: their targets
+    agree to 1e-12 pitch; they are computed once and their entries are identical).
     """
     roll = np.asarray(roll, float)
     pairs = np.asarray(pairs, int)
     cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
     target = roll[:, None] - (cycle[:, None] + pairs[None, :]) * eo.pitch
+    rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
+    # rolls whole mesh cycles apart have the same curves (their targets differ by
+    # round-off): they are computed once, from the first such roll ("source")
+    source = _same_rolls(target, eo.pitch)
+    first = np.flatnonzero(source == np.arange(roll.size))
+    geo = _segment_geometry(case, eo, target[first], rp[first], segments)
+    back = np.searchsorted(first, source)
+    out = {k: (val[back] if isinstance(val, np.ndarray) else val) for k, val in geo.items()}
+    out["shape"] = (roll.size, pairs.size, segments)
+    out["source"] = source
+    return out
+
+
+def _same_rolls(target: np.ndarray, pitch: float) -> np.ndarray:
+    """(J,) index of the first roll whose targets (J, K) agree to 1e-12 pitch [rad]."""
+    key = np.round(target / (1e-12 * pitch))
+    _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    return first[np.ravel(inverse)]
+
+
+def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, segments: int):
+    """:func:`segment_geometry` of roll targets (J, K) [rad] with pinion rotations rp (J,)."""
     cc = contact_curves(eo, target, n_point=segments + 1)
-    J, K, S = roll.size, pairs.size, segments
+    (J, K), S = target.shape, segments
 
     def mid(a):
         return 0.5 * (a[..., 1:] + a[..., :-1])
@@ -252,7 +277,6 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
         flat = np.full((J * K, S), np.nan)
         flat[rows] = np.where(np.isfinite(krel), 1.0 / np.maximum(krel, 1e-4), np.nan)
         r_eq = flat.reshape(J, K, S)
-    rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
     return {
         "u": u, "v": v, "midpoint": pos_g, "midpoint_pair": mid_pair, "ends_pair": ends_pair,
         "normal_pair": n_pair, "tangent_pair": t_pair, "length": length, "moment_arm": arm,
@@ -288,6 +312,7 @@ def loaded_tca(
     easeoff: EaseOff | None = None,
     progress: bool = False,
     problem_sink: Callable[[ContactProblem], None] | None = None,
+    transitions: tuple[float, float] | None = None,
 ) -> xr.Dataset:
     """Loaded TCA of a case at one or more torques over whole mesh cycles (seed §3.3–3.4).
 
@@ -310,6 +335,11 @@ def loaded_tca(
     problem_sink : callable, optional
         Called with the final :class:`contact.ContactProblem` of every (torque, roll)
         (after the Weber iteration), e.g. to collect real problems for a solver study.
+    transitions : (float, float), optional — [rad]
+        The transition rolls (M1, M2) of the same ease-off, as
+        :func:`contact.utca.transitions` gives them with its defaults (e.g. the
+        ``transition_roll`` of :func:`contact.utca.unloaded_tca`, which the pipeline has
+        already computed); default: computed here. The roll positions start at M1.
 
     Returns
     -------
@@ -337,7 +367,14 @@ def loaded_tca(
     t0 = time.perf_counter()
     eo = easeoff if easeoff is not None else ease_off(case, flank=flank)
     t_easeoff = time.perf_counter() - t0
-    m1, m2 = transitions(eo)
+    if transitions is None:
+        m1, m2 = _transitions(eo)
+    else:
+        try:
+            m1, m2 = (float(m) for m in transitions)
+        except (TypeError, ValueError) as exc:
+            raise InputError("transitions: must be (M1, M2) [rad] (NaN where none), got "
+                             f"{transitions!r}") from exc
     start = m1 if math.isfinite(m1) else 0.0
     n_roll = opts.cycles * opts.rolls_per_cycle
     roll = start + np.arange(n_roll) * eo.pitch / opts.rolls_per_cycle
@@ -377,7 +414,24 @@ def loaded_tca(
     def limit_of(T: float) -> float:
         return opts.separation_limit or (0.05 + 0.15 * T * eo.ratio / 1000.0)
 
+    problems: dict[tuple[int, int], ContactProblem] = {}
     for j in range(J):
+        src = int(seg["source"][j])
+        if src != j:
+            # a roll whole mesh cycles after ``src``: its segments, separations and hence
+            # its contact problems are identical (segment_geometry), so are the results
+            for it in range(NT):
+                for arr in (*out.values(), contact, in_problem):
+                    arr[it, j] = arr[it, src]
+                for arr in (*resid.values(), rotation, found, status, weber_iters):
+                    arr[it, j] = arr[it, src]
+                if problem_sink is not None and (it, src) in problems:
+                    problem_sink(dataclasses.replace(
+                        problems[it, src], name=f"{case.name} roll {j} T {torques[it]:g}"))
+            n_seg[j] = n_seg[src]
+            if bar is not None:
+                bar.update()
+            continue
         ok = np.isfinite(sep_all[j]) & np.isfinite(seg["r_eq"][j]) & (seg["length"][j] > 0)
         # compliance once per roll for the widest selection (the largest torque's limit):
         # a smaller selection's structural compliance is its sub-matrix
@@ -447,6 +501,7 @@ def loaded_tca(
             assert sol is not None
             if problem_sink is not None:
                 problem_sink(problem)
+                problems[it, j] = problem
             found[it, j] = int(sol.found)
             status[it, j] = sol.status
             for r in _RESIDUALS:

@@ -44,7 +44,7 @@ from contact.compliance.tooth import (
     ShellPoints,
     ToothModelData,
     _shell_matrices,
-    _shell_points,
+    _shell_points_many,
     member_foundation,
     shell_tooth_from_case,
     weber_depth,
@@ -282,6 +282,26 @@ def _take(sp: ShellPoints, idx: np.ndarray) -> ShellPoints:
     return ShellPoints(*(None if a is None else a[idx] for a in sp))
 
 
+def _distinct_ends(ends: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Segment ends (N, 2, 3) [mm] without the repeats of consecutive segments.
+
+    Returns the distinct points (D, 3) and the index (2N,) of each of the first N then
+    second N ends among them: where segment k ends exactly (bit for bit) where segment
+    k + 1 starts, as along one contact curve, that point is listed once (D ≈ N + curves
+    instead of 2N).
+    """
+    n = ends.shape[0]
+    starts = ends[:, 0]
+    shared = np.zeros(n, dtype=bool)
+    shared[:-1] = np.all(ends[:-1, 1] == ends[1:, 0], axis=1)
+    own = np.flatnonzero(~shared)
+    second = np.empty(n, dtype=int)
+    second[:-1] = np.arange(1, n)
+    second[own] = n + np.arange(own.size)
+    return (np.concatenate([starts, ends[own, 1]]),
+            np.concatenate([np.arange(n), second]))
+
+
 def mesh_compliance(
     case: Case,
     contact_segments: ContactSegments,
@@ -351,16 +371,21 @@ def mesh_compliance(
         raise InputError(f"give either model or model options, not both: {sorted(model_options)}")
     n = seg.size
     t_p, t_g = case_transforms(case, seg.pinion_rotation, seg.gear_rotation)
-    ends_flat = np.concatenate([seg.ends[:, 0], seg.ends[:, 1]])
+    ends_flat, end_index = _distinct_ends(seg.ends)
     points = {}
     ends = {}
-    for name, transform, sign in (("pinion", t_p, 1.0), ("gear", t_g, -1.0)):
-        # midpoints may overhang slightly too: the LTCA takes them on the gear side, and
-        # the pinion mate differs by the ease-off (≤ tens of µm) along the normal; they
-        # are clipped onto the tooth like segment ends. Midpoints and ends in one batch.
-        points[name], ends[name] = _shell_points(model.member(name), seg.midpoints,
-                                                 sign * seg.normals, transform, END_TOLERANCE,
-                                                 extra=ends_flat)
+    # midpoints may overhang slightly too: the LTCA takes them on the gear side, and the
+    # pinion mate differs by the ease-off (≤ tens of µm) along the normal; they are
+    # clipped onto the tooth like segment ends. Midpoints and ends of both members in one
+    # batch (_shell_points_many); an end shared by consecutive segments is mapped once.
+    names = ("pinion", "gear")
+    mapped = _shell_points_many(
+        [(model.member(name), seg.midpoints, sign * seg.normals, transform, ends_flat)
+         for name, transform, sign in zip(names, (t_p, t_g), (1.0, -1.0), strict=True)],
+        END_TOLERANCE)
+    for name, (mids, distinct) in zip(names, mapped, strict=True):
+        points[name] = mids
+        ends[name] = _take(distinct, end_index)
     parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",
                                            "gear_foundation")}
     blocks = {int(pair): np.flatnonzero(seg.pair_index == pair)

@@ -34,6 +34,7 @@ THEORIES            registry of kinematic theories (seed Mindlin, Mindlin, highe
 
 from __future__ import annotations
 
+import functools
 import logging
 import math
 import time
@@ -420,6 +421,13 @@ class ShellModel:
         """Ritz unknowns ``K⁻¹ F`` for load vectors ``loads`` (n_dof, P) [per N]."""
         sc = self._scale[:, None]
         return sc * linalg.cho_solve(self._factor, sc * loads, check_finite=False)
+
+    def half_solve(self, loads: np.ndarray) -> np.ndarray:
+        """``Y = U⁻ᵀ S F`` for load vectors ``loads`` (n_dof, P), with S K S = UᵀU the
+        Jacobi-scaled Cholesky factorisation: ``Fᵀ K⁻¹ F = Yᵀ Y`` [(N·mm)^(−1/2) per N]
+        with one triangular solve instead of the two of :meth:`solve`."""
+        return linalg.solve_triangular(self._factor[0], self._scale[:, None] * loads,
+                                       trans="T", lower=False, check_finite=False)
 
 
 def _legendre_rows(t: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
@@ -903,9 +911,14 @@ class ComplianceMatrix:
     centres: np.ndarray
 
 
+@functools.lru_cache(maxsize=32)
 def _segment_gauss(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss–Legendre points and weights on [0, 1] (memoised; read-only arrays)."""
     t, w = np.polynomial.legendre.leggauss(n)
-    return 0.5 * (t + 1.0), 0.5 * w
+    s, w = 0.5 * (t + 1.0), 0.5 * w
+    s.flags.writeable = False
+    w.flags.writeable = False
+    return s, w
 
 
 def compliance_matrix(
@@ -1024,11 +1037,14 @@ def _compliance_blocks(
         )
     d, zs = _flank_loads(tooth, gp[:, 0], gp[:, 1], nrm)
     phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs)  # (n_dof, N·G)
-    phi = (phi.reshape(phi.shape[0], n_pts, ng) * w[None, None, :]).sum(axis=2)
-    sol = model.solve(phi)
+    phi = phi.reshape(phi.shape[0], n_pts, ng) @ w
+    # C = Φᵀ K⁻¹ Φ = Yᵀ Y with Y = U⁻ᵀ S Φ (K's scaled Cholesky factor): one triangular
+    # solve for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
+    y = model.half_solve(phi)
     out = []
     for idx in [slice(None)] if blocks is None else blocks:
-        cmat = phi[:, idx].T @ sol[:, idx]
+        yb = y[:, idx]
+        cmat = yb.T @ yb
         norm = float(np.linalg.norm(cmat))
         asym = float(np.linalg.norm(cmat - cmat.T) / norm) if norm > 0.0 else 0.0
         if asym > 1e-8:

@@ -1,0 +1,204 @@
+"""Fast paths of the compliance assembly against the formulations they replaced.
+
+The per-roll LTCA loop uses faster but equivalent internals of
+:mod:`contact.compliance.tooth` and :mod:`contact.compliance.shell`:
+
+* the orthogonal-trajectory RK4 with the v-dependent parts evaluated once
+  (:func:`_trajectory`) against the plain RK4 (:func:`_trajectory_reference`);
+* the Newton projection onto the mid-surface (:func:`_project_to_mid`) against the
+  Gauss–Newton projection (:func:`_project_to_mid_reference`) and against feet known by
+  construction;
+* C = Yᵀ Y with Y = U⁻ᵀ S Φ (one triangular solve) against Φᵀ (K⁻¹ Φ) (``cho_solve``).
+"""
+
+from __future__ import annotations
+
+import functools
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from contact.compliance.shell import ShellTooth, _compliance_blocks, build_shell_model
+from contact.compliance.tooth import (
+    _frames,
+    _invert_bilinear,
+    _project_to_mid,
+    _project_to_mid_reference,
+    _trajectory,
+    _trajectory_reference,
+    shell_tooth_from_case,
+)
+from geometry.case import load_case
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@functools.cache
+def _tooth(member: str):
+    return shell_tooth_from_case(load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml"), member)
+
+
+@pytest.mark.parametrize("member", ["pinion", "gear"])
+def test_trajectory_fast_equals_reference(member):
+    data = _tooth(member)
+    rng = np.random.default_rng(3)
+    u = rng.uniform(-0.05, 1.05, 200)
+    v = rng.uniform(-0.05, 1.05, 200)
+    # same RK4 scheme, only the evaluation order differs: agreement to round-off; 1e-13
+    # in u is ~100 ulp of the [0, 1] fractions
+    for args in ((u, v, 0.5), (u, 0.5, v)):
+        np.testing.assert_allclose(_trajectory(data.surface, *args),
+                                   _trajectory_reference(data.surface, *args), rtol=0, atol=1e-13)
+
+
+@pytest.mark.parametrize("member", ["pinion", "gear"])
+def test_newton_projection_finds_known_feet(member):
+    data = _tooth(member)
+    rng = np.random.default_rng(4)
+    u = rng.uniform(0.0, 1.0, 150)
+    v = rng.uniform(0.0, 1.0, 150)
+    m, frame = _frames(data.surface, u, v)
+    # points up to a half tooth thickness off the mid-surface along its normal: their foot
+    # is (u, v) by construction (the normal is orthogonal to M_u and M_v)
+    half = 0.5 * data.tooth.thickness(v * data.tooth.height(0.3), 0.3)
+    pts = m + (rng.uniform(-1.0, 1.0, u.size) * half)[:, None] * frame[:, 2, :]
+    u0, v0 = _invert_bilinear(data.corners, pts[:, 2], np.hypot(pts[:, 0], pts[:, 1]))
+    un, vn = _project_to_mid(data.surface, pts, u0, v0)
+    ur, vr = _project_to_mid_reference(data.surface, pts, u0, v0)
+    # both iterate until |du| + |dv| < 1e-14; 1e-13 leaves room for the round-off of M
+    np.testing.assert_allclose(un, u, rtol=0, atol=1e-13)
+    np.testing.assert_allclose(vn, v, rtol=0, atol=1e-13)
+    np.testing.assert_allclose(un, ur, rtol=0, atol=1e-13)
+    np.testing.assert_allclose(vn, vr, rtol=0, atol=1e-13)
+
+
+def test_half_solve_compliance_equals_cho_solve():
+    tooth = ShellTooth.from_face_width(thickness_toe_root=8.0, thickness_heel_root=10.0,
+                                       thickness_tip=3.0, height_toe=9.0, height_heel=11.0,
+                                       face_width=40.0, radius=80.0, youngs_modulus=206000.0,
+                                       poisson_ratio=0.3)
+    model = build_shell_model(tooth, 5, 9)
+    rng = np.random.default_rng(5)
+    n = 12
+    theta = rng.uniform(0.05, 0.9, n) * tooth.subtended_angle
+    x = rng.uniform(0.1, 0.9, n) * tooth.height(theta)
+    ends = np.stack([np.column_stack([x, theta]),
+                     np.column_stack([x, theta + 0.04 * tooth.subtended_angle])], axis=1)
+    normal = np.tile([0.1, 0.05, 1.0], (n, 1))
+    normal /= np.linalg.norm(normal, axis=1, keepdims=True)
+    blocks = [np.arange(5), np.arange(5, n)]
+    got = _compliance_blocks(model, ends, normal, blocks)
+    # reference: C = Φᵀ K⁻¹ Φ with the two-sided Cholesky solve, Φ the segment-averaged
+    # load vectors (4 Gauss points, as _compliance_blocks)
+    s, w = np.polynomial.legendre.leggauss(4)
+    s, w = 0.5 * (s + 1.0), 0.5 * w
+    gp = (ends[:, None, 0] + s[None, :, None] * (ends[:, None, 1] - ends[:, None, 0]))
+    gp = gp.reshape(-1, 2)
+    zs = 0.5 * tooth.thickness(gp[:, 0], gp[:, 1])
+    phi = model.load_vectors(gp[:, 0], gp[:, 1], -np.repeat(normal, 4, axis=0), zs)
+    phi = (phi.reshape(-1, n, 4) * w).sum(axis=2)
+    full = phi.T @ model.solve(phi)
+    for idx, cm in zip(blocks, got, strict=True):
+        ref = full[np.ix_(idx, idx)]
+        # same matrix in exact arithmetic; 1e-12 relative covers the round-off of the
+        # factorisation (condition of the Jacobi-scaled stiffness ~1e6)
+        np.testing.assert_allclose(cm.matrix, 0.5 * (ref + ref.T), rtol=1e-12,
+                                   atol=1e-12 * np.abs(ref).max())
+
+
+def test_segment_geometry_cycle_reuse_equals_direct():
+    """Rolls whole mesh cycles apart are computed once: equal to computing every roll."""
+    from contact.easeoff import ease_off
+    from contact.ltca import _segment_geometry, segment_geometry
+
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+    eo = ease_off(case)
+    roll = 0.1 + np.arange(8) * eo.pitch / 4  # two mesh cycles of 4 rolls
+    pairs = np.array([-1, 0, 1])
+    seg = segment_geometry(case, eo, roll, pairs, 6)
+    np.testing.assert_array_equal(seg["source"], [0, 1, 2, 3, 0, 1, 2, 3])
+    cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
+    target = roll[:, None] - (cycle[:, None] + pairs[None, :]) * eo.pitch
+    rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
+    direct = _segment_geometry(case, eo, target, rp, 6)
+    for key in ("midpoint_pair", "ends_pair", "normal_pair", "length", "moment_arm", "lag",
+                "r_eq", "ute", "pinion_rotation"):
+        # the second cycle's targets differ from the first's by round-off (~1e-16 rad);
+        # the iterative curve and curvature solvers reach the same points to ~1e-12
+        np.testing.assert_allclose(seg[key], direct[key], rtol=1e-9, atol=1e-12,
+                                   equal_nan=True, err_msg=key)
+
+
+def _flank_points(data, rng, n):
+    """Points on both flanks of a member's reference tooth (member frame) with outward
+    normals: mid-surface feet pushed ±(half thickness) along the shell normal e_z."""
+    u = rng.uniform(0.15, 0.85, n)  # away from the blank's edges: the offset points'
+    v = rng.uniform(0.15, 0.85, n)  # projection-plane places stay on the blank
+    m, frame = _frames(data.surface, u, v)
+    side = np.where(rng.uniform(size=n) < 0.5, -1.0, 1.0)
+    half = 0.5 * data.tooth.thickness(v * data.tooth.height(0.3), 0.3)
+    return m + (side * half)[:, None] * frame[:, 2, :], side[:, None] * frame[:, 2, :]
+
+
+def test_shell_points_of_both_members_in_one_batch_equal_separate():
+    """Both members' points mapped in one batch (_shell_points_many, the LTCA's path)
+    equal each member mapped on its own (_shell_points, one tooth per batch)."""
+    from contact.compliance.tooth import _shell_points, _shell_points_many
+
+    rng = np.random.default_rng(6)
+    jobs = []
+    for member in ("pinion", "gear"):
+        data = _tooth(member)
+        pts, nrm = _flank_points(data, rng, 40)
+        extra, _ = _flank_points(data, rng, 30)
+        jobs.append((data, pts, nrm, None, extra))
+    both = _shell_points_many(jobs, 1e-6)
+    for job, got in zip(jobs, both, strict=True):
+        alone = _shell_points(job[0], *job[1:4], 1e-6, extra=job[4])
+        for sp_got, sp_ref in zip(got, alone, strict=True):
+            for name in ("x", "theta", "u", "v", "side", "offset", "frame", "normal"):
+                a, b = getattr(sp_got, name), getattr(sp_ref, name)
+                if b is None:
+                    assert a is None
+                    continue
+                # same arithmetic per point; the batch may take one more Newton step
+                # (it iterates until its slowest point converged, |Δu| + |Δv| < 1e-14):
+                # 1e-12 in mm, rad or [1] is a few hundred ulp of these magnitudes
+                np.testing.assert_allclose(a, b, rtol=0, atol=1e-12, err_msg=name)
+
+
+def test_distinct_ends_rebuild_the_segment_ends():
+    from contact.compliance.mesh import _distinct_ends
+
+    rng = np.random.default_rng(7)
+    # two curves of 5 and 3 chained segments, then one lone segment
+    curves = [rng.normal(size=(6, 3)), rng.normal(size=(4, 3)), rng.normal(size=(2, 3))]
+    ends = np.concatenate([np.stack([c[:-1], c[1:]], axis=1) for c in curves])
+    points, index = _distinct_ends(ends)
+    # identity: every end is found again bit for bit, each shared end listed once
+    np.testing.assert_array_equal(points[index].reshape(2, -1, 3).transpose(1, 0, 2), ends)
+    assert points.shape[0] == ends.shape[0] + len(curves)
+
+
+def test_loaded_tca_given_transitions_equals_computed():
+    """The pipeline hands the UTCA's M1, M2 to loaded_tca: same analysis as computing them."""
+    from contact.easeoff import ease_off
+    from contact.ltca import LTCAOptions, loaded_tca
+    from contact.utca import unloaded_tca
+    from geometry.errors import InputError
+
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+    eo = ease_off(case)
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=8)
+    _, ut = unloaded_tca(case, easeoff=eo)
+    given = loaded_tca(case, 200.0, options=opts, easeoff=eo,
+                       transitions=tuple(ut["transition_roll"].values))
+    computed = loaded_tca(case, 200.0, options=opts, easeoff=eo)
+    # the same transitions function with the same defaults: identical rolls and results
+    np.testing.assert_array_equal(given["roll"].values, computed["roll"].values)
+    np.testing.assert_array_equal(given["transmission_error"].values,
+                                  computed["transmission_error"].values)
+    np.testing.assert_array_equal(given["force"].values, computed["force"].values)
+    with pytest.raises(InputError, match="transitions"):
+        loaded_tca(case, 200.0, options=opts, easeoff=eo, transitions="M1")
