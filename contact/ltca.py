@@ -420,11 +420,10 @@ def loaded_tca(
         if src != j:
             # a roll whole mesh cycles after ``src``: its segments, separations and hence
             # its contact problems are identical (segment_geometry), so are the results
+            for arr in (*out.values(), contact, in_problem, *resid.values(), rotation, found,
+                        status, weber_iters):
+                arr[:, j] = arr[:, src]
             for it in range(NT):
-                for arr in (*out.values(), contact, in_problem):
-                    arr[it, j] = arr[it, src]
-                for arr in (*resid.values(), rotation, found, status, weber_iters):
-                    arr[it, j] = arr[it, src]
                 if problem_sink is not None and (it, src) in problems:
                     problem_sink(dataclasses.replace(
                         problems[it, src], name=f"{case.name} roll {j} T {torques[it]:g}"))

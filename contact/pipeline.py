@@ -208,14 +208,14 @@ def run_analysis(
         from contact.deviations import apply_deviations
 
         pin_dev, gear_dev = deviations
-        theo = {"easeoff": eo}
-        eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
-        t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=theo["easeoff"])
+        t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo)
         tree["/theoretical/easeoff"] = t_eo
         tree["/theoretical/utca"] = t_ut
         tree["/theoretical/ltca"] = loaded_tca(
-            c, torques, flank=flank, options=opts, easeoff=theo["easeoff"]
+            c, torques, flank=flank, options=opts, easeoff=eo,
+            transitions=tuple(t_ut["transition_roll"].values),
         )
+        eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
     t0 = time.perf_counter()
     eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
     times["utca"] = time.perf_counter() - t0

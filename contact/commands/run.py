@@ -177,12 +177,8 @@ def run(args: argparse.Namespace) -> int:
     if args.no_deviations:
         devs = False
     elif args.deviations:
-        from contact.deviations import read_deviations
-
-        devs = tuple(
-            None if f == "-" else read_deviations(f, member)
-            for f, member in zip(args.deviations, ("pinion", "gear"), strict=True)
-        )
+        # file paths: run_analysis reads them (contact.deviations.read_deviations)
+        devs = tuple(None if f == "-" else f for f in args.deviations)
     tree = run_analysis(
         case,
         args.torque,

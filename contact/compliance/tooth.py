@@ -464,49 +464,13 @@ def _frames(surf: _Surface, u: np.ndarray, v: np.ndarray):
     return m, np.stack([e_x, e_t, e_z], axis=-2)
 
 
-def _slope(surf: _Surface, u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """du/dv along the mid-surface curves orthogonal to the lengthwise curves v = const.
-
-    At 1-D (u, v): −(M_u·M_v)/(M_u·M_u) with M = (ρ cos φ, ρ sin φ, z); the rotation
-    terms cancel, M_u·M_v = p_u·p_v + ρ² φ_u φ_v and |M_u|² = |p_u|² + ρ² φ_u² with
-    p = (z, ρ) the blank map.
-    """
-    _, rho, pu_z, pu_r, pv_z, pv_r = _blank_rows(surf, u, v)
-    phi_u, phi_v = _angle_rows(surf, u, v, slice(1, 3))
-    rfu = rho * rho * phi_u
-    return -(pu_z * pv_z + pu_r * pv_r + rfu * phi_v) / (pu_z * pu_z + pu_r * pu_r
-                                                        + rfu * phi_u)
-
-
-def _trajectory_reference(surf: _Surface, u, v0, v1) -> np.ndarray:
-    """u at profile fraction v1 on the orthogonal trajectory through (u, v0) (RK4).
-
-    The plain formulation (:func:`_slope` at every stage); :func:`_trajectory` is the
-    same scheme with the v-dependent parts evaluated once (tests compare the two).
-    """
-    u = np.asarray(u, dtype=float)
-    shape = u.shape
-    u = u.ravel().copy()
-    v = np.broadcast_to(np.asarray(v0, dtype=float), shape).ravel().copy()
-    h = (np.broadcast_to(np.asarray(v1, dtype=float), shape).ravel() - v) / _TRAJ_STEPS
-    h2 = 0.5 * h
-    h6 = h / 6.0
-    for _ in range(_TRAJ_STEPS):
-        vh = v + h2
-        k1 = _slope(surf, u, v)
-        k2 = _slope(surf, u + h2 * k1, vh)
-        k3 = _slope(surf, u + h2 * k2, vh)
-        v = v + h
-        k4 = _slope(surf, u + h * k3, v)
-        u = u + h6 * (k1 + 2.0 * (k2 + k3) + k4)
-    return u.reshape(shape)
-
-
 def _trajectory(surf: _Surface, u, v0, v1) -> np.ndarray:
     """u at profile fraction v1 on the orthogonal trajectory through (u, v0) (RK4).
 
-    The classical RK4 scheme of :func:`_trajectory_reference` with :data:`_TRAJ_STEPS`
-    steps in v and the slope of :func:`_slope`; the RK4 stages sit at the 2·steps + 1
+    The classical RK4 scheme with :data:`_TRAJ_STEPS` steps in v on the slope
+    du/dv = −(M_u·M_v)/(M_u·M_u) of the mid-surface M = (ρ cos φ, ρ sin φ, z) (the
+    rotation terms cancel: M_u·M_v = p_u·p_v + ρ² φ_u φ_v, |M_u|² = |p_u|² + ρ² φ_u²,
+    p = (z, ρ) the blank map); the RK4 stages sit at the 2·steps + 1
     profile fractions v0 + k h/2, known in advance, so every v-dependent part of the
     slope (blank-map terms, and the angle polynomials' coefficients of t_u^i) is
     evaluated once for all stages; a stage then costs one polynomial in t_u. Same
@@ -905,9 +869,10 @@ def _project_to_mid(surf: _Surface, p: np.ndarray, u, v):
     """Foot (u, v) of points p on the mid-surface along its normal (Newton).
 
     Minimises |p − M(u, v)|²/2 by Newton's method with the exact Hessian (the
-    Gauss–Newton matrix of :func:`_project_to_mid_reference` minus r·M_uu, r·M_uv,
-    r·M_vv, r = p − M): quadratic convergence, 4–6 iterations instead of ~13, to the
-    same foot (same stopping rule |Δu| + |Δv| < 1e-14). In cylindrical components
+    Gauss–Newton matrix M_u·M_u, M_u·M_v, M_v·M_v minus r·M_uu, r·M_uv, r·M_vv,
+    r = p − M): quadratic convergence, 4–6 iterations instead of ~13 of Gauss–Newton
+    (the plain formulation kept in tests/test_compliance_fast_paths.py), to the same
+    foot (same stopping rule |Δu| + |Δv| < 1e-14). In cylindrical components
     about the member axis (M = ρ e_ρ(φ) + z e_z, ρ and z bilinear in (u, v)), with
     r_ρ = r·e_ρ, r_φ = r·e_φ:
 
@@ -947,39 +912,13 @@ def _project_to_mid(surf: _Surface, p: np.ndarray, u, v):
     return u, v
 
 
-def _project_to_mid_reference(surf: _Surface, p: np.ndarray, u, v):
-    """Foot (u, v) of points p on the mid-surface along its normal (Gauss–Newton).
-
-    Solves (p − M)·M_u = (p − M)·M_v = 0; the neglected curvature terms are
-    O(offset / radius of curvature) ≈ 0.05, so each step gains > 1 digit.
-    """
-    u = np.array(u, dtype=float)
-    v = np.array(v, dtype=float)
-    px, py, pz = np.asarray(p, dtype=float).T
-    for _ in range(_PROJ_ITER):
-        mx, my, mz, ux, uy, uz, vx, vy, vz = _mid_rows(surf, u, v)
-        rx, ry, rz = px - mx, py - my, pz - mz
-        g1 = rx * ux + ry * uy + rz * uz
-        g2 = rx * vx + ry * vy + rz * vz
-        a11 = ux * ux + uy * uy + uz * uz
-        a12 = ux * vx + uy * vy + uz * vz
-        a22 = vx * vx + vy * vy + vz * vz
-        det = a11 * a22 - a12 * a12
-        du = (a22 * g1 - a12 * g2) / det
-        dv = (a11 * g2 - a12 * g1) / det
-        u += du
-        v += dv
-        if (np.abs(du) + np.abs(dv)).max() < 1e-14:
-            break
-    return u, v
-
-
-def _reference_tooth(data: ToothModelData, pm: np.ndarray, u: np.ndarray, v: np.ndarray):
-    """Turn points by whole pitches onto the reference tooth; returns (turn, points)."""
-    m, _, _ = _mid_surface(data.surface, u, v)
+def _reference_tooth(surf: _Surface, pitch, pm: np.ndarray, u: np.ndarray, v: np.ndarray):
+    """Turn points by whole pitches [rad] (a float, or one per point) onto the reference
+    tooth of the mid-surface ``surf``; returns (turn, points)."""
+    m, _, _ = _mid_surface(surf, u, v)
     gap = np.remainder(np.arctan2(m[:, 1], m[:, 0]) - np.arctan2(pm[:, 1], pm[:, 0]) + math.pi,
                        2 * math.pi) - math.pi
-    turn = data.pitch * np.round(gap / data.pitch)
+    turn = pitch * np.round(gap / pitch)
     return turn, _rot_z(turn, pm)
 
 
@@ -1110,12 +1049,7 @@ def _shell_points_many(jobs, tol: float) -> list[list[ShellPoints]]:
                     f"points must lie on the {data.member}'s tooth flanks: face fraction u "
                     f"and profile fraction v in [0, 1] (±{tol:g}); point {i} has "
                     f"u = {uo:.6g}, v = {vo:.6g}")
-    # turn by whole pitches onto the reference tooth (:func:`_reference_tooth`)
-    m0, _, _ = _mid_surface(surf, u0, v0)
-    gap = np.remainder(np.arctan2(m0[:, 1], m0[:, 0]) - np.arctan2(pm[:, 1], pm[:, 0])
-                       + math.pi, 2 * math.pi) - math.pi
-    turn = pitch * np.round(gap / pitch)
-    p_ref = _rot_z(turn, pm)
+    turn, p_ref = _reference_tooth(surf, pitch, pm, u0, v0)
     u, v = _project_to_mid(surf, p_ref, u0, v0)
     m, frame = _frames(surf, u, v)
     offset = np.sum((p_ref - m) * frame[:, 2, :], axis=-1)
