@@ -46,7 +46,7 @@ from contact.io import data_var as _var
 from contact.problem import ContactProblem
 from contact.solvers import DEFAULT_SOLVER, get_backend, solve_contact
 from contact.transmission_error import transmission_error_summary
-from contact.utca import contact_curves
+from contact.utca import CURVE_SPACINGS, contact_curves
 from contact.utca import transitions as _transitions
 from geometry._version import __version__
 from geometry.assembly import Misalignment
@@ -60,9 +60,9 @@ log = logging.getLogger(__name__)
 
 _RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
 
-#: [1] a segment midpoint may lie this fraction of the pinion's face width / depth beyond
-#: its blank outline before it is left out (the tip chamfer of a real blank is not modelled)
-_PINION_MARGIN = 0.01
+#: [1] a segment clipped by the pinion blank to less than this fraction of its length is
+#: left out (its load would be below the solution's resolution)
+_MIN_CLIP = 1e-6
 
 
 @dataclass(frozen=True)
@@ -80,6 +80,13 @@ class LTCAOptions:
         start of each mesh cycle (default −1, 0, 1, 2; see :func:`segment_geometry`).
     segments : int
         Segments per contact curve (≥ 4; default 24).
+    spacing : str
+        Placing of the segment ends along a curve (:data:`contact.utca.CURVE_SPACINGS`):
+        ``"cosine"`` (default) grades them towards the curve ends, where the load rises
+        into a flank edge (the entering pair at the gear tip, the leaving pair at the
+        pinion tip): the end segments are ~π²/(4 S²) of the curve, so the load at the
+        edge converges at second order in 1/S (uniform spacing: first order);
+        ``"uniform"``: equal steps in the lengthwise fraction.
     separation_limit : float or None — [mm]
         Segments separated by more than this are left out (they cannot touch). Default:
         0.05 mm + 0.15 mm per 1000 N·m of gear torque.
@@ -99,6 +106,7 @@ class LTCAOptions:
     rolls_per_cycle: int = 20
     pairs: tuple[int, ...] = (-1, 0, 1, 2)
     segments: int = 24
+    spacing: str = "cosine"
     separation_limit: float | None = None
     solver: str = DEFAULT_SOLVER
     weber_tolerance: float = 1e-3
@@ -119,6 +127,9 @@ class LTCAOptions:
         for name, val, lo, hi in checks:
             if not (isinstance(val, int) and lo <= val <= hi):
                 raise InputError(f"{name}: must be an integer in [{lo}, {hi}], got {val!r}")
+        if self.spacing not in CURVE_SPACINGS:
+            raise InputError(f"spacing: must be one of {sorted(CURVE_SPACINGS)}, got "
+                             f"{self.spacing!r}")
         if not self.pairs or 0 not in self.pairs:
             raise InputError(f"pairs: must contain the reference pair 0, got {self.pairs!r}")
         if self.separation_limit is not None and not self.separation_limit > 0:
@@ -147,7 +158,8 @@ def _spline(eo: EaseOff, field: np.ndarray) -> RectBivariateSpline:
     return RectBivariateSpline(eo.u, eo.v, np.nan_to_num(vals), kx=3, ky=3, s=0)
 
 
-def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], segments: int):
+def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], segments: int,
+                     spacing: str = "cosine"):
     """Contact segments of every (roll, pair): the LTCA discretisation (seed §3.3, Fig. 3.3).
 
     Parameters
@@ -162,6 +174,9 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
         curve is Q = r − (c + k)·pitch. The results are then periodic in the mesh cycle.
     segments : int
         Segments per contact curve.
+    spacing : str
+        Placing of the segment ends (:data:`contact.utca.CURVE_SPACINGS`; see
+        :class:`LTCAOptions`).
 
     Returns
     -------
@@ -184,7 +199,7 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     # round-off): they are computed once, from the first such roll ("source")
     source = _same_rolls(target, eo.pitch)
     first = np.flatnonzero(source == np.arange(roll.size))
-    geo = _segment_geometry(case, eo, target[first], rp[first], segments)
+    geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing)
     back = np.searchsorted(first, source)
     out = {k: (val[back] if isinstance(val, np.ndarray) else val) for k, val in geo.items()}
     out["shape"] = (roll.size, pairs.size, segments)
@@ -199,21 +214,15 @@ def _same_rolls(target: np.ndarray, pitch: float) -> np.ndarray:
     return first[np.ravel(inverse)]
 
 
-def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, segments: int):
+def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, segments: int,
+                      spacing: str):
     """:func:`segment_geometry` of roll targets (J, K) [rad] with pinion rotations rp (J,)."""
-    cc = contact_curves(eo, target, n_point=segments + 1)
+    # each segment is sampled at its ends and its middle (2S + 1 points along a curve);
+    # its fields follow the quadratic through the three (_SegmentQuadratic)
+    cc = contact_curves(eo, target, n_point=2 * segments + 1, spacing=spacing,
+                        near_misses=True)
     (J, K), S = target.shape, segments
-
-    def mid(a):
-        return 0.5 * (a[..., 1:] + a[..., :-1])
-
-    u, v = mid(cc.u), mid(cc.v)
-    pos_g = 0.5 * (cc.position[..., 1:, :] + cc.position[..., :-1, :])
-    nrm_g = 0.5 * (cc.normal[..., 1:, :] + cc.normal[..., :-1, :])
-    nrm_g /= np.linalg.norm(nrm_g, axis=-1, keepdims=True)
-    length = np.linalg.norm(np.diff(cc.position, axis=-2), axis=-1)
-    lag = mid(cc.ease_off_angle + cc.gap)
-    arm = mid(cc.normal_arm)
+    quad = _SegmentQuadratic(CURVE_SPACINGS[spacing](2 * S + 1))
     kin = eo.kinematics
     # member rotations of each curve: pinion φ = roll_zero + s_p q, gear at the ideal ψ;
     # pair k's points then lie on the teeth k pitches away at the roll's own rotations
@@ -226,23 +235,40 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         q = _rotate(ag, np.broadcast_to(psi[..., None], x.shape[:-1]), x @ rot_g.T)
         return q if vec else q + og
 
+    # the real pinion touches a gear point at the pair's own instant, which near the
+    # pinion's tip or ends can lie beyond its blank (the curve ends where the *conjugate*
+    # mate leaves it): each segment is clipped to the part [a, b] whose real mate lies
+    # inside the pinion blank, at the crossing of the blank measure, so the contact line
+    # ends on the blank edge whatever the segment count
+    a, b = quad.clip(_pinion_measure(case, kin, gear_to_pair(cc.position), phi))
+    inside = b - a > _MIN_CLIP
+    c = 0.5 * (a + b)  # collocation point: the middle of the segment's part in contact
+    u = np.where(inside, quad.at(cc.u, c), np.nan)
+    v = np.where(inside, quad.at(cc.v, c), np.nan)
+    pos_g = quad.at(cc.position, c)
+    nrm_g = quad.at(cc.normal, c)
+    nrm_g /= np.linalg.norm(nrm_g, axis=-1, keepdims=True)
+    end_a, end_b = quad.at(cc.position, a), quad.at(cc.position, b)
+    chord = end_b - end_a
+    length = np.where(inside, np.linalg.norm(chord, axis=-1), 0.0)
+    # the separation enters as the segment's mean (a uniform load over the segment does
+    # work against the mean gap; the midpoint value would be off by −s″ h²/24)
+    lag = quad.mean(cc.ease_off_angle + cc.gap, a, b)
+    arm = quad.at(cc.normal_arm, c)
     mid_pair = gear_to_pair(pos_g)
-    ends_pair = np.stack([gear_to_pair(cc.position[..., :-1, :]),
-                          gear_to_pair(cc.position[..., 1:, :])], axis=-2)
+    ends_pair = np.stack([gear_to_pair(end_a), gear_to_pair(end_b)], axis=-2)
     # the gear normal points out of the gear; the contact normal out of the pinion is −n_g
     n_pair = -gear_to_pair(nrm_g, vec=True)
-    t_pair = gear_to_pair(_tangent(cc), vec=True)
-    # the real pinion touches the gear point at the pair's own instant, which near the
-    # pinion's tip or ends can lie just beyond its blank (the curve ends where the
-    # conjugate mate leaves it): such segments cannot carry load and are left out
-    op = kin.pinion_origin
-    xp = _rotate(ap, -np.broadcast_to(phi[..., None], mid_pair.shape[:-1]),
-                       mid_pair - op) @ rot_p
-    pu, pv = _fractions(blank_outline(case.pinion.blank).corners, xp[..., 2],
-                        np.hypot(xp[..., 0], xp[..., 1]))
-    beyond = (pu < -_PINION_MARGIN) | (pu > 1 + _PINION_MARGIN) | (pv > 1 + _PINION_MARGIN)
-    u = np.where(beyond, np.nan, u)
-    v = np.where(beyond, np.nan, v)
+    # unit tangent of the chord (of the whole segment where it is clipped away); a curve
+    # shrunk to a point (a pair just meeting a corner of the flank) has none: left out
+    chord = np.where(inside[..., None], chord, quad.at(cc.position, np.ones_like(a))
+                     - quad.at(cc.position, np.zeros_like(a)))
+    norm = np.linalg.norm(chord, axis=-1, keepdims=True)
+    tangent = chord / np.where(norm > 0, norm, np.nan)
+    degenerate = ~(norm[..., 0] > 0)
+    u = np.where(degenerate, np.nan, u)
+    v = np.where(degenerate, np.nan, v)
+    t_pair = gear_to_pair(tangent, vec=True)
     # R_eq across the contact line from both real surfaces at the midpoints
     ok = np.isfinite(u) & np.isfinite(v)
     r_eq = np.full(u.shape, np.nan)
@@ -263,7 +289,7 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         gs = flank_at(case, "gear", eo.gear_flank, pg[..., 2], np.hypot(pg[..., 0], pg[..., 1]))
         ps = flank_at(case, "pinion", eo.pinion_flank, pz, pr)
         # across-line direction w = n × t in the gear frame, carried to the pinion frame
-        w_g = np.cross(nrm_g, _tangent(cc))  # (J, K, S, 3)
+        w_g = np.cross(nrm_g, tangent)  # (J, K, S, 3)
         w_pair = gear_to_pair(np.nan_to_num(w_g), vec=True)
         phi_seg = np.broadcast_to(phi[..., None], u.shape)
         w_p = _rotate(ap, -phi_seg, w_pair) @ rot_p
@@ -286,6 +312,99 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     }
 
 
+class _SegmentQuadratic:
+    """Quadratic interpolation within each segment of a curve sampled at 2S + 1 points.
+
+    Segment k spans the samples 2k (τ = 0), 2k + 1 (τ = τ_m) and 2k + 2 (τ = 1), τ the
+    fraction of the segment's parameter span; the Lagrange quadratic through the three
+    gives a field at any τ (error O(h³)) and its mean over [a, b] (exact for quadratics).
+
+    Parameters
+    ----------
+    fractions : array (2S + 1,) — [1]
+        The sample fractions along the curve (:data:`contact.utca.CURVE_SPACINGS`).
+    """
+
+    def __init__(self, fractions: np.ndarray):
+        x = np.asarray(fractions, float)
+        self.tau_m = (x[1:-1:2] - x[0:-2:2]) / (x[2::2] - x[0:-2:2])  # (S,)
+
+    @staticmethod
+    def _split(x: np.ndarray):
+        if x.shape[-1] == 3:  # vectors (..., 2S+1, 3): scalar fields have 2S+1 ≥ 9 samples
+            return x[..., 0:-1:2, :], x[..., 1::2, :], x[..., 2::2, :], True
+        return x[..., 0:-1:2], x[..., 1::2], x[..., 2::2], False
+
+    def _basis(self, tau):
+        """Lagrange weights (w0, wm, w1) at τ (..., S)."""
+        tm = self.tau_m
+        w0 = (tau - tm) * (tau - 1.0) / tm
+        wm = tau * (tau - 1.0) / (tm * (tm - 1.0))
+        w1 = tau * (tau - tm) / (1.0 - tm)
+        return w0, wm, w1
+
+    def _combine(self, x, w):
+        x0, xm, x1, vec = self._split(x)
+        if vec:
+            w = tuple(wi[..., None] for wi in w)
+        return w[0] * x0 + w[1] * xm + w[2] * x1
+
+    def at(self, x: np.ndarray, tau: np.ndarray) -> np.ndarray:
+        """Field x (..., 2S+1[, 3]) at the fractions τ (..., S) of each segment."""
+        return self._combine(x, self._basis(tau))
+
+    def mean(self, x: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """Mean of field x (..., 2S+1) over [a, b] ⊂ [0, 1] of each segment (..., S)."""
+        tm = self.tau_m
+        m1 = 0.5 * (a + b)  # mean of τ over [a, b]
+        m2 = (a * a + a * b + b * b) / 3.0  # mean of τ²
+        w0 = (m2 - (tm + 1.0) * m1 + tm) / tm
+        wm = (m2 - m1) / (tm * (tm - 1.0))
+        w1 = (m2 - tm * m1) / (1.0 - tm)
+        return self._combine(x, (w0, wm, w1))
+
+    def clip(self, m: np.ndarray):
+        """Part [a, b] of each segment where a measure m (..., 2S+1) is ≥ 0.
+
+        m is taken as linear between the samples (crossings to second order in h); a
+        segment wholly outside gets a = b = 0, as does one without a curve (NaN). Where m
+        changes sign twice within a segment the part between the outer crossings is kept.
+        """
+        m0, mm, m1, _ = self._split(m)
+        tm = self.tau_m
+        in0, inm, in1 = m0 >= 0, mm >= 0, m1 >= 0
+        with np.errstate(invalid="ignore", divide="ignore"):
+            c0m = tm * m0 / (m0 - mm)  # crossing within [0, τm]
+            cm1 = tm + (1.0 - tm) * mm / (mm - m1)  # crossing within [τm, 1]
+        a = np.where(in0, 0.0, np.where(inm, c0m, np.where(in1, cm1, 0.0)))
+        b = np.where(in1, 1.0, np.where(inm, cm1, np.where(in0, c0m, 0.0)))
+        return a, b
+
+
+def _pinion_measure(case, kin, points_pair: np.ndarray, phi: np.ndarray) -> np.ndarray:
+    """Inside measure of the real pinion mates of curve points in the pinion blank.
+
+    Parameters
+    ----------
+    points_pair : array (J, K, P, 3) — [mm]
+        Curve samples in the pair frame (NaN where no curve).
+    phi : array (J, K) — [rad]
+        Pinion rotation of each curve.
+
+    Returns
+    -------
+    array (J, K, P) — [1]
+        m = min(u_p, 1 − u_p, 1 − v_p) in the pinion's projection-plane fractions (toe,
+        heel, tip): ≥ 0 inside the blank (NaN where no curve).
+    """
+    ap, op, rot_p = kin.pinion_axis, kin.pinion_origin, kin.pinion_place[:3, :3]
+    xp = _rotate(ap, -np.broadcast_to(phi[..., None], points_pair.shape[:-1]),
+                 points_pair - op) @ rot_p
+    pu, pv = _fractions(blank_outline(case.pinion.blank).corners, xp[..., 2],
+                        np.hypot(xp[..., 0], xp[..., 1]))
+    return np.minimum(np.minimum(pu, 1.0 - pu), 1.0 - pv)
+
+
 def _fill_rows(a: np.ndarray, valid: np.ndarray) -> np.ndarray:
     """Replace invalid entries of each row by linear interpolation/extension of the valid."""
     out = np.array(a, dtype=float)
@@ -294,12 +413,6 @@ def _fill_rows(a: np.ndarray, valid: np.ndarray) -> np.ndarray:
         good = valid[i] & np.isfinite(out[i])
         out[i] = np.interp(idx, idx[good], out[i, good])
     return out
-
-
-def _tangent(cc) -> np.ndarray:
-    """Unit contact-line tangents of the segments (gear frame), shape (..., S, 3)."""
-    t = np.diff(cc.position, axis=-2)
-    return t / np.linalg.norm(t, axis=-1, keepdims=True)
 
 
 def loaded_tca(
@@ -379,7 +492,7 @@ def loaded_tca(
     n_roll = opts.cycles * opts.rolls_per_cycle
     roll = start + np.arange(n_roll) * eo.pitch / opts.rolls_per_cycle
     t1 = time.perf_counter()
-    seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments)
+    seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing)
     t_segments = time.perf_counter() - t1
     J, K, S = seg["shape"]
     ute_env = np.nanmin(seg["ute"], axis=1)  # (J,)
@@ -446,7 +559,8 @@ def loaded_tca(
                 length=seg["length"][j, wk, ws],
                 r_eq=seg["r_eq"][j, wk, ws],
                 pair_index=np.asarray(opts.pairs)[wk],
-                load=np.ones(wk.size),
+                # (Weber's part is replaced below; a unit line load keeps it defined)
+                load=seg["length"][j, wk, ws],
                 pinion_rotation=float(seg["pinion_rotation"][j]),
                 gear_rotation=float(seg["gear_rotation"][j]),
             )

@@ -53,6 +53,7 @@ Public functions
 ----------------
 DEFAULT_SEPARATION       6.3 µm (0.0063 mm)
 UTE_METHODS              "seed", "second_order"
+CURVE_SPACINGS           "uniform", "cosine" samples along a contact curve
 ContactCurves            curves of a batch of roll targets: places, ease-off, UTE, H
 contact_curves           compute them from an EaseOff for roll values (Q units)
 pair_transmission_error  UTE of the reference tooth pair at roll values
@@ -87,6 +88,7 @@ if TYPE_CHECKING:
     from geometry.case import Case
 
 __all__ = [
+    "CURVE_SPACINGS",
     "DEFAULT_SEPARATION",
     "UTE_METHODS",
     "ContactCurves",
@@ -266,10 +268,13 @@ class ContactCurves(NamedTuple):
     index: np.ndarray  # batch: sample index nearest to H (-1 where no curve)
 
 
-def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
+def _seed_places(f: _Fields, t: np.ndarray, frac: np.ndarray) -> ContactCurves:
     """Places, ε and UTE of the iso-lines Q = t (flat batch), without the flank fields
-    (``normal_arm``, ``position``, ``normal`` are None; see :func:`_curve_fields`)."""
+    (``normal_arm``, ``position``, ``normal`` are None; see :func:`_curve_fields`), sampled
+    at the fractions ``frac`` (increasing from 0 to 1) of u between each curve's ends."""
     nb = t.size
+    n_point = frac.size
+    uniform = bool(np.allclose(np.diff(frac), 1.0 / (n_point - 1), rtol=0, atol=1e-15))
     u0, u1 = float(f.u[0]), float(f.u[-1])
     nc = _COARSE_PER_CELL * (len(f.u) - 1) + 1
     uc = np.linspace(u0, u1, nc)
@@ -289,17 +294,24 @@ def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
     stop = np.where(have, first + length[np.arange(nb), first] - 1, -1)
     ua = np.where(have, uc[np.clip(start, 0, nc - 1)], np.nan)
     ub = np.where(have, uc[np.clip(stop, 0, nc - 1)], np.nan)
+    # a curve shorter than the coarse step can fall between two samples: where the measure
+    # peaks inside between them, that peak seeds it (a pair entering or leaving at a corner
+    # of the region keeps its curve until the curve shrinks to nothing)
+    s_rows, s_u, s_v, s_lo, s_hi = _short_curves(f, t, uc, vc, have)
+    seeded = np.zeros(nb, dtype=bool)
+    seeded[s_rows] = True
 
     # ends: false position (Illinois) on the continuous inside measure between the last
     # valid and the first invalid coarse sample (bisection where the measure jumps)
     lo_end = have & (start > 0)
     hi_end = have & (stop < nc - 1)
-    rows = np.r_[np.flatnonzero(lo_end), np.flatnonzero(hi_end)]
+    rows = np.r_[np.flatnonzero(lo_end), np.flatnonzero(hi_end), s_rows, s_rows]
     if rows.size:
         j_in = np.r_[start[lo_end], stop[hi_end]]
         j_out = np.r_[start[lo_end] - 1, stop[hi_end] + 1]
-        a, b = uc[j_in], uc[j_out]
-        va = vc[rows, j_in]
+        a = np.r_[uc[j_in], s_u, s_u]
+        b = np.r_[uc[j_out], s_lo, s_hi]
+        va = np.r_[vc[rows[: j_in.size], j_in], s_v, s_v]
         ca = f.measure(a, va)
         cb = f.measure(b, f.solve_v(b, t[rows], v_start=va))
         t_rows = t[rows]
@@ -327,10 +339,11 @@ def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
             prev_in, prev_out = good, bad
             if np.all(np.abs(b - a) < 1e-9):
                 break
-        n_lo = int(lo_end.sum())
+        n_lo, n_hi, n_s = int(lo_end.sum()), int(hi_end.sum()), s_rows.size
         ua[rows[:n_lo]] = a[:n_lo]
-        ub[rows[n_lo:]] = a[n_lo:]
-    frac = np.linspace(0.0, 1.0, n_point)
+        ub[rows[n_lo:n_lo + n_hi]] = a[n_lo:n_lo + n_hi]
+        ua[s_rows] = a[n_lo + n_hi:n_lo + n_hi + n_s]
+        ub[s_rows] = a[n_lo + n_hi + n_s:]
     up = ua[:, None] + (ub - ua)[:, None] * frac
     up_safe = np.where(np.isfinite(up), up, u0)
     vstart = np.full(up.shape, np.nan)
@@ -351,6 +364,10 @@ def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
         lo_v = np.take_along_axis(vrun, s0, 1)
         hi_v = np.take_along_axis(vrun, s1, 1)
         vstart[hb] = np.where(x < uc[s0], lo_v, np.where(x >= uc[s1], hi_v, val))
+    if s_rows.size:  # a short curve: Newton from its seed
+        vstart[s_rows] = s_v[:, None]
+        hb = np.r_[hb, s_rows]
+        have = have | seeded
     # only the curves that exist (Newton runs each point independently)
     vp = np.full(up.shape, np.nan)
     if hb.size:
@@ -377,11 +394,22 @@ def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
             r = rows[inner]
             ki = k[inner]
             em, ec, ep = eps[r, ki - 1], eps[r, ki], eps[r, ki + 1]
-            den = em - 2 * ec + ep
-            okp = np.isfinite(den) & (den > 0)
-            x = np.clip(np.where(okp, 0.5 * (em - ep) / np.where(okp, den, 1.0), 0.0),
-                        -0.5, 0.5)
-            ur = up[r, ki] + x * (up[r, ki + 1] - up[r, ki])
+            if uniform:
+                den = em - 2 * ec + ep
+                okp = np.isfinite(den) & (den > 0)
+                x = np.clip(np.where(okp, 0.5 * (em - ep) / np.where(okp, den, 1.0), 0.0),
+                            -0.5, 0.5)
+                ur = up[r, ki] + x * (up[r, ki + 1] - up[r, ki])
+            else:
+                # vertex of the parabola through three unequally spaced samples, held
+                # within half a step of the lowest
+                h1 = up[r, ki] - up[r, ki - 1]
+                h2 = up[r, ki + 1] - up[r, ki]
+                a1, a2 = em - ec, ep - ec
+                den = 2 * (h2 * a1 + h1 * a2)
+                okp = np.isfinite(den) & (den > 0)
+                d = np.where(okp, (h2**2 * a1 - h1**2 * a2) / np.where(okp, den, 1.0), 0.0)
+                ur = up[r, ki] + np.clip(d, -0.5 * h1, 0.5 * h2)
             vr = f.solve_v(ur, t[r], v_start=vp[r, ki])
             good = np.isfinite(vr)
             er = np.where(good, f.eps.ev(ur, np.where(good, vr, f.v[0])), np.inf)
@@ -395,6 +423,58 @@ def _seed_places(f: _Fields, t: np.ndarray, n_point: int) -> ContactCurves:
         contact_u=cu, contact_v=cv, index=index)
 
 
+def _short_curves(f: _Fields, t: np.ndarray, uc: np.ndarray, vc: np.ndarray,
+                  have: np.ndarray):
+    """Seeds of the curves that lie wholly between two coarse samples.
+
+    For each curve without an inside coarse sample whose iso-line crosses the grid, the
+    inside measure is maximised (successive grids, to ~2e-4 of the coarse step) between the
+    neighbours of its best coarse sample; where the maximum is ≥ 0 the curve exists.
+
+    Returns
+    -------
+    rows : int array (M,)
+        The curves found.
+    u, v : arrays (M,)
+        A place inside each (the maximum of the measure).
+    lo, hi : arrays (M,)
+        The neighbouring coarse places (outside) bracketing each curve's ends.
+    """
+    empty = np.zeros(0)
+    cand = np.flatnonzero(~have & np.any(np.isfinite(vc), axis=1))
+    if cand.size == 0:
+        return np.zeros(0, dtype=int), empty, empty, empty, empty
+    nc = uc.size
+    vcc = vc[cand]
+    meas = f.measure(np.broadcast_to(uc, vcc.shape), vcc)
+    best = np.argmax(meas, axis=1)
+    near = np.max(meas, axis=1) > -0.5  # −1: undefined (no iso-line point in a good cell)
+    cand, best, vcc = cand[near], best[near], vcc[near]
+    if cand.size == 0:
+        return np.zeros(0, dtype=int), empty, empty, empty, empty
+    lo = uc[np.maximum(best - 1, 0)]
+    hi = uc[np.minimum(best + 1, nc - 1)]
+    tt = t[cand]
+    v_best = vcc[np.arange(cand.size), best]
+    v_best = np.where(np.isfinite(v_best), v_best, 0.5 * (f.v[0] + f.v[-1]))
+
+    n = _REFINE_POINTS
+    u_star = uc[best]
+    out_lo, out_hi = lo, hi  # the coarse neighbours: outside, they bracket the ends
+    for _ in range(_SHORT_ITER):  # successive grids: each narrows to 2/(n − 1) = 1/8
+        x = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, n)[None, :]
+        vx = f._newton_v(x.ravel(), np.repeat(tt, n), np.repeat(v_best, n))
+        mx = f.measure(x.ravel(), vx).reshape(-1, n)
+        i = np.argmax(mx, axis=1)
+        u_star = x[np.arange(tt.size), i]
+        step = (hi - lo) / (n - 1)
+        lo, hi = np.maximum(u_star - step, lo), np.minimum(u_star + step, hi)
+    v_star = f._newton_v(u_star, tt, v_best.copy())
+    m_star = f.measure(u_star, v_star)
+    ok = m_star >= 0
+    return cand[ok], u_star[ok], v_star[ok], out_lo[ok], out_hi[ok]
+
+
 def _curve_fields(f: _Fields, cc: ContactCurves) -> ContactCurves:
     """Normal arm, gear flank point and unit normal along the curves of ``cc``."""
     fin = np.isfinite(cc.v)
@@ -406,15 +486,17 @@ def _curve_fields(f: _Fields, cc: ContactCurves) -> ContactCurves:
     return cc._replace(normal_arm=arm, position=pos, normal=nrm)
 
 
-def _curves_seed(f: _Fields, t: np.ndarray, n_point: int, *,
-                 flank_fields: bool = True) -> ContactCurves:
+def _curves_seed(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
+                 flank_fields: bool = True, near_misses: bool = False) -> ContactCurves:
     """Iso-lines Q = t (flat batch) and the minimum of ε along them (seed §2.3.2.2)."""
-    cc = _seed_places(f, t, n_point)
+    if near_misses:
+        raise InputError("near_misses: needs the pinion's gap, i.e. method 'second_order'")
+    cc = _seed_places(f, t, frac)
     return _curve_fields(f, cc) if flank_fields else cc
 
 
-def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int, *,
-                         flank_fields: bool = True) -> ContactCurves:
+def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
+                         flank_fields: bool = True, near_misses: bool = False) -> ContactCurves:
     """The seed's curves corrected for the pinion's own gap to its conjugate.
 
     The pinion at roll q is separated from its conjugate at a gear place x by
@@ -425,9 +507,27 @@ def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int, *,
     derivative across the iso-line at H (envelope theorem), or the finite difference of
     UTE_seed where H is an end of the curve (edge contact). ``flank_fields=False`` skips
     the normal arm, flank point and normal (None), which the UTE does not need.
+    ``near_misses=True`` also returns the curves of iso-lines Q = q that miss the contact
+    region but whose shifted iso-line meets it (see :func:`_probe_shift`).
     """
-    first = _seed_places(f, t, n_point)
+    n_point = frac.size
+    first = _seed_places(f, t, frac)
     have = np.isfinite(first.ute)
+    # where the iso-line Q = q misses the contact region (a pair just leaving or entering
+    # at a corner), the real pinion may still touch it through its gap: the iso-line
+    # Q = q + t_b nearest in that sense (min of UTE_seed + ½ K t_b², by probing) is the
+    # first-order curve from which the correction starts
+    base = np.zeros(t.size)
+    lost = np.flatnonzero(~have) if near_misses else np.zeros(0, dtype=int)
+    if lost.size:
+        rows, t_b = _probe_shift(f, t[lost])
+        if rows.size:
+            rows = lost[rows]
+            base[rows] = t_b
+            probed = _seed_places(f, t[rows] + t_b, frac)
+            first = ContactCurves(*(None if a is None else _put_rows(a, rows, b)
+                                    for a, b in zip(first, probed, strict=True)))
+            have = np.isfinite(first.ute)
     cu = np.where(have, first.contact_u, f.u[0])
     cv = np.where(have, first.contact_v, f.v[0])
     qu, qv = f.q.ev(cu, cv, dx=1), f.q.ev(cu, cv, dy=1)
@@ -436,17 +536,17 @@ def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int, *,
     edge = have & ((first.index == 0) | (first.index == n_point - 1))
     if edge.any():
         h = 1e-5
-        te = t[edge]
-        pair = _seed_places(f, np.r_[te + h, te - h], n_point).ute
+        te = (t + base)[edge]
+        pair = _seed_places(f, np.r_[te + h, te - h], frac).ute
         fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
         g[np.flatnonzero(edge)] = np.where(np.isfinite(fd), fd, g[edge])
     k = f.gap.ev(cu, cv)
-    shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), 0.0)
-    second = _seed_places(f, t + shift, n_point)
+    shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), base)
+    second = _seed_places(f, t + shift, frac)
     ok2 = np.isfinite(second.ute)
     # keep the first-order curve where the shifted one leaves the contact region
     use = ok2 | ~have
-    shift = np.where(use, shift, 0.0)
+    shift = np.where(use, shift, base)
     cc = ContactCurves(
         *(None if a is None else np.where(use.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
           for a, b in zip(second, first, strict=True)))
@@ -462,7 +562,91 @@ def _curves_second_order(f: _Fields, t: np.ndarray, n_point: int, *,
     return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
 
 
-#: UTE methods: name → contact curves of a flat batch of roll targets
+#: [pitch] largest iso-line shift sought for a pair whose iso-line misses the contact
+#: region: beyond it the pinion's own gap ½ K t² is some hundred µrad (no load reaches it)
+_MAX_SHIFT = 1.0 / 8.0
+_SHORT_ITER = 4  # grids locating a short curve: 8^-4 ≈ 2e-4 of two coarse steps
+_REFINE_POINTS, _REFINE_ITER = 17, 4  # grids refining the shift: 8^-4 ≈ 2e-4 of the first
+# bracket (two node steps of Q either side), i.e. ~1e-5 rad of shift, ≤ 0.05 µrad of ½ K t²
+
+
+def _probe_shift(f: _Fields, t: np.ndarray):
+    """Iso-line shifts t_b for roll values whose iso-line Q = t misses the contact region.
+
+    The shift minimises UTE_seed(t + t_b) + ½ K t_b² (K > 0 at the contact point). It is
+    first located on the ease-off nodes of the region, min over nodes of ε + ½ K (Q − t)²,
+    kept where |t_b| ≤ :data:`_MAX_SHIFT` pitches, then refined on the curves themselves
+    by successive grids (the cost is infinite where the iso-line misses: the minimum often
+    sits where it starts to meet a corner of the region), so that t_b varies continuously
+    with t.
+
+    Returns
+    -------
+    rows : int array (M,)
+        Indices into ``t`` for which the shifted iso-line meets the region.
+    t_b : array (M,) — [rad]
+        The shift of each.
+    """
+    eo = f.eo
+    p = eo.pitch
+    node = eo.valid & np.isfinite(eo.gap_curvature) & (eo.gap_curvature > 0)
+    if not np.any(node):
+        return np.zeros(0, dtype=int), np.zeros(0)
+    q_n = eo.raw_roll_angle[node]
+    e_n = eo.raw_ease_off_angle[node]
+    k_n = eo.gap_curvature[node]
+    node_cost = e_n[None, :] + 0.5 * k_n[None, :] * (q_n[None, :] - t[:, None]) ** 2
+    best = np.argmin(node_cost, axis=1)
+    d0 = q_n[best] - t
+    cand = np.flatnonzero(np.abs(d0) <= _MAX_SHIFT * p)
+    if cand.size == 0:
+        return cand, np.zeros(0)
+    # first bracket: two steps of Q between neighbouring nodes either side
+    q = np.where(eo.valid, eo.raw_roll_angle, np.nan)
+    dq = np.nanmax(np.abs(np.r_[np.diff(q, axis=0).ravel(), np.diff(q, axis=1).ravel()]))
+    frac = CURVE_SPACINGS["uniform"](9)
+
+    def cost(tc, dd):
+        """UTE_seed(t + d) + ½ K d² (inf where the iso-line misses the region or K ≤ 0)."""
+        pr = _seed_places(f, tc + dd, frac)
+        hu = np.where(np.isfinite(pr.contact_u), pr.contact_u, f.u[0])
+        hv = np.where(np.isfinite(pr.contact_v), pr.contact_v, f.v[0])
+        k = f.gap.ev(hu, hv)
+        c = np.where(k > 0, pr.ute + 0.5 * k * dd**2, np.nan)
+        return np.where(np.isfinite(c), c, np.inf)
+
+    tb = t[cand]
+    d_star = d0[cand]
+    lo, hi = d_star - 2 * dq, d_star + 2 * dq
+    found = np.zeros(cand.size, dtype=bool)
+    n = _REFINE_POINTS
+    for _ in range(_REFINE_ITER):  # each narrows the bracket to 2/(n − 1) of itself
+        x = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, n)[None, :]
+        c = cost(np.repeat(tb, n), x.ravel()).reshape(-1, n)
+        i = np.argmin(c, axis=1)
+        fin = np.isfinite(c[np.arange(tb.size), i])
+        found |= fin
+        d_star = np.where(fin, x[np.arange(tb.size), i], d_star)
+        step = (hi - lo) / (n - 1)
+        lo, hi = (np.where(fin, d_star - step, lo), np.where(fin, d_star + step, hi))
+    return cand[found], d_star[found]
+
+
+def _put_rows(a: np.ndarray, rows: np.ndarray, b: np.ndarray) -> np.ndarray:
+    out = np.array(a, copy=True)
+    out[rows] = b
+    return out
+
+
+#: spacings of the samples along a contact curve: name → fractions (n,) of the u-span
+#: between the curve's ends, from 0 to 1
+CURVE_SPACINGS: dict[str, Callable[[int], np.ndarray]] = {
+    "uniform": lambda n: np.linspace(0.0, 1.0, n),
+    "cosine": lambda n: 0.5 * (1.0 - np.cos(np.pi * np.arange(n) / (n - 1))),
+}
+
+#: UTE methods: name → contact curves of a flat batch of roll targets (sampled at the
+#: fractions of a :data:`CURVE_SPACINGS` entry)
 UTE_METHODS: dict[str, Callable[..., ContactCurves]] = {
     "seed": _curves_seed,
     "second_order": _curves_second_order,
@@ -470,7 +654,8 @@ UTE_METHODS: dict[str, Callable[..., ContactCurves]] = {
 
 
 def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point: int = 41,
-                   fields: _Fields | None = None) -> ContactCurves:
+                   fields: _Fields | None = None, spacing: str = "uniform",
+                   near_misses: bool = False) -> ContactCurves:
     """Instantaneous contact curves and the UTE of tooth pairs (seed §2.3.2.2, §4.4).
 
     Parameters
@@ -484,9 +669,22 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
         first order); ``"second_order"`` (default): corrected for the pinion's own
         separation from its conjugate (see :data:`UTE_METHODS`).
     n_point : int
-        Samples along each curve (≥ 3), uniform in u between the curve's ends.
+        Samples along each curve (≥ 3), between the curve's ends.
     fields : optional
         Pre-built splines (internal reuse).
+    spacing : str
+        Placing of the samples in u between the ends (see :data:`CURVE_SPACINGS`):
+        ``"uniform"`` (default) or ``"cosine"`` (Chebyshev–Lobatto: steps ~ π²/(4 n²) of
+        the span at the ends, π/(2n) in the middle), which resolves load rising into a
+        flank edge (the LTCA's segments).
+    near_misses : bool
+        Also the curves of pairs whose iso-line Q = q misses the contact region while the
+        real pinion, through its own gap ½ K t², still comes within some hundred µrad of
+        it (a pair entering or leaving at a corner of the flank; ``"second_order"`` only):
+        their iso-line is shifted by the t that minimises UTE_seed(q + t) + ½ K t², so
+        their curve, separation and UTE vary continuously with q. Default False: such a
+        pair is out of mesh (NaN), the seed's convention for the UTCA; the LTCA sets it,
+        so that the load of a leaving pair fades instead of vanishing.
 
     Returns
     -------
@@ -495,8 +693,8 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
     Raises
     ------
     InputError
-        For ``n_point`` < 3, non-finite targets or an unknown method (the message lists
-        the methods).
+        For ``n_point`` < 3, non-finite targets, an unknown method or spacing (the
+        message lists the accepted ones).
     ModelUnavailableError
         If Q is not monotone along the profile direction.
 
@@ -506,8 +704,11 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
     plane and then onto the ease-off; its lowest point H gives the UTE.
     """
     tgt, f = _checked(eo, target, method, n_point, fields)
+    if spacing not in CURVE_SPACINGS:
+        raise InputError(f"spacing: must be one of {sorted(CURVE_SPACINGS)}, got {spacing!r}")
     batch = tgt.shape
-    cc = UTE_METHODS[method](f, tgt.reshape(-1), int(n_point))
+    cc = UTE_METHODS[method](f, tgt.reshape(-1), CURVE_SPACINGS[spacing](int(n_point)),
+                             near_misses=near_misses)
     return ContactCurves(*(np.reshape(a, batch + np.shape(a)[1:]) for a in cc))
 
 
@@ -549,7 +750,8 @@ def pair_transmission_error(eo: EaseOff, roll, *, method: str = "second_order",
     """
     tgt, f = _checked(eo, roll, method, n_point, fields)
     # the UTE only: the flank point, normal and arm along the curves are not evaluated
-    cc = UTE_METHODS[method](f, tgt.reshape(-1), int(n_point), flank_fields=False)
+    cc = UTE_METHODS[method](f, tgt.reshape(-1), CURVE_SPACINGS["uniform"](int(n_point)),
+                             flank_fields=False)
     return cc.ute.reshape(tgt.shape)
 
 

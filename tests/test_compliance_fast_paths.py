@@ -192,7 +192,7 @@ def test_segment_geometry_cycle_reuse_equals_direct():
     cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
     target = roll[:, None] - (cycle[:, None] + pairs[None, :]) * eo.pitch
     rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
-    direct = _segment_geometry(case, eo, target, rp, 6)
+    direct = _segment_geometry(case, eo, target, rp, 6, "cosine")
     for key in ("midpoint_pair", "ends_pair", "normal_pair", "length", "moment_arm", "lag",
                 "r_eq", "ute", "pinion_rotation"):
         # the second cycle's targets differ from the first's by round-off (~1e-16 rad);

@@ -102,8 +102,8 @@ def test_lte_grows_monotonically_and_nearly_linearly_with_torque():
     slopes = np.diff(mean) / np.diff(torques)
     overall = (mean[-1] - mean[0]) / (torques[-1] - torques[0])
     assert np.all(np.abs(slopes / overall - 1) < 0.4)
-    # the contact spreads: more segments carry load as the torque rises
-    loaded = (ds["contact"] > 0).sum(("roll", "pair", "segment")).values
+    # the contact spreads: the loaded length of the contact lines grows with the torque
+    loaded = ((ds["contact"] > 0) * ds["segment_length"]).sum(("roll", "pair", "segment")).values
     assert np.all(np.diff(loaded) > 0)
 
 
@@ -115,7 +115,10 @@ def test_one_more_pair_changes_nothing():
 
 
 def test_segment_refinement_converges():
-    # doubling the segments per curve changes LTE by < 0.5 µrad (seed-scale resolution)
+    # the issue's bounds: doubling the segments per curve changes the LTE by < 0.5 µrad and
+    # the peak pressure by < 2 % (measured on this crowned hypoid at 150 N·m: 0.25 µrad,
+    # 1.0 %; the peak sits on the entering pair's first segment at the gear tip, where the
+    # cosine spacing makes that segment ~1/S² of the curve)
     a = loaded_tca(
         _case(), [150.0], options=dataclasses.replace(SMALL, segments=20), easeoff=_easeoff()
     )
@@ -124,7 +127,7 @@ def test_segment_refinement_converges():
     )
     assert float(np.abs(a["transmission_error"] - b["transmission_error"]).max()) < 0.5
     pa, pb = float(a["pressure_max"].max()), float(b["pressure_max"].max())
-    assert abs(pa / pb - 1) < 0.05
+    assert abs(pa / pb - 1) < 0.02
 
 
 @pytest.mark.parametrize("solver", available_solvers())
@@ -141,8 +144,9 @@ def test_every_solver_gives_the_same_lte(solver):
 
 
 def _pattern_centre(ds):
-    """Pressure-weighted lengthwise place (toe 0 … heel 1) of the loaded segments."""
-    p = ds["pressure_max"].fillna(0.0)
+    """Pressure-weighted lengthwise place (toe 0 … heel 1) of the loaded segments (weight:
+    pressure × segment length, as the segments are graded towards the curve ends)."""
+    p = ds["pressure_max"].fillna(0.0) * ds["segment_length"].fillna(0.0)
     u = ds["segment_u"].broadcast_like(p).fillna(0.0)
     return float((p * u).sum() / p.sum())
 
