@@ -40,7 +40,7 @@ import xarray as xr
 from scipy.interpolate import RectBivariateSpline
 
 from contact.compliance.hertz import hertz_half_width, weber_compliance
-from contact.compliance.mesh import ContactSegments, mesh_compliance, pair_compliance_model
+from contact.compliance.mesh import ContactSegments, mesh_compliance_many, pair_compliance_model
 from contact.easeoff import EaseOff, _fractions, _rotate, ease_off
 from contact.io import data_var as _var
 from contact.problem import ContactProblem
@@ -527,6 +527,32 @@ def loaded_tca(
     def limit_of(T: float) -> float:
         return opts.separation_limit or (0.05 + 0.15 * T * eo.ratio / 1000.0)
 
+    # compliance once per computed roll for the widest selection (the largest torque's
+    # limit; a smaller selection's structural compliance is its sub-matrix), all rolls'
+    # segments mapped onto the shells in one batch (mesh_compliance_many)
+    ok_all = (np.isfinite(sep_all) & np.isfinite(seg["r_eq"]) & (seg["length"] > 0))
+    wide_all = ok_all & (sep_all <= max(limit_of(T) for T in torques))
+    computed = [j for j in range(J) if int(seg["source"][j]) == j and wide_all[j].any()]
+    batch = []
+    for j in computed:
+        wk, ws = np.nonzero(wide_all[j])
+        batch.append(ContactSegments(
+            midpoints=seg["midpoint_pair"][j, wk, ws],
+            ends=seg["ends_pair"][j, wk, ws],
+            normals=seg["normal_pair"][j, wk, ws],
+            length=seg["length"][j, wk, ws],
+            r_eq=seg["r_eq"][j, wk, ws],
+            pair_index=np.asarray(opts.pairs)[wk],
+            # (Weber's part is replaced below; a unit line load keeps it defined)
+            load=seg["length"][j, wk, ws],
+            pinion_rotation=float(seg["pinion_rotation"][j]),
+            gear_rotation=float(seg["gear_rotation"][j]),
+        ))
+    structural = {}
+    for j, (C_full, info) in zip(computed, mesh_compliance_many(case, batch, model=model),
+                                 strict=True):
+        structural[j] = (C_full - info["weber"], info["weber_depth"])
+        compliance_time[j] = info["time"]
     problems: dict[tuple[int, int], ContactProblem] = {}
     for j in range(J):
         src = int(seg["source"][j])
@@ -544,30 +570,9 @@ def loaded_tca(
             if bar is not None:
                 bar.update()
             continue
-        ok = np.isfinite(sep_all[j]) & np.isfinite(seg["r_eq"][j]) & (seg["length"][j] > 0)
-        # compliance once per roll for the widest selection (the largest torque's limit):
-        # a smaller selection's structural compliance is its sub-matrix
-        wide = ok & (sep_all[j] <= max(limit_of(T) for T in torques))
-        widx = np.argwhere(wide)
-        if widx.size:
-            tc = time.perf_counter()
-            wk, ws = widx[:, 0], widx[:, 1]
-            segs = ContactSegments(
-                midpoints=seg["midpoint_pair"][j, wk, ws],
-                ends=seg["ends_pair"][j, wk, ws],
-                normals=seg["normal_pair"][j, wk, ws],
-                length=seg["length"][j, wk, ws],
-                r_eq=seg["r_eq"][j, wk, ws],
-                pair_index=np.asarray(opts.pairs)[wk],
-                # (Weber's part is replaced below; a unit line load keeps it defined)
-                load=seg["length"][j, wk, ws],
-                pinion_rotation=float(seg["pinion_rotation"][j]),
-                gear_rotation=float(seg["gear_rotation"][j]),
-            )
-            C_full, info = mesh_compliance(case, segs, model=model)
-            C_wide = C_full - info["weber"]
-            depth_wide = info["weber_depth"]
-            compliance_time[j] = time.perf_counter() - tc
+        ok, wide = ok_all[j], wide_all[j]
+        if j in structural:
+            C_wide, depth_wide = structural[j]
         for it, T in enumerate(torques):
             sel = ok & (sep_all[j] <= limit_of(T))
             idx = np.argwhere(sel)  # (N, 2): pair index, segment index

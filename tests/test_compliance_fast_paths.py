@@ -273,3 +273,36 @@ def test_loaded_tca_given_transitions_equals_computed():
     np.testing.assert_array_equal(given["force"].values, computed["force"].values)
     with pytest.raises(InputError, match="transitions"):
         loaded_tca(case, 200.0, options=opts, easeoff=eo, transitions="M1")
+
+
+def test_mesh_compliance_of_several_rolls_in_one_batch_equals_one_by_one():
+    """mesh_compliance_many maps all rolls' segments onto the shells in one batch and
+    solves all their tooth pairs' shell loads together: each roll's matrices equal
+    mesh_compliance of that roll alone to round-off (1e-12 relative: the batched Newton
+    and RK4 iterate until the slowest point converges, the triangular solve is the same)."""
+    from contact.compliance.mesh import ContactSegments, mesh_compliance, mesh_compliance_many
+    from contact.easeoff import ease_off
+    from contact.ltca import segment_geometry
+
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+    eo = ease_off(case)
+    roll = 0.1 + np.arange(3) * eo.pitch / 3
+    pairs = np.array([-1, 0, 1])
+    seg = segment_geometry(case, eo, roll, pairs, 8)
+    batch = []
+    for j in range(roll.size):
+        k, s = np.nonzero(np.isfinite(seg["r_eq"][j]) & (seg["length"][j] > 0))
+        batch.append(ContactSegments(
+            midpoints=seg["midpoint_pair"][j, k, s], ends=seg["ends_pair"][j, k, s],
+            normals=seg["normal_pair"][j, k, s], length=seg["length"][j, k, s],
+            r_eq=seg["r_eq"][j, k, s], pair_index=pairs[k], load=seg["length"][j, k, s],
+            pinion_rotation=float(seg["pinion_rotation"][j]),
+            gear_rotation=float(seg["gear_rotation"][j])))
+    # a roll with two tooth pairs in mesh: blocks of several pairs per roll are covered
+    assert max(len(np.unique(b.pair_index)) for b in batch) >= 2
+    many = mesh_compliance_many(case, batch)
+    for b, (C, info) in zip(batch, many, strict=True):
+        C1, info1 = mesh_compliance(case, b)
+        np.testing.assert_allclose(C, C1, rtol=1e-12, atol=1e-12 * np.abs(C1).max())
+        np.testing.assert_allclose(info["weber_depth"], info1["weber_depth"], rtol=1e-12)
+    assert mesh_compliance_many(case, []) == []

@@ -61,6 +61,7 @@ __all__ = [
     "PairComplianceModel",
     "clear_model_cache",
     "mesh_compliance",
+    "mesh_compliance_many",
     "pair_compliance_model",
 ]
 
@@ -361,42 +362,119 @@ def mesh_compliance(
     depths are the members' contact-to-centreline distances
     (:func:`contact.compliance.tooth.weber_depth`).
     """
+    return mesh_compliance_many(case, [contact_segments], model=model, weber_kind=weber_kind,
+                                load_floor=load_floor, **model_options)[0]
+
+
+def mesh_compliance_many(
+    case: Case,
+    segments: list[ContactSegments],
+    *,
+    model: PairComplianceModel | None = None,
+    weber_kind: str = "secant",
+    load_floor: float = 1.0,
+    **model_options: Any,
+) -> list[tuple[np.ndarray, dict[str, Any]]]:
+    """:func:`mesh_compliance` of several roll positions at once.
+
+    The segments of all roll positions (each with its own member rotations) are mapped
+    onto both members' shells in ONE batch (the mapping's cost is mostly per call, not
+    per point); the matrices are then assembled per roll position. Each result equals
+    :func:`mesh_compliance` of that roll position to round-off.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    segments : list of ContactSegments — one per roll position
+    model, weber_kind, load_floor, **model_options
+        As :func:`mesh_compliance`.
+
+    Returns
+    -------
+    list of (C, info)
+        As :func:`mesh_compliance`, one per roll position; ``info["time"]`` [s] is the
+        batch's time shared evenly among them.
+
+    Raises
+    ------
+    InputError
+        As :func:`mesh_compliance` (the message names the point within its roll).
+    """
     t0 = time.perf_counter()
-    if not isinstance(contact_segments, ContactSegments):
+    if not all(isinstance(seg, ContactSegments) for seg in segments):
         raise InputError("contact_segments must be a ContactSegments")
-    seg = contact_segments
     if model is None:
         model = pair_compliance_model(case, **model_options)
     elif model_options:
         raise InputError(f"give either model or model options, not both: {sorted(model_options)}")
-    n = seg.size
-    t_p, t_g = case_transforms(case, seg.pinion_rotation, seg.gear_rotation)
-    ends_flat, end_index = _distinct_ends(seg.ends)
-    points = {}
-    ends = {}
     # midpoints may overhang slightly too: the LTCA takes them on the gear side, and the
     # pinion mate differs by the ease-off (≤ tens of µm) along the normal; they are
-    # clipped onto the tooth like segment ends. Midpoints and ends of both members in one
-    # batch (_shell_points_many); an end shared by consecutive segments is mapped once.
+    # clipped onto the tooth like segment ends. Midpoints and ends of both members and of
+    # every roll position in one batch (_shell_points_many); an end shared by consecutive
+    # segments is mapped once.
+    if not segments:
+        return []
     names = ("pinion", "gear")
-    mapped = _shell_points_many(
-        [(model.member(name), seg.midpoints, sign * seg.normals, transform, ends_flat)
-         for name, transform, sign in zip(names, (t_p, t_g), (1.0, -1.0), strict=True)],
-        END_TOLERANCE)
-    for name, (mids, distinct) in zip(names, mapped, strict=True):
-        points[name] = mids
-        ends[name] = _take(distinct, end_index)
+    jobs, end_indices = [], []
+    for seg in segments:
+        t_p, t_g = case_transforms(case, seg.pinion_rotation, seg.gear_rotation)
+        ends_flat, end_index = _distinct_ends(seg.ends)
+        end_indices.append(end_index)
+        jobs += [(model.member(name), seg.midpoints, sign * seg.normals, transform, ends_flat)
+                 for name, transform, sign in zip(names, (t_p, t_g), (1.0, -1.0),
+                                                  strict=True)]
+    mapped = _shell_points_many(jobs, END_TOLERANCE) if jobs else []
+    points = [{name: mapped[2 * r + i][0] for i, name in enumerate(names)}
+              for r in range(len(segments))]
+    ends = [{name: _take(mapped[2 * r + i][1], end_indices[r]) for i, name in enumerate(names)}
+            for r in range(len(segments))]
+    # the shell matrices of every tooth pair of every roll position: one set of load
+    # vectors and one triangular solve per member (the shell's stiffness does not depend
+    # on the roll position), one block per (roll, pair)
+    blocks = [{int(pair): np.flatnonzero(seg.pair_index == pair)
+               for pair in np.unique(seg.pair_index)} for seg in segments]
+    offsets = np.concatenate([[0], np.cumsum([seg.size for seg in segments])])
+    flat_blocks = [offsets[r] + idx for r, b in enumerate(blocks) for idx in b.values()]
+    shell = {}
+    for name in names:
+        mids = _concat([pt[name] for pt in points])
+        # the first ends of all rolls, then their second ends (_shell_matrices' order)
+        pairs = list(zip(ends, segments, strict=True))
+        both = _concat([_take(e[name], np.arange(sg.size)) for e, sg in pairs]
+                       + [_take(e[name], sg.size + np.arange(sg.size)) for e, sg in pairs])
+        shell[name] = iter(_shell_matrices(model.member(name), mids, both, model.theory,
+                                           model.n_height, model.n_face, flat_blocks)
+                           if flat_blocks else [])
+    out = []
+    for r, seg in enumerate(segments):
+        mats = {name: [next(shell[name]) for _ in blocks[r]] for name in names}
+        out.append(_assemble(seg, model, points[r], blocks[r], mats, weber_kind, load_floor))
+    share = (time.perf_counter() - t0) / max(len(segments), 1)
+    for _, info in out:
+        info["time"] = share
+        log.debug("mesh compliance: %d segments in %d tooth pairs, %.4f s",
+                  len(info["weber_depth"]), len(info["blocks"]), share)
+    return out
+
+
+def _concat(parts: list[ShellPoints]) -> ShellPoints:
+    """ShellPoints of several sets, one after the other."""
+    return ShellPoints(*(None if any(p[k] is None for p in parts)
+                         else np.concatenate([p[k] for p in parts])
+                         for k in range(len(ShellPoints._fields))))
+
+
+def _assemble(seg: ContactSegments, model: PairComplianceModel, points: dict, blocks: dict,
+              mats: dict, weber_kind: str, load_floor: float) -> tuple[np.ndarray, dict]:
+    """The compliance matrices of one roll position from its mapped shell points and its
+    tooth pairs' shell matrices (``mats[member]``, one per block of ``blocks``)."""
+    n = seg.size
     parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",
                                            "gear_foundation")}
-    blocks = {int(pair): np.flatnonzero(seg.pair_index == pair)
-              for pair in np.unique(seg.pair_index)}
     asym = 0.0
     for name in ("pinion", "gear"):
         data = model.member(name)
-        # all tooth pairs' segments solved together (one cho_solve), one block each
-        mats = _shell_matrices(data, points[name], ends[name], model.theory, model.n_height,
-                               model.n_face, list(blocks.values()))
-        for idx, cm in zip(blocks.values(), mats, strict=True):
+        for idx, cm in zip(blocks.values(), mats[name], strict=True):
             ix = np.ix_(idx, idx)
             parts[f"{name}_shell"][ix] = cm.matrix
             parts[f"{name}_foundation"][ix] = member_foundation(data, _take(points[name], idx))
@@ -413,8 +491,5 @@ def mesh_compliance(
     total = 0.5 * (total + total.T)
     info: dict[str, Any] = dict(parts)
     info.update(asymmetry=asym, pinion_points=points["pinion"], gear_points=points["gear"],
-                weber_depth=depth, blocks=blocks, model=model,
-                time=time.perf_counter() - t0)
-    log.debug("mesh compliance: %d segments in %d tooth pairs, %.4f s", n, len(blocks),
-              info["time"])
+                weber_depth=depth, blocks=blocks, model=model)
     return total, info
