@@ -1,6 +1,6 @@
 """LTCA benchmark: time of each stage of ``ltca run`` on a case, against the seed's timing.
 
-    python benchmarks/ltca.py [CASE] [--torque 250] [--rolls-per-cycle 20]
+    python benchmarks/ltca.py [CASE] [--torque 250] [--rolls-per-cycle 20] [--repeat 5]
 
 Prints the wall time of each stage (geometry, ease-off, UTCA, LTCA with its compliance
 assembly and contact solves per roll position) for one torque, and the ratios to the
@@ -9,7 +9,9 @@ on a 3.0 GHz PC, seed §3.4). BLAS is limited to one thread (one core, as the ta
 are stated: whole analysis ≤ 1 s, ≤ 5 ms per roll position). The LTCA is timed as
 :func:`contact.pipeline.run_analysis` runs it (reusing the UTCA's transitions M1, M2).
 Rolls whole mesh cycles apart repeat an earlier roll and are copied, not recomputed: the
-table gives the time per roll position (LTCA / all rolls) and per computed roll.
+table gives the time per roll position (LTCA / all rolls) and per computed roll. The
+analysis runs ``--repeat`` times after a warm-up and the fastest run is reported (the
+machines here are shared: the minimum is the least disturbed measurement).
 """
 
 from __future__ import annotations
@@ -35,14 +37,20 @@ def main() -> None:
     parser.add_argument("case", nargs="?", default=None)
     parser.add_argument("--torque", type=float, default=250.0)
     parser.add_argument("--rolls-per-cycle", type=int, default=20)
+    parser.add_argument("--repeat", type=int, default=5)
     args = parser.parse_args()
     case = resolve_case(args.case)
     opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle)
     run_analysis(case, [args.torque], options=opts)  # warm-up: imports, caches
-    tree = run_analysis(case, [args.torque], options=opts)
+    best = None
+    for _ in range(max(args.repeat, 1)):
+        run = run_analysis(case, [args.torque], options=opts)
+        times = {k[5:-2]: float(v) for k, v in run.attrs.items() if k.startswith("time_")}
+        if best is None or sum(times.values()) < sum(best[1].values()):
+            best = (run, times)
+    tree, t = best
     lt = tree["ltca"].dataset
     n_roll = lt.sizes["roll"]
-    t = {k[5:-2]: float(v) for k, v in tree.attrs.items() if k.startswith("time_")}
     compliance = float(lt["compliance_time"].sum())
     # rolls whole mesh cycles apart repeat an earlier roll's problem and are not recomputed
     n_computed = max(int((lt["compliance_time"] > 0).sum()), 1)
@@ -64,7 +72,7 @@ def main() -> None:
         ("whole analysis", total, f"{SEED_TOTAL_S / total:.0f}x"),
     ]
     print(f"case {case.name}, T_p = {args.torque:g} N m, {n_roll} roll positions, "
-          f"solver {lt.attrs['solver']}")
+          f"solver {lt.attrs['solver']}, fastest of {max(args.repeat, 1)} runs")
     print(tabulate(rows, headers=["stage", "time [s]", "faster than the seed"],
                    tablefmt="github", floatfmt=".4f"))
     print("targets: whole analysis <= 1 s, <= 5 ms per roll position (one core)")

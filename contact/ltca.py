@@ -658,9 +658,10 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
     share = pair_torque / np.maximum(pair_torque.sum(axis=-1, keepdims=True), 1e-300)
     share = np.where(found[..., None] > 0, share, np.nan)
     lte = (ute_env[None, :] + rotation) * 1e6  # urad
-    # edge contact: a loaded first or last segment of a curve (the flank boundary)
+    # edge contact: the first or last segment of a curve (on the flank boundary: the gear
+    # blank's edge where the curve ends, the pinion blank's edge where it is clipped) loaded
     loaded = contact > 0
-    edge = (loaded[..., 0] | loaded[..., -1]).astype(np.int8)
+    edge = _edge_loaded(loaded, np.isfinite(seg["r_eq"]) & (seg["length"] > 0)).astype(np.int8)
     pairs_in_contact = np.sum(np.any(loaded, axis=-1), axis=-1)
     # LTE summary over the mesh cycles
     harm = np.full((NT, 3), np.nan)
@@ -788,6 +789,23 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
         "gear_origin_mm": np.asarray(eo.kinematics.gear_origin, float),
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _edge_loaded(loaded: np.ndarray, valid: np.ndarray) -> np.ndarray:
+    """(..., K) whether the first or last valid segment of each curve is loaded.
+
+    ``loaded`` (NT, J, K, S) contact flags; ``valid`` (J, K, S) the segments of each
+    curve (its ends lie on the flank boundary).
+    """
+    S = valid.shape[-1]
+    have = valid.any(axis=-1)
+    first = np.argmax(valid, axis=-1)
+    last = S - 1 - np.argmax(valid[..., ::-1], axis=-1)
+    at_first = np.take_along_axis(loaded, np.broadcast_to(first[None, ..., None],
+                                                          (*loaded.shape[:-1], 1)), -1)
+    at_last = np.take_along_axis(loaded, np.broadcast_to(last[None, ..., None],
+                                                         (*loaded.shape[:-1], 1)), -1)
+    return (at_first[..., 0] | at_last[..., 0]) & have[None]
 
 
 def json_options(opts: LTCAOptions) -> str:

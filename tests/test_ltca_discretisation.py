@@ -213,3 +213,26 @@ def test_spacing_changes_results_only_within_the_discretisation_error():
     b = loaded_tca(case, [250.0], options=dataclasses.replace(base, spacing="uniform"),
                    easeoff=eo)
     assert np.abs(a["transmission_error"] - b["transmission_error"]).max().item() < 0.5
+
+
+def test_edge_contact_flags_the_clipped_pinion_tip_end():
+    """The edge flag looks at each curve's first and last *valid* segment: the end on the
+    gear blank's edge and the end clipped at the real pinion's blank edge (before, only
+    the first and last array slots were looked at, which a clipped curve leaves empty).
+    Checked against a direct reading of the stored data, and physically: at 500 N·m the
+    leaving pair loads the pinion's tip edge (a flagged end at gear profile v < 0.6 that
+    is not the last slot) in some roll positions."""
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=10, segments=16)
+    ds = loaded_tca(_case(), [500.0], options=opts, easeoff=_easeoff())
+    valid = (ds["equivalent_radius"].notnull() & (ds["segment_length"] > 0)).values
+    loaded = ds["contact"].values[0] > 0
+    v = ds["segment_v"].values
+    clipped_tip = 0
+    for j in range(valid.shape[0]):
+        for k in range(valid.shape[1]):
+            idx = np.flatnonzero(valid[j, k])
+            expect = bool(idx.size) and bool(loaded[j, k, idx[0]] or loaded[j, k, idx[-1]])
+            assert bool(ds["edge_contact"].values[0, j, k]) == expect
+            if idx.size and idx[-1] < valid.shape[2] - 1 and loaded[j, k, idx[-1]]:
+                clipped_tip += int(v[j, k, idx[-1]] < 0.6)
+    assert clipped_tip > 0
