@@ -193,8 +193,10 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     -------
     dict of arrays, shapes (J, K, S) (+ (3,) for vectors); NaN where a pair has no
     curve: ``midpoint`` (gear frame) and ``midpoint_pair`` (pair frame) [mm],
-    ``ends_pair`` (J, K, S, 2, 3) [mm], ``normal_pair`` [1] (out of the pinion),
-    ``length`` [mm], ``moment_arm`` [mm], ``lag`` [rad] (ε + gap of the segment),
+    ``ends_pair`` (J, K, S, 2, 3) [mm] (of the part inside the pinion blank),
+    ``normal_pair`` [1] (out of the pinion), ``length`` [mm] (0 where the segment lies
+    wholly beyond the pinion blank), ``moment_arm`` [mm], ``lag`` [rad] (mean ε + gap
+    over the segment),
     ``u``, ``v`` [1] gear projection-plane fractions, ``r_eq`` [mm]; (J, K): ``ute`` [rad];
     (J,): ``pinion_rotation``, ``gear_rotation`` [rad] (of the cycle's reference pair, to
     which each pair's points are consistent: pairs sit whole pitches apart), ``source``
