@@ -567,7 +567,6 @@ def loaded_tca(
         structural[j] = (C_full - info["weber"], info["weber_depth"])
         compliance_time[j] = info["time"]
     problems: dict[tuple[int, int], ContactProblem] = {}
-    last_w: list[np.ndarray | None] = [None] * NT  # load per length of the last roll [N/mm]
     for j in range(J):
         src = int(seg["source"][j])
         if src != j:
@@ -609,12 +608,7 @@ def loaded_tca(
             # the secant compliance is frozen at the cap (logged)
             e_star = E / (2 * (1 - nu**2))
             w_cap = np.pi * e_star * np.min(depth, axis=1) ** 2 / (4 * Req)
-            # first Weber secant: the previous computed roll's load per length on the same
-            # (pair, segment) where it had one (the loads move little between rolls: ~2
-            # fewer iterations), else the torque shared evenly
-            even = Tn / max(float(R.sum()), 1e-12)
-            w_prev = last_w[it][kk, ss] if last_w[it] is not None else np.full(kk.size, np.nan)
-            load = np.minimum(np.where(np.isfinite(w_prev), w_prev * L, even), w_cap * L)
+            load = np.minimum(np.full(kk.size, Tn / max(float(R.sum()), 1e-12)), w_cap * L)
             lte_prev = None
             sol = None
             for w_it in range(1, opts.max_weber_iterations + 1):
@@ -648,8 +642,6 @@ def loaded_tca(
                 continue
             F = sol.force
             rotation[it, j] = sol.rotation
-            last_w[it] = np.full((K, S), np.nan)
-            last_w[it][kk, ss] = F / L
             w = F / L
             b = hertz_half_width(np.maximum(w, 1e-12), Req, E, nu, E, nu)
             pmax = np.where(F > 0, 2 * w / (np.pi * b), 0.0)
