@@ -567,6 +567,7 @@ def loaded_tca(
         structural[j] = (C_full - info["weber"], info["weber_depth"])
         compliance_time[j] = info["time"]
     problems: dict[tuple[int, int], ContactProblem] = {}
+    last_force: list[np.ndarray | None] = [None] * NT  # forces of the last computed roll [N]
     for j in range(J):
         src = int(seg["source"][j])
         if src != j:
@@ -611,12 +612,18 @@ def loaded_tca(
             load = np.minimum(np.full(kk.size, Tn / max(float(R.sum()), 1e-12)), w_cap * L)
             lte_prev = None
             sol = None
+            # warm start: the previous computed roll's forces on the same (pair, segment),
+            # then each Weber iteration's own solution (the backends that take a start use
+            # it to begin nearer the answer; the solution itself does not depend on it)
+            start = (None if last_force[it] is None
+                     else np.nan_to_num(last_force[it][kk, ss]))
             for w_it in range(1, opts.max_weber_iterations + 1):
                 cw = weber_compliance(load, L, depth[:, 0], depth[:, 1], e1=E, nu1=nu, e2=E,
                                       nu2=nu, r_eq=Req, kind="secant")
                 problem = ContactProblem(C_struct + np.diag(cw), s, R, Tn,
                                          name=f"{case.name} roll {j} T {T:g}")
-                sol = solve_contact(problem, opts.solver, initial=sol)
+                sol = solve_contact(problem, opts.solver,
+                                    initial=sol if sol is not None else start)
                 solve_time[it, j] += sol.solve_time + sol.build_time
                 if not sol.found:
                     break
@@ -642,6 +649,8 @@ def loaded_tca(
                 continue
             F = sol.force
             rotation[it, j] = sol.rotation
+            last_force[it] = np.full((K, S), np.nan)
+            last_force[it][kk, ss] = F
             w = F / L
             b = hertz_half_width(np.maximum(w, 1e-12), Req, E, nu, E, nu)
             pmax = np.where(F > 0, 2 * w / (np.pi * b), 0.0)

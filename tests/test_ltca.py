@@ -251,3 +251,25 @@ def test_run_analysis_adds_friction_with_a_speed():
     assert {"efficiency", "power_loss", "friction_coefficient", "lambda_ratio"} <= set(fr)
     assert 0.9 < float(fr["efficiency_mean"].item()) < 1.0
     check_conventions(tree)
+
+
+def test_warm_start_from_the_previous_roll_leaves_the_solution_unchanged():
+    """Each roll's first solve starts from the previous roll's forces; the contact problem
+    (C positive definite) has one solution, so a cold solve of every final problem must
+    give the same forces (1e-9 of the largest force: round-off of the exact solver)."""
+    from contact.solvers import solve_contact
+
+    problems = []
+    ds = loaded_tca(_case(), [150.0], options=SMALL, easeoff=_easeoff(),
+                    problem_sink=problems.append)
+    assert len(problems) == ds.sizes["roll"]
+    for j, problem in enumerate(problems):
+        cold = solve_contact(problem, "active_set")
+        assert cold.found
+        np.testing.assert_allclose(cold.rotation * 1e6,
+                                   ds["loaded_rotation"].isel(torque=0, roll=j).item(),
+                                   rtol=1e-9)
+        # the problem's segments are the in-problem ones in (pair, segment) order
+        forces = ds["force"].isel(torque=0, roll=j).values
+        stored = forces[ds["in_problem"].isel(torque=0, roll=j).values > 0]
+        np.testing.assert_allclose(cold.force, stored, rtol=0, atol=1e-9 * cold.force.max())
