@@ -458,21 +458,16 @@ def _short_curves(f: _Fields, t: np.ndarray, uc: np.ndarray, vc: np.ndarray,
     v_best = vcc[np.arange(cand.size), best]
     v_best = np.where(np.isfinite(v_best), v_best, 0.5 * (f.v[0] + f.v[-1]))
 
-    n = _REFINE_POINTS
-    u_star = uc[best]
-    out_lo, out_hi = lo, hi  # the coarse neighbours: outside, they bracket the ends
-    for _ in range(_SHORT_ITER):  # successive grids: each narrows to 2/(n − 1) = 1/8
-        x = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, n)[None, :]
-        vx = f._newton_v(x.ravel(), np.repeat(tt, n), np.repeat(v_best, n))
-        mx = f.measure(x.ravel(), vx).reshape(-1, n)
-        i = np.argmax(mx, axis=1)
-        u_star = x[np.arange(tt.size), i]
-        step = (hi - lo) / (n - 1)
-        lo, hi = np.maximum(u_star - step, lo), np.minimum(u_star + step, hi)
+    def minus_measure(rows, x):  # (M, n) places → −measure (the grid search minimises)
+        n = x.shape[1]
+        vx = f._newton_v(x.ravel(), np.repeat(tt[rows], n), np.repeat(v_best[rows], n))
+        return -f.measure(x.ravel(), vx).reshape(-1, n)
+
+    u_star, _ = _grid_minimum(minus_measure, lo, hi, uc[best], _SHORT_ITER)
     v_star = f._newton_v(u_star, tt, v_best.copy())
     m_star = f.measure(u_star, v_star)
     ok = m_star >= 0
-    return cand[ok], u_star[ok], v_star[ok], out_lo[ok], out_hi[ok]
+    return cand[ok], u_star[ok], v_star[ok], lo[ok], hi[ok]
 
 
 def _curve_fields(f: _Fields, cc: ContactCurves) -> ContactCurves:
@@ -616,20 +611,45 @@ def _probe_shift(f: _Fields, t: np.ndarray):
         return np.where(np.isfinite(c), c, np.inf)
 
     tb = t[cand]
-    d_star = d0[cand]
-    lo, hi = d_star - 2 * dq, d_star + 2 * dq
-    found = np.zeros(cand.size, dtype=bool)
-    n = _REFINE_POINTS
-    for _ in range(_REFINE_ITER):  # each narrows the bracket to 2/(n − 1) of itself
-        x = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, n)[None, :]
-        c = cost(np.repeat(tb, n), x.ravel()).reshape(-1, n)
-        i = np.argmin(c, axis=1)
-        fin = np.isfinite(c[np.arange(tb.size), i])
-        found |= fin
-        d_star = np.where(fin, x[np.arange(tb.size), i], d_star)
-        step = (hi - lo) / (n - 1)
-        lo, hi = (np.where(fin, d_star - step, lo), np.where(fin, d_star + step, hi))
+
+    def grid_cost(rows, x):
+        return cost(np.repeat(tb[rows], x.shape[1]), x.ravel()).reshape(x.shape)
+
+    d_star, found = _grid_minimum(grid_cost, d0[cand] - 2 * dq, d0[cand] + 2 * dq, d0[cand],
+                                  _REFINE_ITER)
     return cand[found], d_star[found]
+
+
+def _grid_minimum(func, lo: np.ndarray, hi: np.ndarray, start: np.ndarray, iterations: int):
+    """Minimum of a function of one variable per row by successive grids.
+
+    Each pass evaluates ``func(rows, x)`` on :data:`_REFINE_POINTS` equally spaced places
+    x (M, n) of every row's bracket [lo, hi] and narrows the bracket to the best place ±
+    one step, i.e. to 2/(n − 1) of itself (robust where the function is infinite over
+    parts of the bracket, as where an iso-line misses the contact region). Rows whose
+    values are all infinite keep their bracket and ``start``.
+
+    Returns
+    -------
+    x : array (M,)
+        The best place of each row.
+    found : bool array (M,)
+        Whether a finite value was seen.
+    """
+    n = _REFINE_POINTS
+    x_star = np.array(start, dtype=float)
+    found = np.zeros(x_star.size, dtype=bool)
+    rows = np.arange(x_star.size)
+    for _ in range(iterations):
+        x = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, n)[None, :]
+        c = func(rows, x)
+        i = np.argmin(c, axis=1)
+        fin = np.isfinite(c[rows, i])
+        found |= fin
+        x_star = np.where(fin, x[rows, i], x_star)
+        step = (hi - lo) / (n - 1)
+        lo, hi = np.where(fin, x_star - step, lo), np.where(fin, x_star + step, hi)
+    return x_star, found
 
 
 def _put_rows(a: np.ndarray, rows: np.ndarray, b: np.ndarray) -> np.ndarray:
