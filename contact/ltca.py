@@ -254,7 +254,10 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     # inside the pinion blank, at the crossing of the blank measure, so the contact line
     # ends on the blank edge whatever the segment count
     a, b = quad.clip(_pinion_measure(case, kin, gear_to_pair(cc.position), phi))
-    inside = b - a > _MIN_CLIP
+    # a curve shrunk to a point (a pair just meeting a corner of the flank) has no
+    # segment either
+    whole = cc.position[..., 2::2, :] - cc.position[..., 0:-1:2, :]  # whole-segment chords
+    inside = (b - a > _MIN_CLIP) & (np.linalg.norm(whole, axis=-1) > 0)
     c = 0.5 * (a + b)  # collocation point: the middle of the segment's part in contact
     u = np.where(inside, quad.at(cc.u, c), np.nan)
     v = np.where(inside, quad.at(cc.v, c), np.nan)
@@ -272,15 +275,10 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     ends_pair = np.stack([gear_to_pair(end_a), gear_to_pair(end_b)], axis=-2)
     # the gear normal points out of the gear; the contact normal out of the pinion is −n_g
     n_pair = -gear_to_pair(nrm_g, vec=True)
-    # unit tangent of the chord (of the whole segment where it is clipped away); a curve
-    # shrunk to a point (a pair just meeting a corner of the flank) has none: left out
-    chord = np.where(inside[..., None], chord, quad.at(cc.position, np.ones_like(a))
-                     - quad.at(cc.position, np.zeros_like(a)))
+    # unit tangent of the chord (of the whole segment where it is clipped away)
+    chord = np.where(inside[..., None], chord, whole)
     norm = np.linalg.norm(chord, axis=-1, keepdims=True)
     tangent = chord / np.where(norm > 0, norm, np.nan)
-    degenerate = ~(norm[..., 0] > 0)
-    u = np.where(degenerate, np.nan, u)
-    v = np.where(degenerate, np.nan, v)
     t_pair = gear_to_pair(tangent, vec=True)
     # R_eq across the contact line from both real surfaces at the midpoints
     ok = np.isfinite(u) & np.isfinite(v)

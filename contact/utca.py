@@ -274,7 +274,6 @@ def _seed_places(f: _Fields, t: np.ndarray, frac: np.ndarray) -> ContactCurves:
     at the fractions ``frac`` (increasing from 0 to 1) of u between each curve's ends."""
     nb = t.size
     n_point = frac.size
-    uniform = bool(np.allclose(np.diff(frac), 1.0 / (n_point - 1), rtol=0, atol=1e-15))
     u0, u1 = float(f.u[0]), float(f.u[-1])
     nc = _COARSE_PER_CELL * (len(f.u) - 1) + 1
     uc = np.linspace(u0, u1, nc)
@@ -394,22 +393,15 @@ def _seed_places(f: _Fields, t: np.ndarray, frac: np.ndarray) -> ContactCurves:
             r = rows[inner]
             ki = k[inner]
             em, ec, ep = eps[r, ki - 1], eps[r, ki], eps[r, ki + 1]
-            if uniform:
-                den = em - 2 * ec + ep
-                okp = np.isfinite(den) & (den > 0)
-                x = np.clip(np.where(okp, 0.5 * (em - ep) / np.where(okp, den, 1.0), 0.0),
-                            -0.5, 0.5)
-                ur = up[r, ki] + x * (up[r, ki + 1] - up[r, ki])
-            else:
-                # vertex of the parabola through three unequally spaced samples, held
-                # within half a step of the lowest
-                h1 = up[r, ki] - up[r, ki - 1]
-                h2 = up[r, ki + 1] - up[r, ki]
-                a1, a2 = em - ec, ep - ec
-                den = 2 * (h2 * a1 + h1 * a2)
-                okp = np.isfinite(den) & (den > 0)
-                d = np.where(okp, (h2**2 * a1 - h1**2 * a2) / np.where(okp, den, 1.0), 0.0)
-                ur = up[r, ki] + np.clip(d, -0.5 * h1, 0.5 * h2)
+            # vertex of the parabola through the three samples (steps h1, h2, equal or
+            # not), held within half a step of the lowest
+            h1 = up[r, ki] - up[r, ki - 1]
+            h2 = up[r, ki + 1] - up[r, ki]
+            a1, a2 = em - ec, ep - ec
+            den = 2 * (h2 * a1 + h1 * a2)
+            okp = np.isfinite(den) & (den > 0)
+            d = np.where(okp, (h2**2 * a1 - h1**2 * a2) / np.where(okp, den, 1.0), 0.0)
+            ur = up[r, ki] + np.clip(d, -0.5 * h1, 0.5 * h2)
             vr = f.solve_v(ur, t[r], v_start=vp[r, ki])
             good = np.isfinite(vr)
             er = np.where(good, f.eps.ev(ur, np.where(good, vr, f.v[0])), np.inf)
@@ -551,9 +543,7 @@ def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
     us = np.where(fin, cc.u, f.u[0])
     vs = np.where(fin, cc.v, f.v[0])
     gap = np.where(fin, 0.5 * f.gap.ev(us, vs) * shift[:, None] ** 2, np.nan)
-    hu = np.where(np.isfinite(cc.contact_u), cc.contact_u, f.u[0])
-    hv = np.where(np.isfinite(cc.contact_v), cc.contact_v, f.v[0])
-    ute = cc.ute + 0.5 * f.gap.ev(hu, hv) * shift ** 2
+    ute = cc.ute + 0.5 * _gap_at_contact(f, cc) * shift ** 2
     return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
 
 
@@ -604,9 +594,7 @@ def _probe_shift(f: _Fields, t: np.ndarray):
     def cost(tc, dd):
         """UTE_seed(t + d) + ½ K d² (inf where the iso-line misses the region or K ≤ 0)."""
         pr = _seed_places(f, tc + dd, frac)
-        hu = np.where(np.isfinite(pr.contact_u), pr.contact_u, f.u[0])
-        hv = np.where(np.isfinite(pr.contact_v), pr.contact_v, f.v[0])
-        k = f.gap.ev(hu, hv)
+        k = _gap_at_contact(f, pr)
         c = np.where(k > 0, pr.ute + 0.5 * k * dd**2, np.nan)
         return np.where(np.isfinite(c), c, np.inf)
 
@@ -650,6 +638,14 @@ def _grid_minimum(func, lo: np.ndarray, hi: np.ndarray, start: np.ndarray, itera
         step = (hi - lo) / (n - 1)
         lo, hi = np.where(fin, x_star - step, lo), np.where(fin, x_star + step, hi)
     return x_star, found
+
+
+def _gap_at_contact(f: _Fields, cc: ContactCurves) -> np.ndarray:
+    """The pinion's gap curvature K [1/rad] at each curve's contact point H (at the
+    grid's first node where a curve has none; its UTE is NaN there anyway)."""
+    hu = np.where(np.isfinite(cc.contact_u), cc.contact_u, f.u[0])
+    hv = np.where(np.isfinite(cc.contact_v), cc.contact_v, f.v[0])
+    return f.gap.ev(hu, hv)
 
 
 def _put_rows(a: np.ndarray, rows: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -423,11 +423,9 @@ def mesh_compliance_many(
         jobs += [(model.member(name), seg.midpoints, sign * seg.normals, transform, ends_flat)
                  for name, transform, sign in zip(names, (t_p, t_g), (1.0, -1.0),
                                                   strict=True)]
-    mapped = _shell_points_many(jobs, END_TOLERANCE) if jobs else []
+    mapped = _shell_points_many(jobs, END_TOLERANCE)
     points = [{name: mapped[2 * r + i][0] for i, name in enumerate(names)}
               for r in range(len(segments))]
-    ends = [{name: _take(mapped[2 * r + i][1], end_indices[r]) for i, name in enumerate(names)}
-            for r in range(len(segments))]
     # the shell matrices of every tooth pair of every roll position: one set of load
     # vectors and one triangular solve per member (the shell's stiffness does not depend
     # on the roll position), one block per (roll, pair)
@@ -436,15 +434,18 @@ def mesh_compliance_many(
     offsets = np.concatenate([[0], np.cumsum([seg.size for seg in segments])])
     flat_blocks = [offsets[r] + idx for r, b in enumerate(blocks) for idx in b.values()]
     shell = {}
-    for name in names:
+    for i, name in enumerate(names):
         mids = _concat([pt[name] for pt in points])
-        # the first ends of all rolls, then their second ends (_shell_matrices' order)
-        pairs = list(zip(ends, segments, strict=True))
-        both = _concat([_take(e[name], np.arange(sg.size)) for e, sg in pairs]
-                       + [_take(e[name], sg.size + np.arange(sg.size)) for e, sg in pairs])
+        # the first ends of all rolls, then their second ends (_shell_matrices' order);
+        # end_index lists each roll's first N then second N ends among its distinct ends
+        distinct = [mapped[2 * r + i][1] for r in range(len(segments))]
+        both = _concat(
+            [_take(d, idx[:sg.size]) for d, idx, sg in zip(distinct, end_indices, segments,
+                                                          strict=True)]
+            + [_take(d, idx[sg.size:]) for d, idx, sg in zip(distinct, end_indices, segments,
+                                                            strict=True)])
         shell[name] = iter(_shell_matrices(model.member(name), mids, both, model.theory,
-                                           model.n_height, model.n_face, flat_blocks)
-                           if flat_blocks else [])
+                                           model.n_height, model.n_face, flat_blocks))
     out = []
     for r, seg in enumerate(segments):
         mats = {name: [next(shell[name]) for _ in blocks[r]] for name in names}
