@@ -31,6 +31,13 @@ whose iso-line has just left the contact region keep a curve through the pinion'
 instead of vanishing. Doubling S or the roll positions changes the LTE by well under
 0.5 µrad (tests/test_ltca_discretisation.py).
 
+Edge contact (:mod:`contact.edge`, on by default): where a pair's curve passes outside the
+contact region, the region's boundary (gear tip, heel, toe; the pinion's tip edge and
+ends) carries edge segments with the separation ε + ½ K (Q − q)² of the pinion at roll q,
+which continues the curve's own at its end, and R_eq = 1/(1/r_e + κ_other) from the
+edges' rounding radius r_e; they follow the curve segments along the ``segment`` axis
+(``segment_kind``), and the flank and edge peak pressures are reported apart.
+
 R_eq across the contact line: κ_rel(w) = κ_p(w) + κ_g(w) along w = n × t (t the
 contact-line tangent), each member's normal curvature from its principal curvatures
 (Euler), evaluated on the real surfaces at the segment midpoints
