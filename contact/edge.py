@@ -111,7 +111,7 @@ def flank_boundary(fields, step: float) -> FlankBoundary:
         (2, np.full(_FINE, u0), v0 + (v1 - v0) * s),
     ):
         m = f.margin.ev(uu, vv)
-        for a, b in _runs(_cell_ok(f, uu, vv) & (m >= 0.0)):
+        for a, b in _runs(f.good_cell(uu, vv) & (m >= 0.0)):
             ua, va = _margin_crossing(uu, vv, m, a, a - 1)
             ub, vb = _margin_crossing(uu, vv, m, b, b + 1)
             lines.append((kind, np.r_[ua, uu[a + 1:b], ub], np.r_[va, vv[a + 1:b], vb]))
@@ -120,7 +120,7 @@ def flank_boundary(fields, step: float) -> FlankBoundary:
     zg = f.margin(ug, vg).T  # (nv, nu)
     for line in contourpy.contour_generator(ug, vg, zg).lines(0.0):
         uu, vv = line[:, 0], line[:, 1]
-        for a, b in _runs(_cell_ok(f, uu, vv)):
+        for a, b in _runs(f.good_cell(uu, vv)):
             if b > a:
                 lines.append((3, uu[a:b + 1], vv[a:b + 1]))
     pieces = [_piece(f, kind, uu, vv, step) for kind, uu, vv in lines]
@@ -130,13 +130,6 @@ def flank_boundary(fields, step: float) -> FlankBoundary:
         return FlankBoundary(np.zeros(0, int), empty, empty, empty, empty, empty, empty,
                              empty, np.zeros((0, 3, 3)), np.zeros((0, 3, 3)))
     return FlankBoundary(*(np.concatenate(a) for a in zip(*pieces, strict=True)))
-
-
-def _cell_ok(f, uu: np.ndarray, vv: np.ndarray) -> np.ndarray:
-    """Whether (u, v) lies in a grid cell whose corners were all computed."""
-    iu = np.clip(np.searchsorted(f.u, uu, side="right") - 1, 0, len(f.u) - 2)
-    iv = np.clip(np.searchsorted(f.v, vv, side="right") - 1, 0, len(f.v) - 2)
-    return f.cell_ok[iu, iv]
 
 
 def _runs(ok: np.ndarray) -> list[tuple[int, int]]:

@@ -281,7 +281,6 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     # pair k's points then lie on the teeth k pitches away at the roll's own rotations
     phi = eo.roll_zero + eo.drive_sense * target  # (J, K)
     psi = eo.gear_phase - phi / eo.ratio
-    rot_p, ap = kin.pinion_place[:3, :3], kin.pinion_axis
 
     def gear_to_pair(x, vec=False):
         return _gear_to_pair(kin, psi[..., None], x, vec)
@@ -291,7 +290,7 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     # mate leaves it): each segment is clipped to the part [a, b] whose real mate lies
     # inside the pinion blank, at the crossing of the blank measure, so the contact line
     # ends on the blank edge whatever the segment count
-    a, b = quad.clip(_pinion_measure(case, kin, gear_to_pair(cc.position), phi))
+    a, b = quad.clip(_blank_measure(case, kin, "pinion", gear_to_pair(cc.position), phi))
     # a curve shrunk to a point (a pair just meeting a corner of the flank) has no
     # segment either
     whole = cc.position[..., 2::2, :] - cc.position[..., 0:-1:2, :]  # whole-segment chords
@@ -333,19 +332,12 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         vv = _fill_rows(v.reshape(J * K, S)[rows], okc)
         pg = pos_g.reshape(J * K, S, 3)[rows]
         pg = np.stack([_fill_rows(pg[..., i], okc) for i in range(3)], axis=-1)
-        pz = _spline(eo, eo.pinion_axial).ev(uu, vv)
-        pr = _spline(eo, eo.pinion_radius).ev(uu, vv)
-        gs = flank_at(case, "gear", eo.gear_flank, pg[..., 2], np.hypot(pg[..., 0], pg[..., 1]))
-        ps = flank_at(case, "pinion", eo.pinion_flank, pz, pr)
-        # across-line direction w = n × t in the gear frame, carried to the pinion frame
-        w_g = np.cross(nrm_g, tangent)  # (J, K, S, 3)
-        w_pair = gear_to_pair(np.nan_to_num(w_g), vec=True)
-        phi_seg = np.broadcast_to(phi[..., None], u.shape)
-        w_p = _rotate(ap, -phi_seg, w_pair) @ rot_p
-        wg_r = w_g.reshape(J * K, S, 3)[rows]
-        wp_r = w_p.reshape(J * K, S, 3)[rows]
-        kg = normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, np.nan_to_num(wg_r))
-        kp = normal_curvature(ps.kappa1, ps.kappa2, ps.dir1, np.nan_to_num(wp_r))
+        # across-line direction w = n × t in the gear frame (carried to the pinion frame
+        # at each curve's pinion rotation)
+        w_g = np.nan_to_num(np.cross(nrm_g, tangent)).reshape(J * K, S, 3)[rows]
+        phi_r = np.broadcast_to(phi[..., None], u.shape).reshape(J * K, S)[rows]
+        kg = _gear_curvature(case, eo, pg, w_g)
+        kp = _pinion_curvature(case, eo, uu, vv, w_g, phi_r)
         krel = np.where(okc, kp + kg, np.nan)
         # nearly conformal (κ_rel ≤ 1e-4 /mm): R_eq capped at 10 m; where a surface has
         # no generated point (NaN curvature) the segment is left out (R_eq NaN)
@@ -362,7 +354,7 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         bd = flank_boundary(fields, edges[0])
         shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
         edge = _edge_segments(case, eo, bd, _edge_r_eq(case, eo, bd, edges[1]), target,
-                              shift, gear_to_pair)
+                              shift)
         out = {k: np.concatenate([out[k], edge[k]], axis=2) for k in out}
         kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
     return {
@@ -373,7 +365,7 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
 
 
 def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, r_eq: np.ndarray,
-                   target: np.ndarray, shift: np.ndarray, gear_to_pair) -> dict:
+                   target: np.ndarray, shift: np.ndarray) -> dict:
     """Edge segments of every (roll, pair): the boundary where the pair's curve passes
     outside the contact region (:mod:`contact.edge`), clipped where it passes inside.
 
@@ -384,8 +376,6 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, r_eq: np.ndarray,
     bd : FlankBoundary (E segments)
     r_eq : array (E,) — [mm] R_eq across each boundary segment
     target, shift : arrays (J, K) — [rad] roll value q of each pair and its curve's shift t
-    gear_to_pair : callable
-        Gear frame → pair frame of each (J, K) (points, or vectors with ``vec=True``).
 
     Returns
     -------
@@ -421,9 +411,10 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, r_eq: np.ndarray,
                                      np.broadcast_to(mate - kin.pinion_origin, (*turn.shape, 3))
                                      ) + kin.pinion_origin
     # each part in contact lies on the mating member's flank: within its blank
-    for sel, measure, turn in ((g, _pinion_measure, phi), (~g, _gear_measure, psi)):
+    for sel, member, turn in ((g, "pinion", phi), (~g, "gear", psi)):
         if np.any(sel):
-            m = measure(case, kin, pts[..., sel, :, :].reshape(*target.shape, -1, 3), turn)
+            m = _blank_measure(case, kin, member, pts[..., sel, :, :].reshape(
+                *target.shape, -1, 3), turn)
             outside[..., sel, :] = np.minimum(outside[..., sel, :],
                                               m.reshape(outside[..., sel, :].shape))
     a, b = (x[..., 0] for x in quad.clip(outside))  # (J, K, E)
@@ -447,7 +438,8 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, r_eq: np.ndarray,
     return {
         "u": u, "v": v, "midpoint": pos, "midpoint_pair": mid,
         "ends_pair": np.stack([end_a, end_b], axis=-2),
-        "normal_pair": -gear_to_pair(nrm, vec=True), "tangent_pair": tangent,
+        "normal_pair": -_gear_to_pair(kin, psi[..., None], nrm, vec=True),
+        "tangent_pair": tangent,
         "length": length, "moment_arm": quad.at(bd.normal_arm, c1)[..., 0], "lag": lag,
         "r_eq": np.where(inside, r_eq, np.nan),
     }
@@ -572,38 +564,32 @@ class _SegmentQuadratic:
         return a, b
 
 
-def _pinion_measure(case, kin, points_pair: np.ndarray, phi: np.ndarray) -> np.ndarray:
-    """Inside measure of the real pinion mates of curve points in the pinion blank.
+def _blank_measure(case, kin, member: str, points_pair: np.ndarray,
+                   turn: np.ndarray) -> np.ndarray:
+    """Inside measure of pair-frame points in one member's blank, the member turned.
 
     Parameters
     ----------
+    member : str
+        ``"pinion"`` or ``"gear"``.
     points_pair : array (J, K, P, 3) — [mm]
-        Curve samples in the pair frame (NaN where no curve).
-    phi : array (J, K) — [rad]
-        Pinion rotation of each curve.
+        Points in the pair frame (e.g. curve samples; NaN where no curve).
+    turn : array (J, K) — [rad]
+        The member's rotation about its axis at each (J, K) (pinion φ, gear ψ).
 
     Returns
     -------
     array (J, K, P) — [1]
-        m = min(u_p, 1 − u_p, 1 − v_p) in the pinion's projection-plane fractions (toe,
-        heel, tip): ≥ 0 inside the blank (NaN where no curve).
+        m = min(u, 1 − u, 1 − v) in the member's projection-plane fractions (toe, heel,
+        tip): ≥ 0 inside the blank (NaN where no point).
     """
-    ap, op, rot_p = kin.pinion_axis, kin.pinion_origin, kin.pinion_place[:3, :3]
-    xp = _rotate(ap, -np.broadcast_to(phi[..., None], points_pair.shape[:-1]),
-                 points_pair - op) @ rot_p
-    pu, pv = _fractions(blank_outline(case.pinion.blank).corners, xp[..., 2],
-                        np.hypot(xp[..., 0], xp[..., 1]))
-    return np.minimum(np.minimum(pu, 1.0 - pu), 1.0 - pv)
-
-
-def _gear_measure(case, kin, points_pair: np.ndarray, psi: np.ndarray) -> np.ndarray:
-    """As :func:`_pinion_measure` for the gear: points (J, K, P, 3) [mm] in the pair
-    frame, the gear turned by ψ (J, K) [rad]; min(u_g, 1 − u_g, 1 − v_g) [1]."""
-    rot = np.broadcast_to(-psi[..., None], points_pair.shape[:-1])
-    xg = _rotate(kin.gear_axis, rot, points_pair - kin.gear_origin) @ kin.gear_place[:3, :3]
-    gu, gv = _fractions(blank_outline(case.gear.blank).corners, xg[..., 2],
-                        np.hypot(xg[..., 0], xg[..., 1]))
-    return np.minimum(np.minimum(gu, 1.0 - gu), 1.0 - gv)
+    axis, origin = getattr(kin, f"{member}_axis"), getattr(kin, f"{member}_origin")
+    place = getattr(kin, f"{member}_place")[:3, :3]
+    x = _rotate(axis, -np.broadcast_to(turn[..., None], points_pair.shape[:-1]),
+                points_pair - origin) @ place
+    fu, fv = _fractions(blank_outline(case.member(member).blank).corners, x[..., 2],
+                        np.hypot(x[..., 0], x[..., 1]))
+    return np.minimum(np.minimum(fu, 1.0 - fu), 1.0 - fv)
 
 
 def _fill_rows(a: np.ndarray, valid: np.ndarray) -> np.ndarray:

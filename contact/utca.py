@@ -153,15 +153,21 @@ class _Fields:
         c = computed
         self.cell_ok = c[:-1, :-1] & c[1:, :-1] & c[:-1, 1:] & c[1:, 1:]
 
+    def good_cell(self, u, v):
+        """True where (u, v) lies in a grid cell whose corners were all computed (places
+        beyond the grid count as its edge cells)."""
+        # (np.minimum/np.maximum: np.clip's arithmetic without its wrapper's overhead)
+        iu = np.minimum(np.maximum(np.searchsorted(self.u, u, side="right") - 1, 0),
+                        len(self.u) - 2)
+        iv = np.minimum(np.maximum(np.searchsorted(self.v, v, side="right") - 1, 0),
+                        len(self.v) - 2)
+        return self.cell_ok[iu, iv]
+
     def inside(self, u, v):
         """True where (u, v) can be touched: in the grid, good cell, pinion mate in blank."""
         u0, u1, v0, v1 = self.u[0], self.u[-1], self.v[0], self.v[-1]
         ok = (u >= u0) & (u <= u1) & (v >= v0) & (v <= v1) & np.isfinite(v)
-        iu = np.clip(np.searchsorted(self.u, np.where(ok, u, u0), side="right") - 1, 0,
-                     len(self.u) - 2)
-        iv = np.clip(np.searchsorted(self.v, np.where(ok, v, v0), side="right") - 1, 0,
-                     len(self.v) - 2)
-        ok &= self.cell_ok[iu, iv]
+        ok &= self.good_cell(np.where(ok, u, u0), np.where(ok, v, v0))
         # the margin only where the rest holds (the spline is evaluated point by point)
         ok[ok] = self.margin.ev(u[ok], v[ok]) >= 0.0
         return ok
@@ -180,12 +186,7 @@ class _Fields:
         vs = np.where(fin, v, self.v[0])
         c = np.minimum(self.margin.ev(u, vs), np.minimum(vs - self.v[0], self.v[-1] - vs))
         c = np.minimum(c, np.minimum(u - self.u[0], self.u[-1] - u))
-        # (np.minimum/np.maximum: np.clip's arithmetic without its wrapper's overhead)
-        iu = np.minimum(np.maximum(np.searchsorted(self.u, u, side="right") - 1, 0),
-                        len(self.u) - 2)
-        iv = np.minimum(np.maximum(np.searchsorted(self.v, vs, side="right") - 1, 0),
-                        len(self.v) - 2)
-        return np.where(fin & self.cell_ok[iu, iv], c, -1.0)
+        return np.where(fin & self.good_cell(u, vs), c, -1.0)
 
     def solve_v(self, u, target, v_start=None, lattice=None):
         """Profile place v*(u) with Q(u, v*) = target (NaN where Q misses target in [v0, v1]).
