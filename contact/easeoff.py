@@ -421,24 +421,6 @@ def _bilinear(corners: np.ndarray, u, v):
     return p[..., 0], p[..., 1]
 
 
-def _fractions(corners: np.ndarray, z, rho, iters: int = 8):
-    """Inverse of :func:`_bilinear`: projection-plane fractions (u, v) of points (z, ρ)."""
-    z = np.asarray(z, dtype=float)
-    rho = np.asarray(rho, dtype=float)
-    u = np.full(z.shape, 0.5)
-    v = np.full(z.shape, 0.5)
-    c = corners
-    for _ in range(iters):
-        zz, rr = _bilinear(c, u, v)
-        du = (1 - v)[..., None] * (c[1, 0] - c[0, 0]) + v[..., None] * (c[1, 1] - c[0, 1])
-        dv = (1 - u)[..., None] * (c[0, 1] - c[0, 0]) + u[..., None] * (c[1, 1] - c[1, 0])
-        det = du[..., 0] * dv[..., 1] - du[..., 1] * dv[..., 0]
-        ez, er = z - zz, rho - rr
-        u = u + (ez * dv[..., 1] - er * dv[..., 0]) / det
-        v = v + (du[..., 0] * er - du[..., 1] * ez) / det
-    return u, v
-
-
 def _mask_folds(reason: np.ndarray, roll: np.ndarray) -> None:
     """Mask gear nodes beyond a fold of the roll-angle surface along the profile (in place).
 

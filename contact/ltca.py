@@ -59,7 +59,7 @@ from scipy.interpolate import RectBivariateSpline
 
 from contact.compliance.hertz import hertz_half_width, weber_compliance
 from contact.compliance.mesh import ContactSegments, mesh_compliance_many, pair_compliance_model
-from contact.easeoff import EaseOff, _fractions, _rotate, ease_off
+from contact.easeoff import EaseOff, _rotate, ease_off
 from contact.edge import EDGE_KINDS, FlankBoundary, flank_boundary
 from contact.io import data_var as _var
 from contact.problem import ContactProblem
@@ -71,7 +71,7 @@ from geometry._version import __version__
 from geometry.assembly import Misalignment
 from geometry.curvature import normal_curvature
 from geometry.errors import InputError
-from geometry.flank import blank_outline, flank_at
+from geometry.flank import blank_outline, flank_at, projection_fractions
 
 __all__ = ["LTCAOptions", "loaded_tca", "ltca_problems", "segment_geometry"]
 
@@ -587,7 +587,7 @@ def _blank_measure(case, kin, member: str, points_pair: np.ndarray,
     place = getattr(kin, f"{member}_place")[:3, :3]
     x = _rotate(axis, -np.broadcast_to(turn[..., None], points_pair.shape[:-1]),
                 points_pair - origin) @ place
-    fu, fv = _fractions(blank_outline(case.member(member).blank).corners, x[..., 2],
+    fu, fv = projection_fractions(blank_outline(case.member(member).blank).corners, x[..., 2],
                         np.hypot(x[..., 0], x[..., 1]))
     return np.minimum(np.minimum(fu, 1.0 - fu), 1.0 - fv)
 

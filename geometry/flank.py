@@ -16,6 +16,7 @@ ProjectionGrid     (u, v) fractions and the (z, ρ) targets of a flank grid
 projection_grid    lay the grid
 flank_surface      solve one flank on its grid: points, normals, curvatures (FlankSurface)
 flank_at           the same at arbitrary projection-plane places
+projection_fractions  (u, v) of projection-plane points: the inverse of the grid's map
 flank_dataset      the same as an xarray.Dataset with units and long names
 geometry_datasets  all four flanks of a case
 """
@@ -48,6 +49,7 @@ __all__ = [
     "flank_dataset",
     "flank_surface",
     "geometry_datasets",
+    "projection_fractions",
     "projection_grid",
 ]
 
@@ -107,6 +109,60 @@ def blank_outline(blank: Blank) -> BlankOutline:
     mean = apex + (blank.outer_cone_distance - 0.5 * blank.face_width) * gen
     return BlankOutline(corners, zp, zf, zr, mean,
                         blank.outer_addendum + blank.outer_dedendum)
+
+
+def projection_fractions(corners: np.ndarray, axial, radius, *, tol: float = 1e-14,
+                         max_iter: int = 30) -> tuple[np.ndarray, np.ndarray]:
+    """Projection-plane fractions (u, v) of points (z, ρ): the inverse of the bilinear map.
+
+    The flank region is laid bilinearly between its corners,
+    (z, ρ)(u, v) = c₀₀ + u (c₁₀ − c₀₀) + v (c₀₁ − c₀₀) + u v (c₁₁ − c₁₀ − c₀₁ + c₀₀)
+    (module docstring); this inverts it by Newton's method from the centre (u, v) = ½,
+    which converges quadratically on a blank's (convex, nearly trapezoidal) outline, also
+    for points outside it (then u or v lies outside [0, 1]).
+
+    Parameters
+    ----------
+    corners : array (2, 2, 2), or (P, 2, 2, 2) one outline per point — [mm]
+        [u][v] = (toe, heel) × (root, tip) corners as (z, ρ) (:class:`BlankOutline`).
+    axial, radius : arrays (...) — [mm]
+        z and ρ of the points (with per-point corners: shape (P,)).
+    tol : float — [1]
+        Stop when every point's Newton step |Δu| + |Δv| is below this.
+    max_iter : int
+        Cap on the Newton steps.
+
+    Returns
+    -------
+    (u, v) : arrays (...) — [1]
+        Lengthwise fraction, toe 0 → heel 1, and profile fraction, root 0 → tip 1.
+    """
+    c = np.asarray(corners, dtype=float)
+    if c.ndim == 4:  # per point: c[i, j] is then (P, 2)
+        c = np.moveaxis(c, 0, 2)
+    z = np.asarray(axial, dtype=float)
+    rho = np.asarray(radius, dtype=float)
+    c00 = c[0, 0]
+    e = c[1, 0] - c00
+    f = c[0, 1] - c00
+    g = c[1, 1] - c[1, 0] - c[0, 1] + c00
+    hz, hr = z - c00[..., 0], rho - c00[..., 1]
+    ez, er, fz, fr, gz, gr = e[..., 0], e[..., 1], f[..., 0], f[..., 1], g[..., 0], g[..., 1]
+    u = np.full(np.broadcast_shapes(hz.shape, hr.shape), 0.5)
+    v = np.full(u.shape, 0.5)
+    for _ in range(max_iter):
+        uz, ur = ez + v * gz, er + v * gr  # ∂(z, ρ)/∂u
+        vz, vr = fz + u * gz, fr + u * gr  # ∂(z, ρ)/∂v
+        rz = u * ez + v * vz - hz  # residual (z, ρ)(u, v) − (z, ρ)
+        rr = u * er + v * vr - hr
+        det = uz * vr - ur * vz
+        du = (rz * vr - rr * vz) / det
+        dv = (uz * rr - ur * rz) / det
+        u -= du
+        v -= dv
+        if np.all(np.abs(du) + np.abs(dv) < tol):
+            break
+    return u, v
 
 
 class ProjectionGrid(NamedTuple):

@@ -26,13 +26,14 @@ from contact.compliance.tooth import (
     _angle_rows,
     _blank_rows,
     _frames,
-    _invert_bilinear,
     _mid_rows,
     _project_to_mid,
     _trajectory,
     shell_tooth_from_case,
 )
 from geometry.case import load_case
+from geometry.errors import InputError
+from geometry.flank import projection_fractions
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -134,7 +135,7 @@ def test_newton_projection_finds_known_feet(member):
     # is (u, v) by construction (the normal is orthogonal to M_u and M_v)
     half = 0.5 * data.tooth.thickness(v * data.tooth.height(0.3), 0.3)
     pts = m + (rng.uniform(-1.0, 1.0, u.size) * half)[:, None] * frame[:, 2, :]
-    u0, v0 = _invert_bilinear(data.corners, pts[:, 2], np.hypot(pts[:, 0], pts[:, 1]))
+    u0, v0 = projection_fractions(data.corners, pts[:, 2], np.hypot(pts[:, 0], pts[:, 1]))
     un, vn = _project_to_mid(data.surface, pts, u0, v0)
     ur, vr = _project_to_mid_reference(data.surface, pts, u0, v0)
     # both iterate until |du| + |dv| < 1e-14; 1e-13 leaves room for the round-off of M
@@ -176,6 +177,31 @@ def test_half_solve_compliance_equals_cho_solve():
         # factorisation (condition of the Jacobi-scaled stiffness ~1e6)
         np.testing.assert_allclose(cm.matrix, 0.5 * (ref + ref.T), rtol=1e-12,
                                    atol=1e-12 * np.abs(ref).max())
+
+
+def test_grouped_load_vectors_equal_the_weighted_sums():
+    """load_vectors(..., group_weights=w): each group's Σ w_g φ_g, as the per-point
+    vectors summed (the same products in another order: round-off, 1e-13 of the
+    largest entry); a group size that does not divide the points is refused."""
+    tooth = ShellTooth.from_face_width(thickness_toe_root=8.0, thickness_heel_root=10.0,
+                                       thickness_tip=3.0, height_toe=9.0, height_heel=11.0,
+                                       face_width=40.0, radius=80.0, youngs_modulus=206000.0,
+                                       poisson_ratio=0.3)
+    model = build_shell_model(tooth, 5, 9)
+    rng = np.random.default_rng(8)
+    n, g = 7, 3
+    theta = rng.uniform(0.05, 0.9, n * g) * tooth.subtended_angle
+    x = rng.uniform(0.1, 0.9, n * g) * tooth.height(theta)
+    d = rng.normal(size=(n * g, 3))
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    zs = rng.uniform(-1.0, 1.0, n * g)
+    w = np.array([0.2, 0.5, 0.3])
+    per_point = model.load_vectors(x, theta, d, zs)
+    grouped = model.load_vectors(x, theta, d, zs, group_weights=w)
+    ref = (per_point.reshape(-1, n, g) * w).sum(axis=2)
+    np.testing.assert_allclose(grouped, ref, rtol=0, atol=1e-13 * np.abs(ref).max())
+    with pytest.raises(InputError, match="group_weights"):
+        model.load_vectors(x, theta, d, zs, group_weights=np.ones(4))
 
 
 def test_segment_geometry_cycle_reuse_equals_direct():

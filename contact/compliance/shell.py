@@ -356,6 +356,7 @@ class ShellModel:
         theta: np.ndarray,
         direction: np.ndarray,
         offset: np.ndarray,
+        group_weights: np.ndarray | None = None,
     ) -> np.ndarray:
         """Generalised load vectors of unit forces (seed Eq. 3.6b, 3.10).
 
@@ -373,10 +374,14 @@ class ShellModel:
         x, theta : array_like, shape (P,) — [mm], [rad] load points
         direction : array_like, shape (P, 3) — [1] force components (unit vectors)
         offset : array_like, shape (P,) — [mm] z of the application point
+        group_weights : array_like, shape (G,), optional — [1]
+            The points come in P/G consecutive groups of G (e.g. the Gauss points of a
+            segment): return each group's weighted sum Σ_g w_g φ_g instead (the
+            segment's mean load vector), without forming the per-point vectors.
 
         Returns
         -------
-        ndarray, shape (n_dof, P) — [1]
+        ndarray, shape (n_dof, P), or (n_dof, P/G) with ``group_weights`` — [1]
         """
         xi = np.atleast_1d(np.asarray(x, dtype=float)).ravel() / self.reference_height
         eta = 2.0 * np.atleast_1d(np.asarray(theta, dtype=float)).ravel()
@@ -388,10 +393,23 @@ class ShellModel:
         deta = 2.0 / self.tooth.subtended_angle
         g, dg = _legendre_rows(eta, self.n_face)
         heights: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
-        out = np.empty((self.n_dof, n_pts))
+        if group_weights is None:
+            wts = np.ones(1)
+        else:
+            wts = np.asarray(group_weights, dtype=float).ravel()
+            if wts.size == 0 or n_pts % wts.size:
+                raise InputError(f"group_weights: {wts.size} weights do not divide the "
+                                 f"{n_pts} points into groups")
+        n_out = n_pts // wts.size
+        out = np.empty((self.n_dof, n_out))
 
         def outer(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-            return (a[:, None, :] * b[None, :, :]).reshape(-1, n_pts)
+            # Σ_g w_g a[k, (n, g)] b[m, (n, g)] as rows (k, m), columns n
+            if wts.size == 1:
+                return (a[:, None, :] * b[None, :, :]).reshape(-1, n_pts)
+            aw = a.reshape(a.shape[0], n_out, wts.size) * wts
+            return np.einsum("kng,mng->kmn", aw, b.reshape(b.shape[0], n_out, wts.size),
+                             optimize=False).reshape(-1, n_out)
 
         for fam, off, power, count in self._layout:
             if (power, count) not in heights:
@@ -1036,8 +1054,8 @@ def _compliance_blocks(
             f"normals must have shape ({n_pts}, 3) [got {np.asarray(normals).shape}]"
         )
     d, zs = _flank_loads(tooth, gp[:, 0], gp[:, 1], nrm)
-    phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs)  # (n_dof, N·G)
-    phi = phi.reshape(phi.shape[0], n_pts, ng) @ w
+    # the segments' mean load vectors (n_dof, N): Gauss sums over their G points
+    phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs, group_weights=w)
     # C = Φᵀ K⁻¹ Φ = Yᵀ Y with Y = U⁻ᵀ S Φ (K's scaled Cholesky factor): one triangular
     # solve for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
     y = model.half_solve(phi)

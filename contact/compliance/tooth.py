@@ -84,7 +84,7 @@ from contact.compliance.shell import (
 from contact.compliance.shell import _as_points as _as_shell_points
 from geometry.cutter import profile_sections
 from geometry.errors import InputError, LTCAError
-from geometry.flank import blank_outline, flank_surface
+from geometry.flank import blank_outline, flank_surface, projection_fractions
 from geometry.meshing import solve_envelope
 
 if TYPE_CHECKING:
@@ -287,24 +287,6 @@ def _bilinear(corners: np.ndarray, u: np.ndarray, v: np.ndarray):
     return p, pu, pv
 
 
-def _invert_bilinear(corners: np.ndarray, z: np.ndarray, rho: np.ndarray):
-    """(u, v) with bilinear(u, v) = (z, ρ), Newton from the centre (exact to 1e-13)."""
-    target = np.stack([z, rho], axis=-1)
-    u = np.full(z.shape, 0.5)
-    v = np.full(z.shape, 0.5)
-    for _ in range(30):
-        p, pu, pv = _bilinear(corners, u, v)
-        r = p - target
-        det = pu[..., 0] * pv[..., 1] - pu[..., 1] * pv[..., 0]
-        du = (r[..., 0] * pv[..., 1] - r[..., 1] * pv[..., 0]) / det
-        dv = (pu[..., 0] * r[..., 1] - pu[..., 1] * r[..., 0]) / det
-        u = u - du
-        v = v - dv
-        if np.all(np.abs(du) + np.abs(dv) < 1e-14):
-            break
-    return u, v
-
-
 class _Surface(NamedTuple):
     """The tooth's mid-surface map M(u, v), prepared once for fast evaluation.
 
@@ -503,7 +485,7 @@ def _trajectory(surf: _Surface, u, v0, v1) -> np.ndarray:
             (surf.power[m, 1:3].reshape(2 * (du + 1), dv + 1)
              @ tvp[:, :, b[m]:b[m + 1]].reshape(dv + 1, -1)).reshape(2, du + 1, tv.shape[0], -1)
             for m in range(len(b) - 1)], axis=3)
-    q = np.ascontiguousarray(q.transpose(2, 0, 1, 3))
+    # q[:, :, l] is level l's (2, du + 1, P) block: a view (contiguous along the points)
     pu_z = zu + z_uv * levels  # z_u, ρ_u at each level (L, P)
     pu_r = ru + r_uv * levels
     pu2 = pu_z * pu_z + pu_r * pu_r
@@ -515,7 +497,7 @@ def _trajectory(surf: _Surface, u, v0, v1) -> np.ndarray:
         tu = 2.0 * uu - 1.0
         if du:
             np.cumprod(np.broadcast_to(tu, (du, n_pts)), axis=0, out=tup[1:])
-        phi_u, phi_v = (q[lv] * tup).sum(axis=1)
+        phi_u, phi_v = (q[:, :, lv] * tup).sum(axis=1)
         rho = rho0[lv] + pu_r[lv] * uu
         rfu = rho * rho * phi_u
         return -(pu_z[lv] * (zv + z_uv * uu) + pu_r[lv] * (rv + r_uv * uu) + rfu * phi_v) / (
@@ -670,7 +652,7 @@ def _virtual_gear(member: str, blank, corners, surf: _Surface, blades, t_root: f
                   bore_radius: float | None, youngs_modulus: float) -> _VirtualGear:
     """Mid-face normal-section virtual spur gear for the Sainsot foundation."""
     zm, pm = blank_outline(blank).mean_point
-    um, vm = _invert_bilinear(corners, np.array([zm]), np.array([pm]))
+    um, vm = projection_fractions(corners, np.array([zm]), np.array([pm]))
     mpt, mu_m, _ = _mid_surface(surf, um, vm)
     d = blank.pitch_angle
     e_r = np.array([mpt[0, 0], mpt[0, 1], 0.0]) / math.hypot(mpt[0, 0], mpt[0, 1])
@@ -1036,7 +1018,7 @@ def _shell_points_many(jobs, tol: float) -> list[list[ShellPoints]]:
         pitch = np.repeat([job[0].pitch for job in jobs], sizes)
         pm = np.concatenate(pm_l)
     rho = np.hypot(pm[:, 0], pm[:, 1])
-    u0, v0 = _invert_bilinear(corners, pm[:, 2], rho)
+    u0, v0 = projection_fractions(corners, pm[:, 2], rho)
     outside = (u0 < -tol) | (u0 > 1 + tol) | (v0 < -tol) | (v0 > 1 + tol)
     for k, (data, _, _, _, extra) in enumerate(jobs):
         n = ns[k]
