@@ -54,7 +54,7 @@ Johnson, K. L. (1985). Contact Mechanics. Cambridge University Press.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -262,9 +262,9 @@ def weber_compliance(
     nu2: float,
     r_eq: np.ndarray | float | None = None,
     half_width_fn: Callable[[np.ndarray], np.ndarray] | None = None,
-    kind: str = "secant",
+    kind: str | Sequence[str] = "secant",
     load_floor: float = 1.0,
-) -> np.ndarray:
+) -> np.ndarray | tuple[np.ndarray, ...]:
     """Diagonal contact compliance of loaded contact segments [mm/N].
 
     Parameters
@@ -279,14 +279,17 @@ def weber_compliance(
     half_width_fn : callable, optional — w′ [N/mm] (N,) → b [mm] (N,), instead of
         ``r_eq`` (e.g. an elliptical-contact or EHL half-width); exactly one of
         ``r_eq`` and ``half_width_fn`` must be given
-    kind : {"secant", "tangent"} — see :data:`WEBER_COMPLIANCE_KINDS`
+    kind : {"secant", "tangent"} or a sequence of them — see
+        :data:`WEBER_COMPLIANCE_KINDS` (a sequence: one array per kind, from one
+        evaluation, e.g. both for a Newton step)
     load_floor : float — [N/mm] w′ below this is evaluated at this value
         (unloaded segments; their compliance multiplies a zero force)
 
     Returns
     -------
     ndarray (N,) — [mm/N] the diagonal term to add to the compliance matrix:
-        secant δ(F)/F or tangent dδ/dF along the contact normal
+        secant δ(F)/F or tangent dδ/dF along the contact normal (a tuple of them for
+        a sequence of kinds)
 
     Raises
     ------
@@ -304,10 +307,12 @@ def weber_compliance(
     with s = d ln b / d ln w′ (½ for Hertz; by central difference for
     ``half_width_fn``). Usage in the LTCA: see the module docstring.
     """
-    if kind not in WEBER_COMPLIANCE_KINDS:
-        raise ModelUnavailableError(
-            f"kind {kind!r} is not available; choose one of {sorted(WEBER_COMPLIANCE_KINDS)}"
-        )
+    kinds = (kind,) if isinstance(kind, str) else tuple(kind)
+    for k in kinds:
+        if k not in WEBER_COMPLIANCE_KINDS:
+            raise ModelUnavailableError(
+                f"kind {k!r} is not available; choose one of {sorted(WEBER_COMPLIANCE_KINDS)}"
+            )
     f = np.asarray(load, dtype=float)
     if not np.all(np.isfinite(f)) or np.any(f < 0.0):
         raise InputError("load must be finite and >= 0 N")
@@ -334,5 +339,7 @@ def weber_compliance(
     k1 = 2.0 * (1.0 - nu1f**2) / (math.pi * e1f)
     k2 = 2.0 * (1.0 - nu2f**2) / (math.pi * e2f)
     kb = k1 * _weber_bracket(h1, b, nu1f, "depth_1") + k2 * _weber_bracket(h2, b, nu2f, "depth_2")
-    out = WEBER_COMPLIANCE_KINDS[kind](kb, (k1 + k2) * slope)
-    return np.broadcast_to(out / length_a, np.broadcast_shapes(w.shape, b.shape)).copy()
+    shape = np.broadcast_shapes(w.shape, b.shape)
+    out = tuple(np.broadcast_to(WEBER_COMPLIANCE_KINDS[k](kb, (k1 + k2) * slope) / length_a,
+                                shape).copy() for k in kinds)
+    return out[0] if isinstance(kind, str) else out
