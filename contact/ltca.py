@@ -10,11 +10,26 @@ Weber contact) and these data form a :class:`contact.ContactProblem`, solved by 
 registered solver; the multiplier Θ is the loaded rotation, and the loaded transmission
 error is LTE = UTE + Θ (gear lag, the seed's Fig. 3.6 convention).
 
-Weber's contact compliance depends on the load (logarithmically). It is linearised as a
-secant about the current segment loads and iterated: solve, re-evaluate the Weber
-diagonal at the new loads, solve again, until the LTE changes by less than
-``weber_tolerance`` (default 1e-3 µrad); 3–6 iterations are typical. The first
-evaluation uses the load each segment would carry if the torque were shared evenly.
+Weber's contact compliance depends on the load (logarithmically). It is solved by
+Newton's method on the contact deformation δ(F): about the current loads F₀,
+δ ≈ c_s F₀ + c_t (F − F₀) (c_s the secant, c_t the tangent compliance), i.e. the
+problem takes the diagonal c_t and the separation s + (c_s − c_t) F₀; solve, linearise
+again at the new loads, solve again, until the LTE changes by less than
+``weber_tolerance`` (default 1e-3 µrad), or its quadratically shrinking steps foretell a
+next step ten times smaller; 3–5 solves are typical. The first loads share the torque
+evenly over the roll's segments (so a roll's result depends on that roll alone). Where
+c_t is not well positive (Hertz half-width near the depth) or a load is at the cap, the
+secant is used there (the fixed-point iteration).
+
+Segment selection (screening): a segment left out of a roll's problem with s ≥ R Θ
+keeps its gap open whatever the loads, since the compliance matrix has no negative
+entries (the gap is C F + s − R Θ ≥ s − R Θ); the solution on the other segments is then
+that of all of them. Each problem takes the segments with s < 1.1 R Θ̂ + 1 µm, Θ̂ the
+rotation of the last computed roll at that torque carried over by the UTE difference;
+after the solve any segment left out with s < R Θ is added and the roll solved again.
+The structural compliance is assembled once per roll for a pool of segments chosen the
+same way from the first roll's rotation at the largest torque (tests/test_ltca.py checks
+the open gaps of the segments left out against the full compliance).
 
 Moment arm: a gear rotation δ closes the gap at a point by ρ |n·e_θ| δ — the distance of
 the normal's line of action from the gear axis — which is the ``normal_arm`` of the
@@ -83,6 +98,14 @@ _RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
 #: left out (its load would be below the solution's resolution)
 _MIN_CLIP = 1e-6
 
+#: segment screening (LTCAOptions.separation_limit None): a roll's problem takes the
+#: segments with s < margin · R Θ̂ + pad, Θ̂ the loaded rotation expected there; after the
+#: solve every segment left out must have s ≥ R Θ (else it is added and the roll solved
+#: again, at most _SCREEN_ROUNDS times). [1], [mm]
+_SCREEN_MARGIN = 1.1
+_SCREEN_PAD = 1e-3
+_SCREEN_ROUNDS = 6
+
 
 @dataclass(frozen=True)
 class LTCAOptions:
@@ -107,12 +130,14 @@ class LTCAOptions:
         edge converges at second order in 1/S (uniform spacing: first order);
         ``"uniform"``: equal steps in the lengthwise fraction.
     separation_limit : float or None — [mm]
-        Segments separated by more than this are left out (they cannot touch). Default:
-        0.05 mm + 0.15 mm per 1000 N·m of gear torque.
+        A fixed limit: segments separated by more are left out (a warning is logged if
+        one of them would touch). Default None: the screening of the module docstring,
+        which leaves out only segments whose gap stays open (s ≥ R Θ).
     solver : str
         Registered solver name (default our exact ``active_set``).
     weber_tolerance : float — [urad]
-        Stop the Weber load iteration when the LTE changes by less (default 1e-3).
+        Stop the Weber load iteration when the LTE changes by less, or its next Newton
+        step is foretold to be ten times smaller (default 1e-3).
     max_weber_iterations : int
         Cap on the Weber iteration (default 12).
     edge_contact : bool
@@ -353,8 +378,7 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     if edges is not None:
         bd = flank_boundary(fields, edges[0])
         shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
-        edge = _edge_segments(case, eo, bd, _edge_r_eq(case, eo, bd, edges[1]), target,
-                              shift)
+        edge = _edge_segments(case, eo, bd, edges[1], target, shift)
         out = {k: np.concatenate([out[k], edge[k]], axis=2) for k in out}
         kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
     return {
@@ -364,7 +388,7 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     }
 
 
-def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, r_eq: np.ndarray,
+def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
                    target: np.ndarray, shift: np.ndarray) -> dict:
     """Edge segments of every (roll, pair): the boundary where the pair's curve passes
     outside the contact region (:mod:`contact.edge`), clipped where it passes inside.
@@ -374,13 +398,15 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, r_eq: np.ndarray,
     case : geometry.case.Case
     eo : EaseOff
     bd : FlankBoundary (E segments)
-    r_eq : array (E,) — [mm] R_eq across each boundary segment
+    edge_radius : float — [mm] the edges' rounding radius (R_eq: :func:`_edge_r_eq`)
     target, shift : arrays (J, K) — [rad] roll value q of each pair and its curve's shift t
 
     Returns
     -------
     dict of arrays (J, K, E[, ...]), the keys of :func:`segment_geometry`'s segment
     fields; the lag is the mean of Φ_q = ε + ½ K (Q − q)² over the part in edge contact.
+    NaN (length 0) where the pair's curve passes inside the region all along the
+    boundary segment.
 
     Notes
     -----
@@ -393,56 +419,70 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, r_eq: np.ndarray,
     """
     kin = eo.kinematics
     quad = _SegmentQuadratic(np.array([0.0, 0.5, 1.0]))
-    q = target[..., None, None]  # (J, K, 1, 1)
-    # ≥ 0 where the curve Q = q + t passes outside the region beyond the boundary point
-    outside = (bd.roll_angle - (q + shift[..., None, None])) * bd.inward_slope
-    phi = eo.roll_zero + eo.drive_sense * target  # (J, K) pinion rotation
-    # the contact points in the pair frame at each (J, K): a gear edge's own points; a
-    # pinion edge's points turned on with the pinion from their mate instant
+    J, K = target.shape
+    E = bd.kind.size
+    # ≥ 0 where the curve Q = q + t passes outside the region beyond the boundary point;
+    # only the (roll, pair, boundary segment) where it does somewhere are worked out
+    # (flattened to n candidates), the rest stay NaN (no edge contact)
+    outside = ((bd.roll_angle[None, None] - (target + shift)[..., None, None])
+               * bd.inward_slope)  # (J, K, E, 3)
+    jj, kk, ee = np.nonzero(np.any(outside >= 0, axis=-1))
+    outside = outside[jj, kk, ee]  # (n, 3)
+    q = target[jj, kk][:, None]  # (n, 1) roll value of the candidate's pair
+    phi = eo.roll_zero + eo.drive_sense * target[jj, kk]  # (n,) pinion rotation
     psi = eo.gear_phase - phi / eo.ratio
-    pts = _gear_to_pair(kin, psi[..., None, None], bd.position)  # (J, K, E, 3, 3)
-    g = bd.gear_edge
+    # the contact points in the pair frame: a gear edge's own points; a pinion edge's
+    # points turned on with the pinion from their mate instant
+    pts = _gear_to_pair(kin, psi[:, None], bd.position[ee])  # (n, 3, 3)
+    g = bd.gear_edge[ee]
     if np.any(~g):
-        q_m = bd.roll_angle[~g]  # (Ep, 3) mate instants
+        q_m = bd.roll_angle[ee[~g]]  # (np, 3) mate instants
         phi_m = eo.roll_zero + eo.drive_sense * q_m
-        mate = _gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[~g])
-        turn = eo.drive_sense * (q - q_m)  # (J, K, Ep, 3)
-        pts[..., ~g, :, :] = _rotate(kin.pinion_axis, turn,
-                                     np.broadcast_to(mate - kin.pinion_origin, (*turn.shape, 3))
-                                     ) + kin.pinion_origin
+        mate = _gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[ee[~g]])
+        turn = eo.drive_sense * (q[~g] - q_m)
+        pts[~g] = _rotate(kin.pinion_axis, turn, mate - kin.pinion_origin) + \
+            kin.pinion_origin
     # each part in contact lies on the mating member's flank: within its blank
     for sel, member, turn in ((g, "pinion", phi), (~g, "gear", psi)):
         if np.any(sel):
-            m = _blank_measure(case, kin, member, pts[..., sel, :, :].reshape(
-                *target.shape, -1, 3), turn)
-            outside[..., sel, :] = np.minimum(outside[..., sel, :],
-                                              m.reshape(outside[..., sel, :].shape))
-    a, b = (x[..., 0] for x in quad.clip(outside))  # (J, K, E)
-    a1, b1, c1 = a[..., None], b[..., None], 0.5 * (a + b)[..., None]
-    sep = bd.ease_off_angle + 0.5 * bd.gap_curvature * (bd.roll_angle - q) ** 2
-    lag = quad.mean(sep, a1, b1)[..., 0]
+            m = _blank_measure(case, kin, member, pts[sel], turn[sel])
+            outside[sel] = np.minimum(outside[sel], m)
+    a, b = (x[..., 0] for x in quad.clip(outside))  # (n,)
+    a1, b1, c1 = a[:, None], b[:, None], 0.5 * (a + b)[:, None]
+    sep = bd.ease_off_angle[ee] + 0.5 * bd.gap_curvature[ee] * (bd.roll_angle[ee] - q) ** 2
     inside = b - a > _MIN_CLIP
-    u = np.where(inside, quad.at(bd.u, c1)[..., 0], np.nan)
-    v = np.where(inside, quad.at(bd.v, c1)[..., 0], np.nan)
-    pos = quad.at(bd.position, c1, vector=True)[..., 0, :]
-    nrm = quad.at(bd.normal, c1, vector=True)[..., 0, :]
+    # R_eq of the boundary segments in edge contact somewhere
+    used = np.unique(ee[inside])
+    r_eq = np.full(E, np.nan)
+    r_eq[used] = _edge_r_eq(case, eo, bd, edge_radius, used)
+    nrm = quad.at(bd.normal[ee], c1, vector=True)[:, 0]
     nrm = nrm / np.linalg.norm(nrm, axis=-1, keepdims=True)
-    mid = quad.at(pts, c1, vector=True)[..., 0, :]
-    end_a = quad.at(pts, a1, vector=True)[..., 0, :]
-    end_b = quad.at(pts, b1, vector=True)[..., 0, :]
+    end_a = quad.at(pts, a1, vector=True)[:, 0]
+    end_b = quad.at(pts, b1, vector=True)[:, 0]
     chord = end_b - end_a
     length = np.where(inside, np.linalg.norm(chord, axis=-1), 0.0)
-    whole = pts[..., 2, :] - pts[..., 0, :]
-    chord = np.where(inside[..., None], chord, whole)
-    tangent = chord / np.linalg.norm(chord, axis=-1, keepdims=True)
-    return {
-        "u": u, "v": v, "midpoint": pos, "midpoint_pair": mid,
+    chord = np.where(inside[:, None], chord, pts[:, 2] - pts[:, 0])
+    fields = {
+        "u": np.where(inside, quad.at(bd.u[ee], c1)[:, 0], np.nan),
+        "v": np.where(inside, quad.at(bd.v[ee], c1)[:, 0], np.nan),
+        "midpoint": quad.at(bd.position[ee], c1, vector=True)[:, 0],
+        "midpoint_pair": quad.at(pts, c1, vector=True)[:, 0],
         "ends_pair": np.stack([end_a, end_b], axis=-2),
-        "normal_pair": -_gear_to_pair(kin, psi[..., None], nrm, vec=True),
-        "tangent_pair": tangent,
-        "length": length, "moment_arm": quad.at(bd.normal_arm, c1)[..., 0], "lag": lag,
-        "r_eq": np.where(inside, r_eq, np.nan),
+        "normal_pair": -_gear_to_pair(kin, psi, nrm, vec=True),
+        "tangent_pair": chord / np.linalg.norm(chord, axis=-1, keepdims=True),
+        "length": length,
+        "moment_arm": quad.at(bd.normal_arm[ee], c1)[:, 0],
+        "lag": quad.mean(sep, a1, b1)[:, 0],
+        "r_eq": np.where(inside, r_eq[ee], np.nan),
     }
+    out = {}
+    for key, val in fields.items():
+        full = np.full((J, K, E, *val.shape[1:]), 0.0 if key == "length" else np.nan)
+        full[jj, kk, ee] = val
+        out[key] = full
+    return out
+
+
 def _gear_to_pair(kin, psi, x: np.ndarray, vec: bool = False) -> np.ndarray:
     """Gear-frame points (or vectors) x (..., 3) [mm] into the pair frame with the gear
     turned by ψ [rad] (broadcast against x's leading axes)."""
@@ -472,20 +512,22 @@ def _gear_curvature(case, eo: EaseOff, position, w_gear):
     return normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, w_gear)
 
 
-def _edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float) -> np.ndarray:
-    """(E,) R_eq [mm] across each boundary segment: the edge's rounding (radius r_e) on
-    the other member's flank, 1/(1/r_e + κ_other) at the segment's middle (κ_other along
-    n × t, t the edge tangent; the pinion taken at its mate's instant Q)."""
-    if bd.kind.size == 0:
+def _edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
+               which: np.ndarray) -> np.ndarray:
+    """R_eq [mm] across the boundary segments ``which`` (indices (M,)): the edge's
+    rounding (radius r_e) on the other member's flank, 1/(1/r_e + κ_other) at the
+    segment's middle (κ_other along n × t, t the edge tangent; the pinion taken at its
+    mate's instant Q)."""
+    if which.size == 0:
         return np.zeros(0)
-    u, v = bd.u[:, 1], bd.v[:, 1]
-    pos, nrm = bd.position[:, 1], bd.normal[:, 1]
-    t = bd.position[:, 2] - bd.position[:, 0]
+    u, v = bd.u[which, 1], bd.v[which, 1]
+    pos, nrm = bd.position[which, 1], bd.normal[which, 1]
+    t = bd.position[which, 2] - bd.position[which, 0]
     w = np.cross(nrm, t / np.linalg.norm(t, axis=-1, keepdims=True))
     k_other = np.empty(u.size)
-    g = bd.gear_edge
+    g = bd.gear_edge[which]
     if np.any(g):
-        phi = eo.roll_zero + eo.drive_sense * bd.roll_angle[g, 1]
+        phi = eo.roll_zero + eo.drive_sense * bd.roll_angle[which[g], 1]
         k_other[g] = _pinion_curvature(case, eo, u[g], v[g], w[g], phi)
     if np.any(~g):
         k_other[~g] = _gear_curvature(case, eo, pos[~g], w[~g])
@@ -572,14 +614,16 @@ def _blank_measure(case, kin, member: str, points_pair: np.ndarray,
     ----------
     member : str
         ``"pinion"`` or ``"gear"``.
-    points_pair : array (J, K, P, 3) — [mm]
-        Points in the pair frame (e.g. curve samples; NaN where no curve).
-    turn : array (J, K) — [rad]
-        The member's rotation about its axis at each (J, K) (pinion φ, gear ψ).
+    points_pair : array (..., P, 3) — [mm]
+        Points in the pair frame (e.g. the samples of the curves of every (roll, pair);
+        NaN where no curve).
+    turn : array (...) — [rad]
+        The member's rotation about its axis for each group of P points (pinion φ,
+        gear ψ).
 
     Returns
     -------
-    array (J, K, P) — [1]
+    array (..., P) — [1]
         m = min(u, 1 − u, 1 − v) in the member's projection-plane fractions (toe, heel,
         tip): ≥ 0 inside the blank (NaN where no point).
     """
@@ -686,17 +730,25 @@ def loaded_tca(
     if not np.all(np.isfinite(ute_env)):
         raise InputError("no tooth pair is in contact at some roll position (check the case)")
 
-    def limit_of(T: float) -> float:
-        return opts.separation_limit or (0.05 + 0.15 * T * eo.ratio / 1000.0)
-
-    # the edge segments kept: those within the widest limit at some (roll, pair)
-    sep_all = seg["moment_arm"] * (seg["lag"] - ute_env[:, None, None])  # [mm]
-    ok_all = (np.isfinite(sep_all) & np.isfinite(seg["r_eq"]) & (seg["length"] > 0))
-    wide_all = ok_all & (sep_all <= max(limit_of(T) for T in torques))
-    keep = (seg["kind"] == 0) | np.any(wide_all, axis=(0, 1))
-    seg = _keep_segments(seg, keep)
-    sep_all, ok_all, wide_all = sep_all[..., keep], ok_all[..., keep], wide_all[..., keep]
+    # separation s = R (lag − UTE) [mm] of every segment; ``ok``: the segments with the
+    # data of a contact problem (finite s and R_eq, a part inside the blanks)
+    arm = seg["moment_arm"]
+    sep_all = arm * (seg["lag"] - ute_env[:, None, None])
+    ok_all = np.isfinite(sep_all) & np.isfinite(seg["r_eq"]) & (seg["length"] > 0)
     J, K, S = seg["shape"]
+    fixed = opts.separation_limit
+    t_max = float(torques.max())
+
+    def generous(j: int) -> np.ndarray:
+        # a limit growing with the gear torque that holds every loaded segment of the
+        # seed's cases with room to spare: the first pool, before any rotation is known
+        return ok_all[j] & (sep_all[j] <= 0.05 + 0.15 * t_max * eo.ratio / 1000.0)
+
+    def near(j: int, theta: float) -> np.ndarray:
+        # the segments a loaded rotation θ [rad] may close: s < R θ with a margin
+        return ok_all[j] & (sep_all[j] < _SCREEN_MARGIN * arm[j] * max(theta, 0.0)
+                            + _SCREEN_PAD)
+
     model = pair_compliance_model(
         case, theory=opts.theory, n_height=opts.n_height, n_face=opts.n_face,
         pinion_material=(opts.youngs_modulus, opts.poisson_ratio),
@@ -722,32 +774,109 @@ def loaded_tca(
         from tqdm.auto import tqdm
 
         bar = tqdm(total=J, desc="LTCA", unit="roll")
-    # compliance once per computed roll for the widest selection (the largest torque's
-    # limit; a smaller selection's structural compliance is its sub-matrix), all rolls'
-    # segments mapped onto the shells in one batch (mesh_compliance_many)
-    computed = [j for j in range(J) if int(seg["source"][j]) == j and wide_all[j].any()]
-    batch = []
-    for j in computed:
-        wk, ws = np.nonzero(wide_all[j])
-        batch.append(ContactSegments(
-            midpoints=seg["midpoint_pair"][j, wk, ws],
-            ends=seg["ends_pair"][j, wk, ws],
-            normals=seg["normal_pair"][j, wk, ws],
-            length=seg["length"][j, wk, ws],
-            r_eq=seg["r_eq"][j, wk, ws],
-            pair_index=np.asarray(opts.pairs)[wk],
-            # (Weber's part is replaced below; a unit line load keeps it defined)
-            load=seg["length"][j, wk, ws],
-            pinion_rotation=float(seg["pinion_rotation"][j]),
-            gear_rotation=float(seg["gear_rotation"][j]),
-        ))
-    structural = {}
-    for j, (C_full, info) in zip(computed, mesh_compliance_many(case, batch, model=model),
-                                 strict=True):
-        structural[j] = (C_full - info["weber"], info["weber_depth"])
-        compliance_time[j] = info["time"]
+    # the structural compliance (shells and foundations) of a pool of segments per
+    # computed roll, all rolls' segments mapped onto the shells in one batch
+    # (mesh_compliance_many); a torque's problem takes the sub-matrix of its selection
+    pool: dict[int, np.ndarray] = {}  # (K, S) the segments of the assembled compliance
+    structural: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+
+    def assemble(jobs: list[tuple[int, np.ndarray]]) -> None:
+        batch = []
+        for j, mask in jobs:
+            wk, ws = np.nonzero(mask)
+            batch.append(ContactSegments(
+                midpoints=seg["midpoint_pair"][j, wk, ws],
+                ends=seg["ends_pair"][j, wk, ws],
+                normals=seg["normal_pair"][j, wk, ws],
+                length=seg["length"][j, wk, ws],
+                r_eq=seg["r_eq"][j, wk, ws],
+                pair_index=np.asarray(opts.pairs)[wk],
+                # (Weber's part is replaced below; a unit line load keeps it defined)
+                load=seg["length"][j, wk, ws],
+                pinion_rotation=float(seg["pinion_rotation"][j]),
+                gear_rotation=float(seg["gear_rotation"][j]),
+            ))
+        for (j, mask), (C_full, info) in zip(jobs, mesh_compliance_many(case, batch,
+                                                                        model=model),
+                                             strict=True):
+            pool[j] = mask
+            structural[j] = (C_full - info["weber"], info["weber_depth"])
+            compliance_time[j] += info["time"]
+
+    def weber_solve(j: int, T: float, sel: np.ndarray, prior: np.ndarray | None):
+        """The contact problem of roll j at torque T on the segments ``sel``, with the
+        Weber compliance iterated to the solution's loads; ``prior`` (N,) [N] (NaN where
+        unknown) the forces of a neighbouring solution, a warm start for the solver."""
+        idx = np.argwhere(sel)  # (N, 2): pair index, segment index
+        kk, ss = idx[:, 0], idx[:, 1]
+        sub = np.flatnonzero(sel[pool[j]])  # positions of the selection in the pool
+        C_pool, depth_pool = structural[j]
+        C_struct = C_pool[np.ix_(sub, sub)]
+        depth = depth_pool[sub]
+        L = seg["length"][j, kk, ss]
+        Req = seg["r_eq"][j, kk, ss]
+        R = arm[j, kk, ss]
+        s = sep_all[j, kk, ss]
+        Tn = T * eo.ratio * 1e3  # gear torque [N·mm]
+        # Weber's formula holds while the Hertz half-width b is well below the depth h
+        # (ln(2h/b) − ν/(2(1−ν)) > 0); loads are capped where b would reach h, i.e.
+        # w′ ≤ π E* h²/(4 R_eq) — beyond that a segment is in gross edge contact and
+        # the secant compliance is frozen at the cap (logged)
+        e_star = E / (2 * (1 - nu**2))
+        w_cap = np.pi * e_star * np.min(depth, axis=1) ** 2 / (4 * Req)
+        # first Weber loads: the torque shared evenly over all the roll's segments (not
+        # the neighbour's loads, nor the selection's: the roll's result then depends on
+        # the roll alone, not on the path to it)
+        share = Tn / max(float(np.sum(arm[j][ok_all[j]])), 1e-12)
+        load = np.minimum(np.full(kk.size, share), w_cap * L)
+        start = None if prior is None else np.nan_to_num(prior)
+        lte_prev = step_prev = None
+        sol = problem = None
+        n_it = time_used = 0
+        cap = w_cap * L
+        for w_it in range(1, opts.max_weber_iterations + 1):
+            # Newton on Weber's δ(F): δ ≈ c_s F₀ + c_t (F − F₀), c_s the secant and c_t
+            # the tangent compliance at the loads F₀, i.e. compliance c_t and separation
+            # s + (c_s − c_t) F₀; the secant alone where c_t is not well positive (b near
+            # the depth h) or the load is at the cap (frozen there)
+            cs, ct = weber_compliance(load, L, depth[:, 0], depth[:, 1], e1=E, nu1=nu, e2=E,
+                                      nu2=nu, r_eq=Req, kind=("secant", "tangent"))
+            newton = (ct > 0.5 * cs) & (load < cap)
+            cw = np.where(newton, ct, cs)
+            problem = ContactProblem(C_struct + np.diag(cw),
+                                     s + np.where(newton, (cs - ct) * load, 0.0), R, Tn,
+                                     name=f"{case.name} roll {j} T {T:g}")
+            sol = solve_contact(problem, opts.solver,
+                                initial=sol if sol is not None else start)
+            time_used += sol.solve_time + sol.build_time
+            if not sol.found:
+                break
+            load = np.minimum(np.maximum(sol.force, 0.0), cap)
+            if np.any(sol.force > cap):
+                log.info("roll %d: Weber load cap reached on %d segments", j,
+                         int(np.sum(sol.force > cap)))
+            lte = sol.rotation * 1e6
+            n_it = w_it
+            if lte_prev is not None:
+                step = abs(lte - lte_prev)
+                # Newton's steps shrink quadratically where every loaded segment took
+                # it: the next step is then about step²/(last step)
+                quadratic = step_prev is not None and bool(np.all(newton[load > 0]))
+                if step < opts.weber_tolerance or (
+                        quadratic and step * step < 0.1 * opts.weber_tolerance * step_prev):
+                    break
+                step_prev = step
+            lte_prev = lte
+        return sol, problem, kk, ss, n_it, time_used
+
     problems: dict[tuple[int, int], ContactProblem] = {}
     last_force: list[np.ndarray | None] = [None] * NT  # forces of the last computed roll [N]
+    last_theta: list[float | None] = [None] * NT  # its LTE Θ + UTE [rad]
+    computed = [j for j in range(J) if int(seg["source"][j]) == j and ok_all[j].any()]
+    if fixed is not None:
+        assemble([(j, ok_all[j] & (sep_all[j] <= fixed)) for j in computed])
+    elif computed:
+        assemble([(computed[0], generous(computed[0]))])
     for j in range(J):
         src = int(seg["source"][j])
         if src != j:
@@ -764,59 +893,49 @@ def loaded_tca(
             if bar is not None:
                 bar.update()
             continue
-        ok, wide = ok_all[j], wide_all[j]
-        if j in structural:
-            C_wide, depth_wide = structural[j]
         for it, T in enumerate(torques):
-            sel = ok & (sep_all[j] <= limit_of(T))
-            idx = np.argwhere(sel)  # (N, 2): pair index, segment index
-            if idx.size == 0:
+            if j not in pool or not pool[j].any():
                 status[it, j] = "no segment within the separation limit"
                 continue
-            kk, ss = idx[:, 0], idx[:, 1]
-            sub = np.flatnonzero(sel[wide])  # positions of the selection within the wide set
-            C_struct = C_wide[np.ix_(sub, sub)]
-            depth = depth_wide[sub]
-            n_seg[j] = max(n_seg[j], kk.size)
-            L = seg["length"][j, kk, ss]
-            Req = seg["r_eq"][j, kk, ss]
-            R = seg["moment_arm"][j, kk, ss]
-            s = sep_all[j, kk, ss]
-            Tn = T * eo.ratio * 1e3  # gear torque [N·mm]
-            # Weber's formula holds while the Hertz half-width b is well below the depth h
-            # (ln(2h/b) − ν/(2(1−ν)) > 0); loads are capped where b would reach h, i.e.
-            # w′ ≤ π E* h²/(4 R_eq) — beyond that a segment is in gross edge contact and
-            # the secant compliance is frozen at the cap (logged)
-            e_star = E / (2 * (1 - nu**2))
-            w_cap = np.pi * e_star * np.min(depth, axis=1) ** 2 / (4 * Req)
-            load = np.minimum(np.full(kk.size, Tn / max(float(R.sum()), 1e-12)), w_cap * L)
-            lte_prev = None
-            sol = None
-            # warm start: the previous computed roll's forces on the same (pair, segment),
-            # then each Weber iteration's own solution (the backends that take a start use
-            # it to begin nearer the answer; the solution itself does not depend on it)
-            start = (None if last_force[it] is None
-                     else np.nan_to_num(last_force[it][kk, ss]))
-            for w_it in range(1, opts.max_weber_iterations + 1):
-                cw = weber_compliance(load, L, depth[:, 0], depth[:, 1], e1=E, nu1=nu, e2=E,
-                                      nu2=nu, r_eq=Req, kind="secant")
-                problem = ContactProblem(C_struct + np.diag(cw), s, R, Tn,
-                                         name=f"{case.name} roll {j} T {T:g}")
-                sol = solve_contact(problem, opts.solver,
-                                    initial=sol if sol is not None else start)
-                solve_time[it, j] += sol.solve_time + sol.build_time
+            # the segments that may touch: the whole pool, or (screening) those the
+            # LTE of the last computed roll at this torque would close here
+            if fixed is not None or last_theta[it] is None:
+                sel = pool[j]
+            else:
+                sel = near(j, last_theta[it] - ute_env[j]) & pool[j]
+                if not sel.any():
+                    sel = pool[j]
+            # the last computed roll's forces on the same (pair, segment) start the
+            # Weber iteration and (backends that take one) the solver
+            prior = None if last_force[it] is None else last_force[it][sel]
+            for _round in range(_SCREEN_ROUNDS):
+                if np.any(sel & ~pool[j]):
+                    assemble([(j, pool[j] | sel)])
+                sol, problem, kk, ss, n_it, t_used = weber_solve(j, T, sel, prior)
+                solve_time[it, j] += t_used
                 if not sol.found:
                     break
-                load = np.minimum(np.maximum(sol.force, 0.0), w_cap * L)
-                if np.any(sol.force > w_cap * L):
-                    log.info("roll %d: Weber load cap reached on %d segments", j,
-                             int(np.sum(sol.force > w_cap * L)))
-                lte = sol.rotation * 1e6
-                weber_iters[it, j] = w_it
-                if lte_prev is not None and abs(lte - lte_prev) < opts.weber_tolerance:
+                # a segment left out with s ≥ R Θ keeps its gap open under any loads
+                # (the compliances are ≥ 0): the solution is that of all segments
+                missed = ok_all[j] & ~sel & (sep_all[j] < arm[j] * sol.rotation)
+                if not missed.any():
                     break
-                lte_prev = lte
-            assert sol is not None
+                if fixed is not None:
+                    log.warning("roll %d, torque %g N m: %d segments beyond the separation "
+                                "limit %g mm would touch", j, T, int(missed.sum()), fixed)
+                    break
+                # the missed ones and, within the assembled pool, those nearly missed
+                sel = sel | missed | (near(j, sol.rotation) & pool[j])
+                full = np.full((K, S), np.nan)
+                full[kk, ss] = np.maximum(sol.force, 0.0)
+                prior = full[sel]
+            else:
+                log.warning("roll %d, torque %g N m: the screening of the segments did not "
+                            "settle in %d rounds", j, T, _SCREEN_ROUNDS)
+                sol = dataclasses.replace(sol, found=False,
+                                          status="segment screening did not settle")
+            weber_iters[it, j] = n_it
+            n_seg[j] = max(n_seg[j], kk.size)
             if problem_sink is not None:
                 problem_sink(problem)
                 problems[it, j] = problem
@@ -829,8 +948,11 @@ def loaded_tca(
                 continue
             F = sol.force
             rotation[it, j] = sol.rotation
+            last_theta[it] = sol.rotation + ute_env[j]
             last_force[it] = np.full((K, S), np.nan)
             last_force[it][kk, ss] = F
+            L = seg["length"][j, kk, ss]
+            Req = seg["r_eq"][j, kk, ss]
             w = F / L
             b = hertz_half_width(np.maximum(w, 1e-12), Req, E, nu, E, nu)
             pmax = np.where(F > 0, 2 * w / (np.pi * b), 0.0)
@@ -840,10 +962,27 @@ def loaded_tca(
             out["pressure_max"][it, j, kk, ss] = pmax
             contact[it, j, kk, ss] = sol.active_set.astype(np.int8)
             in_problem[it, j, kk, ss] = 1
+        if fixed is None and computed and j == computed[0]:
+            # the pools of the other rolls: the segments this roll's LTE at the largest
+            # torque would close there (the LTE varies little over the cycle; a segment
+            # missed is added when its roll is solved)
+            it_max = int(np.argmax(torques))
+            jobs = []
+            for i in computed[1:]:
+                mask = (near(i, ute_env[j] + rotation[it_max, j] - ute_env[i])
+                        if found[it_max, j] else generous(i))
+                jobs.append((i, mask if mask.any() else generous(i)))
+            if jobs:
+                assemble(jobs)
         if bar is not None:
             bar.update()
     if bar is not None:
         bar.close()
+    # the segment axis keeps the curve segments and the edge segments in some problem
+    keep = (seg["kind"] == 0) | np.any(in_problem > 0, axis=(0, 1, 2))
+    seg = _keep_segments(seg, keep)
+    sep_all, contact, in_problem = sep_all[..., keep], contact[..., keep], in_problem[..., keep]
+    out = {k: v[..., keep] for k, v in out.items()}
     return _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, contact,
                          in_problem, rotation, resid, found, status, solve_time, weber_iters,
                          compliance_time, n_seg, m1, m2,
@@ -912,7 +1051,8 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
         "half_width": _var(dims4, out["half_width"], "mm", "Hertzian half-width"),
         "contact": _var(dims4, contact, "1", "segment in contact (1) or open (0)"),
         "in_problem": _var(dims4, in_problem, "1",
-                           "segment within the separation limit (1) or left out (0)"),
+                           "segment in the contact problem (1) or left out, its gap open "
+                           "(0)"),
         "separation": _var(("roll", "pair", "segment"), sep_all, "mm",
                            "initial separation (ease-off relative to the UTE)"),
         "moment_arm": _var(("roll", "pair", "segment"), seg["moment_arm"], "mm",
