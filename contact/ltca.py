@@ -21,12 +21,14 @@ evenly over the roll's segments (so a roll's result depends on that roll alone).
 c_t is not well positive (Hertz half-width near the depth) or a load is at the cap, the
 secant is used there (the fixed-point iteration).
 
-Segment selection (screening): a segment left out of a roll's problem with s ≥ R Θ
-keeps its gap open whatever the loads, since the compliance matrix has no negative
-entries (the gap is C F + s − R Θ ≥ s − R Θ); the solution on the other segments is then
-that of all of them. Each problem takes the segments with s < 1.1 R Θ̂ + 1 µm, Θ̂ the
-rotation of the last computed roll at that torque carried over by the UTE difference;
-after the solve any segment left out with s < R Θ is added and the roll solved again.
+Segment selection (screening): a segment left out of a roll's problem whose gap
+C F + s − R Θ stays open (≥ 0) at the solution changes nothing: the solution on the
+other segments is that of all of them. Each problem takes the segments with
+s < 1.1 R Θ̂ + 1 µm, Θ̂ the rotation of the last computed roll at that torque carried
+over by the UTE difference; after the solve the gaps of the segments left out are
+checked — exactly for those whose compliance is assembled, by s ≥ R Θ for the others
+(enough, as the compliance matrix has no negative entries: the gap is ≥ s − R Θ) — and
+any that would close is added and the roll solved again.
 The structural compliance is assembled once per roll for a pool of segments chosen the
 same way from the first roll's rotation at the largest torque (tests/test_ltca.py checks
 the open gaps of the segments left out against the full compliance).
@@ -915,9 +917,17 @@ def loaded_tca(
                 solve_time[it, j] += t_used
                 if not sol.found:
                     break
-                # a segment left out with s ≥ R Θ keeps its gap open under any loads
-                # (the compliances are ≥ 0): the solution is that of all segments
-                missed = ok_all[j] & ~sel & (sep_all[j] < arm[j] * sol.rotation)
+                # a segment left out keeps its gap open if s + C F − R Θ ≥ 0: checked
+                # exactly within the assembled pool, and beyond it by s ≥ R Θ (the
+                # compliances are ≥ 0); then the solution is that of all segments
+                rest = pool[j] & ~sel
+                missed = ok_all[j] & ~sel & ~pool[j] & (sep_all[j] < arm[j] * sol.rotation)
+                if rest.any():
+                    C_pool = structural[j][0]
+                    gap = (sep_all[j][rest] - arm[j][rest] * sol.rotation
+                           + C_pool[np.ix_(np.flatnonzero(rest[pool[j]]),
+                                           np.flatnonzero(sel[pool[j]]))] @ sol.force)
+                    missed[rest] = gap < 0.0
                 if not missed.any():
                     break
                 if fixed is not None:
