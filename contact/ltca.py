@@ -227,7 +227,8 @@ def _spline(eo: EaseOff, field: np.ndarray) -> RectBivariateSpline:
 
 
 def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], segments: int,
-                     spacing: str = "cosine", edges: tuple[float, float] | None = None):
+                     spacing: str = "cosine", edges: tuple[float, float] | None = None,
+                     edge_limit: float | None = None):
     """Contact segments of every (roll, pair): the LTCA discretisation (seed §3.3, Fig. 3.3).
 
     Parameters
@@ -250,6 +251,10 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
         the flank boundary split into segments of at most ``step``, each with R_eq from
         the edge radius; they follow the S curve segments along the segment axis.
         Default None: the curves only (the seed's line model).
+    edge_limit : float, optional — [mm]
+        Edge segments whose separation from the roll's UTE is surely above this (its
+        lower bound from the three samples) are not worked out (left NaN): they cannot
+        touch while R Θ stays below it. Default None: all.
 
     Returns
     -------
@@ -264,7 +269,8 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     over the segment),
     ``u``, ``v`` [1] gear projection-plane fractions, ``r_eq`` [mm]; (J, K): ``ute`` [rad];
     (J,): ``pinion_rotation``, ``gear_rotation`` [rad] (of the cycle's reference pair, to
-    which each pair's points are consistent: pairs sit whole pitches apart), ``source``
+    which each pair's points are consistent: pairs sit whole pitches apart),
+    ``edge_arm_max`` float [mm] the greatest normal arm on the flank boundary, ``source``
     [1] the first roll with the same curves (rolls whole mesh cycles apart: their targets
     agree to 1e-12 pitch; they are computed once and their entries are identical).
     """
@@ -277,7 +283,8 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     # round-off): they are computed once, from the first such roll ("source")
     source = _same_rolls(target, eo.pitch)
     first = np.flatnonzero(source == np.arange(roll.size))
-    geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing, edges)
+    geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing, edges,
+                            edge_limit)
     back = np.searchsorted(first, source)
     out = {k: (val[back] if isinstance(val, np.ndarray) and k != "kind" else val)
            for k, val in geo.items()}
@@ -294,7 +301,8 @@ def _same_rolls(target: np.ndarray, pitch: float) -> np.ndarray:
 
 
 def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, segments: int,
-                      spacing: str, edges: tuple[float, float] | None = None):
+                      spacing: str, edges: tuple[float, float] | None = None,
+                      edge_limit: float | None = None):
     """:func:`segment_geometry` of roll targets (J, K) [rad] with pinion rotations rp (J,)."""
     # each segment is sampled at its ends and its middle (2S + 1 points along a curve);
     # its fields follow the quadratic through the three (_SegmentQuadratic)
@@ -377,21 +385,27 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         "lag": lag, "r_eq": r_eq,
     }
     kind = np.zeros(S, dtype=np.int8)
+    edge_arm_max = 0.0
     if edges is not None:
         bd = flank_boundary(fields, edges[0])
         shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
-        edge = _edge_segments(case, eo, bd, edges[1], target, shift)
+        ute = cc.ute.reshape(J, K)
+        ute_env = np.min(np.where(np.isfinite(ute), ute, np.inf), axis=1)
+        edge = _edge_segments(case, eo, bd, edges[1], target, shift, ute_env, edge_limit)
+        edge_arm_max = float(np.max(bd.normal_arm, initial=0.0))
         out = {k: np.concatenate([out[k], edge[k]], axis=2) for k in out}
         kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
     return {
         **out, "kind": kind,
         "ute": cc.ute.reshape(J, K), "pinion_rotation": rp,
         "gear_rotation": eo.gear_phase - rp / eo.ratio, "shape": (J, K, kind.size),
+        "edge_arm_max": edge_arm_max,
     }
 
 
 def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
-                   target: np.ndarray, shift: np.ndarray) -> dict:
+                   target: np.ndarray, shift: np.ndarray, ute_env: np.ndarray,
+                   limit: float | None = None) -> dict:
     """Edge segments of every (roll, pair): the boundary where the pair's curve passes
     outside the contact region (:mod:`contact.edge`), clipped where it passes inside.
 
@@ -402,13 +416,15 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
     bd : FlankBoundary (E segments)
     edge_radius : float — [mm] the edges' rounding radius (R_eq: :func:`_edge_r_eq`)
     target, shift : arrays (J, K) — [rad] roll value q of each pair and its curve's shift t
+    ute_env : array (J,) — [rad] each roll's UTE (the least over its pairs)
+    limit : float, optional — [mm] see :func:`segment_geometry`'s ``edge_limit``
 
     Returns
     -------
     dict of arrays (J, K, E[, ...]), the keys of :func:`segment_geometry`'s segment
     fields; the lag is the mean of Φ_q = ε + ½ K (Q − q)² over the part in edge contact.
     NaN (length 0) where the pair's curve passes inside the region all along the
-    boundary segment.
+    boundary segment, or its separation is surely above ``limit``.
 
     Notes
     -----
@@ -428,7 +444,17 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
     # (flattened to n candidates), the rest stay NaN (no edge contact)
     outside = ((bd.roll_angle[None, None] - (target + shift)[..., None, None])
                * bd.inward_slope)  # (J, K, E, 3)
-    jj, kk, ee = np.nonzero(np.any(outside >= 0, axis=-1))
+    cand = np.any(outside >= 0, axis=-1)
+    if limit is not None:
+        # the separation's lower bound: Φ_q at the samples, less the quadratic's second
+        # difference (its dip below the samples is at most a quarter of that), times
+        # the least normal arm
+        phi_s = (bd.ease_off_angle + 0.5 * bd.gap_curvature
+                 * (bd.roll_angle - target[..., None, None]) ** 2)  # (J, K, E, 3)
+        dip = np.abs(phi_s[..., 0] - 2.0 * phi_s[..., 1] + phi_s[..., 2])
+        low = np.min(phi_s, axis=-1) - dip - ute_env[:, None, None]
+        cand &= ~(np.min(bd.normal_arm, axis=-1) * low > limit)
+    jj, kk, ee = np.nonzero(cand)
     outside = outside[jj, kk, ee]  # (n, 3)
     q = target[jj, kk][:, None]  # (n, 1) roll value of the candidate's pair
     phi = eo.roll_zero + eo.drive_sense * target[jj, kk]  # (n,) pinion rotation
@@ -724,10 +750,41 @@ def loaded_tca(
     start = m1 if math.isfinite(m1) else 0.0
     n_roll = opts.cycles * opts.rolls_per_cycle
     roll = start + np.arange(n_roll) * eo.pitch / opts.rolls_per_cycle
-    t1 = time.perf_counter()
-    seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing,
-                           (opts.edge_step, opts.edge_radius) if opts.edge_contact else None)
-    t_segments = time.perf_counter() - t1
+    # edge segments surely separated by more than a generous limit are not worked out
+    # (segment_geometry's edge_limit); the limit is checked against the solution's
+    # R Θ and the analysis repeated with a wider one if it was too tight
+    edge_limit = None
+    if opts.edge_contact:
+        edge_limit = opts.separation_limit or (
+            0.05 + 0.15 * float(torques.max()) * eo.ratio / 1000.0)
+    while True:
+        sink: list[ContactProblem] | None = [] if problem_sink is not None else None
+        t1 = time.perf_counter()
+        seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing,
+                               (opts.edge_step, opts.edge_radius) if opts.edge_contact
+                               else None, edge_limit=edge_limit)
+        t_segments = time.perf_counter() - t1
+        ds, reach = _solve_rolls(case, eo, opts, torques, roll, seg, m1, m2, progress, sink,
+                                 timing={"easeoff": t_easeoff, "segments": t_segments})
+        if edge_limit is None or opts.separation_limit is not None or reach <= edge_limit:
+            break
+        log.info("edge segments: R Θ reached %.3g mm beyond the limit %.3g mm; again with "
+                 "%.3g mm", reach, edge_limit, 2.0 * reach)
+        edge_limit = 2.0 * reach
+    if problem_sink is not None:
+        for problem in sink:
+            problem_sink(problem)
+    return ds
+
+
+def _solve_rolls(case, eo: EaseOff, opts: LTCAOptions, torques: np.ndarray, roll: np.ndarray,
+                 seg: dict, m1: float, m2: float, progress: bool,
+                 sink: list | None, timing: dict) -> tuple[xr.Dataset, float]:
+    """The contact problems of every (torque, roll) of :func:`loaded_tca` on the segments
+    ``seg`` (:func:`segment_geometry`); returns the ``/ltca`` dataset and the largest
+    R Θ [mm] the edge segments could reach (greatest boundary arm × greatest Θ), which
+    must not exceed the ``edge_limit`` the segments were worked out with. The final
+    problems are appended to ``sink`` (if given) in order."""
     ute_env = np.nanmin(seg["ute"], axis=1)  # (J,)
     if not np.all(np.isfinite(ute_env)):
         raise InputError("no tooth pair is in contact at some roll position (check the case)")
@@ -826,10 +883,12 @@ def loaded_tca(
         # the secant compliance is frozen at the cap (logged)
         e_star = E / (2 * (1 - nu**2))
         w_cap = np.pi * e_star * np.min(depth, axis=1) ** 2 / (4 * Req)
-        # first Weber loads: the torque shared evenly over all the roll's segments (not
+        # first Weber loads: the torque shared evenly over the roll's curve segments (not
         # the neighbour's loads, nor the selection's: the roll's result then depends on
-        # the roll alone, not on the path to it)
-        share = Tn / max(float(np.sum(arm[j][ok_all[j]])), 1e-12)
+        # the roll alone, not on the path to it or on which edge segments were worked out)
+        on_curve = ok_all[j] & (seg["kind"] == 0)
+        share = Tn / max(float(np.sum(arm[j][on_curve if on_curve.any() else ok_all[j]])),
+                         1e-12)
         load = np.minimum(np.full(kk.size, share), w_cap * L)
         start = None if prior is None else np.nan_to_num(prior)
         lte_prev = step_prev = None
@@ -888,8 +947,8 @@ def loaded_tca(
                         status, weber_iters):
                 arr[:, j] = arr[:, src]
             for it in range(NT):
-                if problem_sink is not None and (it, src) in problems:
-                    problem_sink(dataclasses.replace(
+                if sink is not None and (it, src) in problems:
+                    sink.append(dataclasses.replace(
                         problems[it, src], name=f"{case.name} roll {j} T {torques[it]:g}"))
             n_seg[j] = n_seg[src]
             if bar is not None:
@@ -946,8 +1005,8 @@ def loaded_tca(
                                           status="segment screening did not settle")
             weber_iters[it, j] = n_it
             n_seg[j] = max(n_seg[j], kk.size)
-            if problem_sink is not None:
-                problem_sink(problem)
+            if sink is not None:
+                sink.append(problem)
                 problems[it, j] = problem
             found[it, j] = int(sol.found)
             status[it, j] = sol.status
@@ -993,10 +1052,10 @@ def loaded_tca(
     seg = _keep_segments(seg, keep)
     sep_all, contact, in_problem = sep_all[..., keep], contact[..., keep], in_problem[..., keep]
     out = {k: v[..., keep] for k, v in out.items()}
+    reach = float(seg["edge_arm_max"]) * float(np.nanmax(rotation, initial=0.0))
     return _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, contact,
                          in_problem, rotation, resid, found, status, solve_time, weber_iters,
-                         compliance_time, n_seg, m1, m2,
-                         timing={"easeoff": t_easeoff, "segments": t_segments})
+                         compliance_time, n_seg, m1, m2, timing=timing), reach
 
 
 def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, contact,

@@ -407,9 +407,10 @@ class ShellModel:
             # Σ_g w_g a[k, (n, g)] b[m, (n, g)] as rows (k, m), columns n
             if wts.size == 1:
                 return (a[:, None, :] * b[None, :, :]).reshape(-1, n_pts)
-            aw = a.reshape(a.shape[0], n_out, wts.size) * wts
-            return np.einsum("kng,mng->kmn", aw, b.reshape(b.shape[0], n_out, wts.size),
-                             optimize=False).reshape(-1, n_out)
+            aw = (a.reshape(a.shape[0], n_out, wts.size) * wts).transpose(1, 0, 2)
+            bt = b.reshape(b.shape[0], n_out, wts.size).transpose(1, 2, 0)
+            # one (k × G)(G × m) product per group, stacked over the groups n
+            return np.matmul(aw, bt).transpose(1, 2, 0).reshape(-1, n_out)
 
         for fam, off, power, count in self._layout:
             if (power, count) not in heights:
