@@ -652,6 +652,13 @@ class EaseOff(NamedTuple):
     ratio: float  # z_g / z_p
     pitch: float  # [rad] pinion angular pitch 2π/z_p = one mesh cycle of roll
     kinematics: MeshKinematics
+    # (nu, nv, 3) envelope parameters (s [mm], θ, q [rad]) of the pinion mate of each gear
+    # node and of the gear node itself, and (nu, nv) their blade sections: starting
+    # guesses for solving either surface nearby
+    pinion_parameters: np.ndarray | None = None
+    pinion_section: np.ndarray | None = None
+    gear_parameters: np.ndarray | None = None
+    gear_section: np.ndarray | None = None
 
     @property
     def valid(self) -> np.ndarray:
@@ -920,7 +927,10 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
         placement_error=np.where(mate, err, np.nan), smooth=smooth, reason=reason,
         drive_sense=drive,
         lag_sense=lag, roll_zero=roll_zero, gear_phase=psi0,
-        ratio=kin.ratio, pitch=2.0 * math.pi / case.pinion.blank.teeth, kinematics=kin)
+        ratio=kin.ratio, pitch=2.0 * math.pi / case.pinion.blank.teeth, kinematics=kin,
+        pinion_parameters=np.where(mate[..., None], mt.params, np.nan),
+        pinion_section=mt.section,
+        gear_parameters=np.stack([gs.s, gs.theta, gs.q], -1), gear_section=gs.section)
 
 
 def easeoff_dataset(eo: EaseOff, case: Case, *,

@@ -526,17 +526,33 @@ def _pinion_curvature(case, eo: EaseOff, u, v, w_gear, phi):
     gear at its ideal rotation (the directions are carried to the pinion frame)."""
     kin = eo.kinematics
     ps = flank_at(case, "pinion", eo.pinion_flank, _spline(eo, eo.pinion_axial).ev(u, v),
-                  _spline(eo, eo.pinion_radius).ev(u, v))
+                  _spline(eo, eo.pinion_radius).ev(u, v),
+                  guess=_node_guess(eo, eo.pinion_parameters, eo.pinion_section, u, v))
     w_pair = _gear_to_pair(kin, eo.gear_phase - phi / eo.ratio, w_gear, vec=True)
     w_p = _rotate(kin.pinion_axis, -np.broadcast_to(phi, u.shape), w_pair) @ \
         kin.pinion_place[:3, :3]
     return normal_curvature(ps.kappa1, ps.kappa2, ps.dir1, w_p)
 
 
+def _node_guess(eo: EaseOff, params, section, u, v):
+    """Envelope-parameter guesses (s, θ, q, section) at gear places (u, v): those of the
+    nearest gear grid node (``params`` (nu, nv, 3), ``section`` (nu, nv) of the ease-off;
+    None where the ease-off has none)."""
+    if params is None or section is None:
+        return None
+    iu = np.rint(np.interp(u, eo.u, np.arange(eo.u.size))).astype(int)
+    iv = np.rint(np.interp(v, eo.v, np.arange(eo.v.size))).astype(int)
+    par = params[iu, iv]
+    return par[..., 0], par[..., 1], par[..., 2], section[iu, iv]
+
+
 def _gear_curvature(case, eo: EaseOff, position, w_gear):
     """Normal curvature [1/mm] of the real gear at gear-frame points along ``w_gear``."""
-    gs = flank_at(case, "gear", eo.gear_flank, position[..., 2],
-                  np.hypot(position[..., 0], position[..., 1]))
+    z, rho = position[..., 2], np.hypot(position[..., 0], position[..., 1])
+    u, v = projection_fractions(blank_outline(case.gear.blank).corners, z, rho)
+    guess = _node_guess(eo, eo.gear_parameters, eo.gear_section, np.clip(u, 0.0, 1.0),
+                        np.clip(v, eo.v[0], eo.v[-1]))
+    gs = flank_at(case, "gear", eo.gear_flank, z, rho, guess=guess)
     return normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, w_gear)
 
 

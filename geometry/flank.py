@@ -281,7 +281,8 @@ def flank_surface(case: Case, member: str, flank: str, *, nu: int = 41, nv: int 
     return flank_at(case, member, flank, grid.axial, grid.radius)._replace(grid=grid)
 
 
-def flank_at(case: Case, member: str, flank: str, axial, radius) -> FlankSurface:
+def flank_at(case: Case, member: str, flank: str, axial, radius,
+             guess=None) -> FlankSurface:
     """One flank of one member solved at arbitrary projection-plane places (seed §2.2).
 
     Parameters
@@ -293,6 +294,10 @@ def flank_at(case: Case, member: str, flank: str, axial, radius) -> FlankSurface
         ``"concave"`` or ``"convex"``.
     axial, radius : array_like, same shape — [mm]
         Axial position z and radius ρ in the member's projection plane.
+    guess : tuple, optional
+        (s, θ, q[, section]) starting guesses of the envelope parameters from nearby
+        solutions, broadcastable to ``axial`` (:func:`geometry.meshing.solve_envelope`:
+        points without a finite guess, or not converging from it, are solved as without).
 
     Returns
     -------
@@ -317,7 +322,7 @@ def flank_at(case: Case, member: str, flank: str, axial, radius) -> FlankSurface
         raise InputError(f"axial, radius: must have equal shapes, got {z.shape} and {rho.shape}")
     sol = solve_envelope(tool.blade, tool.machine, z, rho,
                          length_scale=blank.outer_cone_distance,
-                         depth=blank.outer_addendum + blank.outer_dedendum)
+                         depth=blank.outer_addendum + blank.outer_dedendum, guess=guess)
     pc = surface_curvatures(sol.family, tool.machine.process == "Generate",
                             blank.outer_cone_distance)
     valid = sol.reason == 0
