@@ -936,9 +936,12 @@ def _solve_rolls(case, eo: EaseOff, opts: LTCAOptions, torques: np.ndarray, roll
             n_it = w_it
             if lte_prev is not None:
                 step = abs(lte - lte_prev)
-                # Newton's steps shrink quadratically where every loaded segment took
-                # it: the next step is then about step²/(last step)
-                quadratic = step_prev is not None and bool(np.all(newton[load > 0]))
+                # Newton's steps shrink quadratically once close (the last step below
+                # 1000 tolerances) where every loaded segment took it: the next step is
+                # then about step²/(last step), asked to be ten times below the tolerance
+                quadratic = (step_prev is not None
+                             and step_prev < 1000.0 * opts.weber_tolerance
+                             and bool(np.all(newton[load > 0])))
                 if step < opts.weber_tolerance or (
                         quadratic and step * step < 0.1 * opts.weber_tolerance * step_prev):
                     break
