@@ -269,14 +269,16 @@ class ContactCurves(NamedTuple):
     index: np.ndarray  # batch: sample index nearest to H (-1 where no curve)
 
 
-def _seed_places(f: _Fields, t: np.ndarray, frac: np.ndarray) -> ContactCurves:
+def _seed_places(f: _Fields, t: np.ndarray, frac: np.ndarray,
+                 coarse_per_cell: int = _COARSE_PER_CELL) -> ContactCurves:
     """Places, ε and UTE of the iso-lines Q = t (flat batch), without the flank fields
     (``normal_arm``, ``position``, ``normal`` are None; see :func:`_curve_fields`), sampled
-    at the fractions ``frac`` (increasing from 0 to 1) of u between each curve's ends."""
+    at the fractions ``frac`` (increasing from 0 to 1) of u between each curve's ends; the
+    curves are first located on ``coarse_per_cell`` samples per grid cell along u."""
     nb = t.size
     n_point = frac.size
     u0, u1 = float(f.u[0]), float(f.u[-1])
-    nc = _COARSE_PER_CELL * (len(f.u) - 1) + 1
+    nc = coarse_per_cell * (len(f.u) - 1) + 1
     uc = np.linspace(u0, u1, nc)
     vc = f.solve_v(uc[None, :], t[:, None], lattice=f.lattice(uc)[None, :, :])
     ok = f.inside(np.broadcast_to(uc, vc.shape), vc)
@@ -594,7 +596,9 @@ def _probe_shift(f: _Fields, t: np.ndarray):
 
     def cost(tc, dd):
         """UTE_seed(t + d) + ½ K d² (inf where the iso-line misses the region or K ≤ 0)."""
-        pr = _seed_places(f, tc + dd, frac)
+        # (located on one coarse sample per cell: the shifted curve found is computed
+        # again at full resolution)
+        pr = _seed_places(f, tc + dd, frac, coarse_per_cell=1)
         k = _gap_at_contact(f, pr)
         c = np.where(k > 0, pr.ute + 0.5 * k * dd**2, np.nan)
         return np.where(np.isfinite(c), c, np.inf)
