@@ -532,7 +532,14 @@ def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
         g[np.flatnonzero(edge)] = np.where(np.isfinite(fd), fd, g[edge])
     k = f.gap.ev(cu, cv)
     shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), base)
-    second = _seed_places(f, t + shift, frac)
+    # (only where there is a curve to correct: elsewhere the shift is the base's and the
+    # curve the first's)
+    redo = np.flatnonzero(have)
+    second = first
+    if redo.size:
+        sub = _seed_places(f, (t + shift)[redo], frac)
+        second = ContactCurves(*(None if a is None else _put_rows(a, redo, b)
+                                 for a, b in zip(first, sub, strict=True)))
     ok2 = np.isfinite(second.ute)
     # keep the first-order curve where the shifted one leaves the contact region
     use = ok2 | ~have
