@@ -148,10 +148,11 @@ class LTCAOptions:
         ends where a pair's curve passes outside the contact region (an entering pair at
         the flank's corner before its curve emerges). False: the seed's line model, load
         on the curves only.
-    edge_radius : float — [mm]
+    edge_radius : float or None — [mm]
         Rounding radius of the tooth edges, across which an edge segment is in Hertz
-        line contact with the mating flank (> 0; default 0.5 mm, a light tip-edge
-        chamfer/rounding; the case files carry no edge-breaking data).
+        line contact with the mating flank. Default None: each member's own, the case's
+        ``[<member>.blank] edge_break_radius`` (default 0.5 mm, a light edge break); a
+        value in (0, 50] overrides both (e.g. a sensitivity study).
     edge_step : float — [mm]
         Largest edge segment along the boundary (> 0; default 0.25 mm: halving it moves
         the LTE by < 0.1 µrad and the edge pressure by < 1 % on the seed case).
@@ -171,7 +172,7 @@ class LTCAOptions:
     weber_tolerance: float = 1e-3
     max_weber_iterations: int = 12
     edge_contact: bool = True
-    edge_radius: float = 0.5
+    edge_radius: float | None = None
     edge_step: float = 0.25
     youngs_modulus: float = 206_000.0
     poisson_ratio: float = 0.3
@@ -200,8 +201,13 @@ class LTCAOptions:
             )
         for name in ("edge_radius", "edge_step"):
             val = getattr(self, name)
-            if not (isinstance(val, (int, float)) and math.isfinite(val) and 0 < val <= 50):
-                raise InputError(f"{name}: must be a length in (0, 50] [mm], got {val!r}")
+            if name == "edge_radius" and val is None:
+                continue
+            if not (isinstance(val, (int, float)) and not isinstance(val, bool)
+                    and math.isfinite(val) and 0 < val <= 50):
+                extra = " or None" if name == "edge_radius" else ""
+                raise InputError(f"{name}: must be a length in (0, 50] [mm]{extra}, got "
+                                 f"{val!r}")
         if not isinstance(self.edge_contact, bool):
             raise InputError(f"edge_contact: must be True or False, got {self.edge_contact!r}")
         if not self.weber_tolerance > 0:
@@ -246,10 +252,11 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     spacing : str
         Placing of the segment ends (:data:`contact.utca.CURVE_SPACINGS`; see
         :class:`LTCAOptions`).
-    edges : (float, float), optional — [mm]
+    edges : (float, float or (float, float)), optional — [mm]
         (step, edge radius): also the edge segments of every pair (:mod:`contact.edge`),
         the flank boundary split into segments of at most ``step``, each with R_eq from
-        the edge radius; they follow the S curve segments along the segment axis.
+        the edge radius — one for both members, or (pinion, gear), each member's for its
+        own edges; they follow the S curve segments along the segment axis.
         Default None: the curves only (the seed's line model).
     edge_limit : float, optional — [mm]
         Edge segments whose separation from the roll's UTE is surely above this (its
@@ -391,7 +398,8 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
         ute = cc.ute.reshape(J, K)
         ute_env = np.min(np.where(np.isfinite(ute), ute, np.inf), axis=1)
-        edge = _edge_segments(case, eo, bd, edges[1], target, shift, ute_env, edge_limit)
+        radii = tuple(np.broadcast_to(np.asarray(edges[1], dtype=float), (2,)))
+        edge = _edge_segments(case, eo, bd, radii, target, shift, ute_env, edge_limit)
         edge_arm_max = float(np.max(bd.normal_arm, initial=0.0))
         out = {k: np.concatenate([out[k], edge[k]], axis=2) for k in out}
         kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
@@ -403,7 +411,7 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     }
 
 
-def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
+def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],
                    target: np.ndarray, shift: np.ndarray, ute_env: np.ndarray,
                    limit: float | None = None) -> dict:
     """Edge segments of every (roll, pair): the boundary where the pair's curve passes
@@ -414,7 +422,8 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
     case : geometry.case.Case
     eo : EaseOff
     bd : FlankBoundary (E segments)
-    edge_radius : float — [mm] the edges' rounding radius (R_eq: :func:`_edge_r_eq`)
+    edge_radius : (float, float) — [mm] the pinion's and the gear's edge rounding radius
+        (R_eq: :func:`_edge_r_eq`)
     target, shift : arrays (J, K) — [rad] roll value q of each pair and its curve's shift t
     ute_env : array (J,) — [rad] each roll's UTE (the least over its pairs)
     limit : float, optional — [mm] see :func:`segment_geometry`'s ``edge_limit``
@@ -556,12 +565,12 @@ def _gear_curvature(case, eo: EaseOff, position, w_gear):
     return normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, w_gear)
 
 
-def _edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
+def _edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],
                which: np.ndarray) -> np.ndarray:
     """R_eq [mm] across the boundary segments ``which`` (indices (M,)): the edge's
-    rounding (radius r_e) on the other member's flank, 1/(1/r_e + κ_other) at the
-    segment's middle (κ_other along n × t, t the edge tangent; the pinion taken at its
-    mate's instant Q)."""
+    rounding (radius r_e: ``edge_radius`` (pinion, gear) [mm], the edge's own member's)
+    on the other member's flank, 1/(1/r_e + κ_other) at the segment's middle (κ_other
+    along n × t, t the edge tangent; the pinion taken at its mate's instant Q)."""
     if which.size == 0:
         return np.zeros(0)
     u, v = bd.u[which, 1], bd.v[which, 1]
@@ -575,7 +584,7 @@ def _edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: float,
         k_other[g] = _pinion_curvature(case, eo, u[g], v[g], w[g], phi)
     if np.any(~g):
         k_other[~g] = _gear_curvature(case, eo, pos[~g], w[~g])
-    krel = 1.0 / edge_radius + k_other
+    krel = 1.0 / np.where(g, edge_radius[1], edge_radius[0]) + k_other
     return np.where(np.isfinite(krel), 1.0 / np.maximum(krel, 1e-4), np.nan)
 
 
@@ -777,7 +786,7 @@ def loaded_tca(
         sink: list[ContactProblem] | None = [] if problem_sink is not None else None
         t1 = time.perf_counter()
         seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing,
-                               (opts.edge_step, opts.edge_radius) if opts.edge_contact
+                               (opts.edge_step, edge_radii(case, opts)) if opts.edge_contact
                                else None, edge_limit=edge_limit)
         t_segments = time.perf_counter() - t1
         ds, reach = _solve_rolls(case, eo, opts, torques, roll, seg, m1, m2, progress, sink,
@@ -791,6 +800,15 @@ def loaded_tca(
         for problem in sink:
             problem_sink(problem)
     return ds
+
+
+def edge_radii(case, opts: LTCAOptions) -> tuple[float, float]:
+    """(pinion, gear) rounding radii of the tooth edges [mm]: ``opts.edge_radius`` if set,
+    else each member's blank ``edge_break_radius``."""
+    if opts.edge_radius is not None:
+        return float(opts.edge_radius), float(opts.edge_radius)
+    return (float(case.pinion.blank.edge_break_radius),
+            float(case.gear.blank.edge_break_radius))
 
 
 def _solve_rolls(case, eo: EaseOff, opts: LTCAOptions, torques: np.ndarray, roll: np.ndarray,
@@ -1226,6 +1244,8 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
         "time_segments_s": timing["segments"],
         "misalignment": json_misalignment(case.misalignment),
         "ratio": float(eo.ratio),
+        "edge_radius_pinion_mm": edge_radii(case, opts)[0] if opts.edge_contact else np.nan,
+        "edge_radius_gear_mm": edge_radii(case, opts)[1] if opts.edge_contact else np.nan,
         "pinion_axis": np.asarray(eo.kinematics.pinion_axis, float),
         "pinion_origin_mm": np.asarray(eo.kinematics.pinion_origin, float),
         "gear_axis": np.asarray(eo.kinematics.gear_axis, float),

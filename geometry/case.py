@@ -84,6 +84,11 @@ class Blank:
     outer_addendum, outer_dedendum : float — [mm]
         h_ae ≥ 0, h_fe > 0 at R_e, measured perpendicular to the pitch cone; the face and
         root cones must pass through these points within max(0.02 mm, 1 % of h_ae + h_fe).
+    edge_break_radius : float — [mm]
+        Rounding radius of the tooth's edges (the tip edge, toe and heel ends: the edge
+        break), in (0, h_ae + h_fe); default 0.5 mm, a light edge break. An edge in
+        contact with the mating flank is a Hertz line contact of this radius
+        (:mod:`contact.edge`).
 
     Raises
     ------
@@ -102,6 +107,7 @@ class Blank:
     root_apex: float
     outer_addendum: float
     outer_dedendum: float
+    edge_break_radius: float = 0.5
 
     def __post_init__(self) -> None:
         if isinstance(self.teeth, bool) or not isinstance(self.teeth, int) or not (
@@ -109,7 +115,7 @@ class Blank:
             raise InputError(f"teeth: must be an integer in [3, 500], got {self.teeth!r}")
         for name in ("face_width", "outer_cone_distance", "pitch_angle", "face_angle",
                      "root_angle", "pitch_apex", "face_apex", "root_apex", "outer_addendum",
-                     "outer_dedendum"):
+                     "outer_dedendum", "edge_break_radius"):
             val = getattr(self, name)
             if isinstance(val, bool) or not isinstance(val, (int, float)) or not math.isfinite(
                     val):
@@ -141,6 +147,11 @@ class Blank:
             raise InputError(f"outer_addendum: must be >= 0 mm, got {self.outer_addendum}")
         if self.outer_dedendum <= 0:
             raise InputError(f"outer_dedendum: must be > 0 mm, got {self.outer_dedendum}")
+        depth = self.outer_addendum + self.outer_dedendum
+        if not 0 < self.edge_break_radius < depth:
+            raise InputError(
+                f"edge_break_radius: must be in (0, outer_addendum + outer_dedendum = "
+                f"{_fmt(depth)}) mm, got {self.edge_break_radius}")
         # consistency: face and root cones through the outer addendum / dedendum points
         d = self.pitch_angle
         zp = -self.pitch_apex
@@ -281,6 +292,7 @@ _BLANK_FIELDS = {
     "root_apex": ("mm", False, 0.0),
     "outer_addendum": ("mm", True, None),
     "outer_dedendum": ("mm", True, None),
+    "edge_break_radius": ("mm", False, 0.5),
 }
 _BLADE_FIELDS = {
     "point_radius": ("mm", True, None),
