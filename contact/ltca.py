@@ -889,9 +889,16 @@ def _solve_rolls(case, eo: EaseOff, opts: LTCAOptions, torques: np.ndarray, roll
                 pinion_rotation=float(seg["pinion_rotation"][j]),
                 gear_rotation=float(seg["gear_rotation"][j]),
             ))
-        for (j, mask), (C_full, info) in zip(jobs, mesh_compliance_many(case, batch,
-                                                                        model=model),
-                                             strict=True):
+        try:
+            mats = mesh_compliance_many(case, batch, model=model)
+        except InputError as exc:
+            if fixed is None:
+                raise
+            raise InputError(
+                f"separation_limit: {fixed:g} mm takes in segments so far from contact that "
+                "their points lie off the mating tooth (far pairs' edges); use a smaller "
+                f"limit or the default screening (None): {exc}") from exc
+        for (j, mask), (C_full, info) in zip(jobs, mats, strict=True):
             pool[j] = mask
             structural[j] = (C_full - info["weber"], info["weber_depth"])
             compliance_time[j] += info["time"]

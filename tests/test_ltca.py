@@ -229,6 +229,16 @@ def test_screened_segments_give_the_solution_of_all_segments():
                 .all())
 
 
+def test_too_wide_fixed_separation_limit_is_named():
+    """A fixed 1 mm limit takes in far pairs' edge segments whose contact points lie off
+    the gear tooth on the spiral-bevel sample; the shell mapping refuses them, and the
+    error names the option to change (the default screening never takes them in)."""
+    case = load_case(ROOT / "cases" / "spiral_bevel_iso23509_s1.toml")
+    with pytest.raises(InputError, match="separation_limit"):
+        loaded_tca(case, [400.0], options=LTCAOptions(cycles=1, rolls_per_cycle=4,
+                                                      separation_limit=1.0))
+
+
 def test_weber_linearisation_converges_and_matters():
     # Weber's contact compliance is load dependent; the LTCA linearises it about the
     # current loads (Newton) and iterates. One solve (at the even-share reference load)
