@@ -523,13 +523,22 @@ def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
     qu, qv = f.q.ev(cu, cv, dx=1), f.q.ev(cu, cv, dy=1)
     eu, ev = f.eps.ev(cu, cv, dx=1), f.eps.ev(cu, cv, dy=1)
     g = (eu * qu + ev * qv) / (qu * qu + qv * qv)
-    edge = have & ((first.index == 0) | (first.index == n_point - 1))
-    if edge.any():
-        h = 1e-5
-        te = (t + base)[edge]
-        pair = _seed_places(f, np.r_[te + h, te - h], frac).ute
-        fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
-        g[np.flatnonzero(edge)] = np.where(np.isfinite(fd), fd, g[edge])
+    edge = np.flatnonzero(have & ((first.index == 0) | (first.index == n_point - 1)))
+    if edge.size:
+        # H at an end of its curve: UTE_seed = ε at the end, which slides along the
+        # region's boundary as q changes: g = (∇ε·b)/(∇Q·b), b the boundary's direction
+        at_lo = first.index[edge] == 0
+        g_end, smooth = _end_slope(f, np.where(at_lo, first.u[edge, 0], first.u[edge, -1]),
+                                   np.where(at_lo, first.v[edge, 0], first.v[edge, -1]))
+        g[edge[smooth]] = g_end[smooth]
+        rest = edge[~smooth]
+        if rest.size:
+            # at a corner of the region or a masked cell's edge: by finite differences
+            h = 1e-5
+            te = (t + base)[rest]
+            pair = _seed_places(f, np.r_[te + h, te - h], frac).ute
+            fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
+            g[rest] = np.where(np.isfinite(fd), fd, g[rest])
     k = f.gap.ev(cu, cv)
     shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), base)
     # (only where there is a curve to correct: elsewhere the shift is the base's and the
@@ -555,6 +564,39 @@ def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
     gap = np.where(fin, 0.5 * f.gap.ev(us, vs) * shift[:, None] ** 2, np.nan)
     ute = cc.ute + 0.5 * _gap_at_contact(f, cc) * shift ** 2
     return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
+
+
+def _end_slope(f: _Fields, u: np.ndarray, v: np.ndarray):
+    """dUTE_seed/dq [1] where the contact point H is the curve's end (u, v) (M,).
+
+    The end lies on the region's boundary, the zero set of the active term of
+    :meth:`_Fields.measure` (the pinion-blank margin, or a grid limit in u or v); as q
+    changes it slides along that boundary, direction b (the margin's level line, or the
+    grid line), so dε/dq = (∇ε·b)/(∇Q·b): the exact derivative of the model, where a
+    finite difference of UTE_seed would divide the end search's resolution (bisection to
+    ~3e-6 in u where the iso-line runs off the grid's tip or root) by the step.
+    Returns (g, smooth): ``smooth`` False where the end is not on one smooth boundary
+    piece (a corner: the second term within 1e-3; a masked cell's edge: the measure not
+    within 1e-4 of zero; or the iso-line nearly tangent to the boundary), for the
+    caller's finite differences.
+    """
+    v0, v1, u0, u1 = f.v[0], f.v[-1], f.u[0], f.u[-1]
+    vs = np.clip(v, v0, v1)
+    m = f.margin.ev(u, vs)
+    terms = np.stack([m, vs - v0, v1 - vs, u - u0, u1 - u])  # (5, M)
+    order = np.argsort(terms, axis=0)
+    k, k2 = order[0], order[1]
+    idx = np.arange(u.size)
+    c, c2 = terms[k, idx], terms[k2, idx]
+    mu, mv = f.margin.ev(u, vs, dx=1), f.margin.ev(u, vs, dy=1)
+    bu = np.where(k == 0, -mv, np.where(k <= 2, 1.0, 0.0))  # along the active boundary
+    bv = np.where(k == 0, mu, np.where(k <= 2, 0.0, 1.0))
+    qu, qv = f.q.ev(u, vs, dx=1), f.q.ev(u, vs, dy=1)
+    eu, ev = f.eps.ev(u, vs, dx=1), f.eps.ev(u, vs, dy=1)
+    den = qu * bu + qv * bv
+    smooth = (np.isfinite(v) & f.good_cell(u, vs) & (np.abs(c) < 1e-4) & (c2 > 1e-3)
+              & (np.abs(den) > 1e-3 * np.hypot(qu, qv) * np.hypot(bu, bv)))
+    return (eu * bu + ev * bv) / np.where(smooth, den, 1.0), smooth
 
 
 #: [pitch] largest iso-line shift sought for a pair whose iso-line misses the contact
