@@ -178,6 +178,31 @@ def test_projection_grid_layout_and_errors():
         projection_grid(bl, 4, 4, v_limits=(0.5, 0.2))
 
 
+def test_projection_fractions_invert_the_grid_layout():
+    """projection_fractions inverts the bilinear layout: the grid's own places give back
+    their (u, v) fractions, as do places outside the outline (u, v in [−0.5, 1.5]), to
+    1e-12; with one outline per point the same (identity, round-off only)."""
+    from geometry.flank import projection_fractions
+
+    bl = load_case(S1).gear.blank
+    c = blank_outline(bl).corners
+    g = projection_grid(bl, 9, 7, v_limits=(0.0, 1.0))
+    u, v = projection_fractions(c, g.axial, g.radius)
+    np.testing.assert_allclose(u, np.broadcast_to(g.u[:, None], u.shape), atol=1e-12)
+    np.testing.assert_allclose(v, np.broadcast_to(g.v[None, :], v.shape), atol=1e-12)
+    # beyond the outline: the bilinear layout's formula continued
+    uo, vo = np.meshgrid(np.linspace(-0.5, 1.5, 9), np.linspace(-0.5, 1.5, 7), indexing="ij")
+    p = ((1 - uo) * (1 - vo))[..., None] * c[0, 0] + (uo * (1 - vo))[..., None] * c[1, 0] \
+        + ((1 - uo) * vo)[..., None] * c[0, 1] + (uo * vo)[..., None] * c[1, 1]
+    u, v = projection_fractions(c, p[..., 0], p[..., 1])
+    np.testing.assert_allclose(u, uo, atol=1e-12)
+    np.testing.assert_allclose(v, vo, atol=1e-12)
+    per_point = np.repeat(c[None], uo.size, axis=0)
+    u2, v2 = projection_fractions(per_point, p[..., 0].ravel(), p[..., 1].ravel())
+    np.testing.assert_allclose(u2, u.ravel(), atol=1e-14)
+    np.testing.assert_allclose(v2, v.ravel(), atol=1e-14)
+
+
 def test_flank_dataset_conventions_and_netcdf_round_trip(tmp_path):
     """The Dataset has dims (u, v, xyz), every variable and coordinate carries units and
     long_name, attributes are netCDF-safe (contact.io.check_conventions), and it survives a
