@@ -179,4 +179,4 @@ def _piece(f, kind: int, uu: np.ndarray, vv: np.ndarray, step: float):
     xyz = np.stack([p.ev(us, vs) for p in f.pos], -1)
     idx = 2 * np.arange(n)[:, None] + np.arange(3)[None, :]  # (n, 3) samples per segment
     return (np.full(n, kind), us[idx], vs[idx], q[idx], f.eps.ev(us, vs)[idx],
-            f.gap.ev(us, vs)[idx], f.arm.ev(us, vs)[idx], slope[idx], xyz[idx], nrm[idx])
+            f.gap_at(us, vs)[idx], f.arm.ev(us, vs)[idx], slope[idx], xyz[idx], nrm[idx])

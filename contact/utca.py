@@ -136,6 +136,9 @@ class _Fields:
         sheet = valid | eo.smooth
         self.q, self.eps, self.gap = spl(
             [eo.raw_roll_angle, eo.raw_ease_off_angle, eo.gap_curvature], sheet)
+        k_nodes = eo.gap_curvature[sheet & np.isfinite(eo.gap_curvature)]
+        self.gap_range = ((float(k_nodes.min()), float(k_nodes.max())) if k_nodes.size
+                          else (-np.inf, np.inf))
         self.arm, *gear = spl(
             [eo.normal_arm, *np.moveaxis(eo.gear_position, -1, 0),
              *np.moveaxis(eo.gear_normal, -1, 0)], gear_ok)
@@ -152,6 +155,13 @@ class _Fields:
         # cell corners all computed (hard mask): cell (i, j) spans u[i]..u[i+1], v[j]..v[j+1]
         c = computed
         self.cell_ok = c[:-1, :-1] & c[1:, :-1] & c[:-1, 1:] & c[1:, 1:]
+
+    def gap_at(self, u, v):
+        """The pinion's gap curvature K [1/rad] at (u, v), held within the range of the
+        nodes' values: near a fold or masked nodes the spline of the filled field can
+        overshoot it (on ISO sample 2 to K < 0 at the gear tip, where the nodes hold
+        K ≥ 0.055: an edge's separation ε + ½ K t² then fell by hundreds of µm)."""
+        return np.clip(self.gap.ev(u, v), *self.gap_range)
 
     def good_cell(self, u, v):
         """True where (u, v) lies in a grid cell whose corners were all computed (places
@@ -539,7 +549,7 @@ def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
             pair = _seed_places(f, np.r_[te + h, te - h], frac).ute
             fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
             g[rest] = np.where(np.isfinite(fd), fd, g[rest])
-    k = f.gap.ev(cu, cv)
+    k = f.gap_at(cu, cv)
     shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), base)
     # (only where there is a curve to correct: elsewhere the shift is the base's and the
     # curve the first's)
@@ -561,7 +571,7 @@ def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
     fin = np.isfinite(cc.u)
     us = np.where(fin, cc.u, f.u[0])
     vs = np.where(fin, cc.v, f.v[0])
-    gap = np.where(fin, 0.5 * f.gap.ev(us, vs) * shift[:, None] ** 2, np.nan)
+    gap = np.where(fin, 0.5 * f.gap_at(us, vs) * shift[:, None] ** 2, np.nan)
     ute = cc.ute + 0.5 * _gap_at_contact(f, cc) * shift ** 2
     return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
 
@@ -699,7 +709,7 @@ def _gap_at_contact(f: _Fields, cc: ContactCurves) -> np.ndarray:
     grid's first node where a curve has none; its UTE is NaN there anyway)."""
     hu = np.where(np.isfinite(cc.contact_u), cc.contact_u, f.u[0])
     hv = np.where(np.isfinite(cc.contact_v), cc.contact_v, f.v[0])
-    return f.gap.ev(hu, hv)
+    return f.gap_at(hu, hv)
 
 
 def _put_rows(a: np.ndarray, rows: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -847,8 +857,10 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: _Fields | 
         (or pair 0 leaves the contact region) brackets each transition, which is then solved
         by false position (Illinois) to 1e-12 rad at a crossing of the two UTE curves, or
         by bisection to 1e-8 rad where a pair leaves the contact region first (the lower
-        envelope then jumps). NaN if pair 0 never carries the motion or is still the
-        lowest two cycles away.
+        envelope then jumps). If the lowest node's pair does not carry the motion at its
+        roll (a misalignment can move the contact away), the scan starts again from the
+        nearest sampled roll where it does. NaN if pair 0 never carries the motion or is
+        still the lowest two cycles away.
 
     Raises
     ------
@@ -890,9 +902,25 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: _Fields | 
     ks = np.array([-1.0, 1.0])
     x, hx = (np.stack(a) for a in zip(*(h_scan(int(k)) for k in ks), strict=True))
     if np.any(hx[:, 0] > 0):
-        log.warning("transitions: the reference pair does not carry the motion at the "
-                    "lowest ease-off point")
-        return math.nan, math.nan
+        # the lowest node's pair does not carry the motion there (a misalignment can move
+        # the contact off it): start again from the nearest scanned roll where pair 0 is
+        # below both neighbours (a neighbour out of mesh counts as higher)
+        m = np.arange(-samples, samples + 1)
+        own = u_all[2 * samples + m]
+        carried = (np.isfinite(own) & ~(own > u_all[2 * samples + m + samples])
+                   & ~(own > u_all[2 * samples + m - samples]))
+        if not carried.any():
+            log.warning("transitions: the reference pair does not carry the motion near "
+                        "the lowest ease-off point")
+            return math.nan, math.nan
+        r_star += float(m[carried][np.argmin(np.abs(m[carried]))]) * p / samples
+        u_all = pair_transmission_error(eo, r_star + m_all * p / samples, method=method,
+                                        fields=f, n_point=n_point)
+        x, hx = (np.stack(a) for a in zip(*(h_scan(int(k)) for k in ks), strict=True))
+        if np.any(hx[:, 0] > 0):
+            log.warning("transitions: the reference pair does not carry the motion at the "
+                        "lowest ease-off point")
+            return math.nan, math.nan
     found = np.any(hx > 0, axis=1)
     j = np.where(found, np.argmax(hx > 0, axis=1), 1)
     rows = np.arange(2)

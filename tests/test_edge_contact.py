@@ -200,3 +200,24 @@ def test_line_model_alone_is_kept_and_options_are_checked():
                 {"edge_contact": "yes"}):
         with pytest.raises(InputError, match=next(iter(bad))):
             LTCAOptions(**bad)
+
+
+def test_edge_gap_curvature_stays_within_the_nodes_range():
+    """On ISO sample 2 (FM) the spline of the pinion's gap curvature K, filled past a
+    fold at the gear tip, dips to K ≈ −0.027 /rad on the boundary while every node holds
+    K ≥ 0.055: the edges' separation ε + ½ K (Q − q)² then fell by hundreds of µm far from
+    Q, and the LTE at 50 N·m ran to −3900 µrad. K is held within the nodes' range, so no
+    segment's separation is below the UTE (≥ −1e-6 mm, the lag's quadrature) and the LTE
+    stays positive."""
+    case = load_case(ROOT / "cases" / "iso23509_sample2_fm.toml")
+    eo = ease_off(case)
+    f = _Fields(eo)
+    bd = flank_boundary(f, 0.25)
+    lo, hi = f.gap_range
+    assert lo > 0
+    assert float(f.gap.ev(bd.u.ravel(), bd.v.ravel()).min()) < 0  # what the clamp removes
+    assert lo <= bd.gap_curvature.min() and bd.gap_curvature.max() <= hi
+    ds = loaded_tca(case, [50.0], options=LTCAOptions(cycles=1, rolls_per_cycle=8),
+                    easeoff=eo)
+    assert float(ds["separation"].min()) > -1e-6
+    assert float(ds["transmission_error"].min()) > 0

@@ -398,3 +398,25 @@ def test_end_slope_of_the_ute_matches_a_wide_central_difference():
     fd = (pair[: rows.size] - pair[rows.size:]) / (2 * h)
     ok = smooth & np.isfinite(fd)
     np.testing.assert_allclose(g[ok], fd[ok], rtol=5e-3)
+
+
+def test_transitions_found_where_the_lowest_node_is_not_in_mesh():
+    """Misaligned (ΔE = −0.1 mm, ΔP = +0.1 mm), the spiral-bevel sample's lowest ease-off
+    node lies where its pair does not carry the motion; the transitions are then sought
+    from the nearest sampled roll where it does (they were NaN before, and the LTCA's
+    pair window, started at roll 0, missed a loaded pair: LTE p-p 677 µrad at 500 N·m).
+    Identities: M2 − M1 = one pitch, the neighbours' UTEs equal at each transition
+    (1e-12 rad), and pair 0 the lowest between them."""
+    case = load_case(ROOT / "cases" / "spiral_bevel_iso23509_s1.toml")
+    eo = ease_off(dataclasses.replace(case, misalignment=Misalignment(delta_E=-0.1,
+                                                                        delta_P=0.1)))
+    m1, m2 = transitions(eo)
+    p = eo.pitch
+    assert math.isfinite(m1) and math.isfinite(m2)
+    assert m2 - m1 == pytest.approx(p, abs=1e-9)
+    u1 = pair_transmission_error(eo, np.array([m1, m1 + p]))
+    u2 = pair_transmission_error(eo, np.array([m2, m2 - p]))
+    assert abs(u1[0] - u1[1]) < 1e-12 and abs(u2[0] - u2[1]) < 1e-12
+    mid = 0.5 * (m1 + m2)
+    u = pair_transmission_error(eo, np.array([mid, mid + p, mid - p]))
+    assert np.all(~(u[1:] < u[0]))  # a neighbour out of mesh (NaN) is not lower
