@@ -108,6 +108,9 @@ _SCREEN_MARGIN = 1.1
 _SCREEN_PAD = 1e-3
 _SCREEN_ROUNDS = 6
 
+#: the pair window grows (LTCAOptions.pairs) up to this many pairs
+_MAX_PAIRS = 8
+
 
 @dataclass(frozen=True)
 class LTCAOptions:
@@ -122,6 +125,9 @@ class LTCAOptions:
     pairs : tuple of int
         Tooth-pair offsets considered, relative to the pair that takes over at the
         start of each mesh cycle (default −1, 0, 1, 2; see :func:`segment_geometry`).
+        Widened by one on a side whose outermost pair is loaded at its end of the window
+        (the lowest at a cycle's last roll, the highest at its first), where the next
+        pair may be loaded too, up to 8 pairs.
     segments : int
         Segments per contact curve (≥ 4; default 24).
     spacing : str
@@ -791,11 +797,27 @@ def loaded_tca(
         t_segments = time.perf_counter() - t1
         ds, reach = _solve_rolls(case, eo, opts, torques, roll, seg, m1, m2, progress, sink,
                                  timing={"easeoff": t_easeoff, "segments": t_segments})
-        if edge_limit is None or opts.separation_limit is not None or reach <= edge_limit:
+        # the pairs must span every tooth pair in mesh: the window of roll values they
+        # cover ends at the last roll for the lowest pair and at the first roll for the
+        # highest; a pair loaded there has a neighbour beyond it that may be loaded too
+        share = np.nan_to_num(ds["load_share"].values)  # (torque, roll, pair)
+        last = np.arange(opts.cycles) * opts.rolls_per_cycle + opts.rolls_per_cycle - 1
+        lo, hi = int(np.argmin(opts.pairs)), int(np.argmax(opts.pairs))
+        more = (min(opts.pairs) - 1 if np.any(share[:, last, lo] > 1e-6) else None,
+                max(opts.pairs) + 1 if np.any(share[:, last - opts.rolls_per_cycle + 1, hi]
+                                             > 1e-6) else None)
+        widen = edge_limit is not None and opts.separation_limit is None and reach > edge_limit
+        if (more == (None, None) or len(opts.pairs) >= _MAX_PAIRS) and not widen:
             break
-        log.info("edge segments: R Θ reached %.3g mm beyond the limit %.3g mm; again with "
-                 "%.3g mm", reach, edge_limit, 2.0 * reach)
-        edge_limit = 2.0 * reach
+        if more != (None, None) and len(opts.pairs) < _MAX_PAIRS:
+            pairs = tuple(sorted({*opts.pairs, *(k for k in more if k is not None)}))
+            log.info("pairs %s: an outermost pair is loaded at the end of the window; "
+                     "again with %s", opts.pairs, pairs)
+            opts = dataclasses.replace(opts, pairs=pairs)
+        if widen:
+            log.info("edge segments: R Θ reached %.3g mm beyond the limit %.3g mm; again "
+                     "with %.3g mm", reach, edge_limit, 2.0 * reach)
+            edge_limit = 2.0 * reach
     if problem_sink is not None:
         for problem in sink:
             problem_sink(problem)

@@ -114,6 +114,30 @@ def test_one_more_pair_changes_nothing():
     np.testing.assert_allclose(b["transmission_error"], a["transmission_error"], atol=0.01)
 
 
+def test_too_narrow_pair_window_widens_itself():
+    """The pairs must span every tooth pair in mesh: a window whose lowest pair is still
+    loaded at the cycle's last roll (or highest at its first) grows by one on that side
+    and the analysis runs again. (0, 1) grows to the window the default one reaches, and
+    the LTE is the same (1e-9 µrad: the same problems), as is a window shifted by half a
+    mesh cycle (its start half a pitch after M1; LTE 1e-9 µrad at the same rolls)."""
+    from contact.utca import transitions
+
+    eo = _easeoff()
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=6, segments=10)
+    a = loaded_tca(_case(), [240.0], options=opts, easeoff=eo)
+    narrow = loaded_tca(_case(), [240.0], options=dataclasses.replace(opts, pairs=(0, 1)),
+                        easeoff=eo)
+    np.testing.assert_array_equal(narrow["pair"].values, a["pair"].values)
+    assert min(a["pair"].values) <= -1 and max(a["pair"].values) >= 1
+    np.testing.assert_allclose(narrow["transmission_error"], a["transmission_error"],
+                               rtol=0, atol=1e-9)
+    m1, m2 = transitions(eo)
+    half = loaded_tca(_case(), [240.0], options=opts, easeoff=eo,
+                      transitions=(m1 + eo.pitch / 2, m2 + eo.pitch / 2))
+    np.testing.assert_allclose(np.roll(half["transmission_error"].values, 3, axis=1),
+                               a["transmission_error"].values, rtol=0, atol=1e-9)
+
+
 def test_segment_refinement_converges():
     # the issue's bounds: doubling the segments per curve changes the LTE by < 0.5 µrad and
     # the peak pressure by < 2 % (measured on this crowned hypoid at 150 N·m: 0.25 µrad,
