@@ -792,7 +792,7 @@ def loaded_tca(
         sink: list[ContactProblem] | None = [] if problem_sink is not None else None
         t1 = time.perf_counter()
         seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing,
-                               (opts.edge_step, edge_radii(case, opts)) if opts.edge_contact
+                               (opts.edge_step, _edge_radii(case, opts)) if opts.edge_contact
                                else None, edge_limit=edge_limit)
         t_segments = time.perf_counter() - t1
         ds, reach = _solve_rolls(case, eo, opts, torques, roll, seg, m1, m2, progress, sink,
@@ -824,7 +824,7 @@ def loaded_tca(
     return ds
 
 
-def edge_radii(case, opts: LTCAOptions) -> tuple[float, float]:
+def _edge_radii(case, opts: LTCAOptions) -> tuple[float, float]:
     """(pinion, gear) rounding radii of the tooth edges [mm]: ``opts.edge_radius`` if set,
     else each member's blank ``edge_break_radius``."""
     if opts.edge_radius is not None:
@@ -1273,8 +1273,8 @@ def _ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, con
         "time_segments_s": timing["segments"],
         "misalignment": json_misalignment(case.misalignment),
         "ratio": float(eo.ratio),
-        "edge_radius_pinion_mm": edge_radii(case, opts)[0] if opts.edge_contact else np.nan,
-        "edge_radius_gear_mm": edge_radii(case, opts)[1] if opts.edge_contact else np.nan,
+        "edge_radius_pinion_mm": _edge_radii(case, opts)[0] if opts.edge_contact else np.nan,
+        "edge_radius_gear_mm": _edge_radii(case, opts)[1] if opts.edge_contact else np.nan,
         "pinion_axis": np.asarray(eo.kinematics.pinion_axis, float),
         "pinion_origin_mm": np.asarray(eo.kinematics.pinion_origin, float),
         "gear_axis": np.asarray(eo.kinematics.gear_axis, float),
