@@ -17,7 +17,7 @@ problem takes the diagonal c_t and the separation s + (c_s − c_t) F₀; solve,
 again at the new loads, solve again, until the LTE changes by less than
 ``weber_tolerance`` (default 1e-3 µrad), or its quadratically shrinking steps foretell a
 next step ten times smaller; 3–5 solves are typical. The first loads share the torque
-evenly over the roll's segments (so a roll's result depends on that roll alone). Where
+evenly over the roll's curve segments (so a roll's result depends on that roll alone). Where
 c_t is not well positive (Hertz half-width near the depth) or a load is at the cap, the
 secant is used there (the fixed-point iteration).
 
@@ -30,8 +30,8 @@ checked — exactly for those whose compliance is assembled, by s ≥ R Θ for t
 (enough, as the compliance matrix has no negative entries: the gap is ≥ s − R Θ) — and
 any that would close is added and the roll solved again.
 The structural compliance is assembled once per roll for a pool of segments chosen the
-same way from the first roll's rotation at the largest torque (tests/test_ltca.py checks
-the open gaps of the segments left out against the full compliance).
+same way from the first roll's rotation at the largest torque (tests/test_ltca.py
+compares the screened solution with that of all segments).
 
 Moment arm: a gear rotation δ closes the gap at a point by ρ |n·e_θ| δ — the distance of
 the normal's line of action from the gear axis — which is the ``normal_arm`` of the
@@ -102,14 +102,22 @@ _MIN_CLIP = 1e-6
 
 #: segment screening (LTCAOptions.separation_limit None): a roll's problem takes the
 #: segments with s < margin · R Θ̂ + pad, Θ̂ the loaded rotation expected there; after the
-#: solve every segment left out must have s ≥ R Θ (else it is added and the roll solved
-#: again, at most _SCREEN_ROUNDS times). [1], [mm]
+#: solve every segment left out must keep its gap open (else it is added and the roll
+#: solved again, at most _SCREEN_ROUNDS times). [1], [mm]
 _SCREEN_MARGIN = 1.1
 _SCREEN_PAD = 1e-3
 _SCREEN_ROUNDS = 6
 
 #: the pair window grows (LTCAOptions.pairs) up to this many pairs
 _MAX_PAIRS = 8
+
+
+def _generous_limit(torque: float, ratio: float) -> float:
+    """[mm] A separation limit growing with the gear torque (pinion ``torque`` [N·m]
+    times ``ratio``) that holds every loaded segment of the seed's cases with room to
+    spare: 0.05 mm + 0.15 mm per 1000 N·m of gear torque. It bounds the edge segments
+    worked out and the first roll's pool before any rotation is known."""
+    return 0.05 + 0.15 * torque * ratio / 1000.0
 
 
 @dataclass(frozen=True)
@@ -460,12 +468,13 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[floa
     outside = ((bd.roll_angle[None, None] - (target + shift)[..., None, None])
                * bd.inward_slope)  # (J, K, E, 3)
     cand = np.any(outside >= 0, axis=-1)
+    # Φ_q = ε + ½ K (Q − q)² at the samples of every boundary segment [rad]
+    phi_s = (bd.ease_off_angle + 0.5 * bd.gap_curvature
+             * (bd.roll_angle - target[..., None, None]) ** 2)  # (J, K, E, 3)
     if limit is not None:
         # the separation's lower bound: Φ_q at the samples, less the quadratic's second
         # difference (its dip below the samples is at most a quarter of that), times
         # the least normal arm
-        phi_s = (bd.ease_off_angle + 0.5 * bd.gap_curvature
-                 * (bd.roll_angle - target[..., None, None]) ** 2)  # (J, K, E, 3)
         dip = np.abs(phi_s[..., 0] - 2.0 * phi_s[..., 1] + phi_s[..., 2])
         low = np.min(phi_s, axis=-1) - dip - ute_env[:, None, None]
         cand &= ~(np.min(bd.normal_arm, axis=-1) * low > limit)
@@ -492,7 +501,7 @@ def _edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[floa
             outside[sel] = np.minimum(outside[sel], m)
     a, b = (x[..., 0] for x in quad.clip(outside))  # (n,)
     a1, b1, c1 = a[:, None], b[:, None], 0.5 * (a + b)[:, None]
-    sep = bd.ease_off_angle[ee] + 0.5 * bd.gap_curvature[ee] * (bd.roll_angle[ee] - q) ** 2
+    sep = phi_s[jj, kk, ee]  # (n, 3)
     inside = b - a > _MIN_CLIP
     # R_eq of the boundary segments in edge contact somewhere
     used = np.unique(ee[inside])
@@ -786,8 +795,8 @@ def loaded_tca(
     # R Θ and the analysis repeated with a wider one if it was too tight
     edge_limit = None
     if opts.edge_contact:
-        edge_limit = opts.separation_limit or (
-            0.05 + 0.15 * float(torques.max()) * eo.ratio / 1000.0)
+        edge_limit = opts.separation_limit or _generous_limit(float(torques.max()),
+                                                              eo.ratio)
     while True:
         sink: list[ContactProblem] | None = [] if problem_sink is not None else None
         t1 = time.perf_counter()
@@ -852,12 +861,11 @@ def _solve_rolls(case, eo: EaseOff, opts: LTCAOptions, torques: np.ndarray, roll
     ok_all = np.isfinite(sep_all) & np.isfinite(seg["r_eq"]) & (seg["length"] > 0)
     J, K, S = seg["shape"]
     fixed = opts.separation_limit
-    t_max = float(torques.max())
+    limit_max = _generous_limit(float(torques.max()), eo.ratio)
 
     def generous(j: int) -> np.ndarray:
-        # a limit growing with the gear torque that holds every loaded segment of the
-        # seed's cases with room to spare: the first pool, before any rotation is known
-        return ok_all[j] & (sep_all[j] <= 0.05 + 0.15 * t_max * eo.ratio / 1000.0)
+        # the first pool, before any rotation is known
+        return ok_all[j] & (sep_all[j] <= limit_max)
 
     def near(j: int, theta: float) -> np.ndarray:
         # the segments a loaded rotation θ [rad] may close: s < R θ with a margin
@@ -945,19 +953,18 @@ def _solve_rolls(case, eo: EaseOff, opts: LTCAOptions, torques: np.ndarray, roll
         # w′ ≤ π E* h²/(4 R_eq) — beyond that a segment is in gross edge contact and
         # the secant compliance is frozen at the cap (logged)
         e_star = E / (2 * (1 - nu**2))
-        w_cap = np.pi * e_star * np.min(depth, axis=1) ** 2 / (4 * Req)
+        cap = np.pi * e_star * np.min(depth, axis=1) ** 2 / (4 * Req) * L  # [N]
         # first Weber loads: the torque shared evenly over the roll's curve segments (not
         # the neighbour's loads, nor the selection's: the roll's result then depends on
         # the roll alone, not on the path to it or on which edge segments were worked out)
         on_curve = ok_all[j] & (seg["kind"] == 0)
         share = Tn / max(float(np.sum(arm[j][on_curve if on_curve.any() else ok_all[j]])),
                          1e-12)
-        load = np.minimum(np.full(kk.size, share), w_cap * L)
+        load = np.minimum(np.full(kk.size, share), cap)
         start = None if prior is None else np.nan_to_num(prior)
         lte_prev = step_prev = None
         sol = problem = None
         n_it = time_used = 0
-        cap = w_cap * L
         for w_it in range(1, opts.max_weber_iterations + 1):
             # Newton on Weber's δ(F): δ ≈ c_s F₀ + c_t (F − F₀), c_s the secant and c_t
             # the tangent compliance at the loads F₀, i.e. compliance c_t and separation

@@ -190,12 +190,17 @@ class _Fields:
             self._lat_key = key
         return self._lat
 
+    def measure_terms(self, u, v):
+        """(5, ...) the terms whose least is the inside measure at (u, v) (v finite): the
+        pinion mate's margin in its blank, v − v₀, v₁ − v, u − u₀, u₁ − u."""
+        return np.stack([self.margin.ev(u, v), v - self.v[0], self.v[-1] - v,
+                         u - self.u[0], self.u[-1] - u])
+
     def measure(self, u, v):
         """Continuous inside measure: ≥ 0 inside the contact region, −1 where undefined."""
         fin = np.isfinite(v)
         vs = np.where(fin, v, self.v[0])
-        c = np.minimum(self.margin.ev(u, vs), np.minimum(vs - self.v[0], self.v[-1] - vs))
-        c = np.minimum(c, np.minimum(u - self.u[0], self.u[-1] - u))
+        c = self.measure_terms(u, vs).min(axis=0)
         return np.where(fin & self.good_cell(u, vs), c, -1.0)
 
     def solve_v(self, u, target, v_start=None, lattice=None):
@@ -590,10 +595,8 @@ def _end_slope(f: _Fields, u: np.ndarray, v: np.ndarray):
     within 1e-4 of zero; or the iso-line nearly tangent to the boundary), for the
     caller's finite differences.
     """
-    v0, v1, u0, u1 = f.v[0], f.v[-1], f.u[0], f.u[-1]
-    vs = np.clip(v, v0, v1)
-    m = f.margin.ev(u, vs)
-    terms = np.stack([m, vs - v0, v1 - vs, u - u0, u1 - u])  # (5, M)
+    vs = np.clip(v, f.v[0], f.v[-1])
+    terms = f.measure_terms(u, vs)  # (5, M)
     order = np.argsort(terms, axis=0)
     k, k2 = order[0], order[1]
     idx = np.arange(u.size)
