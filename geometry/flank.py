@@ -135,7 +135,20 @@ def projection_fractions(corners: np.ndarray, axial, radius, *, tol: float = 1e-
     Returns
     -------
     (u, v) : arrays (...) — [1]
-        Lengthwise fraction, toe 0 → heel 1, and profile fraction, root 0 → tip 1.
+        Lengthwise fraction, toe 0 → heel 1, and profile fraction, root 0 → tip 1; NaN
+        where the point is NaN (callers pass NaN for "no point", e.g. a pair without a
+        contact curve, and mask it).
+
+    Raises
+    ------
+    Nothing of its own: the shapes must broadcast (numpy's error otherwise).
+
+    Notes
+    -----
+    Source: the projection-plane layout of the flank grid (seed §2.2, this module's
+    docstring; the grid is :func:`projection_grid`, of which this is the inverse). Tested
+    against the layout's own formula inside and beyond the outline to 1e-12
+    (tests/test_case.py).
     """
     c = np.asarray(corners, dtype=float)
     if c.ndim == 4:  # per point: c[i, j] is then (P, 2)

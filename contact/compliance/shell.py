@@ -382,6 +382,11 @@ class ShellModel:
         Returns
         -------
         ndarray, shape (n_dof, P), or (n_dof, P/G) with ``group_weights`` — [1]
+
+        Raises
+        ------
+        InputError
+            If ``group_weights`` is empty or its size does not divide P.
         """
         xi = np.atleast_1d(np.asarray(x, dtype=float)).ravel() / self.reference_height
         eta = 2.0 * np.atleast_1d(np.asarray(theta, dtype=float)).ravel()
