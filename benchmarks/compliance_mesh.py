@@ -113,7 +113,7 @@ def main() -> None:
 
         def ritz(p=pts, mem=members, m=mdl, b=blocks):
             for (data, _, _), (sp, ep) in zip(mem, p, strict=True):
-                tooth_mod._shell_matrices(data, sp, ep, m.theory, m.n_height, m.n_face, b)
+                tooth_mod.shell_matrices(data, sp, ep, m.theory, m.n_height, m.n_face, b)
 
         t_ritz += timed(ritz, args.repeats)
 

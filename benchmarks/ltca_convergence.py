@@ -21,9 +21,9 @@ import itertools
 import numpy as np
 from tabulate import tabulate
 
-from contact.easeoff import ease_off
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.pipeline import SEED_TABLE_3_1, resolve_case
+from contact.utca.easeoff import ease_off
 from geometry.assembly import Misalignment
 
 

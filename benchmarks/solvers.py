@@ -2,7 +2,7 @@
 
     python benchmarks/solvers.py [--sizes 100 240 300 1000] [--instances 3] [--solvers ...]
 
-For each size N, LTCA-like instances (``contact.problem_set.ltca_like_problem``) are
+For each size N, LTCA-like instances (``contact.qp.benchmark_problems.ltca_like_problem``) are
 solved by every backend; times are the median over repeats of build + solve (+ polish),
 divided by the median time of one dense Cholesky factorisation of the same C measured
 in the same run — a ratio, so the table is comparable across machines. The issue's
@@ -21,7 +21,7 @@ import scipy.linalg
 from tabulate import tabulate
 
 from contact import available_solvers, solve_contact
-from contact.problem_set import ltca_like_problem
+from contact.qp.benchmark_problems import ltca_like_problem
 
 
 def _median_time(fn, repeats: int) -> float:

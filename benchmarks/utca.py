@@ -35,10 +35,15 @@ import numpy as np  # noqa: E402
 _HERE = Path(__file__).resolve().parent
 sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
-from contact.easeoff import ease_off  # noqa: E402
-from contact.tca import conventional_tca, mean_contact  # noqa: E402
-from contact.utca import _Fields, contact_curves, transitions, unloaded_tca  # noqa: E402
+from contact.utca import (  # noqa: E402
+    EaseOffFields,
+    contact_curves,
+    transitions,
+    unloaded_tca,
+)
+from contact.utca.easeoff import ease_off  # noqa: E402
 from geometry.case import load_case  # noqa: E402
+from geometry.conventional_tca import conventional_tca, mean_contact  # noqa: E402
 
 ROOT = _HERE.parent
 
@@ -77,7 +82,7 @@ def main(argv=None) -> int:
 
     t_total, (_, ds) = best_of(lambda: unloaded_tca(case, n_roll=n_roll), args.repeat)
     t_eo, eo = best_of(lambda: ease_off(case), args.repeat)
-    fields = _Fields(eo)
+    fields = EaseOffFields(eo)
     q = ds["roll"].values[:, None] - pairs[None, :] * eo.pitch
     t_tr, _ = best_of(lambda: transitions(eo, fields=fields), args.repeat)
     t_cc, cc2 = best_of(lambda: contact_curves(eo, q, fields=fields), args.repeat)

@@ -1,5 +1,17 @@
 """Contact analysis of hypoid and spiral bevel gears: UTCA, compliance, the loaded-contact QP, LTCA.
 
+Five layers, each a subpackage, each importing only those below it (tests/test_layers.py):
+
+* :mod:`contact.qp` — the loaded-contact problem, its solver registry and studies (no gear);
+* :mod:`contact.utca` — ease-off, contact curves, unloaded TE, deviations;
+* :mod:`contact.compliance` — tooth bending and shear (shell), Weber contact, fillet
+  foundation;
+* :mod:`contact.ltca` — the loaded TCA over the mesh cycle (segments, screening, roll
+  loop, dataset);
+* the application on top: :mod:`contact.pipeline` (the whole analysis of a case),
+  :mod:`contact.io` (netCDF), :mod:`contact.plots`, :mod:`contact.cli` and
+  :mod:`contact.commands` (the ``ltca`` command).
+
 The loaded-contact problem and its solvers::
 
     from contact import ContactProblem, solve_contact, available_solvers
@@ -9,15 +21,25 @@ The whole analysis of a case (geometry → ease-off UTCA → LTCA) as one DataTr
     from contact import run_analysis
 """
 
+from contact import _moved
 from contact.errors import (
     ContactError,
     NotPositiveDefiniteError,
     ProblemInputError,
     SolverNotFoundError,
 )
-from contact.problem import DEFAULT_TOLERANCE, ContactProblem, ContactSolution, contact_residuals
-from contact.solvers import DEFAULT_SOLVER, available_solvers, solve_contact
-from geometry._version import __version__
+from contact.qp import (
+    DEFAULT_SOLVER,
+    DEFAULT_TOLERANCE,
+    ContactProblem,
+    ContactSolution,
+    available_solvers,
+    contact_residuals,
+    solve_contact,
+)
+from geometry import __version__
+
+_moved.install()
 
 __all__ = [
     "DEFAULT_SOLVER",

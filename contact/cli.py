@@ -16,7 +16,7 @@ import sys
 from collections.abc import Sequence
 from types import ModuleType
 
-from geometry._version import __version__
+from geometry import __version__
 from geometry.errors import LTCAError
 
 log = logging.getLogger("ltca")

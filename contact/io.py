@@ -28,7 +28,8 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from geometry._version import __version__
+from geometry import __version__
+from geometry.conventions import data_var
 from geometry.errors import InputError, LTCAError
 
 __all__ = [
@@ -74,17 +75,6 @@ def _safe_value(key: str, value: Any) -> Any:
         f"attribute {key!r} has type {type(value).__name__}; netCDF accepts str, int, float "
         "or 1-D numeric arrays (dicts and lists are stored as JSON text)"
     )
-
-
-def data_var(dims, data, units: str | None, long_name: str, **attrs: Any) -> tuple:
-    """A ``(dims, data, attrs)`` tuple for an ``xarray.Dataset`` with the conventions' attributes.
-
-    ``units`` (UDUNITS) may be None only for text variables; extra attributes are kept.
-    """
-    a = {"long_name": long_name, **attrs}
-    if units is not None:
-        a = {"units": units, **a}
-    return (dims, data, a)
 
 
 def netcdf_safe_attrs(attrs: Mapping[str, Any]) -> dict[str, Any]:

@@ -24,10 +24,10 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from contact.easeoff import ease_off
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.utca import unloaded_tca
-from geometry._version import __version__
+from contact.utca.easeoff import ease_off
+from geometry import __version__
 from geometry.assembly import Misalignment
 from geometry.case import Case, load_case
 from geometry.errors import InputError
@@ -115,7 +115,7 @@ def _resolve_deviations(c: Case, deviations) -> tuple | None:
     if not isinstance(deviations, (tuple, list)) or len(deviations) != 2:
         raise InputError("deviations: must be a (pinion, gear) pair of SurfaceDeviation, "
                          f"file path or None, or False; got {deviations!r}")
-    from contact.deviations import read_deviations
+    from contact.deviation_files import read_deviations
 
     out = tuple(
         read_deviations(d, member) if isinstance(d, (str, os.PathLike)) else d
@@ -162,8 +162,8 @@ def run_analysis(
         Progress bar over the LTCA roll positions.
     deviations : (pinion, gear), False or None
         Measured or wear deviations of the (pinion, gear) flanks in contact
-        (:mod:`contact.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a CSV/netCDF
-        file path (:func:`contact.deviations.read_deviations`) or None. The main groups
+        (:mod:`contact.utca.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a CSV/netCDF
+        file path (:func:`contact.utca.deviations.read_deviations`) or None. The main groups
         then hold the deviated surfaces' results and ``/theoretical/{easeoff,utca,ltca}``
         the theoretical ones, side by side; ``/easeoff`` gains ``ease_off_change`` [um].
         None (default) uses the case's ``[deviations]`` table if it has one
@@ -205,7 +205,7 @@ def run_analysis(
     times["easeoff"] = time.perf_counter() - t0
     deviations = _resolve_deviations(c, deviations)
     if deviations is not None:
-        from contact.deviations import apply_deviations
+        from contact.utca.deviations import apply_deviations
 
         pin_dev, gear_dev = deviations
         t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo)

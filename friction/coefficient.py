@@ -41,7 +41,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from friction.hertz import _broadcast, _checked, _result
+from friction.hertz import broadcast, checked, result
 from geometry.errors import InputError, ModelUnavailableError
 
 __all__ = [
@@ -218,14 +218,14 @@ def xu2007(
     """
     if len(coefficients) != 9:
         raise InputError(f"coefficients must have 9 values b1..b9; got {len(coefficients)}")
-    ph = _checked("hertz_pressure", hertz_pressure, low=0.0, units="MPa")
-    sr = np.abs(_checked("slide_to_roll", slide_to_roll, units="1"))
-    ve = _checked("entraining_velocity", entraining_velocity, low=0.0, low_open=True, units="m/s")
-    eta = _checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
-    r = _checked("radius", radius, low=0.0, low_open=True, units="mm")
-    s1 = _checked("roughness_1", roughness_1, low=0.0, high=100.0, units="µm")
-    s2 = _checked("roughness_2", roughness_2, low=0.0, high=100.0, units="µm")
-    ph, sr, ve, eta, r, s1, s2 = _broadcast(
+    ph = checked("hertz_pressure", hertz_pressure, low=0.0, units="MPa")
+    sr = np.abs(checked("slide_to_roll", slide_to_roll, units="1"))
+    ve = checked("entraining_velocity", entraining_velocity, low=0.0, low_open=True, units="m/s")
+    eta = checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
+    r = checked("radius", radius, low=0.0, low_open=True, units="mm")
+    s1 = checked("roughness_1", roughness_1, low=0.0, high=100.0, units="µm")
+    s2 = checked("roughness_2", roughness_2, low=0.0, high=100.0, units="µm")
+    ph, sr, ve, eta, r, s1, s2 = broadcast(
         hertz_pressure=ph,
         slide_to_roll=sr,
         entraining_velocity=ve,
@@ -267,7 +267,7 @@ def xu2007(
         )
         mu = np.exp(np.minimum(ln_mu, 700.0))
     mu = _cap("xu2007", mu)
-    return _result(np.where(zero, 0.0, mu))
+    return result(np.where(zero, 0.0, mu))
 
 
 # ----------------------------------------------------------------------------- B&K
@@ -336,13 +336,13 @@ def benedict_kelley(
     re-checked against the original here). The original measured CLA (Ra) roughness:
     the Rq → Ra conversion is an assumption of this implementation.
     """
-    w = _checked("load_per_length", load_per_length, low=0.0, low_open=True, units="N/mm")
-    vs = _checked("sliding_velocity", sliding_velocity, low=0.0, units="m/s")
-    ve = _checked("entraining_velocity", entraining_velocity, low=0.0, low_open=True, units="m/s")
-    eta = _checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
-    s1 = _checked("roughness_1", roughness_1, low=0.0, high=100.0, units="µm")
-    s2 = _checked("roughness_2", roughness_2, low=0.0, high=100.0, units="µm")
-    w, vs, ve, eta, s1, s2 = _broadcast(
+    w = checked("load_per_length", load_per_length, low=0.0, low_open=True, units="N/mm")
+    vs = checked("sliding_velocity", sliding_velocity, low=0.0, units="m/s")
+    ve = checked("entraining_velocity", entraining_velocity, low=0.0, low_open=True, units="m/s")
+    eta = checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
+    s1 = checked("roughness_1", roughness_1, low=0.0, high=100.0, units="µm")
+    s2 = checked("roughness_2", roughness_2, low=0.0, high=100.0, units="µm")
+    w, vs, ve, eta, s1, s2 = broadcast(
         load_per_length=w,
         sliding_velocity=vs,
         entraining_velocity=ve,
@@ -383,7 +383,7 @@ def benedict_kelley(
             stacklevel=2,
         )
     mu = np.where(rolling | low, 0.0, mu)
-    return _result(_cap("benedict_kelley", mu))
+    return result(_cap("benedict_kelley", mu))
 
 
 # ----------------------------------------------------------------------------- constant
@@ -412,7 +412,7 @@ def constant(*, value: float = 0.05) -> float:
     every contact point").
     No validity range, hence no warnings.
     """
-    v = _checked("value", value, low=0.0, high=1.0, units="1")
+    v = checked("value", value, low=0.0, high=1.0, units="1")
     if v.ndim:
         raise InputError(f"value must be a scalar friction coefficient; got shape {v.shape}")
     return float(v)
@@ -570,7 +570,7 @@ def _evaluate(model: FrictionModel, inputs: Mapping[str, Any]) -> NDArray[np.flo
     out = np.broadcast_to(mu, shape).astype(float)
     if not np.all(np.isfinite(out)):  # a guard: every model is written to stay finite
         raise InputError(f"friction model {model.name!r} produced a non-finite μ for these inputs")
-    return _result(out)
+    return result(out)
 
 
 def friction_coefficient(name: str, **inputs: Any) -> NDArray[np.float64] | float:

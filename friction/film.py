@@ -36,7 +36,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from friction.coefficient import FrictionModelRangeWarning
-from friction.hertz import _broadcast, _checked, _result
+from friction.hertz import broadcast, checked, result
 from geometry.errors import InputError, ModelUnavailableError
 
 __all__ = [
@@ -117,13 +117,13 @@ def ehl_groups(
     U, G, W (U = η₀ V_r/(E_eq R_eq), G = α E_eq, W = f/(E_eq R_eq)). SI conversion:
     U = η₀ u / (E′·10⁶ · R·10⁻³), G = α·10⁻⁹ · E′·10⁶, W = w′/(E′ R) (N/mm over MPa·mm).
     """
-    u = _checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
-    eta = _checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
-    alpha = _checked("pressure_viscosity", pressure_viscosity, low=0.1, high=100.0, units="1/GPa")
-    w = _checked("load_per_length", load_per_length, low=0.0, low_open=True, units="N/mm")
-    r = _checked("radius", radius, low=0.0, low_open=True, units="mm")
-    e = _checked("e_prime", e_prime, low=0.0, low_open=True, units="MPa")
-    u, eta, alpha, w, r, e = _broadcast(
+    u = checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
+    eta = checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
+    alpha = checked("pressure_viscosity", pressure_viscosity, low=0.1, high=100.0, units="1/GPa")
+    w = checked("load_per_length", load_per_length, low=0.0, low_open=True, units="N/mm")
+    r = checked("radius", radius, low=0.0, low_open=True, units="mm")
+    e = checked("e_prime", e_prime, low=0.0, low_open=True, units="MPa")
+    u, eta, alpha, w, r, e = broadcast(
         entraining_velocity=u,
         viscosity=eta,
         pressure_viscosity=alpha,
@@ -153,7 +153,7 @@ def _h_min(
     )
     pu, pg, pw = exponents
     r = np.broadcast_to(np.asarray(radius, dtype=float), g.U.shape)
-    return _result(coef * g.U**pu * g.G**pg * g.W**pw * r * 1e3)
+    return result(coef * g.U**pu * g.G**pg * g.W**pw * r * 1e3)
 
 
 def dowson_higginson(
@@ -353,12 +353,12 @@ def minimum_film_thickness(
         raise ModelUnavailableError(
             f"unknown film thickness model {model!r}; available: {sorted(FILM_THICKNESS_MODELS)}"
         ) from None
-    phi = _checked("thermal_factor", thermal_factor, low=0.0, high=1.0, units="1")
+    phi = checked("thermal_factor", thermal_factor, low=0.0, high=1.0, units="1")
     h = np.asarray(
         fn(entraining_velocity, viscosity, pressure_viscosity, load_per_length, radius, e_prime)
     )
-    h, phi = _broadcast(film_thickness=h, thermal_factor=phi)
-    return _result(h * phi)
+    h, phi = broadcast(film_thickness=h, thermal_factor=phi)
+    return result(h * phi)
 
 
 # ----------------------------------------------------------------------------- thermal
@@ -396,19 +396,19 @@ def thermal_loading(
     Source: Murch & Wilson (1975); Gupta et al. (1992) write L = (−∂η/∂T) u²/k, which is
     β η₀ u²/k with β as above.
     """
-    beta = _checked("temperature_viscosity_coefficient", temperature_viscosity_coefficient,
+    beta = checked("temperature_viscosity_coefficient", temperature_viscosity_coefficient,
                     low=0.0, units="1/K")
-    eta = _checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
-    u = _checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
-    k = _checked("thermal_conductivity", thermal_conductivity, low=0.0, low_open=True,
+    eta = checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
+    u = checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
+    k = checked("thermal_conductivity", thermal_conductivity, low=0.0, low_open=True,
                  units="W/(m K)")
-    beta, eta, u, k = _broadcast(
+    beta, eta, u, k = broadcast(
         temperature_viscosity_coefficient=beta,
         viscosity=eta,
         entraining_velocity=u,
         thermal_conductivity=k,
     )
-    return _result(beta * eta * u**2 / k)
+    return result(beta * eta * u**2 / k)
 
 
 def _gupta1992(
@@ -524,15 +524,15 @@ def thermal_reduction_factor(
             f"unknown thermal reduction model {model!r}; available:"
             f" {sorted(THERMAL_REDUCTION_MODELS)}"
         ) from None
-    arrays = {"thermal_loading": _checked("thermal_loading", thermal_loading, low=0.0, units="1")}
+    arrays = {"thermal_loading": checked("thermal_loading", thermal_loading, low=0.0, units="1")}
     if hertz_pressure is not None:
-        arrays["hertz_pressure"] = _checked("hertz_pressure", hertz_pressure, low=0.0, units="MPa")
+        arrays["hertz_pressure"] = checked("hertz_pressure", hertz_pressure, low=0.0, units="MPa")
     if e_prime is not None:
-        arrays["e_prime"] = _checked("e_prime", e_prime, low=0.0, low_open=True, units="MPa")
+        arrays["e_prime"] = checked("e_prime", e_prime, low=0.0, low_open=True, units="MPa")
     if slide_to_roll is not None:
-        arrays["slide_to_roll"] = _checked("slide_to_roll", slide_to_roll, units="1")
-    full = dict(zip(arrays, _broadcast(**arrays), strict=True))
-    return _result(
+        arrays["slide_to_roll"] = checked("slide_to_roll", slide_to_roll, units="1")
+    full = dict(zip(arrays, broadcast(**arrays), strict=True))
+    return result(
         fn(
             full["thermal_loading"],
             full.get("hertz_pressure"),
@@ -566,10 +566,10 @@ def composite_roughness(
     -----
     Source: seed section 5.2.3 (S_c = √(Rq₁² + Rq₂²)); Hamrock (1991) ch. 23.
     """
-    r1 = _checked("roughness_1", roughness_1, low=0.0, units="µm")
-    r2 = _checked("roughness_2", roughness_2, low=0.0, units="µm")
-    r1, r2 = _broadcast(roughness_1=r1, roughness_2=r2)
-    return _result(np.hypot(r1, r2))
+    r1 = checked("roughness_1", roughness_1, low=0.0, units="µm")
+    r2 = checked("roughness_2", roughness_2, low=0.0, units="µm")
+    r1, r2 = broadcast(roughness_1=r1, roughness_2=r2)
+    return result(np.hypot(r1, r2))
 
 
 def lambda_ratio(
@@ -598,8 +598,8 @@ def lambda_ratio(
     Source: seed section 5.2.3 ("ratio of the smooth condition minimum film thickness
     to the RMS surface roughness value"); regimes λ < 1, 1–3, > 3 (seed Eq. 5.11a–c).
     """
-    h = _checked("film_thickness", film_thickness, low=0.0, units="µm")
-    s = _checked("composite_roughness", composite_roughness, low=0.0, low_open=True, units="µm")
-    h, s = _broadcast(film_thickness=h, composite_roughness=s)
-    return _result(h / s)
+    h = checked("film_thickness", film_thickness, low=0.0, units="µm")
+    s = checked("composite_roughness", composite_roughness, low=0.0, low_open=True, units="µm")
+    h, s = broadcast(film_thickness=h, composite_roughness=s)
+    return result(h / s)
 

@@ -42,7 +42,7 @@ log = logging.getLogger(__name__)
 
 
 # ----------------------------------------------------------------------------- input checks
-def _as_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
+def as_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
     """Return ``value`` as a float array; raise :class:`InputError` if it is not numeric."""
     try:
         arr = np.asarray(value, dtype=float)
@@ -53,7 +53,7 @@ def _as_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
     return arr
 
 
-def _checked(
+def checked(
     name: str,
     value: ArrayLike,
     *,
@@ -70,7 +70,7 @@ def _checked(
     InputError
         Naming ``name``, the accepted range (with ``units``) and the first offending value.
     """
-    arr = _as_array(name, value)
+    arr = as_array(name, value)
     lo = "-inf" if low is None else f"{low:g}"
     hi = "inf" if high is None else f"{high:g}"
     left = "(" if low is None or low_open else "["
@@ -91,7 +91,7 @@ def _checked(
     return arr
 
 
-def _broadcast(**arrays: NDArray[np.float64]) -> tuple[NDArray[np.float64], ...]:
+def broadcast(**arrays: NDArray[np.float64]) -> tuple[NDArray[np.float64], ...]:
     """Broadcast named arrays together; raise :class:`InputError` listing shapes that clash."""
     try:
         return tuple(np.broadcast_arrays(*arrays.values()))
@@ -100,7 +100,7 @@ def _broadcast(**arrays: NDArray[np.float64]) -> tuple[NDArray[np.float64], ...]
         raise InputError(f"input shapes do not broadcast together: {shapes}") from exc
 
 
-def _result(arr: NDArray[np.float64]) -> NDArray[np.float64] | float:
+def result(arr: NDArray[np.float64]) -> NDArray[np.float64] | float:
     """Return a Python float for 0-d results, the array otherwise."""
     return float(arr) if np.ndim(arr) == 0 else arr
 
@@ -137,23 +137,23 @@ def combined_modulus(
     Source: Hamrock, B. J., *Fundamentals of Fluid Film Lubrication*, NASA RP-1255
     (1991), "effective elastic modulus"; Dowson & Higginson (1966). Arrays broadcast.
     """
-    e1 = _checked("youngs_modulus_1", youngs_modulus_1, low=0.0, low_open=True, units="MPa")
-    e2 = _checked("youngs_modulus_2", youngs_modulus_2, low=0.0, low_open=True, units="MPa")
-    n1 = _checked("poisson_ratio_1", poisson_ratio_1, low=0.0, high=0.5, high_open=True, units="1")
-    n2 = _checked("poisson_ratio_2", poisson_ratio_2, low=0.0, high=0.5, high_open=True, units="1")
-    e1, n1, e2, n2 = _broadcast(
+    e1 = checked("youngs_modulus_1", youngs_modulus_1, low=0.0, low_open=True, units="MPa")
+    e2 = checked("youngs_modulus_2", youngs_modulus_2, low=0.0, low_open=True, units="MPa")
+    n1 = checked("poisson_ratio_1", poisson_ratio_1, low=0.0, high=0.5, high_open=True, units="1")
+    n2 = checked("poisson_ratio_2", poisson_ratio_2, low=0.0, high=0.5, high_open=True, units="1")
+    e1, n1, e2, n2 = broadcast(
         youngs_modulus_1=e1, poisson_ratio_1=n1, youngs_modulus_2=e2, poisson_ratio_2=n2
     )
-    return _result(2.0 / ((1.0 - n1**2) / e1 + (1.0 - n2**2) / e2))
+    return result(2.0 / ((1.0 - n1**2) / e1 + (1.0 - n2**2) / e2))
 
 
 def _line_contact_inputs(
     load_per_length: ArrayLike, radius: ArrayLike, e_prime: ArrayLike
 ) -> tuple[NDArray[np.float64], ...]:
-    w = _checked("load_per_length", load_per_length, low=0.0, units="N/mm")
-    r = _checked("radius", radius, low=0.0, low_open=True, units="mm")
-    e = _checked("e_prime", e_prime, low=0.0, low_open=True, units="MPa")
-    return _broadcast(load_per_length=w, radius=r, e_prime=e)
+    w = checked("load_per_length", load_per_length, low=0.0, units="N/mm")
+    r = checked("radius", radius, low=0.0, low_open=True, units="mm")
+    e = checked("e_prime", e_prime, low=0.0, low_open=True, units="MPa")
+    return broadcast(load_per_length=w, radius=r, e_prime=e)
 
 
 def half_width(
@@ -187,7 +187,7 @@ def half_width(
     same form with E′.
     """
     w, r, e = _line_contact_inputs(load_per_length, radius, e_prime)
-    return _result(np.sqrt(8.0 * w * r / (math.pi * e)))
+    return result(np.sqrt(8.0 * w * r / (math.pi * e)))
 
 
 def peak_pressure(
@@ -221,4 +221,4 @@ def peak_pressure(
     the closed form avoids the 0/0 of 2 w′/(π b) at zero load (p_h = 0 there).
     """
     w, r, e = _line_contact_inputs(load_per_length, radius, e_prime)
-    return _result(np.sqrt(w * e / (2.0 * math.pi * r)))
+    return result(np.sqrt(w * e / (2.0 * math.pi * r)))

@@ -46,7 +46,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
-from friction.hertz import _as_array, _result
+from friction.hertz import as_array, result
 from geometry.errors import InputError, ModelUnavailableError
 
 __all__ = [
@@ -179,8 +179,8 @@ def fit_vogel(temperature: ArrayLike, dynamic_viscosity: ArrayLike) -> VogelFit:
     Seeton, C. J., Tribol. Lett. 22 (2006) 67. The seed interpolates Table 5.2 without
     saying how (NOTES.md asks for a Vogel or Walther fit, not linear).
     """
-    t = _as_array("temperature", temperature).ravel()
-    eta = _as_array("dynamic_viscosity", dynamic_viscosity).ravel()
+    t = as_array("temperature", temperature).ravel()
+    eta = as_array("dynamic_viscosity", dynamic_viscosity).ravel()
     if t.size < 3 or t.size != eta.size:
         raise InputError(
             "temperature and dynamic_viscosity must have the same length, at least 3, for a"
@@ -239,8 +239,8 @@ def fit_walther(temperature: ArrayLike, kinematic_viscosity: ArrayLike) -> Walth
     for liquid petroleum or hydrocarbon products", Eq. (1)–(2) with Z = ν + 0.7 (the
     additional terms of Z below 2 mm²/s are not implemented).
     """
-    t = _as_array("temperature", temperature).ravel()
-    nu = _as_array("kinematic_viscosity", kinematic_viscosity).ravel()
+    t = as_array("temperature", temperature).ravel()
+    nu = as_array("kinematic_viscosity", kinematic_viscosity).ravel()
     if t.size < 2 or t.size != nu.size:
         raise InputError(
             "temperature and kinematic_viscosity must have the same length, at least 2, for a"
@@ -425,7 +425,7 @@ def temperature_range(lubricant: Lubricant) -> tuple[float, float]:
 
 
 def _temperature(lubricant: Lubricant, temperature: ArrayLike) -> NDArray[np.float64]:
-    t = _as_array("temperature", temperature)
+    t = as_array("temperature", temperature)
     lo, hi = temperature_range(lubricant)
     bad = ~np.isfinite(t) | (t < lo) | (t > hi)
     if np.any(bad):
@@ -491,7 +491,7 @@ def viscosity(
         raise ModelUnavailableError(
             f"unknown viscosity method {method!r}; available: {sorted(VISCOSITY_MODELS)}"
         ) from None
-    return _result(model(lubricant, _temperature(lubricant, temperature)))
+    return result(model(lubricant, _temperature(lubricant, temperature)))
 
 
 def kinematic_viscosity(
@@ -520,7 +520,7 @@ def kinematic_viscosity(
     Source: definition; density from :func:`density`.
     """
     eta = np.asarray(viscosity(lubricant, temperature, method))
-    return _result(eta / _density_eval(lubricant, _as_array("temperature", temperature)) * 1e6)
+    return result(eta / _density_eval(lubricant, as_array("temperature", temperature)) * 1e6)
 
 
 def pressure_viscosity_coefficient(
@@ -552,7 +552,7 @@ def pressure_viscosity_coefficient(
     """
     t = _temperature(lubricant, temperature)
     ln_alpha = np.log(lubricant.pressure_viscosity_coefficient)
-    return _result(np.exp(_piecewise_linear(t, lubricant.temperature, ln_alpha)))
+    return result(np.exp(_piecewise_linear(t, lubricant.temperature, ln_alpha)))
 
 
 def _piecewise_linear(
@@ -594,7 +594,7 @@ def density(lubricant: Lubricant, temperature: ArrayLike) -> NDArray[np.float64]
     -----
     Source: seed Table 5.2 (whose densities fall exactly 0.6 kg/m3 per K).
     """
-    return _result(_density_eval(lubricant, _temperature(lubricant, temperature)))
+    return result(_density_eval(lubricant, _temperature(lubricant, temperature)))
 
 
 def thermal_conductivity(
@@ -624,8 +624,8 @@ def thermal_conductivity(
     t = _temperature(lubricant, temperature)
     k = lubricant.thermal_conductivity
     if len(k) == 1:
-        return _result(np.full_like(t, k[0], dtype=float))
-    return _result(_piecewise_linear(t, lubricant.temperature, k))
+        return result(np.full_like(t, k[0], dtype=float))
+    return result(_piecewise_linear(t, lubricant.temperature, k))
 
 
 def temperature_viscosity_coefficient(
@@ -656,11 +656,11 @@ def temperature_viscosity_coefficient(
     """
     t = _temperature(lubricant, temperature)
     if lubricant.temperature_viscosity_coefficient is not None:
-        return _result(
+        return result(
             _piecewise_linear(t, lubricant.temperature, lubricant.temperature_viscosity_coefficient)
         )
     v = lubricant.vogel
-    return _result(v.b / (t - v.c) ** 2)
+    return result(v.b / (t - v.c) ** 2)
 
 
 # ----------------------------------------------------------------------------- loading

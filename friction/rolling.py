@@ -24,7 +24,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from friction.film import ehl_groups, thermal_loading, thermal_reduction_factor
-from friction.hertz import _broadcast, _checked, _result, peak_pressure
+from friction.hertz import broadcast, checked, peak_pressure, result
 
 __all__ = [
     "GOKSEM_HARGREAVES_COEFFICIENT",
@@ -87,7 +87,7 @@ def rolling_traction_isothermal(
     r = np.broadcast_to(np.asarray(radius, dtype=float), g.U.shape)
     alpha_per_mpa = np.broadcast_to(np.asarray(pressure_viscosity, dtype=float), g.U.shape) * 1e-3
     force = GOKSEM_HARGREAVES_COEFFICIENT * (g.G * g.U) ** 0.658 * g.W**0.0126 * r / alpha_per_mpa
-    return _result(force)
+    return result(force)
 
 
 def rolling_traction(
@@ -171,8 +171,8 @@ def rolling_traction(
     phi = np.asarray(
         thermal_reduction_factor(big_l, ph, e_prime, slide_to_roll, model=thermal_model)
     )
-    isothermal, phi = _broadcast(rolling_traction=isothermal, thermal_factor=phi)
-    return _result(phi * isothermal)
+    isothermal, phi = broadcast(rolling_traction=isothermal, thermal_factor=phi)
+    return result(phi * isothermal)
 
 
 def rolling_power_loss(
@@ -204,8 +204,8 @@ def rolling_power_loss(
     Source: seed text after Eq. 5.10 ("rolling power loss at each contact segment k is
     F_r V_r") and Eq. 5.12 (the segment loss adds the sliding part μ f L V_s).
     """
-    f = _checked("rolling_traction", rolling_traction, low=0.0, units="N/mm")
-    ln = _checked("length", length, low=0.0, units="mm")
-    v = _checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
-    f, ln, v = _broadcast(rolling_traction=f, length=ln, entraining_velocity=v)
-    return _result(f * ln * v)
+    f = checked("rolling_traction", rolling_traction, low=0.0, units="N/mm")
+    ln = checked("length", length, low=0.0, units="mm")
+    v = checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
+    f, ln, v = broadcast(rolling_traction=f, length=ln, entraining_velocity=v)
+    return result(f * ln * v)

@@ -33,6 +33,7 @@ member_transform    4×4 member → global transform (batched over rotation angl
 case_transforms     both transforms for a Case
 transform_points    apply a 4×4 transform to points
 transform_vectors   apply its rotation to vectors (normals, directions)
+rotate_about_axis   Rodrigues rotation of vectors about a unit axis
 """
 
 from __future__ import annotations
@@ -42,8 +43,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from geometry.cutter import _finite
 from geometry.errors import InputError
+from geometry.validation import real
 
 __all__ = [
     "HANDS",
@@ -51,6 +52,7 @@ __all__ = [
     "Misalignment",
     "case_transforms",
     "member_transform",
+    "rotate_about_axis",
     "transform_points",
     "transform_vectors",
 ]
@@ -87,7 +89,7 @@ class Misalignment:
 
     def __post_init__(self) -> None:
         for name in ("delta_E", "delta_P", "delta_G", "delta_Sigma"):
-            object.__setattr__(self, name, _finite(name, getattr(self, name)))
+            object.__setattr__(self, name, real(name, getattr(self, name)))
         if abs(self.delta_Sigma) >= math.radians(10.0):
             raise InputError(
                 f"delta_Sigma: must be in (-10, 10) deg, got {math.degrees(self.delta_Sigma):.6g}")
@@ -213,3 +215,29 @@ def transform_vectors(transform, vectors) -> np.ndarray:
     """
     t = np.asarray(transform, dtype=float)
     return np.einsum("...ij,...j->...i", t[..., :3, :3], np.asarray(vectors, dtype=float))
+
+
+def rotate_about_axis(axis: np.ndarray, angle, v: np.ndarray) -> np.ndarray:
+    """Rodrigues rotation of vectors about a unit axis through the origin.
+
+    Parameters
+    ----------
+    axis : ndarray (3,) — [1]
+        Unit rotation axis (not checked: callers pass a member's axis).
+    angle : float or ndarray (...) — [rad]
+        Right-handed rotation angle, broadcast against ``v``'s leading axes.
+    v : ndarray (..., 3)
+        Vectors (or points relative to a point of the axis).
+
+    Returns
+    -------
+    ndarray (..., 3)
+        v cos θ + (a × v) sin θ + a (a·v)(1 − cos θ).
+
+    Notes
+    -----
+    Rodrigues' rotation formula; points about an axis through O: O + R(p − O).
+    """
+    c = np.cos(angle)[..., None]
+    s = np.sin(angle)[..., None]
+    return v * c + np.cross(axis, v) * s + axis * (v @ axis)[..., None] * (1.0 - c)

@@ -91,7 +91,7 @@ class FlankOptions:
         would have to move infinitely fast (``docs/synthesis.md``).
     te_level : float — [rad]
         Unloaded TE of one tooth pair at ±1 pitch of pinion roll from M (the gear lag of
-        :mod:`contact.tca`): TE(roll) = a21/2 · roll², a21 = 2 te_level/(2π/z1)².
+        :mod:`geometry.conventional_tca`): TE(roll) = a21/2 · roll², a21 = 2 te_level/(2π/z1)².
         Default 45 µrad, in (0, 1000 µrad].
     ellipse_length : float — [1]
         Major axis 2a of the contact ellipse at M as a fraction of the gear face width, at

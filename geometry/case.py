@@ -88,7 +88,7 @@ class Blank:
         Rounding radius of the tooth's edges (the tip edge, toe and heel ends: the edge
         break), in (0, h_ae + h_fe); default 0.5 mm, a light edge break. An edge in
         contact with the mating flank is a Hertz line contact of this radius
-        (:mod:`contact.edge`).
+        (:mod:`contact.ltca.edges`).
 
     Raises
     ------
@@ -212,7 +212,7 @@ class DeviationFiles:
     """The ``[deviations]`` table: files of measured / wear flank deviations (seed §4.3).
 
     Only the paths are kept (the geometry package does not read them: the files are read by
-    :func:`contact.deviations.read_deviations` when the analysis runs).
+    :func:`contact.utca.deviations.read_deviations` when the analysis runs).
 
     Parameters
     ----------

@@ -38,7 +38,7 @@ from typing import NamedTuple
 import numpy as np
 
 from geometry.errors import InputError
-from geometry.machine import GeneratedFamily, _cross, _dot, meshing_function
+from geometry.machine import GeneratedFamily, cross, dot, meshing_function
 
 __all__ = [
     "PrincipalCurvatures",
@@ -129,21 +129,21 @@ def surface_curvatures(family: GeneratedFamily, generate: bool,
         qt = (-grad[..., 1] / fq)[..., None]
         rs = fam.r_s + fam.r_q * qs
         rt = fam.r_theta + fam.r_q * qt
-        big_l = -_dot(fam.r_ss + 2.0 * fam.r_sq * qs + fam.r_qq * qs * qs, n)
-        big_m = -_dot(fam.r_stheta + fam.r_sq * qt + fam.r_thetaq * qs + fam.r_qq * qs * qt, n)
-        big_n = -_dot(fam.r_thetatheta + 2.0 * fam.r_thetaq * qt + fam.r_qq * qt * qt, n)
+        big_l = -dot(fam.r_ss + 2.0 * fam.r_sq * qs + fam.r_qq * qs * qs, n)
+        big_m = -dot(fam.r_stheta + fam.r_sq * qt + fam.r_thetaq * qs + fam.r_qq * qs * qt, n)
+        big_n = -dot(fam.r_thetatheta + 2.0 * fam.r_thetaq * qt + fam.r_qq * qt * qt, n)
     else:
         rs, rt = fam.r_s, fam.r_theta
-        big_l, big_m, big_n = (-_dot(fam.r_ss, n), -_dot(fam.r_stheta, n),
-                               -_dot(fam.r_thetatheta, n))
-    e, f, g = _dot(rs, rs), _dot(rs, rt), _dot(rt, rt)
+        big_l, big_m, big_n = (-dot(fam.r_ss, n), -dot(fam.r_stheta, n),
+                               -dot(fam.r_thetatheta, n))
+    e, f, g = dot(rs, rs), dot(rs, rt), dot(rt, rt)
     len1 = np.sqrt(e)
     # t1 along the s-line, projected on the tangent plane (r_s·n is O(meshing residual))
-    t1 = rs - _dot(rs, n)[..., None] * n
+    t1 = rs - dot(rs, n)[..., None] * n
     t1 = t1 / np.linalg.norm(t1, axis=-1, keepdims=True)
-    t2 = _cross(n, t1)
+    t2 = cross(n, t1)
     # t2 = α r_s + β r_θ from the first fundamental form
-    b1, b2 = _dot(rs, t2), _dot(rt, t2)
+    b1, b2 = dot(rs, t2), dot(rt, t2)
     det = e * g - f * f
     alpha = (g * b1 - f * b2) / det
     beta = (e * b2 - f * b1) / det
@@ -173,7 +173,7 @@ def normal_curvature(kappa1, kappa2, dir1, direction):
     """
     t = np.asarray(direction, dtype=float)
     t = t / np.linalg.norm(t, axis=-1, keepdims=True)
-    c2 = _dot(t, np.asarray(dir1, dtype=float)) ** 2
+    c2 = dot(t, np.asarray(dir1, dtype=float)) ** 2
     return np.asarray(kappa1) * c2 + np.asarray(kappa2) * (1.0 - c2)
 
 
@@ -204,8 +204,8 @@ def relative_curvature(pinion: PrincipalCurvatures, gear: PrincipalCurvatures
     k11 = np.asarray(pinion.kappa1) + normal_curvature(gear.kappa1, gear.kappa2, gear.dir1, e1)
     k22 = np.asarray(pinion.kappa2) + normal_curvature(gear.kappa1, gear.kappa2, gear.dir1, e2)
     # off-diagonal of the gear's shape operator in (e1, e2)
-    g1, g2 = _dot(e1, gear.dir1), _dot(e2, gear.dir1)
-    h1, h2 = _dot(e1, gear.dir2), _dot(e2, gear.dir2)
+    g1, g2 = dot(e1, gear.dir1), dot(e2, gear.dir1)
+    h1, h2 = dot(e1, gear.dir2), dot(e2, gear.dir2)
     k12 = np.asarray(gear.kappa1) * g1 * g2 + np.asarray(gear.kappa2) * h1 * h2
     return principal_from_directional(k11, k22, k12, e1, e2)
 

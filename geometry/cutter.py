@@ -52,6 +52,7 @@ from typing import NamedTuple
 import numpy as np
 
 from geometry.errors import InputError
+from geometry.validation import real
 
 __all__ = [
     "BLADE_SIDES",
@@ -72,16 +73,6 @@ PROFILE_TYPES = ("straight", "circular")
 
 _MAX_BLADE_ANGLE = math.radians(45.0)
 _MAX_REM_ANGLE = math.radians(20.0)
-
-
-def _finite(name: str, value: float) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{name}: must be a number, got {value!r}") from None
-    if not math.isfinite(v):
-        raise InputError(f"{name}: must be finite, got {value!r}")
-    return v
 
 
 @dataclass(frozen=True)
@@ -140,7 +131,7 @@ class Blade:
         for name in ("point_radius", "blade_angle", "edge_radius", "profile_radius",
                      "profile_reference_height", "toprem_angle", "toprem_height",
                      "flankrem_angle", "flankrem_height"):
-            object.__setattr__(self, name, _finite(name, getattr(self, name)))
+            object.__setattr__(self, name, real(name, getattr(self, name)))
         if self.point_radius <= 0.0:
             raise InputError(f"point_radius: must be > 0 mm, got {self.point_radius}")
         if not 0.0 <= self.blade_angle < _MAX_BLADE_ANGLE:

@@ -63,8 +63,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.cutter import Blade, ProfileSections, _finite, blade_profile, profile_sections
+from geometry.cutter import Blade, ProfileSections, blade_profile, profile_sections
 from geometry.errors import InputError
+from geometry.validation import real
 
 __all__ = [
     "PROCESSES",
@@ -159,12 +160,12 @@ class MachineSettings:
         for name in ("radial_setting", "cradle_angle", "swivel", "tilt", "machine_root_angle",
                      "machine_center_to_back", "sliding_base", "blank_offset",
                      "ratio_of_roll"):
-            object.__setattr__(self, name, _finite(name, getattr(self, name)))
+            object.__setattr__(self, name, real(name, getattr(self, name)))
         for name in ("modified_roll", "helical_motion", "vertical_motion"):
             seq = getattr(self, name)
             if isinstance(seq, (str, bytes)) or not isinstance(seq, Sequence):
                 raise InputError(f"{name}: must be a list of numbers, got {seq!r}")
-            vals = tuple(_finite(f"{name}[{k}]", v) for k, v in enumerate(seq))
+            vals = tuple(real(f"{name}[{k}]", v) for k, v in enumerate(seq))
             object.__setattr__(self, name, vals)
         if len(self.modified_roll) > 4:
             raise InputError(
@@ -358,7 +359,7 @@ class GeneratedFamily(NamedTuple):
     normal: np.ndarray
 
 
-class _Chain(NamedTuple):
+class Chain(NamedTuple):
     """Constant factors of the chain of :func:`machine_transform`, folded for 3-vectors.
 
     With A = R_z(q_c + q) = cos a·I_c + sin a·S + I_z (I_c = diag(1, 1, 0), S = dR_z/dα at
@@ -375,8 +376,8 @@ class _Chain(NamedTuple):
     motion: bool  # helical or vertical motion: T(0,−E_m,X_b) depends on q
 
 
-def _chain(settings: MachineSettings) -> _Chain:
-    """Fold the constant factors of the machine chain (see :class:`_Chain`)."""
+def chain(settings: MachineSettings) -> Chain:
+    """Fold the constant factors of the machine chain (see :class:`Chain`)."""
     c5 = (_trans([settings.radial_setting, 0.0, 0.0]) @ _rot("z", settings.swivel)
           @ _rot("x", settings.tilt))[:3]
     r2 = _rot("y", settings.machine_root_angle - 0.5 * math.pi)[:3, :3]
@@ -388,11 +389,11 @@ def _chain(settings: MachineSettings) -> _Chain:
     if not motion:
         k3[:, 3] += -settings.blank_offset * r2[:, 1] + settings.sliding_base * r2[:, 2]
     k = np.concatenate([k1, k2, k3])  # (9, 4)
-    return _Chain(np.ascontiguousarray(k[:, :3]), k[:, 3:].copy(), r2[:, 1].copy(),
+    return Chain(np.ascontiguousarray(k[:, :3]), k[:, 3:].copy(), r2[:, 1].copy(),
                   r2[:, 2].copy(), motion)
 
 
-#: order of the vectors in a family buffer (:func:`_family_buffer`)
+#: order of the vectors in a family buffer (:func:`family_buffer`)
 _FIELDS = ("r", "r_s", "r_theta", "r_ss", "r_stheta", "r_thetatheta", "normal", "r_q", "r_sq",
            "r_thetaq", "r_qq")
 
@@ -400,7 +401,7 @@ _FIELDS = ("r", "r_s", "r_theta", "r_ss", "r_stheta", "r_thetatheta", "normal", 
 _XZ = [0, 1, 3, 6]  # cutter vectors in the blade's axial plane: r, r_s, r_ss, normal
 
 
-def _cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta: np.ndarray,
+def cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta: np.ndarray,
                    section) -> np.ndarray:
     """The vectors of :func:`geometry.cutter.cutter_surface`, component-major (3, 7, n).
 
@@ -426,13 +427,13 @@ def _cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta
     return v
 
 
-def _family_buffer(chain: _Chain, settings: MachineSettings, v: np.ndarray,
+def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
                    q: np.ndarray) -> np.ndarray:
     """The eleven vectors of :func:`generated_family`, component-major: (3, 11, q.size).
 
-    ``v`` holds the cutter vectors at the points (:func:`_cutter_buffer`, (3, 7, n)); the
+    ``v`` holds the cutter vectors at the points (:func:`cutter_buffer`, (3, 7, n)); the
     result the vectors in the order of :data:`_FIELDS`. The chain is applied to all seven
-    cutter vectors at once: one product with the folded constant factors (:class:`_Chain`),
+    cutter vectors at once: one product with the folded constant factors (:class:`Chain`),
     the cradle rotation as cos a·K₁v + sin a·K₂v + K₃v and its q-derivatives (K₂ and −K₁
     are the derivatives of K₁ and K₂), then the work rotation R_z(−φ) differentiated by
     the product rule, with dR_z(−φ)/dq = −φ' S R_z(−φ).
@@ -488,7 +489,7 @@ def _family_buffer(chain: _Chain, settings: MachineSettings, v: np.ndarray,
     return out
 
 
-def _family_views(buf: np.ndarray, shape: tuple) -> GeneratedFamily:
+def family_views(buf: np.ndarray, shape: tuple) -> GeneratedFamily:
     """A :class:`GeneratedFamily` of views into a family buffer, arrays shape + (3,)."""
     out = buf.reshape(3, 11, *shape)
     out = out.transpose(*range(1, out.ndim), 0)
@@ -531,11 +532,11 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
     sections = profile_sections(blade) if sections is None else sections
     if section is not None:
         section = np.broadcast_to(np.asarray(section, dtype=int), q.shape).ravel()
-    v = _cutter_buffer(blade, sections, s.ravel(), theta.ravel(), section)
-    return _family_views(_family_buffer(_chain(settings), settings, v, q), q.shape)
+    v = cutter_buffer(blade, sections, s.ravel(), theta.ravel(), section)
+    return family_views(family_buffer(chain(settings), settings, v, q), q.shape)
 
 
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Cross product over the last axis (faster than np.cross for small batches)."""
     out = np.empty(np.broadcast_shapes(a.shape, b.shape))
     out[..., 0] = a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]
@@ -544,7 +545,8 @@ def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return out
 
 
-def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Dot product over the last axis of two broadcastable arrays (..., 3)."""
     return (a * b).sum(axis=-1)
 
 
@@ -567,7 +569,7 @@ def meshing_function(family: GeneratedFamily, length_scale: float):
         ∂f/∂(s, θ, q) [1/mm, 1/rad, 1/rad], analytic (second derivatives of r_g).
     """
     buf = np.stack([np.reshape(getattr(family, name), (-1, 3)).T for name in _FIELDS], 1)
-    f, grad = _meshing_buffer(buf, length_scale)
+    f, grad = meshing_buffer(buf, length_scale)
     shape = np.shape(family.r)[:-1]
     return f.reshape(shape), grad.T.reshape(*shape, 3)
 
@@ -577,7 +579,7 @@ _MESH_B = [4, 5, 9]  # r_sθ, r_θθ, r_θq (r_s ×)
 _MESH_C = [8, 9, 10]  # r_sq, r_θq, r_qq
 
 
-def _meshing_buffer(buf: np.ndarray, length_scale: float):
+def meshing_buffer(buf: np.ndarray, length_scale: float):
     """:func:`meshing_function` of a family buffer: f (n,) and its gradient (3, n)."""
     # N = r_s × r_θ and its derivatives dN/d(s, θ, q) = (r_ss, r_sθ, r_sq) × r_θ
     # + r_s × (r_sθ, r_θθ, r_θq), all cross products in two stacked ones

@@ -37,14 +37,14 @@ import numpy as np
 from geometry.cutter import Blade, profile_sections
 from geometry.errors import InputError
 from geometry.machine import (
+    Chain,
     GeneratedFamily,
     MachineSettings,
-    _Chain,
-    _chain,
-    _cutter_buffer,
-    _family_buffer,
-    _family_views,
-    _meshing_buffer,
+    chain,
+    cutter_buffer,
+    family_buffer,
+    family_views,
+    meshing_buffer,
 )
 
 __all__ = ["REASONS", "EnvelopeSolution", "solve_envelope"]
@@ -92,13 +92,13 @@ class _Context(NamedTuple):
     sections: object
     generate: bool
     length_scale: float
-    chain: _Chain  # the machine chain's constant factors, folded once per solve
+    chain: Chain  # the machine chain's constant factors, folded once per solve
 
 
 def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
-    """Family buffer (3, 11, n) of :func:`geometry.machine._family_buffer` at flat points."""
-    v = _cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
-    return _family_buffer(ctx.chain, ctx.settings, v, q)
+    """Family buffer (3, 11, n) of :func:`geometry.machine.family_buffer` at flat points."""
+    v = cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
+    return family_buffer(ctx.chain, ctx.settings, v, q)
 
 
 def _evaluate(ctx: _Context, x: np.ndarray, section: np.ndarray, z: np.ndarray, p: np.ndarray):
@@ -117,7 +117,7 @@ def _evaluate(ctx: _Context, x: np.ndarray, section: np.ndarray, z: np.ndarray, 
     jac[0] = derivs[2]
     jac[1] = (r[0] * derivs[0] + r[1] * derivs[1]) / rho_safe
     if ctx.generate:
-        f[2], jac[2] = _meshing_buffer(buf, ctx.length_scale)
+        f[2], jac[2] = meshing_buffer(buf, ctx.length_scale)
     return f.T, jac.transpose(2, 0, 1), buf
 
 
@@ -191,7 +191,7 @@ def _seed_candidates(ctx: _Context, z0: float, p0: float, depth: float, q_vals, 
     r = buf[:, 0]
     obj = (r[2] - z0) ** 2 + (np.hypot(r[0], r[1]) - p0) ** 2
     if ctx.generate and len(q_vals) > 1:
-        f, _ = _meshing_buffer(buf, ctx.length_scale)
+        f, _ = meshing_buffer(buf, ctx.length_scale)
         obj = obj + 0.1 * (ctx.length_scale * f) ** 2
     order = np.argsort(obj)[:12]
     return np.stack([sg[order], tg[order], qg[order]], -1)[:, : 3 if ctx.generate else 2]
@@ -480,7 +480,7 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     n = zf.size
     sections = profile_sections(blade)
     gen = settings.process == "Generate"
-    ctx = _Context(blade, settings, sections, gen, float(length_scale), _chain(settings))
+    ctx = _Context(blade, settings, sections, gen, float(length_scale), chain(settings))
     if seed_index is None:
         seed = np.ravel_multi_index(tuple(d // 2 for d in shape), shape) if shape else 0
     else:
@@ -533,13 +533,13 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
 
     q = x[:, 2] if gen else np.zeros(n)
     buf = _family(ctx, x[:, 0], x[:, 1], q, section)
-    fam = _family_views(buf, (n,))
+    fam = family_views(buf, (n,))
     if gen:
-        res, grad = _meshing_buffer(buf, length_scale)
+        res, grad = meshing_buffer(buf, length_scale)
         # undercut: ∂f/∂q of the opposite sign to the seed point's (Litvin & Fuentes 2004,
         # §6.3: the envelope's singular line separates the regular and the cut-away parts)
         # (the seed point's family by the same buffer functions as generated_family)
-        _, grad_seed = _meshing_buffer(
+        _, grad_seed = meshing_buffer(
             _family(ctx, x_seed[0:1], x_seed[1:2], x_seed[2:3], np.array([sec_seed])),
             length_scale)
         reason[(reason == 0) & (np.sign(grad[2]) != np.sign(grad_seed[2, 0]))] = 4

@@ -927,7 +927,7 @@ class _LocalContact:
     Unknowns per roll x = (z_p, ρ_p, z_g, ρ_g, φ_g); residuals r_p − r_g [mm] and
     L (n_p + n_g) with L the gear mean cone distance; Levenberg–Marquardt
     (``scipy.optimize.least_squares``) with the analytic Jacobian (surface tangents from the
-    envelope, normal derivatives dn = W dr). :mod:`contact.tca` is the toolkit's full,
+    envelope, normal derivatives dn = W dr). :mod:`geometry.conventional_tca` is the toolkit's full,
     independent TCA.
     """
 
@@ -976,7 +976,7 @@ class _LocalContact:
 def _te_at(contact: _LocalContact, start: np.ndarray, rate: np.ndarray, *, phi_p0: float,
            pinion_sense: int, gear_sense: int, ratio: float, rolls: tuple[float, ...],
            steps: int = 4) -> dict[float, float]:
-    """Transmission error (gear lag, :mod:`contact.tca` convention) at the given rolls.
+    """Transmission error (gear lag, :mod:`geometry.conventional_tca` convention) at rolls.
 
     Continuation from M (``start`` = x at roll 0, ``rate`` = dx/droll there) in ``steps``
     steps per side; raises InputError if a step fails.

@@ -39,6 +39,22 @@ _SKIP_VARS = ("solve_time", "compliance_time")
 RESIDUAL_ATOL = 1e-12
 
 
+#: module paths the file's text attributes name, moved when ``contact/`` was split into its
+#: layers (issue 20): the golden file's text is read with the new paths (the old ones still
+#: import for one release, contact._moved)
+MOVED_PATHS = {
+    "contact.easeoff.ease_off": "contact.utca.ease_off",
+    "contact.edge.EDGE_KINDS": "contact.ltca.EDGE_KINDS",
+}
+
+
+def _moved(value):
+    if isinstance(value, str):
+        for old, new in MOVED_PATHS.items():
+            value = value.replace(old, new)
+    return value
+
+
 def _skipped_attr(name: str) -> bool:
     return name in _SKIP_ATTRS or name.startswith("time_")
 
@@ -63,7 +79,8 @@ def differences(new: xr.DataTree, golden: xr.DataTree, *, rtol: float = 0.0) -> 
     rtol : float
         Largest difference of a float variable relative to the variable's largest
         magnitude (0: bit-identical, NaN where NaN; the contact residuals to
-        :data:`RESIDUAL_ATOL`); integers, text and attributes must always be identical.
+        :data:`RESIDUAL_ATOL`); integers, text and attributes must always be identical
+        (the golden file's text read with :data:`MOVED_PATHS`).
 
     Returns
     -------
@@ -112,7 +129,7 @@ def _attr_differences(where: str, a: dict, b: dict) -> list[str]:
     if keys_a != keys_b:
         out.append(f"{where}: attributes differ: {sorted(keys_a ^ keys_b)}")
     for k in sorted(keys_a & keys_b):
-        x, y = a[k], b[k]
+        x, y = a[k], _moved(b[k])
         if isinstance(x, (float, np.floating)) and isinstance(y, (float, np.floating)):
             if not (x == y or (math.isnan(x) and math.isnan(y))):
                 out.append(f"{where}: attribute {k}: {x!r} != {y!r}")

@@ -11,8 +11,8 @@ import xarray as xr
 
 from contact.cli import main
 from contact.io import read_netcdf, write_netcdf
-from contact.problem_set import ltca_like_problem
-from contact.solver_study import compare_solvers, shifted_geometric_mean, summarize
+from contact.qp.benchmark_problems import ltca_like_problem
+from contact.qp.solver_study import compare_solvers, shifted_geometric_mean, summarize
 
 
 def test_help_lists_commands(capsys):

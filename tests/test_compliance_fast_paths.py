@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from contact.compliance.shell import ShellTooth, _compliance_blocks, build_shell_model
+from contact.compliance.shell import ShellTooth, build_shell_model, compliance_blocks
 from contact.compliance.tooth import (
     _PROJ_ITER,
     _TRAJ_STEPS,
@@ -160,9 +160,9 @@ def test_half_solve_compliance_equals_cho_solve():
     normal = np.tile([0.1, 0.05, 1.0], (n, 1))
     normal /= np.linalg.norm(normal, axis=1, keepdims=True)
     blocks = [np.arange(5), np.arange(5, n)]
-    got = _compliance_blocks(model, ends, normal, blocks)
+    got = compliance_blocks(model, ends, normal, blocks)
     # reference: C = Φᵀ K⁻¹ Φ with the two-sided Cholesky solve, Φ the segment-averaged
-    # load vectors (4 Gauss points, as _compliance_blocks)
+    # load vectors (4 Gauss points, as compliance_blocks)
     s, w = np.polynomial.legendre.leggauss(4)
     s, w = 0.5 * (s + 1.0), 0.5 * w
     gp = (ends[:, None, 0] + s[None, :, None] * (ends[:, None, 1] - ends[:, None, 0]))
@@ -206,8 +206,8 @@ def test_grouped_load_vectors_equal_the_weighted_sums():
 
 def test_segment_geometry_cycle_reuse_equals_direct():
     """Rolls whole mesh cycles apart are computed once: equal to computing every roll."""
-    from contact.easeoff import ease_off
-    from contact.ltca import _segment_geometry, segment_geometry
+    from contact.ltca.segments import _segment_geometry, segment_geometry
+    from contact.utca.easeoff import ease_off
 
     case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
     eo = ease_off(case)
@@ -239,9 +239,9 @@ def _flank_points(data, rng, n):
 
 
 def test_shell_points_of_both_members_in_one_batch_equal_separate():
-    """Both members' points mapped in one batch (_shell_points_many, the LTCA's path)
+    """Both members' points mapped in one batch (shell_points_many, the LTCA's path)
     equal each member mapped on its own (_shell_points, one tooth per batch)."""
-    from contact.compliance.tooth import _shell_points, _shell_points_many
+    from contact.compliance.tooth import _shell_points, shell_points_many
 
     rng = np.random.default_rng(6)
     jobs = []
@@ -250,7 +250,7 @@ def test_shell_points_of_both_members_in_one_batch_equal_separate():
         pts, nrm = _flank_points(data, rng, 40)
         extra, _ = _flank_points(data, rng, 30)
         jobs.append((data, pts, nrm, None, extra))
-    both = _shell_points_many(jobs, 1e-6)
+    both = shell_points_many(jobs, 1e-6)
     for job, got in zip(jobs, both, strict=True):
         alone = _shell_points(job[0], *job[1:4], 1e-6, extra=job[4])
         for sp_got, sp_ref in zip(got, alone, strict=True):
@@ -280,9 +280,9 @@ def test_distinct_ends_rebuild_the_segment_ends():
 
 def test_loaded_tca_given_transitions_equals_computed():
     """The pipeline hands the UTCA's M1, M2 to loaded_tca: same analysis as computing them."""
-    from contact.easeoff import ease_off
     from contact.ltca import LTCAOptions, loaded_tca
     from contact.utca import unloaded_tca
+    from contact.utca.easeoff import ease_off
     from geometry.errors import InputError
 
     case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
@@ -307,8 +307,8 @@ def test_mesh_compliance_of_several_rolls_in_one_batch_equals_one_by_one():
     mesh_compliance of that roll alone to round-off (1e-12 relative: the batched Newton
     and RK4 iterate until the slowest point converges, the triangular solve is the same)."""
     from contact.compliance.mesh import ContactSegments, mesh_compliance, mesh_compliance_many
-    from contact.easeoff import ease_off
     from contact.ltca import segment_geometry
+    from contact.utca.easeoff import ease_off
 
     case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
     eo = ease_off(case)

@@ -1,4 +1,4 @@
-"""Tests of contact.deviations (seed §4.3, Eq. 4.3–4.10).
+"""Tests of contact.utca.deviations (seed §4.3, Eq. 4.3–4.10).
 
 Independent checks: exact identities (zero deviation; rigid rotations of either member about
 its own axis only shift ε and Q by constants, which the re-shift removes), the closed form
@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from contact.deviations import (
+from contact.deviation_files import (
     SurfaceDeviation,
     apply_deviations,
     read_deviation_csv,
@@ -28,8 +28,8 @@ from contact.deviations import (
     weighted_average_deviation,
     write_deviation_netcdf,
 )
-from contact.easeoff import ease_off
 from contact.utca import pair_transmission_error, unloaded_tca
+from contact.utca.easeoff import ease_off
 from geometry.case import load_case
 from geometry.errors import InputError
 from geometry.flank import blank_outline, flank_at

@@ -1,4 +1,4 @@
-"""Surface of action, roll angle and ease-off (contact.easeoff) against independent references.
+"""Surface of action, roll angle and ease-off (contact.utca.easeoff) against independent references.
 
 References: the relative velocity of the two members obtained by finite differences of the
 assembly's own transforms (geometry.assembly), not from the closed form under test; the
@@ -20,15 +20,10 @@ import pytest
 import xarray as xr
 from scipy.optimize import brentq
 
-from contact.easeoff import (
-    EASEOFF_REASONS,
-    action_roll_angle,
-    ease_off,
-    easeoff_dataset,
-    mesh_kinematics,
-    roll_angle_surface,
-)
 from contact.io import check_conventions, read_netcdf, write_netcdf
+from contact.utca.action_surface import action_roll_angle, mesh_kinematics
+from contact.utca.datasets import easeoff_dataset
+from contact.utca.easeoff import EASEOFF_REASONS, ease_off, roll_angle_surface
 from geometry.assembly import Misalignment, case_transforms, transform_points, transform_vectors
 from geometry.case import load_case
 from geometry.cutter import profile_sections

@@ -1,4 +1,4 @@
-"""Edge contact of the flank boundary (contact.edge, contact.ltca).
+"""Edge contact of the flank boundary (contact.ltca.edges, contact.ltca).
 
 Independent checks: the boundary lies on the contact region's edge and its tip piece has
 the length of the gear's tip line between the grid nodes; at a curve's end on the
@@ -18,11 +18,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from contact.easeoff import ease_off
-from contact.edge import EDGE_KINDS, flank_boundary
 from contact.ltca import LTCAOptions, loaded_tca
+from contact.ltca.edges import EDGE_KINDS, flank_boundary
 from contact.pipeline import DEFAULT_CASE, SEED_TABLE_3_1
-from contact.utca import _Fields, contact_curves, transitions
+from contact.utca import EaseOffFields, contact_curves, transitions
+from contact.utca.easeoff import ease_off
 from geometry.case import load_case
 from geometry.errors import InputError
 
@@ -46,7 +46,7 @@ def test_boundary_lies_on_the_region_edge_and_spans_the_tip_line():
     tip piece is as long as the polyline through the gear's own grid nodes on its tip line
     where the pinion mate lies in its blank (within 1 %: chords vs the spline's arc)."""
     eo = _easeoff()
-    f = _Fields(eo)
+    f = EaseOffFields(eo)
     bd = flank_boundary(f, 0.5)
     assert set(np.unique(bd.kind)) == set(range(len(EDGE_KINDS)))
     m = f.measure(bd.u.ravel(), bd.v.ravel())
@@ -67,7 +67,7 @@ def test_edge_separation_continues_the_curve_at_its_end():
     the curve's separation ε + gap (its iso-line is Q = q + t there, so both read ½ K t²),
     to 1e-9 rad (Q is met to 1e-13 rad on the curve)."""
     eo = _easeoff()
-    f = _Fields(eo)
+    f = EaseOffFields(eo)
     m1, _ = transitions(eo)
     q = m1 + np.linspace(-0.6, 1.2, 25) * eo.pitch
     cc = contact_curves(eo, q, n_point=21, spacing="cosine", near_misses=True, fields=f)
@@ -211,7 +211,7 @@ def test_edge_gap_curvature_stays_within_the_nodes_range():
     stays positive."""
     case = load_case(ROOT / "cases" / "iso23509_sample2_fm.toml")
     eo = ease_off(case)
-    f = _Fields(eo)
+    f = EaseOffFields(eo)
     bd = flank_boundary(f, 0.25)
     lo, hi = f.gap_range
     assert lo > 0

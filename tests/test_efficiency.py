@@ -84,9 +84,9 @@ def test_constant_friction_matches_the_path_of_contact_estimate(name):
     # within 10 % (measured 4.5 %, 0.2 %, 0.7 %).
     import warnings
 
-    from contact.easeoff import ease_off
     from contact.ltca import loaded_tca, segment_geometry
     from contact.utca import transitions
+    from contact.utca.easeoff import ease_off
     from friction.kinematics import surface_velocities
     from geometry.case import load_case
 

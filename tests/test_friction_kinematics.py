@@ -127,7 +127,7 @@ def test_mean_pitch_point_against_the_pitch_cone_hand_calculation(name):
 
     from scipy.optimize import least_squares
 
-    from contact.easeoff import mesh_kinematics
+    from contact.utca.action_surface import mesh_kinematics
     from geometry.basic_design import load_basic
     from geometry.case import load_case
     from geometry.pitch_cone import pitch_cone

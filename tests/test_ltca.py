@@ -19,10 +19,10 @@ import xarray as xr
 
 from contact import available_solvers
 from contact.cli import main
-from contact.easeoff import ease_off
 from contact.io import check_conventions, read_netcdf, write_netcdf
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.pipeline import run_analysis
+from contact.utca.easeoff import ease_off
 from geometry.assembly import Misalignment
 from geometry.case import load_case
 from geometry.errors import InputError
@@ -328,7 +328,7 @@ def test_warm_start_from_the_previous_roll_leaves_the_solution_unchanged():
     """Each roll's first solve starts from the previous roll's forces; the contact problem
     (C positive definite) has one solution, so a cold solve of every final problem must
     give the same forces (1e-9 of the largest force: round-off of the exact solver)."""
-    from contact.solvers import solve_contact
+    from contact.qp.solvers import solve_contact
 
     problems = []
     ds = loaded_tca(_case(), [150.0], options=SMALL, easeoff=_easeoff(),

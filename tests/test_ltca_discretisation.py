@@ -16,10 +16,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from contact.easeoff import ease_off
-from contact.ltca import LTCAOptions, _SegmentQuadratic, loaded_tca, segment_geometry
+from contact.ltca import LTCAOptions, loaded_tca, segment_geometry
+from contact.ltca.discretisation import SegmentQuadratic
 from contact.pipeline import DEFAULT_CASE
-from contact.utca import CURVE_SPACINGS, _Fields, contact_curves, transitions
+from contact.utca import CURVE_SPACINGS, EaseOffFields, contact_curves, transitions
+from contact.utca.easeoff import ease_off
 from geometry.case import load_case
 from geometry.errors import InputError
 
@@ -40,7 +41,7 @@ def _easeoff():
 def test_segment_quadratic_is_exact_for_quadratics(spacing):
     S = 7
     x = CURVE_SPACINGS[spacing](2 * S + 1)
-    quad = _SegmentQuadratic(x)
+    quad = SegmentQuadratic(x)
     coef = (0.3, -1.7, 2.9)
 
     def field(s):
@@ -70,7 +71,7 @@ def test_segment_quadratic_is_exact_for_quadratics(spacing):
 def test_segment_clip_finds_the_crossing_of_a_linear_measure():
     S = 5
     x = CURVE_SPACINGS["cosine"](2 * S + 1)
-    quad = _SegmentQuadratic(x)
+    quad = SegmentQuadratic(x)
     edge = 0.37  # the measure 0.37 − x is ≥ 0 before the edge only
     a, b = quad.clip(edge - x)
     x0, x1 = x[0:-1:2], x[2::2]
@@ -107,7 +108,7 @@ def test_short_curves_between_coarse_samples_are_found():
     inside places; 1e-3 of the inside measure is the tolerance for curves that a fine
     scan barely catches."""
     eo = _easeoff()
-    f = _Fields(eo)
+    f = EaseOffFields(eo)
     _, m2 = transitions(eo)
     # the reference pair's exit lies about one pitch after M2 from the other pair's view;
     # scan the rolls where its first-order iso-line shrinks away
@@ -225,7 +226,7 @@ def test_edge_contact_flags_the_clipped_pinion_tip_end():
     Checked against a direct reading of the stored data, and physically: at 500 N·m the
     leaving pair loads the pinion's tip edge (a flagged end at gear profile v < 0.6 that
     is not the last slot) in some roll positions. A loaded edge segment
-    (:mod:`contact.edge`) flags its pair too."""
+    (:mod:`contact.ltca.edges`) flags its pair too."""
     opts = LTCAOptions(cycles=1, rolls_per_cycle=10, segments=16)
     full = loaded_tca(_case(), [500.0], options=opts, easeoff=_easeoff())
     curve = full["segment_kind"].values == "curve"

@@ -84,7 +84,7 @@ def test_lte_peak_to_peak_is_in_the_seed_range():
 def test_peak_pressure_grows_with_torque_and_stays_below_2_5_gpa():
     """The seed's line contact of the flanks: measured 0.73 / 1.37 / 1.85 GPa on the
     contact curves, the peak where a loaded line meets the gear tip edge. The edge contact
-    (contact.edge, 0.5 mm edge rounding on the mating flank), which the seed's line model
+    (contact.ltca.edges, 0.5 mm edge rounding on the mating flank), which the seed's line model
     does not have, is reported apart and is far higher: 3.6 / 5.3 / 6.9 GPa, at the gear's
     tip edge (the seed's "edge loading at the tip and root", Fig. 3.7b–c)."""
     ds = _run()
@@ -102,7 +102,7 @@ def test_contact_spreads_and_edge_load_grows_with_torque():
     """Seed Fig. 3.7a–c: the pattern spreads as torque rises, with edge loading at the tip
     and root. Measured: flank area of the pressure envelope 287 → 443 → 520 cells of the
     41 × 21 grid; share of the gear torque carried by the edge contact (the gear's tip
-    edge and heel, the pinion's tip edge; contact.edge) 6.9 → 9.5 → 11.7 % over the mesh
+    edge and heel, the pinion's tip edge; contact.ltca.edges) 6.9 → 9.5 → 11.7 % over the mesh
     cycle. Unlike the seed's Fig. 3.7a, our long-bearing pair already touches an edge at
     50 N·m (every torque has edge contact; see the LTCA issue note)."""
     ds = _run()

@@ -19,10 +19,14 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from contact import ContactProblem, available_solvers, solve_contact
-from contact.problem_set import hertz_cylinder_problem, hertz_sphere_problem, ltca_like_problem
-from contact.solvers import _registry
-from contact.solvers.active_set import block_pivoting, primal_active_set
-from contact.solvers.backend import Backend, RawResult
+from contact.qp.benchmark_problems import (
+    hertz_cylinder_problem,
+    hertz_sphere_problem,
+    ltca_like_problem,
+)
+from contact.qp.solvers import _registry
+from contact.qp.solvers.active_set import block_pivoting, primal_active_set
+from contact.qp.solvers.backend import Backend, RawResult
 
 SOLVERS = available_solvers()
 
@@ -199,7 +203,7 @@ def test_iteration_cap_triggers_fallback_and_same_answer():
 def test_cycle_detection_triggers_fallback(monkeypatch):
     # Force a two-set cycle: from the full set, a fake KKT solve says segment 0 pulls
     # (F < 0); from the set without it, a fake huge Θ makes segment 0 penetrate.
-    import contact.solvers.active_set as mod
+    import contact.qp.solvers.active_set as mod
 
     problem = ltca_like_problem(80, seed=3).problem
     n = problem.size

@@ -2,7 +2,7 @@
 
 Every check is made on the geometry that the synthesised machine settings generate (the
 toolkit's generator model, :mod:`geometry.meshing`, :mod:`geometry.curvature`) and on the
-conventional TCA (:mod:`contact.tca`), against the prescriptions of the basic file
+conventional TCA (:mod:`geometry.conventional_tca`), against the prescriptions of the basic file
 (``cases/basic/kolivand2009_fm_11x41.toml``) — not against the synthesis equations. The
 synthesis equations themselves are checked against the conjugate example pairs of
 ``tests/data`` (the limit of no mismatch must give the conjugate pinion's curvature).
@@ -20,10 +20,10 @@ import numpy as np
 import pytest
 
 from contact.cli import main as ltca
-from contact.tca import _Pair, conventional_tca, mean_contact
 from geometry.assembly import Misalignment, case_transforms
 from geometry.basic_design import basic_from_dict, load_basic
 from geometry.case import load_case
+from geometry.conventional_tca import _Pair, conventional_tca, mean_contact
 from geometry.curvature import PrincipalCurvatures, relative_curvature, surface_curvatures
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.flank import blank_outline

@@ -16,9 +16,9 @@ import numpy as np
 import pytest
 from scipy.optimize import least_squares
 
-from contact.tca import TCAResult, conventional_tca, mean_contact
 from geometry.assembly import Misalignment, case_transforms, transform_points
 from geometry.case import load_case
+from geometry.conventional_tca import TCAResult, conventional_tca, mean_contact
 from geometry.errors import InputError
 from geometry.meshing import solve_envelope
 

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from contact.transmission_error import mesh_harmonics, transmission_error_summary
+from contact.ltca.transmission_error import mesh_harmonics, transmission_error_summary
 from geometry.errors import InputError
 
 T = 2 * np.pi / 11  # mesh period of an 11-tooth pinion [rad]

@@ -1,6 +1,6 @@
 """Unloaded TCA from the ease-off (contact.utca) against independent references.
 
-References: the conventional TCA of seed Eq. 2.14 (contact.tca.conventional_tca: five
+References: the conventional TCA of seed Eq. 2.14 (geometry.conventional_tca.conventional_tca: five
 equations solved on the real surfaces, a different algorithm on different data), the
 exactly conjugate example pair (zero transmission error), the Hertzian contact-ellipse
 estimate of the unloaded contact line from principal relative curvatures (seed Eq. 2.15–2.18),
@@ -25,9 +25,7 @@ import pytest
 import xarray as xr
 
 from contact.cli import main
-from contact.easeoff import ease_off
 from contact.io import check_conventions, read_netcdf, write_netcdf
-from contact.tca import conventional_tca, mean_contact
 from contact.utca import (
     UTE_METHODS,
     contact_curves,
@@ -35,8 +33,10 @@ from contact.utca import (
     transitions,
     unloaded_tca,
 )
+from contact.utca.easeoff import ease_off
 from geometry.assembly import Misalignment, case_transforms
 from geometry.case import load_case
+from geometry.conventional_tca import conventional_tca, mean_contact
 from geometry.curvature import PrincipalCurvatures, relative_curvature, surface_curvatures
 from geometry.errors import InputError
 from geometry.flank import blank_outline
@@ -161,13 +161,13 @@ def test_spline_interpolation_error_between_nodes():
     the interpolation error stated in the module docstring."""
     from scipy.interpolate import RectBivariateSpline
 
-    from contact.easeoff import _fill_missing
+    from contact.utca.easeoff import fill_missing
 
     eo = _easeoff()
     e = eo.raw_ease_off_angle
     sheet = eo.valid | eo.smooth
-    half = RectBivariateSpline(eo.u[::2], eo.v[::2], _fill_missing(e[::2, ::2],
-                                                                    sheet[::2, ::2]))
+    half = RectBivariateSpline(eo.u[::2], eo.v[::2], fill_missing(e[::2, ::2],
+                                                                   sheet[::2, ::2]))
     inner = eo.valid.copy()
     for di in range(-3, 4):
         for dj in range(-3, 4):
@@ -376,14 +376,15 @@ def test_end_slope_of_the_ute_matches_a_wide_central_difference():
     of UTE_seed with h = 1e-3 rad — wide enough that the end search's resolution (~3e-6 in
     u at the tip, bisection) divided by h stays below 1e-3 relative; the truncation
     O(h²) gives the rest: 0.5 % (measured 0.08 %)."""
-    from contact.utca import CURVE_SPACINGS, _end_slope, _Fields, _seed_places
+    from contact.utca import CURVE_SPACINGS, EaseOffFields
+    from contact.utca.contact_curves import _end_slope, _seed_places
 
     case = load_case(ROOT / "cases" / "kolivand2009_fm_11x41.toml")
     eo = ease_off(case)
     m1, _ = transitions(eo)
     t = (m1 + np.arange(20)[:, None] * eo.pitch / 20
          - np.array([-1, 0, 1, 2])[None, :] * eo.pitch).ravel()
-    f = _Fields(eo)
+    f = EaseOffFields(eo)
     frac = CURVE_SPACINGS["cosine"](49)
     first = _seed_places(f, t, frac)
     end = np.isfinite(first.ute) & ((first.index == 0) | (first.index == frac.size - 1))

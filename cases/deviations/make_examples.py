@@ -8,13 +8,13 @@ case files plus a ``[deviations]`` table.
 
 Grids: 9 lengthwise (u, toe → heel) × 5 profile (v, root → tip) points, the common CMM
 practice (seed §4.5.2), in projection-plane fractions of each member; normal deviations in
-mm, positive = material added (contact.deviations).
+mm, positive = material added (contact.utca.deviations).
 
 * ``wear_11x41_{pinion,gear}.csv`` — a local, wear-like deviation of the default case: a
   smooth hollow (material removed), up to 10 µm on the pinion and 5 µm on the gear (seed
   Fig. 4.5 magnitudes). Lengthwise it is centred on the unloaded pattern (the median, over
   the gear nodes of least ease-off, of the node and of its pinion mate:
-  contact.easeoff.ease_off); in profile half-way between the lowest profile fraction that
+  contact.utca.easeoff.ease_off); in profile half-way between the lowest profile fraction that
   meshes (the lowest pinion mate, resp. the lowest gear node with a mate) and the pattern
   centre, i.e. in the dedendum where sliding wear is deepest; it is tapered to exactly zero
   below that lowest meshing fraction, so the fillet and root below the contact region stay
@@ -91,7 +91,7 @@ def _global_shape(su: np.ndarray, sv: np.ndarray) -> np.ndarray:
 
 def active_region(case_name: str) -> dict[str, float]:
     """Pattern centre and lowest meshing profile fraction of both members of a case."""
-    from contact.easeoff import ease_off
+    from contact.utca.easeoff import ease_off
     from geometry.case import load_case
 
     eo = ease_off(load_case(CASES / f"{case_name}.toml"))

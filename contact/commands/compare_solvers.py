@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from geometry._version import __version__
+from geometry import __version__
 
 #: Place in ``ltca --help``.
 ORDER = 90
@@ -65,8 +65,8 @@ def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.io import write_netcdf
-    from contact.problem_set import standard_problem_set
-    from contact.solver_study import compare_solvers, default_study_solvers, summarize
+    from contact.qp.benchmark_problems import standard_problem_set
+    from contact.qp.solver_study import compare_solvers, default_study_solvers, summarize
 
     if args.case is not None:
         from contact.commands.run import misalignment_from_args

@@ -68,7 +68,7 @@ def register(sub) -> None:
         metavar=("PINION", "GEAR"),
         default=None,
         help="measured/wear normal deviations of the pinion and gear flanks in "
-        "contact (CSV or netCDF, see contact.deviations; '-' for none); overrides the "
+        "contact (CSV or netCDF, see contact.utca.deviations; '-' for none); overrides the "
         "case's [deviations] table; the theoretical results are kept under /theoretical",
     )
     dev.add_argument(
@@ -177,7 +177,7 @@ def run(args: argparse.Namespace) -> int:
     if args.no_deviations:
         devs = False
     elif args.deviations:
-        # file paths: run_analysis reads them (contact.deviations.read_deviations)
+        # file paths: run_analysis reads them (contact.utca.deviations.read_deviations)
         devs = tuple(None if f == "-" else f for f in args.deviations)
     tree = run_analysis(
         case,

@@ -4,9 +4,9 @@ Three parts add up to a tooth pair's compliance along the contact normal:
 
 * :mod:`contact.compliance.shell` — bending and shear of each tooth, a Rayleigh–Ritz
   model of a tapered cylindrical shell (seed Eq. 3.1–3.11), N×N per tooth;
-* :mod:`contact.compliance.hertz` — contact deformation by Weber (1949), diagonal,
+* :mod:`contact.compliance.weber` — contact deformation by Weber (1949), diagonal,
   load-dependent;
-* :mod:`contact.compliance.base` — fillet-foundation deflection by Sainsot, Velex &
+* :mod:`contact.compliance.foundation` — fillet-foundation deflection by Sainsot, Velex &
   Duverger (2004), rank ≤ 3 per tooth;
 * :mod:`contact.compliance.tooth` — the shell idealisation fitted to a generated tooth
   and the mapping of flank points to shell coordinates;
@@ -14,7 +14,7 @@ Three parts add up to a tooth pair's compliance along the contact normal:
   roll position (both members, contact, foundation; block-diagonal by tooth pair).
 """
 
-from contact.compliance.base import (
+from contact.compliance.foundation import (
     SAINSOT_COEFFICIENTS,
     ToothFoundation,
     foundation_compliance,
@@ -22,14 +22,6 @@ from contact.compliance.base import (
     load_angle_from_normals,
     load_line_height,
     sainsot_coefficients,
-)
-from contact.compliance.hertz import (
-    WEBER_COMPLIANCE_KINDS,
-    contact_modulus,
-    hertz_half_width,
-    weber_compliance,
-    weber_deformation,
-    weber_pair_deformation,
 )
 from contact.compliance.mesh import (
     ContactSegments,
@@ -52,6 +44,14 @@ from contact.compliance.tooth import (
     member_compliance,
     shell_coordinates,
     shell_tooth_from_case,
+)
+from contact.compliance.weber import (
+    WEBER_COMPLIANCE_KINDS,
+    contact_modulus,
+    hertz_half_width,
+    weber_compliance,
+    weber_deformation,
+    weber_pair_deformation,
 )
 
 __all__ = [

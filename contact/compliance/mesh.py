@@ -36,19 +36,19 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from contact.compliance.hertz import weber_compliance
 from contact.compliance.tooth import (
     END_TOLERANCE,
     N_FACE,
     N_HEIGHT,
     ShellPoints,
     ToothModelData,
-    _shell_matrices,
-    _shell_points_many,
     member_foundation,
+    shell_matrices,
+    shell_points_many,
     shell_tooth_from_case,
     weber_depth,
 )
+from contact.compliance.weber import weber_compliance
 from geometry.assembly import case_transforms
 from geometry.case import case_from_dict
 from geometry.errors import InputError
@@ -322,7 +322,7 @@ def mesh_compliance(
         :func:`pair_compliance_model` of the case (memoised: built on the first call,
         reused afterwards) with ``model_options``
     weber_kind : {"secant", "tangent"} — Weber linearisation
-        (:data:`contact.compliance.hertz.WEBER_COMPLIANCE_KINDS`)
+        (:data:`contact.compliance.weber.WEBER_COMPLIANCE_KINDS`)
     load_floor : float — [N/mm] w′ below this is evaluated at this value
     **model_options — ``theory``, ``n_height``, ``n_face``, ``pinion_material``,
         ``gear_material``, ``pinion_bore``, ``gear_bore`` of :func:`pair_compliance_model`
@@ -416,7 +416,7 @@ def mesh_compliance_many(
     # midpoints may overhang slightly too: the LTCA takes them on the gear side, and the
     # pinion mate differs by the ease-off (≤ tens of µm) along the normal; they are
     # clipped onto the tooth like segment ends. Midpoints and ends of both members and of
-    # every roll position in one batch (_shell_points_many); an end shared by consecutive
+    # every roll position in one batch (shell_points_many); an end shared by consecutive
     # segments is mapped once.
     if not segments:
         return []
@@ -429,7 +429,7 @@ def mesh_compliance_many(
         jobs += [(model.member(name), seg.midpoints, sign * seg.normals, transform, ends_flat)
                  for name, transform, sign in zip(names, (t_p, t_g), (1.0, -1.0),
                                                   strict=True)]
-    mapped = _shell_points_many(jobs, END_TOLERANCE)
+    mapped = shell_points_many(jobs, END_TOLERANCE)
     points = [{name: mapped[2 * r + i][0] for i, name in enumerate(names)}
               for r in range(len(segments))]
     # the shell matrices of every tooth pair of every roll position: one set of load
@@ -442,7 +442,7 @@ def mesh_compliance_many(
     shell = {}
     for i, name in enumerate(names):
         mids = _concat([pt[name] for pt in points])
-        # the first ends of all rolls, then their second ends (_shell_matrices' order);
+        # the first ends of all rolls, then their second ends (shell_matrices' order);
         # end_index lists each roll's first N then second N ends among its distinct ends
         distinct = [mapped[2 * r + i][1] for r in range(len(segments))]
         both = _concat(
@@ -450,7 +450,7 @@ def mesh_compliance_many(
                                                           strict=True)]
             + [_take(d, idx[sg.size:]) for d, idx, sg in zip(distinct, end_indices, segments,
                                                             strict=True)])
-        shell[name] = iter(_shell_matrices(model.member(name), mids, both, model.theory,
+        shell[name] = iter(shell_matrices(model.member(name), mids, both, model.theory,
                                            model.n_height, model.n_face, flat_blocks))
     out = []
     for r, seg in enumerate(segments):

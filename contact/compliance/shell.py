@@ -794,7 +794,9 @@ def _check_inside(tooth: ShellTooth, x: np.ndarray, theta: np.ndarray, name: str
         )
 
 
-def _as_points(tooth: ShellTooth, points: np.ndarray, coords: str, name: str) -> np.ndarray:
+def as_points(tooth: ShellTooth, points: np.ndarray, coords: str, name: str) -> np.ndarray:
+    """Points (N, 2) or segment ends (N, 2, 2) in ``coords`` ("shell" (x, θ) or "flank") as
+    shell coordinates, checked to be finite and on the shell; InputError names ``name``."""
     pts = np.asarray(points, dtype=float)
     if pts.ndim == 1 and pts.shape[0] == 2:
         pts = pts[None, :]
@@ -837,7 +839,7 @@ def flank_normals(
     Geometry of seed Eq. 3.1 (as reconstructed in :class:`ShellTooth`); for the
     LTCA the real flank normals from the tooth geometry may be used instead.
     """
-    pts = _as_points(tooth, points, coords, "points").reshape(-1, 2)
+    pts = as_points(tooth, points, coords, "points").reshape(-1, 2)
     sd = np.broadcast_to(np.asarray(side, dtype=float), (pts.shape[0],))
     if not np.all(np.abs(np.abs(sd) - 1.0) == 0.0):
         raise InputError("side must be +1 (convex flank) or -1 (concave flank)")
@@ -911,8 +913,8 @@ def shell_deflection(
     Source: seed Eq. 3.10–3.11 (the Ritz solution evaluated at other points).
     """
     tooth = model.tooth
-    lp = _as_points(tooth, load_points, coords, "load_points").reshape(-1, 2)
-    ep = _as_points(tooth, eval_points, coords, "eval_points").reshape(-1, 2)
+    lp = as_points(tooth, load_points, coords, "load_points").reshape(-1, 2)
+    ep = as_points(tooth, eval_points, coords, "eval_points").reshape(-1, 2)
     d, zs = _flank_loads(tooth, lp[:, 0], lp[:, 1], load_normals)
     loads = model.load_vectors(lp[:, 0], lp[:, 1], d, zs)
     return model.w_functions(ep[:, 0], ep[:, 1]).T @ model.solve(loads)
@@ -1004,9 +1006,9 @@ def compliance_matrix(
     tooth = model.tooth
     pts = np.asarray(points, dtype=float)
     if pts.ndim == 3 and pts.shape[1:] == (2, 2):
-        ends = _as_points(tooth, pts, coords, "points")
+        ends = as_points(tooth, pts, coords, "points")
     elif pts.ndim == 2 and pts.shape[1] == 2:
-        centres = _as_points(tooth, pts, coords, "points")
+        centres = as_points(tooth, pts, coords, "points")
         if segment_length is None:
             ends = np.stack([centres, centres], axis=1)
         else:
@@ -1024,10 +1026,10 @@ def compliance_matrix(
             _check_inside(tooth, ends[..., 0], ends[..., 1], "points ± segment_length/2")
     else:
         raise InputError(f"points must have shape (N, 2) or (N, 2, 2) [got {pts.shape}]")
-    return _compliance_blocks(model, ends, normals, None, n_segment_gauss)[0]
+    return compliance_blocks(model, ends, normals, None, n_segment_gauss)[0]
 
 
-def _compliance_blocks(
+def compliance_blocks(
     model: ShellModel,
     ends: np.ndarray,
     normals: np.ndarray | None,

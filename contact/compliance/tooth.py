@@ -13,7 +13,7 @@ segments. Per member it measures, on the generated flanks of one tooth,
   mid-surface normal towards the convex flank) in which the real flank normals
   are expressed for :func:`~contact.compliance.shell.compliance_matrix`;
 * the mid-face virtual spur gear of the Sainsot foundation term
-  (:class:`~contact.compliance.base.ToothFoundation`) and the Weber depth.
+  (:class:`~contact.compliance.foundation.ToothFoundation`) and the Weber depth.
 
 One tooth
 ---------
@@ -68,7 +68,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 from numpy.polynomial import legendre as leg
 
-from contact.compliance.base import (
+from contact.compliance.foundation import (
     ToothFoundation,
     foundation_matrix,
     load_angle_from_normals,
@@ -78,10 +78,10 @@ from contact.compliance.shell import (
     ComplianceMatrix,
     ShellModel,
     ShellTooth,
-    _compliance_blocks,
     build_shell_model,
+    compliance_blocks,
 )
-from contact.compliance.shell import _as_points as _as_shell_points
+from contact.compliance.shell import as_points as as_shell_points
 from geometry.cutter import profile_sections
 from geometry.errors import InputError, LTCAError
 from geometry.flank import blank_outline, flank_surface, projection_fractions
@@ -760,7 +760,7 @@ def shell_tooth_from_case(
     curved profile nor a topland that narrows toe → heel; the least-squares misfit
     is kept in ``thickness_fit_error`` (0.05–0.95 mm for the example cases).
 
-    Sainsot foundation (:class:`~contact.compliance.base.ToothFoundation`), our
+    Sainsot foundation (:class:`~contact.compliance.foundation.ToothFoundation`), our
     reading of "base rotation … by an interpolation method" (seed p. 78, whose
     Stegemiller tables are not published): the mid-face normal-section virtual
     spur gear, r_vn = r_m / (cos δ cos² β_m) (Tredgold's approximation and the
@@ -983,10 +983,10 @@ def _shell_points(data: ToothModelData, pts: np.ndarray, nrm: np.ndarray | None,
     per call); each point's result is its own (to round-off: a batch iterates until
     its slowest point has converged).
     """
-    return _shell_points_many([(data, pts, nrm, transform, extra)], tol)[0]
+    return shell_points_many([(data, pts, nrm, transform, extra)], tol)[0]
 
 
-def _shell_points_many(jobs, tol: float) -> list[list[ShellPoints]]:
+def shell_points_many(jobs, tol: float) -> list[list[ShellPoints]]:
     """:func:`_shell_points` of several teeth in ONE batch of points.
 
     ``jobs``: sequence of (data, pts, nrm, transform, extra) as the arguments of
@@ -1000,7 +1000,7 @@ def _shell_points_many(jobs, tol: float) -> list[list[ShellPoints]]:
     different fit degrees are mapped one job at a time.
     """
     if len(jobs) > 1 and len({job[0].surface.degree for job in jobs}) != 1:
-        return [_shell_points_many([job], tol)[0] for job in jobs]
+        return [shell_points_many([job], tol)[0] for job in jobs]
     pm_l, nm_l, sizes, ns = [], [], [], []
     for _data, pts, nrm, transform, extra in jobs:
         every = pts if extra is None else np.concatenate([pts, extra])
@@ -1181,7 +1181,7 @@ def weber_depth(data: ToothModelData, shell_points: ShellPoints) -> np.ndarray:
     Returns
     -------
     ndarray (N,) — [mm] h = (t(x, θ)/2) / cos α_m, the depth h of Weber's formula
-        (:func:`contact.compliance.hertz.weber_compliance`)
+        (:func:`contact.compliance.weber.weber_compliance`)
 
     Raises
     ------
@@ -1192,7 +1192,7 @@ def weber_depth(data: ToothModelData, shell_points: ShellPoints) -> np.ndarray:
     -----
     Weber (1949) measures h from the contact point to the tooth centreline along
     the line of action; with the fitted thickness t of seed Eq. 3.1 and the load
-    angle α_m of :func:`contact.compliance.base.load_angle_from_normals`.
+    angle α_m of :func:`contact.compliance.foundation.load_angle_from_normals`.
     """
     if shell_points.normal is None:
         raise InputError("shell_points must carry the flank normals (give normals)")
@@ -1211,7 +1211,7 @@ def member_foundation(data: ToothModelData, shell_points: ShellPoints) -> np.nda
 
     Returns
     -------
-    ndarray (N, N) — [mm/N] :func:`contact.compliance.base.foundation_matrix` of
+    ndarray (N, N) — [mm/N] :func:`contact.compliance.foundation.foundation_matrix` of
         the mid-face virtual spur gear, load heights u_f from the contact heights x,
         the fitted thickness and the load angles of the real flank normals
 
@@ -1222,7 +1222,7 @@ def member_foundation(data: ToothModelData, shell_points: ShellPoints) -> np.nda
 
     Notes
     -----
-    Sainsot, Velex & Duverger (2004) (see :mod:`contact.compliance.base`); the
+    Sainsot, Velex & Duverger (2004) (see :mod:`contact.compliance.foundation`); the
     virtual gear is described in :func:`shell_tooth_from_case`.
     """
     if shell_points.normal is None:
@@ -1233,7 +1233,7 @@ def member_foundation(data: ToothModelData, shell_points: ShellPoints) -> np.nda
     return foundation_matrix(data.foundation, u_f, alpha)
 
 
-def _shell_matrices(
+def shell_matrices(
     data: ToothModelData,
     sp: ShellPoints,
     ends_sp: ShellPoints | None,
@@ -1252,8 +1252,8 @@ def _shell_matrices(
     else:
         pts = np.stack([np.column_stack([ends_sp.x[:n], ends_sp.theta[:n]]),
                         np.column_stack([ends_sp.x[n:], ends_sp.theta[n:]])], axis=1)
-    pts = _as_shell_points(model.tooth, pts, "shell", "points")
-    return _compliance_blocks(model, pts, sp.normal, blocks)
+    pts = as_shell_points(model.tooth, pts, "shell", "points")
+    return compliance_blocks(model, pts, sp.normal, blocks)
 
 
 def _shell_matrix(
@@ -1264,7 +1264,7 @@ def _shell_matrix(
     n_height: int,
     n_face: int,
 ) -> ComplianceMatrix:
-    return _shell_matrices(data, sp, ends_sp, theory, n_height, n_face)[0]
+    return shell_matrices(data, sp, ends_sp, theory, n_height, n_face)[0]
 
 
 def member_compliance(

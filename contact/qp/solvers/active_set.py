@@ -10,7 +10,7 @@ the equilibrium equation carried by the scalar Schur complement):
 
 1. start from a contact set A (warm start: the previous roll position's; cold:
    the exact solution of a lumped-compliance approximation, :func:`initial_contact_set`);
-2. solve the KKT system on A exactly (:func:`contact.problem.solve_on_contact_set`);
+2. solve the KKT system on A exactly (:func:`contact.qp.problem.solve_on_contact_set`);
 3. drop the segments of A whose force is negative, add those outside A that
    penetrate (Y < 0), and repeat until neither exists.
 
@@ -26,7 +26,7 @@ import time
 
 import numpy as np
 
-from contact.problem import ContactProblem, solve_on_contact_set
+from contact.qp.problem import ContactProblem, solve_on_contact_set
 
 __all__ = ["block_pivoting", "initial_contact_set", "primal_active_set"]
 

@@ -2,7 +2,7 @@
 
 qpbenchmark (Caron et al., https://github.com/qpsolvers/qpbenchmark) runs every
 qpsolvers backend on a ``TestSet`` and writes its own reports. This module
-exposes :func:`contact.problem_set.standard_problem_set` in that form, scaled as
+exposes :func:`contact.qp.benchmark_problems.standard_problem_set` in that form, scaled as
 the toolkit scales problems for its backends (:meth:`ContactProblem.scaled`), so
 that absolute tolerances mean the same for every problem. Requires the optional
 dependency ``qpbenchmark`` (``pip install 'hypoid-ltca[bench]'``); use it through
@@ -18,13 +18,14 @@ from collections.abc import Iterator
 import numpy as np
 from qpbenchmark import Problem, TestSet
 
-from contact.problem_set import standard_problem_set
+from contact.qp.benchmark_problems import standard_problem_set
 
 __all__ = ["LtcaContact", "to_qpbenchmark"]
 
 
 def to_qpbenchmark(test_problem) -> Problem:
-    """A :class:`contact.problem_set.TestProblem` as a dense, scaled qpbenchmark ``Problem``.
+    """A :class:`~contact.qp.benchmark_problems.TestProblem` as a dense, scaled qpbenchmark
+    ``Problem``.
 
     minimise ½ F̃ᵀ C̃ F̃ + s̃ᵀ F̃ subject to R̃ᵀ F̃ = T̃, F̃ ≥ 0 (see ``ContactProblem.scaled``).
     """

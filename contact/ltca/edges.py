@@ -30,6 +30,8 @@ Public functions
 EDGE_KINDS      names of the boundary pieces
 FlankBoundary   the boundary, split into segments of three samples each
 flank_boundary  build it from the ease-off splines
+edge_segments   the edge segments of every (roll, pair) where a curve passes outside
+edge_r_eq       R_eq across boundary segments: the edge rounding on the mating flank
 """
 
 from __future__ import annotations
@@ -40,9 +42,13 @@ from typing import NamedTuple
 import contourpy
 import numpy as np
 
+from contact.ltca.curvature import gear_curvature, pinion_curvature
+from contact.ltca.discretisation import MIN_CLIP, SegmentQuadratic, blank_measure, gear_to_pair
+from contact.utca import EaseOff
+from geometry.assembly import rotate_about_axis
 from geometry.errors import InputError
 
-__all__ = ["EDGE_KINDS", "FlankBoundary", "flank_boundary"]
+__all__ = ["EDGE_KINDS", "FlankBoundary", "edge_r_eq", "edge_segments", "flank_boundary"]
 
 #: boundary pieces: the gear's tip edge (v = 1), heel and toe ends (u = 1, 0), and the
 #: pinion's edges (tip and ends: where the pinion mate leaves the pinion blank)
@@ -81,7 +87,7 @@ def flank_boundary(fields, step: float) -> FlankBoundary:
 
     Parameters
     ----------
-    fields : contact.utca._Fields
+    fields : contact.utca.EaseOffFields
         Splines of the ease-off fields (Q, ε, K, normal arm, flank point and normal,
         pinion margin) over the gear grid.
     step : float — [mm]
@@ -180,3 +186,136 @@ def _piece(f, kind: int, uu: np.ndarray, vv: np.ndarray, step: float):
     idx = 2 * np.arange(n)[:, None] + np.arange(3)[None, :]  # (n, 3) samples per segment
     return (np.full(n, kind), us[idx], vs[idx], q[idx], f.eps.ev(us, vs)[idx],
             f.gap_at(us, vs)[idx], f.arm.ev(us, vs)[idx], slope[idx], xyz[idx], nrm[idx])
+
+
+def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],
+                   target: np.ndarray, shift: np.ndarray, ute_env: np.ndarray,
+                   limit: float | None = None) -> dict:
+    """Edge segments of every (roll, pair): the boundary where the pair's curve passes
+    outside the contact region (:mod:`contact.ltca.edges`), clipped where it passes inside.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    eo : EaseOff
+    bd : FlankBoundary (E segments)
+    edge_radius : (float, float) — [mm] the pinion's and the gear's edge rounding radius
+        (R_eq: :func:`edge_r_eq`)
+    target, shift : arrays (J, K) — [rad] roll value q of each pair and its curve's shift t
+    ute_env : array (J,) — [rad] each roll's UTE (the least over its pairs)
+    limit : float, optional — [mm] see :func:`segment_geometry`'s ``edge_limit``
+
+    Returns
+    -------
+    dict of arrays (J, K, E[, ...]), the keys of :func:`segment_geometry`'s segment
+    fields; the lag is the mean of Φ_q = ε + ½ K (Q − q)² over the part in edge contact.
+    NaN (length 0) where the pair's curve passes inside the region all along the
+    boundary segment, or its separation is surely above ``limit``.
+
+    Notes
+    -----
+    A gear edge touches the pinion flank at the gear's edge point x itself; it is clipped
+    where the real pinion at the pair's roll has no flank across x (beyond its blank), as
+    the curves are. A pinion edge point P is the mate of the boundary point x at the
+    instant Q(x); at roll q it has turned on by s_p (q − Q(x)) with the pinion, and the
+    contact sits there (P's separation is Φ_q(x) to first order: the gap function on the
+    pinion's surface has the same form).
+    """
+    kin = eo.kinematics
+    quad = SegmentQuadratic(np.array([0.0, 0.5, 1.0]))
+    J, K = target.shape
+    E = bd.kind.size
+    # ≥ 0 where the curve Q = q + t passes outside the region beyond the boundary point;
+    # only the (roll, pair, boundary segment) where it does somewhere are worked out
+    # (flattened to n candidates), the rest stay NaN (no edge contact)
+    outside = ((bd.roll_angle[None, None] - (target + shift)[..., None, None])
+               * bd.inward_slope)  # (J, K, E, 3)
+    cand = np.any(outside >= 0, axis=-1)
+    # Φ_q = ε + ½ K (Q − q)² at the samples of every boundary segment [rad]
+    phi_s = (bd.ease_off_angle + 0.5 * bd.gap_curvature
+             * (bd.roll_angle - target[..., None, None]) ** 2)  # (J, K, E, 3)
+    if limit is not None:
+        # the separation's lower bound: Φ_q at the samples, less the quadratic's second
+        # difference (its dip below the samples is at most a quarter of that), times
+        # the least normal arm
+        dip = np.abs(phi_s[..., 0] - 2.0 * phi_s[..., 1] + phi_s[..., 2])
+        low = np.min(phi_s, axis=-1) - dip - ute_env[:, None, None]
+        cand &= ~(np.min(bd.normal_arm, axis=-1) * low > limit)
+    jj, kk, ee = np.nonzero(cand)
+    outside = outside[jj, kk, ee]  # (n, 3)
+    q = target[jj, kk][:, None]  # (n, 1) roll value of the candidate's pair
+    phi = eo.roll_zero + eo.drive_sense * target[jj, kk]  # (n,) pinion rotation
+    psi = eo.gear_phase - phi / eo.ratio
+    # the contact points in the pair frame: a gear edge's own points; a pinion edge's
+    # points turned on with the pinion from their mate instant
+    pts = gear_to_pair(kin, psi[:, None], bd.position[ee])  # (n, 3, 3)
+    g = bd.gear_edge[ee]
+    if np.any(~g):
+        q_m = bd.roll_angle[ee[~g]]  # (np, 3) mate instants
+        phi_m = eo.roll_zero + eo.drive_sense * q_m
+        mate = gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[ee[~g]])
+        turn = eo.drive_sense * (q[~g] - q_m)
+        pts[~g] = rotate_about_axis(kin.pinion_axis, turn, mate - kin.pinion_origin) + \
+            kin.pinion_origin
+    # each part in contact lies on the mating member's flank: within its blank
+    for sel, member, turn in ((g, "pinion", phi), (~g, "gear", psi)):
+        if np.any(sel):
+            m = blank_measure(case, kin, member, pts[sel], turn[sel])
+            outside[sel] = np.minimum(outside[sel], m)
+    a, b = (x[..., 0] for x in quad.clip(outside))  # (n,)
+    a1, b1, c1 = a[:, None], b[:, None], 0.5 * (a + b)[:, None]
+    sep = phi_s[jj, kk, ee]  # (n, 3)
+    inside = b - a > MIN_CLIP
+    # R_eq of the boundary segments in edge contact somewhere
+    used = np.unique(ee[inside])
+    r_eq = np.full(E, np.nan)
+    r_eq[used] = edge_r_eq(case, eo, bd, edge_radius, used)
+    nrm = quad.at(bd.normal[ee], c1, vector=True)[:, 0]
+    nrm = nrm / np.linalg.norm(nrm, axis=-1, keepdims=True)
+    end_a = quad.at(pts, a1, vector=True)[:, 0]
+    end_b = quad.at(pts, b1, vector=True)[:, 0]
+    chord = end_b - end_a
+    length = np.where(inside, np.linalg.norm(chord, axis=-1), 0.0)
+    chord = np.where(inside[:, None], chord, pts[:, 2] - pts[:, 0])
+    fields = {
+        "u": np.where(inside, quad.at(bd.u[ee], c1)[:, 0], np.nan),
+        "v": np.where(inside, quad.at(bd.v[ee], c1)[:, 0], np.nan),
+        "midpoint": quad.at(bd.position[ee], c1, vector=True)[:, 0],
+        "midpoint_pair": quad.at(pts, c1, vector=True)[:, 0],
+        "ends_pair": np.stack([end_a, end_b], axis=-2),
+        "normal_pair": -gear_to_pair(kin, psi, nrm, vec=True),
+        "tangent_pair": chord / np.linalg.norm(chord, axis=-1, keepdims=True),
+        "length": length,
+        "moment_arm": quad.at(bd.normal_arm[ee], c1)[:, 0],
+        "lag": quad.mean(sep, a1, b1)[:, 0],
+        "r_eq": np.where(inside, r_eq[ee], np.nan),
+    }
+    out = {}
+    for key, val in fields.items():
+        full = np.full((J, K, E, *val.shape[1:]), 0.0 if key == "length" else np.nan)
+        full[jj, kk, ee] = val
+        out[key] = full
+    return out
+
+
+def edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],
+               which: np.ndarray) -> np.ndarray:
+    """R_eq [mm] across the boundary segments ``which`` (indices (M,)): the edge's
+    rounding (radius r_e: ``edge_radius`` (pinion, gear) [mm], the edge's own member's)
+    on the other member's flank, 1/(1/r_e + κ_other) at the segment's middle (κ_other
+    along n × t, t the edge tangent; the pinion taken at its mate's instant Q)."""
+    if which.size == 0:
+        return np.zeros(0)
+    u, v = bd.u[which, 1], bd.v[which, 1]
+    pos, nrm = bd.position[which, 1], bd.normal[which, 1]
+    t = bd.position[which, 2] - bd.position[which, 0]
+    w = np.cross(nrm, t / np.linalg.norm(t, axis=-1, keepdims=True))
+    k_other = np.empty(u.size)
+    g = bd.gear_edge[which]
+    if np.any(g):
+        phi = eo.roll_zero + eo.drive_sense * bd.roll_angle[which[g], 1]
+        k_other[g] = pinion_curvature(case, eo, u[g], v[g], w[g], phi)
+    if np.any(~g):
+        k_other[~g] = gear_curvature(case, eo, pos[~g], w[~g])
+    krel = 1.0 / np.where(g, edge_radius[1], edge_radius[0]) + k_other
+    return np.where(np.isfinite(krel), 1.0 / np.maximum(krel, 1e-4), np.nan)

@@ -20,14 +20,14 @@ from typing import Any
 
 import numpy as np
 
-from contact.halfspace import (
+from contact.qp.halfspace import (
     contact_modulus,
     hertz_line,
     hertz_point,
     rectangle_influence,
     strip_influence,
 )
-from contact.problem import ContactProblem
+from contact.qp.problem import ContactProblem
 from geometry.errors import InputError
 
 __all__ = [

@@ -6,35 +6,16 @@ radius ρ):
 
 * **Roll angle.** Every point of the real pinion flank, with its unit normal, is turned
   about the pinion axis until it satisfies the conjugacy condition of the two axes
-  (seed Eq. 2.19 / 4.1): there it lies on the *surface of action* and is a contact point
-  of the pinion with its own conjugate gear. The pinion rotation needed is the point's
-  roll angle; plotted on the gear projection plane it is the surface Q, shifted so that
-  its smallest value is zero (Eq. 4.2 text).
+  (seed Eq. 2.19 / 4.1, :mod:`contact.utca.action_surface`): there it lies on the
+  *surface of action* and is a contact point of the pinion with its own conjugate gear.
+  The pinion rotation needed is the point's roll angle; plotted on the gear projection
+  plane it is the surface Q, shifted so that its smallest value is zero (Eq. 4.2 text).
 * **Ease-off.** The action-surface points turned back about the gear axis by the gear's
   kinematic rotation form the conjugate of the pinion in the gear frame (Eq. 2.20, 4.2a).
   The ease-off is the distance from the real gear flank to this conjugate, after the
   conjugate is turned about the gear axis until it touches the real gear at one point
   (seed §4.2): as an angle about the gear axis (directly a transmission error) and as a
   distance along the gear normal.
-
-Conjugacy condition (our reading of Eq. 2.19)
-----------------------------------------------
-In the pair frame of :mod:`geometry.assembly` the members turn with opposite signs,
-φ_g = −φ_p / R with R = z_g / z_p. The relative velocity of the pinion with respect to the
-gear at a point r per unit pinion rotation is
-v₁₂ = a_p × (r − O_p) + (1/R) a_g × (r − O_g), and the equation of meshing n·v₁₂ = 0
-(Litvin & Fuentes 2004, §6.1, crossed axes) reads
-
-    R · a_p·((r − O_p) × n) + a_g·((r − O_g) × n) = 0.
-
-The extracted seed prints R (a_p·r×n) = (a_g·r×n): the same relation with both position
-vectors taken from the respective crossing points and the gear rotation counted in the
-opposite sense. The first term is invariant under rotation about the pinion axis; the
-second is A + B cos φ + C sin φ (Rodrigues' formula), so the roll angle of every point is
-found **in closed form**: φ = α ± arccos(−(R c₁ + A)/√(B² + C²)), α = atan2(C, B). The
-sign of the arccos selects the branch on which ∂(n·v₁₂)/∂φ has one sign; the branch whose
-action points lie nearest to the gear flank is the mesh zone (the other one is half a turn
-away).
 
 Gear projection-plane grid (instead of resampling)
 --------------------------------------------------
@@ -76,22 +57,17 @@ Second-order data
 ``gap_curvature`` K (per node): the pinion turned away from its contact roll by t is
 separated from its conjugate at the node by ½ K t² (angle about the gear axis), from the
 relative velocity and acceleration of the members and the pinion's normal curvature along
-the relative velocity (:func:`_gap_curvature`). :mod:`contact.utca` uses it to correct the
-seed's first-order UTE.
+the relative velocity (:func:`_gap_curvature`). :mod:`contact.utca.contact_curves` uses it
+to correct the seed's first-order UTE.
 
 Public functions
 ----------------
 FLANK_ROLES            flank role name → pinion flank of a case (drive, coast)
 MATING_FLANK           pinion flank → the gear flank it meshes with
-MeshKinematics         axes, crossing points, ratio and placements of the two members
-mesh_kinematics        build them for a case (with misalignments, optional phases)
-action_roll_angle      closed-form roll angle of pinion points (Eq. 2.19)
-action_surface         roll angle, action-surface points and normals in the pair frame
-conjugate_points       conjugate-gear points in the gear frame (Eq. 2.20)
 roll_angle_surface     roll angle of every grid point of the real pinion flank
 EaseOff                ease-off and Q on the gear projection-plane grid
 ease_off               build it for a case (Eq. 2.19–2.20, 4.1–4.2)
-easeoff_dataset        the ``/easeoff`` xarray Dataset
+fill_missing           fill masked grid nodes by linear continuation of the valid ones
 
 References
 ----------
@@ -101,20 +77,24 @@ F. L. Litvin, A. Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §6
 
 from __future__ import annotations
 
-import json
 import logging
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
-import xarray as xr
 from scipy.interpolate import RectBivariateSpline
 
-from contact.io import data_var as _var
-from geometry._version import __version__
-from geometry.assembly import Misalignment, case_transforms
+from contact.utca.action_surface import (
+    MeshKinematics,
+    action_roll_angle,
+    action_surface,
+    conjugate_points,
+    mesh_kinematics,
+    meshing_coefficients,
+    to_pair_frame,
+)
+from geometry.assembly import Misalignment, rotate_about_axis
 from geometry.curvature import normal_curvature, surface_curvatures
 from geometry.cutter import profile_sections
 from geometry.errors import InputError
@@ -129,13 +109,8 @@ __all__ = [
     "FLANK_ROLES",
     "MATING_FLANK",
     "EaseOff",
-    "MeshKinematics",
-    "action_roll_angle",
-    "action_surface",
-    "conjugate_points",
     "ease_off",
-    "easeoff_dataset",
-    "mesh_kinematics",
+    "fill_missing",
     "roll_angle_surface",
 ]
 
@@ -166,237 +141,6 @@ _PINION_U = (-0.15, 1.15)  # extended pinion grid (fractions of face width / dep
 _PINION_V = (-0.05, 1.2)
 _FORWARD_GRID = (41, 21)  # pinion grid of the forward-map spline (start values only)
 _MIRROR = np.array([1.0, -1.0, 1.0])
-
-
-# --------------------------------------------------------------------------- kinematics
-@dataclass(frozen=True)
-class MeshKinematics:
-    """Axes of the two members in the pair frame (see :mod:`geometry.assembly`).
-
-    Parameters
-    ----------
-    pinion_place, gear_place : ndarray (4, 4)
-        Member → pair transforms at zero rotation (misalignments and phases included).
-    ratio : float — [1]
-        R = z_g / z_p.
-    """
-
-    pinion_place: np.ndarray
-    gear_place: np.ndarray
-    ratio: float
-
-    @property
-    def pinion_axis(self) -> np.ndarray:
-        """Unit pinion axis a_p in the pair frame [1]."""
-        return self.pinion_place[:3, 2]
-
-    @property
-    def pinion_origin(self) -> np.ndarray:
-        """Pinion crossing point O_p in the pair frame [mm]."""
-        return self.pinion_place[:3, 3]
-
-    @property
-    def gear_axis(self) -> np.ndarray:
-        """Unit gear axis a_g in the pair frame [1]."""
-        return self.gear_place[:3, 2]
-
-    @property
-    def gear_origin(self) -> np.ndarray:
-        """Gear crossing point O_g in the pair frame [mm]."""
-        return self.gear_place[:3, 3]
-
-
-def mesh_kinematics(case: Case, misalignment: Misalignment | None = None, *,
-                    pinion_phase: float = 0.0, gear_phase: float = 0.0) -> MeshKinematics:
-    """Axes, crossing points and ratio of a case in the pair frame.
-
-    Parameters
-    ----------
-    case : geometry.case.Case
-    misalignment : geometry.assembly.Misalignment, optional
-        ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own.
-    pinion_phase, gear_phase : float — [rad]
-        Rigid rotation of each member's teeth about its own axis before assembly (tooth
-        indexing); the ease-off and the shape of Q do not depend on them.
-
-    Returns
-    -------
-    MeshKinematics
-
-    Raises
-    ------
-    InputError
-        For non-finite phases (and as :func:`geometry.assembly.case_transforms`).
-
-    Notes
-    -----
-    Seed Eq. 2.14 (placement with the offset vector OE); frames of
-    :mod:`geometry.assembly`.
-    """
-    for name, val in (("pinion_phase", pinion_phase), ("gear_phase", gear_phase)):
-        if not math.isfinite(val):
-            raise InputError(f"{name}: must be a finite angle [rad], got {val!r}")
-    tp, tg = case_transforms(case, pinion_phase, gear_phase, misalignment)
-    return MeshKinematics(np.array(tp), np.array(tg),
-                          case.gear.blank.teeth / case.pinion.blank.teeth)
-
-
-def _rotate(axis: np.ndarray, angle, v: np.ndarray) -> np.ndarray:
-    """Rodrigues rotation of vectors v (..., 3) about a unit axis by angle (...)."""
-    c = np.cos(angle)[..., None]
-    s = np.sin(angle)[..., None]
-    return v * c + np.cross(axis, v) * s + axis * (v @ axis)[..., None] * (1.0 - c)
-
-
-def _to_pair(kin: MeshKinematics, position, normal):
-    p = np.asarray(position, dtype=float)
-    n = np.asarray(normal, dtype=float)
-    if p.shape != n.shape or p.shape[-1:] != (3,):
-        raise InputError(f"position, normal: must have equal shapes (..., 3), got {p.shape} "
-                         f"and {n.shape}")
-    rot = kin.pinion_place[:3, :3]
-    return p @ rot.T + kin.pinion_origin, n @ rot.T
-
-
-def _meshing_coefficients(kin: MeshKinematics, r0: np.ndarray, n0: np.ndarray):
-    """c₁, A, B, C of R c₁ + A + B cos φ + C sin φ = 0 (module docstring)."""
-    a = kin.pinion_axis
-    ag = kin.gear_axis
-    w0 = r0 - kin.pinion_origin
-    m0 = np.cross(w0, n0)
-    c1 = m0 @ a
-    k = np.cross(ag, kin.pinion_origin - kin.gear_origin)
-    ka, aga = float(k @ a), float(ag @ a)
-    na, ma = n0 @ a, m0 @ a
-    b = (n0 @ k - ka * na) + (m0 @ ag - aga * ma)
-    c = np.cross(a, n0) @ k + np.cross(a, m0) @ ag
-    a0 = ka * na + aga * ma
-    return c1, a0, b, c
-
-
-def action_roll_angle(kin: MeshKinematics, position, normal, *, branch: int | None = None,
-                      reference=None):
-    """Pinion rotation that brings each pinion point onto the surface of action (Eq. 2.19).
-
-    Parameters
-    ----------
-    kin : MeshKinematics
-    position : array_like (..., 3) — [mm]
-        Pinion surface points in the pinion frame (NaN allowed).
-    normal : array_like (..., 3) — [1]
-        Their unit normals (out of the pinion material).
-    branch : {+1, −1}, optional
-        Sign of the arccos root; by default the branch whose action points lie nearest
-        (median distance) to ``reference``.
-    reference : array_like (3,), optional — [mm]
-        A point of the gear flank in the pair frame that marks the mesh zone; required
-        when ``branch`` is not given.
-
-    Returns
-    -------
-    roll : ndarray (...) — [rad]
-        Pinion rotation φ_p about +a_p in (−π, π]; NaN where the point never meets the
-        surface of action.
-    branch : int
-        The branch used.
-
-    Raises
-    ------
-    InputError
-        For mismatched shapes, or neither ``branch`` nor ``reference``.
-
-    Notes
-    -----
-    Seed Eq. 2.19 / 4.1 in the form R a_p·((r − O_p) × n) + a_g·((r − O_g) × n) = 0
-    (module docstring: the opposite rotation senses of the pair frame give the plus sign;
-    Litvin & Fuentes 2004, §6.1), solved in closed form.
-    """
-    r0, n0 = _to_pair(kin, position, normal)
-    c1, a0, b, c = _meshing_coefficients(kin, r0, n0)
-    amp = np.hypot(b, c)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        arg = -(kin.ratio * c1 + a0) / amp
-    ok = np.isfinite(arg) & (np.abs(arg) <= 1.0)
-    beta = np.arccos(np.clip(np.where(ok, arg, 0.0), -1.0, 1.0))
-    alpha = np.arctan2(c, b)
-
-    def roots(sign):
-        phi = np.remainder(alpha + sign * beta + np.pi, 2.0 * np.pi) - np.pi
-        return np.where(ok, phi, np.nan)
-
-    if branch is None:
-        if reference is None:
-            raise InputError("reference: a gear-flank point is needed to pick the mesh zone "
-                             "when branch is not given")
-        ref = np.asarray(reference, dtype=float)
-        dist = {}
-        for sign in (1, -1):
-            phi = roots(sign)
-            ra = kin.pinion_origin + _rotate(kin.pinion_axis, phi, r0 - kin.pinion_origin)
-            d = np.linalg.norm(ra - ref, axis=-1)
-            dist[sign] = np.nanmedian(d) if np.isfinite(d).any() else np.inf
-        branch = 1 if dist[1] <= dist[-1] else -1
-    elif branch not in (1, -1):
-        raise InputError(f"branch: must be +1 or -1, got {branch!r}")
-    return roots(branch), int(branch)
-
-
-def action_surface(kin: MeshKinematics, position, normal, roll):
-    """Action-surface points and normals: pinion points turned by their roll angle.
-
-    Parameters
-    ----------
-    kin : MeshKinematics
-    position, normal : array_like (..., 3) — [mm], [1]
-        Pinion points and unit normals in the pinion frame.
-    roll : array_like (...) — [rad]
-        Pinion rotation of each point (e.g. from :func:`action_roll_angle`).
-
-    Returns
-    -------
-    points, normals : ndarray (..., 3) — [mm], [1]
-        In the pair frame.
-
-    Raises
-    ------
-    InputError
-        For mismatched shapes.
-
-    Notes
-    -----
-    Seed Eq. 2.19: the action surface r_a is the locus of the turned points.
-    """
-    r0, n0 = _to_pair(kin, position, normal)
-    phi = np.asarray(roll, dtype=float)
-    ra = kin.pinion_origin + _rotate(kin.pinion_axis, phi, r0 - kin.pinion_origin)
-    return ra, _rotate(kin.pinion_axis, phi, n0)
-
-
-def conjugate_points(kin: MeshKinematics, position, normal, roll, gear_phase: float = 0.0):
-    """Conjugate-gear points: action points turned back with the gear (Eq. 2.20, 4.2a).
-
-    Parameters
-    ----------
-    kin : MeshKinematics
-    position, normal : array_like (..., 3) — [mm], [1]
-        Pinion points and normals in the pinion frame.
-    roll : array_like (...) — [rad]
-        Their roll angles φ_p.
-    gear_phase : float — [rad]
-        Gear rotation ψ₀ at φ_p = 0; the kinematic gear rotation is ψ = ψ₀ − φ_p / R.
-
-    Returns
-    -------
-    points, normals : ndarray (..., 3) — [mm], [1]
-        In the gear frame (gear at zero rotation).
-    """
-    ra, na = action_surface(kin, position, normal, roll)
-    psi = gear_phase - np.asarray(roll, dtype=float) / kin.ratio
-    ag, og = kin.gear_axis, kin.gear_origin
-    back = _rotate(ag, -psi, ra - og)
-    nb = _rotate(ag, -psi, na)
-    rot = kin.gear_place[:3, :3]
-    return back @ rot, nb @ rot
 
 
 # --------------------------------------------------------------------------- helpers
@@ -443,48 +187,6 @@ def _mask_folds(reason: np.ndarray, roll: np.ndarray) -> None:
             reason[i, j + 1:][reason[i, j + 1:] == 0] = 4
         else:  # near the root end: mask from the root up to j
             reason[i, : j + 1][reason[i, : j + 1] == 0] = 4
-
-
-def _fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
-    """Fill invalid nodes of a 2-D field by linear extrapolation from valid neighbours.
-
-    Used only to give the interpolating splines a smooth field: filled nodes stay masked.
-    ``values`` may carry trailing axes (several fields on the same mask, filled at once;
-    each element's arithmetic is that of a single field).
-    """
-    out = np.array(values, dtype=float)
-    have = np.array(valid, dtype=bool)
-    if not have.any():
-        raise InputError("no valid node to fill a field from")
-    trail = (1,) * (out.ndim - have.ndim)
-    while not have.all():
-        acc = np.zeros(out.shape)
-        cnt = np.zeros(have.shape)
-        for axis in (0, 1):
-            for step in (1, -1):
-                a1 = np.roll(out, step, axis)
-                a2 = np.roll(out, 2 * step, axis)
-                h1 = np.roll(have, step, axis)
-                h2 = np.roll(have, 2 * step, axis)
-                # forbid wrap-around
-                edge = [slice(None)] * 2
-                edge[axis] = slice(0, 2) if step == 1 else slice(-2, None)
-                h1 = h1.copy()
-                h2 = h2.copy()
-                h1[tuple(edge)] = False
-                h2[tuple(edge)] = False
-                two = ~have & h1 & h2
-                one = ~have & h1 & ~h2
-                acc[two] += 2 * a1[two] - a2[two]
-                cnt[two] += 1
-                acc[one] += a1[one]
-                cnt[one] += 1
-        new = ~have & (cnt > 0)
-        if not new.any():
-            break
-        out[new] = acc[new] / cnt[new].reshape(-1, *trail)
-        have = have | new
-    return out
 
 
 class _Mates(NamedTuple):
@@ -594,7 +296,7 @@ def _gap_curvature(kin: MeshKinematics, position, normal, roll, kappa1, kappa2, 
     """
     ra, na = action_surface(kin, position, normal, roll)
     r0 = kin.pinion_place[:3, :3]
-    e1 = _rotate(kin.pinion_axis, roll, np.asarray(dir1) @ r0.T)
+    e1 = rotate_about_axis(kin.pinion_axis, roll, np.asarray(dir1) @ r0.T)
     wp = kin.pinion_axis
     wg = -kin.gear_axis / kin.ratio
     xd = np.cross(wg, ra - kin.gear_origin)
@@ -697,7 +399,7 @@ def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
     smooth = ok & (fwd.section == main)
     if smooth.sum() < 16:
         smooth = ok
-    image = _fill_missing(fwd.image, smooth)
+    image = fill_missing(fwd.image, smooth)
     sz = RectBivariateSpline(up, vp, image[..., 0])
     sr = RectBivariateSpline(up, vp, image[..., 1])
     target = np.stack([zt, rt], -1)
@@ -876,8 +578,8 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
              ", ".join(f"{k}: {v}" for k, v in n_bad.items() if v))
 
     # senses
-    r0, n0 = _to_pair(kin, ppos[mate], pnrm[mate])
-    c1, *_ = _meshing_coefficients(kin, r0, n0)
+    r0, n0 = to_pair_frame(kin, ppos[mate], pnrm[mate])
+    c1, *_ = meshing_coefficients(kin, r0, n0)
     drive = 1 if np.median(c1) > 0 else -1
     pg, ng = gs.position, gs.normal
     rho = np.hypot(pg[..., 0], pg[..., 1])
@@ -933,93 +635,45 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
         gear_parameters=np.stack([gs.s, gs.theta, gs.q], -1), gear_section=gs.section)
 
 
-def easeoff_dataset(eo: EaseOff, case: Case, *,
-                    misalignment: Misalignment | None = None) -> xr.Dataset:
-    """The ``/easeoff`` Dataset (dims ``u``, ``v``, ``xyz``) with units and long names.
 
-    Parameters
-    ----------
-    eo : EaseOff
-        From :func:`ease_off`.
-    case : geometry.case.Case
-    misalignment : geometry.assembly.Misalignment, optional
-        The misalignment used (recorded in the attributes); defaults to the case's.
 
-    Returns
-    -------
-    xarray.Dataset
-        ``ease_off`` [um] along the gear normal, ``ease_off_angle`` [urad] (gear lag),
-        ``roll_angle`` [rad] (Q), ``axial_position``/``radial_position`` [mm] (gear
-        projection plane), ``mask`` and ``mask_reason``, the mating pinion point's
-        projection-plane place, the real gear flank (``gear_position``, ``gear_normal``)
-        ``normal_arm`` [mm] and ``gap_curvature`` [1/rad]; attributes with the senses,
-        phases and inputs.
+def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
+    """Fill invalid nodes of a 2-D field by linear extrapolation from valid neighbours.
+
+    Used only to give the interpolating splines a smooth field: filled nodes stay masked.
+    ``values`` may carry trailing axes (several fields on the same mask, filled at once;
+    each element's arithmetic is that of a single field).
     """
-    mis = case.misalignment if misalignment is None else misalignment
-    uv = ("u", "v")
-    codes = np.array(sorted(EASEOFF_REASONS), dtype=np.int8)
-    data = {
-        "ease_off": _var(uv, eo.ease_off * 1e3, "um",
-                         "ease-off: real gear to touching conjugate of the pinion, along the "
-                         "gear normal (>= 0: gap)"),
-        "ease_off_angle": _var(uv, eo.ease_off_angle * 1e6, "urad",
-                               "ease-off as gear lag about the gear axis (transmission error)"),
-        "roll_angle": _var(uv, eo.roll_angle, "rad",
-                           "surface of roll angle Q: pinion roll (driving sense) at which "
-                           "the node is in contact, shifted to touch zero"),
-        "axial_position": _var(uv, eo.axial, "mm", "gear projection-plane axial position"),
-        "radial_position": _var(uv, eo.radius, "mm", "gear projection-plane radius"),
-        "pinion_axial_position": _var(uv, eo.pinion_axial, "mm",
-                                      "pinion projection-plane axial position of the mate"),
-        "pinion_radial_position": _var(uv, eo.pinion_radius, "mm",
-                                       "pinion projection-plane radius of the mate"),
-        "pinion_u": _var(uv, eo.pinion_u, "1", "pinion lengthwise fraction of the mate"),
-        "pinion_v": _var(uv, eo.pinion_v, "1", "pinion profile fraction of the mate"),
-        "normal_arm": _var(uv, eo.normal_arm, "mm",
-                           "rho |n.e_theta|: normal displacement per radian of gear rotation"),
-        "gap_curvature": _var(uv, eo.gap_curvature, "1/rad",
-                              "K: angular gap of the pinion to its conjugate at roll Q + t is "
-                              "K t^2 / 2"),
-        "gear_position": _var(("u", "v", "xyz"), eo.gear_position, "mm",
-                              "real gear flank point in the gear frame"),
-        "gear_normal": _var(("u", "v", "xyz"), eo.gear_normal, "1",
-                            "real gear flank unit normal (out of the material)"),
-        "placement_error": _var(uv, eo.placement_error, "mm",
-                                "distance of the conjugate point from the node in the "
-                                "projection plane"),
-        "mask": _var(uv, eo.valid.astype(np.int8), "1",
-                     "1 where the pinion can touch the real gear"),
-        "mask_reason": _var(uv, eo.reason.astype(np.int8), "1", "why a node is masked",
-                            flag_values=codes,
-                            flag_meanings=" ".join(EASEOFF_REASONS[int(c)] for c in codes)),
-    }
-    coords = {
-        "u": ("u", eo.u, {"units": "1", "long_name": "gear lengthwise fraction, toe 0 to heel 1"}),
-        "v": ("v", eo.v, {"units": "1", "long_name": "gear profile fraction, root 0 to tip 1"}),
-        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
-    }
-    attrs = {
-        "title": f"{case.name}: ease-off and surface of roll angle",
-        "case": case.name,
-        "pinion_flank": eo.pinion_flank,
-        "gear_flank": eo.gear_flank,
-        "drive_sense": eo.drive_sense,
-        "lag_sense": eo.lag_sense,
-        "roll_zero": eo.roll_zero,
-        "roll_zero_units": "rad",
-        "gear_phase": eo.gear_phase,
-        "gear_phase_units": "rad",
-        "ratio": eo.ratio,
-        "mesh_period": eo.pitch,
-        "mesh_period_units": "rad",
-        "kinematics": "pinion rotation = roll_zero + drive_sense * Q; ideal gear rotation = "
-                      "gear_phase - pinion rotation / ratio (geometry.assembly frames)",
-        "misalignment": json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
-                                    "delta_G_mm": mis.delta_G,
-                                    "delta_Sigma_deg": math.degrees(mis.delta_Sigma)}),
-        "max_placement_error_mm": float(np.nanmax(eo.placement_error[eo.valid])),
-        "toolkit_version": __version__,
-        "source": "contact.easeoff.ease_off (seed Eq. 2.19-2.20, 4.1-4.2)",
-        "inputs": case.to_toml(),
-    }
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+    out = np.array(values, dtype=float)
+    have = np.array(valid, dtype=bool)
+    if not have.any():
+        raise InputError("no valid node to fill a field from")
+    trail = (1,) * (out.ndim - have.ndim)
+    while not have.all():
+        acc = np.zeros(out.shape)
+        cnt = np.zeros(have.shape)
+        for axis in (0, 1):
+            for step in (1, -1):
+                a1 = np.roll(out, step, axis)
+                a2 = np.roll(out, 2 * step, axis)
+                h1 = np.roll(have, step, axis)
+                h2 = np.roll(have, 2 * step, axis)
+                # forbid wrap-around
+                edge = [slice(None)] * 2
+                edge[axis] = slice(0, 2) if step == 1 else slice(-2, None)
+                h1 = h1.copy()
+                h2 = h2.copy()
+                h1[tuple(edge)] = False
+                h2[tuple(edge)] = False
+                two = ~have & h1 & h2
+                one = ~have & h1 & ~h2
+                acc[two] += 2 * a1[two] - a2[two]
+                cnt[two] += 1
+                acc[one] += a1[one]
+                cnt[one] += 1
+        new = ~have & (cnt > 0)
+        if not new.any():
+            break
+        out[new] = acc[new] / cnt[new].reshape(-1, *trail)
+        have = have | new
+    return out

@@ -21,8 +21,8 @@ import math
 
 import numpy as np
 
-from contact.compliance.hertz import contact_modulus  # the one E* of the toolkit
 from geometry.errors import InputError
+from geometry.hertz import contact_modulus  # the one E* of the toolkit
 
 __all__ = [
     "contact_modulus",

@@ -59,6 +59,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from geometry.errors import InputError, ModelUnavailableError
+from geometry.hertz import contact_modulus
 
 __all__ = [
     "WEBER_COMPLIANCE_KINDS",
@@ -87,32 +88,6 @@ def _positive_array(name: str, value: np.ndarray | float, unit: str) -> np.ndarr
     if not np.all(np.isfinite(a)) or np.any(a <= 0.0):
         raise InputError(f"{name} must be finite and > 0 {unit}")
     return a
-
-
-def contact_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float:
-    """Contact modulus E* of two elastic bodies [MPa].
-
-    Parameters
-    ----------
-    e1, e2 : float — [MPa] Young's moduli
-    nu1, nu2 : float — [1] Poisson ratios, in [0, 0.5)
-
-    Returns
-    -------
-    float — [MPa] E* = 1 / ((1 − ν₁²)/E₁ + (1 − ν₂²)/E₂)
-
-    Raises
-    ------
-    InputError
-        A modulus not finite and positive or a Poisson ratio out of [0, 0.5).
-
-    Notes
-    -----
-    Johnson (1985) Eq. 4.22; the convention of this module (see its docstring).
-    """
-    e1, nu1 = _material("e1", e1, "nu1", nu1)
-    e2, nu2 = _material("e2", e2, "nu2", nu2)
-    return 1.0 / ((1.0 - nu1**2) / e1 + (1.0 - nu2**2) / e2)
 
 
 def hertz_half_width(

@@ -2,7 +2,7 @@
 
 The seed (§4.3, Eq. 4.3–4.10) does not regenerate the deviated flanks and repeat the tooth
 contact search: it updates the theoretical ease-off ε and surface of roll angle Q of
-:func:`contact.easeoff.ease_off` directly from the normal deviations of the two flanks,
+:func:`contact.utca.easeoff.ease_off` directly from the normal deviations of the two flanks,
 assuming the deviated and theoretical surfaces share their normals (Eq. 4.3).
 
 Sign convention
@@ -29,7 +29,7 @@ point r_g (normal arm ρ|n_g·e_θ|, :attr:`EaseOff.normal_arm`) and pinion mate
   gear normal differs from the contact normal by the ease-off slope);
 * ε* = ε + Δε_g + Δε_p (Eq. 4.9–4.10) and Q* = Q + ΔQ (Eq. 4.6), both shifted again to touch
   zero over the valid nodes (§4.3 text); the normal ease-off is rebuilt from ε* exactly as in
-  :func:`contact.easeoff.ease_off`.
+  :func:`contact.utca.easeoff.ease_off`.
 
 The seed writes the ease-off as a length (Δε = L_g Δq); the toolkit's angular ease-off
 is the same quantity divided by the gear's moment arm.
@@ -38,11 +38,9 @@ Public functions
 ----------------
 SurfaceDeviation            normal deviations of one flank on a (u, v) grid, interpolated (TPS)
 weighted_average_deviation  the seed's baseline interpolation (inverse-distance, Shepard)
-read_deviation_csv          read one from a CSV file
-read_deviation_netcdf       read one member's grid from a netCDF file
-write_deviation_netcdf      write the pinion and/or gear grids to a netCDF file (atomic)
-read_deviations             either reader, chosen by the file suffix
 apply_deviations            update an EaseOff for pinion and gear deviations (Eq. 4.3–4.10)
+
+Deviation files (CSV, netCDF) are read and written by :mod:`contact.deviation_files`.
 
 References
 ----------
@@ -53,18 +51,15 @@ and Power Transmissions, Paris, 1992 (seed ref. [4.3]).
 
 from __future__ import annotations
 
-import csv
 import logging
-import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.interpolate import RBFInterpolator
 
-from contact.easeoff import EaseOff
+from contact.utca.easeoff import EaseOff
 from geometry.errors import InputError
 from geometry.flank import flank_at
 
@@ -73,16 +68,10 @@ if TYPE_CHECKING:
 
 __all__ = [
     "DEFAULT_MEASUREMENT_GRID",
-    "DEVIATION_UNITS",
     "MAX_DEVIATION",
-    "READERS",
     "SurfaceDeviation",
     "apply_deviations",
-    "read_deviation_csv",
-    "read_deviation_netcdf",
-    "read_deviations",
     "weighted_average_deviation",
-    "write_deviation_netcdf",
 ]
 
 log = logging.getLogger(__name__)
@@ -292,262 +281,6 @@ def weighted_average_deviation(deviation: SurfaceDeviation, u, v, *,
     return out
 
 
-def read_deviation_csv(path: str | os.PathLike[str]) -> SurfaceDeviation:
-    """Read a deviation grid from a CSV file.
-
-    Format (wide): lines starting with ``#`` are comments; the first row is a label cell
-    followed by the lengthwise fractions u (toe 0 → heel 1); every further row is a profile
-    fraction v (root 0 → tip 1) followed by the deviations [mm] at (u, v), positive =
-    material added (outward normal)::
-
-        # gear convex, CMM 2026-11-21, mm
-        v\\u, 0.0, 0.125, ..., 1.0
-        0.05, 0.0012, ...
-        ...
-
-    Parameters
-    ----------
-    path : str or os.PathLike
-
-    Returns
-    -------
-    SurfaceDeviation
-
-    Raises
-    ------
-    InputError
-        For a missing file, ragged rows, non-numeric cells (naming row and column) or as
-        :class:`SurfaceDeviation`.
-    """
-    try:
-        with open(path, newline="", encoding="utf-8") as fh:
-            rows = [r for r in csv.reader(fh)
-                    if r and any(c.strip() for c in r) and not r[0].lstrip().startswith("#")]
-    except OSError as exc:
-        raise InputError(f"path: cannot read deviation CSV {os.fspath(path)!r}: {exc}") from exc
-    if len(rows) < 2:
-        raise InputError(f"path: {os.fspath(path)!r} needs a header row of u values and at "
-                         "least one row of deviations")
-
-    def num(cell: str, where: str) -> float:
-        try:
-            return float(cell)
-        except ValueError:
-            raise InputError(f"deviation: non-numeric cell {cell!r} at {where} of "
-                             f"{os.fspath(path)!r}") from None
-
-    u = [num(c, f"header column {j + 2}") for j, c in enumerate(rows[0][1:])]
-    v, d = [], []
-    for i, r in enumerate(rows[1:], start=2):
-        if len(r) != len(u) + 1:
-            raise InputError(f"deviation: row {i} of {os.fspath(path)!r} has {len(r) - 1} "
-                             f"values, the header has {len(u)} u values")
-        v.append(num(r[0], f"row {i} column 1"))
-        d.append([num(c, f"row {i} column {j + 2}") for j, c in enumerate(r[1:])])
-    return SurfaceDeviation(np.array(u), np.array(v), np.array(d).T)
-
-
-#: accepted ``units`` of a netCDF deviation variable → factor to mm
-DEVIATION_UNITS: dict[str, float] = {"mm": 1.0, "um": 1e-3, "µm": 1e-3, "micrometer": 1e-3}
-
-_MEMBERS = ("pinion", "gear")
-
-
-def _check_member(member: str) -> str:
-    if member not in _MEMBERS:
-        raise InputError(f"member: must be one of {list(_MEMBERS)}, got {member!r}")
-    return member
-
-
-def read_deviation_netcdf(path: str | os.PathLike[str], member: str = "pinion",
-                          ) -> SurfaceDeviation:
-    """Read one member's deviation grid from a netCDF file.
-
-    Format (as written by :func:`write_deviation_netcdf`): a Dataset with a variable
-    ``pinion_deviation`` and/or ``gear_deviation`` over two dimensions, the lengthwise
-    fraction ``u`` (toe 0 → heel 1) and the profile fraction ``v`` (root 0 → tip 1), each
-    with a coordinate of fractions; member-specific dimension names ``u_pinion``,
-    ``v_pinion`` (``u_gear``, ``v_gear``) are accepted for grids that differ between the
-    members, and either dimension order. The variable's ``units`` attribute must be one of
-    :data:`DEVIATION_UNITS` (``"mm"`` or ``"um"``); values are converted to mm. Positive =
-    material added (outward normal), as :class:`SurfaceDeviation`.
-
-    Parameters
-    ----------
-    path : str or os.PathLike
-    member : {"pinion", "gear"}
-        Which variable to read.
-
-    Returns
-    -------
-    SurfaceDeviation
-        Deviations in [mm] on the file's (u, v) grid.
-
-    Raises
-    ------
-    InputError
-        Unknown member, missing or unreadable file (``path``), missing variable (naming
-        it and listing the file's variables), wrong dimensions, missing coordinates, missing
-        or unknown ``units``, or as :class:`SurfaceDeviation`.
-
-    Notes
-    -----
-    Source: the measurement grid of the seed §4.5.2 (CMM deviations on a 5 × 9 grid along
-    the surface normal); the file layout is the toolkit's (contact.io conventions).
-    """
-    from contact.io import NetCDFError, read_netcdf
-
-    _check_member(member)
-    try:
-        ds = read_netcdf(path, tree=False)
-    except NetCDFError as exc:
-        raise InputError(f"path: cannot read deviation netCDF {os.fspath(path)!r}: {exc}"
-                         ) from exc
-    name = f"{member}_deviation"
-    if name not in ds.data_vars:
-        raise InputError(f"{name}: no such variable in {os.fspath(path)!r}; it has "
-                         f"{sorted(map(str, ds.data_vars))}")
-    var = ds[name]
-    dims = tuple(map(str, var.dims))
-    for du, dv in (("u", "v"), (f"u_{member}", f"v_{member}")):
-        if set(dims) == {du, dv}:
-            break
-    else:
-        raise InputError(f"{name}: must have the dimensions (u, v) or (u_{member}, "
-                         f"v_{member}) of lengthwise and profile fractions, got {dims}")
-    for d in (du, dv):
-        if d not in ds.coords:
-            raise InputError(f"{name}: dimension {d!r} has no coordinate of fractions")
-    units = var.attrs.get("units")
-    if units not in DEVIATION_UNITS:
-        raise InputError(f"{name}: units attribute must be one of {list(DEVIATION_UNITS)}, "
-                         f"got {units!r}")
-    values = var.transpose(du, dv).values * DEVIATION_UNITS[units]
-    return SurfaceDeviation(ds[du].values, ds[dv].values, values)
-
-
-def write_deviation_netcdf(path: str | os.PathLike[str], *,
-                           pinion: SurfaceDeviation | None = None,
-                           gear: SurfaceDeviation | None = None,
-                           units: str = "mm", description: str = "") -> Path:
-    """Write pinion and/or gear deviation grids to a netCDF file, atomically.
-
-    The layout is the one :func:`read_deviation_netcdf` reads: variables
-    ``pinion_deviation`` / ``gear_deviation`` over dimensions (``u``, ``v``) with fraction
-    coordinates when both members share one grid, else over (``u_pinion``, ``v_pinion``)
-    and (``u_gear``, ``v_gear``). Written with :func:`contact.io.write_netcdf` (conventions
-    checked, version stamped, temporary file + rename).
-
-    Parameters
-    ----------
-    path : str or os.PathLike
-        Target file (its directory must exist).
-    pinion, gear : SurfaceDeviation, optional
-        At least one is required.
-    units : {"mm", "um"}
-        Unit the values are stored in (converted from the grids' [mm]).
-    description : str
-        Free text stored as the ``description`` attribute (e.g. the CMM report).
-
-    Returns
-    -------
-    pathlib.Path
-
-    Raises
-    ------
-    InputError
-        Neither grid given, a grid not a SurfaceDeviation, or unknown ``units``.
-    contact.io.NetCDFError
-        If the file cannot be written (an existing file is left untouched).
-
-    Notes
-    -----
-    Source: as :func:`read_deviation_netcdf` (seed §4.5.2 grid; toolkit file layout).
-    """
-    import xarray as xr
-
-    from contact.io import write_netcdf
-
-    grids = {"pinion": pinion, "gear": gear}
-    if all(g is None for g in grids.values()):
-        raise InputError("pinion, gear: at least one deviation grid is needed")
-    for name, g in grids.items():
-        if g is not None and not isinstance(g, SurfaceDeviation):
-            raise InputError(f"{name}: must be a SurfaceDeviation or None, got "
-                             f"{type(g).__name__}")
-    if units not in ("mm", "um"):
-        raise InputError(f"units: must be 'mm' or 'um', got {units!r}")
-    given = {k: g for k, g in grids.items() if g is not None}
-    first = next(iter(given.values()))
-    shared = all(np.array_equal(g.u, first.u) and np.array_equal(g.v, first.v)
-                 for g in given.values())
-    data, coords = {}, {}
-    for name, g in given.items():
-        du, dv = ("u", "v") if shared else (f"u_{name}", f"v_{name}")
-        coords[du] = (du, g.u, {"units": "1", "long_name": "lengthwise fraction of the "
-                                "projection plane, toe 0 to heel 1"})
-        coords[dv] = (dv, g.v, {"units": "1", "long_name": "profile fraction of the "
-                                "projection plane, root 0 to tip 1"})
-        data[f"{name}_deviation"] = ((du, dv), g.deviation / DEVIATION_UNITS[units], {
-            "units": units,
-            "long_name": f"{name} flank normal deviation, positive = material added "
-                         "(outward normal)"})
-    ds = xr.Dataset(data, coords=coords, attrs={
-        "title": "hypoid-ltca flank deviations (seed section 4.3)",
-        "description": description or "normal deviations on a measurement grid"})
-    return write_netcdf(ds, path)
-
-
-def _read_netcdf_member(path: str | os.PathLike[str], member: str) -> SurfaceDeviation:
-    return read_deviation_netcdf(path, member=member)
-
-
-def _read_csv_member(path: str | os.PathLike[str], member: str) -> SurfaceDeviation:
-    return read_deviation_csv(path)
-
-
-#: file suffix → reader(path, member) of :func:`read_deviations`
-READERS: dict[str, Callable[[str | os.PathLike[str], str], SurfaceDeviation]] = {
-    ".csv": _read_csv_member,
-    ".nc": _read_netcdf_member,
-    ".nc4": _read_netcdf_member,
-    ".netcdf": _read_netcdf_member,
-}
-
-
-def read_deviations(path: str | os.PathLike[str], member: str = "pinion") -> SurfaceDeviation:
-    """Read a deviation grid from a CSV or netCDF file, chosen by the suffix (:data:`READERS`).
-
-    Parameters
-    ----------
-    path : str or os.PathLike
-        ``*.csv`` (:func:`read_deviation_csv`, one grid per file) or ``*.nc``/``*.nc4``/
-        ``*.netcdf`` (:func:`read_deviation_netcdf`).
-    member : {"pinion", "gear"}
-        The member whose variable a netCDF file is read for (a CSV holds one grid).
-
-    Returns
-    -------
-    SurfaceDeviation
-        [mm], positive = material added.
-
-    Raises
-    ------
-    InputError
-        Unknown suffix (listing the accepted ones), unknown member, or as the reader.
-
-    Notes
-    -----
-    Source: seed §4.3 and §4.5.2 (deviations along the normal on the measurement grid).
-    """
-    _check_member(member)
-    suffix = Path(path).suffix.lower()
-    if suffix not in READERS:
-        raise InputError(f"path: unknown deviation file type {suffix or '(none)'!r} of "
-                         f"{os.fspath(path)!r}; accepted suffixes: {', '.join(READERS)}")
-    return READERS[suffix](path, member)
-
-
 def _pinion_arm(eo: EaseOff, case: Case | None) -> np.ndarray:
     """Moment arm |a_p·((r_p − O_p) × n_p)| [mm] of the pinion mate of every gear node."""
     if case is None:
@@ -571,8 +304,8 @@ def apply_deviations(eo: EaseOff, pinion: SurfaceDeviation | None = None,
 
     Parameters
     ----------
-    eo : contact.easeoff.EaseOff
-        The theoretical ease-off (from :func:`contact.easeoff.ease_off`).
+    eo : contact.utca.easeoff.EaseOff
+        The theoretical ease-off (from :func:`contact.utca.easeoff.ease_off`).
     pinion : SurfaceDeviation, optional
         Deviations of the pinion flank ``eo.pinion_flank`` in pinion projection-plane
         fractions [mm], positive = material added; evaluated at the mates
@@ -593,7 +326,7 @@ def apply_deviations(eo: EaseOff, pinion: SurfaceDeviation | None = None,
         ``ease_off_angle`` ε* [rad], ``ease_off`` [mm] (rebuilt from ε*), ``roll_angle``
         Q* [rad] and their ``raw_*`` fields updated and shifted to touch zero over the valid
         nodes; ``roll_zero`` and ``gear_phase`` [rad] moved by the same shifts (in the
-        senses of :func:`contact.easeoff.ease_off`); all other fields unchanged (the mask,
+        senses of :func:`contact.utca.easeoff.ease_off`); all other fields unchanged (the mask,
         normal arm, gap curvature and the mates are those of the theoretical surfaces).
 
     Raises
@@ -613,7 +346,7 @@ def apply_deviations(eo: EaseOff, pinion: SurfaceDeviation | None = None,
     (Eq. 4.3 text) and the mates are not moved.
     """
     if not isinstance(eo, EaseOff):
-        raise InputError(f"eo: must be a contact.easeoff.EaseOff, got {type(eo).__name__}")
+        raise InputError(f"eo: must be a contact.utca.easeoff.EaseOff, got {type(eo).__name__}")
     for name, dev in (("pinion", pinion), ("gear", gear)):
         if dev is not None and not isinstance(dev, SurfaceDeviation):
             raise InputError(f"{name}: must be a SurfaceDeviation or None, got "
@@ -641,7 +374,7 @@ def apply_deviations(eo: EaseOff, pinion: SurfaceDeviation | None = None,
     s_q = float(np.min(q[valid]))
     eps = eps - s_e
     q = q - s_q
-    # normal ease-off as in contact.easeoff.ease_off (chord of the rotation)
+    # normal ease-off as in contact.utca.easeoff.ease_off (chord of the rotation)
     pg, ng = eo.gear_position, eo.gear_normal
     rho = np.hypot(pg[..., 0], pg[..., 1])
     nt = (ng[..., 1] * pg[..., 0] - ng[..., 0] * pg[..., 1]) / rho

@@ -22,15 +22,15 @@ from typing import Any
 import numpy as np
 
 from contact.errors import SolverNotFoundError
-from contact.problem import (
+from contact.qp.problem import (
     DEFAULT_TOLERANCE,
     ContactProblem,
     ContactSolution,
     contact_residuals,
     solve_on_contact_set,
 )
-from contact.solvers.active_set import block_pivoting
-from contact.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
+from contact.qp.solvers.active_set import block_pivoting
+from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
 
 __all__ = [
     "DEFAULT_SOLVER",
@@ -89,13 +89,13 @@ def _registry() -> dict[str, Backend]:
         )
     }
     try:
-        from contact.solvers import qpsolvers_backend
+        from contact.qp.solvers import qpsolvers_backend
 
         reg.update({b.name: b for b in qpsolvers_backend.backends()})
     except Exception as exc:  # pragma: no cover - a broken install must not break the toolkit
         log.warning("qpsolvers backends unavailable: %s", exc)
     try:
-        from contact.solvers import cvxpy_backend
+        from contact.qp.solvers import cvxpy_backend
 
         reg.update({b.name: b for b in cvxpy_backend.backends()})
     except Exception as exc:  # pragma: no cover

@@ -24,15 +24,14 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import xarray as xr
 
-from contact.problem import DEFAULT_TOLERANCE
-from contact.problem_set import TestProblem
-from contact.solvers import DEFAULT_SOLVER, available_solvers, get_backend, solve_contact
+from contact.qp.benchmark_problems import TestProblem
+from contact.qp.problem import DEFAULT_TOLERANCE, RESIDUALS
+from contact.qp.solvers import DEFAULT_SOLVER, available_solvers, get_backend, solve_contact
 
 __all__ = ["compare_solvers", "default_study_solvers", "shifted_geometric_mean", "summarize"]
 
 log = logging.getLogger(__name__)
 
-_RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
 
 
 def shifted_geometric_mean(values: Iterable[float], shift: float) -> float:
@@ -129,7 +128,7 @@ def compare_solvers(
             "build_time",
             "force_error",
             "rotation_error",
-            *(f"residual_{r}" for r in _RESIDUALS),
+            *(f"residual_{r}" for r in RESIDUALS),
         )
     }
     ints = {
@@ -168,7 +167,7 @@ def compare_solvers(
             ints["polished"][i, j] = sol.status == "solved (polished)"
             out["solve_time"][i, j] = sol.solve_time
             out["build_time"][i, j] = sol.build_time
-            for r in _RESIDUALS:
+            for r in RESIDUALS:
                 out[f"residual_{r}"][i, j] = min(sol.residuals[r], 1e300)
             if np.all(np.isfinite(sol.force)) and ref.found:
                 out["force_error"][i, j] = float(
@@ -192,7 +191,7 @@ def compare_solvers(
         ),
         **{
             f"residual_{r}": ("1", f"relative {r} residual computed by the toolkit")
-            for r in _RESIDUALS
+            for r in RESIDUALS
         },
     }
     data = {k: (dims, v, {"units": meta[k][0], "long_name": meta[k][1]}) for k, v in out.items()}
@@ -258,7 +257,7 @@ def summarize(
     t = (results["solve_time"] + results["build_time"]).values * 1e3
     t = np.where(found, t, time_limit * 1e3)
     sg = np.array([shifted_geometric_mean(row, shift_ms) for row in t])
-    res = np.max(np.stack([results[f"residual_{r}"].values for r in _RESIDUALS]), axis=0)
+    res = np.max(np.stack([results[f"residual_{r}"].values for r in RESIDUALS]), axis=0)
     worst_res = np.array(
         [np.max(r[f], initial=0.0) if f.any() else np.inf for r, f in zip(res, found, strict=True)]
     )

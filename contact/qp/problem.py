@@ -37,6 +37,7 @@ from contact.errors import NotPositiveDefiniteError, ProblemInputError
 
 __all__ = [
     "DEFAULT_TOLERANCE",
+    "RESIDUALS",
     "ContactProblem",
     "ContactSolution",
     "ProblemScale",
@@ -49,6 +50,10 @@ __all__ = [
 #: separations to ~0.1 µm of a ~10 µm scale) and above what double precision
 #: reaches on the reduced KKT system for condition numbers up to ~1e8.
 DEFAULT_TOLERANCE = 1e-7
+
+#: The four conditions whose relative residuals certify a solution (module docstring):
+#: compatibility (primal), F ≥ 0 and Y ≥ 0 (dual), F·Y = 0 (complementarity), RᵀF = T.
+RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
 
 
 def _as_float_array(name: str, value: Any, ndim: int) -> np.ndarray:

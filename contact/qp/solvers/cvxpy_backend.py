@@ -16,8 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from contact.problem import ContactProblem
-from contact.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
+from contact.qp.problem import ContactProblem
+from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
 
 __all__ = ["backends"]
 

@@ -1,7 +1,7 @@
 """Unloaded TCA from the ease-off and the surface of roll angle (seed §2.3.2.2, §4.4).
 
 For a pinion roll position (value q of the roll-angle surface Q, see
-:mod:`contact.easeoff`) all gear projection-plane points with Q = q are in contact with
+:mod:`contact.utca.easeoff`) all gear projection-plane points with Q = q are in contact with
 the pinion's conjugate at the same time: the iso-line Q = q is the instantaneous contact
 curve, and projected onto the ease-off its lowest point H gives the unloaded transmission
 error (UTE) of that tooth pair — the gear lag at which the real gear first touches the
@@ -58,8 +58,9 @@ ContactCurves            curves of a batch of roll targets: places, ease-off, UT
 contact_curves           compute them from an EaseOff for roll values (Q units)
 pair_transmission_error  UTE of the reference tooth pair at roll values
 transitions              rolls M1, M2 bounding the reference pair's share of the envelope
-unloaded_tca             the whole UTCA of a case: (/easeoff, /utca) Datasets
-utca_dataset             the ``/utca`` Dataset from computed pieces
+
+The UTCA of a whole case as datasets (:func:`contact.utca.unloaded_tca`) is in
+:mod:`contact.utca.datasets`.
 
 References
 ----------
@@ -68,24 +69,16 @@ M. Kolivand, PhD dissertation, Ohio State University, 2009, §2.3.2.2, §2.4, §
 
 from __future__ import annotations
 
-import json
 import logging
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
-import xarray as xr
-from scipy.interpolate import RectBivariateSpline
 
-from contact.easeoff import EaseOff, _fill_missing, ease_off, easeoff_dataset
-from contact.io import data_var as _var
-from geometry._version import __version__
-from geometry.errors import InputError, ModelUnavailableError
-
-if TYPE_CHECKING:
-    from geometry.assembly import Misalignment
-    from geometry.case import Case
+from contact.utca.easeoff import EaseOff
+from contact.utca.fields import EaseOffFields
+from geometry.errors import InputError
 
 __all__ = [
     "CURVE_SPACINGS",
@@ -95,8 +88,6 @@ __all__ = [
     "contact_curves",
     "pair_transmission_error",
     "transitions",
-    "unloaded_tca",
-    "utca_dataset",
 ]
 
 log = logging.getLogger(__name__)
@@ -107,158 +98,6 @@ DEFAULT_SEPARATION = 0.0063
 
 _COARSE_PER_CELL = 2  # coarse samples per grid cell along a curve
 _END_ITER = 12  # false-position steps on a curve end (to 1e-9 of the face width)
-_V_NEWTON = 6
-
-
-class _Fields:
-    """Bicubic splines of the ease-off fields over the gear grid (u, v)."""
-
-    def __init__(self, eo: EaseOff):
-        self.eo = eo
-        self.u, self.v = eo.u, eo.v
-        computed = np.isfinite(eo.raw_ease_off_angle) & np.isfinite(eo.raw_roll_angle)
-        valid = eo.valid
-        if valid.sum() < 16:
-            raise InputError("easeoff: fewer than 16 valid nodes, nothing to contour")
-        self.computed = computed
-        gear_ok = np.all(np.isfinite(eo.gear_position), axis=-1)
-
-        def spl(fields, ok):
-            # the fields sharing a mask are filled together (same arithmetic per field)
-            filled = _fill_missing(np.stack(fields, -1), ok)
-            return [RectBivariateSpline(self.u, self.v, filled[..., k])
-                    for k in range(len(fields))]
-
-        # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
-        # smooth sheet (both points on their blades' main sections), continued linearly
-        # past those: a section junction (e.g. the gear's fillet) kinks the fields, and a
-        # cubic spline would carry the kink back into the contact region
-        sheet = valid | eo.smooth
-        self.q, self.eps, self.gap = spl(
-            [eo.raw_roll_angle, eo.raw_ease_off_angle, eo.gap_curvature], sheet)
-        k_nodes = eo.gap_curvature[sheet & np.isfinite(eo.gap_curvature)]
-        self.gap_range = ((float(k_nodes.min()), float(k_nodes.max())) if k_nodes.size
-                          else (-np.inf, np.inf))
-        self.arm, *gear = spl(
-            [eo.normal_arm, *np.moveaxis(eo.gear_position, -1, 0),
-             *np.moveaxis(eo.gear_normal, -1, 0)], gear_ok)
-        self.pos, self.nrm = gear[:3], gear[3:]
-        self.margin, self.pu, self.pv = spl([eo.margin, eo.pinion_u, eo.pinion_v], computed)
-        dq = np.diff(np.where(valid, eo.raw_roll_angle, np.nan), axis=1)
-        signs = np.sign(dq[np.isfinite(dq)])
-        if signs.size == 0 or not (np.all(signs > 0) or np.all(signs < 0)):
-            raise ModelUnavailableError(
-                "contact curves: the roll-angle surface is not monotone along the profile "
-                "direction of the gear grid, so a contact curve cannot be parameterised by "
-                "the lengthwise position (not met by bevel or hypoid flanks so far)")
-        self.q_sign = int(signs[0])
-        # cell corners all computed (hard mask): cell (i, j) spans u[i]..u[i+1], v[j]..v[j+1]
-        c = computed
-        self.cell_ok = c[:-1, :-1] & c[1:, :-1] & c[:-1, 1:] & c[1:, 1:]
-
-    def gap_at(self, u, v):
-        """The pinion's gap curvature K [1/rad] at (u, v), held within the range of the
-        nodes' values: near a fold or masked nodes the spline of the filled field can
-        overshoot it (on ISO sample 2 to K < 0 at the gear tip, where the nodes hold
-        K ≥ 0.055: an edge's separation ε + ½ K t² then fell by hundreds of µm)."""
-        return np.clip(self.gap.ev(u, v), *self.gap_range)
-
-    def good_cell(self, u, v):
-        """True where (u, v) lies in a grid cell whose corners were all computed (places
-        beyond the grid count as its edge cells)."""
-        # (np.minimum/np.maximum: np.clip's arithmetic without its wrapper's overhead)
-        iu = np.minimum(np.maximum(np.searchsorted(self.u, u, side="right") - 1, 0),
-                        len(self.u) - 2)
-        iv = np.minimum(np.maximum(np.searchsorted(self.v, v, side="right") - 1, 0),
-                        len(self.v) - 2)
-        return self.cell_ok[iu, iv]
-
-    def inside(self, u, v):
-        """True where (u, v) can be touched: in the grid, good cell, pinion mate in blank."""
-        u0, u1, v0, v1 = self.u[0], self.u[-1], self.v[0], self.v[-1]
-        ok = (u >= u0) & (u <= u1) & (v >= v0) & (v <= v1) & np.isfinite(v)
-        ok &= self.good_cell(np.where(ok, u, u0), np.where(ok, v, v0))
-        # the margin only where the rest holds (the spline is evaluated point by point)
-        ok[ok] = self.margin.ev(u[ok], v[ok]) >= 0.0
-        return ok
-
-    def lattice(self, uc):
-        """Q at the coarse places uc × the grid's profile nodes (cached)."""
-        key = (len(uc), float(uc[0]), float(uc[-1]))
-        if getattr(self, "_lat_key", None) != key:
-            self._lat = self.q(uc, self.v)
-            self._lat_key = key
-        return self._lat
-
-    def measure_terms(self, u, v):
-        """(5, ...) the terms whose least is the inside measure at (u, v) (v finite): the
-        pinion mate's margin in its blank, v − v₀, v₁ − v, u − u₀, u₁ − u."""
-        return np.stack([self.margin.ev(u, v), v - self.v[0], self.v[-1] - v,
-                         u - self.u[0], self.u[-1] - u])
-
-    def measure(self, u, v):
-        """Continuous inside measure: ≥ 0 inside the contact region, −1 where undefined."""
-        fin = np.isfinite(v)
-        vs = np.where(fin, v, self.v[0])
-        c = self.measure_terms(u, vs).min(axis=0)
-        return np.where(fin & self.good_cell(u, vs), c, -1.0)
-
-    def solve_v(self, u, target, v_start=None, lattice=None):
-        """Profile place v*(u) with Q(u, v*) = target (NaN where Q misses target in [v0, v1]).
-
-        Either ``v_start`` (a nearby solution) or ``lattice`` (Q at u × profile nodes, for a
-        bracket) starts Newton's method on the spline.
-        """
-        u = np.asarray(u, dtype=float)
-        target = np.asarray(target, dtype=float)
-        if u.shape != target.shape:
-            shape = np.broadcast_shapes(u.shape, target.shape)
-            u = np.broadcast_to(u, shape)
-            target = np.broadcast_to(target, shape)
-        shape = u.shape
-        if lattice is not None:
-            vn = self.v
-            qn = np.broadcast_to(lattice, (*shape, len(vn)))
-            s = self.q_sign
-            below = (s * (qn - target[..., None])) <= 0
-            k = np.clip(below.sum(-1) - 1, 0, len(vn) - 2)
-            qa = np.take_along_axis(qn, k[..., None], -1)[..., 0]
-            qb = np.take_along_axis(qn, (k + 1)[..., None], -1)[..., 0]
-            t = np.clip((target - qa) / np.where(qb != qa, qb - qa, 1.0), 0.0, 1.0)
-            v = (vn[k] + t * (vn[k + 1] - vn[k])).ravel()
-            miss = ((s * (qn[..., 0] - target) > 0) | (s * (qn[..., -1] - target) < 0)).ravel()
-        else:
-            v_start = np.asarray(v_start, dtype=float)
-            v = (v_start.ravel() if v_start.shape == shape
-                 else np.broadcast_to(v_start, shape).ravel()).copy()
-            v[~np.isfinite(v)] = 0.5 * (self.v[0] + self.v[-1])
-            miss = None
-        return self._newton_v(u.ravel(), target.ravel(), v, miss).reshape(shape)
-
-    def _newton_v(self, uf, tf, v, miss=None):
-        """:meth:`solve_v` on flat arrays from a finite start ``v`` (overwritten)."""
-        v0, v1 = self.v[0], self.v[-1]
-        f = self.q.ev(uf, v) - tf
-        # Newton on the points not yet converged (and not known to miss) only
-        act = np.flatnonzero(~(np.abs(f) < 1e-13) if miss is None
-                             else ~(np.abs(f) < 1e-13) & ~miss)
-        for _ in range(_V_NEWTON):
-            if act.size == 0:
-                break
-            ua, va = uf[act], v[act]
-            d = self.q.ev(ua, va, dy=1)
-            # the spline is defined on [v0, v1] only (FITPACK clamps outside)
-            vn = np.minimum(np.maximum(va - f[act] / np.where(d != 0, d, 1e-30), v0), v1)
-            fa = self.q.ev(ua, vn) - tf[act]
-            v[act], f[act] = vn, fa
-            # a point whose step left it in place (held at v0 or v1 by the clamp) would
-            # repeat the same step: it is finished (a miss unless |f| is already small)
-            act = act[~(np.abs(fa) < 1e-13) & (vn != va)]
-        tol = 1e-9 * (v1 - v0)
-        bad = (v < v0 - tol) | (v > v1 + tol) | (np.abs(f) > 1e-9)
-        if miss is not None:
-            bad |= miss
-        return np.where(bad, np.nan, np.minimum(np.maximum(v, v0), v1))
 
 
 class ContactCurves(NamedTuple):
@@ -284,7 +123,7 @@ class ContactCurves(NamedTuple):
     index: np.ndarray  # batch: sample index nearest to H (-1 where no curve)
 
 
-def _seed_places(f: _Fields, t: np.ndarray, frac: np.ndarray,
+def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
                  coarse_per_cell: int = _COARSE_PER_CELL) -> ContactCurves:
     """Places, ε and UTE of the iso-lines Q = t (flat batch), without the flank fields
     (``normal_arm``, ``position``, ``normal`` are None; see :func:`_curve_fields`), sampled
@@ -433,7 +272,7 @@ def _seed_places(f: _Fields, t: np.ndarray, frac: np.ndarray,
         contact_u=cu, contact_v=cv, index=index)
 
 
-def _short_curves(f: _Fields, t: np.ndarray, uc: np.ndarray, vc: np.ndarray,
+def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarray,
                   have: np.ndarray):
     """Seeds of the curves that lie wholly between two coarse samples.
 
@@ -480,7 +319,7 @@ def _short_curves(f: _Fields, t: np.ndarray, uc: np.ndarray, vc: np.ndarray,
     return cand[ok], u_star[ok], v_star[ok], lo[ok], hi[ok]
 
 
-def _curve_fields(f: _Fields, cc: ContactCurves) -> ContactCurves:
+def _curve_fields(f: EaseOffFields, cc: ContactCurves) -> ContactCurves:
     """Normal arm, gear flank point and unit normal along the curves of ``cc``."""
     fin = np.isfinite(cc.v)
     us, vs = np.where(fin, cc.u, f.u[0]), np.where(fin, cc.v, f.v[0])
@@ -491,7 +330,7 @@ def _curve_fields(f: _Fields, cc: ContactCurves) -> ContactCurves:
     return cc._replace(normal_arm=arm, position=pos, normal=nrm)
 
 
-def _curves_seed(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
+def _curves_seed(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
                  flank_fields: bool = True, near_misses: bool = False) -> ContactCurves:
     """Iso-lines Q = t (flat batch) and the minimum of ε along them (seed §2.3.2.2)."""
     if near_misses:
@@ -500,7 +339,7 @@ def _curves_seed(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
     return _curve_fields(f, cc) if flank_fields else cc
 
 
-def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
+def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
                          flank_fields: bool = True, near_misses: bool = False) -> ContactCurves:
     """The seed's curves corrected for the pinion's own gap to its conjugate.
 
@@ -581,11 +420,11 @@ def _curves_second_order(f: _Fields, t: np.ndarray, frac: np.ndarray, *,
     return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
 
 
-def _end_slope(f: _Fields, u: np.ndarray, v: np.ndarray):
+def _end_slope(f: EaseOffFields, u: np.ndarray, v: np.ndarray):
     """dUTE_seed/dq [1] where the contact point H is the curve's end (u, v) (M,).
 
     The end lies on the region's boundary, the zero set of the active term of
-    :meth:`_Fields.measure` (the pinion-blank margin, or a grid limit in u or v); as q
+    :meth:`EaseOffFields.measure` (the pinion-blank margin, or a grid limit in u or v); as q
     changes it slides along that boundary, direction b (the margin's level line, or the
     grid line), so dε/dq = (∇ε·b)/(∇Q·b): the exact derivative of the model, where a
     finite difference of UTE_seed would divide the end search's resolution (bisection to
@@ -620,7 +459,7 @@ _REFINE_POINTS, _REFINE_ITER = 17, 4  # grids refining the shift: 8^-4 ≈ 2e-4 
 # bracket (two node steps of Q either side), i.e. ~1e-5 rad of shift, ≤ 0.05 µrad of ½ K t²
 
 
-def _probe_shift(f: _Fields, t: np.ndarray):
+def _probe_shift(f: EaseOffFields, t: np.ndarray):
     """Iso-line shifts t_b for roll values whose iso-line Q = t misses the contact region.
 
     The shift minimises UTE_seed(t + t_b) + ½ K t_b² (K > 0 at the contact point). It is
@@ -707,7 +546,7 @@ def _grid_minimum(func, lo: np.ndarray, hi: np.ndarray, start: np.ndarray, itera
     return x_star, found
 
 
-def _gap_at_contact(f: _Fields, cc: ContactCurves) -> np.ndarray:
+def _gap_at_contact(f: EaseOffFields, cc: ContactCurves) -> np.ndarray:
     """The pinion's gap curvature K [1/rad] at each curve's contact point H (at the
     grid's first node where a curve has none; its UTE is NaN there anyway)."""
     hu = np.where(np.isfinite(cc.contact_u), cc.contact_u, f.u[0])
@@ -737,13 +576,13 @@ UTE_METHODS: dict[str, Callable[..., ContactCurves]] = {
 
 
 def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point: int = 41,
-                   fields: _Fields | None = None, spacing: str = "uniform",
+                   fields: EaseOffFields | None = None, spacing: str = "uniform",
                    near_misses: bool = False) -> ContactCurves:
     """Instantaneous contact curves and the UTE of tooth pairs (seed §2.3.2.2, §4.4).
 
     Parameters
     ----------
-    eo : contact.easeoff.EaseOff
+    eo : contact.utca.easeoff.EaseOff
     target : array_like — [rad]
         Roll values q (Q units, driving sense; any shape ``batch``); the pair k at roll r
         has q = r − k·pitch.
@@ -795,7 +634,7 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
     return ContactCurves(*(np.reshape(a, batch + np.shape(a)[1:]) for a in cc))
 
 
-def _checked(eo: EaseOff, target, method: str, n_point: int, fields: _Fields | None):
+def _checked(eo: EaseOff, target, method: str, n_point: int, fields: EaseOffFields | None):
     """Validated roll targets (float array) and the splines, for :func:`contact_curves`."""
     if method not in UTE_METHODS:
         raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
@@ -804,16 +643,16 @@ def _checked(eo: EaseOff, target, method: str, n_point: int, fields: _Fields | N
     tgt = np.asarray(target, dtype=float)
     if not np.all(np.isfinite(tgt)):
         raise InputError("target: roll values must be finite [rad]")
-    return tgt, (fields if fields is not None else _Fields(eo))
+    return tgt, (fields if fields is not None else EaseOffFields(eo))
 
 
 def pair_transmission_error(eo: EaseOff, roll, *, method: str = "second_order",
-                            fields: _Fields | None = None, n_point: int = 41) -> np.ndarray:
+                            fields: EaseOffFields | None = None, n_point: int = 41) -> np.ndarray:
     """UTE of the reference tooth pair at roll values.
 
     Parameters
     ----------
-    eo : contact.easeoff.EaseOff
+    eo : contact.utca.easeoff.EaseOff
     roll : array_like — [rad]
         Roll values (Q units, driving sense).
     method : str
@@ -838,13 +677,13 @@ def pair_transmission_error(eo: EaseOff, roll, *, method: str = "second_order",
     return cc.ute.reshape(tgt.shape)
 
 
-def transitions(eo: EaseOff, *, method: str = "second_order", fields: _Fields | None = None,
+def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFields | None = None,
                 n_point: int = 41, samples: int = 8) -> tuple[float, float]:
     """Rolls M1, M2 bounding the reference pair's share of the lower envelope (seed Fig. 2.9).
 
     Parameters
     ----------
-    eo : contact.easeoff.EaseOff
+    eo : contact.utca.easeoff.EaseOff
     method : str
         See :func:`contact_curves`.
     n_point : int
@@ -872,7 +711,7 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: _Fields | 
     """
     if int(samples) != samples or samples < 4:
         raise InputError(f"samples: must be an integer >= 4, got {samples!r}")
-    f = fields if fields is not None else _Fields(eo)
+    f = fields if fields is not None else EaseOffFields(eo)
     p = eo.pitch
     big = 1.0
 
@@ -955,330 +794,3 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: _Fields | 
     return float(res[0]), float(res[1])
 
 
-def _stretch(sep, pos, k):
-    """Contact stretch around sample k where sep ≤ 0 (sep = separation − threshold).
-
-    Returns (lo, hi) fractional sample indices of its ends and the 3-D length [mm].
-    """
-    n = len(sep)
-    sep = sep.tolist()  # Python floats (exact): the scalar walk below without numpy overhead
-    isfinite = math.isfinite
-    if k < 0 or not isfinite(sep[k]) or sep[k] > 0:
-        return math.nan, math.nan, 0.0
-    lo = k
-    while lo > 0 and isfinite(sep[lo - 1]) and sep[lo - 1] <= 0:
-        lo -= 1
-    hi = k
-    while hi < n - 1 and isfinite(sep[hi + 1]) and sep[hi + 1] <= 0:
-        hi += 1
-    flo, fhi = float(lo), float(hi)
-    if lo > 0 and isfinite(sep[lo - 1]):
-        flo = lo - (0.0 - sep[lo]) / (sep[lo - 1] - sep[lo])
-    if hi < n - 1 and isfinite(sep[hi + 1]):
-        fhi = hi + (0.0 - sep[hi]) / (sep[hi + 1] - sep[hi])
-    seg = np.linalg.norm(np.diff(pos, axis=0), axis=-1)
-    length = float(seg[lo:hi].sum())
-    if flo < lo:
-        length += (lo - flo) * float(seg[lo - 1])
-    if fhi > hi:
-        length += (fhi - hi) * float(seg[hi])
-    return flo, fhi, length
-
-
-def _interp_at(a, x):
-    """Linear interpolation of a 1-D array at a fractional index x (NaN-safe)."""
-    if not np.isfinite(x):
-        return math.nan
-    i = int(min(max(math.floor(x), 0), len(a) - 2))
-    t = x - i
-    return float((1 - t) * a[i] + t * a[i + 1])
-
-
-def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
-                 flank: str | None = None, n_roll: int = 30, pairs=(-1, 0, 1),
-                 separation: float = DEFAULT_SEPARATION, grid: dict | None = None,
-                 method: str = "second_order",
-                 n_point: int = 41,
-                 easeoff: EaseOff | None = None) -> tuple[xr.Dataset, xr.Dataset]:
-    """Ease-off based unloaded TCA of a case over one mesh cycle (seed §2.3.2, §2.4, §4.4).
-
-    Parameters
-    ----------
-    case : geometry.case.Case
-    misalignment : geometry.assembly.Misalignment, optional
-        ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own ``[misalignment]``; the whole
-        UTCA is recomputed in the misaligned frame.
-    flank : str, optional
-        ``"drive"`` (default), ``"coast"``, or a pinion flank name.
-    n_roll : int
-        Roll positions over one mesh cycle (≥ 4), from the transition M1 (uniform,
-        the end point M2 = M1 + pitch excluded).
-    pairs : sequence of int
-        Tooth-pair offsets; pair k is the pair that comes into mesh k mesh cycles after
-        the reference pair 0 (its contact curve at roll r is Q = r − k·pitch).
-    separation : float — [mm]
-        Separation bounding the unloaded contact line, > 0 (default 0.0063).
-    grid : dict, optional
-        Gear grid (``nu``, ``nv``, ``u_limits``, ``v_limits``).
-    method : str
-        ``"second_order"`` (default) or ``"seed"``, see :func:`contact_curves`.
-    n_point : int
-        Samples along each contact curve (≥ 3).
-    easeoff : contact.easeoff.EaseOff, optional
-        A precomputed ease-off of the same case, flank, misalignment and grid (the LTCA
-        pipeline shares one); ``flank``, ``misalignment`` and ``grid`` are then not used
-        to rebuild it.
-
-    Returns
-    -------
-    easeoff : xarray.Dataset
-        See :func:`contact.easeoff.easeoff_dataset`.
-    utca : xarray.Dataset
-        Dims ``roll``, ``pair``, ``point``, ``path``, ``transition``, ``xyz``; see
-        :func:`utca_dataset`.
-
-    Raises
-    ------
-    InputError
-        For out-of-range arguments (message names the field and range), or when no pair
-        is in contact at some roll position.
-    ModelUnavailableError
-        For face hobbing, or a roll-angle surface that cannot be contoured.
-
-    Notes
-    -----
-    Seed §2.3.2.2: UTE of a pair = minimum of the ease-off along its contact curve; actual
-    UTE = lower envelope over the pairs; the pattern of the reference tooth is bounded by
-    the contact curves at M1 and M2 and by LPP and RPP. When adjacent pairs never cross
-    (contact ratio below one) the cycle is centred on the reference pair's lowest UTE and
-    M1, M2 are NaN.
-    """
-    if int(n_roll) != n_roll or n_roll < 4:
-        raise InputError(f"n_roll: must be an integer >= 4, got {n_roll!r}")
-    if not (math.isfinite(separation) and separation > 0):
-        raise InputError(f"separation: must be a finite length > 0 [mm], got {separation!r}")
-    pairs = tuple(int(k) for k in pairs)
-    if not pairs or len(set(pairs)) != len(pairs) or 0 not in pairs:
-        raise InputError(f"pairs: must be distinct integers including 0, got {pairs!r}")
-    if method not in UTE_METHODS:
-        raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
-    if int(n_point) != n_point or n_point < 3:
-        raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
-    eo = easeoff if easeoff is not None else ease_off(case, flank=flank,
-                                                      misalignment=misalignment, grid=grid)
-    f = _Fields(eo)
-    p = eo.pitch
-    kw = dict(method=method, fields=f, n_point=n_point)
-    m1, m2 = transitions(eo, **kw)
-    if math.isfinite(m1):
-        start = m1
-    elif math.isfinite(m2):
-        start = m2 - p
-    else:
-        scan = np.linspace(0.0, float(np.nanmax(eo.roll_angle)), 65)
-        u0 = pair_transmission_error(eo, scan, **kw)
-        start = float(scan[int(np.nanargmin(u0))]) - 0.5 * p
-        log.warning("unloaded_tca: no transition between adjacent pairs found; the cycle is "
-                    "centred on the reference pair's lowest UTE")
-    roll = start + p * np.arange(int(n_roll)) / int(n_roll)
-    pk = np.array(pairs)
-    cc = contact_curves(eo, roll[:, None] - pk[None, :] * p, **kw)
-    envelope = np.min(np.where(np.isfinite(cc.ute), cc.ute, np.inf), axis=1)
-    if not np.all(np.isfinite(envelope)):
-        lost = roll[~np.isfinite(envelope)]
-        raise InputError(f"case: no tooth pair in contact at roll {lost[0]:.6g} rad "
-                         "(contact loss; check the misalignment)")
-    # extremes of the actual UTE over the cycle: the refined minimum of the reference pair
-    # and the values at the transitions (where the envelope peaks)
-    k0 = pairs.index(0)
-    u0 = cc.ute[:, k0]
-    te_min = float(envelope.min())
-    i = int(np.nanargmin(u0))
-    if 0 < i < len(roll) - 1 and np.all(np.isfinite(u0[i - 1:i + 2])):
-        # vertex of the parabola through the lowest sample and its neighbours
-        em, ec, ep = u0[i - 1], u0[i], u0[i + 1]
-        den = em - 2.0 * ec + ep
-        if den > 0:
-            te_min = min(te_min, float(ec - 0.125 * (em - ep) ** 2 / den))
-    te_tr = np.array([np.nan, np.nan])
-    at = np.flatnonzero(np.isfinite([m1, m2]))
-    if at.size:
-        # both transitions in one batch (the curve ends, to 1e-9 of the face width, may
-        # then differ at round-off level from separate evaluations: ~1e-16 rad of UTE)
-        te_tr[at] = pair_transmission_error(eo, np.array([m1, m2])[at], **kw)
-    te_max = float(np.nanmax(np.r_[envelope, te_tr]))
-    ds = utca_dataset(eo, cc, roll, pk, envelope, separation=separation,
-                      transitions=(m1, m2), transition_te=tuple(te_tr),
-                      te_range=(te_min, te_max), case=case, misalignment=misalignment,
-                      method=method)
-    return easeoff_dataset(eo, case, misalignment=misalignment), ds
-
-
-def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
-                 separation: float, transitions, transition_te, te_range, case: Case,
-                 misalignment: Misalignment | None = None,
-                 method: str = "second_order") -> xr.Dataset:
-    """Assemble the ``/utca`` Dataset from contact curves over (roll, pair).
-
-    Parameters
-    ----------
-    eo : contact.easeoff.EaseOff
-    cc : ContactCurves
-        Batch shape (n_roll, n_pair).
-    roll : array (n_roll,) — [rad]
-    pairs : array (n_pair,) of int
-    envelope : array (n_roll,) — [rad]
-        Lower envelope of the pairs' UTE.
-    separation : float — [mm]
-    transitions : (float, float) — [rad]
-        M1, M2 (NaN if none).
-    transition_te : (float, float) — [rad]
-        UTE at M1 and M2.
-    te_range : (float, float) — [rad]
-        Lowest and highest actual UTE over the cycle (refined).
-    case : geometry.case.Case
-    misalignment : Misalignment, optional
-
-    Returns
-    -------
-    xarray.Dataset
-        ``unloaded_transmission_error`` (roll) [urad], ``pair_transmission_error``
-        (roll, pair) [urad], ``active`` (roll, pair), curve places ``curve_u``,
-        ``curve_v``, ``curve_axial_position``, ``curve_radial_position`` and
-        ``curve_position``/``curve_normal`` (gear frame), ``curve_ease_off`` [urad],
-        ``separation`` [um] (normal gap to the actual gear position), ``contact_pattern``
-        (roll, pair, point), ``contact_line_length`` [mm], the paths LPP/CPP/RPP
-        (``path_u``, ``path_v``, ``path_axial_position``, ``path_radial_position``),
-        ``transition_roll``/``transition_transmission_error`` (M1, M2) and
-        ``peak_to_peak_transmission_error`` [urad].
-    """
-    mis = case.misalignment if misalignment is None else misalignment
-    n_roll, n_pair, n_point = cc.u.shape
-    te = cc.ute
-    active = np.isfinite(te) & (te <= envelope[:, None] + 1e-15)
-    # geometry of the places: projection-plane (z, ρ) by the grid's bilinear map
-    f_ax = RectBivariateSpline(eo.u, eo.v, eo.axial, kx=1, ky=1)
-    f_rd = RectBivariateSpline(eo.u, eo.v, eo.radius, kx=1, ky=1)
-
-    def zr(u, v):
-        fin = np.isfinite(u) & np.isfinite(v)
-        us, vs = np.where(fin, u, eo.u[0]), np.where(fin, v, eo.v[0])
-        return (np.where(fin, f_ax.ev(us, vs), np.nan), np.where(fin, f_rd.ev(us, vs), np.nan))
-
-    cz, cr = zr(cc.u, cc.v)
-    gap = cc.ease_off_angle + cc.gap
-    sep_env = cc.normal_arm * (gap - envelope[:, None, None])
-    sep_own = cc.normal_arm * (gap - te[..., None])
-    pattern = np.zeros((n_roll, n_pair, n_point), dtype=np.int8)
-    length = np.zeros((n_roll, n_pair))
-    path_u = np.full((n_roll, n_pair, 3), np.nan)
-    path_v = np.full((n_roll, n_pair, 3), np.nan)
-    for i in range(n_roll):
-        for j in range(n_pair):
-            k = int(cc.index[i, j])
-            if k < 0:
-                continue
-            s = sep_own[i, j] - separation
-            lo, hi, ln = _stretch(s, cc.position[i, j], k)
-            length[i, j] = ln
-            path_u[i, j] = (_interp_at(cc.u[i, j], lo), cc.contact_u[i, j],
-                            _interp_at(cc.u[i, j], hi))
-            path_v[i, j] = (_interp_at(cc.v[i, j], lo), cc.contact_v[i, j],
-                            _interp_at(cc.v[i, j], hi))
-            if active[i, j]:
-                pattern[i, j] = np.isfinite(s) & (s <= 0)
-    pz, pr = zr(path_u, path_v)
-    p2p = te_range[1] - te_range[0]
-    dims3 = ("roll", "pair", "point")
-    data = {
-        "unloaded_transmission_error": _var(
-            "roll", envelope * 1e6, "urad",
-            "unloaded transmission error: lower envelope of the pairs (gear lag)"),
-        "pair_transmission_error": _var(
-            ("roll", "pair"), te * 1e6, "urad",
-            "unloaded transmission error of each tooth pair (min of the ease-off on its "
-            "contact curve; NaN out of mesh)"),
-        "active": _var(("roll", "pair"), active.astype(np.int8), "1",
-                       "1 where the pair carries the motion (its UTE is the lower envelope)"),
-        "curve_u": _var(dims3, cc.u, "1", "contact curve: gear lengthwise fraction"),
-        "curve_v": _var(dims3, cc.v, "1", "contact curve: gear profile fraction"),
-        "curve_axial_position": _var(dims3, cz, "mm",
-                                     "contact curve: gear projection-plane axial position"),
-        "curve_radial_position": _var(dims3, cr, "mm",
-                                      "contact curve: gear projection-plane radius"),
-        "curve_position": _var((*dims3, "xyz"), cc.position, "mm",
-                               "contact curve point on the real gear flank (gear frame)"),
-        "curve_normal": _var((*dims3, "xyz"), cc.normal, "1",
-                             "real gear flank unit normal at the contact curve point"),
-        "curve_normal_arm": _var(dims3, cc.normal_arm, "mm",
-                                 "rho |n.e_theta| at the curve point: normal gap per radian "
-                                 "of gear rotation"),
-        "curve_ease_off": _var(dims3, cc.ease_off_angle * 1e6, "urad",
-                               "angular ease-off along the contact curve"),
-        "separation": _var(dims3, sep_env * 1e3, "um",
-                           "unloaded separation along the gear normal from the gear at its "
-                           "actual (lower-envelope) position"),
-        "contact_pattern": _var(dims3, pattern, "1",
-                                "1 where the pair is active and its separation is within "
-                                "the threshold"),
-        "contact_line_length": _var(("roll", "pair"), length, "mm",
-                                    "unloaded contact line length (on the gear flank) within "
-                                    "the separation of the pair's own UTE"),
-        "contact_u": _var(("roll", "pair"), cc.contact_u, "1", "contact point H: gear u"),
-        "contact_v": _var(("roll", "pair"), cc.contact_v, "1", "contact point H: gear v"),
-        "path_u": _var(("roll", "pair", "path"), path_u, "1",
-                       "LPP, CPP, RPP: gear lengthwise fraction"),
-        "path_v": _var(("roll", "pair", "path"), path_v, "1",
-                       "LPP, CPP, RPP: gear profile fraction"),
-        "path_axial_position": _var(("roll", "pair", "path"), pz, "mm",
-                                    "LPP, CPP, RPP: gear projection-plane axial position"),
-        "path_radial_position": _var(("roll", "pair", "path"), pr, "mm",
-                                     "LPP, CPP, RPP: gear projection-plane radius"),
-        "transition_roll": _var("transition", np.asarray(transitions, float), "rad",
-                                "roll at which the motion passes to the next pair (M1: pair "
-                                "-1 to 0, M2: pair 0 to +1)"),
-        "transition_transmission_error": _var("transition",
-                                              np.asarray(transition_te, float) * 1e6, "urad",
-                                              "unloaded transmission error at M1, M2"),
-        "peak_to_peak_transmission_error": _var((), p2p * 1e6, "urad",
-                                                "peak-to-peak unloaded transmission error"),
-        "separation_threshold": _var((), separation * 1e3, "um",
-                                     "separation bounding the unloaded contact line"),
-    }
-    coords = {
-        "roll": ("roll", np.asarray(roll, float),
-                 {"units": "rad", "long_name": "pinion roll (value of Q, driving sense)"}),
-        "pair": ("pair", np.asarray(pairs, dtype=np.int32),
-                 {"units": "1", "long_name": "tooth pair offset: mesh cycles after pair 0"}),
-        "point": ("point", np.arange(n_point, dtype=np.int32),
-                  {"units": "1", "long_name": "sample along the contact curve, toe to heel"}),
-        "path": ("path", np.array(["LPP", "CPP", "RPP"]),
-                 {"long_name": "left (toe-side) bound, contact point path, right bound"}),
-        "transition": ("transition", np.array(["M1", "M2"]),
-                       {"long_name": "transition points of the lower envelope"}),
-        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
-    }
-    attrs = {
-        "title": f"{case.name}: unloaded tooth contact analysis (ease-off method)",
-        "method": method,
-        "case": case.name,
-        "pinion_flank": eo.pinion_flank,
-        "gear_flank": eo.gear_flank,
-        "mesh_period": eo.pitch,
-        "mesh_period_units": "rad",
-        "roll_zero": eo.roll_zero,
-        "roll_zero_units": "rad",
-        "drive_sense": eo.drive_sense,
-        "gear_phase": eo.gear_phase,
-        "gear_phase_units": "rad",
-        "ratio": eo.ratio,
-        "kinematics": "pinion rotation = roll_zero + drive_sense * roll; ideal gear rotation = "
-                      "gear_phase - pinion rotation / ratio; transmission error = gear lag",
-        "misalignment": json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
-                                    "delta_G_mm": mis.delta_G,
-                                    "delta_Sigma_deg": math.degrees(mis.delta_Sigma)}),
-        "toolkit_version": __version__,
-        "source": "contact.utca.unloaded_tca (seed 2.3.2.2, 4.4)",
-        "inputs": case.to_toml(),
-    }
-    return xr.Dataset(data, coords=coords, attrs=attrs)

@@ -1,0 +1,36 @@
+"""Loaded tooth contact analysis over the mesh cycle (seed §3.3–3.4, Eq. 3.12–3.14).
+
+The layer that turns the unloaded contact (:mod:`contact.utca`) and the tooth compliance
+(:mod:`contact.compliance`) into the loaded-contact problems of every roll position and
+solves them (:mod:`contact.qp`):
+
+* :mod:`contact.ltca.options` — :class:`LTCAOptions`, the discretisation and solution
+  settings;
+* :mod:`contact.ltca.segments` — the contact segments of every (roll, pair)
+  (:func:`segment_geometry`), built from :mod:`contact.ltca.discretisation` (the segment
+  quadratic, blank clipping), :mod:`contact.ltca.curvature` (R_eq) and
+  :mod:`contact.ltca.edges` (the flank boundary as edge contact);
+* :mod:`contact.ltca.screening` — which segments a roll's problem must take;
+* :mod:`contact.ltca.roll_loop` — the loop over roll positions and torques;
+* :mod:`contact.ltca.dataset` — the ``/ltca`` dataset;
+* :mod:`contact.ltca.transmission_error` — the LTE summary over the mesh cycles;
+* :mod:`contact.ltca.mesh_cycle` — :func:`loaded_tca`, the whole analysis of a case.
+"""
+
+from contact.ltca.edges import EDGE_KINDS, FlankBoundary, flank_boundary
+from contact.ltca.mesh_cycle import loaded_tca, ltca_problems
+from contact.ltca.options import LTCAOptions
+from contact.ltca.segments import segment_geometry
+from contact.ltca.transmission_error import mesh_harmonics, transmission_error_summary
+
+__all__ = [
+    "EDGE_KINDS",
+    "FlankBoundary",
+    "LTCAOptions",
+    "flank_boundary",
+    "loaded_tca",
+    "ltca_problems",
+    "mesh_harmonics",
+    "segment_geometry",
+    "transmission_error_summary",
+]

@@ -1,0 +1,78 @@
+"""Normal curvatures of the real flanks at contact segments: R_eq across a contact line.
+
+R_eq = 1/κ_rel, κ_rel(w) = κ_p(w) + κ_g(w) along w = n × t (t the contact line's tangent),
+each member's normal curvature from its principal curvatures (Euler), evaluated on the
+real surfaces (:func:`geometry.flank.flank_at`) at the segment midpoints (seed Eq. 2.13).
+The envelope solves start from the nearest ease-off node's envelope parameters.
+
+Public functions
+----------------
+pinion_curvature   κ of the real pinion at the mates of gear places, along given directions
+gear_curvature     κ of the real gear at gear-frame points, along given directions
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.interpolate import RectBivariateSpline
+
+from contact.ltca.discretisation import gear_to_pair
+from contact.utca import EaseOff
+from geometry.assembly import rotate_about_axis
+from geometry.curvature import normal_curvature
+from geometry.flank import blank_outline, flank_at, projection_fractions
+
+__all__ = ["gear_curvature", "pinion_curvature"]
+
+
+def _spline(eo: EaseOff, field: np.ndarray) -> RectBivariateSpline:
+    vals = np.array(field, dtype=float)
+    ok = np.isfinite(vals)
+    if not np.all(ok):  # fill masked nodes from the nearest valid node along the profile
+        for i in range(vals.shape[0]):
+            row = vals[i]
+            good = np.flatnonzero(np.isfinite(row))
+            if good.size:
+                vals[i] = np.interp(np.arange(row.size), good, row[good])
+        for j in range(vals.shape[1]):
+            col = vals[:, j]
+            good = np.flatnonzero(np.isfinite(col))
+            if good.size:
+                vals[:, j] = np.interp(np.arange(col.size), good, col[good])
+    return RectBivariateSpline(eo.u, eo.v, np.nan_to_num(vals), kx=3, ky=3, s=0)
+
+
+def pinion_curvature(case, eo: EaseOff, u, v, w_gear, phi):
+    """Normal curvature [1/mm] of the real pinion, at the mates of gear places (u, v),
+    along gear-frame directions ``w_gear`` (..., 3), the pinion turned by φ [rad] and the
+    gear at its ideal rotation (the directions are carried to the pinion frame)."""
+    kin = eo.kinematics
+    ps = flank_at(case, "pinion", eo.pinion_flank, _spline(eo, eo.pinion_axial).ev(u, v),
+                  _spline(eo, eo.pinion_radius).ev(u, v),
+                  guess=_node_guess(eo, eo.pinion_parameters, eo.pinion_section, u, v))
+    w_pair = gear_to_pair(kin, eo.gear_phase - phi / eo.ratio, w_gear, vec=True)
+    w_p = rotate_about_axis(kin.pinion_axis, -np.broadcast_to(phi, u.shape), w_pair) @ \
+        kin.pinion_place[:3, :3]
+    return normal_curvature(ps.kappa1, ps.kappa2, ps.dir1, w_p)
+
+
+def _node_guess(eo: EaseOff, params, section, u, v):
+    """Envelope-parameter guesses (s, θ, q, section) at gear places (u, v): those of the
+    nearest gear grid node (``params`` (nu, nv, 3), ``section`` (nu, nv) of the ease-off;
+    None where the ease-off has none)."""
+    if params is None or section is None:
+        return None
+    iu = np.rint(np.interp(u, eo.u, np.arange(eo.u.size))).astype(int)
+    iv = np.rint(np.interp(v, eo.v, np.arange(eo.v.size))).astype(int)
+    par = params[iu, iv]
+    return par[..., 0], par[..., 1], par[..., 2], section[iu, iv]
+
+
+def gear_curvature(case, eo: EaseOff, position, w_gear):
+    """Normal curvature [1/mm] of the real gear at gear-frame points along ``w_gear``."""
+    z, rho = position[..., 2], np.hypot(position[..., 0], position[..., 1])
+    u, v = projection_fractions(blank_outline(case.gear.blank).corners, z, rho)
+    guess = _node_guess(eo, eo.gear_parameters, eo.gear_section, np.clip(u, 0.0, 1.0),
+                        np.clip(v, eo.v[0], eo.v[-1]))
+    gs = flank_at(case, "gear", eo.gear_flank, z, rho, guess=guess)
+    return normal_curvature(gs.kappa1, gs.kappa2, gs.dir1, w_gear)

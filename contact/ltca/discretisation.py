@@ -1,0 +1,150 @@
+"""Building blocks of the LTCA's discretisation (seed §3.3, Fig. 3.3).
+
+Each contact curve is sampled at 2S + 1 places and split into S segments whose fields
+follow the quadratic through their ends and middle (:class:`SegmentQuadratic`); a segment
+is clipped to the part whose real mate lies inside the mating blank
+(:func:`blank_measure`); points of the reference gear tooth are carried into the pair
+frame at a roll position by :func:`gear_to_pair`.
+
+Public functions
+----------------
+MIN_CLIP          least clipped fraction of a segment that is kept
+SegmentQuadratic  quadratic interpolation, mean and clipping within each segment
+blank_measure     inside measure of pair-frame points in a member's blank
+gear_to_pair      gear-frame points or vectors into the pair frame, gear turned
+fill_rows         fill invalid entries of each row by linear interpolation
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from geometry.assembly import rotate_about_axis
+from geometry.flank import blank_outline, projection_fractions
+
+__all__ = ["MIN_CLIP", "SegmentQuadratic", "blank_measure", "fill_rows", "gear_to_pair"]
+
+
+#: [1] a segment clipped by the pinion blank to less than this fraction of its length is
+#: left out (its load would be below the solution's resolution)
+MIN_CLIP = 1e-6
+
+
+class SegmentQuadratic:
+    """Quadratic interpolation within each segment of a curve sampled at 2S + 1 points.
+
+    Segment k spans the samples 2k (τ = 0), 2k + 1 (τ = τ_m) and 2k + 2 (τ = 1), τ the
+    fraction of the segment's parameter span; the Lagrange quadratic through the three
+    gives a field at any τ (error O(h³)) and its mean over [a, b] (exact for quadratics).
+
+    Parameters
+    ----------
+    fractions : array (2S + 1,) — [1]
+        The sample fractions along the curve (:data:`contact.utca.CURVE_SPACINGS`).
+    """
+
+    def __init__(self, fractions: np.ndarray):
+        x = np.asarray(fractions, float)
+        self.tau_m = (x[1:-1:2] - x[0:-2:2]) / (x[2::2] - x[0:-2:2])  # (S,)
+
+    @staticmethod
+    def _split(x: np.ndarray, vector: bool):
+        if vector:  # vectors (..., 2S+1, 3)
+            return x[..., 0:-1:2, :], x[..., 1::2, :], x[..., 2::2, :]
+        return x[..., 0:-1:2], x[..., 1::2], x[..., 2::2]
+
+    def _basis(self, tau):
+        """Lagrange weights (w0, wm, w1) at τ (..., S)."""
+        tm = self.tau_m
+        w0 = (tau - tm) * (tau - 1.0) / tm
+        wm = tau * (tau - 1.0) / (tm * (tm - 1.0))
+        w1 = tau * (tau - tm) / (1.0 - tm)
+        return w0, wm, w1
+
+    def _combine(self, x, w, vector: bool = False):
+        x0, xm, x1 = self._split(x, vector)
+        if vector:
+            w = tuple(wi[..., None] for wi in w)
+        return w[0] * x0 + w[1] * xm + w[2] * x1
+
+    def at(self, x: np.ndarray, tau: np.ndarray, vector: bool = False) -> np.ndarray:
+        """Field x (..., 2S+1), or vectors (..., 2S+1, 3) with ``vector``, at the fractions
+        τ (..., S) of each segment."""
+        return self._combine(x, self._basis(tau), vector)
+
+    def mean(self, x: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """Mean of field x (..., 2S+1) over [a, b] ⊂ [0, 1] of each segment (..., S)."""
+        a, b = np.broadcast_arrays(a, b)
+        tm = self.tau_m
+        m1 = 0.5 * (a + b)  # mean of τ over [a, b]
+        m2 = (a * a + a * b + b * b) / 3.0  # mean of τ²
+        w0 = (m2 - (tm + 1.0) * m1 + tm) / tm
+        wm = (m2 - m1) / (tm * (tm - 1.0))
+        w1 = (m2 - tm * m1) / (1.0 - tm)
+        return self._combine(x, (w0, wm, w1))
+
+    def clip(self, m: np.ndarray):
+        """Part [a, b] of each segment where a measure m (..., 2S+1) is ≥ 0.
+
+        m is taken as linear between the samples (crossings to second order in h); a
+        segment wholly outside gets a = b = 0, as does one without a curve (NaN). Where m
+        changes sign twice within a segment the part between the outer crossings is kept.
+        """
+        m0, mm, m1 = self._split(m, False)
+        tm = self.tau_m
+        in0, inm, in1 = m0 >= 0, mm >= 0, m1 >= 0
+        with np.errstate(invalid="ignore", divide="ignore"):
+            c0m = tm * m0 / (m0 - mm)  # crossing within [0, τm]
+            cm1 = tm + (1.0 - tm) * mm / (mm - m1)  # crossing within [τm, 1]
+        a = np.where(in0, 0.0, np.where(inm, c0m, np.where(in1, cm1, 0.0)))
+        b = np.where(in1, 1.0, np.where(inm, cm1, np.where(in0, c0m, 0.0)))
+        return a, b
+
+
+def blank_measure(case, kin, member: str, points_pair: np.ndarray,
+                   turn: np.ndarray) -> np.ndarray:
+    """Inside measure of pair-frame points in one member's blank, the member turned.
+
+    Parameters
+    ----------
+    member : str
+        ``"pinion"`` or ``"gear"``.
+    points_pair : array (..., P, 3) — [mm]
+        Points in the pair frame (e.g. the samples of the curves of every (roll, pair);
+        NaN where no curve).
+    turn : array (...) — [rad]
+        The member's rotation about its axis for each group of P points (pinion φ,
+        gear ψ).
+
+    Returns
+    -------
+    array (..., P) — [1]
+        m = min(u, 1 − u, 1 − v) in the member's projection-plane fractions (toe, heel,
+        tip): ≥ 0 inside the blank (NaN where no point).
+    """
+    axis, origin = getattr(kin, f"{member}_axis"), getattr(kin, f"{member}_origin")
+    place = getattr(kin, f"{member}_place")[:3, :3]
+    x = rotate_about_axis(axis, -np.broadcast_to(turn[..., None], points_pair.shape[:-1]),
+                points_pair - origin) @ place
+    fu, fv = projection_fractions(blank_outline(case.member(member).blank).corners, x[..., 2],
+                        np.hypot(x[..., 0], x[..., 1]))
+    return np.minimum(np.minimum(fu, 1.0 - fu), 1.0 - fv)
+
+
+def gear_to_pair(kin, psi, x: np.ndarray, vec: bool = False) -> np.ndarray:
+    """Gear-frame points (or vectors) x (..., 3) [mm] into the pair frame with the gear
+    turned by ψ [rad] (broadcast against x's leading axes)."""
+    shape = np.broadcast_shapes(np.shape(psi), x.shape[:-1])
+    x = np.broadcast_to(x @ kin.gear_place[:3, :3].T, (*shape, 3))
+    q = rotate_about_axis(kin.gear_axis, np.broadcast_to(psi, shape), x)
+    return q if vec else q + kin.gear_origin
+
+
+def fill_rows(a: np.ndarray, valid: np.ndarray) -> np.ndarray:
+    """Replace invalid entries of each row by linear interpolation/extension of the valid."""
+    out = np.array(a, dtype=float)
+    idx = np.arange(out.shape[1])
+    for i in range(out.shape[0]):
+        good = valid[i] & np.isfinite(out[i])
+        out[i] = np.interp(idx, idx[good], out[i, good])
+    return out

@@ -1,0 +1,238 @@
+"""Loaded tooth contact analysis over the mesh cycle (seed §3.3–3.4, Eq. 3.12–3.14).
+
+At each pinion roll position the instantaneous contact curves of every tooth pair that
+may share the load (from the ease-off UTCA, :mod:`contact.utca`) are split into
+segments; each segment carries its midpoint, normal, length, initial separation
+s = (ease-off − UTE) along the normal, moment arm R about the gear axis and the
+equivalent radius R_eq across the contact line. The compliance of the segments
+(:func:`contact.compliance.mesh_compliance`: both members' shells, Sainsot foundation,
+Weber contact) and these data form a :class:`contact.ContactProblem`, solved by any
+registered solver; the multiplier Θ is the loaded rotation, and the loaded transmission
+error is LTE = UTE + Θ (gear lag, the seed's Fig. 3.6 convention).
+
+Weber's contact compliance depends on the load (logarithmically). It is solved by
+Newton's method on the contact deformation δ(F): about the current loads F₀,
+δ ≈ c_s F₀ + c_t (F − F₀) (c_s the secant, c_t the tangent compliance), i.e. the
+problem takes the diagonal c_t and the separation s + (c_s − c_t) F₀; solve, linearise
+again at the new loads, solve again, until the LTE changes by less than
+``weber_tolerance`` (default 1e-3 µrad), or its quadratically shrinking steps foretell a
+next step ten times smaller; 3–5 solves are typical. The first loads share the torque
+evenly over the roll's curve segments (so a roll's result depends on that roll alone). Where
+c_t is not well positive (Hertz half-width near the depth) or a load is at the cap, the
+secant is used there (the fixed-point iteration).
+
+Segment selection (screening): a segment left out of a roll's problem whose gap
+C F + s − R Θ stays open (≥ 0) at the solution changes nothing: the solution on the
+other segments is that of all of them. Each problem takes the segments with
+s < 1.1 R Θ̂ + 1 µm, Θ̂ the rotation of the last computed roll at that torque carried
+over by the UTE difference; after the solve the gaps of the segments left out are
+checked — exactly for those whose compliance is assembled, by s ≥ R Θ for the others
+(enough, as the compliance matrix has no negative entries: the gap is ≥ s − R Θ) — and
+any that would close is added and the roll solved again.
+The structural compliance is assembled once per roll for a pool of segments chosen the
+same way from the first roll's rotation at the largest torque (tests/test_ltca.py
+compares the screened solution with that of all segments).
+
+Moment arm: a gear rotation δ closes the gap at a point by ρ |n·e_θ| δ — the distance of
+the normal's line of action from the gear axis — which is the ``normal_arm`` of the
+ease-off; so R = normal_arm, and s = R (ε + gap − UTE) with ε the angular ease-off.
+
+Discretisation (seed §3.3, Fig. 3.3, made convergent here): each curve is sampled at
+2S + 1 places (cosine spacing by default: the segments are graded towards the curve's
+ends, where the load of the entering and leaving pairs rises into the flank edge); each
+segment follows the quadratic through its ends and middle, is clipped where the real
+pinion's mate leaves the pinion blank (so the line ends on the blank edge whatever S is),
+and carries the mean separation over its clipped part at the middle of that part. Pairs
+whose iso-line has just left the contact region keep a curve through the pinion's own gap
+(:func:`contact.utca.contact_curves` with ``near_misses``), so a leaving pair's load fades
+instead of vanishing. Doubling S or the roll positions changes the LTE by well under
+0.5 µrad (tests/test_ltca_discretisation.py).
+
+Edge contact (:mod:`contact.ltca.edges`, on by default): where a pair's curve passes outside the
+contact region, the region's boundary (gear tip, heel, toe; the pinion's tip edge and
+ends) carries edge segments with the separation ε + ½ K (Q − q)² of the pinion at roll q,
+which continues the curve's own at its end, and R_eq = 1/(1/r_e + κ_other) from the
+edges' rounding radius r_e; they follow the curve segments along the ``segment`` axis
+(``segment_kind``), and the flank and edge peak pressures are reported apart.
+
+R_eq across the contact line: κ_rel(w) = κ_p(w) + κ_g(w) along w = n × t (t the
+contact-line tangent), each member's normal curvature from its principal curvatures
+(Euler), evaluated on the real surfaces at the segment midpoints
+(:func:`geometry.flank.flank_at`); R_eq = 1/κ_rel (seed Eq. 2.13).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import time
+from collections.abc import Callable, Sequence
+
+import numpy as np
+import xarray as xr
+
+from contact.ltca.options import LTCAOptions, edge_radii
+from contact.ltca.roll_loop import solve_rolls
+from contact.ltca.screening import generous_limit
+from contact.ltca.segments import segment_geometry
+from contact.qp import ContactProblem
+from contact.utca import EaseOff, ease_off
+from contact.utca import transitions as _transitions
+from geometry.assembly import Misalignment
+from geometry.errors import InputError
+
+__all__ = ["loaded_tca", "ltca_problems"]
+
+log = logging.getLogger(__name__)
+
+#: the pair window grows (LTCAOptions.pairs) up to this many pairs
+_MAX_PAIRS = 8
+
+
+def loaded_tca(
+    case,
+    torque: Sequence[float] | float,
+    *,
+    misalignment: Misalignment | None = None,
+    flank: str | None = None,
+    options: LTCAOptions | None = None,
+    easeoff: EaseOff | None = None,
+    progress: bool = False,
+    problem_sink: Callable[[ContactProblem], None] | None = None,
+    transitions: tuple[float, float] | None = None,
+) -> xr.Dataset:
+    """Loaded TCA of a case at one or more torques over whole mesh cycles (seed §3.3–3.4).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    torque : float or sequence of float — [N·m]
+        Pinion torques T_p (> 0), the seed's operating variable (Fig. 3.6, Table 3.1).
+        The contact problem carries the gear torque T_g = T_p z_g/z_p (static and
+        lossless: friction enters only in the efficiency stage).
+    misalignment : geometry.assembly.Misalignment, optional
+        ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own.
+    flank : str, optional
+        ``"drive"`` (default) or ``"coast"``.
+    options : LTCAOptions, optional
+    easeoff : contact.utca.easeoff.EaseOff, optional
+        A precomputed ease-off of the same case, flank and misalignment.
+    progress : bool
+        Show a progress bar over roll positions.
+    problem_sink : callable, optional
+        Called with the final :class:`contact.ContactProblem` of every (torque, roll)
+        (after the Weber iteration), e.g. to collect real problems for a solver study.
+    transitions : (float, float), optional — [rad]
+        The transition rolls (M1, M2) of the same ease-off, as
+        :func:`contact.utca.transitions` gives them with its defaults (e.g. the
+        ``transition_roll`` of :func:`contact.utca.unloaded_tca`, which the pipeline has
+        already computed); default: computed here. The roll positions start at M1.
+
+    Returns
+    -------
+    xarray.Dataset
+        The ``/ltca`` dataset (exchange names: ``transmission_error`` [urad] over
+        (``torque``, ``roll``); ``force`` [N] and ``pressure_max`` [MPa] over
+        (``torque``, ``roll``, ``pair``, ``segment``); ``load_share`` [1] over
+        (``torque``, ``roll``, ``pair``); ``torque`` coordinate [N m]), plus load per
+        length, half-width, contact and edge flags, separations, residuals, solver
+        status and times, and the LTE summary over the mesh cycles.
+
+    Raises
+    ------
+    InputError
+        For bad torques or options (the message names the field).
+    """
+    opts = options or LTCAOptions()
+    torques = np.atleast_1d(np.asarray(torque, dtype=float))
+    if torques.ndim != 1 or torques.size == 0 or not np.all(np.isfinite(torques)) or np.any(
+        torques <= 0
+    ):
+        raise InputError(f"torque: must be finite values > 0 [N m], got {torque!r}")
+    if misalignment is not None:
+        case = dataclasses.replace(case, misalignment=misalignment)
+    t0 = time.perf_counter()
+    eo = easeoff if easeoff is not None else ease_off(case, flank=flank)
+    t_easeoff = time.perf_counter() - t0
+    if transitions is None:
+        m1, m2 = _transitions(eo)
+    else:
+        try:
+            m1, m2 = (float(m) for m in transitions)
+        except (TypeError, ValueError) as exc:
+            raise InputError("transitions: must be (M1, M2) [rad] (NaN where none), got "
+                             f"{transitions!r}") from exc
+    start = m1 if math.isfinite(m1) else 0.0
+    n_roll = opts.cycles * opts.rolls_per_cycle
+    roll = start + np.arange(n_roll) * eo.pitch / opts.rolls_per_cycle
+    # edge segments surely separated by more than a generous limit are not worked out
+    # (segment_geometry's edge_limit); the limit is checked against the solution's
+    # R Θ and the analysis repeated with a wider one if it was too tight
+    edge_limit = None
+    if opts.edge_contact:
+        edge_limit = opts.separation_limit or generous_limit(float(torques.max()),
+                                                              eo.ratio)
+    while True:
+        sink: list[ContactProblem] | None = [] if problem_sink is not None else None
+        t1 = time.perf_counter()
+        seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing,
+                               (opts.edge_step, edge_radii(case, opts)) if opts.edge_contact
+                               else None, edge_limit=edge_limit)
+        t_segments = time.perf_counter() - t1
+        ds, reach = solve_rolls(case, eo, opts, torques, roll, seg, m1, m2, progress, sink,
+                                 timing={"easeoff": t_easeoff, "segments": t_segments})
+        # the pairs must span every tooth pair in mesh: the window of roll values they
+        # cover ends at the last roll for the lowest pair and at the first roll for the
+        # highest; a pair loaded there has a neighbour beyond it that may be loaded too
+        share = np.nan_to_num(ds["load_share"].values)  # (torque, roll, pair)
+        last = np.arange(opts.cycles) * opts.rolls_per_cycle + opts.rolls_per_cycle - 1
+        lo, hi = int(np.argmin(opts.pairs)), int(np.argmax(opts.pairs))
+        more = (min(opts.pairs) - 1 if np.any(share[:, last, lo] > 1e-6) else None,
+                max(opts.pairs) + 1 if np.any(share[:, last - opts.rolls_per_cycle + 1, hi]
+                                             > 1e-6) else None)
+        widen = edge_limit is not None and opts.separation_limit is None and reach > edge_limit
+        if (more == (None, None) or len(opts.pairs) >= _MAX_PAIRS) and not widen:
+            break
+        if more != (None, None) and len(opts.pairs) < _MAX_PAIRS:
+            pairs = tuple(sorted({*opts.pairs, *(k for k in more if k is not None)}))
+            log.info("pairs %s: an outermost pair is loaded at the end of the window; "
+                     "again with %s", opts.pairs, pairs)
+            opts = dataclasses.replace(opts, pairs=pairs)
+        if widen:
+            log.info("edge segments: R Θ reached %.3g mm beyond the limit %.3g mm; again "
+                     "with %.3g mm", reach, edge_limit, 2.0 * reach)
+            edge_limit = 2.0 * reach
+    if problem_sink is not None:
+        for problem in sink:
+            problem_sink(problem)
+    return ds
+
+
+def ltca_problems(case, torque, *, misalignment: Misalignment | None = None,
+                  options: LTCAOptions | None = None) -> list:
+    """The real contact problems of a case's LTCA, as a solver study's test set.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    torque : float or sequence — [N·m] pinion torques
+    misalignment : Misalignment, optional
+    options : LTCAOptions, optional
+
+    Returns
+    -------
+    list of contact.qp.benchmark_problems.TestProblem
+        One per (torque, roll position), kind ``ltca``, named
+        ``"<case> T<torque> roll<j>"``.
+    """
+    from contact.qp.benchmark_problems import TestProblem
+
+    collected: list[ContactProblem] = []
+    loaded_tca(case, torque, misalignment=misalignment, options=options,
+               problem_sink=collected.append)
+    out = []
+    for i, p in enumerate(collected):
+        name = p.name.replace(" ", "_") or f"{case.name}_{i}"
+        out.append(TestProblem(f"{name}_{i}", "ltca", p))
+    return out

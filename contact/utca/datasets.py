@@ -1,0 +1,473 @@
+"""The unloaded TCA of a case as labelled datasets: ``/easeoff`` and ``/utca``.
+
+:func:`unloaded_tca` runs the ease-off (:func:`contact.utca.easeoff.ease_off`), the
+transitions and the contact curves of every tooth pair over one mesh cycle
+(:mod:`contact.utca.contact_curves`) and returns the two stage datasets;
+:func:`easeoff_dataset` and :func:`utca_dataset` assemble them from computed pieces.
+Every variable carries ``units`` and ``long_name``; the attributes record the senses and
+phases of the kinematics, the misalignment and the case as TOML text.
+
+Public functions
+----------------
+unloaded_tca       the whole UTCA of a case: (/easeoff, /utca) Datasets
+easeoff_dataset    the ``/easeoff`` Dataset of an EaseOff
+utca_dataset       the ``/utca`` Dataset from computed contact curves
+
+References
+----------
+M. Kolivand, PhD dissertation, Ohio State University, 2009, §2.3.2.2, §2.4, §4.4.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+import xarray as xr
+from scipy.interpolate import RectBivariateSpline
+
+from contact.utca.contact_curves import (
+    DEFAULT_SEPARATION,
+    UTE_METHODS,
+    ContactCurves,
+    contact_curves,
+    pair_transmission_error,
+    transitions,
+)
+from contact.utca.easeoff import EASEOFF_REASONS, EaseOff, ease_off
+from contact.utca.fields import EaseOffFields
+from geometry import __version__
+from geometry.conventions import data_var as _var
+from geometry.errors import InputError
+
+if TYPE_CHECKING:
+    from geometry.assembly import Misalignment
+    from geometry.case import Case
+
+__all__ = ["easeoff_dataset", "unloaded_tca", "utca_dataset"]
+
+log = logging.getLogger(__name__)
+
+
+def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
+                 flank: str | None = None, n_roll: int = 30, pairs=(-1, 0, 1),
+                 separation: float = DEFAULT_SEPARATION, grid: dict | None = None,
+                 method: str = "second_order",
+                 n_point: int = 41,
+                 easeoff: EaseOff | None = None) -> tuple[xr.Dataset, xr.Dataset]:
+    """Ease-off based unloaded TCA of a case over one mesh cycle (seed §2.3.2, §2.4, §4.4).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    misalignment : geometry.assembly.Misalignment, optional
+        ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own ``[misalignment]``; the whole
+        UTCA is recomputed in the misaligned frame.
+    flank : str, optional
+        ``"drive"`` (default), ``"coast"``, or a pinion flank name.
+    n_roll : int
+        Roll positions over one mesh cycle (≥ 4), from the transition M1 (uniform,
+        the end point M2 = M1 + pitch excluded).
+    pairs : sequence of int
+        Tooth-pair offsets; pair k is the pair that comes into mesh k mesh cycles after
+        the reference pair 0 (its contact curve at roll r is Q = r − k·pitch).
+    separation : float — [mm]
+        Separation bounding the unloaded contact line, > 0 (default 0.0063).
+    grid : dict, optional
+        Gear grid (``nu``, ``nv``, ``u_limits``, ``v_limits``).
+    method : str
+        ``"second_order"`` (default) or ``"seed"``, see :func:`contact_curves`.
+    n_point : int
+        Samples along each contact curve (≥ 3).
+    easeoff : contact.utca.easeoff.EaseOff, optional
+        A precomputed ease-off of the same case, flank, misalignment and grid (the LTCA
+        pipeline shares one); ``flank``, ``misalignment`` and ``grid`` are then not used
+        to rebuild it.
+
+    Returns
+    -------
+    easeoff : xarray.Dataset
+        See :func:`contact.utca.easeoff.easeoff_dataset`.
+    utca : xarray.Dataset
+        Dims ``roll``, ``pair``, ``point``, ``path``, ``transition``, ``xyz``; see
+        :func:`utca_dataset`.
+
+    Raises
+    ------
+    InputError
+        For out-of-range arguments (message names the field and range), or when no pair
+        is in contact at some roll position.
+    ModelUnavailableError
+        For face hobbing, or a roll-angle surface that cannot be contoured.
+
+    Notes
+    -----
+    Seed §2.3.2.2: UTE of a pair = minimum of the ease-off along its contact curve; actual
+    UTE = lower envelope over the pairs; the pattern of the reference tooth is bounded by
+    the contact curves at M1 and M2 and by LPP and RPP. When adjacent pairs never cross
+    (contact ratio below one) the cycle is centred on the reference pair's lowest UTE and
+    M1, M2 are NaN.
+    """
+    if int(n_roll) != n_roll or n_roll < 4:
+        raise InputError(f"n_roll: must be an integer >= 4, got {n_roll!r}")
+    if not (math.isfinite(separation) and separation > 0):
+        raise InputError(f"separation: must be a finite length > 0 [mm], got {separation!r}")
+    pairs = tuple(int(k) for k in pairs)
+    if not pairs or len(set(pairs)) != len(pairs) or 0 not in pairs:
+        raise InputError(f"pairs: must be distinct integers including 0, got {pairs!r}")
+    if method not in UTE_METHODS:
+        raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
+    if int(n_point) != n_point or n_point < 3:
+        raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
+    eo = easeoff if easeoff is not None else ease_off(case, flank=flank,
+                                                      misalignment=misalignment, grid=grid)
+    f = EaseOffFields(eo)
+    p = eo.pitch
+    kw = dict(method=method, fields=f, n_point=n_point)
+    m1, m2 = transitions(eo, **kw)
+    if math.isfinite(m1):
+        start = m1
+    elif math.isfinite(m2):
+        start = m2 - p
+    else:
+        scan = np.linspace(0.0, float(np.nanmax(eo.roll_angle)), 65)
+        u0 = pair_transmission_error(eo, scan, **kw)
+        start = float(scan[int(np.nanargmin(u0))]) - 0.5 * p
+        log.warning("unloaded_tca: no transition between adjacent pairs found; the cycle is "
+                    "centred on the reference pair's lowest UTE")
+    roll = start + p * np.arange(int(n_roll)) / int(n_roll)
+    pk = np.array(pairs)
+    cc = contact_curves(eo, roll[:, None] - pk[None, :] * p, **kw)
+    envelope = np.min(np.where(np.isfinite(cc.ute), cc.ute, np.inf), axis=1)
+    if not np.all(np.isfinite(envelope)):
+        lost = roll[~np.isfinite(envelope)]
+        raise InputError(f"case: no tooth pair in contact at roll {lost[0]:.6g} rad "
+                         "(contact loss; check the misalignment)")
+    # extremes of the actual UTE over the cycle: the refined minimum of the reference pair
+    # and the values at the transitions (where the envelope peaks)
+    k0 = pairs.index(0)
+    u0 = cc.ute[:, k0]
+    te_min = float(envelope.min())
+    i = int(np.nanargmin(u0))
+    if 0 < i < len(roll) - 1 and np.all(np.isfinite(u0[i - 1:i + 2])):
+        # vertex of the parabola through the lowest sample and its neighbours
+        em, ec, ep = u0[i - 1], u0[i], u0[i + 1]
+        den = em - 2.0 * ec + ep
+        if den > 0:
+            te_min = min(te_min, float(ec - 0.125 * (em - ep) ** 2 / den))
+    te_tr = np.array([np.nan, np.nan])
+    at = np.flatnonzero(np.isfinite([m1, m2]))
+    if at.size:
+        # both transitions in one batch (the curve ends, to 1e-9 of the face width, may
+        # then differ at round-off level from separate evaluations: ~1e-16 rad of UTE)
+        te_tr[at] = pair_transmission_error(eo, np.array([m1, m2])[at], **kw)
+    te_max = float(np.nanmax(np.r_[envelope, te_tr]))
+    ds = utca_dataset(eo, cc, roll, pk, envelope, separation=separation,
+                      transitions=(m1, m2), transition_te=tuple(te_tr),
+                      te_range=(te_min, te_max), case=case, misalignment=misalignment,
+                      method=method)
+    return easeoff_dataset(eo, case, misalignment=misalignment), ds
+
+
+def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
+                 separation: float, transitions, transition_te, te_range, case: Case,
+                 misalignment: Misalignment | None = None,
+                 method: str = "second_order") -> xr.Dataset:
+    """Assemble the ``/utca`` Dataset from contact curves over (roll, pair).
+
+    Parameters
+    ----------
+    eo : contact.utca.easeoff.EaseOff
+    cc : ContactCurves
+        Batch shape (n_roll, n_pair).
+    roll : array (n_roll,) — [rad]
+    pairs : array (n_pair,) of int
+    envelope : array (n_roll,) — [rad]
+        Lower envelope of the pairs' UTE.
+    separation : float — [mm]
+    transitions : (float, float) — [rad]
+        M1, M2 (NaN if none).
+    transition_te : (float, float) — [rad]
+        UTE at M1 and M2.
+    te_range : (float, float) — [rad]
+        Lowest and highest actual UTE over the cycle (refined).
+    case : geometry.case.Case
+    misalignment : Misalignment, optional
+
+    Returns
+    -------
+    xarray.Dataset
+        ``unloaded_transmission_error`` (roll) [urad], ``pair_transmission_error``
+        (roll, pair) [urad], ``active`` (roll, pair), curve places ``curve_u``,
+        ``curve_v``, ``curve_axial_position``, ``curve_radial_position`` and
+        ``curve_position``/``curve_normal`` (gear frame), ``curve_ease_off`` [urad],
+        ``separation`` [um] (normal gap to the actual gear position), ``contact_pattern``
+        (roll, pair, point), ``contact_line_length`` [mm], the paths LPP/CPP/RPP
+        (``path_u``, ``path_v``, ``path_axial_position``, ``path_radial_position``),
+        ``transition_roll``/``transition_transmission_error`` (M1, M2) and
+        ``peak_to_peak_transmission_error`` [urad].
+    """
+    mis = case.misalignment if misalignment is None else misalignment
+    n_roll, n_pair, n_point = cc.u.shape
+    te = cc.ute
+    active = np.isfinite(te) & (te <= envelope[:, None] + 1e-15)
+    # geometry of the places: projection-plane (z, ρ) by the grid's bilinear map
+    f_ax = RectBivariateSpline(eo.u, eo.v, eo.axial, kx=1, ky=1)
+    f_rd = RectBivariateSpline(eo.u, eo.v, eo.radius, kx=1, ky=1)
+
+    def zr(u, v):
+        fin = np.isfinite(u) & np.isfinite(v)
+        us, vs = np.where(fin, u, eo.u[0]), np.where(fin, v, eo.v[0])
+        return (np.where(fin, f_ax.ev(us, vs), np.nan), np.where(fin, f_rd.ev(us, vs), np.nan))
+
+    cz, cr = zr(cc.u, cc.v)
+    gap = cc.ease_off_angle + cc.gap
+    sep_env = cc.normal_arm * (gap - envelope[:, None, None])
+    sep_own = cc.normal_arm * (gap - te[..., None])
+    pattern = np.zeros((n_roll, n_pair, n_point), dtype=np.int8)
+    length = np.zeros((n_roll, n_pair))
+    path_u = np.full((n_roll, n_pair, 3), np.nan)
+    path_v = np.full((n_roll, n_pair, 3), np.nan)
+    for i in range(n_roll):
+        for j in range(n_pair):
+            k = int(cc.index[i, j])
+            if k < 0:
+                continue
+            s = sep_own[i, j] - separation
+            lo, hi, ln = _stretch(s, cc.position[i, j], k)
+            length[i, j] = ln
+            path_u[i, j] = (_interp_at(cc.u[i, j], lo), cc.contact_u[i, j],
+                            _interp_at(cc.u[i, j], hi))
+            path_v[i, j] = (_interp_at(cc.v[i, j], lo), cc.contact_v[i, j],
+                            _interp_at(cc.v[i, j], hi))
+            if active[i, j]:
+                pattern[i, j] = np.isfinite(s) & (s <= 0)
+    pz, pr = zr(path_u, path_v)
+    p2p = te_range[1] - te_range[0]
+    dims3 = ("roll", "pair", "point")
+    data = {
+        "unloaded_transmission_error": _var(
+            "roll", envelope * 1e6, "urad",
+            "unloaded transmission error: lower envelope of the pairs (gear lag)"),
+        "pair_transmission_error": _var(
+            ("roll", "pair"), te * 1e6, "urad",
+            "unloaded transmission error of each tooth pair (min of the ease-off on its "
+            "contact curve; NaN out of mesh)"),
+        "active": _var(("roll", "pair"), active.astype(np.int8), "1",
+                       "1 where the pair carries the motion (its UTE is the lower envelope)"),
+        "curve_u": _var(dims3, cc.u, "1", "contact curve: gear lengthwise fraction"),
+        "curve_v": _var(dims3, cc.v, "1", "contact curve: gear profile fraction"),
+        "curve_axial_position": _var(dims3, cz, "mm",
+                                     "contact curve: gear projection-plane axial position"),
+        "curve_radial_position": _var(dims3, cr, "mm",
+                                      "contact curve: gear projection-plane radius"),
+        "curve_position": _var((*dims3, "xyz"), cc.position, "mm",
+                               "contact curve point on the real gear flank (gear frame)"),
+        "curve_normal": _var((*dims3, "xyz"), cc.normal, "1",
+                             "real gear flank unit normal at the contact curve point"),
+        "curve_normal_arm": _var(dims3, cc.normal_arm, "mm",
+                                 "rho |n.e_theta| at the curve point: normal gap per radian "
+                                 "of gear rotation"),
+        "curve_ease_off": _var(dims3, cc.ease_off_angle * 1e6, "urad",
+                               "angular ease-off along the contact curve"),
+        "separation": _var(dims3, sep_env * 1e3, "um",
+                           "unloaded separation along the gear normal from the gear at its "
+                           "actual (lower-envelope) position"),
+        "contact_pattern": _var(dims3, pattern, "1",
+                                "1 where the pair is active and its separation is within "
+                                "the threshold"),
+        "contact_line_length": _var(("roll", "pair"), length, "mm",
+                                    "unloaded contact line length (on the gear flank) within "
+                                    "the separation of the pair's own UTE"),
+        "contact_u": _var(("roll", "pair"), cc.contact_u, "1", "contact point H: gear u"),
+        "contact_v": _var(("roll", "pair"), cc.contact_v, "1", "contact point H: gear v"),
+        "path_u": _var(("roll", "pair", "path"), path_u, "1",
+                       "LPP, CPP, RPP: gear lengthwise fraction"),
+        "path_v": _var(("roll", "pair", "path"), path_v, "1",
+                       "LPP, CPP, RPP: gear profile fraction"),
+        "path_axial_position": _var(("roll", "pair", "path"), pz, "mm",
+                                    "LPP, CPP, RPP: gear projection-plane axial position"),
+        "path_radial_position": _var(("roll", "pair", "path"), pr, "mm",
+                                     "LPP, CPP, RPP: gear projection-plane radius"),
+        "transition_roll": _var("transition", np.asarray(transitions, float), "rad",
+                                "roll at which the motion passes to the next pair (M1: pair "
+                                "-1 to 0, M2: pair 0 to +1)"),
+        "transition_transmission_error": _var("transition",
+                                              np.asarray(transition_te, float) * 1e6, "urad",
+                                              "unloaded transmission error at M1, M2"),
+        "peak_to_peak_transmission_error": _var((), p2p * 1e6, "urad",
+                                                "peak-to-peak unloaded transmission error"),
+        "separation_threshold": _var((), separation * 1e3, "um",
+                                     "separation bounding the unloaded contact line"),
+    }
+    coords = {
+        "roll": ("roll", np.asarray(roll, float),
+                 {"units": "rad", "long_name": "pinion roll (value of Q, driving sense)"}),
+        "pair": ("pair", np.asarray(pairs, dtype=np.int32),
+                 {"units": "1", "long_name": "tooth pair offset: mesh cycles after pair 0"}),
+        "point": ("point", np.arange(n_point, dtype=np.int32),
+                  {"units": "1", "long_name": "sample along the contact curve, toe to heel"}),
+        "path": ("path", np.array(["LPP", "CPP", "RPP"]),
+                 {"long_name": "left (toe-side) bound, contact point path, right bound"}),
+        "transition": ("transition", np.array(["M1", "M2"]),
+                       {"long_name": "transition points of the lower envelope"}),
+        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
+    }
+    attrs = {
+        "title": f"{case.name}: unloaded tooth contact analysis (ease-off method)",
+        "method": method,
+        "case": case.name,
+        "pinion_flank": eo.pinion_flank,
+        "gear_flank": eo.gear_flank,
+        "mesh_period": eo.pitch,
+        "mesh_period_units": "rad",
+        "roll_zero": eo.roll_zero,
+        "roll_zero_units": "rad",
+        "drive_sense": eo.drive_sense,
+        "gear_phase": eo.gear_phase,
+        "gear_phase_units": "rad",
+        "ratio": eo.ratio,
+        "kinematics": "pinion rotation = roll_zero + drive_sense * roll; ideal gear rotation = "
+                      "gear_phase - pinion rotation / ratio; transmission error = gear lag",
+        "misalignment": json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
+                                    "delta_G_mm": mis.delta_G,
+                                    "delta_Sigma_deg": math.degrees(mis.delta_Sigma)}),
+        "toolkit_version": __version__,
+        "source": "contact.utca.unloaded_tca (seed 2.3.2.2, 4.4)",
+        "inputs": case.to_toml(),
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _stretch(sep, pos, k):
+    """Contact stretch around sample k where sep ≤ 0 (sep = separation − threshold).
+
+    Returns (lo, hi) fractional sample indices of its ends and the 3-D length [mm].
+    """
+    n = len(sep)
+    sep = sep.tolist()  # Python floats (exact): the scalar walk below without numpy overhead
+    isfinite = math.isfinite
+    if k < 0 or not isfinite(sep[k]) or sep[k] > 0:
+        return math.nan, math.nan, 0.0
+    lo = k
+    while lo > 0 and isfinite(sep[lo - 1]) and sep[lo - 1] <= 0:
+        lo -= 1
+    hi = k
+    while hi < n - 1 and isfinite(sep[hi + 1]) and sep[hi + 1] <= 0:
+        hi += 1
+    flo, fhi = float(lo), float(hi)
+    if lo > 0 and isfinite(sep[lo - 1]):
+        flo = lo - (0.0 - sep[lo]) / (sep[lo - 1] - sep[lo])
+    if hi < n - 1 and isfinite(sep[hi + 1]):
+        fhi = hi + (0.0 - sep[hi]) / (sep[hi + 1] - sep[hi])
+    seg = np.linalg.norm(np.diff(pos, axis=0), axis=-1)
+    length = float(seg[lo:hi].sum())
+    if flo < lo:
+        length += (lo - flo) * float(seg[lo - 1])
+    if fhi > hi:
+        length += (fhi - hi) * float(seg[hi])
+    return flo, fhi, length
+
+
+def _interp_at(a, x):
+    """Linear interpolation of a 1-D array at a fractional index x (NaN-safe)."""
+    if not np.isfinite(x):
+        return math.nan
+    i = int(min(max(math.floor(x), 0), len(a) - 2))
+    t = x - i
+    return float((1 - t) * a[i] + t * a[i + 1])
+
+
+def easeoff_dataset(eo: EaseOff, case: Case, *,
+                    misalignment: Misalignment | None = None) -> xr.Dataset:
+    """The ``/easeoff`` Dataset (dims ``u``, ``v``, ``xyz``) with units and long names.
+
+    Parameters
+    ----------
+    eo : EaseOff
+        From :func:`ease_off`.
+    case : geometry.case.Case
+    misalignment : geometry.assembly.Misalignment, optional
+        The misalignment used (recorded in the attributes); defaults to the case's.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``ease_off`` [um] along the gear normal, ``ease_off_angle`` [urad] (gear lag),
+        ``roll_angle`` [rad] (Q), ``axial_position``/``radial_position`` [mm] (gear
+        projection plane), ``mask`` and ``mask_reason``, the mating pinion point's
+        projection-plane place, the real gear flank (``gear_position``, ``gear_normal``)
+        ``normal_arm`` [mm] and ``gap_curvature`` [1/rad]; attributes with the senses,
+        phases and inputs.
+    """
+    mis = case.misalignment if misalignment is None else misalignment
+    uv = ("u", "v")
+    codes = np.array(sorted(EASEOFF_REASONS), dtype=np.int8)
+    data = {
+        "ease_off": _var(uv, eo.ease_off * 1e3, "um",
+                         "ease-off: real gear to touching conjugate of the pinion, along the "
+                         "gear normal (>= 0: gap)"),
+        "ease_off_angle": _var(uv, eo.ease_off_angle * 1e6, "urad",
+                               "ease-off as gear lag about the gear axis (transmission error)"),
+        "roll_angle": _var(uv, eo.roll_angle, "rad",
+                           "surface of roll angle Q: pinion roll (driving sense) at which "
+                           "the node is in contact, shifted to touch zero"),
+        "axial_position": _var(uv, eo.axial, "mm", "gear projection-plane axial position"),
+        "radial_position": _var(uv, eo.radius, "mm", "gear projection-plane radius"),
+        "pinion_axial_position": _var(uv, eo.pinion_axial, "mm",
+                                      "pinion projection-plane axial position of the mate"),
+        "pinion_radial_position": _var(uv, eo.pinion_radius, "mm",
+                                       "pinion projection-plane radius of the mate"),
+        "pinion_u": _var(uv, eo.pinion_u, "1", "pinion lengthwise fraction of the mate"),
+        "pinion_v": _var(uv, eo.pinion_v, "1", "pinion profile fraction of the mate"),
+        "normal_arm": _var(uv, eo.normal_arm, "mm",
+                           "rho |n.e_theta|: normal displacement per radian of gear rotation"),
+        "gap_curvature": _var(uv, eo.gap_curvature, "1/rad",
+                              "K: angular gap of the pinion to its conjugate at roll Q + t is "
+                              "K t^2 / 2"),
+        "gear_position": _var(("u", "v", "xyz"), eo.gear_position, "mm",
+                              "real gear flank point in the gear frame"),
+        "gear_normal": _var(("u", "v", "xyz"), eo.gear_normal, "1",
+                            "real gear flank unit normal (out of the material)"),
+        "placement_error": _var(uv, eo.placement_error, "mm",
+                                "distance of the conjugate point from the node in the "
+                                "projection plane"),
+        "mask": _var(uv, eo.valid.astype(np.int8), "1",
+                     "1 where the pinion can touch the real gear"),
+        "mask_reason": _var(uv, eo.reason.astype(np.int8), "1", "why a node is masked",
+                            flag_values=codes,
+                            flag_meanings=" ".join(EASEOFF_REASONS[int(c)] for c in codes)),
+    }
+    coords = {
+        "u": ("u", eo.u, {"units": "1", "long_name": "gear lengthwise fraction, toe 0 to heel 1"}),
+        "v": ("v", eo.v, {"units": "1", "long_name": "gear profile fraction, root 0 to tip 1"}),
+        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
+    }
+    attrs = {
+        "title": f"{case.name}: ease-off and surface of roll angle",
+        "case": case.name,
+        "pinion_flank": eo.pinion_flank,
+        "gear_flank": eo.gear_flank,
+        "drive_sense": eo.drive_sense,
+        "lag_sense": eo.lag_sense,
+        "roll_zero": eo.roll_zero,
+        "roll_zero_units": "rad",
+        "gear_phase": eo.gear_phase,
+        "gear_phase_units": "rad",
+        "ratio": eo.ratio,
+        "mesh_period": eo.pitch,
+        "mesh_period_units": "rad",
+        "kinematics": "pinion rotation = roll_zero + drive_sense * Q; ideal gear rotation = "
+                      "gear_phase - pinion rotation / ratio (geometry.assembly frames)",
+        "misalignment": json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
+                                    "delta_G_mm": mis.delta_G,
+                                    "delta_Sigma_deg": math.degrees(mis.delta_Sigma)}),
+        "max_placement_error_mm": float(np.nanmax(eo.placement_error[eo.valid])),
+        "toolkit_version": __version__,
+        "source": "contact.utca.ease_off (seed Eq. 2.19-2.20, 4.1-4.2)",
+        "inputs": case.to_toml(),
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)

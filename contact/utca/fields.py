@@ -1,0 +1,222 @@
+"""The ease-off fields as smooth functions over the gear grid (seed §2.3.2.2, §4.4).
+
+:class:`EaseOffFields` holds bicubic interpolating splines
+(``scipy.interpolate.RectBivariateSpline``, s = 0, which reproduce the exact node values) of
+the fields of an :class:`contact.utca.easeoff.EaseOff` over the gear projection-plane grid
+(u, v): the surface of roll angle Q, the angular ease-off ε, the gap curvature K, the
+normal arm, the real gear flank (points and normals) and the mating pinion point's margin
+in its blank. It answers the questions the contact curves, the edge contact and the LTCA
+ask of the ease-off: which places can be touched (:meth:`EaseOffFields.inside`,
+:meth:`EaseOffFields.measure`), where the iso-line Q = q crosses a lengthwise place
+(:meth:`EaseOffFields.solve_v`), and the gap curvature held within its nodes' range
+(:meth:`EaseOffFields.gap_at`).
+
+ε, Q and K are built from the valid nodes and the computed nodes on the same smooth sheet
+beyond them (both points on their blades' main sections), continued linearly past those
+(:func:`contact.utca.easeoff.fill_missing`): a blade-section junction kinks the fields and
+a cubic spline would carry the kink back. Q must be strictly monotone along the profile
+direction (checked; otherwise ``ModelUnavailableError``), so a contact curve is
+parameterised by the lengthwise fraction u and its profile place v*(u) solved by Newton's
+method on the spline.
+
+Public functions
+----------------
+EaseOffFields   splines of an ease-off's fields and the contact region's tests
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.interpolate import RectBivariateSpline
+
+from contact.utca.easeoff import EaseOff, fill_missing
+from geometry.errors import InputError, ModelUnavailableError
+
+__all__ = ["EaseOffFields"]
+
+_V_NEWTON = 6  # Newton steps of the profile place v*(u) on the spline of Q
+
+
+class EaseOffFields:
+    """Bicubic splines of the ease-off fields over the gear grid (u, v).
+
+    Parameters
+    ----------
+    eo : contact.utca.easeoff.EaseOff
+
+    Attributes
+    ----------
+    eo : EaseOff
+        The ease-off the splines are built on.
+    u, v : ndarray — [1]
+        The gear grid's lengthwise and profile fractions.
+    q, eps, gap : RectBivariateSpline
+        Q [rad], ε [rad] and the gap curvature K [1/rad] over (u, v).
+    arm : RectBivariateSpline
+        Normal arm ρ |n·e_θ| [mm].
+    pos, nrm : list of 3 RectBivariateSpline
+        Components of the real gear flank point [mm] and unit normal (gear frame).
+    margin, pu, pv : RectBivariateSpline
+        The mating pinion point's inside measure in its blank and its lengthwise and
+        profile fractions.
+    computed, cell_ok : ndarray of bool
+        Nodes with computed fields (u, v); grid cells whose four corners are computed.
+    q_sign : int
+        Sign of ∂Q/∂v (Q is monotone along the profile).
+    gap_range : (float, float) — [1/rad]
+        Least and greatest K of the nodes (:meth:`gap_at` holds K within it).
+
+    Raises
+    ------
+    InputError
+        Fewer than 16 valid nodes.
+    ModelUnavailableError
+        Q is not monotone along the profile direction.
+    """
+
+    def __init__(self, eo: EaseOff):
+        self.eo = eo
+        self.u, self.v = eo.u, eo.v
+        computed = np.isfinite(eo.raw_ease_off_angle) & np.isfinite(eo.raw_roll_angle)
+        valid = eo.valid
+        if valid.sum() < 16:
+            raise InputError("easeoff: fewer than 16 valid nodes, nothing to contour")
+        self.computed = computed
+        gear_ok = np.all(np.isfinite(eo.gear_position), axis=-1)
+
+        def spl(fields, ok):
+            # the fields sharing a mask are filled together (same arithmetic per field)
+            filled = fill_missing(np.stack(fields, -1), ok)
+            return [RectBivariateSpline(self.u, self.v, filled[..., k])
+                    for k in range(len(fields))]
+
+        # ε and Q from the valid nodes and, beyond them, from the computed nodes on the same
+        # smooth sheet (both points on their blades' main sections), continued linearly
+        # past those: a section junction (e.g. the gear's fillet) kinks the fields, and a
+        # cubic spline would carry the kink back into the contact region
+        sheet = valid | eo.smooth
+        self.q, self.eps, self.gap = spl(
+            [eo.raw_roll_angle, eo.raw_ease_off_angle, eo.gap_curvature], sheet)
+        k_nodes = eo.gap_curvature[sheet & np.isfinite(eo.gap_curvature)]
+        self.gap_range = ((float(k_nodes.min()), float(k_nodes.max())) if k_nodes.size
+                          else (-np.inf, np.inf))
+        self.arm, *gear = spl(
+            [eo.normal_arm, *np.moveaxis(eo.gear_position, -1, 0),
+             *np.moveaxis(eo.gear_normal, -1, 0)], gear_ok)
+        self.pos, self.nrm = gear[:3], gear[3:]
+        self.margin, self.pu, self.pv = spl([eo.margin, eo.pinion_u, eo.pinion_v], computed)
+        dq = np.diff(np.where(valid, eo.raw_roll_angle, np.nan), axis=1)
+        signs = np.sign(dq[np.isfinite(dq)])
+        if signs.size == 0 or not (np.all(signs > 0) or np.all(signs < 0)):
+            raise ModelUnavailableError(
+                "contact curves: the roll-angle surface is not monotone along the profile "
+                "direction of the gear grid, so a contact curve cannot be parameterised by "
+                "the lengthwise position (not met by bevel or hypoid flanks so far)")
+        self.q_sign = int(signs[0])
+        # cell corners all computed (hard mask): cell (i, j) spans u[i]..u[i+1], v[j]..v[j+1]
+        c = computed
+        self.cell_ok = c[:-1, :-1] & c[1:, :-1] & c[:-1, 1:] & c[1:, 1:]
+
+    def gap_at(self, u, v):
+        """The pinion's gap curvature K [1/rad] at (u, v), held within the range of the
+        nodes' values: near a fold or masked nodes the spline of the filled field can
+        overshoot it (on ISO sample 2 to K < 0 at the gear tip, where the nodes hold
+        K ≥ 0.055: an edge's separation ε + ½ K t² then fell by hundreds of µm)."""
+        return np.clip(self.gap.ev(u, v), *self.gap_range)
+
+    def good_cell(self, u, v):
+        """True where (u, v) lies in a grid cell whose corners were all computed (places
+        beyond the grid count as its edge cells)."""
+        # (np.minimum/np.maximum: np.clip's arithmetic without its wrapper's overhead)
+        iu = np.minimum(np.maximum(np.searchsorted(self.u, u, side="right") - 1, 0),
+                        len(self.u) - 2)
+        iv = np.minimum(np.maximum(np.searchsorted(self.v, v, side="right") - 1, 0),
+                        len(self.v) - 2)
+        return self.cell_ok[iu, iv]
+
+    def inside(self, u, v):
+        """True where (u, v) can be touched: in the grid, good cell, pinion mate in blank."""
+        u0, u1, v0, v1 = self.u[0], self.u[-1], self.v[0], self.v[-1]
+        ok = (u >= u0) & (u <= u1) & (v >= v0) & (v <= v1) & np.isfinite(v)
+        ok &= self.good_cell(np.where(ok, u, u0), np.where(ok, v, v0))
+        # the margin only where the rest holds (the spline is evaluated point by point)
+        ok[ok] = self.margin.ev(u[ok], v[ok]) >= 0.0
+        return ok
+
+    def lattice(self, uc):
+        """Q at the coarse places uc × the grid's profile nodes (cached)."""
+        key = (len(uc), float(uc[0]), float(uc[-1]))
+        if getattr(self, "_lat_key", None) != key:
+            self._lat = self.q(uc, self.v)
+            self._lat_key = key
+        return self._lat
+
+    def measure_terms(self, u, v):
+        """(5, ...) the terms whose least is the inside measure at (u, v) (v finite): the
+        pinion mate's margin in its blank, v − v₀, v₁ − v, u − u₀, u₁ − u."""
+        return np.stack([self.margin.ev(u, v), v - self.v[0], self.v[-1] - v,
+                         u - self.u[0], self.u[-1] - u])
+
+    def measure(self, u, v):
+        """Continuous inside measure: ≥ 0 inside the contact region, −1 where undefined."""
+        fin = np.isfinite(v)
+        vs = np.where(fin, v, self.v[0])
+        c = self.measure_terms(u, vs).min(axis=0)
+        return np.where(fin & self.good_cell(u, vs), c, -1.0)
+
+    def solve_v(self, u, target, v_start=None, lattice=None):
+        """Profile place v*(u) with Q(u, v*) = target (NaN where Q misses target in [v0, v1]).
+
+        Either ``v_start`` (a nearby solution) or ``lattice`` (Q at u × profile nodes, for a
+        bracket) starts Newton's method on the spline.
+        """
+        u = np.asarray(u, dtype=float)
+        target = np.asarray(target, dtype=float)
+        if u.shape != target.shape:
+            shape = np.broadcast_shapes(u.shape, target.shape)
+            u = np.broadcast_to(u, shape)
+            target = np.broadcast_to(target, shape)
+        shape = u.shape
+        if lattice is not None:
+            vn = self.v
+            qn = np.broadcast_to(lattice, (*shape, len(vn)))
+            s = self.q_sign
+            below = (s * (qn - target[..., None])) <= 0
+            k = np.clip(below.sum(-1) - 1, 0, len(vn) - 2)
+            qa = np.take_along_axis(qn, k[..., None], -1)[..., 0]
+            qb = np.take_along_axis(qn, (k + 1)[..., None], -1)[..., 0]
+            t = np.clip((target - qa) / np.where(qb != qa, qb - qa, 1.0), 0.0, 1.0)
+            v = (vn[k] + t * (vn[k + 1] - vn[k])).ravel()
+            miss = ((s * (qn[..., 0] - target) > 0) | (s * (qn[..., -1] - target) < 0)).ravel()
+        else:
+            v_start = np.asarray(v_start, dtype=float)
+            v = (v_start.ravel() if v_start.shape == shape
+                 else np.broadcast_to(v_start, shape).ravel()).copy()
+            v[~np.isfinite(v)] = 0.5 * (self.v[0] + self.v[-1])
+            miss = None
+        return self._newton_v(u.ravel(), target.ravel(), v, miss).reshape(shape)
+
+    def _newton_v(self, uf, tf, v, miss=None):
+        """:meth:`solve_v` on flat arrays from a finite start ``v`` (overwritten)."""
+        v0, v1 = self.v[0], self.v[-1]
+        f = self.q.ev(uf, v) - tf
+        # Newton on the points not yet converged (and not known to miss) only
+        act = np.flatnonzero(~(np.abs(f) < 1e-13) if miss is None
+                             else ~(np.abs(f) < 1e-13) & ~miss)
+        for _ in range(_V_NEWTON):
+            if act.size == 0:
+                break
+            ua, va = uf[act], v[act]
+            d = self.q.ev(ua, va, dy=1)
+            # the spline is defined on [v0, v1] only (FITPACK clamps outside)
+            vn = np.minimum(np.maximum(va - f[act] / np.where(d != 0, d, 1e-30), v0), v1)
+            fa = self.q.ev(ua, vn) - tf[act]
+            v[act], f[act] = vn, fa
+            # a point whose step left it in place (held at v0 or v1 by the clamp) would
+            # repeat the same step: it is finished (a miss unless |f| is already small)
+            act = act[~(np.abs(fa) < 1e-13) & (vn != va)]
+        tol = 1e-9 * (v1 - v0)
+        bad = (v < v0 - tol) | (v > v1 + tol) | (np.abs(f) > 1e-9)
+        if miss is not None:
+            bad |= miss
+        return np.where(bad, np.nan, np.minimum(np.maximum(v, v0), v1))

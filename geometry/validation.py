@@ -1,0 +1,206 @@
+"""Input validators of the whole toolkit: one set, one message style.
+
+Every public function checks its physical inputs at the boundary and raises
+:class:`geometry.errors.InputError` naming the field and the accepted range, so a bad value
+never reaches numpy (no NaN passed on, no crash deep inside). The messages all read
+
+    ``<field>: must be <accepted> [<unit>], got <value>``
+
+e.g. ``roughness: must be finite and > 0 [um], got -1.0`` or
+``poisson_ratio: must be in [0, 0.5) [1], got 0.6``; the unit is left out for counts and
+names. The case-file loader (:mod:`geometry.case`) prefixes the field with its dotted path
+(``pinion.machine.concave.ratio_of_roll: …``) in the same style.
+
+These functions sit at the bottom of the chain (``geometry``) so that ``contact`` and
+``friction`` use them too (DESIGN.md's package rules).
+
+Public functions
+----------------
+real          a finite real number, optionally within bounds
+positive      a finite real number > 0 (optionally ≤ an upper bound)
+real_array    a finite float array, optionally within bounds and of a given rank
+integer       an integer within bounds (bool refused)
+one_of        a value from a fixed set of choices
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection
+from typing import Any
+
+import numpy as np
+
+from geometry.errors import InputError
+
+__all__ = ["integer", "one_of", "positive", "real", "real_array"]
+
+
+def _unit(unit: str) -> str:
+    return f" [{unit}]" if unit else ""
+
+
+def _accepted(low: float | None, high: float | None, low_open: bool, high_open: bool) -> str:
+    """Words for the accepted set: 'finite', 'finite and > 0', 'in [0, 0.5)' …"""
+    if low is None and high is None:
+        return "finite"
+    if high is None:
+        return f"finite and {'>' if low_open else '>='} {low:g}"
+    if low is None:
+        return f"finite and {'<' if high_open else '<='} {high:g}"
+    return f"in {'(' if low_open else '['}{low:g}, {high:g}{')' if high_open else ']'}"
+
+
+def _inside(v, low, high, low_open, high_open):
+    ok = np.isfinite(v)
+    if low is not None:
+        ok &= (v > low) if low_open else (v >= low)
+    if high is not None:
+        ok &= (v < high) if high_open else (v <= high)
+    return ok
+
+
+def real(name: str, value: Any, *, unit: str = "", low: float | None = None,
+         high: float | None = None, low_open: bool = False, high_open: bool = False) -> float:
+    """A finite real number within optional bounds, as a Python float.
+
+    Parameters
+    ----------
+    name : str
+        The field's name, as the caller's signature or the case file spells it.
+    value : Any
+        The value given (bool is refused: it is not a number here).
+    unit : str
+        UDUNITS unit shown in the message (``"mm"``, ``"rad"``, ``"1"``; ``""`` for none).
+    low, high : float, optional
+        Bounds; ``low_open``/``high_open`` exclude them.
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    InputError
+        ``<name>: must be <accepted> [<unit>], got <value>``.
+    """
+    accepted = _accepted(low, high, low_open, high_open)
+    if isinstance(value, (bool, np.bool_)):
+        raise InputError(f"{name}: must be a real number, {accepted}{_unit(unit)}, "
+                         f"got {value!r}")
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: must be a real number, {accepted}{_unit(unit)}, "
+                         f"got {value!r}") from None
+    if not bool(_inside(v, low, high, low_open, high_open)):
+        raise InputError(f"{name}: must be {accepted}{_unit(unit)}, got {value!r}")
+    return v
+
+
+def positive(name: str, value: Any, unit: str = "", *, high: float | None = None) -> float:
+    """A finite real number > 0 (and ≤ ``high`` if given), as a Python float.
+
+    Parameters
+    ----------
+    name, value, unit
+        As :func:`real`.
+    high : float, optional
+        Inclusive upper bound.
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    InputError
+        ``<name>: must be finite and > 0 [<unit>], got <value>`` (or ``in (0, high]``).
+    """
+    return real(name, value, unit=unit, low=0.0, high=high, low_open=True)
+
+
+def real_array(name: str, value: Any, *, unit: str = "", low: float | None = None,
+               high: float | None = None, low_open: bool = False, high_open: bool = False,
+               ndim: int | None = None) -> np.ndarray:
+    """A finite float array within optional bounds (a new array, never a view of ``value``).
+
+    Parameters
+    ----------
+    name, unit, low, high, low_open, high_open
+        As :func:`real`.
+    value : array_like
+        Numbers (any shape, or exactly ``ndim`` dimensions).
+    ndim : int, optional
+        Required number of dimensions.
+
+    Returns
+    -------
+    ndarray of float
+
+    Raises
+    ------
+    InputError
+        Not numeric, of the wrong rank, or with entries outside the accepted set (the
+        message gives how many and the first of them).
+    """
+    accepted = _accepted(low, high, low_open, high_open)
+    if isinstance(value, (bool, np.bool_)):
+        raise InputError(f"{name}: must be real numbers, {accepted}{_unit(unit)}, "
+                         f"got {value!r}")
+    try:
+        arr = np.array(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name}: must be real numbers, {accepted}{_unit(unit)}, got "
+                         f"{type(value).__name__}") from None
+    if ndim is not None and arr.ndim != ndim:
+        raise InputError(f"{name}: must be {ndim}-dimensional, got shape {arr.shape}")
+    ok = _inside(arr, low, high, low_open, high_open)
+    if not np.all(ok):
+        bad = arr[~ok]
+        raise InputError(f"{name}: must be {accepted}{_unit(unit)}, got {bad.size} "
+                         f"value(s) outside, e.g. {float(bad.flat[0])!r}")
+    return arr
+
+
+def integer(name: str, value: Any, low: int | None = None, high: int | None = None) -> int:
+    """An integer within optional inclusive bounds (bool and non-integral floats refused).
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    InputError
+        ``<name>: must be an integer in [low, high], got <value>``.
+    """
+    lo = "-inf" if low is None else str(low)
+    hi = "inf" if high is None else str(high)
+    accepted = f"an integer in [{lo}, {hi}]"
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputError(f"{name}: must be {accepted}, got {value!r}")
+    v = int(value)
+    if (low is not None and v < low) or (high is not None and v > high):
+        raise InputError(f"{name}: must be {accepted}, got {value!r}")
+    return v
+
+
+def one_of(name: str, value: Any, choices: Collection[Any]) -> Any:
+    """``value`` if it is one of ``choices``.
+
+    Raises
+    ------
+    InputError
+        ``<name>: must be one of [...], got <value>`` (choices sorted when they can be).
+    """
+    try:
+        ok = value in choices
+    except TypeError:  # an unhashable value is not one of the choices
+        ok = False
+    if not ok:
+        try:
+            listed = sorted(choices)
+        except TypeError:
+            listed = list(choices)
+        raise InputError(f"{name}: must be one of {listed}, got {value!r}")
+    return value
