@@ -29,25 +29,27 @@ import numpy as np  # noqa: E402
 from tabulate import tabulate  # noqa: E402
 
 import contact.ltca as ltca_mod  # noqa: E402
+import contact.ltca.pool as pool_mod  # noqa: E402
 from contact.compliance import mesh as mesh_mod  # noqa: E402
 from contact.compliance import tooth as tooth_mod  # noqa: E402
 from contact.pipeline import resolve_case  # noqa: E402
 
 
 def record_segments(case, torque: float):
-    """The (segments, model) of every roll position of one LTCA run."""
+    """The (segments, model) of every pool the LTCA assembles in one run (the LTCA maps
+    them in batches with ``mesh_compliance_many``: each element is one roll's pool)."""
     calls = []
-    original = ltca_mod.mesh_compliance
+    original = pool_mod.mesh_compliance_many
 
-    def recorder(case_, segs, **kw):
-        calls.append((segs, kw["model"]))
-        return original(case_, segs, **kw)
+    def recorder(case_, batch, **kw):
+        calls.extend((segs, kw["model"]) for segs in batch)
+        return original(case_, batch, **kw)
 
-    ltca_mod.mesh_compliance = recorder
+    pool_mod.mesh_compliance_many = recorder
     try:
         ltca_mod.loaded_tca(case, [torque])
     finally:
-        ltca_mod.mesh_compliance = original
+        pool_mod.mesh_compliance_many = original
     return calls
 
 

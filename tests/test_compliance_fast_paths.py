@@ -214,7 +214,7 @@ def test_segment_geometry_cycle_reuse_equals_direct():
     roll = 0.1 + np.arange(8) * eo.pitch / 4  # two mesh cycles of 4 rolls
     pairs = np.array([-1, 0, 1])
     seg = segment_geometry(case, eo, roll, pairs, 6)
-    np.testing.assert_array_equal(seg["source"], [0, 1, 2, 3, 0, 1, 2, 3])
+    np.testing.assert_array_equal(seg.source, [0, 1, 2, 3, 0, 1, 2, 3])
     cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
     target = roll[:, None] - (cycle[:, None] + pairs[None, :]) * eo.pitch
     rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
@@ -223,7 +223,7 @@ def test_segment_geometry_cycle_reuse_equals_direct():
                 "r_eq", "ute", "pinion_rotation"):
         # the second cycle's targets differ from the first's by round-off (~1e-16 rad);
         # the iterative curve and curvature solvers reach the same points to ~1e-12
-        np.testing.assert_allclose(seg[key], direct[key], rtol=1e-9, atol=1e-12,
+        np.testing.assert_allclose(getattr(seg, key), getattr(direct, key), rtol=1e-9, atol=1e-12,
                                    equal_nan=True, err_msg=key)
 
 
@@ -317,13 +317,13 @@ def test_mesh_compliance_of_several_rolls_in_one_batch_equals_one_by_one():
     seg = segment_geometry(case, eo, roll, pairs, 8)
     batch = []
     for j in range(roll.size):
-        k, s = np.nonzero(np.isfinite(seg["r_eq"][j]) & (seg["length"][j] > 0))
+        k, s = np.nonzero(np.isfinite(seg.r_eq[j]) & (seg.length[j] > 0))
         batch.append(ContactSegments(
-            midpoints=seg["midpoint_pair"][j, k, s], ends=seg["ends_pair"][j, k, s],
-            normals=seg["normal_pair"][j, k, s], length=seg["length"][j, k, s],
-            r_eq=seg["r_eq"][j, k, s], pair_index=pairs[k], load=seg["length"][j, k, s],
-            pinion_rotation=float(seg["pinion_rotation"][j]),
-            gear_rotation=float(seg["gear_rotation"][j])))
+            midpoints=seg.midpoint_pair[j, k, s], ends=seg.ends_pair[j, k, s],
+            normals=seg.normal_pair[j, k, s], length=seg.length[j, k, s],
+            r_eq=seg.r_eq[j, k, s], pair_index=pairs[k], load=seg.length[j, k, s],
+            pinion_rotation=float(seg.pinion_rotation[j]),
+            gear_rotation=float(seg.gear_rotation[j])))
     # a roll with two tooth pairs in mesh: blocks of several pairs per roll are covered
     assert max(len(np.unique(b.pair_index)) for b in batch) >= 2
     many = mesh_compliance_many(case, batch)

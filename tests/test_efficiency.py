@@ -95,11 +95,11 @@ def test_constant_friction_matches_the_path_of_contact_estimate(name):
     m1, _ = transitions(eo)
     roll = m1 + np.arange(20) * eo.pitch / 20
     seg = segment_geometry(case, eo, roll, (-1, 0, 1, 2), 24)
-    lag = np.where(np.isfinite(seg["r_eq"]), seg["lag"], np.nan)
+    lag = np.where(np.isfinite(seg.r_eq), seg.lag, np.nan)
     h = [np.unravel_index(np.nanargmin(lag[j]), lag[j].shape) for j in range(roll.size)]
 
     def at_h(key):
-        return np.array([seg[key][j][k, s] for j, (k, s) in enumerate(h)])
+        return np.array([getattr(seg, key)[j][k, s] for j, (k, s) in enumerate(h)])
 
     kin = eo.kinematics
     v = surface_velocities(

@@ -96,8 +96,8 @@ def test_contact_line_length_is_independent_of_the_segment_count():
     total = []
     for S in (12, 48):
         seg = segment_geometry(case, eo, roll, (-1, 0, 1, 2), S)
-        ok = np.isfinite(seg["r_eq"])
-        total.append(np.where(ok, seg["length"], 0.0).sum(axis=(1, 2)))
+        ok = np.isfinite(seg.r_eq)
+        total.append(np.where(ok, seg.length, 0.0).sum(axis=(1, 2)))
     np.testing.assert_allclose(total[0], total[1], rtol=3e-3)
 
 

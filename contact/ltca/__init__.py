@@ -5,13 +5,18 @@ The layer that turns the unloaded contact (:mod:`contact.utca`) and the tooth co
 solves them (:mod:`contact.qp`):
 
 * :mod:`contact.ltca.options` — :class:`LTCAOptions`, the discretisation and solution
-  settings;
+  settings, and :class:`~contact.ltca.options.LTCASetup`, what one analysis runs on;
 * :mod:`contact.ltca.segments` — the contact segments of every (roll, pair)
-  (:func:`segment_geometry`), built from :mod:`contact.ltca.discretisation` (the segment
-  quadratic, blank clipping), :mod:`contact.ltca.curvature` (R_eq) and
-  :mod:`contact.ltca.edges` (the flank boundary as edge contact);
+  (:func:`segment_geometry` → :class:`~contact.ltca.segments.Segments`), built from
+  :mod:`contact.ltca.discretisation` (the segment quadratic, blank clipping),
+  :mod:`contact.ltca.curvature` (R_eq) and :mod:`contact.ltca.edges` (the flank boundary
+  as edge contact);
 * :mod:`contact.ltca.screening` — which segments a roll's problem must take;
-* :mod:`contact.ltca.roll_loop` — the loop over roll positions and torques;
+* :mod:`contact.ltca.pool` — their structural compliance, assembled once per roll;
+* :mod:`contact.ltca.weber` — one roll's problem with Weber's compliance iterated
+  (Newton) to the loads;
+* :mod:`contact.ltca.roll_loop` — the loop over roll positions and torques, accumulating
+  :class:`~contact.ltca.results.RollResults` (:mod:`contact.ltca.results`);
 * :mod:`contact.ltca.dataset` — the ``/ltca`` dataset;
 * :mod:`contact.ltca.transmission_error` — the LTE summary over the mesh cycles;
 * :mod:`contact.ltca.mesh_cycle` — :func:`loaded_tca`, the whole analysis of a case.
@@ -19,14 +24,16 @@ solves them (:mod:`contact.qp`):
 
 from contact.ltca.edges import EDGE_KINDS, FlankBoundary, flank_boundary
 from contact.ltca.mesh_cycle import loaded_tca, ltca_problems
-from contact.ltca.options import LTCAOptions
-from contact.ltca.segments import segment_geometry
+from contact.ltca.options import LTCAOptions, LTCASetup
+from contact.ltca.segments import Segments, segment_geometry
 from contact.ltca.transmission_error import mesh_harmonics, transmission_error_summary
 
 __all__ = [
     "EDGE_KINDS",
     "FlankBoundary",
     "LTCAOptions",
+    "LTCASetup",
+    "Segments",
     "flank_boundary",
     "loaded_tca",
     "ltca_problems",

@@ -1,5 +1,12 @@
 """The ``/ltca`` dataset of a loaded TCA: loads, pressures, LTE and its summary.
 
+Every variable carries ``units`` and ``long_name`` (the exchange names of DESIGN.md:
+``transmission_error`` [urad] over (``torque``, ``roll``); ``force`` [N] and
+``pressure_max`` [MPa] over (``torque``, ``roll``, ``pair``, ``segment``); ``load_share``
+[1] over (``torque``, ``roll``, ``pair``)); the attributes record the solver, the
+transitions, the options and the misalignment as JSON, the edge radii and the members'
+axes (which the efficiency stage needs).
+
 Public functions
 ----------------
 ltca_dataset        assemble the ``/ltca`` Dataset
@@ -15,7 +22,10 @@ import numpy as np
 import xarray as xr
 
 from contact.ltca.edges import EDGE_KINDS
-from contact.ltca.options import edge_radii, json_options
+from contact.ltca.options import LTCASetup, edge_radii, json_options
+from contact.ltca.results import RollResults
+from contact.ltca.screening import Screening
+from contact.ltca.segments import Segments
 from contact.ltca.transmission_error import transmission_error_summary
 from contact.qp.problem import RESIDUALS
 from geometry import __version__
@@ -23,103 +33,138 @@ from geometry.conventions import data_var as _var
 
 __all__ = ["json_misalignment", "ltca_dataset"]
 
+_DIMS4 = ("torque", "roll", "pair", "segment")
+_DIMS3 = ("torque", "roll", "pair")
+_DIMS2 = ("torque", "roll")
+_SEGMENT_DIMS = ("roll", "pair", "segment")
 
-def ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, contact,
-                  in_problem, rotation, resid, found, status, solve_time, weber_iters,
-                  compliance_time, n_seg, m1, m2, timing) -> xr.Dataset:
-    NT, _J, _K, S = out["force"].shape
-    F = np.nan_to_num(out["force"])
-    R = np.nan_to_num(seg["moment_arm"])[None]
+
+def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
+                 results: RollResults, timing: dict[str, float]) -> xr.Dataset:
+    """The ``/ltca`` Dataset of an analysis.
+
+    Parameters
+    ----------
+    setup : LTCASetup
+        Case, ease-off, options, torques (NT,) [N·m], roll positions (J,) [rad],
+        transitions.
+    seg : Segments
+        The segments (J, K, S) the problems were built on.
+    screening : Screening
+        Their separations [mm] and each roll's UTE [rad].
+    results : RollResults
+        The solutions (NT, J, K, S).
+    timing : dict
+        ``easeoff`` and ``segments`` times [s].
+
+    Returns
+    -------
+    xarray.Dataset
+        Dims ``torque``, ``roll``, ``pair``, ``segment``, ``harmonic``, ``u``, ``v``,
+        ``xyz``; see the module docstring.
+    """
+    data = {
+        **_load_vars(setup, seg, screening, results),
+        **_segment_vars(seg, screening),
+        **_solution_vars(seg, results),
+        **_summary_vars(setup, seg, results, screening.ute),
+    }
+    return xr.Dataset(data, coords=_coords(setup, seg),
+                      attrs=_attrs(setup, timing))
+
+
+def _load_vars(setup: LTCASetup, seg: Segments, screening: Screening,
+               results: RollResults) -> dict:
+    """The LTE, the loaded rotation, the UTE and the per-segment loads."""
+    lte = (screening.ute[None, :] + results.rotation) * 1e6  # urad
+    return {
+        "transmission_error": _var(_DIMS2, lte, "urad",
+                                   "loaded transmission error (gear lag, UTE + loaded rotation)"),
+        "loaded_rotation": _var(_DIMS2, results.rotation * 1e6, "urad",
+                                "loaded rotation Theta of the contact problem"),
+        "unloaded_transmission_error": _var(("roll",), screening.ute * 1e6, "urad",
+                                            "unloaded transmission error (lower envelope)"),
+        "force": _var(_DIMS4, results.force, "N", "segment force"),
+        "load_per_length": _var(_DIMS4, results.load_per_length, "N/mm",
+                                "load per unit length"),
+        "pressure_max": _var(_DIMS4, results.pressure_max, "MPa",
+                             "maximum Hertzian pressure (line contact)"),
+        "half_width": _var(_DIMS4, results.half_width, "mm", "Hertzian half-width"),
+        "contact": _var(_DIMS4, results.contact, "1", "segment in contact (1) or open (0)"),
+        "in_problem": _var(_DIMS4, results.in_problem, "1",
+                           "segment in the contact problem (1) or left out, its gap open "
+                           "(0)"),
+    }
+
+
+def _segment_vars(seg: Segments, screening: Screening) -> dict:
+    """The geometry of the segments over (roll, pair, segment)."""
+    d = _SEGMENT_DIMS
+    return {
+        "separation": _var(d, screening.separation, "mm",
+                           "initial separation (ease-off relative to the UTE)"),
+        "moment_arm": _var(d, seg.moment_arm, "mm",
+                           "moment arm of the contact normal about the gear axis"),
+        "segment_length": _var(d, seg.length, "mm", "segment length"),
+        "equivalent_radius": _var(d, seg.r_eq, "mm",
+                                  "equivalent radius across the contact line"),
+        "segment_u": _var(d, seg.u, "1",
+                          "gear lengthwise fraction of the segment midpoint (toe 0, heel 1)"),
+        "segment_v": _var(d, seg.v, "1",
+                          "gear profile fraction of the segment midpoint (root 0, tip 1)"),
+        "segment_position": _var((*d, "xyz"), seg.midpoint, "mm",
+                                 "segment midpoint on the reference gear tooth, gear frame"),
+        "contact_point": _var((*d, "xyz"), seg.midpoint_pair, "mm",
+                              "segment midpoint in the pair frame at the roll position"),
+        "contact_normal": _var((*d, "xyz"), seg.normal_pair, "1",
+                               "contact normal (out of the pinion) in the pair frame"),
+        "contact_tangent": _var((*d, "xyz"), seg.tangent_pair, "1",
+                                "unit tangent of the contact line in the pair frame"),
+    }
+
+
+def _solution_vars(seg: Segments, results: RollResults) -> dict:
+    """Load sharing, edge contact, certification, solver status, residuals and times."""
+    F = np.nan_to_num(results.force)
+    R = np.nan_to_num(seg.moment_arm)[None]
     pair_torque = np.sum(F * R, axis=-1)  # (NT, J, K) N·mm
     share = pair_torque / np.maximum(pair_torque.sum(axis=-1, keepdims=True), 1e-300)
-    share = np.where(found[..., None] > 0, share, np.nan)
-    lte = (ute_env[None, :] + rotation) * 1e6  # urad
+    share = np.where(results.found[..., None] > 0, share, np.nan)
     # edge contact: the first or last segment of a curve (on the flank boundary: the gear
     # blank's edge where the curve ends, the pinion blank's edge where it is clipped) or an
     # edge segment loaded
-    loaded = contact > 0
-    curve = seg["kind"] == 0
-    valid = np.isfinite(seg["r_eq"]) & (seg["length"] > 0)
+    loaded = results.contact > 0
+    curve = seg.kind == 0
+    valid = np.isfinite(seg.r_eq) & (seg.length > 0)
     edge = (_edge_loaded(loaded[..., curve], valid[..., curve])
             | np.any(loaded[..., ~curve], axis=-1)).astype(np.int8)
     pairs_in_contact = np.sum(np.any(loaded, axis=-1), axis=-1)
-    # LTE summary over the mesh cycles
-    harm = np.full((NT, 3), np.nan)
-    summ = {k: np.full(NT, np.nan) for k in ("mean", "peak_to_peak", "rms", "harmonic_rss")}
-    # harmonics the roll sampling resolves: 2n + 1 ≤ samples per cycle (else NaN)
-    n_h = min(3, (roll.size // max(opts.cycles, 1) - 1) // 2)
-    for it in range(NT):
-        if np.all(np.isfinite(lte[it])) and n_h >= 1:
-            s = transmission_error_summary(roll, lte[it], eo.pitch, n_h)
-            harm[it, :n_h] = s["harmonics"]
-            for k in summ:
-                summ[k][it] = s[k]
-    # loaded contact pattern: envelope of the maximum pressure on the gear grid nodes
-    nu, nv = eo.u.size, eo.v.size
-    env = np.zeros((NT, nu, nv))
-    # the ease-off grid fractions are uniform in [u0, u1] × [v0, v1]: nearest node
-    u0, u1 = float(eo.u[0]), float(eo.u[-1])
-    v0, v1 = float(eo.v[0]), float(eo.v[-1])
-    ui = np.rint((seg["u"] - u0) / (u1 - u0) * (nu - 1))
-    vi = np.rint((seg["v"] - v0) / (v1 - v0) * (nv - 1))
-    good = np.isfinite(ui) & np.isfinite(vi)
-    uu = np.clip(np.where(good, ui, 0), 0, nu - 1).astype(int)
-    vv = np.clip(np.where(good, vi, 0), 0, nv - 1).astype(int)
-    for it in range(NT):
-        p = np.nan_to_num(out["pressure_max"][it])
-        np.maximum.at(env[it], (uu[good], vv[good]), p[good])
-    pairs = np.asarray(opts.pairs)
-    dims4 = ("torque", "roll", "pair", "segment")
-    dims3 = ("torque", "roll", "pair")
-    dims2 = ("torque", "roll")
-    data = {
-        "transmission_error": _var(dims2, lte, "urad",
-                                   "loaded transmission error (gear lag, UTE + loaded rotation)"),
-        "loaded_rotation": _var(dims2, rotation * 1e6, "urad",
-                                "loaded rotation Theta of the contact problem"),
-        "unloaded_transmission_error": _var(("roll",), ute_env * 1e6, "urad",
-                                            "unloaded transmission error (lower envelope)"),
-        "force": _var(dims4, out["force"], "N", "segment force"),
-        "load_per_length": _var(dims4, out["load_per_length"], "N/mm", "load per unit length"),
-        "pressure_max": _var(dims4, out["pressure_max"], "MPa",
-                             "maximum Hertzian pressure (line contact)"),
-        "half_width": _var(dims4, out["half_width"], "mm", "Hertzian half-width"),
-        "contact": _var(dims4, contact, "1", "segment in contact (1) or open (0)"),
-        "in_problem": _var(dims4, in_problem, "1",
-                           "segment in the contact problem (1) or left out, its gap open "
-                           "(0)"),
-        "separation": _var(("roll", "pair", "segment"), sep_all, "mm",
-                           "initial separation (ease-off relative to the UTE)"),
-        "moment_arm": _var(("roll", "pair", "segment"), seg["moment_arm"], "mm",
-                           "moment arm of the contact normal about the gear axis"),
-        "segment_length": _var(("roll", "pair", "segment"), seg["length"], "mm",
-                               "segment length"),
-        "equivalent_radius": _var(("roll", "pair", "segment"), seg["r_eq"], "mm",
-                                  "equivalent radius across the contact line"),
-        "segment_u": _var(("roll", "pair", "segment"), seg["u"], "1",
-                          "gear lengthwise fraction of the segment midpoint (toe 0, heel 1)"),
-        "segment_v": _var(("roll", "pair", "segment"), seg["v"], "1",
-                          "gear profile fraction of the segment midpoint (root 0, tip 1)"),
-        "segment_position": _var(("roll", "pair", "segment", "xyz"), seg["midpoint"], "mm",
-                                 "segment midpoint on the reference gear tooth, gear frame"),
-        "contact_point": _var(("roll", "pair", "segment", "xyz"), seg["midpoint_pair"], "mm",
-                              "segment midpoint in the pair frame at the roll position"),
-        "contact_normal": _var(("roll", "pair", "segment", "xyz"), seg["normal_pair"], "1",
-                               "contact normal (out of the pinion) in the pair frame"),
-        "contact_tangent": _var(("roll", "pair", "segment", "xyz"), seg["tangent_pair"], "1",
-                                "unit tangent of the contact line in the pair frame"),
-        "load_share": _var(dims3, share, "1", "share of the gear torque carried by the pair"),
-        "edge_contact": _var(dims3, edge, "1",
+    return {
+        "load_share": _var(_DIMS3, share, "1", "share of the gear torque carried by the pair"),
+        "edge_contact": _var(_DIMS3, edge, "1",
                              "load reaches the end of the pair's contact curve (flank edge)"),
-        "pairs_in_contact": _var(dims2, pairs_in_contact, "1", "number of pairs in contact"),
-        "found": _var(dims2, found, "1", "certified solution found (1) or not (0)"),
-        "status": _var(dims2, status.astype(str), None, "solver status"),
-        "solve_time": _var(dims2, solve_time, "s", "solver time over the Weber iterations"),
-        "weber_iterations": _var(dims2, weber_iters, "1", "Weber linearisation iterations"),
-        "compliance_time": _var(("roll",), compliance_time, "s", "compliance assembly time"),
-        "n_segments": _var(("roll",), n_seg, "1", "segments in the contact problem"),
-        **{f"residual_{r}": _var(dims2, resid[r], "1", f"relative {r} residual")
+        "pairs_in_contact": _var(_DIMS2, pairs_in_contact, "1", "number of pairs in contact"),
+        "found": _var(_DIMS2, results.found, "1", "certified solution found (1) or not (0)"),
+        "status": _var(_DIMS2, results.status.astype(str), None, "solver status"),
+        "solve_time": _var(_DIMS2, results.solve_time, "s",
+                           "solver time over the Weber iterations"),
+        "weber_iterations": _var(_DIMS2, results.weber_iterations, "1",
+                                 "Weber linearisation iterations"),
+        "compliance_time": _var(("roll",), results.compliance_time, "s",
+                                "compliance assembly time"),
+        "n_segments": _var(("roll",), results.n_segments, "1",
+                           "segments in the contact problem"),
+        **{f"residual_{r}": _var(_DIMS2, results.residuals[r], "1", f"relative {r} residual")
            for r in RESIDUALS},
+    }
+
+
+def _summary_vars(setup: LTCASetup, seg: Segments, results: RollResults,
+                  ute: np.ndarray) -> dict:
+    """The LTE summary over the mesh cycles, the peak pressures and the loaded pattern."""
+    summ, harm = _lte_summary(setup, (ute[None, :] + results.rotation) * 1e6)
+    curve = seg.kind == 0
+    return {
         "lte_mean": _var(("torque",), summ["mean"], "urad", "mean loaded transmission error"),
         "lte_peak_to_peak": _var(("torque",), summ["peak_to_peak"], "urad",
                                  "peak-to-peak loaded transmission error"),
@@ -129,25 +174,71 @@ def ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, cont
         "lte_harmonic_rss": _var(("torque",), summ["harmonic_rss"], "urad",
                                  "root-sum-square of the first three harmonic amplitudes "
                                  "(the seed's Table 3.1 RMS)"),
-        "pressure_max_flank": _var(("torque",), _peak(out["pressure_max"], curve), "MPa",
+        "pressure_max_flank": _var(("torque",), _peak(results.pressure_max, curve), "MPa",
                                    "peak Hertzian pressure on the contact curves (line "
                                    "contact of the flanks)"),
-        "pressure_max_edge": _var(("torque",), _peak(out["pressure_max"], ~curve), "MPa",
+        "pressure_max_edge": _var(("torque",), _peak(results.pressure_max, ~curve), "MPa",
                                   "peak Hertzian pressure of the edge contact (edge rounding "
                                   "on the mating flank; 0 where none)"),
-        "pressure_envelope": _var(("torque", "u", "v"), env, "MPa",
+        "pressure_envelope": _var(("torque", "u", "v"),
+                                  _pressure_envelope(setup, seg, results.pressure_max), "MPa",
                                   "loaded contact pattern: envelope of the maximum pressure "
                                   "over the roll positions, on the gear grid"),
     }
-    coords = {
-        "torque": ("torque", torques, {"units": "N m", "long_name": "pinion torque"}),
-        "gear_torque": ("torque", torques * eo.ratio,
+
+
+def _lte_summary(setup: LTCASetup, lte: np.ndarray) -> tuple[dict, np.ndarray]:
+    """Mean, peak-to-peak, RMS and harmonic RSS (NT,) and the first three harmonic
+    amplitudes (NT, 3) [urad] of the LTE (NT, J) over the mesh cycles (NaN where a roll
+    has no solution or the sampling does not resolve a harmonic: 2n + 1 ≤ samples per
+    cycle)."""
+    NT = lte.shape[0]
+    roll, cycles = setup.roll, setup.options.cycles
+    harm = np.full((NT, 3), np.nan)
+    summ = {k: np.full(NT, np.nan) for k in ("mean", "peak_to_peak", "rms", "harmonic_rss")}
+    n_h = min(3, (roll.size // max(cycles, 1) - 1) // 2)
+    for it in range(NT):
+        if np.all(np.isfinite(lte[it])) and n_h >= 1:
+            s = transmission_error_summary(roll, lte[it], setup.easeoff.pitch, n_h)
+            harm[it, :n_h] = s["harmonics"]
+            for k in summ:
+                summ[k][it] = s[k]
+    return summ, harm
+
+
+def _pressure_envelope(setup: LTCASetup, seg: Segments, pressure: np.ndarray) -> np.ndarray:
+    """(NT, nu, nv) [MPa] the loaded contact pattern: the envelope of the maximum pressure
+    (NT, J, K, S) over the roll positions, on the nearest gear grid nodes."""
+    eo = setup.easeoff
+    nu, nv = eo.u.size, eo.v.size
+    env = np.zeros((pressure.shape[0], nu, nv))
+    # the ease-off grid fractions are uniform in [u0, u1] × [v0, v1]: nearest node
+    u0, u1 = float(eo.u[0]), float(eo.u[-1])
+    v0, v1 = float(eo.v[0]), float(eo.v[-1])
+    ui = np.rint((seg.u - u0) / (u1 - u0) * (nu - 1))
+    vi = np.rint((seg.v - v0) / (v1 - v0) * (nv - 1))
+    good = np.isfinite(ui) & np.isfinite(vi)
+    uu = np.clip(np.where(good, ui, 0), 0, nu - 1).astype(int)
+    vv = np.clip(np.where(good, vi, 0), 0, nv - 1).astype(int)
+    for it in range(pressure.shape[0]):
+        p = np.nan_to_num(pressure[it])
+        np.maximum.at(env[it], (uu[good], vv[good]), p[good])
+    return env
+
+
+def _coords(setup: LTCASetup, seg: Segments) -> dict:
+    eo, roll = setup.easeoff, setup.roll
+    return {
+        "torque": ("torque", setup.torques, {"units": "N m", "long_name": "pinion torque"}),
+        "gear_torque": ("torque", setup.torques * eo.ratio,
                         {"units": "N m", "long_name": "gear torque (lossless)"}),
         "roll": ("roll", roll, {"units": "rad",
                                 "long_name": "pinion roll angle (Q units, driving sense)"}),
-        "pair": ("pair", pairs, {"units": "1", "long_name": "tooth-pair offset"}),
-        "segment": ("segment", np.arange(S), {"units": "1", "long_name": "segment index"}),
-        "segment_kind": ("segment", np.array(("curve", *EDGE_KINDS))[seg["kind"]],
+        "pair": ("pair", np.asarray(setup.options.pairs),
+                 {"units": "1", "long_name": "tooth-pair offset"}),
+        "segment": ("segment", np.arange(seg.shape[2]),
+                    {"units": "1", "long_name": "segment index"}),
+        "segment_kind": ("segment", np.array(("curve", *EDGE_KINDS))[seg.kind],
                          {"long_name": "contact curve segment, or the flank edge of an edge "
                                        "segment (contact.ltca.EDGE_KINDS)"}),
         "harmonic": ("harmonic", np.arange(1, 4), {"units": "1",
@@ -158,7 +249,13 @@ def ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, cont
         "mesh_cycle": ("roll", (roll - roll[0]) / eo.pitch,
                        {"units": "1", "long_name": "mesh cycles from the first roll position"}),
     }
-    attrs = {
+
+
+def _attrs(setup: LTCASetup, timing: dict[str, float]) -> dict:
+    case, eo, opts = setup.case, setup.easeoff, setup.options
+    m1, m2 = setup.transitions
+    radii = edge_radii(case, opts) if opts.edge_contact else (np.nan, np.nan)
+    return {
         "title": "loaded tooth contact analysis",
         "case": case.name,
         "toolkit_version": __version__,
@@ -173,14 +270,13 @@ def ltca_dataset(case, eo, opts, torques, roll, seg, sep_all, ute_env, out, cont
         "time_segments_s": timing["segments"],
         "misalignment": json_misalignment(case.misalignment),
         "ratio": float(eo.ratio),
-        "edge_radius_pinion_mm": edge_radii(case, opts)[0] if opts.edge_contact else np.nan,
-        "edge_radius_gear_mm": edge_radii(case, opts)[1] if opts.edge_contact else np.nan,
+        "edge_radius_pinion_mm": radii[0],
+        "edge_radius_gear_mm": radii[1],
         "pinion_axis": np.asarray(eo.kinematics.pinion_axis, float),
         "pinion_origin_mm": np.asarray(eo.kinematics.pinion_origin, float),
         "gear_axis": np.asarray(eo.kinematics.gear_axis, float),
         "gear_origin_mm": np.asarray(eo.kinematics.gear_origin, float),
     }
-    return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
 def _peak(p: np.ndarray, which: np.ndarray) -> np.ndarray:

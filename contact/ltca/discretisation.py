@@ -8,6 +8,7 @@ frame at a roll position by :func:`gear_to_pair`.
 
 Public functions
 ----------------
+SegmentFields     the fields of the segments of every (roll, pair), typed
 MIN_CLIP          least clipped fraction of a segment that is kept
 SegmentQuadratic  quadratic interpolation, mean and clipping within each segment
 blank_measure     inside measure of pair-frame points in a member's blank
@@ -17,12 +18,72 @@ fill_rows         fill invalid entries of each row by linear interpolation
 
 from __future__ import annotations
 
+import dataclasses
+from dataclasses import dataclass
+
 import numpy as np
 
 from geometry.assembly import rotate_about_axis
 from geometry.flank import blank_outline, projection_fractions
 
-__all__ = ["MIN_CLIP", "SegmentQuadratic", "blank_measure", "fill_rows", "gear_to_pair"]
+__all__ = ["MIN_CLIP", "SegmentFields", "SegmentQuadratic", "blank_measure", "fill_rows",
+           "gear_to_pair"]
+
+
+@dataclass(frozen=True, eq=False)
+class SegmentFields:
+    """The fields of the contact segments of every (roll, pair): arrays (J, K, S[, ...]).
+
+    J roll positions, K tooth pairs, S segments (curve segments, then edge segments).
+    NaN where a pair has no segment there (``length`` 0).
+
+    Attributes
+    ----------
+    u, v : ndarray (J, K, S) — [1]
+        Gear projection-plane fractions of the segment's collocation point.
+    midpoint : ndarray (J, K, S, 3) — [mm]
+        The collocation point on the reference gear tooth, gear frame.
+    midpoint_pair : ndarray (J, K, S, 3) — [mm]
+        The same in the pair frame at the roll position.
+    ends_pair : ndarray (J, K, S, 2, 3) — [mm]
+        Ends of the part in contact (inside the mating blank), pair frame.
+    normal_pair, tangent_pair : ndarray (J, K, S, 3) — [1]
+        Contact normal (out of the pinion) and unit tangent of the contact line, pair frame.
+    length : ndarray (J, K, S) — [mm]
+        Length of the part in contact (0 where none).
+    moment_arm : ndarray (J, K, S) — [mm]
+        Moment arm R of the contact normal about the gear axis.
+    lag : ndarray (J, K, S) — [rad]
+        Mean angular separation ε + gap over the part in contact (gear lag).
+    r_eq : ndarray (J, K, S) — [mm]
+        Equivalent radius across the contact line (seed Eq. 2.13).
+    """
+
+    u: np.ndarray
+    v: np.ndarray
+    midpoint: np.ndarray
+    midpoint_pair: np.ndarray
+    ends_pair: np.ndarray
+    normal_pair: np.ndarray
+    tangent_pair: np.ndarray
+    length: np.ndarray
+    moment_arm: np.ndarray
+    lag: np.ndarray
+    r_eq: np.ndarray
+
+    @classmethod
+    def field_names(cls) -> tuple[str, ...]:
+        """The names of the per-segment fields, in order."""
+        return tuple(f.name for f in dataclasses.fields(SegmentFields))
+
+    def per_segment(self) -> dict[str, np.ndarray]:
+        """The per-segment fields by name."""
+        return {k: getattr(self, k) for k in SegmentFields.field_names()}
+
+    def concatenate(self, other: SegmentFields) -> SegmentFields:
+        """These segments followed by ``other``'s along the segment axis."""
+        return SegmentFields(**{k: np.concatenate([v, getattr(other, k)], axis=2)
+                                for k, v in self.per_segment().items()})
 
 
 #: [1] a segment clipped by the pinion blank to less than this fraction of its length is

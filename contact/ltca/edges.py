@@ -43,7 +43,13 @@ import contourpy
 import numpy as np
 
 from contact.ltca.curvature import gear_curvature, pinion_curvature
-from contact.ltca.discretisation import MIN_CLIP, SegmentQuadratic, blank_measure, gear_to_pair
+from contact.ltca.discretisation import (
+    MIN_CLIP,
+    SegmentFields,
+    SegmentQuadratic,
+    blank_measure,
+    gear_to_pair,
+)
 from contact.utca import EaseOff
 from geometry.assembly import rotate_about_axis
 from geometry.errors import InputError
@@ -189,10 +195,10 @@ def _piece(f, kind: int, uu: np.ndarray, vv: np.ndarray, step: float):
 
 
 def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],
-                   target: np.ndarray, shift: np.ndarray, ute_env: np.ndarray,
-                   limit: float | None = None) -> dict:
+                  target: np.ndarray, shift: np.ndarray, ute_env: np.ndarray,
+                  limit: float | None = None) -> SegmentFields:
     """Edge segments of every (roll, pair): the boundary where the pair's curve passes
-    outside the contact region (:mod:`contact.ltca.edges`), clipped where it passes inside.
+    outside the contact region (module docstring), clipped where it passes inside.
 
     Parameters
     ----------
@@ -203,14 +209,16 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
         (R_eq: :func:`edge_r_eq`)
     target, shift : arrays (J, K) — [rad] roll value q of each pair and its curve's shift t
     ute_env : array (J,) — [rad] each roll's UTE (the least over its pairs)
-    limit : float, optional — [mm] see :func:`segment_geometry`'s ``edge_limit``
+    limit : float, optional — [mm] see :func:`contact.ltca.segment_geometry`'s
+        ``edge_limit``
 
     Returns
     -------
-    dict of arrays (J, K, E[, ...]), the keys of :func:`segment_geometry`'s segment
-    fields; the lag is the mean of Φ_q = ε + ½ K (Q − q)² over the part in edge contact.
-    NaN (length 0) where the pair's curve passes inside the region all along the
-    boundary segment, or its separation is surely above ``limit``.
+    SegmentFields
+        Arrays (J, K, E[, ...]); the lag is the mean of Φ_q = ε + ½ K (Q − q)² over the
+        part in edge contact. NaN (length 0) where the pair's curve passes inside the
+        region all along the boundary segment, or its separation is surely above
+        ``limit``.
 
     Notes
     -----
@@ -225,38 +233,10 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     quad = SegmentQuadratic(np.array([0.0, 0.5, 1.0]))
     J, K = target.shape
     E = bd.kind.size
-    # ≥ 0 where the curve Q = q + t passes outside the region beyond the boundary point;
-    # only the (roll, pair, boundary segment) where it does somewhere are worked out
-    # (flattened to n candidates), the rest stay NaN (no edge contact)
-    outside = ((bd.roll_angle[None, None] - (target + shift)[..., None, None])
-               * bd.inward_slope)  # (J, K, E, 3)
-    cand = np.any(outside >= 0, axis=-1)
-    # Φ_q = ε + ½ K (Q − q)² at the samples of every boundary segment [rad]
-    phi_s = (bd.ease_off_angle + 0.5 * bd.gap_curvature
-             * (bd.roll_angle - target[..., None, None]) ** 2)  # (J, K, E, 3)
-    if limit is not None:
-        # the separation's lower bound: Φ_q at the samples, less the quadratic's second
-        # difference (its dip below the samples is at most a quarter of that), times
-        # the least normal arm
-        dip = np.abs(phi_s[..., 0] - 2.0 * phi_s[..., 1] + phi_s[..., 2])
-        low = np.min(phi_s, axis=-1) - dip - ute_env[:, None, None]
-        cand &= ~(np.min(bd.normal_arm, axis=-1) * low > limit)
+    cand, outside, phi_s = _edge_candidates(bd, target, shift, ute_env, limit)
     jj, kk, ee = np.nonzero(cand)
     outside = outside[jj, kk, ee]  # (n, 3)
-    q = target[jj, kk][:, None]  # (n, 1) roll value of the candidate's pair
-    phi = eo.roll_zero + eo.drive_sense * target[jj, kk]  # (n,) pinion rotation
-    psi = eo.gear_phase - phi / eo.ratio
-    # the contact points in the pair frame: a gear edge's own points; a pinion edge's
-    # points turned on with the pinion from their mate instant
-    pts = gear_to_pair(kin, psi[:, None], bd.position[ee])  # (n, 3, 3)
-    g = bd.gear_edge[ee]
-    if np.any(~g):
-        q_m = bd.roll_angle[ee[~g]]  # (np, 3) mate instants
-        phi_m = eo.roll_zero + eo.drive_sense * q_m
-        mate = gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[ee[~g]])
-        turn = eo.drive_sense * (q[~g] - q_m)
-        pts[~g] = rotate_about_axis(kin.pinion_axis, turn, mate - kin.pinion_origin) + \
-            kin.pinion_origin
+    pts, phi, psi, g = _edge_contact_points(eo, bd, target[jj, kk], ee)
     # each part in contact lies on the mating member's flank: within its blank
     for sel, member, turn in ((g, "pinion", phi), (~g, "gear", psi)):
         if np.any(sel):
@@ -295,7 +275,53 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
         full = np.full((J, K, E, *val.shape[1:]), 0.0 if key == "length" else np.nan)
         full[jj, kk, ee] = val
         out[key] = full
-    return out
+    return SegmentFields(**out)
+
+
+def _edge_candidates(bd: FlankBoundary, target: np.ndarray, shift: np.ndarray,
+                     ute_env: np.ndarray, limit: float | None):
+    """The (roll, pair, boundary segment) worth working out, (J, K, E) bool; the signed
+    measure (J, K, E, 3) ≥ 0 where the curve passes outside beyond each sample; and the
+    separation Φ_q [rad] (J, K, E, 3) at the samples."""
+    # ≥ 0 where the curve Q = q + t passes outside the region beyond the boundary point;
+    # only the (roll, pair, boundary segment) where it does somewhere are worked out
+    # (flattened to n candidates), the rest stay NaN (no edge contact)
+    outside = ((bd.roll_angle[None, None] - (target + shift)[..., None, None])
+               * bd.inward_slope)  # (J, K, E, 3)
+    cand = np.any(outside >= 0, axis=-1)
+    # Φ_q = ε + ½ K (Q − q)² at the samples of every boundary segment [rad]
+    phi_s = (bd.ease_off_angle + 0.5 * bd.gap_curvature
+             * (bd.roll_angle - target[..., None, None]) ** 2)  # (J, K, E, 3)
+    if limit is not None:
+        # the separation's lower bound: Φ_q at the samples, less the quadratic's second
+        # difference (its dip below the samples is at most a quarter of that), times
+        # the least normal arm
+        dip = np.abs(phi_s[..., 0] - 2.0 * phi_s[..., 1] + phi_s[..., 2])
+        low = np.min(phi_s, axis=-1) - dip - ute_env[:, None, None]
+        cand &= ~(np.min(bd.normal_arm, axis=-1) * low > limit)
+    return cand, outside, phi_s
+
+
+def _edge_contact_points(eo: EaseOff, bd: FlankBoundary, q: np.ndarray, ee: np.ndarray):
+    """Pair-frame contact points (n, 3, 3) [mm] of n candidates: boundary segments ``ee``
+    (n,) of pairs at roll values ``q`` (n,) [rad]; with the pinion and gear rotations φ,
+    ψ (n,) [rad] and whether each is a gear edge (n,) bool. A gear edge's contact is at its
+    own points; a pinion edge's points are turned on with the pinion from their mate
+    instant."""
+    kin = eo.kinematics
+    q = q[:, None]  # (n, 1) roll value of the candidate's pair
+    phi = eo.roll_zero + eo.drive_sense * q[:, 0]  # (n,) pinion rotation
+    psi = eo.gear_phase - phi / eo.ratio
+    pts = gear_to_pair(kin, psi[:, None], bd.position[ee])  # (n, 3, 3)
+    g = bd.gear_edge[ee]
+    if np.any(~g):
+        q_m = bd.roll_angle[ee[~g]]  # (np, 3) mate instants
+        phi_m = eo.roll_zero + eo.drive_sense * q_m
+        mate = gear_to_pair(kin, eo.gear_phase - phi_m / eo.ratio, bd.position[ee[~g]])
+        turn = eo.drive_sense * (q[~g] - q_m)
+        pts[~g] = rotate_about_axis(kin.pinion_axis, turn, mate - kin.pinion_origin) + \
+            kin.pinion_origin
+    return pts, phi, psi, g
 
 
 def edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],

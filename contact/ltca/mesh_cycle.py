@@ -10,28 +10,16 @@ Weber contact) and these data form a :class:`contact.ContactProblem`, solved by 
 registered solver; the multiplier Θ is the loaded rotation, and the loaded transmission
 error is LTE = UTE + Θ (gear lag, the seed's Fig. 3.6 convention).
 
-Weber's contact compliance depends on the load (logarithmically). It is solved by
-Newton's method on the contact deformation δ(F): about the current loads F₀,
-δ ≈ c_s F₀ + c_t (F − F₀) (c_s the secant, c_t the tangent compliance), i.e. the
-problem takes the diagonal c_t and the separation s + (c_s − c_t) F₀; solve, linearise
-again at the new loads, solve again, until the LTE changes by less than
-``weber_tolerance`` (default 1e-3 µrad), or its quadratically shrinking steps foretell a
-next step ten times smaller; 3–5 solves are typical. The first loads share the torque
-evenly over the roll's curve segments (so a roll's result depends on that roll alone). Where
-c_t is not well positive (Hertz half-width near the depth) or a load is at the cap, the
-secant is used there (the fixed-point iteration).
-
-Segment selection (screening): a segment left out of a roll's problem whose gap
-C F + s − R Θ stays open (≥ 0) at the solution changes nothing: the solution on the
-other segments is that of all of them. Each problem takes the segments with
-s < 1.1 R Θ̂ + 1 µm, Θ̂ the rotation of the last computed roll at that torque carried
-over by the UTE difference; after the solve the gaps of the segments left out are
-checked — exactly for those whose compliance is assembled, by s ≥ R Θ for the others
-(enough, as the compliance matrix has no negative entries: the gap is ≥ s − R Θ) — and
-any that would close is added and the roll solved again.
-The structural compliance is assembled once per roll for a pool of segments chosen the
-same way from the first roll's rotation at the largest torque (tests/test_ltca.py
-compares the screened solution with that of all segments).
+The steps, each in its module: the segments of every (roll, pair)
+(:mod:`contact.ltca.segments`); the segments a roll's problem must take
+(:mod:`contact.ltca.screening`); their structural compliance, assembled once per roll
+(:mod:`contact.ltca.pool`); Weber's load-dependent contact compliance by Newton's method
+(:mod:`contact.ltca.weber`); the loop over rolls and torques
+(:mod:`contact.ltca.roll_loop`); the ``/ltca`` dataset (:mod:`contact.ltca.dataset`).
+Here: the roll positions (from the transition M1, :func:`contact.utca.transitions`), the
+pair window, which widens itself where an outermost pair is loaded at its end of the
+window (one more pair must change nothing), and the edge segments' separation bound,
+checked against the solution's R Θ and widened if it was too tight.
 
 Moment arm: a gear rotation δ closes the gap at a point by ρ |n·e_θ| δ — the distance of
 the normal's line of action from the gear axis — which is the ``normal_arm`` of the
@@ -48,8 +36,8 @@ whose iso-line has just left the contact region keep a curve through the pinion'
 instead of vanishing. Doubling S or the roll positions changes the LTE by well under
 0.5 µrad (tests/test_ltca_discretisation.py).
 
-Edge contact (:mod:`contact.ltca.edges`, on by default): where a pair's curve passes outside the
-contact region, the region's boundary (gear tip, heel, toe; the pinion's tip edge and
+Edge contact (:mod:`contact.ltca.edges`, on by default): where a pair's curve passes
+outside the contact region, the region's boundary (gear tip, heel, toe; the pinion's tip edge and
 ends) carries edge segments with the separation ε + ½ K (Q − q)² of the pinion at roll q,
 which continues the curve's own at its end, and R_eq = 1/(1/r_e + κ_other) from the
 edges' rounding radius r_e; they follow the curve segments along the ``segment`` axis
@@ -72,7 +60,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 import xarray as xr
 
-from contact.ltca.options import LTCAOptions, edge_radii
+from contact.ltca.options import LTCAOptions, LTCASetup, edge_radii
 from contact.ltca.roll_loop import solve_rolls
 from contact.ltca.screening import generous_limit
 from contact.ltca.segments import segment_geometry
@@ -81,6 +69,7 @@ from contact.utca import EaseOff, ease_off
 from contact.utca import transitions as _transitions
 from geometry.assembly import Misalignment
 from geometry.errors import InputError
+from geometry.validation import real_array
 
 __all__ = ["loaded_tca", "ltca_problems"]
 
@@ -144,11 +133,56 @@ def loaded_tca(
     InputError
         For bad torques or options (the message names the field).
     """
+    setup, t_easeoff = _setup(case, torque, misalignment, flank, options, easeoff,
+                              transitions)
+    opts = setup.options
+    # edge segments surely separated by more than a generous limit are not worked out
+    # (segment_geometry's edge_limit); the limit is checked against the solution's
+    # R Θ and the analysis repeated with a wider one if it was too tight
+    edge_limit = None
+    if opts.edge_contact:
+        edge_limit = opts.separation_limit or generous_limit(float(setup.torques.max()),
+                                                             setup.easeoff.ratio)
+    while True:
+        opts = setup.options
+        sink: list[ContactProblem] | None = [] if problem_sink is not None else None
+        t1 = time.perf_counter()
+        seg = segment_geometry(setup.case, setup.easeoff, setup.roll, opts.pairs,
+                               opts.segments, opts.spacing,
+                               (opts.edge_step, edge_radii(setup.case, opts))
+                               if opts.edge_contact else None, edge_limit=edge_limit)
+        t_segments = time.perf_counter() - t1
+        ds, reach = solve_rolls(setup, seg, progress=progress, sink=sink,
+                                timing={"easeoff": t_easeoff, "segments": t_segments})
+        more = _outer_pairs_loaded(ds, opts)
+        widen = edge_limit is not None and opts.separation_limit is None and reach > edge_limit
+        if (more == (None, None) or len(opts.pairs) >= _MAX_PAIRS) and not widen:
+            break
+        if more != (None, None) and len(opts.pairs) < _MAX_PAIRS:
+            pairs = tuple(sorted({*opts.pairs, *(k for k in more if k is not None)}))
+            log.info("pairs %s: an outermost pair is loaded at the end of the window; "
+                     "again with %s", opts.pairs, pairs)
+            setup = dataclasses.replace(setup, options=dataclasses.replace(opts, pairs=pairs))
+        if widen:
+            log.info("edge segments: R Θ reached %.3g mm beyond the limit %.3g mm; again "
+                     "with %.3g mm", reach, edge_limit, 2.0 * reach)
+            edge_limit = 2.0 * reach
+    if problem_sink is not None:
+        for problem in sink:
+            problem_sink(problem)
+    return ds
+
+
+def _setup(case, torque, misalignment: Misalignment | None, flank: str | None,
+           options: LTCAOptions | None, easeoff: EaseOff | None,
+           transitions: tuple[float, float] | None) -> tuple[LTCASetup, float]:
+    """Check the inputs of :func:`loaded_tca` and gather what the analysis runs on: the
+    ease-off (computed unless given), the transitions and the roll positions from M1;
+    with the ease-off's time [s]."""
     opts = options or LTCAOptions()
-    torques = np.atleast_1d(np.asarray(torque, dtype=float))
-    if torques.ndim != 1 or torques.size == 0 or not np.all(np.isfinite(torques)) or np.any(
-        torques <= 0
-    ):
+    torques = real_array("torque", torque, unit="N m", low=0.0, low_open=True)
+    torques = np.atleast_1d(torques)
+    if torques.ndim != 1 or torques.size == 0:
         raise InputError(f"torque: must be finite values > 0 [N m], got {torque!r}")
     if misalignment is not None:
         case = dataclasses.replace(case, misalignment=misalignment)
@@ -166,47 +200,24 @@ def loaded_tca(
     start = m1 if math.isfinite(m1) else 0.0
     n_roll = opts.cycles * opts.rolls_per_cycle
     roll = start + np.arange(n_roll) * eo.pitch / opts.rolls_per_cycle
-    # edge segments surely separated by more than a generous limit are not worked out
-    # (segment_geometry's edge_limit); the limit is checked against the solution's
-    # R Θ and the analysis repeated with a wider one if it was too tight
-    edge_limit = None
-    if opts.edge_contact:
-        edge_limit = opts.separation_limit or generous_limit(float(torques.max()),
-                                                              eo.ratio)
-    while True:
-        sink: list[ContactProblem] | None = [] if problem_sink is not None else None
-        t1 = time.perf_counter()
-        seg = segment_geometry(case, eo, roll, opts.pairs, opts.segments, opts.spacing,
-                               (opts.edge_step, edge_radii(case, opts)) if opts.edge_contact
-                               else None, edge_limit=edge_limit)
-        t_segments = time.perf_counter() - t1
-        ds, reach = solve_rolls(case, eo, opts, torques, roll, seg, m1, m2, progress, sink,
-                                 timing={"easeoff": t_easeoff, "segments": t_segments})
-        # the pairs must span every tooth pair in mesh: the window of roll values they
-        # cover ends at the last roll for the lowest pair and at the first roll for the
-        # highest; a pair loaded there has a neighbour beyond it that may be loaded too
-        share = np.nan_to_num(ds["load_share"].values)  # (torque, roll, pair)
-        last = np.arange(opts.cycles) * opts.rolls_per_cycle + opts.rolls_per_cycle - 1
-        lo, hi = int(np.argmin(opts.pairs)), int(np.argmax(opts.pairs))
-        more = (min(opts.pairs) - 1 if np.any(share[:, last, lo] > 1e-6) else None,
-                max(opts.pairs) + 1 if np.any(share[:, last - opts.rolls_per_cycle + 1, hi]
-                                             > 1e-6) else None)
-        widen = edge_limit is not None and opts.separation_limit is None and reach > edge_limit
-        if (more == (None, None) or len(opts.pairs) >= _MAX_PAIRS) and not widen:
-            break
-        if more != (None, None) and len(opts.pairs) < _MAX_PAIRS:
-            pairs = tuple(sorted({*opts.pairs, *(k for k in more if k is not None)}))
-            log.info("pairs %s: an outermost pair is loaded at the end of the window; "
-                     "again with %s", opts.pairs, pairs)
-            opts = dataclasses.replace(opts, pairs=pairs)
-        if widen:
-            log.info("edge segments: R Θ reached %.3g mm beyond the limit %.3g mm; again "
-                     "with %.3g mm", reach, edge_limit, 2.0 * reach)
-            edge_limit = 2.0 * reach
-    if problem_sink is not None:
-        for problem in sink:
-            problem_sink(problem)
-    return ds
+    return LTCASetup(case, eo, opts, torques, roll, (m1, m2)), t_easeoff
+
+
+def _outer_pairs_loaded(ds: xr.Dataset, opts: LTCAOptions) -> tuple[int | None, int | None]:
+    """The pair beyond each end of the window, where its outermost pair is loaded at its
+    end of the window (None where not).
+
+    The pairs must span every tooth pair in mesh: the window of roll values they cover
+    ends at the last roll of each cycle for the lowest pair and at the first roll for
+    the highest; a pair loaded there (share > 1e-6) has a neighbour beyond it that may be
+    loaded too.
+    """
+    share = np.nan_to_num(ds["load_share"].values)  # (torque, roll, pair)
+    last = np.arange(opts.cycles) * opts.rolls_per_cycle + opts.rolls_per_cycle - 1
+    lo, hi = int(np.argmin(opts.pairs)), int(np.argmax(opts.pairs))
+    return (min(opts.pairs) - 1 if np.any(share[:, last, lo] > 1e-6) else None,
+            max(opts.pairs) + 1 if np.any(share[:, last - opts.rolls_per_cycle + 1, hi]
+                                         > 1e-6) else None)
 
 
 def ltca_problems(case, torque, *, misalignment: Misalignment | None = None,

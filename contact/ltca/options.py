@@ -3,6 +3,7 @@
 Public functions
 ----------------
 LTCAOptions    frozen dataclass of the settings, validated on construction
+LTCASetup      what one analysis is run on: case, ease-off, options, torques, rolls
 edge_radii     the (pinion, gear) edge rounding radii an analysis uses
 json_options   the options as JSON text (netCDF-safe)
 """
@@ -11,14 +12,21 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
 
 from contact.qp.solvers import DEFAULT_SOLVER, get_backend
-from contact.utca import CURVE_SPACINGS
+from contact.utca import CURVE_SPACINGS, EaseOff
 from geometry.errors import InputError
+from geometry.hertz import STEEL
+from geometry.validation import integer, one_of, positive, real
 
-__all__ = ["LTCAOptions", "edge_radii", "json_options"]
+if TYPE_CHECKING:
+    from geometry.case import Case
+
+__all__ = ["LTCAOptions", "LTCASetup", "edge_radii", "json_options"]
 
 
 @dataclass(frozen=True)
@@ -89,45 +97,65 @@ class LTCAOptions:
     edge_contact: bool = True
     edge_radius: float | None = None
     edge_step: float = 0.25
-    youngs_modulus: float = 206_000.0
-    poisson_ratio: float = 0.3
+    youngs_modulus: float = STEEL[0]
+    poisson_ratio: float = STEEL[1]
     theory: str = "seed"
     n_height: int = 6
     n_face: int = 21
 
     def __post_init__(self) -> None:
-        checks = (
-            ("cycles", self.cycles, 1, 20),
-            ("rolls_per_cycle", self.rolls_per_cycle, 4, 400),
-            ("segments", self.segments, 4, 400),
-            ("max_weber_iterations", self.max_weber_iterations, 1, 100),
-        )
-        for name, val, lo, hi in checks:
-            if not (isinstance(val, int) and lo <= val <= hi):
-                raise InputError(f"{name}: must be an integer in [{lo}, {hi}], got {val!r}")
-        if self.spacing not in CURVE_SPACINGS:
-            raise InputError(f"spacing: must be one of {sorted(CURVE_SPACINGS)}, got "
-                             f"{self.spacing!r}")
+        for name, lo, hi in (("cycles", 1, 20), ("rolls_per_cycle", 4, 400),
+                             ("segments", 4, 400), ("max_weber_iterations", 1, 100),
+                             ("n_height", 1, 20), ("n_face", 1, 30)):
+            integer(name, getattr(self, name), lo, hi)
+        one_of("spacing", self.spacing, CURVE_SPACINGS)
         if not self.pairs or 0 not in self.pairs:
             raise InputError(f"pairs: must contain the reference pair 0, got {self.pairs!r}")
-        if self.separation_limit is not None and not self.separation_limit > 0:
-            raise InputError(
-                f"separation_limit: must be > 0 [mm] or None, got {self.separation_limit!r}"
-            )
-        for name in ("edge_radius", "edge_step"):
-            val = getattr(self, name)
-            if name == "edge_radius" and val is None:
-                continue
-            if not (isinstance(val, (int, float)) and not isinstance(val, bool)
-                    and math.isfinite(val) and 0 < val <= 50):
-                extra = " or None" if name == "edge_radius" else ""
-                raise InputError(f"{name}: must be a length in (0, 50] [mm]{extra}, got "
-                                 f"{val!r}")
+        for k in self.pairs:
+            integer("pairs", k)
+        if self.separation_limit is not None:
+            positive("separation_limit", self.separation_limit, "mm")
+        if self.edge_radius is not None:
+            positive("edge_radius", self.edge_radius, "mm", high=50.0)
+        positive("edge_step", self.edge_step, "mm", high=50.0)
         if not isinstance(self.edge_contact, bool):
             raise InputError(f"edge_contact: must be True or False, got {self.edge_contact!r}")
-        if not self.weber_tolerance > 0:
-            raise InputError(f"weber_tolerance: must be > 0 [urad], got {self.weber_tolerance}")
+        positive("weber_tolerance", self.weber_tolerance, "urad")
+        positive("youngs_modulus", self.youngs_modulus, "MPa")
+        real("poisson_ratio", self.poisson_ratio, unit="1", low=0.0, high=0.5, high_open=True)
         get_backend(self.solver)
+
+
+@dataclass(frozen=True, eq=False)
+class LTCASetup:
+    """What one loaded TCA is run on (:func:`contact.ltca.loaded_tca` builds it).
+
+    Attributes
+    ----------
+    case : geometry.case.Case
+        The case, with the misalignment analysed.
+    easeoff : contact.utca.EaseOff
+        Its ease-off (same flank and misalignment).
+    options : LTCAOptions
+    torques : ndarray (NT,) — [N·m]
+        Pinion torques.
+    roll : ndarray (J,) — [rad]
+        Pinion roll positions (Q units, driving sense), from the transition M1.
+    transitions : (float, float) — [rad]
+        The transition rolls (M1, M2) of the ease-off (NaN where none).
+    """
+
+    case: Case
+    easeoff: EaseOff
+    options: LTCAOptions
+    torques: np.ndarray
+    roll: np.ndarray
+    transitions: tuple[float, float]
+
+    @property
+    def gear_torques(self) -> np.ndarray:
+        """(NT,) [N·mm] gear torque T_g = T_p z_g/z_p of each pinion torque (lossless)."""
+        return self.torques * self.easeoff.ratio * 1e3
 
 
 def edge_radii(case, opts: LTCAOptions) -> tuple[float, float]:
@@ -141,5 +169,4 @@ def edge_radii(case, opts: LTCAOptions) -> tuple[float, float]:
 
 def json_options(opts: LTCAOptions) -> str:
     """The options as JSON text (netCDF-safe)."""
-
     return json.dumps(dataclasses.asdict(opts), sort_keys=True)

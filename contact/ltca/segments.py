@@ -1,33 +1,105 @@
 """Contact segments of every (roll, pair): the LTCA discretisation (seed §3.3, Fig. 3.3).
 
+Each contact curve of a pair (:func:`contact.utca.contact_curves`, near misses included) is
+sampled at 2S + 1 places and split into S segments, each following the quadratic through
+its ends and middle (:class:`contact.ltca.discretisation.SegmentQuadratic`), clipped where
+the real pinion's mate leaves the pinion blank, carrying the mean separation of its part
+in contact, its moment arm and R_eq across the line (:mod:`contact.ltca.curvature`); the
+flank boundary's edge segments (:mod:`contact.ltca.edges`) follow the curve segments
+along the segment axis. Rolls whole mesh cycles apart have the same segments and are
+computed once.
+
 Public functions
 ----------------
-segment_geometry   the segments of the contact curves (and flank edges) of every roll, pair
+Segments           the segments of an analysis: per-segment fields, kinds, UTE, rotations
+segment_geometry   compute them for roll positions and tooth pairs
 """
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
 from contact.ltca.curvature import gear_curvature, pinion_curvature
 from contact.ltca.discretisation import (
     MIN_CLIP,
+    SegmentFields,
     SegmentQuadratic,
     blank_measure,
     fill_rows,
     gear_to_pair,
 )
 from contact.ltca.edges import edge_segments, flank_boundary
-from contact.utca import CURVE_SPACINGS, EaseOff, EaseOffFields, contact_curves
+from contact.utca import CURVE_SPACINGS, ContactCurves, EaseOff, EaseOffFields, contact_curves
 
-__all__ = ["segment_geometry"]
+__all__ = ["Segments", "segment_geometry"]
+
+
+@dataclass(frozen=True, eq=False)
+class Segments(SegmentFields):
+    """The contact segments of an analysis: J rolls × K pairs × S segments.
+
+    The per-segment fields of :class:`contact.ltca.discretisation.SegmentFields`, and:
+
+    Attributes
+    ----------
+    kind : ndarray (S,) of int8
+        0 for a contact-curve segment, 1 + the index into :data:`contact.ltca.EDGE_KINDS`
+        for an edge segment.
+    ute : ndarray (J, K) — [rad]
+        Unloaded transmission error of each pair (NaN out of mesh).
+    pinion_rotation, gear_rotation : ndarray (J,) — [rad]
+        Member rotations of the cycle's reference pair, to which each pair's points are
+        consistent (pairs sit whole pitches apart).
+    edge_arm_max : float — [mm]
+        Greatest normal arm on the flank boundary (0 without edge segments).
+    source : ndarray (J,) of int
+        The first roll with the same segments (rolls whole mesh cycles apart: their
+        targets agree to 1e-12 pitch; they are computed once and their entries are
+        identical).
+    """
+
+    kind: np.ndarray
+    ute: np.ndarray
+    pinion_rotation: np.ndarray
+    gear_rotation: np.ndarray
+    edge_arm_max: float
+    source: np.ndarray
+
+    @property
+    def shape(self) -> tuple[int, int, int]:
+        """(J, K, S): rolls, pairs, segments."""
+        return self.length.shape
+
+    def keep(self, keep: np.ndarray) -> Segments:
+        """The same rolls and pairs with only the segments ``keep`` (bool (S,))."""
+        fields = {k: v[:, :, keep] for k, v in self.per_segment().items()}
+        return Segments(**fields, kind=self.kind[keep], ute=self.ute,
+                        pinion_rotation=self.pinion_rotation, gear_rotation=self.gear_rotation,
+                        edge_arm_max=self.edge_arm_max, source=self.source)
+
+    def rolls(self, index: np.ndarray, source: np.ndarray) -> Segments:
+        """The rolls ``index`` (J′,) of these segments, with ``source`` (J′,)."""
+        fields = {k: v[index] for k, v in self.per_segment().items()}
+        return Segments(**fields, kind=self.kind, ute=self.ute[index],
+                        pinion_rotation=self.pinion_rotation[index],
+                        gear_rotation=self.gear_rotation[index],
+                        edge_arm_max=self.edge_arm_max, source=source)
+
+    def __getitem__(self, name: str):
+        """``segments[name]``: the mapping access of the dict this type replaced
+        (deprecated; use the attribute)."""
+        warnings.warn("Segments[name] is deprecated: use the attribute Segments.name",
+                      DeprecationWarning, stacklevel=2)
+        return getattr(self, name)
 
 
 def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], segments: int,
                      spacing: str = "cosine", edges: tuple[float, float] | None = None,
-                     edge_limit: float | None = None):
+                     edge_limit: float | None = None) -> Segments:
     """Contact segments of every (roll, pair): the LTCA discretisation (seed §3.3, Fig. 3.3).
 
     Parameters
@@ -58,21 +130,9 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
 
     Returns
     -------
-    dict of arrays, shapes (J, K, S + E) (+ (3,) for vectors), E the boundary segments
-    (0 without ``edges``); NaN where a pair has no curve or a boundary segment is not in
-    edge contact: ``kind`` (S + E,) 0 for a curve segment, 1 + the index into
-    :data:`contact.ltca.edges.EDGE_KINDS` for an edge segment; ``midpoint`` (gear frame) and
-    ``midpoint_pair`` (pair frame) [mm],
-    ``ends_pair`` (J, K, S, 2, 3) [mm] (of the part inside the pinion blank),
-    ``normal_pair`` [1] (out of the pinion), ``length`` [mm] (0 where the segment lies
-    wholly beyond the pinion blank), ``moment_arm`` [mm], ``lag`` [rad] (mean ε + gap
-    over the segment),
-    ``u``, ``v`` [1] gear projection-plane fractions, ``r_eq`` [mm]; (J, K): ``ute`` [rad];
-    (J,): ``pinion_rotation``, ``gear_rotation`` [rad] (of the cycle's reference pair, to
-    which each pair's points are consistent: pairs sit whole pitches apart),
-    ``edge_arm_max`` float [mm] the greatest normal arm on the flank boundary, ``source``
-    [1] the first roll with the same curves (rolls whole mesh cycles apart: their targets
-    agree to 1e-12 pitch; they are computed once and their entries are identical).
+    Segments
+        Per-segment fields (J, K, S + E), E the boundary segments (0 without ``edges``);
+        NaN where a pair has no curve or a boundary segment is not in edge contact.
     """
     roll = np.asarray(roll, float)
     pairs = np.asarray(pairs, int)
@@ -85,12 +145,7 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
     first = np.flatnonzero(source == np.arange(roll.size))
     geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing, edges,
                             edge_limit)
-    back = np.searchsorted(first, source)
-    out = {k: (val[back] if isinstance(val, np.ndarray) and k != "kind" else val)
-           for k, val in geo.items()}
-    out["shape"] = (roll.size, pairs.size, geo["kind"].size)
-    out["source"] = source
-    return out
+    return geo.rolls(np.searchsorted(first, source), source)
 
 
 def _same_rolls(target: np.ndarray, pitch: float) -> np.ndarray:
@@ -102,14 +157,36 @@ def _same_rolls(target: np.ndarray, pitch: float) -> np.ndarray:
 
 def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, segments: int,
                       spacing: str, edges: tuple[float, float] | None = None,
-                      edge_limit: float | None = None):
-    """:func:`segment_geometry` of roll targets (J, K) [rad] with pinion rotations rp (J,)."""
+                      edge_limit: float | None = None) -> Segments:
+    """:func:`segment_geometry` of roll targets (J, K) [rad] with pinion rotations rp (J,)
+    (every roll computed: ``source`` is 0 … J − 1)."""
     # each segment is sampled at its ends and its middle (2S + 1 points along a curve);
     # its fields follow the quadratic through the three (SegmentQuadratic)
     fields = EaseOffFields(eo)
     cc = contact_curves(eo, target, n_point=2 * segments + 1, spacing=spacing,
                         near_misses=True, fields=fields)
-    (J, K), S = target.shape, segments
+    J, K = target.shape
+    found = _curve_segments(case, eo, cc, target, segments, spacing)
+    kind = np.zeros(segments, dtype=np.int8)
+    edge_arm_max = 0.0
+    if edges is not None:
+        bd = flank_boundary(fields, edges[0])
+        shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
+        ute = cc.ute.reshape(J, K)
+        ute_env = np.min(np.where(np.isfinite(ute), ute, np.inf), axis=1)
+        radii = tuple(np.broadcast_to(np.asarray(edges[1], dtype=float), (2,)))
+        edge = edge_segments(case, eo, bd, radii, target, shift, ute_env, edge_limit)
+        edge_arm_max = float(np.max(bd.normal_arm, initial=0.0))
+        found = found.concatenate(edge)
+        kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
+    return Segments(**found.per_segment(), kind=kind, ute=cc.ute.reshape(J, K),
+                    pinion_rotation=rp, gear_rotation=eo.gear_phase - rp / eo.ratio,
+                    edge_arm_max=edge_arm_max, source=np.arange(J))
+
+
+def _curve_segments(case, eo: EaseOff, cc: ContactCurves, target: np.ndarray, S: int,
+                    spacing: str) -> SegmentFields:
+    """The S segments of every contact curve ``cc`` of roll targets (J, K) [rad]."""
     quad = SegmentQuadratic(CURVE_SPACINGS[spacing](2 * S + 1))
     kin = eo.kinematics
     # member rotations of each curve: pinion φ = roll_zero + s_p q, gear at the ideal ψ;
@@ -152,6 +229,17 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     norm = np.linalg.norm(chord, axis=-1, keepdims=True)
     tangent = chord / np.where(norm > 0, norm, np.nan)
     t_pair = to_pair(tangent, vec=True)
+    r_eq = _curve_r_eq(case, eo, u, v, pos_g, nrm_g, tangent, phi)
+    return SegmentFields(u=u, v=v, midpoint=pos_g, midpoint_pair=mid_pair, ends_pair=ends_pair,
+                         normal_pair=n_pair, tangent_pair=t_pair, length=length,
+                         moment_arm=arm, lag=lag, r_eq=r_eq)
+
+
+def _curve_r_eq(case, eo: EaseOff, u, v, pos_g, nrm_g, tangent, phi) -> np.ndarray:
+    """R_eq [mm] across the contact line at the segments' collocation points (J, K, S):
+    places (u, v) [1], gear-frame points and normals, line tangents, pinion rotations
+    φ (J, K) [rad]; NaN where a surface has no generated point."""
+    J, K, S = u.shape
     # R_eq across the contact line from both real surfaces at the midpoints
     ok = np.isfinite(u) & np.isfinite(v)
     r_eq = np.full(u.shape, np.nan)
@@ -179,41 +267,4 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         flat = np.full((J * K, S), np.nan)
         flat[rows] = np.where(np.isfinite(krel), 1.0 / np.maximum(krel, 1e-4), np.nan)
         r_eq = flat.reshape(J, K, S)
-    out = {
-        "u": u, "v": v, "midpoint": pos_g, "midpoint_pair": mid_pair, "ends_pair": ends_pair,
-        "normal_pair": n_pair, "tangent_pair": t_pair, "length": length, "moment_arm": arm,
-        "lag": lag, "r_eq": r_eq,
-    }
-    kind = np.zeros(S, dtype=np.int8)
-    edge_arm_max = 0.0
-    if edges is not None:
-        bd = flank_boundary(fields, edges[0])
-        shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
-        ute = cc.ute.reshape(J, K)
-        ute_env = np.min(np.where(np.isfinite(ute), ute, np.inf), axis=1)
-        radii = tuple(np.broadcast_to(np.asarray(edges[1], dtype=float), (2,)))
-        edge = edge_segments(case, eo, bd, radii, target, shift, ute_env, edge_limit)
-        edge_arm_max = float(np.max(bd.normal_arm, initial=0.0))
-        out = {k: np.concatenate([out[k], edge[k]], axis=2) for k in out}
-        kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
-    return {
-        **out, "kind": kind,
-        "ute": cc.ute.reshape(J, K), "pinion_rotation": rp,
-        "gear_rotation": eo.gear_phase - rp / eo.ratio, "shape": (J, K, kind.size),
-        "edge_arm_max": edge_arm_max,
-    }
-
-
-def keep_segments(seg: dict, keep: np.ndarray) -> dict:
-    """``segment_geometry``'s fields with only the segments ``keep`` (bool (S + E,))."""
-    J, K, n = seg["shape"]
-    out = {}
-    for k, val in seg.items():
-        if k == "kind":
-            out[k] = val[keep]
-        elif isinstance(val, np.ndarray) and val.ndim >= 3 and val.shape[:3] == (J, K, n):
-            out[k] = val[:, :, keep]
-        else:
-            out[k] = val
-    out["shape"] = (J, K, int(keep.sum()))
-    return out
+    return r_eq

@@ -1,0 +1,181 @@
+"""The contact problem of one roll with Weber's load-dependent contact compliance.
+
+Weber's contact compliance depends on the load (logarithmically,
+:func:`contact.compliance.weber.weber_compliance`). It is solved by Newton's method on the
+contact deformation δ(F): about the current loads F₀, δ ≈ c_s F₀ + c_t (F − F₀) (c_s the
+secant, c_t the tangent compliance), i.e. the problem takes the diagonal c_t and the
+separation s + (c_s − c_t) F₀; solve (:func:`contact.qp.solve_contact`), linearise again
+at the new loads, solve again, until the LTE changes by less than
+``LTCAOptions.weber_tolerance`` (default 1e-3 µrad), or its quadratically shrinking steps
+foretell a next step ten times smaller; 3–5 solves are typical. The first loads share the
+torque evenly over the roll's curve segments (so a roll's result depends on that roll
+alone). Where c_t is not well positive (Hertz half-width near the depth) or a load is at
+the cap, the secant is used there (the fixed-point iteration).
+
+Weber's formula holds while the Hertz half-width b is well below the depth h
+(ln(2h/b) − ν/(2(1−ν)) > 0): loads are capped where b would reach h, i.e.
+w′ ≤ π E* h²/(4 R_eq); beyond that a segment is in gross edge contact and its secant
+compliance is frozen at the cap (logged).
+
+Public functions
+----------------
+RollSelection   the data of one roll's contact problem on its selected segments
+WeberSolution   the solution, the final problem, iterations and time
+even_share      the first loads: the gear torque shared over the curve segments
+weber_solve     the Newton iteration on Weber's compliance
+
+References
+----------
+C. Weber (1949), The deformation of loaded gears and the effect on their load-carrying
+capacity; seed §3.2 (p. 78) and Eq. 3.12–3.14.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.compliance.weber import weber_compliance
+from contact.ltca.options import LTCAOptions
+from contact.qp import ContactProblem, ContactSolution, solve_contact
+
+__all__ = ["RollSelection", "WeberSolution", "even_share", "weber_solve"]
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True, eq=False)
+class RollSelection:
+    """The data of one roll's contact problem on its N selected segments.
+
+    Attributes
+    ----------
+    roll : int
+        Roll index (for messages and the problem's name).
+    pairs, segments : ndarray (N,) of int
+        Pair and segment index of each selected segment (row-major order).
+    structural : ndarray (N, N) — [mm/N]
+        Compliance of the shells and foundations (without Weber's contact).
+    depth : ndarray (N, 2) — [mm]
+        Distances from the contact to each member's tooth centreline (Weber's h).
+    length, r_eq, moment_arm, separation : ndarray (N,) — [mm]
+        Segment length, equivalent radius, moment arm about the gear axis and initial
+        separation.
+    """
+
+    roll: int
+    pairs: np.ndarray
+    segments: np.ndarray
+    structural: np.ndarray
+    depth: np.ndarray
+    length: np.ndarray
+    r_eq: np.ndarray
+    moment_arm: np.ndarray
+    separation: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class WeberSolution:
+    """The outcome of :func:`weber_solve`.
+
+    Attributes
+    ----------
+    solution : contact.qp.ContactSolution
+        The last solve (``found`` False if a solve failed).
+    problem : contact.qp.ContactProblem
+        The last problem solved (Weber's compliance linearised at the final loads).
+    iterations : int
+        Solves that succeeded.
+    time : float — [s]
+        Build and solve time over the iterations.
+    """
+
+    solution: ContactSolution
+    problem: ContactProblem
+    iterations: int
+    time: float
+
+
+def even_share(gear_torque: float, arms: np.ndarray) -> float:
+    """[N] the load per segment that shares ``gear_torque`` [N·mm] evenly over segments
+    with moment arms ``arms`` [mm] (Weber's first loads)."""
+    return gear_torque / max(float(np.sum(arms)), 1e-12)
+
+
+def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
+                options: LTCAOptions, modulus: float, *, prior: np.ndarray | None = None,
+                name: str = "") -> WeberSolution:
+    """One roll's contact problem with Weber's compliance iterated to the loads.
+
+    Parameters
+    ----------
+    sel : RollSelection
+        The roll's selected segments (N).
+    gear_torque : float — [N·mm]
+    first_load : float — [N]
+        The first loads (:func:`even_share`).
+    options : LTCAOptions
+        ``solver``, ``weber_tolerance`` [µrad], ``max_weber_iterations``, materials.
+    modulus : float — [MPa]
+        Contact modulus E* of the pair (:func:`geometry.hertz.contact_modulus`), for the
+        load cap.
+    prior : ndarray (N,), optional — [N]
+        Forces of a neighbouring solution (NaN where unknown): the solver's warm start.
+    name : str
+        The problems' name.
+
+    Returns
+    -------
+    WeberSolution
+    """
+    e, nu = options.youngs_modulus, options.poisson_ratio
+    length, r_eq, depth = sel.length, sel.r_eq, sel.depth
+    cap = np.pi * modulus * np.min(depth, axis=1) ** 2 / (4 * r_eq) * length  # [N]
+    load = np.minimum(np.full(length.size, first_load), cap)
+    start = None if prior is None else np.nan_to_num(prior)
+    lte_prev = step_prev = None
+    sol = problem = None
+    n_it = time_used = 0
+    for w_it in range(1, options.max_weber_iterations + 1):
+        # Newton on Weber's δ(F): δ ≈ c_s F₀ + c_t (F − F₀), c_s the secant and c_t the
+        # tangent compliance at the loads F₀, i.e. compliance c_t and separation
+        # s + (c_s − c_t) F₀; the secant alone where c_t is not well positive (b near the
+        # depth h) or the load is at the cap (frozen there)
+        cs, ct = weber_compliance(load, length, depth[:, 0], depth[:, 1], e1=e, nu1=nu,
+                                  e2=e, nu2=nu, r_eq=r_eq, kind=("secant", "tangent"))
+        newton = (ct > 0.5 * cs) & (load < cap)
+        cw = np.where(newton, ct, cs)
+        problem = ContactProblem(sel.structural + np.diag(cw),
+                                 sel.separation + np.where(newton, (cs - ct) * load, 0.0),
+                                 sel.moment_arm, gear_torque, name=name)
+        sol = solve_contact(problem, options.solver,
+                            initial=sol if sol is not None else start)
+        time_used += sol.solve_time + sol.build_time
+        if not sol.found:
+            break
+        load = np.minimum(np.maximum(sol.force, 0.0), cap)
+        if np.any(sol.force > cap):
+            log.info("roll %d: Weber load cap reached on %d segments", sel.roll,
+                     int(np.sum(sol.force > cap)))
+        lte = sol.rotation * 1e6
+        n_it = w_it
+        if lte_prev is not None:
+            step = abs(lte - lte_prev)
+            if _converged(step, step_prev, options.weber_tolerance, newton, load):
+                break
+            step_prev = step
+        lte_prev = lte
+    return WeberSolution(sol, problem, n_it, time_used)
+
+
+def _converged(step: float, step_prev: float | None, tolerance: float, newton: np.ndarray,
+               load: np.ndarray) -> bool:
+    """Whether the Weber iteration stops after an LTE step [µrad]: below the tolerance,
+    or — Newton's steps shrinking quadratically once close (the last step below 1000
+    tolerances) where every loaded segment took it — a next step of about
+    step²/(last step) foretold to be ten times below the tolerance."""
+    quadratic = (step_prev is not None and step_prev < 1000.0 * tolerance
+                 and bool(np.all(newton[load > 0])))
+    return step < tolerance or (quadratic and step * step < 0.1 * tolerance * step_prev)
