@@ -69,11 +69,9 @@ from scipy.optimize import least_squares
 
 from geometry.assembly import Misalignment, case_transforms
 from geometry.case import FLANKS, Case
-from geometry.curvature import surface_curvatures
 from geometry.errors import InputError
 from geometry.flank import blank_outline, flank_surface
-from geometry.machine import meshing_function
-from geometry.meshing import solve_envelope
+from geometry.flank_point import MemberFlank
 from geometry.synthesis import design_point_of_case
 
 __all__ = [
@@ -91,7 +89,6 @@ log = logging.getLogger(__name__)
 CONVERGED_RESIDUAL = 1e-8
 _BLOCK = 8  # roll positions solved together
 _PENALTY = 1e3  # residual of a point whose surface cannot be evaluated (outside the envelope)
-_MIRROR = np.array([1.0, -1.0, 1.0])
 _OTHER = {"concave": "convex", "convex": "concave"}
 _STOP = 1e-11  # [mm, 1] a position is solved once Eq. 2.14 holds to this
 _FLOOR = 1e-9  # [mm, 1] below this a position that stops improving is at the noise floor
@@ -195,104 +192,7 @@ class TCAResult:
     misalignment: Misalignment
 
 
-# --------------------------------------------------------------------------- flank evaluation
-class _Eval:
-    """Points, normals, tangents ∂r/∂(Z, P) and shape operators of one flank at (Z, P)."""
-
-    def __init__(self, case: Case, member: str, flank: str) -> None:
-        mem = case.member(member)
-        self.tool = mem.flank(flank)
-        self.blank = mem.blank
-        self.generate = self.tool.machine.process == "Generate"
-        self.mirror = mem.hand == "left"
-        self.length = self.blank.outer_cone_distance
-        self.depth = self.blank.outer_addendum + self.blank.outer_dedendum
-
-    def _solve(self, z: np.ndarray, p: np.ndarray, guess=None):
-        kw = dict(length_scale=self.length, depth=self.depth, guess=guess)
-        mid = len(z) // 2
-        order = sorted(range(len(z)), key=lambda i: abs(i - mid))[:2]
-        for k in order:
-            try:
-                return solve_envelope(self.tool.blade, self.tool.machine, z, p,
-                                      seed_index=(k,), **kw)
-            except InputError:
-                continue
-        return None
-
-    def __call__(self, z, p):
-        """Evaluate at arrays z, p (K,) [mm]; invalid points have ok = False (and NaN)."""
-        return self.evaluate(z, p)[:5]
-
-    def evaluate(self, z, p, guess=None):
-        """As :meth:`__call__`, plus the envelope parameters (K, 4): s, θ, q, section.
-
-        ``guess`` (K, 4) from nearby earlier points starts the envelope solver there
-        (:func:`geometry.meshing.solve_envelope`); NaN rows have no guess.
-        """
-        z = np.asarray(z, dtype=float)
-        p = np.asarray(p, dtype=float)
-        k = len(z)
-        r = np.full((k, 3), np.nan)
-        n = np.full((k, 3), np.nan)
-        d = np.full((k, 3, 2), np.nan)
-        w = np.full((k, 3, 3), np.nan)
-        par = np.full((k, 4), np.nan)
-        ok = np.isfinite(z) & np.isfinite(p) & (p > 0)
-        if not ok.any():
-            return r, n, d, w, ok, par
-        idx = np.flatnonzero(ok)
-        g = None
-        if guess is not None:
-            gi = np.asarray(guess, dtype=float)[idx]
-            have = np.all(np.isfinite(gi), axis=-1)
-            if have.any():
-                gi = np.where(have[:, None], gi, np.nan)
-                g = (gi[:, 0], gi[:, 1], gi[:, 2], np.where(have, gi[:, 3], 0.0))
-        sol = self._solve(z[idx], p[idx], g)
-        if sol is None:
-            return r, n, d, w, np.zeros(k, bool), par
-        valid = sol.reason == 0
-        fam = sol.family
-        pc = surface_curvatures(fam, self.generate, self.length)
-        if self.generate:
-            _, grad = meshing_function(fam, self.length)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                qs = (-grad[:, 0] / grad[:, 2])[:, None]
-                qt = (-grad[:, 1] / grad[:, 2])[:, None]
-            rs = fam.r_s + fam.r_q * qs
-            rt = fam.r_theta + fam.r_q * qt
-        else:
-            rs, rt = fam.r_s, fam.r_theta
-        pos = sol.position
-        rho = np.hypot(pos[:, 0], pos[:, 1])
-        with np.errstate(divide="ignore", invalid="ignore"):
-            e_rho = np.stack([pos[:, 0] / rho, pos[:, 1] / rho, np.zeros_like(rho)], -1)
-            a = np.empty((len(idx), 2, 2))
-            a[:, 0, 0], a[:, 0, 1] = rs[:, 2], rt[:, 2]
-            a[:, 1, 0] = (rs * e_rho).sum(-1)
-            a[:, 1, 1] = (rt * e_rho).sum(-1)
-            det = a[:, 0, 0] * a[:, 1, 1] - a[:, 0, 1] * a[:, 1, 0]
-            inv = np.stack([np.stack([a[:, 1, 1], -a[:, 0, 1]], -1),
-                            np.stack([-a[:, 1, 0], a[:, 0, 0]], -1)], -2) / det[:, None, None]
-        tang = np.stack([rs, rt], -1) @ inv  # (n, 3, 2): ∂r/∂Z, ∂r/∂P
-        shape = (pc.kappa1[:, None, None] * pc.dir1[:, :, None] * pc.dir1[:, None, :]
-                 + pc.kappa2[:, None, None] * pc.dir2[:, :, None] * pc.dir2[:, None, :])
-        nrm = sol.normal
-        if self.mirror:
-            pos, nrm = pos * _MIRROR, nrm * _MIRROR
-            tang = tang * _MIRROR[:, None]
-            shape = shape * _MIRROR[:, None] * _MIRROR[None, :]
-        good = valid & np.all(np.isfinite(tang), axis=(1, 2)) & np.all(
-            np.isfinite(shape), axis=(1, 2))
-        r[idx], n[idx], d[idx], w[idx] = pos, nrm, tang, shape
-        par[idx] = np.stack([sol.s, sol.theta, sol.q, sol.section], -1)
-        ok[idx] = good
-        bad = ~ok
-        r[bad], n[bad], d[bad], w[bad], par[bad] = np.nan, np.nan, np.nan, np.nan, np.nan
-        return r, n, d, w, ok, par
-
-
+# --------------------------------------------------------------------------- helpers
 def _inside(blank, z: np.ndarray, p: np.ndarray) -> np.ndarray:
     """Whether projection-plane points lie in the blank outline (toe, heel, root, face)."""
     c = blank_outline(blank).corners
@@ -314,8 +214,8 @@ class _Pair:
     def __init__(self, case: Case, flank: str, misalignment: Misalignment | None):
         self.case = case
         self.flank = flank
-        self.pinion = _Eval(case, "pinion", flank)
-        self.gear = _Eval(case, "gear", _OTHER[flank])
+        self.pinion = MemberFlank.of_case(case, "pinion", flank)
+        self.gear = MemberFlank.of_case(case, "gear", _OTHER[flank])
         self.mis = case.misalignment if misalignment is None else misalignment
         bl = case.gear.blank
         # length scales: normal residuals × L_n, gear rotation × R_g ~ mm
@@ -335,8 +235,10 @@ class _Pair:
         ``guess`` (K, 8): pinion then gear (s, θ, q, section) from nearby points.
         """
         gp, gg = (None, None) if guess is None else (guess[:, :4], guess[:, 4:])
-        rp, n_p, dp, wp, okp, pp_par = self.pinion.evaluate(x[:, 0], x[:, 1], gp)
-        rg, n_g, dg, wg, okg, pg_par = self.gear.evaluate(x[:, 2], x[:, 3], gg)
+        fp = self.pinion.points(x[:, 0], x[:, 1], guess=gp)
+        fg = self.gear.points(x[:, 2], x[:, 3], guess=gg)
+        rp, n_p, dp, wp, okp, pp_par = fp.r, fp.n, fp.tangents, fp.shape, fp.ok, fp.params
+        rg, n_g, dg, wg, okg, pg_par = fg.r, fg.n, fg.tangents, fg.shape, fg.ok, fg.params
         tp, tg = self.transforms(phi_p, x[:, 4])
         a_p, a_g = tp[..., :3, :3], tg[..., :3, :3]
         pp = np.einsum("kij,kj->ki", a_p, rp) + tp[..., :3, 3]
@@ -520,7 +422,8 @@ def mean_contact(case: Case, flank: str | None = None) -> MeanContact:
     flank = _check_flank(case, flank)
     pair = _Pair(case, flank, Misalignment())
     zg, pg_ = design_point_of_case(case, flank)
-    rg, ng, _, _, okg = pair.gear(np.array([zg]), np.array([pg_]))
+    gpt = pair.gear.points(np.array([zg]), np.array([pg_]))
+    rg, ng, okg = gpt.r, gpt.n, gpt.ok
     if not okg[0]:
         raise InputError(f"case {case.name}: the gear {_OTHER[flank]} flank is not generated "
                          "at its mean point")

@@ -65,18 +65,16 @@ from geometry.assembly import member_transform
 from geometry.basic_design import BasicDesign, FlankOptions
 from geometry.blank import BlankGeometry, MemberBlank
 from geometry.case import FLANKS, Blank, Case, case_from_dict
-from geometry.curvature import surface_curvatures
 from geometry.cutter import Blade
 from geometry.errors import InputError
 from geometry.flank import blank_outline
+from geometry.flank_point import FlankPoint, flank_points
 from geometry.machine import (
     MachineSettings,
     cutter_pose,
-    meshing_function,
     roll_angle,
     settings_from_poses,
 )
-from geometry.meshing import solve_envelope
 
 __all__ = [
     "FlankPoint",
@@ -116,63 +114,10 @@ def _tangent_basis(n: np.ndarray) -> np.ndarray:
     return np.column_stack([t1, np.cross(n, t1)])
 
 
-class FlankPoint(NamedTuple):
-    """Flank points in their member frame (mirrored for a left-hand member), batched."""
-
-    r: np.ndarray  # (..., 3) [mm]
-    n: np.ndarray  # (..., 3) [1] out of the material
-    shape: np.ndarray  # (..., 3, 3) [1/mm] shape operator W (dn = W dr)
-    r_s: np.ndarray  # (..., 3) [1] unit tangent along the blade (root → tip)
-    tangents: np.ndarray  # (..., 3, 2) [1] ∂r/∂z, ∂r/∂ρ in the projection plane
-    ok: np.ndarray  # (...,) bool
-
-
-def _flank_eval(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
-                z, p) -> FlankPoint:
-    """Points, normals, shape operators and tangents of a generated flank at (z, ρ) arrays."""
-    z = np.atleast_1d(np.asarray(z, float))
-    p = np.atleast_1d(np.asarray(p, float))
-    try:
-        sol = solve_envelope(blade, settings, z, p, length_scale=blank.outer_cone_distance,
-                             depth=blank.outer_addendum + blank.outer_dedendum)
-    except InputError:
-        nan = np.full((*z.shape, 3), np.nan)
-        return FlankPoint(nan, nan, np.full((*z.shape, 3, 3), np.nan), nan,
-                      np.full((*z.shape, 3, 2), np.nan), np.zeros(z.shape, bool))
-    gen = settings.process == "Generate"
-    fam = sol.family
-    pc = surface_curvatures(fam, gen, blank.outer_cone_distance)
-    w = (pc.kappa1[..., None, None] * pc.dir1[..., :, None] * pc.dir1[..., None, :]
-         + pc.kappa2[..., None, None] * pc.dir2[..., :, None] * pc.dir2[..., None, :])
-    if gen:
-        _, grad = meshing_function(fam, blank.outer_cone_distance)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            rs = fam.r_s + fam.r_q * (-grad[..., 0] / grad[..., 2])[..., None]
-            rt = fam.r_theta + fam.r_q * (-grad[..., 1] / grad[..., 2])[..., None]
-    else:
-        rs, rt = fam.r_s, fam.r_theta
-    r = sol.position
-    rho = np.hypot(r[..., 0], r[..., 1])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        er = np.stack([r[..., 0] / rho, r[..., 1] / rho, np.zeros_like(rho)], -1)
-        a = np.stack([np.stack([rs[..., 2], rt[..., 2]], -1),
-                      np.stack([(rs * er).sum(-1), (rt * er).sum(-1)], -1)], -2)
-        tang = np.stack([rs, rt], -1) @ np.linalg.inv(np.where(
-            np.isfinite(a), a, np.eye(2)))
-    n, rs_unit = sol.normal, fam.r_s / np.linalg.norm(fam.r_s, axis=-1, keepdims=True)
-    if hand == "left":
-        r, n, rs_unit = r @ _MIRROR, n @ _MIRROR, rs_unit @ _MIRROR
-        tang = _MIRROR @ tang
-        w = _MIRROR @ w @ _MIRROR
-    ok = (sol.reason == 0) & np.all(np.isfinite(w), axis=(-2, -1)) & np.all(
-        np.isfinite(tang), axis=(-2, -1))
-    return FlankPoint(r, n, w, rs_unit, tang, ok)
-
-
 def _flank_point(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
                  z: float, p: float) -> FlankPoint:
     """One flank point (unbatched); InputError if the flank is not generated there."""
-    pt = _flank_eval(blade, settings, blank, hand, [z], [p])
+    pt = flank_points(blade, settings, blank, hand, [z], [p])
     if not pt.ok[0]:
         raise InputError(f"synthesis: the flank is not generated at (z, rho) = ({z:.4g}, "
                          f"{p:.4g}) mm")
@@ -315,7 +260,7 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     lo, hi = -mean_addendum(pinion_blank), mean_addendum(gear_blank)
     offs = np.linspace(lo, hi, 9)
     zp = pm + offs[:, None] * up
-    pt = _flank_eval(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0], zp[:, 1])
+    pt = flank_points(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0], zp[:, 1])
     if not pt.ok.all():
         raise InputError("synthesis: the gear flank is not generated along the working depth "
                          "at the mean cone distance")
@@ -499,8 +444,8 @@ def mean_point(gear_point: FlankPoint, gear_blank: Blank, pinion_blank: Blank, *
     Parameters
     ----------
     gear_point : FlankPoint
-        The gear flank at M (gear frame, unbatched; ``_flank_eval`` of the gear tool at
-        :func:`design_point`).
+        The gear flank at M (gear frame, unbatched;
+        :func:`geometry.flank_point.flank_points` of the gear tool at :func:`design_point`).
     gear_blank, pinion_blank : geometry.case.Blank
     pinion_flank : str
         The pinion flank that meshes this gear flank.
@@ -827,7 +772,7 @@ def pinion_generate_tools(point, normal, target_shape, *, side: str, blade_angle
         if st is None:
             return None
         blade, ps = st
-        pt = _flank_eval(blade, ps.settings, pinion_blank, "right", [zm], [pm])
+        pt = flank_points(blade, ps.settings, pinion_blank, "right", [zm], [pm])
         if not pt.ok[0]:
             return None
         c, s = math.cos(ps.blank_phase), math.sin(ps.blank_phase)
@@ -936,8 +881,8 @@ class _LocalContact:
         self.ln = gear.blank.outer_cone_distance - 0.5 * gear.blank.face_width
 
     def _fun(self, phi_p: float, x: np.ndarray):
-        pp = _flank_eval(*self.pinion, [x[0]], [x[1]])
-        gg = _flank_eval(*self.gear, [x[2]], [x[3]])
+        pp = flank_points(*self.pinion, [x[0]], [x[1]])
+        gg = flank_points(*self.gear, [x[2]], [x[3]])
         if not (pp.ok[0] and gg.ok[0]):
             return np.full(6, 1e3), np.zeros((6, 5))
         tp = member_transform("pinion", rotation=phi_p, **self.kw)

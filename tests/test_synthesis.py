@@ -293,8 +293,8 @@ def test_local_synthesis_conjugate_limit(name, flank):
     pair = _Pair(case, flank, None)
     x = np.array([[*ref.pinion_projection, *ref.gear_projection, ref.gear_rotation]])
     phi = np.array([ref.pinion_rotation])
-    _, n_p, _, wp, _ = pair.pinion(x[:, 0], x[:, 1])
-    rg, _, _, wg, _ = pair.gear(x[:, 2], x[:, 3])
+    fp, fg = pair.pinion.points(x[:, 0], x[:, 1]), pair.gear.points(x[:, 2], x[:, 3])
+    n_p, wp, rg, wg = fp.n, fp.shape, fg.r, fg.shape
     tp, tg = pair.transforms(phi, x[:, 4])
     rot_p, rot_g = tp[0, :3, :3], tg[0, :3, :3]
     point = rot_g @ rg[0] + tg[0, :3, 3]
