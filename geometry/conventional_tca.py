@@ -30,7 +30,7 @@ Members turn right-handed about their own +z axis (:mod:`geometry.assembly`). Th
 roll** is the pinion rotation measured in its *sense of motion* — the sense in which the
 analysed pinion flank pushes the gear (opposite for the drive and the coast flank) — from the
 **reference**: the position at which, in the nominal (aligned) assembly, the pinion touches
-the gear flank at its mean contact point M (:func:`geometry.synthesis.design_point_of_case`:
+the gear flank at its mean contact point M (:func:`geometry.design_point.design_point_of_case`:
 at the gear's mean cone distance, centred in roll within the working depth — the design
 point of a synthesised pair). The reference gear rotation is the TCA gear rotation there, so
 the nominal transmission error is exactly 0 at roll 0.
@@ -69,10 +69,10 @@ from scipy.optimize import least_squares
 
 from geometry.assembly import Misalignment, case_transforms
 from geometry.case import FLANKS, Case
+from geometry.design_point import design_point_of_case
 from geometry.errors import InputError
 from geometry.flank import blank_outline, flank_surface
 from geometry.flank_point import MemberFlank
-from geometry.synthesis import design_point_of_case
 
 __all__ = [
     "CONVERGED_RESIDUAL",
@@ -409,7 +409,7 @@ def mean_contact(case: Case, flank: str | None = None) -> MeanContact:
 
     Notes
     -----
-    The gear point is held at M (:func:`geometry.synthesis.design_point_of_case`) and
+    The gear point is held at M (:func:`geometry.design_point.design_point_of_case`) and
     (Z_p, P_p, φ_p, φ_g) are fitted to
     seed Eq. 2.14 by ``scipy.optimize.least_squares``. The start comes from a scan of the
     gear rotation over the mesh zone (+x side of the pair frame): for each gear rotation the
