@@ -34,7 +34,9 @@ From a :class:`geometry.basic_design.BasicDesign` this module builds a complete 
    :func:`geometry.machine.settings_from_poses`.
 6. **Modified roll** (third and fourth order, 6D and 24E): the local synthesis fixes the
    transmission error only to second order at M; 6D and 24E put it on the prescribed
-   parabola at ±pitch/4 (a short contact computation near M, ``_LocalContact``).
+   parabola at ±pitch/4: the contact is followed from M in a few roll steps with the
+   conventional TCA's system of seed Eq. 2.14 (:class:`geometry.conventional_tca.ToothPair`,
+   scipy Levenberg–Marquardt per roll), with a Newton–Broyden iteration on 6D and 24E.
 
 Public functions
 ----------------
@@ -67,6 +69,7 @@ from geometry.assembly import member_transform
 from geometry.basic_design import BasicDesign, FlankOptions
 from geometry.blank import BlankGeometry, MemberBlank
 from geometry.case import FLANKS, Blank, Case, case_from_dict
+from geometry.conventional_tca import ToothPair
 from geometry.cutter import Blade
 from geometry.design_point import (
     action_rotation,
@@ -76,7 +79,7 @@ from geometry.design_point import (
 )
 from geometry.errors import InputError
 from geometry.flank import blank_outline
-from geometry.flank_point import FlankPoint, flank_points
+from geometry.flank_point import FlankPoint, MemberFlank, flank_points
 from geometry.machine import (
     MachineSettings,
     cutter_pose,
@@ -732,72 +735,26 @@ def shift_roll_origin(settings: MachineSettings, q0: float) -> MachineSettings:
 
 
 # --------------------------------------------------------------------------- TE shape
-class _Member(NamedTuple):
-    blade: Blade
-    settings: MachineSettings
-    blank: Blank
-    hand: str
+def _nominal_transforms(shaft_angle: float, offset: float, gear_hand: str):
+    """Member → pair transforms (φ_p, φ_g) → (T_p, T_g) of the aligned assembly."""
+    kw = _pair_kw(shaft_angle, offset, gear_hand)
+
+    def transforms(phi_p, phi_g):
+        return (member_transform("pinion", rotation=phi_p, **kw),
+                member_transform("gear", rotation=phi_g, **kw))
+
+    return transforms
 
 
-class _LocalContact:
-    """Seed Eq. 2.14 near the mean point, for tuning the modified roll (not the TCA).
-
-    Unknowns per roll x = (z_p, ρ_p, z_g, ρ_g, φ_g); residuals r_p − r_g [mm] and
-    L (n_p + n_g) with L the gear mean cone distance; Levenberg–Marquardt
-    (``scipy.optimize.least_squares``) with the analytic Jacobian (surface tangents from the
-    envelope, normal derivatives dn = W dr). :mod:`geometry.conventional_tca` is the toolkit's full,
-    independent TCA.
-    """
-
-    def __init__(self, pinion: _Member, gear: _Member, kw: dict[str, Any]) -> None:
-        self.pinion, self.gear, self.kw = pinion, gear, kw
-        self.ln = gear.blank.outer_cone_distance - 0.5 * gear.blank.face_width
-
-    def _fun(self, phi_p: float, x: np.ndarray):
-        pp = flank_points(*self.pinion, [x[0]], [x[1]])
-        gg = flank_points(*self.gear, [x[2]], [x[3]])
-        if not (pp.ok[0] and gg.ok[0]):
-            return np.full(6, 1e3), np.zeros((6, 5))
-        tp = member_transform("pinion", rotation=phi_p, **self.kw)
-        tg = member_transform("gear", rotation=x[4], **self.kw)
-        ap, ag = tp[:3, :3], tg[:3, :3]
-        rp, rg = ap @ pp.r[0] + tp[:3, 3], ag @ gg.r[0] + tg[:3, 3]
-        n_p, n_g = ap @ pp.n[0], ag @ gg.n[0]
-        f = np.concatenate([rp - rg, self.ln * (n_p + n_g)])
-        jac = np.zeros((6, 5))
-        jac[:3, 0:2] = ap @ pp.tangents[0]
-        jac[:3, 2:4] = -(ag @ gg.tangents[0])
-        jac[3:, 0:2] = self.ln * (ap @ pp.shape[0] @ pp.tangents[0])
-        jac[3:, 2:4] = self.ln * (ag @ gg.shape[0] @ gg.tangents[0])
-        jac[:3, 4] = -np.cross(tg[:3, 2], rg - tg[:3, 3])
-        jac[3:, 4] = self.ln * np.cross(tg[:3, 2], n_g)
-        return f, jac
-
-    def solve(self, phi_p: float, x0: np.ndarray) -> tuple[np.ndarray, float]:
-        cache: dict[bytes, tuple] = {}
-
-        def get(x):
-            key = x.tobytes()
-            if key not in cache:
-                cache.clear()
-                cache[key] = self._fun(phi_p, x)
-            return cache[key]
-
-        rg = self.ln * math.sin(self.gear.blank.pitch_angle)
-        sol = least_squares(lambda x: get(x)[0], np.asarray(x0, float),
-                            jac=lambda x: get(x)[1], method="lm",
-                            x_scale=np.array([1.0, 1.0, 1.0, 1.0, 1.0 / rg]),
-                            xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=50)
-        return sol.x, float(np.abs(sol.fun).max())
-
-
-def _te_at(contact: _LocalContact, start: np.ndarray, rate: np.ndarray, *, phi_p0: float,
+def _te_at(pair: ToothPair, start: np.ndarray, rate: np.ndarray, *, phi_p0: float,
            pinion_sense: int, gear_sense: int, ratio: float, rolls: tuple[float, ...],
            steps: int = 4) -> dict[float, float]:
     """Transmission error (gear lag, :mod:`geometry.conventional_tca` convention) at rolls.
 
     Continuation from M (``start`` = x at roll 0, ``rate`` = dx/droll there) in ``steps``
-    steps per side; raises InputError if a step fails.
+    steps per side, each roll solved by :meth:`~geometry.conventional_tca.ToothPair.solve_one`
+    (at most 50 evaluations); raises InputError if a step leaves a residual of seed Eq. 2.14
+    above 1e-7 mm.
     """
     out = {}
     for side in (1.0, -1.0):
@@ -815,7 +772,10 @@ def _te_at(contact: _LocalContact, start: np.ndarray, rate: np.ndarray, *, phi_p
             else:
                 t = (r - prev_r[-1]) / (prev_r[-1] - prev_r[-2])
                 x0 = prev_x[-1] + t * (prev_x[-1] - prev_x[-2])
-            x, res = contact.solve(phi_p0 + pinion_sense * r, x0)
+            phi = phi_p0 + pinion_sense * r
+            x = pair.solve_one(phi, x0, max_nfev=50)
+            f, _, ok, _ = pair.residual(np.array([phi]), x[None])
+            res = float(np.abs(f[0]).max()) if ok[0] else math.inf
             if res > 1e-7:
                 raise InputError("synthesis: the contact near the mean point could not be "
                                  f"followed to roll {r:.4g} rad (residual {res:.3g})")
@@ -826,7 +786,7 @@ def _te_at(contact: _LocalContact, start: np.ndarray, rate: np.ndarray, *, phi_p
     return out
 
 
-def _tune_roll(tools: PinionTools, contact: _LocalContact, start, rate, *, a21: float,
+def _tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
                pitch: float, **kw) -> PinionTools:
     """Modified roll 6D, 24E that put the TE at ±pitch/4 on the prescribed parabola.
 
@@ -841,9 +801,8 @@ def _tune_roll(tools: PinionTools, contact: _LocalContact, start, rate, *, a21: 
 
     def g(coef):
         settings = replace(tools.settings, modified_roll=(0.0, *coef))
-        c = _LocalContact(contact.pinion._replace(settings=settings), contact.gear,
-                          contact.kw)
-        te = _te_at(c, start, rate, rolls=rolls, **kw)
+        tuned = ToothPair(pair.pinion._replace(machine=settings), pair.gear, pair.transforms)
+        te = _te_at(tuned, start, rate, rolls=rolls, **kw)
         return np.array([te[h] - level, te[-h] - level])
 
     x = np.zeros(2)
@@ -1034,8 +993,9 @@ def synthesize(basic: BasicDesign) -> tuple[Case, SynthesisReport]:
         # higher-order roll (6D, 24E): the TE at ±pitch/4 on the prescribed parabola (the
         # local synthesis fixes it only to second order at M)
         hand_sign = 1.0 if pinion_hand == "right" else -1.0
-        contact = _LocalContact(_Member(tools.blade, tools.settings, pin_bl, pinion_hand),
-                                _Member(gblade, gear.settings, gear_bl, gear_hand), kw)
+        pair = ToothPair(MemberFlank(tools.blade, tools.settings, pin_bl, pinion_hand),
+                         MemberFlank(gblade, gear.settings, gear_bl, gear_hand),
+                         _nominal_transforms(**kw))
         rot_g = tg[:3, :3]
         vp, vg = rot.T @ ls.path_pinion, rot_g.T @ ls.path_gear
         pl, gl = rot.T @ (mp.point - tp[:3, 3]), rot_g.T @ (mp.point - tg[:3, 3])
@@ -1046,7 +1006,7 @@ def synthesize(basic: BasicDesign) -> tuple[Case, SynthesisReport]:
 
         start = np.array([pl[2], math.hypot(pl[0], pl[1]), zg, pg, mp.gear_rotation])
         rate = np.array([*rates(vp, pl), *rates(vg, gl), mp.gear_sense * z1 / geom.gear.z])
-        tools = _tune_roll(tools, contact, start, rate, a21=a21, pitch=2 * math.pi / z1,
+        tools = _tune_roll(tools, pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
                            phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
                            pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
                            ratio=z1 / geom.gear.z)

@@ -23,7 +23,7 @@ from contact.cli import main as ltca
 from geometry.assembly import Misalignment, case_transforms
 from geometry.basic_design import basic_from_dict, load_basic
 from geometry.case import load_case
-from geometry.conventional_tca import _Pair, conventional_tca, mean_contact
+from geometry.conventional_tca import ToothPair, conventional_tca, mean_contact
 from geometry.curvature import PrincipalCurvatures, relative_curvature, surface_curvatures
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.flank import blank_outline
@@ -290,7 +290,7 @@ def test_local_synthesis_conjugate_limit(name, flank):
     are ~0.05 1/mm and exact to ~1e-12)."""
     case = load_case(DATA / f"{name}.toml")
     ref = mean_contact(case, flank)
-    pair = _Pair(case, flank, None)
+    pair = ToothPair.from_case(case, flank)
     x = np.array([[*ref.pinion_projection, *ref.gear_projection, ref.gear_rotation]])
     phi = np.array([ref.pinion_rotation])
     fp, fg = pair.pinion.points(x[:, 0], x[:, 1]), pair.gear.points(x[:, 2], x[:, 3])
