@@ -9,11 +9,12 @@ collinear (seed Eq. 2.14a–b),
 
 with M the member → pair transforms of :func:`geometry.assembly.case_transforms` (which carry
 the misalignments ΔE, ΔP, ΔG, ΔΣ). Each flank is parametrised by its projection-plane place
-(axial position Z, radius P) and evaluated by :func:`geometry.meshing.solve_envelope` (seed
-Eq. 2.7–2.8), so the unknowns are (Z_p, P_p, Z_g, P_g, φ_g): five unknowns for the five
-independent equations (the unit normals add two; all six components are used in a
-least-squares sense). The Jacobian is analytic: the surface tangents ∂r/∂Z, ∂r/∂P from the
-envelope and the normal derivatives ∂n = W ∂r from the shape operator W = κ₁e₁e₁ᵀ + κ₂e₂e₂ᵀ of
+(axial position Z, radius P) and evaluated by :func:`geometry.flank_point.flank_points`
+(:func:`geometry.meshing.solve_envelope`, seed Eq. 2.7–2.8), so the unknowns are
+(Z_p, P_p, Z_g, P_g, φ_g): five unknowns for the five independent equations (the unit
+normals add two; all six components are used in a least-squares sense). The Jacobian is
+analytic: the surface tangents ∂r/∂Z, ∂r/∂P from the envelope and the normal derivatives
+∂n = W ∂r from the shape operator W = κ₁e₁e₁ᵀ + κ₂e₂e₂ᵀ of
 :func:`geometry.curvature.surface_curvatures`. Roll positions are solved in blocks of
 neighbours by continuation along the roll angle outward from the reference: a batched damped
 Gauss–Newton (Levenberg–Marquardt) iteration, one surface evaluation per member and
@@ -22,7 +23,9 @@ steps, with ``scipy.optimize.least_squares`` (MINPACK Levenberg–Marquardt) as 
 resort. The damping also copes with the rank-deficient Jacobian of a conjugate
 (line-contact) pair, where the contact point may lie anywhere on the contact line. A solution
 counts only where the relative curvature W_p + W_g is positive semi-definite (a contact, not
-a saddle of the separation where the surfaces already cross).
+a saddle of the separation where the surfaces already cross). The system is
+:class:`ToothPair`, which the synthesis (:mod:`geometry.synthesis`) also uses to tune the
+modified roll; it takes any two flanks and any member → pair transforms.
 
 Conventions
 -----------
@@ -30,7 +33,7 @@ Members turn right-handed about their own +z axis (:mod:`geometry.assembly`). Th
 roll** is the pinion rotation measured in its *sense of motion* — the sense in which the
 analysed pinion flank pushes the gear (opposite for the drive and the coast flank) — from the
 **reference**: the position at which, in the nominal (aligned) assembly, the pinion touches
-the gear flank at its mean contact point M (:func:`geometry.synthesis.design_point_of_case`:
+the gear flank at its mean contact point M (:func:`geometry.design_point.design_point_of_case`:
 at the gear's mean cone distance, centred in roll within the working depth — the design
 point of a synthesised pair). The reference gear rotation is the TCA gear rotation there, so
 the nominal transmission error is exactly 0 at roll 0.
@@ -51,6 +54,7 @@ of the gear caused by the misalignment.
 
 Public functions
 ----------------
+ToothPair          seed Eq. 2.14 of two flanks: residual, Jacobian, solvers, contact check
 TCAResult          frozen dataclass of the contact path, gear rotation and TE
 MeanContact        the reference (mean contact) of a pair and flank
 mean_contact       compute the reference
@@ -69,17 +73,16 @@ from scipy.optimize import least_squares
 
 from geometry.assembly import Misalignment, case_transforms
 from geometry.case import FLANKS, Case
-from geometry.curvature import surface_curvatures
+from geometry.design_point import design_point_of_case
 from geometry.errors import InputError
 from geometry.flank import blank_outline, flank_surface
-from geometry.machine import meshing_function
-from geometry.meshing import solve_envelope
-from geometry.synthesis import design_point_of_case
+from geometry.flank_point import MemberFlank
 
 __all__ = [
     "CONVERGED_RESIDUAL",
     "MeanContact",
     "TCAResult",
+    "ToothPair",
     "conventional_tca",
     "mean_contact",
 ]
@@ -91,7 +94,6 @@ log = logging.getLogger(__name__)
 CONVERGED_RESIDUAL = 1e-8
 _BLOCK = 8  # roll positions solved together
 _PENALTY = 1e3  # residual of a point whose surface cannot be evaluated (outside the envelope)
-_MIRROR = np.array([1.0, -1.0, 1.0])
 _OTHER = {"concave": "convex", "convex": "concave"}
 _STOP = 1e-11  # [mm, 1] a position is solved once Eq. 2.14 holds to this
 _FLOOR = 1e-9  # [mm, 1] below this a position that stops improving is at the noise floor
@@ -195,104 +197,7 @@ class TCAResult:
     misalignment: Misalignment
 
 
-# --------------------------------------------------------------------------- flank evaluation
-class _Eval:
-    """Points, normals, tangents ∂r/∂(Z, P) and shape operators of one flank at (Z, P)."""
-
-    def __init__(self, case: Case, member: str, flank: str) -> None:
-        mem = case.member(member)
-        self.tool = mem.flank(flank)
-        self.blank = mem.blank
-        self.generate = self.tool.machine.process == "Generate"
-        self.mirror = mem.hand == "left"
-        self.length = self.blank.outer_cone_distance
-        self.depth = self.blank.outer_addendum + self.blank.outer_dedendum
-
-    def _solve(self, z: np.ndarray, p: np.ndarray, guess=None):
-        kw = dict(length_scale=self.length, depth=self.depth, guess=guess)
-        mid = len(z) // 2
-        order = sorted(range(len(z)), key=lambda i: abs(i - mid))[:2]
-        for k in order:
-            try:
-                return solve_envelope(self.tool.blade, self.tool.machine, z, p,
-                                      seed_index=(k,), **kw)
-            except InputError:
-                continue
-        return None
-
-    def __call__(self, z, p):
-        """Evaluate at arrays z, p (K,) [mm]; invalid points have ok = False (and NaN)."""
-        return self.evaluate(z, p)[:5]
-
-    def evaluate(self, z, p, guess=None):
-        """As :meth:`__call__`, plus the envelope parameters (K, 4): s, θ, q, section.
-
-        ``guess`` (K, 4) from nearby earlier points starts the envelope solver there
-        (:func:`geometry.meshing.solve_envelope`); NaN rows have no guess.
-        """
-        z = np.asarray(z, dtype=float)
-        p = np.asarray(p, dtype=float)
-        k = len(z)
-        r = np.full((k, 3), np.nan)
-        n = np.full((k, 3), np.nan)
-        d = np.full((k, 3, 2), np.nan)
-        w = np.full((k, 3, 3), np.nan)
-        par = np.full((k, 4), np.nan)
-        ok = np.isfinite(z) & np.isfinite(p) & (p > 0)
-        if not ok.any():
-            return r, n, d, w, ok, par
-        idx = np.flatnonzero(ok)
-        g = None
-        if guess is not None:
-            gi = np.asarray(guess, dtype=float)[idx]
-            have = np.all(np.isfinite(gi), axis=-1)
-            if have.any():
-                gi = np.where(have[:, None], gi, np.nan)
-                g = (gi[:, 0], gi[:, 1], gi[:, 2], np.where(have, gi[:, 3], 0.0))
-        sol = self._solve(z[idx], p[idx], g)
-        if sol is None:
-            return r, n, d, w, np.zeros(k, bool), par
-        valid = sol.reason == 0
-        fam = sol.family
-        pc = surface_curvatures(fam, self.generate, self.length)
-        if self.generate:
-            _, grad = meshing_function(fam, self.length)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                qs = (-grad[:, 0] / grad[:, 2])[:, None]
-                qt = (-grad[:, 1] / grad[:, 2])[:, None]
-            rs = fam.r_s + fam.r_q * qs
-            rt = fam.r_theta + fam.r_q * qt
-        else:
-            rs, rt = fam.r_s, fam.r_theta
-        pos = sol.position
-        rho = np.hypot(pos[:, 0], pos[:, 1])
-        with np.errstate(divide="ignore", invalid="ignore"):
-            e_rho = np.stack([pos[:, 0] / rho, pos[:, 1] / rho, np.zeros_like(rho)], -1)
-            a = np.empty((len(idx), 2, 2))
-            a[:, 0, 0], a[:, 0, 1] = rs[:, 2], rt[:, 2]
-            a[:, 1, 0] = (rs * e_rho).sum(-1)
-            a[:, 1, 1] = (rt * e_rho).sum(-1)
-            det = a[:, 0, 0] * a[:, 1, 1] - a[:, 0, 1] * a[:, 1, 0]
-            inv = np.stack([np.stack([a[:, 1, 1], -a[:, 0, 1]], -1),
-                            np.stack([-a[:, 1, 0], a[:, 0, 0]], -1)], -2) / det[:, None, None]
-        tang = np.stack([rs, rt], -1) @ inv  # (n, 3, 2): ∂r/∂Z, ∂r/∂P
-        shape = (pc.kappa1[:, None, None] * pc.dir1[:, :, None] * pc.dir1[:, None, :]
-                 + pc.kappa2[:, None, None] * pc.dir2[:, :, None] * pc.dir2[:, None, :])
-        nrm = sol.normal
-        if self.mirror:
-            pos, nrm = pos * _MIRROR, nrm * _MIRROR
-            tang = tang * _MIRROR[:, None]
-            shape = shape * _MIRROR[:, None] * _MIRROR[None, :]
-        good = valid & np.all(np.isfinite(tang), axis=(1, 2)) & np.all(
-            np.isfinite(shape), axis=(1, 2))
-        r[idx], n[idx], d[idx], w[idx] = pos, nrm, tang, shape
-        par[idx] = np.stack([sol.s, sol.theta, sol.q, sol.section], -1)
-        ok[idx] = good
-        bad = ~ok
-        r[bad], n[bad], d[bad], w[bad], par[bad] = np.nan, np.nan, np.nan, np.nan, np.nan
-        return r, n, d, w, ok, par
-
-
+# --------------------------------------------------------------------------- helpers
 def _inside(blank, z: np.ndarray, p: np.ndarray) -> np.ndarray:
     """Whether projection-plane points lie in the blank outline (toe, heel, root, face)."""
     c = blank_outline(blank).corners
@@ -308,25 +213,113 @@ def _inside(blank, z: np.ndarray, p: np.ndarray) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- the system
-class _Pair:
-    """Seed Eq. 2.14 for one case, flank and assembly, batched over roll positions."""
+class ToothPair:
+    """Seed Eq. 2.14 for one pinion flank and the gear flank it meshes, batched over rolls.
 
-    def __init__(self, case: Case, flank: str, misalignment: Misalignment | None):
-        self.case = case
-        self.flank = flank
-        self.pinion = _Eval(case, "pinion", flank)
-        self.gear = _Eval(case, "gear", _OTHER[flank])
-        self.mis = case.misalignment if misalignment is None else misalignment
-        bl = case.gear.blank
+    The system of the conventional TCA: for pinion rotations φ_p (K,) and unknowns
+    x = (Z_p, P_p, Z_g, P_g, φ_g) (K, 5) — the projection-plane places of the contact point
+    on each flank [mm] and the gear rotation [rad] — the residuals
+
+        F = [M_p r_p − M_g r_g,  L_n (M_p n_p + M_g n_g)]   (K, 6) [mm]
+
+    (seed Eq. 2.14a–b; L_n the gear mean cone distance makes the normal residuals lengths),
+    their analytic Jacobian, a batched damped Gauss–Newton solver, a scipy fallback for one
+    roll and the contact check. Used by :func:`conventional_tca`, :func:`mean_contact` and
+    the synthesis's tuning of the modified roll (:mod:`geometry.synthesis`).
+
+    Parameters
+    ----------
+    pinion, gear : geometry.flank_point.MemberFlank
+        The pinion flank and the gear flank it meshes (tool, blank, hand).
+    transforms : callable
+        ``transforms(phi_p, phi_g) -> (T_p, T_g)``: member → pair-frame homogeneous
+        transforms (…, 4, 4) at member rotations φ_p, φ_g [rad] (right-handed about each
+        member's own +z), batched over arrays of rotations (one may be a scalar), e.g.
+        :func:`geometry.assembly.case_transforms` of a case.
+
+    Attributes
+    ----------
+    pinion, gear : MemberFlank
+    mean_cone_distance : float — [mm]
+        L_n = R_e2 − b2/2 of the gear blank: the scale of the normal residuals.
+    mean_pitch_radius : float — [mm]
+        L_n sin δ2: the scale of the gear rotation (φ_g × this is a length).
+
+    See Also
+    --------
+    ToothPair.from_case : the system of a case, pinion flank and assembly.
+    """
+
+    def __init__(self, pinion: MemberFlank, gear: MemberFlank, transforms) -> None:
+        self.pinion = pinion
+        self.gear = gear
+        self._transforms = transforms
+        bl = gear.blank
         # length scales: normal residuals × L_n, gear rotation × R_g ~ mm
-        self.ln = bl.outer_cone_distance - 0.5 * bl.face_width
-        self.rg = self.ln * math.sin(bl.pitch_angle)
+        self.mean_cone_distance = bl.outer_cone_distance - 0.5 * bl.face_width
+        self.mean_pitch_radius = self.mean_cone_distance * math.sin(bl.pitch_angle)
+
+    @classmethod
+    def from_case(cls, case: Case, flank: str,
+                  misalignment: Misalignment | None = None) -> ToothPair:
+        """The system of a case: pinion flank ``flank``, the other gear flank, an assembly.
+
+        Parameters
+        ----------
+        case : geometry.case.Case
+        flank : str
+            Pinion flank, ``"concave"`` or ``"convex"``; the gear flank is the other one.
+        misalignment : geometry.assembly.Misalignment, optional
+            Assembly; default the case's own ``misalignment``.
+
+        Returns
+        -------
+        ToothPair
+            With the transforms of :func:`geometry.assembly.case_transforms`.
+
+        Raises
+        ------
+        InputError
+            For a bad flank name.
+        """
+        if flank not in _OTHER:
+            raise InputError(f"flank: must be one of {list(_OTHER)} (the pinion flank), got "
+                             f"{flank!r}")
+        mis = case.misalignment if misalignment is None else misalignment
+
+        def transforms(phi_p, phi_g):
+            return case_transforms(case, phi_p, phi_g, mis)
+
+        return cls(MemberFlank.of_case(case, "pinion", flank),
+                   MemberFlank.of_case(case, "gear", _OTHER[flank]), transforms)
 
     def transforms(self, phi_p, phi_g):
-        return case_transforms(self.case, phi_p, phi_g, self.mis)
+        """Member → pair transforms (T_p, T_g), each (…, 4, 4), at rotations φ_p, φ_g [rad]."""
+        return self._transforms(phi_p, phi_g)
 
     def residual(self, phi_p, x):
-        """Residuals (K, 6) [mm] and Jacobian (K, 6, 5) of x = (Z_p, P_p, Z_g, P_g, φ_g)."""
+        """Residuals of seed Eq. 2.14 and their Jacobian at K roll positions.
+
+        Parameters
+        ----------
+        phi_p : ndarray (K,) — [rad]
+            Pinion rotations.
+        x : ndarray (K, 5) — [mm, mm, mm, mm, rad]
+            (Z_p, P_p, Z_g, P_g, φ_g).
+
+        Returns
+        -------
+        f : ndarray (K, 6) — [mm]
+            r_p − r_g and L_n (n_p + n_g) in the pair frame (class docstring).
+        jac : ndarray (K, 6, 5)
+            ∂f/∂x (∂r/∂(Z, P) from :func:`geometry.flank_point.flank_points`, ∂n = W ∂r,
+            ∂/∂φ_g = −a_g × (r_g − o_g), a_g × n_g).
+        ok : ndarray (K,) bool
+            Both flanks generated at their places (elsewhere ``f`` and ``jac`` hold NaN).
+        placed : tuple
+            (r_p, r_g, n_p, n_g) (K, 3) in the pair frame and the relative shape operator
+            W_p + W_g (K, 3, 3) [1/mm] in the pair frame.
+        """
         return self._residual(phi_p, x)[:4]
 
     def _residual(self, phi_p, x, guess=None):
@@ -335,56 +328,87 @@ class _Pair:
         ``guess`` (K, 8): pinion then gear (s, θ, q, section) from nearby points.
         """
         gp, gg = (None, None) if guess is None else (guess[:, :4], guess[:, 4:])
-        rp, n_p, dp, wp, okp, pp_par = self.pinion.evaluate(x[:, 0], x[:, 1], gp)
-        rg, n_g, dg, wg, okg, pg_par = self.gear.evaluate(x[:, 2], x[:, 3], gg)
+        fp = self.pinion.points(x[:, 0], x[:, 1], guess=gp)
+        fg = self.gear.points(x[:, 2], x[:, 3], guess=gg)
+        rp, n_p, dp, wp, okp, pp_par = fp.r, fp.n, fp.tangents, fp.shape, fp.ok, fp.params
+        rg, n_g, dg, wg, okg, pg_par = fg.r, fg.n, fg.tangents, fg.shape, fg.ok, fg.params
         tp, tg = self.transforms(phi_p, x[:, 4])
         a_p, a_g = tp[..., :3, :3], tg[..., :3, :3]
         pp = np.einsum("kij,kj->ki", a_p, rp) + tp[..., :3, 3]
         pg = np.einsum("kij,kj->ki", a_g, rg) + tg[..., :3, 3]
         np_ = np.einsum("kij,kj->ki", a_p, n_p)
         ng = np.einsum("kij,kj->ki", a_g, n_g)
-        f = np.concatenate([pp - pg, self.ln * (np_ + ng)], -1)
+        ln = self.mean_cone_distance
+        f = np.concatenate([pp - pg, ln * (np_ + ng)], -1)
         jac = np.zeros((len(x), 6, 5))
         jac[:, :3, 0:2] = a_p @ dp
         jac[:, :3, 2:4] = -(a_g @ dg)
-        jac[:, 3:, 0:2] = self.ln * (a_p @ (wp @ dp))
-        jac[:, 3:, 2:4] = self.ln * (a_g @ (wg @ dg))
+        jac[:, 3:, 0:2] = ln * (a_p @ (wp @ dp))
+        jac[:, 3:, 2:4] = ln * (a_g @ (wg @ dg))
         axis_g, orig_g = tg[..., :3, 2], tg[..., :3, 3]
         jac[:, :3, 4] = -np.cross(axis_g, pg - orig_g)
-        jac[:, 3:, 4] = self.ln * np.cross(axis_g, ng)
+        jac[:, 3:, 4] = ln * np.cross(axis_g, ng)
         ok = okp & okg
         rel = (a_p @ wp @ np.swapaxes(a_p, -1, -2)) + (a_g @ wg @ np.swapaxes(a_g, -1, -2))
         return f, jac, ok, (pp, pg, np_, ng, rel), np.concatenate([pp_par, pg_par], -1)
 
     def newton(self, phi_p, x0, max_iter: int = 15):
-        """Batched damped Gauss–Newton; returns x, done (see :meth:`newton_params`)."""
+        """Batched damped Gauss–Newton: :meth:`newton_params` without the surface parameters.
+
+        Returns
+        -------
+        x : ndarray (K, 5)
+        done : ndarray (K,) bool
+        """
         return self.newton_params(phi_p, x0, max_iter)[:2]
 
     def newton_params(self, phi_p, x0, max_iter: int = 15):
-        """Batched damped Gauss–Newton (Levenberg–Marquardt steps); returns x, done.
+        """Solve seed Eq. 2.14 at K roll positions together by damped Gauss–Newton.
 
-        Each roll position is its own 6 × 5 least-squares system; all are stepped together
-        (one surface evaluation per member and iteration). The step solves
-        (JᵀJ + μ²I) Δx = −JᵀF (scaled unknowns) with μ = ``_DAMP`` × the largest singular
-        value of J: on a localised-contact pair this only slows the weakest direction
-        slightly, while on a conjugate pair (J rank-deficient on the solution set: the
-        contact point may lie anywhere on the contact line; nearly so just off it) it keeps
-        the step from sliding far along the contact line. Steps are limited and halved
-        while they leave the generated surface or more than double the residual. A position
-        is done when Eq. 2.14 holds to ``_STOP``. Each surface evaluation starts the envelope
-        solver from the previous iterate's surface parameters (returned as the third value,
-        (K, 8), to start :meth:`measure` too).
+        Parameters
+        ----------
+        phi_p : ndarray (K,) — [rad]
+            Pinion rotations.
+        x0 : array_like (K, 5) — [mm, mm, mm, mm, rad]
+            Start (Z_p, P_p, Z_g, P_g, φ_g) of each position.
+        max_iter : int
+            Largest number of iterations.
+
+        Returns
+        -------
+        x : ndarray (K, 5)
+            The last accepted iterate of each position (not checked: use :meth:`measure`).
+        done : ndarray (K,) bool
+            Eq. 2.14 holds to ``_STOP`` (1e-11 mm) or the position stopped improving below
+            ``_FLOOR`` (1e-9 mm, the noise floor of the surface evaluation).
+        params : ndarray (K, 8)
+            Envelope parameters (s, θ, q, section) of the pinion then the gear flank at
+            ``x`` (to start :meth:`measure`).
+
+        Notes
+        -----
+        Levenberg–Marquardt steps. Each roll position is its own 6 × 5 least-squares
+        system; all are stepped together (one surface evaluation per member and iteration).
+        The step solves (JᵀJ + μ²I) Δx = −JᵀF (scaled unknowns) with μ = ``_DAMP`` (1e-3) ×
+        the largest singular value of J: on a localised-contact pair this only slows the
+        weakest direction slightly, while on a conjugate pair (J rank-deficient on the
+        solution set: the contact point may lie anywhere on the contact line; nearly so just
+        off it) it keeps the step from sliding far along the contact line. Steps are limited
+        and halved while they leave the generated surface or more than double the residual.
+        A position is done when Eq. 2.14 holds to ``_STOP``. Each surface evaluation starts
+        the envelope solver from the previous iterate's surface parameters.
         """
         x = np.array(x0, dtype=float)
         k = len(x)
-        scale = np.array([1.0, 1.0, 1.0, 1.0, 1.0 / self.rg])
+        scale = np.array([1.0, 1.0, 1.0, 1.0, 1.0 / self.mean_pitch_radius])
         done = np.zeros(k, bool)
         dead = np.zeros(k, bool)
         f, jac, ok, _, par = self._residual(phi_p, x)
         dead |= ~ok
         prev = np.full(k, np.inf)
         for _ in range(max_iter):
-            size = np.maximum(np.abs(f[:, :3]).max(-1), np.abs(f[:, 3:]).max(-1) / self.ln)
+            size = np.maximum(np.abs(f[:, :3]).max(-1),
+                              np.abs(f[:, 3:]).max(-1) / self.mean_cone_distance)
             # solved, or at the noise floor of the surface evaluation (no more progress)
             done |= ((size < _STOP) | ((size > 0.3 * prev) & (size < _FLOOR))) & ~dead
             prev = size
@@ -417,8 +441,31 @@ class _Pair:
                 dead[trial] = True
         return x, done, par
 
-    def solve_one(self, phi_p: float, x0: np.ndarray) -> np.ndarray:
-        """Fallback for one roll position: scipy ``least_squares`` (Levenberg–Marquardt)."""
+    def solve_one(self, phi_p: float, x0, *, max_nfev: int = 12) -> np.ndarray:
+        """Solve seed Eq. 2.14 at one roll position with scipy's Levenberg–Marquardt.
+
+        Parameters
+        ----------
+        phi_p : float — [rad]
+            Pinion rotation.
+        x0 : array_like (5,) — [mm, mm, mm, mm, rad]
+            Start (Z_p, P_p, Z_g, P_g, φ_g).
+        max_nfev : int
+            Largest number of residual evaluations (12: the TCA's last resort after
+            :meth:`newton_params`; the synthesis allows more).
+
+        Returns
+        -------
+        ndarray (5,)
+            The solution found (not checked: use :meth:`residual` or :meth:`measure`).
+
+        Notes
+        -----
+        ``scipy.optimize.least_squares`` (MINPACK ``lm``) on the six residuals with the
+        analytic Jacobian, φ_g scaled by the gear mean pitch radius, tolerances 1e-14; a
+        place where a flank is not generated has the residual 1e3 mm. Each evaluation starts
+        the envelope solver from the last generated one.
+        """
         phi = np.array([phi_p])
         last = [None]  # surface parameters of the last generated evaluation: the next guess
 
@@ -440,17 +487,37 @@ class _Pair:
 
         sol = least_squares(lambda xf: get(xf)[0], np.asarray(x0, float),
                             jac=lambda xf: get(xf)[1], method="lm",
-                            x_scale=np.array([1.0, 1.0, 1.0, 1.0, 1.0 / self.rg]),
-                            xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=12)
+                            x_scale=np.array([1.0, 1.0, 1.0, 1.0,
+                                              1.0 / self.mean_pitch_radius]),
+                            xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=max_nfev)
         return sol.x
 
     def measure(self, phi_p, x, guess=None):
-        """Residual of Eq. 2.14, the contact check and the placed points of a solution.
+        """Residual of Eq. 2.14, the contact check and the placed points of solutions.
 
+        Parameters
+        ----------
+        phi_p : ndarray (K,) — [rad]
+            Pinion rotations.
+        x : ndarray (K, 5) — [mm, mm, mm, mm, rad]
+            Solutions (Z_p, P_p, Z_g, P_g, φ_g).
+        guess : ndarray (K, 8), optional
+            Envelope parameters from :meth:`newton_params` (start of the surface solver).
+
+        Returns
+        -------
+        residual : ndarray (K,)
+            max(|r_p − r_g| [mm], |n_p + n_g| [1]); inf where a flank is not generated.
+        converged : ndarray (K,) bool
+            residual < :data:`CONVERGED_RESIDUAL`, opposite normals and a contact (below).
+        pinion_point, gear_point, normal : ndarray (K, 3)
+            r_p, r_g [mm] and the pinion unit normal n_p in the pair frame.
+
+        Notes
+        -----
         A solution counts only if the relative curvature W_p + W_g is positive
-        semi-definite in the tangent plane (to ``_PSD`` 1/mm): a local minimum of the
+        semi-definite in the tangent plane (to ``_PSD`` = 1e-6 1/mm): a local minimum of the
         separation, i.e. a contact point, not a saddle where the surfaces already cross.
-        ``guess`` (K, 8): surface parameters from :meth:`newton_params`.
         """
         _, _, ok, (pp, pg, np_, ng, rel), _ = self._residual(phi_p, x, guess)
         res = np.maximum(np.linalg.norm(pp - pg, axis=-1), np.linalg.norm(np_ + ng, axis=-1))
@@ -507,7 +574,7 @@ def mean_contact(case: Case, flank: str | None = None) -> MeanContact:
 
     Notes
     -----
-    The gear point is held at M (:func:`geometry.synthesis.design_point_of_case`) and
+    The gear point is held at M (:func:`geometry.design_point.design_point_of_case`) and
     (Z_p, P_p, φ_p, φ_g) are fitted to
     seed Eq. 2.14 by ``scipy.optimize.least_squares``. The start comes from a scan of the
     gear rotation over the mesh zone (+x side of the pair frame): for each gear rotation the
@@ -518,9 +585,10 @@ def mean_contact(case: Case, flank: str | None = None) -> MeanContact:
     then the TCA gear rotation at that pinion rotation.
     """
     flank = _check_flank(case, flank)
-    pair = _Pair(case, flank, Misalignment())
+    pair = ToothPair.from_case(case, flank, Misalignment())
     zg, pg_ = design_point_of_case(case, flank)
-    rg, ng, _, _, okg = pair.gear(np.array([zg]), np.array([pg_]))
+    gpt = pair.gear.points(np.array([zg]), np.array([pg_]))
+    rg, ng, okg = gpt.r, gpt.n, gpt.ok
     if not okg[0]:
         raise InputError(f"case {case.name}: the gear {_OTHER[flank]} flank is not generated "
                          "at its mean point")
@@ -557,7 +625,7 @@ def mean_contact(case: Case, flank: str | None = None) -> MeanContact:
         tp, _ = pair.transforms(y[2], 0.0)
         axis_p, orig_p = tp[:3, 2], tp[:3, 3]
         jp = np.concatenate([np.cross(axis_p, pp[0] - orig_p),
-                             pair.ln * np.cross(axis_p, np_[0])])
+                             pair.mean_cone_distance * np.cross(axis_p, np_[0])])
         return f[0], np.column_stack([jac[0][:, 0], jac[0][:, 1], jp, jac[0][:, 4]])
 
     memo: dict[bytes, tuple] = {}
@@ -571,7 +639,8 @@ def mean_contact(case: Case, flank: str | None = None) -> MeanContact:
 
     y0 = np.array([z1[best], r1[best], phi_p0, phi_g[best]])
     sol = least_squares(lambda y: get(y)[0], y0, jac=lambda y: get(y)[1], method="lm",
-                        x_scale=np.array([1.0, 1.0, 1.0 / pair.rg, 1.0 / pair.rg]),
+                        x_scale=np.array([1.0, 1.0, 1.0 / pair.mean_pitch_radius,
+                                          1.0 / pair.mean_pitch_radius]),
                         xtol=1e-13, ftol=1e-13, gtol=1e-13, max_nfev=200)
     y = sol.x
     x = np.array([[y[0], y[1], zg, pg_, y[3]]])
@@ -615,12 +684,12 @@ def _extrapolate(known: dict[float, np.ndarray], r: float) -> np.ndarray:
     return xx[0] + t * (xx[1] - xx[0])
 
 
-def _substeps(pair: _Pair, ref: MeanContact, known: dict[float, np.ndarray], r: float,
+def _substeps(pair: ToothPair, ref: MeanContact, known: dict[float, np.ndarray], r: float,
               step: float) -> tuple[np.ndarray, bool]:
     """Solve roll r by continuation from the nearest solved roll in steps ≤ ``step``.
 
     Intermediate solutions are added to ``known``; the last resort at r is scipy's
-    Levenberg–Marquardt (:meth:`_Pair.solve_one`).
+    Levenberg–Marquardt (:meth:`ToothPair.solve_one`).
     """
     kr = np.fromiter(known, float)
     r0 = float(kr[np.argmin(np.abs(kr - r))])
@@ -709,7 +778,8 @@ def conventional_tca(case: Case, pinion_roll, *, flank: str | None = None,
     else:
         raise InputError(f"initial: must be a TCAResult or MeanContact, got "
                          f"{type(initial).__name__}")
-    pair = _Pair(case, flank, misalignment)
+    pair = ToothPair.from_case(case, flank, misalignment)
+    mis = case.misalignment if misalignment is None else misalignment
     ratio = case.pinion.blank.teeth / case.gear.blank.teeth
     phi_p = ref.pinion_rotation + ref.pinion_sense * roll
 
@@ -762,4 +832,4 @@ def conventional_tca(case: Case, pinion_roll, *, flank: str | None = None,
         pinion_projection=x[:, :2].copy(), gear_projection=x[:, 2:4].copy(), normal=np_,
         residual=res, converged=conv, on_flank=on_flank,
         reference=np.array([ref.pinion_rotation, ref.gear_rotation]),
-        sense=np.array([ref.pinion_sense, ref.gear_sense]), misalignment=pair.mis)
+        sense=np.array([ref.pinion_sense, ref.gear_sense]), misalignment=mis)

@@ -34,15 +34,19 @@ From a :class:`geometry.basic_design.BasicDesign` this module builds a complete 
    :func:`geometry.machine.settings_from_poses`.
 6. **Modified roll** (third and fourth order, 6D and 24E): the local synthesis fixes the
    transmission error only to second order at M; 6D and 24E put it on the prescribed
-   parabola at ±pitch/4 (a short contact computation near M, ``_LocalContact``).
+   parabola at ±pitch/4: the contact is followed from M in a few roll steps with the
+   conventional TCA's system of seed Eq. 2.14 (:class:`geometry.conventional_tca.ToothPair`,
+   scipy Levenberg–Marquardt per roll), with a Newton–Broyden iteration on 6D and 24E.
 
 Public functions
 ----------------
 SynthesisReport        what was synthesised, per flank (targets and achieved values)
 case_blank             ISO 23509 member blank → case blank
-mean_addendum          mean addendum of a case blank
-design_point           mean contact point M on a gear flank (projection plane)
-design_point_of_case   the same for a case and pinion flank
+mean_addendum          mean addendum of a case blank (from :mod:`geometry.design_point`)
+design_point           mean contact point M on a gear flank (from :mod:`geometry.design_point`)
+design_point_of_case   the same for a case and pinion flank (from :mod:`geometry.design_point`)
+FlankPoint             flank points with tangents and curvature (from
+                       :mod:`geometry.flank_point`)
 gear_formate_tools     Formate gear blades and settings
 mean_point             mesh position of the gear mean point (surface of action)
 local_synthesis        pinion shape operator at M from the local-synthesis conditions
@@ -65,18 +69,23 @@ from geometry.assembly import member_transform
 from geometry.basic_design import BasicDesign, FlankOptions
 from geometry.blank import BlankGeometry, MemberBlank
 from geometry.case import FLANKS, Blank, Case, case_from_dict
-from geometry.curvature import surface_curvatures
+from geometry.conventional_tca import ToothPair
 from geometry.cutter import Blade
+from geometry.design_point import (
+    action_rotation,
+    design_point,
+    design_point_of_case,
+    mean_addendum,
+)
 from geometry.errors import InputError
 from geometry.flank import blank_outline
+from geometry.flank_point import FlankPoint, MemberFlank, flank_points
 from geometry.machine import (
     MachineSettings,
     cutter_pose,
-    meshing_function,
     roll_angle,
     settings_from_poses,
 )
-from geometry.meshing import solve_envelope
 
 __all__ = [
     "FlankPoint",
@@ -116,63 +125,10 @@ def _tangent_basis(n: np.ndarray) -> np.ndarray:
     return np.column_stack([t1, np.cross(n, t1)])
 
 
-class FlankPoint(NamedTuple):
-    """Flank points in their member frame (mirrored for a left-hand member), batched."""
-
-    r: np.ndarray  # (..., 3) [mm]
-    n: np.ndarray  # (..., 3) [1] out of the material
-    shape: np.ndarray  # (..., 3, 3) [1/mm] shape operator W (dn = W dr)
-    r_s: np.ndarray  # (..., 3) [1] unit tangent along the blade (root → tip)
-    tangents: np.ndarray  # (..., 3, 2) [1] ∂r/∂z, ∂r/∂ρ in the projection plane
-    ok: np.ndarray  # (...,) bool
-
-
-def _flank_eval(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
-                z, p) -> FlankPoint:
-    """Points, normals, shape operators and tangents of a generated flank at (z, ρ) arrays."""
-    z = np.atleast_1d(np.asarray(z, float))
-    p = np.atleast_1d(np.asarray(p, float))
-    try:
-        sol = solve_envelope(blade, settings, z, p, length_scale=blank.outer_cone_distance,
-                             depth=blank.outer_addendum + blank.outer_dedendum)
-    except InputError:
-        nan = np.full((*z.shape, 3), np.nan)
-        return FlankPoint(nan, nan, np.full((*z.shape, 3, 3), np.nan), nan,
-                      np.full((*z.shape, 3, 2), np.nan), np.zeros(z.shape, bool))
-    gen = settings.process == "Generate"
-    fam = sol.family
-    pc = surface_curvatures(fam, gen, blank.outer_cone_distance)
-    w = (pc.kappa1[..., None, None] * pc.dir1[..., :, None] * pc.dir1[..., None, :]
-         + pc.kappa2[..., None, None] * pc.dir2[..., :, None] * pc.dir2[..., None, :])
-    if gen:
-        _, grad = meshing_function(fam, blank.outer_cone_distance)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            rs = fam.r_s + fam.r_q * (-grad[..., 0] / grad[..., 2])[..., None]
-            rt = fam.r_theta + fam.r_q * (-grad[..., 1] / grad[..., 2])[..., None]
-    else:
-        rs, rt = fam.r_s, fam.r_theta
-    r = sol.position
-    rho = np.hypot(r[..., 0], r[..., 1])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        er = np.stack([r[..., 0] / rho, r[..., 1] / rho, np.zeros_like(rho)], -1)
-        a = np.stack([np.stack([rs[..., 2], rt[..., 2]], -1),
-                      np.stack([(rs * er).sum(-1), (rt * er).sum(-1)], -1)], -2)
-        tang = np.stack([rs, rt], -1) @ np.linalg.inv(np.where(
-            np.isfinite(a), a, np.eye(2)))
-    n, rs_unit = sol.normal, fam.r_s / np.linalg.norm(fam.r_s, axis=-1, keepdims=True)
-    if hand == "left":
-        r, n, rs_unit = r @ _MIRROR, n @ _MIRROR, rs_unit @ _MIRROR
-        tang = _MIRROR @ tang
-        w = _MIRROR @ w @ _MIRROR
-    ok = (sol.reason == 0) & np.all(np.isfinite(w), axis=(-2, -1)) & np.all(
-        np.isfinite(tang), axis=(-2, -1))
-    return FlankPoint(r, n, w, rs_unit, tang, ok)
-
-
 def _flank_point(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
                  z: float, p: float) -> FlankPoint:
     """One flank point (unbatched); InputError if the flank is not generated there."""
-    pt = _flank_eval(blade, settings, blank, hand, [z], [p])
+    pt = flank_points(blade, settings, blank, hand, [z], [p])
     if not pt.ok[0]:
         raise InputError(f"synthesis: the flank is not generated at (z, rho) = ({z:.4g}, "
                          f"{p:.4g}) mm")
@@ -212,141 +168,6 @@ def case_blank(member: MemberBlank) -> dict[str, float]:
 def _blank(member: MemberBlank) -> Blank:
     d = case_blank(member)
     return Blank(**{k: (math.radians(v) if k.endswith("angle") else v) for k, v in d.items()})
-
-
-def mean_addendum(blank: Blank) -> float:
-    """Mean addendum h_am [mm] of a case blank: h_ae − (b/2) tan(δ_a − δ) (ISO 23509 cl. 6).
-
-    Parameters
-    ----------
-    blank : geometry.case.Blank
-
-    Returns
-    -------
-    float — [mm]
-    """
-    return blank.outer_addendum - 0.5 * blank.face_width * math.tan(
-        blank.face_angle - blank.pitch_angle)
-
-
-def _action_rotation(points: np.ndarray, normals: np.ndarray, pinion_blank: Blank,
-                     gear_blank: Blank, kw: dict[str, Any]) -> np.ndarray:
-    """Gear rotation [rad] at which gear-frame points lie on the surface of action.
-
-    For each gear point (gear frame, outward normal) the rotation φ_g in (−π, π] at which
-    n · v⁽¹²⁾ = 0 for the ideal motion (members turning in opposite senses at z1/z2) and the
-    point is in the mesh zone (x_f > 0); of several, the one whose place in the pinion
-    projection plane is nearest the pinion's mean point. NaN where there is none.
-    """
-    ratio = pinion_blank.teeth / gear_blank.teeth
-    tp = member_transform("pinion", **kw)
-    a_p, o_p = tp[:3, 2], tp[:3, 3]
-    pm1 = blank_outline(pinion_blank).mean_point
-
-    def state(phi_g, k):
-        tg = member_transform("gear", rotation=phi_g, **kw)
-        rot = tg[..., :3, :3]
-        r = np.einsum("...ij,j->...i", rot, points[k]) + tg[..., :3, 3]
-        n = -np.einsum("...ij,j->...i", rot, normals[k])
-        v12 = np.cross(a_p, r - o_p) + ratio * np.cross(tg[..., :3, 2], r - tg[..., :3, 3])
-        return (n * v12).sum(-1), r
-
-    grid = np.linspace(-math.pi, math.pi, 721)
-    out = np.full(len(points), np.nan)
-    for k in range(len(points)):
-        vals, rs = state(grid, k)
-        best = None
-        for i in np.flatnonzero(vals[:-1] * vals[1:] < 0):
-            if rs[i, 0] <= 0:
-                continue
-            x = brentq(lambda g, k=k: float(state(g, k)[0]), grid[i], grid[i + 1],
-                       xtol=1e-15, rtol=1e-15)
-            r = state(x, k)[1]
-            loc = tp[:3, :3].T @ (r - o_p)
-            dist = math.hypot(loc[2] - pm1[0], math.hypot(loc[0], loc[1]) - pm1[1])
-            if best is None or dist < best[0]:
-                best = (dist, x)
-        if best is not None:
-            out[k] = best[1]
-    return out
-
-
-def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: Blank,
-                 pinion_blank: Blank, *, gear_hand: str, shaft_angle: float,
-                 offset: float) -> np.ndarray:
-    """Projection-plane place (z, ρ) [mm] of the mean contact point M on a gear flank.
-
-    Parameters
-    ----------
-    gear_blade, gear_settings : Blade, MachineSettings
-        The tool of the gear flank.
-    gear_blank, pinion_blank : geometry.case.Blank
-    gear_hand : str
-    shaft_angle : float — [rad]
-    offset : float — [mm]
-
-    Returns
-    -------
-    ndarray (2,) — [mm]
-        On the normal to the pitch cone at the gear's mean cone distance, between the gear
-        tip (h_am2 above the pitch cone) and the lowest point the pinion tip reaches (h_am1
-        below it; h_am the mean addenda), the point that the ideal motion brings onto the
-        surface of action at the middle of the roll range of that working depth.
-
-    Raises
-    ------
-    InputError
-        If the working-depth line is not generated or never meets the surface of action.
-
-    Notes
-    -----
-    Over a mesh cycle the contact of a localised bearing crosses the profile at the speed of
-    the conjugate contact lines (fixed by the kinematics; for a face-milled Formate pair the
-    lines run nearly lengthwise), i.e. about one working depth per pitch of roll. Centring M
-    in roll, rather than at the pitch point or the middle of the depth, keeps the contact on
-    both flanks for as long as possible on either side of M. Each point's roll is the gear
-    rotation at which it meets the surface of action of the ideal motion (n·v⁽¹²⁾ = 0,
-    Litvin & Fuentes 2004 ch. 6), interpolated over nine points of the line.
-    """
-    kw = _pair_kw(shaft_angle, offset, gear_hand)
-    pm = blank_outline(gear_blank).mean_point
-    d = gear_blank.pitch_angle
-    up = np.array([-math.sin(d), math.cos(d)])
-    lo, hi = -mean_addendum(pinion_blank), mean_addendum(gear_blank)
-    offs = np.linspace(lo, hi, 9)
-    zp = pm + offs[:, None] * up
-    pt = _flank_eval(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0], zp[:, 1])
-    if not pt.ok.all():
-        raise InputError("synthesis: the gear flank is not generated along the working depth "
-                         "at the mean cone distance")
-    q = _action_rotation(pt.r, pt.n, pinion_blank, gear_blank, kw)
-    if not np.all(np.isfinite(q)) or not (np.all(np.diff(q) > 0) or np.all(np.diff(q) < 0)):
-        raise InputError("synthesis: the working depth does not cross the surface of action "
-                         "monotonically; cannot centre the mean point")
-    target = 0.5 * (q[0] + q[-1])
-    order = np.argsort(q)
-    o = float(np.interp(target, q[order], offs[order]))
-    return pm + o * up
-
-
-def design_point_of_case(case: Case, flank: str) -> np.ndarray:
-    """:func:`design_point` of the gear flank that meshes pinion flank ``flank`` of a case.
-
-    Parameters
-    ----------
-    case : geometry.case.Case
-    flank : str
-        Pinion flank (``"concave"`` or ``"convex"``).
-
-    Returns
-    -------
-    ndarray (2,) — [mm]
-        (z, ρ) in the gear projection plane.
-    """
-    tool = case.gear.flank(_OTHER[flank])
-    return design_point(tool.blade, tool.machine, case.gear.blank, case.pinion.blank,
-                        gear_hand=case.gear.hand, shaft_angle=case.pair.shaft_angle,
-                        offset=case.pair.offset)
 
 
 # --------------------------------------------------------------------------- gear
@@ -499,8 +320,8 @@ def mean_point(gear_point: FlankPoint, gear_blank: Blank, pinion_blank: Blank, *
     Parameters
     ----------
     gear_point : FlankPoint
-        The gear flank at M (gear frame, unbatched; ``_flank_eval`` of the gear tool at
-        :func:`design_point`).
+        The gear flank at M (gear frame, unbatched;
+        :func:`geometry.flank_point.flank_points` of the gear tool at :func:`design_point`).
     gear_blank, pinion_blank : geometry.case.Blank
     pinion_flank : str
         The pinion flank that meshes this gear flank.
@@ -535,8 +356,8 @@ def mean_point(gear_point: FlankPoint, gear_blank: Blank, pinion_blank: Blank, *
     """
     kw = _pair_kw(shaft_angle, offset, gear_hand)
     ratio = pinion_blank.teeth / gear_blank.teeth
-    phi_g = float(_action_rotation(gear_point.r[None], gear_point.n[None], pinion_blank,
-                                   gear_blank, kw)[0])
+    phi_g = float(action_rotation(gear_point.r[None], gear_point.n[None], pinion_blank,
+                                  gear_blank, **kw)[0])
     if not math.isfinite(phi_g):
         raise InputError("synthesis: the gear mean point never meets the surface of action in "
                          "the mesh zone; check the blanks and the offset")
@@ -827,7 +648,7 @@ def pinion_generate_tools(point, normal, target_shape, *, side: str, blade_angle
         if st is None:
             return None
         blade, ps = st
-        pt = _flank_eval(blade, ps.settings, pinion_blank, "right", [zm], [pm])
+        pt = flank_points(blade, ps.settings, pinion_blank, "right", [zm], [pm])
         if not pt.ok[0]:
             return None
         c, s = math.cos(ps.blank_phase), math.sin(ps.blank_phase)
@@ -914,72 +735,26 @@ def shift_roll_origin(settings: MachineSettings, q0: float) -> MachineSettings:
 
 
 # --------------------------------------------------------------------------- TE shape
-class _Member(NamedTuple):
-    blade: Blade
-    settings: MachineSettings
-    blank: Blank
-    hand: str
+def _nominal_transforms(shaft_angle: float, offset: float, gear_hand: str):
+    """Member → pair transforms (φ_p, φ_g) → (T_p, T_g) of the aligned assembly."""
+    kw = _pair_kw(shaft_angle, offset, gear_hand)
+
+    def transforms(phi_p, phi_g):
+        return (member_transform("pinion", rotation=phi_p, **kw),
+                member_transform("gear", rotation=phi_g, **kw))
+
+    return transforms
 
 
-class _LocalContact:
-    """Seed Eq. 2.14 near the mean point, for tuning the modified roll (not the TCA).
-
-    Unknowns per roll x = (z_p, ρ_p, z_g, ρ_g, φ_g); residuals r_p − r_g [mm] and
-    L (n_p + n_g) with L the gear mean cone distance; Levenberg–Marquardt
-    (``scipy.optimize.least_squares``) with the analytic Jacobian (surface tangents from the
-    envelope, normal derivatives dn = W dr). :mod:`geometry.conventional_tca` is the toolkit's full,
-    independent TCA.
-    """
-
-    def __init__(self, pinion: _Member, gear: _Member, kw: dict[str, Any]) -> None:
-        self.pinion, self.gear, self.kw = pinion, gear, kw
-        self.ln = gear.blank.outer_cone_distance - 0.5 * gear.blank.face_width
-
-    def _fun(self, phi_p: float, x: np.ndarray):
-        pp = _flank_eval(*self.pinion, [x[0]], [x[1]])
-        gg = _flank_eval(*self.gear, [x[2]], [x[3]])
-        if not (pp.ok[0] and gg.ok[0]):
-            return np.full(6, 1e3), np.zeros((6, 5))
-        tp = member_transform("pinion", rotation=phi_p, **self.kw)
-        tg = member_transform("gear", rotation=x[4], **self.kw)
-        ap, ag = tp[:3, :3], tg[:3, :3]
-        rp, rg = ap @ pp.r[0] + tp[:3, 3], ag @ gg.r[0] + tg[:3, 3]
-        n_p, n_g = ap @ pp.n[0], ag @ gg.n[0]
-        f = np.concatenate([rp - rg, self.ln * (n_p + n_g)])
-        jac = np.zeros((6, 5))
-        jac[:3, 0:2] = ap @ pp.tangents[0]
-        jac[:3, 2:4] = -(ag @ gg.tangents[0])
-        jac[3:, 0:2] = self.ln * (ap @ pp.shape[0] @ pp.tangents[0])
-        jac[3:, 2:4] = self.ln * (ag @ gg.shape[0] @ gg.tangents[0])
-        jac[:3, 4] = -np.cross(tg[:3, 2], rg - tg[:3, 3])
-        jac[3:, 4] = self.ln * np.cross(tg[:3, 2], n_g)
-        return f, jac
-
-    def solve(self, phi_p: float, x0: np.ndarray) -> tuple[np.ndarray, float]:
-        cache: dict[bytes, tuple] = {}
-
-        def get(x):
-            key = x.tobytes()
-            if key not in cache:
-                cache.clear()
-                cache[key] = self._fun(phi_p, x)
-            return cache[key]
-
-        rg = self.ln * math.sin(self.gear.blank.pitch_angle)
-        sol = least_squares(lambda x: get(x)[0], np.asarray(x0, float),
-                            jac=lambda x: get(x)[1], method="lm",
-                            x_scale=np.array([1.0, 1.0, 1.0, 1.0, 1.0 / rg]),
-                            xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=50)
-        return sol.x, float(np.abs(sol.fun).max())
-
-
-def _te_at(contact: _LocalContact, start: np.ndarray, rate: np.ndarray, *, phi_p0: float,
+def _te_at(pair: ToothPair, start: np.ndarray, rate: np.ndarray, *, phi_p0: float,
            pinion_sense: int, gear_sense: int, ratio: float, rolls: tuple[float, ...],
            steps: int = 4) -> dict[float, float]:
     """Transmission error (gear lag, :mod:`geometry.conventional_tca` convention) at rolls.
 
     Continuation from M (``start`` = x at roll 0, ``rate`` = dx/droll there) in ``steps``
-    steps per side; raises InputError if a step fails.
+    steps per side, each roll solved by :meth:`~geometry.conventional_tca.ToothPair.solve_one`
+    (at most 50 evaluations); raises InputError if a step leaves a residual of seed Eq. 2.14
+    above 1e-7 mm.
     """
     out = {}
     for side in (1.0, -1.0):
@@ -997,7 +772,10 @@ def _te_at(contact: _LocalContact, start: np.ndarray, rate: np.ndarray, *, phi_p
             else:
                 t = (r - prev_r[-1]) / (prev_r[-1] - prev_r[-2])
                 x0 = prev_x[-1] + t * (prev_x[-1] - prev_x[-2])
-            x, res = contact.solve(phi_p0 + pinion_sense * r, x0)
+            phi = phi_p0 + pinion_sense * r
+            x = pair.solve_one(phi, x0, max_nfev=50)
+            f, _, ok, _ = pair.residual(np.array([phi]), x[None])
+            res = float(np.abs(f[0]).max()) if ok[0] else math.inf
             if res > 1e-7:
                 raise InputError("synthesis: the contact near the mean point could not be "
                                  f"followed to roll {r:.4g} rad (residual {res:.3g})")
@@ -1008,7 +786,7 @@ def _te_at(contact: _LocalContact, start: np.ndarray, rate: np.ndarray, *, phi_p
     return out
 
 
-def _tune_roll(tools: PinionTools, contact: _LocalContact, start, rate, *, a21: float,
+def _tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
                pitch: float, **kw) -> PinionTools:
     """Modified roll 6D, 24E that put the TE at ±pitch/4 on the prescribed parabola.
 
@@ -1023,9 +801,8 @@ def _tune_roll(tools: PinionTools, contact: _LocalContact, start, rate, *, a21: 
 
     def g(coef):
         settings = replace(tools.settings, modified_roll=(0.0, *coef))
-        c = _LocalContact(contact.pinion._replace(settings=settings), contact.gear,
-                          contact.kw)
-        te = _te_at(c, start, rate, rolls=rolls, **kw)
+        tuned = ToothPair(pair.pinion._replace(machine=settings), pair.gear, pair.transforms)
+        te = _te_at(tuned, start, rate, rolls=rolls, **kw)
         return np.array([te[h] - level, te[-h] - level])
 
     x = np.zeros(2)
@@ -1216,8 +993,9 @@ def synthesize(basic: BasicDesign) -> tuple[Case, SynthesisReport]:
         # higher-order roll (6D, 24E): the TE at ±pitch/4 on the prescribed parabola (the
         # local synthesis fixes it only to second order at M)
         hand_sign = 1.0 if pinion_hand == "right" else -1.0
-        contact = _LocalContact(_Member(tools.blade, tools.settings, pin_bl, pinion_hand),
-                                _Member(gblade, gear.settings, gear_bl, gear_hand), kw)
+        pair = ToothPair(MemberFlank(tools.blade, tools.settings, pin_bl, pinion_hand),
+                         MemberFlank(gblade, gear.settings, gear_bl, gear_hand),
+                         _nominal_transforms(**kw))
         rot_g = tg[:3, :3]
         vp, vg = rot.T @ ls.path_pinion, rot_g.T @ ls.path_gear
         pl, gl = rot.T @ (mp.point - tp[:3, 3]), rot_g.T @ (mp.point - tg[:3, 3])
@@ -1228,7 +1006,7 @@ def synthesize(basic: BasicDesign) -> tuple[Case, SynthesisReport]:
 
         start = np.array([pl[2], math.hypot(pl[0], pl[1]), zg, pg, mp.gear_rotation])
         rate = np.array([*rates(vp, pl), *rates(vg, gl), mp.gear_sense * z1 / geom.gear.z])
-        tools = _tune_roll(tools, contact, start, rate, a21=a21, pitch=2 * math.pi / z1,
+        tools = _tune_roll(tools, pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
                            phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
                            pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
                            ratio=z1 / geom.gear.z)

@@ -23,7 +23,7 @@ from contact.cli import main as ltca
 from geometry.assembly import Misalignment, case_transforms
 from geometry.basic_design import basic_from_dict, load_basic
 from geometry.case import load_case
-from geometry.conventional_tca import _Pair, conventional_tca, mean_contact
+from geometry.conventional_tca import ToothPair, conventional_tca, mean_contact
 from geometry.curvature import PrincipalCurvatures, relative_curvature, surface_curvatures
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.flank import blank_outline
@@ -290,11 +290,11 @@ def test_local_synthesis_conjugate_limit(name, flank):
     are ~0.05 1/mm and exact to ~1e-12)."""
     case = load_case(DATA / f"{name}.toml")
     ref = mean_contact(case, flank)
-    pair = _Pair(case, flank, None)
+    pair = ToothPair.from_case(case, flank)
     x = np.array([[*ref.pinion_projection, *ref.gear_projection, ref.gear_rotation]])
     phi = np.array([ref.pinion_rotation])
-    _, n_p, _, wp, _ = pair.pinion(x[:, 0], x[:, 1])
-    rg, _, _, wg, _ = pair.gear(x[:, 2], x[:, 3])
+    fp, fg = pair.pinion.points(x[:, 0], x[:, 1]), pair.gear.points(x[:, 2], x[:, 3])
+    n_p, wp, rg, wg = fp.n, fp.shape, fg.r, fg.shape
     tp, tg = pair.transforms(phi, x[:, 4])
     rot_p, rot_g = tp[0, :3, :3], tg[0, :3, :3]
     point = rot_g @ rg[0] + tg[0, :3, 3]

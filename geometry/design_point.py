@@ -1,0 +1,214 @@
+"""The mean contact point M of a gear flank: the design point of a pair (projection plane).
+
+The point where the local synthesis (:mod:`geometry.synthesis`; Litvin & Fuentes 2004
+ch. 9) places the contact of the mean roll position and where the conventional TCA
+(:mod:`geometry.conventional_tca`) takes its reference (roll 0): on the gear flank at the
+gear's mean cone distance, centred in roll within the working depth, i.e. the point that the
+ideal motion brings onto the surface of action n·v⁽¹²⁾ = 0 halfway through the roll range
+between the gear tip and the lowest point the pinion tip reaches. A module below both
+:mod:`geometry.synthesis` (which re-exports these functions) and
+:mod:`geometry.conventional_tca`, so that neither imports the other for it.
+
+Public functions
+----------------
+mean_addendum          mean addendum of a case blank (ISO 23509)
+action_rotation        gear rotation at which gear-frame points lie on the surface of action
+design_point           mean contact point M on a gear flank (projection plane)
+design_point_of_case   the same for a case and pinion flank
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.optimize import brentq
+
+from geometry.assembly import member_transform
+from geometry.case import Blank, Case
+from geometry.cutter import Blade
+from geometry.errors import InputError
+from geometry.flank import blank_outline
+from geometry.flank_point import flank_points
+from geometry.machine import MachineSettings
+
+__all__ = ["action_rotation", "design_point", "design_point_of_case", "mean_addendum"]
+
+_OTHER = {"concave": "convex", "convex": "concave"}
+
+
+def mean_addendum(blank: Blank) -> float:
+    """Mean addendum h_am [mm] of a case blank: h_ae − (b/2) tan(δ_a − δ) (ISO 23509 cl. 6).
+
+    Parameters
+    ----------
+    blank : geometry.case.Blank
+
+    Returns
+    -------
+    float — [mm]
+    """
+    return blank.outer_addendum - 0.5 * blank.face_width * math.tan(
+        blank.face_angle - blank.pitch_angle)
+
+
+def action_rotation(points, normals, pinion_blank: Blank, gear_blank: Blank, *,
+                    shaft_angle: float, offset: float, gear_hand: str) -> np.ndarray:
+    """Gear rotation at which gear-frame points lie on the surface of action of the pair.
+
+    Parameters
+    ----------
+    points : array_like (K, 3) — [mm]
+        Gear flank points in the gear frame.
+    normals : array_like (K, 3) — [1]
+        Their unit normals, out of the gear material.
+    pinion_blank, gear_blank : geometry.case.Blank
+    shaft_angle : float — [rad]
+    offset : float — [mm]
+    gear_hand : str
+        ``"right"`` or ``"left"`` (the assembly of :func:`geometry.assembly.member_transform`,
+        nominal, pinion at rotation 0).
+
+    Returns
+    -------
+    ndarray (K,) — [rad]
+        For each point the gear rotation φ_g in [−π, π] (right-handed about the gear's +z)
+        at which n · v⁽¹²⁾ = 0 for the ideal motion (members turning in opposite senses at
+        z1/z2) and the point is in the mesh zone (x > 0 in the pair frame); of several, the
+        one whose place in the pinion projection plane is nearest the pinion's mean point.
+        NaN where there is none.
+
+    Raises
+    ------
+    InputError
+        For a bad hand or shaft angle (:func:`geometry.assembly.member_transform`).
+
+    Notes
+    -----
+    Surface of action of the ideal motion (Litvin & Fuentes 2004 ch. 6; seed Eq. 2.19 with
+    R = z2/z1), v⁽¹²⁾ = ω₁ × (r − o₁) − ω₂ × (r − o₂). Scan over 721 gear rotations, each
+    sign change refined by Brent's method (1e-15 rad).
+    """
+    points = np.asarray(points, dtype=float)
+    normals = np.asarray(normals, dtype=float)
+    kw = dict(shaft_angle=shaft_angle, offset=offset, gear_hand=gear_hand)
+    ratio = pinion_blank.teeth / gear_blank.teeth
+    tp = member_transform("pinion", **kw)
+    a_p, o_p = tp[:3, 2], tp[:3, 3]
+    pm1 = blank_outline(pinion_blank).mean_point
+
+    def state(phi_g, k):
+        tg = member_transform("gear", rotation=phi_g, **kw)
+        rot = tg[..., :3, :3]
+        r = np.einsum("...ij,j->...i", rot, points[k]) + tg[..., :3, 3]
+        n = -np.einsum("...ij,j->...i", rot, normals[k])
+        v12 = np.cross(a_p, r - o_p) + ratio * np.cross(tg[..., :3, 2], r - tg[..., :3, 3])
+        return (n * v12).sum(-1), r
+
+    grid = np.linspace(-math.pi, math.pi, 721)
+    out = np.full(len(points), np.nan)
+    for k in range(len(points)):
+        vals, rs = state(grid, k)
+        best = None
+        for i in np.flatnonzero(vals[:-1] * vals[1:] < 0):
+            if rs[i, 0] <= 0:
+                continue
+            x = brentq(lambda g, k=k: float(state(g, k)[0]), grid[i], grid[i + 1],
+                       xtol=1e-15, rtol=1e-15)
+            r = state(x, k)[1]
+            loc = tp[:3, :3].T @ (r - o_p)
+            dist = math.hypot(loc[2] - pm1[0], math.hypot(loc[0], loc[1]) - pm1[1])
+            if best is None or dist < best[0]:
+                best = (dist, x)
+        if best is not None:
+            out[k] = best[1]
+    return out
+
+
+def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: Blank,
+                 pinion_blank: Blank, *, gear_hand: str, shaft_angle: float,
+                 offset: float) -> np.ndarray:
+    """Projection-plane place (z, ρ) [mm] of the mean contact point M on a gear flank.
+
+    Parameters
+    ----------
+    gear_blade, gear_settings : geometry.cutter.Blade, geometry.machine.MachineSettings
+        The tool of the gear flank (right-hand reference settings).
+    gear_blank, pinion_blank : geometry.case.Blank
+    gear_hand : str
+        ``"right"`` or ``"left"``.
+    shaft_angle : float — [rad]
+        Σ.
+    offset : float — [mm]
+        Hypoid offset E (ISO 23509 sign).
+
+    Returns
+    -------
+    ndarray (2,) — [mm]
+        On the normal to the pitch cone at the gear's mean cone distance, between the gear
+        tip (h_am2 above the pitch cone) and the lowest point the pinion tip reaches (h_am1
+        below it; h_am the mean addenda), the point that the ideal motion brings onto the
+        surface of action at the middle of the roll range of that working depth.
+
+    Raises
+    ------
+    InputError
+        If the working-depth line is not generated or never meets the surface of action.
+
+    Notes
+    -----
+    Over a mesh cycle the contact of a localised bearing crosses the profile at the speed of
+    the conjugate contact lines (fixed by the kinematics; for a face-milled Formate pair the
+    lines run nearly lengthwise), i.e. about one working depth per pitch of roll. Centring M
+    in roll, rather than at the pitch point or the middle of the depth, keeps the contact on
+    both flanks for as long as possible on either side of M. Each point's roll is the gear
+    rotation at which it meets the surface of action of the ideal motion (n·v⁽¹²⁾ = 0,
+    Litvin & Fuentes 2004 ch. 6), interpolated over nine points of the line.
+    """
+    pm = blank_outline(gear_blank).mean_point
+    d = gear_blank.pitch_angle
+    up = np.array([-math.sin(d), math.cos(d)])
+    lo, hi = -mean_addendum(pinion_blank), mean_addendum(gear_blank)
+    offs = np.linspace(lo, hi, 9)
+    zp = pm + offs[:, None] * up
+    pt = flank_points(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0], zp[:, 1])
+    if not pt.ok.all():
+        raise InputError("synthesis: the gear flank is not generated along the working depth "
+                         "at the mean cone distance")
+    q = action_rotation(pt.r, pt.n, pinion_blank, gear_blank, shaft_angle=shaft_angle,
+                        offset=offset, gear_hand=gear_hand)
+    if not np.all(np.isfinite(q)) or not (np.all(np.diff(q) > 0) or np.all(np.diff(q) < 0)):
+        raise InputError("synthesis: the working depth does not cross the surface of action "
+                         "monotonically; cannot centre the mean point")
+    target = 0.5 * (q[0] + q[-1])
+    order = np.argsort(q)
+    o = float(np.interp(target, q[order], offs[order]))
+    return pm + o * up
+
+
+def design_point_of_case(case: Case, flank: str) -> np.ndarray:
+    """:func:`design_point` of the gear flank that meshes pinion flank ``flank`` of a case.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str
+        Pinion flank (``"concave"`` or ``"convex"``).
+
+    Returns
+    -------
+    ndarray (2,) — [mm]
+        (z, ρ) in the gear projection plane.
+
+    Raises
+    ------
+    InputError
+        For a bad flank name, or as :func:`design_point`.
+    """
+    if flank not in _OTHER:
+        raise InputError(f"flank: must be one of {list(_OTHER)} (the pinion flank), got "
+                         f"{flank!r}")
+    tool = case.gear.flank(_OTHER[flank])
+    return design_point(tool.blade, tool.machine, case.gear.blank, case.pinion.blank,
+                        gear_hand=case.gear.hand, shaft_angle=case.pair.shaft_angle,
+                        offset=case.pair.offset)
