@@ -931,101 +931,135 @@ def synthesize(basic: BasicDesign) -> tuple[Case, SynthesisReport]:
     gear = gear_formate_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
                               blade_angle_coast=alpha_c, point_width=opt.point_width,
                               edge_radius=opt.edge_radius, drive_flank=drive)
-    edge = gear.blades["concave"].edge_radius
     pinion_hand = design.hand
     gear_hand = "right" if pinion_hand == "left" else "left"
-    pin_bl, gear_bl = _blank(geom.pinion), _blank(geom.gear)
-    kw = _pair_kw(design.Sigma, design.a, gear_hand)
-    z1 = geom.pinion.z
+    pair = _PairData(geom, gear, _blank(geom.pinion), _blank(geom.gear), pinion_hand,
+                     gear_hand, _pair_kw(design.Sigma, design.a, gear_hand))
     flanks: dict[str, FlankSynthesis] = {}
     ref_gear_rotation = None
     for pf in (drive, coast):
-        gf = _OTHER[pf]
-        gblade = gear.blades[gf]
-        zg, pg = design_point(gblade, gear.settings, gear_bl, pin_bl, gear_hand=gear_hand,
-                              shaft_angle=design.Sigma, offset=design.a)
-        gp = _flank_point(gblade, gear.settings, gear_bl, gear_hand, zg, pg)
-        fo = opt.flank(pf)
-        mp = mean_point(gp, gear_bl, pin_bl, pinion_flank=pf, shaft_angle=design.Sigma,
-                        offset=design.a, gear_hand=gear_hand,
-                        backlash=geom.j_mn if ref_gear_rotation is not None else 0.0,
-                        reference_gear_rotation=ref_gear_rotation)
+        flanks[pf] = _synthesize_flank(pair, pf, opt.flank(pf), ref_gear_rotation)
         if ref_gear_rotation is None:
-            ref_gear_rotation = mp.gear_rotation
-        a21 = 2.0 * fo.te_level / (2.0 * math.pi / z1) ** 2
-        semi = 0.5 * fo.ellipse_length * geom.gear.b
-        path = (math.cos(fo.path_angle) * mp.lengthwise + math.sin(fo.path_angle) * mp.profile)
-        tp = member_transform("pinion", rotation=mp.pinion_rotation, **kw)
-        tg = member_transform("gear", rotation=mp.gear_rotation, **kw)
-        ls = local_synthesis(mp.point, mp.normal, mp.gear_shape, tp[:3, 2], tp[:3, 3],
-                             tg[:3, 2], tg[:3, 3], pinion_sense=mp.pinion_sense,
-                             gear_sense=mp.gear_sense, ratio=z1 / geom.gear.z, a21=a21,
-                             path_direction=path, curvature_gap=2.0 * fo.approach / semi**2)
-        rot = tp[:3, :3]
-        mir = _MIRROR if pinion_hand == "left" else np.eye(3)
-        m_loc = mir @ rot.T @ (mp.point - tp[:3, 3])
-        n_loc = mir @ rot.T @ mp.normal
-        w_loc = mir @ rot.T @ ls.pinion_shape @ rot @ mir
-        # generating gear = the Formate gear: cradle axis = gear axis, the gear cutter turned
-        # to face the pinion (Litvin & Fuentes 2004 ch. 20)
-        cg, ug = cutter_pose(gear.settings, 0.0)
-        if gear_hand == "left":
-            cg, ug = _MIRROR @ cg, _MIRROR @ ug
-        cg = mir @ rot.T @ (tg[:3, :3] @ cg + tg[:3, 3] - tp[:3, 3])
-        ug = mir @ rot.T @ (tg[:3, :3] @ ug)
-        u_p = -ug
-        cradle_point = mir @ rot.T @ (tg[:3, 3] - tp[:3, 3])
-        cradle_axis = -(mir @ rot.T @ tg[:3, 2])
-        # tip plane: through the pinion root below M, plus the rise of the gear face over half
-        # the face width so that the gear tip clears the pinion root at the heel (the tip
-        # plane is not parallel to the pinion root cone)
-        root = _root_below(pin_bl, m_loc)
-        h_m = float((root - m_loc) @ u_p) + 0.5 * geom.gear.b * math.tan(
-            geom.gear.delta_a - geom.gear.delta_f)
-        sigma = 1 if FLANKS[pf] == "outside" else -1
-        rho_m = float(np.linalg.norm(np.cross(m_loc - cg, ug)))
-        tools = pinion_generate_tools(
-            m_loc, n_loc, w_loc, side=FLANKS[pf], blade_angle=gblade.blade_angle,
-            cutter_axis=u_p, tip_height=h_m, cradle_point=cradle_point,
-            cradle_axis=cradle_axis, ratio_of_roll=geom.gear.z / z1,
-            point_radius=rho_m - sigma * h_m * math.tan(gblade.blade_angle),
-            pinion_blank=pin_bl, edge_radius=edge)
-        # higher-order roll (6D, 24E): the TE at ±pitch/4 on the prescribed parabola (the
-        # local synthesis fixes it only to second order at M)
-        hand_sign = 1.0 if pinion_hand == "right" else -1.0
-        pair = ToothPair(MemberFlank(tools.blade, tools.settings, pin_bl, pinion_hand),
-                         MemberFlank(gblade, gear.settings, gear_bl, gear_hand),
-                         _nominal_transforms(**kw))
-        rot_g = tg[:3, :3]
-        vp, vg = rot.T @ ls.path_pinion, rot_g.T @ ls.path_gear
-        pl, gl = rot.T @ (mp.point - tp[:3, 3]), rot_g.T @ (mp.point - tg[:3, 3])
+            ref_gear_rotation = flanks[pf].mean.gear_rotation
+    flanks[coast] = _coast_in_drive_frame(flanks[coast], flanks[drive])
+    case = _assemble(basic, geom, gear, flanks, pinion_hand, gear_hand)
+    return case, SynthesisReport(geom, gear, flanks)
 
-        def rates(v, q):
-            rho = math.hypot(q[0], q[1])
-            return [v[2], (q[0] * v[0] + q[1] * v[1]) / rho]
 
-        start = np.array([pl[2], math.hypot(pl[0], pl[1]), zg, pg, mp.gear_rotation])
-        rate = np.array([*rates(vp, pl), *rates(vg, gl), mp.gear_sense * z1 / geom.gear.z])
-        tools = _tune_roll(tools, pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
-                           phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
-                           pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
-                           ratio=z1 / geom.gear.z)
-        flanks[pf] = FlankSynthesis(pf, fo, a21, mp, ls, tools)
-    # both pinion flanks in one frame: shift the coast flank's roll origin so that it is
-    # turned by the same blank phase as the drive flank
-    dphi = math.remainder(flanks[coast].tools.blank_phase - flanks[drive].tools.blank_phase,
-                          2.0 * math.pi)
-    ct = flanks[coast].tools
+class _PairData(NamedTuple):
+    """What the synthesis of each pinion flank shares: blanks, the gear's tools, hands and
+    the placement keywords of :func:`geometry.assembly.member_transform`."""
+
+    geom: BlankGeometry
+    gear: GearTools
+    pinion_blank: Blank
+    gear_blank: Blank
+    pinion_hand: str
+    gear_hand: str
+    kw: dict[str, Any]
+
+
+def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
+                      ref_gear_rotation: float | None) -> FlankSynthesis:
+    """Steps 3–6 of the module docstring for pinion flank ``pf``: mean point, local
+    synthesis, generating tools and the higher-order roll. The second flank is placed
+    with the ISO mean normal backlash against the first's gear rotation
+    ``ref_gear_rotation`` [rad] (None for the first)."""
+    geom, design = pair.geom, pair.geom.design
+    z1 = geom.pinion.z
+    gblade = pair.gear.blades[_OTHER[pf]]
+    zg, pg = design_point(gblade, pair.gear.settings, pair.gear_blank, pair.pinion_blank,
+                          gear_hand=pair.gear_hand, shaft_angle=design.Sigma, offset=design.a)
+    gp = _flank_point(gblade, pair.gear.settings, pair.gear_blank, pair.gear_hand, zg, pg)
+    mp = mean_point(gp, pair.gear_blank, pair.pinion_blank, pinion_flank=pf,
+                    shaft_angle=design.Sigma, offset=design.a, gear_hand=pair.gear_hand,
+                    backlash=geom.j_mn if ref_gear_rotation is not None else 0.0,
+                    reference_gear_rotation=ref_gear_rotation)
+    a21 = 2.0 * fo.te_level / (2.0 * math.pi / z1) ** 2
+    semi = 0.5 * fo.ellipse_length * geom.gear.b
+    path = (math.cos(fo.path_angle) * mp.lengthwise + math.sin(fo.path_angle) * mp.profile)
+    tp = member_transform("pinion", rotation=mp.pinion_rotation, **pair.kw)
+    tg = member_transform("gear", rotation=mp.gear_rotation, **pair.kw)
+    ls = local_synthesis(mp.point, mp.normal, mp.gear_shape, tp[:3, 2], tp[:3, 3],
+                         tg[:3, 2], tg[:3, 3], pinion_sense=mp.pinion_sense,
+                         gear_sense=mp.gear_sense, ratio=z1 / geom.gear.z, a21=a21,
+                         path_direction=path, curvature_gap=2.0 * fo.approach / semi**2)
+    tools = _generating_tools(pair, pf, gblade, mp, ls, tp, tg)
+    # higher-order roll (6D, 24E): the TE at ±pitch/4 on the prescribed parabola (the
+    # local synthesis fixes it only to second order at M)
+    hand_sign = 1.0 if pair.pinion_hand == "right" else -1.0
+    tooth_pair = ToothPair(MemberFlank(tools.blade, tools.settings, pair.pinion_blank,
+                                       pair.pinion_hand),
+                           MemberFlank(gblade, pair.gear.settings, pair.gear_blank,
+                                       pair.gear_hand),
+                           _nominal_transforms(**pair.kw))
+    rot, rot_g = tp[:3, :3], tg[:3, :3]
+    vp, vg = rot.T @ ls.path_pinion, rot_g.T @ ls.path_gear
+    pl, gl = rot.T @ (mp.point - tp[:3, 3]), rot_g.T @ (mp.point - tg[:3, 3])
+
+    def rates(v, q):
+        rho = math.hypot(q[0], q[1])
+        return [v[2], (q[0] * v[0] + q[1] * v[1]) / rho]
+
+    start = np.array([pl[2], math.hypot(pl[0], pl[1]), zg, pg, mp.gear_rotation])
+    rate = np.array([*rates(vp, pl), *rates(vg, gl), mp.gear_sense * z1 / geom.gear.z])
+    tools = _tune_roll(tools, tooth_pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
+                       phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
+                       pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
+                       ratio=z1 / geom.gear.z)
+    return FlankSynthesis(pf, fo, a21, mp, ls, tools)
+
+
+def _generating_tools(pair: _PairData, pf: str, gblade: Blade, mp: MeanPoint,
+                      ls: LocalSynthesis, tp: np.ndarray, tg: np.ndarray) -> PinionTools:
+    """Step 5 of the module docstring: the pinion blade and Generate settings that realise
+    the local synthesis's shape operator at M, with the Formate gear as generating gear
+    (``tp``, ``tg`` the members' transforms at M)."""
+    geom = pair.geom
+    rot = tp[:3, :3]
+    mir = _MIRROR if pair.pinion_hand == "left" else np.eye(3)
+    m_loc = mir @ rot.T @ (mp.point - tp[:3, 3])
+    n_loc = mir @ rot.T @ mp.normal
+    w_loc = mir @ rot.T @ ls.pinion_shape @ rot @ mir
+    # generating gear = the Formate gear: cradle axis = gear axis, the gear cutter turned
+    # to face the pinion (Litvin & Fuentes 2004 ch. 20)
+    cg, ug = cutter_pose(pair.gear.settings, 0.0)
+    if pair.gear_hand == "left":
+        cg, ug = _MIRROR @ cg, _MIRROR @ ug
+    cg = mir @ rot.T @ (tg[:3, :3] @ cg + tg[:3, 3] - tp[:3, 3])
+    ug = mir @ rot.T @ (tg[:3, :3] @ ug)
+    u_p = -ug
+    cradle_point = mir @ rot.T @ (tg[:3, 3] - tp[:3, 3])
+    cradle_axis = -(mir @ rot.T @ tg[:3, 2])
+    # tip plane: through the pinion root below M, plus the rise of the gear face over half
+    # the face width so that the gear tip clears the pinion root at the heel (the tip
+    # plane is not parallel to the pinion root cone)
+    root = _root_below(pair.pinion_blank, m_loc)
+    h_m = float((root - m_loc) @ u_p) + 0.5 * geom.gear.b * math.tan(
+        geom.gear.delta_a - geom.gear.delta_f)
+    sigma = 1 if FLANKS[pf] == "outside" else -1
+    rho_m = float(np.linalg.norm(np.cross(m_loc - cg, ug)))
+    return pinion_generate_tools(
+        m_loc, n_loc, w_loc, side=FLANKS[pf], blade_angle=gblade.blade_angle,
+        cutter_axis=u_p, tip_height=h_m, cradle_point=cradle_point,
+        cradle_axis=cradle_axis, ratio_of_roll=geom.gear.z / geom.pinion.z,
+        point_radius=rho_m - sigma * h_m * math.tan(gblade.blade_angle),
+        pinion_blank=pair.pinion_blank, edge_radius=pair.gear.blades["concave"].edge_radius)
+
+
+def _coast_in_drive_frame(coast: FlankSynthesis, drive: FlankSynthesis) -> FlankSynthesis:
+    """Both pinion flanks in one frame: the coast flank's roll origin shifted so that it
+    is turned by the same blank phase as the drive flank (:func:`shift_roll_origin`)."""
+    dphi = math.remainder(coast.tools.blank_phase - drive.tools.blank_phase, 2.0 * math.pi)
+    ct = coast.tools
     q0 = dphi / ct.settings.ratio_of_roll
     if ct.settings.modified_roll:
         # φ(q0) = dphi with the modified roll (a small correction of the linear estimate)
         q0 = brentq(lambda q: float(roll_angle(ct.settings, np.array(q))[0]) - dphi,
                     q0 - 0.5 * abs(q0) - 1e-3, q0 + 0.5 * abs(q0) + 1e-3,
                     xtol=1e-15, rtol=1e-15)
-    flanks[coast] = replace(flanks[coast], tools=ct._replace(
-        settings=shift_roll_origin(ct.settings, q0), blank_phase=ct.blank_phase - dphi))
-    case = _assemble(basic, geom, gear, flanks, pinion_hand, gear_hand)
-    return case, SynthesisReport(geom, gear, flanks)
+    return replace(coast, tools=ct._replace(settings=shift_roll_origin(ct.settings, q0),
+                                            blank_phase=ct.blank_phase - dphi))
 
 
 def _fmt(v: float, nd: int = 4) -> str:
