@@ -59,7 +59,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy.interpolate import RBFInterpolator
 
-from contact.utca.easeoff import EaseOff
+from contact.utca.easeoff import EaseOff, normal_ease_off
 from geometry.errors import InputError
 from geometry.flank import flank_at
 
@@ -379,8 +379,7 @@ def apply_deviations(eo: EaseOff, pinion: SurfaceDeviation | None = None,
     rho = np.hypot(pg[..., 0], pg[..., 1])
     nt = (ng[..., 1] * pg[..., 0] - ng[..., 0] * pg[..., 1]) / rho
     nr = (ng[..., 0] * pg[..., 0] + ng[..., 1] * pg[..., 1]) / rho
-    eps_s = eo.lag_sense * eps
-    normal = rho * (np.sin(eps_s) * nt + (np.cos(eps_s) - 1.0) * nr)
+    normal = normal_ease_off(eps, eo.lag_sense, rho, nt, nr)
     v0 = eo.valid
     log.info("apply_deviations: ease-off re-shifted by %.4g urad, Q by %.4g urad",
              s_e * 1e6, s_q * 1e6)

@@ -67,6 +67,7 @@ MATING_FLANK           pinion flank → the gear flank it meshes with
 roll_angle_surface     roll angle of every grid point of the real pinion flank
 EaseOff                ease-off and Q on the gear projection-plane grid
 ease_off               build it for a case (Eq. 2.19–2.20, 4.1–4.2)
+normal_ease_off        the normal ease-off of an angular one (chord of the rotation)
 fill_missing           fill masked grid nodes by linear continuation of the valid ones
 
 References
@@ -112,6 +113,7 @@ __all__ = [
     "EaseOff",
     "ease_off",
     "fill_missing",
+    "normal_ease_off",
     "roll_angle_surface",
 ]
 
@@ -638,71 +640,24 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     the gear normal; the angular ease-off is exact (both points share (z, ρ)).
     """
     pf, gf = _flank_names(case, flank)
-    g = dict(DEFAULT_GRID)
-    if grid:
-        unknown = sorted(set(grid) - set(g))
-        if unknown:
-            raise InputError(f"grid: unknown keys {unknown}; accepted {sorted(g)}")
-        g.update(grid)
+    g = _grid_options(grid)
     kin = mesh_kinematics(case, misalignment, pinion_phase=pinion_phase, gear_phase=gear_phase)
     gs = flank_surface(case, "gear", gf, **g)
     zt, rt = gs.grid.axial, gs.grid.radius
-    ref = _gear_reference(case, kin)
-    u_p, v_p, mt, err, pinned = _map_gear_nodes(case, pf, kin, ref, zt, rt)
-    zq, rq, ppos, pnrm, roll, conj = mt.z, mt.rho, mt.position, mt.normal, mt.roll, mt.conjugate
-    kn = _gap_curvature(kin, ppos, pnrm, np.where(mt.good, roll, 0.0), mt.kappa1, mt.kappa2,
-                        mt.dir1)
-
-    mate = np.isfinite(err) & (err < _MAP_TOL)
-    reason = np.zeros(zt.shape, dtype=np.int8)
-    reason[~mate] = 2
-    reason[~mate & pinned] = 3  # Newton ran to the edge of the extended pinion grid
-    reason[~gs.valid] = 1
-    inside = (u_p >= 0) & (u_p <= 1) & (v_p >= 0) & (v_p <= 1)
-    reason[(reason == 0) & ~inside] = 3
-    if not np.any(reason == 0):
-        raise InputError("case: no gear grid node can be touched by the pinion (the blanks do "
-                         "not overlap on the surface of action; check the misalignment)")
-    n_bad = {EASEOFF_REASONS[c]: int((reason == c).sum()) for c in (1, 2, 3)}
-    log.info("ease_off: %d of %d gear nodes valid (%s)", int((reason == 0).sum()), reason.size,
-             ", ".join(f"{k}: {v}" for k, v in n_bad.items() if v))
-
-    # senses
-    r0, n0 = to_pair_frame(kin, ppos[mate], pnrm[mate])
-    c1, *_ = meshing_coefficients(kin, r0, n0)
-    drive = 1 if np.median(c1) > 0 else -1
-    pg, ng = gs.position, gs.normal
-    rho = np.hypot(pg[..., 0], pg[..., 1])
-    e_t = np.stack([-pg[..., 1], pg[..., 0], np.zeros_like(rho)], -1) / rho[..., None]
-    e_r = np.stack([pg[..., 0], pg[..., 1], np.zeros_like(rho)], -1) / rho[..., None]
-    nt = np.einsum("...i,...i", ng, e_t)
-    nr = np.einsum("...i,...i", ng, e_r)
+    gm = _map_gear_nodes(case, pf, kin, _gear_reference(case, kin), zt, rt)
+    mt = gm.mates
+    kn = _gap_curvature(kin, mt.position, mt.normal, np.where(mt.good, mt.roll, 0.0),
+                        mt.kappa1, mt.kappa2, mt.dir1)
+    mate = np.isfinite(gm.error) & (gm.error < _MAP_TOL)
+    reason = _node_reasons(gm, mate, gs.valid)
+    drive = _drive_sense(kin, mt, mate)
+    rho, nt, nr = _polar_normal(gs.position, gs.normal)
     lag = 1 if np.nanmedian(nt[reason == 0]) > 0 else -1
-    _mask_folds(reason, np.where(mate, roll, np.nan))
-
-    # angular ease-off: lag the real gear needs to reach the conjugate point at (z, ρ);
-    # the conjugate's polar angle is carried from its place to the node with the slope of
-    # the (tangent) gear surface, dθ = −(n_z dz + n_ρ dρ)/(ρ n_θ): the residual placement
-    # (< 1e-7 mm) then enters only at second order
-    nz = ng[..., 2]
-    dz = zt - conj[..., 2]
-    drho = rt - np.hypot(conj[..., 0], conj[..., 1])
-    theta_c = np.arctan2(conj[..., 1], conj[..., 0]) - (nz * dz + nr * drho) / (rho * nt)
-    theta_r = np.arctan2(pg[..., 1], pg[..., 0])
-    diff = np.where(mate & gs.valid, lag * (theta_c - theta_r), np.nan)
-    ref_diff = np.nanmedian(diff[reason == 0])
-    diff = ref_diff + np.remainder(diff - ref_diff + np.pi, 2 * np.pi) - np.pi
-    shift = np.nanmin(diff[reason == 0])
-    eps_raw = diff - shift  # ε ≥ 0 on valid nodes
-    # the real gear turned by s_g·shift touches the conjugate (built with ψ₀ = 0) at one node
-    psi0 = float(lag * shift)
-    q_raw = np.where(mate, drive * roll, np.nan)
-    q_min = np.nanmin(q_raw[reason == 0])
-    roll_zero = float(drive * q_min)
-    q_raw = q_raw - q_min
+    _mask_folds(reason, np.where(mate, mt.roll, np.nan))
+    eps_raw, psi0 = _angular_ease_off(gs, mt.conjugate, mate, reason, lag, nt, nr, rho)
+    q_raw, roll_zero = _shifted_roll(mt.roll, mate, reason, drive)
     arm = rho * np.abs(nt)
-    eps_s = lag * eps_raw
-    normal_raw = rho * (np.sin(eps_s) * nt + (np.cos(eps_s) - 1.0) * nr)
+    normal_raw = normal_ease_off(eps_raw, lag, rho, nt, nr)
     valid = reason == 0
     gear_main = profile_sections(case.gear.flank(gf).blade).main
     pinion_main = profile_sections(case.pinion.flank(pf).blade).main
@@ -714,17 +669,124 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
         roll_angle=np.where(valid, q_raw, np.nan),
         raw_ease_off_angle=eps_raw, raw_roll_angle=q_raw, normal_arm=arm,
         gap_curvature=np.where(mate & gs.valid, kn / arm, np.nan),
-        gear_position=pg, gear_normal=ng, pinion_axial=zq, pinion_radius=rq,
-        pinion_u=np.where(mate, u_p, np.nan), pinion_v=np.where(mate, v_p, np.nan),
-        placement_error=np.where(mate, err, np.nan), smooth=smooth, reason=reason,
-        drive_sense=drive,
-        lag_sense=lag, roll_zero=roll_zero, gear_phase=psi0,
-        ratio=kin.ratio, pitch=2.0 * math.pi / case.pinion.blank.teeth, kinematics=kin,
-        pinion_parameters=np.where(mate[..., None], mt.params, np.nan),
+        gear_position=gs.position, gear_normal=gs.normal, pinion_axial=mt.z,
+        pinion_radius=mt.rho, pinion_u=np.where(mate, gm.u, np.nan),
+        pinion_v=np.where(mate, gm.v, np.nan), placement_error=np.where(mate, gm.error, np.nan),
+        smooth=smooth, reason=reason, drive_sense=drive, lag_sense=lag, roll_zero=roll_zero,
+        gear_phase=psi0, ratio=kin.ratio, pitch=2.0 * math.pi / case.pinion.blank.teeth,
+        kinematics=kin, pinion_parameters=np.where(mate[..., None], mt.params, np.nan),
         pinion_section=mt.section,
         gear_parameters=np.stack([gs.s, gs.theta, gs.q], -1), gear_section=gs.section)
 
 
+def _grid_options(grid: dict | None) -> dict:
+    """The gear grid of :func:`ease_off`: :data:`geometry.flank.DEFAULT_GRID` updated by
+    ``grid`` (InputError for an unknown key)."""
+    g = dict(DEFAULT_GRID)
+    if grid:
+        unknown = sorted(set(grid) - set(g))
+        if unknown:
+            raise InputError(f"grid: unknown keys {unknown}; accepted {sorted(g)}")
+        g.update(grid)
+    return g
+
+
+def _node_reasons(gm: _GearMates, mate: np.ndarray, gear_valid: np.ndarray) -> np.ndarray:
+    """(nu, nv) int8 reason codes (:data:`EASEOFF_REASONS`) of the gear nodes, folds not yet
+    masked; InputError if no node is valid."""
+    reason = np.zeros(mate.shape, dtype=np.int8)
+    reason[~mate] = 2
+    reason[~mate & gm.pinned] = 3  # Newton ran to the edge of the extended pinion grid
+    reason[~gear_valid] = 1
+    inside = (gm.u >= 0) & (gm.u <= 1) & (gm.v >= 0) & (gm.v <= 1)
+    reason[(reason == 0) & ~inside] = 3
+    if not np.any(reason == 0):
+        raise InputError("case: no gear grid node can be touched by the pinion (the blanks do "
+                         "not overlap on the surface of action; check the misalignment)")
+    n_bad = {EASEOFF_REASONS[c]: int((reason == c).sum()) for c in (1, 2, 3)}
+    log.info("ease_off: %d of %d gear nodes valid (%s)", int((reason == 0).sum()), reason.size,
+             ", ".join(f"{k}: {v}" for k, v in n_bad.items() if v))
+    return reason
+
+
+def _drive_sense(kin: MeshKinematics, mt: _Mates, mate: np.ndarray) -> int:
+    """s_p: the sign of the pinion rotation that drives its flank (module docstring, "Signs"),
+    the median over the placed mates of the meshing coefficient c₁ = a_p·((r − O_p) × n)."""
+    r0, n0 = to_pair_frame(kin, mt.position[mate], mt.normal[mate])
+    c1, *_ = meshing_coefficients(kin, r0, n0)
+    return 1 if np.median(c1) > 0 else -1
+
+
+def _polar_normal(position: np.ndarray, normal: np.ndarray):
+    """ρ [mm] of gear-frame points (..., 3) and their normals' components n·e_θ, n·e_ρ [1]
+    along the polar directions about the gear axis."""
+    pg, ng = position, normal
+    rho = np.hypot(pg[..., 0], pg[..., 1])
+    e_t = np.stack([-pg[..., 1], pg[..., 0], np.zeros_like(rho)], -1) / rho[..., None]
+    e_r = np.stack([pg[..., 0], pg[..., 1], np.zeros_like(rho)], -1) / rho[..., None]
+    return rho, np.einsum("...i,...i", ng, e_t), np.einsum("...i,...i", ng, e_r)
+
+
+def _angular_ease_off(gs, conj: np.ndarray, mate: np.ndarray, reason: np.ndarray, lag: int,
+                      nt: np.ndarray, nr: np.ndarray, rho: np.ndarray):
+    """ε ≥ 0 [rad] on the valid nodes (NaN where no mate) and the gear phase ψ₀ [rad].
+
+    ε is the lag the real gear needs to reach the conjugate point at its node's (z, ρ),
+    shifted so that its least over the valid nodes is zero; the real gear turned by s_g ψ₀
+    touches the conjugate (built with ψ₀ = 0) there. The conjugate's polar angle is carried
+    from its place to the node with the slope of the (tangent) gear surface,
+    dθ = −(n_z dz + n_ρ dρ)/(ρ n_θ): the residual placement (< 1e-7 mm) then enters only at
+    second order.
+    """
+    pg, ng = gs.position, gs.normal
+    nz = ng[..., 2]
+    dz = gs.grid.axial - conj[..., 2]
+    drho = gs.grid.radius - np.hypot(conj[..., 0], conj[..., 1])
+    theta_c = np.arctan2(conj[..., 1], conj[..., 0]) - (nz * dz + nr * drho) / (rho * nt)
+    theta_r = np.arctan2(pg[..., 1], pg[..., 0])
+    diff = np.where(mate & gs.valid, lag * (theta_c - theta_r), np.nan)
+    ref_diff = np.nanmedian(diff[reason == 0])
+    diff = ref_diff + np.remainder(diff - ref_diff + np.pi, 2 * np.pi) - np.pi
+    shift = np.nanmin(diff[reason == 0])
+    return diff - shift, float(lag * shift)
+
+
+def _shifted_roll(roll: np.ndarray, mate: np.ndarray, reason: np.ndarray, drive: int):
+    """Q ≥ 0 [rad] (driving sense, least over the valid nodes zero; NaN where no mate) and
+    the pinion rotation ``roll_zero`` [rad] at Q = 0."""
+    q_raw = np.where(mate, drive * roll, np.nan)
+    q_min = np.nanmin(q_raw[reason == 0])
+    return q_raw - q_min, float(drive * q_min)
+
+
+def normal_ease_off(angle, lag_sense: int, radius, normal_theta, normal_rho):
+    """Normal ease-off: distance from the real gear to the touching conjugate point.
+
+    Parameters
+    ----------
+    angle : array_like — [rad]
+        Angular ease-off ε ≥ 0 (gear lag).
+    lag_sense : {+1, −1}
+        s_g (module docstring, "Signs").
+    radius : array_like — [mm]
+        ρ of the real gear point.
+    normal_theta, normal_rho : array_like — [1]
+        Components n·e_θ, n·e_ρ of the gear's unit normal along the polar directions.
+
+    Returns
+    -------
+    ndarray — [mm]
+        ρ [sin(s_g ε)(n·e_θ) + (cos ε − 1)(n·e_ρ)] ≥ 0 (broadcast shape): the chord of the
+        rotation along the gear normal.
+
+    Notes
+    -----
+    Seed §4.2 ("radial distance" between the real gear and its conjugate, read as the
+    distance along the gear normal); the chord's distance to the curved surface differs by
+    ½κ d_t² (module docstring).
+    """
+    eps_s = lag_sense * angle
+    return radius * (np.sin(eps_s) * normal_theta + (np.cos(eps_s) - 1.0) * normal_rho)
 
 
 def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
