@@ -123,22 +123,81 @@ class ContactCurves(NamedTuple):
     index: np.ndarray  # batch: sample index nearest to H (-1 where no curve)
 
 
+class _Coarse(NamedTuple):
+    """Iso-lines located on coarse samples along u (flat batch nb).
+
+    ``start``, ``stop``: sample indices of each curve's largest contiguous run of samples
+    inside the contact region (-1 where it has none, ``have`` False).
+    """
+
+    u: np.ndarray  # (nc,) [1] coarse places along u
+    v: np.ndarray  # (nb, nc) [1] profile places of the iso-lines there (NaN: missed)
+    have: np.ndarray  # (nb,) bool
+    start: np.ndarray  # (nb,) int
+    stop: np.ndarray  # (nb,) int
+
+
+class _ShortCurves(NamedTuple):
+    """Curves that lie wholly between two coarse samples (see :func:`_short_curves`)."""
+
+    rows: np.ndarray  # (M,) int: indices into the batch
+    u: np.ndarray  # (M,) [1] a place inside each (the maximum of the inside measure)
+    v: np.ndarray  # (M,)
+    lo: np.ndarray  # (M,) neighbouring coarse places (outside) bracketing each curve's ends
+    hi: np.ndarray
+
+
 def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
                  coarse_per_cell: int = _COARSE_PER_CELL) -> ContactCurves:
     """Places, ε and UTE of the iso-lines Q = t (flat batch), without the flank fields
     (``normal_arm``, ``position``, ``normal`` are None; see :func:`_curve_fields`), sampled
     at the fractions ``frac`` (increasing from 0 to 1) of u between each curve's ends; the
-    curves are first located on ``coarse_per_cell`` samples per grid cell along u."""
+    curves are first located on ``coarse_per_cell`` samples per grid cell along u
+    (:func:`_coarse_runs`), their ends refined (:func:`_curve_ends`), the samples solved by
+    Newton's method from the coarse curve and the minimum of ε refined
+    (:func:`_lowest_point`)."""
     nb = t.size
-    n_point = frac.size
-    u0, u1 = float(f.u[0]), float(f.u[-1])
+    u0 = float(f.u[0])
+    co = _coarse_runs(f, t, coarse_per_cell)
+    # a curve shorter than the coarse step can fall between two samples: where the measure
+    # peaks inside between them, that peak seeds it (a pair entering or leaving at a corner
+    # of the region keeps its curve until the curve shrinks to nothing)
+    short = _short_curves(f, t, co.u, co.v, co.have)
+    ua, ub = _curve_ends(f, t, co, short)
+    up = ua[:, None] + (ub - ua)[:, None] * frac
+    up_safe = np.where(np.isfinite(up), up, u0)
+    vstart = np.full(up.shape, np.nan)
+    hb = np.flatnonzero(co.have)
+    if hb.size:
+        vstart[hb] = _run_interpolation(co, hb, up_safe[hb])
+    if short.rows.size:  # a short curve: Newton from its seed
+        vstart[short.rows] = short.v[:, None]
+        hb = np.r_[hb, short.rows]
+    # only the curves that exist (Newton runs each point independently)
+    vp = np.full(up.shape, np.nan)
+    if hb.size:
+        vp[hb] = f.solve_v(up_safe[hb], t[hb, None], v_start=vstart[hb])
+    up = np.where(np.isfinite(vp), up, np.nan)
+    fin = np.isfinite(vp)
+    us, vs = np.where(fin, up, u0), np.where(fin, vp, f.v[0])
+    eps = np.where(fin, f.eps.ev(us, vs), np.nan)
+    ute, cu, cv, index = _lowest_point(f, t, up, vp, eps)
+    return ContactCurves(
+        target=t, shift=np.zeros(nb), u=up, v=vp, ease_off_angle=eps,
+        gap=np.where(fin, 0.0, np.nan), normal_arm=None, position=None, normal=None, ute=ute,
+        contact_u=cu, contact_v=cv, index=index)
+
+
+def _coarse_runs(f: EaseOffFields, t: np.ndarray, coarse_per_cell: int) -> _Coarse:
+    """The iso-lines Q = t on ``coarse_per_cell`` samples per grid cell along u, and the
+    largest contiguous run of inside samples of each."""
+    nb = t.size
     nc = coarse_per_cell * (len(f.u) - 1) + 1
-    uc = np.linspace(u0, u1, nc)
+    uc = np.linspace(float(f.u[0]), float(f.u[-1]), nc)
     vc = f.solve_v(uc[None, :], t[:, None], lattice=f.lattice(uc)[None, :, :])
     ok = f.inside(np.broadcast_to(uc, vc.shape), vc)
-    # the largest contiguous run of valid samples of each curve
-    # (vectorised over the curves: a run starts where ok rises and ends before it falls;
-    # argmax takes the first of equally long runs)
+    # vectorised over the curves: a run starts where ok rises and ends before it falls;
+    # argmax takes the first of equally long runs
     edge = np.diff(np.pad(ok, ((0, 0), (1, 1))).astype(np.int8), axis=1)
     col = np.arange(nc + 1)
     falls = np.where(edge == -1, col, nc + 1)
@@ -148,91 +207,105 @@ def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
     first = np.argmax(length, axis=1)
     start = np.where(have, first, -1)
     stop = np.where(have, first + length[np.arange(nb), first] - 1, -1)
+    return _Coarse(uc, vc, have, start, stop)
+
+
+def _curve_ends(f: EaseOffFields, t: np.ndarray, co: _Coarse, short: _ShortCurves):
+    """Lengthwise places (ua, ub) (nb,) of the curves' ends (NaN where no curve).
+
+    An end inside the grid lies between the last inside and the first outside coarse
+    sample of its run, a short curve's between its seed and either bracket; each is found
+    there on the continuous inside measure (:func:`_false_position_ends`).
+    """
+    uc, vc, have, start, stop = co
+    nc = uc.size
     ua = np.where(have, uc[np.clip(start, 0, nc - 1)], np.nan)
     ub = np.where(have, uc[np.clip(stop, 0, nc - 1)], np.nan)
-    # a curve shorter than the coarse step can fall between two samples: where the measure
-    # peaks inside between them, that peak seeds it (a pair entering or leaving at a corner
-    # of the region keeps its curve until the curve shrinks to nothing)
-    s_rows, s_u, s_v, s_lo, s_hi = _short_curves(f, t, uc, vc, have)
-    seeded = np.zeros(nb, dtype=bool)
-    seeded[s_rows] = True
-
-    # ends: false position (Illinois) on the continuous inside measure between the last
-    # valid and the first invalid coarse sample (bisection where the measure jumps)
     lo_end = have & (start > 0)
     hi_end = have & (stop < nc - 1)
+    s_rows = short.rows
     rows = np.r_[np.flatnonzero(lo_end), np.flatnonzero(hi_end), s_rows, s_rows]
     if rows.size:
         j_in = np.r_[start[lo_end], stop[hi_end]]
         j_out = np.r_[start[lo_end] - 1, stop[hi_end] + 1]
-        a = np.r_[uc[j_in], s_u, s_u]
-        b = np.r_[uc[j_out], s_lo, s_hi]
-        va = np.r_[vc[rows[: j_in.size], j_in], s_v, s_v]
-        ca = f.measure(a, va)
-        cb = f.measure(b, f.solve_v(b, t[rows], v_start=va))
-        t_rows = t[rows]
-        # the last step moved a (prev_in) or b (prev_out); updates in place (own arrays)
-        prev_in = np.zeros(rows.size, dtype=bool)
-        prev_out = np.zeros(rows.size, dtype=bool)
-        for _ in range(_END_ITER):
-            smooth = (cb > -0.5) & (ca < 0.5) & (cb != ca)
-            m = np.where(smooth, b - cb * (b - a) / np.where(smooth, cb - ca, 1.0), 0.5 * (a + b))
-            lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
-            w = 1e-3 * (hi_m - lo_m)
-            m = np.minimum(np.maximum(m, lo_m + w), hi_m - w)
-            vm = f._newton_v(m, t_rows, va.copy())
-            cm = f.measure(m, vm)
-            good = cm >= 0
-            bad = ~good
-            # Illinois: halve the value kept at the end that did not move twice running
-            np.multiply(cb, 0.5, out=cb, where=good & prev_in & smooth)
-            np.multiply(ca, 0.5, out=ca, where=bad & prev_out & smooth)
-            np.copyto(a, m, where=good)
-            np.copyto(ca, cm, where=good)
-            np.copyto(va, vm, where=good)
-            np.copyto(b, m, where=bad)
-            np.copyto(cb, cm, where=bad)
-            prev_in, prev_out = good, bad
-            if np.all(np.abs(b - a) < 1e-9):
-                break
+        a = np.r_[uc[j_in], short.u, short.u]
+        b = np.r_[uc[j_out], short.lo, short.hi]
+        va = np.r_[vc[rows[: j_in.size], j_in], short.v, short.v]
+        a = _false_position_ends(f, t[rows], a, b, va)
         n_lo, n_hi, n_s = int(lo_end.sum()), int(hi_end.sum()), s_rows.size
         ua[rows[:n_lo]] = a[:n_lo]
         ub[rows[n_lo:n_lo + n_hi]] = a[n_lo:n_lo + n_hi]
         ua[s_rows] = a[n_lo + n_hi:n_lo + n_hi + n_s]
         ub[s_rows] = a[n_lo + n_hi + n_s:]
-    up = ua[:, None] + (ub - ua)[:, None] * frac
-    up_safe = np.where(np.isfinite(up), up, u0)
-    vstart = np.full(up.shape, np.nan)
-    hb = np.flatnonzero(have)
-    if hb.size:
-        # np.interp of each curve's run of coarse samples, vectorised over the curves (the
-        # same arithmetic: slope (y[j+1] − y[j]) / (x[j+1] − x[j]), ends held)
-        s0, s1 = start[hb][:, None], stop[hb][:, None]
-        x = up_safe[hb]
-        j = np.clip(np.searchsorted(uc, x, side="right") - 1, s0, s1)
-        jn = np.minimum(j + 1, s1)
-        vrun = vc[hb]
-        yj = np.take_along_axis(vrun, j, 1)
-        yn = np.take_along_axis(vrun, jn, 1)
-        step = jn != j
-        slope = (yn - yj) / np.where(step, uc[jn] - uc[j], 1.0)
-        val = np.where(step & (uc[j] != x), slope * (x - uc[j]) + yj, yj)
-        lo_v = np.take_along_axis(vrun, s0, 1)
-        hi_v = np.take_along_axis(vrun, s1, 1)
-        vstart[hb] = np.where(x < uc[s0], lo_v, np.where(x >= uc[s1], hi_v, val))
-    if s_rows.size:  # a short curve: Newton from its seed
-        vstart[s_rows] = s_v[:, None]
-        hb = np.r_[hb, s_rows]
-        have = have | seeded
-    # only the curves that exist (Newton runs each point independently)
-    vp = np.full(up.shape, np.nan)
-    if hb.size:
-        vp[hb] = f.solve_v(up_safe[hb], t[hb, None], v_start=vstart[hb])
-    up = np.where(np.isfinite(vp), up, np.nan)
+    return ua, ub
+
+
+def _false_position_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
+                         va: np.ndarray) -> np.ndarray:
+    """Ends of the iso-lines Q = t (M,) between an inside place a (profile place va) and an
+    outside place b: false position (Illinois) on the continuous inside measure, bisection
+    where the measure jumps, to 1e-9 of the face width (:data:`_END_ITER` steps at most).
+    Returns the last inside place of each (``a``, ``va`` are updated in place)."""
+    ca = f.measure(a, va)
+    cb = f.measure(b, f.solve_v(b, t, v_start=va))
+    # the last step moved a (prev_in) or b (prev_out); updates in place (own arrays)
+    prev_in = np.zeros(a.size, dtype=bool)
+    prev_out = np.zeros(a.size, dtype=bool)
+    for _ in range(_END_ITER):
+        smooth = (cb > -0.5) & (ca < 0.5) & (cb != ca)
+        m = np.where(smooth, b - cb * (b - a) / np.where(smooth, cb - ca, 1.0), 0.5 * (a + b))
+        lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
+        w = 1e-3 * (hi_m - lo_m)
+        m = np.minimum(np.maximum(m, lo_m + w), hi_m - w)
+        vm = f._newton_v(m, t, va.copy())
+        cm = f.measure(m, vm)
+        good = cm >= 0
+        bad = ~good
+        # Illinois: halve the value kept at the end that did not move twice running
+        np.multiply(cb, 0.5, out=cb, where=good & prev_in & smooth)
+        np.multiply(ca, 0.5, out=ca, where=bad & prev_out & smooth)
+        np.copyto(a, m, where=good)
+        np.copyto(ca, cm, where=good)
+        np.copyto(va, vm, where=good)
+        np.copyto(b, m, where=bad)
+        np.copyto(cb, cm, where=bad)
+        prev_in, prev_out = good, bad
+        if np.all(np.abs(b - a) < 1e-9):
+            break
+    return a
+
+
+def _run_interpolation(co: _Coarse, rows: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Profile places (M, n) at the places x of the curves ``rows`` (M,), interpolated
+    linearly along each curve's run of coarse samples (ends held): ``np.interp`` of each
+    run, vectorised over the curves (the same arithmetic: slope (y[j+1] − y[j]) /
+    (x[j+1] − x[j]))."""
+    uc = co.u
+    s0, s1 = co.start[rows][:, None], co.stop[rows][:, None]
+    j = np.clip(np.searchsorted(uc, x, side="right") - 1, s0, s1)
+    jn = np.minimum(j + 1, s1)
+    vrun = co.v[rows]
+    yj = np.take_along_axis(vrun, j, 1)
+    yn = np.take_along_axis(vrun, jn, 1)
+    step = jn != j
+    slope = (yn - yj) / np.where(step, uc[jn] - uc[j], 1.0)
+    val = np.where(step & (uc[j] != x), slope * (x - uc[j]) + yj, yj)
+    lo_v = np.take_along_axis(vrun, s0, 1)
+    hi_v = np.take_along_axis(vrun, s1, 1)
+    return np.where(x < uc[s0], lo_v, np.where(x >= uc[s1], hi_v, val))
+
+
+def _lowest_point(f: EaseOffFields, t: np.ndarray, up: np.ndarray, vp: np.ndarray,
+                  eps: np.ndarray):
+    """The contact point H of each curve: the lowest ε along it (nb, n) [rad], refined by
+    the vertex of the parabola through the lowest sample and its neighbours (held within
+    half a step of the lowest, and kept only where ε is lower there).
+
+    Returns (ute, contact_u, contact_v, index) (nb,): the UTE [rad], H's place, and the
+    index of the lowest sample (-1 and NaN where there is no curve).
+    """
+    nb, n_point = up.shape
     fin = np.isfinite(vp)
-    us, vs = np.where(fin, up, u0), np.where(fin, vp, f.v[0])
-    eps = np.where(fin, f.eps.ev(us, vs), np.nan)
-    # minimum with parabolic refinement through the lowest sample and its neighbours
     ute = np.full(nb, np.nan)
     cu = np.full(nb, np.nan)
     cv = np.full(nb, np.nan)
@@ -247,33 +320,39 @@ def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
         cv[rows] = vp[rows, k]
         inner = (k > 0) & (k < n_point - 1)
         if inner.any():
-            r = rows[inner]
-            ki = k[inner]
-            em, ec, ep = eps[r, ki - 1], eps[r, ki], eps[r, ki + 1]
-            # vertex of the parabola through the three samples (steps h1, h2, equal or
-            # not), held within half a step of the lowest
-            h1 = up[r, ki] - up[r, ki - 1]
-            h2 = up[r, ki + 1] - up[r, ki]
-            a1, a2 = em - ec, ep - ec
-            den = 2 * (h2 * a1 + h1 * a2)
-            okp = np.isfinite(den) & (den > 0)
-            d = np.where(okp, (h2**2 * a1 - h1**2 * a2) / np.where(okp, den, 1.0), 0.0)
-            ur = up[r, ki] + np.clip(d, -0.5 * h1, 0.5 * h2)
-            vr = f.solve_v(ur, t[r], v_start=vp[r, ki])
-            good = np.isfinite(vr)
-            er = np.where(good, f.eps.ev(ur, np.where(good, vr, f.v[0])), np.inf)
-            better = good & (er < ec)
+            r, ki = rows[inner], k[inner]
+            ur, vr, er = _parabola_vertex(f, t, up, vp, eps, r, ki)
+            ec = eps[r, ki]
+            better = np.isfinite(vr) & (er < ec)
             ute[r] = np.where(better, er, ec)
             cu[r] = np.where(better, ur, cu[r])
             cv[r] = np.where(better, vr, cv[r])
-    return ContactCurves(
-        target=t, shift=np.zeros(nb), u=up, v=vp, ease_off_angle=eps,
-        gap=np.where(fin, 0.0, np.nan), normal_arm=None, position=None, normal=None, ute=ute,
-        contact_u=cu, contact_v=cv, index=index)
+    return ute, cu, cv, index
+
+
+def _parabola_vertex(f: EaseOffFields, t: np.ndarray, up: np.ndarray, vp: np.ndarray,
+                     eps: np.ndarray, r: np.ndarray, k: np.ndarray):
+    """Vertex of the parabola of ε through the samples k − 1, k, k + 1 (M,) of the curves
+    r (M,) (steps h1, h2, equal or not), held within half a step of sample k.
+
+    Returns its place (u, v) on the iso-line (v NaN where it misses) and ε there (inf
+    where it misses).
+    """
+    em, ec, ep = eps[r, k - 1], eps[r, k], eps[r, k + 1]
+    h1 = up[r, k] - up[r, k - 1]
+    h2 = up[r, k + 1] - up[r, k]
+    a1, a2 = em - ec, ep - ec
+    den = 2 * (h2 * a1 + h1 * a2)
+    okp = np.isfinite(den) & (den > 0)
+    d = np.where(okp, (h2**2 * a1 - h1**2 * a2) / np.where(okp, den, 1.0), 0.0)
+    ur = up[r, k] + np.clip(d, -0.5 * h1, 0.5 * h2)
+    vr = f.solve_v(ur, t[r], v_start=vp[r, k])
+    good = np.isfinite(vr)
+    return ur, vr, np.where(good, f.eps.ev(ur, np.where(good, vr, f.v[0])), np.inf)
 
 
 def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarray,
-                  have: np.ndarray):
+                  have: np.ndarray) -> _ShortCurves:
     """Seeds of the curves that lie wholly between two coarse samples.
 
     For each curve without an inside coarse sample whose iso-line crosses the grid, the
@@ -282,17 +361,16 @@ def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarra
 
     Returns
     -------
-    rows : int array (M,)
-        The curves found.
-    u, v : arrays (M,)
-        A place inside each (the maximum of the measure).
-    lo, hi : arrays (M,)
-        The neighbouring coarse places (outside) bracketing each curve's ends.
+    _ShortCurves
+        ``rows`` (M,): the curves found; ``u``, ``v`` (M,): a place inside each (the
+        maximum of the measure); ``lo``, ``hi`` (M,): the neighbouring coarse places
+        (outside) bracketing each curve's ends.
     """
     empty = np.zeros(0)
+    none = _ShortCurves(np.zeros(0, dtype=int), empty, empty, empty, empty)
     cand = np.flatnonzero(~have & np.any(np.isfinite(vc), axis=1))
     if cand.size == 0:
-        return np.zeros(0, dtype=int), empty, empty, empty, empty
+        return none
     nc = uc.size
     vcc = vc[cand]
     meas = f.measure(np.broadcast_to(uc, vcc.shape), vcc)
@@ -300,7 +378,7 @@ def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarra
     near = np.max(meas, axis=1) > -0.5  # −1: undefined (no iso-line point in a good cell)
     cand, best, vcc = cand[near], best[near], vcc[near]
     if cand.size == 0:
-        return np.zeros(0, dtype=int), empty, empty, empty, empty
+        return none
     lo = uc[np.maximum(best - 1, 0)]
     hi = uc[np.minimum(best + 1, nc - 1)]
     tt = t[cand]
@@ -316,7 +394,7 @@ def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarra
     v_star = f._newton_v(u_star, tt, v_best.copy())
     m_star = f.measure(u_star, v_star)
     ok = m_star >= 0
-    return cand[ok], u_star[ok], v_star[ok], lo[ok], hi[ok]
+    return _ShortCurves(cand[ok], u_star[ok], v_star[ok], lo[ok], hi[ok])
 
 
 def _curve_fields(f: EaseOffFields, cc: ContactCurves) -> ContactCurves:
