@@ -72,6 +72,7 @@ from __future__ import annotations
 import logging
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
@@ -789,58 +790,104 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
     """
     if int(samples) != samples or samples < 4:
         raise InputError(f"samples: must be an integer >= 4, got {samples!r}")
-    f = fields if fields is not None else EaseOffFields(eo)
+    h = _PairDifference(eo, fields if fields is not None else EaseOffFields(eo), method,
+                        n_point)
     p = eo.pitch
-    big = 1.0
-
-    def h(x, k):
-        """UTE₀(x) − UTE_k(x): ≤ 0 while pair 0 is the lower; ±big where one is out of mesh."""
-        x = np.asarray(x, dtype=float)
-        k = np.asarray(k, dtype=float)
-        u = pair_transmission_error(eo, np.stack([x, x - k * p]), method=method, fields=f,
-                                    n_point=n_point)
-        out = u[0] - u[1]
-        out = np.where(np.isnan(u[1]), -big, out)
-        return np.where(np.isnan(u[0]), big, out)
-
     # start where the ease-off is lowest: the reference pair carries the motion there
     i0 = np.nanargmin(np.where(eo.valid, eo.ease_off_angle, np.nan))
     r_star = float(eo.roll_angle.ravel()[i0])
-    # one scan serves both directions and both neighbours: UTE₀ at r* + m·p/samples,
-    # m = −2·samples … 2·samples; pair k at r is UTE₀(r − k·p), a shift by samples
+    u_all = _roll_scan(h, r_star, samples)
+    x, hx = _scan_brackets(u_all, r_star, p, samples)
+    if np.any(hx[:, 0] > 0):
+        # the lowest node's pair does not carry the motion there (a misalignment can move
+        # the contact off it): start again from the nearest scanned roll where it does
+        m = _nearest_carrying(u_all, samples)
+        if m is None:
+            log.warning("transitions: the reference pair does not carry the motion near "
+                        "the lowest ease-off point")
+            return math.nan, math.nan
+        r_star += float(m) * p / samples
+        u_all = _roll_scan(h, r_star, samples)
+        x, hx = _scan_brackets(u_all, r_star, p, samples)
+        if np.any(hx[:, 0] > 0):
+            log.warning("transitions: the reference pair does not carry the motion at the "
+                        "lowest ease-off point")
+            return math.nan, math.nan
+    return _solve_transitions(h, x, hx)
+
+
+#: value of the UTE difference of two pairs where one is out of mesh (:class:`_PairDifference`)
+_OUT_OF_MESH = 1.0
+_TRANSITION_ITER = 80  # false-position steps on a transition
+
+
+@dataclass(frozen=True)
+class _PairDifference:
+    """UTE₀(x) − UTE_k(x) of the reference pair and its neighbour k at rolls x [rad]: ≤ 0
+    while pair 0 is the lower; ±:data:`_OUT_OF_MESH` where one is out of mesh (+ where
+    pair 0 is)."""
+
+    eo: EaseOff
+    fields: EaseOffFields
+    method: str
+    n_point: int
+
+    def ute(self, roll) -> np.ndarray:
+        """UTE [rad] of the reference pair at rolls ``roll`` (NaN: out of mesh)."""
+        return pair_transmission_error(self.eo, roll, method=self.method, fields=self.fields,
+                                       n_point=self.n_point)
+
+    def __call__(self, x, k) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        k = np.asarray(k, dtype=float)
+        u = self.ute(np.stack([x, x - k * self.eo.pitch]))
+        out = u[0] - u[1]
+        out = np.where(np.isnan(u[1]), -_OUT_OF_MESH, out)
+        return np.where(np.isnan(u[0]), _OUT_OF_MESH, out)
+
+
+def _roll_scan(h: _PairDifference, r_star: float, samples: int) -> np.ndarray:
+    """UTE₀ [rad] at r* + m·p/samples, m = −2·samples … 2·samples: one scan serves both
+    directions and both neighbours (pair k at r is UTE₀(r − k·p), a shift by samples)."""
     m_all = np.arange(-2 * samples, 2 * samples + 1)
-    u_all = pair_transmission_error(eo, r_star + m_all * p / samples, method=method,
-                                    fields=f, n_point=n_point)
+    return h.ute(r_star + m_all * h.eo.pitch / samples)
+
+
+def _scan_brackets(u_all: np.ndarray, r_star: float, p: float, samples: int):
+    """Rolls x (2, 2·samples + 1) [rad] from r* towards M1 (row 0) and M2 (row 1), one
+    cycle each way, and the UTE difference of pair 0 and its neighbour there (as
+    :class:`_PairDifference`), from the scan :func:`_roll_scan`."""
 
     def h_scan(k):
         j = np.arange(2 * samples + 1)
         own = u_all[2 * samples + k * j]
         other = u_all[2 * samples + k * j - k * samples]
-        out = np.where(np.isnan(other), -big, own - other)
-        return r_star + k * j * p / samples, np.where(np.isnan(own), big, out)
+        out = np.where(np.isnan(other), -_OUT_OF_MESH, own - other)
+        return r_star + k * j * p / samples, np.where(np.isnan(own), _OUT_OF_MESH, out)
 
+    x, hx = (np.stack(a) for a in zip(*(h_scan(k) for k in (-1, 1)), strict=True))
+    return x, hx
+
+
+def _nearest_carrying(u_all: np.ndarray, samples: int):
+    """The scan offset m (|m| ≤ samples) nearest to 0 at which pair 0 is below both
+    neighbours (a neighbour out of mesh counts as higher), or None."""
+    m = np.arange(-samples, samples + 1)
+    own = u_all[2 * samples + m]
+    carried = (np.isfinite(own) & ~(own > u_all[2 * samples + m + samples])
+               & ~(own > u_all[2 * samples + m - samples]))
+    if not carried.any():
+        return None
+    return m[carried][np.argmin(np.abs(m[carried]))]
+
+
+def _solve_transitions(h: _PairDifference, x: np.ndarray, hx: np.ndarray):
+    """(M1, M2) [rad]: the first sample of each scan row where the neighbour is lower
+    brackets the transition, solved by false position (Illinois) to 1e-12 rad where the
+    difference is smooth, by bisection to 1e-8 rad where a pair leaves the contact region
+    (NaN where the row has no such sample)."""
+    big = _OUT_OF_MESH
     ks = np.array([-1.0, 1.0])
-    x, hx = (np.stack(a) for a in zip(*(h_scan(int(k)) for k in ks), strict=True))
-    if np.any(hx[:, 0] > 0):
-        # the lowest node's pair does not carry the motion there (a misalignment can move
-        # the contact off it): start again from the nearest scanned roll where pair 0 is
-        # below both neighbours (a neighbour out of mesh counts as higher)
-        m = np.arange(-samples, samples + 1)
-        own = u_all[2 * samples + m]
-        carried = (np.isfinite(own) & ~(own > u_all[2 * samples + m + samples])
-                   & ~(own > u_all[2 * samples + m - samples]))
-        if not carried.any():
-            log.warning("transitions: the reference pair does not carry the motion near "
-                        "the lowest ease-off point")
-            return math.nan, math.nan
-        r_star += float(m[carried][np.argmin(np.abs(m[carried]))]) * p / samples
-        u_all = pair_transmission_error(eo, r_star + m_all * p / samples, method=method,
-                                        fields=f, n_point=n_point)
-        x, hx = (np.stack(a) for a in zip(*(h_scan(int(k)) for k in ks), strict=True))
-        if np.any(hx[:, 0] > 0):
-            log.warning("transitions: the reference pair does not carry the motion at the "
-                        "lowest ease-off point")
-            return math.nan, math.nan
     found = np.any(hx > 0, axis=1)
     j = np.where(found, np.argmax(hx > 0, axis=1), 1)
     rows = np.arange(2)
@@ -848,7 +895,7 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
     b, fb = x[rows, j], hx[rows, j]
     side = np.zeros(2)
     done = ~found
-    for _ in range(80):
+    for _ in range(_TRANSITION_ITER):
         smooth = (np.abs(fa) < big) & (np.abs(fb) < big)
         m = np.where(smooth & (fa != fb), (b * fa - a * fb) / np.where(fa != fb, fa - fb, 1.0),
                      0.5 * (a + b))
@@ -870,5 +917,3 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
             break
     res = np.where(found, a, np.nan)
     return float(res[0]), float(res[1])
-
-
