@@ -431,47 +431,16 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     UTE_seed where H is an end of the curve (edge contact). ``flank_fields=False`` skips
     the normal arm, flank point and normal (None), which the UTE does not need.
     ``near_misses=True`` also returns the curves of iso-lines Q = q that miss the contact
-    region but whose shifted iso-line meets it (see :func:`_probe_shift`).
+    region but whose shifted iso-line meets it (see :func:`_near_miss_curves`).
     """
-    n_point = frac.size
     first = _seed_places(f, t, frac)
-    have = np.isfinite(first.ute)
-    # where the iso-line Q = q misses the contact region (a pair just leaving or entering
-    # at a corner), the real pinion may still touch it through its gap: the iso-line
-    # Q = q + t_b nearest in that sense (min of UTE_seed + ½ K t_b², by probing) is the
-    # first-order curve from which the correction starts
     base = np.zeros(t.size)
-    lost = np.flatnonzero(~have) if near_misses else np.zeros(0, dtype=int)
-    if lost.size:
-        rows, t_b = _probe_shift(f, t[lost])
-        if rows.size:
-            rows = lost[rows]
-            base[rows] = t_b
-            probed = _seed_places(f, t[rows] + t_b, frac)
-            first = ContactCurves(*(None if a is None else _put_rows(a, rows, b)
-                                    for a, b in zip(first, probed, strict=True)))
-            have = np.isfinite(first.ute)
+    if near_misses:
+        first, base = _near_miss_curves(f, t, frac, first)
+    have = np.isfinite(first.ute)
     cu = np.where(have, first.contact_u, f.u[0])
     cv = np.where(have, first.contact_v, f.v[0])
-    qu, qv = f.q.ev(cu, cv, dx=1), f.q.ev(cu, cv, dy=1)
-    eu, ev = f.eps.ev(cu, cv, dx=1), f.eps.ev(cu, cv, dy=1)
-    g = (eu * qu + ev * qv) / (qu * qu + qv * qv)
-    edge = np.flatnonzero(have & ((first.index == 0) | (first.index == n_point - 1)))
-    if edge.size:
-        # H at an end of its curve: UTE_seed = ε at the end, which slides along the
-        # region's boundary as q changes: g = (∇ε·b)/(∇Q·b), b the boundary's direction
-        at_lo = first.index[edge] == 0
-        g_end, smooth = _end_slope(f, np.where(at_lo, first.u[edge, 0], first.u[edge, -1]),
-                                   np.where(at_lo, first.v[edge, 0], first.v[edge, -1]))
-        g[edge[smooth]] = g_end[smooth]
-        rest = edge[~smooth]
-        if rest.size:
-            # at a corner of the region or a masked cell's edge: by finite differences
-            h = 1e-5
-            te = (t + base)[rest]
-            pair = _seed_places(f, np.r_[te + h, te - h], frac).ute
-            fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
-            g[rest] = np.where(np.isfinite(fd), fd, g[rest])
+    g = _seed_slope(f, first, have, t + base, frac, cu, cv)
     k = f.gap_at(cu, cv)
     shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), base)
     # (only where there is a curve to correct: elsewhere the shift is the base's and the
@@ -479,9 +448,7 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     redo = np.flatnonzero(have)
     second = first
     if redo.size:
-        sub = _seed_places(f, (t + shift)[redo], frac)
-        second = ContactCurves(*(None if a is None else _put_rows(a, redo, b)
-                                 for a, b in zip(first, sub, strict=True)))
+        second = _with_rows(first, redo, _seed_places(f, (t + shift)[redo], frac))
     ok2 = np.isfinite(second.ute)
     # keep the first-order curve where the shifted one leaves the contact region
     use = ok2 | ~have
@@ -497,6 +464,59 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     gap = np.where(fin, 0.5 * f.gap_at(us, vs) * shift[:, None] ** 2, np.nan)
     ute = cc.ute + 0.5 * _gap_at_contact(f, cc) * shift ** 2
     return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
+
+
+def _near_miss_curves(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
+                      first: ContactCurves):
+    """The first-order curves with those of the near misses, and the base shifts (nb,).
+
+    Where the iso-line Q = q misses the contact region (a pair just leaving or entering at
+    a corner), the real pinion may still touch it through its gap: the iso-line
+    Q = q + t_b nearest in that sense (min of UTE_seed + ½ K t_b², by probing,
+    :func:`_probe_shift`) is the first-order curve from which the correction starts.
+    """
+    base = np.zeros(t.size)
+    lost = np.flatnonzero(~np.isfinite(first.ute))
+    if lost.size:
+        rows, t_b = _probe_shift(f, t[lost])
+        if rows.size:
+            rows = lost[rows]
+            base[rows] = t_b
+            first = _with_rows(first, rows, _seed_places(f, t[rows] + t_b, frac))
+    return first, base
+
+
+def _seed_slope(f: EaseOffFields, first: ContactCurves, have: np.ndarray, t: np.ndarray,
+                frac: np.ndarray, cu: np.ndarray, cv: np.ndarray) -> np.ndarray:
+    """g = dUTE_seed/dq [1] of the first-order curves ``first`` of the iso-lines Q = t at
+    their contact points H (cu, cv) (nb,).
+
+    The ease-off derivative across the iso-line at H, (∇ε·∇Q)/|∇Q|² (envelope theorem);
+    where H is an end of its curve, the slope along the region's boundary
+    (:func:`_end_slope`), or at a corner of the region or a masked cell's edge the central
+    difference of UTE_seed (step 1e-5 rad).
+    """
+    n_point = frac.size
+    qu, qv = f.q.ev(cu, cv, dx=1), f.q.ev(cu, cv, dy=1)
+    eu, ev = f.eps.ev(cu, cv, dx=1), f.eps.ev(cu, cv, dy=1)
+    g = (eu * qu + ev * qv) / (qu * qu + qv * qv)
+    edge = np.flatnonzero(have & ((first.index == 0) | (first.index == n_point - 1)))
+    if edge.size:
+        # H at an end of its curve: UTE_seed = ε at the end, which slides along the
+        # region's boundary as q changes: g = (∇ε·b)/(∇Q·b), b the boundary's direction
+        at_lo = first.index[edge] == 0
+        g_end, smooth = _end_slope(f, np.where(at_lo, first.u[edge, 0], first.u[edge, -1]),
+                                   np.where(at_lo, first.v[edge, 0], first.v[edge, -1]))
+        g[edge[smooth]] = g_end[smooth]
+        rest = edge[~smooth]
+        if rest.size:
+            # at a corner of the region or a masked cell's edge: by finite differences
+            h = 1e-5
+            te = t[rest]
+            pair = _seed_places(f, np.r_[te + h, te - h], frac).ute
+            fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
+            g[rest] = np.where(np.isfinite(fd), fd, g[rest])
+    return g
 
 
 def _end_slope(f: EaseOffFields, u: np.ndarray, v: np.ndarray):
@@ -633,10 +653,17 @@ def _gap_at_contact(f: EaseOffFields, cc: ContactCurves) -> np.ndarray:
     return f.gap_at(hu, hv)
 
 
-def _put_rows(a: np.ndarray, rows: np.ndarray, b: np.ndarray) -> np.ndarray:
-    out = np.array(a, copy=True)
-    out[rows] = b
-    return out
+def _with_rows(cc: ContactCurves, rows: np.ndarray, sub: ContactCurves) -> ContactCurves:
+    """A copy of the curves ``cc`` with the curves ``sub`` in the places ``rows``."""
+
+    def put(a, b):
+        if a is None:
+            return None
+        out = np.array(a, copy=True)
+        out[rows] = b
+        return out
+
+    return ContactCurves(*(put(a, b) for a, b in zip(cc, sub, strict=True)))
 
 
 #: spacings of the samples along a contact curve: name → fractions (n,) of the u-span
