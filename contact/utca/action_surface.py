@@ -41,7 +41,6 @@ F. L. Litvin, A. Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §6
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -49,6 +48,7 @@ import numpy as np
 
 from geometry.assembly import Misalignment, case_transforms, rotate_about_axis
 from geometry.errors import InputError
+from geometry.validation import one_of, real
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -127,9 +127,8 @@ def mesh_kinematics(case: Case, misalignment: Misalignment | None = None, *,
     Seed Eq. 2.14 (placement with the offset vector OE); frames of
     :mod:`geometry.assembly`.
     """
-    for name, val in (("pinion_phase", pinion_phase), ("gear_phase", gear_phase)):
-        if not math.isfinite(val):
-            raise InputError(f"{name}: must be a finite angle [rad], got {val!r}")
+    pinion_phase = real("pinion_phase", pinion_phase, unit="rad")
+    gear_phase = real("gear_phase", gear_phase, unit="rad")
     tp, tg = case_transforms(case, pinion_phase, gear_phase, misalignment)
     return MeshKinematics(np.array(tp), np.array(tg),
                           case.gear.blank.teeth / case.pinion.blank.teeth)
@@ -216,8 +215,8 @@ def action_roll_angle(kin: MeshKinematics, position, normal, *, branch: int | No
 
     if branch is None:
         if reference is None:
-            raise InputError("reference: a gear-flank point is needed to pick the mesh zone "
-                             "when branch is not given")
+            raise InputError("reference: must be a gear-flank point (3,) [mm] when branch is "
+                             "not given, got None")
         ref = np.asarray(reference, dtype=float)
         dist = {}
         for sign in (1, -1):
@@ -226,8 +225,8 @@ def action_roll_angle(kin: MeshKinematics, position, normal, *, branch: int | No
             d = np.linalg.norm(ra - ref, axis=-1)
             dist[sign] = np.nanmedian(d) if np.isfinite(d).any() else np.inf
         branch = 1 if dist[1] <= dist[-1] else -1
-    elif branch not in (1, -1):
-        raise InputError(f"branch: must be +1 or -1, got {branch!r}")
+    else:
+        one_of("branch", branch, (1, -1))
     return roots(branch), int(branch)
 
 

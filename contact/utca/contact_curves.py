@@ -80,6 +80,7 @@ import numpy as np
 from contact.utca.easeoff import EaseOff
 from contact.utca.fields import EaseOffFields
 from geometry.errors import InputError
+from geometry.validation import integer, one_of, real_array
 
 __all__ = [
     "CURVE_SPACINGS",
@@ -413,7 +414,8 @@ def _curves_seed(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
                  flank_fields: bool = True, near_misses: bool = False) -> ContactCurves:
     """Iso-lines Q = t (flat batch) and the minimum of ε along them (seed §2.3.2.2)."""
     if near_misses:
-        raise InputError("near_misses: needs the pinion's gap, i.e. method 'second_order'")
+        raise InputError("near_misses: must be False with method 'seed' (it needs the "
+                         "pinion's gap), got True")
     cc = _seed_places(f, t, frac)
     return _curve_fields(f, cc) if flank_fields else cc
 
@@ -732,8 +734,7 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
     plane and then onto the ease-off; its lowest point H gives the UTE.
     """
     tgt, f = _checked(eo, target, method, n_point, fields)
-    if spacing not in CURVE_SPACINGS:
-        raise InputError(f"spacing: must be one of {sorted(CURVE_SPACINGS)}, got {spacing!r}")
+    one_of("spacing", spacing, CURVE_SPACINGS)
     batch = tgt.shape
     cc = UTE_METHODS[method](f, tgt.reshape(-1), CURVE_SPACINGS[spacing](int(n_point)),
                              near_misses=near_misses)
@@ -742,13 +743,9 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
 
 def _checked(eo: EaseOff, target, method: str, n_point: int, fields: EaseOffFields | None):
     """Validated roll targets (float array) and the splines, for :func:`contact_curves`."""
-    if method not in UTE_METHODS:
-        raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
-    if int(n_point) != n_point or n_point < 3:
-        raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
-    tgt = np.asarray(target, dtype=float)
-    if not np.all(np.isfinite(tgt)):
-        raise InputError("target: roll values must be finite [rad]")
+    one_of("method", method, UTE_METHODS)
+    integer("n_point", n_point, low=3)
+    tgt = real_array("target", target, unit="rad")
     return tgt, (fields if fields is not None else EaseOffFields(eo))
 
 
@@ -815,8 +812,7 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
     InputError
         For ``samples`` < 4 (and as :func:`contact_curves`).
     """
-    if int(samples) != samples or samples < 4:
-        raise InputError(f"samples: must be an integer >= 4, got {samples!r}")
+    samples = integer("samples", samples, low=4)
     h = _PairDifference(eo, fields if fields is not None else EaseOffFields(eo), method,
                         n_point)
     p = eo.pitch

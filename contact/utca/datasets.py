@@ -46,6 +46,7 @@ from contact.utca.fields import EaseOffFields
 from geometry import __version__
 from geometry.conventions import data_var as _var
 from geometry.errors import InputError
+from geometry.validation import integer, one_of, positive
 
 if TYPE_CHECKING:
     from geometry.assembly import Misalignment
@@ -157,8 +158,7 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
     :func:`utca_dataset`).
     """
     _check_cycle_options(n_roll, pairs, method, n_point)
-    if not (math.isfinite(separation) and separation > 0):
-        raise InputError(f"separation: must be a finite length > 0 [mm], got {separation!r}")
+    separation = positive("separation", separation, "mm")
     eo = easeoff if easeoff is not None else ease_off(case, flank=flank,
                                                       misalignment=misalignment, grid=grid)
     cycle = unloaded_cycle(eo, n_roll=n_roll, pairs=pairs, method=method, n_point=n_point)
@@ -168,15 +168,12 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
 
 def _check_cycle_options(n_roll, pairs, method, n_point) -> tuple[int, ...]:
     """The options of :func:`unloaded_cycle` checked; the pairs as a tuple of int."""
-    if int(n_roll) != n_roll or n_roll < 4:
-        raise InputError(f"n_roll: must be an integer >= 4, got {n_roll!r}")
-    pairs = tuple(int(k) for k in pairs)
+    integer("n_roll", n_roll, low=4)
+    pairs = tuple(integer("pairs", k) for k in pairs)
     if not pairs or len(set(pairs)) != len(pairs) or 0 not in pairs:
         raise InputError(f"pairs: must be distinct integers including 0, got {pairs!r}")
-    if method not in UTE_METHODS:
-        raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
-    if int(n_point) != n_point or n_point < 3:
-        raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
+    one_of("method", method, UTE_METHODS)
+    integer("n_point", n_point, low=3)
     return pairs
 
 
@@ -317,8 +314,7 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
     exceeds the pair's UTE by no more than ``separation`` is the unloaded contact line;
     its ends trace LPP and RPP, its contact point H the CPP.
     """
-    if not (math.isfinite(separation) and separation > 0):
-        raise InputError(f"separation: must be a finite length > 0 [mm], got {separation!r}")
+    separation = positive("separation", separation, "mm")
     mis = case.misalignment if misalignment is None else misalignment
     cc, envelope = cycle.curves, cycle.envelope
     te = cc.ute

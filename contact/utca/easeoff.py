@@ -102,6 +102,7 @@ from geometry.cutter import profile_sections
 from geometry.errors import InputError
 from geometry.flank import DEFAULT_GRID, blank_outline, flank_surface
 from geometry.meshing import solve_envelope
+from geometry.validation import one_of
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -154,13 +155,8 @@ _MIRROR = np.array([1.0, -1.0, 1.0])
 def _flank_names(case: Case, flank: str | None) -> tuple[str, str]:
     if flank is None:
         flank = "drive"
-    if flank in FLANK_ROLES:
-        pf = FLANK_ROLES[flank](case)
-    elif flank in MATING_FLANK:
-        pf = flank
-    else:
-        raise InputError(f"flank: must be one of {sorted(FLANK_ROLES)} or a pinion flank "
-                         f"{sorted(MATING_FLANK)}, got {flank!r}")
+    one_of("flank", flank, [*FLANK_ROLES, *MATING_FLANK])
+    pf = FLANK_ROLES[flank](case) if flank in FLANK_ROLES else flank
     return pf, MATING_FLANK[pf]
 
 
@@ -686,7 +682,8 @@ def _grid_options(grid: dict | None) -> dict:
     if grid:
         unknown = sorted(set(grid) - set(g))
         if unknown:
-            raise InputError(f"grid: unknown keys {unknown}; accepted {sorted(g)}")
+            raise InputError(f"grid: must have keys from {sorted(g)}, got unknown keys "
+                             f"{unknown}")
         g.update(grid)
     return g
 
@@ -799,7 +796,7 @@ def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
     out = np.array(values, dtype=float)
     have = np.array(valid, dtype=bool)
     if not have.any():
-        raise InputError("no valid node to fill a field from")
+        raise InputError("valid: must hold at least one valid node, got none")
     trail = (1,) * (out.ndim - have.ndim)
     while not have.all():
         acc = np.zeros(out.shape)

@@ -80,7 +80,8 @@ class EaseOffFields:
         computed = np.isfinite(eo.raw_ease_off_angle) & np.isfinite(eo.raw_roll_angle)
         valid = eo.valid
         if valid.sum() < 16:
-            raise InputError("easeoff: fewer than 16 valid nodes, nothing to contour")
+            raise InputError(f"eo: must have at least 16 valid nodes to contour, got "
+                             f"{int(valid.sum())}")
         self.computed = computed
         gear_ok = np.all(np.isfinite(eo.gear_position), axis=-1)
 
