@@ -29,6 +29,8 @@ Public functions
 ----------------
 MeshKinematics         axes, crossing points, ratio and placements of the two members
 mesh_kinematics        build them for a case (with misalignments, optional phases)
+to_pair_frame          pinion-frame points and normals into the pair frame
+meshing_coefficients   coefficients of the equation of meshing in the pinion rotation
 action_roll_angle      closed-form roll angle of pinion points (Eq. 2.19)
 action_surface         roll angle, action-surface points and normals in the pair frame
 conjugate_points       conjugate-gear points in the gear frame (Eq. 2.20)
@@ -59,6 +61,8 @@ __all__ = [
     "action_surface",
     "conjugate_points",
     "mesh_kinematics",
+    "meshing_coefficients",
+    "to_pair_frame",
 ]
 
 
@@ -135,8 +139,24 @@ def mesh_kinematics(case: Case, misalignment: Misalignment | None = None, *,
 
 
 def to_pair_frame(kin: MeshKinematics, position, normal):
-    """Pinion-frame points and normals (..., 3) [mm], [1] into the pair frame at zero
-    pinion rotation; InputError unless both have the same shape (..., 3)."""
+    """Pinion-frame points and normals into the pair frame at zero pinion rotation.
+
+    Parameters
+    ----------
+    kin : MeshKinematics
+    position, normal : array_like (..., 3) — [mm], [1]
+        Pinion points and unit normals in the pinion frame.
+
+    Returns
+    -------
+    r0, n0 : ndarray (..., 3) — [mm], [1]
+        In the pair frame (:mod:`geometry.assembly`).
+
+    Raises
+    ------
+    InputError
+        Unless both have the same shape (..., 3).
+    """
     p = np.asarray(position, dtype=float)
     n = np.asarray(normal, dtype=float)
     if p.shape != n.shape or p.shape[-1:] != (3,):
@@ -147,8 +167,26 @@ def to_pair_frame(kin: MeshKinematics, position, normal):
 
 
 def meshing_coefficients(kin: MeshKinematics, r0: np.ndarray, n0: np.ndarray):
-    """c₁, A, B, C of R c₁ + A + B cos φ + C sin φ = 0 (module docstring, seed Eq. 2.19)
-    for pair-frame points r0 [mm] and unit normals n0 (..., 3) at zero pinion rotation."""
+    """Coefficients of the equation of meshing in the pinion rotation φ (seed Eq. 2.19).
+
+    Parameters
+    ----------
+    kin : MeshKinematics
+    r0, n0 : ndarray (..., 3) — [mm], [1]
+        Pinion points and unit normals in the pair frame at zero pinion rotation
+        (:func:`to_pair_frame`).
+
+    Returns
+    -------
+    c1, a, b, c : ndarray (...) — [mm]
+        R c₁ + A + B cos φ + C sin φ = 0 is the conjugacy condition of the point turned by
+        φ about the pinion axis; c₁ = a_p·((r − O_p) × n) does not change with φ.
+
+    Notes
+    -----
+    Module docstring ("Conjugacy condition"): the gear term a_g·((r − O_g) × n) of the
+    turned point by Rodrigues' formula; Litvin & Fuentes 2004, §6.1.
+    """
     a = kin.pinion_axis
     ag = kin.gear_axis
     w0 = r0 - kin.pinion_origin

@@ -259,7 +259,7 @@ def _false_position_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.n
         lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
         w = 1e-3 * (hi_m - lo_m)
         m = np.minimum(np.maximum(m, lo_m + w), hi_m - w)
-        vm = f._newton_v(m, t, va.copy())
+        vm = f.newton_v(m, t, va.copy())
         cm = f.measure(m, vm)
         good = cm >= 0
         bad = ~good
@@ -389,11 +389,11 @@ def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarra
 
     def minus_measure(rows, x):  # (M, n) places → −measure (the grid search minimises)
         n = x.shape[1]
-        vx = f._newton_v(x.ravel(), np.repeat(tt[rows], n), np.repeat(v_best[rows], n))
+        vx = f.newton_v(x.ravel(), np.repeat(tt[rows], n), np.repeat(v_best[rows], n))
         return -f.measure(x.ravel(), vx).reshape(-1, n)
 
     u_star, _ = _grid_minimum(minus_measure, lo, hi, uc[best], _SHORT_ITER)
-    v_star = f._newton_v(u_star, tt, v_best.copy())
+    v_star = f.newton_v(u_star, tt, v_best.copy())
     m_star = f.measure(u_star, v_star)
     ok = m_star >= 0
     return _ShortCurves(cand[ok], u_star[ok], v_star[ok], lo[ok], hi[ok])

@@ -790,8 +790,29 @@ def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
     """Fill invalid nodes of a 2-D field by linear extrapolation from valid neighbours.
 
     Used only to give the interpolating splines a smooth field: filled nodes stay masked.
-    ``values`` may carry trailing axes (several fields on the same mask, filled at once;
-    each element's arithmetic is that of a single field).
+    Each pass fills the invalid nodes next to valid ones, with the mean over the four grid
+    directions of the linear continuation of the two nearest valid nodes (2 a₁ − a₂), or
+    of the nearest one where only it is valid; passes repeat until every node is filled
+    or none can be.
+
+    Parameters
+    ----------
+    values : array_like (nu, nv, ...)
+        The field; trailing axes carry several fields on the same mask, filled at once
+        (each element's arithmetic is that of a single field).
+    valid : array_like of bool (nu, nv)
+        Nodes that hold values.
+
+    Returns
+    -------
+    ndarray of float (nu, nv, ...)
+        A copy with the invalid nodes filled (left as they were where no valid node
+        reaches them).
+
+    Raises
+    ------
+    InputError
+        If no node is valid.
     """
     out = np.array(values, dtype=float)
     have = np.array(valid, dtype=bool)
