@@ -571,9 +571,20 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
         phases and inputs.
     """
     mis = case.misalignment if misalignment is None else misalignment
+    coords = {
+        "u": ("u", eo.u, {"units": "1", "long_name": "gear lengthwise fraction, toe 0 to heel 1"}),
+        "v": ("v", eo.v, {"units": "1", "long_name": "gear profile fraction, root 0 to tip 1"}),
+        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
+    }
+    return xr.Dataset(_easeoff_variables(eo), coords=coords,
+                      attrs=_easeoff_attrs(eo, case, mis))
+
+
+def _easeoff_variables(eo: EaseOff) -> dict:
+    """The ``/easeoff`` variables over the gear grid (u, v[, xyz])."""
     uv = ("u", "v")
     codes = np.array(sorted(EASEOFF_REASONS), dtype=np.int8)
-    data = {
+    return {
         "ease_off": _var(uv, eo.ease_off * 1e3, "um",
                          "ease-off: real gear to touching conjugate of the pinion, along the "
                          "gear normal (>= 0: gap)"),
@@ -608,12 +619,11 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
                             flag_values=codes,
                             flag_meanings=" ".join(EASEOFF_REASONS[int(c)] for c in codes)),
     }
-    coords = {
-        "u": ("u", eo.u, {"units": "1", "long_name": "gear lengthwise fraction, toe 0 to heel 1"}),
-        "v": ("v", eo.v, {"units": "1", "long_name": "gear profile fraction, root 0 to tip 1"}),
-        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
-    }
-    attrs = {
+
+
+def _easeoff_attrs(eo: EaseOff, case: Case, mis: Misalignment) -> dict:
+    """The ``/easeoff`` attributes: senses and phases of the kinematics, inputs."""
+    return {
         "title": f"{case.name}: ease-off and surface of roll angle",
         "case": case.name,
         "pinion_flank": eo.pinion_flank,
@@ -635,4 +645,3 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
         "source": "contact.utca.ease_off (seed Eq. 2.19-2.20, 4.1-4.2)",
         "inputs": case.to_toml(),
     }
-    return xr.Dataset(data, coords=coords, attrs=attrs)
