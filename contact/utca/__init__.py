@@ -11,8 +11,9 @@ The layer between the generated flanks (:mod:`geometry`) and the loaded analysis
   of the contact region (:class:`EaseOffFields`);
 * :mod:`contact.utca.contact_curves` — instantaneous contact curves, the unloaded
   transmission error (UTE) of each pair and the transitions M1, M2;
-* :mod:`contact.utca.datasets` — the whole UTCA of a case as the ``/easeoff`` and
-  ``/utca`` datasets (:func:`unloaded_tca`);
+* :mod:`contact.utca.datasets` — the contact of the tooth pairs over one mesh cycle
+  (:func:`unloaded_cycle`) and the whole UTCA of a case as the ``/easeoff`` and ``/utca``
+  datasets (:func:`unloaded_tca`);
 * :mod:`contact.utca.deviations` — measured or wear deviations of the flanks and the
   ease-off they give (seed ch. 4).
 
@@ -29,7 +30,13 @@ from contact.utca.contact_curves import (
     pair_transmission_error,
     transitions,
 )
-from contact.utca.datasets import easeoff_dataset, unloaded_tca, utca_dataset
+from contact.utca.datasets import (
+    UnloadedCycle,
+    easeoff_dataset,
+    unloaded_cycle,
+    unloaded_tca,
+    utca_dataset,
+)
 from contact.utca.easeoff import FLANK_ROLES, MATING_FLANK, EaseOff, ease_off
 from contact.utca.fields import EaseOffFields
 
@@ -43,12 +50,14 @@ __all__ = [
     "EaseOff",
     "EaseOffFields",
     "MeshKinematics",
+    "UnloadedCycle",
     "contact_curves",
     "ease_off",
     "easeoff_dataset",
     "mesh_kinematics",
     "pair_transmission_error",
     "transitions",
+    "unloaded_cycle",
     "unloaded_tca",
     "utca_dataset",
 ]

@@ -29,6 +29,8 @@ Public functions
 ----------------
 MeshKinematics         axes, crossing points, ratio and placements of the two members
 mesh_kinematics        build them for a case (with misalignments, optional phases)
+to_pair_frame          pinion-frame points and normals into the pair frame
+meshing_coefficients   coefficients of the equation of meshing in the pinion rotation
 action_roll_angle      closed-form roll angle of pinion points (Eq. 2.19)
 action_surface         roll angle, action-surface points and normals in the pair frame
 conjugate_points       conjugate-gear points in the gear frame (Eq. 2.20)
@@ -41,7 +43,6 @@ F. L. Litvin, A. Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., 2004, §6
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -49,6 +50,7 @@ import numpy as np
 
 from geometry.assembly import Misalignment, case_transforms, rotate_about_axis
 from geometry.errors import InputError
+from geometry.validation import one_of, real
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -59,6 +61,8 @@ __all__ = [
     "action_surface",
     "conjugate_points",
     "mesh_kinematics",
+    "meshing_coefficients",
+    "to_pair_frame",
 ]
 
 
@@ -127,17 +131,32 @@ def mesh_kinematics(case: Case, misalignment: Misalignment | None = None, *,
     Seed Eq. 2.14 (placement with the offset vector OE); frames of
     :mod:`geometry.assembly`.
     """
-    for name, val in (("pinion_phase", pinion_phase), ("gear_phase", gear_phase)):
-        if not math.isfinite(val):
-            raise InputError(f"{name}: must be a finite angle [rad], got {val!r}")
+    pinion_phase = real("pinion_phase", pinion_phase, unit="rad")
+    gear_phase = real("gear_phase", gear_phase, unit="rad")
     tp, tg = case_transforms(case, pinion_phase, gear_phase, misalignment)
     return MeshKinematics(np.array(tp), np.array(tg),
                           case.gear.blank.teeth / case.pinion.blank.teeth)
 
 
 def to_pair_frame(kin: MeshKinematics, position, normal):
-    """Pinion-frame points and normals (..., 3) [mm], [1] into the pair frame at zero
-    pinion rotation; InputError unless both have the same shape (..., 3)."""
+    """Pinion-frame points and normals into the pair frame at zero pinion rotation.
+
+    Parameters
+    ----------
+    kin : MeshKinematics
+    position, normal : array_like (..., 3) — [mm], [1]
+        Pinion points and unit normals in the pinion frame.
+
+    Returns
+    -------
+    r0, n0 : ndarray (..., 3) — [mm], [1]
+        In the pair frame (:mod:`geometry.assembly`).
+
+    Raises
+    ------
+    InputError
+        Unless both have the same shape (..., 3).
+    """
     p = np.asarray(position, dtype=float)
     n = np.asarray(normal, dtype=float)
     if p.shape != n.shape or p.shape[-1:] != (3,):
@@ -148,8 +167,26 @@ def to_pair_frame(kin: MeshKinematics, position, normal):
 
 
 def meshing_coefficients(kin: MeshKinematics, r0: np.ndarray, n0: np.ndarray):
-    """c₁, A, B, C of R c₁ + A + B cos φ + C sin φ = 0 (module docstring, seed Eq. 2.19)
-    for pair-frame points r0 [mm] and unit normals n0 (..., 3) at zero pinion rotation."""
+    """Coefficients of the equation of meshing in the pinion rotation φ (seed Eq. 2.19).
+
+    Parameters
+    ----------
+    kin : MeshKinematics
+    r0, n0 : ndarray (..., 3) — [mm], [1]
+        Pinion points and unit normals in the pair frame at zero pinion rotation
+        (:func:`to_pair_frame`).
+
+    Returns
+    -------
+    c1, a, b, c : ndarray (...) — [mm]
+        R c₁ + A + B cos φ + C sin φ = 0 is the conjugacy condition of the point turned by
+        φ about the pinion axis; c₁ = a_p·((r − O_p) × n) does not change with φ.
+
+    Notes
+    -----
+    Module docstring ("Conjugacy condition"): the gear term a_g·((r − O_g) × n) of the
+    turned point by Rodrigues' formula; Litvin & Fuentes 2004, §6.1.
+    """
     a = kin.pinion_axis
     ag = kin.gear_axis
     w0 = r0 - kin.pinion_origin
@@ -216,8 +253,8 @@ def action_roll_angle(kin: MeshKinematics, position, normal, *, branch: int | No
 
     if branch is None:
         if reference is None:
-            raise InputError("reference: a gear-flank point is needed to pick the mesh zone "
-                             "when branch is not given")
+            raise InputError("reference: must be a gear-flank point (3,) [mm] when branch is "
+                             "not given, got None")
         ref = np.asarray(reference, dtype=float)
         dist = {}
         for sign in (1, -1):
@@ -226,8 +263,8 @@ def action_roll_angle(kin: MeshKinematics, position, normal, *, branch: int | No
             d = np.linalg.norm(ra - ref, axis=-1)
             dist[sign] = np.nanmedian(d) if np.isfinite(d).any() else np.inf
         branch = 1 if dist[1] <= dist[-1] else -1
-    elif branch not in (1, -1):
-        raise InputError(f"branch: must be +1 or -1, got {branch!r}")
+    else:
+        one_of("branch", branch, (1, -1))
     return roots(branch), int(branch)
 
 

@@ -72,6 +72,7 @@ from __future__ import annotations
 import logging
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
@@ -79,6 +80,7 @@ import numpy as np
 from contact.utca.easeoff import EaseOff
 from contact.utca.fields import EaseOffFields
 from geometry.errors import InputError
+from geometry.validation import integer, one_of, real_array
 
 __all__ = [
     "CURVE_SPACINGS",
@@ -123,22 +125,81 @@ class ContactCurves(NamedTuple):
     index: np.ndarray  # batch: sample index nearest to H (-1 where no curve)
 
 
+class _Coarse(NamedTuple):
+    """Iso-lines located on coarse samples along u (flat batch nb).
+
+    ``start``, ``stop``: sample indices of each curve's largest contiguous run of samples
+    inside the contact region (-1 where it has none, ``have`` False).
+    """
+
+    u: np.ndarray  # (nc,) [1] coarse places along u
+    v: np.ndarray  # (nb, nc) [1] profile places of the iso-lines there (NaN: missed)
+    have: np.ndarray  # (nb,) bool
+    start: np.ndarray  # (nb,) int
+    stop: np.ndarray  # (nb,) int
+
+
+class _ShortCurves(NamedTuple):
+    """Curves that lie wholly between two coarse samples (see :func:`_short_curves`)."""
+
+    rows: np.ndarray  # (M,) int: indices into the batch
+    u: np.ndarray  # (M,) [1] a place inside each (the maximum of the inside measure)
+    v: np.ndarray  # (M,)
+    lo: np.ndarray  # (M,) neighbouring coarse places (outside) bracketing each curve's ends
+    hi: np.ndarray
+
+
 def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
                  coarse_per_cell: int = _COARSE_PER_CELL) -> ContactCurves:
     """Places, ε and UTE of the iso-lines Q = t (flat batch), without the flank fields
     (``normal_arm``, ``position``, ``normal`` are None; see :func:`_curve_fields`), sampled
     at the fractions ``frac`` (increasing from 0 to 1) of u between each curve's ends; the
-    curves are first located on ``coarse_per_cell`` samples per grid cell along u."""
+    curves are first located on ``coarse_per_cell`` samples per grid cell along u
+    (:func:`_coarse_runs`), their ends refined (:func:`_curve_ends`), the samples solved by
+    Newton's method from the coarse curve and the minimum of ε refined
+    (:func:`_lowest_point`)."""
     nb = t.size
-    n_point = frac.size
-    u0, u1 = float(f.u[0]), float(f.u[-1])
+    u0 = float(f.u[0])
+    co = _coarse_runs(f, t, coarse_per_cell)
+    # a curve shorter than the coarse step can fall between two samples: where the measure
+    # peaks inside between them, that peak seeds it (a pair entering or leaving at a corner
+    # of the region keeps its curve until the curve shrinks to nothing)
+    short = _short_curves(f, t, co.u, co.v, co.have)
+    ua, ub = _curve_ends(f, t, co, short)
+    up = ua[:, None] + (ub - ua)[:, None] * frac
+    up_safe = np.where(np.isfinite(up), up, u0)
+    vstart = np.full(up.shape, np.nan)
+    hb = np.flatnonzero(co.have)
+    if hb.size:
+        vstart[hb] = _run_interpolation(co, hb, up_safe[hb])
+    if short.rows.size:  # a short curve: Newton from its seed
+        vstart[short.rows] = short.v[:, None]
+        hb = np.r_[hb, short.rows]
+    # only the curves that exist (Newton runs each point independently)
+    vp = np.full(up.shape, np.nan)
+    if hb.size:
+        vp[hb] = f.solve_v(up_safe[hb], t[hb, None], v_start=vstart[hb])
+    up = np.where(np.isfinite(vp), up, np.nan)
+    fin = np.isfinite(vp)
+    us, vs = np.where(fin, up, u0), np.where(fin, vp, f.v[0])
+    eps = np.where(fin, f.eps.ev(us, vs), np.nan)
+    ute, cu, cv, index = _lowest_point(f, t, up, vp, eps)
+    return ContactCurves(
+        target=t, shift=np.zeros(nb), u=up, v=vp, ease_off_angle=eps,
+        gap=np.where(fin, 0.0, np.nan), normal_arm=None, position=None, normal=None, ute=ute,
+        contact_u=cu, contact_v=cv, index=index)
+
+
+def _coarse_runs(f: EaseOffFields, t: np.ndarray, coarse_per_cell: int) -> _Coarse:
+    """The iso-lines Q = t on ``coarse_per_cell`` samples per grid cell along u, and the
+    largest contiguous run of inside samples of each."""
+    nb = t.size
     nc = coarse_per_cell * (len(f.u) - 1) + 1
-    uc = np.linspace(u0, u1, nc)
+    uc = np.linspace(float(f.u[0]), float(f.u[-1]), nc)
     vc = f.solve_v(uc[None, :], t[:, None], lattice=f.lattice(uc)[None, :, :])
     ok = f.inside(np.broadcast_to(uc, vc.shape), vc)
-    # the largest contiguous run of valid samples of each curve
-    # (vectorised over the curves: a run starts where ok rises and ends before it falls;
-    # argmax takes the first of equally long runs)
+    # vectorised over the curves: a run starts where ok rises and ends before it falls;
+    # argmax takes the first of equally long runs
     edge = np.diff(np.pad(ok, ((0, 0), (1, 1))).astype(np.int8), axis=1)
     col = np.arange(nc + 1)
     falls = np.where(edge == -1, col, nc + 1)
@@ -148,91 +209,105 @@ def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
     first = np.argmax(length, axis=1)
     start = np.where(have, first, -1)
     stop = np.where(have, first + length[np.arange(nb), first] - 1, -1)
+    return _Coarse(uc, vc, have, start, stop)
+
+
+def _curve_ends(f: EaseOffFields, t: np.ndarray, co: _Coarse, short: _ShortCurves):
+    """Lengthwise places (ua, ub) (nb,) of the curves' ends (NaN where no curve).
+
+    An end inside the grid lies between the last inside and the first outside coarse
+    sample of its run, a short curve's between its seed and either bracket; each is found
+    there on the continuous inside measure (:func:`_false_position_ends`).
+    """
+    uc, vc, have, start, stop = co
+    nc = uc.size
     ua = np.where(have, uc[np.clip(start, 0, nc - 1)], np.nan)
     ub = np.where(have, uc[np.clip(stop, 0, nc - 1)], np.nan)
-    # a curve shorter than the coarse step can fall between two samples: where the measure
-    # peaks inside between them, that peak seeds it (a pair entering or leaving at a corner
-    # of the region keeps its curve until the curve shrinks to nothing)
-    s_rows, s_u, s_v, s_lo, s_hi = _short_curves(f, t, uc, vc, have)
-    seeded = np.zeros(nb, dtype=bool)
-    seeded[s_rows] = True
-
-    # ends: false position (Illinois) on the continuous inside measure between the last
-    # valid and the first invalid coarse sample (bisection where the measure jumps)
     lo_end = have & (start > 0)
     hi_end = have & (stop < nc - 1)
+    s_rows = short.rows
     rows = np.r_[np.flatnonzero(lo_end), np.flatnonzero(hi_end), s_rows, s_rows]
     if rows.size:
         j_in = np.r_[start[lo_end], stop[hi_end]]
         j_out = np.r_[start[lo_end] - 1, stop[hi_end] + 1]
-        a = np.r_[uc[j_in], s_u, s_u]
-        b = np.r_[uc[j_out], s_lo, s_hi]
-        va = np.r_[vc[rows[: j_in.size], j_in], s_v, s_v]
-        ca = f.measure(a, va)
-        cb = f.measure(b, f.solve_v(b, t[rows], v_start=va))
-        t_rows = t[rows]
-        # the last step moved a (prev_in) or b (prev_out); updates in place (own arrays)
-        prev_in = np.zeros(rows.size, dtype=bool)
-        prev_out = np.zeros(rows.size, dtype=bool)
-        for _ in range(_END_ITER):
-            smooth = (cb > -0.5) & (ca < 0.5) & (cb != ca)
-            m = np.where(smooth, b - cb * (b - a) / np.where(smooth, cb - ca, 1.0), 0.5 * (a + b))
-            lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
-            w = 1e-3 * (hi_m - lo_m)
-            m = np.minimum(np.maximum(m, lo_m + w), hi_m - w)
-            vm = f._newton_v(m, t_rows, va.copy())
-            cm = f.measure(m, vm)
-            good = cm >= 0
-            bad = ~good
-            # Illinois: halve the value kept at the end that did not move twice running
-            np.multiply(cb, 0.5, out=cb, where=good & prev_in & smooth)
-            np.multiply(ca, 0.5, out=ca, where=bad & prev_out & smooth)
-            np.copyto(a, m, where=good)
-            np.copyto(ca, cm, where=good)
-            np.copyto(va, vm, where=good)
-            np.copyto(b, m, where=bad)
-            np.copyto(cb, cm, where=bad)
-            prev_in, prev_out = good, bad
-            if np.all(np.abs(b - a) < 1e-9):
-                break
+        a = np.r_[uc[j_in], short.u, short.u]
+        b = np.r_[uc[j_out], short.lo, short.hi]
+        va = np.r_[vc[rows[: j_in.size], j_in], short.v, short.v]
+        a = _false_position_ends(f, t[rows], a, b, va)
         n_lo, n_hi, n_s = int(lo_end.sum()), int(hi_end.sum()), s_rows.size
         ua[rows[:n_lo]] = a[:n_lo]
         ub[rows[n_lo:n_lo + n_hi]] = a[n_lo:n_lo + n_hi]
         ua[s_rows] = a[n_lo + n_hi:n_lo + n_hi + n_s]
         ub[s_rows] = a[n_lo + n_hi + n_s:]
-    up = ua[:, None] + (ub - ua)[:, None] * frac
-    up_safe = np.where(np.isfinite(up), up, u0)
-    vstart = np.full(up.shape, np.nan)
-    hb = np.flatnonzero(have)
-    if hb.size:
-        # np.interp of each curve's run of coarse samples, vectorised over the curves (the
-        # same arithmetic: slope (y[j+1] − y[j]) / (x[j+1] − x[j]), ends held)
-        s0, s1 = start[hb][:, None], stop[hb][:, None]
-        x = up_safe[hb]
-        j = np.clip(np.searchsorted(uc, x, side="right") - 1, s0, s1)
-        jn = np.minimum(j + 1, s1)
-        vrun = vc[hb]
-        yj = np.take_along_axis(vrun, j, 1)
-        yn = np.take_along_axis(vrun, jn, 1)
-        step = jn != j
-        slope = (yn - yj) / np.where(step, uc[jn] - uc[j], 1.0)
-        val = np.where(step & (uc[j] != x), slope * (x - uc[j]) + yj, yj)
-        lo_v = np.take_along_axis(vrun, s0, 1)
-        hi_v = np.take_along_axis(vrun, s1, 1)
-        vstart[hb] = np.where(x < uc[s0], lo_v, np.where(x >= uc[s1], hi_v, val))
-    if s_rows.size:  # a short curve: Newton from its seed
-        vstart[s_rows] = s_v[:, None]
-        hb = np.r_[hb, s_rows]
-        have = have | seeded
-    # only the curves that exist (Newton runs each point independently)
-    vp = np.full(up.shape, np.nan)
-    if hb.size:
-        vp[hb] = f.solve_v(up_safe[hb], t[hb, None], v_start=vstart[hb])
-    up = np.where(np.isfinite(vp), up, np.nan)
+    return ua, ub
+
+
+def _false_position_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
+                         va: np.ndarray) -> np.ndarray:
+    """Ends of the iso-lines Q = t (M,) between an inside place a (profile place va) and an
+    outside place b: false position (Illinois) on the continuous inside measure, bisection
+    where the measure jumps, to 1e-9 of the face width (:data:`_END_ITER` steps at most).
+    Returns the last inside place of each (``a``, ``va`` are updated in place)."""
+    ca = f.measure(a, va)
+    cb = f.measure(b, f.solve_v(b, t, v_start=va))
+    # the last step moved a (prev_in) or b (prev_out); updates in place (own arrays)
+    prev_in = np.zeros(a.size, dtype=bool)
+    prev_out = np.zeros(a.size, dtype=bool)
+    for _ in range(_END_ITER):
+        smooth = (cb > -0.5) & (ca < 0.5) & (cb != ca)
+        m = np.where(smooth, b - cb * (b - a) / np.where(smooth, cb - ca, 1.0), 0.5 * (a + b))
+        lo_m, hi_m = np.minimum(a, b), np.maximum(a, b)
+        w = 1e-3 * (hi_m - lo_m)
+        m = np.minimum(np.maximum(m, lo_m + w), hi_m - w)
+        vm = f.newton_v(m, t, va.copy())
+        cm = f.measure(m, vm)
+        good = cm >= 0
+        bad = ~good
+        # Illinois: halve the value kept at the end that did not move twice running
+        np.multiply(cb, 0.5, out=cb, where=good & prev_in & smooth)
+        np.multiply(ca, 0.5, out=ca, where=bad & prev_out & smooth)
+        np.copyto(a, m, where=good)
+        np.copyto(ca, cm, where=good)
+        np.copyto(va, vm, where=good)
+        np.copyto(b, m, where=bad)
+        np.copyto(cb, cm, where=bad)
+        prev_in, prev_out = good, bad
+        if np.all(np.abs(b - a) < 1e-9):
+            break
+    return a
+
+
+def _run_interpolation(co: _Coarse, rows: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Profile places (M, n) at the places x of the curves ``rows`` (M,), interpolated
+    linearly along each curve's run of coarse samples (ends held): ``np.interp`` of each
+    run, vectorised over the curves (the same arithmetic: slope (y[j+1] − y[j]) /
+    (x[j+1] − x[j]))."""
+    uc = co.u
+    s0, s1 = co.start[rows][:, None], co.stop[rows][:, None]
+    j = np.clip(np.searchsorted(uc, x, side="right") - 1, s0, s1)
+    jn = np.minimum(j + 1, s1)
+    vrun = co.v[rows]
+    yj = np.take_along_axis(vrun, j, 1)
+    yn = np.take_along_axis(vrun, jn, 1)
+    step = jn != j
+    slope = (yn - yj) / np.where(step, uc[jn] - uc[j], 1.0)
+    val = np.where(step & (uc[j] != x), slope * (x - uc[j]) + yj, yj)
+    lo_v = np.take_along_axis(vrun, s0, 1)
+    hi_v = np.take_along_axis(vrun, s1, 1)
+    return np.where(x < uc[s0], lo_v, np.where(x >= uc[s1], hi_v, val))
+
+
+def _lowest_point(f: EaseOffFields, t: np.ndarray, up: np.ndarray, vp: np.ndarray,
+                  eps: np.ndarray):
+    """The contact point H of each curve: the lowest ε along it (nb, n) [rad], refined by
+    the vertex of the parabola through the lowest sample and its neighbours (held within
+    half a step of the lowest, and kept only where ε is lower there).
+
+    Returns (ute, contact_u, contact_v, index) (nb,): the UTE [rad], H's place, and the
+    index of the lowest sample (-1 and NaN where there is no curve).
+    """
+    nb, n_point = up.shape
     fin = np.isfinite(vp)
-    us, vs = np.where(fin, up, u0), np.where(fin, vp, f.v[0])
-    eps = np.where(fin, f.eps.ev(us, vs), np.nan)
-    # minimum with parabolic refinement through the lowest sample and its neighbours
     ute = np.full(nb, np.nan)
     cu = np.full(nb, np.nan)
     cv = np.full(nb, np.nan)
@@ -247,33 +322,39 @@ def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
         cv[rows] = vp[rows, k]
         inner = (k > 0) & (k < n_point - 1)
         if inner.any():
-            r = rows[inner]
-            ki = k[inner]
-            em, ec, ep = eps[r, ki - 1], eps[r, ki], eps[r, ki + 1]
-            # vertex of the parabola through the three samples (steps h1, h2, equal or
-            # not), held within half a step of the lowest
-            h1 = up[r, ki] - up[r, ki - 1]
-            h2 = up[r, ki + 1] - up[r, ki]
-            a1, a2 = em - ec, ep - ec
-            den = 2 * (h2 * a1 + h1 * a2)
-            okp = np.isfinite(den) & (den > 0)
-            d = np.where(okp, (h2**2 * a1 - h1**2 * a2) / np.where(okp, den, 1.0), 0.0)
-            ur = up[r, ki] + np.clip(d, -0.5 * h1, 0.5 * h2)
-            vr = f.solve_v(ur, t[r], v_start=vp[r, ki])
-            good = np.isfinite(vr)
-            er = np.where(good, f.eps.ev(ur, np.where(good, vr, f.v[0])), np.inf)
-            better = good & (er < ec)
+            r, ki = rows[inner], k[inner]
+            ur, vr, er = _parabola_vertex(f, t, up, vp, eps, r, ki)
+            ec = eps[r, ki]
+            better = np.isfinite(vr) & (er < ec)
             ute[r] = np.where(better, er, ec)
             cu[r] = np.where(better, ur, cu[r])
             cv[r] = np.where(better, vr, cv[r])
-    return ContactCurves(
-        target=t, shift=np.zeros(nb), u=up, v=vp, ease_off_angle=eps,
-        gap=np.where(fin, 0.0, np.nan), normal_arm=None, position=None, normal=None, ute=ute,
-        contact_u=cu, contact_v=cv, index=index)
+    return ute, cu, cv, index
+
+
+def _parabola_vertex(f: EaseOffFields, t: np.ndarray, up: np.ndarray, vp: np.ndarray,
+                     eps: np.ndarray, r: np.ndarray, k: np.ndarray):
+    """Vertex of the parabola of ε through the samples k − 1, k, k + 1 (M,) of the curves
+    r (M,) (steps h1, h2, equal or not), held within half a step of sample k.
+
+    Returns its place (u, v) on the iso-line (v NaN where it misses) and ε there (inf
+    where it misses).
+    """
+    em, ec, ep = eps[r, k - 1], eps[r, k], eps[r, k + 1]
+    h1 = up[r, k] - up[r, k - 1]
+    h2 = up[r, k + 1] - up[r, k]
+    a1, a2 = em - ec, ep - ec
+    den = 2 * (h2 * a1 + h1 * a2)
+    okp = np.isfinite(den) & (den > 0)
+    d = np.where(okp, (h2**2 * a1 - h1**2 * a2) / np.where(okp, den, 1.0), 0.0)
+    ur = up[r, k] + np.clip(d, -0.5 * h1, 0.5 * h2)
+    vr = f.solve_v(ur, t[r], v_start=vp[r, k])
+    good = np.isfinite(vr)
+    return ur, vr, np.where(good, f.eps.ev(ur, np.where(good, vr, f.v[0])), np.inf)
 
 
 def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarray,
-                  have: np.ndarray):
+                  have: np.ndarray) -> _ShortCurves:
     """Seeds of the curves that lie wholly between two coarse samples.
 
     For each curve without an inside coarse sample whose iso-line crosses the grid, the
@@ -282,17 +363,16 @@ def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarra
 
     Returns
     -------
-    rows : int array (M,)
-        The curves found.
-    u, v : arrays (M,)
-        A place inside each (the maximum of the measure).
-    lo, hi : arrays (M,)
-        The neighbouring coarse places (outside) bracketing each curve's ends.
+    _ShortCurves
+        ``rows`` (M,): the curves found; ``u``, ``v`` (M,): a place inside each (the
+        maximum of the measure); ``lo``, ``hi`` (M,): the neighbouring coarse places
+        (outside) bracketing each curve's ends.
     """
     empty = np.zeros(0)
+    none = _ShortCurves(np.zeros(0, dtype=int), empty, empty, empty, empty)
     cand = np.flatnonzero(~have & np.any(np.isfinite(vc), axis=1))
     if cand.size == 0:
-        return np.zeros(0, dtype=int), empty, empty, empty, empty
+        return none
     nc = uc.size
     vcc = vc[cand]
     meas = f.measure(np.broadcast_to(uc, vcc.shape), vcc)
@@ -300,7 +380,7 @@ def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarra
     near = np.max(meas, axis=1) > -0.5  # −1: undefined (no iso-line point in a good cell)
     cand, best, vcc = cand[near], best[near], vcc[near]
     if cand.size == 0:
-        return np.zeros(0, dtype=int), empty, empty, empty, empty
+        return none
     lo = uc[np.maximum(best - 1, 0)]
     hi = uc[np.minimum(best + 1, nc - 1)]
     tt = t[cand]
@@ -309,14 +389,14 @@ def _short_curves(f: EaseOffFields, t: np.ndarray, uc: np.ndarray, vc: np.ndarra
 
     def minus_measure(rows, x):  # (M, n) places → −measure (the grid search minimises)
         n = x.shape[1]
-        vx = f._newton_v(x.ravel(), np.repeat(tt[rows], n), np.repeat(v_best[rows], n))
+        vx = f.newton_v(x.ravel(), np.repeat(tt[rows], n), np.repeat(v_best[rows], n))
         return -f.measure(x.ravel(), vx).reshape(-1, n)
 
     u_star, _ = _grid_minimum(minus_measure, lo, hi, uc[best], _SHORT_ITER)
-    v_star = f._newton_v(u_star, tt, v_best.copy())
+    v_star = f.newton_v(u_star, tt, v_best.copy())
     m_star = f.measure(u_star, v_star)
     ok = m_star >= 0
-    return cand[ok], u_star[ok], v_star[ok], lo[ok], hi[ok]
+    return _ShortCurves(cand[ok], u_star[ok], v_star[ok], lo[ok], hi[ok])
 
 
 def _curve_fields(f: EaseOffFields, cc: ContactCurves) -> ContactCurves:
@@ -334,7 +414,8 @@ def _curves_seed(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
                  flank_fields: bool = True, near_misses: bool = False) -> ContactCurves:
     """Iso-lines Q = t (flat batch) and the minimum of ε along them (seed §2.3.2.2)."""
     if near_misses:
-        raise InputError("near_misses: needs the pinion's gap, i.e. method 'second_order'")
+        raise InputError("near_misses: must be False with method 'seed' (it needs the "
+                         "pinion's gap), got True")
     cc = _seed_places(f, t, frac)
     return _curve_fields(f, cc) if flank_fields else cc
 
@@ -352,47 +433,16 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     UTE_seed where H is an end of the curve (edge contact). ``flank_fields=False`` skips
     the normal arm, flank point and normal (None), which the UTE does not need.
     ``near_misses=True`` also returns the curves of iso-lines Q = q that miss the contact
-    region but whose shifted iso-line meets it (see :func:`_probe_shift`).
+    region but whose shifted iso-line meets it (see :func:`_near_miss_curves`).
     """
-    n_point = frac.size
     first = _seed_places(f, t, frac)
-    have = np.isfinite(first.ute)
-    # where the iso-line Q = q misses the contact region (a pair just leaving or entering
-    # at a corner), the real pinion may still touch it through its gap: the iso-line
-    # Q = q + t_b nearest in that sense (min of UTE_seed + ½ K t_b², by probing) is the
-    # first-order curve from which the correction starts
     base = np.zeros(t.size)
-    lost = np.flatnonzero(~have) if near_misses else np.zeros(0, dtype=int)
-    if lost.size:
-        rows, t_b = _probe_shift(f, t[lost])
-        if rows.size:
-            rows = lost[rows]
-            base[rows] = t_b
-            probed = _seed_places(f, t[rows] + t_b, frac)
-            first = ContactCurves(*(None if a is None else _put_rows(a, rows, b)
-                                    for a, b in zip(first, probed, strict=True)))
-            have = np.isfinite(first.ute)
+    if near_misses:
+        first, base = _near_miss_curves(f, t, frac, first)
+    have = np.isfinite(first.ute)
     cu = np.where(have, first.contact_u, f.u[0])
     cv = np.where(have, first.contact_v, f.v[0])
-    qu, qv = f.q.ev(cu, cv, dx=1), f.q.ev(cu, cv, dy=1)
-    eu, ev = f.eps.ev(cu, cv, dx=1), f.eps.ev(cu, cv, dy=1)
-    g = (eu * qu + ev * qv) / (qu * qu + qv * qv)
-    edge = np.flatnonzero(have & ((first.index == 0) | (first.index == n_point - 1)))
-    if edge.size:
-        # H at an end of its curve: UTE_seed = ε at the end, which slides along the
-        # region's boundary as q changes: g = (∇ε·b)/(∇Q·b), b the boundary's direction
-        at_lo = first.index[edge] == 0
-        g_end, smooth = _end_slope(f, np.where(at_lo, first.u[edge, 0], first.u[edge, -1]),
-                                   np.where(at_lo, first.v[edge, 0], first.v[edge, -1]))
-        g[edge[smooth]] = g_end[smooth]
-        rest = edge[~smooth]
-        if rest.size:
-            # at a corner of the region or a masked cell's edge: by finite differences
-            h = 1e-5
-            te = (t + base)[rest]
-            pair = _seed_places(f, np.r_[te + h, te - h], frac).ute
-            fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
-            g[rest] = np.where(np.isfinite(fd), fd, g[rest])
+    g = _seed_slope(f, first, have, t + base, frac, cu, cv)
     k = f.gap_at(cu, cv)
     shift = np.where(have & (k > 0), -g / np.where(k > 0, k, 1.0), base)
     # (only where there is a curve to correct: elsewhere the shift is the base's and the
@@ -400,9 +450,7 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     redo = np.flatnonzero(have)
     second = first
     if redo.size:
-        sub = _seed_places(f, (t + shift)[redo], frac)
-        second = ContactCurves(*(None if a is None else _put_rows(a, redo, b)
-                                 for a, b in zip(first, sub, strict=True)))
+        second = _with_rows(first, redo, _seed_places(f, (t + shift)[redo], frac))
     ok2 = np.isfinite(second.ute)
     # keep the first-order curve where the shifted one leaves the contact region
     use = ok2 | ~have
@@ -418,6 +466,59 @@ def _curves_second_order(f: EaseOffFields, t: np.ndarray, frac: np.ndarray, *,
     gap = np.where(fin, 0.5 * f.gap_at(us, vs) * shift[:, None] ** 2, np.nan)
     ute = cc.ute + 0.5 * _gap_at_contact(f, cc) * shift ** 2
     return cc._replace(target=t, shift=shift, gap=gap, ute=ute)
+
+
+def _near_miss_curves(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
+                      first: ContactCurves):
+    """The first-order curves with those of the near misses, and the base shifts (nb,).
+
+    Where the iso-line Q = q misses the contact region (a pair just leaving or entering at
+    a corner), the real pinion may still touch it through its gap: the iso-line
+    Q = q + t_b nearest in that sense (min of UTE_seed + ½ K t_b², by probing,
+    :func:`_probe_shift`) is the first-order curve from which the correction starts.
+    """
+    base = np.zeros(t.size)
+    lost = np.flatnonzero(~np.isfinite(first.ute))
+    if lost.size:
+        rows, t_b = _probe_shift(f, t[lost])
+        if rows.size:
+            rows = lost[rows]
+            base[rows] = t_b
+            first = _with_rows(first, rows, _seed_places(f, t[rows] + t_b, frac))
+    return first, base
+
+
+def _seed_slope(f: EaseOffFields, first: ContactCurves, have: np.ndarray, t: np.ndarray,
+                frac: np.ndarray, cu: np.ndarray, cv: np.ndarray) -> np.ndarray:
+    """g = dUTE_seed/dq [1] of the first-order curves ``first`` of the iso-lines Q = t at
+    their contact points H (cu, cv) (nb,).
+
+    The ease-off derivative across the iso-line at H, (∇ε·∇Q)/|∇Q|² (envelope theorem);
+    where H is an end of its curve, the slope along the region's boundary
+    (:func:`_end_slope`), or at a corner of the region or a masked cell's edge the central
+    difference of UTE_seed (step 1e-5 rad).
+    """
+    n_point = frac.size
+    qu, qv = f.q.ev(cu, cv, dx=1), f.q.ev(cu, cv, dy=1)
+    eu, ev = f.eps.ev(cu, cv, dx=1), f.eps.ev(cu, cv, dy=1)
+    g = (eu * qu + ev * qv) / (qu * qu + qv * qv)
+    edge = np.flatnonzero(have & ((first.index == 0) | (first.index == n_point - 1)))
+    if edge.size:
+        # H at an end of its curve: UTE_seed = ε at the end, which slides along the
+        # region's boundary as q changes: g = (∇ε·b)/(∇Q·b), b the boundary's direction
+        at_lo = first.index[edge] == 0
+        g_end, smooth = _end_slope(f, np.where(at_lo, first.u[edge, 0], first.u[edge, -1]),
+                                   np.where(at_lo, first.v[edge, 0], first.v[edge, -1]))
+        g[edge[smooth]] = g_end[smooth]
+        rest = edge[~smooth]
+        if rest.size:
+            # at a corner of the region or a masked cell's edge: by finite differences
+            h = 1e-5
+            te = t[rest]
+            pair = _seed_places(f, np.r_[te + h, te - h], frac).ute
+            fd = (pair[: te.size] - pair[te.size:]) / (2 * h)
+            g[rest] = np.where(np.isfinite(fd), fd, g[rest])
+    return g
 
 
 def _end_slope(f: EaseOffFields, u: np.ndarray, v: np.ndarray):
@@ -554,10 +655,17 @@ def _gap_at_contact(f: EaseOffFields, cc: ContactCurves) -> np.ndarray:
     return f.gap_at(hu, hv)
 
 
-def _put_rows(a: np.ndarray, rows: np.ndarray, b: np.ndarray) -> np.ndarray:
-    out = np.array(a, copy=True)
-    out[rows] = b
-    return out
+def _with_rows(cc: ContactCurves, rows: np.ndarray, sub: ContactCurves) -> ContactCurves:
+    """A copy of the curves ``cc`` with the curves ``sub`` in the places ``rows``."""
+
+    def put(a, b):
+        if a is None:
+            return None
+        out = np.array(a, copy=True)
+        out[rows] = b
+        return out
+
+    return ContactCurves(*(put(a, b) for a, b in zip(cc, sub, strict=True)))
 
 
 #: spacings of the samples along a contact curve: name → fractions (n,) of the u-span
@@ -626,8 +734,7 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
     plane and then onto the ease-off; its lowest point H gives the UTE.
     """
     tgt, f = _checked(eo, target, method, n_point, fields)
-    if spacing not in CURVE_SPACINGS:
-        raise InputError(f"spacing: must be one of {sorted(CURVE_SPACINGS)}, got {spacing!r}")
+    one_of("spacing", spacing, CURVE_SPACINGS)
     batch = tgt.shape
     cc = UTE_METHODS[method](f, tgt.reshape(-1), CURVE_SPACINGS[spacing](int(n_point)),
                              near_misses=near_misses)
@@ -636,13 +743,9 @@ def contact_curves(eo: EaseOff, target, *, method: str = "second_order", n_point
 
 def _checked(eo: EaseOff, target, method: str, n_point: int, fields: EaseOffFields | None):
     """Validated roll targets (float array) and the splines, for :func:`contact_curves`."""
-    if method not in UTE_METHODS:
-        raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
-    if int(n_point) != n_point or n_point < 3:
-        raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
-    tgt = np.asarray(target, dtype=float)
-    if not np.all(np.isfinite(tgt)):
-        raise InputError("target: roll values must be finite [rad]")
+    one_of("method", method, UTE_METHODS)
+    integer("n_point", n_point, low=3)
+    tgt = real_array("target", target, unit="rad")
     return tgt, (fields if fields is not None else EaseOffFields(eo))
 
 
@@ -709,60 +812,105 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
     InputError
         For ``samples`` < 4 (and as :func:`contact_curves`).
     """
-    if int(samples) != samples or samples < 4:
-        raise InputError(f"samples: must be an integer >= 4, got {samples!r}")
-    f = fields if fields is not None else EaseOffFields(eo)
+    samples = integer("samples", samples, low=4)
+    h = _PairDifference(eo, fields if fields is not None else EaseOffFields(eo), method,
+                        n_point)
     p = eo.pitch
-    big = 1.0
-
-    def h(x, k):
-        """UTE₀(x) − UTE_k(x): ≤ 0 while pair 0 is the lower; ±big where one is out of mesh."""
-        x = np.asarray(x, dtype=float)
-        k = np.asarray(k, dtype=float)
-        u = pair_transmission_error(eo, np.stack([x, x - k * p]), method=method, fields=f,
-                                    n_point=n_point)
-        out = u[0] - u[1]
-        out = np.where(np.isnan(u[1]), -big, out)
-        return np.where(np.isnan(u[0]), big, out)
-
     # start where the ease-off is lowest: the reference pair carries the motion there
     i0 = np.nanargmin(np.where(eo.valid, eo.ease_off_angle, np.nan))
     r_star = float(eo.roll_angle.ravel()[i0])
-    # one scan serves both directions and both neighbours: UTE₀ at r* + m·p/samples,
-    # m = −2·samples … 2·samples; pair k at r is UTE₀(r − k·p), a shift by samples
+    u_all = _roll_scan(h, r_star, samples)
+    x, hx = _scan_brackets(u_all, r_star, p, samples)
+    if np.any(hx[:, 0] > 0):
+        # the lowest node's pair does not carry the motion there (a misalignment can move
+        # the contact off it): start again from the nearest scanned roll where it does
+        m = _nearest_carrying(u_all, samples)
+        if m is None:
+            log.warning("transitions: the reference pair does not carry the motion near "
+                        "the lowest ease-off point")
+            return math.nan, math.nan
+        r_star += float(m) * p / samples
+        u_all = _roll_scan(h, r_star, samples)
+        x, hx = _scan_brackets(u_all, r_star, p, samples)
+        if np.any(hx[:, 0] > 0):
+            log.warning("transitions: the reference pair does not carry the motion at the "
+                        "lowest ease-off point")
+            return math.nan, math.nan
+    return _solve_transitions(h, x, hx)
+
+
+#: value of the UTE difference of two pairs where one is out of mesh (:class:`_PairDifference`)
+_OUT_OF_MESH = 1.0
+_TRANSITION_ITER = 80  # false-position steps on a transition
+
+
+@dataclass(frozen=True)
+class _PairDifference:
+    """UTE₀(x) − UTE_k(x) of the reference pair and its neighbour k at rolls x [rad]: ≤ 0
+    while pair 0 is the lower; ±:data:`_OUT_OF_MESH` where one is out of mesh (+ where
+    pair 0 is)."""
+
+    eo: EaseOff
+    fields: EaseOffFields
+    method: str
+    n_point: int
+
+    def ute(self, roll) -> np.ndarray:
+        """UTE [rad] of the reference pair at rolls ``roll`` (NaN: out of mesh)."""
+        return pair_transmission_error(self.eo, roll, method=self.method, fields=self.fields,
+                                       n_point=self.n_point)
+
+    def __call__(self, x, k) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        k = np.asarray(k, dtype=float)
+        u = self.ute(np.stack([x, x - k * self.eo.pitch]))
+        out = u[0] - u[1]
+        out = np.where(np.isnan(u[1]), -_OUT_OF_MESH, out)
+        return np.where(np.isnan(u[0]), _OUT_OF_MESH, out)
+
+
+def _roll_scan(h: _PairDifference, r_star: float, samples: int) -> np.ndarray:
+    """UTE₀ [rad] at r* + m·p/samples, m = −2·samples … 2·samples: one scan serves both
+    directions and both neighbours (pair k at r is UTE₀(r − k·p), a shift by samples)."""
     m_all = np.arange(-2 * samples, 2 * samples + 1)
-    u_all = pair_transmission_error(eo, r_star + m_all * p / samples, method=method,
-                                    fields=f, n_point=n_point)
+    return h.ute(r_star + m_all * h.eo.pitch / samples)
+
+
+def _scan_brackets(u_all: np.ndarray, r_star: float, p: float, samples: int):
+    """Rolls x (2, 2·samples + 1) [rad] from r* towards M1 (row 0) and M2 (row 1), one
+    cycle each way, and the UTE difference of pair 0 and its neighbour there (as
+    :class:`_PairDifference`), from the scan :func:`_roll_scan`."""
 
     def h_scan(k):
         j = np.arange(2 * samples + 1)
         own = u_all[2 * samples + k * j]
         other = u_all[2 * samples + k * j - k * samples]
-        out = np.where(np.isnan(other), -big, own - other)
-        return r_star + k * j * p / samples, np.where(np.isnan(own), big, out)
+        out = np.where(np.isnan(other), -_OUT_OF_MESH, own - other)
+        return r_star + k * j * p / samples, np.where(np.isnan(own), _OUT_OF_MESH, out)
 
+    x, hx = (np.stack(a) for a in zip(*(h_scan(k) for k in (-1, 1)), strict=True))
+    return x, hx
+
+
+def _nearest_carrying(u_all: np.ndarray, samples: int):
+    """The scan offset m (|m| ≤ samples) nearest to 0 at which pair 0 is below both
+    neighbours (a neighbour out of mesh counts as higher), or None."""
+    m = np.arange(-samples, samples + 1)
+    own = u_all[2 * samples + m]
+    carried = (np.isfinite(own) & ~(own > u_all[2 * samples + m + samples])
+               & ~(own > u_all[2 * samples + m - samples]))
+    if not carried.any():
+        return None
+    return m[carried][np.argmin(np.abs(m[carried]))]
+
+
+def _solve_transitions(h: _PairDifference, x: np.ndarray, hx: np.ndarray):
+    """(M1, M2) [rad]: the first sample of each scan row where the neighbour is lower
+    brackets the transition, solved by false position (Illinois) to 1e-12 rad where the
+    difference is smooth, by bisection to 1e-8 rad where a pair leaves the contact region
+    (NaN where the row has no such sample)."""
+    big = _OUT_OF_MESH
     ks = np.array([-1.0, 1.0])
-    x, hx = (np.stack(a) for a in zip(*(h_scan(int(k)) for k in ks), strict=True))
-    if np.any(hx[:, 0] > 0):
-        # the lowest node's pair does not carry the motion there (a misalignment can move
-        # the contact off it): start again from the nearest scanned roll where pair 0 is
-        # below both neighbours (a neighbour out of mesh counts as higher)
-        m = np.arange(-samples, samples + 1)
-        own = u_all[2 * samples + m]
-        carried = (np.isfinite(own) & ~(own > u_all[2 * samples + m + samples])
-                   & ~(own > u_all[2 * samples + m - samples]))
-        if not carried.any():
-            log.warning("transitions: the reference pair does not carry the motion near "
-                        "the lowest ease-off point")
-            return math.nan, math.nan
-        r_star += float(m[carried][np.argmin(np.abs(m[carried]))]) * p / samples
-        u_all = pair_transmission_error(eo, r_star + m_all * p / samples, method=method,
-                                        fields=f, n_point=n_point)
-        x, hx = (np.stack(a) for a in zip(*(h_scan(int(k)) for k in ks), strict=True))
-        if np.any(hx[:, 0] > 0):
-            log.warning("transitions: the reference pair does not carry the motion at the "
-                        "lowest ease-off point")
-            return math.nan, math.nan
     found = np.any(hx > 0, axis=1)
     j = np.where(found, np.argmax(hx > 0, axis=1), 1)
     rows = np.arange(2)
@@ -770,7 +918,7 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
     b, fb = x[rows, j], hx[rows, j]
     side = np.zeros(2)
     done = ~found
-    for _ in range(80):
+    for _ in range(_TRANSITION_ITER):
         smooth = (np.abs(fa) < big) & (np.abs(fb) < big)
         m = np.where(smooth & (fa != fb), (b * fa - a * fb) / np.where(fa != fb, fa - fb, 1.0),
                      0.5 * (a + b))
@@ -792,5 +940,3 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
             break
     res = np.where(found, a, np.nan)
     return float(res[0]), float(res[1])
-
-

@@ -2,16 +2,19 @@
 
 :func:`unloaded_tca` runs the ease-off (:func:`contact.utca.easeoff.ease_off`), the
 transitions and the contact curves of every tooth pair over one mesh cycle
-(:mod:`contact.utca.contact_curves`) and returns the two stage datasets;
-:func:`easeoff_dataset` and :func:`utca_dataset` assemble them from computed pieces.
+(:func:`unloaded_cycle`, with :mod:`contact.utca.contact_curves`) and returns the two
+stage datasets; :func:`easeoff_dataset` and :func:`utca_dataset` assemble them from the
+computed pieces.
 Every variable carries ``units`` and ``long_name``; the attributes record the senses and
 phases of the kinematics, the misalignment and the case as TOML text.
 
 Public functions
 ----------------
 unloaded_tca       the whole UTCA of a case: (/easeoff, /utca) Datasets
+UnloadedCycle      contact curves and UTE of the tooth pairs over one mesh cycle
+unloaded_cycle     compute them from an EaseOff
 easeoff_dataset    the ``/easeoff`` Dataset of an EaseOff
-utca_dataset       the ``/utca`` Dataset from computed contact curves
+utca_dataset       the ``/utca`` Dataset of an UnloadedCycle
 
 References
 ----------
@@ -23,6 +26,7 @@ from __future__ import annotations
 import json
 import logging
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -42,14 +46,57 @@ from contact.utca.fields import EaseOffFields
 from geometry import __version__
 from geometry.conventions import data_var as _var
 from geometry.errors import InputError
+from geometry.validation import integer, one_of, positive
 
 if TYPE_CHECKING:
     from geometry.assembly import Misalignment
     from geometry.case import Case
 
-__all__ = ["easeoff_dataset", "unloaded_tca", "utca_dataset"]
+__all__ = [
+    "UnloadedCycle",
+    "easeoff_dataset",
+    "unloaded_cycle",
+    "unloaded_tca",
+    "utca_dataset",
+]
 
 log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class UnloadedCycle:
+    """The unloaded contact of the tooth pairs over one mesh cycle (seed §2.3.2.2, Fig. 2.9).
+
+    Parameters
+    ----------
+    roll : ndarray (n_roll,) — [rad]
+        Roll positions (Q units, driving sense), uniform over one cycle from M1.
+    pairs : ndarray (n_pair,) of int
+        Tooth-pair offsets (pair k's contact curve at roll r is Q = r − k·pitch).
+    curves : ContactCurves
+        The pairs' contact curves, batch shape (n_roll, n_pair).
+    envelope : ndarray (n_roll,) — [rad]
+        Lower envelope of the pairs' UTE: the actual UTE (gear lag).
+    transitions : (float, float) — [rad]
+        Rolls M1, M2 where the motion passes from pair −1 to 0 and from 0 to +1 (NaN if
+        none).
+    transition_te : (float, float) — [rad]
+        UTE at M1 and M2.
+    te_range : (float, float) — [rad]
+        Lowest and highest actual UTE over the cycle (the lowest refined by a parabola, the
+        highest including the transitions, where the envelope peaks).
+    method : str
+        The UTE method of the curves (:data:`contact.utca.contact_curves.UTE_METHODS`).
+    """
+
+    roll: np.ndarray
+    pairs: np.ndarray
+    curves: ContactCurves
+    envelope: np.ndarray
+    transitions: tuple[float, float]
+    transition_te: tuple[float, float]
+    te_range: tuple[float, float]
+    method: str = "second_order"
 
 
 def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
@@ -90,7 +137,7 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
     Returns
     -------
     easeoff : xarray.Dataset
-        See :func:`contact.utca.easeoff.easeoff_dataset`.
+        See :func:`easeoff_dataset`.
     utca : xarray.Dataset
         Dims ``roll``, ``pair``, ``point``, ``path``, ``transition``, ``xyz``; see
         :func:`utca_dataset`.
@@ -107,37 +154,74 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
     -----
     Seed §2.3.2.2: UTE of a pair = minimum of the ease-off along its contact curve; actual
     UTE = lower envelope over the pairs; the pattern of the reference tooth is bounded by
-    the contact curves at M1 and M2 and by LPP and RPP. When adjacent pairs never cross
-    (contact ratio below one) the cycle is centred on the reference pair's lowest UTE and
-    M1, M2 are NaN.
+    the contact curves at M1 and M2 and by LPP and RPP (:func:`unloaded_cycle`,
+    :func:`utca_dataset`).
     """
-    if int(n_roll) != n_roll or n_roll < 4:
-        raise InputError(f"n_roll: must be an integer >= 4, got {n_roll!r}")
-    if not (math.isfinite(separation) and separation > 0):
-        raise InputError(f"separation: must be a finite length > 0 [mm], got {separation!r}")
-    pairs = tuple(int(k) for k in pairs)
-    if not pairs or len(set(pairs)) != len(pairs) or 0 not in pairs:
-        raise InputError(f"pairs: must be distinct integers including 0, got {pairs!r}")
-    if method not in UTE_METHODS:
-        raise InputError(f"method: must be one of {sorted(UTE_METHODS)}, got {method!r}")
-    if int(n_point) != n_point or n_point < 3:
-        raise InputError(f"n_point: must be an integer >= 3, got {n_point!r}")
+    _check_cycle_options(n_roll, pairs, method, n_point)
+    separation = positive("separation", separation, "mm")
     eo = easeoff if easeoff is not None else ease_off(case, flank=flank,
                                                       misalignment=misalignment, grid=grid)
-    f = EaseOffFields(eo)
+    cycle = unloaded_cycle(eo, n_roll=n_roll, pairs=pairs, method=method, n_point=n_point)
+    ds = utca_dataset(eo, cycle, case=case, separation=separation, misalignment=misalignment)
+    return easeoff_dataset(eo, case, misalignment=misalignment), ds
+
+
+def _check_cycle_options(n_roll, pairs, method, n_point) -> tuple[int, ...]:
+    """The options of :func:`unloaded_cycle` checked; the pairs as a tuple of int."""
+    integer("n_roll", n_roll, low=4)
+    pairs = tuple(integer("pairs", k) for k in pairs)
+    if not pairs or len(set(pairs)) != len(pairs) or 0 not in pairs:
+        raise InputError(f"pairs: must be distinct integers including 0, got {pairs!r}")
+    one_of("method", method, UTE_METHODS)
+    integer("n_point", n_point, low=3)
+    return pairs
+
+
+def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
+                   method: str = "second_order", n_point: int = 41,
+                   fields: EaseOffFields | None = None) -> UnloadedCycle:
+    """The contact curves and UTE of the tooth pairs over one mesh cycle (seed §2.3.2.2).
+
+    Parameters
+    ----------
+    eo : contact.utca.easeoff.EaseOff
+    n_roll : int
+        Roll positions over one mesh cycle (≥ 4), uniform from the transition M1 (the end
+        point M2 = M1 + pitch excluded).
+    pairs : sequence of int
+        Distinct tooth-pair offsets including the reference pair 0.
+    method : str
+        ``"second_order"`` (default) or ``"seed"``, see :func:`contact_curves`.
+    n_point : int
+        Samples along each contact curve (≥ 3).
+    fields : EaseOffFields, optional
+        Pre-built splines of ``eo``.
+
+    Returns
+    -------
+    UnloadedCycle
+
+    Raises
+    ------
+    InputError
+        For out-of-range arguments (message names the field and range), or when no pair
+        is in contact at some roll position.
+    ModelUnavailableError
+        For a roll-angle surface that cannot be contoured.
+
+    Notes
+    -----
+    Seed §2.3.2.2, Fig. 2.9: the actual UTE is the lower envelope of the pairs' UTE, the
+    transitions M1, M2 (:func:`transitions`) are where it passes from one pair to the next.
+    When adjacent pairs never cross (contact ratio below one) the cycle is centred on the
+    reference pair's lowest UTE and M1, M2 are NaN.
+    """
+    pairs = _check_cycle_options(n_roll, pairs, method, n_point)
+    f = fields if fields is not None else EaseOffFields(eo)
     p = eo.pitch
     kw = dict(method=method, fields=f, n_point=n_point)
     m1, m2 = transitions(eo, **kw)
-    if math.isfinite(m1):
-        start = m1
-    elif math.isfinite(m2):
-        start = m2 - p
-    else:
-        scan = np.linspace(0.0, float(np.nanmax(eo.roll_angle)), 65)
-        u0 = pair_transmission_error(eo, scan, **kw)
-        start = float(scan[int(np.nanargmin(u0))]) - 0.5 * p
-        log.warning("unloaded_tca: no transition between adjacent pairs found; the cycle is "
-                    "centred on the reference pair's lowest UTE")
+    start = _cycle_start(eo, m1, m2, kw)
     roll = start + p * np.arange(int(n_roll)) / int(n_roll)
     pk = np.array(pairs)
     cc = contact_curves(eo, roll[:, None] - pk[None, :] * p, **kw)
@@ -148,16 +232,7 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
                          "(contact loss; check the misalignment)")
     # extremes of the actual UTE over the cycle: the refined minimum of the reference pair
     # and the values at the transitions (where the envelope peaks)
-    k0 = pairs.index(0)
-    u0 = cc.ute[:, k0]
-    te_min = float(envelope.min())
-    i = int(np.nanargmin(u0))
-    if 0 < i < len(roll) - 1 and np.all(np.isfinite(u0[i - 1:i + 2])):
-        # vertex of the parabola through the lowest sample and its neighbours
-        em, ec, ep = u0[i - 1], u0[i], u0[i + 1]
-        den = em - 2.0 * ec + ep
-        if den > 0:
-            te_min = min(te_min, float(ec - 0.125 * (em - ep) ** 2 / den))
+    te_min = _lowest_te(cc.ute[:, pairs.index(0)], envelope)
     te_tr = np.array([np.nan, np.nan])
     at = np.flatnonzero(np.isfinite([m1, m2]))
     if at.size:
@@ -165,37 +240,55 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
         # then differ at round-off level from separate evaluations: ~1e-16 rad of UTE)
         te_tr[at] = pair_transmission_error(eo, np.array([m1, m2])[at], **kw)
     te_max = float(np.nanmax(np.r_[envelope, te_tr]))
-    ds = utca_dataset(eo, cc, roll, pk, envelope, separation=separation,
-                      transitions=(m1, m2), transition_te=tuple(te_tr),
-                      te_range=(te_min, te_max), case=case, misalignment=misalignment,
-                      method=method)
-    return easeoff_dataset(eo, case, misalignment=misalignment), ds
+    return UnloadedCycle(roll, pk, cc, envelope, (m1, m2), tuple(te_tr), (te_min, te_max),
+                         method)
 
 
-def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
-                 separation: float, transitions, transition_te, te_range, case: Case,
-                 misalignment: Misalignment | None = None,
-                 method: str = "second_order") -> xr.Dataset:
-    """Assemble the ``/utca`` Dataset from contact curves over (roll, pair).
+def _cycle_start(eo: EaseOff, m1: float, m2: float, kw: dict) -> float:
+    """First roll [rad] of the cycle: M1, else M2 − pitch, else half a pitch before the
+    reference pair's lowest UTE on a scan of Q (no transition found)."""
+    p = eo.pitch
+    if math.isfinite(m1):
+        return m1
+    if math.isfinite(m2):
+        return m2 - p
+    scan = np.linspace(0.0, float(np.nanmax(eo.roll_angle)), 65)
+    u0 = pair_transmission_error(eo, scan, **kw)
+    start = float(scan[int(np.nanargmin(u0))]) - 0.5 * p
+    log.warning("unloaded_tca: no transition between adjacent pairs found; the cycle is "
+                "centred on the reference pair's lowest UTE")
+    return start
+
+
+def _lowest_te(u0: np.ndarray, envelope: np.ndarray) -> float:
+    """Lowest actual UTE [rad]: the envelope's least sample, or the vertex of the parabola
+    through the reference pair's lowest sample u0 (n_roll,) and its neighbours if lower."""
+    te_min = float(envelope.min())
+    i = int(np.nanargmin(u0))
+    if 0 < i < len(u0) - 1 and np.all(np.isfinite(u0[i - 1:i + 2])):
+        em, ec, ep = u0[i - 1], u0[i], u0[i + 1]
+        den = em - 2.0 * ec + ep
+        if den > 0:
+            te_min = min(te_min, float(ec - 0.125 * (em - ep) ** 2 / den))
+    return te_min
+
+
+def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
+                 separation: float = DEFAULT_SEPARATION,
+                 misalignment: Misalignment | None = None) -> xr.Dataset:
+    """Assemble the ``/utca`` Dataset of a mesh cycle over (roll, pair).
 
     Parameters
     ----------
     eo : contact.utca.easeoff.EaseOff
-    cc : ContactCurves
-        Batch shape (n_roll, n_pair).
-    roll : array (n_roll,) — [rad]
-    pairs : array (n_pair,) of int
-    envelope : array (n_roll,) — [rad]
-        Lower envelope of the pairs' UTE.
-    separation : float — [mm]
-    transitions : (float, float) — [rad]
-        M1, M2 (NaN if none).
-    transition_te : (float, float) — [rad]
-        UTE at M1 and M2.
-    te_range : (float, float) — [rad]
-        Lowest and highest actual UTE over the cycle (refined).
+    cycle : UnloadedCycle
+        Contact curves and UTE over the cycle (:func:`unloaded_cycle`).
     case : geometry.case.Case
-    misalignment : Misalignment, optional
+        The case (recorded in the attributes).
+    separation : float — [mm]
+        Separation bounding the unloaded contact line, > 0 (default 0.0063).
+    misalignment : geometry.assembly.Misalignment, optional
+        The misalignment used (recorded in the attributes); defaults to the case's.
 
     Returns
     -------
@@ -209,12 +302,50 @@ def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
         (``path_u``, ``path_v``, ``path_axial_position``, ``path_radial_position``),
         ``transition_roll``/``transition_transmission_error`` (M1, M2) and
         ``peak_to_peak_transmission_error`` [urad].
+
+    Raises
+    ------
+    InputError
+        For a separation that is not a finite length > 0.
+
+    Notes
+    -----
+    Seed §2.3.2.2, Fig. 2.10: along each contact curve the stretch where the ease-off
+    exceeds the pair's UTE by no more than ``separation`` is the unloaded contact line;
+    its ends trace LPP and RPP, its contact point H the CPP.
     """
+    separation = positive("separation", separation, "mm")
     mis = case.misalignment if misalignment is None else misalignment
-    n_roll, n_pair, n_point = cc.u.shape
+    cc, envelope = cycle.curves, cycle.envelope
     te = cc.ute
     active = np.isfinite(te) & (te <= envelope[:, None] + 1e-15)
-    # geometry of the places: projection-plane (z, ρ) by the grid's bilinear map
+    zr = _plane_places(eo)
+    gap = cc.ease_off_angle + cc.gap
+    sep_env = cc.normal_arm * (gap - envelope[:, None, None])
+    sep_own = cc.normal_arm * (gap - te[..., None])
+    pattern, length, path_u, path_v = _contact_lines(cc, sep_own, separation, active)
+    data = {
+        "unloaded_transmission_error": _var(
+            "roll", envelope * 1e6, "urad",
+            "unloaded transmission error: lower envelope of the pairs (gear lag)"),
+        "pair_transmission_error": _var(
+            ("roll", "pair"), te * 1e6, "urad",
+            "unloaded transmission error of each tooth pair (min of the ease-off on its "
+            "contact curve; NaN out of mesh)"),
+        "active": _var(("roll", "pair"), active.astype(np.int8), "1",
+                       "1 where the pair carries the motion (its UTE is the lower envelope)"),
+        **_curve_variables(cc, zr, sep_env, pattern),
+        **_path_variables(cc, length, path_u, path_v, zr),
+        **_cycle_variables(cycle, separation),
+    }
+    n_point = cc.u.shape[-1]
+    return xr.Dataset(data, coords=_utca_coords(cycle, n_point),
+                      attrs=_utca_attrs(eo, case, mis, cycle.method))
+
+
+def _plane_places(eo: EaseOff):
+    """(u, v) → the gear projection-plane (z, ρ) [mm] by the grid's bilinear map (NaN where
+    u or v is NaN)."""
     f_ax = RectBivariateSpline(eo.u, eo.v, eo.axial, kx=1, ky=1)
     f_rd = RectBivariateSpline(eo.u, eo.v, eo.radius, kx=1, ky=1)
 
@@ -223,10 +354,25 @@ def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
         us, vs = np.where(fin, u, eo.u[0]), np.where(fin, v, eo.v[0])
         return (np.where(fin, f_ax.ev(us, vs), np.nan), np.where(fin, f_rd.ev(us, vs), np.nan))
 
-    cz, cr = zr(cc.u, cc.v)
-    gap = cc.ease_off_angle + cc.gap
-    sep_env = cc.normal_arm * (gap - envelope[:, None, None])
-    sep_own = cc.normal_arm * (gap - te[..., None])
+    return zr
+
+
+def _contact_lines(cc: ContactCurves, sep_own: np.ndarray, separation: float,
+                   active: np.ndarray):
+    """The unloaded contact line of each (roll, pair) curve: the stretch around H where the
+    separation from the pair's own UTE ``sep_own`` (n_roll, n_pair, n_point) [mm] is within
+    ``separation``.
+
+    Returns
+    -------
+    pattern : int8 (n_roll, n_pair, n_point)
+        1 on the line where the pair is active.
+    length : (n_roll, n_pair) — [mm]
+        Its length on the gear flank.
+    path_u, path_v : (n_roll, n_pair, 3)
+        LPP, CPP (the contact point H), RPP: the line's ends and H.
+    """
+    n_roll, n_pair, n_point = cc.u.shape
     pattern = np.zeros((n_roll, n_pair, n_point), dtype=np.int8)
     length = np.zeros((n_roll, n_pair))
     path_u = np.full((n_roll, n_pair, 3), np.nan)
@@ -245,19 +391,14 @@ def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
                             _interp_at(cc.v[i, j], hi))
             if active[i, j]:
                 pattern[i, j] = np.isfinite(s) & (s <= 0)
-    pz, pr = zr(path_u, path_v)
-    p2p = te_range[1] - te_range[0]
+    return pattern, length, path_u, path_v
+
+
+def _curve_variables(cc: ContactCurves, zr, sep_env: np.ndarray, pattern: np.ndarray) -> dict:
+    """The ``/utca`` variables along the contact curves (roll, pair, point)."""
     dims3 = ("roll", "pair", "point")
-    data = {
-        "unloaded_transmission_error": _var(
-            "roll", envelope * 1e6, "urad",
-            "unloaded transmission error: lower envelope of the pairs (gear lag)"),
-        "pair_transmission_error": _var(
-            ("roll", "pair"), te * 1e6, "urad",
-            "unloaded transmission error of each tooth pair (min of the ease-off on its "
-            "contact curve; NaN out of mesh)"),
-        "active": _var(("roll", "pair"), active.astype(np.int8), "1",
-                       "1 where the pair carries the motion (its UTE is the lower envelope)"),
+    cz, cr = zr(cc.u, cc.v)
+    return {
         "curve_u": _var(dims3, cc.u, "1", "contact curve: gear lengthwise fraction"),
         "curve_v": _var(dims3, cc.v, "1", "contact curve: gear profile fraction"),
         "curve_axial_position": _var(dims3, cz, "mm",
@@ -279,34 +420,52 @@ def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
         "contact_pattern": _var(dims3, pattern, "1",
                                 "1 where the pair is active and its separation is within "
                                 "the threshold"),
+    }
+
+
+def _path_variables(cc: ContactCurves, length: np.ndarray, path_u: np.ndarray,
+                    path_v: np.ndarray, zr) -> dict:
+    """The ``/utca`` variables of the contact lines and point paths (roll, pair[, path])."""
+    pz, pr = zr(path_u, path_v)
+    dims = ("roll", "pair", "path")
+    return {
         "contact_line_length": _var(("roll", "pair"), length, "mm",
                                     "unloaded contact line length (on the gear flank) within "
                                     "the separation of the pair's own UTE"),
         "contact_u": _var(("roll", "pair"), cc.contact_u, "1", "contact point H: gear u"),
         "contact_v": _var(("roll", "pair"), cc.contact_v, "1", "contact point H: gear v"),
-        "path_u": _var(("roll", "pair", "path"), path_u, "1",
-                       "LPP, CPP, RPP: gear lengthwise fraction"),
-        "path_v": _var(("roll", "pair", "path"), path_v, "1",
-                       "LPP, CPP, RPP: gear profile fraction"),
-        "path_axial_position": _var(("roll", "pair", "path"), pz, "mm",
+        "path_u": _var(dims, path_u, "1", "LPP, CPP, RPP: gear lengthwise fraction"),
+        "path_v": _var(dims, path_v, "1", "LPP, CPP, RPP: gear profile fraction"),
+        "path_axial_position": _var(dims, pz, "mm",
                                     "LPP, CPP, RPP: gear projection-plane axial position"),
-        "path_radial_position": _var(("roll", "pair", "path"), pr, "mm",
+        "path_radial_position": _var(dims, pr, "mm",
                                      "LPP, CPP, RPP: gear projection-plane radius"),
-        "transition_roll": _var("transition", np.asarray(transitions, float), "rad",
+    }
+
+
+def _cycle_variables(cycle: UnloadedCycle, separation: float) -> dict:
+    """The ``/utca`` variables of the whole cycle: transitions, peak-to-peak, threshold."""
+    p2p = cycle.te_range[1] - cycle.te_range[0]
+    return {
+        "transition_roll": _var("transition", np.asarray(cycle.transitions, float), "rad",
                                 "roll at which the motion passes to the next pair (M1: pair "
                                 "-1 to 0, M2: pair 0 to +1)"),
         "transition_transmission_error": _var("transition",
-                                              np.asarray(transition_te, float) * 1e6, "urad",
-                                              "unloaded transmission error at M1, M2"),
+                                              np.asarray(cycle.transition_te, float) * 1e6,
+                                              "urad", "unloaded transmission error at M1, M2"),
         "peak_to_peak_transmission_error": _var((), p2p * 1e6, "urad",
                                                 "peak-to-peak unloaded transmission error"),
         "separation_threshold": _var((), separation * 1e3, "um",
                                      "separation bounding the unloaded contact line"),
     }
-    coords = {
-        "roll": ("roll", np.asarray(roll, float),
+
+
+def _utca_coords(cycle: UnloadedCycle, n_point: int) -> dict:
+    """The ``/utca`` coordinates."""
+    return {
+        "roll": ("roll", np.asarray(cycle.roll, float),
                  {"units": "rad", "long_name": "pinion roll (value of Q, driving sense)"}),
-        "pair": ("pair", np.asarray(pairs, dtype=np.int32),
+        "pair": ("pair", np.asarray(cycle.pairs, dtype=np.int32),
                  {"units": "1", "long_name": "tooth pair offset: mesh cycles after pair 0"}),
         "point": ("point", np.arange(n_point, dtype=np.int32),
                   {"units": "1", "long_name": "sample along the contact curve, toe to heel"}),
@@ -316,7 +475,11 @@ def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
                        {"long_name": "transition points of the lower envelope"}),
         "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
     }
-    attrs = {
+
+
+def _utca_attrs(eo: EaseOff, case: Case, mis: Misalignment, method: str) -> dict:
+    """The ``/utca`` attributes: senses and phases of the kinematics, inputs."""
+    return {
         "title": f"{case.name}: unloaded tooth contact analysis (ease-off method)",
         "method": method,
         "case": case.name,
@@ -332,14 +495,18 @@ def utca_dataset(eo: EaseOff, cc: ContactCurves, roll, pairs, envelope, *,
         "ratio": eo.ratio,
         "kinematics": "pinion rotation = roll_zero + drive_sense * roll; ideal gear rotation = "
                       "gear_phase - pinion rotation / ratio; transmission error = gear lag",
-        "misalignment": json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
-                                    "delta_G_mm": mis.delta_G,
-                                    "delta_Sigma_deg": math.degrees(mis.delta_Sigma)}),
+        "misalignment": _misalignment_json(mis),
         "toolkit_version": __version__,
         "source": "contact.utca.unloaded_tca (seed 2.3.2.2, 4.4)",
         "inputs": case.to_toml(),
     }
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _misalignment_json(mis: Misalignment) -> str:
+    """The misalignment as the JSON text of the datasets' ``misalignment`` attribute."""
+    return json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
+                       "delta_G_mm": mis.delta_G,
+                       "delta_Sigma_deg": math.degrees(mis.delta_Sigma)})
 
 
 def _stretch(sep, pos, k):
@@ -404,9 +571,20 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
         phases and inputs.
     """
     mis = case.misalignment if misalignment is None else misalignment
+    coords = {
+        "u": ("u", eo.u, {"units": "1", "long_name": "gear lengthwise fraction, toe 0 to heel 1"}),
+        "v": ("v", eo.v, {"units": "1", "long_name": "gear profile fraction, root 0 to tip 1"}),
+        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
+    }
+    return xr.Dataset(_easeoff_variables(eo), coords=coords,
+                      attrs=_easeoff_attrs(eo, case, mis))
+
+
+def _easeoff_variables(eo: EaseOff) -> dict:
+    """The ``/easeoff`` variables over the gear grid (u, v[, xyz])."""
     uv = ("u", "v")
     codes = np.array(sorted(EASEOFF_REASONS), dtype=np.int8)
-    data = {
+    return {
         "ease_off": _var(uv, eo.ease_off * 1e3, "um",
                          "ease-off: real gear to touching conjugate of the pinion, along the "
                          "gear normal (>= 0: gap)"),
@@ -441,12 +619,11 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
                             flag_values=codes,
                             flag_meanings=" ".join(EASEOFF_REASONS[int(c)] for c in codes)),
     }
-    coords = {
-        "u": ("u", eo.u, {"units": "1", "long_name": "gear lengthwise fraction, toe 0 to heel 1"}),
-        "v": ("v", eo.v, {"units": "1", "long_name": "gear profile fraction, root 0 to tip 1"}),
-        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
-    }
-    attrs = {
+
+
+def _easeoff_attrs(eo: EaseOff, case: Case, mis: Misalignment) -> dict:
+    """The ``/easeoff`` attributes: senses and phases of the kinematics, inputs."""
+    return {
         "title": f"{case.name}: ease-off and surface of roll angle",
         "case": case.name,
         "pinion_flank": eo.pinion_flank,
@@ -462,12 +639,9 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
         "mesh_period_units": "rad",
         "kinematics": "pinion rotation = roll_zero + drive_sense * Q; ideal gear rotation = "
                       "gear_phase - pinion rotation / ratio (geometry.assembly frames)",
-        "misalignment": json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
-                                    "delta_G_mm": mis.delta_G,
-                                    "delta_Sigma_deg": math.degrees(mis.delta_Sigma)}),
+        "misalignment": _misalignment_json(mis),
         "max_placement_error_mm": float(np.nanmax(eo.placement_error[eo.valid])),
         "toolkit_version": __version__,
         "source": "contact.utca.ease_off (seed Eq. 2.19-2.20, 4.1-4.2)",
         "inputs": case.to_toml(),
     }
-    return xr.Dataset(data, coords=coords, attrs=attrs)

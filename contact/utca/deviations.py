@@ -59,9 +59,10 @@ from typing import TYPE_CHECKING
 import numpy as np
 from scipy.interpolate import RBFInterpolator
 
-from contact.utca.easeoff import EaseOff
+from contact.utca.easeoff import EaseOff, normal_ease_off
 from geometry.errors import InputError
 from geometry.flank import flank_at
+from geometry.validation import integer, positive, real_array
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -88,17 +89,13 @@ _FRACTION_RANGE = (-0.5, 1.5)  # accepted grid fractions (a little beyond the bl
 
 
 def _as_grid(name: str, values) -> np.ndarray:
-    a = np.asarray(values, dtype=float)
-    if a.ndim != 1 or a.size < 3:
-        raise InputError(f"{name}: must be a 1-D array of at least 3 fractions, got shape "
-                         f"{a.shape}")
-    if not np.all(np.isfinite(a)):
-        raise InputError(f"{name}: must be finite fractions, got {a!r}")
+    """A measurement grid's fractions (≥ 3, strictly increasing, within the fraction range)."""
+    lo, hi = _FRACTION_RANGE
+    a = real_array(name, values, unit="1", low=lo, high=hi, ndim=1)
+    if a.size < 3:
+        raise InputError(f"{name}: must have at least 3 fractions, got {a.size}")
     if np.any(np.diff(a) <= 0):
         raise InputError(f"{name}: must be strictly increasing, got {a!r}")
-    lo, hi = _FRACTION_RANGE
-    if a[0] < lo or a[-1] > hi:
-        raise InputError(f"{name}: fractions must lie in [{lo}, {hi}], got {a[0]}..{a[-1]}")
     return a
 
 
@@ -142,16 +139,12 @@ class SurfaceDeviation:
     def __post_init__(self) -> None:
         u = _as_grid("u", self.u)
         v = _as_grid("v", self.v)
-        d = np.asarray(self.deviation, dtype=float)
+        # |δ| ≤ MAX_DEVIATION: the update is first order in δ
+        d = real_array("deviation", self.deviation, unit="mm", low=-MAX_DEVIATION,
+                       high=MAX_DEVIATION)
         if d.shape != (u.size, v.size):
             raise InputError(f"deviation: must have shape (len(u), len(v)) = ({u.size}, "
                              f"{v.size}), got {d.shape}")
-        if not np.all(np.isfinite(d)):
-            raise InputError(f"deviation: must be finite [mm]; {int((~np.isfinite(d)).sum())} "
-                             "NaN/inf values")
-        if np.abs(d).max() > MAX_DEVIATION:
-            raise InputError(f"deviation: |deviation| must be <= {MAX_DEVIATION} mm (first-"
-                             f"order update), got {np.abs(d).max():.6g} mm")
         uu, vv = np.meshgrid(u, v, indexing="ij")
         pts = np.stack([uu.ravel(), vv.ravel()], -1)
         rbf = RBFInterpolator(pts, d.ravel(), kernel="thin_plate_spline", degree=1)
@@ -205,9 +198,8 @@ class SurfaceDeviation:
         InputError
             For a bad grid, or a function returning the wrong shape, NaN or too large values.
         """
-        for name, n in (("nu", nu), ("nv", nv)):
-            if int(n) != n or n < 3:
-                raise InputError(f"{name}: must be an integer >= 3, got {n!r}")
+        nu = integer("nu", nu, low=3)
+        nv = integer("nv", nv, low=3)
         u = np.linspace(*u_limits, int(nu))
         v = np.linspace(*v_limits, int(nv))
         uu, vv = np.meshgrid(u, v, indexing="ij")
@@ -261,9 +253,7 @@ def weighted_average_deviation(deviation: SurfaceDeviation, u, v, *,
     if not isinstance(deviation, SurfaceDeviation):
         raise InputError(f"deviation: must be a SurfaceDeviation, got "
                          f"{type(deviation).__name__}")
-    if isinstance(power, bool) or not isinstance(power, (int, float)) or not (
-            np.isfinite(power) and power > 0):
-        raise InputError(f"power: must be a finite number > 0, got {power!r}")
+    power = positive("power", power)
     uu, vv = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
     gu, gv = np.meshgrid(deviation.u, deviation.v, indexing="ij")
     gu, gv, gd = gu.ravel(), gv.ravel(), deviation.deviation.ravel()
@@ -284,8 +274,8 @@ def weighted_average_deviation(deviation: SurfaceDeviation, u, v, *,
 def _pinion_arm(eo: EaseOff, case: Case | None) -> np.ndarray:
     """Moment arm |a_p·((r_p − O_p) × n_p)| [mm] of the pinion mate of every gear node."""
     if case is None:
-        raise InputError("case: the case of the ease-off is needed to apply pinion deviations "
-                         "(pinion moment arms at the mates)")
+        raise InputError("case: must be the case of the ease-off when pinion deviations are "
+                         "given (pinion moment arms at the mates), got None")
     have = np.isfinite(eo.pinion_axial) & np.isfinite(eo.pinion_radius)
     arm = np.full(eo.pinion_axial.shape, np.nan)
     if have.any():
@@ -368,8 +358,8 @@ def apply_deviations(eo: EaseOff, pinion: SurfaceDeviation | None = None,
     q = q + d_q
     valid = eo.valid & np.isfinite(eps) & np.isfinite(q)
     if not valid.any():
-        raise InputError("pinion, gear: the deviations leave no finite ease-off on the valid "
-                         "nodes")
+        raise InputError("pinion, gear: must leave a finite ease-off on a valid node, got "
+                         "none")
     s_e = float(np.min(eps[valid]))
     s_q = float(np.min(q[valid]))
     eps = eps - s_e
@@ -379,8 +369,7 @@ def apply_deviations(eo: EaseOff, pinion: SurfaceDeviation | None = None,
     rho = np.hypot(pg[..., 0], pg[..., 1])
     nt = (ng[..., 1] * pg[..., 0] - ng[..., 0] * pg[..., 1]) / rho
     nr = (ng[..., 0] * pg[..., 0] + ng[..., 1] * pg[..., 1]) / rho
-    eps_s = eo.lag_sense * eps
-    normal = rho * (np.sin(eps_s) * nt + (np.cos(eps_s) - 1.0) * nr)
+    normal = normal_ease_off(eps, eo.lag_sense, rho, nt, nr)
     v0 = eo.valid
     log.info("apply_deviations: ease-off re-shifted by %.4g urad, Q by %.4g urad",
              s_e * 1e6, s_q * 1e6)

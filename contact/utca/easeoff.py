@@ -67,6 +67,7 @@ MATING_FLANK           pinion flank → the gear flank it meshes with
 roll_angle_surface     roll angle of every grid point of the real pinion flank
 EaseOff                ease-off and Q on the gear projection-plane grid
 ease_off               build it for a case (Eq. 2.19–2.20, 4.1–4.2)
+normal_ease_off        the normal ease-off of an angular one (chord of the rotation)
 fill_missing           fill masked grid nodes by linear continuation of the valid ones
 
 References
@@ -80,6 +81,7 @@ from __future__ import annotations
 import logging
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
@@ -100,6 +102,7 @@ from geometry.cutter import profile_sections
 from geometry.errors import InputError
 from geometry.flank import DEFAULT_GRID, blank_outline, flank_surface
 from geometry.meshing import solve_envelope
+from geometry.validation import one_of
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -111,6 +114,7 @@ __all__ = [
     "EaseOff",
     "ease_off",
     "fill_missing",
+    "normal_ease_off",
     "roll_angle_surface",
 ]
 
@@ -137,6 +141,10 @@ EASEOFF_REASONS: dict[int, str] = {
 _MAP_TOL = 1e-7  # [mm] node-placement tolerance of the conjugate points
 _MAP_ITER = 10  # exact placement iterations
 _BROYDEN_ITER = 4  # of which with Broyden updates (then finite differences)
+_SPLINE_ITER = 10  # Newton steps on the spline of the forward map (start values)
+_STEP_LIMIT = 0.1  # largest Newton step in each pinion fraction
+_LATE_STEP_LIMIT = 0.02  # … in the finite-difference iterations
+_FD_STEP = 1e-6  # finite-difference step of the exact map's Jacobian [1]
 _PINION_U = (-0.15, 1.15)  # extended pinion grid (fractions of face width / depth)
 _PINION_V = (-0.05, 1.2)
 _FORWARD_GRID = (41, 21)  # pinion grid of the forward-map spline (start values only)
@@ -147,13 +155,8 @@ _MIRROR = np.array([1.0, -1.0, 1.0])
 def _flank_names(case: Case, flank: str | None) -> tuple[str, str]:
     if flank is None:
         flank = "drive"
-    if flank in FLANK_ROLES:
-        pf = FLANK_ROLES[flank](case)
-    elif flank in MATING_FLANK:
-        pf = flank
-    else:
-        raise InputError(f"flank: must be one of {sorted(FLANK_ROLES)} or a pinion flank "
-                         f"{sorted(MATING_FLANK)}, got {flank!r}")
+    one_of("flank", flank, [*FLANK_ROLES, *MATING_FLANK])
+    pf = FLANK_ROLES[flank](case) if flank in FLANK_ROLES else flank
     return pf, MATING_FLANK[pf]
 
 
@@ -374,13 +377,88 @@ class EaseOff(NamedTuple):
                           np.minimum(self.pinion_v, 1.0 - self.pinion_v))
 
 
-def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
-                    zt: np.ndarray, rt: np.ndarray, nu: int, nv: int):
-    """Pinion mates of the gear nodes (module docstring, "Gear projection-plane grid").
+class _GearMates(NamedTuple):
+    """The pinion mates of the gear nodes (nu, nv), as :func:`_map_gear_nodes` places them."""
 
-    Returns (u_p, v_p, mates, err, pinned): the pinion fractions, the evaluated mates, the
-    placement error [mm] (inf where no mate) and the nodes whose Newton iterate ran to the
-    edge of the extended pinion grid (their mate lies beyond the pinion blank).
+    u: np.ndarray  # [1] pinion fractions of the mates (extended grid: beyond 0..1 possible)
+    v: np.ndarray
+    mates: _Mates  # the mates evaluated there and their images
+    error: np.ndarray  # [mm] placement error max |Δz|, |Δρ| (inf where no mate)
+    pinned: np.ndarray  # bool: the Newton iterate ran to the edge of the extended grid
+
+
+@dataclass(frozen=True)
+class _ForwardMap:
+    """The real pinion mapped through the action surface: pinion fractions (u, v) → the
+    (z, ρ) of the conjugate point on the gear projection plane, evaluated exactly
+    (:meth:`mates`) and as a bicubic spline over the extended pinion grid (start values and
+    first Jacobians only)."""
+
+    case: Case
+    flank: str  # pinion flank
+    kin: MeshKinematics
+    corners: np.ndarray  # (2, 2, 2) [mm] pinion blank corners (bilinear map of u, v)
+    branch: int  # branch of the action roll angle (the mesh zone)
+    u: np.ndarray  # (41,) extended pinion grid
+    v: np.ndarray  # (21,)
+    nodes: _Mates  # the mates on the extended grid
+    z: RectBivariateSpline  # [mm] the image's axial position over (u, v)
+    rho: RectBivariateSpline  # [mm] and its radius
+
+    def mates(self, u, v, guess) -> _Mates:
+        """Mates at the fractions (u, v), the envelope solver started at ``guess``."""
+        m, _ = _mates(self.case, self.flank, self.kin, self.corners, u, v, branch=self.branch,
+                      guess=guess)
+        return m
+
+    def jacobian(self, u, v) -> np.ndarray:
+        """(..., 2, 2) [mm] ∂(z, ρ)/∂(u, v) of the spline."""
+        return np.stack([np.stack([self.z.ev(u, v, dx=1), self.z.ev(u, v, dy=1)], -1),
+                         np.stack([self.rho.ev(u, v, dx=1), self.rho.ev(u, v, dy=1)], -1)], -2)
+
+    def newton_step(self, j, u, v, e, limit=_STEP_LIMIT):
+        """Places (u, v) moved by the Newton step J⁻¹ e (held to ``limit`` in each fraction;
+        none where J is singular), clipped to the extended grid."""
+        det = j[..., 0, 0] * j[..., 1, 1] - j[..., 0, 1] * j[..., 1, 0]
+        safe = np.abs(det) > 1e-12
+        det = np.where(safe, det, 1.0)
+        du = np.where(safe, (j[..., 1, 1] * e[..., 0] - j[..., 0, 1] * e[..., 1]) / det, 0.0)
+        dv = np.where(safe, (j[..., 0, 0] * e[..., 1] - j[..., 1, 0] * e[..., 0]) / det, 0.0)
+        scale = np.maximum(1.0, np.maximum(np.abs(du), np.abs(dv)) / limit)
+        return (np.clip(u + du / scale, self.u[0], self.u[-1]),
+                np.clip(v + dv / scale, self.v[0], self.v[-1]))
+
+
+@dataclass
+class _Placement:
+    """State of the exact placement, flat over the gear nodes (n,); updated in place."""
+
+    mates: _Mates  # (n, ...) the mates at the current places
+    u: np.ndarray  # (n,) [1] current pinion fractions
+    v: np.ndarray
+    target: np.ndarray  # (n, 2) [mm] the nodes' (z, ρ)
+    jacobian: np.ndarray  # (n, 2, 2) [mm] per-node ∂(z, ρ)/∂(u, v)
+    error: np.ndarray  # (n,) [mm] max |Δz|, |Δρ| (inf: no mate)
+
+    def accept(self, idx: np.ndarray, mates: _Mates, u: np.ndarray, v: np.ndarray) -> None:
+        """Move the nodes ``idx`` to the places (u, v) of their new ``mates``."""
+        for full, part in zip(self.mates, mates, strict=True):
+            full[idx] = part
+        self.error[idx] = _placement_error(self.target[idx], mates)
+        self.u[idx], self.v[idx] = u, v
+
+
+def _placement_error(target: np.ndarray, mates: _Mates) -> np.ndarray:
+    """[mm] max |Δz|, |Δρ| of the mates' images from the targets (inf where no mate)."""
+    return np.where(np.asarray(mates.good), np.abs(target - mates.image).max(axis=-1), np.inf)
+
+
+def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:
+    """The forward map on the extended pinion grid and its spline.
+
+    The spline is built on the pinion blade's main (profile) section only and continued
+    linearly beyond it (:func:`fill_missing`): the kink at a section junction (e.g. the
+    fillet) would make a cubic spline ring over the whole flank.
     """
     cp = blank_outline(case.pinion.blank).corners
     up = np.linspace(*_PINION_U, _FORWARD_GRID[0])
@@ -392,115 +470,126 @@ def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
         raise InputError(
             f"case: the {pf} pinion flank has no points on the surface of action of these "
             "axes (check the misalignment and the machine settings)")
-    # the spline of the forward map is built on the main (profile) blade section only and
-    # continued linearly beyond it: the kink at a section junction (e.g. the fillet) would
-    # make a cubic spline ring over the whole flank
     main = profile_sections(case.pinion.flank(pf).blade).main
     smooth = ok & (fwd.section == main)
     if smooth.sum() < 16:
         smooth = ok
     image = fill_missing(fwd.image, smooth)
-    sz = RectBivariateSpline(up, vp, image[..., 0])
-    sr = RectBivariateSpline(up, vp, image[..., 1])
+    return _ForwardMap(case, pf, kin, cp, branch, up, vp, fwd,
+                       RectBivariateSpline(up, vp, image[..., 0]),
+                       RectBivariateSpline(up, vp, image[..., 1]))
+
+
+def _spline_start(fm: _ForwardMap, zt: np.ndarray, rt: np.ndarray):
+    """Start places (u, v) of the mates of the gear nodes (zt, rt): the nearest node of the
+    forward map, then Newton's method on its spline."""
+    ok = fm.nodes.good
+    img = fm.nodes.image
+    uu, vv = np.meshgrid(fm.u, fm.v, indexing="ij")
     target = np.stack([zt, rt], -1)
-
-    def step(j, u, v, e, limit=0.1):
-        det = j[..., 0, 0] * j[..., 1, 1] - j[..., 0, 1] * j[..., 1, 0]
-        safe = np.abs(det) > 1e-12
-        det = np.where(safe, det, 1.0)
-        du = np.where(safe, (j[..., 1, 1] * e[..., 0] - j[..., 0, 1] * e[..., 1]) / det, 0.0)
-        dv = np.where(safe, (j[..., 0, 0] * e[..., 1] - j[..., 1, 0] * e[..., 0]) / det, 0.0)
-        scale = np.maximum(1.0, np.maximum(np.abs(du), np.abs(dv)) / limit)
-        return (np.clip(u + du / scale, up[0], up[-1]), np.clip(v + dv / scale, vp[0], vp[-1]))
-
-    def jac(u, v):
-        return np.stack([np.stack([sz.ev(u, v, dx=1), sz.ev(u, v, dy=1)], -1),
-                         np.stack([sr.ev(u, v, dx=1), sr.ev(u, v, dy=1)], -1)], -2)
-
-    def placement(m):
-        e = np.where(m.good[..., None], target - m.image, 0.0)
-        return e, np.where(m.good, np.abs(e).max(axis=-1), np.inf)
-
-    # start: nearest forward node, then Newton on the spline of the forward map
-    d2 = ((zt.reshape(-1, 1) - fwd.image[..., 0][ok].reshape(1, -1)) ** 2
-          + (rt.reshape(-1, 1) - fwd.image[..., 1][ok].reshape(1, -1)) ** 2)
+    d2 = ((zt.reshape(-1, 1) - img[..., 0][ok].reshape(1, -1)) ** 2
+          + (rt.reshape(-1, 1) - img[..., 1][ok].reshape(1, -1)) ** 2)
     k = np.argmin(d2, axis=1)
     u = uu[ok][k].reshape(zt.shape)
     v = vv[ok][k].reshape(zt.shape)
-    for _ in range(10):
-        spl = np.stack([sz.ev(u, v), sr.ev(u, v)], -1)
-        u, v = step(jac(u, v), u, v, target - spl)
-    # exact iterations: the real pinion at the current place, mapped exactly; first on the
-    # whole grid, then only on the nodes not yet placed, with Broyden updates of the spline
-    # Jacobian (the forward map is strongly stretched near the pinion's fillet junction)
-    shape = zt.shape
+    for _ in range(_SPLINE_ITER):
+        spl = np.stack([fm.z.ev(u, v), fm.rho.ev(u, v)], -1)
+        u, v = fm.newton_step(fm.jacobian(u, v), u, v, target - spl)
+    return u, v
+
+
+def _exact_start(fm: _ForwardMap, u: np.ndarray, v: np.ndarray, zt: np.ndarray,
+                 rt: np.ndarray) -> _Placement:
+    """The real pinion at the start places, mapped exactly (the envelope solver starts from
+    the forward node nearest to each place), with the spline's Jacobians there."""
     n = zt.size
-    # the envelope solver starts from the forward node nearest to each place
-    iu = np.clip(np.rint((u - up[0]) / (up[1] - up[0])), 0, len(up) - 1).astype(int)
-    iv = np.clip(np.rint((v - vp[0]) / (vp[1] - vp[0])), 0, len(vp) - 1).astype(int)
-    m0, _ = _mates(case, pf, kin, cp, u, v, branch=branch,
-                   guess=(fwd.params[iu, iv], fwd.section[iu, iv]))
-    store = [np.array(a).reshape(n, *np.shape(a)[len(shape):]) for a in m0]
+    iu = np.clip(np.rint((u - fm.u[0]) / (fm.u[1] - fm.u[0])), 0, len(fm.u) - 1).astype(int)
+    iv = np.clip(np.rint((v - fm.v[0]) / (fm.v[1] - fm.v[0])), 0, len(fm.v) - 1).astype(int)
+    m0 = fm.mates(u, v, guess=(fm.nodes.params[iu, iv], fm.nodes.section[iu, iv]))
+    flat = _Mates(*(np.array(a).reshape(n, *np.shape(a)[zt.ndim:]) for a in m0))
     uf, vf = u.ravel().copy(), v.ravel().copy()
-    tgt = target.reshape(n, 2)
-    jf = jac(uf, vf)
+    target = np.stack([zt, rt], -1).reshape(n, 2)
+    return _Placement(flat, uf, vf, target, fm.jacobian(uf, vf),
+                      _placement_error(target, flat))
 
-    def place(idx, mm):
-        for full, part in zip(store, mm, strict=True):
-            full[idx] = part
-        ok_ = np.asarray(mm.good)
-        return np.where(ok_, np.abs(tgt[idx] - mm.image).max(axis=-1), np.inf)
 
-    err = place(np.arange(n), _Mates(*store))
-    h = 1e-6
+def _mates_with_jacobian(fm: _ForwardMap, u: np.ndarray, v: np.ndarray, guess):
+    """Mates at (u, v) (M,) and the finite-difference Jacobian (M, 2, 2) of the exact map
+    there, the point and its two stencil points in one batch; ok (M,): all three good."""
+    k = u.size
+    h = _FD_STEP
+    params, section = guess
+    m3 = fm.mates(np.r_[u, u + h, u], np.r_[v, v, v + h],
+                  guess=(np.tile(params, (3, 1)), np.tile(section, 3)))
+    at, du, dv = (_Mates(*(np.asarray(a)[i * k:(i + 1) * k] for a in m3)) for i in range(3))
+    ok = at.good & du.good & dv.good
+    return at, np.stack([(du.image - at.image) / h, (dv.image - at.image) / h], -1), ok
+
+
+def _broyden(jac: np.ndarray, dx: np.ndarray, dy: np.ndarray, good: np.ndarray) -> np.ndarray:
+    """Broyden (secant) update of per-node Jacobians (M, 2, 2) with the steps dx (M, 2) of
+    the places and dy (M, 2) of the images, where ``good`` and the step is not null."""
+    nx = np.einsum("...i,...i", dx, dx)
+    upd = good & (nx > 1e-24)
+    corr = (dy - np.einsum("...ij,...j->...i", jac, dx)) / np.where(upd, nx, 1.0)[:, None]
+    return np.where(upd[:, None, None], jac + corr[:, :, None] * dx[:, None, :], jac)
+
+
+def _place_exactly(fm: _ForwardMap, st: _Placement) -> None:
+    """Exact placement iterations on the nodes not yet placed (updates ``st``).
+
+    Each evaluates the real pinion at the Newton step and maps it exactly; the per-node
+    Jacobian gets Broyden updates, and from iteration :data:`_BROYDEN_ITER` on, for the
+    stragglers where the map is strongly stretched (near the pinion's fillet junction),
+    the finite-difference Jacobian at each accepted new place. A step that does not reduce
+    the error is not taken (the node retries with the secant-updated Jacobian); a node
+    whose mate leaves the generated surface is dropped.
+    """
     for it in range(_MAP_ITER):
-        idx = np.flatnonzero(np.isfinite(err) & (err >= _MAP_TOL))
+        idx = np.flatnonzero(np.isfinite(st.error) & (st.error >= _MAP_TOL))
         if idx.size == 0:
             break
-        k = idx.size
-        e = tgt[idx] - store[7][idx]
-        u0, v0, img0 = uf[idx], vf[idx], store[7][idx]
         late = it >= _BROYDEN_ITER
-        un, vn = step(jf[idx], u0, v0, e, limit=0.02 if late else 0.1)
+        u0, v0, img0 = st.u[idx], st.v[idx], st.mates.image[idx]
+        un, vn = fm.newton_step(st.jacobian[idx], u0, v0, st.target[idx] - img0,
+                                limit=_LATE_STEP_LIMIT if late else _STEP_LIMIT)
+        guess = (st.mates.params[idx], st.mates.section[idx])
         if late or it == _BROYDEN_ITER - 1:
-            # the rest sit where the map is strongly stretched (near the pinion's fillet
-            # junction): evaluate the finite-difference stencil with the new point
-            g3 = (np.tile(store[12][idx], (3, 1)), np.tile(store[11][idx], 3))
-            mj, _ = _mates(case, pf, kin, cp, np.r_[un, un + h, un], np.r_[vn, vn, vn + h],
-                           branch=branch, guess=g3)
-            parts = [_Mates(*(np.asarray(a)[i * k:(i + 1) * k] for a in mj)) for i in range(3)]
-            mm = parts[0]
-            ok3 = parts[0].good & parts[1].good & parts[2].good
-            jnew = np.stack([(parts[1].image - mm.image) / h, (parts[2].image - mm.image) / h],
-                            -1)
+            mm, j_fd, ok_fd = _mates_with_jacobian(fm, un, vn, guess)
         else:
-            mm, _ = _mates(case, pf, kin, cp, un, vn, branch=branch,
-                           guess=(store[12][idx], store[11][idx]))
-            ok3 = np.zeros(k, dtype=bool)
-            jnew = jf[idx]
-        # Broyden update of the per-node Jacobian with the secant of this step
-        dx = np.stack([un - u0, vn - v0], -1)
+            mm, j_fd, ok_fd = fm.mates(un, vn, guess), None, None
         dy = np.where(mm.good[:, None], mm.image - img0, 0.0)
-        nx = np.einsum("...i,...i", dx, dx)
-        upd = mm.good & (nx > 1e-24)
-        corr = (dy - np.einsum("...ij,...j->...i", jf[idx], dx)) / np.where(upd, nx, 1.0)[
-            :, None]
-        jb = np.where(upd[:, None, None], jf[idx] + corr[:, :, None] * dx[:, None, :], jf[idx])
-        better = mm.good & (np.abs(tgt[idx] - mm.image).max(axis=-1) < err[idx])
-        # accepted steps take the finite-difference Jacobian at their new place if there is
-        # one; the others keep their place and retry with the secant-updated Jacobian
-        jf[idx] = np.where((better & ok3)[:, None, None], jnew, jb)
-        keep = idx[better]
-        err[keep] = place(keep, _Mates(*(np.asarray(a)[better] for a in mm)))
-        uf[keep], vf[keep] = un[better], vn[better]
-        err[idx[~mm.good]] = np.inf  # left the generated surface: dropped
-        log.debug("map iteration: %d of %d nodes placed", int((err < _MAP_TOL).sum()), n)
-    m = _Mates(*(a.reshape(shape + a.shape[1:]) for a in store))
-    u, v = uf.reshape(shape), vf.reshape(shape)
-    err = err.reshape(shape)
-    pinned = (np.isclose(u, up[0]) | np.isclose(u, up[-1]) | np.isclose(v, vp[0])
-              | np.isclose(v, vp[-1]))
-    return u, v, m, err, pinned
+        jac = _broyden(st.jacobian[idx], np.stack([un - u0, vn - v0], -1), dy, mm.good)
+        better = mm.good & (np.abs(st.target[idx] - mm.image).max(axis=-1) < st.error[idx])
+        if j_fd is not None:
+            jac = np.where((better & ok_fd)[:, None, None], j_fd, jac)
+        st.jacobian[idx] = jac
+        st.accept(idx[better], _Mates(*(np.asarray(a)[better] for a in mm)), un[better],
+                  vn[better])
+        st.error[idx[~mm.good]] = np.inf
+        log.debug("map iteration: %d of %d nodes placed", int((st.error < _MAP_TOL).sum()),
+                  st.error.size)
+
+
+def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
+                    zt: np.ndarray, rt: np.ndarray) -> _GearMates:
+    """Pinion mates of the gear nodes (module docstring, "Gear projection-plane grid").
+
+    Start values from the spline of the forward map (:func:`_spline_start`), then exact
+    iterations on the real pinion (:func:`_place_exactly`). ``pinned``: the nodes whose
+    iterate ran to the edge of the extended pinion grid (their mate lies beyond the pinion
+    blank).
+    """
+    fm = _forward_map(case, pf, kin, ref)
+    u, v = _spline_start(fm, zt, rt)
+    st = _exact_start(fm, u, v, zt, rt)
+    _place_exactly(fm, st)
+    shape = zt.shape
+    u, v = st.u.reshape(shape), st.v.reshape(shape)
+    pinned = (np.isclose(u, fm.u[0]) | np.isclose(u, fm.u[-1]) | np.isclose(v, fm.v[0])
+              | np.isclose(v, fm.v[-1]))
+    return _GearMates(u, v, _Mates(*(a.reshape(shape + a.shape[1:]) for a in st.mates)),
+                      st.error.reshape(shape), pinned)
 
 
 def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment | None = None,
@@ -547,72 +636,24 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     the gear normal; the angular ease-off is exact (both points share (z, ρ)).
     """
     pf, gf = _flank_names(case, flank)
-    g = dict(DEFAULT_GRID)
-    if grid:
-        unknown = sorted(set(grid) - set(g))
-        if unknown:
-            raise InputError(f"grid: unknown keys {unknown}; accepted {sorted(g)}")
-        g.update(grid)
+    g = _grid_options(grid)
     kin = mesh_kinematics(case, misalignment, pinion_phase=pinion_phase, gear_phase=gear_phase)
     gs = flank_surface(case, "gear", gf, **g)
     zt, rt = gs.grid.axial, gs.grid.radius
-    ref = _gear_reference(case, kin)
-    u_p, v_p, mt, err, pinned = _map_gear_nodes(case, pf, kin, ref, zt, rt,
-                                                len(gs.grid.u), len(gs.grid.v))
-    zq, rq, ppos, pnrm, roll, conj = mt.z, mt.rho, mt.position, mt.normal, mt.roll, mt.conjugate
-    kn = _gap_curvature(kin, ppos, pnrm, np.where(mt.good, roll, 0.0), mt.kappa1, mt.kappa2,
-                        mt.dir1)
-
-    mate = np.isfinite(err) & (err < _MAP_TOL)
-    reason = np.zeros(zt.shape, dtype=np.int8)
-    reason[~mate] = 2
-    reason[~mate & pinned] = 3  # Newton ran to the edge of the extended pinion grid
-    reason[~gs.valid] = 1
-    inside = (u_p >= 0) & (u_p <= 1) & (v_p >= 0) & (v_p <= 1)
-    reason[(reason == 0) & ~inside] = 3
-    if not np.any(reason == 0):
-        raise InputError("case: no gear grid node can be touched by the pinion (the blanks do "
-                         "not overlap on the surface of action; check the misalignment)")
-    n_bad = {EASEOFF_REASONS[c]: int((reason == c).sum()) for c in (1, 2, 3)}
-    log.info("ease_off: %d of %d gear nodes valid (%s)", int((reason == 0).sum()), reason.size,
-             ", ".join(f"{k}: {v}" for k, v in n_bad.items() if v))
-
-    # senses
-    r0, n0 = to_pair_frame(kin, ppos[mate], pnrm[mate])
-    c1, *_ = meshing_coefficients(kin, r0, n0)
-    drive = 1 if np.median(c1) > 0 else -1
-    pg, ng = gs.position, gs.normal
-    rho = np.hypot(pg[..., 0], pg[..., 1])
-    e_t = np.stack([-pg[..., 1], pg[..., 0], np.zeros_like(rho)], -1) / rho[..., None]
-    e_r = np.stack([pg[..., 0], pg[..., 1], np.zeros_like(rho)], -1) / rho[..., None]
-    nt = np.einsum("...i,...i", ng, e_t)
-    nr = np.einsum("...i,...i", ng, e_r)
+    gm = _map_gear_nodes(case, pf, kin, _gear_reference(case, kin), zt, rt)
+    mt = gm.mates
+    kn = _gap_curvature(kin, mt.position, mt.normal, np.where(mt.good, mt.roll, 0.0),
+                        mt.kappa1, mt.kappa2, mt.dir1)
+    mate = np.isfinite(gm.error) & (gm.error < _MAP_TOL)
+    reason = _node_reasons(gm, mate, gs.valid)
+    drive = _drive_sense(kin, mt, mate)
+    rho, nt, nr = _polar_normal(gs.position, gs.normal)
     lag = 1 if np.nanmedian(nt[reason == 0]) > 0 else -1
-    _mask_folds(reason, np.where(mate, roll, np.nan))
-
-    # angular ease-off: lag the real gear needs to reach the conjugate point at (z, ρ);
-    # the conjugate's polar angle is carried from its place to the node with the slope of
-    # the (tangent) gear surface, dθ = −(n_z dz + n_ρ dρ)/(ρ n_θ): the residual placement
-    # (< 1e-7 mm) then enters only at second order
-    nz = ng[..., 2]
-    dz = zt - conj[..., 2]
-    drho = rt - np.hypot(conj[..., 0], conj[..., 1])
-    theta_c = np.arctan2(conj[..., 1], conj[..., 0]) - (nz * dz + nr * drho) / (rho * nt)
-    theta_r = np.arctan2(pg[..., 1], pg[..., 0])
-    diff = np.where(mate & gs.valid, lag * (theta_c - theta_r), np.nan)
-    ref_diff = np.nanmedian(diff[reason == 0])
-    diff = ref_diff + np.remainder(diff - ref_diff + np.pi, 2 * np.pi) - np.pi
-    shift = np.nanmin(diff[reason == 0])
-    eps_raw = diff - shift  # ε ≥ 0 on valid nodes
-    # the real gear turned by s_g·shift touches the conjugate (built with ψ₀ = 0) at one node
-    psi0 = float(lag * shift)
-    q_raw = np.where(mate, drive * roll, np.nan)
-    q_min = np.nanmin(q_raw[reason == 0])
-    roll_zero = float(drive * q_min)
-    q_raw = q_raw - q_min
+    _mask_folds(reason, np.where(mate, mt.roll, np.nan))
+    eps_raw, psi0 = _angular_ease_off(gs, mt.conjugate, mate, reason, lag, nt, nr, rho)
+    q_raw, roll_zero = _shifted_roll(mt.roll, mate, reason, drive)
     arm = rho * np.abs(nt)
-    eps_s = lag * eps_raw
-    normal_raw = rho * (np.sin(eps_s) * nt + (np.cos(eps_s) - 1.0) * nr)
+    normal_raw = normal_ease_off(eps_raw, lag, rho, nt, nr)
     valid = reason == 0
     gear_main = profile_sections(case.gear.flank(gf).blade).main
     pinion_main = profile_sections(case.pinion.flank(pf).blade).main
@@ -624,30 +665,159 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
         roll_angle=np.where(valid, q_raw, np.nan),
         raw_ease_off_angle=eps_raw, raw_roll_angle=q_raw, normal_arm=arm,
         gap_curvature=np.where(mate & gs.valid, kn / arm, np.nan),
-        gear_position=pg, gear_normal=ng, pinion_axial=zq, pinion_radius=rq,
-        pinion_u=np.where(mate, u_p, np.nan), pinion_v=np.where(mate, v_p, np.nan),
-        placement_error=np.where(mate, err, np.nan), smooth=smooth, reason=reason,
-        drive_sense=drive,
-        lag_sense=lag, roll_zero=roll_zero, gear_phase=psi0,
-        ratio=kin.ratio, pitch=2.0 * math.pi / case.pinion.blank.teeth, kinematics=kin,
-        pinion_parameters=np.where(mate[..., None], mt.params, np.nan),
+        gear_position=gs.position, gear_normal=gs.normal, pinion_axial=mt.z,
+        pinion_radius=mt.rho, pinion_u=np.where(mate, gm.u, np.nan),
+        pinion_v=np.where(mate, gm.v, np.nan), placement_error=np.where(mate, gm.error, np.nan),
+        smooth=smooth, reason=reason, drive_sense=drive, lag_sense=lag, roll_zero=roll_zero,
+        gear_phase=psi0, ratio=kin.ratio, pitch=2.0 * math.pi / case.pinion.blank.teeth,
+        kinematics=kin, pinion_parameters=np.where(mate[..., None], mt.params, np.nan),
         pinion_section=mt.section,
         gear_parameters=np.stack([gs.s, gs.theta, gs.q], -1), gear_section=gs.section)
 
 
+def _grid_options(grid: dict | None) -> dict:
+    """The gear grid of :func:`ease_off`: :data:`geometry.flank.DEFAULT_GRID` updated by
+    ``grid`` (InputError for an unknown key)."""
+    g = dict(DEFAULT_GRID)
+    if grid:
+        unknown = sorted(set(grid) - set(g))
+        if unknown:
+            raise InputError(f"grid: must have keys from {sorted(g)}, got unknown keys "
+                             f"{unknown}")
+        g.update(grid)
+    return g
+
+
+def _node_reasons(gm: _GearMates, mate: np.ndarray, gear_valid: np.ndarray) -> np.ndarray:
+    """(nu, nv) int8 reason codes (:data:`EASEOFF_REASONS`) of the gear nodes, folds not yet
+    masked; InputError if no node is valid."""
+    reason = np.zeros(mate.shape, dtype=np.int8)
+    reason[~mate] = 2
+    reason[~mate & gm.pinned] = 3  # Newton ran to the edge of the extended pinion grid
+    reason[~gear_valid] = 1
+    inside = (gm.u >= 0) & (gm.u <= 1) & (gm.v >= 0) & (gm.v <= 1)
+    reason[(reason == 0) & ~inside] = 3
+    if not np.any(reason == 0):
+        raise InputError("case: no gear grid node can be touched by the pinion (the blanks do "
+                         "not overlap on the surface of action; check the misalignment)")
+    n_bad = {EASEOFF_REASONS[c]: int((reason == c).sum()) for c in (1, 2, 3)}
+    log.info("ease_off: %d of %d gear nodes valid (%s)", int((reason == 0).sum()), reason.size,
+             ", ".join(f"{k}: {v}" for k, v in n_bad.items() if v))
+    return reason
+
+
+def _drive_sense(kin: MeshKinematics, mt: _Mates, mate: np.ndarray) -> int:
+    """s_p: the sign of the pinion rotation that drives its flank (module docstring, "Signs"),
+    the median over the placed mates of the meshing coefficient c₁ = a_p·((r − O_p) × n)."""
+    r0, n0 = to_pair_frame(kin, mt.position[mate], mt.normal[mate])
+    c1, *_ = meshing_coefficients(kin, r0, n0)
+    return 1 if np.median(c1) > 0 else -1
+
+
+def _polar_normal(position: np.ndarray, normal: np.ndarray):
+    """ρ [mm] of gear-frame points (..., 3) and their normals' components n·e_θ, n·e_ρ [1]
+    along the polar directions about the gear axis."""
+    pg, ng = position, normal
+    rho = np.hypot(pg[..., 0], pg[..., 1])
+    e_t = np.stack([-pg[..., 1], pg[..., 0], np.zeros_like(rho)], -1) / rho[..., None]
+    e_r = np.stack([pg[..., 0], pg[..., 1], np.zeros_like(rho)], -1) / rho[..., None]
+    return rho, np.einsum("...i,...i", ng, e_t), np.einsum("...i,...i", ng, e_r)
+
+
+def _angular_ease_off(gs, conj: np.ndarray, mate: np.ndarray, reason: np.ndarray, lag: int,
+                      nt: np.ndarray, nr: np.ndarray, rho: np.ndarray):
+    """ε ≥ 0 [rad] on the valid nodes (NaN where no mate) and the gear phase ψ₀ [rad].
+
+    ε is the lag the real gear needs to reach the conjugate point at its node's (z, ρ),
+    shifted so that its least over the valid nodes is zero; the real gear turned by s_g ψ₀
+    touches the conjugate (built with ψ₀ = 0) there. The conjugate's polar angle is carried
+    from its place to the node with the slope of the (tangent) gear surface,
+    dθ = −(n_z dz + n_ρ dρ)/(ρ n_θ): the residual placement (< 1e-7 mm) then enters only at
+    second order.
+    """
+    pg, ng = gs.position, gs.normal
+    nz = ng[..., 2]
+    dz = gs.grid.axial - conj[..., 2]
+    drho = gs.grid.radius - np.hypot(conj[..., 0], conj[..., 1])
+    theta_c = np.arctan2(conj[..., 1], conj[..., 0]) - (nz * dz + nr * drho) / (rho * nt)
+    theta_r = np.arctan2(pg[..., 1], pg[..., 0])
+    diff = np.where(mate & gs.valid, lag * (theta_c - theta_r), np.nan)
+    ref_diff = np.nanmedian(diff[reason == 0])
+    diff = ref_diff + np.remainder(diff - ref_diff + np.pi, 2 * np.pi) - np.pi
+    shift = np.nanmin(diff[reason == 0])
+    return diff - shift, float(lag * shift)
+
+
+def _shifted_roll(roll: np.ndarray, mate: np.ndarray, reason: np.ndarray, drive: int):
+    """Q ≥ 0 [rad] (driving sense, least over the valid nodes zero; NaN where no mate) and
+    the pinion rotation ``roll_zero`` [rad] at Q = 0."""
+    q_raw = np.where(mate, drive * roll, np.nan)
+    q_min = np.nanmin(q_raw[reason == 0])
+    return q_raw - q_min, float(drive * q_min)
+
+
+def normal_ease_off(angle, lag_sense: int, radius, normal_theta, normal_rho):
+    """Normal ease-off: distance from the real gear to the touching conjugate point.
+
+    Parameters
+    ----------
+    angle : array_like — [rad]
+        Angular ease-off ε ≥ 0 (gear lag).
+    lag_sense : {+1, −1}
+        s_g (module docstring, "Signs").
+    radius : array_like — [mm]
+        ρ of the real gear point.
+    normal_theta, normal_rho : array_like — [1]
+        Components n·e_θ, n·e_ρ of the gear's unit normal along the polar directions.
+
+    Returns
+    -------
+    ndarray — [mm]
+        ρ [sin(s_g ε)(n·e_θ) + (cos ε − 1)(n·e_ρ)] ≥ 0 (broadcast shape): the chord of the
+        rotation along the gear normal.
+
+    Notes
+    -----
+    Seed §4.2 ("radial distance" between the real gear and its conjugate, read as the
+    distance along the gear normal); the chord's distance to the curved surface differs by
+    ½κ d_t² (module docstring).
+    """
+    eps_s = lag_sense * angle
+    return radius * (np.sin(eps_s) * normal_theta + (np.cos(eps_s) - 1.0) * normal_rho)
 
 
 def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
     """Fill invalid nodes of a 2-D field by linear extrapolation from valid neighbours.
 
     Used only to give the interpolating splines a smooth field: filled nodes stay masked.
-    ``values`` may carry trailing axes (several fields on the same mask, filled at once;
-    each element's arithmetic is that of a single field).
+    Each pass fills the invalid nodes next to valid ones, with the mean over the four grid
+    directions of the linear continuation of the two nearest valid nodes (2 a₁ − a₂), or
+    of the nearest one where only it is valid; passes repeat until every node is filled
+    or none can be.
+
+    Parameters
+    ----------
+    values : array_like (nu, nv, ...)
+        The field; trailing axes carry several fields on the same mask, filled at once
+        (each element's arithmetic is that of a single field).
+    valid : array_like of bool (nu, nv)
+        Nodes that hold values.
+
+    Returns
+    -------
+    ndarray of float (nu, nv, ...)
+        A copy with the invalid nodes filled (left as they were where no valid node
+        reaches them).
+
+    Raises
+    ------
+    InputError
+        If no node is valid.
     """
     out = np.array(values, dtype=float)
     have = np.array(valid, dtype=bool)
     if not have.any():
-        raise InputError("no valid node to fill a field from")
+        raise InputError("valid: must hold at least one valid node, got none")
     trail = (1,) * (out.ndim - have.ndim)
     while not have.all():
         acc = np.zeros(out.shape)

@@ -80,7 +80,8 @@ class EaseOffFields:
         computed = np.isfinite(eo.raw_ease_off_angle) & np.isfinite(eo.raw_roll_angle)
         valid = eo.valid
         if valid.sum() < 16:
-            raise InputError("easeoff: fewer than 16 valid nodes, nothing to contour")
+            raise InputError(f"eo: must have at least 16 valid nodes to contour, got "
+                             f"{int(valid.sum())}")
         self.computed = computed
         gear_ok = np.all(np.isfinite(eo.gear_position), axis=-1)
 
@@ -118,10 +119,21 @@ class EaseOffFields:
         self.cell_ok = c[:-1, :-1] & c[1:, :-1] & c[:-1, 1:] & c[1:, 1:]
 
     def gap_at(self, u, v):
-        """The pinion's gap curvature K [1/rad] at (u, v), held within the range of the
-        nodes' values: near a fold or masked nodes the spline of the filled field can
-        overshoot it (on ISO sample 2 to K < 0 at the gear tip, where the nodes hold
-        K ≥ 0.055: an edge's separation ε + ½ K t² then fell by hundreds of µm)."""
+        """The pinion's gap curvature K at gear places, held within the nodes' range.
+
+        Parameters
+        ----------
+        u, v : array_like, broadcastable — [1]
+            Gear fractions (finite).
+
+        Returns
+        -------
+        ndarray — [1/rad]
+            K (the angular gap at roll Q + t is ½ K t²), clipped to :attr:`gap_range`:
+            near a fold or masked nodes the spline of the filled field can overshoot it
+            (on ISO sample 2 to K < 0 at the gear tip, where the nodes hold K ≥ 0.055: an
+            edge's separation ε + ½ K t² then fell by hundreds of µm).
+        """
         return np.clip(self.gap.ev(u, v), *self.gap_range)
 
     def good_cell(self, u, v):
@@ -135,7 +147,19 @@ class EaseOffFields:
         return self.cell_ok[iu, iv]
 
     def inside(self, u, v):
-        """True where (u, v) can be touched: in the grid, good cell, pinion mate in blank."""
+        """Whether gear places can be touched.
+
+        Parameters
+        ----------
+        u, v : ndarray, same shape — [1]
+            Gear fractions (v may be NaN).
+
+        Returns
+        -------
+        ndarray of bool
+            In the grid, in a cell whose corners were all computed (:meth:`good_cell`) and
+            with the pinion mate in its blank (margin ≥ 0).
+        """
         u0, u1, v0, v1 = self.u[0], self.u[-1], self.v[0], self.v[-1]
         ok = (u >= u0) & (u <= u1) & (v >= v0) & (v <= v1) & np.isfinite(v)
         ok &= self.good_cell(np.where(ok, u, u0), np.where(ok, v, v0))
@@ -158,17 +182,44 @@ class EaseOffFields:
                          u - self.u[0], self.u[-1] - u])
 
     def measure(self, u, v):
-        """Continuous inside measure: ≥ 0 inside the contact region, −1 where undefined."""
+        """Continuous inside measure of the contact region.
+
+        Parameters
+        ----------
+        u, v : array_like, broadcastable — [1]
+            Gear fractions (v may be NaN).
+
+        Returns
+        -------
+        ndarray — [1]
+            The least of :meth:`measure_terms`: ≥ 0 inside the contact region, < 0
+            outside, −1 where undefined (v NaN or a cell with an uncomputed corner).
+        """
         fin = np.isfinite(v)
         vs = np.where(fin, v, self.v[0])
         c = self.measure_terms(u, vs).min(axis=0)
         return np.where(fin & self.good_cell(u, vs), c, -1.0)
 
     def solve_v(self, u, target, v_start=None, lattice=None):
-        """Profile place v*(u) with Q(u, v*) = target (NaN where Q misses target in [v0, v1]).
+        """Profile place v*(u) on the iso-line Q(u, v*) = target (seed §2.3.2.2).
 
-        Either ``v_start`` (a nearby solution) or ``lattice`` (Q at u × profile nodes, for a
-        bracket) starts Newton's method on the spline.
+        Parameters
+        ----------
+        u : array_like — [1]
+            Lengthwise fractions (broadcast with ``target``).
+        target : array_like — [rad]
+            Values q of Q.
+        v_start : array_like, optional — [1]
+            A nearby solution (broadcast to the shape of u; NaN: the grid's middle).
+        lattice : array_like (..., nv), optional — [rad]
+            Q at u × the grid's profile nodes (:meth:`lattice`): the solution is started
+            in the bracketing cell instead (and known misses are skipped).
+
+        Returns
+        -------
+        ndarray — [1]
+            v* (broadcast shape), NaN where Q misses the target in [v₀, v₁]; Newton's
+            method on the spline to |ΔQ| < 1e-13 rad (:meth:`newton_v`).
         """
         u = np.asarray(u, dtype=float)
         target = np.asarray(target, dtype=float)
@@ -194,10 +245,28 @@ class EaseOffFields:
                  else np.broadcast_to(v_start, shape).ravel()).copy()
             v[~np.isfinite(v)] = 0.5 * (self.v[0] + self.v[-1])
             miss = None
-        return self._newton_v(u.ravel(), target.ravel(), v, miss).reshape(shape)
+        return self.newton_v(u.ravel(), target.ravel(), v, miss).reshape(shape)
 
-    def _newton_v(self, uf, tf, v, miss=None):
-        """:meth:`solve_v` on flat arrays from a finite start ``v`` (overwritten)."""
+    def newton_v(self, uf, tf, v, miss=None):
+        """:meth:`solve_v` on flat arrays, from a finite start (no broadcasting, no copy).
+
+        Parameters
+        ----------
+        uf : ndarray (M,) — [1]
+            Lengthwise fractions.
+        tf : ndarray (M,) — [rad]
+            Values q of Q.
+        v : ndarray (M,) — [1]
+            Finite start places; overwritten by the iterates.
+        miss : bool ndarray (M,), optional
+            Points known to miss (left out, NaN).
+
+        Returns
+        -------
+        ndarray (M,) — [1]
+            v* within [v₀, v₁] (held there), NaN where Newton's method ended beyond the
+            grid by more than 1e-9 of it or |Q − q| > 1e-9 rad.
+        """
         v0, v1 = self.v[0], self.v[-1]
         f = self.q.ev(uf, v) - tf
         # Newton on the points not yet converged (and not known to miss) only
