@@ -45,7 +45,7 @@ def register(sub) -> None:
         nargs="+",
         default=[op.temperature],
         metavar="C",
-        help="oil inlet temperatures [C] (default %(default)s)",
+        help=f"oil inlet temperatures [C] (default {op.temperature:g})",
     )
     p.add_argument(
         "--roughness",
@@ -53,7 +53,7 @@ def register(sub) -> None:
         nargs="+",
         default=[op.roughness],
         metavar="UM",
-        help="RMS roughness Rq of each surface [um] (default %(default)s)",
+        help=f"RMS roughness Rq of each surface [um] (default {op.roughness:g})",
     )
     p.add_argument("--lubricant", default=op.lubricant,
                    help="bundled oil name or TOML file (default %(default)s)")
