@@ -49,8 +49,9 @@ from contact.compliance import (  # noqa: E402
     load_line_height,
     weber_compliance,
 )
+from geometry.hertz import STEEL  # noqa: E402
 
-E, NU = 206000.0, 0.3
+E, NU = STEEL
 
 # Typical automotive hypoid pair (the brief's ranges): gear and pinion teeth.
 GEAR = ShellTooth.from_face_width(

@@ -27,6 +27,7 @@ import xarray as xr
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.utca import unloaded_tca
 from contact.utca.easeoff import ease_off
+from friction.operating import OperatingConditions
 from geometry import __version__
 from geometry.assembly import Misalignment
 from geometry.case import Case, load_case
@@ -35,6 +36,8 @@ from geometry.flank import geometry_datasets
 
 __all__ = [
     "DEFAULT_CASE",
+    "EFFICIENCY_MAP_SPEEDS",
+    "EFFICIENCY_MAP_TORQUES",
     "SEED_TABLE_3_1",
     "bundled_case_path",
     "bundled_cases",
@@ -60,6 +63,12 @@ SEED_TABLE_3_1 = {
     "torque": (50.0, 250.0, 500.0),
     "misalignment": Misalignment(delta_E=-0.15, delta_P=0.12),
 }
+
+#: The default grid of :func:`efficiency_map` (and ``ltca efficiency-map``): pinion
+#: torques [N·m] and pinion speeds [rpm] (the toolkit's choice: light to full load, low
+#: to high speed).
+EFFICIENCY_MAP_TORQUES = (100.0, 250.0, 500.0)
+EFFICIENCY_MAP_SPEEDS = (500.0, 1000.0, 1500.0, 2500.0, 4000.0)
 
 
 def _cases_root():
@@ -129,17 +138,12 @@ def run_analysis(
     torque=None,
     *,
     misalignment: Misalignment | None = None,
-    solver: str | None = None,
     flank: str | None = None,
     options: LTCAOptions | None = None,
+    operating: OperatingConditions | None = None,
+    deviations: tuple | bool | None = None,
     geometry: bool = True,
     progress: bool = False,
-    pinion_speed: float | None = None,
-    lubricant: str = "75W90",
-    temperature: float = 90.0,
-    roughness: float = 0.8,
-    friction_model: str = "xu2007",
-    deviations: tuple | bool | None = None,
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -151,15 +155,16 @@ def run_analysis(
         Pinion torques; default the seed's Table 3.1 values (50, 250, 500).
     misalignment : geometry.assembly.Misalignment, optional
         Default: the case's own ``[misalignment]``.
-    solver : str, optional
-        Solver registry name (default our exact ``active_set``).
     flank : str, optional
         ``"drive"`` (default) or ``"coast"``.
     options : contact.ltca.LTCAOptions, optional
-    geometry : bool
-        Include the four generated flanks as ``/geometry`` (default True).
-    progress : bool
-        Progress bar over the LTCA roll positions.
+        LTCA settings, the solver among them (``LTCAOptions.solver``, default our exact
+        ``active_set``); default ``LTCAOptions()``.
+    operating : friction.operating.OperatingConditions, optional
+        With operating conditions (pinion speed [rpm], lubricant, oil inlet temperature
+        [degC], roughness Rq [µm], friction model) the efficiency stage runs too
+        (``/friction``, :func:`friction.efficiency.efficiency_analysis`); None (default)
+        runs no efficiency stage. ``OperatingConditions()`` gives the toolkit's defaults.
     deviations : (pinion, gear), False or None
         Measured or wear deviations of the (pinion, gear) flanks in contact
         (:mod:`contact.utca.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a CSV/netCDF
@@ -169,30 +174,37 @@ def run_analysis(
         None (default) uses the case's ``[deviations]`` table if it has one
         (``Case.deviations``); ``False`` or ``(None, None)`` ignores it (theoretical
         surfaces only).
-    pinion_speed : float, optional — [rpm]
-        With a speed, the efficiency stage runs too (``/friction``,
-        :func:`friction.efficiency.efficiency_analysis`) with ``lubricant``,
-        ``temperature`` [degC], ``roughness`` (Rq [µm]) and ``friction_model``.
+    geometry : bool
+        Include the four generated flanks as ``/geometry`` (default True).
+    progress : bool
+        Progress bar over the LTCA roll positions.
 
     Returns
     -------
     xarray.DataTree
-        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca`` (and ``/friction`` with a
-        speed); root attributes
+        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca`` (and ``/friction`` with
+        operating conditions); root attributes
         ``case``, ``inputs`` (the case as TOML), per-stage times ``time_*_s``.
 
     Raises
     ------
     InputError
-        Bad case, torque, misalignment or options (the message names the field).
+        Bad case, torque, misalignment, options or operating conditions (the message
+        names the field).
+
+    Notes
+    -----
+    Seed ch. 2 (geometry, ease-off), ch. 3 (UTCA, LTCA), ch. 4 (deviations), ch. 5
+    (efficiency).
     """
     c = resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
     torques = SEED_TABLE_3_1["torque"] if torque is None else torque
     opts = options or LTCAOptions()
-    if solver is not None:
-        opts = dataclasses.replace(opts, solver=solver)
+    if operating is not None and not isinstance(operating, OperatingConditions):
+        raise InputError("operating: must be a friction.operating.OperatingConditions or "
+                         f"None, got {type(operating).__name__}")
     times: dict[str, float] = {}
     tree: dict[str, xr.Dataset] = {}
     t0 = time.perf_counter()
@@ -238,18 +250,11 @@ def run_analysis(
     tree["/easeoff"] = eo_ds
     tree["/utca"] = utca_ds
     tree["/ltca"] = ltca_ds
-    if pinion_speed is not None:
+    if operating is not None:
         from friction.efficiency import efficiency_analysis
 
         t0 = time.perf_counter()
-        tree["/friction"] = efficiency_analysis(
-            ltca_ds,
-            pinion_speed=pinion_speed,
-            lubricant=lubricant,
-            temperature=temperature,
-            roughness=roughness,
-            friction_model=friction_model,
-        )
+        tree["/friction"] = efficiency_analysis(ltca_ds, operating)
         times["friction"] = time.perf_counter() - t0
     mis = c.misalignment
     root = xr.Dataset(
@@ -276,13 +281,12 @@ def run_analysis(
 
 def efficiency_map(
     case: Case | str | os.PathLike[str] | None = None,
-    torque=(100.0, 250.0, 500.0),
-    speed=(500.0, 1000.0, 1500.0, 2500.0, 4000.0),
+    torque=None,
+    speed=None,
     *,
-    temperature=(90.0,),
-    roughness=(0.8,),
-    lubricant: str = "75W90",
-    friction_model: str = "xu2007",
+    temperature=None,
+    roughness=None,
+    operating: OperatingConditions | None = None,
     misalignment: Misalignment | None = None,
     options: LTCAOptions | None = None,
     progress: bool = False,
@@ -296,11 +300,18 @@ def efficiency_map(
     Parameters
     ----------
     case : Case, path, bundled name or None (default case)
-    torque : sequence — [N·m] pinion torques
-    speed : sequence — [rpm] pinion speeds
-    temperature : sequence — [degC] oil inlet temperatures
-    roughness : sequence — [µm] RMS roughness Rq of each surface
-    lubricant, friction_model : str
+    torque : sequence, optional — [N·m]
+        Pinion torques; default :data:`EFFICIENCY_MAP_TORQUES` (100, 250, 500).
+    speed : sequence, optional — [rpm]
+        Pinion speeds; default :data:`EFFICIENCY_MAP_SPEEDS` (500 … 4000).
+    temperature : sequence, optional — [degC]
+        Oil inlet temperatures; default the one of ``operating``.
+    roughness : sequence, optional — [µm]
+        RMS roughness Rq of each surface; default the one of ``operating``.
+    operating : friction.operating.OperatingConditions, optional
+        The lubricant and friction model (and the default temperature and roughness);
+        its pinion speed is replaced by the swept ones. Default
+        ``OperatingConditions()``.
     misalignment, options
         As :func:`run_analysis`.
     progress : bool
@@ -312,9 +323,25 @@ def efficiency_map(
         dims (``torque``, ``speed``, ``temperature``, ``roughness``): ``efficiency`` [1],
         ``power_loss`` [W] (means over the mesh cycles), ``friction_coefficient_mean``,
         ``lambda_ratio_mean`` [1] (load-weighted means over the loaded segments).
+
+    Raises
+    ------
+    InputError
+        Bad case, options or operating point (the message names the field).
+    ModelUnavailableError
+        Unknown lubricant or friction model.
+
+    Notes
+    -----
+    Seed §5.3 (efficiency over operating conditions).
     """
     from friction.efficiency import efficiency_analysis
 
+    op = OperatingConditions() if operating is None else operating
+    torque = EFFICIENCY_MAP_TORQUES if torque is None else torque
+    speed = EFFICIENCY_MAP_SPEEDS if speed is None else speed
+    temperature = (op.temperature,) if temperature is None else temperature
+    roughness = (op.roughness,) if roughness is None else roughness
     c = resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
@@ -332,11 +359,10 @@ def efficiency_map(
             for m, rq in enumerate(roughness):
                 fr = efficiency_analysis(
                     lt,
+                    op,
                     pinion_speed=float(n),
-                    lubricant=lubricant,
                     temperature=float(temp),
                     roughness=float(rq),
-                    friction_model=friction_model,
                 )
                 eff[:, j, k, m] = fr["efficiency_mean"].values
                 loss[:, j, k, m] = fr["power_loss_mean"].values
@@ -392,8 +418,8 @@ def efficiency_map(
         attrs={
             "title": "mechanical efficiency map",
             "case": c.name,
-            "lubricant": lubricant,
-            "friction_model": friction_model,
+            "lubricant": str(op.lubricant),
+            "friction_model": op.friction_model,
             "toolkit_version": __version__,
         },
     )

@@ -41,8 +41,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from friction.hertz import broadcast, checked, result
 from geometry.errors import InputError, ModelUnavailableError
+from geometry.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
     "MU_CAP",
@@ -76,7 +76,8 @@ class FrictionModelRangeWarning(UserWarning):
 #: The input vocabulary shared by all friction models: name → "[units] meaning".
 STANDARD_INPUTS: Mapping[str, str] = MappingProxyType(
     {
-        "hertz_pressure": "[MPa] peak Hertz pressure p_h of the segment",
+        "hertz_pressure": "[MPa] peak Hertz pressure p_h of the segment"
+                          " (geometry.hertz.hertz_line_contact)",
         "slide_to_roll": "[1] SR = V_s / V_e (sign ignored by the models)",
         "entraining_velocity": "[m/s] mean entraining (rolling) velocity V_e = (u1 + u2)/2",
         "sliding_velocity": "[m/s] sliding velocity V_s = |u1 - u2|",
@@ -87,7 +88,8 @@ STANDARD_INPUTS: Mapping[str, str] = MappingProxyType(
         "roughness_2": "[µm] RMS roughness Rq of surface 2",
         "lambda_ratio": "[1] film parameter h_min / sigma",
         "pressure_viscosity": "[1/GPa] pressure-viscosity coefficient",
-        "e_prime": "[MPa] combined modulus E' = 2 / sum((1 - nu^2)/E)",
+        "e_prime": "[MPa] effective modulus E' = 2 E* (EHL convention; E* of"
+                   " geometry.hertz.contact_modulus)",
         "temperature": "[degC] inlet oil temperature",
     }
 )
@@ -217,14 +219,14 @@ def xu2007(
     (|SR|^b3), the pure-rolling limit.
     """
     if len(coefficients) != 9:
-        raise InputError(f"coefficients must have 9 values b1..b9; got {len(coefficients)}")
-    ph = checked("hertz_pressure", hertz_pressure, low=0.0, units="MPa")
-    sr = np.abs(checked("slide_to_roll", slide_to_roll, units="1"))
-    ve = checked("entraining_velocity", entraining_velocity, low=0.0, low_open=True, units="m/s")
-    eta = checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
-    r = checked("radius", radius, low=0.0, low_open=True, units="mm")
-    s1 = checked("roughness_1", roughness_1, low=0.0, high=100.0, units="µm")
-    s2 = checked("roughness_2", roughness_2, low=0.0, high=100.0, units="µm")
+        raise InputError(f"coefficients: must be 9 values b1..b9, got {len(coefficients)}")
+    ph = real_array("hertz_pressure", hertz_pressure, low=0.0, unit="MPa")
+    sr = np.abs(real_array("slide_to_roll", slide_to_roll, unit="1"))
+    ve = real_array("entraining_velocity", entraining_velocity, low=0.0, low_open=True, unit="m/s")
+    eta = real_array("viscosity", viscosity, low=0.0, low_open=True, high=100.0, unit="Pa s")
+    r = real_array("radius", radius, low=0.0, low_open=True, unit="mm")
+    s1 = real_array("roughness_1", roughness_1, low=0.0, high=100.0, unit="µm")
+    s2 = real_array("roughness_2", roughness_2, low=0.0, high=100.0, unit="µm")
     ph, sr, ve, eta, r, s1, s2 = broadcast(
         hertz_pressure=ph,
         slide_to_roll=sr,
@@ -267,7 +269,7 @@ def xu2007(
         )
         mu = np.exp(np.minimum(ln_mu, 700.0))
     mu = _cap("xu2007", mu)
-    return result(np.where(zero, 0.0, mu))
+    return scalar_or_array(np.where(zero, 0.0, mu))
 
 
 # ----------------------------------------------------------------------------- B&K
@@ -336,12 +338,12 @@ def benedict_kelley(
     re-checked against the original here). The original measured CLA (Ra) roughness:
     the Rq → Ra conversion is an assumption of this implementation.
     """
-    w = checked("load_per_length", load_per_length, low=0.0, low_open=True, units="N/mm")
-    vs = checked("sliding_velocity", sliding_velocity, low=0.0, units="m/s")
-    ve = checked("entraining_velocity", entraining_velocity, low=0.0, low_open=True, units="m/s")
-    eta = checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
-    s1 = checked("roughness_1", roughness_1, low=0.0, high=100.0, units="µm")
-    s2 = checked("roughness_2", roughness_2, low=0.0, high=100.0, units="µm")
+    w = real_array("load_per_length", load_per_length, low=0.0, low_open=True, unit="N/mm")
+    vs = real_array("sliding_velocity", sliding_velocity, low=0.0, unit="m/s")
+    ve = real_array("entraining_velocity", entraining_velocity, low=0.0, low_open=True, unit="m/s")
+    eta = real_array("viscosity", viscosity, low=0.0, low_open=True, high=100.0, unit="Pa s")
+    s1 = real_array("roughness_1", roughness_1, low=0.0, high=100.0, unit="µm")
+    s2 = real_array("roughness_2", roughness_2, low=0.0, high=100.0, unit="µm")
     w, vs, ve, eta, s1, s2 = broadcast(
         load_per_length=w,
         sliding_velocity=vs,
@@ -383,7 +385,7 @@ def benedict_kelley(
             stacklevel=2,
         )
     mu = np.where(rolling | low, 0.0, mu)
-    return result(_cap("benedict_kelley", mu))
+    return scalar_or_array(_cap("benedict_kelley", mu))
 
 
 # ----------------------------------------------------------------------------- constant
@@ -412,9 +414,9 @@ def constant(*, value: float = 0.05) -> float:
     every contact point").
     No validity range, hence no warnings.
     """
-    v = checked("value", value, low=0.0, high=1.0, units="1")
+    v = real_array("value", value, low=0.0, high=1.0, unit="1")
     if v.ndim:
-        raise InputError(f"value must be a scalar friction coefficient; got shape {v.shape}")
+        raise InputError(f"value: must be a scalar friction coefficient [1], got shape {v.shape}")
     return float(v)
 
 
@@ -570,7 +572,7 @@ def _evaluate(model: FrictionModel, inputs: Mapping[str, Any]) -> NDArray[np.flo
     out = np.broadcast_to(mu, shape).astype(float)
     if not np.all(np.isfinite(out)):  # a guard: every model is written to stay finite
         raise InputError(f"friction model {model.name!r} produced a non-finite μ for these inputs")
-    return result(out)
+    return scalar_or_array(out)
 
 
 def friction_coefficient(name: str, **inputs: Any) -> NDArray[np.float64] | float:

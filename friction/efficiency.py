@@ -20,6 +20,7 @@ is μ·F·V_s, totals are sums.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import logging
 import math
@@ -44,30 +45,37 @@ from friction.lubricant import (
     thermal_conductivity,
     viscosity,
 )
+from friction.operating import OperatingConditions
 from friction.rolling import rolling_traction
+from geometry.conventions import data_var
 from geometry.errors import InputError
+from geometry.hertz import STEEL, contact_modulus
 
 __all__ = ["efficiency_analysis"]
 
 log = logging.getLogger(__name__)
 
-_E_STEEL, _NU_STEEL = 206_000.0, 0.3
 
-
-def _var(dims, data, units, long_name):
-    return (dims, data, {"units": units, "long_name": long_name})
+def _material(ltca: xr.Dataset) -> tuple[float, float]:
+    """(E [MPa], ν [1]) the LTCA ran with: its ``options`` attribute, else steel."""
+    try:
+        opts = json.loads(ltca.attrs["options"])
+        return float(opts["youngs_modulus"]), float(opts["poisson_ratio"])
+    except (KeyError, TypeError, ValueError):
+        return STEEL
 
 
 def efficiency_analysis(
     ltca: xr.Dataset,
+    operating: OperatingConditions | None = None,
     *,
-    pinion_speed: float = 1500.0,
-    lubricant: str = "75W90",
-    temperature: float = 90.0,
-    roughness: float = 0.8,
-    friction_model: str = "xu2007",
-    youngs_modulus: float = _E_STEEL,
-    poisson_ratio: float = _NU_STEEL,
+    pinion_speed: float | None = None,
+    lubricant: str | None = None,
+    temperature: float | None = None,
+    roughness: float | None = None,
+    friction_model: str | None = None,
+    youngs_modulus: float | None = None,
+    poisson_ratio: float | None = None,
 ) -> xr.Dataset:
     """Friction, power loss and mechanical efficiency of an LTCA result (seed ch. 5).
 
@@ -77,14 +85,20 @@ def efficiency_analysis(
         The ``/ltca`` dataset (needs ``force``, ``load_per_length``, ``pressure_max``,
         ``segment_length``, ``equivalent_radius``, ``contact_point``, ``contact_normal``,
         ``contact_tangent`` and the axes in its attributes).
-    pinion_speed : float — [rpm], > 0
-    lubricant : str
+    operating : friction.operating.OperatingConditions, optional
+        Pinion speed, lubricant, inlet temperature, roughness and friction model; default
+        ``OperatingConditions()`` (1500 rpm, 75W90 at 90 °C, Rq 0.8 µm, xu2007).
+    pinion_speed : float, optional — [rpm], > 0
+    lubricant : str, optional
         Bundled oil name or TOML path (:func:`friction.lubricant.load_lubricant`).
-    temperature : float — [degC] oil inlet temperature
-    roughness : float — [µm] RMS roughness Rq of each surface (> 0)
-    friction_model : str
-        A registered friction model (default ``xu2007``).
-    youngs_modulus, poisson_ratio : float — [MPa], [1] both members
+    temperature : float, optional — [degC] oil inlet temperature
+    roughness : float, optional — [µm] RMS roughness Rq of each surface (> 0)
+    friction_model : str, optional
+        A registered friction model.
+        These five override the fields of ``operating`` of the same names (None: keep).
+    youngs_modulus, poisson_ratio : float, optional — [MPa], [1]
+        Material of both members; default the LTCA's own (the ``options`` attribute of
+        ``ltca``), else steel (:data:`geometry.hertz.STEEL`).
 
     Returns
     -------
@@ -100,8 +114,15 @@ def efficiency_analysis(
     Raises
     ------
     InputError
-        Missing variables, or operating conditions out of range (the message names
-        the field).
+        Missing variables, or operating conditions or material out of range (the message
+        names the field).
+    ModelUnavailableError
+        An unknown lubricant or friction model.
+
+    Notes
+    -----
+    Seed §5.2, Eq. 5.7–5.14; the EHL groups are written in the effective modulus
+    E′ = 2E* (Dowson & Higginson), E* of :func:`geometry.hertz.contact_modulus`.
     """
     need = (
         "force",
@@ -116,15 +137,25 @@ def efficiency_analysis(
     missing = [n for n in need if n not in ltca.variables]
     if missing:
         raise InputError(f"ltca: dataset lacks {missing} (expected contact.ltca.loaded_tca output)")
-    for name, val in (("pinion_speed", pinion_speed), ("roughness", roughness)):
-        if not (math.isfinite(val) and val > 0):
-            raise InputError(f"{name}: must be finite and > 0, got {val!r}")
-    oil = load_lubricant(lubricant)
+    op = OperatingConditions() if operating is None else operating
+    overrides = {k: v for k, v in (("pinion_speed", pinion_speed), ("lubricant", lubricant),
+                                   ("temperature", temperature), ("roughness", roughness),
+                                   ("friction_model", friction_model)) if v is not None}
+    if overrides:
+        op = dataclasses.replace(op, **overrides)  # validated again on construction
+    pinion_speed, temperature, roughness = op.pinion_speed, op.temperature, op.roughness
+    friction_model = op.friction_model
+    e_mat, nu_mat = _material(ltca)
+    youngs_modulus = e_mat if youngs_modulus is None else youngs_modulus
+    poisson_ratio = nu_mat if poisson_ratio is None else poisson_ratio
+    # E′ = 2E*, the Dowson–Higginson modulus the EHL groups of friction.film are written in
+    e_prime = 2.0 * contact_modulus(youngs_modulus, poisson_ratio, youngs_modulus,
+                                    poisson_ratio)
+    oil = load_lubricant(op.lubricant)
     eta0 = float(viscosity(oil, temperature))
     alpha = float(pressure_viscosity_coefficient(oil, temperature))
     beta = float(temperature_viscosity_coefficient(oil, temperature))
     k_oil = float(thermal_conductivity(oil, temperature))
-    e_prime = 2.0 / (2 * (1 - poisson_ratio**2) / youngs_modulus)
     sigma = float(composite_roughness(roughness, roughness))
 
     F = ltca["force"].values  # (T, J, K, S)
@@ -199,24 +230,24 @@ def efficiency_analysis(
     eff = 1.0 - loss / p_in
     dims4 = ("torque", "roll", "pair", "segment")
     data = {
-        "sliding_velocity": _var(dims4, scatter(vs), "m/s", "sliding velocity"),
-        "rolling_velocity": _var(
+        "sliding_velocity": data_var(dims4, scatter(vs), "m/s", "sliding velocity"),
+        "rolling_velocity": data_var(
             dims4, scatter(vr), "m/s", "rolling (entraining) velocity across the contact line"
         ),
-        "slide_to_roll": _var(
+        "slide_to_roll": data_var(
             dims4, scatter(kin["slide_to_roll"]), "1", "slide-to-roll ratio across the contact line"
         ),
-        "film_thickness": _var(dims4, scatter(h), "um", "minimum film thickness"),
-        "lambda_ratio": _var(dims4, scatter(lam), "1", "lambda ratio h_min / sigma"),
-        "friction_coefficient": _var(dims4, scatter(mu), "1", "sliding friction coefficient"),
-        "sliding_loss": _var(dims4, sl, "W", "sliding friction power loss"),
-        "rolling_loss": _var(dims4, rl, "W", "rolling (EHL) power loss"),
-        "power_loss": _var(("torque", "roll"), loss, "W", "instantaneous mesh power loss"),
-        "efficiency": _var(("torque", "roll"), eff, "1", "instantaneous mechanical efficiency"),
-        "power_loss_mean": _var(
+        "film_thickness": data_var(dims4, scatter(h), "um", "minimum film thickness"),
+        "lambda_ratio": data_var(dims4, scatter(lam), "1", "lambda ratio h_min / sigma"),
+        "friction_coefficient": data_var(dims4, scatter(mu), "1", "sliding friction coefficient"),
+        "sliding_loss": data_var(dims4, sl, "W", "sliding friction power loss"),
+        "rolling_loss": data_var(dims4, rl, "W", "rolling (EHL) power loss"),
+        "power_loss": data_var(("torque", "roll"), loss, "W", "instantaneous mesh power loss"),
+        "efficiency": data_var(("torque", "roll"), eff, "1", "instantaneous mechanical efficiency"),
+        "power_loss_mean": data_var(
             ("torque",), loss.mean(axis=1), "W", "mean power loss over the mesh cycles"
         ),
-        "efficiency_mean": _var(
+        "efficiency_mean": data_var(
             ("torque",), eff.mean(axis=1), "1", "mean mechanical efficiency over the mesh cycles"
         ),
     }

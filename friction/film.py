@@ -9,8 +9,12 @@ the friction regime.
 
 Conventions (stated once, used by the whole ``friction`` package)
 -----------------------------------------------------------------
-* Combined modulus E′ = 2 / ((1 − ν₁²)/E₁ + (1 − ν₂²)/E₂), the Dowson–Higginson /
-  Hamrock convention (:func:`friction.hertz.combined_modulus`); it is the seed's E_eq.
+* Effective modulus E′ = 2 / ((1 − ν₁²)/E₁ + (1 − ν₂²)/E₂) = 2E*, the
+  Dowson–Higginson / Hamrock convention in which the groups below are written; it is the
+  seed's E_eq. E′ is used only here and in :mod:`friction.rolling`: compute it as
+  ``2 * geometry.hertz.contact_modulus(E₁, ν₁, E₂, ν₂)`` (E* is the toolkit's one
+  contact modulus, and the Hertz contact of a segment is
+  :func:`geometry.hertz.hertz_line_contact` in E*).
 * Dimensionless groups (Dowson & Higginson 1966; Hamrock 1991)::
 
       U = η₀ u / (E′ R)      speed parameter
@@ -36,8 +40,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from friction.coefficient import FrictionModelRangeWarning
-from friction.hertz import broadcast, checked, result
 from geometry.errors import InputError, ModelUnavailableError
+from geometry.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
     "FILM_THICKNESS_MODELS",
@@ -98,7 +102,7 @@ def ehl_groups(
     radius : float or array — [mm]
         Equivalent radius R, in (0, inf).
     e_prime : float or array — [MPa]
-        Combined modulus E′ (module docstring convention), in (0, inf).
+        Effective modulus E′ = 2E* (module docstring convention), in (0, inf).
 
     Returns
     -------
@@ -117,12 +121,12 @@ def ehl_groups(
     U, G, W (U = η₀ V_r/(E_eq R_eq), G = α E_eq, W = f/(E_eq R_eq)). SI conversion:
     U = η₀ u / (E′·10⁶ · R·10⁻³), G = α·10⁻⁹ · E′·10⁶, W = w′/(E′ R) (N/mm over MPa·mm).
     """
-    u = checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
-    eta = checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
-    alpha = checked("pressure_viscosity", pressure_viscosity, low=0.1, high=100.0, units="1/GPa")
-    w = checked("load_per_length", load_per_length, low=0.0, low_open=True, units="N/mm")
-    r = checked("radius", radius, low=0.0, low_open=True, units="mm")
-    e = checked("e_prime", e_prime, low=0.0, low_open=True, units="MPa")
+    u = real_array("entraining_velocity", entraining_velocity, low=0.0, unit="m/s")
+    eta = real_array("viscosity", viscosity, low=0.0, low_open=True, high=100.0, unit="Pa s")
+    alpha = real_array("pressure_viscosity", pressure_viscosity, low=0.1, high=100.0, unit="1/GPa")
+    w = real_array("load_per_length", load_per_length, low=0.0, low_open=True, unit="N/mm")
+    r = real_array("radius", radius, low=0.0, low_open=True, unit="mm")
+    e = real_array("e_prime", e_prime, low=0.0, low_open=True, unit="MPa")
     u, eta, alpha, w, r, e = broadcast(
         entraining_velocity=u,
         viscosity=eta,
@@ -153,7 +157,7 @@ def _h_min(
     )
     pu, pg, pw = exponents
     r = np.broadcast_to(np.asarray(radius, dtype=float), g.U.shape)
-    return result(coef * g.U**pu * g.G**pg * g.W**pw * r * 1e3)
+    return scalar_or_array(coef * g.U**pu * g.G**pg * g.W**pw * r * 1e3)
 
 
 def dowson_higginson(
@@ -179,7 +183,7 @@ def dowson_higginson(
     radius : float or array — [mm]
         Equivalent radius R, > 0.
     e_prime : float or array — [MPa]
-        Combined modulus E′ = 2/Σ((1 − ν²)/E).
+        Effective modulus E′ = 2/Σ((1 − ν²)/E) = 2E*.
 
     Returns
     -------
@@ -353,12 +357,12 @@ def minimum_film_thickness(
         raise ModelUnavailableError(
             f"unknown film thickness model {model!r}; available: {sorted(FILM_THICKNESS_MODELS)}"
         ) from None
-    phi = checked("thermal_factor", thermal_factor, low=0.0, high=1.0, units="1")
+    phi = real_array("thermal_factor", thermal_factor, low=0.0, high=1.0, unit="1")
     h = np.asarray(
         fn(entraining_velocity, viscosity, pressure_viscosity, load_per_length, radius, e_prime)
     )
     h, phi = broadcast(film_thickness=h, thermal_factor=phi)
-    return result(h * phi)
+    return scalar_or_array(h * phi)
 
 
 # ----------------------------------------------------------------------------- thermal
@@ -396,19 +400,19 @@ def thermal_loading(
     Source: Murch & Wilson (1975); Gupta et al. (1992) write L = (−∂η/∂T) u²/k, which is
     β η₀ u²/k with β as above.
     """
-    beta = checked("temperature_viscosity_coefficient", temperature_viscosity_coefficient,
-                    low=0.0, units="1/K")
-    eta = checked("viscosity", viscosity, low=0.0, low_open=True, high=100.0, units="Pa s")
-    u = checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
-    k = checked("thermal_conductivity", thermal_conductivity, low=0.0, low_open=True,
-                 units="W/(m K)")
+    beta = real_array("temperature_viscosity_coefficient", temperature_viscosity_coefficient,
+                    low=0.0, unit="1/K")
+    eta = real_array("viscosity", viscosity, low=0.0, low_open=True, high=100.0, unit="Pa s")
+    u = real_array("entraining_velocity", entraining_velocity, low=0.0, unit="m/s")
+    k = real_array("thermal_conductivity", thermal_conductivity, low=0.0, low_open=True,
+                 unit="W/(m K)")
     beta, eta, u, k = broadcast(
         temperature_viscosity_coefficient=beta,
         viscosity=eta,
         entraining_velocity=u,
         thermal_conductivity=k,
     )
-    return result(beta * eta * u**2 / k)
+    return scalar_or_array(beta * eta * u**2 / k)
 
 
 def _gupta1992(
@@ -482,7 +486,7 @@ def thermal_reduction_factor(
     hertz_pressure : float or array — [MPa], optional
         Peak Hertz pressure p_h, ≥ 0 (required by gupta1992, ignored by murch_wilson1975).
     e_prime : float or array — [MPa], optional
-        Combined modulus E′ (package convention), > 0 (required by gupta1992).
+        Effective modulus E′ = 2E*, > 0 (required by gupta1992).
     slide_to_roll : float or array — [1], optional
         SR = (u₁ − u₂)/u with u the mean entraining velocity; its magnitude is used
         (required by gupta1992).
@@ -515,7 +519,7 @@ def thermal_reduction_factor(
     J. Lubr. Technol. 97 (1975) 212–216. Reconstruction: the seed cites a thermal
     correction factor for Eq. 5.10 (refs. [5.31], [5.35]) without printing it; which
     correlation those references used is not recoverable from the extraction, so the
-    choice is exposed here by name. The E′ in p_h/E′ is taken in the package convention.
+    choice is exposed here by name. The E′ in p_h/E′ is taken as 2E* (module docstring).
     """
     try:
         fn = THERMAL_REDUCTION_MODELS[model]
@@ -524,15 +528,15 @@ def thermal_reduction_factor(
             f"unknown thermal reduction model {model!r}; available:"
             f" {sorted(THERMAL_REDUCTION_MODELS)}"
         ) from None
-    arrays = {"thermal_loading": checked("thermal_loading", thermal_loading, low=0.0, units="1")}
+    arrays = {"thermal_loading": real_array("thermal_loading", thermal_loading, low=0.0, unit="1")}
     if hertz_pressure is not None:
-        arrays["hertz_pressure"] = checked("hertz_pressure", hertz_pressure, low=0.0, units="MPa")
+        arrays["hertz_pressure"] = real_array("hertz_pressure", hertz_pressure, low=0.0, unit="MPa")
     if e_prime is not None:
-        arrays["e_prime"] = checked("e_prime", e_prime, low=0.0, low_open=True, units="MPa")
+        arrays["e_prime"] = real_array("e_prime", e_prime, low=0.0, low_open=True, unit="MPa")
     if slide_to_roll is not None:
-        arrays["slide_to_roll"] = checked("slide_to_roll", slide_to_roll, units="1")
+        arrays["slide_to_roll"] = real_array("slide_to_roll", slide_to_roll, unit="1")
     full = dict(zip(arrays, broadcast(**arrays), strict=True))
-    return result(
+    return scalar_or_array(
         fn(
             full["thermal_loading"],
             full.get("hertz_pressure"),
@@ -566,10 +570,10 @@ def composite_roughness(
     -----
     Source: seed section 5.2.3 (S_c = √(Rq₁² + Rq₂²)); Hamrock (1991) ch. 23.
     """
-    r1 = checked("roughness_1", roughness_1, low=0.0, units="µm")
-    r2 = checked("roughness_2", roughness_2, low=0.0, units="µm")
+    r1 = real_array("roughness_1", roughness_1, low=0.0, unit="µm")
+    r2 = real_array("roughness_2", roughness_2, low=0.0, unit="µm")
     r1, r2 = broadcast(roughness_1=r1, roughness_2=r2)
-    return result(np.hypot(r1, r2))
+    return scalar_or_array(np.hypot(r1, r2))
 
 
 def lambda_ratio(
@@ -598,8 +602,8 @@ def lambda_ratio(
     Source: seed section 5.2.3 ("ratio of the smooth condition minimum film thickness
     to the RMS surface roughness value"); regimes λ < 1, 1–3, > 3 (seed Eq. 5.11a–c).
     """
-    h = checked("film_thickness", film_thickness, low=0.0, units="µm")
-    s = checked("composite_roughness", composite_roughness, low=0.0, low_open=True, units="µm")
+    h = real_array("film_thickness", film_thickness, low=0.0, unit="µm")
+    s = real_array("composite_roughness", composite_roughness, low=0.0, low_open=True, unit="µm")
     h, s = broadcast(film_thickness=h, composite_roughness=s)
-    return result(h / s)
+    return scalar_or_array(h / s)
 

@@ -25,23 +25,22 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from geometry.errors import InputError
+from geometry.validation import positive, real_array
 
 __all__ = ["surface_velocities"]
 
 _NORMAL_TOLERANCE = 1e-6  # relative mismatch of the normal velocities allowed at contact
 
 
-def _vectors(name: str, value: ArrayLike) -> np.ndarray:
-    arr = np.asarray(value, dtype=float)
+def _vectors(name: str, value: ArrayLike, unit: str = "mm") -> np.ndarray:
+    arr = real_array(name, value, unit=unit)
     if arr.shape[-1:] != (3,):
         raise InputError(f"{name}: must have shape (..., 3), got {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        raise InputError(f"{name}: must be finite")
     return arr
 
 
 def _unit(name: str, value: ArrayLike) -> np.ndarray:
-    v = _vectors(name, value)
+    v = _vectors(name, value, "1")
     norm = np.linalg.norm(v, axis=-1)
     if np.any(np.abs(norm - 1.0) > 1e-6):
         raise InputError(f"{name}: must be unit vectors (|v| = 1 within 1e-6)")
@@ -108,10 +107,8 @@ def surface_velocities(
     t = _unit("tangents", tangents)
     ap, ag = _unit("pinion_axis", pinion_axis), _unit("gear_axis", gear_axis)
     op, og = _vectors("pinion_origin", pinion_origin), _vectors("gear_origin", gear_origin)
-    if not (math.isfinite(pinion_speed) and pinion_speed > 0):
-        raise InputError(f"pinion_speed: must be finite and > 0 [rpm], got {pinion_speed!r}")
-    if not (math.isfinite(ratio) and ratio > 0):
-        raise InputError(f"ratio: must be finite and > 0, got {ratio!r}")
+    pinion_speed = positive("pinion_speed", pinion_speed, "rpm")
+    ratio = positive("ratio", ratio, "1")
     w_p = 2 * math.pi * pinion_speed / 60.0  # rad/s
     w_g = -w_p / ratio
     v_p = w_p * np.cross(ap, r - op) * 1e-3  # mm/s → m/s

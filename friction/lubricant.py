@@ -46,8 +46,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
-from friction.hertz import as_array, result
 from geometry.errors import InputError, ModelUnavailableError
+from geometry.validation import real_array, scalar_or_array
 
 __all__ = [
     "VISCOSITY_MODELS",
@@ -179,15 +179,15 @@ def fit_vogel(temperature: ArrayLike, dynamic_viscosity: ArrayLike) -> VogelFit:
     Seeton, C. J., Tribol. Lett. 22 (2006) 67. The seed interpolates Table 5.2 without
     saying how (NOTES.md asks for a Vogel or Walther fit, not linear).
     """
-    t = as_array("temperature", temperature).ravel()
-    eta = as_array("dynamic_viscosity", dynamic_viscosity).ravel()
+    t = real_array("temperature", temperature, unit="degC", low=_ABSOLUTE_ZERO_C,
+                   low_open=True).ravel()
+    eta = real_array("dynamic_viscosity", dynamic_viscosity, unit="Pa s", low=0.0,
+                     low_open=True).ravel()
     if t.size < 3 or t.size != eta.size:
         raise InputError(
-            "temperature and dynamic_viscosity must have the same length, at least 3, for a"
-            f" Vogel fit; got {t.size} and {eta.size}"
+            "temperature, dynamic_viscosity: must be of the same length, at least 3, for a"
+            f" Vogel fit, got {t.size} and {eta.size}"
         )
-    if np.any(eta <= 0) or not np.all(np.isfinite(eta)):
-        raise InputError("dynamic_viscosity must be finite and in (0, inf) [Pa s]")
     ln_eta = np.log(eta)
     lo, hi = _ABSOLUTE_ZERO_C, float(t.min()) - 1.0
 
@@ -202,8 +202,8 @@ def fit_vogel(temperature: ArrayLike, dynamic_viscosity: ArrayLike) -> VogelFit:
     (ln_a, b), resid = _vogel_lsq(c, t, ln_eta)
     if b <= 0:
         raise InputError(
-            "dynamic_viscosity must decrease with temperature for a Vogel fit (fitted b ="
-            f" {b:g} K ≤ 0)"
+            "dynamic_viscosity: must decrease with temperature for a Vogel fit, got a fitted"
+            f" b = {b:g} K ≤ 0"
         )
     return VogelFit(
         a=math.exp(ln_a),
@@ -239,15 +239,15 @@ def fit_walther(temperature: ArrayLike, kinematic_viscosity: ArrayLike) -> Walth
     for liquid petroleum or hydrocarbon products", Eq. (1)–(2) with Z = ν + 0.7 (the
     additional terms of Z below 2 mm²/s are not implemented).
     """
-    t = as_array("temperature", temperature).ravel()
-    nu = as_array("kinematic_viscosity", kinematic_viscosity).ravel()
+    t = real_array("temperature", temperature, unit="degC", low=_ABSOLUTE_ZERO_C,
+                   low_open=True).ravel()
+    # ≥ 2 mm²/s: the range of ASTM D341's simple form
+    nu = real_array("kinematic_viscosity", kinematic_viscosity, unit="mm2/s", low=2.0).ravel()
     if t.size < 2 or t.size != nu.size:
         raise InputError(
-            "temperature and kinematic_viscosity must have the same length, at least 2, for a"
-            f" Walther fit; got {t.size} and {nu.size}"
+            "temperature, kinematic_viscosity: must be of the same length, at least 2, for a"
+            f" Walther fit, got {t.size} and {nu.size}"
         )
-    if np.any(nu < 2.0) or not np.all(np.isfinite(nu)):
-        raise InputError("kinematic_viscosity must be finite and ≥ 2 [mm2/s] for ASTM D341")
     x = np.log10(t - _ABSOLUTE_ZERO_C)
     y = np.log10(np.log10(nu + _WALTHER_SHIFT))
     slope, intercept = np.polyfit(x, y, 1)
@@ -266,13 +266,14 @@ def _float_tuple(field_name: str, value: Any) -> tuple[float, ...]:
     try:
         out = tuple(float(v) for v in value)
     except (TypeError, ValueError) as exc:
-        raise InputError(f"{field_name} must be a list of numbers; got {value!r}") from exc
+        raise InputError(f"{field_name}: must be a list of numbers, got {value!r}") from exc
     return out
 
 
 def _check_positive(field_name: str, values: tuple[float, ...], units: str) -> None:
-    if not values or not all(math.isfinite(v) and v > 0 for v in values):
-        raise InputError(f"{field_name} must be finite and in (0, inf) [{units}]; got {values!r}")
+    if not values:
+        raise InputError(f"{field_name}: must be at least one value [{units}], got none")
+    real_array(field_name, values, unit=units, low=0.0, low_open=True)
 
 
 @dataclass(frozen=True)
@@ -329,9 +330,10 @@ class Lubricant:
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name.strip():
-            raise InputError(f"name must be a non-empty string; got {self.name!r}")
+            raise InputError(f"name: must be a non-empty string, got {self.name!r}")
         if not isinstance(self.source, str) or not self.source.strip():
-            raise InputError("source must be a non-empty string naming where the table comes from")
+            raise InputError("source: must be a non-empty string naming where the table comes "
+                             f"from, got {self.source!r}")
         tables = {
             "temperature": "degC",
             "dynamic_viscosity": "Pa s",
@@ -351,23 +353,22 @@ class Lubricant:
             )
         t = self.temperature
         if len(t) < 3:
-            raise InputError(f"temperature must have at least 3 values [degC]; got {len(t)}")
-        if not all(math.isfinite(v) and v > _ABSOLUTE_ZERO_C for v in t):
-            raise InputError(f"temperature must be finite and in (-273.15, inf) [degC]; got {t!r}")
+            raise InputError(f"temperature: must be at least 3 values [degC], got {len(t)}")
+        real_array("temperature", t, unit="degC", low=_ABSOLUTE_ZERO_C, low_open=True)
         if any(b <= a for a, b in itertools.pairwise(t)):
-            raise InputError(f"temperature must be strictly increasing [degC]; got {t!r}")
+            raise InputError(f"temperature: must be strictly increasing [degC], got {t!r}")
         for key, units in tables.items():
             if key != "temperature":
                 _check_positive(key, getattr(self, key), units)
         for key in ("dynamic_viscosity", "pressure_viscosity_coefficient", "density"):
             if len(getattr(self, key)) != len(t):
                 raise InputError(
-                    f"{key} must have one value per temperature ({len(t)}); got"
+                    f"{key}: must be one value per temperature ({len(t)}), got"
                     f" {len(getattr(self, key))}"
                 )
         if len(self.thermal_conductivity) not in (1, len(t)):
             raise InputError(
-                f"thermal_conductivity must have 1 value or one per temperature ({len(t)});"
+                f"thermal_conductivity: must be 1 value or one per temperature ({len(t)}),"
                 f" got {len(self.thermal_conductivity)}"
             )
         beta = self.temperature_viscosity_coefficient
@@ -375,23 +376,23 @@ class Lubricant:
             _check_positive("temperature_viscosity_coefficient", beta, "1/K")
             if len(beta) != len(t):
                 raise InputError(
-                    f"temperature_viscosity_coefficient must have one value per temperature"
-                    f" ({len(t)}); got {len(beta)}"
+                    f"temperature_viscosity_coefficient: must be one value per temperature"
+                    f" ({len(t)}), got {len(beta)}"
                 )
         eta = self.dynamic_viscosity
         if any(b >= a for a, b in itertools.pairwise(eta)):
             raise InputError(
-                f"dynamic_viscosity must decrease strictly with temperature [Pa s]; got {eta!r}"
+                f"dynamic_viscosity: must decrease strictly with temperature [Pa s], got {eta!r}"
             )
         for key in ("extrapolation_below", "extrapolation_above"):
             val = getattr(self, key)
             if not isinstance(val, (int, float)) or not math.isfinite(val) or val < 0:
-                raise InputError(f"{key} must be finite and in [0, inf) [K]; got {val!r}")
+                raise InputError(f"{key}: must be finite and >= 0 [K], got {val!r}")
         vogel = fit_vogel(t, eta)
         if vogel.c >= t[0] - self.extrapolation_below:
             raise InputError(
-                f"extrapolation_below must keep the range above the Vogel pole c = {vogel.c:.1f}"
-                f" degC; got {self.extrapolation_below!r} K"
+                "extrapolation_below: must keep the range above the Vogel pole c ="
+                f" {vogel.c:.1f} degC [K], got {self.extrapolation_below!r}"
             )
         object.__setattr__(self, "vogel", vogel)
         nu = np.asarray(eta) / np.asarray(self.density) * 1e6
@@ -425,17 +426,14 @@ def temperature_range(lubricant: Lubricant) -> tuple[float, float]:
 
 
 def _temperature(lubricant: Lubricant, temperature: ArrayLike) -> NDArray[np.float64]:
-    t = as_array("temperature", temperature)
     lo, hi = temperature_range(lubricant)
-    bad = ~np.isfinite(t) | (t < lo) | (t > hi)
-    if np.any(bad):
-        first = t[bad].flat[0] if t.ndim else float(t)
+    try:
+        return real_array("temperature", temperature, unit="degC", low=lo, high=hi)
+    except InputError as exc:
         raise InputError(
-            f"temperature must be in [{lo:g}, {hi:g}] [degC] for lubricant {lubricant.name!r}"
-            f" (table {lubricant.temperature[0]:g}–{lubricant.temperature[-1]:g} degC plus the"
-            f" extrapolation margins); got {first!r}"
-        )
-    return t
+            f"{exc} (lubricant {lubricant.name!r}: table {lubricant.temperature[0]:g}–"
+            f"{lubricant.temperature[-1]:g} degC plus the extrapolation margins)"
+        ) from None
 
 
 def _vogel_eval(lubricant: Lubricant, t: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -491,7 +489,7 @@ def viscosity(
         raise ModelUnavailableError(
             f"unknown viscosity method {method!r}; available: {sorted(VISCOSITY_MODELS)}"
         ) from None
-    return result(model(lubricant, _temperature(lubricant, temperature)))
+    return scalar_or_array(model(lubricant, _temperature(lubricant, temperature)))
 
 
 def kinematic_viscosity(
@@ -520,7 +518,8 @@ def kinematic_viscosity(
     Source: definition; density from :func:`density`.
     """
     eta = np.asarray(viscosity(lubricant, temperature, method))
-    return result(eta / _density_eval(lubricant, as_array("temperature", temperature)) * 1e6)
+    t = real_array("temperature", temperature, unit="degC")
+    return scalar_or_array(eta / _density_eval(lubricant, t) * 1e6)
 
 
 def pressure_viscosity_coefficient(
@@ -552,7 +551,7 @@ def pressure_viscosity_coefficient(
     """
     t = _temperature(lubricant, temperature)
     ln_alpha = np.log(lubricant.pressure_viscosity_coefficient)
-    return result(np.exp(_piecewise_linear(t, lubricant.temperature, ln_alpha)))
+    return scalar_or_array(np.exp(_piecewise_linear(t, lubricant.temperature, ln_alpha)))
 
 
 def _piecewise_linear(
@@ -594,7 +593,7 @@ def density(lubricant: Lubricant, temperature: ArrayLike) -> NDArray[np.float64]
     -----
     Source: seed Table 5.2 (whose densities fall exactly 0.6 kg/m3 per K).
     """
-    return result(_density_eval(lubricant, _temperature(lubricant, temperature)))
+    return scalar_or_array(_density_eval(lubricant, _temperature(lubricant, temperature)))
 
 
 def thermal_conductivity(
@@ -624,8 +623,8 @@ def thermal_conductivity(
     t = _temperature(lubricant, temperature)
     k = lubricant.thermal_conductivity
     if len(k) == 1:
-        return result(np.full_like(t, k[0], dtype=float))
-    return result(_piecewise_linear(t, lubricant.temperature, k))
+        return scalar_or_array(np.full_like(t, k[0], dtype=float))
+    return scalar_or_array(_piecewise_linear(t, lubricant.temperature, k))
 
 
 def temperature_viscosity_coefficient(
@@ -656,11 +655,11 @@ def temperature_viscosity_coefficient(
     """
     t = _temperature(lubricant, temperature)
     if lubricant.temperature_viscosity_coefficient is not None:
-        return result(
+        return scalar_or_array(
             _piecewise_linear(t, lubricant.temperature, lubricant.temperature_viscosity_coefficient)
         )
     v = lubricant.vogel
-    return result(v.b / (t - v.c) ** 2)
+    return scalar_or_array(v.b / (t - v.c) ** 2)
 
 
 # ----------------------------------------------------------------------------- loading
@@ -722,18 +721,20 @@ def lubricant_from_mapping(data: Mapping[str, Any], origin: str = "<mapping>") -
         raise InputError(f"{origin}: missing field(s) {missing}")
     units = data["units"]
     if not isinstance(units, Mapping):
-        raise InputError(f"{origin}: units must be a table of field = unit string")
+        raise InputError(f"{origin}: units: must be a table of field = unit string, got "
+                         f"{type(units).__name__}")
     expected = dict(_REQUIRED_UNITS)
     expected.update({k: v for k, v in _OPTIONAL_UNITS.items() if k in data})
     for key, unit in expected.items():
         if units.get(key) != unit:
             raise InputError(
-                f"{origin}: units.{key} must be {unit!r} (the unit this schema uses); got"
+                f"{origin}: units.{key}: must be {unit!r} (the unit this schema uses), got"
                 f" {units.get(key)!r}"
             )
     extra = data.get("extrapolation", {})
     if not isinstance(extra, Mapping) or set(extra) - {"below", "above"}:
-        raise InputError(f"{origin}: extrapolation must be a table with keys below, above [K]")
+        raise InputError(f"{origin}: extrapolation: must be a table with keys below, above "
+                         f"[K], got {extra!r}")
     kwargs: dict[str, Any] = {
         key: data[key]
         for key in (

@@ -24,7 +24,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from friction.film import ehl_groups, thermal_loading, thermal_reduction_factor
-from friction.hertz import broadcast, checked, peak_pressure, result
+from geometry.hertz import hertz_line_contact
+from geometry.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
     "GOKSEM_HARGREAVES_COEFFICIENT",
@@ -62,7 +63,8 @@ def rolling_traction_isothermal(
     radius : float or array — [mm]
         Equivalent radius R (seed R_eq), > 0.
     e_prime : float or array — [MPa]
-        Combined modulus E′ = 2/Σ((1 − ν²)/E) (seed E_eq).
+        Effective modulus E′ = 2/Σ((1 − ν²)/E) = 2E* (seed E_eq; E* of
+        :func:`geometry.hertz.contact_modulus`).
 
     Returns
     -------
@@ -87,7 +89,7 @@ def rolling_traction_isothermal(
     r = np.broadcast_to(np.asarray(radius, dtype=float), g.U.shape)
     alpha_per_mpa = np.broadcast_to(np.asarray(pressure_viscosity, dtype=float), g.U.shape) * 1e-3
     force = GOKSEM_HARGREAVES_COEFFICIENT * (g.G * g.U) ** 0.658 * g.W**0.0126 * r / alpha_per_mpa
-    return result(force)
+    return scalar_or_array(force)
 
 
 def rolling_traction(
@@ -107,7 +109,8 @@ def rolling_traction(
 
     F_R/l = φ_T · 4.318 (G U)^0.658 W^0.0126 R/α, with φ_T the thermal reduction
     factor of :func:`friction.film.thermal_reduction_factor` at the thermal loading
-    L = β η₀ V_r²/k and the segment's Hertz pressure p_h = √(w′ E′/(2π R)).
+    L = β η₀ V_r²/k and the segment's Hertz peak pressure p_h = 2 w′/(π b)
+    (:func:`geometry.hertz.hertz_line_contact` with E* = E′/2).
 
     Parameters
     ----------
@@ -124,7 +127,7 @@ def rolling_traction(
     radius : float or array — [mm]
         Equivalent radius R, > 0.
     e_prime : float or array — [MPa]
-        Combined modulus E′.
+        Effective modulus E′ = 2E* (E* of :func:`geometry.hertz.contact_modulus`).
     temperature_viscosity_coefficient : float or array — [1/K]
         β = −(1/η₀) dη₀/dT (e.g. from :mod:`friction.lubricant`), ≥ 0.
     thermal_conductivity : float or array — [W/(m K)]
@@ -167,12 +170,15 @@ def rolling_traction(
     big_l = thermal_loading(
         temperature_viscosity_coefficient, viscosity, entraining_velocity, thermal_conductivity
     )
-    ph = peak_pressure(load_per_length, radius, e_prime)
+    # the Hertz peak pressure in E* = E′/2 (the one Hertz line contact of the toolkit)
+    ph = hertz_line_contact(load_per_length, radius,
+                            real_array("e_prime", e_prime, unit="MPa", low=0.0,
+                                       low_open=True) / 2.0).peak_pressure
     phi = np.asarray(
         thermal_reduction_factor(big_l, ph, e_prime, slide_to_roll, model=thermal_model)
     )
     isothermal, phi = broadcast(rolling_traction=isothermal, thermal_factor=phi)
-    return result(phi * isothermal)
+    return scalar_or_array(phi * isothermal)
 
 
 def rolling_power_loss(
@@ -204,8 +210,8 @@ def rolling_power_loss(
     Source: seed text after Eq. 5.10 ("rolling power loss at each contact segment k is
     F_r V_r") and Eq. 5.12 (the segment loss adds the sliding part μ f L V_s).
     """
-    f = checked("rolling_traction", rolling_traction, low=0.0, units="N/mm")
-    ln = checked("length", length, low=0.0, units="mm")
-    v = checked("entraining_velocity", entraining_velocity, low=0.0, units="m/s")
+    f = real_array("rolling_traction", rolling_traction, low=0.0, unit="N/mm")
+    ln = real_array("length", length, low=0.0, unit="mm")
+    v = real_array("entraining_velocity", entraining_velocity, low=0.0, unit="m/s")
     f, ln, v = broadcast(rolling_traction=f, length=ln, entraining_velocity=v)
-    return result(f * ln * v)
+    return scalar_or_array(f * ln * v)

@@ -36,6 +36,7 @@ from scipy.optimize import least_squares
 from geometry.blank import BlankGeometry, blank_geometry
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.pitch_cone import BevelGearDesign
+from geometry.validation import real
 
 __all__ = [
     "PROCESSES",
@@ -63,17 +64,6 @@ TARGETS: dict[str, tuple[str, Callable[[BlankGeometry], float]]] = {
 }
 _ADJUSTABLE = ("de2", "b2", "rc0", "beta_m", "theta_a2", "theta_f2", "c_ham")
 _DESIGN_ANGLES = {"Sigma", "beta_m", "alpha_dD", "alpha_dC", "theta_a2", "theta_f2"}
-
-
-def _num(where: str, v: Any, lo: float, hi: float, unit: str, *, lo_open=False,
-         hi_open=False) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-        raise InputError(f"{where}: must be a finite number [{unit}], got {v!r}")
-    v = float(v)
-    if v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi):
-        rng = f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
-        raise InputError(f"{where}: must be in {rng} {unit}, got {v:g}")
-    return v
 
 
 @dataclass(frozen=True)
@@ -107,16 +97,17 @@ class FlankOptions:
     approach: float = 0.0063
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "path_angle", math.radians(_num(
-            "path_angle", math.degrees(self.path_angle), -90.0, 90.0, "deg", lo_open=True,
-            hi_open=True)))
-        object.__setattr__(self, "te_level", 1e-6 * _num(
-            "te_level", 1e6 * self.te_level, 0.0, 1000.0, "urad", lo_open=True))
-        object.__setattr__(self, "ellipse_length", _num(
-            "ellipse_length", self.ellipse_length, 0.02, 0.9, "(fraction of the face width)",
-            lo_open=True, hi_open=True))
-        object.__setattr__(self, "approach", _num("approach", self.approach, 0.0, 0.1, "mm",
-                                                  lo_open=True))
+        object.__setattr__(self, "path_angle", math.radians(real(
+            "path_angle", math.degrees(real("path_angle", self.path_angle, unit="rad")),
+            unit="deg", low=-90.0, high=90.0, low_open=True, high_open=True)))
+        object.__setattr__(self, "te_level", 1e-6 * real(
+            "te_level", 1e6 * real("te_level", self.te_level, unit="rad"), unit="urad",
+            low=0.0, high=1000.0, low_open=True))
+        object.__setattr__(self, "ellipse_length", real(
+            "ellipse_length", self.ellipse_length, unit="1, fraction of the face width",
+            low=0.02, high=0.9, low_open=True, high_open=True))
+        object.__setattr__(self, "approach", real("approach", self.approach, unit="mm",
+                                                  low=0.0, high=0.1, low_open=True))
 
 
 @dataclass(frozen=True)
@@ -172,14 +163,14 @@ class SynthesisOptions:
                                    ("edge_radius", 0.0, 20.0, "mm")):
             v = getattr(self, name)
             if v is not None:
-                object.__setattr__(self, name, _num(f"synthesis.{name}", v, lo, hi, unit,
-                                                    lo_open=name != "edge_radius"))
+                object.__setattr__(self, name, real(f"synthesis.{name}", v, unit=unit, low=lo,
+                                                    high=hi, low_open=name != "edge_radius"))
         for name in ("blade_angle_drive", "blade_angle_coast"):
             v = getattr(self, name)
             if v is not None:
-                object.__setattr__(self, name, math.radians(_num(
-                    f"synthesis.{name}", math.degrees(v), 0.0, 45.0, "deg", lo_open=True,
-                    hi_open=True)))
+                object.__setattr__(self, name, math.radians(real(
+                    f"synthesis.{name}", math.degrees(real(f"synthesis.{name}", v, unit="rad")),
+                    unit="deg", low=0.0, high=45.0, low_open=True, high_open=True)))
 
     def flank(self, name: str) -> FlankOptions:
         """Prescriptions of pinion flank ``name``."""
@@ -350,7 +341,7 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
     for k, v in tg.items():
         if k not in TARGETS:
             raise InputError(f"targets.{k}: unknown target; accepted: {sorted(TARGETS)}")
-        targets[k] = _num(f"targets.{k}", v, -1e5, 1e5, TARGETS[k][0])
+        targets[k] = real(f"targets.{k}", v, unit=TARGETS[k][0], low=-1e5, high=1e5)
     if fit:
         design = fit_design(design, targets, tuple(adjust))
     syn = dict(raw.get("synthesis", {}))
@@ -373,7 +364,7 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
     options = SynthesisOptions(**kw, **per_flank)
     notes = raw.get("notes", {})
     if not isinstance(notes, Mapping) or not all(isinstance(v, str) for v in notes.values()):
-        raise InputError("notes: must be a table of strings")
+        raise InputError(f"notes: must be a table of strings, got {notes!r}")
     return BasicDesign(name=raw["name"], source=raw["source"], design=design,
                        targets=targets, adjust=tuple(adjust), options=options,
                        comments=dict(notes))

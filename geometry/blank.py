@@ -52,6 +52,7 @@ import xarray as xr
 from geometry._version import __version__
 from geometry.errors import InputError
 from geometry.pitch_cone import BevelGearDesign, PitchCone, pitch_cone
+from geometry.validation import positive, real
 
 __all__ = [
     "BACKLASH_TO_MEAN_NORMAL",
@@ -260,8 +261,8 @@ def spiral_angle_at(R: float, Rm: float, beta_m: float, rc0: float) -> float:
     arg = (R * R - Rm * Rm + 2.0 * Rm * rc0 * math.sin(beta_m)) / (2.0 * R * rc0)
     if not -1.0 <= arg <= 1.0:
         raise InputError(
-            f"rc0 = {rc0:g} mm is out of range: the cutter circle through the mean point "
-            f"does not reach cone distance {R:.4g} mm (increase rc0 or reduce b2)"
+            "rc0: must be large enough for the cutter circle through the mean point to reach "
+            f"cone distance {R:.4g} mm (or reduce b2) [mm], got {rc0:g}"
         )
     return math.asin(arg)
 
@@ -317,18 +318,16 @@ def pinion_spiral_angle_at(
     Annex F sample 2 (β_e1 = 57.544°, β_i1 = 44.879°) to 0.005°; the naive cutter formula
     at the pinion's own cone distances misses by 1.7° and 1.0°.
     """
-    if not (math.isfinite(Rm2) and Rm2 > 0.0):
-        raise InputError(f"Rm2 = {Rm2!r} mm is out of range: accepted (0, inf) mm")
-    if not 0.0 <= zeta_mp < 0.5 * math.pi:
-        raise InputError(f"zeta_mp = {zeta_mp!r} rad is out of range: accepted [0, pi/2) rad")
+    Rm2 = positive("Rm2", Rm2, "mm")
+    zeta_mp = real("zeta_mp", zeta_mp, unit="rad", low=0.0, high=0.5 * math.pi, high_open=True)
     a_p = Rm2 * math.sin(zeta_mp)
     # along the pinion generatrix: distance from the foot of the perpendicular from the gear
     # apex is R_m2 cos ζ_mp + b_x1, at distance a_p from the apex
     s_x = Rm2 * math.cos(zeta_mp) + b_x1
     if not s_x > 0.0:
         raise InputError(
-            f"b_x1 = {b_x1:.4g} mm is out of range: accepted (−R_m2 cos ζ_mp, inf) = "
-            f"({-Rm2 * math.cos(zeta_mp):.4g}, inf) mm (toe beyond the offset foot point)"
+            f"b_x1: must be > −R_m2 cos ζ_mp = {-Rm2 * math.cos(zeta_mp):.4g} (toe beyond the "
+            f"offset foot point) [mm], got {b_x1:.4g}"
         )
     R_x21 = math.hypot(s_x, a_p)
     return spiral_angle_at(R_x21, Rm2, beta_m2, rc0) + math.asin(a_p / R_x21)
@@ -352,8 +351,8 @@ def _offset_azimuth(
     R = math.hypot(A, B)
     if R == 0.0 or abs(C) > R:
         raise InputError(
-            f"a = {a:g} mm is out of range: the pinion face/root cone cannot be made tangent "
-            "to the gear root/face cone (offset too large for the blank)"
+            "a: must be small enough for the pinion face/root cone to be made tangent to the "
+            f"gear root/face cone (offset too large for the blank) [mm], got {a:g}"
         )
     return math.atan2(B, A) + math.asin(C / R)
 
@@ -434,8 +433,8 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
     da2, df2 = d2 + th_a2, d2 - th_f2
     if df2 <= 0.0:
         raise InputError(
-            f"theta_f2 = {math.degrees(th_f2):g} deg is out of range: accepted "
-            f"[0, δ2) = [0, {math.degrees(d2):.4g}) deg"
+            f"theta_f2: must be in [0, δ2) = [0, {math.degrees(d2):.4g}) [deg], got "
+            f"{math.degrees(th_f2):g}"
         )
     t_zF2 = p.t_z2 - (Rm2 * math.sin(th_a2) - ham2 * math.cos(th_a2)) / math.sin(da2)
     t_zR2 = p.t_z2 + (Rm2 * math.sin(th_f2) - hfm2 * math.cos(th_f2)) / math.sin(df2)
@@ -464,17 +463,17 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
     try:
         to_jmn = BACKLASH_TO_MEAN_NORMAL[design.backlash]
     except KeyError:  # pragma: no cover - validated in BevelGearDesign
-        raise InputError(f"backlash = {design.backlash!r} is not accepted: choose one of "
-                         f"{sorted(BACKLASH_TO_MEAN_NORMAL)}") from None
+        raise InputError(f"backlash: must be one of {sorted(BACKLASH_TO_MEAN_NORMAL)}, got "
+                         f"{design.backlash!r}") from None
     j_mn = to_jmn(design, p)
     tan_alpha = 0.5 * (math.tan(p.alpha_nD) + math.tan(p.alpha_nC))
     smn1 = 0.5 * math.pi * m_mn + (ham1 - ham2) * tan_alpha + design.k_t * m_mn - 0.5 * j_mn
     smn2 = math.pi * m_mn - smn1 - j_mn
     if smn2 <= 0.0 or smn1 <= 0.0:
         raise InputError(
-            f"k_t = {design.k_t:g} (with c_ham = {design.c_ham:g}, backlash "
-            f"{design.backlash_value:g} mm) leaves a tooth without thickness: "
-            f"s_mn1 = {smn1:.4g} mm, s_mn2 = {smn2:.4g} mm; accepted: both > 0"
+            f"k_t: must leave both teeth a thickness s_mn > 0 (with c_ham = {design.c_ham:g}, "
+            f"backlash {design.backlash_value:g} mm) [1], got {design.k_t:g}: "
+            f"s_mn1 = {smn1:.4g} mm, s_mn2 = {smn2:.4g} mm"
         )
 
     # spiral angles at heel and toe: gear on its own cutter circle, pinion via the gear's
@@ -514,9 +513,8 @@ def _member(
     hfi = hfm - (Rm - Ri) * math.tan(theta_f)
     if hai <= 0.0 or hfi <= 0.0:
         raise InputError(
-            f"theta_a2/theta_f2 (or b2) out of range: the tooth vanishes at the toe of the "
-            f"member with {z} teeth (h_ai = {hai:.4g} mm, h_fi = {hfi:.4g} mm); accepted: both "
-            "> 0"
+            "theta_a2, theta_f2 (or b2): must leave the tooth a depth at the toe, h_ai and h_fi "
+            f"> 0 [mm], got h_ai = {hai:.4g}, h_fi = {hfi:.4g} at the member with {z} teeth"
         )
     s_d, c_d = math.sin(delta), math.cos(delta)
     de, di = 2.0 * Re * s_d, 2.0 * Ri * s_d
@@ -582,7 +580,7 @@ def in_degrees(obj: Any) -> dict[str, Any]:
         If ``obj`` is not one of the dataclasses above.
     """
     if not (is_dataclass(obj) and not isinstance(obj, type)):
-        raise InputError(f"obj must be a blank-geometry dataclass, got {type(obj).__name__}")
+        raise InputError(f"obj: must be a blank-geometry dataclass, got {type(obj).__name__}")
     angles = _angle_names(obj)
     out: dict[str, Any] = {}
     for f in fields(obj):
@@ -676,7 +674,7 @@ def blank_dataset(geom: BlankGeometry) -> xr.Dataset:
         If ``geom`` is not a :class:`BlankGeometry`.
     """
     if not isinstance(geom, BlankGeometry):
-        raise InputError(f"geom must be a BlankGeometry, got {type(geom).__name__}")
+        raise InputError(f"geom: must be a BlankGeometry, got {type(geom).__name__}")
     members = (geom.pinion, geom.gear)
     data_vars: dict[str, Any] = {}
     for name, (units, long_name) in _MEMBER_META.items():

@@ -36,6 +36,7 @@ from geometry.assembly import HANDS, Misalignment
 from geometry.cutter import PROFILE_TYPES, Blade
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.machine import PROCESSES, MachineSettings
+from geometry.validation import integer, positive, real
 
 __all__ = [
     "FLANKS",
@@ -110,28 +111,20 @@ class Blank:
     edge_break_radius: float = 0.5
 
     def __post_init__(self) -> None:
-        if isinstance(self.teeth, bool) or not isinstance(self.teeth, int) or not (
-                3 <= self.teeth <= 500):
-            raise InputError(f"teeth: must be an integer in [3, 500], got {self.teeth!r}")
+        integer("teeth", self.teeth, 3, 500)
         for name in ("face_width", "outer_cone_distance", "pitch_angle", "face_angle",
                      "root_angle", "pitch_apex", "face_apex", "root_apex", "outer_addendum",
                      "outer_dedendum", "edge_break_radius"):
-            val = getattr(self, name)
-            if isinstance(val, bool) or not isinstance(val, (int, float)) or not math.isfinite(
-                    val):
-                raise InputError(f"{name}: must be a finite number, got {val!r}")
-            object.__setattr__(self, name, float(val))
-        if self.outer_cone_distance <= 0:
-            raise InputError(
-                f"outer_cone_distance: must be > 0 mm, got {self.outer_cone_distance}")
+            unit = "rad" if name.endswith("_angle") else "mm"
+            object.__setattr__(self, name, real(name, getattr(self, name), unit=unit))
+        positive("outer_cone_distance", self.outer_cone_distance, "mm")
         if not 0 < self.face_width < self.outer_cone_distance:
             raise InputError(
                 f"face_width: must be in (0, outer_cone_distance = {self.outer_cone_distance}) "
-                f"mm, got {self.face_width}")
+                f"[mm], got {self.face_width}")
         for name in ("pitch_angle", "face_angle", "root_angle"):
-            v = getattr(self, name)
-            if not 0 < v <= 0.5 * math.pi + 1e-12:
-                raise InputError(f"{name}: must be in (0, 90] deg, got {_fmt(v / _DEG)}")
+            real(name, getattr(self, name), unit="deg", low=0.0, high=0.5 * math.pi + 1e-12,
+                 low_open=True, scale=_DEG)
         if not (self.root_angle <= self.pitch_angle <= self.face_angle
                 and self.root_angle < self.face_angle):
             raise InputError(
@@ -142,16 +135,14 @@ class Blank:
             if abs(getattr(self, name)) >= self.outer_cone_distance:
                 raise InputError(
                     f"{name}: must be in (-R_e, R_e) = (-{self.outer_cone_distance}, "
-                    f"{self.outer_cone_distance}) mm, got {getattr(self, name)}")
-        if self.outer_addendum < 0:
-            raise InputError(f"outer_addendum: must be >= 0 mm, got {self.outer_addendum}")
-        if self.outer_dedendum <= 0:
-            raise InputError(f"outer_dedendum: must be > 0 mm, got {self.outer_dedendum}")
+                    f"{self.outer_cone_distance}) [mm], got {getattr(self, name)}")
+        real("outer_addendum", self.outer_addendum, unit="mm", low=0.0)
+        positive("outer_dedendum", self.outer_dedendum, "mm")
         depth = self.outer_addendum + self.outer_dedendum
         if not 0 < self.edge_break_radius < depth:
             raise InputError(
                 f"edge_break_radius: must be in (0, outer_addendum + outer_dedendum = "
-                f"{_fmt(depth)}) mm, got {self.edge_break_radius}")
+                f"{_fmt(depth)}) [mm], got {self.edge_break_radius}")
         # consistency: face and root cones through the outer addendum / dedendum points
         d = self.pitch_angle
         zp = -self.pitch_apex
@@ -384,7 +375,7 @@ def _fields(table: Mapping, schema: dict, path: str) -> dict[str, Any]:
             out[key] = tuple(float(v) for v in val)
         else:
             if isinstance(val, bool) or not isinstance(val, (int, float)):
-                raise InputError(f"{where}: must be a number ({unit}), got {val!r}")
+                raise InputError(f"{where}: must be a number [{unit}], got {val!r}")
             if not math.isfinite(val):
                 raise InputError(f"{where}: must be finite, got {val!r}")
             out[key] = float(val) * (_DEG if unit == "deg" else 1.0)

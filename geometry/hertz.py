@@ -35,8 +35,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.errors import InputError
-from geometry.validation import real, real_array
+from geometry.validation import broadcast, real, real_array
 
 __all__ = ["STEEL", "HertzLineContact", "contact_modulus", "hertz_line_contact"]
 
@@ -83,7 +82,7 @@ class HertzLineContact(NamedTuple):
     peak_pressure: np.ndarray  # [MPa] p₀ (0 where the load is 0)
 
 
-def hertz_line_contact(load_per_length, radius, modulus: float) -> HertzLineContact:
+def hertz_line_contact(load_per_length, radius, modulus) -> HertzLineContact:
     """Half-width and peak pressure of a Hertz line contact (Johnson Eq. 4.43–4.45).
 
     Parameters
@@ -92,8 +91,8 @@ def hertz_line_contact(load_per_length, radius, modulus: float) -> HertzLineCont
         w′ ≥ 0.
     radius : float or ndarray — [mm]
         Equivalent radius R = R₁R₂/(R₁ + R₂) > 0 (seed Eq. 2.13).
-    modulus : float — [MPa]
-        Contact modulus E* (:func:`contact_modulus`), > 0.
+    modulus : float or ndarray — [MPa]
+        Contact modulus E* (:func:`contact_modulus`), > 0 (usually one value).
 
     Returns
     -------
@@ -106,16 +105,17 @@ def hertz_line_contact(load_per_length, radius, modulus: float) -> HertzLineCont
     ------
     InputError
         A negative or non-finite load, a radius or modulus not finite and positive, or
-        shapes that do not broadcast.
+        shapes that do not broadcast (the message names the fields).
+
+    Notes
+    -----
+    Johnson (1985) Eq. 4.43 (b) and 4.44–4.45 (p₀ = 2P/(πb)); the peak pressure is
+    computed from b so that b and p₀ carry the load w′ = π b p₀ / 2 to rounding.
     """
     w = real_array("load_per_length", load_per_length, unit="N/mm", low=0.0)
     r = real_array("radius", radius, unit="mm", low=0.0, low_open=True)
-    e_star = real("modulus", modulus, unit="MPa", low=0.0, low_open=True)
-    try:
-        w, r = np.broadcast_arrays(w, r)
-    except ValueError:
-        raise InputError(f"load_per_length, radius: shapes {np.shape(w)} and {np.shape(r)} "
-                         "do not broadcast together") from None
+    e_star = real_array("modulus", modulus, unit="MPa", low=0.0, low_open=True)
+    w, r, e_star = broadcast(load_per_length=w, radius=r, modulus=e_star)
     b = np.sqrt(4.0 * w * r / (math.pi * e_star))
     with np.errstate(divide="ignore", invalid="ignore"):
         p0 = np.where(b > 0.0, 2.0 * w / (math.pi * np.where(b > 0.0, b, 1.0)), 0.0)

@@ -46,6 +46,7 @@ from typing import Any
 from scipy.optimize import brentq
 
 from geometry.errors import InputError, ModelUnavailableError
+from geometry.validation import integer, one_of, real
 
 __all__ = [
     "BACKLASH_KINDS",
@@ -67,58 +68,6 @@ BACKLASH_KINDS = ("j_en", "j_et2", "j_mn")
 _DEG = math.pi / 180.0
 #: factor 1.2 of the approximate gear pitch angle of Method 1 (ISO 23509 cl. 5, Method 1)
 _DELTA_INT_FACTOR = 1.2
-
-
-# --------------------------------------------------------------------------- validation
-def _number(name: str, value: Any, accepted: str) -> float:
-    if isinstance(value, bool):
-        raise InputError(f"{name} must be a real number ({accepted}), got {value!r}")
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"{name} must be a real number ({accepted}), got {value!r}") from None
-    if not math.isfinite(v):
-        raise InputError(f"{name} must be finite ({accepted}), got {value!r}")
-    return v
-
-
-def _in_range(
-    name: str,
-    value: Any,
-    lo: float,
-    hi: float,
-    unit: str,
-    *,
-    lo_open: bool = False,
-    hi_open: bool = False,
-    scale: float = 1.0,
-) -> float:
-    """Check lo ≤ value ≤ hi (open ends where asked); the message shows value/scale in unit."""
-    accepted = (
-        f"accepted range {'(' if lo_open else '['}{lo / scale:g}, {hi / scale:g}"
-        f"{')' if hi_open else ']'} {unit}".rstrip()
-    )
-    v = _number(name, value, accepted)
-    if (v < lo or (lo_open and v == lo)) or (v > hi or (hi_open and v == hi)):
-        raise InputError(f"{name} = {v / scale:g} {unit} is out of range: {accepted}".strip())
-    return v
-
-
-def _integer(name: str, value: Any, lo: int, hi: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise InputError(f"{name} must be an integer in [{lo}, {hi}], got {value!r}")
-    if isinstance(value, float) and (not math.isfinite(value) or value != int(value)):
-        raise InputError(f"{name} must be an integer in [{lo}, {hi}], got {value!r}")
-    v = int(value)
-    if not lo <= v <= hi:
-        raise InputError(f"{name} = {v} is out of range: accepted integers [{lo}, {hi}]")
-    return v
-
-
-def _choice(name: str, value: Any, choices: tuple[Any, ...]) -> Any:
-    if value not in choices:
-        raise InputError(f"{name} = {value!r} is not accepted: choose one of {list(choices)}")
-    return value
 
 
 # --------------------------------------------------------------------------- input data
@@ -206,53 +155,53 @@ class BevelGearDesign:
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
-        method = _integer("method", self.method, 0, 9)
+        method = integer("method", self.method, 0, 9, allow_float=True)
         if method not in PITCH_CONE_METHODS:
             raise ModelUnavailableError(
                 f"method = {method} is not available: implemented ISO 23509 pitch-cone methods "
                 f"are {sorted(PITCH_CONE_METHODS)} (2 Oerlikon and 3 Klingelnberg are not)"
             )
         set_(self, "method", method)
-        z1 = _integer("z1", self.z1, 5, 500)
-        z2 = _integer("z2", self.z2, z1, 500)
+        z1 = integer("z1", self.z1, 5, 500, allow_float=True)
+        z2 = integer("z2", self.z2, z1, 500, allow_float=True)
         set_(self, "z1", z1)
         set_(self, "z2", z2)
-        sigma = _in_range("Sigma", self.Sigma, 0.0, math.pi, "deg",
-                          lo_open=True, hi_open=True, scale=_DEG)
+        sigma = real("Sigma", self.Sigma, unit="deg", low=0.0, high=math.pi,
+                     low_open=True, high_open=True, scale=_DEG)
         if math.cos(sigma) <= -z1 / z2:
             raise InputError(
-                f"Sigma = {sigma / _DEG:g} deg is out of range: accepted cos Σ > −z1/z2 = "
-                f"{-z1 / z2:.4f} (gear pitch angle below 90°; internal bevel gears are not "
-                "modelled)"
+                f"Sigma: must have cos Σ > −z1/z2 = {-z1 / z2:.4f} (gear pitch angle below "
+                f"90°; internal bevel gears are not modelled) [deg], got {sigma / _DEG:g}"
             )
         set_(self, "Sigma", sigma)
-        de2 = _in_range("de2", self.de2, 0.0, 1e5, "mm", lo_open=True)
+        de2 = real("de2", self.de2, unit="mm", low=0.0, high=1e5, low_open=True)
         set_(self, "de2", de2)
-        set_(self, "b2", _in_range("b2", self.b2, 0.0, de2 / 2, "mm",
-                                   lo_open=True, hi_open=True))
-        a = _in_range("a", self.a, 0.0, de2 / 2, "mm", hi_open=True)
+        set_(self, "b2", real("b2", self.b2, unit="mm", low=0.0, high=de2 / 2,
+                              low_open=True, high_open=True))
+        a = real("a", self.a, unit="mm", low=0.0, high=de2 / 2, high_open=True)
         if method == 0 and a != 0.0:
-            raise InputError(f"a = {a:g} mm is out of range for method 0: accepted [0, 0] mm "
-                             "(use method 1 for hypoid gears)")
+            raise InputError(f"a: must be 0 for method 0 (use method 1 for hypoid gears) [mm], "
+                             f"got {a:g}")
         set_(self, "a", a)
-        set_(self, "beta_m", _in_range("beta_m", self.beta_m, 0.0, 70 * _DEG, "deg",
-                                       scale=_DEG))
-        set_(self, "rc0", _in_range("rc0", self.rc0, 0.0, 10 * de2, "mm", lo_open=True))
+        set_(self, "beta_m", real("beta_m", self.beta_m, unit="deg", low=0.0,
+                                  high=70 * _DEG, scale=_DEG))
+        set_(self, "rc0", real("rc0", self.rc0, unit="mm", low=0.0, high=10 * de2,
+                               low_open=True))
         for name in ("alpha_dD", "alpha_dC"):
-            set_(self, name, _in_range(name, getattr(self, name), 0.0, 45 * _DEG, "deg",
-                                       lo_open=True, hi_open=True, scale=_DEG))
-        set_(self, "f_alim", _in_range("f_alim", self.f_alim, 0.0, 1.0, ""))
-        set_(self, "c_ham", _in_range("c_ham", self.c_ham, 0.0, 0.5, ""))
-        set_(self, "k_d", _in_range("k_d", self.k_d, 0.0, 4.0, "", lo_open=True))
-        set_(self, "k_c", _in_range("k_c", self.k_c, 0.0, 0.5, ""))
-        set_(self, "k_t", _in_range("k_t", self.k_t, -0.5, 0.5, ""))
-        _choice("backlash", self.backlash, BACKLASH_KINDS)
-        set_(self, "backlash_value", _in_range("backlash_value", self.backlash_value,
-                                               0.0, 2.0, "mm"))
+            set_(self, name, real(name, getattr(self, name), unit="deg", low=0.0,
+                                  high=45 * _DEG, low_open=True, high_open=True, scale=_DEG))
+        set_(self, "f_alim", real("f_alim", self.f_alim, unit="1", low=0.0, high=1.0))
+        set_(self, "c_ham", real("c_ham", self.c_ham, unit="1", low=0.0, high=0.5))
+        set_(self, "k_d", real("k_d", self.k_d, unit="1", low=0.0, high=4.0, low_open=True))
+        set_(self, "k_c", real("k_c", self.k_c, unit="1", low=0.0, high=0.5))
+        set_(self, "k_t", real("k_t", self.k_t, unit="1", low=-0.5, high=0.5))
+        one_of("backlash", self.backlash, BACKLASH_KINDS)
+        set_(self, "backlash_value", real("backlash_value", self.backlash_value, unit="mm",
+                                          low=0.0, high=2.0))
         for name in ("theta_a2", "theta_f2"):
-            set_(self, name, _in_range(name, getattr(self, name), 0.0, 20 * _DEG, "deg",
-                                       scale=_DEG))
-        _choice("hand", self.hand, HANDS)
+            set_(self, name, real(name, getattr(self, name), unit="deg", low=0.0,
+                                  high=20 * _DEG, scale=_DEG))
+        one_of("hand", self.hand, HANDS)
 
     @property
     def u(self) -> float:
@@ -284,7 +233,7 @@ class BevelGearDesign:
             raise InputError(f"unknown design field(s) {unknown}: accepted {sorted(names)}")
         converted: dict[str, Any] = dict(values)
         for name in _ANGLE_INPUTS & set(values):
-            converted[name] = _number(name, values[name], "an angle in degrees") * _DEG
+            converted[name] = real(name, values[name], unit="deg") * _DEG
         try:
             return cls(**converted)
         except TypeError as exc:  # missing required fields
@@ -408,7 +357,7 @@ def hypoid_pitch_angles(zeta_m: float, eta: float, Sigma: float) -> tuple[float,
     reconstructed from the geometry of tangent cones.
     """
     if not (zeta_m > 0.0 and eta > 0.0):
-        raise InputError(f"zeta_m and eta must be > 0 rad, got {zeta_m!r}, {eta!r}")
+        raise InputError(f"zeta_m, eta: must be > 0 [rad], got {zeta_m!r}, {eta!r}")
     s_sig, c_sig = math.sin(Sigma), math.cos(Sigma)
     s_z, c_z = math.sin(zeta_m), math.cos(zeta_m)
     s_e, c_e = math.sin(eta), math.cos(eta)
@@ -558,8 +507,8 @@ def _bevel_result(
 def _check_face_width(design: BevelGearDesign, Re2: float) -> None:
     if design.b2 >= Re2:
         raise InputError(
-            f"b2 = {design.b2:g} mm is out of range: accepted (0, R_e2) = (0, {Re2:.4g}) mm "
-            "for this pitch cone"
+            f"b2: must be in (0, R_e2) = (0, {Re2:.4g}) for this pitch cone [mm], got "
+            f"{design.b2:g}"
         )
 
 
@@ -613,8 +562,8 @@ def _method_1(design: BevelGearDesign) -> PitchCone:
     delta_int2 = math.atan2(u * math.sin(sigma), _DELTA_INT_FACTOR * (1.0 + u * math.cos(sigma)))
     r2 = 0.5 * (design.de2 - design.b2 * math.sin(delta_int2))
     if a >= r2:
-        raise InputError(f"a = {a:g} mm is out of range: accepted [0, r_mpt2) = [0, {r2:.4g}) mm "
-                         "(offset below the gear mean pitch radius)")
+        raise InputError(f"a: must be in [0, r_mpt2) = [0, {r2:.4g}) (offset below the gear "
+                         f"mean pitch radius) [mm], got {a:g}")
     if a == 0.0:
         # limit a → 0 of the Gleason conditions: ρ_lim stays finite only if the two pitch
         # apexes meet, i.e. the bevel pitch cone, with Method 1's calculation point r_mpt2
@@ -639,10 +588,9 @@ def _method_1(design: BevelGearDesign) -> PitchCone:
     if bracket is None:
         finite = [v for v in gs if math.isfinite(v)]
         raise InputError(
-            f"rc0 = {rc0:g} mm: no Method 1 pitch cone has a limit radius equal to the cutter "
-            f"radius for a = {a:g} mm, beta_m = {beta1 / _DEG:g} deg "
-            f"({len(finite)} of {n} trial shapes feasible); accepted: a larger rc0 or a "
-            "smaller offset"
+            "rc0: must be large enough for a Method 1 pitch cone whose limit radius equals "
+            f"the cutter radius at a = {a:g} mm, beta_m = {beta1 / _DEG:g} deg (or use a "
+            f"smaller offset) [mm], got {rc0:g} ({len(finite)} of {n} trial shapes feasible)"
         )
     x = brentq(g, *bracket, xtol=1e-15, rtol=1e-15, maxiter=200)
     st = _hypoid_state(x, a, r2, u, beta1, sigma)
@@ -652,9 +600,9 @@ def _method_1(design: BevelGearDesign) -> PitchCone:
     beta2, zeta_mp = st["beta_m2"], st["zeta_mp"]
     if beta2 <= 0.0:
         raise InputError(
-            f"beta_m = {beta1 / _DEG:g} deg is out of range for method 1: accepted "
-            f"β_m1 > ζ_mp = {zeta_mp / _DEG:.4g} deg (the gear spiral angle would be "
-            f"{beta2 / _DEG:.4g} deg, of the wrong hand)"
+            f"beta_m: must be > ζ_mp = {zeta_mp / _DEG:.4g} for method 1 (the gear spiral "
+            f"angle would be {beta2 / _DEG:.4g} deg, of the wrong hand) [deg], got "
+            f"{beta1 / _DEG:g}"
         )
     alpha_lim = limit_pressure_angle(delta1, delta2, Rm1, Rm2, beta1, beta2, zeta_mp)
     rho = limit_radius(delta1, delta2, Rm1, Rm2, beta1, beta2, alpha_lim)

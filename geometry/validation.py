@@ -16,11 +16,13 @@ These functions sit at the bottom of the chain (``geometry``) so that ``contact`
 
 Public functions
 ----------------
-real          a finite real number, optionally within bounds
-positive      a finite real number > 0 (optionally ≤ an upper bound)
-real_array    a finite float array, optionally within bounds and of a given rank
-integer       an integer within bounds (bool refused)
-one_of        a value from a fixed set of choices
+real             a finite real number, optionally within bounds
+positive         a finite real number > 0 (optionally ≤ an upper bound)
+real_array       a finite float array, optionally within bounds and of a given rank
+broadcast        arrays broadcast together, or an error naming them and their shapes
+scalar_or_array  a Python float for a 0-d result, the array otherwise
+integer          an integer within bounds (bool refused)
+one_of           a value from a fixed set of choices
 """
 
 from __future__ import annotations
@@ -32,22 +34,24 @@ import numpy as np
 
 from geometry.errors import InputError
 
-__all__ = ["integer", "one_of", "positive", "real", "real_array"]
+__all__ = ["broadcast", "integer", "one_of", "positive", "real", "real_array", "scalar_or_array"]
 
 
 def _unit(unit: str) -> str:
     return f" [{unit}]" if unit else ""
 
 
-def _accepted(low: float | None, high: float | None, low_open: bool, high_open: bool) -> str:
+def _accepted(low: float | None, high: float | None, low_open: bool, high_open: bool,
+              scale: float = 1.0) -> str:
     """Words for the accepted set: 'finite', 'finite and > 0', 'in [0, 0.5)' …"""
     if low is None and high is None:
         return "finite"
     if high is None:
-        return f"finite and {'>' if low_open else '>='} {low:g}"
+        return f"finite and {'>' if low_open else '>='} {low / scale:g}"
     if low is None:
-        return f"finite and {'<' if high_open else '<='} {high:g}"
-    return f"in {'(' if low_open else '['}{low:g}, {high:g}{')' if high_open else ']'}"
+        return f"finite and {'<' if high_open else '<='} {high / scale:g}"
+    return (f"in {'(' if low_open else '['}{low / scale:g}, {high / scale:g}"
+            f"{')' if high_open else ']'}")
 
 
 def _inside(v, low, high, low_open, high_open):
@@ -60,7 +64,8 @@ def _inside(v, low, high, low_open, high_open):
 
 
 def real(name: str, value: Any, *, unit: str = "", low: float | None = None,
-         high: float | None = None, low_open: bool = False, high_open: bool = False) -> float:
+         high: float | None = None, low_open: bool = False, high_open: bool = False,
+         scale: float = 1.0) -> float:
     """A finite real number within optional bounds, as a Python float.
 
     Parameters
@@ -68,11 +73,15 @@ def real(name: str, value: Any, *, unit: str = "", low: float | None = None,
     name : str
         The field's name, as the caller's signature or the case file spells it.
     value : Any
-        The value given (bool is refused: it is not a number here).
+        The value given (bool and text are refused: they are not numbers here).
     unit : str
         UDUNITS unit shown in the message (``"mm"``, ``"rad"``, ``"1"``; ``""`` for none).
     low, high : float, optional
         Bounds; ``low_open``/``high_open`` exclude them.
+    scale : float
+        Size of one ``unit`` in the value's own unit: the message shows the bounds and the
+        value divided by it (an angle held in rad is reported in deg with
+        ``unit="deg", scale=math.pi / 180``); the value returned is not scaled.
 
     Returns
     -------
@@ -83,8 +92,8 @@ def real(name: str, value: Any, *, unit: str = "", low: float | None = None,
     InputError
         ``<name>: must be <accepted> [<unit>], got <value>``.
     """
-    accepted = _accepted(low, high, low_open, high_open)
-    if isinstance(value, (bool, np.bool_)):
+    accepted = _accepted(low, high, low_open, high_open, scale)
+    if isinstance(value, (bool, np.bool_, str, bytes)):
         raise InputError(f"{name}: must be a real number, {accepted}{_unit(unit)}, "
                          f"got {value!r}")
     try:
@@ -93,7 +102,8 @@ def real(name: str, value: Any, *, unit: str = "", low: float | None = None,
         raise InputError(f"{name}: must be a real number, {accepted}{_unit(unit)}, "
                          f"got {value!r}") from None
     if not bool(_inside(v, low, high, low_open, high_open)):
-        raise InputError(f"{name}: must be {accepted}{_unit(unit)}, got {value!r}")
+        got = repr(value) if scale == 1.0 else f"{v / scale:g}"
+        raise InputError(f"{name}: must be {accepted}{_unit(unit)}, got {got}")
     return v
 
 
@@ -129,7 +139,7 @@ def real_array(name: str, value: Any, *, unit: str = "", low: float | None = Non
     name, unit, low, high, low_open, high_open
         As :func:`real`.
     value : array_like
-        Numbers (any shape, or exactly ``ndim`` dimensions).
+        Numbers (any shape, or exactly ``ndim`` dimensions; text and booleans refused).
     ndim : int, optional
         Required number of dimensions.
 
@@ -144,10 +154,14 @@ def real_array(name: str, value: Any, *, unit: str = "", low: float | None = Non
         message gives how many and the first of them).
     """
     accepted = _accepted(low, high, low_open, high_open)
-    if isinstance(value, (bool, np.bool_)):
+    if isinstance(value, (bool, np.bool_, str, bytes)):
         raise InputError(f"{name}: must be real numbers, {accepted}{_unit(unit)}, "
                          f"got {value!r}")
     try:
+        if not isinstance(value, np.ndarray):
+            value = np.asarray(value)
+        if value.dtype.kind in "USb":  # text and booleans are not numbers here
+            raise TypeError
         arr = np.array(value, dtype=float)
     except (TypeError, ValueError):
         raise InputError(f"{name}: must be real numbers, {accepted}{_unit(unit)}, got "
@@ -157,13 +171,65 @@ def real_array(name: str, value: Any, *, unit: str = "", low: float | None = Non
     ok = _inside(arr, low, high, low_open, high_open)
     if not np.all(ok):
         bad = arr[~ok]
-        raise InputError(f"{name}: must be {accepted}{_unit(unit)}, got {bad.size} "
-                         f"value(s) outside, e.g. {float(bad.flat[0])!r}")
+        raise InputError(f"{name}: must be {accepted}{_unit(unit)}, got {bad.size} of "
+                         f"{arr.size} value(s) outside, e.g. {float(bad.flat[0])!r}")
     return arr
 
 
-def integer(name: str, value: Any, low: int | None = None, high: int | None = None) -> int:
-    """An integer within optional inclusive bounds (bool and non-integral floats refused).
+def broadcast(**arrays: Any) -> tuple[np.ndarray, ...]:
+    """The arrays broadcast together (read-only views), in the order given.
+
+    Parameters
+    ----------
+    **arrays : ndarray
+        Each array by its field name (the names appear in the message).
+
+    Returns
+    -------
+    tuple of ndarray
+        The broadcast arrays, one per keyword.
+
+    Raises
+    ------
+    InputError
+        ``<name>, <name>: must broadcast together, got shapes <shape>, <shape>``.
+    """
+    try:
+        return tuple(np.broadcast_arrays(*arrays.values()))
+    except ValueError:
+        shapes = ", ".join(str(np.shape(v)) for v in arrays.values())
+        raise InputError(f"{', '.join(arrays)}: must broadcast together, got shapes "
+                         f"{shapes}") from None
+
+
+def scalar_or_array(value: Any) -> float | np.ndarray:
+    """A Python float for a 0-d result, the array otherwise (the vectorised functions' return).
+
+    Parameters
+    ----------
+    value : array_like
+
+    Returns
+    -------
+    float or ndarray
+    """
+    arr = np.asarray(value)
+    return float(arr) if arr.ndim == 0 else arr
+
+
+def integer(name: str, value: Any, low: int | None = None, high: int | None = None, *,
+            allow_float: bool = False) -> int:
+    """An integer within optional inclusive bounds (bool refused).
+
+    Parameters
+    ----------
+    name, value
+        As :func:`real`.
+    low, high : int, optional
+        Inclusive bounds.
+    allow_float : bool
+        Accept a float with an integral value (``11.0``, e.g. read from a file); by
+        default every float is refused.
 
     Returns
     -------
@@ -177,7 +243,10 @@ def integer(name: str, value: Any, low: int | None = None, high: int | None = No
     lo = "-inf" if low is None else str(low)
     hi = "inf" if high is None else str(high)
     accepted = f"an integer in [{lo}, {hi}]"
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+    integral_float = (allow_float and isinstance(value, (float, np.floating))
+                      and bool(np.isfinite(value)) and float(value).is_integer())
+    if isinstance(value, (bool, np.bool_)) or not (
+            isinstance(value, (int, np.integer)) or integral_float):
         raise InputError(f"{name}: must be {accepted}, got {value!r}")
     v = int(value)
     if (low is not None and v < low) or (high is not None and v > high):

@@ -425,7 +425,7 @@ def test_bad_input_names_the_field(field, value, error):
 
 
 def test_offset_with_method0_is_rejected():
-    with pytest.raises(InputError, match=r"a = 15.*method 0"):
+    with pytest.raises(InputError, match=r"a: must be 0 for method 0.*got 15"):
         design_from_annex("sample2", method=0)
 
 

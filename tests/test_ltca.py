@@ -23,6 +23,7 @@ from contact.io import check_conventions, read_netcdf, write_netcdf
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.pipeline import run_analysis
 from contact.utca.easeoff import ease_off
+from friction.operating import OperatingConditions
 from geometry.assembly import Misalignment
 from geometry.case import load_case
 from geometry.errors import InputError
@@ -204,7 +205,8 @@ def test_bad_input():
 
 
 def test_whole_analysis_round_trip_and_plot_from_file(tmp_path):
-    tree = run_analysis(_case(), [100.0], options=SMALL, geometry=True, pinion_speed=1500.0)
+    tree = run_analysis(_case(), [100.0], options=SMALL, geometry=True,
+                        operating=OperatingConditions())
     assert {"geometry", "easeoff", "utca", "ltca", "friction"} <= set(tree.children)
     check_conventions(tree)
     path = write_netcdf(tree, tmp_path / "a.nc", inputs=tree.attrs["inputs"])
@@ -317,7 +319,8 @@ def test_stored_contact_points_satisfy_the_equation_of_meshing():
 
 
 def test_run_analysis_adds_friction_with_a_speed():
-    tree = run_analysis(_case(), [100.0], options=SMALL, geometry=False, pinion_speed=1500.0)
+    tree = run_analysis(_case(), [100.0], options=SMALL, geometry=False,
+                        operating=OperatingConditions())
     fr = tree["friction"].dataset
     assert {"efficiency", "power_loss", "friction_coefficient", "lambda_ratio"} <= set(fr)
     assert 0.9 < float(fr["efficiency_mean"].item()) < 1.0

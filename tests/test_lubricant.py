@@ -158,7 +158,7 @@ def test_thermal_conductivity_constant(oil: Lubricant) -> None:
 # ----------------------------------------------------------------------------- range errors
 @pytest.mark.parametrize("t", [-30.0, 200.0, float("nan")])
 def test_temperature_outside_range_raises(oil: Lubricant, t: float) -> None:
-    with pytest.raises(InputError, match=r"temperature must be in \[5, 140\]"):
+    with pytest.raises(InputError, match=r"temperature: must be in \[5, 140\]"):
         viscosity(oil, t)
 
 

@@ -12,6 +12,9 @@ ORDER = 15
 
 def register(sub) -> None:
     """Add the sub-command to an ``argparse`` sub-parser collection."""
+    from friction.operating import OperatingConditions
+
+    op = OperatingConditions()  # the defaults of the efficiency stage
     p = sub.add_parser(
         "efficiency-map",
         help="sweep speed, torque, oil temperature and roughness; write efficiency as netCDF",
@@ -23,36 +26,39 @@ def register(sub) -> None:
         "--speed",
         type=float,
         nargs="+",
-        default=[500, 1000, 1500, 2500, 4000],
+        default=None,
         metavar="RPM",
-        help="pinion speeds [rpm]",
+        help="pinion speeds [rpm] (default 500 1000 1500 2500 4000, "
+        "contact.pipeline.EFFICIENCY_MAP_SPEEDS)",
     )
     p.add_argument(
         "--torque",
         type=float,
         nargs="+",
-        default=[100, 250, 500],
+        default=None,
         metavar="N_M",
-        help="pinion torques [N m]",
+        help="pinion torques [N m] (default 100 250 500, contact.pipeline.EFFICIENCY_MAP_TORQUES)",
     )
     p.add_argument(
         "--temperature",
         type=float,
         nargs="+",
-        default=[90.0],
+        default=[op.temperature],
         metavar="C",
-        help="oil inlet temperatures [C]",
+        help=f"oil inlet temperatures [C] (default {op.temperature:g})",
     )
     p.add_argument(
         "--roughness",
         type=float,
         nargs="+",
-        default=[0.8],
+        default=[op.roughness],
         metavar="UM",
-        help="RMS roughness Rq of each surface [um]",
+        help=f"RMS roughness Rq of each surface [um] (default {op.roughness:g})",
     )
-    p.add_argument("--lubricant", default="75W90")
-    p.add_argument("--friction-model", default="xu2007")
+    p.add_argument("--lubricant", default=op.lubricant,
+                   help="bundled oil name or TOML file (default %(default)s)")
+    p.add_argument("--friction-model", default=op.friction_model,
+                   help="friction coefficient model (default %(default)s)")
     p.add_argument("--rolls-per-cycle", type=int, default=10)
     p.add_argument("-o", "--output", default="efficiency_map.nc")
     p.add_argument("--plots", default=None, metavar="DIR")
@@ -67,6 +73,7 @@ def run(args: argparse.Namespace) -> int:
     from contact.ltca import LTCAOptions
     from contact.pipeline import efficiency_map, resolve_case
     from contact.plots import plot_efficiency_map
+    from friction.operating import OperatingConditions
 
     case = resolve_case(args.case)
     emap = efficiency_map(
@@ -75,8 +82,8 @@ def run(args: argparse.Namespace) -> int:
         args.speed,
         temperature=args.temperature,
         roughness=args.roughness,
-        lubricant=args.lubricant,
-        friction_model=args.friction_model,
+        operating=OperatingConditions(lubricant=args.lubricant,
+                                      friction_model=args.friction_model),
         options=LTCAOptions(rolls_per_cycle=args.rolls_per_cycle),
         progress=not args.no_progress and sys.stderr.isatty(),
     )

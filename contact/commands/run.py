@@ -36,6 +36,9 @@ def misalignment_from_args(args, base):
 
 def register(sub) -> None:
     """Add the sub-commands to an ``argparse`` sub-parser collection."""
+    from friction.operating import OperatingConditions
+
+    op = OperatingConditions()  # the defaults of the efficiency stage
     p = sub.add_parser(
         "run",
         help="loaded TCA of a case (default: the bundled 11x41 pair at the seed's Table 3.1)",
@@ -79,14 +82,18 @@ def register(sub) -> None:
     p.add_argument(
         "--speed",
         type=float,
-        default=1500.0,
+        default=op.pinion_speed,
         metavar="RPM",
-        help="pinion speed for the efficiency stage (default 1500; 0 skips it)",
+        help="pinion speed for the efficiency stage (default %(default)g; 0 skips it)",
     )
-    p.add_argument("--lubricant", default="75W90", help="bundled oil name or TOML file")
-    p.add_argument("--temperature", type=float, default=90.0, help="oil inlet temperature [C]")
-    p.add_argument("--roughness", type=float, default=0.8, help="RMS roughness Rq [um]")
-    p.add_argument("--friction-model", default="xu2007", help="friction coefficient model")
+    p.add_argument("--lubricant", default=op.lubricant,
+                   help="bundled oil name or TOML file (default %(default)s)")
+    p.add_argument("--temperature", type=float, default=op.temperature,
+                   help="oil inlet temperature [C] (default %(default)g)")
+    p.add_argument("--roughness", type=float, default=op.roughness,
+                   help="RMS roughness Rq [um] (default %(default)g)")
+    p.add_argument("--friction-model", default=op.friction_model,
+                   help="friction coefficient model (default %(default)s)")
     p.add_argument("--flank", choices=["drive", "coast"], default=None)
     p.add_argument("--rolls-per-cycle", type=int, default=20)
     p.add_argument("--segments", type=int, default=24, help="segments per contact curve")
@@ -164,6 +171,7 @@ def run(args: argparse.Namespace) -> int:
     from contact.ltca import LTCAOptions
     from contact.pipeline import SEED_TABLE_3_1, resolve_case, run_analysis
     from contact.plots import plot_analysis
+    from friction.operating import OperatingConditions
 
     case = resolve_case(args.case)
     base = SEED_TABLE_3_1["misalignment"] if args.case is None else case.misalignment
@@ -179,6 +187,15 @@ def run(args: argparse.Namespace) -> int:
     elif args.deviations:
         # file paths: run_analysis reads them (contact.utca.deviations.read_deviations)
         devs = tuple(None if f == "-" else f for f in args.deviations)
+    operating = None  # --speed 0: no efficiency stage
+    if args.speed:
+        operating = OperatingConditions(
+            pinion_speed=args.speed,
+            lubricant=args.lubricant,
+            temperature=args.temperature,
+            roughness=args.roughness,
+            friction_model=args.friction_model,
+        )
     tree = run_analysis(
         case,
         args.torque,
@@ -186,12 +203,8 @@ def run(args: argparse.Namespace) -> int:
         flank=args.flank,
         options=opts,
         deviations=devs,
+        operating=operating,
         progress=not args.no_progress and sys.stderr.isatty(),
-        pinion_speed=args.speed or None,
-        lubricant=args.lubricant,
-        temperature=args.temperature,
-        roughness=args.roughness,
-        friction_model=args.friction_model,
     )
     lt = tree["ltca"].to_dataset()
     print(

@@ -72,6 +72,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from geometry.errors import InputError
+from geometry.validation import broadcast, real, real_array
 
 __all__ = [
     "SAINSOT_COEFFICIENTS",
@@ -96,14 +97,8 @@ SAINSOT_COEFFICIENTS: dict[str, tuple[float, float, float, float, float, float]]
 
 
 def _pos(name: str, value: float, unit: str, upper: float | None = None) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"{name} must be a real number [got {value!r}]") from exc
-    if not math.isfinite(v) or v <= 0.0 or (upper is not None and v >= upper):
-        rng = f"(0, {upper:.6g})" if upper is not None else "(0, inf)"
-        raise InputError(f"{name} must be in {rng} {unit} [got {value!r}]")
-    return v
+    """value in (0, upper) [unit] (upper excluded), by :func:`geometry.validation.real`."""
+    return real(name, value, unit=unit, low=0.0, high=upper, low_open=True, high_open=True)
 
 
 @dataclass(frozen=True)
@@ -183,9 +178,9 @@ def sainsot_coefficients(radius_ratio: float, root_half_angle: float) -> dict[st
     Sainsot, Velex & Duverger (2004), polynomial fits of the coefficients:
     X* = A/θ_f² + B h_f² + C h_f/θ_f + D/θ_f + E h_f + F.
     """
-    h = _pos("radius_ratio", radius_ratio, "")
+    h = _pos("radius_ratio", radius_ratio, "1")
     if h <= 1.0:
-        raise InputError(f"radius_ratio must be > 1 (r_f > r_int) [got {radius_ratio!r}]")
+        raise InputError(f"radius_ratio: must be > 1 (r_f > r_int) [1], got {radius_ratio!r}")
     th = _pos("root_half_angle", root_half_angle, "rad", upper=0.5 * math.pi)
     return {
         k: a / th**2 + b * h**2 + c * h / th + d / th + e * h + f
@@ -196,13 +191,10 @@ def sainsot_coefficients(radius_ratio: float, root_half_angle: float) -> dict[st
 def _load_vectors(
     foundation: ToothFoundation, load_height: np.ndarray, load_angle: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
-    u = np.atleast_1d(np.asarray(load_height, dtype=float))
-    a = np.atleast_1d(np.asarray(load_angle, dtype=float))
-    if not (np.all(np.isfinite(u)) and np.all(np.isfinite(a))):
-        raise InputError("load_height [mm] and load_angle [rad] must be finite")
-    if np.any(np.abs(a) >= 0.5 * math.pi):
-        raise InputError("load_angle must be in (-pi/2, pi/2) rad")
-    u, a = np.broadcast_arrays(u, a)
+    u = np.atleast_1d(real_array("load_height", load_height, unit="mm"))
+    a = np.atleast_1d(real_array("load_angle", load_angle, unit="rad", low=-0.5 * math.pi,
+                                 high=0.5 * math.pi, low_open=True, high_open=True))
+    u, a = broadcast(load_height=u, load_angle=a)
     c = sainsot_coefficients(foundation.radius_ratio, foundation.root_half_angle)
     g = np.array(
         [[c["L"], 0.5 * c["M"], 0.0], [0.5 * c["M"], c["P"], 0.0], [0.0, 0.0, c["P"] * c["Q"]]]
@@ -312,13 +304,9 @@ def load_line_height(
     InputError
         Non-finite inputs or negative thickness.
     """
-    x = np.asarray(height, dtype=float)
-    t = np.asarray(thickness, dtype=float)
-    a = np.asarray(load_angle, dtype=float)
-    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(t)) and np.all(np.isfinite(a))):
-        raise InputError("height, thickness and load_angle must be finite")
-    if np.any(t < 0.0):
-        raise InputError("thickness must be >= 0 mm")
+    x = real_array("height", height, unit="mm")
+    t = real_array("thickness", thickness, unit="mm", low=0.0)
+    a = real_array("load_angle", load_angle, unit="rad")
     return x - 0.5 * t * np.tan(a)
 
 
@@ -342,7 +330,8 @@ def load_angle_from_normals(normals: np.ndarray) -> np.ndarray:
     """
     n = np.asarray(normals, dtype=float)
     if n.ndim != 2 or n.shape[1] != 3 or not np.all(np.isfinite(n)):
-        raise InputError(f"normals must be a finite (N, 3) array [got shape {n.shape}]")
+        raise InputError(f"normals: must be a finite (N, 3) array [1], got shape {n.shape}")
     if np.any(n[:, 2] == 0.0):
-        raise InputError("normals must have a non-zero e_z component")
+        raise InputError("normals: must have a non-zero e_z component [1], got "
+                         f"{int(np.count_nonzero(n[:, 2] == 0.0))} with n_z = 0")
     return np.arctan2(n[:, 0], np.abs(n[:, 2]))

@@ -28,7 +28,6 @@ from __future__ import annotations
 
 import functools
 import logging
-import math
 import time
 import tomllib
 from dataclasses import dataclass
@@ -52,6 +51,8 @@ from contact.compliance.weber import weber_compliance
 from geometry.assembly import case_transforms
 from geometry.case import case_from_dict
 from geometry.errors import InputError
+from geometry.hertz import STEEL
+from geometry.validation import integer, real, real_array
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -70,17 +71,13 @@ log = logging.getLogger(__name__)
 _MEMO_SIZE = 4  # cases whose tooth models are kept by pair_compliance_model
 
 
-def _array(name: str, value: Any, shape: tuple[int, ...], unit: str) -> np.ndarray:
-    try:
-        a = np.array(value, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"{name} must be a numeric array [{unit}]") from exc
+def _array(name: str, value: Any, shape: tuple[int, ...], unit: str, *,
+           low: float | None = None, low_open: bool = False) -> np.ndarray:
+    a = real_array(name, value, unit=unit, low=low, low_open=low_open)
     if a.ndim == 0 and len(shape) == 1:
         a = np.full(shape, float(a))
     if a.shape != shape:
-        raise InputError(f"{name} must have shape {shape} [{unit}], got {a.shape}")
-    if not np.all(np.isfinite(a)):
-        raise InputError(f"{name} must be finite [{unit}]")
+        raise InputError(f"{name}: must be of shape {shape} [{unit}], got {a.shape}")
     return a
 
 
@@ -121,39 +118,24 @@ class ContactSegments:
     gear_rotation: float = 0.0
 
     def __post_init__(self) -> None:
-        mid = np.array(self.midpoints, dtype=float)
+        mid = real_array("midpoints", self.midpoints, unit="mm")
         if mid.ndim != 2 or mid.shape[1] != 3 or mid.shape[0] == 0:
-            raise InputError(f"midpoints must have shape (N, 3), N >= 1 [mm], got {mid.shape}")
+            raise InputError(f"midpoints: must be of shape (N, 3), N >= 1 [mm], got {mid.shape}")
         n = mid.shape[0]
         mid = _array("midpoints", mid, (n, 3), "mm")
         ends = _array("ends", self.ends, (n, 2, 3), "mm")
         nrm = _array("normals", self.normals, (n, 3), "1")
         if np.any(np.abs(np.linalg.norm(nrm, axis=1) - 1.0) > 1e-6):
-            raise InputError("normals must be unit vectors (|n| = 1 within 1e-6)")
-        length = _array("length", self.length, (n,), "mm")
-        r_eq = _array("r_eq", self.r_eq, (n,), "mm")
-        load = _array("load", self.load, (n,), "N")
-        for name, a in (("length", length), ("r_eq", r_eq)):
-            if np.any(a <= 0.0):
-                raise InputError(f"{name} must be > 0 mm")
-        if np.any(load < 0.0):
-            raise InputError("load must be >= 0 N")
-        try:
-            pairs = np.asarray(self.pair_index, dtype=float)
-        except (TypeError, ValueError) as exc:
-            raise InputError(f"pair_index must be ({n},) integers") from exc
-        if pairs.shape != (n,) or not np.all(np.isfinite(pairs)) or np.any(pairs % 1 != 0):
-            raise InputError(f"pair_index must be ({n},) integers [got shape {pairs.shape}]")
-        rot = []
-        for name in ("pinion_rotation", "gear_rotation"):
-            v = getattr(self, name)
-            try:
-                v = float(v)
-            except (TypeError, ValueError) as exc:
-                raise InputError(f"{name} must be a real number [rad]") from exc
-            if not math.isfinite(v):
-                raise InputError(f"{name} must be finite [rad]")
-            rot.append(v)
+            raise InputError("normals: must be unit vectors (|n| = 1 within 1e-6) [1], got "
+                             f"|n| - 1 up to {np.max(np.abs(np.linalg.norm(nrm, axis=1) - 1)):.3g}")
+        length = _array("length", self.length, (n,), "mm", low=0.0, low_open=True)
+        r_eq = _array("r_eq", self.r_eq, (n,), "mm", low=0.0, low_open=True)
+        load = _array("load", self.load, (n,), "N", low=0.0)
+        pairs = real_array("pair_index", self.pair_index)
+        if pairs.shape != (n,) or np.any(pairs % 1 != 0):
+            raise InputError(f"pair_index: must be ({n},) integers, got shape {pairs.shape}")
+        rot = [real(name, getattr(self, name), unit="rad")
+               for name in ("pinion_rotation", "gear_rotation")]
         for name, val in (("midpoints", mid), ("ends", ends), ("normals", nrm),
                           ("length", length), ("r_eq", r_eq), ("load", load),
                           ("pair_index", pairs.astype(int)), ("pinion_rotation", rot[0]),
@@ -187,7 +169,7 @@ class PairComplianceModel:
     def member(self, name: str) -> ToothModelData:
         """The tooth model of ``"pinion"`` or ``"gear"``."""
         if name not in ("pinion", "gear"):
-            raise InputError(f"member must be 'pinion' or 'gear', got {name!r}")
+            raise InputError(f"member: must be 'pinion' or 'gear', got {name!r}")
         return getattr(self, name)
 
 
@@ -220,8 +202,8 @@ def pair_compliance_model(
     theory: str = "seed",
     n_height: int = N_HEIGHT,
     n_face: int = N_FACE,
-    pinion_material: tuple[float, float] = (206000.0, 0.3),
-    gear_material: tuple[float, float] = (206000.0, 0.3),
+    pinion_material: tuple[float, float] = STEEL,
+    gear_material: tuple[float, float] = STEEL,
     pinion_bore: float | None = None,
     gear_bore: float | None = None,
 ) -> PairComplianceModel:
@@ -260,18 +242,17 @@ def pair_compliance_model(
     equal cases share one model. A caller that keeps the model (e.g. the LTCA
     pipeline) can pass it to :func:`mesh_compliance` and need not rely on the memo.
     """
-    try:
-        materials = (float(pinion_material[0]), float(pinion_material[1]),
-                     float(gear_material[0]), float(gear_material[1]))
-    except (TypeError, ValueError, IndexError) as exc:
-        raise InputError(
-            "pinion_material and gear_material must be (youngs_modulus [MPa], poisson_ratio)"
-        ) from exc
+    materials = []
+    for name, mat in (("pinion_material", pinion_material), ("gear_material", gear_material)):
+        try:
+            e, nu = mat
+        except (TypeError, ValueError):
+            raise InputError(f"{name}: must be (youngs_modulus [MPa], poisson_ratio [1]), got "
+                             f"{mat!r}") from None
+        materials += [real(f"{name}[0]", e, unit="MPa"), real(f"{name}[1]", nu, unit="1")]
     bores = tuple(None if b is None else float(b) for b in (pinion_bore, gear_bore))
-    if isinstance(n_height, bool) or isinstance(n_face, bool) or not (
-            isinstance(n_height, (int, np.integer)) and isinstance(n_face, (int, np.integer))):
-        raise InputError(f"n_height and n_face must be integers, got {n_height!r}, {n_face!r}")
-    return _memo_pair(case.to_toml(), str(theory), int(n_height), int(n_face), materials, bores)
+    n_height, n_face = integer("n_height", n_height), integer("n_face", n_face)
+    return _memo_pair(case.to_toml(), str(theory), n_height, n_face, tuple(materials), bores)
 
 
 def clear_model_cache() -> None:
@@ -408,7 +389,9 @@ def mesh_compliance_many(
     """
     t0 = time.perf_counter()
     if not all(isinstance(seg, ContactSegments) for seg in segments):
-        raise InputError("contact_segments must be a ContactSegments")
+        bad = next(type(seg).__name__ for seg in segments
+                   if not isinstance(seg, ContactSegments))
+        raise InputError(f"contact_segments: must be ContactSegments, got a {bad}")
     if model is None:
         model = pair_compliance_model(case, **model_options)
     elif model_options:

@@ -46,6 +46,7 @@ from scipy import linalg
 
 from contact.compliance._basis import face_basis, height_basis
 from geometry.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.validation import integer, one_of, positive, real, real_array
 
 __all__ = [
     "THEORIES",
@@ -62,17 +63,6 @@ log = logging.getLogger(__name__)
 
 #: Mindlin shear correction factor used unless told otherwise (Mindlin 1951).
 SHEAR_CORRECTION = 5.0 / 6.0
-
-
-def _positive(name: str, value: float, *, upper: float | None = None) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"{name} must be a real number [got {value!r}]") from exc
-    if not math.isfinite(v) or v <= 0.0 or (upper is not None and v > upper):
-        rng = f"(0, {upper}]" if upper is not None else "(0, inf)"
-        raise InputError(f"{name} must be finite and in {rng} [got {value!r}]")
-    return v
 
 
 # ---------------------------------------------------------------------------------------
@@ -127,34 +117,29 @@ class ShellTooth:
     poisson_ratio: float
 
     def __post_init__(self) -> None:
-        for name in (
-            "thickness_toe_root",
-            "thickness_heel_root",
-            "thickness_tip",
-            "height_toe",
-            "height_heel",
-            "radius",
-            "youngs_modulus",
+        for name, unit in (
+            ("thickness_toe_root", "mm"),
+            ("thickness_heel_root", "mm"),
+            ("thickness_tip", "mm"),
+            ("height_toe", "mm"),
+            ("height_heel", "mm"),
+            ("radius", "mm"),
+            ("youngs_modulus", "MPa"),
         ):
-            object.__setattr__(self, name, _positive(name, getattr(self, name)))
+            object.__setattr__(self, name, positive(name, getattr(self, name), unit))
         object.__setattr__(
             self,
             "subtended_angle",
-            _positive("subtended_angle", self.subtended_angle, upper=math.pi),
+            positive("subtended_angle", self.subtended_angle, "rad", high=math.pi),
         )
-        nu = self.poisson_ratio
-        try:
-            nu = float(nu)
-        except (TypeError, ValueError) as exc:
-            raise InputError(f"poisson_ratio must be a real number [got {nu!r}]") from exc
-        if not (math.isfinite(nu) and 0.0 <= nu < 0.5):
-            raise InputError(f"poisson_ratio must be in [0, 0.5) [got {nu!r}]")
-        object.__setattr__(self, "poisson_ratio", nu)
+        object.__setattr__(self, "poisson_ratio",
+                           real("poisson_ratio", self.poisson_ratio, unit="1", low=0.0,
+                                high=0.5, high_open=True))
         t_max = max(self.thickness_toe_root, self.thickness_heel_root, self.thickness_tip)
         if self.radius <= 0.5 * t_max:
             raise InputError(
-                f"radius must exceed half the largest thickness ({0.5 * t_max} mm) "
-                f"[got {self.radius}]"
+                f"radius: must exceed half the largest thickness ({0.5 * t_max} mm) [mm], "
+                f"got {self.radius}"
             )
 
     @classmethod
@@ -177,11 +162,11 @@ class ShellTooth:
         Raises :class:`InputError` as the constructor does, naming ``face_width``
         when it is not positive or subtends more than π.
         """
-        fw = _positive("face_width", face_width)
-        r = _positive("radius", radius)
+        fw = positive("face_width", face_width, "mm")
+        r = positive("radius", radius, "mm")
         if fw / r > math.pi:
             raise InputError(
-                f"face_width / radius must be at most pi [got {fw}/{r} = {fw / r}]"
+                f"face_width / radius: must be at most pi [rad], got {fw}/{r} = {fw / r}"
             )
         return cls(
             thickness_toe_root=thickness_toe_root,
@@ -491,12 +476,6 @@ def _gauss(n: int, lo: float, hi: float) -> tuple[np.ndarray, np.ndarray]:
     return 0.5 * (hi - lo) * t + 0.5 * (hi + lo), 0.5 * (hi - lo) * w
 
 
-def _check_modes(name: str, value: int, lo: int, hi: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
-        raise InputError(f"{name} must be an integer in [{lo}, {hi}] [got {value!r}]")
-    return int(value)
-
-
 def _family_fields(
     fam: _Family,
     z: np.ndarray,
@@ -655,18 +634,18 @@ def build_shell_model(
         raise ModelUnavailableError(
             f"theory {theory!r} is not available; choose one of {sorted(THEORIES)}"
         )
-    m = _check_modes("n_height", n_height, 1, 20)
-    n = _check_modes("n_face", n_face, 1, 30)
-    kappa = _positive("shear_factor", shear_factor, upper=1.0)
+    m = integer("n_height", n_height, 1, 20)
+    n = integer("n_face", n_face, 1, 30)
+    kappa = positive("shear_factor", shear_factor, "1", high=1.0)
     th = THEORIES[theory]
     p_z = max(fam.z_power + (1 if fam.rotates else 0) for fam in th.families)
     if quadrature is None:
         quadrature = (m + 4, n + m + 4, 2 * p_z + 2)
     if len(quadrature) != 3:
-        raise InputError(f"quadrature must be three integers [got {quadrature!r}]")
-    nq_x = _check_modes("quadrature[0]", quadrature[0], 1, 200)
-    nq_t = _check_modes("quadrature[1]", quadrature[1], 1, 400)
-    nq_z = _check_modes("quadrature[2]", quadrature[2], 1, 50)
+        raise InputError(f"quadrature: must be three integers, got {quadrature!r}")
+    nq_x = integer("quadrature[0]", quadrature[0], 1, 200)
+    nq_t = integer("quadrature[1]", quadrature[1], 1, 400)
+    nq_z = integer("quadrature[2]", quadrature[2], 1, 50)
 
     t0 = time.perf_counter()
     radius = tooth.radius
@@ -777,7 +756,7 @@ def _to_shell_coords(tooth: ShellTooth, pts: np.ndarray, coords: str) -> np.ndar
         ),
     }
     if coords not in conv:
-        raise InputError(f"coords must be one of {sorted(conv)} [got {coords!r}]")
+        one_of("coords", coords, sorted(conv))
     return conv[coords](pts)
 
 
@@ -789,21 +768,20 @@ def _check_inside(tooth: ShellTooth, x: np.ndarray, theta: np.ndarray, name: str
     bad_x = (x < -tol * h) | (x > h * (1 + tol))
     if np.any(bad_t) or np.any(bad_x):
         raise InputError(
-            f"{name} must lie on the tooth: 0 <= theta <= {th0:.6g} rad and "
-            "0 <= x <= h(theta) mm (or fractions in [0, 1] with coords='normalised')"
+            f"{name}: must lie on the tooth, 0 <= theta <= {th0:.6g} rad and "
+            "0 <= x <= h(theta) mm (or fractions in [0, 1] with coords='normalised'), got "
+            f"{int(np.count_nonzero(bad_t | bad_x))} point(s) off it"
         )
 
 
 def as_points(tooth: ShellTooth, points: np.ndarray, coords: str, name: str) -> np.ndarray:
     """Points (N, 2) or segment ends (N, 2, 2) in ``coords`` ("shell" (x, θ) or "flank") as
     shell coordinates, checked to be finite and on the shell; InputError names ``name``."""
-    pts = np.asarray(points, dtype=float)
+    pts = real_array(name, points)
     if pts.ndim == 1 and pts.shape[0] == 2:
         pts = pts[None, :]
     if pts.ndim < 2 or pts.shape[-1] != 2:
-        raise InputError(f"{name} must have shape (N, 2) or (N, 2, 2) [got {pts.shape}]")
-    if not np.all(np.isfinite(pts)):
-        raise InputError(f"{name} must be finite")
+        raise InputError(f"{name}: must be of shape (N, 2) or (N, 2, 2), got {pts.shape}")
     pts = _to_shell_coords(tooth, pts, coords)
     _check_inside(tooth, pts[..., 0], pts[..., 1], name)
     return pts
@@ -842,7 +820,7 @@ def flank_normals(
     pts = as_points(tooth, points, coords, "points").reshape(-1, 2)
     sd = np.broadcast_to(np.asarray(side, dtype=float), (pts.shape[0],))
     if not np.all(np.abs(np.abs(sd) - 1.0) == 0.0):
-        raise InputError("side must be +1 (convex flank) or -1 (concave flank)")
+        raise InputError(f"side: must be +1 (convex flank) or -1 (concave flank), got {side!r}")
     t_x, t_t = tooth.thickness_gradient(pts[:, 0], pts[:, 1])
     zs = 0.5 * sd * tooth.thickness(pts[:, 0], pts[:, 1])
     a = 0.5 * sd * t_x
@@ -867,13 +845,15 @@ def _flank_loads(
     nrm = np.asarray(normals, dtype=float)
     if nrm.shape != (n_pts, 3) or not np.all(np.isfinite(nrm)):
         raise InputError(
-            f"normals must be finite with shape ({n_pts}, 3): outward unit normals of the "
-            f"loaded flank in the local frame (e_x, e_theta, e_z) [got {nrm.shape}]"
+            f"normals: must be finite with shape ({n_pts}, 3), outward unit normals of the "
+            f"loaded flank in the local frame (e_x, e_theta, e_z) [1], got shape {nrm.shape}"
         )
     if np.any(np.abs(np.linalg.norm(nrm, axis=1) - 1.0) > 1e-6):
-        raise InputError("normals must be unit vectors (|n| = 1 within 1e-6)")
+        raise InputError("normals: must be unit vectors (|n| = 1 within 1e-6) [1], got |n| - 1 "
+                         f"up to {np.max(np.abs(np.linalg.norm(nrm, axis=1) - 1.0)):.3g}")
     if np.any(nrm[:, 2] == 0.0):
-        raise InputError("normals must have a non-zero e_z component (which flank is loaded)")
+        raise InputError("normals: must have a non-zero e_z component (which flank is loaded) "
+                         f"[1], got {int(np.count_nonzero(nrm[:, 2] == 0.0))} with n_z = 0")
     zs = 0.5 * np.sign(nrm[:, 2]) * tooth.thickness(x, theta)
     return -nrm, zs
 
@@ -1012,9 +992,8 @@ def compliance_matrix(
         if segment_length is None:
             ends = np.stack([centres, centres], axis=1)
         else:
-            seg = np.broadcast_to(np.asarray(segment_length, dtype=float), (centres.shape[0],))
-            if not np.all(np.isfinite(seg)) or np.any(seg <= 0.0):
-                raise InputError("segment_length must be finite and > 0 mm")
+            seg = np.broadcast_to(real_array("segment_length", segment_length, unit="mm",
+                                             low=0.0, low_open=True), (centres.shape[0],))
             dth = 0.5 * seg / tooth.radius
             ends = np.stack(
                 [
@@ -1025,7 +1004,7 @@ def compliance_matrix(
             )
             _check_inside(tooth, ends[..., 0], ends[..., 1], "points ± segment_length/2")
     else:
-        raise InputError(f"points must have shape (N, 2) or (N, 2, 2) [got {pts.shape}]")
+        raise InputError(f"points: must be of shape (N, 2) or (N, 2, 2), got {pts.shape}")
     return compliance_blocks(model, ends, normals, None, n_segment_gauss)[0]
 
 
@@ -1046,8 +1025,8 @@ def compliance_blocks(
     """
     n_pts = ends.shape[0]
     if n_pts == 0:
-        raise InputError("points must hold at least one load")
-    ng = _check_modes("n_segment_gauss", n_segment_gauss, 1, 32)
+        raise InputError("points: must hold at least one load, got none")
+    ng = integer("n_segment_gauss", n_segment_gauss, 1, 32)
     tooth = model.tooth
 
     # h(θ) is linear, so the developed tooth is convex: a chord between two
@@ -1059,7 +1038,7 @@ def compliance_blocks(
     nrm = None if normals is None else np.repeat(np.asarray(normals, dtype=float), ng, axis=0)
     if normals is not None and np.asarray(normals).shape != (n_pts, 3):
         raise InputError(
-            f"normals must have shape ({n_pts}, 3) [got {np.asarray(normals).shape}]"
+            f"normals: must be of shape ({n_pts}, 3) [1], got {np.asarray(normals).shape}"
         )
     d, zs = _flank_loads(tooth, gp[:, 0], gp[:, 1], nrm)
     # the segments' mean load vectors (n_dof, N): Gauss sums over their G points

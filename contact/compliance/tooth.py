@@ -85,7 +85,9 @@ from contact.compliance.shell import as_points as as_shell_points
 from geometry.cutter import profile_sections
 from geometry.errors import InputError, LTCAError
 from geometry.flank import blank_outline, flank_surface, projection_fractions
+from geometry.hertz import STEEL
 from geometry.meshing import solve_envelope
+from geometry.validation import integer, positive, real, real_array
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -524,23 +526,6 @@ def _rot_z(angle: np.ndarray, vec: np.ndarray) -> np.ndarray:
 # ---------------------------------------------------------------------------------------
 # measurement and fit (seed Eq. 3.1)
 # ---------------------------------------------------------------------------------------
-def _positive(name: str, value: float, unit: str) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"{name} must be a real number [{unit}], got {value!r}") from exc
-    if not (math.isfinite(v) and v > 0.0):
-        raise InputError(f"{name} must be finite and > 0 {unit}, got {value!r}")
-    return v
-
-
-def _grid_size(name: str, value: int, lo: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not (
-            lo <= value <= 200):
-        raise InputError(f"{name} must be an integer in [{lo}, 200], got {value!r}")
-    return int(value)
-
-
 class _ToothFlanks(NamedTuple):
     """Both flanks of one tooth on the same (u, v) grid (member frame)."""
 
@@ -678,10 +663,9 @@ def _virtual_gear(member: str, blank, corners, surf: _Surface, blades, t_root: f
         log.info("%s: bore radius not given, using half the mean root radius: %.3f mm",
                  member, bore)
     else:
-        bore = _positive("bore_radius", bore_radius, "mm")
-        if bore >= r_root_real:
-            raise InputError(f"bore_radius must be in (0, {r_root_real:.4g}) mm (below the "
-                             f"mean root radius), got {bore_radius!r}")
+        # below the mean root radius
+        bore = real("bore_radius", bore_radius, unit="mm", low=0.0, high=r_root_real,
+                    low_open=True, high_open=True)
     foundation = ToothFoundation(root_radius=r_root, inner_radius=bore * scale,
                                  root_half_angle=(t_root + fillet) / (2.0 * r_root),
                                  face_width=length, youngs_modulus=youngs_modulus)
@@ -692,8 +676,8 @@ def shell_tooth_from_case(
     case: Case,
     member: str,
     *,
-    youngs_modulus: float = 206000.0,
-    poisson_ratio: float = 0.3,
+    youngs_modulus: float = STEEL[0],
+    poisson_ratio: float = STEEL[1],
     bore_radius: float | None = None,
     nu: int = 17,
     nv: int = 11,
@@ -774,16 +758,11 @@ def shell_tooth_from_case(
     """
     t_start = time.perf_counter()
     if member not in ("pinion", "gear"):
-        raise InputError(f"member must be 'pinion' or 'gear', got {member!r}")
-    e_mod = _positive("youngs_modulus", youngs_modulus, "MPa")
-    try:
-        nu_p = float(poisson_ratio)
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"poisson_ratio must be a real number, got {poisson_ratio!r}") from exc
-    if not (math.isfinite(nu_p) and 0.0 <= nu_p < 0.5):
-        raise InputError(f"poisson_ratio must be in [0, 0.5), got {poisson_ratio!r}")
-    nu = _grid_size("nu", nu, 5)
-    nv = _grid_size("nv", nv, 4)
+        raise InputError(f"member: must be 'pinion' or 'gear', got {member!r}")
+    e_mod = positive("youngs_modulus", youngs_modulus, "MPa")
+    nu_p = real("poisson_ratio", poisson_ratio, unit="1", low=0.0, high=0.5, high_open=True)
+    nu = integer("nu", nu, 5, 200)
+    nv = integer("nv", nv, 4, 200)
     mem = case.member(member)
     blank = mem.blank
 
@@ -825,26 +804,25 @@ def shell_tooth_from_case(
 # coordinates
 # ---------------------------------------------------------------------------------------
 def _as_vectors(name: str, value, n: int | None = None) -> np.ndarray:
-    a = np.asarray(value, dtype=float)
+    a = real_array(name, value)
     if a.ndim == 1 and a.shape[0] == 3:
         a = a[None, :]
     if a.ndim != 2 or a.shape[1] != 3 or (n is not None and a.shape[0] != n):
         want = f"({n}, 3)" if n is not None else "(N, 3)"
-        raise InputError(f"{name} must have shape {want} [got {a.shape}]")
-    if not np.all(np.isfinite(a)):
-        raise InputError(f"{name} must be finite")
+        raise InputError(f"{name}: must be of shape {want}, got {a.shape}")
     return a
 
 
 def _to_member(transform, points: np.ndarray, normals: np.ndarray | None):
     if transform is None:
         return points, normals
-    t = np.asarray(transform, dtype=float)
-    if t.shape != (4, 4) or not np.all(np.isfinite(t)):
-        raise InputError(f"transform must be a finite (4, 4) member → pair matrix [got {t.shape}]")
+    t = real_array("transform", transform)
+    if t.shape != (4, 4):
+        raise InputError(f"transform: must be a (4, 4) member → pair matrix, got {t.shape}")
     rot, off = t[:3, :3], t[:3, 3]
     if not np.allclose(rot.T @ rot, np.eye(3), atol=1e-9):
-        raise InputError("transform must be a rigid motion (orthonormal rotation block)")
+        raise InputError("transform: must be a rigid motion (orthonormal rotation block), got "
+                         f"|RᵀR − I| up to {np.max(np.abs(rot.T @ rot - np.eye(3))):.3g}")
     p = (points - off) @ rot
     return p, (None if normals is None else normals @ rot)
 
@@ -968,8 +946,9 @@ def shell_coordinates(
     pts = _as_vectors("points", points)
     nrm = None if normals is None else _as_vectors("normals", normals, pts.shape[0])
     if nrm is not None and np.any(np.abs(np.linalg.norm(nrm, axis=1) - 1.0) > 1e-6):
-        raise InputError("normals must be unit vectors (|n| = 1 within 1e-6)")
-    tol = _positive("tolerance", tolerance, "")
+        raise InputError("normals: must be unit vectors (|n| = 1 within 1e-6) [1], got |n| - 1 "
+                         f"up to {np.max(np.abs(np.linalg.norm(nrm, axis=1) - 1.0)):.3g}")
+    tol = positive("tolerance", tolerance, "1")
     return _shell_points(data, pts, nrm, transform, tol)[0]
 
 
@@ -1030,8 +1009,8 @@ def shell_points_many(jobs, tol: float) -> list[list[ShellPoints]]:
                 i = int(np.flatnonzero(out_k[group])[0])
                 uo, vo = u0[b[k]:b[k + 1]][group][i], v0[b[k]:b[k + 1]][group][i]
                 raise InputError(
-                    f"points must lie on the {data.member}'s tooth flanks: face fraction u "
-                    f"and profile fraction v in [0, 1] (±{tol:g}); point {i} has "
+                    f"points: must lie on the {data.member}'s tooth flanks, face fraction u "
+                    f"and profile fraction v in [0, 1] (±{tol:g}), got point {i} at "
                     f"u = {uo:.6g}, v = {vo:.6g}")
     turn, p_ref = _reference_tooth(surf, pitch, pm, u0, v0)
     u, v = _project_to_mid(surf, p_ref, u0, v0)
@@ -1059,8 +1038,8 @@ def shell_points_many(jobs, tol: float) -> list[list[ShellPoints]]:
             if np.any(wrong):
                 i = int(np.flatnonzero(wrong)[0])
                 raise InputError(
-                    f"normals must point out of the {data.member}'s material: normal {i} "
-                    f"points to the {'convex' if side[i] > 0 else 'concave'} side but the "
+                    f"normals: must point out of the {data.member}'s material, got normal {i} "
+                    f"pointing to the {'convex' if side[i] > 0 else 'concave'} side but the "
                     f"point lies {off[i]:.4g} mm from the mid-surface (half thickness "
                     f"{half[i]:.4g} mm)")
         # frames back in the input frame (undo the turn, then the transform's rotation)
@@ -1130,15 +1109,14 @@ def flank_points(data: ToothModelData, x, theta, side) -> tuple[np.ndarray, np.n
     point is solved on its own with a coarse search, so this is for checks and
     plots, not for the roll loop.
     """
-    xs = np.atleast_1d(np.asarray(x, dtype=float))
-    ts = np.atleast_1d(np.asarray(theta, dtype=float))
+    xs = np.atleast_1d(real_array("x", x, unit="mm"))
+    ts = np.atleast_1d(real_array("theta", theta, unit="rad"))
     if xs.shape != ts.shape or xs.ndim != 1:
-        raise InputError(f"x and theta must be 1-D of equal length [got {xs.shape}, {ts.shape}]")
+        raise InputError(f"x, theta: must be 1-D of equal length, got shapes {xs.shape}, "
+                         f"{ts.shape}")
     sd = np.broadcast_to(np.atleast_1d(np.asarray(side, dtype=float)), xs.shape)
-    if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(ts))):
-        raise InputError("x [mm] and theta [rad] must be finite")
     if not np.all(np.abs(np.abs(sd) - 1.0) == 0.0):
-        raise InputError("side must be +1 (convex flank) or -1 (concave flank)")
+        raise InputError(f"side: must be +1 (convex flank) or -1 (concave flank), got {side!r}")
     tooth = data.tooth
     th0 = tooth.subtended_angle
     h = tooth.height(np.clip(ts, 0.0, th0))
@@ -1146,7 +1124,8 @@ def flank_points(data: ToothModelData, x, theta, side) -> tuple[np.ndarray, np.n
     if np.any((ts < -1e-12 * th0) | (ts > th0 * (1 + 1e-12)) | (v_t < -1e-12)
               | (v_t > 1 + 1e-12)):
         raise InputError(
-            f"points must lie on the tooth: 0 <= theta <= {th0:.6g} rad and 0 <= x <= h(theta) mm")
+            f"x, theta: must lie on the tooth, 0 <= theta <= {th0:.6g} rad and "
+            "0 <= x <= h(theta) mm, got points off it")
     u_t = _trajectory(data.surface, data.face_fraction(ts), _REF_V, v_t)
     pts = np.full((xs.size, 3), np.nan)
     nrm = np.full((xs.size, 3), np.nan)
@@ -1195,7 +1174,7 @@ def weber_depth(data: ToothModelData, shell_points: ShellPoints) -> np.ndarray:
     angle α_m of :func:`contact.compliance.foundation.load_angle_from_normals`.
     """
     if shell_points.normal is None:
-        raise InputError("shell_points must carry the flank normals (give normals)")
+        raise InputError("shell_points: must carry the flank normals (give normals), got none")
     alpha = load_angle_from_normals(shell_points.normal)
     t = data.tooth.thickness(shell_points.x, shell_points.theta)
     return 0.5 * t / np.cos(alpha)
@@ -1226,7 +1205,7 @@ def member_foundation(data: ToothModelData, shell_points: ShellPoints) -> np.nda
     virtual gear is described in :func:`shell_tooth_from_case`.
     """
     if shell_points.normal is None:
-        raise InputError("shell_points must carry the flank normals (give normals)")
+        raise InputError("shell_points: must carry the flank normals (give normals), got none")
     alpha = load_angle_from_normals(shell_points.normal)
     t = data.tooth.thickness(shell_points.x, shell_points.theta)
     u_f = load_line_height(shell_points.x, t, alpha)
@@ -1323,8 +1302,8 @@ def member_compliance(
     if segment_ends is not None:
         ends = np.asarray(segment_ends, dtype=float)
         if ends.shape != (sp.x.size, 2, 3):
-            raise InputError(f"segment_ends must have shape ({sp.x.size}, 2, 3) [got "
-                             f"{ends.shape}]")
+            raise InputError(f"segment_ends: must be of shape ({sp.x.size}, 2, 3) [mm], got "
+                             f"{ends.shape}")
         ends_sp = shell_coordinates(data, np.concatenate([ends[:, 0], ends[:, 1]]),
                                     transform=transform, tolerance=END_TOLERANCE)
     return _shell_matrix(data, sp, ends_sp, theory, n_height, n_face).matrix

@@ -59,7 +59,8 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from geometry.errors import InputError, ModelUnavailableError
-from geometry.hertz import contact_modulus
+from geometry.hertz import contact_modulus, hertz_line_contact
+from geometry.validation import positive, real, real_array
 
 __all__ = [
     "WEBER_COMPLIANCE_KINDS",
@@ -71,23 +72,12 @@ __all__ = [
 ]
 
 
-def _material(name_e: str, e: float, name_nu: str, nu: float) -> tuple[float, float]:
-    try:
-        e, nu = float(e), float(nu)
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"{name_e} and {name_nu} must be real numbers") from exc
-    if not (math.isfinite(e) and e > 0.0):
-        raise InputError(f"{name_e} must be finite and > 0 MPa [got {e!r}]")
-    if not (math.isfinite(nu) and 0.0 <= nu < 0.5):
-        raise InputError(f"{name_nu} must be in [0, 0.5) [got {nu!r}]")
-    return e, nu
+def _modulus(name: str, value: float) -> float:
+    return real(name, value, unit="MPa", low=0.0, low_open=True)
 
 
-def _positive_array(name: str, value: np.ndarray | float, unit: str) -> np.ndarray:
-    a = np.asarray(value, dtype=float)
-    if not np.all(np.isfinite(a)) or np.any(a <= 0.0):
-        raise InputError(f"{name} must be finite and > 0 {unit}")
-    return a
+def _poisson(name: str, value: float) -> float:
+    return real(name, value, unit="1", low=0.0, high=0.5, high_open=True)
 
 
 def hertz_half_width(
@@ -117,20 +107,21 @@ def hertz_half_width(
 
     Notes
     -----
-    Johnson (1985) Eq. 4.43 with E* of :func:`contact_modulus`.
+    Johnson (1985) Eq. 4.43 with E* of :func:`contact_modulus`: the half-width of
+    :func:`geometry.hertz.hertz_line_contact`, the toolkit's one Hertz line contact.
     """
-    w = _positive_array("load_per_length", load_per_length, "N/mm")
-    r = _positive_array("r_eq", r_eq, "mm")
-    e_star = contact_modulus(e1, nu1, e2, nu2)
-    return np.sqrt(4.0 * w * r / (math.pi * e_star))
+    w = real_array("load_per_length", load_per_length, unit="N/mm", low=0.0, low_open=True)
+    r = real_array("r_eq", r_eq, unit="mm", low=0.0, low_open=True)
+    return hertz_line_contact(w, r, contact_modulus(e1, nu1, e2, nu2)).half_width
 
 
 def _weber_bracket(depth: np.ndarray, half_width: np.ndarray, nu: float, name: str) -> np.ndarray:
     bracket = np.log(2.0 * depth / half_width) - nu / (2.0 * (1.0 - nu))
     if np.any(bracket <= 0.0):
         raise InputError(
-            f"{name} must exceed half the Hertz half-width times exp(nu/(2(1-nu))) "
-            "(Weber's formula is for a contact much narrower than the tooth)"
+            f"{name}: must exceed half the Hertz half-width times exp(nu/(2(1-nu))) [mm] "
+            "(Weber's formula is for a contact much narrower than the tooth), got "
+            f"{int(np.count_nonzero(bracket <= 0.0))} depth(s) below it"
         )
     return bracket
 
@@ -166,10 +157,10 @@ def weber_deformation(
     -----
     Weber (1949); NOTES.md. Seed p. 78 cites Weber [3.8] without the formula.
     """
-    w = _positive_array("load_per_length", load_per_length, "N/mm")
-    b = _positive_array("half_width", half_width, "mm")
-    h = _positive_array("depth", depth, "mm")
-    e, nu = _material("youngs_modulus", youngs_modulus, "poisson_ratio", poisson_ratio)
+    w = real_array("load_per_length", load_per_length, unit="N/mm", low=0.0, low_open=True)
+    b = real_array("half_width", half_width, unit="mm", low=0.0, low_open=True)
+    h = real_array("depth", depth, unit="mm", low=0.0, low_open=True)
+    e, nu = _modulus("youngs_modulus", youngs_modulus), _poisson("poisson_ratio", poisson_ratio)
     return 2.0 * w * (1.0 - nu**2) / (math.pi * e) * _weber_bracket(h, b, nu, "depth")
 
 
@@ -288,29 +279,31 @@ def weber_compliance(
             raise ModelUnavailableError(
                 f"kind {k!r} is not available; choose one of {sorted(WEBER_COMPLIANCE_KINDS)}"
             )
-    f = np.asarray(load, dtype=float)
-    if not np.all(np.isfinite(f)) or np.any(f < 0.0):
-        raise InputError("load must be finite and >= 0 N")
-    length_a = _positive_array("length", length, "mm")
-    floor = float(_positive_array("load_floor", load_floor, "N/mm"))
+    f = real_array("load", load, unit="N", low=0.0)
+    length_a = real_array("length", length, unit="mm", low=0.0, low_open=True)
+    floor = positive("load_floor", load_floor, "N/mm")
     w = np.maximum(f / length_a, floor)
     if (r_eq is None) == (half_width_fn is None):
-        raise InputError("give exactly one of r_eq [mm] and half_width_fn (w' -> b)")
+        raise InputError("r_eq, half_width_fn: must be exactly one given (r_eq [mm] or "
+                         "w' -> b), got "
+                         f"{'both' if r_eq is not None else 'neither'}")
     if half_width_fn is None:
         b = hertz_half_width(w, r_eq, e1, nu1, e2, nu2)
         slope = np.full_like(b, 0.5)
     else:
         b = np.asarray(half_width_fn(w), dtype=float)
-        if b.shape != w.shape or not np.all(np.isfinite(b)) or np.any(b <= 0.0):
-            raise InputError("half_width_fn must return finite half-widths > 0 mm, one per load")
+        if b.shape != w.shape:
+            raise InputError("half_width_fn: must return one half-width per load, got shape "
+                             f"{b.shape} for loads of shape {w.shape}")
+        real_array("half_width_fn(w')", b, unit="mm", low=0.0, low_open=True)
         step = 1e-4
         bp = np.asarray(half_width_fn(w * (1.0 + step)), dtype=float)
         bm = np.asarray(half_width_fn(w * (1.0 - step)), dtype=float)
         slope = (np.log(bp) - np.log(bm)) / (math.log1p(step) - math.log1p(-step))
-    e1f, nu1f = _material("e1", e1, "nu1", nu1)
-    e2f, nu2f = _material("e2", e2, "nu2", nu2)
-    h1 = _positive_array("depth_1", depth_1, "mm")
-    h2 = _positive_array("depth_2", depth_2, "mm")
+    e1f, nu1f = _modulus("e1", e1), _poisson("nu1", nu1)
+    e2f, nu2f = _modulus("e2", e2), _poisson("nu2", nu2)
+    h1 = real_array("depth_1", depth_1, unit="mm", low=0.0, low_open=True)
+    h2 = real_array("depth_2", depth_2, unit="mm", low=0.0, low_open=True)
     k1 = 2.0 * (1.0 - nu1f**2) / (math.pi * e1f)
     k2 = 2.0 * (1.0 - nu2f**2) / (math.pi * e2f)
     kb = k1 * _weber_bracket(h1, b, nu1f, "depth_1") + k2 * _weber_bracket(h2, b, nu2f, "depth_2")

@@ -21,7 +21,6 @@ from typing import Any
 import numpy as np
 
 from contact.qp.halfspace import (
-    contact_modulus,
     hertz_line,
     hertz_point,
     rectangle_influence,
@@ -29,6 +28,8 @@ from contact.qp.halfspace import (
 )
 from contact.qp.problem import ContactProblem
 from geometry.errors import InputError
+from geometry.hertz import STEEL, contact_modulus, hertz_line_contact
+from geometry.validation import integer, real
 
 __all__ = [
     "STEEL_MODULUS",
@@ -39,8 +40,8 @@ __all__ = [
     "standard_problem_set",
 ]
 
-#: Steel on steel, E = 206 000 MPa, ν = 0.3: E* [MPa].
-STEEL_MODULUS = contact_modulus(206_000.0, 0.3, 206_000.0, 0.3)
+#: Steel on steel (:data:`geometry.hertz.STEEL`, E = 206 000 MPa, ν = 0.3): E* [MPa].
+STEEL_MODULUS = contact_modulus(*STEEL, *STEEL)
 
 
 @dataclass(frozen=True, eq=False)
@@ -93,10 +94,8 @@ def hertz_sphere_problem(
         torque = load, so Θ is the approach [mm]; ``reference``: Hertz ``radius``,
         ``peak_pressure``, ``approach``, and ``cell_area`` [mm²], ``x``, ``y``.
     """
-    if not (isinstance(cells_per_radius, int) and cells_per_radius >= 3):
-        raise InputError(f"cells_per_radius: must be an integer ≥ 3, got {cells_per_radius!r}")
-    if not domain > 1:
-        raise InputError(f"domain: must be > 1 (in contact radii), got {domain!r}")
+    integer("cells_per_radius", cells_per_radius, 3)
+    real("domain", domain, unit="contact radii", low=1.0, low_open=True)
     hz = hertz_point(load, radius, modulus)
     h = hz["radius"] / cells_per_radius
     k = math.ceil(domain * cells_per_radius)
@@ -140,13 +139,9 @@ def hertz_cylinder_problem(
         Forces are per unit length [N/mm]; Θ is the approach [mm]; ``reference``:
         Hertz ``half_width``, ``peak_pressure``, ``approach``, and ``strip`` [mm], ``x``.
     """
-    if not (isinstance(strips_per_half_width, int) and strips_per_half_width >= 3):
-        raise InputError(
-            f"strips_per_half_width: must be an integer ≥ 3, got {strips_per_half_width!r}"
-        )
-    if not domain > 1:
-        raise InputError(f"domain: must be > 1 (in half-widths), got {domain!r}")
-    b0 = math.sqrt(4 * load_per_length * radius / (math.pi * modulus))
+    integer("strips_per_half_width", strips_per_half_width, 3)
+    real("domain", domain, unit="half-widths", low=1.0, low_open=True)
+    b0 = float(hertz_line_contact(load_per_length, radius, modulus).half_width)
     h = b0 / strips_per_half_width
     k = math.ceil(domain * strips_per_half_width)
     x = h * np.arange(-k, k + 1)
@@ -193,8 +188,7 @@ def ltca_like_problem(
     of 5–40 µm over the face plus 0–60 µm per neighbouring pair; moment arms
     70–90 mm with a linear variation along the line.
     """
-    if not (isinstance(n_segments, int) and n_segments >= 6):
-        raise InputError(f"n_segments: must be an integer ≥ 6, got {n_segments!r}")
+    integer("n_segments", n_segments, 6)
     rng = np.random.default_rng(seed)
     pairs = int(n_pairs if n_pairs is not None else min(rng.integers(2, 5), n_segments // 3))
     if not 1 <= pairs <= n_segments // 3:

@@ -22,7 +22,8 @@ import math
 import numpy as np
 
 from geometry.errors import InputError
-from geometry.hertz import contact_modulus  # the one E* of the toolkit
+from geometry.hertz import contact_modulus, hertz_line_contact  # the one E* and line contact
+from geometry.validation import positive
 
 __all__ = [
     "contact_modulus",
@@ -31,13 +32,6 @@ __all__ = [
     "rectangle_influence",
     "strip_influence",
 ]
-
-
-def _positive(name: str, value: float) -> float:
-    v = float(value)
-    if not math.isfinite(v) or v <= 0:
-        raise InputError(f"{name}: must be finite and > 0, got {value!r}")
-    return v
 
 
 def rectangle_influence(
@@ -63,14 +57,20 @@ def rectangle_influence(
     ndarray (N, N) — [mm/N]
         Symmetric influence (compliance) matrix.
 
+    Raises
+    ------
+    InputError
+        A half-side or the modulus not finite and > 0, or centres off a regular grid of
+        the cell size.
+
     Notes
     -----
     Evaluated at cell centres of a regular grid, x − x_j ± a is never zero, so the
     logarithms are regular.
     """
-    a = _positive("half_x", half_x)
-    b = _positive("half_y", half_y)
-    E = _positive("modulus", modulus)
+    a = positive("half_x", half_x, "mm")
+    b = positive("half_y", half_y, "mm")
+    E = positive("modulus", modulus, "MPa")
     X = np.asarray(x, float)[:, None] - np.asarray(x, float)[None, :]
     Y = np.asarray(y, float)[:, None] - np.asarray(y, float)[None, :]
 
@@ -114,10 +114,15 @@ def strip_influence(x: np.ndarray, half_width: float, modulus: float, datum: flo
     Returns
     -------
     ndarray (N, N) — [mm per (N/mm)]
+
+    Raises
+    ------
+    InputError
+        ``half_width``, ``modulus`` or ``datum`` not finite and > 0.
     """
-    c = _positive("half_width", half_width)
-    E = _positive("modulus", modulus)
-    d = _positive("datum", datum)
+    c = positive("half_width", half_width, "mm")
+    E = positive("modulus", modulus, "MPa")
+    d = positive("datum", datum, "mm")
     t = np.asarray(x, float)[:, None] - np.asarray(x, float)[None, :]
 
     def F(u):
@@ -143,10 +148,15 @@ def hertz_point(load: float, radius: float, modulus: float) -> dict[str, float]:
     -------
     dict: ``radius`` a [mm] = (3PR/(4E*))^(1/3), ``peak_pressure`` p₀ [MPa] = 3P/(2πa²),
     ``approach`` δ [mm] = a²/R.
+
+    Raises
+    ------
+    InputError
+        An input not finite and > 0 (the message names it).
     """
-    P = _positive("load", load)
-    R = _positive("radius", radius)
-    E = _positive("modulus", modulus)
+    P = positive("load", load, "N")
+    R = positive("radius", radius, "mm")
+    E = positive("modulus", modulus, "MPa")
     a = (3 * P * R / (4 * E)) ** (1 / 3)
     return {"radius": a, "peak_pressure": 3 * P / (2 * math.pi * a * a), "approach": a * a / R}
 
@@ -167,17 +177,24 @@ def hertz_line(
 
     Returns
     -------
-    dict: ``half_width`` b [mm] = √(4P′R/(πE*)), ``peak_pressure`` p₀ [MPa] = 2P′/(πb),
-    ``approach`` δ [mm] = (2P′/(πE*)) (ln(2d/b) + ½), the displacement at the centre
-    relative to the datum, from ∫₋₁¹ √(1−t²) ln|t| dt = −(π/2)(ln 2 + ½).
+    dict: ``half_width`` b [mm] = √(4P′R/(πE*)), ``peak_pressure`` p₀ [MPa] = 2P′/(πb)
+    (both from :func:`geometry.hertz.hertz_line_contact`), ``approach`` δ [mm] =
+    (2P′/(πE*)) (ln(2d/b) + ½), the displacement at the centre relative to the datum,
+    from ∫₋₁¹ √(1−t²) ln|t| dt = −(π/2)(ln 2 + ½).
+
+    Raises
+    ------
+    InputError
+        An input not finite and > 0 (the message names it).
     """
-    P = _positive("load_per_length", load_per_length)
-    R = _positive("radius", radius)
-    E = _positive("modulus", modulus)
-    d = _positive("datum", datum)
-    b = math.sqrt(4 * P * R / (math.pi * E))
+    P = positive("load_per_length", load_per_length, "N/mm")
+    R = positive("radius", radius, "mm")
+    E = positive("modulus", modulus, "MPa")
+    d = positive("datum", datum, "mm")
+    hz = hertz_line_contact(P, R, E)
+    b = float(hz.half_width)
     return {
         "half_width": b,
-        "peak_pressure": 2 * P / (math.pi * b),
+        "peak_pressure": float(hz.peak_pressure),
         "approach": 2 * P / (math.pi * E) * (math.log(2 * d / b) + 0.5),
     }

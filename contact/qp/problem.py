@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -34,6 +34,8 @@ import numpy as np
 import scipy.linalg
 
 from contact.errors import NotPositiveDefiniteError, ProblemInputError
+from geometry.errors import InputError
+from geometry.validation import positive, real_array
 
 __all__ = [
     "DEFAULT_TOLERANCE",
@@ -56,19 +58,12 @@ DEFAULT_TOLERANCE = 1e-7
 RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
 
 
-def _as_float_array(name: str, value: Any, ndim: int) -> np.ndarray:
+def _problem_input(check: Callable[..., Any], *args: Any, **kwargs: Any) -> Any:
+    """A :mod:`geometry.validation` check whose refusal is a :class:`ProblemInputError`."""
     try:
-        arr = np.array(value, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise ProblemInputError(
-            f"{name}: must be a numeric array, got {type(value).__name__}"
-        ) from exc
-    if arr.ndim != ndim:
-        raise ProblemInputError(f"{name}: must be {ndim}-dimensional, got shape {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        bad = int(np.size(arr) - np.count_nonzero(np.isfinite(arr)))
-        raise ProblemInputError(f"{name}: must be finite, found {bad} NaN or infinite entries")
-    return arr
+        return check(*args, **kwargs)
+    except InputError as exc:
+        raise ProblemInputError(str(exc)) from None
 
 
 @dataclass(frozen=True)
@@ -133,9 +128,9 @@ class ContactProblem:
     scale: ProblemScale = field(init=False)
 
     def __post_init__(self) -> None:
-        C = _as_float_array("compliance", self.compliance, 2)
-        s = _as_float_array("separation", self.separation, 1)
-        R = _as_float_array("moment_arm", self.moment_arm, 1)
+        C = _problem_input(real_array, "compliance", self.compliance, unit="mm/N", ndim=2)
+        s = _problem_input(real_array, "separation", self.separation, unit="mm", ndim=1)
+        R = _problem_input(real_array, "moment_arm", self.moment_arm, unit="mm", ndim=1)
         n = s.size
         if n == 0:
             raise ProblemInputError("separation: needs at least one segment, got 0")
@@ -149,14 +144,7 @@ class ContactProblem:
             raise ProblemInputError(
                 "moment_arm: at least one entry must be > 0 (no segment can carry the torque)"
             )
-        try:
-            T = float(self.torque)
-        except (TypeError, ValueError) as exc:
-            raise ProblemInputError(
-                f"torque: must be a number [N·mm], got {self.torque!r}"
-            ) from exc
-        if not math.isfinite(T) or T <= 0:
-            raise ProblemInputError(f"torque: must be finite and > 0 [N·mm], got {T}")
+        T = _problem_input(positive, "torque", self.torque, "N·mm")
         norm = np.linalg.norm(C)
         if norm == 0:
             raise NotPositiveDefiniteError("compliance: is the zero matrix, not positive definite")

@@ -1,0 +1,110 @@
+"""Operating conditions of the efficiency stage, with the toolkit's defaults in one place.
+
+:class:`OperatingConditions` holds what the efficiency stage (seed ch. 5,
+:func:`friction.efficiency.efficiency_analysis`) needs beyond the loaded contact: the
+pinion speed, the lubricant and its inlet temperature, the surface roughness and the
+friction coefficient model. Its defaults are the toolkit's operating defaults — the
+``ltca`` command line (``ltca run``, ``ltca efficiency-map``) and
+:func:`contact.pipeline.run_analysis` / :func:`contact.pipeline.efficiency_map` take
+theirs from here::
+
+    >>> from friction.operating import OperatingConditions
+    >>> OperatingConditions().pinion_speed, OperatingConditions().lubricant
+    (1500.0, '75W90')
+    >>> OperatingConditions(temperature=60.0).temperature
+    60.0
+
+Units: rpm, degC, µm.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from friction.coefficient import get_friction_model
+from friction.lubricant import available_lubricants
+from geometry.errors import InputError, ModelUnavailableError
+from geometry.validation import positive, real
+
+__all__ = ["OperatingConditions"]
+
+#: Absolute zero [degC]: the one physical bound of an oil temperature (each lubricant's
+#: own range is checked where its properties are evaluated).
+_ABSOLUTE_ZERO_C = -273.15
+
+
+@dataclass(frozen=True)
+class OperatingConditions:
+    """Operating point of the efficiency stage (seed §5.2–5.3), validated on construction.
+
+    Parameters
+    ----------
+    pinion_speed : float — [rpm]
+        Pinion speed, finite and > 0. Default 1500 rpm (the toolkit's choice, inside
+        the 500–4000 rpm of ``ltca efficiency-map``'s default sweep).
+    lubricant : str or path
+        A bundled oil name (case-insensitive, :func:`friction.lubricant.available_lubricants`)
+        or the path of an oil TOML file (:func:`friction.lubricant.load_lubricant`).
+        Default ``"75W90"``, the axle oil of the seed's Table 5.2.
+    temperature : float — [degC]
+        Oil inlet temperature, finite and above absolute zero; the lubricant's own range
+        (its table plus extrapolation margins, :func:`friction.lubricant.temperature_range`)
+        is checked when its properties are evaluated. Default 90 °C (the toolkit's
+        choice, inside the 25–100 °C of the seed's Table 5.2).
+    roughness : float — [µm]
+        RMS roughness Rq of each flank, finite and > 0 (composite σ = √2 Rq, seed §5.2.3).
+        Default 0.8 µm, the surface of the xu2007 check point (seed/NOTES.md) and inside
+        that model's fitted 0.1–1 µm.
+    friction_model : str
+        A registered friction coefficient model
+        (:func:`friction.coefficient.available_friction_models`). Default ``"xu2007"``
+        (Xu et al. 2007, the same mixed-EHL regression methodology as the seed's
+        Eq. 5.11, whose coefficients are not recoverable).
+
+    Raises
+    ------
+    InputError
+        A speed, temperature or roughness out of range, or a lubricant that is not a
+        string or path (``<field>: must be … [<unit>], got …``).
+    ModelUnavailableError
+        A lubricant that is neither bundled nor an existing file, or an unknown or
+        unavailable friction model (the message lists what is available).
+
+    Notes
+    -----
+    Sources: seed ch. 5 (Kolivand 2009: §5.2 the efficiency model and its inputs, Table
+    5.2 the 75W90 oil, §5.3 the operating-condition sweeps); Xu, Kahraman, Anderson &
+    Maddock, J. Mech. Des. 129 (2007) 58–68 for the friction model.
+    """
+
+    pinion_speed: float = 1500.0
+    lubricant: str | os.PathLike[str] = "75W90"
+    temperature: float = 90.0
+    roughness: float = 0.8
+    friction_model: str = "xu2007"
+
+    def __post_init__(self) -> None:
+        set_ = object.__setattr__
+        set_(self, "pinion_speed", positive("pinion_speed", self.pinion_speed, "rpm"))
+        set_(self, "temperature", real("temperature", self.temperature, unit="degC",
+                                       low=_ABSOLUTE_ZERO_C, low_open=True))
+        set_(self, "roughness", positive("roughness", self.roughness, "um"))
+        oil = self.lubricant
+        if not isinstance(oil, (str, os.PathLike)) or not str(oil).strip():
+            raise InputError("lubricant: must be a bundled oil name or the path of an oil "
+                             f"TOML file, got {oil!r}")
+        bundled = available_lubricants()
+        if not ((isinstance(oil, str) and oil.lower() in {b.lower() for b in bundled})
+                or Path(oil).is_file()):
+            raise ModelUnavailableError(f"lubricant: must be one of the bundled oils "
+                                        f"{list(bundled)} or an existing oil TOML file, got "
+                                        f"{str(oil)!r}")
+        if not isinstance(self.friction_model, str):
+            raise InputError("friction_model: must be the name of a friction model, got "
+                             f"{self.friction_model!r}")
+        try:
+            get_friction_model(self.friction_model)
+        except ModelUnavailableError as exc:  # the message lists the available models
+            raise ModelUnavailableError(f"friction_model: {exc}") from None

@@ -1,0 +1,82 @@
+"""Tests of friction.operating.OperatingConditions: the operating defaults in one place.
+
+The defaults are the toolkit's (1500 rpm, 75W90 at 90 °C, Rq 0.8 µm, xu2007); every
+refusal names the field; the command line takes its defaults from the dataclass.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import pytest
+
+from friction.operating import OperatingConditions
+from geometry.errors import InputError, ModelUnavailableError
+
+
+def test_defaults():
+    op = OperatingConditions()
+    assert (op.pinion_speed, op.lubricant, op.temperature, op.roughness, op.friction_model) == (
+        1500.0, "75W90", 90.0, 0.8, "xu2007")
+    assert all(type(v) is float for v in (op.pinion_speed, op.temperature, op.roughness))
+
+
+def test_frozen_and_replace_validates_again():
+    op = OperatingConditions()
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        op.pinion_speed = 1.0  # type: ignore[misc]
+    assert dataclasses.replace(op, temperature=60).temperature == 60.0
+    with pytest.raises(InputError, match=r"^roughness: must be finite and > 0 \[um\], got 0$"):
+        dataclasses.replace(op, roughness=0)
+
+
+def test_lubricant_by_bundled_name_or_file(tmp_path):
+    assert OperatingConditions(lubricant="75w90").lubricant == "75w90"  # case-insensitive
+    src = OperatingConditions(lubricant="75W90")
+    assert src == OperatingConditions()
+    oil = tmp_path / "oil.toml"
+    oil.write_text("name = 'x'\n", encoding="utf-8")
+    assert OperatingConditions(lubricant=oil).lubricant == oil
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "match"),
+    [
+        ({"pinion_speed": 0.0}, InputError,
+         r"^pinion_speed: must be finite and > 0 \[rpm\], got 0\.0$"),
+        ({"pinion_speed": -1500.0}, InputError, r"^pinion_speed: must be finite and > 0"),
+        ({"pinion_speed": math.inf}, InputError, r"^pinion_speed: must be finite"),
+        ({"pinion_speed": True}, InputError, r"^pinion_speed: must be a real number"),
+        ({"pinion_speed": "1500"}, InputError, r"^pinion_speed: must be a real number"),
+        ({"temperature": -300.0}, InputError,
+         r"^temperature: must be finite and > -273\.15 \[degC\], got -300\.0$"),
+        ({"temperature": math.nan}, InputError, r"^temperature: must be finite"),
+        ({"roughness": -0.8}, InputError, r"^roughness: must be finite and > 0 \[um\]"),
+        ({"lubricant": ""}, InputError, r"^lubricant: must be a bundled oil name"),
+        ({"lubricant": 75}, InputError, r"^lubricant: must be a bundled oil name"),
+        ({"lubricant": "no-such-oil"}, ModelUnavailableError,
+         r"^lubricant: must be one of the bundled oils \[.*'75W90'.*\]"),
+        ({"friction_model": "kolivand2009"}, ModelUnavailableError,
+         r"^friction_model: friction model 'kolivand2009' is unavailable"),
+        ({"friction_model": "nope"}, ModelUnavailableError,
+         r"^friction_model: unknown friction model 'nope'; available: .*xu2007"),
+        ({"friction_model": None}, InputError, r"^friction_model: must be the name"),
+    ],
+)
+def test_refusals_name_the_field(kwargs, error, match):
+    with pytest.raises(error, match=match):
+        OperatingConditions(**kwargs)
+
+
+def test_the_command_line_takes_its_defaults_from_the_dataclass():
+    from contact.cli import build_parser
+
+    op = OperatingConditions()
+    parser = build_parser()
+    run = parser.parse_args(["run"])
+    assert (run.speed, run.lubricant, run.temperature, run.roughness, run.friction_model) == (
+        op.pinion_speed, op.lubricant, op.temperature, op.roughness, op.friction_model)
+    emap = parser.parse_args(["efficiency-map"])
+    assert (emap.temperature, emap.roughness, emap.lubricant, emap.friction_model) == (
+        [op.temperature], [op.roughness], op.lubricant, op.friction_model)
