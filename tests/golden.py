@@ -48,6 +48,18 @@ MOVED_PATHS = {
 }
 
 
+#: reviewed changes of results since the golden file was written: variable → (largest
+#: difference relative to the variable's largest magnitude, why). The bit-for-bit check
+#: allows these and no more.
+REVIEWED = {
+    "/friction/rolling_loss": (
+        1e-15,
+        "one Hertz line contact (geometry.hertz): the rolling loss's peak pressure is "
+        "2w'/(pi b) instead of sqrt(w'E'/(2 pi R)), equal but for the last bits "
+        "(34 of 6612 values, <= 3.4e-16 relative)"),
+}
+
+
 def _moved(value):
     if isinstance(value, str):
         for old, new in MOVED_PATHS.items():
@@ -79,8 +91,9 @@ def differences(new: xr.DataTree, golden: xr.DataTree, *, rtol: float = 0.0) -> 
     rtol : float
         Largest difference of a float variable relative to the variable's largest
         magnitude (0: bit-identical, NaN where NaN; the contact residuals to
-        :data:`RESIDUAL_ATOL`); integers, text and attributes must always be identical
-        (the golden file's text read with :data:`MOVED_PATHS`).
+        :data:`RESIDUAL_ATOL`, the :data:`REVIEWED` changes to their bound); integers,
+        text and attributes must always be identical (the golden file's text read with
+        :data:`MOVED_PATHS`).
 
     Returns
     -------
@@ -114,7 +127,8 @@ def differences(new: xr.DataTree, golden: xr.DataTree, *, rtol: float = 0.0) -> 
                 scale = float(np.nanmax(np.abs(y), initial=0.0))
                 worst = float(d.max(initial=0.0))
                 atol = RESIDUAL_ATOL if name.startswith("residual_") else 0.0
-                if not same_nan or worst > max(rtol * scale, atol):
+                reviewed = REVIEWED.get(where, (0.0, ""))[0]
+                if not same_nan or worst > max(rtol * scale, reviewed * scale, atol):
                     out.append(f"{where}: differs by {worst:.3g} (largest |value| "
                                f"{scale:.3g}; NaN pattern same: {same_nan})")
             elif not np.array_equal(x, y):
@@ -177,7 +191,9 @@ if __name__ == "__main__":
             with tempfile.TemporaryDirectory() as tmp:
                 new = read_netcdf(run_default(Path(tmp)), tree=True)
             found = differences(new, read_netcdf(GOLDEN, tree=True), rtol=0.0)
-            print("\n".join(found) if found else "identical to the golden file")
+            print("\n".join(found) if found else
+                  "identical to the golden file (but the reviewed changes: "
+                  + "; ".join(f"{k}: {why}" for k, (_, why) in REVIEWED.items()) + ")")
             raise SystemExit(1 if found else 0)
         else:
             parser.print_help()

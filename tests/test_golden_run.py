@@ -8,7 +8,8 @@ file's creation stamp.
 Tolerance: integers, text (solver status, the case as TOML, JSON options) and
 attributes must be identical; float variables agree to 1e-9 of each variable's largest
 magnitude (the contact residuals, round-off that varies from run to run, to 1e-12:
-``golden.RESIDUAL_ATOL``). On the machine that wrote the file the run reproduces it bit for bit
+``golden.RESIDUAL_ATOL``; the reviewed changes of ``golden.REVIEWED`` to their bound).
+On the machine that wrote the file the run reproduces it bit for bit
 (``differences(..., rtol=0)`` is empty; checked when the file was written and after the
 restructuring); the 1e-9 allows for another CPU's or BLAS build's round-off (the LTCA's
 Newton and active-set iterations stop at 1e-9 of their scales, so round-off cannot move
