@@ -264,7 +264,6 @@ def profile_sections(blade: Blade) -> ProfileSections:
     """
     sg = blade.sigma
     a = blade.blade_angle
-    re = blade.edge_radius
     # main profile as a constant-curvature curve referenced at its tangency point with the
     # nominal line (height h_ref for a circular profile, the tip point for a straight one)
     if blade.profile == "circular":
@@ -274,87 +273,104 @@ def profile_sections(blade: Blade) -> ProfileSections:
         h_q = 0.0
         kap_main = 0.0
     main_ref = (blade.point_radius + sg * h_q * math.tan(a), h_q, _line_psi(sg, a), kap_main)
-
-    def point_on(ref, h):
-        rho0, h0, psi0, kap = ref
-        t = _t_at_height(h0, psi0, kap, h)
-        rho, hh, c, s, _, _ = _curve_point(rho0, h0, psi0, kap, t)
-        return float(rho), float(hh), math.atan2(s, c)
-
-    has_top = blade.toprem_angle != 0.0
-    has_flank = blade.flankrem_angle != 0.0
     # lowest working section (toprem line, or the profile itself)
-    if has_top:
-        jt = point_on(main_ref, blade.toprem_height)
+    jt = None
+    if blade.toprem_angle != 0.0:
+        jt = _point_on(main_ref, blade.toprem_height)
         low_ref = (jt[0], jt[1], _line_psi(sg, a + blade.toprem_angle), 0.0)
     else:
         low_ref = main_ref
-
-    # edge radius: arc tangent to the tip plane (h = 0) and to the lowest section
-    rho0, h0, psi0, kap = low_ref
-    psi_tip = 0.0 if sg > 0 else math.pi
-    if re > 0.0:
-        if abs(kap) < 1e-14:
-            alpha_low = math.atan2(sg * math.cos(psi0), math.sin(psi0))  # blade angle of line
-            rho_tip_line = rho0 - sg * h0 * math.tan(alpha_low)
-            rho_c = rho_tip_line - sg * re * (1.0 - math.sin(alpha_low)) / math.cos(alpha_low)
-            centre = (rho_c, re)
-            n1 = (sg * math.cos(alpha_low), -math.sin(alpha_low))  # tool outward normal
-            t1 = (centre[0] + re * n1[0], centre[1] + re * n1[1])
-            psi1 = psi0
-        else:
-            rpr = 1.0 / abs(kap)
-            # centre of the profile circle: on the left (kap > 0) or right of the tangent
-            cp = (rho0 - math.sin(psi0) / kap, h0 + math.cos(psi0) / kap)
-            # edge centre at height re, at distance |R - re| (convex, centre inside the blade)
-            # or R + re (concave) from the profile centre
-            convex = blade.profile_radius > 0
-            dist = rpr - re if convex else rpr + re
-            dy = re - cp[1]
-            if dist * dist < dy * dy:
-                raise InputError(
-                    "edge_radius: no edge arc tangent to both the tip plane and the circular "
-                    f"profile (profile_radius {blade.profile_radius:g} mm, reference height "
-                    f"{blade.profile_reference_height:g} mm)")
-            root = math.sqrt(dist * dist - dy * dy)
-            # the branch on the profile's side of the circle (towards the tip-line solution)
-            guess = blade.point_radius - sg * re * (1.0 - math.sin(a)) / math.cos(a)
-            cands = (cp[0] + root, cp[0] - root)
-            rho_c = min(cands, key=lambda r: abs(r - guess))
-            centre = (rho_c, re)
-            d = (centre[0] - cp[0], centre[1] - cp[1])
-            nd = math.hypot(*d)
-            t1 = (cp[0] + rpr * d[0] / nd, cp[1] + rpr * d[1] / nd)
-            psi1 = None
-        if t1[1] < 0.0 or t1[1] > (blade.toprem_height if has_top else np.inf):
-            raise InputError(
-                "edge_radius: the edge radius does not fit below the toprem corner / profile "
-                f"(tangent point at height {t1[1]:.4g} mm)")
-        if psi1 is None:
-            # tangent of the edge arc at t1, going up the blade: the arc turns
-            # counter-clockwise (centre on the left) for sigma = +1, clockwise for -1
-            nx, ny = (t1[0] - centre[0]) / re, (t1[1] - centre[1]) / re
-            psi1 = math.atan2(nx, -ny) if sg > 0 else math.atan2(-nx, ny)
-        len_edge = re * abs(psi1 - psi_tip)
-        edge = (0.0, centre[0], 0.0, psi_tip, sg / re)  # s_ref, rho, h, psi, kappa
-        s1 = len_edge
-        start_low = (t1[0], t1[1])
-    else:
-        edge = None
-        s1 = 0.0
-        # the lowest section meets the tip plane directly
-        rl, hl, _ = point_on(low_ref, 0.0)
-        start_low = (rl, hl)
-
     sections = []  # tuples (name, s_lo, s_hi, s_ref, rho, h, psi, kappa, corner_above)
+    edge, s1, start_low = _edge_arc(blade, low_ref)
     if edge is not None:
         sections.append(("edge", 0.0, s1, edge[0], edge[1], edge[2], edge[3], edge[4], False))
+    main_index = _sections_above(blade, main_ref, low_ref, jt, start_low, s1, sections)
+    cols = list(zip(*sections, strict=True))
+    return ProfileSections(
+        s_lo=np.array(cols[1], dtype=float), s_hi=np.array(cols[2], dtype=float),
+        s_ref=np.array(cols[3], dtype=float), rho_ref=np.array(cols[4], dtype=float),
+        h_ref=np.array(cols[5], dtype=float), psi_ref=np.array(cols[6], dtype=float),
+        kappa=np.array(cols[7], dtype=float), corner_above=np.array(cols[8], dtype=bool),
+        main=main_index, names=tuple(cols[0]))
+
+
+def _point_on(ref, h):
+    """(ρ, h, ψ) where the constant-curvature curve ``ref`` = (ρ₀, h₀, ψ₀, κ) reaches
+    height h [mm]."""
+    rho0, h0, psi0, kap = ref
+    t = _t_at_height(h0, psi0, kap, h)
+    rho, hh, c, s, _, _ = _curve_point(rho0, h0, psi0, kap, t)
+    return float(rho), float(hh), math.atan2(s, c)
+
+
+def _edge_arc(blade: Blade, low_ref):
+    """The edge radius: an arc tangent to the tip plane (h = 0) and to the lowest section
+    ``low_ref``; returns (s_ref, ρ, h, ψ, κ) of the arc (None without an edge radius), its
+    length [mm] and where the lowest section starts (ρ, h) [mm]."""
+    sg, a, re = blade.sigma, blade.blade_angle, blade.edge_radius
+    has_top = blade.toprem_angle != 0.0
+    rho0, h0, psi0, kap = low_ref
+    psi_tip = 0.0 if sg > 0 else math.pi
+    if not re > 0.0:
+        # the lowest section meets the tip plane directly
+        rl, hl, _ = _point_on(low_ref, 0.0)
+        return None, 0.0, (rl, hl)
+    if abs(kap) < 1e-14:
+        alpha_low = math.atan2(sg * math.cos(psi0), math.sin(psi0))  # blade angle of line
+        rho_tip_line = rho0 - sg * h0 * math.tan(alpha_low)
+        rho_c = rho_tip_line - sg * re * (1.0 - math.sin(alpha_low)) / math.cos(alpha_low)
+        centre = (rho_c, re)
+        n1 = (sg * math.cos(alpha_low), -math.sin(alpha_low))  # tool outward normal
+        t1 = (centre[0] + re * n1[0], centre[1] + re * n1[1])
+        psi1 = psi0
+    else:
+        rpr = 1.0 / abs(kap)
+        # centre of the profile circle: on the left (kap > 0) or right of the tangent
+        cp = (rho0 - math.sin(psi0) / kap, h0 + math.cos(psi0) / kap)
+        # edge centre at height re, at distance |R - re| (convex, centre inside the blade)
+        # or R + re (concave) from the profile centre
+        convex = blade.profile_radius > 0
+        dist = rpr - re if convex else rpr + re
+        dy = re - cp[1]
+        if dist * dist < dy * dy:
+            raise InputError(
+                "edge_radius: no edge arc tangent to both the tip plane and the circular "
+                f"profile (profile_radius {blade.profile_radius:g} mm, reference height "
+                f"{blade.profile_reference_height:g} mm)")
+        root = math.sqrt(dist * dist - dy * dy)
+        # the branch on the profile's side of the circle (towards the tip-line solution)
+        guess = blade.point_radius - sg * re * (1.0 - math.sin(a)) / math.cos(a)
+        cands = (cp[0] + root, cp[0] - root)
+        rho_c = min(cands, key=lambda r: abs(r - guess))
+        centre = (rho_c, re)
+        d = (centre[0] - cp[0], centre[1] - cp[1])
+        nd = math.hypot(*d)
+        t1 = (cp[0] + rpr * d[0] / nd, cp[1] + rpr * d[1] / nd)
+        psi1 = None
+    if t1[1] < 0.0 or t1[1] > (blade.toprem_height if has_top else np.inf):
+        raise InputError(
+            "edge_radius: the edge radius does not fit below the toprem corner / profile "
+            f"(tangent point at height {t1[1]:.4g} mm)")
+    if psi1 is None:
+        # tangent of the edge arc at t1, going up the blade: the arc turns
+        # counter-clockwise (centre on the left) for sigma = +1, clockwise for -1
+        nx, ny = (t1[0] - centre[0]) / re, (t1[1] - centre[1]) / re
+        psi1 = math.atan2(nx, -ny) if sg > 0 else math.atan2(-nx, ny)
+    len_edge = re * abs(psi1 - psi_tip)
+    return (0.0, centre[0], 0.0, psi_tip, sg / re), len_edge, (t1[0], t1[1])
+
+
+def _sections_above(blade: Blade, main_ref, low_ref, jt, start_low, s: float,
+                    sections: list) -> int:
+    """Append the toprem (if any), profile and flankrem (if any) sections from arc length
+    ``s`` [mm] at ``start_low`` upwards to ``sections``; return the profile's index."""
+    sg, a = blade.sigma, blade.blade_angle
+    has_flank = blade.flankrem_angle != 0.0
 
     def ref_t(ref, point):
         return _t_at_height(ref[1], ref[2], ref[3], point[1])
 
-    s = s1
-    if has_top:
+    if jt is not None:
         # toprem: from start_low up to the corner jt (a straight line)
         length = math.hypot(jt[0] - start_low[0], jt[1] - start_low[1])
         sections.append(("toprem", s, s + length, s, start_low[0], start_low[1],
@@ -367,7 +383,7 @@ def profile_sections(blade: Blade) -> ProfileSections:
     t_start = ref_t(main_ref, start_main)
     s_ref_main = s - t_start
     if has_flank:
-        jf = point_on(main_ref, blade.flankrem_height)
+        jf = _point_on(main_ref, blade.flankrem_height)
         t_end = ref_t(main_ref, jf)
         s_hi_main = s_ref_main + t_end
         if s_hi_main <= s:
@@ -380,13 +396,7 @@ def profile_sections(blade: Blade) -> ProfileSections:
     if has_flank:
         sections.append(("flankrem", s_hi_main, np.inf, s_hi_main, jf[0], jf[1],
                          _line_psi(sg, a + blade.flankrem_angle), 0.0, False))
-    cols = list(zip(*sections, strict=True))
-    return ProfileSections(
-        s_lo=np.array(cols[1], dtype=float), s_hi=np.array(cols[2], dtype=float),
-        s_ref=np.array(cols[3], dtype=float), rho_ref=np.array(cols[4], dtype=float),
-        h_ref=np.array(cols[5], dtype=float), psi_ref=np.array(cols[6], dtype=float),
-        kappa=np.array(cols[7], dtype=float), corner_above=np.array(cols[8], dtype=bool),
-        main=main_index, names=tuple(cols[0]))
+    return main_index
 
 
 class BladeProfilePoint(NamedTuple):
