@@ -167,13 +167,13 @@ def run_analysis(
         runs no efficiency stage. ``OperatingConditions()`` gives the toolkit's defaults.
     deviations : (pinion, gear), False or None
         Measured or wear deviations of the (pinion, gear) flanks in contact
-        (:mod:`contact.utca.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a CSV/netCDF
-        file path (:func:`contact.utca.deviations.read_deviations`) or None. The main groups
-        then hold the deviated surfaces' results and ``/theoretical/{easeoff,utca,ltca}``
-        the theoretical ones, side by side; ``/easeoff`` gains ``ease_off_change`` [um].
-        None (default) uses the case's ``[deviations]`` table if it has one
-        (``Case.deviations``); ``False`` or ``(None, None)`` ignores it (theoretical
-        surfaces only).
+        (:mod:`contact.utca.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a
+        CSV/netCDF file path (:func:`contact.deviation_files.read_deviations`) or None.
+        The main groups then hold the deviated surfaces' results and
+        ``/theoretical/{easeoff,utca,ltca}`` the theoretical ones, side by side;
+        ``/easeoff`` gains ``ease_off_change`` [um]. None (default) uses the case's
+        ``[deviations]`` table if it has one (``Case.deviations``); ``False`` or
+        ``(None, None)`` ignores it (theoretical surfaces only).
     geometry : bool
         Include the four generated flanks as ``/geometry`` (default True).
     progress : bool

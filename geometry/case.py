@@ -203,7 +203,7 @@ class DeviationFiles:
     """The ``[deviations]`` table: files of measured / wear flank deviations (seed §4.3).
 
     Only the paths are kept (the geometry package does not read them: the files are read by
-    :func:`contact.utca.deviations.read_deviations` when the analysis runs).
+    :func:`contact.deviation_files.read_deviations` when the analysis runs).
 
     Parameters
     ----------

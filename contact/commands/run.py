@@ -185,7 +185,7 @@ def run(args: argparse.Namespace) -> int:
     if args.no_deviations:
         devs = False
     elif args.deviations:
-        # file paths: run_analysis reads them (contact.utca.deviations.read_deviations)
+        # file paths: run_analysis reads them (contact.deviation_files.read_deviations)
         devs = tuple(None if f == "-" else f for f in args.deviations)
     operating = None  # --speed 0: no efficiency stage
     if args.speed:
