@@ -25,6 +25,7 @@ import json
 import logging
 import math
 import warnings
+from typing import NamedTuple
 
 import numpy as np
 import xarray as xr
@@ -124,40 +125,112 @@ def efficiency_analysis(
     Seed §5.2, Eq. 5.7–5.14; the EHL groups are written in the effective modulus
     E′ = 2E* (Dowson & Higginson), E* of :func:`geometry.hertz.contact_modulus`.
     """
-    need = (
-        "force",
-        "load_per_length",
-        "pressure_max",
-        "segment_length",
-        "equivalent_radius",
-        "contact_point",
-        "contact_normal",
-        "contact_tangent",
+    _check_variables(ltca)
+    op = _operating_conditions(
+        operating,
+        pinion_speed=pinion_speed,
+        lubricant=lubricant,
+        temperature=temperature,
+        roughness=roughness,
+        friction_model=friction_model,
     )
-    missing = [n for n in need if n not in ltca.variables]
+    e_prime = _effective_modulus(ltca, youngs_modulus, poisson_ratio)
+    oil = _oil_at_inlet(op.lubricant, op.temperature)
+    sigma = float(composite_roughness(op.roughness, op.roughness))
+    seg = _loaded_segments(ltca, op.pinion_speed)
+    fric = _film_and_friction(seg, oil, e_prime, sigma, op)
+    for note in fric.range_warnings:
+        log.info("%s", note)
+    losses = _power_losses(seg, fric, ltca["torque"].values, op.pinion_speed)
+    return _friction_dataset(ltca, seg, fric, losses, op, oil)
+
+
+_NEEDED = (
+    "force",
+    "load_per_length",
+    "pressure_max",
+    "segment_length",
+    "equivalent_radius",
+    "contact_point",
+    "contact_normal",
+    "contact_tangent",
+)
+
+
+def _check_variables(ltca: xr.Dataset) -> None:
+    """Raise :class:`InputError` naming the variables of ``_NEEDED`` that ``ltca`` lacks."""
+    missing = [n for n in _NEEDED if n not in ltca.variables]
     if missing:
         raise InputError(f"ltca: dataset lacks {missing} (expected contact.ltca.loaded_tca output)")
+
+
+def _operating_conditions(
+    operating: OperatingConditions | None, **overrides: float | str | None
+) -> OperatingConditions:
+    """The operating conditions of the analysis: ``operating`` (default
+    ``OperatingConditions()``) with the fields of ``overrides`` that are not None replaced,
+    and so validated again on construction (speed [rpm], temperature [degC], Rq [µm])."""
     op = OperatingConditions() if operating is None else operating
-    overrides = {k: v for k, v in (("pinion_speed", pinion_speed), ("lubricant", lubricant),
-                                   ("temperature", temperature), ("roughness", roughness),
-                                   ("friction_model", friction_model)) if v is not None}
-    if overrides:
-        op = dataclasses.replace(op, **overrides)  # validated again on construction
-    pinion_speed, temperature, roughness = op.pinion_speed, op.temperature, op.roughness
-    friction_model = op.friction_model
+    given = {k: v for k, v in overrides.items() if v is not None}
+    if given:
+        op = dataclasses.replace(op, **given)  # validated again on construction
+    return op
+
+
+def _effective_modulus(
+    ltca: xr.Dataset, youngs_modulus: float | None, poisson_ratio: float | None
+) -> float:
+    """E′ = 2E* [MPa], the Dowson–Higginson modulus the EHL groups of :mod:`friction.film`
+    are written in, of two members of the given material (E [MPa], ν [1]; each None: the
+    LTCA's own, :func:`_material`)."""
     e_mat, nu_mat = _material(ltca)
     youngs_modulus = e_mat if youngs_modulus is None else youngs_modulus
     poisson_ratio = nu_mat if poisson_ratio is None else poisson_ratio
-    # E′ = 2E*, the Dowson–Higginson modulus the EHL groups of friction.film are written in
-    e_prime = 2.0 * contact_modulus(youngs_modulus, poisson_ratio, youngs_modulus,
-                                    poisson_ratio)
-    oil = load_lubricant(op.lubricant)
-    eta0 = float(viscosity(oil, temperature))
-    alpha = float(pressure_viscosity_coefficient(oil, temperature))
-    beta = float(temperature_viscosity_coefficient(oil, temperature))
-    k_oil = float(thermal_conductivity(oil, temperature))
-    sigma = float(composite_roughness(roughness, roughness))
+    return 2.0 * contact_modulus(youngs_modulus, poisson_ratio, youngs_modulus, poisson_ratio)
 
+
+class _Oil(NamedTuple):
+    """The lubricant's properties at the oil inlet temperature."""
+
+    name: str
+    viscosity: float  # η₀ [Pa s]
+    pressure_viscosity: float  # α [1/GPa]
+    temperature_viscosity: float  # β [1/K]
+    thermal_conductivity: float  # k [W/(m K)]
+
+
+def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
+    """Name, η₀ [Pa s], α [1/GPa], β [1/K] and k [W/(m K)] of the lubricant (bundled name
+    or TOML path) at the inlet temperature [degC]."""
+    oil = load_lubricant(lubricant)
+    return _Oil(
+        oil.name,
+        float(viscosity(oil, temperature)),
+        float(pressure_viscosity_coefficient(oil, temperature)),
+        float(temperature_viscosity_coefficient(oil, temperature)),
+        float(thermal_conductivity(oil, temperature)),
+    )
+
+
+class _Segments(NamedTuple):
+    """The loaded contact segments of an LTCA, each array 1-D over them (n,)."""
+
+    loaded: np.ndarray  # (T, J, K, S) bool: force finite and > 0
+    force: np.ndarray  # [N]
+    load_per_length: np.ndarray  # [N/mm]
+    pressure_max: np.ndarray  # [MPa]
+    length: np.ndarray  # [mm]
+    radius: np.ndarray  # [mm] equivalent radius across the contact line
+    sliding_velocity: np.ndarray  # [m/s]
+    rolling_velocity: np.ndarray  # [m/s] entraining, across the contact line
+    slide_to_roll: np.ndarray  # [1] signed
+
+
+def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
+    """Which segments of ``ltca`` carry load (force finite and > 0), and of those their
+    force [N], load per length [N/mm], peak pressure [MPa], length and equivalent radius
+    [mm], and their sliding and entraining speeds [m/s] and slide-to-roll ratio [1] at the
+    pinion speed [rpm] (:func:`friction.kinematics.surface_velocities`)."""
     F = ltca["force"].values  # (T, J, K, S)
     loaded = np.isfinite(F) & (F > 0)
     shape = F.shape
@@ -176,12 +249,41 @@ def efficiency_analysis(
         ratio=float(ltca.attrs["ratio"]),
         check_meshing=False,
     )
-    f = F[loaded]
-    w = ltca["load_per_length"].values[loaded]
-    ph = ltca["pressure_max"].values[loaded]
-    L = np.broadcast_to(ltca["segment_length"].values, shape)[loaded]
-    R = np.broadcast_to(ltca["equivalent_radius"].values, shape)[loaded]
-    vs, vr, sr = kin["sliding_velocity"], kin["rolling_velocity"], np.abs(kin["slide_to_roll"])
+    return _Segments(
+        loaded=loaded,
+        force=F[loaded],
+        load_per_length=ltca["load_per_length"].values[loaded],
+        pressure_max=ltca["pressure_max"].values[loaded],
+        length=np.broadcast_to(ltca["segment_length"].values, shape)[loaded],
+        radius=np.broadcast_to(ltca["equivalent_radius"].values, shape)[loaded],
+        sliding_velocity=kin["sliding_velocity"],
+        rolling_velocity=kin["rolling_velocity"],
+        slide_to_roll=kin["slide_to_roll"],
+    )
+
+
+class _Friction(NamedTuple):
+    """Film and friction of the loaded segments, each array 1-D over them (n,)."""
+
+    film_thickness: np.ndarray  # h_min [µm]
+    lambda_ratio: np.ndarray  # λ = h_min/σ [1]
+    friction_coefficient: np.ndarray  # μ [1]
+    rolling_traction: np.ndarray  # F_R [N/mm]
+    range_warnings: list[str]  # the friction models' out-of-range notes, sorted, unique
+
+
+def _film_and_friction(
+    seg: _Segments, oil: _Oil, e_prime: float, sigma: float, op: OperatingConditions
+) -> _Friction:
+    """Minimum film thickness h_min [µm] (Dowson–Higginson with Gupta's thermal factor),
+    λ = h_min/σ [1] (σ [µm] the composite roughness), friction coefficient μ [1] of the
+    model ``op.friction_model`` and rolling traction F_R [N/mm] (Goksem–Hargreaves) of
+    each loaded segment, E′ [MPa]; the :class:`FrictionModelRangeWarning` s raised on the
+    way are caught and returned as their sorted, distinct messages."""
+    eta0, alpha = oil.viscosity, oil.pressure_viscosity
+    beta, k_oil = oil.temperature_viscosity, oil.thermal_conductivity
+    ph, w, R = seg.pressure_max, seg.load_per_length, seg.radius
+    vs, vr, sr = seg.sliding_velocity, seg.rolling_velocity, np.abs(seg.slide_to_roll)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", FrictionModelRangeWarning)
         loading = thermal_loading(beta, eta0, vr, k_oil)
@@ -192,7 +294,7 @@ def efficiency_analysis(
         lam = np.asarray(lambda_ratio(h, sigma), float)
         mu = np.asarray(
             friction_coefficient(
-                friction_model,
+                op.friction_model,
                 hertz_pressure=ph,
                 slide_to_roll=sr,
                 entraining_velocity=vr,
@@ -200,48 +302,93 @@ def efficiency_analysis(
                 load_per_length=w,
                 viscosity=eta0,
                 radius=R,
-                roughness_1=roughness,
-                roughness_2=roughness,
+                roughness_1=op.roughness,
+                roughness_2=op.roughness,
                 lambda_ratio=lam,
                 pressure_viscosity=alpha,
                 e_prime=e_prime,
-                temperature=temperature,
+                temperature=op.temperature,
             ),
             float,
         )
         fr = np.asarray(rolling_traction(vr, sr, eta0, alpha, w, R, e_prime, beta, k_oil), float)
     range_notes = sorted({str(w.message) for w in caught
                           if issubclass(w.category, FrictionModelRangeWarning)})
-    for note in range_notes:
-        log.info("%s", note)
-    mu = np.broadcast_to(mu, f.shape)
-    p_slide = mu * f * vs  # N · m/s = W
-    p_roll = fr * L * vr  # (N/mm) · mm · m/s = W
+    return _Friction(h, lam, np.broadcast_to(mu, seg.force.shape), fr, range_notes)
 
-    def scatter(values):
-        out = np.full(shape, np.nan)
-        out[loaded] = values
-        return out
 
-    sl, rl = scatter(p_slide), scatter(p_roll)
+class _Losses(NamedTuple):
+    """Power losses [W] and efficiency [1] of the mesh."""
+
+    sliding: np.ndarray  # (T, J, K, S) [W], NaN where unloaded
+    rolling: np.ndarray  # (T, J, K, S) [W], NaN where unloaded
+    total: np.ndarray  # (T, J) [W] instantaneous power loss
+    efficiency: np.ndarray  # (T, J) [1] instantaneous mechanical efficiency
+
+
+def _scatter(values: np.ndarray, loaded: np.ndarray) -> np.ndarray:
+    """Per-segment ``values`` of the loaded segments put back on the (T, J, K, S) grid of
+    ``loaded``, NaN on the unloaded segments (same unit as ``values``)."""
+    out = np.full(loaded.shape, np.nan)
+    out[loaded] = values
+    return out
+
+
+def _power_losses(
+    seg: _Segments, fric: _Friction, torque: np.ndarray, pinion_speed: float
+) -> _Losses:
+    """Sliding loss μ F V_s and rolling loss F_R L V_r [W] of each segment, their sum per
+    roll position [W] and the efficiency 1 − loss/(T_p ω_p) [1] (pinion torque [N m] per
+    ``torque`` level, pinion speed [rpm])."""
+    p_slide = fric.friction_coefficient * seg.force * seg.sliding_velocity  # N · m/s = W
+    p_roll = fric.rolling_traction * seg.length * seg.rolling_velocity  # (N/mm) · mm · m/s = W
+    sl, rl = _scatter(p_slide, seg.loaded), _scatter(p_roll, seg.loaded)
     loss = np.nansum(sl, axis=(2, 3)) + np.nansum(rl, axis=(2, 3))  # (T, J)
     omega = 2 * math.pi * pinion_speed / 60.0
-    p_in = ltca["torque"].values[:, None] * omega  # N·m · rad/s = W
+    p_in = torque[:, None] * omega  # N·m · rad/s = W
     eff = 1.0 - loss / p_in
+    return _Losses(sl, rl, loss, eff)
+
+
+def _friction_dataset(
+    ltca: xr.Dataset,
+    seg: _Segments,
+    fric: _Friction,
+    losses: _Losses,
+    op: OperatingConditions,
+    oil: _Oil,
+) -> xr.Dataset:
+    """The ``/friction`` dataset: per-segment speeds [m/s], film [µm], friction and losses
+    [W] on (torque, roll, pair, segment), the power loss [W] and efficiency [1] per roll
+    position and their cycle means, the coordinates of ``ltca`` and the conditions as
+    attributes (see :func:`efficiency_analysis`)."""
+    loaded = seg.loaded
+    loss, eff = losses.total, losses.efficiency
     dims4 = ("torque", "roll", "pair", "segment")
     data = {
-        "sliding_velocity": data_var(dims4, scatter(vs), "m/s", "sliding velocity"),
+        "sliding_velocity": data_var(
+            dims4, _scatter(seg.sliding_velocity, loaded), "m/s", "sliding velocity"
+        ),
         "rolling_velocity": data_var(
-            dims4, scatter(vr), "m/s", "rolling (entraining) velocity across the contact line"
+            dims4, _scatter(seg.rolling_velocity, loaded), "m/s",
+            "rolling (entraining) velocity across the contact line",
         ),
         "slide_to_roll": data_var(
-            dims4, scatter(kin["slide_to_roll"]), "1", "slide-to-roll ratio across the contact line"
+            dims4, _scatter(seg.slide_to_roll, loaded), "1",
+            "slide-to-roll ratio across the contact line",
         ),
-        "film_thickness": data_var(dims4, scatter(h), "um", "minimum film thickness"),
-        "lambda_ratio": data_var(dims4, scatter(lam), "1", "lambda ratio h_min / sigma"),
-        "friction_coefficient": data_var(dims4, scatter(mu), "1", "sliding friction coefficient"),
-        "sliding_loss": data_var(dims4, sl, "W", "sliding friction power loss"),
-        "rolling_loss": data_var(dims4, rl, "W", "rolling (EHL) power loss"),
+        "film_thickness": data_var(
+            dims4, _scatter(fric.film_thickness, loaded), "um", "minimum film thickness"
+        ),
+        "lambda_ratio": data_var(
+            dims4, _scatter(fric.lambda_ratio, loaded), "1", "lambda ratio h_min / sigma"
+        ),
+        "friction_coefficient": data_var(
+            dims4, _scatter(fric.friction_coefficient, loaded), "1",
+            "sliding friction coefficient",
+        ),
+        "sliding_loss": data_var(dims4, losses.sliding, "W", "sliding friction power loss"),
+        "rolling_loss": data_var(dims4, losses.rolling, "W", "rolling (EHL) power loss"),
         "power_loss": data_var(("torque", "roll"), loss, "W", "instantaneous mesh power loss"),
         "efficiency": data_var(("torque", "roll"), eff, "1", "instantaneous mechanical efficiency"),
         "power_loss_mean": data_var(
@@ -254,13 +401,13 @@ def efficiency_analysis(
     coords = {k: ltca.coords[k] for k in ("torque", "roll", "pair", "segment")}
     attrs = {
         "title": "mechanical power loss and efficiency",
-        "pinion_speed_rpm": pinion_speed,
+        "pinion_speed_rpm": op.pinion_speed,
         "lubricant": oil.name,
-        "inlet_temperature_degC": temperature,
-        "roughness_rq_um": roughness,
-        "friction_model": friction_model,
-        "inlet_viscosity_Pa_s": eta0,
-        "pressure_viscosity_1_per_GPa": alpha,
-        "model_range_warnings": json.dumps(range_notes),
+        "inlet_temperature_degC": op.temperature,
+        "roughness_rq_um": op.roughness,
+        "friction_model": op.friction_model,
+        "inlet_viscosity_Pa_s": oil.viscosity,
+        "pressure_viscosity_1_per_GPa": oil.pressure_viscosity,
+        "model_range_warnings": json.dumps(fric.range_warnings),
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)

@@ -40,6 +40,7 @@ import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 from scipy import linalg
@@ -638,6 +639,40 @@ def build_shell_model(
     n = integer("n_face", n_face, 1, 30)
     kappa = positive("shear_factor", shear_factor, "1", high=1.0)
     th = THEORIES[theory]
+    nq_x, nq_t, nq_z = _quadrature_orders(th, m, n, quadrature)
+
+    t0 = time.perf_counter()
+    a = max(tooth.height_toe, tooth.height_heel)
+    quad = _volume_quadrature(tooth, a, nq_x, nq_t, nq_z)
+    layout, n_dof = _dof_layout(th, m, n)
+    K = _stiffness(tooth, th, kappa, layout, n_dof, n, quad, a)
+    factor, scale = _scaled_cholesky(K, n_dof)
+    elapsed = time.perf_counter() - t0
+    log.debug(
+        "shell model: %d unknowns (M=%d, N=%d, %s), %d quadrature points, %.3f s",
+        n_dof, m, n, theory, quad.xi.size * nq_z, elapsed,
+    )
+    return ShellModel(
+        tooth=tooth,
+        n_height=m,
+        n_face=n,
+        theory=theory,
+        shear_factor=kappa,
+        n_dof=n_dof,
+        build_time=elapsed,
+        reference_height=a,
+        _layout=layout,
+        _factor=factor,
+        _scale=scale,
+    )
+
+
+def _quadrature_orders(
+    th: _Theory, m: int, n: int, quadrature: tuple[int, int, int] | None
+) -> tuple[int, int, int]:
+    """Gauss points [1] over height, face and thickness: ``quadrature`` checked, or by
+    default (M + 4, N + M + 4, 2 p + 2) with p the highest power of z in the displacement
+    field of theory ``th`` (see :func:`build_shell_model`)."""
     p_z = max(fam.z_power + (1 if fam.rotates else 0) for fam in th.families)
     if quadrature is None:
         quadrature = (m + 4, n + m + 4, 2 * p_z + 2)
@@ -646,13 +681,28 @@ def build_shell_model(
     nq_x = integer("quadrature[0]", quadrature[0], 1, 200)
     nq_t = integer("quadrature[1]", quadrature[1], 1, 400)
     nq_z = integer("quadrature[2]", quadrature[2], 1, 50)
+    return nq_x, nq_t, nq_z
 
-    t0 = time.perf_counter()
-    radius = tooth.radius
+
+class _VolumeQuadrature(NamedTuple):
+    """Gauss points over the tapered tooth: P = nq_θ · nq_x mid-surface points (θ-major,
+    x = s h(θ)), each with nq_z points z = ζ t/2 through the thickness."""
+
+    xi: np.ndarray  # (P,) [1] ξ = x / a
+    eta: np.ndarray  # (P,) [1] η = 2θ/Θ₀ − 1
+    thickness: np.ndarray  # (P,) [mm] t(x, θ)
+    area_weight: np.ndarray  # (P,) [mm rad] w_θ w_s h(θ)
+    zeta: np.ndarray  # (nq_z,) [1] ζ in [−1, 1]
+    zeta_weight: np.ndarray  # (nq_z,) [1]
+
+
+def _volume_quadrature(
+    tooth: ShellTooth, a: float, nq_x: int, nq_t: int, nq_z: int
+) -> _VolumeQuadrature:
+    """Gauss points and weights over the tapered volume of ``tooth``: θ [rad] over the
+    face, then x = s h(θ) [mm] over the height (ξ = x/a, a [mm] the reference height),
+    then z = ζ t/2 [mm] through the thickness."""
     th0 = tooth.subtended_angle
-    a = max(tooth.height_toe, tooth.height_heel)
-
-    # quadrature points over the tapered volume: θ, then x = s h(θ), then z = ζ t/2
     th_q, wth_q = _gauss(nq_t, 0.0, th0)
     s_q, ws_q = _gauss(nq_x, 0.0, 1.0)
     zeta_q, wz_q = _gauss(nq_z, -1.0, 1.0)
@@ -662,22 +712,42 @@ def build_shell_model(
     w_area = (wth_q[:, None] * ws_q[None, :] * h_q[:, None]).ravel()
     xi = (x_tq / a).ravel()
     eta = np.repeat(2.0 * th_q / th0 - 1.0, nq_x)
-    dxi, deta = 1.0 / a, 2.0 / th0
-    npts = xi.size
+    return _VolumeQuadrature(xi, eta, t_flat, w_area, zeta_q, wz_q)
 
-    gt = face_basis(eta, n)
-    hx_cache: dict[tuple[int, int], tuple[np.ndarray, ...]] = {}
-    sizes, offsets, layout, off = [], [], [], 0
+
+def _dof_layout(th: _Theory, m: int, n: int) -> tuple[tuple, int]:
+    """Where each family of theory ``th`` sits among the Ritz unknowns: a tuple of
+    (family, offset, x_power, x_count) with x_count = M + x_extra height functions times
+    N face functions each, and the number of unknowns n_dof [1]."""
+    layout, off = [], 0
     for fam in th.families:
         key = (fam.x_power, m + fam.x_extra)
-        if key not in hx_cache:
-            hx_cache[key] = height_basis(xi, *key)
-        size = key[1] * n
-        sizes.append(size)
-        offsets.append(off)
         layout.append((fam, off, *key))
-        off += size
-    n_dof = off
+        off += key[1] * n
+    return tuple(layout), off
+
+
+def _stiffness(
+    tooth: ShellTooth,
+    th: _Theory,
+    kappa: float,
+    layout: tuple,
+    n_dof: int,
+    n: int,
+    quad: _VolumeQuadrature,
+    a: float,
+) -> np.ndarray:
+    """The Ritz stiffness matrix K (n_dof, n_dof) of seed Eq. 3.10, strain energy
+    ½ qᵀ K q [N mm] of the unknowns q: seed Eq. 3.6a (plane stress [MPa], shear × κ for the
+    Mindlin theories) integrated over the quadrature ``quad`` and symmetrised; a [mm] the
+    height that normalises x, n the number of face functions."""
+    radius = tooth.radius
+    dxi, deta = 1.0 / a, 2.0 / tooth.subtended_angle
+    gt = face_basis(quad.eta, n)
+    hx = {}
+    for _, _, power, count in layout:
+        if (power, count) not in hx:
+            hx[(power, count)] = height_basis(quad.xi, power, count)
 
     e_mod, nu = tooth.youngs_modulus, tooth.poisson_ratio
     g_mod = tooth.shear_modulus
@@ -685,30 +755,52 @@ def build_shell_model(
     k_s = kappa if th.shear_corrected else 1.0
     c_sh = g_mod * np.array([1.0, k_s, k_s])  # γ_xθ, γ_xz, γ_θz
 
+    t_flat = quad.thickness
     K = np.zeros((n_dof, n_dof))
-    for zeta, wz in zip(zeta_q, wz_q, strict=True):
+    for zeta, wz in zip(quad.zeta, quad.zeta_weight, strict=True):
         z = 0.5 * zeta * t_flat
-        inv = (1.0 / (radius + z))[:, None]
-        # strains [ε_x, ε_θ, γ_xθ, γ_xz, γ_θz] of every unknown at every point
-        E = np.zeros((5, npts, n_dof))
-        for fam, o, sz in zip(th.families, offsets, sizes, strict=True):
-            f = _family_fields(
-                fam, z, hx_cache[(fam.x_power, m + fam.x_extra)], gt, dxi, deta, radius
-            )
-            zero = 0.0
-            E[0, :, o : o + sz] = f.get("U_x", zero)
-            E[1, :, o : o + sz] = (f.get("V_t", zero) + f.get("W", zero)) * inv
-            E[2, :, o : o + sz] = f.get("V_x", zero) + f.get("U_t", zero) * inv
-            E[3, :, o : o + sz] = f.get("U_z", zero) + f.get("W_x", zero)
-            E[4, :, o : o + sz] = f.get("V_z", zero) + (f.get("W_t", zero) - f.get("V", zero)) * inv
-        wq = (w_area * wz * 0.5 * t_flat * (radius + z))[None, :, None]  # (R+z) dθ dx dz
+        E = _strains(layout, n_dof, n, z, hx, gt, dxi, deta, radius)
+        wq = (quad.area_weight * wz * 0.5 * t_flat * (radius + z))[None, :, None]  # (R+z) dθ dx dz
         DE = np.empty_like(E)
         DE[0] = c_nn[0, 0] * E[0] + c_nn[0, 1] * E[1]
         DE[1] = c_nn[1, 0] * E[0] + c_nn[1, 1] * E[1]
         DE[2:] = c_sh[:, None, None] * E[2:]
         K += E.reshape(-1, n_dof).T @ (wq * DE).reshape(-1, n_dof)
-    K = 0.5 * (K + K.T)
+    return 0.5 * (K + K.T)
 
+
+def _strains(
+    layout: tuple,
+    n_dof: int,
+    n: int,
+    z: np.ndarray,
+    hx: dict[tuple[int, int], tuple[np.ndarray, ...]],
+    gt: tuple[np.ndarray, ...],
+    dxi: float,
+    deta: float,
+    radius: float,
+) -> np.ndarray:
+    """Strains [ε_x, ε_θ, γ_xθ, γ_xz, γ_θz] [1] per unit of each Ritz unknown at the
+    points (P,) at distance z [mm] from the mid-surface: a (5, P, n_dof) array (the exact
+    linear strains of a cylindrical body of radius [mm], see :func:`build_shell_model`)."""
+    inv = (1.0 / (radius + z))[:, None]
+    E = np.zeros((5, z.size, n_dof))
+    for fam, o, power, count in layout:
+        sz = count * n
+        f = _family_fields(fam, z, hx[(power, count)], gt, dxi, deta, radius)
+        zero = 0.0
+        E[0, :, o : o + sz] = f.get("U_x", zero)
+        E[1, :, o : o + sz] = (f.get("V_t", zero) + f.get("W", zero)) * inv
+        E[2, :, o : o + sz] = f.get("V_x", zero) + f.get("U_t", zero) * inv
+        E[3, :, o : o + sz] = f.get("U_z", zero) + f.get("W_x", zero)
+        E[4, :, o : o + sz] = f.get("V_z", zero) + (f.get("W_t", zero) - f.get("V", zero)) * inv
+    return E
+
+
+def _scaled_cholesky(K: np.ndarray, n_dof: int) -> tuple[tuple, np.ndarray]:
+    """Cholesky factor (upper, as :func:`scipy.linalg.cho_factor`) of the Jacobi-scaled
+    stiffness S K S [1] and the scale S = diag(K)^(−1/2); raises :class:`LTCAError` for a
+    zero or non-finite diagonal term or a K that is not positive definite."""
     d = np.sqrt(np.diag(K))
     if not np.all(np.isfinite(d)) or np.any(d <= 0.0):
         raise LTCAError("shell stiffness has a zero or non-finite diagonal term")
@@ -722,24 +814,7 @@ def build_shell_model(
             f"shell stiffness ({n_dof} unknowns) is not positive definite: "
             "reduce the number of modes or check the tooth dimensions"
         ) from exc
-    elapsed = time.perf_counter() - t0
-    log.debug(
-        "shell model: %d unknowns (M=%d, N=%d, %s), %d quadrature points, %.3f s",
-        n_dof, m, n, theory, npts * nq_z, elapsed,
-    )
-    return ShellModel(
-        tooth=tooth,
-        n_height=m,
-        n_face=n,
-        theory=theory,
-        shear_factor=kappa,
-        n_dof=n_dof,
-        build_time=elapsed,
-        reference_height=a,
-        _layout=tuple(layout),
-        _factor=factor,
-        _scale=scale,
-    )
+    return factor, scale
 
 
 # ---------------------------------------------------------------------------------------

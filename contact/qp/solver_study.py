@@ -20,12 +20,13 @@ from __future__ import annotations
 import logging
 import math
 from collections.abc import Iterable, Sequence
+from typing import NamedTuple
 
 import numpy as np
 import xarray as xr
 
 from contact.qp.benchmark_problems import TestProblem
-from contact.qp.problem import DEFAULT_TOLERANCE, RESIDUALS
+from contact.qp.problem import DEFAULT_TOLERANCE, RESIDUALS, ContactProblem, ContactSolution
 from contact.qp.solvers import DEFAULT_SOLVER, available_solvers, get_backend, solve_contact
 
 __all__ = ["compare_solvers", "default_study_solvers", "shifted_geometric_mean", "summarize"]
@@ -120,23 +121,7 @@ def compare_solvers(
         raise ValueError(f"repeats: must be ≥ 1, got {repeats}")
     max_size = dict(max_size or {})
     ns, npb = len(solvers), len(problems)
-    f = lambda: np.full((ns, npb), np.nan)  # noqa: E731
-    out = {
-        k: f()
-        for k in (
-            "solve_time",
-            "build_time",
-            "force_error",
-            "rotation_error",
-            *(f"residual_{r}" for r in RESIDUALS),
-        )
-    }
-    ints = {
-        k: np.zeros((ns, npb), dtype=np.int8)
-        for k in ("found", "claimed_success", "polished", "ran")
-    }
-    iterations = np.full((ns, npb), -1, dtype=np.int64)
-    status = np.full((ns, npb), "", dtype=object)
+    table = _empty_table(ns, npb)
     refs = [solve_contact(tp.problem, DEFAULT_SOLVER) for tp in problems]
     bar = None
     if progress:
@@ -148,66 +133,150 @@ def compare_solvers(
             if bar is not None:
                 bar.set_postfix_str(f"{name} on {tp.name}", refresh=False)
             if tp.problem.size > max_size.get(name, math.inf):
-                status[i, j] = f"skipped: N = {tp.problem.size} > {max_size[name]}"
-                if bar is not None:
-                    bar.update()
-                continue
-            best = None
-            for _ in range(repeats):
-                sol = solve_contact(
-                    tp.problem, name, accuracy=accuracy, polish_solution=polish, tolerance=tolerance
+                table.status[i, j] = f"skipped: N = {tp.problem.size} > {max_size[name]}"
+            else:
+                sol = _fastest_of_repeats(
+                    tp.problem, name, repeats, accuracy=accuracy, polish=polish, tolerance=tolerance
                 )
-                t = sol.solve_time + sol.build_time
-                if best is None or t < best[0]:
-                    best = (t, sol)
-            sol = best[1]
-            ints["ran"][i, j] = 1
-            ints["found"][i, j] = sol.found
-            ints["claimed_success"][i, j] = bool(sol.extras.get("claimed_success", False))
-            ints["polished"][i, j] = sol.status == "solved (polished)"
-            out["solve_time"][i, j] = sol.solve_time
-            out["build_time"][i, j] = sol.build_time
-            for r in RESIDUALS:
-                out[f"residual_{r}"][i, j] = min(sol.residuals[r], 1e300)
-            if np.all(np.isfinite(sol.force)) and ref.found:
-                out["force_error"][i, j] = float(
-                    np.max(np.abs(sol.force - ref.force)) / np.max(np.abs(ref.force))
-                )
-                out["rotation_error"][i, j] = abs(sol.rotation - ref.rotation) / abs(ref.rotation)
-            iterations[i, j] = sol.iterations
-            status[i, j] = sol.status
+                _record(table, i, j, sol, ref)
             if bar is not None:
                 bar.update()
     if bar is not None:
         bar.close()
-    dims = ("solver", "problem")
-    meta = {
-        "solve_time": ("s", "backend wall time incl. polishing (min over repeats)"),
-        "build_time": ("s", "problem conversion time (scaling, dense to sparse, modelling)"),
-        "force_error": ("1", "max force error relative to the exact active-set solution"),
-        "rotation_error": (
-            "1",
-            "transmission-error (rotation) error relative to the exact solution",
-        ),
-        **{
-            f"residual_{r}": ("1", f"relative {r} residual computed by the toolkit")
-            for r in RESIDUALS
-        },
+    attrs = {
+        "title": "hypoid-ltca solver comparison",
+        "accuracy": accuracy,
+        "polish": int(polish),
+        "tolerance": tolerance,
+        "repeats": repeats,
+        "reference_solver": DEFAULT_SOLVER,
     }
-    data = {k: (dims, v, {"units": meta[k][0], "long_name": meta[k][1]}) for k, v in out.items()}
+    return _study_dataset(table, problems, solvers, attrs)
+
+
+class _Table(NamedTuple):
+    """The study's results, each array over (solver, problem), filled in place."""
+
+    floats: dict[str, np.ndarray]  # times [s], errors and residuals [1]; NaN: not run
+    flags: dict[str, np.ndarray]  # int8 0/1: found, claimed_success, polished, ran
+    iterations: np.ndarray  # int64, -1: not reported or not run
+    status: np.ndarray  # object (str), "" where not run
+
+
+def _empty_table(n_solvers: int, n_problems: int) -> _Table:
+    """A :class:`_Table` of (n_solvers, n_problems) arrays of no result: NaN times [s],
+    errors and residuals [1], flags 0, iterations −1 and empty statuses."""
+    f = lambda: np.full((n_solvers, n_problems), np.nan)  # noqa: E731
+    floats = {
+        k: f()
+        for k in (
+            "solve_time",
+            "build_time",
+            "force_error",
+            "rotation_error",
+            *(f"residual_{r}" for r in RESIDUALS),
+        )
+    }
     flags = {
-        "found": "certified solution found (1) or not (0)",
-        "claimed_success": "backend claimed success (1) or not (0)",
-        "polished": "answer certified only after polishing (1) or not (0)",
-        "ran": "backend was run on this problem (1) or skipped (0)",
+        k: np.zeros((n_solvers, n_problems), dtype=np.int8)
+        for k in ("found", "claimed_success", "polished", "ran")
     }
-    data.update({k: (dims, v, {"units": "1", "long_name": flags[k]}) for k, v in ints.items()})
+    iterations = np.full((n_solvers, n_problems), -1, dtype=np.int64)
+    status = np.full((n_solvers, n_problems), "", dtype=object)
+    return _Table(floats, flags, iterations, status)
+
+
+def _fastest_of_repeats(
+    problem: ContactProblem,
+    name: str,
+    repeats: int,
+    *,
+    accuracy: str,
+    polish: bool,
+    tolerance: float,
+) -> ContactSolution:
+    """The solution of ``repeats`` runs of backend ``name`` on ``problem`` with the
+    smallest build + solve time [s] (the first of equal times)."""
+    best = None
+    for _ in range(repeats):
+        sol = solve_contact(
+            problem, name, accuracy=accuracy, polish_solution=polish, tolerance=tolerance
+        )
+        t = sol.solve_time + sol.build_time
+        if best is None or t < best[0]:
+            best = (t, sol)
+    return best[1]
+
+
+def _record(table: _Table, i: int, j: int, sol: ContactSolution, ref: ContactSolution) -> None:
+    """Write solution ``sol`` of solver i on problem j into ``table``: flags, times [s],
+    residuals [1] (capped at 1e300), iterations, status, and where its forces are finite
+    and the reference ``ref`` was found the relative force and rotation errors [1]."""
+    table.flags["ran"][i, j] = 1
+    table.flags["found"][i, j] = sol.found
+    table.flags["claimed_success"][i, j] = bool(sol.extras.get("claimed_success", False))
+    table.flags["polished"][i, j] = sol.status == "solved (polished)"
+    out = table.floats
+    out["solve_time"][i, j] = sol.solve_time
+    out["build_time"][i, j] = sol.build_time
+    for r in RESIDUALS:
+        out[f"residual_{r}"][i, j] = min(sol.residuals[r], 1e300)
+    if np.all(np.isfinite(sol.force)) and ref.found:
+        out["force_error"][i, j] = float(
+            np.max(np.abs(sol.force - ref.force)) / np.max(np.abs(ref.force))
+        )
+        out["rotation_error"][i, j] = abs(sol.rotation - ref.rotation) / abs(ref.rotation)
+    table.iterations[i, j] = sol.iterations
+    table.status[i, j] = sol.status
+
+
+#: (units, long name) of the floating-point variables of the study
+_FLOAT_META = {
+    "solve_time": ("s", "backend wall time incl. polishing (min over repeats)"),
+    "build_time": ("s", "problem conversion time (scaling, dense to sparse, modelling)"),
+    "force_error": ("1", "max force error relative to the exact active-set solution"),
+    "rotation_error": (
+        "1",
+        "transmission-error (rotation) error relative to the exact solution",
+    ),
+    **{
+        f"residual_{r}": ("1", f"relative {r} residual computed by the toolkit")
+        for r in RESIDUALS
+    },
+}
+
+#: long names of the 0/1 variables of the study
+_FLAG_NAMES = {
+    "found": "certified solution found (1) or not (0)",
+    "claimed_success": "backend claimed success (1) or not (0)",
+    "polished": "answer certified only after polishing (1) or not (0)",
+    "ran": "backend was run on this problem (1) or skipped (0)",
+}
+
+
+def _study_dataset(
+    table: _Table,
+    problems: Sequence[TestProblem],
+    solvers: list[str],
+    attrs: dict,
+) -> xr.Dataset:
+    """The study's dataset over (solver, problem): the variables of ``table`` with their
+    units and long names, the problems' sizes [1] and kinds and the solvers' families as
+    coordinates, ``attrs`` as attributes (see :func:`compare_solvers`)."""
+    dims = ("solver", "problem")
+    data = {
+        k: (dims, v, {"units": _FLOAT_META[k][0], "long_name": _FLOAT_META[k][1]})
+        for k, v in table.floats.items()
+    }
+    data.update(
+        {k: (dims, v, {"units": "1", "long_name": _FLAG_NAMES[k]}) for k, v in table.flags.items()}
+    )
     data["iterations"] = (
         dims,
-        iterations,
+        table.iterations,
         {"units": "1", "long_name": "backend iterations (-1: not reported)"},
     )
-    data["status"] = (dims, status.astype(str), {"long_name": "solution status"})
+    data["status"] = (dims, table.status.astype(str), {"long_name": "solution status"})
     coords = {
         "solver": ("solver", list(solvers), {"long_name": "solver backend (registry name)"}),
         "problem": ("problem", [tp.name for tp in problems], {"long_name": "problem name"}),
@@ -222,14 +291,6 @@ def compare_solvers(
             [get_backend(s).family for s in solvers],
             {"long_name": "algorithm family"},
         ),
-    }
-    attrs = {
-        "title": "hypoid-ltca solver comparison",
-        "accuracy": accuracy,
-        "polish": int(polish),
-        "tolerance": tolerance,
-        "repeats": repeats,
-        "reference_solver": DEFAULT_SOLVER,
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
