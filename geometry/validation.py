@@ -12,7 +12,7 @@ names. The case-file loader (:mod:`geometry.case`) prefixes the field with its d
 (``pinion.machine.concave.ratio_of_roll: …``) in the same style.
 
 These functions sit at the bottom of the chain (``geometry``) so that ``contact`` and
-``friction`` use them too (DESIGN.md's package rules).
+``friction`` use them too (the package rules of docs/design.md).
 
 Public functions
 ----------------
