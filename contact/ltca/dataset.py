@@ -63,20 +63,19 @@ def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
         Dims ``torque``, ``roll``, ``pair``, ``segment``, ``harmonic``, ``u``, ``v``,
         ``xyz``; see the module docstring.
     """
+    lte = (screening.ute[None, :] + results.rotation) * 1e6  # (NT, J) urad
     data = {
-        **_load_vars(setup, seg, screening, results),
+        **_load_vars(lte, screening, results),
         **_segment_vars(seg, screening),
         **_solution_vars(seg, results),
-        **_summary_vars(setup, seg, results, screening.ute),
+        **_summary_vars(setup, seg, results, lte),
     }
     return xr.Dataset(data, coords=_coords(setup, seg),
                       attrs=_attrs(setup, timing))
 
 
-def _load_vars(setup: LTCASetup, seg: Segments, screening: Screening,
-               results: RollResults) -> dict:
-    """The LTE, the loaded rotation, the UTE and the per-segment loads."""
-    lte = (screening.ute[None, :] + results.rotation) * 1e6  # urad
+def _load_vars(lte: np.ndarray, screening: Screening, results: RollResults) -> dict:
+    """The LTE (NT, J) [urad], the loaded rotation, the UTE and the per-segment loads."""
     return {
         "transmission_error": _var(_DIMS2, lte, "urad",
                                    "loaded transmission error (gear lag, UTE + loaded rotation)"),
@@ -160,9 +159,10 @@ def _solution_vars(seg: Segments, results: RollResults) -> dict:
 
 
 def _summary_vars(setup: LTCASetup, seg: Segments, results: RollResults,
-                  ute: np.ndarray) -> dict:
-    """The LTE summary over the mesh cycles, the peak pressures and the loaded pattern."""
-    summ, harm = _lte_summary(setup, (ute[None, :] + results.rotation) * 1e6)
+                  lte: np.ndarray) -> dict:
+    """The summary of the LTE (NT, J) [urad] over the mesh cycles, the peak pressures and
+    the loaded pattern."""
+    summ, harm = _lte_summary(setup, lte)
     curve = seg.kind == 0
     return {
         "lte_mean": _var(("torque",), summ["mean"], "urad", "mean loaded transmission error"),

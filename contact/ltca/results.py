@@ -91,11 +91,11 @@ class RollResults:
         self.n_segments[j] = self.n_segments[source]
 
     def record(self, it: int, j: int, solution: ContactSolution, iterations: int,
-               pairs: np.ndarray, segments: np.ndarray) -> None:
-        """The status, residuals and size of the solution at torque ``it``, roll ``j`` on
-        the segments (``pairs``, ``segments``) (N,)."""
+               n_segments: int) -> None:
+        """The status, residuals and size (``n_segments`` in its problem) of the solution
+        at torque ``it``, roll ``j``."""
         self.weber_iterations[it, j] = iterations
-        self.n_segments[j] = max(self.n_segments[j], pairs.size)
+        self.n_segments[j] = max(self.n_segments[j], n_segments)
         self.found[it, j] = int(solution.found)
         self.status[it, j] = solution.status
         for r in RESIDUALS:

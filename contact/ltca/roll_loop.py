@@ -155,6 +155,7 @@ def _solve_roll(an: _Analysis, cont: _Continuation, j: int, it: int) -> None:
     (adding any that would close, up to SCREEN_ROUNDS rounds), record."""
     pool, screening, results = an.pool, an.screening, an.results
     T = float(an.setup.torques[it])
+    gear_torque = float(an.setup.gear_torques[it])  # [N·mm]
     mask = pool.mask(j)
     if mask is None or not mask.any():
         results.status[it, j] = "no segment within the separation limit"
@@ -175,8 +176,8 @@ def _solve_roll(an: _Analysis, cont: _Continuation, j: int, it: int) -> None:
         if np.any(sel & ~pool.mask(j)):
             pool.assemble([(j, pool.mask(j) | sel)])
         selection = _selection(an, j, sel)
-        ws = weber_solve(selection, T * an.setup.easeoff.ratio * 1e3,
-                         _first_load(an, j, T), an.setup.options, an.modulus, prior=prior,
+        ws = weber_solve(selection, gear_torque, _first_load(an, j, gear_torque),
+                         an.setup.options, an.modulus, prior=prior,
                          name=f"{an.setup.case.name} roll {j} T {T:g}")
         results.solve_time[it, j] += ws.time
         if not ws.solution.found:
@@ -217,15 +218,15 @@ def _selection(an: _Analysis, j: int, sel: np.ndarray) -> RollSelection:
                          screening.separation[j, kk, ss])
 
 
-def _first_load(an: _Analysis, j: int, T: float) -> float:
-    """[N] Weber's first loads at roll j, pinion torque T [N·m]: the gear torque shared
+def _first_load(an: _Analysis, j: int, gear_torque: float) -> float:
+    """[N] Weber's first loads at roll j, gear torque [N·mm]: shared
     evenly over the roll's curve segments (not the neighbour's loads, nor the selection's:
     the roll's result then depends on the roll alone, not on the path to it or on which
     edge segments were worked out)."""
     usable = an.screening.usable[j]
     on_curve = usable & (an.seg.kind == 0)
     arms = an.screening.moment_arm[j][on_curve if on_curve.any() else usable]
-    return even_share(T * an.setup.easeoff.ratio * 1e3, arms)
+    return even_share(gear_torque, arms)
 
 
 def _scatter(shape: tuple[int, int], selection: RollSelection,
@@ -240,7 +241,7 @@ def _record(an: _Analysis, cont: _Continuation, j: int, it: int, selection: Roll
             ws: WeberSolution) -> None:
     """Store roll j's solution at torque ``it`` and carry it on to the next roll."""
     sol = ws.solution
-    an.results.record(it, j, sol, ws.iterations, selection.pairs, selection.segments)
+    an.results.record(it, j, sol, ws.iterations, selection.pairs.size)
     if an.sink is not None:
         an.sink(ws.problem)
         cont.problems[it, j] = ws.problem
