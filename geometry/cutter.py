@@ -39,6 +39,8 @@ Public functions
 Blade                    frozen dataclass of one blade's geometry
 profile_sections         the constant-curvature sections of a blade's edge
 blade_profile            edge point and its first and second s-derivatives in (ρ, h)
+placement_vectors        where a (face-hobbing) blade sits in the head: M, rake-plane lines
+blade_edge               the edge as a space curve in the cutter frame
 cutter_surface           r_t(s, θ), its first and second derivatives, unit normal
 cutter_curvatures        principal curvatures of the cutter surface (analytic)
 """
@@ -58,13 +60,17 @@ __all__ = [
     "BLADE_SIDES",
     "PROFILE_TYPES",
     "Blade",
+    "BladeEdge",
     "BladeProfilePoint",
     "CutterSurface",
     "ProfileSections",
+    "blade_edge",
     "blade_profile",
     "cutter_curvatures",
     "cutter_surface",
+    "placement_vectors",
     "profile_sections",
+    "revolution_normal",
 ]
 
 #: side sign σ: +1 for the outside blade (cuts the concave flank), −1 for the inside blade
@@ -104,6 +110,32 @@ class Blade:
         Δα_F, change of blade angle in the flankrem section, |Δα_F| < 20°; 0 = no flankrem.
     flankrem_height : float — [mm]
         h_F, height of the profile/flankrem corner above the tip; > h_T when Δα_F ≠ 0.
+    blade_phase : float — [rad]
+        θ_b, angular position of the blade's reference point M (radius r_p, tip plane) in
+        the head at spin θ = 0, about +z_t; |θ_b| ≤ 360°. Face hobbing: the outside and
+        inside blades of a group sit at different phases (seed Fig. 2.1b, 2.3). Default 0.
+    blade_offset_angle : float — [rad]
+        δ_b, angle at the cutter axis between the radius to M and the blade's rake plane
+        (seed Fig. 2.3, Eq. 2.6c): the rake plane is the head's axial half-plane through M
+        turned by δ_b about the axial line through M, so that it lies at the distance
+        r_p |sin δ_b| from the cutter axis (the blade offset). |δ_b| < 45°; face hobbing
+        typically δ_b ≈ ν, the cutter's lead angle, which puts the rake face normal to the
+        tooth trace. Default 0 (face milling: the edge lies in an axial plane).
+    rake_angle : float — [rad]
+        Side rake of the blade's front face, a further turn of the rake plane about the
+        axial line through M (adds to δ_b: the rake plane is turned by
+        γ_a = δ_b + rake_angle); |rake| < 30°. Default 0.
+    hook_angle : float — [rad]
+        γ_h, hook of the rake plane: its turn about its own horizontal line through M
+        (tilts the edge towards or away from the cutting direction); |γ_h| < 20°.
+        Default 0.
+
+    Notes
+    -----
+    The profile (blade angle, edge radius, toprem, circular profile, flankrem) is given in
+    the rake plane: ρ − r_p is measured in the rake plane along its horizontal line from M
+    and h along its "vertical" line. With the four placement angles zero the edge lies in
+    the head's axial plane at θ = 0 and the blade is a face-milling blade (seed Eq. 2.6).
 
     Raises
     ------
@@ -122,6 +154,10 @@ class Blade:
     toprem_height: float = 0.0
     flankrem_angle: float = 0.0
     flankrem_height: float = 0.0
+    blade_phase: float = 0.0
+    blade_offset_angle: float = 0.0
+    rake_angle: float = 0.0
+    hook_angle: float = 0.0
 
     def __post_init__(self) -> None:
         if self.side not in BLADE_SIDES:
@@ -130,8 +166,17 @@ class Blade:
             raise InputError(f"profile: must be one of {list(PROFILE_TYPES)}, got {self.profile!r}")
         for name in ("point_radius", "blade_angle", "edge_radius", "profile_radius",
                      "profile_reference_height", "toprem_angle", "toprem_height",
-                     "flankrem_angle", "flankrem_height"):
+                     "flankrem_angle", "flankrem_height", "blade_phase",
+                     "blade_offset_angle", "rake_angle", "hook_angle"):
             object.__setattr__(self, name, real(name, getattr(self, name)))
+        for name, bound, closed in (("blade_phase", 360.0, True),
+                                    ("blade_offset_angle", 45.0, False),
+                                    ("rake_angle", 30.0, False), ("hook_angle", 20.0, False)):
+            deg = math.degrees(getattr(self, name))
+            if abs(deg) > bound + 1e-9 if closed else abs(deg) >= bound:
+                brackets = "[]" if closed else "()"
+                raise InputError(f"{name}: must be in {brackets[0]}-{bound:g}, {bound:g}"
+                                 f"{brackets[1]} deg, got {deg:.6g}")
         if self.point_radius <= 0.0:
             raise InputError(f"point_radius: must be > 0 mm, got {self.point_radius}")
         if not 0.0 <= self.blade_angle < _MAX_BLADE_ANGLE:
@@ -171,6 +216,19 @@ class Blade:
                     f"edge radius) when a flankrem angle is given, got {self.flankrem_height}")
         # constructing the sections checks that the edge radius fits the profile
         profile_sections(self)
+
+    @property
+    def placed(self) -> bool:
+        """True if the blade is placed off the head's axial plane (phase, offset, rake or hook
+        ≠ 0): its edge is a space curve (face hobbing), not a meridian."""
+        return bool(self.blade_phase or self.blade_offset_angle or self.rake_angle
+                    or self.hook_angle)
+
+    @property
+    def rake_plane_angle(self) -> float:
+        """γ_a = δ_b + rake angle [rad]: the turn of the rake plane about the axial line
+        through M."""
+        return self.blade_offset_angle + self.rake_angle
 
     @property
     def sigma(self) -> int:
@@ -447,6 +505,72 @@ def blade_profile(blade: Blade | ProfileSections, s, section=None) -> BladeProfi
     return BladeProfilePoint(rho, h, c, sn, d2r, d2h)
 
 
+class BladeEdge(NamedTuple):
+    """The blade edge as a curve in the cutter frame at spin θ = 0, with s-derivatives."""
+
+    e: np.ndarray  # (..., 3) [mm]
+    e_s: np.ndarray  # (..., 3) [1]
+    e_ss: np.ndarray  # (..., 3) [1/mm]
+
+
+def placement_vectors(blade: Blade) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The blade placement in the head: M and the rake plane's two in-plane directions.
+
+    Parameters
+    ----------
+    blade : Blade
+
+    Returns
+    -------
+    m, a1, a2 : ndarray (3,)
+        M = r_p (cos θ_b, sin θ_b, 0) [mm]; a1 = R_z(θ_b + γ_a) e_x, the rake plane's
+        horizontal line through M (ρ − r_p is measured along it); a2 = R_z(θ_b + γ_a)
+        R_x(γ_h) e_z, its "vertical" line (h is measured along −a2) [1].
+
+    Notes
+    -----
+    B(θ_b, γ_a, γ_h) = R_z(θ_b) T(r_p, 0, 0) R_z(γ_a) R_x(γ_h) applied to the profile point
+    [ρ − r_p, 0, −h] of the rake plane (``docs/machine.md``, "Blade placement"; seed
+    Eq. 2.6b–c and Fig. 2.3, whose blade offset angle δ_b, rake and hook angles it reads).
+    """
+    ph, ga, gh = blade.blade_phase, blade.rake_plane_angle, blade.hook_angle
+    m = blade.point_radius * np.array([math.cos(ph), math.sin(ph), 0.0])
+    a1 = np.array([math.cos(ph + ga), math.sin(ph + ga), 0.0])
+    a2 = np.array([-math.sin(ph + ga) * -math.sin(gh), math.cos(ph + ga) * -math.sin(gh),
+                   math.cos(gh)])
+    return m, a1, a2
+
+
+def blade_edge(blade: Blade, s, section=None,
+               sections: ProfileSections | None = None) -> BladeEdge:
+    """The blade edge e(s) in the cutter frame at spin θ = 0 (seed Eq. 2.6b–c).
+
+    Parameters
+    ----------
+    blade : Blade
+    s : array_like — [mm]
+        Arc length along the edge (any shape).
+    section : array_like of int, optional
+        Section to evaluate (see :func:`blade_profile`).
+    sections : ProfileSections, optional
+        Precomputed :func:`profile_sections` of ``blade``.
+
+    Returns
+    -------
+    BladeEdge
+        e = M + (ρ − r_p) a1 − h a2 and its first two s-derivatives, arrays s.shape + (3,)
+        (:func:`placement_vectors`). A face-milling blade (no placement) gives
+        e = [ρ, 0, −h].
+    """
+    sec = profile_sections(blade) if sections is None else sections
+    p = blade_profile(sec, np.asarray(s, dtype=float), section)
+    m, a1, a2 = placement_vectors(blade)
+    rr = (p.rho - blade.point_radius)[..., None]
+    return BladeEdge(m + rr * a1 - p.h[..., None] * a2,
+                     p.drho[..., None] * a1 - p.dh[..., None] * a2,
+                     p.d2rho[..., None] * a1 - p.d2h[..., None] * a2)
+
+
 class CutterSurface(NamedTuple):
     """Cutter surface r_t(s, θ) in the cutter frame with derivatives; vectors on the last axis."""
 
@@ -486,10 +610,16 @@ def cutter_surface(blade: Blade, s, theta, section=None,
     Seed Eq. 2.6a–c: r_t = M_z(θ) r_b with the blade point r_b = [ρ, 0, −h] in the
     blade's axial plane. The normal is σ [−(dh/ds) cos θ, −(dh/ds) sin θ, −dρ/ds]
     (σ = +1 outside blade), the reverse of the tool's outward normal, because the work
-    material lies on the other side of the cut surface from the tool.
+    material lies on the other side of the cut surface from the tool. A placed blade
+    (:attr:`Blade.placed`, face hobbing) has the edge :func:`blade_edge`, a space curve;
+    it still sweeps a surface of revolution r_t = R_z(θ) e(s) (a hyperboloid of
+    revolution for a straight edge off the axial plane, seed §2.2.1), whose normal is
+    −σ e′ × (e_z × e) / |…| turned by θ (equal to the expression above without placement).
     """
     sec = profile_sections(blade) if sections is None else sections
     s, theta = np.broadcast_arrays(np.asarray(s, dtype=float), np.asarray(theta, dtype=float))
+    if blade.placed:
+        return _placed_cutter_surface(blade, sec, s, theta, section)
     p = blade_profile(sec, s, section)
     c, sn = np.cos(theta), np.sin(theta)
     sg = blade.sigma
@@ -506,6 +636,46 @@ def cutter_surface(blade: Blade, s, theta, section=None,
         r_stheta=vec(-p.drho * sn, p.drho * c, 0.0),
         r_thetatheta=vec(-p.rho * c, -p.rho * sn, 0.0),
         normal=vec(-sg * p.dh * c, -sg * p.dh * sn, -sg * p.drho))
+
+
+def revolution_normal(blade: Blade, e: np.ndarray, e_s: np.ndarray) -> np.ndarray:
+    """Unit normal −σ e′ × (e_z × e)/|…| of the surface of revolution swept by an edge.
+
+    Parameters
+    ----------
+    blade : Blade
+        Gives the side sign σ.
+    e, e_s : ndarray (..., 3) — [mm], [1]
+        Edge points and tangents (:func:`blade_edge`).
+
+    Returns
+    -------
+    ndarray (..., 3) — [1]
+        The normal out of the work material at spin θ = 0 (for an unplaced blade
+        σ[−h′, 0, −ρ′], as :func:`cutter_surface`).
+    """
+    ez_e = np.stack([-e[..., 1], e[..., 0], np.zeros(e.shape[:-1])], -1)
+    n = -blade.sigma * np.cross(e_s, ez_e)
+    return n / np.linalg.norm(n, axis=-1, keepdims=True)
+
+
+def _placed_cutter_surface(blade: Blade, sec: ProfileSections, s: np.ndarray,
+                           theta: np.ndarray, section) -> CutterSurface:
+    """:func:`cutter_surface` of a placed blade: R_z(θ) applied to :func:`blade_edge`."""
+    edge = blade_edge(blade, s, section, sec)
+    c, sn = np.cos(theta)[..., None], np.sin(theta)[..., None]
+
+    def rot(v):
+        return np.stack([c[..., 0] * v[..., 0] - sn[..., 0] * v[..., 1],
+                         sn[..., 0] * v[..., 0] + c[..., 0] * v[..., 1], v[..., 2]], -1)
+
+    def spin(v):  # S v = e_z × v
+        return np.stack([-v[..., 1], v[..., 0], np.zeros(v.shape[:-1])], -1)
+
+    r, r_s, r_ss = rot(edge.e), rot(edge.e_s), rot(edge.e_ss)
+    return CutterSurface(r=r, r_s=r_s, r_theta=spin(r), r_ss=r_ss, r_stheta=spin(r_s),
+                         r_thetatheta=spin(spin(r)),
+                         normal=rot(revolution_normal(blade, edge.e, edge.e_s)))
 
 
 def cutter_curvatures(blade: Blade, s, section=None) -> tuple[np.ndarray, np.ndarray]:
@@ -533,10 +703,22 @@ def cutter_curvatures(blade: Blade, s, section=None) -> tuple[np.ndarray, np.nda
     :func:`cutter_surface`: κ_meridian = σ (ρ' ζ'' − ζ' ρ''), κ_parallel = σ ζ'/ρ
     (first and second fundamental forms of a surface of revolution, e.g. do Carmo 1976,
     §3-3 Example 4). A straight outside blade gives κ_parallel = −cos α/ρ (concave flank).
+    A placed blade's edge is a space curve: its meridian (ρ_m = |e_xy|, ζ = e_z) is not
+    parametrised by arc length, and the same formulas carry the speed
+    v = (ρ_m′² + ζ′²)^½: κ_meridian = σ (ρ_m′ ζ″ − ζ′ ρ_m″)/v³, κ_parallel = σ ζ′/(ρ_m v).
     """
-    p = blade_profile(blade, s, section)
     sg = blade.sigma
-    zeta_d, zeta_dd = -p.dh, -p.d2h
-    k_mer = sg * (p.drho * zeta_dd - zeta_d * p.d2rho)
-    k_par = sg * zeta_d / p.rho
-    return k_mer, k_par
+    if not blade.placed:
+        p = blade_profile(blade, s, section)
+        zeta_d, zeta_dd = -p.dh, -p.d2h
+        k_mer = sg * (p.drho * zeta_dd - zeta_d * p.d2rho)
+        k_par = sg * zeta_d / p.rho
+        return k_mer, k_par
+    e, e1, e2 = blade_edge(blade, s, section)
+    rho = np.hypot(e[..., 0], e[..., 1])
+    rho1 = (e[..., 0] * e1[..., 0] + e[..., 1] * e1[..., 1]) / rho
+    rho2 = ((e1[..., 0] ** 2 + e1[..., 1] ** 2 + e[..., 0] * e2[..., 0]
+             + e[..., 1] * e2[..., 1]) - rho1**2) / rho
+    z1, z2 = e1[..., 2], e2[..., 2]
+    v = np.hypot(rho1, z1)
+    return sg * (rho1 * z2 - z1 * rho2) / v**3, sg * z1 / (rho * v)

@@ -46,6 +46,8 @@ MachineSettings        frozen dataclass of one flank's settings (rad, mm)
 PROCESSES              the registry of generating processes
 taylor_motion          a setting and its q-derivatives from Taylor coefficients
 roll_angle             φ(q), φ'(q), φ''(q) with modified roll
+indexing_ratio         κ = −z0/z of a face-hobbing member
+work_rotation          φ(q, θ) = φ_roll(q) + κθ and its q-derivatives
 machine_transform      4×4 M(q), dM/dq, d²M/dq² (cutter → blank), batched
 generated_family       r_g(s, θ, q) and all first and second derivatives in the blank frame
 meshing_function       seed Eq. 2.8, normalised, and its gradient
@@ -63,7 +65,14 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.cutter import Blade, ProfileSections, blade_profile, profile_sections
+from geometry.cutter import (
+    Blade,
+    ProfileSections,
+    blade_edge,
+    blade_profile,
+    profile_sections,
+    revolution_normal,
+)
 from geometry.errors import InputError
 from geometry.validation import real
 
@@ -74,12 +83,14 @@ __all__ = [
     "PoseSettings",
     "cutter_pose",
     "generated_family",
+    "indexing_ratio",
     "machine_transform",
     "meshing_function",
     "mirror_settings",
     "roll_angle",
     "settings_from_poses",
     "taylor_motion",
+    "work_rotation",
 ]
 
 
@@ -132,6 +143,11 @@ class MachineSettings:
         Derivatives of the sliding base with respect to q: (H1 [mm/rad], H2 [mm/rad²], …).
     vertical_motion : sequence of float
         Derivatives of the blank offset with respect to q: (V1 [mm/rad], V2 [mm/rad²], …).
+    indexing_ratio : float — [1]
+        κ, work rotation per radian of cutter spin at a fixed cradle (face hobbing, seed
+        Eq. 2.1 and 2.4b): κ = −z0/z with z0 the cutter's blade groups and z the member's
+        teeth (:func:`indexing_ratio`), |κ| ≤ 50; 0 for face milling (default). Allowed for
+        Formate and Generate.
 
     Raises
     ------
@@ -152,6 +168,7 @@ class MachineSettings:
     modified_roll: tuple[float, ...] = field(default=())
     helical_motion: tuple[float, ...] = field(default=())
     vertical_motion: tuple[float, ...] = field(default=())
+    indexing_ratio: float = 0.0
 
     def __post_init__(self) -> None:
         if self.process not in PROCESSES:
@@ -159,8 +176,11 @@ class MachineSettings:
                 f"process: must be one of {sorted(PROCESSES)}, got {self.process!r}")
         for name in ("radial_setting", "cradle_angle", "swivel", "tilt", "machine_root_angle",
                      "machine_center_to_back", "sliding_base", "blank_offset",
-                     "ratio_of_roll"):
+                     "ratio_of_roll", "indexing_ratio"):
             object.__setattr__(self, name, real(name, getattr(self, name)))
+        if abs(self.indexing_ratio) > 50.0:
+            raise InputError(f"indexing_ratio: must be in [-50, 50] (-z0/z), got "
+                             f"{self.indexing_ratio:.6g}")
         for name in ("modified_roll", "helical_motion", "vertical_motion"):
             seq = getattr(self, name)
             if isinstance(seq, (str, bytes)) or not isinstance(seq, Sequence):
@@ -245,6 +265,70 @@ def roll_angle(settings: MachineSettings, q):
     return PROCESSES[settings.process](settings, np.asarray(q, dtype=float))
 
 
+def indexing_ratio(blade_groups: int, teeth: int) -> float:
+    """Face-hobbing indexing ratio κ = −z0/z of a member (seed Eq. 2.1, 2.4b).
+
+    Parameters
+    ----------
+    blade_groups : int
+        z0, number of blade groups of the cutter head (seed N_t), in [1, 50]; 0 means face
+        milling (κ = 0).
+    teeth : int
+        z, number of teeth of the member being cut, in [3, 500].
+
+    Returns
+    -------
+    float — [1]
+        κ: work rotation per radian of cutter spin measured on the cutter spindle (relative
+        to the cradle), negative in this toolkit's frames: the head and the generating gear
+        turn in opposite senses, like two external gears (``docs/machine.md``).
+
+    Raises
+    ------
+    InputError
+        ``blade_groups`` not an integer in [0, 50], or sharing a common factor with
+        ``teeth``: then every slot is cut by only some of the blade groups (the blade-group
+        runout prints as a spacing error repeating every z/gcd teeth) and the cutter and
+        the member do not hunt.
+    """
+    from geometry.validation import integer
+
+    z0 = integer("blade_groups", blade_groups, 0, 50, allow_float=True)
+    z = integer("teeth", teeth, 3, 500, allow_float=True)
+    if z0 == 0:
+        return 0.0
+    g = math.gcd(z0, z)
+    if g != 1:
+        raise InputError(
+            f"blade_groups: must share no common factor with the member's teeth (z = {z}) so "
+            f"that every blade group cuts every slot, got {z0} (common factor {g})")
+    return -z0 / z
+
+
+def work_rotation(settings: MachineSettings, q, theta=0.0):
+    """Work rotation φ(q, θ) = φ_roll(q) + κ θ and its q-derivatives (seed Eq. 2.4).
+
+    Parameters
+    ----------
+    settings : MachineSettings
+    q : array_like — [rad]
+        Cradle rotation (ignored, i.e. 0, for Formate).
+    theta : array_like — [rad]
+        Cutter spin on the cutter spindle (broadcast with q).
+
+    Returns
+    -------
+    phi, dphi, d2phi : ndarray — [rad], [1], [1/rad]
+        φ and its first and second derivatives with respect to q (∂φ/∂θ = κ,
+        ``settings.indexing_ratio``).
+    """
+    q, theta = np.broadcast_arrays(np.asarray(q, dtype=float), np.asarray(theta, dtype=float))
+    if settings.process == "Formate":
+        q = np.zeros_like(q)
+    phi, d1, d2 = roll_angle(settings, q)
+    return phi + settings.indexing_ratio * theta, d1, d2
+
+
 def _rot(axis: str, angle) -> np.ndarray:
     a = np.asarray(angle, dtype=float)
     c, s = np.cos(a), np.sin(a)
@@ -293,7 +377,7 @@ def _trans_only(t) -> np.ndarray:
     return m
 
 
-def machine_transform(settings: MachineSettings, q):
+def machine_transform(settings: MachineSettings, q, theta=0.0):
     """Homogeneous transform from the cutter frame to the blank frame, with q-derivatives.
 
     Parameters
@@ -301,12 +385,17 @@ def machine_transform(settings: MachineSettings, q):
     settings : MachineSettings
     q : array_like — [rad]
         Cradle rotation from the reference position (ignored, i.e. 0, for Formate).
+    theta : array_like — [rad]
+        Cutter spin (broadcast with q); it turns the work by κθ in face hobbing
+        (:func:`work_rotation`) and leaves a face-milling transform unchanged. The spin's
+        own rotation R_z(θ) of the cutter is not included.
 
     Returns
     -------
-    M, dM, d2M : ndarray, shape q.shape + (4, 4)
-        M(q) = R_z(−φ) T(0,0,−X_p) R_y(γ_m − π/2) T(0,−E_m,X_b) R_z(q_c+q) T(S_r,0,0)
-        R_z(j) R_x(i) and its first and second derivatives with respect to q [per rad].
+    M, dM, d2M : ndarray, shape broadcast(q, θ) + (4, 4)
+        M(q, θ) = R_z(−φ) T(0,0,−X_p) R_y(γ_m − π/2) T(0,−E_m,X_b) R_z(q_c+q) T(S_r,0,0)
+        R_z(j) R_x(i), φ = φ_roll(q) + κθ, and its first and second derivatives with
+        respect to q [per rad].
 
     Notes
     -----
@@ -314,10 +403,10 @@ def machine_transform(settings: MachineSettings, q):
     frame orientations are this toolkit's convention (module docstring and
     ``docs/machine.md``), proven by the envelope tests rather than matched to a formula.
     """
-    q = np.asarray(q, dtype=float)
+    q, theta = np.broadcast_arrays(np.asarray(q, dtype=float), np.asarray(theta, dtype=float))
     if settings.process == "Formate":
         q = np.zeros_like(q)
-    phi, dphi, d2phi = roll_angle(settings, q)
+    phi, dphi, d2phi = work_rotation(settings, q, theta)
     xb, dxb, d2xb = taylor_motion(settings.sliding_base, settings.helical_motion, q)
     em, dem, d2em = taylor_motion(settings.blank_offset, settings.vertical_motion, q)
     # factors depending on q: F1 = R_z(-phi), F3 = T(0, -Em, Xb), F4 = R_z(qc + q)
@@ -409,6 +498,8 @@ def cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta:
     vectors in the blade's axial plane turned by θ about the cutter axis), written straight
     into one array.
     """
+    if blade.placed:
+        return _placed_cutter_buffer(blade, sections, s, theta, section)
     p = blade_profile(sections, s, section)
     c, sn = np.cos(theta), np.sin(theta)
     sg = blade.sigma
@@ -427,8 +518,30 @@ def cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta:
     return v
 
 
+def _placed_cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray,
+                          theta: np.ndarray, section) -> np.ndarray:
+    """:func:`cutter_buffer` of a placed (face-hobbing) blade: the edge of
+    :func:`geometry.cutter.blade_edge` turned by θ, r_θ = S r, r_θθ = S² r, r_sθ = S r_s."""
+    e, e_s, e_ss = (a.T for a in blade_edge(blade, s, section, sections))
+    n_rev = revolution_normal(blade, e.T, e_s.T).T
+    c, sn = np.cos(theta), np.sin(theta)
+    v = np.empty((3, 7, s.size))
+    for k, w in ((0, e), (1, e_s), (3, e_ss), (6, n_rev)):
+        v[0, k] = c * w[0] - sn * w[1]
+        v[1, k] = sn * w[0] + c * w[1]
+        v[2, k] = w[2]
+    for k, src in ((2, 0), (4, 1)):  # S v = (−v_y, v_x, 0)
+        v[0, k] = -v[1, src]
+        v[1, k] = v[0, src]
+        v[2, k] = 0.0
+    v[0, 5] = -v[0, 0]
+    v[1, 5] = -v[1, 0]
+    v[2, 5] = 0.0
+    return v
+
+
 def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
-                   q: np.ndarray) -> np.ndarray:
+                   q: np.ndarray, theta: np.ndarray | None = None) -> np.ndarray:
     """The eleven vectors of :func:`generated_family`, component-major: (3, 11, q.size).
 
     ``v`` holds the cutter vectors at the points (:func:`cutter_buffer`, (3, 7, n)); the
@@ -437,6 +550,12 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
     the cradle rotation as cos a·K₁v + sin a·K₂v + K₃v and its q-derivatives (K₂ and −K₁
     are the derivatives of K₁ and K₂), then the work rotation R_z(−φ) differentiated by
     the product rule, with dR_z(−φ)/dq = −φ' S R_z(−φ).
+
+    Face hobbing (κ = ``settings.indexing_ratio`` ≠ 0; ``theta`` (n,) the cutter spin
+    [rad], required then): the work rotation gains κθ, φ = φ_roll(q) + κθ, applied in
+    Formate too, and the θ-derivatives the indexing terms (``docs/machine.md``):
+    r_θ = R(c_θ − κ S c), r_sθ = R(c_sθ − κ S c_s), r_θθ = R(c_θθ − 2κ S c_θ + κ² S² c),
+    r_θq = R(y_θq − κ S y_q) with y_q = c_q − φ_roll′ S c the pre-rotation r_q.
     """
     n = q.size
     generate = settings.process == "Generate"
@@ -462,12 +581,15 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
         c[:, 0] += np.outer(chain.r2_y, -em) + np.outer(chain.r2_z, xb)
         dc[:, 0] += np.outer(chain.r2_y, -dem) + np.outer(chain.r2_z, dxb)
         d2c += np.outer(chain.r2_y, -d2em) + np.outer(chain.r2_z, d2xb)
-    if not generate:
+    kappa = settings.indexing_ratio
+    if not generate and kappa == 0.0:
         y[:, 7:10] = dc
         y[:, 10] = d2c
         out = y
     else:
-        if any(settings.modified_roll):
+        if not generate:
+            phi, d1, d2 = np.zeros(n), 0.0, None
+        elif any(settings.modified_roll):
             phi, d1, d2 = roll_angle(settings, q)
         else:
             phi, d1, d2 = settings.ratio_of_roll * q, settings.ratio_of_roll, None
@@ -481,12 +603,31 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
         if d2 is not None:
             y[0, 10] += d2 * c[1, 0]
             y[1, 10] -= d2 * c[0, 0]
+        if kappa != 0.0:
+            if theta is None:
+                raise InputError("theta: the cutter spin is needed for a face-hobbing "
+                                 "family (indexing_ratio != 0)")
+            _index_terms(y, kappa)
+            phi = phi + kappa * np.reshape(theta, n)
         cf, sf = np.cos(phi), -np.sin(phi)
         out = np.empty_like(y)
         out[0] = cf * y[0] - sf * y[1]
         out[1] = sf * y[0] + cf * y[1]
         out[2] = y[2]
     return out
+
+
+def _index_terms(y: np.ndarray, kappa: float) -> None:
+    """Add the indexing terms of the θ-derivatives to a pre-rotation buffer, in place."""
+    def spin(k):  # S y_k = (−y_y, y_x, 0) of vector k, shape (2, n): its x, y components
+        return np.stack([-y[1, k], y[0, k]])
+
+    s_c, s_cs, s_ct, s_yq = spin(0), spin(1), spin(2), spin(7)
+    # S² c = (−c_x, −c_y, 0)
+    y[:2, 5] += -2.0 * kappa * s_ct - kappa * kappa * y[:2, 0]
+    y[:2, 2] -= kappa * s_c
+    y[:2, 4] -= kappa * s_cs
+    y[:2, 9] -= kappa * s_yq
 
 
 def family_views(buf: np.ndarray, shape: tuple) -> GeneratedFamily:
@@ -533,7 +674,8 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
     if section is not None:
         section = np.broadcast_to(np.asarray(section, dtype=int), q.shape).ravel()
     v = cutter_buffer(blade, sections, s.ravel(), theta.ravel(), section)
-    return family_views(family_buffer(chain(settings), settings, v, q), q.shape)
+    return family_views(family_buffer(chain(settings), settings, v, q, theta.ravel()),
+                        q.shape)
 
 
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -640,20 +782,22 @@ def mirror_settings(settings: MachineSettings) -> MachineSettings:
         vertical_motion=flip(settings.vertical_motion, even_flips=True))
 
 
-def cutter_pose(settings: MachineSettings, q=0.0):
+def cutter_pose(settings: MachineSettings, q=0.0, theta=0.0):
     """Cutter tip-plane centre and cutter axis (towards the tips) in the blank frame.
 
     Parameters
     ----------
     settings : MachineSettings
     q : float or array_like — [rad]
+    theta : float or array_like — [rad]
+        Cutter spin; moves the pose only in face hobbing (the work indexes by κθ).
 
     Returns
     -------
     centre : ndarray (..., 3) — [mm]
     axis : ndarray (..., 3) — [1]
     """
-    m, _, _ = machine_transform(settings, q)
+    m, _, _ = machine_transform(settings, q, theta)
     return m[..., :3, 3], m[..., :3, 2]
 
 

@@ -98,7 +98,7 @@ class _Context(NamedTuple):
 def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
     """Family buffer (3, 11, n) of :func:`geometry.machine.family_buffer` at flat points."""
     v = cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
-    return family_buffer(ctx.chain, ctx.settings, v, q)
+    return family_buffer(ctx.chain, ctx.settings, v, q, theta)
 
 
 def _evaluate(ctx: _Context, x: np.ndarray, section: np.ndarray, z: np.ndarray, p: np.ndarray):

@@ -83,6 +83,7 @@ from geometry.flank_point import FlankPoint, MemberFlank, flank_points
 from geometry.machine import (
     MachineSettings,
     cutter_pose,
+    indexing_ratio,
     roll_angle,
     settings_from_poses,
 )
@@ -184,7 +185,7 @@ class GearTools(NamedTuple):
 def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
                        blade_angle_drive: float, blade_angle_coast: float,
                        point_width: float | None, edge_radius: float | None,
-                       drive_flank: str = "concave") -> GearTools:
+                       drive_flank: str = "concave", blade_groups: int = 0) -> GearTools:
     """Blades and machine settings of a Formate gear cut by one spread-blade cutter.
 
     Parameters
@@ -202,6 +203,9 @@ def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
         Blade edge radius; None: min(0.25 m_mn, 0.4 W), rounded to 1 µm.
     drive_flank : str
         Pinion drive flank (its mate on the gear is the other flank type).
+    blade_groups : int
+        z0 of a face-hobbing cutter head (≥ 1, no common factor with z2); 0 (default): face
+        milling.
 
     Returns
     -------
@@ -223,6 +227,21 @@ def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
     centre, passes through the mean root point with the spiral angle β_m2:
     S_r² = R_mf² + r_c0² − 2 R_mf r_c0 sin β_m2, q_c = atan2(r_c0 cos β_m2,
     R_mf − r_c0 sin β_m2), R_mf the root cone distance of the mean point.
+
+    Face hobbing (``blade_groups`` z0 ≥ 1; ``docs/machine.md``, "Face hobbing"): the slot
+    centre line is the extended epicycloid traced by the blades' reference points while
+    the work indexes by κ = −z0/z2 per radian of spin (seed Eq. 2.1). In the tip plane (the
+    root plane of the crown gear of z_pf = z2/sin δ_f2 teeth) the lead angle at the mean
+    root point is sin ν_f = z0 R_mf cos β_m2/(r_c0 z_pf); the cutter centre is placed by
+    the same triangle with β_m2 − ν_f in place of β_m2 (the trace normal at the mean point
+    passes through the pitch point of the cutter and crown circles, not through the cutter
+    centre), and the spin phase θ_0 = β_m2 − ν_f − π/2 − q_c puts the slot centre at the
+    mean root point at θ = 0. The outside blade leads the inside blade by half a group
+    pitch (phases θ_0 ± π/(2 z0)), which adds p_n/2 to the slot width: the point radii are
+    r_c0 ± W_r/2 with W_r = (W − π m_mn/2)/cos ν_f, and each blade's rake plane is turned
+    by its own lead angle (blade offset angle δ_b = ν at r_p) so that it cuts normal to
+    the trace. Exact at the mean root point for the spiral angle; the slot width is closed
+    in the tip plane.
     """
     g = geom.gear
     gear_blank = _blank(g)
@@ -254,6 +273,9 @@ def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
                          "at the root for these blade angles)")
     if edge_radius is None:
         edge_radius = round(min(0.25 * geom.m_mn, 0.4 * point_width), 3)
+    if blade_groups:
+        return _face_hobbing_gear_tools(g, rmf, cutter_radius, a_ob, a_ib, point_width,
+                                        edge_radius, geom.m_mn, blade_groups)
     blades = {
         "concave": Blade("outside", cutter_radius + 0.5 * point_width, a_ob,
                          edge_radius=edge_radius),
@@ -266,6 +288,39 @@ def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
                                 rmf - cutter_radius * math.sin(beta)),
         machine_root_angle=df, machine_center_to_back=g.t_zR)
     return GearTools(blades, settings, rmf, point_width, cutter_radius)
+
+
+def _face_hobbing_gear_tools(g: MemberBlank, rmf: float, rc0: float, a_ob: float,
+                             a_ib: float, slot_width: float, edge_radius: float, m_mn: float,
+                             z0: int) -> GearTools:
+    """The face-hobbing branch of :func:`gear_formate_tools` (see its Notes)."""
+    kappa = indexing_ratio(z0, g.z)
+    zp = g.z / math.sin(g.delta_f)
+    beta = g.beta_m
+
+    def lead(r: float) -> float:
+        x = z0 * rmf * math.cos(beta) / (r * zp)
+        if not 0.0 < x < 1.0:
+            raise InputError(f"cutter_radius: {rc0:g} mm is too small for {z0} blade groups "
+                             f"(sin ν = {x:.3g} must be < 1)")
+        return math.asin(x)
+
+    nu = lead(rc0)
+    wr = (slot_width - 0.5 * math.pi * m_mn) / math.cos(nu)
+    sr2 = rmf**2 + rc0**2 - 2 * rmf * rc0 * math.sin(beta - nu)
+    qc = math.atan2(rc0 * math.cos(beta - nu), rmf - rc0 * math.sin(beta - nu))
+    theta0 = beta - nu - 0.5 * math.pi - qc
+    blades = {}
+    for flank, side, sign, alpha in (("concave", "outside", 1, a_ob),
+                                     ("convex", "inside", -1, a_ib)):
+        rp = rc0 + sign * 0.5 * wr
+        blades[flank] = Blade(side, rp, alpha, edge_radius=edge_radius,
+                              blade_phase=theta0 + sign * 0.5 * math.pi / z0,
+                              blade_offset_angle=lead(rp))
+    settings = MachineSettings(
+        process="Formate", radial_setting=math.sqrt(sr2), cradle_angle=qc,
+        machine_root_angle=g.delta_f, machine_center_to_back=g.t_zR, indexing_ratio=kappa)
+    return GearTools(blades, settings, rmf, wr, rc0)
 
 
 # --------------------------------------------------------------------------- mean point
