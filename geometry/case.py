@@ -35,7 +35,7 @@ from typing import Any
 from geometry.assembly import HANDS, Misalignment
 from geometry.cutter import PROFILE_TYPES, Blade
 from geometry.errors import InputError, ModelUnavailableError
-from geometry.machine import PROCESSES, MachineSettings
+from geometry.machine import PROCESSES, MachineSettings, indexing_ratio
 from geometry.validation import integer, positive, real
 
 __all__ = [
@@ -55,8 +55,8 @@ log = logging.getLogger(__name__)
 
 #: flank name → the blade that cuts it
 FLANKS: dict[str, str] = {"concave": "outside", "convex": "inside"}
-#: cutting methods: name → implemented
-METHODS: dict[str, bool] = {"FM": True, "FH": False}
+#: cutting methods: name → implemented (face milling, face hobbing)
+METHODS: dict[str, bool] = {"FM": True, "FH": True}
 
 _DEG = math.pi / 180.0
 
@@ -78,7 +78,8 @@ class Blank:
     outer_cone_distance : float — [mm]
         R_e > 0, along the pitch cone from the pitch apex to the heel.
     pitch_angle, face_angle, root_angle : float — [rad]
-        δ, δ_a, δ_f in (0, 90°], with δ_f ≤ δ ≤ δ_a and δ_f < δ_a.
+        δ, δ_a, δ_f in (0, 90°], with δ_f ≤ δ ≤ δ_a (all equal for uniform depth, the
+        usual face-hobbed tooth: the cones are then parallel with different apexes).
     pitch_apex, face_apex, root_apex : float — [mm]
         Apex positions "beyond the crossing point" (ISO 23509 t_zm, t_zF, t_zR: positive when
         the apex lies beyond the crossing point, away from the member body); |t| < R_e.
@@ -125,11 +126,11 @@ class Blank:
         for name in ("pitch_angle", "face_angle", "root_angle"):
             real(name, getattr(self, name), unit="deg", low=0.0, high=0.5 * math.pi + 1e-12,
                  low_open=True, scale=_DEG)
-        if not (self.root_angle <= self.pitch_angle <= self.face_angle
-                and self.root_angle < self.face_angle):
+        eps = 1e-12  # [rad] round-off of cone angles computed from each other
+        if not self.root_angle - eps <= self.pitch_angle <= self.face_angle + eps:
             raise InputError(
-                "pitch_angle: must satisfy root_angle <= pitch_angle <= face_angle and "
-                f"root_angle < face_angle, got root {_fmt(self.root_angle / _DEG)}, pitch "
+                "pitch_angle: must satisfy root_angle <= pitch_angle <= face_angle (all equal: "
+                f"uniform depth), got root {_fmt(self.root_angle / _DEG)}, pitch "
                 f"{_fmt(self.pitch_angle / _DEG)}, face {_fmt(self.face_angle / _DEG)} deg")
         for name in ("pitch_apex", "face_apex", "root_apex"):
             if abs(getattr(self, name)) >= self.outer_cone_distance:
@@ -172,7 +173,12 @@ class FlankTool:
 
 @dataclass(frozen=True)
 class Member:
-    """One member (pinion or gear): blank and the tools of its two flanks."""
+    """One member (pinion or gear): blank and the tools of its two flanks.
+
+    ``blade_groups`` is z0 of a face-hobbing cutter head (0 for face milling; its indexing
+    ratio −z0/z is in both flanks' machine settings) and ``cutter_radius`` the nominal
+    cutter radius r_c0 [mm] (informational, 0 when not given).
+    """
 
     name: str
     hand: str
@@ -180,6 +186,8 @@ class Member:
     blank: Blank
     concave: FlankTool
     convex: FlankTool
+    blade_groups: int = 0
+    cutter_radius: float = 0.0
 
     def flank(self, name: str) -> FlankTool:
         """The tool of flank ``name`` (``"concave"`` or ``"convex"``)."""
@@ -297,6 +305,18 @@ _BLADE_FIELDS = {
     "flankrem_angle": ("deg", False, 0.0),
     "flankrem_height": ("mm", False, 0.0),
 }
+#: blade placement in the head (face hobbing; written only where used)
+_BLADE_PLACEMENT_FIELDS = {
+    "blade_phase": ("deg", False, 0.0),
+    "blade_offset_angle": ("deg", False, 0.0),
+    "rake_angle": ("deg", False, 0.0),
+    "hook_angle": ("deg", False, 0.0),
+}
+#: cutter-head fields of ``[<member>.cutter]`` beside its flank tables
+_HEAD_FIELDS = {
+    "blade_groups": ("int", False, 0),
+    "cutter_radius": ("mm", False, 0.0),
+}
 _MACHINE_FIELDS = {
     "radial_setting": ("mm", True, None),
     "cradle_angle": ("deg", True, None),
@@ -402,23 +422,53 @@ def _member(raw: Mapping, name: str, hand: str) -> Member:
     cutter = _table(raw, "cutter", f"{name}.cutter")
     machine = _table(raw, "machine", f"{name}.machine")
     tools = {}
-    for tab, where in ((cutter, "cutter"), (machine, "machine")):
-        unknown = sorted(set(tab) - set(FLANKS))
+    for tab, where, extra in ((cutter, "cutter", set(_HEAD_FIELDS)), (machine, "machine", set())):
+        unknown = sorted(set(tab) - set(FLANKS) - extra)
         if unknown:
-            raise InputError(f"{name}.{where}.{unknown[0]}: unknown flank; accepted: "
-                             f"{', '.join(FLANKS)}")
+            accepted = ", ".join([*FLANKS, *sorted(extra)])
+            raise InputError(f"{name}.{where}.{unknown[0]}: unknown field; accepted: "
+                             f"{accepted}")
+    head = _fields({k: v for k, v in cutter.items() if k in _HEAD_FIELDS}, _HEAD_FIELDS,
+                   f"{name}.cutter")
+    try:
+        kappa = indexing_ratio(head["blade_groups"], blank.teeth)
+    except InputError as exc:
+        raise InputError(f"{name}.cutter.{exc}") from None
+    if head["cutter_radius"] < 0.0:
+        raise InputError(f"{name}.cutter.cutter_radius: must be >= 0 mm (0: not given), got "
+                         f"{head['cutter_radius']}")
     for flank, side in FLANKS.items():
         bpath = f"{name}.cutter.{flank}"
-        bkw = _fields(_table(cutter, flank, bpath), _BLADE_FIELDS, bpath)
+        bkw = _fields(_table(cutter, flank, bpath), _BLADE_FIELDS | _BLADE_PLACEMENT_FIELDS,
+                      bpath)
         if bkw["profile"] not in PROFILE_TYPES:
             raise InputError(f"{bpath}.profile: must be one of {list(PROFILE_TYPES)}, got "
                              f"{bkw['profile']!r}")
         blade = _build(Blade, {"side": side, **bkw}, bpath)
         mpath = f"{name}.machine.{flank}"
         mkw = _fields(_table(machine, flank, mpath), _MACHINE_FIELDS, mpath)
-        settings = _build(MachineSettings, {"process": process, **mkw}, mpath)
+        settings = _build(MachineSettings,
+                          {"process": process, **mkw, "indexing_ratio": kappa}, mpath)
         tools[flank] = FlankTool(blade, settings)
-    return Member(name=name, hand=hand, process=process, blank=blank, **tools)
+    return Member(name=name, hand=hand, process=process, blank=blank, **tools,
+                  blade_groups=head["blade_groups"], cutter_radius=head["cutter_radius"])
+
+
+def _check_method(method: str, pinion: Member, gear: Member) -> None:
+    """Face hobbing needs a blade-group count on both members, face milling none."""
+    for m in (pinion, gear):
+        if method == "FH" and m.blade_groups < 1:
+            raise InputError(f"{m.name}.cutter.blade_groups: must be an integer in [1, 50] "
+                             f"for a face-hobbed pair (pair.method = 'FH'), got "
+                             f"{m.blade_groups}")
+        if method == "FM" and m.blade_groups != 0:
+            raise InputError(f"{m.name}.cutter.blade_groups: must be 0 or absent for a "
+                             f"face-milled pair (pair.method = 'FM'; set 'FH' for face "
+                             f"hobbing), got {m.blade_groups}")
+    if method == "FH" and pinion.blade_groups != gear.blade_groups:
+        log.warning("FH pair with different blade groups (pinion %d, gear %d): the pinion is "
+                    "conjugate to the gear only when both are cut with the same z0",
+                    pinion.blade_groups, gear.blade_groups)
 
 
 def _paths(obj: Any, prefix: str = "") -> set[str]:
@@ -467,7 +517,7 @@ def case_from_dict(raw: Mapping[str, Any], *,
         dotted path, e.g. ``gear.blank.teeth``), inconsistent fields, or a ``[deviations]``
         file that does not exist (``deviations.pinion``, ``deviations.gear``).
     ModelUnavailableError
-        For ``pair.method = "FH"`` (face hobbing is reserved, not implemented yet).
+        For a ``pair.method`` that is reserved but not implemented (none today).
     """
     if not isinstance(raw, Mapping):
         raise InputError(f"case: must be a table, got {type(raw).__name__}")
@@ -486,7 +536,7 @@ def case_from_dict(raw: Mapping[str, Any], *,
         raise InputError(f"pair.method: must be one of {sorted(METHODS)}, got {pr['method']!r}")
     if not METHODS[pr["method"]]:
         raise ModelUnavailableError(
-            f"pair.method: {pr['method']!r} (face hobbing) is reserved and not implemented; "
+            f"pair.method: {pr['method']!r} is reserved and not implemented; "
             f"available: {[m for m, ok in METHODS.items() if ok]}")
     if not 0 < pr["shaft_angle"] < math.pi:
         raise InputError(
@@ -505,6 +555,7 @@ def case_from_dict(raw: Mapping[str, Any], *,
     pair = Pair(pr["shaft_angle"], pr["offset"], pr["method"], pr["drive_flank"])
     pinion = _member(_table(raw, "pinion", "pinion"), "pinion", pr["pinion_hand"])
     gear = _member(_table(raw, "gear", "gear"), "gear", pr["gear_hand"])
+    _check_method(pr["method"], pinion, gear)
     mis = _build(Misalignment, _fields(_table(raw, "misalignment", "misalignment", False),
                                        _MISALIGNMENT_FIELDS, "misalignment"), "misalignment")
     devs = _deviation_files(raw, base_dir)
@@ -537,7 +588,7 @@ def load_case(path: str | os.PathLike[str]) -> Case:
     InputError
         If the file is missing, is not valid TOML, or a field is invalid (named by its path).
     ModelUnavailableError
-        For a method that is reserved but not implemented (``"FH"``).
+        For a ``pair.method`` that is reserved but not implemented (none today).
     """
     p = Path(path)
     if not p.is_file():
@@ -570,10 +621,18 @@ def _case_to_dict(case: Case) -> dict[str, Any]:
                    "method": pair.method, "pinion_hand": case.pinion.hand,
                    "gear_hand": case.gear.hand, "drive_flank": pair.drive_flank}
     for m in (case.pinion, case.gear):
+        placed = m.blade_groups > 0 or any(m.flank(f).blade.placed for f in FLANKS)
+        blade_schema = _BLADE_FIELDS | (_BLADE_PLACEMENT_FIELDS if placed else {})
+        cutter: dict[str, Any] = {}
+        if m.blade_groups > 0:
+            cutter["blade_groups"] = m.blade_groups
+        if m.cutter_radius > 0.0:
+            cutter["cutter_radius"] = m.cutter_radius
+        cutter |= {f: _values(m.flank(f).blade, blade_schema) for f in FLANKS}
         doc[m.name] = {
             "process": m.process,
             "blank": _values(m.blank, _BLANK_FIELDS),
-            "cutter": {f: _values(m.flank(f).blade, _BLADE_FIELDS) for f in FLANKS},
+            "cutter": cutter,
             "machine": {f: _values(m.flank(f).machine, _MACHINE_FIELDS) for f in FLANKS},
         }
     doc["misalignment"] = _values(case.misalignment, _MISALIGNMENT_FIELDS)

@@ -445,6 +445,10 @@ def flank_dataset(case: Case, member: str, flank: str, *, surface: FlankSurface 
         "inputs": case.to_toml(),
         "synthesised": json.dumps(list(case.synthesised)),
     }
+    if mem.blade_groups:
+        # face hobbing: the cutter's blade groups z0 and the indexing ratio -z0/z
+        attrs["blade_groups"] = mem.blade_groups
+        attrs["indexing_ratio"] = tool.machine.indexing_ratio
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 

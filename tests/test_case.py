@@ -17,7 +17,7 @@ import pytest
 import xarray as xr
 
 from geometry.case import case_from_dict, load_case
-from geometry.errors import InputError, ModelUnavailableError
+from geometry.errors import InputError
 from geometry.flank import blank_outline, flank_dataset, flank_surface, projection_grid
 from geometry.plot import plot_flanks_in_mesh, plot_projection_grid
 
@@ -43,7 +43,7 @@ def _raw(path):
 
 
 def _mutated(path, dotted, value):
-    raw = copy.deepcopy(_raw(path))
+    raw = copy.deepcopy(path if isinstance(path, dict) else _raw(path))
     node = raw
     keys = dotted.split(".")
     for k in keys[:-1]:
@@ -131,9 +131,49 @@ def test_bad_fields_are_named(dotted, value, match):
         case_from_dict(_mutated(S2, dotted, value))
 
 
-def test_face_hobbing_is_reserved():
-    with pytest.raises(ModelUnavailableError, match=r"^pair\.method: 'FH'.*available: \['FM'\]"):
+def test_face_hobbing_needs_blade_groups_on_both_members():
+    """FH is accepted as a method, but a pair without the cutter's blade groups cannot be
+    face-hobbed: the error names the field and its range."""
+    with pytest.raises(InputError, match=r"^pinion\.cutter\.blade_groups: must be an integer "
+                                         r"in \[1, 50\] for a face-hobbed pair"):
         case_from_dict(_mutated(S1, "pair.method", "FH"))
+    fh = _mutated(_mutated(_mutated(S1, "pair.method", "FH"), "pinion.cutter.blade_groups",
+                           5), "gear.cutter.blade_groups", 0)
+    with pytest.raises(InputError, match=r"^gear\.cutter\.blade_groups"):
+        case_from_dict(fh)
+
+
+@pytest.mark.parametrize(("dotted", "value", "match"), [
+    ("pinion.cutter.blade_groups", 3, r"^pinion\.cutter\.blade_groups: must be 0 or absent "
+                                      r"for a face-milled pair"),
+    ("gear.cutter.blade_groups", 2.5, r"^gear\.cutter\.blade_groups: must be an integer"),
+    ("gear.cutter.blade_groups", -1, r"^gear\.cutter\.blade_groups: must be an integer in "
+                                     r"\[0, 50\]"),
+    ("gear.cutter.blade_groups", 13, r"^gear\.cutter\.blade_groups: must share no common "
+                                     r"factor with the member's teeth \(z = 39\)"),
+    ("gear.cutter.cutter_radius", -5.0, r"^gear\.cutter\.cutter_radius: must be >= 0"),
+    ("gear.cutter.concave.blade_offset_angle", 50.0,
+     r"^gear\.cutter\.concave\.blade_offset_angle: must be in \(-45, 45\) deg"),
+    ("gear.cutter.convex.hook_angle", -25.0,
+     r"^gear\.cutter\.convex\.hook_angle: must be in \(-20, 20\) deg"),
+    ("gear.cutter.convex.rake_angle", 31.0,
+     r"^gear\.cutter\.convex\.rake_angle: must be in \(-30, 30\) deg"),
+    ("pinion.cutter.concave.blade_phase", 400.0,
+     r"^pinion\.cutter\.concave\.blade_phase: must be in \[-360, 360\] deg"),
+    ("gear.cutter.spindle", 1.0, r"^gear\.cutter\.spindle: unknown field; accepted: concave, "
+                                 r"convex, blade_groups, cutter_radius"),
+    ("gear.machine.concave.indexing_ratio", -0.1,
+     r"^gear\.machine\.concave\.indexing_ratio: unknown field"),
+])
+def test_face_hobbing_fields_are_named(dotted, value, match):
+    """The face-hobbing fields are validated with the field named (bad z0: not an integer,
+    out of range, sharing a factor with the teeth; placement angles out of range; the
+    indexing ratio is derived, never written)."""
+    raw = S1
+    if "blade_groups" in dotted and value != 3:
+        raw = _mutated(_mutated(S1, "pair.method", "FH"), "pinion.cutter.blade_groups", 5)
+    with pytest.raises(InputError, match=match):
+        case_from_dict(_mutated(raw, dotted, value))
 
 
 def test_file_errors(tmp_path):
