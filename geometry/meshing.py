@@ -16,6 +16,12 @@ that re-solves targets near known solutions (an iteration moving its points a li
 pass those solutions as a starting guess: Newton then starts from them and the coarse seed
 search is skipped; points that do not converge from their guess take the path above.
 
+Face hobbing (indexing ratio κ ≠ 0): the work indexes while the head turns, so at a given
+target every blade-group passage θ* + 2πk/z0 reaches a root on another slot. The seed keeps
+the root nearest spin and roll zero (the settings place the reference slot there, ``docs/
+machine.md``); the continuation from it stays on that slot (first-order prediction and
+Newton steps limited to 0.15 rad of spin, less than half a group pitch 2π/z0 for z0 ≤ 20).
+
 Each blade section (edge radius, toprem, profile, flankrem) is solved on its own analytic
 curve; a point whose solution leaves its section is re-solved on the neighbouring one.
 Points that no smooth section generates are masked with a reason (:data:`REASONS`).
@@ -218,7 +224,15 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float):
             valid = (ok & (x[:, 0] >= sec.s_lo[k] - 1e-9) & (x[:, 0] <= sec.s_hi[k] + 1e-9)
                      & (x[:, 0] <= s_max))
             if valid.any():
-                xs = x[np.flatnonzero(valid)[0]]
+                pick = np.flatnonzero(valid)
+                if ctx.settings.indexing_ratio != 0.0:
+                    # face hobbing: every blade-group passage reaches a root on another
+                    # slot; the reference slot is the one cut near spin and roll zero
+                    pick = pick[np.argsort(np.abs(x[pick, 1]) + np.abs(x[pick, -1]
+                                                                        if ctx.generate
+                                                                        else 0.0),
+                                           kind="stable")]
+                xs = x[pick[0]]
                 _, jac, _ = _evaluate(ctx, xs[None], np.array([k]), np.array([z0]),
                                       np.array([p0]))
                 return xs, jac[0], k
