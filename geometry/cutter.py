@@ -41,6 +41,7 @@ profile_sections         the constant-curvature sections of a blade's edge
 blade_profile            edge point and its first and second s-derivatives in (ρ, h)
 placement_vectors        where a (face-hobbing) blade sits in the head: M, rake-plane lines
 blade_edge               the edge as a space curve in the cutter frame
+mirror_blade             the blade that cuts the mirror image (opposite hand) of a flank
 cutter_surface           r_t(s, θ), its first and second derivatives, unit normal
 cutter_curvatures        principal curvatures of the cutter surface (analytic)
 """
@@ -48,7 +49,7 @@ cutter_curvatures        principal curvatures of the cutter surface (analytic)
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import NamedTuple
 
 import numpy as np
@@ -68,6 +69,7 @@ __all__ = [
     "blade_profile",
     "cutter_curvatures",
     "cutter_surface",
+    "mirror_blade",
     "placement_vectors",
     "profile_sections",
     "revolution_normal",
@@ -234,6 +236,35 @@ class Blade:
     def sigma(self) -> int:
         """Side sign σ: +1 outside blade (concave flank), −1 inside blade (convex flank)."""
         return BLADE_SIDES[self.side]
+
+
+def mirror_blade(blade: Blade) -> Blade:
+    """The blade that cuts the mirror image (y → −y) of a flank: placement angles negated.
+
+    Parameters
+    ----------
+    blade : Blade
+
+    Returns
+    -------
+    Blade
+        ``blade`` with the blade phase θ_b, the blade offset angle δ_b, the rake angle and
+        the hook angle γ_h negated; side, radii and profile unchanged (a face-milling blade,
+        :attr:`Blade.placed` False, is returned equal to itself).
+
+    Notes
+    -----
+    The mirror rule of the face-hobbing chain (design note "Face hobbing", §2.8 "Hand and
+    mirror"; the placement of :func:`placement_vectors`): with D = diag(1, −1, 1),
+    D R_z(a) D = R_z(−a) and D R_x(a) D = R_x(−a), while the profile point [ρ − r_p, 0, −h]
+    of the rake plane is its own mirror image, so
+    D B(θ_b, γ_a, γ_h) e_b = B(−θ_b, −γ_a, −γ_h) e_b (γ_a = δ_b + rake). Used with
+    :func:`geometry.machine.mirror_settings` (θ → −θ, q → −q, κ unchanged) it generates
+    the mirror image D r_g of the member.
+    """
+    return replace(blade, blade_phase=-blade.blade_phase,
+                   blade_offset_angle=-blade.blade_offset_angle,
+                   rake_angle=-blade.rake_angle, hook_angle=-blade.hook_angle)
 
 
 class ProfileSections(NamedTuple):

@@ -432,7 +432,8 @@ class GeneratedFamily(NamedTuple):
     """The family of cutter surfaces in the blank frame, r_g(s, θ, q), with derivatives.
 
     All vectors on the last axis [mm, or mm per unit of the differentiating parameters].
-    ``normal`` is the unit normal out of the work material.
+    ``normal`` is the unit normal out of the work material of the surface r_g(·, ·, q) at
+    fixed q (face milling: the cutter surface's; face hobbing: ±r_s × r_θ normalised).
     """
 
     r: np.ndarray
@@ -555,7 +556,9 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
     [rad], required then): the work rotation gains κθ, φ = φ_roll(q) + κθ, applied in
     Formate too, and the θ-derivatives the indexing terms (``docs/machine.md``):
     r_θ = R(c_θ − κ S c), r_sθ = R(c_sθ − κ S c_s), r_θθ = R(c_θθ − 2κ S c_θ + κ² S² c),
-    r_θq = R(y_θq − κ S y_q) with y_q = c_q − φ_roll′ S c the pre-rotation r_q.
+    r_θq = R(y_θq − κ S y_q) with y_q = c_q − φ_roll′ S c the pre-rotation r_q. The normal
+    is then that of the swept surface, the oriented unit r_s × r_θ (:func:`_swept_normal`),
+    not the head's surface of revolution's.
     """
     n = q.size
     generate = settings.process == "Generate"
@@ -614,7 +617,25 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
         out[0] = cf * y[0] - sf * y[1]
         out[1] = sf * y[0] + cf * y[1]
         out[2] = y[2]
+        if kappa != 0.0:
+            _swept_normal(out)
     return out
+
+
+def _swept_normal(out: np.ndarray) -> None:
+    """Face hobbing: replace the normal of a family buffer by that of the swept surface.
+
+    With indexing the surface r(·, ·, q) swept at a fixed cradle angle is not the head's
+    surface of revolution, whose normal (n_rev, :func:`geometry.cutter.revolution_normal`)
+    the cutter vectors carry: the two share the edge but differ by a turn about it of the
+    order of the lead angle ν. Its unit normal is ±(r_s × r_θ)/|r_s × r_θ| (the envelope's
+    normal where the equation of meshing holds), turned out of the material by n_rev
+    (design note "Face hobbing" §2.9: n_rev only fixes the sign). In place, on (3, 11, n).
+    """
+    nvec = _cross0(out[:, 1], out[:, 2])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        scale = np.sign((nvec * out[:, 6]).sum(0)) / np.sqrt((nvec * nvec).sum(0))
+    out[:, 6] = nvec * scale
 
 
 def _index_terms(y: np.ndarray, kappa: float) -> None:
