@@ -16,11 +16,12 @@ that re-solves targets near known solutions (an iteration moving its points a li
 pass those solutions as a starting guess: Newton then starts from them and the coarse seed
 search is skipped; points that do not converge from their guess take the path above.
 
-Face hobbing (indexing ratio κ ≠ 0): the work indexes while the head turns, so at a given
-target every blade-group passage θ* + 2πk/z0 reaches a root on another slot. The seed keeps
-the root nearest spin and roll zero (the settings place the reference slot there, ``docs/
-machine.md``); the continuation from it stays on that slot (first-order prediction and
-Newton steps limited to 0.15 rad of spin, less than half a group pitch 2π/z0 for z0 ≤ 20).
+Face hobbing (indexing ratio κ ≠ 0): the work indexes while the head turns, so the one
+modelled blade meets a target once per head turn, each turn on another slot (the other
+blade groups, not modelled, would cut the slots between). The coarse search covers one turn,
+θ ∈ [−π, π); among its roots the seed keeps the one nearest spin and roll zero (the settings
+place the reference slot there, ``docs/machine.md``), and the continuation from it stays on
+that slot (first-order prediction, Newton steps limited to 0.15 rad of spin).
 
 Each blade section (edge radius, toprem, profile, flankrem) is solved on its own analytic
 curve; a point whose solution leaves its section is re-solved on the neighbouring one.
