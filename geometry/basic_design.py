@@ -62,7 +62,7 @@ TARGETS: dict[str, tuple[str, Callable[[BlankGeometry], float]]] = {
     "de2": ("mm", lambda g: g.gear.de),
     "dm2": ("mm", lambda g: g.gear.dm),
 }
-_ADJUSTABLE = ("de2", "b2", "rc0", "beta_m", "theta_a2", "theta_f2", "c_ham")
+_ADJUSTABLE = ("de2", "dm2", "b2", "rc0", "beta_m", "theta_a2", "theta_f2", "c_ham")
 _DESIGN_ANGLES = {"Sigma", "beta_m", "alpha_dD", "alpha_dC", "theta_a2", "theta_f2"}
 
 
@@ -219,8 +219,8 @@ def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
     targets : mapping
         Target name (a key of :data:`TARGETS`) → value [deg for angles, mm for lengths].
     adjust : tuple of str
-        Design fields varied (a subset of ``de2, b2, rc0, beta_m, theta_a2, theta_f2,
-        c_ham``); at most as many as there are targets.
+        Design fields varied (a subset of ``de2, dm2, b2, rc0, beta_m, theta_a2, theta_f2,
+        c_ham``, each given in ``design``); at most as many as there are targets.
 
     Returns
     -------
@@ -230,13 +230,13 @@ def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
     Raises
     ------
     InputError
-        For an unknown target or adjustable field, more fields than targets, or when no
-        valid design is found near the start.
+        For an unknown target or adjustable field, a field the design leaves out, more
+        fields than targets, or when no valid design is found near the start.
 
     Notes
     -----
     ``scipy.optimize.least_squares`` on the residuals value − target, each divided by 1 mm or
-    1°, with every evaluation a full ISO 23509 Method 0/1 blank (:func:`blank_geometry`).
+    1°, with every evaluation a full ISO 23509 blank (:func:`blank_geometry`).
     Designs rejected by the standard's checks count as a large residual.
     """
     unknown = sorted(set(targets) - set(TARGETS))
@@ -246,6 +246,11 @@ def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
     if bad:
         raise InputError(f"targets.adjust: {bad[0]!r} cannot be adjusted; accepted: "
                          f"{list(_ADJUSTABLE)}")
+    unset = [a for a in adjust if getattr(design, a) is None]
+    if unset:
+        raise InputError(f"targets.adjust: {unset[0]!r} is not given in this design (method "
+                         f"{design.method}, input data type {design.input_data_type}); "
+                         "adjust a field it has")
     if len(adjust) > len(targets):
         raise InputError(f"targets.adjust: {len(adjust)} fields for {len(targets)} targets; "
                          "give at most as many fields as targets")
@@ -315,7 +320,8 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
     InputError
         A missing, unknown or out-of-range field, named by its dotted path.
     ModelUnavailableError
-        A process pair or ISO method that is not implemented.
+        A process pair or ISO method that is not implemented, or a face-hobbed design
+        (z0 ≥ 1: the synthesis is face milling only).
     """
     if not isinstance(raw, Mapping):
         raise InputError(f"basic file: must be a table, got {type(raw).__name__}")
@@ -332,6 +338,11 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
         design = BevelGearDesign.from_degrees(**des)
     except InputError as exc:
         raise InputError(f"design.{exc}") from None
+    if design.process != "face milling":
+        raise ModelUnavailableError(
+            f"design.z0: the machine-setting synthesis is implemented for face milling only "
+            f"(z0 = 0); face-hobbed blanks come from geometry.blank.blank_geometry, got "
+            f"z0 = {design.z0}")
     tg = dict(raw.get("targets", {}))
     adjust = tg.pop("adjust", [])
     if not isinstance(adjust, list) or not all(isinstance(a, str) for a in adjust):

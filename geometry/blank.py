@@ -1,4 +1,4 @@
-"""Blank geometry of face-milled spiral bevel and hypoid gears after ISO 23509:2016, clause 6.
+"""Blank geometry of spiral bevel and hypoid gears after ISO 23509:2016, clause 6.
 
 :func:`gear_dimensions` takes the basic design data (:class:`~geometry.pitch_cone.
 BevelGearDesign`) and the pitch cone (:func:`~geometry.pitch_cone.pitch_cone`) and returns
@@ -24,8 +24,28 @@ checked against the Annex F examples (``tests/data/iso23509_annex_f_face_milling
   reproduces sample 2 to 0.01 mm at both ends;
 * backlash j_en is taken as measured perpendicular to the flanks (j_mn = j_en R_m2 /
   (R_e2 cos α_n)); with that the thicknesses of sample 1 agree to 0.002 mm;
-* spiral angles at heel and toe follow the cutter circle of radius r_c0 in the pitch plane
-  (:func:`spiral_angle_at`), for the gear at its own face-width ends. For the pinion of a
+* tooth depths from data type I (h_mw = 2 k_hap m_mn, h_am2 = (k_hap − x_hm1) m_mn,
+  c = (k_hfp − k_hap) m_mn, thickness 2 x_smn m_mn) are the type II relations under the
+  standard's conversion; they reproduce h_mw of sample 4
+  (``tests/data/iso23509_annex_f_face_hobbing.toml``);
+* uniform depth (θ_a2 = θ_f2 = 0, the face-hobbing samples 3 and 4) needs no branch: the
+  pinion face and root angles still follow from the tangency with the clearance, and come
+  out uniform too (δ_a1 = δ_f1 = δ1: the gear root and face cones, parallel to its pitch
+  cone, touch the pinion cones along the common normal of the pitch cones at P, which
+  meets both axes); sample 3's δ_a1 is within 0.3 % of the printed value, the difference of
+  the pitch angle δ1;
+* the pinion face width is the method's: Methods 0 and 1 as below; Method 2
+  b1 = b2 (1 + tan² ζ_mp) with the calculation point in the middle (sample 3: 0.01 %);
+  Method 3 the pinion's stretch of the pitch plane between the gear's toe and heel circles,
+  b_p1 = √(R_e2² − a_p²) − √(R_i2² − a_p²), widened by 3 m_mn |tan ζ_mp| + 1 mm and
+  rounded down to a whole millimetre, the extra width shared equally by both ends (this
+  rule was taken from a transcription of the standard; no printed value checks it);
+* spiral angles at heel and toe follow the tooth trace in the pitch plane
+  (:func:`spiral_angle_at`): the cutter circle of radius r_c0 for face milling, the
+  extended epicycloid of :func:`~geometry.pitch_cone.face_hobbing_trace` for face hobbing
+  (β(R) = arctan[(R − ρ_b cos q)/(ρ_b sin q)], q the angle at the crown gear centre between
+  the point and the cutter centre; sample 3: β_e1 within 0.01 %), for the gear at its own
+  face-width ends. For the pinion of a
   hypoid pair the cutter formula is evaluated at the gear cone distance R_e21 (R_i21) of
   the pinion's face-width end, reached along the pinion generatrix through P in the pitch
   plane, and the pitch-plane offset angle there, arcsin(a_p/R_x21), is added
@@ -51,7 +71,7 @@ import xarray as xr
 
 from geometry._version import __version__
 from geometry.errors import InputError
-from geometry.pitch_cone import BevelGearDesign, PitchCone, pitch_cone
+from geometry.pitch_cone import BevelGearDesign, PitchCone, face_hobbing_trace, pitch_cone
 from geometry.validation import positive, real
 
 __all__ = [
@@ -170,7 +190,8 @@ class BlankGeometry:
     zeta_o : float
         Pinion offset angle in the face plane ζ_o [rad] (gear face cone ↔ pinion root cone).
     Delta_bx1 : float
-        Pinion face width increment Δb_x1 at each end [mm].
+        Pinion face width increment Δb_x1 at each end [mm] (Methods 0 and 1; ``nan`` for
+        Methods 2 and 3, whose pinion face width rules have no such term).
     """
 
     design: BevelGearDesign
@@ -197,7 +218,7 @@ class BlankGeometry:
 
 _PITCH_ANGLES = frozenset(
     {"delta1", "delta2", "beta_m1", "beta_m2", "zeta_m", "eta", "zeta_mp", "alpha_lim",
-     "alpha_nD", "alpha_nC"}
+     "alpha_nD", "alpha_nC", "nu", "lambda_", "eta1"}
 )
 _DESIGN_ANGLES = frozenset({"Sigma", "beta_m", "alpha_dD", "alpha_dC", "theta_a2", "theta_f2"})
 
@@ -228,8 +249,10 @@ BACKLASH_TO_MEAN_NORMAL: Mapping[str, Callable[[BevelGearDesign, PitchCone], flo
 
 
 # --------------------------------------------------------------------------- formulas
-def spiral_angle_at(R: float, Rm: float, beta_m: float, rc0: float) -> float:
-    """Spiral angle at cone distance R of a face-milled tooth (circular tooth trace).
+def spiral_angle_at(
+    R: float, Rm: float, beta_m: float, rc0: float, z0: float = 0.0, z_p: float = math.inf
+) -> float:
+    """Spiral angle at cone distance R of a face-milled or face-hobbed tooth.
 
     Parameters
     ----------
@@ -240,37 +263,68 @@ def spiral_angle_at(R: float, Rm: float, beta_m: float, rc0: float) -> float:
     beta_m : float
         Mean spiral angle [rad].
     rc0 : float
-        Cutter radius r_c0 [mm]: radius of the tooth trace in the pitch plane.
+        Cutter radius r_c0 [mm]: radius of the tooth trace in the pitch plane (face
+        milling), distance from the cutter centre to the blade (face hobbing).
+    z0 : float
+        Number of blade groups [-], ≥ 0: 0 (default) for face milling. Real, so that the
+        face-milling limit can be approached.
+    z_p : float
+        Number of crown gear teeth [-], z/sin δ of the member; used for face hobbing only.
 
     Returns
     -------
     float
-        β(R) [rad] = arcsin[(R² − R_m² + 2 R_m r_c0 sin β_m) / (2 R r_c0)].
+        β(R) [rad]. Face milling: arcsin[(R² − R_m² + 2 R_m r_c0 sin β_m) / (2 R r_c0)].
+        Face hobbing: arctan[(R − ρ_b cos q) / (ρ_b sin q)] with
+        q = arccos[(R² + ρ_P0² − r_c0²) / (2 R ρ_P0)], ρ_P0 and ρ_b of the tooth trace at the
+        mean point (:func:`~geometry.pitch_cone.face_hobbing_trace`).
 
     Raises
     ------
     InputError
-        If the cutter circle does not reach cone distance R (argument outside [−1, 1]).
+        If the cutter does not reach cone distance R (argument outside [−1, 1]), or a
+        face-hobbing input is out of range.
 
     Notes
     -----
-    Source: ISO 23509:2016 cl. 6 (spiral angles at outer and inner end, face milling): the
+    Source: ISO 23509:2016 cl. 6 (spiral angles at outer and inner end). Face milling: the
     tooth trace is a circle of radius r_c0 through the mean point with spiral angle β_m; the
-    law of cosines in the pitch plane gives the formula.
+    law of cosines in the pitch plane gives the formula. Face hobbing: the trace is the
+    extended epicycloid of the blade as the cutter rolls on the base circle ρ_b; at the
+    point of the trace at distance R from the crown gear centre O the blade is r_c0 from the
+    cutter centre C at that instant (seen from the crown gear C runs on the circle of radius
+    ρ_P0 about O), q is the angle at O in that triangle, and the trace
+    normal runs through the pitch point I on OC at ρ_b from O, which gives the arctangent
+    (the tests compare it with a time-stepped epicycloid). For z0 → 0, ρ_b → ρ_P0 and the
+    face-hobbing formula tends to the face-milling one.
     """
-    arg = (R * R - Rm * Rm + 2.0 * Rm * rc0 * math.sin(beta_m)) / (2.0 * R * rc0)
+    z0 = real("z0", z0, unit="1", low=0.0)
+    if z0 == 0.0:
+        arg = (R * R - Rm * Rm + 2.0 * Rm * rc0 * math.sin(beta_m)) / (2.0 * R * rc0)
+        if not -1.0 <= arg <= 1.0:
+            raise InputError(
+                "rc0: must be large enough for the cutter circle through the mean point to "
+                f"reach cone distance {R:.4g} mm (or reduce b2) [mm], got {rc0:g}"
+            )
+        return math.asin(arg)
+    R = positive("R", R, "mm")
+    trace = face_hobbing_trace(Rm, beta_m, rc0, z0, z_p)
+    rho_p0, rho_b = trace.rho_P0, trace.rho_b
+    arg = (R * R + rho_p0 * rho_p0 - rc0 * rc0) / (2.0 * R * rho_p0)
     if not -1.0 <= arg <= 1.0:
         raise InputError(
-            "rc0: must be large enough for the cutter circle through the mean point to reach "
-            f"cone distance {R:.4g} mm (or reduce b2) [mm], got {rc0:g}"
+            "rc0: must be large enough for the face-hobbing tooth trace through the mean point "
+            f"to reach cone distance {R:.4g} mm (or reduce b2) [mm], got {rc0:g}"
         )
-    return math.asin(arg)
+    q = math.acos(arg)
+    return math.atan2(R - rho_b * math.cos(q), rho_b * math.sin(q))
 
 
 def pinion_spiral_angle_at(
-    b_x1: float, Rm2: float, beta_m2: float, zeta_mp: float, rc0: float
+    b_x1: float, Rm2: float, beta_m2: float, zeta_mp: float, rc0: float,
+    z0: float = 0.0, z_p2: float = math.inf,
 ) -> float:
-    """Pinion spiral angle at a point of the pinion face width (face milling, hypoid).
+    """Pinion spiral angle at a point of the pinion face width (hypoid or bevel pair).
 
     Parameters
     ----------
@@ -285,6 +339,10 @@ def pinion_spiral_angle_at(
         Offset angle in the pitch plane ζ_mp = β_m1 − β_m2 [rad], [0, π/2).
     rc0 : float
         Cutter radius r_c0 [mm], > 0.
+    z0 : float
+        Number of blade groups [-]: 0 (default) for face milling, ≥ 1 for face hobbing.
+    z_p2 : float
+        Number of teeth of the gear's crown gear z2/sin δ2 [-] (face hobbing only).
 
     Returns
     -------
@@ -294,8 +352,9 @@ def pinion_spiral_angle_at(
         R_x21 = sqrt(R_m2² + b_x1² + 2 R_m2 b_x1 cos ζ_mp)
 
         is the gear cone distance of the pinion point, β_x21 the gear spiral angle at R_x21
-        (:func:`spiral_angle_at` with R_m2, β_m2, r_c0), and ζ_xp21 = arcsin(a_p / R_x21),
-        a_p = R_m2 sin ζ_mp, the offset angle in the pitch plane at that point.
+        (:func:`spiral_angle_at` with R_m2, β_m2, r_c0, z0, z_p2: the gear's tooth trace),
+        and ζ_xp21 = arcsin(a_p / R_x21), a_p = R_m2 sin ζ_mp, the offset angle in the pitch
+        plane at that point.
 
     Raises
     ------
@@ -330,7 +389,7 @@ def pinion_spiral_angle_at(
             f"offset foot point) [mm], got {b_x1:.4g}"
         )
     R_x21 = math.hypot(s_x, a_p)
-    return spiral_angle_at(R_x21, Rm2, beta_m2, rc0) + math.asin(a_p / R_x21)
+    return spiral_angle_at(R_x21, Rm2, beta_m2, rc0, z0, z_p2) + math.asin(a_p / R_x21)
 
 
 def _offset_azimuth(
@@ -357,8 +416,40 @@ def _offset_azimuth(
     return math.atan2(B, A) + math.asin(C / R)
 
 
+def _depth_factors(design: BevelGearDesign, m_mn: float) -> tuple[float, float, float, float]:
+    """Mean working depth h_mw, gear mean addendum h_am2, clearance c and the thickness
+    term (k_t m_mn = 2 x_smn m_mn) [mm] from input data type II or I."""
+    if design.input_data_type == "II":
+        hmw = design.k_d * m_mn
+        return hmw, design.c_ham * hmw, design.k_c * hmw, design.k_t * m_mn
+    return (2.0 * design.k_hap * m_mn, (design.k_hap - design.x_hm1) * m_mn,
+            (design.k_hfp - design.k_hap) * m_mn, 2.0 * design.x_smn * m_mn)
+
+
+def _pinion_face_width(
+    design: BevelGearDesign, p: PitchCone, Ri2: float, hmw: float, zeta_R: float
+) -> tuple[float, float, float]:
+    """R_e1, R_i1 [mm] and Δb_x1 [mm] (nan where the method has none) of the pinion."""
+    Re2, Rm2, zeta_mp = p.Re2, p.Rm2, p.zeta_mp
+    if design.method == 2:
+        b1 = design.b2 * (1.0 + math.tan(zeta_mp) ** 2)
+        return p.Rm1 + p.c_be2 * b1, p.Rm1 - (1.0 - p.c_be2) * b1, math.nan
+    if design.method == 3:
+        a_p = p.a_p
+        foot_i = math.sqrt(Ri2 * Ri2 - a_p * a_p)
+        b_p1 = math.sqrt(Re2 * Re2 - a_p * a_p) - foot_i
+        b1 = math.floor(b_p1 + 3.0 * p.m_mn * abs(math.tan(zeta_mp)) + 1.0)
+        b_i1 = math.sqrt(Rm2 * Rm2 - a_p * a_p) - foot_i + 0.5 * (b1 - b_p1)
+        return p.Rm1 + b1 - b_i1, p.Rm1 - b_i1, math.nan
+    delta_bx1 = hmw * math.sin(zeta_R) * (1.0 - 1.0 / design.u)
+    cz = math.cos(zeta_mp)
+    Re1 = p.Rm1 + (Re2 - Rm2) / cz + delta_bx1
+    Ri1 = p.Rm1 - (Rm2 - Ri2) / cz - delta_bx1
+    return Re1, Ri1, delta_bx1
+
+
 def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> BlankGeometry:
-    """Blank dimensions of both members (ISO 23509:2016 clause 6, face milling, data type II).
+    """Blank dimensions of both members (ISO 23509:2016 clause 6).
 
     Parameters
     ----------
@@ -385,9 +476,13 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
     -----
     Formulas, per member i with its own δ, R_m, θ, h (clause 6 of ISO 23509:2016):
 
-    * m_et2 = d_e2/z2; h_mw = k_d m_mn; h_am2 = c_ham h_mw; h_am1 = h_mw − h_am2;
-      c = k_c h_mw; h_m = h_mw + c; h_fm,i = h_m − h_am,i.
-    * gear: R_e2 = d_e2/(2 sin δ2), R_i2 = R_e2 − b2, δ_a2 = δ2 + θ_a2, δ_f2 = δ2 − θ_f2,
+    * m_et2 = d_e2/z2; data type II: h_mw = k_d m_mn, h_am2 = c_ham h_mw, c = k_c h_mw;
+      data type I: h_mw = 2 k_hap m_mn, h_am2 = (k_hap − x_hm1) m_mn,
+      c = (k_hfp − k_hap) m_mn; then h_am1 = h_mw − h_am2, h_m = h_mw + c,
+      h_fm,i = h_m − h_am,i.
+    * gear: R_e2 = d_e2/(2 sin δ2) (R_m2 + b2/2 for Method 2, whose d_e2 = 2 R_e2 sin δ2 is a
+      result), R_i2 = R_e2 − b2, δ_a2 = δ2 + θ_a2, δ_f2 = δ2 − θ_f2 (uniform depth:
+      θ_a2 = θ_f2 = 0),
       t_zF2 = t_z2 − (R_m2 sin θ_a2 − h_am2 cos θ_a2)/sin δ_a2,
       t_zR2 = t_z2 + (R_m2 sin θ_f2 − h_fm2 cos θ_f2)/sin δ_f2.
     * ζ_R, ζ_o: the normal line from P to the gear root (face) cone meets the pinion axis;
@@ -398,30 +493,34 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
       t_zF1 = (a sin ζ_R cos δ_f2 − t_zR2 sin δ_f2 − c)/sin δ_a1,
       t_zR1 = (a sin ζ_o cos δ_a2 − t_zF2 sin δ_a2 − c)/sin δ_f1.
       For a = 0 these reduce to δ_a1 = δ1 + θ_f2, δ_f1 = δ1 − θ_a2.
-    * pinion face width: Δb_x1 = h_mw sin ζ_R (1 − 1/u);
+    * pinion face width, Methods 0 and 1: Δb_x1 = h_mw sin ζ_R (1 − 1/u);
       R_e1 = R_m1 + (R_e2 − R_m2)/cos ζ_mp + Δb_x1, R_i1 = R_m1 − (R_m2 − R_i2)/cos ζ_mp − Δb_x1.
+      Method 2: b1 = b2 (1 + tan² ζ_mp), R_e1 = R_m1 + c_be2 b1, R_i1 = R_e1 − b1.
+      Method 3: b_p1 = √(R_e2² − a_p²) − √(R_i2² − a_p²),
+      b1 = ⌊b_p1 + 3 m_mn |tan ζ_mp| + 1 mm⌋, b_i1 = √(R_m2² − a_p²) − √(R_i2² − a_p²)
+      + (b1 − b_p1)/2, R_i1 = R_m1 − b_i1, R_e1 = R_i1 + b1.
     * h_ae = h_am + (R_e − R_m) tan θ_a, h_fe = h_fm + (R_e − R_m) tan θ_f,
       h_ai = h_am − (R_m − R_i) tan θ_a, h_fi = h_fm − (R_m − R_i) tan θ_f.
     * d_e = 2 R_e sin δ, d_i = 2 R_i sin δ, d_ae = d_e + 2 h_ae cos δ, d_fe = d_e − 2 h_fe cos δ,
       d_ai = d_i + 2 h_ai cos δ, d_fi = d_i − 2 h_fi cos δ.
     * t_xo = R_e cos δ − h_ae sin δ − t_z, t_xi = R_i cos δ − h_ai sin δ − t_z.
-    * gear β_e2, β_i2 from :func:`spiral_angle_at` at R_e2, R_i2 with r_c0; pinion β_e1,
-      β_i1 from :func:`pinion_spiral_angle_at` at b_e1 = R_e1 − R_m1, −b_i1 = R_i1 − R_m1
-      (gear spiral angle at the pinion end's gear cone distance plus the offset angle in
-      the pitch plane there; for a = 0 the same as the gear formula).
-    * s_mn1 = π m_mn/2 + (h_am1 − h_am2)(tan α_nD + tan α_nC)/2 + k_t m_mn − j_mn/2,
-      s_mn2 = π m_mn − s_mn1 − j_mn, j_mn from :data:`BACKLASH_TO_MEAN_NORMAL`.
+    * gear β_e2, β_i2 from :func:`spiral_angle_at` at R_e2, R_i2 with r_c0 (and z0, z2/sin δ2
+      for face hobbing); pinion β_e1, β_i1 from :func:`pinion_spiral_angle_at` at
+      b_e1 = R_e1 − R_m1, −b_i1 = R_i1 − R_m1 (gear spiral angle at the pinion end's gear
+      cone distance plus the offset angle in the pitch plane there; for a = 0 the same as
+      the gear formula).
+    * s_mn1 = π m_mn/2 + (h_am1 − h_am2)(tan α_nD + tan α_nC)/2 + k_t m_mn − j_mn/2
+      (k_t m_mn = 2 x_smn m_mn for data type I), s_mn2 = π m_mn − s_mn1 − j_mn, j_mn from
+      :data:`BACKLASH_TO_MEAN_NORMAL`.
 
     What was reconstructed and how well it reproduces Annex F is listed in the module
     docstring.
     """
     p = pitch_cone(design) if pitch is None else pitch
-    sigma, a, u = design.Sigma, design.a, design.u
+    sigma, a = design.Sigma, design.a
     m_mn = p.m_mn
-    hmw = design.k_d * m_mn
-    ham2 = design.c_ham * hmw
+    hmw, ham2, c, thickness = _depth_factors(design, m_mn)
     ham1 = hmw - ham2
-    c = design.k_c * hmw
     hm = hmw + c
     hfm1, hfm2 = hm - ham1, hm - ham2
 
@@ -454,10 +553,7 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
     t_zR1 = (a * math.sin(zeta_o) * math.cos(da2) - t_zF2 * math.sin(da2) - c) / math.sin(df1)
 
     # pinion face width
-    delta_bx1 = hmw * math.sin(zeta_R) * (1.0 - 1.0 / u)
-    cz = math.cos(p.zeta_mp)
-    Re1 = p.Rm1 + (Re2 - Rm2) / cz + delta_bx1
-    Ri1 = p.Rm1 - (Rm2 - Ri2) / cz - delta_bx1
+    Re1, Ri1, delta_bx1 = _pinion_face_width(design, p, Ri2, hmw, zeta_R)
 
     # thickness
     try:
@@ -467,22 +563,23 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
                          f"{design.backlash!r}") from None
     j_mn = to_jmn(design, p)
     tan_alpha = 0.5 * (math.tan(p.alpha_nD) + math.tan(p.alpha_nC))
-    smn1 = 0.5 * math.pi * m_mn + (ham1 - ham2) * tan_alpha + design.k_t * m_mn - 0.5 * j_mn
+    smn1 = 0.5 * math.pi * m_mn + (ham1 - ham2) * tan_alpha + thickness - 0.5 * j_mn
     smn2 = math.pi * m_mn - smn1 - j_mn
     if smn2 <= 0.0 or smn1 <= 0.0:
+        name = "k_t" if design.input_data_type == "II" else "x_smn"
         raise InputError(
-            f"k_t: must leave both teeth a thickness s_mn > 0 (with c_ham = {design.c_ham:g}, "
-            f"backlash {design.backlash_value:g} mm) [1], got {design.k_t:g}: "
-            f"s_mn1 = {smn1:.4g} mm, s_mn2 = {smn2:.4g} mm"
+            f"{name}: must leave both teeth a thickness s_mn > 0 (with h_am1 − h_am2 = "
+            f"{ham1 - ham2:.4g} mm, backlash {design.backlash_value:g} mm) [1], got "
+            f"{getattr(design, name):g}: s_mn1 = {smn1:.4g} mm, s_mn2 = {smn2:.4g} mm"
         )
 
-    # spiral angles at heel and toe: gear on its own cutter circle, pinion via the gear's
+    # spiral angles at heel and toe: gear on its own tooth trace, pinion via the gear's
     # angle at the corresponding point plus the pitch-plane offset angle there
-    rc0 = design.rc0
-    beta_e2 = spiral_angle_at(Re2, Rm2, p.beta_m2, rc0)
-    beta_i2 = spiral_angle_at(Ri2, Rm2, p.beta_m2, rc0)
-    beta_e1 = pinion_spiral_angle_at(Re1 - p.Rm1, Rm2, p.beta_m2, p.zeta_mp, rc0)
-    beta_i1 = pinion_spiral_angle_at(Ri1 - p.Rm1, Rm2, p.beta_m2, p.zeta_mp, rc0)
+    rc0, z0, z_p2 = design.rc0, design.z0, design.z2 / math.sin(d2)
+    beta_e2 = spiral_angle_at(Re2, Rm2, p.beta_m2, rc0, z0, z_p2)
+    beta_i2 = spiral_angle_at(Ri2, Rm2, p.beta_m2, rc0, z0, z_p2)
+    beta_e1 = pinion_spiral_angle_at(Re1 - p.Rm1, Rm2, p.beta_m2, p.zeta_mp, rc0, z0, z_p2)
+    beta_i1 = pinion_spiral_angle_at(Ri1 - p.Rm1, Rm2, p.beta_m2, p.zeta_mp, rc0, z0, z_p2)
 
     pinion = _member(
         z=design.z1, delta=p.delta1, delta_a=da1, delta_f=df1, Re=Re1, Rm=p.Rm1, Ri=Ri1,
@@ -494,8 +591,9 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
         beta_e=beta_e2, beta_m=p.beta_m2, beta_i=beta_i2, ham=ham2, hfm=hfm2, t_z=p.t_z2,
         t_zF=t_zF2, t_zR=t_zR2, smn=smn2,
     )
+    de2 = design.de2 if design.de2 is not None else gear.de  # Method 2: a result
     return BlankGeometry(
-        design=design, pitch=p, pinion=pinion, gear=gear, met2=design.de2 / design.z2,
+        design=design, pitch=p, pinion=pinion, gear=gear, met2=de2 / design.z2,
         m_mn=m_mn, hmw=hmw, c=c, hm=hm, j_mn=j_mn, zeta_R=zeta_R, zeta_o=zeta_o,
         Delta_bx1=delta_bx1,
     )
@@ -649,6 +747,16 @@ _PAIR_META: dict[str, tuple[str, str]] = {
     "alpha_nC": ("rad", "generated normal pressure angle, coast flank"),
     "c_be2": ("1", "face width factor of the gear"),
 }
+#: the gear's face-hobbing tooth trace at P, stored for face hobbing only: dataset name →
+#: (attribute of the PitchCone, units, long name)
+_TRACE_META: dict[str, tuple[str, str, str]] = {
+    "nu": ("nu", "rad", "lead angle of the cutter"),
+    "lambda": ("lambda_", "rad", "first auxiliary angle (crown gear centre to cutter centre at P)"),
+    "rho_P0": ("rho_P0", "mm", "crown gear centre to cutter centre distance"),
+    "rho_b": ("rho_b", "mm", "base radius of the epicycloid"),
+    "eta1": ("eta1", "rad", "second auxiliary angle"),
+    "rho_mbeta": ("rho_mbeta", "mm", "lengthwise radius of curvature of the tooth at P"),
+}
 
 
 def blank_dataset(geom: BlankGeometry) -> xr.Dataset:
@@ -665,8 +773,10 @@ def blank_dataset(geom: BlankGeometry) -> xr.Dataset:
         One variable per :class:`MemberBlank` field along ``member`` and one scalar per pair
         quantity, each with ``units`` (UDUNITS: ``mm``, ``rad``, ``1``) and ``long_name``
         attributes; angles in rad. ``rho_lim`` is omitted for Method 0, where the limit
-        radius is undefined. Attributes: the ISO method, the design data as JSON text
-        (angles in rad), the toolkit version.
+        radius is undefined, ``Delta_bx1`` for Methods 2 and 3; for face hobbing the gear's
+        tooth trace at P is added (``nu``, ``lambda``, ``rho_P0``, ``rho_b``, ``eta1``,
+        ``rho_mbeta``). Attributes: the ISO method, the process, the design data as JSON
+        text (angles in rad), the toolkit version.
 
     Raises
     ------
@@ -685,12 +795,17 @@ def blank_dataset(geom: BlankGeometry) -> xr.Dataset:
         if not math.isfinite(value):
             continue
         data_vars[name] = ((), float(value), {"units": units, "long_name": long_name})
+    if geom.design.process == "face hobbing":
+        for name, (attr, units, long_name) in _TRACE_META.items():
+            data_vars[name] = ((), float(getattr(geom.pitch, attr)),
+                               {"units": units, "long_name": long_name})
     return xr.Dataset(
         data_vars,
         coords={"member": ("member", ["pinion", "gear"], {"long_name": "gear pair member"})},
         attrs={
             "title": "bevel/hypoid blank geometry (ISO 23509:2016 clauses 5 and 6)",
             "iso23509_method": int(geom.pitch.method),
+            "process": geom.design.process,
             "design": json.dumps(asdict(geom.design)),
             "toolkit_version": __version__,
         },

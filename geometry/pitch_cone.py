@@ -1,14 +1,21 @@
 """Pitch cones of spiral bevel and hypoid gear pairs after ISO 23509:2016, clause 5.
 
-The basic design data of a face-milled bevel or hypoid pair (ISO 23509 "data type II",
-Gleason style) are held in :class:`BevelGearDesign`; :func:`pitch_cone` turns them into the
-pitch cone parameters at the calculation point P (the mean point) with one of the
+The basic design data of a face-milled or face-hobbed bevel or hypoid pair (ISO 23509
+input data type I or II) are held in :class:`BevelGearDesign`; :func:`pitch_cone` turns them
+into the pitch cone parameters at the calculation point P (the mean point) with one of the
 standard's methods, chosen by number from :data:`PITCH_CONE_METHODS`:
 
-* Method 0 — spiral bevel gears without offset (ISO 23509 cl. 5, "Method 0"),
-* Method 1 — hypoid gears, Gleason method (ISO 23509 cl. 5, "Method 1").
+* Method 0 — spiral bevel gears without offset (ISO 23509 cl. 5, "Method 0"), face milling
+  or face hobbing (the pitch cone does not depend on the process),
+* Method 1 — hypoid gears, Gleason method (ISO 23509 cl. 5, "Method 1"), face milling
+  (closure ρ_lim = r_c0) or face hobbing (closure ρ_lim = ρ_mβ),
+* Method 2 — hypoid gears, Oerlikon method (ISO 23509 cl. 5, "Method 2"), face hobbing,
+  from the gear mean pitch diameter d_m2,
+* Method 3 — hypoid gears, Klingelnberg method (ISO 23509 cl. 5, "Method 3"), face hobbing.
 
-Methods 2 (Oerlikon) and 3 (Klingelnberg) are not implemented.
+The process follows from the number of blade groups z0 of the cutter: z0 = 0 is face
+milling, z0 ≥ 1 face hobbing (then r_c0 is the nominal face-hobbing cutter radius and the
+lengthwise tooth curve an extended epicycloid, :func:`face_hobbing_trace`).
 
 What was reconstructed
 ----------------------
@@ -30,6 +37,31 @@ therefore not quoted. In particular:
   desired 50°); this module solves the same conditions to machine precision, which moves
   δ1, δ2 by about 0.01° against Annex F sample 2.
 
+Face hobbing (checked against ``tests/data/iso23509_annex_f_face_hobbing.toml``, Annex F
+samples 3 and 4):
+
+* the tooth trace at P (:func:`face_hobbing_trace`): lead angle ν, first auxiliary angle λ,
+  crown-gear-centre to cutter-centre distance ρ_P0, base radius ρ_b, second auxiliary angle
+  η1 and lengthwise radius of curvature ρ_mβ of the extended epicycloid, rebuilt from the
+  rolling of the cutter on the crown gear (tests: an independently time-stepped epicycloid);
+* Method 2 (Oerlikon) closes on the condition that the pinion pitch apex lies on the line
+  from the gear pitch apex through the cutter centre in the pitch plane (the standard's
+  check R_m1 = R_m,check = R_m2 sin φ6 / sin(180° − ζ_mp − φ6), φ6 the angle at the gear
+  apex between P and the cutter centre). The standard reaches it by an approximation chain
+  that stops once the check agrees within a tolerance: the printed values of sample 3 give
+  R_m,check = 60.99 mm against R_m1 = 61.19 mm, 0.3 % short of the condition. Solved
+  exactly here, δ2 is 0.07° and R_m1 0.26 % off the printed values (within the tolerances
+  of the data file);
+* Method 3 (Klingelnberg) closes on ρ_lim = ρ_mβ (the limit radius equals the lengthwise
+  radius of the epicycloid at P), with the gear mean point at the middle of the face width
+  (c_be2 = 0.5, d_m2 = d_e2 − b2 sin δ2). The standard writes the closure as an explicit
+  approximation R_m,int = R_m1 inside a fixed-point iteration. That identification was
+  made by re-running that iteration as transcribed in third-party public code (nothing of
+  it is used here): its converged sample 4 (which reproduces every value the data file
+  prints) satisfies ρ_lim = ρ_mβ to 0.1 %, and the exact solution here lies within 0.04 %
+  (R_m1) and 0.01° (δ1, δ2) of it. Method 1 for face hobbing uses the same closure with the
+  desired pinion spiral angle.
+
 Frame used for the hypoid relations (right-handed): the gear axis is the z axis through
 the crossing point O and points from the gear pitch apex into the gear (towards its back);
 the common perpendicular of the axes is the x axis; the pinion axis passes through
@@ -46,14 +78,18 @@ from typing import Any
 from scipy.optimize import brentq
 
 from geometry.errors import InputError, ModelUnavailableError
-from geometry.validation import integer, one_of, real
+from geometry.validation import integer, one_of, positive, real
 
 __all__ = [
     "BACKLASH_KINDS",
+    "DEPTH_FIELDS",
     "HANDS",
+    "INPUT_DATA_TYPES",
     "PITCH_CONE_METHODS",
     "BevelGearDesign",
+    "FaceHobbingTrace",
     "PitchCone",
+    "face_hobbing_trace",
     "hypoid_pitch_angles",
     "limit_pressure_angle",
     "limit_radius",
@@ -64,6 +100,13 @@ __all__ = [
 HANDS = ("left", "right")
 #: how the backlash is specified: outer normal j_en, outer transverse j_et2, mean normal j_mn
 BACKLASH_KINDS = ("j_en", "j_et2", "j_mn")
+#: ISO 23509 input data types of the tooth depth and thickness (ISO 23509 cl. 6, Tables 3-4)
+INPUT_DATA_TYPES = ("I", "II")
+#: the depth and thickness fields of each input data type
+DEPTH_FIELDS: Mapping[str, tuple[str, ...]] = {
+    "I": ("x_hm1", "k_hap", "k_hfp", "x_smn"),
+    "II": ("c_ham", "k_d", "k_c", "k_t"),
+}
 
 _DEG = math.pi / 180.0
 #: factor 1.2 of the approximate gear pitch angle of Method 1 (ISO 23509 cl. 5, Method 1)
@@ -71,48 +114,75 @@ _DELTA_INT_FACTOR = 1.2
 
 
 # --------------------------------------------------------------------------- input data
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BevelGearDesign:
-    """Basic design data of a face-milled bevel/hypoid gear pair (ISO 23509 data type II).
+    """Basic design data of a bevel/hypoid gear pair (ISO 23509 initial data).
 
     Angles are in radians and lengths in millimetres; :meth:`from_degrees` builds the
-    object from angles in degrees (as in case files). Every field is validated on
-    construction; a bad value raises :class:`~geometry.errors.InputError` naming the field
-    and its accepted range.
+    object from angles in degrees (as in case files). Fields are keyword-only. Every field is
+    validated on construction; a bad, missing or superfluous value raises
+    :class:`~geometry.errors.InputError` naming the field and its accepted range.
 
     Parameters
     ----------
     method : int
         ISO 23509 pitch-cone method, a key of :data:`PITCH_CONE_METHODS`: 0 (spiral bevel,
-        zero offset) or 1 (hypoid, Gleason).
+        zero offset), 1 (hypoid, Gleason), 2 (hypoid, Oerlikon; face hobbing only) or
+        3 (hypoid, Klingelnberg; face hobbing only).
     Sigma : float
         Shaft angle Σ [rad], 0 < Σ < π, with cos Σ > −z1/z2 (gear pitch angle below 90°).
     a : float
-        Hypoid offset a [mm], 0 ≤ a < d_e2/2; must be 0 for Method 0. Only the offset that
-        makes the pinion spiral angle larger than the gear's (the usual hypoid) is modelled.
+        Hypoid offset a [mm], 0 ≤ a < d/2 (d = d_e2, or d_m2 for Method 2); must be 0 for
+        Method 0. Only the offset that makes the pinion spiral angle larger than the gear's
+        (the usual hypoid) is modelled.
     z1, z2 : int
         Numbers of teeth of pinion and gear [-], 5 ≤ z1 ≤ z2 ≤ 500.
     de2 : float
-        Outer pitch diameter of the gear d_e2 [mm], > 0.
+        Outer pitch diameter of the gear d_e2 [mm], > 0: required for Methods 0, 1 and 3,
+        left out (``None``) for Method 2.
+    dm2 : float
+        Mean pitch diameter of the gear d_m2 [mm], > 0: required for Method 2, left out
+        (``None``) otherwise.
     b2 : float
-        Face width of the gear b_2 [mm], 0 < b2 < d_e2/2 (checked against R_e2 later).
+        Face width of the gear b_2 [mm], 0 < b2 < d/2 (checked against R_e2 later).
     beta_m : float
-        Mean spiral angle [rad], 0 ≤ β ≤ 70°: the gear's β_m2 (= β_m1) for Method 0, the
-        desired pinion β_m1 for Method 1.
+        Mean spiral angle [rad], 0 ≤ β ≤ 70°: the gear's β_m2 for Methods 0 (where
+        β_m1 = β_m2), 2 and 3; the desired pinion β_m1 for Method 1.
     rc0 : float
-        Nominal cutter radius r_c0 [mm], 0 < r_c0 ≤ 10 d_e2.
+        Nominal cutter radius r_c0 [mm], 0 < r_c0 ≤ 10 d: for face milling the radius of the
+        tooth trace in the pitch plane, for face hobbing the distance from the cutter centre
+        to the blade at the mean point.
+    z0 : int
+        Number of blade groups of the cutter z0 [-]: 0 (default) for face milling, ≥ 1 for
+        face hobbing (required by Methods 2 and 3).
     alpha_dD, alpha_dC : float
         Design pressure angles of the drive and coast flanks α_dD, α_dC [rad], (0°, 45°).
     f_alim : float
         Influence factor of the limit pressure angle f_αlim [-], [0, 1].
+    input_data_type : str
+        How tooth depth and thickness are given, one of :data:`INPUT_DATA_TYPES`: ``"II"``
+        (default; ``c_ham``, ``k_d``, ``k_c``, ``k_t``) or ``"I"`` (``x_hm1``, ``k_hap``,
+        ``k_hfp``, ``x_smn``). The fields of the type chosen are required, the other type's
+        must be left out (:data:`DEPTH_FIELDS`).
     c_ham : float
-        Mean addendum factor of the gear c_ham [-], [0, 0.5].
+        Type II: mean addendum factor of the gear c_ham [-], [0, 0.5].
     k_d : float
-        Depth factor k_d [-], (0, 4]: mean working depth h_mw = k_d m_mn.
+        Type II: depth factor k_d [-], (0, 4]: mean working depth h_mw = k_d m_mn.
     k_c : float
-        Clearance factor k_c [-], [0, 0.5]: clearance c = k_c h_mw.
+        Type II: clearance factor k_c [-], [0, 0.5]: clearance c = k_c h_mw.
     k_t : float
-        Thickness factor k_t [-], [−0.5, 0.5].
+        Type II: thickness factor k_t [-], [−0.5, 0.5].
+    k_hap : float
+        Type I: basic crown gear addendum factor k_hap [-], (0, 2]: h_mw = 2 k_hap m_mn
+        (k_hap = k_d/2).
+    x_hm1 : float
+        Type I: profile shift coefficient of the pinion x_hm1 [-], [0, k_hap]:
+        h_am1 = (k_hap + x_hm1) m_mn, h_am2 = (k_hap − x_hm1) m_mn (x_hm1 = k_d (0.5 − c_ham)).
+    k_hfp : float
+        Type I: basic crown gear dedendum factor k_hfp [-], [k_hap, 2 k_hap]: clearance
+        c = (k_hfp − k_hap) m_mn (k_hfp = k_d (k_c + 0.5)).
+    x_smn : float
+        Type I: thickness modification coefficient x_smn [-], [−0.25, 0.25] (x_smn = k_t/2).
     backlash : str
         How the backlash is given, one of :data:`BACKLASH_KINDS`: ``"j_en"`` outer normal
         backlash (measured perpendicular to the flanks), ``"j_et2"`` outer transverse
@@ -120,15 +190,19 @@ class BevelGearDesign:
     backlash_value : float
         The backlash [mm], [0, 2].
     theta_a2, theta_f2 : float
-        Addendum and dedendum angles of the gear θ_a2, θ_f2 [rad], [0°, 20°] (data type II
-        gives them directly; the pinion angles follow from the gear's).
+        Addendum and dedendum angles of the gear θ_a2, θ_f2 [rad], [0°, 20°] (the pinion
+        angles follow from the gear's); both 0 for uniform depth (ISO 23509 Annex C), the
+        usual taper of face-hobbed teeth.
     hand : str
         Hand of spiral of the pinion, ``"left"`` or ``"right"`` (does not change the blank).
 
     Notes
     -----
-    Source: ISO 23509:2016 cl. 5.1 (initial data) and cl. 6.1 (data type II); field names
-    are the standard's symbols.
+    Source: ISO 23509:2016 cl. 5.1 (initial data) and cl. 6.1 (input data types I and II);
+    field names are the standard's symbols. The ranges of the type I factors are those of
+    the type II factors carried over by the standard's conversion (k_hap = k_d/2,
+    x_hm1 = k_d (0.5 − c_ham), k_hfp = k_d (k_c + 0.5), x_smn = k_t/2), so that both types
+    describe the same set of designs.
     """
 
     method: int
@@ -136,17 +210,24 @@ class BevelGearDesign:
     a: float
     z1: int
     z2: int
-    de2: float
+    de2: float | None = None
+    dm2: float | None = None
     b2: float
     beta_m: float
     rc0: float
+    z0: int = 0
     alpha_dD: float
     alpha_dC: float
     f_alim: float
-    c_ham: float
-    k_d: float
-    k_c: float
-    k_t: float
+    input_data_type: str = "II"
+    c_ham: float | None = None
+    k_d: float | None = None
+    k_c: float | None = None
+    k_t: float | None = None
+    x_hm1: float | None = None
+    k_hap: float | None = None
+    k_hfp: float | None = None
+    x_smn: float | None = None
     backlash: str
     backlash_value: float
     theta_a2: float
@@ -159,9 +240,16 @@ class BevelGearDesign:
         if method not in PITCH_CONE_METHODS:
             raise ModelUnavailableError(
                 f"method = {method} is not available: implemented ISO 23509 pitch-cone methods "
-                f"are {sorted(PITCH_CONE_METHODS)} (2 Oerlikon and 3 Klingelnberg are not)"
+                f"are {sorted(PITCH_CONE_METHODS)}"
             )
         set_(self, "method", method)
+        z0 = integer("z0", self.z0, 0, None, allow_float=True)
+        set_(self, "z0", z0)
+        if z0 == 0 and method in (2, 3):
+            raise ModelUnavailableError(
+                f"method = {method} is implemented for face hobbing only (z0 ≥ 1 blade groups); "
+                f"for face milling (z0 = 0) use method 0 or 1"
+            )
         z1 = integer("z1", self.z1, 5, 500, allow_float=True)
         z2 = integer("z2", self.z2, z1, 500, allow_float=True)
         set_(self, "z1", z1)
@@ -174,27 +262,31 @@ class BevelGearDesign:
                 f"90°; internal bevel gears are not modelled) [deg], got {sigma / _DEG:g}"
             )
         set_(self, "Sigma", sigma)
-        de2 = real("de2", self.de2, unit="mm", low=0.0, high=1e5, low_open=True)
-        set_(self, "de2", de2)
-        set_(self, "b2", real("b2", self.b2, unit="mm", low=0.0, high=de2 / 2,
+        given, absent = ("dm2", "de2") if method == 2 else ("de2", "dm2")
+        if getattr(self, absent) is not None:
+            raise InputError(
+                f"{absent}: must be left out for method {method}, which takes {given} [mm], got "
+                f"{getattr(self, absent)!r}"
+            )
+        d = _required(given, getattr(self, given), f"for method {method}")
+        d = real(given, d, unit="mm", low=0.0, high=1e5, low_open=True)
+        set_(self, given, d)
+        set_(self, "b2", real("b2", self.b2, unit="mm", low=0.0, high=d / 2,
                               low_open=True, high_open=True))
-        a = real("a", self.a, unit="mm", low=0.0, high=de2 / 2, high_open=True)
+        a = real("a", self.a, unit="mm", low=0.0, high=d / 2, high_open=True)
         if method == 0 and a != 0.0:
-            raise InputError(f"a: must be 0 for method 0 (use method 1 for hypoid gears) [mm], "
-                             f"got {a:g}")
+            raise InputError(f"a: must be 0 for method 0 (use method 1, 2 or 3 for hypoid gears) "
+                             f"[mm], got {a:g}")
         set_(self, "a", a)
         set_(self, "beta_m", real("beta_m", self.beta_m, unit="deg", low=0.0,
                                   high=70 * _DEG, scale=_DEG))
-        set_(self, "rc0", real("rc0", self.rc0, unit="mm", low=0.0, high=10 * de2,
+        set_(self, "rc0", real("rc0", self.rc0, unit="mm", low=0.0, high=10 * d,
                                low_open=True))
         for name in ("alpha_dD", "alpha_dC"):
             set_(self, name, real(name, getattr(self, name), unit="deg", low=0.0,
                                   high=45 * _DEG, low_open=True, high_open=True, scale=_DEG))
         set_(self, "f_alim", real("f_alim", self.f_alim, unit="1", low=0.0, high=1.0))
-        set_(self, "c_ham", real("c_ham", self.c_ham, unit="1", low=0.0, high=0.5))
-        set_(self, "k_d", real("k_d", self.k_d, unit="1", low=0.0, high=4.0, low_open=True))
-        set_(self, "k_c", real("k_c", self.k_c, unit="1", low=0.0, high=0.5))
-        set_(self, "k_t", real("k_t", self.k_t, unit="1", low=-0.5, high=0.5))
+        self._check_depth_data()
         one_of("backlash", self.backlash, BACKLASH_KINDS)
         set_(self, "backlash_value", real("backlash_value", self.backlash_value, unit="mm",
                                           low=0.0, high=2.0))
@@ -203,10 +295,47 @@ class BevelGearDesign:
                                   high=20 * _DEG, scale=_DEG))
         one_of("hand", self.hand, HANDS)
 
+    def _check_depth_data(self) -> None:
+        """Validate the tooth depth/thickness fields of the input data type chosen."""
+        set_ = object.__setattr__
+        kind = one_of("input_data_type", self.input_data_type, INPUT_DATA_TYPES)
+        other = "I" if kind == "II" else "II"
+        for name in DEPTH_FIELDS[other]:
+            if getattr(self, name) is not None:
+                raise InputError(
+                    f"{name}: must be left out for input_data_type {kind!r} (give "
+                    f"{', '.join(DEPTH_FIELDS[kind])}) [1], got {getattr(self, name)!r}"
+                )
+        where = f"for input_data_type {kind!r}"
+        if kind == "II":
+            set_(self, "c_ham", real("c_ham", _required("c_ham", self.c_ham, where), unit="1",
+                                     low=0.0, high=0.5))
+            set_(self, "k_d", real("k_d", _required("k_d", self.k_d, where), unit="1",
+                                   low=0.0, high=4.0, low_open=True))
+            set_(self, "k_c", real("k_c", _required("k_c", self.k_c, where), unit="1",
+                                   low=0.0, high=0.5))
+            set_(self, "k_t", real("k_t", _required("k_t", self.k_t, where), unit="1",
+                                   low=-0.5, high=0.5))
+            return
+        k_hap = real("k_hap", _required("k_hap", self.k_hap, where), unit="1", low=0.0,
+                     high=2.0, low_open=True)
+        set_(self, "k_hap", k_hap)
+        set_(self, "x_hm1", real("x_hm1", _required("x_hm1", self.x_hm1, where), unit="1",
+                                 low=0.0, high=k_hap))
+        set_(self, "k_hfp", real("k_hfp", _required("k_hfp", self.k_hfp, where), unit="1",
+                                 low=k_hap, high=2.0 * k_hap))
+        set_(self, "x_smn", real("x_smn", _required("x_smn", self.x_smn, where), unit="1",
+                                 low=-0.25, high=0.25))
+
     @property
     def u(self) -> float:
         """Gear ratio u = z2/z1 [-] (ISO 23509 cl. 5)."""
         return self.z2 / self.z1
+
+    @property
+    def process(self) -> str:
+        """``"face milling"`` (z0 = 0) or ``"face hobbing"`` (z0 ≥ 1)."""
+        return "face hobbing" if self.z0 >= 1 else "face milling"
 
     @classmethod
     def from_degrees(cls, **values: Any) -> BevelGearDesign:
@@ -226,6 +355,8 @@ class BevelGearDesign:
         ------
         InputError
             On an unknown or missing field or a value out of range.
+        ModelUnavailableError
+            For a method that is not implemented (or not for the process given by z0).
         """
         names = {f.name for f in fields(cls)}
         unknown = sorted(set(values) - names)
@@ -240,6 +371,13 @@ class BevelGearDesign:
             raise InputError(f"incomplete design data: {exc}") from None
 
 
+def _required(name: str, value: Any, where: str) -> Any:
+    """``value`` unless it is None (a required field left out)."""
+    if value is None:
+        raise InputError(f"{name}: must be given {where}, got None")
+    return value
+
+
 _ANGLE_INPUTS = frozenset({"Sigma", "beta_m", "alpha_dD", "alpha_dC", "theta_a2", "theta_f2"})
 
 
@@ -251,7 +389,7 @@ class PitchCone:
     Attributes
     ----------
     method : int
-        Method used (0 or 1).
+        Method used (0 to 3).
     u : float
         Gear ratio u = z2/z1 [-].
     delta1, delta2 : float
@@ -281,15 +419,24 @@ class PitchCone:
     alpha_lim : float
         Limit pressure angle α_lim [rad] (0 for Method 0).
     rho_lim : float
-        Limit radius of lengthwise curvature ρ_lim [mm] (r_c0 for Method 1 by construction;
-        ``inf`` for Method 0, where it is undefined).
+        Limit radius of lengthwise curvature ρ_lim [mm] (by construction r_c0 for Method 1
+        face milling, ρ_mβ for Method 1 face hobbing and Method 3; ``inf`` for Method 0 and
+        at zero offset, where it is undefined).
     alpha_nD, alpha_nC : float
         Generated normal pressure angles of drive and coast flank [rad],
         α_nD = α_dD + f_αlim α_lim, α_nC = α_dC − f_αlim α_lim.
     c_be2 : float
-        Face width factor c_be2 = (R_e2 − R_m2)/b2 [-] (0.5 in Method 0).
+        Face width factor c_be2 = (R_e2 − R_m2)/b2 [-] (0.5 in Methods 0, 2 and 3).
     Re2 : float
-        Outer cone distance of the gear R_e2 = d_e2 / (2 sin δ2) [mm].
+        Outer cone distance of the gear R_e2 = d_e2 / (2 sin δ2) [mm] (R_m2 + b2/2 in
+        Method 2).
+    nu, lambda_, rho_P0, rho_b, eta1, rho_mbeta : float
+        The gear's tooth trace at P (:class:`FaceHobbingTrace`, on the gear's crown gear of
+        z_p = z2/sin δ2 teeth): lead angle ν [rad], first auxiliary angle λ [rad] (ISO
+        symbol λ; ``lambda`` is a Python keyword), crown-gear-centre to cutter-centre
+        distance ρ_P0 [mm], base radius ρ_b [mm], second auxiliary angle η1 [rad],
+        lengthwise radius of curvature ρ_mβ [mm]. For face milling (z0 = 0) their limits:
+        ν = 0, ρ_b = ρ_P0, ρ_mβ = r_c0.
     """
 
     method: int
@@ -315,9 +462,125 @@ class PitchCone:
     alpha_nC: float
     c_be2: float
     Re2: float
+    nu: float
+    lambda_: float
+    rho_P0: float
+    rho_b: float
+    eta1: float
+    rho_mbeta: float
+
+
+@dataclass(frozen=True)
+class FaceHobbingTrace:
+    """The lengthwise tooth curve of a face-hobbed member at a point (ISO 23509 symbols).
+
+    Attributes
+    ----------
+    nu : float
+        Lead angle of the cutter ν [rad]: sin ν = z0 m_n / (2 r_c0).
+    lambda_ : float
+        First auxiliary angle λ = 90° − β + ν [rad]: the angle at P between the directions
+        to the crown gear centre and to the cutter centre.
+    rho_P0 : float
+        Distance from the crown gear centre to the cutter centre ρ_P0 [mm].
+    rho_b : float
+        Base radius ρ_b = ρ_P0 / (1 + z0/z_p) [mm]: distance from the crown gear centre to
+        the pitch point of cutter and crown gear, through which the trace normal at P runs.
+    eta1 : float
+        Second auxiliary angle η1 [rad]: angle between the tooth trace at P and the line from
+        the crown gear centre through the cutter centre (cos η1 = R cos β / ρ_b).
+    rho_mbeta : float
+        Lengthwise radius of curvature of the tooth trace at P ρ_mβ [mm].
+    """
+
+    nu: float
+    lambda_: float
+    rho_P0: float
+    rho_b: float
+    eta1: float
+    rho_mbeta: float
 
 
 # --------------------------------------------------------------------------- formulas
+def face_hobbing_trace(
+    R: float, beta: float, rc0: float, z0: float, z_p: float
+) -> FaceHobbingTrace:
+    """Tooth trace of a face-hobbed (or, for z0 = 0, face-milled) member at one point.
+
+    Parameters
+    ----------
+    R : float
+        Cone distance of the point (distance from the crown gear centre) [mm], > 0.
+    beta : float
+        Spiral angle at the point [rad], in (−90°, 90°).
+    rc0 : float
+        Nominal cutter radius r_c0 [mm], > 0: distance from the cutter centre to the blade
+        as it passes the point.
+    z0 : float
+        Number of blade groups [-], ≥ 0 (real, so that the face-milling limit z0 → 0 can be
+        approached; a design holds an integer). 0 gives the face-milling circle.
+    z_p : float
+        Number of teeth of the crown gear [-], > 0: z/sin δ for a member of pitch angle δ.
+
+    Returns
+    -------
+    FaceHobbingTrace
+        ν, λ, ρ_P0, ρ_b, η1, ρ_mβ (angles [rad], lengths [mm]).
+
+    Raises
+    ------
+    InputError
+        For an input out of range, or a cutter too small for the lead angle
+        (z0 m_n ≥ 2 r_c0).
+
+    Notes
+    -----
+    In the plane of the crown gear (centre O), the cutter (centre C) and the crown gear turn
+    like two external gears of z0 and z_p teeth: relative to the crown gear the cutter
+    rolls on the base circle ρ_b about O, and a blade at r_c0 from C traces an extended
+    epicycloid. With the normal module m_n = 2 R cos β / z_p at the point P:
+
+        sin ν = z0 m_n / (2 r_c0),  λ = 90° − β + ν,
+        ρ_P0² = R² + r_c0² − 2 R r_c0 cos λ,  ρ_b = ρ_P0 / (1 + z0/z_p),
+        η1 = atan2(r_c0 cos ν − R sin β, r_c0 sin ν + R cos β),
+        ρ_mβ = R cos β [tan β + tan η1 / (1 + tan ν (tan β + tan η1))].
+
+    The trace normal at P passes through the pitch point I (|OI| = ρ_b on OC), not through
+    C: CP is turned by ν from it. η1 is written in the signed form (equal to
+    arccos(R cos β / ρ_b) where that is positive), so that for z0 = 0 the formulas give the
+    circle of radius r_c0 exactly: ν = 0, ρ_b = ρ_P0, ρ_mβ = r_c0.
+
+    Source: ISO 23509:2016 cl. 5 (Method 1, face hobbing: lead angle, first and second
+    auxiliary angle, lengthwise mean radius of curvature; Method 2: ν, λ, η1) and cl. 6
+    (ρ_P0, ρ_b of the spiral angles at the face-width ends). Rebuilt from the rolling
+    geometry above and checked in the tests against a time-stepped epicycloid.
+    """
+    R = positive("R", R, "mm")
+    beta = real("beta", beta, unit="rad", low=-0.5 * math.pi, high=0.5 * math.pi,
+                low_open=True, high_open=True)
+    rc0 = positive("rc0", rc0, "mm")
+    z0 = real("z0", z0, unit="1", low=0.0)
+    z_p = positive("z_p", z_p, "1")
+    c_b, s_b = math.cos(beta), math.sin(beta)
+    s_nu = R * z0 * c_b / (rc0 * z_p)
+    if not s_nu < 1.0:
+        raise InputError(
+            f"rc0: must be > z0 m_n / 2 = {R * z0 * c_b / z_p:.4g} (lead angle ν below 90°, "
+            f"z0 = {z0:g}) [mm], got {rc0:g}"
+        )
+    nu = math.asin(s_nu)
+    lam = 0.5 * math.pi - beta + nu
+    rho_p0 = math.sqrt(R * R + rc0 * rc0 - 2.0 * R * rc0 * math.cos(lam))
+    rho_b = rho_p0 / (1.0 + z0 / z_p)
+    c_nu = math.cos(nu)
+    eta1 = math.atan2(rc0 * c_nu - R * s_b, rc0 * s_nu + R * c_b)
+    t_b, t_e, t_nu = s_b / c_b, math.tan(eta1), s_nu / c_nu
+    den = 1.0 + t_nu * (t_b + t_e)
+    rho = math.inf if den == 0.0 else R * c_b * (t_b + t_e / den)
+    return FaceHobbingTrace(nu=nu, lambda_=lam, rho_P0=rho_p0, rho_b=rho_b, eta1=eta1,
+                            rho_mbeta=rho)
+
+
 def hypoid_pitch_angles(zeta_m: float, eta: float, Sigma: float) -> tuple[float, float, float]:
     """Pitch angles and pitch-plane offset angle of two cones tangent at P.
 
@@ -478,16 +741,30 @@ def limit_radius(
 
 
 # --------------------------------------------------------------------------- methods
+def _bevel_angles(design: BevelGearDesign) -> tuple[float, float]:
+    """Pitch angles δ1, δ2 of a bevel pair without offset (Method 0)."""
+    sigma = design.Sigma
+    delta1 = math.atan2(math.sin(sigma), math.cos(sigma) + design.u)
+    return delta1, sigma - delta1
+
+
 def _method_0(design: BevelGearDesign) -> PitchCone:
     """ISO 23509:2016 cl. 5, Method 0: spiral bevel gears without offset."""
-    u, sigma = design.u, design.Sigma
-    delta1 = math.atan2(math.sin(sigma), math.cos(sigma) + u)
-    delta2 = sigma - delta1
+    delta1, delta2 = _bevel_angles(design)
     Re2 = design.de2 / (2.0 * math.sin(delta2))
     _check_face_width(design, Re2)
     Rm = Re2 - design.b2 / 2.0
     beta = design.beta_m
     return _bevel_result(design, delta1, delta2, Rm, beta, Re2)
+
+
+def _trace(design: BevelGearDesign, Rm2: float, beta2: float, delta2: float) -> FaceHobbingTrace:
+    """The gear's tooth trace at P (its crown gear has z2/sin δ2 teeth)."""
+    return face_hobbing_trace(Rm2, beta2, design.rc0, design.z0, design.z2 / math.sin(delta2))
+
+
+def _trace_fields(trace: FaceHobbingTrace) -> dict[str, float]:
+    return {f.name: getattr(trace, f.name) for f in fields(trace)}
 
 
 def _bevel_result(
@@ -501,6 +778,7 @@ def _bevel_result(
         m_mn=dm2 * math.cos(beta) / design.z2, alpha_lim=0.0, rho_lim=math.inf,
         alpha_nD=design.alpha_dD, alpha_nC=design.alpha_dC,
         c_be2=(Re2 - Rm) / design.b2, Re2=Re2,
+        **_trace_fields(_trace(design, Rm, beta, delta2)),
     )
 
 
@@ -512,13 +790,21 @@ def _check_face_width(design: BevelGearDesign, Re2: float) -> None:
         )
 
 
+def _check_offset(design: BevelGearDesign, r2: float) -> None:
+    if design.a >= r2:
+        raise InputError(f"a: must be in [0, r_m2) = [0, {r2:.4g}) (offset below the gear "
+                         f"mean pitch radius) [mm], got {design.a:g}")
+
+
 def _hypoid_state(
-    x: float, a: float, r2: float, u: float, beta1: float, sigma: float
+    x: float, a: float, r2: float, u: float, beta: float, sigma: float, *,
+    gear_beta: bool = False,
 ) -> dict[str, float] | None:
     """Pitch-cone state for the shape parameter x = η/(η + ζ_m), or None if infeasible.
 
     Solves a = r2 sin ζ_m + r1 sin η together with the ratio condition
-    u r1 cos β_m1 = r2 cos β_m2, β_m2 = β_m1 − ζ_mp, for the scale s = η + ζ_m.
+    u r1 cos β_m1 = r2 cos β_m2, β_m2 = β_m1 − ζ_mp, for the scale s = η + ζ_m; ``beta`` is
+    the pinion's β_m1 (Method 1) or, with ``gear_beta``, the gear's β_m2 (Methods 2, 3).
     """
     s_max = math.asin(a / r2) / (1.0 - x)
     s_max = min(s_max, 0.5 * math.pi / x)
@@ -527,7 +813,9 @@ def _hypoid_state(
         eta, zeta = x * s, (1.0 - x) * s
         _, _, zeta_mp = hypoid_pitch_angles(zeta, eta, sigma)
         r1 = (a - r2 * math.sin(zeta)) / math.sin(eta)
-        return u * r1 * math.cos(beta1) - r2 * math.cos(beta1 - zeta_mp)
+        if gear_beta:
+            return u * r1 * math.cos(beta + zeta_mp) - r2 * math.cos(beta)
+        return u * r1 * math.cos(beta) - r2 * math.cos(beta - zeta_mp)
 
     lo, hi = s_max * 1e-9, s_max * (1.0 - 1e-12)
     f_lo, f_hi = residual(lo), residual(hi)
@@ -539,64 +827,138 @@ def _hypoid_state(
     if not (0.0 < delta1 < 0.5 * math.pi and 0.0 < delta2 < 0.5 * math.pi):
         return None
     r1 = (a - r2 * math.sin(zeta)) / math.sin(eta)
+    beta1, beta2 = (beta + zeta_mp, beta) if gear_beta else (beta, beta - zeta_mp)
     return {
         "eta": eta, "zeta_m": zeta, "zeta_mp": zeta_mp, "delta1": delta1, "delta2": delta2,
         "r1": r1, "Rm1": r1 / math.sin(delta1), "Rm2": r2 / math.sin(delta2),
-        "beta_m1": beta1, "beta_m2": beta1 - zeta_mp,
+        "beta_m1": beta1, "beta_m2": beta2,
     }
 
 
-def _rho_residual(state: dict[str, float], rc0: float) -> float:
-    """r_c0·den − num of ρ_lim: zero where ρ_lim = r_c0, continuous through den = 0."""
+def _lengthwise_radius(design: BevelGearDesign, state: dict[str, float]) -> float:
+    """The radius the limit radius must equal: r_c0 (face milling) or ρ_mβ (face hobbing)."""
+    if design.z0 == 0:
+        return design.rc0
+    return _trace(design, state["Rm2"], state["beta_m2"], state["delta2"]).rho_mbeta
+
+
+def _rho_residual(state: dict[str, float], rho: float) -> float:
+    """ρ·den − num of ρ_lim: zero where ρ_lim = ρ, continuous through den = 0."""
     args = (state["delta1"], state["delta2"], state["Rm1"], state["Rm2"],
             state["beta_m1"], state["beta_m2"])
     alpha_lim = limit_pressure_angle(*args, state["zeta_mp"])
     num, den = _limit_radius_terms(*args, alpha_lim)
-    return rc0 * den - num
+    return rho * den - num
+
+
+def _apex_residual(design: BevelGearDesign, state: dict[str, float]) -> float:
+    """R_m1 sin(φ6 + ζ_mp) − R_m2 sin φ6: zero where the pinion apex lies on the line from
+    the gear apex through the cutter centre (Method 2), continuous where φ6 + ζ_mp → 180°."""
+    Rm2, trace = state["Rm2"], _trace(design, state["Rm2"], state["beta_m2"], state["delta2"])
+    rc0, lam = design.rc0, trace.lambda_
+    phi6 = math.atan2(rc0 * math.sin(lam), Rm2 - rc0 * math.cos(lam))
+    return state["Rm1"] * math.sin(phi6 + state["zeta_mp"]) - Rm2 * math.sin(phi6)
+
+
+#: number of trial shapes η/(η + ζ_m) scanned for the closing condition of Methods 1-3
+_N_SHAPES = 240
+
+
+def _solve_shape(
+    closure: Callable[[dict[str, float]], float], a: float, r2: float, u: float, beta: float,
+    sigma: float, *, gear_beta: bool, rising: bool,
+    near: float | None = None,
+) -> tuple[float, dict[str, float]] | None:
+    """Shape x = η/(η + ζ_m) where ``closure`` of the hypoid state changes sign, and the state.
+
+    Scans the shapes for the first crossing (− → + if ``rising``, else + → −) and refines it
+    by Brent's method; with ``near`` a narrow bracket around that shape is tried first.
+    None if there is no crossing.
+    """
+    def g(x: float) -> float:
+        state = _hypoid_state(x, a, r2, u, beta, sigma, gear_beta=gear_beta)
+        if state is None:
+            return math.nan
+        try:
+            return closure(state)
+        except InputError:  # e.g. a lead angle beyond 90° for this trial shape
+            return math.nan
+
+    def crosses(lo: float, hi: float) -> bool:
+        return lo < 0.0 < hi if rising else lo > 0.0 > hi
+
+    bracket = None
+    if near is not None:
+        lo, hi = max(near - 1e-3, 1e-3), min(near + 1e-3, 1.0 - 1e-3)
+        if crosses(g(lo), g(hi)):
+            bracket = (lo, hi)
+    if bracket is None:
+        xs = [1e-3 + (1.0 - 2e-3) * i / (_N_SHAPES - 1) for i in range(_N_SHAPES)]
+        gs = [g(x) for x in xs]
+        bracket = next(
+            ((xs[i], xs[i + 1]) for i in range(_N_SHAPES - 1) if crosses(gs[i], gs[i + 1])),
+            None,
+        )
+        if bracket is None:
+            return None
+    x = brentq(g, *bracket, xtol=1e-15, rtol=1e-15, maxiter=200)
+    state = _hypoid_state(x, a, r2, u, beta, sigma, gear_beta=gear_beta)
+    if state is None:  # pragma: no cover - g(x) was finite at both ends of the bracket
+        raise InputError("the hypoid pitch cone became infeasible at the solution")
+    return x, state
+
+
+def _hypoid_result(design: BevelGearDesign, st: dict[str, float], r2: float, Re2: float
+                   ) -> PitchCone:
+    """PitchCone of a solved hypoid state (Methods 1-3)."""
+    sigma = design.Sigma
+    delta1, delta2, Rm1, Rm2 = st["delta1"], st["delta2"], st["Rm1"], st["Rm2"]
+    beta1, beta2, zeta_mp = st["beta_m1"], st["beta_m2"], st["zeta_mp"]
+    alpha_lim = limit_pressure_angle(delta1, delta2, Rm1, Rm2, beta1, beta2, zeta_mp)
+    rho = limit_radius(delta1, delta2, Rm1, Rm2, beta1, beta2, alpha_lim)
+    # pitch apexes: P = A1 + y1 e1 + r1 p̂ = (r2 sin ζ, r2 cos ζ, z_P) (module frame)
+    r1, eta, zeta = st["r1"], st["eta"], st["zeta_m"]
+    y1 = (r2 * math.cos(zeta) + r1 * math.cos(eta) * math.cos(sigma)) / math.sin(sigma)
+    z_p = y1 * math.cos(sigma) + r1 * math.cos(eta) * math.sin(sigma)
+    f = design.f_alim
+    return PitchCone(
+        method=design.method, u=design.u, delta1=delta1, delta2=delta2, Rm1=Rm1, Rm2=Rm2,
+        dm1=2.0 * r1, dm2=2.0 * r2, beta_m1=beta1, beta_m2=beta2,
+        zeta_m=zeta, eta=eta, zeta_mp=zeta_mp, a_p=Rm2 * math.sin(zeta_mp),
+        t_z1=Rm1 * math.cos(delta1) - y1, t_z2=Rm2 * math.cos(delta2) - z_p,
+        m_mn=2.0 * r2 * math.cos(beta2) / design.z2, alpha_lim=alpha_lim, rho_lim=rho,
+        alpha_nD=design.alpha_dD + f * alpha_lim, alpha_nC=design.alpha_dC - f * alpha_lim,
+        c_be2=(Re2 - Rm2) / design.b2, Re2=Re2,
+        **_trace_fields(_trace(design, Rm2, beta2, delta2)),
+    )
 
 
 def _method_1(design: BevelGearDesign) -> PitchCone:
     """ISO 23509:2016 cl. 5, Method 1 (Gleason) for hypoid gears; see :func:`pitch_cone`."""
     u, sigma, a = design.u, design.Sigma, design.a
-    beta1, rc0 = design.beta_m, design.rc0
+    beta1 = design.beta_m
     delta_int2 = math.atan2(u * math.sin(sigma), _DELTA_INT_FACTOR * (1.0 + u * math.cos(sigma)))
     r2 = 0.5 * (design.de2 - design.b2 * math.sin(delta_int2))
-    if a >= r2:
-        raise InputError(f"a: must be in [0, r_mpt2) = [0, {r2:.4g}) (offset below the gear "
-                         f"mean pitch radius) [mm], got {a:g}")
+    _check_offset(design, r2)
     if a == 0.0:
         # limit a → 0 of the Gleason conditions: ρ_lim stays finite only if the two pitch
         # apexes meet, i.e. the bevel pitch cone, with Method 1's calculation point r_mpt2
-        delta1 = math.atan2(math.sin(sigma), math.cos(sigma) + u)
-        delta2 = sigma - delta1
+        delta1, delta2 = _bevel_angles(design)
         Re2 = design.de2 / (2.0 * math.sin(delta2))
         _check_face_width(design, Re2)
         return _bevel_result(design, delta1, delta2, r2 / math.sin(delta2), beta1, Re2)
 
-    def g(x: float) -> float:
-        state = _hypoid_state(x, a, r2, u, beta1, sigma)
-        return math.nan if state is None else _rho_residual(state, rc0)
-
-    # scan the shape parameter for the first crossing g: − → + (ρ_lim falling through r_c0
-    # on its positive branch), then refine
-    n = 240
-    xs = [1e-3 + (1.0 - 2e-3) * i / (n - 1) for i in range(n)]
-    gs = [g(x) for x in xs]
-    bracket = next(
-        ((xs[i], xs[i + 1]) for i in range(n - 1) if gs[i] < 0.0 < gs[i + 1]), None
-    )
-    if bracket is None:
-        finite = [v for v in gs if math.isfinite(v)]
+    # the first crossing − → + of ρ·den − num over the shapes (ρ_lim falling through the
+    # lengthwise radius on its positive branch)
+    found = _solve_shape(lambda st: _rho_residual(st, _lengthwise_radius(design, st)),
+                         a, r2, u, beta1, sigma, gear_beta=False, rising=True)
+    if found is None:
         raise InputError(
             "rc0: must be large enough for a Method 1 pitch cone whose limit radius equals "
-            f"the cutter radius at a = {a:g} mm, beta_m = {beta1 / _DEG:g} deg (or use a "
-            f"smaller offset) [mm], got {rc0:g} ({len(finite)} of {n} trial shapes feasible)"
+            f"the lengthwise radius of the tooth at a = {a:g} mm, beta_m = {beta1 / _DEG:g} deg "
+            f"(or use a smaller offset) [mm], got {design.rc0:g}"
         )
-    x = brentq(g, *bracket, xtol=1e-15, rtol=1e-15, maxiter=200)
-    st = _hypoid_state(x, a, r2, u, beta1, sigma)
-    if st is None:  # pragma: no cover - g(x) was finite at both ends of the bracket
-        raise InputError("Method 1 pitch cone became infeasible at the solution")
-    delta1, delta2, Rm1, Rm2 = st["delta1"], st["delta2"], st["Rm1"], st["Rm2"]
+    st = found[1]
     beta2, zeta_mp = st["beta_m2"], st["zeta_mp"]
     if beta2 <= 0.0:
         raise InputError(
@@ -604,30 +966,86 @@ def _method_1(design: BevelGearDesign) -> PitchCone:
             f"angle would be {beta2 / _DEG:.4g} deg, of the wrong hand) [deg], got "
             f"{beta1 / _DEG:g}"
         )
-    alpha_lim = limit_pressure_angle(delta1, delta2, Rm1, Rm2, beta1, beta2, zeta_mp)
-    rho = limit_radius(delta1, delta2, Rm1, Rm2, beta1, beta2, alpha_lim)
-    Re2 = design.de2 / (2.0 * math.sin(delta2))
+    Re2 = design.de2 / (2.0 * math.sin(st["delta2"]))
     _check_face_width(design, Re2)
-    # pitch apexes: P = A1 + y1 e1 + r1 p̂ = (r2 sin ζ, r2 cos ζ, z_P) (module frame)
-    r1, eta, zeta = st["r1"], st["eta"], st["zeta_m"]
-    y1 = (r2 * math.cos(zeta) + r1 * math.cos(eta) * math.cos(sigma)) / math.sin(sigma)
-    z_p = y1 * math.cos(sigma) + r1 * math.cos(eta) * math.sin(sigma)
-    f = design.f_alim
-    return PitchCone(
-        method=1, u=u, delta1=delta1, delta2=delta2, Rm1=Rm1, Rm2=Rm2,
-        dm1=2.0 * r1, dm2=2.0 * r2, beta_m1=beta1, beta_m2=beta2,
-        zeta_m=zeta, eta=eta, zeta_mp=zeta_mp, a_p=Rm2 * math.sin(zeta_mp),
-        t_z1=Rm1 * math.cos(delta1) - y1, t_z2=Rm2 * math.cos(delta2) - z_p,
-        m_mn=2.0 * r2 * math.cos(beta2) / design.z2, alpha_lim=alpha_lim, rho_lim=rho,
-        alpha_nD=design.alpha_dD + f * alpha_lim, alpha_nC=design.alpha_dC - f * alpha_lim,
-        c_be2=(Re2 - Rm2) / design.b2, Re2=Re2,
-    )
+    return _hypoid_result(design, st, r2, Re2)
+
+
+def _method_2(design: BevelGearDesign) -> PitchCone:
+    """ISO 23509:2016 cl. 5, Method 2 (Oerlikon), face hobbing; see :func:`pitch_cone`."""
+    u, sigma, a, beta2 = design.u, design.Sigma, design.a, design.beta_m
+    r2 = 0.5 * design.dm2
+    _check_offset(design, r2)
+    if a == 0.0:
+        delta1, delta2 = _bevel_angles(design)
+        Rm = r2 / math.sin(delta2)
+        Re2 = Rm + 0.5 * design.b2
+        return _bevel_result(design, delta1, delta2, Rm, beta2, Re2)
+    # the lead angle depends on d_m2 and β_m2 only: check it before the search
+    _trace(design, r2, beta2, 0.5 * math.pi)
+    # R_m1 sin(φ6 + ζ_mp) − R_m2 sin φ6 falls through zero as the pinion apex crosses the
+    # line gear apex → cutter centre
+    found = _solve_shape(lambda st: _apex_residual(design, st), a, r2, u, beta2, sigma,
+                         gear_beta=True, rising=False)
+    if found is None:
+        raise InputError(
+            "rc0: must allow a Method 2 pitch cone whose pinion apex lies on the line from the "
+            f"gear apex through the cutter centre at a = {a:g} mm, beta_m = "
+            f"{beta2 / _DEG:g} deg, z0 = {design.z0} (or change the offset) [mm], got "
+            f"{design.rc0:g}"
+        )
+    st = found[1]
+    Re2 = st["Rm2"] + 0.5 * design.b2
+    return _hypoid_result(design, st, r2, Re2)
+
+
+#: iterations allowed for the gear mean pitch radius of Method 3 (converges in about 5)
+_MAX_RADIUS_ITERATIONS = 100
+
+
+def _method_3(design: BevelGearDesign) -> PitchCone:
+    """ISO 23509:2016 cl. 5, Method 3 (Klingelnberg), face hobbing; see :func:`pitch_cone`."""
+    u, sigma, a, beta2 = design.u, design.Sigma, design.a, design.beta_m
+    de2, b2 = design.de2, design.b2
+    _, delta2 = _bevel_angles(design)
+    if a == 0.0:
+        return _method_0(design)
+    # the mean point is in the middle of the face width: r_m2 = (d_e2 − b2 sin δ2)/2 depends
+    # on the solution; fixed point on δ2 (a contraction: r_m2 moves by b2 cos δ2 / 2 per
+    # radian of δ2, and δ2 follows r_m2 only through a/r_m2)
+    x_prev: float | None = None
+    for _ in range(_MAX_RADIUS_ITERATIONS):
+        r2 = 0.5 * (de2 - b2 * math.sin(delta2))
+        _check_offset(design, r2)
+        found = _solve_shape(
+            lambda st: _rho_residual(st, _lengthwise_radius(design, st)), a, r2, u, beta2,
+            sigma, gear_beta=True, rising=True, near=x_prev,
+        )
+        if found is None:
+            raise InputError(
+                "rc0: must allow a Method 3 pitch cone whose limit radius equals the "
+                f"lengthwise radius of the tooth at a = {a:g} mm, beta_m = {beta2 / _DEG:g} deg, "
+                f"z0 = {design.z0} (or change the offset) [mm], got {design.rc0:g}"
+            )
+        x_prev, st = found
+        converged = abs(st["delta2"] - delta2) <= 1e-13
+        delta2 = st["delta2"]
+        if converged:
+            break
+    else:  # pragma: no cover - the map is a strong contraction
+        raise InputError("b2: Method 3 found no consistent mean point (iteration on the gear "
+                         f"pitch angle did not converge) [mm], got {b2:g}")
+    Re2 = de2 / (2.0 * math.sin(st["delta2"]))
+    _check_face_width(design, Re2)
+    return _hypoid_result(design, st, r2, Re2)
 
 
 #: ISO 23509 pitch-cone methods by number
 PITCH_CONE_METHODS: Mapping[int, Callable[[BevelGearDesign], PitchCone]] = {
     0: _method_0,
     1: _method_1,
+    2: _method_2,
+    3: _method_3,
 }
 
 
@@ -638,21 +1056,23 @@ def pitch_cone(design: BevelGearDesign) -> PitchCone:
     ----------
     design : BevelGearDesign
         Basic design data; ``design.method`` picks the method from
-        :data:`PITCH_CONE_METHODS`.
+        :data:`PITCH_CONE_METHODS`, ``design.z0`` the process (0 face milling, ≥ 1 face
+        hobbing).
 
     Returns
     -------
     PitchCone
         Pitch angles, mean cone distances and diameters, spiral angles, offset angles,
-        apex positions, mean normal module, limit pressure angle and generated pressure
-        angles (angles in rad, lengths in mm).
+        apex positions, mean normal module, limit pressure angle, generated pressure angles
+        and the gear's tooth trace at P (angles in rad, lengths in mm).
 
     Raises
     ------
     InputError
         If the design has no valid pitch cone (face width beyond the outer cone distance,
-        offset not below the gear mean pitch radius, cutter radius below every attainable
-        limit radius, desired pinion spiral angle not above the offset angle ζ_mp).
+        offset not below the gear mean pitch radius, no pitch cone meeting the method's
+        closing condition for this cutter radius, desired pinion spiral angle not above the
+        offset angle ζ_mp, a face-hobbing cutter too small for its lead angle).
     ModelUnavailableError
         If ``design.method`` is not implemented.
 
@@ -661,15 +1081,28 @@ def pitch_cone(design: BevelGearDesign) -> PitchCone:
     Method 0 (ISO 23509 cl. 5): u = z2/z1, δ1 = arctan[sin Σ/(cos Σ + u)], δ2 = Σ − δ1,
     R_e2 = d_e2/(2 sin δ2), R_m1 = R_m2 = R_e2 − b2/2, β_m1 = β_m2, α_lim = 0.
 
+    The hypoid methods share the pitch cones tangent at P (:func:`hypoid_pitch_angles`)
+    with a = r_m2 sin ζ_m + r_m1 sin η, the ratio condition u = r_m2 cos β_m2/(r_m1 cos β_m1)
+    and β_m1 = β_m2 + ζ_mp. That leaves one freedom, which each method closes its own way;
+    the standard's iterations are replaced by a bracketed root search on the shape
+    η/(η + ζ_m), converged to machine precision. At a = 0 each reduces to the bevel pitch
+    cone at its own calculation point (the limit a → 0). In all of them α_lim follows
+    :func:`limit_pressure_angle`, α_nD = α_dD + f_αlim α_lim, α_nC = α_dC − f_αlim α_lim.
+
     Method 1 (ISO 23509 cl. 5, Gleason): δ_int2 = arctan[u sin Σ / (1.2 (1 + u cos Σ))],
     r_mpt2 = (d_e2 − b2 sin δ_int2)/2 is the gear mean pitch radius, β_m1 the desired pinion
-    spiral angle; the pitch cones are tangent at P (:func:`hypoid_pitch_angles`) with
-    a = r_mpt2 sin ζ_m + r_mn1 sin η and u = r_mpt2 cos β_m2/(r_mn1 cos β_m1),
-    β_m2 = β_m1 − ζ_mp, and the last freedom is closed by ρ_lim = r_c0
-    (:func:`limit_radius`). The standard's iteration on η, ζ_m is replaced by a bracketed
-    root search on the shape η/(η + ζ_m), which converges to machine precision. At a = 0
-    the conditions reduce to the bevel pitch cone at r_mpt2 (the limit of a → 0).
-    α_nD = α_dD + f_αlim α_lim, α_nC = α_dC − f_αlim α_lim.
+    spiral angle; closed by ρ_lim = r_c0 for face milling and ρ_lim = ρ_mβ for face hobbing
+    (:func:`limit_radius`, :func:`face_hobbing_trace` of the gear at P).
+
+    Method 2 (ISO 23509 cl. 5, Oerlikon; face hobbing): r_m2 = d_m2/2 is given, β_m2 the gear
+    spiral angle, c_be2 = 0.5 (R_e2 = R_m2 + b2/2). Closed by the pinion pitch apex lying on
+    the line from the gear pitch apex through the cutter centre in the pitch plane:
+    R_m1 = R_m2 sin φ6 / sin(φ6 + ζ_mp), φ6 = angle at the gear apex between P and the
+    cutter centre in the triangle of sides R_m2, r_c0 and angle λ at P.
+
+    Method 3 (ISO 23509 cl. 5, Klingelnberg; face hobbing): β_m2 the gear spiral angle,
+    c_be2 = 0.5, i.e. r_m2 = (d_e2 − b2 sin δ2)/2 (a fixed point on δ2), closed by
+    ρ_lim = ρ_mβ.
     """
     try:
         method = PITCH_CONE_METHODS[design.method]
