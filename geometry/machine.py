@@ -74,7 +74,7 @@ from geometry.cutter import (
     revolution_normal,
 )
 from geometry.errors import InputError
-from geometry.validation import real
+from geometry.validation import integer, real
 
 __all__ = [
     "PROCESSES",
@@ -291,8 +291,6 @@ def indexing_ratio(blade_groups: int, teeth: int) -> float:
         runout prints as a spacing error repeating every z/gcd teeth) and the cutter and
         the member do not hunt.
     """
-    from geometry.validation import integer
-
     z0 = integer("blade_groups", blade_groups, 0, 50, allow_float=True)
     z = integer("teeth", teeth, 3, 500, allow_float=True)
     if z0 == 0:

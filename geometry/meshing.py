@@ -229,10 +229,8 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float):
                 if ctx.settings.indexing_ratio != 0.0:
                     # face hobbing: every blade-group passage reaches a root on another
                     # slot; the reference slot is the one cut near spin and roll zero
-                    pick = pick[np.argsort(np.abs(x[pick, 1]) + np.abs(x[pick, -1]
-                                                                        if ctx.generate
-                                                                        else 0.0),
-                                           kind="stable")]
+                    distance = np.abs(x[pick, 1:]).sum(axis=-1)  # |θ| (+ |q|)
+                    pick = pick[np.argsort(distance, kind="stable")]
                 xs = x[pick[0]]
                 _, jac, _ = _evaluate(ctx, xs[None], np.array([k]), np.array([z0]),
                                       np.array([p0]))

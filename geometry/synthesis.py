@@ -87,6 +87,7 @@ from geometry.machine import (
     roll_angle,
     settings_from_poses,
 )
+from geometry.pitch_cone import FaceHobbingTrace, face_hobbing_trace
 
 __all__ = [
     "FlankPoint",
@@ -298,16 +299,17 @@ def _face_hobbing_gear_tools(g: MemberBlank, rmf: float, rc0: float, a_ob: float
     zp = g.z / math.sin(g.delta_f)
     beta = g.beta_m
 
-    def lead(r: float) -> float:
-        x = z0 * rmf * math.cos(beta) / (r * zp)
-        if not 0.0 < x < 1.0:
+    def trace(r: float) -> FaceHobbingTrace:
+        # the tip plane is the root plane of a crown gear of z_pf teeth
+        try:
+            return face_hobbing_trace(rmf, beta, r, z0, zp)
+        except InputError as exc:
             raise InputError(f"cutter_radius: {rc0:g} mm is too small for {z0} blade groups "
-                             f"(sin ν = {x:.3g} must be < 1)")
-        return math.asin(x)
+                             f"({exc})") from None
 
-    nu = lead(rc0)
+    mean = trace(rc0)
+    nu = mean.nu
     wr = (slot_width - 0.5 * math.pi * m_mn) / math.cos(nu)
-    sr2 = rmf**2 + rc0**2 - 2 * rmf * rc0 * math.sin(beta - nu)
     qc = math.atan2(rc0 * math.cos(beta - nu), rmf - rc0 * math.sin(beta - nu))
     theta0 = beta - nu - 0.5 * math.pi - qc
     blades = {}
@@ -316,9 +318,9 @@ def _face_hobbing_gear_tools(g: MemberBlank, rmf: float, rc0: float, a_ob: float
         rp = rc0 + sign * 0.5 * wr
         blades[flank] = Blade(side, rp, alpha, edge_radius=edge_radius,
                               blade_phase=theta0 + sign * 0.5 * math.pi / z0,
-                              blade_offset_angle=lead(rp))
+                              blade_offset_angle=trace(rp).nu)
     settings = MachineSettings(
-        process="Formate", radial_setting=math.sqrt(sr2), cradle_angle=qc,
+        process="Formate", radial_setting=mean.rho_P0, cradle_angle=qc,
         machine_root_angle=g.delta_f, machine_center_to_back=g.t_zR, indexing_ratio=kappa)
     return GearTools(blades, settings, rmf, wr, rc0)
 
