@@ -684,6 +684,12 @@ def revolution_normal(blade: Blade, e: np.ndarray, e_s: np.ndarray) -> np.ndarra
     ndarray (..., 3) — [1]
         The normal out of the work material at spin θ = 0 (for an unplaced blade
         σ[−h′, 0, −ρ′], as :func:`cutter_surface`).
+
+    Notes
+    -----
+    The surface R_z(θ) e(s) has the tangents e′ and e_z × e at θ = 0; their cross product is
+    its normal (seed Eq. 2.6 generalised to a space-curve edge, design note "Face hobbing"
+    §2.9).
     """
     ez_e = np.stack([-e[..., 1], e[..., 0], np.zeros(e.shape[:-1])], -1)
     n = -blade.sigma * np.cross(e_s, ez_e)
