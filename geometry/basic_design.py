@@ -1,4 +1,5 @@
-"""Basic design data of a face-milled pair: the input of the machine-setting synthesis.
+"""Basic design data of a face-milled or face-hobbed pair: the input of the machine-setting
+synthesis.
 
 A basic file (``cases/basic/*.toml``, schema in ``docs/synthesis.md``) holds
 
@@ -320,8 +321,7 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
     InputError
         A missing, unknown or out-of-range field, named by its dotted path.
     ModelUnavailableError
-        A process pair or ISO method that is not implemented, or a face-hobbed design
-        (z0 ≥ 1: the synthesis is face milling only).
+        A process pair or ISO method that is not implemented.
     """
     if not isinstance(raw, Mapping):
         raise InputError(f"basic file: must be a table, got {type(raw).__name__}")
@@ -338,11 +338,12 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
         design = BevelGearDesign.from_degrees(**des)
     except InputError as exc:
         raise InputError(f"design.{exc}") from None
-    if design.process != "face milling":
-        raise ModelUnavailableError(
-            f"design.z0: the machine-setting synthesis is implemented for face milling only "
-            f"(z0 = 0); face-hobbed blanks come from geometry.blank.blank_geometry, got "
-            f"z0 = {design.z0}")
+    for z in (design.z1, design.z2):
+        if design.z0 and math.gcd(design.z0, z) != 1:
+            raise InputError(
+                f"design.z0: {design.z0} blade groups share the factor "
+                f"{math.gcd(design.z0, z)} with {z} teeth; a face-hobbing cutter must hunt "
+                "both members (no common factor with z1 and z2)")
     tg = dict(raw.get("targets", {}))
     adjust = tg.pop("adjust", [])
     if not isinstance(adjust, list) or not all(isinstance(a, str) for a in adjust):

@@ -70,7 +70,7 @@ from geometry.basic_design import BasicDesign, FlankOptions
 from geometry.blank import BlankGeometry, MemberBlank
 from geometry.case import FLANKS, Blank, Case, case_from_dict
 from geometry.conventional_tca import ToothPair
-from geometry.cutter import Blade
+from geometry.cutter import Blade, placement_vectors
 from geometry.design_point import (
     action_rotation,
     design_point,
@@ -84,6 +84,7 @@ from geometry.machine import (
     MachineSettings,
     cutter_pose,
     indexing_ratio,
+    machine_transform,
     roll_angle,
     settings_from_poses,
 )
@@ -181,6 +182,7 @@ class GearTools(NamedTuple):
     mean_root_cone_distance: float  # [mm]
     point_width: float  # [mm]
     cutter_radius: float  # [mm]
+    blade_groups: int = 0  # z0 (0: face milling)
 
 
 def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
@@ -322,7 +324,7 @@ def _face_hobbing_gear_tools(g: MemberBlank, rmf: float, rc0: float, a_ob: float
     settings = MachineSettings(
         process="Formate", radial_setting=mean.rho_P0, cradle_angle=qc,
         machine_root_angle=g.delta_f, machine_center_to_back=g.t_zR, indexing_ratio=kappa)
-    return GearTools(blades, settings, rmf, wr, rc0)
+    return GearTools(blades, settings, rmf, wr, rc0, z0)
 
 
 # --------------------------------------------------------------------------- mean point
@@ -741,6 +743,229 @@ def pinion_generate_tools(point, normal, target_shape, *, side: str, blade_angle
                        float(np.linalg.norm(r_gen - m)), float(np.linalg.norm(n_gen - nn)))
 
 
+def _rot_z(a: float) -> np.ndarray:
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+class _HobbingTool(NamedTuple):
+    """A face-hobbing pinion tool at q = 0 (see :func:`face_hobbing_pinion_tools`)."""
+
+    blade: Blade
+    settings: MachineSettings
+    blank_phase: float  # [rad]
+    rotation: np.ndarray  # (3, 3) cutter frame → given pinion frame
+    centre: np.ndarray  # (3,) [mm] cutter tip-plane centre, given pinion frame
+    cradle_point: np.ndarray  # (3,) [mm]
+
+
+def _cradle_for_meshing(m, nn, cradle_point, cradle_axis, ratio):
+    """The cradle axis shifted along e1 = n × c/|n × c| so that M satisfies the equation of
+    meshing at q = 0, n·[c × (M − P_c) − R_a z × M] = 0 (Litvin's ΔE_m)."""
+    nxc = np.cross(nn, cradle_axis)
+    e1 = nxc / np.linalg.norm(nxc)
+    shift = (float(nn @ np.cross(cradle_axis, m - cradle_point))
+             - ratio * float(nn @ np.cross([0.0, 0.0, 1.0], m))) / float(np.linalg.norm(nxc))
+    return cradle_point + shift * e1
+
+
+def _hobbing_tool(side, r_p, k_pr, ratio, alpha, phase, offset, h_m, edge_radius, centre,
+                  axis, cradle_point, cradle_axis, kappa, m, nn) -> _HobbingTool | None:
+    """Pinion face-hobbing tool for the given blade and cutter pose; None where invalid."""
+    if r_p <= 0 or ratio <= 0 or abs(k_pr) * max(edge_radius, 1.0) >= 0.5:
+        return None
+    cp = _cradle_for_meshing(m, nn, cradle_point, cradle_axis, ratio)
+    try:
+        profile = (dict(profile="circular", profile_radius=1.0 / k_pr,
+                        profile_reference_height=h_m) if k_pr != 0.0 else {})
+        blade = Blade(side, r_p, alpha, edge_radius=edge_radius,
+                      blade_phase=math.remainder(phase, 2.0 * math.pi),
+                      blade_offset_angle=offset, **profile)
+        ps = settings_from_poses(cradle_point=cp, cradle_axis=cradle_axis,
+                                 cutter_centre=centre, cutter_axis=axis, process="Generate",
+                                 ratio_of_roll=ratio)
+        settings = replace(ps.settings, indexing_ratio=kappa)
+    except InputError:
+        return None
+    mt = machine_transform(settings, 0.0, 0.0)[0]
+    rz = _rot_z(ps.blank_phase)
+    return _HobbingTool(blade, settings, ps.blank_phase, rz @ mt[:3, :3], rz @ mt[:3, 3], cp)
+
+
+def _swept_point(tool: _HobbingTool, h_m: float, cradle_axis: np.ndarray, kappa_g: float):
+    """Point and unit normal of the generating surface Σ_G at the blade point h_m above the
+    tip at spin θ = 0: Σ_G is swept by the edge spinning about the cutter axis while the
+    cutter centre turns about the cradle axis by −κ_G θ (design note "Face hobbing" §3.3)."""
+    b = tool.blade
+    mb, a1, a2 = placement_vectors(b)
+    ta = math.tan(b.blade_angle)
+    e = mb + b.sigma * h_m * ta * a1 - h_m * a2
+    e_s = b.sigma * math.sin(b.blade_angle) * a1 - math.cos(b.blade_angle) * a2
+    x = tool.centre + tool.rotation @ e
+    t_s = tool.rotation @ e_s
+    t_th = (np.cross(tool.rotation[:, 2], x - tool.centre)
+            - kappa_g * np.cross(cradle_axis, x - tool.cradle_point))
+    return x, _unit(np.cross(t_s, t_th))
+
+
+def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cutter_centre,
+                              gear_cutter_axis, gear_edge_direction, tip_height: float,
+                              cradle_point, cradle_axis, ratio_of_roll: float,
+                              blade_groups: int, pinion_blank: Blank, edge_radius: float,
+                              start=None) -> PinionTools:
+    """Face-hobbing blade and Generate settings whose pinion flank has a prescribed shape
+    operator at M: the face-hobbing counterpart of :func:`pinion_generate_tools`.
+
+    Parameters
+    ----------
+    point, normal, target_shape, side, tip_height, cradle_point, cradle_axis
+        As :func:`pinion_generate_tools` (pinion right-hand reference frame; mm, 1/mm).
+    pinion_blank, edge_radius
+        As :func:`pinion_generate_tools` (pinion right-hand reference frame; mm, 1/mm).
+    gear_cutter_centre, gear_cutter_axis : array_like (3,) — [mm], [1]
+        The Formate gear's cutter tip-plane centre and axis at the spin that cuts M, in the
+        same frame (the gear in mesh at M).
+    gear_edge_direction : array_like (3,) — [1]
+        Tangent of the gear blade edge at M (the gear flank's tangent along the blade).
+    ratio_of_roll : float — [1]
+        Start value of R_a (the conjugate generation's, z2/z1).
+    blade_groups : int
+        z0 of the cutter head (the gear's); the pinion indexes by κ1 = −z0/z1.
+    start : (r_p, κ_pr, R_a), optional
+        Start of the solution; default the conjugate generation.
+
+    Returns
+    -------
+    PinionTools
+        A placed blade (phase θ_b, blade offset angle δ_b of the conjugate tool) and the
+        Generate settings with the indexing ratio κ1.
+
+    Raises
+    ------
+    InputError
+        If the generated flank cannot be made to match the target.
+
+    Notes
+    -----
+    Conjugate start (design note "Face hobbing" §3.3, §5.4): the generating gear is the
+    Formate gear's own face-hobbing tool — cradle axis = gear axis, the gear's cutter at the
+    spin that cuts M turned to face the pinion (axis −u_gear), its blade edge at M copied
+    (the same line: side swapped, same blade angle, its tip plane h_M below M), the same z0
+    with κ1 = −z0/z1 and R_a = z2/z1. With κ1 = R_a κ_G the machine's envelope is the
+    envelope of the rigid generating gear Σ_G (the gear's slot, z_G = z2 teeth) rolling at
+    R_a: the exact conjugate (tested: ease-off ~0). The mismatch required by the local
+    synthesis is made, as for face milling, by the blade point radius r_p (the lengthwise
+    curvature), a circular blade profile of curvature κ_pr tangent to the nominal line at
+    M's height and the ratio of roll R_a. For each trial the cutter centre (3 components),
+    the blade phase θ_b and the blade angle α are solved (``scipy.optimize.least_squares``)
+    so that Σ_G passes through M with the normal n at spin θ = 0, and the cradle axis is
+    shifted so that M satisfies the equation of meshing at q = 0 (Litvin's ΔE_m): M is
+    generated at q = θ = 0. The outer unknowns are solved so that the flank generated by the
+    toolkit's own model (:func:`geometry.flank_point.flank_points`) has the target shape
+    operator, as :func:`pinion_generate_tools` (accepted below 1e-8 1/mm).
+    """
+    m = np.asarray(point, float)
+    nn = _unit(np.asarray(normal, float))
+    target = np.asarray(target_shape, float)
+    ca = _unit(np.asarray(cradle_axis, float))
+    cp0 = np.asarray(cradle_point, float)
+    ug = _unit(np.asarray(gear_cutter_axis, float))
+    cg = np.asarray(gear_cutter_centre, float)
+    u = -ug
+    h_m = float(tip_height)
+    if h_m <= edge_radius:
+        raise InputError("synthesis: the mean point lies below the pinion cutter tip")
+    z1 = pinion_blank.teeth
+    kappa = indexing_ratio(blade_groups, z1)
+    # the pinion tip plane h_M below M (towards the tips, +u): centre on the gear cutter axis
+    c0 = cg + (float((m - cg) @ ug) - h_m) * ug
+    tb = _tangent_basis(nn)
+    zm, pm = float(m[2]), float(math.hypot(m[0], m[1]))
+    # conjugate blade: the gear edge line through M in the pinion cutter frame
+    ref = _hobbing_tool(side, 1.0, 0.0, ratio_of_roll, 0.0, 0.0, 0.0, h_m, 0.0, c0, u, cp0,
+                        ca, kappa, m, nn)
+    if ref is None:
+        raise InputError("synthesis: no face-hobbing pinion cutter pose exists at M")
+    g = ref.rotation.T @ _unit(np.asarray(gear_edge_direction, float))
+    mt = ref.rotation.T @ (m - ref.centre)
+    g_up = g / -g[2]  # per unit height above the tip (towards the cutter body, −z_t)
+    m0 = mt - h_m * g_up  # the line at the tip plane
+    hv = np.array([g_up[0], g_up[1], 0.0])
+    a1 = _unit(hv) if hv @ m0 >= 0 else -_unit(hv)
+    sigma = 1 if side == "outside" else -1
+    if int(np.sign(hv @ a1)) != sigma:
+        raise InputError(f"synthesis: the gear blade at M does not copy onto a pinion "
+                         f"{side} blade")
+    alpha0 = math.atan(float(np.linalg.norm(hv)))
+    r_p0 = float(np.linalg.norm(m0[:2]))
+    phase0 = math.atan2(m0[1], m0[0])
+    offset0 = math.remainder(math.atan2(a1[1], a1[0]) - phase0, 2.0 * math.pi)
+    if start is None:
+        start = (r_p0, 0.0, ratio_of_roll)
+
+    def tool_for(x):
+        r_p, k_pr, ratio = x
+        kappa_g = kappa / ratio
+
+        def make(y):
+            return _hobbing_tool(side, r_p, k_pr, ratio, alpha0 + y[4], phase0 + y[3],
+                                 offset0, h_m, edge_radius, c0 + y[:3], u, cp0, ca, kappa,
+                                 m, nn)
+
+        def res(y):
+            t = make(y)
+            if t is None:
+                return np.full(5, 1e3)
+            xs, ns = _swept_point(t, h_m, ca, kappa_g)
+            if ns @ nn < 0:
+                ns = -ns
+            return np.concatenate([xs - m, tb.T @ ns])
+
+        sol = least_squares(res, np.zeros(5), x_scale=np.array([1.0, 1.0, 1.0, 1e-2, 1e-2]),
+                            xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=100)
+        if np.abs(sol.fun).max() > 1e-10:
+            return None
+        return make(sol.x)
+
+    def evaluate(x):
+        t = tool_for(x)
+        if t is None:
+            return None
+        pt = flank_points(t.blade, t.settings, pinion_blank, "right", [zm], [pm])
+        if not pt.ok[0]:
+            return None
+        rz = _rot_z(t.blank_phase)
+        return t, rz @ pt.r[0], rz @ pt.n[0], rz @ pt.shape[0] @ rz.T
+
+    def residual(x):
+        ev = evaluate(x)
+        if ev is None:
+            return np.full(3, 1e3)
+        d = tb.T @ (ev[3] - target) @ tb
+        return pinion_blank.outer_cone_distance * np.array([d[0, 0], d[0, 1], d[1, 1]])
+
+    sol = least_squares(residual, np.asarray(start, float),
+                        x_scale=np.array([10.0, 1e-3, 0.1]),
+                        xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=200)
+    ev = evaluate(sol.x)
+    if ev is None:
+        raise InputError("synthesis: the face-hobbing pinion settings left the generating "
+                         "range")
+    t, r_gen, n_gen, w_gen = ev
+    d = tb.T @ (w_gen - target) @ tb
+    err = float(np.abs(d).max())
+    if np.linalg.norm(r_gen - m) > 1e-7 or np.linalg.norm(n_gen - nn) > 1e-9:
+        raise InputError("synthesis: the generated face-hobbing pinion flank misses the mean "
+                         f"point ({np.linalg.norm(r_gen - m):.3g} mm)")
+    if err > 1e-8:
+        raise InputError(
+            f"synthesis: the pinion {('concave' if side == 'outside' else 'convex')} flank "
+            f"could not be given the required curvature at the mean point (residual "
+            f"{err:.3g} 1/mm); change the path angle, the TE level or the ellipse length")
+    return PinionTools(t.blade, t.settings, t.blank_phase, err,
+                       float(np.linalg.norm(r_gen - m)), float(np.linalg.norm(n_gen - nn)))
+
+
 def shift_roll_origin(settings: MachineSettings, q0: float) -> MachineSettings:
     """Settings that generate the same flank turned by φ(q0) about the work axis.
 
@@ -945,7 +1170,17 @@ def _blade_table(b: Blade) -> dict[str, Any]:
     if b.profile != "straight":
         out.update(profile=b.profile, profile_radius=b.profile_radius,
                    profile_reference_height=b.profile_reference_height)
+    if b.placed:
+        out.update(blade_phase=math.degrees(b.blade_phase),
+                   blade_offset_angle=math.degrees(b.blade_offset_angle))
     return out
+
+
+def _cutter_table(blades: dict[str, Blade], blade_groups: int,
+                  cutter_radius: float) -> dict[str, Any]:
+    head: dict[str, Any] = ({"blade_groups": blade_groups, "cutter_radius": cutter_radius}
+                            if blade_groups else {})
+    return head | {f: _blade_table(blades[f]) for f in FLANKS}
 
 
 def synthesize(basic: BasicDesign) -> tuple[Case, SynthesisReport]:
@@ -987,7 +1222,8 @@ def synthesize(basic: BasicDesign) -> tuple[Case, SynthesisReport]:
     coast = _OTHER[drive]
     gear = gear_formate_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
                               blade_angle_coast=alpha_c, point_width=opt.point_width,
-                              edge_radius=opt.edge_radius, drive_flank=drive)
+                              edge_radius=opt.edge_radius, drive_flank=drive,
+                              blade_groups=design.z0)
     pinion_hand = design.hand
     gear_hand = "right" if pinion_hand == "left" else "left"
     pair = _PairData(geom, gear, _blank(geom.pinion), _blank(geom.gear), pinion_hand,
@@ -1041,7 +1277,7 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
                          tg[:3, 2], tg[:3, 3], pinion_sense=mp.pinion_sense,
                          gear_sense=mp.gear_sense, ratio=z1 / geom.gear.z, a21=a21,
                          path_direction=path, curvature_gap=2.0 * fo.approach / semi**2)
-    tools = _generating_tools(pair, pf, gblade, mp, ls, tp, tg)
+    tools = _generating_tools(pair, pf, gblade, gp, mp, ls, tp, tg)
     # higher-order roll (6D, 24E): the TE at ±pitch/4 on the prescribed parabola (the
     # local synthesis fixes it only to second order at M)
     hand_sign = 1.0 if pair.pinion_hand == "right" else -1.0
@@ -1067,11 +1303,13 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
     return FlankSynthesis(pf, fo, a21, mp, ls, tools)
 
 
-def _generating_tools(pair: _PairData, pf: str, gblade: Blade, mp: MeanPoint,
-                      ls: LocalSynthesis, tp: np.ndarray, tg: np.ndarray) -> PinionTools:
+def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
+                      mp: MeanPoint, ls: LocalSynthesis, tp: np.ndarray,
+                      tg: np.ndarray) -> PinionTools:
     """Step 5 of the module docstring: the pinion blade and Generate settings that realise
     the local synthesis's shape operator at M, with the Formate gear as generating gear
-    (``tp``, ``tg`` the members' transforms at M)."""
+    (``gp`` the gear flank at M in its own frame, ``tp``, ``tg`` the members' transforms at
+    M)."""
     geom = pair.geom
     rot = tp[:3, :3]
     mir = _MIRROR if pair.pinion_hand == "left" else np.eye(3)
@@ -1079,8 +1317,10 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, mp: MeanPoint,
     n_loc = mir @ rot.T @ mp.normal
     w_loc = mir @ rot.T @ ls.pinion_shape @ rot @ mir
     # generating gear = the Formate gear: cradle axis = gear axis, the gear cutter turned
-    # to face the pinion (Litvin & Fuentes 2004 ch. 20)
-    cg, ug = cutter_pose(pair.gear.settings, 0.0)
+    # to face the pinion (Litvin & Fuentes 2004 ch. 20); face hobbing: the cutter at the
+    # spin that cuts M (the work indexes with the spin)
+    z0 = pair.gear.blade_groups
+    cg, ug = cutter_pose(pair.gear.settings, 0.0, float(gp.params[1]) if z0 else 0.0)
     if pair.gear_hand == "left":
         cg, ug = _MIRROR @ cg, _MIRROR @ ug
     cg = mir @ rot.T @ (tg[:3, :3] @ cg + tg[:3, 3] - tp[:3, 3])
@@ -1094,6 +1334,14 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, mp: MeanPoint,
     root = _root_below(pair.pinion_blank, m_loc)
     h_m = float((root - m_loc) @ u_p) + 0.5 * geom.gear.b * math.tan(
         geom.gear.delta_a - geom.gear.delta_f)
+    edge_radius = pair.gear.blades["concave"].edge_radius
+    if z0:
+        return face_hobbing_pinion_tools(
+            m_loc, n_loc, w_loc, side=FLANKS[pf], gear_cutter_centre=cg,
+            gear_cutter_axis=ug, gear_edge_direction=mir @ rot.T @ tg[:3, :3] @ gp.r_s,
+            tip_height=h_m, cradle_point=cradle_point, cradle_axis=cradle_axis,
+            ratio_of_roll=geom.gear.z / geom.pinion.z, blade_groups=z0,
+            pinion_blank=pair.pinion_blank, edge_radius=edge_radius)
     sigma = 1 if FLANKS[pf] == "outside" else -1
     rho_m = float(np.linalg.norm(np.cross(m_loc - cg, ug)))
     return pinion_generate_tools(
@@ -1101,7 +1349,7 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, mp: MeanPoint,
         cutter_axis=u_p, tip_height=h_m, cradle_point=cradle_point,
         cradle_axis=cradle_axis, ratio_of_roll=geom.gear.z / geom.pinion.z,
         point_radius=rho_m - sigma * h_m * math.tan(gblade.blade_angle),
-        pinion_blank=pair.pinion_blank, edge_radius=pair.gear.blades["concave"].edge_radius)
+        pinion_blank=pair.pinion_blank, edge_radius=edge_radius)
 
 
 def _coast_in_drive_frame(coast: FlankSynthesis, drive: FlankSynthesis) -> FlankSynthesis:
@@ -1141,21 +1389,45 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
         parts.append(f"Fitted by adjusting {', '.join(basic.adjust) or 'nothing'}: {ach}.")
     for k, v in basic.comments.items():
         parts.append(f"{k}: {v.strip().rstrip('.')}.")
-    parts.append(
-        "Gear Formate, one spread-blade cutter (geometry.synthesis.gear_formate_tools): "
-        "gamma_m = root angle, root apex at the machine centre, "
-        "S_r^2 = R_mf^2 + r_c0^2 - 2 R_mf r_c0 sin(beta_m2), q_c = atan2(r_c0 cos beta_m2, "
-        f"R_mf - r_c0 sin beta_m2), R_mf {_fmt(gear.mean_root_cone_distance, 6)} mm, r_c0 "
-        f"{_fmt(gear.cutter_radius, 6)} mm, point width {_fmt(gear.point_width, 5)} mm.")
+    if gear.blade_groups:
+        parts.append(
+            f"Face hobbing: cutter head of z0 = {gear.blade_groups} blade groups, nominal "
+            f"radius r_c0 {_fmt(gear.cutter_radius, 6)} mm, work indexing -z0/z per radian "
+            "of spin. Gear Formate (geometry.synthesis.gear_formate_tools, face hobbing): "
+            "gamma_m = root angle, root apex at the machine centre, the slot centre line the "
+            "extended epicycloid through the mean root point with the spiral angle beta_m2 "
+            "(lead angle nu from the crown gear of z2/sin(root angle) teeth, cutter centre "
+            "by the face-milling triangle with beta_m2 - nu), outside blade leading the "
+            "inside blade by half a group pitch, blade offset angle = lead angle at each "
+            f"blade; R_mf {_fmt(gear.mean_root_cone_distance, 6)} mm, slot width at the "
+            f"cutter radius {_fmt(gear.point_width, 5)} mm.")
+        generating = (
+            "generating gear = the Formate gear's own face-hobbing tool (cradle axis = gear "
+            "axis, the gear cutter at the spin that cuts M turned to face the pinion, its "
+            "blade edge copied, ratio of roll z2/z1, indexing -z0/z1: the exact conjugate), "
+            "mismatch by the pinion point radius, a circular blade profile and the ratio of "
+            "roll (cutter centre, blade phase and blade angle solved so that the generating "
+            "surface touches M with its normal, cradle shifted to keep M generated at roll "
+            "0)")
+    else:
+        parts.append(
+            "Gear Formate, one spread-blade cutter (geometry.synthesis.gear_formate_tools): "
+            "gamma_m = root angle, root apex at the machine centre, "
+            "S_r^2 = R_mf^2 + r_c0^2 - 2 R_mf r_c0 sin(beta_m2), q_c = atan2(r_c0 cos "
+            f"beta_m2, R_mf - r_c0 sin beta_m2), R_mf {_fmt(gear.mean_root_cone_distance, 6)}"
+            f" mm, r_c0 {_fmt(gear.cutter_radius, 6)} mm, point width "
+            f"{_fmt(gear.point_width, 5)} mm.")
+        generating = (
+            "generating gear = the Formate gear (cradle axis = gear axis, gear cutter turned "
+            "to face the pinion, ratio of roll z2/z1), mismatch by the pinion point radius, a "
+            "circular blade profile and the ratio of roll (cradle shifted to keep M generated "
+            "at roll 0)")
     parts.append(
         "Pinion Generate by local synthesis at the mean contact point M of the gear flank "
         "(mean cone distance, centred in roll within the working depth) (Litvin, Fuentes et "
         "al., Mech. Mach. Theory 37 (2002) 441; Litvin & Fuentes, Gear Geometry and Applied "
         "Theory, 2nd ed., ch. 9 and 20; geometry.synthesis): tangency at M, contact-path "
-        "direction on the gear, parabolic TE a21, contact ellipse 2a at delta; generating "
-        "gear = the Formate gear (cradle axis = gear axis, gear cutter turned to face the "
-        "pinion, ratio of roll z2/z1), mismatch by the pinion point radius, a circular blade "
-        "profile and the ratio of roll (cradle shifted to keep M generated at roll 0), "
+        f"direction on the gear, parabolic TE a21, contact ellipse 2a at delta; {generating}, "
         "solved so that the generated flank has the required curvature at M; modified roll "
         "6D, 24E put the TE at +/-pitch/4 on the parabola; coast flank turned for the ISO "
         f"mean normal backlash {_fmt(geom.j_mn)} mm.")
@@ -1202,17 +1474,19 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
         "name": basic.name,
         "source": _source(basic, geom, gear, flanks),
         "synthesised": synth,
-        "pair": {"shaft_angle": math.degrees(d.Sigma), "offset": d.a, "method": "FM",
+        "pair": {"shaft_angle": math.degrees(d.Sigma), "offset": d.a,
+                 "method": "FH" if gear.blade_groups else "FM",
                  "pinion_hand": pinion_hand, "gear_hand": gear_hand,
                  "drive_flank": opt.drive_flank},
         "pinion": {
             "process": "Generate", "blank": case_blank(geom.pinion),
-            "cutter": {f: _blade_table(flanks[f].tools.blade) for f in FLANKS},
+            "cutter": _cutter_table({f: flanks[f].tools.blade for f in FLANKS},
+                                    gear.blade_groups, gear.cutter_radius),
             "machine": {f: _settings_table(flanks[f].tools.settings) for f in FLANKS},
         },
         "gear": {
             "process": "Formate", "blank": case_blank(geom.gear),
-            "cutter": {f: _blade_table(gear.blades[f]) for f in FLANKS},
+            "cutter": _cutter_table(gear.blades, gear.blade_groups, gear.cutter_radius),
             "machine": {f: _settings_table(gear.settings) for f in FLANKS},
         },
         "synthesis": info,

@@ -529,9 +529,14 @@ def test_cutter_too_small_for_the_lead_angle_is_rejected():
         face_hobbing_trace(80.0, 0.3, 70.0, 5, 0.0)
 
 
-def test_synthesis_refuses_a_face_hobbed_design():
+def test_synthesis_takes_a_face_hobbed_design_and_refuses_a_cutter_that_does_not_hunt():
+    """A face-hobbed design (z0 ≥ 1) is accepted by the synthesis input; z0 sharing a factor
+    with a tooth count (7 and 42) is refused, naming design.z0 (every blade group must cut
+    every slot)."""
     raw = tomllib.loads((ROOT / "cases" / "basic" / "iso23509_sample2_fm.toml").read_text(
         encoding="utf-8"))
     raw["design"] = {**raw["design"], "z0": 5}
-    with pytest.raises(ModelUnavailableError, match=r"^design\.z0: "):
+    assert basic_from_dict(raw, fit=False).design.process == "face hobbing"
+    raw["design"] = {**raw["design"], "z0": 7}
+    with pytest.raises(InputError, match=r"^design\.z0: 7 blade groups share the factor 7"):
         basic_from_dict(raw, fit=False)
