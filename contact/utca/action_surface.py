@@ -214,7 +214,12 @@ def action_roll_angle(kin: MeshKinematics, position, normal, *, branch: int | No
         Their unit normals (out of the pinion material).
     branch : {+1, −1}, optional
         Sign of the arccos root; by default the branch whose action points lie nearest
-        (median distance) to ``reference``.
+        (median distance) to ``reference`` in the gear's axial section, i.e. in axial
+        position along and distance from the gear axis (the place on the gear projection
+        plane where their conjugate gear points lie; a rotation about the gear axis does not
+        change it). A distance in space would also weigh where around the gear axis the
+        point lies and picks the wrong root for large offsets (e.g. the coast flank of the
+        seed's 45 mm offset pair of Table 4.3).
     reference : array_like (3,), optional — [mm]
         A point of the gear flank in the pair frame that marks the mesh zone; required
         when ``branch`` is not given.
@@ -255,12 +260,19 @@ def action_roll_angle(kin: MeshKinematics, position, normal, *, branch: int | No
         if reference is None:
             raise InputError("reference: must be a gear-flank point (3,) [mm] when branch is "
                              "not given, got None")
-        ref = np.asarray(reference, dtype=float)
+        ag, og = kin.gear_axis, kin.gear_origin
+
+        def section(r):  # (axial position, radius) about the gear axis
+            rel = np.asarray(r, dtype=float) - og
+            z = rel @ ag
+            return np.stack([z, np.linalg.norm(rel - z[..., None] * ag, axis=-1)], -1)
+
+        ref = section(reference)
         dist = {}
         for sign in (1, -1):
             phi = roots(sign)
             ra = kin.pinion_origin + rotate_about_axis(kin.pinion_axis, phi, r0 - kin.pinion_origin)
-            d = np.linalg.norm(ra - ref, axis=-1)
+            d = np.linalg.norm(section(ra) - ref, axis=-1)
             dist[sign] = np.nanmedian(d) if np.isfinite(d).any() else np.inf
         branch = 1 if dist[1] <= dist[-1] else -1
     else:

@@ -148,7 +148,7 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
         For out-of-range arguments (message names the field and range), or when no pair
         is in contact at some roll position.
     ModelUnavailableError
-        For face hobbing, or a roll-angle surface that cannot be contoured.
+        For a roll-angle surface that cannot be contoured.
 
     Notes
     -----

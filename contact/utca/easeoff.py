@@ -624,8 +624,6 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     InputError
         For a bad flank name or grid, if the pinion never meets the surface of action, or
         no gear node can be touched by the pinion.
-    geometry.errors.ModelUnavailableError
-        For face hobbing (as :func:`geometry.flank.flank_surface`).
 
     Notes
     -----
