@@ -1,4 +1,8 @@
-"""Machine settings of face-milled pairs from basic design data: Formate gear, local synthesis.
+"""Machine settings from basic design data: Formate gear, local synthesis (FM and FH).
+
+Face milling (z0 = 0) and face hobbing (z0 ≥ 1 blade groups) follow the same steps; face
+hobbing uses the face-hobbing gear tools in step 2 and :func:`face_hobbing_pinion_tools` in
+step 5 (``docs/synthesis.md``, "Face hobbing").
 
 From a :class:`geometry.basic_design.BasicDesign` this module builds a complete case
 (:class:`geometry.case.Case`):
@@ -51,6 +55,7 @@ gear_formate_tools     Formate gear blades and settings
 mean_point             mesh position of the gear mean point (surface of action)
 local_synthesis        pinion shape operator at M from the local-synthesis conditions
 pinion_generate_tools  pinion blade and settings that realise a shape operator at M
+face_hobbing_pinion_tools  the same for a face-hobbed pinion (the gear's own tool as start)
 shift_roll_origin      the same generated flank, turned about the work axis
 synthesize             basic design → complete case (and report)
 """
@@ -101,6 +106,7 @@ __all__ = [
     "case_blank",
     "design_point",
     "design_point_of_case",
+    "face_hobbing_pinion_tools",
     "gear_formate_tools",
     "local_synthesis",
     "mean_addendum",
