@@ -5,17 +5,30 @@ is affine in the point, v₁₂(r) = Ω × r + c, so its smallest magnitude over
 |Ω·c|/|Ω|, reached on the axis of the relative screw motion (Litvin & Fuentes 2004,
 §6.1): zero for intersecting axes (spiral bevel: pure rolling on the pitch-cone
 generatrix) and growing linearly with the hypoid offset.
+
+Process-agnostic (design note FACE_HOBBING.md §6): on the face-hobbed example pair
+(tests/data/fh_iso23509_s2_crown.toml) the friction stage's sliding and rolling velocities
+and slide-to-roll ratios equal the velocities of material points moved by the assembly's
+own member transforms (geometry.assembly.case_transforms, central differences), its
+equivalent radii the flank curvatures at the contact points (geometry.flank.flank_at), and
+its outputs depend on nothing but the contact geometry it is given.
 """
 
 from __future__ import annotations
 
+import functools
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
+import xarray as xr
 
+from friction.efficiency import efficiency_analysis
 from friction.kinematics import surface_velocities
 from geometry.errors import InputError
+
+FH_EXAMPLE = Path(__file__).resolve().parent / "data" / "fh_iso23509_s2_crown.toml"
 
 N_P = 1500.0  # rpm
 RATIO = 41 / 11
@@ -177,3 +190,120 @@ def test_mean_pitch_point_against_the_pitch_cone_hand_calculation(name):
     assert v1 * math.cos(pc.beta_m1) == pytest.approx(v2 * math.cos(pc.beta_m2), rel=1e-9)
     assert float(out["sliding_velocity"]) == pytest.approx(hand_sliding, rel=0.02)
     assert float(out["rolling_velocity"]) == pytest.approx(hand_rolling, rel=0.02)
+
+
+# ------------------------------------------------------------------ face hobbing
+@functools.cache
+def _fh_ltca():
+    """The face-hobbed example pair loaded at T_p = 250 N m (a coarse LTCA: one mesh cycle,
+    6 roll positions, 12 segments per contact curve) and its friction stage at N_P."""
+    from contact.ltca import LTCAOptions, loaded_tca
+    from geometry.case import load_case
+
+    case = load_case(FH_EXAMPLE)
+    assert case.pair.method == "FH" and case.pinion.blade_groups == case.gear.blade_groups == 5
+    ltca = loaded_tca(case, [250.0], options=LTCAOptions(cycles=1, rolls_per_cycle=6,
+                                                         segments=12))
+    return case, ltca, efficiency_analysis(ltca, pinion_speed=N_P)
+
+
+def _rigid_velocity(case, member, points, omega, step=1e-6):
+    """Velocity [m/s] of the material points of ``member`` now at ``points`` (pair frame,
+    mm) turning at ``omega`` [rad/s] about its own +z axis: central differences of the
+    assembly's member → pair transforms at rotations ±step [rad]."""
+    from geometry.assembly import case_transforms, transform_points
+
+    k = 0 if member == "pinion" else 1
+    in_member = transform_points(np.linalg.inv(case_transforms(case)[k]), points)
+    ahead = transform_points(case_transforms(case, step, step)[k], in_member)
+    behind = transform_points(case_transforms(case, -step, -step)[k], in_member)
+    return omega * (ahead - behind) / (2.0 * step) * 1e-3
+
+
+def _curvature_at(case, member, flank, points, direction):
+    """Normal curvature [1/mm] (convex positive) of ``member``'s generated ``flank`` at pair-
+    frame ``points`` along pair-frame ``direction`` (projected on its tangent plane): the
+    flank point at the same axial position and radius (geometry.flank.flank_at), turned
+    about the member axis onto the point."""
+    from geometry.assembly import case_transforms, transform_points, transform_vectors
+    from geometry.curvature import normal_curvature
+    from geometry.flank import flank_at
+
+    to_pair = case_transforms(case)[0 if member == "pinion" else 1]
+    pm = transform_points(np.linalg.inv(to_pair), points)
+    fs = flank_at(case, member, flank, pm[:, 2], np.hypot(pm[:, 0], pm[:, 1]))
+    turn = np.arctan2(pm[:, 1], pm[:, 0]) - np.arctan2(fs.position[:, 1], fs.position[:, 0])
+    c, s = np.cos(turn)[:, None], np.sin(turn)[:, None]
+
+    def turned(v):
+        return np.column_stack([c[:, 0] * v[:, 0] - s[:, 0] * v[:, 1],
+                                s[:, 0] * v[:, 0] + c[:, 0] * v[:, 1], v[:, 2]])
+
+    assert np.allclose(turned(fs.position), pm, atol=1e-6)
+    normal = transform_vectors(to_pair, turned(fs.normal))
+    tangent = direction - np.sum(direction * normal, axis=1)[:, None] * normal
+    return normal_curvature(fs.kappa1, fs.kappa2, transform_vectors(to_pair, turned(fs.dir1)),
+                            tangent)
+
+
+def test_face_hobbed_contacts_kinematics_from_rigid_rotations_and_flank_curvatures():
+    """Every loaded segment of the FH example's LTCA: the friction stage's sliding speed,
+    entraining speed and slide-to-roll ratio (seed Eq. 5.1–5.6) equal those built here from
+    the velocities of the material points under the assembly's own rotations (ω_p = 2π n/60
+    about the pinion's +z, ω_g = −ω_p z1/z2 about the gear's; not the axes stored in the
+    dataset) within 1e-7 (central differences, step 1e-6 rad: truncation ~1e-12, rounding
+    ~1e-9; measured 7e-10). On the contact curves (edge contacts take the edge rounding),
+    R_eq = 1/(κ_p + κ_g) across the contact line from the flank curvatures at the contact
+    point, within 2 %: the example is not a conjugate pair (its unloaded TE reaches 6 mrad),
+    and the LTCA takes the pinion's curvature at the mate of the gear point under the
+    ideal motion, a few tenths of a mm from the loaded contact (6 mrad at ~70 mm; measured
+    ≤ 1.6 %, median 0.9 %; the gear's flank normal at the point is the contact normal to
+    1e-15). Nothing here knows the process."""
+    case, ltca, fr = _fh_ltca()
+    force = ltca["force"].values[0]
+    loaded = np.isfinite(force) & (force > 0)
+    assert loaded.sum() > 20
+    r = ltca["contact_point"].values[loaded]
+    n = ltca["contact_normal"].values[loaded]
+    t = ltca["contact_tangent"].values[loaded]
+    w_p = 2 * math.pi * N_P / 60
+    ratio = case.gear.blank.teeth / case.pinion.blank.teeth
+    v_p = _rigid_velocity(case, "pinion", r, w_p)
+    v_g = _rigid_velocity(case, "gear", r, -w_p / ratio)
+    vpt = v_p - np.sum(v_p * n, axis=1)[:, None] * n
+    vgt = v_g - np.sum(v_g * n, axis=1)[:, None] * n
+    across = np.cross(n, t)
+    v_s = vpt - vgt
+    rolling = np.abs(0.5 * np.sum((vpt + vgt) * across, axis=1))
+    expected = {"sliding_velocity": np.linalg.norm(v_s, axis=1), "rolling_velocity": rolling,
+                "slide_to_roll": np.sum(v_s * across, axis=1) / rolling}
+    for key, value in expected.items():
+        np.testing.assert_allclose(fr[key].values[0][loaded], value, rtol=1e-7, atol=1e-9)
+    curve = loaded & (np.broadcast_to(ltca["segment_kind"].values, force.shape) == "curve")
+    assert curve.sum() > 10
+    r, n, t = (ltca[k].values[curve] for k in ("contact_point", "contact_normal",
+                                               "contact_tangent"))
+    across = np.cross(n, t)
+    k_rel = (_curvature_at(case, "pinion", ltca.attrs["pinion_flank"], r, across)
+             + _curvature_at(case, "gear", ltca.attrs["gear_flank"], r, across))
+    np.testing.assert_allclose(ltca["equivalent_radius"].values[curve], 1.0 / k_rel,
+                               rtol=0.02)
+
+
+def test_friction_stage_reads_only_the_contact_geometry():
+    """The friction stage of the FH example gets the same results from a dataset holding
+    only the loads and the contact geometry (points, normals, tangents, R_eq, segment
+    lengths; the axes, ratio and material) under a face-milled case's name: nothing in it
+    depends on the cutting process (the LTCA dataset does not even record it)."""
+    _, ltca, fr = _fh_ltca()
+    needed = ("force", "load_per_length", "pressure_max", "segment_length",
+              "equivalent_radius", "contact_point", "contact_normal", "contact_tangent")
+    keep = ("pinion_axis", "pinion_origin_mm", "gear_axis", "gear_origin_mm", "ratio",
+            "options")
+    bare = xr.Dataset({k: ltca[k] for k in needed},
+                      attrs={**{k: ltca.attrs[k] for k in keep},
+                             "case": "kolivand2009_fm_11x41"})
+    out = efficiency_analysis(bare, pinion_speed=N_P)
+    for key in fr.data_vars:
+        xr.testing.assert_identical(out[key].reset_coords(drop=True),
+                                    fr[key].reset_coords(drop=True))

@@ -43,6 +43,18 @@ orthogonal to its lengthwise curves, and its face angle measures arc length alon
 the tooth. The offset of the point from the mid-surface along e_z is ≈ ±t/2 on a
 flank. Every tooth maps to the same shell.
 
+Shell radius
+------------
+The shell is a circular cylinder of radius R (seed §3.2: the cutter radius r_c).
+For a face-milled (FM) member R is the mean point radius of the two blades, as the
+seed takes it. For a face-hobbed (FH) member (``blade_groups`` ≥ 1) the lengthwise
+curve is an extended epicycloid, not a circle of the cutter radius (seed future work
+(iii); design note ``FACE_HOBBING.md`` §6), and R is MEASURED: the mid-surface's
+normal curvature along its mid-height lengthwise curve, averaged over the arc length
+from toe to heel (:func:`shell_tooth_from_case`, Notes). The measurement is made for
+every member and reported (``measured_radius``, ``lengthwise_radius``,
+``radius_spread``), so the two choices can be compared.
+
 Public API
 ----------
 ToothModelData         frozen dataclass: the fitted ShellTooth, foundation, frames
@@ -96,6 +108,7 @@ __all__ = [
     "END_TOLERANCE",
     "N_FACE",
     "N_HEIGHT",
+    "RADIUS_SOURCES",
     "SIDES",
     "ShellPoints",
     "ToothModelData",
@@ -121,6 +134,13 @@ SIDES: dict[str, int] = {"convex": 1, "concave": -1}
 N_HEIGHT = 6
 N_FACE = 21
 
+#: how :func:`shell_tooth_from_case` chooses the shell radius R: ``"auto"`` — measured for a
+#: face-hobbed member (blade_groups ≥ 1), the mean blade point radius for a face-milled one
+#: (the seed's choice, kept so that FM results do not change); ``"measured"``, ``"point"``
+#: — that one for every member (studies, e.g. the FE comparison of
+#: tests/test_compliance_tooth.py)
+RADIUS_SOURCES = ("auto", "measured", "point")
+
 #: [1] segment end points may overhang the blank by this fraction of the face width or
 #: depth (a discretised contact curve's last segment); they are clipped onto the tooth
 END_TOLERANCE = 0.05
@@ -133,6 +153,8 @@ _TRAJ_STEPS = 4  # RK4 steps along an orthogonal trajectory: error < 2e-8 in u (
 _REF_V = 0.5  # the shell's face angle is measured along the mid-height lengthwise curve
 _ARC_MARGIN = 0.3  # the arc-length table extends this far beyond the toe and heel
 _ARC_POINTS = 801
+_TURN_POINTS = 24  # Gauss points (in u) of the normal's turning along the lengthwise curve
+_LOCAL_POINTS = 17  # local lengthwise radii reported at face fractions 0, 1/16, …, 1
 _PROJ_ITER = 30
 
 
@@ -149,7 +171,7 @@ class ToothModelData:
     ----------
     member : str — ``"pinion"`` or ``"gear"``
     tooth : ShellTooth — the fitted tapered shell (seed Eq. 3.1): thicknesses,
-        heights, shell radius R (cutter radius), Θ₀ = tooth length / R, E, ν
+        heights, shell radius R (``radius_source``), Θ₀ = tooth length / R, E, ν
     foundation : ToothFoundation — mid-face virtual spur gear (Sainsot 2004)
     teeth : int — [1] number of teeth z
     concave_shift : int — [1] k: the tooth's concave flank is the reference
@@ -164,6 +186,20 @@ class ToothModelData:
         (R θ of the shell)
     fillet_radius : tuple (float, float) — [mm] blade edge radii of the convex and
         concave flanks (the root fillets)
+    measured_radius : float — [mm] the measured lengthwise radius of the tooth: its
+        mid-height lengthwise length divided by the angle its mid-surface normal turns
+        through from toe to heel (:func:`shell_tooth_from_case`, Notes); ``inf`` if the
+        normal does not turn (straight tooth) or turns the wrong way
+    point_radius : float — [mm] mean point radius of the two blades that cut this
+        member's flanks (the seed's shell radius, seed §3.2)
+    radius_source : str — ``"measured"`` or ``"point"``: which of the two the shell
+        uses (:data:`RADIUS_SOURCES`), i.e. ``tooth.radius``
+    lengthwise_radius : ndarray (2, 17) — ([1], [mm]) face fraction u (toe 0 → heel 1)
+        at mid height and the LOCAL lengthwise radius 1/κ_n there (κ_n the mid-surface's
+        normal curvature along the lengthwise curve; ``inf`` where κ_n ≤ 0)
+    radius_spread : tuple (float, float) — [1] min and max over the face of the local
+        lengthwise radius relative to ``measured_radius``, minus 1: how far the real
+        tooth departs from one circle, a model-error indicator of the circular shell
     mean_spiral_angle : float — [rad] β_m of the tooth's mid-surface at the mean point
     virtual_pitch_radius : float — [mm] r_m / (cos δ cos² β_m), normal-section
         virtual spur gear at mid face
@@ -187,6 +223,11 @@ class ToothModelData:
     angle_coef: np.ndarray
     arc_table: np.ndarray
     fillet_radius: tuple[float, float]
+    measured_radius: float
+    point_radius: float
+    radius_source: str
+    lengthwise_radius: np.ndarray
+    radius_spread: tuple[float, float]
     mean_spiral_angle: float
     virtual_pitch_radius: float
     mean_dedendum: float
@@ -214,6 +255,11 @@ class ToothModelData:
     def surface(self) -> _Surface:
         """The mid-surface map of :attr:`corners` and :attr:`angle_coef`, prepared once."""
         return _make_surface(self.corners, self.angle_coef)
+
+    @property
+    def shell_radius(self) -> float:
+        """Radius R of the shell's mid-surface [mm] (``tooth.radius``; see ``radius_source``)."""
+        return self.tooth.radius
 
     @property
     def pitch(self) -> float:
@@ -598,6 +644,42 @@ def _arc_table(surf: _Surface) -> tuple[np.ndarray, float]:
     return np.stack([xi, arc]), float(np.interp(1.0, xi, arc))
 
 
+def _lengthwise_curvature(surf: _Surface, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Normal curvature κ_n [1/mm] of the mid-surface along its mid-height lengthwise curve
+    at face fractions u (1-D), positive when the curve bends away from the convex flank
+    (as a circular shell's lengthwise circle, whose centre lies on the concave side), and
+    the speed |M_u| [mm].
+
+    κ_n = −M_uu·e_z / |M_u|² with M = ρ e_ρ(φ) + z e_z (ρ, z bilinear in (u, v), so
+    ρ_uu = z_uu = 0): M_uu = (2 ρ_u φ_u + ρ φ_uu) e_φ − ρ φ_u² e_ρ.
+    """
+    v = np.full_like(u, _REF_V)
+    _, rho, _, ru, _, _ = _blank_rows(surf, u, v)
+    phi, fu, fuu = _angle_rows(surf, u, v, slice(None))[[0, 1, 5]]
+    c, s = np.cos(phi), np.sin(phi)
+    a_phi, a_rho = 2.0 * ru * fu + rho * fuu, -rho * fu * fu
+    m_uu = np.stack([a_rho * c - a_phi * s, a_rho * s + a_phi * c, np.zeros_like(u)], axis=-1)
+    _, mu, _ = _mid_surface(surf, u, v)
+    _, frame = _frames(surf, u, v)
+    speed2 = np.sum(mu * mu, axis=-1)
+    return -np.sum(m_uu * frame[:, 2, :], axis=-1) / speed2, np.sqrt(speed2)
+
+
+def _lengthwise_radius(surf: _Surface, length: float):
+    """Measured lengthwise radius [mm], the local radii (2, K) and their spread (see
+    :class:`ToothModelData`; :func:`shell_tooth_from_case`, Notes)."""
+    ug, wg = _gauss01(_TURN_POINTS)
+    kappa, speed = _lengthwise_curvature(surf, ug)
+    turn = float(np.sum(wg * kappa * speed))  # [rad] ∫ κ_n ds over the face
+    measured = length / turn if turn > 0.0 else math.inf
+    ul = np.linspace(0.0, 1.0, _LOCAL_POINTS)
+    kl, _ = _lengthwise_curvature(surf, ul)
+    with np.errstate(divide="ignore"):
+        local = np.where(kl > 0.0, 1.0 / kl, math.inf)
+    rel = local / measured - 1.0 if math.isfinite(measured) else np.full_like(local, np.nan)
+    return measured, np.stack([ul, local]), (float(np.min(rel)), float(np.max(rel)))
+
+
 def _fit_thickness(surf: _Surface, fl: _ToothFlanks, table: np.ndarray, length: float):
     """Measured normal thickness on the grid and its least-squares fit (seed Eq. 3.1a)."""
     both = fl.ok[0] & fl.ok[1]
@@ -681,12 +763,13 @@ def shell_tooth_from_case(
     bore_radius: float | None = None,
     nu: int = 17,
     nv: int = 11,
+    radius_source: str = "auto",
 ) -> ToothModelData:
     """Measure one member's generated tooth and fit the shell of seed Eq. 3.1.
 
     Parameters
     ----------
-    case : geometry.case.Case — a loaded case (face milling)
+    case : geometry.case.Case — a loaded case (face milling or face hobbing)
     member : str — ``"pinion"`` or ``"gear"``
     youngs_modulus : float — [MPa] E of the member's material
     poisson_ratio : float — [1] ν, in [0, 0.5)
@@ -696,21 +779,27 @@ def shell_tooth_from_case(
         do not give it
     nu, nv : int — [1] measurement grid over the flank, lengthwise × profile
         (toe → heel, root cone → face cone), 5–200 and 4–200
+    radius_source : str — one of :data:`RADIUS_SOURCES`: ``"auto"`` (default) the
+        measured lengthwise radius for a face-hobbed member (``blade_groups`` ≥ 1),
+        the mean blade point radius for a face-milled one; ``"measured"`` or
+        ``"point"`` that one for either process (for studies)
 
     Returns
     -------
     ToothModelData
-        The fitted :class:`ShellTooth` (shell radius R = cutter radius: the mean
-        of the point radii of the two blades that cut this member's flanks;
-        Θ₀ = tooth length / R), the foundation and the frame data.
+        The fitted :class:`ShellTooth` (shell radius R by ``radius_source``;
+        Θ₀ = tooth length / R), the measured lengthwise radius and its spread, the
+        foundation and the frame data.
 
     Raises
     ------
     InputError
-        Bad member name, material constants or grid sizes.
+        Bad member name, material constants, grid sizes or radius source.
     LTCAError
-        The flanks do not overlap enough to measure a tooth, or the fitted
-        dimensions are not physical (non-positive thickness or height).
+        The flanks do not overlap enough to measure a tooth, the fitted
+        dimensions are not physical (non-positive thickness or height), or the
+        measured radius is wanted but the mid-surface does not curve lengthwise
+        (its normal does not turn, or turns the wrong way, from toe to heel).
 
     Notes
     -----
@@ -755,6 +844,44 @@ def shell_tooth_from_case(
     the root plus what each root fillet of radius r_e (the blade edge radius, blade
     angle α) adds at the root line — θ_f = S_f / (2 r_f), face width = the tooth
     length.
+
+    Shell radius (seed §3.2 takes R = r_c, the cutter radius, for face milling and
+    face hobbing alike; seed future work (iii) asks for a shell with the epicycloidal
+    traces of face hobbing; design note ``FACE_HOBBING.md`` §6 keeps the circular
+    shell and measures its radius). The lengthwise circles of the circular shell are
+    lines of curvature of its cylinder: normal curvature 1/R, no geodesic curvature.
+    On the real mid-surface, along the mid-height lengthwise curve (the curve the
+    shell's face angle is measured on, ``arc_table``), the normal curvature
+    κ_n(s) = −M_ss·e_z is integrated over the arc length s (24-point Gauss in u):
+    Θ_turn = ∫ κ_n ds is the angle the mid-surface normal turns through from toe to
+    heel, and the measured radius is R = L / Θ_turn (L the curve's length). So the
+    shell subtends the real tooth's turning, Θ₀ = L/R = Θ_turn, and 1/R is the
+    arc-length mean of κ_n (its least-squares constant). The local radii 1/κ_n along
+    the face and their spread about R are kept as the model-error indicator of one
+    circle for the whole tooth.
+
+    Why not a least-squares circle of the curve in its best-fit plane: the
+    mid-height curve also bends WITHIN the tooth surface (geodesic curvature: it
+    follows the member's cone, ≈ sin²β/(R tan δ)), which a circle fitted in 3-D
+    mixes in but a cylindrical shell cannot represent — 40 mm instead of 58.5 mm for
+    the hypoid example pinion (δ = 21°); for the nearly plane gear cones the two
+    agree within 1–2 %. Why not the curvature at mid face: the shell is one circle
+    for the whole tooth; for a trace whose curvature changes nearly linearly along
+    the face (the epicycloid) the two agree within 0.2 % (example FH gear), and the
+    mean does not hang on the fit at one point. The Legendre fit of the flank
+    angles reproduces κ_n of the mid-surface between the exactly generated flanks
+    (finite differences of solve_envelope points) within 0.5 %.
+
+    Measured (tests/test_compliance_tooth.py): the FM Formate gears of the bundled
+    cases within +0.9 … +1.7 % of their mean point radius (which they keep: their
+    lengthwise curve is the cutter circle); the face-hobbed example gear
+    (tests/data/fh_iso23509_s2_crown.toml) 75.9 mm, within 0.2 % of ISO 23509's
+    lengthwise radius ρ_mβ = 75.8 mm at its mean point and 8 % below r_c0 = 82.55 mm,
+    spread −3 … +4 % toe → heel. Generated pinions differ from their cutter: the FM
+    pinions' measured radius is 4–14 % below their point radius (they keep the point
+    radius, so that FM results do not change; tests/test_compliance_tooth.py
+    compares both against FE), the FH example pinion's 8 % above its crown gear's
+    ρ_mβ (its radius grows from root to tip on its 21° cone).
     """
     t_start = time.perf_counter()
     if member not in ("pinion", "gear"):
@@ -763,6 +890,9 @@ def shell_tooth_from_case(
     nu_p = real("poisson_ratio", poisson_ratio, unit="1", low=0.0, high=0.5, high_open=True)
     nu = integer("nu", nu, 5, 200)
     nv = integer("nv", nv, 4, 200)
+    if radius_source not in RADIUS_SOURCES:
+        raise InputError(f"radius_source: must be one of {list(RADIUS_SOURCES)}, got "
+                         f"{radius_source!r}")
     mem = case.member(member)
     blank = mem.blank
 
@@ -777,7 +907,16 @@ def shell_tooth_from_case(
     (h_toe, h_heel), h_meas, h_err = _fit_heights(surf, table, length, nu)
 
     blades = {f: mem.flank(f).blade for f in SIDES}
-    radius = 0.5 * (blades["convex"].point_radius + blades["concave"].point_radius)
+    point_radius = 0.5 * (blades["convex"].point_radius + blades["concave"].point_radius)
+    measured, local, spread = _lengthwise_radius(surf, length)
+    source = radius_source
+    if source == "auto":
+        source = "measured" if mem.blade_groups >= 1 else "point"
+    if source == "measured" and not math.isfinite(measured):
+        raise LTCAError(
+            f"{member}: the tooth's mid-surface does not curve lengthwise (its normal turns "
+            "by <= 0 rad from toe to heel): no circular shell radius can be measured")
+    radius = measured if source == "measured" else point_radius
     dims = {"thickness_toe_root": t_toe, "thickness_heel_root": t_heel,
             "thickness_tip": t_tip, "height_toe": h_toe, "height_heel": h_heel}
     bad = {k: val for k, val in dims.items() if not val > 0.0}
@@ -789,12 +928,15 @@ def shell_tooth_from_case(
     vg = _virtual_gear(member, blank, corners, surf, blades, 0.5 * (t_toe + t_heel), length,
                        bore_radius, e_mod)
     elapsed = time.perf_counter() - t_start
-    log.debug("%s tooth measured in %.3f s: %s", member, elapsed, tooth)
+    log.debug("%s tooth measured in %.3f s: %s; shell radius %s (measured %.4g mm, point "
+              "%.4g mm)", member, elapsed, tooth, source, measured, point_radius)
     return ToothModelData(
         member=member, tooth=tooth, foundation=vg.foundation, teeth=blank.teeth,
         concave_shift=fl.shift, corners=corners, angle_coef=coef, arc_table=table,
         fillet_radius=(blades["convex"].edge_radius, blades["concave"].edge_radius),
-        mean_spiral_angle=vg.spiral_angle, virtual_pitch_radius=vg.pitch_radius,
+        measured_radius=measured, point_radius=point_radius, radius_source=source,
+        lengthwise_radius=local, radius_spread=spread, mean_spiral_angle=vg.spiral_angle,
+        virtual_pitch_radius=vg.pitch_radius,
         mean_dedendum=vg.dedendum, measured_thickness=t_meas, measured_height=h_meas,
         grid_u=fl.u, grid_v=fl.v, thickness_fit_error=t_err, height_fit_error=h_err,
         angle_fit_error=max(res_v, res_c), build_time=elapsed, case=case)
