@@ -91,11 +91,12 @@ def _tooth(name: str, member: str, radius_source: str = "auto"):
 #: example surfaces of tests/data, then bundled synthesised FH cases. Add a name here when
 #: its case exists; a name whose file does not exist (yet) is left out. Each case costs
 #: ~11 s in the fast suite (two FE models) and ~35 s more in the slow study.
-FH_CASES = [name for name in ("fh_iso23509_s2_crown",
-                              "kolivand2009_table54_A_fh",
-                              "kolivand2009_table54_B_fh",
-                              "kolivand2009_fh_11x41")
+FH_CASES = [name for name in ("fh_iso23509_s2_crown", "kolivand2009_fh_12x41")
             if _case_path(name).exists()]
+#: ... and in the slow study also the seed's Table 5.4 designs
+FH_STUDY = FH_CASES + [name for name in ("kolivand2009_table54_A_fh",
+                                         "kolivand2009_table54_B_fh")
+                       if _case_path(name).exists()]
 #: Bundled face-milled cases (cases/*.toml with pair.method = "FM")
 FM_BUNDLED = sorted(p.stem for p in (ROOT / "cases").glob("*.toml")
                     if tomllib.loads(p.read_text(encoding="utf-8"))["pair"].get("method", "FM")
@@ -553,7 +554,10 @@ def test_face_hobbed_tooth_deflection_matches_fe(name, member):
     tooth, the same 15 % bounds as for face milling (the seed applies the circular shell to
     FH unchanged; design note §6). Measured (fh_iso23509_s2_crown): peak ratio 1.017
     (pinion), 1.058 (gear), shape error 4 %, 6 %; with the cutter radius instead of the
-    measured one the ratios change by < 0.2 %."""
+    measured one the ratios change by < 0.2 %. The seed's Table 4.3 pair (measured radius
+    67.6/65.8 mm against the cutter's 81.9/80.9, lengthwise radius ±19 % along the face):
+    0.997 (pinion), 1.084 (gear), shape 3 %, 8 %; Table 5.4 A and B (slow study): 0.93–1.09,
+    shape ≤ 9 %."""
     case = _case(name)
     ratio, err, peak = _fe_comparison(name, member, _drive_side(case, member), (0.5, 0.5))
     assert 0.85 < ratio < 1.15
@@ -562,7 +566,7 @@ def test_face_hobbed_tooth_deflection_matches_fe(name, member):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", FH_CASES)
+@pytest.mark.parametrize("name", FH_STUDY)
 @pytest.mark.parametrize("member", ["pinion", "gear"])
 @pytest.mark.parametrize("side", [1, -1])
 @pytest.mark.parametrize("load", [(0.5, 0.5), (0.25, 0.75)])
