@@ -127,7 +127,7 @@ def test_bad_input():
 
 
 @pytest.mark.parametrize(
-    "name", ["kolivand2009_fm_11x41", "iso23509_sample2_fm", "kolivand2009_table54_B_fm"]
+    "name", ["kolivand2009_fm_11x41", "iso23509_sample2_fm", "kolivand2009_table54_B_fh"]
 )
 def test_mean_pitch_point_against_the_pitch_cone_hand_calculation(name):
     # The mean pitch point P of the ISO 23509 pitch cones (radius d_m/2 and axial place
