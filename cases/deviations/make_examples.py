@@ -24,8 +24,14 @@ mm, positive = material added (contact.utca.deviations).
   (linear in u) and a twist (u·v), shifted to one sign as the seed's Fig. 4.10 (material
   removed) and ranging 0–50 µm on the pinion (most at heel-top) and 0–25 µm on the gear
   (most at toe-root).
-* ``../kolivand2009_fm_11x41_wear.toml`` and ``../iso23509_sample2_fm_measured.toml`` —
-  the base cases with a ``[deviations]`` table pointing at those grids.
+* ``measured_fh_12x41_{pinion,gear}.csv`` — the same global, measured-like shape on the
+  face-hobbed pair the seed measured (Table 4.3, ``kolivand2009_fh_12x41``; §4.5.2: CMM
+  on a 5×9 grid, up to 50 µm on the pinion at heel-top and 25 µm on the gear at toe-root,
+  Fig. 4.10). The seed's measured values are not published, only these magnitudes and
+  corners, so the shape is the one above and not a reading of Fig. 4.10's contours.
+* ``../kolivand2009_fm_11x41_wear.toml``, ``../iso23509_sample2_fm_measured.toml`` and
+  ``../kolivand2009_fh_12x41_measured.toml`` — the base cases with a ``[deviations]``
+  table pointing at those grids.
 """
 
 from __future__ import annotations
@@ -132,10 +138,19 @@ def main() -> None:
     write("measured_iso2_gear.csv", -0.025 * _global_shape(-su, -sv),
           "measured-like global deviation, gear drive flank of iso23509_sample2_fm: "
           "0 to 25 um removed, most at toe-root (written by make_examples.py)")
+    write("measured_fh_12x41_pinion.csv", -0.050 * _global_shape(su, sv),
+          "measured-like global deviation, pinion drive flank of kolivand2009_fh_12x41: "
+          "0 to 50 um removed, most at heel-top, seed 4.5.2 (written by make_examples.py)")
+    write("measured_fh_12x41_gear.csv", -0.025 * _global_shape(-su, -sv),
+          "measured-like global deviation, gear drive flank of kolivand2009_fh_12x41: "
+          "0 to 25 um removed, most at toe-root, seed 4.5.2 (written by make_examples.py)")
     write_case("kolivand2009_fm_11x41", "wear", "wear_11x41_pinion.csv",
                "wear_11x41_gear.csv", "local wear-like deviations, seed Fig. 4.5")
     write_case("iso23509_sample2_fm", "measured", "measured_iso2_pinion.csv",
                "measured_iso2_gear.csv", "global measured-like deviations, seed Fig. 4.10")
+    write_case("kolivand2009_fh_12x41", "measured", "measured_fh_12x41_pinion.csv",
+               "measured_fh_12x41_gear.csv",
+               "global measured-like deviations of the seed's Table 4.3 pair, seed 4.5.2")
 
 
 if __name__ == "__main__":
