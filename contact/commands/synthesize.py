@@ -20,10 +20,12 @@ def register(sub) -> None:
     """Add the sub-command to an ``argparse`` sub-parser collection."""
     p = sub.add_parser(
         "synthesize",
-        help="machine settings of a face-milled pair from basic design data (case TOML)",
+        help="machine settings of a face-milled or face-hobbed pair from basic design data "
+             "(case TOML)",
         description="Read a basic design file (cases/basic/*.toml: ISO 23509 inputs, "
         "targets, synthesis options), compute the blanks, the Formate gear settings and the "
-        "generated pinion by local synthesis, and write a complete case file.",
+        "generated pinion by local synthesis, and write a complete case file. The process "
+        "follows the design's blade groups z0: 0 face milling, >= 1 face hobbing.",
     )
     p.add_argument("basic", help="basic design file (TOML, schema in docs/synthesis.md)")
     p.add_argument("-o", "--output", required=True, help="case file to write (TOML)")

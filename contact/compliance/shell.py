@@ -2,7 +2,8 @@
 
 Rayleigh–Ritz model of seed section 3.2 (Eq. 3.1–3.11), after Vaidyanathan's shell
 model (seed refs. [3.4–3.6]): the tooth is a segment of a circular cylindrical
-shell about the cutter axis, of mean radius R (the cutter radius for face milling),
+shell about the cutter axis, of mean radius R (the cutter radius for face milling, the
+measured lengthwise radius for face hobbing: :mod:`contact.compliance.tooth`),
 clamped along the root and free at the tip, toe and heel; its thickness varies
 linearly over the height and the face width and its height varies linearly along
 the face width. Transverse deflection W and shear rotations follow Mindlin's
