@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import xarray as xr
+from ltca_identities import assert_equilibrium_and_complementarity
 
 from contact import available_solvers
 from contact.cli import main
@@ -59,24 +60,7 @@ def _run(torques=(60.0, 240.0), cycles=2, rolls=6, segments=16, pairs=(-1, 0, 1,
 
 
 def test_equilibrium_and_complementarity_from_stored_results():
-    ds = _run()
-    assert ds["found"].all()
-    ratio = _case().gear.blank.teeth / _case().pinion.blank.teeth
-    F = ds["force"].fillna(0.0)
-    R = ds["moment_arm"].fillna(0.0)
-    moment = (F * R).sum(("pair", "segment"))  # N·mm
-    target = ds["torque"] * ratio * 1e3
-    # equilibrium to 1e-9 relative (the exact solver reaches round-off, ~1e-15)
-    np.testing.assert_array_less(np.abs(moment / target - 1.0).values, 1e-9)
-    assert float(ds["force"].min()) >= 0.0
-    # no load where the gap stays open: s_i > R_i Θ ⇒ F_i = 0 (C is entrywise ≥ 0)
-    theta = ds["loaded_rotation"] * 1e-6
-    open_gap = ds["separation"] > ds["moment_arm"] * theta * (1 + 1e-9) + 1e-12
-    assert float(F.where(open_gap, 0.0).max()) == 0.0
-    # contact flags exactly where forces are positive
-    assert bool(((ds["contact"] > 0) == (F > 0)).all())
-    assert float(ds["residual_equilibrium"].max()) < 1e-9
-    assert float(ds["residual_complementarity"].max()) < 1e-9
+    assert_equilibrium_and_complementarity(_run(), _case())
 
 
 def test_periodic_over_mesh_cycles():
