@@ -302,6 +302,18 @@ def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -
         raise InputError(f"{where}.{exc}") from None
 
 
+def _check_cutting_method(method: Any, z0: int) -> None:
+    """``[synthesis] method``, optional: "FM" (face milling) or "FH" (face hobbing), the
+    case file's ``pair.method``; it must agree with the blade groups ``design.z0``."""
+    if method is None:
+        return
+    if method not in ("FM", "FH"):
+        raise InputError(f"synthesis.method: must be 'FM' or 'FH', got {method!r}")
+    if (method == "FH") != (z0 >= 1):
+        need = "design.z0 >= 1 blade groups" if method == "FH" else "design.z0 = 0"
+        raise InputError(f"synthesis.method: {method!r} needs {need}, got z0 = {z0}")
+
+
 def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
     """Validate a parsed basic file and build the :class:`BasicDesign`.
 
@@ -357,12 +369,14 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
     if fit:
         design = fit_design(design, targets, tuple(adjust))
     syn = dict(raw.get("synthesis", {}))
+    _check_cutting_method(syn.pop("method", None), design.z0)
     flank_raw = {f: syn.pop(f, {}) for f in ("concave", "convex")}
     flank_common = {k: syn.pop(k) for k in list(syn) if k in _FLANK_FIELDS}
     unknown = sorted(set(syn) - _OPTION_FIELDS)
     if unknown:
+        accepted = _OPTION_FIELDS | _FLANK_FIELDS | {"concave", "convex", "method"}
         raise InputError(f"synthesis.{unknown[0]}: unknown field; accepted: "
-                         f"{sorted(_OPTION_FIELDS | _FLANK_FIELDS | {'concave', 'convex'})}")
+                         f"{sorted(accepted)}")
     common = _flank_options(flank_common, "synthesis")
     per_flank = {f: _flank_options(flank_raw[f], f"synthesis.{f}", common)
                  for f in ("concave", "convex")}

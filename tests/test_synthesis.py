@@ -425,6 +425,8 @@ def test_committed_face_hobbed_cases_are_reproduced(name):
     ({"synthesis": {"pinion_process": "Formate", "gear_process": "Generate"}}, InputError,
      "process"),
     ({"synthesis": {"gear_process": "Generate"}}, ModelUnavailableError, "not implemented"),
+    ({"synthesis": {"method": "FH"}}, InputError, r"synthesis.method: 'FH' needs design.z0"),
+    ({"synthesis": {"method": "hob"}}, InputError, "synthesis.method: must be 'FM' or 'FH'"),
 ])
 def test_bad_basic_data_names_the_field(patch, error, match):
     raw = {k: (dict(v) if isinstance(v, dict) else v) for k, v in _raw_basic().items()}
