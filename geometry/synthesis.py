@@ -601,6 +601,16 @@ class PinionTools(NamedTuple):
     normal_error: float  # [1] |generated n − designed n|
 
 
+def _cradle_for_meshing(m, nn, cradle_point, cradle_axis, ratio):
+    """The cradle axis shifted along e1 = n × c/|n × c| so that M satisfies the equation of
+    meshing at q = 0, n·[c × (M − P_c) − R_a z × M] = 0 (Litvin's ΔE_m)."""
+    nxc = np.cross(nn, cradle_axis)
+    e1 = nxc / np.linalg.norm(nxc)
+    shift = (float(nn @ np.cross(cradle_axis, m - cradle_point))
+             - ratio * float(nn @ np.cross([0.0, 0.0, 1.0], m))) / float(np.linalg.norm(nxc))
+    return cradle_point + shift * e1
+
+
 def _pinion_state(x, m, nn, u, cradle_point, cradle_axis, side, alpha, h_m, edge_radius):
     """Blade and settings for unknowns x = (r_p, κ_pr, R_a); None where they are invalid."""
     r_p, k_pr, ratio = x
@@ -611,13 +621,8 @@ def _pinion_state(x, m, nn, u, cradle_point, cradle_axis, side, alpha, h_m, edge
     # the cutter axis (direction u) meets the normal line of M at the distance ρ_M from M
     lam = sigma * rho_m / math.cos(alpha)
     centre = m + lam * nn + (h_m + lam * math.sin(alpha)) * u
-    # the cradle axis shifted along e1 = n × c/|n × c| so that M satisfies the equation of
-    # meshing at q = 0, n·[c × (M − P_c) − R_a z × M] = 0 (0 shift for the conjugate R_a)
-    nxc = np.cross(nn, cradle_axis)
-    e1 = nxc / np.linalg.norm(nxc)
-    shift = (float(nn @ np.cross(cradle_axis, m - cradle_point))
-             - ratio * float(nn @ np.cross([0.0, 0.0, 1.0], m))) / float(np.linalg.norm(nxc))
-    cradle_point = cradle_point + shift * e1
+    # M generated at q = 0 (0 shift for the conjugate R_a)
+    cradle_point = _cradle_for_meshing(m, nn, cradle_point, cradle_axis, ratio)
     try:
         if k_pr != 0.0:
             blade = Blade(side, r_p, alpha, edge_radius=edge_radius, profile="circular",
@@ -763,16 +768,6 @@ class _HobbingTool(NamedTuple):
     rotation: np.ndarray  # (3, 3) cutter frame → given pinion frame
     centre: np.ndarray  # (3,) [mm] cutter tip-plane centre, given pinion frame
     cradle_point: np.ndarray  # (3,) [mm]
-
-
-def _cradle_for_meshing(m, nn, cradle_point, cradle_axis, ratio):
-    """The cradle axis shifted along e1 = n × c/|n × c| so that M satisfies the equation of
-    meshing at q = 0, n·[c × (M − P_c) − R_a z × M] = 0 (Litvin's ΔE_m)."""
-    nxc = np.cross(nn, cradle_axis)
-    e1 = nxc / np.linalg.norm(nxc)
-    shift = (float(nn @ np.cross(cradle_axis, m - cradle_point))
-             - ratio * float(nn @ np.cross([0.0, 0.0, 1.0], m))) / float(np.linalg.norm(nxc))
-    return cradle_point + shift * e1
 
 
 def _hobbing_tool(side, r_p, k_pr, ratio, alpha, phase, offset, h_m, edge_radius, centre,
