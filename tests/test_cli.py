@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -13,6 +14,8 @@ from contact.cli import main
 from contact.io import read_netcdf, write_netcdf
 from contact.qp.benchmark_problems import ltca_like_problem
 from contact.qp.solver_study import compare_solvers, shifted_geometric_mean, summarize
+
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def test_help_lists_commands(capsys):
@@ -146,3 +149,51 @@ def test_run_prints_the_deviation_te_table_of_the_file(tmp_path, capsys):
     # without the deviations the main groups are the theoretical results of the first run
     np.testing.assert_array_equal(back["ltca"]["transmission_error"].values,
                                   tree["theoretical/ltca"]["transmission_error"].values)
+
+
+# ------------------------------------------------------------------ refuse before any work
+_FM_CASE = str(ROOT / "cases" / "kolivand2009_fm_11x41.toml")
+_FM_BASIC = str(ROOT / "cases" / "basic" / "kolivand2009_fm_11x41.toml")
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["run", "-o", "{missing}/r.nc"], "-o: directory '{missing}' does not exist"),
+    (["run", "-o", "{tmp}"], "-o: '{tmp}' is a directory; give a file name"),
+    (["run", "--plots", "{file}"], "--plots: '{file}' is a file, not a directory"),
+    (["run", "--plots", "{file}/sub"], "--plots: cannot create the directory '{file}/sub'"),
+    (["utca", _FM_CASE, "-o", "{missing}/u.nc"], "-o: directory '{missing}' does not exist"),
+    (["utca", _FM_CASE, "--plots", "{file}"], "--plots: '{file}' is a file"),
+    (["efficiency-map", "-o", "{missing}/e.nc"], "-o: directory '{missing}' does not exist"),
+    (["efficiency-map", "--plots", "{file}"], "--plots: '{file}' is a file"),
+    (["geometry", _FM_CASE, "-o", "{tmp}"], "-o: '{tmp}' is a directory"),
+    (["plot-geometry", _FM_CASE, "-o", "{file}"], "-o: '{file}' is a file"),
+    (["synthesize", _FM_BASIC, "-o", "{file}/sub/c.toml"],
+     "-o: cannot create the directory '{file}/sub'"),
+    (["compare-solvers", "-o", "{missing}/s.nc"], "-o: directory '{missing}' does not exist"),
+])
+def test_output_paths_are_refused_before_any_work(argv, message, tmp_path, monkeypatch, capsys):
+    """Every sub-command checks the places it writes before it loads a case or computes
+    anything (the loaders are replaced by a trap here): a missing directory, a directory
+    given as a file, a file given as a directory, a directory that cannot be created.
+    Answer: exit status 2 and one line ``ltca CMD: error: OPTION: …`` naming the path."""
+    def trap(*args, **kwargs):
+        raise AssertionError("work started before the output paths were checked")
+
+    import contact.pipeline
+    import contact.qp.benchmark_problems
+    import geometry.basic_design
+    import geometry.case
+
+    for mod, name in ((contact.pipeline, "resolve_case"), (geometry.case, "load_case"),
+                      (geometry.basic_design, "load_basic"),
+                      (contact.qp.benchmark_problems, "standard_problem_set")):
+        monkeypatch.setattr(mod, name, trap)
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    subs = {"missing": str(tmp_path / "missing"), "tmp": str(tmp_path), "file": str(afile)}
+    argv = [a.format(**subs) for a in argv]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0
+    assert err.startswith(f"ltca {argv[0]}: error: {message.format(**subs)}")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile"]

@@ -43,7 +43,7 @@ LAYER_DEPENDS = {
 }
 APPLICATION = {"contact", "contact.pipeline", "contact.io", "contact.plots", "contact.cli",
                "contact.__main__", "contact._moved", "contact.commands",
-               "contact.deviation_files"}
+               "contact.deviation_files", "contact.output_paths"}
 
 
 def _module_name(path: Path) -> str:

@@ -6,6 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from contact.output_paths import check_output_file
 from geometry import __version__
 
 #: Place in ``ltca --help``.
@@ -68,6 +69,8 @@ def run(args: argparse.Namespace) -> int:
     from contact.qp.benchmark_problems import standard_problem_set
     from contact.qp.solver_study import compare_solvers, default_study_solvers, summarize
 
+    if args.output:
+        check_output_file(args.output)
     if args.case is not None:
         from contact.commands.run import misalignment_from_args
         from contact.ltca import LTCAOptions, ltca_problems

@@ -6,6 +6,8 @@ import argparse
 import sys
 from pathlib import Path
 
+from contact.output_paths import check_output_dir, check_output_file
+
 #: Place in ``ltca --help``.
 ORDER = 15
 
@@ -75,6 +77,9 @@ def run(args: argparse.Namespace) -> int:
     from contact.plots import plot_efficiency_map
     from friction.operating import OperatingConditions
 
+    check_output_file(args.output)
+    if args.plots:
+        check_output_dir(args.plots)
     case = resolve_case(args.case)
     emap = efficiency_map(
         case,

@@ -5,6 +5,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from contact.output_paths import check_output_dir, check_output_file
+
 #: Place in ``ltca --help``.
 ORDER = 20
 
@@ -51,6 +53,7 @@ def run_geometry(args: argparse.Namespace) -> int:
     from contact.io import write_netcdf
     from geometry.case import load_case
 
+    check_output_file(args.output)
     case = load_case(args.case)
     tree = geometry_tree(case, args.nu, args.nv)
     path = write_netcdf(tree, Path(args.output), inputs=case.to_toml())
@@ -67,6 +70,7 @@ def run_plot_geometry(args: argparse.Namespace) -> int:
     from geometry.flank import flank_surface
     from geometry.plot import plot_flanks_in_mesh, plot_projection_grid
 
+    check_output_dir(args.output_dir, option="-o")
     case = load_case(args.case)
     out = Path(args.output_dir)
     out.mkdir(parents=True, exist_ok=True)

@@ -7,6 +7,8 @@ import math
 import sys
 from pathlib import Path
 
+from contact.output_paths import check_output_dir, check_output_file
+
 #: Place in ``ltca --help``.
 ORDER = 10
 
@@ -173,6 +175,9 @@ def run(args: argparse.Namespace) -> int:
     from contact.plots import plot_analysis
     from friction.operating import OperatingConditions
 
+    check_output_file(args.output)
+    if args.plots:
+        check_output_dir(args.plots)
     case = resolve_case(args.case)
     base = SEED_TABLE_3_1["misalignment"] if args.case is None else case.misalignment
     mis = misalignment_from_args(args, base)

@@ -8,6 +8,8 @@ import os
 import tempfile
 from pathlib import Path
 
+from contact.output_paths import check_output_file
+
 #: Place in ``ltca --help``.
 ORDER = 30
 
@@ -55,6 +57,7 @@ def run_synthesize(args: argparse.Namespace) -> int:
     from geometry.case import case_from_dict
     from geometry.synthesis import synthesize
 
+    check_output_file(args.output, create_parents=True)
     basic = load_basic(args.basic)
     case, report = synthesize(basic)
     text = _HEADER.format(basic=Path(args.basic).as_posix()) + case.to_toml()

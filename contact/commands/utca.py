@@ -7,6 +7,8 @@ import dataclasses
 import math
 from pathlib import Path
 
+from contact.output_paths import check_output_dir, check_output_file
+
 #: Place in ``ltca --help``.
 ORDER = 40
 
@@ -48,6 +50,10 @@ def run_utca(args: argparse.Namespace) -> int:
     from contact.utca import unloaded_tca
     from geometry.case import load_case
 
+    if args.output:
+        check_output_file(args.output)
+    if args.plots:
+        check_output_dir(args.plots)
     case = load_case(args.case)
     mis = case.misalignment
     given = {"delta_E": args.dE, "delta_P": args.dP, "delta_G": args.dG,
