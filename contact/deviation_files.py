@@ -84,6 +84,9 @@ def read_deviation_csv(path: str | os.PathLike[str]) -> SurfaceDeviation:
                     if r and any(c.strip() for c in r) and not r[0].lstrip().startswith("#")]
     except OSError as exc:
         raise InputError(f"path: cannot read deviation CSV {os.fspath(path)!r}: {exc}") from exc
+    except UnicodeDecodeError as exc:
+        raise InputError(f"path: deviation CSV {os.fspath(path)!r} is not UTF-8 text (byte "
+                         f"{exc.start})") from None
     if len(rows) < 2:
         raise InputError(f"path: {os.fspath(path)!r} needs a header row of u values and at "
                          "least one row of deviations")

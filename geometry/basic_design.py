@@ -412,7 +412,8 @@ def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign
     Raises
     ------
     InputError
-        Missing file, invalid TOML, or an invalid field (named by its dotted path).
+        Missing or unreadable file, not UTF-8 text, invalid TOML, or an invalid field (named
+        by its dotted path).
     ModelUnavailableError
         As :func:`basic_from_dict`.
     """
@@ -423,4 +424,9 @@ def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign
         raw = tomllib.loads(p.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"basic file {str(p)!r}: invalid TOML: {exc}") from None
+    except UnicodeDecodeError as exc:
+        raise InputError(f"basic file {str(p)!r}: not UTF-8 text (byte {exc.start}); a TOML "
+                         "file is expected") from None
+    except OSError as exc:
+        raise InputError(f"basic file {str(p)!r}: cannot be read ({exc.strerror or exc})") from None
     return basic_from_dict(raw, fit=fit)

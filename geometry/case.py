@@ -586,7 +586,8 @@ def load_case(path: str | os.PathLike[str]) -> Case:
     Raises
     ------
     InputError
-        If the file is missing, is not valid TOML, or a field is invalid (named by its path).
+        If the file is missing, unreadable, not UTF-8 text, not valid TOML, or a field is
+        invalid (named by its path).
     ModelUnavailableError
         For a ``pair.method`` that is reserved but not implemented (none today).
     """
@@ -597,6 +598,11 @@ def load_case(path: str | os.PathLike[str]) -> Case:
         raw = tomllib.loads(p.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"case file {str(p)!r}: invalid TOML: {exc}") from None
+    except UnicodeDecodeError as exc:
+        raise InputError(f"case file {str(p)!r}: not UTF-8 text (byte {exc.start}); a TOML "
+                         "file is expected") from None
+    except OSError as exc:
+        raise InputError(f"case file {str(p)!r}: cannot be read ({exc.strerror or exc})") from None
     return case_from_dict(raw, base_dir=p.resolve().parent)
 
 

@@ -197,3 +197,23 @@ def test_output_paths_are_refused_before_any_work(argv, message, tmp_path, monke
     assert err.count("\n") == 0
     assert err.startswith(f"ltca {argv[0]}: error: {message.format(**subs)}")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["afile"]
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["geometry", "{bin}.toml", "-o", "{tmp}/g.nc"], "case file '{bin}.toml': not UTF-8 text"),
+    (["synthesize", "{bin}.toml", "-o", "{tmp}/c.toml"],
+     "basic file '{bin}.toml': not UTF-8 text"),
+    (["run", _FM_CASE, "--deviations", "{bin}.csv", "-", "-o", "{tmp}/r.nc"],
+     "path: deviation CSV '{bin}.csv' is not UTF-8 text"),
+])
+def test_binary_input_files_are_refused_in_one_line(argv, message, tmp_path, capsys):
+    """A case, basic or deviation file of binary bytes: one line naming the file, no
+    UnicodeDecodeError traceback."""
+    for ext in (".toml", ".csv"):
+        (tmp_path / f"bin{ext}").write_bytes(b"\x89PNG\r\n\x1a\n\xff\xfe\x00")
+    subs = {"bin": str(tmp_path / "bin"), "tmp": str(tmp_path)}
+    argv = [a.format(**subs) for a in argv]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith(f"ltca {argv[0]}: error: {message.format(**subs)}")
+    assert err.count("\n") == 0
