@@ -11,6 +11,7 @@ Public functions
 netcdf_safe_attrs   convert an attribute dict to netCDF-safe types (bool → 0/1, dict → JSON)
 check_conventions   raise if a variable lacks ``units``/``long_name`` or an attribute is unsafe
 write_netcdf        write a Dataset or DataTree atomically, stamped with version and inputs
+without_stamps      a dataset read back without what write_netcdf stamped (round-trip tests)
 read_netcdf         read a file written by :func:`write_netcdf` fully into memory
 """
 
@@ -33,11 +34,17 @@ from geometry.conventions import data_var
 from geometry.errors import InputError, LTCAError
 
 __all__ = [
+    "ACDD_ATTRS",
+    "CONVENTIONS",
+    "DEFAULT_COMPLEVEL",
+    "STAMPED_ATTRS",
+    "STAMPED_VARIABLE_ATTRS",
     "NetCDFError",
     "check_conventions",
     "data_var",
     "netcdf_safe_attrs",
     "read_netcdf",
+    "without_stamps",
     "write_netcdf",
 ]
 
@@ -139,17 +146,108 @@ def check_conventions(obj: xr.Dataset | xr.DataTree) -> None:
         raise NetCDFError("dataset breaks the netCDF conventions:\n  " + "\n  ".join(problems))
 
 
-def _stamp(ds: xr.Dataset, inputs: str | None) -> xr.Dataset:
+#: the conventions every file declares (CF for the variables, ACDD for the discovery
+#: attributes of every group)
+CONVENTIONS = "CF-1.10, ACDD-1.3"
+#: what the toolkit does, in one sentence (the default ``summary`` of a group)
+_DESCRIPTION = (
+    "Loaded tooth contact analysis of hypoid and spiral bevel gears: machine-setting "
+    "geometry, ease-off unloaded tooth contact analysis, shell compliance, quadratic-"
+    "programming load distribution and mixed-EHL efficiency"
+)
+#: ACDD 1.3 discovery attributes stamped on every group (so that a group extracted on its
+#: own still says what it is, who made it and under which licence); docs/nomenclature.md
+ACDD_ATTRS = {
+    "keywords": (
+        "hypoid gears, spiral bevel gears, tooth contact analysis, loaded tooth contact "
+        "analysis, ease-off, transmission error, contact pressure, mechanical efficiency"
+    ),
+    "license": "BSD-3-Clause",
+    "institution": "the hypoid-ltca developers",
+    "creator_name": "the hypoid-ltca developers",
+    "creator_type": "group",
+    "product_version": __version__,
+    "references": (
+        "Kolivand, M., 2009. Development of tooth contact and mechanical efficiency models "
+        "for face-milled and face-hobbed hypoid and spiral bevel gears. Ph.D. dissertation, "
+        "The Ohio State University"
+    ),
+}
+#: group attributes :func:`write_netcdf` adds where the data do not set them
+STAMPED_ATTRS = ("toolkit", "toolkit_version", "Conventions", "title", "summary", *ACDD_ATTRS,
+                 "source", "date_created", "history", "inputs")
+#: variable attributes :func:`write_netcdf` adds where the data do not set them
+STAMPED_VARIABLE_ATTRS = ("coverage_content_type",)
+#: zlib level of the data variables unless the caller says otherwise (lossless; the
+#: default ``ltca run`` file shrinks from 23.6 MB to ~3 MB, most of it NaN padding)
+DEFAULT_COMPLEVEL = 4
+
+
+def _stamp(ds: xr.Dataset, inputs: str | None, *, created: str, path: str = "/",
+           root_title: str | None = None) -> xr.Dataset:
     ds = ds.copy(deep=False)
     ds.attrs = netcdf_safe_attrs(ds.attrs)
     for name in ds.variables:
         ds[name].attrs = netcdf_safe_attrs(ds[name].attrs)
+        ds[name].attrs.setdefault("coverage_content_type", _content_type(ds, name))
     ds.attrs.setdefault("toolkit", "hypoid-ltca")
     ds.attrs["toolkit_version"] = __version__
-    ds.attrs.setdefault("Conventions", "CF-1.10")
+    ds.attrs["Conventions"] = CONVENTIONS
+    if "title" not in ds.attrs:
+        ds.attrs["title"] = (f"{root_title}: {path}" if root_title and path != "/"
+                             else f"hypoid-ltca output {path}")
+    ds.attrs.setdefault("summary", f"{ds.attrs['title']}. {_DESCRIPTION}.")
+    for key, value in ACDD_ATTRS.items():
+        ds.attrs.setdefault(key, value)
+    ds.attrs.setdefault("source", f"hypoid-ltca {__version__}")
+    ds.attrs.setdefault("date_created", created)
+    ds.attrs.setdefault("history", f"{created} written by hypoid-ltca {__version__}")
     if inputs is not None:
         ds.attrs["inputs"] = inputs
     return ds
+
+
+def _content_type(ds: xr.Dataset, name: str) -> str:
+    """ACDD ``coverage_content_type`` (ISO 19115-1 code) of a variable the stage left
+    unlabelled: coordinates are ``coordinate``, enumerations (``flag_values``)
+    ``auxiliaryInformation``, everything else a ``modelResult``."""
+    if name in ds.coords:
+        return "coordinate"
+    if "flag_values" in ds[name].attrs or "flag_masks" in ds[name].attrs:
+        return "auxiliaryInformation"
+    return "modelResult"
+
+
+def _encoding(ds: xr.Dataset, complevel: int) -> dict[str, dict[str, Any]]:
+    """netCDF encoding of each variable: no ``_FillValue`` on coordinates (CF 2.5.1) nor
+    on a variable without missing values; NaN as the fill of float data that has NaN;
+    zlib (with shuffle) at ``complevel`` on numeric data variables (0: none)."""
+    out: dict[str, dict[str, Any]] = {}
+    for name, var in ds.variables.items():
+        enc: dict[str, Any] = {k: v for k, v in var.encoding.items() if k == "dtype"}
+        kind = var.dtype.kind
+        missing = (name not in ds.coords and kind in "fc"
+                   and bool(np.isnan(np.asarray(var.values)).any()))
+        if kind in "fciub":
+            enc["_FillValue"] = np.nan if missing else None
+        if name not in ds.coords and kind in "fciub" and var.ndim > 0 and complevel > 0:
+            enc.update(zlib=True, complevel=int(complevel), shuffle=True)
+        out[str(name)] = enc
+    return out
+
+
+def without_stamps(written: xr.Dataset, original: xr.Dataset) -> xr.Dataset:
+    """``written`` (a dataset read back) without the attributes :func:`write_netcdf`
+    stamped on it that ``original`` (the dataset given to it) did not have: for
+    round-trip comparisons."""
+    out = written.copy(deep=False)
+    out.attrs = {k: v for k, v in out.attrs.items()
+                 if k in original.attrs or k not in STAMPED_ATTRS}
+    for name in out.variables:
+        before = original[name].attrs if name in original.variables else {}
+        out[name].attrs = {k: v for k, v in out[name].attrs.items()
+                           if k in before or k not in STAMPED_VARIABLE_ATTRS}
+    return out
 
 
 def _umask() -> int:
@@ -163,13 +261,19 @@ def write_netcdf(
     path: str | os.PathLike[str],
     *,
     inputs: str | None = None,
+    complevel: int = DEFAULT_COMPLEVEL,
 ) -> Path:
     """Write a Dataset or DataTree to netCDF4 atomically.
 
     The data are checked against :func:`check_conventions`, attributes are made
-    netCDF-safe, the root group is stamped with the toolkit version, the creation
-    time (``history``) and ``inputs`` (e.g. the case as TOML text), then written to a
-    temporary file beside ``path`` which is renamed onto ``path`` only once complete.
+    netCDF-safe, every group is stamped with the toolkit version, the conventions
+    (:data:`CONVENTIONS`), the ACDD discovery attributes (:data:`ACDD_ATTRS`, a
+    ``summary``, ``date_created``, ``history``) and every variable with its
+    ``coverage_content_type``, where the data do not set them; the root group also
+    records ``inputs`` (e.g. the case as TOML text). Coordinates and variables without
+    missing values carry no ``_FillValue``; numeric data variables are zlib-compressed
+    (lossless). The file is written to a temporary file beside ``path`` which is renamed
+    onto ``path`` only once complete.
 
     Parameters
     ----------
@@ -178,6 +282,8 @@ def write_netcdf(
         Target file; its directory must exist.
     inputs : str, optional
         Text recording what produced the data (stored in the ``inputs`` attribute).
+    complevel : int
+        zlib level 1–9 of the numeric data variables; 0 writes them uncompressed.
 
     Returns
     -------
@@ -193,24 +299,28 @@ def write_netcdf(
     path = Path(path)
     if not path.parent.exists():
         raise NetCDFError(f"output directory {str(path.parent)!r} does not exist")
+    if not 0 <= int(complevel) <= 9:
+        raise InputError(f"complevel {complevel!r} must be 0 (no compression) to 9")
     check_conventions(obj)
     created = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%dT%H:%M:%SZ")
+    encoding: dict[str, Any]
     if isinstance(obj, xr.DataTree):
         tree = obj.copy()
+        title = tree.attrs.get("title")
         for node in tree.subtree:
-            node.dataset = _stamp(node.to_dataset(inherit=False), None)
-        root = tree.to_dataset(inherit=False)
-        root = _stamp(root, inputs)
-        root.attrs.setdefault("history", f"{created} written by hypoid-ltca {__version__}")
-        tree.dataset = root
+            node.dataset = _stamp(node.to_dataset(inherit=False),
+                                  inputs if node.is_root else None, created=created,
+                                  path=node.path, root_title=title)
+        encoding = {node.path: _encoding(node.to_dataset(inherit=False), complevel)
+                    for node in tree.subtree}
         out: xr.Dataset | xr.DataTree = tree
     else:
-        out = _stamp(obj, inputs)
-        out.attrs.setdefault("history", f"{created} written by hypoid-ltca {__version__}")
+        out = _stamp(obj, inputs, created=created)
+        encoding = _encoding(out, complevel)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
     try:
-        out.to_netcdf(tmp, engine=_ENGINE)
+        out.to_netcdf(tmp, engine=_ENGINE, encoding=encoding)
         os.chmod(tmp, 0o666 & ~_umask())  # mkstemp creates 0600; give the usual mode
         os.replace(tmp, path)
     except Exception as exc:

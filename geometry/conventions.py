@@ -12,7 +12,9 @@ from __future__ import annotations
 
 from typing import Any
 
-__all__ = ["data_var"]
+import numpy as np
+
+__all__ = ["binary_flag", "data_var"]
 
 
 def data_var(dims, data, units: str | None, long_name: str, **attrs: Any) -> tuple:
@@ -41,3 +43,23 @@ def data_var(dims, data, units: str | None, long_name: str, **attrs: Any) -> tup
     if units is not None:
         a = {"units": units, **a}
     return (dims, data, a)
+
+
+def binary_flag(off: str, on: str) -> dict[str, Any]:
+    """CF flag attributes of a 0/1 variable stored as int8 (CF 3.5).
+
+    Parameters
+    ----------
+    off, on : str
+        One word each (no spaces; words joined by ``_``): the meaning of 0 and of 1.
+
+    Returns
+    -------
+    dict
+        ``flag_values`` (int8 array ``[0, 1]``, the variable's type) and
+        ``flag_meanings`` (``"off on"``), to pass to :func:`data_var` as ``**attrs``.
+    """
+    for word in (off, on):
+        if not word or " " in word:
+            raise ValueError(f"a flag meaning is one word without spaces, not {word!r}")
+    return {"flag_values": np.array([0, 1], dtype=np.int8), "flag_meanings": f"{off} {on}"}

@@ -31,6 +31,7 @@ import numpy as np
 import xarray as xr
 
 from geometry._version import __version__
+from geometry.conventions import binary_flag
 from geometry.curvature import surface_curvatures
 from geometry.cutter import profile_sections
 from geometry.errors import InputError
@@ -414,7 +415,8 @@ def flank_dataset(case: Case, member: str, flank: str, *, surface: FlankSurface 
                               "blade section that generates the point",
                               flag_values=np.arange(len(sec_names), dtype=np.int8),
                               flag_meanings=" ".join(sec_names)),
-        "mask": _var(uv, fs.valid.astype(np.int8), "1", "1 where the point is generated"),
+        "mask": _var(uv, fs.valid.astype(np.int8), "1", "1 where the point is generated",
+                     **binary_flag("not_generated", "generated")),
         "mask_reason": _var(uv, fs.reason.astype(np.int8), "1",
                             "why a point is not generated", flag_values=codes,
                             flag_meanings=" ".join(REASONS[int(c)] for c in codes)),

@@ -29,6 +29,7 @@ from contact.ltca.segments import Segments
 from contact.ltca.transmission_error import transmission_error_summary
 from contact.qp.problem import RESIDUALS
 from geometry import __version__
+from geometry.conventions import binary_flag
 from geometry.conventions import data_var as _var
 
 __all__ = ["json_misalignment", "ltca_dataset"]
@@ -89,10 +90,11 @@ def _load_vars(lte: np.ndarray, screening: Screening, results: RollResults) -> d
         "pressure_max": _var(_DIMS4, results.pressure_max, "MPa",
                              "maximum Hertzian pressure (line contact)"),
         "half_width": _var(_DIMS4, results.half_width, "mm", "Hertzian half-width"),
-        "contact": _var(_DIMS4, results.contact, "1", "segment in contact (1) or open (0)"),
+        "contact": _var(_DIMS4, results.contact, "1", "segment in contact (1) or open (0)",
+                        **binary_flag("open", "in_contact")),
         "in_problem": _var(_DIMS4, results.in_problem, "1",
                            "segment in the contact problem (1) or left out, its gap open "
-                           "(0)"),
+                           "(0)", **binary_flag("left_out", "in_problem")),
     }
 
 
@@ -141,9 +143,11 @@ def _solution_vars(seg: Segments, results: RollResults) -> dict:
     return {
         "load_share": _var(_DIMS3, share, "1", "share of the gear torque carried by the pair"),
         "edge_contact": _var(_DIMS3, edge, "1",
-                             "load reaches the end of the pair's contact curve (flank edge)"),
+                             "load reaches the end of the pair's contact curve (flank edge)",
+                             **binary_flag("within_flank", "edge_contact")),
         "pairs_in_contact": _var(_DIMS2, pairs_in_contact, "1", "number of pairs in contact"),
-        "found": _var(_DIMS2, results.found, "1", "certified solution found (1) or not (0)"),
+        "found": _var(_DIMS2, results.found, "1", "certified solution found (1) or not (0)",
+                      **binary_flag("not_found", "found")),
         "status": _var(_DIMS2, results.status.astype(str), None, "solver status"),
         "solve_time": _var(_DIMS2, results.solve_time, "s",
                            "solver time over the Weber iterations"),

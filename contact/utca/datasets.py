@@ -44,6 +44,7 @@ from contact.utca.contact_curves import (
 from contact.utca.easeoff import EASEOFF_REASONS, EaseOff, ease_off
 from contact.utca.fields import EaseOffFields
 from geometry import __version__
+from geometry.conventions import binary_flag
 from geometry.conventions import data_var as _var
 from geometry.errors import InputError
 from geometry.validation import integer, one_of, positive
@@ -333,7 +334,8 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
             "unloaded transmission error of each tooth pair (min of the ease-off on its "
             "contact curve; NaN out of mesh)"),
         "active": _var(("roll", "pair"), active.astype(np.int8), "1",
-                       "1 where the pair carries the motion (its UTE is the lower envelope)"),
+                       "1 where the pair carries the motion (its UTE is the lower envelope)",
+                       **binary_flag("inactive", "active")),
         **_curve_variables(cc, zr, sep_env, pattern),
         **_path_variables(cc, length, path_u, path_v, zr),
         **_cycle_variables(cycle, separation),
@@ -419,7 +421,7 @@ def _curve_variables(cc: ContactCurves, zr, sep_env: np.ndarray, pattern: np.nda
                            "actual (lower-envelope) position"),
         "contact_pattern": _var(dims3, pattern, "1",
                                 "1 where the pair is active and its separation is within "
-                                "the threshold"),
+                                "the threshold", **binary_flag("outside", "inside")),
     }
 
 
@@ -614,7 +616,8 @@ def _easeoff_variables(eo: EaseOff) -> dict:
                                 "distance of the conjugate point from the node in the "
                                 "projection plane"),
         "mask": _var(uv, eo.valid.astype(np.int8), "1",
-                     "1 where the pinion can touch the real gear"),
+                     "1 where the pinion can touch the real gear",
+                     **binary_flag("masked", "valid")),
         "mask_reason": _var(uv, eo.reason.astype(np.int8), "1", "why a node is masked",
                             flag_values=codes,
                             flag_meanings=" ".join(EASEOFF_REASONS[int(c)] for c in codes)),
