@@ -771,11 +771,12 @@ class _HobbingTool(NamedTuple):
 
 
 def _hobbing_tool(side, r_p, k_pr, ratio, alpha, phase, offset, h_m, edge_radius, centre,
-                  axis, cradle_point, cradle_axis, kappa, m, nn) -> _HobbingTool | None:
-    """Pinion face-hobbing tool for the given blade and cutter pose; None where invalid."""
-    if r_p <= 0 or ratio <= 0 or abs(k_pr) * max(edge_radius, 1.0) >= 0.5:
+                  axis, cp, cradle_axis, kappa) -> _HobbingTool | None:
+    """Pinion face-hobbing tool for the given blade and cutter pose (``cp`` the cradle
+    point, already shifted by :func:`_cradle_for_meshing` for ``ratio``); None where
+    invalid."""
+    if r_p <= 0 or abs(k_pr) * max(edge_radius, 1.0) >= 0.5:
         return None
-    cp = _cradle_for_meshing(m, nn, cradle_point, cradle_axis, ratio)
     try:
         profile = (dict(profile="circular", profile_radius=1.0 / k_pr,
                         profile_reference_height=h_m) if k_pr != 0.0 else {})
@@ -883,8 +884,8 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
     tb = _tangent_basis(nn)
     zm, pm = float(m[2]), float(math.hypot(m[0], m[1]))
     # conjugate blade: the gear edge line through M in the pinion cutter frame
-    ref = _hobbing_tool(side, 1.0, 0.0, ratio_of_roll, 0.0, 0.0, 0.0, h_m, 0.0, c0, u, cp0,
-                        ca, kappa, m, nn)
+    ref = _hobbing_tool(side, 1.0, 0.0, ratio_of_roll, 0.0, 0.0, 0.0, h_m, 0.0, c0, u,
+                        _cradle_for_meshing(m, nn, cp0, ca, ratio_of_roll), ca, kappa)
     if ref is None:
         raise InputError("synthesis: no face-hobbing pinion cutter pose exists at M")
     g = ref.rotation.T @ _unit(np.asarray(gear_edge_direction, float))
@@ -906,12 +907,14 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
 
     def tool_for(x):
         r_p, k_pr, ratio = x
+        if ratio <= 0:
+            return None
         kappa_g = kappa / ratio
+        cp = _cradle_for_meshing(m, nn, cp0, ca, ratio)
 
         def make(y):
             return _hobbing_tool(side, r_p, k_pr, ratio, alpha0 + y[4], phase0 + y[3],
-                                 offset0, h_m, edge_radius, c0 + y[:3], u, cp0, ca, kappa,
-                                 m, nn)
+                                 offset0, h_m, edge_radius, c0 + y[:3], u, cp, ca, kappa)
 
         def res(y):
             t = make(y)
