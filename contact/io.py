@@ -32,6 +32,7 @@ import xarray as xr
 from geometry import __version__
 from geometry.conventions import data_var
 from geometry.errors import InputError, LTCAError
+from geometry.validation import integer
 
 __all__ = [
     "ACDD_ATTRS",
@@ -299,8 +300,7 @@ def write_netcdf(
     path = Path(path)
     if not path.parent.exists():
         raise NetCDFError(f"output directory {str(path.parent)!r} does not exist")
-    if not 0 <= int(complevel) <= 9:
-        raise InputError(f"complevel {complevel!r} must be 0 (no compression) to 9")
+    complevel = integer("complevel", complevel, 0, 9)
     check_conventions(obj)
     created = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%dT%H:%M:%SZ")
     encoding: dict[str, Any]
