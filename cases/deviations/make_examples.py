@@ -132,18 +132,15 @@ def main() -> None:
               f"({amp * 1e3:g} um), centred at u {a[f'{m}_u']:.3f}, v {vc:.3f}, "
               f"zero below v {a[f'{m}_v_low']:.3f} (written by make_examples.py)")
     su, sv = 2 * uu - 1, 2 * vv - 1
-    write("measured_iso2_pinion.csv", -0.050 * _global_shape(su, sv),
-          "measured-like global deviation, pinion drive flank of iso23509_sample2_fm: "
-          "0 to 50 um removed, most at heel-top (written by make_examples.py)")
-    write("measured_iso2_gear.csv", -0.025 * _global_shape(-su, -sv),
-          "measured-like global deviation, gear drive flank of iso23509_sample2_fm: "
-          "0 to 25 um removed, most at toe-root (written by make_examples.py)")
-    write("measured_fh_12x41_pinion.csv", -0.050 * _global_shape(su, sv),
-          "measured-like global deviation, pinion drive flank of kolivand2009_fh_12x41: "
-          "0 to 50 um removed, most at heel-top, seed 4.5.2 (written by make_examples.py)")
-    write("measured_fh_12x41_gear.csv", -0.025 * _global_shape(-su, -sv),
-          "measured-like global deviation, gear drive flank of kolivand2009_fh_12x41: "
-          "0 to 25 um removed, most at toe-root, seed 4.5.2 (written by make_examples.py)")
+    # the same measured-like global deviation (seed §4.5.2's sizes) on two pairs
+    for tag, case, note in (("iso2", "iso23509_sample2_fm", ""),
+                            ("fh_12x41", "kolivand2009_fh_12x41", ", seed 4.5.2")):
+        write(f"measured_{tag}_pinion.csv", -0.050 * _global_shape(su, sv),
+              f"measured-like global deviation, pinion drive flank of {case}: "
+              f"0 to 50 um removed, most at heel-top{note} (written by make_examples.py)")
+        write(f"measured_{tag}_gear.csv", -0.025 * _global_shape(-su, -sv),
+              f"measured-like global deviation, gear drive flank of {case}: "
+              f"0 to 25 um removed, most at toe-root{note} (written by make_examples.py)")
     write_case("kolivand2009_fm_11x41", "wear", "wear_11x41_pinion.csv",
                "wear_11x41_gear.csv", "local wear-like deviations, seed Fig. 4.5")
     write_case("iso23509_sample2_fm", "measured", "measured_iso2_pinion.csv",
