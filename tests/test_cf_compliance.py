@@ -60,7 +60,7 @@ def _groups(nc, where="/"):
 
 def test_compliance_checker_high_priority(small_run):
     pytest.importorskip("compliance_checker", reason="pip install compliance-checker")
-    from tests.cf_check import check_file
+    from cf_check import check_file
 
     report = check_file(small_run)
     assert {"/", "/ltca", "/utca", "/easeoff", "/geometry/gear/convex"} <= set(report)
