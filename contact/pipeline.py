@@ -43,6 +43,7 @@ __all__ = [
     "bundled_cases",
     "efficiency_map",
     "resolve_case",
+    "resolve_deviations",
     "run_analysis",
 ]
 
@@ -114,8 +115,25 @@ def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
     return load_case(bundled_case_path(str(case)))
 
 
-def _resolve_deviations(c: Case, deviations) -> tuple | None:
-    """(pinion, gear) SurfaceDeviations for run_analysis, or None for the theoretical only."""
+def resolve_deviations(c: Case, deviations) -> tuple | None:
+    """The (pinion, gear) SurfaceDeviations of :func:`run_analysis`'s ``deviations``.
+
+    Parameters
+    ----------
+    c : geometry.case.Case
+    deviations : (pinion, gear), False or None
+        As :func:`run_analysis`: None reads the case's ``[deviations]`` files.
+
+    Returns
+    -------
+    (SurfaceDeviation or None, SurfaceDeviation or None) or None
+        None for the theoretical surfaces only.
+
+    Raises
+    ------
+    InputError
+        A malformed pair or an unreadable deviation file.
+    """
     if deviations is None:
         files = c.deviations
         deviations = None if files is None else (files.pinion, files.gear)
@@ -144,6 +162,7 @@ def run_analysis(
     deviations: tuple | bool | None = None,
     geometry: bool = True,
     progress: bool = False,
+    theoretical: bool = True,
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -178,6 +197,10 @@ def run_analysis(
         Include the four generated flanks as ``/geometry`` (default True).
     progress : bool
         Progress bar over the LTCA roll positions.
+    theoretical : bool
+        With deviations, also analyse the theoretical surfaces (``/theoretical``,
+        default True); False skips them (studies keep only the deviated results, which
+        are the same either way).
 
     Returns
     -------
@@ -215,24 +238,27 @@ def run_analysis(
     t0 = time.perf_counter()
     eo = ease_off(c, flank=flank)
     times["easeoff"] = time.perf_counter() - t0
-    deviations = _resolve_deviations(c, deviations)
+    deviations = resolve_deviations(c, deviations)
     if deviations is not None:
         from contact.utca.deviations import apply_deviations
 
         pin_dev, gear_dev = deviations
         t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo)
         tree["/theoretical/easeoff"] = t_eo
-        tree["/theoretical/utca"] = t_ut
-        tree["/theoretical/ltca"] = loaded_tca(
-            c, torques, flank=flank, options=opts, easeoff=eo,
-            transitions=tuple(t_ut["transition_roll"].values),
-        )
+        if theoretical:
+            tree["/theoretical/utca"] = t_ut
+            tree["/theoretical/ltca"] = loaded_tca(
+                c, torques, flank=flank, options=opts, easeoff=eo,
+                transitions=tuple(t_ut["transition_roll"].values),
+            )
         eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
     t0 = time.perf_counter()
     eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
     times["utca"] = time.perf_counter() - t0
     if "/theoretical/easeoff" in tree:
         change = (eo_ds["ease_off"] - tree["/theoretical/easeoff"]["ease_off"]).astype(float)
+        if not theoretical:
+            del tree["/theoretical/easeoff"]
         eo_ds["ease_off_change"] = change.assign_attrs(
             units=eo_ds["ease_off"].attrs.get("units", "um"),
             long_name="ease-off change by the surface deviations (deviated - theoretical)",
