@@ -21,6 +21,7 @@ ContactSegments       frozen dataclass: the segments of one roll position (pair 
 PairComplianceModel   both members' tooth models and the shell settings
 pair_compliance_model build (memoised per case text and settings)
 clear_model_cache     forget the memoised models
+model_cache_info      hits and misses of the memo
 mesh_compliance       C and its parts
 """
 
@@ -64,6 +65,7 @@ __all__ = [
     "clear_model_cache",
     "mesh_compliance",
     "mesh_compliance_many",
+    "model_cache_info",
     "pair_compliance_model",
 ]
 
@@ -262,6 +264,12 @@ def pair_compliance_model(
     teeth_case = dataclasses.replace(case, misalignment=Misalignment(), deviations=None)
     return _memo_pair(teeth_case.to_toml(), str(theory), n_height, n_face, tuple(materials),
                       bores)
+
+
+def model_cache_info() -> tuple[int, int, int | None, int]:
+    """Hits, misses and size of the memo of :func:`pair_compliance_model` in this process
+    (a study asks its workers, to show the tooth models are built once per worker)."""
+    return _memo_pair.cache_info()
 
 
 def clear_model_cache() -> None:

@@ -200,7 +200,7 @@ def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator
 
 
 def _stamp(ds: xr.Dataset, shared: StudyInputs, kind: str, resumed: int) -> xr.Dataset:
-    ds = ds.drop_attrs() if hasattr(ds, "drop_attrs") else ds.assign_attrs({})
+    ds = ds.copy()
     ds.attrs = {
         "title": f"hypoid-ltca {kind} of {shared.case.name}",
         "case": shared.case.name,
@@ -272,6 +272,9 @@ def run_points(
         if set(p) != set(names):
             raise InputError(f"point {i}: sets {sorted(p)}, the study's inputs are "
                              f"{sorted(names)}")
+    if "deviation_scale" in names and shared.deviations is None:
+        raise InputError(f"deviation_scale: case {shared.case.name!r} has no [deviations] "
+                         "table to scale")
     store = None
     done: set[int] = set()
     if output is not None:

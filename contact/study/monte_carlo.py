@@ -47,7 +47,7 @@ DISTRIBUTIONS: Mapping[str, tuple[Any, str]] = {
 }
 
 
-def parse_distribution(name: str, text: str) -> Any:
+def parse_distribution(name: str, text: str, scale: float = 1.0) -> Any:
     """A frozen scipy.stats distribution from ``KIND:P1:P2…`` (e.g. ``normal:0:0.05``).
 
     Parameters
@@ -56,7 +56,11 @@ def parse_distribution(name: str, text: str) -> Any:
         The input it is for (named in errors).
     text : str
         ``normal:mean:std``, ``uniform:low:high``, ``truncnormal:mean:std:low:high`` or
-        ``triangular:low:mode:high``, in the input's units (:data:`POINT_INPUTS`).
+        ``triangular:low:mode:high``, in the input's units (:data:`POINT_INPUTS`) or in
+        units ``scale`` times smaller.
+    scale : float
+        Factor on every parameter (all are locations or widths), e.g. π/180 for a ΔΣ
+        typed in degrees.
 
     Returns
     -------
@@ -81,6 +85,7 @@ def parse_distribution(name: str, text: str) -> Any:
                          f"{text!r}") from None
     if not np.all(np.isfinite(p)):
         raise InputError(f"{name}: parameters must be finite, got {text!r}")
+    p = [x * float(scale) for x in p]
     if (kind == "normal" and p[1] <= 0) or (kind == "truncnormal" and (p[1] <= 0 or p[2] >= p[3])):
         raise InputError(f"{name}: {kind} needs std > 0 (and low < high), got {text!r}")
     if kind == "uniform" and p[0] >= p[1]:
