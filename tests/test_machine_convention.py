@@ -490,3 +490,11 @@ def test_spygo_blade_table_names_its_fields():
     raw["pinion"]["machine"]["concave"]["modified_roll"] = [0.0] * 5
     with pytest.raises(InputError, match=r"^pinion\.machine\.concave\.modified_roll"):
         case_from_dict(raw)
+
+
+def test_spygo_summaries_are_face_milling_only():
+    raw = tomllib.loads((ROOT / "cases" / "kolivand2009_fh_12x41.toml").read_text("utf-8"))
+    raw["pinion"]["machine"]["convention"] = "spygo"
+    with pytest.raises(InputError, match=r"^pinion\.machine\.convention: 'spygo' summaries "
+                                         r"are face milling"):
+        case_from_dict(raw)
