@@ -581,7 +581,7 @@ def simulate_wear(
         records[-1]["step_time"] = time.perf_counter() - t0
         log.info("wear step %d: cycles %.4g, max depth pinion %.3g um, gear %.3g um, UTE p-p "
                  "%.3g urad, LTE p-p %.3g urad, peak pressure %.4g MPa", i, i * per_step,
-                 -1e3 * pin.min(initial=0.0), -1e3 * gear.min(initial=0.0),
+                 max(-1e3 * pin.min(), 0.0), max(-1e3 * gear.min(), 0.0),
                  records[-1]["ute_pp"], records[-1]["lte_pp"], records[-1]["p_max"])
         if i < steps:
             pin = pin - per_step * rate_p
@@ -656,9 +656,9 @@ def _wear_dataset(c: Case, records: list[dict], gu, gv, per_step: float, z_ratio
         "gear_wear_rate": data_var(("step", "u_gear", "v_gear"), stack("rate_g"), "mm",
                                    "gear wear depth per pinion load cycle at the state (per "
                                    "gear tooth, z_p/z_g meshes)"),
-        "max_pinion_depth": data_var("step", -np.minimum(pin.min(axis=(1, 2)), 0.0), "mm",
+        "max_pinion_depth": data_var("step", np.maximum(-pin.min(axis=(1, 2)), 0.0), "mm",
                                      "largest pinion wear depth"),
-        "max_gear_depth": data_var("step", -np.minimum(gear.min(axis=(1, 2)), 0.0), "mm",
+        "max_gear_depth": data_var("step", np.maximum(-gear.min(axis=(1, 2)), 0.0), "mm",
                                    "largest gear wear depth"),
         "unloaded_transmission_error": data_var(("step", "roll_utca"), stack("ute"), "urad",
                                                 "unloaded transmission error"),
