@@ -42,6 +42,7 @@ LAYER_DEPENDS = {
     "contact.ltca": {"contact.qp", "contact.utca", "contact.compliance"},
 }
 APPLICATION = {"contact", "contact.pipeline", "contact.io", "contact.plots", "contact.cli",
+               "contact.wear",
                "contact.__main__", "contact._moved", "contact.commands",
                "contact.deviation_files", "contact.output_paths"}
 
