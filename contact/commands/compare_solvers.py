@@ -19,8 +19,10 @@ def register(sub) -> None:
         "compare-solvers",
         help="run every solver backend on a problem set and print a comparison",
         description="Run every available solver backend on the standard contact "
-        "problem set (Hertz problems, random LTCA-like instances) and "
-        "print a qpbenchmark-style table.",
+        "problem set (Hertz problems, random LTCA-like instances), on a case's real LTCA "
+        "problems (CASE) or on an exported set (--problems DIR, from `ltca export-problems`) "
+        "and print a qpbenchmark-style table; -o writes the results with the solver "
+        "versions, CPU and BLAS.",
     )
     p.add_argument(
         "case",
@@ -39,7 +41,8 @@ def register(sub) -> None:
     p.add_argument("--dG", type=float, default=None, help="with CASE: ΔG [mm]")
     p.add_argument("--dSigma", type=float, default=None, help="with CASE: ΔΣ [deg]")
     p.add_argument("--rolls-per-cycle", type=int, default=20,
-                   help="with CASE: roll positions per mesh cycle (two cycles)")
+                   help="with CASE: roll positions per mesh cycle (one cycle is run: "
+                   "the next repeats it)")
     p.add_argument("--with-standard", action="store_true",
                    help="with CASE or --problems: also run the standard problem set")
     p.add_argument(
@@ -85,8 +88,9 @@ def run(args: argparse.Namespace) -> int:
         if args.with_standard:
             problems += standard_problem_set(quick=args.quick)
     elif args.case is not None:
+        from contact.commands.export_problems import case_problems
         from contact.commands.run import misalignment_from_args
-        from contact.ltca import LTCAOptions, ltca_problems
+        from contact.ltca import LTCAOptions
         from contact.pipeline import resolve_case
 
         case = resolve_case(args.case)
@@ -94,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
         torques = args.torque or [50.0, 250.0, 500.0]
         opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle)
         print(f"collecting the LTCA problems of {case.name} at T_p = {torques} N m ...")
-        problems = ltca_problems(case, torques, misalignment=mis, options=opts)
+        problems = case_problems(args.case, torques, mis, opts)
         if args.with_standard:
             problems += standard_problem_set(quick=args.quick)
     else:
@@ -123,7 +127,7 @@ def run(args: argparse.Namespace) -> int:
         (
             str(s),
             str(summary.solver_family.sel(solver=s).item()),
-            f"{summary.success_rate.sel(solver=s).item():.0f}",
+            f"{summary.success_rate.sel(solver=s).item():.1f}",
             f"{summary.time_relative.sel(solver=s).item():.2f}",
             f"{summary.time_relative_qpbenchmark.sel(solver=s).item():.2f}",
             f"{summary.time_shgeom.sel(solver=s).item():.3g}",

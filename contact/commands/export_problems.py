@@ -21,7 +21,7 @@ from pathlib import Path
 from contact.output_paths import check_output_dir
 from geometry import __version__
 
-__all__ = ["DEFAULT_TORQUES", "export_problems", "register", "run"]
+__all__ = ["DEFAULT_TORQUES", "case_problems", "export_problems", "register", "run"]
 
 log = logging.getLogger(__name__)
 
@@ -32,16 +32,36 @@ ORDER = 92
 DEFAULT_TORQUES = (50.0, 250.0, 500.0)
 
 
-def _case_problems(name: str, torques: Sequence[float], misalignment, options) -> list:
-    """The test problems of one bundled case or case file at one misalignment: the
-    ease-off with the case's own deviations, as run_analysis builds it."""
+def case_problems(name: str, torques: Sequence[float], misalignment=None,
+                  options=None) -> list:
+    """The real contact problems of one case's LTCA over one mesh cycle, as ``ltca run``
+    solves them (the ease-off of the case's own surface deviations, as
+    :func:`contact.pipeline.run_analysis` builds it).
+
+    Parameters
+    ----------
+    name : str
+        Bundled case name or case file.
+    torques : sequence of float — [N·m]
+        Pinion torques.
+    misalignment : geometry.assembly.Misalignment, optional
+        Replaces the case's own (default: the case's).
+    options : contact.ltca.LTCAOptions, optional
+
+    Returns
+    -------
+    list of contact.qp.benchmark_problems.TestProblem
+        As :func:`contact.ltca.ltca_problems`.
+    """
     from contact.deviation_files import read_deviations
     from contact.ltca import ltca_problems
     from contact.pipeline import resolve_case
     from contact.utca import ease_off
     from contact.utca.deviations import apply_deviations
 
-    case = dataclasses.replace(resolve_case(name), misalignment=misalignment)
+    case = resolve_case(name)
+    if misalignment is not None:
+        case = dataclasses.replace(case, misalignment=misalignment)
     eo = ease_off(case)
     files = case.deviations
     if files is not None and (files.pinion or files.gear):
@@ -111,7 +131,7 @@ def export_problems(cases: Sequence[str], directory: str | Path, *,
         stem = Path(case).name.removesuffix(".toml")
         if bar is not None:
             bar.set_postfix_str(f"{stem} {label}", refresh=True)
-        for tp in _case_problems(case, torques, m, opts):
+        for tp in case_problems(case, torques, m, opts):
             ref = tp.reference
             name = f"{stem}-{label}-T{ref['torque']:g}-roll{ref['roll']:02d}"
             path = write_problem(d / f"{name}.npz", tp.problem)
