@@ -109,11 +109,6 @@ def run(args: argparse.Namespace) -> int:
         f"(N = {min(p.problem.size for p in problems)}…{max(p.problem.size for p in problems)}), "
         f"accuracy {args.accuracy}, polish {'on' if not args.no_polish else 'off'}"
     )
-    from contact.qp.run_environment import machine_info
-
-    info = machine_info()
-    print(f"on {info['cpu']} ({info['cpu_count']} CPUs), {info['platform']}, "
-          f"BLAS {info['blas']}; one BLAS thread")
     results = compare_solvers(
         problems,
         solvers,
@@ -123,6 +118,9 @@ def run(args: argparse.Namespace) -> int:
         progress=not args.no_progress,
     )
     summary = summarize(results)
+    at = results.attrs
+    print(f"on {at['cpu']} ({at['cpu_count']} CPUs), {at['platform']}, Python {at['python']}; "
+          f"BLAS during the study: {at['blas']}")
     rows = [
         (
             str(s),
