@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import logging
 import os
+import sys
 from pathlib import Path
 
 from contact.qp import qpbenchmark_export
@@ -63,5 +64,8 @@ class LtcaContact(qpbenchmark_export.LtcaContact):
 if __name__ == "__main__":
     from qpbenchmark.benchmark import main
 
+    # qpbenchmark prefers the results_path given here to its --results-path option:
+    # pass ours only when the command line names none
+    given = any(a.startswith("--results-path") for a in sys.argv[1:])
     RESULTS_PATH.parent.mkdir(parents=True, exist_ok=True)
-    main(test_set_path=os.path.abspath(__file__), results_path=RESULTS_PATH)
+    main(test_set_path=os.path.abspath(__file__), results_path=None if given else RESULTS_PATH)

@@ -58,7 +58,8 @@ class LtcaContact(TestSet):
 
     problems_dir : str or None
         Directory of an exported problem set (``ltca export-problems``); the environment
-        variable ``HYPOID_LTCA_PROBLEMS`` overrides it. None: no real problems.
+        variable ``HYPOID_LTCA_PROBLEMS`` overrides it (set but empty: no real problems).
+        None: no real problems.
     standard : bool
         Include the standard problem set (default True).
     quick : bool
@@ -82,7 +83,7 @@ class LtcaContact(TestSet):
     @property
     def real_problems_dir(self) -> Path | None:
         """The directory of the real problems in use (None: none)."""
-        d = os.environ.get("HYPOID_LTCA_PROBLEMS") or self.problems_dir
+        d = os.environ.get("HYPOID_LTCA_PROBLEMS", self.problems_dir)
         return Path(d) if d else None
 
     def test_problems(self) -> list[TestProblem]:
