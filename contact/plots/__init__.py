@@ -28,12 +28,17 @@ For a study (e.g. ΔE × ΔP at several torques, a Dataset with coordinates carr
 """
 
 from contact.plots.analysis import (
+    FigureSpec,
     NamedFigure,
+    RenderedFigure,
     analysis_figures,
+    analysis_specs,
     efficiency_map_figures,
     plot_analysis,
     plot_efficiency_map,
     plot_utca,
+    render_analysis,
+    render_figures,
 )
 from contact.plots.curves import (
     efficiency_curve_figure,
@@ -63,8 +68,11 @@ from contact.plots.style import png_bytes, save_png
 
 __all__ = [
     "FRICTION_FLANK_PLOTS",
+    "FigureSpec",
     "NamedFigure",
+    "RenderedFigure",
     "analysis_figures",
+    "analysis_specs",
     "contact_pattern_figure",
     "easeoff_contour_figure",
     "easeoff_map_figure",
@@ -83,6 +91,8 @@ __all__ = [
     "plot_utca",
     "png_bytes",
     "pressure_figure",
+    "render_analysis",
+    "render_figures",
     "save_png",
     "segment_map_figure",
     "segment_panels_figure",

@@ -493,7 +493,8 @@ def friction_flank_figure(
     if not names:
         raise InputError("friction: none of the flank quantities to draw")
     rows, cols = _grid(len(names))
-    fig, grid, _ = panel_grid(rows, cols, panel=(3.5, 2.3), legend_rows=1, wspace=0.55)
+    fig, grid, _ = panel_grid(rows, cols, panel=(3.5, 2.3), legend_rows=1, wspace=0.55,
+                              right=0.55)
     axes = grid.ravel()
     handles: list = []
     edge = _edge_mask(ltca)

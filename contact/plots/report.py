@@ -33,8 +33,8 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from contact.plots.analysis import NamedFigure, analysis_figures
-from contact.plots.style import misalignment_text, png_bytes
+from contact.plots.analysis import RenderedFigure, analysis_figures, render_figures
+from contact.plots.style import misalignment_text
 from geometry import __version__
 from geometry.errors import InputError
 
@@ -200,7 +200,7 @@ def _operating(tree: xr.DataTree, lt, fr, eo) -> list[tuple[str, str]]:
 
 
 def report_context(tree: xr.DataTree,
-                   figures: Iterable[NamedFigure] | None = None) -> dict:
+                   figures: Iterable[RenderedFigure] | None = None) -> dict:
     """Everything the report shows, from the analysis tree alone.
 
     Parameters
@@ -208,8 +208,8 @@ def report_context(tree: xr.DataTree,
     tree : xarray.DataTree
         ``read_netcdf(file, tree=True)`` of a file written by ``ltca run`` (or the tree
         of :func:`contact.pipeline.run_analysis`).
-    figures : iterable of NamedFigure, optional
-        The figures to embed (default :func:`analysis_figures` of the tree).
+    figures : iterable of RenderedFigure, optional
+        The figures to embed, as PNG (default :func:`analysis_figures` of the tree).
 
     Returns
     -------
@@ -231,10 +231,9 @@ def report_context(tree: xr.DataTree,
     present = {"utca": ut is not None, "ltca": lt is not None, "friction": fr is not None}
     absent = [{"group": f"/{g}", "gives": ABSENT[g]} for g, ok in present.items() if not ok]
     if figures is None:
-        figures = analysis_figures(tree)
-    figs = [{"name": nf.name, "caption": nf.caption,
-             "data": base64.b64encode(png_bytes(nf.figure)).decode("ascii")}
-            for nf in figures]
+        figures = render_figures(analysis_figures(tree))
+    figs = [{"name": rf.name, "caption": rf.caption,
+             "data": base64.b64encode(rf.png).decode("ascii")} for rf in figures]
     warnings = []
     if fr is not None and "model_range_warnings" in fr.attrs:
         try:
@@ -262,14 +261,14 @@ def report_context(tree: xr.DataTree,
     }
 
 
-def render_report(tree: xr.DataTree, figures: Iterable[NamedFigure] | None = None) -> str:
+def render_report(tree: xr.DataTree, figures: Iterable[RenderedFigure] | None = None) -> str:
     """The report of an analysis as one self-contained HTML page (figures embedded).
 
     Parameters
     ----------
     tree : xarray.DataTree
-    figures : iterable of NamedFigure, optional
-        Figures already drawn (e.g. by ``ltca run --plots``); default drawn here.
+    figures : iterable of RenderedFigure, optional
+        Figures already encoded (e.g. by ``ltca run --plots``); default drawn here.
 
     Returns
     -------
@@ -286,7 +285,7 @@ def render_report(tree: xr.DataTree, figures: Iterable[NamedFigure] | None = Non
 
 
 def write_report(tree: xr.DataTree, path: str | os.PathLike[str],
-                 figures: Iterable[NamedFigure] | None = None) -> Path:
+                 figures: Iterable[RenderedFigure] | None = None) -> Path:
     """Write :func:`render_report` to ``path`` atomically (a temporary file, then a rename).
 
     Returns

@@ -92,6 +92,7 @@ def panel_grid(
     left: float = 0.75,
     colorbar_width: float = 1.05,
     wspace: float | None = None,
+    right: float = 0.2,
 ) -> tuple[Figure, np.ndarray, list]:
     """A Figure with an (nrows, ncols) grid of panels laid out in inches.
 
@@ -114,6 +115,8 @@ def panel_grid(
         Room for each colour bar with its ticks and label.
     wspace : float, optional — [in]
         Room between panels (default 0.3 shared y, 0.8 otherwise).
+    right : float — [in]
+        Room right of the panels (and left of the colour bars).
 
     Returns
     -------
@@ -126,7 +129,7 @@ def panel_grid(
     hs = 0.15 + 0.2 * panel_title_lines + (0.0 if sharex else 0.45)
     top = 0.12 + 0.19 * title_lines + 0.19 * panel_title_lines
     bottom = 0.55 + 0.2 * legend_rows
-    right = 0.2 + colorbars * colorbar_width
+    right = right + colorbars * colorbar_width
     width = left + ncols * pw + (ncols - 1) * ws + right
     height = top + nrows * ph + (nrows - 1) * hs + bottom
     fig = new_figure(width, height)
