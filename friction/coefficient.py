@@ -6,7 +6,7 @@ offers that family of models behind one interface::
 
     >>> from friction.coefficient import available_friction_models, friction_coefficient
     >>> available_friction_models()
-    ('benedict_kelley', 'constant', 'xu2007')
+    ('benedict_kelley', 'constant', 'mixed_ehl', 'xu2007')
     >>> mu = friction_coefficient("xu2007", hertz_pressure=1000.0, slide_to_roll=0.5,
     ...                           entraining_velocity=10.0, viscosity=0.0163, radius=20.0,
     ...                           roughness_1=0.8, roughness_2=0.8)
@@ -41,6 +41,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from friction.mixed_ehl import mixed_ehl, mixed_ehl_validity
+from friction.validity import FrictionModelRangeWarning
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.validation import broadcast, real_array, scalar_or_array
 
@@ -55,6 +57,7 @@ __all__ = [
     "benedict_kelley",
     "constant",
     "friction_coefficient",
+    "friction_model_validity",
     "get_friction_model",
     "unavailable_friction_models",
     "xu2007",
@@ -63,14 +66,6 @@ __all__ = [
 log = logging.getLogger(__name__)
 
 Array = NDArray[np.float64]
-
-
-class FrictionModelRangeWarning(UserWarning):
-    """Inputs leave the range a friction/lubrication correlation was fitted on.
-
-    The result is still finite (clipped where the formula breaks down, as the message
-    says) but is an extrapolation.
-    """
 
 
 #: The input vocabulary shared by all friction models: name → "[units] meaning".
@@ -91,6 +86,8 @@ STANDARD_INPUTS: Mapping[str, str] = MappingProxyType(
         "e_prime": "[MPa] effective modulus E' = 2 E* (EHL convention; E* of"
                    " geometry.hertz.contact_modulus)",
         "temperature": "[degC] inlet oil temperature",
+        "thermal_factor": "[1] thermal reduction factor φ_T of the film thickness"
+                          " (friction.film.thermal_reduction_factor)",
     }
 )
 
@@ -436,6 +433,9 @@ class FrictionModel:
         Inputs or model parameters with defaults.
     source : str
         The reference the model implements.
+    validity : callable
+        Keyword function of the same inputs returning a bool array, True where the inputs
+        lie inside the model's declared validity (fitted) range.
     """
 
     name: str
@@ -443,28 +443,70 @@ class FrictionModel:
     required: tuple[str, ...]
     optional: tuple[str, ...]
     source: str
+    validity: Callable[..., Any]
 
     def __call__(self, **inputs: Any) -> NDArray[np.float64] | float:
         """Evaluate the model (see :func:`friction_coefficient`)."""
         return _evaluate(self, inputs)
 
 
-def _register(name: str, function: Callable[..., Any], source: str) -> FrictionModel:
+def _register(name: str, function: Callable[..., Any], source: str,
+              validity: Callable[..., Any]) -> FrictionModel:
     params = inspect.signature(function).parameters.values()
     required = tuple(p.name for p in params if p.default is inspect.Parameter.empty)
     optional = tuple(p.name for p in params if p.default is not inspect.Parameter.empty)
-    return FrictionModel(name, function, required, optional, source)
+    return FrictionModel(name, function, required, optional, source, validity)
+
+
+def _xu2007_validity(*, hertz_pressure: ArrayLike, slide_to_roll: ArrayLike,
+                     entraining_velocity: ArrayLike, viscosity: ArrayLike, radius: ArrayLike,
+                     roughness_1: ArrayLike, roughness_2: ArrayLike, **_: Any) -> NDArray[np.bool_]:
+    """True where every xu2007 input lies inside :data:`XU2007_RANGE` (units there)."""
+    s = 0.5 * (np.asarray(roughness_1, float) + np.asarray(roughness_2, float))
+    values = {
+        "hertz_pressure": np.asarray(hertz_pressure, float),
+        "slide_to_roll": np.abs(np.asarray(slide_to_roll, float)),
+        "entraining_velocity": np.asarray(entraining_velocity, float),
+        "viscosity": np.asarray(viscosity, float),
+        "radius": np.asarray(radius, float),
+        "roughness": s,
+    }
+    ok = np.asarray(True)
+    for name, vals in values.items():
+        lo, hi, _units = XU2007_RANGE[name]
+        ok = ok & (vals >= lo) & (vals <= hi)
+    return np.asarray(ok, dtype=bool)
+
+
+def _benedict_kelley_validity(*, sliding_velocity: ArrayLike, **_: Any) -> NDArray[np.bool_]:
+    """True where V_s > 0 (the formula diverges in pure rolling; its fitted ranges of load,
+    speed and viscosity are not stated in the form the toolkit quotes)."""
+    return np.asarray(np.asarray(sliding_velocity, float) > 0.0)
+
+
+def _always_valid(**_: Any) -> NDArray[np.bool_]:
+    """True: the constant model has no validity range."""
+    return np.asarray(True)
 
 
 _MODELS: Mapping[str, FrictionModel] = MappingProxyType(
     {
         "xu2007": _register(
-            "xu2007", xu2007, "Xu, Kahraman, Anderson & Maddock, J. Mech. Des. 129 (2007) 58"
+            "xu2007", xu2007, "Xu, Kahraman, Anderson & Maddock, J. Mech. Des. 129 (2007) 58",
+            _xu2007_validity,
         ),
         "benedict_kelley": _register(
-            "benedict_kelley", benedict_kelley, "Benedict & Kelley, ASLE Trans. 4 (1961) 59"
+            "benedict_kelley", benedict_kelley, "Benedict & Kelley, ASLE Trans. 4 (1961) 59",
+            _benedict_kelley_validity,
         ),
-        "constant": _register("constant", constant, "Coleman (1975); constant μ"),
+        "constant": _register("constant", constant, "Coleman (1975); constant μ",
+                              _always_valid),
+        "mixed_ehl": _register(
+            "mixed_ehl", mixed_ehl,
+            "Johnson, Greenwood & Poon, Wear 19 (1972) 91 load sharing; Greenwood & Tripp"
+            " (1970) asperities; Eyring film shear; boundary friction (friction.mixed_ehl)",
+            mixed_ehl_validity,
+        ),
     }
 )
 
@@ -491,7 +533,7 @@ def available_friction_models() -> tuple[str, ...]:
     Returns
     -------
     tuple of str
-        Sorted names, e.g. ``("benedict_kelley", "constant", "xu2007")``.
+        Sorted names, e.g. ``("benedict_kelley", "constant", "mixed_ehl", "xu2007")``.
 
     Notes
     -----
@@ -610,3 +652,44 @@ def friction_coefficient(name: str, **inputs: Any) -> NDArray[np.float64] | floa
     the seed's per-segment use are seed section 5.2.2–5.2.4.
     """
     return _evaluate(get_friction_model(name), inputs)
+
+
+def friction_model_validity(name: str, **inputs: Any) -> NDArray[np.bool_]:
+    """Which points lie inside the declared validity range of the friction model ``name``.
+
+    Parameters
+    ----------
+    name : str
+        One of :func:`available_friction_models`.
+    **inputs : float or array
+        As :func:`friction_coefficient` (the same call's keyword inputs).
+
+    Returns
+    -------
+    array of bool
+        True inside the model's range (fitted range of a regression, declared validity of
+        a physical model), broadcast to the shape of the standard inputs passed.
+
+    Raises
+    ------
+    ModelUnavailableError
+        Unknown or unavailable model.
+    InputError
+        A missing input or shapes that do not broadcast.
+
+    Notes
+    -----
+    Source: each model's range (``XU2007_RANGE``, ``friction.mixed_ehl.MIXED_EHL_VALIDITY``;
+    benedict_kelley: V_s > 0; constant: everywhere).
+    """
+    model = get_friction_model(name)
+    missing = [k for k in model.required if k not in inputs]
+    if missing:
+        raise InputError(f"friction model {model.name!r} needs input(s) {missing}")
+    ok = np.asarray(model.validity(**inputs), dtype=bool)
+    shapes = [np.shape(v) for k, v in inputs.items() if k in STANDARD_INPUTS]
+    try:
+        shape = np.broadcast_shapes(ok.shape, *shapes)
+    except ValueError as exc:
+        raise InputError(f"input shapes do not broadcast together: {shapes}") from exc
+    return np.broadcast_to(ok, shape).copy()

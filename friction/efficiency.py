@@ -8,7 +8,9 @@ For every loaded contact segment of an LTCA (the ``/ltca`` dataset of
 2. lubricant (:mod:`friction.lubricant`): η₀, α at the inlet temperature, β, k;
 3. film (:mod:`friction.film`): h_min (Dowson–Higginson, Gupta thermal factor) and the
    lambda ratio λ = h_min/σ with σ = √(Rq₁² + Rq₂²);
-4. friction coefficient μ by a registered model (:mod:`friction.coefficient`);
+4. friction coefficient μ by a registered model (:mod:`friction.coefficient`), with the
+   thermal factor φ_T and the oil's film-traction properties for the models that use
+   them (``mixed_ehl``), and a per-segment flag where the model is extrapolated;
 5. losses: sliding P_s = μ F V_s, rolling P_r = F_R L V_r with F_R the Goksem–Hargreaves
    rolling traction per length (:mod:`friction.rolling`);
 6. per roll position the instantaneous power loss and efficiency
@@ -30,7 +32,12 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from friction.coefficient import FrictionModelRangeWarning, friction_coefficient
+from friction.coefficient import (
+    FrictionModelRangeWarning,
+    friction_coefficient,
+    friction_model_validity,
+    get_friction_model,
+)
 from friction.film import (
     composite_roughness,
     lambda_ratio,
@@ -48,7 +55,7 @@ from friction.lubricant import (
 )
 from friction.operating import OperatingConditions
 from friction.rolling import rolling_traction
-from geometry.conventions import data_var
+from geometry.conventions import binary_flag, data_var
 from geometry.errors import InputError
 from geometry.hertz import STEEL, contact_modulus
 
@@ -110,7 +117,9 @@ def efficiency_analysis(
         ``sliding_loss``, ``rolling_loss`` [W]; over (``torque``, ``roll``)
         ``power_loss`` [W] and ``efficiency`` [1]; over ``torque`` the cycle means
         ``power_loss_mean`` [W] and ``efficiency_mean`` [1]. Inputs outside a model's
-        fitted range are logged (INFO) and listed in the ``model_range_warnings`` attribute.
+        fitted range are logged (INFO) and listed in the ``model_range_warnings`` attribute;
+        the segments concerned are flagged per segment in ``friction_model_extrapolated``
+        (int8 0/1, CF ``flag_values``/``flag_meanings``).
 
     Raises
     ------
@@ -197,18 +206,23 @@ class _Oil(NamedTuple):
     pressure_viscosity: float  # α [1/GPa]
     temperature_viscosity: float  # β [1/K]
     thermal_conductivity: float  # k [W/(m K)]
+    traction: dict  # the oil's film-traction parameters that are set (mixed_ehl), by name
 
 
 def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
     """Name, η₀ [Pa s], α [1/GPa], β [1/K] and k [W/(m K)] of the lubricant (bundled name
     or TOML path) at the inlet temperature [degC]."""
     oil = load_lubricant(lubricant)
+    traction = {k: getattr(oil, k) for k in
+                ("eyring_stress", "limiting_shear_coefficient", "boundary_friction")
+                if getattr(oil, k) is not None}
     return _Oil(
         oil.name,
         float(viscosity(oil, temperature)),
         float(pressure_viscosity_coefficient(oil, temperature)),
         float(temperature_viscosity_coefficient(oil, temperature)),
         float(thermal_conductivity(oil, temperature)),
+        traction,
     )
 
 
@@ -268,6 +282,7 @@ class _Friction(NamedTuple):
     film_thickness: np.ndarray  # h_min [µm]
     lambda_ratio: np.ndarray  # λ = h_min/σ [1]
     friction_coefficient: np.ndarray  # μ [1]
+    extrapolated: np.ndarray  # bool: μ's model evaluated outside its validity range
     rolling_traction: np.ndarray  # F_R [N/mm]
     range_warnings: list[str]  # the friction models' out-of-range notes, sorted, unique
 
@@ -292,29 +307,31 @@ def _film_and_friction(
             minimum_film_thickness(vr, eta0, alpha, w, R, e_prime, thermal_factor=phi_t), float
         )
         lam = np.asarray(lambda_ratio(h, sigma), float)
-        mu = np.asarray(
-            friction_coefficient(
-                op.friction_model,
-                hertz_pressure=ph,
-                slide_to_roll=sr,
-                entraining_velocity=vr,
-                sliding_velocity=vs,
-                load_per_length=w,
-                viscosity=eta0,
-                radius=R,
-                roughness_1=op.roughness,
-                roughness_2=op.roughness,
-                lambda_ratio=lam,
-                pressure_viscosity=alpha,
-                e_prime=e_prime,
-                temperature=op.temperature,
-            ),
-            float,
+        inputs = dict(
+            hertz_pressure=ph,
+            slide_to_roll=sr,
+            entraining_velocity=vr,
+            sliding_velocity=vs,
+            load_per_length=w,
+            viscosity=eta0,
+            radius=R,
+            roughness_1=op.roughness,
+            roughness_2=op.roughness,
+            lambda_ratio=lam,
+            pressure_viscosity=alpha,
+            e_prime=e_prime,
+            temperature=op.temperature,
+            thermal_factor=phi_t,
         )
+        accepted = get_friction_model(op.friction_model).optional
+        inputs.update({k: v for k, v in oil.traction.items() if k in accepted})
+        mu = np.asarray(friction_coefficient(op.friction_model, **inputs), float)
+        outside = ~np.broadcast_to(friction_model_validity(op.friction_model, **inputs),
+                                   seg.force.shape)
         fr = np.asarray(rolling_traction(vr, sr, eta0, alpha, w, R, e_prime, beta, k_oil), float)
     range_notes = sorted({str(w.message) for w in caught
                           if issubclass(w.category, FrictionModelRangeWarning)})
-    return _Friction(h, lam, np.broadcast_to(mu, seg.force.shape), fr, range_notes)
+    return _Friction(h, lam, np.broadcast_to(mu, seg.force.shape), outside, fr, range_notes)
 
 
 class _Losses(NamedTuple):
@@ -331,6 +348,14 @@ def _scatter(values: np.ndarray, loaded: np.ndarray) -> np.ndarray:
     ``loaded``, NaN on the unloaded segments (same unit as ``values``)."""
     out = np.full(loaded.shape, np.nan)
     out[loaded] = values
+    return out
+
+
+def _scatter_flag(flags: np.ndarray, loaded: np.ndarray) -> np.ndarray:
+    """Per-segment booleans of the loaded segments on the (T, J, K, S) grid of ``loaded``
+    as int8 0/1 (0 on the unloaded segments)."""
+    out = np.zeros(loaded.shape, dtype=np.int8)
+    out[loaded] = flags
     return out
 
 
@@ -386,6 +411,11 @@ def _friction_dataset(
         "friction_coefficient": data_var(
             dims4, _scatter(fric.friction_coefficient, loaded), "1",
             "sliding friction coefficient",
+        ),
+        "friction_model_extrapolated": data_var(
+            dims4, _scatter_flag(fric.extrapolated, loaded), "1",
+            "friction model evaluated outside its validity range (0 on unloaded segments)",
+            **binary_flag("no", "yes"),
         ),
         "sliding_loss": data_var(dims4, losses.sliding, "W", "sliding friction power loss"),
         "rolling_loss": data_var(dims4, losses.rolling, "W", "rolling (EHL) power loss"),

@@ -39,17 +39,19 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from friction.coefficient import FrictionModelRangeWarning
+from friction.validity import FrictionModelRangeWarning
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
+    "DOWSON_TOYODA_EXPONENTS",
     "FILM_THICKNESS_MODELS",
     "THERMAL_REDUCTION_MODELS",
     "EHLGroups",
     "composite_roughness",
     "dowson_higginson",
     "dowson_higginson_1966",
+    "dowson_toyoda_central",
     "ehl_groups",
     "lambda_ratio",
     "minimum_film_thickness",
@@ -298,6 +300,55 @@ def pan_hamrock(
         radius,
         e_prime,
     )
+
+
+def dowson_toyoda_central(
+    entraining_velocity: ArrayLike,
+    viscosity: ArrayLike,
+    pressure_viscosity: ArrayLike,
+    load_per_length: ArrayLike,
+    radius: ArrayLike,
+    e_prime: ArrayLike,
+) -> NDArray[np.float64] | float:
+    """Line-contact *central* film, Dowson & Toyoda: h_c/R = 3.06 U^0.69 G^0.56 W^−0.10.
+
+    Parameters
+    ----------
+    entraining_velocity, viscosity, pressure_viscosity, load_per_length, radius, e_prime
+        As :func:`dowson_higginson` ([m/s], [Pa s], [1/GPa], [N/mm], [mm], [MPa]).
+
+    Returns
+    -------
+    float or array — [µm]
+        Isothermal central (plateau) film thickness h_c.
+
+    Raises
+    ------
+    InputError
+        An input outside its range.
+
+    Notes
+    -----
+    Source: Dowson, D., Toyoda, S., "A central film thickness formula for
+    elastohydrodynamic line contacts", Proc. 5th Leeds–Lyon Symposium on Tribology
+    (1978, publ. 1979) 60–65; quoted with the groups of :func:`ehl_groups` (E′ = 2E*).
+    The central film is the separation of the surfaces over the Hertz zone, the one the
+    load-sharing model of :mod:`friction.mixed_ehl` compares with the roughness.
+    """
+    return _h_min(
+        3.06,
+        (0.69, 0.56, -0.10),
+        entraining_velocity,
+        viscosity,
+        pressure_viscosity,
+        load_per_length,
+        radius,
+        e_prime,
+    )
+
+
+#: Exponents (p_U, p_G, p_W) of :func:`dowson_toyoda_central` (h_c ∝ U^p_U G^p_G W^p_W).
+DOWSON_TOYODA_EXPONENTS: tuple[float, float, float] = (0.69, 0.56, -0.10)
 
 
 #: Minimum film thickness formulas by name (all take the same physical inputs).

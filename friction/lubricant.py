@@ -23,7 +23,10 @@ convert at their boundary.
 Oil files are TOML with the schema of ``friction/data/75W90.toml``: ``name``, ``source``,
 ``temperature``, ``dynamic_viscosity``, ``pressure_viscosity_coefficient``, ``density``,
 ``thermal_conductivity`` (one value or one per temperature), optional
-``temperature_viscosity_coefficient``, ``thermal_conductivity_source``, ``notes``,
+``temperature_viscosity_coefficient``, ``thermal_conductivity_source``, ``notes``, the
+optional film-traction properties ``eyring_stress`` [MPa], ``limiting_shear_coefficient``
+and ``boundary_friction`` [1] with ``traction_source`` (used by the ``mixed_ehl``
+friction model, :mod:`friction.mixed_ehl`),
 ``schema``, an ``[extrapolation]`` table (``below``, ``above`` in K) and a required
 ``[units]`` table that must state the units above (so a file in other units is refused,
 not misread).
@@ -47,7 +50,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
 from geometry.errors import InputError, ModelUnavailableError
-from geometry.validation import real_array, scalar_or_array
+from geometry.validation import real, real_array, scalar_or_array
 
 __all__ = [
     "VISCOSITY_MODELS",
@@ -84,7 +87,8 @@ _REQUIRED_UNITS: Mapping[str, str] = MappingProxyType(
     }
 )
 _OPTIONAL_UNITS: Mapping[str, str] = MappingProxyType(
-    {"temperature_viscosity_coefficient": "1/K", "extrapolation": "K"}
+    {"temperature_viscosity_coefficient": "1/K", "extrapolation": "K",
+     "eyring_stress": "MPa", "limiting_shear_coefficient": "1", "boundary_friction": "1"}
 )
 _KNOWN_KEYS = frozenset(
     {
@@ -99,6 +103,10 @@ _KNOWN_KEYS = frozenset(
         "thermal_conductivity",
         "thermal_conductivity_source",
         "temperature_viscosity_coefficient",
+        "eyring_stress",
+        "limiting_shear_coefficient",
+        "boundary_friction",
+        "traction_source",
         "extrapolation",
         "units",
     }
@@ -299,6 +307,14 @@ class Lubricant:
     extrapolation_below, extrapolation_above : float — [K]
         The accepted temperature range is [min T − below, max T + above].
     thermal_conductivity_source, notes : str
+    eyring_stress : float or None — [MPa]
+        Eyring stress τ₀ of the film (> 0); None: the model default.
+    limiting_shear_coefficient : float or None — [1]
+        Λ = τ_L/p in (0, 1]; None: the model default.
+    boundary_friction : float or None — [1]
+        μ_b of the asperity contacts in [0, 1]; None: the model default.
+    traction_source : str
+        Where the three traction values come from.
 
     Raises
     ------
@@ -325,6 +341,10 @@ class Lubricant:
     extrapolation_above: float = 40.0
     thermal_conductivity_source: str = ""
     notes: str = ""
+    eyring_stress: float | None = None
+    limiting_shear_coefficient: float | None = None
+    boundary_friction: float | None = None
+    traction_source: str = ""
     vogel: VogelFit = field(init=False, repr=False, compare=False)
     walther: WaltherFit = field(init=False, repr=False, compare=False)
 
@@ -388,6 +408,12 @@ class Lubricant:
             val = getattr(self, key)
             if not isinstance(val, (int, float)) or not math.isfinite(val) or val < 0:
                 raise InputError(f"{key}: must be finite and >= 0 [K], got {val!r}")
+        for key, high, low_open, unit in (("eyring_stress", None, True, "MPa"),
+                                           ("limiting_shear_coefficient", 1.0, True, "1"),
+                                           ("boundary_friction", 1.0, False, "1")):
+            if getattr(self, key) is not None:
+                object.__setattr__(self, key, real(key, getattr(self, key), unit=unit, low=0.0,
+                                                   low_open=low_open, high=high))
         vogel = fit_vogel(t, eta)
         if vogel.c >= t[0] - self.extrapolation_below:
             raise InputError(
@@ -747,7 +773,9 @@ def lubricant_from_mapping(data: Mapping[str, Any], origin: str = "<mapping>") -
             "thermal_conductivity",
         )
     }
-    for key in ("temperature_viscosity_coefficient", "thermal_conductivity_source", "notes"):
+    for key in ("temperature_viscosity_coefficient", "thermal_conductivity_source", "notes",
+                "eyring_stress", "limiting_shear_coefficient", "boundary_friction",
+                "traction_source"):
         if key in data:
             kwargs[key] = data[key]
     if "below" in extra:

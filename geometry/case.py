@@ -8,7 +8,11 @@ dotted path and the accepted range, e.g.
 ``pinion.machine.concave.ratio_of_roll: must be > 0 for a generated member, got -1.0``.
 
 Settings are read for a right-hand member (see :mod:`geometry.machine`); a left-hand member
-is generated as the mirror image of the right-hand one.
+is generated as the mirror image of the right-hand one. A member's ``[<member>.machine]``
+and ``[<member>.cutter]`` tables may each declare the convention their summary is typed in,
+``convention = "ours"`` (default) or ``"spygo"`` (a summary typed from SpyGO, converted on
+load by :mod:`geometry.machine_convention`; ``docs/machine.md``). Case files written by the
+toolkit (:meth:`Case.to_toml`) are always in our convention and carry no ``convention`` key.
 
 Public functions
 ----------------
@@ -36,6 +40,12 @@ from geometry.assembly import HANDS, Misalignment
 from geometry.cutter import PROFILE_TYPES, Blade
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.machine import PROCESSES, MachineSettings, indexing_ratio
+from geometry.machine_convention import (
+    SPYGO_BLADE_FIELDS,
+    blade_from_spygo,
+    check_convention,
+    machine_from_spygo,
+)
 from geometry.validation import integer, positive, real
 
 __all__ = [
@@ -271,7 +281,9 @@ class Case:
         Returns
         -------
         str
-            Angles in degrees, lengths in mm, as in a case file.
+            Angles in degrees, lengths in mm, as in a case file; machine settings and blades
+            always in our convention (``docs/machine.md``), whatever convention the loaded
+            file declared, so no ``convention`` key is written.
         """
         return _dump_toml(_case_to_dict(self))
 
@@ -349,6 +361,8 @@ _DEVIATION_FIELDS = {
     "pinion": ("str", False, None),
     "gear": ("str", False, None),
 }
+#: blade fields of a cutter table typed in SpyGO's convention (``convention = "spygo"``)
+_SPYGO_BLADE_SCHEMA = {k: _BLADE_FIELDS[k] for k in SPYGO_BLADE_FIELDS}
 _MEMBER_KEYS = {"process", "blank", "cutter", "machine"}
 _TOP_KEYS = {"name", "source", "synthesised", "pair", "pinion", "gear", "misalignment",
              "deviations"}
@@ -423,13 +437,21 @@ def _member(raw: Mapping, name: str, hand: str) -> Member:
     machine = _table(raw, "machine", f"{name}.machine")
     tools = {}
     for tab, where, extra in ((cutter, "cutter", set(_HEAD_FIELDS)), (machine, "machine", set())):
-        unknown = sorted(set(tab) - set(FLANKS) - extra)
+        unknown = sorted(set(tab) - set(FLANKS) - extra - {"convention"})
         if unknown:
-            accepted = ", ".join([*FLANKS, *sorted(extra)])
+            accepted = ", ".join([*FLANKS, *sorted(extra), "convention"])
             raise InputError(f"{name}.{where}.{unknown[0]}: unknown field; accepted: "
                              f"{accepted}")
+    # the convention each summary is typed in (docs/machine.md); converted to ours below
+    conv = {where: check_convention(f"{name}.{where}.convention",
+                                    tab.get("convention", "ours"))
+            for tab, where in ((cutter, "cutter"), (machine, "machine"))}
     head = _fields({k: v for k, v in cutter.items() if k in _HEAD_FIELDS}, _HEAD_FIELDS,
                    f"{name}.cutter")
+    for where, value in conv.items():
+        if value == "spygo" and head["blade_groups"] > 0:
+            raise InputError(f"{name}.{where}.convention: 'spygo' summaries are face milling "
+                             f"(blade_groups 0); give a face-hobbing member in 'ours'")
     try:
         kappa = indexing_ratio(head["blade_groups"], blank.teeth)
     except InputError as exc:
@@ -439,14 +461,26 @@ def _member(raw: Mapping, name: str, hand: str) -> Member:
                          f"{head['cutter_radius']}")
     for flank, side in FLANKS.items():
         bpath = f"{name}.cutter.{flank}"
-        bkw = _fields(_table(cutter, flank, bpath), _BLADE_FIELDS | _BLADE_PLACEMENT_FIELDS,
-                      bpath)
+        spygo_blade = conv["cutter"] == "spygo"
+        bschema = (_SPYGO_BLADE_SCHEMA if spygo_blade
+                   else _BLADE_FIELDS | _BLADE_PLACEMENT_FIELDS)
+        bkw = _fields(_table(cutter, flank, bpath), bschema, bpath)
         if bkw["profile"] not in PROFILE_TYPES:
             raise InputError(f"{bpath}.profile: must be one of {list(PROFILE_TYPES)}, got "
                              f"{bkw['profile']!r}")
+        if spygo_blade:
+            try:
+                bkw = blade_from_spygo(bkw, side)
+            except InputError as exc:
+                raise InputError(f"{bpath}.{exc}") from None
         blade = _build(Blade, {"side": side, **bkw}, bpath)
         mpath = f"{name}.machine.{flank}"
         mkw = _fields(_table(machine, flank, mpath), _MACHINE_FIELDS, mpath)
+        if conv["machine"] == "spygo":
+            try:
+                mkw = machine_from_spygo(mkw, name, hand)
+            except InputError as exc:
+                raise InputError(f"{mpath}.{exc}") from None
         settings = _build(MachineSettings,
                           {"process": process, **mkw, "indexing_ratio": kappa}, mpath)
         tools[flank] = FlankTool(blade, settings)

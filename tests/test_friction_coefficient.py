@@ -60,7 +60,7 @@ def _no_warnings():
 
 # ----------------------------------------------------------------------------- registry
 def test_registry_lists_models() -> None:
-    assert available_friction_models() == ("benedict_kelley", "constant", "xu2007")
+    assert available_friction_models() == ("benedict_kelley", "constant", "mixed_ehl", "xu2007")
     assert "kolivand2009" in unavailable_friction_models()
 
 

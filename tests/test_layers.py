@@ -8,7 +8,7 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
   only in its application layer;
 * ``contact``'s layers, each importing only those below it:
 
-      application (pipeline, io, plots, cli, commands)
+      application (pipeline, io, plots (a package), cli, commands)
         └── ltca ── utca, compliance, qp
               utca, compliance ── geometry
               qp ── geometry's shared low layer only (no gear in it)
@@ -42,6 +42,7 @@ LAYER_DEPENDS = {
     "contact.ltca": {"contact.qp", "contact.utca", "contact.compliance"},
 }
 APPLICATION = {"contact", "contact.pipeline", "contact.io", "contact.plots", "contact.cli",
+               "contact.wear",
                "contact.__main__", "contact._moved", "contact.commands",
                "contact.deviation_files", "contact.output_paths", "contact.study"}
 
@@ -84,7 +85,8 @@ def _layer(module: str) -> str:
     for layer in LAYER_DEPENDS:
         if module == layer or module.startswith(layer + "."):
             return layer
-    if module in APPLICATION or module.startswith(("contact.commands.", "contact.study.")):
+    if module in APPLICATION or module.startswith(("contact.commands.", "contact.plots.",
+                                                   "contact.study.")):
         return "application"
     raise AssertionError(f"{module}: in no layer of contact (add it to tests/test_layers.py)")
 

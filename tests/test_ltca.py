@@ -201,8 +201,8 @@ def test_whole_analysis_round_trip_and_plot_from_file(tmp_path):
     # `ltca plot` on a file from another run redraws everything from the file alone
     assert main(["plot", str(path), "--plots", str(tmp_path / "png")]) == 0
     pngs = sorted(p.name for p in (tmp_path / "png").glob("*.png"))
-    assert "ltca_transmission_error.png" in pngs and "easeoff.png" in pngs
-    assert "friction_lambda_ratio_100Nm.png" in pngs and "friction_efficiency.png" in pngs
+    assert "transmission_error.png" in pngs and "easeoff.png" in pngs
+    assert "friction_flank.png" in pngs and "friction_efficiency.png" in pngs
 
 
 def test_screened_segments_give_the_solution_of_all_segments():

@@ -92,21 +92,17 @@ def run(args: argparse.Namespace) -> int:
         options=LTCAOptions(rolls_per_cycle=args.rolls_per_cycle),
         progress=not args.no_progress and sys.stderr.isatty(),
     )
-    sel = emap["efficiency"].isel(temperature=0, roughness=0) * 100
-    rows = [
-        [f"{T:g}", *(f"{v:.2f}" for v in sel.sel(torque=T).values)] for T in emap["torque"].values
-    ]
-    print(
-        f"case {case.name}: efficiency [%] at {emap['temperature'].values[0]:g} C, "
-        f"Rq {emap['roughness'].values[0]:g} um ({args.lubricant}, {args.friction_model})"
-    )
-    print(
-        tabulate(
-            rows,
-            headers=["T_p [N m]", *(f"{n:g} rpm" for n in emap["speed"].values)],
-            tablefmt="github",
-        )
-    )
+    # one table per oil temperature and roughness: every swept value is printed
+    for temp in emap["temperature"].values:
+        for rq in emap["roughness"].values:
+            sel = emap["efficiency"].sel(temperature=temp, roughness=rq) * 100
+            rows = [[f"{T:g}", *(f"{v:.2f}" for v in sel.sel(torque=T).values)]
+                    for T in emap["torque"].values]
+            print(f"case {case.name}: efficiency [%] at {temp:g} C, Rq {rq:g} um "
+                  f"({args.lubricant}, {args.friction_model})")
+            print(tabulate(rows, headers=["T_p [N m]",
+                                          *(f"{n:g} rpm" for n in emap["speed"].values)],
+                           tablefmt="github"))
     path = write_netcdf(emap, Path(args.output), inputs=case.to_toml())
     print(f"wrote {path}")
     if args.plots:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 from pathlib import Path
 
@@ -101,6 +102,8 @@ def register(sub) -> None:
     p.add_argument("--segments", type=int, default=24, help="segments per contact curve")
     p.add_argument("-o", "--output", default="ltca.nc", help="netCDF file (default ltca.nc)")
     p.add_argument("--plots", default=None, metavar="DIR", help="write PNG plots into DIR")
+    p.add_argument("--report", default=None, metavar="HTML",
+                   help="write the one-page HTML report (as `ltca report`) to HTML")
     p.add_argument("--no-progress", action="store_true")
     p.set_defaults(func=run)
 
@@ -172,12 +175,13 @@ def run(args: argparse.Namespace) -> int:
     from contact.io import write_netcdf
     from contact.ltca import LTCAOptions
     from contact.pipeline import SEED_TABLE_3_1, resolve_case, run_analysis
-    from contact.plots import plot_analysis
     from friction.operating import OperatingConditions
 
     check_output_file(args.output)
     if args.plots:
         check_output_dir(args.plots)
+    if args.report:
+        check_output_file(args.report, option="--report")
     case = resolve_case(args.case)
     base = SEED_TABLE_3_1["misalignment"] if args.case is None else case.misalignment
     mis = misalignment_from_args(args, base)
@@ -272,10 +276,33 @@ def run(args: argparse.Namespace) -> int:
     print("time [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in times.items()))
     path = write_netcdf(tree, Path(args.output), inputs=tree.attrs["inputs"])
     print(f"wrote {path}")
-    if args.plots:
-        for p in plot_analysis(tree, args.plots):
-            print(f"wrote {p}")
+    write_figures(path, args.plots, args.report)
     return 0
+
+
+def write_figures(path: Path, plots: str | None, report: str | None) -> None:
+    """The PNGs (``--plots``) and the HTML report (``--report``) of the file just written,
+    drawn from the file alone (what ``ltca plot`` and ``ltca report`` would draw), each
+    figure once."""
+    if not plots and not report:
+        return
+    from contact.io import read_netcdf
+    from contact.plots import render_analysis
+    from contact.plots.report import write_report
+
+    tree = read_netcdf(path, tree=True)
+    figures = []
+    # two processes draw the figures (independent of each other): on two free cores the
+    # drawing takes half the wall time (benchmarks/plots.py)
+    for rf in render_analysis(tree, workers=min(2, os.cpu_count() or 1)):
+        if plots:
+            target = Path(plots) / f"{rf.name}.png"
+            target.write_bytes(rf.png)
+            print(f"wrote {target}")
+        if report:
+            figures.append(rf)
+    if report:
+        print(f"wrote {write_report(tree, report, figures)}")
 
 
 def plot(args: argparse.Namespace) -> int:
@@ -283,6 +310,6 @@ def plot(args: argparse.Namespace) -> int:
     from contact.plots import plot_analysis
 
     tree = read_netcdf(args.file, tree=True)
-    for p in plot_analysis(tree, args.plots):
+    for p in plot_analysis(tree, args.plots, workers=min(2, os.cpu_count() or 1)):
         print(f"wrote {p}")
     return 0

@@ -25,6 +25,7 @@ solves them (:mod:`contact.qp`):
 from contact.ltca.edges import EDGE_KINDS, FlankBoundary, flank_boundary
 from contact.ltca.mesh_cycle import loaded_tca, ltca_problems
 from contact.ltca.options import LTCAOptions, LTCASetup
+from contact.ltca.roll_loop import RollProblem
 from contact.ltca.segments import Segments, segment_geometry
 from contact.ltca.transmission_error import mesh_harmonics, transmission_error_summary
 
@@ -33,6 +34,7 @@ __all__ = [
     "FlankBoundary",
     "LTCAOptions",
     "LTCASetup",
+    "RollProblem",
     "Segments",
     "flank_boundary",
     "loaded_tca",

@@ -61,7 +61,7 @@ import numpy as np
 import xarray as xr
 
 from contact.ltca.options import LTCAOptions, LTCASetup, edge_radii
-from contact.ltca.roll_loop import solve_rolls
+from contact.ltca.roll_loop import RollProblem, solve_rolls
 from contact.ltca.screening import generous_limit
 from contact.ltca.segments import segment_geometry
 from contact.qp import ContactProblem
@@ -133,6 +133,21 @@ def loaded_tca(
     InputError
         For bad torques or options (the message names the field).
     """
+    sink: list[RollProblem] | None = [] if problem_sink is not None else None
+    ds = _analyse(case, torque, misalignment, flank, options, easeoff, transitions, progress,
+                  sink)
+    if problem_sink is not None:
+        for rp in sink:
+            problem_sink(rp.problem)
+    return ds
+
+
+def _analyse(case, torque, misalignment: Misalignment | None, flank: str | None,
+             options: LTCAOptions | None, easeoff: EaseOff | None,
+             transitions: tuple[float, float] | None, progress: bool,
+             problem_sink: list[RollProblem] | None) -> xr.Dataset:
+    """The analysis of :func:`loaded_tca`; the final problem of every (torque, roll) of the
+    last pass (the pair window and edge limit settled) is appended to ``problem_sink``."""
     setup, t_easeoff = _setup(case, torque, misalignment, flank, options, easeoff,
                               transitions)
     opts = setup.options
@@ -145,7 +160,7 @@ def loaded_tca(
                                                              setup.easeoff.ratio)
     while True:
         opts = setup.options
-        sink: list[ContactProblem] | None = [] if problem_sink is not None else None
+        sink: list[RollProblem] | None = [] if problem_sink is not None else None
         t1 = time.perf_counter()
         seg = segment_geometry(setup.case, setup.easeoff, setup.roll, opts.pairs,
                                opts.segments, opts.spacing,
@@ -168,8 +183,7 @@ def loaded_tca(
                      "with %.3g mm", reach, edge_limit, 2.0 * reach)
             edge_limit = 2.0 * reach
     if problem_sink is not None:
-        for problem in sink:
-            problem_sink(problem)
+        problem_sink.extend(sink)
     return ds
 
 
@@ -221,29 +235,45 @@ def _outer_pairs_loaded(ds: xr.Dataset, opts: LTCAOptions) -> tuple[int | None, 
 
 
 def ltca_problems(case, torque, *, misalignment: Misalignment | None = None,
-                  options: LTCAOptions | None = None) -> list:
-    """The real contact problems of a case's LTCA, as a solver study's test set.
+                  flank: str | None = None, options: LTCAOptions | None = None,
+                  easeoff: EaseOff | None = None,
+                  transitions: tuple[float, float] | None = None) -> list:
+    """The real contact problems of a case's LTCA over one mesh cycle, as a solver study's
+    test set.
+
+    The analysis is :func:`loaded_tca`'s with the same arguments; the problem of every
+    (torque, roll) is the final one of its roll (after the Weber iteration and the
+    screening of the segments). Rolls of the later mesh cycles repeat the first cycle's
+    problems exactly and are left out.
 
     Parameters
     ----------
     case : geometry.case.Case
-    torque : float or sequence — [N·m] pinion torques
-    misalignment : Misalignment, optional
-    options : LTCAOptions, optional
+    torque : float or sequence — [N·m]
+        Pinion torques.
+    misalignment, flank, options, easeoff, transitions
+        As :func:`loaded_tca` (e.g. the ease-off of deviated surfaces).
 
     Returns
     -------
     list of contact.qp.benchmark_problems.TestProblem
-        One per (torque, roll position), kind ``ltca``, named
-        ``"<case> T<torque> roll<j>"``.
+        Roll by roll and at each roll torque by torque; kind ``ltca``, named
+        ``"<case>_T<torque>_roll<j>"``; ``reference`` holds ``torque`` [N·m], ``roll``
+        (index in the cycle) and ``roll_angle`` [rad] (pinion roll, from the transition M1).
     """
     from contact.qp.benchmark_problems import TestProblem
 
-    collected: list[ContactProblem] = []
-    loaded_tca(case, torque, misalignment=misalignment, options=options,
-               problem_sink=collected.append)
+    opts = options or LTCAOptions()
+    collected: list[RollProblem] = []
+    setup, _ = _setup(case, torque, misalignment, flank, opts, easeoff, transitions)
+    _analyse(case, torque, misalignment, flank, opts, setup.easeoff, setup.transitions,
+             False, collected)
     out = []
-    for i, p in enumerate(collected):
-        name = p.name.replace(" ", "_") or f"{case.name}_{i}"
-        out.append(TestProblem(f"{name}_{i}", "ltca", p))
+    for rp in collected:
+        if rp.roll >= opts.rolls_per_cycle:
+            continue
+        name = f"{case.name}_T{rp.torque:g}_roll{rp.roll:02d}"
+        out.append(TestProblem(name, "ltca", dataclasses.replace(rp.problem, name=name),
+                               {"torque": rp.torque, "roll": rp.roll,
+                                "roll_angle": float(setup.roll[rp.roll])}))
     return out

@@ -12,6 +12,7 @@ solution at the largest torque chooses the other rolls' pools, assembled in one 
 Public functions
 ----------------
 solve_rolls   the ``/ltca`` dataset of an analysis on its segments
+RollProblem   the final contact problem of one (torque, roll), as the problem sink gets it
 """
 
 from __future__ import annotations
@@ -34,9 +35,28 @@ from contact.ltca.weber import RollSelection, WeberSolution, even_share, weber_s
 from contact.qp import ContactProblem
 from geometry.hertz import contact_modulus
 
-__all__ = ["solve_rolls"]
+__all__ = ["RollProblem", "solve_rolls"]
 
 log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True, eq=False)
+class RollProblem:
+    """The final contact problem of one (torque, roll) of an analysis (after the Weber
+    iteration and the screening of the segments), as :func:`solve_rolls` hands it on.
+
+    Attributes
+    ----------
+    torque : float — [N·m]
+        Pinion torque T_p (the problem carries the gear torque).
+    roll : int
+        Index of the roll position in the analysis (0 … J − 1).
+    problem : contact.qp.ContactProblem
+    """
+
+    torque: float
+    roll: int
+    problem: ContactProblem
 
 
 @dataclass(eq=False)
@@ -63,11 +83,11 @@ class _Analysis:
     pool: CompliancePool
     results: RollResults
     modulus: float  # [MPa] contact modulus E* of the pair
-    sink: Callable[[ContactProblem], None] | None
+    sink: Callable[[RollProblem], None] | None
 
 
 def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
-                sink: list[ContactProblem] | None = None,
+                sink: list[RollProblem] | None = None,
                 timing: dict[str, float]) -> tuple[xr.Dataset, float]:
     """The contact problems of every (torque, roll) of an analysis on its segments.
 
@@ -80,7 +100,8 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
     progress : bool
         tqdm progress bar over the roll positions.
     sink : list, optional
-        The final problem of every (torque, roll) is appended, in order.
+        The final problem of every (torque, roll) is appended as a :class:`RollProblem`,
+        roll by roll and at each roll torque by torque.
     timing : dict
         ``easeoff`` and ``segments`` times [s], recorded in the dataset.
 
@@ -146,8 +167,8 @@ def _repeat_roll(an: _Analysis, cont: _Continuation, src: int, j: int) -> None:
     an.results.copy_roll(src, j)
     for it, T in enumerate(an.setup.torques):
         if an.sink is not None and (it, src) in cont.problems:
-            an.sink(dataclasses.replace(
-                cont.problems[it, src], name=f"{an.setup.case.name} roll {j} T {T:g}"))
+            an.sink(RollProblem(float(T), j, dataclasses.replace(
+                cont.problems[it, src], name=f"{an.setup.case.name} roll {j} T {T:g}")))
 
 
 def _solve_roll(an: _Analysis, cont: _Continuation, j: int, it: int) -> None:
@@ -243,7 +264,7 @@ def _record(an: _Analysis, cont: _Continuation, j: int, it: int, selection: Roll
     sol = ws.solution
     an.results.record(it, j, sol, ws.iterations, selection.pairs.size)
     if an.sink is not None:
-        an.sink(ws.problem)
+        an.sink(RollProblem(float(an.setup.torques[it]), j, ws.problem))
         cont.problems[it, j] = ws.problem
     if not sol.found:
         log.warning("roll %d, torque %g N m: %s", j, float(an.setup.torques[it]), sol.status)

@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 import scipy.linalg
+import scipy.linalg.lapack
 
 from contact.errors import NotPositiveDefiniteError, ProblemInputError
 from geometry.errors import InputError
@@ -44,6 +45,8 @@ __all__ = [
     "ContactSolution",
     "ProblemScale",
     "contact_residuals",
+    "reduced_kkt",
+    "schur_floor",
     "solve_on_contact_set",
 ]
 
@@ -249,15 +252,83 @@ def contact_residuals(
     }
 
 
+#: LAPACK's Cholesky factorisation and solve in double precision, called directly: the
+#: reduced KKT system of an LTCA problem (N ≲ 300) is small enough that the checking
+#: layers of scipy.linalg.cho_factor/cho_solve cost as much as the factorisation.
+_POTRF, _POTRS = scipy.linalg.lapack.get_lapack_funcs(("potrf", "potrs"), dtype=np.float64)
+
+#: contact sets up to this size are gathered from C by two ``take`` calls, larger ones by
+#: a ``take`` and a fancy-indexed slice (measured: each the faster on its side)
+_TAKE_LIMIT = 96
+
+
+def reduced_kkt(
+    compliance: np.ndarray,
+    separation: np.ndarray,
+    moment_arm: np.ndarray,
+    torque: float,
+    idx: np.ndarray,
+    schur_floor: float,
+) -> tuple[np.ndarray, float] | None:
+    """The KKT system of the contact problem on the contact set ``idx``, solved exactly.
+
+    On the set A: C_AA F_A − R_A Θ = −s_A and R_Aᵀ F_A = T. One Cholesky factorisation
+    of C_AA (LAPACK ``potrf``), two right-hand sides x_s = C_AA⁻¹ s_A, x_r = C_AA⁻¹ R_A
+    (``potrs``); the scalar Schur complement R_Aᵀ x_r gives
+    Θ = (T + R_Aᵀ x_s)/(R_Aᵀ x_r) and F_A = Θ x_r − x_s (seed Eq. 3.12–3.14 on A).
+
+    Parameters
+    ----------
+    compliance : ndarray (N, N) — [mm/N], symmetric
+    separation, moment_arm : ndarray (N,) — [mm]
+    torque : float — [N·mm]
+    idx : int ndarray (k,), k ≥ 1
+        Indices of the contact set A.
+    schur_floor : float — [mm·N]
+        The smallest Schur complement R_Aᵀ C_AA⁻¹ R_A taken as positive.
+
+    Returns
+    -------
+    (F_A [N] shape (k,), Θ [rad]) or None
+        None when C_AA is not positive definite or the Schur complement ≤ ``schur_floor``
+        (A cannot carry the torque).
+    """
+    # C is symmetric: the transposed (Fortran-ordered) view of the C-ordered submatrix is
+    # the same matrix, which LAPACK factors in place without a copy; the two gathers
+    # are the fastest way to it for small sets, one gather and a slice for larger ones
+    rows = compliance.take(idx, 0)
+    C_AA = (rows.take(idx, 1) if idx.size < _TAKE_LIMIT else rows[:, idx]).T
+    factor, info = _POTRF(C_AA, lower=1, clean=0, overwrite_a=1)
+    if info != 0:
+        return None
+    R_A = moment_arm.take(idx)
+    rhs = np.array((separation.take(idx), R_A)).T  # (k, 2), Fortran-ordered
+    x, info = _POTRS(factor, rhs, lower=1, overwrite_b=1)
+    if info != 0:
+        return None
+    x_s, x_r = x[:, 0], x[:, 1]
+    schur = float(R_A.dot(x_r))
+    if not schur > schur_floor:
+        return None
+    theta = (torque + float(R_A.dot(x_s))) / schur
+    return theta * x_r - x_s, theta
+
+
+def schur_floor(problem: ContactProblem) -> float:
+    """[mm·N] The smallest Schur complement R_Aᵀ C_AA⁻¹ R_A :func:`reduced_kkt` takes as
+    positive: 1e-14 of its reference r₀² f₀/δ₀ (:class:`ProblemScale`)."""
+    sc = problem.scale
+    return 1e-14 * sc.arm**2 / (sc.length / sc.force)
+
+
 def solve_on_contact_set(
     problem: ContactProblem, active: np.ndarray
 ) -> tuple[np.ndarray, float] | None:
     """Solve the equality-constrained KKT system on a given contact set exactly.
 
-    On the set A of loaded segments: C_AA F_A − R_A Θ = −s_A and R_Aᵀ F_A = T.
-    With one Cholesky factorisation of C_AA and two right-hand sides,
-    x_s = C_AA⁻¹ s_A, x_r = C_AA⁻¹ R_A, the scalar Schur complement gives
-    Θ = (T + R_Aᵀ x_s)/(R_Aᵀ x_r) and F_A = Θ x_r − x_s; F is zero off A.
+    On the set A of loaded segments: C_AA F_A − R_A Θ = −s_A and R_Aᵀ F_A = T, by
+    :func:`reduced_kkt` (one Cholesky factorisation of C_AA and the scalar Schur
+    complement); F is zero off A.
 
     Parameters
     ----------
@@ -273,22 +344,13 @@ def solve_on_contact_set(
     idx = np.flatnonzero(active)
     if idx.size == 0:
         return None
-    C_AA = problem.compliance[np.ix_(idx, idx)]
-    rhs = np.column_stack((problem.separation[idx], problem.moment_arm[idx]))
-    try:
-        factor = scipy.linalg.cho_factor(C_AA, lower=True, check_finite=False)
-        x = scipy.linalg.cho_solve(factor, rhs, check_finite=False)
-    except (np.linalg.LinAlgError, ValueError):
+    sol = reduced_kkt(problem.compliance, problem.separation, problem.moment_arm,
+                      problem.torque, idx, schur_floor(problem))
+    if sol is None:
         return None
-    R_A = problem.moment_arm[idx]
-    schur = float(R_A @ x[:, 1])
-    sc = problem.scale
-    if not schur > 1e-14 * sc.arm**2 / (sc.length / sc.force):
-        return None
-    theta = (problem.torque + float(R_A @ x[:, 0])) / schur
     F = np.zeros(problem.size)
-    F[idx] = theta * x[:, 1] - x[:, 0]
-    return F, theta
+    F[idx] = sol[0]
+    return F, sol[1]
 
 
 @dataclass(frozen=True, eq=False)

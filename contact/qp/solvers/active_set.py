@@ -26,7 +26,7 @@ import time
 
 import numpy as np
 
-from contact.qp.problem import ContactProblem, solve_on_contact_set
+from contact.qp.problem import ContactProblem, reduced_kkt, schur_floor, solve_on_contact_set
 
 __all__ = ["block_pivoting", "initial_contact_set", "primal_active_set"]
 
@@ -55,20 +55,21 @@ def initial_contact_set(problem: ContactProblem) -> np.ndarray:
     -------
     bool array (N,)
     """
-    R = problem.moment_arm
+    R, s = problem.moment_arm, problem.separation
     c = problem.compliance.sum(axis=1)
-    ok = (R > 0) & (c > 0)
-    if not np.any(ok):
+    idx = ((R > 0) & (c > 0)).nonzero()[0]
+    if idx.size == 0:
         return R > 0
-    idx = np.flatnonzero(ok)
-    brk = problem.separation[idx] / R[idx]
-    order = np.argsort(brk)
-    idx, brk = idx[order], brk[order]
-    a = np.cumsum(R[idx] ** 2 / c[idx])
-    b = np.cumsum(R[idx] * problem.separation[idx] / c[idx])
+    brk = s.take(idx) / R.take(idx)
+    order = brk.argsort()
+    idx, brk = idx.take(order), brk.take(order)
+    R_i, s_i, c_i = R.take(idx), s.take(idx), c.take(idx)
+    a = (R_i * R_i / c_i).cumsum()
+    b = (R_i * s_i / c_i).cumsum()
     theta = (problem.torque + b) / a  # Θ if the first k+1 segments are loaded
-    upper = np.append(brk[1:], np.inf)
-    k = int(np.argmax(theta <= upper))  # first k whose Θ lies before the next break point
+    # the first k whose Θ lies before the next break point (the last one always does)
+    before = theta[:-1] <= brk[1:]
+    k = int(before.argmax()) if np.count_nonzero(before) else idx.size - 1
     active = np.zeros(problem.size, dtype=bool)
     active[idx[: k + 1]] = True
     return active
@@ -164,8 +165,9 @@ def block_pivoting(
     """
     t0 = time.perf_counter()
     n = problem.size
-    R = problem.moment_arm
+    C, s, R, T = problem.compliance, problem.separation, problem.moment_arm, problem.torque
     f_tol, y_tol = _thresholds(problem)
+    floor = schur_floor(problem)
     if initial_active_set is None:
         active = initial_contact_set(problem)
     else:
@@ -177,25 +179,32 @@ def block_pivoting(
     F = np.zeros(n)
     theta = 0.0
     for it in range(1, max_iterations + 1):
-        key = np.packbits(active).tobytes()
+        key = active.tobytes()
         if key in seen:
             reason = "cycled (contact set repeated)"
             break
         seen.add(key)
-        sol = solve_on_contact_set(problem, active)
+        idx = active.nonzero()[0]
+        sol = reduced_kkt(C, s, R, T, idx, floor) if idx.size else None
         if sol is None:
             # the set cannot carry the torque: add the loaded-side segments back
             active = active | (R > 0)
-            sol = solve_on_contact_set(problem, active)
+            idx = active.nonzero()[0]
+            sol = reduced_kkt(C, s, R, T, idx, floor)
             if sol is None:
                 reason = "contact set cannot carry the torque"
                 break
-        F, theta = sol
-        Y = problem.gap(F, theta)
-        drop = active & (F < -f_tol)
-        add = ~active & (Y < -y_tol)
-        if not drop.any() and not add.any():
-            F[~active] = 0.0
+        F_A, theta = sol
+        F = np.zeros(n)
+        F[idx] = F_A
+        # the gaps Y = C F + s − R Θ: on A they vanish by construction, off A they must
+        # not be negative; on A the forces must not be negative (count_nonzero: the
+        # cheapest test of a small boolean array)
+        Y = C @ F + s - R * theta
+        drop = F_A < -f_tol
+        add = Y < -y_tol
+        add[idx] = False
+        if not np.count_nonzero(drop) and not np.count_nonzero(add):
             return {
                 "force": F,
                 "rotation": theta,
@@ -205,7 +214,8 @@ def block_pivoting(
                 "solve_time": time.perf_counter() - t0,
                 "fallback": False,
             }
-        active = (active & ~drop) | add
+        active[idx[drop]] = False
+        active |= add
     if not fallback:
         return {
             "force": F,

@@ -1,0 +1,347 @@
+"""Every figure of an analysis, named and captioned, drawn from its DataTree alone.
+
+:func:`analysis_figures` yields the figures of a tree read back from ``ltca run``'s
+netCDF (or straight from :func:`contact.pipeline.run_analysis`) one at a time, each with
+a file name and a caption; :func:`plot_analysis` writes them as PNGs and the HTML report
+(:mod:`contact.plots.report`) embeds them. Groups a tree lacks (no ``/friction`` when the
+efficiency stage was skipped, no ``/theoretical`` without deviations) give no figures.
+
+Public functions
+----------------
+NamedFigure            a figure with its file name and caption
+RenderedFigure         the same encoded as PNG; render_figures encodes them
+FigureSpec             a figure not yet drawn (the call that draws it)
+analysis_specs         the figures of an analysis tree, as calls
+analysis_figures       the same, drawn
+render_analysis        the same, encoded as PNG by one or more processes
+plot_analysis          write them as PNGs into a directory
+plot_utca              the unloaded figures (``ltca utca --plots``)
+efficiency_map_figures the figures of an efficiency map
+plot_efficiency_map    write them as PNGs into a directory
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from functools import partial
+from pathlib import Path
+
+import xarray as xr
+from matplotlib.figure import Figure
+
+from contact.plots.curves import (
+    efficiency_curve_figure,
+    load_share_figure,
+    te_comparison_figure,
+    transmission_error_figure,
+)
+from contact.plots.flank import (
+    FRICTION_FLANK_PLOTS,
+    contact_pattern_figure,
+    easeoff_contour_figure,
+    easeoff_map_figure,
+    easeoff_topography_figure,
+    friction_flank_figure,
+    pressure_figure,
+    segment_panels_figure,
+)
+from contact.plots.maps import (
+    efficiency_map_figure,
+    efficiency_roughness_figure,
+    efficiency_speed_figure,
+)
+from contact.plots.style import DPI, png_bytes, save_png, torque_text
+from geometry.errors import InputError
+
+__all__ = [
+    "FigureSpec",
+    "NamedFigure",
+    "RenderedFigure",
+    "analysis_figures",
+    "analysis_specs",
+    "efficiency_map_figures",
+    "plot_analysis",
+    "plot_efficiency_map",
+    "plot_utca",
+    "render_analysis",
+    "render_figures",
+]
+
+
+@dataclass(frozen=True)
+class NamedFigure:
+    """A figure with the stem of its file name and a caption (for the report)."""
+
+    name: str
+    caption: str
+    figure: Figure
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """A figure not yet drawn: its name, caption and the call that draws it (picklable,
+    so another process can draw it)."""
+
+    name: str
+    caption: str
+    draw: partial
+
+
+@dataclass(frozen=True)
+class RenderedFigure:
+    """A figure encoded once as PNG, for the files and the report alike."""
+
+    name: str
+    caption: str
+    png: bytes
+
+
+def render_figures(figures: Iterable[NamedFigure], dpi: int = DPI) -> Iterator[RenderedFigure]:
+    """Each figure encoded as PNG (drawn once; the Figure is not kept)."""
+    for nf in figures:
+        yield RenderedFigure(nf.name, nf.caption, png_bytes(nf.figure, dpi))
+
+
+def _group(tree: xr.DataTree, path: str) -> xr.Dataset | None:
+    try:
+        return tree[path].to_dataset()
+    except KeyError:
+        return None
+
+
+def _deviation_specs(tree: xr.DataTree, eo, ut, lt) -> Iterator[FigureSpec]:
+    th_eo, th_ut, th_lt = (_group(tree, f"theoretical/{g}") for g in ("easeoff", "utca", "ltca"))
+    if th_eo is not None:
+        yield FigureSpec(
+            "deviations_easeoff",
+            "Ease-off of the theoretical and the deviated surfaces on one scale "
+            "(seed Figs. 4.6, 4.11).",
+            partial(easeoff_map_figure, {"theoretical": th_eo, "deviated": eo}))
+    if "ease_off_change" in eo:
+        yield FigureSpec(
+            "deviations_easeoff_change",
+            "Change of the ease-off by the surface deviations, deviated − theoretical; "
+            "the diverging colours are centred on zero (seed Figs. 4.6c, 4.11c).",
+            partial(easeoff_map_figure, {"deviated − theoretical": eo}, "ease_off_change",
+                    diverging=True))
+    if th_eo is not None and th_ut is not None:
+        yield FigureSpec(
+            "deviations_contact_pattern_theoretical",
+            "Contact patterns of the theoretical surfaces, beside the deviated ones above "
+            "(seed Figs. 4.7, 4.12).",
+            partial(contact_pattern_figure, th_eo, th_ut, th_lt))
+    if th_lt is not None and lt is not None and th_eo is not None:
+        panels = []
+        for i, t in enumerate(lt["torque"].values):
+            for name, e, dl in (("theoretical", th_eo, th_lt), ("deviated", eo, lt)):
+                panels.append((f"{name}, {torque_text(t)}", e, dl,
+                               dl["pressure_max"].isel(torque=i).values))
+        yield FigureSpec(
+            "deviations_pressure",
+            "Maximum contact pressure of the theoretical (left) and deviated (right) "
+            "surfaces at each torque, one colour scale (seed Figs. 4.9, 4.14).",
+            partial(segment_panels_figure, panels, label="maximum Hertzian pressure [MPa]",
+                                  edges_apart=True, columns=2,
+                                  what="maximum contact pressure: theoretical and deviated"))
+    if th_lt is not None and th_ut is not None and lt is not None and ut is not None:
+        yield FigureSpec(
+            "deviations_transmission_error",
+            "UTE and LTE of the theoretical and deviated surfaces (seed Figs. 4.8, 4.13).",
+            partial(te_comparison_figure, {"theoretical": (th_ut, th_lt), "deviated": (ut, lt)}))
+
+
+def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
+    """The figures of an analysis, each as the function call that draws it.
+
+    Parameters
+    ----------
+    tree : xarray.DataTree
+        ``run_analysis``'s tree or ``read_netcdf(file, tree=True)``: ``/easeoff`` and
+        any of ``/utca``, ``/ltca``, ``/friction``, ``/theoretical``.
+
+    Yields
+    ------
+    FigureSpec
+        ``easeoff_topography``, ``easeoff``, ``contact_pattern``,
+        ``transmission_error``, ``pressure``, ``load_share``, ``friction_flank``,
+        ``friction_efficiency`` and, for deviated runs, ``deviations_*`` — those whose
+        groups the tree has.
+
+    Raises
+    ------
+    InputError
+        If the tree lacks ``/easeoff`` (not an analysis file).
+    """
+    eo = _group(tree, "easeoff")
+    if eo is None:
+        raise InputError("tree: has no /easeoff group (not a hypoid-ltca analysis file)")
+    ut, lt, fr = (_group(tree, g) for g in ("utca", "ltca", "friction"))
+    yield FigureSpec("easeoff_topography",
+                      "Ease-off over the normalised gear tooth (seed Fig. 2.8).",
+                      partial(easeoff_topography_figure, eo))
+    yield FigureSpec("easeoff",
+                      "Ease-off on the gear's projection plane, with iso-lines of the roll "
+                      "angle (seed Fig. 2.7).", partial(easeoff_contour_figure, eo))
+    if ut is not None:
+        yield FigureSpec(
+            "contact_pattern",
+            "Unloaded pattern and, per torque, the loaded pattern on the same outline, "
+            "with the paths of contact (seed Figs. 2.10, 3.7).",
+            partial(contact_pattern_figure, eo, ut, lt))
+    if ut is not None or lt is not None:
+        yield FigureSpec(
+            "transmission_error",
+            "UTE of the tooth pairs and their envelope; LTE per torque (seed Figs. 2.9, 3.6).",
+            partial(transmission_error_figure, ut, lt))
+    if lt is not None:
+        yield FigureSpec(
+            "pressure",
+            "Maximum contact pressure over two mesh cycles, one colour scale for all "
+            "torques; the edge contact in its own scale outside the flank (seed Fig. 3.7).",
+            partial(pressure_figure, eo, lt))
+        yield FigureSpec("load_share", "Load sharing of the tooth pairs.",
+                          partial(load_share_figure, lt))
+    if fr is not None and lt is not None:
+        if any(name in fr for name in FRICTION_FLANK_PLOTS):
+            yield FigureSpec(
+                "friction_flank",
+                "Sliding and rolling velocity, slide-to-roll ratio, lambda ratio, friction "
+                "coefficient and sliding loss on the gear flank at the largest torque "
+                "(seed Figs. 5.5–5.10).",
+                partial(friction_flank_figure, eo, lt, fr))
+        yield FigureSpec("friction_efficiency",
+                          "Instantaneous mechanical efficiency over the mesh cycles.",
+                          partial(efficiency_curve_figure, fr, lt))
+    if "theoretical" in tree.children:
+        yield from _deviation_specs(tree, eo, ut, lt)
+
+
+def analysis_figures(tree: xr.DataTree) -> Iterator[NamedFigure]:
+    """The figures of an analysis (:func:`analysis_specs`), each drawn when reached.
+
+    Raises
+    ------
+    InputError
+        If the tree lacks ``/easeoff`` (not an analysis file).
+    """
+    for spec in analysis_specs(tree):
+        yield NamedFigure(spec.name, spec.caption, spec.draw())
+
+
+def _render(spec: FigureSpec, dpi: int) -> RenderedFigure:
+    return RenderedFigure(spec.name, spec.caption, png_bytes(spec.draw(), dpi))
+
+
+def render_analysis(tree: xr.DataTree, workers: int = 1, dpi: int = DPI) -> list[RenderedFigure]:
+    """Every figure of an analysis encoded as PNG, drawn by ``workers`` processes.
+
+    Parameters
+    ----------
+    tree : xarray.DataTree
+    workers : int
+        Processes drawing at once (≥ 1; 1 draws here). The figures are independent, so
+        on a machine with that many free cores the wall time falls with them.
+    dpi : int
+
+    Returns
+    -------
+    list of RenderedFigure
+        In the order of :func:`analysis_specs`.
+
+    Raises
+    ------
+    InputError
+        If the tree lacks ``/easeoff`` or ``workers`` < 1.
+    """
+    if int(workers) < 1:
+        raise InputError(f"workers: must be >= 1, got {workers!r}")
+    specs = list(analysis_specs(tree))
+    if workers == 1 or len(specs) < 2:
+        return [_render(s, dpi) for s in specs]
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    ctx = multiprocessing.get_context("fork" if "fork" in
+                                      multiprocessing.get_all_start_methods() else None)
+    with ProcessPoolExecutor(max_workers=int(workers), mp_context=ctx) as pool:
+        # the costliest first, so the last figure does not run alone
+        order = sorted(range(len(specs)), key=lambda i: -_COST.get(specs[i].name, 1.0))
+        futures = {i: pool.submit(_render, specs[i], dpi) for i in order}
+        return [futures[i].result() for i in range(len(specs))]
+
+
+#: relative drawing cost of the figures (benchmarks/plots.py), to start the costly first
+_COST = {"friction_flank": 4.0, "contact_pattern": 2.0, "pressure": 2.0,
+         "transmission_error": 2.0, "deviations_pressure": 3.0}
+
+
+def _write(figures, directory: str | os.PathLike[str]) -> list[Path]:
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    return [save_png(nf.figure, d / f"{nf.name}.png") for nf in figures]
+
+
+def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
+                  workers: int = 1) -> list[Path]:
+    """Write every figure of an analysis (:func:`analysis_figures`) as PNG into ``directory``
+    (created if missing) and return the paths; ``workers`` processes draw them.
+
+    Raises
+    ------
+    InputError
+        If the tree lacks ``/easeoff``.
+    """
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    out = []
+    for rf in render_analysis(tree, workers):
+        (d / f"{rf.name}.png").write_bytes(rf.png)
+        out.append(d / f"{rf.name}.png")
+    return out
+
+
+def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
+              directory: str | os.PathLike[str]) -> list[Path]:
+    """The unloaded figures (ease-off topography and contour, pattern, UTE) into
+    ``directory`` (created if missing).
+
+    Returns
+    -------
+    list of pathlib.Path
+    """
+    figs = [NamedFigure("easeoff_topography", "", easeoff_topography_figure(easeoff)),
+            NamedFigure("easeoff", "", easeoff_contour_figure(easeoff)),
+            NamedFigure("contact_pattern", "", contact_pattern_figure(easeoff, utca)),
+            NamedFigure("transmission_error", "", transmission_error_figure(utca, None))]
+    return _write(figs, directory)
+
+
+def efficiency_map_figures(emap: xr.Dataset) -> Iterator[NamedFigure]:
+    """The figures of an efficiency map (:func:`contact.pipeline.efficiency_map`).
+
+    Yields
+    ------
+    NamedFigure
+        ``efficiency_map`` (speed × torque contour, a panel per temperature and
+        roughness), ``power_loss_map``, ``efficiency_vs_speed`` and, when roughness or
+        temperature is swept, ``efficiency_vs_roughness``.
+    """
+    yield NamedFigure("efficiency_map", "Efficiency over pinion speed × torque.",
+                      efficiency_map_figure(emap))
+    if "power_loss" in emap:
+        yield NamedFigure("power_loss_map", "Mesh power loss over pinion speed × torque.",
+                          efficiency_map_figure(emap, "power_loss"))
+    yield NamedFigure("efficiency_vs_speed", "Efficiency against speed (seed Fig. 5.11).",
+                      efficiency_speed_figure(emap))
+    if emap.sizes.get("roughness", 1) > 1 or emap.sizes.get("temperature", 1) > 1:
+        yield NamedFigure("efficiency_vs_roughness",
+                          "Efficiency against roughness per oil temperature (seed Fig. 5.12).",
+                          efficiency_roughness_figure(emap))
+
+
+def plot_efficiency_map(emap: xr.Dataset, directory: str | os.PathLike[str]) -> list[Path]:
+    """Write the figures of an efficiency map as PNGs into ``directory`` (created if
+    missing) and return the paths."""
+    return _write(efficiency_map_figures(emap), directory)

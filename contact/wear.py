@@ -1,0 +1,732 @@
+"""Simulated wear of the flanks: Archard's law integrated over load cycles (seed ch. 6 (v)).
+
+The seed closes with "the way local deviation and mounting errors are included in the
+proposed model is general such that this model can be used to predict surface wear"
+(future work (v)); its Fig. 4.5 deviations are worn flanks predicted by Park & Kahraman's
+wear model (seed ref. [4.15]). This module runs that loop on the toolkit's own chain:
+each wear step analyses the current (worn) surfaces — ease-off updated by the deviation
+grids (:func:`contact.utca.deviations.apply_deviations`, seed Eq. 4.3–4.10), UTCA, LTCA —
+computes the wear depth of one mesh at every node of a deviation grid of each member,
+multiplies it by the load cycles of the step and removes it from the grids, which the
+next step analyses.
+
+Archard's law in a single-point observation
+-------------------------------------------
+Archard's law (Archard 1953) gives the worn volume V = k F s of a contact carrying the
+normal load F over a sliding distance s, k the dimensional wear coefficient [m²/N =
+m³/(N·m)]; per unit area the worn depth is h = k p s (p the contact pressure). A point of a
+flank is worn while the loaded band of the contact line passes over it (Flodin &
+Andersson's single-point observation): with p(x) the pressure across the band, V_s the
+sliding speed of the two surfaces and c the speed of the contact line across the flank
+*relative to that flank's material*, the depth of one passage is
+
+    h = k ∫ p |V_s| dt = k |V_s| / c · ∫ p dx = k w |V_s| / c,
+
+w = ∫ p dx the load per unit length of the line [N/mm] — exact for any pressure profile
+across the band (Hertz's semi-ellipse, w = π p₀ b / 2) as long as V_s and c are constant
+over its width 2b. For a uniform pressure p over the band (w = 2 b p) it is Archard's
+h = k p s with the sliding distance s = 2b |V_s| / c of Flodin & Andersson (1997, Eq. 6–7;
+Bajpai, Kahraman & Anderson 2004; for hypoid gears Park & Kahraman 2009, Park, Kolivand &
+Kahraman 2014, who likewise take s from the contact velocities). The two members differ
+only in c: the band passes faster over the faster flank, which therefore wears less.
+
+Speeds per radian of pinion roll: V_s from the rigid-body velocities of the members at the
+LTCA's contact points (:func:`friction.kinematics.surface_velocities`, seed Eq. 5.1–5.6);
+c from the surface of roll angle Q (:mod:`contact.utca.easeoff`): the contact line at pinion
+roll q is the iso-line Q = q on the gear flank (seed §2.3.2.2) and on the pinion flank (the
+mates of those gear points), so it moves over a flank with the body-fixed speed
+c = 1 / |∇_S Q| per unit roll, ∇_S the surface gradient in arc length on that flank
+(:func:`contact_line_speed`). Their difference across the line is the sliding speed across
+it, c_g − c_p = V_s·w — an identity of the two independent computations that
+``tests/test_wear.py`` checks.
+
+Bookkeeping: the wear depth of a passage is computed at the LTCA's loaded contact-curve
+segments (edge contact on the flank boundary is not worn: it is not on the flank grid), in
+gear projection-plane fractions for the gear and in the pinion fractions of the mates for
+the pinion, and interpolated linearly (Delaunay) onto the nodes of each member's deviation
+grid, 0 outside the swept region (Park, Kolivand & Kahraman 2014 interpolate wear depths in
+the same way). One *load cycle* is one revolution of the pinion: every pinion tooth meshes
+once, every gear tooth z_p/z_g times on average (all teeth wear alike: the toolkit's teeth
+are identical). The wear is accumulated as a normal deviation, negative = material removed
+(:class:`contact.utca.deviations.SurfaceDeviation`), first order like the deviations
+themselves; the contact line speeds are those of the unworn surfaces (µm of wear leave them
+unchanged to first order).
+
+Public functions
+----------------
+WEAR_GRID              the default deviation grid of the wear (41 × 21 nodes)
+archard_depth          depth of one passage of the loaded band, k w |V_s| / c
+contact_line_speed     speed of the contact line over a flank per unit roll, 1 / |∇_S Q|
+flank_line_speeds      those speeds on the gear grid of an ease-off, gear and pinion
+passage_wear           depth of one passage at the loaded segments of an LTCA
+depth_on_grid          scattered depths onto a deviation grid (linear, 0 outside)
+simulate_wear          the whole wear loop of a case → an xarray Dataset over ``step``
+final_deviations       the worn (pinion, gear) SurfaceDeviations of a wear result
+
+References
+----------
+J. F. Archard, "Contact and rubbing of flat surfaces", J. Appl. Phys. 24 (1953) 981–988.
+A. Flodin, S. Andersson, "Simulation of mild wear in spur gears", Wear 207 (1997) 16–23.
+P. Bajpai, A. Kahraman, N. E. Anderson, "A surface wear prediction methodology for
+parallel-axis gear pairs", J. Tribol. 126 (2004) 597–605.
+D. Park, A. Kahraman, "A surface wear model for hypoid gear pairs", Wear 267 (2009)
+1595–1604 (seed ref. [4.15]).
+D. Park, M. Kolivand, A. Kahraman, "An approximate method to predict surface wear of
+hypoid gears using surface interpolation", Mech. Mach. Theory 71 (2014) 64–78.
+M. Kolivand, PhD dissertation, Ohio State University, 2009 (the seed), §4.3, ch. 6 (v).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import os
+import time
+
+import numpy as np
+import xarray as xr
+from scipy.interpolate import LinearNDInterpolator, RegularGridInterpolator
+from scipy.spatial import QhullError, cKDTree
+
+from contact.ltca import LTCAOptions, loaded_tca
+from contact.pipeline import resolve_case
+from contact.utca import unloaded_tca
+from contact.utca.deviations import SurfaceDeviation, apply_deviations
+from contact.utca.easeoff import EaseOff, ease_off
+from friction.kinematics import surface_velocities
+from geometry import __version__
+from geometry.assembly import Misalignment
+from geometry.case import Case
+from geometry.conventions import data_var
+from geometry.errors import InputError
+from geometry.flank import flank_at
+from geometry.validation import integer, positive, real, real_array
+
+__all__ = [
+    "WEAR_GRID",
+    "archard_depth",
+    "contact_line_speed",
+    "depth_on_grid",
+    "final_deviations",
+    "flank_line_speeds",
+    "passage_wear",
+    "simulate_wear",
+]
+
+log = logging.getLogger(__name__)
+
+#: default deviation grid of the wear of each member: 41 lengthwise (toe → heel) × 21
+#: profile (root → tip) nodes over the fractions of the flank grid
+#: (:data:`geometry.flank.DEFAULT_GRID`, the ease-off's): far finer than a CMM's 9 × 5
+#: because wear stops sharply where the contact region ends, and the interpolating spline
+#: of :class:`~contact.utca.deviations.SurfaceDeviation` turns that step into a ramp one
+#: grid cell wide (a rim left standing proud inside the contact region on a coarse grid)
+WEAR_GRID = {"nu": 41, "nv": 21, "u_limits": (0.0, 1.0), "v_limits": (0.05, 1.0)}
+
+#: [mm²/N] per [m²/N]: the wear coefficient is given in m²/N, lengths are in mm
+_K_TO_MM = 1e6
+#: pinion speed [rpm] at which 1 m/s of surface speed is 1 mm per rad of pinion roll × 1e-3
+_UNIT_ROLL_RPM = 60.0 / (2.0 * math.pi)
+
+
+def archard_depth(load_per_length, sliding_speed, contact_speed, wear_coefficient):
+    """Wear depth of one passage of a loaded contact band over a flank point (Archard).
+
+    Parameters
+    ----------
+    load_per_length : array_like — [N/mm]
+        w = ∫ p dx, the load per unit length of the contact line (≥ 0).
+    sliding_speed : array_like — [any speed unit]
+        |V_s|, the magnitude of the sliding velocity of the two surfaces (≥ 0).
+    contact_speed : array_like — [same unit as ``sliding_speed``]
+        c > 0, the speed of the contact line across the flank relative to its material.
+    wear_coefficient : float — [m²/N]
+        Dimensional Archard coefficient k ≥ 0 (= m³/(N·m); converted to mm²/N inside).
+
+    Returns
+    -------
+    ndarray — [mm]
+        h = k w |V_s| / c, broadcast shape; equal to Archard's k p s for a uniform pressure
+        p over the band 2b (w = 2bp) and the sliding distance s = 2b |V_s| / c.
+
+    Raises
+    ------
+    InputError
+        Negative or non-finite load or sliding speed, contact speed not > 0, or k < 0.
+
+    Notes
+    -----
+    Archard (1953); single-point observation of Flodin & Andersson (1997, Eq. 6–7): the
+    band passes over a point in 2b / c, during which the surfaces slide |V_s| · 2b / c;
+    integrating k p |V_s| dt over the passage gives k w |V_s| / c for any pressure profile.
+    """
+    w = real_array("load_per_length", load_per_length, unit="N/mm", low=0.0)
+    vs = real_array("sliding_speed", sliding_speed, low=0.0)
+    c = real_array("contact_speed", contact_speed, low=0.0, low_open=True)
+    k = real("wear_coefficient", wear_coefficient, unit="m2/N", low=0.0)
+    return k * _K_TO_MM * w * vs / c
+
+
+def contact_line_speed(position, roll_angle, u, v) -> np.ndarray:
+    """Speed of the contact line over a flank per unit pinion roll, c = 1 / |∇_S Q|.
+
+    Parameters
+    ----------
+    position : array (nu, nv, 3) — [mm]
+        Flank points in a frame fixed to the member, over a grid of fractions (u, v)
+        (NaN where there is none).
+    roll_angle : array (nu, nv) — [rad]
+        The pinion roll Q at which each point is on the contact line (the surface of roll
+        angle; its iso-lines are the contact lines).
+    u, v : array (nu,), (nv,) — [1]
+        Uniformly spaced grid fractions (≥ 3 each).
+
+    Returns
+    -------
+    ndarray (nu, nv) — [mm/rad]
+        c = 1 / |∇_S Q| with |∇_S Q|² = (Q_u, Q_v) G⁻¹ (Q_u, Q_v)ᵀ, G the first fundamental
+        form of the position over (u, v) (second-order central differences, second-order
+        one-sided at the grid edges); NaN where a neighbour is missing or Q is stationary.
+
+    Raises
+    ------
+    InputError
+        Shapes that do not match, fewer than 3 nodes, or a non-uniform grid.
+
+    Notes
+    -----
+    The contact line at roll q is the iso-line Q = q (seed §2.3.2.2); an iso-line of a
+    field moves along its gradient at the speed dq/dt / |∇Q| (level-set kinematics), here
+    per unit dq. Used for the sliding distance of the single-point observation
+    (:func:`archard_depth`).
+    """
+    r = np.asarray(position, dtype=float)
+    q = np.asarray(roll_angle, dtype=float)
+    uu = np.asarray(u, dtype=float)
+    vv = np.asarray(v, dtype=float)
+    if uu.ndim != 1 or vv.ndim != 1 or uu.size < 3 or vv.size < 3:
+        raise InputError(f"u, v: must be 1-D grids of at least 3 fractions, got shapes "
+                         f"{uu.shape}, {vv.shape}")
+    if r.shape != (uu.size, vv.size, 3) or q.shape != (uu.size, vv.size):
+        raise InputError(f"position, roll_angle: must have shapes (nu, nv, 3), (nu, nv) = "
+                         f"({uu.size}, {vv.size}[, 3]), got {r.shape}, {q.shape}")
+    du, dv = np.diff(uu), np.diff(vv)
+    if not (np.allclose(du, du[0], rtol=1e-9) and np.allclose(dv, dv[0], rtol=1e-9)
+            and du[0] > 0 and dv[0] > 0):
+        raise InputError("u, v: must be uniformly spaced increasing fractions")
+    ru = np.gradient(r, du[0], axis=0, edge_order=2)
+    rv = np.gradient(r, dv[0], axis=1, edge_order=2)
+    qu = np.gradient(q, du[0], axis=0, edge_order=2)
+    qv = np.gradient(q, dv[0], axis=1, edge_order=2)
+    e = np.sum(ru * ru, -1)
+    f = np.sum(ru * rv, -1)
+    g = np.sum(rv * rv, -1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        grad2 = (g * qu * qu - 2.0 * f * qu * qv + e * qv * qv) / (e * g - f * f)
+        c = 1.0 / np.sqrt(grad2)
+    return np.where(np.isfinite(c) & (grad2 > 0), c, np.nan)
+
+
+def flank_line_speeds(case: Case, eo: EaseOff) -> tuple[np.ndarray, np.ndarray]:
+    """Speeds of the contact line over the gear flank and over the pinion flank.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        The case of ``eo``.
+    eo : contact.utca.easeoff.EaseOff
+        Its ease-off (theoretical surfaces).
+
+    Returns
+    -------
+    (gear, pinion) : ndarray (nu, nv) each — [mm/rad]
+        :func:`contact_line_speed` on the gear grid of ``eo``: over the gear flank
+        (``eo.gear_position``) and over the pinion flank (the pinion mates of the gear
+        nodes, solved with :func:`geometry.flank.flank_at` in the pinion frame), per unit
+        pinion roll; NaN where undefined.
+
+    Raises
+    ------
+    InputError
+        If ``eo`` is not an EaseOff.
+
+    Notes
+    -----
+    Both use the roll-angle surface Q (``eo.raw_roll_angle``, seed §2.3.2.2): a gear node
+    and its pinion mate are on the contact line at the same roll.
+    """
+    if not isinstance(eo, EaseOff):
+        raise InputError(f"eo: must be a contact.utca.easeoff.EaseOff, got {type(eo).__name__}")
+    q = np.asarray(eo.raw_roll_angle, dtype=float)
+    gear = contact_line_speed(eo.gear_position, q, eo.u, eo.v)
+    have = np.isfinite(eo.pinion_axial) & np.isfinite(eo.pinion_radius)
+    mates = np.full(eo.gear_position.shape, np.nan)
+    if have.any():
+        fs = flank_at(case, "pinion", eo.pinion_flank, eo.pinion_axial[have],
+                      eo.pinion_radius[have])
+        mates[have] = fs.position
+    pinion = contact_line_speed(mates, q, eo.u, eo.v)
+    return gear, pinion
+
+
+def _on_gear_grid(eo: EaseOff, field: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """A field over the gear grid of ``eo`` at gear fractions (u, v), bilinear; NaN
+    outside or next to a missing node."""
+    f = RegularGridInterpolator((eo.u, eo.v), field, bounds_error=False, fill_value=np.nan)
+    return f(np.stack([u, v], -1)) if u.size else np.zeros(0)
+
+
+def passage_wear(ltca: xr.Dataset, eo: EaseOff, speeds: tuple[np.ndarray, np.ndarray],
+                 wear_coefficient: float, *, torque_index: int = 0) -> dict[str, np.ndarray]:
+    """Wear depth of one passage at the contact-curve segments of an LTCA.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        The ``/ltca`` dataset of :func:`contact.ltca.loaded_tca` (``load_per_length``,
+        ``force``, ``segment_u``, ``segment_v``, ``segment_kind``, ``contact_point``,
+        ``contact_normal``, ``contact_tangent``, the axes in its attributes).
+    eo : contact.utca.easeoff.EaseOff
+        The ease-off of the case (the pinion mates ``pinion_u``, ``pinion_v`` of its gear
+        grid).
+    speeds : (gear, pinion) arrays (nu, nv) — [mm/rad]
+        Contact line speeds over the flanks on the gear grid of ``eo``
+        (:func:`flank_line_speeds`).
+    wear_coefficient : float — [m²/N]
+        Archard's k ≥ 0.
+    torque_index : int
+        Which torque of ``ltca``.
+
+    Returns
+    -------
+    dict of 1-D arrays over the contact-curve segments with finite fractions
+        ``gear_u``, ``gear_v`` (gear fractions), ``pinion_u``, ``pinion_v`` (pinion
+        fractions of the mates, NaN where none) [1]; ``load_per_length`` [N/mm] (0 where
+        unloaded); ``sliding_speed``, ``sliding_across`` [mm/rad] (per unit pinion roll);
+        ``gear_speed``, ``pinion_speed`` [mm/rad]; ``gear_depth``, ``pinion_depth`` [mm]
+        (one passage, :func:`archard_depth`; 0 where unloaded).
+
+    Raises
+    ------
+    InputError
+        Missing variables, bad ``speeds`` shapes or a bad wear coefficient; a loaded
+        segment without a finite contact line speed.
+
+    Notes
+    -----
+    Edge segments (load on the flank boundary, :data:`contact.ltca.EDGE_KINDS`) are left
+    out: their load is not on the flank grid (logged at INFO with its share).
+    """
+    need = ("load_per_length", "force", "segment_u", "segment_v", "segment_kind",
+            "contact_point", "contact_normal", "contact_tangent")
+    missing = [n for n in need if n not in ltca.variables]
+    if missing:
+        raise InputError(f"ltca: dataset lacks {missing} (expected contact.ltca.loaded_tca "
+                         "output)")
+    g_speed, p_speed = (np.asarray(s, dtype=float) for s in speeds)
+    if g_speed.shape != eo.raw_roll_angle.shape or p_speed.shape != g_speed.shape:
+        raise InputError(f"speeds: must be two arrays of the ease-off grid shape "
+                         f"{eo.raw_roll_angle.shape}")
+    k = real("wear_coefficient", wear_coefficient, unit="m2/N", low=0.0)
+    w = np.nan_to_num(ltca["load_per_length"].values[torque_index])  # (J, K, S)
+    force = np.nan_to_num(ltca["force"].values[torque_index])
+    su = ltca["segment_u"].values
+    sv = ltca["segment_v"].values
+    curve = (ltca["segment_kind"].values == "curve")[None, None, :]
+    take = curve & np.isfinite(su) & np.isfinite(sv)
+    edge_force = float(force[~np.broadcast_to(curve, force.shape)].sum())
+    if edge_force > 0:
+        log.info("passage_wear: %.3g %% of the load is edge contact (not worn)",
+                 100 * edge_force / max(float(force.sum()), 1e-300))
+    wt = np.where(force[take] > 0, w[take], 0.0)
+    su, sv = su[take], sv[take]
+    kin = surface_velocities(
+        ltca["contact_point"].values[take], ltca["contact_normal"].values[take],
+        ltca["contact_tangent"].values[take],
+        pinion_axis=ltca.attrs["pinion_axis"], pinion_origin=ltca.attrs["pinion_origin_mm"],
+        gear_axis=ltca.attrs["gear_axis"], gear_origin=ltca.attrs["gear_origin_mm"],
+        pinion_speed=_UNIT_ROLL_RPM, ratio=float(ltca.attrs["ratio"]), check_meshing=False)
+    vs = kin["sliding_velocity"] * 1e3  # m/s at 1 rad/s → mm/rad
+    c_g = _on_gear_grid(eo, g_speed, su, sv)
+    c_p = _on_gear_grid(eo, p_speed, su, sv)
+    loaded = wt > 0
+    bad = loaded & ~(np.isfinite(c_g) & np.isfinite(c_p) & (c_g > 0) & (c_p > 0))
+    if bad.any():
+        raise InputError(f"speeds: no contact line speed at {int(bad.sum())} loaded "
+                         "segments (outside the ease-off's computed nodes)")
+    gd = np.zeros(su.shape)
+    pd = np.zeros(su.shape)
+    if loaded.any():
+        gd[loaded] = archard_depth(wt[loaded], vs[loaded], c_g[loaded], k)
+        pd[loaded] = archard_depth(wt[loaded], vs[loaded], c_p[loaded], k)
+    return {
+        "gear_u": su, "gear_v": sv,
+        "pinion_u": _on_gear_grid(eo, np.asarray(eo.pinion_u, float), su, sv),
+        "pinion_v": _on_gear_grid(eo, np.asarray(eo.pinion_v, float), su, sv),
+        "load_per_length": wt, "sliding_speed": vs,
+        "sliding_across": kin["sliding_across"] * 1e3,
+        "gear_speed": c_g, "pinion_speed": c_p,
+        "gear_depth": gd, "pinion_depth": pd,
+    }
+
+
+def depth_on_grid(u, v, depth, grid_u, grid_v) -> np.ndarray:
+    """Scattered wear depths interpolated onto the nodes of a deviation grid.
+
+    Parameters
+    ----------
+    u, v : array_like (N,) — [1]
+        Fractions of the points where the depth is known (NaN: left out).
+    depth : array_like (N,) — [mm]
+        Depths ≥ 0 there (0 on the unloaded parts of the contact lines).
+    grid_u, grid_v : array_like (nu,), (nv,) — [1]
+        The grid's fractions.
+
+    Returns
+    -------
+    ndarray (nu, nv) — [mm]
+        Linear interpolation over the Delaunay triangulation of the points (duplicate
+        points, e.g. the same contact line of two tooth pairs one pitch apart, averaged);
+        outside their convex hull the nearest point's depth at nodes within half a grid
+        cell (max(Δu, Δv) / 2) of a point — the flank's edges, which the contact lines
+        reach but the segment midpoints do not — and 0 beyond (no wear where no contact
+        line passes). ≥ 0.
+
+    Raises
+    ------
+    InputError
+        Mismatched lengths or negative depths.
+
+    Notes
+    -----
+    Park, Kolivand & Kahraman (2014) fit wear depths over the flank from the contact
+    zones in the same way (surface interpolation).
+    """
+    u = np.asarray(u, dtype=float).ravel()
+    v = np.asarray(v, dtype=float).ravel()
+    d = np.asarray(depth, dtype=float).ravel()
+    if not (u.size == v.size == d.size):
+        raise InputError(f"u, v, depth: must have equal lengths, got {u.size}, {v.size}, "
+                         f"{d.size}")
+    ok = np.isfinite(u) & np.isfinite(v) & np.isfinite(d)
+    if np.any(d[ok] < 0):
+        raise InputError("depth: must be >= 0 [mm]")
+    grid_u = np.asarray(grid_u, dtype=float).ravel()
+    grid_v = np.asarray(grid_v, dtype=float).ravel()
+    gu, gv = np.meshgrid(grid_u, grid_v, indexing="ij")
+    if ok.sum() < 3 or not np.any(d[ok] > 0):
+        return np.zeros(gu.shape)
+    pts = np.round(np.stack([u[ok], v[ok]], -1), 10)
+    uniq, inv = np.unique(pts, axis=0, return_inverse=True)
+    inv = inv.ravel()
+    mean = np.bincount(inv, weights=d[ok]) / np.bincount(inv)
+    try:
+        interp = LinearNDInterpolator(uniq, mean, fill_value=np.nan)
+    except QhullError as exc:  # all points on a line
+        log.info("depth_on_grid: no triangulation of the contact points (%s)", exc)
+        return np.zeros(gu.shape)
+    out = interp(gu, gv)
+    outside = np.isnan(out)
+    if outside.any():
+        reach = 0.5 * max(float(np.max(np.diff(grid_u))), float(np.max(np.diff(grid_v))))
+        dist, near = cKDTree(uniq).query(np.stack([gu[outside], gv[outside]], -1))
+        out[outside] = np.where(dist <= reach, mean[near], 0.0)
+    return np.maximum(out, 0.0)
+
+
+def _grid(grid: dict | None) -> tuple[np.ndarray, np.ndarray]:
+    g = dict(WEAR_GRID if grid is None else grid)
+    nu = integer("grid.nu", g.get("nu", WEAR_GRID["nu"]), low=3)
+    nv = integer("grid.nv", g.get("nv", WEAR_GRID["nv"]), low=3)
+    u0, u1 = g.get("u_limits", WEAR_GRID["u_limits"])
+    v0, v1 = g.get("v_limits", WEAR_GRID["v_limits"])
+    return np.linspace(u0, u1, nu), np.linspace(v0, v1, nv)
+
+
+def _initial(c: Case, deviations, gu, gv) -> tuple[np.ndarray, np.ndarray]:
+    """(pinion, gear) grids [mm] at the start: the given or the case's deviations sampled
+    on the wear grid, else zero."""
+    from contact.deviation_files import read_deviations
+
+    if deviations is None and c.deviations is not None:
+        deviations = (c.deviations.pinion, c.deviations.gear)
+    uu, vv = np.meshgrid(gu, gv, indexing="ij")
+    out = [np.zeros(uu.shape), np.zeros(uu.shape)]
+    if deviations is None or deviations is False:
+        return out[0], out[1]
+    if not isinstance(deviations, (tuple, list)) or len(deviations) != 2:
+        raise InputError("deviations: must be a (pinion, gear) pair of SurfaceDeviation, "
+                         f"file path or None, or False; got {deviations!r}")
+    for i, (d, member) in enumerate(zip(deviations, ("pinion", "gear"), strict=True)):
+        if isinstance(d, (str, os.PathLike)):
+            d = read_deviations(d, member)
+        if d is not None:
+            if not isinstance(d, SurfaceDeviation):
+                raise InputError(f"deviations: the {member}'s must be a SurfaceDeviation, a "
+                                 f"file path or None, got {type(d).__name__}")
+            out[i] = d(uu, vv)
+    return out[0], out[1]
+
+
+def simulate_wear(
+    case: Case | str | os.PathLike[str] | None = None,
+    torque: float = 200.0,
+    *,
+    wear_coefficient: float,
+    cycles: float,
+    steps: int = 5,
+    misalignment: Misalignment | None = None,
+    flank: str | None = None,
+    options: LTCAOptions | None = None,
+    deviations: tuple | bool | None = None,
+    grid: dict | None = None,
+    progress: bool = False,
+) -> xr.Dataset:
+    """Wear of the flanks in contact over load cycles: Archard's law stepped with the LTCA.
+
+    Parameters
+    ----------
+    case : Case, path, bundled name, or None
+        As :func:`contact.pipeline.run_analysis` (None: the bundled default case).
+    torque : float — [N·m]
+        Pinion torque the flanks wear under (> 0; default 200, the seed's Table 4.2).
+    wear_coefficient : float — [m²/N]
+        Dimensional Archard coefficient k ≥ 0 (m³ worn per N·m of sliding); 0 wears
+        nothing.
+    cycles : float — [1]
+        Load cycles (pinion revolutions) in all, > 0, split into ``steps`` equal steps.
+    steps : int
+        Wear steps (1–1000): the surfaces are analysed ``steps + 1`` times (the initial
+        state and after each step); the wear of a step is that of the state it starts from.
+    misalignment : geometry.assembly.Misalignment, optional
+        Default the case's own.
+    flank : str, optional
+        ``"drive"`` (default) or ``"coast"``.
+    options : contact.ltca.LTCAOptions, optional
+        LTCA settings (default ``LTCAOptions()``).
+    deviations : (pinion, gear), False or None
+        Deviations the flanks start from (SurfaceDeviation or file path each, or None), as
+        :func:`contact.pipeline.run_analysis`; None: the case's ``[deviations]`` if any;
+        False: the theoretical surfaces. Sampled on the wear grid.
+    grid : dict, optional
+        The deviation grid of each member (``nu``, ``nv`` ≥ 3, ``u_limits``,
+        ``v_limits``); default :data:`WEAR_GRID`.
+    progress : bool
+        tqdm progress bar over the steps.
+
+    Returns
+    -------
+    xarray.Dataset
+        Over ``step`` (0 … steps; coordinate ``cycles`` [1], pinion load cycles done, and
+        ``gear_cycles``): ``pinion_deviation`` (step, u_pinion, v_pinion) and
+        ``gear_deviation`` (step, u_gear, v_gear) [mm] (negative = worn),
+        ``pinion_wear_rate``, ``gear_wear_rate`` [mm] (depth per load cycle of that
+        state), ``unloaded_transmission_error`` (step, roll_utca) and
+        ``transmission_error`` (step, roll) [urad], their peak-to-peak values
+        ``ute_peak_to_peak``, ``lte_peak_to_peak`` [urad], ``pressure_max_flank`` [MPa],
+        ``pressure_envelope`` (step, u, v) [MPa] (the loaded pattern, gear grid),
+        ``gear_torque_transmitted`` (step, roll) [N m] (Σ F R of the solution),
+        ``residual_equilibrium`` [1] (largest over the rolls), ``max_pinion_depth``,
+        ``max_gear_depth`` [mm], ``step_time`` [s]. Attributes: case, torque, wear
+        coefficient, cycles, steps, toolkit version.
+
+    Raises
+    ------
+    InputError
+        Bad case, torque, coefficient, cycles, steps, grid or deviations (naming the
+        field); worn deviations beyond :data:`contact.utca.deviations.MAX_DEVIATION`.
+
+    Notes
+    -----
+    Archard (1953) by single-point observation (Flodin & Andersson 1997), hypoid sliding
+    distances from the contact velocities (Park, Kolivand & Kahraman 2014); the worn
+    surfaces enter through the seed's ease-off update (§4.3, Eq. 4.3–4.10), the seed's
+    future work (v). See the module docstring.
+    """
+    c = resolve_case(case)
+    if misalignment is not None:
+        c = dataclasses.replace(c, misalignment=misalignment)
+    torque = positive("torque", torque, "N m")
+    k = real("wear_coefficient", wear_coefficient, unit="m2/N", low=0.0, high=1e-6)
+    cycles = positive("cycles", cycles, "1")
+    steps = integer("steps", steps, low=1, high=1000)
+    opts = options or LTCAOptions()
+    gu, gv = _grid(grid)
+    pin, gear = _initial(c, deviations, gu, gv)
+    z_ratio = c.pinion.blank.teeth / c.gear.blank.teeth  # gear load cycles per pinion's
+    per_step = cycles / steps
+    eo0 = ease_off(c, flank=flank)
+    speeds = flank_line_speeds(c, eo0)
+    records: list[dict] = []
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=steps + 1, desc="wear", unit="step")
+    for i in range(steps + 1):
+        t0 = time.perf_counter()
+        eo = eo0
+        if np.any(pin != 0) or np.any(gear != 0):
+            eo = apply_deviations(eo0, pinion=SurfaceDeviation(gu, gv, pin),
+                                  gear=SurfaceDeviation(gu, gv, gear), case=c)
+        _, ut = unloaded_tca(c, flank=flank, easeoff=eo)
+        lt = loaded_tca(c, [torque], flank=flank, options=opts, easeoff=eo,
+                        transitions=tuple(ut["transition_roll"].values))
+        pw = passage_wear(lt, eo0, speeds, k)
+        rate_p = depth_on_grid(pw["pinion_u"], pw["pinion_v"], pw["pinion_depth"], gu, gv)
+        rate_g = depth_on_grid(pw["gear_u"], pw["gear_v"], pw["gear_depth"], gu, gv)
+        rate_g = rate_g * z_ratio
+        records.append(_record(i, pin, gear, rate_p, rate_g, ut, lt))
+        records[-1]["step_time"] = time.perf_counter() - t0
+        log.info("wear step %d: cycles %.4g, max depth pinion %.3g um, gear %.3g um, UTE p-p "
+                 "%.3g urad, LTE p-p %.3g urad, peak pressure %.4g MPa", i, i * per_step,
+                 max(-1e3 * pin.min(), 0.0), max(-1e3 * gear.min(), 0.0),
+                 records[-1]["ute_pp"], records[-1]["lte_pp"], records[-1]["p_max"])
+        if i < steps:
+            pin = pin - per_step * rate_p
+            gear = gear - per_step * rate_g
+        if bar is not None:
+            bar.update(1)
+    if bar is not None:
+        bar.close()
+    return _wear_dataset(c, records, gu, gv, per_step, z_ratio, torque=torque,
+                         wear_coefficient=k, cycles=cycles, steps=steps, lt=lt, ut=ut)
+
+
+def _record(i, pin, gear, rate_p, rate_g, ut: xr.Dataset, lt: xr.Dataset) -> dict:
+    F = lt["force"].fillna(0.0)
+    moment = (F * lt["moment_arm"].fillna(0.0)).sum(("pair", "segment"))  # N·mm
+    if not bool(lt["found"].all()):
+        log.warning("wear step %d: %d roll positions without a certified solution", i,
+                    int((lt["found"] == 0).sum()))
+    return {
+        "pinion": pin.copy(), "gear": gear.copy(), "rate_p": rate_p, "rate_g": rate_g,
+        "ute": ut["unloaded_transmission_error"].values,
+        "ute_pp": float(ut["peak_to_peak_transmission_error"]),
+        "lte": lt["transmission_error"].values[0],
+        "lte_pp": float(lt["lte_peak_to_peak"].values[0]),
+        "p_max": float(lt["pressure_max_flank"].values[0]),
+        "envelope": lt["pressure_envelope"].values[0],
+        "moment": moment.values[0] * 1e-3,
+        "residual": float(lt["residual_equilibrium"].max()),
+    }
+
+
+def _wear_dataset(c: Case, records: list[dict], gu, gv, per_step: float, z_ratio: float, *,
+                  torque: float, wear_coefficient: float, cycles: float, steps: int,
+                  lt: xr.Dataset, ut: xr.Dataset) -> xr.Dataset:
+    n = len(records)
+
+    def stack(key):
+        return np.stack([r[key] for r in records])
+
+    done = per_step * np.arange(n)
+    fr = {"units": "1"}
+    coords = {
+        "step": ("step", np.arange(n), {"units": "1", "long_name": "wear step"}),
+        "cycles": ("step", done, {**fr, "long_name": "pinion load cycles (revolutions) worn "
+                                  "before the state analysed"}),
+        "gear_cycles": ("step", done * z_ratio, {**fr, "long_name": "load cycles of each "
+                                                 "gear tooth (meshes) worn before the state"}),
+        "u_pinion": ("u_pinion", gu, {**fr, "long_name": "pinion lengthwise fraction of the "
+                                      "projection plane, toe 0 to heel 1"}),
+        "v_pinion": ("v_pinion", gv, {**fr, "long_name": "pinion profile fraction of the "
+                                      "projection plane, root 0 to tip 1"}),
+        "u_gear": ("u_gear", gu, {**fr, "long_name": "gear lengthwise fraction of the "
+                                  "projection plane, toe 0 to heel 1"}),
+        "v_gear": ("v_gear", gv, {**fr, "long_name": "gear profile fraction of the "
+                                  "projection plane, root 0 to tip 1"}),
+        "roll": ("roll", lt["roll"].values, dict(lt["roll"].attrs)),
+        "roll_utca": ("roll_utca", ut["roll"].values,
+                      {**dict(ut["roll"].attrs), "long_name": "pinion roll of the UTCA"}),
+        "u": ("u", lt["u"].values, dict(lt["u"].attrs)),
+        "v": ("v", lt["v"].values, dict(lt["v"].attrs)),
+    }
+    pin, gear = stack("pinion"), stack("gear")
+    data = {
+        "pinion_deviation": data_var(("step", "u_pinion", "v_pinion"), pin, "mm",
+                                     "pinion flank normal deviation, positive = material "
+                                     "added (negative = worn)"),
+        "gear_deviation": data_var(("step", "u_gear", "v_gear"), gear, "mm",
+                                   "gear flank normal deviation, positive = material added "
+                                   "(negative = worn)"),
+        "pinion_wear_rate": data_var(("step", "u_pinion", "v_pinion"), stack("rate_p"), "mm",
+                                     "pinion wear depth per load cycle at the state"),
+        "gear_wear_rate": data_var(("step", "u_gear", "v_gear"), stack("rate_g"), "mm",
+                                   "gear wear depth per pinion load cycle at the state (per "
+                                   "gear tooth, z_p/z_g meshes)"),
+        "max_pinion_depth": data_var("step", np.maximum(-pin.min(axis=(1, 2)), 0.0), "mm",
+                                     "largest pinion wear depth"),
+        "max_gear_depth": data_var("step", np.maximum(-gear.min(axis=(1, 2)), 0.0), "mm",
+                                   "largest gear wear depth"),
+        "unloaded_transmission_error": data_var(("step", "roll_utca"), stack("ute"), "urad",
+                                                "unloaded transmission error"),
+        "transmission_error": data_var(("step", "roll"), stack("lte"), "urad",
+                                       "loaded transmission error"),
+        "ute_peak_to_peak": data_var("step", stack("ute_pp"), "urad",
+                                     "peak-to-peak unloaded transmission error"),
+        "lte_peak_to_peak": data_var("step", stack("lte_pp"), "urad",
+                                     "peak-to-peak loaded transmission error"),
+        "pressure_max_flank": data_var("step", stack("p_max"), "MPa",
+                                       "peak Hertzian pressure on the contact curves"),
+        "pressure_envelope": data_var(("step", "u", "v"), stack("envelope"), "MPa",
+                                      "loaded contact pattern: envelope of the maximum "
+                                      "pressure over the roll positions, gear grid"),
+        "gear_torque_transmitted": data_var(("step", "roll"), stack("moment"), "N m",
+                                            "gear torque of the contact forces (sum F R)"),
+        "residual_equilibrium": data_var("step", stack("residual"), "1",
+                                         "largest relative equilibrium residual over the "
+                                         "rolls"),
+        "step_time": data_var("step", stack("step_time"), "s",
+                              "wall time of the step's analysis"),
+    }
+    return xr.Dataset(data, coords=coords, attrs={
+        "title": f"hypoid-ltca simulated wear of {c.name}",
+        "case": c.name,
+        "toolkit_version": __version__,
+        "torque_Nm": float(torque),
+        "gear_torque_Nm": float(torque / z_ratio),
+        "wear_coefficient_m2_per_N": float(wear_coefficient),
+        "cycles": float(cycles),
+        "steps": int(steps),
+        "pinion_flank": str(lt.attrs["pinion_flank"]),
+        "gear_flank": str(lt.attrs["gear_flank"]),
+        "method": "Archard wear, single-point observation (Flodin & Andersson 1997), "
+                  "contact-velocity sliding distance (Park, Kolivand & Kahraman 2014), "
+                  "ease-off update of seed section 4.3",
+        "options": lt.attrs["options"],
+    })
+
+
+def final_deviations(wear: xr.Dataset, step: int = -1) -> tuple[SurfaceDeviation,
+                                                                 SurfaceDeviation]:
+    """The (pinion, gear) deviation grids of one step of a wear result.
+
+    Parameters
+    ----------
+    wear : xarray.Dataset
+        Output of :func:`simulate_wear` (or read back from its file).
+    step : int
+        Position along ``step`` (default the last: the worn surfaces).
+
+    Returns
+    -------
+    (SurfaceDeviation, SurfaceDeviation)
+        [mm], negative = worn; for :func:`contact.pipeline.run_analysis` ``deviations=`` or
+        :func:`contact.deviation_files.write_deviation_netcdf`.
+
+    Raises
+    ------
+    InputError
+        Missing variables or a step out of range.
+    """
+    for name in ("pinion_deviation", "gear_deviation"):
+        if name not in wear.variables:
+            raise InputError(f"wear: dataset lacks {name!r} (expected simulate_wear output)")
+    n = wear.sizes["step"]
+    step = integer("step", step, low=-n, high=n - 1)
+    p = wear["pinion_deviation"].isel(step=step).transpose("u_pinion", "v_pinion")
+    g = wear["gear_deviation"].isel(step=step).transpose("u_gear", "v_gear")
+    return (SurfaceDeviation(wear["u_pinion"].values, wear["v_pinion"].values, p.values),
+            SurfaceDeviation(wear["u_gear"].values, wear["v_gear"].values, g.values))

@@ -1,0 +1,178 @@
+"""Simulated wear (contact.wear): Archard's law by single-point observation, stepped with
+the UTCA/LTCA through the deviations path (issue 23, item 2)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.stats import qmc
+
+from contact.cli import main
+from contact.deviation_files import read_deviations
+from contact.io import read_netcdf
+from contact.ltca import LTCAOptions, loaded_tca
+from contact.pipeline import resolve_case, run_analysis
+from contact.utca import unloaded_tca
+from contact.utca.easeoff import ease_off
+from contact.wear import (
+    archard_depth,
+    contact_line_speed,
+    depth_on_grid,
+    final_deviations,
+    flank_line_speeds,
+    passage_wear,
+    simulate_wear,
+)
+from geometry.errors import InputError
+
+CASE = "kolivand2009_fm_11x41"
+#: light LTCA settings: the wear loop's identities hold at any discretisation
+LIGHT = LTCAOptions(rolls_per_cycle=8, segments=12)
+K = 1e-17  # [m²/N]
+CYCLES = 1e6
+TORQUE = 200.0  # [N m]
+
+
+def test_uniform_pressure_and_sliding_give_archards_closed_form():
+    # Archard: V = k F s, so a band of uniform pressure p sliding s wears h = k p s. Contact
+    # lines scattered over a region of the flank, each with the same uniform band (width
+    # 2b, w = 2 b p), sliding speed and contact-line speed (sliding distance
+    # s = 2b |V_s| / c): every grid node inside the region wears k p s (the interpolation
+    # of a constant is exact: 1e-12 relative), nodes far outside nothing.
+    p, b, vs, c = 1200.0, 0.25, 3.0, 11.0  # MPa, mm, mm/rad, mm/rad
+    s = 2 * b * vs / c  # mm
+    closed = K * 1e6 * p * s  # k [mm²/N] · p [N/mm²] · s [mm] = mm
+    pts = qmc.scale(qmc.Halton(2, seed=1).random(400), [0.2, 0.3], [0.8, 0.9])
+    depth = archard_depth(np.full(400, 2 * b * p), np.full(400, vs), np.full(400, c), K)
+    gu, gv = np.linspace(0, 1, 41), np.linspace(0.05, 1, 21)
+    grid = depth_on_grid(pts[:, 0], pts[:, 1], depth, gu, gv)
+    uu, vv = np.meshgrid(gu, gv, indexing="ij")
+    inside = (uu > 0.3) & (uu < 0.7) & (vv > 0.4) & (vv < 0.8)
+    far = (uu < 0.1) | (uu > 0.9) | (vv < 0.2)
+    np.testing.assert_allclose(grid[inside], closed, rtol=1e-12)
+    assert np.all(grid[far] == 0.0)
+    # the pressure profile across the band does not matter, only its integral w: a Hertz
+    # semi-ellipse of peak p0 (w = π p0 b / 2) wears as a uniform band of the mean pressure
+    p0 = 4 * p / math.pi
+    np.testing.assert_allclose(archard_depth(math.pi * p0 * b / 2, vs, c, K), closed,
+                               rtol=1e-14)
+
+
+def test_contact_line_speed_of_an_analytic_surface():
+    # a cylinder r = (R cos φ, R sin φ, z) with φ = 0.8 u, z = 30 v and Q = a φ + e z:
+    # |∇_S Q|² = (a / R)² + e², c = 1 / |∇_S Q|; Q and r are smooth, so second-order
+    # differences on a 41 × 21 grid agree to O(h²): 1.2e-4 at the one-sided grid edges
+    R, a, e = 60.0, 2.0, 0.01
+    u, v = np.linspace(0, 1, 41), np.linspace(0, 1, 21)
+    uu, vv = np.meshgrid(u, v, indexing="ij")
+    phi, z = 0.8 * uu, 30.0 * vv
+    pos = np.stack([R * np.cos(phi), R * np.sin(phi), z], -1)
+    c = contact_line_speed(pos, a * phi + e * z, u, v)
+    np.testing.assert_allclose(c, 1.0 / math.hypot(a / R, e), rtol=2e-4)
+    with pytest.raises(InputError, match="position, roll_angle"):
+        contact_line_speed(pos[:, :-1], a * phi, u, v)
+
+
+@pytest.fixture(scope="module")
+def theoretical():
+    c = resolve_case(CASE)
+    eo = ease_off(c)
+    _, ut = unloaded_tca(c, easeoff=eo)
+    lt = loaded_tca(c, [TORQUE], options=LIGHT, easeoff=eo,
+                    transitions=tuple(ut["transition_roll"].values))
+    return c, eo, lt
+
+
+def test_contact_line_speeds_differ_by_the_sliding_across_the_line(theoretical):
+    # Two independent computations: the contact line's speeds over the gear and the pinion
+    # flank (from the roll-angle surface on each flank, contact.wear.flank_line_speeds)
+    # and the sliding velocity of the rigid-body motions (friction.kinematics). The band
+    # moves over both materials in the rolling direction, so c_g - c_p = ±V_s·w at every
+    # loaded segment. Tolerance 5 % of the mean speed: second-order differences on the
+    # 41 × 21 ease-off grid and bilinear interpolation, worst (~3 %) at the gear tip,
+    # where the pinion mates reach the fillet junction; the median is < 0.5 %.
+    c, eo, lt = theoretical
+    pw = passage_wear(lt, eo, flank_line_speeds(c, eo), K)
+    loaded = pw["load_per_length"] > 0
+    cg, cp = pw["gear_speed"][loaded], pw["pinion_speed"][loaded]
+    err = np.abs(np.abs(cg - cp) - np.abs(pw["sliding_across"][loaded])) / (0.5 * (cg + cp))
+    assert loaded.sum() > 100
+    assert err.max() < 0.05 and np.median(err) < 0.005
+    # the faster-swept flank wears less: depth ∝ 1 / c
+    np.testing.assert_allclose(pw["gear_depth"][loaded] * cg, pw["pinion_depth"][loaded] * cp,
+                               rtol=1e-12)
+
+
+@pytest.fixture(scope="module")
+def worn():
+    return simulate_wear(CASE, TORQUE, wear_coefficient=K, cycles=CYCLES, steps=2,
+                         options=LIGHT, deviations=False)
+
+
+def test_wear_conserves_the_load_at_every_step(worn, theoretical):
+    # equilibrium Σ F R = T_g at every roll of every step (the worn surfaces carry the same
+    # torque; the exact solver reaches round-off, 1e-9 relative as tests/ltca_identities)
+    c = theoretical[0]
+    t_gear = TORQUE * c.gear.blank.teeth / c.pinion.blank.teeth
+    np.testing.assert_allclose(worn["gear_torque_transmitted"].values, t_gear, rtol=1e-9)
+    assert float(worn["residual_equilibrium"].max()) < 1e-9
+
+
+def test_wear_removes_material_where_the_flanks_meet(worn):
+    pin, gear = worn["pinion_deviation"].values, worn["gear_deviation"].values
+    assert np.all(pin[0] == 0) and np.all(gear[0] == 0)
+    # material only removed, more with every step (depths ≥ 0 accumulate)
+    assert np.all(np.diff(pin, axis=0) <= 0) and np.all(np.diff(gear, axis=0) <= 0)
+    assert worn["max_pinion_depth"].values[-1] > 1e-3  # > 1 um after 1e6 cycles
+    # each step removes its state's rate times the cycles of the step
+    per_step = CYCLES / 2
+    np.testing.assert_allclose(pin[1] - pin[0], -per_step * worn["pinion_wear_rate"].values[0],
+                               rtol=1e-12, atol=0)
+    # the pinion's root row (v = 0.05) is below the lowest meshing point: never worn
+    assert np.all(pin[:, :, 0] == 0)
+
+
+def test_wearing_the_flanks_lowers_the_peak_pressure(worn):
+    # wear is deepest where p·s is largest, so the highest flank pressure falls step by step
+    p = worn["pressure_max_flank"].values
+    assert np.all(np.diff(p) < 0), p
+
+
+def test_zero_wear_coefficient_changes_nothing(tmp_path, capsys):
+    # k = 0 through the CLI: the grids stay zero and the worn state's results equal the
+    # initial ones and an analysis of the theoretical surfaces (run_analysis), exactly
+    out, dev = tmp_path / "wear.nc", tmp_path / "dev.nc"
+    assert main(["wear", CASE, "--cycles", "1e6", "--wear-coefficient", "0", "--steps", "1",
+                 "--rolls-per-cycle", "8", "--segments", "12", "--no-deviations",
+                 "--no-progress", "-o", str(out), "--deviations-out", str(dev)]) == 0
+    assert "pinion depth [um]" in capsys.readouterr().out
+    ds = read_netcdf(out)
+    assert np.all(ds["pinion_deviation"].values == 0) and np.all(ds["gear_deviation"].values == 0)
+    te = ds["transmission_error"].values
+    np.testing.assert_array_equal(te[1], te[0])
+    ref = run_analysis(CASE, TORQUE, options=LIGHT, deviations=False, geometry=False)
+    np.testing.assert_allclose(te[0], ref["ltca"]["transmission_error"].values[0], rtol=0,
+                               atol=1e-9)
+    assert float(ds["pressure_max_flank"][1]) == float(ref["ltca"]["pressure_max_flank"][0])
+    assert np.all(read_deviations(dev, "pinion").deviation == 0)
+
+
+def test_final_deviations_feed_the_analysis(worn):
+    pin, gear = final_deviations(worn)
+    assert pin.deviation.min() < 0 and np.array_equal(
+        pin.deviation, worn["pinion_deviation"].values[-1])
+    assert np.array_equal(gear.deviation, worn["gear_deviation"].values[-1])
+
+
+@pytest.mark.parametrize("field, kwargs", [
+    ("wear_coefficient", {"wear_coefficient": -1e-17, "cycles": 1e6}),
+    ("cycles", {"wear_coefficient": 1e-17, "cycles": 0.0}),
+    ("steps", {"wear_coefficient": 1e-17, "cycles": 1e6, "steps": 0}),
+    ("torque", {"wear_coefficient": 1e-17, "cycles": 1e6, "torque": -5.0}),
+])
+def test_bad_inputs_name_the_field(field, kwargs):
+    torque = kwargs.pop("torque", TORQUE)
+    with pytest.raises(InputError, match=field):
+        simulate_wear(CASE, torque, **kwargs)
