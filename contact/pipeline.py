@@ -316,10 +316,13 @@ def efficiency_map(
     misalignment: Misalignment | None = None,
     options: LTCAOptions | None = None,
     progress: bool = False,
+    scheduler="synchronous",
+    n_workers: int | None = None,
 ) -> xr.Dataset:
     """Efficiency over operating points: speed × torque × temperature × roughness (seed §5.3).
 
-    The LTCA (static) runs once per torque; the efficiency stage
+    The LTCA (static) runs once per torque — each torque one task of the study engine
+    (:func:`contact.study.engine.run_tasks`, Dask) —; the efficiency stage
     (:func:`friction.efficiency.efficiency_analysis`) then runs for every speed,
     temperature and roughness on those loads.
 
@@ -341,7 +344,11 @@ def efficiency_map(
     misalignment, options
         As :func:`run_analysis`.
     progress : bool
-        tqdm progress bar over the operating points.
+        tqdm progress bar over the torques.
+    scheduler, n_workers
+        Where the torques run (:func:`contact.study.engine.open_client`): default
+        ``"synchronous"`` (this process, one after the other); None a LocalCluster of
+        ``n_workers`` processes; an address or a ``distributed.Client`` a cluster.
 
     Returns
     -------
@@ -361,7 +368,8 @@ def efficiency_map(
     -----
     Seed §5.3 (efficiency over operating conditions).
     """
-    from friction.efficiency import efficiency_analysis
+    from contact.study.efficiency import EfficiencyInputs, efficiency_at_torque
+    from contact.study.engine import run_tasks
 
     op = OperatingConditions() if operating is None else operating
     torque = EFFICIENCY_MAP_TORQUES if torque is None else torque
@@ -371,36 +379,24 @@ def efficiency_map(
     c = resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
-    lt = loaded_tca(c, list(torque), options=options or LTCAOptions())
+    shared = EfficiencyInputs(c, options or LTCAOptions(), op,
+                              tuple(float(x) for x in speed),
+                              tuple(float(x) for x in temperature),
+                              tuple(float(x) for x in roughness))
     shape = (len(torque), len(speed), len(temperature), len(roughness))
     eff, loss, mu_m, lam_m = (np.full(shape, np.nan) for _ in range(4))
     bar = None
     if progress:
         from tqdm.auto import tqdm
 
-        bar = tqdm(total=int(np.prod(shape[1:])), desc="efficiency map", unit="point")
-    F = lt["force"].fillna(0.0)
-    for j, n in enumerate(speed):
-        for k, temp in enumerate(temperature):
-            for m, rq in enumerate(roughness):
-                fr = efficiency_analysis(
-                    lt,
-                    op,
-                    pinion_speed=float(n),
-                    temperature=float(temp),
-                    roughness=float(rq),
-                )
-                eff[:, j, k, m] = fr["efficiency_mean"].values
-                loss[:, j, k, m] = fr["power_loss_mean"].values
-                dims = ("roll", "pair", "segment")
-                mu_m[:, j, k, m] = (
-                    (fr["friction_coefficient"].fillna(0) * F).sum(dims) / F.sum(dims)
-                ).values
-                lam_m[:, j, k, m] = (
-                    (fr["lambda_ratio"].fillna(0) * F).sum(dims) / F.sum(dims)
-                ).values
-                if bar is not None:
-                    bar.update()
+        bar = tqdm(total=len(torque), desc="efficiency map", unit="torque")
+    for it, res in run_tasks(efficiency_at_torque, shared,
+                             [(i, float(t)) for i, t in enumerate(torque)],
+                             scheduler=scheduler, n_workers=n_workers):
+        eff[it], loss[it] = res["efficiency"], res["power_loss"]
+        mu_m[it], lam_m[it] = res["friction_coefficient_mean"], res["lambda_ratio_mean"]
+        if bar is not None:
+            bar.update()
     if bar is not None:
         bar.close()
     dims4 = ("torque", "speed", "temperature", "roughness")

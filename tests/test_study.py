@@ -250,3 +250,37 @@ def test_vh_check_moves_the_pattern_to_toe_and_heel(case):
 def test_bad_study_input_is_refused_naming_it(case, call, match):
     with pytest.raises(InputError, match=match):
         call(case)
+
+
+def test_study_commands(tmp_path, capsys):
+    """`ltca sweep` (negative range typed as the issue shows), `ltca tolerance` and
+    `ltca vh-check` write their files and figures; a bad range is one line naming the
+    option."""
+    from contact.cli import main
+    from contact.io import read_netcdf
+
+    common = ["--rolls-per-cycle", "8", "--scheduler", "synchronous", "--no-progress"]
+    assert main(["sweep", "--dE", "-0.1:0.1:2", "--dP", "0,0.05", "--torque", "250",
+                 "-o", str(tmp_path / "map.nc"), "--plots", str(tmp_path / "figs"),
+                 *common]) == 0
+    ds = read_netcdf(tmp_path / "map.nc")
+    assert ds["lte_peak_to_peak"].dims == ("delta_E", "delta_P", "torque")
+    np.testing.assert_allclose(ds["delta_E"].values, [-0.1, 0.1])
+    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_map_T250.png").is_file()
+    assert main(["tolerance", "--dE", "normal:0:0.05", "--dSigma", "uniform:-0.01:0.01",
+                 "-n", "4", "--speed", "1500", "-o", str(tmp_path / "tol.nc"),
+                 "--plots", str(tmp_path / "figs"), *common]) == 0
+    out = capsys.readouterr().out
+    assert "P95" in out and "efficiency" in out
+    tol = read_netcdf(tmp_path / "tol.nc")
+    # ΔΣ typed in degrees, stored in rad as Misalignment takes it
+    assert np.all(np.abs(tol["delta_Sigma"].values) <= np.radians(0.01))
+    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_tolerance_T250.png").is_file()
+    assert main(["vh-check", "--dE", "-0.3:0.3:3", "--dP", "-0.2:0.2:3", "--torque", "50",
+                 "-o", str(tmp_path / "vh.nc"), "--plots", str(tmp_path / "figs"),
+                 *common]) == 0
+    assert "heel" in capsys.readouterr().out
+    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_vh_check.png").is_file()
+    assert main(["sweep", "--dE", "0:1", "-o", str(tmp_path / "x.nc"), *common]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--dE" in err[0]

@@ -28,6 +28,7 @@ Public functions
 analyse_point   one point's summaries (runs on a worker)
 run_points      all points of a study, on Dask
 open_client     a Dask client for a scheduler argument (context manager)
+run_tasks       any function over items on Dask, results as they finish
 write_study     write a study's result file and remove its parts
 """
 
@@ -57,7 +58,8 @@ from geometry import __version__
 from geometry.conventions import data_var
 from geometry.errors import InputError
 
-__all__ = ["SYNCHRONOUS", "analyse_point", "open_client", "run_points", "write_study"]
+__all__ = ["SYNCHRONOUS", "analyse_point", "open_client", "run_points", "run_tasks",
+           "write_study"]
 
 log = logging.getLogger(__name__)
 
@@ -304,14 +306,12 @@ def run_points(
 
         bar = tqdm(total=len(pts), initial=len(done), desc=kind, unit="point")
     try:
-        with open_client(scheduler, n_workers) as client:
-            if client is None:
-                for i in todo:
-                    finish(analyse_point(shared, i, pts[i]))
-                    if bar is not None:
-                        bar.update()
-            else:
-                _run_on_client(client, shared, pts, todo, finish, bar)
+        # analyse_point looked up here, at call time (tests count its calls)
+        for res in run_tasks(analyse_point, shared, [(i, pts[i]) for i in todo],
+                             scheduler=scheduler, n_workers=n_workers):
+            finish(res)
+            if bar is not None:
+                bar.update()
     finally:
         if store is not None:
             store.flush()
@@ -339,29 +339,54 @@ def run_points(
     return _stamp(ds, shared, kind, len(done))
 
 
-def _run_on_client(client: Any, shared: StudyInputs, pts: list[dict[str, float]],
-                   todo: list[int], finish, bar) -> None:
-    """Submit the points ``todo`` to the cluster, a few per worker at a time, and hand
-    each result to ``finish`` as it completes."""
+def run_tasks(function: Any, shared: Any, items: Sequence[tuple], *, scheduler: Any = None,
+              n_workers: int | None = None, client: Any = None) -> Iterator[Any]:
+    """Run ``function(shared, *item)`` for every item on Dask; yield results as they finish.
+
+    Parameters
+    ----------
+    function : callable
+        A module-level function (pickled by reference to the workers).
+    shared : object
+        Its first argument, the same for every item: scattered once to every worker.
+    items : sequence of tuple
+        The other arguments of each call.
+    scheduler, n_workers
+        As :func:`open_client` (ignored when ``client`` is given).
+    client : distributed.Client, optional
+        An open client to use.
+
+    Yields
+    ------
+    The results, in the order they complete (in item order for ``"synchronous"``). At
+    most two calls per worker thread are in flight, so the scheduler's memory stays flat
+    in the number of items.
+    """
+    if client is None:
+        with open_client(scheduler, n_workers) as cl:
+            if cl is None:
+                for item in items:
+                    yield function(shared, *item)
+                return
+            yield from run_tasks(function, shared, items, client=cl)
+        return
     from distributed import as_completed
 
     shared_future = client.scatter(shared, broadcast=True, hash=False)
     n_threads = max(1, sum(client.nthreads().values()))
-    in_flight = 2 * n_threads
-    queue = iter(todo)
+    queue = iter(items)
+    name = getattr(function, "__name__", "task")
 
-    def submit(i: int):
-        return client.submit(analyse_point, shared_future, i, pts[i], pure=False,
-                             key=f"ltca-point-{i}-{os.urandom(4).hex()}")
+    def submit(item: tuple):
+        return client.submit(function, shared_future, *item, pure=False,
+                             key=f"{name}-{os.urandom(6).hex()}")
 
-    first = [submit(i) for _, i in zip(range(in_flight), queue, strict=False)]
-    ac = as_completed(first)
+    ac = as_completed([submit(item) for _, item in zip(range(2 * n_threads), queue,
+                                                       strict=False)])
     for fut in ac:
-        res = fut.result()
+        result = fut.result()
         fut.release()
-        finish(res)
-        if bar is not None:
-            bar.update()
+        yield result
         nxt = next(queue, None)
         if nxt is not None:
             ac.add(submit(nxt))
