@@ -624,6 +624,8 @@ class SettingCorrection:
         The threshold used.
     steps : ndarray
         Finite-difference steps.
+    jacobian : ndarray (n_points, settings) — [mm per internal unit]
+        ∂δ/∂s at s₀ over the points used (C order of the (u, v) grid).
     u, v : ndarray
         Measurement grid fractions.
     measured : ndarray (nu, nv) — [mm]
@@ -659,6 +661,7 @@ class SettingCorrection:
     condition_number_determined: float
     cond_max: float
     steps: np.ndarray
+    jacobian: np.ndarray
     u: np.ndarray
     v: np.ndarray
     measured: np.ndarray
@@ -718,7 +721,7 @@ def _bounds(names, tool, bounds) -> tuple[np.ndarray, np.ndarray]:
 def corrective_settings(case: Case, member: str, flank: str, u, v, deviation, *,
                         settings: Sequence[str] | None = None,
                         bounds: Mapping[str, tuple[float | None, float | None]] | None = None,
-                        cond_max: float = COND_MAX, max_iter: int = 8) -> SettingCorrection:
+                        cond_max: float = COND_MAX, max_iter: int = 10) -> SettingCorrection:
     """Setting changes that cancel measured normal deviations of one flank.
 
     Parameters
@@ -846,14 +849,15 @@ def corrective_settings(case: Case, member: str, flank: str, u, v, deviation, *,
         at_bound=at_bound, vif=vif, standard_error_per_um=se_um, standard_error=se,
         singular_values=sv, condition_number=float(live_sv[0] / live_sv[-1]),
         condition_number_determined=float(sv_act[0] / sv_act[-1]), cond_max=float(cond_max),
-        steps=steps, u=uu, v=vv, measured=np.where(use, dm, np.nan), residual=residual,
+        steps=steps, jacobian=jac, u=uu, v=vv, measured=np.where(use, dm, np.nan),
+        residual=residual,
         measured_rms=float(np.sqrt(np.mean(meas**2))), measured_max=float(np.max(np.abs(meas))),
         residual_rms=float(np.sqrt(np.mean(resid**2))),
         residual_max=float(np.max(np.abs(resid))), n_points=int(meas.size), iterations=it)
 
 
 def corrected_case(case: Case, corrections: Sequence[SettingCorrection], *,
-                   provenance: Mapping[str, str] | None = None,
+                   provenance: Mapping[str, object] | None = None,
                    name: str | None = None) -> Case:
     """The case with corrections applied, recording what was done in a ``[correction]`` table.
 
@@ -863,8 +867,9 @@ def corrected_case(case: Case, corrections: Sequence[SettingCorrection], *,
         The nominal case the corrections were computed for.
     corrections : sequence of SettingCorrection
         At most one per member and flank.
-    provenance : mapping str → str, optional
-        Extra text entries of the table (e.g. the deviation files), keyed as given.
+    provenance : mapping, optional
+        Extra entries of the table (e.g. the deviation files), keyed as given; values
+        TOML-writable (str, numbers, lists of them).
     name : str, optional
         Name of the corrected case (default ``<name>_corrected``).
 
