@@ -14,7 +14,7 @@ material added (:mod:`contact.utca.deviations`' convention). :func:`cmm_deviatio
 a tangent-plane Newton iteration on the generator: the changed flank's point at the axial
 section (z, ρ) of the current point x = p + t n (:func:`geometry.flank.flank_at`) differs
 from x only along the circle of that section, so t ← t + (r − x)·n′ / (n·n′) with r, n′
-its point and normal; two or three steps reach 1e-12 mm.
+its point and normal; two or three steps reach 1e-11 mm.
 
 Identification and correction
 -----------------------------
@@ -363,8 +363,9 @@ def cmm_deviation(case: Case, member: str, flank: str, position, normal, *,
     deviation : ndarray (...) — [mm]
         t with p + t n on the case's flank: positive = material added; NaN where the
         nominal point is NaN or the flank has no generated point there.
-    surface : FlankSurface
-        The flank's points p + t n (last iterate) with their envelope parameters.
+    surface : FlankSurface or None
+        The flank's points p + t n (last iterate) with their envelope parameters; None when
+        no nominal point is finite.
 
     Notes
     -----
@@ -377,6 +378,8 @@ def cmm_deviation(case: Case, member: str, flank: str, position, normal, *,
     n = np.asarray(normal, dtype=float)
     ok = np.all(np.isfinite(p), -1) & np.all(np.isfinite(n), -1)
     t = np.where(ok, 0.0, np.nan)
+    if not ok.any():
+        return t, None
     pv, nv = p[ok], n[ok]
     tv = np.zeros(pv.shape[0])
     g = None if guess is None else tuple(np.asarray(a)[ok]
@@ -486,17 +489,24 @@ def setting_sensitivities(case: Case, member: str, flank: str, names: Sequence[s
     Raises
     ------
     InputError
-        For unknown names, or a step that leaves a setting's valid range.
+        For unknown names, a step that leaves a setting's valid range, or one whose flank
+        no longer covers every grid point.
     """
     base = case.member(member).flank(flank) if tool is None else tool
     ok = nominal.valid
     p, n = nominal.position[ok], nominal.normal[ok]
 
+    sub = nominal._replace(s=nominal.s[ok], theta=nominal.theta[ok], q=nominal.q[ok],
+                           section=nominal.section[ok])
+
     def dev(name, value):
         c = case_with_values(case, member, flank, {name: value}, tool=base)
-        sub = nominal._replace(s=nominal.s[ok], theta=nominal.theta[ok], q=nominal.q[ok],
-                               section=nominal.section[ok])
-        return cmm_deviation(c, member, flank, p, n, guess=sub)[0]
+        d = cmm_deviation(c, member, flank, p, n, guess=sub)[0]
+        if not np.all(np.isfinite(d)):
+            raise InputError(f"settings: a finite-difference step of {name!r} loses grid "
+                             "points of the flank; the measurement grid reaches beyond the "
+                             "generated flank")
+        return d
 
     jac = np.zeros((p.shape[0], len(names)))
     steps = np.zeros(len(names))
@@ -504,7 +514,7 @@ def setting_sensitivities(case: Case, member: str, flank: str, names: Sequence[s
     for j, name in enumerate(names):
         var = SETTING_VARIABLES[name]
         s0 = setting_value(base, name)
-        trial = np.nanmax(np.abs(dev(name, s0 + var.step)))
+        trial = np.max(np.abs(dev(name, s0 + var.step)))
         if not trial > NO_EFFECT:
             steps[j] = var.step
             continue
@@ -512,9 +522,6 @@ def setting_sensitivities(case: Case, member: str, flank: str, names: Sequence[s
         jac[:, j] = (dev(name, s0 + h) - dev(name, s0 - h)) / (2.0 * h)
         steps[j] = h
         effect[j] = True
-    if not np.all(np.isfinite(jac)):
-        raise InputError("settings: a finite-difference step lost grid points of the flank; "
-                         "the measurement grid reaches beyond the generated flank")
     return jac, steps, effect
 
 
