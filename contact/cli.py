@@ -12,6 +12,7 @@ import argparse
 import importlib
 import logging
 import pkgutil
+import re
 import sys
 from collections.abc import Sequence
 from types import ModuleType
@@ -51,12 +52,33 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+_NEGATIVE_VALUE = re.compile(r"^-\.?\d")
+
+
+def attach_negative_values(argv: Sequence[str]) -> list[str]:
+    """``--opt -0.2:0.2:21`` → ``--opt=-0.2:0.2:21``: argparse reads a value that starts
+    with ``-`` but is not a plain number (a range such as ``-0.2:0.2:21`` or a list
+    ``-0.1,0.1``) as an option; attached with ``=`` it is the option's value."""
+    out: list[str] = []
+    for token in argv:
+        prev = out[-1] if out else ""
+        if (_NEGATIVE_VALUE.match(token) and prev.startswith("--") and "=" not in prev
+                and len(prev) > 2):
+            out[-1] = f"{prev}={token}"
+        else:
+            out.append(token)
+    return out
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv))
     level = [logging.WARNING, logging.INFO, logging.DEBUG][min(args.verbose, 2)]
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
+    # Dask's scheduler and workers log every start and stop at INFO: only with -vv
+    logging.getLogger("distributed").setLevel(logging.DEBUG if args.verbose >= 2
+                                              else logging.WARNING)
     try:
         return int(args.func(args) or 0)
     except LTCAError as exc:

@@ -43,6 +43,7 @@ __all__ = [
     "bundled_cases",
     "efficiency_map",
     "resolve_case",
+    "resolve_deviations",
     "run_analysis",
 ]
 
@@ -114,8 +115,25 @@ def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
     return load_case(bundled_case_path(str(case)))
 
 
-def _resolve_deviations(c: Case, deviations) -> tuple | None:
-    """(pinion, gear) SurfaceDeviations for run_analysis, or None for the theoretical only."""
+def resolve_deviations(c: Case, deviations) -> tuple | None:
+    """The (pinion, gear) SurfaceDeviations of :func:`run_analysis`'s ``deviations``.
+
+    Parameters
+    ----------
+    c : geometry.case.Case
+    deviations : (pinion, gear), False or None
+        As :func:`run_analysis`: None reads the case's ``[deviations]`` files.
+
+    Returns
+    -------
+    (SurfaceDeviation or None, SurfaceDeviation or None) or None
+        None for the theoretical surfaces only.
+
+    Raises
+    ------
+    InputError
+        A malformed pair or an unreadable deviation file.
+    """
     if deviations is None:
         files = c.deviations
         deviations = None if files is None else (files.pinion, files.gear)
@@ -144,6 +162,7 @@ def run_analysis(
     deviations: tuple | bool | None = None,
     geometry: bool = True,
     progress: bool = False,
+    theoretical: bool = True,
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -178,6 +197,10 @@ def run_analysis(
         Include the four generated flanks as ``/geometry`` (default True).
     progress : bool
         Progress bar over the LTCA roll positions.
+    theoretical : bool
+        With deviations, also analyse the theoretical surfaces (``/theoretical``,
+        default True); False skips them (studies keep only the deviated results, which
+        are the same either way).
 
     Returns
     -------
@@ -215,24 +238,27 @@ def run_analysis(
     t0 = time.perf_counter()
     eo = ease_off(c, flank=flank)
     times["easeoff"] = time.perf_counter() - t0
-    deviations = _resolve_deviations(c, deviations)
+    deviations = resolve_deviations(c, deviations)
     if deviations is not None:
         from contact.utca.deviations import apply_deviations
 
         pin_dev, gear_dev = deviations
         t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo)
         tree["/theoretical/easeoff"] = t_eo
-        tree["/theoretical/utca"] = t_ut
-        tree["/theoretical/ltca"] = loaded_tca(
-            c, torques, flank=flank, options=opts, easeoff=eo,
-            transitions=tuple(t_ut["transition_roll"].values),
-        )
+        if theoretical:
+            tree["/theoretical/utca"] = t_ut
+            tree["/theoretical/ltca"] = loaded_tca(
+                c, torques, flank=flank, options=opts, easeoff=eo,
+                transitions=tuple(t_ut["transition_roll"].values),
+            )
         eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
     t0 = time.perf_counter()
     eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
     times["utca"] = time.perf_counter() - t0
     if "/theoretical/easeoff" in tree:
         change = (eo_ds["ease_off"] - tree["/theoretical/easeoff"]["ease_off"]).astype(float)
+        if not theoretical:
+            del tree["/theoretical/easeoff"]
         eo_ds["ease_off_change"] = change.assign_attrs(
             units=eo_ds["ease_off"].attrs.get("units", "um"),
             long_name="ease-off change by the surface deviations (deviated - theoretical)",
@@ -290,10 +316,13 @@ def efficiency_map(
     misalignment: Misalignment | None = None,
     options: LTCAOptions | None = None,
     progress: bool = False,
+    scheduler="synchronous",
+    n_workers: int | None = None,
 ) -> xr.Dataset:
     """Efficiency over operating points: speed × torque × temperature × roughness (seed §5.3).
 
-    The LTCA (static) runs once per torque; the efficiency stage
+    The LTCA (static) runs once per torque — each torque one task of the study engine
+    (:func:`contact.study.engine.run_tasks`, Dask) —; the efficiency stage
     (:func:`friction.efficiency.efficiency_analysis`) then runs for every speed,
     temperature and roughness on those loads.
 
@@ -315,7 +344,11 @@ def efficiency_map(
     misalignment, options
         As :func:`run_analysis`.
     progress : bool
-        tqdm progress bar over the operating points.
+        tqdm progress bar over the torques.
+    scheduler, n_workers
+        Where the torques run (:func:`contact.study.engine.open_client`): default
+        ``"synchronous"`` (this process, one after the other); None a LocalCluster of
+        ``n_workers`` processes; an address or a ``distributed.Client`` a cluster.
 
     Returns
     -------
@@ -335,7 +368,8 @@ def efficiency_map(
     -----
     Seed §5.3 (efficiency over operating conditions).
     """
-    from friction.efficiency import efficiency_analysis
+    from contact.study.efficiency import EfficiencyInputs, efficiency_at_torque
+    from contact.study.engine import run_tasks
 
     op = OperatingConditions() if operating is None else operating
     torque = EFFICIENCY_MAP_TORQUES if torque is None else torque
@@ -345,36 +379,24 @@ def efficiency_map(
     c = resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
-    lt = loaded_tca(c, list(torque), options=options or LTCAOptions())
+    shared = EfficiencyInputs(c, options or LTCAOptions(), op,
+                              tuple(float(x) for x in speed),
+                              tuple(float(x) for x in temperature),
+                              tuple(float(x) for x in roughness))
     shape = (len(torque), len(speed), len(temperature), len(roughness))
     eff, loss, mu_m, lam_m = (np.full(shape, np.nan) for _ in range(4))
     bar = None
     if progress:
         from tqdm.auto import tqdm
 
-        bar = tqdm(total=int(np.prod(shape[1:])), desc="efficiency map", unit="point")
-    F = lt["force"].fillna(0.0)
-    for j, n in enumerate(speed):
-        for k, temp in enumerate(temperature):
-            for m, rq in enumerate(roughness):
-                fr = efficiency_analysis(
-                    lt,
-                    op,
-                    pinion_speed=float(n),
-                    temperature=float(temp),
-                    roughness=float(rq),
-                )
-                eff[:, j, k, m] = fr["efficiency_mean"].values
-                loss[:, j, k, m] = fr["power_loss_mean"].values
-                dims = ("roll", "pair", "segment")
-                mu_m[:, j, k, m] = (
-                    (fr["friction_coefficient"].fillna(0) * F).sum(dims) / F.sum(dims)
-                ).values
-                lam_m[:, j, k, m] = (
-                    (fr["lambda_ratio"].fillna(0) * F).sum(dims) / F.sum(dims)
-                ).values
-                if bar is not None:
-                    bar.update()
+        bar = tqdm(total=len(torque), desc="efficiency map", unit="torque")
+    for it, res in run_tasks(efficiency_at_torque, shared,
+                             [(i, float(t)) for i, t in enumerate(torque)],
+                             scheduler=scheduler, n_workers=n_workers):
+        eff[it], loss[it] = res["efficiency"], res["power_loss"]
+        mu_m[it], lam_m[it] = res["friction_coefficient_mean"], res["lambda_ratio_mean"]
+        if bar is not None:
+            bar.update()
     if bar is not None:
         bar.close()
     dims4 = ("torque", "speed", "temperature", "roughness")

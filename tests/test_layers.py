@@ -44,7 +44,7 @@ LAYER_DEPENDS = {
 APPLICATION = {"contact", "contact.pipeline", "contact.io", "contact.plots", "contact.cli",
                "contact.wear",
                "contact.__main__", "contact._moved", "contact.commands",
-               "contact.deviation_files", "contact.output_paths"}
+               "contact.deviation_files", "contact.output_paths", "contact.study"}
 
 
 def _module_name(path: Path) -> str:
@@ -85,7 +85,8 @@ def _layer(module: str) -> str:
     for layer in LAYER_DEPENDS:
         if module == layer or module.startswith(layer + "."):
             return layer
-    if module in APPLICATION or module.startswith(("contact.commands", "contact.plots.")):
+    if module in APPLICATION or module.startswith(("contact.commands.", "contact.plots.",
+                                                   "contact.study.")):
         return "application"
     raise AssertionError(f"{module}: in no layer of contact (add it to tests/test_layers.py)")
 

@@ -64,6 +64,11 @@ def register(sub) -> None:
     p.add_argument("--rolls-per-cycle", type=int, default=10)
     p.add_argument("-o", "--output", default="efficiency_map.nc")
     p.add_argument("--plots", default=None, metavar="DIR")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run the torques on the Dask cluster at ADDRESS (tcp://host:8786)")
+    p.add_argument("--workers", type=int, default=None, metavar="N",
+                   help="run the torques on a local Dask cluster of N processes "
+                        "(default: in this process)")
     p.add_argument("--no-progress", action="store_true")
     p.set_defaults(func=run)
 
@@ -81,6 +86,9 @@ def run(args: argparse.Namespace) -> int:
     if args.plots:
         check_output_dir(args.plots)
     case = resolve_case(args.case)
+    scheduler = args.scheduler
+    if scheduler is None:
+        scheduler = "synchronous" if args.workers is None else None
     emap = efficiency_map(
         case,
         args.torque,
@@ -91,6 +99,8 @@ def run(args: argparse.Namespace) -> int:
                                       friction_model=args.friction_model),
         options=LTCAOptions(rolls_per_cycle=args.rolls_per_cycle),
         progress=not args.no_progress and sys.stderr.isatty(),
+        scheduler=scheduler,
+        n_workers=args.workers,
     )
     # one table per oil temperature and roughness: every swept value is printed
     for temp in emap["temperature"].values:

@@ -21,11 +21,13 @@ ContactSegments       frozen dataclass: the segments of one roll position (pair 
 PairComplianceModel   both members' tooth models and the shell settings
 pair_compliance_model build (memoised per case text and settings)
 clear_model_cache     forget the memoised models
+model_cache_info      hits and misses of the memo
 mesh_compliance       C and its parts
 """
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import logging
 import time
@@ -48,7 +50,7 @@ from contact.compliance.tooth import (
     weber_depth,
 )
 from contact.compliance.weber import weber_compliance
-from geometry.assembly import case_transforms
+from geometry.assembly import Misalignment, case_transforms
 from geometry.case import case_from_dict
 from geometry.errors import InputError
 from geometry.hertz import STEEL
@@ -63,6 +65,7 @@ __all__ = [
     "clear_model_cache",
     "mesh_compliance",
     "mesh_compliance_many",
+    "model_cache_info",
     "pair_compliance_model",
 ]
 
@@ -238,9 +241,12 @@ def pair_compliance_model(
     Seed Fig. 3.2: the Ritz coefficients are computed once and are "valid for all
     mesh positions". The memo (``functools.lru_cache`` of 4 entries, the only state
     of this module; :func:`clear_model_cache` empties it) is keyed by
-    :meth:`geometry.case.Case.to_toml`, which round-trips the case exactly, so two
-    equal cases share one model. A caller that keeps the model (e.g. the LTCA
-    pipeline) can pass it to :func:`mesh_compliance` and need not rely on the memo.
+    :meth:`geometry.case.Case.to_toml` of the case without its misalignment and
+    deviations (neither changes a tooth in its member's frame), which round-trips the
+    case exactly, so two cases that differ only in how they are assembled share one
+    model — a misalignment sweep builds it once per worker process. A caller that
+    keeps the model (e.g. the LTCA pipeline) can pass it to :func:`mesh_compliance`
+    and need not rely on the memo.
     """
     materials = []
     for name, mat in (("pinion_material", pinion_material), ("gear_material", gear_material)):
@@ -252,7 +258,18 @@ def pair_compliance_model(
         materials += [real(f"{name}[0]", e, unit="MPa"), real(f"{name}[1]", nu, unit="1")]
     bores = tuple(None if b is None else float(b) for b in (pinion_bore, gear_bore))
     n_height, n_face = integer("n_height", n_height), integer("n_face", n_face)
-    return _memo_pair(case.to_toml(), str(theory), n_height, n_face, tuple(materials), bores)
+    # the teeth live in their members' frames: the misalignment and the surface
+    # deviations of the case change the assembly, not the shells, so they are left out of
+    # the memo's key (a misalignment sweep builds the shells once per process)
+    teeth_case = dataclasses.replace(case, misalignment=Misalignment(), deviations=None)
+    return _memo_pair(teeth_case.to_toml(), str(theory), n_height, n_face, tuple(materials),
+                      bores)
+
+
+def model_cache_info() -> tuple[int, int, int | None, int]:
+    """Hits, misses and size of the memo of :func:`pair_compliance_model` in this process
+    (a study asks its workers, to show the tooth models are built once per worker)."""
+    return _memo_pair.cache_info()
 
 
 def clear_model_cache() -> None:

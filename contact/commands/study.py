@@ -1,0 +1,296 @@
+"""``ltca sweep``, ``ltca tolerance`` and ``ltca vh-check``: design studies on Dask.
+
+Ranges are typed ``START:STOP:N`` (N values, ends included), a single value, or values
+separated by commas; distributions ``normal:MEAN:STD``, ``uniform:LOW:HIGH``,
+``truncnormal:MEAN:STD:LOW:HIGH`` or ``triangular:LOW:MODE:HIGH``. Lengths in mm, ΔΣ in
+degrees (as ``ltca run``). ``--scheduler tcp://host:8786`` runs on an existing Dask
+cluster; by default a local cluster of ``--workers`` processes (one per core).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+
+import numpy as np
+
+from contact.output_paths import check_output_dir, check_output_file
+from geometry.errors import InputError
+
+#: Place in ``ltca --help``.
+ORDER = 45
+
+#: CLI option → (study input, factor from the typed unit to the input's unit)
+_INPUT_OPTIONS = {
+    "dE": ("delta_E", 1.0),
+    "dP": ("delta_P", 1.0),
+    "dG": ("delta_G", 1.0),
+    "dSigma": ("delta_Sigma", math.pi / 180.0),
+    "deviation_scale": ("deviation_scale", 1.0),
+}
+
+
+def parse_range(option: str, text: str) -> np.ndarray:
+    """Values of ``START:STOP:N``, ``X`` or ``X,Y,…`` (InputError naming ``option``)."""
+    try:
+        if ":" in text:
+            parts = text.split(":")
+            if len(parts) != 3:
+                raise ValueError
+            start, stop, n = float(parts[0]), float(parts[1]), int(parts[2])
+            if n < 1 or (n == 1 and start != stop):
+                raise ValueError
+            values = np.linspace(start, stop, n)
+        else:
+            values = np.array([float(x) for x in text.split(",")])
+    except ValueError:
+        raise InputError(f"{option}: expected START:STOP:N (N >= 2 values), a number or "
+                         f"numbers separated by commas, got {text!r}") from None
+    if not np.all(np.isfinite(values)):
+        raise InputError(f"{option}: values must be finite, got {text!r}")
+    return values
+
+
+def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
+    p.add_argument("case", nargs="?", default=None,
+                   help="case file (TOML) or bundled case name (default: the 11x41 pair)")
+    if many_torques:
+        p.add_argument("--torque", type=float, nargs="+", default=None, metavar="N_M",
+                       help="pinion torques [N m] (default 250)")
+        p.add_argument("--speed", type=float, nargs="+", default=None, metavar="RPM",
+                       help="pinion speeds [rpm]: adds efficiency and power loss")
+    p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
+    p.add_argument("--flank", choices=["drive", "coast"], default=None)
+    p.add_argument("--rolls-per-cycle", type=int, default=None,
+                   help="roll positions per mesh cycle (default the LTCA's)")
+    p.add_argument("-o", "--output", default=None, metavar="FILE",
+                   help="netCDF file (default <case>_<study>.nc); finished points stream to "
+                        "FILE.parts/ and a killed study started again resumes")
+    p.add_argument("--plots", default=None, metavar="DIR", help="write PNG figures into DIR")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="Dask scheduler of an existing cluster (e.g. tcp://host:8786); "
+                        "default a local cluster; 'synchronous' runs in this process")
+    p.add_argument("--workers", type=int, default=None, metavar="N",
+                   help="processes of the local cluster (default one per core)")
+    p.add_argument("--no-progress", action="store_true")
+
+
+def register(sub) -> None:
+    """Add the study sub-commands to an ``argparse`` sub-parser collection."""
+    p = sub.add_parser(
+        "sweep", help="misalignment map: LTCA over a grid of dE, dP, dG, dSigma (Dask)",
+        description="Loaded TCA over a full grid of misalignments (and deviation scales), "
+        "torques and speeds, on Dask; prints the range of each summary, writes one "
+        "netCDF and, with --plots, maps over the first two swept inputs.")
+    _common(p)
+    p.add_argument("--dE", metavar="RANGE", help="offset misalignment ΔE [mm], e.g. -0.2:0.2:21")
+    p.add_argument("--dP", metavar="RANGE", help="pinion axial misalignment ΔP [mm]")
+    p.add_argument("--dG", metavar="RANGE", help="gear axial misalignment ΔG [mm]")
+    p.add_argument("--dSigma", metavar="RANGE", help="shaft-angle misalignment ΔΣ [deg]")
+    p.add_argument("--deviation-scale", metavar="RANGE",
+                   help="factors on the case's [deviations] (0 theoretical, 1 measured)")
+    p.set_defaults(func=sweep_command, study="sweep")
+
+    t = sub.add_parser(
+        "tolerance", help="Monte Carlo tolerance analysis of misalignments (Dask)",
+        description="Loaded TCA at N draws of the misalignments from the given "
+        "distributions (Sobol', Latin hypercube or random); prints percentiles of LTE p-p, "
+        "peak pressure, edge share and efficiency and which input drives their spread.")
+    _common(t)
+    for opt, unit in (("dE", "mm"), ("dP", "mm"), ("dG", "mm"), ("dSigma", "deg")):
+        t.add_argument(f"--{opt}", metavar="DIST",
+                       help=f"distribution of {opt} [{unit}], e.g. normal:0:0.05")
+    t.add_argument("--deviation-scale", metavar="DIST",
+                   help="distribution of the factor on the case's [deviations]")
+    t.add_argument("-n", type=int, default=256, help="number of draws (default %(default)s)")
+    t.add_argument("--method", choices=["sobol", "lhs", "random"], default="sobol")
+    t.add_argument("--seed", type=int, default=0, help="random seed (default %(default)s)")
+    t.set_defaults(func=tolerance_command, study="tolerance")
+
+    v = sub.add_parser(
+        "vh-check", help="V-H check: offset (V) and pinion mounting (H) moving the pattern "
+        "to toe and heel",
+        description="Maps the loaded pattern centre over a V (= ΔE) x H (= ΔP) grid on Dask "
+        "and solves for the displacements that put it at the toe and heel targets at the "
+        "nominal pattern's height; each solution is checked by a single analysis.")
+    _common(v, many_torques=False)
+    v.add_argument("--torque", type=float, default=None, metavar="N_M",
+                   help="pinion torque [N m] (default 50)")
+    v.add_argument("--toe", type=float, default=None,
+                   help="toe target of the pattern centre, face-width fraction (default 0.25)")
+    v.add_argument("--heel", type=float, default=None,
+                   help="heel target, face-width fraction (default 0.75)")
+    v.add_argument("--profile", type=float, default=None,
+                   help="height the centre keeps, depth fraction (default the nominal's)")
+    v.add_argument("--dE", metavar="RANGE", default=None, help="V grid [mm] (default -0.4:0.4:9)")
+    v.add_argument("--dP", metavar="RANGE", default=None, help="H grid [mm] (default -0.3:0.3:7)")
+    v.set_defaults(func=vh_check_command, study="vh_check")
+
+
+def _prepare(args: argparse.Namespace) -> tuple:
+    """Output paths checked first; the keyword arguments every study takes."""
+    from contact.ltca import LTCAOptions
+    from contact.pipeline import resolve_case
+
+    case = resolve_case(args.case)
+    out = Path(args.output or f"{case.name}_{args.study}.nc")
+    check_output_file(out)
+    if args.plots:
+        check_output_dir(args.plots)
+    if args.workers is not None and args.workers < 1:
+        raise InputError(f"--workers: must be >= 1, got {args.workers}")
+    kw = {}
+    if args.solver:
+        kw["solver"] = args.solver
+    if args.rolls_per_cycle is not None:
+        kw["rolls_per_cycle"] = args.rolls_per_cycle
+    common = {"options": LTCAOptions(**kw), "flank": args.flank, "output": out,
+              "scheduler": args.scheduler, "n_workers": args.workers,
+              "progress": not args.no_progress}
+    return case, common
+
+
+def _plots(ds, args) -> None:
+    if args.plots:
+        from contact.study.figures import save_study_figures
+
+        for path in save_study_figures(ds, args.plots):
+            print(f"wrote {path}")
+
+
+def _ranges_table(ds) -> str:
+    from tabulate import tabulate
+
+    names = [n for n in ("lte_mean", "lte_peak_to_peak", "pressure_max_flank",
+                         "pressure_max_edge", "edge_load_share", "pattern_centre_u",
+                         "pattern_centre_v", "efficiency") if n in ds]
+    rows = []
+    for t in ds["torque"].values:
+        for n in names:
+            x = ds[n].sel(torque=t).values.astype(float)
+            x = x[np.isfinite(x)]
+            if x.size:
+                rows.append((f"{t:g}", n, ds[n].attrs.get("units", ""), f"{x.min():.4g}",
+                             f"{np.median(x):.4g}", f"{x.max():.4g}"))
+    return tabulate(rows, headers=("T_p [N m]", "summary", "units", "min", "median", "max"),
+                    tablefmt="github")
+
+
+def _status_line(ds) -> str:
+    st = ds["status"].values.ravel()
+    line = (f"{st.size} points: {(st == 0).sum()} certified, {(st == 1).sum()} partly "
+            f"uncertified, {(st == 2).sum()} failed")
+    if (st == 2).any():
+        reasons = sorted(set(ds["reason"].values.ravel()[st == 2]))
+        line += "\n  " + "\n  ".join(reasons[:5])
+    if ds.attrs.get("points_resumed"):
+        line += f"\n(resumed: {ds.attrs['points_resumed']} points from an interrupted run)"
+    return line
+
+
+def sweep_command(args: argparse.Namespace) -> int:
+    from contact.study import sweep
+
+    case, common = _prepare(args)
+    axes = {}
+    for opt, (name, factor) in _INPUT_OPTIONS.items():
+        text = getattr(args, opt)
+        if text is not None:
+            axes[name] = parse_range(f"--{opt.replace('_', '-')}", text) * factor
+    if not axes:
+        raise InputError("sweep: give at least one of --dE, --dP, --dG, --dSigma, "
+                         "--deviation-scale")
+    ds = sweep(case, torque=args.torque, speed=args.speed, **axes, **common)
+    print(f"sweep of {case.name}: " + " x ".join(f"{k} {v.size}" for k, v in axes.items()))
+    print(_ranges_table(ds))
+    print(_status_line(ds))
+    print(f"wrote {common['output']}")
+    _plots(ds, args)
+    return 0
+
+
+def tolerance_command(args: argparse.Namespace) -> int:
+    from tabulate import tabulate
+
+    from contact.study import parse_distribution, sample, sensitivity
+
+    case, common = _prepare(args)
+    dists = {}
+    for opt, (name, factor) in _INPUT_OPTIONS.items():
+        text = getattr(args, opt)
+        if text is not None:
+            dists[name] = parse_distribution(f"--{opt.replace('_', '-')}", text, factor)
+    if not dists:
+        raise InputError("tolerance: give the distribution of at least one of --dE, --dP, "
+                         "--dG, --dSigma, --deviation-scale")
+    ds = sample(case, dists, args.n, method=args.method, seed=args.seed,
+                torque=args.torque, speed=args.speed, **common)
+    print(f"tolerance analysis of {case.name}: {args.n} draws ({args.method}, seed "
+          f"{args.seed}) of " + ", ".join(dists))
+    ok = ds["status"].values != 2
+    rows = []
+    for t in ds["torque"].values:
+        for n in ("lte_peak_to_peak", "pressure_max_flank", "pressure_max_edge",
+                  "edge_load_share", "efficiency"):
+            if n not in ds:
+                continue
+            da = ds[n].sel(torque=t)
+            if "speed" in da.dims:
+                da = da.isel(speed=0)
+            x = da.values[ok]
+            x = x[np.isfinite(x)]
+            if x.size:
+                p5, p50, p95 = np.percentile(x, (5, 50, 95))
+                rows.append((f"{t:g}", n, da.attrs.get("units", ""), f"{p5:.4g}",
+                             f"{p50:.4g}", f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
+    print(tabulate(rows, headers=("T_p [N m]", "summary", "units", "P5", "P50", "P95", "mean",
+                                  "std"), tablefmt="github"))
+    if ok.sum() > len(dists) + 2:
+        sens = sensitivity(ds, "lte_peak_to_peak")
+        srows = []
+        for t in ds["torque"].values:
+            s = sens.sel(torque=t)
+            for name in s["input"].values:
+                srows.append((f"{t:g}", name, f"{float(s['spearman'].sel(input=name)):+.2f}",
+                              f"{float(s['src'].sel(input=name)):+.2f}",
+                              f"{float(s['r_squared']):.2f}"))
+        print("what drives the spread of LTE p-p (rank correlation, standardised "
+              "regression coefficient, R^2 of the linear fit):")
+        print(tabulate(srows, headers=("T_p [N m]", "input", "Spearman", "SRC", "R^2"),
+                       tablefmt="github"))
+    print(_status_line(ds))
+    print(f"wrote {common['output']}")
+    _plots(ds, args)
+    return 0
+
+
+def vh_check_command(args: argparse.Namespace) -> int:
+    from tabulate import tabulate
+
+    from contact.study import vh_check
+    from contact.study.vh_check import VH_DEFAULT_LIMITS, VH_DEFAULT_TORQUE
+
+    case, common = _prepare(args)
+    kw = {}
+    if args.dE is not None:
+        kw["delta_E"] = parse_range("--dE", args.dE)
+    if args.dP is not None:
+        kw["delta_P"] = parse_range("--dP", args.dP)
+    ds = vh_check(case, torque=args.torque or VH_DEFAULT_TORQUE,
+                  toe=VH_DEFAULT_LIMITS[0] if args.toe is None else args.toe,
+                  heel=VH_DEFAULT_LIMITS[1] if args.heel is None else args.heel,
+                  profile=args.profile, **kw, **common)
+    rows = [(str(p), f"{float(r['V']):+.3f}", f"{float(r['H']):+.3f}",
+             f"{float(r['target_u']):.3f}", f"{float(r['pattern_centre_u']):.3f}",
+             f"{float(r['target_v']):.3f}", f"{float(r['pattern_centre_v']):.3f}",
+             f"{float(r['grid_tolerance_u']):.3f}")
+            for p, r in ((p, ds.sel(position=p)) for p in ds["position"].values)]
+    print(f"V-H check of {case.name} at {ds.attrs['torque_N_m']:g} N m "
+          "(V = dE, H = dP; centre as fractions of face width u and whole depth v)")
+    print(tabulate(rows, headers=("position", "V [mm]", "H [mm]", "target u", "centre u",
+                                  "target v", "centre v", "grid tol. u"), tablefmt="github"))
+    print(f"wrote {common['output']}")
+    _plots(ds, args)
+    return 0
+

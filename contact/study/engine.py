@@ -1,0 +1,422 @@
+"""Running the points of a study on Dask: a local cluster by default, any cluster by address.
+
+Every study (:func:`contact.study.sweep`, :func:`contact.study.sample`, the V-H check)
+comes down to a list of points, each a dict of :data:`contact.study.points.POINT_INPUTS`,
+and the inputs all points share (:class:`contact.study.points.StudyInputs`).
+:func:`run_points` analyses them with :func:`contact.run_analysis` on ``dask.distributed``
+workers and returns one dataset over a ``point`` dimension.
+
+* **Where**: ``scheduler=None`` starts a ``LocalCluster`` of one single-threaded process
+  per core (``n_workers`` to choose); ``scheduler="tcp://host:8786"`` uses a running
+  cluster (its workers need the toolkit installed); a ``distributed.Client`` is used as
+  it is; ``scheduler="synchronous"`` runs the points one after the other in this process
+  (debugging, small studies, no cluster to start).
+* **Once per worker**: the shared inputs are scattered to every worker once
+  (``Client.scatter(broadcast=True)``), and the tooth models — the shells' Ritz systems,
+  factorised, which do not depend on the misalignment or the deviations — are memoised
+  per worker process (:func:`contact.compliance.pair_compliance_model`), so they are
+  built once per worker, not once per point.
+* **One failing point never stops a study**: its ``status`` is ``failed`` and
+  ``reason`` says why (e.g. the flanks separate); its summaries are NaN.
+* **Streaming and resume**: with an output file the finished points go to disk in
+  chunks as they come (:class:`contact.study.store.ResultStore`); at most a few points
+  per worker are in flight, so memory stays flat in the number of points; a study
+  killed and started again with the same output computes only the missing points.
+
+Public functions
+----------------
+analyse_point   one point's summaries (runs on a worker)
+run_points      all points of a study, on Dask
+open_client     a Dask client for a scheduler argument (context manager)
+run_tasks       any function over items on Dask, results as they finish
+write_study     write a study's result file and remove its parts
+"""
+
+from __future__ import annotations
+
+import contextlib
+import dataclasses
+import logging
+import os
+from collections.abc import Iterator, Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from contact.study.points import POINT_INPUTS, StudyInputs, check_point, misalignment_of
+from contact.study.store import ResultStore
+from contact.study.summary import (
+    STATUS_MEANINGS,
+    SUMMARY_VARIABLES,
+    failed_summary,
+    point_summary,
+    summary_variable,
+)
+from geometry import __version__
+from geometry.conventions import data_var
+from geometry.errors import InputError
+
+__all__ = ["SYNCHRONOUS", "analyse_point", "open_client", "run_points", "run_tasks",
+           "write_study"]
+
+log = logging.getLogger(__name__)
+
+#: The ``scheduler`` value that runs a study in this process, point after point.
+SYNCHRONOUS = "synchronous"
+
+
+@dataclasses.dataclass(frozen=True)
+class PointResult:
+    """What a worker sends back for one point: small, whatever the analysis's size."""
+
+    index: int
+    status: int
+    reason: str
+    summary: dict[str, np.ndarray]
+
+
+def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -> PointResult:
+    """Analyse one study point and summarise it (the function Dask runs on a worker).
+
+    Parameters
+    ----------
+    shared : StudyInputs
+        The inputs every point shares.
+    index : int
+        The point's place in the study.
+    point : mapping of str to float
+        Its inputs (:data:`contact.study.points.POINT_INPUTS`, their units).
+
+    Returns
+    -------
+    PointResult
+        ``status`` 0 ok, 1 some roll position uncertified, 2 failed (``reason`` the
+        error's message; every summary NaN). Never raises for a failing analysis.
+
+    Notes
+    -----
+    The analysis is exactly :func:`contact.run_analysis` of the case with the point's
+    misalignment and scaled deviations (no ``/geometry``, no theoretical groups) and
+    :func:`friction.efficiency.efficiency_analysis` of its ``/ltca`` at each speed, so a
+    study's numbers equal those of single analyses at the same inputs, bit for bit.
+    """
+    from contact.pipeline import run_analysis
+    from friction.efficiency import efficiency_analysis
+
+    case = shared.case
+    try:
+        tree = run_analysis(
+            dataclasses.replace(case, misalignment=misalignment_of(case.misalignment, point)),
+            list(shared.torque), flank=shared.flank, options=shared.options,
+            deviations=shared.deviations_at(point.get("deviation_scale")), geometry=False,
+            theoretical=False)
+        friction = []
+        if shared.speed:
+            ltca = tree["/ltca"].to_dataset()
+            friction = [efficiency_analysis(ltca, shared.operating, pinion_speed=float(n))
+                        for n in shared.speed]
+        summary = point_summary(tree, case, friction)
+        status = 0 if bool(np.all(summary["certified"] > 0)) else 1
+        return PointResult(index, status, "", summary)
+    except Exception as exc:
+        log.info("study point %d %s failed: %s", index, dict(point), exc)
+        reason = f"{type(exc).__name__}: {exc}".splitlines()[0]
+        return PointResult(index, 2, reason,
+                           failed_summary(len(shared.torque), max(len(shared.speed), 1)))
+
+
+def _point_dataset(shared: StudyInputs, names: Sequence[str], index: int,
+                   point: Mapping[str, float], result: PointResult) -> xr.Dataset:
+    """One finished point as a dataset over a ``point`` dim of length 1."""
+    data: dict[str, Any] = {
+        name: summary_variable(name, ("point",), result.summary[name][None])
+        for name in SUMMARY_VARIABLES}
+    data["status"] = data_var(("point",), np.array([result.status], np.int8), "1",
+                              "outcome of the point's analysis",
+                              flag_values=np.arange(len(STATUS_MEANINGS), dtype=np.int8),
+                              flag_meanings=" ".join(STATUS_MEANINGS))
+    data["reason"] = data_var(("point",), np.array([result.reason], dtype=object), None,
+                              "why the point failed (empty when it did not)")
+    coords = {"point": ("point", np.array([index]), {"units": "1",
+                                                       "long_name": "study point index"})}
+    for name in names:
+        units, long_name = POINT_INPUTS[name]
+        coords[name] = ("point", np.array([float(point[name])]),
+                        {"units": units, "long_name": long_name})
+    return xr.Dataset(data, coords=coords)
+
+
+@contextlib.contextmanager
+def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator[Any]:
+    """A ``distributed.Client`` for a study's ``scheduler`` argument.
+
+    Parameters
+    ----------
+    scheduler : None, str or distributed.Client
+        None: a new ``LocalCluster`` (closed on exit) of ``n_workers`` single-threaded
+        worker processes; an address (``"tcp://host:8786"``): a client of that running
+        cluster; a Client: used as it is (not closed); ``"synchronous"``: no client
+        (yields None).
+    n_workers : int, optional
+        Workers of the local cluster; default one per core (``os.cpu_count()``).
+
+    Yields
+    ------
+    distributed.Client or None
+
+    Raises
+    ------
+    InputError
+        Bad ``n_workers``, or a scheduler address that cannot be reached (the message
+        names it).
+    """
+    if scheduler == SYNCHRONOUS:
+        yield None
+        return
+    from distributed import Client, LocalCluster
+
+    if isinstance(scheduler, Client):
+        yield scheduler
+        return
+    if scheduler is None:
+        n = (os.cpu_count() or 1) if n_workers is None else n_workers
+        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+            raise InputError(f"n_workers: must be an integer >= 1, got {n_workers!r}")
+        with LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                          dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
+                Client(cluster) as client:
+            yield client
+        return
+    if not isinstance(scheduler, str) or "://" not in scheduler:
+        raise InputError(f"scheduler: must be None (a local cluster), 'synchronous', a "
+                         f"scheduler address such as 'tcp://host:8786' or a "
+                         f"distributed.Client; got {scheduler!r}")
+    try:
+        client = Client(scheduler, timeout="20s")
+    except OSError as exc:
+        raise InputError(f"scheduler: cannot reach {scheduler!r}: {exc}") from None
+    with client:
+        yield client
+
+
+def _stamp(ds: xr.Dataset, shared: StudyInputs, kind: str, resumed: int) -> xr.Dataset:
+    ds = ds.copy()
+    ds.attrs = {
+        "title": f"hypoid-ltca {kind} of {shared.case.name}",
+        "case": shared.case.name,
+        "case_source": shared.case.source,
+        "toolkit_version": __version__,
+        "study": kind,
+        "solver": shared.options.solver,
+        "flank": shared.flank or "drive",
+        "points_resumed": int(resumed),
+    }
+    return ds
+
+
+def run_points(
+    shared: StudyInputs,
+    points: Sequence[Mapping[str, float]],
+    *,
+    names: Sequence[str] | None = None,
+    output: str | os.PathLike[str] | None = None,
+    scheduler: Any = None,
+    n_workers: int | None = None,
+    progress: bool = False,
+    kind: str = "study",
+    chunk_size: int = 32,
+) -> xr.Dataset:
+    """Analyse every point of a study on Dask; one dataset over a ``point`` dim.
+
+    Parameters
+    ----------
+    shared : StudyInputs
+        What every point shares (case, torques [N·m], speeds [rpm], options …).
+    points : sequence of mappings
+        Each point's inputs (:data:`contact.study.points.POINT_INPUTS`; mm, rad, 1).
+    names : sequence of str, optional
+        The inputs stored as ``point`` coordinates (default: those of the first point).
+    output : path-like, optional
+        Final netCDF file. Finished points stream to ``OUTPUT.parts/`` and a study
+        started again with the same output resumes (:class:`~contact.study.store.
+        ResultStore`); the directory must exist. None: results kept in memory.
+    scheduler, n_workers
+        Where to run (:func:`open_client`): default a LocalCluster, one process per core.
+    progress : bool
+        tqdm progress bar on the client.
+    kind : str
+        What the study is (recorded in the title): ``"sweep"``, ``"sample"`` …
+    chunk_size : int
+        Points per chunk file of the parts directory.
+
+    Returns
+    -------
+    xarray.Dataset
+        dims ``point`` (+ ``torque``, ``harmonic``, ``speed``): the summaries of
+        :data:`contact.study.summary.SUMMARY_VARIABLES`, ``status`` (CF flag: ok,
+        uncertified, failed) and ``reason``; coordinates ``point`` and the inputs
+        ``names``, ``torque`` [N·m], ``speed`` [rpm]. Attribute ``points_resumed``: how
+        many points were read from an interrupted run's parts.
+
+    Raises
+    ------
+    InputError
+        An unknown or non-finite input, no points, parts of another study at
+        ``OUTPUT.parts``, a bad scheduler or worker count.
+    """
+    if not points:
+        raise InputError("points: a study needs at least one point")
+    pts = [check_point(p, f"point {i}") for i, p in enumerate(points)]
+    names = list(names if names is not None else pts[0])
+    for i, p in enumerate(pts):
+        if set(p) != set(names):
+            raise InputError(f"point {i}: sets {sorted(p)}, the study's inputs are "
+                             f"{sorted(names)}")
+    if "deviation_scale" in names and shared.deviations is None:
+        raise InputError(f"deviation_scale: case {shared.case.name!r} has no [deviations] "
+                         "table to scale")
+    store = None
+    done: set[int] = set()
+    if output is not None:
+        out = Path(output)
+        if not out.parent.is_dir():
+            raise InputError(f"output: directory {str(out.parent)!r} does not exist")
+        manifest = {"fingerprint": shared.fingerprint(), "kind": kind, "inputs": names,
+                    "points": [[p[n] for n in names] for p in pts]}
+        store = ResultStore(out, manifest, chunk_size=chunk_size)
+        done = store.done()
+        if done:
+            log.info("resuming %s: %d of %d points already computed", out, len(done),
+                     len(pts))
+    todo = [i for i in range(len(pts)) if i not in done]
+    kept: list[xr.Dataset] = []
+
+    def finish(res: PointResult) -> None:
+        ds = _point_dataset(shared, names, res.index, pts[res.index], res)
+        if store is not None:
+            store.add(ds)
+        else:
+            kept.append(ds)
+
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=len(pts), initial=len(done), desc=kind, unit="point")
+    try:
+        # analyse_point looked up here, at call time (tests count its calls)
+        for res in run_tasks(analyse_point, shared, [(i, pts[i]) for i in todo],
+                             scheduler=scheduler, n_workers=n_workers):
+            finish(res)
+            if bar is not None:
+                bar.update()
+    finally:
+        if store is not None:
+            store.flush()
+        if bar is not None:
+            bar.close()
+    if store is not None:
+        ds = store.combined()
+        if ds.sizes["point"] != len(pts):
+            raise InputError(f"output: {ds.sizes['point']} of {len(pts)} points in "
+                             f"{str(store.parts)!r} after the run")
+    else:
+        ds = xr.concat(kept, dim="point")
+        ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
+    torque = np.asarray(shared.torque, float)
+    ds = ds.assign_coords(
+        torque=("torque", torque, {"units": "N m", "long_name": "pinion torque"}),
+        harmonic=("harmonic", np.arange(1, 4), {"units": "1",
+                                                "long_name": "mesh harmonic order"}))
+    if shared.speed:
+        ds = ds.assign_coords(speed=("speed", np.asarray(shared.speed, float),
+                                     {"units": "rpm", "long_name": "pinion speed"}))
+    else:  # no efficiency stage
+        ds = ds.drop_vars(["efficiency", "power_loss"])
+    ds["reason"] = ds["reason"].astype(str)
+    return _stamp(ds, shared, kind, len(done))
+
+
+def run_tasks(function: Any, shared: Any, items: Sequence[tuple], *, scheduler: Any = None,
+              n_workers: int | None = None, client: Any = None) -> Iterator[Any]:
+    """Run ``function(shared, *item)`` for every item on Dask; yield results as they finish.
+
+    Parameters
+    ----------
+    function : callable
+        A module-level function (pickled by reference to the workers).
+    shared : object
+        Its first argument, the same for every item: scattered once to every worker.
+    items : sequence of tuple
+        The other arguments of each call.
+    scheduler, n_workers
+        As :func:`open_client` (ignored when ``client`` is given).
+    client : distributed.Client, optional
+        An open client to use.
+
+    Yields
+    ------
+    The results, in the order they complete (in item order for ``"synchronous"``). At
+    most two calls per worker thread are in flight, so the scheduler's memory stays flat
+    in the number of items.
+    """
+    if client is None:
+        with open_client(scheduler, n_workers) as cl:
+            if cl is None:
+                for item in items:
+                    yield function(shared, *item)
+                return
+            yield from run_tasks(function, shared, items, client=cl)
+        return
+    from distributed import as_completed
+
+    shared_future = client.scatter(shared, broadcast=True, hash=False)
+    n_threads = max(1, sum(client.nthreads().values()))
+    queue = iter(items)
+    name = getattr(function, "__name__", "task")
+
+    def submit(item: tuple):
+        return client.submit(function, shared_future, *item, pure=False,
+                             key=f"{name}-{os.urandom(6).hex()}")
+
+    ac = as_completed([submit(item) for _, item in zip(range(2 * n_threads), queue,
+                                                       strict=False)])
+    for fut in ac:
+        result = fut.result()
+        fut.release()
+        yield result
+        nxt = next(queue, None)
+        if nxt is not None:
+            ac.add(submit(nxt))
+
+
+def write_study(ds: xr.Dataset, output: str | os.PathLike[str], shared: StudyInputs) -> Path:
+    """Write a study's final result to ``output`` (atomically, the case as its inputs)
+    and remove the parts its points streamed to (:class:`~contact.study.store.
+    ResultStore`).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The study's result (e.g. a sweep's grid).
+    output : path-like
+        The netCDF file.
+    shared : StudyInputs
+        The study's shared inputs (the case's TOML is stored as ``inputs``).
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    contact.io.NetCDFError
+        If the file cannot be written (the parts are then kept).
+    """
+    from contact.io import write_netcdf
+
+    path = write_netcdf(ds, output, inputs=shared.case.to_toml())
+    ResultStore.remove_parts(output)
+    return path
