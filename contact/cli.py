@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import logging
+import os
 import pkgutil
 import re
 import sys
@@ -76,9 +77,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv))
     level = [logging.WARNING, logging.INFO, logging.DEBUG][min(args.verbose, 2)]
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
-    # Dask's scheduler and workers log every start and stop at INFO: only with -vv
-    logging.getLogger("distributed").setLevel(logging.DEBUG if args.verbose >= 2
-                                              else logging.WARNING)
+    # Dask's scheduler and workers log every start and stop at INFO: only with -vv.
+    # distributed sets its loggers' levels from dask's config when it is imported (in
+    # this process and in every worker process), so the config says it, not a setLevel.
+    distributed_level = "debug" if args.verbose >= 2 else "warning"
+    os.environ["DASK_LOGGING__DISTRIBUTED"] = distributed_level
+    import dask
+
+    dask.config.set({"logging.distributed": distributed_level})
+    logging.getLogger("distributed").setLevel(distributed_level.upper())
     try:
         return int(args.func(args) or 0)
     except LTCAError as exc:

@@ -147,8 +147,10 @@ def tolerance_figure(ds: xr.Dataset, torque: float | None = None):
             for q, ls in zip((5, 50, 95), (":", "-", ":"), strict=True):
                 p = np.percentile(values, q)
                 ax.axvline(p, color="k", ls=ls, lw=1)
-                ax.annotate(f"P{q} {p:.3g}", (p, 1.0), xycoords=("data", "axes fraction"),
-                            rotation=90, va="top", ha="right", fontsize=7)
+                ax.annotate(f"P{q} {p:.4g}", (p, 0.98), xycoords=("data", "axes fraction"),
+                            rotation=90, va="top", ha="right", fontsize=7,
+                            bbox={"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none",
+                                  "alpha": 0.8})
         ax.set_xlabel(label)
         ax.set_ylabel("draws [1]")
     n_fail = int((~ok).sum())
