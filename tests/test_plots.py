@@ -37,6 +37,8 @@ from contact.plots import (
     pressure_figure,
     transmission_error_figure,
 )
+from contact.plots.flank import colour_index
+from contact.plots.tooth import segment_pieces
 from friction.operating import OperatingConditions
 from geometry.errors import InputError
 
@@ -124,6 +126,24 @@ def _collections(fig, kind):
             if type(c) is kind and c.get_array() is not None and c.get_array().size]
 
 
+def _drawn_by_colour(lc) -> dict[int, list]:
+    """{colour-map entry: sorted piece midpoints} of a collection drawn by colour group:
+    each path holds its pieces as 3 points and a NaN gap, and carries one value."""
+    cm, out = lc.get_cmap(), {}
+    for path, value in zip(lc.get_paths(), lc.get_array(), strict=True):
+        (k,) = colour_index([value], lc.norm, cm)
+        assert k not in out  # one path per colour
+        mid = path.vertices.reshape(-1, 4, 2)[:, 1]
+        out[int(k)] = sorted(map(tuple, np.round(mid, 12)))
+    return out
+
+
+def _by_colour(pieces, values, lc) -> dict[int, list]:
+    index = colour_index(values, lc.norm, lc.get_cmap())
+    return {int(k): sorted(map(tuple, np.round(pieces[index == k][:, 1], 12)))
+            for k in np.unique(index)}
+
+
 def test_pressure_shares_one_scale_and_draws_edges_outside(default_tree):
     g = _groups(default_tree)
     lt = g["ltca"]
@@ -136,10 +156,14 @@ def test_pressure_shares_one_scale_and_draws_edges_outside(default_tree):
     assert len(lines) == lt.sizes["torque"]
     # one colour scale for every torque, from 0 to the flank's peak over all torques
     assert {(lc.norm.vmin, lc.norm.vmax) for lc in lines} == {(0.0, flank_peak)}
-    # the segment pieces drawn carry exactly the flank's non-zero pressures
-    drawn = np.sort(np.concatenate([lc.get_array() for lc in lines]))
-    curve = p[..., kind == "curve"]
-    assert np.array_equal(drawn, np.sort(curve[np.isfinite(curve) & (curve > 0)]))
+    # every flank segment with a non-zero pressure is drawn, once, in the colour of its
+    # own pressure (the pieces are grouped by colour-map entry, one path per entry)
+    for i, lc in enumerate(lines):
+        flank_p = np.where(kind == "curve", p[i], 0.0)
+        pieces, values = segment_pieces(lt, flank_p)
+        curve = flank_p[..., kind == "curve"]
+        assert len(values) == np.count_nonzero(np.isfinite(curve) & (curve > 0))
+        assert _drawn_by_colour(lc) == _by_colour(pieces, values, lc)
     # the edge contact in its own scale, outside the unit square for the gear edges
     edges = _collections(fig, PathCollection)
     assert edges and {(e.norm.vmin, e.norm.vmax) for e in edges} == {(0.0, edge_peak)}

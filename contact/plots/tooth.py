@@ -8,8 +8,9 @@ plane is the gear's axial position × radius [mm] (seed Fig. 2.7).
 
 Segment results of the LTCA (``(roll, pair, segment)``) are drawn as short pieces of
 their contact line, each from halfway to its neighbour on one side to halfway on the
-other, coloured by the segment's value (one ``LineCollection`` per panel, not thousands
-of markers). Edge segments (``segment_kind`` not ``curve``) sit on the flank boundary;
+other, coloured by the segment's value (one ``LineCollection`` per panel whose paths are the
+pieces grouped by their colour map entry, not thousands of markers or paths). Edge
+segments (``segment_kind`` not ``curve``) sit on the flank boundary;
 they are drawn just outside it (gear tip, heel, toe) or beneath the flank's lines
 (pinion edge), in their own colour scale, so they never hide the flank's pattern.
 
