@@ -54,9 +54,11 @@ def _single(case, **misalignment) -> dict[str, np.ndarray]:
 def _assert_point_equals(ds: xr.Dataset, ref: dict[str, np.ndarray]) -> None:
     for name in SUMMARY_VARIABLES:
         if name in ds:
-            # bit-identical: the study runs the very same functions on the same inputs
-            np.testing.assert_array_equal(ds[name].values, ref[name].reshape(ds[name].shape),
-                                          err_msg=name)
+            # the study runs the very same functions on the same inputs: equal but for the
+            # order of floating-point sums (a process's tooth-model memo may hold models
+            # built in another batch by earlier work; measured ≤ 5e-15 relative), so 1e-12
+            np.testing.assert_allclose(ds[name].values, ref[name].reshape(ds[name].shape),
+                                       rtol=1e-12, atol=1e-12, err_msg=name)
 
 
 @pytest.fixture(scope="module")
@@ -66,7 +68,7 @@ def case():
 
 def test_sweep_on_a_local_cluster_equals_single_analyses(case):
     """A 3×3 ΔE×ΔP grid on a 2-worker LocalCluster equals run_analysis point by point,
-    bit for bit; the tooth models are built once per worker, not once per point."""
+    to 1e-12; the tooth models are built once per worker, not once per point."""
     distributed = pytest.importorskip("distributed")
     from contact.compliance.mesh import model_cache_info
 

@@ -100,7 +100,8 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     The analysis is exactly :func:`contact.run_analysis` of the case with the point's
     misalignment and scaled deviations (no ``/geometry``, no theoretical groups) and
     :func:`friction.efficiency.efficiency_analysis` of its ``/ltca`` at each speed, so a
-    study's numbers equal those of single analyses at the same inputs, bit for bit.
+    study's numbers equal those of single analyses at the same inputs (but for the order
+    of floating-point sums: ≈ 1e-15 relative).
     """
     from contact.pipeline import run_analysis
     from friction.efficiency import efficiency_analysis
