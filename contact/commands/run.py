@@ -289,6 +289,7 @@ def write_figures(path: Path, plots: str | None, report: str | None) -> None:
     from contact.io import read_netcdf
     from contact.plots import render_analysis
     from contact.plots.report import write_report
+    from geometry.atomic_files import atomic_path
 
     tree = read_netcdf(path, tree=True)
     figures = []
@@ -297,7 +298,8 @@ def write_figures(path: Path, plots: str | None, report: str | None) -> None:
     for rf in render_analysis(tree, workers=min(2, os.cpu_count() or 1)):
         if plots:
             target = Path(plots) / f"{rf.name}.png"
-            target.write_bytes(rf.png)
+            with atomic_path(target) as tmp:
+                tmp.write_bytes(rf.png)
             print(f"wrote {target}")
         if report:
             figures.append(rf)
