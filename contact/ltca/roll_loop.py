@@ -154,6 +154,7 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
         bar.close()
     results = an.results
     results.compliance_time[:] = an.pool.time
+    timing = {**timing, "compliance_asymmetry": an.pool.asymmetry}
     # the segment axis keeps the curve segments and the edge segments in some problem
     keep = (seg.kind == 0) | np.any(results.in_problem > 0, axis=(0, 1, 2))
     kept = dataclasses.replace(screening, separation=screening.separation[..., keep])
