@@ -102,6 +102,7 @@ from geometry.cutter import profile_sections
 from geometry.errors import InputError
 from geometry.flank import DEFAULT_GRID, blank_outline, flank_surface
 from geometry.meshing import solve_envelope
+from geometry.pitch_contact import check_pitch_contact
 from geometry.validation import one_of
 
 if TYPE_CHECKING:
@@ -625,7 +626,9 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     Raises
     ------
     InputError
-        For a bad flank name or grid, if the pinion never meets the surface of action, or
+        ``pair.offset`` inconsistent with the blanks
+        (:func:`geometry.pitch_contact.check_pitch_contact`). For a bad flank name or
+        grid, if the pinion never meets the surface of action, or
         no gear node can be touched by the pinion; for a misalignment that separates the
         flanks (fewer than :data:`MIN_VALID_NODES` grid nodes where the pinion meets the
         gear inside both blanks) the message names the misalignment and the range of it
@@ -640,6 +643,7 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     (§4.2). The seed's "radial distance" between grid points is read as the distance along
     the gear normal; the angular ease-off is exact (both points share (z, ρ)).
     """
+    check_pitch_contact(case)  # pair.offset consistent with the blanks
     try:
         eo = _ease_off(case, flank, misalignment, grid, pinion_phase, gear_phase)
         valid = int(np.count_nonzero(eo.valid))
