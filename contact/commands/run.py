@@ -265,6 +265,7 @@ def run(args: argparse.Namespace) -> int:
             f"{fr.attrs['inlet_temperature_degC']:g} C, Rq {fr.attrs['roughness_rq_um']:g} um, "
             f"friction model {fr.attrs['friction_model']}"
         )
+        print_extrapolation_warning(fr)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     if "theoretical" in tree.children:
         print(
@@ -278,6 +279,19 @@ def run(args: argparse.Namespace) -> int:
     print(f"wrote {path}")
     write_figures(path, args.plots, args.report)
     return 0
+
+
+def print_extrapolation_warning(friction) -> None:
+    """A WARNING line when the friction model ran outside its fitted range (flagged per
+    segment in ``/friction/friction_model_extrapolated``)."""
+    from friction.efficiency import extrapolated_segments
+
+    flagged, loaded = extrapolated_segments(friction)
+    if flagged:
+        print(f"WARNING: friction model {friction.attrs.get('friction_model', '')} "
+              f"extrapolated outside its fitted range at {flagged} of {loaded} loaded "
+              "segments (flag /friction/friction_model_extrapolated; marked on the plots): "
+              "the efficiency there is an extrapolation")
 
 
 def write_figures(path: Path, plots: str | None, report: str | None) -> None:
