@@ -7,8 +7,9 @@ entries run ``contact.cli.main`` in this process and must exit with code 2 (the
 documented code of a refused input, argparse's too) printing one error line and no
 traceback; the API entries must raise the toolkit's error family (``LTCAError``) with a
 one-line message. Refusals come before the work, so the whole corpus runs in seconds
-(the slow refusals — a torque beyond the tooth model, a misalignment that separates the
-flanks — are tested in test_refusals_with_ranges below on a coarse analysis).
+(the slow refusal of a misalignment that separates the flanks, which bisects for the
+working range, is test_refusals_with_ranges below; the torque refusal is checked by hand,
+see the branch report).
 """
 
 from __future__ import annotations
