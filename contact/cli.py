@@ -14,7 +14,9 @@ import logging
 import os
 import pkgutil
 import re
+import signal
 import sys
+import threading
 from collections.abc import Sequence
 from types import ModuleType
 
@@ -86,11 +88,35 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     dask.config.set({"logging.distributed": distributed_level})
     logging.getLogger("distributed").setLevel(distributed_level.upper())
+    main_thread = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGTERM, _terminate) if main_thread else None
     try:
         return int(args.func(args) or 0)
     except LTCAError as exc:
         print(f"ltca {args.command}: error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt as exc:
+        # Ctrl-C or SIGTERM: one line, no traceback; files being written were left as they
+        # were (geometry.atomic_files); the shell's code 128 + signal number
+        signum = exc.signum if isinstance(exc, Terminated) else signal.SIGINT
+        print(f"ltca {args.command}: interrupted ({signal.Signals(signum).name}); "
+              "files being written were left as they were", file=sys.stderr)
+        return 128 + int(signum)
+    finally:
+        if main_thread:
+            signal.signal(signal.SIGTERM, previous)
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM received: stop as Ctrl-C does (files under write keep their old content)."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(f"signal {signum}")
+        self.signum = signum
+
+
+def _terminate(signum: int, frame: object) -> None:
+    raise Terminated(signum)
 
 
 if __name__ == "__main__":  # pragma: no cover

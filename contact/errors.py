@@ -5,6 +5,8 @@ from __future__ import annotations
 from geometry.errors import InputError, LTCAError, ModelUnavailableError
 
 __all__ = [
+    "ASYMMETRY_LIMIT",
+    "AsymmetricComplianceError",
     "ContactError",
     "NotPositiveDefiniteError",
     "ProblemInputError",
@@ -30,3 +32,21 @@ class NotPositiveDefiniteError(ProblemInputError):
 
 class SolverNotFoundError(ContactError, ModelUnavailableError):
     """A solver name that is not registered or not installed here."""
+
+
+#: Largest relative asymmetry ‖C − Cᵀ‖_F / ‖C‖_F of a compliance matrix that is
+#: symmetrised, ½(C + Cᵀ), and used; above it the matrix is refused. By Maxwell–Betti
+#: reciprocity a compliance matrix is symmetric; the toolkit's own (C = YᵀY, shell Ritz
+#: model) is to round-off (≤ 1e-10, tests/test_compliance_tooth.py), and one read from
+#: finite-element influence coefficients at interpolated points is asymmetric by its
+#: discretisation error. Symmetrising changes C by at most its asymmetric part, so below
+#: 5 % the change stays under the accuracy of the compliance model itself (shell vs 3-D
+#: FE tip deflection 5.6–7.5 %, tests/test_compliance_shell.py); an asymmetry beyond that
+#: is no discretisation error but a modelling one (a transposed block, a sign error, loads
+#: and deflections read along different directions).
+ASYMMETRY_LIMIT = 0.05
+
+
+class AsymmetricComplianceError(ProblemInputError):
+    """A compliance matrix breaks Maxwell–Betti reciprocity by more than
+    :data:`ASYMMETRY_LIMIT` (relative Frobenius norm of C − Cᵀ)."""

@@ -21,7 +21,6 @@ import datetime as _dt
 import json
 import logging
 import os
-import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -30,6 +29,7 @@ import numpy as np
 import xarray as xr
 
 from geometry import __version__
+from geometry.atomic_files import atomic_path
 from geometry.conventions import data_var
 from geometry.errors import InputError, LTCAError
 from geometry.validation import integer
@@ -251,12 +251,6 @@ def without_stamps(written: xr.Dataset, original: xr.Dataset) -> xr.Dataset:
     return out
 
 
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
 def write_netcdf(
     obj: xr.Dataset | xr.DataTree,
     path: str | os.PathLike[str],
@@ -274,7 +268,8 @@ def write_netcdf(
     records ``inputs`` (e.g. the case as TOML text). Coordinates and variables without
     missing values carry no ``_FillValue``; numeric data variables are zlib-compressed
     (lossless). The file is written to a temporary file beside ``path`` which is renamed
-    onto ``path`` only once complete.
+    onto ``path`` only once complete; an interrupt (Ctrl-C, SIGTERM) during the write
+    leaves the old file and no temporary file (:func:`geometry.atomic_files.atomic_path`).
 
     Parameters
     ----------
@@ -317,14 +312,12 @@ def write_netcdf(
     else:
         out = _stamp(obj, inputs, created=created)
         encoding = _encoding(out, complevel)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
     try:
-        out.to_netcdf(tmp, engine=_ENGINE, encoding=encoding)
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp creates 0600; give the usual mode
-        os.replace(tmp, path)
+        # a temporary file renamed onto path once complete; Ctrl-C/SIGTERM held until the
+        # HDF5 library returns, then the old file kept (geometry.atomic_files)
+        with atomic_path(path) as tmp:
+            out.to_netcdf(tmp, engine=_ENGINE, encoding=encoding)
     except Exception as exc:
-        Path(tmp).unlink(missing_ok=True)
         raise NetCDFError(f"could not write {str(path)!r}: {exc}") from exc
     log.info("wrote %s", path)
     return path

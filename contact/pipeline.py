@@ -355,7 +355,9 @@ def efficiency_map(
     xarray.Dataset
         dims (``torque``, ``speed``, ``temperature``, ``roughness``): ``efficiency`` [1],
         ``power_loss`` [W] (means over the mesh cycles), ``friction_coefficient_mean``,
-        ``lambda_ratio_mean`` [1] (load-weighted means over the loaded segments).
+        ``lambda_ratio_mean`` [1] (load-weighted means over the loaded segments),
+        ``friction_model_extrapolated_share`` [1] (share of the loaded segments where the
+        friction model is extrapolated, flagged per segment by the efficiency stage).
 
     Raises
     ------
@@ -384,7 +386,7 @@ def efficiency_map(
                               tuple(float(x) for x in temperature),
                               tuple(float(x) for x in roughness))
     shape = (len(torque), len(speed), len(temperature), len(roughness))
-    eff, loss, mu_m, lam_m = (np.full(shape, np.nan) for _ in range(4))
+    eff, loss, mu_m, lam_m, extra = (np.full(shape, np.nan) for _ in range(5))
     bar = None
     if progress:
         from tqdm.auto import tqdm
@@ -395,6 +397,7 @@ def efficiency_map(
                              scheduler=scheduler, n_workers=n_workers):
         eff[it], loss[it] = res["efficiency"], res["power_loss"]
         mu_m[it], lam_m[it] = res["friction_coefficient_mean"], res["lambda_ratio_mean"]
+        extra[it] = res["extrapolated_share"]
         if bar is not None:
             bar.update()
     if bar is not None:
@@ -413,6 +416,12 @@ def efficiency_map(
                 dims4,
                 lam_m,
                 {"units": "1", "long_name": "load-weighted mean lambda ratio"},
+            ),
+            "friction_model_extrapolated_share": (
+                dims4,
+                extra,
+                {"units": "1", "long_name": "share of the loaded segments where the friction "
+                 "model is evaluated outside its fitted range"},
             ),
         },
         coords={

@@ -59,7 +59,7 @@ from geometry.conventions import binary_flag, data_var
 from geometry.errors import InputError
 from geometry.hertz import STEEL, contact_modulus
 
-__all__ = ["efficiency_analysis"]
+__all__ = ["efficiency_analysis", "extrapolated_segments"]
 
 log = logging.getLogger(__name__)
 
@@ -441,3 +441,36 @@ def _friction_dataset(
         "model_range_warnings": json.dumps(fric.range_warnings),
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def extrapolated_segments(friction: xr.Dataset, torque_index: int | None = None
+                          ) -> tuple[int, int]:
+    """How many loaded segments had the friction model evaluated outside its fitted range.
+
+    Parameters
+    ----------
+    friction : xarray.Dataset
+        The ``/friction`` dataset of :func:`efficiency_analysis`
+        (``friction_model_extrapolated`` and ``friction_coefficient`` over torque, roll,
+        pair, segment).
+    torque_index : int, optional
+        One torque; default all.
+
+    Returns
+    -------
+    (int, int)
+        Segments flagged, loaded segments (those with a friction coefficient); (0, 0)
+        for a dataset without the flag.
+
+    Notes
+    -----
+    The flag is set per segment by the friction models (FrictionModelRangeWarning,
+    :mod:`friction.validity`); this only counts it, for summaries and plots.
+    """
+    if "friction_model_extrapolated" not in friction or "friction_coefficient" not in friction:
+        return 0, 0
+    flag = friction["friction_model_extrapolated"]
+    loaded = friction["friction_coefficient"].notnull()
+    if torque_index is not None:
+        flag, loaded = flag.isel(torque=torque_index), loaded.isel(torque=torque_index)
+    return int((flag.values == 1).sum()), int(loaded.values.sum())

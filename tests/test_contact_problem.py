@@ -35,6 +35,35 @@ def test_valid_problem_records_symmetrisation():
     assert ContactProblem(C, s, R, T).asymmetry == 0.0
 
 
+def test_asymmetry_beyond_the_limit_is_refused():
+    """Off-diagonals of opposite sign (the issue-21 matrix): ‖C − Cᵀ‖/‖C‖ = 0.6√2/√2.18 =
+    0.575 breaks Maxwell–Betti reciprocity; refused, naming the field and the limit."""
+    from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
+
+    C = 1e-5 * np.array([[1.0, 0.3], [-0.3, 1.0]])
+    expected = 0.6 * np.sqrt(2) / np.sqrt(2.18)
+    with pytest.raises(AsymmetricComplianceError, match=r"compliance: .*0\.575.*0\.05"):
+        ContactProblem(C, [0.0, 0.0], [80.0, 80.0], 1e5)
+    assert expected == pytest.approx(0.575, abs=5e-4) and expected > ASYMMETRY_LIMIT
+    with pytest.raises(ProblemInputError):  # one family: caught as bad input
+        ContactProblem(C, [0.0, 0.0], [80.0, 80.0], 1e5)
+
+
+def test_asymmetry_below_the_limit_is_symmetrised_and_reported():
+    """Just under the limit the problem is built on ½(C + Cᵀ) and records the asymmetry
+    (relative Frobenius norm, computed here independently)."""
+    from contact.errors import ASYMMETRY_LIMIT
+
+    a = 0.02
+    C = 1e-5 * np.array([[1.0, 0.1 + a], [0.1 - a, 1.0]])
+    p = ContactProblem(C, [0.0, 0.0], [80.0, 80.0], 1e5)
+    expected = np.hypot(2 * a, 2 * a) / np.linalg.norm(C / 1e-5)
+    assert p.asymmetry == pytest.approx(expected, rel=1e-12)
+    assert p.asymmetry < ASYMMETRY_LIMIT
+    np.testing.assert_array_equal(p.compliance, p.compliance.T)
+    assert p.compliance[0, 1] == pytest.approx(1e-6, rel=1e-12)
+
+
 def test_problem_arrays_are_read_only():
     p = ContactProblem(*_good())
     with pytest.raises(ValueError):

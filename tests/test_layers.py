@@ -29,8 +29,10 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "geometry", "friction")
 
 #: geometry's modules that hold no gear: errors, validators, Hertz line contact, the
-#: dataset convention (the qp layer may use these and nothing else of geometry)
+#: dataset convention, atomic file writes (the qp layer may use these and nothing else of
+#: geometry)
 GEOMETRY_LOW = {"geometry.errors", "geometry.validation", "geometry.hertz",
+                "geometry.atomic_files",
                 "geometry.conventions"}
 
 #: contact's layers and what each may import (besides itself, contact.errors and,

@@ -113,6 +113,12 @@ def run(args: argparse.Namespace) -> int:
             print(tabulate(rows, headers=["T_p [N m]",
                                           *(f"{n:g} rpm" for n in emap["speed"].values)],
                            tablefmt="github"))
+    share = emap["friction_model_extrapolated_share"]
+    if float(share.max()) > 0:
+        print(f"WARNING: friction model {args.friction_model} extrapolated outside its fitted "
+              f"range at {100 * float(share.max()):.0f} % of the loaded segments at worst "
+              f"({int((share > 0).sum())} of {share.size} operating points; "
+              "friction_model_extrapolated_share): those efficiencies are extrapolations")
     path = write_netcdf(emap, Path(args.output), inputs=case.to_toml())
     print(f"wrote {path}")
     if args.plots:

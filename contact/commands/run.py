@@ -265,6 +265,7 @@ def run(args: argparse.Namespace) -> int:
             f"{fr.attrs['inlet_temperature_degC']:g} C, Rq {fr.attrs['roughness_rq_um']:g} um, "
             f"friction model {fr.attrs['friction_model']}"
         )
+        print_extrapolation_warning(fr)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     if "theoretical" in tree.children:
         print(
@@ -280,6 +281,19 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+def print_extrapolation_warning(friction) -> None:
+    """A WARNING line when the friction model ran outside its fitted range (flagged per
+    segment in ``/friction/friction_model_extrapolated``)."""
+    from friction.efficiency import extrapolated_segments
+
+    flagged, loaded = extrapolated_segments(friction)
+    if flagged:
+        print(f"WARNING: friction model {friction.attrs.get('friction_model', '')} "
+              f"extrapolated outside its fitted range at {flagged} of {loaded} loaded "
+              "segments (flag /friction/friction_model_extrapolated; marked on the plots): "
+              "the efficiency there is an extrapolation")
+
+
 def write_figures(path: Path, plots: str | None, report: str | None) -> None:
     """The PNGs (``--plots``) and the HTML report (``--report``) of the file just written,
     drawn from the file alone (what ``ltca plot`` and ``ltca report`` would draw), each
@@ -289,6 +303,7 @@ def write_figures(path: Path, plots: str | None, report: str | None) -> None:
     from contact.io import read_netcdf
     from contact.plots import render_analysis
     from contact.plots.report import write_report
+    from geometry.atomic_files import atomic_path
 
     tree = read_netcdf(path, tree=True)
     figures = []
@@ -297,7 +312,8 @@ def write_figures(path: Path, plots: str | None, report: str | None) -> None:
     for rf in render_analysis(tree, workers=min(2, os.cpu_count() or 1)):
         if plots:
             target = Path(plots) / f"{rf.name}.png"
-            target.write_bytes(rf.png)
+            with atomic_path(target) as tmp:
+                tmp.write_bytes(rf.png)
             print(f"wrote {target}")
         if report:
             figures.append(rf)

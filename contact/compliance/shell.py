@@ -47,6 +47,7 @@ import numpy as np
 from scipy import linalg
 
 from contact.compliance._basis import face_basis, height_basis
+from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
 from geometry.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.validation import integer, one_of, positive, real, real_array
 
@@ -1128,6 +1129,11 @@ def compliance_blocks(
         cmat = yb.T @ yb
         norm = float(np.linalg.norm(cmat))
         asym = float(np.linalg.norm(cmat - cmat.T) / norm) if norm > 0.0 else 0.0
+        if asym > ASYMMETRY_LIMIT:
+            raise AsymmetricComplianceError(
+                f"compliance: shell compliance asymmetry {asym:.3g} exceeds "
+                f"{ASYMMETRY_LIMIT:g} (Maxwell–Betti: the Ritz product is symmetric; the "
+                "shell model is ill-conditioned here)")
         if asym > 1e-8:
             log.warning("shell compliance asymmetry %.3g before symmetrisation", asym)
         cmat = 0.5 * (cmat + cmat.T)

@@ -56,7 +56,7 @@ def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
     results : RollResults
         The solutions (NT, J, K, S).
     timing : dict
-        ``easeoff`` and ``segments`` times [s].
+        ``easeoff`` and ``segments`` times [s]; ``compliance_asymmetry`` [1] (optional).
 
     Returns
     -------
@@ -272,6 +272,9 @@ def _attrs(setup: LTCASetup, timing: dict[str, float]) -> dict:
         "options": json_options(opts),
         "time_easeoff_s": timing["easeoff"],
         "time_segments_s": timing["segments"],
+        # largest relative asymmetry of the compliance blocks before symmetrisation (the
+        # limit: contact.errors.ASYMMETRY_LIMIT; Maxwell–Betti)
+        "compliance_asymmetry": float(timing.get("compliance_asymmetry", 0.0)),
         "misalignment": json_misalignment(case.misalignment),
         "ratio": float(eo.ratio),
         "edge_radius_pinion_mm": radii[0],

@@ -41,6 +41,9 @@ class CompliancePool:
     ----------
     time : ndarray (J,) — [s]
         Compliance assembly time per roll.
+    asymmetry : float — [1]
+        Largest relative asymmetry ‖C − Cᵀ‖_F/‖C‖_F of the shell blocks assembled (they
+        are symmetrised; above :data:`contact.errors.ASYMMETRY_LIMIT` they are refused).
     """
 
     def __init__(self, case, seg: Segments, options: LTCAOptions):
@@ -55,6 +58,7 @@ class CompliancePool:
         self._structural: dict[int, np.ndarray] = {}  # (P, P) [mm/N] without Weber
         self._depth: dict[int, np.ndarray] = {}  # (P, 2) [mm] Weber's depths
         self.time = np.zeros(seg.shape[0])
+        self.asymmetry = 0.0  # largest relative asymmetry of a shell block, symmetrised
 
     def mask(self, j: int) -> np.ndarray | None:
         """(K, S) the segments of roll j in the pool (None before it is assembled)."""
@@ -107,6 +111,7 @@ class CompliancePool:
             self._structural[j] = c_full - info["weber"]
             self._depth[j] = info["weber_depth"]
             self.time[j] += info["time"]
+            self.asymmetry = max(self.asymmetry, float(info["asymmetry"]))
 
     def restricted(self, j: int, selected: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The structural compliance (N, N) [mm/N] and Weber depths (N, 2) [mm] of the

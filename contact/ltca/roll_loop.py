@@ -29,10 +29,11 @@ from contact.ltca.dataset import ltca_dataset
 from contact.ltca.options import LTCASetup
 from contact.ltca.pool import CompliancePool
 from contact.ltca.results import RollResults
-from contact.ltca.screening import SCREEN_ROUNDS, Screening
+from contact.ltca.screening import SCREEN_ROUNDS, Screening, carried_torque
 from contact.ltca.segments import Segments
 from contact.ltca.weber import RollSelection, WeberSolution, even_share, weber_solve
 from contact.qp import ContactProblem
+from geometry.errors import InputError
 from geometry.hertz import contact_modulus
 
 __all__ = ["RollProblem", "solve_rolls"]
@@ -133,7 +134,7 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
     if opts.separation_limit is not None:
         an.pool.assemble([(j, screening.first_pool(j)) for j in computed])
     elif computed:
-        an.pool.assemble([(computed[0], screening.first_pool(computed[0]))])
+        _assemble_first_pool(an, computed[0])
     bar = None
     if progress:
         from tqdm.auto import tqdm
@@ -154,6 +155,7 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
         bar.close()
     results = an.results
     results.compliance_time[:] = an.pool.time
+    timing = {**timing, "compliance_asymmetry": an.pool.asymmetry}
     # the segment axis keeps the curve segments and the edge segments in some problem
     keep = (seg.kind == 0) | np.any(results.in_problem > 0, axis=(0, 1, 2))
     kept = dataclasses.replace(screening, separation=screening.separation[..., keep])
@@ -289,3 +291,43 @@ def _assemble_other_pools(an: _Analysis, j: int, others: list[int]) -> None:
         jobs.append((i, mask if mask.any() else screening.first_pool(i)))
     if jobs:
         an.pool.assemble(jobs)
+
+
+def _assemble_first_pool(an: _Analysis, j: int) -> None:
+    """The first computed roll's pool: the segments within the generous limit of the
+    largest torque (:func:`contact.ltca.screening.generous_limit`, 0.05 mm + 0.15 mm per
+    kN·m of gear torque, a bound of the loaded approach).
+
+    Raises
+    ------
+    InputError
+        ``torque``: the limit takes in segments of far tooth pairs that lie off their
+        mating tooth — the torque deflects the teeth beyond what the tooth model carries.
+        The message gives the largest pinion torque whose limit keeps every segment on its
+        mating tooth at this roll (found by bisection over the segments' separations;
+        :func:`contact.ltca.screening.carried_torque`).
+    """
+    screening = an.screening
+    try:
+        an.pool.assemble([(j, screening.first_pool(j))])
+        return
+    except InputError as exc:
+        torque = float(an.setup.torques.max())
+        seps = np.unique(screening.separation[j][screening.first_pool(j)])
+        lo, hi = -1, seps.size - 1  # seps[hi] fails; seps[lo] (if lo >= 0) maps
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            try:
+                an.pool.assemble([(j, screening.usable[j]
+                                   & (screening.separation[j] <= seps[mid]))])
+                lo = mid
+            except InputError:
+                hi = mid
+        ratio = float(an.setup.easeoff.ratio)
+        carried = carried_torque(float(seps[lo]), ratio) if lo >= 0 else 0.0
+        raise InputError(
+            f"torque: {torque:g} N m is beyond what the tooth model of this case carries: "
+            "the loaded approach it may reach takes in segments of far tooth pairs that lie "
+            f"off their mating tooth; this case carries pinion torques up to about "
+            f"{carried:.3g} N m (the approach bounded by 0.05 mm + 0.15 mm per kN m of gear "
+            "torque)") from exc

@@ -20,6 +20,7 @@ Public functions
 ----------------
 Screening        the separations of an analysis' segments and the selection rules
 generous_limit   a separation limit that holds every loaded segment, before any rotation
+carried_torque   the largest torque whose generous limit is a given separation
 """
 
 from __future__ import annotations
@@ -31,7 +32,8 @@ import numpy as np
 from contact.ltca.segments import Segments
 from geometry.errors import InputError
 
-__all__ = ["SCREEN_MARGIN", "SCREEN_PAD", "SCREEN_ROUNDS", "Screening", "generous_limit"]
+__all__ = ["SCREEN_MARGIN", "SCREEN_PAD", "SCREEN_ROUNDS", "Screening", "carried_torque",
+           "generous_limit"]
 
 #: segment screening (LTCAOptions.separation_limit None): a roll's problem takes the
 #: segments with s < margin · R Θ̂ + pad, Θ̂ the loaded rotation expected there; after the
@@ -60,6 +62,17 @@ def generous_limit(torque: float, ratio: float) -> float:
         it against the solution's R Θ and repeats with a wider one if it was too tight).
     """
     return 0.05 + 0.15 * torque * ratio / 1000.0
+
+
+def carried_torque(limit: float, ratio: float) -> float:
+    """The largest pinion torque [N·m] whose :func:`generous_limit` is ``limit`` [mm]: the
+    inverse of the bound, 0 below its 0.05 mm floor.
+
+    Used to say which torques a case carries: the LTCA takes in the segments up to the
+    generous limit, which must all lie on their mating teeth (:func:`contact.ltca.
+    roll_loop.solve_rolls` finds the largest such limit when a torque breaks it).
+    """
+    return max(0.0, (limit - 0.05) * 1000.0 / (0.15 * ratio))
 
 
 @dataclass(frozen=True, eq=False)

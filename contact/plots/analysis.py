@@ -53,6 +53,7 @@ from contact.plots.maps import (
     efficiency_speed_figure,
 )
 from contact.plots.style import DPI, png_bytes, save_png, torque_text
+from geometry.atomic_files import atomic_path
 from geometry.errors import InputError
 
 __all__ = [
@@ -297,7 +298,8 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
     d.mkdir(parents=True, exist_ok=True)
     out = []
     for rf in render_analysis(tree, workers):
-        (d / f"{rf.name}.png").write_bytes(rf.png)
+        with atomic_path(d / f"{rf.name}.png") as tmp:
+            tmp.write_bytes(rf.png)
         out.append(d / f"{rf.name}.png")
     return out
 

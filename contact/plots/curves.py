@@ -203,7 +203,8 @@ def efficiency_curve_figure(friction: xr.Dataset,
     Parameters
     ----------
     friction : xarray.Dataset
-        ``/friction`` (``efficiency`` (torque, roll) [1], ``mesh_cycle``).
+        ``/friction`` (``efficiency`` (torque, roll) [1], ``mesh_cycle``); roll positions
+        where ``friction_model_extrapolated`` is set are marked with a red cross.
     ltca : xarray.Dataset, optional
         ``/ltca``, for the case name and misalignment in the title.
 
@@ -215,11 +216,20 @@ def efficiency_curve_figure(friction: xr.Dataset,
     fig, grid, _ = panel_grid(1, 1, panel=(6.2, 2.4), panel_title_lines=0, left=0.8)
     ax = grid[0, 0]
     x = friction["mesh_cycle"].values
+    marked = False
     for i, tq in enumerate(friction["torque"].values):
         eff = 100 * friction["efficiency"].isel(torque=i).values
         mean = (100 * float(friction["efficiency_mean"].values[i])
                 if "efficiency_mean" in friction else float(np.nanmean(eff)))
         ax.plot(x, eff, "o-", ms=2.5, lw=1.1, label=f"{torque_text(tq)} (mean {mean:.2f} %)")
+        if "friction_model_extrapolated" in friction:
+            # roll positions where the friction model left its fitted range: marked
+            out = (friction["friction_model_extrapolated"].isel(torque=i) == 1).any(
+                ("pair", "segment")).values
+            if out.any():
+                ax.plot(x[out], eff[out], "x", color="crimson", ms=6, mew=1.2,
+                        label=None if marked else "friction model extrapolated")
+                marked = True
     ax.set_xlabel(MESH_CYCLES_LABEL)
     ax.set_ylabel("mechanical efficiency [%]")
     ax.grid(alpha=0.3)

@@ -32,7 +32,7 @@ import numpy as np
 import xarray as xr
 from matplotlib import colormaps
 from matplotlib.collections import LineCollection
-from matplotlib.colors import Normalize
+from matplotlib.colors import ListedColormap, Normalize
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.ticker import MaxNLocator
@@ -552,6 +552,16 @@ def friction_flank_figure(
     title(fig, f"{case_text(ltca)}\nsurface velocities, film and friction on the gear flank: "
           f"{op}")
     legend_below(fig, handles)
+    if "friction_model_extrapolated" in friction:
+        # the segments where the friction model left its fitted range: crossed, and said
+        flag = np.asarray(friction["friction_model_extrapolated"].isel(
+            torque=torque_index).values) == 1
+        if flag.any():
+            for ax in axes[:len(names)]:
+                _draw_segments(ax, ltca, np.where(flag & ~edge, 1.0, np.nan),
+                               Normalize(0.0, 1.0), ListedColormap(["crimson"]), lw=0.6)
+            fig.text(0.01, 0.005, f"red: friction model extrapolated ({int(flag.sum())} "
+                     "segments outside its fitted range)", fontsize=7, color="crimson")
     return fig
 
 

@@ -22,7 +22,6 @@ from __future__ import annotations
 import base64
 import json
 import os
-import tempfile
 import tomllib
 from collections import Counter
 from collections.abc import Iterable
@@ -36,6 +35,7 @@ import xarray as xr
 from contact.plots.analysis import RenderedFigure, analysis_figures, render_figures
 from contact.plots.style import misalignment_text
 from geometry import __version__
+from geometry.atomic_files import atomic_path
 from geometry.errors import InputError
 
 __all__ = ["SUMMARY_COLUMNS", "render_report", "report_context", "write_report"]
@@ -301,13 +301,6 @@ def write_report(tree: xr.DataTree, path: str | os.PathLike[str],
     if not target.parent.exists():
         raise InputError(f"path: directory {str(target.parent)!r} does not exist")
     html = render_report(tree, figures)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(html)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    with atomic_path(target, mode=0o644) as tmp:
+        tmp.write_text(html, encoding="utf-8")
     return target

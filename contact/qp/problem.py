@@ -25,6 +25,7 @@ a backend (:func:`contact_residuals`).
 from __future__ import annotations
 
 import dataclasses
+import logging
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -34,9 +35,16 @@ import numpy as np
 import scipy.linalg
 import scipy.linalg.lapack
 
-from contact.errors import NotPositiveDefiniteError, ProblemInputError
+from contact.errors import (
+    ASYMMETRY_LIMIT,
+    AsymmetricComplianceError,
+    NotPositiveDefiniteError,
+    ProblemInputError,
+)
 from geometry.errors import InputError
 from geometry.validation import positive, real_array
+
+log = logging.getLogger(__name__)
 
 __all__ = [
     "DEFAULT_TOLERANCE",
@@ -104,7 +112,8 @@ class ContactProblem:
         Total compliance C: deflection along the contact normal at segment i due to
         a unit force at segment j (pinion + gear bending/shear + contact + base).
         Symmetrised on construction, ½(C + Cᵀ); the relative asymmetry
-        ‖C − Cᵀ‖_F / ‖C‖_F is kept in :attr:`asymmetry`.
+        ‖C − Cᵀ‖_F / ‖C‖_F is kept in :attr:`asymmetry` and must not exceed
+        :data:`contact.errors.ASYMMETRY_LIMIT` (0.05; Maxwell–Betti reciprocity).
     separation : array_like, shape (N,) — [mm]
         Initial separations s (ease-off relative to the unloaded transmission error).
     moment_arm : array_like, shape (N,) — [mm]
@@ -118,6 +127,8 @@ class ContactProblem:
     ------
     ProblemInputError
         Wrong shapes, non-finite entries, no positive moment arm, T ≤ 0 or N = 0.
+    AsymmetricComplianceError
+        C's relative asymmetry exceeds :data:`contact.errors.ASYMMETRY_LIMIT`.
     NotPositiveDefiniteError
         C (after symmetrisation) is not positive definite: its Cholesky fails.
     """
@@ -152,6 +163,14 @@ class ContactProblem:
         if norm == 0:
             raise NotPositiveDefiniteError("compliance: is the zero matrix, not positive definite")
         asym = float(np.linalg.norm(C - C.T) / norm)
+        if asym > ASYMMETRY_LIMIT:
+            raise AsymmetricComplianceError(
+                f"compliance: relative asymmetry ‖C − Cᵀ‖/‖C‖ = {asym:.3g} exceeds "
+                f"{ASYMMETRY_LIMIT:g}; a compliance matrix is symmetric by Maxwell–Betti "
+                "reciprocity, so this is a modelling error (transposed block, sign, loads "
+                "and deflections along different directions), not round-off")
+        if asym > 0.0:
+            log.debug("compliance: relative asymmetry %.3g, symmetrised", asym)
         C = 0.5 * (C + C.T)
         try:
             np.linalg.cholesky(C)

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import json
 import os
-import tempfile
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -32,6 +31,7 @@ import numpy as np
 
 from contact.errors import ProblemInputError
 from contact.qp.problem import ContactProblem
+from geometry.atomic_files import atomic_path
 
 __all__ = [
     "MANIFEST",
@@ -54,14 +54,8 @@ _KEYS = ("compliance", "separation", "moment_arm", "torque")
 
 def _atomic_write(path: Path, write) -> None:
     """Write through a temporary file in the same directory, then rename over ``path``."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            write(fh)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    with atomic_path(path) as tmp, open(tmp, "wb") as fh:
+        write(fh)
 
 
 def write_problem(path: str | os.PathLike[str], problem: ContactProblem) -> Path:

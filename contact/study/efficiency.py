@@ -57,7 +57,8 @@ def efficiency_at_torque(shared: EfficiencyInputs, index: int,
     (int, dict of str to ndarray (n_speed, n_temperature, n_roughness))
         ``index`` and ``efficiency`` [1], ``power_loss`` [W] (means over the mesh
         cycles), ``friction_coefficient_mean``, ``lambda_ratio_mean`` [1] (load-weighted
-        over the loaded segments).
+        over the loaded segments), ``extrapolated_share`` [1] (share of the loaded
+        segments where the friction model is extrapolated).
 
     Raises
     ------
@@ -70,13 +71,14 @@ def efficiency_at_torque(shared: EfficiencyInputs, index: int,
     Seed §5.3: the static LTCA once, the efficiency stage (seed Eqs. 5.1–5.16) at every
     speed, temperature and roughness on its loads.
     """
-    from friction.efficiency import efficiency_analysis
+    from friction.efficiency import efficiency_analysis, extrapolated_segments
 
     lt = loaded_tca(shared.case, [float(torque)], options=shared.options)
     shape = (len(shared.speed), len(shared.temperature), len(shared.roughness))
     out = {k: np.full(shape, np.nan) for k in ("efficiency", "power_loss",
                                                "friction_coefficient_mean",
-                                               "lambda_ratio_mean")}
+                                               "lambda_ratio_mean",
+                                               "extrapolated_share")}
     F = lt["force"].fillna(0.0)
     dims = ("roll", "pair", "segment")
     for j, n in enumerate(shared.speed):
@@ -91,4 +93,6 @@ def efficiency_at_torque(shared: EfficiencyInputs, index: int,
                 ).values[0]
                 out["lambda_ratio_mean"][j, k, m] = (
                     (fr["lambda_ratio"].fillna(0) * F).sum(dims) / F.sum(dims)).values[0]
+                flagged, loaded = extrapolated_segments(fr)
+                out["extrapolated_share"][j, k, m] = flagged / loaded if loaded else 0.0
     return index, out

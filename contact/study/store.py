@@ -26,6 +26,7 @@ import numpy as np
 import xarray as xr
 
 from contact.io import read_netcdf, write_netcdf
+from geometry.atomic_files import atomic_path
 from geometry.errors import InputError
 
 __all__ = ["ResultStore"]
@@ -74,9 +75,8 @@ class ResultStore:
                     "choose another output file")
         else:
             self.parts.mkdir(parents=True, exist_ok=True)
-            tmp = path.with_name(f".{_MANIFEST}.tmp")
-            tmp.write_text(text, encoding="utf-8")
-            tmp.replace(path)
+            with atomic_path(path) as tmp:
+                tmp.write_text(text, encoding="utf-8")
 
     @staticmethod
     def parts_dir(output: str | Path) -> Path:

@@ -102,6 +102,7 @@ from geometry.cutter import profile_sections
 from geometry.errors import InputError
 from geometry.flank import DEFAULT_GRID, blank_outline, flank_surface
 from geometry.meshing import solve_envelope
+from geometry.pitch_contact import check_pitch_contact
 from geometry.validation import one_of
 
 if TYPE_CHECKING:
@@ -111,9 +112,12 @@ __all__ = [
     "EASEOFF_REASONS",
     "FLANK_ROLES",
     "MATING_FLANK",
+    "MIN_VALID_NODES",
+    "MISALIGNMENT_UNITS",
     "EaseOff",
     "ease_off",
     "fill_missing",
+    "misalignment_range",
     "normal_ease_off",
     "roll_angle_surface",
 ]
@@ -622,8 +626,14 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     Raises
     ------
     InputError
-        For a bad flank name or grid, if the pinion never meets the surface of action, or
-        no gear node can be touched by the pinion.
+        ``pair.offset`` inconsistent with the blanks
+        (:func:`geometry.pitch_contact.check_pitch_contact`). For a bad flank name or
+        grid, if the pinion never meets the surface of action, or
+        no gear node can be touched by the pinion; for a misalignment that separates the
+        flanks (fewer than :data:`MIN_VALID_NODES` grid nodes where the pinion meets the
+        gear inside both blanks) the message names the misalignment and the range of it
+        that works for the case (bisection on the ease-off with the other misalignments
+        as given, :func:`misalignment_range`).
 
     Notes
     -----
@@ -633,6 +643,104 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     (§4.2). The seed's "radial distance" between grid points is read as the distance along
     the gear normal; the angular ease-off is exact (both points share (z, ρ)).
     """
+    check_pitch_contact(case)  # pair.offset consistent with the blanks
+    try:
+        eo = _ease_off(case, flank, misalignment, grid, pinion_phase, gear_phase)
+        valid = int(np.count_nonzero(eo.valid))
+        why = f"{valid} valid ease-off nodes, at least {MIN_VALID_NODES} needed"
+    except InputError as exc:
+        eo, valid, why = None, 0, str(exc)
+    if valid >= MIN_VALID_NODES:
+        return eo
+    mis = case.misalignment if misalignment is None else misalignment
+    given = {k: getattr(mis, k) for k in MISALIGNMENT_UNITS if getattr(mis, k) != 0.0}
+    if not given:
+        if eo is None:
+            raise InputError(why)
+        raise InputError(f"case: the flanks meet at only {why} with no misalignment (check "
+                         "the pair offset, the mounting distances and the blanks)")
+    ranges = []
+    for name, value in given.items():
+        limit = misalignment_range(case, name, mis, flank=flank, grid=grid)
+        if limit is None:  # zero does not help: another misalignment is the cause
+            continue
+        unit = MISALIGNMENT_UNITS[name]
+        scale = math.degrees(1.0) if unit == "deg" else 1.0
+        ranges.append(f"{name} = {value * scale:g} {unit} is out of range, it works from 0 "
+                      f"to about {limit * scale:.3g} {unit}")
+    if not ranges:
+        ranges = ["no single one of " + ", ".join(given) + " is the cause: reduce them "
+                  "together"]
+    raise InputError(
+        "misalignment: separates the flanks (the pinion meets the gear inside both blanks "
+        f"at too few points: {why}); with the other misalignments as given, "
+        + "; ".join(ranges))
+
+
+#: fewest ease-off grid nodes where the pinion meets the gear inside both blanks for the
+#: contact to be analysed (the contouring of the fields needs them, contact.utca.fields)
+MIN_VALID_NODES = 16
+
+#: the misalignment fields and the units they are reported in (ΔΣ is held in rad)
+MISALIGNMENT_UNITS = {"delta_E": "mm", "delta_P": "mm", "delta_G": "mm", "delta_Sigma": "deg"}
+
+
+def misalignment_range(case: Case, name: str, misalignment: Misalignment, *,
+                       flank: str | None = None, grid: dict | None = None,
+                       rel_tol: float = 0.02) -> float | None:
+    """The largest value of one misalignment, in the direction of its given value, for which
+    the flanks still meet inside both blanks (at least :data:`MIN_VALID_NODES` valid
+    ease-off nodes), the other misalignments as given.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    name : {"delta_E", "delta_P", "delta_G", "delta_Sigma"}
+    misalignment : geometry.assembly.Misalignment
+        The misalignment whose ``name`` separates the flanks; [mm], ΔΣ [rad].
+    flank, grid
+        As :func:`ease_off`.
+    rel_tol : float — [1]
+        Bisection stops when the bracket is below this fraction of the bound (or 1 µm,
+        1 µrad).
+
+    Returns
+    -------
+    float or None
+        The bound [mm] (ΔΣ [rad]) with the sign of the given value; None if even zero
+        separates the flanks (the others are the cause).
+
+    Notes
+    -----
+    A bisection on :func:`ease_off` (≈ 0.3 s each, ~10 evaluations): the count of valid
+    nodes falls as the misalignment grows (the contact pattern leaves the blanks).
+    """
+    import dataclasses
+
+    def meets(x: float) -> bool:
+        m = dataclasses.replace(misalignment, **{name: x})
+        try:
+            eo = _ease_off(case, flank, m, grid, 0.0, 0.0)
+        except InputError:
+            return False
+        return int(np.count_nonzero(eo.valid)) >= MIN_VALID_NODES
+
+    value = float(getattr(misalignment, name))
+    if not meets(0.0):
+        return None
+    lo, hi = 0.0, value
+    while abs(hi - lo) > max(rel_tol * abs(lo), 1e-3 if name != "delta_Sigma" else 1e-6):
+        mid = 0.5 * (lo + hi)
+        if meets(mid):
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
+              grid: dict | None, pinion_phase: float, gear_phase: float) -> EaseOff:
+    """:func:`ease_off` without the check of the flanks meeting."""
     pf, gf = _flank_names(case, flank)
     g = _grid_options(grid)
     kin = mesh_kinematics(case, misalignment, pinion_phase=pinion_phase, gear_phase=gear_phase)
