@@ -42,9 +42,6 @@ def test_api_reference_builds(tmp_path):
         assert (out / "generated" / f"{pkg}.html").is_file()
 
 
-@pytest.mark.xfail(strict=True, reason="README.md's examples fail ruff today (an unused "
-                   "`import dataclasses` in the first, unsorted imports in two others); "
-                   "README.md is not this branch's to edit: fix them there and drop this mark")
 def test_readme_python_examples_pass_ruff(tmp_path):
     """Every ```python block of README.md, written to its own file, passes ``ruff check``
     with the project's configuration."""
