@@ -105,10 +105,14 @@ def render_figures(figures: Iterable[NamedFigure], dpi: int = DPI) -> Iterator[R
 
 
 def _group(tree: xr.DataTree, path: str) -> xr.Dataset | None:
+    """A group as a Dataset, with the root's misalignment attributes (stored once at the
+    root of an analysis file) for the figures' titles."""
     try:
-        return tree[path].to_dataset()
+        ds = tree[path].to_dataset()
     except KeyError:
         return None
+    root = {k: v for k, v in tree.attrs.items() if k.startswith("misalignment_")}
+    return ds.assign_attrs(root) if root else ds
 
 
 def _deviation_specs(tree: xr.DataTree, eo, ut, lt) -> Iterator[FigureSpec]:
