@@ -382,6 +382,7 @@ def efficiency_map(
     roughness=None,
     operating: OperatingConditions | None = None,
     misalignment: Misalignment | None = None,
+    flank: str | None = None,
     options: LTCAOptions | None = None,
     progress: bool = False,
     scheduler="synchronous",
@@ -409,8 +410,8 @@ def efficiency_map(
         The lubricant and friction model (and the default temperature and roughness);
         its pinion speed is replaced by the swept ones. Default the case's ``[operating]``
         table (:func:`operating_conditions`).
-    misalignment, options
-        As :func:`run_analysis` (default the case's misalignment).
+    misalignment, flank, options
+        As :func:`run_analysis` (default the case's misalignment, the drive flank).
     progress : bool
         tqdm progress bar over the torques (and, run in this process, over each
         torque's roll positions).
@@ -455,7 +456,8 @@ def efficiency_map(
     shared = EfficiencyInputs(c, options or LTCAOptions(), op,
                               tuple(float(x) for x in speed),
                               tuple(float(x) for x in temperature),
-                              tuple(float(x) for x in roughness))
+                              tuple(float(x) for x in roughness), flank=flank,
+                              progress=bool(progress) and scheduler == "synchronous")
     shape = (len(torque), len(speed), len(temperature), len(roughness))
     eff, loss, mu_m, lam_m = (np.full(shape, np.nan) for _ in range(4))
     bar = None

@@ -177,7 +177,8 @@ def misalignment_options(p: argparse.ArgumentParser, *, kind: str = "value",
         if extra is not None and opt not in extra:
             continue
         text = (extra or {}).get(opt) or f"{meaning} [{unit}] (default {default})"
-        kw = {"type": float} if kind == "value" else {"metavar": metavar}
+        kw = ({"type": float, "metavar": unit.upper()} if kind == "value"
+              else {"metavar": metavar})
         g.add_argument(f"--{opt}", default=None, help=text, **kw)
 
 

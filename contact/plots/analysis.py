@@ -371,7 +371,13 @@ def efficiency_map_figures(emap: xr.Dataset) -> Iterator[NamedFigure]:
                           efficiency_roughness_figure(emap))
 
 
-def plot_efficiency_map(emap: xr.Dataset, directory: str | os.PathLike[str]) -> list[Path]:
+def plot_efficiency_map(emap: xr.Dataset, directory: str | os.PathLike[str],
+                        progress: bool = False) -> list[Path]:
     """Write the figures of an efficiency map as PNGs into ``directory`` (created if
-    missing) and return the paths."""
-    return _write(efficiency_map_figures(emap), directory)
+    missing) and return the paths (``progress``: a tqdm bar over the figures)."""
+    figures = efficiency_map_figures(emap)
+    if progress:
+        from tqdm.auto import tqdm
+
+        figures = tqdm(figures, desc="figures", unit="figure", leave=False)
+    return _write(figures, directory)
