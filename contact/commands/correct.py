@@ -15,7 +15,12 @@ import os
 import tomllib
 from pathlib import Path
 
-from contact.commands.options import case_argument, flank_option, output_option
+from contact.commands.options import (
+    case_argument,
+    default_output,
+    flank_option,
+    output_option,
+)
 from contact.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
@@ -112,9 +117,9 @@ def run_correct(args: argparse.Namespace) -> int:
     from geometry.correction import corrected_case, corrective_settings
     from geometry.errors import InputError
 
-    case = resolve_case(args.case)
-    output = args.output or f"{case.name}_corrected.toml"
+    output = default_output(args, "_corrected.toml")
     check_output_file(output, create_parents=True)
+    case = resolve_case(args.case)
     if args.deviations is not None:
         files = [None if f == "-" else f for f in args.deviations]
     elif case.deviations is not None:

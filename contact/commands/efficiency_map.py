@@ -66,11 +66,11 @@ def run(args: argparse.Namespace) -> int:
     from contact.plots.style import misalignment_text
     from friction.operating import OperatingConditions
 
-    case = resolve_case(args.case)
-    output = default_output(args, case.name, "_efficiency_map.nc")
+    output = default_output(args, "_efficiency_map.nc")
     check_output_file(output)
     if args.plots:
         check_output_dir(args.plots)
+    case = resolve_case(args.case)
     op = OperatingConditions.from_point(
         case.operating, pinion_speed=case.operating.pinion_speed or None,
         lubricant=args.lubricant, friction_model=args.friction_model)

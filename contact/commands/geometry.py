@@ -62,9 +62,9 @@ def run_geometry(args: argparse.Namespace) -> int:
     from contact.io import write_netcdf
     from contact.pipeline import resolve_case
 
-    case = resolve_case(args.case)
-    output = default_output(args, case.name, "_geometry.nc")
+    output = default_output(args, "_geometry.nc")
     check_output_file(output)
+    case = resolve_case(args.case)
     tree = geometry_tree(case, args.nu, args.nv)
     path = write_netcdf(tree, Path(output), inputs=case.to_toml())
     for node in tree.subtree:

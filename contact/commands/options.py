@@ -41,6 +41,7 @@ __all__ = [
     "FLANK_CHOICES",
     "analysis_file_argument",
     "case_argument",
+    "case_stem",
     "default_output",
     "deprecated_alias",
     "flank_option",
@@ -265,9 +266,19 @@ def output_option(p: argparse.ArgumentParser, *, default: str, what: str = "netC
                    help=f"{what} to write (default {default})")
 
 
-def default_output(args: argparse.Namespace, case_name: str, suffix: str = ".nc") -> str:
-    """``-o`` if given, else the file named after the case: ``<case><suffix>``."""
-    return args.output if args.output else f"{case_name}{suffix}"
+def case_stem(case: str | None) -> str:
+    """The name a CASE argument's outputs are named after, known before the case is
+    loaded (so output paths are checked before any work): the bundled name, or the case
+    file's name without ``.toml``; None the default case's."""
+    from contact.pipeline import DEFAULT_CASE
+
+    return Path(DEFAULT_CASE if case is None else case).name.removesuffix(".toml")
+
+
+def default_output(args: argparse.Namespace, suffix: str = ".nc") -> str:
+    """``-o`` if given, else the file named after the case: ``<case><suffix>``
+    (:func:`case_stem` of ``args.case``)."""
+    return args.output if args.output else f"{case_stem(args.case)}{suffix}"
 
 
 def plots_option(p: argparse.ArgumentParser, default: str | None = None) -> None:

@@ -156,13 +156,13 @@ def run(args: argparse.Namespace) -> int:
     from contact.io import write_netcdf
     from contact.pipeline import operating_conditions, resolve_case, run_analysis
 
-    case = resolve_case(args.case)
-    output = default_output(args, case.name)
+    output = default_output(args)
     check_output_file(output)
     if args.plots:
         check_output_dir(args.plots)
     if args.report:
         check_output_file(args.report, option="--report")
+    case = resolve_case(args.case)
     mis = misalignment_from_args(args, case.misalignment)
     opts = ltca_options(args)
     devs = None  # the case's [deviations] table, if any

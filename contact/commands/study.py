@@ -17,6 +17,7 @@ import numpy as np
 
 from contact.commands.options import (
     case_argument,
+    default_output,
     flank_option,
     misalignment_options,
     output_option,
@@ -138,11 +139,11 @@ def _prepare(args: argparse.Namespace) -> tuple:
     from contact.ltca import LTCAOptions
     from contact.pipeline import resolve_case
 
-    case = resolve_case(args.case)
-    out = Path(args.output or f"{case.name}_{args.study}.nc")
+    out = Path(default_output(args, f"_{args.study}.nc"))
     check_output_file(out)
     if args.plots:
         check_output_dir(args.plots)
+    case = resolve_case(args.case)
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers: must be >= 1, got {args.workers}")
     kw = {}

@@ -93,9 +93,9 @@ def run_synthesize(args: argparse.Namespace) -> int:
     from geometry.synthesis import synthesize
 
     source = resolve_basic(args.basic)
-    basic = load_basic(source)
-    output = args.output or f"{basic.name}.toml"
+    output = args.output or f"{source.stem}.toml"
     check_output_file(output, create_parents=True)
+    basic = load_basic(source)
     case, report = synthesize(basic)
     shown = (f"cases/basic/{source.name}" if args.basic is None or not Path(args.basic).is_file()
              else Path(args.basic).as_posix())

@@ -56,11 +56,11 @@ def run_utca(args: argparse.Namespace) -> int:
     from contact.pipeline import MISALIGNMENT_REFERENCE, misalignment_attrs, resolve_case
     from contact.utca import unloaded_tca
 
-    case = resolve_case(args.case)
-    output = default_output(args, case.name, "_utca.nc")
+    output = default_output(args, "_utca.nc")
     check_output_file(output)
     if args.plots:
         check_output_dir(args.plots)
+    case = resolve_case(args.case)
     mis = misalignment_from_args(args, case.misalignment)
     easeoff, utca = unloaded_tca(case, misalignment=mis, flank=args.flank,
                                  n_roll=args.rolls_per_cycle,

@@ -69,11 +69,11 @@ def run(args: argparse.Namespace) -> int:
     from contact.pipeline import resolve_case
     from contact.wear import final_deviations, simulate_wear
 
-    case = resolve_case(args.case)
-    output = default_output(args, case.name, "_wear.nc")
+    output = default_output(args, "_wear.nc")
     check_output_file(output)
     if args.deviations_out:
         check_output_file(args.deviations_out, option="--deviations-out")
+    case = resolve_case(args.case)
     case = dataclasses.replace(case, misalignment=misalignment_from_args(args,
                                                                          case.misalignment))
     torque = WEAR_TORQUE if args.torque is None else args.torque
