@@ -23,7 +23,7 @@ from pathlib import Path
 
 import pytest
 
-from contact.cli import build_parser, main
+from contact.cli import attach_negative_values, build_parser, main
 
 README = Path(__file__).resolve().parent.parent / "README.md"
 
@@ -77,7 +77,7 @@ def test_every_command_is_reduced_and_parses():
     parser = build_parser()
     for argv in COMMANDS:
         assert argv[0] in REDUCED, f"no reduced resolution for `ltca {argv[0]}`"
-        args = parser.parse_args([*argv, *REDUCED[argv[0]]])
+        args = parser.parse_args(attach_negative_values([*argv, *REDUCED[argv[0]]]))
         assert args.command == argv[0]
 
 
