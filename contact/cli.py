@@ -20,15 +20,16 @@ import threading
 from collections.abc import Sequence
 from types import ModuleType
 
+from contact.commands.options import verbosity_options
 from geometry import __version__
 from geometry.errors import LTCAError
 
 log = logging.getLogger("ltca")
 
 
-
 def command_modules() -> list[ModuleType]:
-    """Every module of :mod:`contact.commands`, sorted by its ``ORDER``."""
+    """Every command module of :mod:`contact.commands` (those with a ``register``; the
+    shared options of :mod:`contact.commands.options` are none), sorted by its ``ORDER``."""
     import contact.commands as pkg
 
     mods = [
@@ -36,6 +37,7 @@ def command_modules() -> list[ModuleType]:
         for info in pkgutil.iter_modules(pkg.__path__)
         if not info.name.startswith("_")
     ]
+    mods = [m for m in mods if hasattr(m, "register")]
     return sorted(mods, key=lambda m: (getattr(m, "ORDER", 100), m.__name__))
 
 
@@ -46,12 +48,12 @@ def build_parser() -> argparse.ArgumentParser:
         description="Loaded tooth contact analysis of hypoid and spiral bevel gears.",
     )
     parser.add_argument("--version", action="version", version=f"hypoid-ltca {__version__}")
-    parser.add_argument(
-        "-v", "--verbose", action="count", default=0, help="more log output (-v info, -vv debug)"
-    )
+    verbosity_options(parser, top=True)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for module in command_modules():
         module.register(sub)
+    for command in sub.choices.values():  # -v/-q also after the command
+        verbosity_options(command)
     return parser
 
 
@@ -77,7 +79,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
     args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv))
-    level = [logging.WARNING, logging.INFO, logging.DEBUG][min(args.verbose, 2)]
+    args.verbose = args.verbose + getattr(args, "verbose_sub", 0)
+    args.quiet = args.quiet or getattr(args, "quiet_sub", False)
+    if args.quiet and args.verbose:
+        parser.error("-q/--quiet and -v/--verbose exclude each other")
+    if hasattr(args, "no_progress") and (args.quiet or not sys.stderr.isatty()):
+        args.no_progress = True  # progress bars only on a terminal, and not with -q
+    level = ([logging.WARNING, logging.INFO, logging.DEBUG][min(args.verbose, 2)]
+             if not args.quiet else logging.ERROR)
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
     # Dask's scheduler and workers log every start and stop at INFO: only with -vv.
     # distributed sets its loggers' levels from dask's config when it is imported (in

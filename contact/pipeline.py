@@ -30,7 +30,7 @@ from contact.utca.easeoff import ease_off
 from friction.operating import OperatingConditions
 from geometry import __version__
 from geometry.assembly import Misalignment
-from geometry.case import Case, load_case
+from geometry.case import OPERATING_DEFAULTS, Case, load_case
 from geometry.errors import InputError
 from geometry.flank import geometry_datasets
 
@@ -38,10 +38,13 @@ __all__ = [
     "DEFAULT_CASE",
     "EFFICIENCY_MAP_SPEEDS",
     "EFFICIENCY_MAP_TORQUES",
+    "MISALIGNMENT_ATTRS",
     "SEED_TABLE_3_1",
     "bundled_case_path",
     "bundled_cases",
     "efficiency_map",
+    "misalignment_attrs",
+    "operating_conditions",
     "resolve_case",
     "resolve_deviations",
     "run_analysis",
@@ -60,10 +63,20 @@ DEFAULT_CASE = "kolivand2009_fm_11x41.toml"
 #: described there — (−0.08, +0.05) towards toe and root, (−0.26, +0.13) towards the heel
 #: (tests/test_ltca_seed.py) — and for which its Fig. 2.11 shifts (ΔE 0.08 → toe, ΔE 0.15 →
 #: heel) need opposite signs of ΔE, as they do.
+#:
+#: These are the ``[operating]`` table of the default case (``cases/kolivand2009_fm_11x41
+#: .toml``, from its basic file), so ``ltca run``, ``ltca run kolivand2009_fm_11x41`` and
+#: ``run_analysis()`` all run them; pass ``misalignment=Misalignment()`` for the aligned pair.
 SEED_TABLE_3_1 = {
     "torque": (50.0, 250.0, 500.0),
     "misalignment": Misalignment(delta_E=-0.15, delta_P=0.12),
 }
+
+#: root attributes of an analysis file holding its misalignment, once (units in the names;
+#: the groups' ``misalignment`` attribute refers to them)
+MISALIGNMENT_ATTRS = tuple(f"misalignment_{k}" for k in Misalignment().labelled())
+#: what the groups of an analysis tree say instead of repeating the misalignment
+MISALIGNMENT_REFERENCE = "see the root group's attributes " + ", ".join(MISALIGNMENT_ATTRS)
 
 #: The default grid of :func:`efficiency_map` (and ``ltca efficiency-map``): pinion
 #: torques [N·m] and pinion speeds [rpm] (the toolkit's choice: light to full load, low
@@ -73,8 +86,12 @@ EFFICIENCY_MAP_SPEEDS = (500.0, 1000.0, 1500.0, 2500.0, 4000.0)
 
 
 def _cases_root():
-    """The bundled cases: package data ``contact.cases`` once installed; in a source tree
-    (no install, e.g. ``python -m pytest`` from a clone) the repository's ``cases/``."""
+    """The bundled cases: in a source tree (``python -m pytest`` or ``python -m contact``
+    from a clone or a git worktree, installed editable or not) the repository's
+    ``cases/`` beside this package; else the installed package data ``contact.cases``."""
+    source = Path(__file__).resolve().parents[1]
+    if (source / "pyproject.toml").is_file() and (source / "cases" / "__init__.py").is_file():
+        return source / "cases"
     try:
         return resources.files("contact.cases")
     except ModuleNotFoundError:
@@ -151,6 +168,47 @@ def resolve_deviations(c: Case, deviations) -> tuple | None:
     return None if all(d is None for d in out) else out
 
 
+def misalignment_attrs(misalignment: Misalignment) -> dict[str, float]:
+    """The root attributes that hold a file's misalignment, once: ``misalignment_delta_E_mm``,
+    ``…_delta_P_mm``, ``…_delta_G_mm`` [mm] and ``…_delta_Sigma_deg`` [deg]
+    (:meth:`geometry.assembly.Misalignment.labelled`)."""
+    return {f"misalignment_{k}": v for k, v in misalignment.labelled().items()}
+
+
+def operating_conditions(case: Case, **override) -> OperatingConditions | None:
+    """The efficiency stage's conditions of a case: its ``[operating]`` table
+    (``Case.operating``), fields of ``override`` (not None) replacing its values.
+
+    Returns
+    -------
+    friction.operating.OperatingConditions or None
+        None where the pinion speed (the case's or the override) is 0: no efficiency stage.
+
+    Raises
+    ------
+    InputError, ModelUnavailableError
+        An unknown lubricant or friction model, a value out of range (named).
+    """
+    speed = override.get("pinion_speed")
+    speed = case.operating.pinion_speed if speed is None else speed
+    if speed == 0:
+        return None
+    return OperatingConditions.from_point(case.operating, **{**override, "pinion_speed": speed})
+
+
+def _point_as_run(c: Case, torques, operating: OperatingConditions | None):
+    """The case's OperatingPoint with the torques and efficiency conditions actually run."""
+    t = [torques] if np.ndim(torques) == 0 else list(torques)
+    kw = {"torque": tuple(float(x) for x in t)}
+    if operating is None:
+        kw["pinion_speed"] = 0.0
+    else:
+        kw.update(pinion_speed=operating.pinion_speed, lubricant=os.fspath(operating.lubricant),
+                  temperature=operating.temperature, roughness=operating.roughness,
+                  friction_model=operating.friction_model)
+    return dataclasses.replace(c.operating, **kw)
+
+
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
     torque=None,
@@ -158,7 +216,7 @@ def run_analysis(
     misalignment: Misalignment | None = None,
     flank: str | None = None,
     options: LTCAOptions | None = None,
-    operating: OperatingConditions | None = None,
+    operating: OperatingConditions | bool | None = None,
     deviations: tuple | bool | None = None,
     geometry: bool = True,
     progress: bool = False,
@@ -169,21 +227,24 @@ def run_analysis(
     Parameters
     ----------
     case : Case, path, bundled name, or None
-        None runs the bundled default case (:data:`DEFAULT_CASE`).
+        None runs the bundled default case (:data:`DEFAULT_CASE`, whose ``[operating]``
+        table holds the seed's Table 3.1 conditions, :data:`SEED_TABLE_3_1`).
     torque : float or sequence — [N·m], optional
-        Pinion torques; default the seed's Table 3.1 values (50, 250, 500).
+        Pinion torques; default the case's ``[operating]`` torques
+        (``Case.operating.torque``; 50, 250, 500 where the table gives none).
     misalignment : geometry.assembly.Misalignment, optional
-        Default: the case's own ``[misalignment]``.
+        Default: the case's own (its ``[operating]`` ΔE, ΔP, ΔG, ΔΣ; ``Case.misalignment``).
     flank : str, optional
         ``"drive"`` (default) or ``"coast"``.
     options : contact.ltca.LTCAOptions, optional
         LTCA settings, the solver among them (``LTCAOptions.solver``, default our exact
         ``active_set``); default ``LTCAOptions()``.
-    operating : friction.operating.OperatingConditions, optional
-        With operating conditions (pinion speed [rpm], lubricant, oil inlet temperature
-        [degC], roughness Rq [µm], friction model) the efficiency stage runs too
-        (``/friction``, :func:`friction.efficiency.efficiency_analysis`); None (default)
-        runs no efficiency stage. ``OperatingConditions()`` gives the toolkit's defaults.
+    operating : friction.operating.OperatingConditions, False or None
+        The conditions of the efficiency stage (pinion speed [rpm], lubricant, oil inlet
+        temperature [degC], roughness Rq [µm], friction model; ``/friction``,
+        :func:`friction.efficiency.efficiency_analysis`). None (default): the case's
+        ``[operating]`` table (:func:`operating_conditions`; no efficiency stage where its
+        ``pinion_speed`` is 0); False: no efficiency stage.
     deviations : (pinion, gear), False or None
         Measured or wear deviations of the (pinion, gear) flanks in contact
         (:mod:`contact.utca.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a
@@ -206,8 +267,10 @@ def run_analysis(
     -------
     xarray.DataTree
         Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca`` (and ``/friction`` with
-        operating conditions); root attributes
-        ``case``, ``inputs`` (the case as TOML), per-stage times ``time_*_s``.
+        operating conditions); root attributes ``case``, ``inputs`` (the case as TOML, its
+        ``[operating]`` table as run), the misalignment once (:data:`MISALIGNMENT_ATTRS`:
+        ``misalignment_delta_E_mm`` … ``misalignment_delta_Sigma_deg``; the groups'
+        ``misalignment`` attribute refers to them), per-stage times ``time_*_s``.
 
     Raises
     ------
@@ -223,11 +286,17 @@ def run_analysis(
     c = resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
-    torques = SEED_TABLE_3_1["torque"] if torque is None else torque
+    torques = c.operating.torque if torque is None else torque
     opts = options or LTCAOptions()
-    if operating is not None and not isinstance(operating, OperatingConditions):
-        raise InputError("operating: must be a friction.operating.OperatingConditions or "
-                         f"None, got {type(operating).__name__}")
+    if operating is None:
+        operating = operating_conditions(c)
+    elif operating is False:
+        operating = None
+    elif not isinstance(operating, OperatingConditions):
+        raise InputError("operating: must be a friction.operating.OperatingConditions, False "
+                         f"or None, got {operating!r}")
+    # the case as run: its [operating] table (in the file's ``inputs``) records what ran
+    c = dataclasses.replace(c, operating=_point_as_run(c, torques, operating))
     times: dict[str, float] = {}
     tree: dict[str, xr.Dataset] = {}
     t0 = time.perf_counter()
@@ -282,7 +351,9 @@ def run_analysis(
         t0 = time.perf_counter()
         tree["/friction"] = efficiency_analysis(ltca_ds, operating)
         times["friction"] = time.perf_counter() - t0
-    mis = c.misalignment
+    for path, ds in tree.items():
+        if "misalignment" in ds.attrs:  # stored once, at the root
+            tree[path] = ds.assign_attrs(misalignment=MISALIGNMENT_REFERENCE)
     root = xr.Dataset(
         attrs={
             "title": f"hypoid-ltca analysis of {c.name}",
@@ -290,10 +361,7 @@ def run_analysis(
             "case_source": c.source,
             "toolkit_version": __version__,
             "solver": opts.solver,
-            "misalignment_dE_mm": float(mis.delta_E),
-            "misalignment_dP_mm": float(mis.delta_P),
-            "misalignment_dG_mm": float(mis.delta_G),
-            "misalignment_dSigma_rad": float(mis.delta_Sigma),
+            **misalignment_attrs(c.misalignment),
             **{f"time_{k}_s": v for k, v in times.items()},
         }
     )
@@ -314,6 +382,7 @@ def efficiency_map(
     roughness=None,
     operating: OperatingConditions | None = None,
     misalignment: Misalignment | None = None,
+    flank: str | None = None,
     options: LTCAOptions | None = None,
     progress: bool = False,
     scheduler="synchronous",
@@ -339,12 +408,13 @@ def efficiency_map(
         RMS roughness Rq of each surface; default the one of ``operating``.
     operating : friction.operating.OperatingConditions, optional
         The lubricant and friction model (and the default temperature and roughness);
-        its pinion speed is replaced by the swept ones. Default
-        ``OperatingConditions()``.
-    misalignment, options
-        As :func:`run_analysis`.
+        its pinion speed is replaced by the swept ones. Default the case's ``[operating]``
+        table (:func:`operating_conditions`).
+    misalignment, flank, options
+        As :func:`run_analysis` (default the case's misalignment, the drive flank).
     progress : bool
-        tqdm progress bar over the torques.
+        tqdm progress bar over the torques (and, run in this process, over each
+        torque's roll positions).
     scheduler, n_workers
         Where the torques run (:func:`contact.study.engine.open_client`): default
         ``"synchronous"`` (this process, one after the other); None a LocalCluster of
@@ -373,18 +443,23 @@ def efficiency_map(
     from contact.study.efficiency import EfficiencyInputs, efficiency_at_torque
     from contact.study.engine import run_tasks
 
-    op = OperatingConditions() if operating is None else operating
+    c = resolve_case(case)
+    if misalignment is not None:
+        c = dataclasses.replace(c, misalignment=misalignment)
+    if operating is None:  # the case's conditions; the speeds are swept
+        operating = OperatingConditions.from_point(
+            c.operating, pinion_speed=c.operating.pinion_speed or OPERATING_DEFAULTS[
+                "pinion_speed"])
+    op = operating
     torque = EFFICIENCY_MAP_TORQUES if torque is None else torque
     speed = EFFICIENCY_MAP_SPEEDS if speed is None else speed
     temperature = (op.temperature,) if temperature is None else temperature
     roughness = (op.roughness,) if roughness is None else roughness
-    c = resolve_case(case)
-    if misalignment is not None:
-        c = dataclasses.replace(c, misalignment=misalignment)
     shared = EfficiencyInputs(c, options or LTCAOptions(), op,
                               tuple(float(x) for x in speed),
                               tuple(float(x) for x in temperature),
-                              tuple(float(x) for x in roughness))
+                              tuple(float(x) for x in roughness), flank=flank,
+                              progress=bool(progress) and scheduler == "synchronous")
     shape = (len(torque), len(speed), len(temperature), len(roughness))
     eff, loss, mu_m, lam_m, extra = (np.full(shape, np.nan) for _ in range(5))
     bar = None
@@ -449,6 +524,7 @@ def efficiency_map(
         attrs={
             "title": "mechanical efficiency map",
             "case": c.name,
+            **misalignment_attrs(c.misalignment),
             "lubricant": str(op.lubricant),
             "friction_model": op.friction_model,
             "toolkit_version": __version__,

@@ -25,6 +25,7 @@ from pathlib import Path
 
 from friction.coefficient import get_friction_model
 from friction.lubricant import available_lubricants
+from geometry.case import OPERATING_DEFAULTS, OperatingPoint
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.validation import positive, real
 
@@ -79,11 +80,28 @@ class OperatingConditions:
     Maddock, J. Mech. Des. 129 (2007) 58–68 for the friction model.
     """
 
-    pinion_speed: float = 1500.0
-    lubricant: str | os.PathLike[str] = "75W90"
-    temperature: float = 90.0
-    roughness: float = 0.8
-    friction_model: str = "xu2007"
+    pinion_speed: float = OPERATING_DEFAULTS["pinion_speed"]
+    lubricant: str | os.PathLike[str] = OPERATING_DEFAULTS["lubricant"]
+    temperature: float = OPERATING_DEFAULTS["temperature"]
+    roughness: float = OPERATING_DEFAULTS["roughness"]
+    friction_model: str = OPERATING_DEFAULTS["friction_model"]
+
+    @classmethod
+    def from_point(cls, point: OperatingPoint, **override) -> OperatingConditions:
+        """The conditions of a case's operating point (:attr:`geometry.case.Case.operating`,
+        its ``[operating]`` table), fields of ``override`` replacing its values.
+
+        Raises
+        ------
+        InputError, ModelUnavailableError
+            As the constructor (a pinion speed of 0, which a case uses to say "no
+            efficiency stage", is refused here).
+        """
+        kw = {"pinion_speed": point.pinion_speed, "lubricant": point.lubricant,
+              "temperature": point.temperature, "roughness": point.roughness,
+              "friction_model": point.friction_model}
+        kw.update({k: v for k, v in override.items() if v is not None})
+        return cls(**kw)
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__

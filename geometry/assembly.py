@@ -94,6 +94,20 @@ class Misalignment:
             raise InputError(
                 f"delta_Sigma: must be in (-10, 10) deg, got {math.degrees(self.delta_Sigma):.6g}")
 
+    def labelled(self) -> dict[str, float]:
+        """The misalignment as stored in files and printed: names that carry their units.
+
+        Returns
+        -------
+        dict
+            ``delta_E_mm``, ``delta_P_mm``, ``delta_G_mm`` [mm] and ``delta_Sigma_deg``
+            [deg] (degrees at every boundary: case files, the command line, result files;
+            radians only inside, in this dataclass).
+        """
+        return {"delta_E_mm": float(self.delta_E), "delta_P_mm": float(self.delta_P),
+                "delta_G_mm": float(self.delta_G),
+                "delta_Sigma_deg": math.degrees(float(self.delta_Sigma))}
+
 
 def _rot_z(phi) -> np.ndarray:
     phi = np.asarray(phi, dtype=float)

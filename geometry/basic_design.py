@@ -35,6 +35,7 @@ from typing import Any
 from scipy.optimize import least_squares
 
 from geometry.blank import BlankGeometry, blank_geometry
+from geometry.case import operating_from_dict
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.pitch_cone import BevelGearDesign
 from geometry.validation import real
@@ -194,6 +195,10 @@ class BasicDesign:
     options : SynthesisOptions
     comments : dict
         Free-text notes kept from the file's ``[notes]`` table (copied into the case source).
+    operating : dict
+        The file's ``[operating]`` table (the case's operating point: torques,
+        misalignment, speed, oil; schema of :func:`geometry.case.operating_from_dict`),
+        copied into the synthesised case; empty for the toolkit's defaults.
     """
 
     name: str
@@ -203,6 +208,7 @@ class BasicDesign:
     adjust: tuple[str, ...]
     options: SynthesisOptions
     comments: Mapping[str, str] = field(default_factory=dict)
+    operating: Mapping[str, Any] = field(default_factory=dict)
 
     def blank(self) -> BlankGeometry:
         """ISO 23509 blank geometry of the design (pitch cone and both members)."""
@@ -283,7 +289,7 @@ def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
 _OPTION_FIELDS = {"drive_flank", "gear_process", "pinion_process", "cutter_radius",
                   "blade_angle_drive", "blade_angle_coast", "point_width", "edge_radius"}
 _FLANK_FIELDS = {f.name for f in fields(FlankOptions)}
-_TOP = {"name", "source", "design", "targets", "synthesis", "notes"}
+_TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating"}
 
 
 def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -> FlankOptions:
@@ -391,9 +397,11 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
     notes = raw.get("notes", {})
     if not isinstance(notes, Mapping) or not all(isinstance(v, str) for v in notes.values()):
         raise InputError(f"notes: must be a table of strings, got {notes!r}")
+    operating_from_dict(raw)  # the [operating] table validated here (operating.<field>)
+    operating = dict(raw.get("operating", {}))
     return BasicDesign(name=raw["name"], source=raw["source"], design=design,
                        targets=targets, adjust=tuple(adjust), options=options,
-                       comments=dict(notes))
+                       comments=dict(notes), operating=operating)
 
 
 def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign:

@@ -17,6 +17,7 @@ toolkit (:meth:`Case.to_toml`) are always in our convention and carry no ``conve
 Public functions
 ----------------
 Blank, FlankTool, Member, Pair, Case     frozen dataclasses
+OperatingPoint                            the ``[operating]`` table: torques, speed, oil
 DeviationFiles                            the optional ``[deviations]`` table (resolved paths)
 load_case                                 read and validate a TOML case file
 case_from_dict                            the same from an already parsed mapping
@@ -51,11 +52,13 @@ from geometry.validation import integer, positive, real
 __all__ = [
     "FLANKS",
     "METHODS",
+    "OPERATING_DEFAULTS",
     "Blank",
     "Case",
     "DeviationFiles",
     "FlankTool",
     "Member",
+    "OperatingPoint",
     "Pair",
     "case_from_dict",
     "load_case",
@@ -73,6 +76,88 @@ _DEG = math.pi / 180.0
 
 def _fmt(x: float) -> str:
     return f"{x:.6g}"
+
+
+#: The toolkit's operating point where a case's ``[operating]`` table gives none (one
+#: place: :class:`friction.operating.OperatingConditions` takes its defaults from here):
+#: the seed's Table 3.1 torques [N·m], pinion speed [rpm], the seed's Table 5.2 oil, oil
+#: inlet temperature [degC], RMS roughness Rq [µm], friction coefficient model.
+OPERATING_DEFAULTS: Mapping[str, Any] = MappingProxyType({
+    "torque": (50.0, 250.0, 500.0),
+    "pinion_speed": 1500.0,
+    "lubricant": "75W90",
+    "temperature": 90.0,
+    "roughness": 0.8,
+    "friction_model": "xu2007",
+})
+#: absolute zero [degC]: the one physical bound of an oil temperature
+_ABSOLUTE_ZERO_C = -273.15
+
+
+@dataclass(frozen=True)
+class OperatingPoint:
+    """The operating point of a case (its ``[operating]`` table; the misalignment, the
+    fourth part of it, is :attr:`Case.misalignment`).
+
+    Every entry point (``ltca`` commands, :func:`contact.pipeline.run_analysis`,
+    :func:`contact.pipeline.efficiency_map`, the studies' base point) uses these values
+    unless the caller overrides them.
+
+    Parameters
+    ----------
+    torque : tuple of float — [N·m]
+        Pinion torques of the analysis, each finite and > 0 (at least one). Default the
+        seed's Table 3.1 torques 50, 250, 500.
+    pinion_speed : float — [rpm]
+        Pinion speed of the efficiency stage, finite and >= 0; 0 runs no efficiency stage.
+        Default 1500.
+    lubricant : str
+        Bundled oil name or the path of an oil TOML file (checked where the efficiency
+        stage runs, :class:`friction.operating.OperatingConditions`). Default ``"75W90"``.
+    temperature : float — [degC]
+        Oil inlet temperature, finite and above absolute zero. Default 90.
+    roughness : float — [µm]
+        RMS roughness Rq of each flank, finite and > 0. Default 0.8.
+    friction_model : str
+        Friction coefficient model name (checked where the efficiency stage runs).
+        Default ``"xu2007"``.
+
+    Raises
+    ------
+    InputError
+        A field of the wrong type or out of its range (``<field>: must be … got …``).
+
+    Notes
+    -----
+    Defaults: :data:`OPERATING_DEFAULTS` (seed Table 3.1 torques, seed Table 5.2 oil).
+    """
+
+    torque: tuple[float, ...] = OPERATING_DEFAULTS["torque"]
+    pinion_speed: float = OPERATING_DEFAULTS["pinion_speed"]
+    lubricant: str = OPERATING_DEFAULTS["lubricant"]
+    temperature: float = OPERATING_DEFAULTS["temperature"]
+    roughness: float = OPERATING_DEFAULTS["roughness"]
+    friction_model: str = OPERATING_DEFAULTS["friction_model"]
+
+    def __post_init__(self) -> None:
+        set_ = object.__setattr__
+        t = self.torque
+        values = [t] if isinstance(t, (int, float)) and not isinstance(t, bool) else t
+        if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") or not values:
+            raise InputError(f"torque: must be one or more pinion torques > 0 [N m], got {t!r}")
+        set_(self, "torque", tuple(positive("torque", v, "N m") for v in values))
+        set_(self, "pinion_speed", real("pinion_speed", self.pinion_speed, unit="rpm",
+                                        low=0.0))
+        set_(self, "temperature", real("temperature", self.temperature, unit="degC",
+                                       low=_ABSOLUTE_ZERO_C, low_open=True))
+        set_(self, "roughness", positive("roughness", self.roughness, "um"))
+        for name in ("lubricant", "friction_model"):
+            val = getattr(self, name)
+            if isinstance(val, os.PathLike):
+                val = os.fspath(val)
+                set_(self, name, val)
+            if not isinstance(val, str) or not val.strip():
+                raise InputError(f"{name}: must be a non-empty name, got {val!r}")
 
 
 @dataclass(frozen=True)
@@ -256,7 +341,9 @@ class Case:
     """A whole case file. ``extra`` keeps other stages' tables (unvalidated here).
 
     ``deviations`` holds the optional ``[deviations]`` table (:class:`DeviationFiles`) or
-    None.
+    None. ``misalignment`` (ΔE, ΔP, ΔG [mm], ΔΣ [rad]) and ``operating``
+    (:class:`OperatingPoint`: torques, speed, oil) are the case's operating point, read
+    from its ``[operating]`` table.
     """
 
     name: str
@@ -268,6 +355,7 @@ class Case:
     synthesised: tuple[str, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
     deviations: DeviationFiles | None = None
+    operating: OperatingPoint = field(default_factory=OperatingPoint)
 
     def member(self, name: str) -> Member:
         """The member called ``name`` (``"pinion"`` or ``"gear"``)."""
@@ -357,6 +445,16 @@ _MISALIGNMENT_FIELDS = {
     "delta_G": ("mm", False, 0.0),
     "delta_Sigma": ("deg", False, 0.0),
 }
+#: the ``[operating]`` table: misalignment (into Case.misalignment) and OperatingPoint
+_OPERATING_MISALIGNMENT_FIELDS = _MISALIGNMENT_FIELDS
+_OPERATING_POINT_FIELDS = {
+    "torque": ("list", False, OPERATING_DEFAULTS["torque"]),
+    "pinion_speed": ("rpm", False, OPERATING_DEFAULTS["pinion_speed"]),
+    "lubricant": ("str", False, OPERATING_DEFAULTS["lubricant"]),
+    "temperature": ("degC", False, OPERATING_DEFAULTS["temperature"]),
+    "roughness": ("um", False, OPERATING_DEFAULTS["roughness"]),
+    "friction_model": ("str", False, OPERATING_DEFAULTS["friction_model"]),
+}
 _DEVIATION_FIELDS = {
     "pinion": ("str", False, None),
     "gear": ("str", False, None),
@@ -365,7 +463,7 @@ _DEVIATION_FIELDS = {
 _SPYGO_BLADE_SCHEMA = {k: _BLADE_FIELDS[k] for k in SPYGO_BLADE_FIELDS}
 _MEMBER_KEYS = {"process", "blank", "cutter", "machine"}
 _TOP_KEYS = {"name", "source", "synthesised", "pair", "pinion", "gear", "misalignment",
-             "deviations"}
+             "operating", "deviations"}
 
 
 def _table(parent: Mapping, key: str, path: str, required: bool = True) -> Mapping:
@@ -590,8 +688,7 @@ def case_from_dict(raw: Mapping[str, Any], *,
     pinion = _member(_table(raw, "pinion", "pinion"), "pinion", pr["pinion_hand"])
     gear = _member(_table(raw, "gear", "gear"), "gear", pr["gear_hand"])
     _check_method(pr["method"], pinion, gear)
-    mis = _build(Misalignment, _fields(_table(raw, "misalignment", "misalignment", False),
-                                       _MISALIGNMENT_FIELDS, "misalignment"), "misalignment")
+    mis, operating = operating_from_dict(raw)
     devs = _deviation_files(raw, base_dir)
     extra = {k: v for k, v in raw.items() if k not in _TOP_KEYS}
     if extra:
@@ -600,7 +697,54 @@ def case_from_dict(raw: Mapping[str, Any], *,
     return Case(name=raw["name"], source=raw["source"], pair=pair, pinion=pinion, gear=gear,
                 misalignment=mis, synthesised=tuple(synth),
                 extra=MappingProxyType(json.loads(json.dumps(extra, default=str))),
-                deviations=devs)
+                deviations=devs, operating=operating)
+
+
+def operating_from_dict(raw: Mapping[str, Any]) -> tuple[Misalignment, OperatingPoint]:
+    """The misalignment and operating point of a parsed case (its ``[operating]`` table).
+
+    Parameters
+    ----------
+    raw : mapping
+        The parsed case (or any mapping with an ``operating`` table): ``torque`` [N·m],
+        ``delta_E``, ``delta_P``, ``delta_G`` [mm], ``delta_Sigma`` [deg], ``pinion_speed``
+        [rpm], ``lubricant``, ``temperature`` [degC], ``roughness`` [µm],
+        ``friction_model``; every field optional (:data:`OPERATING_DEFAULTS`, aligned). The
+        older top-level ``[misalignment]`` table (the same four ``delta_*`` fields) is still
+        read when ``[operating]`` gives no misalignment.
+
+    Returns
+    -------
+    (geometry.assembly.Misalignment, OperatingPoint)
+        ΔΣ converted to rad.
+
+    Raises
+    ------
+    InputError
+        An unknown, mistyped or out-of-range field (named ``operating.<field>``), or a
+        misalignment given both in ``[operating]`` and in ``[misalignment]``.
+    """
+    table = dict(_table(raw, "operating", "operating", False))
+    mis_keys = [k for k in _OPERATING_MISALIGNMENT_FIELDS if k in table]
+    mis_raw = {k: table.pop(k) for k in mis_keys}
+    where = "operating"
+    if "misalignment" in raw:
+        if mis_keys:
+            raise InputError(f"misalignment: give the misalignment once, in [operating] "
+                             f"({', '.join(mis_keys)} there); [misalignment] is its old "
+                             "place")
+        mis_raw = dict(_table(raw, "misalignment", "misalignment", False))
+        where = "misalignment"
+    unknown = sorted(set(table) - set(_OPERATING_POINT_FIELDS))
+    if unknown:
+        accepted = [*_OPERATING_POINT_FIELDS, *_OPERATING_MISALIGNMENT_FIELDS]
+        raise InputError(f"operating.{unknown[0]}: unknown field; accepted: "
+                         f"{', '.join(accepted)}")
+    mis = _build(Misalignment, _fields(mis_raw, _OPERATING_MISALIGNMENT_FIELDS, where), where)
+    if "torque" in table and isinstance(table["torque"], (int, float)):
+        table["torque"] = [table["torque"]]
+    kw = _fields(table, _OPERATING_POINT_FIELDS, "operating")
+    return mis, _build(OperatingPoint, kw, "operating")
 
 
 def load_case(path: str | os.PathLike[str]) -> Case:
@@ -675,13 +819,21 @@ def _case_to_dict(case: Case) -> dict[str, Any]:
             "cutter": cutter,
             "machine": {f: _values(m.flank(f).machine, _MACHINE_FIELDS) for f in FLANKS},
         }
-    doc["misalignment"] = _values(case.misalignment, _MISALIGNMENT_FIELDS)
+    doc["operating"] = operating_to_dict(case.misalignment, case.operating)
     for k, v in case.extra.items():
         doc[k] = v
     if case.deviations is not None:
         doc["deviations"] = {k: getattr(case.deviations, k) for k in _DEVIATION_FIELDS
                              if getattr(case.deviations, k) is not None}
     return doc
+
+
+def operating_to_dict(misalignment: Misalignment, operating: OperatingPoint,
+                      ) -> dict[str, Any]:
+    """The ``[operating]`` table of a case (units of a case file: ΔΣ in deg); inverse of
+    :func:`operating_from_dict`."""
+    op = _values(operating, _OPERATING_POINT_FIELDS)
+    return {"torque": op.pop("torque"), **_values(misalignment, _MISALIGNMENT_FIELDS), **op}
 
 
 def _toml_value(v: Any) -> str:

@@ -1505,4 +1505,6 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
         },
         "synthesis": info,
     }
+    if basic.operating:
+        doc["operating"] = dict(basic.operating)
     return case_from_dict(doc)

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from geometry.case import case_from_dict, load_case
+from geometry.case import OPERATING_DEFAULTS, case_from_dict, load_case
 from geometry.errors import InputError
 from geometry.flank import blank_outline, flank_dataset, flank_surface, projection_grid
 from geometry.plot import plot_flanks_in_mesh, plot_projection_grid
@@ -121,7 +121,15 @@ def test_to_toml_round_trip(path):
     ("pinion.process", "Hob", r"^pinion\.process:"),
     ("synthesised", ["pinion.blank.nonsense"], r"^synthesised:"),
     ("gear.machine.concave.tilt", 100.0, r"^gear\.machine\.concave\.tilt: must be in"),
-    ("misalignment.delta_Sigma", 30.0, r"^misalignment\.delta_Sigma:"),
+    ("operating.delta_Sigma", 30.0, r"^operating\.delta_Sigma: must be in \(-10, 10\) deg"),
+    ("operating.torque", [50.0, -1.0], r"^operating\.torque: must be finite and > 0"),
+    ("operating.torque", [], r"^operating\.torque: must be one or more"),
+    ("operating.pinion_speed", -5.0, r"^operating\.pinion_speed: must be finite and >= 0 \[rpm\]"),
+    ("operating.temperature", -300.0,
+     r"^operating\.temperature: must be finite and > -273\.15 \[degC\]"),
+    ("operating.roughness", 0.0, r"^operating\.roughness: must be finite and > 0"),
+    ("operating.lubricant", 75, r"^operating\.lubricant: must be a string"),
+    ("operating.speed", 1500.0, r"^operating\.speed: unknown field; accepted: torque"),
     ("source", "", r"^source:"),
 ])
 def test_bad_fields_are_named(dotted, value, match):
@@ -129,6 +137,30 @@ def test_bad_fields_are_named(dotted, value, match):
     says the accepted range."""
     with pytest.raises(InputError, match=match):
         case_from_dict(_mutated(S2, dotted, value))
+
+
+def test_operating_table_round_trips_and_the_old_misalignment_table_still_loads():
+    """[operating] holds torques, misalignment (ΔΣ in deg in the file, rad in Misalignment)
+    and the efficiency conditions; to_toml writes it back; a case of the older layout (a
+    top-level [misalignment]) loads the same; both at once is refused."""
+    raw = _raw(S2)
+    raw.pop("misalignment", None)
+    raw["operating"] = {"torque": [100.0, 200.0], "delta_E": -0.1, "delta_Sigma": 0.05,
+                        "pinion_speed": 0.0, "temperature": 60.0}
+    c = case_from_dict(raw)
+    assert c.operating.torque == (100.0, 200.0) and c.operating.pinion_speed == 0.0
+    assert c.misalignment.delta_E == -0.1
+    assert c.misalignment.delta_Sigma == pytest.approx(math.radians(0.05), rel=1e-15)
+    assert c.operating.roughness == OPERATING_DEFAULTS["roughness"]
+    again = case_from_dict(tomllib.loads(c.to_toml()))
+    assert again.operating == c.operating and again.misalignment == c.misalignment
+    old = _raw(S2)
+    old.pop("operating", None)
+    old["misalignment"] = {"delta_E": -0.1, "delta_Sigma": 0.05}
+    assert case_from_dict(old).misalignment == c.misalignment
+    both = {**old, "operating": {"delta_E": 0.1}}
+    with pytest.raises(InputError, match=r"^misalignment: give the misalignment once"):
+        case_from_dict(both)
 
 
 def test_face_hobbing_needs_blade_groups_on_both_members():

@@ -141,6 +141,7 @@ def test_mean_pitch_point_against_the_pitch_cone_hand_calculation(name):
     from scipy.optimize import least_squares
 
     from contact.utca.action_surface import mesh_kinematics
+    from geometry.assembly import Misalignment
     from geometry.basic_design import load_basic
     from geometry.case import load_case
     from geometry.pitch_cone import pitch_cone
@@ -148,7 +149,7 @@ def test_mean_pitch_point_against_the_pitch_cone_hand_calculation(name):
     root = Path(__file__).resolve().parents[1] / "cases"
     pc = pitch_cone(load_basic(root / "basic" / f"{name}.toml").design)
     case = load_case(root / f"{name}.toml")
-    kin = mesh_kinematics(case)
+    kin = mesh_kinematics(case, Misalignment())  # aligned (the pitch-cone identities)
     members = (
         (kin.pinion_axis, kin.pinion_origin, pc.t_z1, pc.Rm1, pc.delta1, pc.dm1),
         (kin.gear_axis, kin.gear_origin, pc.t_z2, pc.Rm2, pc.delta2, pc.dm2),

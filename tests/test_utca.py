@@ -326,7 +326,10 @@ def test_cli_writes_groups_and_plots(tmp_path):
     assert rc == 0
     back = read_netcdf(out)
     assert {"easeoff", "utca"} <= set(back.children)
-    assert "delta_E_mm\": 0.05" in back["utca"].attrs["misalignment"]
+    # the misalignment stored once, at the root, with its units in the names
+    assert back.attrs["misalignment_delta_E_mm"] == 0.05
+    assert back.attrs["misalignment_delta_Sigma_deg"] == 0.0
+    assert back["utca"].attrs["misalignment"].startswith("see the root group's attributes")
     for name in ("easeoff.png", "contact_pattern.png", "transmission_error.png"):
         assert (tmp_path / "plots" / name).stat().st_size > 1000
 
@@ -335,7 +338,8 @@ def test_cli_writes_groups_and_plots(tmp_path):
 def test_every_bundled_case_runs_the_utca(name):
     # (ISO sample 2's synthesised pair has a fold of the roll-angle surface at the gear tip
     # near the heel; those nodes are masked as ``beyond_fold``)
-    eo, ut = unloaded_tca(load_case(ROOT / "cases" / name), n_roll=8)
+    eo, ut = unloaded_tca(load_case(ROOT / "cases" / name), n_roll=8,
+                          misalignment=Misalignment())  # aligned
     te = ut["unloaded_transmission_error"]
     assert np.isfinite(te).any()
     assert float(eo["ease_off"].min()) >= -1e-6  # shifted to touch zero
@@ -377,7 +381,8 @@ def test_end_slope_of_the_ute_matches_a_wide_central_difference():
     from contact.utca import CURVE_SPACINGS, EaseOffFields
     from contact.utca.contact_curves import _end_slope, _seed_places
 
-    case = load_case(ROOT / "cases" / "kolivand2009_fm_11x41.toml")
+    case = dataclasses.replace(load_case(ROOT / "cases" / "kolivand2009_fm_11x41.toml"),
+                               misalignment=Misalignment())  # aligned: its [operating] is not
     eo = ease_off(case)
     m1, _ = transitions(eo)
     t = (m1 + np.arange(20)[:, None] * eo.pitch / 20

@@ -6,6 +6,13 @@ import argparse
 import sys
 from pathlib import Path
 
+from contact.commands.options import (
+    misalignment_options,
+    output_option,
+    progress_option,
+    rolls_per_cycle_option,
+    torque_option,
+)
 from contact.output_paths import check_output_file
 from geometry import __version__
 
@@ -24,25 +31,16 @@ def register(sub) -> None:
         "and print a qpbenchmark-style table; -o writes the results with the solver "
         "versions, CPU and BLAS.",
     )
-    p.add_argument(
-        "case",
-        nargs="?",
-        default=None,
-        help="case file or bundled case name: run on its real LTCA problems",
-    )
+    p.add_argument("case", nargs="?", default=None, metavar="CASE",
+                   help="case file or bundled case name (`ltca cases`): run on its real LTCA "
+                        "problems (default: the standard problem set)")
     p.add_argument("--problems", metavar="DIR",
                    help="run on a problem set written by `ltca export-problems -o DIR` "
                    "(with --with-standard also the standard set)")
     p.add_argument("--quick", action="store_true", help="a small problem set (N ≤ 250)")
-    p.add_argument("--torque", type=float, nargs="+", default=None, metavar="N_M",
-                   help="with CASE: pinion torques [N m] (default 50 250 500)")
-    p.add_argument("--dE", type=float, default=None, help="with CASE: ΔE [mm]")
-    p.add_argument("--dP", type=float, default=None, help="with CASE: ΔP [mm]")
-    p.add_argument("--dG", type=float, default=None, help="with CASE: ΔG [mm]")
-    p.add_argument("--dSigma", type=float, default=None, help="with CASE: ΔΣ [deg]")
-    p.add_argument("--rolls-per-cycle", type=int, default=20,
-                   help="with CASE: roll positions per mesh cycle (one cycle is run: "
-                   "the next repeats it)")
+    torque_option(p, default="with CASE: the case's [operating] torques")
+    misalignment_options(p, default="with CASE: the case's [operating] values")
+    rolls_per_cycle_option(p, default=20)
     p.add_argument("--with-standard", action="store_true",
                    help="with CASE or --problems: also run the standard problem set")
     p.add_argument(
@@ -63,8 +61,8 @@ def register(sub) -> None:
         default=None,
         help="runs per (solver, problem); the fastest counts (default 3 with --quick, else 1)",
     )
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
-    p.add_argument("-o", "--output", help="write the full results as netCDF")
+    progress_option(p)
+    output_option(p, default="none: the table only", what="netCDF file of the full results")
     p.set_defaults(func=run)
 
 
@@ -89,13 +87,13 @@ def run(args: argparse.Namespace) -> int:
             problems += standard_problem_set(quick=args.quick)
     elif args.case is not None:
         from contact.commands.export_problems import case_problems
-        from contact.commands.run import misalignment_from_args
+        from contact.commands.options import misalignment_from_args
         from contact.ltca import LTCAOptions
         from contact.pipeline import resolve_case
 
         case = resolve_case(args.case)
         mis = misalignment_from_args(args, case.misalignment)
-        torques = args.torque or [50.0, 250.0, 500.0]
+        torques = args.torque or list(case.operating.torque)
         opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle)
         print(f"collecting the LTCA problems of {case.name} at T_p = {torques} N m ...")
         problems = case_problems(args.case, torques, mis, opts)

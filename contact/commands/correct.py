@@ -15,6 +15,12 @@ import os
 import tomllib
 from pathlib import Path
 
+from contact.commands.options import (
+    case_argument,
+    default_output,
+    flank_option,
+    output_option,
+)
 from contact.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
@@ -43,13 +49,12 @@ def register(sub) -> None:
         "error). Prints, per flank, each setting's correction, whether it is determined, "
         "its standard error per um of measurement noise and the residual deviation.",
     )
-    p.add_argument("case", help="case file (TOML) or bundled case name")
+    case_argument(p, what="correct")
     p.add_argument("--deviations", nargs=2, metavar=("PINION", "GEAR"), default=None,
                    help="measured normal deviations of the pinion and gear flanks in contact "
                         "(CSV or netCDF, positive = material added; '-' for a member not to "
                         "correct); default: the case's [deviations] table")
-    p.add_argument("--flank", choices=["drive", "coast"], default="drive",
-                   help="which pinion flank (and its mate) was measured (default drive)")
+    flank_option(p, default="drive")
     p.add_argument("--settings", nargs="+", default=None, metavar="NAME",
                    help=f"settings to correct (default per process, {defaults}); accepted: "
                         f"{' '.join(SETTING_VARIABLES)}")
@@ -60,7 +65,7 @@ def register(sub) -> None:
     p.add_argument("--cond-max", type=float, default=COND_MAX,
                    help="largest condition number of the settings kept free (default "
                         "%(default)g); the others are held fixed")
-    p.add_argument("-o", "--output", required=True, help="corrected case file to write (TOML)")
+    output_option(p, default="<case>_corrected.toml", what="corrected case file (TOML)")
     p.set_defaults(func=run_correct)
 
 
@@ -112,7 +117,8 @@ def run_correct(args: argparse.Namespace) -> int:
     from geometry.correction import corrected_case, corrective_settings
     from geometry.errors import InputError
 
-    check_output_file(args.output, create_parents=True)
+    output = default_output(args, "_corrected.toml")
+    check_output_file(output, create_parents=True)
     case = resolve_case(args.case)
     if args.deviations is not None:
         files = [None if f == "-" else f for f in args.deviations]
@@ -124,7 +130,8 @@ def run_correct(args: argparse.Namespace) -> int:
     if all(f is None for f in files):
         raise InputError("--deviations: at least one of PINION, GEAR must be a file")
     bounds = _bounds(args.bound) or None
-    pinion_flank = FLANK_ROLES[args.flank](case)
+    pinion_flank = (FLANK_ROLES[args.flank](case) if args.flank in FLANK_ROLES
+                    else args.flank)
     flanks = {"pinion": pinion_flank, "gear": MATING_FLANK[pinion_flank]}
     corrections = []
     for member, path in zip(("pinion", "gear"), files, strict=True):
@@ -146,13 +153,13 @@ def run_correct(args: argparse.Namespace) -> int:
         print(_table(c))
     names = ", ".join(os.fspath(f) for f in files if f is not None)
     provenance = {
-        "source_file": str(Path(args.case).resolve()) if Path(args.case).is_file()
-        else args.case,
+        "source_file": str(Path(args.case).resolve()) if args.case and Path(args.case).is_file()
+        else (args.case or case.name),
         "deviation_files": [os.path.abspath(f) if f is not None else "-" for f in files],
     }
     out = corrected_case(case, corrections, provenance=provenance)
     text = _HEADER.format(case=case.name, files=names) + out.to_toml()
     case_from_dict(tomllib.loads(text))  # the written text must load back
-    path = write_text_atomic(Path(args.output), text)
+    path = write_text_atomic(Path(output), text)
     print(f"wrote {path}")
     return 0

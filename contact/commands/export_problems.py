@@ -13,11 +13,18 @@ import argparse
 import dataclasses
 import datetime
 import logging
-import math
 import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
+from contact.commands.options import (
+    case_argument,
+    misalignment_from_args,
+    misalignment_options,
+    progress_option,
+    rolls_per_cycle_option,
+    torque_option,
+)
 from contact.output_paths import check_output_dir
 from geometry import __version__
 
@@ -172,22 +179,14 @@ def register(sub) -> None:
         "with manifest.json (case, misalignment, torque, roll, N, file). The set feeds "
         "`ltca compare-solvers --problems DIR` and benchmarks/ltca_contact.py (qpbenchmark).",
     )
-    p.add_argument("case", nargs="*",
-                   help="case files or bundled case names (default: every bundled case)")
+    case_argument(p, many=True, what="export")
     p.add_argument("-o", "--output", required=True, metavar="DIR",
                    help="directory to write the problems and manifest.json into")
-    p.add_argument("--torque", type=float, nargs="+", default=list(DEFAULT_TORQUES),
-                   metavar="N_M", help="pinion torques [N m] (default 50 250 500)")
-    p.add_argument("--dE", type=float, default=None,
-                   help="ΔE [mm] of the misaligned set (default the seed's Table 3.1: -0.15)")
-    p.add_argument("--dP", type=float, default=None,
-                   help="ΔP [mm] of the misaligned set (default +0.12)")
-    p.add_argument("--dG", type=float, default=None, help="ΔG [mm] of the misaligned set")
-    p.add_argument("--dSigma", type=float, default=None,
-                   help="ΔΣ [deg] of the misaligned set")
-    p.add_argument("--rolls-per-cycle", type=int, default=20,
-                   help="roll positions per mesh cycle (default 20)")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    torque_option(p, default="50 250 500, the seed's Table 3.1")
+    misalignment_options(p, default="of the misaligned set: the seed's Table 3.1, "
+                         "ΔE -0.15, ΔP +0.12")
+    rolls_per_cycle_option(p, default=20)
+    progress_option(p)
     p.set_defaults(func=run)
 
 
@@ -198,19 +197,13 @@ def run(args: argparse.Namespace) -> int:
     from geometry.assembly import Misalignment
 
     check_output_dir(args.output, option="-o")
-    base = SEED_TABLE_3_1["misalignment"]
-    misaligned = Misalignment(
-        delta_E=base.delta_E if args.dE is None else args.dE,
-        delta_P=base.delta_P if args.dP is None else args.dP,
-        delta_G=base.delta_G if args.dG is None else args.dG,
-        delta_Sigma=(base.delta_Sigma if args.dSigma is None
-                     else math.radians(args.dSigma)),
-    )
+    misaligned = misalignment_from_args(args, SEED_TABLE_3_1["misalignment"])
+    torques = list(DEFAULT_TORQUES) if args.torque is None else args.torque
     cases = args.case or [c.removesuffix(".toml") for c in bundled_cases()]
     opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle)
     print(f"hypoid-ltca {__version__}: the LTCA problems of {len(cases)} cases, aligned and "
-          f"misaligned, at T_p = {args.torque} N m, {opts.rolls_per_cycle} rolls per cycle")
-    path = export_problems(cases, args.output, torques=args.torque,
+          f"misaligned, at T_p = {torques} N m, {opts.rolls_per_cycle} rolls per cycle")
+    path = export_problems(cases, args.output, torques=torques,
                            misalignments={"aligned": Misalignment(), "misaligned": misaligned},
                            options=opts, progress=not args.no_progress,
                            command="ltca " + " ".join(sys.argv[1:]))

@@ -5,6 +5,13 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from contact.commands.options import (
+    case_argument,
+    default_output,
+    deprecated_alias,
+    output_option,
+    plots_option,
+)
 from contact.output_paths import check_output_dir, check_output_file
 
 #: Place in ``ltca --help``.
@@ -20,8 +27,8 @@ def register(sub) -> None:
         "(equation of meshing on the projection-plane grid) and write one netCDF file "
         "with a group per member and flank.",
     )
-    p.add_argument("case", help="case file (TOML)")
-    p.add_argument("-o", "--output", required=True, help="netCDF file to write")
+    case_argument(p, what="generate")
+    output_option(p, default="<case>_geometry.nc")
     p.add_argument("--nu", type=int, default=41, help="lengthwise grid points (default 41)")
     p.add_argument("--nv", type=int, default=21, help="profile grid points (default 21)")
     p.set_defaults(func=run_geometry)
@@ -30,10 +37,12 @@ def register(sub) -> None:
         "plot-geometry",
         help="plot both members' flanks in mesh and each flank's projection-plane grid",
     )
-    q.add_argument("case", help="case file (TOML)")
-    q.add_argument("-o", "--output-dir", default=".", help="directory for the PNG files")
-    q.add_argument("--nu", type=int, default=41)
-    q.add_argument("--nv", type=int, default=21)
+    case_argument(q, what="plot")
+    plots_option(q, default=".")
+    deprecated_alias(q, "--output-dir", "--plots", "plots")
+    deprecated_alias(q, "-o", "--plots", "plots")
+    q.add_argument("--nu", type=int, default=41, help="lengthwise grid points (default 41)")
+    q.add_argument("--nv", type=int, default=21, help="profile grid points (default 21)")
     q.set_defaults(func=run_plot_geometry)
 
 
@@ -51,12 +60,13 @@ def geometry_tree(case, nu: int = 41, nv: int = 21):
 
 def run_geometry(args: argparse.Namespace) -> int:
     from contact.io import write_netcdf
-    from geometry.case import load_case
+    from contact.pipeline import resolve_case
 
-    check_output_file(args.output)
-    case = load_case(args.case)
+    output = default_output(args, "_geometry.nc")
+    check_output_file(output)
+    case = resolve_case(args.case)
     tree = geometry_tree(case, args.nu, args.nv)
-    path = write_netcdf(tree, Path(args.output), inputs=case.to_toml())
+    path = write_netcdf(tree, Path(output), inputs=case.to_toml())
     for node in tree.subtree:
         if "mask" in node.dataset:
             ok = int(node.dataset["mask"].sum())
@@ -66,13 +76,13 @@ def run_geometry(args: argparse.Namespace) -> int:
 
 
 def run_plot_geometry(args: argparse.Namespace) -> int:
-    from geometry.case import load_case
+    from contact.pipeline import resolve_case
     from geometry.flank import flank_surface
     from geometry.plot import plot_flanks_in_mesh, plot_projection_grid
 
-    check_output_dir(args.output_dir, option="-o")
-    case = load_case(args.case)
-    out = Path(args.output_dir)
+    check_output_dir(args.plots, option="--plots")
+    case = resolve_case(args.case)
+    out = Path(args.plots)
     out.mkdir(parents=True, exist_ok=True)
     surfaces = {
         (m, f): flank_surface(case, m, f, nu=args.nu, nv=args.nv)

@@ -4,6 +4,11 @@ from __future__ import annotations
 
 import argparse
 
+from contact.commands.options import (
+    analysis_file_argument,
+    output_option,
+    resolve_analysis_file,
+)
 from contact.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
@@ -21,9 +26,9 @@ def register(sub) -> None:
         "the solver's certification and the toolkit versions. Only the file is read, so a "
         "file from another machine or an older run gives the same page.",
     )
-    p.add_argument("file", help="netCDF file written by `ltca run`")
-    p.add_argument("-o", "--output", default="report.html",
-                   help="HTML file (default report.html)")
+    analysis_file_argument(p)
+    output_option(p, default="FILE's name with .html, e.g. kolivand2009_fm_11x41.html",
+                  what="HTML file")
     p.set_defaults(func=run)
 
 
@@ -31,7 +36,9 @@ def run(args: argparse.Namespace) -> int:
     from contact.io import read_netcdf
     from contact.plots.report import write_report
 
-    check_output_file(args.output)
-    tree = read_netcdf(args.file, tree=True)
-    print(f"wrote {write_report(tree, args.output)}")
+    path = resolve_analysis_file(args.file)
+    output = args.output or path.with_suffix(".html").name
+    check_output_file(output)
+    tree = read_netcdf(path, tree=True)
+    print(f"wrote {write_report(tree, output)}")
     return 0

@@ -5,68 +5,54 @@ from __future__ import annotations
 import argparse
 import math
 import os
-import sys
 from pathlib import Path
 
+from contact.commands.options import (
+    analysis_file_argument,
+    case_argument,
+    default_output,
+    flank_option,
+    misalignment_from_args,
+    misalignment_options,
+    operating_options,
+    output_option,
+    plots_option,
+    progress_option,
+    resolve_analysis_file,
+    rolls_per_cycle_option,
+    segments_option,
+    solver_option,
+    torque_option,
+)
 from contact.output_paths import check_output_dir, check_output_file
+
+__all__ = ["TE_TABLE_HEADERS", "deviation_te_rows", "misalignment_from_args", "plot", "register",
+           "run", "write_figures"]
 
 #: Place in ``ltca --help``.
 ORDER = 10
 
 
-def _misalignment_args(p) -> None:
-    p.add_argument("--dE", type=float, default=None, help="offset error ΔE [mm]")
-    p.add_argument("--dP", type=float, default=None, help="pinion mounting error ΔP [mm]")
-    p.add_argument("--dG", type=float, default=None, help="gear mounting error ΔG [mm]")
-    p.add_argument("--dSigma", type=float, default=None, help="shaft angle error ΔΣ [deg]")
-
-
-def misalignment_from_args(args, base):
-    """A Misalignment from ``--dE --dP --dG --dSigma`` over ``base`` (None: all unset)."""
-    from geometry.assembly import Misalignment
-
-    given = {k: getattr(args, k) for k in ("dE", "dP", "dG", "dSigma")}
-    if all(v is None for v in given.values()):
-        return base
-    b = base or Misalignment()
-    return Misalignment(
-        delta_E=b.delta_E if given["dE"] is None else given["dE"],
-        delta_P=b.delta_P if given["dP"] is None else given["dP"],
-        delta_G=b.delta_G if given["dG"] is None else given["dG"],
-        delta_Sigma=b.delta_Sigma if given["dSigma"] is None else math.radians(given["dSigma"]),
-    )
-
-
 def register(sub) -> None:
     """Add the sub-commands to an ``argparse`` sub-parser collection."""
-    from friction.operating import OperatingConditions
-
-    op = OperatingConditions()  # the defaults of the efficiency stage
     p = sub.add_parser(
         "run",
         help="loaded TCA of a case (default: the bundled 11x41 pair at the seed's Table 3.1)",
         description="Geometry, ease-off UTCA and loaded TCA of a case at one or more torques; "
-        "prints a summary, writes one netCDF (/geometry, /easeoff, /utca, /ltca) and plots. "
-        "Without CASE: the bundled default case at the seed's Table 3.1 conditions "
-        "(pinion torque 50/250/500 N m, ΔE = −0.15 mm, ΔP = +0.12 mm; the seed lost the signs, "
-        "see contact.pipeline.SEED_TABLE_3_1).",
+        "prints a summary, writes one netCDF (/geometry, /easeoff, /utca, /ltca, /friction) "
+        "named after the case and plots. The torques, misalignment and efficiency conditions "
+        "are the case's [operating] table unless given here; the default case's are the "
+        "seed's Table 3.1 conditions (pinion torque 50/250/500 N m, ΔE = −0.15 mm, "
+        "ΔP = +0.12 mm; the seed lost the signs, see contact.pipeline.SEED_TABLE_3_1).",
     )
-    p.add_argument(
-        "case",
-        nargs="?",
-        default=None,
-        help="case file (TOML) or bundled case name (default: the 11x41 pair)",
-    )
-    p.add_argument(
-        "--torque",
-        type=float,
-        nargs="+",
-        default=None,
-        metavar="N_M",
-        help="pinion torques [N m] (default 50 250 500)",
-    )
-    _misalignment_args(p)
-    p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
+    case_argument(p)
+    torque_option(p)
+    misalignment_options(p)
+    operating_options(p)
+    solver_option(p)
+    flank_option(p)
+    rolls_per_cycle_option(p)
+    segments_option(p)
     dev = p.add_mutually_exclusive_group()
     dev.add_argument(
         "--deviations",
@@ -82,34 +68,17 @@ def register(sub) -> None:
         action="store_true",
         help="ignore the case's [deviations] table (theoretical surfaces only)",
     )
-    p.add_argument(
-        "--speed",
-        type=float,
-        default=op.pinion_speed,
-        metavar="RPM",
-        help="pinion speed for the efficiency stage (default %(default)g; 0 skips it)",
-    )
-    p.add_argument("--lubricant", default=op.lubricant,
-                   help="bundled oil name or TOML file (default %(default)s)")
-    p.add_argument("--temperature", type=float, default=op.temperature,
-                   help="oil inlet temperature [C] (default %(default)g)")
-    p.add_argument("--roughness", type=float, default=op.roughness,
-                   help="RMS roughness Rq [um] (default %(default)g)")
-    p.add_argument("--friction-model", default=op.friction_model,
-                   help="friction coefficient model (default %(default)s)")
-    p.add_argument("--flank", choices=["drive", "coast"], default=None)
-    p.add_argument("--rolls-per-cycle", type=int, default=20)
-    p.add_argument("--segments", type=int, default=24, help="segments per contact curve")
-    p.add_argument("-o", "--output", default="ltca.nc", help="netCDF file (default ltca.nc)")
-    p.add_argument("--plots", default=None, metavar="DIR", help="write PNG plots into DIR")
+    output_option(p, default="<case>.nc, e.g. kolivand2009_fm_11x41.nc")
+    plots_option(p)
     p.add_argument("--report", default=None, metavar="HTML",
                    help="write the one-page HTML report (as `ltca report`) to HTML")
-    p.add_argument("--no-progress", action="store_true")
+    progress_option(p)
     p.set_defaults(func=run)
 
     q = sub.add_parser("plot", help="redraw every plot of an analysis from its netCDF file")
-    q.add_argument("file", help="netCDF file written by `ltca run`")
-    q.add_argument("--plots", default="plots", metavar="DIR", help="directory (default plots)")
+    analysis_file_argument(q)
+    plots_option(q, default="plots")
+    progress_option(q)
     q.set_defaults(func=plot)
 
 
@@ -169,42 +138,42 @@ def deviation_te_rows(tree) -> list[tuple[str, ...]]:
     return rows
 
 
+def ltca_options(args: argparse.Namespace, **defaults):
+    """LTCAOptions of ``--rolls-per-cycle``, ``--segments``, ``--solver`` (those given)."""
+    from contact.ltca import LTCAOptions
+
+    kw = dict(defaults)
+    for name in ("rolls_per_cycle", "segments", "solver"):
+        value = getattr(args, name, None)
+        if value is not None:
+            kw[name] = value
+    return LTCAOptions(**kw)
+
+
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.io import write_netcdf
-    from contact.ltca import LTCAOptions
-    from contact.pipeline import SEED_TABLE_3_1, resolve_case, run_analysis
-    from friction.operating import OperatingConditions
+    from contact.pipeline import operating_conditions, resolve_case, run_analysis
 
-    check_output_file(args.output)
+    output = default_output(args)
+    check_output_file(output)
     if args.plots:
         check_output_dir(args.plots)
     if args.report:
         check_output_file(args.report, option="--report")
     case = resolve_case(args.case)
-    base = SEED_TABLE_3_1["misalignment"] if args.case is None else case.misalignment
-    mis = misalignment_from_args(args, base)
-    opts = LTCAOptions(
-        rolls_per_cycle=args.rolls_per_cycle,
-        segments=args.segments,
-        **({"solver": args.solver} if args.solver else {}),
-    )
+    mis = misalignment_from_args(args, case.misalignment)
+    opts = ltca_options(args)
     devs = None  # the case's [deviations] table, if any
     if args.no_deviations:
         devs = False
     elif args.deviations:
         # file paths: run_analysis reads them (contact.deviation_files.read_deviations)
         devs = tuple(None if f == "-" else f for f in args.deviations)
-    operating = None  # --speed 0: no efficiency stage
-    if args.speed:
-        operating = OperatingConditions(
-            pinion_speed=args.speed,
-            lubricant=args.lubricant,
-            temperature=args.temperature,
-            roughness=args.roughness,
-            friction_model=args.friction_model,
-        )
+    operating = operating_conditions(
+        case, pinion_speed=args.speed, lubricant=args.lubricant, temperature=args.temperature,
+        roughness=args.roughness, friction_model=args.friction_model)
     tree = run_analysis(
         case,
         args.torque,
@@ -212,13 +181,13 @@ def run(args: argparse.Namespace) -> int:
         flank=args.flank,
         options=opts,
         deviations=devs,
-        operating=operating,
-        progress=not args.no_progress and sys.stderr.isatty(),
+        operating=False if operating is None else operating,
+        progress=not args.no_progress,
     )
     lt = tree["ltca"].to_dataset()
     print(
         f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
-        f"ΔG {mis.delta_G:g} mm, ΔΣ {math.degrees(mis.delta_Sigma) * 60:g}′; "
+        f"ΔG {mis.delta_G:g} mm, ΔΣ {math.degrees(mis.delta_Sigma):g} deg; "
         f"solver {lt.attrs['solver']}"
     )
     fr = tree["friction"].to_dataset() if "friction" in tree.children else None
@@ -262,7 +231,7 @@ def run(args: argparse.Namespace) -> int:
     if fr is not None:
         print(
             f"efficiency at {fr.attrs['pinion_speed_rpm']:g} rpm, {fr.attrs['lubricant']} at "
-            f"{fr.attrs['inlet_temperature_degC']:g} C, Rq {fr.attrs['roughness_rq_um']:g} um, "
+            f"{fr.attrs['inlet_temperature_degC']:g} degC, Rq {fr.attrs['roughness_rq_um']:g} um, "
             f"friction model {fr.attrs['friction_model']}"
         )
         print_extrapolation_warning(fr)
@@ -275,9 +244,9 @@ def run(args: argparse.Namespace) -> int:
         print(tabulate(deviation_te_rows(tree), headers=TE_TABLE_HEADERS, tablefmt="github"))
     times = {k[5:-2]: v for k, v in tree.attrs.items() if k.startswith("time_")}
     print("time [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in times.items()))
-    path = write_netcdf(tree, Path(args.output), inputs=tree.attrs["inputs"])
+    path = write_netcdf(tree, Path(output), inputs=tree.attrs["inputs"])
     print(f"wrote {path}")
-    write_figures(path, args.plots, args.report)
+    write_figures(path, args.plots, args.report, progress=not args.no_progress)
     return 0
 
 
@@ -294,7 +263,8 @@ def print_extrapolation_warning(friction) -> None:
               "the efficiency there is an extrapolation")
 
 
-def write_figures(path: Path, plots: str | None, report: str | None) -> None:
+def write_figures(path: Path, plots: str | None, report: str | None,
+                  progress: bool = False) -> None:
     """The PNGs (``--plots``) and the HTML report (``--report``) of the file just written,
     drawn from the file alone (what ``ltca plot`` and ``ltca report`` would draw), each
     figure once."""
@@ -309,7 +279,7 @@ def write_figures(path: Path, plots: str | None, report: str | None) -> None:
     figures = []
     # two processes draw the figures (independent of each other): on two free cores the
     # drawing takes half the wall time (benchmarks/plots.py)
-    for rf in render_analysis(tree, workers=min(2, os.cpu_count() or 1)):
+    for rf in render_analysis(tree, workers=min(2, os.cpu_count() or 1), progress=progress):
         if plots:
             target = Path(plots) / f"{rf.name}.png"
             with atomic_path(target) as tmp:
@@ -325,7 +295,10 @@ def plot(args: argparse.Namespace) -> int:
     from contact.io import read_netcdf
     from contact.plots import plot_analysis
 
-    tree = read_netcdf(args.file, tree=True)
-    for p in plot_analysis(tree, args.plots, workers=min(2, os.cpu_count() or 1)):
+    path = resolve_analysis_file(args.file)
+    check_output_dir(args.plots)
+    tree = read_netcdf(path, tree=True)
+    for p in plot_analysis(tree, args.plots, workers=min(2, os.cpu_count() or 1),
+                           progress=not args.no_progress):
         print(f"wrote {p}")
     return 0

@@ -15,6 +15,18 @@ from pathlib import Path
 
 import numpy as np
 
+from contact.commands.options import (
+    case_argument,
+    default_output,
+    flank_option,
+    misalignment_options,
+    output_option,
+    plots_option,
+    progress_option,
+    rolls_per_cycle_option,
+    solver_option,
+    torque_option,
+)
 from contact.output_paths import check_output_dir, check_output_file
 from geometry.errors import InputError
 
@@ -53,27 +65,24 @@ def parse_range(option: str, text: str) -> np.ndarray:
 
 
 def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
-    p.add_argument("case", nargs="?", default=None,
-                   help="case file (TOML) or bundled case name (default: the 11x41 pair)")
+    case_argument(p, what="study")
     if many_torques:
-        p.add_argument("--torque", type=float, nargs="+", default=None, metavar="N_M",
-                       help="pinion torques [N m] (default 250)")
+        torque_option(p, default="250")
         p.add_argument("--speed", type=float, nargs="+", default=None, metavar="RPM",
-                       help="pinion speeds [rpm]: adds efficiency and power loss")
-    p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
-    p.add_argument("--flank", choices=["drive", "coast"], default=None)
-    p.add_argument("--rolls-per-cycle", type=int, default=None,
-                   help="roll positions per mesh cycle (default the LTCA's)")
-    p.add_argument("-o", "--output", default=None, metavar="FILE",
-                   help="netCDF file (default <case>_<study>.nc); finished points stream to "
-                        "FILE.parts/ and a killed study started again resumes")
-    p.add_argument("--plots", default=None, metavar="DIR", help="write PNG figures into DIR")
+                       help="pinion speeds [rpm]: adds efficiency and power loss (oil, "
+                            "temperature, roughness: the case's [operating] table)")
+    solver_option(p)
+    flank_option(p)
+    rolls_per_cycle_option(p)
+    output_option(p, default="<case>_<study>.nc; finished points stream to FILE.parts/ and "
+                  "a killed study started again resumes")
+    plots_option(p)
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler of an existing cluster (e.g. tcp://host:8786); "
                         "default a local cluster; 'synchronous' runs in this process")
     p.add_argument("--workers", type=int, default=None, metavar="N",
                    help="processes of the local cluster (default one per core)")
-    p.add_argument("--no-progress", action="store_true")
+    progress_option(p)
 
 
 def register(sub) -> None:
@@ -84,10 +93,8 @@ def register(sub) -> None:
         "torques and speeds, on Dask; prints the range of each summary, writes one "
         "netCDF and, with --plots, maps over the first two swept inputs.")
     _common(p)
-    p.add_argument("--dE", metavar="RANGE", help="offset misalignment ΔE [mm], e.g. -0.2:0.2:21")
-    p.add_argument("--dP", metavar="RANGE", help="pinion axial misalignment ΔP [mm]")
-    p.add_argument("--dG", metavar="RANGE", help="gear axial misalignment ΔG [mm]")
-    p.add_argument("--dSigma", metavar="RANGE", help="shaft-angle misalignment ΔΣ [deg]")
+    misalignment_options(p, kind="range", default="the case's [operating] value; e.g. "
+                         "-0.2:0.2:21")
     p.add_argument("--deviation-scale", metavar="RANGE",
                    help="factors on the case's [deviations] (0 theoretical, 1 measured)")
     p.set_defaults(func=sweep_command, study="sweep")
@@ -98,9 +105,8 @@ def register(sub) -> None:
         "distributions (Sobol', Latin hypercube or random); prints percentiles of LTE p-p, "
         "peak pressure, edge share and efficiency and which input drives their spread.")
     _common(t)
-    for opt, unit in (("dE", "mm"), ("dP", "mm"), ("dG", "mm"), ("dSigma", "deg")):
-        t.add_argument(f"--{opt}", metavar="DIST",
-                       help=f"distribution of {opt} [{unit}], e.g. normal:0:0.05")
+    misalignment_options(t, kind="distribution", default="the case's [operating] value; "
+                         "a distribution e.g. normal:0:0.05")
     t.add_argument("--deviation-scale", metavar="DIST",
                    help="distribution of the factor on the case's [deviations]")
     t.add_argument("-n", type=int, default=256, help="number of draws (default %(default)s)")
@@ -115,16 +121,16 @@ def register(sub) -> None:
         "and solves for the displacements that put it at the toe and heel targets at the "
         "nominal pattern's height; each solution is checked by a single analysis.")
     _common(v, many_torques=False)
-    v.add_argument("--torque", type=float, default=None, metavar="N_M",
-                   help="pinion torque [N m] (default 50)")
+    torque_option(v, many=False, default="50")
     v.add_argument("--toe", type=float, default=None,
                    help="toe target of the pattern centre, face-width fraction (default 0.25)")
     v.add_argument("--heel", type=float, default=None,
                    help="heel target, face-width fraction (default 0.75)")
     v.add_argument("--profile", type=float, default=None,
                    help="height the centre keeps, depth fraction (default the nominal's)")
-    v.add_argument("--dE", metavar="RANGE", default=None, help="V grid [mm] (default -0.4:0.4:9)")
-    v.add_argument("--dP", metavar="RANGE", default=None, help="H grid [mm] (default -0.3:0.3:7)")
+    misalignment_options(v, kind="range", extra={
+        "dE": "V grid, offset change ΔE [mm] (default -0.4:0.4:9)",
+        "dP": "H grid, pinion axial ΔP [mm] (default -0.3:0.3:7)"})
     v.set_defaults(func=vh_check_command, study="vh_check")
 
 
@@ -133,11 +139,11 @@ def _prepare(args: argparse.Namespace) -> tuple:
     from contact.ltca import LTCAOptions
     from contact.pipeline import resolve_case
 
-    case = resolve_case(args.case)
-    out = Path(args.output or f"{case.name}_{args.study}.nc")
+    out = Path(default_output(args, f"_{args.study}.nc"))
     check_output_file(out)
     if args.plots:
         check_output_dir(args.plots)
+    case = resolve_case(args.case)
     if args.workers is not None and args.workers < 1:
         raise InputError(f"--workers: must be >= 1, got {args.workers}")
     kw = {}

@@ -6,6 +6,7 @@ import argparse
 import math
 from pathlib import Path
 
+from contact.commands.options import output_option
 from contact.output_paths import check_output_file
 from geometry.atomic_files import atomic_path
 
@@ -28,9 +29,43 @@ def register(sub) -> None:
         "generated pinion by local synthesis, and write a complete case file. The process "
         "follows the design's blade groups z0: 0 face milling, >= 1 face hobbing.",
     )
-    p.add_argument("basic", help="basic design file (TOML, schema in docs/synthesis.md)")
-    p.add_argument("-o", "--output", required=True, help="case file to write (TOML)")
+    p.add_argument("basic", nargs="?", default=None, metavar="BASIC",
+                   help="basic design file (TOML, schema in docs/synthesis.md) or the name of "
+                        "a bundled one (cases/basic/: "
+                        + ", ".join(bundled_basic_names()) + "); default the default case's, "
+                        "kolivand2009_fm_11x41")
+    output_option(p, default="<name>.toml, the design's name", what="case file (TOML)")
     p.set_defaults(func=run_synthesize)
+
+
+def bundled_basic_names() -> list[str]:
+    """Names of the bundled basic design files (``cases/basic/*.toml``)."""
+    from contact.pipeline import bundled_case_path
+
+    root = bundled_case_path().parent / "basic"
+    return sorted(p.stem for p in root.glob("*.toml")) if root.is_dir() else []
+
+
+def resolve_basic(arg: str | None) -> Path:
+    """A basic design file: a path, or a bundled name (``cases/basic/<name>.toml``); None
+    the default case's.
+
+    Raises
+    ------
+    InputError
+        Neither a file nor a bundled name (the message lists the bundled ones).
+    """
+    from contact.pipeline import DEFAULT_CASE, bundled_case_path
+    from geometry.errors import InputError
+
+    name = DEFAULT_CASE if arg is None else arg
+    if Path(name).is_file():
+        return Path(name)
+    path = bundled_case_path().parent / "basic" / f"{Path(name).name.removesuffix('.toml')}.toml"
+    if path.is_file():
+        return path
+    raise InputError(f"BASIC: no such file {name!r} and no bundled basic design of that name; "
+                     f"bundled: {', '.join(bundled_basic_names())}")
 
 
 def write_text_atomic(path: Path, text: str) -> Path:
@@ -49,13 +84,17 @@ def run_synthesize(args: argparse.Namespace) -> int:
     from geometry.case import case_from_dict
     from geometry.synthesis import synthesize
 
-    check_output_file(args.output, create_parents=True)
-    basic = load_basic(args.basic)
+    source = resolve_basic(args.basic)
+    output = args.output or f"{source.stem}.toml"
+    check_output_file(output, create_parents=True)
+    basic = load_basic(source)
     case, report = synthesize(basic)
-    text = _HEADER.format(basic=Path(args.basic).as_posix()) + case.to_toml()
+    shown = (f"cases/basic/{source.name}" if args.basic is None or not Path(args.basic).is_file()
+             else Path(args.basic).as_posix())
+    text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
-    path = write_text_atomic(Path(args.output), text)
+    path = write_text_atomic(Path(output), text)
     geom = report.blank
     print(f"{case.name}: {geom.design.z1}x{geom.design.z2}, offset {geom.design.a:g} mm, "
           f"beta_m {math.degrees(geom.pinion.beta_m):.2f}/{math.degrees(geom.gear.beta_m):.2f}"

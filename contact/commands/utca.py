@@ -7,6 +7,16 @@ import dataclasses
 import math
 from pathlib import Path
 
+from contact.commands.options import (
+    case_argument,
+    default_output,
+    flank_option,
+    misalignment_from_args,
+    misalignment_options,
+    output_option,
+    plots_option,
+    rolls_per_cycle_option,
+)
 from contact.output_paths import check_output_dir, check_output_file
 
 #: Place in ``ltca --help``.
@@ -21,18 +31,14 @@ def register(sub) -> None:
         description="Ease-off topography, surface of roll angle, contact curves, unloaded "
         "transmission error of adjacent tooth pairs and the contact pattern of a case "
         "(Kolivand 2009, sections 2.3.2 and 4.4). Misalignments given here replace the "
-        "case's own.",
+        "case's [operating] values.",
     )
-    p.add_argument("case", help="case file (TOML)")
-    p.add_argument("-o", "--output", help="netCDF file to write (groups /easeoff, /utca)")
-    p.add_argument("--plots", metavar="DIR", help="directory for the PNG plots")
-    p.add_argument("--dE", type=float, help="offset change Delta E [mm]")
-    p.add_argument("--dP", type=float, help="pinion axial displacement Delta P [mm]")
-    p.add_argument("--dG", type=float, help="gear axial displacement Delta G [mm]")
-    p.add_argument("--dSigma", type=float, help="shaft-angle change Delta Sigma [deg]")
-    p.add_argument("--flank", default="drive",
-                   help="drive, coast, or the pinion flank concave/convex (default drive)")
-    p.add_argument("--n-roll", type=int, default=30, help="roll positions per mesh cycle")
+    case_argument(p)
+    misalignment_options(p)
+    flank_option(p, default="drive")
+    rolls_per_cycle_option(p, default=30, alias="--n-roll")
+    output_option(p, default="<case>_utca.nc", what="netCDF file (groups /easeoff, /utca)")
+    plots_option(p)
     p.add_argument("--separation", type=float, default=6.3,
                    help="separation bounding the contact lines [um] (default 6.3)")
     p.add_argument("--method", default="second_order",
@@ -47,19 +53,17 @@ def run_utca(args: argparse.Namespace) -> int:
     import xarray as xr
 
     from contact.io import write_netcdf
+    from contact.pipeline import MISALIGNMENT_REFERENCE, misalignment_attrs, resolve_case
     from contact.utca import unloaded_tca
-    from geometry.case import load_case
 
-    if args.output:
-        check_output_file(args.output)
+    output = default_output(args, "_utca.nc")
+    check_output_file(output)
     if args.plots:
         check_output_dir(args.plots)
-    case = load_case(args.case)
-    mis = case.misalignment
-    given = {"delta_E": args.dE, "delta_P": args.dP, "delta_G": args.dG,
-             "delta_Sigma": None if args.dSigma is None else math.radians(args.dSigma)}
-    mis = dataclasses.replace(mis, **{k: v for k, v in given.items() if v is not None})
-    easeoff, utca = unloaded_tca(case, misalignment=mis, flank=args.flank, n_roll=args.n_roll,
+    case = resolve_case(args.case)
+    mis = misalignment_from_args(args, case.misalignment)
+    easeoff, utca = unloaded_tca(case, misalignment=mis, flank=args.flank,
+                                 n_roll=args.rolls_per_cycle,
                                  separation=args.separation * 1e-3,
                                  grid={"nu": args.nu, "nv": args.nv}, method=args.method)
     m1, m2 = utca["transition_roll"].values
@@ -71,13 +75,14 @@ def run_utca(args: argparse.Namespace) -> int:
           f"UTE peak-to-peak {float(utca['peak_to_peak_transmission_error']):.3f} urad; "
           f"transitions M1 {m1:.5f} rad, M2 {m2:.5f} rad; "
           f"longest contact line {float(utca['contact_line_length'].max()):.2f} mm")
-    inputs = case.to_toml()
-    if args.output:
-        tree = xr.DataTree.from_dict({
-            "/": xr.Dataset(attrs={"case": case.name, "title": "unloaded TCA"}),
-            "/easeoff": easeoff, "/utca": utca})
-        path = write_netcdf(tree, Path(args.output), inputs=inputs)
-        print(f"wrote {path}")
+    inputs = dataclasses.replace(case, misalignment=mis).to_toml()
+    tree = xr.DataTree.from_dict({
+        "/": xr.Dataset(attrs={"case": case.name, "title": "unloaded TCA",
+                               **misalignment_attrs(mis)}),
+        "/easeoff": easeoff.assign_attrs(misalignment=MISALIGNMENT_REFERENCE),
+        "/utca": utca.assign_attrs(misalignment=MISALIGNMENT_REFERENCE)})
+    path = write_netcdf(tree, Path(output), inputs=inputs)
+    print(f"wrote {path}")
     if args.plots:
         from contact.plots import plot_utca
 

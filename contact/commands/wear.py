@@ -3,10 +3,25 @@
 from __future__ import annotations
 
 import argparse
-import sys
+import dataclasses
 from pathlib import Path
 
+from contact.commands.options import (
+    case_argument,
+    default_output,
+    misalignment_from_args,
+    misalignment_options,
+    output_option,
+    progress_option,
+    rolls_per_cycle_option,
+    segments_option,
+    solver_option,
+    torque_option,
+)
 from contact.output_paths import check_output_file
+
+#: pinion torque of ``ltca wear`` without ``--torque`` [N·m] (the seed's Table 4.2)
+WEAR_TORQUE = 200.0
 
 #: Place in ``ltca --help``.
 ORDER = 17
@@ -24,50 +39,53 @@ def register(sub) -> None:
         "removes it, times the step's load cycles, from the deviation grids. Writes a netCDF "
         "over the steps (deviation grids, TE, peak pressure, pattern).",
     )
-    p.add_argument("case", nargs="?", default=None,
-                   help="case file (TOML) or bundled case name (default: the 11x41 pair)")
+    case_argument(p, what="wear")
     p.add_argument("--cycles", type=float, required=True,
                    help="load cycles in all (pinion revolutions)")
     p.add_argument("--wear-coefficient", type=float, required=True, metavar="K",
                    help="dimensional Archard wear coefficient k [m^2/N] (= m^3/(N m))")
     p.add_argument("--steps", type=int, default=5, help="wear steps (default %(default)s)")
-    p.add_argument("--torque", type=float, default=200.0, metavar="N_M",
-                   help="pinion torque [N m] (default %(default)g, the seed's Table 4.2)")
+    torque_option(p, many=False, default="200, the seed's Table 4.2")
+    misalignment_options(p)
+    solver_option(p)
     p.add_argument("--no-deviations", action="store_true",
                    help="start from the theoretical surfaces, not the case's [deviations]")
-    p.add_argument("--rolls-per-cycle", type=int, default=20)
-    p.add_argument("--segments", type=int, default=24, help="segments per contact curve")
-    p.add_argument("-o", "--output", default="wear.nc",
-                   help="netCDF file of the steps (default %(default)s)")
+    rolls_per_cycle_option(p)
+    segments_option(p)
+    output_option(p, default="<case>_wear.nc", what="netCDF file of the steps")
     p.add_argument("--deviations-out", default=None, metavar="FILE",
                    help="also write the worn (pinion, gear) grids of the last step as a "
                    "deviation netCDF (for `ltca run --deviations FILE FILE`)")
-    p.add_argument("--no-progress", action="store_true")
+    progress_option(p)
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
+    from contact.commands.run import ltca_options
     from contact.deviation_files import write_deviation_netcdf
     from contact.io import write_netcdf
-    from contact.ltca import LTCAOptions
     from contact.pipeline import resolve_case
     from contact.wear import final_deviations, simulate_wear
 
-    check_output_file(args.output)
+    output = default_output(args, "_wear.nc")
+    check_output_file(output)
     if args.deviations_out:
         check_output_file(args.deviations_out, option="--deviations-out")
     case = resolve_case(args.case)
+    case = dataclasses.replace(case, misalignment=misalignment_from_args(args,
+                                                                         case.misalignment))
+    torque = WEAR_TORQUE if args.torque is None else args.torque
     ds = simulate_wear(
         case,
-        args.torque,
+        torque,
         wear_coefficient=args.wear_coefficient,
         cycles=args.cycles,
         steps=args.steps,
-        options=LTCAOptions(rolls_per_cycle=args.rolls_per_cycle, segments=args.segments),
+        options=ltca_options(args),
         deviations=False if args.no_deviations else None,
-        progress=not args.no_progress and sys.stderr.isatty(),
+        progress=not args.no_progress,
     )
     rows = [
         (int(s), f"{ds['cycles'].values[i]:.4g}", f"{1e3 * ds['max_pinion_depth'].values[i]:.3f}",
@@ -75,18 +93,18 @@ def run(args: argparse.Namespace) -> int:
          f"{ds['lte_peak_to_peak'].values[i]:.2f}", f"{ds['pressure_max_flank'].values[i]:.0f}")
         for i, s in enumerate(ds["step"].values)
     ]
-    print(f"case {case.name}: wear at {args.torque:g} N m, k = {args.wear_coefficient:g} m^2/N, "
+    print(f"case {case.name}: wear at {torque:g} N m, k = {args.wear_coefficient:g} m^2/N, "
           f"{args.cycles:g} cycles in {args.steps} steps")
     print(tabulate(rows, headers=["step", "cycles", "pinion depth [um]", "gear depth [um]",
                                   "UTE p-p [urad]", "LTE p-p [urad]", "p_max [MPa]"],
                    tablefmt="github"))
-    path = write_netcdf(ds, Path(args.output), inputs=case.to_toml())
+    path = write_netcdf(ds, Path(output), inputs=case.to_toml())
     print(f"wrote {path}")
     if args.deviations_out:
         pin, gear = final_deviations(ds)
         out = write_deviation_netcdf(
             args.deviations_out, pinion=pin, gear=gear,
             description=f"simulated wear of {case.name}: {args.cycles:g} cycles at "
-            f"{args.torque:g} N m, k = {args.wear_coefficient:g} m^2/N (ltca wear)")
+            f"{torque:g} N m, k = {args.wear_coefficient:g} m^2/N (ltca wear)")
         print(f"wrote {out}")
     return 0

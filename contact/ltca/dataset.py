@@ -15,7 +15,6 @@ json_misalignment   a Misalignment as JSON text
 
 from __future__ import annotations
 
-import dataclasses
 import json
 
 import numpy as np
@@ -310,6 +309,7 @@ def _edge_loaded(loaded: np.ndarray, valid: np.ndarray) -> np.ndarray:
 
 
 def json_misalignment(m) -> str:
-    """A Misalignment as JSON text (ΔE, ΔP, ΔG [mm], ΔΣ [rad])."""
+    """A Misalignment as JSON text, names with units (ΔE, ΔP, ΔG [mm], ΔΣ [deg]:
+    :meth:`geometry.assembly.Misalignment.labelled`), as the UTCA datasets record it."""
 
-    return json.dumps(dataclasses.asdict(m), sort_keys=True, default=float)
+    return json.dumps(m.labelled())

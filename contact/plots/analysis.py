@@ -106,10 +106,14 @@ def render_figures(figures: Iterable[NamedFigure], dpi: int = DPI) -> Iterator[R
 
 
 def _group(tree: xr.DataTree, path: str) -> xr.Dataset | None:
+    """A group as a Dataset, with the root's misalignment attributes (stored once at the
+    root of an analysis file) for the figures' titles."""
     try:
-        return tree[path].to_dataset()
+        ds = tree[path].to_dataset()
     except KeyError:
         return None
+    root = {k: v for k, v in tree.attrs.items() if k.startswith("misalignment_")}
+    return ds.assign_attrs(root) if root else ds
 
 
 def _deviation_specs(tree: xr.DataTree, eo, ut, lt) -> Iterator[FigureSpec]:
@@ -235,7 +239,17 @@ def _render(spec: FigureSpec, dpi: int) -> RenderedFigure:
     return RenderedFigure(spec.name, spec.caption, png_bytes(spec.draw(), dpi))
 
 
-def render_analysis(tree: xr.DataTree, workers: int = 1, dpi: int = DPI) -> list[RenderedFigure]:
+def _bar(total: int, progress: bool, desc: str = "figures"):
+    """A tqdm bar over the figures (None without ``progress``)."""
+    if not progress:
+        return None
+    from tqdm.auto import tqdm
+
+    return tqdm(total=total, desc=desc, unit="figure", leave=False)
+
+
+def render_analysis(tree: xr.DataTree, workers: int = 1, dpi: int = DPI,
+                    progress: bool = False) -> list[RenderedFigure]:
     """Every figure of an analysis encoded as PNG, drawn by ``workers`` processes.
 
     Parameters
@@ -245,6 +259,8 @@ def render_analysis(tree: xr.DataTree, workers: int = 1, dpi: int = DPI) -> list
         Processes drawing at once (≥ 1; 1 draws here). The figures are independent, so
         on a machine with that many free cores the wall time falls with them.
     dpi : int
+    progress : bool
+        A tqdm progress bar over the figures.
 
     Returns
     -------
@@ -259,18 +275,31 @@ def render_analysis(tree: xr.DataTree, workers: int = 1, dpi: int = DPI) -> list
     if int(workers) < 1:
         raise InputError(f"workers: must be >= 1, got {workers!r}")
     specs = list(analysis_specs(tree))
-    if workers == 1 or len(specs) < 2:
-        return [_render(s, dpi) for s in specs]
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
+    bar = _bar(len(specs), progress)
+    try:
+        if workers == 1 or len(specs) < 2:
+            out = []
+            for s in specs:
+                out.append(_render(s, dpi))
+                if bar is not None:
+                    bar.update()
+            return out
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor, as_completed
 
-    ctx = multiprocessing.get_context("fork" if "fork" in
-                                      multiprocessing.get_all_start_methods() else None)
-    with ProcessPoolExecutor(max_workers=int(workers), mp_context=ctx) as pool:
-        # the costliest first, so the last figure does not run alone
-        order = sorted(range(len(specs)), key=lambda i: -_COST.get(specs[i].name, 1.0))
-        futures = {i: pool.submit(_render, specs[i], dpi) for i in order}
-        return [futures[i].result() for i in range(len(specs))]
+        ctx = multiprocessing.get_context("fork" if "fork" in
+                                          multiprocessing.get_all_start_methods() else None)
+        with ProcessPoolExecutor(max_workers=int(workers), mp_context=ctx) as pool:
+            # the costliest first, so the last figure does not run alone
+            order = sorted(range(len(specs)), key=lambda i: -_COST.get(specs[i].name, 1.0))
+            futures = {i: pool.submit(_render, specs[i], dpi) for i in order}
+            for _ in as_completed(futures.values()):
+                if bar is not None:
+                    bar.update()
+            return [futures[i].result() for i in range(len(specs))]
+    finally:
+        if bar is not None:
+            bar.close()
 
 
 #: relative drawing cost of the figures (benchmarks/plots.py), to start the costly first
@@ -285,9 +314,10 @@ def _write(figures, directory: str | os.PathLike[str]) -> list[Path]:
 
 
 def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
-                  workers: int = 1) -> list[Path]:
+                  workers: int = 1, progress: bool = False) -> list[Path]:
     """Write every figure of an analysis (:func:`analysis_figures`) as PNG into ``directory``
-    (created if missing) and return the paths; ``workers`` processes draw them.
+    (created if missing) and return the paths; ``workers`` processes draw them
+    (``progress``: a tqdm bar over the figures).
 
     Raises
     ------
@@ -297,7 +327,7 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
     d = Path(directory)
     d.mkdir(parents=True, exist_ok=True)
     out = []
-    for rf in render_analysis(tree, workers):
+    for rf in render_analysis(tree, workers, progress=progress):
         with atomic_path(d / f"{rf.name}.png") as tmp:
             tmp.write_bytes(rf.png)
         out.append(d / f"{rf.name}.png")
@@ -343,7 +373,13 @@ def efficiency_map_figures(emap: xr.Dataset) -> Iterator[NamedFigure]:
                           efficiency_roughness_figure(emap))
 
 
-def plot_efficiency_map(emap: xr.Dataset, directory: str | os.PathLike[str]) -> list[Path]:
+def plot_efficiency_map(emap: xr.Dataset, directory: str | os.PathLike[str],
+                        progress: bool = False) -> list[Path]:
     """Write the figures of an efficiency map as PNGs into ``directory`` (created if
-    missing) and return the paths."""
-    return _write(efficiency_map_figures(emap), directory)
+    missing) and return the paths (``progress``: a tqdm bar over the figures)."""
+    figures = efficiency_map_figures(emap)
+    if progress:
+        from tqdm.auto import tqdm
+
+        figures = tqdm(figures, desc="figures", unit="figure", leave=False)
+    return _write(figures, directory)

@@ -209,8 +209,12 @@ def axis_label(da: xr.DataArray, name: str | None = None) -> str:
 
 
 def _misalignment(attrs) -> dict[str, float] | None:
-    """ΔE, ΔP, ΔG [mm], ΔΣ [deg] from a group's ``misalignment`` JSON or the root's
-    ``misalignment_d*`` attributes (None if the dataset records none)."""
+    """ΔE, ΔP, ΔG [mm], ΔΣ [deg] from the root's ``misalignment_delta_*`` attributes (where
+    an analysis file stores it once), a standalone group's ``misalignment`` JSON, or the
+    attributes of files written before (None if the dataset records none)."""
+    if "misalignment_delta_E_mm" in attrs:
+        return {k: float(attrs.get(f"misalignment_delta_{k}_{u}", 0.0))
+                for k, u in (("E", "mm"), ("P", "mm"), ("G", "mm"), ("Sigma", "deg"))}
     raw = attrs.get("misalignment")
     if isinstance(raw, str):
         try:
@@ -224,7 +228,7 @@ def _misalignment(attrs) -> dict[str, float] | None:
                      else np.degrees(get("delta_Sigma")))
             return {"E": get("delta_E_mm", "delta_E"), "P": get("delta_P_mm", "delta_P"),
                     "G": get("delta_G_mm", "delta_G"), "Sigma": float(sigma)}
-    if "misalignment_dE_mm" in attrs:
+    if "misalignment_dE_mm" in attrs:  # files of hypoid-ltca before issue 21
         return {"E": float(attrs["misalignment_dE_mm"]),
                 "P": float(attrs.get("misalignment_dP_mm", 0.0)),
                 "G": float(attrs.get("misalignment_dG_mm", 0.0)),
@@ -233,14 +237,15 @@ def _misalignment(attrs) -> dict[str, float] | None:
 
 
 def misalignment_text(attrs) -> str:
-    """``"ΔE −0.15, ΔP +0.12 mm"`` (the non-zero errors; ``"aligned"`` if none)."""
+    """``"ΔE −0.15, ΔP +0.12 mm, ΔΣ +0.05°"`` (the non-zero errors; ``"aligned"`` if none;
+    ΔΣ in degrees, as typed on the command line and in case files)."""
     m = _misalignment(attrs)
     if m is None:
         return ""
     parts = [f"Δ{k} {m[k]:+.3g}" for k in ("E", "P", "G") if m[k]]
     text = ", ".join(parts) + (" mm" if parts else "")
     if m["Sigma"]:
-        text += f"{', ' if parts else ''}ΔΣ {m['Sigma'] * 60:+.3g}′"
+        text += f"{', ' if parts else ''}ΔΣ {m['Sigma']:+.3g}°"
     return (text or "aligned").replace("-", "−")
 
 

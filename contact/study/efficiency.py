@@ -31,6 +31,10 @@ class EfficiencyInputs:
     operating : friction.operating.OperatingConditions
         Lubricant and friction model (speed, temperature, roughness swept).
     speed, temperature, roughness : tuple of float — [rpm], [degC], [µm]
+    flank : str or None
+        The pinion flank in contact (None: drive).
+    progress : bool
+        A progress bar over each torque's roll positions (useful in this process only).
     """
 
     case: Case
@@ -39,6 +43,8 @@ class EfficiencyInputs:
     speed: tuple[float, ...]
     temperature: tuple[float, ...]
     roughness: tuple[float, ...]
+    flank: str | None = None
+    progress: bool = False
 
 
 def efficiency_at_torque(shared: EfficiencyInputs, index: int,
@@ -73,7 +79,8 @@ def efficiency_at_torque(shared: EfficiencyInputs, index: int,
     """
     from friction.efficiency import efficiency_analysis, extrapolated_segments
 
-    lt = loaded_tca(shared.case, [float(torque)], options=shared.options)
+    lt = loaded_tca(shared.case, [float(torque)], options=shared.options, flank=shared.flank,
+                    progress=shared.progress)
     shape = (len(shared.speed), len(shared.temperature), len(shared.roughness))
     out = {k: np.full(shape, np.nan) for k in ("efficiency", "power_loss",
                                                "friction_coefficient_mean",

@@ -112,7 +112,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
             dataclasses.replace(case, misalignment=misalignment_of(case.misalignment, point)),
             list(shared.torque), flank=shared.flank, options=shared.options,
             deviations=shared.deviations_at(point.get("deviation_scale")), geometry=False,
-            theoretical=False)
+            theoretical=False, operating=False)
         friction = []
         if shared.speed:
             ltca = tree["/ltca"].to_dataset()

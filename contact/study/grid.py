@@ -63,7 +63,8 @@ def study_inputs(
         Pinion speeds of an efficiency stage (default none).
     operating : friction.operating.OperatingConditions, optional
         Lubricant, oil temperature, roughness, friction model of the efficiency stage
-        (default ``OperatingConditions()`` when a speed is given).
+        (default the case's ``[operating]`` oil, temperature, roughness and friction model
+        when a speed is given).
     options : contact.ltca.LTCAOptions, optional
     flank : str, optional
         ``"drive"`` (default) or ``"coast"``.
@@ -91,7 +92,8 @@ def study_inputs(
     if operating is not None and not isinstance(operating, OperatingConditions):
         raise InputError("operating: must be a friction.operating.OperatingConditions or "
                          f"None, got {type(operating).__name__}")
-    op = operating if operating is not None or not speeds else OperatingConditions()
+    op = operating if operating is not None or not speeds else OperatingConditions.from_point(
+        c.operating, pinion_speed=speeds[0])
     if options is not None and not isinstance(options, LTCAOptions):
         raise InputError("options: must be a contact.ltca.LTCAOptions or None, got "
                          f"{type(options).__name__}")

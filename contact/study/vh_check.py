@@ -166,7 +166,7 @@ def vh_check(
     nominal = run_analysis(c, [float(torque)], misalignment=Misalignment(
         delta_G=mis.delta_G, delta_Sigma=mis.delta_Sigma),
         flank=flank, options=shared.options, deviations=shared.deviations_at(None),
-        geometry=False, theoretical=False)
+        geometry=False, theoretical=False, operating=False)
     nom = point_summary(nominal, c)
     v_target = float(nom["pattern_centre_v"][0]) if profile is None else float(profile)
     if not np.isfinite(v_target):
@@ -194,7 +194,7 @@ def vh_check(
                                                        delta_G=mis.delta_G,
                                                        delta_Sigma=mis.delta_Sigma),
             flank=flank, options=shared.options, deviations=shared.deviations_at(None),
-            geometry=False, theoretical=False)
+            geometry=False, theoretical=False, operating=False)
         s = point_summary(tree, c)
         centres.append((float(s["pattern_centre_u"][0]), float(s["pattern_centre_v"][0])))
         envelopes.append(tree["/ltca"]["pressure_envelope"].values[0])

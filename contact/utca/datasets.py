@@ -505,10 +505,9 @@ def _utca_attrs(eo: EaseOff, case: Case, mis: Misalignment, method: str) -> dict
 
 
 def _misalignment_json(mis: Misalignment) -> str:
-    """The misalignment as the JSON text of the datasets' ``misalignment`` attribute."""
-    return json.dumps({"delta_E_mm": mis.delta_E, "delta_P_mm": mis.delta_P,
-                       "delta_G_mm": mis.delta_G,
-                       "delta_Sigma_deg": math.degrees(mis.delta_Sigma)})
+    """The misalignment as the JSON text of the datasets' ``misalignment`` attribute
+    (:meth:`geometry.assembly.Misalignment.labelled`: mm and deg)."""
+    return json.dumps(mis.labelled())
 
 
 def _stretch(sep, pos, k):

@@ -1,0 +1,304 @@
+"""The options the ``ltca`` commands share, written once: same name, same meaning everywhere.
+
+Each function adds one option (or one group of options) to a sub-command's parser; the
+commands call them instead of spelling the options themselves, so ``--torque``,
+``--dE/--dP/--dG/--dSigma``, ``--rolls-per-cycle``, ``-o FILE``, ``--plots DIR``,
+``--solver``, ``--flank`` and the operating conditions read the same in every
+``ltca COMMAND --help``. Old spellings that scripts may use stay as hidden aliases
+(:func:`deprecated_alias`) that warn once.
+
+Units at this boundary: lengths [mm], ΔΣ [deg] (as in case files; ``Misalignment`` holds
+rad), torques [N m], speeds [rpm], temperatures [degC], roughness [um].
+
+Public functions
+----------------
+case_argument           the positional CASE: a case file or a bundled name (default case)
+analysis_file_argument  the positional FILE of ``plot``/``report``: a netCDF file or a case name
+torque_option           --torque
+misalignment_options    --dE --dP --dG --dSigma (numbers, ranges or distributions)
+misalignment_from_args  a Misalignment from those numbers over a base
+operating_options       --speed --lubricant --temperature --roughness --friction-model
+rolls_per_cycle_option  --rolls-per-cycle (alias --n-roll)
+segments_option         --segments
+flank_option            --flank
+solver_option           --solver
+output_option           -o/--output FILE
+default_output          the output path named after the case unless -o was given
+plots_option            --plots DIR
+progress_option         --no-progress
+verbosity_options       -v/--verbose, -q/--quiet (accepted before and after the command)
+deprecated_alias        a hidden old spelling of an option that warns when used
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from pathlib import Path
+
+__all__ = [
+    "FLANK_CHOICES",
+    "analysis_file_argument",
+    "case_argument",
+    "case_stem",
+    "default_output",
+    "deprecated_alias",
+    "flank_option",
+    "misalignment_from_args",
+    "misalignment_options",
+    "operating_options",
+    "output_option",
+    "plots_option",
+    "progress_option",
+    "rolls_per_cycle_option",
+    "segments_option",
+    "solver_option",
+    "torque_option",
+    "verbosity_options",
+]
+
+#: ``--flank``: the pinion flank in contact, by role or by name (contact.utca.easeoff)
+FLANK_CHOICES = ("drive", "coast", "concave", "convex")
+
+#: ``--dE`` … → (Misalignment field, unit typed, factor to the field's unit, meaning)
+MISALIGNMENT_OPTIONS = {
+    "dE": ("delta_E", "mm", 1.0, "offset change ΔE (V), positive increases the offset"),
+    "dP": ("delta_P", "mm", 1.0, "pinion axial displacement ΔP (H), positive away from the "
+           "mesh"),
+    "dG": ("delta_G", "mm", 1.0, "gear axial displacement ΔG, positive away from the mesh"),
+    "dSigma": ("delta_Sigma", "deg", math.pi / 180.0,
+               "shaft-angle change ΔΣ, positive increases the shaft angle"),
+}
+
+
+class _Deprecated(argparse.Action):
+    """Store into ``dest`` like the new option, and say on stderr that the spelling is old."""
+
+    def __init__(self, option_strings, dest, new: str = "", const_value=None, **kw):
+        self.new = new
+        self.const_value = const_value
+        super().__init__(option_strings, dest, **kw)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        print(f"ltca: warning: {option_string} is deprecated and will be removed; use "
+              f"{self.new}", file=sys.stderr)
+        setattr(namespace, self.dest, self.const_value if self.nargs == 0 else values)
+
+
+def deprecated_alias(p: argparse.ArgumentParser, old: str, new: str, dest: str, *,
+                     type=None, nargs=None) -> None:
+    """A hidden option ``old`` that stores into ``dest`` as ``new`` does and warns.
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+    old, new : str
+        The old spelling (hidden from ``--help``) and the one that replaces it.
+    dest : str
+        The destination of ``new``.
+    """
+    kw = {"type": type} if type is not None else {}
+    if nargs is not None:
+        kw["nargs"] = nargs
+    p.add_argument(old, dest=dest, action=_Deprecated, new=new, help=argparse.SUPPRESS,
+                   default=argparse.SUPPRESS, **kw)
+
+
+def case_argument(p: argparse.ArgumentParser, *, many: bool = False,
+                  what: str = "analyse") -> None:
+    """The positional ``CASE``: a case file (TOML) or a bundled case name (``ltca cases``);
+    default the bundled default case (``many``: every bundled case)."""
+    default = "every bundled case" if many else "the bundled default case, " \
+        "kolivand2009_fm_11x41"
+    p.add_argument("case", nargs="*" if many else "?", default=None, metavar="CASE",
+                   help=f"case to {what}: a case file (TOML) or a bundled case name "
+                        f"(`ltca cases`); default {default}")
+
+
+def analysis_file_argument(p: argparse.ArgumentParser, *, written_by: str = "ltca run") -> None:
+    """The positional ``FILE`` of a command that reads an analysis file: a netCDF path, or
+    a case name whose ``<name>.nc`` (what ``ltca run NAME`` writes) is read; default the
+    default case's file."""
+    p.add_argument("file", nargs="?", default=None, metavar="FILE",
+                   help=f"netCDF file written by `{written_by}`, or a case name for "
+                        "<name>.nc in this directory (default kolivand2009_fm_11x41.nc, what "
+                        "a bare `ltca run` writes)")
+
+
+def resolve_analysis_file(arg: str | None) -> Path:
+    """The file of :func:`analysis_file_argument`: ``arg`` if it is a file, else
+    ``<arg>.nc``; None gives the default case's ``<name>.nc``.
+
+    Raises
+    ------
+    InputError
+        Neither exists (the message says which command writes it).
+    """
+    from contact.pipeline import DEFAULT_CASE
+    from geometry.errors import InputError
+
+    name = arg if arg is not None else DEFAULT_CASE.removesuffix(".toml")
+    path = Path(name)
+    if path.is_file():
+        return path
+    named = Path(f"{path.name.removesuffix('.toml')}.nc")
+    if path.suffix in ("", ".toml") and named.is_file():
+        return named
+    tried = repr(str(path)) if named == path else f"{str(path)!r} nor {str(named)!r}"
+    raise InputError(f"FILE: no such file {tried} (`ltca run CASE` writes CASE.nc)")
+
+
+def torque_option(p: argparse.ArgumentParser, *, many: bool = True,
+                  default: str = "the case's [operating] torques") -> None:
+    """``--torque N_M [N_M ...]``: pinion torques [N m]."""
+    p.add_argument("--torque", type=float, nargs="+" if many else None, default=None,
+                   metavar="N_M", help=f"pinion torque{'s' if many else ''} [N m] "
+                                       f"(default {default})")
+
+
+def misalignment_options(p: argparse.ArgumentParser, *, kind: str = "value",
+                         default: str = "the case's [operating] values",
+                         extra: dict[str, str] | None = None) -> None:
+    """``--dE --dP --dG [mm] --dSigma [deg]``: misalignments over the case's.
+
+    Parameters
+    ----------
+    kind : {"value", "range", "distribution"}
+        A number each (``ltca run``), a ``START:STOP:N`` range (``ltca sweep``) or a
+        distribution (``ltca tolerance``).
+    default : str
+        What an option not given means (for the help).
+    extra : dict, optional
+        Option → help text replacing the generic one (e.g. ``vh-check``'s V, H grids).
+    """
+    g = p.add_argument_group("misalignment (ΔE, ΔP, ΔG in mm; ΔΣ in deg, as in case files)")
+    metavar = {"value": None, "range": "RANGE", "distribution": "DIST"}[kind]
+    for opt, (_field, unit, _factor, meaning) in MISALIGNMENT_OPTIONS.items():
+        if extra is not None and opt not in extra:
+            continue
+        text = (extra or {}).get(opt) or f"{meaning} [{unit}] (default {default})"
+        kw = ({"type": float, "metavar": unit.upper()} if kind == "value"
+              else {"metavar": metavar})
+        g.add_argument(f"--{opt}", default=None, help=text, **kw)
+
+
+def misalignment_from_args(args: argparse.Namespace, base):
+    """A Misalignment from ``--dE --dP --dG [mm] --dSigma [deg]`` over ``base``.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        With ``dE``, ``dP``, ``dG``, ``dSigma`` (None: not given).
+    base : geometry.assembly.Misalignment or None
+        The values of the options not given (None: aligned).
+
+    Returns
+    -------
+    geometry.assembly.Misalignment or None
+        ``base`` when no option is given.
+    """
+    from geometry.assembly import Misalignment
+
+    given = {opt: getattr(args, opt, None) for opt in MISALIGNMENT_OPTIONS}
+    if all(v is None for v in given.values()):
+        return base
+    kw = {} if base is None else {f: getattr(base, f) for f, *_ in
+                                  MISALIGNMENT_OPTIONS.values()}
+    for opt, value in given.items():
+        field, _unit, factor, _ = MISALIGNMENT_OPTIONS[opt]
+        if value is not None:
+            kw[field] = value * factor
+    return Misalignment(**kw)
+
+
+def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
+                      speed_help: str = "") -> None:
+    """``--speed --lubricant --temperature --roughness --friction-model``: the efficiency
+    stage's conditions, each defaulting to the case's ``[operating]`` table."""
+    g = p.add_argument_group("operating conditions of the efficiency stage (default: the "
+                             "case's [operating] table)")
+    nargs = "+" if many else None
+    g.add_argument("--speed", type=float, nargs=nargs, default=None, metavar="RPM",
+                   help=speed_help or "pinion speed [rpm] (0: no efficiency stage)")
+    g.add_argument("--lubricant", default=None, help="bundled oil name or oil TOML file")
+    g.add_argument("--temperature", type=float, nargs=nargs, default=None, metavar="DEGC",
+                   help="oil inlet temperature [degC]")
+    g.add_argument("--roughness", type=float, nargs=nargs, default=None, metavar="UM",
+                   help="RMS roughness Rq of each flank [um]")
+    g.add_argument("--friction-model", default=None, help="friction coefficient model")
+
+
+def rolls_per_cycle_option(p: argparse.ArgumentParser, default: int | None = None,
+                           alias: str | None = None) -> None:
+    """``--rolls-per-cycle N``: roll positions per mesh cycle (``alias``: an old spelling)."""
+    text = "the LTCA's, 20" if default is None else str(default)
+    p.add_argument("--rolls-per-cycle", type=int, default=default, metavar="N",
+                   help=f"roll positions per mesh cycle (default {text})")
+    if alias:
+        deprecated_alias(p, alias, "--rolls-per-cycle", "rolls_per_cycle", type=int)
+
+
+def segments_option(p: argparse.ArgumentParser) -> None:
+    """``--segments N``: segments per contact curve (default the LTCA's, 24)."""
+    p.add_argument("--segments", type=int, default=None, metavar="N",
+                   help="segments per contact curve (default the LTCA's, 24)")
+
+
+def flank_option(p: argparse.ArgumentParser, default: str | None = None) -> None:
+    """``--flank``: the pinion flank in contact, ``drive``/``coast`` or by name."""
+    p.add_argument("--flank", choices=FLANK_CHOICES, default=default,
+                   help="pinion flank in contact: drive, coast, or by name concave/convex "
+                        "(default drive)")
+
+
+def solver_option(p: argparse.ArgumentParser) -> None:
+    """``--solver NAME``: the contact solver (default the exact ``active_set``)."""
+    p.add_argument("--solver", default=None, metavar="NAME",
+                   help="contact solver (default active_set; `ltca compare-solvers` lists "
+                        "them)")
+
+
+def output_option(p: argparse.ArgumentParser, *, default: str, what: str = "netCDF file",
+                  metavar: str = "FILE") -> None:
+    """``-o/--output FILE``; ``default`` describes the name used without it."""
+    p.add_argument("-o", "--output", default=None, metavar=metavar,
+                   help=f"{what} to write (default {default})")
+
+
+def case_stem(case: str | None) -> str:
+    """The name a CASE argument's outputs are named after, known before the case is
+    loaded (so output paths are checked before any work): the bundled name, or the case
+    file's name without ``.toml``; None the default case's."""
+    from contact.pipeline import DEFAULT_CASE
+
+    return Path(DEFAULT_CASE if case is None else case).name.removesuffix(".toml")
+
+
+def default_output(args: argparse.Namespace, suffix: str = ".nc") -> str:
+    """``-o`` if given, else the file named after the case: ``<case><suffix>``
+    (:func:`case_stem` of ``args.case``)."""
+    return args.output if args.output else f"{case_stem(args.case)}{suffix}"
+
+
+def plots_option(p: argparse.ArgumentParser, default: str | None = None) -> None:
+    """``--plots DIR``: directory of the PNG figures (created if missing)."""
+    p.add_argument("--plots", default=default, metavar="DIR",
+                   help="write the PNG figures into DIR" +
+                        (f" (default {default})" if default else ""))
+
+
+def progress_option(p: argparse.ArgumentParser) -> None:
+    """``--no-progress`` (progress bars show only on a terminal and without ``-q``)."""
+    p.add_argument("--no-progress", action="store_true",
+                   help="no progress bars (they show only on a terminal, and not with -q)")
+
+
+def verbosity_options(p: argparse.ArgumentParser, *, top: bool = False) -> None:
+    """``-v/--verbose`` (repeatable) and ``-q/--quiet``; on the top parser and on every
+    sub-command, so they are accepted before and after the command (counted together)."""
+    suffix = "" if top else "_sub"
+    p.add_argument("-v", "--verbose", action="count", default=0, dest=f"verbose{suffix}",
+                   help="more log output (-v info, -vv debug)")
+    p.add_argument("-q", "--quiet", action="store_true", dest=f"quiet{suffix}",
+                   help="warnings and errors only, no progress bars")

@@ -1,0 +1,105 @@
+"""The README walk-through runs as printed, from a directory that is not the repository.
+
+Every command of the walk-through's ``bash`` block is parsed from README.md and run, in
+order, through :func:`contact.cli.main` from an empty temporary directory, so a bundled
+name or a ``cases/…`` path that only resolves inside a clone fails here, and so does a
+command that reads a file an earlier one did not write under that name (``ltca plot
+kolivand2009_fm_11x41.nc`` after ``ltca run``).
+
+Reduced resolution (the CI budget): options appended to a command replace the printed
+ones (argparse keeps the last), and only the resolution changes — fewer roll positions,
+torques, speeds, grid points, draws and steps, studies in this process, ``ltca run``
+without its efficiency stage — never the command's case, files or other options.
+:data:`REDUCED` lists them. The commands whose cost no option reduces enough (the
+synthesis, the Dask studies) run in the ``slow`` test; the CI test runs the others, in
+order, and checks that the slow ones parse.
+"""
+
+from __future__ import annotations
+
+import re
+import shlex
+from pathlib import Path
+
+import pytest
+
+from contact.cli import attach_negative_values, build_parser, main
+
+README = Path(__file__).resolve().parent.parent / "README.md"
+
+#: command → options appended to it (the same options at a lower resolution)
+REDUCED: dict[str, list[str]] = {
+    "run": ["--rolls-per-cycle", "4", "--segments", "8", "--torque", "50", "--speed", "0"],
+    "plot": [],
+    "report": [],
+    "cases": [],
+    "utca": ["--rolls-per-cycle", "8", "--nu", "15", "--nv", "9"],
+    "geometry": ["--nu", "9", "--nv", "5"],
+    "synthesize": [],
+    "compare-solvers": ["--rolls-per-cycle", "4", "--torque", "50", "--solvers", "active_set"],
+    "efficiency-map": ["--rolls-per-cycle", "4", "--segments", "8", "--torque", "100",
+                       "--speed", "1500", "--roughness", "0.8"],
+    "wear": ["--rolls-per-cycle", "4", "--segments", "8", "--steps", "1"],
+    "sweep": ["--rolls-per-cycle", "4", "--dE", "-0.1,0.1", "--dP", "0",
+              "--scheduler", "synchronous"],
+    "tolerance": ["--rolls-per-cycle", "4", "-n", "4", "--scheduler", "synchronous"],
+    "vh-check": ["--rolls-per-cycle", "4", "--dE", "-0.4:0.4:3", "--dP", "-0.3:0.3:3",
+                 "--scheduler", "synchronous"],
+}
+
+
+def walkthrough_commands() -> list[list[str]]:
+    """The ``ltca`` commands of the README's walk-through block, as argument lists."""
+    text = README.read_text(encoding="utf-8")
+    section = text[text.index("## Walk-through"):]
+    block = re.search(r"```bash\n(.*?)```", section, flags=re.S).group(1)
+    out = []
+    for line in block.splitlines():
+        words = shlex.split(line, comments=True)
+        if words:
+            assert words[0] == "ltca", line
+            out.append(words[1:])
+    return out
+
+
+COMMANDS = walkthrough_commands()
+#: commands run only by the slow test (each > 10 s even reduced, on one loaded core)
+SLOW = ("synthesize", "sweep", "tolerance", "vh-check")
+
+
+def test_walkthrough_reads_no_repository_path():
+    """No ``cases/…`` path: bundled names work from any directory."""
+    for argv in COMMANDS:
+        assert not any(w.startswith("cases/") for w in argv), argv
+
+
+def test_every_command_is_reduced_and_parses():
+    parser = build_parser()
+    for argv in COMMANDS:
+        assert argv[0] in REDUCED, f"no reduced resolution for `ltca {argv[0]}`"
+        args = parser.parse_args(attach_negative_values([*argv, *REDUCED[argv[0]]]))
+        assert args.command == argv[0]
+
+
+def _run_all(commands, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    for argv in commands:
+        code = main([*argv, *REDUCED[argv[0]], "-q"])
+        out = capsys.readouterr()
+        assert code == 0, f"ltca {' '.join(argv)}: {out.err}"
+
+
+def test_walkthrough_runs_from_a_scratch_directory(tmp_path, monkeypatch, capsys):
+    _run_all([a for a in COMMANDS if a[0] not in SLOW], tmp_path, monkeypatch, capsys)
+    # outputs named after the case, so `ltca plot` redrew the default run
+    assert (tmp_path / "kolivand2009_fm_11x41.nc").is_file()
+    assert (tmp_path / "kolivand2009_table54_B_fh.nc").is_file()
+    assert (tmp_path / "kolivand2009_fm_11x41_utca.nc").is_file()
+    assert (tmp_path / "report.html").is_file()
+    assert any((tmp_path / "figs").glob("*.png"))
+
+
+@pytest.mark.slow
+def test_whole_walkthrough_runs_from_a_scratch_directory(tmp_path, monkeypatch, capsys):
+    _run_all(COMMANDS, tmp_path, monkeypatch, capsys)
+    assert (tmp_path / "my_case.toml").is_file() and (tmp_path / "map.nc").is_file()
