@@ -91,12 +91,23 @@ class FlankOptions:
     approach : float — [mm]
         Elastic approach δ (the separation that bounds the unloaded pattern), default
         0.0063 mm, in (0, 0.1].
+    tip_relief, root_relief : float — [mm]
+        Profile relief of the pinion flank (:mod:`geometry.relief`): normal ease-off added
+        at the flank's tip end and at its root end (the lowest point the gear tip reaches),
+        at the mean section, by the blade's flankrem and toprem. Default 0.015 mm each (the
+        10–30 µm of automotive practice), in [0, 0.2); the file gives them in µm.
+    relief_start : float — [1]
+        Where the relief starts, as the fraction of the way from M to each end (blade
+        heights); default 0.5, in [0, 1).
     """
 
     path_angle: float = math.radians(-45.0)
     te_level: float = 45e-6
     ellipse_length: float = 0.275
     approach: float = 0.0063
+    tip_relief: float = 0.015
+    root_relief: float = 0.015
+    relief_start: float = 0.5
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "path_angle", math.radians(real(
@@ -110,6 +121,13 @@ class FlankOptions:
             low=0.02, high=0.9, low_open=True, high_open=True))
         object.__setattr__(self, "approach", real("approach", self.approach, unit="mm",
                                                   low=0.0, high=0.1, low_open=True))
+        for name in ("tip_relief", "root_relief"):
+            object.__setattr__(self, name, 1e-3 * real(
+                name, 1e3 * real(name, getattr(self, name), unit="mm"), unit="um", low=0.0,
+                high=200.0, high_open=True))
+        object.__setattr__(self, "relief_start", real(
+            "relief_start", self.relief_start, unit="1, fraction of the way from M to the "
+            "flank end", low=0.0, high=1.0, high_open=True))
 
 
 @dataclass(frozen=True)
@@ -301,7 +319,8 @@ def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -
     for k, v in raw.items():
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise InputError(f"{where}.{k}: must be a number, got {v!r}")
-        kw[k] = math.radians(v) if k == "path_angle" else (v * 1e-6 if k == "te_level" else v)
+        kw[k] = (math.radians(v) if k == "path_angle" else v * 1e-6 if k == "te_level"
+                 else v * 1e-3 if k in ("tip_relief", "root_relief") else v)
     try:
         return replace(base, **kw) if base is not None else FlankOptions(**kw)
     except InputError as exc:

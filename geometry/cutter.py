@@ -38,6 +38,7 @@ Public functions
 ----------------
 Blade                    frozen dataclass of one blade's geometry
 profile_sections         the constant-curvature sections of a blade's edge
+working_sections         which of them cut the working flank (all but the edge radius)
 blade_profile            edge point and its first and second s-derivatives in (ρ, h)
 placement_vectors        where a (face-hobbing) blade sits in the head: M, rake-plane lines
 blade_edge               the edge as a space curve in the cutter frame
@@ -73,6 +74,7 @@ __all__ = [
     "placement_vectors",
     "profile_sections",
     "revolution_normal",
+    "working_sections",
 ]
 
 #: side sign σ: +1 for the outside blade (cuts the concave flank), −1 for the inside blade
@@ -381,6 +383,29 @@ def profile_sections(blade: Blade) -> ProfileSections:
         h_ref=np.array(cols[5], dtype=float), psi_ref=np.array(cols[6], dtype=float),
         kappa=np.array(cols[7], dtype=float), corner_above=np.array(cols[8], dtype=bool),
         main=main_index, names=tuple(cols[0]))
+
+
+def working_sections(blade: Blade | ProfileSections) -> list[int]:
+    """Indices of the sections that cut the working flank: the profile and its toprem and
+    flankrem lines (relief, :mod:`geometry.relief`), not the edge radius (the fillet).
+
+    Parameters
+    ----------
+    blade : Blade or ProfileSections
+
+    Returns
+    -------
+    list of int
+        Section indices of :func:`profile_sections`, in order.
+
+    Notes
+    -----
+    The toprem and flankrem corners turn the edge's tangent by a few degrees at most (relief
+    of tens of µm over millimetres of blade), so a field sampled over the working sections
+    is smooth enough for a spline; the fillet's turn of some 65° is not.
+    """
+    sec = blade if isinstance(blade, ProfileSections) else profile_sections(blade)
+    return [k for k, name in enumerate(sec.names) if name != "edge"]
 
 
 def _point_on(ref, h):

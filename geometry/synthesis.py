@@ -41,6 +41,10 @@ From a :class:`geometry.basic_design.BasicDesign` this module builds a complete 
    parabola at ±pitch/4: the contact is followed from M in a few roll steps with the
    conventional TCA's system of seed Eq. 2.14 (:class:`geometry.conventional_tca.ToothPair`,
    scipy Levenberg–Marquardt per roll), with a Newton–Broyden iteration on 6D and 24E.
+7. **Profile relief** (:func:`geometry.relief.relieved_blade`): tip and root relief of the
+   pinion flank (``tip_relief``, ``root_relief``, from ``relief_start`` of the way from M to
+   each end) by the blade's flankrem and toprem, whose corners lie away from M, so that
+   steps 4–6 stay exact.
 
 Public functions
 ----------------
@@ -94,6 +98,7 @@ from geometry.machine import (
     settings_from_poses,
 )
 from geometry.pitch_cone import FaceHobbingTrace, face_hobbing_trace
+from geometry.relief import relieved_blade
 
 __all__ = [
     "FlankPoint",
@@ -1174,6 +1179,10 @@ def _blade_table(b: Blade) -> dict[str, Any]:
     if b.profile != "straight":
         out.update(profile=b.profile, profile_radius=b.profile_radius,
                    profile_reference_height=b.profile_reference_height)
+    for rem in ("toprem", "flankrem"):
+        if getattr(b, f"{rem}_angle"):
+            out.update({f"{rem}_angle": math.degrees(getattr(b, f"{rem}_angle")),
+                        f"{rem}_height": getattr(b, f"{rem}_height")})
     if b.placed:
         out.update(blade_phase=math.degrees(b.blade_phase),
                    blade_offset_angle=math.degrees(b.blade_offset_angle))
@@ -1314,7 +1323,12 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
                        phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
                        pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
                        ratio=z1 / geom.gear.z)
-    return FlankSynthesis(pf, fo, a21, mp, ls, tools)
+    # step 7, profile relief: flankrem and toprem beyond corners above and below M, so the
+    # flank near M (and with it steps 4-6) is unchanged (geometry.relief)
+    blade = relieved_blade(tools.blade, tools.settings, pair.pinion_blank, pair.pinion_hand,
+                           pair.gear_blank, tip_relief=fo.tip_relief,
+                           root_relief=fo.root_relief, start=fo.relief_start)
+    return FlankSynthesis(pf, fo, a21, mp, ls, tools._replace(blade=blade))
 
 
 def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
@@ -1450,7 +1464,9 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
         parts.append(
             f"Pinion {pf}: path angle {_fmt(math.degrees(o.path_angle))} deg, TE "
             f"{_fmt(o.te_level * 1e6)} urad at +/-1 pitch (a21 {fs.a21:.4g}), ellipse "
-            f"{_fmt(o.ellipse_length)} x b2 at {_fmt(o.approach * 1e3)} um; "
+            f"{_fmt(o.ellipse_length)} x b2 at {_fmt(o.approach * 1e3)} um, tip/root "
+            f"relief {_fmt(o.tip_relief * 1e3)}/{_fmt(o.root_relief * 1e3)} um from "
+            f"{_fmt(o.relief_start)} of the way to the ends; "
             f"curvature residual {fs.tools.shape_error:.1g} 1/mm.")
     return " ".join(parts)
 
@@ -1478,6 +1494,9 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             "a21": fs.a21,
             "ellipse_length": fs.options.ellipse_length,
             "approach_mm": fs.options.approach,
+            "tip_relief_um": round(fs.options.tip_relief * 1e3, 9),
+            "root_relief_um": round(fs.options.root_relief * 1e3, 9),
+            "relief_start": fs.options.relief_start,
             "gear_rotation_deg": math.degrees(mp.gear_rotation),
             "pinion_rotation_deg": math.degrees(mp.pinion_rotation),
             "pinion_blank_phase_deg": math.degrees(fs.tools.blank_phase),

@@ -8,7 +8,7 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
   only in its application layer;
 * ``contact``'s layers, each importing only those below it:
 
-      application (pipeline, io, plots (a package), cli, commands)
+      application (pipeline, io, plots (a package), cli, commands, study, optimize)
         └── ltca ── utca, compliance, qp
               utca, compliance ── geometry
               qp ── geometry's shared low layer only (no gear in it)
@@ -46,7 +46,8 @@ LAYER_DEPENDS = {
 APPLICATION = {"contact", "contact.pipeline", "contact.io", "contact.plots", "contact.cli",
                "contact.wear",
                "contact.__main__", "contact._moved", "contact.commands",
-               "contact.deviation_files", "contact.output_paths", "contact.study"}
+               "contact.deviation_files", "contact.output_paths", "contact.study",
+               "contact.optimize"}
 
 
 def _module_name(path: Path) -> str:
@@ -88,7 +89,7 @@ def _layer(module: str) -> str:
         if module == layer or module.startswith(layer + "."):
             return layer
     if module in APPLICATION or module.startswith(("contact.commands.", "contact.plots.",
-                                                   "contact.study.")):
+                                                   "contact.study.", "contact.optimize.")):
         return "application"
     raise AssertionError(f"{module}: in no layer of contact (add it to tests/test_layers.py)")
 

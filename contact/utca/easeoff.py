@@ -98,7 +98,7 @@ from contact.utca.action_surface import (
 )
 from geometry.assembly import Misalignment, rotate_about_axis
 from geometry.curvature import normal_curvature, surface_curvatures
-from geometry.cutter import profile_sections
+from geometry.cutter import working_sections
 from geometry.errors import InputError
 from geometry.flank import DEFAULT_GRID, blank_outline, flank_surface
 from geometry.meshing import solve_envelope
@@ -351,7 +351,7 @@ class EaseOff(NamedTuple):
     pinion_u: np.ndarray  # [1] its fractions on the pinion blank (inside: 0..1)
     pinion_v: np.ndarray  # [1]
     placement_error: np.ndarray  # [mm] max |Δz|, |Δρ| of the conjugate point at the node
-    smooth: np.ndarray  # bool: computed, and both points on their blades' main sections
+    smooth: np.ndarray  # bool: computed, and both points on their blades' working sections
     reason: np.ndarray  # int8, EASEOFF_REASONS
     drive_sense: int  # s_p
     lag_sense: int  # s_g
@@ -460,9 +460,10 @@ def _placement_error(target: np.ndarray, mates: _Mates) -> np.ndarray:
 def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:
     """The forward map on the extended pinion grid and its spline.
 
-    The spline is built on the pinion blade's main (profile) section only and continued
-    linearly beyond it (:func:`fill_missing`): the kink at a section junction (e.g. the
-    fillet) would make a cubic spline ring over the whole flank.
+    The spline is built on the pinion blade's working sections only (the profile and its
+    relief lines, :func:`_working_sections`) and continued linearly beyond them
+    (:func:`fill_missing`): the kink at the fillet would make a cubic spline ring over the
+    whole flank.
     """
     cp = blank_outline(case.pinion.blank).corners
     up = np.linspace(*_PINION_U, _FORWARD_GRID[0])
@@ -474,8 +475,7 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
         raise InputError(
             f"case: the {pf} pinion flank has no points on the surface of action of these "
             "axes (check the misalignment and the machine settings)")
-    main = profile_sections(case.pinion.flank(pf).blade).main
-    smooth = ok & (fwd.section == main)
+    smooth = ok & np.isin(fwd.section, working_sections(case.pinion.flank(pf).blade))
     if smooth.sum() < 16:
         smooth = ok
     image = fill_missing(fwd.image, smooth)
@@ -761,9 +761,8 @@ def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
     arm = rho * np.abs(nt)
     normal_raw = normal_ease_off(eps_raw, lag, rho, nt, nr)
     valid = reason == 0
-    gear_main = profile_sections(case.gear.flank(gf).blade).main
-    pinion_main = profile_sections(case.pinion.flank(pf).blade).main
-    smooth = mate & gs.valid & (gs.section == gear_main) & (mt.section == pinion_main)
+    smooth = (mate & gs.valid & np.isin(gs.section, working_sections(case.gear.flank(gf).blade))
+              & np.isin(mt.section, working_sections(case.pinion.flank(pf).blade)))
     return EaseOff(
         pinion_flank=pf, gear_flank=gf, u=gs.grid.u, v=gs.grid.v, axial=zt, radius=rt,
         ease_off=np.where(valid, normal_raw, np.nan),

@@ -1,0 +1,178 @@
+"""``ltca optimize``: pinion machine settings (and profile relief) for a loaded target.
+
+Reads the case and its ``[optimize]`` table (command-line options replace its fields),
+minimises the objective of :mod:`contact.optimize` over the chosen variables with every
+design analysed by the loaded TCA (on Dask), writes the best design as a new case with an
+``[optimize]`` provenance table and every evaluation into the netCDF group ``/optimize``
+(both atomically). See ``docs/optimize.md``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import tomllib
+from pathlib import Path
+
+from contact.output_paths import check_output_file
+
+#: Place in ``ltca --help``.
+ORDER = 36
+
+_HEADER = ("# Written by `ltca optimize` (contact.optimize): {case} with optimised pinion "
+           "settings;\n# see the [optimize] table and docs/optimize.md.\n")
+
+
+def register(sub) -> None:
+    """Add the sub-command to an ``argparse`` sub-parser collection."""
+    from contact.optimize import METHODS
+
+    p = sub.add_parser(
+        "optimize",
+        help="optimise the pinion's machine settings / profile relief for a loaded target; "
+             "write the new case",
+        description="Minimise LTE peak-to-peak, edge load share, flank peak pressure and "
+        "the pattern's offset over torques and misalignments, subject to engineering "
+        "limits, by varying pinion settings within bounds; every design is analysed by the "
+        "loaded TCA. Options replace the fields of the case's [optimize] table "
+        "(docs/optimize.md). Infeasible limits are reported with the best design found.",
+    )
+    p.add_argument("case", nargs="?", default=None,
+                   help="case file (TOML) or bundled case name (default: the 11x41 pair)")
+    p.add_argument("-o", "--output", required=True, metavar="FILE",
+                   help="optimised case file to write (TOML)")
+    p.add_argument("--log", default=None, metavar="FILE",
+                   help="netCDF log of every evaluation, group /optimize (default: the "
+                        "output with suffix .nc)")
+    p.add_argument("--variable", nargs=3, action="append", default=None,
+                   metavar=("NAME", "LOW", "HIGH"),
+                   help="a variable and its bounds in its unit (deg, mm, um, 1/rad ...); "
+                        "repeatable; replaces the table's variables")
+    p.add_argument("--torque", type=float, nargs="+", default=None, metavar="N_M",
+                   help="pinion torques [N m] (default the table's, else 50 250 500)")
+    for opt, unit, what in (("dE", "mm", "offset"), ("dP", "mm", "pinion axial"),
+                            ("dG", "mm", "gear axial"), ("dSigma", "deg", "shaft-angle")):
+        p.add_argument(f"--{opt}", type=float, default=None,
+                       help=f"{what} misalignment [{unit}]: analyse this one assembly "
+                            "(others 0) instead of the table's misalignments")
+    p.add_argument("--max-edge-share", type=float, nargs="+", default=None, metavar="SHARE",
+                   help="largest edge load share per torque (one value or one per torque)")
+    p.add_argument("--max-flank-pressure", type=float, nargs="+", default=None,
+                   metavar="MPA", help="largest flank peak pressure [MPa] per torque")
+    p.add_argument("--lte-pp-range", type=float, nargs=2, default=None,
+                   metavar=("LOW", "HIGH"), help="LTE peak-to-peak range [urad]")
+    p.add_argument("--method", choices=list(METHODS), default=None,
+                   help="optimiser (default differential_evolution)")
+    p.add_argument("--max-evaluations", type=int, default=None, metavar="N",
+                   help="designs to analyse at most (default 200)")
+    p.add_argument("--seed", type=int, default=None, help="random seed (default 0)")
+    p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
+    p.add_argument("--flank", choices=["drive", "coast"], default=None)
+    p.add_argument("--rolls-per-cycle", type=int, default=None,
+                   help="roll positions per mesh cycle (default the LTCA's)")
+    p.add_argument("--segments", type=int, default=None, help="segments per contact curve")
+    p.add_argument("--ritz-modes", type=int, nargs=2, default=None,
+                   metavar=("N_HEIGHT", "N_FACE"),
+                   help="Ritz modes of the tooth shells (default 6 21; fewer build faster)")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="Dask scheduler address; default a local cluster; 'synchronous' "
+                        "runs in this process")
+    p.add_argument("--workers", type=int, default=None, metavar="N",
+                   help="processes of the local cluster (default one per core)")
+    p.add_argument("--no-progress", action="store_true")
+    p.set_defaults(func=run_optimize)
+
+
+def _table(case) -> dict:
+    t = case.extra.get("optimize", {})
+    if "source_case" in t:  # an optimised case: its problem is kept under "problem"
+        t = t.get("problem", {})
+    return dict(t)
+
+
+def run_optimize(args: argparse.Namespace) -> int:
+    from tabulate import tabulate
+
+    from contact.commands.synthesize import write_text_atomic
+    from contact.io import write_netcdf
+    from contact.ltca import LTCAOptions
+    from contact.optimize import (
+        DesignVariable,
+        optimize,
+        optimized_case,
+        problem_from_table,
+    )
+    from contact.pipeline import resolve_case
+    from geometry.assembly import Misalignment
+    from geometry.case import case_from_dict
+    from geometry.errors import InputError
+
+    out = check_output_file(args.output, create_parents=True)
+    log_path = check_output_file(args.log if args.log else out.with_suffix(".nc"),
+                                 option="--log")
+    case = resolve_case(args.case)
+    table = _table(case)
+    override: dict = {"torque": args.torque, "max_edge_share": args.max_edge_share,
+                      "max_flank_pressure": args.max_flank_pressure,
+                      "lte_peak_to_peak_range": args.lte_pp_range, "flank": args.flank}
+    if any(v is not None for v in (args.dE, args.dP, args.dG, args.dSigma)):
+        override["misalignments"] = (Misalignment(
+            delta_E=args.dE or 0.0, delta_P=args.dP or 0.0, delta_G=args.dG or 0.0,
+            delta_Sigma=math.radians(args.dSigma or 0.0)),)
+    opt_kw = {k: v for k, v in (("rolls_per_cycle", args.rolls_per_cycle),
+                                ("segments", args.segments), ("solver", args.solver))
+              if v is not None}
+    if args.ritz_modes:
+        opt_kw |= dict(zip(("n_height", "n_face"), args.ritz_modes, strict=True))
+    if opt_kw:
+        override["options"] = LTCAOptions(**opt_kw)
+    problem, run = problem_from_table(table, **override)
+    bounds = run["variables"]
+    if args.variable:
+        bounds = {}
+        for name, low, high in args.variable:
+            try:
+                bounds[name] = (float(low), float(high))
+            except ValueError:
+                raise InputError(f"--variable {name}: LOW and HIGH must be numbers, got "
+                                 f"{low!r} {high!r}") from None
+    if not bounds:
+        raise InputError("variables: give --variable NAME LOW HIGH or an [optimize.variables] "
+                         "table in the case")
+    variables = [DesignVariable(n, lo, hi) for n, (lo, hi) in bounds.items()]
+    result = optimize(
+        case, variables, problem,
+        method=args.method or run.get("method", "differential_evolution"),
+        max_evaluations=args.max_evaluations or run.get("max_evaluations", 200),
+        popsize=run.get("popsize"), seed=args.seed if args.seed is not None
+        else run.get("seed", 0), relief_start=run.get("relief_start", 0.5),
+        scheduler=args.scheduler, n_workers=args.workers, progress=not args.no_progress)
+    b, s = result.best_evaluation, result.start_evaluation
+    verdict = "all constraints met" if result.feasible else "INFEASIBLE: no design met every " \
+        "constraint; the best design found is written"
+    print(f"{case.name}: {result.log.sizes['evaluation']} designs in {result.seconds:.1f} s "
+          f"({result.method}); {verdict}")
+    print(tabulate([(n, u, f"{x0:.8g}", f"{x1:.8g}") for n, u, x0, x1 in
+                    zip(result.names, result.units, result.start, result.best, strict=True)],
+                   headers=["variable", "unit", "start", "result"], tablefmt="github"))
+    rows = []
+    for k, unit, scale in (("lte_mean", "urad", 1), ("lte_peak_to_peak", "urad", 1),
+                           ("edge_load_share", "%", 100), ("pressure_max_flank", "MPa", 1)):
+        rows.append((k, unit, " / ".join(f"{v:.4g}" for v in scale * s.metrics[k].max(0)),
+                     " / ".join(f"{v:.4g}" for v in scale * b.metrics[k].max(0))))
+    rows.append(("objective", "1", f"{s.objective:.5g}", f"{b.objective:.5g}"))
+    print(tabulate(rows, headers=["worst over misalignments, per torque", "unit", "start",
+                                  "result"], tablefmt="github", disable_numparse=True))
+    provenance = {"source_file": str(Path(args.case).resolve()) if args.case and
+                  Path(args.case).is_file() else (args.case or case.name),
+                  "log_file": str(log_path.resolve())}
+    new = optimized_case(result, provenance=provenance)
+    text = _HEADER.format(case=case.name) + new.to_toml()
+    case_from_dict(tomllib.loads(text))  # the written text must load back
+    import xarray as xr
+
+    write_netcdf(xr.DataTree.from_dict({"/optimize": result.log}), log_path,
+                 inputs=case.to_toml())
+    path = write_text_atomic(out, text)
+    print(f"wrote {path} and {log_path}")
+    return 0

@@ -1,0 +1,42 @@
+"""Machine-setting optimisation for a loaded target (``ltca optimize``, docs/optimize.md).
+
+Application layer: each design is analysed by :func:`contact.run_analysis` and summarised
+by :func:`contact.study.summary.point_summary`; designs run on the study engine's Dask
+workers (:mod:`contact.study.engine`).
+
+Modules
+-------
+variables   the design variables (pinion settings, profile relief) and how they change a case
+objective   the problem (torques, misalignments, limits, weights), objective and constraints
+run         the optimiser (scipy differential evolution or Powell), log and provenance
+"""
+
+from contact.optimize.objective import (
+    FAILED_OBJECTIVE,
+    TERM_NAMES,
+    Evaluation,
+    OptimizeProblem,
+    constraint_names,
+    evaluate_design,
+    problem_from_table,
+)
+from contact.optimize.run import (
+    METHODS,
+    OptimizeResult,
+    SharedDesign,
+    optimize,
+    optimized_case,
+)
+from contact.optimize.variables import (
+    RELIEF_VARIABLES,
+    DesignVariable,
+    case_at,
+    check_variables,
+    start_values,
+    variable_unit,
+)
+
+__all__ = ["FAILED_OBJECTIVE", "METHODS", "RELIEF_VARIABLES", "TERM_NAMES", "DesignVariable",
+           "Evaluation", "OptimizeProblem", "OptimizeResult", "SharedDesign", "case_at",
+           "check_variables", "constraint_names", "evaluate_design", "optimize",
+           "optimized_case", "problem_from_table", "start_values", "variable_unit"]
