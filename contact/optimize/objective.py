@@ -353,7 +353,8 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
         for im, mis in enumerate(problem.misalignments):
             c = dataclasses.replace(case, misalignment=mis)
             tree = run_analysis(c, list(problem.torque), flank=problem.flank,
-                                options=problem.options, deviations=False, geometry=False)
+                                options=problem.options, deviations=False, geometry=False,
+                                operating=False)  # the objective needs no efficiency stage
             s = point_summary(tree, c)
             for k in METRICS:
                 metrics[k][im] = s[k]
