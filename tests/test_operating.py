@@ -70,13 +70,18 @@ def test_refusals_name_the_field(kwargs, error, match):
 
 
 def test_the_command_line_takes_its_defaults_from_the_dataclass():
+    """One definition of the operating defaults: the command line has none of its own
+    (an option left out means the case's ``[operating]`` table), and a case without one
+    gets geometry.case.OPERATING_DEFAULTS, which OperatingConditions' defaults equal."""
     from contact.cli import build_parser
+    from geometry.case import OPERATING_DEFAULTS
 
     op = OperatingConditions()
     parser = build_parser()
-    run = parser.parse_args(["run"])
-    assert (run.speed, run.lubricant, run.temperature, run.roughness, run.friction_model) == (
-        op.pinion_speed, op.lubricant, op.temperature, op.roughness, op.friction_model)
-    emap = parser.parse_args(["efficiency-map"])
-    assert (emap.temperature, emap.roughness, emap.lubricant, emap.friction_model) == (
-        [op.temperature], [op.roughness], op.lubricant, op.friction_model)
+    for argv in (["run"], ["efficiency-map"]):
+        args = parser.parse_args(argv)
+        assert (args.speed, args.lubricant, args.temperature, args.roughness,
+                args.friction_model) == (None,) * 5, argv
+    assert (op.pinion_speed, op.lubricant, op.temperature, op.roughness,
+            op.friction_model) == tuple(OPERATING_DEFAULTS[k] for k in (
+                "pinion_speed", "lubricant", "temperature", "roughness", "friction_model"))

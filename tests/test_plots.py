@@ -175,7 +175,9 @@ def test_pressure_shares_one_scale_and_draws_edges_outside(default_tree):
 def test_signed_maps_are_centred_on_zero(default_tree, deviated_tree):
     g = _groups(default_tree)
     fig = friction_flank_figure(g["easeoff"], g["ltca"], g["friction"], ["slide_to_roll"])
-    (lc,) = _collections(fig, LineCollection)
+    # the values first; over them (where the friction model extrapolates) one red overlay
+    lc, *overlay = _collections(fig, LineCollection)
+    assert all(o.get_cmap().N == 1 for o in overlay) and len(overlay) <= 1
     sr = g["friction"]["slide_to_roll"].values
     assert np.nanmin(sr) < 0 < np.nanmax(sr)  # signed: the diverging map applies
     assert lc.norm.vmin == -lc.norm.vmax and lc.get_cmap().name == "RdBu_r"

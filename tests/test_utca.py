@@ -347,7 +347,9 @@ def test_every_bundled_case_runs_the_utca(name):
 
 @cache
 def _default_contact_u(mis=None):
-    eo = ease_off(load_case(ROOT / "cases" / "kolivand2009_fm_11x41.toml"), misalignment=mis)
+    """Contact place at minimum UTE; ``mis`` None: aligned (not the case's Table 3.1)."""
+    eo = ease_off(load_case(ROOT / "cases" / "kolivand2009_fm_11x41.toml"),
+                  misalignment=Misalignment() if mis is None else mis)
     q = np.linspace(0.0, float(np.nanmax(eo.roll_angle)), 121)
     cc = contact_curves(eo, q)
     return float(cc.contact_u[int(np.nanargmin(cc.ute))])
