@@ -14,6 +14,7 @@ import math
 import tomllib
 from pathlib import Path
 
+from contact.commands import options
 from contact.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
@@ -37,10 +38,8 @@ def register(sub) -> None:
         "loaded TCA. Options replace the fields of the case's [optimize] table "
         "(docs/optimize.md). Infeasible limits are reported with the best design found.",
     )
-    p.add_argument("case", nargs="?", default=None,
-                   help="case file (TOML) or bundled case name (default: the 11x41 pair)")
-    p.add_argument("-o", "--output", required=True, metavar="FILE",
-                   help="optimised case file to write (TOML)")
+    options.case_argument(p, what="optimise")
+    options.output_option(p, default="<case>_optimized.toml", what="optimised case file (TOML)")
     p.add_argument("--log", default=None, metavar="FILE",
                    help="netCDF log of every evaluation, group /optimize (default: the "
                         "output with suffix .nc)")
@@ -48,13 +47,9 @@ def register(sub) -> None:
                    metavar=("NAME", "LOW", "HIGH"),
                    help="a variable and its bounds in its unit (deg, mm, um, 1/rad ...); "
                         "repeatable; replaces the table's variables")
-    p.add_argument("--torque", type=float, nargs="+", default=None, metavar="N_M",
-                   help="pinion torques [N m] (default the table's, else 50 250 500)")
-    for opt, unit, what in (("dE", "mm", "offset"), ("dP", "mm", "pinion axial"),
-                            ("dG", "mm", "gear axial"), ("dSigma", "deg", "shaft-angle")):
-        p.add_argument(f"--{opt}", type=float, default=None,
-                       help=f"{what} misalignment [{unit}]: analyse this one assembly "
-                            "(others 0) instead of the table's misalignments")
+    options.torque_option(p, default="the [optimize] table's, else the case's [operating]")
+    options.misalignment_options(p, default="the [optimize] table's misalignments, else the "
+                                 "case's; any given: this one assembly, the others 0")
     p.add_argument("--max-edge-share", type=float, nargs="+", default=None, metavar="SHARE",
                    help="largest edge load share per torque (one value or one per torque)")
     p.add_argument("--max-flank-pressure", type=float, nargs="+", default=None,
@@ -66,11 +61,10 @@ def register(sub) -> None:
     p.add_argument("--max-evaluations", type=int, default=None, metavar="N",
                    help="designs to analyse at most (default 200)")
     p.add_argument("--seed", type=int, default=None, help="random seed (default 0)")
-    p.add_argument("--solver", default=None, help="solver name (see `ltca compare-solvers`)")
+    options.solver_option(p)
     p.add_argument("--flank", choices=["drive", "coast"], default=None)
-    p.add_argument("--rolls-per-cycle", type=int, default=None,
-                   help="roll positions per mesh cycle (default the LTCA's)")
-    p.add_argument("--segments", type=int, default=None, help="segments per contact curve")
+    options.rolls_per_cycle_option(p)
+    options.segments_option(p)
     p.add_argument("--ritz-modes", type=int, nargs=2, default=None,
                    metavar=("N_HEIGHT", "N_FACE"),
                    help="Ritz modes of the tooth shells (default 6 21; fewer build faster)")
@@ -79,7 +73,7 @@ def register(sub) -> None:
                         "runs in this process")
     p.add_argument("--workers", type=int, default=None, metavar="N",
                    help="processes of the local cluster (default one per core)")
-    p.add_argument("--no-progress", action="store_true")
+    options.progress_option(p)
     p.set_defaults(func=run_optimize)
 
 
@@ -107,12 +101,15 @@ def run_optimize(args: argparse.Namespace) -> int:
     from geometry.case import case_from_dict
     from geometry.errors import InputError
 
-    out = check_output_file(args.output, create_parents=True)
+    out = check_output_file(options.default_output(args, "_optimized.toml"),
+                            create_parents=True)
     log_path = check_output_file(args.log if args.log else out.with_suffix(".nc"),
                                  option="--log")
     case = resolve_case(args.case)
     table = _table(case)
-    override: dict = {"torque": args.torque, "max_edge_share": args.max_edge_share,
+    # torques: the option, else the [optimize] table's, else the case's [operating] ones
+    torque = args.torque or (None if "torque" in table else tuple(case.operating.torque))
+    override: dict = {"torque": torque, "max_edge_share": args.max_edge_share,
                       "max_flank_pressure": args.max_flank_pressure,
                       "lte_peak_to_peak_range": args.lte_pp_range, "flank": args.flank}
     if any(v is not None for v in (args.dE, args.dP, args.dG, args.dSigma)):
