@@ -24,3 +24,24 @@ def assert_equilibrium_and_complementarity(ds, case) -> None:
     assert bool(((ds["contact"] > 0) == (F > 0)).all())
     assert float(ds["residual_equilibrium"].max()) < 1e-9
     assert float(ds["residual_complementarity"].max()) < 1e-9
+
+
+#: the cvxpy backend that stands for cvxpy's own path (canonicalisation, dual recovery)
+#: in the CI run; every cvxpy backend runs with ``-m slow``
+CVXPY_IN_CI = "cvxpy:CLARABEL"
+
+
+def solver_params() -> list:
+    """Every registered solver as a pytest parameter; the cvxpy backends but one marked
+    slow. They repeat cvxpy's canonicalisation on solvers that CI already runs natively
+    through qpsolvers (daqp, proxqp, qpalm, ecos, clarabel …), at 10–25 s each in a full
+    run: the equality of every backend's LTE is kept in ``pytest -m slow`` and
+    ``benchmarks/solvers.py``."""
+    import pytest
+
+    from contact import available_solvers
+
+    return [pytest.param(s, marks=pytest.mark.slow)
+            if s.startswith("cvxpy:") and s != CVXPY_IN_CI else s
+            for s in available_solvers()]
+

@@ -33,9 +33,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from ltca_identities import assert_equilibrium_and_complementarity
+from ltca_identities import assert_equilibrium_and_complementarity, solver_params
 
-from contact import available_solvers
 from contact.cli import main
 from contact.io import read_netcdf
 from contact.ltca import LTCAOptions, loaded_tca
@@ -107,7 +106,7 @@ def test_equilibrium_and_complementarity_at_every_roll(name):
     assert int(ds["pairs_in_contact"].max()) >= 2
 
 
-@pytest.mark.parametrize("solver", available_solvers())
+@pytest.mark.parametrize("solver", solver_params())
 def test_every_solver_gives_the_same_lte(solver):
     """Every registered backend on the Table 4.3 pair (200 N·m, 4 rolls, 10 segments):
     LTE within 0.01 µrad of our exact solver — ten times the Weber iteration's stopping

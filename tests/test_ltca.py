@@ -16,9 +16,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 import xarray as xr
-from ltca_identities import assert_equilibrium_and_complementarity
+from ltca_identities import assert_equilibrium_and_complementarity, solver_params
 
-from contact import available_solvers
 from contact.cli import main
 from contact.io import check_conventions, read_netcdf, write_netcdf
 from contact.ltca import LTCAOptions, loaded_tca
@@ -139,7 +138,7 @@ def test_segment_refinement_converges():
     assert abs(pa / pb - 1) < 0.02
 
 
-@pytest.mark.parametrize("solver", available_solvers())
+@pytest.mark.parametrize("solver", solver_params())
 def test_every_solver_gives_the_same_lte(solver):
     ref = loaded_tca(_case(), [200.0], options=SMALL, easeoff=_easeoff())
     ds = loaded_tca(
