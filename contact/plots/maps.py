@@ -258,6 +258,33 @@ def _line_facets(emap: xr.Dataset, dims: Sequence[str]):
     return cells, nrows, ncols
 
 
+def _efficiency_lines(emap: xr.Dataset, *, x: str, x_name: str, line: str, line_label,
+                      facets: tuple[str, str], panel: tuple[float, float], ylabel: str,
+                      title_size: float, what: str) -> Figure:
+    """Efficiency [%] against ``x``, one line per value of ``line`` (labelled by
+    ``line_label(value)``), one panel per combination of the ``facets`` values."""
+    if "efficiency" not in emap:
+        raise InputError("emap: dataset lacks 'efficiency' (not an efficiency map)")
+    cells, nrows, ncols = _line_facets(emap, facets)
+    fig, grid, _ = panel_grid(nrows, ncols, panel=panel, left=0.8)
+    axes = grid.ravel()
+    xlabel = axis_label(emap[x], x_name)
+    for ax, sel in zip(axes, cells, strict=False):
+        eff = emap["efficiency"].isel(sel) * 100
+        for v in emap[line].values:
+            ax.plot(emap[x].values, eff.sel({line: v}).values, "o-", ms=3,
+                    label=line_label(v))
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+        ax.set_title(facet_title(emap, {d: emap[d].values[i] for d, i in sel.items()}),
+                     fontsize=title_size)
+    hide_unused(grid, len(cells), xlabel)
+    axes[0].legend(fontsize=7)
+    title(fig, _emap_title(emap, what))
+    return fig
+
+
 def efficiency_speed_figure(emap: xr.Dataset) -> Figure:
     """Efficiency against pinion speed, one line per torque (seed Fig. 5.11); one panel
     per oil temperature × roughness, so every swept value is shown.
@@ -275,25 +302,11 @@ def efficiency_speed_figure(emap: xr.Dataset) -> Figure:
     InputError
         If ``emap`` lacks ``efficiency``.
     """
-    if "efficiency" not in emap:
-        raise InputError("emap: dataset lacks 'efficiency' (not an efficiency map)")
-    cells, nrows, ncols = _line_facets(emap, ("temperature", "roughness"))
-    fig, grid, _ = panel_grid(nrows, ncols, panel=(3.0, 2.2), left=0.8)
-    axes = grid.ravel()
-    for ax, sel in zip(axes, cells, strict=False):
-        eff = emap["efficiency"].isel(sel) * 100
-        for t in emap["torque"].values:
-            ax.plot(emap["speed"].values, eff.sel(torque=t).values, "o-", ms=3,
-                    label=f"T_p = {t:g} N·m")
-        ax.set_xlabel(axis_label(emap["speed"], "pinion speed"))
-        ax.set_ylabel("mechanical efficiency [%]")
-        ax.grid(alpha=0.3)
-        ax.set_title(facet_title(emap, {d: emap[d].values[i] for d, i in sel.items()}),
-                     fontsize=8)
-    hide_unused(grid, len(cells), axis_label(emap["speed"], "pinion speed"))
-    axes[0].legend(fontsize=7)
-    title(fig, _emap_title(emap, "efficiency against speed"))
-    return fig
+    return _efficiency_lines(emap, x="speed", x_name="pinion speed", line="torque",
+                             line_label=lambda t: f"T_p = {t:g} N·m",
+                             facets=("temperature", "roughness"), panel=(3.0, 2.2),
+                             ylabel="mechanical efficiency [%]", title_size=8,
+                             what="efficiency against speed")
 
 
 def efficiency_roughness_figure(emap: xr.Dataset) -> Figure:
@@ -313,22 +326,8 @@ def efficiency_roughness_figure(emap: xr.Dataset) -> Figure:
     InputError
         If ``emap`` lacks ``efficiency``.
     """
-    if "efficiency" not in emap:
-        raise InputError("emap: dataset lacks 'efficiency' (not an efficiency map)")
-    cells, nrows, ncols = _line_facets(emap, ("torque", "speed"))
-    fig, grid, _ = panel_grid(nrows, ncols, panel=(2.7, 2.0), left=0.8)
-    axes = grid.ravel()
-    for ax, sel in zip(axes, cells, strict=False):
-        eff = emap["efficiency"].isel(sel) * 100
-        for t in emap["temperature"].values:
-            ax.plot(emap["roughness"].values, eff.sel(temperature=t).values, "o-", ms=3,
-                    label=f"oil {t:g} °C")
-        ax.set_xlabel(axis_label(emap["roughness"], "RMS roughness Rq"))
-        ax.set_ylabel("efficiency [%]")
-        ax.grid(alpha=0.3)
-        ax.set_title(facet_title(emap, {d: emap[d].values[i] for d, i in sel.items()}),
-                     fontsize=7)
-    hide_unused(grid, len(cells), axis_label(emap["roughness"], "RMS roughness Rq"))
-    axes[0].legend(fontsize=7)
-    title(fig, _emap_title(emap, "efficiency against roughness"))
-    return fig
+    return _efficiency_lines(emap, x="roughness", x_name="RMS roughness Rq",
+                             line="temperature", line_label=lambda t: f"oil {t:g} °C",
+                             facets=("torque", "speed"), panel=(2.7, 2.0),
+                             ylabel="efficiency [%]", title_size=7,
+                             what="efficiency against roughness")
