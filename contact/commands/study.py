@@ -220,6 +220,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.study import parse_distribution, sample, sensitivity
+    from contact.study.monte_carlo import draw_values
 
     case, common = _prepare(args)
     dists = {}
@@ -241,14 +242,10 @@ def tolerance_command(args: argparse.Namespace) -> int:
                   "edge_load_share", "efficiency"):
             if n not in ds:
                 continue
-            da = ds[n].sel(torque=t)
-            if "speed" in da.dims:
-                da = da.isel(speed=0)
-            x = da.values[ok]
-            x = x[np.isfinite(x)]
+            x = draw_values(ds, n, t)
             if x.size:
                 p5, p50, p95 = np.percentile(x, (5, 50, 95))
-                rows.append((f"{t:g}", n, da.attrs.get("units", ""), f"{p5:.4g}",
+                rows.append((f"{t:g}", n, ds[n].attrs.get("units", ""), f"{p5:.4g}",
                              f"{p50:.4g}", f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
     print(tabulate(rows, headers=("T_p [N m]", "summary", "units", "P5", "P50", "P95", "mean",
                                   "std"), tablefmt="github"))

@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from contact.study.monte_carlo import draw_values
 from contact.study.points import POINT_INPUTS
 from geometry.errors import InputError
 from geometry.plot import pyplot
@@ -131,11 +132,7 @@ def tolerance_figure(ds: xr.Dataset, torque: float | None = None):
                              layout="constrained", squeeze=False)
     ok = ds["status"].values != 2
     for ax, name in zip(axes[0], names, strict=True):
-        da = ds[name].sel(torque=t)
-        if "speed" in da.dims:
-            da = da.isel(speed=0)
-        values = da.values[ok]
-        values = values[np.isfinite(values)]
+        values = draw_values(ds, name, t)
         if name == "efficiency":
             values = 100.0 * values
             label = "mesh efficiency [%]"

@@ -29,8 +29,8 @@ from friction.operating import OperatingConditions
 from geometry.case import Case
 from geometry.errors import InputError
 
-__all__ = ["DISTRIBUTIONS", "METHODS", "draw_points", "parse_distribution", "sample",
-           "sensitivity"]
+__all__ = ["DISTRIBUTIONS", "METHODS", "draw_points", "draw_values", "parse_distribution",
+           "sample", "sensitivity"]
 
 #: Sampling methods: quasi-random Sobol' (scrambled) and Latin hypercube from
 #: :mod:`scipy.stats.qmc`, or plain pseudo-random (numpy's default generator).
@@ -303,3 +303,29 @@ def sensitivity(ds: xr.Dataset, variable: str, *, inputs: Sequence[str] | None =
          "r_squared": (rest, r2.reshape(shape_rest),
                        {"units": "1", "long_name": "R^2 of the linear fit"})},
         coords=coords, attrs={"variable": variable})
+
+
+def draw_values(ds: xr.Dataset, name: str, torque: float) -> np.ndarray:
+    """The finite values of one summary over the draws that did not fail, at one torque.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A :func:`sample` result (dims ``sample``, ``torque`` and maybe ``speed``).
+    name : str
+        A summary variable of ``ds`` (its units in its ``units`` attribute).
+    torque : float — [N·m]
+        One of ``ds``'s pinion torques.
+
+    Returns
+    -------
+    ndarray (k,)
+        In the variable's units; at the first speed where it has a speed dimension;
+        draws with ``status`` 2 (failed) and non-finite values left out.
+    """
+    da = ds[name].sel(torque=torque)
+    if "speed" in da.dims:
+        da = da.isel(speed=0)
+    x = da.values[ds["status"].values != 2]
+    return x[np.isfinite(x)]
+
