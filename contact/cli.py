@@ -92,10 +92,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     # distributed sets its loggers' levels from dask's config when it is imported (in
     # this process and in every worker process), so the config says it, not a setLevel.
     distributed_level = "debug" if args.verbose >= 2 else "warning"
+    # dask reads the variable when first imported; only a dask already imported (not the
+    # case for most commands, which should not pay for importing it) needs telling
     os.environ["DASK_LOGGING__DISTRIBUTED"] = distributed_level
-    import dask
-
-    dask.config.set({"logging.distributed": distributed_level})
+    if "dask" in sys.modules:
+        sys.modules["dask"].config.set({"logging.distributed": distributed_level})
     logging.getLogger("distributed").setLevel(distributed_level.upper())
     main_thread = threading.current_thread() is threading.main_thread()
     previous = signal.signal(signal.SIGTERM, _terminate) if main_thread else None
