@@ -842,8 +842,10 @@ def _toml_value(v: Any) -> str:
     if isinstance(v, int):
         return str(v)
     if isinstance(v, float):
-        if not math.isfinite(v):
+        if math.isnan(v):
             raise InputError(f"to_toml: non-finite value {v!r}")
+        if math.isinf(v):  # TOML 1.0 floats include inf (an [optimize] limit: no limit)
+            return "inf" if v > 0 else "-inf"
         return repr(v)
     if isinstance(v, str):
         return json.dumps(v, ensure_ascii=False)

@@ -388,9 +388,15 @@ def cmm_deviation(case: Case, member: str, flank: str, position, normal, *,
     dt = np.full(tv.shape, np.inf)
     surf = None
     for _ in range(max_iter):
-        x = pv + tv[:, None] * nv
-        surf = flank_at(case, member, flank, x[:, 2], np.hypot(x[:, 0], x[:, 1]), guess=g)
+        # a point whose step left the generated flank (NaN) drops out; the others go on
+        live = np.isfinite(tv)
+        if not live.any():
+            break
+        x = pv + np.where(live, tv, 0.0)[:, None] * nv
+        gl = None if g is None else tuple(np.where(live, a, a[live][0]) for a in g)
+        surf = flank_at(case, member, flank, x[:, 2], np.hypot(x[:, 0], x[:, 1]), guess=gl)
         dt = (((surf.position - x) * surf.normal).sum(-1) / (nv * surf.normal).sum(-1))
+        dt[~live] = np.nan
         tv = tv + dt
         g = (surf.s, surf.theta, surf.q, surf.section)
         if np.all(np.abs(dt[np.isfinite(dt)]) < _CMM_TOL):

@@ -48,6 +48,7 @@ relief_places   projection-plane places (z, ρ) of M and the two ends
 relief_heights  the blade heights that cut them
 rem_angle       the rem angle that gives a normal relief δ at a height
 relieved_blade  the blade with tip and root relief
+blade_relief    the tip and root relief a blade's rems make (the inverse of relieved_blade)
 """
 
 from __future__ import annotations
@@ -68,7 +69,8 @@ if TYPE_CHECKING:
     from geometry.case import Blank
     from geometry.machine import MachineSettings
 
-__all__ = ["ReliefHeights", "relief_heights", "relief_places", "relieved_blade", "rem_angle"]
+__all__ = ["ReliefHeights", "blade_relief", "relief_heights", "relief_places", "relieved_blade",
+           "rem_angle"]
 
 #: largest |rem angle| the blade model accepts is 20 deg; keep clear of it
 _MAX_REM = math.radians(19.0)
@@ -275,3 +277,48 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
                              "relief_start towards 0")
         kw.update(toprem_angle=rem_angle(plain, hc, h.root, root_relief), toprem_height=hc)
     return Blade(**{**plain.__dict__, **kw})
+
+
+def blade_relief(blade: Blade, machine: MachineSettings, blank: Blank, hand: str,
+                 mating_blank: Blank) -> tuple[float, float]:
+    """Tip and root relief [mm] that a blade's flankrem and toprem make on its flank.
+
+    The inverse of :func:`relieved_blade`: the normal distance, at the blade heights that
+    cut the flank's tip end and root end (:func:`relief_heights` of the blade without
+    rems), between the blade's edge and its main profile — the quantity :func:`rem_angle`
+    solves for. Measured on the blade, it needs no generated point on the relieved flank
+    (a relieved tip end may fall outside the generated flank).
+
+    Parameters
+    ----------
+    blade : geometry.cutter.Blade
+        The flank's blade, with or without rems.
+    machine : geometry.machine.MachineSettings
+        The flank's right-hand reference settings.
+    blank, mating_blank : geometry.case.Blank
+    hand : str
+
+    Returns
+    -------
+    (tip_relief, root_relief) : tuple of float — [mm]
+        ≥ 0; 0 for a blade without the rem (and for a rem corner beyond the end).
+
+    Raises
+    ------
+    InputError
+        As :func:`relief_heights`, if the blade has rems.
+    """
+    if blade.toprem_angle == 0.0 and blade.flankrem_angle == 0.0:
+        return 0.0, 0.0
+    plain = Blade(**{**blade.__dict__, "toprem_angle": 0.0, "toprem_height": 0.0,
+                     "flankrem_angle": 0.0, "flankrem_height": 0.0})
+    h = relief_heights(plain, machine, blank, hand, mating_blank)
+    out = []
+    for end, angle in ((h.tip, blade.flankrem_angle), (h.root, blade.toprem_angle)):
+        if angle == 0.0:
+            out.append(0.0)
+            continue
+        rho_main, a_loc = _rho_at(plain, end)
+        gap = blade.sigma * (_rho_at(blade, end)[0] - rho_main) * math.cos(a_loc)
+        out.append(max(0.0, float(gap)))
+    return out[0], out[1]

@@ -101,6 +101,21 @@ def test_to_toml_round_trip(path):
     _assert_close(case, again)
 
 
+def test_infinite_limits_of_an_extra_table_round_trip():
+    """An ``[optimize]`` table may say "no limit" with TOML's ``inf`` (e.g.
+    ``max_flank_pressure = [inf, inf, 2000]``): to_toml writes it back as ``inf`` (it used
+    to refuse it, failing every evaluation of an optimisation whose case carried one), and a
+    NaN is still refused by name."""
+    raw = tomllib.loads(S2.read_text(encoding="utf-8"))
+    raw["optimize"] = {"max_flank_pressure": [math.inf, -math.inf, 2000.0]}
+    case = case_from_dict(raw)
+    again = case_from_dict(tomllib.loads(case.to_toml()))
+    assert again.extra["optimize"]["max_flank_pressure"] == [math.inf, -math.inf, 2000.0]
+    raw["optimize"] = {"max_flank_pressure": math.nan}
+    with pytest.raises(InputError, match="to_toml: non-finite value nan"):
+        case_from_dict(raw).to_toml()
+
+
 @pytest.mark.parametrize("dotted, value, match", [
     ("pinion.blank.teeth", -3, r"^pinion\.blank\.teeth: must be an integer in \[3, 500\]"),
     ("pinion.blank.teeth", 13.5, r"^pinion\.blank\.teeth: must be an integer"),

@@ -24,7 +24,7 @@ from geometry.case import case_from_dict, load_case
 from geometry.correction import cmm_deviation
 from geometry.errors import InputError
 from geometry.flank_point import flank_points
-from geometry.relief import relief_places, relieved_blade
+from geometry.relief import blade_relief, relief_places, relieved_blade
 from geometry.synthesis import synthesize
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -120,6 +120,53 @@ def test_relief_error_is_second_order():
         errors.append(-m[1:] / (1e3 * delta) - 1.0)
     ratio = np.asarray(errors[0]) / np.asarray(errors[1])
     np.testing.assert_allclose(ratio, 2.0, rtol=0.1)
+
+
+@pytest.mark.parametrize(("tip", "root", "start"), [(30.0, 10.0, 0.85), (12.0, 0.0, 0.5),
+                                                    (0.0, 20.0, 0.3)])
+def test_blade_relief_inverts_relieved_blade(tip, root, start):
+    """:func:`blade_relief` of a relieved blade returns the relief it was made with — the
+    two solve the same normal-distance equation at the same blade heights, so they agree
+    to Brent's tolerance (xtol 1e-14 rad on the rem angle, ≈ 1e-9 µm here; 1e-6 µm
+    stated). A start value of a relieved case (``contact.optimize.start_values``, the
+    optimiser's start) is this measurement: it used to fail with "targets must be
+    finite" when the relieved tip end left the generated flank."""
+    from contact.optimize import start_values
+
+    case = _committed()
+    tool = case.pinion.concave
+    blade = relieved_blade(tool.blade, tool.machine, case.pinion.blank, case.pinion.hand,
+                           case.gear.blank, tip_relief=1e-3 * tip, root_relief=1e-3 * root,
+                           start=start)
+    got = blade_relief(blade, tool.machine, case.pinion.blank, case.pinion.hand,
+                       case.gear.blank)
+    np.testing.assert_allclose(1e3 * np.asarray(got), [tip, root], atol=1e-6)
+    relieved = _with_blade(case, "concave", blade)
+    np.testing.assert_allclose(start_values(relieved, "concave", ["tip_relief", "root_relief"]),
+                               [tip, root], atol=1e-6)
+
+
+def test_cmm_deviation_survives_points_leaving_the_flank():
+    """A nominal point whose Newton step leaves the generated flank comes back NaN, and
+    the other points are still measured (the iteration used to pass the NaN on to the
+    envelope solver, which refused every point). Points: M and the two ends of the
+    unrelieved flank, plus M moved 30 mm off the flank along its lengthwise tangent (no
+    generated point there); the three on the flank give the same deviations as alone
+    (1e-9 µm: the same Newton iterates)."""
+    case = _committed()
+    relieved = _relieved_synthesis()
+    mem = case.pinion
+    tool = mem.concave
+    places = relief_places(mem.blank, case.gear.blank)
+    pts = flank_points(tool.blade, tool.machine, mem.blank, mem.hand, places[:, 0],
+                       places[:, 1])
+    off = pts.r[0] + np.array([0.0, 0.0, 30.0])
+    r = np.vstack([pts.r, off])
+    n = np.vstack([pts.n, pts.n[0]])
+    dev = cmm_deviation(relieved, "pinion", "concave", r, n)[0]
+    alone = cmm_deviation(relieved, "pinion", "concave", pts.r, pts.n)[0]
+    assert np.isnan(dev[3])
+    np.testing.assert_allclose(dev[:3], alone, atol=1e-12)
 
 
 def test_zero_relief_leaves_the_blade_alone():

@@ -29,7 +29,7 @@ import numpy as np
 from geometry.case import Case
 from geometry.correction import SETTING_VARIABLES, setting_value, tool_with_values
 from geometry.errors import InputError
-from geometry.relief import relief_heights, relief_places, relieved_blade
+from geometry.relief import blade_relief, relieved_blade
 
 __all__ = ["RELIEF_VARIABLES", "DesignVariable", "case_at", "check_variables",
            "start_values", "variable_unit"]
@@ -67,30 +67,19 @@ def variable_unit(name: str) -> str:
 
 
 def _measured_relief(case: Case, flank: str) -> tuple[float, float]:
-    """(tip, root) relief [µm] of the case's pinion flank against its blade without rems,
-    measured along the unrelieved normals (0, 0 for a blade without rems)."""
-    from geometry.correction import cmm_deviation
-    from geometry.flank_point import flank_points
-
+    """(tip, root) relief [µm] that the case's pinion flank's blade rems make
+    (:func:`geometry.relief.blade_relief`; 0, 0 for a blade without rems)."""
     mem = case.pinion
     tool = mem.flank(flank)
-    b = tool.blade
-    if b.toprem_angle == 0.0 and b.flankrem_angle == 0.0:
-        return 0.0, 0.0
-    plain = dataclasses.replace(b, toprem_angle=0.0, toprem_height=0.0, flankrem_angle=0.0,
-                                flankrem_height=0.0)
-    relief_heights(plain, tool.machine, mem.blank, mem.hand, case.gear.blank)  # checks
-    places = relief_places(mem.blank, case.gear.blank)[1:]
-    pts = flank_points(plain, tool.machine, mem.blank, mem.hand, places[:, 0], places[:, 1])
-    dev = cmm_deviation(case, "pinion", flank, pts.r, pts.n)[0]
-    return float(-1e3 * dev[0]), float(-1e3 * dev[1])
+    tip, root = blade_relief(tool.blade, tool.machine, mem.blank, mem.hand, case.gear.blank)
+    return 1e3 * tip, 1e3 * root
 
 
 def start_values(case: Case, flank: str, names: Sequence[str]) -> np.ndarray:
     """Values of the variables ``names`` in the case's pinion flank ``flank`` [file units].
 
-    Relief variables are measured on the generated flank (the relief the blade's rems make
-    at the two ends, :mod:`geometry.relief`; 0 without rems).
+    Relief variables are the relief the blade's rems make at the flank's two ends, measured
+    on the blade (:func:`geometry.relief.blade_relief`; 0 without rems).
     """
     tool = case.pinion.flank(flank)
     out = []
