@@ -11,7 +11,9 @@ A basic file (``cases/basic/*.toml``, schema in ``docs/synthesis.md``) holds
   the gear, outer cone distances …) and the design fields ``adjust`` that are varied to hit
   them (least squares; the achieved values are reported in the case ``source``);
 * ``[synthesis]`` — the synthesis options with documented defaults (:class:`SynthesisOptions`),
-  optionally overridden per pinion flank in ``[synthesis.concave]`` / ``[synthesis.convex]``.
+  optionally overridden per pinion flank in ``[synthesis.concave]`` / ``[synthesis.convex]``;
+* ``[optimize]`` (optional) — the problem ``ltca optimize`` solves when it re-synthesises
+  the design (``docs/optimize.md``); not read by the synthesis.
 
 Public functions
 ----------------
@@ -20,6 +22,8 @@ TARGETS                                       target name → how it is read fro
 load_basic                                    read and validate a basic file
 basic_from_dict                               the same from a parsed mapping
 fit_design                                    adjust design fields to hit the targets
+flank_option_values, FLANK_OPTION_UNITS       a flank's prescriptions in file units
+with_flank_options                            the design with a flank's prescriptions replaced
 """
 
 from __future__ import annotations
@@ -41,6 +45,7 @@ from geometry.pitch_cone import BevelGearDesign
 from geometry.validation import real
 
 __all__ = [
+    "FLANK_OPTION_UNITS",
     "PROCESSES",
     "TARGETS",
     "BasicDesign",
@@ -48,7 +53,9 @@ __all__ = [
     "SynthesisOptions",
     "basic_from_dict",
     "fit_design",
+    "flank_option_values",
     "load_basic",
+    "with_flank_options",
 ]
 
 #: (gear, pinion) processes the synthesis implements
@@ -217,6 +224,10 @@ class BasicDesign:
         The file's ``[operating]`` table (the case's operating point: torques,
         misalignment, speed, oil; schema of :func:`geometry.case.operating_from_dict`),
         copied into the synthesised case; empty for the toolkit's defaults.
+    optimize : dict
+        The file's ``[optimize]`` table (read by ``ltca optimize`` when it re-synthesises
+        this design; schema of :func:`contact.optimize.problem_from_table`), unvalidated
+        here; empty if absent.
     """
 
     name: str
@@ -227,6 +238,7 @@ class BasicDesign:
     options: SynthesisOptions
     comments: Mapping[str, str] = field(default_factory=dict)
     operating: Mapping[str, Any] = field(default_factory=dict)
+    optimize: Mapping[str, Any] = field(default_factory=dict)
 
     def blank(self) -> BlankGeometry:
         """ISO 23509 blank geometry of the design (pitch cone and both members)."""
@@ -307,7 +319,7 @@ def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
 _OPTION_FIELDS = {"drive_flank", "gear_process", "pinion_process", "cutter_radius",
                   "blade_angle_drive", "blade_angle_coast", "point_width", "edge_radius"}
 _FLANK_FIELDS = {f.name for f in fields(FlankOptions)}
-_TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating"}
+_TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating", "optimize"}
 
 
 def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -> FlankOptions:
@@ -325,6 +337,58 @@ def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -
         return replace(base, **kw) if base is not None else FlankOptions(**kw)
     except InputError as exc:
         raise InputError(f"{where}.{exc}") from None
+
+
+#: file units of the flank prescriptions (``[synthesis]`` of a basic file)
+FLANK_OPTION_UNITS: Mapping[str, str] = {
+    "path_angle": "deg", "te_level": "urad", "ellipse_length": "1", "approach": "mm",
+    "tip_relief": "um", "root_relief": "um", "relief_start": "1"}
+
+
+def flank_option_values(options: FlankOptions) -> dict[str, float]:
+    """A flank's prescriptions in file units (:data:`FLANK_OPTION_UNITS`: deg, µrad, µm …).
+
+    Parameters
+    ----------
+    options : FlankOptions
+
+    Returns
+    -------
+    dict of str to float
+        Field → value in the unit a basic file gives it.
+    """
+    to_file = {"path_angle": math.degrees, "te_level": lambda v: 1e6 * v,
+               "tip_relief": lambda v: 1e3 * v, "root_relief": lambda v: 1e3 * v}
+    return {k: float(to_file.get(k, float)(getattr(options, k))) for k in FLANK_OPTION_UNITS}
+
+
+def with_flank_options(basic: BasicDesign, flank: str,
+                       values: Mapping[str, float]) -> BasicDesign:
+    """The basic design with some prescriptions of one pinion flank replaced.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+    flank : str
+        Pinion flank ``"concave"`` or ``"convex"``.
+    values : mapping of str to float
+        Field of :class:`FlankOptions` → value in file units (:data:`FLANK_OPTION_UNITS`).
+
+    Returns
+    -------
+    BasicDesign
+        Only ``options.<flank>`` differs.
+
+    Raises
+    ------
+    InputError
+        Unknown flank or field, or a value outside the field's range, named as
+        ``synthesis.<flank>.<field>``.
+    """
+    if flank not in ("concave", "convex"):
+        raise InputError(f"flank: must be 'concave' or 'convex', got {flank!r}")
+    fo = _flank_options(dict(values), f"synthesis.{flank}", basic.options.flank(flank))
+    return replace(basic, options=replace(basic.options, **{flank: fo}))
 
 
 def _check_cutting_method(method: Any, z0: int) -> None:
@@ -420,7 +484,8 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
     operating = dict(raw.get("operating", {}))
     return BasicDesign(name=raw["name"], source=raw["source"], design=design,
                        targets=targets, adjust=tuple(adjust), options=options,
-                       comments=dict(notes), operating=operating)
+                       comments=dict(notes), operating=operating,
+                       optimize=dict(raw.get("optimize", {})))
 
 
 def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign:

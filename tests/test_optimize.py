@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from functools import cache
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -33,6 +35,8 @@ from contact.pipeline import SEED_TABLE_3_1, resolve_case, run_analysis
 from contact.study.summary import point_summary
 from geometry.case import load_case
 from geometry.errors import InputError
+
+BASIC = Path(__file__).resolve().parents[1] / "cases" / "basic" / "kolivand2009_fm_11x41.toml"
 
 OPTIONS = LTCAOptions(rolls_per_cycle=8, segments=10, n_height=4, n_face=10)
 TORQUE = (50.0, 250.0)
@@ -113,6 +117,8 @@ def test_infeasible_limits_are_reported_with_the_best_design():
     ([DesignVariable("tip_relief", 0.0, 500.0)], "optimize.bounds.tip_relief: 500 um"),
     ([DesignVariable("tip_relief", 10.0, 40.0)], "start value 0 um lies outside"),
     ([DesignVariable("tip_relief", 40.0, 0.0)], "low < high"),
+    ([DesignVariable("ellipse_length", 0.5, 0.8)], "'ellipse_length' is a synthesis input; "
+                                                   "start from the basic design file"),
 ])
 def test_bad_variables_are_refused_before_any_analysis(variables, match, monkeypatch):
     """Unknown names and bounds outside a setting's valid range fail at once, naming the
@@ -150,3 +156,59 @@ def test_cli_checks_the_output_before_work(tmp_path, capsys):
                "1"])
     assert rc != 0
     assert "--log" in capsys.readouterr().err
+
+
+@cache
+def _basic():
+    from geometry.basic_design import load_basic
+
+    return load_basic(BASIC)
+
+
+def test_synthesis_inputs_are_variables_of_a_basic_design_start():
+    """Started from a basic design, the flank prescriptions are variables: their start
+    values are the basic file's (file units: deg, µrad, µm), a design re-synthesises the
+    basic design with them — the same case, setting for setting, as ``ltca synthesize`` of
+    the changed prescriptions (both are :func:`geometry.synthesis.synthesize`; 1e-12
+    relative, the synthesis is deterministic) — and a setting variable is applied on top
+    of the re-synthesised flank. The committed case is the basic file's synthesis, so it is
+    the start."""
+    from contact.optimize import case_at, start_values
+    from geometry.basic_design import with_flank_options
+    from geometry.synthesis import synthesize
+
+    basic = _basic()
+    case = _case()
+    names = ["ellipse_length", "te_level", "path_angle", "tip_relief", "H1"]
+    x0 = start_values(case, "concave", names, basic=basic)
+    np.testing.assert_allclose(x0, [0.75, 30.0, -55.0, 0.0, 0.0], atol=1e-12)
+    x = [0.7, 25.0, -58.0, 12.0, -0.1]
+    got = case_at(case, "concave", names, x, basic=basic)
+    want = synthesize(with_flank_options(basic, "concave", dict(zip(names[:4], x[:4],
+                                                                     strict=False))))[0]
+    a, b = got.pinion.concave, want.pinion.concave
+    for field in ("radial_setting", "cradle_angle", "ratio_of_roll", "sliding_base",
+                  "blank_offset"):
+        assert getattr(a.machine, field) == pytest.approx(getattr(b.machine, field),
+                                                          rel=1e-12)
+    assert a.machine.helical_motion[0] == pytest.approx(-0.1)  # H1 [mm/rad], set on top
+    assert a.blade.flankrem_angle == pytest.approx(b.blade.flankrem_angle, rel=1e-12)
+    assert a.blade.flankrem_angle > 0
+    assert got.misalignment == case.misalignment and got.name == case.name
+    assert got.pinion.convex.machine.radial_setting == pytest.approx(
+        want.pinion.convex.machine.radial_setting, rel=1e-12)
+
+
+@pytest.mark.parametrize("variable, match", [
+    (DesignVariable("ellipse_length", 0.5, 0.95), r"optimize.bounds.ellipse_length: 0.95 1 "
+                                                  r"lies outside the prescription's valid "
+                                                  r"range \(synthesis.concave.ellipse_length"),
+    (DesignVariable("te_level", -5.0, 40.0), "optimize.bounds.te_level: -5 urad"),
+])
+def test_bad_synthesis_bounds_are_refused_before_any_synthesis(variable, match):
+    """A bound outside a prescription's range is refused naming the variable and the
+    prescription's own range, before a design is synthesised."""
+    from contact.optimize import check_variables
+
+    with pytest.raises(InputError, match=match):
+        check_variables(_case(), "concave", [variable], basic=_basic())

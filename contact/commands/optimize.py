@@ -1,6 +1,8 @@
 """``ltca optimize``: pinion machine settings (and profile relief) for a loaded target.
 
-Reads the case and its ``[optimize]`` table (command-line options replace its fields),
+Reads the case and its ``[optimize]`` table (command-line options replace its fields) —
+or a basic design file (``cases/basic``), synthesised, whose flank prescriptions may then be
+variables too (each design re-synthesised),
 minimises the objective of :mod:`contact.optimize` over the chosen variables with every
 design analysed by the loaded TCA (on Dask), writes the best design as a new case with an
 ``[optimize]`` provenance table and every evaluation into the netCDF group ``/optimize``
@@ -22,6 +24,9 @@ ORDER = 36
 
 _HEADER = ("# Written by `ltca optimize` (contact.optimize): {case} with optimised pinion "
            "settings;\n# see the [optimize] table and docs/optimize.md.\n")
+_HEADER_BASIC = ("# Written by `ltca optimize` (contact.optimize): {case} re-synthesised from "
+                 "its basic design with optimised\n# prescriptions and settings; see the "
+                 "[optimize] table and docs/optimize.md.\n")
 
 
 def register(sub) -> None:
@@ -77,6 +82,27 @@ def register(sub) -> None:
     p.set_defaults(func=run_optimize)
 
 
+def _start(arg: str | None):
+    """(case, basic design or None) of the command's CASE argument: a basic design file
+    (it has a ``[design]`` table) is synthesised; anything else is a case or a bundled
+    name (:func:`contact.pipeline.resolve_case`, which names a bad file)."""
+    from contact.pipeline import resolve_case
+
+    path = Path(arg) if arg is not None else None
+    if path is not None and path.is_file():
+        try:
+            raw = tomllib.loads(path.read_text(encoding="utf-8"))
+        except (tomllib.TOMLDecodeError, UnicodeDecodeError, OSError):
+            raw = {}  # resolve_case reports it
+        if isinstance(raw.get("design"), dict):
+            from geometry.basic_design import load_basic
+            from geometry.synthesis import synthesize
+
+            basic = load_basic(path)
+            return synthesize(basic)[0], basic
+    return resolve_case(arg), None
+
+
 def _table(case) -> dict:
     t = case.extra.get("optimize", {})
     if "source_case" in t:  # an optimised case: its problem is kept under "problem"
@@ -96,7 +122,6 @@ def run_optimize(args: argparse.Namespace) -> int:
         optimized_case,
         problem_from_table,
     )
-    from contact.pipeline import resolve_case
     from geometry.assembly import Misalignment
     from geometry.case import case_from_dict
     from geometry.errors import InputError
@@ -105,8 +130,8 @@ def run_optimize(args: argparse.Namespace) -> int:
                             create_parents=True)
     log_path = check_output_file(args.log if args.log else out.with_suffix(".nc"),
                                  option="--log")
-    case = resolve_case(args.case)
-    table = _table(case)
+    case, basic = _start(args.case)
+    table = dict(basic.optimize) if basic is not None else _table(case)
     # torques: the option, else the [optimize] table's, else the case's [operating] ones
     torque = args.torque or (None if "torque" in table else tuple(case.operating.torque))
     override: dict = {"torque": torque, "max_edge_share": args.max_edge_share,
@@ -143,7 +168,8 @@ def run_optimize(args: argparse.Namespace) -> int:
         max_evaluations=args.max_evaluations or run.get("max_evaluations", 200),
         popsize=run.get("popsize"), seed=args.seed if args.seed is not None
         else run.get("seed", 0), relief_start=run.get("relief_start", 0.5),
-        scheduler=args.scheduler, n_workers=args.workers, progress=not args.no_progress)
+        scheduler=args.scheduler, n_workers=args.workers, progress=not args.no_progress,
+        basic=basic)
     b, s = result.best_evaluation, result.start_evaluation
     verdict = "all constraints met" if result.feasible else "INFEASIBLE: no design met every " \
         "constraint; the best design found is written"
@@ -163,8 +189,11 @@ def run_optimize(args: argparse.Namespace) -> int:
     provenance = {"source_file": str(Path(args.case).resolve()) if args.case and
                   Path(args.case).is_file() else (args.case or case.name),
                   "log_file": str(log_path.resolve())}
+    if basic is not None:
+        provenance["basic_design"] = provenance.pop("source_file")
     new = optimized_case(result, provenance=provenance)
-    text = _HEADER.format(case=case.name) + new.to_toml()
+    header = _HEADER if basic is None else _HEADER_BASIC
+    text = header.format(case=case.name) + new.to_toml()
     case_from_dict(tomllib.loads(text))  # the written text must load back
     import xarray as xr
 

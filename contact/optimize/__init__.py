@@ -6,7 +6,8 @@ workers (:mod:`contact.study.engine`).
 
 Modules
 -------
-variables   the design variables (pinion settings, profile relief) and how they change a case
+variables   the design variables (pinion settings, profile relief, synthesis inputs) and how
+            they change a case
 objective   the problem (torques, misalignments, limits, weights), objective and constraints
 run         the optimiser (scipy differential evolution or Powell), log and provenance
 """
@@ -29,6 +30,7 @@ from contact.optimize.run import (
 )
 from contact.optimize.variables import (
     RELIEF_VARIABLES,
+    SYNTHESIS_VARIABLES,
     DesignVariable,
     case_at,
     check_variables,
@@ -36,7 +38,8 @@ from contact.optimize.variables import (
     variable_unit,
 )
 
-__all__ = ["FAILED_OBJECTIVE", "METHODS", "RELIEF_VARIABLES", "TERM_NAMES", "DesignVariable",
+__all__ = ["FAILED_OBJECTIVE", "METHODS", "RELIEF_VARIABLES", "SYNTHESIS_VARIABLES",
+           "TERM_NAMES", "DesignVariable",
            "Evaluation", "OptimizeProblem", "OptimizeResult", "SharedDesign", "case_at",
            "check_variables", "constraint_names", "evaluate_design", "optimize",
            "optimized_case", "problem_from_table", "start_values", "variable_unit"]

@@ -349,7 +349,7 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
     status = 0
     try:
         case = case_at(shared.case, shared.pinion_flank, shared.names, x,
-                       relief_start=shared.relief_start)
+                       relief_start=shared.relief_start, basic=shared.basic)
         for im, mis in enumerate(problem.misalignments):
             c = dataclasses.replace(case, misalignment=mis)
             tree = run_analysis(c, list(problem.torque), flank=problem.flank,

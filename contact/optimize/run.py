@@ -51,6 +51,7 @@ from contact.optimize.variables import (
 )
 from contact.study.engine import open_client, run_tasks
 from geometry import __version__
+from geometry.basic_design import BasicDesign
 from geometry.case import Case
 from geometry.conventions import data_var
 from geometry.errors import InputError
@@ -76,6 +77,7 @@ class SharedDesign:
     pinion_flank: str
     names: tuple[str, ...]
     relief_start: float = 0.5
+    basic: BasicDesign | None = None  # the start's basic design: synthesis variables
 
 
 @dataclass(frozen=True, eq=False)
@@ -225,7 +227,7 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
              method: str = "differential_evolution", max_evaluations: int = 200,
              popsize: int | None = None, seed: int | None = 0, relief_start: float = 0.5,
              scheduler: Any = None, n_workers: int | None = None,
-             progress: bool = False) -> OptimizeResult:
+             progress: bool = False, basic: BasicDesign | None = None) -> OptimizeResult:
     """Optimise the pinion flank's variables for a loaded target.
 
     Parameters
@@ -253,6 +255,10 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
         LocalCluster, ``"synchronous"`` this process.
     progress : bool
         tqdm progress bar over the evaluations.
+    basic : geometry.basic_design.BasicDesign, optional
+        The basic design ``case`` was synthesised from: its flank prescriptions
+        (:data:`contact.optimize.variables.SYNTHESIS_VARIABLES`, and the relief) may be
+        variables; each design is then re-synthesised.
 
     Returns
     -------
@@ -278,12 +284,12 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
             or max_evaluations < 2:
         raise InputError(f"max_evaluations: must be an integer >= 2, got {max_evaluations!r}")
     pinion_flank = _pinion_flank(case, problem.flank)
-    check_variables(case, pinion_flank, variables)
+    check_variables(case, pinion_flank, variables, basic=basic)
     names = tuple(v.name for v in variables)
     units = tuple(variable_unit(n) for n in names)
     lo = np.array([v.low for v in variables], float)
     hi = np.array([v.high for v in variables], float)
-    x0 = start_values(case, pinion_flank, names)
+    x0 = start_values(case, pinion_flank, names, basic=basic)
     outside = [(n, x, a, b) for n, x, a, b in zip(names, x0, lo, hi, strict=True)
                if not a <= x <= b]
     if outside:
@@ -291,7 +297,7 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
         raise InputError(f"optimize.bounds.{n}: the start value {x:.8g} {variable_unit(n)} lies "
                          f"outside the bounds ({a:g}, {b:g}); widen them")
     problem = problem.with_case(case)
-    shared = SharedDesign(case, problem, pinion_flank, names, relief_start)
+    shared = SharedDesign(case, problem, pinion_flank, names, relief_start, basic)
     span = hi - lo
 
     def to_x(z):
@@ -336,7 +342,8 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
     evals = ev.done
     best = min(evals, key=_rank)
     start = evals[0]
-    best_case = case_at(case, pinion_flank, names, best.x, relief_start=relief_start)
+    best_case = case_at(case, pinion_flank, names, best.x, relief_start=relief_start,
+                        basic=basic)
     log_ds = _log_dataset(shared, evals, units, method)
     if not best.feasible:
         log.warning("optimize: no design met every constraint; best found %s (objective "

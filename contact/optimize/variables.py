@@ -7,12 +7,22 @@ unit — or a profile relief (``tip_relief``, ``root_relief`` [µm], made by the
 flankrem and toprem, :func:`geometry.relief.relieved_blade`). Values are handled in file
 units (deg, mm, µm, 1/rad …) so bounds read as engineers write them.
 
+When the start is a basic design (:class:`geometry.basic_design.BasicDesign`, a
+``cases/basic`` file), the local-synthesis inputs of the optimised flank are variables too
+(:data:`SYNTHESIS_VARIABLES`: path angle, TE level, ellipse length, elastic approach,
+relief start — and the relief, then a synthesis input): every design is then
+re-synthesised (:func:`geometry.synthesis.synthesize`, ≈ 6 s) before its settings are
+set, so the flank keeps the synthesis' contact path, TE and ellipse at M (Litvin &
+Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., ch. 9; seed future work (iv)).
+
 Public functions
 ----------------
 RELIEF_VARIABLES   the relief variables, name → unit
+SYNTHESIS_VARIABLES the local-synthesis inputs (a basic-design start), name → unit
 DesignVariable     a variable with its bounds (file units)
 variable_unit      the file unit of a variable name
 start_values       a variable's value in a case (file units)
+synthesised_case   a basic design synthesised in the place of a case
 case_at            the case with variable values set
 check_variables    validate names and bounds against the case (before any work)
 """
@@ -26,17 +36,34 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from geometry.basic_design import (
+    FLANK_OPTION_UNITS,
+    BasicDesign,
+    flank_option_values,
+    with_flank_options,
+)
 from geometry.case import Case
 from geometry.correction import SETTING_VARIABLES, setting_value, tool_with_values
 from geometry.errors import InputError
 from geometry.relief import blade_relief, relieved_blade
 
-__all__ = ["RELIEF_VARIABLES", "DesignVariable", "case_at", "check_variables",
-           "start_values", "variable_unit"]
+__all__ = ["RELIEF_VARIABLES", "SYNTHESIS_VARIABLES", "DesignVariable", "case_at",
+           "check_variables", "start_values", "synthesised_case", "variable_unit"]
 
 #: relief variables (µm of normal relief at the flank's tip end / root end, mean section)
 RELIEF_VARIABLES: Mapping[str, str] = {"tip_relief": "um", "root_relief": "um"}
 _RELIEF_MAX = 200.0  # [um] geometry.relief's limit (0.2 mm)
+#: local-synthesis inputs of the optimised flank (a basic-design start only), file units
+SYNTHESIS_VARIABLES: Mapping[str, str] = {k: u for k, u in FLANK_OPTION_UNITS.items()
+                                          if k not in RELIEF_VARIABLES}
+
+
+def _synthesised(names: Sequence[str], basic: BasicDesign | None) -> set[str]:
+    """The names that are synthesis inputs: SYNTHESIS_VARIABLES, and the relief when the
+    start is a basic design."""
+    if basic is None:
+        return set()
+    return {n for n in names if n in SYNTHESIS_VARIABLES or n in RELIEF_VARIABLES}
 
 
 @dataclass(frozen=True)
@@ -62,8 +89,11 @@ def variable_unit(name: str) -> str:
         return RELIEF_VARIABLES[name]
     if name in SETTING_VARIABLES:
         return SETTING_VARIABLES[name].unit
+    if name in SYNTHESIS_VARIABLES:
+        return SYNTHESIS_VARIABLES[name]
     raise InputError(f"optimize.variables: unknown variable {name!r}; accepted: "
-                     f"{', '.join([*SETTING_VARIABLES, *RELIEF_VARIABLES])}")
+                     f"{', '.join([*SETTING_VARIABLES, *RELIEF_VARIABLES])}, and with a "
+                     f"basic-design start {', '.join(SYNTHESIS_VARIABLES)}")
 
 
 def _measured_relief(case: Case, flank: str) -> tuple[float, float]:
@@ -75,17 +105,24 @@ def _measured_relief(case: Case, flank: str) -> tuple[float, float]:
     return 1e3 * tip, 1e3 * root
 
 
-def start_values(case: Case, flank: str, names: Sequence[str]) -> np.ndarray:
+def start_values(case: Case, flank: str, names: Sequence[str], *,
+                 basic: BasicDesign | None = None) -> np.ndarray:
     """Values of the variables ``names`` in the case's pinion flank ``flank`` [file units].
 
     Relief variables are the relief the blade's rems make at the flank's two ends, measured
-    on the blade (:func:`geometry.relief.blade_relief`; 0 without rems).
+    on the blade (:func:`geometry.relief.blade_relief`; 0 without rems) — or, with a basic
+    design ``basic`` (the design ``case`` was synthesised from), its prescriptions, as are
+    the :data:`SYNTHESIS_VARIABLES`.
     """
     tool = case.pinion.flank(flank)
+    synth = _synthesised(names, basic)
+    prescribed = flank_option_values(basic.options.flank(flank)) if synth else {}
     out = []
     relief = None
     for name in names:
-        if name in RELIEF_VARIABLES:
+        if name in synth:
+            out.append(prescribed[name])
+        elif name in RELIEF_VARIABLES:
             if relief is None:
                 relief = _measured_relief(case, flank)
             out.append(relief[0] if name == "tip_relief" else relief[1])
@@ -95,8 +132,19 @@ def start_values(case: Case, flank: str, names: Sequence[str]) -> np.ndarray:
     return np.asarray(out, float)
 
 
+def synthesised_case(case: Case, basic: BasicDesign) -> Case:
+    """``basic`` synthesised, in the place of ``case``: its name, misalignment and extra
+    tables kept (the synthesis' own ``extra["synthesis"]`` record replaces the old one)."""
+    from geometry.synthesis import synthesize
+
+    new = synthesize(basic)[0]
+    return dataclasses.replace(new, name=case.name, misalignment=case.misalignment,
+                               operating=case.operating,
+                               extra=type(new.extra)({**case.extra, **new.extra}))
+
+
 def case_at(case: Case, flank: str, names: Sequence[str], values, *,
-            relief_start: float = 0.5) -> Case:
+            relief_start: float = 0.5, basic: BasicDesign | None = None) -> Case:
     """The case with the pinion flank's variables set.
 
     Parameters
@@ -109,7 +157,12 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
     values : array_like (len(names),)
         Values in file units (deg, mm, µm …).
     relief_start : float
-        Where a relief starts (:func:`geometry.relief.relieved_blade`).
+        Where a relief starts (:func:`geometry.relief.relieved_blade`); unused with
+        ``basic`` (the basic design's own ``relief_start``, or the variable, holds).
+    basic : geometry.basic_design.BasicDesign, optional
+        The design ``case`` was synthesised from: synthesis variables (and the relief) are
+        set in its prescriptions for ``flank`` and the design re-synthesised
+        (:func:`synthesised_case`) before the settings are set.
 
     Returns
     -------
@@ -118,14 +171,21 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
     Raises
     ------
     InputError
-        A value outside the setting's valid range (the dataclass's message), or a relief
-        the blade cannot make.
+        A value outside the setting's valid range (the dataclass's message), a relief the
+        blade cannot make, or a synthesis that has no solution (named by the synthesis).
 
     Notes
     -----
-    The settings are set first; a relief variable then re-makes the blade's rems on the new
-    flank (both reliefs, the one not varied kept at its start value measured on the case).
+    With ``basic``, synthesis first; then the settings are set; a relief variable without
+    ``basic`` then re-makes the blade's rems on the new flank (both reliefs, the one not
+    varied kept at its start value measured on the case).
     """
+    synth = _synthesised(names, basic)
+    if synth:
+        prescribed = {n: float(v) for n, v in zip(names, values, strict=True) if n in synth}
+        case = synthesised_case(case, with_flank_options(basic, flank, prescribed))
+        kept = [(n, v) for n, v in zip(names, values, strict=True) if n not in synth]
+        names, values = [n for n, _ in kept], [v for _, v in kept]
     mem = case.pinion
     tool = mem.flank(flank)
     settings = {n: float(v) * SETTING_VARIABLES[n].scale
@@ -144,15 +204,25 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
     return dataclasses.replace(case, pinion=dataclasses.replace(mem, **{flank: new}))
 
 
-def check_variables(case: Case, flank: str, variables: Sequence[DesignVariable]) -> None:
+def check_variables(case: Case, flank: str, variables: Sequence[DesignVariable], *,
+                    basic: BasicDesign | None = None) -> None:
     """Refuse unknown names and bounds outside a variable's valid range, before any work.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str
+    variables : sequence of DesignVariable
+    basic : geometry.basic_design.BasicDesign, optional
+        The design ``case`` was synthesised from; needed by :data:`SYNTHESIS_VARIABLES`.
 
     Raises
     ------
     InputError
         No variables, a name given twice or unknown, a setting the pinion's process lacks,
-        bounds not finite or not low < high, or a bound at which the setting is invalid
-        (the message names the variable, the bound and the setting's own complaint).
+        a synthesis variable without a basic design, bounds not finite or not low < high,
+        or a bound at which the setting or prescription is invalid (the message names the
+        variable, the bound and the setting's own complaint).
     """
     if not variables:
         raise InputError("optimize.variables: give at least one variable")
@@ -168,7 +238,19 @@ def check_variables(case: Case, flank: str, variables: Sequence[DesignVariable])
         if not (math.isfinite(v.low) and math.isfinite(v.high) and v.low < v.high):
             raise InputError(f"optimize.bounds.{v.name}: must be finite with low < high, got "
                              f"({v.low:g}, {v.high:g}) {unit}")
+        if v.name in SYNTHESIS_VARIABLES and basic is None:
+            raise InputError(f"optimize.variables: {v.name!r} is a synthesis input; start "
+                             "from the basic design file (e.g. ltca optimize "
+                             "cases/basic/NAME.toml), not a case")
         for b in (v.low, v.high):
+            if v.name in SYNTHESIS_VARIABLES or (basic is not None and
+                                                 v.name in RELIEF_VARIABLES):
+                try:
+                    with_flank_options(basic, flank, {v.name: b})
+                except InputError as exc:
+                    raise InputError(f"optimize.bounds.{v.name}: {b:g} {unit} lies outside "
+                                     f"the prescription's valid range ({exc})") from None
+                continue
             if v.name in RELIEF_VARIABLES:
                 if not 0.0 <= b < _RELIEF_MAX:
                     raise InputError(f"optimize.bounds.{v.name}: {b:g} um lies outside the "
