@@ -169,10 +169,13 @@ def normal_curvature(kappa1, kappa2, dir1, direction):
     Returns
     -------
     ndarray — [1/mm]
-        κ = κ_1 cos²φ + κ_2 sin²φ with cos φ = t·e_1.
+        κ = κ_1 cos²φ + κ_2 sin²φ with cos φ = t·e_1; NaN where ``direction`` is zero
+        (no direction: e.g. the padding of absent contact segments, masked by the
+        callers).
     """
     t = np.asarray(direction, dtype=float)
-    t = t / np.linalg.norm(t, axis=-1, keepdims=True)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = t / np.linalg.norm(t, axis=-1, keepdims=True)
     c2 = dot(t, np.asarray(dir1, dtype=float)) ** 2
     return np.asarray(kappa1) * c2 + np.asarray(kappa2) * (1.0 - c2)
 

@@ -101,6 +101,7 @@ def test_geometry_commands(tmp_path, capsys, case):
         assert np.nanmax(np.abs(res)) <= 1e-9
 
 
+@pytest.mark.slow  # ~30 s; CI budget (README: slow studies run outside CI)
 def test_run_prints_the_deviation_te_table_of_the_file(tmp_path, capsys):
     """`ltca run` of a case with a [deviations] table: the theoretical/deviated TE table
     (seed Tables 4.2, 4.4) shows the values stored in the netCDF; --no-deviations ignores

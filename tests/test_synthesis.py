@@ -285,6 +285,7 @@ def _misaligned_contact(case, nominal, mis, steps=10):
     return res
 
 
+@pytest.mark.slow  # ~30 s; CI budget (README: slow studies run outside CI)
 def test_misalignment_moves_the_contact_toe_or_heel():
     """Seed Fig. 2.11: ΔE, ΔP of 0.08–0.15 mm move the drive-side pattern to the toe (b) or
     the heel (c); the extraction lost the signs. geometry.assembly's convention (ΔE > 0
