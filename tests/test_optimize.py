@@ -139,8 +139,10 @@ def test_optimize_table_is_read_and_checked():
     problem, run = problem_from_table({
         "torque": [50, 500], "max_edge_share": 0.05, "max_flank_pressure": [1500, 2000],
         "misalignments": [{"dE": -0.15, "dP": 0.12}, {"dSigma": 0.01}],
-        "variables": {"tip_relief": [0, 30]}, "method": "powell"})
+        "variables": {"tip_relief": [0, 30]}, "method": "powell",
+        "start": {"tip_relief": 12.5}})
     assert problem.max_edge_share == (0.05, 0.05)
+    assert run["start"] == {"tip_relief": 12.5}
     assert problem.misalignments[1].delta_Sigma == pytest.approx(math.radians(0.01))
     assert run["variables"] == {"tip_relief": (0.0, 30.0)} and run["method"] == "powell"
     with pytest.raises(InputError, match=r"optimize\.colour"):
@@ -212,3 +214,28 @@ def test_bad_synthesis_bounds_are_refused_before_any_synthesis(variable, match):
 
     with pytest.raises(InputError, match=match):
         check_variables(_case(), "concave", [variable], basic=_basic())
+
+
+def test_start_values_replace_the_cases_and_are_checked(monkeypatch):
+    """``start`` (the ``[optimize.start]`` table) replaces a variable's start value: the
+    first design analysed is the case at those values. A start for a name that is not a
+    variable, or outside the bounds, is refused before any analysis."""
+    import contact.pipeline
+
+    seen = []
+
+    def fake(case, *a, **k):  # records the first design's blade and stops the run
+        seen.append(case.pinion.concave.blade.flankrem_angle)
+        raise RuntimeError("stop")
+
+    monkeypatch.setattr(contact.pipeline, "run_analysis", fake)
+    res = optimize(_case(), [DesignVariable("tip_relief", 0.0, 40.0)], _problem(),
+                   method="powell", max_evaluations=2, scheduler="synchronous",
+                   start={"tip_relief": 25.0})
+    assert res.start[0] == 25.0 and seen[0] > 0  # a relieved blade was analysed first
+    with pytest.raises(InputError, match=r"optimize.start.H1: not one of the variables"):
+        optimize(_case(), [DesignVariable("tip_relief", 0.0, 40.0)], _problem(),
+                 scheduler="synchronous", start={"H1": 0.1})
+    with pytest.raises(InputError, match="start value 50 um lies outside"):
+        optimize(_case(), [DesignVariable("tip_relief", 0.0, 40.0)], _problem(),
+                 scheduler="synchronous", start={"tip_relief": 50.0})

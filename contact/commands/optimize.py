@@ -45,6 +45,8 @@ def register(sub) -> None:
     )
     options.case_argument(p, what="optimise")
     options.output_option(p, default="<case>_optimized.toml", what="optimised case file (TOML)")
+    p.add_argument("--name", default=None,
+                   help="name of the new case (default <case>_optimized)")
     p.add_argument("--log", default=None, metavar="FILE",
                    help="netCDF log of every evaluation, group /optimize (default: the "
                         "output with suffix .nc)")
@@ -101,6 +103,16 @@ def _start(arg: str | None):
             basic = load_basic(path)
             return synthesize(basic)[0], basic
     return resolve_case(arg), None
+
+
+def _shown(path) -> str:
+    """A path as the provenance records it: relative to the working directory when inside
+    it (a case written in a repository names its inputs portably), else absolute."""
+    p = Path(path).resolve()
+    try:
+        return p.relative_to(Path.cwd().resolve()).as_posix()
+    except ValueError:
+        return str(p)
 
 
 def _table(case) -> dict:
@@ -169,7 +181,7 @@ def run_optimize(args: argparse.Namespace) -> int:
         popsize=run.get("popsize"), seed=args.seed if args.seed is not None
         else run.get("seed", 0), relief_start=run.get("relief_start", 0.5),
         scheduler=args.scheduler, n_workers=args.workers, progress=not args.no_progress,
-        basic=basic)
+        basic=basic, start=run.get("start"))
     b, s = result.best_evaluation, result.start_evaluation
     verdict = "all constraints met" if result.feasible else "INFEASIBLE: no design met every " \
         "constraint; the best design found is written"
@@ -186,12 +198,11 @@ def run_optimize(args: argparse.Namespace) -> int:
     rows.append(("objective", "1", f"{s.objective:.5g}", f"{b.objective:.5g}"))
     print(tabulate(rows, headers=["worst over misalignments, per torque", "unit", "start",
                                   "result"], tablefmt="github", disable_numparse=True))
-    provenance = {"source_file": str(Path(args.case).resolve()) if args.case and
-                  Path(args.case).is_file() else (args.case or case.name),
-                  "log_file": str(log_path.resolve())}
+    provenance = {"source_file": _shown(args.case) if args.case and Path(args.case).is_file()
+                  else (args.case or case.name), "log_file": _shown(log_path)}
     if basic is not None:
         provenance["basic_design"] = provenance.pop("source_file")
-    new = optimized_case(result, provenance=provenance)
+    new = optimized_case(result, provenance=provenance, name=args.name)
     header = _HEADER if basic is None else _HEADER_BASIC
     text = header.format(case=case.name) + new.to_toml()
     case_from_dict(tomllib.loads(text))  # the written text must load back

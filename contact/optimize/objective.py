@@ -197,7 +197,8 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
         [MPa], ``lte_peak_to_peak_range`` [µrad], ``lte_mean_range`` [µrad], ``weights``,
         ``torque_weights``, ``pattern_target``, ``penalty``, ``variables`` (table name →
         [low, high] in the variable's unit), ``method``, ``max_evaluations``,
-        ``popsize``, ``seed``, ``relief_start``.
+        ``popsize``, ``seed``, ``relief_start``, ``start`` (table name → start value in
+        the variable's unit, replacing the case's own).
     **override
         Problem fields that replace the table's (e.g. from the command line).
 
@@ -215,7 +216,7 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
     keys = {"torque", "misalignments", "max_edge_share", "max_flank_pressure",
             "lte_peak_to_peak_range", "lte_mean_range", "weights", "torque_weights",
             "pattern_target", "penalty", "variables", "method", "max_evaluations",
-            "popsize", "seed", "relief_start"}
+            "popsize", "seed", "relief_start", "start"}
     unknown = sorted(set(table) - keys)
     if unknown:
         raise InputError(f"optimize.{unknown[0]}: unknown field; accepted: "
@@ -249,6 +250,10 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
     problem = OptimizeProblem(**kw)
     run = {k: table[k] for k in ("method", "max_evaluations", "popsize", "seed",
                                  "relief_start") if k in table}
+    start = table.get("start", {})
+    if not isinstance(start, Mapping):
+        raise InputError("optimize.start: must be a table name = value")
+    run["start"] = dict(start)
     variables = table.get("variables", {})
     if not isinstance(variables, Mapping):
         raise InputError("optimize.variables: must be a table name = [low, high]")

@@ -55,6 +55,7 @@ from geometry.basic_design import BasicDesign
 from geometry.case import Case
 from geometry.conventions import data_var
 from geometry.errors import InputError
+from geometry.validation import real
 
 __all__ = ["METHODS", "OptimizeResult", "SharedDesign", "optimize", "optimized_case"]
 
@@ -227,7 +228,8 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
              method: str = "differential_evolution", max_evaluations: int = 200,
              popsize: int | None = None, seed: int | None = 0, relief_start: float = 0.5,
              scheduler: Any = None, n_workers: int | None = None,
-             progress: bool = False, basic: BasicDesign | None = None) -> OptimizeResult:
+             progress: bool = False, basic: BasicDesign | None = None,
+             start: Mapping[str, float] | None = None) -> OptimizeResult:
     """Optimise the pinion flank's variables for a loaded target.
 
     Parameters
@@ -259,6 +261,9 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
         The basic design ``case`` was synthesised from: its flank prescriptions
         (:data:`contact.optimize.variables.SYNTHESIS_VARIABLES`, and the relief) may be
         variables; each design is then re-synthesised.
+    start : mapping of str to float, optional
+        Start values [file units] of some variables, replacing the case's own (e.g. to go
+        on from an earlier run's result); each inside its bounds.
 
     Returns
     -------
@@ -290,6 +295,11 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
     lo = np.array([v.low for v in variables], float)
     hi = np.array([v.high for v in variables], float)
     x0 = start_values(case, pinion_flank, names, basic=basic)
+    for n, v in (start or {}).items():
+        if n not in names:
+            raise InputError(f"optimize.start.{n}: not one of the variables "
+                             f"({', '.join(names)})")
+        x0[names.index(n)] = real(f"optimize.start.{n}", v, unit=variable_unit(n))
     outside = [(n, x, a, b) for n, x, a, b in zip(names, x0, lo, hi, strict=True)
                if not a <= x <= b]
     if outside:
