@@ -102,6 +102,7 @@ def test_flank_peak_pressure_converges_in_the_roll_positions():
     assert abs(p80 / p40 - 1.0) <= 0.02, (p40, p80)
 
 
+@pytest.mark.slow  # two syntheses, ~30 s in the suite; CI budget
 def test_case_is_its_basic_design_at_the_recorded_optimum():
     """The file is reproducible from what it records: the basic file synthesised, with the
     result values of its ``[optimize]`` table set by :func:`contact.optimize.case_at`,

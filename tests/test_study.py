@@ -200,6 +200,7 @@ def test_resume_after_a_kill_recomputes_only_the_missing_points(case, tmp_path,
         run_points(shared, points, output=tmp_path / "t.nc", scheduler="synchronous")
 
 
+@pytest.mark.slow  # 16 s; CI budget
 def test_vh_check_moves_the_pattern_to_toe_and_heel(case):
     """At the returned V and H an independent run_analysis puts the pattern centre on
     the toe and heel targets within the grid's tolerance (the change of the centre
