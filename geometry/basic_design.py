@@ -322,6 +322,25 @@ _FLANK_FIELDS = {f.name for f in fields(FlankOptions)}
 _TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating", "optimize"}
 
 
+def _same(v):
+    return v
+
+
+#: flank prescription → (file unit, file → FlankOptions value, FlankOptions value → file):
+#: the one place the ``[synthesis]`` units are converted, both ways
+_FILE_UNITS: dict[str, tuple[str, Callable[[Any], Any], Callable[[Any], Any]]] = {
+    "path_angle": ("deg", math.radians, math.degrees),
+    "te_level": ("urad", lambda v: v * 1e-6, lambda v: 1e6 * v),
+    "ellipse_length": ("1", _same, _same),
+    "approach": ("mm", _same, _same),
+    "tip_relief": ("um", lambda v: v * 1e-3, lambda v: 1e3 * v),
+    "root_relief": ("um", lambda v: v * 1e-3, lambda v: 1e3 * v),
+    "relief_start": ("1", _same, _same),
+}
+#: file units of the flank prescriptions (``[synthesis]`` of a basic file)
+FLANK_OPTION_UNITS: Mapping[str, str] = {k: u for k, (u, _, _) in _FILE_UNITS.items()}
+
+
 def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -> FlankOptions:
     unknown = sorted(set(raw) - _FLANK_FIELDS)
     if unknown:
@@ -331,18 +350,11 @@ def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -
     for k, v in raw.items():
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise InputError(f"{where}.{k}: must be a number, got {v!r}")
-        kw[k] = (math.radians(v) if k == "path_angle" else v * 1e-6 if k == "te_level"
-                 else v * 1e-3 if k in ("tip_relief", "root_relief") else v)
+        kw[k] = _FILE_UNITS[k][1](v)
     try:
         return replace(base, **kw) if base is not None else FlankOptions(**kw)
     except InputError as exc:
         raise InputError(f"{where}.{exc}") from None
-
-
-#: file units of the flank prescriptions (``[synthesis]`` of a basic file)
-FLANK_OPTION_UNITS: Mapping[str, str] = {
-    "path_angle": "deg", "te_level": "urad", "ellipse_length": "1", "approach": "mm",
-    "tip_relief": "um", "root_relief": "um", "relief_start": "1"}
 
 
 def flank_option_values(options: FlankOptions) -> dict[str, float]:
@@ -357,9 +369,7 @@ def flank_option_values(options: FlankOptions) -> dict[str, float]:
     dict of str to float
         Field → value in the unit a basic file gives it.
     """
-    to_file = {"path_angle": math.degrees, "te_level": lambda v: 1e6 * v,
-               "tip_relief": lambda v: 1e3 * v, "root_relief": lambda v: 1e3 * v}
-    return {k: float(to_file.get(k, float)(getattr(options, k))) for k in FLANK_OPTION_UNITS}
+    return {k: float(to_file(getattr(options, k))) for k, (_, _, to_file) in _FILE_UNITS.items()}
 
 
 def with_flank_options(basic: BasicDesign, flank: str,
