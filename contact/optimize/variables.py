@@ -133,8 +133,26 @@ def start_values(case: Case, flank: str, names: Sequence[str], *,
 
 
 def synthesised_case(case: Case, basic: BasicDesign) -> Case:
-    """``basic`` synthesised, in the place of ``case``: its name, misalignment and extra
-    tables kept (the synthesis' own ``extra["synthesis"]`` record replaces the old one)."""
+    """``basic`` synthesised, in the place of ``case``.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        The case being replaced: its name, misalignment, operating point and extra tables
+        are kept (the synthesis' own ``extra["synthesis"]`` record replaces the old one).
+    basic : geometry.basic_design.BasicDesign
+        The design to synthesise (angles in rad, lengths in mm inside).
+
+    Returns
+    -------
+    geometry.case.Case
+
+    Raises
+    ------
+    InputError
+        A synthesis step without a solution (named by :func:`geometry.synthesis.synthesize`:
+        ISO 23509 blank, Litvin local synthesis, Litvin & Fuentes 2004 ch. 9).
+    """
     from geometry.synthesis import synthesize
 
     new = synthesize(basic)[0]
