@@ -30,16 +30,14 @@ from __future__ import annotations
 
 import math
 import os
-import tomllib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, replace
-from pathlib import Path
 from typing import Any
 
 from scipy.optimize import least_squares
 
 from geometry.blank import BlankGeometry, blank_geometry
-from geometry.case import operating_from_dict
+from geometry.case import operating_from_dict, read_toml
 from geometry.errors import InputError, ModelUnavailableError
 from geometry.pitch_cone import BevelGearDesign
 from geometry.validation import real
@@ -519,16 +517,4 @@ def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign
     ModelUnavailableError
         As :func:`basic_from_dict`.
     """
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"basic file: no such file {str(p)!r}")
-    try:
-        raw = tomllib.loads(p.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"basic file {str(p)!r}: invalid TOML: {exc}") from None
-    except UnicodeDecodeError as exc:
-        raise InputError(f"basic file {str(p)!r}: not UTF-8 text (byte {exc.start}); a TOML "
-                         "file is expected") from None
-    except OSError as exc:
-        raise InputError(f"basic file {str(p)!r}: cannot be read ({exc.strerror or exc})") from None
-    return basic_from_dict(raw, fit=fit)
+    return basic_from_dict(read_toml(path, "basic file"), fit=fit)

@@ -21,6 +21,7 @@ OperatingPoint                            the ``[operating]`` table: torques, sp
 DeviationFiles                            the optional ``[deviations]`` table (resolved paths)
 load_case                                 read and validate a TOML case file
 case_from_dict                            the same from an already parsed mapping
+read_toml                                 parse a TOML input file, a bad one refused by name
 Case.to_toml                              the case as TOML text (round-trips through load)
 """
 
@@ -62,6 +63,7 @@ __all__ = [
     "Pair",
     "case_from_dict",
     "load_case",
+    "read_toml",
 ]
 
 log = logging.getLogger(__name__)
@@ -770,18 +772,40 @@ def load_case(path: str | os.PathLike[str]) -> Case:
         For a ``pair.method`` that is reserved but not implemented (none today).
     """
     p = Path(path)
+    return case_from_dict(read_toml(p, "case file"), base_dir=p.resolve().parent)
+
+
+def read_toml(path: str | os.PathLike[str], what: str) -> dict[str, Any]:
+    """Parse a TOML input file, refusing a bad one in one line that names it.
+
+    Parameters
+    ----------
+    path : path-like
+    what : str
+        What the file is, for the messages (``"case file"``, ``"basic file"``).
+
+    Returns
+    -------
+    dict
+        The parsed document (TOML 1.0, :mod:`tomllib`).
+
+    Raises
+    ------
+    InputError
+        The file is missing, unreadable, not UTF-8 text or not valid TOML.
+    """
+    p = Path(path)
     if not p.is_file():
-        raise InputError(f"case file: no such file {str(p)!r}")
+        raise InputError(f"{what}: no such file {str(p)!r}")
     try:
-        raw = tomllib.loads(p.read_text(encoding="utf-8"))
+        return tomllib.loads(p.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"case file {str(p)!r}: invalid TOML: {exc}") from None
+        raise InputError(f"{what} {str(p)!r}: invalid TOML: {exc}") from None
     except UnicodeDecodeError as exc:
-        raise InputError(f"case file {str(p)!r}: not UTF-8 text (byte {exc.start}); a TOML "
+        raise InputError(f"{what} {str(p)!r}: not UTF-8 text (byte {exc.start}); a TOML "
                          "file is expected") from None
     except OSError as exc:
-        raise InputError(f"case file {str(p)!r}: cannot be read ({exc.strerror or exc})") from None
-    return case_from_dict(raw, base_dir=p.resolve().parent)
+        raise InputError(f"{what} {str(p)!r}: cannot be read ({exc.strerror or exc})") from None
 
 
 # ---------------------------------------------------------------------------- writing
