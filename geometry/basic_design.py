@@ -365,7 +365,7 @@ def flank_option_values(options: FlankOptions) -> dict[str, float]:
     Returns
     -------
     dict of str to float
-        Field → value in the unit a basic file gives it.
+        Field → value in the unit a basic file gives it (schema: docs/synthesis.md).
     """
     return {k: float(to_file(getattr(options, k))) for k, (_, _, to_file) in _FILE_UNITS.items()}
 
@@ -392,6 +392,11 @@ def with_flank_options(basic: BasicDesign, flank: str,
     InputError
         Unknown flank or field, or a value outside the field's range, named as
         ``synthesis.<flank>.<field>``.
+
+    Notes
+    -----
+    The prescriptions of Litvin's local synthesis (Litvin & Fuentes, *Gear Geometry and
+    Applied Theory*, 2nd ed., ch. 9), in the ``[synthesis]`` schema of docs/synthesis.md.
     """
     if flank not in ("concave", "convex"):
         raise InputError(f"flank: must be 'concave' or 'convex', got {flank!r}")

@@ -307,6 +307,12 @@ def blade_relief(blade: Blade, machine: MachineSettings, blank: Blank, hand: str
     ------
     InputError
         As :func:`relief_heights`, if the blade has rems.
+
+    Notes
+    -----
+    The normal distance of the module docstring's closed form (tip and root relief by
+    flankrem and toprem, Stadtfeld, *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3),
+    evaluated on the blade rather than solved for.
     """
     if blade.toprem_angle == 0.0 and blade.flankrem_angle == 0.0:
         return 0.0, 0.0
