@@ -140,13 +140,18 @@ def test_optimize_table_is_read_and_checked():
         "torque": [50, 500], "max_edge_share": 0.05, "max_flank_pressure": [1500, 2000],
         "misalignments": [{"dE": -0.15, "dP": 0.12}, {"dSigma": 0.01}],
         "variables": {"tip_relief": [0, 30]}, "method": "powell",
-        "start": {"tip_relief": 12.5}})
+        "start": {"tip_relief": 12.5}, "rolls_per_cycle": 40})
     assert problem.max_edge_share == (0.05, 0.05)
+    assert problem.options.rolls_per_cycle == 40 and problem.options.segments == 24
     assert run["start"] == {"tip_relief": 12.5}
     assert problem.misalignments[1].delta_Sigma == pytest.approx(math.radians(0.01))
     assert run["variables"] == {"tip_relief": (0.0, 30.0)} and run["method"] == "powell"
     with pytest.raises(InputError, match=r"optimize\.colour"):
         problem_from_table({"colour": 1})
+    with pytest.raises(InputError, match=r"optimize\.rolls_per_cycle: must be an integer"):
+        problem_from_table({"rolls_per_cycle": 40.5})
+    with pytest.raises(InputError, match=r"rolls_per_cycle"):
+        problem_from_table({"rolls_per_cycle": 2})
     with pytest.raises(InputError, match=r"optimize\.max_flank_pressure: give one value"):
         problem_from_table({"torque": [50, 250, 500], "max_flank_pressure": [1, 2]})
 

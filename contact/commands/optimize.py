@@ -158,6 +158,8 @@ def run_optimize(args: argparse.Namespace) -> int:
               if v is not None}
     if args.ritz_modes:
         opt_kw |= dict(zip(("n_height", "n_face"), args.ritz_modes, strict=True))
+    if opt_kw:  # the table's sampling stays unless an option replaces it
+        opt_kw = {k: table[k] for k in ("rolls_per_cycle", "segments") if k in table} | opt_kw
     if opt_kw:
         override["options"] = LTCAOptions(**opt_kw)
     problem, run = problem_from_table(table, **override)

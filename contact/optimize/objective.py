@@ -198,7 +198,8 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
         ``torque_weights``, ``pattern_target``, ``penalty``, ``variables`` (table name →
         [low, high] in the variable's unit), ``method``, ``max_evaluations``,
         ``popsize``, ``seed``, ``relief_start``, ``start`` (table name → start value in
-        the variable's unit, replacing the case's own).
+        the variable's unit, replacing the case's own), ``rolls_per_cycle`` and
+        ``segments`` (the loaded analysis's sampling, :class:`contact.ltca.LTCAOptions`).
     **override
         Problem fields that replace the table's (e.g. from the command line).
 
@@ -216,7 +217,7 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
     keys = {"torque", "misalignments", "max_edge_share", "max_flank_pressure",
             "lte_peak_to_peak_range", "lte_mean_range", "weights", "torque_weights",
             "pattern_target", "penalty", "variables", "method", "max_evaluations",
-            "popsize", "seed", "relief_start", "start"}
+            "popsize", "seed", "relief_start", "start", "rolls_per_cycle", "segments"}
     unknown = sorted(set(table) - keys)
     if unknown:
         raise InputError(f"optimize.{unknown[0]}: unknown field; accepted: "
@@ -246,6 +247,12 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
                     for k, v in m.items()}
             mis.append(Misalignment(**vals))
         kw["misalignments"] = tuple(mis)
+    sampling = {k: table[k] for k in ("rolls_per_cycle", "segments") if k in table}
+    for k, v in sampling.items():
+        if isinstance(v, bool) or not isinstance(v, int):
+            raise InputError(f"optimize.{k}: must be an integer, got {v!r}")
+    if sampling:
+        kw["options"] = LTCAOptions(**sampling)
     kw |= {k: v for k, v in override.items() if v is not None}
     problem = OptimizeProblem(**kw)
     run = {k: table[k] for k in ("method", "max_evaluations", "popsize", "seed",

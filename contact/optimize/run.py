@@ -100,6 +100,8 @@ class OptimizeResult:
     method : str
     seconds : float
         Wall time [s].
+    problem : OptimizeProblem or None
+        The problem solved (limits, weights, the analysis's options).
     """
 
     names: tuple[str, ...]
@@ -113,6 +115,7 @@ class OptimizeResult:
     log: xr.Dataset
     method: str
     seconds: float
+    problem: OptimizeProblem | None = None
 
 
 def _rank(e: Evaluation) -> tuple:
@@ -361,7 +364,7 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
     return OptimizeResult(names=names, units=units, start=x0, best=best.x, case=best_case,
                           feasible=best.feasible, start_evaluation=start,
                           best_evaluation=best, log=log_ds, method=method,
-                          seconds=time.perf_counter() - t_start)
+                          seconds=time.perf_counter() - t_start, problem=problem)
 
 
 def _pinion_flank(case: Case, flank: str | None) -> str:
@@ -404,6 +407,9 @@ def optimized_case(result: OptimizeResult, *, provenance: Mapping[str, object] |
                                               result.units, strict=True)},
         "torque_Nm": [float(t) for t in lo["torque"].values],
     }
+    if result.problem is not None:  # the sampling the designs were ranked at
+        table["rolls_per_cycle"] = int(result.problem.options.rolls_per_cycle)
+        table["segments"] = int(result.problem.options.segments)
     for tag, e in (("start", s), ("result", b)):
         table[tag] = {k: np.round(e.metrics[k], 6).tolist() for k in
                       ("lte_mean", "lte_peak_to_peak", "edge_load_share",
