@@ -75,7 +75,8 @@ def main() -> None:
     variables = [DesignVariable(n, float(a), float(b))
                  for n, a, b in (args.variable or DEFAULT_VARIABLES)]
     names = tuple(v.name for v in variables)
-    case = dataclasses.replace(resolve_case(None), misalignment=SEED_TABLE_3_1["misalignment"])
+    case = dataclasses.replace(resolve_case("kolivand2009_fm_11x41"),
+                               misalignment=SEED_TABLE_3_1["misalignment"])
     flank = FLANK_ROLES["drive"](case)
     options = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle, segments=args.segments,
                           n_height=args.ritz_modes[0], n_face=args.ritz_modes[1])

@@ -7,8 +7,10 @@ TOML text), the toolkit version and the operating conditions, so the netCDF file
 says how it was produced.
 
 The bundled cases live in ``cases/`` (installed as the package data
-``contact.cases``); :data:`DEFAULT_CASE` is the seed's 11×41 face-milled hypoid pair,
-and :data:`SEED_TABLE_3_1` its operating points (seed Fig. 3.6, Table 3.1).
+``contact.cases``); :data:`DEFAULT_CASE` is the reference design of the seed's 11×41
+face-milled hypoid pair (synthesised from its basic data, its synthesis inputs and settings
+optimised by ``ltca optimize`` against the loaded result; docs/optimize.md), and
+:data:`SEED_TABLE_3_1` its operating points (seed Fig. 3.6, Table 3.1).
 """
 
 from __future__ import annotations
@@ -52,8 +54,10 @@ __all__ = [
 
 log = logging.getLogger(__name__)
 
-#: File name of the default case (the seed's Table 2.1 / 4.1 pair, synthesised).
-DEFAULT_CASE = "kolivand2009_fm_11x41.toml"
+#: File name of the default case: the reference design of the seed's Table 2.1 / 4.1 pair
+#: (``kolivand2009_fm_11x41.toml`` is the same pair's long-bearing synthesis without relief,
+#: the optimiser's edge-loaded start).
+DEFAULT_CASE = "kolivand2009_fm_11x41_reference.toml"
 
 #: The seed's Table 3.1 operating points: pinion torques [N·m] and misalignment
 #: |ΔE| = 0.15 mm, |ΔP| = 0.12 mm, ΔG = 0, ΔΣ = 0. The text extraction lost the signs of

@@ -86,6 +86,7 @@ import time
 
 import numpy as np
 import xarray as xr
+from scipy import ndimage
 from scipy.interpolate import LinearNDInterpolator, RegularGridInterpolator
 from scipy.spatial import QhullError, cKDTree
 
@@ -270,11 +271,30 @@ def flank_line_speeds(case: Case, eo: EaseOff) -> tuple[np.ndarray, np.ndarray]:
     return gear, pinion
 
 
-def _on_gear_grid(eo: EaseOff, field: np.ndarray, u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """A field over the gear grid of ``eo`` at gear fractions (u, v), bilinear; NaN
-    outside or next to a missing node."""
-    f = RegularGridInterpolator((eo.u, eo.v), field, bounds_error=False, fill_value=np.nan)
-    return f(np.stack([u, v], -1)) if u.size else np.zeros(0)
+def _on_gear_grid(eo: EaseOff, field: np.ndarray, u: np.ndarray, v: np.ndarray, *,
+                  fill: bool = False) -> np.ndarray:
+    """A field over the gear grid of ``eo`` at gear fractions (u, v), bilinear; NaN outside
+    the grid or next to a missing node.
+
+    ``fill``: in a cell with some missing nodes (at the edge of the computed region: e.g.
+    a pinion row beyond its blank, masked by the ease-off) the missing nodes take their
+    nearest computed node's value, so a loaded segment there still gets a smooth field's
+    value (NaN only in a cell with no computed node); in a cell whose nodes are all
+    computed this is the plain bilinear value."""
+    if not u.size:
+        return np.zeros(0)
+    pts = np.stack([u, v], -1)
+    ok = np.isfinite(field)
+    if not fill or ok.all() or not ok.any():
+        return RegularGridInterpolator((eo.u, eo.v), field, bounds_error=False,
+                                       fill_value=np.nan)(pts)
+    idx = ndimage.distance_transform_edt(~ok, return_distances=False, return_indices=True)
+    filled = field[tuple(idx)]
+    value = RegularGridInterpolator((eo.u, eo.v), filled, bounds_error=False,
+                                    fill_value=np.nan)(pts)
+    near = RegularGridInterpolator((eo.u, eo.v), ok.astype(float), bounds_error=False,
+                                   fill_value=0.0)(pts) > 0
+    return np.where(near, value, np.nan)
 
 
 def passage_wear(ltca: xr.Dataset, eo: EaseOff, speeds: tuple[np.ndarray, np.ndarray],
@@ -348,8 +368,10 @@ def passage_wear(ltca: xr.Dataset, eo: EaseOff, speeds: tuple[np.ndarray, np.nda
         gear_axis=ltca.attrs["gear_axis"], gear_origin=ltca.attrs["gear_origin_mm"],
         pinion_speed=_UNIT_ROLL_RPM, ratio=float(ltca.attrs["ratio"]), check_meshing=False)
     vs = kin["sliding_velocity"] * 1e3  # m/s at 1 rad/s → mm/rad
-    c_g = _on_gear_grid(eo, g_speed, su, sv)
-    c_p = _on_gear_grid(eo, p_speed, su, sv)
+    # the line speeds are smooth fields: a segment beside a missing node takes the computed
+    # nodes' values (the mates below stay strict: NaN there, that pinion point is not worn)
+    c_g = _on_gear_grid(eo, g_speed, su, sv, fill=True)
+    c_p = _on_gear_grid(eo, p_speed, su, sv, fill=True)
     loaded = wt > 0
     bad = loaded & ~(np.isfinite(c_g) & np.isfinite(c_p) & (c_g > 0) & (c_p > 0))
     if bad.any():

@@ -219,16 +219,22 @@ def test_easeoff_views(default_tree):
 def test_transmission_error_figure_draws_the_pairs_and_their_envelope(default_tree):
     g = _groups(default_tree)
     ut, lt = g["utca"], g["ltca"]
-    curves = pair_ute_curves(ut, float(lt["roll"].values[0]), 2.0)
+    start = float(lt["roll"].values[0])
+    curves = pair_ute_curves(ut, start, 2.0)
     # the pairs' curves are one curve shifted by whole mesh cycles (seed §2.3.2.2), and
-    # their lower envelope is the UTE: at /ltca's rolls it equals /ltca's UTE to the
-    # interpolation between /utca's roll samples (spacing 1/30 cycle on a parabola of
-    # p-p ~57 µrad: ≤ 1 µrad)
-    x = lt["mesh_cycle"].values
+    # their lower envelope is the UTE: at /utca's own roll samples (where no interpolation
+    # enters) it equals /utca's UTE to round-off. (Between the samples a relieved flank's
+    # UTE can have features narrower than /utca's 1/30-cycle spacing: on the default case
+    # /ltca's UTE, computed at its own rolls, lies up to 1.1 µrad above the interpolated
+    # envelope at 50 N·m, so that comparison would test the sampling, not the figure.)
+    period = float(ut.attrs["mesh_period"])
+    x = (ut["roll"].values - start) / period
     inner = (x > 0.05) & (x < 1.95)
     env = np.min([np.interp(x, cx, cy, left=np.inf, right=np.inf)
                   for cx, cy in curves.values()], axis=0)
-    assert np.max(np.abs(env[inner] - lt["unloaded_transmission_error"].values[inner])) < 1.0
+    assert inner.sum() >= 10
+    np.testing.assert_allclose(env[inner], ut["unloaded_transmission_error"].values[inner],
+                               rtol=0, atol=1e-9)
     fig = transmission_error_figure(ut, lt)
     data_axes = [a for a in fig.axes if a.get_visible()]
     assert len(data_axes) == 1 + lt.sizes["torque"]
@@ -236,7 +242,7 @@ def test_transmission_error_figure_draws_the_pairs_and_their_envelope(default_tr
         (line,) = [ln for ln in ax.get_lines() if ln.get_label() == "LTE"]
         assert np.array_equal(line.get_ydata(), lt["transmission_error"].values[i])
         assert f"{lt['torque'].values[i]:g} N·m" in ax.get_title()
-    assert data_axes[-1].get_xlim() == (0.0, 2.0)
+    assert data_axes[-1].get_xlim() == pytest.approx((0.0, 2.0), abs=1e-12)
 
 
 def test_patterns_and_load_share_one_panel_per_torque(default_tree):

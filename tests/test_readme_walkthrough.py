@@ -4,7 +4,7 @@ Every command of the walk-through's ``bash`` block is parsed from README.md and 
 order, through :func:`contact.cli.main` from an empty temporary directory, so a bundled
 name or a ``cases/…`` path that only resolves inside a clone fails here, and so does a
 command that reads a file an earlier one did not write under that name (``ltca plot
-kolivand2009_fm_11x41.nc`` after ``ltca run``).
+kolivand2009_fm_11x41_reference.nc`` after ``ltca run``).
 
 Reduced resolution (the CI budget): options appended to a command replace the printed
 ones (argparse keeps the last), and only the resolution changes — fewer roll positions,
@@ -92,9 +92,9 @@ def _run_all(commands, tmp_path, monkeypatch, capsys):
 def test_walkthrough_runs_from_a_scratch_directory(tmp_path, monkeypatch, capsys):
     _run_all([a for a in COMMANDS if a[0] not in SLOW], tmp_path, monkeypatch, capsys)
     # outputs named after the case, so `ltca plot` redrew the default run
-    assert (tmp_path / "kolivand2009_fm_11x41.nc").is_file()
+    assert (tmp_path / "kolivand2009_fm_11x41_reference.nc").is_file()
     assert (tmp_path / "kolivand2009_table54_B_fh.nc").is_file()
-    assert (tmp_path / "kolivand2009_fm_11x41_utca.nc").is_file()
+    assert (tmp_path / "kolivand2009_fm_11x41_reference_utca.nc").is_file()
     assert (tmp_path / "report.html").is_file()
     assert any((tmp_path / "figs").glob("*.png"))
 

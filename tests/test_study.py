@@ -68,12 +68,14 @@ def case():
 
 
 def test_sweep_on_a_local_cluster_equals_single_analyses(case):
-    """A 3×3 ΔE×ΔP grid on a 2-worker LocalCluster equals run_analysis point by point,
-    to 1e-12; the tooth models are built once per worker, not once per point."""
+    """A 2×2 ΔE×ΔP grid on a 2-worker LocalCluster equals run_analysis point by point,
+    to 1e-12; the tooth models are built once per worker, not once per point. (2×2, not
+    3×3: four points already make both workers compute and reuse their models; the CI
+    budget.)"""
     distributed = pytest.importorskip("distributed")
     from contact.compliance.mesh import model_cache_info
 
-    dE, dP = [-0.1, 0.0, 0.1], [-0.05, 0.0, 0.05]
+    dE, dP = [-0.1, 0.1], [0.0, 0.05]
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
@@ -89,7 +91,7 @@ def test_sweep_on_a_local_cluster_equals_single_analyses(case):
     # every worker built the pair's tooth models once (one miss), whatever it computed
     worked = [c for c in caches.values() if c[0] + c[1] > 0]
     assert worked and all(c[1] == 1 for c in worked), caches
-    assert sum(c[0] + c[1] for c in worked) >= 9
+    assert sum(c[0] + c[1] for c in worked) >= 4
 
 
 def test_failing_point_comes_back_with_its_status(case):
@@ -266,7 +268,7 @@ def test_study_commands(tmp_path, capsys):
     ds = read_netcdf(tmp_path / "map.nc")
     assert ds["lte_peak_to_peak"].dims == ("delta_E", "delta_P", "torque")
     np.testing.assert_allclose(ds["delta_E"].values, [-0.1, 0.1])
-    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_map_T250.png").is_file()
+    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_reference_map_T250.png").is_file()
     assert not (tmp_path / "map.nc.parts").exists()  # removed once the file is written
     assert main(["tolerance", "--dE", "normal:0:0.05", "--dSigma", "uniform:-0.01:0.01",
                  "-n", "3", "--speed", "1500", "-o", str(tmp_path / "tol.nc"),
@@ -276,12 +278,12 @@ def test_study_commands(tmp_path, capsys):
     tol = read_netcdf(tmp_path / "tol.nc")
     # ΔΣ typed in degrees, stored in rad as Misalignment takes it
     assert np.all(np.abs(tol["delta_Sigma"].values) <= np.radians(0.01))
-    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_tolerance_T250.png").is_file()
+    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_reference_tolerance_T250.png").is_file()
     assert main(["vh-check", "--dE", "-0.3:0.3:2", "--dP", "-0.2:0.2:2", "--torque", "50",
                  "-o", str(tmp_path / "vh.nc"), "--plots", str(tmp_path / "figs"),
                  *common]) == 0
     assert "heel" in capsys.readouterr().out
-    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_vh_check.png").is_file()
+    assert (tmp_path / "figs" / "kolivand2009_fm_11x41_reference_vh_check.png").is_file()
     assert main(["sweep", "--dE", "0:1", "-o", str(tmp_path / "x.nc"), *common]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--dE" in err[0]

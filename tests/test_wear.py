@@ -180,3 +180,28 @@ def test_bad_inputs_name_the_field(field, kwargs):
     torque = kwargs.pop("torque", TORQUE)
     with pytest.raises(InputError, match=field):
         simulate_wear(CASE, torque, **kwargs)
+
+
+def test_line_speed_at_a_segment_beside_a_missing_node():
+    """A loaded segment in a grid cell with a missing node (the edge of the ease-off's
+    computed region: on the reference design a pinion row beyond its blank) gets the
+    field's value from the computed nodes, not NaN (which refused the whole wear step);
+    a cell with every node computed keeps the plain bilinear value (exact for a bilinear
+    field, so compared to 1e-12), and a cell with none stays NaN."""
+    import types
+
+    import contact.wear as wear
+
+    u, v = np.linspace(0.0, 1.0, 5), np.linspace(0.0, 1.0, 4)
+    uu, vv = np.meshgrid(u, v, indexing="ij")
+    field = 2.0 + 3.0 * uu + 5.0 * vv + uu * vv  # bilinear: interpolation is exact
+    field[0, 0] = np.nan  # one missing corner
+    field[3:, 2:] = np.nan  # a block: the cell u 0.875, v 0.833 has no computed node
+    eo = types.SimpleNamespace(u=u, v=v)
+    pu, pv = np.array([0.3, 0.1, 0.9]), np.array([0.5, 0.1, 0.9])
+    got = wear._on_gear_grid(eo, field, pu, pv, fill=True)
+    strict = wear._on_gear_grid(eo, field, pu, pv)
+    assert strict[0] == got[0] and np.isnan(strict[1:]).all()
+    assert got[0] == pytest.approx(2.0 + 3 * 0.3 + 5 * 0.5 + 0.15, abs=1e-12)
+    assert np.isfinite(got[1]) and 2.0 < got[1] < 2.0 + 3 * 0.25 + 5 / 3 + 0.25 / 3
+    assert np.isnan(got[2])

@@ -110,7 +110,7 @@ def case_argument(p: argparse.ArgumentParser, *, many: bool = False,
     """The positional ``CASE``: a case file (TOML) or a bundled case name (``ltca cases``);
     default the bundled default case (``many``: every bundled case)."""
     default = "every bundled case" if many else "the bundled default case, " \
-        "kolivand2009_fm_11x41"
+        "kolivand2009_fm_11x41_reference"
     p.add_argument("case", nargs="*" if many else "?", default=None, metavar="CASE",
                    help=f"case to {what}: a case file (TOML) or a bundled case name "
                         f"(`ltca cases`); default {default}")
@@ -122,8 +122,8 @@ def analysis_file_argument(p: argparse.ArgumentParser, *, written_by: str = "ltc
     default case's file."""
     p.add_argument("file", nargs="?", default=None, metavar="FILE",
                    help=f"netCDF file written by `{written_by}`, or a case name for "
-                        "<name>.nc in this directory (default kolivand2009_fm_11x41.nc, what "
-                        "a bare `ltca run` writes)")
+                        "<name>.nc in this directory (default "
+                        "kolivand2009_fm_11x41_reference.nc, what a bare `ltca run` writes)")
 
 
 def resolve_analysis_file(arg: str | None) -> Path:

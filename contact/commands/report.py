@@ -27,7 +27,7 @@ def register(sub) -> None:
         "file from another machine or an older run gives the same page.",
     )
     analysis_file_argument(p)
-    output_option(p, default="FILE's name with .html, e.g. kolivand2009_fm_11x41.html",
+    output_option(p, default="FILE's name with .html, e.g. kolivand2009_fm_11x41_reference.html",
                   what="HTML file")
     p.set_defaults(func=run)
 

@@ -33,7 +33,7 @@ def register(sub) -> None:
                    help="basic design file (TOML, schema in docs/synthesis.md) or the name of "
                         "a bundled one (cases/basic/: "
                         + ", ".join(bundled_basic_names()) + "); default the default case's, "
-                        "kolivand2009_fm_11x41")
+                        "kolivand2009_fm_11x41_reference")
     output_option(p, default="<name>.toml, the design's name", what="case file (TOML)")
     p.set_defaults(func=run_synthesize)
 
@@ -105,4 +105,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
               f"{s.ratio_of_roll:.5f}, S_r {s.radial_setting:.3f} mm, E_m "
               f"{s.blank_offset:.3f} mm, curvature residual {fs.tools.shape_error:.1e} 1/mm")
     print(f"wrote {path}")
+    if basic.optimize:
+        print(f"note: {shown} carries an [optimize] table: the synthesis alone is written; "
+              f"`ltca optimize {shown}` also optimises the settings it names (the bundled "
+              "case of that name is that optimisation's result)")
     return 0
