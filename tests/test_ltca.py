@@ -138,9 +138,15 @@ def test_segment_refinement_converges():
     assert abs(pa / pb - 1) < 0.02
 
 
+@cache
+def _reference_200():
+    """The default solver's LTCA at 200 N·m, the reference of every backend (built once)."""
+    return loaded_tca(_case(), [200.0], options=SMALL, easeoff=_easeoff())
+
+
 @pytest.mark.parametrize("solver", solver_params())
 def test_every_solver_gives_the_same_lte(solver):
-    ref = loaded_tca(_case(), [200.0], options=SMALL, easeoff=_easeoff())
+    ref = _reference_200()
     ds = loaded_tca(
         _case(), [200.0], options=dataclasses.replace(SMALL, solver=solver), easeoff=_easeoff()
     )
