@@ -146,6 +146,9 @@ def test_optimize_table_is_read_and_checked():
         "start": {"tip_relief": 12.5}, "rolls_per_cycle": 40})
     assert problem.max_edge_share == (0.05, 0.05)
     assert problem.options.rolls_per_cycle == 40 and problem.options.segments == 24
+    # command-line analysis options are laid over the table's sampling, not instead of it
+    over = problem_from_table({"rolls_per_cycle": 40}, options={"segments": 12})[0].options
+    assert (over.rolls_per_cycle, over.segments) == (40, 12)
     assert run["start"] == {"tip_relief": 12.5}
     assert problem.misalignments[1].delta_Sigma == pytest.approx(math.radians(0.01))
     assert run["variables"] == {"tip_relief": (0.0, 30.0)} and run["method"] == "powell"

@@ -92,9 +92,12 @@ def _start(arg: str | None):
 
     path = Path(arg) if arg is not None else None
     if path is not None and path.is_file():
+        from geometry.case import read_toml
+        from geometry.errors import InputError
+
         try:
-            raw = tomllib.loads(path.read_text(encoding="utf-8"))
-        except (tomllib.TOMLDecodeError, UnicodeDecodeError, OSError):
+            raw = read_toml(path, "case file")
+        except InputError:
             raw = {}  # resolve_case reports it
         if isinstance(raw.get("design"), dict):
             from geometry.basic_design import load_basic
@@ -127,7 +130,6 @@ def run_optimize(args: argparse.Namespace) -> int:
 
     from contact.commands.synthesize import write_text_atomic
     from contact.io import write_netcdf
-    from contact.ltca import LTCAOptions
     from contact.optimize import (
         DesignVariable,
         optimize,
@@ -158,10 +160,8 @@ def run_optimize(args: argparse.Namespace) -> int:
               if v is not None}
     if args.ritz_modes:
         opt_kw |= dict(zip(("n_height", "n_face"), args.ritz_modes, strict=True))
-    if opt_kw:  # the table's sampling stays unless an option replaces it
-        opt_kw = {k: table[k] for k in ("rolls_per_cycle", "segments") if k in table} | opt_kw
-    if opt_kw:
-        override["options"] = LTCAOptions(**opt_kw)
+    if opt_kw:  # laid over the table's sampling by problem_from_table
+        override["options"] = opt_kw
     problem, run = problem_from_table(table, **override)
     bounds = run["variables"]
     if args.variable:

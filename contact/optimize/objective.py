@@ -201,7 +201,9 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
         the variable's unit, replacing the case's own), ``rolls_per_cycle`` and
         ``segments`` (the loaded analysis's sampling, :class:`contact.ltca.LTCAOptions`).
     **override
-        Problem fields that replace the table's (e.g. from the command line).
+        Problem fields that replace the table's (e.g. from the command line); ``options``
+        as a mapping of :class:`contact.ltca.LTCAOptions` fields is laid over the table's
+        sampling (an ``LTCAOptions`` replaces it).
 
     Returns
     -------
@@ -251,7 +253,10 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
     for k, v in sampling.items():
         if isinstance(v, bool) or not isinstance(v, int):
             raise InputError(f"optimize.{k}: must be an integer, got {v!r}")
-    if sampling:
+    options = override.get("options")
+    if isinstance(options, Mapping):  # command-line analysis options over the table's
+        override = {**override, "options": LTCAOptions(**(sampling | dict(options)))}
+    elif sampling:
         kw["options"] = LTCAOptions(**sampling)
     kw |= {k: v for k, v in override.items() if v is not None}
     problem = OptimizeProblem(**kw)
