@@ -75,17 +75,25 @@ def principal_from_directional(k_t1, k_t2, tau, t1, t2) -> PrincipalCurvatures:
     -------
     PrincipalCurvatures
         κ_1 ≥ κ_2 and e_1 = cos φ t1 + sin φ t2, e_2 = −sin φ t1 + cos φ t2 (= n × e_1),
-        φ = ½ atan2(2τ, k_t1 − k_t2).
+        φ = ½ atan2(2τ, k_t1 − k_t2) taken in (−π/4, 3π/4].
 
     Notes
     -----
     Seed §2.2.4 cites Euler's equation (refs. 2.11, 2.12) without writing it; this is the
     eigen-decomposition of the symmetric 2×2 shape operator [[k_t1, τ], [τ, k_t2]].
+
+    A principal direction is defined only up to its sign. The sign convention is
+    e_1 · (t1 + t2) > 0, i.e. φ in (−π/4, 3π/4]: its branch cut lies where e_1 is at 45°
+    to both tangents, away from the common cases e_1 ∥ t1 and e_1 ∥ t2. The bare
+    φ ∈ (−π/2, π/2] of atan2 cuts at e_1 ∥ t2, where the torsion τ crosses zero: there a
+    round-off of τ's sign (another CPU's or BLAS build's last digit) flipped e_1 and e_2,
+    so files differed between machines (issue 31).
     """
     k_t1, k_t2, tau = (np.asarray(a, dtype=float) for a in (k_t1, k_t2, tau))
     mean = 0.5 * (k_t1 + k_t2)
     rad = np.hypot(0.5 * (k_t1 - k_t2), tau)
     phi = 0.5 * np.arctan2(2.0 * tau, k_t1 - k_t2)
+    phi = np.where(phi <= -0.25 * np.pi, phi + np.pi, phi)
     c, s = np.cos(phi)[..., None], np.sin(phi)[..., None]
     t1, t2 = np.asarray(t1, dtype=float), np.asarray(t2, dtype=float)
     return PrincipalCurvatures(mean + rad, mean - rad, c * t1 + s * t2, -s * t1 + c * t2)

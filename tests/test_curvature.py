@@ -141,6 +141,23 @@ def test_euler_relation_against_eigh():
         assert abs(pc.dir1[k, :2] @ v[:, 1]) == pytest.approx(1.0, abs=1e-12)
 
 
+def test_principal_direction_sign_is_fixed_by_the_convention():
+    """e1 · (t1 + t2) > 0 everywhere (the stated sign convention), and a torsion τ that is
+    round-off of either sign (±1e-17 where k_t1 < k_t2: e1 ∥ t2) gives the same e1 to
+    1e-15 — the case whose sign flipped between CPUs (issue 31)."""
+    rng = np.random.default_rng(11)
+    k1, k2, tau = rng.normal(size=(3, 200)) * 0.05
+    t1 = np.tile([1.0, 0.0, 0.0], (200, 1))
+    t2 = np.tile([0.0, 1.0, 0.0], (200, 1))
+    pc = principal_from_directional(k1, k2, tau, t1, t2)
+    assert np.all((pc.dir1 * (t1 + t2)).sum(-1) > 0.0)
+    plus = principal_from_directional(0.01, 0.05, 1e-17, t1[0], t2[0])
+    minus = principal_from_directional(0.01, 0.05, -1e-17, t1[0], t2[0])
+    np.testing.assert_allclose(plus.dir1, minus.dir1, atol=1e-15)
+    np.testing.assert_allclose(plus.dir2, minus.dir2, atol=1e-15)
+    np.testing.assert_allclose(plus.dir1, [0.0, 1.0, 0.0], atol=1e-15)
+
+
 def _cylinder(radius, axis_angle):
     """Cylinder of radius R, axis in the tangent plane at angle ψ, normal +z (convex)."""
     along = np.array([math.cos(axis_angle), math.sin(axis_angle), 0.0])
