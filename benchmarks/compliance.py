@@ -49,7 +49,7 @@ from contact.compliance import (  # noqa: E402
     load_line_height,
     weber_compliance,
 )
-from geometry.hertz import STEEL  # noqa: E402
+from geometry.core.hertz import STEEL  # noqa: E402
 
 E, NU = STEEL
 

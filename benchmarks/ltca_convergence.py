@@ -24,7 +24,7 @@ from tabulate import tabulate
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.pipeline import SEED_TABLE_3_1, resolve_case
 from contact.utca.easeoff import ease_off
-from geometry.assembly import Misalignment
+from geometry.pair.assembly import Misalignment
 
 
 def _run(case, eo, torques, rolls, segments):

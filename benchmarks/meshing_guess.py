@@ -1,4 +1,4 @@
-"""Envelope solver with and without a starting guess (geometry.meshing.solve_envelope).
+"""Envelope solver with and without a starting guess (geometry.machine.meshing.solve_envelope).
 
 For every flank of the example cases the 41 × 21 projection-plane grid is solved once
 without a guess; then targets moved by (0.05, 0.03) mm are solved without a guess and
@@ -22,8 +22,8 @@ _HERE = Path(__file__).resolve().parent
 sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 from geometry.case import load_case  # noqa: E402
-from geometry.flank import projection_grid  # noqa: E402
-from geometry.meshing import solve_envelope  # noqa: E402
+from geometry.machine.flank import projection_grid  # noqa: E402
+from geometry.machine.meshing import solve_envelope  # noqa: E402
 
 ROOT = _HERE.parent
 CASES = ("spiral_bevel_iso23509_s1", "hypoid_iso23509_s2", "kolivand2009_fm_11x41")

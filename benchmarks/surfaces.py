@@ -4,7 +4,7 @@ Run from the repository root::
 
     python benchmarks/surfaces.py [--repeat N]
 
-Prints, per case and flank, the best-of-N wall time of :func:`geometry.flank.flank_surface`
+Prints, per case and flank, the best-of-N wall time of :func:`geometry.machine.flank.flank_surface`
 (equation of meshing + curvatures), the generated fraction of the grid and the largest
 meshing residual, then the four-flank total against the 0.1 s target (one core), and the
 face-hobbed pair (``tests/data/fh_iso23509_s2_crown.toml``, same blank data as the FM
@@ -30,7 +30,7 @@ sys.path.insert(0, str(ROOT))
 import numpy as np  # noqa: E402
 
 from geometry.case import load_case  # noqa: E402
-from geometry.flank import flank_surface  # noqa: E402
+from geometry.machine.flank import flank_surface  # noqa: E402
 
 CASES = ("cases/spiral_bevel_iso23509_s1.toml", "cases/hypoid_iso23509_s2.toml",
          "tests/data/fh_iso23509_s2_crown.toml")

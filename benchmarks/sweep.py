@@ -25,7 +25,7 @@ from tabulate import tabulate
 
 from contact.pipeline import resolve_case, run_analysis
 from contact.study import sweep
-from geometry.assembly import Misalignment
+from geometry.pair.assembly import Misalignment
 
 TORQUE = 250.0
 

@@ -6,7 +6,7 @@ effort" than the five-equation contact search. Measured in one run on one core:
 1. ``unloaded_tca`` — ease-off and roll-angle surface on the 41 × 21 gear grid, the
    transitions M1, M2 and 30 roll positions × 3 tooth pairs of one mesh cycle (contact
    curves, UTE, pattern); target ≤ 0.2 s; with its two stages timed separately;
-2. ``conventional_tca`` (geometry/conventional_tca.py) at the same 90 (roll, pair)
+2. ``conventional_tca`` (geometry/pair/conventional_tca.py) at the same 90 (roll, pair)
    positions — the reference pair's TE at r − k·pitch —, started from the mean contact;
 3. the ratio, and the agreement of the two methods' transmission errors at the positions
    where the conventional TCA converged on the flanks (up to a constant), for the seed's
@@ -43,7 +43,7 @@ from contact.utca import (  # noqa: E402
 )
 from contact.utca.easeoff import ease_off  # noqa: E402
 from geometry.case import load_case  # noqa: E402
-from geometry.conventional_tca import conventional_tca, mean_contact  # noqa: E402
+from geometry.pair.conventional_tca import conventional_tca, mean_contact  # noqa: E402
 
 ROOT = _HERE.parent
 

@@ -25,7 +25,7 @@ Settings (basic relations, not a Gleason summary):
   ratio of roll R_a = z2/z1 (= sin δ2/sin δ1 without offset). Each pinion flank is cut by a
   blade lying on the cone of the gear blade that cuts the mating gear flank (pinion concave
   ↔ gear convex), facing the other way, its tip plane at the pinion's mean root; the machine
-  settings follow from these poses by :func:`geometry.machine.settings_from_poses`.
+  settings follow from these poses by :func:`geometry.machine.cradle.settings_from_poses`.
   Without crowning the pair is conjugate (line contact). The case files add lengthwise
   crowning (pinion cutter radius ±2 % of r_c0, the cutter centre moved so the cone still
   passes through the mean point with the same normal) and profile crowning (convex circular
@@ -43,10 +43,10 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from geometry.assembly import member_transform  # noqa: E402
 from geometry.case import case_from_dict  # noqa: E402
-from geometry.flank import _intersect  # noqa: E402
-from geometry.machine import MachineSettings, cutter_pose, settings_from_poses  # noqa: E402
+from geometry.machine.cradle import MachineSettings, cutter_pose, settings_from_poses  # noqa: E402
+from geometry.machine.flank import _intersect  # noqa: E402
+from geometry.pair.assembly import member_transform  # noqa: E402
 
 D = math.radians
 MIRROR = np.array([1.0, -1.0, 1.0])
@@ -230,7 +230,7 @@ def derive(key, *, crowning: bool):
         f"tip plane {h_root1:.4f} mm above the gear cutter tips (the pinion mean root plus "
         f"(b2/2) tan(delta_a2 - delta_f2) = {extra_depth:.4f} mm so the gear tip clears the "
         "pinion root at the heel; the toe is cut deeper than the root cone); "
-        "settings from the poses by geometry.machine.settings_from_poses. "
+        "settings from the poses by geometry.machine.cradle.settings_from_poses. "
         + ("Crowning: pinion cutter radius +/- 2 % of r_c0 about the mean point, convex "
            "circular pinion blades tangent at the mean point."
            if crowning else "No crowning: the pair is conjugate (line contact).")

@@ -8,7 +8,8 @@ It writes ``tests/data/fh_iso23509_s2_crown.toml``: the ISO 23509 Annex F sample
 (hypoid 13/42) cut by face hobbing with z0 = 5 blade groups and a cutter of r_c0 = 82.55 mm:
 
 * gear Formate, the closed-form face-hobbing tools of
-  :func:`geometry.synthesis.gear_formate_tools` (``blade_groups = 5``): slot centre line
+  :func:`geometry.synthesis.flank_synthesis.gear_formate_tools` (``blade_groups = 5``): slot
+  centre line
   the extended epicycloid through the mean root point with the gear's spiral angle, outside
   blade leading the inside blade by half a group pitch, rake planes at the lead angle;
 * pinion Generate by its own face-hobbing crown gear in its root plane: the same closed form
@@ -29,10 +30,10 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from geometry.blank import blank_geometry  # noqa: E402
 from geometry.case import case_from_dict  # noqa: E402
-from geometry.pitch_cone import BevelGearDesign  # noqa: E402
-from geometry.synthesis import case_blank, gear_formate_tools  # noqa: E402
+from geometry.iso23509.blank import blank_geometry  # noqa: E402
+from geometry.iso23509.pitch_cone import BevelGearDesign  # noqa: E402
+from geometry.synthesis.flank_synthesis import case_blank, gear_formate_tools  # noqa: E402
 
 Z0 = 5
 RC0 = 82.55  # [mm] 3.25 in
@@ -78,7 +79,8 @@ def derive() -> dict:
             "Written by cases/derive_fh_settings.py: ISO 23509:2016 Annex F sample 2 blank "
             "(hypoid 13x42, Method 1) face-hobbed with z0 = 5 blade groups, r_c0 = 82.55 mm. "
             "Gear Formate by the closed-form face-hobbing tools of "
-            "geometry.synthesis.gear_formate_tools (slot centre line the extended epicycloid "
+            "geometry.synthesis.flank_synthesis.gear_formate_tools (slot centre line the extended "
+            "epicycloid "
             "through the mean root point, OB leading IB by half a group pitch, rake planes at "
             "the lead angle); pinion Generate by its own face-hobbing crown gear in its root "
             f"plane (ratio of roll 1/sin delta_f1 = {ratio:.6f}, indexing -z0/z1). Example "

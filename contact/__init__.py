@@ -9,7 +9,7 @@ Five layers, each a subpackage, each importing only those below it (tests/test_l
 * :mod:`contact.ltca` — the loaded TCA over the mesh cycle (segments, screening, roll
   loop, dataset);
 * the application on top: :mod:`contact.pipeline` (the whole analysis of a case),
-  :mod:`contact.io` (netCDF), :mod:`contact.plots`, :mod:`contact.cli` and
+  :mod:`geometry.core.io` (netCDF), :mod:`contact.plots`, :mod:`contact.cli` and
   :mod:`contact.commands` (the ``ltca`` command).
 
 The loaded-contact problem and its solvers::

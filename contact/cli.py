@@ -22,7 +22,7 @@ from types import ModuleType
 
 from contact.commands.options import verbosity_options
 from geometry import __version__
-from geometry.errors import LTCAError
+from geometry.core.errors import LTCAError
 
 log = logging.getLogger("ltca")
 
@@ -107,7 +107,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     except KeyboardInterrupt as exc:
         # Ctrl-C or SIGTERM: one line, no traceback; files being written were left as they
-        # were (geometry.atomic_files); the shell's code 128 + signal number
+        # were (geometry.core.atomic_files); the shell's code 128 + signal number
         signum = exc.signum if isinstance(exc, Terminated) else signal.SIGINT
         print(f"ltca {args.command}: interrupted ({signal.Signals(signum).name}); "
               "files being written were left as they were", file=sys.stderr)

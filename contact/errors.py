@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from geometry.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 
 __all__ = [
     "ASYMMETRY_LIMIT",

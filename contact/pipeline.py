@@ -31,10 +31,10 @@ from contact.utca import unloaded_tca
 from contact.utca.easeoff import ease_off
 from friction.operating import OperatingConditions
 from geometry import __version__
-from geometry.assembly import Misalignment
 from geometry.case import OPERATING_DEFAULTS, Case, load_case
-from geometry.errors import InputError
-from geometry.flank import geometry_datasets
+from geometry.core.errors import InputError
+from geometry.machine.flank import geometry_datasets
+from geometry.pair.assembly import Misalignment
 
 __all__ = [
     "DEFAULT_CASE",
@@ -163,7 +163,7 @@ def resolve_deviations(c: Case, deviations) -> tuple | None:
     if not isinstance(deviations, (tuple, list)) or len(deviations) != 2:
         raise InputError("deviations: must be a (pinion, gear) pair of SurfaceDeviation, "
                          f"file path or None, or False; got {deviations!r}")
-    from contact.deviation_files import read_deviations
+    from contact.utca.deviation_files import read_deviations
 
     out = tuple(
         read_deviations(d, member) if isinstance(d, (str, os.PathLike)) else d
@@ -175,7 +175,7 @@ def resolve_deviations(c: Case, deviations) -> tuple | None:
 def misalignment_attrs(misalignment: Misalignment) -> dict[str, float]:
     """The root attributes that hold a file's misalignment, once: ``misalignment_delta_E_mm``,
     ``…_delta_P_mm``, ``…_delta_G_mm`` [mm] and ``…_delta_Sigma_deg`` [deg]
-    (:meth:`geometry.assembly.Misalignment.labelled`)."""
+    (:meth:`geometry.pair.assembly.Misalignment.labelled`)."""
     return {f"misalignment_{k}": v for k, v in misalignment.labelled().items()}
 
 
@@ -236,7 +236,7 @@ def run_analysis(
     torque : float or sequence — [N·m], optional
         Pinion torques; default the case's ``[operating]`` torques
         (``Case.operating.torque``; 50, 250, 500 where the table gives none).
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         Default: the case's own (its ``[operating]`` ΔE, ΔP, ΔG, ΔΣ; ``Case.misalignment``).
     flank : str, optional
         ``"drive"`` (default) or ``"coast"``.
@@ -252,7 +252,7 @@ def run_analysis(
     deviations : (pinion, gear), False or None
         Measured or wear deviations of the (pinion, gear) flanks in contact
         (:mod:`contact.utca.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a
-        CSV/netCDF file path (:func:`contact.deviation_files.read_deviations`) or None.
+        CSV/netCDF file path (:func:`contact.utca.deviation_files.read_deviations`) or None.
         The main groups then hold the deviated surfaces' results and
         ``/theoretical/{easeoff,utca,ltca}`` the theoretical ones, side by side;
         ``/easeoff`` gains ``ease_off_change`` [um]. None (default) uses the case's

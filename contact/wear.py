@@ -97,12 +97,12 @@ from contact.utca.deviations import SurfaceDeviation, apply_deviations
 from contact.utca.easeoff import EaseOff, ease_off
 from friction.kinematics import surface_velocities
 from geometry import __version__
-from geometry.assembly import Misalignment
 from geometry.case import Case
-from geometry.conventions import data_var
-from geometry.errors import InputError
-from geometry.flank import flank_at
-from geometry.validation import integer, positive, real, real_array
+from geometry.core.conventions import data_var
+from geometry.core.errors import InputError
+from geometry.core.validation import integer, positive, real, real_array
+from geometry.machine.flank import flank_at
+from geometry.pair.assembly import Misalignment
 
 __all__ = [
     "WEAR_GRID",
@@ -119,7 +119,7 @@ log = logging.getLogger(__name__)
 
 #: default deviation grid of the wear of each member: 41 lengthwise (toe → heel) × 21
 #: profile (root → tip) nodes over the fractions of the flank grid
-#: (:data:`geometry.flank.DEFAULT_GRID`, the ease-off's): far finer than a CMM's 9 × 5
+#: (:data:`geometry.machine.flank.DEFAULT_GRID`, the ease-off's): far finer than a CMM's 9 × 5
 #: because wear stops sharply where the contact region ends, and the interpolating spline
 #: of :class:`~contact.utca.deviations.SurfaceDeviation` turns that step into a ramp one
 #: grid cell wide (a rim left standing proud inside the contact region on a coarse grid)
@@ -244,7 +244,7 @@ def flank_line_speeds(case: Case, eo: EaseOff) -> tuple[np.ndarray, np.ndarray]:
     (gear, pinion) : ndarray (nu, nv) each — [mm/rad]
         :func:`contact_line_speed` on the gear grid of ``eo``: over the gear flank
         (``eo.gear_position``) and over the pinion flank (the pinion mates of the gear
-        nodes, solved with :func:`geometry.flank.flank_at` in the pinion frame), per unit
+        nodes, solved with :func:`geometry.machine.flank.flank_at` in the pinion frame), per unit
         pinion roll; NaN where undefined.
 
     Raises
@@ -469,7 +469,7 @@ def _grid(grid: dict | None) -> tuple[np.ndarray, np.ndarray]:
 def _initial(c: Case, deviations, gu, gv) -> tuple[np.ndarray, np.ndarray]:
     """(pinion, gear) grids [mm] at the start: the given or the case's deviations sampled
     on the wear grid, else zero."""
-    from contact.deviation_files import read_deviations
+    from contact.utca.deviation_files import read_deviations
 
     if deviations is None and c.deviations is not None:
         deviations = (c.deviations.pinion, c.deviations.gear)
@@ -521,7 +521,7 @@ def simulate_wear(
     steps : int
         Wear steps (1–1000): the surfaces are analysed ``steps + 1`` times (the initial
         state and after each step); the wear of a step is that of the state it starts from.
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         Default the case's own.
     flank : str, optional
         ``"drive"`` (default) or ``"coast"``.
@@ -736,7 +736,7 @@ def final_deviations(wear: xr.Dataset, step: int = -1) -> tuple[SurfaceDeviation
     -------
     (SurfaceDeviation, SurfaceDeviation)
         [mm], negative = worn; for :func:`contact.pipeline.run_analysis` ``deviations=`` or
-        :func:`contact.deviation_files.write_deviation_netcdf`.
+        :func:`contact.utca.deviation_files.write_deviation_netcdf`.
 
     Raises
     ------

@@ -43,8 +43,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from friction.mixed_ehl import mixed_ehl, mixed_ehl_validity
 from friction.validity import FrictionModelRangeWarning
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.validation import broadcast, real_array, scalar_or_array
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
     "MU_CAP",
@@ -72,7 +72,7 @@ Array = NDArray[np.float64]
 STANDARD_INPUTS: Mapping[str, str] = MappingProxyType(
     {
         "hertz_pressure": "[MPa] peak Hertz pressure p_h of the segment"
-                          " (geometry.hertz.hertz_line_contact)",
+                          " (geometry.core.hertz.hertz_line_contact)",
         "slide_to_roll": "[1] SR = V_s / V_e (sign ignored by the models)",
         "entraining_velocity": "[m/s] mean entraining (rolling) velocity V_e = (u1 + u2)/2",
         "sliding_velocity": "[m/s] sliding velocity V_s = |u1 - u2|",
@@ -84,7 +84,7 @@ STANDARD_INPUTS: Mapping[str, str] = MappingProxyType(
         "lambda_ratio": "[1] film parameter h_min / sigma",
         "pressure_viscosity": "[1/GPa] pressure-viscosity coefficient",
         "e_prime": "[MPa] effective modulus E' = 2 E* (EHL convention; E* of"
-                   " geometry.hertz.contact_modulus)",
+                   " geometry.core.hertz.contact_modulus)",
         "temperature": "[degC] inlet oil temperature",
         "thermal_factor": "[1] thermal reduction factor φ_T of the film thickness"
                           " (friction.film.thermal_reduction_factor)",

@@ -55,9 +55,9 @@ from friction.lubricant import (
 )
 from friction.operating import OperatingConditions
 from friction.rolling import rolling_traction
-from geometry.conventions import binary_flag, data_var
-from geometry.errors import InputError
-from geometry.hertz import STEEL, contact_modulus
+from geometry.core.conventions import binary_flag, data_var
+from geometry.core.errors import InputError
+from geometry.core.hertz import STEEL, contact_modulus
 
 __all__ = ["efficiency_analysis", "extrapolated_segments"]
 
@@ -106,7 +106,7 @@ def efficiency_analysis(
         These five override the fields of ``operating`` of the same names (None: keep).
     youngs_modulus, poisson_ratio : float, optional — [MPa], [1]
         Material of both members; default the LTCA's own (the ``options`` attribute of
-        ``ltca``), else steel (:data:`geometry.hertz.STEEL`).
+        ``ltca``), else steel (:data:`geometry.core.hertz.STEEL`).
 
     Returns
     -------
@@ -132,7 +132,7 @@ def efficiency_analysis(
     Notes
     -----
     Seed §5.2, Eq. 5.7–5.14; the EHL groups are written in the effective modulus
-    E′ = 2E* (Dowson & Higginson), E* of :func:`geometry.hertz.contact_modulus`.
+    E′ = 2E* (Dowson & Higginson), E* of :func:`geometry.core.hertz.contact_modulus`.
     """
     _check_variables(ltca)
     op = _operating_conditions(

@@ -12,9 +12,9 @@ Conventions (stated once, used by the whole ``friction`` package)
 * Effective modulus E′ = 2 / ((1 − ν₁²)/E₁ + (1 − ν₂²)/E₂) = 2E*, the
   Dowson–Higginson / Hamrock convention in which the groups below are written; it is the
   seed's E_eq. E′ is used only here and in :mod:`friction.rolling`: compute it as
-  ``2 * geometry.hertz.contact_modulus(E₁, ν₁, E₂, ν₂)`` (E* is the toolkit's one
+  ``2 * geometry.core.hertz.contact_modulus(E₁, ν₁, E₂, ν₂)`` (E* is the toolkit's one
   contact modulus, and the Hertz contact of a segment is
-  :func:`geometry.hertz.hertz_line_contact` in E*).
+  :func:`geometry.core.hertz.hertz_line_contact` in E*).
 * Dimensionless groups (Dowson & Higginson 1966; Hamrock 1991)::
 
       U = η₀ u / (E′ R)      speed parameter
@@ -40,8 +40,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from friction.validity import FrictionModelRangeWarning
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.validation import broadcast, real_array, scalar_or_array
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
     "DOWSON_TOYODA_EXPONENTS",

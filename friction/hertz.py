@@ -1,23 +1,23 @@
-"""Deprecated: the friction stage's Hertz line contact in E′, now :mod:`geometry.hertz`.
+"""Deprecated: the friction stage's Hertz line contact in E′, now :mod:`geometry.core.hertz`.
 
 The toolkit has one Hertz line contact in one modulus convention,
-:func:`geometry.hertz.hertz_line_contact` with Johnson's contact modulus
-E* (:func:`geometry.hertz.contact_modulus`). The three functions here took the EHL
+:func:`geometry.core.hertz.hertz_line_contact` with Johnson's contact modulus
+E* (:func:`geometry.core.hertz.contact_modulus`). The three functions here took the EHL
 literature's effective modulus E′ = 2E* (Dowson & Higginson; Hamrock) instead; they are
-kept for one release as thin wrappers over :mod:`geometry.hertz` and warn with a
+kept for one release as thin wrappers over :mod:`geometry.core.hertz` and warn with a
 :class:`DeprecationWarning` naming the replacement:
 
 =====================================  ==================================================
 deprecated                             replacement
 =====================================  ==================================================
-``combined_modulus(E1, ν1, E2, ν2)``   ``2 * geometry.hertz.contact_modulus(E1, ν1, E2, ν2)``
+``combined_modulus(E1, ν1, E2, ν2)``   ``2 * geometry.core.hertz.contact_modulus(E1, ν1, E2, ν2)``
 ``half_width(w′, R, E′)``              ``hertz_line_contact(w′, R, E′ / 2).half_width``
 ``peak_pressure(w′, R, E′)``           ``hertz_line_contact(w′, R, E′ / 2).peak_pressure``
 =====================================  ==================================================
 
 E′ remains only where the EHL formulas are written in it (:mod:`friction.film`,
 :mod:`friction.rolling`). Units: mm, N, N/mm, MPa. The input checks that used to live
-here are :mod:`geometry.validation`'s.
+here are :mod:`geometry.core.validation`'s.
 """
 
 from __future__ import annotations
@@ -27,8 +27,8 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from geometry.hertz import contact_modulus, hertz_line_contact
-from geometry.validation import broadcast, real_array, scalar_or_array
+from geometry.core.hertz import contact_modulus, hertz_line_contact
+from geometry.core.validation import broadcast, real_array, scalar_or_array
 
 __all__ = ["combined_modulus", "half_width", "peak_pressure"]
 
@@ -57,7 +57,7 @@ def combined_modulus(
     Returns
     -------
     float or array — [MPa]
-        E′ = 2 :func:`geometry.hertz.contact_modulus` (arrays broadcast).
+        E′ = 2 :func:`geometry.core.hertz.contact_modulus` (arrays broadcast).
 
     Raises
     ------
@@ -68,14 +68,14 @@ def combined_modulus(
     Warns
     -----
     DeprecationWarning
-        Always: use ``2 * geometry.hertz.contact_modulus(e1, nu1, e2, nu2)``.
+        Always: use ``2 * geometry.core.hertz.contact_modulus(e1, nu1, e2, nu2)``.
 
     Notes
     -----
     Source: Hamrock, B. J., *Fundamentals of Fluid Film Lubrication*, NASA RP-1255
     (1991), "effective elastic modulus"; Johnson (1985) Eq. 4.22 for E*.
     """
-    _deprecated("combined_modulus", "2 * geometry.hertz.contact_modulus(e1, nu1, e2, nu2)")
+    _deprecated("combined_modulus", "2 * geometry.core.hertz.contact_modulus(e1, nu1, e2, nu2)")
     e1 = real_array("youngs_modulus_1", youngs_modulus_1, unit="MPa", low=0.0, low_open=True)
     n1 = real_array("poisson_ratio_1", poisson_ratio_1, unit="1", low=0.0, high=0.5,
                     high_open=True)
@@ -90,8 +90,8 @@ def combined_modulus(
 
 
 def _line_contact(name: str, load_per_length, radius, e_prime):
-    _deprecated(name, f"geometry.hertz.hertz_line_contact(w, R, E*).{name} with "
-                      "E* = E′/2 = geometry.hertz.contact_modulus(...)", stacklevel=4)
+    _deprecated(name, f"geometry.core.hertz.hertz_line_contact(w, R, E*).{name} with "
+                      "E* = E′/2 = geometry.core.hertz.contact_modulus(...)", stacklevel=4)
     e = real_array("e_prime", e_prime, unit="MPa", low=0.0, low_open=True)
     return hertz_line_contact(load_per_length, radius, e / 2.0)
 
@@ -113,7 +113,7 @@ def half_width(
     Returns
     -------
     float or array — [mm]
-        ``geometry.hertz.hertz_line_contact(w′, R, E′/2).half_width``.
+        ``geometry.core.hertz.hertz_line_contact(w′, R, E′/2).half_width``.
 
     Raises
     ------
@@ -146,7 +146,7 @@ def peak_pressure(
     Returns
     -------
     float or array — [MPa]
-        ``geometry.hertz.hertz_line_contact(w′, R, E′/2).peak_pressure`` (0 at no load).
+        ``geometry.core.hertz.hertz_line_contact(w′, R, E′/2).peak_pressure`` (0 at no load).
 
     Raises
     ------

@@ -2,7 +2,7 @@
 
 At a contact point r (pair frame) the surface velocities of the two members are
 v_p = ω_p a_p × (r − O_p) and v_g = ω_g a_g × (r − O_g), with the members turning in
-opposite senses in the toolkit's pair frame (``geometry.assembly``): ω_g = −ω_p z_p/z_g.
+opposite senses in the toolkit's pair frame (``geometry.pair.assembly``): ω_g = −ω_p z_p/z_g.
 Their parts in the common tangent plane (normal n) are v_pt = v_p − (v_p·n) n and
 v_gt likewise; the normal parts are equal at a true contact point (equation of
 meshing), which is checked. With t the unit tangent of the contact line and
@@ -24,8 +24,8 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike
 
-from geometry.errors import InputError
-from geometry.validation import positive, real_array
+from geometry.core.errors import InputError
+from geometry.core.validation import positive, real_array
 
 __all__ = ["surface_velocities"]
 

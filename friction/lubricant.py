@@ -49,8 +49,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.validation import real, real_array, scalar_or_array
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.validation import real, real_array, scalar_or_array
 
 __all__ = [
     "VISCOSITY_MODELS",

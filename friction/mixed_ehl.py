@@ -50,8 +50,8 @@ from scipy.special import gamma, pbdv
 
 from friction.film import DOWSON_TOYODA_EXPONENTS, dowson_toyoda_central
 from friction.validity import FrictionModelRangeWarning
-from geometry.errors import InputError
-from geometry.validation import broadcast, real_array, scalar_or_array
+from geometry.core.errors import InputError
+from geometry.core.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
     "MIXED_EHL_DEFAULTS",

@@ -26,8 +26,8 @@ from pathlib import Path
 from friction.coefficient import get_friction_model
 from friction.lubricant import available_lubricants
 from geometry.case import OPERATING_DEFAULTS, OperatingPoint
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.validation import positive, real
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.validation import positive, real
 
 __all__ = ["OperatingConditions"]
 

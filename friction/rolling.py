@@ -24,8 +24,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from friction.film import ehl_groups, thermal_loading, thermal_reduction_factor
-from geometry.hertz import hertz_line_contact
-from geometry.validation import broadcast, real_array, scalar_or_array
+from geometry.core.hertz import hertz_line_contact
+from geometry.core.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
     "GOKSEM_HARGREAVES_COEFFICIENT",
@@ -64,7 +64,7 @@ def rolling_traction_isothermal(
         Equivalent radius R (seed R_eq), > 0.
     e_prime : float or array — [MPa]
         Effective modulus E′ = 2/Σ((1 − ν²)/E) = 2E* (seed E_eq; E* of
-        :func:`geometry.hertz.contact_modulus`).
+        :func:`geometry.core.hertz.contact_modulus`).
 
     Returns
     -------
@@ -110,7 +110,7 @@ def rolling_traction(
     F_R/l = φ_T · 4.318 (G U)^0.658 W^0.0126 R/α, with φ_T the thermal reduction
     factor of :func:`friction.film.thermal_reduction_factor` at the thermal loading
     L = β η₀ V_r²/k and the segment's Hertz peak pressure p_h = 2 w′/(π b)
-    (:func:`geometry.hertz.hertz_line_contact` with E* = E′/2).
+    (:func:`geometry.core.hertz.hertz_line_contact` with E* = E′/2).
 
     Parameters
     ----------
@@ -127,7 +127,7 @@ def rolling_traction(
     radius : float or array — [mm]
         Equivalent radius R, > 0.
     e_prime : float or array — [MPa]
-        Effective modulus E′ = 2E* (E* of :func:`geometry.hertz.contact_modulus`).
+        Effective modulus E′ = 2E* (E* of :func:`geometry.core.hertz.contact_modulus`).
     temperature_viscosity_coefficient : float or array — [1/K]
         β = −(1/η₀) dη₀/dT (e.g. from :mod:`friction.lubricant`), ≥ 0.
     thermal_conductivity : float or array — [W/(m K)]

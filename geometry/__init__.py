@@ -1,11 +1,31 @@
 """Tooth-surface geometry of face-milled and face-hobbed hypoid and spiral bevel gears.
 
 Case files, blank geometry, cutter and machine kinematics, equation of meshing,
-normals and curvatures, assembly with misalignments (seed chapter 2).
+normals and curvatures, assembly with misalignments (seed chapter 2). Subpackages, each
+named for what it computes:
+
+* :mod:`geometry.core` — the toolkit-wide low layer (no gear in it): errors, validation,
+  dataset conventions and netCDF files, atomic files, TOML files, Hertz line contact,
+  version, moved module paths;
+* :mod:`geometry.iso23509` — the blank by ISO 23509: pitch cone (clause 5), blank
+  dimensions (clause 6), input data types I and II;
+* :mod:`geometry.machine` — the cradle-type generator: cutter and blades, the machine's
+  kinematic chain (FM and FH), equation of meshing, flank points and surfaces, curvatures,
+  profile relief, machine-setting conventions;
+* :mod:`geometry.pair` — the pair in mesh: assembly with misalignments, the design point,
+  pitch contact, the conventional TCA (seed Eq. 2.14);
+* :mod:`geometry.synthesis` — machine settings from basic design data (local synthesis,
+  FM and FH) and corrective settings from measured flanks;
+* :mod:`geometry.case` — case files; :mod:`geometry.plot` — geometry figures.
 """
 
-from geometry._version import __version__
+from geometry import _moved
 from geometry.case import Case, load_case
-from geometry.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.version import __version__
 
-__all__ = ["Case", "InputError", "LTCAError", "ModelUnavailableError", "__version__", "load_case"]
+_moved.install()
+MOVED = _moved.MOVED
+
+__all__ = ["MOVED", "Case", "InputError", "LTCAError", "ModelUnavailableError", "__version__",
+           "load_case"]

@@ -7,11 +7,11 @@ here); lengths are mm. Every field is validated on load; an error names the fiel
 dotted path and the accepted range, e.g.
 ``pinion.machine.concave.ratio_of_roll: must be > 0 for a generated member, got -1.0``.
 
-Settings are read for a right-hand member (see :mod:`geometry.machine`); a left-hand member
+Settings are read for a right-hand member (see :mod:`geometry.machine.cradle`); a left-hand member
 is generated as the mirror image of the right-hand one. A member's ``[<member>.machine]``
 and ``[<member>.cutter]`` tables may each declare the convention their summary is typed in,
 ``convention = "ours"`` (default) or ``"spygo"`` (a summary typed from SpyGO, converted on
-load by :mod:`geometry.machine_convention`; ``docs/machine.md``). Case files written by the
+load by :mod:`geometry.machine.convention`; ``docs/machine.md``). Case files written by the
 toolkit (:meth:`Case.to_toml`) are always in our convention and carry no ``convention`` key.
 
 Public functions
@@ -38,17 +38,17 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
-from geometry.assembly import HANDS, Misalignment
-from geometry.cutter import PROFILE_TYPES, Blade
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.machine import PROCESSES, MachineSettings, indexing_ratio
-from geometry.machine_convention import (
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.validation import integer, positive, real
+from geometry.machine.convention import (
     SPYGO_BLADE_FIELDS,
     blade_from_spygo,
     check_convention,
     machine_from_spygo,
 )
-from geometry.validation import integer, positive, real
+from geometry.machine.cradle import PROCESSES, MachineSettings, indexing_ratio
+from geometry.machine.cutter import PROFILE_TYPES, Blade
+from geometry.pair.assembly import HANDS, Misalignment
 
 __all__ = [
     "FLANKS",
@@ -308,7 +308,7 @@ class DeviationFiles:
     """The ``[deviations]`` table: files of measured / wear flank deviations (seed §4.3).
 
     Only the paths are kept (the geometry package does not read them: the files are read by
-    :func:`contact.deviation_files.read_deviations` when the analysis runs).
+    :func:`contact.utca.deviation_files.read_deviations` when the analysis runs).
 
     Parameters
     ----------
@@ -717,7 +717,7 @@ def operating_from_dict(raw: Mapping[str, Any]) -> tuple[Misalignment, Operating
 
     Returns
     -------
-    (geometry.assembly.Misalignment, OperatingPoint)
+    (geometry.pair.assembly.Misalignment, OperatingPoint)
         ΔΣ converted to rad.
 
     Raises

@@ -18,9 +18,9 @@ from pathlib import Path
 
 import numpy as np
 
-from geometry.assembly import case_transforms, transform_points
-from geometry.errors import InputError
-from geometry.flank import FlankSurface, blank_outline
+from geometry.core.errors import InputError
+from geometry.machine.flank import FlankSurface, blank_outline
+from geometry.pair.assembly import case_transforms, transform_points
 
 __all__ = ["plot_flanks_in_mesh", "plot_projection_grid"]
 
@@ -52,11 +52,12 @@ def plot_flanks_in_mesh(case, surfaces: Iterable[FlankSurface], path: str | os.P
     ----------
     case : geometry.case.Case
     surfaces : iterable of FlankSurface
-        Flanks to draw (any members and flanks), e.g. from :func:`geometry.flank.flank_surface`.
+        Flanks to draw (any members and flanks), e.g. from
+        :func:`geometry.machine.flank.flank_surface`.
     path : path-like
         PNG file to write; its directory must exist.
     pinion_rotation, gear_rotation : float — [rad]
-        Rotations of the members about their axes (see :mod:`geometry.assembly`).
+        Rotations of the members about their axes (see :mod:`geometry.pair.assembly`).
     teeth : int
         How many neighbouring teeth (slot copies rotated by one pitch) to draw, ≥ 1.
 
@@ -119,7 +120,7 @@ def plot_projection_grid(surface: FlankSurface, blank, path: str | os.PathLike[s
     InputError
         If the directory does not exist.
     """
-    from geometry.meshing import REASONS
+    from geometry.machine.meshing import REASONS
 
     plt = pyplot()
     target = png_target(path)

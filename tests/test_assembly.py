@@ -17,19 +17,19 @@ import numpy as np
 import pytest
 from scipy.optimize import least_squares
 
-from geometry.assembly import (
+from geometry.case import load_case
+from geometry.core.errors import InputError
+from geometry.machine.cradle import generated_family
+from geometry.machine.cutter import profile_sections
+from geometry.machine.flank import blank_outline, flank_surface
+from geometry.machine.meshing import solve_envelope
+from geometry.pair.assembly import (
     Misalignment,
     case_transforms,
     member_transform,
     transform_points,
     transform_vectors,
 )
-from geometry.case import load_case
-from geometry.cutter import profile_sections
-from geometry.errors import InputError
-from geometry.flank import blank_outline, flank_surface
-from geometry.machine import generated_family
-from geometry.meshing import solve_envelope
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = Path(__file__).resolve().parent / "data"

@@ -1,4 +1,4 @@
-"""Atomic writes (geometry.atomic_files): the old file or the new one, never a half-written
+"""Atomic writes (geometry.core.atomic_files): the old file or the new one, never a half-written
 file nor a stale temporary one — also when the writer is interrupted by a real signal."""
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from geometry.atomic_files import atomic_path, stale_temporaries
+from geometry.core.atomic_files import atomic_path, stale_temporaries
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from contact.cli import main
-from geometry.errors import LTCAError
+from geometry.core.errors import LTCAError
 
 ROOT = Path(__file__).resolve().parents[1]
 CASE = ROOT / "cases" / "kolivand2009_fm_11x41.toml"
@@ -118,7 +118,7 @@ def test_bad_basic_data_file(tmp_path, capsys, old, new, words):
 @pytest.mark.parametrize("text, words", [c[1:] for c in DEVIATION_TEXTS],
                          ids=[c[0] for c in DEVIATION_TEXTS])
 def test_bad_deviation_file(tmp_path, text, words):
-    from contact.deviation_files import read_deviations
+    from contact.utca.deviation_files import read_deviations
 
     f = tmp_path / "dev.csv"
     f.write_text(text)
@@ -179,11 +179,11 @@ def test_bad_cli_arguments(tmp_path, capsys, k):
 
 def _api_cases():
     from contact import ContactProblem
-    from contact.io import write_netcdf
+    from contact.commands.output_paths import check_output_dir, check_output_file
     from contact.ltca import LTCAOptions
-    from contact.output_paths import check_output_dir, check_output_file
     from friction.operating import OperatingConditions
-    from geometry.assembly import Misalignment
+    from geometry.core.io import write_netcdf
+    from geometry.pair.assembly import Misalignment
 
     C = 1e-5 * np.eye(2)
     return [
@@ -237,7 +237,7 @@ def test_refusals_with_ranges():
     on at least MIN_VALID_NODES nodes, and 10 % beyond the given value it does not."""
     from contact.pipeline import resolve_case
     from contact.utca.easeoff import MIN_VALID_NODES, ease_off
-    from geometry.assembly import Misalignment
+    from geometry.pair.assembly import Misalignment
 
     case = resolve_case(None)
     with pytest.raises(LTCAError) as info:

@@ -1,4 +1,4 @@
-"""Tests of the ISO 23509 blank geometry (geometry.pitch_cone, geometry.blank).
+"""Tests of the ISO 23509 blank geometry (geometry.iso23509.pitch_cone, geometry.iso23509.blank).
 
 References
 ----------
@@ -23,7 +23,8 @@ import pytest
 import xarray as xr
 from scipy.optimize import brentq
 
-from geometry.blank import (
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.iso23509.blank import (
     BlankGeometry,
     blank_dataset,
     blank_geometry,
@@ -31,8 +32,7 @@ from geometry.blank import (
     pinion_spiral_angle_at,
     spiral_angle_at,
 )
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.pitch_cone import (
+from geometry.iso23509.pitch_cone import (
     BevelGearDesign,
     hypoid_pitch_angles,
     limit_radius,
@@ -82,7 +82,7 @@ def _flat_symbols(geom: BlankGeometry) -> dict[str, float]:
 def _annex_cases() -> list[object]:
     # every printed value, none skipped (the hypoid pinion's β_e1, β_i1 included: they come
     # from the gear's spiral angle at the pinion end's corresponding point plus the offset
-    # angle there, geometry.blank.pinion_spiral_angle_at)
+    # angle there, geometry.iso23509.blank.pinion_spiral_angle_at)
     cases = []
     for sample in ("sample1", "sample2"):
         for symbol, (value, rtol) in ANNEX_F[sample]["expected"].items():

@@ -1,4 +1,4 @@
-"""Tests of the face-hobbing blank geometry (ISO 23509 Methods 2 and 3, geometry.blank).
+"""Tests of the face-hobbing blank geometry (ISO 23509 Methods 2 and 3, geometry.iso23509.blank).
 
 References
 ----------
@@ -11,8 +11,8 @@ References
   on β_e1). These are looser than the printed precision because the standard's Methods 2
   and 3 are iterations that stop at a tolerance (Method 2 on its first trial, 0.3 % short of
   its own closing condition), while this module solves the same conditions exactly; the
-  largest deviation found is 0.26 % (R_m1 of sample 3), see geometry.pitch_cone.
-* The face-hobbing tooth trace (geometry.pitch_cone.face_hobbing_trace, the spiral angle
+  largest deviation found is 0.26 % (R_m1 of sample 3), see geometry.iso23509.pitch_cone.
+* The face-hobbing tooth trace (geometry.iso23509.pitch_cone.face_hobbing_trace, the spiral angle
   along the face) against an independent time-stepped extended epicycloid: the blade of a
   cutter rolling on the crown gear as two external gears of z0 and z_p teeth.
 * Identities: the face-milling limit z0 → 0, the closing conditions of the methods at
@@ -30,8 +30,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from geometry.basic_design import basic_from_dict
-from geometry.blank import (
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.iso23509.blank import (
     BlankGeometry,
     blank_dataset,
     blank_geometry,
@@ -39,13 +39,13 @@ from geometry.blank import (
     pinion_spiral_angle_at,
     spiral_angle_at,
 )
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.pitch_cone import (
+from geometry.iso23509.pitch_cone import (
     BevelGearDesign,
     face_hobbing_trace,
     limit_radius,
     pitch_cone,
 )
+from geometry.synthesis.basic_design import basic_from_dict
 
 DATA = Path(__file__).parent / "data" / "iso23509_annex_f_face_hobbing.toml"
 ANNEX_F = tomllib.loads(DATA.read_text(encoding="utf-8"))

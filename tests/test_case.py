@@ -17,8 +17,8 @@ import pytest
 import xarray as xr
 
 from geometry.case import OPERATING_DEFAULTS, case_from_dict, load_case
-from geometry.errors import InputError
-from geometry.flank import blank_outline, flank_dataset, flank_surface, projection_grid
+from geometry.core.errors import InputError
+from geometry.machine.flank import blank_outline, flank_dataset, flank_surface, projection_grid
 from geometry.plot import plot_flanks_in_mesh, plot_projection_grid
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
@@ -269,7 +269,7 @@ def test_projection_fractions_invert_the_grid_layout():
     """projection_fractions inverts the bilinear layout: the grid's own places give back
     their (u, v) fractions, as do places outside the outline (u, v in [−0.5, 1.5]), to
     1e-12; with one outline per point the same (identity, round-off only)."""
-    from geometry.flank import projection_fractions
+    from geometry.machine.flank import projection_fractions
 
     bl = load_case(S1).gear.blank
     c = blank_outline(bl).corners
@@ -292,9 +292,9 @@ def test_projection_fractions_invert_the_grid_layout():
 
 def test_flank_dataset_conventions_and_netcdf_round_trip(tmp_path):
     """The Dataset has dims (u, v, xyz), every variable and coordinate carries units and
-    long_name, attributes are netCDF-safe (contact.io.check_conventions), and it survives a
+    long_name, attributes are netCDF-safe (geometry.core.io.check_conventions), and it survives a
     netCDF write/read unchanged (xarray.testing.assert_identical)."""
-    io = pytest.importorskip("contact.io")
+    io = pytest.importorskip("geometry.core.io")
     case = load_case(S2)
     ds = flank_dataset(case, "pinion", "concave", nu=7, nv=5)
     assert dict(ds.sizes) == {"u": 7, "v": 5, "xyz": 3}

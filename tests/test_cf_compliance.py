@@ -32,7 +32,7 @@ import numpy as np
 import pytest
 
 from contact.cli import main
-from contact.io import ACDD_ATTRS, CONVENTIONS, write_netcdf
+from geometry.core.io import ACDD_ATTRS, CONVENTIONS, write_netcdf
 
 #: the small run: two torques, 8 rolls per mesh cycle, no efficiency stage
 SMALL_RUN = ["--torque", "50", "250", "--rolls-per-cycle", "8", "--speed", "0", "--no-progress"]

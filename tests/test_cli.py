@@ -11,9 +11,9 @@ import pytest
 import xarray as xr
 
 from contact.cli import main
-from contact.io import read_netcdf, write_netcdf
 from contact.qp.benchmark_problems import ltca_like_problem
 from contact.qp.solver_study import compare_solvers, shifted_geometric_mean, summarize
+from geometry.core.io import read_netcdf, write_netcdf
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -189,11 +189,11 @@ def test_output_paths_are_refused_before_any_work(argv, message, tmp_path, monke
 
     import contact.pipeline
     import contact.qp.benchmark_problems
-    import geometry.basic_design
     import geometry.case
+    import geometry.synthesis.basic_design
 
     for mod, name in ((contact.pipeline, "resolve_case"), (geometry.case, "load_case"),
-                      (geometry.basic_design, "load_basic"),
+                      (geometry.synthesis.basic_design, "load_basic"),
                       (contact.qp.benchmark_problems, "standard_problem_set")):
         monkeypatch.setattr(mod, name, trap)
     afile = tmp_path / "afile"

@@ -32,8 +32,8 @@ from contact.compliance.tooth import (
     shell_tooth_from_case,
 )
 from geometry.case import load_case
-from geometry.errors import InputError
-from geometry.flank import projection_fractions
+from geometry.core.errors import InputError
+from geometry.machine.flank import projection_fractions
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -283,7 +283,7 @@ def test_loaded_tca_given_transitions_equals_computed():
     from contact.ltca import LTCAOptions, loaded_tca
     from contact.utca import unloaded_tca
     from contact.utca.easeoff import ease_off
-    from geometry.errors import InputError
+    from geometry.core.errors import InputError
 
     case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
     eo = ease_off(case)

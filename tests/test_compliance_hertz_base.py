@@ -24,7 +24,7 @@ from contact.compliance import (
     weber_deformation,
     weber_pair_deformation,
 )
-from geometry.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError
 
 STEEL_E = 206000.0  # MPa
 STEEL_NU = 0.3

@@ -18,7 +18,7 @@ from contact.compliance import (
     flank_normals,
     shell_deflection,
 )
-from geometry.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError
 
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 from fe_tooth import shell_patch_tip_deflection, solve_fe_tooth

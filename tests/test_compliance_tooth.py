@@ -2,11 +2,11 @@
 
 References, none taken from the code under test:
 
-* the generated flanks themselves (geometry.meshing.solve_envelope): tooth thickness
+* the generated flanks themselves (geometry.machine.meshing.solve_envelope): tooth thickness
   measured by intersecting a mid-surface normal line with both flanks (scipy root);
 * ISO 23509:2016 Annex F blank data in the case files: the whole depth at the heel;
   sample 2's published mean cone distance and spiral angle with the closed-form
-  face-hobbing tooth trace (geometry.pitch_cone.face_hobbing_trace: ISO 23509 cl. 5–6,
+  face-hobbing tooth trace (geometry.iso23509.pitch_cone.face_hobbing_trace: ISO 23509 cl. 5–6,
   itself checked against a time-stepped epicycloid) for the lengthwise radius ρ_mβ;
 * a 3-D finite-element model (scikit-fem, triquadratic hexahedra, no shell
   kinematics) of the GENERATED tooth — its solid bounded by the two generated flanks,
@@ -51,14 +51,14 @@ from contact.compliance.tooth import (
     shell_tooth_from_case,
     weber_depth,
 )
-from geometry.assembly import case_transforms, transform_points, transform_vectors
-from geometry.blank import spiral_angle_at
 from geometry.case import load_case
-from geometry.cutter import profile_sections
-from geometry.errors import InputError
-from geometry.flank import blank_outline, flank_surface
-from geometry.meshing import solve_envelope
-from geometry.pitch_cone import face_hobbing_trace
+from geometry.core.errors import InputError
+from geometry.iso23509.blank import spiral_angle_at
+from geometry.iso23509.pitch_cone import face_hobbing_trace
+from geometry.machine.cutter import profile_sections
+from geometry.machine.flank import blank_outline, flank_surface
+from geometry.machine.meshing import solve_envelope
+from geometry.pair.assembly import case_transforms, transform_points, transform_vectors
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = Path(__file__).resolve().parent / "data"
@@ -289,7 +289,7 @@ def test_face_hobbed_gear_measures_the_iso_lengthwise_radius():
     β_m2 = 38.609°, crown gear z2/sin δ2, uniform depth) is 75.84 mm, 8 % below r_c0; the
     measured radius (a face-width mean) is within 1 % of it, and the LOCAL radius at the
     toe, mean point and heel within 1 % of ρ_mβ at those cone distances (β from ISO's
-    face-hobbing spiral-angle law, geometry.blank.spiral_angle_at). Tolerance 1 %: the
+    face-hobbing spiral-angle law, geometry.iso23509.blank.spiral_angle_at). Tolerance 1 %: the
     mean over the face against the mid value (0.2 % here: the radius changes nearly
     linearly toe → heel), mid height against the crown gear's plane (0.3 % from root to
     tip), ISO's rounding (3 digits) and the flank-angle fit (0.1 %). Measured +0.12 %;

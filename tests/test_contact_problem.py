@@ -14,7 +14,7 @@ from contact import (
     available_solvers,
     solve_contact,
 )
-from geometry.errors import InputError, LTCAError
+from geometry.core.errors import InputError, LTCAError
 
 
 def _good(n=4):

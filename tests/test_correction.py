@@ -1,4 +1,4 @@
-"""Corrective machine settings (geometry.correction, ``ltca correct``).
+"""Corrective machine settings (geometry.synthesis.correction, ``ltca correct``).
 
 Independent references: the settings a flank was cut with (known perturbations of a
 bundled case, recovered from its CMM deviations), closed forms of a cone of revolution
@@ -18,7 +18,10 @@ import pytest
 from contact.cli import main
 from contact.utca.deviations import DEFAULT_MEASUREMENT_GRID
 from geometry.case import load_case
-from geometry.correction import (
+from geometry.core.errors import InputError
+from geometry.machine.cutter import profile_sections
+from geometry.machine.flank import flank_at
+from geometry.synthesis.correction import (
     COND_MAX,
     corrected_case,
     corrective_settings,
@@ -26,9 +29,6 @@ from geometry.correction import (
     setting_value,
     settings_deviation,
 )
-from geometry.cutter import profile_sections
-from geometry.errors import InputError
-from geometry.flank import flank_at
 
 CASE_FILE = Path(__file__).resolve().parents[1] / "cases" / "kolivand2009_fm_11x41.toml"
 # the 5 x 9 CMM grid (seed §4.5.2): 9 lengthwise x 5 profile fractions
@@ -91,7 +91,7 @@ def test_cmm_deviation_of_a_cone_is_a_uniform_offset(case):
 
 
 def _places(case):
-    from geometry.correction import measurement_places
+    from geometry.synthesis.correction import measurement_places
 
     return measurement_places(case.gear.blank, U, V)
 

@@ -15,17 +15,17 @@ import numpy as np
 import pytest
 
 from geometry.case import load_case
-from geometry.curvature import (
+from geometry.core.errors import InputError
+from geometry.machine.curvature import (
     PrincipalCurvatures,
     equivalent_radius,
     normal_curvature,
     principal_from_directional,
     relative_curvature,
 )
-from geometry.cutter import blade_profile, profile_sections
-from geometry.errors import InputError
-from geometry.flank import flank_surface
-from geometry.meshing import solve_envelope
+from geometry.machine.cutter import blade_profile, profile_sections
+from geometry.machine.flank import flank_surface
+from geometry.machine.meshing import solve_envelope
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 MIRROR = np.array([1.0, -1.0, 1.0])
@@ -54,7 +54,7 @@ def test_formate_curvatures_are_the_cone_curvatures(flank):
     np.testing.assert_allclose(fs.kappa2[ok], expected_lo, atol=1e-12)
     # the zero-curvature direction is the blade (meridian): ⟂ to the cutter's parallel circle
     zero_dir = np.where((k_par > 0)[:, None], fs.dir2[ok], fs.dir1[ok])
-    from geometry.machine import cutter_pose
+    from geometry.machine.cradle import cutter_pose
 
     _, axis = cutter_pose(tool.machine, 0.0)
     # a meridian lies in a plane through the cutter axis: ⟂ to axis × (point − centre)

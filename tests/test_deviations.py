@@ -19,7 +19,8 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from contact.deviation_files import (
+from contact.utca import pair_transmission_error, unloaded_tca
+from contact.utca.deviation_files import (
     SurfaceDeviation,
     apply_deviations,
     read_deviation_csv,
@@ -28,11 +29,10 @@ from contact.deviation_files import (
     weighted_average_deviation,
     write_deviation_netcdf,
 )
-from contact.utca import pair_transmission_error, unloaded_tca
 from contact.utca.easeoff import ease_off
 from geometry.case import load_case
-from geometry.errors import InputError
-from geometry.flank import blank_outline, flank_at
+from geometry.core.errors import InputError
+from geometry.machine.flank import blank_outline, flank_at
 
 CASE = Path(__file__).resolve().parents[1] / "cases" / "kolivand2009_fm_11x41.toml"
 
@@ -237,9 +237,9 @@ def test_pipeline_with_deviations_side_by_side(tmp_path):
     # (the bundled example) changes the ease-off by up to the deviations' sum and is
     # written next to the theoretical results; `ltca run --deviations` and `ltca plot`
     from contact.cli import main
-    from contact.io import read_netcdf
     from contact.ltca import LTCAOptions
     from contact.pipeline import run_analysis
+    from geometry.core.io import read_netcdf
 
     root = Path(__file__).resolve().parents[1] / "cases"
     case = load_case(root / "kolivand2009_fm_11x41.toml")

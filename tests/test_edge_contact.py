@@ -24,7 +24,7 @@ from contact.pipeline import SEED_TABLE_3_1
 from contact.utca import EaseOffFields, contact_curves, transitions
 from contact.utca.easeoff import ease_off
 from geometry.case import load_case
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -21,7 +21,7 @@ from test_face_hobbing_chain import _transitions as _fh_transitions
 from test_ltca import _run  # the same LTCA result (cached per session)
 
 from friction.efficiency import efficiency_analysis
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 
 @pytest.fixture(scope="module")
@@ -146,8 +146,8 @@ def test_table_5_4_designs_efficiency_and_offset_effect():
 
 def test_efficiency_map_trends_and_command(tmp_path):
     from contact.cli import main
-    from contact.io import read_netcdf
     from contact.pipeline import efficiency_map
+    from geometry.core.io import read_netcdf
 
     emap = efficiency_map(
         None,

@@ -36,13 +36,13 @@ import pytest
 from ltca_identities import assert_equilibrium_and_complementarity, solver_params
 
 from contact.cli import main
-from contact.io import read_netcdf
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.ltca.transmission_error import transmission_error_summary
 from contact.utca import transitions
 from contact.utca.easeoff import ease_off
-from geometry.assembly import Misalignment
 from geometry.case import load_case
+from geometry.core.io import read_netcdf
+from geometry.pair.assembly import Misalignment
 
 ROOT = Path(__file__).resolve().parents[1]
 FH_CASES = ("kolivand2009_fh_12x41", "kolivand2009_table54_A_fh", "kolivand2009_table54_B_fh")

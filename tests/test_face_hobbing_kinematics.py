@@ -27,13 +27,10 @@ import pytest
 from scipy.optimize import least_squares
 from scipy.spatial.transform import Rotation
 
-from geometry.blank import blank_geometry
 from geometry.case import Blank, FlankTool, load_case
-from geometry.cutter import Blade, mirror_blade, profile_sections
-from geometry.errors import InputError
-from geometry.flank import flank_surface, projection_grid
-from geometry.flank_point import flank_points
-from geometry.machine import (
+from geometry.core.errors import InputError
+from geometry.iso23509.blank import blank_geometry
+from geometry.machine.cradle import (
     MachineSettings,
     generated_family,
     indexing_ratio,
@@ -41,8 +38,11 @@ from geometry.machine import (
     meshing_function,
     mirror_settings,
 )
-from geometry.meshing import solve_envelope
-from geometry.synthesis import case_blank, gear_formate_tools
+from geometry.machine.cutter import Blade, mirror_blade, profile_sections
+from geometry.machine.flank import flank_surface, projection_grid
+from geometry.machine.flank_point import flank_points
+from geometry.machine.meshing import solve_envelope
+from geometry.synthesis.flank_synthesis import case_blank, gear_formate_tools
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_blank import design_from_annex  # the ISO 23509 Annex F sample designs

@@ -1,6 +1,6 @@
-"""The flank evaluator of the TCA and the synthesis (geometry.flank_point.flank_points).
+"""The flank evaluator of the TCA and the synthesis (geometry.machine.flank_point.flank_points).
 
-References: the flank solved by ``geometry.flank.flank_at`` (the toolkit's flank Dataset
+References: the flank solved by ``geometry.machine.flank.flank_at`` (the toolkit's flank Dataset
 path: points, normals, principal curvatures), central finite differences of the points
 along the projection-plane coordinates (the tangents ∂r/∂Z, ∂r/∂P) and of the normals along
 the surface (the shape operator, dn = W dr), and the right-hand flank mirrored y → −y (the
@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 from geometry.case import load_case
-from geometry.errors import InputError
-from geometry.flank import blank_outline, flank_at
-from geometry.flank_point import MemberFlank, flank_points
+from geometry.core.errors import InputError
+from geometry.machine.flank import blank_outline, flank_at
+from geometry.machine.flank_point import MemberFlank, flank_points
 
 ROOT = Path(__file__).resolve().parents[1]
 CASE = load_case(ROOT / "cases" / "kolivand2009_fm_11x41.toml")  # left-hand pinion

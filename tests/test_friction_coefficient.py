@@ -25,7 +25,7 @@ from friction.coefficient import (
     xu2007,
 )
 from friction.lubricant import load_lubricant, viscosity
-from geometry.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError
 
 DATA = Path(__file__).parent / "data"
 

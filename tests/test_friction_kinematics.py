@@ -9,8 +9,8 @@ generatrix) and growing linearly with the hypoid offset.
 Process-agnostic (design note FACE_HOBBING.md §6): on the face-hobbed example pair
 (tests/data/fh_iso23509_s2_crown.toml) the friction stage's sliding and rolling velocities
 and slide-to-roll ratios equal the velocities of material points moved by the assembly's
-own member transforms (geometry.assembly.case_transforms, central differences), its
-equivalent radii the flank curvatures at the contact points (geometry.flank.flank_at), and
+own member transforms (geometry.pair.assembly.case_transforms, central differences), its
+equivalent radii the flank curvatures at the contact points (geometry.machine.flank.flank_at), and
 its outputs depend on nothing but the contact geometry it is given.
 """
 
@@ -26,7 +26,7 @@ import xarray as xr
 
 from friction.efficiency import efficiency_analysis
 from friction.kinematics import surface_velocities
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 FH_EXAMPLE = Path(__file__).resolve().parent / "data" / "fh_iso23509_s2_crown.toml"
 
@@ -141,10 +141,10 @@ def test_mean_pitch_point_against_the_pitch_cone_hand_calculation(name):
     from scipy.optimize import least_squares
 
     from contact.utca.action_surface import mesh_kinematics
-    from geometry.assembly import Misalignment
-    from geometry.basic_design import load_basic
     from geometry.case import load_case
-    from geometry.pitch_cone import pitch_cone
+    from geometry.iso23509.pitch_cone import pitch_cone
+    from geometry.pair.assembly import Misalignment
+    from geometry.synthesis.basic_design import load_basic
 
     root = Path(__file__).resolve().parents[1] / "cases"
     pc = pitch_cone(load_basic(root / "basic" / f"{name}.toml").design)
@@ -212,7 +212,7 @@ def _rigid_velocity(case, member, points, omega, step=1e-6):
     """Velocity [m/s] of the material points of ``member`` now at ``points`` (pair frame,
     mm) turning at ``omega`` [rad/s] about its own +z axis: central differences of the
     assembly's member → pair transforms at rotations ±step [rad]."""
-    from geometry.assembly import case_transforms, transform_points
+    from geometry.pair.assembly import case_transforms, transform_points
 
     k = 0 if member == "pinion" else 1
     in_member = transform_points(np.linalg.inv(case_transforms(case)[k]), points)
@@ -224,11 +224,11 @@ def _rigid_velocity(case, member, points, omega, step=1e-6):
 def _curvature_at(case, member, flank, points, direction):
     """Normal curvature [1/mm] (convex positive) of ``member``'s generated ``flank`` at pair-
     frame ``points`` along pair-frame ``direction`` (projected on its tangent plane): the
-    flank point at the same axial position and radius (geometry.flank.flank_at), turned
+    flank point at the same axial position and radius (geometry.machine.flank.flank_at), turned
     about the member axis onto the point."""
-    from geometry.assembly import case_transforms, transform_points, transform_vectors
-    from geometry.curvature import normal_curvature
-    from geometry.flank import flank_at
+    from geometry.machine.curvature import normal_curvature
+    from geometry.machine.flank import flank_at
+    from geometry.pair.assembly import case_transforms, transform_points, transform_vectors
 
     to_pair = case_transforms(case)[0 if member == "pinion" else 1]
     pm = transform_points(np.linalg.inv(to_pair), points)

@@ -16,7 +16,7 @@ for bit (``python tests/golden.py --check``); the 1e-9 allows for another CPU's 
 build's round-off (the LTCA's Newton and active-set iterations stop at 1e-9 of their
 scales, so round-off cannot move a result by more than that without moving a contact set,
 which would show as an integer ``contact`` flag difference). Principal directions are
-signed by a stated convention (``geometry.curvature.principal_from_directional``), so
+signed by a stated convention (``geometry.machine.curvature.principal_from_directional``), so
 they too compare as floats; before it, round-off of a torsion's sign flipped them between
 CPUs (issue 31).
 
@@ -37,7 +37,7 @@ import numpy as np
 import pytest
 from golden import GOLDEN, differences, run_default
 
-from contact.io import read_netcdf
+from geometry.core.io import read_netcdf
 
 #: float variables, relative to each variable's largest magnitude (module docstring)
 RTOL = 1e-9
@@ -79,7 +79,7 @@ import tempfile
 from threadpoolctl import threadpool_info, threadpool_limits
 sys.path.insert(0, {tests!r})
 from golden import GOLDEN, differences, run_default
-from contact.io import read_netcdf
+from geometry.core.io import read_netcdf
 arch = [i.get("architecture") for i in threadpool_info() if i["internal_api"] == "openblas"]
 print("kernel", arch)
 with threadpool_limits(limits=1, user_api="blas"), tempfile.TemporaryDirectory() as tmp:

@@ -1,4 +1,4 @@
-"""Tests of geometry.hertz: the one Hertz line contact, in Johnson's contact modulus E*.
+"""Tests of geometry.core.hertz: the one Hertz line contact, in Johnson's contact modulus E*.
 
 Checked against closed forms written independently here (Johnson, *Contact Mechanics*,
 1985, Eq. 4.22 and 4.43–4.45), in E* and in the EHL literature's E′ = 2E* that the
@@ -14,8 +14,8 @@ import warnings
 import numpy as np
 import pytest
 
-from geometry.errors import InputError
-from geometry.hertz import STEEL, contact_modulus, hertz_line_contact
+from geometry.core.errors import InputError
+from geometry.core.hertz import STEEL, contact_modulus, hertz_line_contact
 
 E, NU = STEEL
 # a spread of gear contacts: light to heavy loads, small to large radii
@@ -90,7 +90,7 @@ def test_deprecated_friction_wrappers_agree_and_warn():
 
     e_prime = 2 * contact_modulus(E, NU, E, NU)
     hz = hertz_line_contact(W, R, e_prime / 2)
-    with pytest.warns(DeprecationWarning, match="geometry.hertz.contact_modulus"):
+    with pytest.warns(DeprecationWarning, match="geometry.core.hertz.contact_modulus"):
         assert combined_modulus(E, NU, E, NU) == e_prime
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", DeprecationWarning)

@@ -8,9 +8,15 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from contact.io import NetCDFError, check_conventions, netcdf_safe_attrs, read_netcdf, write_netcdf
 from geometry import __version__
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.core.io import (
+    NetCDFError,
+    check_conventions,
+    netcdf_safe_attrs,
+    read_netcdf,
+    write_netcdf,
+)
 
 
 def _dataset():

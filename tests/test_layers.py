@@ -28,12 +28,10 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "geometry", "friction")
 
-#: geometry's modules that hold no gear: errors, validators, Hertz line contact, the
-#: dataset convention, atomic file writes (the qp layer may use these and nothing else of
-#: geometry)
-GEOMETRY_LOW = {"geometry.errors", "geometry.validation", "geometry.hertz",
-                "geometry.atomic_files",
-                "geometry.conventions"}
+#: the toolkit's low layer, no gear in it (errors, validators, Hertz line contact, dataset
+#: conventions and netCDF files, atomic and TOML files, version, moved paths): the qp
+#: layer may use it and nothing else of geometry
+GEOMETRY_LOW = {"geometry.core"}
 
 #: contact's layers and what each may import (besides itself, contact.errors and,
 #: for all but qp, the whole of geometry)
@@ -43,10 +41,9 @@ LAYER_DEPENDS = {
     "contact.compliance": set(),
     "contact.ltca": {"contact.qp", "contact.utca", "contact.compliance"},
 }
-APPLICATION = {"contact", "contact.pipeline", "contact.io", "contact.plots", "contact.cli",
+APPLICATION = {"contact", "contact.pipeline", "contact.plots", "contact.cli",
                "contact.wear",
-               "contact.__main__", "contact._moved", "contact.commands",
-               "contact.deviation_files", "contact.output_paths", "contact.study",
+               "contact.__main__", "contact._moved", "contact.commands", "contact.study",
                "contact.optimize"}
 
 

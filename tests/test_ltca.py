@@ -19,14 +19,14 @@ import xarray as xr
 from ltca_identities import assert_equilibrium_and_complementarity, solver_params
 
 from contact.cli import main
-from contact.io import check_conventions, read_netcdf, write_netcdf
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.pipeline import run_analysis
 from contact.utca.easeoff import ease_off
 from friction.operating import OperatingConditions
-from geometry.assembly import Misalignment
 from geometry.case import load_case
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.core.io import check_conventions, read_netcdf, write_netcdf
+from geometry.pair.assembly import Misalignment
 
 ROOT = Path(__file__).resolve().parents[1]
 SMALL = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=10)
@@ -166,7 +166,7 @@ def _pattern_centre(ds):
 
 
 def test_misalignment_moves_the_pattern_toe_or_heel():
-    # Directions implied by the toolkit's convention (docs/machine.md, geometry.assembly;
+    # Directions implied by the toolkit's convention (docs/machine.md, geometry.pair.assembly;
     # confirmed by the UTCA tests): ΔE −0.08 / ΔP +0.10 → heel, ΔE +0.15 / ΔP −0.10 → toe.
     opts = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=12)
     nominal = _pattern_centre(loaded_tca(_case(), [100.0], options=opts))

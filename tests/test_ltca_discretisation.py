@@ -20,9 +20,9 @@ from contact.ltca import LTCAOptions, loaded_tca, segment_geometry
 from contact.ltca.discretisation import SegmentQuadratic
 from contact.utca import CURVE_SPACINGS, EaseOffFields, contact_curves, transitions
 from contact.utca.easeoff import ease_off
-from geometry.assembly import Misalignment
 from geometry.case import load_case
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.pair.assembly import Misalignment
 
 ROOT = Path(__file__).resolve().parents[1]
 

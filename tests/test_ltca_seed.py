@@ -23,8 +23,8 @@ import numpy as np
 
 from contact.ltca import loaded_tca
 from contact.pipeline import DEFAULT_CASE, SEED_TABLE_3_1
-from geometry.assembly import Misalignment
 from geometry.case import load_case
+from geometry.pair.assembly import Misalignment
 
 ROOT = Path(__file__).resolve().parents[1]
 TORQUES = SEED_TABLE_3_1["torque"]

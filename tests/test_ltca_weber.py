@@ -18,7 +18,7 @@ from contact.compliance.weber import weber_compliance
 from contact.errors import ProblemInputError
 from contact.ltca import LTCAOptions
 from contact.ltca.weber import RollSelection, even_share, weber_solve
-from geometry.hertz import STEEL, contact_modulus
+from geometry.core.hertz import STEEL, contact_modulus
 
 E, NU = STEEL
 MODULUS = contact_modulus(E, NU, E, NU)

@@ -21,7 +21,7 @@ from friction.lubricant import (
     thermal_conductivity,
     viscosity,
 )
-from geometry.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError
 
 DATA = Path(__file__).parent / "data"
 

@@ -15,16 +15,8 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from geometry.case import load_case
-from geometry.cutter import (
-    Blade,
-    blade_profile,
-    cutter_curvatures,
-    cutter_surface,
-    profile_sections,
-)
-from geometry.errors import InputError
-from geometry.flank import flank_surface
-from geometry.machine import (
+from geometry.core.errors import InputError
+from geometry.machine.cradle import (
     MachineSettings,
     cutter_pose,
     generated_family,
@@ -34,6 +26,14 @@ from geometry.machine import (
     roll_angle,
     settings_from_poses,
 )
+from geometry.machine.cutter import (
+    Blade,
+    blade_profile,
+    cutter_curvatures,
+    cutter_surface,
+    profile_sections,
+)
+from geometry.machine.flank import flank_surface
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 D = math.radians

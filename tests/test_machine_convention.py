@@ -10,11 +10,11 @@ each joint a Taylor series in the generating roll φ of the *typed* summary valu
 sign that depends on the member and the system hand (the pinion's), the roll terms of
 order ≥ 2 scaled by the ratio of roll; and its blade, a circle through the point radius in
 the tip plane with the blade angle there, centre on the work side for ρ_b > 0, blended to
-the tip plane by the edge radius. Rotations are scipy's, independent of geometry.machine.
+the tip plane by the edge radius. Rotations are scipy's, independent of geometry.machine.cradle.
 
 What is checked (tolerances justified where they are used):
 
-* the table of geometry.machine_convention reproduces SpyGO's chain for the four
+* the table of geometry.machine.convention reproduces SpyGO's chain for the four
   (member, hand) cases (1e-12 relative: round-off of a product of 10 matrices);
 * our blade edge lies on SpyGO's circles for both sides, convex and concave edges and a
   reference height off the tip (1e-9 mm);
@@ -40,11 +40,8 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from geometry.case import case_from_dict
-from geometry.cutter import Blade, blade_profile, profile_sections
-from geometry.errors import InputError
-from geometry.flank import flank_surface
-from geometry.machine import MachineSettings, machine_transform
-from geometry.machine_convention import (
+from geometry.core.errors import InputError
+from geometry.machine.convention import (
     CONVENTIONS,
     SPYGO_MACHINE,
     blade_from_spygo,
@@ -52,6 +49,9 @@ from geometry.machine_convention import (
     machine_from_spygo,
     machine_to_spygo,
 )
+from geometry.machine.cradle import MachineSettings, machine_transform
+from geometry.machine.cutter import Blade, blade_profile, profile_sections
+from geometry.machine.flank import flank_surface
 
 log = logging.getLogger(__name__)
 

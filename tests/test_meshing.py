@@ -18,11 +18,11 @@ from scipy.optimize import least_squares
 from scipy.spatial.transform import Rotation
 
 from geometry.case import FlankTool, load_case
-from geometry.cutter import Blade, profile_sections
-from geometry.errors import InputError
-from geometry.flank import flank_surface
-from geometry.machine import MachineSettings, cutter_pose
-from geometry.meshing import REASONS, solve_envelope
+from geometry.core.errors import InputError
+from geometry.machine.cradle import MachineSettings, cutter_pose
+from geometry.machine.cutter import Blade, profile_sections
+from geometry.machine.flank import flank_surface
+from geometry.machine.meshing import REASONS, solve_envelope
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 CASE_FILES = ("spiral_bevel_iso23509_s1.toml", "hypoid_iso23509_s2.toml")

@@ -1,4 +1,4 @@
-"""Starting guesses of the envelope solver (geometry.meshing.solve_envelope(..., guess=)).
+"""Starting guesses of the envelope solver (geometry.machine.meshing.solve_envelope(..., guess=)).
 
 A guess only changes where Newton starts: the solution must be the one found without a
 guess (same root, same mask reasons) to the solver's own tolerances, and a bad or missing
@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 from geometry.case import load_case
-from geometry.errors import InputError
-from geometry.flank import projection_grid
-from geometry.meshing import solve_envelope
+from geometry.core.errors import InputError
+from geometry.machine.flank import projection_grid
+from geometry.machine.meshing import solve_envelope
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 CASE_FILES = ("spiral_bevel_iso23509_s1.toml", "hypoid_iso23509_s2.toml")

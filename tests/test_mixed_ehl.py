@@ -34,7 +34,7 @@ from friction.mixed_ehl import (
     mixed_ehl,
     mixed_ehl_solution,
 )
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 #: A flank segment of the seed's Table 5.4 pairs at 1500 rpm, 500 N·m, 90 °C (75W90).
 SEGMENT = dict(

@@ -1,4 +1,5 @@
-"""Old import paths of ``contact`` keep working for one release (issue 20, contact._moved).
+"""Old import paths of ``contact`` and ``geometry`` keep working for one release (issues 20
+and 31: contact._moved, geometry._moved).
 
 Every entry of the table imports, warns with a DeprecationWarning naming the new path,
 and gives the very module at the new path; the names users import from the old paths
@@ -12,7 +13,10 @@ import sys
 
 import pytest
 
-from contact._moved import MOVED
+from contact._moved import MOVED as CONTACT_MOVED
+from geometry import MOVED as GEOMETRY_MOVED
+
+MOVED = {**CONTACT_MOVED, **GEOMETRY_MOVED}
 
 
 @pytest.mark.parametrize("old", sorted(MOVED))
@@ -37,6 +41,17 @@ def test_old_path_gives_the_new_module_with_a_warning(old):
     ("contact.transmission_error", ("transmission_error_summary",)),
     ("contact.compliance.hertz", ("weber_compliance", "contact_modulus")),
     ("contact.compliance.base", ("foundation_matrix",)),
+    ("contact.io", ("read_netcdf", "write_netcdf", "check_conventions")),
+    ("contact.deviation_files", ("read_deviations", "write_deviation_netcdf")),
+    ("geometry.errors", ("InputError", "LTCAError", "ModelUnavailableError")),
+    ("geometry.blank", ("blank_geometry", "BlankGeometry")),
+    ("geometry.pitch_cone", ("BevelGearDesign", "pitch_cone")),
+    ("geometry.flank", ("flank_surface", "flank_dataset", "projection_grid")),
+    ("geometry.assembly", ("Misalignment", "member_transform", "case_transforms")),
+    ("geometry.basic_design", ("load_basic", "BasicDesign")),
+    ("geometry.correction", ("corrective_settings", "cmm_deviation")),
+    ("geometry.conventional_tca", ("conventional_tca",)),
+    ("geometry.hertz", ("contact_modulus", "hertz_line_contact")),
 ])
 def test_names_users_import_from_old_paths(old, names):
     sys.modules.pop(old, None)
@@ -66,3 +81,11 @@ def test_packages_that_kept_their_names_export_what_the_modules_did():
     assert callable(utca_dataset) and LTCAOptions().solver
     assert DEFAULT_SEPARATION == 0.0063 and set(UTE_METHODS) == {"seed", "second_order"}
     assert "cosine" in CURVE_SPACINGS and ContactCurves._fields[0] == "target"
+
+
+def test_geometry_packages_that_kept_their_names_export_what_the_modules_did():
+    from geometry.machine import MachineSettings, generated_family, settings_from_poses
+    from geometry.synthesis import local_synthesis, pinion_generate_tools, synthesize
+
+    assert all(callable(f) for f in (MachineSettings, generated_family, settings_from_poses,
+                                     local_synthesis, pinion_generate_tools, synthesize))

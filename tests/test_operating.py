@@ -12,7 +12,7 @@ import math
 import pytest
 
 from friction.operating import OperatingConditions
-from geometry.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError
 
 
 def test_defaults():

@@ -34,7 +34,7 @@ from contact.optimize import (
 from contact.pipeline import SEED_TABLE_3_1, resolve_case, run_analysis
 from contact.study.summary import point_summary
 from geometry.case import load_case
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 BASIC = Path(__file__).resolve().parents[1] / "cases" / "basic" / "kolivand2009_fm_11x41.toml"
 
@@ -173,7 +173,7 @@ def test_cli_checks_the_output_before_work(tmp_path, capsys):
 
 @cache
 def _basic():
-    from geometry.basic_design import load_basic
+    from geometry.synthesis.basic_design import load_basic
 
     return load_basic(BASIC)
 
@@ -182,13 +182,13 @@ def test_synthesis_inputs_are_variables_of_a_basic_design_start():
     """Started from a basic design, the flank prescriptions are variables: their start
     values are the basic file's (file units: deg, µrad, µm), a design re-synthesises the
     basic design with them — the same case, setting for setting, as ``ltca synthesize`` of
-    the changed prescriptions (both are :func:`geometry.synthesis.synthesize`; 1e-12
+    the changed prescriptions (both are :func:`geometry.synthesis.flank_synthesis.synthesize`; 1e-12
     relative, the synthesis is deterministic) — and a setting variable is applied on top
     of the re-synthesised flank. The committed case is the basic file's synthesis, so it is
     the start."""
     from contact.optimize import case_at, start_values
-    from geometry.basic_design import with_flank_options
-    from geometry.synthesis import synthesize
+    from geometry.synthesis.basic_design import with_flank_options
+    from geometry.synthesis.flank_synthesis import synthesize
 
     basic = _basic()
     case = _case()

@@ -40,7 +40,7 @@ from contact.plots import (
 from contact.plots.flank import colour_index
 from contact.plots.tooth import segment_pieces
 from friction.operating import OperatingConditions
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 QUICK = LTCAOptions(rolls_per_cycle=4, segments=10)
 ONE_CYCLE = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=10)

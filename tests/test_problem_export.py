@@ -25,7 +25,6 @@ import scipy.linalg
 
 from contact.cli import main
 from contact.errors import ProblemInputError
-from contact.io import read_netcdf
 from contact.ltca import LTCAOptions
 from contact.qp import ContactProblem, solve_contact
 from contact.qp.benchmark_problems import ltca_like_problem
@@ -39,6 +38,7 @@ from contact.qp.problem_files import (
     write_problem,
 )
 from contact.qp.solvers.active_set import initial_contact_set
+from geometry.core.io import read_netcdf
 
 ROOT = Path(__file__).resolve().parents[1]
 CASE = "kolivand2009_fm_11x41"
@@ -99,7 +99,7 @@ def test_exported_problems_are_those_run_analysis_solved(exported):
     run_analysis's LTCA recorded at that (torque, roll): the same problem, solved again.
     Tolerance 1e-9 relative: the solver's round-off (it is exact on a contact set)."""
     from contact.pipeline import SEED_TABLE_3_1, run_analysis
-    from geometry.assembly import Misalignment
+    from geometry.pair.assembly import Misalignment
 
     entries = read_manifest(exported)["problems"]
     for label, mis in (("aligned", Misalignment()),

@@ -111,8 +111,8 @@ def test_case_is_its_basic_design_at_the_recorded_optimum():
     gives the same drive-flank settings and blade (1e-9 relative: the values are stored
     to 12 digits)."""
     from contact.optimize import case_at
-    from geometry.basic_design import load_basic
-    from geometry.synthesis import synthesize
+    from geometry.synthesis.basic_design import load_basic
+    from geometry.synthesis.flank_synthesis import synthesize
 
     case = _case()
     table = case.extra["optimize"]

@@ -1,10 +1,10 @@
 """Profile relief (tip and root) of the pinion flank: the synthesis input and its conversion.
 
-The conversion (:mod:`geometry.relief`) turns a prescribed normal relief δ at the flank's
+The conversion (:mod:`geometry.machine.relief`) turns a prescribed normal relief δ at the flank's
 tip and root ends into the blade's flankrem and toprem by the closed form of two straight
 lines through a corner. It is checked here on what the generator makes of the relieved
 blade, not on the formula: the flank cut with the relieved blade is measured along the
-unrelieved flank's normals as a CMM would (:func:`geometry.correction.cmm_deviation`, an
+unrelieved flank's normals as a CMM would (:func:`geometry.synthesis.correction.cmm_deviation`, an
 envelope solution per point), at the two ends and at M.
 """
 
@@ -19,13 +19,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from geometry.basic_design import basic_from_dict
 from geometry.case import case_from_dict, load_case
-from geometry.correction import cmm_deviation
-from geometry.errors import InputError
-from geometry.flank_point import flank_points
-from geometry.relief import blade_relief, relief_places, relieved_blade
-from geometry.synthesis import synthesize
+from geometry.core.errors import InputError
+from geometry.machine.flank_point import flank_points
+from geometry.machine.relief import blade_relief, relief_places, relieved_blade
+from geometry.synthesis.basic_design import basic_from_dict
+from geometry.synthesis.correction import cmm_deviation
+from geometry.synthesis.flank_synthesis import synthesize
 
 ROOT = Path(__file__).resolve().parents[1]
 BASIC = ROOT / "cases" / "basic" / "kolivand2009_fm_11x41.toml"

@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 from contact.cli import main
-from contact.io import read_netcdf
 from contact.plots import analysis_figures
 from contact.plots.report import SUMMARY_COLUMNS
+from geometry.core.io import read_netcdf
 
 QUICK = ["--torque", "50", "250", "--rolls-per-cycle", "4", "--segments", "10",
          "--no-progress"]
@@ -110,7 +110,7 @@ def test_report_of_a_file_without_friction_says_what_is_absent(tmp_path):
 def test_report_refuses_a_file_that_is_not_an_analysis(tmp_path, capsys):
     import xarray as xr
 
-    from contact.io import write_netcdf
+    from geometry.core.io import write_netcdf
 
     nc = write_netcdf(xr.Dataset({"x": ("a", np.arange(3.0), {"units": "1",
                                                               "long_name": "x"})}),

@@ -18,7 +18,7 @@ from friction.lubricant import (
     viscosity,
 )
 from friction.rolling import rolling_power_loss, rolling_traction, rolling_traction_isothermal
-from geometry.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError
 
 E_PRIME = 206000.0 / (1 - 0.3**2)  # steel/steel, E′ = E/(1 − ν²) [MPa] (assumed material)
 

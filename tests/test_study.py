@@ -33,8 +33,8 @@ from contact.study import (
 )
 from contact.study import engine as study_engine
 from contact.study.store import ResultStore
-from geometry.assembly import Misalignment
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.pair.assembly import Misalignment
 
 OPTIONS = LTCAOptions(rolls_per_cycle=8, segments=8)
 TORQUE = 250.0
@@ -264,7 +264,7 @@ def test_study_commands(tmp_path, capsys):
     their files and figures; a bad range is one line naming the option (`ltca vh-check`:
     the slow test below)."""
     from contact.cli import main
-    from contact.io import read_netcdf
+    from geometry.core.io import read_netcdf
 
     common = ["--rolls-per-cycle", "8", "--scheduler", "synchronous", "--no-progress"]
     assert main(["sweep", "--dE", "-0.1:0.1:2", "--dP", "0,0.05", "--torque", "250",

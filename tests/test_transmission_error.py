@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from contact.ltca.transmission_error import mesh_harmonics, transmission_error_summary
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 T = 2 * np.pi / 11  # mesh period of an 11-tooth pinion [rad]
 

@@ -1,6 +1,7 @@
 """Unloaded TCA from the ease-off (contact.utca) against independent references.
 
-References: the conventional TCA of seed Eq. 2.14 (geometry.conventional_tca.conventional_tca: five
+References: the conventional TCA of seed Eq. 2.14
+(geometry.pair.conventional_tca.conventional_tca: five
 equations solved on the real surfaces, a different algorithm on different data), the
 exactly conjugate example pair (zero transmission error), the Hertzian contact-ellipse
 estimate of the unloaded contact line from principal relative curvatures (seed Eq. 2.15–2.18),
@@ -25,7 +26,6 @@ import pytest
 import xarray as xr
 
 from contact.cli import main
-from contact.io import check_conventions, read_netcdf, without_stamps, write_netcdf
 from contact.utca import (
     UTE_METHODS,
     contact_curves,
@@ -34,13 +34,14 @@ from contact.utca import (
     unloaded_tca,
 )
 from contact.utca.easeoff import ease_off
-from geometry.assembly import Misalignment, case_transforms
 from geometry.case import load_case
-from geometry.conventional_tca import conventional_tca, mean_contact
-from geometry.curvature import PrincipalCurvatures, relative_curvature, surface_curvatures
-from geometry.errors import InputError
-from geometry.flank import blank_outline
-from geometry.meshing import solve_envelope
+from geometry.core.errors import InputError
+from geometry.core.io import check_conventions, read_netcdf, without_stamps, write_netcdf
+from geometry.machine.curvature import PrincipalCurvatures, relative_curvature, surface_curvatures
+from geometry.machine.flank import blank_outline
+from geometry.machine.meshing import solve_envelope
+from geometry.pair.assembly import Misalignment, case_transforms
+from geometry.pair.conventional_tca import conventional_tca, mean_contact
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = Path(__file__).resolve().parent / "data"
@@ -140,7 +141,7 @@ def test_ute_and_contact_point_match_conventional_tca(flank):
                                  Misalignment(0.05, 0.0, 0.0, 4 * ARCMIN)],
                          ids=["dE-0.08,dP+0.10", "dE+0.15,dP-0.10", "dE+0.05,dS+4'"])
 def test_misaligned_utca_matches_conventional_tca(mis):
-    """The whole UTCA recomputed in the misaligned frame (geometry.assembly) agrees with the
+    """The whole UTCA recomputed in the misaligned frame (geometry.pair.assembly) agrees with the
     conventional TCA of the same misaligned assembly: TE up to a constant within 0.5 µrad and
     the contact point within 0.1 mm at three rolls within ±0.15 mesh cycle of the lowest
     ease-off (where the contact stays inside both flanks)."""
@@ -191,7 +192,7 @@ def _mean_contact_u(mis):
 
 
 def test_misalignment_moves_the_pattern_lengthwise():
-    """Directions implied by the convention of geometry.assembly (ΔE increases the offset,
+    """Directions implied by the convention of geometry.pair.assembly (ΔE increases the offset,
     ΔP moves the pinion away from the mesh, ΔΣ increases the shaft angle), on the crowned
     hypoid (13/42, right-hand gear): (ΔE, ΔP) = (−0.08, +0.10) mm moves the mean contact to
     the heel, (+0.15, −0.10) mm to the toe, ΔE = +0.05 mm with ΔΣ = +4′ to the toe, each by
@@ -246,7 +247,7 @@ def test_contact_line_length_matches_the_contact_ellipse():
     """At the roll of the lowest UTE (interior contact) the unloaded contact line within
     6.3 µm equals the major axis of the conventional contact ellipse, √(8δ/κ_min) (seed
     §2.3.1, Eq. 2.15–2.18), with κ_min the smaller principal relative curvature of pinion and
-    gear (geometry.curvature) at the conventional TCA's contact point, within 5 % (the
+    gear (geometry.machine.curvature) at the conventional TCA's contact point, within 5 % (the
     ellipse assumes constant relative curvature along a straight line; over a ~10 mm line
     on these flanks that is good to a few %; measured 0.7 %)."""
     case = _crowned()
@@ -358,7 +359,7 @@ def _default_contact_u(mis=None):
 def test_misalignment_response_of_the_seed_11x41_pair():
     """Seed §2.4, Fig. 2.11 on its 11×41 pair (our synthesised case): (b) ΔE 0.08, ΔP 0.10
     mm → toe; (c) ΔE 0.15, ΔP 0.10 → heel; (d) ΔE 0.05 with ΔΣ 4′ → toe. The extraction
-    lost the signs; in this toolkit's convention (geometry.assembly) the three patterns are
+    lost the signs; in this toolkit's convention (geometry.pair.assembly) the three patterns are
     reproduced by (ΔE, ΔP) = (+0.08, ±0.10) → toe, (−0.15, +0.10) → heel and (+0.05,
     ΔΣ +4′) → toe (measured −13/−10 %, +27 %, −12 % of the face width; threshold 2 %, a
     quarter of the smallest move), and ΔΣ = +4′ alone moves the pattern the same way as

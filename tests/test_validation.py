@@ -1,4 +1,4 @@
-"""Tests of geometry.validation: the one set of input validators and their one message style.
+"""Tests of geometry.core.validation: the one set of input validators and their one message style.
 
 Every refusal is an :class:`InputError` reading ``<field>: must be <accepted> [<unit>], got
 <value>``; each validator accepts its boundary values where the bound is closed and refuses
@@ -14,8 +14,8 @@ import re
 import numpy as np
 import pytest
 
-from geometry.errors import InputError
-from geometry.validation import (
+from geometry.core.errors import InputError
+from geometry.core.validation import (
     broadcast,
     integer,
     one_of,

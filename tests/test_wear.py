@@ -11,11 +11,10 @@ import pytest
 from scipy.stats import qmc
 
 from contact.cli import main
-from contact.deviation_files import read_deviations
-from contact.io import read_netcdf
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.pipeline import resolve_case, run_analysis
 from contact.utca import unloaded_tca
+from contact.utca.deviation_files import read_deviations
 from contact.utca.easeoff import ease_off
 from contact.wear import (
     archard_depth,
@@ -26,8 +25,9 @@ from contact.wear import (
     passage_wear,
     simulate_wear,
 )
-from geometry.assembly import Misalignment
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.core.io import read_netcdf
+from geometry.pair.assembly import Misalignment
 
 CASE = "kolivand2009_fm_11x41"
 #: light LTCA settings: the wear loop's identities hold at any discretisation

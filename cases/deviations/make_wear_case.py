@@ -41,7 +41,7 @@ log = logging.getLogger(__name__)
 
 def write_grid(name: str, u: np.ndarray, v: np.ndarray, values: np.ndarray,
                comment: str) -> None:
-    """One grid as the CSV of :func:`contact.deviation_files.read_deviation_csv` (mm, 1 nm
+    """One grid as the CSV of :func:`contact.utca.deviation_files.read_deviation_csv` (mm, 1 nm
     resolution)."""
     lines = [f"# {comment}", "# normal deviation [mm], positive = material added",
              "v\\u," + ",".join(f"{x:.4f}" for x in u)]

@@ -13,7 +13,7 @@ from contact.commands.options import (
     rolls_per_cycle_option,
     torque_option,
 )
-from contact.output_paths import check_output_file
+from contact.commands.output_paths import check_output_file
 from geometry import __version__
 
 #: Place in ``ltca --help``.
@@ -69,14 +69,14 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
-    from contact.io import write_netcdf
     from contact.qp.benchmark_problems import standard_problem_set
     from contact.qp.solver_study import compare_solvers, default_study_solvers, summarize
+    from geometry.core.io import write_netcdf
 
     if args.output:
         check_output_file(args.output)
     if args.case is not None and args.problems is not None:
-        from geometry.errors import InputError
+        from geometry.core.errors import InputError
 
         raise InputError("--problems: give either a CASE or --problems DIR, not both")
     if args.problems is not None:

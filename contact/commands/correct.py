@@ -2,8 +2,8 @@
 
 Reads the case and the measured normal deviations of the pinion and gear flanks in contact
 (CSV or netCDF, as ``ltca run --deviations``), computes per member the setting changes that
-cancel them (:func:`geometry.correction.corrective_settings`), prints a table per flank and
-writes the corrected case (atomically, with a ``[correction]`` table saying where it came
+cancel them (:func:`geometry.synthesis.correction.corrective_settings`), prints a table per flank
+and writes the corrected case (atomically, with a ``[correction]`` table saying where it came
 from). See ``docs/correction.md``.
 """
 
@@ -21,19 +21,20 @@ from contact.commands.options import (
     flank_option,
     output_option,
 )
-from contact.output_paths import check_output_file
+from contact.commands.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 35
 
-_HEADER = ("# Written by `ltca correct` (geometry.correction): {case} with corrective machine "
-           "settings\n# from the measured deviations {files}; see the [correction] table and "
+_HEADER = ("# Written by `ltca correct` (geometry.synthesis.correction): {case} with "
+           "corrective machine settings\n# from the measured deviations {files}; see the "
+           "[correction] table and "
            "docs/correction.md.\n")
 
 
 def register(sub) -> None:
     """Add the sub-command to an ``argparse`` sub-parser collection."""
-    from geometry.correction import COND_MAX, DEFAULT_VARIABLES, SETTING_VARIABLES
+    from geometry.synthesis.correction import COND_MAX, DEFAULT_VARIABLES, SETTING_VARIABLES
 
     defaults = "; ".join(f"{proc}: {' '.join(names)}" for proc, names in
                          DEFAULT_VARIABLES.items())
@@ -70,8 +71,8 @@ def register(sub) -> None:
 
 
 def _bounds(raw: list[list[str]]) -> dict[str, tuple[float, float]]:
-    from geometry.correction import SETTING_VARIABLES
-    from geometry.errors import InputError
+    from geometry.core.errors import InputError
+    from geometry.synthesis.correction import SETTING_VARIABLES
 
     out = {}
     for name, low, high in raw:
@@ -110,12 +111,12 @@ def _table(c) -> str:
 
 def run_correct(args: argparse.Namespace) -> int:
     from contact.commands.synthesize import write_text_atomic
-    from contact.deviation_files import read_deviations
     from contact.pipeline import resolve_case
+    from contact.utca.deviation_files import read_deviations
     from contact.utca.easeoff import FLANK_ROLES, MATING_FLANK
     from geometry.case import case_from_dict
-    from geometry.correction import corrected_case, corrective_settings
-    from geometry.errors import InputError
+    from geometry.core.errors import InputError
+    from geometry.synthesis.correction import corrected_case, corrective_settings
 
     output = default_output(args, "_corrected.toml")
     check_output_file(output, create_parents=True)

@@ -20,7 +20,7 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
-from contact.output_paths import check_output_dir, check_output_file
+from contact.commands.output_paths import check_output_dir, check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 15
@@ -60,11 +60,11 @@ def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.commands.run import ltca_options
-    from contact.io import write_netcdf
     from contact.pipeline import efficiency_map, resolve_case
     from contact.plots import plot_efficiency_map
     from contact.plots.style import misalignment_text
     from friction.operating import OperatingConditions
+    from geometry.core.io import write_netcdf
 
     output = default_output(args, "_efficiency_map.nc")
     check_output_file(output)

@@ -25,7 +25,7 @@ from contact.commands.options import (
     rolls_per_cycle_option,
     torque_option,
 )
-from contact.output_paths import check_output_dir
+from contact.commands.output_paths import check_output_dir
 from geometry import __version__
 
 __all__ = ["DEFAULT_TORQUES", "case_problems", "export_problems", "register", "run"]
@@ -51,7 +51,7 @@ def case_problems(name: str, torques: Sequence[float], misalignment=None,
         Bundled case name or case file.
     torques : sequence of float — [N·m]
         Pinion torques.
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         Replaces the case's own (default: the case's).
     options : contact.ltca.LTCAOptions, optional
 
@@ -60,10 +60,10 @@ def case_problems(name: str, torques: Sequence[float], misalignment=None,
     list of contact.qp.benchmark_problems.TestProblem
         As :func:`contact.ltca.ltca_problems`.
     """
-    from contact.deviation_files import read_deviations
     from contact.ltca import ltca_problems
     from contact.pipeline import resolve_case
     from contact.utca import ease_off
+    from contact.utca.deviation_files import read_deviations
     from contact.utca.deviations import apply_deviations
 
     case = resolve_case(name)
@@ -96,7 +96,7 @@ def export_problems(cases: Sequence[str], directory: str | Path, *,
         Created if missing; files of the same names are replaced.
     torques : sequence of float — [N·m]
         Pinion torques (default :data:`DEFAULT_TORQUES`).
-    misalignments : mapping of str to geometry.assembly.Misalignment, optional
+    misalignments : mapping of str to geometry.pair.assembly.Misalignment, optional
         Label → misalignment; default ``aligned`` (none) and ``misaligned`` (the seed's
         Table 3.1: ΔE = −0.15 mm, ΔP = +0.12 mm, :data:`contact.pipeline.SEED_TABLE_3_1`).
     options : contact.ltca.LTCAOptions, optional
@@ -120,7 +120,7 @@ def export_problems(cases: Sequence[str], directory: str | Path, *,
     from contact.ltca.options import json_options
     from contact.pipeline import SEED_TABLE_3_1
     from contact.qp.problem_files import write_manifest, write_problem
-    from geometry.assembly import Misalignment
+    from geometry.pair.assembly import Misalignment
 
     opts = options or LTCAOptions()
     mis = dict(misalignments or {"aligned": Misalignment(),
@@ -194,7 +194,7 @@ def run(args: argparse.Namespace) -> int:
     """Export the problems and print where they went."""
     from contact.ltca import LTCAOptions
     from contact.pipeline import SEED_TABLE_3_1, bundled_cases
-    from geometry.assembly import Misalignment
+    from geometry.pair.assembly import Misalignment
 
     check_output_dir(args.output, option="-o")
     misaligned = misalignment_from_args(args, SEED_TABLE_3_1["misalignment"])

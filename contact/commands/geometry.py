@@ -12,7 +12,7 @@ from contact.commands.options import (
     output_option,
     plots_option,
 )
-from contact.output_paths import check_output_dir, check_output_file
+from contact.commands.output_paths import check_output_dir, check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 20
@@ -50,7 +50,7 @@ def geometry_tree(case, nu: int = 41, nv: int = 21):
     """All four flanks of a case as an ``xarray.DataTree`` (``/pinion/concave`` …)."""
     import xarray as xr
 
-    from geometry.flank import geometry_datasets
+    from geometry.machine.flank import geometry_datasets
 
     sets = geometry_datasets(case, nu=nu, nv=nv)
     tree = {"/": xr.Dataset(attrs={"case": case.name, "title": "tooth surfaces"})}
@@ -59,8 +59,8 @@ def geometry_tree(case, nu: int = 41, nv: int = 21):
 
 
 def run_geometry(args: argparse.Namespace) -> int:
-    from contact.io import write_netcdf
     from contact.pipeline import resolve_case
+    from geometry.core.io import write_netcdf
 
     output = default_output(args, "_geometry.nc")
     check_output_file(output)
@@ -77,7 +77,7 @@ def run_geometry(args: argparse.Namespace) -> int:
 
 def run_plot_geometry(args: argparse.Namespace) -> int:
     from contact.pipeline import resolve_case
-    from geometry.flank import flank_surface
+    from geometry.machine.flank import flank_surface
     from geometry.plot import plot_flanks_in_mesh, plot_projection_grid
 
     check_output_dir(args.plots, option="--plots")

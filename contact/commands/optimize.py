@@ -17,7 +17,7 @@ import tomllib
 from pathlib import Path
 
 from contact.commands import options
-from contact.output_paths import check_output_file
+from contact.commands.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 36
@@ -93,15 +93,15 @@ def _start(arg: str | None):
     path = Path(arg) if arg is not None else None
     if path is not None and path.is_file():
         from geometry.case import read_toml
-        from geometry.errors import InputError
+        from geometry.core.errors import InputError
 
         try:
             raw = read_toml(path, "case file")
         except InputError:
             raw = {}  # resolve_case reports it
         if isinstance(raw.get("design"), dict):
-            from geometry.basic_design import load_basic
-            from geometry.synthesis import synthesize
+            from geometry.synthesis.basic_design import load_basic
+            from geometry.synthesis.flank_synthesis import synthesize
 
             basic = load_basic(path)
             return synthesize(basic)[0], basic
@@ -129,16 +129,16 @@ def run_optimize(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.commands.synthesize import write_text_atomic
-    from contact.io import write_netcdf
     from contact.optimize import (
         DesignVariable,
         optimize,
         optimized_case,
         problem_from_table,
     )
-    from geometry.assembly import Misalignment
     from geometry.case import case_from_dict
-    from geometry.errors import InputError
+    from geometry.core.errors import InputError
+    from geometry.core.io import write_netcdf
+    from geometry.pair.assembly import Misalignment
 
     out = check_output_file(options.default_output(args, "_optimized.toml"),
                             create_parents=True)

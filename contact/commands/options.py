@@ -136,7 +136,7 @@ def resolve_analysis_file(arg: str | None) -> Path:
         Neither exists (the message says which command writes it).
     """
     from contact.pipeline import DEFAULT_CASE
-    from geometry.errors import InputError
+    from geometry.core.errors import InputError
 
     name = arg if arg is not None else DEFAULT_CASE.removesuffix(".toml")
     path = Path(name)
@@ -190,15 +190,15 @@ def misalignment_from_args(args: argparse.Namespace, base):
     ----------
     args : argparse.Namespace
         With ``dE``, ``dP``, ``dG``, ``dSigma`` (None: not given).
-    base : geometry.assembly.Misalignment or None
+    base : geometry.pair.assembly.Misalignment or None
         The values of the options not given (None: aligned).
 
     Returns
     -------
-    geometry.assembly.Misalignment or None
+    geometry.pair.assembly.Misalignment or None
         ``base`` when no option is given.
     """
-    from geometry.assembly import Misalignment
+    from geometry.pair.assembly import Misalignment
 
     given = {opt: getattr(args, opt, None) for opt in MISALIGNMENT_OPTIONS}
     if all(v is None for v in given.values()):

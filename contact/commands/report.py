@@ -9,7 +9,7 @@ from contact.commands.options import (
     output_option,
     resolve_analysis_file,
 )
-from contact.output_paths import check_output_file
+from contact.commands.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 12
@@ -33,8 +33,8 @@ def register(sub) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from contact.io import read_netcdf
     from contact.plots.report import write_report
+    from geometry.core.io import read_netcdf
 
     path = resolve_analysis_file(args.file)
     output = args.output or path.with_suffix(".html").name

@@ -24,7 +24,7 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
-from contact.output_paths import check_output_dir, check_output_file
+from contact.commands.output_paths import check_output_dir, check_output_file
 
 __all__ = ["TE_TABLE_HEADERS", "deviation_te_rows", "misalignment_from_args", "plot", "register",
            "run", "write_figures"]
@@ -153,8 +153,8 @@ def ltca_options(args: argparse.Namespace, **defaults):
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
-    from contact.io import write_netcdf
     from contact.pipeline import operating_conditions, resolve_case, run_analysis
+    from geometry.core.io import write_netcdf
 
     output = default_output(args)
     check_output_file(output)
@@ -169,7 +169,7 @@ def run(args: argparse.Namespace) -> int:
     if args.no_deviations:
         devs = False
     elif args.deviations:
-        # file paths: run_analysis reads them (contact.deviation_files.read_deviations)
+        # file paths: run_analysis reads them (contact.utca.deviation_files.read_deviations)
         devs = tuple(None if f == "-" else f for f in args.deviations)
     operating = operating_conditions(
         case, pinion_speed=args.speed, lubricant=args.lubricant, temperature=args.temperature,
@@ -270,10 +270,10 @@ def write_figures(path: Path, plots: str | None, report: str | None,
     figure once."""
     if not plots and not report:
         return
-    from contact.io import read_netcdf
     from contact.plots import render_analysis
     from contact.plots.report import write_report
-    from geometry.atomic_files import atomic_path
+    from geometry.core.atomic_files import atomic_path
+    from geometry.core.io import read_netcdf
 
     tree = read_netcdf(path, tree=True)
     figures = []
@@ -292,8 +292,8 @@ def write_figures(path: Path, plots: str | None, report: str | None,
 
 
 def plot(args: argparse.Namespace) -> int:
-    from contact.io import read_netcdf
     from contact.plots import plot_analysis
+    from geometry.core.io import read_netcdf
 
     path = resolve_analysis_file(args.file)
     check_output_dir(args.plots)

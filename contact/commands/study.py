@@ -27,8 +27,8 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
-from contact.output_paths import check_output_dir, check_output_file
-from geometry.errors import InputError
+from contact.commands.output_paths import check_output_dir, check_output_file
+from geometry.core.errors import InputError
 
 #: Place in ``ltca --help``.
 ORDER = 45

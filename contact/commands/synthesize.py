@@ -7,14 +7,14 @@ import math
 from pathlib import Path
 
 from contact.commands.options import output_option
-from contact.output_paths import check_output_file
-from geometry.atomic_files import atomic_path
+from contact.commands.output_paths import check_output_file
+from geometry.core.atomic_files import atomic_path
 
 #: Place in ``ltca --help``.
 ORDER = 30
 
-_HEADER = ("# Written by `ltca synthesize {basic}` (geometry.synthesis: ISO 23509 blank, "
-           "Formate gear,\n# pinion by Litvin local synthesis); see `source` and "
+_HEADER = ("# Written by `ltca synthesize {basic}` (geometry.synthesis.flank_synthesis: "
+           "ISO 23509 blank, Formate gear,\n# pinion by Litvin local synthesis); see `source` and "
            "docs/synthesis.md. Do not edit by hand.\n")
 
 
@@ -56,7 +56,7 @@ def resolve_basic(arg: str | None) -> Path:
         Neither a file nor a bundled name (the message lists the bundled ones).
     """
     from contact.pipeline import DEFAULT_CASE, bundled_case_path
-    from geometry.errors import InputError
+    from geometry.core.errors import InputError
 
     name = DEFAULT_CASE if arg is None else arg
     if Path(name).is_file():
@@ -80,9 +80,9 @@ def write_text_atomic(path: Path, text: str) -> Path:
 def run_synthesize(args: argparse.Namespace) -> int:
     import tomllib
 
-    from geometry.basic_design import load_basic
     from geometry.case import case_from_dict
-    from geometry.synthesis import synthesize
+    from geometry.synthesis.basic_design import load_basic
+    from geometry.synthesis.flank_synthesis import synthesize
 
     source = resolve_basic(args.basic)
     output = args.output or f"{source.stem}.toml"

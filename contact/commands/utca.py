@@ -17,7 +17,7 @@ from contact.commands.options import (
     plots_option,
     rolls_per_cycle_option,
 )
-from contact.output_paths import check_output_dir, check_output_file
+from contact.commands.output_paths import check_output_dir, check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 40
@@ -52,9 +52,9 @@ def run_utca(args: argparse.Namespace) -> int:
     """Run the UTCA, print a summary, write netCDF and plots as asked."""
     import xarray as xr
 
-    from contact.io import write_netcdf
     from contact.pipeline import MISALIGNMENT_REFERENCE, misalignment_attrs, resolve_case
     from contact.utca import unloaded_tca
+    from geometry.core.io import write_netcdf
 
     output = default_output(args, "_utca.nc")
     check_output_file(output)

@@ -18,7 +18,7 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
-from contact.output_paths import check_output_file
+from contact.commands.output_paths import check_output_file
 
 #: pinion torque of ``ltca wear`` without ``--torque`` [N·m] (the seed's Table 4.2)
 WEAR_TORQUE = 200.0
@@ -64,10 +64,10 @@ def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.commands.run import ltca_options
-    from contact.deviation_files import write_deviation_netcdf
-    from contact.io import write_netcdf
     from contact.pipeline import resolve_case
+    from contact.utca.deviation_files import write_deviation_netcdf
     from contact.wear import final_deviations, simulate_wear
+    from geometry.core.io import write_netcdf
 
     output = default_output(args, "_wear.nc")
     check_output_file(output)

@@ -71,8 +71,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from geometry.errors import InputError
-from geometry.validation import broadcast, real, real_array
+from geometry.core.errors import InputError
+from geometry.core.validation import broadcast, real, real_array
 
 __all__ = [
     "SAINSOT_COEFFICIENTS",
@@ -97,7 +97,7 @@ SAINSOT_COEFFICIENTS: dict[str, tuple[float, float, float, float, float, float]]
 
 
 def _pos(name: str, value: float, unit: str, upper: float | None = None) -> float:
-    """value in (0, upper) [unit] (upper excluded), by :func:`geometry.validation.real`."""
+    """value in (0, upper) [unit] (upper excluded), by :func:`geometry.core.validation.real`."""
     return real(name, value, unit=unit, low=0.0, high=upper, low_open=True, high_open=True)
 
 

@@ -50,11 +50,11 @@ from contact.compliance.tooth import (
     weber_depth,
 )
 from contact.compliance.weber import weber_compliance
-from geometry.assembly import Misalignment, case_transforms
 from geometry.case import case_from_dict
-from geometry.errors import InputError
-from geometry.hertz import STEEL
-from geometry.validation import integer, real, real_array
+from geometry.core.errors import InputError
+from geometry.core.hertz import STEEL
+from geometry.core.validation import integer, real, real_array
+from geometry.pair.assembly import Misalignment, case_transforms
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -101,7 +101,7 @@ class ContactSegments:
     load : array_like (N,) or float — [N] segment loads F ≥ 0 at which Weber's
         contact compliance is linearised (secant δ(F)/F)
     pinion_rotation, gear_rotation : float — [rad] member rotations of this roll
-        position about their own axes, as in :func:`geometry.assembly.case_transforms`
+        position about their own axes, as in :func:`geometry.pair.assembly.case_transforms`
 
     Raises
     ------

@@ -48,8 +48,8 @@ from scipy import linalg
 
 from contact.compliance._basis import face_basis, height_basis
 from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
-from geometry.errors import InputError, LTCAError, ModelUnavailableError
-from geometry.validation import integer, one_of, positive, real, real_array
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.validation import integer, one_of, positive, real, real_array
 
 __all__ = [
     "THEORIES",

@@ -1,7 +1,7 @@
 """The shell compliance model of a GENERATED tooth: dimensions, coordinates, normals.
 
 Connects the Rayleigh–Ritz shell of :mod:`contact.compliance.shell` (seed §3.2,
-Eq. 3.1–3.11) to the tooth surfaces that :mod:`geometry.flank` generates from the
+Eq. 3.1–3.11) to the tooth surfaces that :mod:`geometry.machine.flank` generates from the
 machine settings, so that the LTCA can build the compliance of real contact
 segments. Per member it measures, on the generated flanks of one tooth,
 
@@ -31,7 +31,7 @@ Shell coordinates
 A point of the tooth is turned about the member axis by whole pitches onto the
 reference tooth and projected along the mid-surface normal onto the tooth's
 mid-surface (the shell's z = 0); its foot is located by the blank's bilinear
-projection-plane fractions (u, v) of :func:`geometry.flank.projection_grid` (u toe
+projection-plane fractions (u, v) of :func:`geometry.machine.flank.projection_grid` (u toe
 → heel, v root cone → face cone). Then
 
     θ = (arc length from the toe, along the mid-height lengthwise curve, of the
@@ -94,12 +94,12 @@ from contact.compliance.shell import (
     compliance_blocks,
 )
 from contact.compliance.shell import as_points as as_shell_points
-from geometry.cutter import working_sections
-from geometry.errors import InputError, LTCAError
-from geometry.flank import blank_outline, flank_surface, projection_fractions
-from geometry.hertz import STEEL
-from geometry.meshing import solve_envelope
-from geometry.validation import integer, positive, real, real_array
+from geometry.core.errors import InputError, LTCAError
+from geometry.core.hertz import STEEL
+from geometry.core.validation import integer, positive, real, real_array
+from geometry.machine.cutter import working_sections
+from geometry.machine.flank import blank_outline, flank_surface, projection_fractions
+from geometry.machine.meshing import solve_envelope
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -145,7 +145,7 @@ RADIUS_SOURCES = ("auto", "measured", "point")
 #: depth (a discretised contact curve's last segment); they are clipped onto the tooth
 END_TOLERANCE = 0.05
 
-_MIRROR = np.array([1.0, -1.0, 1.0])  # left hand = mirror y → −y (geometry.flank)
+_MIRROR = np.array([1.0, -1.0, 1.0])  # left hand = mirror y → −y (geometry.machine.flank)
 _FIT_DEGREE = (6, 4)  # Legendre degrees in (u, v) of the flank-angle fits
 _TRAJ_STEPS = 4  # RK4 steps along an orthogonal trajectory: error < 2e-8 in u (~1 nm of
 #                  face width; the seed case's compliance moves by < 1e-9 relative, the LTE
@@ -177,7 +177,7 @@ class ToothModelData:
     concave_shift : int — [1] k: the tooth's concave flank is the reference
         concave flank turned by k · 2π/z about the member axis
     corners : ndarray (2, 2, 2) — [mm] projection-plane corners [u][v] = (z, ρ)
-        of the blank (:func:`geometry.flank.blank_outline`)
+        of the blank (:func:`geometry.machine.flank.blank_outline`)
     angle_coef : ndarray (2, 7, 5) — [rad] Legendre coefficients in (2u − 1, 2v − 1)
         of the angular positions about the member axis of the tooth's convex (0) and
         concave (1) flanks
@@ -1045,7 +1045,7 @@ def shell_coordinates(
     normals : array_like (N, 3), optional — [1] outward unit normals of the flank
         at the points (out of the member's material), same frame as ``points``
     transform : array_like (4, 4), optional — the member → pair transform of the
-        roll position (:func:`geometry.assembly.member_transform` with the
+        roll position (:func:`geometry.pair.assembly.member_transform` with the
         member's rotation and the misalignments); ``None``: member frame
     tolerance : float — [1] how far (as a fraction of the face width / depth)
         a point's projection-plane place may lie outside the blank and still be
@@ -1247,8 +1247,8 @@ def flank_points(data: ToothModelData, x, theta, side) -> tuple[np.ndarray, np.n
     height, :func:`shell_coordinates`); then a fixed-point iteration on the
     projection-plane place (axial position, radius) of the flank point until its
     foot is (u, v) to 1e-12, each flank point solved by the equation of meshing
-    (seed Eq. 2.7a–2.8, :func:`geometry.meshing.solve_envelope`; a left-hand member
-    is the mirror image y → −y, as in :func:`geometry.flank.flank_surface`). Each
+    (seed Eq. 2.7a–2.8, :func:`geometry.machine.meshing.solve_envelope`; a left-hand member
+    is the mirror image y → −y, as in :func:`geometry.machine.flank.flank_surface`). Each
     point is solved on its own with a coarse search, so this is for checks and
     plots, not for the roll loop.
     """

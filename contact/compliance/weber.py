@@ -58,9 +58,9 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.hertz import contact_modulus, hertz_line_contact
-from geometry.validation import positive, real, real_array
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.hertz import contact_modulus, hertz_line_contact
+from geometry.core.validation import positive, real, real_array
 
 __all__ = [
     "WEBER_COMPLIANCE_KINDS",
@@ -108,7 +108,7 @@ def hertz_half_width(
     Notes
     -----
     Johnson (1985) Eq. 4.43 with E* of :func:`contact_modulus`: the half-width of
-    :func:`geometry.hertz.hertz_line_contact`, the toolkit's one Hertz line contact.
+    :func:`geometry.core.hertz.hertz_line_contact`, the toolkit's one Hertz line contact.
     """
     w = real_array("load_per_length", load_per_length, unit="N/mm", low=0.0, low_open=True)
     r = real_array("r_eq", r_eq, unit="mm", low=0.0, low_open=True)

@@ -2,7 +2,7 @@
 
 R_eq = 1/κ_rel, κ_rel(w) = κ_p(w) + κ_g(w) along w = n × t (t the contact line's tangent),
 each member's normal curvature from its principal curvatures (Euler), evaluated on the
-real surfaces (:func:`geometry.flank.flank_at`) at the segment midpoints (seed Eq. 2.13).
+real surfaces (:func:`geometry.machine.flank.flank_at`) at the segment midpoints (seed Eq. 2.13).
 The envelope solves start from the nearest ease-off node's envelope parameters.
 
 Public functions
@@ -18,9 +18,9 @@ from scipy.interpolate import RectBivariateSpline
 
 from contact.ltca.discretisation import gear_to_pair
 from contact.utca import EaseOff
-from geometry.assembly import rotate_about_axis
-from geometry.curvature import normal_curvature
-from geometry.flank import blank_outline, flank_at, projection_fractions
+from geometry.machine.curvature import normal_curvature
+from geometry.machine.flank import blank_outline, flank_at, projection_fractions
+from geometry.pair.assembly import rotate_about_axis
 
 __all__ = ["gear_curvature", "pinion_curvature"]
 

@@ -28,8 +28,8 @@ from contact.ltca.segments import Segments
 from contact.ltca.transmission_error import transmission_error_summary
 from contact.qp.problem import RESIDUALS
 from geometry import __version__
-from geometry.conventions import binary_flag
-from geometry.conventions import data_var as _var
+from geometry.core.conventions import binary_flag
+from geometry.core.conventions import data_var as _var
 
 __all__ = ["json_misalignment", "ltca_dataset"]
 
@@ -310,6 +310,6 @@ def _edge_loaded(loaded: np.ndarray, valid: np.ndarray) -> np.ndarray:
 
 def json_misalignment(m) -> str:
     """A Misalignment as JSON text, names with units (ΔE, ΔP, ΔG [mm], ΔΣ [deg]:
-    :meth:`geometry.assembly.Misalignment.labelled`), as the UTCA datasets record it."""
+    :meth:`geometry.pair.assembly.Misalignment.labelled`), as the UTCA datasets record it."""
 
     return json.dumps(m.labelled())

@@ -23,8 +23,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from geometry.assembly import rotate_about_axis
-from geometry.flank import blank_outline, projection_fractions
+from geometry.machine.flank import blank_outline, projection_fractions
+from geometry.pair.assembly import rotate_about_axis
 
 __all__ = ["MIN_CLIP", "SegmentFields", "SegmentQuadratic", "blank_measure", "fill_rows",
            "gear_to_pair"]

@@ -51,8 +51,8 @@ from contact.ltca.discretisation import (
     gear_to_pair,
 )
 from contact.utca import EaseOff
-from geometry.assembly import rotate_about_axis
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.pair.assembly import rotate_about_axis
 
 __all__ = ["EDGE_KINDS", "FlankBoundary", "edge_r_eq", "edge_segments", "flank_boundary"]
 

@@ -46,7 +46,7 @@ edges' rounding radius r_e; they follow the curve segments along the ``segment``
 R_eq across the contact line: κ_rel(w) = κ_p(w) + κ_g(w) along w = n × t (t the
 contact-line tangent), each member's normal curvature from its principal curvatures
 (Euler), evaluated on the real surfaces at the segment midpoints
-(:func:`geometry.flank.flank_at`); R_eq = 1/κ_rel (seed Eq. 2.13).
+(:func:`geometry.machine.flank.flank_at`); R_eq = 1/κ_rel (seed Eq. 2.13).
 """
 
 from __future__ import annotations
@@ -67,9 +67,9 @@ from contact.ltca.segments import segment_geometry
 from contact.qp import ContactProblem
 from contact.utca import EaseOff, ease_off
 from contact.utca import transitions as _transitions
-from geometry.assembly import Misalignment
-from geometry.errors import InputError
-from geometry.validation import real_array
+from geometry.core.errors import InputError
+from geometry.core.validation import real_array
+from geometry.pair.assembly import Misalignment
 
 __all__ = ["loaded_tca", "ltca_problems"]
 
@@ -100,7 +100,7 @@ def loaded_tca(
         Pinion torques T_p (> 0), the seed's operating variable (Fig. 3.6, Table 3.1).
         The contact problem carries the gear torque T_g = T_p z_g/z_p (static and
         lossless: friction enters only in the efficiency stage).
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own.
     flank : str, optional
         ``"drive"`` (default) or ``"coast"``.

@@ -19,9 +19,9 @@ import numpy as np
 
 from contact.qp.solvers import DEFAULT_SOLVER, get_backend
 from contact.utca import CURVE_SPACINGS, EaseOff
-from geometry.errors import InputError
-from geometry.hertz import STEEL
-from geometry.validation import integer, one_of, positive, real
+from geometry.core.errors import InputError
+from geometry.core.hertz import STEEL
+from geometry.core.validation import integer, one_of, positive, real
 
 if TYPE_CHECKING:
     from geometry.case import Case

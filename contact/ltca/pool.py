@@ -19,7 +19,7 @@ import numpy as np
 from contact.compliance.mesh import ContactSegments, mesh_compliance_many, pair_compliance_model
 from contact.ltca.options import LTCAOptions
 from contact.ltca.segments import Segments
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = ["CompliancePool"]
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from contact.qp import ContactSolution
 from contact.qp.problem import RESIDUALS
-from geometry.hertz import hertz_line_contact
+from geometry.core.hertz import hertz_line_contact
 
 __all__ = ["RollResults"]
 
@@ -105,7 +105,7 @@ class RollResults:
                      segments: np.ndarray, length: np.ndarray, r_eq: np.ndarray,
                      modulus: float) -> None:
         """The loads of a certified solution and their Hertz line contact
-        (:func:`geometry.hertz.hertz_line_contact`, contact modulus ``modulus`` [MPa]) on
+        (:func:`geometry.core.hertz.hertz_line_contact`, contact modulus ``modulus`` [MPa]) on
         the segments (N,) of lengths ``length`` and radii ``r_eq`` [mm]."""
         F = solution.force
         self.rotation[it, j] = solution.rotation

@@ -33,8 +33,8 @@ from contact.ltca.screening import SCREEN_ROUNDS, Screening, carried_torque
 from contact.ltca.segments import Segments
 from contact.ltca.weber import RollSelection, WeberSolution, even_share, weber_solve
 from contact.qp import ContactProblem
-from geometry.errors import InputError
-from geometry.hertz import contact_modulus
+from geometry.core.errors import InputError
+from geometry.core.hertz import contact_modulus
 
 __all__ = ["RollProblem", "solve_rolls"]
 

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact.ltca.segments import Segments
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = ["SCREEN_MARGIN", "SCREEN_PAD", "SCREEN_ROUNDS", "Screening", "carried_torque",
            "generous_limit"]

@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = ["mesh_harmonics", "transmission_error_summary"]
 

@@ -119,7 +119,7 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     options : LTCAOptions
         ``solver``, ``weber_tolerance`` [µrad], ``max_weber_iterations``, materials.
     modulus : float — [MPa]
-        Contact modulus E* of the pair (:func:`geometry.hertz.contact_modulus`), for the
+        Contact modulus E* of the pair (:func:`geometry.core.hertz.contact_modulus`), for the
         load cap.
     prior : ndarray (N,), optional — [N]
         Forces of a neighbouring solution (NaN where unknown): the solver's warm start.

@@ -42,10 +42,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from contact.ltca import LTCAOptions
-from geometry.assembly import Misalignment
 from geometry.case import Case
-from geometry.errors import InputError
-from geometry.validation import real
+from geometry.core.errors import InputError
+from geometry.core.validation import real
+from geometry.pair.assembly import Misalignment
 
 __all__ = ["FAILED_OBJECTIVE", "TERM_NAMES", "Evaluation", "OptimizeProblem",
            "constraint_names", "evaluate_design", "problem_from_table"]

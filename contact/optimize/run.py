@@ -51,11 +51,11 @@ from contact.optimize.variables import (
 )
 from contact.study.engine import open_client, run_tasks
 from geometry import __version__
-from geometry.basic_design import BasicDesign
 from geometry.case import Case
-from geometry.conventions import data_var
-from geometry.errors import InputError
-from geometry.validation import real
+from geometry.core.conventions import data_var
+from geometry.core.errors import InputError
+from geometry.core.validation import real
+from geometry.synthesis.basic_design import BasicDesign
 
 __all__ = ["METHODS", "OptimizeResult", "SharedDesign", "optimize", "optimized_case"]
 
@@ -254,13 +254,13 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
     seed : int or None
         DE random seed (reproducible runs).
     relief_start : float
-        Where relief variables start (:func:`geometry.relief.relieved_blade`).
+        Where relief variables start (:func:`geometry.machine.relief.relieved_blade`).
     scheduler, n_workers
         Where designs are analysed (:func:`contact.study.engine.open_client`): None a
         LocalCluster, ``"synchronous"`` this process.
     progress : bool
         tqdm progress bar over the evaluations.
-    basic : geometry.basic_design.BasicDesign, optional
+    basic : geometry.synthesis.basic_design.BasicDesign, optional
         The basic design ``case`` was synthesised from: its flank prescriptions
         (:data:`contact.optimize.variables.SYNTHESIS_VARIABLES`, and the relief) may be
         variables; each design is then re-synthesised.

@@ -1,18 +1,18 @@
 """The design variables of a machine-setting optimisation and how they change a case.
 
 A variable is a setting of the pinion flank's tools — any name of
-:data:`geometry.correction.SETTING_VARIABLES` (machine settings, modified roll 2C…120F,
+:data:`geometry.synthesis.correction.SETTING_VARIABLES` (machine settings, modified roll 2C…120F,
 helical motion H1…H4, vertical motion V1…V4, blade angle, point radius), in its case-file
 unit — or a profile relief (``tip_relief``, ``root_relief`` [µm], made by the blade's
-flankrem and toprem, :func:`geometry.relief.relieved_blade`). Values are handled in file
+flankrem and toprem, :func:`geometry.machine.relief.relieved_blade`). Values are handled in file
 units (deg, mm, µm, 1/rad …) so bounds read as engineers write them.
 
-When the start is a basic design (:class:`geometry.basic_design.BasicDesign`, a
+When the start is a basic design (:class:`geometry.synthesis.basic_design.BasicDesign`, a
 ``cases/basic`` file), the local-synthesis inputs of the optimised flank are variables too
 (:data:`SYNTHESIS_VARIABLES`: path angle, TE level, ellipse length, elastic approach,
 relief start — and the relief, then a synthesis input): every design is then
-re-synthesised (:func:`geometry.synthesis.synthesize`, ≈ 6 s) before its settings are
-set, so the flank keeps the synthesis' contact path, TE and ellipse at M (Litvin &
+re-synthesised (:func:`geometry.synthesis.flank_synthesis.synthesize`, ≈ 6 s) before its settings
+are set, so the flank keeps the synthesis' contact path, TE and ellipse at M (Litvin &
 Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., ch. 9; seed future work (iv)).
 
 Public functions
@@ -36,23 +36,23 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from geometry.basic_design import (
+from geometry.case import Case
+from geometry.core.errors import InputError
+from geometry.machine.relief import blade_relief, relieved_blade
+from geometry.synthesis.basic_design import (
     FLANK_OPTION_UNITS,
     BasicDesign,
     flank_option_values,
     with_flank_options,
 )
-from geometry.case import Case
-from geometry.correction import SETTING_VARIABLES, setting_value, tool_with_values
-from geometry.errors import InputError
-from geometry.relief import blade_relief, relieved_blade
+from geometry.synthesis.correction import SETTING_VARIABLES, setting_value, tool_with_values
 
 __all__ = ["RELIEF_VARIABLES", "SYNTHESIS_VARIABLES", "DesignVariable", "case_at",
            "check_variables", "start_values", "synthesised_case", "variable_unit"]
 
 #: relief variables (µm of normal relief at the flank's tip end / root end, mean section)
 RELIEF_VARIABLES: Mapping[str, str] = {"tip_relief": "um", "root_relief": "um"}
-_RELIEF_MAX = 200.0  # [um] geometry.relief's limit (0.2 mm)
+_RELIEF_MAX = 200.0  # [um] geometry.machine.relief's limit (0.2 mm)
 #: local-synthesis inputs of the optimised flank (a basic-design start only), file units
 SYNTHESIS_VARIABLES: Mapping[str, str] = {k: u for k, u in FLANK_OPTION_UNITS.items()
                                           if k not in RELIEF_VARIABLES}
@@ -73,7 +73,8 @@ class DesignVariable:
     Parameters
     ----------
     name : str
-        A key of :data:`geometry.correction.SETTING_VARIABLES` or :data:`RELIEF_VARIABLES`.
+        A key of :data:`geometry.synthesis.correction.SETTING_VARIABLES` or
+        :data:`RELIEF_VARIABLES`.
     low, high : float
         Bounds in the variable's file unit (:func:`variable_unit`), low < high.
     """
@@ -98,7 +99,7 @@ def variable_unit(name: str) -> str:
 
 def _measured_relief(case: Case, flank: str) -> tuple[float, float]:
     """(tip, root) relief [µm] that the case's pinion flank's blade rems make
-    (:func:`geometry.relief.blade_relief`; 0, 0 for a blade without rems)."""
+    (:func:`geometry.machine.relief.blade_relief`; 0, 0 for a blade without rems)."""
     mem = case.pinion
     tool = mem.flank(flank)
     tip, root = blade_relief(tool.blade, tool.machine, mem.blank, mem.hand, case.gear.blank)
@@ -110,7 +111,7 @@ def start_values(case: Case, flank: str, names: Sequence[str], *,
     """Values of the variables ``names`` in the case's pinion flank ``flank`` [file units].
 
     Relief variables are the relief the blade's rems make at the flank's two ends, measured
-    on the blade (:func:`geometry.relief.blade_relief`; 0 without rems) — or, with a basic
+    on the blade (:func:`geometry.machine.relief.blade_relief`; 0 without rems) — or, with a basic
     design ``basic`` (the design ``case`` was synthesised from), its prescriptions, as are
     the :data:`SYNTHESIS_VARIABLES`.
     """
@@ -140,7 +141,7 @@ def synthesised_case(case: Case, basic: BasicDesign) -> Case:
     case : geometry.case.Case
         The case being replaced: its name, misalignment, operating point and extra tables
         are kept (the synthesis' own ``extra["synthesis"]`` record replaces the old one).
-    basic : geometry.basic_design.BasicDesign
+    basic : geometry.synthesis.basic_design.BasicDesign
         The design to synthesise (angles in rad, lengths in mm inside).
 
     Returns
@@ -150,10 +151,11 @@ def synthesised_case(case: Case, basic: BasicDesign) -> Case:
     Raises
     ------
     InputError
-        A synthesis step without a solution (named by :func:`geometry.synthesis.synthesize`:
+        A synthesis step without a solution (named by
+        :func:`geometry.synthesis.flank_synthesis.synthesize`:
         ISO 23509 blank, Litvin local synthesis, Litvin & Fuentes 2004 ch. 9).
     """
-    from geometry.synthesis import synthesize
+    from geometry.synthesis.flank_synthesis import synthesize
 
     new = synthesize(basic)[0]
     return dataclasses.replace(new, name=case.name, misalignment=case.misalignment,
@@ -175,9 +177,9 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
     values : array_like (len(names),)
         Values in file units (deg, mm, µm …).
     relief_start : float
-        Where a relief starts (:func:`geometry.relief.relieved_blade`); unused with
+        Where a relief starts (:func:`geometry.machine.relief.relieved_blade`); unused with
         ``basic`` (the basic design's own ``relief_start``, or the variable, holds).
-    basic : geometry.basic_design.BasicDesign, optional
+    basic : geometry.synthesis.basic_design.BasicDesign, optional
         The design ``case`` was synthesised from: synthesis variables (and the relief) are
         set in its prescriptions for ``flank`` and the design re-synthesised
         (:func:`synthesised_case`) before the settings are set.
@@ -231,7 +233,7 @@ def check_variables(case: Case, flank: str, variables: Sequence[DesignVariable],
     case : geometry.case.Case
     flank : str
     variables : sequence of DesignVariable
-    basic : geometry.basic_design.BasicDesign, optional
+    basic : geometry.synthesis.basic_design.BasicDesign, optional
         The design ``case`` was synthesised from; needed by :data:`SYNTHESIS_VARIABLES`.
 
     Raises

@@ -53,8 +53,8 @@ from contact.plots.maps import (
     efficiency_speed_figure,
 )
 from contact.plots.style import DPI, png_bytes, save_png, torque_text
-from geometry.atomic_files import atomic_path
-from geometry.errors import InputError
+from geometry.core.atomic_files import atomic_path
+from geometry.core.errors import InputError
 
 __all__ = [
     "FigureSpec",

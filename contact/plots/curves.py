@@ -100,7 +100,7 @@ def transmission_error_figure(utca: xr.Dataset | None, ltca: xr.Dataset | None) 
     InputError
         If both are None or a dataset lacks the variables drawn.
     """
-    from geometry.errors import InputError
+    from geometry.core.errors import InputError
 
     if utca is None and ltca is None:
         raise InputError("utca, ltca: give at least one of /utca and /ltca")

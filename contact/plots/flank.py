@@ -61,7 +61,7 @@ from contact.plots.tooth import (
     require,
     segment_pieces,
 )
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = [
     "FRICTION_FLANK_PLOTS",

@@ -42,7 +42,7 @@ from contact.plots.style import (
     title,
     unit_text,
 )
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = [
     "efficiency_map_figure",

@@ -35,8 +35,8 @@ import xarray as xr
 from contact.plots.analysis import RenderedFigure, analysis_figures, render_figures
 from contact.plots.style import misalignment_text
 from geometry import __version__
-from geometry.atomic_files import atomic_path
-from geometry.errors import InputError
+from geometry.core.atomic_files import atomic_path
+from geometry.core.errors import InputError
 
 __all__ = ["SUMMARY_COLUMNS", "render_report", "report_context", "write_report"]
 

@@ -30,7 +30,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.patches import Patch
 
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = [
     "EDGE_OFFSET",

@@ -27,9 +27,9 @@ from contact.qp.halfspace import (
     strip_influence,
 )
 from contact.qp.problem import ContactProblem
-from geometry.errors import InputError
-from geometry.hertz import STEEL, contact_modulus, hertz_line_contact
-from geometry.validation import integer, real
+from geometry.core.errors import InputError
+from geometry.core.hertz import STEEL, contact_modulus, hertz_line_contact
+from geometry.core.validation import integer, real
 
 __all__ = [
     "STEEL_MODULUS",
@@ -40,7 +40,7 @@ __all__ = [
     "standard_problem_set",
 ]
 
-#: Steel on steel (:data:`geometry.hertz.STEEL`, E = 206 000 MPa, ν = 0.3): E* [MPa].
+#: Steel on steel (:data:`geometry.core.hertz.STEEL`, E = 206 000 MPa, ν = 0.3): E* [MPa].
 STEEL_MODULUS = contact_modulus(*STEEL, *STEEL)
 
 

@@ -21,9 +21,9 @@ import math
 
 import numpy as np
 
-from geometry.errors import InputError
-from geometry.hertz import contact_modulus, hertz_line_contact  # the one E* and line contact
-from geometry.validation import positive
+from geometry.core.errors import InputError
+from geometry.core.hertz import contact_modulus, hertz_line_contact  # the one E* and line contact
+from geometry.core.validation import positive
 
 __all__ = [
     "contact_modulus",
@@ -178,7 +178,7 @@ def hertz_line(
     Returns
     -------
     dict: ``half_width`` b [mm] = √(4P′R/(πE*)), ``peak_pressure`` p₀ [MPa] = 2P′/(πb)
-    (both from :func:`geometry.hertz.hertz_line_contact`), ``approach`` δ [mm] =
+    (both from :func:`geometry.core.hertz.hertz_line_contact`), ``approach`` δ [mm] =
     (2P′/(πE*)) (ln(2d/b) + ½), the displacement at the centre relative to the datum,
     from ∫₋₁¹ √(1−t²) ln|t| dt = −(π/2)(ln 2 + ½).
 

@@ -41,8 +41,8 @@ from contact.errors import (
     NotPositiveDefiniteError,
     ProblemInputError,
 )
-from geometry.errors import InputError
-from geometry.validation import positive, real_array
+from geometry.core.errors import InputError
+from geometry.core.validation import positive, real_array
 
 log = logging.getLogger(__name__)
 
@@ -70,7 +70,7 @@ RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
 
 
 def _problem_input(check: Callable[..., Any], *args: Any, **kwargs: Any) -> Any:
-    """A :mod:`geometry.validation` check whose refusal is a :class:`ProblemInputError`."""
+    """A :mod:`geometry.core.validation` check whose refusal is a :class:`ProblemInputError`."""
     try:
         return check(*args, **kwargs)
     except InputError as exc:

@@ -31,7 +31,7 @@ import numpy as np
 
 from contact.errors import ProblemInputError
 from contact.qp.problem import ContactProblem
-from geometry.atomic_files import atomic_path
+from geometry.core.atomic_files import atomic_path
 
 __all__ = [
     "MANIFEST",

@@ -55,8 +55,8 @@ from contact.study.summary import (
     summary_variable,
 )
 from geometry import __version__
-from geometry.conventions import data_var
-from geometry.errors import InputError
+from geometry.core.conventions import data_var
+from geometry.core.errors import InputError
 
 __all__ = ["SYNCHRONOUS", "analyse_point", "open_client", "run_points", "run_tasks",
            "write_study"]
@@ -413,10 +413,10 @@ def write_study(ds: xr.Dataset, output: str | os.PathLike[str], shared: StudyInp
 
     Raises
     ------
-    contact.io.NetCDFError
+    geometry.core.io.NetCDFError
         If the file cannot be written (the parts are then kept).
     """
-    from contact.io import write_netcdf
+    from geometry.core.io import write_netcdf
 
     path = write_netcdf(ds, output, inputs=shared.case.to_toml())
     ResultStore.remove_parts(output)

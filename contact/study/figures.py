@@ -25,7 +25,7 @@ import xarray as xr
 
 from contact.study.monte_carlo import draw_values
 from contact.study.points import POINT_INPUTS
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 from geometry.plot import pyplot
 
 __all__ = ["MAP_VARIABLES", "TOLERANCE_VARIABLES", "save_study_figures",

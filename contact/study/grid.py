@@ -22,8 +22,8 @@ from contact.study.engine import run_points, write_study
 from contact.study.points import POINT_INPUTS, StudyInputs
 from friction.operating import OperatingConditions
 from geometry.case import Case
-from geometry.errors import InputError
-from geometry.validation import real_array
+from geometry.core.errors import InputError
+from geometry.core.validation import real_array
 
 __all__ = ["DEFAULT_TORQUE", "study_inputs", "sweep"]
 
@@ -133,7 +133,7 @@ def sweep(
     delta_E, delta_P, delta_G : float or sequence — [mm], optional
         Offset, pinion-axial and gear-axial misalignments (seed §2.5, Fig. 2.11).
     delta_Sigma : float or sequence — [rad], optional
-        Shaft-angle misalignment (as :class:`geometry.assembly.Misalignment`).
+        Shaft-angle misalignment (as :class:`geometry.pair.assembly.Misalignment`).
     deviation_scale : float or sequence — [1], optional
         Factors on the case's ``[deviations]`` (0 theoretical, 1 as measured).
     torque : float or sequence — [N·m], optional

@@ -27,7 +27,7 @@ from contact.study.grid import study_inputs
 from contact.study.points import POINT_INPUTS
 from friction.operating import OperatingConditions
 from geometry.case import Case
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = ["DISTRIBUTIONS", "METHODS", "draw_points", "draw_values", "parse_distribution",
            "sample", "sensitivity"]

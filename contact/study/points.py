@@ -20,14 +20,14 @@ from contact.ltca import LTCAOptions
 from contact.ltca.options import json_options
 from contact.utca.deviations import SurfaceDeviation
 from friction.operating import OperatingConditions
-from geometry.assembly import Misalignment
 from geometry.case import Case
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.pair.assembly import Misalignment
 
 __all__ = ["POINT_INPUTS", "StudyInputs", "check_point", "misalignment_of"]
 
 #: The inputs a study may vary per point: name → (units, long name). The misalignments
-#: are those of :class:`geometry.assembly.Misalignment` (ΔΣ in rad, as there);
+#: are those of :class:`geometry.pair.assembly.Misalignment` (ΔΣ in rad, as there);
 #: ``deviation_scale`` multiplies the case's surface deviations (its ``[deviations]``
 #: table, seed ch. 4): 0 the theoretical flanks, 1 the measured ones.
 POINT_INPUTS: Mapping[str, tuple[str, str]] = {

@@ -3,7 +3,7 @@
 A study writing ``map.nc`` keeps its finished points in ``map.nc.parts/``: a
 ``study.json`` that says which study the parts belong to (a fingerprint of the shared
 inputs and the list of points) and chunk files ``chunk-NNNNNNN.nc``, each written
-atomically (:func:`contact.io.write_netcdf`) with the results of a few points. The
+atomically (:func:`geometry.core.io.write_netcdf`) with the results of a few points. The
 client holds at most one chunk in memory, so memory stays flat in the number of points.
 When every point is in, the chunks are combined into ``map.nc`` (atomically) and the
 parts directory is removed. A study started again with the same output finds the parts,
@@ -25,9 +25,9 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from contact.io import read_netcdf, write_netcdf
-from geometry.atomic_files import atomic_path
-from geometry.errors import InputError
+from geometry.core.atomic_files import atomic_path
+from geometry.core.errors import InputError
+from geometry.core.io import read_netcdf, write_netcdf
 
 __all__ = ["ResultStore"]
 

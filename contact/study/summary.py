@@ -23,8 +23,8 @@ import numpy as np
 import xarray as xr
 
 from geometry.case import Case
-from geometry.conventions import binary_flag, data_var
-from geometry.flank import blank_outline
+from geometry.core.conventions import binary_flag, data_var
+from geometry.machine.flank import blank_outline
 
 __all__ = ["STATUS_MEANINGS", "SUMMARY_VARIABLES", "failed_summary", "point_summary",
            "summary_dims", "summary_variable"]

@@ -31,9 +31,9 @@ from scipy.optimize import least_squares
 from contact.ltca import LTCAOptions
 from contact.study.engine import run_points, write_study
 from contact.study.grid import study_inputs
-from geometry.assembly import Misalignment
 from geometry.case import Case
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.pair.assembly import Misalignment
 
 __all__ = ["VH_DEFAULT_GRID", "VH_DEFAULT_LIMITS", "VH_DEFAULT_TORQUE", "vh_check"]
 

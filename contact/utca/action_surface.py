@@ -8,7 +8,7 @@ the ease-off on them.
 
 Conjugacy condition (our reading of Eq. 2.19)
 ----------------------------------------------
-In the pair frame of :mod:`geometry.assembly` the members turn with opposite signs,
+In the pair frame of :mod:`geometry.pair.assembly` the members turn with opposite signs,
 φ_g = −φ_p / R with R = z_g / z_p. The relative velocity of the pinion with respect to the
 gear at a point r per unit pinion rotation is
 v₁₂ = a_p × (r − O_p) + (1/R) a_g × (r − O_g), and the equation of meshing n·v₁₂ = 0
@@ -48,9 +48,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from geometry.assembly import Misalignment, case_transforms, rotate_about_axis
-from geometry.errors import InputError
-from geometry.validation import one_of, real
+from geometry.core.errors import InputError
+from geometry.core.validation import one_of, real
+from geometry.pair.assembly import Misalignment, case_transforms, rotate_about_axis
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -69,7 +69,7 @@ __all__ = [
 # --------------------------------------------------------------------------- kinematics
 @dataclass(frozen=True)
 class MeshKinematics:
-    """Axes of the two members in the pair frame (see :mod:`geometry.assembly`).
+    """Axes of the two members in the pair frame (see :mod:`geometry.pair.assembly`).
 
     Parameters
     ----------
@@ -111,7 +111,7 @@ def mesh_kinematics(case: Case, misalignment: Misalignment | None = None, *,
     Parameters
     ----------
     case : geometry.case.Case
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own.
     pinion_phase, gear_phase : float — [rad]
         Rigid rotation of each member's teeth about its own axis before assembly (tooth
@@ -124,12 +124,12 @@ def mesh_kinematics(case: Case, misalignment: Misalignment | None = None, *,
     Raises
     ------
     InputError
-        For non-finite phases (and as :func:`geometry.assembly.case_transforms`).
+        For non-finite phases (and as :func:`geometry.pair.assembly.case_transforms`).
 
     Notes
     -----
     Seed Eq. 2.14 (placement with the offset vector OE); frames of
-    :mod:`geometry.assembly`.
+    :mod:`geometry.pair.assembly`.
     """
     pinion_phase = real("pinion_phase", pinion_phase, unit="rad")
     gear_phase = real("gear_phase", gear_phase, unit="rad")
@@ -150,7 +150,7 @@ def to_pair_frame(kin: MeshKinematics, position, normal):
     Returns
     -------
     r0, n0 : ndarray (..., 3) — [mm], [1]
-        In the pair frame (:mod:`geometry.assembly`).
+        In the pair frame (:mod:`geometry.pair.assembly`).
 
     Raises
     ------

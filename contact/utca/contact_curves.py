@@ -79,8 +79,8 @@ import numpy as np
 
 from contact.utca.easeoff import EaseOff
 from contact.utca.fields import EaseOffFields
-from geometry.errors import InputError
-from geometry.validation import integer, one_of, real_array
+from geometry.core.errors import InputError
+from geometry.core.validation import integer, one_of, real_array
 
 __all__ = [
     "CURVE_SPACINGS",

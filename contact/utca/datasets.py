@@ -44,14 +44,14 @@ from contact.utca.contact_curves import (
 from contact.utca.easeoff import EASEOFF_REASONS, EaseOff, ease_off
 from contact.utca.fields import EaseOffFields
 from geometry import __version__
-from geometry.conventions import binary_flag
-from geometry.conventions import data_var as _var
-from geometry.errors import InputError
-from geometry.validation import integer, one_of, positive
+from geometry.core.conventions import binary_flag
+from geometry.core.conventions import data_var as _var
+from geometry.core.errors import InputError
+from geometry.core.validation import integer, one_of, positive
 
 if TYPE_CHECKING:
-    from geometry.assembly import Misalignment
     from geometry.case import Case
+    from geometry.pair.assembly import Misalignment
 
 __all__ = [
     "UnloadedCycle",
@@ -111,7 +111,7 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
     Parameters
     ----------
     case : geometry.case.Case
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own ``[misalignment]``; the whole
         UTCA is recomputed in the misaligned frame.
     flank : str, optional
@@ -288,7 +288,7 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
         The case (recorded in the attributes).
     separation : float — [mm]
         Separation bounding the unloaded contact line, > 0 (default 0.0063).
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         The misalignment used (recorded in the attributes); defaults to the case's.
 
     Returns
@@ -506,7 +506,7 @@ def _utca_attrs(eo: EaseOff, case: Case, mis: Misalignment, method: str) -> dict
 
 def _misalignment_json(mis: Misalignment) -> str:
     """The misalignment as the JSON text of the datasets' ``misalignment`` attribute
-    (:meth:`geometry.assembly.Misalignment.labelled`: mm and deg)."""
+    (:meth:`geometry.pair.assembly.Misalignment.labelled`: mm and deg)."""
     return json.dumps(mis.labelled())
 
 
@@ -558,7 +558,7 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
     eo : EaseOff
         From :func:`ease_off`.
     case : geometry.case.Case
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         The misalignment used (recorded in the attributes); defaults to the case's.
 
     Returns
@@ -640,7 +640,7 @@ def _easeoff_attrs(eo: EaseOff, case: Case, mis: Misalignment) -> dict:
         "mesh_period": eo.pitch,
         "mesh_period_units": "rad",
         "kinematics": "pinion rotation = roll_zero + drive_sense * Q; ideal gear rotation = "
-                      "gear_phase - pinion rotation / ratio (geometry.assembly frames)",
+                      "gear_phase - pinion rotation / ratio (geometry.pair.assembly frames)",
         "misalignment": _misalignment_json(mis),
         "max_placement_error_mm": float(np.nanmax(eo.placement_error[eo.valid])),
         "toolkit_version": __version__,

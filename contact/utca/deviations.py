@@ -40,7 +40,7 @@ SurfaceDeviation            normal deviations of one flank on a (u, v) grid, int
 weighted_average_deviation  the seed's baseline interpolation (inverse-distance, Shepard)
 apply_deviations            update an EaseOff for pinion and gear deviations (Eq. 4.3–4.10)
 
-Deviation files (CSV, netCDF) are read and written by :mod:`contact.deviation_files`.
+Deviation files (CSV, netCDF) are read and written by :mod:`contact.utca.deviation_files`.
 
 References
 ----------
@@ -60,9 +60,9 @@ import numpy as np
 from scipy.interpolate import RBFInterpolator
 
 from contact.utca.easeoff import EaseOff, normal_ease_off
-from geometry.errors import InputError
-from geometry.flank import flank_at
-from geometry.validation import integer, positive, real_array
+from geometry.core.errors import InputError
+from geometry.core.validation import integer, positive, real_array
+from geometry.machine.flank import flank_at
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -78,7 +78,8 @@ __all__ = [
 log = logging.getLogger(__name__)
 
 #: default measurement grid: 9 lengthwise (toe → heel) × 5 profile (root → tip) points over
-#: the flank's projection-plane fractions (the limits of :data:`geometry.flank.DEFAULT_GRID`)
+#: the flank's projection-plane fractions (the limits of
+#: :data:`geometry.machine.flank.DEFAULT_GRID`)
 DEFAULT_MEASUREMENT_GRID = {"nu": 9, "nv": 5, "u_limits": (0.0, 1.0), "v_limits": (0.05, 1.0)}
 
 #: [mm] largest accepted |δ|: the update is first order in δ (seed Eq. 4.3 assumes the real
@@ -108,7 +109,7 @@ class SurfaceDeviation:
     u : array_like (nu,) — [1]
         Lengthwise fractions of the member's projection plane, toe 0 → heel 1, strictly
         increasing, ≥ 3 values in [−0.5, 1.5] (the fractions of
-        :func:`geometry.flank.projection_grid`).
+        :func:`geometry.machine.flank.projection_grid`).
     v : array_like (nv,) — [1]
         Profile fractions, root 0 → tip 1, as ``u``.
     deviation : array_like (nu, nv) — [mm]
@@ -282,7 +283,7 @@ def _pinion_arm(eo: EaseOff, case: Case | None) -> np.ndarray:
         fs = flank_at(case, "pinion", eo.pinion_flank, eo.pinion_axial[have],
                       eo.pinion_radius[have])
         p, n = fs.position, fs.normal
-        # pinion frame: axis +z through the crossing point at the origin (geometry.assembly)
+        # pinion frame: axis +z through the crossing point at the origin (geometry.pair.assembly)
         arm[have] = np.abs(p[..., 0] * n[..., 1] - p[..., 1] * n[..., 0])
     return arm
 
@@ -306,7 +307,7 @@ def apply_deviations(eo: EaseOff, pinion: SurfaceDeviation | None = None,
     case : geometry.case.Case, optional
         The case of ``eo``; required with ``pinion``: the pinion moment arm
         |a_p·((r_p − O_p) × n_p)| [mm] is evaluated on the real pinion
-        (:func:`geometry.flank.flank_at` at the mates). (The shortcut normal_arm / R of the
+        (:func:`geometry.machine.flank.flank_at` at the mates). (The shortcut normal_arm / R of the
         equation of meshing was tried and rejected: it is off by 0.6–3 % of ΔQ because the
         real-gear normal differs from the contact normal by the ease-off slope.)
 

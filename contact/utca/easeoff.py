@@ -20,12 +20,12 @@ radius ρ):
 Gear projection-plane grid (instead of resampling)
 --------------------------------------------------
 The real gear flank is generated on its projection-plane grid
-(:func:`geometry.flank.flank_surface`). Rather than resampling scattered conjugate points
+(:func:`geometry.machine.flank.flank_surface`). Rather than resampling scattered conjugate points
 onto that grid, for every gear node the pinion point whose action-surface image has the
 node's (z, ρ) is found by Newton's method: a bicubic spline of the forward map (pinion
 projection plane → gear projection plane, on an extended 41 × 21 pinion grid, built on the
 pinion blade's main section) gives the start and the first Jacobian; each iteration then
-evaluates the real pinion exactly (:func:`geometry.meshing.solve_envelope`) and maps it
+evaluates the real pinion exactly (:func:`geometry.machine.meshing.solve_envelope`) and maps it
 exactly, with Broyden updates of the Jacobian and, for the nodes left after four
 iterations, finite-difference Jacobians of the exact map (the map is strongly stretched
 next to the pinion's fillet junction). Nodes are placed to |Δz|, |Δρ| < 1e-7 mm and the
@@ -96,14 +96,14 @@ from contact.utca.action_surface import (
     meshing_coefficients,
     to_pair_frame,
 )
-from geometry.assembly import Misalignment, rotate_about_axis
-from geometry.curvature import normal_curvature, surface_curvatures
-from geometry.cutter import working_sections
-from geometry.errors import InputError
-from geometry.flank import DEFAULT_GRID, blank_outline, flank_surface
-from geometry.meshing import solve_envelope
-from geometry.pitch_contact import check_pitch_contact
-from geometry.validation import one_of
+from geometry.core.errors import InputError
+from geometry.core.validation import one_of
+from geometry.machine.curvature import normal_curvature, surface_curvatures
+from geometry.machine.cutter import working_sections
+from geometry.machine.flank import DEFAULT_GRID, blank_outline, flank_surface
+from geometry.machine.meshing import solve_envelope
+from geometry.pair.assembly import Misalignment, rotate_about_axis
+from geometry.pair.pitch_contact import check_pitch_contact
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -218,7 +218,7 @@ def _pinion_points(case: Case, flank: str, z, rho, guess=None):
     """Real pinion surface at projection-plane places: position, normal, reason, curvatures.
 
     ``guess`` (params (..., 3), section) from nearby earlier points starts the envelope solver
-    (:func:`geometry.meshing.solve_envelope`) there instead of at its seed search.
+    (:func:`geometry.machine.meshing.solve_envelope`) there instead of at its seed search.
     """
     mem = case.pinion
     tool = mem.flank(flank)
@@ -261,14 +261,14 @@ def roll_angle_surface(case: Case, *, flank: str | None = None,
     case : geometry.case.Case
     flank : str, optional
         ``"drive"`` (default), ``"coast"``, or the pinion flank ``"concave"``/``"convex"``.
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         Defaults to the case's own.
     nu, nv, u_limits, v_limits
-        Pinion projection-plane grid (see :func:`geometry.flank.projection_grid`).
+        Pinion projection-plane grid (see :func:`geometry.machine.flank.projection_grid`).
 
     Returns
     -------
-    surface : geometry.flank.FlankSurface
+    surface : geometry.machine.flank.FlankSurface
         The pinion flank.
     roll : ndarray (nu, nv) — [rad]
         Absolute pinion rotation φ_p at which each point lies on the surface of action
@@ -279,7 +279,7 @@ def roll_angle_surface(case: Case, *, flank: str | None = None,
     Raises
     ------
     InputError
-        For a bad flank name or grid (and as :func:`geometry.flank.flank_surface`).
+        For a bad flank name or grid (and as :func:`geometry.machine.flank.flank_surface`).
     """
     pf, _ = _flank_names(case, flank)
     kin = mesh_kinematics(case, misalignment)
@@ -607,11 +607,11 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     flank : str, optional
         ``"drive"`` (default: the case's ``pair.drive_flank``), ``"coast"``, or the pinion
         flank ``"concave"``/``"convex"``; the gear flank is the mating one.
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         ΔE, ΔP, ΔG [mm], ΔΣ [rad]; defaults to the case's own ``[misalignment]``.
     grid : dict, optional
         Gear grid ``nu``, ``nv``, ``u_limits``, ``v_limits`` (default
-        :data:`geometry.flank.DEFAULT_GRID`: 41 × 21).
+        :data:`geometry.machine.flank.DEFAULT_GRID`: 41 × 21).
     pinion_phase, gear_phase : float — [rad]
         Rigid rotation of each member about its axis before assembly (indexing); only
         ``roll_zero`` and ``gear_phase`` of the result change.
@@ -627,7 +627,7 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     ------
     InputError
         ``pair.offset`` inconsistent with the blanks
-        (:func:`geometry.pitch_contact.check_pitch_contact`). For a bad flank name or
+        (:func:`geometry.pair.pitch_contact.check_pitch_contact`). For a bad flank name or
         grid, if the pinion never meets the surface of action, or
         no gear node can be touched by the pinion; for a misalignment that separates the
         flanks (fewer than :data:`MIN_VALID_NODES` grid nodes where the pinion meets the
@@ -696,7 +696,7 @@ def misalignment_range(case: Case, name: str, misalignment: Misalignment, *,
     ----------
     case : geometry.case.Case
     name : {"delta_E", "delta_P", "delta_G", "delta_Sigma"}
-    misalignment : geometry.assembly.Misalignment
+    misalignment : geometry.pair.assembly.Misalignment
         The misalignment whose ``name`` separates the flanks; [mm], ΔΣ [rad].
     flank, grid
         As :func:`ease_off`.
@@ -781,7 +781,7 @@ def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
 
 
 def _grid_options(grid: dict | None) -> dict:
-    """The gear grid of :func:`ease_off`: :data:`geometry.flank.DEFAULT_GRID` updated by
+    """The gear grid of :func:`ease_off`: :data:`geometry.machine.flank.DEFAULT_GRID` updated by
     ``grid`` (InputError for an unknown key)."""
     g = dict(DEFAULT_GRID)
     if grid:

@@ -30,7 +30,7 @@ import numpy as np
 from scipy.interpolate import RectBivariateSpline
 
 from contact.utca.easeoff import EaseOff, fill_missing
-from geometry.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError
 
 __all__ = ["EaseOffFields"]
 

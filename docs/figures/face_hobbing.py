@@ -11,7 +11,7 @@ by the blade offset angle δ_b; (b) the tip plane of a crown gear (γ_m = 90°, 
 trace of one blade tip relative to the work while the head spins and the work indexes by
 κ = −z0/z (an extended epicycloid through the mean point P with the spiral angle β), beside
 the circle a face-milling cutter of the same radius traces (κ = 0). All points are computed
-with the toolkit's chain (geometry.machine.generated_family).
+with the toolkit's chain (geometry.machine.cradle.generated_family).
 """
 
 from __future__ import annotations
@@ -29,8 +29,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from geometry.cutter import Blade, placement_vectors  # noqa: E402
-from geometry.machine import MachineSettings, generated_family  # noqa: E402
+from geometry.machine.cradle import MachineSettings, generated_family  # noqa: E402
+from geometry.machine.cutter import Blade, placement_vectors  # noqa: E402
 
 # crown-gear example of the design note (docs/machine.md, "Face hobbing")
 Z, Z0, RC0, R, BETA = 45, 13, 88.9, 100.0, math.radians(32.0)

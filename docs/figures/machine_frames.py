@@ -25,9 +25,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from geometry.assembly import case_transforms, transform_points  # noqa: E402
 from geometry.case import load_case  # noqa: E402
-from geometry.flank import flank_surface  # noqa: E402
+from geometry.machine.flank import flank_surface  # noqa: E402
+from geometry.pair.assembly import case_transforms, transform_points  # noqa: E402
 
 
 def main() -> None:

@@ -7,15 +7,15 @@ collinear (seed Eq. 2.14a–b),
     M_p(φ_p) r_p(Z_p, P_p) = M_g(φ_g) r_g(Z_g, P_g),
     M_p(φ_p) n_p(Z_p, P_p) = −M_g(φ_g) n_g(Z_g, P_g),
 
-with M the member → pair transforms of :func:`geometry.assembly.case_transforms` (which carry
+with M the member → pair transforms of :func:`geometry.pair.assembly.case_transforms` (which carry
 the misalignments ΔE, ΔP, ΔG, ΔΣ). Each flank is parametrised by its projection-plane place
-(axial position Z, radius P) and evaluated by :func:`geometry.flank_point.flank_points`
-(:func:`geometry.meshing.solve_envelope`, seed Eq. 2.7–2.8), so the unknowns are
+(axial position Z, radius P) and evaluated by :func:`geometry.machine.flank_point.flank_points`
+(:func:`geometry.machine.meshing.solve_envelope`, seed Eq. 2.7–2.8), so the unknowns are
 (Z_p, P_p, Z_g, P_g, φ_g): five unknowns for the five independent equations (the unit
 normals add two; all six components are used in a least-squares sense). The Jacobian is
 analytic: the surface tangents ∂r/∂Z, ∂r/∂P from the envelope and the normal derivatives
 ∂n = W ∂r from the shape operator W = κ₁e₁e₁ᵀ + κ₂e₂e₂ᵀ of
-:func:`geometry.curvature.surface_curvatures`. Roll positions are solved in blocks of
+:func:`geometry.machine.curvature.surface_curvatures`. Roll positions are solved in blocks of
 neighbours by continuation along the roll angle outward from the reference: a batched damped
 Gauss–Newton (Levenberg–Marquardt) iteration, one surface evaluation per member and
 iteration for the whole block; positions that fail are retried by continuation in small roll
@@ -24,16 +24,16 @@ resort. The damping also copes with the rank-deficient Jacobian of a conjugate
 (line-contact) pair, where the contact point may lie anywhere on the contact line. A solution
 counts only where the relative curvature W_p + W_g is positive semi-definite (a contact, not
 a saddle of the separation where the surfaces already cross). The system is
-:class:`ToothPair`, which the synthesis (:mod:`geometry.synthesis`) also uses to tune the
-modified roll; it takes any two flanks and any member → pair transforms.
+:class:`ToothPair`, which the synthesis (:mod:`geometry.synthesis.flank_synthesis`) also uses to
+tune the modified roll; it takes any two flanks and any member → pair transforms.
 
 Conventions
 -----------
-Members turn right-handed about their own +z axis (:mod:`geometry.assembly`). The **pinion
+Members turn right-handed about their own +z axis (:mod:`geometry.pair.assembly`). The **pinion
 roll** is the pinion rotation measured in its *sense of motion* — the sense in which the
 analysed pinion flank pushes the gear (opposite for the drive and the coast flank) — from the
 **reference**: the position at which, in the nominal (aligned) assembly, the pinion touches
-the gear flank at its mean contact point M (:func:`geometry.design_point.design_point_of_case`:
+the gear flank at its mean contact point M (:func:`geometry.pair.design_point.design_point_of_case`:
 at the gear's mean cone distance, centred in roll within the working depth — the design
 point of a synthesised pair). The reference gear rotation is the TCA gear rotation there, so
 the nominal transmission error is exactly 0 at roll 0.
@@ -71,12 +71,12 @@ import numpy as np
 from scipy.interpolate import LinearNDInterpolator
 from scipy.optimize import least_squares
 
-from geometry.assembly import Misalignment, case_transforms
 from geometry.case import FLANKS, Case
-from geometry.design_point import design_point_of_case
-from geometry.errors import InputError
-from geometry.flank import blank_outline, flank_surface
-from geometry.flank_point import MemberFlank
+from geometry.core.errors import InputError
+from geometry.machine.flank import blank_outline, flank_surface
+from geometry.machine.flank_point import MemberFlank
+from geometry.pair.assembly import Misalignment, case_transforms
+from geometry.pair.design_point import design_point_of_case
 
 __all__ = [
     "CONVERGED_RESIDUAL",
@@ -114,7 +114,7 @@ class MeanContact:
         Pinion flank (``"concave"`` or ``"convex"``); the gear flank is the other one.
     pinion_rotation, gear_rotation : float — [rad]
         Absolute member rotations (right-handed about each member's own +z, as
-        :func:`geometry.assembly.case_transforms` takes them) of the reference, in the
+        :func:`geometry.pair.assembly.case_transforms` takes them) of the reference, in the
         nominal assembly. ``gear_rotation`` is the TCA gear rotation at ``pinion_rotation``.
     pinion_sense, gear_sense : int
         +1 or −1: the sense of motion of each member when the pinion flank drives
@@ -148,7 +148,7 @@ class TCAResult:
         Pinion roll in its sense of motion from the reference (module docstring).
     pinion_rotation : ndarray (K,) — [rad]
         Absolute pinion rotation (right-handed about its own +z; for
-        :func:`geometry.assembly.case_transforms`): ``reference[0] + sense[0]·pinion_roll``.
+        :func:`geometry.pair.assembly.case_transforms`): ``reference[0] + sense[0]·pinion_roll``.
     gear_rotation : ndarray (K,) — [rad]
         Absolute gear rotation (right-handed about its own +z) solved by the TCA.
     transmission_error : ndarray (K,) — [rad]
@@ -225,17 +225,17 @@ class ToothPair:
     (seed Eq. 2.14a–b; L_n the gear mean cone distance makes the normal residuals lengths),
     their analytic Jacobian, a batched damped Gauss–Newton solver, a scipy fallback for one
     roll and the contact check. Used by :func:`conventional_tca`, :func:`mean_contact` and
-    the synthesis's tuning of the modified roll (:mod:`geometry.synthesis`).
+    the synthesis's tuning of the modified roll (:mod:`geometry.synthesis.flank_synthesis`).
 
     Parameters
     ----------
-    pinion, gear : geometry.flank_point.MemberFlank
+    pinion, gear : geometry.machine.flank_point.MemberFlank
         The pinion flank and the gear flank it meshes (tool, blank, hand).
     transforms : callable
         ``transforms(phi_p, phi_g) -> (T_p, T_g)``: member → pair-frame homogeneous
         transforms (…, 4, 4) at member rotations φ_p, φ_g [rad] (right-handed about each
         member's own +z), batched over arrays of rotations (one may be a scalar), e.g.
-        :func:`geometry.assembly.case_transforms` of a case.
+        :func:`geometry.pair.assembly.case_transforms` of a case.
 
     Attributes
     ----------
@@ -269,13 +269,13 @@ class ToothPair:
         case : geometry.case.Case
         flank : str
             Pinion flank, ``"concave"`` or ``"convex"``; the gear flank is the other one.
-        misalignment : geometry.assembly.Misalignment, optional
+        misalignment : geometry.pair.assembly.Misalignment, optional
             Assembly; default the case's own ``misalignment``.
 
         Returns
         -------
         ToothPair
-            With the transforms of :func:`geometry.assembly.case_transforms`.
+            With the transforms of :func:`geometry.pair.assembly.case_transforms`.
 
         Raises
         ------
@@ -312,7 +312,7 @@ class ToothPair:
         f : ndarray (K, 6) — [mm]
             r_p − r_g and L_n (n_p + n_g) in the pair frame (class docstring).
         jac : ndarray (K, 6, 5)
-            ∂f/∂x (∂r/∂(Z, P) from :func:`geometry.flank_point.flank_points`, ∂n = W ∂r,
+            ∂f/∂x (∂r/∂(Z, P) from :func:`geometry.machine.flank_point.flank_points`, ∂n = W ∂r,
             ∂/∂φ_g = −a_g × (r_g − o_g), a_g × n_g).
         ok : ndarray (K,) bool
             Both flanks generated at their places (elsewhere ``f`` and ``jac`` hold NaN).
@@ -574,7 +574,7 @@ def mean_contact(case: Case, flank: str | None = None) -> MeanContact:
 
     Notes
     -----
-    The gear point is held at M (:func:`geometry.design_point.design_point_of_case`) and
+    The gear point is held at M (:func:`geometry.pair.design_point.design_point_of_case`) and
     (Z_p, P_p, φ_p, φ_g) are fitted to
     seed Eq. 2.14 by ``scipy.optimize.least_squares``. The start comes from a scan of the
     gear rotation over the mesh zone (+x side of the pair frame): for each gear rotation the
@@ -725,7 +725,7 @@ def conventional_tca(case: Case, pinion_roll, *, flank: str | None = None,
     flank : str, optional
         Pinion flank ``"concave"`` or ``"convex"``; default the pair's drive flank. The gear
         flank is the other one.
-    misalignment : geometry.assembly.Misalignment, optional
+    misalignment : geometry.pair.assembly.Misalignment, optional
         Assembly analysed; default the case's own ``misalignment``. The reference (roll 0)
         is always taken from the nominal assembly.
     initial : TCAResult or MeanContact, optional

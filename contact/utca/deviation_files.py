@@ -2,10 +2,10 @@
 
 The exchange side of the real-surface analysis (seed §4.3, §4.5.2): grids of normal
 deviations of a flank, positive = material added, as CSV (one grid per file) or netCDF
-(pinion and/or gear grids, written atomically with :func:`contact.io.write_netcdf`). The
+(pinion and/or gear grids, written atomically with :func:`geometry.core.io.write_netcdf`). The
 model they feed — :class:`contact.utca.deviations.SurfaceDeviation` and the ease-off
 update :func:`contact.utca.deviations.apply_deviations` — is in the UTCA layer and is
-re-exported here, so that ``from contact.deviation_files import read_deviations,
+re-exported here, so that ``from contact.utca.deviation_files import read_deviations,
 apply_deviations`` gives the whole chain.
 
 Public functions
@@ -26,7 +26,6 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from contact.io import NetCDFError, read_netcdf, write_netcdf
 from contact.utca.deviations import (
     DEFAULT_MEASUREMENT_GRID,
     MAX_DEVIATION,
@@ -34,7 +33,8 @@ from contact.utca.deviations import (
     apply_deviations,
     weighted_average_deviation,
 )
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.core.io import NetCDFError, read_netcdf, write_netcdf
 
 __all__ = [
     "DEFAULT_MEASUREMENT_GRID",
@@ -156,7 +156,7 @@ def read_deviation_netcdf(path: str | os.PathLike[str], member: str = "pinion",
     Notes
     -----
     Source: the measurement grid of the seed §4.5.2 (CMM deviations on a 5 × 9 grid along
-    the surface normal); the file layout is the toolkit's (contact.io conventions).
+    the surface normal); the file layout is the toolkit's (geometry.core.io conventions).
     """
     _check_member(member)
     try:
@@ -196,7 +196,7 @@ def write_deviation_netcdf(path: str | os.PathLike[str], *,
     The layout is the one :func:`read_deviation_netcdf` reads: variables
     ``pinion_deviation`` / ``gear_deviation`` over dimensions (``u``, ``v``) with fraction
     coordinates when both members share one grid, else over (``u_pinion``, ``v_pinion``)
-    and (``u_gear``, ``v_gear``). Written with :func:`contact.io.write_netcdf` (conventions
+    and (``u_gear``, ``v_gear``). Written with :func:`geometry.core.io.write_netcdf` (conventions
     checked, version stamped, temporary file + rename).
 
     Parameters
@@ -218,7 +218,7 @@ def write_deviation_netcdf(path: str | os.PathLike[str], *,
     ------
     InputError
         Neither grid given, a grid not a SurfaceDeviation, or unknown ``units``.
-    contact.io.NetCDFError
+    geometry.core.io.NetCDFError
         If the file cannot be written (an existing file is left untouched).
 
     Notes

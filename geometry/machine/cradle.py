@@ -4,7 +4,7 @@ Frames (all right-handed; see ``docs/machine.md`` for the figure)
 -------------------------------------------------------------------
 * **Cutter frame S_t** — origin at the centre of the blade-tip plane, z_t along the cutter
   axis from the cutter body towards the blade tips (towards the work); see
-  :mod:`geometry.cutter`.
+  :mod:`geometry.machine.cutter`.
 * **Machine frame S_m** — origin at the machine centre O_m, z_m along the cradle axis
   pointing from the cradle towards the work. With zero tilt the blade tips sweep the plane
   z_m = 0. The work axis lies in the plane y_m = E_m; x_m is the direction of the work axis's
@@ -65,7 +65,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.cutter import (
+from geometry.core.errors import InputError
+from geometry.core.validation import integer, real
+from geometry.machine.cutter import (
     Blade,
     ProfileSections,
     blade_edge,
@@ -73,8 +75,6 @@ from geometry.cutter import (
     profile_sections,
     revolution_normal,
 )
-from geometry.errors import InputError
-from geometry.validation import integer, real
 
 __all__ = [
     "PROCESSES",
@@ -491,7 +491,7 @@ _XZ = [0, 1, 3, 6]  # cutter vectors in the blade's axial plane: r, r_s, r_ss, n
 
 def cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta: np.ndarray,
                    section) -> np.ndarray:
-    """The vectors of :func:`geometry.cutter.cutter_surface`, component-major (3, 7, n).
+    """The vectors of :func:`geometry.machine.cutter.cutter_surface`, component-major (3, 7, n).
 
     Order of the first seven :data:`_FIELDS`; the same expressions (seed Eq. 2.6a–c: blade
     vectors in the blade's axial plane turned by θ about the cutter axis), written straight
@@ -520,7 +520,7 @@ def cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta:
 def _placed_cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray,
                           theta: np.ndarray, section) -> np.ndarray:
     """:func:`cutter_buffer` of a placed (face-hobbing) blade: the edge of
-    :func:`geometry.cutter.blade_edge` turned by θ, r_θ = S r, r_θθ = S² r, r_sθ = S r_s."""
+    :func:`geometry.machine.cutter.blade_edge` turned by θ, r_θ = S r, r_θθ = S² r, r_sθ = S r_s."""
     e, e_s, e_ss = (a.T for a in blade_edge(blade, s, section, sections))
     n_rev = revolution_normal(blade, e.T, e_s.T).T
     c, sn = np.cos(theta), np.sin(theta)
@@ -624,7 +624,7 @@ def _swept_normal(out: np.ndarray) -> None:
     """Face hobbing: replace the normal of a family buffer by that of the swept surface.
 
     With indexing the surface r(·, ·, q) swept at a fixed cradle angle is not the head's
-    surface of revolution, whose normal (n_rev, :func:`geometry.cutter.revolution_normal`)
+    surface of revolution, whose normal (n_rev, :func:`geometry.machine.cutter.revolution_normal`)
     the cutter vectors carry: the two share the edge but differ by a turn about it of the
     order of the lead angle ν. Its unit normal is ±(r_s × r_θ)/|r_s × r_θ| (the envelope's
     normal where the equation of meshing holds), turned out of the material by n_rev
@@ -671,7 +671,7 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
     q : array_like — [rad]
         Cradle rotation (broadcast with s and θ; ignored for Formate).
     section, sections
-        See :func:`geometry.cutter.cutter_surface`.
+        See :func:`geometry.machine.cutter.cutter_surface`.
 
     Returns
     -------

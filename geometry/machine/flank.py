@@ -30,12 +30,12 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 import xarray as xr
 
-from geometry._version import __version__
-from geometry.conventions import binary_flag
-from geometry.curvature import surface_curvatures
-from geometry.cutter import profile_sections
-from geometry.errors import InputError
-from geometry.meshing import REASONS, solve_envelope
+from geometry.core.conventions import binary_flag
+from geometry.core.errors import InputError
+from geometry.core.version import __version__
+from geometry.machine.curvature import surface_curvatures
+from geometry.machine.cutter import profile_sections
+from geometry.machine.meshing import REASONS, solve_envelope
 
 if TYPE_CHECKING:
     from geometry.case import Blank, Case
@@ -248,7 +248,7 @@ class FlankSurface(NamedTuple):
     theta: np.ndarray  # [rad] blade angle about the cutter axis (right-hand reference)
     q: np.ndarray  # [rad] cradle rotation (right-hand reference)
     section: np.ndarray  # blade section index
-    reason: np.ndarray  # int8 mask reason (geometry.meshing.REASONS)
+    reason: np.ndarray  # int8 mask reason (geometry.machine.meshing.REASONS)
 
     @property
     def valid(self) -> np.ndarray:
@@ -310,7 +310,7 @@ def flank_at(case: Case, member: str, flank: str, axial, radius,
         Axial position z and radius ρ in the member's projection plane.
     guess : tuple, optional
         (s, θ, q[, section]) starting guesses of the envelope parameters from nearby
-        solutions, broadcastable to ``axial`` (:func:`geometry.meshing.solve_envelope`:
+        solutions, broadcastable to ``axial`` (:func:`geometry.machine.meshing.solve_envelope`:
         points without a finite guess, or not converging from it, are solved as without).
 
     Returns
@@ -443,7 +443,7 @@ def flank_dataset(case: Case, member: str, flank: str, *, surface: FlankSurface 
         "max_abs_meshing_residual": float(np.nanmax(np.abs(fs.meshing_residual)))
         if fs.valid.any() else 0.0,
         "toolkit_version": __version__,
-        "source": "geometry.flank.flank_dataset (seed Eq. 2.7-2.13)",
+        "source": "geometry.machine.flank.flank_dataset (seed Eq. 2.7-2.13)",
         "inputs": case.to_toml(),
         "synthesised": json.dumps(list(case.synthesised)),
     }

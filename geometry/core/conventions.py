@@ -5,7 +5,7 @@ Every variable of every dataset the toolkit builds carries ``units`` (a UDUNITS 
 model"); :func:`data_var` builds the ``(dims, data, attrs)`` tuple an
 ``xarray.Dataset`` takes with them. It lives at the bottom of the chain so that
 ``geometry``, ``contact`` and ``friction`` build their datasets the same way; writing and
-checking files (:mod:`contact.io`) sits in the application layer on top.
+checking files (:mod:`geometry.core.io`) sits in the application layer on top.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Machine-setting summaries typed in another tool's convention, converted to ours.
 
-The toolkit's chain (``docs/machine.md``, :mod:`geometry.machine`) is the classical cradle
+The toolkit's chain (``docs/machine.md``, :mod:`geometry.machine.cradle`) is the classical cradle
 model that open generators use too; only the signs, the hand rule and the reference of the
 circular blade profile differ. This module holds the conversion tables and applies them.
 
@@ -26,7 +26,7 @@ R_z(−ψ) T(0,0,−D) R_y(γ) T(B,E,0) R_x(−q) T(0,0,S) R_x(ζ) R_z(σ) R_y(�
 cutter frame as ours; conjugating ours by P = R_y(−π/2) (our z_m is SpyGO's −x) gives term by
 term ψ = φ, D = X_p, γ = γ_m, B = −X_b, E = −E_m, q = q_c + q, S = S_r, ζ = −j, σ = i.
 Composing with SpyGO's signs for the member and hand, and with :func:`mirror_settings
-<geometry.machine.mirror_settings>` for a left-hand member, gives :data:`SPYGO_MACHINE`.
+<geometry.machine.cradle.mirror_settings>` for a left-hand member, gives :data:`SPYGO_MACHINE`.
 
 Public functions
 ----------------
@@ -47,8 +47,8 @@ from collections.abc import Mapping
 from types import MappingProxyType
 from typing import Any
 
-from geometry.cutter import BLADE_SIDES
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.machine.cutter import BLADE_SIDES
 
 __all__ = [
     "CONVENTIONS",
@@ -164,7 +164,7 @@ def machine_from_spygo(fields: Mapping[str, Any], member: str, hand: str) -> dic
     Parameters
     ----------
     fields : mapping
-        Any of the fields of :class:`geometry.machine.MachineSettings` (radial_setting,
+        Any of the fields of :class:`geometry.machine.cradle.MachineSettings` (radial_setting,
         cradle_angle, swivel, tilt, machine_root_angle, machine_center_to_back,
         sliding_base, blank_offset, ratio_of_roll [mm, rad or deg, 1: the units are kept],
         modified_roll (2C, 6D, 24E, 120F), helical_motion (H1…H6, H5 and H6 in SpyGO's
@@ -200,7 +200,7 @@ def machine_to_spygo(fields: Mapping[str, Any], member: str, hand: str) -> dict[
     Parameters
     ----------
     fields : mapping
-        Fields of :class:`geometry.machine.MachineSettings` in our convention (right-hand
+        Fields of :class:`geometry.machine.cradle.MachineSettings` in our convention (right-hand
         reference member), units kept; other keys pass through.
     member, hand : str
         As in :func:`machine_from_spygo` (hand: of this member).
@@ -246,7 +246,7 @@ def blade_to_spygo(fields: Mapping[str, Any], side: str) -> dict[str, Any]:
     Parameters
     ----------
     fields : mapping
-        Our blade fields (as :class:`geometry.cutter.Blade`, angles in **rad**, lengths mm):
+        Our blade fields (as :class:`geometry.machine.cutter.Blade`, angles in **rad**, lengths mm):
         point_radius, blade_angle, edge_radius, profile, profile_radius,
         profile_reference_height; the toprem, flankrem and placement fields must be 0 or
         absent (SpyGO's are other curves: not in the table).

@@ -9,7 +9,7 @@ position Z and radius P, and satisfies the equation of meshing (seed Eq. 2.8)
 
 In Formate the member is the cutter's imprint (q ≡ 0) and only the two position equations
 remain. The system is solved by a vectorised Newton method over all points at once with
-the analytic Jacobian of :mod:`geometry.machine`; the start comes from a coarse search at
+the analytic Jacobian of :mod:`geometry.machine.cradle`; the start comes from a coarse search at
 one seed point (the middle of the grid) followed by a first-order prediction for every
 other point, then continuation from converged neighbours for points that failed. A caller
 that re-solves targets near known solutions (an iteration moving its points a little) can
@@ -41,9 +41,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.cutter import Blade, profile_sections
-from geometry.errors import InputError
-from geometry.machine import (
+from geometry.core.errors import InputError
+from geometry.machine.cradle import (
     Chain,
     GeneratedFamily,
     MachineSettings,
@@ -53,6 +52,7 @@ from geometry.machine import (
     family_views,
     meshing_buffer,
 )
+from geometry.machine.cutter import Blade, profile_sections
 
 __all__ = ["REASONS", "EnvelopeSolution", "solve_envelope"]
 
@@ -84,7 +84,7 @@ class EnvelopeSolution(NamedTuple):
     s: np.ndarray  # [mm] arc length along the blade edge
     theta: np.ndarray  # [rad] blade angle about the cutter axis
     q: np.ndarray  # [rad] cradle rotation (0 in Formate)
-    section: np.ndarray  # index of the blade section (geometry.cutter.profile_sections)
+    section: np.ndarray  # index of the blade section (geometry.machine.cutter.profile_sections)
     position: np.ndarray  # [mm] point in the blank frame
     normal: np.ndarray  # [1] unit normal out of the material
     meshing_residual: np.ndarray  # [1] f = n·∂r/∂q / L (0 in Formate)
@@ -103,7 +103,7 @@ class _Context(NamedTuple):
 
 
 def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
-    """Family buffer (3, 11, n) of :func:`geometry.machine.family_buffer` at flat points."""
+    """Family buffer (3, 11, n) of :func:`geometry.machine.cradle.family_buffer` at flat points."""
     v = cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
     return family_buffer(ctx.chain, ctx.settings, v, q, theta)
 
@@ -449,7 +449,7 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     guess : EnvelopeSolution-like or tuple, optional
         Starting guess from a nearby earlier solve: an object with fields ``s`` [mm],
         ``theta`` [rad], ``q`` [rad] and optionally ``section`` (an
-        :class:`EnvelopeSolution` or a :class:`geometry.flank.FlankSurface`), or a tuple
+        :class:`EnvelopeSolution` or a :class:`geometry.machine.flank.FlankSurface`), or a tuple
         ``(s, theta, q[, section])``; each array broadcastable to the targets' shape
         (``q`` is ignored in Formate). Newton starts from it and the coarse seed search is
         skipped; points with a non-finite guess, or whose Newton from the guess does not

@@ -1,13 +1,13 @@
 """The mean contact point M of a gear flank: the design point of a pair (projection plane).
 
-The point where the local synthesis (:mod:`geometry.synthesis`; Litvin & Fuentes 2004
-ch. 9) places the contact of the mean roll position and where the conventional TCA
-(:mod:`geometry.conventional_tca`) takes its reference (roll 0): on the gear flank at the
+The point where the local synthesis (:mod:`geometry.synthesis.flank_synthesis`; Litvin & Fuentes
+2004 ch. 9) places the contact of the mean roll position and where the conventional TCA
+(:mod:`geometry.pair.conventional_tca`) takes its reference (roll 0): on the gear flank at the
 gear's mean cone distance, centred in roll within the working depth, i.e. the point that the
 ideal motion brings onto the surface of action n·v⁽¹²⁾ = 0 halfway through the roll range
 between the gear tip and the lowest point the pinion tip reaches. A module below both
-:mod:`geometry.synthesis` (which re-exports these functions) and
-:mod:`geometry.conventional_tca`, so that neither imports the other for it.
+:mod:`geometry.synthesis.flank_synthesis` (which re-exports these functions) and
+:mod:`geometry.pair.conventional_tca`, so that neither imports the other for it.
 
 Public functions
 ----------------
@@ -24,13 +24,13 @@ import math
 import numpy as np
 from scipy.optimize import brentq
 
-from geometry.assembly import member_transform
 from geometry.case import Blank, Case
-from geometry.cutter import Blade
-from geometry.errors import InputError
-from geometry.flank import blank_outline
-from geometry.flank_point import flank_points
-from geometry.machine import MachineSettings
+from geometry.core.errors import InputError
+from geometry.machine.cradle import MachineSettings
+from geometry.machine.cutter import Blade
+from geometry.machine.flank import blank_outline
+from geometry.machine.flank_point import flank_points
+from geometry.pair.assembly import member_transform
 
 __all__ = ["action_rotation", "design_point", "design_point_of_case", "mean_addendum"]
 
@@ -66,7 +66,7 @@ def action_rotation(points, normals, pinion_blank: Blank, gear_blank: Blank, *,
     shaft_angle : float — [rad]
     offset : float — [mm]
     gear_hand : str
-        ``"right"`` or ``"left"`` (the assembly of :func:`geometry.assembly.member_transform`,
+        ``"right"`` or ``"left"`` (the assembly of :func:`geometry.pair.assembly.member_transform`,
         nominal, pinion at rotation 0).
 
     Returns
@@ -81,7 +81,7 @@ def action_rotation(points, normals, pinion_blank: Blank, gear_blank: Blank, *,
     Raises
     ------
     InputError
-        For a bad hand or shaft angle (:func:`geometry.assembly.member_transform`).
+        For a bad hand or shaft angle (:func:`geometry.pair.assembly.member_transform`).
 
     Notes
     -----
@@ -132,7 +132,8 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
 
     Parameters
     ----------
-    gear_blade, gear_settings : geometry.cutter.Blade, geometry.machine.MachineSettings
+    gear_blade, gear_settings : geometry.machine.cutter.Blade,
+    geometry.machine.cradle.MachineSettings
         The tool of the gear flank (right-hand reference settings).
     gear_blank, pinion_blank : geometry.case.Blank
     gear_hand : str

@@ -8,11 +8,11 @@ flank's machine and blade settings that explain them, and the changes that cance
 Measured deviation of a flank cut with other settings
 -----------------------------------------------------
 As a CMM measures: at every nominal grid point p (projection-plane fractions (u, v) of
-:func:`geometry.flank.projection_grid`) with outward unit normal n, the deviation is the t
+:func:`geometry.machine.flank.projection_grid`) with outward unit normal n, the deviation is the t
 at which the line p + t n pierces the flank cut with the changed settings; positive =
 material added (:mod:`contact.utca.deviations`' convention). :func:`cmm_deviation` finds t by
 a tangent-plane Newton iteration on the generator: the changed flank's point at the axial
-section (z, ρ) of the current point x = p + t n (:func:`geometry.flank.flank_at`) differs
+section (z, ρ) of the current point x = p + t n (:func:`geometry.machine.flank.flank_at`) differs
 from x only along the circle of that section, so t ← t + (r − x)·n′ / (n·n′) with r, n′
 its point and normal; two or three steps reach 1e-11 mm.
 
@@ -75,9 +75,9 @@ import numpy as np
 import scipy.linalg
 from scipy.optimize import lsq_linear
 
-from geometry.errors import InputError
-from geometry.flank import FlankSurface, blank_outline, flank_at
-from geometry.validation import one_of, positive, real_array
+from geometry.core.errors import InputError
+from geometry.core.validation import one_of, positive, real_array
+from geometry.machine.flank import FlankSurface, blank_outline, flank_at
 
 if TYPE_CHECKING:
     from geometry.case import Blank, Case, FlankTool
@@ -131,8 +131,8 @@ class SettingVariable:
         The variable's name (the case file's field, or the summary's name of a Taylor
         coefficient: 2C, 6D, 24E, 120F, H1…H4, V1…V4).
     owner : str
-        ``"machine"`` (:class:`geometry.machine.MachineSettings`) or ``"blade"``
-        (:class:`geometry.cutter.Blade`).
+        ``"machine"`` (:class:`geometry.machine.cradle.MachineSettings`) or ``"blade"``
+        (:class:`geometry.machine.cutter.Blade`).
     field : str
         The dataclass field that holds it.
     index : int or None
@@ -233,7 +233,7 @@ def setting_value(tool: FlankTool, name: str) -> float:
     -------
     float
         In internal units (rad, mm; Taylor coefficients as in
-        :class:`geometry.machine.MachineSettings`); a coefficient beyond the given list is 0.
+        :class:`geometry.machine.cradle.MachineSettings`); a coefficient beyond the given list is 0.
 
     Raises
     ------
@@ -265,7 +265,7 @@ def tool_with_values(tool: FlankTool, values: Mapping[str, float]) -> FlankTool:
     ------
     InputError
         For an unknown name or a value outside the setting's valid range (the message of
-        :class:`geometry.machine.MachineSettings` / :class:`geometry.cutter.Blade`).
+        :class:`geometry.machine.cradle.MachineSettings` / :class:`geometry.machine.cutter.Blade`).
     """
     changes: dict[str, dict] = {"machine": {}, "blade": {}}
     for name, value in values.items():
@@ -326,7 +326,7 @@ def measurement_places(blank: Blank, u, v) -> tuple[np.ndarray, np.ndarray]:
     Returns
     -------
     axial, radius : ndarray (nu, nv) — [mm]
-        The bilinear map of :func:`geometry.flank.projection_grid` (same layout, arbitrary
+        The bilinear map of :func:`geometry.machine.flank.projection_grid` (same layout, arbitrary
         fractions).
     """
     c = blank_outline(blank).corners
@@ -354,7 +354,7 @@ def cmm_deviation(case: Case, member: str, flank: str, position, normal, *,
         Their outward unit normals n.
     guess : FlankSurface, optional
         Envelope parameters of nearby solutions (e.g. the nominal flank at these points),
-        passed to :func:`geometry.flank.flank_at`.
+        passed to :func:`geometry.machine.flank.flank_at`.
     max_iter : int
         Newton steps at most.
 
@@ -458,7 +458,7 @@ def settings_deviation(case: Case, member: str, flank: str, values: Mapping[str,
     Raises
     ------
     InputError
-        As :func:`tool_with_values` and :func:`geometry.flank.flank_at`.
+        As :func:`tool_with_values` and :func:`geometry.machine.flank.flank_at`.
     """
     nom = _nominal(case, member, flank, u, v)
     changed = case_with_values(case, member, flank, values)
@@ -901,7 +901,8 @@ def corrected_case(case: Case, corrections: Sequence[SettingCorrection], *,
         For two corrections of one flank, or corrected values outside a setting's range.
     """
     seen = set()
-    table: dict = {"source_case": case.name, "method": "geometry.correction.corrective_settings"
+    table: dict = {"source_case": case.name, "method":
+    "geometry.synthesis.correction.corrective_settings"
                    " (least squares on CMM-deviation sensitivities, subset selection)",
                    "sign": "correction = setting change to apply to the machine to cancel the "
                            "measured deviation (= minus the identified settings error)"}

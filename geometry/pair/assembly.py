@@ -6,14 +6,14 @@ Origin at the gear's crossing point; z_f along the gear axis from its apex side 
 gear body (the gear's own z); the pinion axis lies in the plane y_f = y_E and points along
 z_p = (sin Σ, 0, cos Σ) from its apex side into the pinion body; x_p = (−cos Σ, 0, sin Σ),
 y_p = (0, −1, 0). With these axes the mesh zone lies on the +x side of both members (where
-each member's reference tooth is cut, see :mod:`geometry.machine`) and the pinion crossing
+each member's reference tooth is cut, see :mod:`geometry.machine.cradle`) and the pinion crossing
 point is at (0, y_E, 0).
 
 Offset: y_E = h (E + ΔE) with h = +1 when the gear is right-hand, −1 when left-hand, so a
 positive offset E is the ISO 23509 sign (the pinion's mean spiral angle exceeds the
 gear's; "below centre" for a left-hand pinion). Mirroring the whole pair in y_f swaps
 both hands and mirrors each member in its own frame (y → −y), consistent with
-:mod:`geometry.machine`.
+:mod:`geometry.machine.cradle`.
 
 Misalignments, in the Gleason V–H check convention as we know it (Krenzer 1981,
 "Understanding Tooth Contact Analysis", seed ref. 2.2; Stadtfeld 1993, "Handbook of Bevel
@@ -43,8 +43,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from geometry.errors import InputError
-from geometry.validation import real
+from geometry.core.errors import InputError
+from geometry.core.validation import real
 
 __all__ = [
     "HANDS",

@@ -2,10 +2,11 @@
 
 One evaluator of a generated (or Formate) flank for the solvers that need first and second
 order surface data at prescribed places (axial position Z, radius P) of the member's
-projection plane: the conventional TCA (:mod:`geometry.conventional_tca`, seed Eq. 2.14) and
-the synthesis (:mod:`geometry.synthesis`, :mod:`geometry.design_point`). Each point is solved
-by :func:`geometry.meshing.solve_envelope` (seed Eq. 2.7–2.8); the shape operator comes from
-the principal curvatures of :func:`geometry.curvature.surface_curvatures` (seed Eq.
+projection plane: the conventional TCA (:mod:`geometry.pair.conventional_tca`, seed Eq. 2.14) and
+the synthesis (:mod:`geometry.synthesis.flank_synthesis`, :mod:`geometry.pair.design_point`). Each
+point is solved
+by :func:`geometry.machine.meshing.solve_envelope` (seed Eq. 2.7–2.8); the shape operator comes from
+the principal curvatures of :func:`geometry.machine.curvature.surface_curvatures` (seed Eq.
 2.9–2.13), W = κ₁e₁e₁ᵀ + κ₂e₂e₂ᵀ with dn = W dr; the tangents ∂r/∂Z, ∂r/∂P follow from the
 surface tangents along the blade (s) and about the cutter axis (θ), with the roll q
 eliminated through the equation of meshing for a generated flank, by inverting the 2 × 2 map
@@ -25,11 +26,11 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
-from geometry.curvature import surface_curvatures
-from geometry.cutter import Blade
-from geometry.errors import InputError
-from geometry.machine import MachineSettings, meshing_function
-from geometry.meshing import solve_envelope
+from geometry.core.errors import InputError
+from geometry.machine.cradle import MachineSettings, meshing_function
+from geometry.machine.curvature import surface_curvatures
+from geometry.machine.cutter import Blade
+from geometry.machine.meshing import solve_envelope
 
 if TYPE_CHECKING:
     from geometry.case import Blank, Case
@@ -51,7 +52,7 @@ class FlankPoint(NamedTuple):
     shape: np.ndarray  # (..., 3, 3) [1/mm] shape operator W (dn = W dr), convex positive
     r_s: np.ndarray  # (..., 3) [1] unit tangent along the blade (root → tip)
     tangents: np.ndarray  # (..., 3, 2) [mm/mm] ∂r/∂Z, ∂r/∂P in the projection plane
-    ok: np.ndarray  # (...,) bool: generated (geometry.meshing reason 0), finite derivatives
+    ok: np.ndarray  # (...,) bool: generated (geometry.machine.meshing reason 0), finite derivatives
     params: np.ndarray  # (..., 4) envelope parameters s [mm], θ [rad], q [rad], section
 
 
@@ -98,9 +99,9 @@ def flank_points(blade: Blade, machine: MachineSettings, blank: Blank, hand: str
 
     Parameters
     ----------
-    blade : geometry.cutter.Blade
+    blade : geometry.machine.cutter.Blade
         The blade that cuts the flank.
-    machine : geometry.machine.MachineSettings
+    machine : geometry.machine.cradle.MachineSettings
         Its right-hand reference settings (Generate or Formate).
     blank : geometry.case.Blank
         The member blank (its outer cone distance scales the meshing residual, its whole
@@ -119,7 +120,7 @@ def flank_points(blade: Blade, machine: MachineSettings, blank: Blank, hand: str
     FlankPoint
         In the member frame, arrays of the targets' shape plus trailing dimensions. Targets
         that are not finite, not off the axis (P ≤ 0), not generated (reason ≠ 0 of
-        :func:`geometry.meshing.solve_envelope`) or whose derivatives are not finite have
+        :func:`geometry.machine.meshing.solve_envelope`) or whose derivatives are not finite have
         ``ok`` False and NaN in every other field; if no target seeds the envelope solver,
         all are.
 
@@ -135,7 +136,7 @@ def flank_points(blade: Blade, machine: MachineSettings, blank: Blank, hand: str
     middle target and, if no solution exists there, at its neighbour. With r_s, r_θ the
     surface tangents along the blade and about the cutter axis (for a generated flank
     r_s + r_q q_s, r_θ + r_q q_θ with q_s, q_θ from the gradient of the equation of meshing,
-    :func:`geometry.machine.meshing_function`), the tangents are [∂r/∂Z, ∂r/∂P] =
+    :func:`geometry.machine.cradle.meshing_function`), the tangents are [∂r/∂Z, ∂r/∂P] =
     [r_s, r_θ] A⁻¹, A the rows (e_z·, e_ρ·) of [r_s, r_θ].
     """
     z = np.asarray(axial, dtype=float)

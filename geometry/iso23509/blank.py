@@ -1,7 +1,7 @@
 """Blank geometry of spiral bevel and hypoid gears after ISO 23509:2016, clause 6.
 
-:func:`gear_dimensions` takes the basic design data (:class:`~geometry.pitch_cone.
-BevelGearDesign`) and the pitch cone (:func:`~geometry.pitch_cone.pitch_cone`) and returns
+:func:`gear_dimensions` takes the basic design data (:class:`~geometry.iso23509.pitch_cone.
+BevelGearDesign`) and the pitch cone (:func:`~geometry.iso23509.pitch_cone.pitch_cone`) and returns
 the blank of both members: cone distances, spiral angles at heel, mean point and toe,
 pitch/face/root angles and apexes, addenda and dedenda, tooth depth, mean normal tooth
 thickness, diameters and crown-to-crossing-point distances, as frozen dataclasses
@@ -42,7 +42,7 @@ checked against the Annex F examples (``tests/data/iso23509_annex_f_face_milling
   rule was taken from a transcription of the standard; no printed value checks it);
 * spiral angles at heel and toe follow the tooth trace in the pitch plane
   (:func:`spiral_angle_at`): the cutter circle of radius r_c0 for face milling, the
-  extended epicycloid of :func:`~geometry.pitch_cone.face_hobbing_trace` for face hobbing
+  extended epicycloid of :func:`~geometry.iso23509.pitch_cone.face_hobbing_trace` for face hobbing
   (β(R) = arctan[(R − ρ_b cos q)/(ρ_b sin q)], q the angle at the crown gear centre between
   the point and the cutter centre; sample 3: β_e1 within 0.01 %), for the gear at its own
   face-width ends. For the pinion of a
@@ -69,10 +69,10 @@ from typing import Any, ClassVar
 import numpy as np
 import xarray as xr
 
-from geometry._version import __version__
-from geometry.errors import InputError
-from geometry.pitch_cone import BevelGearDesign, PitchCone, face_hobbing_trace, pitch_cone
-from geometry.validation import positive, real
+from geometry.core.errors import InputError
+from geometry.core.validation import positive, real
+from geometry.core.version import __version__
+from geometry.iso23509.pitch_cone import BevelGearDesign, PitchCone, face_hobbing_trace, pitch_cone
 
 __all__ = [
     "BACKLASH_TO_MEAN_NORMAL",
@@ -277,7 +277,7 @@ def spiral_angle_at(
         β(R) [rad]. Face milling: arcsin[(R² − R_m² + 2 R_m r_c0 sin β_m) / (2 R r_c0)].
         Face hobbing: arctan[(R − ρ_b cos q) / (ρ_b sin q)] with
         q = arccos[(R² + ρ_P0² − r_c0²) / (2 R ρ_P0)], ρ_P0 and ρ_b of the tooth trace at the
-        mean point (:func:`~geometry.pitch_cone.face_hobbing_trace`).
+        mean point (:func:`~geometry.iso23509.pitch_cone.face_hobbing_trace`).
 
     Raises
     ------
@@ -456,8 +456,8 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
     design : BevelGearDesign
         Basic design data.
     pitch : PitchCone, optional
-        Pitch cone of ``design``; computed with :func:`~geometry.pitch_cone.pitch_cone` when
-        omitted.
+        Pitch cone of ``design``; computed with :func:`~geometry.iso23509.pitch_cone.pitch_cone`
+        when omitted.
 
     Returns
     -------
@@ -644,7 +644,7 @@ def blank_geometry(design: BevelGearDesign) -> BlankGeometry:
     Raises
     ------
     InputError, ModelUnavailableError
-        As :func:`~geometry.pitch_cone.pitch_cone` and :func:`gear_dimensions`.
+        As :func:`~geometry.iso23509.pitch_cone.pitch_cone` and :func:`gear_dimensions`.
     """
     return gear_dimensions(design, pitch_cone(design))
 

@@ -1,7 +1,7 @@
 """Input validators of the whole toolkit: one set, one message style.
 
 Every public function checks its physical inputs at the boundary and raises
-:class:`geometry.errors.InputError` naming the field and the accepted range, so a bad value
+:class:`geometry.core.errors.InputError` naming the field and the accepted range, so a bad value
 never reaches numpy (no NaN passed on, no crash deep inside). The messages all read
 
     ``<field>: must be <accepted> [<unit>], got <value>``
@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = ["broadcast", "integer", "one_of", "positive", "real", "real_array", "scalar_or_array"]
 

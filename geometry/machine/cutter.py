@@ -55,8 +55,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.errors import InputError
-from geometry.validation import real
+from geometry.core.errors import InputError
+from geometry.core.validation import real
 
 __all__ = [
     "BLADE_SIDES",
@@ -261,7 +261,7 @@ def mirror_blade(blade: Blade) -> Blade:
     D R_z(a) D = R_z(−a) and D R_x(a) D = R_x(−a), while the profile point [ρ − r_p, 0, −h]
     of the rake plane is its own mirror image, so
     D B(θ_b, γ_a, γ_h) e_b = B(−θ_b, −γ_a, −γ_h) e_b (γ_a = δ_b + rake). Used with
-    :func:`geometry.machine.mirror_settings` (θ → −θ, q → −q, κ unchanged) it generates
+    :func:`geometry.machine.cradle.mirror_settings` (θ → −θ, q → −q, κ unchanged) it generates
     the mirror image D r_g of the member.
     """
     return replace(blade, blade_phase=-blade.blade_phase,
@@ -387,7 +387,7 @@ def profile_sections(blade: Blade) -> ProfileSections:
 
 def working_sections(blade: Blade | ProfileSections) -> list[int]:
     """Indices of the sections that cut the working flank: the profile and its toprem and
-    flankrem lines (relief, :mod:`geometry.relief`), not the edge radius (the fillet).
+    flankrem lines (relief, :mod:`geometry.machine.relief`), not the edge radius (the fillet).
 
     Parameters
     ----------

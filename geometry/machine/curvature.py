@@ -37,8 +37,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.errors import InputError
-from geometry.machine import GeneratedFamily, cross, dot, meshing_function
+from geometry.core.errors import InputError
+from geometry.machine.cradle import GeneratedFamily, cross, dot, meshing_function
 
 __all__ = [
     "PrincipalCurvatures",
@@ -105,7 +105,7 @@ def surface_curvatures(family: GeneratedFamily, generate: bool,
 
     Parameters
     ----------
-    family : geometry.machine.GeneratedFamily
+    family : geometry.machine.cradle.GeneratedFamily
         r_g and its derivatives evaluated at points that satisfy the equation of meshing
         (e.g. ``EnvelopeSolution.family``), shape (..., 3).
     generate : bool
@@ -119,7 +119,7 @@ def surface_curvatures(family: GeneratedFamily, generate: bool,
         κ_1 ≥ κ_2 [1/mm] (positive convex) and unit directions in the blank frame.
 
     Where the envelope is singular (∂f/∂q = 0: no regular parametrisation, the edge of
-    undercut) the curvatures are NaN; :func:`geometry.meshing.solve_envelope` masks points
+    undercut) the curvatures are NaN; :func:`geometry.machine.meshing.solve_envelope` masks points
     beyond that line as ``undercut``.
 
     Notes

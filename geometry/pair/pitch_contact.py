@@ -22,8 +22,8 @@ import math
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from geometry.assembly import Misalignment, member_transform
-from geometry.errors import InputError
+from geometry.core.errors import InputError
+from geometry.pair.assembly import Misalignment, member_transform
 
 __all__ = ["PITCH_GAP_TOLERANCE", "check_pitch_contact", "pitch_circle_gap"]
 
@@ -60,7 +60,7 @@ def pitch_circle_gap(case, *, offset: float | None = None) -> tuple[float, float
     Notes
     -----
     ISO 23509:2016 §5 (the pitch cones of a hypoid pair are tangent at the mean point P);
-    the frames are those of :func:`geometry.assembly.member_transform` without
+    the frames are those of :func:`geometry.pair.assembly.member_transform` without
     misalignment. The distance of a gear point to the pinion circle is exact (in the
     pinion frame: √((ρ − r₁)² + (z − z₁)²)); the gear angle is searched on 3600 points,
     then refined by Brent's method.

@@ -24,7 +24,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from geometry.errors import InputError
+from geometry.core.errors import InputError
 
 __all__ = ["check_output_dir", "check_output_file"]
 
@@ -63,7 +63,7 @@ def check_output_file(path: str | os.PathLike[str], *, option: str = "-o",
         The option that names it, for the message (e.g. ``"-o"``).
     create_parents : bool
         The writer creates missing directories (``ltca synthesize``): they are created
-        now; otherwise the file's directory must exist (:func:`contact.io.write_netcdf`).
+        now; otherwise the file's directory must exist (:func:`geometry.core.io.write_netcdf`).
 
     Returns
     -------
@@ -71,7 +71,7 @@ def check_output_file(path: str | os.PathLike[str], *, option: str = "-o",
 
     Raises
     ------
-    geometry.errors.InputError
+    geometry.core.errors.InputError
         ``path`` is a directory, its directory does not exist (and is not to be created)
         or cannot be created, or no file can be created in it; the message names
         ``option``.
@@ -104,7 +104,7 @@ def check_output_dir(path: str | os.PathLike[str], *, option: str = "--plots") -
 
     Raises
     ------
-    geometry.errors.InputError
+    geometry.core.errors.InputError
         ``path`` is an existing file, cannot be created, or no file can be created in it;
         the message names ``option``.
     """

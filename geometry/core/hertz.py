@@ -35,7 +35,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from geometry.validation import broadcast, real, real_array
+from geometry.core.validation import broadcast, real, real_array
 
 __all__ = ["STEEL", "HertzLineContact", "contact_modulus", "hertz_line_contact"]
 

@@ -77,8 +77,8 @@ from typing import Any
 
 from scipy.optimize import brentq
 
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.validation import integer, one_of, positive, real
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.validation import integer, one_of, positive, real
 
 __all__ = [
     "BACKLASH_KINDS",
@@ -121,7 +121,7 @@ class BevelGearDesign:
     Angles are in radians and lengths in millimetres; :meth:`from_degrees` builds the
     object from angles in degrees (as in case files). Fields are keyword-only. Every field is
     validated on construction; a bad, missing or superfluous value raises
-    :class:`~geometry.errors.InputError` naming the field and its accepted range.
+    :class:`~geometry.core.errors.InputError` naming the field and its accepted range.
 
     Parameters
     ----------

@@ -4,9 +4,9 @@ synthesis.
 A basic file (``cases/basic/*.toml``, schema in ``docs/synthesis.md``) holds
 
 * ``name``, ``source`` — the case to write and where the data come from;
-* ``[design]`` — the ISO 23509 inputs of :class:`geometry.pitch_cone.BevelGearDesign`
+* ``[design]`` — the ISO 23509 inputs of :class:`geometry.iso23509.pitch_cone.BevelGearDesign`
   (angles in degrees, lengths in mm), from which the blanks follow
-  (:func:`geometry.blank.blank_geometry`);
+  (:func:`geometry.iso23509.blank.blank_geometry`);
 * ``[targets]`` (optional) — published values the blank must reproduce (mean spiral angle of
   the gear, outer cone distances …) and the design fields ``adjust`` that are varied to hit
   them (least squares; the achieved values are reported in the case ``source``);
@@ -36,11 +36,11 @@ from typing import Any
 
 from scipy.optimize import least_squares
 
-from geometry.blank import BlankGeometry, blank_geometry
 from geometry.case import operating_from_dict, read_toml
-from geometry.errors import InputError, ModelUnavailableError
-from geometry.pitch_cone import BevelGearDesign
-from geometry.validation import real
+from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.validation import real
+from geometry.iso23509.blank import BlankGeometry, blank_geometry
+from geometry.iso23509.pitch_cone import BevelGearDesign
 
 __all__ = [
     "FLANK_OPTION_UNITS",
@@ -88,7 +88,7 @@ class FlankOptions:
         would have to move infinitely fast (``docs/synthesis.md``).
     te_level : float — [rad]
         Unloaded TE of one tooth pair at ±1 pitch of pinion roll from M (the gear lag of
-        :mod:`geometry.conventional_tca`): TE(roll) = a21/2 · roll², a21 = 2 te_level/(2π/z1)².
+        :mod:`geometry.pair.conventional_tca`): TE(roll) = a21/2 · roll², a21 = 2 te_level/(2π/z1)².
         Default 45 µrad, in (0, 1000 µrad].
     ellipse_length : float — [1]
         Major axis 2a of the contact ellipse at M as a fraction of the gear face width, at
@@ -97,7 +97,7 @@ class FlankOptions:
         Elastic approach δ (the separation that bounds the unloaded pattern), default
         0.0063 mm, in (0, 0.1].
     tip_relief, root_relief : float — [mm]
-        Profile relief of the pinion flank (:mod:`geometry.relief`): normal ease-off added
+        Profile relief of the pinion flank (:mod:`geometry.machine.relief`): normal ease-off added
         at the flank's tip end and at its root end (the lowest point the gear tip reaches),
         at the mean section, by the blade's flankrem and toprem. Default 0.015 mm each (the
         10–30 µm of automotive practice), in [0, 0.2); the file gives them in µm.

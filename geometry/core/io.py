@@ -29,10 +29,10 @@ import numpy as np
 import xarray as xr
 
 from geometry import __version__
-from geometry.atomic_files import atomic_path
-from geometry.conventions import data_var
-from geometry.errors import InputError, LTCAError
-from geometry.validation import integer
+from geometry.core.atomic_files import atomic_path
+from geometry.core.conventions import data_var
+from geometry.core.errors import InputError, LTCAError
+from geometry.core.validation import integer
 
 __all__ = [
     "ACDD_ATTRS",
@@ -269,7 +269,7 @@ def write_netcdf(
     missing values carry no ``_FillValue``; numeric data variables are zlib-compressed
     (lossless). The file is written to a temporary file beside ``path`` which is renamed
     onto ``path`` only once complete; an interrupt (Ctrl-C, SIGTERM) during the write
-    leaves the old file and no temporary file (:func:`geometry.atomic_files.atomic_path`).
+    leaves the old file and no temporary file (:func:`geometry.core.atomic_files.atomic_path`).
 
     Parameters
     ----------
@@ -314,7 +314,7 @@ def write_netcdf(
         encoding = _encoding(out, complevel)
     try:
         # a temporary file renamed onto path once complete; Ctrl-C/SIGTERM held until the
-        # HDF5 library returns, then the old file kept (geometry.atomic_files)
+        # HDF5 library returns, then the old file kept (geometry.core.atomic_files)
         with atomic_path(path) as tmp:
             out.to_netcdf(tmp, engine=_ENGINE, encoding=encoding)
     except Exception as exc:
