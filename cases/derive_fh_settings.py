@@ -8,7 +8,7 @@ It writes ``tests/data/fh_iso23509_s2_crown.toml``: the ISO 23509 Annex F sample
 (hypoid 13/42) cut by face hobbing with z0 = 5 blade groups and a cutter of r_c0 = 82.55 mm:
 
 * gear Formate, the closed-form face-hobbing tools of
-  :func:`geometry.synthesis.flank_synthesis.gear_formate_tools` (``blade_groups = 5``): slot
+  :func:`geometry.synthesis.gear.gear_formate_tools` (``blade_groups = 5``): slot
   centre line
   the extended epicycloid through the mean root point with the gear's spiral angle, outside
   blade leading the inside blade by half a group pitch, rake planes at the lead angle;
@@ -33,7 +33,7 @@ sys.path.insert(0, str(ROOT))
 from geometry.case import case_from_dict  # noqa: E402
 from geometry.iso23509.blank import blank_geometry  # noqa: E402
 from geometry.iso23509.pitch_cone import BevelGearDesign  # noqa: E402
-from geometry.synthesis.flank_synthesis import case_blank, gear_formate_tools  # noqa: E402
+from geometry.synthesis.case_synthesis import case_blank, gear_formate_tools  # noqa: E402
 
 Z0 = 5
 RC0 = 82.55  # [mm] 3.25 in
@@ -79,7 +79,7 @@ def derive() -> dict:
             "Written by cases/derive_fh_settings.py: ISO 23509:2016 Annex F sample 2 blank "
             "(hypoid 13x42, Method 1) face-hobbed with z0 = 5 blade groups, r_c0 = 82.55 mm. "
             "Gear Formate by the closed-form face-hobbing tools of "
-            "geometry.synthesis.flank_synthesis.gear_formate_tools (slot centre line the extended "
+            "geometry.synthesis.gear.gear_formate_tools (slot centre line the extended "
             "epicycloid "
             "through the mean root point, OB leading IB by half a group pitch, rake planes at "
             "the lead angle); pinion Generate by its own face-hobbing crown gear in its root "

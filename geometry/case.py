@@ -31,7 +31,6 @@ import json
 import logging
 import math
 import os
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -39,6 +38,7 @@ from types import MappingProxyType
 from typing import Any
 
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.toml_files import dump_toml, read_toml
 from geometry.core.validation import integer, positive, real
 from geometry.machine.convention import (
     SPYGO_BLADE_FIELDS,
@@ -375,7 +375,7 @@ class Case:
             always in our convention (``docs/machine.md``), whatever convention the loaded
             file declared, so no ``convention`` key is written.
         """
-        return _dump_toml(_case_to_dict(self))
+        return dump_toml(_case_to_dict(self))
 
 
 # ---------------------------------------------------------------------------- schema
@@ -775,39 +775,6 @@ def load_case(path: str | os.PathLike[str]) -> Case:
     return case_from_dict(read_toml(p, "case file"), base_dir=p.resolve().parent)
 
 
-def read_toml(path: str | os.PathLike[str], what: str) -> dict[str, Any]:
-    """Parse a TOML input file, refusing a bad one in one line that names it.
-
-    Parameters
-    ----------
-    path : path-like
-    what : str
-        What the file is, for the messages (``"case file"``, ``"basic file"``).
-
-    Returns
-    -------
-    dict
-        The parsed document (TOML 1.0, :mod:`tomllib`).
-
-    Raises
-    ------
-    InputError
-        The file is missing, unreadable, not UTF-8 text or not valid TOML.
-    """
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"{what}: no such file {str(p)!r}")
-    try:
-        return tomllib.loads(p.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"{what} {str(p)!r}: invalid TOML: {exc}") from None
-    except UnicodeDecodeError as exc:
-        raise InputError(f"{what} {str(p)!r}: not UTF-8 text (byte {exc.start}); a TOML "
-                         "file is expected") from None
-    except OSError as exc:
-        raise InputError(f"{what} {str(p)!r}: cannot be read ({exc.strerror or exc})") from None
-
-
 # ---------------------------------------------------------------------------- writing
 def _values(obj, schema: dict) -> dict[str, Any]:
     out = {}
@@ -858,51 +825,3 @@ def operating_to_dict(misalignment: Misalignment, operating: OperatingPoint,
     :func:`operating_from_dict`."""
     op = _values(operating, _OPERATING_POINT_FIELDS)
     return {"torque": op.pop("torque"), **_values(misalignment, _MISALIGNMENT_FIELDS), **op}
-
-
-def _toml_value(v: Any) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        if math.isnan(v):
-            raise InputError(f"to_toml: non-finite value {v!r}")
-        if math.isinf(v):  # TOML 1.0 floats include inf (an [optimize] limit: no limit)
-            return "inf" if v > 0 else "-inf"
-        return repr(v)
-    if isinstance(v, str):
-        return json.dumps(v, ensure_ascii=False)
-    if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
-    raise InputError(f"to_toml: cannot write a value of type {type(v).__name__}")
-
-
-def _toml_key(k: str) -> str:
-    if k and all(c.isalnum() or c in "-_" for c in k):
-        return k
-    return json.dumps(k)
-
-
-def _dump_toml(doc: Mapping[str, Any], prefix: str = "") -> str:
-    lines: list[str] = []
-    tables = []
-    for k, v in doc.items():
-        if isinstance(v, Mapping):
-            tables.append((k, v))
-        elif isinstance(v, list) and v and all(isinstance(x, Mapping) for x in v):
-            tables.append((k, v))
-        else:
-            lines.append(f"{_toml_key(k)} = {_toml_value(v)}")
-    for k, v in tables:
-        name = f"{prefix}.{_toml_key(k)}" if prefix else _toml_key(k)
-        if isinstance(v, list):
-            for item in v:
-                lines.append(f"\n[[{name}]]")
-                lines.append(_dump_toml(item, name).rstrip("\n"))
-        else:
-            lines.append(f"\n[{name}]")
-            body = _dump_toml(v, name).rstrip("\n")
-            if body:
-                lines.append(body)
-    return "\n".join(line for line in lines) + "\n"

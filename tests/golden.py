@@ -132,7 +132,7 @@ MOVED_MODULES = {
     "geometry.pitch_contact": "geometry.pair.pitch_contact",
     "geometry.conventional_tca": "geometry.pair.conventional_tca",
     "geometry.basic_design": "geometry.synthesis.basic_design",
-    "geometry.synthesis": "geometry.synthesis.flank_synthesis",
+    "geometry.synthesis": "geometry.synthesis.case_synthesis",
     "geometry.correction": "geometry.synthesis.correction",
     "contact.output_paths": "contact.commands.output_paths",
     "contact.deviation_files": "contact.utca.deviation_files",

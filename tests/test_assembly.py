@@ -19,8 +19,8 @@ from scipy.optimize import least_squares
 
 from geometry.case import load_case
 from geometry.core.errors import InputError
-from geometry.machine.cradle import generated_family
 from geometry.machine.cutter import profile_sections
+from geometry.machine.family import generated_family
 from geometry.machine.flank import blank_outline, flank_surface
 from geometry.machine.meshing import solve_envelope
 from geometry.pair.assembly import (

@@ -32,17 +32,16 @@ from geometry.core.errors import InputError
 from geometry.iso23509.blank import blank_geometry
 from geometry.machine.cradle import (
     MachineSettings,
-    generated_family,
     indexing_ratio,
     machine_transform,
-    meshing_function,
     mirror_settings,
 )
 from geometry.machine.cutter import Blade, mirror_blade, profile_sections
+from geometry.machine.family import generated_family, meshing_function
 from geometry.machine.flank import flank_surface, projection_grid
 from geometry.machine.flank_point import flank_points
 from geometry.machine.meshing import solve_envelope
-from geometry.synthesis.flank_synthesis import case_blank, gear_formate_tools
+from geometry.synthesis.case_synthesis import case_blank, gear_formate_tools
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_blank import design_from_annex  # the ISO 23509 Annex F sample designs

@@ -19,9 +19,7 @@ from geometry.core.errors import InputError
 from geometry.machine.cradle import (
     MachineSettings,
     cutter_pose,
-    generated_family,
     machine_transform,
-    meshing_function,
     mirror_settings,
     roll_angle,
     settings_from_poses,
@@ -33,6 +31,7 @@ from geometry.machine.cutter import (
     cutter_surface,
     profile_sections,
 )
+from geometry.machine.family import generated_family, meshing_function
 from geometry.machine.flank import flank_surface
 
 CASES = Path(__file__).resolve().parents[1] / "cases"

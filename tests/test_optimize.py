@@ -182,13 +182,13 @@ def test_synthesis_inputs_are_variables_of_a_basic_design_start():
     """Started from a basic design, the flank prescriptions are variables: their start
     values are the basic file's (file units: deg, µrad, µm), a design re-synthesises the
     basic design with them — the same case, setting for setting, as ``ltca synthesize`` of
-    the changed prescriptions (both are :func:`geometry.synthesis.flank_synthesis.synthesize`; 1e-12
+    the changed prescriptions (both are :func:`geometry.synthesis.case_synthesis.synthesize`; 1e-12
     relative, the synthesis is deterministic) — and a setting variable is applied on top
     of the re-synthesised flank. The committed case is the basic file's synthesis, so it is
     the start."""
     from contact.optimize import case_at, start_values
     from geometry.synthesis.basic_design import with_flank_options
-    from geometry.synthesis.flank_synthesis import synthesize
+    from geometry.synthesis.case_synthesis import synthesize
 
     basic = _basic()
     case = _case()

@@ -112,7 +112,7 @@ def test_case_is_its_basic_design_at_the_recorded_optimum():
     to 12 digits)."""
     from contact.optimize import case_at
     from geometry.synthesis.basic_design import load_basic
-    from geometry.synthesis.flank_synthesis import synthesize
+    from geometry.synthesis.case_synthesis import synthesize
 
     case = _case()
     table = case.extra["optimize"]

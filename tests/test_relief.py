@@ -24,8 +24,8 @@ from geometry.core.errors import InputError
 from geometry.machine.flank_point import flank_points
 from geometry.machine.relief import blade_relief, relief_places, relieved_blade
 from geometry.synthesis.basic_design import basic_from_dict
+from geometry.synthesis.case_synthesis import synthesize
 from geometry.synthesis.correction import cmm_deviation
-from geometry.synthesis.flank_synthesis import synthesize
 
 ROOT = Path(__file__).resolve().parents[1]
 BASIC = ROOT / "cases" / "basic" / "kolivand2009_fm_11x41.toml"

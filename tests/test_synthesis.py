@@ -24,14 +24,15 @@ from contact.cli import main as ltca
 from contact.utca.easeoff import ease_off
 from geometry.case import load_case
 from geometry.core.errors import InputError, ModelUnavailableError
-from geometry.machine.cradle import cutter_pose, generated_family, roll_angle
+from geometry.machine.cradle import cutter_pose, roll_angle
 from geometry.machine.curvature import PrincipalCurvatures, relative_curvature, surface_curvatures
+from geometry.machine.family import generated_family
 from geometry.machine.flank import blank_outline
 from geometry.machine.meshing import solve_envelope
 from geometry.pair.assembly import Misalignment, case_transforms
 from geometry.pair.conventional_tca import ToothPair, conventional_tca, mean_contact
 from geometry.synthesis.basic_design import basic_from_dict, load_basic
-from geometry.synthesis.flank_synthesis import local_synthesis, shift_roll_origin, synthesize
+from geometry.synthesis.case_synthesis import local_synthesis, shift_roll_origin, synthesize
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = Path(__file__).resolve().parent / "data"

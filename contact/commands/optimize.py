@@ -92,8 +92,8 @@ def _start(arg: str | None):
 
     path = Path(arg) if arg is not None else None
     if path is not None and path.is_file():
-        from geometry.case import read_toml
         from geometry.core.errors import InputError
+        from geometry.core.toml_files import read_toml
 
         try:
             raw = read_toml(path, "case file")
@@ -101,7 +101,7 @@ def _start(arg: str | None):
             raw = {}  # resolve_case reports it
         if isinstance(raw.get("design"), dict):
             from geometry.synthesis.basic_design import load_basic
-            from geometry.synthesis.flank_synthesis import synthesize
+            from geometry.synthesis.case_synthesis import synthesize
 
             basic = load_basic(path)
             return synthesize(basic)[0], basic

@@ -13,7 +13,7 @@ from geometry.core.atomic_files import atomic_path
 #: Place in ``ltca --help``.
 ORDER = 30
 
-_HEADER = ("# Written by `ltca synthesize {basic}` (geometry.synthesis.flank_synthesis: "
+_HEADER = ("# Written by `ltca synthesize {basic}` (geometry.synthesis.case_synthesis: "
            "ISO 23509 blank, Formate gear,\n# pinion by Litvin local synthesis); see `source` and "
            "docs/synthesis.md. Do not edit by hand.\n")
 
@@ -82,7 +82,7 @@ def run_synthesize(args: argparse.Namespace) -> int:
 
     from geometry.case import case_from_dict
     from geometry.synthesis.basic_design import load_basic
-    from geometry.synthesis.flank_synthesis import synthesize
+    from geometry.synthesis.case_synthesis import synthesize
 
     source = resolve_basic(args.basic)
     output = args.output or f"{source.stem}.toml"

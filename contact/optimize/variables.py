@@ -11,7 +11,7 @@ When the start is a basic design (:class:`geometry.synthesis.basic_design.BasicD
 ``cases/basic`` file), the local-synthesis inputs of the optimised flank are variables too
 (:data:`SYNTHESIS_VARIABLES`: path angle, TE level, ellipse length, elastic approach,
 relief start — and the relief, then a synthesis input): every design is then
-re-synthesised (:func:`geometry.synthesis.flank_synthesis.synthesize`, ≈ 6 s) before its settings
+re-synthesised (:func:`geometry.synthesis.case_synthesis.synthesize`, ≈ 6 s) before its settings
 are set, so the flank keeps the synthesis' contact path, TE and ellipse at M (Litvin &
 Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., ch. 9; seed future work (iv)).
 
@@ -152,10 +152,10 @@ def synthesised_case(case: Case, basic: BasicDesign) -> Case:
     ------
     InputError
         A synthesis step without a solution (named by
-        :func:`geometry.synthesis.flank_synthesis.synthesize`:
+        :func:`geometry.synthesis.case_synthesis.synthesize`:
         ISO 23509 blank, Litvin local synthesis, Litvin & Fuentes 2004 ch. 9).
     """
-    from geometry.synthesis.flank_synthesis import synthesize
+    from geometry.synthesis.case_synthesis import synthesize
 
     new = synthesize(basic)[0]
     return dataclasses.replace(new, name=case.name, misalignment=case.misalignment,

@@ -11,7 +11,7 @@ by the blade offset angle δ_b; (b) the tip plane of a crown gear (γ_m = 90°, 
 trace of one blade tip relative to the work while the head spins and the work indexes by
 κ = −z0/z (an extended epicycloid through the mean point P with the spiral angle β), beside
 the circle a face-milling cutter of the same radius traces (κ = 0). All points are computed
-with the toolkit's chain (geometry.machine.cradle.generated_family).
+with the toolkit's chain (geometry.machine.family.generated_family).
 """
 
 from __future__ import annotations

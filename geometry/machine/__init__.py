@@ -2,7 +2,9 @@
 
 cutter         blades and their profile sections (seed Fig. 2.2–2.3)
 cradle         the machine settings and the kinematic chain from cutter to blank (FM and FH,
-               seed Eq. 2.1–2.7), the generated family and the meshing function
+               seed Eq. 2.1–2.7)
+family         the generated family r_g(s, θ, q) with its derivatives and the meshing
+               function (seed Eq. 2.7–2.8)
 meshing        the equation of meshing solved for flank points (seed Eq. 2.8)
 flank_point    flank points with tangents and curvature
 flank          flank surfaces on the projection grid, trimmed by the blank
@@ -15,20 +17,18 @@ The package exports what the module ``geometry.machine`` did (the cradle).
 
 from geometry.machine.cradle import (
     PROCESSES,
-    GeneratedFamily,
     MachineSettings,
     PoseSettings,
     cutter_pose,
-    generated_family,
     indexing_ratio,
     machine_transform,
-    meshing_function,
     mirror_settings,
     roll_angle,
     settings_from_poses,
     taylor_motion,
     work_rotation,
 )
+from geometry.machine.family import GeneratedFamily, generated_family, meshing_function
 
 __all__ = [
     "PROCESSES",

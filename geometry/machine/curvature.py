@@ -38,7 +38,7 @@ from typing import NamedTuple
 import numpy as np
 
 from geometry.core.errors import InputError
-from geometry.machine.cradle import GeneratedFamily, cross, dot, meshing_function
+from geometry.machine.family import GeneratedFamily, cross, dot, meshing_function
 
 __all__ = [
     "PrincipalCurvatures",
@@ -105,7 +105,7 @@ def surface_curvatures(family: GeneratedFamily, generate: bool,
 
     Parameters
     ----------
-    family : geometry.machine.cradle.GeneratedFamily
+    family : geometry.machine.family.GeneratedFamily
         r_g and its derivatives evaluated at points that satisfy the equation of meshing
         (e.g. ``EnvelopeSolution.family``), shape (..., 3).
     generate : bool

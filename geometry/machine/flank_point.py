@@ -3,7 +3,7 @@
 One evaluator of a generated (or Formate) flank for the solvers that need first and second
 order surface data at prescribed places (axial position Z, radius P) of the member's
 projection plane: the conventional TCA (:mod:`geometry.pair.conventional_tca`, seed Eq. 2.14) and
-the synthesis (:mod:`geometry.synthesis.flank_synthesis`, :mod:`geometry.pair.design_point`). Each
+the synthesis (:mod:`geometry.synthesis.case_synthesis`, :mod:`geometry.pair.design_point`). Each
 point is solved
 by :func:`geometry.machine.meshing.solve_envelope` (seed Eq. 2.7–2.8); the shape operator comes from
 the principal curvatures of :func:`geometry.machine.curvature.surface_curvatures` (seed Eq.
@@ -27,9 +27,10 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 
 from geometry.core.errors import InputError
-from geometry.machine.cradle import MachineSettings, meshing_function
+from geometry.machine.cradle import MachineSettings
 from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import Blade
+from geometry.machine.family import meshing_function
 from geometry.machine.meshing import solve_envelope
 
 if TYPE_CHECKING:
@@ -136,7 +137,7 @@ def flank_points(blade: Blade, machine: MachineSettings, blank: Blank, hand: str
     middle target and, if no solution exists there, at its neighbour. With r_s, r_θ the
     surface tangents along the blade and about the cutter axis (for a generated flank
     r_s + r_q q_s, r_θ + r_q q_θ with q_s, q_θ from the gradient of the equation of meshing,
-    :func:`geometry.machine.cradle.meshing_function`), the tangents are [∂r/∂Z, ∂r/∂P] =
+    :func:`geometry.machine.family.meshing_function`), the tangents are [∂r/∂Z, ∂r/∂P] =
     [r_s, r_θ] A⁻¹, A the rows (e_z·, e_ρ·) of [r_s, r_θ].
     """
     z = np.asarray(axial, dtype=float)

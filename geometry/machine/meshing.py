@@ -42,17 +42,17 @@ from typing import NamedTuple
 import numpy as np
 
 from geometry.core.errors import InputError
-from geometry.machine.cradle import (
+from geometry.machine.cradle import MachineSettings
+from geometry.machine.cutter import Blade, profile_sections
+from geometry.machine.family import (
     Chain,
     GeneratedFamily,
-    MachineSettings,
     chain,
     cutter_buffer,
     family_buffer,
     family_views,
     meshing_buffer,
 )
-from geometry.machine.cutter import Blade, profile_sections
 
 __all__ = ["REASONS", "EnvelopeSolution", "solve_envelope"]
 
@@ -103,7 +103,7 @@ class _Context(NamedTuple):
 
 
 def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
-    """Family buffer (3, 11, n) of :func:`geometry.machine.cradle.family_buffer` at flat points."""
+    """Family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` at flat points."""
     v = cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
     return family_buffer(ctx.chain, ctx.settings, v, q, theta)
 

@@ -4,7 +4,7 @@ Real hypoid flanks carry profile relief: the flank is eased off by some 10–30 
 its tip and towards the lowest point the mating tip reaches, so that the loaded pattern
 stays off the tooth edges under load and misalignment (Stadtfeld, *Handbook of Bevel and
 Hypoid Gears*, 1993, ch. 3; Litvin & Fuentes 2004 §9.7). A local synthesis
-(:mod:`geometry.synthesis.flank_synthesis`) fixes the whole second-order shape of the pinion flank
+(:mod:`geometry.synthesis.case_synthesis`) fixes the whole second-order shape of the pinion flank
 at the mean point M — its profile curvature, i.e. the circular blade profile's radius, among it —
 so a profile crowning given as a second input cannot change the curvature at M without
 breaking the synthesis' path, TE or ellipse. The relief is therefore made where it does not

@@ -24,7 +24,7 @@ resort. The damping also copes with the rank-deficient Jacobian of a conjugate
 (line-contact) pair, where the contact point may lie anywhere on the contact line. A solution
 counts only where the relative curvature W_p + W_g is positive semi-definite (a contact, not
 a saddle of the separation where the surfaces already cross). The system is
-:class:`ToothPair`, which the synthesis (:mod:`geometry.synthesis.flank_synthesis`) also uses to
+:class:`ToothPair`, which the synthesis (:mod:`geometry.synthesis.case_synthesis`) also uses to
 tune the modified roll; it takes any two flanks and any member → pair transforms.
 
 Conventions
@@ -225,7 +225,7 @@ class ToothPair:
     (seed Eq. 2.14a–b; L_n the gear mean cone distance makes the normal residuals lengths),
     their analytic Jacobian, a batched damped Gauss–Newton solver, a scipy fallback for one
     roll and the contact check. Used by :func:`conventional_tca`, :func:`mean_contact` and
-    the synthesis's tuning of the modified roll (:mod:`geometry.synthesis.flank_synthesis`).
+    the synthesis's tuning of the modified roll (:mod:`geometry.synthesis.case_synthesis`).
 
     Parameters
     ----------

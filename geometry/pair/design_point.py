@@ -1,12 +1,12 @@
 """The mean contact point M of a gear flank: the design point of a pair (projection plane).
 
-The point where the local synthesis (:mod:`geometry.synthesis.flank_synthesis`; Litvin & Fuentes
+The point where the local synthesis (:mod:`geometry.synthesis.case_synthesis`; Litvin & Fuentes
 2004 ch. 9) places the contact of the mean roll position and where the conventional TCA
 (:mod:`geometry.pair.conventional_tca`) takes its reference (roll 0): on the gear flank at the
 gear's mean cone distance, centred in roll within the working depth, i.e. the point that the
 ideal motion brings onto the surface of action n·v⁽¹²⁾ = 0 halfway through the roll range
 between the gear tip and the lowest point the pinion tip reaches. A module below both
-:mod:`geometry.synthesis.flank_synthesis` (which re-exports these functions) and
+:mod:`geometry.synthesis.case_synthesis` (which re-exports these functions) and
 :mod:`geometry.pair.conventional_tca`, so that neither imports the other for it.
 
 Public functions

@@ -36,8 +36,9 @@ from typing import Any
 
 from scipy.optimize import least_squares
 
-from geometry.case import operating_from_dict, read_toml
+from geometry.case import operating_from_dict
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.toml_files import read_toml
 from geometry.core.validation import real
 from geometry.iso23509.blank import BlankGeometry, blank_geometry
 from geometry.iso23509.pitch_cone import BevelGearDesign
