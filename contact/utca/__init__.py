@@ -28,7 +28,6 @@ from contact.utca.contact_curves import (
     ContactCurves,
     contact_curves,
     pair_transmission_error,
-    transitions,
 )
 from contact.utca.datasets import (
     UnloadedCycle,
@@ -39,6 +38,7 @@ from contact.utca.datasets import (
 )
 from contact.utca.easeoff import FLANK_ROLES, MATING_FLANK, EaseOff, ease_off
 from contact.utca.fields import EaseOffFields
+from contact.utca.transitions import transitions
 
 __all__ = [
     "CURVE_SPACINGS",

@@ -39,10 +39,10 @@ from contact.utca.contact_curves import (
     ContactCurves,
     contact_curves,
     pair_transmission_error,
-    transitions,
 )
 from contact.utca.easeoff import EASEOFF_REASONS, EaseOff, ease_off
 from contact.utca.fields import EaseOffFields
+from contact.utca.transitions import transitions
 from geometry import __version__
 from geometry.core.conventions import binary_flag
 from geometry.core.conventions import data_var as _var

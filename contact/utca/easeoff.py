@@ -81,32 +81,35 @@ from __future__ import annotations
 import logging
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
-from scipy.interpolate import RectBivariateSpline
 
 from contact.utca.action_surface import (
     MeshKinematics,
     action_roll_angle,
     action_surface,
-    conjugate_points,
     mesh_kinematics,
     meshing_coefficients,
     to_pair_frame,
 )
 from geometry.core.errors import InputError
 from geometry.core.validation import one_of
-from geometry.machine.curvature import normal_curvature, surface_curvatures
+from geometry.machine.curvature import normal_curvature
 from geometry.machine.cutter import working_sections
-from geometry.machine.flank import DEFAULT_GRID, blank_outline, flank_surface
-from geometry.machine.meshing import solve_envelope
+from geometry.machine.flank import DEFAULT_GRID, flank_surface
 from geometry.pair.assembly import Misalignment, rotate_about_axis
 from geometry.pair.pitch_contact import check_pitch_contact
 
 if TYPE_CHECKING:
     from geometry.case import Case
+from contact.utca.conjugate_map import (
+    GearMates,
+    Mates,
+    fill_missing,
+    gear_reference,
+    map_gear_nodes,
+)
 
 __all__ = [
     "EASEOFF_REASONS",
@@ -124,14 +127,20 @@ __all__ = [
 
 log = logging.getLogger(__name__)
 
+
+_MAP_TOL = 1e-7  # [mm] node-placement tolerance of the conjugate points
+
+
 #: pinion flank → the gear flank it meshes with (concave pinion flanks mesh convex gear flanks)
 MATING_FLANK: dict[str, str] = {"concave": "convex", "convex": "concave"}
+
 
 #: flank role → the pinion flank of a case that plays it
 FLANK_ROLES: dict[str, Callable[[Case], str]] = {
     "drive": lambda case: case.pair.drive_flank,
     "coast": lambda case: MATING_FLANK[case.pair.drive_flank],
 }
+
 
 #: mask reason codes of an ease-off grid node
 EASEOFF_REASONS: dict[int, str] = {
@@ -142,18 +151,6 @@ EASEOFF_REASONS: dict[int, str] = {
     4: "beyond_fold",  # the roll angle turns back along the profile: a fold of the mapping
 }
 
-_MAP_TOL = 1e-7  # [mm] node-placement tolerance of the conjugate points
-_MAP_ITER = 10  # exact placement iterations
-_BROYDEN_ITER = 4  # of which with Broyden updates (then finite differences)
-_SPLINE_ITER = 10  # Newton steps on the spline of the forward map (start values)
-_STEP_LIMIT = 0.1  # largest Newton step in each pinion fraction
-_LATE_STEP_LIMIT = 0.02  # … in the finite-difference iterations
-_FD_STEP = 1e-6  # finite-difference step of the exact map's Jacobian [1]
-_PINION_U = (-0.15, 1.15)  # extended pinion grid (fractions of face width / depth)
-_PINION_V = (-0.05, 1.2)
-_FORWARD_GRID = (41, 21)  # pinion grid of the forward-map spline (start values only)
-_MIRROR = np.array([1.0, -1.0, 1.0])
-
 
 # --------------------------------------------------------------------------- helpers
 def _flank_names(case: Case, flank: str | None) -> tuple[str, str]:
@@ -162,14 +159,6 @@ def _flank_names(case: Case, flank: str | None) -> tuple[str, str]:
     one_of("flank", flank, [*FLANK_ROLES, *MATING_FLANK])
     pf = FLANK_ROLES[flank](case) if flank in FLANK_ROLES else flank
     return pf, MATING_FLANK[pf]
-
-
-def _bilinear(corners: np.ndarray, u, v):
-    u = np.asarray(u, dtype=float)[..., None]
-    v = np.asarray(v, dtype=float)[..., None]
-    p = ((1 - u) * (1 - v) * corners[0, 0] + u * (1 - v) * corners[1, 0]
-         + (1 - u) * v * corners[0, 1] + u * v * corners[1, 1])
-    return p[..., 0], p[..., 1]
 
 
 def _mask_folds(reason: np.ndarray, roll: np.ndarray) -> None:
@@ -194,61 +183,6 @@ def _mask_folds(reason: np.ndarray, roll: np.ndarray) -> None:
             reason[i, j + 1:][reason[i, j + 1:] == 0] = 4
         else:  # near the root end: mask from the root up to j
             reason[i, : j + 1][reason[i, : j + 1] == 0] = 4
-
-
-class _Mates(NamedTuple):
-    """Pinion points at projection-plane places and their images through the action surface."""
-
-    z: np.ndarray  # [mm] pinion projection-plane place
-    rho: np.ndarray
-    position: np.ndarray  # pinion frame
-    normal: np.ndarray
-    roll: np.ndarray  # [rad] action roll angle φ_a
-    good: np.ndarray  # generated and on the surface of action
-    conjugate: np.ndarray  # conjugate-gear point (gear frame, ψ₀ = 0)
-    image: np.ndarray  # (..., 2) its (z, ρ) on the gear projection plane
-    kappa1: np.ndarray  # [1/mm] pinion principal curvatures and direction (pinion frame)
-    kappa2: np.ndarray
-    dir1: np.ndarray
-    section: np.ndarray  # blade section that generates the pinion point
-    params: np.ndarray  # (..., 3) its envelope parameters (s, θ, q) [mm, rad, rad]
-
-
-def _pinion_points(case: Case, flank: str, z, rho, guess=None):
-    """Real pinion surface at projection-plane places: position, normal, reason, curvatures.
-
-    ``guess`` (params (..., 3), section) from nearby earlier points starts the envelope solver
-    (:func:`geometry.machine.meshing.solve_envelope`) there instead of at its seed search.
-    """
-    mem = case.pinion
-    tool = mem.flank(flank)
-    bl = mem.blank
-    if guess is not None:
-        params, sec0 = guess
-        guess = (params[..., 0], params[..., 1], params[..., 2], sec0)
-    sol = solve_envelope(tool.blade, tool.machine, z, rho, length_scale=bl.outer_cone_distance,
-                         depth=bl.outer_addendum + bl.outer_dedendum, guess=guess)
-    mirror = _MIRROR if mem.hand == "left" else np.ones(3)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        pc = surface_curvatures(sol.family, tool.machine.process == "Generate",
-                                bl.outer_cone_distance)
-    return (sol.position * mirror, sol.normal * mirror, sol.reason, pc.kappa1, pc.kappa2,
-            pc.dir1 * mirror, sol.section, np.stack([sol.s, sol.theta, sol.q], -1))
-
-
-def _mates(case: Case, flank: str, kin: MeshKinematics, corners, u, v, *, branch=None,
-           reference=None, guess=None) -> tuple[_Mates, int]:
-    """Evaluate the real pinion at fractions (u, v) and map it through the action surface.
-
-    ``guess``: (params, section) of nearby pinion points, see :func:`_pinion_points`.
-    """
-    z, rho = _bilinear(corners, u, v)
-    pos, nrm, reason, k1, k2, e1, sec, par = _pinion_points(case, flank, z, rho, guess)
-    roll, branch = action_roll_angle(kin, pos, nrm, branch=branch, reference=reference)
-    good = (reason == 0) & np.isfinite(roll)
-    conj, _ = conjugate_points(kin, pos, nrm, np.where(good, roll, 0.0))
-    img = np.stack([conj[..., 2], np.hypot(conj[..., 0], conj[..., 1])], -1)
-    return _Mates(z, rho, pos, nrm, roll, good, conj, img, k1, k2, e1, sec, par), branch
 
 
 def roll_angle_surface(case: Case, *, flank: str | None = None,
@@ -284,7 +218,7 @@ def roll_angle_surface(case: Case, *, flank: str | None = None,
     pf, _ = _flank_names(case, flank)
     kin = mesh_kinematics(case, misalignment)
     ps = flank_surface(case, "pinion", pf, nu=nu, nv=nv, u_limits=u_limits, v_limits=v_limits)
-    roll, _ = action_roll_angle(kin, ps.position, ps.normal, reference=_gear_reference(case, kin))
+    roll, _ = action_roll_angle(kin, ps.position, ps.normal, reference=gear_reference(case, kin))
     ra, _ = action_surface(kin, ps.position, ps.normal, np.nan_to_num(roll))
     ra[~np.isfinite(roll)] = np.nan
     return ps, roll, ra
@@ -314,12 +248,6 @@ def _gap_curvature(kin: MeshKinematics, position, normal, roll, kappa1, kappa2, 
     speed2 = np.einsum("...i,...i", y1, y1)
     kap = normal_curvature(kappa1, kappa2, e1, y1 + 1e-300)
     return np.einsum("...i,...i", na, y2) + kap * speed2
-
-
-def _gear_reference(case: Case, kin: MeshKinematics) -> np.ndarray:
-    """The gear's mean pitch point turned into the mesh zone (+x side) in the pair frame."""
-    z, rho = blank_outline(case.gear.blank).mean_point
-    return kin.gear_place[:3, :3] @ np.array([rho, 0.0, z]) + kin.gear_origin
 
 
 # --------------------------------------------------------------------------- ease-off
@@ -379,221 +307,6 @@ class EaseOff(NamedTuple):
         """Signed distance (in blank fractions) of the mating pinion point inside its blank."""
         return np.minimum(np.minimum(self.pinion_u, 1.0 - self.pinion_u),
                           np.minimum(self.pinion_v, 1.0 - self.pinion_v))
-
-
-class _GearMates(NamedTuple):
-    """The pinion mates of the gear nodes (nu, nv), as :func:`_map_gear_nodes` places them."""
-
-    u: np.ndarray  # [1] pinion fractions of the mates (extended grid: beyond 0..1 possible)
-    v: np.ndarray
-    mates: _Mates  # the mates evaluated there and their images
-    error: np.ndarray  # [mm] placement error max |Δz|, |Δρ| (inf where no mate)
-    pinned: np.ndarray  # bool: the Newton iterate ran to the edge of the extended grid
-
-
-@dataclass(frozen=True)
-class _ForwardMap:
-    """The real pinion mapped through the action surface: pinion fractions (u, v) → the
-    (z, ρ) of the conjugate point on the gear projection plane, evaluated exactly
-    (:meth:`mates`) and as a bicubic spline over the extended pinion grid (start values and
-    first Jacobians only)."""
-
-    case: Case
-    flank: str  # pinion flank
-    kin: MeshKinematics
-    corners: np.ndarray  # (2, 2, 2) [mm] pinion blank corners (bilinear map of u, v)
-    branch: int  # branch of the action roll angle (the mesh zone)
-    u: np.ndarray  # (41,) extended pinion grid
-    v: np.ndarray  # (21,)
-    nodes: _Mates  # the mates on the extended grid
-    z: RectBivariateSpline  # [mm] the image's axial position over (u, v)
-    rho: RectBivariateSpline  # [mm] and its radius
-
-    def mates(self, u, v, guess) -> _Mates:
-        """Mates at the fractions (u, v), the envelope solver started at ``guess``."""
-        m, _ = _mates(self.case, self.flank, self.kin, self.corners, u, v, branch=self.branch,
-                      guess=guess)
-        return m
-
-    def jacobian(self, u, v) -> np.ndarray:
-        """(..., 2, 2) [mm] ∂(z, ρ)/∂(u, v) of the spline."""
-        return np.stack([np.stack([self.z.ev(u, v, dx=1), self.z.ev(u, v, dy=1)], -1),
-                         np.stack([self.rho.ev(u, v, dx=1), self.rho.ev(u, v, dy=1)], -1)], -2)
-
-    def newton_step(self, j, u, v, e, limit=_STEP_LIMIT):
-        """Places (u, v) moved by the Newton step J⁻¹ e (held to ``limit`` in each fraction;
-        none where J is singular), clipped to the extended grid."""
-        det = j[..., 0, 0] * j[..., 1, 1] - j[..., 0, 1] * j[..., 1, 0]
-        safe = np.abs(det) > 1e-12
-        det = np.where(safe, det, 1.0)
-        du = np.where(safe, (j[..., 1, 1] * e[..., 0] - j[..., 0, 1] * e[..., 1]) / det, 0.0)
-        dv = np.where(safe, (j[..., 0, 0] * e[..., 1] - j[..., 1, 0] * e[..., 0]) / det, 0.0)
-        scale = np.maximum(1.0, np.maximum(np.abs(du), np.abs(dv)) / limit)
-        return (np.clip(u + du / scale, self.u[0], self.u[-1]),
-                np.clip(v + dv / scale, self.v[0], self.v[-1]))
-
-
-@dataclass
-class _Placement:
-    """State of the exact placement, flat over the gear nodes (n,); updated in place."""
-
-    mates: _Mates  # (n, ...) the mates at the current places
-    u: np.ndarray  # (n,) [1] current pinion fractions
-    v: np.ndarray
-    target: np.ndarray  # (n, 2) [mm] the nodes' (z, ρ)
-    jacobian: np.ndarray  # (n, 2, 2) [mm] per-node ∂(z, ρ)/∂(u, v)
-    error: np.ndarray  # (n,) [mm] max |Δz|, |Δρ| (inf: no mate)
-
-    def accept(self, idx: np.ndarray, mates: _Mates, u: np.ndarray, v: np.ndarray) -> None:
-        """Move the nodes ``idx`` to the places (u, v) of their new ``mates``."""
-        for full, part in zip(self.mates, mates, strict=True):
-            full[idx] = part
-        self.error[idx] = _placement_error(self.target[idx], mates)
-        self.u[idx], self.v[idx] = u, v
-
-
-def _placement_error(target: np.ndarray, mates: _Mates) -> np.ndarray:
-    """[mm] max |Δz|, |Δρ| of the mates' images from the targets (inf where no mate)."""
-    return np.where(np.asarray(mates.good), np.abs(target - mates.image).max(axis=-1), np.inf)
-
-
-def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:
-    """The forward map on the extended pinion grid and its spline.
-
-    The spline is built on the pinion blade's working sections only (the profile and its
-    relief lines, :func:`_working_sections`) and continued linearly beyond them
-    (:func:`fill_missing`): the kink at the fillet would make a cubic spline ring over the
-    whole flank.
-    """
-    cp = blank_outline(case.pinion.blank).corners
-    up = np.linspace(*_PINION_U, _FORWARD_GRID[0])
-    vp = np.linspace(*_PINION_V, _FORWARD_GRID[1])
-    uu, vv = np.meshgrid(up, vp, indexing="ij")
-    fwd, branch = _mates(case, pf, kin, cp, uu, vv, reference=ref)
-    ok = fwd.good
-    if ok.sum() < 16:
-        raise InputError(
-            f"case: the {pf} pinion flank has no points on the surface of action of these "
-            "axes (check the misalignment and the machine settings)")
-    smooth = ok & np.isin(fwd.section, working_sections(case.pinion.flank(pf).blade))
-    if smooth.sum() < 16:
-        smooth = ok
-    image = fill_missing(fwd.image, smooth)
-    return _ForwardMap(case, pf, kin, cp, branch, up, vp, fwd,
-                       RectBivariateSpline(up, vp, image[..., 0]),
-                       RectBivariateSpline(up, vp, image[..., 1]))
-
-
-def _spline_start(fm: _ForwardMap, zt: np.ndarray, rt: np.ndarray):
-    """Start places (u, v) of the mates of the gear nodes (zt, rt): the nearest node of the
-    forward map, then Newton's method on its spline."""
-    ok = fm.nodes.good
-    img = fm.nodes.image
-    uu, vv = np.meshgrid(fm.u, fm.v, indexing="ij")
-    target = np.stack([zt, rt], -1)
-    d2 = ((zt.reshape(-1, 1) - img[..., 0][ok].reshape(1, -1)) ** 2
-          + (rt.reshape(-1, 1) - img[..., 1][ok].reshape(1, -1)) ** 2)
-    k = np.argmin(d2, axis=1)
-    u = uu[ok][k].reshape(zt.shape)
-    v = vv[ok][k].reshape(zt.shape)
-    for _ in range(_SPLINE_ITER):
-        spl = np.stack([fm.z.ev(u, v), fm.rho.ev(u, v)], -1)
-        u, v = fm.newton_step(fm.jacobian(u, v), u, v, target - spl)
-    return u, v
-
-
-def _exact_start(fm: _ForwardMap, u: np.ndarray, v: np.ndarray, zt: np.ndarray,
-                 rt: np.ndarray) -> _Placement:
-    """The real pinion at the start places, mapped exactly (the envelope solver starts from
-    the forward node nearest to each place), with the spline's Jacobians there."""
-    n = zt.size
-    iu = np.clip(np.rint((u - fm.u[0]) / (fm.u[1] - fm.u[0])), 0, len(fm.u) - 1).astype(int)
-    iv = np.clip(np.rint((v - fm.v[0]) / (fm.v[1] - fm.v[0])), 0, len(fm.v) - 1).astype(int)
-    m0 = fm.mates(u, v, guess=(fm.nodes.params[iu, iv], fm.nodes.section[iu, iv]))
-    flat = _Mates(*(np.array(a).reshape(n, *np.shape(a)[zt.ndim:]) for a in m0))
-    uf, vf = u.ravel().copy(), v.ravel().copy()
-    target = np.stack([zt, rt], -1).reshape(n, 2)
-    return _Placement(flat, uf, vf, target, fm.jacobian(uf, vf),
-                      _placement_error(target, flat))
-
-
-def _mates_with_jacobian(fm: _ForwardMap, u: np.ndarray, v: np.ndarray, guess):
-    """Mates at (u, v) (M,) and the finite-difference Jacobian (M, 2, 2) of the exact map
-    there, the point and its two stencil points in one batch; ok (M,): all three good."""
-    k = u.size
-    h = _FD_STEP
-    params, section = guess
-    m3 = fm.mates(np.r_[u, u + h, u], np.r_[v, v, v + h],
-                  guess=(np.tile(params, (3, 1)), np.tile(section, 3)))
-    at, du, dv = (_Mates(*(np.asarray(a)[i * k:(i + 1) * k] for a in m3)) for i in range(3))
-    ok = at.good & du.good & dv.good
-    return at, np.stack([(du.image - at.image) / h, (dv.image - at.image) / h], -1), ok
-
-
-def _broyden(jac: np.ndarray, dx: np.ndarray, dy: np.ndarray, good: np.ndarray) -> np.ndarray:
-    """Broyden (secant) update of per-node Jacobians (M, 2, 2) with the steps dx (M, 2) of
-    the places and dy (M, 2) of the images, where ``good`` and the step is not null."""
-    nx = np.einsum("...i,...i", dx, dx)
-    upd = good & (nx > 1e-24)
-    corr = (dy - np.einsum("...ij,...j->...i", jac, dx)) / np.where(upd, nx, 1.0)[:, None]
-    return np.where(upd[:, None, None], jac + corr[:, :, None] * dx[:, None, :], jac)
-
-
-def _place_exactly(fm: _ForwardMap, st: _Placement) -> None:
-    """Exact placement iterations on the nodes not yet placed (updates ``st``).
-
-    Each evaluates the real pinion at the Newton step and maps it exactly; the per-node
-    Jacobian gets Broyden updates, and from iteration :data:`_BROYDEN_ITER` on, for the
-    stragglers where the map is strongly stretched (near the pinion's fillet junction),
-    the finite-difference Jacobian at each accepted new place. A step that does not reduce
-    the error is not taken (the node retries with the secant-updated Jacobian); a node
-    whose mate leaves the generated surface is dropped.
-    """
-    for it in range(_MAP_ITER):
-        idx = np.flatnonzero(np.isfinite(st.error) & (st.error >= _MAP_TOL))
-        if idx.size == 0:
-            break
-        late = it >= _BROYDEN_ITER
-        u0, v0, img0 = st.u[idx], st.v[idx], st.mates.image[idx]
-        un, vn = fm.newton_step(st.jacobian[idx], u0, v0, st.target[idx] - img0,
-                                limit=_LATE_STEP_LIMIT if late else _STEP_LIMIT)
-        guess = (st.mates.params[idx], st.mates.section[idx])
-        if late or it == _BROYDEN_ITER - 1:
-            mm, j_fd, ok_fd = _mates_with_jacobian(fm, un, vn, guess)
-        else:
-            mm, j_fd, ok_fd = fm.mates(un, vn, guess), None, None
-        dy = np.where(mm.good[:, None], mm.image - img0, 0.0)
-        jac = _broyden(st.jacobian[idx], np.stack([un - u0, vn - v0], -1), dy, mm.good)
-        better = mm.good & (np.abs(st.target[idx] - mm.image).max(axis=-1) < st.error[idx])
-        if j_fd is not None:
-            jac = np.where((better & ok_fd)[:, None, None], j_fd, jac)
-        st.jacobian[idx] = jac
-        st.accept(idx[better], _Mates(*(np.asarray(a)[better] for a in mm)), un[better],
-                  vn[better])
-        st.error[idx[~mm.good]] = np.inf
-        log.debug("map iteration: %d of %d nodes placed", int((st.error < _MAP_TOL).sum()),
-                  st.error.size)
-
-
-def _map_gear_nodes(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray,
-                    zt: np.ndarray, rt: np.ndarray) -> _GearMates:
-    """Pinion mates of the gear nodes (module docstring, "Gear projection-plane grid").
-
-    Start values from the spline of the forward map (:func:`_spline_start`), then exact
-    iterations on the real pinion (:func:`_place_exactly`). ``pinned``: the nodes whose
-    iterate ran to the edge of the extended pinion grid (their mate lies beyond the pinion
-    blank).
-    """
-    fm = _forward_map(case, pf, kin, ref)
-    u, v = _spline_start(fm, zt, rt)
-    st = _exact_start(fm, u, v, zt, rt)
-    _place_exactly(fm, st)
-    shape = zt.shape
-    u, v = st.u.reshape(shape), st.v.reshape(shape)
-    pinned = (np.isclose(u, fm.u[0]) | np.isclose(u, fm.u[-1]) | np.isclose(v, fm.v[0])
-              | np.isclose(v, fm.v[-1]))
-    return _GearMates(u, v, _Mates(*(a.reshape(shape + a.shape[1:]) for a in st.mates)),
-                      st.error.reshape(shape), pinned)
 
 
 def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment | None = None,
@@ -681,6 +394,7 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
 #: contact to be analysed (the contouring of the fields needs them, contact.utca.fields)
 MIN_VALID_NODES = 16
 
+
 #: the misalignment fields and the units they are reported in (ΔΣ is held in rad)
 MISALIGNMENT_UNITS = {"delta_E": "mm", "delta_P": "mm", "delta_G": "mm", "delta_Sigma": "deg"}
 
@@ -746,7 +460,7 @@ def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
     kin = mesh_kinematics(case, misalignment, pinion_phase=pinion_phase, gear_phase=gear_phase)
     gs = flank_surface(case, "gear", gf, **g)
     zt, rt = gs.grid.axial, gs.grid.radius
-    gm = _map_gear_nodes(case, pf, kin, _gear_reference(case, kin), zt, rt)
+    gm = map_gear_nodes(case, pf, kin, gear_reference(case, kin), zt, rt)
     mt = gm.mates
     kn = _gap_curvature(kin, mt.position, mt.normal, np.where(mt.good, mt.roll, 0.0),
                         mt.kappa1, mt.kappa2, mt.dir1)
@@ -793,7 +507,7 @@ def _grid_options(grid: dict | None) -> dict:
     return g
 
 
-def _node_reasons(gm: _GearMates, mate: np.ndarray, gear_valid: np.ndarray) -> np.ndarray:
+def _node_reasons(gm: GearMates, mate: np.ndarray, gear_valid: np.ndarray) -> np.ndarray:
     """(nu, nv) int8 reason codes (:data:`EASEOFF_REASONS`) of the gear nodes, folds not yet
     masked; InputError if no node is valid."""
     reason = np.zeros(mate.shape, dtype=np.int8)
@@ -811,7 +525,7 @@ def _node_reasons(gm: _GearMates, mate: np.ndarray, gear_valid: np.ndarray) -> n
     return reason
 
 
-def _drive_sense(kin: MeshKinematics, mt: _Mates, mate: np.ndarray) -> int:
+def _drive_sense(kin: MeshKinematics, mt: Mates, mate: np.ndarray) -> int:
     """s_p: the sign of the pinion rotation that drives its flank (module docstring, "Signs"),
     the median over the placed mates of the meshing coefficient c₁ = a_p·((r − O_p) × n)."""
     r0, n0 = to_pair_frame(kin, mt.position[mate], mt.normal[mate])
@@ -889,66 +603,3 @@ def normal_ease_off(angle, lag_sense: int, radius, normal_theta, normal_rho):
     """
     eps_s = lag_sense * angle
     return radius * (np.sin(eps_s) * normal_theta + (np.cos(eps_s) - 1.0) * normal_rho)
-
-
-def fill_missing(values: np.ndarray, valid: np.ndarray) -> np.ndarray:
-    """Fill invalid nodes of a 2-D field by linear extrapolation from valid neighbours.
-
-    Used only to give the interpolating splines a smooth field: filled nodes stay masked.
-    Each pass fills the invalid nodes next to valid ones, with the mean over the four grid
-    directions of the linear continuation of the two nearest valid nodes (2 a₁ − a₂), or
-    of the nearest one where only it is valid; passes repeat until every node is filled
-    or none can be.
-
-    Parameters
-    ----------
-    values : array_like (nu, nv, ...)
-        The field; trailing axes carry several fields on the same mask, filled at once
-        (each element's arithmetic is that of a single field).
-    valid : array_like of bool (nu, nv)
-        Nodes that hold values.
-
-    Returns
-    -------
-    ndarray of float (nu, nv, ...)
-        A copy with the invalid nodes filled (left as they were where no valid node
-        reaches them).
-
-    Raises
-    ------
-    InputError
-        If no node is valid.
-    """
-    out = np.array(values, dtype=float)
-    have = np.array(valid, dtype=bool)
-    if not have.any():
-        raise InputError("valid: must hold at least one valid node, got none")
-    trail = (1,) * (out.ndim - have.ndim)
-    while not have.all():
-        acc = np.zeros(out.shape)
-        cnt = np.zeros(have.shape)
-        for axis in (0, 1):
-            for step in (1, -1):
-                a1 = np.roll(out, step, axis)
-                a2 = np.roll(out, 2 * step, axis)
-                h1 = np.roll(have, step, axis)
-                h2 = np.roll(have, 2 * step, axis)
-                # forbid wrap-around
-                edge = [slice(None)] * 2
-                edge[axis] = slice(0, 2) if step == 1 else slice(-2, None)
-                h1 = h1.copy()
-                h2 = h2.copy()
-                h1[tuple(edge)] = False
-                h2[tuple(edge)] = False
-                two = ~have & h1 & h2
-                one = ~have & h1 & ~h2
-                acc[two] += 2 * a1[two] - a2[two]
-                cnt[two] += 1
-                acc[one] += a1[one]
-                cnt[one] += 1
-        new = ~have & (cnt > 0)
-        if not new.any():
-            break
-        out[new] = acc[new] / cnt[new].reshape(-1, *trail)
-        have = have | new
-    return out
