@@ -45,8 +45,8 @@ BANDS = ((0, 60), (60, 120), (120, 200), (200, 10_000))
 
 def _problems(directory: Path, every: int):
     if not (directory / MANIFEST).is_file():
+        from contact.catalogue import bundled_cases
         from contact.commands.export_problems import export_problems
-        from contact.pipeline import bundled_cases
 
         print(f"no exported problems in {directory}: exporting every bundled case first")
         export_problems([c.removesuffix(".toml") for c in bundled_cases()], directory,

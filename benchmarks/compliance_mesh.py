@@ -30,9 +30,9 @@ from tabulate import tabulate  # noqa: E402
 
 import contact.ltca as ltca_mod  # noqa: E402
 import contact.ltca.pool as pool_mod  # noqa: E402
+from contact.catalogue import resolve_case  # noqa: E402
 from contact.compliance import mesh as mesh_mod  # noqa: E402
 from contact.compliance import tooth as tooth_mod  # noqa: E402
-from contact.pipeline import resolve_case  # noqa: E402
 
 
 def record_segments(case, torque: float):

@@ -27,8 +27,8 @@ import numpy as np
 import xarray as xr
 from tabulate import tabulate
 
+from contact.catalogue import resolve_case
 from contact.ltca import LTCAOptions, loaded_tca
-from contact.pipeline import resolve_case
 from friction.coefficient import FrictionModelRangeWarning
 from friction.efficiency import efficiency_analysis
 from friction.operating import OperatingConditions

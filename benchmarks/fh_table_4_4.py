@@ -22,9 +22,10 @@ from pathlib import Path
 
 from tabulate import tabulate
 
+from contact.catalogue import resolve_case
 from contact.ltca import LTCAOptions
 from contact.ltca.transmission_error import transmission_error_summary
-from contact.pipeline import resolve_case, run_analysis
+from contact.pipeline import run_analysis
 
 ROOT = Path(__file__).resolve().parents[1]
 #: seed Table 4.4 [µrad]: (p-p, 1st, 2nd, 3rd, RMS)

@@ -42,8 +42,9 @@ for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 
 from tabulate import tabulate  # noqa: E402
 
+from contact.catalogue import DEFAULT_CASE, resolve_case  # noqa: E402
 from contact.ltca import LTCAOptions  # noqa: E402
-from contact.pipeline import DEFAULT_CASE, resolve_case, run_analysis  # noqa: E402
+from contact.pipeline import run_analysis  # noqa: E402
 
 SEED_TOTAL_S = 45.0
 SEED_COMPLIANCE_S = 25.0

@@ -50,8 +50,8 @@ class LtcaContact(qpbenchmark_export.LtcaContact):
     def test_problems(self):
         d = self.real_problems_dir
         if d is not None and not (d / MANIFEST).is_file():
+            from contact.catalogue import bundled_cases
             from contact.commands.export_problems import export_problems
-            from contact.pipeline import bundled_cases
 
             logging.getLogger(__name__).warning(
                 "no exported problems in %s: exporting every bundled case first "

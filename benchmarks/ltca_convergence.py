@@ -21,8 +21,8 @@ import itertools
 import numpy as np
 from tabulate import tabulate
 
+from contact.catalogue import SEED_TABLE_3_1, resolve_case
 from contact.ltca import LTCAOptions, loaded_tca
-from contact.pipeline import SEED_TABLE_3_1, resolve_case
 from contact.utca.easeoff import ease_off
 from geometry.pair.assembly import Misalignment
 

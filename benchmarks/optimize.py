@@ -20,9 +20,9 @@ import time
 
 from tabulate import tabulate
 
+from contact.catalogue import SEED_TABLE_3_1, resolve_case
 from contact.ltca import LTCAOptions
 from contact.optimize import DesignVariable, OptimizeProblem, optimize
-from contact.pipeline import SEED_TABLE_3_1, resolve_case
 
 VARIABLES = [DesignVariable("tip_relief", 0.0, 40.0), DesignVariable("root_relief", 0.0, 40.0),
              DesignVariable("2C", -0.05, 0.05), DesignVariable("H1", -2.0, 2.0)]

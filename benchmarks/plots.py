@@ -42,7 +42,8 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 from tabulate import tabulate  # noqa: E402
 
-from contact.pipeline import SEED_TABLE_3_1, resolve_case, run_analysis  # noqa: E402
+from contact.catalogue import SEED_TABLE_3_1, resolve_case  # noqa: E402
+from contact.pipeline import run_analysis  # noqa: E402
 from contact.plots import analysis_figures, render_analysis, save_png  # noqa: E402
 from contact.plots.report import render_report  # noqa: E402
 from friction.operating import OperatingConditions  # noqa: E402

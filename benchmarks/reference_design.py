@@ -33,10 +33,10 @@ import numpy as np
 from scipy.stats import qmc
 from tabulate import tabulate
 
+from contact.catalogue import SEED_TABLE_3_1, resolve_case
 from contact.ltca import LTCAOptions
 from contact.optimize import DesignVariable, OptimizeProblem, evaluate_design, start_values
 from contact.optimize.run import SharedDesign
-from contact.pipeline import SEED_TABLE_3_1, resolve_case
 from contact.utca.easeoff import FLANK_ROLES
 
 SEED_LTE_MEAN = (110.0, 290.0, 600.0)  # [urad] the seed's Table 3.1 LTE means (approx.)

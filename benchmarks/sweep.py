@@ -23,7 +23,8 @@ import numpy as np
 import psutil
 from tabulate import tabulate
 
-from contact.pipeline import resolve_case, run_analysis
+from contact.catalogue import resolve_case
+from contact.pipeline import run_analysis
 from contact.study import sweep
 from geometry.pair.assembly import Misalignment
 

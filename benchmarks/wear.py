@@ -34,7 +34,8 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != _HERE]
 
 from tabulate import tabulate  # noqa: E402
 
-from contact.pipeline import DEFAULT_CASE, resolve_case, run_analysis  # noqa: E402
+from contact.catalogue import DEFAULT_CASE, resolve_case  # noqa: E402
+from contact.pipeline import run_analysis  # noqa: E402
 from contact.wear import simulate_wear  # noqa: E402
 
 TORQUE = 200.0  # [N m]

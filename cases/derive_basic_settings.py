@@ -45,7 +45,7 @@ sys.path.insert(0, str(ROOT))
 
 from geometry.case import case_from_dict  # noqa: E402
 from geometry.machine.cradle import MachineSettings, cutter_pose, settings_from_poses  # noqa: E402
-from geometry.machine.flank import _intersect  # noqa: E402
+from geometry.machine.flank import line_intersection  # noqa: E402
 from geometry.pair.assembly import member_transform  # noqa: E402
 
 D = math.radians
@@ -94,7 +94,7 @@ def mean_points(bl):
     rm = bl["outer_cone_distance"] - 0.5 * bl["face_width"]
     apex = np.array([-bl["pitch_apex"], 0.0])
     pm = apex + rm * np.array([math.cos(d), math.sin(d)])
-    pr = _intersect([-bl["root_apex"], 0.0], [math.cos(df), math.sin(df)], pm,
+    pr = line_intersection([-bl["root_apex"], 0.0], [math.cos(df), math.sin(df)], pm,
                     [-math.sin(d), math.cos(d)])
     return pm, pr, float(np.linalg.norm(pm - pr))
 

@@ -6,11 +6,8 @@ concave`` …), ``/easeoff``, ``/utca`` and ``/ltca``; the root records the case
 TOML text), the toolkit version and the operating conditions, so the netCDF file alone
 says how it was produced.
 
-The bundled cases live in ``cases/`` (installed as the package data
-``contact.cases``); :data:`DEFAULT_CASE` is the reference design of the seed's 11×41
-face-milled hypoid pair (synthesised from its basic data, its synthesis inputs and settings
-optimised by ``ltca optimize`` against the loaded result; docs/optimize.md), and
-:data:`SEED_TABLE_3_1` its operating points (seed Fig. 3.6, Table 3.1).
+The bundled cases and the default case are :mod:`contact.catalogue`'s; the efficiency map
+over operating points runs on the study engine (:func:`contact.study.efficiency.efficiency_map`).
 """
 
 from __future__ import annotations
@@ -20,44 +17,34 @@ import logging
 import math
 import os
 import time
-from importlib import resources
-from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
+from contact import catalogue
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.utca import unloaded_tca
 from contact.utca.easeoff import ease_off
 from friction.operating import OperatingConditions
 from geometry import __version__
-from geometry.case import OPERATING_DEFAULTS, Case, load_case
+from geometry.case import Case
 from geometry.core.errors import InputError
 from geometry.machine.flank import geometry_datasets
 from geometry.pair.assembly import Misalignment
 
 __all__ = [
-    "DEFAULT_CASE",
-    "EFFICIENCY_MAP_SPEEDS",
-    "EFFICIENCY_MAP_TORQUES",
     "MISALIGNMENT_ATTRS",
-    "SEED_TABLE_3_1",
-    "bundled_case_path",
-    "bundled_cases",
-    "efficiency_map",
     "misalignment_attrs",
     "operating_conditions",
-    "resolve_case",
     "resolve_deviations",
     "run_analysis",
 ]
 
-log = logging.getLogger(__name__)
-
-#: File name of the default case: the reference design of the seed's Table 2.1 / 4.1 pair
-#: (``kolivand2009_fm_11x41.toml`` is the same pair's long-bearing synthesis without relief,
-#: the optimiser's edge-loaded start).
-DEFAULT_CASE = "kolivand2009_fm_11x41_reference.toml"
+#: root attributes of an analysis file holding its misalignment, once (units in the names;
+#: the groups' ``misalignment`` attribute refers to them)
+MISALIGNMENT_ATTRS = tuple(f"misalignment_{k}" for k in Misalignment().labelled())
+#: what the groups of an analysis tree say instead of repeating the misalignment
+MISALIGNMENT_REFERENCE = "see the root group's attributes " + ", ".join(MISALIGNMENT_ATTRS)
 
 #: The seed's Table 3.1 operating points: pinion torques [N·m] and misalignment
 #: |ΔE| = 0.15 mm, |ΔP| = 0.12 mm, ΔG = 0, ΔΣ = 0. The text extraction lost the signs of
@@ -76,64 +63,29 @@ SEED_TABLE_3_1 = {
     "misalignment": Misalignment(delta_E=-0.15, delta_P=0.12),
 }
 
-#: root attributes of an analysis file holding its misalignment, once (units in the names;
-#: the groups' ``misalignment`` attribute refers to them)
-MISALIGNMENT_ATTRS = tuple(f"misalignment_{k}" for k in Misalignment().labelled())
-#: what the groups of an analysis tree say instead of repeating the misalignment
-MISALIGNMENT_REFERENCE = "see the root group's attributes " + ", ".join(MISALIGNMENT_ATTRS)
-
-#: The default grid of :func:`efficiency_map` (and ``ltca efficiency-map``): pinion
-#: torques [N·m] and pinion speeds [rpm] (the toolkit's choice: light to full load, low
-#: to high speed).
-EFFICIENCY_MAP_TORQUES = (100.0, 250.0, 500.0)
-EFFICIENCY_MAP_SPEEDS = (500.0, 1000.0, 1500.0, 2500.0, 4000.0)
+#: names that moved out of this module (issue 31): name → the module that has it now
+_MOVED_NAMES = {
+    **dict.fromkeys(("DEFAULT_CASE", "SEED_TABLE_3_1", "bundled_case_path", "bundled_cases",
+                     "resolve_case"), "contact.catalogue"),
+    **dict.fromkeys(("efficiency_map", "EFFICIENCY_MAP_TORQUES", "EFFICIENCY_MAP_SPEEDS"),
+                    "contact.study.efficiency"),
+}
 
 
-def _cases_root():
-    """The bundled cases: in a source tree (``python -m pytest`` or ``python -m contact``
-    from a clone or a git worktree, installed editable or not) the repository's
-    ``cases/`` beside this package; else the installed package data ``contact.cases``."""
-    source = Path(__file__).resolve().parents[1]
-    if (source / "pyproject.toml").is_file() and (source / "cases" / "__init__.py").is_file():
-        return source / "cases"
-    try:
-        return resources.files("contact.cases")
-    except ModuleNotFoundError:
-        return Path(__file__).resolve().parents[1] / "cases"
+def __getattr__(name: str):
+    # the moved names keep working for one release, with a warning naming their module (a
+    # look-up at use, not an import of the layers above: the study engine imports this one)
+    if name in _MOVED_NAMES:
+        import importlib
+        import warnings
 
+        warnings.warn(f"contact.pipeline.{name} moved to {_MOVED_NAMES[name]}.{name}; the old "
+                      "path goes in the next release", DeprecationWarning, stacklevel=2)
+        return getattr(importlib.import_module(_MOVED_NAMES[name]), name)
+    raise AttributeError(f"module 'contact.pipeline' has no attribute {name!r}")
 
-def bundled_cases() -> list[str]:
-    """File names of the cases shipped with the toolkit."""
-    root = _cases_root()
-    return sorted(p.name for p in root.iterdir() if p.name.endswith(".toml"))
+log = logging.getLogger(__name__)
 
-
-def bundled_case_path(name: str = DEFAULT_CASE) -> Path:
-    """Path of a bundled case file.
-
-    Raises
-    ------
-    InputError
-        Unknown name (the message lists the bundled cases).
-    """
-    root = _cases_root()
-    fname = name if name.endswith(".toml") else f"{name}.toml"
-    path = root / fname
-    if not path.is_file():
-        raise InputError(f"case: no bundled case {name!r}; bundled: {', '.join(bundled_cases())}")
-    return Path(str(path))
-
-
-def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
-    """A Case from a Case, a file path, a bundled case name, or None (the default case)."""
-    if isinstance(case, Case):
-        return case
-    if case is None:
-        return load_case(bundled_case_path())
-    path = Path(case)
-    if path.is_file():
-        return load_case(path)
-    return load_case(bundled_case_path(str(case)))
 
 
 def resolve_deviations(c: Case, deviations) -> tuple | None:
@@ -287,7 +239,7 @@ def run_analysis(
     Seed ch. 2 (geometry, ease-off), ch. 3 (UTCA, LTCA), ch. 4 (deviations), ch. 5
     (efficiency).
     """
-    c = resolve_case(case)
+    c = catalogue.resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
     torques = c.operating.torque if torque is None else torque
@@ -375,162 +327,3 @@ def run_analysis(
     if not math.isfinite(float(ltca_ds["transmission_error"].mean())):
         log.warning("some roll positions have no certified solution (see /ltca status)")
     return out
-
-
-def efficiency_map(
-    case: Case | str | os.PathLike[str] | None = None,
-    torque=None,
-    speed=None,
-    *,
-    temperature=None,
-    roughness=None,
-    operating: OperatingConditions | None = None,
-    misalignment: Misalignment | None = None,
-    flank: str | None = None,
-    options: LTCAOptions | None = None,
-    progress: bool = False,
-    scheduler="synchronous",
-    n_workers: int | None = None,
-) -> xr.Dataset:
-    """Efficiency over operating points: speed × torque × temperature × roughness (seed §5.3).
-
-    The LTCA (static) runs once per torque — each torque one task of the study engine
-    (:func:`contact.study.engine.run_tasks`, Dask) —; the efficiency stage
-    (:func:`friction.efficiency.efficiency_analysis`) then runs for every speed,
-    temperature and roughness on those loads.
-
-    Parameters
-    ----------
-    case : Case, path, bundled name or None (default case)
-    torque : sequence, optional — [N·m]
-        Pinion torques; default :data:`EFFICIENCY_MAP_TORQUES` (100, 250, 500).
-    speed : sequence, optional — [rpm]
-        Pinion speeds; default :data:`EFFICIENCY_MAP_SPEEDS` (500 … 4000).
-    temperature : sequence, optional — [degC]
-        Oil inlet temperatures; default the one of ``operating``.
-    roughness : sequence, optional — [µm]
-        RMS roughness Rq of each surface; default the one of ``operating``.
-    operating : friction.operating.OperatingConditions, optional
-        The lubricant and friction model (and the default temperature and roughness);
-        its pinion speed is replaced by the swept ones. Default the case's ``[operating]``
-        table (:func:`operating_conditions`).
-    misalignment, flank, options
-        As :func:`run_analysis` (default the case's misalignment, the drive flank).
-    progress : bool
-        tqdm progress bar over the torques (and, run in this process, over each
-        torque's roll positions).
-    scheduler, n_workers
-        Where the torques run (:func:`contact.study.engine.open_client`): default
-        ``"synchronous"`` (this process, one after the other); None a LocalCluster of
-        ``n_workers`` processes; an address or a ``distributed.Client`` a cluster.
-
-    Returns
-    -------
-    xarray.Dataset
-        dims (``torque``, ``speed``, ``temperature``, ``roughness``): ``efficiency`` [1],
-        ``power_loss`` [W] (means over the mesh cycles), ``friction_coefficient_mean``,
-        ``lambda_ratio_mean`` [1] (load-weighted means over the loaded segments),
-        ``friction_model_extrapolated_share`` [1] (share of the loaded segments where the
-        friction model is extrapolated, flagged per segment by the efficiency stage).
-
-    Raises
-    ------
-    InputError
-        Bad case, options or operating point (the message names the field).
-    ModelUnavailableError
-        Unknown lubricant or friction model.
-
-    Notes
-    -----
-    Seed §5.3 (efficiency over operating conditions).
-    """
-    from contact.study.efficiency import EfficiencyInputs, efficiency_at_torque
-    from contact.study.engine import run_tasks
-
-    c = resolve_case(case)
-    if misalignment is not None:
-        c = dataclasses.replace(c, misalignment=misalignment)
-    if operating is None:  # the case's conditions; the speeds are swept
-        operating = OperatingConditions.from_point(
-            c.operating, pinion_speed=c.operating.pinion_speed or OPERATING_DEFAULTS[
-                "pinion_speed"])
-    op = operating
-    torque = EFFICIENCY_MAP_TORQUES if torque is None else torque
-    speed = EFFICIENCY_MAP_SPEEDS if speed is None else speed
-    temperature = (op.temperature,) if temperature is None else temperature
-    roughness = (op.roughness,) if roughness is None else roughness
-    shared = EfficiencyInputs(c, options or LTCAOptions(), op,
-                              tuple(float(x) for x in speed),
-                              tuple(float(x) for x in temperature),
-                              tuple(float(x) for x in roughness), flank=flank,
-                              progress=bool(progress) and scheduler == "synchronous")
-    shape = (len(torque), len(speed), len(temperature), len(roughness))
-    eff, loss, mu_m, lam_m, extra = (np.full(shape, np.nan) for _ in range(5))
-    bar = None
-    if progress:
-        from tqdm.auto import tqdm
-
-        bar = tqdm(total=len(torque), desc="efficiency map", unit="torque")
-    for it, res in run_tasks(efficiency_at_torque, shared,
-                             [(i, float(t)) for i, t in enumerate(torque)],
-                             scheduler=scheduler, n_workers=n_workers):
-        eff[it], loss[it] = res["efficiency"], res["power_loss"]
-        mu_m[it], lam_m[it] = res["friction_coefficient_mean"], res["lambda_ratio_mean"]
-        extra[it] = res["extrapolated_share"]
-        if bar is not None:
-            bar.update()
-    if bar is not None:
-        bar.close()
-    dims4 = ("torque", "speed", "temperature", "roughness")
-    return xr.Dataset(
-        {
-            "efficiency": (dims4, eff, {"units": "1", "long_name": "mean mechanical efficiency"}),
-            "power_loss": (dims4, loss, {"units": "W", "long_name": "mean mesh power loss"}),
-            "friction_coefficient_mean": (
-                dims4,
-                mu_m,
-                {"units": "1", "long_name": "load-weighted mean friction coefficient"},
-            ),
-            "lambda_ratio_mean": (
-                dims4,
-                lam_m,
-                {"units": "1", "long_name": "load-weighted mean lambda ratio"},
-            ),
-            "friction_model_extrapolated_share": (
-                dims4,
-                extra,
-                {"units": "1", "long_name": "share of the loaded segments where the friction "
-                 "model is evaluated outside its fitted range"},
-            ),
-        },
-        coords={
-            "torque": (
-                "torque",
-                np.asarray(torque, float),
-                {"units": "N m", "long_name": "pinion torque"},
-            ),
-            "speed": (
-                "speed",
-                np.asarray(speed, float),
-                {"units": "rpm", "long_name": "pinion speed"},
-            ),
-            "temperature": (
-                "temperature",
-                np.asarray(temperature, float),
-                {"units": "degC", "long_name": "oil inlet temperature"},
-            ),
-            "roughness": (
-                "roughness",
-                np.asarray(roughness, float),
-                {"units": "um", "long_name": "RMS roughness Rq of each surface"},
-            ),
-        },
-        attrs={
-            "title": "mechanical efficiency map",
-            "case": c.name,
-            **misalignment_attrs(c.misalignment),
-            "lubricant": str(op.lubricant),
-            "friction_model": op.friction_model,
-            "toolkit_version": __version__,
-        },
-    )

@@ -5,7 +5,7 @@
 pinion speed, the lubricant and its inlet temperature, the surface roughness and the
 friction coefficient model. Its defaults are the toolkit's operating defaults — the
 ``ltca`` command line (``ltca run``, ``ltca efficiency-map``) and
-:func:`contact.pipeline.run_analysis` / :func:`contact.pipeline.efficiency_map` take
+:func:`contact.pipeline.run_analysis` / :func:`contact.study.efficiency.efficiency_map` take
 theirs from here::
 
     >>> from friction.operating import OperatingConditions

@@ -102,7 +102,7 @@ class OperatingPoint:
     fourth part of it, is :attr:`Case.misalignment`).
 
     Every entry point (``ltca`` commands, :func:`contact.pipeline.run_analysis`,
-    :func:`contact.pipeline.efficiency_map`, the studies' base point) uses these values
+    :func:`contact.study.efficiency.efficiency_map`, the studies' base point) uses these values
     unless the caller overrides them.
 
     Parameters

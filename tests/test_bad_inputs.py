@@ -235,7 +235,7 @@ def test_refusals_with_ranges():
     """A misalignment that separates the flanks is refused naming it and the range that
     works; the bound is checked independently: the ease-off at the bound meets the flanks
     on at least MIN_VALID_NODES nodes, and 10 % beyond the given value it does not."""
-    from contact.pipeline import resolve_case
+    from contact.catalogue import resolve_case
     from contact.utca.easeoff import MIN_VALID_NODES, ease_off
     from geometry.pair.assembly import Misalignment
 

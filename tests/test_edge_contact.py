@@ -18,9 +18,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from contact.catalogue import SEED_TABLE_3_1
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.ltca.edges import EDGE_KINDS, flank_boundary
-from contact.pipeline import SEED_TABLE_3_1
 from contact.utca import EaseOffFields, contact_curves, transitions
 from contact.utca.easeoff import ease_off
 from geometry.case import load_case

@@ -146,7 +146,7 @@ def test_table_5_4_designs_efficiency_and_offset_effect():
 
 def test_efficiency_map_trends_and_command(tmp_path):
     from contact.cli import main
-    from contact.pipeline import efficiency_map
+    from contact.study.efficiency import efficiency_map
     from geometry.core.io import read_netcdf
 
     emap = efficiency_map(

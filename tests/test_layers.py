@@ -14,8 +14,17 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
               qp ── geometry's shared low layer only (no gear in it)
 
   plus ``contact.errors`` (the exception family), which every layer may use;
+* the application layer ordered (issue 31), each level importing only its own and those
+  below, with no cycle between its parts::
+
+      commands, cli                      (the ``ltca`` command)
+        └── plots (figures, report)
+              └── study, optimize, wear  (studies and loops over analyses)
+                    └── catalogue, pipeline  (the bundled cases; one whole analysis)
+
+* ``geometry.core`` (the toolkit's low layer) imports nothing else of the toolkit;
 * no private name (``_x``) imported from another module, and no private module imported
-  from outside its own package.
+  from outside its own package — in the packages and in the bundled ``cases/`` scripts.
 """
 
 from __future__ import annotations
@@ -41,10 +50,16 @@ LAYER_DEPENDS = {
     "contact.compliance": set(),
     "contact.ltca": {"contact.qp", "contact.utca", "contact.compliance"},
 }
-APPLICATION = {"contact", "contact.pipeline", "contact.plots", "contact.cli",
-               "contact.wear",
-               "contact.__main__", "contact._moved", "contact.commands", "contact.study",
-               "contact.optimize"}
+#: the application layer's levels, lowest first: each unit (a module or subpackage) may
+#: import units of its own level and those below, never above; no cycle between units
+APPLICATION_LEVELS = (
+    ("catalogue, pipeline", {"contact", "contact._moved", "contact.catalogue",
+                             "contact.pipeline"}),
+    ("study, optimize, wear", {"contact.study", "contact.optimize", "contact.wear"}),
+    ("plots, report", {"contact.plots"}),
+    ("commands, cli", {"contact.commands", "contact.cli", "contact.__main__"}),
+)
+APPLICATION = set().union(*(units for _, units in APPLICATION_LEVELS))
 
 
 def _module_name(path: Path) -> str:
@@ -85,10 +100,86 @@ def _layer(module: str) -> str:
     for layer in LAYER_DEPENDS:
         if module == layer or module.startswith(layer + "."):
             return layer
-    if module in APPLICATION or module.startswith(("contact.commands.", "contact.plots.",
-                                                   "contact.study.", "contact.optimize.")):
+    if _application_unit(module) is not None:
         return "application"
     raise AssertionError(f"{module}: in no layer of contact (add it to tests/test_layers.py)")
+
+
+def _application_unit(module: str) -> str | None:
+    """The unit of the application layer a module belongs to (None: not in it)."""
+    for unit in sorted(APPLICATION, key=len, reverse=True):
+        if module == unit or (unit != "contact" and module.startswith(unit + ".")):
+            return unit
+    return None
+
+
+def _level(unit: str) -> int:
+    return next(i for i, (_, units) in enumerate(APPLICATION_LEVELS) if unit in units)
+
+
+def _application_edges() -> dict[str, set[str]]:
+    """unit → the application units it imports (module-level and in functions)."""
+    edges: dict[str, set[str]] = {}
+    for path in _sources():
+        this = _module_name(path)
+        mine = _application_unit(this) if this.startswith("contact") else None
+        if mine is None:
+            continue
+        for mod, name, _ in _imports(path):
+            theirs = _application_unit(_full(mod, name)) if mod.startswith("contact") else None
+            if theirs is not None and theirs != mine:
+                edges.setdefault(mine, set()).add(theirs)
+    return edges
+
+
+def _application_violations() -> list[str]:
+    """Upward imports between the application's levels and cycles between its units."""
+    bad = []
+    edges = _application_edges()
+    for unit, targets in sorted(edges.items()):
+        for target in sorted(targets):
+            if _level(target) > _level(unit):
+                bad.append(f"{unit} ({APPLICATION_LEVELS[_level(unit)][0]}) imports {target} "
+                           f"({APPLICATION_LEVELS[_level(target)][0]}): an upward import")
+    # cycles: depth-first search for a back edge
+    state: dict[str, int] = {}
+
+    def visit(unit: str, trail: list[str]) -> None:
+        state[unit] = 1
+        for target in sorted(edges.get(unit, ())):
+            if state.get(target) == 1:
+                cycle = [*trail[trail.index(target):], target] if target in trail else \
+                    [unit, target]
+                bad.append("import cycle: " + " -> ".join(cycle))
+            elif target not in state:
+                visit(target, [*trail, target])
+        state[unit] = 2
+
+    for unit in sorted(edges):
+        if unit not in state:
+            visit(unit, [unit])
+    return bad
+
+
+def _case_scripts() -> list[Path]:
+    return sorted((ROOT / "cases").rglob("*.py"))
+
+
+def _script_violations() -> list[str]:
+    """The bundled ``cases/`` scripts import no private name or module of the packages."""
+    bad = []
+    for path in _case_scripts():
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.module and \
+                    node.module.split(".")[0] in PACKAGES:
+                names = [a.name for a in node.names]
+                private = [n for n in names if n.startswith("_") and not n.startswith("__")]
+                if private or any(p.startswith("_") and not p.startswith("__")
+                                  for p in node.module.split(".")):
+                    bad.append(f"{path.relative_to(ROOT)}:{node.lineno}: imports "
+                               f"{node.module} {', '.join(names)} (private)")
+    return bad
 
 
 def _violations() -> list[str]:
@@ -103,6 +194,8 @@ def _violations() -> list[str]:
                 continue
             at = f"{where}:{line}: {this} imports {mod}{'.' + name if name else ''}"
             # package rules (DESIGN.md)
+            if this.startswith("geometry.core") and not mod.startswith("geometry.core"):
+                bad.append(f"{at} (geometry.core, the low layer, imports nothing above it)")
             if top == "geometry" and target_top != "geometry":
                 bad.append(f"{at} (geometry imports neither contact nor friction)")
             if top == "friction" and target_top == "contact":
@@ -146,6 +239,45 @@ def _full(mod: str, name: str) -> str:
 def test_import_rules_hold():
     bad = _violations()
     assert not bad, "\n".join(bad)
+
+
+def test_application_layer_is_ordered_without_cycles():
+    bad = _application_violations()
+    assert not bad, "\n".join(bad)
+
+
+def test_case_scripts_import_no_private_names():
+    bad = _script_violations()
+    assert not bad, "\n".join(bad)
+
+
+def test_application_rules_catch_an_upward_import_and_a_cycle(monkeypatch):
+    """The application checks are not vacuous: the pipeline importing the study engine is
+    both an upward import and a cycle (the engine runs the pipeline's analysis); a case
+    script importing a private name is reported."""
+    import test_layers as me
+
+    real = me._application_edges
+    monkeypatch.setattr(me, "_application_edges", lambda: {
+        **real(), "contact.pipeline": {"contact.study"}})
+    found = me._application_violations()
+    assert any("contact.pipeline (catalogue, pipeline) imports contact.study" in v
+               for v in found)
+    assert any(v.startswith("import cycle") and "contact.pipeline" in v
+               and "contact.study" in v for v in found)
+    fake = ROOT / "cases" / "_probe_script.py"
+    monkeypatch.setattr(me, "_case_scripts", lambda: [fake])
+    monkeypatch.setattr(Path, "read_text", _script_reader(fake, Path.read_text))
+    assert any("_probe_script.py:1" in v and "_intersect" in v for v in me._script_violations())
+
+
+def _script_reader(fake: Path, read):
+    def reader(self, *args, **kwargs):
+        if self == fake:
+            return "from geometry.machine.flank import _intersect\n"
+        return read(self, *args, **kwargs)
+
+    return reader
 
 
 @pytest.mark.parametrize("layer", sorted(LAYER_DEPENDS))

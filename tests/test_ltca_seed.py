@@ -7,7 +7,7 @@ docs/optimize.md), so these tests compare magnitudes and trends, with the bounds
 issue states, not curves. The limits the reference design was optimised for are tested in
 tests/test_reference_design.py. The
 misalignment signs of Table 3.1 were lost in the text extraction; the reading used here
-is :data:`contact.pipeline.SEED_TABLE_3_1` (ΔE = −0.15 mm, ΔP = +0.12 mm), argued there.
+is :data:`contact.catalogue.SEED_TABLE_3_1` (ΔE = −0.15 mm, ΔP = +0.12 mm), argued there.
 
 Seed values, read from Fig. 3.6 (axis ranges 90–130, 270–310, 580–620 µrad) and Table 3.1:
 LTE mean ≈ 110 / 290 / 600 µrad and LTE peak-to-peak 12.8 / 15.9 / 21.9 µrad at a pinion
@@ -21,8 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
+from contact.catalogue import DEFAULT_CASE, SEED_TABLE_3_1
 from contact.ltca import loaded_tca
-from contact.pipeline import DEFAULT_CASE, SEED_TABLE_3_1
 from geometry.case import load_case
 from geometry.pair.assembly import Misalignment
 

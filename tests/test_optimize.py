@@ -22,6 +22,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
+from contact.catalogue import SEED_TABLE_3_1, resolve_case
 from contact.cli import main as ltca
 from contact.ltca import LTCAOptions
 from contact.optimize import (
@@ -31,7 +32,7 @@ from contact.optimize import (
     optimize,
     problem_from_table,
 )
-from contact.pipeline import SEED_TABLE_3_1, resolve_case, run_analysis
+from contact.pipeline import run_analysis
 from contact.study.summary import point_summary
 from geometry.case import load_case
 from geometry.core.errors import InputError

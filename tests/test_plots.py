@@ -17,8 +17,9 @@ from matplotlib.collections import LineCollection, PathCollection
 from matplotlib.text import Annotation
 from mpl_toolkits.mplot3d import Axes3D
 
+from contact.catalogue import SEED_TABLE_3_1, resolve_case
 from contact.ltca import LTCAOptions
-from contact.pipeline import SEED_TABLE_3_1, efficiency_map, resolve_case, run_analysis
+from contact.pipeline import run_analysis
 from contact.plots import (
     analysis_figures,
     contact_pattern_figure,
@@ -39,6 +40,7 @@ from contact.plots import (
 )
 from contact.plots.flank import colour_index
 from contact.plots.tooth import segment_pieces
+from contact.study.efficiency import efficiency_map
 from friction.operating import OperatingConditions
 from geometry.core.errors import InputError
 

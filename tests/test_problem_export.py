@@ -98,7 +98,8 @@ def test_exported_problems_are_those_run_analysis_solved(exported):
     """The exact solution of each exported problem gives the loaded rotation Θ that
     run_analysis's LTCA recorded at that (torque, roll): the same problem, solved again.
     Tolerance 1e-9 relative: the solver's round-off (it is exact on a contact set)."""
-    from contact.pipeline import SEED_TABLE_3_1, run_analysis
+    from contact.catalogue import SEED_TABLE_3_1
+    from contact.pipeline import run_analysis
     from geometry.pair.assembly import Misalignment
 
     entries = read_manifest(exported)["problems"]

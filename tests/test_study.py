@@ -17,8 +17,9 @@ import xarray as xr
 from scipy import stats
 from threadpoolctl import threadpool_limits
 
+from contact.catalogue import resolve_case
 from contact.ltca import LTCAOptions
-from contact.pipeline import resolve_case, run_analysis
+from contact.pipeline import run_analysis
 from contact.study import (
     SUMMARY_VARIABLES,
     draw_points,

@@ -10,9 +10,10 @@ import numpy as np
 import pytest
 from scipy.stats import qmc
 
+from contact.catalogue import resolve_case
 from contact.cli import main
 from contact.ltca import LTCAOptions, loaded_tca
-from contact.pipeline import resolve_case, run_analysis
+from contact.pipeline import run_analysis
 from contact.utca import unloaded_tca
 from contact.utca.deviation_files import read_deviations
 from contact.utca.easeoff import ease_off
@@ -192,7 +193,7 @@ def test_line_speed_at_a_segment_beside_a_missing_node():
     field, so compared to 1e-12), and a cell with none stays NaN."""
     import types
 
-    import contact.wear as wear
+    import contact.wear.archard as wear
 
     u, v = np.linspace(0.0, 1.0, 5), np.linspace(0.0, 1.0, 4)
     uu, vv = np.meshgrid(u, v, indexing="ij")

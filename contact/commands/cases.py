@@ -37,7 +37,7 @@ def case_line(case, default: bool = False) -> tuple[str, ...]:
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
-    from contact.pipeline import DEFAULT_CASE, bundled_case_path, bundled_cases
+    from contact.catalogue import DEFAULT_CASE, bundled_case_path, bundled_cases
     from geometry.case import load_case
 
     rows = [case_line(load_case(bundled_case_path(name)), name == DEFAULT_CASE)

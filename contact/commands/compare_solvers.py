@@ -86,10 +86,10 @@ def run(args: argparse.Namespace) -> int:
         if args.with_standard:
             problems += standard_problem_set(quick=args.quick)
     elif args.case is not None:
+        from contact.catalogue import resolve_case
         from contact.commands.export_problems import case_problems
         from contact.commands.options import misalignment_from_args
         from contact.ltca import LTCAOptions
-        from contact.pipeline import resolve_case
 
         case = resolve_case(args.case)
         mis = misalignment_from_args(args, case.misalignment)

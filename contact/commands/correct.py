@@ -110,8 +110,8 @@ def _table(c) -> str:
 
 
 def run_correct(args: argparse.Namespace) -> int:
+    from contact.catalogue import resolve_case
     from contact.commands.synthesize import write_text_atomic
-    from contact.pipeline import resolve_case
     from contact.utca.deviation_files import read_deviations
     from contact.utca.easeoff import FLANK_ROLES, MATING_FLANK
     from geometry.case import case_from_dict

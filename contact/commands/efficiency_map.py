@@ -37,10 +37,10 @@ def register(sub) -> None:
         "unless given here.",
     )
     case_argument(p)
-    torque_option(p, default="100 250 500, contact.pipeline.EFFICIENCY_MAP_TORQUES")
+    torque_option(p, default="100 250 500, contact.study.efficiency.EFFICIENCY_MAP_TORQUES")
     misalignment_options(p)
     operating_options(p, many=True, speed_help="pinion speeds [rpm] (default 500 1000 1500 "
-                      "2500 4000, contact.pipeline.EFFICIENCY_MAP_SPEEDS)")
+                      "2500 4000, contact.study.efficiency.EFFICIENCY_MAP_SPEEDS)")
     solver_option(p)
     flank_option(p)
     rolls_per_cycle_option(p, default=10)
@@ -59,10 +59,11 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
+    from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options
-    from contact.pipeline import efficiency_map, resolve_case
     from contact.plots import plot_efficiency_map
     from contact.plots.style import misalignment_text
+    from contact.study.efficiency import efficiency_map
     from friction.operating import OperatingConditions
     from geometry.core.io import write_netcdf
 

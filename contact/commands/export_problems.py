@@ -60,8 +60,8 @@ def case_problems(name: str, torques: Sequence[float], misalignment=None,
     list of contact.qp.benchmark_problems.TestProblem
         As :func:`contact.ltca.ltca_problems`.
     """
+    from contact.catalogue import resolve_case
     from contact.ltca import ltca_problems
-    from contact.pipeline import resolve_case
     from contact.utca import ease_off
     from contact.utca.deviation_files import read_deviations
     from contact.utca.deviations import apply_deviations
@@ -98,7 +98,7 @@ def export_problems(cases: Sequence[str], directory: str | Path, *,
         Pinion torques (default :data:`DEFAULT_TORQUES`).
     misalignments : mapping of str to geometry.pair.assembly.Misalignment, optional
         Label → misalignment; default ``aligned`` (none) and ``misaligned`` (the seed's
-        Table 3.1: ΔE = −0.15 mm, ΔP = +0.12 mm, :data:`contact.pipeline.SEED_TABLE_3_1`).
+        Table 3.1: ΔE = −0.15 mm, ΔP = +0.12 mm, :data:`contact.catalogue.SEED_TABLE_3_1`).
     options : contact.ltca.LTCAOptions, optional
         LTCA settings (default ``LTCAOptions()``: 20 roll positions per mesh cycle).
     progress : bool
@@ -116,9 +116,9 @@ def export_problems(cases: Sequence[str], directory: str | Path, *,
     InputError
         Unknown case, bad torque or options.
     """
+    from contact.catalogue import SEED_TABLE_3_1
     from contact.ltca import LTCAOptions
     from contact.ltca.options import json_options
-    from contact.pipeline import SEED_TABLE_3_1
     from contact.qp.problem_files import write_manifest, write_problem
     from geometry.pair.assembly import Misalignment
 
@@ -192,8 +192,8 @@ def register(sub) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Export the problems and print where they went."""
+    from contact.catalogue import SEED_TABLE_3_1, bundled_cases
     from contact.ltca import LTCAOptions
-    from contact.pipeline import SEED_TABLE_3_1, bundled_cases
     from geometry.pair.assembly import Misalignment
 
     check_output_dir(args.output, option="-o")

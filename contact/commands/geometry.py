@@ -59,7 +59,7 @@ def geometry_tree(case, nu: int = 41, nv: int = 21):
 
 
 def run_geometry(args: argparse.Namespace) -> int:
-    from contact.pipeline import resolve_case
+    from contact.catalogue import resolve_case
     from geometry.core.io import write_netcdf
 
     output = default_output(args, "_geometry.nc")
@@ -76,7 +76,7 @@ def run_geometry(args: argparse.Namespace) -> int:
 
 
 def run_plot_geometry(args: argparse.Namespace) -> int:
-    from contact.pipeline import resolve_case
+    from contact.catalogue import resolve_case
     from geometry.machine.flank import flank_surface
     from geometry.plot import plot_flanks_in_mesh, plot_projection_grid
 

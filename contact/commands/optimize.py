@@ -87,8 +87,8 @@ def register(sub) -> None:
 def _start(arg: str | None):
     """(case, basic design or None) of the command's CASE argument: a basic design file
     (it has a ``[design]`` table) is synthesised; anything else is a case or a bundled
-    name (:func:`contact.pipeline.resolve_case`, which names a bad file)."""
-    from contact.pipeline import resolve_case
+    name (:func:`contact.catalogue.resolve_case`, which names a bad file)."""
+    from contact.catalogue import resolve_case
 
     path = Path(arg) if arg is not None else None
     if path is not None and path.is_file():

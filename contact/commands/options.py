@@ -135,7 +135,7 @@ def resolve_analysis_file(arg: str | None) -> Path:
     InputError
         Neither exists (the message says which command writes it).
     """
-    from contact.pipeline import DEFAULT_CASE
+    from contact.catalogue import DEFAULT_CASE
     from geometry.core.errors import InputError
 
     name = arg if arg is not None else DEFAULT_CASE.removesuffix(".toml")
@@ -270,7 +270,7 @@ def case_stem(case: str | None) -> str:
     """The name a CASE argument's outputs are named after, known before the case is
     loaded (so output paths are checked before any work): the bundled name, or the case
     file's name without ``.toml``; None the default case's."""
-    from contact.pipeline import DEFAULT_CASE
+    from contact.catalogue import DEFAULT_CASE
 
     return Path(DEFAULT_CASE if case is None else case).name.removesuffix(".toml")
 

@@ -43,7 +43,7 @@ def register(sub) -> None:
         "named after the case and plots. The torques, misalignment and efficiency conditions "
         "are the case's [operating] table unless given here; the default case's are the "
         "seed's Table 3.1 conditions (pinion torque 50/250/500 N m, ΔE = −0.15 mm, "
-        "ΔP = +0.12 mm; the seed lost the signs, see contact.pipeline.SEED_TABLE_3_1).",
+        "ΔP = +0.12 mm; the seed lost the signs, see contact.catalogue.SEED_TABLE_3_1).",
     )
     case_argument(p)
     torque_option(p)
@@ -153,7 +153,8 @@ def ltca_options(args: argparse.Namespace, **defaults):
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
-    from contact.pipeline import operating_conditions, resolve_case, run_analysis
+    from contact.catalogue import resolve_case
+    from contact.pipeline import operating_conditions, run_analysis
     from geometry.core.io import write_netcdf
 
     output = default_output(args)

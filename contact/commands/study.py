@@ -136,8 +136,8 @@ def register(sub) -> None:
 
 def _prepare(args: argparse.Namespace) -> tuple:
     """Output paths checked first; the keyword arguments every study takes."""
+    from contact.catalogue import resolve_case
     from contact.ltca import LTCAOptions
-    from contact.pipeline import resolve_case
 
     out = Path(default_output(args, f"_{args.study}.nc"))
     check_output_file(out)

@@ -40,7 +40,7 @@ def register(sub) -> None:
 
 def bundled_basic_names() -> list[str]:
     """Names of the bundled basic design files (``cases/basic/*.toml``)."""
-    from contact.pipeline import bundled_case_path
+    from contact.catalogue import bundled_case_path
 
     root = bundled_case_path().parent / "basic"
     return sorted(p.stem for p in root.glob("*.toml")) if root.is_dir() else []
@@ -55,7 +55,7 @@ def resolve_basic(arg: str | None) -> Path:
     InputError
         Neither a file nor a bundled name (the message lists the bundled ones).
     """
-    from contact.pipeline import DEFAULT_CASE, bundled_case_path
+    from contact.catalogue import DEFAULT_CASE, bundled_case_path
     from geometry.core.errors import InputError
 
     name = DEFAULT_CASE if arg is None else arg

@@ -52,7 +52,8 @@ def run_utca(args: argparse.Namespace) -> int:
     """Run the UTCA, print a summary, write netCDF and plots as asked."""
     import xarray as xr
 
-    from contact.pipeline import MISALIGNMENT_REFERENCE, misalignment_attrs, resolve_case
+    from contact.catalogue import resolve_case
+    from contact.pipeline import MISALIGNMENT_REFERENCE, misalignment_attrs
     from contact.utca import unloaded_tca
     from geometry.core.io import write_netcdf
 

@@ -63,8 +63,8 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
+    from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options
-    from contact.pipeline import resolve_case
     from contact.utca.deviation_files import write_deviation_netcdf
     from contact.wear import final_deviations, simulate_wear
     from geometry.core.io import write_netcdf

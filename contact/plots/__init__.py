@@ -1,7 +1,7 @@
 """Figures of the toolkit's results, and the one-page HTML report of an analysis.
 
 Every ``*_figure`` function takes result datasets (the groups of ``ltca run``'s netCDF,
-or the output of :func:`contact.pipeline.efficiency_map` / a study) and returns a
+or the output of :func:`contact.study.efficiency.efficiency_map` / a study) and returns a
 :class:`matplotlib.figure.Figure` (made without ``pyplot``; write it with
 :func:`save_png`). Titles name the case and its operating point; torques that are
 compared share one colour scale; signed quantities are drawn with a diverging map

@@ -351,7 +351,7 @@ def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
 
 
 def efficiency_map_figures(emap: xr.Dataset) -> Iterator[NamedFigure]:
-    """The figures of an efficiency map (:func:`contact.pipeline.efficiency_map`).
+    """The figures of an efficiency map (:func:`contact.study.efficiency.efficiency_map`).
 
     Yields
     ------

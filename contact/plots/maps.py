@@ -235,7 +235,7 @@ def efficiency_map_figure(emap: xr.Dataset, var: str = "efficiency") -> Figure:
     Parameters
     ----------
     emap : xarray.Dataset
-        The output of :func:`contact.pipeline.efficiency_map` (``efficiency`` [1],
+        The output of :func:`contact.study.efficiency.efficiency_map` (``efficiency`` [1],
         ``power_loss`` [W] over torque, speed, temperature, roughness).
     var : str
         ``efficiency`` (drawn in %) or ``power_loss`` …

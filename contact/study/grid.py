@@ -16,8 +16,9 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from contact.catalogue import resolve_case
 from contact.ltca import LTCAOptions
-from contact.pipeline import resolve_case, resolve_deviations
+from contact.pipeline import resolve_deviations
 from contact.study.engine import run_points, write_study
 from contact.study.points import POINT_INPUTS, StudyInputs
 from friction.operating import OperatingConditions

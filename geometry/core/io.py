@@ -28,11 +28,11 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from geometry import __version__
 from geometry.core.atomic_files import atomic_path
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, LTCAError
 from geometry.core.validation import integer
+from geometry.core.version import __version__
 
 __all__ = [
     "ACDD_ATTRS",

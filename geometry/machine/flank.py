@@ -50,6 +50,7 @@ __all__ = [
     "flank_dataset",
     "flank_surface",
     "geometry_datasets",
+    "line_intersection",
     "projection_fractions",
     "projection_grid",
 ]
@@ -70,7 +71,24 @@ class BlankOutline(NamedTuple):
     whole_depth: float  # outer whole depth hae + hfe [mm]
 
 
-def _intersect(p1, d1, p2, d2) -> np.ndarray:
+def line_intersection(p1, d1, p2, d2) -> np.ndarray:
+    """The intersection of two lines of a plane, p1 + t d1 and p2 + s d2.
+
+    Parameters
+    ----------
+    p1, d1, p2, d2 : array_like (2,) — [mm], [1]
+        A point and a direction of each line (axial, radial coordinates of a projection
+        plane).
+
+    Returns
+    -------
+    ndarray (2,) — [mm]
+
+    Raises
+    ------
+    numpy.linalg.LinAlgError
+        Parallel lines.
+    """
     a = np.array([[d1[0], -d2[0]], [d1[1], -d2[1]]])
     t = np.linalg.solve(a, np.asarray(p2, float) - np.asarray(p1, float))
     return np.asarray(p1, float) + t[0] * np.asarray(d1, float)
@@ -105,8 +123,8 @@ def blank_outline(blank: Blank) -> BlankOutline:
     for iu, cone_distance in enumerate((blank.outer_cone_distance - blank.face_width,
                                         blank.outer_cone_distance)):
         foot = apex + cone_distance * gen
-        corners[iu, 0] = _intersect([zr, 0.0], root_dir, foot, perp)
-        corners[iu, 1] = _intersect([zf, 0.0], face_dir, foot, perp)
+        corners[iu, 0] = line_intersection([zr, 0.0], root_dir, foot, perp)
+        corners[iu, 1] = line_intersection([zf, 0.0], face_dir, foot, perp)
     mean = apex + (blank.outer_cone_distance - 0.5 * blank.face_width) * gen
     return BlankOutline(corners, zp, zf, zr, mean,
                         blank.outer_addendum + blank.outer_dedendum)
