@@ -25,7 +25,7 @@ from tabulate import tabulate
 
 from contact.catalogue import resolve_case
 from contact.pipeline import run_analysis
-from contact.study import sweep
+from contact.study import StudyRun, sweep
 from geometry.pair.assembly import Misalignment
 
 TORQUE = 250.0
@@ -69,8 +69,8 @@ def run_map(n: int, workers: int, out_dir: Path) -> dict:
                       dashboard_address=None) as cluster, Client(cluster) as client, \
             PeakRSS() as client_mem:
         t0 = time.perf_counter()
-        ds = sweep(None, delta_E=dE, delta_P=dP, torque=TORQUE, scheduler=client,
-                   output=out_dir / f"map_{n}_{workers}.nc")
+        ds = sweep(None, delta_E=dE, delta_P=dP, torque=TORQUE,
+                   run=StudyRun(scheduler=client, output=out_dir / f"map_{n}_{workers}.nc"))
         wall = time.perf_counter() - t0
         worker_mem = max(client.run(_worker_peak).values())
     st = ds["status"].values

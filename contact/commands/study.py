@@ -138,6 +138,7 @@ def _prepare(args: argparse.Namespace) -> tuple:
     """Output paths checked first; the keyword arguments every study takes."""
     from contact.catalogue import resolve_case
     from contact.ltca import LTCAOptions
+    from contact.study import StudyRun
 
     out = Path(default_output(args, f"_{args.study}.nc"))
     check_output_file(out)
@@ -151,10 +152,10 @@ def _prepare(args: argparse.Namespace) -> tuple:
         kw["solver"] = args.solver
     if args.rolls_per_cycle is not None:
         kw["rolls_per_cycle"] = args.rolls_per_cycle
-    common = {"options": LTCAOptions(**kw), "flank": args.flank, "output": out,
-              "scheduler": args.scheduler, "n_workers": args.workers,
-              "progress": not args.no_progress}
-    return case, common
+    run = StudyRun(options=LTCAOptions(**kw), flank=args.flank, output=out,
+                   scheduler=args.scheduler, n_workers=args.workers,
+                   progress=not args.no_progress)
+    return case, run
 
 
 def _plots(ds, args) -> None:
@@ -198,7 +199,7 @@ def _status_line(ds) -> str:
 def sweep_command(args: argparse.Namespace) -> int:
     from contact.study import sweep
 
-    case, common = _prepare(args)
+    case, run = _prepare(args)
     axes = {}
     for opt, (name, factor) in _INPUT_OPTIONS.items():
         text = getattr(args, opt)
@@ -207,11 +208,11 @@ def sweep_command(args: argparse.Namespace) -> int:
     if not axes:
         raise InputError("sweep: give at least one of --dE, --dP, --dG, --dSigma, "
                          "--deviation-scale")
-    ds = sweep(case, torque=args.torque, speed=args.speed, **axes, **common)
+    ds = sweep(case, torque=args.torque, speed=args.speed, **axes, run=run)
     print(f"sweep of {case.name}: " + " x ".join(f"{k} {v.size}" for k, v in axes.items()))
     print(_ranges_table(ds))
     print(_status_line(ds))
-    print(f"wrote {common['output']}")
+    print(f"wrote {run.output}")
     _plots(ds, args)
     return 0
 
@@ -222,7 +223,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
     from contact.study import parse_distribution, sample, sensitivity
     from contact.study.monte_carlo import draw_values
 
-    case, common = _prepare(args)
+    case, run = _prepare(args)
     dists = {}
     for opt, (name, factor) in _INPUT_OPTIONS.items():
         text = getattr(args, opt)
@@ -232,7 +233,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
         raise InputError("tolerance: give the distribution of at least one of --dE, --dP, "
                          "--dG, --dSigma, --deviation-scale")
     ds = sample(case, dists, args.n, method=args.method, seed=args.seed,
-                torque=args.torque, speed=args.speed, **common)
+                torque=args.torque, speed=args.speed, run=run)
     print(f"tolerance analysis of {case.name}: {args.n} draws ({args.method}, seed "
           f"{args.seed}) of " + ", ".join(dists))
     ok = ds["status"].values != 2
@@ -263,7 +264,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
         print(tabulate(srows, headers=("T_p [N m]", "input", "Spearman", "SRC", "R^2"),
                        tablefmt="github"))
     print(_status_line(ds))
-    print(f"wrote {common['output']}")
+    print(f"wrote {run.output}")
     _plots(ds, args)
     return 0
 
@@ -274,7 +275,7 @@ def vh_check_command(args: argparse.Namespace) -> int:
     from contact.study import vh_check
     from contact.study.vh_check import VH_DEFAULT_LIMITS, VH_DEFAULT_TORQUE
 
-    case, common = _prepare(args)
+    case, run = _prepare(args)
     kw = {}
     if args.dE is not None:
         kw["delta_E"] = parse_range("--dE", args.dE)
@@ -283,7 +284,7 @@ def vh_check_command(args: argparse.Namespace) -> int:
     ds = vh_check(case, torque=args.torque or VH_DEFAULT_TORQUE,
                   toe=VH_DEFAULT_LIMITS[0] if args.toe is None else args.toe,
                   heel=VH_DEFAULT_LIMITS[1] if args.heel is None else args.heel,
-                  profile=args.profile, **kw, **common)
+                  profile=args.profile, **kw, run=run)
     rows = [(str(p), f"{float(r['V']):+.3f}", f"{float(r['H']):+.3f}",
              f"{float(r['target_u']):.3f}", f"{float(r['pattern_centre_u']):.3f}",
              f"{float(r['target_v']):.3f}", f"{float(r['pattern_centre_v']):.3f}",
@@ -293,7 +294,7 @@ def vh_check_command(args: argparse.Namespace) -> int:
           "(V = dE, H = dP; centre as fractions of face width u and whole depth v)")
     print(tabulate(rows, headers=("position", "V [mm]", "H [mm]", "target u", "centre u",
                                   "target v", "centre v", "grid tol. u"), tablefmt="github"))
-    print(f"wrote {common['output']}")
+    print(f"wrote {run.output}")
     _plots(ds, args)
     return 0
 

@@ -8,12 +8,14 @@ sample       Monte Carlo draws of the inputs from scipy.stats distributions (qmc
 sensitivity  which inputs drive an output's spread (rank correlation, SRC)
 vh_check     the offset (V) and pinion mounting (H) that move the pattern to toe and heel
 run_points   the engine under all of them: any list of points, on Dask
+StudyRun     how a study runs: LTCA options, flank, efficiency conditions, output, Dask
 """
 
 from contact.study.engine import SYNCHRONOUS, analyse_point, open_client, run_points
 from contact.study.grid import DEFAULT_TORQUE, study_inputs, sweep
 from contact.study.monte_carlo import draw_points, parse_distribution, sample, sensitivity
 from contact.study.points import POINT_INPUTS, StudyInputs
+from contact.study.run import StudyRun
 from contact.study.summary import STATUS_MEANINGS, SUMMARY_VARIABLES, point_summary
 from contact.study.vh_check import vh_check
 
@@ -24,6 +26,7 @@ __all__ = [
     "SUMMARY_VARIABLES",
     "SYNCHRONOUS",
     "StudyInputs",
+    "StudyRun",
     "analyse_point",
     "draw_points",
     "open_client",

@@ -21,6 +21,7 @@ from contact.ltca import LTCAOptions
 from contact.pipeline import resolve_deviations
 from contact.study.engine import run_points, write_study
 from contact.study.points import POINT_INPUTS, StudyInputs
+from contact.study.run import StudyRun, study_run
 from friction.operating import OperatingConditions
 from geometry.case import Case
 from geometry.core.errors import InputError
@@ -114,13 +115,8 @@ def sweep(
     deviation_scale: Any = None,
     torque: Any = None,
     speed: Any = None,
-    operating: OperatingConditions | None = None,
-    options: LTCAOptions | None = None,
-    flank: str | None = None,
-    output: str | os.PathLike[str] | None = None,
-    scheduler: Any = None,
-    n_workers: int | None = None,
-    progress: bool = False,
+    run: StudyRun | None = None,
+    **legacy: Any,
 ) -> xr.Dataset:
     """Analyse a case over a full grid of misalignments, deviation scales, torques, speeds.
 
@@ -141,16 +137,12 @@ def sweep(
         Pinion torques (default :data:`DEFAULT_TORQUE`).
     speed : float or sequence — [rpm], optional
         Pinion speeds: adds efficiency and power loss (default none).
-    operating, options, flank
-        As :func:`study_inputs`.
-    output : path-like, optional
-        Stream the points to ``OUTPUT.parts/`` as they finish and write the result to
-        ``OUTPUT`` (netCDF); an interrupted sweep started again resumes.
-    scheduler : None, "synchronous", address or distributed.Client
-        Where to run (:func:`contact.study.engine.open_client`): default a LocalCluster
-        of ``n_workers`` processes (default one per core).
-    progress : bool
-        Progress bar.
+    run : contact.study.StudyRun, optional
+        The LTCA options, flank and efficiency conditions of every point, the output file
+        (streamed, resumable) and where the points run (default a LocalCluster of one
+        worker per core, no file). The former keywords ``options``, ``flank``,
+        ``operating``, ``output``, ``scheduler``, ``n_workers``, ``progress`` still work
+        for one release (DeprecationWarning).
 
     Returns
     -------
@@ -169,26 +161,28 @@ def sweep(
     Examples
     --------
     >>> from contact.study import sweep
+    >>> from contact.study import StudyRun
     >>> m = sweep(delta_E=[-0.1, 0, 0.1], delta_P=[-0.1, 0, 0.1], torque=250,
-    ...           scheduler="synchronous")  # doctest: +SKIP
+    ...           run=StudyRun(scheduler="synchronous"))  # doctest: +SKIP
     >>> m["lte_peak_to_peak"].sel(torque=250).plot()  # doctest: +SKIP
     """
+    run = study_run(run, legacy, "sweep")
     given = {"delta_E": delta_E, "delta_P": delta_P, "delta_G": delta_G,
              "delta_Sigma": delta_Sigma, "deviation_scale": deviation_scale}
     axes = {n: _values(n, v, POINT_INPUTS[n][0]) for n, v in given.items() if v is not None}
     if not axes:
         raise InputError("sweep: give at least one of delta_E, delta_P, delta_G, "
                          "delta_Sigma, deviation_scale")
-    shared = study_inputs(case, torque, speed, operating=operating, options=options,
-                          flank=flank)
+    shared = study_inputs(case, torque, speed, operating=run.operating, options=run.options,
+                          flank=run.flank)
     names = list(axes)
     points = [dict(zip(names, map(float, combo), strict=True))
               for combo in itertools.product(*(axes[n] for n in names))]
-    flat = run_points(shared, points, names=names, output=output, scheduler=scheduler,
-                      n_workers=n_workers, progress=progress, kind="sweep")
+    flat = run_points(shared, points, names=names, output=run.output, scheduler=run.scheduler,
+                      n_workers=run.n_workers, progress=run.progress, kind="sweep")
     grid = _to_grid(flat, axes)
-    if output is not None:
-        write_study(grid, output, shared)
+    if run.output is not None:
+        write_study(grid, run.output, shared)
     return grid
 
 

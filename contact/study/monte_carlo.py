@@ -21,11 +21,10 @@ import xarray as xr
 from scipy import stats
 from scipy.stats import qmc
 
-from contact.ltca import LTCAOptions
 from contact.study.engine import run_points, write_study
 from contact.study.grid import study_inputs
 from contact.study.points import POINT_INPUTS
-from friction.operating import OperatingConditions
+from contact.study.run import StudyRun, study_run
 from geometry.case import Case
 from geometry.core.errors import InputError
 
@@ -164,13 +163,8 @@ def sample(
     seed: int | None = None,
     torque: Any = None,
     speed: Any = None,
-    operating: OperatingConditions | None = None,
-    options: LTCAOptions | None = None,
-    flank: str | None = None,
-    output: str | os.PathLike[str] | None = None,
-    scheduler: Any = None,
-    n_workers: int | None = None,
-    progress: bool = False,
+    run: StudyRun | None = None,
+    **legacy: Any,
 ) -> xr.Dataset:
     """Monte Carlo tolerance analysis: the case at n draws of its inputs, on Dask.
 
@@ -184,8 +178,8 @@ def sample(
         Number of draws.
     method, seed
         As :func:`draw_points` (a fixed seed makes the study reproducible).
-    torque, speed, operating, options, flank, output, scheduler, n_workers, progress
-        As :func:`contact.study.sweep`.
+    torque, speed, run
+        As :func:`contact.study.sweep` (the former run keywords likewise, deprecated).
 
     Returns
     -------
@@ -199,19 +193,20 @@ def sample(
     InputError
         As :func:`draw_points` and :func:`contact.study.sweep`.
     """
+    run = study_run(run, legacy, "sample")
     draws = draw_points(distributions, n, method=method, seed=seed)
-    shared = study_inputs(case, torque, speed, operating=operating, options=options,
-                          flank=flank)
+    shared = study_inputs(case, torque, speed, operating=run.operating, options=run.options,
+                          flank=run.flank)
     names = list(draws)
     points = [{k: float(draws[k][i]) for k in names} for i in range(int(n))]
-    flat = run_points(shared, points, names=names, output=output, scheduler=scheduler,
-                      n_workers=n_workers, progress=progress, kind="sample")
+    flat = run_points(shared, points, names=names, output=run.output, scheduler=run.scheduler,
+                      n_workers=run.n_workers, progress=run.progress, kind="sample")
     ds = flat.rename({"point": "sample"})
     ds.attrs.update(method=method, seed=-1 if seed is None else int(seed),
                     distributions="; ".join(f"{k}: {_describe(v)}"
                                             for k, v in distributions.items()))
-    if output is not None:
-        write_study(ds, output, shared)
+    if run.output is not None:
+        write_study(ds, run.output, shared)
     return ds
 
 

@@ -28,9 +28,9 @@ import xarray as xr
 from scipy.interpolate import RegularGridInterpolator
 from scipy.optimize import least_squares
 
-from contact.ltca import LTCAOptions
 from contact.study.engine import run_points, write_study
 from contact.study.grid import study_inputs
+from contact.study.run import StudyRun, study_run
 from geometry.case import Case
 from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment
@@ -91,12 +91,8 @@ def vh_check(
     profile: float | None = None,
     delta_E: Any = None,
     delta_P: Any = None,
-    options: LTCAOptions | None = None,
-    flank: str | None = None,
-    output: str | os.PathLike[str] | None = None,
-    scheduler: Any = None,
-    n_workers: int | None = None,
-    progress: bool = False,
+    run: StudyRun | None = None,
+    **legacy: Any,
 ) -> xr.Dataset:
     """The V-H check of a case: V (ΔE) and H (ΔP) that move the loaded pattern to toe and heel.
 
@@ -114,8 +110,10 @@ def vh_check(
     delta_E, delta_P : sequence — [mm], optional
         The V and H grid of the map (default :data:`VH_DEFAULT_GRID`); the solutions are
         sought inside it.
-    options, flank, output, scheduler, n_workers, progress
-        As :func:`contact.study.sweep` (``output``: the check's netCDF file).
+    run : contact.study.StudyRun, optional
+        As :func:`contact.study.sweep` (``output``: the check's netCDF file; no efficiency
+        stage runs, so ``run.operating`` must be None). The former run keywords likewise,
+        deprecated.
 
     Returns
     -------
@@ -142,6 +140,10 @@ def vh_check(
     from contact.pipeline import run_analysis
     from contact.study.summary import point_summary
 
+    run = study_run(run, legacy, "vh_check")
+    if run.operating is not None:
+        raise InputError("run.operating: the V-H check runs no efficiency stage; leave it None")
+    options, flank = run.options, run.flank
     for name, x in (("toe", toe), ("heel", heel)):
         if not (isinstance(x, (int, float)) and 0.0 < x < 1.0):
             raise InputError(f"{name}: must be a face-width fraction in (0, 1), got {x!r}")
@@ -155,8 +157,8 @@ def vh_check(
                              f"got {g.tolist()}")
     shared = study_inputs(case, torque, options=options, flank=flank)
     points = [{"delta_E": float(v), "delta_P": float(h)} for v in V for h in H]
-    flat = run_points(shared, points, names=["delta_E", "delta_P"], scheduler=scheduler,
-                      n_workers=n_workers, progress=progress, kind="V-H check map")
+    flat = run_points(shared, points, names=["delta_E", "delta_P"], scheduler=run.scheduler,
+                      n_workers=run.n_workers, progress=run.progress, kind="V-H check map")
     grid_cu = flat["pattern_centre_u"].values[:, 0].reshape(V.size, H.size)
     grid_cv = flat["pattern_centre_v"].values[:, 0].reshape(V.size, H.size)
     cu = RegularGridInterpolator((V, H), grid_cu, bounds_error=False, fill_value=np.nan)
@@ -247,6 +249,6 @@ def vh_check(
         attrs={**flat.attrs, "title": f"V-H check of {c.name}", "study": "vh-check",
                "torque_N_m": float(torque)},
     )
-    if output is not None:
-        write_study(ds, output, shared)
+    if run.output is not None:
+        write_study(ds, run.output, shared)
     return ds
