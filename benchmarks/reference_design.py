@@ -39,7 +39,7 @@ from contact.optimize import DesignVariable, OptimizeProblem, evaluate_design, s
 from contact.optimize.run import SharedDesign
 from contact.utca.easeoff import FLANK_ROLES
 
-SEED_LTE_MEAN = (110.0, 290.0, 600.0)  # [urad] the seed's Table 3.1 LTE means (approx.)
+SEED_LTE_MEAN = (110.0, 290.0, 600.0)  # [µrad] the seed's Table 3.1 LTE means (approx.)
 DEFAULT_VARIABLES = (("tip_relief", 5.0, 40.0), ("root_relief", 0.0, 30.0),
                      ("2C", -0.02, 0.02))
 

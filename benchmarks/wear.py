@@ -38,7 +38,7 @@ from contact.catalogue import DEFAULT_CASE, resolve_case  # noqa: E402
 from contact.pipeline import run_analysis  # noqa: E402
 from contact.wear import simulate_wear  # noqa: E402
 
-TORQUE = 200.0  # [N m]
+TORQUE = 200.0  # [N·m]
 TARGET = 2.0  # wear step / run_analysis
 
 

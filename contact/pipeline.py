@@ -207,7 +207,7 @@ def run_analysis(
         CSV/netCDF file path (:func:`contact.utca.deviation_files.read_deviations`) or None.
         The main groups then hold the deviated surfaces' results and
         ``/theoretical/{easeoff,utca,ltca}`` the theoretical ones, side by side;
-        ``/easeoff`` gains ``ease_off_change`` [um]. None (default) uses the case's
+        ``/easeoff`` gains ``ease_off_change`` [µm]. None (default) uses the case's
         ``[deviations]`` table if it has one (``Case.deviations``); ``False`` or
         ``(None, None)`` ignores it (theoretical surfaces only).
     geometry : bool

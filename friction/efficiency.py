@@ -113,7 +113,7 @@ def efficiency_analysis(
     xarray.Dataset
         The ``/friction`` dataset: over (``torque``, ``roll``, ``pair``, ``segment``)
         ``sliding_velocity``, ``rolling_velocity`` [m/s], ``slide_to_roll`` [1],
-        ``film_thickness`` [um], ``lambda_ratio`` [1], ``friction_coefficient`` [1],
+        ``film_thickness`` [µm], ``lambda_ratio`` [1], ``friction_coefficient`` [1],
         ``sliding_loss``, ``rolling_loss`` [W]; over (``torque``, ``roll``)
         ``power_loss`` [W] and ``efficiency`` [1]; over ``torque`` the cycle means
         ``power_loss_mean`` [W] and ``efficiency_mean`` [1]. Inputs outside a model's
@@ -363,7 +363,7 @@ def _power_losses(
     seg: _Segments, fric: _Friction, torque: np.ndarray, pinion_speed: float
 ) -> _Losses:
     """Sliding loss μ F V_s and rolling loss F_R L V_r [W] of each segment, their sum per
-    roll position [W] and the efficiency 1 − loss/(T_p ω_p) [1] (pinion torque [N m] per
+    roll position [W] and the efficiency 1 − loss/(T_p ω_p) [1] (pinion torque [N·m] per
     ``torque`` level, pinion speed [rpm])."""
     p_slide = fric.friction_coefficient * seg.force * seg.sliding_velocity  # N · m/s = W
     p_roll = fric.rolling_traction * seg.length * seg.rolling_velocity  # (N/mm) · mm · m/s = W

@@ -28,7 +28,7 @@ from geometry.pair.assembly import Misalignment
 
 ROOT = Path(__file__).resolve().parents[1]
 TORQUES = SEED_TABLE_3_1["torque"]
-SEED_LTE_MEAN = np.array([110.0, 290.0, 600.0])  # [urad], seed Fig. 3.6
+SEED_LTE_MEAN = np.array([110.0, 290.0, 600.0])  # [µrad], seed Fig. 3.6
 
 
 @cache
@@ -60,7 +60,7 @@ def test_every_roll_position_is_solved_and_certified():
     # equilibrium re-checked from the stored forces: Σ F R = T_g to 1e-9 relative
     ratio = _case().gear.blank.teeth / _case().pinion.blank.teeth
     moment = (ds["force"].fillna(0.0) * ds["moment_arm"]).sum(("pair", "segment"))
-    t_gear = ds["torque"] * ratio * 1e3  # [N mm]
+    t_gear = ds["torque"] * ratio * 1e3  # [N·mm]
     assert float(np.abs(moment / t_gear - 1.0).max()) < 1e-9
 
 

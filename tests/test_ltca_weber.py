@@ -41,7 +41,7 @@ def _roll(n_per_pair: int = 12) -> RollSelection:
         r_eq=np.full(n, 25.0), moment_arm=np.full(n, 80.0), separation=sep)
 
 
-@pytest.mark.parametrize("torque", [2e5, 1e6, 4e6])  # gear torque [N mm]
+@pytest.mark.parametrize("torque", [2e5, 1e6, 4e6])  # gear torque [N·mm]
 def test_converged_loads_solve_the_nonlinear_problem(torque):
     """At the converged loads F: C_s(F) F + s − R Θ = Y ≥ 0, F ≥ 0, F·Y = 0 and
     Rᵀ F = T, with C_s the structural compliance plus Weber's *secant* compliance at F.

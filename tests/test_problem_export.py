@@ -110,7 +110,7 @@ def test_exported_problems_are_those_run_analysis_solved(exported):
         for e in (e for e in entries if e["misalignment"] == label):
             sol = solve_contact(read_problem(exported / e["file"]))
             assert sol.found
-            theta = ltca["loaded_rotation"].isel(torque=0, roll=e["roll"]).item()  # [urad]
+            theta = ltca["loaded_rotation"].isel(torque=0, roll=e["roll"]).item()  # [µrad]
             assert sol.rotation * 1e6 == pytest.approx(theta, rel=1e-9)
 
 

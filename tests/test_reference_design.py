@@ -29,7 +29,7 @@ from geometry.case import load_case
 ROOT = Path(__file__).resolve().parents[1]
 CASE = ROOT / "cases" / "kolivand2009_fm_11x41_reference.toml"
 BASIC = ROOT / "cases" / "basic" / "kolivand2009_fm_11x41_reference.toml"
-SEED_LTE_MEAN = np.array([110.0, 290.0, 600.0])  # [urad], seed Fig. 3.6
+SEED_LTE_MEAN = np.array([110.0, 290.0, 600.0])  # [µrad], seed Fig. 3.6
 
 
 @cache

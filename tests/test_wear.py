@@ -35,7 +35,7 @@ CASE = "kolivand2009_fm_11x41"
 LIGHT = LTCAOptions(rolls_per_cycle=8, segments=12)
 K = 1e-17  # [m²/N]
 CYCLES = 1e6
-TORQUE = 200.0  # [N m]
+TORQUE = 200.0  # [N·m]
 
 
 def test_uniform_pressure_and_sliding_give_archards_closed_form():

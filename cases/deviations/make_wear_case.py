@@ -31,7 +31,7 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 CASE = "kolivand2009_fm_11x41"
-TORQUE = 200.0  # [N m]
+TORQUE = 200.0  # [N·m]
 WEAR_COEFFICIENT = 1e-17  # [m^2/N]
 CYCLES = 2.5e6  # pinion load cycles
 STEPS = 10

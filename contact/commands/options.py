@@ -8,7 +8,7 @@ commands call them instead of spelling the options themselves, so ``--torque``,
 (:func:`deprecated_alias`) that warn once.
 
 Units at this boundary: lengths [mm], ΔΣ [deg] (as in case files; ``Misalignment`` holds
-rad), torques [N m], speeds [rpm], temperatures [degC], roughness [um].
+rad), torques [N·m], speeds [rpm], temperatures [degC], roughness [µm].
 
 Public functions
 ----------------
@@ -151,7 +151,7 @@ def resolve_analysis_file(arg: str | None) -> Path:
 
 def torque_option(p: argparse.ArgumentParser, *, many: bool = True,
                   default: str = "the case's [operating] torques") -> None:
-    """``--torque N_M [N_M ...]``: pinion torques [N m]."""
+    """``--torque N_M [N_M ...]``: pinion torques [N·m]."""
     p.add_argument("--torque", type=float, nargs="+" if many else None, default=None,
                    metavar="N_M", help=f"pinion torque{'s' if many else ''} [N m] "
                                        f"(default {default})")

@@ -82,7 +82,7 @@ def register(sub) -> None:
     q.set_defaults(func=plot)
 
 
-#: columns of the theoretical/deviated TE table (seed Tables 4.2, 4.4), all [urad] but T_p
+#: columns of the theoretical/deviated TE table (seed Tables 4.2, 4.4), all [µrad] but T_p
 TE_TABLE_HEADERS = (
     "T_p [N m]",
     "surfaces",

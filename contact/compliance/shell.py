@@ -341,7 +341,7 @@ def _stiffness(
     a: float,
 ) -> np.ndarray:
     """The Ritz stiffness matrix K (n_dof, n_dof) of seed Eq. 3.10, strain energy
-    ½ qᵀ K q [N mm] of the unknowns q: seed Eq. 3.6a (plane stress [MPa], shear × κ for the
+    ½ qᵀ K q [N·mm] of the unknowns q: seed Eq. 3.6a (plane stress [MPa], shear × κ for the
     Mindlin theories) integrated over the quadrature ``quad`` and symmetrised; a [mm] the
     height that normalises x, n the number of face functions."""
     radius = tooth.radius

@@ -1,7 +1,7 @@
 """The ``/ltca`` dataset of a loaded TCA: loads, pressures, LTE and its summary.
 
 Every variable carries ``units`` and ``long_name`` (the exchange names of DESIGN.md:
-``transmission_error`` [urad] over (``torque``, ``roll``); ``force`` [N] and
+``transmission_error`` [µrad] over (``torque``, ``roll``); ``force`` [N] and
 ``pressure_max`` [MPa] over (``torque``, ``roll``, ``pair``, ``segment``); ``load_share``
 [1] over (``torque``, ``roll``, ``pair``)); the attributes record the solver, the
 transitions, the options and the misalignment as JSON, the edge radii and the members'
@@ -75,7 +75,7 @@ def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
 
 
 def _load_vars(lte: np.ndarray, screening: Screening, results: RollResults) -> dict:
-    """The LTE (NT, J) [urad], the loaded rotation, the UTE and the per-segment loads."""
+    """The LTE (NT, J) [µrad], the loaded rotation, the UTE and the per-segment loads."""
     return {
         "transmission_error": _var(_DIMS2, lte, "urad",
                                    "loaded transmission error (gear lag, UTE + loaded rotation)"),
@@ -163,7 +163,7 @@ def _solution_vars(seg: Segments, results: RollResults) -> dict:
 
 def _summary_vars(setup: LTCASetup, seg: Segments, results: RollResults,
                   lte: np.ndarray) -> dict:
-    """The summary of the LTE (NT, J) [urad] over the mesh cycles, the peak pressures and
+    """The summary of the LTE (NT, J) [µrad] over the mesh cycles, the peak pressures and
     the loaded pattern."""
     summ, harm = _lte_summary(setup, lte)
     curve = seg.kind == 0
@@ -192,7 +192,7 @@ def _summary_vars(setup: LTCASetup, seg: Segments, results: RollResults,
 
 def _lte_summary(setup: LTCASetup, lte: np.ndarray) -> tuple[dict, np.ndarray]:
     """Mean, peak-to-peak, RMS and harmonic RSS (NT,) and the first three harmonic
-    amplitudes (NT, 3) [urad] of the LTE (NT, J) over the mesh cycles (NaN where a roll
+    amplitudes (NT, 3) [µrad] of the LTE (NT, J) over the mesh cycles (NaN where a roll
     has no solution or the sampling does not resolve a harmonic: 2n + 1 ≤ samples per
     cycle)."""
     NT = lte.shape[0]

@@ -121,10 +121,10 @@ def loaded_tca(
     Returns
     -------
     xarray.Dataset
-        The ``/ltca`` dataset (exchange names: ``transmission_error`` [urad] over
+        The ``/ltca`` dataset (exchange names: ``transmission_error`` [µrad] over
         (``torque``, ``roll``); ``force`` [N] and ``pressure_max`` [MPa] over
         (``torque``, ``roll``, ``pair``, ``segment``); ``load_share`` [1] over
-        (``torque``, ``roll``, ``pair``); ``torque`` coordinate [N m]), plus load per
+        (``torque``, ``roll``, ``pair``); ``torque`` coordinate [N·m]), plus load per
         length, half-width, contact and edge flags, separations, residuals, solver
         status and times, and the LTE summary over the mesh cycles.
 

@@ -60,7 +60,7 @@ class LTCAOptions:
         which leaves out only segments whose gap stays open (s ≥ R Θ).
     solver : str
         Registered solver name (default our exact ``active_set``).
-    weber_tolerance : float — [urad]
+    weber_tolerance : float — [µrad]
         Stop the Weber load iteration when the LTE changes by less, or its next Newton
         step is foretold to be ten times smaller (default 1e-3).
     max_weber_iterations : int

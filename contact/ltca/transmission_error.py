@@ -56,7 +56,7 @@ def mesh_harmonics(roll, te, mesh_period: float, n_harmonics: int = 3) -> np.nda
     ----------
     roll : array (K,) — [rad]
         Pinion roll angles, uniform, covering whole mesh cycles, end point excluded.
-    te : array (K,) — any unit (e.g. [urad])
+    te : array (K,) — any unit (e.g. [µrad])
     mesh_period : float — [rad]
         One mesh cycle of pinion roll, 2π/z_p.
     n_harmonics : int

@@ -52,7 +52,7 @@ __all__ = ["RELIEF_VARIABLES", "SYNTHESIS_VARIABLES", "DesignVariable", "case_at
 
 #: relief variables (µm of normal relief at the flank's tip end / root end, mean section)
 RELIEF_VARIABLES: Mapping[str, str] = {"tip_relief": "um", "root_relief": "um"}
-_RELIEF_MAX = 200.0  # [um] geometry.machine.relief's limit (0.2 mm)
+_RELIEF_MAX = 200.0  # [µm] geometry.machine.relief's limit (0.2 mm)
 #: local-synthesis inputs of the optimised flank (a basic-design start only), file units
 SYNTHESIS_VARIABLES: Mapping[str, str] = {k: u for k, u in FLANK_OPTION_UNITS.items()
                                           if k not in RELIEF_VARIABLES}

@@ -43,7 +43,7 @@ def pair_ute_curves(utca: xr.Dataset, start: float | None = None,
     Parameters
     ----------
     utca : xarray.Dataset
-        ``/utca`` (``pair_transmission_error`` (roll, pair) [urad], ``mesh_period`` [rad]).
+        ``/utca`` (``pair_transmission_error`` (roll, pair) [µrad], ``mesh_period`` [rad]).
     start : float, optional
         First roll of the window [rad] (default the first roll of ``/utca``).
     cycles : float
@@ -52,7 +52,7 @@ def pair_ute_curves(utca: xr.Dataset, start: float | None = None,
     Returns
     -------
     dict of int to (x, te)
-        Pair offset → (mesh cycles from ``start`` [1], UTE [urad]) where it meshes.
+        Pair offset → (mesh cycles from ``start`` [1], UTE [µrad]) where it meshes.
     """
     require(utca, ("pair_transmission_error",), "utca")
     roll = utca["roll"].values
@@ -88,7 +88,7 @@ def transmission_error_figure(utca: xr.Dataset | None, ltca: xr.Dataset | None) 
     utca : xarray.Dataset or None
         ``/utca``; None leaves the UTE panel out.
     ltca : xarray.Dataset or None
-        ``/ltca`` (``transmission_error`` (torque, roll) [urad], ``mesh_cycle``); None
+        ``/ltca`` (``transmission_error`` (torque, roll) [µrad], ``mesh_cycle``); None
         leaves the LTE panels out.
 
     Returns

@@ -104,7 +104,7 @@ def easeoff_topography_figure(easeoff: xr.Dataset) -> Figure:
     Parameters
     ----------
     easeoff : xarray.Dataset
-        ``/easeoff``: ``ease_off`` (u, v) [um] with coordinates ``u``, ``v`` [1].
+        ``/easeoff``: ``ease_off`` (u, v) [µm] with coordinates ``u``, ``v`` [1].
 
     Returns
     -------
@@ -151,7 +151,7 @@ def easeoff_contour_figure(easeoff: xr.Dataset) -> Figure:
     Parameters
     ----------
     easeoff : xarray.Dataset
-        ``/easeoff``: ``ease_off`` [um], ``roll_angle`` [rad], ``axial_position`` and
+        ``/easeoff``: ``ease_off`` [µm], ``roll_angle`` [rad], ``axial_position`` and
         ``radial_position`` [mm] over (u, v).
 
     Returns
@@ -200,7 +200,7 @@ def easeoff_map_figure(
         Panel title → ``/easeoff`` (e.g. ``{"theoretical": ..., "deviated": ...}``); the
         panels share one colour scale.
     var : str
-        The variable drawn (``ease_off`` [um], ``ease_off_change`` [um] …).
+        The variable drawn (``ease_off`` [µm], ``ease_off_change`` [µm] …).
     diverging : bool
         Draw with the diverging map centred on zero (for signed quantities).
 

@@ -294,15 +294,15 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
     Returns
     -------
     xarray.Dataset
-        ``unloaded_transmission_error`` (roll) [urad], ``pair_transmission_error``
-        (roll, pair) [urad], ``active`` (roll, pair), curve places ``curve_u``,
+        ``unloaded_transmission_error`` (roll) [µrad], ``pair_transmission_error``
+        (roll, pair) [µrad], ``active`` (roll, pair), curve places ``curve_u``,
         ``curve_v``, ``curve_axial_position``, ``curve_radial_position`` and
-        ``curve_position``/``curve_normal`` (gear frame), ``curve_ease_off`` [urad],
-        ``separation`` [um] (normal gap to the actual gear position), ``contact_pattern``
+        ``curve_position``/``curve_normal`` (gear frame), ``curve_ease_off`` [µrad],
+        ``separation`` [µm] (normal gap to the actual gear position), ``contact_pattern``
         (roll, pair, point), ``contact_line_length`` [mm], the paths LPP/CPP/RPP
         (``path_u``, ``path_v``, ``path_axial_position``, ``path_radial_position``),
         ``transition_roll``/``transition_transmission_error`` (M1, M2) and
-        ``peak_to_peak_transmission_error`` [urad].
+        ``peak_to_peak_transmission_error`` [µrad].
 
     Raises
     ------
@@ -564,7 +564,7 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
     Returns
     -------
     xarray.Dataset
-        ``ease_off`` [um] along the gear normal, ``ease_off_angle`` [urad] (gear lag),
+        ``ease_off`` [µm] along the gear normal, ``ease_off_angle`` [µrad] (gear lag),
         ``roll_angle`` [rad] (Q), ``axial_position``/``radial_position`` [mm] (gear
         projection plane), ``mask`` and ``mask_reason``, the mating pinion point's
         projection-plane place, the real gear flank (``gear_position``, ``gear_normal``)

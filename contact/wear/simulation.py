@@ -164,10 +164,10 @@ def simulate_wear(
         ``gear_deviation`` (step, u_gear, v_gear) [mm] (negative = worn),
         ``pinion_wear_rate``, ``gear_wear_rate`` [mm] (depth per load cycle of that
         state), ``unloaded_transmission_error`` (step, roll_utca) and
-        ``transmission_error`` (step, roll) [urad], their peak-to-peak values
-        ``ute_peak_to_peak``, ``lte_peak_to_peak`` [urad], ``pressure_max_flank`` [MPa],
+        ``transmission_error`` (step, roll) [µrad], their peak-to-peak values
+        ``ute_peak_to_peak``, ``lte_peak_to_peak`` [µrad], ``pressure_max_flank`` [MPa],
         ``pressure_envelope`` (step, u, v) [MPa] (the loaded pattern, gear grid),
-        ``gear_torque_transmitted`` (step, roll) [N m] (Σ F R of the solution),
+        ``gear_torque_transmitted`` (step, roll) [N·m] (Σ F R of the solution),
         ``residual_equilibrium`` [1] (largest over the rolls), ``max_pinion_depth``,
         ``max_gear_depth`` [mm], ``step_time`` [s]. Attributes: case, torque, wear
         coefficient, cycles, steps, toolkit version.

@@ -6,7 +6,7 @@ never reaches numpy (no NaN passed on, no crash deep inside). The messages all r
 
     ``<field>: must be <accepted> [<unit>], got <value>``
 
-e.g. ``roughness: must be finite and > 0 [um], got -1.0`` or
+e.g. ``roughness: must be finite and > 0 [µm], got -1.0`` or
 ``poisson_ratio: must be in [0, 0.5) [1], got 0.6``; the unit is left out for counts and
 names. The case-file loader (:mod:`geometry.case`) prefixes the field with its dotted path
 (``pinion.machine.concave.ratio_of_roll: …``) in the same style.

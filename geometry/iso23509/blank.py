@@ -95,7 +95,7 @@ class MemberBlank:
     Attributes
     ----------
     z : int
-        Number of teeth [-].
+        Number of teeth [1].
     delta, delta_a, delta_f : float
         Pitch angle δ, face angle δ_a, root angle δ_f [rad].
     theta_a, theta_f : float
@@ -212,7 +212,7 @@ class BlankGeometry:
 
     @property
     def u(self) -> float:
-        """Gear ratio u = z2/z1 [-]."""
+        """Gear ratio u = z2/z1 [1]."""
         return self.design.u
 
 
@@ -266,10 +266,10 @@ def spiral_angle_at(
         Cutter radius r_c0 [mm]: radius of the tooth trace in the pitch plane (face
         milling), distance from the cutter centre to the blade (face hobbing).
     z0 : float
-        Number of blade groups [-], ≥ 0: 0 (default) for face milling. Real, so that the
+        Number of blade groups [1], ≥ 0: 0 (default) for face milling. Real, so that the
         face-milling limit can be approached.
     z_p : float
-        Number of crown gear teeth [-], z/sin δ of the member; used for face hobbing only.
+        Number of crown gear teeth [1], z/sin δ of the member; used for face hobbing only.
 
     Returns
     -------
@@ -340,9 +340,9 @@ def pinion_spiral_angle_at(
     rc0 : float
         Cutter radius r_c0 [mm], > 0.
     z0 : float
-        Number of blade groups [-]: 0 (default) for face milling, ≥ 1 for face hobbing.
+        Number of blade groups [1]: 0 (default) for face milling, ≥ 1 for face hobbing.
     z_p2 : float
-        Number of teeth of the gear's crown gear z2/sin δ2 [-] (face hobbing only).
+        Number of teeth of the gear's crown gear z2/sin δ2 [1] (face hobbing only).
 
     Returns
     -------

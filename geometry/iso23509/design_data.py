@@ -77,7 +77,7 @@ class BevelGearDesign:
         Method 0. Only the offset that makes the pinion spiral angle larger than the gear's
         (the usual hypoid) is modelled.
     z1, z2 : int
-        Numbers of teeth of pinion and gear [-], 5 ≤ z1 ≤ z2 ≤ 500.
+        Numbers of teeth of pinion and gear [1], 5 ≤ z1 ≤ z2 ≤ 500.
     de2 : float
         Outer pitch diameter of the gear d_e2 [mm], > 0: required for Methods 0, 1 and 3,
         left out (``None``) for Method 2.
@@ -94,36 +94,36 @@ class BevelGearDesign:
         tooth trace in the pitch plane, for face hobbing the distance from the cutter centre
         to the blade at the mean point.
     z0 : int
-        Number of blade groups of the cutter z0 [-]: 0 (default) for face milling, ≥ 1 for
+        Number of blade groups of the cutter z0 [1]: 0 (default) for face milling, ≥ 1 for
         face hobbing (required by Methods 2 and 3).
     alpha_dD, alpha_dC : float
         Design pressure angles of the drive and coast flanks α_dD, α_dC [rad], (0°, 45°).
     f_alim : float
-        Influence factor of the limit pressure angle f_αlim [-], [0, 1].
+        Influence factor of the limit pressure angle f_αlim [1], [0, 1].
     input_data_type : str
         How tooth depth and thickness are given, one of :data:`INPUT_DATA_TYPES`: ``"II"``
         (default; ``c_ham``, ``k_d``, ``k_c``, ``k_t``) or ``"I"`` (``x_hm1``, ``k_hap``,
         ``k_hfp``, ``x_smn``). The fields of the type chosen are required, the other type's
         must be left out (:data:`DEPTH_FIELDS`).
     c_ham : float
-        Type II: mean addendum factor of the gear c_ham [-], [0, 0.5].
+        Type II: mean addendum factor of the gear c_ham [1], [0, 0.5].
     k_d : float
-        Type II: depth factor k_d [-], (0, 4]: mean working depth h_mw = k_d m_mn.
+        Type II: depth factor k_d [1], (0, 4]: mean working depth h_mw = k_d m_mn.
     k_c : float
-        Type II: clearance factor k_c [-], [0, 0.5]: clearance c = k_c h_mw.
+        Type II: clearance factor k_c [1], [0, 0.5]: clearance c = k_c h_mw.
     k_t : float
-        Type II: thickness factor k_t [-], [−0.5, 0.5].
+        Type II: thickness factor k_t [1], [−0.5, 0.5].
     k_hap : float
-        Type I: basic crown gear addendum factor k_hap [-], (0, 2]: h_mw = 2 k_hap m_mn
+        Type I: basic crown gear addendum factor k_hap [1], (0, 2]: h_mw = 2 k_hap m_mn
         (k_hap = k_d/2).
     x_hm1 : float
-        Type I: profile shift coefficient of the pinion x_hm1 [-], [0, k_hap]:
+        Type I: profile shift coefficient of the pinion x_hm1 [1], [0, k_hap]:
         h_am1 = (k_hap + x_hm1) m_mn, h_am2 = (k_hap − x_hm1) m_mn (x_hm1 = k_d (0.5 − c_ham)).
     k_hfp : float
-        Type I: basic crown gear dedendum factor k_hfp [-], [k_hap, 2 k_hap]: clearance
+        Type I: basic crown gear dedendum factor k_hfp [1], [k_hap, 2 k_hap]: clearance
         c = (k_hfp − k_hap) m_mn (k_hfp = k_d (k_c + 0.5)).
     x_smn : float
-        Type I: thickness modification coefficient x_smn [-], [−0.25, 0.25] (x_smn = k_t/2).
+        Type I: thickness modification coefficient x_smn [1], [−0.25, 0.25] (x_smn = k_t/2).
     backlash : str
         How the backlash is given, one of :data:`BACKLASH_KINDS`: ``"j_en"`` outer normal
         backlash (measured perpendicular to the flanks), ``"j_et2"`` outer transverse
@@ -273,7 +273,7 @@ class BevelGearDesign:
 
     @property
     def u(self) -> float:
-        """Gear ratio u = z2/z1 [-] (ISO 23509 cl. 5)."""
+        """Gear ratio u = z2/z1 [1] (ISO 23509 cl. 5)."""
         return self.z2 / self.z1
 
     @property

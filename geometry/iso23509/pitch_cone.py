@@ -118,7 +118,7 @@ class PitchCone:
     method : int
         Method used (0 to 3).
     u : float
-        Gear ratio u = z2/z1 [-].
+        Gear ratio u = z2/z1 [1].
     delta1, delta2 : float
         Pitch angles δ1, δ2 [rad].
     Rm1, Rm2 : float
@@ -153,7 +153,7 @@ class PitchCone:
         Generated normal pressure angles of drive and coast flank [rad],
         α_nD = α_dD + f_αlim α_lim, α_nC = α_dC − f_αlim α_lim.
     c_be2 : float
-        Face width factor c_be2 = (R_e2 − R_m2)/b2 [-] (0.5 in Methods 0, 2 and 3).
+        Face width factor c_be2 = (R_e2 − R_m2)/b2 [1] (0.5 in Methods 0, 2 and 3).
     Re2 : float
         Outer cone distance of the gear R_e2 = d_e2 / (2 sin δ2) [mm] (R_m2 + b2/2 in
         Method 2).
@@ -244,10 +244,10 @@ def face_hobbing_trace(
         Nominal cutter radius r_c0 [mm], > 0: distance from the cutter centre to the blade
         as it passes the point.
     z0 : float
-        Number of blade groups [-], ≥ 0 (real, so that the face-milling limit z0 → 0 can be
+        Number of blade groups [1], ≥ 0 (real, so that the face-milling limit z0 → 0 can be
         approached; a design holds an integer). 0 gives the face-milling circle.
     z_p : float
-        Number of teeth of the crown gear [-], > 0: z/sin δ for a member of pitch angle δ.
+        Number of teeth of the crown gear [1], > 0: z/sin δ for a member of pitch angle δ.
 
     Returns
     -------

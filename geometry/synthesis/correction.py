@@ -719,7 +719,7 @@ def corrected_case(case: Case, corrections: Sequence[SettingCorrection], *,
         ``deviations`` dropped (the measured files describe the uncorrected flanks), and
         ``extra["correction"]`` holding the source case, per member and flank the
         corrections (file units), the settings held fixed, and the RMS/max deviation
-        before and residual after [um].
+        before and residual after [µm].
 
     Raises
     ------
