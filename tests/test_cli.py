@@ -187,12 +187,12 @@ def test_output_paths_are_refused_before_any_work(argv, message, tmp_path, monke
     def trap(*args, **kwargs):
         raise AssertionError("work started before the output paths were checked")
 
-    import contact.pipeline
+    import contact.catalogue
     import contact.qp.benchmark_problems
     import geometry.case
     import geometry.synthesis.basic_design
 
-    for mod, name in ((contact.pipeline, "resolve_case"), (geometry.case, "load_case"),
+    for mod, name in ((contact.catalogue, "resolve_case"), (geometry.case, "load_case"),
                       (geometry.synthesis.basic_design, "load_basic"),
                       (contact.qp.benchmark_problems, "standard_problem_set")):
         monkeypatch.setattr(mod, name, trap)
