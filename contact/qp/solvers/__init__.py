@@ -24,6 +24,7 @@ import numpy as np
 from contact.errors import SolverNotFoundError
 from contact.qp.problem import (
     DEFAULT_TOLERANCE,
+    RESIDUALS,
     ContactProblem,
     ContactSolution,
     contact_residuals,
@@ -56,11 +57,18 @@ def _solve_active_set(
     fallback: bool = True,
 ) -> RawResult:
     del accuracy  # exact method: the accuracy level does not apply
+    initial_upper_set = None
     if initial_active_set is None and initial is not None:
-        initial_active_set = np.asarray(initial) > 0
+        init = np.asarray(initial)
+        initial_active_set = init > 0
+        if problem.has_bounds:
+            # a warm start's segments at (or beyond) their limits start at them
+            initial_upper_set = problem.bounded & (
+                init >= problem.upper_bound * (1.0 - 1e-9))
     out = block_pivoting(
         problem,
         initial_active_set=initial_active_set,
+        initial_upper_set=initial_upper_set,
         max_iterations=max_iterations,
         fallback=fallback,
     )
@@ -139,9 +147,11 @@ def polish(
 
     The contact set is read from the approximate answer: segment i is taken as in
     contact when its relative force exceeds its relative gap, Fᵢ/f > Yᵢ/d (the
-    reference magnitudes of :func:`contact_residuals`). The reduced system is
-    solved with :func:`solve_on_contact_set`; the caller keeps the polished answer
-    only if it certifies (complementarity holds).
+    reference magnitudes of :func:`contact_residuals`), and, where it has a force limit,
+    at its limit when its relative distance from the limit is below its relative
+    penetration, (F_max,ᵢ − Fᵢ)/f < −Yᵢ/d. The reduced system is solved with
+    :func:`solve_on_contact_set`; the caller keeps the polished answer only if it
+    certifies (complementarity holds).
 
     Returns
     -------
@@ -153,7 +163,11 @@ def polish(
     f_ref = max(float(np.max(np.abs(F))), sc.force)
     d_ref = max(float(np.max(np.abs(problem.compliance @ F))), sc.length)
     active = F / f_ref > Y / d_ref
-    return solve_on_contact_set(problem, active)
+    upper = None
+    if problem.has_bounds:
+        upper = problem.bounded & ((problem.upper_bound - F) / f_ref < -Y / d_ref)
+        active &= ~upper
+    return solve_on_contact_set(problem, active, upper)
 
 
 def _certified(res: dict[str, float], tolerance: float) -> bool:
@@ -233,7 +247,7 @@ def solve_contact(
     extras["claimed_success"] = raw.claimed
     if raw.force is None or raw.rotation is None:
         nan = np.full(n, np.nan)
-        res = {k: math.inf for k in ("primal", "dual", "complementarity", "equilibrium")}
+        res = dict.fromkeys(RESIDUALS, math.inf)
         return ContactSolution(
             nan,
             math.nan,
