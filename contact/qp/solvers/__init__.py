@@ -140,8 +140,14 @@ def get_backend(name: str) -> Backend:
     return reg[name]
 
 
+#: block-pivoting steps a polish may take from a backend's sets on a problem with force
+#: limits (:func:`polish`)
+POLISH_PIVOTS = 5
+
+
 def polish(
-    problem: ContactProblem, force: np.ndarray, rotation: float
+    problem: ContactProblem, force: np.ndarray, rotation: float,
+    tolerance: float = DEFAULT_TOLERANCE,
 ) -> tuple[np.ndarray, float] | None:
     """Polish an approximate solution by solving the KKT system on its contact set exactly.
 
@@ -153,6 +159,13 @@ def polish(
     :func:`solve_on_contact_set`; the caller keeps the polished answer only if it
     certifies (complementarity holds).
 
+    With force limits an interior-point answer cannot tell a segment loaded just below its
+    limit from one at it (its two bound multipliers are both of the barrier's size there):
+    where the answer on the sets read does not certify to ``tolerance``, up to
+    :data:`POLISH_PIVOTS` block-pivoting steps from those sets follow
+    (:func:`contact.qp.solvers.active_set.block_pivoting`, no fallback). Without limits the
+    polish is the one exact solve.
+
     Returns
     -------
     (F [N], Θ [rad]) or None
@@ -163,11 +176,16 @@ def polish(
     f_ref = max(float(np.max(np.abs(F))), sc.force)
     d_ref = max(float(np.max(np.abs(problem.compliance @ F))), sc.length)
     active = F / f_ref > Y / d_ref
-    upper = None
-    if problem.has_bounds:
-        upper = problem.bounded & ((problem.upper_bound - F) / f_ref < -Y / d_ref)
-        active &= ~upper
-    return solve_on_contact_set(problem, active, upper)
+    if not problem.has_bounds:
+        return solve_on_contact_set(problem, active)
+    upper = problem.bounded & ((problem.upper_bound - F) / f_ref < -Y / d_ref)
+    active &= ~upper
+    sol = solve_on_contact_set(problem, active, upper)
+    if sol is not None and _certified(contact_residuals(problem, *sol), tolerance):
+        return sol
+    out = block_pivoting(problem, initial_active_set=active, initial_upper_set=upper,
+                         max_iterations=POLISH_PIVOTS, fallback=False)
+    return (out["force"], out["rotation"]) if out["converged"] else sol
 
 
 def _certified(res: dict[str, float], tolerance: float) -> bool:
@@ -267,7 +285,8 @@ def solve_contact(
     polished = False
     if not _certified(res, tolerance) and polish_solution:
         t0 = time.perf_counter()
-        pol = polish(problem, F, theta) if np.all(np.isfinite(F)) and math.isfinite(theta) else None
+        pol = (polish(problem, F, theta, tolerance)
+               if np.all(np.isfinite(F)) and math.isfinite(theta) else None)
         extras["polish_time"] = time.perf_counter() - t0
         raw.solve_time += extras["polish_time"]  # the time to a certified answer includes it
         if pol is not None:
