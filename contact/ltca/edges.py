@@ -34,8 +34,9 @@ n(g) through P (P lies on that line, at the gap's distance from g), and its mome
 about the gear axis is the normal arm at g; x's normal and arm, a few tenths of a mm away
 along the flank, would put the line of action off by up to 0.8 mm (issue 37) and break
 the torque balance about both axes. g's place (u, v) and gear-frame point are stored for
-the segment; R_eq keeps the gear curvature at x (its share of 1/R_eq is ~1 % beside the
-edge's 1/r_e).
+the segment, and its moment arm is the normal's through P (the normal arm at g, to the
+splines' interpolation error); R_eq keeps the gear curvature at x (its share of 1/R_eq
+is ~1 % beside the edge's 1/r_e).
 
 Public functions
 ----------------
@@ -245,7 +246,8 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     instant Q(x); at roll q it has turned on by s_p (q − Q(x)) with the pinion, and the
     contact sits there (P's separation is Φ_q(x) to first order: the gap function on the
     pinion's surface has the same form), on the gear flank point g under P: the segment's
-    normal, moment arm, (u, v) and gear-frame point are g's (:func:`gear_flank_under`).
+    normal, (u, v) and gear-frame point are g's (:func:`gear_flank_under`), its moment arm
+    that of the normal through P.
     """
     kin = eo.kinematics
     quad = SegmentQuadratic(np.array([0.0, 0.5, 1.0]))
@@ -275,11 +277,17 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     arm = quad.at(bd.normal_arm[ee], c1)[:, 0]
     mid_pair = quad.at(pts, c1, vector=True)[:, 0]
     # a pinion edge presses on the gear flank point under it (module docstring)
-    pe = ~g & inside
+    pe = ~g
     if np.any(pe):
         f = fields if fields is not None else EaseOffFields(eo)
-        u_c[pe], v_c[pe], mid_g[pe], nrm[pe], arm[pe] = gear_flank_under(
+        u_c[pe], v_c[pe], mid_g[pe], nrm[pe] = gear_flank_under(
             f, kin, psi[pe], mid_pair[pe], u_c[pe], v_c[pe])
+    n_pair = -gear_to_pair(kin, psi, nrm, vec=True)
+    if np.any(pe):
+        # the moment arm of the force along n(g) through the edge point P (P lies on the
+        # normal through g: the normal arm at g, to the spline's interpolation error)
+        arm[pe] = np.einsum("ni,i->n", np.cross(mid_pair[pe] - kin.gear_origin, n_pair[pe]),
+                            kin.gear_axis)
     end_a = quad.at(pts, a1, vector=True)[:, 0]
     end_b = quad.at(pts, b1, vector=True)[:, 0]
     chord = end_b - end_a
@@ -291,7 +299,7 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
         "midpoint": mid_g,
         "midpoint_pair": mid_pair,
         "ends_pair": np.stack([end_a, end_b], axis=-2),
-        "normal_pair": -gear_to_pair(kin, psi, nrm, vec=True),
+        "normal_pair": n_pair,
         "tangent_pair": chord / np.linalg.norm(chord, axis=-1, keepdims=True),
         "length": length,
         "moment_arm": arm,
@@ -333,14 +341,14 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
         g in the gear frame.
     normal : ndarray (n, 3) — [1]
         The gear's unit normal at g, gear frame.
-    arm : ndarray (n,) — [mm]
-        The normal arm at g (moment arm of the normal's line of action about the gear
-        axis, ρ |n·e_θ|).
 
     Notes
     -----
     Gauss–Newton on (x(u, v) − p)·x_u = (x(u, v) − p)·x_v = 0, p the point in the gear
-    frame (turned back by ψ); the splines' own derivatives.
+    frame (turned back by ψ); the splines' own derivatives. A point beyond the grid (a
+    pinion edge past the gear flank's computed part, far from contact) gets the nearest
+    grid edge's place. Checked in tests/test_plastic_edges.py: the force along the normal
+    at g through the pinion edge point balances the gear torque with the others.
     """
     f = fields
     p = rotate_about_axis(kin.gear_axis, -psi, points - kin.gear_origin) \
@@ -360,7 +368,7 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
     pos = np.stack([s.ev(uu, vv) for s in f.pos], -1)
     nrm = np.stack([s.ev(uu, vv) for s in f.nrm], -1)
     nrm /= np.linalg.norm(nrm, axis=-1, keepdims=True)
-    return uu, vv, pos, nrm, f.arm.ev(uu, vv)
+    return uu, vv, pos, nrm
 
 
 def _edge_candidates(bd: FlankBoundary, target: np.ndarray, shift: np.ndarray,
