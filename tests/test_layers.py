@@ -28,11 +28,11 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "geometry", "friction")
 
-#: geometry's modules that hold no gear: errors, validators, Hertz line contact, the
-#: dataset convention, atomic file writes (the qp layer may use these and nothing else of
-#: geometry)
+#: geometry's modules that hold no gear: errors, validators, Hertz line contact, material
+#: data, the dataset convention, atomic file writes (the qp layer may use these and nothing
+#: else of geometry)
 GEOMETRY_LOW = {"geometry.errors", "geometry.validation", "geometry.hertz",
-                "geometry.atomic_files",
+                "geometry.materials", "geometry.atomic_files",
                 "geometry.conventions"}
 
 #: contact's layers and what each may import (besides itself, contact.errors and,
