@@ -38,6 +38,7 @@ from types import MappingProxyType
 from typing import Any
 
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.materials import DEFAULT_MATERIAL, available_materials
 from geometry.core.toml_files import dump_toml, read_toml
 from geometry.core.validation import integer, positive, real
 from geometry.machine.convention import (
@@ -274,7 +275,9 @@ class Member:
 
     ``blade_groups`` is z0 of a face-hobbing cutter head (0 for face milling; its indexing
     ratio −z0/z is in both flanks' machine settings) and ``cutter_radius`` the nominal
-    cutter radius r_c0 [mm] (informational, 0 when not given).
+    cutter radius r_c0 [mm] (informational, 0 when not given). ``material`` names the
+    member's entry of the material table (:mod:`geometry.core.materials`; default
+    case-carburised gear steel), which sets its contact-pressure limit.
     """
 
     name: str
@@ -285,6 +288,7 @@ class Member:
     convex: FlankTool
     blade_groups: int = 0
     cutter_radius: float = 0.0
+    material: str = DEFAULT_MATERIAL
 
     def flank(self, name: str) -> FlankTool:
         """The tool of flank ``name`` (``"concave"`` or ``"convex"``)."""
@@ -463,7 +467,7 @@ _DEVIATION_FIELDS = {
 }
 #: blade fields of a cutter table typed in SpyGO's convention (``convention = "spygo"``)
 _SPYGO_BLADE_SCHEMA = {k: _BLADE_FIELDS[k] for k in SPYGO_BLADE_FIELDS}
-_MEMBER_KEYS = {"process", "blank", "cutter", "machine"}
+_MEMBER_KEYS = {"process", "blank", "cutter", "machine", "material"}
 _TOP_KEYS = {"name", "source", "synthesised", "pair", "pinion", "gear", "misalignment",
              "operating", "deviations"}
 
@@ -584,8 +588,13 @@ def _member(raw: Mapping, name: str, hand: str) -> Member:
         settings = _build(MachineSettings,
                           {"process": process, **mkw, "indexing_ratio": kappa}, mpath)
         tools[flank] = FlankTool(blade, settings)
+    mat = raw.get("material", DEFAULT_MATERIAL)
+    if mat not in available_materials():
+        raise InputError(f"{name}.material: must be one of {list(available_materials())} "
+                         f"(geometry/core/data/materials.toml), got {mat!r}")
     return Member(name=name, hand=hand, process=process, blank=blank, **tools,
-                  blade_groups=head["blade_groups"], cutter_radius=head["cutter_radius"])
+                  blade_groups=head["blade_groups"], cutter_radius=head["cutter_radius"],
+                  material=mat)
 
 
 def _check_method(method: str, pinion: Member, gear: Member) -> None:
@@ -806,6 +815,7 @@ def _case_to_dict(case: Case) -> dict[str, Any]:
         cutter |= {f: _values(m.flank(f).blade, blade_schema) for f in FLANKS}
         doc[m.name] = {
             "process": m.process,
+            **({"material": m.material} if m.material != DEFAULT_MATERIAL else {}),
             "blank": _values(m.blank, _BLANK_FIELDS),
             "cutter": cutter,
             "machine": {f: _values(m.flank(f).machine, _MACHINE_FIELDS) for f in FLANKS},

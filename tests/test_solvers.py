@@ -115,6 +115,44 @@ def test_backends_agree_with_exact_solver(solver, random_problems):
         assert sol.max_residual <= sol.tolerance
 
 
+def _limited(problem: ContactProblem, force: np.ndarray, fraction: float = 0.7,
+             every: int = 20) -> ContactProblem:
+    """The problem with force limits on its most loaded segments (one in ``every``, at
+    least three): ``fraction`` of their unlimited force; no limit elsewhere."""
+    bound = np.full(problem.size, np.inf)
+    top = np.argsort(-force)[: max(3, problem.size // every)]
+    bound[top] = fraction * force[top]
+    return ContactProblem(problem.compliance, problem.separation, problem.moment_arm,
+                          problem.torque, name=f"{problem.name}_limited", upper_bound=bound)
+
+
+@pytest.fixture(scope="module")
+def limited_problems(random_problems):
+    out = []
+    for problem, ref in random_problems:
+        q = _limited(problem, ref.force)
+        out.append((q, solve_contact(q)))
+    return out
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_backends_agree_with_exact_solver_under_force_limits(solver, limited_problems):
+    # The QP with box constraints 0 ≤ F ≤ F_max (the elastic–perfectly-plastic segments):
+    # every registered backend takes the limits and agrees with our exact solver to the
+    # same tolerance map as without limits (the answers are certified by the same
+    # residuals, the upper bound's complementarity among them).
+    tol = FORCE_TOL.get(solver, DEFAULT_FORCE_TOL)
+    for problem, ref in limited_problems:
+        assert ref.found and ref.at_limit(problem).sum() >= 3, ref.status
+        sol = solve_contact(problem, solver)
+        assert sol.found, f"{problem.name}: {sol.status}"
+        scale = np.max(ref.force)
+        assert np.max(np.abs(sol.force - ref.force)) <= tol * scale, problem.name
+        assert abs(sol.rotation - ref.rotation) <= tol * abs(ref.rotation), problem.name
+        assert np.all(sol.force <= problem.upper_bound * (1 + sol.tolerance))
+        assert sol.max_residual <= sol.tolerance
+
+
 def test_exact_solver_matches_quadprog_to_1e8():
     # quadprog (Goldfarb & Idnani 1983) is an exact dual active-set method written
     # independently of ours: the two must agree to round-off, 1e-8 relative at least.

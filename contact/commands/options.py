@@ -259,6 +259,20 @@ def solver_option(p: argparse.ArgumentParser) -> None:
                         "them)")
 
 
+def pressure_limit_options(p: argparse.ArgumentParser) -> None:
+    """``--edge-pressure-limit``, ``--flank-pressure-limit``: the elastic–perfectly-plastic
+    limits of the edge and flank segments (``LTCAOptions``)."""
+    from geometry.core.materials import CONTACT_PRESSURE_LIMITS
+
+    names = [*CONTACT_PRESSURE_LIMITS, "none"]
+    p.add_argument("--edge-pressure-limit", choices=names, default=None,
+                   help="contact-pressure limit of the edge segments, from the members' "
+                        "material (default shakedown; none: elastic to any pressure)")
+    p.add_argument("--flank-pressure-limit", choices=names, default=None,
+                   help="the same limit on the flank (contact-curve) segments (default "
+                        "none)")
+
+
 def output_option(p: argparse.ArgumentParser, *, default: str, what: str = "netCDF file",
                   metavar: str = "FILE") -> None:
     """``-o/--output FILE``; ``default`` describes the name used without it."""

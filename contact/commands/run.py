@@ -17,6 +17,7 @@ from contact.commands.options import (
     operating_options,
     output_option,
     plots_option,
+    pressure_limit_options,
     progress_option,
     resolve_analysis_file,
     rolls_per_cycle_option,
@@ -53,6 +54,7 @@ def register(sub) -> None:
     flank_option(p)
     rolls_per_cycle_option(p)
     segments_option(p)
+    pressure_limit_options(p)
     dev = p.add_mutually_exclusive_group()
     dev.add_argument(
         "--deviations",
@@ -139,7 +141,9 @@ def deviation_te_rows(tree) -> list[tuple[str, ...]]:
 
 
 def ltca_options(args: argparse.Namespace, **defaults):
-    """LTCAOptions of ``--rolls-per-cycle``, ``--segments``, ``--solver`` (those given)."""
+    """LTCAOptions of ``--rolls-per-cycle``, ``--segments``, ``--solver``,
+    ``--edge-pressure-limit``, ``--flank-pressure-limit`` (those given; ``none`` turns a
+    limit off)."""
     from contact.ltca import LTCAOptions
 
     kw = dict(defaults)
@@ -147,6 +151,10 @@ def ltca_options(args: argparse.Namespace, **defaults):
         value = getattr(args, name, None)
         if value is not None:
             kw[name] = value
+    for name in ("edge_pressure_limit", "flank_pressure_limit"):
+        value = getattr(args, name, None)
+        if value is not None:
+            kw[name] = None if value == "none" else value
     return LTCAOptions(**kw)
 
 
@@ -206,6 +214,7 @@ def run(args: argparse.Namespace) -> int:
                 f"{lt['lte_harmonic_rss'].values[i]:.1f}",
                 f"{float(lt['pressure_max_flank'].values[i]):.0f}",
                 f"{float(lt['pressure_max_edge'].values[i]):.0f}",
+                plastic_summary(lt, i),
                 f"{int(lt['found'].isel(torque=i).sum())}/{lt.sizes['roll']}",
                 f"{100 * fr['efficiency_mean'].values[i]:.2f}" if fr is not None else "-",
             )
@@ -223,6 +232,7 @@ def run(args: argparse.Namespace) -> int:
                 "RMS*",
                 "p_max flank [MPa]",
                 "p_max edge",
+                "plastic",
                 "certified",
                 "efficiency [%]",
             ],
@@ -237,6 +247,7 @@ def run(args: argparse.Namespace) -> int:
         )
         print_extrapolation_warning(fr)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
+    print(plastic_note(lt))
     if "theoretical" in tree.children:
         print(
             "transmission error of the theoretical and deviated surfaces "
@@ -248,7 +259,43 @@ def run(args: argparse.Namespace) -> int:
     path = write_netcdf(tree, Path(output), inputs=tree.attrs["inputs"])
     print(f"wrote {path}")
     write_figures(path, args.plots, args.report, progress=not args.no_progress)
+    print_plausibility_warnings(lt)
     return 0
+
+
+def plastic_summary(ltca, i: int) -> str:
+    """'<n> (<share> %)' of torque ``i``: the segments at their force limit counted over
+    the roll positions, and the largest share of the torque they carry at one roll
+    ('-' for files without the variables)."""
+    import numpy as np
+
+    if "plastic_segments" not in ltca:
+        return "-"
+    n = int(ltca["plastic_segments"].values[i])
+    share = np.nan_to_num(ltca["plastic_load_share"].isel(torque=i).values, nan=0.0)
+    return f"{n} ({100 * float(np.max(share, initial=0.0)):.1f} %)"
+
+
+def plastic_note(ltca) -> str:
+    """The line under the summary table that says what the plastic column counts."""
+    limit = float(ltca.attrs.get("edge_pressure_limit_MPa", float("nan")))
+    flank = float(ltca.attrs.get("flank_pressure_limit_MPa", float("nan")))
+    if not (math.isfinite(limit) or math.isfinite(flank)):
+        return "plastic: no contact-pressure limit (edges elastic to any pressure)."
+    where = ", ".join(f"{name} {p:.0f} MPa" for name, p in (("edges", limit), ("flanks", flank))
+                      if math.isfinite(p))
+    return ("plastic: segments at the material's contact-pressure limit (" + where
+            + "), counted over the roll positions (largest share of the torque they carry "
+            "at one roll); /ltca/segment_state.")
+
+
+def print_plausibility_warnings(ltca) -> None:
+    """A WARNING line for each cause that makes the analysis implausible
+    (:func:`contact.ltca.plausibility.plausibility_warnings`)."""
+    from contact.ltca.plausibility import plausibility_warnings
+
+    for text in plausibility_warnings(ltca):
+        print(f"WARNING: {text}")
 
 
 def print_extrapolation_warning(friction) -> None:

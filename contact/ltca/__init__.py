@@ -13,12 +13,16 @@ solves them (:mod:`contact.qp`):
   as edge contact);
 * :mod:`contact.ltca.screening` — which segments a roll's problem must take;
 * :mod:`contact.ltca.pool` — their structural compliance, assembled once per roll;
+* :mod:`contact.ltca.plastic` — the elastic–perfectly-plastic segments' pressure and
+  force limits (the bound F ≤ F_max of the contact QP);
 * :mod:`contact.ltca.weber` — one roll's problem with Weber's compliance iterated
   (Newton) to the loads;
 * :mod:`contact.ltca.roll_loop` — the loop over roll positions and torques, accumulating
   :class:`~contact.ltca.results.RollResults` (:mod:`contact.ltca.results`);
 * :mod:`contact.ltca.dataset` — the ``/ltca`` dataset;
 * :mod:`contact.ltca.transmission_error` — the LTE summary over the mesh cycles;
+* :mod:`contact.ltca.plausibility` — the causes that make a result implausible (plastic
+  contact, a flank above the material's limit, a large LTE spread);
 * :mod:`contact.ltca.mesh_cycle` — :func:`loaded_tca`, the whole analysis of a case.
 """
 

@@ -3,9 +3,11 @@
 Every variable carries ``units`` and ``long_name`` (the exchange names of DESIGN.md:
 ``transmission_error`` [µrad] over (``torque``, ``roll``); ``force`` [N] and
 ``pressure_max`` [MPa] over (``torque``, ``roll``, ``pair``, ``segment``); ``load_share``
-[1] over (``torque``, ``roll``, ``pair``)); the attributes record the solver, the
-transitions, the options and the misalignment as JSON, the edge radii and the members'
-axes (which the efficiency stage needs).
+[1] over (``torque``, ``roll``, ``pair``)); the state of every segment
+(``segment_state``: free, elastic or plastic, CF flags), its force limit and the share of
+the torque carried at the limit; the attributes record the solver, the transitions, the
+options and the misalignment as JSON, the edge radii, the materials and their pressure
+limits, and the members' axes (which the efficiency stage needs).
 
 Public functions
 ----------------
@@ -22,7 +24,8 @@ import xarray as xr
 
 from contact.ltca.edges import EDGE_KINDS
 from contact.ltca.options import LTCASetup, edge_radii, json_options
-from contact.ltca.results import RollResults
+from contact.ltca.plastic import force_limits, pressure_limits
+from contact.ltca.results import SEGMENT_STATES, RollResults
 from contact.ltca.screening import Screening
 from contact.ltca.segments import Segments
 from contact.ltca.transmission_error import transmission_error_summary
@@ -30,6 +33,7 @@ from contact.qp.problem import RESIDUALS
 from geometry import __version__
 from geometry.core.conventions import binary_flag
 from geometry.core.conventions import data_var as _var
+from geometry.core.hertz import contact_modulus
 
 __all__ = ["json_misalignment", "ltca_dataset"]
 
@@ -67,6 +71,7 @@ def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
     data = {
         **_load_vars(lte, screening, results),
         **_segment_vars(seg, screening),
+        **_plastic_vars(setup, seg, results),
         **_solution_vars(seg, results),
         **_summary_vars(setup, seg, results, lte),
     }
@@ -120,6 +125,40 @@ def _segment_vars(seg: Segments, screening: Screening) -> dict:
                                "contact normal (out of the pinion) in the pair frame"),
         "contact_tangent": _var((*d, "xyz"), seg.tangent_pair, "1",
                                 "unit tangent of the contact line in the pair frame"),
+    }
+
+
+def _plastic_vars(setup: LTCASetup, seg: Segments, results: RollResults) -> dict:
+    """The segments' states (free, elastic, plastic), their force limits and the share of
+    the torque carried at the limits."""
+    opts = setup.options
+    modulus = contact_modulus(opts.youngs_modulus, opts.poisson_ratio, opts.youngs_modulus,
+                              opts.poisson_ratio)
+    limit = force_limits(seg.kind[None, None, :], seg.length, seg.r_eq,
+                         pressure_limits(setup.case, opts), modulus)
+    limit = (np.full(seg.shape, np.nan) if limit is None
+             else np.where(np.isfinite(limit), limit, np.nan))
+    plastic = results.state == 2
+    torque = np.nan_to_num(results.force) * np.nan_to_num(seg.moment_arm)[None]
+    total = np.sum(torque, axis=(-2, -1))
+    share = np.sum(np.where(plastic, torque, 0.0), axis=(-2, -1)) / np.where(
+        total > 0, total, 1.0)
+    share = np.where(results.found > 0, share, np.nan)
+    return {
+        "segment_state": _var(_DIMS4, results.state, "1",
+                              "segment state: unloaded (free), loaded below its force limit "
+                              "(elastic), at its limit (plastic)",
+                              flag_values=np.arange(len(SEGMENT_STATES), dtype=np.int8),
+                              flag_meanings=" ".join(SEGMENT_STATES)),
+        "force_limit": _var(_SEGMENT_DIMS, limit, "N",
+                            "largest force of the segment: its Hertz line contact at the "
+                            "material's contact-pressure limit (NaN: no limit)"),
+        "plastic_load_share": _var(_DIMS2, share, "1",
+                                   "share of the gear torque carried by segments at their "
+                                   "force limit"),
+        "plastic_segments": _var(("torque",), np.sum(plastic, axis=(1, 2, 3)), "1",
+                                 "segments at their force limit, counted over the roll "
+                                 "positions"),
     }
 
 
@@ -258,6 +297,7 @@ def _attrs(setup: LTCASetup, timing: dict[str, float]) -> dict:
     case, eo, opts = setup.case, setup.easeoff, setup.options
     m1, m2 = setup.transitions
     radii = edge_radii(case, opts) if opts.edge_contact else (np.nan, np.nan)
+    p_edge, p_flank = (p if np.isfinite(p) else np.nan for p in pressure_limits(case, opts))
     return {
         "title": "loaded tooth contact analysis",
         "case": case.name,
@@ -278,6 +318,12 @@ def _attrs(setup: LTCASetup, timing: dict[str, float]) -> dict:
         "ratio": float(eo.ratio),
         "edge_radius_pinion_mm": radii[0],
         "edge_radius_gear_mm": radii[1],
+        "material_pinion": case.pinion.material,
+        "material_gear": case.gear.material,
+        # the contact-pressure limits (peak Hertz pressure) of the edge and flank segments
+        # (NaN: off; LTCAOptions.edge_pressure_limit, flank_pressure_limit)
+        "edge_pressure_limit_MPa": float(p_edge),
+        "flank_pressure_limit_MPa": float(p_flank),
         "pinion_axis": np.asarray(eo.kinematics.pinion_axis, float),
         "pinion_origin_mm": np.asarray(eo.kinematics.pinion_origin, float),
         "gear_axis": np.asarray(eo.kinematics.gear_axis, float),

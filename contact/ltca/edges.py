@@ -25,6 +25,19 @@ Across an edge the contact is between the edge's rounding (radius r_e) and the m
 flank: R_eq = 1/(1/r_e + κ_other) (Hertz line contact of a cylinder of radius r_e on the
 other member's flank, seed Eq. 2.13 with the edge's curvature).
 
+Where the load acts: a gear edge presses on the pinion flank at its own point x, with the
+gear's normal there. A pinion edge point P is parametrised by its mate x on the gear
+boundary, but at roll q it has turned on from the mate instant Q(x) and presses on the
+gear flank at another point g — the foot of the gear flank's normal through P — with the
+gear's normal at g (the rounding's normal there is the flank's). The force then acts along
+n(g) through P (P lies on that line, at the gap's distance from g), and its moment arm
+about the gear axis is the normal arm at g; x's normal and arm, a few tenths of a mm away
+along the flank, would put the line of action off by up to 0.8 mm (issue 37) and break
+the torque balance about both axes. g's place (u, v) and gear-frame point are stored for
+the segment, and its moment arm is the normal's through P (the normal arm at g, to the
+splines' interpolation error); R_eq keeps the gear curvature at x (its share of 1/R_eq
+is ~1 % beside the edge's 1/r_e).
+
 Public functions
 ----------------
 EDGE_KINDS      names of the boundary pieces
@@ -32,6 +45,7 @@ FlankBoundary   the boundary, split into segments of three samples each
 flank_boundary  build it from the ease-off splines
 edge_segments   the edge segments of every (roll, pair) where a curve passes outside
 edge_r_eq       R_eq across boundary segments: the edge rounding on the mating flank
+gear_flank_under  the gear flank point under pair-frame points (a pinion edge's contact)
 """
 
 from __future__ import annotations
@@ -50,11 +64,12 @@ from contact.ltca.discretisation import (
     blank_measure,
     gear_to_pair,
 )
-from contact.utca import EaseOff
+from contact.utca import EaseOff, EaseOffFields
 from geometry.core.errors import InputError
 from geometry.pair.assembly import rotate_about_axis
 
-__all__ = ["EDGE_KINDS", "FlankBoundary", "edge_r_eq", "edge_segments", "flank_boundary"]
+__all__ = ["EDGE_KINDS", "FlankBoundary", "edge_r_eq", "edge_segments", "flank_boundary",
+           "gear_flank_under"]
 
 #: boundary pieces: the gear's tip edge (v = 1), heel and toe ends (u = 1, 0), and the
 #: pinion's edges (tip and ends: where the pinion mate leaves the pinion blank)
@@ -196,7 +211,7 @@ def _piece(f, kind: int, uu: np.ndarray, vv: np.ndarray, step: float):
 
 def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],
                   target: np.ndarray, shift: np.ndarray, ute_env: np.ndarray,
-                  limit: float | None = None) -> SegmentFields:
+                  limit: float | None = None, fields=None) -> SegmentFields:
     """Edge segments of every (roll, pair): the boundary where the pair's curve passes
     outside the contact region (module docstring), clipped where it passes inside.
 
@@ -211,6 +226,9 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     ute_env : array (J,) — [rad] each roll's UTE (the least over its pairs)
     limit : float, optional — [mm] see :func:`contact.ltca.segment_geometry`'s
         ``edge_limit``
+    fields : contact.utca.EaseOffFields, optional
+        The splines ``bd`` was built from (default: built here), for the gear flank point
+        under each pinion edge (module docstring).
 
     Returns
     -------
@@ -227,7 +245,9 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     the curves are. A pinion edge point P is the mate of the boundary point x at the
     instant Q(x); at roll q it has turned on by s_p (q − Q(x)) with the pinion, and the
     contact sits there (P's separation is Φ_q(x) to first order: the gap function on the
-    pinion's surface has the same form).
+    pinion's surface has the same form), on the gear flank point g under P: the segment's
+    normal, (u, v) and gear-frame point are g's (:func:`gear_flank_under`), its moment arm
+    that of the normal through P.
     """
     kin = eo.kinematics
     quad = SegmentQuadratic(np.array([0.0, 0.5, 1.0]))
@@ -252,30 +272,103 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     r_eq[used] = edge_r_eq(case, eo, bd, edge_radius, used)
     nrm = quad.at(bd.normal[ee], c1, vector=True)[:, 0]
     nrm = nrm / np.linalg.norm(nrm, axis=-1, keepdims=True)
+    u_c, v_c = quad.at(bd.u[ee], c1)[:, 0], quad.at(bd.v[ee], c1)[:, 0]
+    mid_g = quad.at(bd.position[ee], c1, vector=True)[:, 0]
+    arm = quad.at(bd.normal_arm[ee], c1)[:, 0]
+    mid_pair = quad.at(pts, c1, vector=True)[:, 0]
+    # a pinion edge presses on the gear flank point under it (module docstring)
+    pe = ~g
+    if np.any(pe):
+        f = fields if fields is not None else EaseOffFields(eo)
+        u_c[pe], v_c[pe], mid_g[pe], nrm[pe] = gear_flank_under(
+            f, kin, psi[pe], mid_pair[pe], u_c[pe], v_c[pe])
+    n_pair = -gear_to_pair(kin, psi, nrm, vec=True)
+    if np.any(pe):
+        # the moment arm of the force along n(g) through the edge point P (P lies on the
+        # normal through g: the normal arm at g, to the spline's interpolation error)
+        arm[pe] = np.einsum("ni,i->n", np.cross(mid_pair[pe] - kin.gear_origin, n_pair[pe]),
+                            kin.gear_axis)
     end_a = quad.at(pts, a1, vector=True)[:, 0]
     end_b = quad.at(pts, b1, vector=True)[:, 0]
     chord = end_b - end_a
     length = np.where(inside, np.linalg.norm(chord, axis=-1), 0.0)
     chord = np.where(inside[:, None], chord, pts[:, 2] - pts[:, 0])
-    fields = {
-        "u": np.where(inside, quad.at(bd.u[ee], c1)[:, 0], np.nan),
-        "v": np.where(inside, quad.at(bd.v[ee], c1)[:, 0], np.nan),
-        "midpoint": quad.at(bd.position[ee], c1, vector=True)[:, 0],
-        "midpoint_pair": quad.at(pts, c1, vector=True)[:, 0],
+    values = {
+        "u": np.where(inside, u_c, np.nan),
+        "v": np.where(inside, v_c, np.nan),
+        "midpoint": mid_g,
+        "midpoint_pair": mid_pair,
         "ends_pair": np.stack([end_a, end_b], axis=-2),
-        "normal_pair": -gear_to_pair(kin, psi, nrm, vec=True),
+        "normal_pair": n_pair,
         "tangent_pair": chord / np.linalg.norm(chord, axis=-1, keepdims=True),
         "length": length,
-        "moment_arm": quad.at(bd.normal_arm[ee], c1)[:, 0],
+        "moment_arm": arm,
         "lag": quad.mean(sep, a1, b1)[:, 0],
         "r_eq": np.where(inside, r_eq[ee], np.nan),
     }
     out = {}
-    for key, val in fields.items():
+    for key, val in values.items():
         full = np.full((J, K, E, *val.shape[1:]), 0.0 if key == "length" else np.nan)
         full[jj, kk, ee] = val
         out[key] = full
     return SegmentFields(**out)
+
+
+def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.ndarray,
+                     v: np.ndarray, iterations: int = 8):
+    """The gear flank point under pair-frame points: the foot of the flank's normal.
+
+    Parameters
+    ----------
+    fields : contact.utca.EaseOffFields
+        Splines of the real gear flank (points, normals, normal arm) over (u, v).
+    kin : the ease-off's kinematics (gear axis, origin and placement)
+    psi : ndarray (n,) — [rad]
+        The gear's rotation at each point's roll.
+    points : ndarray (n, 3) — [mm]
+        Points in the pair frame (e.g. pinion edge points at the pair's roll).
+    u, v : ndarray (n,) — [1]
+        Starting places (gear fractions), near the answer.
+    iterations : int
+        Gauss–Newton steps (default 8: from a few tenths of a mm away the step falls
+        below 1e-12 of the grid in 4–5).
+
+    Returns
+    -------
+    u, v : ndarray (n,) — [1]
+        The places g, held within the gear grid.
+    position : ndarray (n, 3) — [mm]
+        g in the gear frame.
+    normal : ndarray (n, 3) — [1]
+        The gear's unit normal at g, gear frame.
+
+    Notes
+    -----
+    Gauss–Newton on (x(u, v) − p)·x_u = (x(u, v) − p)·x_v = 0, p the point in the gear
+    frame (turned back by ψ); the splines' own derivatives. A point beyond the grid (a
+    pinion edge past the gear flank's computed part, far from contact) gets the nearest
+    grid edge's place. Checked in tests/test_plastic_edges.py: the force along the normal
+    at g through the pinion edge point balances the gear torque with the others.
+    """
+    f = fields
+    p = rotate_about_axis(kin.gear_axis, -psi, points - kin.gear_origin) \
+        @ kin.gear_place[:3, :3]
+    lo = np.array([f.u[0], f.v[0]])
+    hi = np.array([f.u[-1], f.v[-1]])
+    uv = np.stack([u, v], axis=-1)
+    for _ in range(iterations):
+        x = np.stack([s.ev(uv[:, 0], uv[:, 1]) for s in f.pos], -1)
+        jac = np.stack([np.stack([s.ev(uv[:, 0], uv[:, 1], dx=1) for s in f.pos], -1),
+                        np.stack([s.ev(uv[:, 0], uv[:, 1], dy=1) for s in f.pos], -1)],
+                       axis=-1)  # (n, 3, 2)
+        jtj = np.einsum("nia,nib->nab", jac, jac)
+        jtr = np.einsum("nia,ni->na", jac, p - x)
+        uv = np.clip(uv + np.linalg.solve(jtj, jtr[..., None])[..., 0], lo, hi)
+    uu, vv = uv[:, 0], uv[:, 1]
+    pos = np.stack([s.ev(uu, vv) for s in f.pos], -1)
+    nrm = np.stack([s.ev(uu, vv) for s in f.nrm], -1)
+    nrm /= np.linalg.norm(nrm, axis=-1, keepdims=True)
+    return uu, vv, pos, nrm
 
 
 def _edge_candidates(bd: FlankBoundary, target: np.ndarray, shift: np.ndarray,

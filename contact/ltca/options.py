@@ -2,10 +2,10 @@
 
 Public functions
 ----------------
-LTCAOptions    frozen dataclass of the settings, validated on construction
-LTCASetup      what one analysis is run on: case, ease-off, options, torques, rolls
-edge_radii     the (pinion, gear) edge rounding radii an analysis uses
-json_options   the options as JSON text (netCDF-safe)
+LTCAOptions      frozen dataclass of the settings, validated on construction
+LTCASetup        what one analysis is run on: case, ease-off, options, torques, rolls
+edge_radii       the (pinion, gear) edge rounding radii an analysis uses
+json_options     the options as JSON text (netCDF-safe)
 """
 
 from __future__ import annotations
@@ -21,6 +21,7 @@ from contact.qp.solvers import DEFAULT_SOLVER, get_backend
 from contact.utca import CURVE_SPACINGS, EaseOff
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
+from geometry.core.materials import CONTACT_PRESSURE_LIMITS
 from geometry.core.validation import integer, one_of, positive, real
 
 if TYPE_CHECKING:
@@ -79,6 +80,18 @@ class LTCAOptions:
     edge_step : float — [mm]
         Largest edge segment along the boundary (> 0; default 0.25 mm: halving it moves
         the LTE by < 0.1 µrad and the edge pressure by < 1 % on the seed case).
+    edge_pressure_limit : str or None
+        The elastic–perfectly-plastic limit of the edge segments, a name of
+        :data:`geometry.core.materials.CONTACT_PRESSURE_LIMITS`: an edge segment carries at
+        most the force F_max = L π R_eq p₀²/E* at which its Hertz peak pressure reaches
+        the limit p₀ of the softer member's material (the case's ``[<member>] material``),
+        and the load beyond passes to its neighbours (the contact QP's bound F ≤ F_max).
+        Default ``"shakedown"`` (p₀ = 4 k: 5.26 GPa for case-carburised steel at 60 HRC;
+        why this limit: :mod:`geometry.core.materials`); ``"first_yield"``; None: elastic to
+        any pressure (the former edge model).
+    flank_pressure_limit : str or None
+        The same bound on the contact-curve (flank) segments; default None (off: the
+        flank's Hertz pressure is reported as computed).
     youngs_modulus, poisson_ratio : float — [MPa], [1]
         Steel for both members (default 206 000 MPa, 0.3).
     theory, n_height, n_face
@@ -97,6 +110,8 @@ class LTCAOptions:
     edge_contact: bool = True
     edge_radius: float | None = None
     edge_step: float = 0.25
+    edge_pressure_limit: str | None = "shakedown"
+    flank_pressure_limit: str | None = None
     youngs_modulus: float = STEEL[0]
     poisson_ratio: float = STEEL[1]
     theory: str = "seed"
@@ -120,6 +135,9 @@ class LTCAOptions:
         positive("edge_step", self.edge_step, "mm", high=50.0)
         if not isinstance(self.edge_contact, bool):
             raise InputError(f"edge_contact: must be True or False, got {self.edge_contact!r}")
+        for name in ("edge_pressure_limit", "flank_pressure_limit"):
+            if getattr(self, name) is not None:
+                one_of(name, getattr(self, name), tuple(CONTACT_PRESSURE_LIMITS))
         positive("weber_tolerance", self.weber_tolerance, "urad")
         positive("youngs_modulus", self.youngs_modulus, "MPa")
         real("poisson_ratio", self.poisson_ratio, unit="1", low=0.0, high=0.5, high_open=True)

@@ -16,7 +16,11 @@ from contact.qp import ContactSolution
 from contact.qp.problem import RESIDUALS
 from geometry.core.hertz import hertz_line_contact
 
-__all__ = ["RollResults"]
+__all__ = ["SEGMENT_STATES", "RollResults"]
+
+#: the states of a segment (``/ltca/segment_state``): unloaded, loaded below its force
+#: limit, at its limit (the elastic–perfectly-plastic bound of the contact QP)
+SEGMENT_STATES = ("free", "elastic", "plastic")
 
 
 @dataclass(eq=False)
@@ -33,6 +37,9 @@ class RollResults:
         Hertz half-width (0 where unloaded).
     contact, in_problem : ndarray (NT, J, K, S) of int8
         Segment in contact (its gap closed); segment in the roll's problem.
+    state : ndarray (NT, J, K, S) of int8
+        :data:`SEGMENT_STATES`: 0 free (unloaded), 1 elastic (loaded below its force
+        limit), 2 plastic (at its limit).
     rotation : ndarray (NT, J) — [rad]
         Loaded rotation Θ (NaN where no certified solution).
     residuals : dict of str to ndarray (NT, J) — [1]
@@ -55,6 +62,7 @@ class RollResults:
     half_width: np.ndarray
     contact: np.ndarray
     in_problem: np.ndarray
+    state: np.ndarray
     rotation: np.ndarray
     residuals: dict[str, np.ndarray]
     found: np.ndarray
@@ -66,7 +74,8 @@ class RollResults:
 
     #: the per-segment results
     PER_SEGMENT: ClassVar[tuple[str, ...]] = (
-        "force", "load_per_length", "pressure_max", "half_width", "contact", "in_problem")
+        "force", "load_per_length", "pressure_max", "half_width", "contact", "in_problem",
+        "state")
 
     @classmethod
     def empty(cls, n_torque: int, n_roll: int, n_pair: int, n_segment: int) -> RollResults:
@@ -76,7 +85,7 @@ class RollResults:
             force=np.full(shape4, np.nan), load_per_length=np.full(shape4, np.nan),
             pressure_max=np.full(shape4, np.nan), half_width=np.full(shape4, np.nan),
             contact=np.zeros(shape4, np.int8), in_problem=np.zeros(shape4, np.int8),
-            rotation=np.full(shape2, np.nan),
+            state=np.zeros(shape4, np.int8), rotation=np.full(shape2, np.nan),
             residuals={r: np.full(shape2, np.nan) for r in RESIDUALS},
             found=np.zeros(shape2, np.int8), status=np.full(shape2, "", dtype=object),
             solve_time=np.zeros(shape2), weber_iterations=np.zeros(shape2, np.int64),
@@ -103,10 +112,11 @@ class RollResults:
 
     def record_loads(self, it: int, j: int, solution: ContactSolution, pairs: np.ndarray,
                      segments: np.ndarray, length: np.ndarray, r_eq: np.ndarray,
-                     modulus: float) -> None:
+                     modulus: float, plastic: np.ndarray | None = None) -> None:
         """The loads of a certified solution and their Hertz line contact
         (:func:`geometry.core.hertz.hertz_line_contact`, contact modulus ``modulus`` [MPa]) on
-        the segments (N,) of lengths ``length`` and radii ``r_eq`` [mm]."""
+        the segments (N,) of lengths ``length`` and radii ``r_eq`` [mm]; ``plastic`` (N,)
+        bool marks those at their force limit (:meth:`ContactSolution.at_limit`)."""
         F = solution.force
         self.rotation[it, j] = solution.rotation
         w = F / length
@@ -116,8 +126,13 @@ class RollResults:
         self.load_per_length[at] = w
         self.half_width[at] = np.where(F > 0, hertz.half_width, 0.0)
         self.pressure_max[at] = np.where(F > 0, hertz.peak_pressure, 0.0)
-        self.contact[at] = solution.active_set.astype(np.int8)
+        active = solution.active_set
+        self.contact[at] = active.astype(np.int8)
         self.in_problem[at] = 1
+        state = active.astype(np.int8)
+        if plastic is not None:
+            state[plastic] = 2
+        self.state[at] = state
 
     def keep(self, keep: np.ndarray) -> RollResults:
         """The same results with only the segments ``keep`` (bool (S,))."""

@@ -25,8 +25,10 @@ from dataclasses import dataclass, field
 import numpy as np
 import xarray as xr
 
+from contact.errors import ProblemInputError
 from contact.ltca.dataset import ltca_dataset
 from contact.ltca.options import LTCASetup
+from contact.ltca.plastic import force_limits, pressure_limits
 from contact.ltca.pool import CompliancePool
 from contact.ltca.results import RollResults
 from contact.ltca.screening import SCREEN_ROUNDS, Screening, carried_torque
@@ -85,6 +87,7 @@ class _Analysis:
     results: RollResults
     modulus: float  # [MPa] contact modulus E* of the pair
     sink: Callable[[RollProblem], None] | None
+    limits: tuple[float, float] = (np.inf, np.inf)  # [MPa] (edge, flank) pressure limits
 
 
 def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
@@ -128,7 +131,8 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
                    RollResults.empty(torques.size, J, K, S),
                    contact_modulus(opts.youngs_modulus, opts.poisson_ratio,
                                    opts.youngs_modulus, opts.poisson_ratio),
-                   None if sink is None else sink.append)
+                   None if sink is None else sink.append,
+                   pressure_limits(setup.case, opts))
     cont = _Continuation.empty(torques.size)
     computed = [j for j in range(J) if int(seg.source[j]) == j and screening.usable[j].any()]
     if opts.separation_limit is not None:
@@ -199,9 +203,15 @@ def _solve_roll(an: _Analysis, cont: _Continuation, j: int, it: int) -> None:
         if np.any(sel & ~pool.mask(j)):
             pool.assemble([(j, pool.mask(j) | sel)])
         selection = _selection(an, j, sel)
-        ws = weber_solve(selection, gear_torque, _first_load(an, j, gear_torque),
-                         an.setup.options, an.modulus, prior=prior,
-                         name=f"{an.setup.case.name} roll {j} T {T:g}")
+        try:
+            ws = weber_solve(selection, gear_torque, _first_load(an, j, gear_torque),
+                             an.setup.options, an.modulus, prior=prior,
+                             name=f"{an.setup.case.name} roll {j} T {T:g}")
+        except ProblemInputError as exc:  # the force limits cannot carry the torque
+            results.status[it, j] = f"plastic collapse: {exc}"
+            log.warning("roll %d, torque %g N m: the segments' force limits cannot carry "
+                        "the torque (%s)", j, T, exc)
+            return
         results.solve_time[it, j] += ws.time
         if not ws.solution.found:
             break
@@ -236,9 +246,10 @@ def _selection(an: _Analysis, j: int, sel: np.ndarray) -> RollSelection:
     kk, ss = idx[:, 0], idx[:, 1]
     structural, depth = an.pool.restricted(j, sel)
     seg, screening = an.seg, an.screening
-    return RollSelection(j, kk, ss, structural, depth, seg.length[j, kk, ss],
-                         seg.r_eq[j, kk, ss], screening.moment_arm[j, kk, ss],
-                         screening.separation[j, kk, ss])
+    length, r_eq = seg.length[j, kk, ss], seg.r_eq[j, kk, ss]
+    return RollSelection(j, kk, ss, structural, depth, length, r_eq,
+                         screening.moment_arm[j, kk, ss], screening.separation[j, kk, ss],
+                         force_limits(seg.kind[ss], length, r_eq, an.limits, an.modulus))
 
 
 def _first_load(an: _Analysis, j: int, gear_torque: float) -> float:
@@ -274,7 +285,8 @@ def _record(an: _Analysis, cont: _Continuation, j: int, it: int, selection: Roll
     cont.theta[it] = sol.rotation + an.screening.ute[j]
     cont.force[it] = _scatter(an.seg.shape[1:], selection, sol.force)
     an.results.record_loads(it, j, sol, selection.pairs, selection.segments,
-                            selection.length, selection.r_eq, an.modulus)
+                            selection.length, selection.r_eq, an.modulus,
+                            sol.at_limit(ws.problem))
 
 
 def _assemble_other_pools(an: _Analysis, j: int, others: list[int]) -> None:

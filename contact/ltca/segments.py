@@ -175,7 +175,8 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
         ute = cc.ute.reshape(J, K)
         ute_env = np.min(np.where(np.isfinite(ute), ute, np.inf), axis=1)
         radii = tuple(np.broadcast_to(np.asarray(edges[1], dtype=float), (2,)))
-        edge = edge_segments(case, eo, bd, radii, target, shift, ute_env, edge_limit)
+        edge = edge_segments(case, eo, bd, radii, target, shift, ute_env, edge_limit,
+                             fields=fields)
         edge_arm_max = float(np.max(bd.normal_arm, initial=0.0))
         found = found.concatenate(edge)
         kind = np.r_[kind, 1 + bd.kind].astype(np.int8)

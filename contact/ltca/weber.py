@@ -63,6 +63,9 @@ class RollSelection:
     length, r_eq, moment_arm, separation : ndarray (N,) — [mm]
         Segment length, equivalent radius, moment arm about the gear axis and initial
         separation.
+    upper_bound : ndarray (N,) — [N], optional
+        Force limits F_max of the elastic–perfectly-plastic segments (``inf`` where none;
+        default None: none).
     """
 
     roll: int
@@ -74,6 +77,7 @@ class RollSelection:
     r_eq: np.ndarray
     moment_arm: np.ndarray
     separation: np.ndarray
+    upper_bound: np.ndarray | None = None
 
 
 @dataclass(frozen=True, eq=False)
@@ -129,6 +133,11 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     Returns
     -------
     WeberSolution
+
+    Raises
+    ------
+    contact.errors.ProblemInputError
+        The force limits (``sel.upper_bound``) cannot carry the torque.
     """
     e, nu = options.youngs_modulus, options.poisson_ratio
     length, r_eq, depth = sel.length, sel.r_eq, sel.depth
@@ -149,7 +158,8 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
         cw = np.where(newton, ct, cs)
         problem = ContactProblem(sel.structural + np.diag(cw),
                                  sel.separation + np.where(newton, (cs - ct) * load, 0.0),
-                                 sel.moment_arm, gear_torque, name=name)
+                                 sel.moment_arm, gear_torque, name=name,
+                                 upper_bound=sel.upper_bound)
         sol = solve_contact(problem, options.solver,
                             initial=sol if sol is not None else start)
         time_used += sol.solve_time + sol.build_time

@@ -127,7 +127,8 @@ def _solver(lt: xr.Dataset) -> dict:
         status = Counter(str(s) for s in np.ravel(lt["status"].isel(torque=i).values)) \
             if "status" in lt else Counter()
         res = {k: _num(np.nanmax(lt[f"residual_{k}"].isel(torque=i).values))
-               for k in ("primal", "dual", "complementarity", "equilibrium")
+               for k in ("primal", "dual", "complementarity", "equilibrium",
+                         "upper_complementarity")
                if f"residual_{k}" in lt}
         found = lt["found"].isel(torque=i).values if "found" in lt else np.array([])
         rows.append({

@@ -18,6 +18,14 @@ conditions of the convex QP
 whose equality multiplier is Θ. The seed's Eq. 3.12–3.14 are garbled in the
 text extraction; the form above is the reading adopted in ``DESIGN.md``.
 
+A segment whose force is limited (an elastic–perfectly-plastic edge, or flank, that
+carries at most F_max: :mod:`geometry.core.materials`) adds the bound F ≤ F_max: the QP with
+box constraints 0 ≤ F ≤ F_max, still convex. Its KKT conditions split the gap into the
+multipliers of the two bounds, Y = λ − μ with λ, μ ≥ 0: a segment below its limit keeps
+the conditions above, a segment at its limit may penetrate (Y ≤ 0: the plastic flow that
+the elastic model cannot follow), and the upper bound's complementarity
+(F_max − F)·min(Y, 0) = 0 joins the residuals.
+
 Residuals are always computed here from the returned F and Θ, never taken from
 a backend (:func:`contact_residuals`).
 """
@@ -64,9 +72,11 @@ __all__ = [
 #: reaches on the reduced KKT system for condition numbers up to ~1e8.
 DEFAULT_TOLERANCE = 1e-7
 
-#: The four conditions whose relative residuals certify a solution (module docstring):
-#: compatibility (primal), F ≥ 0 and Y ≥ 0 (dual), F·Y = 0 (complementarity), RᵀF = T.
-RESIDUALS = ("primal", "dual", "complementarity", "equilibrium")
+#: The conditions whose relative residuals certify a solution (module docstring):
+#: 0 ≤ F ≤ F_max (primal), Y ≥ 0 where F is unbounded (dual), F·Y = 0 (complementarity),
+#: RᵀF = T (equilibrium), and the upper bound's complementarity (F_max − F)·min(Y, 0) = 0
+#: (0 where no segment has a bound).
+RESIDUALS = ("primal", "dual", "complementarity", "equilibrium", "upper_complementarity")
 
 
 def _problem_input(check: Callable[..., Any], *args: Any, **kwargs: Any) -> Any:
@@ -122,11 +132,16 @@ class ContactProblem:
         Gear torque T > 0.
     name : str, optional
         Label used in reports.
+    upper_bound : array_like, shape (N,), optional — [N]
+        Force limits F_max > 0 of the segments (``inf`` where a segment has none);
+        default None: no limit anywhere (stored as all ``inf``).
 
     Raises
     ------
     ProblemInputError
-        Wrong shapes, non-finite entries, no positive moment arm, T ≤ 0 or N = 0.
+        Wrong shapes, non-finite entries, no positive moment arm, T ≤ 0 or N = 0; an
+        upper bound that is NaN or ≤ 0, or bounds under which the segments cannot carry
+        T (Σ R⁺ F_max < T: no feasible force).
     AsymmetricComplianceError
         C's relative asymmetry exceeds :data:`contact.errors.ASYMMETRY_LIMIT`.
     NotPositiveDefiniteError
@@ -138,6 +153,7 @@ class ContactProblem:
     moment_arm: np.ndarray
     torque: float
     name: str = ""
+    upper_bound: np.ndarray | None = None
     asymmetry: float = field(init=False)
     scale: ProblemScale = field(init=False)
 
@@ -180,7 +196,8 @@ class ContactProblem:
                 "compliance: is not positive definite (Cholesky failed; smallest eigenvalue "
                 f"{eig_min:.3e} mm/N); a physical compliance matrix must be SPD"
             ) from exc
-        for arr in (C, s, R):
+        U = _upper_bound(self.upper_bound, R, T, n)
+        for arr in (C, s, R, U):
             arr.setflags(write=False)
         f0 = T / float(R[R > 0].sum())
         d0 = f0 * float(np.mean(np.diag(C)))
@@ -189,6 +206,7 @@ class ContactProblem:
         object.__setattr__(self, "separation", s)
         object.__setattr__(self, "moment_arm", R)
         object.__setattr__(self, "torque", T)
+        object.__setattr__(self, "upper_bound", U)
         object.__setattr__(self, "asymmetry", asym)
         object.__setattr__(self, "scale", ProblemScale(force=f0, length=d0, arm=r0))
 
@@ -196,6 +214,21 @@ class ContactProblem:
     def size(self) -> int:
         """Number of segments N."""
         return int(self.separation.size)
+
+    @property
+    def bounded(self) -> np.ndarray:
+        """(N,) bool: the segments with a force limit (finite ``upper_bound``)."""
+        return np.isfinite(self.upper_bound)
+
+    @property
+    def has_bounds(self) -> bool:
+        """Whether any segment has a force limit."""
+        return bool(np.any(self.bounded))
+
+    def scaled_upper_bound(self) -> np.ndarray:
+        """The force limits of the dimensionless QP, F_max/f₀ (``inf`` where none), shape
+        (N,); see :meth:`scaled`."""
+        return self.upper_bound / self.scale.force
 
     def gap(self, force: np.ndarray, rotation: float) -> np.ndarray:
         """Gaps after loading Y = C F + s − R Θ — [mm], shape (N,) (seed Eq. 3.13)."""
@@ -225,18 +258,42 @@ class ContactProblem:
         return dataclasses.replace(self, torque=torque)
 
 
+def _upper_bound(bound, R: np.ndarray, T: float, n: int) -> np.ndarray:
+    """The checked force limits (N,) [N], ``inf`` where none (module docstring)."""
+    if bound is None:
+        return np.full(n, np.inf)
+    U = np.array(bound, dtype=float, copy=True)
+    if U.shape != (n,):
+        raise ProblemInputError(f"upper_bound: must have shape ({n},) [N], got {U.shape}")
+    if np.any(np.isnan(U)) or np.any(U <= 0.0):
+        raise ProblemInputError("upper_bound: must be > 0 [N] (inf where a segment has no "
+                                "limit), got NaN or a value <= 0")
+    pos = R > 0
+    reach = float(np.sum(R[pos] * U[pos]))
+    if reach < T:
+        raise ProblemInputError(
+            f"upper_bound: the segments carry at most Σ R⁺ F_max = {reach:.6g} N·mm at "
+            f"their limits, less than the torque T = {T:.6g} N·mm (no feasible force)")
+    return U
+
+
 def contact_residuals(
     problem: ContactProblem, force: np.ndarray, rotation: float
 ) -> dict[str, float]:
-    """Relative residuals of the four contact conditions, computed from F and Θ.
+    """Relative residuals of the contact conditions, computed from F and Θ.
 
-    With Y = C F + s − R Θ, reference force f = max(‖F‖∞, f₀) and reference length
-    d = max(‖C F‖∞, |Θ| ‖R‖∞, δ₀):
+    With Y = C F + s − R Θ, reference force f = max(‖F‖∞, f₀), reference length
+    d = max(‖C F‖∞, |Θ| ‖R‖∞, δ₀) and F_max the force limits (``inf`` where none):
 
-    - ``primal``: ‖min(F, 0)‖∞ / f — forces are compressive (F ≥ 0);
-    - ``dual``: ‖min(Y, 0)‖∞ / d — no penetration after loading (Y ≥ 0);
+    - ``primal``: ‖max(−F, F − F_max, 0)‖∞ / f — forces are compressive and within
+      their limits (0 ≤ F ≤ F_max);
+    - ``dual``: ‖min(Y, 0)‖∞ / d over the segments without a limit — no penetration
+      after loading (Y ≥ 0; a segment with a limit may penetrate at it, which the
+      upper complementarity checks);
     - ``complementarity``: maxᵢ min(Fᵢ⁺/f, Yᵢ⁺/d) — no segment both loaded and open;
-    - ``equilibrium``: |Rᵀ F − T| / T (seed Eq. 3.14).
+    - ``equilibrium``: |Rᵀ F − T| / T (seed Eq. 3.14);
+    - ``upper_complementarity``: maxᵢ min((F_max,ᵢ − Fᵢ)⁺/f, Yᵢ⁻/d) over the segments
+      with a limit — a segment penetrates only at its limit (0 without limits).
 
     Parameters
     ----------
@@ -247,11 +304,11 @@ def contact_residuals(
     Returns
     -------
     dict of str to float
-        Non-finite inputs give ``inf`` residuals, never NaN.
+        Keyed by :data:`RESIDUALS`. Non-finite inputs give ``inf`` residuals, never NaN.
     """
     F = np.asarray(force, dtype=float)
     if F.shape != (problem.size,) or not np.all(np.isfinite(F)) or not np.isfinite(rotation):
-        return {k: math.inf for k in ("primal", "dual", "complementarity", "equilibrium")}
+        return dict.fromkeys(RESIDUALS, math.inf)
     sc = problem.scale
     CF = problem.compliance @ F
     Y = CF + problem.separation - problem.moment_arm * rotation
@@ -261,14 +318,25 @@ def contact_residuals(
         abs(rotation) * float(np.max(np.abs(problem.moment_arm))),
         sc.length,
     )
-    return {
+    res = {
         "primal": float(np.max(np.maximum(-F, 0.0))) / f_ref,
         "dual": float(np.max(np.maximum(-Y, 0.0))) / d_ref,
         "complementarity": float(
             np.max(np.minimum(np.maximum(F, 0.0) / f_ref, np.maximum(Y, 0.0) / d_ref))
         ),
         "equilibrium": abs(float(problem.moment_arm @ F) - problem.torque) / problem.torque,
+        "upper_complementarity": 0.0,
     }
+    if problem.has_bounds:
+        b = problem.bounded
+        U, Fb, Yb = problem.upper_bound[b], F[b], Y[b]
+        res["primal"] = max(res["primal"], float(np.max(np.maximum(Fb - U, 0.0))) / f_ref)
+        free = ~b
+        res["dual"] = (float(np.max(np.maximum(-Y[free], 0.0))) / d_ref if np.any(free)
+                       else 0.0)
+        res["upper_complementarity"] = float(
+            np.max(np.minimum(np.maximum(U - Fb, 0.0) / f_ref, np.maximum(-Yb, 0.0) / d_ref)))
+    return res
 
 
 #: LAPACK's Cholesky factorisation and solve in double precision, called directly: the
@@ -341,19 +409,23 @@ def schur_floor(problem: ContactProblem) -> float:
 
 
 def solve_on_contact_set(
-    problem: ContactProblem, active: np.ndarray
+    problem: ContactProblem, active: np.ndarray, upper: np.ndarray | None = None
 ) -> tuple[np.ndarray, float] | None:
     """Solve the equality-constrained KKT system on a given contact set exactly.
 
-    On the set A of loaded segments: C_AA F_A − R_A Θ = −s_A and R_Aᵀ F_A = T, by
-    :func:`reduced_kkt` (one Cholesky factorisation of C_AA and the scalar Schur
-    complement); F is zero off A.
+    On the set A of loaded segments below their limits, with the set B at their limits
+    (F_B = F_max,B): C_AA F_A − R_A Θ = −(s_A + C_AB F_max,B) and
+    R_Aᵀ F_A = T − R_Bᵀ F_max,B, by :func:`reduced_kkt` (one Cholesky factorisation of
+    C_AA and the scalar Schur complement); F is zero off A and B.
 
     Parameters
     ----------
     problem : ContactProblem
     active : bool array, shape (N,)
-        The contact set A.
+        The contact set A (segments loaded below their limits).
+    upper : bool array, shape (N,), optional
+        The set B of segments at their limits (disjoint from A, finite limits only);
+        default none.
 
     Returns
     -------
@@ -363,11 +435,17 @@ def solve_on_contact_set(
     idx = np.flatnonzero(active)
     if idx.size == 0:
         return None
-    sol = reduced_kkt(problem.compliance, problem.separation, problem.moment_arm,
-                      problem.torque, idx, schur_floor(problem))
+    s, T = problem.separation, problem.torque
+    F = np.zeros(problem.size)
+    if upper is not None and np.any(upper):
+        jdx = np.flatnonzero(upper)
+        F[jdx] = problem.upper_bound[jdx]
+        s = s + problem.compliance[:, jdx] @ F[jdx]
+        T = T - float(problem.moment_arm[jdx] @ F[jdx])
+    sol = reduced_kkt(problem.compliance, s, problem.moment_arm, T, idx,
+                      schur_floor(problem))
     if sol is None:
         return None
-    F = np.zeros(problem.size)
     F[idx] = sol[0]
     return F, sol[1]
 
@@ -393,8 +471,8 @@ class ContactSolution:
     build_time, solve_time : float — [s]
         Problem conversion (scaling, dense → sparse) and backend wall time.
     residuals : dict of str to float
-        ``primal``, ``dual``, ``complementarity``, ``equilibrium`` (see
-        :func:`contact_residuals`).
+        ``primal``, ``dual``, ``complementarity``, ``equilibrium``,
+        ``upper_complementarity`` (see :func:`contact_residuals`).
     tolerance : float
         The tolerance ``found`` was judged against.
     iterations : int
@@ -430,7 +508,26 @@ class ContactSolution:
             return np.zeros(F.shape, dtype=bool)
         return F > self.tolerance * max(float(np.max(F)), 0.0)
 
+    def at_limit(self, problem: ContactProblem) -> np.ndarray:
+        """Segments at their force limit, shape (N,) bool: the plastic segments.
+
+        A segment is at its limit when its force is within ``tolerance`` times the
+        largest force of its finite limit F_max (the certification bounds the distance of
+        a penetrating segment from its limit by the same tolerance: upper
+        complementarity residual).
+
+        Parameters
+        ----------
+        problem : ContactProblem
+            The problem this solves (its ``upper_bound``).
+        """
+        F = self.force
+        if not np.all(np.isfinite(F)) or F.shape != (problem.size,):
+            return np.zeros(problem.size, dtype=bool)
+        tol = self.tolerance * max(float(np.max(F)), problem.scale.force)
+        return problem.bounded & (F >= problem.upper_bound - tol)
+
     @property
     def max_residual(self) -> float:
-        """The largest of the four relative residuals."""
+        """The largest of the relative residuals."""
         return max(self.residuals.values())

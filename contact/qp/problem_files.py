@@ -7,7 +7,8 @@ problems without running the analysis again.
 
 Problem file (:func:`write_problem`): NumPy ``.npz`` with ``compliance`` (N, N) [mm/N],
 ``separation`` (N,) [mm], ``moment_arm`` (N,) [mm] and ``torque`` () [N·mm] — the
-physical :class:`ContactProblem` (seed Eq. 3.12–3.14), unscaled, bit for bit.
+physical :class:`ContactProblem` (seed Eq. 3.12–3.14), unscaled, bit for bit — and, where
+some segment has a force limit, ``upper_bound`` (N,) [N] (``inf`` where none).
 
 Manifest (:func:`write_manifest`), ``manifest.json`` in the set's directory::
 
@@ -66,7 +67,8 @@ def write_problem(path: str | os.PathLike[str], problem: ContactProblem) -> Path
     path : path-like
         Target file; ``.npz`` is appended if missing. Its directory must exist.
     problem : ContactProblem
-        Stored unscaled: C [mm/N], s [mm], R [mm], T [N·mm].
+        Stored unscaled: C [mm/N], s [mm], R [mm], T [N·mm] and, where some segment has
+        one, the force limits F_max [N].
 
     Returns
     -------
@@ -77,6 +79,8 @@ def write_problem(path: str | os.PathLike[str], problem: ContactProblem) -> Path
     if p.suffix != ".npz":
         p = p.with_name(p.name + ".npz")
     arrays = {k: np.asarray(getattr(problem, k)) for k in _KEYS}
+    if problem.has_bounds:
+        arrays["upper_bound"] = np.asarray(problem.upper_bound)
     _atomic_write(p, lambda fh: np.savez(fh, **arrays))
     return p
 
@@ -106,10 +110,11 @@ def read_problem(path: str | os.PathLike[str], name: str = "") -> ContactProblem
             if missing:
                 raise ProblemInputError(f"{p}: problem file lacks {', '.join(missing)}")
             arrays = {k: np.array(data[k]) for k in _KEYS}
+            bound = np.array(data["upper_bound"]) if "upper_bound" in data else None
     except (OSError, ValueError) as exc:
         raise ProblemInputError(f"{p}: not a readable problem file ({exc})") from None
     return ContactProblem(arrays["compliance"], arrays["separation"], arrays["moment_arm"],
-                          float(arrays["torque"]), name=name or p.stem)
+                          float(arrays["torque"]), name=name or p.stem, upper_bound=bound)
 
 
 def write_manifest(directory: str | os.PathLike[str], entries: Sequence[Mapping[str, Any]],

@@ -40,12 +40,21 @@ def to_qpbenchmark(test_problem: TestProblem) -> Problem:
     """A :class:`~contact.qp.benchmark_problems.TestProblem` as a dense, scaled qpbenchmark
     ``Problem``.
 
-    minimise ½ F̃ᵀ C̃ F̃ + s̃ᵀ F̃ subject to R̃ᵀ F̃ = T̃, F̃ ≥ 0 (see ``ContactProblem.scaled``);
-    the arrays are fresh, writable copies (DAQP refuses read-only inputs).
+    minimise ½ F̃ᵀ C̃ F̃ + s̃ᵀ F̃ subject to R̃ᵀ F̃ = T̃, 0 ≤ F̃ ≤ F̃_max (see
+    ``ContactProblem.scaled``; the force limits, where a problem has some, as one
+    inequality row per limited segment); the arrays are fresh, writable copies (DAQP
+    refuses read-only inputs).
     """
-    C, s, R, T = test_problem.problem.scaled()
+    problem = test_problem.problem
+    C, s, R, T = problem.scaled()
+    G = h = None
+    if problem.has_bounds:
+        b = np.flatnonzero(problem.bounded)
+        G = np.zeros((b.size, s.size))
+        G[np.arange(b.size), b] = 1.0
+        h = np.array(problem.scaled_upper_bound()[b])
     return Problem(
-        np.array(C), np.array(s), None, None, np.array(R[None, :]), np.array([T]),
+        np.array(C), np.array(s), G, h, np.array(R[None, :]), np.array([T]),
         np.zeros(s.size), None, name=test_problem.name,
     )
 

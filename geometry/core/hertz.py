@@ -22,6 +22,7 @@ STEEL               (E [MPa], ν [1]) of the steel both members are made of by d
 contact_modulus     E* of two bodies [MPa]
 HertzLineContact    half-width and peak pressure of a line contact
 hertz_line_contact  compute them
+hertz_line_load     the load per length at which a line contact reaches a peak pressure
 
 References
 ----------
@@ -37,7 +38,8 @@ import numpy as np
 
 from geometry.core.validation import broadcast, real, real_array
 
-__all__ = ["STEEL", "HertzLineContact", "contact_modulus", "hertz_line_contact"]
+__all__ = ["STEEL", "HertzLineContact", "contact_modulus", "hertz_line_contact",
+           "hertz_line_load"]
 
 #: Young's modulus [MPa] and Poisson's ratio [1] of case-hardened gear steel: the default
 #: material of both members everywhere in the toolkit
@@ -120,3 +122,39 @@ def hertz_line_contact(load_per_length, radius, modulus) -> HertzLineContact:
     with np.errstate(divide="ignore", invalid="ignore"):
         p0 = np.where(b > 0.0, 2.0 * w / (math.pi * np.where(b > 0.0, b, 1.0)), 0.0)
     return HertzLineContact(b, p0)
+
+
+def hertz_line_load(peak_pressure, radius, modulus) -> np.ndarray:
+    """Load per length at which a Hertz line contact reaches a given peak pressure.
+
+    The inverse of :func:`hertz_line_contact`'s p₀(w′): w′ = π R p₀² / E*.
+
+    Parameters
+    ----------
+    peak_pressure : float or ndarray — [MPa]
+        p₀ ≥ 0.
+    radius : float or ndarray — [mm]
+        Equivalent radius R > 0 (seed Eq. 2.13).
+    modulus : float or ndarray — [MPa]
+        Contact modulus E* > 0 (:func:`contact_modulus`).
+
+    Returns
+    -------
+    ndarray — [N/mm]
+        w′ of the broadcast shape of the inputs.
+
+    Raises
+    ------
+    InputError
+        A negative or non-finite pressure, a radius or modulus not finite and positive, or
+        shapes that do not broadcast (the message names the fields).
+
+    Notes
+    -----
+    Johnson (1985) Eq. 4.43–4.45: p₀ = √(w′ E*/(π R)).
+    """
+    p0 = real_array("peak_pressure", peak_pressure, unit="MPa", low=0.0)
+    r = real_array("radius", radius, unit="mm", low=0.0, low_open=True)
+    e_star = real_array("modulus", modulus, unit="MPa", low=0.0, low_open=True)
+    p0, r, e_star = broadcast(peak_pressure=p0, radius=r, modulus=e_star)
+    return math.pi * r * p0 * p0 / e_star

@@ -24,6 +24,7 @@ import numpy as np
 from contact.errors import SolverNotFoundError
 from contact.qp.problem import (
     DEFAULT_TOLERANCE,
+    RESIDUALS,
     ContactProblem,
     ContactSolution,
     contact_residuals,
@@ -56,11 +57,18 @@ def _solve_active_set(
     fallback: bool = True,
 ) -> RawResult:
     del accuracy  # exact method: the accuracy level does not apply
+    initial_upper_set = None
     if initial_active_set is None and initial is not None:
-        initial_active_set = np.asarray(initial) > 0
+        init = np.asarray(initial)
+        initial_active_set = init > 0
+        if problem.has_bounds:
+            # a warm start's segments at (or beyond) their limits start at them
+            initial_upper_set = problem.bounded & (
+                init >= problem.upper_bound * (1.0 - 1e-9))
     out = block_pivoting(
         problem,
         initial_active_set=initial_active_set,
+        initial_upper_set=initial_upper_set,
         max_iterations=max_iterations,
         fallback=fallback,
     )
@@ -132,16 +140,31 @@ def get_backend(name: str) -> Backend:
     return reg[name]
 
 
+#: block-pivoting steps a polish may take from a backend's sets on a problem with force
+#: limits (:func:`polish`)
+POLISH_PIVOTS = 5
+
+
 def polish(
-    problem: ContactProblem, force: np.ndarray, rotation: float
+    problem: ContactProblem, force: np.ndarray, rotation: float,
+    tolerance: float = DEFAULT_TOLERANCE,
 ) -> tuple[np.ndarray, float] | None:
     """Polish an approximate solution by solving the KKT system on its contact set exactly.
 
     The contact set is read from the approximate answer: segment i is taken as in
     contact when its relative force exceeds its relative gap, Fᵢ/f > Yᵢ/d (the
-    reference magnitudes of :func:`contact_residuals`). The reduced system is
-    solved with :func:`solve_on_contact_set`; the caller keeps the polished answer
-    only if it certifies (complementarity holds).
+    reference magnitudes of :func:`contact_residuals`), and, where it has a force limit,
+    at its limit when its relative distance from the limit is below its relative
+    penetration, (F_max,ᵢ − Fᵢ)/f < −Yᵢ/d. The reduced system is solved with
+    :func:`solve_on_contact_set`; the caller keeps the polished answer only if it
+    certifies (complementarity holds).
+
+    With force limits an interior-point answer cannot tell a segment loaded just below its
+    limit from one at it (its two bound multipliers are both of the barrier's size there):
+    where the answer on the sets read does not certify to ``tolerance``, up to
+    :data:`POLISH_PIVOTS` block-pivoting steps from those sets follow
+    (:func:`contact.qp.solvers.active_set.block_pivoting`, no fallback). Without limits the
+    polish is the one exact solve.
 
     Returns
     -------
@@ -153,7 +176,16 @@ def polish(
     f_ref = max(float(np.max(np.abs(F))), sc.force)
     d_ref = max(float(np.max(np.abs(problem.compliance @ F))), sc.length)
     active = F / f_ref > Y / d_ref
-    return solve_on_contact_set(problem, active)
+    if not problem.has_bounds:
+        return solve_on_contact_set(problem, active)
+    upper = problem.bounded & ((problem.upper_bound - F) / f_ref < -Y / d_ref)
+    active &= ~upper
+    sol = solve_on_contact_set(problem, active, upper)
+    if sol is not None and _certified(contact_residuals(problem, *sol), tolerance):
+        return sol
+    out = block_pivoting(problem, initial_active_set=active, initial_upper_set=upper,
+                         max_iterations=POLISH_PIVOTS, fallback=False)
+    return (out["force"], out["rotation"]) if out["converged"] else sol
 
 
 def _certified(res: dict[str, float], tolerance: float) -> bool:
@@ -233,7 +265,7 @@ def solve_contact(
     extras["claimed_success"] = raw.claimed
     if raw.force is None or raw.rotation is None:
         nan = np.full(n, np.nan)
-        res = {k: math.inf for k in ("primal", "dual", "complementarity", "equilibrium")}
+        res = dict.fromkeys(RESIDUALS, math.inf)
         return ContactSolution(
             nan,
             math.nan,
@@ -253,7 +285,8 @@ def solve_contact(
     polished = False
     if not _certified(res, tolerance) and polish_solution:
         t0 = time.perf_counter()
-        pol = polish(problem, F, theta) if np.all(np.isfinite(F)) and math.isfinite(theta) else None
+        pol = (polish(problem, F, theta, tolerance)
+               if np.all(np.isfinite(F)) and math.isfinite(theta) else None)
         extras["polish_time"] = time.perf_counter() - t0
         raw.solve_time += extras["polish_time"]  # the time to a certified answer includes it
         if pol is not None:

@@ -5,7 +5,8 @@ The quadratic form uses ``psd_wrap`` (C is SPD by construction and checked by
 cvxpy's canonicalisation; solve time is the wall time of the solver call.
 The equality multiplier of ``R̃ᵀF̃ == T̃`` is read with cvxpy's sign convention
 (checked on a two-variable problem: the dual of ``R̃ᵀF̃ == T̃`` is the
-negative of our Θ̃), so Θ̃ = −y.
+negative of our Θ̃), so Θ̃ = −y. Force limits (:attr:`ContactProblem.upper_bound`) are
+the constraint F̃_b ≤ F_max,b/f₀ on the segments b that have one.
 """
 
 from __future__ import annotations
@@ -86,8 +87,12 @@ def _make_solve(solver: str | None):
         sc = problem.scale
         F = cp.Variable(problem.size)
         equilibrium = Rs @ F == Ts
+        constraints = [F >= 0, equilibrium]
+        if problem.has_bounds:
+            b = np.flatnonzero(problem.bounded)
+            constraints.append(F[b] <= problem.scaled_upper_bound()[b])
         prob = cp.Problem(
-            cp.Minimize(0.5 * cp.quad_form(F, cp.psd_wrap(Cs)) + ss @ F), [F >= 0, equilibrium]
+            cp.Minimize(0.5 * cp.quad_form(F, cp.psd_wrap(Cs)) + ss @ F), constraints
         )
         if initial is not None:
             F.value = np.asarray(initial, float) / sc.force

@@ -9,6 +9,10 @@ backends need is done here and timed as build time.
 
 Source of the dual sign: qpsolvers writes the Lagrangian with ``+ yᵀ(A x − b)``,
 so with A = R̃ᵀ the equality multiplier is y = −Θ̃.
+
+Force limits (:attr:`ContactProblem.upper_bound`) go in as inequality rows G F̃ ≤ h, one
+per segment that has a limit (G the rows of the identity, h = F_max/f₀): no backend then
+sees an infinite bound (ECOS refuses them in qpsolvers' box bound ``ub``).
 """
 
 from __future__ import annotations
@@ -161,7 +165,14 @@ def _make_solve(name: str):
         sc = problem.scale
         P = sp.csc_matrix(Cs) if sparse_only else Cs
         A = sp.csc_matrix(Rs[None, :]) if sparse_only else Rs[None, :]
-        qp = qpsolvers.Problem(P, ss, None, None, A, np.array([Ts]), np.zeros(problem.size), None)
+        G = h = None
+        if problem.has_bounds:
+            b = np.flatnonzero(problem.bounded)
+            G = np.zeros((b.size, problem.size))
+            G[np.arange(b.size), b] = 1.0
+            G = sp.csc_matrix(G) if sparse_only else G
+            h = problem.scaled_upper_bound()[b]
+        qp = qpsolvers.Problem(P, ss, G, h, A, np.array([Ts]), np.zeros(problem.size), None)
         settings = backend_settings(name, accuracy)
         settings.update(options)
         initvals = None if initial is None else np.asarray(initial, float) / sc.force
