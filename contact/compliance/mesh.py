@@ -27,7 +27,6 @@ mesh_compliance       C and its parts
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import logging
 import time
@@ -54,7 +53,7 @@ from geometry.case import case_from_dict
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
-from geometry.pair.assembly import Misalignment, case_transforms
+from geometry.pair.assembly import case_transforms
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -261,8 +260,7 @@ def pair_compliance_model(
     # the teeth live in their members' frames: the misalignment and the surface
     # deviations of the case change the assembly, not the shells, so they are left out of
     # the memo's key (a misalignment sweep builds the shells once per process)
-    teeth_case = dataclasses.replace(case, misalignment=Misalignment(), deviations=None)
-    return _memo_pair(teeth_case.to_toml(), str(theory), n_height, n_face, tuple(materials),
+    return _memo_pair(case.teeth_toml(), str(theory), n_height, n_face, tuple(materials),
                       bores)
 
 
