@@ -56,10 +56,11 @@ def transitions(eo: EaseOff, *, method: str = "second_order", fields: EaseOffFie
         batched bracketing search, :func:`_batched_search`), or, where a pair leaves the
         contact region first (the lower envelope then jumps) or the difference changes sign
         more than once in the bracket, by false position (Illinois) and bisection to
-        1e-8 rad as before the batched search (:func:`_sequential_search`). If the lowest node's pair does not carry the motion at its
-        roll (a misalignment can move the contact away), the scan starts again from the
-        nearest sampled roll where it does. NaN if pair 0 never carries the motion or is
-        still the lowest two cycles away.
+        1e-8 rad as before the batched search (:func:`_sequential_search`). If the
+        lowest node's pair does not carry the motion at its roll (a misalignment can move
+        the contact away), the scan starts again from the nearest sampled roll where it
+        does. NaN if pair 0 never carries the motion or is still the lowest two cycles
+        away.
 
     Raises
     ------
