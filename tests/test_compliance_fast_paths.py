@@ -22,15 +22,17 @@ import pytest
 from contact.compliance.shell import ShellTooth, build_shell_model, compliance_blocks
 from contact.compliance.tooth import (
     _PROJ_ITER,
-    _TRAJ_STEPS,
-    _angle_rows,
-    _blank_rows,
-    _frames,
-    _mid_rows,
     _project_to_mid,
-    _trajectory,
     shell_tooth_from_case,
 )
+from contact.compliance.tooth_map import (
+    _TRAJ_STEPS,
+    _mid_rows,
+)
+from contact.compliance.tooth_map import angle_rows as _angle_rows
+from contact.compliance.tooth_map import blank_rows as _blank_rows
+from contact.compliance.tooth_map import frames as _frames
+from contact.compliance.tooth_map import trajectory as _trajectory
 from geometry.case import load_case
 from geometry.core.errors import InputError
 from geometry.machine.flank import projection_fractions
