@@ -1,9 +1,10 @@
 """What a study computes once per worker process, and the workers' environment (issue 32).
 
 * The pinion's points of the ease-off's forward map (861 solutions of the equation of
-  meshing on the extended pinion grid) do not depend on the misalignment: they are
-  memoised per process under the tooth models' key (``Case.teeth_toml``), and an ease-off
-  computed with the memo equals, bit for bit, one computed without it.
+  meshing on the extended pinion grid) and the real gear flank on the ease-off's grid do
+  not depend on the misalignment: they are memoised per process under the tooth models'
+  key (``Case.teeth_toml``), and an ease-off computed with the memos equals, bit for bit,
+  one computed without them.
 * A LocalCluster the study engine starts runs its workers without distributed's
   ``MALLOC_TRIM_THRESHOLD_`` (a quarter of a point's CPU time in page faults).
 
@@ -21,7 +22,7 @@ import pytest
 from contact.catalogue import resolve_case
 from contact.study.engine import WORKER_ENVIRON_UNSET, worker_environment
 from contact.utca import ease_off
-from contact.utca.conjugate_map import clear_forward_points_cache, forward_points_cache_info
+from contact.utca.conjugate_map import clear_memos, memo_info
 from geometry.pair.assembly import Misalignment
 
 
@@ -30,16 +31,16 @@ def case():
     return resolve_case("kolivand2009_fm_11x41")
 
 
-def test_forward_points_are_solved_once_per_process_and_change_nothing(case):
-    clear_forward_points_cache()
+def test_teeth_alone_are_solved_once_per_process_and_change_nothing(case):
+    clear_memos()
     a = ease_off(case, misalignment=Misalignment(delta_E=0.05))
     b = ease_off(case, misalignment=Misalignment(delta_E=-0.05, delta_P=0.03))
-    hits, misses, _, _ = forward_points_cache_info()
-    assert (hits, misses) == (1, 1)
+    for name, info in memo_info().items():
+        assert (info.hits, info.misses) == (1, 1), name
     # the same case with other deviations or misalignment has the same key
     assert (dataclasses.replace(case, misalignment=Misalignment(delta_P=0.1)).teeth_toml()
             == case.teeth_toml())
-    clear_forward_points_cache()
+    clear_memos()
     fresh = ease_off(case, misalignment=Misalignment(delta_E=-0.05, delta_P=0.03))
     for name in ("ease_off_angle", "roll_angle", "gap_curvature", "pinion_u", "pinion_v",
                  "placement_error"):

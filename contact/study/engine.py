@@ -16,7 +16,8 @@ workers and returns one dataset over a ``point`` dimension.
   factorised, which do not depend on the misalignment or the deviations — are memoised
   per worker process (:func:`contact.compliance.pair_compliance_model`), so they are
   built once per worker, not once per point; so are the pinion points of the ease-off's
-  forward map (:mod:`contact.utca.conjugate_map`), under the same key.
+  forward map and the gear flank on its grid (:mod:`contact.utca.conjugate_map`), under
+  the same key.
 * **Workers' environment**: a LocalCluster's workers start without distributed's
   ``MALLOC_TRIM_THRESHOLD_`` (:func:`worker_environment`; ``docs/study.md`` for a cluster
   of one's own).

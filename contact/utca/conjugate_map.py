@@ -15,8 +15,9 @@ Public names
 ------------
 fill_missing       fill the NaN nodes of a grid from the computed ones (linear continuation)
 map_gear_nodes     every gear node's conjugate pinion point (used by :func:`ease_off`)
-forward_points_cache_info, clear_forward_points_cache
-                   the per-process memo of the forward map's pinion points
+gear_nodes         the real gear flank on the ease-off's grid (memoised per process)
+memo_info, clear_memos
+                   the per-process memos of the forward map's pinion points and the gear
 """
 
 from __future__ import annotations
@@ -39,16 +40,17 @@ from geometry.case import case_from_dict
 from geometry.core.errors import InputError
 from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import working_sections
-from geometry.machine.flank import blank_outline
+from geometry.machine.flank import FlankSurface, blank_outline, flank_surface
 from geometry.machine.meshing import solve_envelope
 
 if TYPE_CHECKING:
     from geometry.case import Case
 
 __all__ = [
-    "clear_forward_points_cache",
+    "clear_memos",
     "fill_missing",
-    "forward_points_cache_info",
+    "gear_nodes",
+    "memo_info",
 ]
 
 log = logging.getLogger(__name__)
@@ -263,15 +265,62 @@ def _memo_forward_points(teeth_toml: str, flank: str) -> tuple[np.ndarray, ...]:
     return out
 
 
-def forward_points_cache_info():
-    """Hits, misses, size and capacity of this process's memo of the pinion points of the
-    forward map (``functools`` cache info): a misalignment sweep solves them once."""
-    return _memo_forward_points.cache_info()
+@functools.lru_cache(maxsize=_MEMO_SIZE)
+def _memo_gear_nodes(teeth_toml: str, flank: str, grid: tuple) -> FlankSurface:
+    """The real gear flank on the ease-off's grid (``grid``: its options as sorted (key,
+    value) pairs) of the case whose :meth:`~geometry.case.Case.teeth_toml` is
+    ``teeth_toml`` (read-only arrays)."""
+    case = case_from_dict(tomllib.loads(teeth_toml))
+    gs = flank_surface(case, "gear", flank, **dict(grid))
+    for a in (*gs, *gs.grid):
+        if isinstance(a, np.ndarray):
+            a.flags.writeable = False
+    return gs
 
 
-def clear_forward_points_cache() -> None:
-    """Forget the memoised pinion points of the forward map (frees memory)."""
+def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
+    """The real gear flank on the ease-off's grid, memoised per process.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str
+        The gear flank (``"concave"`` or ``"convex"``).
+    grid : dict
+        ``nu``, ``nv``, ``u_limits``, ``v_limits`` of
+        :func:`geometry.machine.flank.flank_surface`.
+
+    Returns
+    -------
+    geometry.machine.flank.FlankSurface
+        :func:`geometry.machine.flank.flank_surface` of the gear (arrays read-only): the
+        gear does not depend on the misalignment, so a misalignment study solves its 861
+        nodes once per process (keyed as the tooth models are, by
+        :meth:`~geometry.case.Case.teeth_toml`).
+
+    Raises
+    ------
+    InputError
+        As :func:`geometry.machine.flank.flank_surface`.
+    """
+    key = tuple(sorted((k, tuple(v) if isinstance(v, list | tuple) else v)
+                       for k, v in grid.items()))
+    return _memo_gear_nodes(case.teeth_toml(), flank, key)
+
+
+def memo_info() -> dict[str, tuple]:
+    """Hits, misses, size and capacity (``functools`` cache info) of this process's memos
+    of what an ease-off needs of the teeth alone: ``"forward_points"`` (the pinion points of
+    the forward map) and ``"gear_nodes"`` (the real gear flank on the grid); a
+    misalignment sweep solves each once per process."""
+    return {"forward_points": _memo_forward_points.cache_info(),
+            "gear_nodes": _memo_gear_nodes.cache_info()}
+
+
+def clear_memos() -> None:
+    """Forget the memoised forward-map points and gear nodes (frees memory)."""
     _memo_forward_points.cache_clear()
+    _memo_gear_nodes.cache_clear()
 
 
 def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:
