@@ -1,33 +1,37 @@
-"""LTCA benchmark: time of each stage of ``ltca run`` on a case, against the seed's timing.
+"""LTCA benchmark: the CPU time of each stage of an analysis and of a study point, per case.
 
     python benchmarks/ltca.py [CASE] [--case CASE ...] [--baseline [CASE]] [--torque 250]
                               [--rolls-per-cycle 20] [--repeat 5]
 
-Prints the wall time of each stage (geometry, ease-off, UTCA, LTCA with its compliance
-assembly and contact solves per roll position) for one torque, and the ratios to the
-seed's reported 45 s for a whole analysis (25 s compliance, about 1 s per roll position
-on a 3.0 GHz PC, seed §3.4). BLAS is limited to one thread (one core, as the targets
-are stated: whole analysis ≤ 1 s, ≤ 5 ms per roll position). The LTCA is timed as
-:func:`contact.pipeline.run_analysis` runs it (reusing the UTCA's transitions M1, M2).
-Rolls whole mesh cycles apart repeat an earlier roll and are copied, not recomputed: the
-table gives the time per roll position (LTCA / all rolls) and per computed roll. The
-analysis runs ``--repeat`` times after a warm-up and the fastest run is reported (the
-machines here are shared: the minimum is the least disturbed measurement). When the LTCA
-is repeated (an outer tooth pair loaded at the end of the window, or edge segments
-reaching beyond their separation limit: :func:`contact.ltca.loaded_tca`), ``LTCA total``
-and the per-roll rows count every pass, the compliance and solve rows the last pass only
-(the returned dataset); the header gives the number of passes.
+Without cases: the bundled default (the reference design of the seed's 11×41 pair, at
+its Table 3.1 mounting) and the long-bearing ``kolivand2009_fm_11x41`` side by side.
 
-Cases: a file path or a bundled case name, given as the positional CASE and/or with
-``--case`` (repeatable); none: the bundled default. With two or more cases, or with
-``--baseline`` (a reference case; without a value the bundled default, the seed's
-face-milled 11×41 pair), the stages of each case are printed side by side with their
-ratio to the reference, e.g. a face-hobbed case beside the face-milled default::
+Two measurements per case, in this process, BLAS on one thread (one core):
 
-    python benchmarks/ltca.py --case tests/data/fh_iso23509_s2_crown.toml --baseline
+* the **whole analysis** at one torque, as ``ltca run`` runs it (geometry, ease-off, UTCA,
+  LTCA, efficiency at the case's speed), against the seed's reported 45 s (25 s
+  compliance, about 1 s per roll position, on a 3.0 GHz PC; seed §3.4);
+* a **study point**: what a worker of a study computes per point
+  (:func:`contact.study.engine.analyse_point`: no geometry group, one torque), at
+  ``--repeat`` misalignments around the case's own.
 
-(target: a face-hobbed analysis ≤ 1.5 × the face-milled one; face hobbing changes only
-the machine chain of the flank evaluations, design note FACE_HOBBING.md §6).
+Each stage's CPU time (``time.process_time``, exclusive of the stages nested in it:
+``benchmarks/stage_clock.py``) and its share of the whole are printed side by side for the
+cases, with the ratio to the first case. CPU time, not wall time: the machines here are
+shared, and other processes' load moves wall times by up to 70 % but CPU times far less.
+The analyses run once as a warm-up (imports, the per-process memos of the tooth models and
+the forward map, as on a study's worker), then ``--repeat`` times with the cases taking
+turns (a change of the machine's load falls on all alike); medians are printed, and the
+least and largest whole times. Targets (issue 32, one core): the default case's whole
+analysis ≤ 0.25 s, a study point ≤ 0.25 s of CPU (≥ 6 points/s on 2 workers: see
+``benchmarks/sweep.py``).
+
+``--baseline`` (a reference case; without a value the bundled default) puts a case first,
+e.g. face-hobbed cases beside the face-milled default (target: a face-hobbed analysis
+≤ 1.5 × the face-milled one)::
+
+    python benchmarks/ltca.py --case kolivand2009_fh_12x41 \
+        --case kolivand2009_table54_A_fh --baseline
 """
 
 from __future__ import annotations
@@ -36,26 +40,34 @@ import argparse
 import logging
 import os
 import statistics
+import time
 
 for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
 
+from stage_clock import StageClock  # noqa: E402
 from tabulate import tabulate  # noqa: E402
 
 from contact.catalogue import DEFAULT_CASE, resolve_case  # noqa: E402
 from contact.ltca import LTCAOptions  # noqa: E402
 from contact.pipeline import run_analysis  # noqa: E402
+from contact.study.engine import analyse_point  # noqa: E402
+from contact.study.points import StudyInputs  # noqa: E402
 
 SEED_TOTAL_S = 45.0
-SEED_COMPLIANCE_S = 25.0
-SEED_PER_ROLL_S = 1.0
+LONG_BEARING = "kolivand2009_fm_11x41"
+TARGET_ANALYSIS_S = 0.25  # the default case's whole analysis, one core
+TARGET_POINT_S = 0.25  # a study point's CPU time
 FH_TARGET_RATIO = 1.5  # a face-hobbed analysis at most this many times a face-milled one
 
 
-class _Repeats(logging.Handler):
-    """Counts the LTCA's repeated passes: :func:`contact.ltca.loaded_tca` logs "… again
-    with …" (INFO) when it runs the analysis again with more tooth pairs or a wider
-    edge-segment limit."""
+def _offsets(repeat: int) -> list[tuple[float, float]]:
+    """(ΔE, ΔP) offsets [mm] of the study points from the case's mounting."""
+    return [(0.02 * ((i % 5) - 2), 0.015 * ((i * 3) % 5 - 2)) for i in range(repeat)]
+
+
+class _Passes(logging.Handler):
+    """Counts the LTCA's repeated passes (``… again with …`` at INFO)."""
 
     def __init__(self) -> None:
         super().__init__(logging.INFO)
@@ -66,146 +78,102 @@ class _Repeats(logging.Handler):
             self.count += 1
 
 
-def _analysis(case, torque: float, opts: LTCAOptions):
-    """One analysis and the number of passes its LTCA took."""
-    logger = logging.getLogger("contact.ltca.mesh_cycle")
-    counter, level = _Repeats(), logger.level
-    logger.addHandler(counter)
-    logger.setLevel(logging.INFO)
-    try:
-        run = run_analysis(case, [torque], options=opts)
-    finally:
-        logger.removeHandler(counter)
-        logger.setLevel(level)
-    return run, 1 + counter.count
+def _timed(clock: StageClock, fn, *args, **kwargs):
+    """(result, CPU [s] of the call, stage CPU times [s]) of one call."""
+    clock.reset()
+    t0 = time.process_time()
+    out = fn(*args, **kwargs)
+    total = time.process_time() - t0
+    stages = dict(clock.cpu)
+    stages["rest (pipeline, datasets)"] = total - sum(stages.values())
+    return out, total, stages
 
 
 def measure(cases, torque: float, opts: LTCAOptions, repeat: int) -> list[dict]:
-    """Stage times [s] of the fastest of ``repeat`` analyses of each case.
+    """Per case: the stage CPU times [s] of ``repeat`` whole analyses and study points.
 
-    Each case is analysed once as a warm-up, then the cases take turns (round robin), so
-    that a change of the shared machine's load falls on all of them alike.
-
-    Returns one dict per case: ``name``, ``method`` (FM/FH), ``solver``, ``n_roll``,
-    ``n_computed`` (rolls not copied from an earlier mesh cycle), ``passes`` (the LTCA's
-    passes: more than 1 when it was repeated with more pairs or a wider edge limit),
-    ``rows`` — list of (stage, seconds) — ``ltca_times`` and ``totals`` (LTCA and whole
-    analysis time of every run, in round order) and ``total`` (of the fastest run).
+    Returns one dict per case: ``name``, ``method``, ``analysis`` and ``point`` (lists of
+    (total, stages) per run), ``passes`` (the LTCA's passes in the last whole analysis).
     """
-    for case in cases:
-        _analysis(case, torque, opts)  # warm-up: imports, caches
-    runs: list[list] = [[] for _ in cases]
-    for _ in range(max(repeat, 1)):
-        for k, case in enumerate(cases):
-            run, passes = _analysis(case, torque, opts)
-            times = {key[5:-2]: float(v) for key, v in run.attrs.items()
-                     if key.startswith("time_")}
-            runs[k].append((run, times, passes))
-    return [_summary(case, r) for case, r in zip(cases, runs, strict=True)]
+    clock = StageClock().install()
+    logger = logging.getLogger("contact.ltca.mesh_cycle")
+    passes, level = _Passes(), logger.level
+    logger.addHandler(passes)
+    logger.setLevel(logging.INFO)
+    try:
+        shared = [StudyInputs(case=c, torque=(torque,), options=opts) for c in cases]
+        for c, s in zip(cases, shared, strict=True):  # warm-up: imports, memos
+            run_analysis(c, [torque], options=opts)
+            analyse_point(s, 0, {"delta_E": c.misalignment.delta_E,
+                                 "delta_P": c.misalignment.delta_P})
+        out = [{"name": c.name, "method": c.pair.method, "analysis": [], "point": [],
+                "passes": 1} for c in cases]
+        for dE, dP in _offsets(max(repeat, 1)):
+            for k, (c, s) in enumerate(zip(cases, shared, strict=True)):
+                passes.count = 0
+                _, total, stages = _timed(clock, run_analysis, c, [torque], options=opts)
+                out[k]["analysis"].append((total, stages))
+                out[k]["passes"] = 1 + passes.count
+                point = {"delta_E": c.misalignment.delta_E + dE,
+                         "delta_P": c.misalignment.delta_P + dP}
+                res, total, stages = _timed(clock, analyse_point, s, 0, point)
+                if res.status == 2:
+                    raise RuntimeError(f"study point {point} of {c.name} failed: {res.reason}")
+                out[k]["point"].append((total, stages))
+    finally:
+        clock.remove()
+        logger.removeHandler(passes)
+        logger.setLevel(level)
+    return out
 
 
-def _summary(case, runs: list) -> dict:
-    """The dict of :func:`measure` for one case from its (run, stage times, passes)."""
-    tree, t, passes = min(runs, key=lambda r: sum(r[1].values()))
-    lt = tree["ltca"].dataset
-    n_roll = lt.sizes["roll"]
-    compliance = float(lt["compliance_time"].sum())
-    # rolls whole mesh cycles apart repeat an earlier roll's problem and are not recomputed
-    n_computed = max(int((lt["compliance_time"] > 0).sum()), 1)
-    solve = float(lt["solve_time"].sum())
-    total = sum(t.values())
-    rows = [
-        ("geometry (4 flanks, 41x21)", t["geometry"]),
-        ("ease-off + roll-angle surface", t["easeoff"]),
-        ("UTCA (one mesh cycle)", t["utca"]),
-        ("LTCA total", t["ltca"]),
-        ("  LTCA per pass", t["ltca"] / passes),
-        ("  compliance assembly", compliance),
-        ("  contact solves (all Weber iterations)", solve),
-        ("  per roll position", t["ltca"] / n_roll),
-        ("  contact solves per roll position", solve / n_roll),
-        ("  LTCA per computed roll", t["ltca"] / n_computed),
-        ("  compliance per computed roll", compliance / n_computed),
-        ("whole analysis", total),
-    ]
-    return {"name": case.name, "method": case.pair.method, "solver": lt.attrs["solver"],
-            "n_roll": n_roll, "n_computed": n_computed, "passes": passes, "rows": rows,
-            "ltca_times": [r[1]["ltca"] for r in runs],
-            "totals": [sum(r[1].values()) for r in runs], "total": total}
+def _median_stages(runs: list[tuple[float, dict]]) -> tuple[float, dict[str, float]]:
+    """Median whole time and median time of each stage over the runs."""
+    names = sorted({n for _, st in runs for n in st})
+    return (statistics.median(t for t, _ in runs),
+            {n: statistics.median(st.get(n, 0.0) for _, st in runs) for n in names})
 
 
-def _seed_ratio(label: str, seconds: float) -> str:
-    if label == "  compliance assembly":
-        return f"{SEED_COMPLIANCE_S / max(seconds, 1e-9):.0f}x"
-    if label == "  per roll position":
-        return f"{SEED_PER_ROLL_S / max(seconds, 1e-9):.0f}x"
-    if label == "whole analysis":
-        return f"{SEED_TOTAL_S / max(seconds, 1e-9):.0f}x"
-    return ""
-
-
-def _header(m: dict, torque: float, repeat: int) -> str:
-    again = "" if m["passes"] == 1 else " (repeated: more pairs or a wider edge limit)"
-    return (f"case {m['name']} ({m['method']}), T_p = {torque:g} N m, {m['n_roll']} roll "
-            f"positions ({m['n_computed']} computed), LTCA in {m['passes']} pass(es){again}, "
-            f"solver {m['solver']}, fastest of {max(repeat, 1)} runs")
-
-
-def _spread(m: dict) -> str:
-    lt = m["ltca_times"]
-    return (f"{m['name']}: LTCA per roll position over the {len(lt)} runs: median "
-            f"{1e3 * statistics.median(lt) / m['n_roll']:.2f} ms, slowest "
-            f"{1e3 * max(lt) / m['n_roll']:.2f} ms (the machine's load varies)")
-
-
-def print_one(m: dict, torque: float, repeat: int) -> None:
-    """The stage table of one case with the speed-up over the seed."""
-    print(_header(m, torque, repeat))
-    rows = [(label, sec, _seed_ratio(label, sec)) for label, sec in m["rows"]]
-    print(tabulate(rows, headers=["stage", "time [s]", "faster than the seed"],
-                   tablefmt="github", floatfmt=".4f"))
-    print(_spread(m))
-    print("targets: whole analysis <= 1 s, <= 5 ms per roll position (one core)")
-
-
-def print_side_by_side(ref: dict, others: list[dict], torque: float, repeat: int) -> None:
-    """The stages of each case beside the reference case's, with the ratios."""
-    for m in (ref, *others):
-        print(_header(m, torque, repeat))
-    headers = ["stage", f"{ref['name']} [s]"]
-    for m in others:
-        headers += [f"{m['name']} [s]", "ratio"]
+def print_table(results: list[dict], what: str, title: str) -> None:
+    """Stage CPU times and shares of each case side by side, ratios to the first case."""
+    meds = [_median_stages(r[what]) for r in results]
+    names = sorted({n for _, st in meds for n in st if st[n] > 5e-4 or n.startswith("rest")},
+                   key=lambda n: -meds[0][1].get(n, 0.0))
+    headers = ["stage"]
+    for k, r in enumerate(results):
+        headers += [f"{r['name']} [s]", "share"] + (["ratio"] if k else [])
     rows = []
-    for i, (label, sec) in enumerate(ref["rows"]):
-        row = [label, sec]
-        for m in others:
-            other = m["rows"][i][1]
-            row += [other, other / sec if sec > 0 else float("nan")]
+    for n in names:
+        row = [n]
+        for k, (total, st) in enumerate(meds):
+            v = st.get(n, 0.0)
+            row += [v, f"{100 * v / total:.0f} %"]
+            if k:
+                ref = meds[0][1].get(n, 0.0)
+                row.append(f"{v / ref:.2f}x" if ref > 0 else "")
         rows.append(row)
-    print(tabulate(rows, headers=headers, tablefmt="github",
-                   floatfmt=(".4f", ".4f", *([".4f", ".2f"] * len(others)))))
-    for m in (ref, *others):
-        print(_spread(m))
-    for m in others:
-        if m["method"] == "FH" and ref["method"] == "FM":
-            ratio = m["total"] / ref["total"]
-            rounds = statistics.median(a / b for a, b in zip(m["totals"], ref["totals"],
-                                                              strict=True))
-            verdict = "met" if ratio <= FH_TARGET_RATIO else "NOT met"
-            print(f"target FH analysis <= {FH_TARGET_RATIO:g} x FM: {m['name']} / {ref['name']} "
-                  f"= {ratio:.2f} fastest runs, {rounds:.2f} median of the rounds ({verdict})")
+    row = ["whole (median)"]
+    for k, (total, _) in enumerate(meds):
+        row += [total, "100 %"] + ([f"{total / meds[0][0]:.2f}x"] if k else [])
+    rows.append(row)
+    print(title)
+    print(tabulate(rows, headers=headers, tablefmt="github", floatfmt=".4f"))
+    for r in results:
+        t = [x for x, _ in r[what]]
+        print(f"  {r['name']}: {len(t)} runs, least {min(t):.3f} s, median "
+              f"{statistics.median(t):.3f} s, largest {max(t):.3f} s of CPU")
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("case_arg", nargs="?", default=None, metavar="CASE",
-                        help="case file or bundled case name (default: the bundled default)")
+                        help="case file or bundled case name")
     parser.add_argument("--case", action="append", default=[], metavar="CASE",
                         help="a case to time (repeatable; the first is the reference unless "
                              "--baseline is given)")
     parser.add_argument("--baseline", nargs="?", const=DEFAULT_CASE, default=None,
-                        metavar="CASE", help="reference case printed beside the others "
-                        f"(without a value: the bundled default, {DEFAULT_CASE})")
+                        metavar="CASE", help="reference case printed first (without a "
+                        f"value: the bundled default, {DEFAULT_CASE})")
     parser.add_argument("--torque", type=float, default=250.0)
     parser.add_argument("--rolls-per-cycle", type=int, default=20)
     parser.add_argument("--repeat", type=int, default=5)
@@ -214,14 +182,42 @@ def main() -> None:
     if args.baseline is not None:
         names = [args.baseline, *names]
     if not names:
-        names = [None]
+        names = [None, LONG_BEARING]
     opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle)
-    results = measure([resolve_case(n) for n in names], args.torque, opts, args.repeat)
-    if len(results) == 1:
-        print_one(results[0], args.torque, args.repeat)
-    else:
-        print_side_by_side(results[0], results[1:], args.torque, args.repeat)
+    cases = [resolve_case(n) for n in names]
+    load = os.getloadavg()[0]
+    results = measure(cases, args.torque, opts, args.repeat)
+    print(f"T_p = {args.torque:g} N m, {opts.cycles} x {opts.rolls_per_cycle} roll positions, "
+          f"solver {opts.solver}, one BLAS thread; CPU time (process_time), medians of "
+          f"{args.repeat} runs; load average {load:.1f} -> {os.getloadavg()[0]:.1f} on "
+          f"{os.cpu_count()} cores")
+    for r in results:
+        if r["passes"] > 1:
+            print(f"  {r['name']}: LTCA in {r['passes']} passes (more pairs or a wider edge "
+                  "limit)")
+    print()
+    print_table(results, "analysis", "whole analysis at one torque (as `ltca run`):")
+    print()
+    print_table(results, "point", "study point (contact.study.engine.analyse_point, no "
+                "geometry), in this process:")
+    print()
+    ref = results[0]
+    t_an = statistics.median(t for t, _ in ref["analysis"])
+    t_pt = statistics.median(t for t, _ in ref["point"])
+    print(f"{ref['name']}: whole analysis {t_an:.3f} s = {SEED_TOTAL_S / t_an:.0f}x faster than "
+          f"the seed's {SEED_TOTAL_S:g} s (target <= {TARGET_ANALYSIS_S:g} s: "
+          f"{'met' if t_an <= TARGET_ANALYSIS_S else 'NOT met'}); study point {t_pt:.3f} s "
+          f"of CPU (target <= {TARGET_POINT_S:g} s: "
+          f"{'met' if t_pt <= TARGET_POINT_S else 'NOT met'}), i.e. at most "
+          f"{2.0 / t_pt:.1f} points/s on 2 workers")
+    for r in results[1:]:
+        if r["method"] == "FH" and ref["method"] == "FM":
+            t = statistics.median(x for x, _ in r["analysis"])
+            verdict = "met" if t / t_an <= FH_TARGET_RATIO else "NOT met"
+            print(f"target FH analysis <= {FH_TARGET_RATIO:g} x FM: {r['name']} / "
+                  f"{ref['name']} = {t / t_an:.2f} ({verdict})")
 
 
 if __name__ == "__main__":
     main()
+

@@ -22,22 +22,8 @@ The whole analysis of a case (geometry → ease-off UTCA → LTCA) as one DataTr
 """
 
 from contact import _moved
-from contact.errors import (
-    ContactError,
-    NotPositiveDefiniteError,
-    ProblemInputError,
-    SolverNotFoundError,
-)
-from contact.qp import (
-    DEFAULT_SOLVER,
-    DEFAULT_TOLERANCE,
-    ContactProblem,
-    ContactSolution,
-    available_solvers,
-    contact_residuals,
-    solve_contact,
-)
 from geometry import __version__
+from geometry.core.lazy import lazy_exports
 
 _moved.install()
 
@@ -57,11 +43,14 @@ __all__ = [
     "solve_contact",
 ]
 
-
-def __getattr__(name: str):
-    # the pipeline pulls in geometry and plotting-free stages; import it only when used
-    if name == "run_analysis":
-        from contact.pipeline import run_analysis
-
-        return run_analysis
-    raise AttributeError(f"module 'contact' has no attribute {name!r}")
+#: the public names and the module each comes from, imported when first used (PEP 562):
+#: the QP layer pulls in SciPy and the pipeline the whole chain, which ``ltca --help`` and
+#: ``ltca cases`` do not need (issue 32: start-up ≤ 0.5 s)
+_LAZY = {
+    **dict.fromkeys(("DEFAULT_SOLVER", "DEFAULT_TOLERANCE", "ContactProblem", "ContactSolution",
+                     "available_solvers", "contact_residuals", "solve_contact"), "contact.qp"),
+    **dict.fromkeys(("ContactError", "NotPositiveDefiniteError", "ProblemInputError",
+                     "SolverNotFoundError"), "contact.errors"),
+    "run_analysis": "contact.pipeline",
+}
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())

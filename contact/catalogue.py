@@ -21,12 +21,15 @@ from __future__ import annotations
 import os
 from importlib import resources
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from geometry.case import Case, load_case
 from geometry.core.errors import InputError
-from geometry.pair.assembly import Misalignment
 
-__all__ = ["DEFAULT_CASE", "SEED_TABLE_3_1", "bundled_case_path", "bundled_cases", "resolve_case"]
+if TYPE_CHECKING:
+    from geometry.case import Case
+
+__all__ = ["DEFAULT_CASE", "SEED_TABLE_3_1", "bundled_case_path", "bundled_cases",  # noqa: F822
+           "resolve_case"]
 
 #: File name of the default case: the reference design of the seed's Table 2.1 / 4.1 pair
 #: (``kolivand2009_fm_11x41.toml`` is the same pair's long-bearing synthesis without relief,
@@ -45,10 +48,19 @@ DEFAULT_CASE = "kolivand2009_fm_11x41_reference.toml"
 #: These are the ``[operating]`` table of the default case (``cases/kolivand2009_fm_11x41
 #: .toml``, from its basic file), so ``ltca run``, ``ltca run kolivand2009_fm_11x41`` and
 #: ``run_analysis()`` all run them; pass ``misalignment=Misalignment()`` for the aligned pair.
-SEED_TABLE_3_1 = {
-    "torque": (50.0, 250.0, 500.0),
-    "misalignment": Misalignment(delta_E=-0.15, delta_P=0.12),
-}
+#: (Built when first used, :func:`__getattr__`: the catalogue's names and paths need no
+#: NumPy, so ``ltca --help`` and ``ltca cases`` start quickly.)
+_SEED_TABLE_3_1 = {"torque": (50.0, 250.0, 500.0), "delta_E": -0.15, "delta_P": 0.12}
+
+
+def __getattr__(name: str):
+    if name == "SEED_TABLE_3_1":
+        from geometry.pair.assembly import Misalignment
+
+        return {"torque": _SEED_TABLE_3_1["torque"],
+                "misalignment": Misalignment(delta_E=_SEED_TABLE_3_1["delta_E"],
+                                             delta_P=_SEED_TABLE_3_1["delta_P"])}
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 def _cases_root():
     """The bundled cases: in a source tree (``python -m pytest`` or ``python -m contact``
@@ -87,6 +99,8 @@ def bundled_case_path(name: str = DEFAULT_CASE) -> Path:
 
 def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
     """A Case from a Case, a file path, a bundled case name, or None (the default case)."""
+    from geometry.case import Case, load_case
+
     if isinstance(case, Case):
         return case
     if case is None:

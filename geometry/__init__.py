@@ -20,8 +20,8 @@ named for what it computes:
 """
 
 from geometry import _moved
-from geometry.case import Case, load_case
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.lazy import lazy_exports
 from geometry.core.version import __version__
 
 _moved.install()
@@ -29,3 +29,8 @@ MOVED = _moved.MOVED
 
 __all__ = ["MOVED", "Case", "InputError", "LTCAError", "ModelUnavailableError", "__version__",
            "load_case"]
+
+# the case schema pulls in NumPy and the machine: imported when first used, so that what
+# needs only the version or the exceptions (``ltca --help``) starts quickly
+__getattr__, __dir__ = lazy_exports(__name__, {"Case": "geometry.case",
+                                               "load_case": "geometry.case"}, globals())

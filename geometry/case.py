@@ -27,6 +27,7 @@ Case.to_toml                              the case as TOML text (round-trips thr
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import logging
 import math
@@ -380,6 +381,23 @@ class Case:
             file declared, so no ``convention`` key is written.
         """
         return dump_toml(_case_to_dict(self))
+
+    def teeth_toml(self) -> str:
+        """The case as TOML text without its misalignment and surface deviations.
+
+        Neither changes a tooth in its member's frame (they change how the pair is
+        assembled and which surfaces are compared), so this text keys the per-process memos
+        of what the teeth alone decide: the tooth models
+        (:func:`contact.compliance.pair_compliance_model`) and the pinion's points of the
+        ease-off's forward map (:mod:`contact.utca.conjugate_map`); a misalignment sweep
+        computes them once per process.
+
+        Returns
+        -------
+        str
+            :meth:`to_toml` of the case with ``Misalignment()`` and no deviations.
+        """
+        return dataclasses.replace(self, misalignment=Misalignment(), deviations=None).to_toml()
 
 
 # ---------------------------------------------------------------------------- schema

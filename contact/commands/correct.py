@@ -34,7 +34,11 @@ _HEADER = ("# Written by `ltca correct` (geometry.synthesis.correction): {case} 
 
 def register(sub) -> None:
     """Add the sub-command to an ``argparse`` sub-parser collection."""
-    from geometry.synthesis.correction import COND_MAX, DEFAULT_VARIABLES, SETTING_VARIABLES
+    from geometry.synthesis.setting_variables import (
+        COND_MAX,
+        DEFAULT_VARIABLES,
+        SETTING_VARIABLES,
+    )
 
     defaults = "; ".join(f"{proc}: {' '.join(names)}" for proc, names in
                          DEFAULT_VARIABLES.items())
@@ -72,7 +76,7 @@ def register(sub) -> None:
 
 def _bounds(raw: list[list[str]]) -> dict[str, tuple[float, float]]:
     from geometry.core.errors import InputError
-    from geometry.synthesis.correction import SETTING_VARIABLES
+    from geometry.synthesis.setting_variables import SETTING_VARIABLES
 
     out = {}
     for name, low, high in raw:

@@ -31,7 +31,7 @@ _HEADER_BASIC = ("# Written by `ltca optimize` (contact.optimize): {case} re-syn
 
 def register(sub) -> None:
     """Add the sub-command to an ``argparse`` sub-parser collection."""
-    from contact.optimize import METHODS
+    from contact.optimize.methods import METHODS
 
     p = sub.add_parser(
         "optimize",

@@ -12,8 +12,7 @@ from __future__ import annotations
 import argparse
 import math
 from pathlib import Path
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from contact.commands.options import (
     case_argument,
@@ -30,6 +29,9 @@ from contact.commands.options import (
 from contact.commands.output_paths import check_output_dir, check_output_file
 from geometry.core.errors import InputError
 
+if TYPE_CHECKING:
+    import numpy as np
+
 #: Place in ``ltca --help``.
 ORDER = 45
 
@@ -45,6 +47,8 @@ _INPUT_OPTIONS = {
 
 def parse_range(option: str, text: str) -> np.ndarray:
     """Values of ``START:STOP:N``, ``X`` or ``X,Y,…`` (InputError naming ``option``)."""
+    import numpy as np
+
     try:
         if ":" in text:
             parts = text.split(":")
@@ -167,6 +171,7 @@ def _plots(ds, args) -> None:
 
 
 def _ranges_table(ds) -> str:
+    import numpy as np
     from tabulate import tabulate
 
     names = [n for n in ("lte_mean", "lte_peak_to_peak", "pressure_max_flank",
@@ -218,6 +223,7 @@ def sweep_command(args: argparse.Namespace) -> int:
 
 
 def tolerance_command(args: argparse.Namespace) -> int:
+    import numpy as np
     from tabulate import tabulate
 
     from contact.study import parse_distribution, sample, sensitivity

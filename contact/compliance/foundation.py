@@ -78,6 +78,7 @@ __all__ = [
     "SAINSOT_COEFFICIENTS",
     "ToothFoundation",
     "foundation_compliance",
+    "foundation_matrices",
     "foundation_matrix",
     "load_angle_from_normals",
     "load_line_height",
@@ -280,6 +281,55 @@ def foundation_matrix(
         )
     eb = foundation.youngs_modulus * foundation.face_width
     return (v @ g @ v.T) / eb
+
+
+def foundation_matrices(
+    foundation: ToothFoundation,
+    load_height: np.ndarray,
+    load_angle: np.ndarray,
+    blocks: list[np.ndarray],
+) -> list[np.ndarray]:
+    """:func:`foundation_matrix` of several teeth's loads at once, one matrix per block.
+
+    Parameters
+    ----------
+    foundation : ToothFoundation
+    load_height : ndarray (N,) — [mm] u_f of every load (all teeth, all roll positions)
+    load_angle : ndarray (N,) — [rad] α_m of every load
+    blocks : list of int ndarray
+        The loads on one tooth at one roll position each (indices into the N loads).
+
+    Returns
+    -------
+    list of ndarray (n_b, n_b) — [mm/N]
+        C_b = v_iᵀ G v_j / (E b) over each block's loads: each equal to
+        :func:`foundation_matrix` of the block's loads (the load vectors v_i, which depend
+        on their own load only, computed once for all).
+
+    Raises
+    ------
+    InputError
+        As :func:`foundation_compliance`.
+
+    Notes
+    -----
+    Sainsot, Velex & Duverger (2004), as :func:`foundation_matrix`; the batched form serves
+    the LTCA's compliance of all roll positions, assembled in one call
+    (:func:`contact.compliance.mesh.mesh_compliance_many`).
+    """
+    v, g = _load_vectors(foundation, load_height, load_angle)
+    if g[0, 0] * g[1, 1] < g[0, 1] ** 2 or g[2, 2] < 0.0:
+        log.warning(
+            "Sainsot coefficients give an indefinite base coupling (h_f=%.3g, theta_f=%.3g)",
+            foundation.radius_ratio,
+            foundation.root_half_angle,
+        )
+    eb = foundation.youngs_modulus * foundation.face_width
+    out = []
+    for idx in blocks:
+        vb = v[idx]
+        out.append((vb @ g @ vb.T) / eb)
+    return out
 
 
 def load_line_height(

@@ -27,7 +27,6 @@ mesh_compliance       C and its parts
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import logging
 import time
@@ -43,7 +42,7 @@ from contact.compliance.tooth import (
     N_HEIGHT,
     ShellPoints,
     ToothModelData,
-    member_foundation,
+    member_foundations,
     shell_matrices,
     shell_points_many,
     shell_tooth_from_case,
@@ -54,7 +53,7 @@ from geometry.case import case_from_dict
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
-from geometry.pair.assembly import Misalignment, case_transforms
+from geometry.pair.assembly import case_transforms
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -261,8 +260,7 @@ def pair_compliance_model(
     # the teeth live in their members' frames: the misalignment and the surface
     # deviations of the case change the assembly, not the shells, so they are left out of
     # the memo's key (a misalignment sweep builds the shells once per process)
-    teeth_case = dataclasses.replace(case, misalignment=Misalignment(), deviations=None)
-    return _memo_pair(teeth_case.to_toml(), str(theory), n_height, n_face, tuple(materials),
+    return _memo_pair(case.teeth_toml(), str(theory), n_height, n_face, tuple(materials),
                       bores)
 
 
@@ -439,9 +437,9 @@ def mesh_compliance_many(
                for pair in np.unique(seg.pair_index)} for seg in segments]
     offsets = np.concatenate([[0], np.cumsum([seg.size for seg in segments])])
     flat_blocks = [offsets[r] + idx for r, b in enumerate(blocks) for idx in b.values()]
-    shell = {}
+    shell, found, mids = {}, {}, {}
     for i, name in enumerate(names):
-        mids = _concat([pt[name] for pt in points])
+        mids[name] = _concat([pt[name] for pt in points])
         # the first ends of all rolls, then their second ends (shell_matrices' order);
         # end_index lists each roll's first N then second N ends among its distinct ends
         distinct = [mapped[2 * r + i][1] for r in range(len(segments))]
@@ -450,12 +448,27 @@ def mesh_compliance_many(
                                                           strict=True)]
             + [_take(d, idx[sg.size:]) for d, idx, sg in zip(distinct, end_indices, segments,
                                                             strict=True)])
-        shell[name] = iter(shell_matrices(model.member(name), mids, both, model.theory,
+        shell[name] = iter(shell_matrices(model.member(name), mids[name], both, model.theory,
                                            model.n_height, model.n_face, flat_blocks))
+        # the fillet foundation of every tooth of every roll position in one batch
+        found[name] = iter(member_foundations(model.member(name), mids[name], flat_blocks))
+    # Weber's depths and compliance of every segment of every roll position at once (each
+    # segment's own; the batch changes nothing but the number of calls)
+    depth = np.column_stack([weber_depth(model.pinion, mids["pinion"]),
+                             weber_depth(model.gear, mids["gear"])])
+    tp, tg = model.pinion.tooth, model.gear.tooth
+    c_w = weber_compliance(np.concatenate([seg.load for seg in segments]),
+                           np.concatenate([seg.length for seg in segments]),
+                           depth[:, 0], depth[:, 1], e1=tp.youngs_modulus,
+                           nu1=tp.poisson_ratio, e2=tg.youngs_modulus, nu2=tg.poisson_ratio,
+                           r_eq=np.concatenate([seg.r_eq for seg in segments]),
+                           kind=weber_kind, load_floor=load_floor)
     out = []
     for r, seg in enumerate(segments):
-        mats = {name: [next(shell[name]) for _ in blocks[r]] for name in names}
-        out.append(_assemble(seg, model, points[r], blocks[r], mats, weber_kind, load_floor))
+        mats = {name: [(next(shell[name]), next(found[name])) for _ in blocks[r]]
+                for name in names}
+        rows = slice(offsets[r], offsets[r + 1])
+        out.append(_assemble(seg, model, points[r], blocks[r], mats, depth[rows], c_w[rows]))
     share = (time.perf_counter() - t0) / max(len(segments), 1)
     for _, info in out:
         info["time"] = share
@@ -472,27 +485,20 @@ def _concat(parts: list[ShellPoints]) -> ShellPoints:
 
 
 def _assemble(seg: ContactSegments, model: PairComplianceModel, points: dict, blocks: dict,
-              mats: dict, weber_kind: str, load_floor: float) -> tuple[np.ndarray, dict]:
-    """The compliance matrices of one roll position from its mapped shell points and its
-    tooth pairs' shell matrices (``mats[member]``, one per block of ``blocks``)."""
+              mats: dict, depth: np.ndarray, c_w: np.ndarray) -> tuple[np.ndarray, dict]:
+    """The compliance matrices of one roll position from its mapped shell points, its
+    tooth pairs' shell and foundation matrices (``mats[member]``: (shell, foundation), one
+    per block of ``blocks``), Weber's depths (N, 2) [mm] and compliances (N,) [mm/N]."""
     n = seg.size
     parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",
                                            "gear_foundation")}
     asym = 0.0
     for name in ("pinion", "gear"):
-        data = model.member(name)
-        for idx, cm in zip(blocks.values(), mats[name], strict=True):
+        for idx, (cm, fm) in zip(blocks.values(), mats[name], strict=True):
             ix = np.ix_(idx, idx)
             parts[f"{name}_shell"][ix] = cm.matrix
-            parts[f"{name}_foundation"][ix] = member_foundation(data, _take(points[name], idx))
+            parts[f"{name}_foundation"][ix] = fm
             asym = max(asym, cm.asymmetry)
-    depth = np.column_stack([weber_depth(model.pinion, points["pinion"]),
-                             weber_depth(model.gear, points["gear"])])
-    tp, tg = model.pinion.tooth, model.gear.tooth
-    c_w = weber_compliance(seg.load, seg.length, depth[:, 0], depth[:, 1],
-                           e1=tp.youngs_modulus, nu1=tp.poisson_ratio,
-                           e2=tg.youngs_modulus, nu2=tg.poisson_ratio, r_eq=seg.r_eq,
-                           kind=weber_kind, load_floor=load_floor)
     parts["weber"] = np.diag(c_w)
     total = sum(parts.values())
     total = 0.5 * (total + total.T)

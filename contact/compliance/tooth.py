@@ -75,6 +75,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from contact.compliance.foundation import (
+    foundation_matrices,
     foundation_matrix,
     load_angle_from_normals,
     load_line_height,
@@ -119,6 +120,7 @@ __all__ = [
     "flank_points",
     "member_compliance",
     "member_foundation",
+    "member_foundations",
     "shell_coordinates",
     "shell_tooth_from_case",
     "weber_depth",
@@ -549,6 +551,38 @@ def member_foundation(data: ToothModelData, shell_points: ShellPoints) -> np.nda
     t = data.tooth.thickness(shell_points.x, shell_points.theta)
     u_f = load_line_height(shell_points.x, t, alpha)
     return foundation_matrix(data.foundation, u_f, alpha)
+
+
+def member_foundations(data: ToothModelData, shell_points: ShellPoints,
+                       blocks: list[np.ndarray]) -> list[np.ndarray]:
+    """:func:`member_foundation` of several teeth's loads at once [mm/N].
+
+    Parameters
+    ----------
+    data : ToothModelData
+    shell_points : ShellPoints — with normals, the loads of all blocks
+    blocks : list of int ndarray — the loads on one tooth (at one roll position) each
+
+    Returns
+    -------
+    list of ndarray (n_b, n_b) — [mm/N] each block's :func:`member_foundation`
+
+    Raises
+    ------
+    InputError
+        As :func:`member_foundation`.
+
+    Notes
+    -----
+    Sainsot, Velex & Duverger (2004); the load heights, thickness and load angles are
+    computed once for all loads (:func:`contact.compliance.foundation.foundation_matrices`).
+    """
+    if shell_points.normal is None:
+        raise InputError("shell_points: must carry the flank normals (give normals), got none")
+    alpha = load_angle_from_normals(shell_points.normal)
+    t = data.tooth.thickness(shell_points.x, shell_points.theta)
+    u_f = load_line_height(shell_points.x, t, alpha)
+    return foundation_matrices(data.foundation, u_f, alpha, blocks)
 
 
 def shell_matrices(

@@ -39,6 +39,7 @@ hertz_half_width           b [mm] of a line contact
 weber_deformation          δ_i [mm] of one body
 weber_pair_deformation     δ₁ + δ₂ [mm]
 weber_compliance           diagonal contact compliance [mm/N] of loaded segments
+WeberSegments              segments validated once, their compliance at several loads
 WEBER_COMPLIANCE_KINDS     registry: "secant", "tangent"
 
 References
@@ -55,6 +56,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -64,6 +66,7 @@ from geometry.core.validation import positive, real, real_array
 
 __all__ = [
     "WEBER_COMPLIANCE_KINDS",
+    "WeberSegments",
     "contact_modulus",
     "hertz_half_width",
     "weber_compliance",
@@ -273,12 +276,12 @@ def weber_compliance(
     with s = d ln b / d ln w′ (½ for Hertz; by central difference for
     ``half_width_fn``). Usage in the LTCA: see the module docstring.
     """
-    kinds = (kind,) if isinstance(kind, str) else tuple(kind)
-    for k in kinds:
-        if k not in WEBER_COMPLIANCE_KINDS:
-            raise ModelUnavailableError(
-                f"kind {k!r} is not available; choose one of {sorted(WEBER_COMPLIANCE_KINDS)}"
-            )
+    kinds = _kinds(kind)
+    if r_eq is not None and half_width_fn is None:
+        # the segments' data validated once: the LTCA's Weber iteration keeps them
+        # (WeberSegments) and evaluates them at each iteration's loads
+        return WeberSegments.of(length, depth_1, depth_2, e1=e1, nu1=nu1, e2=e2, nu2=nu2,
+                                r_eq=r_eq).compliance(load, kind, load_floor)
     f = real_array("load", load, unit="N", low=0.0)
     length_a = real_array("length", length, unit="mm", low=0.0, low_open=True)
     floor = positive("load_floor", load_floor, "N/mm")
@@ -311,3 +314,99 @@ def weber_compliance(
     out = tuple(np.broadcast_to(WEBER_COMPLIANCE_KINDS[k](kb, (k1 + k2) * slope) / length_a,
                                 shape).copy() for k in kinds)
     return out[0] if isinstance(kind, str) else out
+
+
+def _kinds(kind: str | Sequence[str]) -> tuple[str, ...]:
+    """The kinds of :func:`weber_compliance` as a tuple (ModelUnavailableError for an
+    unknown one, listing the available ones)."""
+    kinds = (kind,) if isinstance(kind, str) else tuple(kind)
+    for k in kinds:
+        if k not in WEBER_COMPLIANCE_KINDS:
+            raise ModelUnavailableError(
+                f"kind {k!r} is not available; choose one of {sorted(WEBER_COMPLIANCE_KINDS)}"
+            )
+    return kinds
+
+
+@dataclass(frozen=True, eq=False)
+class WeberSegments:
+    """Contact segments whose Weber compliance is evaluated at several loads.
+
+    What does not change with the load — lengths, depths, equivalent radii, materials —
+    is validated once (:meth:`of`); :meth:`compliance` then evaluates
+    :func:`weber_compliance` at given loads (the same arithmetic, value for value). The
+    LTCA's Weber iteration (:func:`contact.ltca.weber.weber_solve`) evaluates one roll's
+    segments at each iteration's loads.
+
+    Attributes
+    ----------
+    length : ndarray (N,) — [mm] segment lengths L > 0
+    depth_1, depth_2 : ndarray (N,) — [mm] contact-to-centreline distances h_i > 0
+    r_eq : ndarray (N,) — [mm] equivalent radii > 0 (Hertz half-width)
+    e_star : float — [MPa] contact modulus E*
+    nu1, nu2 : float — [1]
+    k1, k2 : float — [mm²/N] 2 (1 − ν_i²)/(π E_i)
+    """
+
+    length: np.ndarray
+    depth_1: np.ndarray
+    depth_2: np.ndarray
+    r_eq: np.ndarray
+    e_star: float
+    nu1: float
+    nu2: float
+    k1: float
+    k2: float
+
+    @classmethod
+    def of(cls, length, depth_1, depth_2, *, e1: float, nu1: float, e2: float, nu2: float,
+           r_eq) -> WeberSegments:
+        """Validate the segments' data (parameters as :func:`weber_compliance`).
+
+        Raises
+        ------
+        InputError
+            Non-positive or non-finite lengths, depths or radii; bad material constants.
+        """
+        length_a = real_array("length", length, unit="mm", low=0.0, low_open=True)
+        e1f, nu1f = _modulus("e1", e1), _poisson("nu1", nu1)
+        e2f, nu2f = _modulus("e2", e2), _poisson("nu2", nu2)
+        h1 = real_array("depth_1", depth_1, unit="mm", low=0.0, low_open=True)
+        h2 = real_array("depth_2", depth_2, unit="mm", low=0.0, low_open=True)
+        r = real_array("r_eq", r_eq, unit="mm", low=0.0, low_open=True)
+        e_star = float(contact_modulus(e1f, nu1f, e2f, nu2f))
+        return cls(length_a, h1, h2, r, e_star, nu1f, nu2f,
+                   2.0 * (1.0 - nu1f**2) / (math.pi * e1f),
+                   2.0 * (1.0 - nu2f**2) / (math.pi * e2f))
+
+    def compliance(self, load, kind: str | Sequence[str] = "secant",
+                   load_floor: float = 1.0) -> np.ndarray | tuple[np.ndarray, ...]:
+        """:func:`weber_compliance` of the segments at the loads ``load`` (N,) [N].
+
+        Returns
+        -------
+        ndarray (N,) or tuple of them — [mm/N]
+            As :func:`weber_compliance` (seed p. 78; Weber 1949; Johnson Eq. 4.43).
+
+        Raises
+        ------
+        InputError
+            Negative or non-finite loads, a non-positive floor, a depth too small for
+            Weber's formula.
+        ModelUnavailableError
+            Unknown ``kind``.
+        """
+        kinds = _kinds(kind)
+        f = real_array("load", load, unit="N", low=0.0)
+        floor = positive("load_floor", load_floor, "N/mm")
+        w = np.maximum(f / self.length, floor)
+        # Hertz half-width, Johnson Eq. 4.43 (geometry.core.hertz.hertz_line_contact)
+        b = np.sqrt(4.0 * w * self.r_eq / (math.pi * self.e_star))
+        slope = np.full_like(b, 0.5)
+        kb = (self.k1 * _weber_bracket(self.depth_1, b, self.nu1, "depth_1")
+              + self.k2 * _weber_bracket(self.depth_2, b, self.nu2, "depth_2"))
+        shape = np.broadcast_shapes(w.shape, b.shape)
+        out = tuple(np.broadcast_to(
+            WEBER_COMPLIANCE_KINDS[k](kb, (self.k1 + self.k2) * slope) / self.length,
+            shape).copy() for k in kinds)
+        return out[0] if isinstance(kind, str) else out

@@ -37,7 +37,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.compliance.weber import weber_compliance
+from contact.compliance.weber import WeberSegments
 from contact.ltca.options import LTCAOptions
 from contact.qp import ContactProblem, ContactSolution, solve_contact
 
@@ -144,6 +144,10 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     cap = np.pi * modulus * np.min(depth, axis=1) ** 2 / (4 * r_eq) * length  # [N]
     load = np.minimum(np.full(length.size, first_load), cap)
     start = None if prior is None else np.nan_to_num(prior)
+    # the segments' lengths, depths and radii are the same at every iteration: validated
+    # once, evaluated at each iteration's loads
+    segments = WeberSegments.of(length, depth[:, 0], depth[:, 1], e1=e, nu1=nu, e2=e, nu2=nu,
+                                r_eq=r_eq)
     lte_prev = step_prev = None
     sol = problem = None
     n_it = time_used = 0
@@ -152,8 +156,7 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
         # tangent compliance at the loads F₀, i.e. compliance c_t and separation
         # s + (c_s − c_t) F₀; the secant alone where c_t is not well positive (b near the
         # depth h) or the load is at the cap (frozen there)
-        cs, ct = weber_compliance(load, length, depth[:, 0], depth[:, 1], e1=e, nu1=nu,
-                                  e2=e, nu2=nu, r_eq=r_eq, kind=("secant", "tangent"))
+        cs, ct = segments.compliance(load, kind=("secant", "tangent"))
         newton = (ct > 0.5 * cs) & (load < cap)
         cw = np.where(newton, ct, cs)
         problem = ContactProblem(sel.structural + np.diag(cw),

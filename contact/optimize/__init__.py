@@ -10,36 +10,28 @@ variables   the design variables (pinion settings, profile relief, synthesis inp
             they change a case
 objective   the problem (torques, misalignments, limits, weights), objective and constraints
 run         the optimiser (scipy differential evolution or Powell), log and provenance
+methods     the optimisers by name
 """
 
-from contact.optimize.objective import (
-    FAILED_OBJECTIVE,
-    TERM_NAMES,
-    Evaluation,
-    OptimizeProblem,
-    constraint_names,
-    evaluate_design,
-    problem_from_table,
-)
-from contact.optimize.run import (
-    METHODS,
-    OptimizeResult,
-    SharedDesign,
-    optimize,
-    optimized_case,
-)
-from contact.optimize.variables import (
-    RELIEF_VARIABLES,
-    SYNTHESIS_VARIABLES,
-    DesignVariable,
-    case_at,
-    check_variables,
-    start_values,
-    variable_unit,
-)
+from geometry.core.lazy import lazy_exports
 
 __all__ = ["FAILED_OBJECTIVE", "METHODS", "RELIEF_VARIABLES", "SYNTHESIS_VARIABLES",
            "TERM_NAMES", "DesignVariable",
            "Evaluation", "OptimizeProblem", "OptimizeResult", "SharedDesign", "case_at",
            "check_variables", "constraint_names", "evaluate_design", "optimize",
            "optimized_case", "problem_from_table", "start_values", "variable_unit"]
+
+#: the public names and their modules, imported when first used (PEP 562): the command
+#: line's help needs only :mod:`contact.optimize.methods`, not the optimisation
+_LAZY = {
+    **dict.fromkeys(("FAILED_OBJECTIVE", "TERM_NAMES", "Evaluation", "OptimizeProblem",
+                     "constraint_names", "evaluate_design", "problem_from_table"),
+                    "contact.optimize.objective"),
+    **dict.fromkeys(("OptimizeResult", "SharedDesign", "optimize", "optimized_case"),
+                    "contact.optimize.run"),
+    "METHODS": "contact.optimize.methods",
+    **dict.fromkeys(("RELIEF_VARIABLES", "SYNTHESIS_VARIABLES", "DesignVariable", "case_at",
+                     "check_variables", "start_values", "variable_unit"),
+                    "contact.optimize.variables"),
+}
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())

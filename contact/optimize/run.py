@@ -34,6 +34,7 @@ import numpy as np
 import xarray as xr
 from scipy.optimize import differential_evolution, minimize
 
+from contact.optimize.methods import METHODS
 from contact.optimize.objective import (
     METRICS,
     TERM_NAMES,
@@ -61,12 +62,6 @@ __all__ = ["METHODS", "OptimizeResult", "SharedDesign", "optimize", "optimized_c
 
 log = logging.getLogger(__name__)
 
-#: optimisers: name → what it is
-METHODS: Mapping[str, str] = MappingProxyType({
-    "differential_evolution": "scipy.optimize.differential_evolution (best1bin, deferred "
-                              "updating, a generation analysed in parallel)",
-    "powell": "scipy.optimize.minimize(method='Powell') with bounds (sequential)",
-})
 
 
 @dataclass(frozen=True, eq=False)

@@ -15,7 +15,12 @@ workers and returns one dataset over a ``point`` dimension.
   (``Client.scatter(broadcast=True)``), and the tooth models — the shells' Ritz systems,
   factorised, which do not depend on the misalignment or the deviations — are memoised
   per worker process (:func:`contact.compliance.pair_compliance_model`), so they are
-  built once per worker, not once per point.
+  built once per worker, not once per point; so are the pinion points of the ease-off's
+  forward map and the gear flank on its grid (:mod:`contact.utca.conjugate_map`), under
+  the same key.
+* **Workers' environment**: a LocalCluster's workers start without distributed's
+  ``MALLOC_TRIM_THRESHOLD_`` (:func:`worker_environment`; ``docs/study.md`` for a cluster
+  of one's own).
 * **One failing point never stops a study**: its ``status`` is ``failed`` and
   ``reason`` says why (e.g. the flanks separate); its summaries are NaN.
 * **Streaming and resume**: with an output file the finished points go to disk in
@@ -28,6 +33,7 @@ Public functions
 analyse_point   one point's summaries (runs on a worker)
 run_points      all points of a study, on Dask
 open_client     a Dask client for a scheduler argument (context manager)
+worker_environment  a LocalCluster's workers started without distributed's malloc trim
 run_tasks       any function over items on Dask, results as they finish
 write_study     write a study's result file and remove its parts
 """
@@ -58,8 +64,8 @@ from geometry import __version__
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 
-__all__ = ["SYNCHRONOUS", "analyse_point", "open_client", "run_points", "run_tasks",
-           "write_study"]
+__all__ = ["SYNCHRONOUS", "WORKER_ENVIRON_UNSET", "analyse_point", "open_client", "run_points",
+           "run_tasks", "worker_environment", "write_study"]
 
 log = logging.getLogger(__name__)
 
@@ -149,6 +155,38 @@ def _point_dataset(shared: StudyInputs, names: Sequence[str], index: int,
     return xr.Dataset(data, coords=coords)
 
 
+#: the environment variables of distributed's ``distributed.nanny.pre-spawn-environ`` that a
+#: study's workers are started without (None unsets a variable of that configuration):
+#: ``MALLOC_TRIM_THRESHOLD_`` (distributed's default 65536 bytes) makes glibc return freed
+#: memory to the system at every chance and fixes its mmap threshold, so every large array
+#: of an analysis is mapped afresh: measured 92–151 thousand page faults and 0.18–0.28 s of
+#: system time per study point; unset, a worker's CPU time per point fell by 0.25 s with
+#: memory still flat in the number of points (``benchmarks/sweep.py``, issue 32)
+WORKER_ENVIRON_UNSET = ("MALLOC_TRIM_THRESHOLD_",)
+
+
+@contextlib.contextmanager
+def worker_environment() -> Iterator[None]:
+    """Start a LocalCluster's workers without :data:`WORKER_ENVIRON_UNSET` (context manager).
+
+    Sets distributed's ``distributed.nanny.pre-spawn-environ`` entries of those variables to
+    None (unset) while the cluster starts; the variables the user set in this process's
+    environment are kept (distributed's precedence). A cluster of one's own gets the same
+    with ``dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_":
+    None})`` before it starts, or with ``dask worker`` started from a shell without the
+    variable and a ``distributed.yaml`` setting it to null (``docs/study.md``).
+
+    Yields
+    ------
+    None
+    """
+    import dask
+
+    with dask.config.set({f"distributed.nanny.pre-spawn-environ.{name}": None
+                          for name in WORKER_ENVIRON_UNSET}):
+        yield
+
+
 @contextlib.contextmanager
 def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator[Any]:
     """A ``distributed.Client`` for a study's ``scheduler`` argument.
@@ -157,9 +195,10 @@ def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator
     ----------
     scheduler : None, str or distributed.Client
         None: a new ``LocalCluster`` (closed on exit) of ``n_workers`` single-threaded
-        worker processes; an address (``"tcp://host:8786"``): a client of that running
-        cluster; a Client: used as it is (not closed); ``"synchronous"``: no client
-        (yields None).
+        worker processes, started without distributed's malloc trim
+        (:func:`worker_environment`); an address (``"tcp://host:8786"``): a client of
+        that running cluster; a Client: used as it is (not closed); ``"synchronous"``: no
+        client (yields None).
     n_workers : int, optional
         Workers of the local cluster; default one per core (``os.cpu_count()``).
 
@@ -185,8 +224,9 @@ def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator
         n = (os.cpu_count() or 1) if n_workers is None else n_workers
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
             raise InputError(f"n_workers: must be an integer >= 1, got {n_workers!r}")
-        with LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                          dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
+        with worker_environment(), \
+                LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                             dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
                 Client(cluster) as client:
             yield client
         return

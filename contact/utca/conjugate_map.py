@@ -15,11 +15,16 @@ Public names
 ------------
 fill_missing       fill the NaN nodes of a grid from the computed ones (linear continuation)
 map_gear_nodes     every gear node's conjugate pinion point (used by :func:`ease_off`)
+gear_nodes         the real gear flank on the ease-off's grid (memoised per process)
+memo_info, clear_memos
+                   the per-process memos of the forward map's pinion points and the gear
 """
 
 from __future__ import annotations
 
+import functools
 import logging
+import tomllib
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -31,17 +36,21 @@ from contact.utca.action_surface import (
     action_roll_angle,
     conjugate_points,
 )
+from geometry.case import case_from_dict
 from geometry.core.errors import InputError
 from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import working_sections
-from geometry.machine.flank import blank_outline
+from geometry.machine.flank import FlankSurface, blank_outline, flank_surface
 from geometry.machine.meshing import solve_envelope
 
 if TYPE_CHECKING:
     from geometry.case import Case
 
 __all__ = [
+    "clear_memos",
     "fill_missing",
+    "gear_nodes",
+    "memo_info",
 ]
 
 log = logging.getLogger(__name__)
@@ -78,6 +87,11 @@ _FORWARD_GRID = (41, 21)  # pinion grid of the forward-map spline (start values 
 
 
 _MIRROR = np.array([1.0, -1.0, 1.0])
+
+
+#: cases (flanks) whose forward-map pinion points a process keeps (as the tooth models'
+#: memo, :mod:`contact.compliance.mesh`)
+_MEMO_SIZE = 4
 
 
 def _bilinear(corners: np.ndarray, u, v):
@@ -129,13 +143,16 @@ def _pinion_points(case: Case, flank: str, z, rho, guess=None):
 
 
 def _mates(case: Case, flank: str, kin: MeshKinematics, corners, u, v, *, branch=None,
-           reference=None, guess=None) -> tuple[Mates, int]:
+           reference=None, guess=None, points=None) -> tuple[Mates, int]:
     """Evaluate the real pinion at fractions (u, v) and map it through the action surface.
 
-    ``guess``: (params, section) of nearby pinion points, see :func:`_pinion_points`.
+    ``guess``: (params, section) of nearby pinion points, see :func:`_pinion_points`;
+    ``points``: those pinion points already computed (:func:`_pinion_points` at (u, v)).
     """
     z, rho = _bilinear(corners, u, v)
-    pos, nrm, reason, k1, k2, e1, sec, par = _pinion_points(case, flank, z, rho, guess)
+    if points is None:
+        points = _pinion_points(case, flank, z, rho, guess)
+    pos, nrm, reason, k1, k2, e1, sec, par = points
     roll, branch = action_roll_angle(kin, pos, nrm, branch=branch, reference=reference)
     good = (reason == 0) & np.isfinite(roll)
     conj, _ = conjugate_points(kin, pos, nrm, np.where(good, roll, 0.0))
@@ -225,6 +242,87 @@ def _placement_error(target: np.ndarray, mates: Mates) -> np.ndarray:
     return np.where(np.asarray(mates.good), np.abs(target - mates.image).max(axis=-1), np.inf)
 
 
+def _forward_grid(case: Case):
+    """The extended pinion grid of the forward map: its fractions (41,), (21,), the blank
+    corners (2, 2, 2) [mm] and the grid's places (41, 21) in fractions and [mm]."""
+    cp = blank_outline(case.pinion.blank).corners
+    up = np.linspace(*_PINION_U, _FORWARD_GRID[0])
+    vp = np.linspace(*_PINION_V, _FORWARD_GRID[1])
+    uu, vv = np.meshgrid(up, vp, indexing="ij")
+    z, rho = _bilinear(cp, uu, vv)
+    return up, vp, cp, uu, vv, z, rho
+
+
+@functools.lru_cache(maxsize=_MEMO_SIZE)
+def _memo_forward_points(teeth_toml: str, flank: str) -> tuple[np.ndarray, ...]:
+    """The real pinion on the forward map's grid (:func:`_pinion_points`) of the case whose
+    :meth:`~geometry.case.Case.teeth_toml` is ``teeth_toml`` (read-only arrays)."""
+    case = case_from_dict(tomllib.loads(teeth_toml))
+    *_, z, rho = _forward_grid(case)
+    out = _pinion_points(case, flank, z, rho)
+    for a in out:
+        a.flags.writeable = False
+    return out
+
+
+@functools.lru_cache(maxsize=_MEMO_SIZE)
+def _memo_gear_nodes(teeth_toml: str, flank: str, grid: tuple) -> FlankSurface:
+    """The real gear flank on the ease-off's grid (``grid``: its options as sorted (key,
+    value) pairs) of the case whose :meth:`~geometry.case.Case.teeth_toml` is
+    ``teeth_toml`` (read-only arrays)."""
+    case = case_from_dict(tomllib.loads(teeth_toml))
+    gs = flank_surface(case, "gear", flank, **dict(grid))
+    for a in (*gs, *gs.grid):
+        if isinstance(a, np.ndarray):
+            a.flags.writeable = False
+    return gs
+
+
+def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
+    """The real gear flank on the ease-off's grid, memoised per process.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str
+        The gear flank (``"concave"`` or ``"convex"``).
+    grid : dict
+        ``nu``, ``nv``, ``u_limits``, ``v_limits`` of
+        :func:`geometry.machine.flank.flank_surface`.
+
+    Returns
+    -------
+    geometry.machine.flank.FlankSurface
+        :func:`geometry.machine.flank.flank_surface` of the gear (arrays read-only): the
+        gear does not depend on the misalignment, so a misalignment study solves its 861
+        nodes once per process (keyed as the tooth models are, by
+        :meth:`~geometry.case.Case.teeth_toml`).
+
+    Raises
+    ------
+    InputError
+        As :func:`geometry.machine.flank.flank_surface`.
+    """
+    key = tuple(sorted((k, tuple(v) if isinstance(v, list | tuple) else v)
+                       for k, v in grid.items()))
+    return _memo_gear_nodes(case.teeth_toml(), flank, key)
+
+
+def memo_info() -> dict[str, tuple]:
+    """Hits, misses, size and capacity (``functools`` cache info) of this process's memos
+    of what an ease-off needs of the teeth alone: ``"forward_points"`` (the pinion points of
+    the forward map) and ``"gear_nodes"`` (the real gear flank on the grid); a
+    misalignment sweep solves each once per process."""
+    return {"forward_points": _memo_forward_points.cache_info(),
+            "gear_nodes": _memo_gear_nodes.cache_info()}
+
+
+def clear_memos() -> None:
+    """Forget the memoised forward-map points and gear nodes (frees memory)."""
+    _memo_forward_points.cache_clear()
+    _memo_gear_nodes.cache_clear()
+
+
 def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:
     """The forward map on the extended pinion grid and its spline.
 
@@ -232,12 +330,15 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
     relief lines, :func:`_working_sections`) and continued linearly beyond them
     (:func:`fill_missing`): the kink at the fillet would make a cubic spline ring over the
     whole flank.
+
+    The pinion points on the grid (861 solutions of the equation of meshing) do not depend
+    on the misalignment, only their images do: they are memoised per process
+    (:func:`_memo_forward_points`, keyed as the tooth models are, by the case without its
+    misalignment and deviations), so the points of a misalignment study are solved once.
     """
-    cp = blank_outline(case.pinion.blank).corners
-    up = np.linspace(*_PINION_U, _FORWARD_GRID[0])
-    vp = np.linspace(*_PINION_V, _FORWARD_GRID[1])
-    uu, vv = np.meshgrid(up, vp, indexing="ij")
-    fwd, branch = _mates(case, pf, kin, cp, uu, vv, reference=ref)
+    up, vp, cp, uu, vv, _, _ = _forward_grid(case)
+    fwd, branch = _mates(case, pf, kin, cp, uu, vv, reference=ref,
+                         points=_memo_forward_points(case.teeth_toml(), pf))
     ok = fwd.good
     if ok.sum() < 16:
         raise InputError(

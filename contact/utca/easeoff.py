@@ -107,6 +107,7 @@ from contact.utca.conjugate_map import (
     GearMates,
     Mates,
     fill_missing,
+    gear_nodes,
     gear_reference,
     map_gear_nodes,
 )
@@ -458,7 +459,7 @@ def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
     pf, gf = _flank_names(case, flank)
     g = _grid_options(grid)
     kin = mesh_kinematics(case, misalignment, pinion_phase=pinion_phase, gear_phase=gear_phase)
-    gs = flank_surface(case, "gear", gf, **g)
+    gs = gear_nodes(case, gf, g)  # the gear alone: memoised per process
     zt, rt = gs.grid.axial, gs.grid.radius
     gm = map_gear_nodes(case, pf, kin, gear_reference(case, kin), zt, rt)
     mt = gm.mates

@@ -16,14 +16,7 @@ setting_variables  the machine settings as named variables (correction, optimisa
 The package exports what the module ``geometry.synthesis`` did.
 """
 
-from geometry.machine.flank_point import FlankPoint
-from geometry.pair.design_point import design_point, design_point_of_case, mean_addendum
-from geometry.synthesis.case_synthesis import FlankSynthesis, SynthesisReport, synthesize
-from geometry.synthesis.face_hobbing import face_hobbing_pinion_tools
-from geometry.synthesis.gear import GearTools, case_blank, gear_formate_tools
-from geometry.synthesis.local import LocalSynthesis, local_synthesis
-from geometry.synthesis.mean_point import MeanPoint, mean_point
-from geometry.synthesis.pinion import PinionTools, pinion_generate_tools, shift_roll_origin
+from geometry.core.lazy import lazy_exports
 
 __all__ = [
     "FlankPoint",
@@ -45,3 +38,28 @@ __all__ = [
     "shift_roll_origin",
     "synthesize",
 ]
+
+#: the public names and their modules, imported when first used (PEP 562): importing one
+#: module of the package (e.g. ``setting_variables`` for ``ltca correct --help``) does not
+#: import the whole synthesis
+_LAZY = {
+    "FlankPoint": "geometry.machine.flank_point",
+    "design_point": "geometry.pair.design_point",
+    "design_point_of_case": "geometry.pair.design_point",
+    "mean_addendum": "geometry.pair.design_point",
+    "FlankSynthesis": "geometry.synthesis.case_synthesis",
+    "SynthesisReport": "geometry.synthesis.case_synthesis",
+    "synthesize": "geometry.synthesis.case_synthesis",
+    "face_hobbing_pinion_tools": "geometry.synthesis.face_hobbing",
+    "GearTools": "geometry.synthesis.gear",
+    "case_blank": "geometry.synthesis.gear",
+    "gear_formate_tools": "geometry.synthesis.gear",
+    "LocalSynthesis": "geometry.synthesis.local",
+    "local_synthesis": "geometry.synthesis.local",
+    "MeanPoint": "geometry.synthesis.mean_point",
+    "mean_point": "geometry.synthesis.mean_point",
+    "PinionTools": "geometry.synthesis.pinion",
+    "pinion_generate_tools": "geometry.synthesis.pinion",
+    "shift_roll_origin": "geometry.synthesis.pinion",
+}
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())

@@ -79,6 +79,7 @@ from geometry.core.errors import InputError
 from geometry.core.validation import positive, real_array
 from geometry.machine.flank import FlankSurface, blank_outline, flank_at
 from geometry.synthesis.setting_variables import (
+    COND_MAX,
     DEFAULT_VARIABLES,
     SETTING_VARIABLES,
     SettingVariable,
@@ -112,13 +113,6 @@ log = logging.getLogger(__name__)
 
 if TYPE_CHECKING:
     from geometry.case import Blank, Case, FlankTool
-
-
-#: largest condition number of the unit-column Jacobian of the settings kept free: with
-#: 1 µm measurement noise a combination of settings at σ₁/σ = 100 is uncertain by about
-#: 100 µm of flank motion (column norm), i.e. about 15 µm RMS on a 45-point grid — beyond
-#: that the measurement cannot tell the settings apart
-COND_MAX = 100.0
 
 
 #: [mm] a setting whose trial step moves no grid point by more than this has no effect

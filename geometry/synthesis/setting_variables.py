@@ -7,7 +7,8 @@ radius … Each :class:`SettingVariable` says where the value lives (machine set
 blade), its unit in files and reports, the step of its finite-difference sensitivity and
 the processes it applies to (:data:`SETTING_VARIABLES`; :data:`DEFAULT_VARIABLES` per
 process); :func:`setting_value`, :func:`tool_with_values` and :func:`case_with_values` read
-and set them.
+and set them. :data:`COND_MAX` is the subset selection's limit of the correction (here,
+with the names, so that ``ltca correct --help`` need not import the correction).
 """
 
 from __future__ import annotations
@@ -19,12 +20,12 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from geometry.core.errors import InputError
-from geometry.core.validation import one_of
 
 if TYPE_CHECKING:
     from geometry.case import Case, FlankTool
 
 __all__ = [
+    "COND_MAX",
     "DEFAULT_VARIABLES",
     "SETTING_VARIABLES",
     "SettingVariable",
@@ -116,6 +117,13 @@ DEFAULT_VARIABLES: Mapping[str, tuple[str, ...]] = MappingProxyType({
 })
 
 
+#: largest condition number of the unit-column Jacobian of the settings kept free: with
+#: 1 µm measurement noise a combination of settings at σ₁/σ = 100 is uncertain by about
+#: 100 µm of flank motion (column norm), i.e. about 15 µm RMS on a 45-point grid — beyond
+#: that the measurement cannot tell the settings apart
+COND_MAX = 100.0
+
+
 def variables_of(process: str, names: Sequence[str] | None) -> list[SettingVariable]:
     """The variables ``names`` of a member's process (None: :data:`DEFAULT_VARIABLES`).
 
@@ -163,12 +171,21 @@ def setting_value(tool: FlankTool, name: str) -> float:
     InputError
         For an unknown name.
     """
-    one_of("settings", name, list(SETTING_VARIABLES))
+    _known(name)
     var = SETTING_VARIABLES[name]
     val = getattr(getattr(tool, var.owner), var.field)
     if var.index is None:
         return float(val)
     return float(val[var.index]) if var.index < len(val) else 0.0
+
+
+def _known(name: str) -> None:
+    """InputError unless ``name`` is a setting variable (the message lists them)."""
+    # (imported here: the names and COND_MAX above serve `ltca correct --help`, which
+    # should not import NumPy)
+    from geometry.core.validation import one_of
+
+    one_of("settings", name, list(SETTING_VARIABLES))
 
 
 def tool_with_values(tool: FlankTool, values: Mapping[str, float]) -> FlankTool:
@@ -192,7 +209,7 @@ def tool_with_values(tool: FlankTool, values: Mapping[str, float]) -> FlankTool:
     """
     changes: dict[str, dict] = {"machine": {}, "blade": {}}
     for name, value in values.items():
-        one_of("settings", name, list(SETTING_VARIABLES))
+        _known(name)
         var = SETTING_VARIABLES[name]
         obj = getattr(tool, var.owner)
         if var.index is None:

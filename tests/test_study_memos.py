@@ -1,0 +1,65 @@
+"""What a study computes once per worker process, and the workers' environment (issue 32).
+
+* The pinion's points of the ease-off's forward map (861 solutions of the equation of
+  meshing on the extended pinion grid) and the real gear flank on the ease-off's grid do
+  not depend on the misalignment: they are memoised per process under the tooth models'
+  key (``Case.teeth_toml``), and an ease-off computed with the memos equals, bit for bit,
+  one computed without them.
+* A LocalCluster the study engine starts runs its workers without distributed's
+  ``MALLOC_TRIM_THRESHOLD_`` (a quarter of a point's CPU time in page faults).
+
+Cheap enough for CI: three ease-offs of the long-bearing case (about 0.1 s each on a quiet
+core) and a look at Dask's configuration (no cluster is started).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from contact.catalogue import resolve_case
+from contact.study.engine import WORKER_ENVIRON_UNSET, worker_environment
+from contact.utca import ease_off
+from contact.utca.conjugate_map import clear_memos, memo_info
+from geometry.pair.assembly import Misalignment
+
+
+@pytest.fixture(scope="module")
+def case():
+    return resolve_case("kolivand2009_fm_11x41")
+
+
+def test_teeth_alone_are_solved_once_per_process_and_change_nothing(case):
+    clear_memos()
+    a = ease_off(case, misalignment=Misalignment(delta_E=0.05))
+    b = ease_off(case, misalignment=Misalignment(delta_E=-0.05, delta_P=0.03))
+    for name, info in memo_info().items():
+        assert (info.hits, info.misses) == (1, 1), name
+    # the same case with other deviations or misalignment has the same key
+    assert (dataclasses.replace(case, misalignment=Misalignment(delta_P=0.1)).teeth_toml()
+            == case.teeth_toml())
+    clear_memos()
+    fresh = ease_off(case, misalignment=Misalignment(delta_E=-0.05, delta_P=0.03))
+    for name in ("ease_off_angle", "roll_angle", "gap_curvature", "pinion_u", "pinion_v",
+                 "placement_error"):
+        np.testing.assert_array_equal(getattr(b, name), getattr(fresh, name), err_msg=name)
+    assert not np.allclose(np.nan_to_num(a.ease_off_angle), np.nan_to_num(b.ease_off_angle))
+
+
+def test_local_cluster_workers_start_without_malloc_trim():
+    """The Nanny's pre-spawn environment (what distributed puts into a new worker's
+    environment) has no MALLOC_TRIM_THRESHOLD_ while the engine starts its cluster, and the
+    configuration is restored afterwards."""
+    import dask
+    pytest.importorskip("distributed")
+
+    key = "distributed.nanny.pre-spawn-environ"
+    before = dict(dask.config.get(key))
+    with worker_environment():
+        env = {k: v for k, v in dask.config.get(key).items() if v is not None}
+        for name in WORKER_ENVIRON_UNSET:
+            assert name not in env
+        assert env.get("OMP_NUM_THREADS") in (1, "1")  # the rest as distributed sets it
+    assert dict(dask.config.get(key)) == before
