@@ -78,7 +78,9 @@ def attach_negative_values(argv: Sequence[str]) -> list[str]:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
-    args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv))
+    argv = list(sys.argv[1:] if argv is None else argv)
+    args = parser.parse_args(attach_negative_values(argv))
+    args.argv = argv  # as typed, for the provenance of files a command writes
     args.verbose = args.verbose + getattr(args, "verbose_sub", 0)
     args.quiet = args.quiet or getattr(args, "quiet_sub", False)
     if args.quiet and args.verbose:

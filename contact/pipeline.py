@@ -177,6 +177,7 @@ def run_analysis(
     geometry: bool = True,
     progress: bool = False,
     theoretical: bool = True,
+    mesh_interface: bool = True,
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -218,12 +219,16 @@ def run_analysis(
         With deviations, also analyse the theoretical surfaces (``/theoretical``,
         default True); False skips them (studies keep only the deviated results, which
         are the same either way).
+    mesh_interface : bool
+        Add ``/mesh_interface`` (default True): mesh point, line of action, mesh
+        stiffness and transmission-error excitation for dynamic models
+        (:func:`contact.ltca.mesh_interface.mesh_interface`).
 
     Returns
     -------
     xarray.DataTree
-        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca`` (and ``/friction`` with
-        operating conditions); root attributes ``case``, ``inputs`` (the case as TOML, its
+        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca``, ``/mesh_interface`` (and
+        ``/friction`` with operating conditions); root attributes ``case``, ``inputs`` (the case as TOML, its
         ``[operating]`` table as run), the misalignment once (:data:`MISALIGNMENT_ATTRS`:
         ``misalignment_delta_E_mm`` … ``misalignment_delta_Sigma_deg``; the groups'
         ``misalignment`` attribute refers to them), per-stage times ``time_*_s``.
@@ -295,12 +300,21 @@ def run_analysis(
             + ("yes" if deviations[1] is not None else "no")
         )
     t0 = time.perf_counter()
+    problems: list | None = [] if mesh_interface else None
     ltca_ds = loaded_tca(c, torques, flank=flank, options=opts, easeoff=eo, progress=progress,
-                         transitions=tuple(utca_ds["transition_roll"].values))
+                         transitions=tuple(utca_ds["transition_roll"].values),
+                         roll_problems=problems)
     times["ltca"] = time.perf_counter() - t0
     tree["/easeoff"] = eo_ds
     tree["/utca"] = utca_ds
     tree["/ltca"] = ltca_ds
+    if problems is not None:
+        from contact.ltca.mesh_interface import mesh_interface as _mesh_interface
+
+        t0 = time.perf_counter()
+        tree["/mesh_interface"] = _mesh_interface(ltca_ds, problems)
+        del problems  # the roll problems' compliance matrices are not kept
+        times["mesh_interface"] = time.perf_counter() - t0
     if operating is not None:
         from friction.efficiency import efficiency_analysis
 

@@ -37,6 +37,7 @@ from contact.plots.curves import (
     te_comparison_figure,
     transmission_error_figure,
 )
+from contact.plots.dynamics import mesh_interface_figure
 from contact.plots.flank import (
     FRICTION_FLANK_PLOTS,
     contact_pattern_figure,
@@ -171,7 +172,7 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
     FigureSpec
         ``easeoff_topography``, ``easeoff``, ``contact_pattern``,
         ``transmission_error``, ``pressure``, ``load_share``, ``friction_flank``,
-        ``friction_efficiency`` and, for deviated runs, ``deviations_*`` — those whose
+        ``friction_efficiency``, ``mesh_interface`` and, for deviated runs, ``deviations_*`` — those whose
         groups the tree has.
 
     Raises
@@ -219,6 +220,14 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
         yield FigureSpec("friction_efficiency",
                           "Instantaneous mechanical efficiency over the mesh cycles.",
                           partial(efficiency_curve_figure, fr, lt))
+    mi = _group(tree, "mesh_interface")
+    if mi is not None:
+        yield FigureSpec(
+            "mesh_interface",
+            "Mesh interface for dynamic models: effective mesh stiffness along the line of "
+            "action, transmission-error excitation and its mesh harmonics, directional "
+            "rotation radii (Cheng & Lim 2001).",
+            partial(mesh_interface_figure, mi, lt))
     if "theoretical" in tree.children:
         yield from _deviation_specs(tree, eo, ut, lt)
 
