@@ -228,7 +228,8 @@ def run_analysis(
     -------
     xarray.DataTree
         Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca``, ``/mesh_interface`` (and
-        ``/friction`` with operating conditions); root attributes ``case``, ``inputs`` (the case as TOML, its
+        ``/friction`` with operating conditions); root attributes ``case``, ``inputs``
+        (the case as TOML, its
         ``[operating]`` table as run), the misalignment once (:data:`MISALIGNMENT_ATTRS`:
         ``misalignment_delta_E_mm`` … ``misalignment_delta_Sigma_deg``; the groups'
         ``misalignment`` attribute refers to them), per-stage times ``time_*_s``.

@@ -11,7 +11,8 @@ The three checks the issue names, each against something the reduction does not 
 * stiffness — the condensed tangent stiffness k_Θ / λ_g² agrees with a central finite
   difference of the LTE between T (1 ± 1 %) to 1 % at every roll whose contact set is
   the same at the three torques (a change of the set is a kink of the LTE that a finite
-  difference straddles; at the others the median error stays below 1 %); the Weber iteration's LTE tolerance, 1e-3 µrad, is 0.03 % of
+  difference straddles; at the others the median error stays below 1 %); the Weber
+  iteration's LTE tolerance, 1e-3 µrad, is 0.03 % of
   the ±2.4 µrad the LTE moves, and the curvature of the LTE–torque curve over ±1 % adds
   O(1e-4): 1 % leaves a wide margin yet catches a secant (Weber's secant compliance is
   ~10 % off the tangent);

@@ -447,14 +447,14 @@ def write_mesh_interface_csv(ds: xr.Dataset, path, *, header: str = "") -> Path:
     if not target.parent.is_dir():
         raise InputError(f"path: directory {str(target.parent)!r} does not exist")
     buf = io.StringIO()
+    def vec(key: str) -> list[float]:
+        return np.round(np.asarray(ds.attrs[key], float), 9).tolist()
+
     lines = [f"mesh interface of {ds.attrs.get('case', '')} for dynamic models "
              "(hypoid-ltca, contact.ltca.mesh_interface; docs/mesh_interface.md)",
-             "pair frame: gear axis a_g = "
-             f"{np.round(np.asarray(ds.attrs['gear_axis'], float), 12).tolist()} through "
-             f"o_g = {np.round(np.asarray(ds.attrs['gear_origin_mm'], float), 9).tolist()} mm; "
-             f"pinion axis a_p = {np.round(np.asarray(ds.attrs['pinion_axis'], float), 12).tolist()}"
-             f" through o_p = {np.round(np.asarray(ds.attrs['pinion_origin_mm'], float), 9).tolist()}"
-             " mm",
+             f"pair frame: gear axis a_g = {vec('gear_axis')} through o_g = "
+             f"{vec('gear_origin_mm')} mm; pinion axis a_p = {vec('pinion_axis')} through "
+             f"o_p = {vec('pinion_origin_mm')} mm",
              *[ln for ln in header.splitlines() if ln],
              "columns (name [unit]: meaning):",
              *[f"  {n} [{u}]: {m}" for n, u, m in MESH_INTERFACE_COLUMNS]]

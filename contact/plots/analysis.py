@@ -172,8 +172,8 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
     FigureSpec
         ``easeoff_topography``, ``easeoff``, ``contact_pattern``,
         ``transmission_error``, ``pressure``, ``load_share``, ``friction_flank``,
-        ``friction_efficiency``, ``mesh_interface`` and, for deviated runs, ``deviations_*`` — those whose
-        groups the tree has.
+        ``friction_efficiency``, ``mesh_interface`` and, for deviated runs,
+        ``deviations_*`` — those whose groups the tree has.
 
     Raises
     ------
