@@ -140,13 +140,31 @@ def resolve_analysis_file(arg: str | None) -> Path:
 
     name = arg if arg is not None else DEFAULT_CASE.removesuffix(".toml")
     path = Path(name)
+    if path.is_dir():
+        raise InputError(f"FILE: {str(path)!r} is a directory, not an analysis file (netCDF)")
     if path.is_file():
+        if not _is_netcdf(path):
+            what = ("a case file (TOML)" if path.suffix == ".toml" else "not a netCDF file")
+            raise InputError(f"FILE: {str(path)!r} is {what}, not an analysis file: "
+                             f"`ltca run {name}` writes {path.stem}.nc, which this command "
+                             "reads")
         return path
     named = Path(f"{path.name.removesuffix('.toml')}.nc")
     if path.suffix in ("", ".toml") and named.is_file():
         return named
     tried = repr(str(path)) if named == path else f"{str(path)!r} nor {str(named)!r}"
     raise InputError(f"FILE: no such file {tried} (`ltca run CASE` writes CASE.nc)")
+
+
+def _is_netcdf(path: Path) -> bool:
+    """Whether a file starts as netCDF does (classic ``CDF``, or netCDF-4's HDF5
+    signature)."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(8)
+    except OSError:
+        return False
+    return head[:3] == b"CDF" or head == b"\x89HDF\r\n\x1a\n"
 
 
 def torque_option(p: argparse.ArgumentParser, *, many: bool = True,
