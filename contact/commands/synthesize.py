@@ -55,10 +55,8 @@ def resolve_basic(arg: str | None) -> Path:
     InputError
         Neither a file nor a bundled name (the message lists the bundled ones).
     """
-    from contact.catalogue import DEFAULT_CASE, bundled_case_path
+    from contact.catalogue import DEFAULT_CASE, bundled_case_path, closest_names
     from geometry.core.errors import InputError
-
-    from contact.catalogue import closest_names
 
     name = DEFAULT_CASE if arg is None else arg
     if Path(name).is_dir():
