@@ -100,8 +100,10 @@ def _table(c) -> str:
         if c.at_bound[i]:
             status += " (at bound)"
         se = c.standard_error_per_um[i] / s
-        rows.append((name, c.units[i], f"{c.nominal[i] / s:.8g}", f"{c.correction[i] / s:+.6g}",
-                     f"{c.corrected[i] / s:.8g}", status,
+        corr = c.correction[i] / s
+        rows.append((name, c.units[i], f"{c.nominal[i] / s + 0.0:.8g}",
+                     "0" if corr == 0.0 else f"{corr:+.6g}", f"{c.corrected[i] / s + 0.0:.8g}",
+                     status,
                      "" if math.isnan(se) else f"{se:.3g}",
                      "inf" if math.isinf(c.vif[i]) else f"{c.vif[i]:.3g}"))
     return tabulate(rows, headers=["setting", "unit", "nominal", "correction", "corrected",

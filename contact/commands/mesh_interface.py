@@ -38,11 +38,6 @@ def register(sub) -> None:
         "radii and the transmission-error excitation with its mesh harmonics (Cheng & Lim "
         "2001). Writes a CSV whose comment lines document every column "
         "(docs/mesh_interface.md); `ltca run` stores the same as /mesh_interface.",
-        epilog="examples:\n  ltca mesh-interface                       # default case → "
-               "kolivand2009_fm_11x41_reference_mesh_interface.csv\n"
-               "  ltca mesh-interface kolivand2009_fh_12x41 --torque 100 200 300 -o mesh.csv "
-               "--plots figs",
-        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     case_argument(p)
     torque_option(p)
