@@ -63,7 +63,7 @@ def register(sub) -> None:
                    metavar=("NAME", "LOW", "HIGH"),
                    help="bounds of a corrected setting in case-file units (deg, mm); "
                         "repeatable; must lie in the setting's valid range")
-    p.add_argument("--cond-max", type=float, default=COND_MAX,
+    p.add_argument("--cond-max", type=float, default=COND_MAX, metavar="KAPPA",
                    help="largest condition number of the settings kept free (default "
                         "%(default)g); the others are held fixed")
     output_option(p, default="<case>_corrected.toml", what="corrected case file (TOML)")
