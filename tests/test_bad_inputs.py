@@ -233,8 +233,9 @@ def test_corpus_size():
 
 def test_refusals_with_ranges():
     """A misalignment that separates the flanks is refused naming it and the bound beyond
-    which the flanks no longer meet; the bound is checked independently: the ease-off at the bound meets the flanks
-    on at least MIN_VALID_NODES nodes, and 10 % beyond the given value it does not."""
+    which the flanks no longer meet; the bound is checked independently: the ease-off at
+    the bound meets the flanks on at least MIN_VALID_NODES nodes, and 10 % beyond the given
+    value it does not."""
     from contact.catalogue import resolve_case
     from contact.utca.easeoff import MIN_VALID_NODES, ease_off
     from geometry.pair.assembly import Misalignment

@@ -9,6 +9,7 @@ efficiency stage says what is absent; the page from ``run --report`` equals the 
 from __future__ import annotations
 
 import base64
+import re
 
 import html5lib
 import numpy as np
@@ -169,3 +170,15 @@ def test_basic_data_table_of_the_pair(run_files):
     assert "point radii" in rows["cutter [mm]"][0]
     # the long source text is kept, folded away
     assert doc.find(".//h:section[@id='case']/h:details", NS) is not None
+
+
+def test_one_spelling_of_the_microradian(run_files):
+    """The page writes µrad; "urad" (the files' and the console's UDUNITS spelling, also in
+    the case's source text) appears only inside the case file as run (<pre>, verbatim)."""
+    doc = _parse(run_files[1].read_text(encoding="utf-8"))
+    body = doc.find(".//h:body", NS)
+    pre = {id(e) for p in body.iter(f"{{{NS['h']}}}pre") for e in p.iter()}
+    text = " ".join(t for e in body.iter() if id(e) not in pre
+                    for t in (e.text, e.tail) if t)
+    assert "µrad" in text
+    assert not re.search(r"(?<![A-Za-z])urad\b", text)
