@@ -13,6 +13,7 @@ DEFAULT_CASE       the default case's file name
 SEED_TABLE_3_1     the seed's Table 3.1 torques and misalignment
 bundled_cases      the file names of the bundled cases
 bundled_case_path  the path of a bundled case
+closest_names      the bundled names closest to a mistyped one
 resolve_case       a Case from a Case, a file path, a bundled case name or None
 """
 
@@ -29,7 +30,7 @@ if TYPE_CHECKING:
     from geometry.case import Case
 
 __all__ = ["DEFAULT_CASE", "SEED_TABLE_3_1", "bundled_case_path", "bundled_cases",  # noqa: F822
-           "resolve_case"]
+           "closest_names", "resolve_case"]
 
 #: File name of the default case: the reference design of the seed's Table 2.1 / 4.1 pair
 #: (``kolivand2009_fm_11x41.toml`` is the same pair's long-bearing synthesis without relief,
@@ -81,24 +82,57 @@ def bundled_cases() -> list[str]:
     return sorted(p.name for p in root.iterdir() if p.name.endswith(".toml"))
 
 
+def closest_names(name: str, names: list[str], n: int = 2) -> list[str]:
+    """The bundled names closest to a mistyped ``name`` (difflib's ratio ≥ 0.6), best
+    first: ``kolivand2009_fm_11x14`` → ``kolivand2009_fm_11x41``."""
+    import difflib
+
+    stems = [x.removesuffix(".toml") for x in names]
+    return difflib.get_close_matches(Path(name).name.removesuffix(".toml"), stems, n=n,
+                                     cutoff=0.6)
+
+
+def _suggestion(name: str) -> str:
+    close = closest_names(name, bundled_cases())
+    return f"; did you mean {' or '.join(close)}?" if close else ""
+
+
 def bundled_case_path(name: str = DEFAULT_CASE) -> Path:
     """Path of a bundled case file.
 
     Raises
     ------
     InputError
-        Unknown name (the message lists the bundled cases).
+        Unknown name (the message suggests the closest bundled names, else lists them).
     """
     root = _cases_root()
     fname = name if name.endswith(".toml") else f"{name}.toml"
     path = root / fname
     if not path.is_file():
-        raise InputError(f"case: no bundled case {name!r}; bundled: {', '.join(bundled_cases())}")
+        close = closest_names(name, bundled_cases())
+        hint = (f"did you mean {' or '.join(close)}?" if close else
+                f"bundled: {', '.join(bundled_cases())} (`ltca cases` lists them)")
+        raise InputError(f"case: no bundled case {name!r}; {hint}")
     return Path(str(path))
 
 
+def _looks_like_a_path(text: str) -> bool:
+    """A CASE argument meant as a file: it has a directory part or a ``.toml`` suffix."""
+    p = Path(text)
+    return len(p.parts) > 1 or p.suffix == ".toml" or text.startswith((".", "~"))
+
+
 def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
-    """A Case from a Case, a file path, a bundled case name, or None (the default case)."""
+    """A Case from a Case, a file path, a bundled case name, or None (the default case).
+
+    Raises
+    ------
+    InputError
+        ``case``: a directory; a file path that does not exist ("no such file", with the
+        bundled case of that name if there is one — its name, not the path, selects it);
+        an unknown bundled name (the closest bundled names suggested); or the file's own
+        errors (:func:`geometry.case.load_case`).
+    """
     from geometry.case import Case, load_case
 
     if isinstance(case, Case):
@@ -106,6 +140,15 @@ def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
     if case is None:
         return load_case(bundled_case_path())
     path = Path(case)
+    if path.is_dir():
+        raise InputError(f"case: {str(path)!r} is a directory, not a case file (TOML)")
     if path.is_file():
         return load_case(path)
-    return load_case(bundled_case_path(str(case)))
+    text = os.fspath(case)
+    if _looks_like_a_path(text):
+        stem = path.name.removesuffix(".toml")
+        bundled = f"{stem}.toml" in bundled_cases()
+        hint = (f"; the bundled case of that name is selected by its name alone: {stem}"
+                if bundled else _suggestion(stem))
+        raise InputError(f"case: no such file {text!r}{hint}")
+    return load_case(bundled_case_path(text))

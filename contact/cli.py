@@ -41,19 +41,42 @@ def command_modules() -> list[ModuleType]:
     return sorted(mods, key=lambda m: (getattr(m, "ORDER", 100), m.__name__))
 
 
+class _HelpFormatter(argparse.HelpFormatter):
+    """argparse's formatter, but an ``examples:`` epilog keeps its lines (one command
+    each) instead of being filled into a paragraph."""
+
+    def _fill_text(self, text: str, width: int, indent: str) -> str:
+        if text.startswith("examples:"):
+            return "\n".join(indent + line for line in text.splitlines())
+        return super()._fill_text(text, width, indent)
+
+
+def _epilog(lines) -> str:
+    return "examples:\n" + "\n".join(f"  {line}" for line in lines)
+
+
 def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of ``ltca`` (one sub-command group per command module)."""
+    """The argument parser of ``ltca`` (one sub-command group per command module); each
+    command's help ends with its examples (:mod:`contact.commands.examples`)."""
+    from contact.commands.examples import EXAMPLES, TOP_EXAMPLES
+
     parser = argparse.ArgumentParser(
         prog="ltca",
-        description="Loaded tooth contact analysis of hypoid and spiral bevel gears.",
+        description="Loaded tooth contact analysis of hypoid and spiral bevel gears. Every "
+        "command takes a case file or a bundled case name (default the bundled default "
+        "case) at its [operating] conditions unless options override them.",
+        epilog=_epilog(TOP_EXAMPLES), formatter_class=_HelpFormatter,
     )
     parser.add_argument("--version", action="version", version=f"hypoid-ltca {__version__}")
     verbosity_options(parser, top=True)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for module in command_modules():
         module.register(sub)
-    for command in sub.choices.values():  # -v/-q also after the command
+    for name, command in sub.choices.items():  # -v/-q also after the command
         verbosity_options(command)
+        command.formatter_class = _HelpFormatter
+        if name in EXAMPLES and not command.epilog:
+            command.epilog = _epilog(EXAMPLES[name])
     return parser
 
 
@@ -78,7 +101,9 @@ def attach_negative_values(argv: Sequence[str]) -> list[str]:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
-    args = parser.parse_args(attach_negative_values(sys.argv[1:] if argv is None else argv))
+    argv = list(sys.argv[1:] if argv is None else argv)
+    args = parser.parse_args(attach_negative_values(argv))
+    args.argv = argv  # as typed, for the provenance of files a command writes
     args.verbose = args.verbose + getattr(args, "verbose_sub", 0)
     args.quiet = args.quiet or getattr(args, "quiet_sub", False)
     if args.quiet and args.verbose:

@@ -23,6 +23,7 @@ import xarray as xr
 
 from contact import catalogue
 from contact.ltca import LTCAOptions, loaded_tca
+from contact.ltca.summary import edge_load_share
 from contact.utca import unloaded_tca
 from contact.utca.easeoff import ease_off
 from friction.operating import OperatingConditions
@@ -37,6 +38,7 @@ __all__ = [
     "misalignment_attrs",
     "operating_conditions",
     "resolve_deviations",
+    "result_summary",
     "run_analysis",
 ]
 
@@ -152,6 +154,51 @@ def operating_conditions(case: Case, **override) -> OperatingConditions | None:
     return OperatingConditions.from_point(case.operating, **{**override, "pinion_speed": speed})
 
 
+def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
+    """The ACDD ``summary`` of an analysis file: what was run and its result per torque.
+
+    Parameters
+    ----------
+    name : str
+        The case name.
+    groups : dict of str to xarray.Dataset
+        The analysis groups by path (``/ltca``, optionally ``/friction``,
+        ``/mesh_interface``).
+
+    Returns
+    -------
+    str
+        One sentence per torque: LTE mean and peak-to-peak [urad], peak pressure of the
+        flanks and of the edges [MPa], the edges' share of the torque [%], the efficiency
+        [%] and the mean mesh stiffness [N/um] where the groups hold them (units as
+        UDUNITS text, so that a catalogue shows them as the file's variables do).
+    """
+    lt = groups["/ltca"]
+    fr = groups.get("/friction")
+    mi = groups.get("/mesh_interface")
+    parts = [f"Loaded tooth contact analysis of {name} (hypoid-ltca)."]
+    share = edge_load_share(lt) if "segment_kind" in lt.variables else None
+    for i, t in enumerate(lt["torque"].values):
+        text = (f"T_p {t:g} N m: LTE mean {float(lt['lte_mean'].values[i]):.1f} urad, "
+                f"peak-to-peak {float(lt['lte_peak_to_peak'].values[i]):.1f} urad; peak "
+                f"pressure flank {float(lt['pressure_max_flank'].values[i]):.0f} MPa, edge "
+                f"{float(lt['pressure_max_edge'].values[i]):.0f} MPa")
+        if share is not None:
+            text += f", edges carry {100 * share[i]:.1f} % of the torque"
+        if fr is not None and "efficiency_mean" in fr:
+            text += f"; efficiency {100 * float(fr['efficiency_mean'].values[i]):.2f} %"
+        if mi is not None and "mesh_stiffness_mean" in mi:
+            text += f"; mesh stiffness {float(mi['mesh_stiffness_mean'].values[i]):.0f} N/um"
+        parts.append(text + ".")
+    if fr is not None:
+        a = fr.attrs
+        parts.append(f"Efficiency at {a.get('pinion_speed_rpm', float('nan')):g} rpm, "
+                     f"{a.get('lubricant', '')} at {a.get('inlet_temperature_degC', 0):g} "
+                     f"degC, Rq {a.get('roughness_rq_um', 0):g} um, friction model "
+                     f"{a.get('friction_model', '')}.")
+    return " ".join(parts)
+
+
 def _point_as_run(c: Case, torques, operating: OperatingConditions | None):
     """The case's OperatingPoint with the torques and efficiency conditions actually run."""
     t = [torques] if np.ndim(torques) == 0 else list(torques)
@@ -177,6 +224,7 @@ def run_analysis(
     geometry: bool = True,
     progress: bool = False,
     theoretical: bool = True,
+    mesh_interface: bool = True,
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -218,12 +266,17 @@ def run_analysis(
         With deviations, also analyse the theoretical surfaces (``/theoretical``,
         default True); False skips them (studies keep only the deviated results, which
         are the same either way).
+    mesh_interface : bool
+        Add ``/mesh_interface`` (default True): mesh point, line of action, mesh
+        stiffness and transmission-error excitation for dynamic models
+        (:func:`contact.ltca.mesh_interface.mesh_interface`).
 
     Returns
     -------
     xarray.DataTree
-        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca`` (and ``/friction`` with
-        operating conditions); root attributes ``case``, ``inputs`` (the case as TOML, its
+        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca``, ``/mesh_interface`` (and
+        ``/friction`` with operating conditions); root attributes ``case``, ``inputs``
+        (the case as TOML, its
         ``[operating]`` table as run), the misalignment once (:data:`MISALIGNMENT_ATTRS`:
         ``misalignment_delta_E_mm`` … ``misalignment_delta_Sigma_deg``; the groups'
         ``misalignment`` attribute refers to them), per-stage times ``time_*_s``.
@@ -295,12 +348,21 @@ def run_analysis(
             + ("yes" if deviations[1] is not None else "no")
         )
     t0 = time.perf_counter()
+    problems: list | None = [] if mesh_interface else None
     ltca_ds = loaded_tca(c, torques, flank=flank, options=opts, easeoff=eo, progress=progress,
-                         transitions=tuple(utca_ds["transition_roll"].values))
+                         transitions=tuple(utca_ds["transition_roll"].values),
+                         roll_problems=problems)
     times["ltca"] = time.perf_counter() - t0
     tree["/easeoff"] = eo_ds
     tree["/utca"] = utca_ds
     tree["/ltca"] = ltca_ds
+    if problems is not None:
+        from contact.ltca.mesh_interface import mesh_interface as _mesh_interface
+
+        t0 = time.perf_counter()
+        tree["/mesh_interface"] = _mesh_interface(ltca_ds, problems)
+        del problems  # the roll problems' compliance matrices are not kept
+        times["mesh_interface"] = time.perf_counter() - t0
     if operating is not None:
         from friction.efficiency import efficiency_analysis
 
@@ -321,6 +383,7 @@ def run_analysis(
             **{f"time_{k}_s": v for k, v in times.items()},
         }
     )
+    root.attrs["summary"] = result_summary(c.name, tree)
     tree["/"] = root
     out = xr.DataTree.from_dict(tree)
     out.attrs["inputs"] = c.to_toml()

@@ -716,6 +716,11 @@ def case_from_dict(raw: Mapping[str, Any], *,
     pair = Pair(pr["shaft_angle"], pr["offset"], pr["method"], pr["drive_flank"])
     pinion = _member(_table(raw, "pinion", "pinion"), "pinion", pr["pinion_hand"])
     gear = _member(_table(raw, "gear", "gear"), "gear", pr["gear_hand"])
+    if pinion.blank.teeth > gear.blank.teeth:
+        raise InputError(
+            f"pinion.blank.teeth: the pinion has more teeth ({pinion.blank.teeth}) than the "
+            f"gear ({gear.blank.teeth}); the pinion is the member with fewer teeth — are the "
+            "[pinion] and [gear] tables swapped?")
     _check_method(pr["method"], pinion, gear)
     mis, operating = operating_from_dict(raw)
     devs = _deviation_files(raw, base_dir)

@@ -18,7 +18,7 @@ from pathlib import Path
 import netCDF4
 
 #: the checker suites run on every group: the CF version the files declare, and ACDD 1.3
-CHECKERS = ("cf:1.10", "acdd:1.3")
+CHECKERS = ("cf:1.8", "acdd:1.3")
 PRIORITIES = {3: "high", 2: "medium", 1: "low"}
 
 
@@ -51,8 +51,9 @@ def extract_group(path: str | Path, group: str, target: str | Path) -> Path:
             fill = attrs.pop("_FillValue", None)
             out = dst.createVariable(name, var.datatype, var.dimensions, fill_value=fill)
             out.setncatts(attrs)
-            out.set_auto_maskandscale(False)
-            var.set_auto_maskandscale(False)
+            for v in (out, var):  # the bytes as stored (char arrays stay char arrays)
+                v.set_auto_maskandscale(False)
+                v.set_auto_chartostring(False)
             out[...] = var[...]
         dst.setncatts({k: g.getncattr(k) for k in g.ncattrs()})
     return Path(target)

@@ -232,9 +232,10 @@ def test_corpus_size():
 
 
 def test_refusals_with_ranges():
-    """A misalignment that separates the flanks is refused naming it and the range that
-    works; the bound is checked independently: the ease-off at the bound meets the flanks
-    on at least MIN_VALID_NODES nodes, and 10 % beyond the given value it does not."""
+    """A misalignment that separates the flanks is refused naming it and the bound beyond
+    which the flanks no longer meet; the bound is checked independently: the ease-off at
+    the bound meets the flanks on at least MIN_VALID_NODES nodes, and 10 % beyond the given
+    value it does not."""
     from contact.catalogue import resolve_case
     from contact.utca.easeoff import MIN_VALID_NODES, ease_off
     from geometry.pair.assembly import Misalignment
@@ -243,8 +244,8 @@ def test_refusals_with_ranges():
     with pytest.raises(LTCAError) as info:
         ease_off(case, misalignment=Misalignment(delta_G=10.0))
     msg = str(info.value)
-    _assert_one_line(msg, ["misalignment", "delta_G = 10 mm", "works from 0 to about"])
-    bound = float(re.search(r"to about ([\d.]+) mm", msg).group(1))
+    _assert_one_line(msg, ["misalignment", "delta_G = 10 mm", "beyond about"])
+    bound = float(re.search(r"beyond about ([\d.]+) mm", msg).group(1))
     assert 0.0 < bound < 10.0
     eo = ease_off(case, misalignment=Misalignment(delta_G=0.98 * bound))
     assert int(eo.valid.sum()) >= MIN_VALID_NODES

@@ -540,3 +540,36 @@ def test_synthesis_takes_a_face_hobbed_design_and_refuses_a_cutter_that_does_not
     raw["design"] = {**raw["design"], "z0": 7}
     with pytest.raises(InputError, match=r"^design\.z0: 7 blade groups share the factor 7"):
         basic_from_dict(raw, fit=False)
+
+
+@pytest.mark.parametrize("sample", SAMPLES)
+def test_effective_pressure_angles_reachable_under_their_symbols(geometries, sample):
+    """α_eD, α_eC (ISO 23509's effective pressure angles, printed in the face-hobbing
+    samples F.4/F.5) are results under their symbols, in the blank dataset too. The
+    project's data file holds no printed value of them, so they are checked by the
+    standard's definitions, exact to round-off: α_eD = α_nD − α_lim and α_eC = α_nC + α_lim;
+    with sample 3's f_αlim = 1 they are its design angles α_dD = α_dC = 20°, and with
+    sample 4's f_αlim = 0 its generated angles minus/plus α_lim."""
+    from geometry.iso23509.blank import blank_dataset
+
+    flat = _flat_symbols(geometries[sample])
+    inp = ANNEX_F[sample]["input"]
+    assert flat["alpha_eD"] == pytest.approx(flat["alpha_nD"] - flat["alpha_lim"], abs=1e-12)
+    assert flat["alpha_eC"] == pytest.approx(flat["alpha_nC"] + flat["alpha_lim"], abs=1e-12)
+    if inp["f_alim"] == 1.0:
+        assert flat["alpha_eD"] == pytest.approx(inp["alpha_dD"], abs=1e-12)
+        assert flat["alpha_eC"] == pytest.approx(inp["alpha_dC"], abs=1e-12)
+    ds = blank_dataset(geometries[sample])
+    for name in ("alpha_eD", "alpha_eC"):
+        assert math.degrees(float(ds[name])) == pytest.approx(flat[name], abs=1e-9)
+        assert ds[name].attrs["units"] == "rad"
+
+
+def test_every_printed_value_is_reachable_under_its_symbol(geometries):
+    """Every symbol the face-hobbing data file lists names a result (a missing one is a
+    failure here, not a skipped comparison), and so do the effective pressure angles."""
+    for sample in SAMPLES:
+        flat = _flat_symbols(geometries[sample])
+        missing = sorted(set(ANNEX_F[sample]["expected"]) - set(flat))
+        assert not missing, (sample, missing)
+        assert {"alpha_eD", "alpha_eC", "alpha_nD", "alpha_nC", "alpha_lim"} <= set(flat)

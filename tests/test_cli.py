@@ -136,7 +136,9 @@ def test_run_prints_the_deviation_te_table_of_the_file(tmp_path, capsys):
         np.testing.assert_allclose(rows[name], stored, rtol=0, atol=0.005 + 1e-9)
     # the deviations change the result (the table is not two copies of one run)
     assert abs(rows["deviated"][2] - rows["theoretical"][2]) > 1.0  # LTE mean, urad
-    pngs = {p.name for p in (tmp_path / "png").glob("*.png")}
+    # named after the case (issue 38: the runs of one directory keep their own figures)
+    pngs = {p.name.removeprefix("kolivand2009_fm_11x41_wear_")
+            for p in (tmp_path / "png").glob("kolivand2009_fm_11x41_wear_*.png")}
     # theoretical and deviated side by side (UTE and LTE in one figure, pressure on one
     # scale); the deviated pattern is the run's own contact_pattern.png
     assert {"deviations_easeoff_change.png", "deviations_transmission_error.png",

@@ -186,4 +186,7 @@ def test_efficiency_map_trends_and_command(tmp_path):
         == 0
     )
     assert read_netcdf(out)["efficiency"].shape == (1, 2, 1, 1)
-    assert (tmp_path / "png" / "efficiency_vs_speed.png").exists()
+    # named after the case and the swept inputs (issue 38: maps of one case over other
+    # inputs do not overwrite each other)
+    assert (tmp_path / "png" / "kolivand2009_fm_11x41_reference_speed_efficiency_vs_speed.png"
+            ).exists()

@@ -308,3 +308,79 @@ def test_map_figure_on_a_study_grid():
         map_figure(ds, "shift", x="dE", y="dP", facet=[])
     with pytest.raises(InputError, match="'dQ' is not a dimension"):
         map_figure(ds, "shift", x="dQ", y="dP")
+
+
+# --- issue 38, part 2: what the report's figures show a gear engineer ----------------
+
+def test_panel_subtitles_give_peaks_with_units_not_exponents(default_tree):
+    """The pressure panels' subtitles read "flank peak 1792 MPa, edge peak 6298 MPa"
+    (were "flank peak 1.79e+03" without a unit)."""
+    g = _groups(default_tree)
+    fig = pressure_figure(g["easeoff"], g["ltca"])
+    titles = [ax.get_title() for ax in fig.axes if "peak" in ax.get_title()]
+    assert len(titles) == g["ltca"].sizes["torque"]
+    lt = g["ltca"]
+    for t, flank in zip(titles, lt["pressure_max_flank"].values, strict=True):
+        assert "e+" not in t and "e-" not in t, t
+        assert re.search(r"flank peak \d+ MPa", t), t
+        assert f"flank peak {flank:.0f} MPa" in t  # the /ltca value, to the MPa
+
+
+def test_efficiency_legend_covers_no_curve(default_tree):
+    """The legend sits under the panel: its box does not overlap the axes."""
+    from contact.plots import efficiency_curve_figure
+
+    fig = efficiency_curve_figure(default_tree["friction"].to_dataset(),
+                                  default_tree["ltca"].to_dataset())
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    ax = fig.axes[0]
+    assert ax.get_legend() is None and fig.legends
+    box = fig.legends[0].get_window_extent(renderer)
+    assert not box.overlaps(ax.get_window_extent(renderer))
+
+
+def test_extrapolation_marks_in_a_colour_no_colour_map_uses(default_tree):
+    """The friction model's extrapolated segments are marked in EXTRAPOLATED (magenta),
+    which is far from every colour of the maps on the figure (RdBu_r's red end clashed
+    with the old crimson): colour distance > 0.3 in RGB to every map entry."""
+    from matplotlib import colormaps
+    from matplotlib.colors import to_rgb
+
+    from contact.plots.style import DIVERGING, EDGE, EXTRAPOLATED, SEQUENTIAL
+
+    g = _groups(default_tree)
+    fig = friction_flank_figure(g["easeoff"], g["ltca"], g["friction"], ["slide_to_roll"])
+    overlay = [c for c in _collections(fig, LineCollection) if c.get_cmap().N == 1]
+    mark = np.array(to_rgb(EXTRAPOLATED))
+    if overlay:
+        assert np.allclose(overlay[0].get_cmap()(0.5)[:3], mark)
+    for name in (DIVERGING, SEQUENTIAL, EDGE):
+        rgb = colormaps[name](np.linspace(0, 1, 256))[:, :3]
+        assert np.min(np.linalg.norm(rgb - mark, axis=1)) > 0.3, name
+
+
+def test_tolerance_histogram_labels_off_the_bars_and_integer_draws():
+    """Percentile values in the panel title (no annotation over the bars); the y ticks
+    count draws, integers only."""
+    import xarray as xr
+
+    from contact.study.figures import tolerance_figure
+
+    rng = np.random.default_rng(0)
+    n = 40
+    ds = xr.Dataset(
+        {"lte_peak_to_peak": (("sample", "torque"), rng.normal(25, 4, (n, 1)),
+                              {"units": "urad", "long_name": "LTE peak-to-peak"}),
+         "status": ("sample", np.zeros(n, np.int8))},
+        coords={"torque": ("torque", [250.0], {"units": "N m"})},
+        attrs={"case": "test", "method": "sobol"})
+    fig = tolerance_figure(ds)
+    ax = fig.axes[0]
+    assert not [t for t in ax.texts + ax.findobj(Annotation)]
+    p = np.percentile(ds["lte_peak_to_peak"].values, (5, 50, 95))
+    assert f"P50 {p[1]:.4g}" in ax.get_title()
+    ticks = [t for t in ax.get_yticks() if ax.get_ylim()[0] <= t <= ax.get_ylim()[1]]
+    assert all(float(t).is_integer() for t in ticks), ticks

@@ -43,8 +43,9 @@ REDUCED: dict[str, list[str]] = {
     "sweep": ["--rolls-per-cycle", "4", "--dE", "-0.1,0.1", "--dP", "0",
               "--scheduler", "synchronous"],
     "tolerance": ["--rolls-per-cycle", "4", "-n", "4", "--scheduler", "synchronous"],
-    "vh-check": ["--rolls-per-cycle", "4", "--dE", "-0.4:0.4:3", "--dP", "-0.3:0.3:3",
+    "vh-check": ["--rolls-per-cycle", "4", "--dE", "-0.55:0.25:3", "--dP", "-0.18:0.42:3",
                  "--scheduler", "synchronous"],
+    "mesh-interface": ["--rolls-per-cycle", "4", "--segments", "8", "--torque", "50"],
 }
 
 

@@ -9,12 +9,14 @@ efficiency stage says what is absent; the page from ``run --report`` equals the 
 from __future__ import annotations
 
 import base64
+import re
 
 import html5lib
 import numpy as np
 import pytest
 
 from contact.cli import main
+from contact.ltca.summary import edge_load_share
 from contact.plots import analysis_figures
 from contact.plots.report import SUMMARY_COLUMNS
 from geometry.core.io import read_netcdf
@@ -46,11 +48,12 @@ def test_report_is_valid_html_whose_summary_equals_the_file(run_files, tmp_path)
     assert text == run_html.read_text(encoding="utf-8")
     tree = read_netcdf(nc, tree=True)
     lt, fr = tree["ltca"].to_dataset(), tree["friction"].to_dataset()
+    mi = tree["mesh_interface"].to_dataset()
     rows = doc.findall(".//h:table[@id='summary-table']/h:tbody/h:tr", NS)
     assert len(rows) == lt.sizes["torque"]
     for i, row in enumerate(rows):
         cells = {c.get("data-key"): c for c in row.findall("h:td", NS) if c.get("data-key")}
-        assert list(cells) == [k for k, *_ in SUMMARY_COLUMNS]
+        assert list(cells) == [c.key for c in SUMMARY_COLUMNS]
         expected = {
             "torque": lt["torque"].values[i],
             "lte_mean": lt["lte_mean"].values[i],
@@ -59,10 +62,12 @@ def test_report_is_valid_html_whose_summary_equals_the_file(run_files, tmp_path)
             "lte_harmonic_rss": lt["lte_harmonic_rss"].values[i],
             "pressure_max_flank": lt["pressure_max_flank"].values[i],
             "pressure_max_edge": lt["pressure_max_edge"].values[i],
+            "edge_load_share": 100 * edge_load_share(lt)[i],
+            "mesh_stiffness_mean": mi["mesh_stiffness_mean"].values[i],
             "efficiency_mean": 100 * fr["efficiency_mean"].values[i],
             "power_loss_mean": fr["power_loss_mean"].values[i],
         }
-        decimals = {k: d for k, _, _, d in SUMMARY_COLUMNS}
+        decimals = {c.key: c.decimals for c in SUMMARY_COLUMNS}
         for key, value in expected.items():
             if not np.isfinite(value):  # e.g. harmonics beyond 4 rolls per cycle's Nyquist
                 assert cells[key].get("data-value") == "" and cells[key].text == "–", key
@@ -70,7 +75,11 @@ def test_report_is_valid_html_whose_summary_equals_the_file(run_files, tmp_path)
             # the exact value (repr round-trips a float) and its text at the table's decimals
             assert float(cells[key].get("data-value")) == float(value), key
             assert cells[key].text == f"{float(value):.{decimals[key]}f}", key
-        assert "ΔE −0.15, ΔP +0.12 mm" in row.findall("h:td", NS)[0].text
+    # the misalignment once above the table, not repeated in a column of every row
+    said = [p for p in doc.iter(f"{{{NS['h']}}}p")
+            if p.text and "Misalignment of every row" in p.text]
+    assert said and "ΔE −0.15, ΔP +0.12 mm" in said[0].text
+    assert not doc.findall(".//h:table[@id='summary-table']//h:th[.='errors']", NS)
     # every figure embedded as a PNG data URI, nothing fetched from the network
     imgs = doc.findall(".//h:img", NS)
     assert len(imgs) == len(list(analysis_figures(tree)))
@@ -118,3 +127,58 @@ def test_report_refuses_a_file_that_is_not_an_analysis(tmp_path, capsys):
     assert main(["report", str(nc), "-o", str(tmp_path / "r.html")]) != 0
     assert "/easeoff" in capsys.readouterr().err
     assert not (tmp_path / "r.html").exists()
+
+
+def test_a_summary_column_is_added_in_one_place(run_files, monkeypatch):
+    """A column is one SummaryColumn entry (e.g. the tooth-root stress another stage will
+    add): the table shows it with its heading and unit, "–" where the file lacks it."""
+    import contact.plots.report as report
+    from contact.plots.report import SummaryColumn, render_report
+
+    extra = SummaryColumn("root_stress_max", "σ_F root", "MPa", 0,
+                          report._var("stress", "root_stress_max"))
+    monkeypatch.setattr(report, "SUMMARY_COLUMNS", (*SUMMARY_COLUMNS, extra))
+    tree = read_netcdf(run_files[0], tree=True)
+    doc = _parse(render_report(tree, figures=[]))
+    heads = ["".join(th.itertext()) for th in
+             doc.findall(".//h:table[@id='summary-table']/h:thead/h:tr/h:th", NS)]
+    assert "σ_F root [MPa]" in heads
+    cells = [c for c in doc.findall(".//h:table[@id='summary-table']//h:td", NS)
+             if c.get("data-key") == "root_stress_max"]
+    assert len(cells) == tree["ltca"].sizes["torque"] and all(c.text == "–" for c in cells)
+
+
+def test_basic_data_table_of_the_pair(run_files):
+    """The pair's basic data as a table (was a 300-word paragraph): teeth, hands, method,
+    offset, face widths, pressure (blade) angles, cutter, and the spiral angles measured
+    on the generated flanks at the mean point — within 1.5° of the seed's published
+    β_m 40.5/28.5° (Table 2.1): the flank's angle, not the tooth centre line's, differs from
+    β_m by the slot's taper, 0.2–1° here."""
+    doc = _parse(run_files[1].read_text(encoding="utf-8"))
+    pair = {"".join(r.findall("h:td", NS)[0].itertext()):
+            "".join(r.findall("h:td", NS)[1].itertext())
+            for r in doc.findall(".//h:table[@id='basic-data']/h:tbody/h:tr", NS)}
+    assert pair["method"] == "face milling (FM)" and pair["offset a [mm]"] == "20"
+    rows = {"".join(r.findall("h:td", NS)[0].itertext()):
+            ["".join(td.itertext()) for td in r.findall("h:td", NS)[1:]]
+            for r in doc.findall(".//h:table[@id='member-data']/h:tbody/h:tr", NS)}
+    assert rows["teeth z"] == ["11", "41"]
+    assert rows["hand"] == ["left", "right"]
+    spiral = rows["spiral angle at the mean point, concave / convex flank [°]"]
+    for text, published in zip(spiral, (40.5, 28.5), strict=True):
+        assert all(abs(float(x) - published) < 1.5 for x in text.split(" / ")), text
+    assert "point radii" in rows["cutter [mm]"][0]
+    # the long source text is kept, folded away
+    assert doc.find(".//h:section[@id='case']/h:details", NS) is not None
+
+
+def test_one_spelling_of_the_microradian(run_files):
+    """The page writes µrad; "urad" (the files' and the console's UDUNITS spelling, also in
+    the case's source text) appears only inside the case file as run (<pre>, verbatim)."""
+    doc = _parse(run_files[1].read_text(encoding="utf-8"))
+    body = doc.find(".//h:body", NS)
+    pre = {id(e) for p in body.iter(f"{{{NS['h']}}}pre") for e in p.iter()}
+    text = " ".join(t for e in body.iter() if id(e) not in pre
+                    for t in (e.text, e.tail) if t)
+    assert "µrad" in text
+    assert not re.search(r"(?<![A-Za-z])urad\b", text)

@@ -67,7 +67,7 @@ def register(sub) -> None:
                    metavar=("NAME", "LOW", "HIGH"),
                    help="bounds of a corrected setting in case-file units (deg, mm); "
                         "repeatable; must lie in the setting's valid range")
-    p.add_argument("--cond-max", type=float, default=COND_MAX,
+    p.add_argument("--cond-max", type=float, default=COND_MAX, metavar="KAPPA",
                    help="largest condition number of the settings kept free (default "
                         "%(default)g); the others are held fixed")
     output_option(p, default="<case>_corrected.toml", what="corrected case file (TOML)")
@@ -104,8 +104,10 @@ def _table(c) -> str:
         if c.at_bound[i]:
             status += " (at bound)"
         se = c.standard_error_per_um[i] / s
-        rows.append((name, c.units[i], f"{c.nominal[i] / s:.8g}", f"{c.correction[i] / s:+.6g}",
-                     f"{c.corrected[i] / s:.8g}", status,
+        corr = c.correction[i] / s
+        rows.append((name, c.units[i], f"{c.nominal[i] / s + 0.0:.8g}",
+                     "0" if corr == 0.0 else f"{corr:+.6g}", f"{c.corrected[i] / s + 0.0:.8g}",
+                     status,
                      "" if math.isnan(se) else f"{se:.3g}",
                      "inf" if math.isinf(c.vif[i]) else f"{c.vif[i]:.3g}"))
     return tabulate(rows, headers=["setting", "unit", "nominal", "correction", "corrected",

@@ -37,15 +37,16 @@ def register(sub) -> None:
         "unless given here.",
     )
     case_argument(p)
-    torque_option(p, default="100 250 500, contact.study.efficiency.EFFICIENCY_MAP_TORQUES")
+    torque_option(p, default="100 250 500")
     misalignment_options(p)
     operating_options(p, many=True, speed_help="pinion speeds [rpm] (default 500 1000 1500 "
-                      "2500 4000, contact.study.efficiency.EFFICIENCY_MAP_SPEEDS)")
+                      "2500 4000)")
     solver_option(p)
     flank_option(p)
     rolls_per_cycle_option(p, default=10)
     segments_option(p)
-    output_option(p, default="<case>_efficiency_map.nc")
+    output_option(p, default="<case>_efficiency_map_<swept inputs>.nc, e.g. "
+                  "kolivand2009_fm_11x41_reference_efficiency_map_speed_torque.nc")
     plots_option(p)
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run the torques on the Dask cluster at ADDRESS (tcp://host:8786)")
@@ -56,9 +57,60 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def run(args: argparse.Namespace) -> int:
+#: how each dimension of an efficiency map is written in the table
+_DIM_TEXT = {"torque": ("T_p", "N m"), "speed": ("speed", "rpm"),
+             "temperature": ("oil", "degC"), "roughness": ("Rq", "um")}
+
+
+def efficiency_table(emap) -> str:
+    """One table of every operating point of an efficiency map [%]: its columns the first
+    swept input of speed, roughness, temperature, torque; a row per combination of the
+    other swept inputs; inputs of one value said above the table (was one table per oil
+    temperature and roughness, 21 one-cell tables for the README's temperature × roughness
+    map)."""
+    import itertools
+
     from tabulate import tabulate
 
+    swept = [d for d in ("speed", "roughness", "temperature", "torque")
+             if emap.sizes.get(d, 1) > 1]
+    col = swept[0] if swept else "speed"
+    rows_dims = [d for d in ("torque", "temperature", "roughness", "speed")
+                 if d != col and emap.sizes.get(d, 1) > 1]
+    fixed = [d for d in ("torque", "speed", "temperature", "roughness")
+             if d != col and d not in rows_dims]
+    eff = emap["efficiency"] * 100
+    for d in fixed:
+        eff = eff.isel({d: 0})
+    head = ", ".join(f"{_DIM_TEXT[d][0]} {float(emap[d].values[0]):g} {_DIM_TEXT[d][1]}"
+                     for d in fixed)
+    rows = []
+    for values in itertools.product(*(emap[d].values for d in rows_dims)):
+        sel = eff.sel(dict(zip(rows_dims, values, strict=True)))
+        rows.append([*(f"{v:g}" for v in values),
+                     *(f"{float(x):.2f}" for x in sel.transpose(col).values)])
+    name, unit = _DIM_TEXT[col]
+    headers = [f"{_DIM_TEXT[d][0]} [{_DIM_TEXT[d][1]}]" for d in rows_dims] + [
+        f"{name} {float(v):g} {unit}" for v in emap[col].values]
+    table = tabulate(rows, headers=headers, tablefmt="github")
+    return f"at {head}:\n{table}" if head else table
+
+
+def sweep_tag(args: argparse.Namespace) -> str:
+    """The inputs an ``efficiency-map`` command sweeps (more than one value) joined by
+    ``_`` (``speed_torque``, ``temperature_roughness``), known before the work: the
+    default output and figure names carry it, so maps of one case over different inputs
+    do not overwrite each other."""
+    from contact.study.efficiency import EFFICIENCY_MAP_SPEEDS, EFFICIENCY_MAP_TORQUES
+
+    sizes = {"speed": len(args.speed or EFFICIENCY_MAP_SPEEDS),
+             "torque": len(args.torque or EFFICIENCY_MAP_TORQUES),
+             "temperature": len(args.temperature or [0]),
+             "roughness": len(args.roughness or [0])}
+    return "_".join(d for d, n in sizes.items() if n > 1) or "point"
+
+
+def run(args: argparse.Namespace) -> int:
     from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options
     from contact.plots import plot_efficiency_map
@@ -67,7 +119,8 @@ def run(args: argparse.Namespace) -> int:
     from friction.operating import OperatingConditions
     from geometry.core.io import write_netcdf
 
-    output = default_output(args, "_efficiency_map.nc")
+    tag = sweep_tag(args)
+    output = default_output(args, f"_efficiency_map_{tag}.nc")
     check_output_file(output)
     if args.plots:
         check_output_dir(args.plots)
@@ -92,17 +145,9 @@ def run(args: argparse.Namespace) -> int:
         scheduler=scheduler,
         n_workers=args.workers,
     )
-    # one table per oil temperature and roughness: every swept value is printed
-    for temp in emap["temperature"].values:
-        for rq in emap["roughness"].values:
-            sel = emap["efficiency"].sel(temperature=temp, roughness=rq) * 100
-            rows = [[f"{T:g}", *(f"{v:.2f}" for v in sel.sel(torque=T).values)]
-                    for T in emap["torque"].values]
-            print(f"case {case.name}: efficiency [%] at {temp:g} degC, Rq {rq:g} um "
-                  f"({op.lubricant}, {op.friction_model}; {misalignment_text(emap.attrs)})")
-            print(tabulate(rows, headers=["T_p [N m]",
-                                          *(f"{n:g} rpm" for n in emap["speed"].values)],
-                           tablefmt="github"))
+    print(f"case {case.name}: efficiency [%] ({op.lubricant}, {op.friction_model}; "
+          f"{misalignment_text(emap.attrs)})")
+    print(efficiency_table(emap))
     share = emap["friction_model_extrapolated_share"]
     if float(share.max()) > 0:
         print(f"WARNING: friction model {emap.attrs.get('friction_model', '')} extrapolated "
@@ -113,6 +158,7 @@ def run(args: argparse.Namespace) -> int:
     path = write_netcdf(emap, Path(output), inputs=case.to_toml())
     print(f"wrote {path}")
     if args.plots:
-        for p in plot_efficiency_map(emap, args.plots, progress=not args.no_progress):
+        for p in plot_efficiency_map(emap, args.plots, progress=not args.no_progress,
+                                     prefix=f"{case.name}_{tag}_"):
             print(f"wrote {p}")
     return 0

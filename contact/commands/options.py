@@ -47,6 +47,7 @@ __all__ = [
     "flank_option",
     "misalignment_from_args",
     "misalignment_options",
+    "number_list",
     "operating_options",
     "output_option",
     "plots_option",
@@ -140,7 +141,14 @@ def resolve_analysis_file(arg: str | None) -> Path:
 
     name = arg if arg is not None else DEFAULT_CASE.removesuffix(".toml")
     path = Path(name)
+    if path.is_dir():
+        raise InputError(f"FILE: {str(path)!r} is a directory, not an analysis file (netCDF)")
     if path.is_file():
+        if not _is_netcdf(path):
+            what = ("a case file (TOML)" if path.suffix == ".toml" else "not a netCDF file")
+            raise InputError(f"FILE: {str(path)!r} is {what}, not an analysis file: "
+                             f"`ltca run {name}` writes {path.stem}.nc, which this command "
+                             "reads")
         return path
     named = Path(f"{path.name.removesuffix('.toml')}.nc")
     if path.suffix in ("", ".toml") and named.is_file():
@@ -149,12 +157,63 @@ def resolve_analysis_file(arg: str | None) -> Path:
     raise InputError(f"FILE: no such file {tried} (`ltca run CASE` writes CASE.nc)")
 
 
+def _is_netcdf(path: Path) -> bool:
+    """Whether a file starts as netCDF does (classic ``CDF``, or netCDF-4's HDF5
+    signature)."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(8)
+    except OSError:
+        return False
+    return head[:3] == b"CDF" or head == b"\x89HDF\r\n\x1a\n"
+
+
+def number_list(text: str) -> list[float]:
+    """``"50"`` or ``"50,250"`` → [50.0] or [50.0, 250.0] (an argparse ``type``).
+
+    Raises
+    ------
+    argparse.ArgumentTypeError
+        A part that is not a finite number.
+    """
+    out = []
+    for part in text.split(","):
+        try:
+            x = float(part)
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"expected numbers separated by spaces or commas, got {text!r}") from None
+        if not math.isfinite(x):
+            raise argparse.ArgumentTypeError(f"must be finite, got {text!r}")
+        out.append(x)
+    return out
+
+
+class _Flatten(argparse.Action):
+    """Store the numbers of ``nargs="+"`` tokens, each a number or comma list, as one list."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        setattr(namespace, self.dest, [x for v in values for x in v])
+
+
+class _One(argparse.Action):
+    """Store one number (a comma list of several is refused)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        if len(values) != 1:
+            parser.error(f"argument {option_string}: one value, got {len(values)}")
+        setattr(namespace, self.dest, values[0])
+
+
 def torque_option(p: argparse.ArgumentParser, *, many: bool = True,
-                  default: str = "the case's [operating] torques") -> None:
-    """``--torque N_M [N_M ...]``: pinion torques [N·m]."""
-    p.add_argument("--torque", type=float, nargs="+" if many else None, default=None,
-                   metavar="N_M", help=f"pinion torque{'s' if many else ''} [N m] "
-                                       f"(default {default})")
+                  default: str = "the case's [operating] torques, 50 250 500 for the "
+                                 "default case") -> None:
+    """``--torque N_M [N_M ...]``: pinion torques [N·m], separated by spaces or commas (as
+    every command takes them)."""
+    p.add_argument("--torque", type=number_list, nargs="+" if many else None,
+                   action=_Flatten if many else _One, default=None, metavar="N_M",
+                   help=f"pinion torque{'s' if many else ''} [N m]"
+                        f"{', by spaces or commas' if many else ''} (default {default})")
 
 
 def misalignment_options(p: argparse.ArgumentParser, *, kind: str = "value",
@@ -216,17 +275,23 @@ def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
                       speed_help: str = "") -> None:
     """``--speed --lubricant --temperature --roughness --friction-model``: the efficiency
     stage's conditions, each defaulting to the case's ``[operating]`` table."""
+    from geometry.case import OPERATING_DEFAULTS as D
+
     g = p.add_argument_group("operating conditions of the efficiency stage (default: the "
-                             "case's [operating] table)")
+                             "case's [operating] table; the values in brackets are the "
+                             "default case's)")
     nargs = "+" if many else None
     g.add_argument("--speed", type=float, nargs=nargs, default=None, metavar="RPM",
-                   help=speed_help or "pinion speed [rpm] (0: no efficiency stage)")
-    g.add_argument("--lubricant", default=None, help="bundled oil name or oil TOML file")
+                   help=speed_help or f"pinion speed [rpm] (0: no efficiency stage) "
+                                      f"({D['pinion_speed']:g} rpm)")
+    g.add_argument("--lubricant", default=None,
+                   help=f"bundled oil name or oil TOML file ({D['lubricant']})")
     g.add_argument("--temperature", type=float, nargs=nargs, default=None, metavar="DEGC",
-                   help="oil inlet temperature [degC]")
+                   help=f"oil inlet temperature [degC] ({D['temperature']:g} °C)")
     g.add_argument("--roughness", type=float, nargs=nargs, default=None, metavar="UM",
-                   help="RMS roughness Rq of each flank [um]")
-    g.add_argument("--friction-model", default=None, help="friction coefficient model")
+                   help=f"RMS roughness Rq of each flank [um] ({D['roughness']:g} µm)")
+    g.add_argument("--friction-model", default=None,
+                   help=f"friction coefficient model ({D['friction_model']})")
 
 
 def rolls_per_cycle_option(p: argparse.ArgumentParser, default: int | None = None,

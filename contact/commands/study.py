@@ -71,7 +71,7 @@ def parse_range(option: str, text: str) -> np.ndarray:
 def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
     case_argument(p, what="study")
     if many_torques:
-        torque_option(p, default="250")
+        torque_option(p)
         p.add_argument("--speed", type=float, nargs="+", default=None, metavar="RPM",
                        help="pinion speeds [rpm]: adds efficiency and power loss (oil, "
                             "temperature, roughness: the case's [operating] table)")
@@ -121,11 +121,13 @@ def register(sub) -> None:
     v = sub.add_parser(
         "vh-check", help="V-H check: offset (V) and pinion mounting (H) moving the pattern "
         "to toe and heel",
-        description="Maps the loaded pattern centre over a V (= ΔE) x H (= ΔP) grid on Dask "
-        "and solves for the displacements that put it at the toe and heel targets at the "
-        "nominal pattern's height; each solution is checked by a single analysis.")
+        description="Maps the loaded pattern centre over a V (= ΔE) x H (= ΔP) grid about the "
+        "case's mounting (its [operating] ΔE, ΔP) on Dask and solves for the displacements "
+        "that put it at the toe and heel targets at the nominal pattern's height; each "
+        "solution is checked by a single analysis.")
     _common(v, many_torques=False)
-    torque_option(v, many=False, default="50")
+    torque_option(v, many=False, default="the first of the case's [operating] torques, 50 "
+                  "for the default case")
     v.add_argument("--toe", type=float, default=None,
                    help="toe target of the pattern centre, face-width fraction (default 0.25)")
     v.add_argument("--heel", type=float, default=None,
@@ -133,8 +135,8 @@ def register(sub) -> None:
     v.add_argument("--profile", type=float, default=None,
                    help="height the centre keeps, depth fraction (default the nominal's)")
     misalignment_options(v, kind="range", extra={
-        "dE": "V grid, offset change ΔE [mm] (default -0.4:0.4:9)",
-        "dP": "H grid, pinion axial ΔP [mm] (default -0.3:0.3:7)"})
+        "dE": "V grid, offset change ΔE [mm] (default the case's ΔE ± 0.4 mm, 9 values)",
+        "dP": "H grid, pinion axial ΔP [mm] (default the case's ΔP ± 0.3 mm, 7 values)"})
     v.set_defaults(func=vh_check_command, study="vh_check")
 
 
@@ -170,6 +172,21 @@ def _plots(ds, args) -> None:
             print(f"wrote {path}")
 
 
+def _torques(args: argparse.Namespace, case) -> list[float]:
+    """``--torque``, else the case's ``[operating]`` torques (as ``ltca run`` takes them)."""
+    return list(args.torque) if args.torque else list(case.operating.torque)
+
+
+#: summaries the tables show in other units than the file: name → (factor, units), so
+#: efficiency and edge share read in % as in every other table of the toolkit
+_SHOWN = {"efficiency": (100.0, "%"), "edge_load_share": (100.0, "%")}
+
+
+def _shown(name: str, x: np.ndarray, units: str) -> tuple[np.ndarray, str]:
+    factor, shown = _SHOWN.get(name, (1.0, units))
+    return np.asarray(x, float) * factor, shown
+
+
 def _ranges_table(ds) -> str:
     import numpy as np
     from tabulate import tabulate
@@ -181,9 +198,9 @@ def _ranges_table(ds) -> str:
     for t in ds["torque"].values:
         for n in names:
             x = ds[n].sel(torque=t).values.astype(float)
-            x = x[np.isfinite(x)]
+            x, units = _shown(n, x[np.isfinite(x)], ds[n].attrs.get("units", ""))
             if x.size:
-                rows.append((f"{t:g}", n, ds[n].attrs.get("units", ""), f"{x.min():.4g}",
+                rows.append((f"{t:g}", n, units, f"{x.min():.4g}",
                              f"{np.median(x):.4g}", f"{x.max():.4g}"))
     return tabulate(rows, headers=("T_p [N m]", "summary", "units", "min", "median", "max"),
                     tablefmt="github")
@@ -213,7 +230,7 @@ def sweep_command(args: argparse.Namespace) -> int:
     if not axes:
         raise InputError("sweep: give at least one of --dE, --dP, --dG, --dSigma, "
                          "--deviation-scale")
-    ds = sweep(case, torque=args.torque, speed=args.speed, **axes, run=run)
+    ds = sweep(case, torque=_torques(args, case), speed=args.speed, **axes, run=run)
     print(f"sweep of {case.name}: " + " x ".join(f"{k} {v.size}" for k, v in axes.items()))
     print(_ranges_table(ds))
     print(_status_line(ds))
@@ -239,7 +256,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
         raise InputError("tolerance: give the distribution of at least one of --dE, --dP, "
                          "--dG, --dSigma, --deviation-scale")
     ds = sample(case, dists, args.n, method=args.method, seed=args.seed,
-                torque=args.torque, speed=args.speed, run=run)
+                torque=_torques(args, case), speed=args.speed, run=run)
     print(f"tolerance analysis of {case.name}: {args.n} draws ({args.method}, seed "
           f"{args.seed}) of " + ", ".join(dists))
     ok = ds["status"].values != 2
@@ -249,10 +266,10 @@ def tolerance_command(args: argparse.Namespace) -> int:
                   "edge_load_share", "efficiency"):
             if n not in ds:
                 continue
-            x = draw_values(ds, n, t)
+            x, units = _shown(n, draw_values(ds, n, t), ds[n].attrs.get("units", ""))
             if x.size:
                 p5, p50, p95 = np.percentile(x, (5, 50, 95))
-                rows.append((f"{t:g}", n, ds[n].attrs.get("units", ""), f"{p5:.4g}",
+                rows.append((f"{t:g}", n, units, f"{p5:.4g}",
                              f"{p50:.4g}", f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
     print(tabulate(rows, headers=("T_p [N m]", "summary", "units", "P5", "P50", "P95", "mean",
                                   "std"), tablefmt="github"))
@@ -275,11 +292,16 @@ def tolerance_command(args: argparse.Namespace) -> int:
     return 0
 
 
+def _or_dash(x: float) -> str:
+    """A target to three decimals, "–" where there is none (the nominal row)."""
+    return f"{x:.3f}" if np.isfinite(x) else "–"
+
+
 def vh_check_command(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.study import vh_check
-    from contact.study.vh_check import VH_DEFAULT_LIMITS, VH_DEFAULT_TORQUE
+    from contact.study.vh_check import VH_DEFAULT_GRID, VH_DEFAULT_LIMITS, VH_DEFAULT_TORQUE
 
     case, run = _prepare(args)
     kw = {}
@@ -287,12 +309,20 @@ def vh_check_command(args: argparse.Namespace) -> int:
         kw["delta_E"] = parse_range("--dE", args.dE)
     if args.dP is not None:
         kw["delta_P"] = parse_range("--dP", args.dP)
-    ds = vh_check(case, torque=args.torque or VH_DEFAULT_TORQUE,
+    torque = args.torque or (case.operating.torque[0] if case.operating.torque
+                             else VH_DEFAULT_TORQUE)
+    nv = len(kw.get("delta_E", VH_DEFAULT_GRID[0]))
+    nh = len(kw.get("delta_P", VH_DEFAULT_GRID[1]))
+    print(f"V-H check of {case.name} at {torque:g} N m about its mounting ΔE "
+          f"{case.misalignment.delta_E:g} mm, ΔP {case.misalignment.delta_P:g} mm: mapping "
+          f"the pattern centre over {nv} x {nh} V-H points ({nv * nh} analyses), then 3 "
+          "single analyses", flush=True)
+    ds = vh_check(case, torque=torque,
                   toe=VH_DEFAULT_LIMITS[0] if args.toe is None else args.toe,
                   heel=VH_DEFAULT_LIMITS[1] if args.heel is None else args.heel,
                   profile=args.profile, **kw, run=run)
     rows = [(str(p), f"{float(r['V']):+.3f}", f"{float(r['H']):+.3f}",
-             f"{float(r['target_u']):.3f}", f"{float(r['pattern_centre_u']):.3f}",
+             _or_dash(float(r['target_u'])), f"{float(r['pattern_centre_u']):.3f}",
              f"{float(r['target_v']):.3f}", f"{float(r['pattern_centre_v']):.3f}",
              f"{float(r['grid_tolerance_u']):.3f}")
             for p, r in ((p, ds.sel(position=p)) for p in ds["position"].values)]

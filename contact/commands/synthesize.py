@@ -55,17 +55,27 @@ def resolve_basic(arg: str | None) -> Path:
     InputError
         Neither a file nor a bundled name (the message lists the bundled ones).
     """
-    from contact.catalogue import DEFAULT_CASE, bundled_case_path
+    from contact.catalogue import DEFAULT_CASE, bundled_case_path, closest_names
     from geometry.core.errors import InputError
 
     name = DEFAULT_CASE if arg is None else arg
+    if Path(name).is_dir():
+        raise InputError(f"BASIC: {name!r} is a directory, not a basic design file (TOML)")
     if Path(name).is_file():
         return Path(name)
-    path = bundled_case_path().parent / "basic" / f"{Path(name).name.removesuffix('.toml')}.toml"
-    if path.is_file():
+    stem = Path(name).name.removesuffix(".toml")
+    path = bundled_case_path().parent / "basic" / f"{stem}.toml"
+    as_path = arg is not None and (len(Path(name).parts) > 1 or name.endswith(".toml"))
+    if path.is_file() and not as_path:
         return path
-    raise InputError(f"BASIC: no such file {name!r} and no bundled basic design of that name; "
-                     f"bundled: {', '.join(bundled_basic_names())}")
+    if as_path:  # a path that is not there: never read a bundled file in its place
+        hint = (f"; the bundled basic design of that name is selected by its name alone: "
+                f"{stem}" if path.is_file() else "")
+        raise InputError(f"BASIC: no such file {name!r}{hint}")
+    close = closest_names(stem, bundled_basic_names())
+    hint = (f"did you mean {' or '.join(close)}?" if close else
+            f"bundled: {', '.join(bundled_basic_names())}")
+    raise InputError(f"BASIC: no such file and no bundled basic design {name!r}; {hint}")
 
 
 def write_text_atomic(path: Path, text: str) -> Path:

@@ -90,6 +90,7 @@ def loaded_tca(
     progress: bool = False,
     problem_sink: Callable[[ContactProblem], None] | None = None,
     transitions: tuple[float, float] | None = None,
+    roll_problems: list[RollProblem] | None = None,
 ) -> xr.Dataset:
     """Loaded TCA of a case at one or more torques over whole mesh cycles (seed §3.3–3.4).
 
@@ -117,6 +118,10 @@ def loaded_tca(
         :func:`contact.utca.transitions` gives them with its defaults (e.g. the
         ``transition_roll`` of :func:`contact.utca.unloaded_tca`, which the pipeline has
         already computed); default: computed here. The roll positions start at M1.
+    roll_problems : list, optional
+        Extended with a :class:`~contact.ltca.roll_loop.RollProblem` (torque, roll index,
+        final problem and its solution) per (torque, roll) of every mesh cycle, roll by
+        roll: what :func:`contact.ltca.mesh_interface.mesh_interface` condenses.
 
     Returns
     -------
@@ -133,12 +138,15 @@ def loaded_tca(
     InputError
         For bad torques or options (the message names the field).
     """
-    sink: list[RollProblem] | None = [] if problem_sink is not None else None
+    wanted = problem_sink is not None or roll_problems is not None
+    sink: list[RollProblem] | None = [] if wanted else None
     ds = _analyse(case, torque, misalignment, flank, options, easeoff, transitions, progress,
                   sink)
     if problem_sink is not None:
         for rp in sink:
             problem_sink(rp.problem)
+    if roll_problems is not None:
+        roll_problems.extend(sink)
     return ds
 
 

@@ -34,7 +34,7 @@ from contact.ltca.results import RollResults
 from contact.ltca.screening import SCREEN_ROUNDS, Screening, carried_torque
 from contact.ltca.segments import Segments
 from contact.ltca.weber import RollSelection, WeberSolution, even_share, weber_solve
-from contact.qp import ContactProblem
+from contact.qp import ContactProblem, ContactSolution
 from geometry.core.errors import InputError
 from geometry.core.hertz import contact_modulus
 
@@ -55,11 +55,15 @@ class RollProblem:
     roll : int
         Index of the roll position in the analysis (0 … J − 1).
     problem : contact.qp.ContactProblem
+    solution : contact.qp.ContactSolution or None
+        Its solution (the forces whose active set the mesh interface condenses the
+        compliance on, :mod:`contact.ltca.mesh_interface`).
     """
 
     torque: float
     roll: int
     problem: ContactProblem
+    solution: ContactSolution | None = None
 
 
 @dataclass(eq=False)
@@ -69,7 +73,8 @@ class _Continuation:
 
     theta: list[float | None]
     force: list[np.ndarray | None]
-    problems: dict[tuple[int, int], ContactProblem] = field(default_factory=dict)
+    problems: dict[tuple[int, int], tuple[ContactProblem, ContactSolution]] = field(
+        default_factory=dict)
 
     @classmethod
     def empty(cls, n_torque: int) -> _Continuation:
@@ -173,8 +178,9 @@ def _repeat_roll(an: _Analysis, cont: _Continuation, src: int, j: int) -> None:
     an.results.copy_roll(src, j)
     for it, T in enumerate(an.setup.torques):
         if an.sink is not None and (it, src) in cont.problems:
+            problem, solution = cont.problems[it, src]
             an.sink(RollProblem(float(T), j, dataclasses.replace(
-                cont.problems[it, src], name=f"{an.setup.case.name} roll {j} T {T:g}")))
+                problem, name=f"{an.setup.case.name} roll {j} T {T:g}"), solution))
 
 
 def _solve_roll(an: _Analysis, cont: _Continuation, j: int, it: int) -> None:
@@ -277,8 +283,8 @@ def _record(an: _Analysis, cont: _Continuation, j: int, it: int, selection: Roll
     sol = ws.solution
     an.results.record(it, j, sol, ws.iterations, selection.pairs.size)
     if an.sink is not None:
-        an.sink(RollProblem(float(an.setup.torques[it]), j, ws.problem))
-        cont.problems[it, j] = ws.problem
+        an.sink(RollProblem(float(an.setup.torques[it]), j, ws.problem, sol))
+        cont.problems[it, j] = (ws.problem, sol)
     if not sol.found:
         log.warning("roll %d, torque %g N m: %s", j, float(an.setup.torques[it]), sol.status)
         return

@@ -15,6 +15,7 @@ contact.plots.style     colour maps, labels, titles, saving
 contact.plots.tooth     the normalised tooth and the projection plane
 contact.plots.flank     ease-off, contact patterns, pressure, friction on the flank
 contact.plots.curves    transmission error, load sharing, efficiency over the mesh cycles
+contact.plots.dynamics  the mesh interface for dynamic models
 contact.plots.maps      ``map_figure`` for any swept study; efficiency maps
 contact.plots.analysis  every figure of an analysis or efficiency map, named; PNG writing
 contact.plots.report    the self-contained HTML report of an analysis file
@@ -47,6 +48,7 @@ from contact.plots.curves import (
     te_comparison_figure,
     transmission_error_figure,
 )
+from contact.plots.dynamics import mesh_interface_figure
 from contact.plots.flank import (
     FRICTION_FLANK_PLOTS,
     contact_pattern_figure,
@@ -85,6 +87,7 @@ __all__ = [
     "friction_flank_figure",
     "load_share_figure",
     "map_figure",
+    "mesh_interface_figure",
     "pair_ute_curves",
     "plot_analysis",
     "plot_efficiency_map",

@@ -37,6 +37,7 @@ from contact.plots.curves import (
     te_comparison_figure,
     transmission_error_figure,
 )
+from contact.plots.dynamics import mesh_interface_figure
 from contact.plots.flank import (
     FRICTION_FLANK_PLOTS,
     contact_pattern_figure,
@@ -63,6 +64,7 @@ __all__ = [
     "analysis_figures",
     "analysis_specs",
     "efficiency_map_figures",
+    "figure_prefix",
     "plot_analysis",
     "plot_efficiency_map",
     "plot_utca",
@@ -171,8 +173,8 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
     FigureSpec
         ``easeoff_topography``, ``easeoff``, ``contact_pattern``,
         ``transmission_error``, ``pressure``, ``load_share``, ``friction_flank``,
-        ``friction_efficiency`` and, for deviated runs, ``deviations_*`` — those whose
-        groups the tree has.
+        ``friction_efficiency``, ``mesh_interface`` and, for deviated runs,
+        ``deviations_*`` — those whose groups the tree has.
 
     Raises
     ------
@@ -219,6 +221,14 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
         yield FigureSpec("friction_efficiency",
                           "Instantaneous mechanical efficiency over the mesh cycles.",
                           partial(efficiency_curve_figure, fr, lt))
+    mi = _group(tree, "mesh_interface")
+    if mi is not None:
+        yield FigureSpec(
+            "mesh_interface",
+            "Mesh interface for dynamic models: effective mesh stiffness along the line of "
+            "action, transmission-error excitation and its mesh harmonics, directional "
+            "rotation radii (Cheng & Lim 2001).",
+            partial(mesh_interface_figure, mi, lt))
     if "theoretical" in tree.children:
         yield from _deviation_specs(tree, eo, ut, lt)
 
@@ -307,17 +317,26 @@ _COST = {"friction_flank": 4.0, "contact_pattern": 2.0, "pressure": 2.0,
          "transmission_error": 2.0, "deviations_pressure": 3.0}
 
 
-def _write(figures, directory: str | os.PathLike[str]) -> list[Path]:
+def _write(figures, directory: str | os.PathLike[str], prefix: str = "") -> list[Path]:
     d = Path(directory)
     d.mkdir(parents=True, exist_ok=True)
-    return [save_png(nf.figure, d / f"{nf.name}.png") for nf in figures]
+    return [save_png(nf.figure, d / f"{prefix}{nf.name}.png") for nf in figures]
+
+
+def figure_prefix(tree_or_ds: xr.DataTree | xr.Dataset) -> str:
+    """``"<case>_"``: the start of every figure file of an analysis, so the figures of
+    several runs written into one directory (the README's walk-through) do not overwrite
+    each other; empty where the data name no case."""
+    case = tree_or_ds.attrs.get("case", "")
+    return f"{case}_" if case else ""
 
 
 def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
                   workers: int = 1, progress: bool = False) -> list[Path]:
     """Write every figure of an analysis (:func:`analysis_figures`) as PNG into ``directory``
-    (created if missing) and return the paths; ``workers`` processes draw them
-    (``progress``: a tqdm bar over the figures).
+    (created if missing), each named ``<case>_<figure>.png`` (:func:`figure_prefix`), and
+    return the paths; ``workers`` processes draw them (``progress``: a tqdm bar over the
+    figures).
 
     Raises
     ------
@@ -327,10 +346,11 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
     d = Path(directory)
     d.mkdir(parents=True, exist_ok=True)
     out = []
+    prefix = figure_prefix(tree)
     for rf in render_analysis(tree, workers, progress=progress):
-        with atomic_path(d / f"{rf.name}.png") as tmp:
+        with atomic_path(d / f"{prefix}{rf.name}.png") as tmp:
             tmp.write_bytes(rf.png)
-        out.append(d / f"{rf.name}.png")
+        out.append(d / f"{prefix}{rf.name}.png")
     return out
 
 
@@ -347,7 +367,7 @@ def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
             NamedFigure("easeoff", "", easeoff_contour_figure(easeoff)),
             NamedFigure("contact_pattern", "", contact_pattern_figure(easeoff, utca)),
             NamedFigure("transmission_error", "", transmission_error_figure(utca, None))]
-    return _write(figs, directory)
+    return _write(figs, directory, figure_prefix(utca) or figure_prefix(easeoff))
 
 
 def efficiency_map_figures(emap: xr.Dataset) -> Iterator[NamedFigure]:
@@ -356,17 +376,24 @@ def efficiency_map_figures(emap: xr.Dataset) -> Iterator[NamedFigure]:
     Yields
     ------
     NamedFigure
-        ``efficiency_map`` (speed × torque contour, a panel per temperature and
-        roughness), ``power_loss_map``, ``efficiency_vs_speed`` and, when roughness or
-        temperature is swept, ``efficiency_vs_roughness``.
+        ``efficiency_map`` (contours over the first two swept inputs of speed, torque,
+        temperature, roughness; a panel per value of the others) and ``power_loss_map``
+        where two or more are swept, ``efficiency_vs_speed`` where speed is swept (or
+        nothing is), ``efficiency_vs_roughness`` where roughness or temperature is.
     """
-    yield NamedFigure("efficiency_map", "Efficiency over pinion speed × torque.",
-                      efficiency_map_figure(emap))
-    if "power_loss" in emap:
-        yield NamedFigure("power_loss_map", "Mesh power loss over pinion speed × torque.",
-                          efficiency_map_figure(emap, "power_loss"))
-    yield NamedFigure("efficiency_vs_speed", "Efficiency against speed (seed Fig. 5.11).",
-                      efficiency_speed_figure(emap))
+    from contact.plots.maps import swept_dims
+
+    swept = swept_dims(emap)
+    if len(swept) >= 2:  # a map needs two swept inputs; one is a line (below)
+        axes = " × ".join(swept[:2])
+        yield NamedFigure("efficiency_map", f"Efficiency over {axes}.",
+                          efficiency_map_figure(emap))
+        if "power_loss" in emap:
+            yield NamedFigure("power_loss_map", f"Mesh power loss over {axes}.",
+                              efficiency_map_figure(emap, "power_loss"))
+    if emap.sizes.get("speed", 1) > 1 or not swept:
+        yield NamedFigure("efficiency_vs_speed", "Efficiency against speed (seed Fig. 5.11).",
+                          efficiency_speed_figure(emap))
     if emap.sizes.get("roughness", 1) > 1 or emap.sizes.get("temperature", 1) > 1:
         yield NamedFigure("efficiency_vs_roughness",
                           "Efficiency against roughness per oil temperature (seed Fig. 5.12).",
@@ -374,12 +401,13 @@ def efficiency_map_figures(emap: xr.Dataset) -> Iterator[NamedFigure]:
 
 
 def plot_efficiency_map(emap: xr.Dataset, directory: str | os.PathLike[str],
-                        progress: bool = False) -> list[Path]:
+                        progress: bool = False, prefix: str | None = None) -> list[Path]:
     """Write the figures of an efficiency map as PNGs into ``directory`` (created if
-    missing) and return the paths (``progress``: a tqdm bar over the figures)."""
+    missing) and return the paths (``progress``: a tqdm bar over the figures); each file
+    starts with ``prefix`` (default ``"<case>_"``)."""
     figures = efficiency_map_figures(emap)
     if progress:
         from tqdm.auto import tqdm
 
         figures = tqdm(figures, desc="figures", unit="figure", leave=False)
-    return _write(figures, directory)
+    return _write(figures, directory, figure_prefix(emap) if prefix is None else prefix)

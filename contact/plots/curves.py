@@ -18,7 +18,14 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from contact.plots.style import case_text, legend_below, panel_grid, title, torque_text
+from contact.plots.style import (
+    EXTRAPOLATED,
+    case_text,
+    legend_below,
+    panel_grid,
+    title,
+    torque_text,
+)
 from contact.plots.tooth import require
 
 __all__ = [
@@ -204,7 +211,8 @@ def efficiency_curve_figure(friction: xr.Dataset,
     ----------
     friction : xarray.Dataset
         ``/friction`` (``efficiency`` (torque, roll) [1], ``mesh_cycle``); roll positions
-        where ``friction_model_extrapolated`` is set are marked with a red cross.
+        where ``friction_model_extrapolated`` is set are marked with a magenta cross
+        (:data:`contact.plots.style.EXTRAPOLATED`).
     ltca : xarray.Dataset, optional
         ``/ltca``, for the case name and misalignment in the title.
 
@@ -213,7 +221,10 @@ def efficiency_curve_figure(friction: xr.Dataset,
     matplotlib.figure.Figure
     """
     require(friction, ("efficiency",), "friction")
-    fig, grid, _ = panel_grid(1, 1, panel=(6.2, 2.4), panel_title_lines=0, left=0.8)
+    # the legend under the panel, where it covers no curve (one row per two entries)
+    n_entries = friction.sizes["torque"] + ("friction_model_extrapolated" in friction)
+    fig, grid, _ = panel_grid(1, 1, panel=(6.2, 2.4), panel_title_lines=0, left=0.8,
+                              legend_rows=-(-n_entries // 2))
     ax = grid[0, 0]
     x = friction["mesh_cycle"].values
     marked = False
@@ -227,13 +238,13 @@ def efficiency_curve_figure(friction: xr.Dataset,
             out = (friction["friction_model_extrapolated"].isel(torque=i) == 1).any(
                 ("pair", "segment")).values
             if out.any():
-                ax.plot(x[out], eff[out], "x", color="crimson", ms=6, mew=1.2,
+                ax.plot(x[out], eff[out], "x", color=EXTRAPOLATED, ms=6, mew=1.2,
                         label=None if marked else "friction model extrapolated")
                 marked = True
     ax.set_xlabel(MESH_CYCLES_LABEL)
     ax.set_ylabel("mechanical efficiency [%]")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    legend_below(fig, ax.get_lines(), ncols=2)
     a = friction.attrs
     op = (f"{a.get('pinion_speed_rpm', float('nan')):g} rpm, {a.get('lubricant', '')} at "
           f"{a.get('inlet_temperature_degC', float('nan')):g} °C, Rq "

@@ -40,6 +40,7 @@ from matplotlib.ticker import MaxNLocator
 from contact.plots.style import (
     DIVERGING,
     EDGE,
+    EXTRAPOLATED,
     SEQUENTIAL,
     axis_label,
     case_text,
@@ -314,14 +315,30 @@ def _norms(panels, edges_apart: bool, diverging: bool):
     return norm, cmap, edge_norm
 
 
-def _peaks(lt: xr.Dataset, v: np.ndarray, edges_apart: bool) -> str:
+def _plain(x: float) -> str:
+    """A peak as a reader writes it: no exponent (1792, 48.3, 0.0412)."""
+    ax = abs(x)
+    return f"{x:.0f}" if ax >= 100 else f"{x:.3g}" if ax >= 1e-3 else f"{x:.2e}"
+
+
+def _peaks(lt: xr.Dataset, v: np.ndarray, edges_apart: bool, unit: str = "") -> str:
+    """``flank peak 1792 MPa, edge peak 6298 MPa`` of a panel's values."""
     e = _edge_mask(lt)
+    u = f" {unit}" if unit else ""
     fv = np.where(e, np.nan, v)
-    text = f"flank peak {np.nanmax(np.abs(fv)):.3g}" if np.isfinite(fv).any() else ""
+    text = f"flank peak {_plain(np.nanmax(np.abs(fv)))}{u}" if np.isfinite(fv).any() else ""
     ev = np.where(e, v, np.nan)
     if edges_apart and np.isfinite(ev).any() and np.nanmax(ev) > 0:
-        text += f", edge peak {np.nanmax(ev):.3g}"
+        text += f", edge peak {_plain(np.nanmax(ev))}{u}"
     return text
+
+
+def _unit_of(label: str) -> str:
+    """The unit in brackets at the end of an axis label (``"pressure [MPa]"`` → MPa)."""
+    if label.endswith("]") and "[" in label:
+        unit = label[label.rindex("[") + 1:-1]
+        return "" if unit == "1" else unit
+    return ""
 
 
 def segment_panels_figure(
@@ -382,7 +399,7 @@ def segment_panels_figure(
             sc = _draw_edges(ax, lt, ev, edge_norm, EDGE) or sc
         elif not edges_apart:
             _draw_edges(ax, lt, ev, norm, cmap)
-        peaks = _peaks(lt, v, edges_apart)
+        peaks = _peaks(lt, v, edges_apart, _unit_of(label))
         ax.set_title(f"{name}{chr(10) if name and peaks else ''}{peaks}", fontsize=8)
         if k % cols:
             ax.set_ylabel("")
@@ -559,9 +576,9 @@ def friction_flank_figure(
         if flag.any():
             for ax in axes[:len(names)]:
                 _draw_segments(ax, ltca, np.where(flag & ~edge, 1.0, np.nan),
-                               Normalize(0.0, 1.0), ListedColormap(["crimson"]), lw=0.6)
-            fig.text(0.01, 0.005, f"red: friction model extrapolated ({int(flag.sum())} "
-                     "segments outside its fitted range)", fontsize=7, color="crimson")
+                               Normalize(0.0, 1.0), ListedColormap([EXTRAPOLATED]), lw=0.6)
+            fig.text(0.01, 0.005, f"magenta: friction model extrapolated ({int(flag.sum())} "
+                     "segments outside its fitted range)", fontsize=7, color=EXTRAPOLATED)
     return fig
 
 

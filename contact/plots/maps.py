@@ -25,6 +25,7 @@ efficiency_roughness_figure  efficiency against roughness per oil temperature (s
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Sequence
 
 import numpy as np
@@ -173,7 +174,9 @@ def map_figure(
     else:
         nrows = ncols = 1
         cells = [{}]
-    fig, grid, (cax,) = panel_grid(nrows, ncols, panel=(3.0, 2.3), colorbars=1, left=0.9)
+    # a lone panel is drawn wider: its title and annotations fit (was 370-400 px wide)
+    fig, grid, (cax,) = panel_grid(nrows, ncols, panel=(3.0 if ncols > 1 else 5.0, 2.3),
+                                   colorbars=1, left=0.9)
     axes = grid.ravel()
     mappable = None
     annotate = xs.size * ys.size <= 40
@@ -210,7 +213,8 @@ def map_figure(
         fixed = {d: ds[d].values[0] for d in squeeze if d in ds.coords}
         heading = (f"{case + ': ' if case else ''}{da.attrs.get('long_name', var)}"
                    + (f" ({facet_title(ds, fixed)})" if fixed else ""))
-    title(fig, heading)
+    chars = int(fig.get_figwidth() * 14)  # 9 pt: about 14 characters per inch
+    title(fig, "\n".join(textwrap.wrap(heading, chars)))
     return fig
 
 
@@ -246,7 +250,21 @@ def efficiency_map_figure(emap: xr.Dataset, var: str = "efficiency") -> Figure:
     """
     ds = _percent(emap)
     what = ds[var].attrs.get("long_name", var) if var in ds else var
-    return map_figure(ds, var, x="speed", y="torque", heading=_emap_title(emap, what))
+    swept = swept_dims(emap)
+    x, y = (swept + [d for d in EMAP_DIMS if d not in swept])[:2] if len(swept) >= 2 \
+        else ("speed", "torque")
+    return map_figure(ds, var, x=x, y=y, heading=_emap_title(emap, what))
+
+
+#: the dimensions of an efficiency map, in the order they take the map's axes
+EMAP_DIMS = ("speed", "torque", "temperature", "roughness")
+
+
+def swept_dims(emap: xr.Dataset) -> list[str]:
+    """The dimensions of an efficiency map with more than one value, in :data:`EMAP_DIMS`
+    order (the map's x and y are the first two: a sweep of temperature × roughness at one
+    speed and torque is drawn over temperature × roughness, not as one-dot panels)."""
+    return [d for d in EMAP_DIMS if emap.sizes.get(d, 1) > 1]
 
 
 def _line_facets(emap: xr.Dataset, dims: Sequence[str]):
@@ -266,7 +284,9 @@ def _efficiency_lines(emap: xr.Dataset, *, x: str, x_name: str, line: str, line_
     if "efficiency" not in emap:
         raise InputError("emap: dataset lacks 'efficiency' (not an efficiency map)")
     cells, nrows, ncols = _line_facets(emap, facets)
-    fig, grid, _ = panel_grid(nrows, ncols, panel=panel, left=0.8)
+    # a single panel takes a page column's width, so its title is not clipped
+    width = panel[0] if ncols > 1 else max(panel[0], 6.0)
+    fig, grid, _ = panel_grid(nrows, ncols, panel=(width, panel[1]), left=0.8)
     axes = grid.ravel()
     xlabel = axis_label(emap[x], x_name)
     for ax, sel in zip(axes, cells, strict=False):
@@ -281,7 +301,8 @@ def _efficiency_lines(emap: xr.Dataset, *, x: str, x_name: str, line: str, line_
                      fontsize=title_size)
     hide_unused(grid, len(cells), xlabel)
     axes[0].legend(fontsize=7)
-    title(fig, _emap_title(emap, what))
+    chars = int(fig.get_figwidth() * 14)  # 9 pt: about 14 characters per inch
+    title(fig, "\n".join(textwrap.wrap(_emap_title(emap, what), chars)))
     return fig
 
 

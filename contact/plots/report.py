@@ -21,10 +21,13 @@ from __future__ import annotations
 
 import base64
 import json
+import math
 import os
+import re
 import tomllib
 from collections import Counter
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -32,27 +35,84 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from contact.ltca.summary import edge_load_share
 from contact.plots.analysis import RenderedFigure, analysis_figures, render_figures
 from contact.plots.style import misalignment_text
 from geometry import __version__
 from geometry.core.atomic_files import atomic_path
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, LTCAError
 
-__all__ = ["SUMMARY_COLUMNS", "render_report", "report_context", "write_report"]
+__all__ = ["SUMMARY_COLUMNS", "SummaryColumn", "render_report", "report_context",
+           "write_report"]
 
-#: columns of the summary table: (key, heading, unit, decimals)
-SUMMARY_COLUMNS = (
-    ("torque", "T_p", "N·m", 0),
-    ("lte_mean", "LTE mean", "µrad", 1),
-    ("lte_peak_to_peak", "p-p", "µrad", 1),
-    ("harmonic_1", "1st", "µrad", 1),
-    ("harmonic_2", "2nd", "µrad", 1),
-    ("harmonic_3", "3rd", "µrad", 1),
-    ("lte_harmonic_rss", "RMS*", "µrad", 1),
-    ("pressure_max_flank", "p_max flank", "MPa", 0),
-    ("pressure_max_edge", "p_max edge", "MPa", 0),
-    ("efficiency_mean", "efficiency", "%", 2),
-    ("power_loss_mean", "power loss", "W", 1),
+@dataclass(frozen=True)
+class SummaryColumn:
+    """One column of the report's summary table.
+
+    Attributes
+    ----------
+    key : str
+        Identifier (the cell's ``data-key`` on the page).
+    heading, unit : str
+        Column heading and unit as shown ([µrad], [MPa] …).
+    decimals : int
+        Decimals shown.
+    value : callable
+        ``value(groups, i)`` → the number at torque index ``i`` (NaN where the file lacks
+        it: shown as "–"); ``groups`` maps ``"ltca"``, ``"friction"``,
+        ``"mesh_interface"`` … to the file's datasets (None where absent).
+    """
+
+    key: str
+    heading: str
+    unit: str
+    decimals: int
+    value: Callable[[Mapping[str, xr.Dataset | None], int], float]
+
+
+def _var(group: str, name: str, scale: float = 1.0, index: int | None = None):
+    """A column value: ``name`` of ``group`` at the torque index (× ``scale``; element
+    ``index`` of a trailing dimension such as ``harmonic``)."""
+    def value(groups: Mapping[str, xr.Dataset | None], i: int) -> float:
+        ds = groups.get(group)
+        if ds is None or name not in ds:
+            return math.nan
+        v = np.asarray(ds[name].values)[i]
+        if index is not None:
+            v = np.ravel(v)
+            return float(v[index]) * scale if index < v.size else math.nan
+        return float(v) * scale
+    return value
+
+
+def _edge_share(groups: Mapping[str, xr.Dataset | None], i: int) -> float:
+    lt = groups.get("ltca")
+    if lt is None or not {"force", "moment_arm", "segment_kind"} <= set(lt.variables):
+        return math.nan
+    return 100.0 * float(edge_load_share(lt)[i])
+
+
+#: The summary table's columns, in order: one entry per column, and a column added here
+#: (e.g. the tooth-root stress of a stress stage, ``_var("stress", "root_stress_max")``)
+#: appears on every report; its ``value`` returns NaN for files that lack it.
+SUMMARY_COLUMNS: tuple[SummaryColumn, ...] = (
+    SummaryColumn("torque", "T_p", "N·m", 0, lambda g, i: float(g["ltca"]["torque"].values[i])),
+    SummaryColumn("lte_mean", "LTE mean", "µrad", 1, _var("ltca", "lte_mean")),
+    SummaryColumn("lte_peak_to_peak", "p-p", "µrad", 1, _var("ltca", "lte_peak_to_peak")),
+    SummaryColumn("harmonic_1", "1st", "µrad", 1, _var("ltca", "lte_harmonics", index=0)),
+    SummaryColumn("harmonic_2", "2nd", "µrad", 1, _var("ltca", "lte_harmonics", index=1)),
+    SummaryColumn("harmonic_3", "3rd", "µrad", 1, _var("ltca", "lte_harmonics", index=2)),
+    SummaryColumn("lte_harmonic_rss", "RMS*", "µrad", 1, _var("ltca", "lte_harmonic_rss")),
+    SummaryColumn("pressure_max_flank", "p_max flank", "MPa", 0,
+                  _var("ltca", "pressure_max_flank")),
+    SummaryColumn("pressure_max_edge", "p_max edge", "MPa", 0,
+                  _var("ltca", "pressure_max_edge")),
+    SummaryColumn("edge_load_share", "edge share", "%", 1, _edge_share),
+    SummaryColumn("mesh_stiffness_mean", "mesh stiffness", "N/µm", 0,
+                  _var("mesh_interface", "mesh_stiffness_mean")),
+    SummaryColumn("efficiency_mean", "efficiency", "%", 2,
+                  _var("friction", "efficiency_mean", 100.0)),
+    SummaryColumn("power_loss_mean", "power loss", "W", 1, _var("friction", "power_loss_mean")),
 )
 
 #: what each optional group gives, said on the page when the file lacks it
@@ -92,28 +152,42 @@ def _inputs(tree: xr.DataTree) -> tuple[dict, str]:
         return {}, text
 
 
-def _summary(tree: xr.DataTree, lt: xr.Dataset, fr: xr.Dataset | None) -> list[dict]:
-    errors = misalignment_text(tree.attrs) or misalignment_text(lt.attrs)
+def _summary(tree: xr.DataTree, lt: xr.Dataset) -> list[dict]:
+    groups = {g: _group(tree, g) for g in ("ltca", "friction", "mesh_interface", "utca")}
+    groups["ltca"] = lt
     rows = []
-    for i, t in enumerate(lt["torque"].values):
-        vals = {"torque": t}
-        for k in ("lte_mean", "lte_peak_to_peak", "lte_harmonic_rss", "pressure_max_flank",
-                  "pressure_max_edge"):
-            vals[k] = lt[k].values[i] if k in lt else np.nan
-        h = lt["lte_harmonics"].values[i] if "lte_harmonics" in lt else np.full(3, np.nan)
-        for n in range(3):
-            vals[f"harmonic_{n + 1}"] = h[n] if n < len(h) else np.nan
-        vals["efficiency_mean"] = (100 * fr["efficiency_mean"].values[i]
-                                   if fr is not None and "efficiency_mean" in fr else np.nan)
-        vals["power_loss_mean"] = (fr["power_loss_mean"].values[i]
-                                   if fr is not None and "power_loss_mean" in fr else np.nan)
+    for i in range(lt.sizes["torque"]):
         found = lt["found"].isel(torque=i).values if "found" in lt else np.array([])
         rows.append({
-            "errors": errors,
-            "cells": [{"key": k, **_cell(vals[k], d)} for k, _, _, d in SUMMARY_COLUMNS],
+            "cells": [{"key": c.key, **_cell(c.value(groups, i), c.decimals)}
+                      for c in SUMMARY_COLUMNS],
             "certified": f"{int(np.sum(found))}/{found.size}",
         })
     return rows
+
+
+def _basic_data(inputs_text: str) -> dict | None:
+    """The pair's basic data (:func:`contact.plots.basic_data.basic_data_rows`) of the
+    case as run, or None where the file's case does not load."""
+    from contact.plots.basic_data import basic_data_rows
+    from geometry.case import case_from_dict
+
+    try:
+        case = case_from_dict(tomllib.loads(inputs_text))
+    except (LTCAError, tomllib.TOMLDecodeError, TypeError, KeyError, ValueError):
+        return None
+    return basic_data_rows(case)
+
+
+#: "urad" (UDUNITS, as files and the console write it) → "µrad" on the page: one spelling
+_URAD = re.compile(r"(?<![A-Za-z])urad\b")
+_UM = re.compile(r"(?<=[\d\s(])um\b")
+
+
+def page_units(text: str) -> str:
+    """ASCII unit spellings of files and the console as the page writes them: ``urad`` →
+    ``µrad``, ``um`` after a number → ``µm``."""
+    return _UM.sub("µm", _URAD.sub("µrad", str(text)))
 
 
 def _solver(lt: xr.Dataset) -> dict:
@@ -215,8 +289,10 @@ def report_context(tree: xr.DataTree,
     Returns
     -------
     dict
-        Keys ``case``, ``provenance``, ``operating``, ``columns``, ``summary``,
-        ``te_table``, ``solver``, ``absent``, ``figures``, ``warnings``, ``versions``.
+        Keys ``case``, ``basic_data`` (:func:`contact.plots.basic_data.basic_data_rows`),
+        ``provenance``, ``operating``, ``misalignment``, ``columns`` and ``summary`` (the
+        table of :data:`SUMMARY_COLUMNS`), ``te_table``, ``solver``, ``absent``,
+        ``figures``, ``warnings``, ``versions``.
 
     Raises
     ------
@@ -250,8 +326,11 @@ def report_context(tree: xr.DataTree,
                        ("title", "date_created", "history", "source", "Conventions",
                         "references") if k in tree.attrs],
         "operating": _operating(tree, lt, fr, eo),
-        "columns": [(h, u) for _, h, u, _ in SUMMARY_COLUMNS],
-        "summary": _summary(tree, lt, fr) if lt is not None else [],
+        "columns": [(c.heading, c.unit) for c in SUMMARY_COLUMNS],
+        "summary": _summary(tree, lt) if lt is not None else [],
+        "misalignment": (misalignment_text(tree.attrs) or misalignment_text(eo.attrs)
+                         or "not recorded"),
+        "basic_data": _basic_data(inputs_text),
         "te_table": _te_table(tree),
         "solver": _solver(lt) if lt is not None else None,
         "absent": absent,
@@ -282,6 +361,7 @@ def render_report(tree: xr.DataTree, figures: Iterable[RenderedFigure] | None = 
         encoding="utf-8")
     env = Environment(autoescape=select_autoescape(default=True, default_for_string=True),
                       trim_blocks=True, lstrip_blocks=True)
+    env.filters["units"] = page_units
     return env.from_string(template).render(**report_context(tree, figures))
 
 

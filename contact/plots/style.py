@@ -44,6 +44,7 @@ __all__ = [
     "DIVERGING",
     "DPI",
     "EDGE",
+    "EXTRAPOLATED",
     "SEQUENTIAL",
     "axis_label",
     "case_text",
@@ -65,6 +66,9 @@ SEQUENTIAL = "viridis"
 DIVERGING = "RdBu_r"
 #: sequential colour map of the edge contact, apart from the flank's
 EDGE = "Reds"
+#: the mark of results a model extrapolated (friction model outside its fitted range): a
+#: colour none of the colour maps above uses, so it never reads as a value
+EXTRAPOLATED = "#ff00ff"
 #: resolution of the written PNGs [dots per inch]
 DPI = 100
 

@@ -44,6 +44,8 @@ import contextlib
 import dataclasses
 import logging
 import os
+import signal
+import threading
 from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -187,6 +189,44 @@ def worker_environment() -> Iterator[None]:
         yield
 
 
+class _QuietDistributed(contextlib.AbstractContextManager):
+    """Once :meth:`on`, distributed's loggers say nothing below CRITICAL until the context
+    exits (their levels are restored then)."""
+
+    def __init__(self) -> None:
+        self.saved: dict[str, int] = {}
+
+    def on(self) -> None:
+        names = ["distributed", *(n for n in logging.root.manager.loggerDict
+                                  if n.startswith("distributed."))]
+        for name in names:
+            lg = logging.getLogger(name)
+            self.saved.setdefault(name, lg.level)
+            lg.setLevel(logging.CRITICAL)
+
+    def __exit__(self, *exc: object) -> None:
+        for name, level in self.saved.items():
+            logging.getLogger(name).setLevel(level)
+
+
+@contextlib.contextmanager
+def _workers_ignore_sigint() -> Iterator[None]:
+    """SIGINT ignored while a local cluster starts its worker processes, which keep that
+    disposition (a spawned Python leaves an ignored SIGINT ignored, and asyncio then
+    installs no handler): Ctrl-C reaches the whole process group, and only this process
+    should answer it — with one line (contact.cli) — while the workers are closed by the
+    cluster, not interrupted mid-task with a traceback each. Off the main thread (where
+    signals cannot be set) nothing changes."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
 @contextlib.contextmanager
 def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator[Any]:
     """A ``distributed.Client`` for a study's ``scheduler`` argument.
@@ -224,11 +264,18 @@ def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator
         n = (os.cpu_count() or 1) if n_workers is None else n_workers
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
             raise InputError(f"n_workers: must be an integer >= 1, got {n_workers!r}")
-        with worker_environment(), \
-                LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                             dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
-                Client(cluster) as client:
-            yield client
+        with _workers_ignore_sigint(), worker_environment():
+            cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                   dashboard_address=None, silence_logs=logging.ERROR)
+        quiet = _QuietDistributed()
+        with quiet, cluster, Client(cluster) as client:
+            try:
+                yield client
+            except KeyboardInterrupt:
+                # Ctrl-C: the workers ignore it (they would each print a traceback); the
+                # cluster closes them, killing those still busy: not worth a warning each
+                quiet.on()
+                raise
         return
     if not isinstance(scheduler, str) or "://" not in scheduler:
         raise InputError(f"scheduler: must be None (a local cluster), 'synchronous', a "

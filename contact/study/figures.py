@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import xarray as xr
+from matplotlib.ticker import MaxNLocator
 
 from contact.study.monte_carlo import draw_values
 from contact.study.points import POINT_INPUTS
@@ -141,18 +142,19 @@ def tolerance_figure(ds: xr.Dataset, torque: float | None = None):
         if values.size:
             ax.hist(values, bins=min(40, max(5, values.size // 10)), color="#3b6fb6",
                     edgecolor="white", linewidth=0.5)
-            for q, ls in zip((5, 50, 95), (":", "-", ":"), strict=True):
-                p = np.percentile(values, q)
+            # the percentiles as lines, their values in the panel's title: no label over
+            # the bars
+            ps = np.percentile(values, (5, 50, 95))
+            for p, ls in zip(ps, (":", "-", ":"), strict=True):
                 ax.axvline(p, color="k", ls=ls, lw=1)
-                ax.annotate(f"P{q} {p:.4g}", (p, 0.98), xycoords=("data", "axes fraction"),
-                            rotation=90, va="top", ha="right", fontsize=7,
-                            bbox={"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none",
-                                  "alpha": 0.8})
+            ax.set_title(f"P5 {ps[0]:.4g} | P50 {ps[1]:.4g} | P95 {ps[2]:.4g}", fontsize=8)
         ax.set_xlabel(label)
         ax.set_ylabel("draws [1]")
+        ax.yaxis.set_major_locator(MaxNLocator(integer=True))  # draws are counted
     n_fail = int((~ok).sum())
     fig.suptitle(f"{ds.attrs.get('case', '')}: {ok.sum()} draws ({ds.attrs.get('method', '')}"
-                 f"{f', {n_fail} failed' if n_fail else ''}) at pinion torque {t:g} N m")
+                 f"{f', {n_fail} failed' if n_fail else ''}) at pinion torque {t:g} N·m; "
+                 "dotted P5, P95, solid P50")
     return fig
 
 

@@ -22,6 +22,7 @@ from collections.abc import Sequence
 import numpy as np
 import xarray as xr
 
+from contact.ltca.summary import edge_load_share
 from geometry.case import Case
 from geometry.core.conventions import binary_flag, data_var
 from geometry.machine.flank import blank_outline
@@ -106,18 +107,6 @@ def _depth_at(case: Case, u: np.ndarray) -> np.ndarray:
     return np.linalg.norm(tip - root, axis=-1)
 
 
-def _edge_share(ltca: xr.Dataset) -> np.ndarray:
-    """(NT,) the share of Σ F·arm carried by the edge segments over all rolls."""
-    force = np.nan_to_num(ltca["force"].values)  # (NT, J, K, S)
-    arm = np.nan_to_num(ltca["moment_arm"].values)  # (J, K, S)
-    moment = force * arm[None]
-    edge = np.asarray(ltca["segment_kind"].values != "curve")
-    total = moment.sum(axis=(1, 2, 3))
-    on_edges = moment[..., edge].sum(axis=(1, 2, 3))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(total > 0, on_edges / total, np.nan)
-
-
 def point_summary(tree: xr.DataTree, case: Case,
                   friction: Sequence[xr.Dataset] = ()) -> dict[str, np.ndarray]:
     """The study summaries of one analysis.
@@ -167,7 +156,7 @@ def point_summary(tree: xr.DataTree, case: Case,
         "ute_peak_to_peak": np.asarray(float(utca["peak_to_peak_transmission_error"])),
         "pressure_max_flank": ltca["pressure_max_flank"].values,
         "pressure_max_edge": ltca["pressure_max_edge"].values,
-        "edge_load_share": _edge_share(ltca),
+        "edge_load_share": edge_load_share(ltca),
         "pattern_centre_u": pat["cu"],
         "pattern_centre_v": pat["cv"],
         "pattern_toe_u": pat["u0"],

@@ -106,10 +106,10 @@ def vh_check(
         (0, 1), toe < heel (default :data:`VH_DEFAULT_LIMITS`).
     profile : float — [1], optional
         Height the pattern centre keeps (fraction of the whole depth from the root);
-        default the nominal assembly's (V = H = 0).
+        default the nominal assembly's.
     delta_E, delta_P : sequence — [mm], optional
-        The V and H grid of the map (default :data:`VH_DEFAULT_GRID`); the solutions are
-        sought inside it.
+        The V and H grid of the map (default :data:`VH_DEFAULT_GRID` about the nominal
+        mounting); the solutions are sought inside it.
     run : contact.study.StudyRun, optional
         As :func:`contact.study.sweep` (``output``: the check's netCDF file; no efficiency
         stage runs, so ``run.operating`` must be None). The former run keywords likewise,
@@ -135,7 +135,9 @@ def vh_check(
     Notes
     -----
     The pattern centre is the pressure-weighted centre of the envelope of maximum
-    pressure over the mesh cycles on the gear flank (seed §3.5).
+    pressure over the mesh cycles on the gear flank (seed §3.5). The nominal position is
+    the case's own mounting, its ``[operating]`` ΔE, ΔP (the default case's are the seed's
+    Table 3.1 values), as every other command takes them; V and H are absolute ΔE and ΔP.
     """
     from contact.pipeline import run_analysis
     from contact.study.summary import point_summary
@@ -149,8 +151,13 @@ def vh_check(
             raise InputError(f"{name}: must be a face-width fraction in (0, 1), got {x!r}")
     if toe >= heel:
         raise InputError(f"toe, heel: need toe < heel, got {toe} and {heel}")
-    V = np.sort(np.asarray(VH_DEFAULT_GRID[0] if delta_E is None else delta_E, float))
-    H = np.sort(np.asarray(VH_DEFAULT_GRID[1] if delta_P is None else delta_P, float))
+    from contact.catalogue import resolve_case
+
+    base = resolve_case(case).misalignment  # the nominal mounting: the case's own
+    V = np.sort(np.asarray(VH_DEFAULT_GRID[0] + base.delta_E if delta_E is None else delta_E,
+                           float))
+    H = np.sort(np.asarray(VH_DEFAULT_GRID[1] + base.delta_P if delta_P is None else delta_P,
+                           float))
     for name, g in (("delta_E", V), ("delta_P", H)):
         if g.ndim != 1 or g.size < 2 or not np.all(np.isfinite(g)) or np.any(np.diff(g) <= 0):
             raise InputError(f"{name}: the V-H grid needs >= 2 distinct finite values [mm], "
@@ -166,7 +173,8 @@ def vh_check(
     c = shared.case
     mis = c.misalignment
     nominal = run_analysis(c, [float(torque)], misalignment=Misalignment(
-        delta_G=mis.delta_G, delta_Sigma=mis.delta_Sigma),
+        delta_E=mis.delta_E, delta_P=mis.delta_P, delta_G=mis.delta_G,
+        delta_Sigma=mis.delta_Sigma),
         flank=flank, options=shared.options, deviations=shared.deviations_at(None),
         geometry=False, theoretical=False, operating=False)
     nom = point_summary(nominal, c)
@@ -187,7 +195,7 @@ def vh_check(
             log.warning("vh_check: the %s target is met only to %.3f of the face width "
                         "within the grid", name, res)
         solutions[name] = sol
-    solutions["nominal"] = np.array([0.0, 0.0])
+    solutions["nominal"] = np.array([mis.delta_E, mis.delta_P])
     envelopes, centres = [], []
     for pos in POSITIONS:
         V_, H_ = solutions[pos]

@@ -19,6 +19,7 @@ read_deviations             either reader, chosen by the file suffix (:data:`REA
 from __future__ import annotations
 
 import csv
+import math
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -93,10 +94,15 @@ def read_deviation_csv(path: str | os.PathLike[str]) -> SurfaceDeviation:
 
     def num(cell: str, where: str) -> float:
         try:
-            return float(cell)
+            x = float(cell)
         except ValueError:
             raise InputError(f"deviation: non-numeric cell {cell!r} at {where} of "
                              f"{os.fspath(path)!r}") from None
+        if not math.isfinite(x):
+            raise InputError(f"deviation: {cell.strip()!r} at {where} of {os.fspath(path)!r}: "
+                             "every cell must be a finite number (a point not measured "
+                             "needs a value, e.g. from its neighbours)")
+        return x
 
     u = [num(c, f"header column {j + 2}") for j, c in enumerate(rows[0][1:])]
     v, d = [], []
@@ -184,6 +190,12 @@ def read_deviation_netcdf(path: str | os.PathLike[str], member: str = "pinion",
         raise InputError(f"{name}: units attribute must be one of {list(DEVIATION_UNITS)}, "
                          f"got {units!r}")
     values = var.transpose(du, dv).values * DEVIATION_UNITS[units]
+    bad = np.argwhere(~np.isfinite(values))
+    if bad.size:
+        i, j = bad[0]
+        raise InputError(f"{name}: {values[i, j]} at {du} = {ds[du].values[i]:g}, {dv} = "
+                         f"{ds[dv].values[j]:g} (index {i}, {j}) of {os.fspath(path)!r}: every "
+                         f"value must be finite ({len(bad)} are not)")
     return SurfaceDeviation(ds[du].values, ds[dv].values, values)
 
 

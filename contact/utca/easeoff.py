@@ -380,8 +380,11 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
             continue
         unit = MISALIGNMENT_UNITS[name]
         scale = math.degrees(1.0) if unit == "deg" else 1.0
-        ranges.append(f"{name} = {value * scale:g} {unit} is out of range, it works from 0 "
-                      f"to about {limit * scale:.3g} {unit}")
+        option = MISALIGNMENT_OPTIONS[name]
+        ranges.append(f"{name} = {value * scale:g} {unit} ({option}) is out of range: beyond "
+                      f"about {limit * scale:.3g} {unit} the flanks no longer meet inside both "
+                      "blanks at all, and the contact pattern leaves the flank well before "
+                      "that (`ltca vh-check` finds how far it stays on the flank)")
     if not ranges:
         ranges = ["no single one of " + ", ".join(given) + " is the cause: reduce them "
                   "together"]
@@ -398,6 +401,8 @@ MIN_VALID_NODES = 16
 
 #: the misalignment fields and the units they are reported in (ΔΣ is held in rad)
 MISALIGNMENT_UNITS = {"delta_E": "mm", "delta_P": "mm", "delta_G": "mm", "delta_Sigma": "deg"}
+#: the command-line options and case-file fields that set them, for messages
+MISALIGNMENT_OPTIONS = {k: f"--d{k[6:]}, [operating] {k}" for k in MISALIGNMENT_UNITS}
 
 
 def misalignment_range(case: Case, name: str, misalignment: Misalignment, *,

@@ -18,6 +18,7 @@ read_netcdf         read a file written by :func:`write_netcdf` fully into memor
 from __future__ import annotations
 
 import datetime as _dt
+import hashlib
 import json
 import logging
 import os
@@ -36,6 +37,7 @@ from geometry.core.version import __version__
 
 __all__ = [
     "ACDD_ATTRS",
+    "ACDD_NOT_APPLICABLE",
     "CONVENTIONS",
     "DEFAULT_COMPLEVEL",
     "STAMPED_ATTRS",
@@ -149,7 +151,7 @@ def check_conventions(obj: xr.Dataset | xr.DataTree) -> None:
 
 #: the conventions every file declares (CF for the variables, ACDD for the discovery
 #: attributes of every group)
-CONVENTIONS = "CF-1.10, ACDD-1.3"
+CONVENTIONS = "CF-1.8, ACDD-1.3"
 #: what the toolkit does, in one sentence (the default ``summary`` of a group)
 _DESCRIPTION = (
     "Loaded tooth contact analysis of hypoid and spiral bevel gears: machine-setting "
@@ -173,10 +175,36 @@ ACDD_ATTRS = {
         "for face-milled and face-hobbed hypoid and spiral bevel gears. Ph.D. dissertation, "
         "The Ohio State University"
     ),
+    "naming_authority": "hypoid-ltca",
+    "project": "hypoid-ltca: loaded tooth contact analysis of hypoid and spiral bevel gears",
+    "program": "hypoid-ltca",
+    "processing_level": "model output: computed from a case file by hypoid-ltca (no "
+                        "measured data unless the case names surface-deviation files)",
+    "publisher_name": "the hypoid-ltca developers",
+    "publisher_type": "group",
+    "publisher_institution": "the hypoid-ltca developers",
+    "creator_institution": "the hypoid-ltca developers",
+    "acknowledgement": "Method after M. Kolivand's 2009 Ohio State dissertation (seed "
+                       "Eq. 2.1-5.11); ISO 23509 blank geometry",
+    "comment": "Units are UDUNITS strings on every variable (mm, rad, urad, N, N/mm, MPa, "
+               "m/s, degC, Pa s, W, 1); names follow docs/nomenclature.md. Text coordinates "
+               "(xyz, path, transition) are written as CF label variables <dim>_label; "
+               "geometry.core.io.read_netcdf restores them.",
 }
+#: ACDD attributes (prefixes) that do not apply to a computed gear analysis and are never
+#: written: no position on the earth or time coverage (geospatial_*, time_coverage_*), no
+#: instrument or platform, no standard names (standard_name_vocabulary: the CF table has
+#: none for gear quantities), no published e-mail or web address (creator_/publisher_
+#: email, url, metadata_link), no controlled keyword vocabulary, no contributors beyond the
+#: creator, no formal issue (date_issued)
+ACDD_NOT_APPLICABLE = ("geospatial_", "time_coverage_", "instrument", "platform",
+                       "standard_name_vocabulary", "creator_email", "creator_url",
+                       "publisher_email", "publisher_url", "metadata_link",
+                       "keywords_vocabulary", "contributor_", "date_issued")
 #: group attributes :func:`write_netcdf` adds where the data do not set them
 STAMPED_ATTRS = ("toolkit", "toolkit_version", "Conventions", "title", "summary", *ACDD_ATTRS,
-                 "source", "date_created", "history", "inputs")
+                 "source", "date_created", "date_modified", "date_metadata_modified", "history",
+                 "inputs", "id")
 #: variable attributes :func:`write_netcdf` adds where the data do not set them
 STAMPED_VARIABLE_ATTRS = ("coverage_content_type",)
 #: zlib level of the data variables unless the caller says otherwise (lossless; the
@@ -202,9 +230,14 @@ def _stamp(ds: xr.Dataset, inputs: str | None, *, created: str, path: str = "/",
         ds.attrs.setdefault(key, value)
     ds.attrs.setdefault("source", f"hypoid-ltca {__version__}")
     ds.attrs.setdefault("date_created", created)
+    ds.attrs.setdefault("date_modified", created)  # a file is written once, whole
+    ds.attrs.setdefault("date_metadata_modified", created)
     ds.attrs.setdefault("history", f"{created} written by hypoid-ltca {__version__}")
     if inputs is not None:
         ds.attrs["inputs"] = inputs
+        # ACDD id: unique within the naming authority and the same for the same inputs
+        digest = hashlib.sha256(inputs.encode("utf-8")).hexdigest()[:16]
+        ds.attrs.setdefault("id", f"hypoid-ltca:{ds.attrs.get('case', 'output')}:{digest}")
     return ds
 
 
@@ -231,10 +264,58 @@ def _encoding(ds: xr.Dataset, complevel: int) -> dict[str, dict[str, Any]]:
                    and bool(np.isnan(np.asarray(var.values)).any()))
         if kind in "fciub":
             enc["_FillValue"] = np.nan if missing else None
+        if kind == "i" and var.dtype.itemsize > 4 and _fits_int32(var):
+            # CF 1.8 §2.2 knows no 64-bit integers: counts and indices fit 32 bits
+            enc["dtype"] = np.dtype("int32")
+        if kind in "UO" and _is_text(var):
+            # text as CF's char arrays (CF 1.8 §2.2; a string-length dimension), which
+            # every CF reader and checker takes; read back as text by xarray
+            enc["dtype"] = "S1"
         if name not in ds.coords and kind in "fciub" and var.ndim > 0 and complevel > 0:
             enc.update(zlib=True, complevel=int(complevel), shuffle=True)
         out[str(name)] = enc
     return out
+
+
+#: the attribute that marks a text label variable written for a text dimension coordinate
+LABEL_OF = "label_of_dimension"
+
+
+def _text_labels(ds: xr.Dataset) -> xr.Dataset:
+    """Text dimension coordinates (``xyz`` = x, y, z …) as CF label variables: a CF
+    coordinate variable must be numeric (CF 1.8 §1.3, §5), so ``xyz`` is written as the
+    auxiliary coordinate ``xyz_label`` along ``xyz`` (CF §6.1), marked with
+    :data:`LABEL_OF`; :func:`read_netcdf` restores the coordinate."""
+    text = [d for d in ds.dims if d in ds.coords and ds[d].dtype.kind in "UO"]
+    if not text:
+        return ds
+    out = ds.rename_vars({d: f"{d}_label" for d in text})
+    for d in text:
+        out[f"{d}_label"].attrs[LABEL_OF] = str(d)
+    return out.drop_indexes([f"{d}_label" for d in text if f"{d}_label" in out.xindexes],
+                            errors="ignore")
+
+
+def _restore_labels(ds: xr.Dataset) -> xr.Dataset:
+    """The text dimension coordinates :func:`_text_labels` wrote as label variables."""
+    labels = {k: str(v.attrs[LABEL_OF]) for k, v in ds.coords.items() if LABEL_OF in v.attrs}
+    if not labels:
+        return ds
+    out = ds.rename_vars(labels)
+    for d in labels.values():
+        out[d].attrs.pop(LABEL_OF)
+        out = out.set_xindex(d)
+    return out
+
+
+def _fits_int32(var: xr.Variable) -> bool:
+    values = np.asarray(var.values)
+    info = np.iinfo(np.int32)
+    return values.size == 0 or (int(values.min()) >= info.min and int(values.max()) <= info.max)
+
+
+def _is_text(var: xr.Variable) -> bool:
+    return all(isinstance(v, str) for v in np.ravel(np.asarray(var.values, dtype=object)))
 
 
 def without_stamps(written: xr.Dataset, original: xr.Dataset) -> xr.Dataset:
@@ -303,14 +384,14 @@ def write_netcdf(
         tree = obj.copy()
         title = tree.attrs.get("title")
         for node in tree.subtree:
-            node.dataset = _stamp(node.to_dataset(inherit=False),
+            node.dataset = _stamp(_text_labels(node.to_dataset(inherit=False)),
                                   inputs if node.is_root else None, created=created,
                                   path=node.path, root_title=title)
         encoding = {node.path: _encoding(node.to_dataset(inherit=False), complevel)
                     for node in tree.subtree}
         out: xr.Dataset | xr.DataTree = tree
     else:
-        out = _stamp(obj, inputs, created=created)
+        out = _stamp(_text_labels(obj), inputs, created=created)
         encoding = _encoding(out, complevel)
     try:
         # a temporary file renamed onto path once complete; Ctrl-C/SIGTERM held until the
@@ -353,9 +434,12 @@ def read_netcdf(path: str | os.PathLike[str], *, tree: bool | None = None):
                 tree = bool(nc.groups)
         if tree:
             with xr.open_datatree(path, engine=_ENGINE) as dt:
-                return dt.load().copy()
+                out = dt.load().copy()
+            for node in out.subtree:
+                node.dataset = _restore_labels(node.to_dataset(inherit=False))
+            return out
         with xr.open_dataset(path, engine=_ENGINE) as ds:
-            return ds.load()
+            return _restore_labels(ds.load())
     except NetCDFError:
         raise
     except Exception as exc:

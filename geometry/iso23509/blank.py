@@ -218,7 +218,7 @@ class BlankGeometry:
 
 _PITCH_ANGLES = frozenset(
     {"delta1", "delta2", "beta_m1", "beta_m2", "zeta_m", "eta", "zeta_mp", "alpha_lim",
-     "alpha_nD", "alpha_nC", "nu", "lambda_", "eta1"}
+     "alpha_nD", "alpha_nC", "alpha_eD", "alpha_eC", "nu", "lambda_", "eta1"}
 )
 _DESIGN_ANGLES = frozenset({"Sigma", "beta_m", "alpha_dD", "alpha_dC", "theta_a2", "theta_f2"})
 
@@ -745,6 +745,8 @@ _PAIR_META: dict[str, tuple[str, str]] = {
     "rho_lim": ("mm", "limit radius of lengthwise curvature"),
     "alpha_nD": ("rad", "generated normal pressure angle, drive flank"),
     "alpha_nC": ("rad", "generated normal pressure angle, coast flank"),
+    "alpha_eD": ("rad", "effective pressure angle, drive flank"),
+    "alpha_eC": ("rad", "effective pressure angle, coast flank"),
     "c_be2": ("1", "face width factor of the gear"),
 }
 #: the gear's face-hobbing tooth trace at P, stored for face hobbing only: dataset name →

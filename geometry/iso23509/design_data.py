@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, fields
+from dataclasses import MISSING, dataclass, fields
 from typing import Any
 
 from geometry.core.errors import InputError, ModelUnavailableError
@@ -127,7 +127,8 @@ class BevelGearDesign:
     backlash : str
         How the backlash is given, one of :data:`BACKLASH_KINDS`: ``"j_en"`` outer normal
         backlash (measured perpendicular to the flanks), ``"j_et2"`` outer transverse
-        backlash of the gear, ``"j_mn"`` mean normal backlash.
+        backlash of the gear (default: the kind ISO 23509's Annex F samples specify),
+        ``"j_mn"`` mean normal backlash.
     backlash_value : float
         The backlash [mm], [0, 2].
     theta_a2, theta_f2 : float
@@ -169,7 +170,7 @@ class BevelGearDesign:
     k_hap: float | None = None
     k_hfp: float | None = None
     x_smn: float | None = None
-    backlash: str
+    backlash: str = "j_et2"
     backlash_value: float
     theta_a2: float
     theta_f2: float
@@ -309,10 +310,25 @@ class BevelGearDesign:
         converted: dict[str, Any] = dict(values)
         for name in _ANGLE_INPUTS & set(values):
             converted[name] = real(name, values[name], unit="deg") * _DEG
-        try:
-            return cls(**converted)
-        except TypeError as exc:  # missing required fields
-            raise InputError(f"incomplete design data: {exc}") from None
+        missing = [f.name for f in fields(cls) if f.name not in converted
+                   and f.default is MISSING and f.default_factory is MISSING]
+        if missing:
+            raise InputError(f"{', '.join(missing)}: missing; ISO 23509 design data need "
+                             + ", ".join(f"{n} ({_FIELD_MEANING.get(n, n)})" for n in missing))
+        return cls(**converted)
+
+
+#: what each field of the design is, for the message of a missing one
+_FIELD_MEANING = {
+    "method": "pitch-cone method 0-3", "Sigma": "shaft angle [deg]", "a": "hypoid offset [mm]",
+    "z1": "number of pinion teeth", "z2": "number of gear teeth",
+    "b2": "gear face width [mm]", "beta_m": "mean spiral angle [deg]",
+    "rc0": "cutter radius [mm]", "alpha_dD": "design pressure angle, drive [deg]",
+    "alpha_dC": "design pressure angle, coast [deg]",
+    "f_alim": "influence factor of the limit pressure angle [1]",
+    "backlash_value": "backlash [mm]", "theta_a2": "gear addendum angle [deg]",
+    "theta_f2": "gear dedendum angle [deg]",
+}
 
 
 def _required(name: str, value: Any, where: str) -> Any:

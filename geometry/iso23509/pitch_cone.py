@@ -152,6 +152,11 @@ class PitchCone:
     alpha_nD, alpha_nC : float
         Generated normal pressure angles of drive and coast flank [rad],
         α_nD = α_dD + f_αlim α_lim, α_nC = α_dC − f_αlim α_lim.
+    alpha_eD, alpha_eC : float
+        Effective pressure angles of drive and coast flank [rad] (ISO 23509, the pressure
+        angles the flanks have in mesh once the limit pressure angle is taken off the
+        generated ones): α_eD = α_nD − α_lim, α_eC = α_nC + α_lim; with f_αlim = 1 they
+        are the design pressure angles.
     c_be2 : float
         Face width factor c_be2 = (R_e2 − R_m2)/b2 [1] (0.5 in Methods 0, 2 and 3).
     Re2 : float
@@ -187,6 +192,8 @@ class PitchCone:
     rho_lim: float
     alpha_nD: float
     alpha_nC: float
+    alpha_eD: float
+    alpha_eC: float
     c_be2: float
     Re2: float
     nu: float
@@ -504,6 +511,7 @@ def _bevel_result(
         zeta_m=0.0, eta=0.0, zeta_mp=0.0, a_p=0.0, t_z1=0.0, t_z2=0.0,
         m_mn=dm2 * math.cos(beta) / design.z2, alpha_lim=0.0, rho_lim=math.inf,
         alpha_nD=design.alpha_dD, alpha_nC=design.alpha_dC,
+        alpha_eD=design.alpha_dD, alpha_eC=design.alpha_dC,
         c_be2=(Re2 - Rm) / design.b2, Re2=Re2,
         **_trace_fields(_trace(design, Rm, beta, delta2)),
     )
@@ -655,6 +663,8 @@ def _hypoid_result(design: BevelGearDesign, st: dict[str, float], r2: float, Re2
         t_z1=Rm1 * math.cos(delta1) - y1, t_z2=Rm2 * math.cos(delta2) - z_p,
         m_mn=2.0 * r2 * math.cos(beta2) / design.z2, alpha_lim=alpha_lim, rho_lim=rho,
         alpha_nD=design.alpha_dD + f * alpha_lim, alpha_nC=design.alpha_dC - f * alpha_lim,
+        alpha_eD=design.alpha_dD + (f - 1.0) * alpha_lim,
+        alpha_eC=design.alpha_dC - (f - 1.0) * alpha_lim,
         c_be2=(Re2 - Rm2) / design.b2, Re2=Re2,
         **_trace_fields(_trace(design, Rm2, beta2, delta2)),
     )

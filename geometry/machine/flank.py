@@ -352,9 +352,21 @@ def flank_at(case: Case, member: str, flank: str, axial, radius,
     rho = np.asarray(radius, dtype=float)
     if z.shape != rho.shape:
         raise InputError(f"axial, radius: must have equal shapes, got {z.shape} and {rho.shape}")
-    sol = solve_envelope(tool.blade, tool.machine, z, rho,
-                         length_scale=blank.outer_cone_distance,
-                         depth=blank.outer_addendum + blank.outer_dedendum, guess=guess)
+    try:
+        sol = solve_envelope(tool.blade, tool.machine, z, rho,
+                             length_scale=blank.outer_cone_distance,
+                             depth=blank.outer_addendum + blank.outer_dedendum, guess=guess)
+    except InputError as exc:
+        if not str(exc).startswith("machine settings:"):
+            raise
+        # name the table whose settings do not generate the flank, and its main settings
+        m = tool.machine
+        raise InputError(
+            f"{member}.machine.{flank}: {str(exc).removeprefix('machine settings: ')} (check "
+            f"{member}.machine.{flank} — radial_setting {m.radial_setting:.4g} mm, "
+            f"cradle_angle {math.degrees(m.cradle_angle):.4g} deg, machine_root_angle "
+            f"{math.degrees(m.machine_root_angle):.4g} deg — and {member}.cutter.{flank} "
+            "against the blank)") from None
     pc = surface_curvatures(sol.family, tool.machine.process == "Generate",
                             blank.outer_cone_distance)
     valid = sol.reason == 0

@@ -368,10 +368,12 @@ def identifiable_subset(jacobian, cond_max: float = COND_MAX):
     singular_values : ndarray
         Of the unit-column Jacobian of the columns with an effect, descending.
     vif : ndarray (settings,)
-        Variance inflation factor 1/(1 − R_j²) of each column among those with an effect,
-        R_j² the (uncentred) fraction of the unit column that the others reproduce by least
-        squares; equal to [(J̃ᵀJ̃)⁻¹]_jj when J̃ has full rank; inf for a column without
-        effect or one the others reproduce to 1e-15.
+        Variance inflation factor 1/(1 − R_j²) of each column with an effect against the
+        *selected* columns, R_j² the (uncentred) fraction of the unit column that the other
+        selected columns reproduce by least squares: for a selected column [(J̃_sᵀJ̃_s)⁻¹]_jj
+        of the selection J̃_s (bounded by its condition number, ≤ cond_max²), for one left
+        out what it would be if it alone were added; inf for a column without effect or one
+        the selection reproduces to 1e-15.
 
     Raises
     ------
@@ -401,10 +403,12 @@ def identifiable_subset(jacobian, cond_max: float = COND_MAX):
     rank = int(np.sum(sv >= sv[0] / cond_max))
     _, _, piv = scipy.linalg.qr(vt[:rank], pivoting=True, mode="economic")
     selected[live[piv[:rank]]] = True
+    kept = selected[live]
     for k, j in enumerate(live):
-        # VIF = 1 / (1 − R²), R² of the unit column regressed on the others (least squares,
-        # also when the others are dependent among themselves)
-        others = np.delete(an, k, axis=1)
+        # VIF = 1 / (1 − R²), R² of the unit column regressed on the determined others (least
+        # squares): for a determined setting, how much the fit that varies it inflates its
+        # variance; for one held fixed, how much it would if it were freed as well
+        others = an[:, kept & (np.arange(live.size) != k)]
         rest = an[:, k]
         if others.shape[1]:
             rest = rest - others @ np.linalg.lstsq(others, rest, rcond=None)[0]
@@ -443,8 +447,9 @@ class SettingCorrection:
     at_bound : ndarray of bool
         Corrected value on a bound.
     vif : ndarray
-        Variance inflation factor among all candidates with an effect (inf: exactly
-        dependent or without effect).
+        Variance inflation factor against the determined settings (of a determined one:
+        within the fit, ≤ cond_max²; of one held fixed: were it freed too; inf: exactly
+        dependent or without effect; :func:`identifiable_subset`).
     standard_error_per_um : ndarray
         Standard error of Δ per µm of measurement noise (NaN for held settings).
     standard_error : ndarray

@@ -1,0 +1,126 @@
+"""Every ``bash`` block of the README runs as written from a scratch directory, or says
+where it runs (issue 38: "every README block should run from any directory or say where
+it runs").
+
+The first block (install and run, install and test) is CI's own command
+(``tests/test_readme.py``); the walk-through has its own test
+(``tests/test_readme_walkthrough.py``). Every other block is parsed here: its ``ltca``
+commands (continuation lines joined) are run in order, block by block, through
+:func:`contact.cli.main` from an empty temporary directory, at the reduced resolution of
+``test_readme_walkthrough.REDUCED`` (only the resolution changes: fewer rolls, torques,
+speeds, steps, evaluations — never a case, a file or another option). A command that is
+not ``ltca`` (``pip``, ``python benchmarks/…``, ``qpbenchmark``) needs a clone: its block
+must say so ("from the root of a clone") and the files it names must exist in the
+repository. No command reads a ``cases/…`` path.
+
+CI runs the blocks whose commands are cheap reduced (< 10 s each); the ``slow`` test runs
+them all (the synthesis, the optimisation).
+"""
+
+from __future__ import annotations
+
+import re
+import shlex
+import tomllib
+from pathlib import Path
+
+import pytest
+from test_readme_walkthrough import REDUCED
+
+from contact.cli import attach_negative_values, build_parser, main
+
+ROOT = Path(__file__).resolve().parent.parent
+README = ROOT / "README.md"
+
+#: further reductions for commands of these blocks (same meaning as REDUCED)
+MORE: dict[str, list[str]] = {
+    "correct": [],
+    "optimize": ["--max-evaluations", "2", "--rolls-per-cycle", "4", "--torque", "50"],
+    "export-problems": ["--rolls-per-cycle", "4", "--torque", "50"],
+    "mesh-interface": ["--rolls-per-cycle", "4", "--segments", "8", "--torque", "50"],
+}
+#: commands too costly for CI even reduced (each > 10 s on one loaded core)
+SLOW = ("synthesize", "optimize", "export-problems")
+CLONE = "from the root of a clone"
+
+
+def _blocks() -> list[tuple[int, str]]:
+    text = README.read_text(encoding="utf-8")
+    return [(text[:m.start()].count("\n") + 1, m.group(1))
+            for m in re.finditer(r"```bash\n(.*?)```", text, flags=re.S)]
+
+
+def _commands(block: str) -> list[list[str]]:
+    joined = re.sub(r"\\\n\s*", " ", block)
+    return [w for w in (shlex.split(ln, comments=True) for ln in joined.splitlines()) if w]
+
+
+#: (line, commands) of every block but the first (CI's) and the walk-through's
+BLOCKS = [(line, _commands(b)) for line, b in _blocks()[1:]
+          if not b.lstrip().startswith("ltca cases")]
+
+
+def _reduced(argv: list[str]) -> list[str]:
+    return [*argv, *REDUCED.get(argv[0], []), *MORE.get(argv[0], [])]
+
+
+def test_blocks_found():
+    assert len(BLOCKS) >= 3  # face hobbing, correction/optimisation, qpbenchmark
+
+
+@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[f"line{n}" for n, _ in BLOCKS])
+def test_block_reads_no_repository_path_and_parses(line, commands):
+    block = dict(_blocks())[line]
+    parser = build_parser()
+    for words in commands:
+        assert not any(w.startswith("cases/") for w in words), words
+        if words[0] == "ltca":
+            args = parser.parse_args(attach_negative_values(_reduced(words[1:])))
+            assert args.command == words[1]
+            continue
+        # not ltca: it needs the clone, and the block says so
+        assert CLONE in block, f"README line {line}: `{' '.join(words)}` needs a clone"
+        for w in words:
+            if w.startswith("benchmarks/") and w.endswith(".py"):
+                assert (ROOT / w).is_file(), w
+        if words[:2] == ["pip", "install"]:
+            extra = re.search(r"\[(\w+)\]", words[2]).group(1)
+            project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+            assert extra in project["optional-dependencies"], extra
+
+
+def _output(words: list[str]) -> str | None:
+    return words[words.index("-o") + 1] if "-o" in words else None
+
+
+def _run_block(commands, tmp_path, monkeypatch, capsys, skip=()) -> int:
+    """Run the block's ``ltca`` commands in order; those in ``skip``, and any that reads a
+    file a skipped one writes, are left out. Returns how many ran."""
+    monkeypatch.chdir(tmp_path)
+    ran, missing = 0, set()
+    for words in commands:
+        if words[0] != "ltca":
+            continue
+        if words[1] in skip or missing & set(words):
+            missing.add(_output(words))
+            continue
+        code = main([*_reduced(words[1:]), "-q"])
+        out = capsys.readouterr()
+        assert code == 0, f"ltca {' '.join(words[1:])}: {out.err}"
+        ran += 1
+    return ran
+
+
+@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[f"line{n}" for n, _ in BLOCKS])
+def test_block_runs_from_a_scratch_directory(line, commands, tmp_path, monkeypatch, capsys):
+    """CI's share: the slow commands (and what reads their files) left out."""
+    cheap = [w for w in commands if w[0] == "ltca" and w[1] not in SLOW]
+    ran = _run_block(commands, tmp_path, monkeypatch, capsys, skip=SLOW)
+    assert ran >= min(1, len(cheap))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[f"line{n}" for n, _ in BLOCKS])
+def test_whole_block_runs_from_a_scratch_directory(line, commands, tmp_path, monkeypatch,
+                                                   capsys):
+    _run_block(commands, tmp_path, monkeypatch, capsys)
