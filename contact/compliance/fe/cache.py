@@ -33,7 +33,7 @@ from typing import Any
 
 import platformdirs
 
-from geometry._version import __version__
+from geometry import __version__
 
 __all__ = ["CACHE_ENV", "FORMAT_VERSION", "cache_directory", "cache_key", "cache_path"]
 

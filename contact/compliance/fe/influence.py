@@ -61,7 +61,7 @@ from contact.compliance.fe.elasticity import (
 from contact.compliance.fe.mapped_mesh import FacetPoints, facet_points
 from contact.compliance.fe.options import ELEMENTS, FEOptions, member_flank
 from contact.compliance.fe.solid import ToothSolid, build_tooth_solid
-from geometry._version import __version__
+from geometry import __version__
 from geometry.atomic_files import atomic_path
 from geometry.conventions import data_var
 from geometry.errors import InputError, LTCAError
@@ -387,7 +387,8 @@ def influence_dataset(model: InfluenceModel, case, *, progress: bool = True,
     Returns
     -------
     xarray.Dataset
-        ``compliance`` (load_u, load_v, tooth, u, v) [mm/N]; ``fillet_stress``
+        ``compliance`` and ``centreline_compliance`` (load_u, load_v, tooth, u, v)
+        [mm/N] (flank points; the tooth's mid-surface under them); ``fillet_stress``
         (load_u, load_v, tooth, side, station, arc, component) [MPa/N];
         ``fillet_max_principal``, ``fillet_min_principal`` (load_u, load_v, tooth, side,
         station, arc) [MPa/N]; positions and fractions of the fillet points and of the

@@ -20,14 +20,18 @@ In a section, each side of a tooth is a curve from the slot bottom up to the fac
   lowest generated point down to s = 0, the edge's tangent point with the blade tip
   plane).
 
-The two sides of a slot meet at its bottom in one of three ways, and this module finds
-which from the curves themselves: (a) the fillets cross (the slot bottom is the crossing:
-generated members cut one flank at a time, whose fillets reach under each other), (b)
-one side's tip-plane line (horizontal in the section from its s = 0 point) meets the
-other side's fillet, or (c) neither, and the bottom is taken as straight between the two
-s = 0 points (exact for a spread-blade Formate cut, whose two tangent points lie on one
-tip plane; an approximation for two separate cuts, whose blade point widths a case does
-not give). Each side is then cut at the slot bottom.
+The two sides of a slot meet at its bottom, and this module finds how from the curves
+themselves. Where one head cuts both flanks in one setting (spread-blade Formate,
+face-hobbing completing; the two flanks' machine settings are equal), the bottom is
+straight between the two fillets' s = 0 points, which lie on its one tip plane. Where the
+flanks are cut separately (generated face-milled pinions), each fillet is continued by its
+blade's tip line (constant v from its s = 0 point, across the slot); where the two cut
+boundaries cross — two fillets reaching under each other, or a tip line meeting the other
+fillet — that is the bottom, rounded by an arc of the blades' edge radius tangent to both
+where they meet at more than 30° (a sharp crease is a notch with a singular elastic
+stress); where they do not cross, the bottom is straight between the s = 0 points. The
+blade point widths, which decide the real bottom of two separate cuts, are not case
+data: this is the model's reading. Each side is then cut at the slot bottom.
 
 Public names
 ------------
