@@ -31,6 +31,10 @@ def register(sub) -> None:
     output_option(p, default="<case>_geometry.nc")
     p.add_argument("--nu", type=int, default=41, help="lengthwise grid points (default 41)")
     p.add_argument("--nv", type=int, default=21, help="profile grid points (default 21)")
+    p.add_argument("--solid", metavar="FILE.stl", default=None,
+                   help="also write each member's FE solid (the loaded tooth, its neighbours, "
+                   "fillets, rim; contact.compliance.fe) as binary STL: FILE_pinion.stl and "
+                   "FILE_gear.stl")
     p.set_defaults(func=run_geometry)
 
     q = sub.add_parser(
@@ -64,6 +68,7 @@ def run_geometry(args: argparse.Namespace) -> int:
 
     output = default_output(args, "_geometry.nc")
     check_output_file(output)
+    solids = _solid_paths(args.solid)
     case = resolve_case(args.case)
     tree = geometry_tree(case, args.nu, args.nv)
     path = write_netcdf(tree, Path(output), inputs=case.to_toml())
@@ -72,7 +77,32 @@ def run_geometry(args: argparse.Namespace) -> int:
             ok = int(node.dataset["mask"].sum())
             print(f"{node.path:16s} {ok} of {node.dataset['mask'].size} grid points generated")
     print(f"wrote {path}")
+    if solids:
+        from contact.compliance.fe import build_tooth_solid
+        from contact.compliance.fe.export import write_stl
+
+        for member, target in solids.items():
+            solid = build_tooth_solid(case, member)
+            written = write_stl(solid.mesh, target, name=f"{case.name} {member} FE solid")
+            print(f"wrote {written} ({solid.mesh.mesh.nelements} elements, "
+                  f"{solid.options.teeth} teeth, rim {solid.rim_depth:.3g} mm)")
     return 0
+
+
+def _solid_paths(solid: str | None) -> dict[str, Path]:
+    """The STL files of ``--solid FILE.stl``: FILE_pinion.stl and FILE_gear.stl (checked
+    before any work)."""
+    if solid is None:
+        return {}
+    from geometry.errors import InputError
+
+    base = Path(solid)
+    if base.suffix.lower() != ".stl":
+        raise InputError(f"--solid: must end in .stl, got {solid!r}")
+    paths = {m: base.with_name(f"{base.stem}_{m}{base.suffix}") for m in ("pinion", "gear")}
+    for target in paths.values():
+        check_output_file(target, option="--solid")
+    return paths
 
 
 def run_plot_geometry(args: argparse.Namespace) -> int:

@@ -1,0 +1,302 @@
+"""Linear elasticity on a mapped hexahedral mesh: stiffness, loads, stresses, direct solvers.
+
+The stiffness matrix K of isotropic linear elasticity, a(u, w) = ∫ σ(u) : ε(w) dV with
+σ = λ tr(ε) I + 2 μ ε, is assembled element by element from scikit-fem's quadratic
+hexahedral bases (shape-function gradients and quadrature weights on the mapped
+elements, 3 × 3 × 3 Gauss points: exact for the parallelepiped and the standard full
+integration of quadratic hexahedra) and one vectorised contraction per block of elements
+(the general scikit-fem assembler loops over the 81 × 81 basis pairs in Python and is
+some ten times slower for these elements). Degree of freedom 3 n + c is the component c
+(x, y, z) of the displacement at node n of the scalar basis.
+
+The solution K u = f is by a sparse direct factorisation, factorised once and applied to
+many right-hand sides: SuperLU through scipy (always there), or Intel MKL PARDISO through
+pypardiso where installed (the optional extra ``fe``), chosen from :data:`SOLVERS`.
+
+Public names
+------------
+ElasticModel        the basis, the stiffness matrix and the material of a mesh
+elastic_model       assemble it
+SOLVERS             solver name → whether it is installed here
+Factorisation       a factorised matrix: solve many right-hand sides
+factorise           factorise the stiffness matrix with its constrained dofs removed
+stress_operator     sparse map from displacements to stress components at points
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import logging
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+import skfem
+
+from contact.compliance.fe.options import ELEMENTS
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.validation import one_of, positive, real
+
+__all__ = [
+    "SOLVERS",
+    "ElasticModel",
+    "Factorisation",
+    "elastic_model",
+    "factorise",
+    "lame",
+    "stress_operator",
+]
+
+log = logging.getLogger(__name__)
+
+_BLOCK = 512  # elements per block of the stiffness contraction (memory ~ block × 81² × 8 B)
+_VOIGT = ((0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1))  # xx, yy, zz, yz, xz, xy
+
+
+def lame(youngs_modulus: float, poisson_ratio: float) -> tuple[float, float]:
+    """Lamé constants λ, μ [MPa] of E [MPa] and ν [1] (isotropic linear elasticity)."""
+    e = positive("youngs_modulus", youngs_modulus, "MPa")
+    nu = real("poisson_ratio", poisson_ratio, unit="1", low=0.0, high=0.5, high_open=True)
+    return e * nu / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))
+
+
+@dataclass(frozen=True, eq=False)
+class ElasticModel:
+    """Stiffness of a mesh.
+
+    Attributes
+    ----------
+    basis : skfem.CellBasis — the scalar quadratic basis (its dofs are the nodes)
+    stiffness : scipy.sparse.csr_matrix (3N, 3N) — K [N/mm]
+    youngs_modulus, poisson_ratio : float — [MPa], [1]
+    assemble_time : float — [s]
+    """
+
+    basis: skfem.CellBasis
+    stiffness: sp.csr_matrix
+    youngs_modulus: float
+    poisson_ratio: float
+    assemble_time: float
+
+    @property
+    def n_dofs(self) -> int:
+        """Unknowns of the unconstrained problem, 3 × nodes."""
+        return self.stiffness.shape[0]
+
+    def element_dofs(self, elements: np.ndarray) -> np.ndarray:
+        """(E, 3 nb) vector dofs of ``elements``, node-major (3 n + c)."""
+        nodes = self.basis.element_dofs[:, elements].T
+        return (3 * nodes[:, :, None] + np.arange(3)).reshape(len(elements), -1)
+
+
+def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
+                  poisson_ratio: float) -> ElasticModel:
+    """Assemble the stiffness matrix of isotropic linear elasticity.
+
+    Parameters
+    ----------
+    mesh : skfem.MeshHex2 — the mapped mesh [mm]
+    element : str — a key of :data:`contact.compliance.fe.options.ELEMENTS`
+    youngs_modulus : float — [MPa]
+    poisson_ratio : float — [1]
+
+    Returns
+    -------
+    ElasticModel
+
+    Raises
+    ------
+    InputError — an unknown element or material constants out of range.
+
+    Notes
+    -----
+    K_e[a i, b j] = Σ_q w_q (λ ∂_i N_a ∂_j N_b + μ ∂_j N_a ∂_i N_b + μ δ_ij ∇N_a·∇N_b)
+    (the Galerkin form of Navier's equations, e.g. Hughes, The Finite Element Method,
+    2000, §2.7), symmetric; tested against beam theory (tests/test_fe_tooth.py).
+    """
+    one_of("element", element, ELEMENTS)
+    lam, mu = lame(youngs_modulus, poisson_ratio)
+    t0 = time.perf_counter()
+    basis = skfem.CellBasis(mesh, ELEMENTS[element][0](), intorder=4)
+    nb = len(basis.basis)
+    grads = np.array([basis.basis[i][0].grad for i in range(nb)])  # (nb, 3, E, Q)
+    dx = basis.dx  # (E, Q)
+    ne = dx.shape[0]
+    n = 3 * basis.N
+    rows, cols, vals = [], [], []
+    eye = np.eye(3)
+    for lo in range(0, ne, _BLOCK):
+        sl = slice(lo, min(lo + _BLOCK, ne))
+        g = grads[:, :, sl]
+        gw = g * dx[None, None, sl]
+        gg = np.einsum("aieq,bjeq->eaibj", gw, g, optimize=True)
+        tr = np.einsum("eakbk->eab", gg)
+        ke = lam * gg + mu * gg.transpose(0, 1, 4, 3, 2)
+        ke = ke + mu * tr[:, :, None, :, None] * eye[None, None, :, None, :]
+        ke = ke.reshape(-1, 3 * nb, 3 * nb)
+        dofs = (3 * basis.element_dofs[:, sl].T[:, :, None] + np.arange(3)).reshape(
+            -1, 3 * nb).astype(np.int32)
+        rows.append(np.repeat(dofs, 3 * nb, axis=1).ravel())
+        cols.append(np.tile(dofs, (1, 3 * nb)).ravel())
+        vals.append(ke.ravel())
+    k = sp.coo_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+                      shape=(n, n)).tocsr()
+    k = 0.5 * (k + k.T)  # exact symmetry (the blocks are symmetric to round-off)
+    elapsed = time.perf_counter() - t0
+    log.info("stiffness: %d elements (%s), %d dofs, %d non-zeros, %.1f s", ne, element, n,
+             k.nnz, elapsed)
+    return ElasticModel(basis, k.tocsr(), float(youngs_modulus), float(poisson_ratio),
+                        elapsed)
+
+
+def stress_operator(model: ElasticModel, grads: np.ndarray, elements: np.ndarray) -> sp.csr_matrix:
+    """Sparse map S (6P, 3N) from the displacements to stresses at P points.
+
+    Parameters
+    ----------
+    model : ElasticModel
+    grads : ndarray (nb, 3, P) — [1/mm] physical gradients of the element's basis
+        functions at each point
+    elements : ndarray (P,) — the element holding each point
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix — row 6 p + k is stress component k (Voigt order xx, yy,
+        zz, yz, xz, xy) [MPa per mm of displacement] at point p.
+
+    Notes
+    -----
+    σ_ij = λ δ_ij ε_kk + 2 μ ε_ij with ε = ½(∇u + ∇uᵀ), u = Σ_a N_a u_a.
+    """
+    lam, mu = lame(model.youngs_modulus, model.poisson_ratio)
+    nb, _, npt = grads.shape
+    dofs = model.element_dofs(np.asarray(elements))  # (P, 3 nb), node-major
+    # coefficient of u_{a c} in σ_ij: λ δ_ij ∂_c N_a + μ (δ_ic ∂_j N_a + δ_jc ∂_i N_a)
+    coef = np.zeros((npt, 6, nb, 3))
+    g = grads.transpose(2, 0, 1)  # (P, nb, 3)
+    for k, (i, j) in enumerate(_VOIGT):
+        if i == j:
+            coef[:, k] += lam * g
+        coef[:, k, :, i] += mu * g[:, :, j]
+        coef[:, k, :, j] += mu * g[:, :, i]
+    coef = coef.reshape(npt, 6, 3 * nb)
+    rows = (6 * np.arange(npt)[:, None, None] + np.arange(6)[None, :, None]) \
+        + np.zeros((1, 1, 3 * nb), dtype=int)
+    cols = np.broadcast_to(dofs[:, None, :], coef.shape)
+    return sp.csr_matrix((coef.ravel(), (rows.ravel(), cols.ravel())),
+                         shape=(6 * npt, model.n_dofs))
+
+
+# --------------------------------------------------------------------------- solvers
+def _pardiso_installed() -> bool:
+    return importlib.util.find_spec("pypardiso") is not None
+
+
+#: solver name → a test whether it is installed here ("auto": PARDISO if installed, else
+#: SuperLU)
+SOLVERS: dict[str, Callable[[], bool]] = {
+    "superlu": lambda: True,
+    "pardiso": _pardiso_installed,
+}
+
+
+@dataclass(eq=False)
+class Factorisation:
+    """A factorised constrained stiffness matrix K_ff.
+
+    Attributes
+    ----------
+    solver : str — which solver factorised it
+    free : ndarray (F,) — the unconstrained dofs, in the order of K_ff
+    n_dofs : int — all dofs (3 × nodes)
+    factor_nnz : int — non-zeros of the factors (memory ≈ 12 bytes each)
+    factor_time : float — [s]
+    """
+
+    solver: str
+    free: np.ndarray
+    n_dofs: int
+    factor_nnz: int
+    factor_time: float
+    _solve: Callable[[np.ndarray], np.ndarray]
+
+    def solve(self, rhs: np.ndarray) -> np.ndarray:
+        """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N]; the
+        constrained dofs are zero and their loads ignored (reactions)."""
+        b = np.asarray(rhs, dtype=float)
+        vec = b.ndim == 1
+        b2 = b[:, None] if vec else b
+        out = np.zeros((self.n_dofs, b2.shape[1]))
+        out[self.free] = self._solve(np.ascontiguousarray(b2[self.free]))
+        return out[:, 0] if vec else out
+
+
+def _superlu(a: sp.csc_matrix):
+    lu = spla.splu(a, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                   options={"SymmetricMode": True})
+    return lu.solve, int(lu.L.nnz + lu.U.nnz)
+
+
+def _pardiso(a: sp.csc_matrix):
+    import pypardiso
+
+    solver = pypardiso.PyPardisoSolver(mtype=2)  # real symmetric positive definite
+    upper = sp.triu(a, format="csr")
+    upper.sort_indices()
+    solver.factorize(upper)
+    nnz = int(solver.get_iparm(18)) if hasattr(solver, "get_iparm") else upper.nnz
+
+    def solve(b: np.ndarray) -> np.ndarray:
+        return np.asarray(solver.solve(upper, b)).reshape(b.shape)
+
+    return solve, nnz
+
+
+def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "auto"
+              ) -> Factorisation:
+    """Factorise K with the ``fixed_dofs`` removed (homogeneous Dirichlet conditions).
+
+    Parameters
+    ----------
+    stiffness : sparse (3N, 3N) — K [N/mm]
+    fixed_dofs : ndarray of int — constrained dofs
+    solver : str — ``"auto"``, or a key of :data:`SOLVERS`
+
+    Returns
+    -------
+    Factorisation
+
+    Raises
+    ------
+    InputError — an unknown solver name or no constrained dof (a free body).
+    ModelUnavailableError — the solver asked for is not installed (with the hint).
+    LTCAError — the factorisation fails (a singular matrix: a part of the mesh not
+        connected to the support).
+    """
+    one_of("solver", solver, ("auto", *SOLVERS))
+    if solver == "auto":
+        solver = "pardiso" if SOLVERS["pardiso"]() else "superlu"
+    elif not SOLVERS[solver]():
+        raise ModelUnavailableError(f"solver: {solver!r} is not installed here (pip install "
+                                    "'hypoid-ltca[fe]'); available: "
+                                    f"{[k for k, ok in SOLVERS.items() if ok()]}")
+    fixed = np.unique(np.asarray(fixed_dofs, dtype=int))
+    if fixed.size == 0:
+        raise InputError("fixed_dofs: at least one dof must be constrained (a free body "
+                         "has no unique displacement)")
+    n = stiffness.shape[0]
+    free = np.setdiff1d(np.arange(n), fixed)
+    a = sp.csr_matrix(stiffness)[free][:, free].tocsc()
+    t0 = time.perf_counter()
+    try:
+        solve, nnz = (_pardiso if solver == "pardiso" else _superlu)(a)
+    except RuntimeError as exc:  # SuperLU: "Factor is exactly singular"
+        raise LTCAError(f"stiffness matrix: factorisation failed ({exc}); part of the mesh "
+                        "is not held by the constraint") from None
+    elapsed = time.perf_counter() - t0
+    log.info("factorised %d unknowns with %s: %d non-zeros in the factors, %.1f s", free.size,
+             solver, nnz, elapsed)
+    return Factorisation(solver, free, n, nnz, elapsed, solve)

@@ -1,0 +1,618 @@
+"""Influence coefficients of a member's teeth: compliance of the flank, stress in the fillets.
+
+For a grid of potential contact points on the working flank of the loaded tooth (the
+ease-off grid's layout, :func:`geometry.flank.projection_grid`: ``load_nu × load_nv``
+points in the lengthwise and profile fractions (u, v)), a unit normal load at each grid
+point is solved on the FE model of :mod:`contact.compliance.fe.solid`, and recorded are
+
+* the **compliance**: the normal displacement, into the tooth, at every grid point of the
+  working flank of the loaded tooth and of each neighbour [mm/N];
+* the **fillet stress**: the stress tensor at points along both root fillets (and the
+  slot bottoms) of every modelled tooth, along the face width [MPa/N], with its maximum
+  and minimum principal values per unit load (the tension and the compression side).
+
+A "unit load at grid point a" is a pressure over the flank proportional to the bilinear
+hat function N_a(u, v) of the grid, normalised to 1 N, acting along the inward normal;
+the displacement "at grid point b" is the normal displacement averaged with the weight
+N_b (the same functional). So the compliance G_ab = f_bᵀ K⁻¹ f_a is symmetric
+(Maxwell–Betti) and converges with the mesh (a point force has no finite displacement in
+an elastic solid), and a load at any point p of the flank is the hat loads with the
+bilinear interpolation weights N_a(p) — the interpolation
+:mod:`contact.compliance.fe.superposition` uses. The local contact deformation over the
+hat's support (about two grid cells) is part of G; the LTCA's contact term (Weber) is
+for the Hertzian zone, much narrower (docs/fe.md).
+
+The coefficients are computed once per member, design and FE model and cached on disk
+(:mod:`contact.compliance.fe.cache`); the cost (time, unknowns, memory) is logged and
+stored in the dataset's attributes.
+
+Public names
+------------
+InfluenceModel         the FE model with its load vectors and stress points
+build_influence_model  build it (solid, stiffness, factorisation, loads, fillet points)
+influence_dataset      solve the unit loads and gather the coefficients
+influence_coefficients the cached entry point: dataset of one member
+hat_weights            bilinear hat functions of a grid at points
+principal_stresses     extreme principal values of stress tensors
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import os
+import sys
+import time
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import xarray as xr
+from tqdm.auto import tqdm
+
+from contact.compliance.fe.cache import cache_key, cache_path
+from contact.compliance.fe.elasticity import (
+    ElasticModel,
+    Factorisation,
+    elastic_model,
+    factorise,
+    stress_operator,
+)
+from contact.compliance.fe.mapped_mesh import FacetPoints, facet_points
+from contact.compliance.fe.options import ELEMENTS, FEOptions, member_flank
+from contact.compliance.fe.solid import ToothSolid, build_tooth_solid
+from geometry import __version__
+from geometry.core.atomic_files import atomic_path
+from geometry.core.conventions import data_var
+from geometry.core.errors import InputError, LTCAError
+from geometry.machine.flank import projection_fractions
+
+__all__ = [
+    "COMPONENTS",
+    "InfluenceModel",
+    "build_influence_model",
+    "hat_weights",
+    "influence_coefficients",
+    "influence_dataset",
+    "principal_stresses",
+]
+
+log = logging.getLogger(__name__)
+
+#: stress components in Voigt order (member frame)
+COMPONENTS = ("xx", "yy", "zz", "yz", "xz", "xy")
+_SIDES = ("left", "right")
+_CHUNK = 32  # right-hand sides per solve
+_LOAD_ORDER = 6  # facet quadrature order of the hat loads (4 × 4 Gauss points per facet)
+
+
+def hat_weights(grid_u: np.ndarray, grid_v: np.ndarray, u, v, *,
+                outside: str = "zero") -> sp.csr_matrix:
+    """Bilinear hat functions N_a(u, v) of a tensor grid at points, sparse (P, nu·nv).
+
+    Parameters
+    ----------
+    grid_u, grid_v : ndarray (nu,), (nv,) — [1] increasing grid fractions
+    u, v : array_like (P,) — [1] the points' fractions
+    outside : str — ``"zero"``: a point outside the grid has no weight (loads beyond
+        the grid); ``"clip"``: it takes the weights of the nearest grid point on the
+        boundary (interpolation)
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix (P, nu nv) — column a = i nv + j is N at grid point
+        (grid_u[i], grid_v[j]); each row sums to 1 inside the grid.
+    """
+    u = np.asarray(u, dtype=float).ravel()
+    v = np.asarray(v, dtype=float).ravel()
+    nu, nv = len(grid_u), len(grid_v)
+    iu = np.clip(np.searchsorted(grid_u, u, side="right") - 1, 0, nu - 2)
+    iv = np.clip(np.searchsorted(grid_v, v, side="right") - 1, 0, nv - 2)
+    tu = (u - grid_u[iu]) / (grid_u[iu + 1] - grid_u[iu])
+    tv = (v - grid_v[iv]) / (grid_v[iv + 1] - grid_v[iv])
+    eps = 1e-12
+    inside = (tu >= -eps) & (tu <= 1 + eps) & (tv >= -eps) & (tv <= 1 + eps)
+    tu, tv = np.clip(tu, 0.0, 1.0), np.clip(tv, 0.0, 1.0)
+    w = np.stack([(1 - tu) * (1 - tv), tu * (1 - tv), (1 - tu) * tv, tu * tv], axis=1)
+    if outside == "zero":
+        w[~inside] = 0.0
+    cols = np.stack([iu * nv + iv, (iu + 1) * nv + iv, iu * nv + iv + 1,
+                     (iu + 1) * nv + iv + 1], axis=1)
+    rows = np.repeat(np.arange(u.size), 4)
+    return sp.csr_matrix((w.ravel(), (rows, cols.ravel())), shape=(u.size, nu * nv))
+
+
+@dataclass(frozen=True, eq=False)
+class _FilletPoints:
+    """Stress points along the roots: P points, their stress operator and layout."""
+
+    operator: sp.csr_matrix  # (6P, 3N)
+    position: np.ndarray  # (P, 3) [mm] member frame
+    u: np.ndarray  # (P,) [1]
+    v: np.ndarray  # (P,) [1]
+    index: np.ndarray  # (teeth, 2 sides, stations, arc points) → point
+    station: np.ndarray  # (stations,) [1] lengthwise parameter fraction
+
+
+@dataclass(eq=False)
+class InfluenceModel:
+    """A member's FE model ready to be loaded on its working flank.
+
+    Attributes
+    ----------
+    solid : ToothSolid
+    elastic : ElasticModel
+    factor : Factorisation — K with the support's dofs removed, factorised
+    flank : str — the working flank (``"concave"``/``"convex"``)
+    side : str — where it lies on the tooth (``"left"``/``"right"``)
+    grid_u, grid_v : ndarray — [1] the load grid's fractions
+    loads : dict[int, csr_matrix (3N, nu nv)] — unit hat loads [N] on the working flank
+        of the tooth at each offset (the responses use the same functionals)
+    centre : dict[int, csr_matrix (3N, nu nv)] — functionals of the displacement of each
+        tooth's mid-surface along the hats' mean inward flank normals (hat averages)
+    hat_area : ndarray (nu nv,) — [mm²] ∫ N_a dA on the loaded tooth
+    fillet : _FilletPoints
+    times : dict — [s] build phases
+    """
+
+    solid: ToothSolid
+    elastic: ElasticModel
+    factor: Factorisation
+    flank: str
+    side: str
+    grid_u: np.ndarray
+    grid_v: np.ndarray
+    loads: dict
+    centre: dict
+    hat_area: np.ndarray
+    fillet: _FilletPoints
+    times: dict
+
+    @property
+    def offsets(self) -> list[int]:
+        """Tooth offsets from the loaded tooth, −K … K."""
+        k = self.solid.layout.neighbours
+        return list(range(-k, k + 1))
+
+    def solve(self, rhs: np.ndarray) -> np.ndarray:
+        """Displacements [mm] of loads ``rhs`` (3N, k) [N]."""
+        return self.factor.solve(rhs)
+
+    def compliance_of(self, disp: np.ndarray) -> np.ndarray:
+        """Normal displacement [mm] in each hat functional of each tooth's working flank:
+        (teeth, nu nv, k) from displacements (3N, k)."""
+        return np.stack([self.loads[t].T @ disp for t in self.offsets])
+
+    def centreline_of(self, disp: np.ndarray) -> np.ndarray:
+        """Displacement [mm] of each tooth's mid-surface under each hat along the hat's
+        inward flank normal: (teeth, nu nv, k) from displacements (3N, k)."""
+        return np.stack([self.centre[t].T @ disp for t in self.offsets])
+
+    def stress_of(self, disp: np.ndarray) -> np.ndarray:
+        """Stress components [MPa] at the fillet points, (P, 6, k), of displacements."""
+        s = self.fillet.operator @ disp
+        return s.reshape(-1, 6, disp.shape[1])
+
+
+def _facet_points(solid: ToothSolid, facets: np.ndarray, order: int) -> FacetPoints:
+    """Gauss points of ``facets`` with basis values, gradients, normals and areas."""
+    return facet_points(solid.mesh, ELEMENTS[solid.options.element][0](), facets, order)
+
+
+def _trace(fb: FacetPoints, n_dofs: int, weight: np.ndarray) -> sp.csr_matrix:
+    """Sparse (3N, 3FQ) map: column 3 q + c picks the c-component of the displacement at
+    facet point q times ``weight`` (F, Q) (the area weight, for integrals)."""
+    nodes = fb.element_dofs  # (nb, F)
+    nf, nq = weight.shape
+    phi = fb.values * weight[None]  # (nb, F, Q)
+    col = np.broadcast_to(np.arange(nf * nq).reshape(nf, nq)[None], phi.shape).ravel()
+    rows = np.concatenate([np.broadcast_to(3 * nodes[:, :, None] + c, phi.shape).ravel()
+                           for c in range(3)])
+    cols = np.concatenate([3 * col + c for c in range(3)])
+    return sp.csr_matrix((np.tile(phi.ravel(), 3), (rows, cols)), shape=(n_dofs, 3 * nf * nq))
+
+
+def _hats(solid: ToothSolid, fb: FacetPoints, grid_u, grid_v):
+    """Hat weights (FQ, nL) at facet points and the hats' areas ∫ N_a dA (nL,) [mm²]."""
+    u, v = projection_fractions(solid.sections.corners, fb.x[2].ravel(),
+                                np.hypot(fb.x[0], fb.x[1]).ravel())
+    hats = hat_weights(grid_u, grid_v, u, v)
+    area = np.asarray(hats.multiply(fb.dx.ravel()[:, None]).sum(axis=0)).ravel()
+    if np.any(area <= 0.0):
+        raise LTCAError(f"{solid.member}: a load grid point has no surface around it (the "
+                        "load grid reaches beyond the meshed flank)")
+    return hats.tocsc(), area
+
+
+def _flank_loads(solid: ToothSolid, elastic: ElasticModel, offset: int, side: str,
+                 grid_u: np.ndarray, grid_v: np.ndarray):
+    """On one tooth: the unit hat loads (3N, nL) [N] on its flank side (the flank's
+    displacement functionals too), the hats' flank areas (nL,) [mm²], and the functionals
+    of its mid-surface's displacement along each hat's mean inward flank normal
+    (3N, nL) [1]."""
+    fb = _facet_points(solid, solid.flank_facets(offset, side), _LOAD_ORDER)
+    hats, area = _hats(solid, fb, grid_u, grid_v)
+    scaled = hats.multiply(1.0 / area[None, :]).tocsc()  # (FQ, nL): N_a / A_a
+    inward = -fb.normal.reshape(3, -1).T  # (FQ, 3)
+    # the load: Σ_q φ_i(q) dA_q (−n(q)) N_a(q)/A_a, as (3FQ, nL) weights of the trace
+    weights = sp.vstack([scaled.multiply(inward[:, [c]]) for c in range(3)]).tocsr()
+    order = np.arange(3 * inward.shape[0]).reshape(3, -1).T.ravel()  # (c, q) → 3 q + c
+    loads = (_trace(fb, elastic.n_dofs, fb.dx) @ weights[order]).tocsr()
+    normal = np.asarray(scaled.T @ (inward * fb.dx.reshape(-1, 1)))
+    normal /= np.linalg.norm(normal, axis=1, keepdims=True)  # (nL, 3) mean inward normals
+    # the tooth's mid-surface (the middle column of its block)
+    lay = solid.layout
+    a_mid = lay.side_a(offset, "left") + 0.5 * lay.across
+    mid = solid.mesh.facets_where(lambda p: (np.abs(p[0] - a_mid) < 1e-9) & (p[1] > lay.rim),
+                                  boundary=False)
+    fm = _facet_points(solid, mid, _LOAD_ORDER)
+    hm, am = _hats(solid, fm, grid_u, grid_v)
+    sm = hm.multiply(1.0 / am[None, :]).tocsc()
+    w_mid = sp.vstack([sm.multiply(normal[:, c][None, :]) for c in range(3)]).tocsr()
+    order_m = np.arange(3 * fm.dx.size).reshape(3, -1).T.ravel()
+    centre = (_trace(fm, elastic.n_dofs, fm.dx) @ w_mid[order_m]).tocsr()
+    return loads, area, centre
+
+
+def _fillet_points(solid: ToothSolid, elastic: ElasticModel, offsets: list[int]) -> _FilletPoints:
+    """Stress points (2 × 2 Gauss points of each facet) along both roots of every tooth."""
+    lay = solid.layout
+    blocks = []
+    for t in offsets:
+        for s, side in enumerate(_SIDES):
+            slot, up = solid.fillet_facets(t, side)
+            blocks.append((t, s, side, np.r_[slot, up], slot.size))
+    facets = np.concatenate([b[3] for b in blocks])
+    fb = _facet_points(solid, facets, 3)
+    par, x, grads = fb.param, fb.x, fb.grads  # (3, F, Q), (3, F, Q), (nb, 3, F, Q)
+    nb, nq = grads.shape[0], grads.shape[3]
+    op = stress_operator(elastic, grads.reshape(nb, 3, -1), np.repeat(fb.tind, nq))
+    stations = None
+    index_blocks, at = [], 0
+    for t, s, side, fac, n_slot in blocks:
+        p = par[:, at:at + fac.size].reshape(3, -1)  # this block's points, facet-major
+        a0 = lay.side_a(t, side)
+        key = np.where(np.arange(fac.size * nq) < n_slot * nq,
+                       (p[0] - (a0 - lay.slot)) if side == "left" else (a0 + lay.slot - p[0]),
+                       lay.slot + p[1] - lay.rim)
+        w = np.round(p[2], 9)
+        st = np.unique(w)
+        arcs = np.unique(np.round(key, 9))
+        if stations is None:
+            stations = st
+        idx = np.full((st.size, arcs.size), -1)
+        idx[np.searchsorted(st, w), np.searchsorted(arcs, np.round(key, 9))] = \
+            at * nq + np.arange(fac.size * nq)
+        if np.any(idx < 0):
+            raise LTCAError("fillet points: the facets do not form a regular grid")
+        index_blocks.append((t, s, idx))
+        at += fac.size
+    k = lay.neighbours
+    index = np.zeros((len(offsets), 2, *index_blocks[0][2].shape), dtype=int)
+    for t, s, idx in index_blocks:
+        index[t + k, s] = idx
+    pos = x.reshape(3, -1).T
+    u, v = projection_fractions(solid.sections.corners, pos[:, 2], np.hypot(pos[:, 0],
+                                                                            pos[:, 1]))
+    return _FilletPoints(op, pos, u, v, index, stations / lay.face)
+
+
+def build_influence_model(case, member: str, flank: str = "drive",
+                          options: FEOptions | None = None, *,
+                          solver: str = "auto") -> InfluenceModel:
+    """Build a member's FE model: solid, stiffness, factorisation, loads, fillet points.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    member : str — ``"pinion"`` or ``"gear"``
+    flank : str — the working flank: ``"drive"`` (default), ``"coast"`` or a flank name
+        (:func:`contact.compliance.fe.options.member_flank`)
+    options : FEOptions, optional
+    solver : str — ``"auto"`` or a key of :data:`contact.compliance.fe.elasticity.SOLVERS`
+
+    Returns
+    -------
+    InfluenceModel
+
+    Raises
+    ------
+    InputError, LTCAError, ModelUnavailableError
+        As :func:`contact.compliance.fe.solid.build_tooth_solid` and
+        :func:`contact.compliance.fe.elasticity.factorise`.
+    """
+    opt = options if options is not None else FEOptions()
+    name = member_flank(case, member, flank)
+    times = {}
+    t0 = time.perf_counter()
+    solid = build_tooth_solid(case, member, opt)
+    times["solid"] = time.perf_counter() - t0
+    elastic = elastic_model(solid.mesh.mesh, opt.element, opt.youngs_modulus,
+                            opt.poisson_ratio)
+    times["assembly"] = elastic.assemble_time
+    n_nodes = elastic.basis.N
+    fixed_nodes = solid.constrained_nodes()
+    fixed_nodes = fixed_nodes[fixed_nodes < n_nodes]
+    factor = factorise(elastic.stiffness,
+                       (3 * fixed_nodes[:, None] + np.arange(3)).ravel(), solver)
+    times["factorisation"] = factor.factor_time
+    t1 = time.perf_counter()
+    grid_u = np.linspace(0.0, 1.0, opt.load_nu)
+    grid_v = np.linspace(*opt.load_v_limits, opt.load_nv)
+    side = solid.sections.side_name(name)
+    loads, centre, area = {}, {}, None
+    for t in range(-solid.layout.neighbours, solid.layout.neighbours + 1):
+        loads[t], a, centre[t] = _flank_loads(solid, elastic, t, side, grid_u, grid_v)
+        if t == 0:
+            area = a
+    fillet = _fillet_points(solid, elastic, sorted(loads))
+    times["loads_and_points"] = time.perf_counter() - t1
+    return InfluenceModel(solid, elastic, factor, name, side, grid_u, grid_v, loads, centre,
+                          area, fillet, times)
+
+
+def _peak_rss_mb() -> float | None:
+    """Peak resident memory of this process [MB], where the platform reports it."""
+    try:
+        import resource
+
+        peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+        return peak / (1024.0 * 1024.0) if sys.platform == "darwin" else peak / 1024.0
+    except (ImportError, OSError):
+        return None
+
+
+def principal_stresses(tensor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Largest and smallest principal values [MPa] of stresses in Voigt order (..., 6)
+    (xx, yy, zz, yz, xz, xy): the extreme eigenvalues of the symmetric tensor."""
+    t = tensor
+    m = np.stack([np.stack([t[..., 0], t[..., 5], t[..., 4]], -1),
+                  np.stack([t[..., 5], t[..., 1], t[..., 3]], -1),
+                  np.stack([t[..., 4], t[..., 3], t[..., 2]], -1)], -2)
+    ev = np.linalg.eigvalsh(m)
+    return ev[..., -1], ev[..., 0]
+
+
+def influence_dataset(model: InfluenceModel, case, *, progress: bool = True,
+                      key: str = "") -> xr.Dataset:
+    """Solve the unit loads of a model and gather the influence coefficients.
+
+    Parameters
+    ----------
+    model : InfluenceModel
+    case : geometry.case.Case — for the case name and the member's blank data
+    progress : bool — show a progress bar over the blocks of loads (tqdm)
+    key : str — the cache key, stored as an attribute
+
+    Returns
+    -------
+    xarray.Dataset
+        ``compliance`` and ``centreline_compliance`` (load_u, load_v, tooth, u, v)
+        [mm/N] (flank points; the tooth's mid-surface under them); ``fillet_stress``
+        (load_u, load_v, tooth, side, station, arc, component) [MPa/N];
+        ``fillet_max_principal``, ``fillet_min_principal`` (load_u, load_v, tooth, side,
+        station, arc) [MPa/N]; positions and fractions of the fillet points and of the
+        load grid on the loaded tooth's flank; the blank corners; the cost as attributes.
+    """
+    t0 = time.perf_counter()
+    nl = model.loads[0].shape[1]
+    offsets = model.offsets
+    comp = np.empty((len(offsets), nl, nl))
+    centre = np.empty((len(offsets), nl, nl))
+    n_pts = model.fillet.position.shape[0]
+    stress = np.empty((n_pts, 6, nl))
+    for lo in tqdm(range(0, nl, _CHUNK), disable=not progress, unit="block",
+                   desc=f"FE {model.solid.member} unit loads"):
+        hi = min(lo + _CHUNK, nl)
+        disp = model.solve(model.loads[0][:, lo:hi].toarray())
+        comp[:, :, lo:hi] = model.compliance_of(disp)
+        centre[:, :, lo:hi] = model.centreline_of(disp)
+        stress[:, :, lo:hi] = model.stress_of(disp)
+    solve_time = time.perf_counter() - t0
+    nu, nv = len(model.grid_u), len(model.grid_v)
+    idx = model.fillet.index  # (T, 2, S, A)
+    # compliance[a, t, b]: load a on the loaded tooth, functional b on tooth t
+    g = comp.transpose(2, 0, 1).reshape(nu, nv, len(offsets), nu, nv)
+    gc = centre.transpose(2, 0, 1).reshape(nu, nv, len(offsets), nu, nv)
+    sig = stress.transpose(2, 0, 1)[:, idx]  # (nl, T, 2, S, A, 6)
+    smax, smin = principal_stresses(sig)
+    sig = sig.reshape(nu, nv, *sig.shape[1:])
+    smax, smin = smax.reshape(nu, nv, *smax.shape[1:]), smin.reshape(nu, nv, *smin.shape[1:])
+    sol = model.solid
+    flank_names = [sol.sections.left_flank, _other(sol.sections.left_flank)]
+    # the load grid's points on the loaded tooth's flank: solve them on the mesh surface
+    x0 = _grid_positions(model)
+    blank = case.member(sol.member).blank
+    cost = {
+        "n_dofs": int(model.elastic.n_dofs),
+        "n_unknowns": int(model.factor.free.size),
+        "n_elements": int(sol.mesh.mesh.nelements),
+        "n_loads": int(nl),
+        "solver": model.factor.solver,
+        "factor_nonzeros": int(model.factor.factor_nnz),
+        "time_solid_s": round(model.times["solid"], 3),
+        "time_assembly_s": round(model.times["assembly"], 3),
+        "time_factorisation_s": round(model.times["factorisation"], 3),
+        "time_loads_s": round(model.times["loads_and_points"], 3),
+        "time_solves_s": round(solve_time, 3),
+        "time_total_s": round(sum(model.times.values()) + solve_time, 3),
+        "min_jacobian_ratio": round(sol.mesh.min_jacobian, 4),
+    }
+    peak = _peak_rss_mb()
+    if peak is not None:
+        cost["peak_rss_mb"] = round(peak, 1)
+    log.info("%s %s influence coefficients: %s", case.name, sol.member, cost)
+    coords = {
+        "load_u": ("load_u", model.grid_u, {
+            "units": "1", "long_name": "lengthwise fraction of the unit load, toe 0 to heel 1"}),
+        "load_v": ("load_v", model.grid_v, {
+            "units": "1", "long_name": "profile fraction of the unit load, root 0 to tip 1"}),
+        "tooth": ("tooth", np.array(offsets, dtype=np.int32), {
+            "units": "1", "long_name": "tooth offset from the loaded tooth"}),
+        "u": ("u", model.grid_u, {"units": "1", "long_name":
+                                  "lengthwise fraction of the response point"}),
+        "v": ("v", model.grid_v, {"units": "1", "long_name":
+                                  "profile fraction of the response point"}),
+        "side": ("side", np.array(flank_names), {"long_name":
+                                                 "flank on whose side the root fillet lies"}),
+        "station": ("station", model.fillet.station, {
+            "units": "1", "long_name": "lengthwise parameter of the fillet point (face "
+                                       "fraction of its element plane), toe 0 to heel 1"}),
+        "arc": ("arc", np.arange(idx.shape[3], dtype=np.int32), {
+            "units": "1", "long_name": "fillet point index from the slot middle up to the "
+                                       "flank"}),
+        "component": ("component", np.array(COMPONENTS), {
+            "long_name": "stress component in the member frame (Voigt order)"}),
+        "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "member-frame component"}),
+        "corner_u": ("corner_u", np.array([0, 1], dtype=np.int32), {
+            "units": "1", "long_name": "toe 0 / heel 1"}),
+        "corner_v": ("corner_v", np.array([0, 1], dtype=np.int32), {
+            "units": "1", "long_name": "root 0 / tip 1"}),
+        "zr": ("zr", np.array(["z", "rho"]), {"long_name": "projection-plane component"}),
+    }
+    fpos = model.fillet.position[idx]  # (T, 2, S, A, 3)
+    data = {
+        "compliance": data_var(("load_u", "load_v", "tooth", "u", "v"), g, "mm/N",
+                               "normal displacement into the tooth at the response point of "
+                               "the working flank of the tooth, per unit normal load on the "
+                               "loaded tooth's working flank"),
+        "centreline_compliance": data_var(
+            ("load_u", "load_v", "tooth", "u", "v"), gc, "mm/N",
+            "displacement of the tooth's mid-surface under the response point along its "
+            "inward flank normal, per unit normal load on the loaded tooth's working flank "
+            "(bending, shear and rim: the compliance without the local compression between "
+            "flank and mid-surface)"),
+        "fillet_stress": data_var(
+            ("load_u", "load_v", "tooth", "side", "station", "arc", "component"), sig,
+            "MPa/N", "stress at the root fillet point per unit normal load"),
+        "fillet_max_principal": data_var(
+            ("load_u", "load_v", "tooth", "side", "station", "arc"), smax, "MPa/N",
+            "maximum principal stress at the root fillet point per unit normal load "
+            "(tension side)"),
+        "fillet_min_principal": data_var(
+            ("load_u", "load_v", "tooth", "side", "station", "arc"), smin, "MPa/N",
+            "minimum principal stress at the root fillet point per unit normal load "
+            "(compression side)"),
+        "fillet_position": data_var(("tooth", "side", "station", "arc", "xyz"), fpos, "mm",
+                                    "root fillet point in the member frame"),
+        "fillet_u": data_var(("tooth", "side", "station", "arc"), model.fillet.u[idx], "1",
+                             "lengthwise fraction of the root fillet point"),
+        "fillet_v": data_var(("tooth", "side", "station", "arc"), model.fillet.v[idx], "1",
+                             "profile fraction of the root fillet point (negative: under "
+                             "the root cone)"),
+        "flank_position": data_var(("u", "v", "xyz"), x0, "mm",
+                                   "load grid point on the loaded tooth's working flank "
+                                   "(FE surface), member frame"),
+        "hat_area": data_var(("u", "v"), model.hat_area.reshape(nu, nv), "mm2",
+                             "flank area of the unit load's hat function"),
+        "blank_corners": data_var(("corner_u", "corner_v", "zr"), sol.sections.corners, "mm",
+                                  "the blank's projection-plane corners (z, rho)"),
+    }
+    opt = sol.options
+    attrs = {
+        "title": f"{case.name}: {sol.member} FE influence coefficients",
+        "case": case.name,
+        "member": sol.member,
+        "flank": model.flank,
+        "flank_side": model.side,
+        "teeth": int(blank.teeth),
+        "hand": case.member(sol.member).hand,
+        "pitch": float(sol.pitch),
+        "concave_shift": int(sol.sections.concave_shift),
+        "rim_depth_mm": float(sol.rim_depth),
+        "slot_depth_mm": float(sol.sections.slot_depth),
+        "constraint": opt.constraint,
+        "element": opt.element,
+        "options": opt.to_json(),
+        "cache_key": key,
+        "toolkit_version": __version__,
+        "frame": "member frame: origin at the crossing point, z along the member axis "
+                 "towards its back; the loaded tooth is the reference tooth of "
+                 "geometry.flank (tooth offsets turn it by whole pitches)",
+        "load": "unit normal force distributed over the flank as the bilinear hat "
+                "function of the load grid point (influence coefficients, docs/fe.md)",
+        "source": "contact.compliance.fe.influence (3-D linear elasticity, quadratic "
+                  "hexahedra, scikit-fem)",
+        "cost": json.dumps(cost, sort_keys=True),
+        **{f"cost_{k}": v for k, v in cost.items()},
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _other(flank: str) -> str:
+    return "concave" if flank == "convex" else "convex"
+
+
+def _grid_positions(model: InfluenceModel) -> np.ndarray:
+    """Member-frame points of the load grid on the loaded tooth's working flank (nu, nv, 3)
+    [mm]: the generated flank of the sections (:meth:`ToothSections.flank_angle`)."""
+    sec = model.solid.sections
+    uu, vv = np.meshgrid(model.grid_u, model.grid_v, indexing="ij")
+    phi = sec.flank_angle(model.flank, uu, vv)
+    c = sec.corners
+    z = (1 - uu) * (1 - vv) * c[0, 0, 0] + uu * (1 - vv) * c[1, 0, 0] \
+        + (1 - uu) * vv * c[0, 1, 0] + uu * vv * c[1, 1, 0]
+    rho = (1 - uu) * (1 - vv) * c[0, 0, 1] + uu * (1 - vv) * c[1, 0, 1] \
+        + (1 - uu) * vv * c[0, 1, 1] + uu * vv * c[1, 1, 1]
+    return np.stack([rho * np.cos(phi), rho * np.sin(phi), z], axis=-1)
+
+
+def influence_coefficients(case, member: str, flank: str = "drive",
+                           options: FEOptions | None = None, *, cache: bool = True,
+                           cache_dir: str | os.PathLike[str] | None = None,
+                           progress: bool = True, solver: str = "auto") -> xr.Dataset:
+    """A member's FE influence coefficients, from the cache or built and cached.
+
+    Parameters
+    ----------
+    case : geometry.case.Case — face milling or face hobbing
+    member : str — ``"pinion"`` or ``"gear"``
+    flank : str — the working flank: ``"drive"`` (default), ``"coast"`` or a flank name
+    options : FEOptions, optional — the FE model (default ``FEOptions()``)
+    cache : bool — read and write the cache (default True)
+    cache_dir : path, optional — the cache directory (default
+        :func:`contact.compliance.fe.cache.cache_directory`)
+    progress : bool — a progress bar while the unit loads are solved
+    solver : str — ``"auto"`` (PARDISO if installed, else SuperLU) or a solver name
+
+    Returns
+    -------
+    xarray.Dataset — see :func:`influence_dataset`; the attribute ``cache_key`` names it.
+
+    Raises
+    ------
+    InputError, LTCAError, ModelUnavailableError
+        As :func:`build_influence_model`; an unreadable cache file is rebuilt (logged).
+
+    Notes
+    -----
+    Written atomically (geometry.atomic_files): a file in the cache is always complete.
+    The key covers the member's generating inputs, the working flank, the options and the
+    toolkit version (:func:`contact.compliance.fe.cache.cache_key`).
+    """
+    opt = options if options is not None else FEOptions()
+    if not isinstance(opt, FEOptions):
+        raise InputError(f"options: must be an FEOptions, got {type(opt).__name__}")
+    name = member_flank(case, member, flank)
+    key = cache_key(case.member(member), name, opt)
+    path = cache_path(key, cache_dir)
+    if cache and path.exists():
+        try:
+            with xr.open_dataset(path, engine="netcdf4") as ds:
+                ds = ds.load()
+            if ds.attrs.get("cache_key") == key:
+                log.info("%s %s influence coefficients read from %s", case.name, member, path)
+                return ds
+            log.warning("%s: cache file holds another key; rebuilding", path)
+        except (OSError, ValueError) as exc:
+            log.warning("%s: unreadable cache file (%s); rebuilding", path, exc)
+    model = build_influence_model(case, member, name, opt, solver=solver)
+    ds = influence_dataset(model, case, progress=progress, key=key)
+    if cache:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        enc = {k: {"zlib": True, "complevel": 4} for k in ds.data_vars}
+        with atomic_path(path) as tmp:
+            ds.to_netcdf(tmp, engine="netcdf4", encoding=enc)
+        log.info("%s %s influence coefficients cached in %s", case.name, member, path)
+    return ds
+

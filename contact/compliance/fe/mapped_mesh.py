@@ -1,0 +1,250 @@
+"""Structured hexahedral meshes mapped from a parameter box: the mesh code of the FE models.
+
+A mesh is laid out in a *parameter space* of integer-spaced vertices (a tensor box of
+unit cells, some of them removed), turned into 27-node hexahedra (skfem.MeshHex2) whose
+nodes — vertices, edge, face and cell midpoints — are then moved by a mapping from the
+parameter space to the physical space. Because every node of the quadratic geometry is
+placed by the mapping, curved boundaries are followed to second order (isoparametric
+elements). The same code meshes the gear teeth (:mod:`contact.compliance.fe.solid`) and
+the cantilever that checks it against beam theory (tests/test_fe_tooth.py).
+
+Public names
+------------
+graded             node positions of a graded 1-D division, vertices and midpoints
+geometric_ratio    the growth factor that gives a geometric division a first element size
+at_index           interpolate such a table at a parameter coordinate
+MappedMesh         the parameter mesh, the physical mesh and the parameter coordinates
+mapped_mesh        build one
+FacetPoints        quadrature points on facets with basis values, gradients and normals
+facet_points       compute them
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numpy as np
+import skfem
+
+from geometry.core.errors import InputError, LTCAError
+
+__all__ = ["FacetPoints", "MappedMesh", "at_index", "facet_points", "geometric_ratio", "graded",
+           "mapped_mesh"]
+
+
+def graded(n: int, ratio: float = 1.0, fine: str = "start") -> np.ndarray:
+    """Fractions in [0, 1] of a graded division into ``n`` elements, at 2n + 1 points.
+
+    Parameters
+    ----------
+    n : int — [1] elements, ≥ 1
+    ratio : float — [1] largest / smallest element (geometric progression), ≥ 1
+    fine : str — where the smallest elements are: ``"start"``, ``"end"`` or ``"both"``
+        (symmetric; ``n`` even)
+
+    Returns
+    -------
+    ndarray (2n + 1,) — [1] the vertices at even indices, the element midpoints
+        (arithmetic means, so that a quadratic element's midside node sits in its
+        middle) at odd indices.
+    """
+    if fine == "both":
+        half = graded(n // 2, ratio, "start")
+        return np.r_[0.5 * half, 1.0 - 0.5 * half[::-1][1:]]
+    q = ratio ** (1.0 / (n - 1)) if n > 1 else 1.0
+    h = q ** np.arange(n)
+    x = np.r_[0.0, np.cumsum(h)] / h.sum()
+    if fine == "end":
+        x = 1.0 - x[::-1]
+    out = np.empty(2 * n + 1)
+    out[0::2] = x
+    out[1::2] = 0.5 * (x[1:] + x[:-1])
+    return out
+
+
+def geometric_ratio(n: int, total: float, first: float, *, limit: float = 2.5) -> float:
+    """Growth factor q of a geometric division of ``total`` into ``n`` elements whose
+    first element is ``first`` long: first (qⁿ − 1)/(q − 1) = total, q in [1, limit]
+    (1 when n elements of ``first`` already cover ``total``; ``limit`` when even that
+    growth does not reach it — the first element is then longer than asked)."""
+    if n <= 1 or n * first >= total:
+        return 1.0
+
+    def covered(q: float) -> float:
+        return first * n if q == 1.0 else first * (q**n - 1.0) / (q - 1.0)
+
+    if covered(limit) <= total:
+        return limit
+    lo, hi = 1.0, limit
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if covered(mid) < total else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def at_index(table: np.ndarray, index) -> np.ndarray:
+    """Interpolate a :func:`graded` table at a parameter (element index) ``index`` ∈ [0, n]
+    (linear between the 2n + 1 entries, which is exact at vertices and midpoints)."""
+    return np.interp(2.0 * np.asarray(index, dtype=float), np.arange(table.size), table)
+
+
+@dataclass(frozen=True, eq=False)
+class MappedMesh:
+    """A structured hexahedral mesh mapped from its parameter space.
+
+    Attributes
+    ----------
+    param : skfem.MeshHex — the mesh in parameter space (unit cells)
+    mesh : skfem.MeshHex2 — the physical mesh: the same elements and facets, every
+        quadratic node moved by the mapping [mm]
+    param_nodes : ndarray (3, N) — parameter coordinates of ``mesh.doflocs``
+    min_jacobian : float — [1] smallest ratio over the elements of the Jacobian
+        determinant at a cell quadrature point to the element's mean (1 for a
+        parallelepiped; a value near 0 flags a badly shaped element)
+    """
+
+    param: skfem.MeshHex
+    mesh: skfem.MeshHex2
+    param_nodes: np.ndarray
+    min_jacobian: float
+
+    def nodes_where(self, test: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:
+        """Indices of the mesh nodes whose parameter coordinates (3, N) pass ``test``."""
+        return np.flatnonzero(test(self.param_nodes))
+
+    def facets_where(self, test: Callable[[np.ndarray], np.ndarray],
+                     boundary: bool = True) -> np.ndarray:
+        """Indices of the (boundary) facets whose parameter midpoints pass ``test``."""
+        facets = self.param.boundary_facets() if boundary else np.arange(
+            self.param.facets.shape[1])
+        mid = self.param.p[:, self.param.facets[:, facets]].mean(axis=1)
+        return facets[test(mid)]
+
+    def elements_where(self, test: Callable[[np.ndarray], np.ndarray]) -> np.ndarray:
+        """Indices of the elements whose parameter centres pass ``test``."""
+        return np.flatnonzero(test(self.param.p[:, self.param.t].mean(axis=1)))
+
+
+def mapped_mesh(shape: tuple[int, int, int], mapping: Callable[[np.ndarray], np.ndarray],
+                keep: Callable[[np.ndarray], np.ndarray] | None = None) -> MappedMesh:
+    """Build a mapped structured hexahedral mesh.
+
+    Parameters
+    ----------
+    shape : (int, int, int) — [1] unit cells of the parameter box along its three axes
+    mapping : callable — parameter coordinates (3, M) → physical coordinates (3, M) [mm];
+        called once with every node (vertices and midpoints, i.e. parameter coordinates
+        that are multiples of ½)
+    keep : callable, optional — cell centres (3, C) → bool (C,): which cells of the box
+        form the mesh (default all)
+
+    Returns
+    -------
+    MappedMesh
+
+    Raises
+    ------
+    InputError — a shape entry below 1.
+    LTCAError — the mapping inverts an element or collapses one (a Jacobian determinant
+        changes sign or vanishes at a quadrature point): the geometry cannot be meshed
+        this way, e.g. a division too coarse for a curved boundary.
+    """
+    if len(shape) != 3 or min(shape) < 1:
+        raise InputError(f"shape: must be three cell counts >= 1, got {shape!r}")
+    box = skfem.MeshHex.init_tensor(*(np.arange(n + 1.0) for n in shape))
+    if keep is not None:
+        centres = box.p[:, box.t].mean(axis=1)
+        drop = np.flatnonzero(~np.asarray(keep(centres), dtype=bool))
+        if drop.size:
+            box = box.remove_elements(drop).remove_unused_nodes()
+    quad = skfem.MeshHex2.from_mesh(box)
+    nodes = quad.doflocs.copy()
+    phys = np.asarray(mapping(nodes), dtype=float)
+    if phys.shape != nodes.shape or not np.all(np.isfinite(phys)):
+        raise LTCAError("mesh mapping: returned non-finite or misshaped coordinates")
+    mesh = dataclasses.replace(quad, doflocs=phys)
+    basis = skfem.CellBasis(mesh, skfem.ElementHex1(), intorder=2)
+    det = mesh.mapping().detDF(basis.X, tind=basis.tind)
+    sign = np.sign(np.median(det))
+    ratio = sign * det / np.abs(det).mean(axis=1, keepdims=True)
+    worst = float(ratio.min())
+    if worst <= 0.0:
+        e = int(np.argmin(ratio.min(axis=1)))
+        centre = box.p[:, box.t[:, e]].mean(axis=1)
+        raise LTCAError(f"mesh mapping: element {e} (parameter centre {np.round(centre, 2)}) "
+                        "is inverted or collapsed; refine the mesh or check the geometry")
+    return MappedMesh(box, mesh, nodes, worst)
+
+
+class FacetPoints(NamedTuple):
+    """Quadrature points on F facets, Q per facet, evaluated on the physical mesh.
+
+    tind : (F,) the element each facet belongs to (its inside); param, x : (3, F, Q) the
+    points in parameter and physical coordinates [mm]; normal : (3, F, Q) the outward
+    unit normal; dx : (F, Q) [mm²] area weights (quadrature weight × surface Jacobian);
+    values : (nb, F, Q) and grads : (nb, 3, F, Q) [1/mm] of the element's basis functions;
+    element_dofs : (nb, F) their global indices (the scalar basis's nodes).
+    """
+
+    tind: np.ndarray
+    param: np.ndarray
+    x: np.ndarray
+    normal: np.ndarray
+    dx: np.ndarray
+    values: np.ndarray
+    grads: np.ndarray
+    element_dofs: np.ndarray
+
+
+def facet_points(mapped: MappedMesh, element: skfem.Element, facets: np.ndarray,
+                 order: int) -> FacetPoints:
+    """Gauss points on boundary facets of a mapped mesh, with everything a load or a
+    stress needs there.
+
+    The points are laid on the parameter mesh (whose elements are unit cubes, so their
+    reference coordinates come out exactly) and evaluated on the physical mesh at the same
+    reference coordinates; the normal and the area follow by Nanson's formula
+    n da = |det Φ| Φ⁻ᵀ N dA for the parameter-to-physical map Φ (N the outward normal of
+    the parameter facet). (scikit-fem's FacetBasis
+    inverts the curved physical elements by Newton's method instead, which can stall on
+    the long, thin elements along a gear's face width.)
+
+    Parameters
+    ----------
+    mapped : MappedMesh
+    element : skfem.Element — the scalar element of the basis (e.g. ``ElementHexS2()``)
+    facets : ndarray of int — boundary facets
+    order : int — quadrature order (3: 2 × 2 Gauss points, 6: 4 × 4)
+
+    Returns
+    -------
+    FacetPoints
+    """
+    fp = skfem.FacetBasis(mapped.param, skfem.ElementHex1(), facets=facets, intorder=order)
+    pmap = mapped.param.mapping()
+    xp = pmap.G(fp.X, find=fp.find)
+    ref = pmap.invF(xp, tind=fp.tind)
+    mmap = mapped.mesh.mapping()
+    x = mmap.F(ref, tind=fp.tind)
+    jac = mmap.DF(ref, tind=fp.tind)  # (3, 3, F, Q) d(physical)/d(reference)
+    jp = pmap.DF(ref, tind=fp.tind)  # d(parameter)/d(reference)
+    phi = np.einsum("ikfq,kjfq->ijfq", jac, np.moveaxis(np.linalg.inv(np.moveaxis(
+        jp, (0, 1), (-2, -1))), (-2, -1), (0, 1)))  # d(physical)/d(parameter)
+    phi_inv_t = np.moveaxis(np.linalg.inv(np.moveaxis(phi, (0, 1), (-2, -1))), (-2, -1), (1, 0))
+    det = np.linalg.det(np.moveaxis(phi, (0, 1), (-2, -1)))
+    # N outward in parameter space; a normal is a covector, n ∝ Φ⁻ᵀ N, and stays outward
+    # (n·dx = N·dX for dx = Φ dX), whatever the sign of det Φ
+    a = np.einsum("ijfq,jfq->ifq", phi_inv_t, np.asarray(fp.normals))
+    norm = np.linalg.norm(a, axis=0)
+    normal = a / norm
+    dx = np.abs(det) * norm * fp.dx
+    basis = skfem.CellBasis(mapped.mesh, element, intorder=1, elements=fp.tind[:1])
+    nb = len(basis.basis)
+    fields = [element.gbasis(mmap, ref, j, tind=fp.tind)[0] for j in range(nb)]
+    values = np.array([np.asarray(f) for f in fields])
+    grads = np.array([f.grad for f in fields])
+    dofs = basis.dofs.element_dofs[:, fp.tind]
+    return FacetPoints(fp.tind, xp, x, normal, dx, values, grads, dofs)

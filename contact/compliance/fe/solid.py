@@ -1,0 +1,395 @@
+"""The solid of a member's teeth, meshed with quadratic hexahedra from its generated surfaces.
+
+The solid holds ``teeth`` teeth (the loaded one in the middle and its neighbours), each
+bounded by its two generated flanks and root fillets (:mod:`contact.compliance.fe.section`),
+the face cone at the top, the front and back cones at the toe and the heel, and a rim under
+the slots down to an inner cone parallel to the root cone; the sector is cut at the middle
+of the outer slots' bottoms. It is meshed by :func:`contact.compliance.fe.mapped_mesh.mapped_mesh`
+from a parameter box (A across the sector, B up from the rim's inner surface, W along the
+face width) laid out per tooth as
+
+* a **rim block** under each pitch: columns along the half slots (the lower part of each
+  root fillet and half the slot bottom, finer towards the fillet) and across the tooth's
+  root, rows from the inner surface up to the slot bottom and fillet (finer at the top);
+* a **tooth block** on it: columns across the tooth (finer towards both flanks), rows up
+  the upper part of the fillets (from where they lean 45°) and up the flanks (finer next to
+  the fillet) to the face cone.
+
+Every node is placed in its transverse section (v, φ) and carried to the member frame by
+the blank's projection-plane map; the sections are computed at the lengthwise fraction of
+every node plane, so the curved flanks and fillets are followed by the quadratic geometry.
+
+Public names
+------------
+SolidLayout        element counts and parameter ranges of the blocks
+ToothSolid         the meshed solid with its sections and layout
+build_tooth_solid  build it from a case
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.compliance.fe.mapped_mesh import (
+    MappedMesh,
+    at_index,
+    geometric_ratio,
+    graded,
+    mapped_mesh,
+)
+from contact.compliance.fe.options import FEOptions
+from contact.compliance.fe.section import ToothSection, ToothSections, tooth_sections
+from geometry.core.errors import InputError
+
+__all__ = ["SolidLayout", "ToothSolid", "build_tooth_solid"]
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class SolidLayout:
+    """Element counts of the solid's blocks and where they lie in parameter space.
+
+    Parameter A runs across the sector, ``cell`` = 2 slot + across units per tooth (tooth
+    m, offset m − neighbours from the loaded tooth, its tooth block over
+    A ∈ [m cell + slot, m cell + slot + across]); B runs up, the rim block over
+    [0, rim], the tooth block over [rim, rim + flank]; W runs along the face,
+    toe 0 → heel ``face``.
+    """
+
+    teeth: int
+    slot: int
+    across: int
+    flank: int
+    rim: int
+    face: int
+
+    @classmethod
+    def from_options(cls, opt: FEOptions) -> SolidLayout:
+        return cls(opt.teeth, opt.slot_divisions, opt.across_divisions,
+                   opt.flank_divisions, opt.rim_divisions, opt.face_divisions)
+
+    @property
+    def cell(self) -> int:
+        return 2 * self.slot + self.across
+
+    @property
+    def rows(self) -> int:
+        return self.rim + self.flank
+
+    @property
+    def shape(self) -> tuple[int, int, int]:
+        return (self.teeth * self.cell, self.rows, self.face)
+
+    @property
+    def neighbours(self) -> int:
+        return (self.teeth - 1) // 2
+
+    def side_a(self, offset: int, side: str) -> float:
+        """Parameter A of the flank side (``"left"``/``"right"``) of the tooth at
+        ``offset`` from the loaded one."""
+        m = offset + self.neighbours
+        return float(m * self.cell + self.slot + (self.across if side == "right" else 0))
+
+    def tooth_of(self, a) -> tuple[np.ndarray, np.ndarray]:
+        """Tooth index m (0 … teeth − 1) and the local A within its cell."""
+        a = np.asarray(a, dtype=float)
+        m = np.clip(np.floor(a / self.cell), 0, self.teeth - 1).astype(int)
+        return m, a - m * self.cell
+
+
+@dataclass(frozen=True)
+class _Grading:
+    """Division tables (:func:`graded`) of one section: every graded direction starts
+    from the root element size h of its side (``FEOptions.fillet_divisions`` or
+    ``root_element_size``) and grows geometrically to cover its length."""
+
+    slot: tuple[np.ndarray, np.ndarray]  # left, right half slot (from the split point)
+    rows: tuple[np.ndarray, np.ndarray]  # left, right tooth side (split point → tip)
+    across: np.ndarray
+    rim: np.ndarray
+
+    @classmethod
+    def of_section(cls, sec: ToothSection, rim_v: float, opt: FEOptions,
+                   pitch: float) -> _Grading:
+        lay = SolidLayout.from_options(opt)
+        sizes, slots, rows = [], [], []
+        for side, curve in (("left", sec.left), ("right", sec.right)):
+            h = root_size(curve, opt)
+            sizes.append(h)
+            half = _half_slot_length(sec, side, pitch)
+            q = geometric_ratio(lay.slot, half, h)
+            slots.append(graded(lay.slot, q ** (lay.slot - 1), "start"))
+            q = geometric_ratio(lay.flank, curve.length - curve.split, h)
+            rows.append(graded(lay.flank, q ** (lay.flank - 1), "start"))
+        (vl, pl), (vr, pr) = sec.left.at(sec.left.split), sec.right.at(sec.right.split)
+        width = float(sec.metric_length(vl, pl, vr, pr))
+        n = lay.across // 2
+        q = geometric_ratio(n, 0.5 * width, float(np.mean(sizes)))
+        across = graded(lay.across, q ** (n - 1), "both")
+        depth = sec.length_v * (0.5 * (vl + vr) - rim_v)
+        q = geometric_ratio(lay.rim, depth, float(np.mean(sizes)))
+        rim = graded(lay.rim, q ** (lay.rim - 1), "end")
+        return cls(tuple(slots), tuple(rows), across, rim)
+
+
+def root_size(curve, opt: FEOptions) -> float:
+    """Element size h [mm] at a root fillet: ``opt.root_element_size`` or the fillet's
+    arc (slot bottom → flank) over ``opt.fillet_divisions``."""
+    if opt.root_element_size is not None:
+        return opt.root_element_size
+    return curve.junction / opt.fillet_divisions
+
+
+def _half_slot_length(sec: ToothSection, side: str, pitch: float) -> float:
+    """Length [mm] of a half slot: the lower fillet and half the slot bottom."""
+    curve = sec.left if side == "left" else sec.right
+    end = np.array([curve.v[0], curve.phi[0]])
+    other = sec.bottom[1] if side == "right" else sec.bottom[0] - np.array([0.0, pitch])
+    mid = 0.5 * (end + other)
+    return curve.split + float(sec.metric_length(end[0], end[1], mid[0], mid[1]))
+
+
+@dataclass(frozen=True, eq=False)
+class ToothSolid:
+    """A member's meshed tooth solid.
+
+    Attributes
+    ----------
+    case_name : str
+    member : str
+    options : FEOptions
+    layout : SolidLayout
+    sections : ToothSections — at the lengthwise fraction of every node plane
+        (2 face + 1 planes, W = 0, ½, 1, …)
+    rim_v : ndarray (2 face + 1,) — [1] profile fraction of the rim's inner surface
+        in each node plane
+    rim_depth : float — [mm] the rim depth used (under the deepest slot bottom)
+    fillet_rows : int — [1] element rows of the tooth sides that reach past the
+        fillets' junction with the flanks in every section, plus one
+    mesh : MappedMesh — parameter and physical meshes
+    build_time : float — [s] sections and mesh
+    """
+
+    case_name: str
+    member: str
+    options: FEOptions
+    layout: SolidLayout
+    sections: ToothSections
+    rim_v: np.ndarray
+    rim_depth: float
+    fillet_rows: int
+    mesh: MappedMesh
+    build_time: float
+
+    @property
+    def pitch(self) -> float:
+        """Angular pitch [rad]."""
+        return self.sections.pitch
+
+    def constrained_nodes(self) -> np.ndarray:
+        """Mesh nodes held fixed by ``options.constraint`` (every displacement component)."""
+        lay = self.layout
+        if self.options.constraint == "bore":
+            return self.mesh.nodes_where(lambda p: p[1] < 1e-9)
+        return self.mesh.nodes_where(lambda p: (p[2] > lay.face - 1e-9)
+                                     & (p[1] < lay.rim + 1e-9))
+
+    def flank_facets(self, offset: int, side: str) -> np.ndarray:
+        """Boundary facets of the flank side (``"left"``/``"right"``) of the tooth at
+        ``offset``: its half slot (lower fillet, half the slot bottom), upper fillet and
+        flank, up to the face cone."""
+        a = self.layout.side_a(offset, side)
+        rim = self.layout.rim
+        side_facets = self.mesh.facets_where(lambda p: (np.abs(p[0] - a) < 1e-9)
+                                             & (p[1] > rim))
+        return np.r_[self.fillet_facets(offset, side)[0], side_facets]
+
+    def fillet_facets(self, offset: int, side: str) -> tuple[np.ndarray, np.ndarray]:
+        """Boundary facets of the root on one side of the tooth at ``offset``: (facets of
+        the half slot — lower fillet and half the slot bottom —, facets of the tooth
+        side whose rows reach the fillet's junction with the flank, and one more)."""
+        lay = self.layout
+        a = lay.side_a(offset, side)
+        lo, hi = (a - lay.slot, a) if side == "left" else (a, a + lay.slot)
+        slot = self.mesh.facets_where(lambda p: (np.abs(p[1] - lay.rim) < 1e-9)
+                                      & (p[0] > lo) & (p[0] < hi))
+        top = lay.rim + self.fillet_rows
+        up = self.mesh.facets_where(lambda p: (np.abs(p[0] - a) < 1e-9) & (p[1] > lay.rim)
+                                    & (p[1] < top))
+        return slot, up
+
+
+def _half_slot(sec: ToothSection, side: str, f: np.ndarray, pitch: float):
+    """(v, φ) along a half slot of the reference tooth at fractions f: 0 at the side's
+    split point, down its lower fillet, then along the slot bottom to its middle (1)."""
+    curve = sec.left if side == "left" else sec.right
+    end = np.array([curve.v[0], curve.phi[0]])
+    other = sec.bottom[1] if side == "right" else sec.bottom[0] - np.array([0.0, pitch])
+    mid = 0.5 * (end + other)
+    seg = float(sec.metric_length(end[0], end[1], mid[0], mid[1]))
+    d = np.asarray(f, dtype=float) * (curve.split + seg)
+    v, phi = curve.at(curve.split - np.minimum(d, curve.split))
+    if seg > 0.0:
+        t = np.clip((d - curve.split) / seg, 0.0, 1.0)[..., None]
+        on_bottom = d > curve.split
+        lin = end + t * (mid - end)
+        v = np.where(on_bottom, lin[..., 0], v)
+        phi = np.where(on_bottom, lin[..., 1], phi)
+    return v, phi
+
+
+def _tooth_point(sec: ToothSection, frac_a, b, grad: _Grading):
+    """(v, φ) of tooth-block nodes: across fraction ``frac_a``, row parameter b ∈
+    [0, flank divisions] (0 at the split points)."""
+    out = []
+    for curve, table in zip((sec.left, sec.right), grad.rows, strict=True):
+        arc = curve.split + (curve.length - curve.split) * at_index(table, b)
+        out.append(curve.at(arc))
+    (vl, pl), (vr, pr) = out
+    return (1 - frac_a) * vl + frac_a * vr, (1 - frac_a) * pl + frac_a * pr
+
+
+def _plane_points(sec: ToothSection, rim_v: float, a, b, lay: SolidLayout, grad: _Grading,
+                  pitch: float):
+    """(v, φ) of the nodes with parameters (A, B) in one section."""
+    m, la = lay.tooth_of(a)
+    offset = m - lay.neighbours
+    v = np.empty(a.shape)
+    phi = np.empty(a.shape)
+    base = b <= lay.rim + 1e-12
+    # rim block: the top point of the node's column, then down to the rim's inner surface
+    left = la <= lay.slot
+    right = la >= lay.slot + lay.across
+    mid = ~(left | right)
+    vt, pt = np.empty(a.shape), np.empty(a.shape)
+    if left.any():
+        vt[left], pt[left] = _half_slot(sec, "left", at_index(grad.slot[0],
+                                                              lay.slot - la[left]), pitch)
+    if right.any():
+        vt[right], pt[right] = _half_slot(sec, "right", at_index(
+            grad.slot[1], la[right] - lay.slot - lay.across), pitch)
+    if mid.any():
+        fa = at_index(grad.across, la[mid] - lay.slot)
+        vt[mid], pt[mid] = _tooth_point(sec, fa, np.zeros(fa.shape), grad)
+    g = at_index(grad.rim, np.minimum(b, lay.rim))
+    v[base] = (rim_v + g * (vt - rim_v))[base]
+    phi[base] = pt[base]
+    top = ~base
+    if top.any():
+        fa = at_index(grad.across, la[top] - lay.slot)
+        v[top], phi[top] = _tooth_point(sec, fa, b[top] - lay.rim, grad)
+    return v, phi + offset * pitch
+
+
+def _rim_line(sections: ToothSections, depth: float, u: np.ndarray) -> np.ndarray:
+    """Profile fraction v of the rim's inner cone in the sections at ``u``: the line
+    parallel to the root cone ``depth`` [mm] below its deepest slot bottom."""
+    c = sections.corners
+    root = c[1, 0] - c[0, 0]
+    n = np.array([root[1], -root[0]]) / np.hypot(*root)
+    n *= math.copysign(1.0, float(n @ (c[0, 1] - c[0, 0])))  # towards the teeth
+    a = (1 - u)[:, None] * c[0, 0] + u[:, None] * c[1, 0]
+    d = (1 - u)[:, None] * c[0, 1] + u[:, None] * c[1, 1] - a
+    level = -(sections.slot_depth + depth)
+    return (level - (a - c[0, 0]) @ n) / (d @ n)
+
+
+def _check_root_size(sections: ToothSections, opt: FEOptions) -> None:
+    """Refuse a root element size that leaves no element across a fillet."""
+    if opt.root_element_size is None:
+        return
+    arc = min(min(sec.left.junction, sec.right.junction) for sec in sections.sections)
+    if opt.root_element_size >= arc:
+        raise InputError(f"root_element_size: must be < {arc:.4g} mm, the shortest root "
+                         f"fillet arc of the {sections.member} (a larger size leaves no "
+                         f"element across the fillet), got {opt.root_element_size:g}")
+
+
+def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> ToothSolid:
+    """Mesh the teeth of one member from its generated surfaces.
+
+    Parameters
+    ----------
+    case : geometry.case.Case — a loaded case (face milling or face hobbing)
+    member : str — ``"pinion"`` or ``"gear"``
+    options : FEOptions, optional — solid, mesh and material (default ``FEOptions()``)
+
+    Returns
+    -------
+    ToothSolid
+
+    Raises
+    ------
+    InputError
+        A bad member, a blade without an edge radius, or a rim so deep that its inner
+        cone reaches the member axis (``rim_depth``).
+    LTCAError
+        The generated flanks do not make a tooth the mesh can follow
+        (:func:`contact.compliance.fe.section.tooth_sections`), or the mapping inverts
+        an element (:func:`contact.compliance.fe.mapped_mesh.mapped_mesh`).
+
+    Notes
+    -----
+    The solid's surfaces are the generated ones (seed §2.2, Eq. 2.7a–2.8) and the blank's
+    cones (ISO 23509 blank data of the case); the rim and its support are this model's
+    (``options.rim_depth``, ``options.constraint``: docs/fe.md).
+    """
+    t0 = time.perf_counter()
+    opt = options if options is not None else FEOptions()
+    lay = SolidLayout.from_options(opt)
+    u = np.linspace(0.0, 1.0, 2 * lay.face + 1)
+    sections = tooth_sections(case, member, u)
+    blank = case.member(member).blank
+    depth = opt.rim_depth if opt.rim_depth is not None else 1.2 * (
+        blank.outer_addendum + blank.outer_dedendum)
+    rim_v = _rim_line(sections, depth, u)
+    c = sections.corners
+    for ui, vi in ((0.0, rim_v[0]), (1.0, rim_v[-1])):
+        rho = ((1 - ui) * (1 - vi) * c[0, 0] + ui * (1 - vi) * c[1, 0]
+               + (1 - ui) * vi * c[0, 1] + ui * vi * c[1, 1])[1]
+        if rho <= 0.05 * blank.outer_cone_distance * math.sin(blank.root_angle):
+            raise InputError(f"rim_depth: {depth:.4g} mm puts the rim's inner cone at radius "
+                             f"{rho:.3g} mm at the {'toe' if ui == 0 else 'heel'}, at or "
+                             "through the member axis; give a smaller rim depth")
+
+    _check_root_size(sections, opt)
+    grading = [_Grading.of_section(sec, rim_v[j], opt, sections.pitch)
+               for j, sec in enumerate(sections.sections)]
+
+    def mapping(p: np.ndarray) -> np.ndarray:
+        out = np.empty_like(p)
+        planes = np.rint(2.0 * p[2]).astype(int)
+        for j in np.unique(planes):
+            sel = planes == j
+            sec = sections.sections[j]
+            v, phi = _plane_points(sec, rim_v[j], p[0, sel], p[1, sel], lay, grading[j],
+                                   sections.pitch)
+            z = ((1 - sec.u) * (1 - v) * c[0, 0, 0] + sec.u * (1 - v) * c[1, 0, 0]
+                 + (1 - sec.u) * v * c[0, 1, 0] + sec.u * v * c[1, 1, 0])
+            rho = ((1 - sec.u) * (1 - v) * c[0, 0, 1] + sec.u * (1 - v) * c[1, 0, 1]
+                   + (1 - sec.u) * v * c[0, 1, 1] + sec.u * v * c[1, 1, 1])
+            out[0, sel], out[1, sel], out[2, sel] = rho * np.cos(phi), rho * np.sin(phi), z
+        return out
+
+    def keep(centre: np.ndarray) -> np.ndarray:
+        _, la = lay.tooth_of(centre[0])
+        return (centre[1] < lay.rim) | ((la > lay.slot) & (la < lay.slot + lay.across))
+
+    mesh = mapped_mesh(lay.shape, mapping, keep)
+    fillet_rows = 1 + max(
+        int(np.searchsorted(curve.split + (curve.length - curve.split) * table[0::2],
+                            curve.junction))
+        for sec, g in zip(sections.sections, grading, strict=True)
+        for curve, table in zip((sec.left, sec.right), g.rows, strict=True))
+    elapsed = time.perf_counter() - t0
+    log.info("%s %s solid: %d elements, %d nodes, worst Jacobian ratio %.3f, %.1f s",
+             case.name, member, mesh.mesh.nelements, mesh.mesh.doflocs.shape[1],
+             mesh.min_jacobian, elapsed)
+    return ToothSolid(case.name, member, opt, lay, sections, rim_v, float(depth),
+                      min(fillet_rows, lay.flank), mesh, elapsed)
