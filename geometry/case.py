@@ -40,6 +40,7 @@ from typing import Any
 
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import DEFAULT_MATERIAL, available_materials
+from geometry.core.operating_defaults import OPERATING_DEFAULTS as _OPERATING_DEFAULTS
 from geometry.core.toml_files import dump_toml, read_toml
 from geometry.core.validation import integer, positive, real
 from geometry.machine.convention import (
@@ -63,6 +64,7 @@ __all__ = [
     "Member",
     "OperatingPoint",
     "Pair",
+    "TeethKey",
     "case_from_dict",
     "load_case",
     "read_toml",
@@ -82,18 +84,9 @@ def _fmt(x: float) -> str:
     return f"{x:.6g}"
 
 
-#: The toolkit's operating point where a case's ``[operating]`` table gives none (one
-#: place: :class:`friction.operating.OperatingConditions` takes its defaults from here):
-#: the seed's Table 3.1 torques [N·m], pinion speed [rpm], the seed's Table 5.2 oil, oil
-#: inlet temperature [degC], RMS roughness Rq [µm], friction coefficient model.
-OPERATING_DEFAULTS: Mapping[str, Any] = MappingProxyType({
-    "torque": (50.0, 250.0, 500.0),
-    "pinion_speed": 1500.0,
-    "lubricant": "75W90",
-    "temperature": 90.0,
-    "roughness": 0.8,
-    "friction_model": "xu2007",
-})
+#: the toolkit's operating point where a case's ``[operating]`` table gives none
+#: (:mod:`geometry.core.operating_defaults`, a module light enough for the commands' help)
+OPERATING_DEFAULTS = _OPERATING_DEFAULTS
 #: absolute zero [degC]: the one physical bound of an oil temperature
 _ABSOLUTE_ZERO_C = -273.15
 
@@ -398,6 +391,40 @@ class Case:
             :meth:`to_toml` of the case with ``Misalignment()`` and no deviations.
         """
         return dataclasses.replace(self, misalignment=Misalignment(), deviations=None).to_toml()
+
+    def teeth_key(self) -> TeethKey:
+        """The key of the per-process memos of what the teeth alone decide (the tooth
+        models, the ease-off's forward-map points and gear nodes): the case without its
+        misalignment and deviations, compared by its full ``repr`` (every float to the last
+        bit), carrying the case itself for the memo to compute from.
+
+        Not :meth:`teeth_toml` rebuilt by :func:`case_from_dict`: a case changed in code
+        can hold what its TOML does not say (a face-hobbing indexing ratio other than
+        −z0/z, say), and the rebuilt case would be another pair's teeth.
+
+        Returns
+        -------
+        TeethKey
+        """
+        teeth = dataclasses.replace(self, misalignment=Misalignment(), deviations=None)
+        return TeethKey(teeth, repr(teeth))
+
+
+class TeethKey:
+    """A case's teeth as a hashable memo key (:meth:`Case.teeth_key`): equal and hashed by
+    ``text`` (the case's ``repr`` without misalignment and deviations); ``case`` is that
+    case, for the memo to compute from."""
+
+    __slots__ = ("case", "text")
+
+    def __init__(self, case: Case, text: str) -> None:
+        self.case, self.text = case, text
+
+    def __hash__(self) -> int:
+        return hash(self.text)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, TeethKey) and other.text == self.text
 
 
 # ---------------------------------------------------------------------------- schema

@@ -3,7 +3,7 @@
 * The pinion's points of the ease-off's forward map (861 solutions of the equation of
   meshing on the extended pinion grid) and the real gear flank on the ease-off's grid do
   not depend on the misalignment: they are memoised per process under the tooth models'
-  key (``Case.teeth_toml``), and an ease-off computed with the memos equals, bit for bit,
+  key (``Case.teeth_key``), and an ease-off computed with the memos equals, bit for bit,
   one computed without them.
 * A LocalCluster the study engine starts runs its workers without distributed's
   ``MALLOC_TRIM_THRESHOLD_`` (a quarter of a point's CPU time in page faults).
@@ -38,14 +38,28 @@ def test_teeth_alone_are_solved_once_per_process_and_change_nothing(case):
     for name, info in memo_info().items():
         assert (info.hits, info.misses) == (1, 1), name
     # the same case with other deviations or misalignment has the same key
-    assert (dataclasses.replace(case, misalignment=Misalignment(delta_P=0.1)).teeth_toml()
-            == case.teeth_toml())
+    assert (dataclasses.replace(case, misalignment=Misalignment(delta_P=0.1)).teeth_key()
+            == case.teeth_key())
     clear_memos()
     fresh = ease_off(case, misalignment=Misalignment(delta_E=-0.05, delta_P=0.03))
     for name in ("ease_off_angle", "roll_angle", "gap_curvature", "pinion_u", "pinion_v",
                  "placement_error"):
         np.testing.assert_array_equal(getattr(b, name), getattr(fresh, name), err_msg=name)
     assert not np.allclose(np.nan_to_num(a.ease_off_angle), np.nan_to_num(b.ease_off_angle))
+
+
+def test_a_case_changed_in_code_is_other_teeth(case):
+    """A field the case's TOML does not state (the indexing ratio, derived from the blade
+    groups and the teeth when a file is read) changed in code gives another key: the memos
+    compute from the case itself, not from its TOML read back (which would be the original
+    teeth; the face-hobbing conjugacy test's negative controls failed so)."""
+    flank = case.pinion.concave
+    other = dataclasses.replace(case, pinion=dataclasses.replace(case.pinion, concave=(
+        dataclasses.replace(flank, machine=dataclasses.replace(
+            flank.machine, indexing_ratio=-0.5)))))
+    assert other.teeth_toml() == case.teeth_toml()  # what the TOML key could not tell
+    assert other.teeth_key() != case.teeth_key()
+    assert other.teeth_key().case is not case
 
 
 def test_local_cluster_workers_start_without_malloc_trim():

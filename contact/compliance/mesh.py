@@ -30,7 +30,6 @@ from __future__ import annotations
 import functools
 import logging
 import time
-import tomllib
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -49,7 +48,7 @@ from contact.compliance.tooth import (
     weber_depth,
 )
 from contact.compliance.weber import weber_compliance
-from geometry.case import case_from_dict
+from geometry.case import TeethKey
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
@@ -191,11 +190,10 @@ def _build_pair(case: Case, theory: str, n_height: int, n_face: int,
 
 
 @functools.lru_cache(maxsize=_MEMO_SIZE)
-def _memo_pair(case_toml: str, theory: str, n_height: int, n_face: int,
+def _memo_pair(teeth: TeethKey, theory: str, n_height: int, n_face: int,
                materials: tuple[float, float, float, float],
                bores: tuple[float | None, float | None]) -> PairComplianceModel:
-    return _build_pair(case_from_dict(tomllib.loads(case_toml)), theory, n_height, n_face,
-                       materials, bores)
+    return _build_pair(teeth.case, theory, n_height, n_face, materials, bores)
 
 
 def pair_compliance_model(
@@ -225,7 +223,7 @@ def pair_compliance_model(
     Returns
     -------
     PairComplianceModel
-        Memoised: a second call with an equal case (same TOML text) and equal
+        Memoised: a second call with an equal case (the same teeth, Case.teeth_key) and equal
         settings returns the same object without measuring or factorising again
         (the last 4 cases are kept).
 
@@ -240,9 +238,9 @@ def pair_compliance_model(
     Seed Fig. 3.2: the Ritz coefficients are computed once and are "valid for all
     mesh positions". The memo (``functools.lru_cache`` of 4 entries, the only state
     of this module; :func:`clear_model_cache` empties it) is keyed by
-    :meth:`geometry.case.Case.to_toml` of the case without its misalignment and
-    deviations (neither changes a tooth in its member's frame), which round-trips the
-    case exactly, so two cases that differ only in how they are assembled share one
+    :meth:`geometry.case.Case.teeth_key`: the case without its misalignment and
+    deviations (neither changes a tooth in its member's frame), compared to the last
+    bit of every field, so two cases that differ only in how they are assembled share one
     model — a misalignment sweep builds it once per worker process. A caller that
     keeps the model (e.g. the LTCA pipeline) can pass it to :func:`mesh_compliance`
     and need not rely on the memo.
@@ -260,7 +258,7 @@ def pair_compliance_model(
     # the teeth live in their members' frames: the misalignment and the surface
     # deviations of the case change the assembly, not the shells, so they are left out of
     # the memo's key (a misalignment sweep builds the shells once per process)
-    return _memo_pair(case.teeth_toml(), str(theory), n_height, n_face, tuple(materials),
+    return _memo_pair(case.teeth_key(), str(theory), n_height, n_face, tuple(materials),
                       bores)
 
 

@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import functools
 import logging
-import tomllib
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
 
@@ -36,7 +35,7 @@ from contact.utca.action_surface import (
     action_roll_angle,
     conjugate_points,
 )
-from geometry.case import case_from_dict
+from geometry.case import TeethKey
 from geometry.core.errors import InputError
 from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import working_sections
@@ -254,10 +253,10 @@ def _forward_grid(case: Case):
 
 
 @functools.lru_cache(maxsize=_MEMO_SIZE)
-def _memo_forward_points(teeth_toml: str, flank: str) -> tuple[np.ndarray, ...]:
-    """The real pinion on the forward map's grid (:func:`_pinion_points`) of the case whose
-    :meth:`~geometry.case.Case.teeth_toml` is ``teeth_toml`` (read-only arrays)."""
-    case = case_from_dict(tomllib.loads(teeth_toml))
+def _memo_forward_points(teeth: TeethKey, flank: str) -> tuple[np.ndarray, ...]:
+    """The real pinion on the forward map's grid (:func:`_pinion_points`) of the case of
+    ``teeth`` (:meth:`~geometry.case.Case.teeth_key`; read-only arrays)."""
+    case = teeth.case
     *_, z, rho = _forward_grid(case)
     out = _pinion_points(case, flank, z, rho)
     for a in out:
@@ -266,12 +265,11 @@ def _memo_forward_points(teeth_toml: str, flank: str) -> tuple[np.ndarray, ...]:
 
 
 @functools.lru_cache(maxsize=_MEMO_SIZE)
-def _memo_gear_nodes(teeth_toml: str, flank: str, grid: tuple) -> FlankSurface:
+def _memo_gear_nodes(teeth: TeethKey, flank: str, grid: tuple) -> FlankSurface:
     """The real gear flank on the ease-off's grid (``grid``: its options as sorted (key,
-    value) pairs) of the case whose :meth:`~geometry.case.Case.teeth_toml` is
-    ``teeth_toml`` (read-only arrays)."""
-    case = case_from_dict(tomllib.loads(teeth_toml))
-    gs = flank_surface(case, "gear", flank, **dict(grid))
+    value) pairs) of the case of ``teeth`` (:meth:`~geometry.case.Case.teeth_key`;
+    read-only arrays)."""
+    gs = flank_surface(teeth.case, "gear", flank, **dict(grid))
     for a in (*gs, *gs.grid):
         if isinstance(a, np.ndarray):
             a.flags.writeable = False
@@ -296,7 +294,7 @@ def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
         :func:`geometry.machine.flank.flank_surface` of the gear (arrays read-only): the
         gear does not depend on the misalignment, so a misalignment study solves its 861
         nodes once per process (keyed as the tooth models are, by
-        :meth:`~geometry.case.Case.teeth_toml`).
+        :meth:`~geometry.case.Case.teeth_key`).
 
     Raises
     ------
@@ -305,7 +303,7 @@ def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
     """
     key = tuple(sorted((k, tuple(v) if isinstance(v, list | tuple) else v)
                        for k, v in grid.items()))
-    return _memo_gear_nodes(case.teeth_toml(), flank, key)
+    return _memo_gear_nodes(case.teeth_key(), flank, key)
 
 
 def memo_info() -> dict[str, tuple]:
@@ -338,7 +336,7 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
     """
     up, vp, cp, uu, vv, _, _ = _forward_grid(case)
     fwd, branch = _mates(case, pf, kin, cp, uu, vv, reference=ref,
-                         points=_memo_forward_points(case.teeth_toml(), pf))
+                         points=_memo_forward_points(case.teeth_key(), pf))
     ok = fwd.good
     if ok.sum() < 16:
         raise InputError(
