@@ -38,6 +38,7 @@ from contact.plots import (
     pressure_figure,
     transmission_error_figure,
 )
+from contact.plots.analysis import figure_prefix
 from contact.plots.flank import colour_index
 from contact.plots.tooth import segment_pieces
 from contact.study.efficiency import efficiency_map
@@ -119,7 +120,8 @@ def test_every_analysis_figure_labels_its_axes_with_units(which, request, tmp_pa
     assert ("deviations_pressure" in names) == ("theoretical" in tree.children)
     if which == "deviated_tree":
         written = plot_analysis(tree, tmp_path)
-        assert {p.stem for p in written} == set(names)
+        # the files are named <case>_<figure> (figure_prefix: runs share a directory)
+        assert {p.stem for p in written} == {figure_prefix(tree) + n for n in names}
         assert all(p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" for p in written)
 
 

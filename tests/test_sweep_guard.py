@@ -2,7 +2,10 @@
 unchanged"): a fresh 5×5 ΔE × ΔP sweep of the default case equals the stored one.
 
 The stored summaries (``tests/data/sweep_guard_5x5.nc``) were written by
-``tests/sweep_guard.py --write`` before the first change of issue 32, with the same
+``tests/sweep_guard.py --write`` before the first change of issue 32, and written again
+when the elastic–perfectly-plastic edges of issue 37 were merged (a reviewed change of
+results: the stored sweep's edge peak 5910 MPa became the shakedown limit 5262 MPa, and
+the load the limit passes on moved the LTE, the pattern and the edge share), with the same
 options the test runs: the default case about its Table 3.1 mounting (ΔE = −0.15 ± 0.05 mm,
 ΔP = 0.12 ± 0.05 mm, 25 points), 250 N·m, the study engine with
 ``scheduler="synchronous"``, one BLAS thread, and a coarse LTCA
