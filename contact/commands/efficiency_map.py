@@ -7,7 +7,7 @@ from pathlib import Path
 
 from contact.commands.options import (
     case_argument,
-    default_output,
+    checked_outputs,
     flank_option,
     misalignment_from_args,
     misalignment_options,
@@ -20,7 +20,6 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
-from contact.commands.output_paths import check_output_dir, check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 15
@@ -120,10 +119,7 @@ def run(args: argparse.Namespace) -> int:
     from geometry.core.io import write_netcdf
 
     tag = sweep_tag(args)
-    output = default_output(args, f"_efficiency_map_{tag}.nc")
-    check_output_file(output)
-    if args.plots:
-        check_output_dir(args.plots)
+    output = checked_outputs(args, f"_efficiency_map_{tag}.nc")
     case = resolve_case(args.case)
     op = OperatingConditions.from_point(
         case.operating, pinion_speed=case.operating.pinion_speed or None,

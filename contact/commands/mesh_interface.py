@@ -7,10 +7,10 @@ import shlex
 from pathlib import Path
 
 from contact.commands.options import (
+    case_and_misalignment,
     case_argument,
-    default_output,
+    checked_outputs,
     flank_option,
-    misalignment_from_args,
     misalignment_options,
     output_option,
     plots_option,
@@ -20,7 +20,6 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
-from contact.commands.output_paths import check_output_dir, check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 14
@@ -55,18 +54,13 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
-    from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options
     from contact.ltca.mesh_interface import write_mesh_interface_csv
     from contact.pipeline import run_analysis
     from contact.plots.style import misalignment_text
 
-    output = default_output(args, "_mesh_interface.csv")
-    check_output_file(output)
-    if args.plots:
-        check_output_dir(args.plots)
-    case = resolve_case(args.case)
-    mis = misalignment_from_args(args, case.misalignment)
+    output = checked_outputs(args, "_mesh_interface.csv")
+    case, mis = case_and_misalignment(args)
     tree = run_analysis(case, args.torque, misalignment=mis, flank=args.flank,
                         options=ltca_options(args), operating=False, geometry=False,
                         deviations=None, progress=not args.no_progress)

@@ -275,7 +275,7 @@ def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
                       speed_help: str = "") -> None:
     """``--speed --lubricant --temperature --roughness --friction-model``: the efficiency
     stage's conditions, each defaulting to the case's ``[operating]`` table."""
-    from geometry.case import OPERATING_DEFAULTS as D
+    from geometry.core.operating_defaults import OPERATING_DEFAULTS as D
 
     g = p.add_argument_group("operating conditions of the efficiency stage (default: the "
                              "case's [operating] table; the values in brackets are the "
@@ -358,6 +358,44 @@ def default_output(args: argparse.Namespace, suffix: str = ".nc") -> str:
     """``-o`` if given, else the file named after the case: ``<case><suffix>``
     (:func:`case_stem` of ``args.case``)."""
     return args.output if args.output else f"{case_stem(args.case)}{suffix}"
+
+
+def checked_outputs(args: argparse.Namespace, suffix: str = ".nc",
+                    more: dict[str, str | None] | None = None) -> str:
+    """The command's output file (:func:`default_output`), checked before any work with
+    ``--plots`` (if the command has it and it is given) and the further output files
+    ``more`` (``{option: path}``, None = not asked for).
+
+    Raises
+    ------
+    contact.commands.output_paths checks' InputError
+        an output that cannot be written, naming its option.
+    """
+    from contact.commands.output_paths import check_output_dir, check_output_file
+
+    output = default_output(args, suffix)
+    check_output_file(output)
+    if getattr(args, "plots", None):
+        check_output_dir(args.plots)
+    for option, path in (more or {}).items():
+        if path:
+            check_output_file(path, option=option)
+    return output
+
+
+def case_and_misalignment(args: argparse.Namespace):
+    """The command's case (:func:`contact.catalogue.resolve_case` of ``args.case``) and
+    its misalignment: the case's own, with the ``--dE/--dP/--dG/--dSigma`` given
+    (:func:`misalignment_from_args`).
+
+    Returns
+    -------
+    (Case, Misalignment)
+    """
+    from contact.catalogue import resolve_case
+
+    case = resolve_case(args.case)
+    return case, misalignment_from_args(args, case.misalignment)
 
 
 def plots_option(p: argparse.ArgumentParser, default: str | None = None) -> None:

@@ -9,8 +9,9 @@ from pathlib import Path
 
 from contact.commands.options import (
     analysis_file_argument,
+    case_and_misalignment,
     case_argument,
-    default_output,
+    checked_outputs,
     flank_option,
     misalignment_from_args,
     misalignment_options,
@@ -25,7 +26,7 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
-from contact.commands.output_paths import check_output_dir, check_output_file
+from contact.commands.output_paths import check_output_dir
 
 __all__ = ["TE_TABLE_HEADERS", "deviation_te_rows", "misalignment_from_args", "plot", "register",
            "run", "write_figures"]
@@ -162,18 +163,11 @@ def ltca_options(args: argparse.Namespace, **defaults):
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
-    from contact.catalogue import resolve_case
     from contact.pipeline import operating_conditions, run_analysis
     from geometry.core.io import write_netcdf
 
-    output = default_output(args)
-    check_output_file(output)
-    if args.plots:
-        check_output_dir(args.plots)
-    if args.report:
-        check_output_file(args.report, option="--report")
-    case = resolve_case(args.case)
-    mis = misalignment_from_args(args, case.misalignment)
+    output = checked_outputs(args, more={"--report": args.report})
+    case, mis = case_and_misalignment(args)
     opts = ltca_options(args)
     devs = None  # the case's [deviations] table, if any
     if args.no_deviations:

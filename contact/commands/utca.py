@@ -8,16 +8,15 @@ import math
 from pathlib import Path
 
 from contact.commands.options import (
+    case_and_misalignment,
     case_argument,
-    default_output,
+    checked_outputs,
     flank_option,
-    misalignment_from_args,
     misalignment_options,
     output_option,
     plots_option,
     rolls_per_cycle_option,
 )
-from contact.commands.output_paths import check_output_dir, check_output_file
 
 #: Place in ``ltca --help``.
 ORDER = 40
@@ -52,17 +51,12 @@ def run_utca(args: argparse.Namespace) -> int:
     """Run the UTCA, print a summary, write netCDF and plots as asked."""
     import xarray as xr
 
-    from contact.catalogue import resolve_case
     from contact.pipeline import MISALIGNMENT_REFERENCE, misalignment_attrs
     from contact.utca import unloaded_tca
     from geometry.core.io import write_netcdf
 
-    output = default_output(args, "_utca.nc")
-    check_output_file(output)
-    if args.plots:
-        check_output_dir(args.plots)
-    case = resolve_case(args.case)
-    mis = misalignment_from_args(args, case.misalignment)
+    output = checked_outputs(args, "_utca.nc")
+    case, mis = case_and_misalignment(args)
     easeoff, utca = unloaded_tca(case, misalignment=mis, flank=args.flank,
                                  n_roll=args.rolls_per_cycle,
                                  separation=args.separation * 1e-3,

@@ -7,9 +7,9 @@ import dataclasses
 from pathlib import Path
 
 from contact.commands.options import (
+    case_and_misalignment,
     case_argument,
-    default_output,
-    misalignment_from_args,
+    checked_outputs,
     misalignment_options,
     output_option,
     progress_option,
@@ -18,7 +18,6 @@ from contact.commands.options import (
     solver_option,
     torque_option,
 )
-from contact.commands.output_paths import check_output_file
 
 #: pinion torque of ``ltca wear`` without ``--torque`` [N·m] (the seed's Table 4.2)
 WEAR_TORQUE = 200.0
@@ -63,19 +62,14 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
-    from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options
     from contact.utca.deviation_files import write_deviation_netcdf
     from contact.wear import final_deviations, simulate_wear
     from geometry.core.io import write_netcdf
 
-    output = default_output(args, "_wear.nc")
-    check_output_file(output)
-    if args.deviations_out:
-        check_output_file(args.deviations_out, option="--deviations-out")
-    case = resolve_case(args.case)
-    case = dataclasses.replace(case, misalignment=misalignment_from_args(args,
-                                                                         case.misalignment))
+    output = checked_outputs(args, "_wear.nc", more={"--deviations-out": args.deviations_out})
+    case, mis = case_and_misalignment(args)
+    case = dataclasses.replace(case, misalignment=mis)
     torque = WEAR_TORQUE if args.torque is None else args.torque
     ds = simulate_wear(
         case,

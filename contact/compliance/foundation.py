@@ -200,6 +200,12 @@ def _load_vectors(
     g = np.array(
         [[c["L"], 0.5 * c["M"], 0.0], [0.5 * c["M"], c["P"], 0.0], [0.0, 0.0, c["P"] * c["Q"]]]
     )
+    if g[0, 0] * g[1, 1] < g[0, 1] ** 2 or g[2, 2] < 0.0:
+        log.warning(
+            "Sainsot coefficients give an indefinite base coupling (h_f=%.3g, theta_f=%.3g)",
+            foundation.radius_ratio,
+            foundation.root_half_angle,
+        )
     v = np.cos(a)[:, None] * np.column_stack(
         [u / foundation.root_thickness, np.ones_like(u), np.tan(a)]
     )
@@ -273,12 +279,6 @@ def foundation_matrix(
     given h_f, θ_f (outside the fit's range), a warning is logged.
     """
     v, g = _load_vectors(foundation, load_height, load_angle)
-    if g[0, 0] * g[1, 1] < g[0, 1] ** 2 or g[2, 2] < 0.0:
-        log.warning(
-            "Sainsot coefficients give an indefinite base coupling (h_f=%.3g, theta_f=%.3g)",
-            foundation.radius_ratio,
-            foundation.root_half_angle,
-        )
     eb = foundation.youngs_modulus * foundation.face_width
     return (v @ g @ v.T) / eb
 
@@ -318,12 +318,6 @@ def foundation_matrices(
     (:func:`contact.compliance.mesh.mesh_compliance_many`).
     """
     v, g = _load_vectors(foundation, load_height, load_angle)
-    if g[0, 0] * g[1, 1] < g[0, 1] ** 2 or g[2, 2] < 0.0:
-        log.warning(
-            "Sainsot coefficients give an indefinite base coupling (h_f=%.3g, theta_f=%.3g)",
-            foundation.radius_ratio,
-            foundation.root_half_angle,
-        )
     eb = foundation.youngs_modulus * foundation.face_width
     out = []
     for idx in blocks:

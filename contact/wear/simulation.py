@@ -10,17 +10,8 @@ computes the wear depth of one mesh at every node of a deviation grid of each me
 multiplies it by the load cycles of the step and removes it from the grids, which the
 next step analyses.
 
-Bookkeeping: the wear depth of a passage is computed at the LTCA's loaded contact-curve
-segments (edge contact on the flank boundary is not worn: it is not on the flank grid), in
-gear projection-plane fractions for the gear and in the pinion fractions of the mates for
-the pinion, and interpolated linearly (Delaunay) onto the nodes of each member's deviation
-grid, 0 outside the swept region (Park, Kolivand & Kahraman 2014 interpolate wear depths in
-the same way). One *load cycle* is one revolution of the pinion: every pinion tooth meshes
-once, every gear tooth z_p/z_g times on average (all teeth wear alike: the toolkit's teeth
-are identical). The wear is accumulated as a normal deviation, negative = material removed
-(:class:`contact.utca.deviations.SurfaceDeviation`), first order like the deviations
-themselves; the contact line speeds are those of the unworn surfaces (µm of wear leave them
-unchanged to first order).
+Bookkeeping (where the wear depth is computed, how it is put on the deviation grids, what one
+load cycle is): :mod:`contact.wear.archard`.
 
 Public functions
 ----------------
