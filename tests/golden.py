@@ -236,7 +236,7 @@ def adopt_attributes(new: xr.DataTree, path: Path = GOLDEN) -> list[str]:
     """Give the golden file the attributes of ``new`` (groups and variables), its values
     untouched, if ``new`` differs from it in attributes only; else leave it and return
     the differences of values."""
-    from contact.io import read_netcdf
+    from geometry.core.io import read_netcdf
 
     golden = read_netcdf(path, tree=True)
     values = [d for d in differences(new, golden) if "attribute" not in d]
@@ -257,7 +257,7 @@ def write_golden(path: Path = GOLDEN) -> Path:
     """Run ``ltca run`` and store its file, zlib-compressed, at ``path``."""
     import tempfile
 
-    from contact.io import read_netcdf
+    from geometry.core.io import read_netcdf
 
     with tempfile.TemporaryDirectory() as tmp:
         tree = read_netcdf(run_default(Path(tmp)), tree=True)
@@ -282,7 +282,7 @@ if __name__ == "__main__":
         elif args.adopt_attributes:
             import tempfile
 
-            from contact.io import read_netcdf
+            from geometry.core.io import read_netcdf
 
             with tempfile.TemporaryDirectory() as tmp:
                 new = read_netcdf(run_default(Path(tmp)), tree=True)
@@ -292,7 +292,7 @@ if __name__ == "__main__":
         elif args.check:
             import tempfile
 
-            from contact.io import read_netcdf
+            from geometry.core.io import read_netcdf
 
             with tempfile.TemporaryDirectory() as tmp:
                 new = read_netcdf(run_default(Path(tmp)), tree=True)

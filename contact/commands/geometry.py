@@ -94,7 +94,7 @@ def _solid_paths(solid: str | None) -> dict[str, Path]:
     before any work)."""
     if solid is None:
         return {}
-    from geometry.errors import InputError
+    from geometry.core.errors import InputError
 
     base = Path(solid)
     if base.suffix.lower() != ".stl":
