@@ -40,6 +40,7 @@ from typing import Any
 
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import DEFAULT_MATERIAL, available_materials
+from geometry.core.operating_defaults import OPERATING_DEFAULTS
 from geometry.core.toml_files import dump_toml, read_toml
 from geometry.core.validation import integer, positive, real
 from geometry.machine.convention import (
@@ -82,18 +83,6 @@ def _fmt(x: float) -> str:
     return f"{x:.6g}"
 
 
-#: The toolkit's operating point where a case's ``[operating]`` table gives none (one
-#: place: :class:`friction.operating.OperatingConditions` takes its defaults from here):
-#: the seed's Table 3.1 torques [N·m], pinion speed [rpm], the seed's Table 5.2 oil, oil
-#: inlet temperature [degC], RMS roughness Rq [µm], friction coefficient model.
-OPERATING_DEFAULTS: Mapping[str, Any] = MappingProxyType({
-    "torque": (50.0, 250.0, 500.0),
-    "pinion_speed": 1500.0,
-    "lubricant": "75W90",
-    "temperature": 90.0,
-    "roughness": 0.8,
-    "friction_model": "xu2007",
-})
 #: absolute zero [degC]: the one physical bound of an oil temperature
 _ABSOLUTE_ZERO_C = -273.15
 

@@ -275,7 +275,7 @@ def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
                       speed_help: str = "") -> None:
     """``--speed --lubricant --temperature --roughness --friction-model``: the efficiency
     stage's conditions, each defaulting to the case's ``[operating]`` table."""
-    from geometry.case import OPERATING_DEFAULTS as D
+    from geometry.core.operating_defaults import OPERATING_DEFAULTS as D
 
     g = p.add_argument_group("operating conditions of the efficiency stage (default: the "
                              "case's [operating] table; the values in brackets are the "

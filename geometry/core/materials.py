@@ -69,10 +69,7 @@ from importlib import resources
 from types import MappingProxyType
 from typing import Any
 
-import scipy.optimize
-
 from geometry.core.errors import InputError, ModelUnavailableError
-from geometry.core.validation import real
 
 __all__ = [
     "CONTACT_PRESSURE_LIMITS",
@@ -169,6 +166,8 @@ def _number(where: str, value: Any, low: float | None = None,
             high: float | None = None) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise InputError(f"{where}: must be a number, got {value!r}")
+    from geometry.core.validation import real  # NumPy: not at import (`ltca --help`)
+
     return real(where, value, low=low, high=high, low_open=low is not None)
 
 
@@ -330,11 +329,17 @@ def first_yield_factor(poisson_ratio: float) -> float:
     stresses of McEwen (1949), Johnson §4.2. Checked in tests/test_materials.py against
     the whole stress field and Johnson's numbers.
     """
+    from geometry.core.validation import real  # NumPy: not at import (`ltca --help`)
+
     nu = real("poisson_ratio", poisson_ratio, unit="1", low=0.0, high=0.5, high_open=True)
 
     def neg_vm(zeta: float) -> float:
         sx, sy, sz = _axis_stresses(zeta, nu)
         return -math.sqrt(0.5 * ((sx - sy) ** 2 + (sy - sz) ** 2 + (sz - sx) ** 2))
+
+    # SciPy imported here: geometry.case imports this module, and `ltca --help` and
+    # `ltca cases` must not import SciPy (tests/test_startup.py, issue 32)
+    import scipy.optimize
 
     res = scipy.optimize.minimize_scalar(neg_vm, bounds=(0.0, 3.0), method="bounded",
                                          options={"xatol": 1e-10})

@@ -1,0 +1,33 @@
+"""The toolkit's operating point where a case's ``[operating]`` table gives none.
+
+A module of its own without NumPy: the command-line help quotes these values, and ``ltca
+--help`` imports no numerical library (tests/test_startup.py, issue 32). The case schema
+(:data:`geometry.case.OPERATING_DEFAULTS`) and :class:`friction.operating.
+OperatingConditions` take their defaults from here.
+
+Public names
+------------
+OPERATING_DEFAULTS   torques [N·m], pinion speed [rpm], oil, inlet temperature [degC],
+                     RMS roughness Rq [µm], friction coefficient model
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from types import MappingProxyType
+from typing import Any
+
+__all__ = ["OPERATING_DEFAULTS"]
+
+#: The toolkit's operating point where a case's ``[operating]`` table gives none (one
+#: place: :class:`friction.operating.OperatingConditions` takes its defaults from here):
+#: the seed's Table 3.1 torques [N·m], pinion speed [rpm], the seed's Table 5.2 oil, oil
+#: inlet temperature [degC], RMS roughness Rq [µm], friction coefficient model.
+OPERATING_DEFAULTS: Mapping[str, Any] = MappingProxyType({
+    "torque": (50.0, 250.0, 500.0),
+    "pinion_speed": 1500.0,
+    "lubricant": "75W90",
+    "temperature": 90.0,
+    "roughness": 0.8,
+    "friction_model": "xu2007",
+})
