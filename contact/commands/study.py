@@ -183,6 +183,8 @@ _SHOWN = {"efficiency": (100.0, "%"), "edge_load_share": (100.0, "%")}
 
 
 def _shown(name: str, x: np.ndarray, units: str) -> tuple[np.ndarray, str]:
+    import numpy as np  # (this module imports NumPy in its functions: `ltca --help`)
+
     factor, shown = _SHOWN.get(name, (1.0, units))
     return np.asarray(x, float) * factor, shown
 
@@ -294,7 +296,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
 
 def _or_dash(x: float) -> str:
     """A target to three decimals, "–" where there is none (the nominal row)."""
-    return f"{x:.3f}" if np.isfinite(x) else "–"
+    return f"{x:.3f}" if math.isfinite(x) else "–"
 
 
 def vh_check_command(args: argparse.Namespace) -> int:
