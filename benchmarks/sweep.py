@@ -45,7 +45,7 @@ import psutil  # noqa: E402
 import stage_clock  # noqa: E402
 from tabulate import tabulate  # noqa: E402
 
-from contact.catalogue import DEFAULT_CASE, resolve_case  # noqa: E402
+from contact.catalogue import resolve_case  # noqa: E402
 from contact.study import StudyRun, sweep  # noqa: E402
 from contact.study.engine import analyse_point, open_client  # noqa: E402
 from contact.study.points import StudyInputs  # noqa: E402
@@ -143,7 +143,9 @@ def main() -> None:
                     help="case(s) to sweep (default: the bundled default and "
                          f"{LONG_BEARING})")
     args = ap.parse_args()
-    names = args.case or [DEFAULT_CASE, LONG_BEARING]
+    # (None: the bundled default; DEFAULT_CASE is its file name, which resolve_case reads
+    # as a path)
+    names = args.case or [None, LONG_BEARING]
     cases = [resolve_case(n) for n in names]
     load0 = os.getloadavg()[0]
     res = []

@@ -25,12 +25,13 @@ from contact import catalogue
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.ltca.summary import edge_load_share
 from contact.utca import unloaded_tca
+from contact.utca.conjugate_map import gear_nodes
 from contact.utca.easeoff import ease_off
 from friction.operating import OperatingConditions
 from geometry import __version__
 from geometry.case import Case
 from geometry.core.errors import InputError
-from geometry.machine.flank import geometry_datasets
+from geometry.machine.flank import DEFAULT_GRID, flank_dataset
 from geometry.pair.assembly import Misalignment
 
 __all__ = [
@@ -152,6 +153,37 @@ def operating_conditions(case: Case, **override) -> OperatingConditions | None:
     if speed == 0:
         return None
     return OperatingConditions.from_point(case.operating, **{**override, "pinion_speed": speed})
+
+
+def geometry_datasets(case: Case) -> dict[tuple[str, str], xr.Dataset]:
+    """The four flanks of a case as the ``/geometry`` group's Datasets, keyed by (member,
+    flank): :func:`geometry.machine.flank.geometry_datasets` on its default grid, the gear's
+    flanks taken from the per-process memo the ease-off reads
+    (:func:`contact.utca.conjugate_map.gear_nodes`).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    dict
+        ``{("pinion", "concave"): Dataset, …}``, as
+        :func:`geometry.machine.flank.geometry_datasets` (the same arrays: the gear flank is
+        the same :func:`geometry.machine.flank.flank_surface` of the same grid, solved once
+        per analysis instead of twice — once here, once by the ease-off; issue 32).
+
+    Raises
+    ------
+    InputError
+        As :func:`geometry.machine.flank.flank_surface`.
+    """
+    out = {}
+    for m in ("pinion", "gear"):
+        for f in ("concave", "convex"):
+            surface = gear_nodes(case, f, dict(DEFAULT_GRID)) if m == "gear" else None
+            out[m, f] = flank_dataset(case, m, f, surface=surface)
+    return out
 
 
 def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:

@@ -5,11 +5,13 @@
   not depend on the misalignment: they are memoised per process under the tooth models'
   key (``Case.teeth_key``), and an ease-off computed with the memos equals, bit for bit,
   one computed without them.
+* The pipeline's ``/geometry`` group takes the gear flanks from that memo (one solve per
+  analysis instead of two) and equals the geometry layer's own datasets.
 * A LocalCluster the study engine starts runs its workers without distributed's
   ``MALLOC_TRIM_THRESHOLD_`` (a quarter of a point's CPU time in page faults).
 
-Cheap enough for CI: three ease-offs of the long-bearing case (about 0.1 s each on a quiet
-core) and a look at Dask's configuration (no cluster is started).
+Cheap enough for CI: four ease-offs of the long-bearing case (about 0.1 s each on a quiet
+core), eight flanks, and a look at Dask's configuration (no cluster is started).
 """
 
 from __future__ import annotations
@@ -77,3 +79,25 @@ def test_local_cluster_workers_start_without_malloc_trim():
             assert name not in env
         assert env.get("OMP_NUM_THREADS") in (1, "1")  # the rest as distributed sets it
     assert dict(dask.config.get(key)) == before
+
+
+def test_geometry_group_takes_the_gear_flanks_of_the_memo_and_changes_nothing(case):
+    """The pipeline's /geometry group (contact.pipeline.geometry_datasets) takes the gear
+    flanks from the memo the ease-off reads, so an analysis solves them once: its datasets
+    equal, bit for bit, those of geometry.machine.flank.geometry_datasets (solved afresh),
+    and the ease-off's gear nodes are then a memo hit. Cheap: eight flanks of 41 × 21
+    nodes (about 0.1 s each) and one ease-off."""
+    import xarray as xr
+
+    from contact.pipeline import geometry_datasets
+    from geometry.machine.flank import geometry_datasets as fresh_datasets
+
+    clear_memos()
+    ours = geometry_datasets(case)
+    fresh = fresh_datasets(case)
+    assert ours.keys() == fresh.keys()
+    for key in fresh:
+        xr.testing.assert_identical(ours[key], fresh[key])
+    assert memo_info()["gear_nodes"].misses == 2  # both gear flanks, once each
+    ease_off(case)
+    assert memo_info()["gear_nodes"].hits == 1

@@ -106,7 +106,9 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     Notes
     -----
     The analysis is exactly :func:`contact.run_analysis` of the case with the point's
-    misalignment and scaled deviations (no ``/geometry``, no theoretical groups) and
+    misalignment and scaled deviations (no ``/geometry``, no theoretical groups, no
+    ``/mesh_interface``: the summary does not read it, and its roll problems cost 2–3 % of
+    a point) and
     :func:`friction.efficiency.efficiency_analysis` of its ``/ltca`` at each speed, so a
     study's numbers equal those of single analyses at the same inputs (but for the order
     of floating-point sums: ≈ 1e-15 relative).
@@ -120,7 +122,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
             dataclasses.replace(case, misalignment=misalignment_of(case.misalignment, point)),
             list(shared.torque), flank=shared.flank, options=shared.options,
             deviations=shared.deviations_at(point.get("deviation_scale")), geometry=False,
-            theoretical=False, operating=False)
+            theoretical=False, operating=False, mesh_interface=False)
         friction = []
         if shared.speed:
             ltca = tree["/ltca"].to_dataset()
