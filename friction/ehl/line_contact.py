@@ -133,6 +133,8 @@ class Grid:
     outlet: float = 1.5
     tolerance: float = 1e-9
     max_iterations: int = 200
+    step_limit: float = 0.3
+    roughness_steps: int = 4
 
     def coordinates(self) -> Array:
         """Node abscissae X (nodes,) [1]."""
@@ -291,15 +293,24 @@ def _update_sets(kind: NDArray[np.int_], st: NodeState, s: _Setup) -> int:
     p, h = st.pressure, st.film
     kind[(kind != CAVITATION) & (p < 0.0)] = CAVITATION
     res = reynolds_residual(st, s.spacing, s.lambda_bar)
-    kind[(old == CAVITATION) & (res > 0.0) & (h > 0.0)] = FLUID
+    # a cavitation node is released only next to a pressurised fluid node, so the
+    # cavitation boundary moves at most one node per iteration (no fluid/cavitation cycling)
+    wet = (old == FLUID) & (p > 0.0)
+    beside = np.zeros_like(wet)
+    beside[1:] |= wet[:-1]
+    beside[:-1] |= wet[1:]
+    kind[(old == CAVITATION) & (res > 0.0) & (h > 0.0) & beside] = FLUID
     kind[(h < 0.0) & (p >= 0.0)] = CONTACT
     kind[0] = kind[-1] = CAVITATION
     return int(np.count_nonzero(kind != old))
 
 
-def _newton(s: _Setup, p: Array, h0: float, grid: Grid) -> tuple[Array, float, NDArray[np.int_], int]:
+def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] | None = None,
+            ) -> tuple[Array, float, NDArray[np.int_], int]:
     n = p.size
-    kind = np.full(n, FLUID)
+    if kind is None:
+        kind = np.full(n, FLUID)
+    kind = kind.copy()
     kind[0] = kind[-1] = CAVITATION
     load_row = np.full(n + 1, s.spacing)
     load_row[-1] = 0.0
@@ -311,7 +322,7 @@ def _newton(s: _Setup, p: Array, h0: float, grid: Grid) -> tuple[Array, float, N
         step = lu_solve(lu_factor(full), -rhs)
         dp, dh0 = step[:n], step[n]
         big = float(np.max(np.abs(dp)))
-        omega = min(1.0, 0.3 / big) if big > 0 else 1.0
+        omega = min(1.0, grid.step_limit / big) if big > 0 else 1.0
         p = p + omega * dp
         h0 = h0 + omega * dh0
         p[kind == CAVITATION] = 0.0
@@ -360,7 +371,17 @@ def _smooth_lambda(s: _Setup, cond: LineContactCondition) -> float:
 def _solve(cond: LineContactCondition, grid: Grid):
     s = _setup(cond, grid)
     p, h0 = _initial(s, cond)
-    p, h0, kind, iterations = _newton(s, p, h0, grid)
+    rough = s.roughness
+    iterations = 0
+    kind = None
+    # homotopy in the roughness amplitude: the smooth film first, then the roughness grown
+    # in grid.roughness_steps steps, each started from the last (contacts appear gradually,
+    # so the active set follows the physical branch instead of jumping into over-contact)
+    steps = grid.roughness_steps if np.any(rough != 0.0) else 0
+    for fraction in np.linspace(0.0, 1.0, steps + 1) if steps else (1.0,):
+        s.roughness = fraction * rough
+        p, h0, kind, its = _newton(s, p, h0, grid, kind)
+        iterations += its
     st = _state(s, p, h0)
     tau, f_fluid, f_boundary, w = _friction(s, cond, st, kind)
     return s, st, kind, tau, f_fluid, f_boundary, w, iterations
