@@ -242,7 +242,10 @@ def _roughness_parameters(density_radius_sigma: float, sigma_over_beta: float
 
 
 def _roughness_constant(density_radius_sigma: float, sigma_over_beta: float) -> float:
-    """Greenwood–Tripp K′ = (8√2/15) π (ηβσ)² √(σ/β) [1] for E′ = 2E* (:func:`asperity_pressure`)."""
+    """Greenwood–Tripp K′ = (8√2/15) π (ηβσ)² √(σ/β) [1] for E′ = 2E*.
+
+    See :func:`asperity_pressure`.
+    """
     return _GT_CONSTANT * density_radius_sigma**2 * math.sqrt(sigma_over_beta)
 
 

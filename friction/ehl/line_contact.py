@@ -37,10 +37,8 @@ from friction.ehl.rheology import (
     dowson_higginson_density,
     eyring_limited_shear,
 )
-from friction.lubricant import Lubricant, load_lubricant
-from friction.lubricant import density as oil_density
-from friction.lubricant import pressure_viscosity_coefficient, viscosity
-from geometry.core.errors import InputError, LTCAError
+from friction.lubricant import Lubricant, load_lubricant, pressure_viscosity_coefficient, viscosity
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, real, real_array
 
 __all__ = [
@@ -162,7 +160,8 @@ class LineContactSummary(NamedTuple):
     lambda_ratio: float              #: smooth-film h_min / composite Rq [1] (inf if smooth)
 
 
-def hertz_line_contact(load_per_length: float, radius: float, e_prime: float) -> tuple[float, float]:
+def hertz_line_contact(load_per_length: float, radius: float, e_prime: float
+                       ) -> tuple[float, float]:
     """Hertz half-width b [mm] and maximum pressure p_h [MPa] of a line contact.
 
     Parameters
@@ -208,7 +207,10 @@ class _Setup:
 def _oil(lubricant: str | Lubricant) -> Lubricant:
     if isinstance(lubricant, Lubricant):
         return lubricant
-    return load_lubricant(lubricant)
+    try:
+        return load_lubricant(lubricant)
+    except ModelUnavailableError as exc:
+        raise InputError(f"lubricant: {exc}") from exc
 
 
 def _roughness(name: str, value: ArrayLike | None, n: int) -> Array:
@@ -504,8 +506,8 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
                         "1 on asperity-contact nodes"),
         "viscosity": _var(st.viscosity * s.eta0, ("x",), "Pa s", "film viscosity"),
     })
-    ds = xr.Dataset(data, coords={"x": ("x", x_mm, {"units": "mm",
-                                                      "long_name": "distance from contact centre"})})
+    x_attrs = {"units": "mm", "long_name": "distance from contact centre"}
+    ds = xr.Dataset(data, coords={"x": ("x", x_mm, x_attrs)})
     oil = _oil(condition.lubricant)
     ds.attrs.update({
         "title": "mixed-EHL line contact (steady)",

@@ -30,7 +30,7 @@ import numpy as np
 import scipy.sparse as sp
 from numpy.typing import NDArray
 
-__all__ = ["FLUID", "CAVITATION", "CONTACT", "NodeState", "assemble"]
+__all__ = ["CAVITATION", "CONTACT", "FLUID", "NodeState", "assemble"]
 
 Array = NDArray[np.float64]
 
