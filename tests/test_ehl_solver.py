@@ -299,3 +299,30 @@ def test_bad_grid_and_roughness_parameters_named() -> None:
         ground_profile(np.arange(64) * 0.002, 0.5, skewness=9.0)
     with pytest.raises(InputError, match="x"):
         ground_profile(np.array([0.0, 1.0, 3.0] * 10), 0.5)
+
+
+# ------------------------------------------------------------------------------ command
+def test_ltca_ehl_command_writes_dataset(tmp_path, capsys) -> None:
+    # the command converts p_h to w′ = 2πR p_h²/E′ (Hertz): its h_c equals the library's at
+    # that load (same grid) to round-off, and the file carries units on every variable;
+    # 256 nodes keep it at ~1 s
+    import xarray as xr
+
+    from contact.cli import main
+
+    out = tmp_path / "ehl.nc"
+    rc = main(["ehl", "--pressure", "1.0", "--radius", "20", "--speed", "5",
+               "--slide-to-roll", "0.3", "--temperature", "75", "--roughness", "0", "0",
+               "--nodes", "256", "-o", str(out)])
+    assert rc == 0
+    line = capsys.readouterr().out.strip()
+    assert line.count("\n") == 0 and "h_c" in line and "mu" in line
+    with xr.open_dataset(out) as ds:
+        for name, var in ds.variables.items():
+            assert "units" in var.attrs and "long_name" in var.attrs, name
+        load = 2 * math.pi * R * 1000.0**2 / STEEL_E_PRIME
+        ref = line_contact_summary(LineContactCondition(
+            load_per_length=load, radius=R, entraining_velocity=5.0, slide_to_roll=0.3,
+            temperature=75.0), Grid(nodes=256))
+        assert float(ds.film_central) == pytest.approx(ref.film_central, rel=1e-12)
+        assert float(ds.hertz_pressure) == pytest.approx(1000.0, rel=1e-12)
