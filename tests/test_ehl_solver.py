@@ -72,8 +72,8 @@ def test_kernel_fft_equals_dense_and_hertz_deflection() -> None:
 
 # ------------------------------------------------------------------------------ smooth
 CI_CONDITIONS = [(556.0, 5.0, 75.0), (200.0, 1.0, 50.0), (556.0, 20.0, 50.0)]
-SLOW_CONDITIONS = [(1500.0, 10.0, 100.0, -4.0), (300.0, 10.0, 25.0, -6.0),
-                   (1000.0, 0.5, 100.0, -4.0)]
+SLOW_CONDITIONS = [(1500.0, 10.0, 100.0, -4.0, 1024), (300.0, 10.0, 25.0, -6.0, 1024),
+                   (1000.0, 0.5, 100.0, -3.0, 2048)]
 
 
 @pytest.mark.parametrize(("load", "speed", "temperature"), CI_CONDITIONS)
@@ -90,12 +90,14 @@ def test_smooth_film_matches_pan_hamrock(load, speed, temperature) -> None:
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize(("load", "speed", "temperature", "inlet"), SLOW_CONDITIONS)
-def test_smooth_film_matches_pan_hamrock_wide_span(load, speed, temperature, inlet) -> None:
+@pytest.mark.parametrize(("load", "speed", "temperature", "inlet", "nodes"), SLOW_CONDITIONS)
+def test_smooth_film_matches_pan_hamrock_wide_span(load, speed, temperature, inlet,
+                                                   nodes) -> None:
     # the rest of the span: heavy (p_h 1.6 GPa), thick film (U 3.6e-10, inlet at −6 b so
-    # the inlet is flooded) and thin film (U 1.2e-12, 1024 nodes for the narrow spike)
+    # the inlet is flooded) and thin film (U 1.2e-12, h_c 46 nm: 2048 nodes, Δ = 2 mm/1000,
+    # for the narrow spike and constriction — h_c/PH is 0.88, 0.94, 0.96 at 512/1024/2048)
     cond = _smooth(load, speed, temperature)
-    s = line_contact_summary(cond, Grid(nodes=1024, inlet=inlet))
+    s = line_contact_summary(cond, Grid(nodes=nodes, inlet=inlet))
     hc, hm = _pan_hamrock(cond)
     assert s.film_central == pytest.approx(hc, rel=0.05)
     assert s.film_min == pytest.approx(hm, rel=0.05)
