@@ -13,8 +13,9 @@ solver, so that μ depends on the film parameter λ continuously from boundary t
    factor φ_T of :func:`friction.film.thermal_reduction_factor`) becomes
    h_c(γ₁) = h_c,s · γ₁^(p_U − p_G) = h_c,s · γ₁^0.13.
 2. **Asperity pressure** (Greenwood & Tripp 1970): at the mean-plane separation h_c the
-   asperities carry the nominal pressure p_a = K E′ F_{5/2}(h_c/σ),
-   K = (16√2/15) π (ηβσ)² √(σ/β), which must equal the asperity share w′/(γ₂ · 2b) of
+   asperities carry the nominal pressure p_a = K′ E′ F_{5/2}(h_c/σ),
+   K′ = (8√2/15) π (ηβσ)² √(σ/β) with E′ = 2E* (two rough surfaces; Greenwood & Tripp's
+   (16√2/15)π… multiplies E*), which must equal the asperity share w′/(γ₂ · 2b) of
    the Hertz mean pressure p̄ = w′/(2b). One equation in γ₁, solved per segment.
 3. **Film shear** (Eyring; Johnson & Tevaarwerk 1977; Evans & Johnson 1986): over the
    Hertz zone the film pressure is p(x)/γ₁ (the Hertz profile scaled to the film's load),
@@ -131,7 +132,10 @@ _W_THETA = 0.5 * math.pi * _WEIGHTS
 #: h_c ∝ γ₁^(p_U − p_G) under the JGP scaling w′ → w′/γ₁, E′ → E′/γ₁ (U → γ₁U, G → G/γ₁).
 _FILM_GAMMA_EXPONENT = DOWSON_TOYODA_EXPONENTS[0] - DOWSON_TOYODA_EXPONENTS[1]
 
-_GT_CONSTANT = 16.0 * math.sqrt(2.0) / 15.0 * math.pi
+#: Greenwood–Tripp constant for E′ = 2E*: (16√2/15)π multiplies E* for two rough
+#: surfaces, hence (8√2/15)π with E′ (derived in tests/test_ehl_solver.py from the sum over
+#: summit pairs). Until issue 33 this was 16√2/15 π with E′, 2× too large.
+_GT_CONSTANT = 8.0 * math.sqrt(2.0) / 15.0 * math.pi
 
 
 def greenwood_tripp_integral(order: float, separation: ArrayLike) -> NDArray[np.float64] | float:
@@ -176,9 +180,10 @@ def asperity_pressure(
     asperity_density_radius_sigma: float = MIXED_EHL_DEFAULTS["asperity_density_radius_sigma"][0],
     sigma_over_beta: float = MIXED_EHL_DEFAULTS["sigma_over_beta"][0],
 ) -> NDArray[np.float64] | float:
-    """Greenwood–Tripp nominal asperity pressure p_a = K E′ F_{5/2}(h/σ).
+    """Greenwood–Tripp nominal asperity pressure p_a = K′ E′ F_{5/2}(h/σ).
 
-    K = (16√2/15) π (ηβσ)² √(σ/β).
+    K′ = (8√2/15) π (ηβσ)² √(σ/β) with E′ = 2E*, i.e. (16√2/15) π (ηβσ)² √(σ/β) E* for two
+    rough surfaces of summit density η, summit radius β and composite summit-height RMS σ.
 
     Parameters
     ----------
@@ -208,10 +213,15 @@ def asperity_pressure(
     ring in mixed lubrication", J. Tribol. 116 (1994) 470–478, and Arcoumanis, C.,
     Ostovar, P., Mortier, R., "Mixed lubrication modelling of Newtonian and shear thinning
     liquids in a piston-ring configuration", SAE 972924 (1997). The constant is quoted
-    as 8√2/15 or 16√2/15 by different authors, with E′ = E* or 2E*; the choice here
-    (16√2/15 with E′ = 2E*) is the largest of these, a factor ≤ 4 that shifts the
-    λ at which asperities take a given share by about 0.3–0.5 (F_{5/2} falls by ≈ 3.5×
-    per 0.5 of λ near λ = 1).
+    as 8√2/15 or 16√2/15 by different authors, with E′ = E* or 2E*; summing the Hertz
+    loads of all summit pairs of two rough surfaces gives (16√2/15)π with E* (Greenwood &
+    Tripp 1970), hence (8√2/15)π with the toolkit's E′ = 2E* (the test derives it).
+
+    The load-sharing scheme of :func:`mixed_ehl_solution` keeps the mean-plane separation
+    at or above the smooth-film value, so the asperity pressure never exceeds
+    K′E′F_{5/2}(0) (≈ 80 MPa with the defaults): this cap is a property of the scheme, not
+    of rough contacts, and keeps the asperity share well below 1 even at λ → 0 (see
+    ``docs/ehl.md``; the line-contact solver :mod:`friction.ehl` has no such cap).
     """
     h = real_array("separation", separation, unit="1")
     e = real_array("e_prime", e_prime, low=0.0, low_open=True, unit="MPa")
@@ -232,7 +242,10 @@ def _roughness_parameters(density_radius_sigma: float, sigma_over_beta: float
 
 
 def _roughness_constant(density_radius_sigma: float, sigma_over_beta: float) -> float:
-    """Greenwood–Tripp K = (16√2/15) π (ηβσ)² √(σ/β) [1] (see :func:`asperity_pressure`)."""
+    """Greenwood–Tripp K′ = (8√2/15) π (ηβσ)² √(σ/β) [1] for E′ = 2E*.
+
+    See :func:`asperity_pressure`.
+    """
     return _GT_CONSTANT * density_radius_sigma**2 * math.sqrt(sigma_over_beta)
 
 

@@ -33,6 +33,8 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
                        "--roughness 0.4 0.8"),
     "wear": ("ltca wear --torque 200 --wear-coefficient 1e-17 --cycles 2.5e6 --steps 10 "
              "-o wear.nc",),
+    "ehl": ("ltca ehl --pressure 1.0 --radius 20 --speed 5 --slide-to-roll 0.3 "
+            "--temperature 75 --roughness 0 0 -o ehl.nc",),
     "geometry": ("ltca geometry -o flanks.nc",),
     "plot-geometry": ("ltca plot-geometry -o figs",),
     "synthesize": ("ltca synthesize kolivand2009_fh_12x41 -o my_case.toml",),

@@ -1,0 +1,524 @@
+"""One mixed-EHL line contact, steady: pressure, film, load sharing and friction.
+
+:func:`solve_line_contact` solves one contact condition (:class:`LineContactCondition`)
+on a grid (:class:`Grid`) and returns a labelled dataset; :func:`line_contact_summary`
+returns only the scalars (μ, h_c, h_min, asperity load ratio) for studies.
+
+Conventions (stated once, the toolkit's, :mod:`friction.film`): E′ = 2/Σ((1−νᵢ²)/Eᵢ) = 2E*;
+Hertz half-width b = √(8 w′ R/(π E′)), maximum pressure p_h = E′ b/(4R); entraining
+velocity u_e = (u₁ + u₂)/2, sliding velocity u_s = u₁ − u₂ = SR·u_e; roughness heights
+positive towards the other surface (they reduce the gap); isothermal film at the inlet
+temperature; Newtonian flow in the Reynolds equation, Eyring shear (with limiting shear
+stress) for the film traction — the usual split for line contacts (Johnson & Tevaarwerk
+1977), valid while the film's shear heating is small.
+
+Solution method: Newton's method on the unified Reynolds equation (:mod:`friction.ehl.reynolds`)
+with the rigid approach H₀ as the unknown of the load balance, the deflection by DC-FFT
+(:mod:`friction.ehl.kernel`) in the residual and the same coefficients as a dense matrix in
+the Jacobian, and an active set of contact (H = 0) and cavitation (P = 0) nodes.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass, field
+from typing import NamedTuple
+
+import numpy as np
+import xarray as xr
+from numpy.typing import ArrayLike, NDArray
+from scipy.linalg import lu_factor, lu_solve
+
+from friction.ehl.kernel import ElasticKernel
+from friction.ehl.reynolds import CAVITATION, CONTACT, FLUID, NodeState, assemble, reynolds_residual
+from friction.ehl.rheology import (
+    VISCOSITY_PRESSURE_MODELS,
+    dowson_higginson_density,
+    eyring_limited_shear,
+)
+from friction.lubricant import Lubricant, load_lubricant, pressure_viscosity_coefficient, viscosity
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.validation import integer, one_of, real, real_array
+
+__all__ = [
+    "STEEL_E_PRIME",
+    "ConvergenceError",
+    "Grid",
+    "LineContactCondition",
+    "LineContactSummary",
+    "hertz_line_contact",
+    "line_contact_summary",
+    "solve_line_contact",
+]
+
+log = logging.getLogger(__name__)
+
+Array = NDArray[np.float64]
+
+#: E′ = 2E* of a steel pair, E = 206 GPa, ν = 0.3 [MPa].
+STEEL_E_PRIME = 206000.0 / (1.0 - 0.3**2)
+
+
+class ConvergenceError(LTCAError, RuntimeError):
+    """The Newton iteration of the line contact did not converge."""
+
+
+@dataclass(frozen=True)
+class LineContactCondition:
+    """One line-contact condition.
+
+    Parameters
+    ----------
+    load_per_length : float — [N/mm]
+        w′ > 0.
+    radius : float — [mm]
+        Equivalent radius R > 0.
+    entraining_velocity : float — [m/s]
+        u_e = (u₁ + u₂)/2 > 0.
+    slide_to_roll : float — [1]
+        SR = (u₁ − u₂)/u_e, in [−2, 2].
+    temperature : float — [degC]
+        Inlet (oil) temperature.
+    lubricant : str or Lubricant
+        A bundled oil name or file (:func:`friction.lubricant.load_lubricant`).
+    e_prime : float — [MPa]
+        E′ = 2E* (default steel on steel).
+    roughness_1, roughness_2 : array (n,) or None — [µm]
+        Heights of surface 1 and 2 on the solver's grid (positive towards the other
+        surface); ``None`` is smooth.
+    viscosity_model : {"roelands", "barus"}
+    eyring_stress : float or None — [MPa]
+        τ₀; default the lubricant's ``eyring_stress``.
+    limiting_shear_coefficient : float or None — [1]
+        Λ; default the lubricant's.
+    boundary_friction : float or None — [1]
+        μ_b on the contact nodes; default the lubricant's.
+    """
+
+    load_per_length: float
+    radius: float
+    entraining_velocity: float
+    slide_to_roll: float
+    temperature: float
+    lubricant: str | Lubricant = "75W90"
+    e_prime: float = STEEL_E_PRIME
+    roughness_1: ArrayLike | None = None
+    roughness_2: ArrayLike | None = None
+    viscosity_model: str = "roelands"
+    eyring_stress: float | None = None
+    limiting_shear_coefficient: float | None = None
+    boundary_friction: float | None = None
+
+
+@dataclass(frozen=True)
+class Grid:
+    """Solver grid in units of the Hertz half-width b.
+
+    Parameters
+    ----------
+    nodes : int
+        Number of nodes, 16 … 16384.
+    inlet, outlet : float — [1]
+        Domain X ∈ [inlet, outlet], inlet ≤ −1.5, outlet ≥ 1.2.
+    tolerance : float — [1]
+        Convergence: max |ΔP| and the scaled residual below it.
+    max_iterations : int
+    """
+
+    nodes: int = 512
+    inlet: float = -4.0
+    outlet: float = 1.5
+    tolerance: float = 1e-9
+    max_iterations: int = 200
+    step_limit: float = 0.3
+    roughness_steps: int = 4
+
+    def coordinates(self) -> Array:
+        """Node abscissae X (nodes,) [1]."""
+        return np.linspace(self.inlet, self.outlet, self.nodes)
+
+    def check(self) -> None:
+        """Raise :class:`InputError` naming the field out of range."""
+        integer("grid.nodes", self.nodes, low=16, high=16384)
+        real("grid.inlet", self.inlet, high=-1.5)
+        real("grid.outlet", self.outlet, low=1.2)
+        real("grid.tolerance", self.tolerance, low=1e-14, high=1e-3)
+        integer("grid.max_iterations", self.max_iterations, low=1)
+
+
+class LineContactSummary(NamedTuple):
+    """Scalar results of one condition (units in the field names' docs)."""
+
+    friction_coefficient: float      #: μ [1]
+    fluid_friction: float            #: film part of μ [1]
+    boundary_part: float             #: asperity (boundary) part of μ [1]
+    film_central: float              #: h_c at X = 0 [µm]
+    film_min: float                  #: min h [µm]
+    asperity_load_ratio: float       #: ∫_contact p dx / w′ [1]
+    contact_area_ratio: float        #: contact length / 2b [1]
+    lambda_ratio: float              #: smooth-film h_min / composite Rq [1] (inf if smooth)
+
+
+def hertz_line_contact(load_per_length: float, radius: float, e_prime: float
+                       ) -> tuple[float, float]:
+    """Hertz half-width b [mm] and maximum pressure p_h [MPa] of a line contact.
+
+    Parameters
+    ----------
+    load_per_length : float — [N/mm]
+    radius : float — [mm]
+    e_prime : float — [MPa]
+        E′ = 2E*.
+
+    Returns
+    -------
+    (b, p_h) : (float [mm], float [MPa])
+        b = √(8w′R/(πE′)), p_h = 2w′/(πb) = E′b/(4R).
+
+    Notes
+    -----
+    Source: Johnson, *Contact Mechanics* (1985), Eq. 4.45 with E* = E′/2.
+    """
+    b = math.sqrt(8.0 * load_per_length * radius / (math.pi * e_prime))
+    return b, 2.0 * load_per_length / (math.pi * b)
+
+
+@dataclass
+class _Setup:
+    x: Array
+    spacing: float
+    b: float          # [m]
+    ph: float         # [Pa]
+    radius: float     # [m]
+    eta0: float       # [Pa s]
+    alpha: float      # [1/Pa]
+    lambda_bar: float
+    roughness: Array  # dimensionless sum of heights
+    viscosity_fn: object
+    tau0: float       # [Pa]
+    lim: float
+    mu_b: float
+    sigma: float      # composite Rq [µm]
+    kernel: ElasticKernel = field(repr=False)
+    kernel_matrix: Array = field(repr=False)
+
+
+def _oil(lubricant: str | Lubricant) -> Lubricant:
+    if isinstance(lubricant, Lubricant):
+        return lubricant
+    try:
+        return load_lubricant(lubricant)
+    except ModelUnavailableError as exc:
+        raise InputError(f"lubricant: {exc}") from exc
+
+
+def _roughness(name: str, value: ArrayLike | None, n: int) -> Array:
+    if value is None:
+        return np.zeros(n)
+    try:
+        arr = real_array(name, value, unit="µm", ndim=1)
+    except InputError:
+        raise
+    if arr.size != n:
+        raise InputError(f"{name}: must have one height per grid node ({n}), got {arr.size}")
+    return arr
+
+
+def _setup(cond: LineContactCondition, grid: Grid) -> _Setup:
+    grid.check()
+    w = real("load_per_length", cond.load_per_length, unit="N/mm", low=0.0, low_open=True)
+    r = real("radius", cond.radius, unit="mm", low=0.0, low_open=True)
+    ue = real("entraining_velocity", cond.entraining_velocity, unit="m/s", low=0.0,
+              low_open=True, high=100.0)
+    real("slide_to_roll", cond.slide_to_roll, unit="1", low=-2.0, high=2.0)
+    ep = real("e_prime", cond.e_prime, unit="MPa", low=1e3, high=1e7)
+    model = one_of("viscosity_model", cond.viscosity_model, VISCOSITY_PRESSURE_MODELS)
+    oil = _oil(cond.lubricant)
+    eta0 = float(viscosity(oil, cond.temperature))
+    alpha = float(pressure_viscosity_coefficient(oil, cond.temperature)) * 1e-9
+    b_mm, ph_mpa = hertz_line_contact(w, r, ep)
+    b, ph, rm = b_mm * 1e-3, ph_mpa * 1e6, r * 1e-3
+    x = grid.coordinates()
+    spacing = float(x[1] - x[0])
+    r1 = _roughness("roughness_1", cond.roughness_1, grid.nodes)
+    r2 = _roughness("roughness_2", cond.roughness_2, grid.nodes)
+    rough = (r1 + r2) * 1e-6 * rm / b**2
+    sigma = float(math.hypot(np.std(r1), np.std(r2)))
+
+    def param(name: str, given: float | None, oil_value: float | None, unit: str,
+              low: float, high: float) -> float:
+        value = given if given is not None else oil_value
+        if value is None:
+            raise InputError(f"{name}: the lubricant {oil.name!r} gives none; pass one ({unit})")
+        return real(name, value, unit=unit, low=low, high=high)
+
+    tau0 = param("eyring_stress", cond.eyring_stress, oil.eyring_stress, "MPa", 1e-3, 1e3) * 1e6
+    lim = param("limiting_shear_coefficient", cond.limiting_shear_coefficient,
+                oil.limiting_shear_coefficient, "1", 0.0, math.inf)
+    mu_b = param("boundary_friction", cond.boundary_friction, oil.boundary_friction, "1",
+                 0.0, 1.0)
+    kernel = ElasticKernel(grid.nodes, spacing)
+    return _Setup(
+        x=x, spacing=spacing, b=b, ph=ph, radius=rm, eta0=eta0, alpha=alpha,
+        lambda_bar=12.0 * eta0 * ue * rm**2 / (b**3 * ph), roughness=rough,
+        viscosity_fn=VISCOSITY_PRESSURE_MODELS[model], tau0=tau0, lim=lim, mu_b=mu_b,
+        sigma=sigma, kernel=kernel, kernel_matrix=kernel.matrix(),
+    )
+
+
+def _state(s: _Setup, p: Array, h0: float) -> NodeState:
+    film = h0 + 0.5 * s.x**2 + s.kernel.deflection(p) - s.roughness
+    eta, dln = s.viscosity_fn(p * s.ph, s.eta0, s.alpha)  # type: ignore[operator]
+    rho, drho = dowson_higginson_density(p * s.ph)
+    return NodeState(pressure=p, film=film, density=rho, ddensity=drho * s.ph,
+                     viscosity=eta / s.eta0, dln_viscosity=dln * s.ph)
+
+
+def _initial(s: _Setup, cond: LineContactCondition) -> tuple[Array, float]:
+    """Hertz pressure and a rigid approach giving the Pan–Hamrock central film."""
+    p = np.sqrt(np.clip(1.0 - s.x**2, 0.0, None))
+    p *= (0.5 * math.pi) / (p.sum() * s.spacing)
+    e_prime = cond.e_prime * 1e6
+    big_u = s.eta0 * cond.entraining_velocity / (e_prime * s.radius)
+    big_w = cond.load_per_length * 1e3 / (e_prime * s.radius)
+    hc = 2.922 * big_w**-0.166 * big_u**0.692 * (s.alpha * e_prime) ** 0.470  # h_c/R
+    hc_dimless = hc * s.radius**2 / s.b**2
+    film0 = 0.5 * s.x**2 + s.kernel.deflection(p)
+    centre = int(np.argmin(np.abs(s.x)))
+    return p, float(hc_dimless - film0[centre])
+
+
+def _update_sets(kind: NDArray[np.int_], st: NodeState, s: _Setup) -> int:
+    """Move nodes between fluid, cavitation and contact; return how many changed."""
+    old = kind.copy()
+    p, h = st.pressure, st.film
+    kind[(kind != CAVITATION) & (p < 0.0)] = CAVITATION
+    res = reynolds_residual(st, s.spacing, s.lambda_bar)
+    # a cavitation node is released only next to a pressurised fluid node, so the
+    # cavitation boundary moves at most one node per iteration (no fluid/cavitation cycling)
+    wet = (old == FLUID) & (p > 0.0)
+    beside = np.zeros_like(wet)
+    beside[1:] |= wet[:-1]
+    beside[:-1] |= wet[1:]
+    kind[(old == CAVITATION) & (res > 0.0) & (h > 0.0) & beside] = FLUID
+    kind[(h < 0.0) & (p >= 0.0)] = CONTACT
+    kind[0] = kind[-1] = CAVITATION
+    return int(np.count_nonzero(kind != old))
+
+
+def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] | None = None,
+            ) -> tuple[Array, float, NDArray[np.int_], int]:
+    n = p.size
+    if kind is None:
+        kind = np.full(n, FLUID)
+    kind = kind.copy()
+    kind[0] = kind[-1] = CAVITATION
+    load_row = np.full(n + 1, s.spacing)
+    load_row[-1] = 0.0
+    for it in range(1, grid.max_iterations + 1):
+        st = _state(s, p, h0)
+        res, jac = assemble(st, kind, s.kernel_matrix, s.spacing, s.lambda_bar)
+        full = np.vstack([jac, load_row])
+        rhs = np.concatenate([res, [p.sum() * s.spacing - 0.5 * math.pi]])
+        step = lu_solve(lu_factor(full), -rhs)
+        dp, dh0 = step[:n], step[n]
+        big = float(np.max(np.abs(dp)))
+        omega = min(1.0, grid.step_limit / big) if big > 0 else 1.0
+        p = p + omega * dp
+        h0 = h0 + omega * dh0
+        p[kind == CAVITATION] = 0.0
+        st = _state(s, p, h0)
+        changed = _update_sets(kind, st, s)
+        p = np.where(kind == CAVITATION, 0.0, np.maximum(p, 0.0))
+        if not np.all(np.isfinite(p)) or not math.isfinite(h0):
+            raise ConvergenceError("line contact: the Newton iteration diverged (non-finite)")
+        if changed == 0 and omega == 1.0 and big < grid.tolerance:
+            # the load balance is exact after a full Newton step of a linear row
+            p *= (0.5 * math.pi) / (p.sum() * s.spacing)
+            return p, h0, kind, it
+    raise ConvergenceError(
+        f"line contact: no convergence in {grid.max_iterations} Newton iterations "
+        f"(last max |ΔP| = {big:.2e}); refine the grid or widen the inlet")
+
+
+def _friction(s: _Setup, cond: LineContactCondition, st: NodeState,
+              kind: NDArray[np.int_]) -> tuple[Array, float, float, float]:
+    """Film shear stress τ(x) [Pa], the fluid and boundary friction forces [N/m], load [N/m]."""
+    b = s.b
+    h = np.maximum(st.film, 0.0) * b**2 / s.radius  # [m]
+    p = st.pressure * s.ph
+    us = cond.slide_to_roll * cond.entraining_velocity
+    fluid = (kind != CONTACT) & (h > 0.0)
+    rate = np.where(fluid, us / np.where(h > 0.0, h, 1.0), 0.0)
+    tau = eyring_limited_shear(st.viscosity * s.eta0, rate, p, s.tau0, s.lim)
+    tau = np.where(fluid, tau, 0.0)
+    dx = s.spacing * b
+    f_fluid = float(np.abs(tau).sum() * dx)
+    w = float(p.sum() * dx)
+    f_boundary = s.mu_b * float(p[kind == CONTACT].sum() * dx)
+    return tau, f_fluid, f_boundary, w
+
+
+def _smooth_lambda(s: _Setup, cond: LineContactCondition) -> float:
+    if s.sigma == 0.0:
+        return math.inf
+    e_prime = cond.e_prime * 1e6
+    big_u = s.eta0 * cond.entraining_velocity / (e_prime * s.radius)
+    big_w = cond.load_per_length * 1e3 / (e_prime * s.radius)
+    hmin = 1.714 * big_w**-0.128 * big_u**0.694 * (s.alpha * e_prime) ** 0.568 * s.radius
+    return hmin * 1e6 / s.sigma
+
+
+def _solve(cond: LineContactCondition, grid: Grid):
+    s = _setup(cond, grid)
+    p, h0 = _initial(s, cond)
+    rough = s.roughness
+    iterations = 0
+    kind = None
+    # homotopy in the roughness amplitude: the smooth film first, then the roughness grown
+    # in grid.roughness_steps steps, each started from the last (contacts appear gradually,
+    # so the active set follows the physical branch instead of jumping into over-contact)
+    steps = grid.roughness_steps if np.any(rough != 0.0) else 0
+    for fraction in np.linspace(0.0, 1.0, steps + 1) if steps else (1.0,):
+        s.roughness = fraction * rough
+        p, h0, kind, its = _newton(s, p, h0, grid, kind)
+        iterations += its
+    st = _state(s, p, h0)
+    tau, f_fluid, f_boundary, w = _friction(s, cond, st, kind)
+    return s, st, kind, tau, f_fluid, f_boundary, w, iterations
+
+
+def _summary(s, cond, st, kind, f_fluid, f_boundary, w) -> LineContactSummary:
+    h_um = np.maximum(st.film, 0.0) * s.b**2 / s.radius * 1e6
+    p = st.pressure
+    centre = int(np.argmin(np.abs(s.x)))
+    zone = p > 0.0
+    contact_load = float(p[kind == CONTACT].sum() * s.spacing) / (0.5 * math.pi)
+    return LineContactSummary(
+        friction_coefficient=(f_fluid + f_boundary) / w,
+        fluid_friction=f_fluid / w,
+        boundary_part=f_boundary / w,
+        film_central=float(h_um[centre]),
+        film_min=float(h_um[zone].min()) if zone.any() else float(h_um.min()),
+        asperity_load_ratio=contact_load,
+        contact_area_ratio=float(np.count_nonzero(kind == CONTACT) * s.spacing / 2.0),
+        lambda_ratio=_smooth_lambda(s, cond),
+    )
+
+
+def line_contact_summary(condition: LineContactCondition, grid: Grid | None = None
+                         ) -> LineContactSummary:
+    """Scalar results of one steady line contact (no dataset built).
+
+    Parameters
+    ----------
+    condition : LineContactCondition
+    grid : Grid, optional
+        Default :class:`Grid()` (512 nodes over −4 … 1.5 b).
+
+    Returns
+    -------
+    LineContactSummary
+        μ and its parts [1], h_c and h_min [µm], the asperity load and contact-area
+        ratios [1], the smooth-film λ [1].
+
+    Raises
+    ------
+    InputError
+        An input out of range (named).
+    ConvergenceError
+        The Newton iteration did not converge.
+
+    Notes
+    -----
+    Source: the seed's §5.2.2 model (Li & Kahraman 2010) in its steady form; see the
+    module docstring and ``docs/ehl.md``.
+    """
+    s, st, kind, _tau, f_fluid, f_boundary, w, _ = _solve(condition, grid or Grid())
+    return _summary(s, condition, st, kind, f_fluid, f_boundary, w)
+
+
+def _var(data, dims, units: str, long_name: str) -> xr.Variable:
+    return xr.Variable(dims, np.asarray(data, dtype=float),
+                       attrs={"units": units, "long_name": long_name})
+
+
+def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None) -> xr.Dataset:
+    """Solve one steady mixed-EHL line contact and return its dataset.
+
+    Parameters
+    ----------
+    condition : LineContactCondition
+    grid : Grid, optional
+        Default :class:`Grid()`.
+
+    Returns
+    -------
+    xarray.Dataset
+        Dimension ``x`` [mm] (from the contact centre, positive in the rolling direction);
+        variables ``pressure`` [MPa], ``film_thickness`` [µm], ``roughness`` [µm],
+        ``shear_stress`` [MPa], ``contact`` [1] (1 on contact nodes), ``viscosity``
+        [Pa s]; scalars ``friction_coefficient``, ``fluid_friction``, ``boundary_friction_part``,
+        ``asperity_load_ratio``, ``contact_area_ratio``, ``lambda_ratio`` [1],
+        ``film_central``, ``film_min`` [µm], ``hertz_pressure`` [MPa], ``hertz_half_width``
+        [mm].
+
+    Raises
+    ------
+    InputError
+        An input out of range (named).
+    ConvergenceError
+        The Newton iteration did not converge.
+
+    Notes
+    -----
+    Source: the seed's §5.2.2 model (Li & Kahraman 2010) in its steady form with Hu & Zhu's
+    unified Reynolds equation; ``docs/ehl.md`` gives the equations and validity.
+    """
+    s, st, kind, tau, f_fluid, f_boundary, w, iterations = _solve(condition, grid or Grid())
+    summ = _summary(s, condition, st, kind, f_fluid, f_boundary, w)
+    x_mm = s.x * s.b * 1e3
+    h_um = np.maximum(st.film, 0.0) * s.b**2 / s.radius * 1e6
+    rough_um = s.roughness * s.b**2 / s.radius * 1e6
+    scalar = {
+        "friction_coefficient": (summ.friction_coefficient, "1", "friction coefficient μ"),
+        "fluid_friction": (summ.fluid_friction, "1", "film (Eyring) part of μ"),
+        "boundary_friction_part": (summ.boundary_part, "1", "asperity (boundary) part of μ"),
+        "film_central": (summ.film_central, "um", "central film thickness h_c"),
+        "film_min": (summ.film_min, "um", "minimum film thickness h_min"),
+        "asperity_load_ratio": (summ.asperity_load_ratio, "1",
+                                "share of the load carried by contact nodes"),
+        "contact_area_ratio": (summ.contact_area_ratio, "1",
+                               "contact length over Hertz width 2b"),
+        "lambda_ratio": (summ.lambda_ratio if math.isfinite(summ.lambda_ratio) else -1.0, "1",
+                         "smooth-film h_min (Pan-Hamrock) over composite Rq; -1 if smooth"),
+        "hertz_pressure": (s.ph * 1e-6, "MPa", "Hertz maximum pressure p_h"),
+        "hertz_half_width": (s.b * 1e3, "mm", "Hertz half-width b"),
+    }
+    data = {k: _var(v, (), u, ln) for k, (v, u, ln) in scalar.items()}
+    data.update({
+        "pressure": _var(st.pressure * s.ph * 1e-6, ("x",), "MPa", "film and contact pressure"),
+        "film_thickness": _var(h_um, ("x",), "um", "film thickness h"),
+        "roughness": _var(rough_um, ("x",), "um", "sum of the surfaces' roughness heights"),
+        "shear_stress": _var(tau * 1e-6, ("x",), "MPa", "film shear stress (Eyring)"),
+        "contact": _var((kind == CONTACT).astype(float), ("x",), "1",
+                        "1 on asperity-contact nodes"),
+        "viscosity": _var(st.viscosity * s.eta0, ("x",), "Pa s", "film viscosity"),
+    })
+    x_attrs = {"units": "mm", "long_name": "distance from contact centre"}
+    ds = xr.Dataset(data, coords={"x": ("x", x_mm, x_attrs)})
+    oil = _oil(condition.lubricant)
+    ds.attrs.update({
+        "title": "mixed-EHL line contact (steady)",
+        "lubricant": oil.name,
+        "viscosity_model": condition.viscosity_model,
+        "newton_iterations": iterations,
+        "load_per_length_N_per_mm": float(condition.load_per_length),
+        "radius_mm": float(condition.radius),
+        "entraining_velocity_m_per_s": float(condition.entraining_velocity),
+        "slide_to_roll": float(condition.slide_to_roll),
+        "temperature_degC": float(condition.temperature),
+        "e_prime_MPa": float(condition.e_prime),
+    })
+    return ds
