@@ -308,6 +308,12 @@ def run_analysis(
     c = catalogue.resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
+    if root_stress is not False and root_stress is not True:
+        from contact.compliance.fe import FEOptions
+
+        if not isinstance(root_stress, FEOptions):
+            raise InputError("root_stress: must be True, False or a "
+                             f"contact.compliance.fe.FEOptions, got {root_stress!r}")
     torques = c.operating.torque if torque is None else torque
     opts = options or LTCAOptions()
     if operating is None:
@@ -371,9 +377,6 @@ def run_analysis(
         from contact.ltca.root_stress import root_stress as _root_stress
 
         t0 = time.perf_counter()
-        if not isinstance(root_stress, (bool, FEOptions)):
-            raise InputError("root_stress: must be True, False or a "
-                             f"contact.compliance.fe.FEOptions, got {root_stress!r}")
         fe_options = root_stress if isinstance(root_stress, FEOptions) else None
         rs = _root_stress(c, eo, ltca_ds, fe_options, progress=progress)
         ltca_ds = ltca_ds.assign(root_stress=rs["root_stress"],

@@ -118,7 +118,7 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
                    pairs: np.ndarray) -> np.ndarray:
     """(NT, J, K, station) [MPa] root stress of one member: forces (NT, J, K, S) [N],
     points (J, K, S, 3) [mm] in its frame."""
-    nt, nj, nk, ns = force.shape
+    nt, nj, nk, _ = force.shape
     tooth_of_pair = _pair_teeth(coef, pts, pairs)
     f = np.nan_to_num(force)
     loaded = np.argwhere(f > 0)  # (P, 4): torque, roll, pair, segment

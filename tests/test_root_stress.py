@@ -1,0 +1,204 @@
+"""Tooth-root stress of the loaded contact (contact.ltca.root_stress), issue 35 item 3.
+
+References, none taken from the code under test:
+
+* a direct FE solve of the same contact forces on the FE model of the teeth (linear
+  elasticity: superposition of the unit-load coefficients must equal it);
+* the generated flanks of the FE model: the LTCA's contact points, carried into each
+  member's frame, must lie on them;
+* identities of the dataset (the peak is the maximum of the field it summarises).
+
+The CI tests run a small LTCA (one mesh cycle of 4 rolls, 8 segments per curve, one
+torque: ~4 s) and the coarse FE model of tests/test_fe_tooth.py (~3 000 unknowns, 2–4 s
+per member with SuperLU).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+import pytest
+
+from contact.catalogue import resolve_case
+from contact.compliance.fe import (
+    FEOptions,
+    build_influence_model,
+    influence_coefficients,
+    influence_dataset,
+    locate_flank_points,
+    principal_stresses,
+)
+from contact.ltca import LTCAOptions, loaded_tca
+from contact.ltca.root_stress import _pair_teeth, member_contact_points, root_stress
+from contact.utca.easeoff import ease_off
+from geometry.core.errors import InputError
+
+#: the coarse model of the CI tests (as tests/test_fe_tooth.py)
+COARSE = FEOptions(face_divisions=4, across_divisions=2, flank_divisions=3, slot_divisions=1,
+                   rim_divisions=2, fillet_divisions=2, load_nu=5, load_nv=4)
+#: a small LTCA: one mesh cycle, 4 rolls, 8 segments per curve
+SMALL = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=8)
+
+
+@functools.cache
+def _analysis():
+    case = resolve_case(None)
+    eo = ease_off(case)
+    return case, eo, loaded_tca(case, [250.0], easeoff=eo, options=SMALL)
+
+
+@functools.cache
+def _model(member: str):
+    case, eo, _ = _analysis()
+    flank = eo.pinion_flank if member == "pinion" else eo.gear_flank
+    model = build_influence_model(case, member, flank, COARSE, solver="superlu")
+    return model, influence_dataset(model, case, progress=False)
+
+
+def _coefficients():
+    return {m: _model(m)[1] for m in ("pinion", "gear")}
+
+
+def _rotation(angle: float) -> np.ndarray:
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+@pytest.mark.parametrize("member", ["pinion", "gear"])
+def test_root_stress_equals_a_direct_fe_solve(member):
+    """The forces the LTCA gives one tooth pair at one roll (the others zeroed): the root
+    stress of the member's teeth by superposition equals a direct FE solve of the same
+    forces on the model (their hat loads on the middle tooth, one solve, the principal
+    stresses at the fillet points, the largest over both fillets per face station)
+    within 1e-6 relative — an identity of linear elasticity that checks the carrying of
+    the contact points into the member frame's teeth, the pair → tooth bookkeeping and
+    the superposition; the tolerance is the factorised solve's round-off (~1e-14)."""
+    case, eo, lt = _analysis()
+    model, coef = _model(member)
+    force = lt["force"].values  # (torque, roll, pair, segment)
+    per_pair = np.nansum(force[0], axis=2)  # (roll, pair)
+    j, k = np.unravel_index(np.argmax(per_pair), per_pair.shape)
+    only = np.zeros_like(force)
+    only[0, j, k] = np.nan_to_num(force[0, j, k])
+    lt1 = lt.copy()
+    lt1["force"] = lt["force"].copy(data=only)
+    rs = root_stress(case, eo, lt1, coefficients=_coefficients())
+    # direct: the pair's loaded points turned onto the middle tooth of the model
+    pts = member_contact_points(case, eo, lt)[member][j, k]
+    f = only[0, j, k]
+    loaded = f > 0
+    fp = locate_flank_points(coef, pts[loaded], strict=False)
+    t0 = int(np.bincount(fp.tooth - fp.tooth.min()).argmax() + fp.tooth.min())
+    assert np.all(fp.tooth == t0)
+    turned = pts[loaded] @ _rotation(-t0 * coef.attrs["pitch"]).T
+    fp0 = locate_flank_points(coef, turned, strict=False)
+    assert np.all(fp0.tooth == 0)
+    disp = model.solve((model.loads[0] @ (fp0.weights.T @ f[loaded]))[:, None])
+    tensor = model.stress_of(disp)[:, :, 0][model.fillet.index]  # (teeth, side, st, arc, 6)
+    smax, _ = principal_stresses(tensor)
+    direct = smax.max(axis=(1, 3))  # (teeth −K…K, station)
+    teeth = _pair_teeth(coef, member_contact_points(case, eo, lt)[member],
+                        lt["pair"].values)
+    got = rs["root_stress"].isel(torque=0, roll=j).sel(member=member).values  # (pair, st)
+    scale = np.abs(direct).max()
+    for i, d in enumerate(model.offsets):
+        hit = np.flatnonzero(teeth == t0 + d)
+        for p in hit:
+            np.testing.assert_allclose(got[p], direct[i], rtol=1e-6, atol=1e-6 * scale)
+    # pairs whose teeth the model's neighbours do not reach carry no stress
+    far = np.abs(teeth - t0) > max(model.offsets)
+    assert np.all(got[far] == 0.0)
+    assert scale > 1.0  # [MPa] a loaded pair at 250 N·m
+
+
+def test_contact_points_lie_on_the_members_flanks():
+    """The LTCA's contact points (the gear's, in the pair frame) carried into each
+    member's frame at the roll rotations lie on that member's FE working flank: the
+    gear's within 0.02 mm (the FE flank follows the generated one within 5 µm; the
+    segment midpoints lie on the gear flank), the pinion's loaded ones within 0.1 mm
+    (its mate differs by the separation, tens of µm on the flanks); the teeth of
+    consecutive pairs are consecutive teeth of each member."""
+    case, eo, lt = _analysis()
+    pts = member_contact_points(case, eo, lt)
+    loaded = np.nan_to_num(lt["force"].values[0]) > 0
+    for member, tol in (("gear", 0.02), ("pinion", 0.1)):
+        coef = _model(member)[1]
+        fp = locate_flank_points(coef, pts[member][loaded], strict=False)
+        assert np.abs(fp.distance).max() < tol, (member, np.abs(fp.distance).max())
+        teeth = _pair_teeth(coef, pts[member], lt["pair"].values)
+        assert np.all(np.abs(np.diff(teeth)) == 1), teeth
+
+
+def test_dataset_names_units_and_identities():
+    """The names and dims the duty cycles read (issue 36), units and long names, member
+    labels; root_stress_max is the peak of root_stress over rolls, teeth and face; the
+    stress of loaded teeth is tensile (> 0); the tooth coordinate is the pair offset."""
+    case, eo, lt = _analysis()
+    rs = root_stress(case, eo, lt, coefficients=_coefficients())
+    assert rs["root_stress"].dims == ("torque", "roll", "member", "tooth", "fillet_point")
+    assert rs["root_stress_max"].dims == ("torque", "member")
+    assert list(rs["member"].values) == ["pinion", "gear"]
+    np.testing.assert_array_equal(rs["tooth"].values, lt["pair"].values)
+    for name in ("root_stress", "root_stress_max"):
+        assert rs[name].attrs["units"] == "MPa" and rs[name].attrs["long_name"]
+    assert rs["fillet_u"].attrs["units"] == "1"
+    np.testing.assert_array_equal(rs["root_stress_max"].values,
+                                  rs["root_stress"].max(("roll", "tooth", "fillet_point")))
+    assert np.all(np.isfinite(rs["root_stress"].values))
+    assert np.all(rs["root_stress_max"].values > 0)
+
+
+def test_root_stress_in_the_analysis(tmp_path, monkeypatch):
+    """``run_analysis(root_stress=FEOptions)``: the variables land in /ltca, the file's
+    summary text, the report's summary columns and the figures name it; the coefficients
+    are cached under their key. ~8 s: the coarse model of both members built into a fresh
+    cache, the small LTCA once."""
+    from contact.compliance.fe import CACHE_ENV
+    from contact.pipeline import run_analysis
+    from contact.plots.analysis import analysis_specs
+    from contact.plots.report import SUMMARY_COLUMNS
+
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))
+    kw = dict(options=SMALL, operating=False, geometry=False, mesh_interface=False)
+    tree = run_analysis(None, [250.0], root_stress=COARSE, **kw)
+    lt = tree["ltca"].to_dataset()
+    assert {"root_stress", "root_stress_max"} <= set(lt.data_vars)
+    assert "peak root stress pinion" in tree.attrs["summary"]
+    assert len(list(tmp_path.glob("fe-*.nc"))) == 2
+    groups = {"ltca": lt}
+    cols = {c.key: c for c in SUMMARY_COLUMNS}
+    for member in ("pinion", "gear"):
+        assert cols[f"root_stress_max_{member}"].value(groups, 0) == \
+            float(lt["root_stress_max"].sel(member=member)[0])
+    assert "root_stress" in [s.name for s in analysis_specs(tree)]
+    # the cache holds them now: the same key reads the file (building is not called)
+    def no_build(*args, **kwargs):
+        raise AssertionError("rebuilt instead of read from the cache")
+
+    monkeypatch.setattr("contact.compliance.fe.influence.build_influence_model", no_build)
+    coef = influence_coefficients(resolve_case(None), "gear", tree["ltca"].attrs["gear_flank"],
+                                  COARSE, progress=False)
+    assert coef.attrs["cache_key"] in lt["root_stress"].attrs["fe_cache_keys"]
+    # an analysis without root stress has none, and its column is NaN
+    plain = _analysis()[2]
+    assert "root_stress" not in plain
+    assert math.isnan(cols["root_stress_max_gear"].value({"ltca": plain}, 0))
+
+
+def test_bad_input_is_refused_naming_the_field():
+    """Coefficients of the wrong flank, an /ltca without its forces, a bad root_stress
+    argument: refused with the field named."""
+    case, eo, lt = _analysis()
+    coef = _coefficients()
+    wrong = {"pinion": coef["gear"], "gear": coef["gear"]}
+    with pytest.raises(InputError, match="coefficients"):
+        root_stress(case, eo, lt, coefficients=wrong)
+    with pytest.raises(InputError, match="ltca: lacks force"):
+        root_stress(case, eo, lt.drop_vars("force"), coefficients=coef)
+    from contact.pipeline import run_analysis
+
+    with pytest.raises(InputError, match="root_stress"):
+        run_analysis(None, [250.0], options=SMALL, operating=False, geometry=False,
+                     mesh_interface=False, root_stress="yes")
