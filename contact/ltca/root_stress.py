@@ -37,7 +37,6 @@ import scipy.sparse as sp
 import xarray as xr
 
 from contact.compliance.fe import FEOptions, influence_coefficients, locate_flank_points
-from contact.compliance.fe.influence import principal_stresses
 from contact.utca import EaseOff
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
@@ -145,17 +144,40 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
     rows = (t * nj + j) * teeth.size + np.searchsorted(teeth, fp.tooth)
     gather = sp.csr_matrix((f[t, j, k, m], (rows, np.arange(rows.size))),
                            shape=(nt * nj * teeth.size, rows.size))
-    hat = np.asarray((gather @ fp.weights).todense()).reshape(nt, nj, teeth.size, nl)
-    shape = (nt, nj, *s.shape[3:])
+    hat = np.asarray((gather @ fp.weights).todense()).reshape(nt * nj, teeth.size, nl)
+    # rolls whole mesh cycles apart (and torques) with the same loads are superposed once
+    uniq, inverse = np.unique(hat.reshape(nt * nj, -1), axis=0, return_inverse=True)
+    hat = uniq.reshape(-1, teeth.size, nl)
+    blocks = [np.ascontiguousarray(sv[:, i]) for i in range(offsets.size)]
+    shape = (hat.shape[0], *s.shape[3:])
+    result = np.zeros((hat.shape[0], nk, s.sizes["station"]))
     for kk in range(nk):
-        tensor = np.zeros((nt, nj, int(np.prod(s.shape[3:]))))
+        tensor = np.zeros((hat.shape[0], blocks[0].shape[1]))
         for i, d in enumerate(offsets):  # the load's tooth is d teeth before this one
             src = np.searchsorted(teeth, tooth_of_pair[kk] - d)
             if src < teeth.size and teeth[src] == tooth_of_pair[kk] - d:
-                tensor += hat[:, :, src] @ sv[:, i]
-        smax, _ = principal_stresses(tensor.reshape(shape))
-        out[:, :, kk] = smax.max(axis=(2, 4))  # over the sides and the fillet arc
+                tensor += hat[:, src] @ blocks[i]
+        smax = _max_principal(tensor.reshape(shape))
+        result[:, kk] = smax.max(axis=(1, 3))  # over the sides and the fillet arc
+    out[:] = result[np.ravel(inverse)].reshape(out.shape)
     return out
+
+
+def _max_principal(t: np.ndarray) -> np.ndarray:
+    """Largest principal value [MPa] of stresses in Voigt order (..., 6) (xx, yy, zz, yz,
+    xz, xy): the closed form of the symmetric 3 × 3 eigenproblem (Smith, Comm. ACM 4
+    (1961) 168), ~5× faster than ``numpy.linalg.eigvalsh`` on many small tensors and
+    equal to it within ~1e-10 of the tensor's norm (tests/test_root_stress.py)."""
+    q = (t[..., 0] + t[..., 1] + t[..., 2]) / 3.0
+    a, b, c = t[..., 0] - q, t[..., 1] - q, t[..., 2] - q
+    p1 = t[..., 3] ** 2 + t[..., 4] ** 2 + t[..., 5] ** 2
+    p = np.sqrt((a * a + b * b + c * c + 2.0 * p1) / 6.0)
+    safe = np.where(p > 0, p, 1.0)
+    a, b, c = a / safe, b / safe, c / safe
+    yz, xz, xy = t[..., 3] / safe, t[..., 4] / safe, t[..., 5] / safe
+    det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz)
+    phi = np.arccos(np.clip(0.5 * det, -1.0, 1.0)) / 3.0
+    return np.where(p > 0, q + 2.0 * p * np.cos(phi), q)
 
 
 def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
