@@ -331,3 +331,13 @@ def test_closed_form_max_principal_equals_eigvalsh():
     ref, _ = principal_stresses(t)
     scale = np.maximum(np.linalg.norm(t, axis=1), 1.0)
     assert np.all(np.abs(_max_principal(t) - ref) < 1e-10 * scale)
+
+
+def test_ltca_run_has_the_root_stress_switch():
+    """``ltca run --root-stress`` is parsed into the switch run_analysis takes (off by
+    default: the default run keeps its time and its golden file). Milliseconds."""
+    from contact.cli import build_parser
+
+    parser = build_parser()
+    assert parser.parse_args(["run", "--root-stress"]).root_stress is True
+    assert parser.parse_args(["run"]).root_stress is False

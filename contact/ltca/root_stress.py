@@ -151,12 +151,14 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
     blocks = [np.ascontiguousarray(sv[:, i]) for i in range(offsets.size)]
     shape = (hat.shape[0], *s.shape[3:])
     result = np.zeros((hat.shape[0], nk, s.sizes["station"]))
+    # a roll's loads reach only the grid nodes near its contact lines: sparse hat loads
+    sparse_hat = [sp.csr_matrix(hat[:, i]) for i in range(teeth.size)]
     for kk in range(nk):
         tensor = np.zeros((hat.shape[0], blocks[0].shape[1]))
         for i, d in enumerate(offsets):  # the load's tooth is d teeth before this one
             src = np.searchsorted(teeth, tooth_of_pair[kk] - d)
             if src < teeth.size and teeth[src] == tooth_of_pair[kk] - d:
-                tensor += hat[:, src] @ blocks[i]
+                tensor += sparse_hat[src] @ blocks[i]
         smax = _max_principal(tensor.reshape(shape))
         result[:, kk] = smax.max(axis=(1, 3))  # over the sides and the fillet arc
     out[:] = result[np.ravel(inverse)].reshape(out.shape)
