@@ -168,7 +168,8 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
 def _max_principal(t: np.ndarray) -> np.ndarray:
     """Largest principal value [MPa] of stresses in Voigt order (..., 6) (xx, yy, zz, yz,
     xz, xy): the closed form of the symmetric 3 × 3 eigenproblem (Smith, Comm. ACM 4
-    (1961) 168), ~5× faster than ``numpy.linalg.eigvalsh`` on many small tensors and
+    (1961) 168), ~7× faster than ``numpy.linalg.eigvalsh`` on many small tensors (measured:
+    0.03 s against 0.20 s CPU for 200 000) and
     equal to it within ~1e-10 of the tensor's norm (tests/test_root_stress.py)."""
     q = (t[..., 0] + t[..., 1] + t[..., 2]) / 3.0
     a, b, c = t[..., 0] - q, t[..., 1] - q, t[..., 2] - q
