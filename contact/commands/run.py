@@ -79,7 +79,7 @@ def register(sub) -> None:
                    help="also the tooth-root stress of both members from FE influence "
                    "coefficients (docs/fe.md): the first run of a design builds them, "
                    "~15-30 s per member on 2 cores (minutes on a loaded machine), then they "
-                   "are read from the cache (HYPOID_LTCA_CACHE) and add a few %% to the run")
+                   "are read from the cache and add a few %% to the run")
     progress_option(p)
     p.set_defaults(func=run)
 
