@@ -202,7 +202,8 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
     str
         One sentence per torque: LTE mean and peak-to-peak [urad], peak pressure of the
         flanks and of the edges [MPa], the edges' share of the torque [%], the efficiency
-        [%] and the mean mesh stiffness [N/um] where the groups hold them (units as
+        [%], the mean mesh stiffness [N/um] and the peak root stress of both members
+        [MPa] where the groups hold them (units as
         UDUNITS text, so that a catalogue shows them as the file's variables do).
     """
     lt = groups["/ltca"]
@@ -221,6 +222,10 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
             text += f"; efficiency {100 * float(fr['efficiency_mean'].values[i]):.2f} %"
         if mi is not None and "mesh_stiffness_mean" in mi:
             text += f"; mesh stiffness {float(mi['mesh_stiffness_mean'].values[i]):.0f} N/um"
+        if "root_stress_max" in lt:
+            rs = lt["root_stress_max"].isel(torque=i)
+            text += (f"; peak root stress pinion {float(rs.sel(member='pinion')):.0f} MPa, "
+                     f"gear {float(rs.sel(member='gear')):.0f} MPa")
         parts.append(text + ".")
     if fr is not None:
         a = fr.attrs
@@ -257,6 +262,7 @@ def run_analysis(
     progress: bool = False,
     theoretical: bool = True,
     mesh_interface: bool = True,
+    root_stress: bool | FEOptions = False,  # noqa: F821 (FEOptions: imported lazily)
 ) -> xr.DataTree:
     """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
 
@@ -302,6 +308,13 @@ def run_analysis(
         Add ``/mesh_interface`` (default True): mesh point, line of action, mesh
         stiffness and transmission-error excitation for dynamic models
         (:func:`contact.ltca.mesh_interface.mesh_interface`).
+    root_stress : bool or contact.compliance.fe.FEOptions
+        Add the tooth-root stress of both members to ``/ltca`` (``root_stress`` [MPa] over
+        (torque, roll, member, tooth, fillet_point), ``root_stress_max`` [MPa] over
+        (torque, member); :func:`contact.ltca.root_stress.root_stress`): True with the
+        default FE model, or the FE model's options. Default False: the FE influence
+        coefficients cost ~15–30 s per member and design the first time (then they are
+        read from the cache, and the superposition adds a few % to the LTCA).
 
     Returns
     -------
@@ -327,6 +340,12 @@ def run_analysis(
     c = catalogue.resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
+    if root_stress is not False and root_stress is not True:
+        from contact.compliance.fe import FEOptions
+
+        if not isinstance(root_stress, FEOptions):
+            raise InputError("root_stress: must be True, False or a "
+                             f"contact.compliance.fe.FEOptions, got {root_stress!r}")
     torques = c.operating.torque if torque is None else torque
     opts = options or LTCAOptions()
     if operating is None:
@@ -385,6 +404,16 @@ def run_analysis(
                          transitions=tuple(utca_ds["transition_roll"].values),
                          roll_problems=problems)
     times["ltca"] = time.perf_counter() - t0
+    if root_stress is not False:
+        from contact.compliance.fe import FEOptions
+        from contact.ltca.root_stress import root_stress as _root_stress
+
+        t0 = time.perf_counter()
+        fe_options = root_stress if isinstance(root_stress, FEOptions) else None
+        rs = _root_stress(c, eo, ltca_ds, fe_options, progress=progress)
+        ltca_ds = ltca_ds.assign(root_stress=rs["root_stress"],
+                                 root_stress_max=rs["root_stress_max"])
+        times["root_stress"] = time.perf_counter() - t0
     tree["/easeoff"] = eo_ds
     tree["/utca"] = utca_ds
     tree["/ltca"] = ltca_ds

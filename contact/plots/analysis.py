@@ -53,6 +53,7 @@ from contact.plots.maps import (
     efficiency_roughness_figure,
     efficiency_speed_figure,
 )
+from contact.plots.stress import root_stress_figure
 from contact.plots.style import DPI, png_bytes, save_png, torque_text
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
@@ -172,7 +173,8 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
     ------
     FigureSpec
         ``easeoff_topography``, ``easeoff``, ``contact_pattern``,
-        ``transmission_error``, ``pressure``, ``load_share``, ``friction_flank``,
+        ``transmission_error``, ``pressure``, ``load_share``, ``root_stress`` (when
+        ``/ltca`` has it), ``friction_flank``,
         ``friction_efficiency``, ``mesh_interface`` and, for deviated runs,
         ``deviations_*`` — those whose groups the tree has.
 
@@ -210,6 +212,13 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
             partial(pressure_figure, eo, lt))
         yield FigureSpec("load_share", "Load sharing of the tooth pairs.",
                           partial(load_share_figure, lt))
+        if "root_stress" in lt:
+            yield FigureSpec(
+                "root_stress",
+                "Tooth-root stress of both members (largest maximum principal stress over "
+                "the fillets, FE influence coefficients): one tooth's passage through mesh "
+                "over the face width at the largest torque, and its envelope along the "
+                "face per torque.", partial(root_stress_figure, lt))
     if fr is not None and lt is not None:
         if any(name in fr for name in FRICTION_FLANK_PLOTS):
             yield FigureSpec(

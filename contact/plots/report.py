@@ -85,6 +85,17 @@ def _var(group: str, name: str, scale: float = 1.0, index: int | None = None):
     return value
 
 
+def _root_stress(member: str):
+    """A column value: the peak root stress [MPa] of ``member`` at the torque index (NaN
+    where the file has no root stress)."""
+    def value(groups: Mapping[str, xr.Dataset | None], i: int) -> float:
+        ds = groups.get("ltca")
+        if ds is None or "root_stress_max" not in ds:
+            return math.nan
+        return float(ds["root_stress_max"].isel(torque=i).sel(member=member))
+    return value
+
+
 def _edge_share(groups: Mapping[str, xr.Dataset | None], i: int) -> float:
     lt = groups.get("ltca")
     if lt is None or not {"force", "moment_arm", "segment_kind"} <= set(lt.variables):
@@ -108,6 +119,8 @@ SUMMARY_COLUMNS: tuple[SummaryColumn, ...] = (
     SummaryColumn("pressure_max_edge", "p_max edge", "MPa", 0,
                   _var("ltca", "pressure_max_edge")),
     SummaryColumn("edge_load_share", "edge share", "%", 1, _edge_share),
+    SummaryColumn("root_stress_max_pinion", "σ_F pinion", "MPa", 0, _root_stress("pinion")),
+    SummaryColumn("root_stress_max_gear", "σ_F gear", "MPa", 0, _root_stress("gear")),
     SummaryColumn("mesh_stiffness_mean", "mesh stiffness", "N/µm", 0,
                   _var("mesh_interface", "mesh_stiffness_mean")),
     SummaryColumn("efficiency_mean", "efficiency", "%", 2,

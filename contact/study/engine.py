@@ -122,7 +122,8 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
             dataclasses.replace(case, misalignment=misalignment_of(case.misalignment, point)),
             list(shared.torque), flank=shared.flank, options=shared.options,
             deviations=shared.deviations_at(point.get("deviation_scale")), geometry=False,
-            theoretical=False, operating=False, mesh_interface=False)
+            theoretical=False, operating=False, mesh_interface=False,
+            root_stress=shared.root_stress)
         friction = []
         if shared.speed:
             ltca = tree["/ltca"].to_dataset()
@@ -425,6 +426,11 @@ def run_points(
                                      {"units": "rpm", "long_name": "pinion speed"}))
     else:  # no efficiency stage
         ds = ds.drop_vars(["efficiency", "power_loss"])
+    if shared.root_stress is False:
+        ds = ds.drop_vars(["root_stress_max"])
+    else:
+        ds = ds.assign_coords(member=("member", np.array(["pinion", "gear"]),
+                                      {"long_name": "gear member"}))
     ds["reason"] = ds["reason"].astype(str)
     return _stamp(ds, shared, kind, len(done))
 

@@ -197,7 +197,7 @@ def _to_grid(flat: xr.Dataset, axes: dict[str, np.ndarray]) -> xr.Dataset:
         values = var.transpose("point", *rest).values.reshape(*shape, *var.shape[1:])
         data[name] = ((*names, *rest), values, var.attrs)
     coords = {n: (n, axes[n], flat[n].attrs) for n in names}
-    for c in ("torque", "harmonic", "speed"):
+    for c in ("torque", "harmonic", "speed", "member"):
         if c in flat.coords:
             coords[c] = flat[c]
     return xr.Dataset(data, coords=coords, attrs=flat.attrs)

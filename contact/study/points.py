@@ -15,6 +15,7 @@ import json
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 from contact.ltca import LTCAOptions
 from contact.ltca.options import json_options
@@ -103,6 +104,11 @@ class StudyInputs:
     deviations : (SurfaceDeviation or None, SurfaceDeviation or None) or None
         The case's surface deviations of (pinion, gear), read once on the client, scaled
         by each point's ``deviation_scale``; None for theoretical flanks.
+    root_stress : bool or contact.compliance.fe.FEOptions
+        Also the peak tooth-root stress of both members (``root_stress_max`` over
+        (torque, member), :func:`contact.run_analysis`'s ``root_stress``): the FE
+        coefficients are built once per design (cached on disk) and reused by every point
+        of the same design. Default False (the output has no ``root_stress_max``).
     """
 
     case: Case
@@ -112,6 +118,7 @@ class StudyInputs:
     options: LTCAOptions = dataclasses.field(default_factory=LTCAOptions)
     flank: str | None = None
     deviations: tuple[SurfaceDeviation | None, SurfaceDeviation | None] | None = None
+    root_stress: Any = False
 
     def deviations_at(self, scale: float | None) -> tuple | bool:
         """The (pinion, gear) deviations scaled by ``scale`` (None: unscaled); False for
@@ -137,5 +144,7 @@ class StudyInputs:
             "speed": list(self.speed),
             "operating": None if self.operating is None else repr(self.operating),
             "options": json_options(self.options), "flank": self.flank, "deviations": dev,
+            # only when asked for, so that the fingerprints of studies without it stay
+            **({} if self.root_stress is False else {"root_stress": repr(self.root_stress)}),
         }, sort_keys=True, default=str)
         return hashlib.sha256(text.encode()).hexdigest()

@@ -72,6 +72,9 @@ _VARIABLES: tuple[tuple[str, tuple[str, ...], str, str], ...] = (
     ("efficiency", ("torque", "speed"), "1",
      "mechanical mesh efficiency, mean over the mesh cycles"),
     ("power_loss", ("torque", "speed"), "W", "mesh power loss, mean over the mesh cycles"),
+    ("root_stress_max", ("torque", "member"), "MPa",
+     "peak tensile tooth-root stress over the mesh cycles (pinion, gear; FE influence "
+     "coefficients, contact.ltca.root_stress)"),
 )
 
 SUMMARY_VARIABLES: tuple[str, ...] = tuple(v[0] for v in _VARIABLES)
@@ -128,7 +131,8 @@ def point_summary(tree: xr.DataTree, case: Case,
     dict of str to ndarray
         One array per name of :data:`SUMMARY_VARIABLES`, shaped by the dims after the
         point's (:func:`summary_dims`): ``torque`` (NT,), ``harmonic`` (3,), ``speed``
-        (len(friction), at least 1).
+        (len(friction), at least 1), ``member`` (2: pinion, gear; ``root_stress_max``,
+        NaN where the tree has no root stress).
 
     Notes
     -----
@@ -177,13 +181,17 @@ def point_summary(tree: xr.DataTree, case: Case,
     else:
         out["efficiency"] = np.full((NT, 1), np.nan)
         out["power_loss"] = np.full((NT, 1), np.nan)
+    if "root_stress_max" in ltca:
+        out["root_stress_max"] = ltca["root_stress_max"].transpose("torque", "member").values
+    else:
+        out["root_stress_max"] = np.full((NT, 2), np.nan)
     return {k: np.asarray(out[k], dtype=np.int8 if k == "certified" else float)
             for k in SUMMARY_VARIABLES}
 
 
 def failed_summary(n_torque: int, n_speed: int = 1) -> dict[str, np.ndarray]:
     """The summary arrays of a point without result: NaN (``certified`` 0)."""
-    shapes = {"torque": n_torque, "harmonic": 3, "speed": n_speed}
+    shapes = {"torque": n_torque, "harmonic": 3, "speed": n_speed, "member": 2}
     return {name: (np.zeros([shapes[d] for d in dims], np.int8) if name == "certified"
                    else np.full([shapes[d] for d in dims], np.nan))
             for name, dims, _, _ in _VARIABLES}

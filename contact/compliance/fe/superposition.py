@@ -74,7 +74,8 @@ def _grid(coefficients: xr.Dataset):
     return coefficients["u"].values, coefficients["v"].values
 
 
-def locate_flank_points(coefficients: xr.Dataset, points) -> FlankPoints:
+def locate_flank_points(coefficients: xr.Dataset, points, *,
+                        strict: bool = True) -> FlankPoints:
     """Where points of the member frame lie on the working flank of the member's teeth.
 
     Parameters
@@ -82,6 +83,10 @@ def locate_flank_points(coefficients: xr.Dataset, points) -> FlankPoints:
     coefficients : xarray.Dataset — a member's influence coefficients
     points : array_like (N, 3) — [mm] points in the member frame, on the working flank of
         any tooth
+    strict : bool — True (default): refuse points off the grid or the flank (below);
+        False: locate them anyway (fractions clipped to the grid for the weights, the
+        tooth and distance as found), e.g. to tell the tooth of segments that are not
+        loaded
 
     Returns
     -------
@@ -110,7 +115,7 @@ def locate_flank_points(coefficients: xr.Dataset, points) -> FlankPoints:
     lo_u, hi_u, lo_v, hi_v = gu[0], gu[-1], gv[0], gv[-1]
     out = (u < lo_u - GRID_TOLERANCE) | (u > hi_u + GRID_TOLERANCE) | \
         (v < lo_v - GRID_TOLERANCE) | (v > hi_v + GRID_TOLERANCE)
-    if out.any():
+    if strict and out.any():
         i = int(np.flatnonzero(out)[0])
         raise InputError(f"points: point {i} lies at face/profile fractions ({u[i]:.3f}, "
                          f"{v[i]:.3f}), outside the load grid [{lo_u:g}, {hi_u:g}] x "
@@ -129,7 +134,7 @@ def locate_flank_points(coefficients: xr.Dataset, points) -> FlankPoints:
     tooth = np.rint(dphi / pitch).astype(int)
     distance = rho * (dphi - tooth * pitch)
     off = np.abs(distance) > FLANK_TOLERANCE
-    if off.any():
+    if strict and off.any():
         i = int(np.flatnonzero(off)[0])
         raise InputError(f"points: point {i} is {distance[i]:.3g} mm off the working "
                          f"({coefficients.attrs['flank']}) flank of the "
