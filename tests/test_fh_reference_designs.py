@@ -64,7 +64,8 @@ def _run(name: str, rolls_per_cycle: int = 40):
 def test_reference_design_meets_the_limits(name):
     """The issue's limits, not fitted to the result (measured on the 12×41 pair: edges
     0 / 0.26 / 1.5 %, flank peak 0.70 / 0.98 / 1.17 GPa, LTE p-p 11.2 / 12.7 / 22.2 µrad,
-    LTE means 152 / 322 / 467 µrad; the long-bearing synthesis' edges carried
+    LTE means 152 / 322 / 467 µrad; Table 5.4 A: 0.02 / 1.0 / 2.3 %, 0.71 / 1.05 /
+    1.42 GPa, 12.5 / 19.6 / 6.8 µrad; the long-bearing syntheses' edges carried
     5–6 / 7.5–9 / 9–11 %)."""
     tree, s = _run(name)
     assert np.all(s["certified"] > 0)
