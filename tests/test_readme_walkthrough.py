@@ -46,6 +46,7 @@ REDUCED: dict[str, list[str]] = {
     "vh-check": ["--rolls-per-cycle", "4", "--dE", "-0.55:0.25:3", "--dP", "-0.18:0.42:3",
                  "--scheduler", "synchronous"],
     "mesh-interface": ["--rolls-per-cycle", "4", "--segments", "8", "--torque", "50"],
+    "ehl": ["--nodes", "256"],
 }
 
 
