@@ -146,8 +146,12 @@ def test_single_bin_reproduces_run_analysis(case, one_bin):
                       ("efficiency", fr["efficiency_mean"].values[0]),
                       ("power_loss", fr["power_loss_mean"].values[0])):
         assert float(ds[name].values[0]) == pytest.approx(float(ref), rel=1e-12, abs=1e-12), name
-    np.testing.assert_allclose(ds["pressure_envelope"].values[0],
-                               lt["pressure_envelope"].values[0], rtol=1e-12, atol=1e-9)
+    # flank and edge envelopes apart; their larger is the analysis's own envelope (exact:
+    # the same nearest-node rule and maxima)
+    both = np.maximum(ds["pressure_envelope"].values[0], ds["edge_pressure_envelope"].values[0])
+    np.testing.assert_array_equal(both, lt["pressure_envelope"].values[0])
+    assert ds["pressure_envelope"].values.max() == pytest.approx(
+        float(lt["pressure_max_flank"].values[0]), rel=1e-15)
 
 
 def test_energy_balance_per_bin(one_bin):

@@ -10,6 +10,7 @@ from contact.commands.options import (
     default_output,
     flank_option,
     output_option,
+    plots_option,
     progress_option,
     rolls_per_cycle_option,
     segments_option,
@@ -49,6 +50,7 @@ def register(sub) -> None:
     rolls_per_cycle_option(p)
     segments_option(p)
     output_option(p, default="<case>_duty_cycle.nc", what="netCDF file with /duty_cycle")
+    plots_option(p)
     progress_option(p)
     p.set_defaults(func=run)
 
@@ -117,4 +119,12 @@ def run(args: argparse.Namespace) -> int:
 
     ResultStore.remove_parts(output)
     print(f"wrote {path}")
+    if args.plots:
+        from pathlib import Path
+
+        from contact.study.duty_cycle_figures import save_duty_cycle_figures
+
+        Path(args.plots).mkdir(parents=True, exist_ok=True)
+        for fig in save_duty_cycle_figures(ds, args.plots):
+            print(f"wrote {fig}")
     return 0

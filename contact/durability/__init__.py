@@ -11,8 +11,9 @@ from contact.durability.damage import (
     life_at_first_failure,
     member_cycles,
     peak_fillet_stress,
+    pressure_envelopes,
 )
 from contact.durability.sn_curve import GRADES, MINER_RULES, SNCurve, sn_curves
 
 __all__ = ["GRADES", "MINER_RULES", "SNCurve", "cumulative_damage", "life_at_first_failure",
-           "member_cycles", "peak_fillet_stress", "sn_curves"]
+           "member_cycles", "peak_fillet_stress", "pressure_envelopes", "sn_curves"]

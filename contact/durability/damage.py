@@ -15,6 +15,7 @@ member_cycles        load cycles per tooth point of each member in each bin
 cumulative_damage    Σ over bins of n / N(σ) at every point
 peak_fillet_stress   the peak tensile fillet stress of a tooth mesh from ``root_stress``
 life_at_first_failure  life [h] and the index of the point first reaching damage 1
+pressure_envelopes   peak pressure of a tooth mesh on the gear grid, flank and edge apart
 """
 
 from __future__ import annotations
@@ -25,7 +26,57 @@ from contact.durability.sn_curve import SNCurve
 from geometry.core.errors import InputError
 
 __all__ = ["cumulative_damage", "life_at_first_failure", "member_cycles",
-           "peak_fillet_stress"]
+           "peak_fillet_stress", "pressure_envelopes"]
+
+
+def pressure_envelopes(pressure: np.ndarray, seg_u: np.ndarray, seg_v: np.ndarray,
+                       edge: np.ndarray, u: np.ndarray, v: np.ndarray
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """Peak pressure of a tooth mesh at every gear-grid node, flank and edge contact apart.
+
+    Parameters
+    ----------
+    pressure : array_like (roll, pair, segment) — [MPa]
+        ``/ltca/pressure_max`` of one torque (NaN where unloaded).
+    seg_u, seg_v : array_like (roll, pair, segment) — [1]
+        ``/ltca/segment_u``, ``segment_v``: the gear-grid fractions of the segments.
+    edge : array_like (segment,) of bool
+        True for the edge-contact segments (``segment_kind`` not ``"curve"``).
+    u, v : array_like (nu,), (nv,) — [1]
+        The gear grid (uniform, as the ease-off's).
+
+    Returns
+    -------
+    flank, edge : ndarray (nu, nv) — [MPa]
+        The largest pressure of the contact-curve segments, and of the edge segments,
+        landing on each node (nearest node, the rule of ``/ltca/pressure_envelope``, whose
+        values are the larger of the two); 0 where none.
+
+    Raises
+    ------
+    InputError
+        Mismatched shapes.
+    """
+    p = np.asarray(pressure, float)
+    su, sv = np.asarray(seg_u, float), np.asarray(seg_v, float)
+    e = np.asarray(edge, bool)
+    if su.shape != p.shape or sv.shape != p.shape or e.shape != p.shape[-1:]:
+        raise InputError(f"pressure: segment fractions {su.shape}, {sv.shape} and edge flags "
+                         f"{e.shape} do not match the pressures {p.shape}")
+    u, v = np.asarray(u, float), np.asarray(v, float)
+    nu, nv = u.size, v.size
+    ui = np.rint((su - u[0]) / (u[-1] - u[0]) * (nu - 1))
+    vi = np.rint((sv - v[0]) / (v[-1] - v[0]) * (nv - 1))
+    good = np.isfinite(ui) & np.isfinite(vi)
+    uu = np.clip(np.where(good, ui, 0), 0, nu - 1).astype(int)
+    vv = np.clip(np.where(good, vi, 0), 0, nv - 1).astype(int)
+    pz = np.nan_to_num(p)
+    out = []
+    for mask in (good & ~np.broadcast_to(e, p.shape), good & np.broadcast_to(e, p.shape)):
+        env = np.zeros((nu, nv))
+        np.maximum.at(env, (uu[mask], vv[mask]), pz[mask])
+        out.append(env)
+    return out[0], out[1]
 
 
 def member_cycles(pinion_revolutions: np.ndarray, pinion_teeth: int, gear_teeth: int

@@ -36,6 +36,7 @@ from contact.durability import (
     life_at_first_failure,
     member_cycles,
     peak_fillet_stress,
+    pressure_envelopes,
     sn_curves,
 )
 from contact.ltca import LTCAOptions
@@ -112,8 +113,9 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     xarray.Dataset
         Over a ``point`` dim of length 1 (the bin; the store's dim): the
         :data:`BIN_VARIABLES`, ``lte_harmonics`` (harmonic) [µrad], ``pressure_envelope``
-        (u, v) [MPa] and, when the analysis has ``root_stress``, ``root_stress_peak``
-        (member, fillet_point) [MPa]; ``status`` 0 ok, 1 uncertified rolls, 2 failed
+        (u, v) [MPa] of the flank (contact-curve) segments and ``edge_pressure_envelope``
+        of the edge segments (their larger is ``/ltca/pressure_envelope``) and, when the
+        analysis has ``root_stress``, ``root_stress_peak`` (member, fillet_point) [MPa]; ``status`` 0 ok, 1 uncertified rolls, 2 failed
         (``reason``). A failing bin does not raise.
 
     Notes
@@ -150,15 +152,18 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         status = 0 if bool(np.all(ltca["found"].values > 0)) else 1
         reason = ""
         harm = ltca["lte_harmonics"].values[0]
-        env = ltca["pressure_envelope"].values[0]
         u, v = ltca["u"].values, ltca["v"].values
+        env, edge_env = pressure_envelopes(
+            ltca["pressure_max"].values[0], ltca["segment_u"].values,
+            ltca["segment_v"].values, ltca["segment_kind"].values != "curve", u, v)
         root = (peak_fillet_stress(ltca["root_stress"].values[0])
                 if "root_stress" in ltca else None)
     except Exception as exc:  # one failing bin never stops the cycle
         log.info("duty-cycle bin %d failed: %s", index, exc)
         status, reason = 2, f"{type(exc).__name__}: {exc}".splitlines()[0]
         vals = dict.fromkeys(BIN_VARIABLES, np.nan)
-        harm, env, u, v, root = np.full(3, np.nan), np.full((1, 1), np.nan), [0.0], [0.0], None
+        harm, u, v, root = np.full(3, np.nan), [0.0], [0.0], None
+        env = edge_env = np.full((1, 1), np.nan)
     data = {k: data_var(("point",), np.array([float(x)]), *BIN_VARIABLES[k])
             for k, x in vals.items()}
     data["lte_harmonics"] = data_var(("point", "harmonic"), np.asarray(harm, float)[None],
@@ -166,7 +171,12 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
                                      "of the loaded transmission error")
     data["pressure_envelope"] = data_var(
         ("point", "u", "v"), np.asarray(env, float)[None], "MPa",
-        "peak contact pressure of a tooth mesh on the gear's contact grid")
+        "peak contact pressure of the flank (contact-curve) segments of a tooth mesh on the "
+        "gear's contact grid")
+    data["edge_pressure_envelope"] = data_var(
+        ("point", "u", "v"), np.asarray(edge_env, float)[None], "MPa",
+        "peak contact pressure of the edge-contact segments of a tooth mesh on the gear's "
+        "contact grid")
     if root is not None:
         data["root_stress_peak"] = data_var(
             ("point", "member", "fillet_point"), root[None], "MPa",
@@ -199,13 +209,22 @@ def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
         done = store.done()
     kept: list[xr.Dataset] = []
     todo = [(i,) for i in range(n) if i not in done]
+    bar = None
+    if run.progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=n, initial=len(done), desc="duty cycle", unit="bin")
     try:
         for ds in run_tasks(analyse_bin, shared, todo, scheduler=run.scheduler,
                             n_workers=run.n_workers):
             (store.add if store is not None else kept.append)(ds)
+            if bar is not None:
+                bar.update()
     finally:
         if store is not None:
             store.flush()
+        if bar is not None:
+            bar.close()
     parts = [store.combined()] if store is not None else kept
     ds = xr.concat(parts, dim="point", join="outer")
     ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
@@ -272,7 +291,8 @@ def _assemble(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
     cyc = _cycle(duty, ds)
     dur = _durability(case, duty, ds)
     members = ["pinion", "gear"]
-    out = ds.drop_vars([v for v in ("pressure_envelope", "root_stress_peak") if v in ds])
+    out = ds.drop_vars([v for v in ("pressure_envelope", "edge_pressure_envelope",
+                                     "root_stress_peak") if v in ds])
     out = out.assign_coords(member=("member", members, {"long_name": "gear member"}))
     bin_ = ("bin",)
     out["torque"] = data_var(bin_, duty.torque, "N m", "pinion torque of the bin")
@@ -307,6 +327,7 @@ def _assemble(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
     out["flank_damage_total"] = out["flank_damage"].sum("bin").assign_attrs(
         units="1", long_name="cumulative Miner damage of the flank points over the cycle")
     out["pressure_envelope"] = ds["pressure_envelope"]
+    out["edge_pressure_envelope"] = ds["edge_pressure_envelope"]
     out["damage"] = data_var(("member",), np.array(
         [float(out["flank_damage_total"].sel(member=m).max()) for m in members]), "1",
         "largest cumulative flank (pitting) damage of the duty cycle")
@@ -358,6 +379,10 @@ def _assemble(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
                     "not in this analysis); no bending damage or life is reported"),
         "contact_static_limit_exceeded": int(any(dur[f"static_exceeded_{m}"]
                                                  for m in members)),
+        "edge_contact": "edge-contact pressures (edge_pressure_envelope, pressure_max_edge) "
+                        "are not counted in the pitting damage: the S-N curve of ISO 6336-2 "
+                        "is of Hertzian flank contact; the LTCA bounds edge pressures by the "
+                        "elastic-perfectly-plastic (shakedown) limit instead",
         "flank_damage_location": "both members' flank damage is placed at the gear's "
                                  "contact-grid point (u, v) in contact",
         "peak_bin": dur["peak_bin"],
