@@ -115,8 +115,8 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         :data:`BIN_VARIABLES`, ``lte_harmonics`` (harmonic) [µrad], ``pressure_envelope``
         (u, v) [MPa] of the flank (contact-curve) segments and ``edge_pressure_envelope``
         of the edge segments (their larger is ``/ltca/pressure_envelope``) and, when the
-        analysis has ``root_stress``, ``root_stress_peak`` (member, fillet_point) [MPa]; ``status`` 0 ok, 1 uncertified rolls, 2 failed
-        (``reason``). A failing bin does not raise.
+        analysis has ``root_stress``, ``root_stress_peak`` (member, fillet_point) [MPa];
+        ``status`` 0 ok, 1 uncertified rolls, 2 failed (``reason``). A failing bin does not raise.
 
     Notes
     -----
