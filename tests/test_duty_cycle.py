@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 import pytest
+import xarray as xr
 
 from contact.catalogue import resolve_case
 from contact.durability import sn_curves
@@ -214,3 +215,37 @@ def test_resume_and_twice_the_duration(case, one_bin, tmp_path):
     np.testing.assert_allclose(ds2["life"].values, ds["life"].values, rtol=1e-14)
     with pytest.raises(InputError, match="different"):
         run_duty_cycle(case, dataclasses.replace(duty, torque=np.array([300.0])), run)
+
+
+def test_bending_side_consumes_root_stress(case, one_bin):
+    """With ``root_stress_peak`` in the bins (here built in the test, two bins: the same
+    analysis at two durations) the root damage is Miner's sum by hand per fillet point,
+    one cycle per tooth mesh, the life hours / max damage, and S_F = σ_FE / peak stress."""
+    from contact.study.duty_cycle import DutyInputs, duty_cycle_result
+
+    _, ds = one_bin
+    keep = ["lte_mean", "lte_peak_to_peak", "pressure_max_flank", "pressure_max_edge",
+            "edge_load_share", "efficiency", "power_loss", "lte_harmonics",
+            "pressure_envelope", "edge_pressure_envelope", "status", "reason"]
+    bins = xr.concat([ds[keep], ds[keep]], dim="bin")
+    root = np.array([[[300.0, 650.0, 0.0], [200.0, 500.0, 900.0]],
+                     [[310.0, 700.0, 0.0], [250.0, 400.0, 880.0]]])  # (bin, member, point)
+    bins["root_stress_peak"] = xr.DataArray(root, dims=("bin", "member", "fillet_point"),
+                                            attrs={"units": "MPa", "long_name": "peak"})
+    duty = DutyCycle(torque=[250.0, 250.0], speed=[1500.0, 1500.0],
+                     revolutions=[1e6, 3e6], miner_rule="elementary")
+    out = duty_cycle_result(DutyInputs(case, duty, OPTIONS), bins)
+    c = sn_curves(case.gear.material, "MQ")["bending"]
+    m = c.exponent
+    ratio = case.pinion.blank.teeth / case.gear.blank.teeth
+    hand = (1e6 * ratio / (c.knee_cycles * (850.0 / 900.0) ** m)
+            + 3e6 * ratio / (c.knee_cycles * (850.0 / 880.0) ** m))
+    got = out["root_damage"].sel(member="gear").sum("bin").values
+    assert got[2] == pytest.approx(hand, rel=1e-12)
+    assert got[0] > 0 and float(out["root_damage"].sel(member="pinion")[:, 2].sum()) == 0.0
+    assert float(out["root_life"].sel(member="gear")) == pytest.approx(
+        float(duty.hours.sum()) / got.max(), rel=1e-12)
+    assert int(out["root_life_point"].sel(member="gear")) == 2
+    assert float(out["bending_safety_factor"].sel(member="gear")) == pytest.approx(
+        850.0 / 900.0, rel=1e-15)  # the first bin is the peak-torque bin (argmax: first)
+    assert out.attrs["bending"] == "available"

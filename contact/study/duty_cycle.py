@@ -13,6 +13,8 @@ Public names
 ------------
 DutyInputs       what every bin shares (case, duty cycle, options)
 analyse_bin      one bin's results (runs on a worker)
+duty_cycle_result  the /duty_cycle dataset from the bins' results
+bin_table        the rows of the per-bin table the CLI prints
 run_duty_cycle   the whole duty cycle: per-bin results, cycle totals, damage and life
 """
 
@@ -49,7 +51,8 @@ from geometry.case import Case
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 
-__all__ = ["BIN_VARIABLES", "DutyInputs", "analyse_bin", "run_duty_cycle"]
+__all__ = ["BIN_VARIABLES", "DutyInputs", "analyse_bin", "bin_table", "duty_cycle_result",
+           "run_duty_cycle"]
 
 log = logging.getLogger(__name__)
 
@@ -285,8 +288,26 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
     return out
 
 
-def _assemble(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
-    """The ``/duty_cycle`` dataset from the bins' results."""
+def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
+    """The ``/duty_cycle`` dataset from the bins' analyses (what :func:`run_duty_cycle`
+    returns after running them).
+
+    Parameters
+    ----------
+    shared : DutyInputs
+    ds : xarray.Dataset
+        Over ``bin``: :func:`analyse_bin`'s variables of every bin (``point`` renamed).
+
+    Returns
+    -------
+    xarray.Dataset
+        As :func:`run_duty_cycle`.
+
+    Raises
+    ------
+    InputError
+        A failed bin (named), an unknown grade.
+    """
     duty, case = shared.duty, shared.case
     cyc = _cycle(duty, ds)
     dur = _durability(case, duty, ds)
@@ -439,7 +460,7 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None
     for m in ("pinion", "gear"):  # an unknown grade or material fails before any bin runs
         sn_curves(case.member(m).material, duty.grade)
     shared = DutyInputs(case, duty, run.options or LTCAOptions(), run.flank)
-    return _assemble(shared, _bins(shared, run))
+    return duty_cycle_result(shared, _bins(shared, run))
 
 
 def bin_table(ds: xr.Dataset) -> list[Mapping[str, Any]]:
