@@ -113,7 +113,23 @@ class SNCurve:
         return self.static_life_factor * self.allowable
 
     def scaled(self, factor: float) -> SNCurve:
-        """The same curve with its constant σ^m N scaled by ``factor`` (knee cycles × factor)."""
+        """The curve of the same allowable and exponent with its constant σ^m N scaled.
+
+        Parameters
+        ----------
+        factor : float — [1]
+            Scale of the constant, > 0: knee cycles × factor; the static-end life factor
+            moves so that the exponent m stays.
+
+        Returns
+        -------
+        SNCurve
+
+        Raises
+        ------
+        InputError
+            A factor that puts the knee at or below the static end.
+        """
         return SNCurve(self.allowable, self.knee_cycles * factor, self.static_cycles,
                        self.static_life_factor ** (math.log(self.knee_cycles * factor
                                                             / self.static_cycles)
