@@ -19,7 +19,7 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
 
       commands, cli                      (the ``ltca`` command)
         └── plots (figures, report)
-              └── study, optimize, wear  (studies and loops over analyses)
+              └── study, optimize, wear, durability  (studies and loops over analyses)
                     └── catalogue, pipeline  (the bundled cases; one whole analysis)
 
 * ``geometry.core`` (the toolkit's low layer) imports nothing else of the toolkit;
@@ -55,7 +55,8 @@ LAYER_DEPENDS = {
 APPLICATION_LEVELS = (
     ("catalogue, pipeline", {"contact", "contact._moved", "contact.catalogue",
                              "contact.pipeline"}),
-    ("study, optimize, wear", {"contact.study", "contact.optimize", "contact.wear"}),
+    ("study, optimize, wear, durability", {"contact.study", "contact.optimize", "contact.wear",
+                                           "contact.durability"}),
     ("plots, report", {"contact.plots"}),
     ("commands, cli", {"contact.commands", "contact.cli", "contact.__main__"}),
 )

@@ -38,9 +38,11 @@ MORE: dict[str, list[str]] = {
     "optimize": ["--max-evaluations", "2", "--rolls-per-cycle", "4", "--torque", "50"],
     "export-problems": ["--rolls-per-cycle", "4", "--torque", "50"],
     "mesh-interface": ["--rolls-per-cycle", "4", "--segments", "8", "--torque", "50"],
+    "duty-cycle": ["--rolls-per-cycle", "4", "--segments", "8", "--scheduler", "synchronous"],
 }
-#: commands too costly for CI even reduced (each > 10 s on one loaded core)
-SLOW = ("synthesize", "optimize", "export-problems")
+#: commands too costly for CI even reduced (each > 10 s on one loaded core; duty-cycle:
+#: seven analyses)
+SLOW = ("synthesize", "optimize", "export-problems", "duty-cycle")
 CLONE = "from the root of a clone"
 
 

@@ -209,6 +209,43 @@ def test_root_stress_in_the_analysis(tmp_path, monkeypatch):
     assert math.isnan(cols["root_stress_max_gear"].value({"ltca": plain}, 0))
 
 
+def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatch):
+    """``run_duty_cycle(root_stress=FEOptions)``: every bin's analysis has the root stress,
+    the bin's ``root_stress_peak`` is the peak tensile fillet stress of the same single
+    analysis (same inputs, so equal but for the order of sums: rtol 1e-9), and the
+    bending side is available (root life finite, S_F = σ_FE / the peak bin's largest
+    fillet stress, to round-off)."""
+    from contact.compliance.fe import CACHE_ENV, cache_key, cache_path
+    from contact.durability import peak_fillet_stress, sn_curves
+    from contact.pipeline import run_analysis
+    from contact.study import StudyRun
+    from contact.study.duty_cycle import run_duty_cycle
+    from contact.study.duty_cycle_inputs import DutyCycle
+
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))
+    case = resolve_case(None)
+    for member, ds in _coefficients().items():
+        key = cache_key(case.member(member), ds.attrs["flank"], COARSE)
+        ds.assign_attrs(cache_key=key).to_netcdf(cache_path(key), engine="netcdf4")
+    duty = DutyCycle(torque=[100.0, 250.0], speed=[2000.0, 1000.0], revolutions=[1e7, 1e6])
+    out = run_duty_cycle(case, duty, StudyRun(options=SMALL, scheduler="synchronous"),
+                         root_stress=COARSE)
+    assert out.attrs["bending"] == "available"
+    tree = run_analysis(None, [250.0], root_stress=COARSE, options=SMALL, operating=False,
+                        geometry=False, mesh_interface=False)
+    single = peak_fillet_stress(tree["ltca"].to_dataset()["root_stress"].values[0])
+    np.testing.assert_allclose(out["root_stress_peak"].isel(bin=1).values, single,
+                               rtol=1e-9)
+    for member in ("pinion", "gear"):
+        life = float(out["root_life"].sel(member=member))
+        assert life > 0  # finite, or inf when no fillet point reaches the knee
+        allowable = sn_curves(case.member(member).material, "MQ")["bending"].allowable
+        peak = float(out["root_stress_peak"].sel(member=member).isel(bin=1).max())
+        assert float(out["bending_safety_factor"].sel(member=member)) == pytest.approx(
+            allowable / peak, rel=1e-12)
+        assert np.all(out["root_damage"].sel(member=member).values >= 0)
+
+
 def test_bad_input_is_refused_naming_the_field():
     """Coefficients of the wrong flank, an /ltca without its forces, a bad root_stress
     argument: refused with the field named."""

@@ -1,0 +1,19 @@
+"""Durability of the flanks and the roots: S–N curves, Miner's rule, damage and life.
+
+Modules
+-------
+sn_curve   S–N curves of ISO 6336-2/-3 from the material table, Miner's rule variants
+damage     cumulative damage over a spectrum's bins, peak fillet stress, life
+"""
+
+from contact.durability.damage import (
+    cumulative_damage,
+    life_at_first_failure,
+    member_cycles,
+    peak_fillet_stress,
+    pressure_envelopes,
+)
+from contact.durability.sn_curve import GRADES, MINER_RULES, SNCurve, sn_curves
+
+__all__ = ["GRADES", "MINER_RULES", "SNCurve", "cumulative_damage", "life_at_first_failure",
+           "member_cycles", "peak_fillet_stress", "pressure_envelopes", "sn_curves"]

@@ -1,0 +1,492 @@
+"""Duty cycles: a load spectrum with torque-dependent misalignment, its efficiency and damage.
+
+Each bin of a :class:`~contact.study.duty_cycle_inputs.DutyCycle` is one
+:func:`contact.run_analysis` of the case at the bin's pinion torque and misalignment (the
+deflection table's at that torque plus the case's assembly misalignment), with the
+efficiency stage at the bin's speed and oil temperature; the bins run on the study engine
+(:func:`contact.study.engine.run_tasks`: Dask, one process per core, or
+``"synchronous"``), stream to ``OUTPUT.parts/`` as they finish and resume after a kill
+(:class:`contact.study.store.ResultStore`). From the bins' stresses the durability code
+(:mod:`contact.durability`) sums Miner's damage per flank point and per fillet point.
+
+Public names
+------------
+DutyInputs       what every bin shares (case, duty cycle, options)
+analyse_bin      one bin's results (runs on a worker)
+duty_cycle_result  the /duty_cycle dataset from the bins' results
+bin_table        the rows of the per-bin table the CLI prints
+run_duty_cycle   the whole duty cycle: per-bin results, cycle totals, damage and life
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import logging
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from contact.durability import (
+    cumulative_damage,
+    life_at_first_failure,
+    member_cycles,
+    peak_fillet_stress,
+    pressure_envelopes,
+    sn_curves,
+)
+from contact.ltca import LTCAOptions
+from contact.ltca.options import json_options
+from contact.study.duty_cycle_inputs import DutyCycle
+from contact.study.run import StudyRun
+from contact.study.store import ResultStore
+from geometry import __version__
+from geometry.case import Case
+from geometry.core.conventions import data_var
+from geometry.core.errors import InputError
+
+__all__ = ["BIN_VARIABLES", "DutyInputs", "analyse_bin", "bin_table", "duty_cycle_result",
+           "run_duty_cycle"]
+
+log = logging.getLogger(__name__)
+
+#: per-bin scalars: name → (units, long name)
+BIN_VARIABLES = {
+    "lte_mean": ("urad", "mean loaded transmission error"),
+    "lte_peak_to_peak": ("urad", "peak-to-peak loaded transmission error"),
+    "pressure_max_flank": ("MPa", "peak Hertzian pressure of the flank (contact-curve) "
+                           "segments"),
+    "pressure_max_edge": ("MPa", "peak Hertzian pressure of the edge-contact segments"),
+    "edge_load_share": ("1", "share of the gear torque carried by edge contact"),
+    "efficiency": ("1", "mechanical mesh efficiency, mean over the mesh cycles"),
+    "power_loss": ("W", "mesh power loss, mean over the mesh cycles"),
+}
+
+
+@dataclass(frozen=True)
+class DutyInputs:
+    """What every bin of a duty cycle shares (scattered once to every worker).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    duty : DutyCycle
+    options : contact.ltca.LTCAOptions
+    flank : str or None
+    root_stress : bool or contact.compliance.fe.FEOptions
+        Each bin's analysis also computes the tooth-root stress (``run_analysis``'s
+        ``root_stress``; FE influence coefficients, docs/fe.md), so the bending side
+        (ISO 6336-3 S–N curve) has its fillet stresses. FEOptions: that FE model.
+    """
+
+    case: Case
+    duty: DutyCycle
+    options: LTCAOptions
+    flank: str | None = None
+    root_stress: Any = False
+
+    def fingerprint(self) -> str:
+        """A hash of everything deciding the bins' analyses (a resumed run must match):
+        case, options, flank, and each bin's torque, speed, temperature and misalignment —
+        not the durations, grade or Miner's rule, which only the damage reads (a run with
+        other durations reuses the analyses)."""
+        d = self.duty
+        mis = [dataclasses.astuple(d.misalignment(i, self.case.misalignment))
+               for i in range(d.n_bins)]
+        bins = {"torque": d.torque.tolist(), "speed": d.speed.tolist(), "misalignment": mis,
+                "temperature": None if d.temperature is None else d.temperature.tolist()}
+        text = json.dumps({"case": self.case.to_toml(), "bins": bins,
+                           "options": json_options(self.options), "flank": self.flank,
+                           "root_stress": repr(self.root_stress)},
+                          sort_keys=True, default=str)
+        return hashlib.sha256(text.encode()).hexdigest()
+
+
+def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
+    """Analyse one bin (the function Dask runs on a worker).
+
+    Parameters
+    ----------
+    shared : DutyInputs
+    index : int
+        The bin.
+
+    Returns
+    -------
+    xarray.Dataset
+        Over a ``point`` dim of length 1 (the bin; the store's dim): the
+        :data:`BIN_VARIABLES`, ``lte_harmonics`` (harmonic) [µrad], ``pressure_envelope``
+        (u, v) [MPa] of the flank (contact-curve) segments and ``edge_pressure_envelope``
+        of the edge segments (their larger is ``/ltca/pressure_envelope``) and, when the
+        analysis has ``root_stress``, ``root_stress_peak`` (member, fillet_point) [MPa];
+        ``status`` 0 ok, 1 uncertified rolls, 2 failed (``reason``). A failing bin does not raise.
+
+    Notes
+    -----
+    Exactly :func:`contact.run_analysis` at the bin's torque and misalignment (no
+    geometry, no mesh interface) and :func:`friction.efficiency.efficiency_analysis` at its
+    speed and oil temperature.
+    """
+    from contact.ltca.summary import edge_load_share
+    from contact.pipeline import operating_conditions, run_analysis
+    from friction.efficiency import efficiency_analysis
+
+    case, duty = shared.case, shared.duty
+    torque = float(duty.torque[index])
+    try:
+        mis = duty.misalignment(index, case.misalignment)
+        tree = run_analysis(dataclasses.replace(case, misalignment=mis), [torque],
+                            flank=shared.flank, options=shared.options, geometry=False,
+                            theoretical=False, operating=False, mesh_interface=False,
+                            root_stress=shared.root_stress)
+        ltca = tree["/ltca"].to_dataset()
+        temp = None if duty.temperature is None else float(duty.temperature[index])
+        op = operating_conditions(case, pinion_speed=float(duty.speed[index]),
+                                  temperature=temp)
+        fr = efficiency_analysis(ltca, op)
+        vals = {
+            "lte_mean": ltca["lte_mean"].values[0],
+            "lte_peak_to_peak": ltca["lte_peak_to_peak"].values[0],
+            "pressure_max_flank": ltca["pressure_max_flank"].values[0],
+            "pressure_max_edge": ltca["pressure_max_edge"].values[0],
+            "edge_load_share": edge_load_share(ltca)[0],
+            "efficiency": fr["efficiency_mean"].values[0],
+            "power_loss": fr["power_loss_mean"].values[0],
+        }
+        status = 0 if bool(np.all(ltca["found"].values > 0)) else 1
+        reason = ""
+        harm = ltca["lte_harmonics"].values[0]
+        u, v = ltca["u"].values, ltca["v"].values
+        env, edge_env = pressure_envelopes(
+            ltca["pressure_max"].values[0], ltca["segment_u"].values,
+            ltca["segment_v"].values, ltca["segment_kind"].values != "curve", u, v)
+        root = (peak_fillet_stress(ltca["root_stress"].values[0])
+                if "root_stress" in ltca else None)
+    except Exception as exc:  # one failing bin never stops the cycle
+        log.info("duty-cycle bin %d failed: %s", index, exc)
+        status, reason = 2, f"{type(exc).__name__}: {exc}".splitlines()[0]
+        vals = dict.fromkeys(BIN_VARIABLES, np.nan)
+        harm, u, v, root = np.full(3, np.nan), [0.0], [0.0], None
+        env = edge_env = np.full((1, 1), np.nan)
+    data = {k: data_var(("point",), np.array([float(x)]), *BIN_VARIABLES[k])
+            for k, x in vals.items()}
+    data["lte_harmonics"] = data_var(("point", "harmonic"), np.asarray(harm, float)[None],
+                                     "urad", "amplitude of the first three mesh harmonics "
+                                     "of the loaded transmission error")
+    data["pressure_envelope"] = data_var(
+        ("point", "u", "v"), np.asarray(env, float)[None], "MPa",
+        "peak contact pressure of the flank (contact-curve) segments of a tooth mesh on the "
+        "gear's contact grid")
+    data["edge_pressure_envelope"] = data_var(
+        ("point", "u", "v"), np.asarray(edge_env, float)[None], "MPa",
+        "peak contact pressure of the edge-contact segments of a tooth mesh on the gear's "
+        "contact grid")
+    if root is not None:
+        data["root_stress_peak"] = data_var(
+            ("point", "member", "fillet_point"), root[None], "MPa",
+            "peak tensile fillet stress of a tooth mesh")
+    data["status"] = data_var(("point",), np.array([status], np.int8), "1",
+                              "outcome of the bin's analysis (0 ok, 1 uncertified, 2 failed)")
+    data["reason"] = data_var(("point",), np.array([reason], dtype=object), None,
+                              "why the bin failed (empty when it did not)")
+    coords = {"point": ("point", [index], {"units": "1", "long_name": "bin index"}),
+              "u": ("u", np.asarray(u, float), {"units": "1",
+                                                "long_name": "gear lengthwise fraction"}),
+              "v": ("v", np.asarray(v, float), {"units": "1",
+                                                "long_name": "gear profile fraction"})}
+    return xr.Dataset(data, coords=coords)
+
+
+def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
+    """Every bin's dataset, from the parts of an interrupted run and the engine."""
+    from contact.study.engine import run_tasks
+
+    n = shared.duty.n_bins
+    store = None
+    done: set[int] = set()
+    if run.output is not None:
+        out = Path(run.output)
+        if not out.parent.is_dir():
+            raise InputError(f"output: directory {str(out.parent)!r} does not exist")
+        store = ResultStore(out, {"fingerprint": shared.fingerprint(), "kind": "duty_cycle",
+                                  "bins": n}, chunk_size=1)
+        done = store.done()
+    kept: list[xr.Dataset] = []
+    todo = [(i,) for i in range(n) if i not in done]
+    bar = None
+    if run.progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=n, initial=len(done), desc="duty cycle", unit="bin")
+    try:
+        for ds in run_tasks(analyse_bin, shared, todo, scheduler=run.scheduler,
+                            n_workers=run.n_workers):
+            (store.add if store is not None else kept.append)(ds)
+            if bar is not None:
+                bar.update()
+    finally:
+        if store is not None:
+            store.flush()
+        if bar is not None:
+            bar.close()
+    parts = [store.combined()] if store is not None else kept
+    ds = xr.concat(parts, dim="point", join="outer")
+    ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
+    ds.attrs["bins_resumed"] = len(done)
+    return ds.rename(point="bin")
+
+
+def _cycle(duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
+    """Per-bin energy and the cycle's totals (energy in, lost, efficiency)."""
+    omega = duty.speed * 2.0 * math.pi / 60.0  # rad/s
+    power_in = duty.torque * omega  # W
+    seconds = duty.hours * 3600.0
+    e_in = power_in * seconds / 3.6e6  # kWh
+    e_lost = ds["power_loss"].values * seconds / 3.6e6
+    e_out = ds["efficiency"].values * e_in
+    return {"power_in": power_in, "energy_in": e_in, "energy_lost": e_lost,
+            "energy_out": e_out}
+
+
+def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
+    """Damage per flank and fillet point, life and safety factors (the /duty_cycle vars)."""
+    if np.any(ds["status"].values == 2):
+        bad = int(np.argmax(ds["status"].values == 2))
+        raise InputError(f"duty_cycle bin {bad}: its analysis failed "
+                         f"({ds['reason'].values[bad]}); no damage without every bin")
+    out: dict[str, Any] = {}
+    cycles = member_cycles(duty.revolutions, case.pinion.blank.teeth, case.gear.blank.teeth)
+    members = ("pinion", "gear")
+    hours = float(duty.hours.sum())
+    peak_bin = int(np.argmax(duty.torque))
+    for m in members:
+        mat = case.member(m).material
+        curves = sn_curves(mat, duty.grade)
+        env = ds["pressure_envelope"].values
+        d = cumulative_damage(env, cycles[m], curves["contact"], duty.miner_rule)
+        out[f"flank_damage_{m}"] = d
+        total = d.sum(axis=0)
+        life, idx = life_at_first_failure(total, hours)
+        out[f"flank_life_{m}"] = life
+        out[f"flank_location_{m}"] = (float(ds["u"].values[idx[0]]),
+                                      float(ds["v"].values[idx[1]]))
+        out[f"contact_safety_{m}"] = (curves["contact"].allowable
+                                      / float(env[peak_bin].max()))
+        out[f"contact_allowable_{m}"] = curves["contact"].allowable
+        out[f"static_exceeded_{m}"] = bool(np.any(curves["contact"].beyond_static(env)))
+        if "root_stress_peak" in ds:
+            k = members.index(m)
+            root = ds["root_stress_peak"].values[:, k, :]
+            rd = cumulative_damage(root, cycles[m], curves["bending"], duty.miner_rule)
+            out[f"root_damage_{m}"] = rd
+            rlife, ridx = life_at_first_failure(rd.sum(axis=0), hours)
+            out[f"root_life_{m}"] = rlife
+            out[f"root_location_{m}"] = int(ridx[0])
+            out[f"bending_safety_{m}"] = (curves["bending"].allowable
+                                          / max(float(root[peak_bin].max()), 1e-300))
+    out["cycles"] = cycles
+    out["peak_bin"] = peak_bin
+    return out
+
+
+def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
+    """The ``/duty_cycle`` dataset from the bins' analyses (what :func:`run_duty_cycle`
+    returns after running them).
+
+    Parameters
+    ----------
+    shared : DutyInputs
+    ds : xarray.Dataset
+        Over ``bin``: :func:`analyse_bin`'s variables of every bin (``point`` renamed).
+
+    Returns
+    -------
+    xarray.Dataset
+        As :func:`run_duty_cycle`.
+
+    Raises
+    ------
+    InputError
+        A failed bin (named), an unknown grade.
+    """
+    duty, case = shared.duty, shared.case
+    cyc = _cycle(duty, ds)
+    dur = _durability(case, duty, ds)
+    members = ["pinion", "gear"]
+    out = ds.drop_vars([v for v in ("pressure_envelope", "edge_pressure_envelope",
+                                     "root_stress_peak") if v in ds])
+    out = out.assign_coords(member=("member", members, {"long_name": "gear member"}))
+    bin_ = ("bin",)
+    out["torque"] = data_var(bin_, duty.torque, "N m", "pinion torque of the bin")
+    out["speed"] = data_var(bin_, duty.speed, "rpm", "pinion speed of the bin")
+    out["hours"] = data_var(bin_, duty.hours, "h", "duration of the bin")
+    out["revolutions"] = data_var(bin_, duty.revolutions, "1", "pinion revolutions of the bin")
+    if duty.temperature is not None:
+        out["temperature"] = data_var(bin_, duty.temperature, "degC",
+                                      "oil inlet temperature of the bin")
+    mis = [duty.misalignment(i, case.misalignment) for i in range(duty.n_bins)]
+    for name, unit, scale in (("delta_E", "mm", 1.0), ("delta_P", "mm", 1.0),
+                              ("delta_G", "mm", 1.0), ("delta_Sigma", "rad", 1.0)):
+        out[name] = data_var(bin_, np.array([getattr(m, name) * scale for m in mis]), unit,
+                             f"misalignment {name} of the bin (deflection + assembly)")
+    out["power_in"] = data_var(bin_, cyc["power_in"], "W", "input (pinion) power of the bin")
+    out["energy_in"] = data_var(bin_, cyc["energy_in"], "kW h", "energy in over the bin")
+    out["energy_lost"] = data_var(bin_, cyc["energy_lost"], "kW h",
+                                  "energy lost in the mesh over the bin")
+    ein, elost = float(cyc["energy_in"].sum()), float(cyc["energy_lost"].sum())
+    out["cycle_energy_in"] = data_var((), np.float64(ein), "kW h",
+                                      "energy in over the duty cycle")
+    out["cycle_energy_lost"] = data_var((), np.float64(elost), "kW h",
+                                        "energy lost in the mesh over the duty cycle")
+    out["cycle_efficiency"] = data_var((), np.float64(1.0 - elost / ein), "1",
+                                       "cycle-average mesh efficiency (energy out / in)")
+    out["cycles_per_tooth"] = data_var(
+        ("bin", "member"), np.stack([dur["cycles"][m] for m in members], -1), "1",
+        "load cycles of a tooth point in the bin (one per tooth mesh)")
+    out["flank_damage"] = data_var(
+        ("bin", "member", "u", "v"), np.stack([dur[f"flank_damage_{m}"] for m in members], 1),
+        "1", "Miner damage of the flank points in the bin (at the gear-grid point in contact)")
+    out["flank_damage_total"] = out["flank_damage"].sum("bin").assign_attrs(
+        units="1", long_name="cumulative Miner damage of the flank points over the cycle")
+    out["pressure_envelope"] = ds["pressure_envelope"]
+    out["edge_pressure_envelope"] = ds["edge_pressure_envelope"]
+    out["damage"] = data_var(("member",), np.array(
+        [float(out["flank_damage_total"].sel(member=m).max()) for m in members]), "1",
+        "largest cumulative flank (pitting) damage of the duty cycle")
+    out["life"] = data_var(("member",), np.array([dur[f"flank_life_{m}"] for m in members]),
+                           "h", "flank (pitting) life: hours to damage 1 at the first point")
+    out["life_u"] = data_var(("member",), np.array(
+        [dur[f"flank_location_{m}"][0] for m in members]), "1",
+        "gear lengthwise fraction of the flank point first reaching damage 1")
+    out["life_v"] = data_var(("member",), np.array(
+        [dur[f"flank_location_{m}"][1] for m in members]), "1",
+        "gear profile fraction of the flank point first reaching damage 1")
+    out["contact_safety_factor"] = data_var(("member",), np.array(
+        [dur[f"contact_safety_{m}"] for m in members]), "1",
+        "sigma_Hlim / peak contact pressure of the peak-torque bin (life factor 1)")
+    bending = "root_stress_peak" in ds
+    if bending:
+        out["root_stress_peak"] = ds["root_stress_peak"]
+        out["root_damage"] = data_var(
+            ("bin", "member", "fillet_point"),
+            np.stack([dur[f"root_damage_{m}"] for m in members], 1), "1",
+            "Miner damage of the fillet points in the bin")
+        out["root_damage_max"] = data_var(("member",), np.array(
+            [float(dur[f"root_damage_{m}"].sum(0).max()) for m in members]), "1",
+            "largest cumulative root (bending) damage of the duty cycle")
+        out["root_life"] = data_var(("member",), np.array(
+            [dur[f"root_life_{m}"] for m in members]), "h",
+            "root (bending) life: hours to damage 1 at the first fillet point")
+        out["root_life_point"] = data_var(("member",), np.array(
+            [dur[f"root_location_{m}"] for m in members]), "1",
+            "fillet point first reaching damage 1")
+        out["bending_safety_factor"] = data_var(("member",), np.array(
+            [dur[f"bending_safety_{m}"] for m in members]), "1",
+            "sigma_FE / peak tensile fillet stress of the peak-torque bin")
+    out = out.assign_coords(bin=("bin", np.arange(duty.n_bins),
+                                 {"units": "1", "long_name": "duty-cycle bin"}),
+                            harmonic=("harmonic", np.arange(1, 4),
+                                      {"units": "1", "long_name": "mesh harmonic order"}))
+    out["reason"] = out["reason"].astype(str)
+    out.attrs = {
+        "title": f"hypoid-ltca duty cycle of {case.name}",
+        "case": case.name,
+        "toolkit_version": __version__,
+        "duty_cycle": duty.name,
+        "illustrative": int(duty.illustrative),
+        "grade": duty.grade,
+        "miner_rule": duty.miner_rule,
+        "bending": ("available" if bending else
+                    "unavailable: the bins' analyses have no root_stress (run with "
+                    "root_stress=True, `ltca duty-cycle --root-stress`); no bending damage "
+                    "or life is reported"),
+        "contact_static_limit_exceeded": int(any(dur[f"static_exceeded_{m}"]
+                                                 for m in members)),
+        "edge_contact": "edge-contact pressures (edge_pressure_envelope, pressure_max_edge) "
+                        "are not counted in the pitting damage: the S-N curve of ISO 6336-2 "
+                        "is of Hertzian flank contact; the LTCA bounds edge pressures by the "
+                        "elastic-perfectly-plastic (shakedown) limit instead",
+        "flank_damage_location": "both members' flank damage is placed at the gear's "
+                                 "contact-grid point (u, v) in contact",
+        "peak_bin": dur["peak_bin"],
+        "bins_resumed": int(ds.attrs.get("bins_resumed", 0)),
+        "solver": shared.options.solver,
+        "flank": shared.flank or "drive",
+    }
+    return out
+
+
+def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
+                   root_stress: Any = False) -> xr.Dataset:
+    """Analyse every bin of a duty cycle and its damage, life and cycle efficiency.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        The gear set (its ``misalignment`` is the assembly misalignment).
+    duty : DutyCycle
+        Bins (torque [N·m], speed [rpm], revolutions, temperature [degC]), deflection
+        table, grade and Miner's rule.
+    run : contact.study.StudyRun, optional
+        LTCA options, flank, output (streaming to ``OUTPUT.parts/`` and resume),
+        scheduler and workers. ``operating`` is not used (each bin sets its own speed and
+        temperature; the case's lubricant, roughness, friction model).
+    root_stress : bool or contact.compliance.fe.FEOptions
+        Also the tooth-root stress of each bin (FE influence coefficients of the
+        generated teeth, built once per design and cached; docs/fe.md) and with it the
+        bending side: root damage, life and safety factor per member. True: the default
+        FE model; FEOptions: that one. Default False.
+
+    Returns
+    -------
+    xarray.Dataset
+        The ``/duty_cycle`` group, dims ``bin``, ``member``, ``harmonic``, ``u``, ``v``
+        (``fillet_point`` with the bending side): per bin the :data:`BIN_VARIABLES`,
+        ``lte_harmonics`` [µrad], misalignment, ``power_in`` [W], ``energy_in``,
+        ``energy_lost`` [kW h], ``flank_damage`` [1]; over the cycle ``cycle_energy_in``,
+        ``cycle_energy_lost``, ``cycle_efficiency``, ``damage`` [1] and ``life`` [h] per
+        member with its location ``life_u``, ``life_v``, ``contact_safety_factor``; with
+        root stress in the analysis ``root_damage``, ``root_life`` [h],
+        ``bending_safety_factor``; else the attribute ``bending`` says it is unavailable.
+
+    Raises
+    ------
+    InputError
+        A bin outside the deflection table (named), an unknown grade, a failed bin (named,
+        with its reason), parts of another run at ``OUTPUT.parts``.
+
+    Notes
+    -----
+    Damage by Miner's rule on the ISO 6336-2/-3 S–N curves of the members' material
+    (:mod:`contact.durability`), one load cycle per tooth mesh; local stresses from the
+    LTCA (peak Hertz pressure of the contact grid, peak tensile fillet stress).
+    """
+    if not isinstance(duty, DutyCycle):
+        raise InputError(f"duty: must be a DutyCycle, got {type(duty).__name__}")
+    run = run or StudyRun()
+    for m in ("pinion", "gear"):  # an unknown grade or material fails before any bin runs
+        sn_curves(case.member(m).material, duty.grade)
+    if not isinstance(root_stress, bool):
+        from contact.compliance.fe import FEOptions
+
+        if not isinstance(root_stress, FEOptions):
+            raise InputError("root_stress: must be True, False or a "
+                             f"contact.compliance.fe.FEOptions, got {root_stress!r}")
+    shared = DutyInputs(case, duty, run.options or LTCAOptions(), run.flank, root_stress)
+    return duty_cycle_result(shared, _bins(shared, run))
+
+
+def bin_table(ds: xr.Dataset) -> list[Mapping[str, Any]]:
+    """Rows of the per-bin table the CLI prints (torque, speed, hours, LTE, pressure, …)."""
+    rows = []
+    for i in range(ds.sizes["bin"]):
+        rows.append({k: float(ds[k].values[i]) for k in (
+            "torque", "speed", "hours", "lte_mean", "lte_peak_to_peak",
+            "pressure_max_flank", "edge_load_share", "efficiency", "power_loss")})
+    return rows
