@@ -15,6 +15,7 @@ Slow (about 10–20 min on one core: six LTCA runs). Usage::
 
     python benchmarks/efficiency_study.py [--models xu2007 mixed_ehl] [--rolls 20]
         [--cache DIR]   # reuse LTCA results written there
+        [--reference]   # the optimised reference designs of A and B (issue 37)
 """
 
 from __future__ import annotations
@@ -40,11 +41,11 @@ TEMPERATURES = (50.0, 75.0, 100.0)
 ROUGHNESS = (0.1, 0.3, 0.5, 0.7, 0.9, 1.1, 1.3)
 
 
-def _ltca(design: str, rolls: int, cache: Path | None) -> xr.Dataset:
-    path = None if cache is None else cache / f"ltca_{design}_{rolls}.nc"
+def _ltca(design: str, rolls: int, cache: Path | None, suffix: str = "") -> xr.Dataset:
+    path = None if cache is None else cache / f"ltca_{design}{suffix}_{rolls}.nc"
     if path is not None and path.is_file():
         return xr.load_dataset(path)
-    lt = loaded_tca(resolve_case(CASES[design]), list(TORQUES),
+    lt = loaded_tca(resolve_case(CASES[design] + suffix), list(TORQUES),
                     options=LTCAOptions(rolls_per_cycle=rolls))
     if path is not None:
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -76,8 +77,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--models", nargs="+", default=["xu2007", "mixed_ehl"])
     ap.add_argument("--rolls", type=int, default=20)
     ap.add_argument("--cache", type=Path, default=None)
+    ap.add_argument("--reference", action="store_true",
+                    help="the optimised reference designs (kolivand2009_table54_*_fh_reference, "
+                    "issue 37) instead of the long-bearing pairs")
     args = ap.parse_args(argv)
-    lts = {d: _ltca(d, args.rolls, args.cache) for d in CASES}
+    suffix = "_reference" if args.reference else ""
+    print(f"designs: {', '.join(CASES[d] + suffix for d in CASES)}")
+    lts = {d: _ltca(d, args.rolls, args.cache, suffix) for d in CASES}
     for model in args.models:
         print(f"\n## friction model {model}\n")
         speed = {d: [_point(lts[d], model, n, 90.0, 0.8) for n in SPEEDS] for d in CASES}

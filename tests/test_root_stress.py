@@ -244,6 +244,16 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
         assert float(out["bending_safety_factor"].sel(member=member)) == pytest.approx(
             allowable / peak, rel=1e-12)
         assert np.all(out["root_damage"].sel(member=member).values >= 0)
+    # the fillet stations' lengthwise fractions come along, and the figures include the
+    # root damage along the fillet
+    np.testing.assert_array_equal(out["fillet_u"].values,
+                                  tree["ltca"].to_dataset()["fillet_u"].values)
+    from contact.study.duty_cycle_figures import save_duty_cycle_figures
+
+    paths = save_duty_cycle_figures(out, tmp_path)
+    assert [p.name.rsplit("_duty_", 1)[1] for p in paths] == [
+        "damage.png", "bins.png", "root_damage.png"]
+    assert all(p.stat().st_size > 0 for p in paths)
 
 
 def test_bad_input_is_refused_naming_the_field():

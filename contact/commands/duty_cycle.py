@@ -51,12 +51,13 @@ def register(sub) -> None:
     segments_option(p)
     output_option(p, default="<case>_duty_cycle.nc", what="netCDF file with /duty_cycle")
     plots_option(p)
-    p.add_argument("--root-stress", action="store_true",
-                   help="also the tooth-root stress of every bin and with it the bending side "
-                   "(root damage, life, bending safety factor; ISO 6336-3): the FE influence "
-                   "coefficients of the design are built once (~15-30 s per member on 2 "
-                   "cores), then read "
-                   "from the cache (docs/fe.md)")
+    p.add_argument("--root-stress", action=argparse.BooleanOptionalAction, default=True,
+                   help="the tooth-root stress of every bin and with it the bending side "
+                   "(root damage, life, bending safety factor; ISO 6336-3), on by default: "
+                   "the first run of a design builds its FE influence coefficients "
+                   "(~15-30 s per member on 2 cores, minutes on a loaded machine), later "
+                   "runs read them from the cache (docs/fe.md); --no-root-stress: the "
+                   "flank (pitting) side only")
     progress_option(p)
     p.set_defaults(func=run)
 

@@ -37,7 +37,7 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
             "--temperature 75 --roughness 0 0 -o ehl.nc",),
     "duty-cycle": ("ltca duty-cycle -o duty.nc --plots duty_plots   # illustrative spectrum",
                    "ltca duty-cycle kolivand2009_fm_11x41_reference --duty spectrum.toml "
-                   "--root-stress -o duty.nc"),
+                   "--no-root-stress -o duty.nc"),
     "geometry": ("ltca geometry -o flanks.nc",),
     "plot-geometry": ("ltca plot-geometry -o figs",),
     "synthesize": ("ltca synthesize kolivand2009_fh_12x41 -o my_case.toml",),

@@ -168,11 +168,12 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
             ltca["segment_v"].values, ltca["segment_kind"].values != "curve", u, v)
         root = (peak_fillet_stress(ltca["root_stress"].values[0])
                 if "root_stress" in ltca else None)
+        fillet_u = ltca["fillet_u"].values if "root_stress" in ltca else None
     except Exception as exc:  # one failing bin never stops the cycle
         log.info("duty-cycle bin %d failed: %s", index, exc)
         status, reason = 2, f"{type(exc).__name__}: {exc}".splitlines()[0]
         vals = dict.fromkeys(BIN_VARIABLES, np.nan)
-        harm, u, v, root = np.full(3, np.nan), [0.0], [0.0], None
+        harm, u, v, root, fillet_u = np.full(3, np.nan), [0.0], [0.0], None, None
         env = edge_env = np.full((1, 1), np.nan)
     data = {k: data_var(("point",), np.array([float(x)]), *BIN_VARIABLES[k])
             for k, x in vals.items()}
@@ -200,6 +201,10 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
                                                 "long_name": "gear lengthwise fraction"}),
               "v": ("v", np.asarray(v, float), {"units": "1",
                                                 "long_name": "gear profile fraction"})}
+    if fillet_u is not None:
+        coords["fillet_u"] = (("member", "fillet_point"), np.asarray(fillet_u, float),
+                              {"units": "1", "long_name": "lengthwise fraction of the fillet "
+                                                          "face station (toe 0, heel 1)"})
     return xr.Dataset(data, coords=coords)
 
 

@@ -3,6 +3,7 @@
 Public functions
 ----------------
 damage_map_figure       cumulative flank damage of both members on the gear's contact grid
+root_damage_figure      cumulative root (bending) damage along the fillet of both members
 bins_figure             per bin: hours, share of the damage, energy lost, efficiency
 save_duty_cycle_figures both as PNGs
 """
@@ -19,7 +20,8 @@ from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
 from geometry.plot import pyplot
 
-__all__ = ["bins_figure", "damage_map_figure", "save_duty_cycle_figures"]
+__all__ = ["bins_figure", "damage_map_figure", "root_damage_figure",
+           "save_duty_cycle_figures"]
 
 
 def _check(ds: xr.Dataset) -> None:
@@ -68,6 +70,61 @@ def damage_map_figure(ds: xr.Dataset):
         ax.set_title(f"{member} flank damage (Miner {ds.attrs.get('miner_rule', '')})")
         ax.legend(loc="upper left", fontsize=8)
         fig.colorbar(im, ax=ax, label="log10 cumulative damage [1]", extend="min")
+    note = " (ILLUSTRATIVE)" if ds.attrs.get("illustrative") else ""
+    fig.suptitle(f"{ds.attrs.get('case', '')}: {ds.attrs.get('duty_cycle', '')}{note}",
+                 fontsize=9)
+    return fig
+
+
+def root_damage_figure(ds: xr.Dataset):
+    """Cumulative root (bending) damage [1] along the fillet over the cycle, and the peak
+    tensile fillet stress [MPa] of each bin, for both members.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A :func:`contact.study.duty_cycle.run_duty_cycle` result with the bending side
+        (``root_damage``, ``root_stress_peak``, coordinate ``fillet_u``).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Top row: log₁₀ of the cumulative damage against the lengthwise fraction of the
+        fillet station, the first station to reach damage 1 marked; bottom row: the bins'
+        peak fillet stress along the face width with the S–N curve's allowable.
+
+    Raises
+    ------
+    InputError
+        Not a duty-cycle result, or one without the bending side.
+    """
+    _check(ds)
+    if "root_damage" not in ds:
+        raise InputError("duty cycle: the dataset has no 'root_damage' (run with "
+                         "root_stress, `ltca duty-cycle --root-stress`)")
+    plt = pyplot()
+    fig, axes = plt.subplots(2, 2, figsize=(10, 6), constrained_layout=True, sharex=True)
+    for k in range(ds.sizes["member"]):
+        member = str(ds["member"].values[k])
+        x = (ds["fillet_u"].values[k] if "fillet_u" in ds.coords
+             else np.linspace(0.0, 1.0, ds.sizes["fillet_point"]))
+        total = ds["root_damage"].values[:, k, :].sum(0)
+        ax = axes[0, k]
+        ax.semilogy(x, np.where(total > 0, total, np.nan), "o-", ms=3)
+        ax.axhline(1.0, color="0.5", lw=0.8, ls="--")
+        i = int(ds["root_life_point"].values[k])
+        ax.semilogy([x[i]], [max(total[i], 1e-300)], "rx", ms=10,
+                    label=f"first to fail: life {float(ds['root_life'][k]):.3g} h")
+        ax.set_ylabel("cumulative root damage [1]")
+        ax.set_title(f"{member} root (bending) damage (Miner {ds.attrs.get('miner_rule', '')})")
+        ax.legend(loc="best", fontsize=8)
+        ax = axes[1, k]
+        stress = ds["root_stress_peak"].values[:, k, :]
+        for b in range(stress.shape[0]):
+            ax.plot(x, stress[b], lw=1, label=f"{ds['torque'].values[b]:g} N m")
+        ax.set_xlabel("lengthwise fraction of the fillet station [1] (toe 0, heel 1)")
+        ax.set_ylabel("peak tensile fillet stress [MPa]")
+        ax.legend(fontsize=7, ncol=2, title="bin torque", title_fontsize=7)
     note = " (ILLUSTRATIVE)" if ds.attrs.get("illustrative") else ""
     fig.suptitle(f"{ds.attrs.get('case', '')}: {ds.attrs.get('duty_cycle', '')}{note}",
                  fontsize=9)
@@ -140,7 +197,8 @@ def save_duty_cycle_figures(ds: xr.Dataset, directory: str | os.PathLike[str]) -
     Returns
     -------
     list of pathlib.Path
-        ``<case>_duty_damage.png`` and ``<case>_duty_bins.png``.
+        ``<case>_duty_damage.png``, ``<case>_duty_bins.png`` and, with the bending side,
+        ``<case>_duty_root_damage.png``.
 
     Raises
     ------
@@ -153,8 +211,12 @@ def save_duty_cycle_figures(ds: xr.Dataset, directory: str | os.PathLike[str]) -
     plt = pyplot()
     case = ds.attrs.get("case", "duty_cycle")
     paths = []
-    for fig, name in ((damage_map_figure(ds), f"{case}_duty_damage.png"),
-                      (bins_figure(ds), f"{case}_duty_bins.png")):
+    figures = [(damage_map_figure, f"{case}_duty_damage.png"),
+               (bins_figure, f"{case}_duty_bins.png")]
+    if "root_damage" in ds:
+        figures.append((root_damage_figure, f"{case}_duty_root_damage.png"))
+    for draw, name in figures:
+        fig = draw(ds)
         path = out / name
         with atomic_path(path) as tmp:
             fig.savefig(tmp, dpi=110, format="png")
