@@ -25,6 +25,7 @@ Public functions
 ----------------
 member_contact_points   the segments' contact points in a member's frame
 root_stress             the ``root_stress`` variables of an ``/ltca`` dataset
+prepare_coefficients    both members' coefficients built (or read) once, before a study
 """
 
 from __future__ import annotations
@@ -42,7 +43,7 @@ from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 from geometry.pair.assembly import case_transforms
 
-__all__ = ["MEMBERS", "member_contact_points", "root_stress"]
+__all__ = ["MEMBERS", "member_contact_points", "prepare_coefficients", "root_stress"]
 
 log = logging.getLogger(__name__)
 
@@ -59,6 +60,42 @@ def _roll_rotations(eo: EaseOff, roll: np.ndarray) -> tuple[np.ndarray, np.ndarr
     cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
     rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
     return rp, eo.gear_phase - rp / eo.ratio
+
+
+def prepare_coefficients(case, flank: str | None = None, options=None, *,
+                         progress: bool = True) -> dict[str, xr.Dataset]:
+    """Both members' FE influence coefficients, built or read from the cache, once.
+
+    A study (sweep, duty cycle) whose points all use one design calls this in the client
+    before it dispatches the points, so the workers of a local cluster read the cached
+    coefficients instead of each building the same ones at once.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str or None
+        The working flank role or name, as :func:`contact.run_analysis` takes it.
+    options : contact.compliance.fe.FEOptions, optional
+        The FE model (default ``FEOptions()``).
+    progress : bool
+        A progress bar while unit loads are solved.
+
+    Returns
+    -------
+    dict
+        ``"pinion"``, ``"gear"`` → the coefficient datasets
+        (:func:`contact.compliance.fe.influence_coefficients`).
+
+    Raises
+    ------
+    InputError, LTCAError, ModelUnavailableError
+        As :func:`contact.compliance.fe.influence_coefficients`; an unknown flank.
+    """
+    from contact.utca.easeoff import working_flanks
+
+    flanks = dict(zip(MEMBERS, working_flanks(case, flank), strict=True))
+    return {m: influence_coefficients(case, m, flanks[m], options, progress=progress)
+            for m in MEMBERS}
 
 
 def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str, np.ndarray]:

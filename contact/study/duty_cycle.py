@@ -483,6 +483,11 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
         if not isinstance(root_stress, FEOptions):
             raise InputError("root_stress: must be True, False or a "
                              f"contact.compliance.fe.FEOptions, got {root_stress!r}")
+    if root_stress is not False:  # built once here, read from the cache by every bin
+        from contact.ltca.root_stress import prepare_coefficients
+
+        prepare_coefficients(case, run.flank, None if root_stress is True else root_stress,
+                             progress=run.progress)
     shared = DutyInputs(case, duty, run.options or LTCAOptions(), run.flank, root_stress)
     return duty_cycle_result(shared, _bins(shared, run))
 

@@ -368,6 +368,12 @@ def run_points(
     if "deviation_scale" in names and shared.deviations is None:
         raise InputError(f"deviation_scale: case {shared.case.name!r} has no [deviations] "
                          "table to scale")
+    if shared.root_stress is not False:  # built once here, read from the cache by every point
+        from contact.ltca.root_stress import prepare_coefficients
+
+        prepare_coefficients(shared.case, shared.flank,
+                             None if shared.root_stress is True else shared.root_stress,
+                             progress=progress)
     store = None
     done: set[int] = set()
     if output is not None:

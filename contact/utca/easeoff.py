@@ -124,6 +124,7 @@ __all__ = [
     "misalignment_range",
     "normal_ease_off",
     "roll_angle_surface",
+    "working_flanks",
 ]
 
 log = logging.getLogger(__name__)
@@ -154,7 +155,25 @@ EASEOFF_REASONS: dict[int, str] = {
 
 
 # --------------------------------------------------------------------------- helpers
-def _flank_names(case: Case, flank: str | None) -> tuple[str, str]:
+def working_flanks(case: Case, flank: str | None) -> tuple[str, str]:
+    """The pinion's and the gear's working flank names for a flank role or name.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str or None
+        ``"drive"`` (None), ``"coast"``, or a pinion flank name (``"concave"``/``"convex"``).
+
+    Returns
+    -------
+    (str, str)
+        The pinion flank name and its mating gear flank name (:data:`MATING_FLANK`).
+
+    Raises
+    ------
+    InputError
+        An unknown flank (the accepted names listed).
+    """
     if flank is None:
         flank = "drive"
     one_of("flank", flank, [*FLANK_ROLES, *MATING_FLANK])
@@ -216,7 +235,7 @@ def roll_angle_surface(case: Case, *, flank: str | None = None,
     InputError
         For a bad flank name or grid (and as :func:`geometry.machine.flank.flank_surface`).
     """
-    pf, _ = _flank_names(case, flank)
+    pf, _ = working_flanks(case, flank)
     kin = mesh_kinematics(case, misalignment)
     ps = flank_surface(case, "pinion", pf, nu=nu, nv=nv, u_limits=u_limits, v_limits=v_limits)
     roll, _ = action_roll_angle(kin, ps.position, ps.normal, reference=gear_reference(case, kin))
@@ -461,7 +480,7 @@ def misalignment_range(case: Case, name: str, misalignment: Misalignment, *,
 def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
               grid: dict | None, pinion_phase: float, gear_phase: float) -> EaseOff:
     """:func:`ease_off` without the check of the flanks meeting."""
-    pf, gf = _flank_names(case, flank)
+    pf, gf = working_flanks(case, flank)
     g = _grid_options(grid)
     kin = mesh_kinematics(case, misalignment, pinion_phase=pinion_phase, gear_phase=gear_phase)
     gs = gear_nodes(case, gf, g)  # the gear alone: memoised per process
