@@ -235,4 +235,22 @@ def test_plausibility_quiet_on_the_default_case_loud_at_dE_5(capsys, tmp_path):
     assert any(w.startswith("WARNING: LTE spread") for w in warnings), out
     assert out.rstrip().splitlines()[-1].startswith("WARNING: ")  # the run ends with them
     assert "plastic" in out.splitlines()[1]  # the summary's column
+    # the HTML report says the same, above its summary table; the default case's says
+    # nothing (the same sentences: plausibility_warnings of the file's /ltca)
+    from contact.plots.report import render_report
+    from geometry.core.io import read_netcdf
+
+    tree = read_netcdf(tmp_path / "de5.nc")
+    html = render_report(tree, figures=[])
+    said = plausibility_warnings(tree["ltca"].to_dataset())
+    assert said and 'id="plausibility"' in html
+    assert html.index('id="plausibility"') < html.index('id="summary-table"')
+    assert html.count("<li>", html.index('id="plausibility"'),
+                      html.index('id="summary-table"')) == len(said)
+    default = main(["run", "--torque", "50", "--rolls-per-cycle", "6", "-q", "--speed", "0",
+                    "-o", str(tmp_path / "default.nc")])
+    assert default == 0
+    capsys.readouterr()
+    assert 'id="plausibility"' not in render_report(read_netcdf(tmp_path / "default.nc"),
+                                                    figures=[])
 

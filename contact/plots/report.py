@@ -305,7 +305,9 @@ def report_context(tree: xr.DataTree,
         Keys ``case``, ``basic_data`` (:func:`contact.plots.basic_data.basic_data_rows`),
         ``provenance``, ``operating``, ``misalignment``, ``columns`` and ``summary`` (the
         table of :data:`SUMMARY_COLUMNS`), ``te_table``, ``solver``, ``absent``,
-        ``figures``, ``warnings``, ``versions``.
+        ``figures``, ``warnings`` (the efficiency stage's model-range warnings),
+        ``plausibility`` (:func:`contact.ltca.plausibility.plausibility_warnings`: the
+        causes for which the loaded contact should not be trusted), ``versions``.
 
     Raises
     ------
@@ -330,6 +332,11 @@ def report_context(tree: xr.DataTree,
             warnings = list(json.loads(fr.attrs["model_range_warnings"]))
         except ValueError:
             warnings = [str(fr.attrs["model_range_warnings"])]
+    plausibility = []
+    if lt is not None:
+        from contact.ltca.plausibility import plausibility_warnings
+
+        plausibility = plausibility_warnings(lt)
     return {
         "case": {"name": name,
                  "source": tree.attrs.get("case_source") or case.get("source", ""),
@@ -349,6 +356,7 @@ def report_context(tree: xr.DataTree,
         "absent": absent,
         "figures": figs,
         "warnings": warnings,
+        "plausibility": plausibility,
         "versions": {"file": str(tree.attrs.get("toolkit_version", "not recorded")),
                      "report": __version__},
     }
