@@ -38,7 +38,8 @@ def test_duty_cycle_command_writes_group_and_figures(tmp_path, capsys):
     plots = tmp_path / "plots"
     assert main(["duty-cycle", "--duty", str(duty), "--scheduler", "synchronous",
                  "--rolls-per-cycle", "8", "--segments", "8", "-o", str(out),
-                 "--plots", str(plots), "--no-progress", "--no-root-stress"]) == 0
+                 "--plots", str(plots), "--no-progress", "--no-root-stress",
+                 "--report", str(tmp_path / "d.html")]) == 0
     text = capsys.readouterr().out
     assert "one-bin test spectrum" in text and "pitting life" in text
     # the bending side is on by default (FE coefficients: minutes to build, so this cheap
@@ -58,3 +59,17 @@ def test_duty_cycle_command_writes_group_and_figures(tmp_path, capsys):
     assert (plots / f"{ds.attrs['case']}_duty_bins.png").stat().st_size > 0
     assert not (tmp_path / "d.nc.parts").exists()
     assert not (plots / f"{ds.attrs['case']}_duty_root_damage.png").exists()
+    # the report page: the durability table of both members, one row per bin, the two
+    # figures embedded, the bending side said to be unavailable; `ltca report` of the file
+    # draws the same page
+    html = (tmp_path / "d.html").read_text(encoding="utf-8")
+    table = html[html.index('id="durability-table"'):html.index('id="bins-table"')]
+    assert table.count("<tr><td") == 2 and "pinion" in table and "gear" in table
+    assert f"{float(ds['life'].sel(member='gear')):.4g}" in table
+    bins = html[html.index('id="bins-table"'):html.index('id="figures"')]
+    assert bins.count("<tr><td") == ds.sizes["bin"] == 1
+    assert html.count("data:image/png;base64,") == 2
+    assert "Bending side unavailable" in html
+    assert main(["report", str(out), "-o", str(tmp_path / "again.html")]) == 0
+    again = (tmp_path / "again.html").read_text(encoding="utf-8")
+    assert 'id="durability-table"' in again and "analysis report" not in again

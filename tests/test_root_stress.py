@@ -254,6 +254,13 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     assert [p.name.rsplit("_duty_", 1)[1] for p in paths] == [
         "damage.png", "bins.png", "root_damage.png"]
     assert all(p.stat().st_size > 0 for p in paths)
+    from contact.plots.duty_report import duty_report_context
+
+    ctx = duty_report_context(out, figures=False)
+    assert ctx["bending"] and "S_F [1]" in ctx["durability_columns"]
+    k = ctx["durability_columns"].index("S_F [1]")
+    assert ctx["durability"][1]["cells"][k] == \
+        f"{float(out['bending_safety_factor'].sel(member='gear')):.2f}"
 
 
 def test_bad_input_is_refused_naming_the_field():

@@ -51,6 +51,9 @@ def register(sub) -> None:
     segments_option(p)
     output_option(p, default="<case>_duty_cycle.nc", what="netCDF file with /duty_cycle")
     plots_option(p)
+    p.add_argument("--report", default=None, metavar="HTML",
+                   help="also write the duty-cycle report page (as `ltca report` of the "
+                   "output file) to HTML")
     p.add_argument("--root-stress", action=argparse.BooleanOptionalAction, default=True,
                    help="the tooth-root stress of every bin and with it the bending side "
                    "(root damage, life, bending safety factor; ISO 6336-3), on by default: "
@@ -82,6 +85,8 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"--workers: must be >= 1, got {args.workers}")
     output = default_output(args, "_duty_cycle.nc")
     check_output_file(output)
+    if args.report is not None:
+        check_output_file(args.report, option="--report")
     case = resolve_case(args.case)
     if args.duty is not None:
         duty = read_duty_cycle(args.duty)
@@ -135,4 +140,8 @@ def run(args: argparse.Namespace) -> int:
         Path(args.plots).mkdir(parents=True, exist_ok=True)
         for fig in save_duty_cycle_figures(ds, args.plots):
             print(f"wrote {fig}")
+    if args.report is not None:
+        from contact.plots.duty_report import write_duty_report
+
+        print(f"wrote {write_duty_report(ds, args.report)}")
     return 0
