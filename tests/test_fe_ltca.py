@@ -301,3 +301,90 @@ def test_fe_path_against_the_shell_on_single_tooth_loads(name, member, band):
     FE model: ~30–60 s per member the first time (PARDISO), then read from the cache."""
     ratio = _tip_peaks(name, member)
     assert np.all((ratio > band[0]) & (ratio < band[1])), ratio
+
+
+# ------------------------------------------------------------------ root stress in studies
+def _coarse_cache(tmp_path, monkeypatch):
+    """The coarse models of this module in a fresh cache under their keys; building any
+    other model fails the test."""
+    case = resolve_case(None)
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))
+    keys = []
+    for member in MEMBERS:
+        ds = _coefficients(member)
+        key = cache_key(case.member(member), ds.attrs["flank"], COARSE)
+        ds.assign_attrs(cache_key=key).to_netcdf(cache_path(key), engine="netcdf4")
+        keys.append(key)
+
+    def no_build(*args, **kwargs):
+        raise AssertionError("rebuilt instead of read from the cache")
+
+    monkeypatch.setattr("contact.compliance.fe.influence.build_influence_model", no_build)
+    return case, keys
+
+
+def test_fe_ltca_root_stress_takes_the_compliance_model(tmp_path, monkeypatch):
+    """``run_analysis(root_stress=True)`` with the FE compliance superposes the fillet
+    stress of the same FE model the compliance came from (``options.fe``), not the default
+    one: only the coarse coefficients are in the cache and none may be built. ~5 s (the
+    small LTCA once)."""
+    from contact.pipeline import run_analysis
+
+    _, keys = _coarse_cache(tmp_path / "cache", monkeypatch)
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=8, compliance="fe", fe=COARSE)
+    tree = run_analysis(None, [250.0], options=opts, root_stress=True, operating=False,
+                        geometry=False, mesh_interface=False)
+    lt = tree["ltca"].to_dataset()
+    assert lt["root_stress"].attrs["fe_cache_keys"].split() == keys
+    assert np.all(lt["root_stress_max"].values > 0)
+
+
+def test_studies_take_root_stress(tmp_path, monkeypatch):
+    """``StudyRun(root_stress=...)`` reaches every point of a sweep and of a tolerance
+    analysis: a one-point sweep's ``root_stress_max`` (point dims, torque, member) equals
+    the single analysis' at the same mounting (same inputs: rtol 1e-9, the order of sums);
+    ``sample`` hands the same switch to its points; ``ltca sweep``/``tolerance
+    --root-stress`` set it, ``--compliance`` the LTCA's model; a bad value is refused
+    naming the field. ~10 s: the small LTCA twice on the coarse FE model."""
+    import argparse
+
+    from contact.cli import build_parser
+    from contact.commands.study import _prepare
+    from contact.pipeline import run_analysis
+    from contact.study import StudyRun, sample, sweep
+
+    case, _ = _coarse_cache(tmp_path / "cache", monkeypatch)
+    de = case.misalignment.delta_E
+    grid = sweep(case, delta_E=[de], torque=250.0,
+                 run=StudyRun(options=SMALL, root_stress=COARSE, scheduler="synchronous"))
+    assert grid["root_stress_max"].dims == ("delta_E", "torque", "member")
+    single = run_analysis(case, [250.0], options=SMALL, root_stress=COARSE, operating=False,
+                          geometry=False, mesh_interface=False)["ltca"]
+    np.testing.assert_allclose(grid["root_stress_max"].isel(delta_E=0).values,
+                               single["root_stress_max"].values, rtol=1e-9)
+    seen = []
+
+    def capture(shared, points, **kw):
+        seen.append(shared.root_stress)
+        raise RuntimeError("captured")
+
+    monkeypatch.setattr("contact.study.monte_carlo.run_points", capture)
+    import scipy.stats
+
+    with pytest.raises(RuntimeError, match="captured"):
+        sample(case, {"delta_E": scipy.stats.norm(de, 0.01)}, 2,
+               run=StudyRun(options=SMALL, root_stress=COARSE))
+    assert seen == [COARSE]
+    with pytest.raises(InputError, match="root_stress"):
+        StudyRun(root_stress="yes")
+    parser = build_parser()
+    for cmd in (["sweep", "--dE", "0"], ["tolerance", "--dE", "normal:0:0.05"]):
+        args = parser.parse_args([*cmd, "--root-stress", "--compliance", "fe", "-o",
+                                  str(tmp_path / f"{cmd[0]}.nc")])
+        _, run = _prepare(args)
+        assert run.root_stress is True and run.options.compliance == "fe"
+        args = parser.parse_args([*cmd, "-o", str(tmp_path / f"{cmd[0]}.nc")])
+        _, run = _prepare(args)
+        assert run.root_stress is False and run.options.compliance == "shell"
+    assert isinstance(args, argparse.Namespace)
