@@ -9,9 +9,11 @@ FE model (docs/fe.md: the mesh whose refinement changes the mid-surface complian
 < 3 %). Printed per (case, misalignment, torque): LTE mean and peak-to-peak [µrad], the
 largest share of the gear torque one tooth pair carries over the cycle [%], the peak
 flank pressure [MPa], the loaded pattern's extent (lengthwise × profile) [mm] and its
-centre [1], for both compliances; then the time of each analysis (ease-off, UTCA and the
-LTCA of the three torques; wall and process CPU, in one process, one after the other: the
-ratio FE/shell is the number to read).
+centre [1], and the peak tooth-root stress of both members [MPa] (the default FE model's
+fillet stress of each LTCA's loads: the loads differ, the stress coefficients do not) for
+both compliances; then the time of each analysis (ease-off, UTCA, the LTCA of the three
+torques and the root stress; wall and process CPU, in one process, one after the other:
+the ratio FE/shell is the number to read).
 
 The FE coefficients are read from the disk cache (built the first time: ~0.5–3 min per
 member; their build is timed apart and not in the LTCA's time).
@@ -58,7 +60,9 @@ def _summary(case, tree):
     return {"lte_mean": lt["lte_mean"].values, "lte_pp": lt["lte_peak_to_peak"].values,
             "share": 100.0 * share, "p_flank": lt["pressure_max_flank"].values,
             "length": s["pattern_length"], "height": s["pattern_height"],
-            "cu": s["pattern_centre_u"], "cv": s["pattern_centre_v"]}
+            "cu": s["pattern_centre_u"], "cv": s["pattern_centre_v"],
+            "sigma_p": lt["root_stress_max"].sel(member="pinion").values,
+            "sigma_g": lt["root_stress_max"].sel(member="gear").values}
 
 
 def main() -> None:
@@ -84,7 +88,7 @@ def main() -> None:
                 w0, c0 = time.perf_counter(), time.process_time()
                 tree = run_analysis(base, list(TORQUES), misalignment=mis_,
                                     options=LTCAOptions(compliance=comp), operating=False,
-                                    geometry=False, mesh_interface=False)
+                                    geometry=False, mesh_interface=False, root_stress=True)
                 tm[comp] = (time.perf_counter() - w0, time.process_time() - c0)
                 res[comp] = _summary(case, tree)
                 res[comp]["certified"] = bool(np.all(tree["ltca"]["found"].values))
@@ -97,6 +101,8 @@ def main() -> None:
                                     for c in ("shell", "fe")))
                 r.append(" / ".join(f"({res[c]['cu'][it]:.2f}, {res[c]['cv'][it]:.2f})"
                                     for c in ("shell", "fe")))
+                for key in ("sigma_p", "sigma_g"):
+                    r.append(" / ".join(f"{res[c][key][it]:.0f}" for c in ("shell", "fe")))
                 rows.append(r)
             times.append([name.replace("kolivand2009_", ""), label, f"{tm['shell'][0]:.1f}",
                           f"{tm['fe'][0]:.1f}", f"{tm['shell'][1]:.1f}", f"{tm['fe'][1]:.1f}",
@@ -107,7 +113,8 @@ def main() -> None:
     print(tabulate(rows, headers=["case", "Fig.", "T_p [N·m]", "LTE mean [µrad]",
                                   "LTE p-p [µrad]", "max pair share [%]",
                                   "peak flank p [MPa]", "pattern L×H [mm]",
-                                  "pattern centre (u, v)"], tablefmt="github"))
+                                  "pattern centre (u, v)", "σ_F pinion [MPa]",
+                                  "σ_F gear [MPa]"], tablefmt="github"))
     print("\n(shell / FE in every cell)\n")
     print(tabulate(times, headers=["case", "Fig.", "shell wall [s]", "FE wall [s]",
                                    "shell CPU [s]", "FE CPU [s]", "FE/shell (CPU)",
