@@ -195,6 +195,12 @@ def test_fe_ltca_satisfies_the_contact_conditions(tmp_path, monkeypatch):
         assert abs(R @ F - p.torque) <= 1e-9 * p.torque
     assert '"compliance": "fe"' in lt.attrs["options"]
     assert lt.attrs["options"].count('"face_divisions": 4') == 1
+    # the cache files are read once per process: a second model shares the datasets
+    flanks = {"pinion": eo.pinion_flank, "gear": eo.gear_flank}
+    teeth = pair_compliance_model(case)
+    first = fe_pair_model(case, flanks, COARSE, teeth)
+    again = fe_pair_model(case, flanks, COARSE, teeth)
+    assert all(first.coefficients[m] is again.coefficients[m] for m in MEMBERS)
     change = abs(float(lt["lte_mean"][0]) / float(lt_shell["lte_mean"][0]) - 1.0)
     assert change > 0.01
 

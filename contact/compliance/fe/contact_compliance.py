@@ -55,6 +55,7 @@ fe_mesh_compliance_many   C of several roll positions, as :func:`mesh_compliance
 
 from __future__ import annotations
 
+import functools
 import logging
 import time
 from dataclasses import dataclass
@@ -64,8 +65,9 @@ import numpy as np
 import scipy.sparse as sp
 import xarray as xr
 
+from contact.compliance.fe.cache import cache_key, cache_path
 from contact.compliance.fe.influence import influence_coefficients
-from contact.compliance.fe.options import FEOptions
+from contact.compliance.fe.options import FEOptions, member_flank
 from contact.compliance.fe.superposition import locate_flank_points
 from contact.compliance.mesh import ContactSegments, PairComplianceModel
 from contact.compliance.tooth import END_TOLERANCE, shell_points_many, weber_depth
@@ -109,6 +111,38 @@ OFF_FLANK_LIMIT: dict[str, float] = {"pinion": 3.0, "gear": 3.0}
 _SIMPSON = (1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0)
 
 _MEMBERS = ("pinion", "gear")
+
+_MEMO_SIZE = 4  # coefficient files kept in memory by _read_cached (two designs' members)
+
+
+@functools.lru_cache(maxsize=_MEMO_SIZE)
+def _read_cached(path: str, mtime_ns: int, key: str) -> xr.Dataset | None:
+    """A cache file's coefficients, read once per process and file version (path and
+    modification time): a study's worker analyses many points of one design. None if the
+    file holds another key or cannot be read (then the caller goes through
+    :func:`influence_coefficients`, which rebuilds it)."""
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            ds = ds.load()
+    except (OSError, ValueError):
+        return None
+    return ds if ds.attrs.get("cache_key") == key else None
+
+
+def _member_coefficients(case, member: str, flank: str, options: FEOptions | None, *,
+                         cache: bool, cache_dir, progress: bool, solver: str) -> xr.Dataset:
+    """:func:`influence_coefficients`, with a cache file already on disk read once per
+    process (:func:`_read_cached`; the memo is the only state of this module)."""
+    opt = options if options is not None else FEOptions()
+    if cache and isinstance(opt, FEOptions):
+        key = cache_key(case.member(member), member_flank(case, member, flank), opt)
+        path = cache_path(key, cache_dir)
+        if path.exists():
+            ds = _read_cached(str(path), path.stat().st_mtime_ns, key)
+            if ds is not None:
+                return ds
+    return influence_coefficients(case, member, flank, options, cache=cache,
+                                  cache_dir=cache_dir, progress=progress, solver=solver)
 
 
 @dataclass(frozen=True, eq=False)
@@ -172,15 +206,17 @@ def fe_pair_model(case: Case, flanks: dict[str, str], options: FEOptions | None,
     Notes
     -----
     The first build of the default model costs 15–60 s per member (docs/fe.md, "Cost");
-    afterwards it is read from the disk cache (~1 s).
+    afterwards it is read from the disk cache (~1 s), once per process and file: the
+    datasets are kept in memory (the last 4 files) and shared — read-only — by the
+    analyses of the process (a study's points, a misalignment sweep).
     """
     t0 = time.perf_counter()
     coef = dict(coefficients or {})
     for name in _MEMBERS:
         if name not in coef:
-            coef[name] = influence_coefficients(case, name, flanks[name], options, cache=cache,
-                                                cache_dir=cache_dir, progress=progress,
-                                                solver=solver)
+            coef[name] = _member_coefficients(case, name, flanks[name], options, cache=cache,
+                                              cache_dir=cache_dir, progress=progress,
+                                              solver=solver)
         elif coef[name].attrs.get("flank") != flanks[name]:
             raise InputError(f"coefficients: the {name}'s are of its "
                              f"{coef[name].attrs.get('flank')} flank, the analysis loads its "
