@@ -312,7 +312,8 @@ def run_analysis(
         Add the tooth-root stress of both members to ``/ltca`` (``root_stress`` [MPa] over
         (torque, roll, member, tooth, fillet_point), ``root_stress_max`` [MPa] over
         (torque, member); :func:`contact.ltca.root_stress.root_stress`): True with the
-        default FE model, or the FE model's options. Default False: the FE influence
+        default FE model (with ``options.compliance == "fe"``: the compliance's FE model,
+        ``options.fe_options()``), or the FE model's options. Default False: the FE influence
         coefficients cost ~15–30 s per member and design the first time (then they are
         read from the cache, and the superposition adds a few % to the LTCA).
 
@@ -409,7 +410,9 @@ def run_analysis(
         from contact.ltca.root_stress import root_stress as _root_stress
 
         t0 = time.perf_counter()
-        fe_options = root_stress if isinstance(root_stress, FEOptions) else None
+        # True: the default FE model, or the compliance's own with the FE compliance
+        fe_options = root_stress if isinstance(root_stress, FEOptions) else (
+            opts.fe_options() if opts.compliance == "fe" else None)
         rs = _root_stress(c, eo, ltca_ds, fe_options, progress=progress)
         ltca_ds = ltca_ds.assign(root_stress=rs["root_stress"],
                                  root_stress_max=rs["root_stress_max"])

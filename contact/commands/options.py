@@ -338,6 +338,22 @@ def pressure_limit_options(p: argparse.ArgumentParser) -> None:
                         "none)")
 
 
+#: the LTCA's compliance models (``--compliance``; the names of
+#: :data:`contact.ltca.options.COMPLIANCE_MODELS`, repeated here so that ``ltca --help``
+#: imports no NumPy; tests/test_fe_ltca.py checks they agree)
+COMPLIANCE_CHOICES = ("shell", "fe")
+
+
+def compliance_option(p: argparse.ArgumentParser) -> None:
+    """``--compliance {shell,fe}``: the teeth's compliance model (``LTCAOptions.compliance``)."""
+    p.add_argument("--compliance", choices=COMPLIANCE_CHOICES, default=None,
+                   help="tooth compliance of the loaded TCA: shell (default; the seed's "
+                        "tapered shells on a fillet foundation) or fe (3-D FE models of the "
+                        "generated teeth, fillets and rim, docs/fe.md: the first run of a "
+                        "design builds their influence coefficients, ~0.5-3 min per member, "
+                        "then reads them from the cache); Weber's contact term in both")
+
+
 def output_option(p: argparse.ArgumentParser, *, default: str, what: str = "netCDF file",
                   metavar: str = "FILE") -> None:
     """``-o/--output FILE``; ``default`` describes the name used without it."""

@@ -12,6 +12,7 @@ from contact.commands.options import (
     case_and_misalignment,
     case_argument,
     checked_outputs,
+    compliance_option,
     flank_option,
     misalignment_from_args,
     misalignment_options,
@@ -57,6 +58,7 @@ def register(sub) -> None:
     rolls_per_cycle_option(p)
     segments_option(p)
     pressure_limit_options(p)
+    compliance_option(p)
     dev = p.add_mutually_exclusive_group()
     dev.add_argument(
         "--deviations",
@@ -149,12 +151,12 @@ def deviation_te_rows(tree) -> list[tuple[str, ...]]:
 
 def ltca_options(args: argparse.Namespace, **defaults):
     """LTCAOptions of ``--rolls-per-cycle``, ``--segments``, ``--solver``,
-    ``--edge-pressure-limit``, ``--flank-pressure-limit`` (those given; ``none`` turns a
-    limit off)."""
+    ``--edge-pressure-limit``, ``--flank-pressure-limit``, ``--compliance`` (those given;
+    ``none`` turns a limit off)."""
     from contact.ltca import LTCAOptions
 
     kw = dict(defaults)
-    for name in ("rolls_per_cycle", "segments", "solver"):
+    for name in ("rolls_per_cycle", "segments", "solver", "compliance"):
         value = getattr(args, name, None)
         if value is not None:
             kw[name] = value
@@ -199,6 +201,7 @@ def run(args: argparse.Namespace) -> int:
         f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
         f"ΔG {mis.delta_G:g} mm, ΔΣ {math.degrees(mis.delta_Sigma):g} deg; "
         f"solver {lt.attrs['solver']}"
+        + (f"; tooth compliance {opts.compliance}" if opts.compliance != "shell" else "")
     )
     fr = tree["friction"].to_dataset() if "friction" in tree.children else None
     rows = []

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 
 from contact.commands.options import (
     case_argument,
+    compliance_option,
     default_output,
     flank_option,
     misalignment_options,
@@ -78,6 +79,7 @@ def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
     solver_option(p)
     flank_option(p)
     rolls_per_cycle_option(p)
+    compliance_option(p)
     output_option(p, default="<case>_<study>.nc; finished points stream to FILE.parts/ and "
                   "a killed study started again resumes")
     plots_option(p)
@@ -87,6 +89,14 @@ def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
     p.add_argument("--workers", type=int, default=None, metavar="N",
                    help="processes of the local cluster (default one per core)")
     progress_option(p)
+
+
+def _root_stress_option(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--root-stress", action="store_true",
+                   help="also the peak tooth-root stress of both members at every point "
+                   "(root_stress_max) from FE influence coefficients (docs/fe.md): built once "
+                   "per design, ~0.5-3 min per member, then read from the cache by every "
+                   "worker")
 
 
 def register(sub) -> None:
@@ -101,6 +111,7 @@ def register(sub) -> None:
                          "-0.2:0.2:21")
     p.add_argument("--deviation-scale", metavar="RANGE",
                    help="factors on the case's [deviations] (0 theoretical, 1 measured)")
+    _root_stress_option(p)
     p.set_defaults(func=sweep_command, study="sweep")
 
     t = sub.add_parser(
@@ -116,6 +127,7 @@ def register(sub) -> None:
     t.add_argument("-n", type=int, default=256, help="number of draws (default %(default)s)")
     t.add_argument("--method", choices=["sobol", "lhs", "random"], default="sobol")
     t.add_argument("--seed", type=int, default=0, help="random seed (default %(default)s)")
+    _root_stress_option(t)
     t.set_defaults(func=tolerance_command, study="tolerance")
 
     v = sub.add_parser(
@@ -158,9 +170,12 @@ def _prepare(args: argparse.Namespace) -> tuple:
         kw["solver"] = args.solver
     if args.rolls_per_cycle is not None:
         kw["rolls_per_cycle"] = args.rolls_per_cycle
+    if args.compliance is not None:
+        kw["compliance"] = args.compliance
     run = StudyRun(options=LTCAOptions(**kw), flank=args.flank, output=out,
                    scheduler=args.scheduler, n_workers=args.workers,
-                   progress=not args.no_progress)
+                   progress=not args.no_progress,
+                   root_stress=bool(getattr(args, "root_stress", False)))
     return case, run
 
 
@@ -204,8 +219,28 @@ def _ranges_table(ds) -> str:
             if x.size:
                 rows.append((f"{t:g}", n, units, f"{x.min():.4g}",
                              f"{np.median(x):.4g}", f"{x.max():.4g}"))
+        for m, x in _root_stress_values(ds, t):
+            rows.append((f"{t:g}", f"root_stress_max {m}", "MPa", f"{x.min():.4g}",
+                         f"{np.median(x):.4g}", f"{x.max():.4g}"))
     return tabulate(rows, headers=("T_p [N m]", "summary", "units", "min", "median", "max"),
                     tablefmt="github")
+
+
+def _root_stress_values(ds, torque: float) -> list:
+    """(member, finite peak root stresses [MPa] of the points that did not fail) at one
+    torque; none without ``root_stress_max``."""
+    import numpy as np
+
+    if "root_stress_max" not in ds:
+        return []
+    ok = ds["status"] != 2
+    out = []
+    for m in ds["member"].values:
+        x = ds["root_stress_max"].sel(torque=torque, member=m).where(ok).values.ravel()
+        x = x[np.isfinite(x)]
+        if x.size:
+            out.append((str(m), x))
+    return out
 
 
 def _status_line(ds) -> str:
@@ -273,6 +308,10 @@ def tolerance_command(args: argparse.Namespace) -> int:
                 p5, p50, p95 = np.percentile(x, (5, 50, 95))
                 rows.append((f"{t:g}", n, units, f"{p5:.4g}",
                              f"{p50:.4g}", f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
+        for m, x in _root_stress_values(ds, t):
+            p5, p50, p95 = np.percentile(x, (5, 50, 95))
+            rows.append((f"{t:g}", f"root_stress_max {m}", "MPa", f"{p5:.4g}", f"{p50:.4g}",
+                         f"{p95:.4g}", f"{x.mean():.4g}", f"{x.std():.3g}"))
     print(tabulate(rows, headers=("T_p [N m]", "summary", "units", "P5", "P50", "P95", "mean",
                                   "std"), tablefmt="github"))
     if ok.sum() > len(dists) + 2:

@@ -12,7 +12,9 @@ solves them (:mod:`contact.qp`):
   :mod:`contact.ltca.curvature` (R_eq) and :mod:`contact.ltca.edges` (the flank boundary
   as edge contact);
 * :mod:`contact.ltca.screening` — which segments a roll's problem must take;
-* :mod:`contact.ltca.pool` — their structural compliance, assembled once per roll;
+* :mod:`contact.ltca.pool` — their structural compliance, assembled once per roll, by the
+  compliance model the options name (the registry ``COMPLIANCE_ASSEMBLERS``: the shells,
+  or the FE influence coefficients);
 * :mod:`contact.ltca.plastic` — the elastic–perfectly-plastic segments' pressure and
   force limits (the bound F ≤ F_max of the contact QP);
 * :mod:`contact.ltca.weber` — one roll's problem with Weber's compliance iterated

@@ -3,6 +3,7 @@
 Public functions
 ----------------
 LTCAOptions      frozen dataclass of the settings, validated on construction
+COMPLIANCE_MODELS  the tooth compliance models the LTCA can assemble (name → what it is)
 LTCASetup        what one analysis is run on: case, ease-off, options, torques, rolls
 edge_radii       the (pinion, gear) edge rounding radii an analysis uses
 json_options     the options as JSON text (netCDF-safe)
@@ -25,9 +26,20 @@ from geometry.core.materials import CONTACT_PRESSURE_LIMITS
 from geometry.core.validation import integer, one_of, positive, real
 
 if TYPE_CHECKING:
+    from contact.compliance.fe import FEOptions
     from geometry.case import Case
 
-__all__ = ["LTCAOptions", "LTCASetup", "edge_radii", "json_options"]
+__all__ = ["COMPLIANCE_MODELS", "LTCAOptions", "LTCASetup", "edge_radii", "json_options"]
+
+#: the tooth compliance models of the LTCA (``LTCAOptions.compliance``); each is assembled
+#: by its entry of :data:`contact.ltca.pool.COMPLIANCE_ASSEMBLERS`, and both add Weber's
+#: contact term (:mod:`contact.ltca.weber`)
+COMPLIANCE_MODELS: dict[str, str] = {
+    "shell": "tapered-shell Rayleigh–Ritz teeth (seed Eq. 3.1–3.11) on Sainsot's fillet "
+             "foundation (contact.compliance.mesh)",
+    "fe": "3-D FE models of the generated teeth, fillets and rim: the tooth mid-surface's "
+          "displacement from the influence coefficients (contact.compliance.fe)",
+}
 
 
 @dataclass(frozen=True)
@@ -95,7 +107,18 @@ class LTCAOptions:
     youngs_modulus, poisson_ratio : float — [MPa], [1]
         Steel for both members (default 206 000 MPa, 0.3).
     theory, n_height, n_face
-        Shell-model settings (:func:`contact.compliance.pair_compliance_model`).
+        Shell-model settings (:func:`contact.compliance.pair_compliance_model`); with
+        ``compliance="fe"`` the shell tooth's measurement still gives Weber's depths.
+    compliance : str
+        The teeth's bending, shear and base compliance, a name of
+        :data:`COMPLIANCE_MODELS`: ``"shell"`` (default; the seed's model) or ``"fe"``
+        (the FE influence coefficients of both members, built once per member and design
+        and then read from the disk cache: docs/fe.md). Weber's contact term is the same
+        in both.
+    fe : contact.compliance.fe.FEOptions or None
+        The FE model of ``compliance="fe"`` (default None: ``FEOptions()`` with this
+        analysis' material); its material must be the analysis' (``youngs_modulus``,
+        ``poisson_ratio``). Refused with the shell compliance (it would be unused).
     """
 
     cycles: int = 2
@@ -117,6 +140,8 @@ class LTCAOptions:
     theory: str = "seed"
     n_height: int = 6
     n_face: int = 21
+    compliance: str = "shell"
+    fe: FEOptions | None = None
 
     def __post_init__(self) -> None:
         for name, lo, hi in (("cycles", 1, 20), ("rolls_per_cycle", 4, 400),
@@ -142,6 +167,34 @@ class LTCAOptions:
         positive("youngs_modulus", self.youngs_modulus, "MPa")
         real("poisson_ratio", self.poisson_ratio, unit="1", low=0.0, high=0.5, high_open=True)
         get_backend(self.solver)
+        one_of("compliance", self.compliance, tuple(COMPLIANCE_MODELS))
+        if self.fe is not None:
+            self._check_fe()
+
+    def _check_fe(self) -> None:
+        from contact.compliance.fe import FEOptions
+
+        if not isinstance(self.fe, FEOptions):
+            raise InputError(f"fe: must be a contact.compliance.fe.FEOptions or None, got a "
+                             f"{type(self.fe).__name__}")
+        if self.compliance != "fe":
+            raise InputError(f"fe: FE options are used only with compliance='fe', got "
+                             f"compliance={self.compliance!r}")
+        if (self.fe.youngs_modulus, self.fe.poisson_ratio) != (self.youngs_modulus,
+                                                                self.poisson_ratio):
+            raise InputError(
+                f"fe: the FE model's material (E {self.fe.youngs_modulus:g} MPa, ν "
+                f"{self.fe.poisson_ratio:g}) must be the analysis' (youngs_modulus "
+                f"{self.youngs_modulus:g} MPa, poisson_ratio {self.poisson_ratio:g})")
+
+    def fe_options(self) -> FEOptions:
+        """The FE model of ``compliance="fe"``: ``fe``, or ``FEOptions()`` with this
+        analysis' material."""
+        from contact.compliance.fe import FEOptions
+
+        if self.fe is not None:
+            return self.fe
+        return FEOptions(youngs_modulus=self.youngs_modulus, poisson_ratio=self.poisson_ratio)
 
 
 @dataclass(frozen=True, eq=False)
@@ -186,5 +239,16 @@ def edge_radii(case, opts: LTCAOptions) -> tuple[float, float]:
 
 
 def json_options(opts: LTCAOptions) -> str:
-    """The options as JSON text (netCDF-safe)."""
-    return json.dumps(dataclasses.asdict(opts), sort_keys=True)
+    """The options as JSON text (netCDF-safe).
+
+    ``compliance`` and ``fe`` are written only with the FE compliance (an analysis with
+    the default shell compliance writes the same text as before the FE compliance
+    existed, so its files, the golden file among them, are unchanged); ``fe`` as the dict
+    of the FE options used (:meth:`LTCAOptions.fe_options`).
+    """
+    d = {f.name: getattr(opts, f.name) for f in dataclasses.fields(opts)}
+    if opts.compliance == "fe":
+        d["fe"] = opts.fe_options().as_dict()
+    else:
+        del d["compliance"], d["fe"]
+    return json.dumps(d, sort_keys=True)

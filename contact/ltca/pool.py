@@ -7,21 +7,83 @@ takes the sub-matrix of its selection. Weber's contact compliance, which depends
 load, is left out here and added by the Weber iteration (:mod:`contact.ltca.weber`); the
 depths it needs are kept.
 
+The structural compliance is one of the models of
+:data:`contact.ltca.options.COMPLIANCE_MODELS`, chosen by ``LTCAOptions.compliance`` through
+the registry :data:`COMPLIANCE_ASSEMBLERS` (name → a function that prepares the model once
+per analysis and returns the batch assembler):
+
+* ``"shell"`` — both members' tapered shells and Sainsot foundations
+  (:func:`contact.compliance.mesh.mesh_compliance_many`); block diagonal by tooth pair;
+* ``"fe"`` — both members' FE influence coefficients, the tooth mid-surface's displacement
+  (bending, shear, fillets, rim down to the support) interpolated to the segments, the
+  neighbouring teeth coupled as the FE model has them
+  (:func:`contact.compliance.fe.contact_compliance.fe_mesh_compliance_many`; it replaces
+  the shells *and* the foundations). Its coupling between neighbouring teeth has small
+  negative entries (an unloaded neighbour moves away, ≤ 9 % of the diagonal), which the
+  screening's bound for segments outside the pool (s ≥ R Θ) neglects: ~1 µm at 500 N·m
+  against the pool's generous limit of tenths of a millimetre (docs/fe.md).
+
+Both return the total with Weber's term, which the pool takes out again (the iteration
+adds it at the loads), and the same Weber depths.
+
 Public functions
 ----------------
-CompliancePool   the pool of every computed roll: masks, structural compliance, depths
+CompliancePool          the pool of every computed roll: masks, structural compliance, depths
+COMPLIANCE_ASSEMBLERS   compliance model name → preparation of its batch assembler
 """
 
 from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
 from contact.compliance.mesh import ContactSegments, mesh_compliance_many, pair_compliance_model
 from contact.ltca.options import LTCAOptions
 from contact.ltca.segments import Segments
+from contact.utca import EaseOff
 from geometry.core.errors import InputError
 
-__all__ = ["CompliancePool"]
+__all__ = ["COMPLIANCE_ASSEMBLERS", "CompliancePool"]
+
+#: a batch assembler: the segments of several rolls → one (C with Weber [mm/N], info) each
+Assembler = Callable[[list[ContactSegments]], list[tuple[np.ndarray, dict[str, Any]]]]
+
+
+def _shell_model(case, options: LTCAOptions):
+    material = (options.youngs_modulus, options.poisson_ratio)
+    return pair_compliance_model(case, theory=options.theory, n_height=options.n_height,
+                                 n_face=options.n_face, pinion_material=material,
+                                 gear_material=material)
+
+
+def _shell_assembler(case, easeoff: EaseOff | None, options: LTCAOptions) -> Assembler:
+    """The shell path: shells and foundations of both members (memoised per case)."""
+    return functools.partial(mesh_compliance_many, case, model=_shell_model(case, options))
+
+
+def _fe_assembler(case, easeoff: EaseOff | None, options: LTCAOptions) -> Assembler:
+    """The FE path: both members' influence coefficients of the analysed flanks (from the
+    disk cache, built the first time), the shell tooth measurement for Weber's depths."""
+    from contact.compliance.fe.contact_compliance import fe_mesh_compliance_many, fe_pair_model
+
+    if easeoff is None:
+        raise InputError("easeoff: the FE compliance needs the analysis' ease-off (its "
+                         "working flanks)")
+    model = fe_pair_model(case, {"pinion": easeoff.pinion_flank, "gear": easeoff.gear_flank},
+                          options.fe_options(), _shell_model(case, options))
+    return functools.partial(fe_mesh_compliance_many, case, model=model)
+
+
+#: compliance model name (:data:`contact.ltca.options.COMPLIANCE_MODELS`) → a function
+#: (case, ease-off, options) that prepares the model once per analysis and returns its
+#: batch assembler
+COMPLIANCE_ASSEMBLERS: dict[str, Callable[..., Assembler]] = {
+    "shell": _shell_assembler,
+    "fe": _fe_assembler,
+}
 
 
 class CompliancePool:
@@ -33,27 +95,29 @@ class CompliancePool:
     seg : Segments
         The analysis' segments (J, K, S).
     options : LTCAOptions
-        Shell model (``theory``, ``n_height``, ``n_face``), materials, the pairs and the
-        fixed separation limit (named in the error when it takes in segments off the
-        mating tooth).
+        The compliance model (``compliance``; the shell's ``theory``, ``n_height``,
+        ``n_face``; the FE model ``fe``), materials, the pairs and the fixed separation
+        limit (named in the error when it takes in segments off the mating tooth).
+    easeoff : contact.utca.EaseOff, optional
+        The analysis' ease-off: its working flanks choose the FE coefficients (needed
+        with ``compliance="fe"``).
 
     Attributes
     ----------
     time : ndarray (J,) — [s]
         Compliance assembly time per roll.
     asymmetry : float — [1]
-        Largest relative asymmetry ‖C − Cᵀ‖_F/‖C‖_F of the shell blocks assembled (they
-        are symmetrised; above :data:`contact.errors.ASYMMETRY_LIMIT` they are refused).
+        Largest relative asymmetry ‖C − Cᵀ‖_F/‖C‖_F of the shell blocks (or the members'
+        FE matrices) assembled (they are symmetrised; above
+        :data:`contact.errors.ASYMMETRY_LIMIT` shell blocks are refused).
     """
 
-    def __init__(self, case, seg: Segments, options: LTCAOptions):
+    def __init__(self, case, seg: Segments, options: LTCAOptions,
+                 easeoff: EaseOff | None = None):
         self.case = case
         self.seg = seg
         self.options = options
-        material = (options.youngs_modulus, options.poisson_ratio)
-        self.model = pair_compliance_model(
-            case, theory=options.theory, n_height=options.n_height, n_face=options.n_face,
-            pinion_material=material, gear_material=material)
+        self._assembler = COMPLIANCE_ASSEMBLERS[options.compliance](case, easeoff, options)
         self._masks: dict[int, np.ndarray] = {}  # (K, S) the segments assembled
         self._structural: dict[int, np.ndarray] = {}  # (P, P) [mm/N] without Weber
         self._depth: dict[int, np.ndarray] = {}  # (P, 2) [mm] Weber's depths
@@ -98,7 +162,7 @@ class CompliancePool:
             ))
         fixed = self.options.separation_limit
         try:
-            mats = mesh_compliance_many(self.case, batch, model=self.model)
+            mats = self._assembler(batch)
         except InputError as exc:
             if fixed is None:
                 raise

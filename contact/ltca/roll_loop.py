@@ -132,7 +132,7 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
     J, K, S = seg.shape
     screening = Screening.of(seg, float(torques.max()), setup.easeoff.ratio,
                              opts.separation_limit)
-    an = _Analysis(setup, seg, screening, CompliancePool(setup.case, seg, opts),
+    an = _Analysis(setup, seg, screening, CompliancePool(setup.case, seg, opts, setup.easeoff),
                    RollResults.empty(torques.size, J, K, S),
                    contact_modulus(opts.youngs_modulus, opts.poisson_ratio,
                                    opts.youngs_modulus, opts.poisson_ratio),

@@ -37,7 +37,8 @@ import numpy as np
 import scipy.sparse as sp
 import xarray as xr
 
-from contact.compliance.fe import FEOptions, influence_coefficients, locate_flank_points
+from contact.compliance.fe import FEOptions, locate_flank_points
+from contact.compliance.fe.contact_compliance import shared_coefficients
 from contact.utca import EaseOff
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
@@ -270,9 +271,10 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
     coef = dict(coefficients or {})
     for name in MEMBERS:
         if name not in coef:
-            coef[name] = influence_coefficients(case, name, flanks[name], options, cache=cache,
-                                                cache_dir=cache_dir, progress=progress,
-                                                solver=solver)
+            # read once per process (a study's worker, a duty cycle's bins)
+            coef[name] = shared_coefficients(case, name, flanks[name], options, cache=cache,
+                                             cache_dir=cache_dir, progress=progress,
+                                             solver=solver)
         elif coef[name].attrs.get("flank") != flanks[name]:
             raise InputError(f"coefficients: the {name}'s are of its "
                              f"{coef[name].attrs.get('flank')} flank, the analysis loads "

@@ -53,6 +53,7 @@ def study_inputs(
     options: LTCAOptions | None = None,
     flank: str | None = None,
     deviations: bool = True,
+    root_stress: Any = False,
 ) -> StudyInputs:
     """The inputs every point of a study of ``case`` shares.
 
@@ -73,6 +74,8 @@ def study_inputs(
     deviations : bool
         Use the case's ``[deviations]`` (read here, once) — needed by a
         ``deviation_scale`` dimension; False: theoretical flanks.
+    root_stress : bool or contact.compliance.fe.FEOptions
+        :attr:`StudyInputs.root_stress` (default False).
 
     Returns
     -------
@@ -102,7 +105,7 @@ def study_inputs(
     devs = resolve_deviations(c, None) if deviations else None
     return StudyInputs(case=c, torque=tuple(float(t) for t in torques), speed=speeds,
                        operating=op, options=options or LTCAOptions(), flank=flank,
-                       deviations=devs)
+                       deviations=devs, root_stress=root_stress)
 
 
 def sweep(
@@ -174,7 +177,7 @@ def sweep(
         raise InputError("sweep: give at least one of delta_E, delta_P, delta_G, "
                          "delta_Sigma, deviation_scale")
     shared = study_inputs(case, torque, speed, operating=run.operating, options=run.options,
-                          flank=run.flank)
+                          flank=run.flank, root_stress=run.root_stress)
     names = list(axes)
     points = [dict(zip(names, map(float, combo), strict=True))
               for combo in itertools.product(*(axes[n] for n in names))]

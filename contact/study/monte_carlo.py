@@ -196,7 +196,7 @@ def sample(
     run = study_run(run, legacy, "sample")
     draws = draw_points(distributions, n, method=method, seed=seed)
     shared = study_inputs(case, torque, speed, operating=run.operating, options=run.options,
-                          flank=run.flank)
+                          flank=run.flank, root_stress=run.root_stress)
     names = list(draws)
     points = [{k: float(draws[k][i]) for k in names} for i in range(int(n))]
     flat = run_points(shared, points, names=names, output=run.output, scheduler=run.scheduler,

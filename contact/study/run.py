@@ -50,11 +50,16 @@ class StudyRun:
         Workers of the LocalCluster (default one per core).
     progress : bool
         A progress bar over the points.
+    root_stress : bool or contact.compliance.fe.FEOptions
+        Also the peak tooth-root stress of both members at every point
+        (``root_stress_max`` over (point…, torque, member) [MPa]; :func:`contact.run_analysis`'s
+        ``root_stress``: True the default FE model — with ``options.compliance == "fe"``
+        that of the compliance —, or an FEOptions). Default False.
 
     Raises
     ------
     InputError
-        ``options`` or ``operating`` of the wrong type (named).
+        ``options``, ``operating`` or ``root_stress`` of the wrong type (named).
     """
 
     options: LTCAOptions | None = None
@@ -64,6 +69,7 @@ class StudyRun:
     scheduler: Any = None
     n_workers: int | None = None
     progress: bool = False
+    root_stress: Any = False
 
     def __post_init__(self) -> None:
         if self.options is not None and not isinstance(self.options, LTCAOptions):
@@ -72,6 +78,12 @@ class StudyRun:
         if self.operating is not None and not isinstance(self.operating, OperatingConditions):
             raise InputError("operating: must be a friction.operating.OperatingConditions or "
                              f"None, got {type(self.operating).__name__}")
+        if not isinstance(self.root_stress, bool):
+            from contact.compliance.fe import FEOptions
+
+            if not isinstance(self.root_stress, FEOptions):
+                raise InputError("root_stress: must be True, False or a "
+                                 f"contact.compliance.fe.FEOptions, got {self.root_stress!r}")
 
 
 #: the keywords the entry points took before :class:`StudyRun`

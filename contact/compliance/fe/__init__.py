@@ -14,6 +14,9 @@ solved with scikit-fem and a sparse direct solver (docs/fe.md):
   flank, stress in the fillets), cached on disk (:mod:`~contact.compliance.fe.cache`);
 * :mod:`~contact.compliance.fe.superposition` — the compliance matrix between contact
   points and the fillet stress of contact forces, from the coefficients;
+* :mod:`~contact.compliance.fe.contact_compliance` — the contact compliance of a mesh's
+  segments from both members' coefficients plus Weber's term: the FE-compliance LTCA
+  (``LTCAOptions(compliance="fe")``; imported by its module path, not re-exported here);
 * :mod:`~contact.compliance.fe.export` — the solid's boundary as STL (STEP with gmsh).
 """
 
