@@ -170,7 +170,7 @@ def run_friction_study(
     pts = check_design(design)
     n = next(iter(pts.values())).size
     points = [{k: float(pts[k][i]) for k in DESIGN_INPUTS} for i in range(n)]
-    design_attrs = dict(design_attrs or {})
+    provenance = study_provenance(settings, dict(design_attrs or {}))  # the code that runs
     store = None
     done: set[int] = set()
     if output is not None:
@@ -211,7 +211,7 @@ def run_friction_study(
     ds.attrs = {
         "title": "hypoid-ltca friction study: mixed-EHL line contacts over a design "
                  "(seed section 5.2.3, Table 5.1)",
-        **study_provenance(settings, design_attrs),
+        **provenance,
         "wall_time": float(time.perf_counter() - t0),
         "wall_time_units": "s",
         "points_resumed": len(done),
