@@ -38,6 +38,7 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "friction-study": ("ltca friction-study -n 16 --nodes 128 -o friction_study.nc",
                        "ltca friction-study --design factorial --scheduler tcp://host:8786 "
                        "-o table_5_1.nc"),
+    "friction-fit": ("ltca friction-fit friction_study.nc -o kolivand2009_fit.toml",),
     "duty-cycle": ("ltca duty-cycle -o duty.nc --plots duty_plots   # illustrative spectrum",
                    "ltca duty-cycle kolivand2009_fm_11x41_reference --duty spectrum.toml "
                    "--root-stress -o duty.nc"),
