@@ -21,7 +21,9 @@ def register(sub) -> None:
         "study's provenance. Use it as the model's coefficients: "
         "friction.kolivand2009.kolivand2009(..., coefficients=FILE) (docs/friction.md).",
     )
-    p.add_argument("study", metavar="STUDY.nc", help="friction study to fit")
+    p.add_argument("study", metavar="STUDY.nc", nargs="+",
+                   help="friction study (or studies of one oil and solver setting, e.g. a "
+                   "Sobol design and its --skip continuation) to fit")
     p.add_argument("--held-out", default=None, metavar="FILE.nc",
                    help="a second friction study (other design seed) used only to measure "
                    "the fit's error")
@@ -35,14 +37,14 @@ def register(sub) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from contact.commands.output_paths import check_output_file
-    from friction.study.fit import fit_kolivand2009, write_fit
+    from friction.study.fit import combine_studies, fit_kolivand2009, write_fit
     from geometry.core.errors import InputError
     from geometry.core.io import read_netcdf
 
     check_output_file(args.output)
     if not str(args.output).endswith(".toml"):
         raise InputError(f"-o: the coefficient file must end in .toml, got {args.output!r}")
-    study = read_netcdf(args.study, tree=False)
+    study = combine_studies([read_netcdf(f, tree=False) for f in args.study])
     held = read_netcdf(args.held_out, tree=False) if args.held_out else None
     fit = fit_kolivand2009(study, heldout=held, structure=args.structure)
     path = write_fit(fit, args.output)

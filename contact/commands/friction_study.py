@@ -40,6 +40,9 @@ def register(sub) -> None:
     p.add_argument("--max-iterations", type=int, default=60, metavar="N",
                    help="Newton iterations per roughness step before a point counts as not "
                    "converged (default %(default)s)")
+    p.add_argument("--realisations", type=int, default=1, metavar="K",
+                   help="roughness realisations per condition, their converged results "
+                   "averaged (default %(default)s)")
     p.add_argument("--lubricant", default="75W90", metavar="NAME",
                    help="bundled oil name (default %(default)s)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
@@ -77,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
                  "box": "seed Table 5.1; R, u_e, SR log-uniform"}
     attrs["points"] = int(next(iter(design.values())).size)
     settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
-                             lubricant=args.lubricant)
+                             lubricant=args.lubricant, realisations=args.realisations)
     ds = run_friction_study(design, settings, design_attrs=attrs, output=args.output,
                             scheduler=args.scheduler, n_workers=args.workers,
                             progress=not args.no_progress)

@@ -44,7 +44,8 @@ from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
 from geometry.core.toml_files import dump_toml
 
-__all__ = ["DEFAULT_FEATURES", "fit_kolivand2009", "fit_statistics", "study_inputs",
+__all__ = ["DEFAULT_FEATURES", "combine_studies", "fit_kolivand2009", "fit_statistics",
+           "study_inputs",
            "write_fit"]
 
 Array = NDArray[np.float64]
@@ -55,6 +56,50 @@ DEFAULT_FEATURES: tuple[str, ...] = ("1", "ln_lambda", "ln_lambda^2", "ln_SR", "
                                      "ln_U", "ln_G", "ln_H", "ln_Seq/Sc", "ln_SR*ln_lambda")
 
 _REGIMES = ("boundary_mixed", "mixed", "full_film")
+
+
+def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
+    """Several friction studies of one oil and solver settings as one (e.g. a Sobol design
+    and its continuation).
+
+    Parameters
+    ----------
+    studies : sequence of xarray.Dataset
+        Friction studies (``ltca friction-study``) with equal ``solver_*`` attributes.
+
+    Returns
+    -------
+    xarray.Dataset
+        Their points in order, renumbered 0 … n−1; the first study's attributes, with
+        ``design_*`` and ``wall_time`` of every study joined (``"; "``) and summed.
+
+    Raises
+    ------
+    InputError
+        No studies, or studies of different solver settings or oils (the attribute named).
+    """
+    if not studies:
+        raise InputError("studies: at least one friction study is needed")
+    first = studies[0]
+    for k, v in first.attrs.items():
+        if k.startswith("solver_") and k != "solver_commit":
+            for other in studies[1:]:
+                if other.attrs.get(k) != v:
+                    raise InputError(f"studies: {k} differs ({v!r} and {other.attrs.get(k)!r}); "
+                                     "only studies of one oil and one solver setting combine")
+    if len(studies) == 1:
+        return first
+    ds = xr.concat(list(studies), dim="point", combine_attrs="override")
+    ds = ds.assign_coords(point=("point", np.arange(ds.sizes["point"]), ds["point"].attrs))
+    attrs = dict(first.attrs)
+    for k in {k for st in studies for k in st.attrs if k.startswith("design_")}:
+        attrs[k] = "; ".join(str(st.attrs.get(k, "")) for st in studies)
+    attrs["solver_commit"] = "; ".join(sorted({str(st.attrs.get("solver_commit", ""))
+                                               for st in studies}))
+    attrs["wall_time"] = float(sum(float(st.attrs.get("wall_time", 0.0)) for st in studies))
+    attrs["points_converged"] = int(np.count_nonzero(ds["status"].values == 0))
+    ds.attrs = attrs
+    return ds
 
 
 def study_inputs(study: xr.Dataset, *, converged: bool = True) -> dict[str, Array]:
