@@ -163,3 +163,32 @@ def test_killed_study_resumes_with_the_missing_points_only(tmp_path, monkeypatch
     other = {**design, "temperature": design["temperature"] + 10.0}
     with pytest.raises(InputError, match="different study"):
         run_friction_study(other, SETTINGS, output=out, scheduler="synchronous")
+
+
+# ----------------------------------------------------------------------------- commands
+def test_friction_study_and_fit_commands(tmp_path, monkeypatch, capsys):
+    """``ltca friction-study`` (4 Sobol conditions, 64 nodes, this process: ~1 s) writes
+    the study file with its provenance; ``ltca friction-fit`` fits the committed study and
+    writes a coefficient file the model reads (~2 s)."""
+    from contact.cli import main
+    from friction.kolivand2009 import DATA_DIR, load_kolivand2009_fit
+    from geometry.core.io import read_netcdf
+
+    monkeypatch.chdir(tmp_path)
+    assert main(["friction-study", "-n", "4", "--nodes", "64", "--scheduler", "synchronous",
+                 "-o", "fs.nc", "--no-progress"]) == 0
+    assert "4 conditions" in capsys.readouterr().out
+    ds = read_netcdf(tmp_path / "fs.nc", tree=False)
+    assert ds.sizes["point"] == 4 and ds.attrs["design_method"] == "sobol"
+    assert ds.attrs["solver_nodes"] == 64 and "solver_commit" in ds.attrs
+    assert not ResultStore.parts_dir(tmp_path / "fs.nc").exists()
+    assert main(["friction-fit", str(DATA_DIR / "friction_study_75W90.nc"), "--held-out",
+                 str(DATA_DIR / "friction_study_75W90_heldout.nc"), "-o", "k.toml"]) == 0
+    assert "held out" in capsys.readouterr().out
+    fit = load_kolivand2009_fit(tmp_path / "k.toml")
+    # the bundled file is this fit of the committed data (optimiser tolerance: 1e-6)
+    np.testing.assert_allclose(np.asarray(fit.coefficients),
+                               np.asarray(load_kolivand2009_fit("75W90").coefficients),
+                               rtol=1e-6, atol=1e-8)
+    assert main(["friction-fit", str(DATA_DIR / "friction_study_75W90.nc"), "-o", "k.txt"]) != 0
+    assert "must end in .toml" in capsys.readouterr().err

@@ -40,6 +40,7 @@ from friction.kolivand2009 import (
     kolivand2009,
 )
 from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
+from friction.study.design import TABLE_5_1_RANGE
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
 from geometry.core.toml_files import dump_toml
@@ -216,6 +217,7 @@ def fit_kolivand2009(
     continuity_weight: float = 10.0,
     ridge: float = 1e-3,
     structure: str = "split",
+    box: Mapping[str, tuple[float, float, bool]] | None = TABLE_5_1_RANGE,
     provenance: Mapping[str, Any] | None = None,
 ) -> Kolivand2009Fit:
     """Fit the ``kolivand2009`` model to a friction study's converged points.
@@ -240,6 +242,11 @@ def fit_kolivand2009(
         :data:`~friction.kolivand2009.BOUNDARY_FEATURES`, μ_b the study oil's boundary
         friction (the solver's), fitted to ln μ by ``scipy.optimize.least_squares``
         started from the ``regimes`` fit.
+    box : mapping or None
+        The design's box (:data:`friction.study.design.TABLE_5_1_RANGE`, the default):
+        the fitted range of p_h, R, u_e, SR and Rq, and of η₀ (the oil's at the box's
+        temperatures); None: the extremes of the study's points. λ's range is always that
+        of the converged points.
     provenance : mapping, optional
         Stored with the fit (default the study's provenance attributes).
 
@@ -330,6 +337,14 @@ def fit_kolivand2009(
         b[j0] = bz[j0] - float(np.sum(bz * mean / scale))
         coefficients.append(tuple(float(v) for v in b))
     all_inputs = study_inputs(study, converged=False)
+    if box is not None:
+        oil = load_lubricant(str(study.attrs.get("solver_lubricant", "75W90")))
+        t_box = np.array(box["temperature"][:2])
+        all_inputs = dict(all_inputs)
+        for name in ("hertz_pressure", "radius", "entraining_velocity", "slide_to_roll",
+                     "roughness_1", "roughness_2"):
+            all_inputs[name] = np.array(box[name][:2], float)
+        all_inputs["viscosity"] = np.asarray(viscosity(oil, t_box), float)
     lam = groups["lambda"]
     ranges = {
         "hertz_pressure": _span(all_inputs["hertz_pressure"]),

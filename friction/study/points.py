@@ -68,7 +68,7 @@ class SolveSettings:
     roughness_steps : int
         Homotopy steps in the roughness amplitude.
     lubricant : str
-        Bundled oil name (:func:`friction.lubricant.load_lubricant`).
+        Bundled oil name or oil TOML file (:func:`friction.lubricant.load_lubricant`).
     profile_seeds : (int, int)
         Seeds of the two surfaces' ground profiles (realisation k uses seeds + 2k).
     realisations : int
