@@ -192,3 +192,48 @@ def test_friction_study_and_fit_commands(tmp_path, monkeypatch, capsys):
                                rtol=1e-6, atol=1e-8)
     assert main(["friction-fit", str(DATA_DIR / "friction_study_75W90.nc"), "-o", "k.txt"]) != 0
     assert "must end in .toml" in capsys.readouterr().err
+
+
+def test_realisations_are_averaged():
+    """realisations=2 stores the mean of the two profile pairs' solutions (seeds 1, 2 and
+    3, 4) and their spread — each solved here on its own (64 nodes, λ ≈ 5: ~0.2 s)."""
+    point = {"hertz_pressure": 800.0, "radius": 20.0, "entraining_velocity": 5.0,
+             "slide_to_roll": 0.3, "temperature": 25.0, "roughness_1": 0.3,
+             "roughness_2": 0.4}
+    both = solve_design_point(SolveSettings(nodes=64, realisations=2), 0, point)
+    one = solve_design_point(SolveSettings(nodes=64, profile_seeds=(1, 2)), 0, point)
+    two = solve_design_point(SolveSettings(nodes=64, profile_seeds=(3, 4)), 0, point)
+    assert (both.status, one.status, two.status) == (0, 0, 0)
+    assert both.values["realisations_converged"] == 2
+    mus = [one.values["friction_coefficient"], two.values["friction_coefficient"]]
+    assert mus[0] != mus[1]  # the realisations differ
+    assert both.values["friction_coefficient"] == pytest.approx(np.mean(mus), rel=1e-12)
+    assert both.values["friction_coefficient_spread"] == pytest.approx(np.std(mus), rel=1e-9)
+    assert one.values["friction_coefficient_spread"] == 0.0
+
+
+def test_combine_studies_and_refusals():
+    from friction.kolivand2009 import DATA_DIR
+    from friction.study.fit import combine_studies, fit_kolivand2009
+    from geometry.core.io import read_netcdf
+
+    held = read_netcdf(DATA_DIR / "friction_study_75W90_heldout.nc", tree=False)
+    both = combine_studies([held, held])
+    assert both.sizes["point"] == 2 * held.sizes["point"]
+    assert both["point"].values.tolist() == list(range(2 * held.sizes["point"]))
+    assert both.attrs["wall_time"] == pytest.approx(2 * held.attrs["wall_time"])
+    assert both.attrs["design_method"] == "lhs; lhs"
+    other = held.copy()
+    other.attrs = {**held.attrs, "solver_nodes": 512}
+    with pytest.raises(InputError, match="solver_nodes differs"):
+        combine_studies([held, other])
+    with pytest.raises(InputError, match="at least one"):
+        combine_studies([])
+    with pytest.raises(InputError, match=r"^features: unknown \['ln_X'\]"):
+        fit_kolivand2009(held, features=("1", "ln_X"))
+    with pytest.raises(InputError, match=r"^ridge: must be >= 0"):
+        fit_kolivand2009(held, ridge=-1.0)
+    with pytest.raises(InputError, match=r"^structure: must be one of"):
+        fit_kolivand2009(held, structure="cubic")
+    with pytest.raises(InputError, match=r"^study: not a friction study"):
+        fit_kolivand2009(held.drop_vars("status"))
