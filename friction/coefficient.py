@@ -6,7 +6,7 @@ offers that family of models behind one interface::
 
     >>> from friction.coefficient import available_friction_models, friction_coefficient
     >>> available_friction_models()
-    ('benedict_kelley', 'constant', 'mixed_ehl', 'xu2007')
+    ('benedict_kelley', 'constant', 'kolivand2009', 'mixed_ehl', 'xu2007')
     >>> mu = friction_coefficient("xu2007", hertz_pressure=1000.0, slide_to_roll=0.5,
     ...                           entraining_velocity=10.0, viscosity=0.0163, radius=20.0,
     ...                           roughness_1=0.8, roughness_2=0.8)
@@ -23,8 +23,11 @@ Each model validates its inputs (:class:`InputError` naming the field), warns wi
 and never returns NaN: where a formula breaks down the value is clipped and the warning
 says so.
 
-``kolivand2009`` (seed Eq. 5.11 with Table 5.3) is registered as *unavailable*: asking
-for it raises :class:`ModelUnavailableError` quoting :data:`UNAVAILABLE_MODELS`.
+``kolivand2009`` is the seed's Eq. 5.11 *derived again*: its structure fitted to the
+toolkit's mixed-EHL solver over Table 5.1's conditions (:mod:`friction.kolivand2009`,
+:mod:`friction.study`). The seed's own Table 5.3 reading of Eq. 5.11,
+``kolivand2009_table_5_3``, is registered as *unavailable*: asking for it raises
+:class:`ModelUnavailableError` quoting :data:`UNAVAILABLE_MODELS`.
 """
 
 from __future__ import annotations
@@ -41,6 +44,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from friction.kolivand2009 import kolivand2009, kolivand2009_validity
 from friction.mixed_ehl import mixed_ehl, mixed_ehl_validity
 from friction.validity import FrictionModelRangeWarning
 from geometry.core.errors import InputError, ModelUnavailableError
@@ -501,6 +505,12 @@ _MODELS: Mapping[str, FrictionModel] = MappingProxyType(
         ),
         "constant": _register("constant", constant, "Coleman (1975); constant μ",
                               _always_valid),
+        "kolivand2009": _register(
+            "kolivand2009", kolivand2009,
+            "seed Eq. 5.11 structure (Kolivand 2009, §5.2.3) fitted to friction.ehl over"
+            " Table 5.1 (friction.kolivand2009, friction/data/kolivand2009_75W90.toml)",
+            kolivand2009_validity,
+        ),
         "mixed_ehl": _register(
             "mixed_ehl", mixed_ehl,
             "Johnson, Greenwood & Poon, Wear 19 (1972) 91 load sharing; Greenwood & Tripp"
@@ -513,15 +523,17 @@ _MODELS: Mapping[str, FrictionModel] = MappingProxyType(
 #: Models of the literature that are known but not offered, with the reason.
 UNAVAILABLE_MODELS: Mapping[str, str] = MappingProxyType(
     {
-        "kolivand2009": (
-            "the seed's regression (Kolivand 2009, Eq. 5.11a-c with Table 5.3) is not"
-            " recoverable from the text extraction: the λ symbol, the exponents, the"
+        "kolivand2009_table_5_3": (
+            "the seed's own coefficients (Table 5.3) cannot be used: the seed's regression"
+            " (Kolivand 2009, Eq. 5.11a-c with Table 5.3) is not recoverable from the text"
+            " extraction: the λ symbol, the exponents, the"
             " operators and the grouping of the three regime formulas were lost, so which"
             " of the 35 Table 5.3 coefficients multiplies which group (λ, SR, U, G, H, S_c,"
             " S_eq), and whether inside a log, an exponent or a power, is undetermined; a"
             " term structure picked so that μ lands in 0.01-0.06 and is continuous at"
             " λ = 1 and 3 would be fitted to those acceptance checks rather than recovered"
-            " from the source. Use 'xu2007' (same methodology and oil class) instead."
+            " from the source. Use 'kolivand2009' (the same structure fitted again to the"
+            " toolkit's solver) or 'xu2007' instead."
         ),
     }
 )
@@ -552,7 +564,7 @@ def unavailable_friction_models() -> Mapping[str, str]:
 
     Notes
     -----
-    Source: seed/NOTES.md on seed Eq. 5.11 (kolivand2009).
+    Source: seed/NOTES.md on seed Eq. 5.11 (kolivand2009_table_5_3).
     """
     return UNAVAILABLE_MODELS
 

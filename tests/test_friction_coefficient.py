@@ -60,8 +60,9 @@ def _no_warnings():
 
 # ----------------------------------------------------------------------------- registry
 def test_registry_lists_models() -> None:
-    assert available_friction_models() == ("benedict_kelley", "constant", "mixed_ehl", "xu2007")
-    assert "kolivand2009" in unavailable_friction_models()
+    assert available_friction_models() == ("benedict_kelley", "constant", "kolivand2009",
+                                           "mixed_ehl", "xu2007")
+    assert "kolivand2009_table_5_3" in unavailable_friction_models()
 
 
 def test_unknown_model_lists_available() -> None:
@@ -69,10 +70,10 @@ def test_unknown_model_lists_available() -> None:
         friction_coefficient("coulomb", **XU_CHECK)
 
 
-def test_kolivand2009_unavailable_with_reason() -> None:
+def test_kolivand2009_table_5_3_unavailable_with_reason() -> None:
     with pytest.raises(ModelUnavailableError, match="not recoverable") as info:
-        get_friction_model("kolivand2009")
-    assert UNAVAILABLE_MODELS["kolivand2009"] in str(info.value)
+        get_friction_model("kolivand2009_table_5_3")
+    assert UNAVAILABLE_MODELS["kolivand2009_table_5_3"] in str(info.value)
 
 
 def test_unknown_input_name_refused() -> None:

@@ -35,6 +35,10 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
              "-o wear.nc",),
     "ehl": ("ltca ehl --pressure 1.0 --radius 20 --speed 5 --slide-to-roll 0.3 "
             "--temperature 75 --roughness 0 0 -o ehl.nc",),
+    "friction-study": ("ltca friction-study -n 16 --nodes 128 -o friction_study.nc",
+                       "ltca friction-study --design factorial --scheduler tcp://host:8786 "
+                       "-o table_5_1.nc"),
+    "friction-fit": ("ltca friction-fit friction_study.nc -o kolivand2009_fit.toml",),
     "duty-cycle": ("ltca duty-cycle -o duty.nc --plots duty_plots   # illustrative spectrum",
                    "ltca duty-cycle kolivand2009_fm_11x41_reference --duty spectrum.toml "
                    "--no-root-stress -o duty.nc"),

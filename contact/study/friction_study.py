@@ -1,0 +1,220 @@
+"""The friction study on Dask: the mixed-EHL solver over a design of contact conditions.
+
+:func:`run_friction_study` solves every point of a design
+(:mod:`friction.study.design`: Table 5.1's factorial grid or a space-filling sample) with
+:func:`friction.study.points.solve_design_point` on the study engine
+(:func:`contact.study.engine.run_tasks`: a LocalCluster by default, ``"synchronous"`` in
+this process, or any scheduler address), streams the finished points to
+``OUTPUT.parts/`` (:class:`contact.study.store.ResultStore`) and resumes a killed study
+with the same output and design. A point the solver does not converge on is a row with
+``status`` ``not_converged`` and its ``reason``, never a result. The dataset carries its
+provenance: toolkit version and commit, the design (method, seed, size), the solver
+settings (nodes …), the wall time and how many points were resumed.
+
+Public functions
+----------------
+run_friction_study   solve a design on Dask; one dataset over ``point``
+study_provenance     the provenance attributes of a study file
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+import os
+import subprocess
+import time
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from contact.study.store import ResultStore
+from friction.study.design import DESIGN_INPUTS, check_design
+from friction.study.points import (
+    POINT_STATUS,
+    RESULT_VARIABLES,
+    PointOutcome,
+    SolveSettings,
+    solve_design_point,
+)
+from geometry import __version__
+from geometry.core.conventions import data_var
+from geometry.core.errors import InputError
+
+__all__ = ["run_friction_study", "study_provenance"]
+
+log = logging.getLogger(__name__)
+
+
+def _commit() -> str:
+    """The toolkit's git commit (with '-dirty' for local changes), or 'unknown'."""
+    root = Path(__file__).resolve().parents[2]
+    try:
+        out = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
+                             text=True, timeout=10, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "--",
+                                "friction"], capture_output=True, text=True, timeout=10,
+                               check=True).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+    return out + ("-dirty" if dirty else "")
+
+
+def study_provenance(settings: SolveSettings, design_attrs: Mapping[str, Any]) -> dict[str, Any]:
+    """Provenance attributes of a friction-study file.
+
+    Parameters
+    ----------
+    settings : SolveSettings
+        The solver settings every point shared.
+    design_attrs : mapping
+        How the design was made (e.g. ``{"design": "sobol", "seed": 2009, "n": 128}``).
+
+    Returns
+    -------
+    dict
+        ``toolkit_version``, ``solver_commit`` (git HEAD, ``-dirty`` if ``friction/`` has
+        local changes, or 'unknown'), ``solver`` (the function), ``solver_*`` settings,
+        ``design_*``.
+    """
+    attrs: dict[str, Any] = {
+        "toolkit_version": __version__,
+        "solver_commit": _commit(),
+        "solver": "friction.ehl.line_contact.line_contact_summary (steady, Roelands, "
+                  "Dowson-Higginson, Eyring + limiting shear, boundary mu_b on contact nodes)",
+    }
+    for k, v in settings.as_dict().items():
+        attrs[f"solver_{k}"] = json.dumps(v) if isinstance(v, list) else v
+    for k, v in design_attrs.items():
+        attrs[f"design_{k}"] = v
+    return attrs
+
+
+def _point_dataset(index: int, point: Mapping[str, float], res: PointOutcome) -> xr.Dataset:
+    data: dict[str, Any] = {
+        k: data_var(("point",), np.array([res.values[k]]), units, long_name)
+        for k, (units, long_name) in RESULT_VARIABLES.items()}
+    data["status"] = data_var(("point",), np.array([res.status], np.int8), "1",
+                              "outcome of the solver call",
+                              flag_values=np.arange(len(POINT_STATUS), dtype=np.int8),
+                              flag_meanings=" ".join(POINT_STATUS))
+    data["reason"] = data_var(("point",), np.array([res.reason], dtype=object), None,
+                              "why the point failed (empty when it did not)")
+    coords: dict[str, Any] = {"point": ("point", np.array([index]),
+                                        {"units": "1", "long_name": "design point index"})}
+    for name, (units, long_name) in DESIGN_INPUTS.items():
+        coords[name] = ("point", np.array([float(point[name])]),
+                        {"units": units, "long_name": long_name})
+    return xr.Dataset(data, coords=coords)
+
+
+def run_friction_study(
+    design: Mapping[str, Any],
+    settings: SolveSettings | None = None,
+    *,
+    design_attrs: Mapping[str, Any] | None = None,
+    output: str | os.PathLike[str] | None = None,
+    scheduler: Any = None,
+    n_workers: int | None = None,
+    progress: bool = False,
+    chunk_size: int = 8,
+) -> xr.Dataset:
+    """Solve every point of a friction-study design on Dask; one dataset over ``point``.
+
+    Parameters
+    ----------
+    design : mapping of str to array (n,)
+        :data:`friction.study.design.DESIGN_INPUTS` (MPa, mm, m/s, 1, degC, µm).
+    settings : SolveSettings, optional
+        Solver grid and oil (default ``SolveSettings()``: 256 nodes, 75W90).
+    design_attrs : mapping, optional
+        How the design was made, stored as ``design_*`` attributes.
+    output : path-like, optional
+        Stream finished points to ``OUTPUT.parts/`` (the directory must exist); a study
+        started again with the same output, design and settings computes only the missing
+        points. The final file is written by the caller (``geometry.core.io.write_netcdf``,
+        then ``ResultStore.remove_parts``) — the command ``ltca friction-study`` does both.
+    scheduler, n_workers
+        Where to run (:func:`contact.study.engine.open_client`): None a LocalCluster of
+        ``n_workers`` processes, ``"synchronous"`` this process, an address a cluster.
+    progress : bool
+        tqdm progress bar.
+    chunk_size : int
+        Points per chunk file.
+
+    Returns
+    -------
+    xarray.Dataset
+        dim ``point``; the inputs as coordinates; :data:`friction.study.points.
+        RESULT_VARIABLES`, ``status`` (flag: converged, not_converged, input_refused) and
+        ``reason``; attributes of :func:`study_provenance` plus ``wall_time`` [s] of this
+        run, ``points_resumed`` and ``points_converged``.
+
+    Raises
+    ------
+    InputError
+        A bad design (named input), parts of another study at ``OUTPUT.parts``, a missing
+        output directory, a bad scheduler or worker count.
+    """
+    from contact.study.engine import run_tasks
+
+    t0 = time.perf_counter()
+    settings = settings or SolveSettings()
+    if not isinstance(settings, SolveSettings):
+        raise InputError(f"settings: must be a friction.study.points.SolveSettings, got "
+                         f"{type(settings).__name__}")
+    pts = check_design(design)
+    n = next(iter(pts.values())).size
+    points = [{k: float(pts[k][i]) for k in DESIGN_INPUTS} for i in range(n)]
+    provenance = study_provenance(settings, dict(design_attrs or {}))  # the code that runs
+    store = None
+    done: set[int] = set()
+    if output is not None:
+        out = Path(output)
+        if not out.parent.is_dir():
+            raise InputError(f"output: directory {str(out.parent)!r} does not exist")
+        rows = json.dumps([[p[k] for k in DESIGN_INPUTS] for p in points])
+        manifest = {"kind": "friction_study", "settings": settings.as_dict(),
+                    "design": hashlib.sha256(rows.encode()).hexdigest(), "points": n}
+        store = ResultStore(out, manifest, chunk_size=chunk_size)
+        done = store.done()
+        if done:
+            log.info("resuming %s: %d of %d points already solved", out, len(done), n)
+    kept: list[xr.Dataset] = []
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=n, initial=len(done), desc="friction study", unit="point")
+    todo = [(i, points[i]) for i in range(n) if i not in done]
+    try:
+        for res in run_tasks(solve_design_point, settings, todo, scheduler=scheduler,
+                             n_workers=n_workers):
+            ds = _point_dataset(res.index, points[res.index], res)
+            (store.add if store is not None else kept.append)(ds)
+            if bar is not None:
+                bar.update()
+    finally:
+        if store is not None:
+            store.flush()
+        if bar is not None:
+            bar.close()
+    ds = store.combined() if store is not None else xr.concat(kept, dim="point")
+    ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
+    if ds.sizes["point"] != n:
+        raise InputError(f"output: {ds.sizes['point']} of {n} points after the run")
+    ds["reason"] = ds["reason"].astype(str)
+    ds.attrs = {
+        "title": "hypoid-ltca friction study: mixed-EHL line contacts over a design "
+                 "(seed section 5.2.3, Table 5.1)",
+        **provenance,
+        "wall_time": float(time.perf_counter() - t0),
+        "wall_time_units": "s",
+        "points_resumed": len(done),
+        "points_converged": int(np.count_nonzero(ds["status"].values == 0)),
+    }
+    return ds

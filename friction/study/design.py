@@ -1,0 +1,229 @@
+"""Condition designs of the friction study: the seed's Table 5.1 space.
+
+The seed (§5.2.3, Table 5.1) ran its mixed-EHL model over the full factorial grid of
+p_h ∈ {0.5 … 2.5} GPa (5 levels), R_eq ∈ {5, 20, 40} mm, V_r ∈ {1, 5, 10, 15, 20} m/s,
+SR ∈ {0.025 … 1} (7 levels), T_oil ∈ {25, 50, 75, 100} °C and Rq₁, Rq₂ ∈ {0.1 … 1} µm
+(5 levels each): 5·3·5·7·4 = 2100 conditions times the 15 *unordered* roughness pairs =
+31,500, the number the seed states (the two surfaces' profiles enter the seed's groups
+S_c and S_eq symmetrically). :func:`factorial_design` gives that grid (for a cluster);
+:func:`space_filling_design` a seeded Sobol or Latin-hypercube sample of the same box
+for a small machine, with p_h, T and the Rq uniform and R, u_e, SR log-uniform (the fit
+is log-linear in them, so the sample is spread evenly in the regression's variables).
+
+A design is a mapping of :data:`DESIGN_INPUTS` names to equal-length float arrays.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import warnings
+from collections.abc import Mapping
+from types import MappingProxyType
+
+import numpy as np
+from numpy.typing import NDArray
+
+from geometry.core.errors import InputError
+from geometry.core.validation import integer, one_of
+
+__all__ = ["DESIGN_INPUTS", "DESIGN_METHODS", "TABLE_5_1", "TABLE_5_1_RANGE", "check_design",
+           "factorial_design", "space_filling_design"]
+
+Array = NDArray[np.float64]
+
+#: The inputs of a design point: name → (units, long_name).
+DESIGN_INPUTS: Mapping[str, tuple[str, str]] = MappingProxyType({
+    "hertz_pressure": ("MPa", "Hertz maximum pressure p_h"),
+    "radius": ("mm", "equivalent radius of curvature R_eq"),
+    "entraining_velocity": ("m/s", "entraining velocity u_e = (u1 + u2)/2"),
+    "slide_to_roll": ("1", "slide-to-roll ratio SR = (u1 - u2)/u_e"),
+    "temperature": ("degC", "inlet oil temperature"),
+    "roughness_1": ("um", "RMS roughness Rq of surface 1"),
+    "roughness_2": ("um", "RMS roughness Rq of surface 2"),
+})
+
+#: The seed's Table 5.1 levels (toolkit units: MPa, mm, m/s, 1, degC, µm).
+TABLE_5_1: Mapping[str, tuple[float, ...]] = MappingProxyType({
+    "hertz_pressure": (500.0, 1000.0, 1500.0, 2000.0, 2500.0),
+    "radius": (5.0, 20.0, 40.0),
+    "entraining_velocity": (1.0, 5.0, 10.0, 15.0, 20.0),
+    "slide_to_roll": (0.025, 0.05, 0.1, 0.25, 0.5, 0.75, 1.0),
+    "temperature": (25.0, 50.0, 75.0, 100.0),
+    "roughness_1": (0.1, 0.35, 0.6, 0.85, 1.0),
+    "roughness_2": (0.1, 0.35, 0.6, 0.85, 1.0),
+})
+
+#: The box of Table 5.1: name → (low, high, log-spaced in the space-filling designs).
+TABLE_5_1_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
+    "hertz_pressure": (500.0, 2500.0, False),
+    "radius": (5.0, 40.0, True),
+    "entraining_velocity": (1.0, 20.0, True),
+    "slide_to_roll": (0.025, 1.0, True),
+    "temperature": (25.0, 100.0, False),
+    "roughness_1": (0.1, 1.0, False),
+    "roughness_2": (0.1, 1.0, False),
+})
+
+#: Space-filling samplers of :func:`space_filling_design` (scipy.stats.qmc).
+DESIGN_METHODS = ("sobol", "lhs")
+
+
+def check_design(design: Mapping[str, object]) -> dict[str, Array]:
+    """A design as float arrays, every input of :data:`DESIGN_INPUTS`, finite, in range.
+
+    Parameters
+    ----------
+    design : mapping of str to array (n,)
+        Inputs in the units of :data:`DESIGN_INPUTS`.
+
+    Returns
+    -------
+    dict of str to array (n,)
+
+    Raises
+    ------
+    InputError
+        A missing or unknown input, unequal lengths, no points, or a value outside the
+        solver's accepted range (p_h, R, u_e > 0; |SR| ≤ 2; Rq ≥ 0), naming the input.
+    """
+    missing = sorted(set(DESIGN_INPUTS) - set(design))
+    unknown = sorted(set(design) - set(DESIGN_INPUTS))
+    if missing or unknown:
+        raise InputError(f"design: inputs must be {sorted(DESIGN_INPUTS)}; missing {missing},"
+                         f" unknown {unknown}")
+    out = {k: np.atleast_1d(np.asarray(design[k], dtype=float)) for k in DESIGN_INPUTS}
+    sizes = {k: v.size for k, v in out.items()}
+    if len(set(sizes.values())) != 1 or any(v.ndim != 1 for v in out.values()):
+        raise InputError(f"design: every input must be a 1-d array of one length, got {sizes}")
+    if not next(iter(sizes.values())):
+        raise InputError("design: a study needs at least one point")
+    bounds = {"hertz_pressure": (0.0, None), "radius": (0.0, None),
+              "entraining_velocity": (0.0, 100.0), "temperature": (-50.0, 300.0),
+              "roughness_1": (-1.0, 50.0), "roughness_2": (-1.0, 50.0)}
+    for name, v in out.items():
+        if not np.all(np.isfinite(v)):
+            raise InputError(f"{name}: must be finite [{DESIGN_INPUTS[name][0]}]")
+        if name == "slide_to_roll":
+            if np.any(np.abs(v) > 2.0):
+                raise InputError("slide_to_roll: must be in [-2, 2] [1], got "
+                                 f"{v[np.abs(v) > 2][0]:g}")
+            continue
+        low, high = bounds[name]
+        bad = (v <= low) if name not in ("roughness_1", "roughness_2") else (v < 0.0)
+        if high is not None:
+            bad |= v > high
+        if np.any(bad):
+            rng = f"> {low:g}" if high is None else f"in ({low:g}, {high:g}]"
+            if name.startswith("roughness"):
+                rng = "in [0, 50]"
+            raise InputError(f"{name}: must be {rng} [{DESIGN_INPUTS[name][0]}], got "
+                             f"{v[bad][0]:g}")
+    return out
+
+
+def factorial_design(levels: Mapping[str, tuple[float, ...]] = TABLE_5_1, *,
+                     unordered_roughness: bool = True) -> dict[str, Array]:
+    """The full factorial grid of Table 5.1 (31,500 conditions with the default levels).
+
+    Parameters
+    ----------
+    levels : mapping of str to tuple of float
+        Levels of every :data:`DESIGN_INPUTS` input (their units); default the seed's.
+    unordered_roughness : bool
+        Keep each pair of roughness levels once (Rq₁ ≤ Rq₂), as the seed's count implies.
+
+    Returns
+    -------
+    dict of str to array (n,)
+        n = Π(levels) (ordered) or, unordered, Π(other levels)·k(k+1)/2 for k roughness
+        levels when both surfaces share them.
+
+    Raises
+    ------
+    InputError
+        Missing or empty levels, or levels outside the accepted ranges (named).
+
+    Notes
+    -----
+    Source: seed Table 5.1 and §5.2.3 ("a total of 31,500 contact conditions as a result of
+    all combinations of the parameter values listed in Table 5.1"): 2100 × 15 = 31,500.
+    """
+    missing = sorted(set(DESIGN_INPUTS) - set(levels))
+    if missing:
+        raise InputError(f"levels: missing {missing}")
+    for k in DESIGN_INPUTS:
+        if len(levels[k]) == 0:
+            raise InputError(f"levels.{k}: needs at least one level")
+    names = list(DESIGN_INPUTS)
+    rows = [r for r in itertools.product(*(levels[k] for k in names))
+            if not unordered_roughness or r[-2] <= r[-1]]
+    arr = np.asarray(rows, dtype=float)
+    return check_design({k: arr[:, i] for i, k in enumerate(names)})
+
+
+def space_filling_design(n: int, *, method: str = "sobol", seed: int = 2009, skip: int = 0,
+                         box: Mapping[str, tuple[float, float, bool]] = TABLE_5_1_RANGE,
+                         ) -> dict[str, Array]:
+    """A seeded space-filling sample of the Table 5.1 box.
+
+    Parameters
+    ----------
+    n : int
+        Number of conditions, 1 … 1,000,000 (Sobol: a power of two keeps its balance).
+    method : {"sobol", "lhs"}
+        ``scipy.stats.qmc.Sobol`` (scrambled) or ``LatinHypercube`` (optimised by random
+        CD): use another ``seed`` (and method) for held-out points.
+    seed : int
+        Seed of the sampler (same seed, same design).
+    skip : int
+        Sobol only: the first ``skip`` points of the sequence are passed over, so
+        ``skip=128, n=128`` continues a design of ``n=128`` (points 128 … 255).
+    box : mapping of str to (low, high, log)
+        Range of each input, log-uniform where ``log``; default :data:`TABLE_5_1_RANGE`.
+
+    Returns
+    -------
+    dict of str to array (n,)
+
+    Raises
+    ------
+    InputError
+        Bad ``n``, ``method``, ``seed``, ``skip`` or box (named).
+
+    Notes
+    -----
+    Source: Sobol' (1967), Owen scrambling; McKay, Beckman & Conover (1979) Latin
+    hypercube (``scipy.stats.qmc``). The box is the seed's Table 5.1.
+    """
+    from scipy.stats import qmc
+
+    n = integer("n", n, low=1, high=1_000_000)
+    one_of("method", method, DESIGN_METHODS)
+    integer("seed", seed, low=0)
+    skip = integer("skip", skip, low=0)
+    names = list(DESIGN_INPUTS)
+    for k in names:
+        if k not in box:
+            raise InputError(f"box: missing {k}")
+        lo, hi, log = box[k]
+        if not (math.isfinite(lo) and math.isfinite(hi) and hi >= lo) or (log and lo <= 0):
+            raise InputError(f"box.{k}: must be finite, low <= high (low > 0 if log), got "
+                             f"({lo}, {hi})")
+    if method == "sobol":
+        sampler = qmc.Sobol(d=len(names), scramble=True, seed=seed)
+        if skip:
+            sampler.fast_forward(skip)
+        with warnings.catch_warnings():  # the balance note for n not a power of two
+            warnings.simplefilter("ignore", UserWarning)
+            u = sampler.random(n)
+    else:
+        if skip:
+            raise InputError("skip: only the Sobol sequence can be continued (method 'sobol')")
+        u = qmc.LatinHypercube(d=len(names), seed=seed, optimization="random-cd").random(n)
+    out = {}
+    for i, k in enumerate(names):
+        lo, hi, log = box[k]
+        out[k] = (np.exp(np.log(lo) + u[:, i] * (np.log(hi) - np.log(lo))) if log
+                  else lo + u[:, i] * (hi - lo))
+    return check_design(out)

@@ -1,0 +1,255 @@
+"""One point of the friction study solved by the mixed-EHL line-contact solver.
+
+:func:`solve_design_point` turns a design point (p_h, R, u_e, SR, T, Rq₁, Rq₂; the units of
+:data:`friction.study.design.DESIGN_INPUTS`) into a :class:`friction.ehl.line_contact.
+LineContactCondition` — load per length from p_h (w′ = 2πR p_h²/E′), the two surfaces'
+ground profiles (:func:`friction.ehl.roughness.ground_profile`, seeds 1 and 2, the seed's
+"baseline profile multiplied by a constant") scaled to Rq₁ and Rq₂ on the solver's grid —
+and solves it through the solver's public API only (:func:`~friction.ehl.line_contact.
+line_contact_summary`). A condition the solver does not converge on is recorded as
+failed with the reason, never as a result. It runs on a Dask worker (the runner is
+:mod:`contact.study.friction_study`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import time
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from geometry.core.errors import InputError
+from geometry.core.validation import integer, real
+
+__all__ = ["POINT_STATUS", "RESULT_VARIABLES", "PointOutcome", "SolveSettings",
+           "condition_of", "outcome_arrays", "solve_design_point"]
+
+log = logging.getLogger(__name__)
+
+#: status values of a point (CF flag meanings, in order 0, 1, 2)
+POINT_STATUS = ("converged", "not_converged", "input_refused")
+
+#: the scalars stored per point: name → (units, long_name)
+RESULT_VARIABLES: Mapping[str, tuple[str, str]] = {
+    "friction_coefficient": ("1", "friction coefficient mu (solver)"),
+    "fluid_friction": ("1", "film (Eyring) part of mu"),
+    "boundary_friction_part": ("1", "asperity (boundary) part of mu"),
+    "film_central": ("um", "central film thickness h_c"),
+    "film_min": ("um", "minimum film thickness h_min"),
+    "asperity_load_ratio": ("1", "share of the load carried by contact nodes"),
+    "contact_area_ratio": ("1", "contact length over Hertz width 2b"),
+    "lambda_ratio": ("1", "smooth-film h_min (Pan-Hamrock) over composite Rq"),
+    "load_per_length": ("N/mm", "normal load per unit length w'"),
+    "solve_time": ("s", "wall time of the solver calls on its worker"),
+    "realisations_converged": ("1", "roughness realisations the solver converged on"),
+    "friction_coefficient_spread": ("1", "standard deviation of mu over the converged "
+                                         "realisations (0 for one)"),
+}
+
+
+@dataclass(frozen=True)
+class SolveSettings:
+    """What every point of a friction study shares.
+
+    Parameters
+    ----------
+    nodes : int
+        Grid nodes over ``inlet`` … ``outlet`` Hertz half-widths, 64 … 16384.
+    inlet, outlet : float — [1]
+        Domain in units of b.
+    step_limit : float — [1]
+        Newton step limit (max |ΔP|) of :class:`friction.ehl.line_contact.Grid`.
+    max_iterations : int
+        Newton iterations per roughness-homotopy step before a point counts as failed.
+    roughness_steps : int
+        Homotopy steps in the roughness amplitude.
+    lubricant : str
+        Bundled oil name or oil TOML file (:func:`friction.lubricant.load_lubricant`).
+    profile_seeds : (int, int)
+        Seeds of the two surfaces' ground profiles (realisation k uses seeds + 2k).
+    realisations : int
+        Roughness realisations per condition, 1 … 32: the point's values are the means over
+        the realisations the solver converged on (steady frozen roughness makes μ in the
+        mixed regime depend on the realisation: measured RMS 53 % between two profile pairs
+        at λ 1–3, 5 % at λ < 0.3 and 4 % at λ > 3, 256 nodes).
+    """
+
+    nodes: int = 256
+    inlet: float = -4.0
+    outlet: float = 1.5
+    step_limit: float = 3.0
+    max_iterations: int = 60
+    roughness_steps: int = 4
+    lubricant: str = "75W90"
+    profile_seeds: tuple[int, int] = (1, 2)
+    realisations: int = 1
+
+    def __post_init__(self) -> None:
+        integer("nodes", self.nodes, low=64, high=16384)
+        real("step_limit", self.step_limit, low=0.0, low_open=True, unit="1")
+        integer("max_iterations", self.max_iterations, low=1, high=10000)
+        integer("roughness_steps", self.roughness_steps, low=1, high=100)
+        if not isinstance(self.lubricant, str) or not self.lubricant:
+            raise InputError(f"lubricant: must be an oil name, got {self.lubricant!r}")
+        if len(self.profile_seeds) != 2:
+            raise InputError(f"profile_seeds: must be two seeds, got {self.profile_seeds!r}")
+        for s in self.profile_seeds:
+            integer("profile_seeds", s, low=0)
+        integer("realisations", self.realisations, low=1, high=32)
+
+    def grid(self):
+        """The solver grid (:class:`friction.ehl.line_contact.Grid`)."""
+        from friction.ehl.line_contact import Grid
+
+        g = Grid(nodes=self.nodes, inlet=self.inlet, outlet=self.outlet,
+                 step_limit=self.step_limit, max_iterations=self.max_iterations,
+                 roughness_steps=self.roughness_steps)
+        g.check()
+        return g
+
+    def as_dict(self) -> dict[str, object]:
+        """The settings as plain values (JSON and netCDF attributes)."""
+        d = dataclasses.asdict(self)
+        d["profile_seeds"] = list(self.profile_seeds)
+        return d
+
+
+@dataclass(frozen=True)
+class PointOutcome:
+    """One solved (or failed) point: small, whatever the solver's grid."""
+
+    index: int
+    status: int                 #: index into :data:`POINT_STATUS`
+    reason: str                 #: why it failed ('' when converged)
+    values: dict[str, float]    #: :data:`RESULT_VARIABLES` (NaN where failed)
+
+
+def condition_of(settings: SolveSettings, point: Mapping[str, float], realisation: int = 0):
+    """The solver's condition for a design point.
+
+    Parameters
+    ----------
+    settings : SolveSettings
+    point : mapping of str to float
+        ``hertz_pressure`` [MPa], ``radius`` [mm], ``entraining_velocity`` [m/s],
+        ``slide_to_roll`` [1], ``temperature`` [degC], ``roughness_1``, ``roughness_2`` [µm].
+    realisation : int
+        Roughness realisation k: profile seeds ``settings.profile_seeds`` + 2k.
+
+    Returns
+    -------
+    friction.ehl.line_contact.LineContactCondition
+        w′ = 2πR p_h²/E′ [N/mm] (from p_h = E′b/(4R), b = √(8w′R/(πE′))), steel E′, the
+        ground profiles of ``settings.profile_seeds`` scaled to Rq₁, Rq₂ (None for Rq 0).
+
+    Raises
+    ------
+    InputError
+        A non-positive p_h or R (named).
+    """
+    from friction.ehl.line_contact import STEEL_E_PRIME, LineContactCondition, hertz_line_contact
+    from friction.ehl.roughness import ground_profile
+
+    ph = real("hertz_pressure", point["hertz_pressure"], unit="MPa", low=0.0, low_open=True)
+    r = real("radius", point["radius"], unit="mm", low=0.0, low_open=True)
+    load = 2.0 * math.pi * r * ph**2 / STEEL_E_PRIME
+    b, _ = hertz_line_contact(load, r, STEEL_E_PRIME)
+    x = settings.grid().coordinates() * b
+    rough = []
+    for name, seed in zip(("roughness_1", "roughness_2"), settings.profile_seeds, strict=True):
+        rq = real(name, point[name], unit="µm", low=0.0, high=50.0)
+        rough.append(ground_profile(x, rq, seed=seed + 2 * realisation) if rq > 0.0 else None)
+    return LineContactCondition(
+        load_per_length=load, radius=r, entraining_velocity=float(point["entraining_velocity"]),
+        slide_to_roll=float(point["slide_to_roll"]), temperature=float(point["temperature"]),
+        lubricant=settings.lubricant, roughness_1=rough[0], roughness_2=rough[1])
+
+
+def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, float]
+                       ) -> PointOutcome:
+    """Solve one design point (the function Dask runs on a worker).
+
+    Parameters
+    ----------
+    settings : SolveSettings
+    index : int
+        The point's place in the design.
+    point : mapping of str to float
+        Its inputs (:func:`condition_of`).
+
+    Returns
+    -------
+    PointOutcome
+        status 0 converged (the solver's scalars, averaged over the realisations it
+        converged on; ``realisations_converged`` says how many), 1 not converged on any
+        (:class:`~friction.ehl.line_contact.ConvergenceError`), 2 input refused
+        (:class:`~geometry.core.errors.InputError`); ``reason`` the error's first line;
+        failed points keep ``load_per_length`` and ``solve_time``, every other value NaN.
+        Never raises for a failing condition.
+
+    Notes
+    -----
+    Runs with one BLAS thread (``threadpoolctl``). Source: the seed's §5.2.3 study (one MEHL
+    analysis per Table 5.1 condition), the solver of :mod:`friction.ehl.line_contact` (docs/ehl.md).
+    """
+    from threadpoolctl import threadpool_limits
+
+    from friction.ehl.line_contact import ConvergenceError, line_contact_summary
+
+    values = dict.fromkeys(RESULT_VARIABLES, math.nan)
+    t0 = time.perf_counter()
+    solved: list = []
+    status, reason = 0, ""
+    for k in range(settings.realisations):
+        try:
+            cond = condition_of(settings, point, k)
+            values["load_per_length"] = cond.load_per_length
+            # one BLAS thread: the points are the parallelism (a study's workers are
+            # single-threaded). The solver's dense LU of ≤ 1 k unknowns gains nothing from
+            # threads, and on a busy 2-core machine the default threads made a 256-node
+            # rough point 6–45 s instead of 0.3–1 s (measured, issue 34)
+            with threadpool_limits(limits=1):
+                solved.append(line_contact_summary(cond, settings.grid()))
+        except ConvergenceError as exc:
+            status, reason = 1, f"ConvergenceError: {exc}".splitlines()[0]
+        except InputError as exc:
+            status, reason = 2, f"InputError: {exc}".splitlines()[0]
+            break
+    values["realisations_converged"] = float(len(solved))
+    if solved and status != 2:
+        status, reason = 0, ""
+        mean = {f: float(np.mean([getattr(s, f) for s in solved]))
+                for f in solved[0]._fields}
+        values.update(friction_coefficient=mean["friction_coefficient"],
+                      fluid_friction=mean["fluid_friction"],
+                      boundary_friction_part=mean["boundary_part"],
+                      film_central=mean["film_central"], film_min=mean["film_min"],
+                      asperity_load_ratio=mean["asperity_load_ratio"],
+                      contact_area_ratio=mean["contact_area_ratio"],
+                      lambda_ratio=(solved[0].lambda_ratio
+                                    if math.isfinite(solved[0].lambda_ratio) else -1.0),
+                      friction_coefficient_spread=float(np.std(
+                          [s.friction_coefficient for s in solved])))
+    values["solve_time"] = time.perf_counter() - t0
+    if status:
+        log.info("friction study point %d %s failed: %s", index, dict(point), reason)
+    return PointOutcome(int(index), status, reason, {k: float(v) for k, v in values.items()})
+
+
+def outcome_arrays(outcomes: list[PointOutcome]) -> dict[str, np.ndarray]:
+    """Stack outcomes' values by variable.
+
+    Parameters
+    ----------
+    outcomes : list of PointOutcome
+
+    Returns
+    -------
+    dict of str to array (n,)
+        :data:`RESULT_VARIABLES` in the outcomes' order (units there).
+    """
+    return {k: np.array([o.values[k] for o in outcomes]) for k in RESULT_VARIABLES}
