@@ -95,7 +95,7 @@ def prepare_coefficients(case, flank: str | None = None, options=None, *,
     from contact.utca.easeoff import working_flanks
 
     flanks = dict(zip(MEMBERS, working_flanks(case, flank), strict=True))
-    return {m: influence_coefficients(case, m, flanks[m], options, progress=progress)
+    return {m: shared_coefficients(case, m, flanks[m], options, progress=progress)
             for m in MEMBERS}
 
 
