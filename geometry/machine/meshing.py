@@ -22,7 +22,7 @@ undercut test compares with. A batch whose middle target does not converge onto 
 profile section from its guess (the ease-off's placement iterations: a new target each
 time, often on a relief section) runs the whole search; its target-independent part, the
 generated points of the coarse candidate grids, is memoised per process (per blade,
-settings, section and q range), and Newton runs the passes after the first in one batch:
+settings, section and q range), and Newton runs the candidates of all passes in one batch:
 the same root bit for bit at a fifth of the cost (issue 32).
 
 Face hobbing (indexing ratio κ ≠ 0): the work indexes while the head turns, so the one
@@ -281,33 +281,32 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float):
     The passes in order: the profile section first (the middle of a flank), then the
     others; on each, the reference roll position (q = 0, the settings normally place the
     mean point there), then q in [−0.5, 0.5] rad. The seed is the first pass's root inside
-    its section. Newton runs on the first pass alone, then on all the others in one batch
-    (each point's Newton is independent of the batch, so the root is the one the passes
-    run one by one find); the candidate grids are memoised (:func:`_candidate_grid`).
+    its section. Newton runs on the candidates of all passes in one batch (each point's
+    Newton is independent of the batch, so the root is the one the passes run one by one
+    find, bit for bit; a profile-section target costs a few more points per iteration, a
+    relief-section one a single run instead of up to eight); the candidate grids are
+    memoised (:func:`_candidate_grid`).
     """
     sec = ctx.sections
     s_max = sec.s_lo[sec.main] + 4.0 * depth + 5.0
     spreads = [False, True] if ctx.generate else [False]
     order = [sec.main] + [k for k in range(len(sec.s_lo)) if k != sec.main]
     passes = [(k, wide) for k in order for wide in spreads]
-    z_t, p_t = np.array([z0]), np.array([p0])
-    for group in (passes[:2], passes[2:]):
-        if not group:
-            continue
-        x0 = [_seed_candidates(ctx, z0, p0, depth, wide, k) for k, wide in group]
-        sizes = [len(a) for a in x0]
-        ks = np.repeat([k for k, _ in group], sizes)
-        n = int(ks.size)
-        x, ok = _newton(ctx, np.concatenate(x0), ks, np.full(n, z0), np.full(n, p0))
-        at = 0
-        for (k, _), size in zip(group, sizes, strict=True):
-            sl = slice(at, at + size)
-            at += size
-            row = _pick_seed(ctx, x[sl], ok[sl], k, s_max)
-            if row is not None:
-                xs = x[sl][row]
-                _, jac, _ = _evaluate(ctx, xs[None], np.array([k]), z_t, p_t)
-                return xs, jac[0], k
+    x0 = [_seed_candidates(ctx, z0, p0, depth, wide, k) for k, wide in passes]
+    sizes = [len(a) for a in x0]
+    ks = np.repeat([k for k, _ in passes], sizes)
+    n = int(ks.size)
+    x, ok = _newton(ctx, np.concatenate(x0), ks, np.full(n, z0), np.full(n, p0))
+    at = 0
+    for (k, _), size in zip(passes, sizes, strict=True):
+        sl = slice(at, at + size)
+        at += size
+        row = _pick_seed(ctx, x[sl], ok[sl], k, s_max)
+        if row is not None:
+            xs = x[sl][row]
+            _, jac, _ = _evaluate(ctx, xs[None], np.array([k]), np.array([z0]),
+                                  np.array([p0]))
+            return xs, jac[0], k
     raise InputError(
         "machine settings: no envelope solution at the middle of the flank "
         f"(axial position {z0:.4g} mm, radius {p0:.4g} mm): the cutter does not generate "
