@@ -173,3 +173,18 @@ def test_easeoff_equals_the_reference_search(case_name, flank):
         a, b = getattr(fast, name), getattr(ref, name)
         np.testing.assert_array_equal(np.isnan(a), np.isnan(b), err_msg=name)
         np.testing.assert_allclose(a[valid], b[valid], rtol=0, atol=1e-9, err_msg=name)
+
+
+def test_smallest_is_the_full_sorts_head():
+    """The seed's partial sort returns ``np.argsort(values)[:k]`` exactly: on random values,
+    with ties inside and at the edge of the head (then the full sort decides), with NaN, and
+    on arrays no longer than k + 1."""
+    rng = np.random.default_rng(7)
+    cases = [rng.random(13608), rng.integers(0, 40, 13608).astype(float),
+             np.r_[rng.random(100), np.full(5, np.nan)], np.r_[np.zeros(3), rng.random(50)],
+             rng.random(12), rng.random(13)]
+    tie = rng.random(200)
+    tie[np.argsort(tie)[12]] = tie[np.argsort(tie)[11]]  # a tie between the 12th and 13th
+    cases.append(tie)
+    for values in cases:
+        np.testing.assert_array_equal(meshing._smallest(values, 12), np.argsort(values)[:12])

@@ -255,8 +255,21 @@ def _seed_candidates(ctx: _Context, z0: float, p0: float, depth: float, wide: bo
     obj = (g.axial - z0) ** 2 + (g.radius - p0) ** 2
     if g.meshing is not None:
         obj = obj + 0.1 * g.meshing ** 2
-    order = np.argsort(obj)[:_SEED_KEEP]
+    order = _smallest(obj, _SEED_KEEP)
     return np.stack([g.s[order], g.theta[order], g.q[order]], -1)[:, : 3 if ctx.generate else 2]
+
+
+def _smallest(values: np.ndarray, k: int) -> np.ndarray:
+    """``np.argsort(values)[:k]`` without sorting the whole array: where the k + 1 smallest
+    values are distinct their order is unique, so sorting a partition gives the same
+    indices; with a tie among them, the full sort (whose order of ties is its own)."""
+    if values.size <= k + 1:
+        return np.argsort(values)[:k]
+    part = np.argpartition(values, k)[:k + 1]
+    part = part[np.argsort(values[part])]
+    if np.all(np.diff(values[part]) > 0):
+        return part[:k]
+    return np.argsort(values)[:k]
 
 
 def _pick_seed(ctx: _Context, x: np.ndarray, ok: np.ndarray, k: int, s_max: float):
