@@ -19,8 +19,9 @@ reference), and the ease-offs that depend on it:
   face-hobbed reference design, drive and coast flank: valid masks and reasons node for
   node, values to 1e-9 (the tolerance of the request; the paths agree bit for bit).
 
-Cost: each ease-off ≈ 0.1–0.3 s with the fast search and ≈ 0.2–0.7 s with the reference
-(one core); about 3 s for the file, cheap enough for CI.
+Cost: each ease-off ≈ 0.1–0.3 s with the fast search and ≈ 0.2–0.7 s with the reference,
+each seed test ≤ 9 targets of one flank; measured at load 13 on the 2 cores every test
+≤ 5 s and the file ≈ 25 s (about half that on a quiet machine), cheap enough for CI.
 """
 
 from __future__ import annotations
@@ -92,8 +93,8 @@ def _context(case_name, member, flank):
 def _section_targets(ctx, blank, depth):
     """Targets on every blade section that generates part of the flank (the first and the
     middle valid node of each on a 17 × 9 projection grid over an extended blank: the
-    relief sections generate the flank's ends, where the ease-off seeds), and two masked
-    nodes."""
+    relief sections generate the flank's ends, where the ease-off seeds), and a masked
+    node (every pass of the search runs, and fails)."""
     uu, vv = np.meshgrid(np.linspace(-0.15, 1.15, 17), np.linspace(-0.05, 1.2, 9),
                          indexing="ij")
     z, rho = conjugate_map._bilinear(blank_outline(blank).corners, uu, vv)
@@ -105,7 +106,7 @@ def _section_targets(ctx, blank, depth):
     for k in np.unique(section[reason == 0]):
         on = np.flatnonzero((reason == 0) & (section == k))
         rows += [on[0], on[len(on) // 2]]
-    rows += list(np.flatnonzero(reason != 0)[:2])
+    rows += list(np.flatnonzero(reason != 0)[:1])
     return [(z[i], rho[i]) for i in rows], set(section[reason == 0].tolist())
 
 
@@ -117,7 +118,7 @@ def test_seed_equals_the_search_pass_by_pass(case_name, member, flank):
     """The fast seed search returns the reference search's root, Jacobian and section bit
     for bit (Newton runs each point on its own, so batching the passes changes nothing; the
     memoised candidate grid is the same array), or fails alike; a second call reads the
-    memo. Cheap: ≤ 12 targets of one flank, ~10 ms each."""
+    memo. Cheap: ≤ 9 targets of one flank, the reference search ≤ 0.4 s each."""
     ctx, blank, depth = _context(case_name, member, flank)
     targets, sections = _section_targets(ctx, blank, depth)
     found = set()
