@@ -171,9 +171,11 @@ def main() -> None:
     parser.add_argument("--case", action="append", default=[], metavar="CASE",
                         help="a case to time (repeatable; the first is the reference unless "
                              "--baseline is given)")
-    parser.add_argument("--baseline", nargs="?", const=DEFAULT_CASE, default=None,
+    # the bundled default by its name (resolve_case takes a bundled case by its name alone)
+    default = DEFAULT_CASE.removesuffix(".toml")
+    parser.add_argument("--baseline", nargs="?", const=default, default=None,
                         metavar="CASE", help="reference case printed first (without a "
-                        f"value: the bundled default, {DEFAULT_CASE})")
+                        f"value: the bundled default, {default})")
     parser.add_argument("--torque", type=float, default=250.0)
     parser.add_argument("--rolls-per-cycle", type=int, default=20)
     parser.add_argument("--repeat", type=int, default=5)

@@ -16,6 +16,15 @@ that re-solves targets near known solutions (an iteration moving its points a li
 pass those solutions as a starting guess: Newton then starts from them and the coarse seed
 search is skipped; points that do not converge from their guess take the path above.
 
+The seed search decides each batch's reference: the root that starts the predictions, the
+section that wins where a place has roots on two sections, and the sign of ∂f/∂q that the
+undercut test compares with. A batch whose middle target does not converge onto the
+profile section from its guess (the ease-off's placement iterations: a new target each
+time, often on a relief section) runs the whole search; its target-independent part, the
+generated points of the coarse candidate grids, is memoised per process (per blade,
+settings, section and q range), and Newton runs the candidates of all passes in one batch:
+the same root bit for bit at a fifth of the cost (issue 32).
+
 Face hobbing (indexing ratio κ ≠ 0): the work indexes while the head turns, so the one
 modelled blade meets a target once per head turn, each turn on another slot (the other
 blade groups, not modelled, would cut the slots between). The coarse search covers one turn,
@@ -36,6 +45,7 @@ solve_envelope    solve a batch/grid of projection-plane targets
 
 from __future__ import annotations
 
+import functools
 import logging
 from typing import NamedTuple
 
@@ -188,53 +198,128 @@ def _newton(ctx: _Context, x0: np.ndarray, section: np.ndarray, z: np.ndarray, p
     return x, done
 
 
-def _seed_candidates(ctx: _Context, z0: float, p0: float, depth: float, q_vals, main: int):
+#: candidate grids (target-independent part of the seed search) a process keeps: one per
+#: (blade, settings, length scale, depth, section, q range); 8 per flank at most (four
+#: sections, two q ranges), ≤ 0.33 MB each
+_GRID_MEMO = 32
+
+_SEED_S, _SEED_THETA = 9, 72  # coarse seed grid along the blade and about the cutter axis
+_SEED_Q = np.linspace(-0.5, 0.5, 21)  # [rad] roll positions of the wider seed search
+_SEED_KEEP = 12  # best candidates per pass started by Newton
+
+
+class _CandidateGrid(NamedTuple):
+    """The coarse seed grid of one blade section and q range, with the target-independent
+    parts of the search objective (flat arrays (N,), read-only)."""
+
+    s: np.ndarray  # [mm]
+    theta: np.ndarray  # [rad]
+    q: np.ndarray  # [rad]
+    axial: np.ndarray  # [mm] z of the generated point
+    radius: np.ndarray  # [mm] ρ of the generated point
+    meshing: np.ndarray | None  # [mm] L·f (wide q range in Generate), else None
+
+
+@functools.lru_cache(maxsize=_GRID_MEMO)
+def _candidate_grid(blade: Blade, settings: MachineSettings, length_scale: float,
+                    depth: float, main: int, wide: bool) -> _CandidateGrid:
+    """The generated points of the coarse seed grid on section ``main`` (at q = 0, or
+    ``wide``: over :data:`_SEED_Q`); memoised per process: they do not depend on the
+    target, and the ease-off's placement iterations seed a new target each time."""
+    ctx = _Context(blade, settings, profile_sections(blade), settings.process == "Generate",
+                   float(length_scale), chain(settings))
     sec = ctx.sections
+    q_vals = _SEED_Q if wide else np.zeros(1)
     hi = min(sec.s_hi[main], sec.s_lo[main] + 2.0 * depth + 2.0)
-    s_vals = np.linspace(sec.s_lo[main], hi, 9)
-    t_vals = np.linspace(-np.pi, np.pi, 72, endpoint=False)
+    s_vals = np.linspace(sec.s_lo[main], hi, _SEED_S)
+    t_vals = np.linspace(-np.pi, np.pi, _SEED_THETA, endpoint=False)
     sg, tg, qg = (a.ravel() for a in np.meshgrid(s_vals, t_vals, q_vals, indexing="ij"))
     buf = _family(ctx, sg, tg, qg, np.full(sg.shape, main))
     r = buf[:, 0]
-    obj = (r[2] - z0) ** 2 + (np.hypot(r[0], r[1]) - p0) ** 2
+    mesh = None
     if ctx.generate and len(q_vals) > 1:
         f, _ = meshing_buffer(buf, ctx.length_scale)
-        obj = obj + 0.1 * (ctx.length_scale * f) ** 2
-    order = np.argsort(obj)[:12]
-    return np.stack([sg[order], tg[order], qg[order]], -1)[:, : 3 if ctx.generate else 2]
+        mesh = ctx.length_scale * f
+    out = _CandidateGrid(sg, tg, qg, r[2].copy(), np.hypot(r[0], r[1]), mesh)
+    for a in out:
+        if a is not None:
+            a.flags.writeable = False
+    return out
+
+
+def _seed_candidates(ctx: _Context, z0: float, p0: float, depth: float, wide: bool,
+                     main: int) -> np.ndarray:
+    """The :data:`_SEED_KEEP` grid points nearest the target (z0, ρ0) (and nearest the
+    envelope, ``wide``) on section ``main``: Newton's starts (k, m)."""
+    g = _candidate_grid(ctx.blade, ctx.settings, ctx.length_scale, float(depth), main, wide)
+    obj = (g.axial - z0) ** 2 + (g.radius - p0) ** 2
+    if g.meshing is not None:
+        obj = obj + 0.1 * g.meshing ** 2
+    order = _smallest(obj, _SEED_KEEP)
+    return np.stack([g.s[order], g.theta[order], g.q[order]], -1)[:, : 3 if ctx.generate else 2]
+
+
+def _smallest(values: np.ndarray, k: int) -> np.ndarray:
+    """``np.argsort(values)[:k]`` without sorting the whole array: where the k + 1 smallest
+    values are distinct their order is unique, so sorting a partition gives the same
+    indices; with a tie among them, the full sort (whose order of ties is its own)."""
+    if values.size <= k + 1:
+        return np.argsort(values)[:k]
+    part = np.argpartition(values, k)[:k + 1]
+    part = part[np.argsort(values[part])]
+    if np.all(np.diff(values[part]) > 0):
+        return part[:k]
+    return np.argsort(values)[:k]
+
+
+def _pick_seed(ctx: _Context, x: np.ndarray, ok: np.ndarray, k: int, s_max: float):
+    """Row of the seed among one pass's Newton results on section ``k``, or None."""
+    sec = ctx.sections
+    valid = (ok & (x[:, 0] >= sec.s_lo[k] - 1e-9) & (x[:, 0] <= sec.s_hi[k] + 1e-9)
+             & (x[:, 0] <= s_max))
+    if not valid.any():
+        return None
+    pick = np.flatnonzero(valid)
+    if ctx.settings.indexing_ratio != 0.0:
+        # face hobbing: every blade-group passage reaches a root on another slot; the
+        # reference slot is the one cut near spin and roll zero
+        distance = np.abs(x[pick, 1:]).sum(axis=-1)  # |θ| (+ |q|)
+        pick = pick[np.argsort(distance, kind="stable")]
+    return int(pick[0])
 
 
 def _seed(ctx: _Context, z0: float, p0: float, depth: float):
     """Coarse search, then Newton, for one target: the start of the continuation.
 
-    The reference roll position (q = 0) is searched first (the settings normally place the
-    mean point there); a search over q in [−0.5, 0.5] rad follows if that fails.
+    The passes in order: the profile section first (the middle of a flank), then the
+    others; on each, the reference roll position (q = 0, the settings normally place the
+    mean point there), then q in [−0.5, 0.5] rad. The seed is the first pass's root inside
+    its section. Newton runs on the candidates of all passes in one batch (each point's
+    Newton is independent of the batch, so the root is the one the passes run one by one
+    find, bit for bit; a profile-section target costs a few more points per iteration, a
+    relief-section one a single run instead of up to eight); the candidate grids are
+    memoised (:func:`_candidate_grid`).
     """
     sec = ctx.sections
     s_max = sec.s_lo[sec.main] + 4.0 * depth + 5.0
-    searches = [np.zeros(1)]
-    if ctx.generate:
-        searches.append(np.linspace(-0.5, 0.5, 21))
-    # the profile section first (the middle of a flank), then the others
+    spreads = [False, True] if ctx.generate else [False]
     order = [sec.main] + [k for k in range(len(sec.s_lo)) if k != sec.main]
-    for k in order:
-        for q_vals in searches:
-            x0 = _seed_candidates(ctx, z0, p0, depth, q_vals, k)
-            n = len(x0)
-            x, ok = _newton(ctx, x0, np.full(n, k), np.full(n, z0), np.full(n, p0))
-            valid = (ok & (x[:, 0] >= sec.s_lo[k] - 1e-9) & (x[:, 0] <= sec.s_hi[k] + 1e-9)
-                     & (x[:, 0] <= s_max))
-            if valid.any():
-                pick = np.flatnonzero(valid)
-                if ctx.settings.indexing_ratio != 0.0:
-                    # face hobbing: every blade-group passage reaches a root on another
-                    # slot; the reference slot is the one cut near spin and roll zero
-                    distance = np.abs(x[pick, 1:]).sum(axis=-1)  # |θ| (+ |q|)
-                    pick = pick[np.argsort(distance, kind="stable")]
-                xs = x[pick[0]]
-                _, jac, _ = _evaluate(ctx, xs[None], np.array([k]), np.array([z0]),
-                                      np.array([p0]))
-                return xs, jac[0], k
+    passes = [(k, wide) for k in order for wide in spreads]
+    x0 = [_seed_candidates(ctx, z0, p0, depth, wide, k) for k, wide in passes]
+    sizes = [len(a) for a in x0]
+    ks = np.repeat([k for k, _ in passes], sizes)
+    n = int(ks.size)
+    x, ok = _newton(ctx, np.concatenate(x0), ks, np.full(n, z0), np.full(n, p0))
+    at = 0
+    for (k, _), size in zip(passes, sizes, strict=True):
+        sl = slice(at, at + size)
+        at += size
+        row = _pick_seed(ctx, x[sl], ok[sl], k, s_max)
+        if row is not None:
+            xs = x[sl][row]
+            _, jac, _ = _evaluate(ctx, xs[None], np.array([k]), np.array([z0]),
+                                  np.array([p0]))
+            return xs, jac[0], k
     raise InputError(
         "machine settings: no envelope solution at the middle of the flank "
         f"(axial position {z0:.4g} mm, radius {p0:.4g} mm): the cutter does not generate "
