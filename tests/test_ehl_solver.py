@@ -226,6 +226,56 @@ def test_mixed_rough_contact_between_limits() -> None:
     assert 0.0 < s.friction_coefficient < 0.1
 
 
+def _rough_condition(load: float, speed: float, rq: float, grid: Grid,
+                     temperature: float = 90.0) -> LineContactCondition:
+    b, _ = hertz_line_contact(load, R, STEEL_E_PRIME)
+    x = grid.coordinates() * b
+    return LineContactCondition(load_per_length=load, radius=R, entraining_velocity=speed,
+                                slide_to_roll=0.3, temperature=temperature,
+                                roughness_1=ground_profile(x, rq, seed=1),
+                                roughness_2=ground_profile(x, rq, seed=2))
+
+
+def test_cycling_node_sets_stop_early_with_convergence_error() -> None:
+    # A rough mixed condition this steady solver does not converge (p_h 1 GPa, u_e 5 m/s,
+    # Rq 1 µm each, λ ≈ 0.19, 256 nodes: the fluid/cavitation sets of nodes downstream of
+    # asperity peaks cycle). It must raise ConvergenceError — never return an unconverged
+    # answer — and, the cycle being detected, stop long before max_iterations (it took the
+    # full 200 iterations before). Cheap: ~2 s at 256 nodes.
+    import re
+
+    from friction.ehl.line_contact import ConvergenceError
+
+    load = 2 * math.pi * R * 1000.0**2 / STEEL_E_PRIME
+    grid = Grid(nodes=256, step_limit=3.0)
+    with pytest.raises(ConvergenceError, match="cycle") as info:
+        line_contact_summary(_rough_condition(load, 5.0, 1.0, grid), grid)
+    assert int(re.search(r"by iteration (\d+)", str(info.value)).group(1)) < 100
+
+
+@pytest.mark.slow
+def test_asperity_load_ratio_monotone_where_converged() -> None:
+    # Ground profile Rq 0.3 µm each, 556 N/mm, R 20 mm, 90 °C, 512 nodes: the conditions of
+    # the λ sweep that converge (λ 1.69, 1.05, 0.13 and u_e 1e-4 m/s) give an asperity load
+    # ratio that rises strictly as λ falls, from 0 (full film) to 1 (dry: all load on
+    # contact nodes, the identity of test_dry_rough_contact_equals_qp), and μ between the
+    # film's (< 0.02 here) and the boundary coefficient 0.1 (the oil file's μ_b).
+    # (the near-dry point on the grid of test_dry_rough_contact_equals_qp: with the inlet
+    # at −4 b and steps limited to 3 its node sets wander; on either grid it never
+    # returns an unconverged answer). ~25 s: slow.
+    mixed = Grid(nodes=512, step_limit=3.0)
+    dry = Grid(nodes=512, inlet=-2.0, step_limit=1e9)
+    ratios, mus = [], []
+    for speed, grid in ((19.95, mixed), (10.05, mixed), (0.495, mixed), (1e-4, dry)):
+        s = line_contact_summary(_rough_condition(556.0, speed, 0.3, grid), grid)
+        ratios.append(s.asperity_load_ratio)
+        mus.append(s.friction_coefficient)
+    assert ratios[0] < 1e-3 and ratios[-1] > 0.999
+    assert np.all(np.diff(ratios) > 0.0)
+    assert all(0.0 < m <= 0.1 + 1e-9 for m in mus)
+    assert mus[0] < 0.02 and mus[-1] == pytest.approx(0.1, rel=0.01)
+
+
 # ------------------------------------------------------------------------------ roughness
 def test_ground_profile_statistics() -> None:
     # Rq exact (scaled); skewness within sampling error of the target (8192 points with a
@@ -298,6 +348,8 @@ def test_bad_grid_and_roughness_parameters_named() -> None:
     cond = _smooth(556.0, 5.0, 75.0)
     with pytest.raises(InputError, match=r"grid\.nodes"):
         line_contact_summary(cond, Grid(nodes=4))
+    with pytest.raises(InputError, match=r"grid\.cycle_limit"):
+        line_contact_summary(cond, Grid(cycle_limit=1))
     with pytest.raises(InputError, match="skewness"):
         ground_profile(np.arange(64) * 0.002, 0.5, skewness=9.0)
     with pytest.raises(InputError, match="x"):

@@ -124,6 +124,13 @@ class Grid:
     tolerance : float — [1]
         Convergence: max |ΔP| and the scaled residual below it.
     max_iterations : int
+    step_limit : float — [1]
+        Largest max |ΔP| of one Newton step (longer steps are scaled down).
+    roughness_steps : int
+        Steps of the homotopy in the roughness amplitude (rough surfaces).
+    cycle_limit : int
+        The Newton iteration stops with :class:`ConvergenceError` when the same set of
+        contact and cavitation nodes is entered this many times (the sets cycle), ≥ 2.
     """
 
     nodes: int = 512
@@ -133,6 +140,7 @@ class Grid:
     max_iterations: int = 200
     step_limit: float = 0.3
     roughness_steps: int = 4
+    cycle_limit: int = 4
 
     def coordinates(self) -> Array:
         """Node abscissae X (nodes,) [1]."""
@@ -145,6 +153,7 @@ class Grid:
         real("grid.outlet", self.outlet, low=1.2)
         real("grid.tolerance", self.tolerance, low=1e-14, high=1e-3)
         integer("grid.max_iterations", self.max_iterations, low=1)
+        integer("grid.cycle_limit", self.cycle_limit, low=2)
 
 
 class LineContactSummary(NamedTuple):
@@ -307,6 +316,32 @@ def _update_sets(kind: NDArray[np.int_], st: NodeState, s: _Setup) -> int:
     return int(np.count_nonzero(kind != old))
 
 
+_KIND_NAMES = {FLUID: "fluid", CAVITATION: "cavitation", CONTACT: "contact"}
+
+
+def _check_cycle(kind: NDArray[np.int_], before: NDArray[np.int_], entered: dict[bytes, int],
+                 iteration: int, limit: int) -> None:
+    """Log a change of the node sets; raise :class:`ConvergenceError` when they cycle.
+
+    ``entered`` counts how often each set has been entered by a change; the same set
+    entered ``limit`` times means the iteration goes round a cycle of sets and will not
+    settle (the Newton steps between the changes are then wasted).
+    """
+    moved = np.flatnonzero(kind != before)
+    log.debug("newton %d: %d node(s) changed state: %s", iteration, moved.size,
+              ", ".join(f"{i} {_KIND_NAMES[int(before[i])]}->{_KIND_NAMES[int(kind[i])]}"
+                        for i in moved[:8]))
+    key = kind.tobytes()
+    entered[key] = entered.get(key, 0) + 1
+    if entered[key] >= limit:
+        raise ConvergenceError(
+            f"line contact: the contact/cavitation node sets cycle (the same set entered "
+            f"{entered[key]} times by iteration {iteration}; nodes {moved[:8].tolist()} "
+            f"switch, e.g. {_KIND_NAMES[int(before[moved[0]])]} -> "
+            f"{_KIND_NAMES[int(kind[moved[0]])]}); the rough mixed regime of this steady "
+            f"solver does not converge here (docs/ehl.md, Validity)")
+
+
 def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] | None = None,
             ) -> tuple[Array, float, NDArray[np.int_], int]:
     n = p.size
@@ -316,6 +351,7 @@ def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] |
     kind[0] = kind[-1] = CAVITATION
     load_row = np.full(n + 1, s.spacing)
     load_row[-1] = 0.0
+    entered: dict[bytes, int] = {}
     for it in range(1, grid.max_iterations + 1):
         st = _state(s, p, h0)
         res, jac = assemble(st, kind, s.kernel_matrix, s.spacing, s.lambda_bar)
@@ -329,7 +365,10 @@ def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] |
         h0 = h0 + omega * dh0
         p[kind == CAVITATION] = 0.0
         st = _state(s, p, h0)
+        before = kind.copy()
         changed = _update_sets(kind, st, s)
+        if changed:
+            _check_cycle(kind, before, entered, it, grid.cycle_limit)
         p = np.where(kind == CAVITATION, 0.0, np.maximum(p, 0.0))
         if not np.all(np.isfinite(p)) or not math.isfinite(h0):
             raise ConvergenceError("line contact: the Newton iteration diverged (non-finite)")
