@@ -38,7 +38,7 @@ import scipy.sparse as sp
 import xarray as xr
 
 from contact.compliance.fe import FEOptions, locate_flank_points
-from contact.compliance.fe.contact_compliance import shared_coefficients
+from contact.compliance.fe.contact_compliance import pair_coefficients
 from contact.utca import EaseOff
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
@@ -95,8 +95,7 @@ def prepare_coefficients(case, flank: str | None = None, options=None, *,
     from contact.utca.easeoff import working_flanks
 
     flanks = dict(zip(MEMBERS, working_flanks(case, flank), strict=True))
-    return {m: shared_coefficients(case, m, flanks[m], options, progress=progress)
-            for m in MEMBERS}
+    return pair_coefficients(case, flanks, options, progress=progress)
 
 
 def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str, np.ndarray]:
@@ -268,17 +267,9 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         raise InputError(f"ltca: lacks {', '.join(missing)} (not an /ltca dataset)")
     t0 = time.perf_counter()
     flanks = {"pinion": easeoff.pinion_flank, "gear": easeoff.gear_flank}
-    coef = dict(coefficients or {})
-    for name in MEMBERS:
-        if name not in coef:
-            # read once per process (a study's worker, a duty cycle's bins)
-            coef[name] = shared_coefficients(case, name, flanks[name], options, cache=cache,
-                                             cache_dir=cache_dir, progress=progress,
-                                             solver=solver)
-        elif coef[name].attrs.get("flank") != flanks[name]:
-            raise InputError(f"coefficients: the {name}'s are of its "
-                             f"{coef[name].attrs.get('flank')} flank, the analysis loads "
-                             f"its {flanks[name]} flank")
+    # read once per process (a study's worker, a duty cycle's bins)
+    coef = pair_coefficients(case, flanks, options, coefficients, cache=cache,
+                             cache_dir=cache_dir, progress=progress, solver=solver)
     t1 = time.perf_counter()
     pts = member_contact_points(case, easeoff, ltca)
     force = ltca["force"].transpose("torque", "roll", "pair", "segment").values

@@ -49,6 +49,7 @@ FE_VARIABLES              which FE compliance: name → variable of the coeffici
 FEPairModel               both members' coefficients and the tooth measurement for Weber
 fe_pair_model             build it (the coefficients from the disk cache, built if absent)
 shared_coefficients       a member's coefficients, a cache file read once per process
+pair_coefficients         both members' coefficients of the analysed flanks, given or shared
 segment_weights           the hat weights of uniform line loads over straight segments
 interpolated_compliance   a member's compliance between weighted loads (unsymmetrised)
 fe_mesh_compliance_many   C of several roll positions, as :func:`mesh_compliance_many`
@@ -86,6 +87,7 @@ __all__ = [
     "fe_mesh_compliance_many",
     "fe_pair_model",
     "interpolated_compliance",
+    "pair_coefficients",
     "segment_weights",
     "shared_coefficients",
 ]
@@ -239,6 +241,35 @@ def fe_pair_model(case: Case, flanks: dict[str, str], options: FEOptions | None,
     analyses of the process (a study's points, a misalignment sweep).
     """
     t0 = time.perf_counter()
+    coef = pair_coefficients(case, flanks, options, coefficients, cache=cache,
+                             cache_dir=cache_dir, progress=progress, solver=solver)
+    return FEPairModel(coef, teeth, variable, time.perf_counter() - t0)
+
+
+def pair_coefficients(case: Case, flanks: dict[str, str], options: FEOptions | None,
+                      coefficients: dict | None = None, *, cache: bool = True,
+                      cache_dir=None, progress: bool = False, solver: str = "auto"
+                      ) -> dict[str, xr.Dataset]:
+    """Both members' coefficients of the analysed flanks: those given, the others from
+    :func:`shared_coefficients` (read once per process, or built and cached).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flanks : dict — ``{"pinion": flank, "gear": flank}`` the working flank names
+    options : FEOptions or None — the FE model (None: the default)
+    coefficients : dict, optional — member → coefficients already at hand
+    cache, cache_dir, progress, solver — as :func:`shared_coefficients`
+
+    Returns
+    -------
+    dict — ``"pinion"``, ``"gear"`` → xarray.Dataset
+
+    Raises
+    ------
+    InputError
+        Coefficients given for another flank than the analysed one (named).
+    """
     coef = dict(coefficients or {})
     for name in _MEMBERS:
         if name not in coef:
@@ -249,7 +280,7 @@ def fe_pair_model(case: Case, flanks: dict[str, str], options: FEOptions | None,
             raise InputError(f"coefficients: the {name}'s are of its "
                              f"{coef[name].attrs.get('flank')} flank, the analysis loads its "
                              f"{flanks[name]} flank")
-    return FEPairModel(coef, teeth, variable, time.perf_counter() - t0)
+    return coef
 
 
 def segment_weights(coefficients: xr.Dataset, midpoints: np.ndarray, ends: np.ndarray, *,
