@@ -210,7 +210,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
 
 def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
     """Every bin's dataset, from the parts of an interrupted run and the engine."""
-    from contact.study.engine import run_tasks
+    from contact.study.engine import stream_tasks
 
     n = shared.duty.n_bins
     store = None
@@ -222,24 +222,10 @@ def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
         store = ResultStore(out, {"fingerprint": shared.fingerprint(), "kind": "duty_cycle",
                                   "bins": n}, chunk_size=1)
         done = store.done()
-    kept: list[xr.Dataset] = []
     todo = [(i,) for i in range(n) if i not in done]
-    bar = None
-    if run.progress:
-        from tqdm.auto import tqdm
-
-        bar = tqdm(total=n, initial=len(done), desc="duty cycle", unit="bin")
-    try:
-        for ds in run_tasks(analyse_bin, shared, todo, scheduler=run.scheduler,
-                            n_workers=run.n_workers):
-            (store.add if store is not None else kept.append)(ds)
-            if bar is not None:
-                bar.update()
-    finally:
-        if store is not None:
-            store.flush()
-        if bar is not None:
-            bar.close()
+    kept = stream_tasks(analyse_bin, shared, todo, lambda ds: ds, store=store,
+                        progress=run.progress, desc="duty cycle", unit="bin", total=n,
+                        initial=len(done), scheduler=run.scheduler, n_workers=run.n_workers)
     parts = [store.combined()] if store is not None else kept
     ds = xr.concat(parts, dim="point", join="outer")
     ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))

@@ -35,6 +35,7 @@ run_points      all points of a study, on Dask
 open_client     a Dask client for a scheduler argument (context manager)
 worker_environment  a LocalCluster's workers started without distributed's malloc trim
 run_tasks       any function over items on Dask, results as they finish
+stream_tasks    run_tasks with each result streamed, as a dataset, to a store (progress, flush)
 write_study     write a study's result file and remove its parts
 """
 
@@ -46,7 +47,7 @@ import logging
 import os
 import signal
 import threading
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -67,7 +68,7 @@ from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 
 __all__ = ["SYNCHRONOUS", "WORKER_ENVIRON_UNSET", "analyse_point", "open_client", "run_points",
-           "run_tasks", "worker_environment", "write_study"]
+           "run_tasks", "stream_tasks", "worker_environment", "write_study"]
 
 log = logging.getLogger(__name__)
 
@@ -388,32 +389,12 @@ def run_points(
             log.info("resuming %s: %d of %d points already computed", out, len(done),
                      len(pts))
     todo = [i for i in range(len(pts)) if i not in done]
-    kept: list[xr.Dataset] = []
-
-    def finish(res: PointResult) -> None:
-        ds = _point_dataset(shared, names, res.index, pts[res.index], res)
-        if store is not None:
-            store.add(ds)
-        else:
-            kept.append(ds)
-
-    bar = None
-    if progress:
-        from tqdm.auto import tqdm
-
-        bar = tqdm(total=len(pts), initial=len(done), desc=kind, unit="point")
-    try:
-        # analyse_point looked up here, at call time (tests count its calls)
-        for res in run_tasks(analyse_point, shared, [(i, pts[i]) for i in todo],
-                             scheduler=scheduler, n_workers=n_workers):
-            finish(res)
-            if bar is not None:
-                bar.update()
-    finally:
-        if store is not None:
-            store.flush()
-        if bar is not None:
-            bar.close()
+    # analyse_point looked up here, at call time (tests count its calls)
+    kept = stream_tasks(
+        analyse_point, shared, [(i, pts[i]) for i in todo],
+        lambda res: _point_dataset(shared, names, res.index, pts[res.index], res),
+        store=store, progress=progress, desc=kind, unit="point", total=len(pts),
+        initial=len(done), scheduler=scheduler, n_workers=n_workers)
     if store is not None:
         ds = store.combined()
         if ds.sizes["point"] != len(pts):
@@ -439,6 +420,54 @@ def run_points(
                                       {"long_name": "gear member"}))
     ds["reason"] = ds["reason"].astype(str)
     return _stamp(ds, shared, kind, len(done))
+
+
+def stream_tasks(function: Any, shared: Any, items: Sequence[tuple],
+                 to_dataset: Callable[[Any], xr.Dataset], *, store: ResultStore | None,
+                 progress: bool, desc: str, unit: str, total: int, initial: int = 0,
+                 scheduler: Any = None, n_workers: int | None = None) -> list[xr.Dataset]:
+    """Run tasks with :func:`run_tasks` and stream each result, as a dataset, to a store.
+
+    Parameters
+    ----------
+    function, shared, items, scheduler, n_workers
+        As :func:`run_tasks`.
+    to_dataset : callable
+        A task's result → its dataset (run in the client, as results arrive).
+    store : contact.study.store.ResultStore or None
+        Where each dataset goes (flushed at the end, also on an interrupt or error);
+        None: the datasets are returned.
+    progress : bool
+        A progress bar (``desc``, ``unit``) over ``total`` tasks, ``initial`` done before.
+
+    Returns
+    -------
+    list of xarray.Dataset
+        The datasets in the order they finished; empty when a store took them.
+
+    Raises
+    ------
+    As :func:`run_tasks` (an interrupted study keeps what its store was given).
+    """
+    kept: list[xr.Dataset] = []
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=total, initial=initial, desc=desc, unit=unit)
+    try:
+        for res in run_tasks(function, shared, items, scheduler=scheduler,
+                             n_workers=n_workers):
+            ds = to_dataset(res)
+            (store.add if store is not None else kept.append)(ds)
+            if bar is not None:
+                bar.update()
+    finally:
+        if store is not None:
+            store.flush()
+        if bar is not None:
+            bar.close()
+    return kept
 
 
 def run_tasks(function: Any, shared: Any, items: Sequence[tuple], *, scheduler: Any = None,

@@ -160,7 +160,7 @@ def run_friction_study(
         A bad design (named input), parts of another study at ``OUTPUT.parts``, a missing
         output directory, a bad scheduler or worker count.
     """
-    from contact.study.engine import run_tasks
+    from contact.study.engine import stream_tasks
 
     t0 = time.perf_counter()
     settings = settings or SolveSettings()
@@ -184,25 +184,11 @@ def run_friction_study(
         done = store.done()
         if done:
             log.info("resuming %s: %d of %d points already solved", out, len(done), n)
-    kept: list[xr.Dataset] = []
-    bar = None
-    if progress:
-        from tqdm.auto import tqdm
-
-        bar = tqdm(total=n, initial=len(done), desc="friction study", unit="point")
     todo = [(i, points[i]) for i in range(n) if i not in done]
-    try:
-        for res in run_tasks(solve_design_point, settings, todo, scheduler=scheduler,
-                             n_workers=n_workers):
-            ds = _point_dataset(res.index, points[res.index], res)
-            (store.add if store is not None else kept.append)(ds)
-            if bar is not None:
-                bar.update()
-    finally:
-        if store is not None:
-            store.flush()
-        if bar is not None:
-            bar.close()
+    kept = stream_tasks(solve_design_point, settings, todo,
+                        lambda res: _point_dataset(res.index, points[res.index], res),
+                        store=store, progress=progress, desc="friction study", unit="point",
+                        total=n, initial=len(done), scheduler=scheduler, n_workers=n_workers)
     ds = store.combined() if store is not None else xr.concat(kept, dim="point")
     ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
     if ds.sizes["point"] != n:
