@@ -18,14 +18,12 @@ import base64
 import io
 import math
 import os
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
 import xarray as xr
 
 from geometry import __version__
-from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
 
 __all__ = ["duty_report_context", "render_duty_report", "write_duty_report"]
@@ -178,13 +176,9 @@ def render_duty_report(result: xr.DataTree | xr.Dataset, *, figures: bool = True
     InputError
         Not a duty-cycle result.
     """
-    from jinja2 import Environment, select_autoescape
+    from contact.plots.report import render_page
 
-    template = (resources.files("contact") / "templates" / "duty_report.html.j2").read_text(
-        encoding="utf-8")
-    env = Environment(autoescape=select_autoescape(default=True, default_for_string=True),
-                      trim_blocks=True, lstrip_blocks=True)
-    return env.from_string(template).render(**duty_report_context(result, figures=figures))
+    return render_page("duty_report.html.j2", duty_report_context(result, figures=figures))
 
 
 def write_duty_report(result: xr.DataTree | xr.Dataset, path: str | os.PathLike[str]
@@ -200,10 +194,8 @@ def write_duty_report(result: xr.DataTree | xr.Dataset, path: str | os.PathLike[
     InputError
         Not a duty-cycle result; the directory of ``path`` does not exist.
     """
-    target = Path(path)
-    if not target.parent.exists():
-        raise InputError(f"path: directory {str(target.parent)!r} does not exist")
-    html = render_duty_report(result)
-    with atomic_path(target, mode=0o644) as tmp:
-        tmp.write_text(html, encoding="utf-8")
-    return target
+    from contact.plots.report import write_page
+
+    if not Path(path).parent.exists():  # before the figures are drawn
+        raise InputError(f"path: directory {str(Path(path).parent)!r} does not exist")
+    return write_page(render_duty_report(result), path)

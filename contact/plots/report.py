@@ -14,6 +14,8 @@ Public functions
 ----------------
 report_context   the values the page shows, from a DataTree
 render_report    the HTML page as text
+render_page      any of the toolkit's HTML templates filled (the report, the duty cycle's)
+write_page       an HTML page written atomically
 write_report     write it atomically to a file
 """
 
@@ -42,8 +44,8 @@ from geometry import __version__
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError, LTCAError
 
-__all__ = ["SUMMARY_COLUMNS", "SummaryColumn", "render_report", "report_context",
-           "write_report"]
+__all__ = ["SUMMARY_COLUMNS", "SummaryColumn", "render_page", "render_report", "report_context",
+           "write_page", "write_report"]
 
 @dataclass(frozen=True)
 class SummaryColumn:
@@ -362,6 +364,50 @@ def report_context(tree: xr.DataTree,
     }
 
 
+def render_page(template: str, context: Mapping[str, Any]) -> str:
+    """One of the toolkit's HTML templates (``contact/templates/``) filled with a context.
+
+    Parameters
+    ----------
+    template : str
+        The template's file name, e.g. ``"report.html.j2"``.
+    context : mapping
+        The template's values.
+
+    Returns
+    -------
+    str
+        The HTML text (autoescaped; the ``units`` filter is :func:`page_units`).
+    """
+    from jinja2 import Environment, select_autoescape
+
+    text = (resources.files("contact") / "templates" / template).read_text(encoding="utf-8")
+    env = Environment(autoescape=select_autoescape(default=True, default_for_string=True),
+                      trim_blocks=True, lstrip_blocks=True)
+    env.filters["units"] = page_units
+    return env.from_string(text).render(**context)
+
+
+def write_page(html: str, path: str | os.PathLike[str]) -> Path:
+    """Write an HTML page to ``path`` atomically (a temporary file, then a rename).
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    InputError
+        If the directory of ``path`` does not exist.
+    """
+    target = Path(path)
+    if not target.parent.exists():
+        raise InputError(f"path: directory {str(target.parent)!r} does not exist")
+    with atomic_path(target, mode=0o644) as tmp:
+        tmp.write_text(html, encoding="utf-8")
+    return target
+
+
 def render_report(tree: xr.DataTree, figures: Iterable[RenderedFigure] | None = None) -> str:
     """The report of an analysis as one self-contained HTML page (figures embedded).
 
@@ -376,14 +422,7 @@ def render_report(tree: xr.DataTree, figures: Iterable[RenderedFigure] | None = 
     str
         The HTML text (UTF-8, no external resources).
     """
-    from jinja2 import Environment, select_autoescape
-
-    template = (resources.files("contact") / "templates" / "report.html.j2").read_text(
-        encoding="utf-8")
-    env = Environment(autoescape=select_autoescape(default=True, default_for_string=True),
-                      trim_blocks=True, lstrip_blocks=True)
-    env.filters["units"] = page_units
-    return env.from_string(template).render(**report_context(tree, figures))
+    return render_page("report.html.j2", report_context(tree, figures))
 
 
 def write_report(tree: xr.DataTree, path: str | os.PathLike[str],
@@ -399,10 +438,6 @@ def write_report(tree: xr.DataTree, path: str | os.PathLike[str],
     InputError
         If the directory of ``path`` does not exist.
     """
-    target = Path(path)
-    if not target.parent.exists():
-        raise InputError(f"path: directory {str(target.parent)!r} does not exist")
-    html = render_report(tree, figures)
-    with atomic_path(target, mode=0o644) as tmp:
-        tmp.write_text(html, encoding="utf-8")
-    return target
+    if not Path(path).parent.exists():  # before the figures are drawn
+        raise InputError(f"path: directory {str(Path(path).parent)!r} does not exist")
+    return write_page(render_report(tree, figures), path)
