@@ -227,3 +227,60 @@ def test_edge_gap_curvature_stays_within_the_nodes_range():
                     easeoff=eo)
     assert float(ds["separation"].min()) > -1e-6
     assert float(ds["transmission_error"].min()) > 0
+
+
+def test_pinion_edge_does_not_hang_on_the_last_bit_of_a_contour_vertex(monkeypatch):
+    """Where the pinion-margin contour crosses an ease-off grid line between a computed
+    cell and one with an uncomputed corner, its vertex lies on that line (the contour
+    grid's lines include the ease-off grid's), and contourpy's interpolation puts it on
+    it or a unit in the last place to either side, as the margin's round-off falls: the
+    pinion edge must not start one vertex earlier or later for that. The default case at
+    the sweep guard's point ΔE = −0.10 mm, ΔP = 0.12 mm has such a vertex at v = 0.335;
+    its pinion edge had 140 segments with one machine's BLAS kernels and 139 with
+    another's (tests/test_sweep_guard.py). Here the vertex is moved to each side of the
+    line: the boundary is the same to round-off."""
+    import contourpy
+
+    from contact.catalogue import DEFAULT_CASE, bundled_case_path
+
+    case = load_case(bundled_case_path(DEFAULT_CASE))
+    case = dataclasses.replace(case, misalignment=dataclasses.replace(
+        case.misalignment, delta_E=-0.10, delta_P=0.12))
+    f = EaseOffFields(ease_off(case))
+    generator = contourpy.contour_generator
+    lines = {"u": np.asarray(f.u), "v": np.asarray(f.v)}
+    found = []
+
+    def moved(side):
+        def contour_generator(*args, **kwargs):
+            gen = generator(*args, **kwargs)
+
+            class Moved:
+                def lines(self, level):
+                    out = []
+                    for line in gen.lines(level):
+                        line = line.copy()
+                        for axis, grid in enumerate(lines.values()):
+                            x = line[:, axis]
+                            k = np.argmin(np.abs(x[:, None] - grid[None]), axis=1)
+                            on = np.abs(x - grid[k]) < 1e-12
+                            found.append(int(on.sum()))
+                            x[on] = np.nextafter(grid[k[on]], side * np.inf)
+                        out.append(line)
+                    return out
+
+            return Moved()
+        return contour_generator
+
+    boundaries = []
+    for side in (-1, 1):
+        monkeypatch.setattr(contourpy, "contour_generator", moved(side))
+        boundaries.append(flank_boundary(f, 0.25))
+    low, high = boundaries
+    # the contour's crossing of v = 0.335 between a computed cell and an uncomputed one
+    cells = f.cell_ok
+    assert not cells[0, 6] and cells[0, 5] and sum(found) > 0
+    assert np.array_equal(low.kind, high.kind)
+    for name in ("u", "v", "position"):
+        np.testing.assert_allclose(getattr(low, name), getattr(high, name), rtol=0,
+                                   atol=1e-12)

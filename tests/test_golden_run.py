@@ -27,14 +27,11 @@ a machine's last digit fails on any machine, not only on a new user's.
 
 from __future__ import annotations
 
-import os
-import platform
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from blas_kernels import PRINT_KERNEL, run_on_other_kernel
 from golden import GOLDEN, differences, run_default
 
 from geometry.core.io import read_netcdf
@@ -67,21 +64,14 @@ def test_the_comparison_sees_a_change(default_run):
                differences(changed, golden, rtol=RTOL))
 
 
-#: OpenBLAS kernels forced in the other-kernel run: the first of each list that is not the
-#: kernel this machine chose (generic kernels that run on any CPU of the architecture)
-OTHER_KERNELS = {"x86_64": ("Prescott", "Nehalem"), "AMD64": ("Prescott", "Nehalem"),
-                 "aarch64": ("ARMV8", "NEOVERSEN1"), "arm64": ("ARMV8", "NEOVERSEN1")}
-
-_OTHER_KERNEL_RUN = """
+_OTHER_KERNEL_RUN = PRINT_KERNEL + """
 import sys
 from pathlib import Path
 import tempfile
-from threadpoolctl import threadpool_info, threadpool_limits
+from threadpoolctl import threadpool_limits
 sys.path.insert(0, {tests!r})
 from golden import GOLDEN, differences, run_default
 from geometry.core.io import read_netcdf
-arch = [i.get("architecture") for i in threadpool_info() if i["internal_api"] == "openblas"]
-print("kernel", arch)
 with threadpool_limits(limits=1, user_api="blas"), tempfile.TemporaryDirectory() as tmp:
     new = read_netcdf(run_default(Path(tmp)), tree=True)
 diff = differences(new, read_netcdf(GOLDEN, tree=True), rtol={rtol!r})
@@ -89,31 +79,11 @@ print("\\n".join(["DIFFERENCES"] + diff) if diff else "AGREES")
 """
 
 
-def _openblas_kernel() -> str | None:
-    from threadpoolctl import threadpool_info
-
-    arch = [i.get("architecture") for i in threadpool_info() if i["internal_api"] == "openblas"]
-    return arch[0] if arch else None
-
-
 def test_golden_file_on_other_blas_kernels():
     """The default run agrees with the golden file (same tolerances) when OpenBLAS runs
     another CPU's kernels: a fresh AMD machine's kernels differed in the last digit and
     flipped principal directions, which the machine that wrote the file never saw
     (issue 31). About 10 s: one more default run, in a subprocess."""
-    kernel = _openblas_kernel()
-    if kernel is None:
-        pytest.skip("numpy's BLAS is not OpenBLAS: OPENBLAS_CORETYPE does not apply")
-    choices = OTHER_KERNELS.get(platform.machine())
-    if choices is None:
-        pytest.skip(f"no generic OpenBLAS kernel listed for {platform.machine()}")
-    other = next(k for k in choices if k.lower() != kernel.lower())
-    env = {**os.environ, "OPENBLAS_CORETYPE": other}
-    code = _OTHER_KERNEL_RUN.format(tests=str(Path(__file__).parent), rtol=RTOL)
-    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
-                         text=True, timeout=600)
-    assert out.returncode == 0, out.stderr[-3000:]
-    # OpenBLAS names some forced kernels by their family (Prescott runs as 'Katmai')
-    assert kernel.lower() not in out.stdout.splitlines()[0].lower(), \
-        f"OpenBLAS did not take OPENBLAS_CORETYPE={other}: {out.stdout.splitlines()[0]}"
-    assert "AGREES" in out.stdout, out.stdout[-5000:]
+    out = run_on_other_kernel(_OTHER_KERNEL_RUN.format(tests=str(Path(__file__).parent),
+                                                       rtol=RTOL))
+    assert "AGREES" in out, out[-5000:]

@@ -155,7 +155,12 @@ def flank_boundary(fields, step: float) -> FlankBoundary:
     zg = f.margin(ug, vg).T  # (nv, nu)
     for line in contourpy.contour_generator(ug, vg, zg).lines(0.0):
         uu, vv = line[:, 0], line[:, 1]
-        for a, b in _runs(f.good_cell(uu, vv)):
+        # a vertex lies on a line of the contour grid, and where that is a line of the
+        # ease-off grid too (every 4th) contourpy's interpolation puts it a unit in the
+        # last place to either side: its cell is judged on the line itself, else the
+        # pinion edge starts one vertex earlier or later (one segment more or fewer) as
+        # the round-off of the BLAS kernels falls (tests/test_sweep_guard.py)
+        for a, b in _runs(f.good_cell(_onto_grid(uu, f.u), _onto_grid(vv, f.v))):
             if b > a:
                 lines.append((3, uu[a:b + 1], vv[a:b + 1]))
     pieces = [_piece(f, kind, uu, vv, step) for kind, uu, vv in lines]
@@ -171,6 +176,16 @@ def _runs(ok: np.ndarray) -> list[tuple[int, int]]:
     """(first, last) index of each run of True."""
     edge = np.diff(np.r_[0, ok.astype(np.int8), 0])
     return list(zip(np.flatnonzero(edge == 1), np.flatnonzero(edge == -1) - 1, strict=True))
+
+
+def _onto_grid(x: np.ndarray, grid: np.ndarray, rtol: float = 1e-9) -> np.ndarray:
+    """``x`` with each value within ``rtol`` of the spacing of a line of ``grid`` (ascending,
+    ≥ 2 lines) put on that line: places on a grid line that round-off moved off it."""
+    grid = np.asarray(grid, dtype=float)
+    k = np.clip(np.searchsorted(grid, x), 1, grid.size - 1)
+    lo, hi = grid[k - 1], grid[k]
+    nearest = np.where(x - lo <= hi - x, lo, hi)
+    return np.where(np.abs(x - nearest) <= rtol * (hi - lo), nearest, x)
 
 
 def _margin_crossing(uu, vv, m, i: int, j: int):
