@@ -390,5 +390,9 @@ def meshing_buffer(buf: np.ndarray, length_scale: float):
 
 def _cross0(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Cross product over the first axis (component-major arrays, broadcasting)."""
-    return np.stack([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                     a[0] * b[1] - a[1] * b[0]])
+    out = np.empty((3, *np.broadcast_shapes(a.shape[1:], b.shape[1:])))
+    # each component a_i b_j − a_j b_i, written in place (no stack of temporaries)
+    for k, (i, j) in enumerate(((1, 2), (2, 0), (0, 1))):
+        np.multiply(a[i], b[j], out=out[k])
+        out[k] -= a[j] * b[i]
+    return out
