@@ -26,6 +26,12 @@ least and largest whole times. Targets (issue 32, one core): the default case's 
 analysis ≤ 0.25 s, a study point ≤ 0.25 s of CPU (≥ 6 points/s on 2 workers: see
 ``benchmarks/sweep.py``).
 
+The work of one study point is also counted (load-independent, unlike the times): the
+envelope solver's Newton loops and evaluations (with their points), the spline evaluations
+(FITPACK, with their points) and the Python-level calls (``cProfile``'s count), each run
+once more at the first offset. A change that makes a point cheaper without changing its
+arithmetic shows here as fewer calls for the same points.
+
 ``--baseline`` (a reference case; without a value the bundled default) puts a case first,
 e.g. face-hobbed cases beside the face-milled default (target: a face-hobbed analysis
 ≤ 1.5 × the face-milled one)::
@@ -93,7 +99,8 @@ def measure(cases, torque: float, opts: LTCAOptions, repeat: int) -> list[dict]:
     """Per case: the stage CPU times [s] of ``repeat`` whole analyses and study points.
 
     Returns one dict per case: ``name``, ``method``, ``analysis`` and ``point`` (lists of
-    (total, stages) per run), ``passes`` (the LTCA's passes in the last whole analysis).
+    (total, stages) per run), ``passes`` (the LTCA's passes in the last whole analysis),
+    ``counts`` (:func:`work_counts` of a study point at the first offset).
     """
     clock = StageClock().install()
     logger = logging.getLogger("contact.ltca.mesh_cycle")
@@ -124,7 +131,53 @@ def measure(cases, torque: float, opts: LTCAOptions, repeat: int) -> list[dict]:
         clock.remove()
         logger.removeHandler(passes)
         logger.setLevel(level)
+    dE, dP = _offsets(1)[0]
+    for k, (c, s) in enumerate(zip(cases, shared, strict=True)):
+        out[k]["counts"] = work_counts(s, {"delta_E": c.misalignment.delta_E + dE,
+                                           "delta_P": c.misalignment.delta_P + dP})
     return out
+
+
+def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
+    """The work of one study point, counted: the envelope solver's Newton loops and
+    evaluations (and their points), the spline evaluations (and their points) and the
+    Python-level calls (``cProfile``'s count of function calls)."""
+    import cProfile
+    import pstats
+
+    import numpy as np
+    from scipy.interpolate import _fitpack2
+
+    import geometry.machine.meshing as meshing
+
+    n = dict.fromkeys(("Newton loops", "envelope evaluations", "envelope points",
+                       "spline evaluations", "spline points"), 0)
+    originals = (meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev)
+
+    def newton(*args):
+        n["Newton loops"] += 1
+        return originals[0](*args)
+
+    def evaluate(ctx, x, *args):
+        n["envelope evaluations"] += 1
+        n["envelope points"] += len(x)
+        return originals[1](ctx, x, *args)
+
+    def ev(self, xi, yi, dx=0, dy=0):
+        n["spline evaluations"] += 1
+        n["spline points"] += int(np.size(xi))
+        return originals[2](self, xi, yi, dx, dy)
+
+    meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev = newton, evaluate, ev
+    profile = cProfile.Profile()
+    try:
+        profile.enable()
+        analyse_point(shared, 0, point)
+        profile.disable()
+    finally:
+        meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev = originals
+    n["Python-level calls"] = pstats.Stats(profile).total_calls
+    return n
 
 
 def _median_stages(runs: list[tuple[float, dict]]) -> tuple[float, dict[str, float]]:
@@ -202,6 +255,11 @@ def main() -> None:
     print()
     print_table(results, "point", "study point (contact.study.engine.analyse_point, no "
                 "geometry), in this process:")
+    print()
+    print("work of one study point, counted (load-independent):")
+    rows = [[name, *(f"{r['counts'][name]:,}" for r in results)]
+            for name in results[0]["counts"]]
+    print(tabulate(rows, headers=["", *(r["name"] for r in results)], tablefmt="github"))
     print()
     ref = results[0]
     t_an = statistics.median(t for t, _ in ref["analysis"])

@@ -71,7 +71,11 @@ class _Counted:
     def __init__(self, search):
         self.search, self.calls, self.cpu = search, 0, 0.0
 
-    def __call__(self, *args):
+    def __call__(self, ctx, z0, p0, depth, solved=None):
+        # (the reference search runs its own Newton; the fast one may take the results of
+        # its starts run along with solve_envelope's guesses, ``solved``)
+        args = (ctx, z0, p0, depth) if self.search is _seed_reference else (ctx, z0, p0, depth,
+                                                                            solved)
         t = time.process_time()
         out = self.search(*args)
         self.cpu += time.process_time() - t

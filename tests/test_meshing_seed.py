@@ -139,13 +139,47 @@ def test_seed_equals_the_search_pass_by_pass(case_name, member, flank):
     assert meshing._candidate_grid.cache_info().hits > 0
 
 
+@pytest.mark.parametrize("case_name", ["kolivand2009_fm_11x41_reference",
+                                       "kolivand2009_fh_12x41_reference"])
+def test_seed_from_a_larger_batch_is_the_same(case_name):
+    """solve_envelope runs the seed search's starts in the Newton batch of its guesses
+    where the seed target's guess lies off the profile section: the seed picked from
+    those results is the one the search's own Newton finds, bit for bit (each point's
+    Newton is independent of the batch), on targets of every blade section."""
+    ctx, blank, depth = _context(case_name, "pinion", "convex")
+    targets, _ = _section_targets(ctx, blank, depth)
+    rng = np.random.default_rng(0)
+    for z0, p0 in targets:
+        try:
+            alone = meshing._seed(ctx, z0, p0, depth)
+        except InputError:
+            continue
+        starts = meshing._seed_starts(ctx, z0, p0, depth)
+        x0, ks = starts[0], starts[1]
+        # 25 other points ahead of them, at another target, as a placement iteration's
+        # guesses would be
+        pick = rng.integers(0, len(x0), 25)
+        extra = x0[pick] + rng.normal(0.0, 0.05, (25, x0.shape[1]))
+        m = len(extra)
+        x, ok = meshing._newton(ctx, np.concatenate([extra, x0]), np.r_[ks[pick], ks],
+                                np.r_[np.full(m, z0 + 0.3), np.full(len(x0), z0)],
+                                np.full(m + len(x0), p0))
+        batched = meshing._seed(ctx, z0, p0, depth, solved=(starts, (x[m:], ok[m:])))
+        assert batched[2] == alone[2]
+        np.testing.assert_array_equal(batched[0], alone[0])
+        np.testing.assert_array_equal(batched[1], alone[1])
+
+
 @cache
 def _ease_offs(case_name, flank, reference):
     conjugate_map.clear_memos()  # the memoised forward map and gear nodes ran _seed too
     meshing._candidate_grid.cache_clear()
     if reference:
         mp = pytest.MonkeyPatch()
-        mp.setattr(meshing, "_seed", _seed_reference)
+        # (the reference search runs its own Newton: the starts solve_envelope ran along
+        # with its guesses, ``solved``, are left unused)
+        mp.setattr(meshing, "_seed",
+                   lambda ctx, z0, p0, depth, solved=None: _seed_reference(ctx, z0, p0, depth))
         try:
             return ease_off(resolve_case(case_name), flank=flank)
         finally:

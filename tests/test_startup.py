@@ -4,7 +4,7 @@ Each command module imports its own dependencies inside its run function, the pa
 public names are imported when first used (``geometry.core.lazy``), and the help's data
 (the optimisers, the correctable settings) live in light modules. What is checked here is
 the import set, not a time (speed targets are benchmarks' business): ``ltca --help``
-imports neither NumPy nor SciPy, xarray, pandas, dask or matplotlib; ``ltca cases``
+imports neither NumPy nor SciPy, xarray, pandas, dask, matplotlib or scikit-fem; ``ltca cases``
 (which loads every bundled case file, so NumPy) imports none of the others. On a quiet
 core ``ltca --help`` then takes about 0.1 s of CPU, ``ltca cases`` about 0.2 s
 (``benchmarks/startup.py``); before, 1.3–1.5 s.
@@ -21,7 +21,7 @@ import sys
 import pytest
 
 HEAVY = ("scipy", "xarray", "pandas", "dask", "distributed", "matplotlib", "netCDF4",
-         "qpsolvers")
+         "qpsolvers", "skfem", "tqdm", "jinja2")
 
 _RUN = """
 import contextlib, io, json, sys

@@ -58,6 +58,7 @@ settings_from_poses    inverse kinematics: settings that place a cutter and a wo
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
@@ -221,7 +222,17 @@ def taylor_motion(value0: float, derivatives: Sequence[float], q):
     q = np.asarray(q, dtype=float)
     if not any(derivatives):
         return np.full_like(q, value0), np.zeros_like(q), np.zeros_like(q)
-    # polynomial coefficients of f, f', f'' (rows: powers of q), evaluated in one product
+    coef = _taylor_coefficients(float(value0), tuple(float(d) for d in derivatives))
+    out = np.vander(q.ravel(), coef.shape[0], increasing=True) @ coef
+    return (out[:, 0].reshape(q.shape), out[:, 1].reshape(q.shape),
+            out[:, 2].reshape(q.shape))
+
+
+@functools.lru_cache(maxsize=64)
+def _taylor_coefficients(value0: float, derivatives: tuple[float, ...]) -> np.ndarray:
+    """(deg + 1, 3) polynomial coefficients of f, f', f'' (rows: powers of q) of
+    :func:`taylor_motion` (read-only; memoised: the machine's solvers evaluate the same
+    motions thousands of times per analysis)."""
     deg = len(derivatives)
     coef = [[0.0, 0.0, 0.0] for _ in range(deg + 1)]
     coef[0][0] = value0
@@ -230,9 +241,9 @@ def taylor_motion(value0: float, derivatives: Sequence[float], q):
         coef[k - 1][1] = dk / math.factorial(k - 1)
         if k >= 2:
             coef[k - 2][2] = dk / math.factorial(k - 2)
-    out = np.vander(q.ravel(), deg + 1, increasing=True) @ np.array(coef)
-    return (out[:, 0].reshape(q.shape), out[:, 1].reshape(q.shape),
-            out[:, 2].reshape(q.shape))
+    out = np.array(coef)
+    out.flags.writeable = False
+    return out
 
 
 def roll_angle(settings: MachineSettings, q):

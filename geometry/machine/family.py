@@ -192,8 +192,8 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
     dc = p2[:, :3] * ca - p1[:, :3] * sa
     d2c = -(p1[:, 0] * ca + p2[:, 0] * sa)
     if chain.motion:
-        em, dem, d2em = taylor_motion(settings.blank_offset, settings.vertical_motion, q)
-        xb, dxb, d2xb = taylor_motion(settings.sliding_base, settings.helical_motion, q)
+        em, dem, d2em = _motion(settings.blank_offset, settings.vertical_motion, q)
+        xb, dxb, d2xb = _motion(settings.sliding_base, settings.helical_motion, q)
         c[:, 0] += np.outer(chain.r2_y, -em) + np.outer(chain.r2_z, xb)
         dc[:, 0] += np.outer(chain.r2_y, -dem) + np.outer(chain.r2_z, dxb)
         d2c += np.outer(chain.r2_y, -d2em) + np.outer(chain.r2_z, d2xb)
@@ -233,6 +233,15 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
         if kappa != 0.0:
             _swept_normal(out)
     return out
+
+
+def _motion(value0: float, derivatives, q: np.ndarray):
+    """:func:`geometry.machine.cradle.taylor_motion`, but a motion without derivatives as
+    its three constants (floats): the chain's outer products then broadcast one column
+    per component, each element the same product and sum as with the constant arrays."""
+    if not any(derivatives):
+        return float(value0), 0.0, 0.0
+    return taylor_motion(value0, derivatives, q)
 
 
 def _swept_normal(out: np.ndarray) -> None:
@@ -381,5 +390,9 @@ def meshing_buffer(buf: np.ndarray, length_scale: float):
 
 def _cross0(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Cross product over the first axis (component-major arrays, broadcasting)."""
-    return np.stack([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                     a[0] * b[1] - a[1] * b[0]])
+    out = np.empty((3, *np.broadcast_shapes(a.shape[1:], b.shape[1:])))
+    # each component a_i b_j − a_j b_i, written in place (no stack of temporaries)
+    for k, (i, j) in enumerate(((1, 2), (2, 0), (0, 1))):
+        np.multiply(a[i], b[j], out=out[k])
+        out[k] -= a[j] * b[i]
+    return out

@@ -288,7 +288,7 @@ def _pick_seed(ctx: _Context, x: np.ndarray, ok: np.ndarray, k: int, s_max: floa
     return int(pick[0])
 
 
-def _seed(ctx: _Context, z0: float, p0: float, depth: float):
+def _seed(ctx: _Context, z0: float, p0: float, depth: float, solved=None):
     """Coarse search, then Newton, for one target: the start of the continuation.
 
     The passes in order: the profile section first (the middle of a flank), then the
@@ -298,18 +298,17 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float):
     Newton is independent of the batch, so the root is the one the passes run one by one
     find, bit for bit; a profile-section target costs a few more points per iteration, a
     relief-section one a single run instead of up to eight); the candidate grids are
-    memoised (:func:`_candidate_grid`).
+    memoised (:func:`_candidate_grid`). ``solved``: the starts of :func:`_seed_starts` and
+    their Newton results (x, converged), if already run (as part of a larger batch).
     """
+    if solved is None:
+        x0, ks, passes, sizes = _seed_starts(ctx, z0, p0, depth)
+        n = int(ks.size)
+        x, ok = _newton(ctx, x0, ks, np.full(n, z0), np.full(n, p0))
+    else:
+        (_, _, passes, sizes), (x, ok) = solved
     sec = ctx.sections
     s_max = sec.s_lo[sec.main] + 4.0 * depth + 5.0
-    spreads = [False, True] if ctx.generate else [False]
-    order = [sec.main] + [k for k in range(len(sec.s_lo)) if k != sec.main]
-    passes = [(k, wide) for k in order for wide in spreads]
-    x0 = [_seed_candidates(ctx, z0, p0, depth, wide, k) for k, wide in passes]
-    sizes = [len(a) for a in x0]
-    ks = np.repeat([k for k, _ in passes], sizes)
-    n = int(ks.size)
-    x, ok = _newton(ctx, np.concatenate(x0), ks, np.full(n, z0), np.full(n, p0))
     at = 0
     for (k, _), size in zip(passes, sizes, strict=True):
         sl = slice(at, at + size)
@@ -324,6 +323,20 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float):
         "machine settings: no envelope solution at the middle of the flank "
         f"(axial position {z0:.4g} mm, radius {p0:.4g} mm): the cutter does not generate "
         "a tooth surface inside the blank with these settings")
+
+
+def _seed_starts(ctx: _Context, z0: float, p0: float, depth: float):
+    """The seed search's Newton starts for one target (:func:`_seed`): starts (n, m), their
+    sections (n,), the passes [(section, wide)] in order and the number of starts of
+    each."""
+    sec = ctx.sections
+    spreads = [False, True] if ctx.generate else [False]
+    order = [sec.main] + [k for k in range(len(sec.s_lo)) if k != sec.main]
+    passes = [(k, wide) for k in order for wide in spreads]
+    x0 = [_seed_candidates(ctx, z0, p0, depth, wide, k) for k, wide in passes]
+    sizes = [len(a) for a in x0]
+    ks = np.repeat([k for k, _ in passes], sizes)
+    return np.concatenate(x0), ks, passes, sizes
 
 
 def _predict(x_ref, jac_ref, dz, dp):
@@ -587,12 +600,29 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     x = np.full((n, m), np.nan)
     section = np.zeros(n, dtype=np.intp)
     reason = np.ones(n, dtype=np.int8)
+    seed_solved = None
     if guess is not None:
         xg, secg, have = _guess_start(guess, shape, sections, gen)
         idx = np.flatnonzero(have)
+        # the seed target guessed off the profile section (or not at all) seldom converges
+        # onto it: the seed search (:func:`_seed`) will run, so its Newton starts join the
+        # guesses' batch (each point's Newton is independent of the batch: the same roots,
+        # one loop of iterations instead of two)
+        spec = None
+        if not (have[seed] and secg[seed] == sections.main):
+            spec = _seed_starts(ctx, zf[seed], pf[seed], depth)
         if idx.size:
+            first = None
+            if spec is not None:
+                ns = spec[1].size
+                xa, oka = _newton(ctx, np.concatenate([xg[idx], spec[0]]),
+                                  np.concatenate([secg[idx], spec[1]]),
+                                  np.concatenate([zf[idx], np.full(ns, zf[seed])]),
+                                  np.concatenate([pf[idx], np.full(ns, pf[seed])]))
+                first = (xa[:idx.size], oka[:idx.size])
+                seed_solved = (spec, (xa[idx.size:], oka[idx.size:]))
             x[idx], section[idx], reason[idx] = _solve_sections(ctx, xg[idx], secg[idx],
-                                                                zf[idx], pf[idx])
+                                                                zf[idx], pf[idx], first=first)
             # a guess farther than one limited Newton step from its root was not from a
             # nearby solve: the root may be another branch, so solve such points afresh
             far = np.any(np.abs(x[idx] - xg[idx]) > _STEP_LIMIT[:m], axis=-1)
@@ -605,7 +635,7 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
                               pf[seed:seed + 1])
         jac_seed = jac[0]
     else:
-        x_seed, jac_seed, sec_seed = _seed(ctx, zf[seed], pf[seed], depth)
+        x_seed, jac_seed, sec_seed = _seed(ctx, zf[seed], pf[seed], depth, seed_solved)
     # near a section junction a place can have a root on two sections (one of them cut
     # away); as without a guess, the seed's section wins where Newton from the prediction
     # finds its root inside the section ("other"); the unresolved points ("rest") start
