@@ -18,7 +18,7 @@ from friction.ehl.line_contact import (
     STEEL_E_PRIME,
     Grid,
     LineContactCondition,
-    _setup,
+    contact_setup,
     hertz_line_contact,
     line_contact_summary,
     solve_line_contact,
@@ -38,7 +38,7 @@ def _pan_hamrock(cond: LineContactCondition) -> tuple[float, float]:
     numerical solutions with Roelands viscosity and Dowson–Higginson density — the model
     solved here — stated to within a few per cent over their range.
     """
-    s = _setup(cond, Grid())
+    s = contact_setup(cond, Grid())
     e = cond.e_prime * 1e6
     rm = cond.radius * 1e-3
     u = s.eta0 * cond.entraining_velocity / (e * rm)
@@ -165,7 +165,7 @@ def test_eyring_traction_closed_form() -> None:
     cond = _smooth(556.0, 5.0, 75.0, viscosity_model="barus", limiting_shear_coefficient=10.0,
                    eyring_stress=2.0)
     ds = solve_line_contact(cond, Grid(nodes=512))
-    s = _setup(cond, Grid())
+    s = contact_setup(cond, Grid())
     hc = float(ds.film_central) * 1e-6
     w = 556.0e3
     us = 0.3 * 5.0

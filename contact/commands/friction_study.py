@@ -34,12 +34,20 @@ def register(sub) -> None:
                    "seed and --design lhs)")
     p.add_argument("--skip", type=int, default=0, metavar="K",
                    help="sobol: continue the sequence after its first K points")
-    p.add_argument("--nodes", type=int, default=256,
-                   help="solver grid nodes over -4 ... 1.5 Hertz half-widths "
+    p.add_argument("--nodes", type=int, default=512,
+                   help="solver grid nodes (transient: from the smooth film's pressure onset "
+                   "to 1.5 Hertz half-widths; steady: over -4 ... 1.5) (default %(default)s)")
+    p.add_argument("--mode", choices=("transient", "steady"), default="transient",
+                   help="rough points with the roughness moving through the contact (the "
+                   "seed's model) or frozen (default %(default)s)")
+    p.add_argument("--courant", type=float, default=1.0, metavar="C",
+                   help="transient: node spacings the faster surface moves per time step "
                    "(default %(default)s)")
+    p.add_argument("--average", type=float, default=2.0, metavar="T",
+                   help="transient: averaging window in units of b/u_e (default %(default)s)")
     p.add_argument("--max-iterations", type=int, default=60, metavar="N",
-                   help="Newton iterations per roughness step before a point counts as not "
-                   "converged (default %(default)s)")
+                   help="Newton iterations per time step (transient) or roughness step "
+                   "(steady) before a point counts as not converged (default %(default)s)")
     p.add_argument("--realisations", type=int, default=1, metavar="K",
                    help="roughness realisations per condition, their converged results "
                    "averaged (default %(default)s)")
@@ -80,7 +88,8 @@ def run(args: argparse.Namespace) -> int:
                  "box": "seed Table 5.1; R, u_e, SR log-uniform"}
     attrs["points"] = int(next(iter(design.values())).size)
     settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
-                             lubricant=args.lubricant, realisations=args.realisations)
+                             lubricant=args.lubricant, realisations=args.realisations,
+                             mode=args.mode, courant=args.courant, average=args.average)
     ds = run_friction_study(design, settings, design_attrs=attrs, output=args.output,
                             scheduler=args.scheduler, n_workers=args.workers,
                             progress=not args.no_progress)

@@ -84,8 +84,11 @@ def study_provenance(settings: SolveSettings, design_attrs: Mapping[str, Any]) -
     attrs: dict[str, Any] = {
         "toolkit_version": __version__,
         "solver_commit": _commit(),
-        "solver": "friction.ehl.line_contact.line_contact_summary (steady, Roelands, "
-                  "Dowson-Higginson, Eyring + limiting shear, boundary mu_b on contact nodes)",
+        "solver": (("friction.ehl.transient.transient_summary (transient, roughness moving "
+                    "with each surface, BDF2" if settings.mode == "transient" else
+                    "friction.ehl.line_contact.line_contact_summary (steady, frozen roughness")
+                   + ", Roelands, Dowson-Higginson, Eyring + limiting shear, boundary mu_b on "
+                     "contact nodes)"),
     }
     for k, v in settings.as_dict().items():
         attrs[f"solver_{k}"] = json.dumps(v) if isinstance(v, list) else v
@@ -130,7 +133,7 @@ def run_friction_study(
     design : mapping of str to array (n,)
         :data:`friction.study.design.DESIGN_INPUTS` (MPa, mm, m/s, 1, degC, µm).
     settings : SolveSettings, optional
-        Solver grid and oil (default ``SolveSettings()``: 256 nodes, 75W90).
+        Solver grid, mode and oil (default ``SolveSettings()``: transient, 512 nodes, 75W90).
     design_attrs : mapping, optional
         How the design was made, stored as ``design_*`` attributes.
     output : path-like, optional

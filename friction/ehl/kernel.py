@@ -87,6 +87,7 @@ class ElasticKernel:
         wrapped[n + 1:] = self.coefficients[: n - 1]     # offsets −(n−1) … −1
         self._spectrum = scipy.fft.rfft(wrapped)
         self._m = m
+        self._matrix: Array | None = None
 
     def deflection(self, pressure: Array) -> Array:
         """V_i = Σ_j D_(i−j) P_j for one pressure vector (n,) [1] → (n,) [1]."""
@@ -94,7 +95,13 @@ class ElasticKernel:
         return scipy.fft.irfft(spec * self._spectrum, n=self._m)[: self.n]
 
     def matrix(self) -> Array:
-        """The dense Toeplitz matrix D (n, n) [1] of the same coefficients (for Newton)."""
-        n = self.n
-        idx = np.arange(n)
-        return self.coefficients[(idx[:, None] - idx[None, :]) + n - 1]
+        """The dense Toeplitz matrix D (n, n) [1] of the same coefficients (for Newton).
+
+        Formed once per kernel and shared (read-only): callers must not modify it.
+        """
+        if self._matrix is None:
+            n = self.n
+            idx = np.arange(n)
+            self._matrix = self.coefficients[(idx[:, None] - idx[None, :]) + n - 1]
+            self._matrix.flags.writeable = False
+        return self._matrix

@@ -30,6 +30,7 @@ import xarray as xr
 from numpy.typing import ArrayLike, NDArray
 from scipy.linalg import lu_factor, lu_solve
 
+from friction.ehl.complementarity import ConvergenceError
 from friction.ehl.kernel import ElasticKernel
 from friction.ehl.reynolds import CAVITATION, CONTACT, FLUID, NodeState, assemble, reynolds_residual
 from friction.ehl.rheology import (
@@ -38,7 +39,7 @@ from friction.ehl.rheology import (
     eyring_limited_shear,
 )
 from friction.lubricant import Lubricant, load_lubricant, pressure_viscosity_coefficient, viscosity
-from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, real, real_array
 
 __all__ = [
@@ -58,10 +59,6 @@ Array = NDArray[np.float64]
 
 #: E′ = 2E* of a steel pair, E = 206 GPa, ν = 0.3 [MPa].
 STEEL_E_PRIME = 206000.0 / (1.0 - 0.3**2)
-
-
-class ConvergenceError(LTCAError, RuntimeError):
-    """The Newton iteration of the line contact did not converge."""
 
 
 @dataclass(frozen=True)
@@ -194,7 +191,14 @@ def hertz_line_contact(load_per_length: float, radius: float, e_prime: float
 
 
 @dataclass
-class _Setup:
+class ContactSetup:
+    """A line-contact condition made dimensionless on its grid (:func:`contact_setup`).
+
+    Grid X [1], spacing Δ [1], Hertz b [m] and p_h [Pa], R [m], η₀ [Pa s], α [1/Pa], λ̄ [1],
+    the summed roughness [H units], the viscosity model, τ₀ [Pa], Λ [1], μ_b [1], the
+    composite Rq σ [µm] and the deflection kernel.
+    """
+
     x: Array
     spacing: float
     b: float          # [m]
@@ -213,7 +217,14 @@ class _Setup:
     kernel_matrix: Array = field(repr=False)
 
 
-def _oil(lubricant: str | Lubricant) -> Lubricant:
+def lubricant_of(lubricant: str | Lubricant) -> Lubricant:
+    """The oil of a condition: a Lubricant as given, a bundled name or a file loaded.
+
+    Raises
+    ------
+    InputError
+        An unknown oil (the message names ``lubricant``).
+    """
     if isinstance(lubricant, Lubricant):
         return lubricant
     try:
@@ -234,7 +245,23 @@ def _roughness(name: str, value: ArrayLike | None, n: int) -> Array:
     return arr
 
 
-def _setup(cond: LineContactCondition, grid: Grid) -> _Setup:
+def contact_setup(cond: LineContactCondition, grid: Grid) -> ContactSetup:
+    """A condition's dimensionless problem on a grid: Hertz scales, oil, kernel, roughness.
+
+    Parameters
+    ----------
+    cond : LineContactCondition
+    grid : Grid
+
+    Returns
+    -------
+    ContactSetup
+
+    Raises
+    ------
+    InputError
+        An input out of range (named).
+    """
     grid.check()
     w = real("load_per_length", cond.load_per_length, unit="N/mm", low=0.0, low_open=True)
     r = real("radius", cond.radius, unit="mm", low=0.0, low_open=True)
@@ -243,7 +270,7 @@ def _setup(cond: LineContactCondition, grid: Grid) -> _Setup:
     real("slide_to_roll", cond.slide_to_roll, unit="1", low=-2.0, high=2.0)
     ep = real("e_prime", cond.e_prime, unit="MPa", low=1e3, high=1e7)
     model = one_of("viscosity_model", cond.viscosity_model, VISCOSITY_PRESSURE_MODELS)
-    oil = _oil(cond.lubricant)
+    oil = lubricant_of(cond.lubricant)
     eta0 = float(viscosity(oil, cond.temperature))
     alpha = float(pressure_viscosity_coefficient(oil, cond.temperature)) * 1e-9
     b_mm, ph_mpa = hertz_line_contact(w, r, ep)
@@ -268,7 +295,7 @@ def _setup(cond: LineContactCondition, grid: Grid) -> _Setup:
     mu_b = param("boundary_friction", cond.boundary_friction, oil.boundary_friction, "1",
                  0.0, 1.0)
     kernel = ElasticKernel(grid.nodes, spacing)
-    return _Setup(
+    return ContactSetup(
         x=x, spacing=spacing, b=b, ph=ph, radius=rm, eta0=eta0, alpha=alpha,
         lambda_bar=12.0 * eta0 * ue * rm**2 / (b**3 * ph), roughness=rough,
         viscosity_fn=VISCOSITY_PRESSURE_MODELS[model], tau0=tau0, lim=lim, mu_b=mu_b,
@@ -276,7 +303,12 @@ def _setup(cond: LineContactCondition, grid: Grid) -> _Setup:
     )
 
 
-def _state(s: _Setup, p: Array, h0: float) -> NodeState:
+def node_state(s: ContactSetup, p: Array, h0: float) -> NodeState:
+    """Film, density and viscosity at pressures P (n,) [1] and approach H₀ [1].
+
+    H = H₀ + X²/2 + D P − roughness (DC-FFT), viscosity by the condition's model
+    (:mod:`friction.ehl.rheology`), density by Dowson–Higginson.
+    """
     film = h0 + 0.5 * s.x**2 + s.kernel.deflection(p) - s.roughness
     eta, dln = s.viscosity_fn(p * s.ph, s.eta0, s.alpha)  # type: ignore[operator]
     rho, drho = dowson_higginson_density(p * s.ph)
@@ -284,7 +316,8 @@ def _state(s: _Setup, p: Array, h0: float) -> NodeState:
                      viscosity=eta / s.eta0, dln_viscosity=dln * s.ph)
 
 
-def _initial(s: _Setup, cond: LineContactCondition) -> tuple[Array, float]:
+def initial_pressure(s: ContactSetup, cond: LineContactCondition) -> tuple[Array, float]:
+    """Hertz's pressure and the approach giving Pan–Hamrock's central film: a start (P, H₀)."""
     """Hertz pressure and a rigid approach giving the Pan–Hamrock central film."""
     p = np.sqrt(np.clip(1.0 - s.x**2, 0.0, None))
     p *= (0.5 * math.pi) / (p.sum() * s.spacing)
@@ -298,7 +331,7 @@ def _initial(s: _Setup, cond: LineContactCondition) -> tuple[Array, float]:
     return p, float(hc_dimless - film0[centre])
 
 
-def _update_sets(kind: NDArray[np.int_], st: NodeState, s: _Setup) -> int:
+def _update_sets(kind: NDArray[np.int_], st: NodeState, s: ContactSetup) -> int:
     """Move nodes between fluid, cavitation and contact; return how many changed."""
     old = kind.copy()
     p, h = st.pressure, st.film
@@ -342,8 +375,39 @@ def _check_cycle(kind: NDArray[np.int_], before: NDArray[np.int_], entered: dict
             f"solver does not converge here (docs/ehl.md, Validity)")
 
 
-def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] | None = None,
-            ) -> tuple[Array, float, NDArray[np.int_], int]:
+def steady_active_set(s: ContactSetup, p: Array, h0: float, grid: Grid,
+                      kind: NDArray[np.int_] | None = None,
+                      ) -> tuple[Array, float, NDArray[np.int_], int]:
+    """The steady film by Newton's method with an active set of contact and cavitation nodes.
+
+    Parameters
+    ----------
+    s : ContactSetup
+        The condition on its grid (:func:`contact_setup`); ``s.roughness`` frozen.
+    p : array (n,) — [1]
+        Start P (e.g. :func:`initial_pressure`).
+    h0 : float — [1]
+        Start rigid approach H₀.
+    grid : Grid
+        Tolerance, iteration, step and cycle limits.
+    kind : int array (n,), optional
+        Start node sets (:data:`~friction.ehl.reynolds.FLUID` …); default all fluid.
+
+    Returns
+    -------
+    (P (n,), H₀, kind (n,), iterations)
+
+    Raises
+    ------
+    ConvergenceError
+        No convergence, a non-finite iterate, or cycling node sets (docs/ehl.md).
+
+    Notes
+    -----
+    Contact nodes (H = 0) are released only at P < 0, cavitation nodes only beside a
+    pressurised fluid node (Christopherson); the Jacobian is
+    :func:`friction.ehl.reynolds.assemble`'s. Source: Houpert & Hamrock (1986).
+    """
     n = p.size
     if kind is None:
         kind = np.full(n, FLUID)
@@ -353,7 +417,7 @@ def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] |
     load_row[-1] = 0.0
     entered: dict[bytes, int] = {}
     for it in range(1, grid.max_iterations + 1):
-        st = _state(s, p, h0)
+        st = node_state(s, p, h0)
         res, jac = assemble(st, kind, s.kernel_matrix, s.spacing, s.lambda_bar)
         full = np.vstack([jac, load_row])
         rhs = np.concatenate([res, [p.sum() * s.spacing - 0.5 * math.pi]])
@@ -364,7 +428,7 @@ def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] |
         p = p + omega * dp
         h0 = h0 + omega * dh0
         p[kind == CAVITATION] = 0.0
-        st = _state(s, p, h0)
+        st = node_state(s, p, h0)
         before = kind.copy()
         changed = _update_sets(kind, st, s)
         if changed:
@@ -381,9 +445,13 @@ def _newton(s: _Setup, p: Array, h0: float, grid: Grid, kind: NDArray[np.int_] |
         f"(last max |ΔP| = {big:.2e}); refine the grid or widen the inlet")
 
 
-def _friction(s: _Setup, cond: LineContactCondition, st: NodeState,
-              kind: NDArray[np.int_]) -> tuple[Array, float, float, float]:
-    """Film shear stress τ(x) [Pa], the fluid and boundary friction forces [N/m], load [N/m]."""
+def film_and_boundary_friction(s: ContactSetup, cond: LineContactCondition, st: NodeState,
+                               kind: NDArray[np.int_]) -> tuple[Array, float, float, float]:
+    """Film shear stress τ(x) [Pa], the fluid and boundary friction forces [N/m], load [N/m].
+
+    Eyring shear with the limiting shear stress on open non-contact nodes, μ_b p on
+    contact nodes (seed Eq. 5.7–5.8); the load is ∫ p dx.
+    """
     b = s.b
     h = np.maximum(st.film, 0.0) * b**2 / s.radius  # [m]
     p = st.pressure * s.ph
@@ -399,7 +467,8 @@ def _friction(s: _Setup, cond: LineContactCondition, st: NodeState,
     return tau, f_fluid, f_boundary, w
 
 
-def _smooth_lambda(s: _Setup, cond: LineContactCondition) -> float:
+def smooth_lambda_ratio(s: ContactSetup, cond: LineContactCondition) -> float:
+    """λ: Pan–Hamrock's smooth minimum film over the composite Rq (inf if smooth) [1]."""
     if s.sigma == 0.0:
         return math.inf
     e_prime = cond.e_prime * 1e6
@@ -416,8 +485,8 @@ CLOSED_FILM = 1e-12
 
 
 def _solve(cond: LineContactCondition, grid: Grid):
-    s = _setup(cond, grid)
-    p, h0 = _initial(s, cond)
+    s = contact_setup(cond, grid)
+    p, h0 = initial_pressure(s, cond)
     rough = s.roughness
     iterations = 0
     kind = None
@@ -427,9 +496,9 @@ def _solve(cond: LineContactCondition, grid: Grid):
     steps = grid.roughness_steps if np.any(rough != 0.0) else 0
     for fraction in np.linspace(0.0, 1.0, steps + 1) if steps else (1.0,):
         s.roughness = fraction * rough
-        p, h0, kind, its = _newton(s, p, h0, grid, kind)
+        p, h0, kind, its = steady_active_set(s, p, h0, grid, kind)
         iterations += its
-    st = _state(s, p, h0)
+    st = node_state(s, p, h0)
     # a node the Newton iteration left "fluid" with a closed film (zero to round-off) and a
     # pressure is a contact: the two labels are degenerate there (with ε ≈ 0 the Reynolds
     # row is satisfied either way) and which one the active set ends on depended on the
@@ -437,7 +506,7 @@ def _solve(cond: LineContactCondition, grid: Grid):
     # or two BLAS threads)
     kind = np.where((kind == FLUID) & (st.film <= CLOSED_FILM) & (st.pressure > 0.0),
                     CONTACT, kind)
-    tau, f_fluid, f_boundary, w = _friction(s, cond, st, kind)
+    tau, f_fluid, f_boundary, w = film_and_boundary_friction(s, cond, st, kind)
     return s, st, kind, tau, f_fluid, f_boundary, w, iterations
 
 
@@ -455,7 +524,7 @@ def _summary(s, cond, st, kind, f_fluid, f_boundary, w) -> LineContactSummary:
         film_min=float(h_um[zone].min()) if zone.any() else float(h_um.min()),
         asperity_load_ratio=contact_load,
         contact_area_ratio=float(np.count_nonzero(kind == CONTACT) * s.spacing / 2.0),
-        lambda_ratio=_smooth_lambda(s, cond),
+        lambda_ratio=smooth_lambda_ratio(s, cond),
     )
 
 
@@ -560,7 +629,7 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
     })
     x_attrs = {"units": "mm", "long_name": "distance from contact centre"}
     ds = xr.Dataset(data, coords={"x": ("x", x_mm, x_attrs)})
-    oil = _oil(condition.lubricant)
+    oil = lubricant_of(condition.lubricant)
     ds.attrs.update({
         "title": "mixed-EHL line contact (steady)",
         "lubricant": oil.name,

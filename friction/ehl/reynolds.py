@@ -1,18 +1,23 @@
 """The unified Reynolds equation of a line contact, discretised, with its Newton Jacobian.
 
-Dimensionless steady form (Hamrock–Dowson variables X = x/b, P = p/p_h, H = hR/b²,
-ρ̄ = ρ/ρ₀, η̄ = η/η₀, with b and p_h of Hertz):
+Dimensionless form (Hamrock–Dowson variables X = x/b, P = p/p_h, H = hR/b², ρ̄ = ρ/ρ₀,
+η̄ = η/η₀, with b and p_h of Hertz; time T = t u_e/b):
 
-    d/dX(ε dP/dX) − d(ρ̄H)/dX − (b/u_e) ∂(ρ̄H)/∂t = 0,     ε = ρ̄ H³ / (η̄ λ̄),
+    ∂/∂X(ε ∂P/∂X) − ∂(ρ̄H)/∂X − ∂(ρ̄H)/∂T = 0,     ε = ρ̄ H³ / (η̄ λ̄),
     λ̄ = 12 η₀ u_e R² / (b³ p_h),
 
 the Poiseuille term central (ε at half nodes as the mean of its neighbours), the Couette
 term by second-order upwind differences (first order next to the inlet), the squeeze
-term by backward Euler. Following Hu & Zhu (2000) the same equation is used at every
-node: where the film closes (H → 0) ε vanishes like H³, the Poiseuille term drops out and
-the equation reduces to the Couette (and squeeze) terms. A node where the gap would become
-negative is a contact node and takes the reduced equation's limit H = 0 (the elastic
-contact condition); a node of negative pressure is a cavitation node, P = 0.
+term ∂(ρ̄H)/∂T by a backward difference c(ρ̄H − q*) (backward Euler: c = 1/ΔT, q* the last
+step's ρ̄H; BDF2: c = 3/(2ΔT), q* = (4q⁽ⁿ⁾ − q⁽ⁿ⁻¹⁾)/3). Following Hu & Zhu (2000) the same
+equation holds at every node: where the film closes ε vanishes like H³, the Poiseuille
+term drops out and the equation reduces to its Couette and squeeze terms.
+
+The residual's Jacobian is local in P and in H: every row depends on P and H at the nodes
+i − 2 … i + 1 only, so it is returned as two bands, dR = A dP + B dH. The film H depends
+on every pressure through the elastic deflection (H = H₀ + X²/2 + D P − roughness), so
+the Newton Jacobian in (P, H₀) is A + B [D | 1]: :mod:`friction.ehl.newton_system`
+assembles and solves it.
 
 Source: Hu, Y.-Z., Zhu, D., "A full numerical solution to the mixed lubrication in point
 contacts", J. Tribol. 122 (2000) 1–9; Li, S., Kahraman, A., "A transient mixed
@@ -27,15 +32,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 from numpy.typing import NDArray
 
-__all__ = ["CAVITATION", "CONTACT", "FLUID", "NodeState", "assemble"]
+__all__ = ["BAND_OFFSETS", "CAVITATION", "CONTACT", "FLUID", "NodeState", "ReynoldsBands",
+           "Squeeze", "assemble", "couette_difference", "reynolds_bands", "reynolds_residual"]
 
 Array = NDArray[np.float64]
 
-#: Node types of the unified equation.
+#: Node types (labels of a solution: fluid, cavitated, asperity contact).
 FLUID, CAVITATION, CONTACT = 0, 1, 2
+
+CLOSED_NO_OIL = False
+
+#: Column offsets of the Jacobian bands: row i depends on nodes i − 2 … i + 1.
+BAND_OFFSETS = (-2, -1, 0, 1)
 
 
 @dataclass
@@ -47,6 +57,8 @@ class NodeState:
     pressure, film : P and H (H already includes roughness and deflection)
     density, ddensity : ρ̄ and dρ̄/dP
     viscosity, dln_viscosity : η̄ and d ln η̄/dP
+    fill : θ, the share of the gap the oil fills (1 where it carries pressure, < 1 in a
+        cavitated zone: Jakobsson–Floberg–Olsson); None is a full film everywhere
     """
 
     pressure: Array
@@ -55,28 +67,178 @@ class NodeState:
     ddensity: Array
     viscosity: Array
     dln_viscosity: Array
+    fill: Array | None = None
 
 
-def _couette_matrix(n: int, spacing: float) -> sp.csr_matrix:
-    """Second-order upwind d/dX (first order at node 1; rows 0 and n−1 unused)."""
-    rows, cols, vals = [], [], []
-    for i in range(1, n - 1):
-        if i == 1:
-            rows += [i, i]
-            cols += [i, i - 1]
-            vals += [1.0 / spacing, -1.0 / spacing]
-        else:
-            rows += [i, i, i]
-            cols += [i, i - 1, i - 2]
-            vals += [1.5 / spacing, -2.0 / spacing, 0.5 / spacing]
-    return sp.csr_matrix((vals, (rows, cols)), shape=(n, n))
+@dataclass(frozen=True)
+class Squeeze:
+    """The discretised squeeze term c (ρ̄H − q*) of one implicit time step.
+
+    Attributes
+    ----------
+    coefficient : float — [1]
+        c = 1/ΔT (backward Euler) or 3/(2ΔT) (BDF2), ΔT in units of b/u_e.
+    reference : array (n,) — [1]
+        q* = ρ̄H of the last step (backward Euler) or (4q⁽ⁿ⁾ − q⁽ⁿ⁻¹⁾)/3 (BDF2).
+    transport_defect : array (n,) or None — [1]
+        δ = L_h[Z] − L[Z] of the moving roughness Z: the discrete Couette-and-squeeze
+        operator L_h (the same differences as for ρ̄H) applied to the roughness minus the
+        exact ∂Z/∂T + ∂Z/∂X. The rows then use L_h[ρ̄H] + ρ̄δ, which carries the roughness
+        through the contact exactly where ρ̄ is uniform: a wave of a few nodes per
+        wavelength is otherwise damped by the differences as if the film had flattened it
+        (pure rolling, λ = b/4, 14 nodes per wavelength: 30 % lost before X = 0).
+    """
+
+    coefficient: float
+    reference: Array
+    transport_defect: Array | None = None
+
+
+@dataclass
+class ReynoldsBands:
+    """Residual of the Reynolds rows and its Jacobian bands (all scaled by Δ).
+
+    Attributes
+    ----------
+    residual : array (n,)
+        R_i at the interior nodes (rows 0 and n − 1 are 0: the boundary nodes are P = 0).
+    dp, dh, dfill : array (4, n)
+        ``dp[k, i]`` = ∂R_i/∂P_(i+o), ``dh[k, i]`` = ∂R_i/∂H_(i+o), ``dfill[k, i]`` =
+        ∂R_i/∂θ_(i+o), o = BAND_OFFSETS[k] (zero outside the grid and on the boundary rows).
+    """
+
+    residual: Array
+    dp: Array
+    dh: Array
+    dfill: Array
+
+
+def couette_difference(values: Array, spacing: float) -> Array:
+    """The upwind difference of the Couette term applied to any field (n,) → (n,) [1/Δ].
+
+    Rows 0 and n − 1 are 0; row 1 first order, the others second order — the differences
+    :func:`reynolds_bands` applies to ρ̄H.
+    """
+    cw = _couette_weights(values.size, spacing)
+    out = np.zeros(values.size)
+    out[1:-1] = (cw[2, 1:-1] * values[1:-1] + cw[1, 1:-1] * values[:-2]
+                 + cw[0, 1:-1] * np.concatenate(([0.0], values[:-3])))
+    return out
+
+
+def _couette_weights(n: int, spacing: float) -> Array:
+    """∂(Couette_i)/∂q_(i+o) for o = −2, −1, 0 as (3, n) (first order at node 1)."""
+    w = np.zeros((3, n))
+    w[2, 1], w[1, 1] = 1.0 / spacing, -1.0 / spacing
+    w[2, 2:-1], w[1, 2:-1], w[0, 2:-1] = 1.5 / spacing, -2.0 / spacing, 0.5 / spacing
+    return w
+
+
+def reynolds_bands(state: NodeState, spacing: float, lambda_bar: float,
+                   squeeze: Squeeze | None = None) -> ReynoldsBands:
+    """Residual of the Reynolds equation at every node and its banded Jacobian.
+
+    Parameters
+    ----------
+    state : NodeState
+        The current iterate, n ≥ 4 nodes.
+    spacing : float — [1]
+        Node spacing Δ (in units of b).
+    lambda_bar : float — [1]
+        λ̄ = 12 η₀ u_e R²/(b³ p_h).
+    squeeze : Squeeze, optional
+        The time derivative of one implicit step; ``None`` for the steady equation.
+
+    Returns
+    -------
+    ReynoldsBands
+        R (n,) and the bands ∂R/∂P, ∂R/∂H (4, n), every row multiplied by Δ.
+
+    Notes
+    -----
+    R_i = [ε_(i+½)(P_(i+1) − P_i) − ε_(i−½)(P_i − P_(i−1))]/Δ² − C_i(q) − c(q_i − q*_i)
+    − ρ̄_iθ_i δ_i with q = ρ̄θ max(H, 0) the oil's mass per length (θ = 1 but in a cavitated
+    zone; a closed gap holds none) and
+    δ the roughness transport defect of ``squeeze``, if any;
+    ε_(i±½) the mean of the neighbours' ε, C the upwind difference; ε uses max(H, 0) (a
+    closed film carries no Poiseuille flow). Source: module docstring.
+    """
+    p, h = state.pressure, state.film
+    n = p.size
+    d2 = spacing * spacing
+    hc = np.maximum(h, 0.0)
+    eps = state.density * hc**3 / (state.viscosity * lambda_bar)
+    deps_p = eps * (state.ddensity / state.density - state.dln_viscosity)
+    deps_h = 3.0 * state.density * hc**2 / (state.viscosity * lambda_bar)
+    e_half = 0.5 * (eps[1:] + eps[:-1])                      # (n − 1,) at i + ½
+    dpres = np.diff(p)
+    flux = e_half * dpres
+    res = np.zeros(n)
+    res[1:-1] = (flux[1:] - flux[:-1]) / d2
+    fill = np.ones(n) if state.fill is None else state.fill
+    rho_f = state.density * fill                            # ρ̄θ: the oil's mass per gap
+    # with a fill (mass-conserving cavitation) the oil's mass is counted and a closed gap
+    # holds none; without one (the steady active-set solver) q = ρ̄H as before, whose rows
+    # stay regular at a penetrating node until the active set closes it
+    gap = h if (state.fill is None or not CLOSED_NO_OIL) else hc
+    q = rho_f * gap
+    cw = _couette_weights(n, spacing)
+    couette = np.zeros(n)
+    couette[1:-1] = (cw[2, 1:-1] * q[1:-1] + cw[1, 1:-1] * q[:-2]
+                     + cw[0, 1:-1] * np.concatenate(([0.0], q[:-3])))
+    res -= couette
+    if squeeze is not None:
+        res[1:-1] -= squeeze.coefficient * (q[1:-1] - squeeze.reference[1:-1])
+        cw[2, 1:-1] += squeeze.coefficient
+    defect = None if squeeze is None else squeeze.transport_defect
+    if defect is not None:
+        res[1:-1] -= rho_f[1:-1] * defect[1:-1]
+    res[0] = res[-1] = 0.0
+    a = np.zeros((4, n))
+    b = np.zeros((4, n))
+    f = np.zeros((4, n))
+    i = np.arange(1, n - 1)
+    # Poiseuille term, directly in P
+    a[1, i] += e_half[:-1] / d2
+    a[2, i] -= (e_half[1:] + e_half[:-1]) / d2
+    a[3, i] += e_half[1:] / d2
+    # … and through ε_k (k = i − 1, i, i + 1): ∂ε_k = deps_p dP_k + deps_h dH_k
+    for k, coef in ((1, -dpres[:-1] / (2.0 * d2)),
+                    (2, (dpres[1:] - dpres[:-1]) / (2.0 * d2)),
+                    (3, dpres[1:] / (2.0 * d2))):
+        a[k, i] += coef * deps_p[i + k - 2]
+        b[k, i] += coef * deps_h[i + k - 2]
+    if defect is not None:
+        a[2, i] -= state.ddensity[i] * fill[i] * defect[i]
+        f[2, i] -= state.density[i] * defect[i]
+    # Couette and squeeze terms through q_k = ρ̄_k θ_k H_k (k = i − 2, i − 1, i)
+    dq_p = state.ddensity * fill * gap
+    dq_h = rho_f if (state.fill is None or not CLOSED_NO_OIL) else rho_f * (h > 0.0)
+    dq_f = state.density * gap
+    for k in (0, 1, 2):
+        rows = i[i + k - 2 >= 0]
+        a[k, rows] -= cw[k, rows] * dq_p[rows + k - 2]
+        b[k, rows] -= cw[k, rows] * dq_h[rows + k - 2]
+        f[k, rows] -= cw[k, rows] * dq_f[rows + k - 2]
+    return ReynoldsBands(residual=res * spacing, dp=a * spacing, dh=b * spacing,
+                         dfill=f * spacing)
+
+
+def reynolds_residual(state: NodeState, spacing: float, lambda_bar: float,
+                      squeeze: Squeeze | None = None) -> Array:
+    """The Reynolds rows alone (scaled by Δ), at every interior node, (n,) [1].
+
+    Used to decide whether a cavitation node is released (a positive residual at P = 0
+    means fluid accumulates there: the node must carry pressure).
+    """
+    return reynolds_bands(state, spacing, lambda_bar, squeeze).residual
 
 
 def assemble(
     state: NodeState, kind: NDArray[np.int_], kernel_matrix: Array, spacing: float,
-    lambda_bar: float, squeeze: tuple[float, Array] | None = None,
+    lambda_bar: float, squeeze: Squeeze | None = None,
 ) -> tuple[Array, Array]:
-    """Residual of every node equation and its Jacobian in (P, H₀).
+    """Residual of every node equation of an active set and its dense Jacobian in (P, H₀).
 
     Parameters
     ----------
@@ -91,62 +253,28 @@ def assemble(
         Δ.
     lambda_bar : float — [1]
         λ̄ = 12 η₀ u_e R²/(b³ p_h).
-    squeeze : (float, array (n,)), optional
-        (c, ρ̄H at the previous time step) with c = b/(u_e Δt) for the transient term.
+    squeeze : Squeeze, optional
+        The implicit time step's squeeze term.
 
     Returns
     -------
     residual : array (n,)
         Reynolds rows scaled by Δ; contact rows H_i; cavitation/boundary rows P_i.
     jacobian : array (n, n + 1)
-        Derivatives by P_j and (last column) by H₀.
+        Derivatives by P_j and (last column) by H₀: the bands of :func:`reynolds_bands`
+        as A + B [D | 1].
     """
+    bands = reynolds_bands(state, spacing, lambda_bar, squeeze)
     p, h = state.pressure, state.film
     n = p.size
-    d2 = spacing * spacing
-    hc = np.maximum(h, 0.0)
-    eps = state.density * hc**3 / (state.viscosity * lambda_bar)
-    deps_local = eps * (state.ddensity / state.density - state.dln_viscosity)
-    deps_h = 3.0 * state.density * hc**2 / (state.viscosity * lambda_bar)
-    e_half = 0.5 * (eps[1:] + eps[:-1])                      # (n−1,) at i+½
-    dp = np.diff(p)                                          # P_{i+1} − P_i
-    flux = e_half * dp                                       # (n−1,)
-    poiseuille = np.zeros(n)
-    poiseuille[1:-1] = (flux[1:] - flux[:-1]) / d2
-    q = state.density * h
-    couette = _couette_matrix(n, spacing) @ q
-    res = poiseuille - couette
-    dq_local = state.ddensity * h
-    if squeeze is not None:
-        c, q_old = squeeze
-        res = res - c * (q - q_old)
-    # Jacobian of the Reynolds rows (banded operators applied to dense rows, O(n²)) ----
     jac = np.zeros((n, n + 1))
-    kh = np.zeros((n, n + 1))                      # dH/d(P, H₀) = [D | 1]
-    kh[:, :n] = kernel_matrix
-    kh[:, n] = 1.0
-    # d ε_k = deps_local_k dP_k + deps_h_k dH_k ; d q_k = dq_local_k dP_k + ρ̄_k dH_k
-    deps = deps_h[:, None] * kh
-    deps[np.arange(n), np.arange(n)] += deps_local
-    dq = state.density[:, None] * kh
-    dq[np.arange(n), np.arange(n)] += dq_local
-    idx = np.arange(1, n - 1)
-    jac[idx, idx - 1] += e_half[:-1] / d2
-    jac[idx, idx] -= (e_half[1:] + e_half[:-1]) / d2
-    jac[idx, idx + 1] += e_half[1:] / d2
-    bl = -dp[:-1] / (2.0 * d2)
-    bd = (dp[1:] - dp[:-1]) / (2.0 * d2)
-    bu = dp[1:] / (2.0 * d2)
-    jac[1:-1] += bl[:, None] * deps[:-2] + bd[:, None] * deps[1:-1] + bu[:, None] * deps[2:]
-    # second-order upwind Couette rows (first order at node 1)
-    jac[1] -= (dq[1] - dq[0]) / spacing
-    jac[2:-1] -= (1.5 * dq[2:-1] - 2.0 * dq[1:-2] + 0.5 * dq[:-3]) / spacing
-    if squeeze is not None:
-        c, _ = squeeze
-        jac[1:-1] -= c * dq[1:-1]
-    res = res * spacing
-    jac *= spacing
-    # Contact, cavitation and boundary rows ---------------------------------------------
+    for k, o in enumerate(BAND_OFFSETS):
+        lo, hi = max(0, -o), min(n, n - o)
+        rows = np.arange(lo, hi)
+        jac[rows, rows + o] += bands.dp[k, lo:hi]
+        jac[lo:hi, :n] += bands.dh[k, lo:hi, None] * kernel_matrix[lo + o:hi + o]
+        jac[lo:hi, n] += bands.dh[k, lo:hi]
+    res = bands.residual
     contact = kind == CONTACT
     res[contact] = h[contact]
     jac[contact, :n] = kernel_matrix[contact]
@@ -157,27 +285,3 @@ def assemble(
     jac[fixed] = 0.0
     jac[np.flatnonzero(fixed), np.flatnonzero(fixed)] = 1.0
     return res, jac
-
-
-def reynolds_residual(state: NodeState, spacing: float, lambda_bar: float,
-                      squeeze: tuple[float, Array] | None = None) -> Array:
-    """The Reynolds rows alone (scaled by Δ), at every interior node, (n,) [1].
-
-    Used to decide whether a cavitation node is released (a positive residual at P = 0
-    means fluid accumulates there: the node must carry pressure).
-    """
-    p, h = state.pressure, state.film
-    n = p.size
-    hc = np.maximum(h, 0.0)
-    eps = state.density * hc**3 / (state.viscosity * lambda_bar)
-    e_half = 0.5 * (eps[1:] + eps[:-1])
-    flux = e_half * np.diff(p)
-    res = np.zeros(n)
-    res[1:-1] = (flux[1:] - flux[:-1]) / spacing**2
-    q = state.density * h
-    res -= _couette_matrix(n, spacing) @ q
-    if squeeze is not None:
-        c, q_old = squeeze
-        res -= c * (q - q_old)
-    res[0] = res[-1] = 0.0
-    return res * spacing

@@ -21,6 +21,7 @@ Int. 43 (2010) 1034; Sharif et al., Wear 1998).
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.fft
@@ -30,7 +31,9 @@ from scipy.optimize import brentq
 from geometry.core.errors import InputError
 from geometry.core.validation import integer, real, real_array
 
-__all__ = ["ground_profile", "scale_to_rq", "skewness_transform_coefficient"]
+__all__ = ["DEFAULT_SHORT_CUTOFF", "GroundSurface", "MeasuredSurface", "MovingProfile",
+           "gaussian_lowpass", "ground_profile", "scale_to_rq", "skewness_transform_coefficient",
+           "surface_on_grid"]
 
 Array = NDArray[np.float64]
 
@@ -152,3 +155,253 @@ def ground_profile(
     z = (z - z.mean()) / z.std()
     z = z + a * (z * z - 1.0)
     return scale_to_rq(z, rq)
+
+
+def gaussian_lowpass(heights: ArrayLike, spacing: float, cutoff: float) -> Array:
+    """A profile's roughness seen through the ISO Gaussian profile filter of cutoff λs.
+
+    Parameters
+    ----------
+    heights : array (n,) — [µm]
+        Equally spaced heights (treated as one period of a periodic profile).
+    spacing : float — [mm]
+        Sampling interval, > 0.
+    cutoff : float — [mm]
+        λs ≥ 0: wavelengths at λs keep half their amplitude, shorter ones are removed
+        (0 returns the profile unchanged).
+
+    Returns
+    -------
+    array (n,) — [µm]
+
+    Notes
+    -----
+    Transmission exp(−π(αλs/λ)²), α = √(ln 2/π), applied in the Fourier domain.
+    Source: ISO 16610-21:2011, Eq. (2) (the Gaussian profile filter of ISO 11562).
+    """
+    z = real_array("heights", heights, unit="µm", ndim=1)
+    d = real("spacing", spacing, unit="mm", low=0.0, low_open=True)
+    lam = real("cutoff", cutoff, unit="mm", low=0.0)
+    if lam == 0.0:
+        return z.copy()
+    f = scipy.fft.rfftfreq(z.size, d=d)                       # 1/wavelength [1/mm]
+    alpha = math.sqrt(math.log(2.0) / math.pi)
+    return scipy.fft.irfft(scipy.fft.rfft(z) * np.exp(-math.pi * (alpha * lam * f) ** 2),
+                           n=z.size)
+
+
+class MovingProfile:
+    """One surface's roughness in the contact's frame as it moves: z(X − cT) at the nodes.
+
+    Parameters
+    ----------
+    heights : array (m,) — [1]
+        The surface's heights (dimensionless, H units) on material places ξ₀ + jΔ, band-
+        limited below the grid's Nyquist wavelength 2Δ (e.g. filtered at 4Δ).
+    spacing : float — [1]
+        Δ, the solver's node spacing.
+    start : float — [1]
+        ξ₀, the material place of the first height.
+
+    Notes
+    -----
+    The heights at any shift are the band-limited (trigonometric) interpolant of the
+    samples, evaluated by a phase shift of their discrete Fourier transform: exact at whole
+    node shifts and free of the amplitude loss of linear interpolation between them. The
+    profile is periodic with its length; a caller asks for shifts that stay inside it.
+    """
+
+    def __init__(self, heights: Array, spacing: float, start: float) -> None:
+        self.heights = np.asarray(heights, dtype=float)
+        self.spacing = float(spacing)
+        self.start = float(start)
+        self._spectrum = scipy.fft.rfft(self.heights)
+        self._wavenumber = 2.0 * math.pi * scipy.fft.rfftfreq(self.heights.size, d=spacing)
+
+    def at(self, first: float, nodes: int, shift: float, derivative: int = 0) -> Array:
+        """Heights z(X_i − shift) (or their X-derivative) at X_i = first + iΔ, i < nodes.
+
+        Parameters
+        ----------
+        first : float — [1]
+            X of the first node.
+        nodes : int
+        shift : float — [1]
+            How far the surface has moved.
+        derivative : {0, 1}
+            0: the heights; 1: the slope dz/dX of the same interpolant.
+
+        Returns
+        -------
+        array (nodes,) — [1]
+
+        Raises
+        ------
+        ValueError
+            The nodes' material places leave the stored profile.
+        """
+        offset = (first - shift - self.start) / self.spacing
+        j = math.floor(offset)
+        frac = offset - j
+        if j < 0 or j + nodes > self.heights.size:
+            raise ValueError("moving profile: the nodes leave the stored material profile")
+        if frac == 0.0 and derivative == 0:
+            return self.heights[j:j + nodes].copy()
+        spectrum = self._spectrum * np.exp(1j * self._wavenumber * frac * self.spacing)
+        if derivative:
+            spectrum = spectrum * (1j * self._wavenumber)
+            if self.heights.size % 2 == 0:
+                spectrum[-1] = 0.0                      # the Nyquist term has no slope
+        return scipy.fft.irfft(spectrum, n=self.heights.size)[j:j + nodes]
+
+
+#: [mm] λs of a stylus profile paired with λc = 2.5 mm (ISO 3274 Table 1), the default
+#: short-wave limit of a ground profile: with the default correlation length and skewness
+#: a ground profile of Rq 0.5 µm then has RΔq ≈ 0.10 rad and RSm ≈ 32 µm, inside the
+#: ranges measured on ground gear flanks
+DEFAULT_SHORT_CUTOFF = 0.008
+
+
+@dataclass(frozen=True)
+class GroundSurface:
+    """A ground flank's roughness, generated as long as a transient run needs it.
+
+    Parameters
+    ----------
+    rq : float — [µm]
+        RMS roughness of the profile seen through λs, 0 … 50 (0: smooth).
+    seed : int
+        Realisation (:func:`ground_profile`'s seed).
+    correlation_length, skewness, long_cutoff : float
+        As :func:`ground_profile` ([mm], [1], [mm]).
+    short_cutoff : float — [mm]
+        λs of the Gaussian profile filter (:func:`gaussian_lowpass`), ≥ 0.
+    sampling : float — [mm]
+        Spacing on which the profile is generated before it is filtered and resampled to a
+        solver's grid, > 0; the same seed and sampling give the same profile whatever the
+        solver's grid (a grid-convergence study compares one surface).
+    """
+
+    rq: float
+    seed: int = 1
+    correlation_length: float = 0.010
+    skewness: float = -0.5
+    short_cutoff: float = DEFAULT_SHORT_CUTOFF
+    long_cutoff: float = 0.8
+    sampling: float = 0.0005
+
+    def check(self) -> None:
+        """Raise :class:`InputError` naming the field out of range."""
+        real("rq", self.rq, unit="µm", low=0.0, high=50.0)
+        integer("seed", self.seed, low=0)
+        real("correlation_length", self.correlation_length, unit="mm", low=0.0,
+             low_open=True)
+        real("short_cutoff", self.short_cutoff, unit="mm", low=0.0)
+        real("long_cutoff", self.long_cutoff, unit="mm", low=0.0, low_open=True)
+        real("sampling", self.sampling, unit="mm", low=1e-6, high=0.1)
+        skewness_transform_coefficient(self.skewness)
+
+    def profile(self, length: float) -> tuple[Array, float]:
+        """Heights over a material length, unfiltered, unit RMS, and their spacing.
+
+        Parameters
+        ----------
+        length : float — [mm]
+            At least this long (rounded up to whole millimetres so that a slightly
+            different run length draws the same random numbers).
+
+        Returns
+        -------
+        (array (m,) [1], float [mm])
+        """
+        self.check()
+        m = round(math.ceil(max(length, 1e-3)) / self.sampling) + 1
+        x = np.arange(max(m, 16)) * self.sampling
+        return ground_profile(x, 1.0, correlation_length=self.correlation_length,
+                              skewness=self.skewness, cutoff=self.long_cutoff,
+                              seed=self.seed), self.sampling
+
+
+@dataclass(frozen=True)
+class MeasuredSurface:
+    """A measured roughness profile (heights along the rolling direction).
+
+    Parameters
+    ----------
+    heights : array (m,) — [µm]
+        Equally spaced, finite, m ≥ 16 (repeated periodically where a run needs more).
+    spacing : float — [mm]
+        Sampling interval, > 0.
+    short_cutoff : float — [mm]
+        λs the profile is seen through (0: as sampled).
+    rq : float or None — [µm]
+        Scale the profile to this Rq; None keeps the measured Rq.
+    """
+
+    heights: ArrayLike
+    spacing: float
+    short_cutoff: float = 0.0
+    rq: float | None = None
+
+    def check(self) -> None:
+        """Raise :class:`InputError` naming the field out of range."""
+        z = real_array("heights", self.heights, unit="µm", ndim=1)
+        if z.size < 16:
+            raise InputError(f"heights: a measured profile needs at least 16 points, "
+                             f"got {z.size}")
+        real("spacing", self.spacing, unit="mm", low=0.0, low_open=True)
+        real("short_cutoff", self.short_cutoff, unit="mm", low=0.0)
+        if self.rq is not None:
+            real("rq", self.rq, unit="µm", low=0.0, high=50.0)
+
+    @property
+    def target_rq(self) -> float:
+        """The Rq the solver scales the profile to [µm]."""
+        if self.rq is not None:
+            return float(self.rq)
+        z = np.asarray(self.heights, dtype=float)
+        return float(np.sqrt(np.mean((z - z.mean()) ** 2)))
+
+    def profile(self, length: float) -> tuple[Array, float]:
+        """The measured heights, repeated to cover ``length`` [mm], and their spacing."""
+        self.check()
+        z = np.asarray(self.heights, dtype=float)
+        reps = math.ceil(length / (z.size * self.spacing)) + 1
+        return np.tile(z - z.mean(), reps), float(self.spacing)
+
+
+def surface_on_grid(surface: GroundSurface | MeasuredSurface, length: float, spacing: float,
+                    ) -> tuple[Array, float]:
+    """A surface's heights on a solver's material grid, filtered and scaled to its Rq.
+
+    Parameters
+    ----------
+    surface : GroundSurface or MeasuredSurface
+    length : float — [mm]
+        Material length needed.
+    spacing : float — [mm]
+        The solver's node spacing Δ.
+
+    Returns
+    -------
+    heights : array (ceil(length/spacing) + 1,) — [µm]
+        Zero mean, RMS exactly the surface's Rq.
+    cutoff : float — [mm]
+        The short-wave cutoff applied, max(λs, 4Δ): wavelengths the grid cannot resolve
+        (four nodes per wavelength) are removed, and the rest scaled back to the Rq.
+
+    Notes
+    -----
+    Filtered by :func:`gaussian_lowpass` on the profile's own sampling, then interpolated
+    linearly to the grid (the filter leaves no wavelength under 4Δ: the interpolation moves
+    heights by < 1 % of Rq).
+    """
+    rq = surface.rq if isinstance(surface, GroundSurface) else surface.target_rq
+    m = math.ceil(length / spacing) + 1
+    if rq == 0.0:
+        return np.zeros(m), 0.0
+    raw, d = surface.profile(length + 4.0 * spacing)
+    cutoff = max(float(surface.short_cutoff), 4.0 * spacing)
+    z = gaussian_lowpass(raw, d, cutoff)
+    xs = np.arange(raw.size) * d
+    return scale_to_rq(np.interp(np.arange(m) * spacing, xs, z), rq), cutoff

@@ -2,13 +2,15 @@
 
 :func:`solve_design_point` turns a design point (p_h, R, u_e, SR, T, Rq₁, Rq₂; the units of
 :data:`friction.study.design.DESIGN_INPUTS`) into a :class:`friction.ehl.line_contact.
-LineContactCondition` — load per length from p_h (w′ = 2πR p_h²/E′), the two surfaces'
-ground profiles (:func:`friction.ehl.roughness.ground_profile`, seeds 1 and 2, the seed's
-"baseline profile multiplied by a constant") scaled to Rq₁ and Rq₂ on the solver's grid —
-and solves it through the solver's public API only (:func:`~friction.ehl.line_contact.
-line_contact_summary`). A condition the solver does not converge on is recorded as
-failed with the reason, never as a result. It runs on a Dask worker (the runner is
-:mod:`contact.study.friction_study`).
+LineContactCondition` — load per length from p_h (w′ = 2πR p_h²/E′) — and the two
+surfaces: ground profiles (:class:`friction.ehl.roughness.GroundSurface`, seeds 1 and 2,
+the seed's "baseline profile multiplied by a constant") of Rq₁ and Rq₂. It solves it
+through the solver's public API only: the transient model with the roughness moving
+(:func:`friction.ehl.transient.transient_summary`, the seed's model, ``mode="transient"``,
+the default) or the steady one with it frozen (:func:`~friction.ehl.line_contact.
+line_contact_summary`, ``mode="steady"``); smooth points are steady either way. A
+condition the solver does not converge on is recorded as failed with the reason, never
+as a result. It runs on a Dask worker (the runner is :mod:`contact.study.friction_study`).
 """
 
 from __future__ import annotations
@@ -23,10 +25,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from geometry.core.errors import InputError
-from geometry.core.validation import integer, real
+from geometry.core.validation import integer, one_of, real
 
-__all__ = ["POINT_STATUS", "RESULT_VARIABLES", "PointOutcome", "SolveSettings",
-           "condition_of", "outcome_arrays", "solve_design_point"]
+__all__ = ["POINT_STATUS", "RESULT_VARIABLES", "SOLVE_MODES", "PointOutcome", "SolveSettings",
+           "condition_of", "outcome_arrays", "solve_design_point", "surfaces_of"]
 
 log = logging.getLogger(__name__)
 
@@ -48,7 +50,14 @@ RESULT_VARIABLES: Mapping[str, tuple[str, str]] = {
     "realisations_converged": ("1", "roughness realisations the solver converged on"),
     "friction_coefficient_spread": ("1", "standard deviation of mu over the converged "
                                          "realisations (0 for one)"),
+    "friction_coefficient_error": ("1", "standard error of the time mean of mu (transient; "
+                                        "0 for steady)"),
+    "pressure_max": ("MPa", "largest pressure (transient: over the averaging window)"),
+    "newton_iterations": ("1", "Newton iterations of the solver calls"),
 }
+
+#: solution modes of a rough point
+SOLVE_MODES = ("transient", "steady")
 
 
 @dataclass(frozen=True)
@@ -75,10 +84,20 @@ class SolveSettings:
         Roughness realisations per condition, 1 … 32: the point's values are the means over
         the realisations the solver converged on (steady frozen roughness makes μ in the
         mixed regime depend on the realisation: measured RMS 53 % between two profile pairs
-        at λ 1–3, 5 % at λ < 0.3 and 4 % at λ > 3, 256 nodes).
+        at λ 1–3, 5 % at λ < 0.3 and 4 % at λ > 3, 256 nodes; a transient run averages
+        over the roughness passing through the contact already).
+    mode : {"transient", "steady"}
+        Rough points by the transient model (the roughness moving, the seed's) or the
+        steady one (frozen). Transient runs take ``nodes`` from the smooth film's pressure
+        onset to 1.5 b (:func:`friction.ehl.transient.default_transient_grid`; ``inlet``
+        and ``outlet`` are the steady grid's).
+    courant, ramp, flush, average : float
+        The transient run's :class:`friction.ehl.transient.TimeGrid`.
+    short_cutoff : float — [mm]
+        λs of the ground profiles (:class:`friction.ehl.roughness.GroundSurface`).
     """
 
-    nodes: int = 256
+    nodes: int = 512
     inlet: float = -4.0
     outlet: float = 1.5
     step_limit: float = 3.0
@@ -87,6 +106,12 @@ class SolveSettings:
     lubricant: str = "75W90"
     profile_seeds: tuple[int, int] = (1, 2)
     realisations: int = 1
+    mode: str = "transient"
+    courant: float = 1.0
+    ramp: float = 0.5
+    flush: float = 2.5
+    average: float = 2.0
+    short_cutoff: float = 0.008
 
     def __post_init__(self) -> None:
         integer("nodes", self.nodes, low=64, high=16384)
@@ -100,6 +125,18 @@ class SolveSettings:
         for s in self.profile_seeds:
             integer("profile_seeds", s, low=0)
         integer("realisations", self.realisations, low=1, high=32)
+        one_of("mode", self.mode, SOLVE_MODES)
+        real("short_cutoff", self.short_cutoff, unit="mm", low=0.0)
+        self.time_grid().check()
+
+    def time_grid(self):
+        """The transient runs' time stepping (:class:`friction.ehl.transient.TimeGrid`)."""
+        from friction.ehl.complementarity import NewtonOptions
+        from friction.ehl.transient import TimeGrid
+
+        return TimeGrid(courant=self.courant, ramp=self.ramp, flush=self.flush,
+                        average=self.average,
+                        newton=NewtonOptions(max_iterations=self.max_iterations))
 
     def grid(self):
         """The solver grid (:class:`friction.ehl.line_contact.Grid`)."""
@@ -129,7 +166,7 @@ class PointOutcome:
 
 
 def condition_of(settings: SolveSettings, point: Mapping[str, float], realisation: int = 0):
-    """The solver's condition for a design point.
+    """The solver's condition for a design point (steady mode: roughness on the grid).
 
     Parameters
     ----------
@@ -144,7 +181,8 @@ def condition_of(settings: SolveSettings, point: Mapping[str, float], realisatio
     -------
     friction.ehl.line_contact.LineContactCondition
         w′ = 2πR p_h²/E′ [N/mm] (from p_h = E′b/(4R), b = √(8w′R/(πE′))), steel E′, the
-        ground profiles of ``settings.profile_seeds`` scaled to Rq₁, Rq₂ (None for Rq 0).
+        ground profiles of ``settings.profile_seeds`` scaled to Rq₁, Rq₂ on the steady grid
+        (None for Rq 0).
 
     Raises
     ------
@@ -154,19 +192,52 @@ def condition_of(settings: SolveSettings, point: Mapping[str, float], realisatio
     from friction.ehl.line_contact import STEEL_E_PRIME, LineContactCondition, hertz_line_contact
     from friction.ehl.roughness import ground_profile
 
+    cond, rq = _smooth_condition(settings, point)
+    b, _ = hertz_line_contact(cond.load_per_length, cond.radius, STEEL_E_PRIME)
+    x = settings.grid().coordinates() * b
+    rough = [ground_profile(x, q, seed=seed + 2 * realisation) if q > 0.0 else None
+             for q, seed in zip(rq, settings.profile_seeds, strict=True)]
+    return LineContactCondition(**{**{f: getattr(cond, f) for f in cond.__dataclass_fields__},
+                                   "roughness_1": rough[0], "roughness_2": rough[1]})
+
+
+def _smooth_condition(settings: SolveSettings, point: Mapping[str, float]):
+    """The point's smooth condition and its two Rq [µm]."""
+    from friction.ehl.line_contact import STEEL_E_PRIME, LineContactCondition
+
     ph = real("hertz_pressure", point["hertz_pressure"], unit="MPa", low=0.0, low_open=True)
     r = real("radius", point["radius"], unit="mm", low=0.0, low_open=True)
+    rq = tuple(real(name, point[name], unit="µm", low=0.0, high=50.0)
+               for name in ("roughness_1", "roughness_2"))
     load = 2.0 * math.pi * r * ph**2 / STEEL_E_PRIME
-    b, _ = hertz_line_contact(load, r, STEEL_E_PRIME)
-    x = settings.grid().coordinates() * b
-    rough = []
-    for name, seed in zip(("roughness_1", "roughness_2"), settings.profile_seeds, strict=True):
-        rq = real(name, point[name], unit="µm", low=0.0, high=50.0)
-        rough.append(ground_profile(x, rq, seed=seed + 2 * realisation) if rq > 0.0 else None)
     return LineContactCondition(
         load_per_length=load, radius=r, entraining_velocity=float(point["entraining_velocity"]),
         slide_to_roll=float(point["slide_to_roll"]), temperature=float(point["temperature"]),
-        lubricant=settings.lubricant, roughness_1=rough[0], roughness_2=rough[1])
+        lubricant=settings.lubricant), rq
+
+
+def surfaces_of(settings: SolveSettings, point: Mapping[str, float], realisation: int = 0):
+    """The point's two surfaces for a transient run.
+
+    Parameters
+    ----------
+    settings : SolveSettings
+    point : mapping of str to float
+        As :func:`condition_of`.
+    realisation : int
+        Profile seeds ``settings.profile_seeds`` + 2k.
+
+    Returns
+    -------
+    (GroundSurface, GroundSurface)
+        Rq₁ and Rq₂ of the point, λs ``settings.short_cutoff``.
+    """
+    from friction.ehl.roughness import GroundSurface
+
+    _cond, rq = _smooth_condition(settings, point)
+    return tuple(GroundSurface(q, seed=seed + 2 * realisation,
+                               short_cutoff=settings.short_cutoff)
+                 for q, seed in zip(rq, settings.profile_seeds, strict=True))
 
 
 def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, float]
@@ -199,6 +270,7 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
     from threadpoolctl import threadpool_limits
 
     from friction.ehl.line_contact import ConvergenceError, line_contact_summary
+    from friction.ehl.transient import default_transient_grid, transient_summary
 
     values = dict.fromkeys(RESULT_VARIABLES, math.nan)
     t0 = time.perf_counter()
@@ -206,14 +278,20 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
     status, reason = 0, ""
     for k in range(settings.realisations):
         try:
-            cond = condition_of(settings, point, k)
+            cond, rq = _smooth_condition(settings, point)
             values["load_per_length"] = cond.load_per_length
             # one BLAS thread: the points are the parallelism (a study's workers are
             # single-threaded). The solver's dense LU of ≤ 1 k unknowns gains nothing from
             # threads, and on a busy 2-core machine the default threads made a 256-node
             # rough point 6–45 s instead of 0.3–1 s (measured, issue 34)
             with threadpool_limits(limits=1):
-                solved.append(line_contact_summary(cond, settings.grid()))
+                if settings.mode == "transient" and max(rq) > 0.0:
+                    grid = default_transient_grid(cond, settings.nodes)
+                    solved.append(transient_summary(cond, surfaces_of(settings, point, k),
+                                                    grid, settings.time_grid()))
+                else:
+                    solved.append(line_contact_summary(condition_of(settings, point, k),
+                                                       settings.grid()))
         except ConvergenceError as exc:
             status, reason = 1, f"ConvergenceError: {exc}".splitlines()[0]
         except InputError as exc:
@@ -222,8 +300,7 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
     values["realisations_converged"] = float(len(solved))
     if solved and status != 2:
         status, reason = 0, ""
-        mean = {f: float(np.mean([getattr(s, f) for s in solved]))
-                for f in solved[0]._fields}
+        mean = {f: float(np.mean([getattr(s, f) for s in solved])) for f in solved[0]._fields}
         values.update(friction_coefficient=mean["friction_coefficient"],
                       fluid_friction=mean["fluid_friction"],
                       boundary_friction_part=mean["boundary_part"],
@@ -233,7 +310,12 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
                       lambda_ratio=(solved[0].lambda_ratio
                                     if math.isfinite(solved[0].lambda_ratio) else -1.0),
                       friction_coefficient_spread=float(np.std(
-                          [s.friction_coefficient for s in solved])))
+                          [s.friction_coefficient for s in solved])),
+                      friction_coefficient_error=mean.get("friction_coefficient_error", 0.0),
+                      pressure_max=mean.get("pressure_max", math.nan) * float(
+                          point["hertz_pressure"]),
+                      newton_iterations=float(sum(getattr(s, "newton_iterations", 0)
+                                                  for s in solved)))
     values["solve_time"] = time.perf_counter() - t0
     if status:
         log.info("friction study point %d %s failed: %s", index, dict(point), reason)
