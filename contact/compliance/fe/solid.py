@@ -28,6 +28,7 @@ build_tooth_solid  build it from a case
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 import time
@@ -41,6 +42,7 @@ from contact.compliance.fe.mapped_mesh import (
     geometric_ratio,
     graded,
     mapped_mesh,
+    size_exponents,
 )
 from contact.compliance.fe.options import FEOptions
 from contact.compliance.fe.section import ToothSection, ToothSections, tooth_sections
@@ -103,6 +105,74 @@ class SolidLayout:
         return m, a - m * self.cell
 
 
+#: [1] largest growth between neighbouring elements along a half slot, where the fillet
+#: and (two cuts) the rounded crease carry the highest stresses
+SLOT_GROWTH = 1.5
+#: [1] largest growth between neighbouring elements in the other graded directions (up the
+#: tooth's sides, across the tooth, down the rim)
+GROWTH = 2.5
+#: [1] the elements at the root surfaces are at most this many root element sizes h
+#: thick (across the tooth, down the rim): the stress concentrates over the fillet's
+#: radius normal to the surface as well as along it
+LAYER = 2.0
+
+
+@dataclass(frozen=True)
+class _Lengths:
+    """Lengths [mm] of one section's graded directions, and the root sizes of its sides."""
+
+    h: tuple[float, float]  # root element size of the left, right side
+    slot: tuple[float, float]  # half slot: lower fillet and half the bottom
+    rows: tuple[float, float]  # tooth side from the fillet's split point to the tip
+    half_width: float  # half the tooth's width at the split points
+    rim: float  # from the split points down to the rim's inner surface
+
+    @classmethod
+    def of_section(cls, sec: ToothSection, rim_v: float, opt: FEOptions, pitch: float,
+                   edge_radius: dict) -> _Lengths:
+        curves = (("left", sec.left), ("right", sec.right))
+        h = tuple(root_size(c, opt, edge_radius[c.flank]) for _, c in curves)
+        slot = tuple(_half_slot_length(sec, side, pitch) for side, _ in curves)
+        rows = tuple(c.length - c.split for _, c in curves)
+        (vl, pl), (vr, pr) = sec.left.at(sec.left.split), sec.right.at(sec.right.split)
+        width = float(sec.metric_length(vl, pl, vr, pr))
+        return cls(h, slot, rows, 0.5 * width, sec.length_v * (0.5 * (vl + vr) - rim_v))
+
+
+def _fewest(n: int, total: float, first: float, growth: float, fine: str, most: int) -> int:
+    """The fewest elements, at least ``n`` (at most ``most``), that cover ``total`` [mm]
+    from a smallest element ``first`` growing by at most ``growth`` (:func:`graded`'s
+    exponents for ``fine``)."""
+    while n < most and first * float(np.sum(growth ** size_exponents(n, fine))) < total:
+        n += 1
+    return n
+
+
+def mesh_layout(sections: ToothSections, rim_v: np.ndarray, opt: FEOptions) -> SolidLayout:
+    """The element counts of the solid: the options' divisions, raised where they cannot
+    keep the root fine in every section — a half slot of elements starting at the root
+    size h (:func:`root_size`) at its ends (:func:`_slot_fine`) growing by at most
+    :data:`SLOT_GROWTH`; the tooth's sides from h growing by at most :data:`GROWTH`; across
+    the tooth and down the rim from a layer at most :data:`LAYER` h thick growing by at most
+    :data:`GROWTH` — each at most the option's upper bound.
+
+    So a refinement (smaller h) refines the root in every direction, and a coarse model is
+    not made of elements several h thick under its fillets (docs/fe.md, mesh convergence).
+    """
+    lay = SolidLayout.from_options(opt)
+    fine = _slot_fine(sections.one_cut)
+    slot, flank, half, rim = lay.slot, lay.flank, lay.across // 2, lay.rim
+    for j, sec in enumerate(sections.sections):
+        ln = _Lengths.of_section(sec, rim_v[j], opt, sections.pitch, sections.edge_radius)
+        for h, s_len, r_len in zip(ln.h, ln.slot, ln.rows, strict=True):
+            slot = _fewest(slot, s_len, h, SLOT_GROWTH, fine, 20)
+            flank = _fewest(flank, r_len, h, GROWTH, "start", 60)
+        h = float(np.mean(ln.h))
+        half = _fewest(half, ln.half_width, LAYER * h, GROWTH, "start", 10)
+        rim = _fewest(rim, ln.rim, LAYER * h, GROWTH, "start", 20)
+    return dataclasses.replace(lay, slot=slot, flank=flank, across=2 * half, rim=rim)
+
+
 @dataclass(frozen=True)
 class _Grading:
     """Division tables (:func:`graded`) of one section: every graded direction starts
@@ -115,35 +185,46 @@ class _Grading:
     rim: np.ndarray
 
     @classmethod
-    def of_section(cls, sec: ToothSection, rim_v: float, opt: FEOptions,
-                   pitch: float) -> _Grading:
-        lay = SolidLayout.from_options(opt)
-        sizes, slots, rows = [], [], []
-        for side, curve in (("left", sec.left), ("right", sec.right)):
-            h = root_size(curve, opt)
-            sizes.append(h)
-            half = _half_slot_length(sec, side, pitch)
-            q = geometric_ratio(lay.slot, half, h)
-            slots.append(graded(lay.slot, q ** (lay.slot - 1), "start"))
-            q = geometric_ratio(lay.flank, curve.length - curve.split, h)
+    def of_section(cls, sec: ToothSection, rim_v: float, opt: FEOptions, pitch: float,
+                   lay: SolidLayout, edge_radius: dict, one_cut: bool = True) -> _Grading:
+        ln = _Lengths.of_section(sec, rim_v, opt, pitch, edge_radius)
+        fine = _slot_fine(one_cut)
+        slots, rows = [], []
+        for h, s_len, r_len in zip(ln.h, ln.slot, ln.rows, strict=True):
+            q = geometric_ratio(lay.slot, s_len, h, fine=fine)
+            slots.append(graded(lay.slot, q ** _top_exponent(lay.slot, fine), fine))
+            q = geometric_ratio(lay.flank, r_len, h)
             rows.append(graded(lay.flank, q ** (lay.flank - 1), "start"))
-        (vl, pl), (vr, pr) = sec.left.at(sec.left.split), sec.right.at(sec.right.split)
-        width = float(sec.metric_length(vl, pl, vr, pr))
+        h = float(np.mean(ln.h))
         n = lay.across // 2
-        q = geometric_ratio(n, 0.5 * width, float(np.mean(sizes)))
+        q = geometric_ratio(n, ln.half_width, h)
         across = graded(lay.across, q ** (n - 1), "both")
-        depth = sec.length_v * (0.5 * (vl + vr) - rim_v)
-        q = geometric_ratio(lay.rim, depth, float(np.mean(sizes)))
+        q = geometric_ratio(lay.rim, ln.rim, h)
         rim = graded(lay.rim, q ** (lay.rim - 1), "end")
         return cls(tuple(slots), tuple(rows), across, rim)
 
 
-def root_size(curve, opt: FEOptions) -> float:
-    """Element size h [mm] at a root fillet: ``opt.root_element_size`` or the fillet's
-    arc (slot bottom → flank) over ``opt.fillet_divisions``."""
+def _slot_fine(one_cut: bool) -> str:
+    """Where a half slot's elements are smallest: at the fillet (``"start"``) when one
+    cut makes the slot, whose bottom is straight between the fillets; also at the slot's
+    middle (``"both"``) when two cuts meet there in a rounded crease, where the stress
+    concentrates (:mod:`contact.compliance.fe.section`)."""
+    return "start" if one_cut else "both"
+
+
+def _top_exponent(n: int, fine: str) -> int:
+    """The exponent of the largest element of a graded division (:func:`graded`)."""
+    return (n - 1) // 2 if fine == "both" else n - 1
+
+
+def root_size(curve, opt: FEOptions, edge_radius: float) -> float:
+    """Element size h [mm] at a root fillet: ``opt.root_element_size``, or the shorter of
+    the fillet's arc (slot bottom → flank) and a quarter circle of the blade's edge
+    radius (the curvature of the fillets and of the roundings where two cuts meet) over
+    ``opt.fillet_divisions``."""
     if opt.root_element_size is not None:
         return opt.root_element_size
-    return curve.junction / opt.fillet_divisions
+    return min(curve.junction, 0.5 * math.pi * edge_radius) / opt.fillet_divisions
 
 
 def _half_slot_length(sec: ToothSection, side: str, pitch: float) -> float:
@@ -342,8 +423,7 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
     """
     t0 = time.perf_counter()
     opt = options if options is not None else FEOptions()
-    lay = SolidLayout.from_options(opt)
-    u = np.linspace(0.0, 1.0, 2 * lay.face + 1)
+    u = np.linspace(0.0, 1.0, 2 * opt.face_divisions + 1)
     sections = tooth_sections(case, member, u)
     blank = case.member(member).blank
     depth = opt.rim_depth if opt.rim_depth is not None else 1.2 * (
@@ -359,7 +439,9 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
                              "through the member axis; give a smaller rim depth")
 
     _check_root_size(sections, opt)
-    grading = [_Grading.of_section(sec, rim_v[j], opt, sections.pitch)
+    lay = mesh_layout(sections, rim_v, opt)
+    grading = [_Grading.of_section(sec, rim_v[j], opt, sections.pitch, lay,
+                                   sections.edge_radius, sections.one_cut)
                for j, sec in enumerate(sections.sections)]
 
     def mapping(p: np.ndarray) -> np.ndarray:
