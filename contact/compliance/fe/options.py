@@ -144,10 +144,15 @@ class FEOptions:
     load_nu, load_nv : int — [1]
         Grid of unit loads on the working flank, lengthwise × profile (the ease-off
         grid's layout, :func:`geometry.flank.projection_grid`); 2 to 81.
-    load_v_limits : (float, float) — [1]
-        Profile fractions covered by the load grid (default the ease-off grid's
-        (0.05, 1.0)); 0 ≤ low < high ≤ 1.
-
+    load_v_limits : (float, float) or None — [1]
+        Profile fractions covered by the load grid. Default None: from the generated
+        working flank, (max(0.05, v₀ + 0.01), 1.0) with v₀ the highest profile fraction,
+        over the model's sections, below which its side is no longer a rising function
+        of v (it turns into the fillet's flat bottom; :meth:`contact.compliance.fe.
+        section.ToothSections.flank_start`): the ease-off grid's (0.05, 1.0) wherever
+        the flank is generated down to 0.04 of the depth, higher where it is not (the
+        hypoid example's gear begins 0.06–0.09 above the root cone at the heel).
+        Given: 0 ≤ low < high ≤ 1, and the flank must exist down to low.
     Raises
     ------
     InputError
@@ -179,7 +184,7 @@ class FEOptions:
     poisson_ratio: float = STEEL[1]
     load_nu: int = 21
     load_nv: int = 11
-    load_v_limits: tuple[float, float] = (0.05, 1.0)
+    load_v_limits: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         teeth = integer("teeth", self.teeth, 3, 9)
@@ -208,12 +213,14 @@ class FEOptions:
         object.__setattr__(self, "poisson_ratio",
                            real("poisson_ratio", self.poisson_ratio, unit="1", low=0.0,
                                 high=0.5, high_open=True))
-        lim = tuple(real("load_v_limits", x, unit="1", low=0.0, high=1.0)
-                    for x in self.load_v_limits) if len(self.load_v_limits) == 2 else ()
-        if len(lim) != 2 or not lim[0] < lim[1]:
-            raise InputError(f"load_v_limits: must be two profile fractions 0 <= low < "
-                             f"high <= 1, got {self.load_v_limits!r}")
-        object.__setattr__(self, "load_v_limits", lim)
+        if self.load_v_limits is not None:
+            given = self.load_v_limits
+            lim = tuple(real("load_v_limits", x, unit="1", low=0.0, high=1.0)
+                        for x in given) if len(given) == 2 else ()
+            if len(lim) != 2 or not lim[0] < lim[1]:
+                raise InputError(f"load_v_limits: must be None or two profile fractions "
+                                 f"0 <= low < high <= 1, got {given!r}")
+            object.__setattr__(self, "load_v_limits", lim)
 
     @property
     def neighbours(self) -> int:
@@ -253,5 +260,6 @@ class FEOptions:
     def as_dict(self) -> dict[str, Any]:
         """The options as a dict of plain values."""
         d = dataclasses.asdict(self)
-        d["load_v_limits"] = list(d["load_v_limits"])
+        if d["load_v_limits"] is not None:
+            d["load_v_limits"] = list(d["load_v_limits"])
         return d

@@ -206,6 +206,20 @@ class ToothSections:
         """``"left"`` or ``"right"``: where ``flank`` lies on the reference tooth."""
         return "left" if flank == self.left_flank else "right"
 
+    def _rising(self, flank: str, sec: ToothSection) -> tuple[np.ndarray, np.ndarray]:
+        """(v, φ) of the part of ``flank``'s side in ``sec`` where v rises monotonically
+        up to the tip."""
+        curve = sec.left if self.side_name(flank) == "left" else sec.right
+        falls = np.flatnonzero(np.diff(curve.v) <= 0.0)
+        start = int(falls[-1]) + 1 if falls.size else 0
+        return curve.v[start:], curve.phi[start:]
+
+    def flank_start(self, flank: str) -> float:
+        """The highest profile fraction v [1], over the sections, below which ``flank``'s
+        side is no longer a rising function of v (where it turns into the fillet's flat
+        bottom): the flank is generated from there up in every section."""
+        return float(max(self._rising(flank, sec)[0][0] for sec in self.sections))
+
     def flank_angle(self, flank: str, u, v) -> np.ndarray:
         """Angle φ [rad] of the reference tooth's ``flank`` at fractions (u, v) (broadcast
         together; a few hundred points: the spline is evaluated as a square): in each
@@ -217,13 +231,9 @@ class ToothSections:
         InputError — v below that part of a side or above the face cone in a section.
         """
         u, v = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
-        side = self.side_name(flank)
         table = np.empty((len(self.sections), v.size))
         for j, sec in enumerate(self.sections):
-            curve = sec.left if side == "left" else sec.right
-            falls = np.flatnonzero(np.diff(curve.v) <= 0.0)
-            start = int(falls[-1]) + 1 if falls.size else 0
-            vs, ps = curve.v[start:], curve.phi[start:]
+            vs, ps = self._rising(flank, sec)
             if np.any(np.diff(vs) <= 0.0) or v.min() < vs[0] - 1e-9 or v.max() > vs[-1] + 1e-9:
                 raise InputError(f"v: the {flank} flank of the {self.member} in the section at "
                                  f"u = {sec.u:.3f} covers v in [{vs[0]:.3f}, {vs[-1]:.3f}] "
