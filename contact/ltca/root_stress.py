@@ -26,6 +26,7 @@ Public functions
 member_contact_points   the segments' contact points in a member's frame
 root_stress             the ``root_stress`` variables of an ``/ltca`` dataset
 prepare_coefficients    both members' coefficients built (or read) once, before a study
+coefficients_cached     whether both members' coefficients are in the cache already
 """
 
 from __future__ import annotations
@@ -44,7 +45,8 @@ from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 from geometry.pair.assembly import case_transforms
 
-__all__ = ["MEMBERS", "member_contact_points", "prepare_coefficients", "root_stress"]
+__all__ = ["MEMBERS", "coefficients_cached", "member_contact_points", "prepare_coefficients",
+           "root_stress"]
 
 log = logging.getLogger(__name__)
 
@@ -96,6 +98,36 @@ def prepare_coefficients(case, flank: str | None = None, options=None, *,
 
     flanks = dict(zip(MEMBERS, working_flanks(case, flank), strict=True))
     return pair_coefficients(case, flanks, options, progress=progress)
+
+
+def coefficients_cached(case, flank: str | None = None, options=None, *,
+                        cache_dir=None) -> bool:
+    """Whether both members' FE influence coefficients of the analysed flanks are in the
+    cache, so that the root stress adds only reading them and the superposition.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str or None — the working flank role or name, as :func:`contact.run_analysis`
+        takes it
+    options : contact.compliance.fe.FEOptions, optional — the FE model (default
+        ``FEOptions()``)
+    cache_dir : path, optional — as :func:`contact.compliance.fe.influence_coefficients`
+
+    Returns
+    -------
+    bool — True when both cache files exist (their contents are checked when read).
+
+    Raises
+    ------
+    InputError — an unknown flank.
+    """
+    from contact.compliance.fe import cache_key, cache_path
+    from contact.utca.easeoff import working_flanks
+
+    opt = options if options is not None else FEOptions()
+    return all(cache_path(cache_key(case.member(m), f, opt), cache_dir).exists()
+               for m, f in zip(MEMBERS, working_flanks(case, flank), strict=True))
 
 
 def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str, np.ndarray]:
