@@ -165,11 +165,13 @@ def _pair_teeth(coef: xr.Dataset, pts: np.ndarray, pairs: np.ndarray) -> np.ndar
     """(K,) the member-frame tooth offset of each pair's tooth, from its segments' points
     (J, K, S, 3); pairs without a point continue the neighbours' step."""
     teeth = np.full(pairs.size, np.nan)
-    for k in range(pairs.size):
-        q = pts[:, k].reshape(-1, 3)
-        q = q[np.all(np.isfinite(q), axis=1)]
-        if len(q):
-            t = locate_flank_points(coef, q, strict=False).tooth
+    q = np.moveaxis(pts, 1, 0).reshape(pairs.size, -1, 3)  # (K, J S, 3)
+    ok = np.all(np.isfinite(q), axis=2)
+    if ok.any():  # one location of every pair's points
+        found = locate_flank_points(coef, q[ok], strict=False).tooth
+        of_pair = np.nonzero(ok)[0]
+        for k in np.unique(of_pair):
+            t = found[of_pair == k]
             teeth[k] = np.bincount(t - t.min()).argmax() + t.min()
     known = np.flatnonzero(np.isfinite(teeth))
     if known.size == 0:
@@ -267,7 +269,7 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         [mm]
     options : contact.compliance.fe.FEOptions, optional — the FE model (default
         ``FEOptions()``; its coefficients are built once per member and design, then
-        read from the cache: docs/fe.md gives the cost, ~15–30 s per member)
+        read from the cache: docs/fe.md gives the cost, ~1 min per member with PARDISO)
     coefficients : dict, optional — ``{"pinion": ds, "gear": ds}`` influence coefficients
         of the ease-off's working flanks (then ``options`` and the cache are not used)
     cache, cache_dir, progress, solver — as
