@@ -14,7 +14,7 @@ References, none taken from the code under test:
 
 The CI tests run the small LTCA of tests/test_root_stress.py (one mesh cycle of 4 rolls,
 8 segments per curve, one torque: ~4 s) on the coarse FE model of tests/test_fe_tooth.py
-(~3 000 unknowns, 2–4 s per member with SuperLU, built once in this module).
+(11 000–14 000 unknowns, 3–7 s per member with SuperLU, built once in this module).
 """
 
 from __future__ import annotations

@@ -12,7 +12,10 @@ the loads reach (:mod:`contact.compliance.fe.superposition`):
 with p_i the segment's contact point carried into the member's frame at the roll
 position, k_i the tooth it lies on and N_a the bilinear hat weights of the load grid.
 The **root stress** at a face station is the largest maximum principal stress over both
-fillets of the tooth at that station (the tension side is the loaded flank's fillet);
+fillets of the tooth at that station — over their root points (``fillet_in_root``: the
+half slot and the element rows up to the fillet's junction with the flank, not the flank
+above, where a contact load's own stress lies) — (the tension side is the loaded flank's
+fillet);
 its peak over the mesh cycle, per torque and member, is ``root_stress_max``.
 
 Teeth are labelled by the LTCA's tooth-pair offset: tooth k of each member is the one in
@@ -220,6 +223,7 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
     uniq, inverse = np.unique(hat.reshape(nt * nj, -1), axis=0, return_inverse=True)
     hat = uniq.reshape(-1, teeth.size, nl)
     blocks = [np.ascontiguousarray(sv[:, i]) for i in range(offsets.size)]
+    root = root_points(coef)  # (side, station, arc): the flank above the fillet excluded
     shape = (hat.shape[0], *s.shape[3:])
     result = np.zeros((hat.shape[0], nk, s.sizes["station"]))
     # a roll's loads reach only the grid nodes near its contact lines: sparse hat loads
@@ -230,10 +234,19 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
             src = np.searchsorted(teeth, tooth_of_pair[kk] - d)
             if src < teeth.size and teeth[src] == tooth_of_pair[kk] - d:
                 tensor += sparse_hat[src] @ blocks[i]
-        smax = _max_principal(tensor.reshape(shape))
+        smax = np.where(root, _max_principal(tensor.reshape(shape)), -np.inf)
         result[:, kk] = smax.max(axis=(1, 3))  # over the sides and the fillet arc
     out[:] = result[np.ravel(inverse)].reshape(out.shape)
     return out
+
+
+def root_points(coef: xr.Dataset) -> np.ndarray:
+    """(side, station, arc) bool: the fillet points of a member's coefficients that lie in
+    the root (``fillet_in_root``: the half slot and the element rows up to the fillet's
+    junction with the flank, the same on every tooth), over which the root stress is the
+    largest."""
+    return coef["fillet_in_root"].isel(tooth=0).transpose("side", "station", "arc") \
+        .values.astype(bool)
 
 
 def _max_principal(t: np.ndarray) -> np.ndarray:

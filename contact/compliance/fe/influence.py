@@ -136,6 +136,7 @@ class _FilletPoints:
     v: np.ndarray  # (P,) [1]
     index: np.ndarray  # (teeth, 2 sides, stations, arc points) → point
     station: np.ndarray  # (stations,) [1] lengthwise parameter fraction
+    in_root: np.ndarray  # (P,) bool: on the half slot or the rows up to the junction
 
 
 @dataclass(eq=False)
@@ -290,8 +291,11 @@ def _fillet_points(solid: ToothSolid, elastic: ElasticModel, offsets: list[int])
     op = stress_operator(elastic, grads.reshape(nb, 3, -1), np.repeat(fb.tind, nq))
     stations = None
     index_blocks, at = [], 0
+    in_root = np.ones(par.shape[1] * nq, dtype=bool)
     for t, s, side, fac, n_slot in blocks:
         p = par[:, at:at + fac.size].reshape(3, -1)  # this block's points, facet-major
+        in_root[at * nq + n_slot * nq:(at + fac.size) * nq] = solid.in_root(
+            side, p[:, n_slot * nq:])
         a0 = lay.side_a(t, side)
         key = np.where(np.arange(fac.size * nq) < n_slot * nq,
                        (p[0] - (a0 - lay.slot)) if side == "left" else (a0 + lay.slot - p[0]),
@@ -315,7 +319,7 @@ def _fillet_points(solid: ToothSolid, elastic: ElasticModel, offsets: list[int])
     pos = x.reshape(3, -1).T
     u, v = projection_fractions(solid.sections.corners, pos[:, 2], np.hypot(pos[:, 0],
                                                                             pos[:, 1]))
-    return _FilletPoints(op, pos, u, v, index, stations / lay.face)
+    return _FilletPoints(op, pos, u, v, index, stations / lay.face, in_root)
 
 
 #: [1] the load grid's lowest profile fraction by default (the ease-off grid's) and its
@@ -550,6 +554,11 @@ def influence_dataset(model: InfluenceModel, case, *, progress: bool = True,
         "fillet_v": data_var(("tooth", "side", "station", "arc"), model.fillet.v[idx], "1",
                              "profile fraction of the root fillet point (negative: under "
                              "the root cone)"),
+        "fillet_in_root": data_var(
+            ("tooth", "side", "station", "arc"), model.fillet.in_root[idx].astype(np.int8),
+            "1", "1 where the point lies in the root (the half slot and the element rows "
+                 "up to the fillet's junction with the flank), 0 on the flank above it: "
+                 "the root stress is the largest over the points with 1"),
         "flank_position": data_var(("u", "v", "xyz"), x0, "mm",
                                    "load grid point on the loaded tooth's working flank "
                                    "(FE surface), member frame"),

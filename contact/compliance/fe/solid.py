@@ -253,6 +253,9 @@ class ToothSolid:
     rim_depth : float — [mm] the rim depth used (under the deepest slot bottom)
     fillet_rows : int — [1] element rows of the tooth sides that reach past the
         fillets' junction with the flanks in every section, plus one
+    junction_rows : ndarray (2 face + 1, 2) — [1] in each node plane, on the left and
+        the right side, the rows from the fillet's split point up to the one that holds
+        its junction with the flank: the root (:meth:`in_root`)
     mesh : MappedMesh — parameter and physical meshes
     build_time : float — [s] sections and mesh
     """
@@ -265,6 +268,7 @@ class ToothSolid:
     rim_v: np.ndarray
     rim_depth: float
     fillet_rows: int
+    junction_rows: np.ndarray
     mesh: MappedMesh
     build_time: float
 
@@ -290,6 +294,19 @@ class ToothSolid:
         side_facets = self.mesh.facets_where(lambda p: (np.abs(p[0] - a) < 1e-9)
                                              & (p[1] > rim))
         return np.r_[self.fillet_facets(offset, side)[0], side_facets]
+
+    def in_root(self, side: str, param: np.ndarray) -> np.ndarray:
+        """Whether points on the rows of the tooth side ``side`` above its half slot
+        (parameter coordinates (3, P)) lie in the root: in a row below or holding the
+        fillet's junction with the flank in one of the node planes of the point's element.
+        Above it the side is flank, where a load's own local stress would be taken for the
+        root's (the half slot is root throughout)."""
+        lay = self.layout
+        row = np.floor(param[1] - lay.rim + 1e-9).astype(int)
+        w = np.clip(np.floor(param[2] + 1e-9).astype(int), 0, lay.face - 1)
+        k = 0 if side == "left" else 1
+        planes = np.stack([self.junction_rows[2 * w + d, k] for d in range(3)])
+        return row < planes.max(axis=0)
 
     def fillet_facets(self, offset: int, side: str) -> tuple[np.ndarray, np.ndarray]:
         """Boundary facets of the root on one side of the tooth at ``offset``: (facets of
@@ -464,14 +481,15 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
         return (centre[1] < lay.rim) | ((la > lay.slot) & (la < lay.slot + lay.across))
 
     mesh = mapped_mesh(lay.shape, mapping, keep)
-    fillet_rows = 1 + max(
-        int(np.searchsorted(curve.split + (curve.length - curve.split) * table[0::2],
-                            curve.junction))
-        for sec, g in zip(sections.sections, grading, strict=True)
-        for curve, table in zip((sec.left, sec.right), g.rows, strict=True))
+    junction_rows = np.array([
+        [int(np.searchsorted(curve.split + (curve.length - curve.split) * table[0::2],
+                             curve.junction)) for curve, table in
+         zip((sec.left, sec.right), g.rows, strict=True)]
+        for sec, g in zip(sections.sections, grading, strict=True)])
+    fillet_rows = 1 + int(junction_rows.max())
     elapsed = time.perf_counter() - t0
     log.info("%s %s solid: %d elements, %d nodes, worst Jacobian ratio %.3f, %.1f s",
              case.name, member, mesh.mesh.nelements, mesh.mesh.doflocs.shape[1],
              mesh.min_jacobian, elapsed)
     return ToothSolid(case.name, member, opt, lay, sections, rim_v, float(depth),
-                      min(fillet_rows, lay.flank), mesh, elapsed)
+                      min(fillet_rows, lay.flank), junction_rows, mesh, elapsed)
