@@ -480,17 +480,19 @@ def _convergence_quantities(model):
 @pytest.mark.parametrize("name, member", [(DEFAULT, "pinion"), (DEFAULT, "gear"),
                                           (FACE_HOBBED, "pinion")])
 def test_mesh_convergence_at_the_default_mesh(name, member):
-    """One refinement of the default mesh (every division × 1.5: 57 000 → 195 000
-    unknowns) changes the mid-surface compliance under loads at mid height and the peak
-    tensile fillet stress under two point loads and a line load along the face by less
-    than 3 %. Measured: compliance −1.1 … +0.0 %, stress −2.2 … +0.4 % (FM pinion
-    −0.8/−0.5 %, gear −2.1/−0.2/−2.1 %, FH pinion −2.1/−1.3 %). Not asserted, in
-    docs/fe.md: loads at the tip (mid-surface compliance +0.1 … +5.4 %, stress
-    −3.9 … +1.6 %), the compressive peak (up to 5 %) and the flank-point compliance at
-    the load itself (+4 … +11 %: the local deformation under a hat 1.6 mm wide, finer
-    than the elements along the face, which the LTCA's contact term covers instead).
-    Needs ~4 GB with PARDISO (the optional extra fe); SuperLU would need ~10 GB, so the
-    study is skipped without PARDISO."""
+    """One refinement of the default mesh (every division × 1.5: 74 000–88 000 → 196 000–
+    250 000 unknowns) changes the mid-surface compliance under loads at mid height and the
+    peak tensile fillet stress (over the root points) under two point loads and a line
+    load along the face by less than 3 %. Measured: compliance −1.7 … +0.2 %, stress
+    −0.2 … +2.6 % (FM pinion −0.1/+0.2, +0.9/−0.1/+0.4 %; gear −0.1/−0.4,
+    +0.8/+1.3/+1.4 %; FH pinion −1.7/−0.4, −0.2/+1.9/+2.6 %). Not asserted, in docs/fe.md
+    (measured on the model before the mesh-convergence changes): loads at the tip
+    (mid-surface compliance +0.1 … +5.4 %, stress −3.9 … +1.6 %), the compressive peak (up
+    to 5 %) and the flank-point compliance at the load itself (+4 … +11 %: the local
+    deformation under a hat 1.6 mm wide, finer than the elements along the face, which the
+    LTCA's contact term covers instead). Needs ~5 GB with PARDISO (the optional extra
+    fe), ~3–4 min per member on the loaded 2-core machine; SuperLU would need far more,
+    so the study is skipped without PARDISO."""
     from contact.compliance.fe import SOLVERS
 
     if not SOLVERS["pardiso"]():

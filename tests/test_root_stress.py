@@ -349,8 +349,8 @@ def test_peak_root_stress_converges_with_the_mesh():
     """Mesh convergence of the peak root stress of an analysis as a rate: the small
     LTCA's forces on the coarse FE model refined twice by 1.5 (every division and the
     root element size h; the element counts follow h, solid.mesh_layout): 13 000–14 000
-    → 20 000–24 000 → 47 000–54 000 unknowns. Measured at 250 N·m: pinion 484 → 465 →
-    459 MPa (−3.9 %, −1.3 %), gear 323 → 318 → 312 MPa (−1.8 %, −1.7 %); a fourth level
+    → 20 000–24 000 → 47 000–54 000 unknowns. Measured at 250 N·m: pinion 483 → 465 →
+    459 MPa (−3.7 %, −1.3 %), gear 323 → 318 → 312 MPa (−1.8 %, −1.7 %); a fourth level
     (116 000–129 000 unknowns, ~2 min, not run here) gives 464 and 313 MPa (+1.0 %,
     +0.25 %): the peak is within 1 % of it from the third level on (docs/fe.md, mesh
     convergence). Asserted: the second refinement changes each member's peak by less than
