@@ -391,7 +391,7 @@ def test_every_bundled_case_runs_the_fe_compliance_and_root_stress(coarse_cache)
     """``--compliance fe`` with the root stress and no FE options on every bundled case
     (the small LTCA at 250 N·m, the coarse FE model; the default model differs only in
     its divisions): every roll found, both members' peak root stress positive and
-    finite. ~3 min (the coarse coefficients of every design)."""
+    finite. 1–3 min (the coarse coefficients of every design)."""
     from contact.catalogue import bundled_cases
     from contact.pipeline import run_analysis
 

@@ -360,7 +360,7 @@ def test_peak_root_stress_converges_with_the_mesh():
     tests/test_fe_tooth.py::test_refinement_changes_the_compliance_little_on_a_coarse_model
     takes the first step). Before the slot bottoms were rounded continuously along the
     face and the counts followed h, this sequence changed the pinion's peak by +17 %,
-    +6.3 % and the gear's by +46 %, +3.7 %. ~1 min with PARDISO."""
+    +6.3 % and the gear's by +46 %, +3.7 %. 0.5–1 min with PARDISO."""
     case, eo, lt = _analysis()
     peaks, comp = [], []
     opt = COARSE

@@ -9,8 +9,9 @@ from a parameter box (A across the sector, B up from the rim's inner surface, W 
 face width) laid out per tooth as
 
 * a **rim block** under each pitch: columns along the half slots (the lower part of each
-  root fillet and half the slot bottom, finer towards the fillet) and across the tooth's
-  root, rows from the inner surface up to the slot bottom and fillet (finer at the top);
+  root fillet and half the slot bottom, finer towards the fillet, and towards the slot's
+  middle too where two cuts meet there) and across the tooth's root, rows from the inner
+  surface up to the slot bottom and fillet (finer at the top);
 * a **tooth block** on it: columns across the tooth (finer towards both flanks), rows up
   the upper part of the fillets (from where they lean 45°) and up the flanks (finer next to
   the fillet) to the face cone.
@@ -18,12 +19,16 @@ face width) laid out per tooth as
 Every node is placed in its transverse section (v, φ) and carried to the member frame by
 the blank's projection-plane map; the sections are computed at the lengthwise fraction of
 every node plane, so the curved flanks and fillets are followed by the quadratic geometry.
+Every graded direction starts from the root element size h; the element counts are the
+options' divisions, raised where a section needs more to keep the root fine
+(:func:`mesh_layout`).
 
 Public names
 ------------
 SolidLayout        element counts and parameter ranges of the blocks
 ToothSolid         the meshed solid with its sections and layout
 build_tooth_solid  build it from a case
+mesh_layout        the element counts: the options' divisions raised to keep the root fine
 """
 
 from __future__ import annotations
@@ -48,7 +53,7 @@ from contact.compliance.fe.options import FEOptions
 from contact.compliance.fe.section import ToothSection, ToothSections, tooth_sections
 from geometry.core.errors import InputError
 
-__all__ = ["SolidLayout", "ToothSolid", "build_tooth_solid"]
+__all__ = ["SolidLayout", "ToothSolid", "build_tooth_solid", "mesh_layout"]
 
 log = logging.getLogger(__name__)
 
@@ -158,6 +163,16 @@ def mesh_layout(sections: ToothSections, rim_v: np.ndarray, opt: FEOptions) -> S
 
     So a refinement (smaller h) refines the root in every direction, and a coarse model is
     not made of elements several h thick under its fillets (docs/fe.md, mesh convergence).
+
+    Parameters
+    ----------
+    sections : ToothSections — the member's sections at every node plane
+    rim_v : ndarray (2 face + 1,) — [1] profile fraction of the rim's inner surface there
+    opt : FEOptions — the divisions (minimums) and the root element size
+
+    Returns
+    -------
+    SolidLayout — the element counts (teeth and face divisions as given)
     """
     lay = SolidLayout.from_options(opt)
     fine = _slot_fine(sections.one_cut)
