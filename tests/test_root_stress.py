@@ -420,7 +420,7 @@ def test_ltca_run_has_the_root_stress_switch(tmp_path, monkeypatch):
     shell = LTCAOptions()
     built = root_stress_hint(case, None, shell)
     assert "--root-stress" in built and ROOT_STRESS_COST in built
-    assert "~1 min per member" in ROOT_STRESS_COST
+    assert "~0.5-1.5 min per member" in ROOT_STRESS_COST
     for member, flank in zip(("pinion", "gear"), working_flanks(case, None), strict=True):
         path = cache_path(cache_key(case.member(member), flank, FEOptions()))
         path.touch()

@@ -350,7 +350,7 @@ def compliance_option(p: argparse.ArgumentParser) -> None:
                    help="tooth compliance of the loaded TCA: shell (default; the seed's "
                         "tapered shells on a fillet foundation) or fe (3-D FE models of the "
                         "generated teeth, fillets and rim, docs/fe.md: the first run of a "
-                        "design builds their influence coefficients, ~1 min per member "
+                        "design builds their influence coefficients, ~0.5-1.5 min per member "
                         "with PARDISO, then reads them from the cache); Weber's contact "
                         "term in both")
 

@@ -93,7 +93,7 @@ def register(sub) -> None:
 
 #: what the root stress costs, as the help and the hint of `ltca run` say it (docs/fe.md,
 #: "Cost": the default FE model of the default case, measured with PARDISO)
-ROOT_STRESS_COST = ("the first run of a design builds them, ~1 min per member with PARDISO "
+ROOT_STRESS_COST = ("the first run of a design builds them, ~0.5-1.5 min per member with PARDISO "
                     "on 2 cores (pip install 'hypoid-ltca[fe]'; several minutes with "
                     "SuperLU or on a loaded machine), then they are read from the cache and "
                     "add ~1-2 s to the run")

@@ -282,7 +282,7 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         [mm]
     options : contact.compliance.fe.FEOptions, optional — the FE model (default
         ``FEOptions()``; its coefficients are built once per member and design, then
-        read from the cache: docs/fe.md gives the cost, ~1 min per member with PARDISO)
+        read from the cache: docs/fe.md gives the cost, ~0.5–1.5 min per member with PARDISO)
     coefficients : dict, optional — ``{"pinion": ds, "gear": ds}`` influence coefficients
         of the ease-off's working flanks (then ``options`` and the cache are not used)
     cache, cache_dir, progress, solver — as

@@ -151,7 +151,7 @@ class FEOptions:
         of v (it turns into the fillet's flat bottom; :meth:`contact.compliance.fe.
         section.ToothSections.flank_start`): the ease-off grid's (0.05, 1.0) wherever
         the flank is generated down to 0.04 of the depth, higher where it is not (the
-        hypoid example's gear begins 0.06–0.09 above the root cone at the heel).
+        hypoid example's gear begins at v = 0.093 at the heel).
         Given: 0 ≤ low < high ≤ 1, and the flank must exist down to low.
     Raises
     ------
