@@ -15,7 +15,7 @@ both compliances; then the time of each analysis (ease-off, UTCA, the LTCA of th
 torques and the root stress; wall and process CPU, in one process, one after the other:
 the ratio FE/shell is the number to read).
 
-The FE coefficients are read from the disk cache (built the first time: ~0.5–3 min per
+The FE coefficients are read from the disk cache (built the first time: ~0.5–1.5 min per
 member; their build is timed apart and not in the LTCA's time).
 
 Run::

@@ -314,7 +314,7 @@ def run_analysis(
         (torque, member); :func:`contact.ltca.root_stress.root_stress`): True with the
         default FE model (with ``options.compliance == "fe"``: the compliance's FE model,
         ``options.fe_options()``), or the FE model's options. Default False: the FE influence
-        coefficients cost ~15–30 s per member and design the first time (then they are
+        coefficients cost ~0.5–1.5 min per member and design the first time (then they are
         read from the cache, and the superposition adds a few % to the LTCA).
 
     Returns

@@ -58,9 +58,9 @@ def register(sub) -> None:
                    help="the tooth-root stress of every bin and with it the bending side "
                    "(root damage, life, bending safety factor; ISO 6336-3), on by default: "
                    "the first run of a design builds its FE influence coefficients "
-                   "(~15-30 s per member on 2 cores, minutes on a loaded machine), later "
-                   "runs read them from the cache (docs/fe.md); --no-root-stress: the "
-                   "flank (pitting) side only")
+                   "(~0.5-1.5 min per member with PARDISO on 2 cores, several with SuperLU or on "
+                   "a loaded machine), later runs read them from the cache (docs/fe.md); "
+                   "--no-root-stress: the flank (pitting) side only")
     progress_option(p)
     p.set_defaults(func=run)
 

@@ -350,8 +350,9 @@ def compliance_option(p: argparse.ArgumentParser) -> None:
                    help="tooth compliance of the loaded TCA: shell (default; the seed's "
                         "tapered shells on a fillet foundation) or fe (3-D FE models of the "
                         "generated teeth, fillets and rim, docs/fe.md: the first run of a "
-                        "design builds their influence coefficients, ~0.5-3 min per member, "
-                        "then reads them from the cache); Weber's contact term in both")
+                        "design builds their influence coefficients, ~0.5-1.5 min per member "
+                        "with PARDISO, then reads them from the cache); Weber's contact "
+                        "term in both")
 
 
 def output_option(p: argparse.ArgumentParser, *, default: str, what: str = "netCDF file",

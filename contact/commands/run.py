@@ -80,9 +80,7 @@ def register(sub) -> None:
                    help="write the one-page HTML report (as `ltca report`) to HTML")
     p.add_argument("--root-stress", action="store_true",
                    help="also the tooth-root stress of both members from FE influence "
-                   "coefficients (docs/fe.md): the first run of a design builds them, "
-                   "~15-30 s per member on 2 cores (minutes on a loaded machine), then they "
-                   "are read from the cache and add a few %% to the run")
+                   f"coefficients (docs/fe.md): {ROOT_STRESS_COST}")
     progress_option(p)
     p.set_defaults(func=run)
 
@@ -91,6 +89,31 @@ def register(sub) -> None:
     plots_option(q, default="plots")
     progress_option(q)
     q.set_defaults(func=plot)
+
+
+#: what the root stress costs, as the help and the hint of `ltca run` say it (docs/fe.md,
+#: "Cost": the default FE model of the default case, measured with PARDISO)
+ROOT_STRESS_COST = ("the first run of a design builds them, ~0.5-1.5 min per member with PARDISO "
+                    "on 2 cores (pip install 'hypoid-ltca[fe]'; several minutes with "
+                    "SuperLU or on a loaded machine), then they are read from the cache and "
+                    "add ~1-2 s to the run")
+
+
+def root_stress_hint(case, flank, opts) -> str:
+    """The line `ltca run` prints when the root stress was not asked for: how to turn it
+    on and what it would cost for this design now (built, cached, or the FE compliance's
+    own coefficients)."""
+    from contact.ltca.root_stress import coefficients_cached
+
+    if opts.compliance == "fe":
+        cost = ("it takes the FE compliance's coefficients, already read: the "
+                "superposition only, < 1 s")
+    elif coefficients_cached(case, flank):
+        cost = "this design's FE coefficients are in the cache: ~1-2 s more"
+    else:
+        cost = ROOT_STRESS_COST
+    return (f"tooth-root stress not computed (opt-in): add --root-stress; {cost} "
+            "(docs/fe.md)")
 
 
 #: columns of the theoretical/deviated TE table (seed Tables 4.2, 4.4), all [µrad] but T_p
@@ -252,7 +275,9 @@ def run(args: argparse.Namespace) -> int:
         print_extrapolation_warning(fr)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     print(plastic_note(lt))
-    if "root_stress_max" in lt:
+    if "root_stress_max" not in lt:
+        print(root_stress_hint(case, args.flank, opts))
+    else:
         peak = lt["root_stress_max"]
         print("peak tooth-root stress over the mesh cycle (max principal, FE "
               "superposition) [MPa]:")

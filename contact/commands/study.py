@@ -95,8 +95,8 @@ def _root_stress_option(p: argparse.ArgumentParser) -> None:
     p.add_argument("--root-stress", action="store_true",
                    help="also the peak tooth-root stress of both members at every point "
                    "(root_stress_max) from FE influence coefficients (docs/fe.md): built once "
-                   "per design, ~0.5-3 min per member, then read from the cache by every "
-                   "worker")
+                   "per design, ~0.5-1.5 min per member with PARDISO (several with SuperLU), then "
+                   "read from the cache by every worker")
 
 
 def register(sub) -> None:

@@ -12,7 +12,10 @@ the loads reach (:mod:`contact.compliance.fe.superposition`):
 with p_i the segment's contact point carried into the member's frame at the roll
 position, k_i the tooth it lies on and N_a the bilinear hat weights of the load grid.
 The **root stress** at a face station is the largest maximum principal stress over both
-fillets of the tooth at that station (the tension side is the loaded flank's fillet);
+fillets of the tooth at that station — over their root points (``fillet_in_root``: the
+half slot and the element rows up to the fillet's junction with the flank, not the flank
+above, where a contact load's own stress lies) — (the tension side is the loaded flank's
+fillet);
 its peak over the mesh cycle, per torque and member, is ``root_stress_max``.
 
 Teeth are labelled by the LTCA's tooth-pair offset: tooth k of each member is the one in
@@ -26,6 +29,7 @@ Public functions
 member_contact_points   the segments' contact points in a member's frame
 root_stress             the ``root_stress`` variables of an ``/ltca`` dataset
 prepare_coefficients    both members' coefficients built (or read) once, before a study
+coefficients_cached     whether both members' coefficients are in the cache already
 """
 
 from __future__ import annotations
@@ -44,7 +48,8 @@ from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 from geometry.pair.assembly import case_transforms
 
-__all__ = ["MEMBERS", "member_contact_points", "prepare_coefficients", "root_stress"]
+__all__ = ["MEMBERS", "coefficients_cached", "member_contact_points", "prepare_coefficients",
+           "root_stress"]
 
 log = logging.getLogger(__name__)
 
@@ -98,6 +103,36 @@ def prepare_coefficients(case, flank: str | None = None, options=None, *,
     return pair_coefficients(case, flanks, options, progress=progress)
 
 
+def coefficients_cached(case, flank: str | None = None, options=None, *,
+                        cache_dir=None) -> bool:
+    """Whether both members' FE influence coefficients of the analysed flanks are in the
+    cache, so that the root stress adds only reading them and the superposition.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str or None — the working flank role or name, as :func:`contact.run_analysis`
+        takes it
+    options : contact.compliance.fe.FEOptions, optional — the FE model (default
+        ``FEOptions()``)
+    cache_dir : path, optional — as :func:`contact.compliance.fe.influence_coefficients`
+
+    Returns
+    -------
+    bool — True when both cache files exist (their contents are checked when read).
+
+    Raises
+    ------
+    InputError — an unknown flank.
+    """
+    from contact.compliance.fe import cache_key, cache_path
+    from contact.utca.easeoff import working_flanks
+
+    opt = options if options is not None else FEOptions()
+    return all(cache_path(cache_key(case.member(m), f, opt), cache_dir).exists()
+               for m, f in zip(MEMBERS, working_flanks(case, flank), strict=True))
+
+
 def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str, np.ndarray]:
     """The LTCA segments' contact points in each member's frame.
 
@@ -133,11 +168,13 @@ def _pair_teeth(coef: xr.Dataset, pts: np.ndarray, pairs: np.ndarray) -> np.ndar
     """(K,) the member-frame tooth offset of each pair's tooth, from its segments' points
     (J, K, S, 3); pairs without a point continue the neighbours' step."""
     teeth = np.full(pairs.size, np.nan)
-    for k in range(pairs.size):
-        q = pts[:, k].reshape(-1, 3)
-        q = q[np.all(np.isfinite(q), axis=1)]
-        if len(q):
-            t = locate_flank_points(coef, q, strict=False).tooth
+    q = np.moveaxis(pts, 1, 0).reshape(pairs.size, -1, 3)  # (K, J S, 3)
+    ok = np.all(np.isfinite(q), axis=2)
+    if ok.any():  # one location of every pair's points
+        found = locate_flank_points(coef, q[ok], strict=False).tooth
+        of_pair = np.nonzero(ok)[0]
+        for k in np.unique(of_pair):
+            t = found[of_pair == k]
             teeth[k] = np.bincount(t - t.min()).argmax() + t.min()
     known = np.flatnonzero(np.isfinite(teeth))
     if known.size == 0:
@@ -186,6 +223,7 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
     uniq, inverse = np.unique(hat.reshape(nt * nj, -1), axis=0, return_inverse=True)
     hat = uniq.reshape(-1, teeth.size, nl)
     blocks = [np.ascontiguousarray(sv[:, i]) for i in range(offsets.size)]
+    root = root_points(coef)  # (side, station, arc): the flank above the fillet excluded
     shape = (hat.shape[0], *s.shape[3:])
     result = np.zeros((hat.shape[0], nk, s.sizes["station"]))
     # a roll's loads reach only the grid nodes near its contact lines: sparse hat loads
@@ -196,10 +234,19 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
             src = np.searchsorted(teeth, tooth_of_pair[kk] - d)
             if src < teeth.size and teeth[src] == tooth_of_pair[kk] - d:
                 tensor += sparse_hat[src] @ blocks[i]
-        smax = _max_principal(tensor.reshape(shape))
+        smax = np.where(root, _max_principal(tensor.reshape(shape)), -np.inf)
         result[:, kk] = smax.max(axis=(1, 3))  # over the sides and the fillet arc
     out[:] = result[np.ravel(inverse)].reshape(out.shape)
     return out
+
+
+def root_points(coef: xr.Dataset) -> np.ndarray:
+    """(side, station, arc) bool: the fillet points of a member's coefficients that lie in
+    the root (``fillet_in_root``: the half slot and the element rows up to the fillet's
+    junction with the flank, the same on every tooth), over which the root stress is the
+    largest."""
+    return coef["fillet_in_root"].isel(tooth=0).transpose("side", "station", "arc") \
+        .values.astype(bool)
 
 
 def _max_principal(t: np.ndarray) -> np.ndarray:
@@ -235,7 +282,7 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         [mm]
     options : contact.compliance.fe.FEOptions, optional — the FE model (default
         ``FEOptions()``; its coefficients are built once per member and design, then
-        read from the cache: docs/fe.md gives the cost, ~15–30 s per member)
+        read from the cache: docs/fe.md gives the cost, ~0.5–1.5 min per member with PARDISO)
     coefficients : dict, optional — ``{"pinion": ds, "gear": ds}`` influence coefficients
         of the ease-off's working flanks (then ``options`` and the cache are not used)
     cache, cache_dir, progress, solver — as

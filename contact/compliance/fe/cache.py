@@ -39,8 +39,10 @@ __all__ = ["CACHE_ENV", "FORMAT_VERSION", "cache_directory", "cache_key", "cache
 
 #: environment variable that overrides the default cache directory
 CACHE_ENV = "HYPOID_LTCA_CACHE"
-#: layout version of the cached files; part of every key
-FORMAT_VERSION = 1
+#: version of the cached files' layout and of the model that made them (2: the slot
+#: bottoms rounded continuously along the face, element counts from the root size;
+#: 3: fillet_in_root); part of every key
+FORMAT_VERSION = 3
 
 
 def cache_directory(cache_dir: str | os.PathLike[str] | None = None) -> Path:

@@ -30,6 +30,7 @@ Public names
 ------------
 InfluenceModel         the FE model with its load vectors and stress points
 build_influence_model  build it (solid, stiffness, factorisation, loads, fillet points)
+load_v_limits          the profile fractions the load grid covers (follows the flank)
 influence_dataset      solve the unit loads and gather the coefficients
 influence_coefficients the cached entry point: dataset of one member
 hat_weights            bilinear hat functions of a grid at points
@@ -40,6 +41,7 @@ from __future__ import annotations
 
 import json
 import logging
+import math
 import os
 import sys
 import time
@@ -74,6 +76,7 @@ __all__ = [
     "hat_weights",
     "influence_coefficients",
     "influence_dataset",
+    "load_v_limits",
     "principal_stresses",
 ]
 
@@ -83,7 +86,8 @@ log = logging.getLogger(__name__)
 COMPONENTS = ("xx", "yy", "zz", "yz", "xz", "xy")
 _SIDES = ("left", "right")
 _CHUNK = 32  # right-hand sides per solve
-_LOAD_ORDER = 6  # facet quadrature order of the hat loads (4 × 4 Gauss points per facet)
+_LOAD_ORDER = 6  # facet quadrature order of the hat loads (4 × 4 Gauss points per facet) ...
+_POINTS_PER_CELL = 2  # ... or more: Gauss points per load-grid cell across the largest facet
 
 
 def hat_weights(grid_u: np.ndarray, grid_v: np.ndarray, u, v, *,
@@ -132,6 +136,7 @@ class _FilletPoints:
     v: np.ndarray  # (P,) [1]
     index: np.ndarray  # (teeth, 2 sides, stations, arc points) → point
     station: np.ndarray  # (stations,) [1] lengthwise parameter fraction
+    in_root: np.ndarray  # (P,) bool: on the half slot or the rows up to the junction
 
 
 @dataclass(eq=False)
@@ -224,13 +229,30 @@ def _hats(solid: ToothSolid, fb: FacetPoints, grid_u, grid_v):
     return hats.tocsc(), area
 
 
+def _load_order(solid: ToothSolid, facets: np.ndarray, grid_u: np.ndarray,
+                grid_v: np.ndarray) -> int:
+    """Facet quadrature order of the hat loads: :data:`_LOAD_ORDER`, or higher where a
+    facet spans several load-grid cells (a large element up the flank under a fine grid),
+    so that every hat meets :data:`_POINTS_PER_CELL` Gauss points per cell across it and
+    none of them falls between the points."""
+    mapped = solid.mesh
+    corners = mapped.mesh.doflocs[:, mapped.param.facets[:, facets]]  # (3, 4, F) vertices
+    u, v = projection_fractions(solid.sections.corners, corners[2].ravel(),
+                                np.hypot(corners[0], corners[1]).ravel())
+    cells = max(float(np.ptp(u.reshape(4, -1), axis=0).max() / np.diff(grid_u).min()),
+                float(np.ptp(v.reshape(4, -1), axis=0).max() / np.diff(grid_v).min()))
+    points = math.ceil(_POINTS_PER_CELL * cells)  # per direction; order 2n − 2 gives n
+    return max(_LOAD_ORDER, 2 * points - 2)
+
+
 def _flank_loads(solid: ToothSolid, elastic: ElasticModel, offset: int, side: str,
                  grid_u: np.ndarray, grid_v: np.ndarray):
     """On one tooth: the unit hat loads (3N, nL) [N] on its flank side (the flank's
     displacement functionals too), the hats' flank areas (nL,) [mm²], and the functionals
     of its mid-surface's displacement along each hat's mean inward flank normal
     (3N, nL) [1]."""
-    fb = _facet_points(solid, solid.flank_facets(offset, side), _LOAD_ORDER)
+    facets = solid.flank_facets(offset, side)
+    fb = _facet_points(solid, facets, _load_order(solid, facets, grid_u, grid_v))
     hats, area = _hats(solid, fb, grid_u, grid_v)
     scaled = hats.multiply(1.0 / area[None, :]).tocsc()  # (FQ, nL): N_a / A_a
     inward = -fb.normal.reshape(3, -1).T  # (FQ, 3)
@@ -245,7 +267,7 @@ def _flank_loads(solid: ToothSolid, elastic: ElasticModel, offset: int, side: st
     a_mid = lay.side_a(offset, "left") + 0.5 * lay.across
     mid = solid.mesh.facets_where(lambda p: (np.abs(p[0] - a_mid) < 1e-9) & (p[1] > lay.rim),
                                   boundary=False)
-    fm = _facet_points(solid, mid, _LOAD_ORDER)
+    fm = _facet_points(solid, mid, _load_order(solid, mid, grid_u, grid_v))
     hm, am = _hats(solid, fm, grid_u, grid_v)
     sm = hm.multiply(1.0 / am[None, :]).tocsc()
     w_mid = sp.vstack([sm.multiply(normal[:, c][None, :]) for c in range(3)]).tocsr()
@@ -269,8 +291,11 @@ def _fillet_points(solid: ToothSolid, elastic: ElasticModel, offsets: list[int])
     op = stress_operator(elastic, grads.reshape(nb, 3, -1), np.repeat(fb.tind, nq))
     stations = None
     index_blocks, at = [], 0
+    in_root = np.ones(par.shape[1] * nq, dtype=bool)
     for t, s, side, fac, n_slot in blocks:
         p = par[:, at:at + fac.size].reshape(3, -1)  # this block's points, facet-major
+        in_root[at * nq + n_slot * nq:(at + fac.size) * nq] = solid.in_root(
+            side, p[:, n_slot * nq:])
         a0 = lay.side_a(t, side)
         key = np.where(np.arange(fac.size * nq) < n_slot * nq,
                        (p[0] - (a0 - lay.slot)) if side == "left" else (a0 + lay.slot - p[0]),
@@ -294,7 +319,36 @@ def _fillet_points(solid: ToothSolid, elastic: ElasticModel, offsets: list[int])
     pos = x.reshape(3, -1).T
     u, v = projection_fractions(solid.sections.corners, pos[:, 2], np.hypot(pos[:, 0],
                                                                             pos[:, 1]))
-    return _FilletPoints(op, pos, u, v, index, stations / lay.face)
+    return _FilletPoints(op, pos, u, v, index, stations / lay.face, in_root)
+
+
+#: [1] the load grid's lowest profile fraction by default (the ease-off grid's) and its
+#: margin above where the generated working flank begins (:func:`load_v_limits`)
+LOAD_V_LOW = 0.05
+LOAD_V_MARGIN = 0.01
+
+
+def load_v_limits(sections, flank: str, options: FEOptions) -> tuple[float, float]:
+    """The profile fractions [1] the load grid covers on ``flank`` (a flank name).
+
+    ``options.load_v_limits`` if given; else (max(:data:`LOAD_V_LOW`, v₀ +
+    :data:`LOAD_V_MARGIN`), 1), v₀ where the generated flank begins in every section
+    (:meth:`contact.compliance.fe.section.ToothSections.flank_start`): the grid follows
+    the flank's extent, so that every bundled case's members take the default model.
+
+    Raises
+    ------
+    InputError — given limits below where the flank begins (naming ``load_v_limits``).
+    """
+    start = sections.flank_start(flank)
+    if options.load_v_limits is None:
+        return (max(LOAD_V_LOW, start + LOAD_V_MARGIN), 1.0)
+    low, high = options.load_v_limits
+    if low < start - 1e-9:
+        raise InputError(f"load_v_limits: the {sections.member}'s {flank} flank is generated "
+                         f"from v = {start:.3f} up in every section; the load grid must start "
+                         f"there or higher (or give None to follow the flank), got {low:g}")
+    return (low, high)
 
 
 def build_influence_model(case, member: str, flank: str = "drive",
@@ -326,6 +380,8 @@ def build_influence_model(case, member: str, flank: str = "drive",
     times = {}
     t0 = time.perf_counter()
     solid = build_tooth_solid(case, member, opt)
+    grid_u = np.linspace(0.0, 1.0, opt.load_nu)
+    grid_v = np.linspace(*load_v_limits(solid.sections, name, opt), opt.load_nv)
     times["solid"] = time.perf_counter() - t0
     elastic = elastic_model(solid.mesh.mesh, opt.element, opt.youngs_modulus,
                             opt.poisson_ratio)
@@ -337,8 +393,6 @@ def build_influence_model(case, member: str, flank: str = "drive",
                        (3 * fixed_nodes[:, None] + np.arange(3)).ravel(), solver)
     times["factorisation"] = factor.factor_time
     t1 = time.perf_counter()
-    grid_u = np.linspace(0.0, 1.0, opt.load_nu)
-    grid_v = np.linspace(*opt.load_v_limits, opt.load_nv)
     side = solid.sections.side_name(name)
     loads, centre, area = {}, {}, None
     for t in range(-solid.layout.neighbours, solid.layout.neighbours + 1):
@@ -500,6 +554,11 @@ def influence_dataset(model: InfluenceModel, case, *, progress: bool = True,
         "fillet_v": data_var(("tooth", "side", "station", "arc"), model.fillet.v[idx], "1",
                              "profile fraction of the root fillet point (negative: under "
                              "the root cone)"),
+        "fillet_in_root": data_var(
+            ("tooth", "side", "station", "arc"), model.fillet.in_root[idx].astype(np.int8),
+            "1", "1 where the point lies in the root (the half slot and the element rows "
+                 "up to the fillet's junction with the flank), 0 on the flank above it: "
+                 "the root stress is the largest over the points with 1"),
         "flank_position": data_var(("u", "v", "xyz"), x0, "mm",
                                    "load grid point on the loaded tooth's working flank "
                                    "(FE surface), member frame"),

@@ -11,6 +11,7 @@ the cantilever that checks it against beam theory (tests/test_fe_tooth.py).
 Public names
 ------------
 graded             node positions of a graded 1-D division, vertices and midpoints
+size_exponents     the exponents of its element sizes (growth factor q: sizes q^e)
 geometric_ratio    the growth factor that gives a geometric division a first element size
 at_index           interpolate such a table at a parameter coordinate
 MappedMesh         the parameter mesh, the physical mesh and the parameter coordinates
@@ -32,7 +33,15 @@ import skfem
 from geometry.core.errors import InputError, LTCAError
 
 __all__ = ["FacetPoints", "MappedMesh", "at_index", "facet_points", "geometric_ratio", "graded",
-           "mapped_mesh"]
+           "mapped_mesh", "size_exponents"]
+
+
+def size_exponents(n: int, fine: str) -> np.ndarray:
+    """Exponents e_k (n,) of the element sizes q^e_k of a division into ``n`` elements
+    graded from its start (e_k = k) or from both ends (``fine="both"``: min(k, n − 1 − k)),
+    the smallest element's 0; [1]."""
+    k = np.arange(n)
+    return np.minimum(k, n - 1 - k) if fine == "both" else k
 
 
 def graded(n: int, ratio: float = 1.0, fine: str = "start") -> np.ndarray:
@@ -43,7 +52,7 @@ def graded(n: int, ratio: float = 1.0, fine: str = "start") -> np.ndarray:
     n : int — [1] elements, ≥ 1
     ratio : float — [1] largest / smallest element (geometric progression), ≥ 1
     fine : str — where the smallest elements are: ``"start"``, ``"end"`` or ``"both"``
-        (symmetric; ``n`` even)
+        (symmetric; for odd ``n`` the middle element is the largest)
 
     Returns
     -------
@@ -51,11 +60,9 @@ def graded(n: int, ratio: float = 1.0, fine: str = "start") -> np.ndarray:
         (arithmetic means, so that a quadratic element's midside node sits in its
         middle) at odd indices.
     """
-    if fine == "both":
-        half = graded(n // 2, ratio, "start")
-        return np.r_[0.5 * half, 1.0 - 0.5 * half[::-1][1:]]
-    q = ratio ** (1.0 / (n - 1)) if n > 1 else 1.0
-    h = q ** np.arange(n)
+    e = size_exponents(n, "both" if fine == "both" else "start")
+    q = ratio ** (1.0 / e.max()) if e.max() > 0 else 1.0
+    h = q ** e.astype(float)
     x = np.r_[0.0, np.cumsum(h)] / h.sum()
     if fine == "end":
         x = 1.0 - x[::-1]
@@ -65,16 +72,20 @@ def graded(n: int, ratio: float = 1.0, fine: str = "start") -> np.ndarray:
     return out
 
 
-def geometric_ratio(n: int, total: float, first: float, *, limit: float = 2.5) -> float:
+def geometric_ratio(n: int, total: float, first: float, *, limit: float = 2.5,
+                    fine: str = "start") -> float:
     """Growth factor q of a geometric division of ``total`` into ``n`` elements whose
-    first element is ``first`` long: first (qⁿ − 1)/(q − 1) = total, q in [1, limit]
-    (1 when n elements of ``first`` already cover ``total``; ``limit`` when even that
-    growth does not reach it — the first element is then longer than asked)."""
-    if n <= 1 or n * first >= total:
+    smallest element is ``first`` long: first Σ_k q^e_k = total (e_k = k, or for
+    ``fine="both"`` min(k, n − 1 − k): fine at both ends), q in [1, limit] (1 when n
+    elements of ``first`` already cover ``total``; ``limit`` when even that growth does
+    not reach it — the smallest element is then longer than asked). :func:`graded` takes
+    the ratio q^max(e_k)."""
+    e = size_exponents(n, fine).astype(float)
+    if e.max() == 0 or n * first >= total:
         return 1.0
 
     def covered(q: float) -> float:
-        return first * n if q == 1.0 else first * (q**n - 1.0) / (q - 1.0)
+        return first * float(np.sum(q ** e))
 
     if covered(limit) <= total:
         return limit

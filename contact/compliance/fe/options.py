@@ -113,25 +113,30 @@ class FEOptions:
         Elements along the face width (toe → heel), uniform in the lengthwise fraction;
         2 to 60.
     fillet_divisions : int — [1]
-        Elements along each root fillet's arc (from the slot bottom to where the flank
-        begins): they set the element size h at the root, the fillet's arc length over
-        this number, from which every graded division below starts; 1 to 20.
+        Elements per root fillet: they set the element size h at the root, the shorter of
+        the fillet's arc (from the slot bottom to where the flank begins) and a quarter
+        circle of the blade's edge radius, over this number; every graded division below
+        starts from h; 1 to 20.
     root_element_size : float or None — [mm]
         The element size h at the root fillets instead (default None: from
         ``fillet_divisions``); > 0 and smaller than every fillet's arc (a size that
         leaves no element across the fillet is refused when the solid is built).
     across_divisions : int — [1]
-        Elements across a tooth, growing geometrically from h at both flanks; even,
-        2 to 20.
+        Elements across a tooth, growing geometrically from both flanks; even, 2 to 20.
+        At least: more where the layer at the flanks would otherwise be more than 2 h
+        thick (:func:`contact.compliance.fe.solid.mesh_layout`).
     flank_divisions : int — [1]
         Elements up each side of the tooth from the fillet's 45° point to the face
-        cone, growing geometrically from h; 2 to 60.
+        cone, growing geometrically from h; 2 to 60. At least, as ``across_divisions``
+        (growth at most 2.5).
     slot_divisions : int — [1]
         Elements along each half slot (the lower part of the fillet and half the slot
-        bottom), growing from h at the fillet; 1 to 20.
+        bottom), growing from h at the fillet (and, where two cuts meet at the slot's
+        middle, from h there too); 1 to 20. At least, as ``across_divisions`` (growth
+        at most 1.5).
     rim_divisions : int — [1]
         Elements through the rim, from the roots down to its inner surface, growing
-        from h at the roots; 1 to 20.
+        from h at the roots; 1 to 20. At least, as ``across_divisions``.
     youngs_modulus : float — [MPa]
         E of the member's material (default steel, geometry.hertz.STEEL).
     poisson_ratio : float — [1]
@@ -139,10 +144,15 @@ class FEOptions:
     load_nu, load_nv : int — [1]
         Grid of unit loads on the working flank, lengthwise × profile (the ease-off
         grid's layout, :func:`geometry.flank.projection_grid`); 2 to 81.
-    load_v_limits : (float, float) — [1]
-        Profile fractions covered by the load grid (default the ease-off grid's
-        (0.05, 1.0)); 0 ≤ low < high ≤ 1.
-
+    load_v_limits : (float, float) or None — [1]
+        Profile fractions covered by the load grid. Default None: from the generated
+        working flank, (max(0.05, v₀ + 0.01), 1.0) with v₀ the highest profile fraction,
+        over the model's sections, below which its side is no longer a rising function
+        of v (it turns into the fillet's flat bottom; :meth:`contact.compliance.fe.
+        section.ToothSections.flank_start`): the ease-off grid's (0.05, 1.0) wherever
+        the flank is generated down to 0.04 of the depth, higher where it is not (the
+        hypoid example's gear begins at v = 0.093 at the heel).
+        Given: 0 ≤ low < high ≤ 1, and the flank must exist down to low.
     Raises
     ------
     InputError
@@ -150,10 +160,13 @@ class FEOptions:
 
     Notes
     -----
-    The defaults are the mesh whose refinement (every division × 1.5) changes the
-    mid-surface compliance and the peak tensile fillet stress under loads at mid height
-    by less than 3 % (tests/test_fe_tooth.py, docs/fe.md, which also gives what
-    converges more slowly) at a cost of 0.5–3 minutes per member on two cores.
+    The element counts are the divisions above or more: the solid raises each to what
+    keeps the elements at the root at most h long and 2 h thick in every section
+    (:func:`contact.compliance.fe.solid.mesh_layout`), so that a refinement (:meth:`refined`)
+    refines the root in every direction. The defaults are a mesh whose refinement (every
+    division × 1.5) changes the mid-surface compliance and the peak tensile fillet
+    stress by less than 3 % (tests/test_fe_tooth.py, tests/test_root_stress.py,
+    docs/fe.md, which also gives what converges more slowly).
     """
 
     teeth: int = 3
@@ -171,7 +184,7 @@ class FEOptions:
     poisson_ratio: float = STEEL[1]
     load_nu: int = 21
     load_nv: int = 11
-    load_v_limits: tuple[float, float] = (0.05, 1.0)
+    load_v_limits: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         teeth = integer("teeth", self.teeth, 3, 9)
@@ -200,12 +213,14 @@ class FEOptions:
         object.__setattr__(self, "poisson_ratio",
                            real("poisson_ratio", self.poisson_ratio, unit="1", low=0.0,
                                 high=0.5, high_open=True))
-        lim = tuple(real("load_v_limits", x, unit="1", low=0.0, high=1.0)
-                    for x in self.load_v_limits) if len(self.load_v_limits) == 2 else ()
-        if len(lim) != 2 or not lim[0] < lim[1]:
-            raise InputError(f"load_v_limits: must be two profile fractions 0 <= low < "
-                             f"high <= 1, got {self.load_v_limits!r}")
-        object.__setattr__(self, "load_v_limits", lim)
+        if self.load_v_limits is not None:
+            given = self.load_v_limits
+            lim = tuple(real("load_v_limits", x, unit="1", low=0.0, high=1.0)
+                        for x in given) if len(given) == 2 else ()
+            if len(lim) != 2 or not lim[0] < lim[1]:
+                raise InputError(f"load_v_limits: must be None or two profile fractions "
+                                 f"0 <= low < high <= 1, got {given!r}")
+            object.__setattr__(self, "load_v_limits", lim)
 
     @property
     def neighbours(self) -> int:
@@ -245,5 +260,6 @@ class FEOptions:
     def as_dict(self) -> dict[str, Any]:
         """The options as a dict of plain values."""
         d = dataclasses.asdict(self)
-        d["load_v_limits"] = list(d["load_v_limits"])
+        if d["load_v_limits"] is not None:
+            d["load_v_limits"] = list(d["load_v_limits"])
         return d

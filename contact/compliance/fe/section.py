@@ -27,9 +27,13 @@ straight between the two fillets' s = 0 points, which lie on its one tip plane. 
 flanks are cut separately (generated face-milled pinions), each fillet is continued by its
 blade's tip line (constant v from its s = 0 point, across the slot); where the two cut
 boundaries cross — two fillets reaching under each other, or a tip line meeting the other
-fillet — that is the bottom, rounded by an arc of the blades' edge radius tangent to both
-where they meet at more than 30° (a sharp crease is a notch with a singular elastic
-stress); where they do not cross, the bottom is straight between the s = 0 points. The
+fillet — that is the bottom, rounded by an arc tangent to both (a sharp crease is a notch
+with a singular elastic stress) of the blades' edge radius, or of the largest smaller
+radius that leaves both fillets in place; where they do not cross, the bottom is straight
+between the s = 0 points. Every crease is rounded, whatever its angle, so the bottom
+varies continuously along the face as the generated sides do (rounding only creases of
+more than 30°, with the radius halved until it fitted, left some sections sharp and others
+round, and the stress at the crossing changed with the face division). The
 blade point widths, which decide the real bottom of two separate cuts, are not case
 data: this is the model's reading. Each side is then cut at the slot bottom.
 
@@ -73,7 +77,8 @@ _NEWTON_TOL = 1e-10  # [mm] position, [1] × L meshing residual
 _STEP_LIMIT = np.array([0.05, 0.05, 0.05])  # [rad, rad, 1] Newton step limits θ, q, v
 _SPLIT_SLOPE = math.radians(45.0)  # the fillet is split where it leans 45° in the section
 _SPLIT_RANGE = (0.2, 0.8)  # ... clamped to this fraction of its arc from the slot bottom
-_BLEND_ANGLE = 30.0  # [deg] slot-bottom creases sharper than this are rounded
+_CREASE_ANGLE = 1.0  # [deg] slot-bottom creases sharper than this are rounded
+_BLEND_BISECTIONS = 8  # bisections of the rounding radius (to 0.4 % of its range)
 
 
 def _bilinear(corners: np.ndarray, u, v):
@@ -181,6 +186,9 @@ class ToothSections:
     slot_depth : float — [mm] deepest point of the slot bottoms below the blank's root
         cone (negative: above it)
     edge_radius : dict — [mm] blade edge radius per flank
+    one_cut : bool — both flanks cut by one head in one setting (the slot bottoms are
+        straight between the fillets); False: cut separately, the bottoms are where the
+        two cuts cross, rounded (the module docstring)
     """
 
     member: str
@@ -192,10 +200,25 @@ class ToothSections:
     corners: np.ndarray
     slot_depth: float
     edge_radius: dict
+    one_cut: bool = True
 
     def side_name(self, flank: str) -> str:
         """``"left"`` or ``"right"``: where ``flank`` lies on the reference tooth."""
         return "left" if flank == self.left_flank else "right"
+
+    def _rising(self, flank: str, sec: ToothSection) -> tuple[np.ndarray, np.ndarray]:
+        """(v, φ) of the part of ``flank``'s side in ``sec`` where v rises monotonically
+        up to the tip."""
+        curve = sec.left if self.side_name(flank) == "left" else sec.right
+        falls = np.flatnonzero(np.diff(curve.v) <= 0.0)
+        start = int(falls[-1]) + 1 if falls.size else 0
+        return curve.v[start:], curve.phi[start:]
+
+    def flank_start(self, flank: str) -> float:
+        """The highest profile fraction v [1], over the sections, below which ``flank``'s
+        side is no longer a rising function of v (where it turns into the fillet's flat
+        bottom): the flank is generated from there up in every section."""
+        return float(max(self._rising(flank, sec)[0][0] for sec in self.sections))
 
     def flank_angle(self, flank: str, u, v) -> np.ndarray:
         """Angle φ [rad] of the reference tooth's ``flank`` at fractions (u, v) (broadcast
@@ -208,13 +231,9 @@ class ToothSections:
         InputError — v below that part of a side or above the face cone in a section.
         """
         u, v = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
-        side = self.side_name(flank)
         table = np.empty((len(self.sections), v.size))
         for j, sec in enumerate(self.sections):
-            curve = sec.left if side == "left" else sec.right
-            falls = np.flatnonzero(np.diff(curve.v) <= 0.0)
-            start = int(falls[-1]) + 1 if falls.size else 0
-            vs, ps = curve.v[start:], curve.phi[start:]
+            vs, ps = self._rising(flank, sec)
             if np.any(np.diff(vs) <= 0.0) or v.min() < vs[0] - 1e-9 or v.max() > vs[-1] + 1e-9:
                 raise InputError(f"v: the {flank} flank of the {self.member} in the section at "
                                  f"u = {sec.u:.3f} covers v in [{vs[0]:.3f}, {vs[-1]:.3f}] "
@@ -451,10 +470,10 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
 
     Each side is extended by its blade's tip line (constant v from its s = 0 end, across
     the slot); where the two extended sides cross, the slot bottom is their crossing,
-    rounded by an arc of ``radius`` tangent to both when they meet at more than
-    :data:`_BLEND_ANGLE` (a sharp crease is a notch, where the elastic stress is singular;
-    the radius is halved, down to a tenth, until the arc leaves each side's fillet in
-    place); where they do not cross, it is straight between their ends. ``s_junction``:
+    rounded by an arc tangent to both when they meet at more than :data:`_CREASE_ANGLE`
+    (a sharp crease is a notch, where the elastic stress is singular): of ``radius``, or
+    of the largest radius down to a tenth of it (bisection) that leaves each side's fillet
+    in place; where they do not cross, it is straight between their ends. ``s_junction``:
     the blade arc lengths of the two sides' fillet tops. ``one_cut``: both sides are cut
     by one head in one setting (spread-blade Formate, face-hobbing completing), whose tip
     plane joins their ends: no tip lines are added (between the ends the plane's section
@@ -476,13 +495,27 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
                                                            * np.linalg.norm(db))))
     kind = "fillets cross" if (i > 0 and j > 0) or one_cut else "tip line meets fillet"
     blend = None
-    r = radius
-    while blend is None and angle > _BLEND_ANGLE and r >= 0.1 * radius > 0.0:
-        blend = _blend(a, b, r, _point_on(a, i, t))
-        if blend is not None and not (_keeps_fillet(ra, blend[1], s_junction[0]) and
-                                      _keeps_fillet(lb, blend[3], s_junction[1])):
-            blend = None
-        r *= 0.5
+    if angle > _CREASE_ANGLE:
+        def fits(r: float):
+            arc = _blend(a, b, r, _point_on(a, i, t))
+            if arc is not None and _keeps_fillet(ra, arc[1], s_junction[0]) \
+                    and _keeps_fillet(lb, arc[3], s_junction[1]):
+                return arc
+            return None
+
+        blend = fits(radius)
+        lo, hi = 0.1 * radius, radius
+        if blend is None and radius > 0.0 and (low := fits(lo)) is not None:
+            # the largest radius that keeps both fillets (bisection): the bottom then
+            # varies continuously along the face, as the generated sides do
+            blend = low
+            for _ in range(_BLEND_BISECTIONS):
+                mid = 0.5 * (lo + hi)
+                arc = fits(mid)
+                if arc is None:
+                    hi = mid
+                else:
+                    lo, blend = mid, arc
     if blend is None:
         ra, lb = _cut(ra, i, t), _cut(lb, j, w)
         pt = (ra[0][0], ra[1][0])
@@ -639,4 +672,4 @@ def tooth_sections(case, member: str, u) -> ToothSections:
     log.info("%s: %d sections; slot bottoms %s; deepest %.3f mm under the root cone",
              member, len(u), {k: kinds.count(k) for k in set(kinds)}, depth)
     return ToothSections(member, u, tuple(sections), pitch, shift, left_flank, corners,
-                         depth, edge)
+                         depth, edge, bool(one_cut))

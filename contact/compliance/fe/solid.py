@@ -9,8 +9,9 @@ from a parameter box (A across the sector, B up from the rim's inner surface, W 
 face width) laid out per tooth as
 
 * a **rim block** under each pitch: columns along the half slots (the lower part of each
-  root fillet and half the slot bottom, finer towards the fillet) and across the tooth's
-  root, rows from the inner surface up to the slot bottom and fillet (finer at the top);
+  root fillet and half the slot bottom, finer towards the fillet, and towards the slot's
+  middle too where two cuts meet there) and across the tooth's root, rows from the inner
+  surface up to the slot bottom and fillet (finer at the top);
 * a **tooth block** on it: columns across the tooth (finer towards both flanks), rows up
   the upper part of the fillets (from where they lean 45°) and up the flanks (finer next to
   the fillet) to the face cone.
@@ -18,16 +19,21 @@ face width) laid out per tooth as
 Every node is placed in its transverse section (v, φ) and carried to the member frame by
 the blank's projection-plane map; the sections are computed at the lengthwise fraction of
 every node plane, so the curved flanks and fillets are followed by the quadratic geometry.
+Every graded direction starts from the root element size h; the element counts are the
+options' divisions, raised where a section needs more to keep the root fine
+(:func:`mesh_layout`).
 
 Public names
 ------------
 SolidLayout        element counts and parameter ranges of the blocks
 ToothSolid         the meshed solid with its sections and layout
 build_tooth_solid  build it from a case
+mesh_layout        the element counts: the options' divisions raised to keep the root fine
 """
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 import time
@@ -41,12 +47,13 @@ from contact.compliance.fe.mapped_mesh import (
     geometric_ratio,
     graded,
     mapped_mesh,
+    size_exponents,
 )
 from contact.compliance.fe.options import FEOptions
 from contact.compliance.fe.section import ToothSection, ToothSections, tooth_sections
 from geometry.core.errors import InputError
 
-__all__ = ["SolidLayout", "ToothSolid", "build_tooth_solid"]
+__all__ = ["SolidLayout", "ToothSolid", "build_tooth_solid", "mesh_layout"]
 
 log = logging.getLogger(__name__)
 
@@ -103,6 +110,84 @@ class SolidLayout:
         return m, a - m * self.cell
 
 
+#: [1] largest growth between neighbouring elements along a half slot, where the fillet
+#: and (two cuts) the rounded crease carry the highest stresses
+SLOT_GROWTH = 1.5
+#: [1] largest growth between neighbouring elements in the other graded directions (up the
+#: tooth's sides, across the tooth, down the rim)
+GROWTH = 2.5
+#: [1] the elements at the root surfaces are at most this many root element sizes h
+#: thick (across the tooth, down the rim): the stress concentrates over the fillet's
+#: radius normal to the surface as well as along it
+LAYER = 2.0
+
+
+@dataclass(frozen=True)
+class _Lengths:
+    """Lengths [mm] of one section's graded directions, and the root sizes of its sides."""
+
+    h: tuple[float, float]  # root element size of the left, right side
+    slot: tuple[float, float]  # half slot: lower fillet and half the bottom
+    rows: tuple[float, float]  # tooth side from the fillet's split point to the tip
+    half_width: float  # half the tooth's width at the split points
+    rim: float  # from the split points down to the rim's inner surface
+
+    @classmethod
+    def of_section(cls, sec: ToothSection, rim_v: float, opt: FEOptions, pitch: float,
+                   edge_radius: dict) -> _Lengths:
+        curves = (("left", sec.left), ("right", sec.right))
+        h = tuple(root_size(c, opt, edge_radius[c.flank]) for _, c in curves)
+        slot = tuple(_half_slot_length(sec, side, pitch) for side, _ in curves)
+        rows = tuple(c.length - c.split for _, c in curves)
+        (vl, pl), (vr, pr) = sec.left.at(sec.left.split), sec.right.at(sec.right.split)
+        width = float(sec.metric_length(vl, pl, vr, pr))
+        return cls(h, slot, rows, 0.5 * width, sec.length_v * (0.5 * (vl + vr) - rim_v))
+
+
+def _fewest(n: int, total: float, first: float, growth: float, fine: str, most: int) -> int:
+    """The fewest elements, at least ``n`` (at most ``most``), that cover ``total`` [mm]
+    from a smallest element ``first`` growing by at most ``growth`` (:func:`graded`'s
+    exponents for ``fine``)."""
+    while n < most and first * float(np.sum(growth ** size_exponents(n, fine))) < total:
+        n += 1
+    return n
+
+
+def mesh_layout(sections: ToothSections, rim_v: np.ndarray, opt: FEOptions) -> SolidLayout:
+    """The element counts of the solid: the options' divisions, raised where they cannot
+    keep the root fine in every section — a half slot of elements starting at the root
+    size h (:func:`root_size`) at its ends (:func:`_slot_fine`) growing by at most
+    :data:`SLOT_GROWTH`; the tooth's sides from h growing by at most :data:`GROWTH`; across
+    the tooth and down the rim from a layer at most :data:`LAYER` h thick growing by at most
+    :data:`GROWTH` — each at most the option's upper bound.
+
+    So a refinement (smaller h) refines the root in every direction, and a coarse model is
+    not made of elements several h thick under its fillets (docs/fe.md, mesh convergence).
+
+    Parameters
+    ----------
+    sections : ToothSections — the member's sections at every node plane
+    rim_v : ndarray (2 face + 1,) — [1] profile fraction of the rim's inner surface there
+    opt : FEOptions — the divisions (minimums) and the root element size
+
+    Returns
+    -------
+    SolidLayout — the element counts (teeth and face divisions as given)
+    """
+    lay = SolidLayout.from_options(opt)
+    fine = _slot_fine(sections.one_cut)
+    slot, flank, half, rim = lay.slot, lay.flank, lay.across // 2, lay.rim
+    for j, sec in enumerate(sections.sections):
+        ln = _Lengths.of_section(sec, rim_v[j], opt, sections.pitch, sections.edge_radius)
+        for h, s_len, r_len in zip(ln.h, ln.slot, ln.rows, strict=True):
+            slot = _fewest(slot, s_len, h, SLOT_GROWTH, fine, 20)
+            flank = _fewest(flank, r_len, h, GROWTH, "start", 60)
+        h = float(np.mean(ln.h))
+        half = _fewest(half, ln.half_width, LAYER * h, GROWTH, "start", 10)
+        rim = _fewest(rim, ln.rim, LAYER * h, GROWTH, "start", 20)
+    return dataclasses.replace(lay, slot=slot, flank=flank, across=2 * half, rim=rim)
+
+
 @dataclass(frozen=True)
 class _Grading:
     """Division tables (:func:`graded`) of one section: every graded direction starts
@@ -115,35 +200,46 @@ class _Grading:
     rim: np.ndarray
 
     @classmethod
-    def of_section(cls, sec: ToothSection, rim_v: float, opt: FEOptions,
-                   pitch: float) -> _Grading:
-        lay = SolidLayout.from_options(opt)
-        sizes, slots, rows = [], [], []
-        for side, curve in (("left", sec.left), ("right", sec.right)):
-            h = root_size(curve, opt)
-            sizes.append(h)
-            half = _half_slot_length(sec, side, pitch)
-            q = geometric_ratio(lay.slot, half, h)
-            slots.append(graded(lay.slot, q ** (lay.slot - 1), "start"))
-            q = geometric_ratio(lay.flank, curve.length - curve.split, h)
+    def of_section(cls, sec: ToothSection, rim_v: float, opt: FEOptions, pitch: float,
+                   lay: SolidLayout, edge_radius: dict, one_cut: bool = True) -> _Grading:
+        ln = _Lengths.of_section(sec, rim_v, opt, pitch, edge_radius)
+        fine = _slot_fine(one_cut)
+        slots, rows = [], []
+        for h, s_len, r_len in zip(ln.h, ln.slot, ln.rows, strict=True):
+            q = geometric_ratio(lay.slot, s_len, h, fine=fine)
+            slots.append(graded(lay.slot, q ** _top_exponent(lay.slot, fine), fine))
+            q = geometric_ratio(lay.flank, r_len, h)
             rows.append(graded(lay.flank, q ** (lay.flank - 1), "start"))
-        (vl, pl), (vr, pr) = sec.left.at(sec.left.split), sec.right.at(sec.right.split)
-        width = float(sec.metric_length(vl, pl, vr, pr))
+        h = float(np.mean(ln.h))
         n = lay.across // 2
-        q = geometric_ratio(n, 0.5 * width, float(np.mean(sizes)))
+        q = geometric_ratio(n, ln.half_width, h)
         across = graded(lay.across, q ** (n - 1), "both")
-        depth = sec.length_v * (0.5 * (vl + vr) - rim_v)
-        q = geometric_ratio(lay.rim, depth, float(np.mean(sizes)))
+        q = geometric_ratio(lay.rim, ln.rim, h)
         rim = graded(lay.rim, q ** (lay.rim - 1), "end")
         return cls(tuple(slots), tuple(rows), across, rim)
 
 
-def root_size(curve, opt: FEOptions) -> float:
-    """Element size h [mm] at a root fillet: ``opt.root_element_size`` or the fillet's
-    arc (slot bottom → flank) over ``opt.fillet_divisions``."""
+def _slot_fine(one_cut: bool) -> str:
+    """Where a half slot's elements are smallest: at the fillet (``"start"``) when one
+    cut makes the slot, whose bottom is straight between the fillets; also at the slot's
+    middle (``"both"``) when two cuts meet there in a rounded crease, where the stress
+    concentrates (:mod:`contact.compliance.fe.section`)."""
+    return "start" if one_cut else "both"
+
+
+def _top_exponent(n: int, fine: str) -> int:
+    """The exponent of the largest element of a graded division (:func:`graded`)."""
+    return (n - 1) // 2 if fine == "both" else n - 1
+
+
+def root_size(curve, opt: FEOptions, edge_radius: float) -> float:
+    """Element size h [mm] at a root fillet: ``opt.root_element_size``, or the shorter of
+    the fillet's arc (slot bottom → flank) and a quarter circle of the blade's edge
+    radius (the curvature of the fillets and of the roundings where two cuts meet) over
+    ``opt.fillet_divisions``."""
     if opt.root_element_size is not None:
         return opt.root_element_size
-    return curve.junction / opt.fillet_divisions
+    return min(curve.junction, 0.5 * math.pi * edge_radius) / opt.fillet_divisions
 
 
 def _half_slot_length(sec: ToothSection, side: str, pitch: float) -> float:
@@ -172,6 +268,9 @@ class ToothSolid:
     rim_depth : float — [mm] the rim depth used (under the deepest slot bottom)
     fillet_rows : int — [1] element rows of the tooth sides that reach past the
         fillets' junction with the flanks in every section, plus one
+    junction_rows : ndarray (2 face + 1, 2) — [1] in each node plane, on the left and
+        the right side, the rows from the fillet's split point up to the one that holds
+        its junction with the flank: the root (:meth:`in_root`)
     mesh : MappedMesh — parameter and physical meshes
     build_time : float — [s] sections and mesh
     """
@@ -184,6 +283,7 @@ class ToothSolid:
     rim_v: np.ndarray
     rim_depth: float
     fillet_rows: int
+    junction_rows: np.ndarray
     mesh: MappedMesh
     build_time: float
 
@@ -209,6 +309,19 @@ class ToothSolid:
         side_facets = self.mesh.facets_where(lambda p: (np.abs(p[0] - a) < 1e-9)
                                              & (p[1] > rim))
         return np.r_[self.fillet_facets(offset, side)[0], side_facets]
+
+    def in_root(self, side: str, param: np.ndarray) -> np.ndarray:
+        """Whether points on the rows of the tooth side ``side`` above its half slot
+        (parameter coordinates (3, P)) lie in the root: in a row below or holding the
+        fillet's junction with the flank in one of the node planes of the point's element.
+        Above it the side is flank, where a load's own local stress would be taken for the
+        root's (the half slot is root throughout)."""
+        lay = self.layout
+        row = np.floor(param[1] - lay.rim + 1e-9).astype(int)
+        w = np.clip(np.floor(param[2] + 1e-9).astype(int), 0, lay.face - 1)
+        k = 0 if side == "left" else 1
+        planes = np.stack([self.junction_rows[2 * w + d, k] for d in range(3)])
+        return row < planes.max(axis=0)
 
     def fillet_facets(self, offset: int, side: str) -> tuple[np.ndarray, np.ndarray]:
         """Boundary facets of the root on one side of the tooth at ``offset``: (facets of
@@ -342,8 +455,7 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
     """
     t0 = time.perf_counter()
     opt = options if options is not None else FEOptions()
-    lay = SolidLayout.from_options(opt)
-    u = np.linspace(0.0, 1.0, 2 * lay.face + 1)
+    u = np.linspace(0.0, 1.0, 2 * opt.face_divisions + 1)
     sections = tooth_sections(case, member, u)
     blank = case.member(member).blank
     depth = opt.rim_depth if opt.rim_depth is not None else 1.2 * (
@@ -359,7 +471,9 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
                              "through the member axis; give a smaller rim depth")
 
     _check_root_size(sections, opt)
-    grading = [_Grading.of_section(sec, rim_v[j], opt, sections.pitch)
+    lay = mesh_layout(sections, rim_v, opt)
+    grading = [_Grading.of_section(sec, rim_v[j], opt, sections.pitch, lay,
+                                   sections.edge_radius, sections.one_cut)
                for j, sec in enumerate(sections.sections)]
 
     def mapping(p: np.ndarray) -> np.ndarray:
@@ -382,14 +496,15 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
         return (centre[1] < lay.rim) | ((la > lay.slot) & (la < lay.slot + lay.across))
 
     mesh = mapped_mesh(lay.shape, mapping, keep)
-    fillet_rows = 1 + max(
-        int(np.searchsorted(curve.split + (curve.length - curve.split) * table[0::2],
-                            curve.junction))
-        for sec, g in zip(sections.sections, grading, strict=True)
-        for curve, table in zip((sec.left, sec.right), g.rows, strict=True))
+    junction_rows = np.array([
+        [int(np.searchsorted(curve.split + (curve.length - curve.split) * table[0::2],
+                             curve.junction)) for curve, table in
+         zip((sec.left, sec.right), g.rows, strict=True)]
+        for sec, g in zip(sections.sections, grading, strict=True)])
+    fillet_rows = 1 + int(junction_rows.max())
     elapsed = time.perf_counter() - t0
     log.info("%s %s solid: %d elements, %d nodes, worst Jacobian ratio %.3f, %.1f s",
              case.name, member, mesh.mesh.nelements, mesh.mesh.doflocs.shape[1],
              mesh.min_jacobian, elapsed)
     return ToothSolid(case.name, member, opt, lay, sections, rim_v, float(depth),
-                      min(fillet_rows, lay.flank), mesh, elapsed)
+                      min(fillet_rows, lay.flank), junction_rows, mesh, elapsed)

@@ -200,8 +200,9 @@ def fillet_stress(coefficients: xr.Dataset, points, forces) -> xr.Dataset:
         Over (tooth, side, station, arc): ``stress`` (+ component) [MPa], the stress
         tensor at the fillet points; ``max_principal``, ``min_principal`` [MPa]; over
         (tooth, side, station): ``max_principal_along_face`` and
-        ``min_principal_along_face`` [MPa], their extremes over each fillet at each
-        face station (the fillet stress along the face width: tension on the side of
+        ``min_principal_along_face`` [MPa], their extremes over each fillet's root
+        points (``fillet_in_root``: not the flank above the fillet) at each face
+        station (the fillet stress along the face width: tension on the side of
         the loaded flank, compression on the other); ``tooth`` counts from the
         reference tooth.
 
@@ -227,6 +228,8 @@ def fillet_stress(coefficients: xr.Dataset, points, forces) -> xr.Dataset:
         start = int(k + offsets.min() - teeth[0])
         out[start:start + len(offsets)] += contrib
     smax, smin = principal_stresses(out)
+    root = coefficients["fillet_in_root"].isel(tooth=0).transpose(
+        "side", "station", "arc").values.astype(bool)  # the same on every tooth
     dims = ("tooth", "side", "station", "arc")
     coords = {"tooth": ("tooth", teeth.astype(np.int32), {
         "units": "1", "long_name": "tooth offset from the reference tooth"})}
@@ -240,13 +243,13 @@ def fillet_stress(coefficients: xr.Dataset, points, forces) -> xr.Dataset:
         "min_principal": data_var(dims, smin, "MPa", "minimum principal stress at the root "
                                                      "fillet point"),
         "max_principal_along_face": data_var(
-            dims[:3], smax.max(axis=-1), "MPa",
-            "largest maximum principal stress over the fillet at the face station "
-            "(tension)"),
+            dims[:3], np.where(root, smax, -np.inf).max(axis=-1), "MPa",
+            "largest maximum principal stress over the fillet's root points at the face "
+            "station (tension)"),
         "min_principal_along_face": data_var(
-            dims[:3], smin.min(axis=-1), "MPa",
-            "smallest minimum principal stress over the fillet at the face station "
-            "(compression)"),
+            dims[:3], np.where(root, smin, np.inf).min(axis=-1), "MPa",
+            "smallest minimum principal stress over the fillet's root points at the face "
+            "station (compression)"),
     }, coords=coords, attrs={"member": coefficients.attrs["member"],
                              "flank": coefficients.attrs["flank"],
                              "source": "contact.compliance.fe.superposition.fillet_stress"})
