@@ -32,6 +32,10 @@ def register(sub) -> None:
     p.add_argument("--seed", type=int, default=2009,
                    help="seed of the sampler (default %(default)s; held-out points: another "
                    "seed and --design lhs)")
+    p.add_argument("--box", choices=("table_5_1", "gear"), default="table_5_1",
+                   help="sobol/lhs: the seed's Table 5.1 box, or a wider one covering a hypoid "
+                   "gear's contacts (p_h 0.3-3 GPa, R 5-120 mm, u_e 0.3-20 m/s, SR 0.01-1.5, "
+                   "25-110 degC) (default %(default)s)")
     p.add_argument("--skip", type=int, default=0, metavar="K",
                    help="sobol: continue the sequence after its first K points")
     p.add_argument("--nodes", type=int, default=512,
@@ -42,6 +46,9 @@ def register(sub) -> None:
                    "seed's model) or frozen (default %(default)s)")
     p.add_argument("--courant", type=float, default=1.0, metavar="C",
                    help="transient: node spacings the faster surface moves per time step "
+                   "(default %(default)s)")
+    p.add_argument("--viscosity-model", choices=("roelands", "barus"), default="roelands",
+                   help="viscosity-pressure model of the film and its traction "
                    "(default %(default)s)")
     p.add_argument("--average", type=float, default=2.0, metavar="T",
                    help="transient: averaging window in units of b/u_e (default %(default)s)")
@@ -70,7 +77,7 @@ def run(args: argparse.Namespace) -> int:
     from contact.commands.output_paths import check_output_file
     from contact.study.friction_study import run_friction_study
     from contact.study.store import ResultStore
-    from friction.study.design import factorial_design, space_filling_design
+    from friction.study.design import DESIGN_BOXES, factorial_design, space_filling_design
     from friction.study.points import SolveSettings
     from geometry.core.errors import InputError
     from geometry.core.io import write_netcdf
@@ -83,13 +90,16 @@ def run(args: argparse.Namespace) -> int:
         attrs = {"method": "factorial", "source": "seed Table 5.1 (unordered Rq pairs)"}
     else:
         design = space_filling_design(args.points, method=args.design, seed=args.seed,
-                                      skip=args.skip)
+                                      skip=args.skip, box=DESIGN_BOXES[args.box])
         attrs = {"method": args.design, "seed": args.seed, "skip": args.skip,
-                 "box": "seed Table 5.1; R, u_e, SR log-uniform"}
+                 "box": ("seed Table 5.1" if args.box == "table_5_1" else
+                         "gear contacts (friction.study.design.GEAR_CONTACT_RANGE)")
+                 + "; R, u_e, SR log-uniform"}
     attrs["points"] = int(next(iter(design.values())).size)
     settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
                              lubricant=args.lubricant, realisations=args.realisations,
-                             mode=args.mode, courant=args.courant, average=args.average)
+                             mode=args.mode, courant=args.courant, average=args.average,
+                             viscosity_model=args.viscosity_model)
     ds = run_friction_study(design, settings, design_attrs=attrs, output=args.output,
                             scheduler=args.scheduler, n_workers=args.workers,
                             progress=not args.no_progress)

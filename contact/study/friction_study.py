@@ -87,8 +87,10 @@ def study_provenance(settings: SolveSettings, design_attrs: Mapping[str, Any]) -
         "solver": (("friction.ehl.transient.transient_summary (transient, roughness moving "
                     "with each surface, BDF2" if settings.mode == "transient" else
                     "friction.ehl.line_contact.line_contact_summary (steady, frozen roughness")
-                   + ", Roelands, Dowson-Higginson, Eyring + limiting shear, boundary mu_b on "
-                     "contact nodes)"),
+                   + f", {settings.viscosity_model.capitalize()}, Dowson-Higginson, Eyring + "
+                     "limiting shear, boundary mu_b on contact nodes"
+                   + (", pressure limit: shakedown" if settings.mode == "transient" else "")
+                   + ")"),
     }
     for k, v in settings.as_dict().items():
         attrs[f"solver_{k}"] = json.dumps(v) if isinstance(v, list) else v

@@ -27,8 +27,8 @@ from numpy.typing import NDArray
 from geometry.core.errors import InputError
 from geometry.core.validation import integer, one_of
 
-__all__ = ["DESIGN_INPUTS", "DESIGN_METHODS", "TABLE_5_1", "TABLE_5_1_RANGE", "check_design",
-           "factorial_design", "space_filling_design"]
+__all__ = ["DESIGN_BOXES", "DESIGN_INPUTS", "DESIGN_METHODS", "GEAR_CONTACT_RANGE", "TABLE_5_1",
+           "TABLE_5_1_RANGE", "check_design", "factorial_design", "space_filling_design"]
 
 Array = NDArray[np.float64]
 
@@ -63,6 +63,26 @@ TABLE_5_1_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
     "temperature": (25.0, 100.0, False),
     "roughness_1": (0.1, 1.0, False),
     "roughness_2": (0.1, 1.0, False),
+})
+
+#: A wider box for a fit that covers a hypoid gear's loaded segments (issue 34: 54 % of
+#: the default case's segments lay outside Table 5.1's box, with R_eq up to ~100 mm, p_h
+#: above 2.5 GPa at 500 N·m and SR from 0 at the pitch point to ~1.3 at the tips): p_h
+#: 0.3–3 GPa, R_eq 5–120 mm, u_e 0.3–20 m/s, SR 0.01–1.5, oil 25–110 °C, Rq 0.1–1 µm.
+GEAR_CONTACT_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
+    "hertz_pressure": (300.0, 3000.0, False),
+    "radius": (5.0, 120.0, True),
+    "entraining_velocity": (0.3, 20.0, True),
+    "slide_to_roll": (0.01, 1.5, True),
+    "temperature": (25.0, 110.0, False),
+    "roughness_1": (0.1, 1.0, False),
+    "roughness_2": (0.1, 1.0, False),
+})
+
+#: Named boxes of :func:`space_filling_design` (``ltca friction-study --box``).
+DESIGN_BOXES: Mapping[str, Mapping[str, tuple[float, float, bool]]] = MappingProxyType({
+    "table_5_1": TABLE_5_1_RANGE,
+    "gear": GEAR_CONTACT_RANGE,
 })
 
 #: Space-filling samplers of :func:`space_filling_design` (scipy.stats.qmc).

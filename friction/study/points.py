@@ -95,6 +95,12 @@ class SolveSettings:
         The transient run's :class:`friction.ehl.transient.TimeGrid`.
     short_cutoff : float — [mm]
         λs of the ground profiles (:class:`friction.ehl.roughness.GroundSurface`).
+    viscosity_model : {"roelands", "barus"}
+        Viscosity–pressure model of the film and its traction
+        (:data:`friction.ehl.rheology.VISCOSITY_PRESSURE_MODELS`).
+    cavitation : {"reynolds", "mass_conserving"}
+        The transient runs' cavitation condition (:class:`friction.ehl.complementarity.
+        NewtonOptions`).
     """
 
     nodes: int = 512
@@ -112,6 +118,8 @@ class SolveSettings:
     flush: float = 2.5
     average: float = 2.0
     short_cutoff: float = 0.008
+    viscosity_model: str = "roelands"
+    cavitation: str = "reynolds"
 
     def __post_init__(self) -> None:
         integer("nodes", self.nodes, low=64, high=16384)
@@ -126,6 +134,7 @@ class SolveSettings:
             integer("profile_seeds", s, low=0)
         integer("realisations", self.realisations, low=1, high=32)
         one_of("mode", self.mode, SOLVE_MODES)
+        one_of("viscosity_model", self.viscosity_model, ("roelands", "barus"))
         real("short_cutoff", self.short_cutoff, unit="mm", low=0.0)
         self.time_grid().check()
 
@@ -136,7 +145,8 @@ class SolveSettings:
 
         return TimeGrid(courant=self.courant, ramp=self.ramp, flush=self.flush,
                         average=self.average,
-                        newton=NewtonOptions(max_iterations=self.max_iterations))
+                        newton=NewtonOptions(max_iterations=self.max_iterations,
+                                             cavitation=self.cavitation))
 
     def grid(self):
         """The solver grid (:class:`friction.ehl.line_contact.Grid`)."""
@@ -213,7 +223,7 @@ def _smooth_condition(settings: SolveSettings, point: Mapping[str, float]):
     return LineContactCondition(
         load_per_length=load, radius=r, entraining_velocity=float(point["entraining_velocity"]),
         slide_to_roll=float(point["slide_to_roll"]), temperature=float(point["temperature"]),
-        lubricant=settings.lubricant), rq
+        lubricant=settings.lubricant, viscosity_model=settings.viscosity_model), rq
 
 
 def surfaces_of(settings: SolveSettings, point: Mapping[str, float], realisation: int = 0):
