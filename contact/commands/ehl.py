@@ -44,7 +44,7 @@ def register(sub) -> None:
                    help="bundled oil name or oil TOML file (default %(default)s)")
     p.add_argument("--nodes", type=int, default=None,
                    help="grid nodes (default 1024 over -4 ... 1.5 Hertz half-widths for a "
-                   "steady run; 512 from the smooth film's pressure onset to 1.5 for a "
+                   "steady run; 256 from the smooth film's pressure onset to 1.5 for a "
                    "transient one)")
     p.add_argument("--steady", action="store_true",
                    help="rough surfaces: solve with the roughness frozen (steady) instead of "
@@ -93,7 +93,7 @@ def run(args: argparse.Namespace) -> int:
                   lubricant=args.lubricant)
     if rough and not args.steady:
         cond = LineContactCondition(**fields)
-        grid = default_transient_grid(cond, args.nodes or 512)
+        grid = default_transient_grid(cond, args.nodes or 256)
         ds = solve_transient_line_contact(
             cond, (GroundSurface(rq1, seed=1), GroundSurface(rq2, seed=2)), grid,
             TimeGrid(courant=args.courant))

@@ -38,7 +38,7 @@ def register(sub) -> None:
                    "25-110 degC) (default %(default)s)")
     p.add_argument("--skip", type=int, default=0, metavar="K",
                    help="sobol: continue the sequence after its first K points")
-    p.add_argument("--nodes", type=int, default=512,
+    p.add_argument("--nodes", type=int, default=256,
                    help="solver grid nodes (transient: from the smooth film's pressure onset "
                    "to 1.5 Hertz half-widths; steady: over -4 ... 1.5) (default %(default)s)")
     p.add_argument("--mode", choices=("transient", "steady"), default="transient",

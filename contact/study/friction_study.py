@@ -135,7 +135,7 @@ def run_friction_study(
     design : mapping of str to array (n,)
         :data:`friction.study.design.DESIGN_INPUTS` (MPa, mm, m/s, 1, degC, µm).
     settings : SolveSettings, optional
-        Solver grid, mode and oil (default ``SolveSettings()``: transient, 512 nodes, 75W90).
+        Solver grid, mode and oil (default ``SolveSettings()``: transient, 256 nodes, 75W90).
     design_attrs : mapping, optional
         How the design was made, stored as ``design_*`` attributes.
     output : path-like, optional

@@ -103,7 +103,7 @@ class SolveSettings:
         NewtonOptions`).
     """
 
-    nodes: int = 512
+    nodes: int = 256
     inlet: float = -4.0
     outlet: float = 1.5
     step_limit: float = 3.0
