@@ -30,6 +30,10 @@ def register(sub) -> None:
     p.add_argument("--structure", choices=("split", "regimes"), default="split",
                    help="split: mu = film regression + mu_b * asperity share; regimes: ln mu "
                    "regressed directly (default %(default)s)")
+    p.add_argument("--box", choices=("auto", "table_5_1", "gear"), default="auto",
+                   help="the fitted range of the inputs: the box the study was designed in "
+                   "(auto: read from its design_box attribute), or a named one "
+                   "(default %(default)s)")
     p.add_argument("-o", "--output", default="kolivand2009_fit.toml", metavar="FILE",
                    help="coefficient file to write (default %(default)s)")
     p.set_defaults(func=run)
@@ -37,6 +41,7 @@ def register(sub) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from contact.commands.output_paths import check_output_file
+    from friction.study.design import DESIGN_BOXES
     from friction.study.fit import combine_studies, fit_kolivand2009, write_fit
     from geometry.core.errors import InputError
     from geometry.core.io import read_netcdf
@@ -46,7 +51,11 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"-o: the coefficient file must end in .toml, got {args.output!r}")
     study = combine_studies([read_netcdf(f, tree=False) for f in args.study])
     held = read_netcdf(args.held_out, tree=False) if args.held_out else None
-    fit = fit_kolivand2009(study, heldout=held, structure=args.structure)
+    box = args.box
+    if box == "auto":
+        box = "gear" if "gear contacts" in str(study.attrs.get("design_box", "")) else "table_5_1"
+    fit = fit_kolivand2009(study, heldout=held, structure=args.structure,
+                           box=DESIGN_BOXES[box])
     path = write_fit(fit, args.output)
     s = fit.statistics
     line = (f"{fit.lubricant}: {s['training_points']} points, RMS relative error "

@@ -42,8 +42,6 @@ Array = NDArray[np.float64]
 #: Node types (labels of a solution: fluid, cavitated, asperity contact).
 FLUID, CAVITATION, CONTACT = 0, 1, 2
 
-CLOSED_NO_OIL = False
-
 #: Column offsets of the Jacobian bands: row i depends on nodes i − 2 … i + 1.
 BAND_OFFSETS = (-2, -1, 0, 1)
 
@@ -157,8 +155,7 @@ def reynolds_bands(state: NodeState, spacing: float, lambda_bar: float,
     Notes
     -----
     R_i = [ε_(i+½)(P_(i+1) − P_i) − ε_(i−½)(P_i − P_(i−1))]/Δ² − C_i(q) − c(q_i − q*_i)
-    − ρ̄_iθ_i δ_i with q = ρ̄θ max(H, 0) the oil's mass per length (θ = 1 but in a cavitated
-    zone; a closed gap holds none) and
+    − ρ̄_iθ_i δ_i with q = ρ̄θH the oil's mass per length (θ = 1 but in a cavitated zone) and
     δ the roughness transport defect of ``squeeze``, if any;
     ε_(i±½) the mean of the neighbours' ε, C the upwind difference; ε uses max(H, 0) (a
     closed film carries no Poiseuille flow). Source: module docstring.
@@ -177,10 +174,10 @@ def reynolds_bands(state: NodeState, spacing: float, lambda_bar: float,
     res[1:-1] = (flux[1:] - flux[:-1]) / d2
     fill = np.ones(n) if state.fill is None else state.fill
     rho_f = state.density * fill                            # ρ̄θ: the oil's mass per gap
-    # with a fill (mass-conserving cavitation) the oil's mass is counted and a closed gap
-    # holds none; without one (the steady active-set solver) q = ρ̄H as before, whose rows
-    # stay regular at a penetrating node until the active set closes it
-    gap = h if (state.fill is None or not CLOSED_NO_OIL) else hc
+    # q uses the film itself, slightly negative at a penetrating (closed) node: the rows stay
+    # regular there (with max(H, 0) a closed node's column vanishes, measured to stall the
+    # iteration) and the penalty holds the penetration at ~1e-6 of the film
+    gap = h
     q = rho_f * gap
     cw = _couette_weights(n, spacing)
     couette = np.zeros(n)
@@ -213,7 +210,7 @@ def reynolds_bands(state: NodeState, spacing: float, lambda_bar: float,
         f[2, i] -= state.density[i] * defect[i]
     # Couette and squeeze terms through q_k = ρ̄_k θ_k H_k (k = i − 2, i − 1, i)
     dq_p = state.ddensity * fill * gap
-    dq_h = rho_f if (state.fill is None or not CLOSED_NO_OIL) else rho_f * (h > 0.0)
+    dq_h = rho_f
     dq_f = state.density * gap
     for k in (0, 1, 2):
         rows = i[i + k - 2 >= 0]

@@ -80,8 +80,6 @@ Surface = GroundSurface | MeasuredSurface
 #: (asperity contact): the penalty leaves closed nodes at H ≈ −R/ξ_c, ~1e-12 of the film
 CLOSED_FRACTION = 1e-6
 
-TRANSPORT_DEFECT = True
-
 #: time-integration schemes of the squeeze term
 SCHEMES = ("bdf2", "euler")
 
@@ -301,7 +299,7 @@ def _run(condition: LineContactCondition, surfaces, grid: Grid, times: TimeGrid,
     while step < nsteps:
         step += 1
         t_new = step * dt0
-        phi, h0, st, its, history = _advance(
+        phi, h0, st, its, history, last = _advance(
             s, state_of, phi, h0, t, t_new, history, roughness_at, times, limit)
         t = t_new
         p, theta = st.pressure, st.fill
@@ -330,7 +328,7 @@ def _run(condition: LineContactCondition, surfaces, grid: Grid, times: TimeGrid,
     info = {"steps": nsteps, "time_step": dt0, "cutoffs": cutoffs, "rq": rq,
             "smooth_central_film": smooth_centre * h_um,
             "pressure_limit": -1.0 if limit_mpa is None else limit_mpa,
-            "last_step": _advance.last}
+            "last_step": last}
     return s, rec, info
 
 
@@ -339,7 +337,8 @@ def _advance(s, state_of, phi, h0, t, t_new, history, roughness_at, times: TimeG
     """One time step t → t_new, retried as sub-steps (backward Euler) where it fails.
 
     ``history`` holds (q, Z) of the last two steps (q = ρ̄θH, Z the roughness), newest
-    last; the step returns Φ, the approach, the state, the iterations and the new history.
+    last; the step returns Φ, the approach, the state, the iterations, the new history and
+    (squeeze, state, held nodes) of its last solve (for checks of the node conditions).
     """
     for level in range(times.substeps + 1):
         parts = 2**level
@@ -356,8 +355,7 @@ def _advance(s, state_of, phi, h0, t, t_new, history, roughness_at, times: TimeG
                     c, q_ref, z_ref = 1.5 / dt, (4.0 * q1 - q0) / 3.0, (4.0 * z1 - z0) / 3.0
                 else:
                     c, q_ref, z_ref = 1.0 / dt, q1, z1
-                defect = (couette_difference(rough, s.spacing) + c * (rough - z_ref)
-                          - transport) if TRANSPORT_DEFECT else None
+                defect = couette_difference(rough, s.spacing) + c * (rough - z_ref) - transport
                 sq = Squeeze(c, q_ref, defect)
                 sol = solve_node_conditions(state_of, pp, hh, s.kernel, s.spacing,
                                             s.lambda_bar, sq, times.newton, limit)
@@ -367,8 +365,7 @@ def _advance(s, state_of, phi, h0, t, t_new, history, roughness_at, times: TimeG
                 q_new = st.density * st.fill * st.film
                 # after sub-steps the history is not uniform: the next step starts with Euler
                 hist = [*hist[-1:], (q_new, rough)] if parts == 1 else [(q_new, rough)]
-            _advance.last = (sq, st, sol.held)       # the last solved step, for checks
-            return pp, hh, st, its_all, hist
+            return pp, hh, st, its_all, hist, (sq, st, sol.held)
         except ConvergenceError as exc:
             if level == times.substeps:
                 raise ConvergenceError(
