@@ -27,7 +27,7 @@ EaseOffFields   splines of an ease-off's fields and the contact region's tests
 from __future__ import annotations
 
 import numpy as np
-from scipy.interpolate import RectBivariateSpline
+from scipy.interpolate import BSpline, RectBivariateSpline
 
 from contact.utca.easeoff import EaseOff, fill_missing
 from geometry.core.errors import InputError, ModelUnavailableError
@@ -35,6 +35,25 @@ from geometry.core.errors import InputError, ModelUnavailableError
 __all__ = ["EaseOffFields"]
 
 _V_NEWTON = 6  # Newton steps of the profile place v*(u) on the spline of Q
+_COLUMN_NEWTON = 12  # safeguarded Newton steps of v*(u) on a column's cubic piece
+
+
+def _piece_basis(t: np.ndarray, k: int = 3) -> np.ndarray:
+    """(n_int, k + 1, k + 1) the B-splines of knots ``t`` (degree k) that are nonzero on
+    each knot interval [t[k + i], t[k + i + 1]], as polynomials in s = x − t[k + i]:
+    ``[i, a, p]`` is the coefficient of s^p of B_{i+a}."""
+    n = len(t) - k - 1
+    left = t[k:n]  # the intervals' left knots (n - k intervals)
+    basis = BSpline(t, np.eye(n), k)
+    rows = np.arange(left.size)
+    out = np.empty((left.size, k + 1, k + 1))
+    fact = 1.0
+    for p in range(k + 1):
+        fact *= max(p, 1)
+        d = basis(left, nu=p)  # (n_int, n): the right-hand derivatives at the left knots
+        for a in range(k + 1):
+            out[:, a, p] = d[rows, rows + a] / fact
+    return out
 
 
 class EaseOffFields:
@@ -174,6 +193,84 @@ class EaseOffFields:
             self._lat = self.q(uc, self.v)
             self._lat_key = key
         return self._lat
+
+    def columns(self, uc):
+        """Q on the lengthwise places uc as cubic pieces in v (cached).
+
+        Returns (breaks (n_int + 1,) [1], coefficients (len(uc), n_int, 4) [rad]): on
+        [breaks[i], breaks[i + 1]] Q(uc[j], v) = Σ_p c[j, i, p] (v − breaks[i])^p, the
+        bicubic spline restricted to each column (its v-knot intervals)."""
+        key = (len(uc), float(uc[0]), float(uc[-1]))
+        if getattr(self, "_col_key", None) != key:
+            tx, ty, c = self.q.tck
+            kx, ky = self.q.degrees
+            d = BSpline.design_matrix(np.asarray(uc, dtype=float), tx, kx).toarray()
+            coef = d @ c.reshape(len(tx) - kx - 1, len(ty) - ky - 1)  # v-spline per column
+            basis = _piece_basis(ty, ky)  # (n_int, 4, 4)
+            n_int = basis.shape[0]
+            idx = np.arange(n_int)[:, None] + np.arange(ky + 1)[None, :]
+            self._cols = (ty[ky:ky + n_int + 1], np.einsum("jia,iap->jip", coef[:, idx], basis))
+            self._col_key = key
+        return self._cols
+
+    def solve_columns(self, uc, target):
+        """Profile places v* (nb, nc) of the iso-lines Q = target (nb,) on the lengthwise
+        places uc (nc,): :meth:`solve_v` of ``(uc[None, :], target[:, None])`` from the
+        lattice (:meth:`lattice`), by Newton's method on each column's cubic piece in the
+        bracketing grid cell (held in the cell) instead of on the bicubic spline: the same
+        root (the piece is the spline there) without a spline evaluation per step.
+
+        Returns
+        -------
+        ndarray (nb, nc) — [1]
+            v* in [v₀, v₁], NaN where Q misses the target in [v₀, v₁] or |Q − q| stays
+            above 1e-9 rad; converged to |Q − q| < 1e-13 rad as :meth:`newton_v`.
+        """
+        uc = np.asarray(uc, dtype=float)
+        target = np.asarray(target, dtype=float)
+        nb, nc = target.size, uc.size
+        vn, s = self.v, self.q_sign
+        qn = self.lattice(uc)[None, :, :]  # (1, nc, nv)
+        tg = target[:, None]
+        below = (s * (qn - tg[..., None])) <= 0
+        k = np.clip(below.sum(-1) - 1, 0, len(vn) - 2)  # (nb, nc) bracketing cell
+        qa = np.take_along_axis(np.broadcast_to(qn, (nb, nc, len(vn))), k[..., None], -1)[..., 0]
+        qb = np.take_along_axis(np.broadcast_to(qn, (nb, nc, len(vn))), (k + 1)[..., None],
+                                -1)[..., 0]
+        t = np.clip((tg - qa) / np.where(qb != qa, qb - qa, 1.0), 0.0, 1.0)
+        v = vn[k] + t * (vn[k + 1] - vn[k])
+        miss = (s * (qn[..., 0] - tg) > 0) | (s * (qn[..., -1] - tg) < 0)
+        breaks, pieces = self.columns(uc)
+        # the knot interval holding each cell (cells lie within one interval: the knots are
+        # grid nodes)
+        piece = np.clip(np.searchsorted(breaks, 0.5 * (vn[:-1] + vn[1:]), side="right") - 1,
+                        0, len(breaks) - 2)[k]
+        act = np.flatnonzero(~miss.ravel())
+        vf = v.ravel().copy()
+        out = np.full(nb * nc, np.nan)
+        if act.size:
+            col = np.broadcast_to(np.arange(nc), (nb, nc)).ravel()[act]
+            ka = k.ravel()[act]
+            c = pieces[col, piece.ravel()[act]]  # (M, 4)
+            c0, c1, c2, c3 = c[:, 0], c[:, 1], c[:, 2], c[:, 3]
+            x0 = breaks[piece.ravel()[act]]
+            lo, hi = vn[ka] - x0, vn[ka + 1] - x0
+            x = vf[act] - x0
+            ta = np.broadcast_to(tg, (nb, nc)).ravel()[act]
+            f = ((c3 * x + c2) * x + c1) * x + c0 - ta
+            run = np.flatnonzero(~(np.abs(f) < 1e-13))
+            for _ in range(_COLUMN_NEWTON):
+                if run.size == 0:
+                    break
+                xr = x[run]
+                d = (3.0 * c3[run] * xr + 2.0 * c2[run]) * xr + c1[run]
+                xn = np.minimum(np.maximum(xr - f[run] / np.where(d != 0, d, 1e-30), lo[run]),
+                                hi[run])
+                fr = ((c3[run] * xn + c2[run]) * xn + c1[run]) * xn + c0[run] - ta[run]
+                x[run], f[run] = xn, fr
+                run = run[~(np.abs(fr) < 1e-13) & (xn != xr)]
+            out[act] = np.where(np.abs(f) > 1e-9, np.nan, x + x0)
+        return out.reshape(nb, nc)
 
     def measure_terms(self, u, v):
         """(5, ...) the terms whose least is the inside measure at (u, v) (v finite): the
