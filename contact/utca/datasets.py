@@ -225,7 +225,15 @@ def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
     start = _cycle_start(eo, m1, m2, kw)
     roll = start + p * np.arange(int(n_roll)) / int(n_roll)
     pk = np.array(pairs)
-    cc = contact_curves(eo, roll[:, None] - pk[None, :] * p, **kw)
+    targets = roll[:, None] - pk[None, :] * p
+    # the reference pair at the transitions (the cycle's extremes) in the same batch as
+    # the cycle's curves: one contact-curve evaluation instead of two (each curve is its
+    # own; the batch changes the curve ends, found to 1e-9 of the face width, at
+    # round-off: ~1e-16 rad of UTE)
+    at = np.flatnonzero(np.isfinite([m1, m2]))
+    both = contact_curves(eo, np.r_[targets.ravel(), np.array([m1, m2])[at]], **kw)
+    n = targets.size
+    cc = ContactCurves(*(a[:n].reshape(targets.shape + a.shape[1:]) for a in both))
     envelope = np.min(np.where(np.isfinite(cc.ute), cc.ute, np.inf), axis=1)
     if not np.all(np.isfinite(envelope)):
         lost = roll[~np.isfinite(envelope)]
@@ -235,11 +243,7 @@ def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
     # and the values at the transitions (where the envelope peaks)
     te_min = _lowest_te(cc.ute[:, pairs.index(0)], envelope)
     te_tr = np.array([np.nan, np.nan])
-    at = np.flatnonzero(np.isfinite([m1, m2]))
-    if at.size:
-        # both transitions in one batch (the curve ends, to 1e-9 of the face width, may
-        # then differ at round-off level from separate evaluations: ~1e-16 rad of UTE)
-        te_tr[at] = pair_transmission_error(eo, np.array([m1, m2])[at], **kw)
+    te_tr[at] = both.ute[n:]
     te_max = float(np.nanmax(np.r_[envelope, te_tr]))
     return UnloadedCycle(roll, pk, cc, envelope, (m1, m2), tuple(te_tr), (te_min, te_max),
                          method)
