@@ -136,6 +136,10 @@ class EaseOffFields:
         # cell corners all computed (hard mask): cell (i, j) spans u[i]..u[i+1], v[j]..v[j+1]
         c = computed
         self.cell_ok = c[:-1, :-1] & c[1:, :-1] & c[:-1, 1:] & c[1:, 1:]
+        # Q on the coarse places of the contact curves, by their number and range (the
+        # curves and the probes of near misses use two sets)
+        self._lattices: dict[tuple, np.ndarray] = {}
+        self._columns: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
 
     def gap_at(self, u, v):
         """The pinion's gap curvature K at gear places, held within the nodes' range.
@@ -189,10 +193,10 @@ class EaseOffFields:
     def lattice(self, uc):
         """Q at the coarse places uc × the grid's profile nodes (cached)."""
         key = (len(uc), float(uc[0]), float(uc[-1]))
-        if getattr(self, "_lat_key", None) != key:
-            self._lat = self.q(uc, self.v)
-            self._lat_key = key
-        return self._lat
+        lat = self._lattices.get(key)
+        if lat is None:
+            lat = self._lattices[key] = self.q(uc, self.v)
+        return lat
 
     def columns(self, uc):
         """Q on the lengthwise places uc as cubic pieces in v (cached).
@@ -201,7 +205,8 @@ class EaseOffFields:
         [breaks[i], breaks[i + 1]] Q(uc[j], v) = Σ_p c[j, i, p] (v − breaks[i])^p, the
         bicubic spline restricted to each column (its v-knot intervals)."""
         key = (len(uc), float(uc[0]), float(uc[-1]))
-        if getattr(self, "_col_key", None) != key:
+        cols = self._columns.get(key)
+        if cols is None:
             tx, ty, c = self.q.tck
             kx, ky = self.q.degrees
             d = BSpline.design_matrix(np.asarray(uc, dtype=float), tx, kx).toarray()
@@ -209,9 +214,9 @@ class EaseOffFields:
             basis = _piece_basis(ty, ky)  # (n_int, 4, 4)
             n_int = basis.shape[0]
             idx = np.arange(n_int)[:, None] + np.arange(ky + 1)[None, :]
-            self._cols = (ty[ky:ky + n_int + 1], np.einsum("jia,iap->jip", coef[:, idx], basis))
-            self._col_key = key
-        return self._cols
+            cols = self._columns[key] = (ty[ky:ky + n_int + 1],
+                                         np.einsum("jia,iap->jip", coef[:, idx], basis))
+        return cols
 
     def solve_columns(self, uc, target):
         """Profile places v* (nb, nc) of the iso-lines Q = target (nb,) on the lengthwise
