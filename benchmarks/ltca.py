@@ -140,7 +140,9 @@ def measure(cases, torque: float, opts: LTCAOptions, repeat: int) -> list[dict]:
 
 def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
     """The work of one study point, counted: the envelope solver's Newton loops and
-    evaluations (and their points), the spline evaluations (and their points) and the
+    evaluations (and their points), the spline evaluations (FITPACK, and their points),
+    the contact curves' coarse samples solved on Q's column pieces (where the code has
+    them: :meth:`contact.utca.EaseOffFields.solve_columns`, and their points) and the
     Python-level calls (``cProfile``'s count of function calls)."""
     import cProfile
     import pstats
@@ -149,10 +151,13 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
     from scipy.interpolate import _fitpack2
 
     import geometry.machine.meshing as meshing
+    from contact.utca import fields
 
     n = dict.fromkeys(("Newton loops", "envelope evaluations", "envelope points",
-                       "spline evaluations", "spline points"), 0)
+                       "spline evaluations", "spline points", "column-piece solves",
+                       "column-piece points"), 0)
     originals = (meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev)
+    columns = getattr(fields.EaseOffFields, "solve_columns", None)
 
     def newton(*args):
         n["Newton loops"] += 1
@@ -168,7 +173,14 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
         n["spline points"] += int(np.size(xi))
         return originals[2](self, xi, yi, dx, dy)
 
+    def solve_columns(self, uc, target):
+        n["column-piece solves"] += 1
+        n["column-piece points"] += int(np.size(uc) * np.size(target))
+        return columns(self, uc, target)
+
     meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev = newton, evaluate, ev
+    if columns is not None:
+        fields.EaseOffFields.solve_columns = solve_columns
     profile = cProfile.Profile()
     try:
         profile.enable()
@@ -176,6 +188,8 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
         profile.disable()
     finally:
         meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev = originals
+        if columns is not None:
+            fields.EaseOffFields.solve_columns = columns
     n["Python-level calls"] = pstats.Stats(profile).total_calls
     return n
 

@@ -17,7 +17,8 @@ beyond them (both points on their blades' main sections), continued linearly pas
 a cubic spline would carry the kink back. Q must be strictly monotone along the profile
 direction (checked; otherwise ``ModelUnavailableError``), so a contact curve is
 parameterised by the lengthwise fraction u and its profile place v*(u) solved by Newton's
-method on the spline.
+method on the spline (on a set of places shared by many curves, on the spline's cubic
+piece of each place's column: :meth:`EaseOffFields.solve_columns`).
 
 Public functions
 ----------------
@@ -199,11 +200,23 @@ class EaseOffFields:
         return lat
 
     def columns(self, uc):
-        """Q on the lengthwise places uc as cubic pieces in v (cached).
+        """Q on lengthwise places as cubic pieces in v (cached per set of places).
 
-        Returns (breaks (n_int + 1,) [1], coefficients (len(uc), n_int, 4) [rad]): on
-        [breaks[i], breaks[i + 1]] Q(uc[j], v) = Σ_p c[j, i, p] (v − breaks[i])^p, the
-        bicubic spline restricted to each column (its v-knot intervals)."""
+        Parameters
+        ----------
+        uc : ndarray (nc,) — [1]
+            Lengthwise fractions in the grid.
+
+        Returns
+        -------
+        breaks : ndarray (n_int + 1,) — [1]
+            The spline's knot intervals in v.
+        coefficients : ndarray (nc, n_int, 4) — [rad]
+            On [breaks[i], breaks[i + 1]], Q(uc[j], v) = Σ_p c[j, i, p] (v − breaks[i])^p:
+            the bicubic spline of Q restricted to each column (a cubic B-spline in v whose
+            coefficients are the u-basis at uc[j] applied to the spline's; de Boor, *A
+            Practical Guide to Splines*, 1978), matching FITPACK's evaluation to round-off.
+        """
         key = (len(uc), float(uc[0]), float(uc[-1]))
         cols = self._columns.get(key)
         if cols is None:
@@ -219,11 +232,20 @@ class EaseOffFields:
         return cols
 
     def solve_columns(self, uc, target):
-        """Profile places v* (nb, nc) of the iso-lines Q = target (nb,) on the lengthwise
-        places uc (nc,): :meth:`solve_v` of ``(uc[None, :], target[:, None])`` from the
-        lattice (:meth:`lattice`), by Newton's method on each column's cubic piece in the
-        bracketing grid cell (held in the cell) instead of on the bicubic spline: the same
-        root (the piece is the spline there) without a spline evaluation per step.
+        """Profile places of iso-lines on a set of lengthwise places (seed §2.3.2.2).
+
+        :meth:`solve_v` of ``(uc[None, :], target[:, None])`` started from the lattice
+        (:meth:`lattice`), but by Newton's method on each column's cubic piece
+        (:meth:`columns`) in the bracketing grid cell (held in the cell) instead of on the
+        bicubic spline: the same root (the piece is the spline there) without two spline
+        evaluations per step (issue 32).
+
+        Parameters
+        ----------
+        uc : array_like (nc,) — [1]
+            Lengthwise fractions (the contact curves' coarse samples).
+        target : array_like (nb,) — [rad]
+            Values q of Q.
 
         Returns
         -------
