@@ -28,9 +28,11 @@ analysis ≤ 0.25 s, a study point ≤ 0.25 s of CPU (≥ 6 points/s on 2 worker
 
 The work of one study point is also counted (load-independent, unlike the times): the
 envelope solver's Newton loops and evaluations (with their points), the spline evaluations
-(FITPACK, with their points) and the Python-level calls (``cProfile``'s count), each run
-once more at the first offset. A change that makes a point cheaper without changing its
-arithmetic shows here as fewer calls for the same points.
+(FITPACK, with their points), the contact curves' coarse samples solved on Q's column
+pieces instead (``EaseOffFields.solve_columns``, with their points; 0 in code before it)
+and the Python-level calls (``cProfile``'s count), each run once more at the first offset.
+A change that makes a point cheaper without changing its arithmetic shows here as fewer
+calls for the same points.
 
 ``--baseline`` (a reference case; without a value the bundled default) puts a case first,
 e.g. face-hobbed cases beside the face-milled default (target: a face-hobbed analysis
