@@ -28,9 +28,11 @@ analysis ≤ 0.25 s, a study point ≤ 0.25 s of CPU (≥ 6 points/s on 2 worker
 
 The work of one study point is also counted (load-independent, unlike the times): the
 envelope solver's Newton loops and evaluations (with their points), the spline evaluations
-(FITPACK, with their points) and the Python-level calls (``cProfile``'s count), each run
-once more at the first offset. A change that makes a point cheaper without changing its
-arithmetic shows here as fewer calls for the same points.
+(FITPACK, with their points), the contact curves' coarse samples solved on Q's column
+pieces instead (``EaseOffFields.solve_columns``, with their points; 0 in code before it)
+and the Python-level calls (``cProfile``'s count), each run once more at the first offset.
+A change that makes a point cheaper without changing its arithmetic shows here as fewer
+calls for the same points.
 
 ``--baseline`` (a reference case; without a value the bundled default) puts a case first,
 e.g. face-hobbed cases beside the face-milled default (target: a face-hobbed analysis
@@ -140,7 +142,9 @@ def measure(cases, torque: float, opts: LTCAOptions, repeat: int) -> list[dict]:
 
 def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
     """The work of one study point, counted: the envelope solver's Newton loops and
-    evaluations (and their points), the spline evaluations (and their points) and the
+    evaluations (and their points), the spline evaluations (FITPACK, and their points),
+    the contact curves' coarse samples solved on Q's column pieces (where the code has
+    them: :meth:`contact.utca.EaseOffFields.solve_columns`, and their points) and the
     Python-level calls (``cProfile``'s count of function calls)."""
     import cProfile
     import pstats
@@ -149,10 +153,13 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
     from scipy.interpolate import _fitpack2
 
     import geometry.machine.meshing as meshing
+    from contact.utca import fields
 
     n = dict.fromkeys(("Newton loops", "envelope evaluations", "envelope points",
-                       "spline evaluations", "spline points"), 0)
+                       "spline evaluations", "spline points", "column-piece solves",
+                       "column-piece points"), 0)
     originals = (meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev)
+    columns = getattr(fields.EaseOffFields, "solve_columns", None)
 
     def newton(*args):
         n["Newton loops"] += 1
@@ -168,7 +175,14 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
         n["spline points"] += int(np.size(xi))
         return originals[2](self, xi, yi, dx, dy)
 
+    def solve_columns(self, uc, target):
+        n["column-piece solves"] += 1
+        n["column-piece points"] += int(np.size(uc) * np.size(target))
+        return columns(self, uc, target)
+
     meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev = newton, evaluate, ev
+    if columns is not None:
+        fields.EaseOffFields.solve_columns = solve_columns
     profile = cProfile.Profile()
     try:
         profile.enable()
@@ -176,6 +190,8 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
         profile.disable()
     finally:
         meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev = originals
+        if columns is not None:
+            fields.EaseOffFields.solve_columns = columns
     n["Python-level calls"] = pstats.Stats(profile).total_calls
     return n
 

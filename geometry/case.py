@@ -372,8 +372,17 @@ class Case:
             Angles in degrees, lengths in mm, as in a case file; machine settings and blades
             always in our convention (``docs/machine.md``), whatever convention the loaded
             file declared, so no ``convention`` key is written.
+
+        Notes
+        -----
+        The text is made once per case object and kept on it (the case is frozen): an
+        analysis writes it into several datasets' provenance (issue 32).
         """
-        return dump_toml(_case_to_dict(self))
+        text = self.__dict__.get("_toml_text")
+        if text is None:
+            text = dump_toml(_case_to_dict(self))
+            object.__setattr__(self, "_toml_text", text)
+        return text
 
     def teeth_toml(self) -> str:
         """The case as TOML text without its misalignment and surface deviations.

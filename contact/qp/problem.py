@@ -209,6 +209,11 @@ class ContactProblem:
         object.__setattr__(self, "upper_bound", U)
         object.__setattr__(self, "asymmetry", asym)
         object.__setattr__(self, "scale", ProblemScale(force=f0, length=d0, arm=r0))
+        # the segments with a limit, asked for at every solve and pivot (read-only)
+        bounded = np.isfinite(U)
+        bounded.setflags(write=False)
+        object.__setattr__(self, "_bounded", bounded)
+        object.__setattr__(self, "_has_bounds", bool(bounded.any()))
 
     @property
     def size(self) -> int:
@@ -217,13 +222,13 @@ class ContactProblem:
 
     @property
     def bounded(self) -> np.ndarray:
-        """(N,) bool: the segments with a force limit (finite ``upper_bound``)."""
-        return np.isfinite(self.upper_bound)
+        """(N,) bool: the segments with a force limit (finite ``upper_bound``; read-only)."""
+        return self._bounded
 
     @property
     def has_bounds(self) -> bool:
         """Whether any segment has a force limit."""
-        return bool(np.any(self.bounded))
+        return self._has_bounds
 
     def scaled_upper_bound(self) -> np.ndarray:
         """The force limits of the dimensionless QP, F_max/f₀ (``inf`` where none), shape
@@ -312,17 +317,18 @@ def contact_residuals(
     sc = problem.scale
     CF = problem.compliance @ F
     Y = CF + problem.separation - problem.moment_arm * rotation
-    f_ref = max(float(np.max(np.abs(F))), sc.force)
+    # (the arrays' max method: np.max's reduction without its dispatch layers)
+    f_ref = max(float(np.abs(F).max()), sc.force)
     d_ref = max(
-        float(np.max(np.abs(CF))),
-        abs(rotation) * float(np.max(np.abs(problem.moment_arm))),
+        float(np.abs(CF).max()),
+        abs(rotation) * float(np.abs(problem.moment_arm).max()),
         sc.length,
     )
     res = {
-        "primal": float(np.max(np.maximum(-F, 0.0))) / f_ref,
-        "dual": float(np.max(np.maximum(-Y, 0.0))) / d_ref,
+        "primal": float(np.maximum(-F, 0.0).max()) / f_ref,
+        "dual": float(np.maximum(-Y, 0.0).max()) / d_ref,
         "complementarity": float(
-            np.max(np.minimum(np.maximum(F, 0.0) / f_ref, np.maximum(Y, 0.0) / d_ref))
+            np.minimum(np.maximum(F, 0.0) / f_ref, np.maximum(Y, 0.0) / d_ref).max()
         ),
         "equilibrium": abs(float(problem.moment_arm @ F) - problem.torque) / problem.torque,
         "upper_complementarity": 0.0,

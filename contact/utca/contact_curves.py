@@ -193,7 +193,7 @@ def _coarse_runs(f: EaseOffFields, t: np.ndarray, coarse_per_cell: int) -> _Coar
     nb = t.size
     nc = coarse_per_cell * (len(f.u) - 1) + 1
     uc = np.linspace(float(f.u[0]), float(f.u[-1]), nc)
-    vc = f.solve_v(uc[None, :], t[:, None], lattice=f.lattice(uc)[None, :, :])
+    vc = f.solve_columns(uc, t)
     ok = f.inside(np.broadcast_to(uc, vc.shape), vc)
     # vectorised over the curves: a run starts where ok rises and ends before it falls;
     # argmax takes the first of equally long runs

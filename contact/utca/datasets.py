@@ -225,7 +225,15 @@ def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
     start = _cycle_start(eo, m1, m2, kw)
     roll = start + p * np.arange(int(n_roll)) / int(n_roll)
     pk = np.array(pairs)
-    cc = contact_curves(eo, roll[:, None] - pk[None, :] * p, **kw)
+    targets = roll[:, None] - pk[None, :] * p
+    # the reference pair at the transitions (the cycle's extremes) in the same batch as
+    # the cycle's curves: one contact-curve evaluation instead of two (each curve is its
+    # own; the batch changes the curve ends, found to 1e-9 of the face width, at
+    # round-off: ~1e-16 rad of UTE)
+    at = np.flatnonzero(np.isfinite([m1, m2]))
+    both = contact_curves(eo, np.r_[targets.ravel(), np.array([m1, m2])[at]], **kw)
+    n = targets.size
+    cc = ContactCurves(*(a[:n].reshape(targets.shape + a.shape[1:]) for a in both))
     envelope = np.min(np.where(np.isfinite(cc.ute), cc.ute, np.inf), axis=1)
     if not np.all(np.isfinite(envelope)):
         lost = roll[~np.isfinite(envelope)]
@@ -235,11 +243,7 @@ def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
     # and the values at the transitions (where the envelope peaks)
     te_min = _lowest_te(cc.ute[:, pairs.index(0)], envelope)
     te_tr = np.array([np.nan, np.nan])
-    at = np.flatnonzero(np.isfinite([m1, m2]))
-    if at.size:
-        # both transitions in one batch (the curve ends, to 1e-9 of the face width, may
-        # then differ at round-off level from separate evaluations: ~1e-16 rad of UTE)
-        te_tr[at] = pair_transmission_error(eo, np.array([m1, m2])[at], **kw)
+    te_tr[at] = both.ute[n:]
     te_max = float(np.nanmax(np.r_[envelope, te_tr]))
     return UnloadedCycle(roll, pk, cc, envelope, (m1, m2), tuple(te_tr), (te_min, te_max),
                          method)
@@ -374,25 +378,44 @@ def _contact_lines(cc: ContactCurves, sep_own: np.ndarray, separation: float,
     path_u, path_v : (n_roll, n_pair, 3)
         LPP, CPP (the contact point H), RPP: the line's ends and H.
     """
-    n_roll, n_pair, n_point = cc.u.shape
-    pattern = np.zeros((n_roll, n_pair, n_point), dtype=np.int8)
-    length = np.zeros((n_roll, n_pair))
-    path_u = np.full((n_roll, n_pair, 3), np.nan)
-    path_v = np.full((n_roll, n_pair, 3), np.nan)
-    for i in range(n_roll):
-        for j in range(n_pair):
-            k = int(cc.index[i, j])
-            if k < 0:
-                continue
-            s = sep_own[i, j] - separation
-            lo, hi, ln = _stretch(s, cc.position[i, j], k)
-            length[i, j] = ln
-            path_u[i, j] = (_interp_at(cc.u[i, j], lo), cc.contact_u[i, j],
-                            _interp_at(cc.u[i, j], hi))
-            path_v[i, j] = (_interp_at(cc.v[i, j], lo), cc.contact_v[i, j],
-                            _interp_at(cc.v[i, j], hi))
-            if active[i, j]:
-                pattern[i, j] = np.isfinite(s) & (s <= 0)
+    n_point = cc.u.shape[-1]
+    s = sep_own - separation
+    ok = np.isfinite(s) & (s <= 0)
+    k = cc.index.astype(np.intp)
+    kc = np.clip(k, 0, n_point - 1)[..., None]
+    have = (k >= 0) & np.take_along_axis(ok, kc, -1)[..., 0]  # a stretch around H
+    # the run of ok samples holding k, all curves at once (a walk from k either way):
+    # lo after the last sample < k that is not ok, hi before the first one > k
+    pos = np.arange(n_point)
+    last_bad = np.maximum.accumulate(np.where(ok, -1, pos), axis=-1)
+    first_bad = np.minimum.accumulate(np.where(ok, n_point, pos)[..., ::-1], axis=-1)[..., ::-1]
+    lo = np.take_along_axis(last_bad, kc, -1)[..., 0] + 1
+    hi = np.take_along_axis(first_bad, kc, -1)[..., 0] - 1
+    lo, hi = np.where(have, lo, 0), np.where(have, hi, 0)
+
+    def at(a, i):
+        return np.take_along_axis(a, np.clip(i, 0, a.shape[-1] - 1)[..., None], -1)[..., 0]
+
+    s_lo, s_hi = at(s, lo), at(s, hi)
+    s_before, s_after = at(s, lo - 1), at(s, hi + 1)
+    ext_lo = have & (lo > 0) & np.isfinite(s_before)
+    ext_hi = have & (hi < n_point - 1) & np.isfinite(s_after)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        flo = np.where(ext_lo, lo - (0.0 - s_lo) / (s_before - s_lo), lo.astype(float))
+        fhi = np.where(ext_hi, hi + (0.0 - s_hi) / (s_after - s_hi), hi.astype(float))
+    seg = np.linalg.norm(np.diff(cc.position, axis=-2), axis=-1)  # (..., n_point - 1)
+    inner = (pos[:-1] >= lo[..., None]) & (pos[:-1] < hi[..., None])
+    length = np.where(inner, seg, 0.0).sum(axis=-1)
+    length = length + np.where(flo < lo, (lo - flo) * at(seg, lo - 1), 0.0)
+    length = length + np.where(fhi > hi, (fhi - hi) * at(seg, hi), 0.0)
+    length = np.where(have, length, 0.0)
+    flo, fhi = np.where(have, flo, np.nan), np.where(have, fhi, np.nan)
+    curve = k >= 0
+    path_u = np.stack([_interp_at(cc.u, flo), np.where(curve, cc.contact_u, np.nan),
+                       _interp_at(cc.u, fhi)], -1)
+    path_v = np.stack([_interp_at(cc.v, flo), np.where(curve, cc.contact_v, np.nan),
+                       _interp_at(cc.v, fhi)], -1)
+    pattern = (ok & (curve & active)[..., None]).astype(np.int8)
     return pattern, length, path_u, path_v
 
 
@@ -510,43 +533,16 @@ def _misalignment_json(mis: Misalignment) -> str:
     return json.dumps(mis.labelled())
 
 
-def _stretch(sep, pos, k):
-    """Contact stretch around sample k where sep ≤ 0 (sep = separation − threshold).
-
-    Returns (lo, hi) fractional sample indices of its ends and the 3-D length [mm].
-    """
-    n = len(sep)
-    sep = sep.tolist()  # Python floats (exact): the scalar walk below without numpy overhead
-    isfinite = math.isfinite
-    if k < 0 or not isfinite(sep[k]) or sep[k] > 0:
-        return math.nan, math.nan, 0.0
-    lo = k
-    while lo > 0 and isfinite(sep[lo - 1]) and sep[lo - 1] <= 0:
-        lo -= 1
-    hi = k
-    while hi < n - 1 and isfinite(sep[hi + 1]) and sep[hi + 1] <= 0:
-        hi += 1
-    flo, fhi = float(lo), float(hi)
-    if lo > 0 and isfinite(sep[lo - 1]):
-        flo = lo - (0.0 - sep[lo]) / (sep[lo - 1] - sep[lo])
-    if hi < n - 1 and isfinite(sep[hi + 1]):
-        fhi = hi + (0.0 - sep[hi]) / (sep[hi + 1] - sep[hi])
-    seg = np.linalg.norm(np.diff(pos, axis=0), axis=-1)
-    length = float(seg[lo:hi].sum())
-    if flo < lo:
-        length += (lo - flo) * float(seg[lo - 1])
-    if fhi > hi:
-        length += (fhi - hi) * float(seg[hi])
-    return flo, fhi, length
-
-
 def _interp_at(a, x):
-    """Linear interpolation of a 1-D array at a fractional index x (NaN-safe)."""
-    if not np.isfinite(x):
-        return math.nan
-    i = int(min(max(math.floor(x), 0), len(a) - 2))
+    """Linear interpolation of arrays (..., n) at fractional indices x (...) along the last
+    axis (NaN where x is NaN)."""
+    n = a.shape[-1]
+    fin = np.isfinite(x)
+    i = np.minimum(np.maximum(np.floor(np.where(fin, x, 0.0)), 0), n - 2).astype(np.intp)
     t = x - i
-    return float((1 - t) * a[i] + t * a[i + 1])
+    ai = np.take_along_axis(a, i[..., None], -1)[..., 0]
+    an = np.take_along_axis(a, (i + 1)[..., None], -1)[..., 0]
+    return np.where(fin, (1 - t) * ai + t * an, np.nan)
 
 
 def easeoff_dataset(eo: EaseOff, case: Case, *,

@@ -25,7 +25,12 @@ from typing import NamedTuple
 import numpy as np
 
 from geometry.core.errors import InputError
-from geometry.machine.cradle import MachineSettings, roll_angle, rot, taylor_motion, trans
+from geometry.machine.cradle import (
+    MachineSettings,
+    _taylor_coefficients,
+    rot,
+    trans,
+)
 from geometry.machine.cutter import (
     Blade,
     ProfileSections,
@@ -77,6 +82,10 @@ class Chain(NamedTuple):
     r2_y: np.ndarray  # (3,) R_y(γ_m − π/2) e_y: direction of −E_m
     r2_z: np.ndarray  # (3,) R_y(γ_m − π/2) e_z: direction of X_b
     motion: bool  # helical or vertical motion: T(0,−E_m,X_b) depends on q
+    #: the polynomial coefficients (:func:`geometry.machine.cradle.taylor_motion`'s, read
+    #: only) of the vertical motion E_m(q), the helical motion X_b(q) and the modified roll
+    #: φ(q)/R_a, each None where the settings give it no derivatives
+    taylor: tuple = (None, None, None)
 
 
 def chain(settings: MachineSettings) -> Chain:
@@ -92,8 +101,18 @@ def chain(settings: MachineSettings) -> Chain:
     if not motion:
         k3[:, 3] += -settings.blank_offset * r2[:, 1] + settings.sliding_base * r2[:, 2]
     k = np.concatenate([k1, k2, k3])  # (9, 4)
+
+    def taylor(value0, derivatives):
+        if not any(derivatives):
+            return None
+        return _taylor_coefficients(float(value0), tuple(float(d) for d in derivatives))
+
+    roll = (1.0, *(-c for c in settings.modified_roll))
     return Chain(np.ascontiguousarray(k[:, :3]), k[:, 3:].copy(), r2[:, 1].copy(),
-                  r2[:, 2].copy(), motion)
+                  r2[:, 2].copy(), motion,
+                  (taylor(settings.blank_offset, settings.vertical_motion),
+                   taylor(settings.sliding_base, settings.helical_motion),
+                   taylor(0.0, roll) if any(settings.modified_roll) else None))
 
 
 #: order of the vectors in a family buffer (:func:`family_buffer`)
@@ -192,11 +211,13 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
     dc = p2[:, :3] * ca - p1[:, :3] * sa
     d2c = -(p1[:, 0] * ca + p2[:, 0] * sa)
     if chain.motion:
-        em, dem, d2em = _motion(settings.blank_offset, settings.vertical_motion, q)
-        xb, dxb, d2xb = _motion(settings.sliding_base, settings.helical_motion, q)
-        c[:, 0] += np.outer(chain.r2_y, -em) + np.outer(chain.r2_z, xb)
-        dc[:, 0] += np.outer(chain.r2_y, -dem) + np.outer(chain.r2_z, dxb)
-        d2c += np.outer(chain.r2_y, -d2em) + np.outer(chain.r2_z, d2xb)
+        em, dem, d2em = _motion(settings.blank_offset, chain.taylor[0], q)
+        xb, dxb, d2xb = _motion(settings.sliding_base, chain.taylor[1], q)
+        # (the outer products of np.outer, as broadcast products: the same elements)
+        ry, rz = chain.r2_y[:, None], chain.r2_z[:, None]
+        c[:, 0] += ry * -em + rz * xb
+        dc[:, 0] += ry * -dem + rz * dxb
+        d2c += ry * -d2em + rz * d2xb
     kappa = settings.indexing_ratio
     if not generate and kappa == 0.0:
         y[:, 7:10] = dc
@@ -205,8 +226,11 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
     else:
         if not generate:
             phi, d1, d2 = np.zeros(n), 0.0, None
-        elif any(settings.modified_roll):
-            phi, d1, d2 = roll_angle(settings, q)
+        elif chain.taylor[2] is not None:
+            # roll_angle's φ = R_a (q − C q² − …), from the chain's coefficients
+            phi, d1, d2 = _taylor_values(chain.taylor[2], q)
+            ra = settings.ratio_of_roll
+            phi, d1, d2 = ra * phi, ra * d1, ra * d2
         else:
             phi, d1, d2 = settings.ratio_of_roll * q, settings.ratio_of_roll, None
         # S v = (−v_y, v_x, 0): r_q = R_z(−φ)(c' − φ' S c), and r_qq likewise
@@ -235,13 +259,27 @@ def family_buffer(chain: Chain, settings: MachineSettings, v: np.ndarray,
     return out
 
 
-def _motion(value0: float, derivatives, q: np.ndarray):
-    """:func:`geometry.machine.cradle.taylor_motion`, but a motion without derivatives as
-    its three constants (floats): the chain's outer products then broadcast one column
-    per component, each element the same product and sum as with the constant arrays."""
-    if not any(derivatives):
+def _motion(value0: float, coefficients, q: np.ndarray):
+    """:func:`geometry.machine.cradle.taylor_motion` from its coefficients (:class:`Chain`),
+    but a motion without derivatives (None) as its three constants (floats): the chain's
+    outer products then broadcast one column per component, each element the same product
+    and sum as with the constant arrays."""
+    if coefficients is None:
         return float(value0), 0.0, 0.0
-    return taylor_motion(value0, derivatives, q)
+    return _taylor_values(coefficients, q)
+
+
+def _taylor_values(coef: np.ndarray, q: np.ndarray):
+    """f, f′, f″ (n,) at q (n,) of :func:`geometry.machine.cradle.taylor_motion`'s
+    coefficients ``coef``: its arithmetic (the increasing Vandermonde matrix of q by
+    cumulative products, times the coefficients) without its checks."""
+    v = np.empty((q.size, coef.shape[0]))
+    v[:, 0] = 1.0
+    if coef.shape[0] > 1:
+        v[:, 1:] = q[:, None]
+        np.multiply.accumulate(v[:, 1:], out=v[:, 1:], axis=1)
+    out = v @ coef
+    return out[:, 0], out[:, 1], out[:, 2]
 
 
 def _swept_normal(out: np.ndarray) -> None:

@@ -354,19 +354,23 @@ def _clamp_to(sections, k, s):
     return np.clip(s, sections.s_lo[k], np.minimum(sections.s_hi[k], sections.s_lo[k] + 1e3))
 
 
-def _solve_sections(ctx: _Context, x0, sec0, z, p, first=None):
+def _solve_sections(ctx: _Context, x0, sec0, z, p, first=None, extra=None):
     """Newton on the given sections, moving points to neighbouring sections as needed.
 
     ``first``: the result (x, converged) of :func:`_newton` from ``x0`` on ``sec0`` if
     already computed (Newton runs each point independently, so it may be part of a larger
     batch). Returns x, section, reason (0 valid, 1 no solution, 2 corner, 3 below the
-    blade tip).
+    blade tip). ``extra``: Newton starts (x0, section, z, p) of another batch that do not
+    depend on this one, run in the first batch after ``first`` (the failed points' retries
+    on the neighbouring sections, or the first move to a neighbouring section): one loop
+    of iterations fewer; their result (x, converged) is then returned fourth.
     """
     sections = ctx.sections
     n_sec = len(sections.s_lo)
     n = len(x0)
     rows = np.arange(n)
     x, ok = _newton(ctx, x0, sec0, z, p) if first is None else first
+    extra_out = None
     section = sec0.copy()
     reason = np.where(ok, 0, 1).astype(np.int8)
     visited = np.zeros((n, n_sec), bool)
@@ -382,7 +386,9 @@ def _solve_sections(ctx: _Context, x0, sec0, z, p, first=None):
         k_all = np.concatenate([section[idx] + step for step, idx in tries])
         xs = x0[idx_all].copy()
         xs[:, 0] = _clamp_to(sections, k_all, xs[:, 0])
-        xn_all, okn_all = _newton(ctx, xs, k_all, z[idx_all], p[idx_all])
+        xn_all, okn_all, extra_out = _newton_with(ctx, xs, k_all, z[idx_all], p[idx_all],
+                                                  extra)
+        extra = None
         at = 0
         for _, idx in tries:
             sl = slice(at, at + idx.size)
@@ -421,14 +427,29 @@ def _solve_sections(ctx: _Context, x0, sec0, z, p, first=None):
         visited[idx, k] = True
         xs = x[idx].copy()
         xs[:, 0] = _clamp_to(sections, k, xs[:, 0])
-        xn, okn = _newton(ctx, xs, k, z[idx], p[idx])
+        xn, okn, done = _newton_with(ctx, xs, k, z[idx], p[idx], extra)
+        if extra is not None:
+            extra_out, extra = done, None
         x[idx] = xn
         reason[idx[~okn]] = 1  # left to the continuation from neighbours
     s = x[:, 0]
     outside = (reason == 0) & ((s < sections.s_lo[section] - tol)
                                | (s > sections.s_hi[section] + tol))
     reason[outside] = 1
-    return x, section, reason
+    if extra is not None:  # no retries, no moves: the extra starts alone
+        extra_out = _newton(ctx, *extra)
+    return (x, section, reason) if extra_out is None else (x, section, reason, extra_out)
+
+
+def _newton_with(ctx: _Context, x0, sec0, z, p, extra):
+    """:func:`_newton` of the starts (x0, sec0, z, p) and, in the same batch, of the
+    ``extra`` starts (or None): (x, converged, extra's (x, converged) or None)."""
+    if extra is None:
+        return (*_newton(ctx, x0, sec0, z, p), None)
+    m = len(x0)
+    xe, oke = _newton(ctx, *(np.concatenate([a, b])
+                             for a, b in zip((x0, sec0, z, p), extra, strict=True)))
+    return xe[:m], oke[:m], (xe[m:], oke[m:])
 
 
 _FAIL_RANK = {1: 0, 2: 2, 3: 1}  # which failure says most about a point (corner > below tip)
@@ -523,6 +544,109 @@ def _guess_start(guess, shape: tuple, sections, generate: bool):
     return x, sec.astype(np.intp), have
 
 
+class _Early(NamedTuple):
+    """The seed and the prediction batch of :func:`solve_envelope`, decided from the
+    guesses' first Newton batch (:func:`_early_prediction`)."""
+
+    seed: tuple  # (x_seed (m,), jac_seed (m, m), sec_seed)
+    points: np.ndarray  # (k,) sorted target indices that may need the prediction
+    starts: tuple  # (x0 (k, m), section (k,), z (k,), p (k,)): their Newton starts
+    result: tuple | None = None  # (x (k, m), converged (k,)) once run
+
+
+def _early_prediction(ctx: _Context, xg, secg, idx, first, seed: int, seed_solved, zf, pf,
+                      depth: float) -> _Early | None:
+    """The seed of :func:`solve_envelope` and the starts of its prediction batch, known
+    right after the guesses' first Newton batch ``first`` (x, converged) of the targets
+    ``idx``, so that batch can run with the failed points' retries (one loop of iterations
+    instead of two; each point's Newton is independent of its batch, so every root is the
+    same).
+
+    The seed is decided as :func:`solve_envelope` decides it after the retries: the seed
+    target's root from its guess where it converged there on the profile section, inside
+    the section and within one limited step of its guess (the retries, the moves to
+    neighbouring sections and the step check then leave it as it is), else the seed
+    search's pick among its Newton starts of the first batch (``seed_solved``). The
+    prediction batch takes every target but those that converged from their guess on the
+    seed's section, inside it and within one limited step (they keep that root): a
+    superset of the "other" and "rest" points it will be used for. None where the seed
+    needs a search of its own (its target guessed on the profile section but not
+    converged there), or the search fails (then raised where it was before).
+    """
+    sections = ctx.sections
+    n = zf.size
+    m = xg.shape[1]
+    x, ok = np.full((n, m), np.nan), np.zeros(n, dtype=bool)
+    x[idx], ok[idx] = first
+    tol = 1e-9
+    s_ok = ((x[:, 0] >= sections.s_lo[secg] - tol) & (x[:, 0] <= sections.s_hi[secg] + tol))
+    near = ~np.any(np.abs(x - xg) > _STEP_LIMIT[:m], axis=-1)
+    settled = ok & s_ok & near
+    if settled[seed] and secg[seed] == sections.main:
+        if np.all(settled & (secg == sections.main)):
+            return None  # no prediction needed
+        x_seed, sec_seed = x[seed].copy(), int(secg[seed])
+        _, jac, _ = _evaluate(ctx, x_seed[None], np.array([sec_seed]), zf[seed:seed + 1],
+                              pf[seed:seed + 1])
+        jac_seed = jac[0]
+    elif seed_solved is not None:
+        try:
+            x_seed, jac_seed, sec_seed = _seed(ctx, zf[seed], pf[seed], depth, seed_solved)
+        except InputError:
+            return None
+    else:
+        return None
+    points = np.flatnonzero(~(settled & (secg == sec_seed)))
+    if points.size == 0:
+        return None
+    x0 = _predict(x_seed, jac_seed, zf[points] - zf[seed], pf[points] - pf[seed])
+    return _Early((x_seed, jac_seed, sec_seed), points,
+                  (x0, np.full(points.size, sec_seed), zf[points], pf[points]))
+
+
+def _solve_guesses(ctx: _Context, guess, shape: tuple, seed: int, zf, pf, depth: float, x,
+                   section, reason):
+    """The points of :func:`solve_envelope` that converge from their guess (x, section,
+    reason (n,) updated in place); returns the seed search's Newton results where it ran
+    with the guesses (``solved`` of :func:`_seed`, or None) and the early prediction batch
+    (:func:`_early_prediction`, run with the retries; or None)."""
+    sections = ctx.sections
+    m = x.shape[1]
+    seed_solved = early = None
+    xg, secg, have = _guess_start(guess, shape, sections, ctx.generate)
+    idx = np.flatnonzero(have)
+    # the seed target guessed off the profile section (or not at all) seldom converges
+    # onto it: the seed search (:func:`_seed`) will run, so its Newton starts join the
+    # guesses' batch (each point's Newton is independent of the batch: the same roots,
+    # one loop of iterations instead of two)
+    spec = None
+    if not (have[seed] and secg[seed] == sections.main):
+        spec = _seed_starts(ctx, zf[seed], pf[seed], depth)
+    if idx.size == 0:
+        return seed_solved, early
+    if spec is not None:
+        ns = spec[1].size
+        xa, oka = _newton(ctx, np.concatenate([xg[idx], spec[0]]),
+                          np.concatenate([secg[idx], spec[1]]),
+                          np.concatenate([zf[idx], np.full(ns, zf[seed])]),
+                          np.concatenate([pf[idx], np.full(ns, pf[seed])]))
+        first = (xa[:idx.size], oka[:idx.size])
+        seed_solved = (spec, (xa[idx.size:], oka[idx.size:]))
+    else:
+        first = _newton(ctx, xg[idx], secg[idx], zf[idx], pf[idx])
+    early = _early_prediction(ctx, xg, secg, idx, first, seed, seed_solved, zf, pf, depth)
+    out = _solve_sections(ctx, xg[idx], secg[idx], zf[idx], pf[idx], first=first,
+                          extra=None if early is None else early.starts)
+    x[idx], section[idx], reason[idx] = out[:3]
+    if early is not None:
+        early = early._replace(result=out[3])
+    # a guess farther than one limited Newton step from its root was not from a nearby
+    # solve: the root may be another branch, so solve such points afresh
+    far = np.any(np.abs(x[idx] - xg[idx]) > _STEP_LIMIT[:m], axis=-1)
+    reason[idx[far]] = 1
+    return seed_solved, early
+
+
 def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
                    length_scale: float, depth: float, seed_index=None,
                    guess=None) -> EnvelopeSolution:
@@ -600,34 +724,13 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     x = np.full((n, m), np.nan)
     section = np.zeros(n, dtype=np.intp)
     reason = np.ones(n, dtype=np.int8)
-    seed_solved = None
+    seed_solved = early = None
     if guess is not None:
-        xg, secg, have = _guess_start(guess, shape, sections, gen)
-        idx = np.flatnonzero(have)
-        # the seed target guessed off the profile section (or not at all) seldom converges
-        # onto it: the seed search (:func:`_seed`) will run, so its Newton starts join the
-        # guesses' batch (each point's Newton is independent of the batch: the same roots,
-        # one loop of iterations instead of two)
-        spec = None
-        if not (have[seed] and secg[seed] == sections.main):
-            spec = _seed_starts(ctx, zf[seed], pf[seed], depth)
-        if idx.size:
-            first = None
-            if spec is not None:
-                ns = spec[1].size
-                xa, oka = _newton(ctx, np.concatenate([xg[idx], spec[0]]),
-                                  np.concatenate([secg[idx], spec[1]]),
-                                  np.concatenate([zf[idx], np.full(ns, zf[seed])]),
-                                  np.concatenate([pf[idx], np.full(ns, pf[seed])]))
-                first = (xa[:idx.size], oka[:idx.size])
-                seed_solved = (spec, (xa[idx.size:], oka[idx.size:]))
-            x[idx], section[idx], reason[idx] = _solve_sections(ctx, xg[idx], secg[idx],
-                                                                zf[idx], pf[idx], first=first)
-            # a guess farther than one limited Newton step from its root was not from a
-            # nearby solve: the root may be another branch, so solve such points afresh
-            far = np.any(np.abs(x[idx] - xg[idx]) > _STEP_LIMIT[:m], axis=-1)
-            reason[idx[far]] = 1
-    if reason[seed] == 0 and section[seed] == sections.main:
+        seed_solved, early = _solve_guesses(ctx, guess, shape, seed, zf, pf, depth, x, section,
+                                            reason)
+    if early is not None:
+        x_seed, jac_seed, sec_seed = early.seed
+    elif reason[seed] == 0 and section[seed] == sections.main:
         # the seed target converged from its guess on the profile section: it is the
         # reference, as the seed search's solution would be
         x_seed, sec_seed = x[seed].copy(), int(section[seed])
@@ -645,8 +748,19 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     rest = np.flatnonzero(reason != 0)
     both = np.r_[other, rest]
     if both.size:
-        x0 = _predict(x_seed, jac_seed, zf[both] - zf[seed], pf[both] - pf[seed])
-        xb, okb = _newton(ctx, x0, np.full(both.size, sec_seed), zf[both], pf[both])
+        at = None
+        if early is not None:
+            # run already, in the retries' batch: every point of ``both`` is one of the
+            # early batch's (the others converged on the seed's section from their guess)
+            at = np.minimum(np.searchsorted(early.points, both), early.points.size - 1)
+            if not np.array_equal(early.points[at], both):  # (not met: checked all the same)
+                at = None
+        if at is not None:
+            x0 = early.starts[0][at]
+            xb, okb = early.result[0][at], early.result[1][at]
+        else:
+            x0 = _predict(x_seed, jac_seed, zf[both] - zf[seed], pf[both] - pf[seed])
+            xb, okb = _newton(ctx, x0, np.full(both.size, sec_seed), zf[both], pf[both])
         no = other.size
         if no:
             xo, ok = xb[:no], okb[:no].copy()
