@@ -43,6 +43,7 @@ import xarray as xr
 
 from contact.compliance.fe import FEOptions, locate_flank_points
 from contact.compliance.fe.contact_compliance import pair_coefficients
+from contact.ltca.segments import roll_phases
 from contact.utca import EaseOff
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
@@ -60,11 +61,14 @@ OFF_FLANK_LIMIT = 0.5
 MEMBERS = ("pinion", "gear")
 
 
-def _roll_rotations(eo: EaseOff, roll: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(J,) pinion and gear rotations [rad] at the LTCA's roll positions, as
-    :func:`contact.ltca.segments.segment_geometry` sets them (periodic in the cycle)."""
-    cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
-    rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
+def _roll_rotations(eo: EaseOff, roll: np.ndarray,
+                    pairs=(0,)) -> tuple[np.ndarray, np.ndarray]:
+    """(J,) pinion and gear rotations [rad] at the LTCA's roll positions (of its ``pairs``),
+    as :func:`contact.ltca.segments.segment_geometry` sets them: periodic in the cycle, a
+    roll whole cycles after another with its rotations (not ones differing by round-off,
+    so the two have the same loads in the member frames, superposed once)."""
+    _, rp, source = roll_phases(eo, roll, pairs)
+    rp = rp[source]
     return rp, eo.gear_phase - rp / eo.ratio
 
 
@@ -155,7 +159,8 @@ def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str,
     if "contact_point" not in ltca.variables:
         raise InputError("ltca: lacks contact_point (not an /ltca dataset)")
     p = ltca["contact_point"].transpose("roll", "pair", "segment", "xyz").values
-    rp, rg = _roll_rotations(easeoff, np.asarray(ltca["roll"].values, float))
+    rp, rg = _roll_rotations(easeoff, np.asarray(ltca["roll"].values, float),
+                             np.asarray(ltca["pair"].values, int))
     out = {}
     for name, t in zip(MEMBERS, case_transforms(case, rp, rg), strict=True):
         rot, shift = t[:, :3, :3], t[:, :3, 3]
