@@ -151,6 +151,35 @@ def test_dataset_names_units_and_identities():
     assert np.all(rs["root_stress_max"].values > 0)
 
 
+def test_rolls_whole_mesh_cycles_apart_have_the_same_root_stress():
+    """Over two mesh cycles the LTCA's rolls a cycle apart are the same state (their
+    segments computed once, from the first roll's rotations: equal forces and points), so
+    their root stress is the same to the bit — the rolls are carried into the members'
+    frames at the same rotations and superposed once. ~4 s (a second small LTCA)."""
+    case, eo, _ = _analysis()
+    lt = loaded_tca(case, [250.0], easeoff=eo,
+                    options=LTCAOptions(cycles=2, rolls_per_cycle=4, segments=8))
+    np.testing.assert_array_equal(lt["force"].values[:, :4], lt["force"].values[:, 4:])
+    rs = root_stress(case, eo, lt, coefficients=_coefficients())["root_stress"].values
+    np.testing.assert_array_equal(rs[:, :4], rs[:, 4:])
+    assert np.all(rs.max(axis=(2, 3, 4)) > 1.0)  # [MPa] loaded at every roll
+
+
+def test_unique_rows_are_numpys():
+    """The superposition's de-duplication of (torque, roll) loads: the same distinct rows
+    and inverse as ``numpy.unique(axis=0)``, in order of first appearance. Milliseconds."""
+    from contact.ltca.root_stress import _unique_rows
+
+    rng = np.random.default_rng(5)
+    base = rng.normal(size=(7, 5))
+    a = base[rng.integers(0, 7, 40)]
+    rows, inverse = _unique_rows(a)
+    np.testing.assert_array_equal(rows[inverse], a)
+    ref = np.unique(a, axis=0)
+    assert rows.shape == ref.shape
+    assert np.all(np.diff(np.unique(inverse, return_index=True)[1]) > 0)
+
+
 def test_root_stress_in_the_analysis(tmp_path, monkeypatch):
     """``run_analysis(root_stress=FEOptions)``: the variables land in /ltca, the file's
     summary text, the report's summary columns and the figures name it; the coefficients

@@ -43,6 +43,7 @@ import xarray as xr
 
 from contact.compliance.fe import FEOptions, locate_flank_points
 from contact.compliance.fe.contact_compliance import pair_coefficients
+from contact.ltca.segments import roll_phases
 from contact.utca import EaseOff
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
@@ -56,15 +57,21 @@ log = logging.getLogger(__name__)
 #: [mm] largest distance of a loaded segment's point from the FE model's working flank
 OFF_FLANK_LIMIT = 0.5
 
+#: rows (pair, distinct loads) whose fillet stresses are superposed and reduced at once
+ROW_BLOCK = 32
+
 #: the member labels of the ``member`` dimension
 MEMBERS = ("pinion", "gear")
 
 
-def _roll_rotations(eo: EaseOff, roll: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(J,) pinion and gear rotations [rad] at the LTCA's roll positions, as
-    :func:`contact.ltca.segments.segment_geometry` sets them (periodic in the cycle)."""
-    cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
-    rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
+def _roll_rotations(eo: EaseOff, roll: np.ndarray,
+                    pairs=(0,)) -> tuple[np.ndarray, np.ndarray]:
+    """(J,) pinion and gear rotations [rad] at the LTCA's roll positions (of its ``pairs``),
+    as :func:`contact.ltca.segments.segment_geometry` sets them: periodic in the cycle, a
+    roll whole cycles after another with its rotations (not ones differing by round-off,
+    so the two have the same loads in the member frames, superposed once)."""
+    _, rp, source = roll_phases(eo, roll, pairs)
+    rp = rp[source]
     return rp, eo.gear_phase - rp / eo.ratio
 
 
@@ -155,27 +162,36 @@ def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str,
     if "contact_point" not in ltca.variables:
         raise InputError("ltca: lacks contact_point (not an /ltca dataset)")
     p = ltca["contact_point"].transpose("roll", "pair", "segment", "xyz").values
-    rp, rg = _roll_rotations(easeoff, np.asarray(ltca["roll"].values, float))
+    rp, rg = _roll_rotations(easeoff, np.asarray(ltca["roll"].values, float),
+                             np.asarray(ltca["pair"].values, int))
     out = {}
     for name, t in zip(MEMBERS, case_transforms(case, rp, rg), strict=True):
         rot, shift = t[:, :3, :3], t[:, :3, 3]
-        # r_member = Rᵀ (r_pair − t), per roll
-        out[name] = np.einsum("jba,jksb->jksa", rot, p - shift[:, None, None, :])
+        # r_member = Rᵀ (r_pair − t), per roll: (r − t)ᵀ R as one batched product
+        d = (p - shift[:, None, None, :]).reshape(p.shape[0], -1, 3)
+        out[name] = np.matmul(d, rot).reshape(p.shape)
     return out
 
 
 def _pair_teeth(coef: xr.Dataset, pts: np.ndarray, pairs: np.ndarray) -> np.ndarray:
     """(K,) the member-frame tooth offset of each pair's tooth, from its segments' points
     (J, K, S, 3); pairs without a point continue the neighbours' step."""
+    finite = np.all(np.isfinite(pts), axis=-1)
+    tooth = np.empty(0, int)
+    if finite.any():  # one location of every pair's points
+        tooth = locate_flank_points(coef, pts[finite], strict=False).tooth
+    return _teeth_of_pairs(tooth, np.nonzero(finite)[1], pairs)
+
+
+def _teeth_of_pairs(tooth: np.ndarray, pair_index: np.ndarray,
+                    pairs: np.ndarray) -> np.ndarray:
+    """(K,) the member-frame tooth offset of each pair: the most frequent tooth of its
+    located points (``tooth`` (N,), their pair's index ``pair_index`` (N,)); pairs without
+    a point continue the neighbours' step."""
     teeth = np.full(pairs.size, np.nan)
-    q = np.moveaxis(pts, 1, 0).reshape(pairs.size, -1, 3)  # (K, J S, 3)
-    ok = np.all(np.isfinite(q), axis=2)
-    if ok.any():  # one location of every pair's points
-        found = locate_flank_points(coef, q[ok], strict=False).tooth
-        of_pair = np.nonzero(ok)[0]
-        for k in np.unique(of_pair):
-            t = found[of_pair == k]
-            teeth[k] = np.bincount(t - t.min()).argmax() + t.min()
+    for k in np.unique(pair_index):
+        t = tooth[pair_index == k]
+        teeth[k] = np.bincount(t - t.min()).argmax() + t.min()
     known = np.flatnonzero(np.isfinite(teeth))
     if known.size == 0:
         raise InputError("ltca: no segment has a contact point; no root stress")
@@ -187,56 +203,95 @@ def _pair_teeth(coef: xr.Dataset, pts: np.ndarray, pairs: np.ndarray) -> np.ndar
     return np.where(np.isfinite(teeth), teeth, fill).astype(int)
 
 
+def _unique_rows(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct rows of a 2-D array (in order of first appearance) and each row's
+    index among them, by exact equality of the rows' bytes (``numpy.unique(axis=0)``
+    sorts the rows as structured records, several times slower)."""
+    first: dict[bytes, int] = {}
+    inverse = np.array([first.setdefault(row.tobytes(), len(first)) for row in a], dtype=int)
+    _, row = np.unique(inverse, return_index=True)
+    return a[row], inverse
+
+
 def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
                    pairs: np.ndarray) -> np.ndarray:
     """(NT, J, K, station) [MPa] root stress of one member: forces (NT, J, K, S) [N],
-    points (J, K, S, 3) [mm] in its frame."""
+    points (J, K, S, 3) [mm] in its frame.
+
+    The points are located on the flank once for all torques; each (torque, roll)'s
+    forces become hat loads per loaded tooth, the distinct ones kept once (rolls whole
+    mesh cycles apart); one sparse product of the (pair, distinct loads) rows with the
+    coefficients S[a, d] gives every pair's fillet stress tensors, reduced block by block
+    to the largest maximum principal stress over the root points (docs/fe.md, "Root
+    stress in the analysis", for the cost).
+    """
     nt, nj, nk, _ = force.shape
-    tooth_of_pair = _pair_teeth(coef, pts, pairs)
-    f = np.nan_to_num(force)
-    loaded = np.argwhere(f > 0)  # (P, 4): torque, roll, pair, segment
-    s = coef["fillet_stress"].transpose("load_u", "load_v", "tooth", "side", "station", "arc",
-                                        "component")
-    offsets = np.asarray(s["tooth"].values, int)
+    # the variable, not a DataArray: its many coordinates cost more than the transpose
+    s = coef.variables["fillet_stress"].transpose("load_u", "load_v", "tooth", "side",
+                                                  "station", "arc", "component")
+    offsets = np.asarray(coef["tooth"].values, int)
     nl = s.sizes["load_u"] * s.sizes["load_v"]
-    sv = s.values.reshape(nl, offsets.size, -1)  # (a, offset, fillet tensor entries)
+    # every segment point located once, for the pairs' teeth and the loads of all torques
+    finite = np.all(np.isfinite(pts), axis=-1)  # (J, K, S)
+    point = np.full(finite.shape, -1)
+    point[finite] = np.arange(np.count_nonzero(finite))
+    fp = locate_flank_points(coef, pts[finite], strict=False) if finite.any() else None
+    tooth_of_pair = _teeth_of_pairs(fp.tooth if fp is not None else np.empty(0, int),
+                                    np.nonzero(finite)[1], pairs)
+    f = np.nan_to_num(force)
+    t, j, k, m = np.nonzero(f > 0)  # the loaded segments of every torque
     out = np.zeros((nt, nj, nk, s.sizes["station"]))
-    if not len(loaded):
+    if not t.size:
         return out
-    t, j, k, m = loaded.T
+    p = point[j, k, m]
+    if np.any(p < 0):
+        raise InputError("ltca: a loaded segment has no contact point")
     # the contact point is the gear's; the pinion's mate differs by the separation (and
     # an edge segment's by its rounding), and edge segments lie on the flank's boundary:
     # located leniently, then checked against a looser bound than a flank point's
-    fp = locate_flank_points(coef, pts[j, k, m], strict=False)
-    worst = float(np.max(np.abs(fp.distance)))
+    worst = float(np.max(np.abs(fp.distance[p])))
     if worst > OFF_FLANK_LIMIT:
         raise InputError(f"ltca: a loaded segment lies {worst:.3g} mm off the "
                          f"{coef.attrs['member']}'s working flank in the FE model (at most "
                          f"{OFF_FLANK_LIMIT} mm): the coefficients are not of this design")
-    # hat loads [N] per (torque, roll, loaded tooth of the member frame)
-    teeth = np.unique(fp.tooth)
-    rows = (t * nj + j) * teeth.size + np.searchsorted(teeth, fp.tooth)
-    gather = sp.csr_matrix((f[t, j, k, m], (rows, np.arange(rows.size))),
-                           shape=(nt * nj * teeth.size, rows.size))
-    hat = np.asarray((gather @ fp.weights).todense()).reshape(nt * nj, teeth.size, nl)
+    # hat loads [N] per (torque, roll, loaded tooth of the member frame, grid node)
+    teeth = np.unique(fp.tooth[p])
+    rows = (t * nj + j) * teeth.size + np.searchsorted(teeth, fp.tooth[p])
+    gather = sp.csr_matrix((f[t, j, k, m], (rows, p)),
+                           shape=(nt * nj * teeth.size, fp.tooth.size))
+    hat = (gather @ fp.weights).toarray().reshape(nt * nj, teeth.size * nl)
     # rolls whole mesh cycles apart (and torques) with the same loads are superposed once
-    uniq, inverse = np.unique(hat.reshape(nt * nj, -1), axis=0, return_inverse=True)
-    hat = uniq.reshape(-1, teeth.size, nl)
-    blocks = [np.ascontiguousarray(sv[:, i]) for i in range(offsets.size)]
-    root = root_points(coef)  # (side, station, arc): the flank above the fillet excluded
-    shape = (hat.shape[0], *s.shape[3:])
-    result = np.zeros((hat.shape[0], nk, s.sizes["station"]))
-    # a roll's loads reach only the grid nodes near its contact lines: sparse hat loads
-    sparse_hat = [sp.csr_matrix(hat[:, i]) for i in range(teeth.size)]
+    hat, inverse = _unique_rows(hat)
+    nu = hat.shape[0]
+    # one sparse product for every (pair, distinct loads): row kk nu + r holds the hat
+    # loads of the tooth d teeth before pair kk's in columns (a, d) of S[a, d, ...]; a
+    # roll's loads reach only the grid nodes near its contact lines
+    r, src, a = np.nonzero(hat.reshape(nu, teeth.size, nl))
+    load = hat.reshape(nu, teeth.size, nl)[r, src, a]
+    lr, lc, lv = [np.empty(0, int)], [np.empty(0, int)], [np.empty(0)]
     for kk in range(nk):
-        tensor = np.zeros((hat.shape[0], blocks[0].shape[1]))
-        for i, d in enumerate(offsets):  # the load's tooth is d teeth before this one
-            src = np.searchsorted(teeth, tooth_of_pair[kk] - d)
-            if src < teeth.size and teeth[src] == tooth_of_pair[kk] - d:
-                tensor += sparse_hat[src] @ blocks[i]
-        smax = np.where(root, _max_principal(tensor.reshape(shape)), -np.inf)
-        result[:, kk] = smax.max(axis=(1, 3))  # over the sides and the fillet arc
-    out[:] = result[np.ravel(inverse)].reshape(out.shape)
+        for i, d in enumerate(offsets):
+            at = np.searchsorted(teeth, tooth_of_pair[kk] - d)
+            if at < teeth.size and teeth[at] == tooth_of_pair[kk] - d:
+                sel = src == at
+                lr.append(kk * nu + r[sel])
+                lc.append(a[sel] * offsets.size + i)
+                lv.append(load[sel])
+    loads = sp.csr_matrix((np.concatenate(lv), (np.concatenate(lr), np.concatenate(lc))),
+                          shape=(nk * nu, nl * offsets.size))
+    root = root_points(coef)  # (side, station, arc): the flank above the fillet excluded
+    # a row without loads (a pair the loads' neighbours do not reach) has no stress
+    smax = np.broadcast_to(np.where(root.any(axis=(0, 2)), 0.0, -np.inf),
+                           (nk * nu, s.sizes["station"])).copy()
+    reached = np.flatnonzero(np.diff(loads.indptr))
+    tensor = (loads[reached] @ s.values.reshape(nl * offsets.size, -1)).reshape(
+        reached.size, *s.shape[3:])  # (row, side, station, arc, component) [MPa]
+    for r0 in range(0, reached.size, ROW_BLOCK):  # a block's temporaries stay in the cache
+        block = slice(r0, r0 + ROW_BLOCK)
+        # the largest over the sides and the fillet arc
+        smax[reached[block]] = np.where(root, _max_principal(tensor[block]),
+                                        -np.inf).max(axis=(1, 3))
+    out[:] = smax.reshape(nk, nu, -1)[:, inverse].swapaxes(0, 1).reshape(out.shape)
     return out
 
 
@@ -245,8 +300,8 @@ def root_points(coef: xr.Dataset) -> np.ndarray:
     the root (``fillet_in_root``: the half slot and the element rows up to the fillet's
     junction with the flank, the same on every tooth), over which the root stress is the
     largest."""
-    return coef["fillet_in_root"].isel(tooth=0).transpose("side", "station", "arc") \
-        .values.astype(bool)
+    return coef.variables["fillet_in_root"].isel(tooth=0).transpose(
+        "side", "station", "arc").values.astype(bool)
 
 
 def _max_principal(t: np.ndarray) -> np.ndarray:

@@ -13,6 +13,7 @@ Public functions
 ----------------
 Segments           the segments of an analysis: per-segment fields, kinds, UTE, rotations
 segment_geometry   compute them for roll positions and tooth pairs
+roll_phases        each roll's pairs' curve targets, rotations and first roll of its phase
 """
 
 from __future__ import annotations
@@ -35,7 +36,7 @@ from contact.ltca.discretisation import (
 from contact.ltca.edges import edge_segments, flank_boundary
 from contact.utca import CURVE_SPACINGS, ContactCurves, EaseOff, EaseOffFields, contact_curves
 
-__all__ = ["Segments", "segment_geometry"]
+__all__ = ["Segments", "roll_phases", "segment_geometry"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -134,18 +135,40 @@ def segment_geometry(case, eo: EaseOff, roll: np.ndarray, pairs: Sequence[int], 
         Per-segment fields (J, K, S + E), E the boundary segments (0 without ``edges``);
         NaN where a pair has no curve or a boundary segment is not in edge contact.
     """
+    target, rp, source = roll_phases(eo, roll, pairs)
+    # rolls whole mesh cycles apart have the same curves (their targets differ by
+    # round-off): they are computed once, from the first such roll ("source")
+    first = np.flatnonzero(source == np.arange(target.shape[0]))
+    geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing, edges,
+                            edge_limit)
+    return geo.rolls(np.searchsorted(first, source), source)
+
+
+def roll_phases(eo: EaseOff, roll: np.ndarray, pairs: Sequence[int]
+                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Each roll's place in its mesh cycle, as :func:`segment_geometry` takes it.
+
+    Parameters
+    ----------
+    eo : contact.utca.easeoff.EaseOff
+    roll : array (J,) — [rad] pinion roll positions (Q units, driving sense)
+    pairs : sequence of int (K,) — pair offsets relative to each roll's own mesh cycle
+
+    Returns
+    -------
+    target : ndarray (J, K) — [rad] the roll of pair k's contact curve, Q = r − (c + k)·pitch
+        in cycle c = ⌊(r − r₀)/pitch⌋
+    pinion_rotation : ndarray (J,) — [rad] the pinion's rotation of the cycle's reference
+        pair, roll_zero + s_p (r − c·pitch)
+    source : ndarray (J,) of int — the first roll with the same targets (to 1e-12 pitch):
+        rolls whole mesh cycles apart, whose segments (and rotations) are the source's
+    """
     roll = np.asarray(roll, float)
     pairs = np.asarray(pairs, int)
     cycle = np.floor((roll - roll[0]) / eo.pitch + 1e-9)
     target = roll[:, None] - (cycle[:, None] + pairs[None, :]) * eo.pitch
     rp = eo.roll_zero + eo.drive_sense * (roll - cycle * eo.pitch)
-    # rolls whole mesh cycles apart have the same curves (their targets differ by
-    # round-off): they are computed once, from the first such roll ("source")
-    source = _same_rolls(target, eo.pitch)
-    first = np.flatnonzero(source == np.arange(roll.size))
-    geo = _segment_geometry(case, eo, target[first], rp[first], segments, spacing, edges,
-                            edge_limit)
-    return geo.rolls(np.searchsorted(first, source), source)
+    return target, rp, _same_rolls(target, eo.pitch)
 
 
 def _same_rolls(target: np.ndarray, pitch: float) -> np.ndarray:
