@@ -79,6 +79,7 @@ __all__ = [
     "mirror_settings",
     "roll_angle",
     "settings_from_poses",
+    "taylor_coefficients",
     "taylor_motion",
     "work_rotation",
 ]
@@ -222,17 +223,33 @@ def taylor_motion(value0: float, derivatives: Sequence[float], q):
     q = np.asarray(q, dtype=float)
     if not any(derivatives):
         return np.full_like(q, value0), np.zeros_like(q), np.zeros_like(q)
-    coef = _taylor_coefficients(float(value0), tuple(float(d) for d in derivatives))
+    coef = taylor_coefficients(float(value0), tuple(float(d) for d in derivatives))
     out = np.vander(q.ravel(), coef.shape[0], increasing=True) @ coef
     return (out[:, 0].reshape(q.shape), out[:, 1].reshape(q.shape),
             out[:, 2].reshape(q.shape))
 
 
 @functools.lru_cache(maxsize=64)
-def _taylor_coefficients(value0: float, derivatives: tuple[float, ...]) -> np.ndarray:
-    """(deg + 1, 3) polynomial coefficients of f, f', f'' (rows: powers of q) of
-    :func:`taylor_motion` (read-only; memoised: the machine's solvers evaluate the same
-    motions thousands of times per analysis)."""
+def taylor_coefficients(value0: float, derivatives: tuple[float, ...]) -> np.ndarray:
+    """Polynomial coefficients of a machine motion f(q) = value0 + Σ d_k q^k/k! and its
+    first two derivatives (the modified roll, helical and vertical motions of seed Eq. 2.4).
+
+    Parameters
+    ----------
+    value0 : float
+        f(0), in the motion's unit (rad, or mm for the helical and vertical motions).
+    derivatives : tuple of float, length deg
+        d_k = f^(k)(0) per unit cradle angle^k (k = 1…deg).
+
+    Returns
+    -------
+    ndarray, shape (deg + 1, 3)
+        Rows: powers q^0…q^deg; columns: the coefficients of f, f', f''. Read-only and
+        memoised (the machine's solvers evaluate the same motions thousands of times per
+        analysis), so the caller must not modify it.
+
+    Source: the Taylor form of the modified roll, seed Eq. 2.4a (:func:`taylor_motion`).
+    """
     deg = len(derivatives)
     coef = [[0.0, 0.0, 0.0] for _ in range(deg + 1)]
     coef[0][0] = value0

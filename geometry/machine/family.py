@@ -27,8 +27,8 @@ import numpy as np
 from geometry.core.errors import InputError
 from geometry.machine.cradle import (
     MachineSettings,
-    _taylor_coefficients,
     rot,
+    taylor_coefficients,
     trans,
 )
 from geometry.machine.cutter import (
@@ -105,7 +105,7 @@ def chain(settings: MachineSettings) -> Chain:
     def taylor(value0, derivatives):
         if not any(derivatives):
             return None
-        return _taylor_coefficients(float(value0), tuple(float(d) for d in derivatives))
+        return taylor_coefficients(float(value0), tuple(float(d) for d in derivatives))
 
     roll = (1.0, *(-c for c in settings.modified_roll))
     return Chain(np.ascontiguousarray(k[:, :3]), k[:, 3:].copy(), r2[:, 1].copy(),
