@@ -21,6 +21,7 @@ Slow (about 10–20 min on one core: six LTCA runs). Usage::
 from __future__ import annotations
 
 import argparse
+import json
 import warnings
 from pathlib import Path
 
@@ -69,6 +70,7 @@ def _point(lt: xr.Dataset, model: str, speed: float, temp: float, rq: float) -> 
         "lam": _weighted(fr, "lambda_ratio", force),
         "mu": _weighted(fr, "friction_coefficient", force),
         "flag": float(fr["friction_model_extrapolated"].where(lt["force"] > 0).mean()),
+        "why": json.loads(fr.attrs.get("model_range_warnings", "[]")),
     }
 
 
@@ -109,6 +111,14 @@ def main(argv: list[str] | None = None) -> int:
         print("\nEfficiency [%] at 1500 rpm, 500 N m, A / B")
         print(tabulate(rows, headers=["oil", *(f"Rq {r:g}" for r in ROUGHNESS)],
                        tablefmt="github"))
+        flags = {d: [p["flag"] for p in speed[d]] for d in CASES}
+        print("\nLoaded segments outside the model's range (friction_model_extrapolated), "
+              "share per speed (90 C, Rq 0.8 um, all torques), A / B: "
+              + ", ".join(f"{flags['A'][j]:.0%} / {flags['B'][j]:.0%}"
+                          for j in range(len(SPEEDS))))
+        at = SPEEDS.index(1500.0)
+        for d in CASES:
+            print(f"  {d} at 1500 rpm, why: {'; '.join(speed[d][at]['why']) or 'none'}")
         _trends(model, speed, grid)
     return 0
 

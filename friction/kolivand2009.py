@@ -83,6 +83,11 @@ FEATURES: Mapping[str, Callable[[Mapping[str, Array]], Array]] = MappingProxyTyp
     "ln_H*ln_lambda": lambda g: np.log(g["H"]) * np.log(g["lambda"]),
     "ln_U*ln_SR": lambda g: np.log(g["U"]) * np.log(g["SR"]),
     "ln_Sc/R": lambda g: np.log(g["Sc/R"]),
+    # α p_h = G·H, the Barus exponent at the Hertz pressure (ln η(p_h)/η₀), and its
+    # product with ln SR: the traction curve's slope in SR falls as the film's viscosity
+    # grows (Newtonian at low α p_h, Eyring-limited at high; Johnson & Tevaarwerk 1977)
+    "G*H": lambda g: g["G"] * g["H"],
+    "G*H*ln_SR": lambda g: g["G"] * g["H"] * np.log(g["SR"]),
 })
 
 #: Features of the asperity (boundary) share ψ of the ``split`` structure:

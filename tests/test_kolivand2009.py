@@ -1,8 +1,9 @@
 """The fitted ``kolivand2009`` friction model against the committed friction study.
 
-The data are the committed study files (``friction/data/friction_study_75W90*.nc``: a
-Sobol design of Table 5.1's box and held-out Latin-hypercube points of another seed,
-solved by :mod:`friction.ehl`) and the coefficient file fitted to them
+The data are the committed study files (``friction/data/friction_study_75W90*.nc``: 512
+Sobol points, seed 2009, of the gear-contact box (``GEAR_CONTACT_RANGE``) and 100 held-out
+Latin-hypercube points, seed 7, solved by the transient mixed-EHL solver of
+:mod:`friction.ehl` at 256 nodes with Barus viscosity) and the coefficient file fitted to them
 (``friction/data/kolivand2009_75W90.toml``). Every test reads these small files and
 evaluates closed-form expressions (the refit: one ``least_squares`` of ~40 unknowns over a
 few hundred points, ~1–2 s): cheap enough for CI.
@@ -24,6 +25,8 @@ from friction.kolivand2009 import (
     kolivand2009,
     load_kolivand2009_fit,
 )
+from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
+from friction.study.design import GEAR_CONTACT_RANGE, TABLE_5_1_RANGE
 from friction.study.fit import (
     fit_kolivand2009,
     fit_statistics,
@@ -66,48 +69,56 @@ def _inputs(d):
 
 # ----------------------------------------------------------------------------- the fit
 def test_fit_against_held_out_solver_points(fit, held):
-    """Held-out points (LHS, seed 34, never in the fit): RMS relative error and worst case
+    """Held-out points (LHS, seed 7, never in the fit): RMS relative error and worst case
     as measured when the file was fitted (stated in docs/friction.md), and the file's
     statistics are those of the committed data (to 1e-9).
 
-    The issue's target (RMS ≤ 10 %) is NOT met: the steady solver's μ in the mixed regime
-    depends on the roughness realisation by about as much (two profile pairs: 53 % RMS at
-    λ 1–3), which no regression of the seed's groups can follow. The bounds pin the
-    measured values (a worse fit fails)."""
+    The issue's target (RMS ≤ 10 %) is NOT met over the gear box: measured 26.0 % RMS
+    (median |error| 7.4 %), worst +198 % — a low-slip (SR 0.013), low-μ (0.003) point at
+    λ = 1, where the relative error of a small μ is large. The bounds pin the measured
+    values with ~8 % slack for the optimiser's platform round-off (a worse fit fails)."""
     s = fit_statistics(fit, held)
-    assert s["points"] >= 50
-    assert s["rms_relative_error"] <= 0.36
-    assert s["max_relative_error"] <= 1.3
+    assert s["points"] >= 95
+    assert s["rms_relative_error"] <= 0.28
+    assert s["max_relative_error"] <= 2.1
     for k in ("points", "rms_relative_error", "max_relative_error"):
         assert s[k] == pytest.approx(fit.statistics[f"heldout_{k}"], rel=1e-9), k
 
 
-def test_full_film_regime_fits_better_than_the_noise_of_the_mixed_one(fit, train, held):
-    """Where the realisation does not matter (λ ≥ 3: no asperity contact; 4 % RMS between
-    profile pairs) the fit is closer to the solver: RMS ≤ 16 % over the training points
-    (measured 13.9 %) and median |error| ≤ 15 % over the held-out ones (measured
-    10.0 %; their worst, +123 %, is a low-pressure, low-slip point of the Newtonian
-    corner, μ ≈ 0.002, where the power law is least apt)."""
-    for study, stat, bound in ((train, "rms", 0.16), (held, "median", 0.15)):
+def _inside_table_5_1(d):
+    inside = np.ones(d["friction_coefficient"].size, bool)
+    for name, (lo, hi, _) in TABLE_5_1_RANGE.items():
+        if name in d:
+            inside &= (d[name] >= lo) & (d[name] <= hi)
+    return inside
+
+
+def test_fit_inside_the_seeds_box_is_closer(fit, train, held):
+    """Inside Table 5.1's box (the seed's: p_h ≥ 500 MPa, R ≤ 40 mm, u_e ≥ 1 m/s, SR ≥
+    0.025) the fit is closer to the solver than over the gear box: RMS 10.5 % over the 115
+    training points there and 15.4 % over the 21 held-out ones (bounds 12 % and 17 %); the
+    large errors are the gear box's low-pressure, low-slip corner (μ 0.001–0.006)."""
+    for study, bound, least in ((train, 0.12, 100), (held, 0.17, 15)):
         d = study_inputs(study)
-        full = d["lambda_ratio"] >= 3.0
-        assert full.sum() >= 5
+        inside = _inside_table_5_1(d)
+        assert inside.sum() >= least
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", FrictionModelRangeWarning)
-            mu = kolivand2009(**{k: v[full] for k, v in _inputs(d).items()},
+            mu = kolivand2009(**{k: v[inside] for k, v in _inputs(d).items()},
                               coefficients=fit)
-        rel = mu / d["friction_coefficient"][full] - 1.0
-        value = np.sqrt(np.mean(rel**2)) if stat == "rms" else np.median(np.abs(rel))
-        assert value <= bound, (stat, value)
+        rel = mu / d["friction_coefficient"][inside] - 1.0
+        assert np.sqrt(np.mean(rel**2)) <= bound
 
 
 def test_refit_reproduces_the_bundled_coefficients(fit, train, held):
-    """The committed coefficients are the fit of the committed data (least squares is
-    deterministic: 1e-6 relative covers the optimiser's stopping tolerance)."""
-    again = fit_kolivand2009(train, heldout=held)
+    """The committed coefficients are the fit of the committed data over the design's box
+    (least squares is deterministic: 1e-6 relative covers the optimiser's stopping
+    tolerance)."""
+    again = fit_kolivand2009(train, heldout=held, box=GEAR_CONTACT_RANGE)
     np.testing.assert_allclose(np.asarray(again.coefficients), np.asarray(fit.coefficients),
                                rtol=1e-6, atol=1e-8)
     np.testing.assert_allclose(again.boundary, fit.boundary, rtol=1e-6, atol=1e-8)
+    assert again.ranges == fit.ranges
 
 
 def test_continuous_at_lambda_1_and_3(fit):
@@ -133,28 +144,35 @@ def test_lambda_is_the_solvers(train):
     np.testing.assert_allclose(lam, d["lambda_ratio"], rtol=1e-12)
 
 
-def test_limits_boundary_and_film(fit):
-    """The split's asperity share follows the solver: ψ > 0.9 at the smallest fitted λ
-    (μ → μ_b), ψ < 1 % at λ ≥ 3 (film shear only)."""
+def test_limits_boundary_and_film(fit, train):
+    """The split's asperity share ψ follows the solver's asperity load ratio in kind: it
+    falls with λ (Spearman ρ with the solver's ratio over the training points 0.60
+    measured; ≥ 0.5), stays below the solver's largest ratio (0.36: the transient solver's
+    rough films are thick, docs/ehl.md) and is < 1 % above λ = 3, where the solver has no
+    contact nodes (film shear only)."""
+    d = study_inputs(train)
+    psi = fit.asperity_share(contact_groups(**_inputs(d)))
+    assert spearmanr(psi, d["asperity_load_ratio"]).statistic >= 0.5
+    assert np.max(psi) <= 0.5
     low = dict(REF, entraining_velocity=4.0, viscosity=0.0107, pressure_viscosity=9.7,
                roughness_1=1.0, roughness_2=1.0, hertz_pressure=2000.0, radius=10.0)
-    g = contact_groups(**low)
-    assert fit.ranges["lambda"][0] < g["lambda"] < 0.15
-    assert fit.asperity_share(g) > 0.9
-    # μ_b plus a thin film's shear on the few fluid nodes (the solver: 0.0999–0.1000)
-    assert kolivand2009(**low) == pytest.approx(fit.boundary_friction, rel=0.05)
     high = dict(REF, entraining_velocity=15.0, roughness_1=0.1, roughness_2=0.1)
-    g = contact_groups(**high)
-    assert g["lambda"] > 3.0 and fit.asperity_share(g) < 0.01
+    g_low, g_high = contact_groups(**low), contact_groups(**high)
+    assert fit.ranges["lambda"][0] < g_low["lambda"] < 0.15 and g_high["lambda"] > 3.0
+    assert fit.asperity_share(g_low) > 5 * fit.asperity_share(g_high)
+    assert fit.asperity_share(g_high) < 0.01
 
 
 # ----------------------------------------------------------------------------- trends
 def test_trends_of_the_solver_data(train):
     """From the committed solver points (converged), with their size: ln μ regressed on
-    ln p_h, ln R, ln u_e, ln SR, T and ln σ (σ = √(Rq₁² + Rq₂²)) — μ rises with roughness
-    (exponent 0.81 measured; ≥ 0.5) and falls with speed at fixed load (−0.54; ≤ −0.3);
-    the asperity load share grows as λ falls (Spearman ρ −0.89; ≤ −0.8): median ≥ 0.9 below
-    λ = 0.3, none above λ = 1."""
+    ln p_h, ln R, ln u_e, ln SR, T and ln σ (σ = √(Rq₁² + Rq₂²)). Measured: μ ∝ p_h^0.72,
+    SR^0.11, a hotter oil lowers μ (ln μ −1.18 per 100 °C), and roughness (σ^0.06) and
+    speed (u_e^0.03) barely move it — NOT the seed's trends (μ rising with roughness and
+    falling with speed): in this solver the film's Eyring shear, set by α p_h, carries most
+    of the friction, and the asperities at most 36 % of the load (docs/friction.md). The
+    bounds pin these sizes. The asperity load share grows as λ falls (Spearman ρ −0.73;
+    ≤ −0.6): median 0.069 below λ = 0.3, 0.042 at 0.3–1, none above λ = 3."""
     ok = train["status"].values == 0
     d = train.isel(point=ok)
     mu = d["friction_coefficient"].values
@@ -164,22 +182,31 @@ def test_trends_of_the_solver_data(train):
                          np.log(d["slide_to_roll"].values), d["temperature"].values / 100.0,
                          np.log(sigma)])
     b, *_ = np.linalg.lstsq(x, np.log(mu), rcond=None)
-    assert b[6] >= 0.5          # roughness
-    assert b[3] <= -0.3         # speed
+    assert 0.6 <= b[1] <= 0.85          # Hertz pressure
+    assert 0.05 <= b[4] <= 0.2          # slide-to-roll ratio
+    assert -1.4 <= b[5] <= -0.9         # temperature: hotter oil, lower μ
+    assert abs(b[6]) <= 0.15            # roughness: weak
+    assert abs(b[3]) <= 0.1             # speed: weak
     alr, lam = d["asperity_load_ratio"].values, d["lambda_ratio"].values
-    assert spearmanr(alr, lam).statistic <= -0.8
-    assert np.median(alr[lam < 0.3]) >= 0.9
-    assert np.median(alr[lam > 1.0]) == 0.0
+    assert spearmanr(alr, lam).statistic <= -0.6
+    assert np.median(alr[lam < 0.3]) > np.median(alr[(lam >= 0.3) & (lam < 1.0)]) > 0.02
+    assert np.max(alr[lam > 3.0]) == 0.0
 
 
 def test_trends_of_the_fitted_model(fit):
-    """The model at a gear-like contact: μ rises with roughness (Rq 0.2 → 0.8 µm each: at
-    least +50 %) and falls with speed at fixed load (u_e 2 → 15 m/s: at least −30 %)."""
+    """The model at a gear-like contact follows the solver's (weak) trends: Rq 0.2 → 0.8 µm
+    each raises μ by 3.9 % (bounds 0–10 %), u_e 2 → 15 m/s by 6.5 % (0–15 %); a hotter
+    oil (η₀ and α of 75W90 at 40 → 90 °C) lowers it."""
     rq = kolivand2009(**{**REF, "roughness_1": np.array([0.2, 0.8]),
                          "roughness_2": np.array([0.2, 0.8])})
-    assert rq[1] >= 1.5 * rq[0]
+    assert 1.0 < rq[1] / rq[0] < 1.10
     ue = kolivand2009(**{**REF, "entraining_velocity": np.array([2.0, 15.0])})
-    assert ue[1] <= 0.7 * ue[0]
+    assert 1.0 < ue[1] / ue[0] < 1.15
+    oil = load_lubricant("75W90")
+    cold, hot = (dict(REF, viscosity=viscosity(oil, t),
+                      pressure_viscosity=pressure_viscosity_coefficient(oil, t))
+                 for t in (40.0, 90.0))
+    assert kolivand2009(**hot) < kolivand2009(**cold)
 
 
 # ----------------------------------------------------------------------------- registry
@@ -188,7 +215,7 @@ def test_registered_with_validity_and_range_warning(fit):
     assert mu == pytest.approx(kolivand2009(**REF))
     assert 0.005 < mu < 0.1
     assert friction_model_validity("kolivand2009", **REF).all()
-    out = dict(REF, hertz_pressure=np.array([1200.0, 3000.0]))
+    out = dict(REF, hertz_pressure=np.array([1200.0, 3500.0]))  # the box ends at 3 GPa
     with pytest.warns(FrictionModelRangeWarning, match="hertz_pressure outside the fitted"):
         mu2 = friction_coefficient("kolivand2009", **out)
     assert friction_model_validity("kolivand2009", **out).tolist() == [True, False]
@@ -230,3 +257,38 @@ def test_malformed_coefficients_named(fit, tmp_path):
     with pytest.raises(InputError, match=r"^structure: must be one of"):
         Kolivand2009Fit(fit.lubricant, fit.features, fit.lambda_bounds, fit.coefficients,
                         fit.ranges, {}, {}, structure="cubic")
+
+
+# ----------------------------------------------------------------------------- a gear's contacts
+def test_gear_segments_inside_the_range_or_flagged_with_the_reason():
+    """The efficiency stage on the suite's default-case LTCA (60 and 240 N·m, 1500 rpm,
+    90 °C, Rq 0.8 µm): every loaded segment has a finite μ, the flagged ones are those
+    outside the fitted box, the ``model_range_warnings`` attribute names every input concerned, and
+    the gear box covers more of this gear's contacts than xu2007's range. Measured: 41 %
+    flagged (λ below 0.023 at 274 of 836 loaded segments, R above 120 mm at 290, p_h above
+    3 GPa at 208 — edge contacts —, SR outside 0.01–1.5 at 178, u_e below 0.3 m/s at 128);
+    xu2007 over the same segments: more. The bound pins the measured share."""
+    import json
+
+    from test_ltca import _run  # the suite's default-case LTCA (cached per session)
+
+    from friction.efficiency import efficiency_analysis
+
+    lt = _run()
+    flagged = {}
+    for model in ("kolivand2009", "xu2007"):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", FrictionModelRangeWarning)
+            fr = efficiency_analysis(lt, friction_model=model)
+        force = lt["force"].values
+        loaded = np.isfinite(force) & (force > 0)
+        flag = fr["friction_model_extrapolated"].values
+        flagged[model] = flag[loaded].mean()
+        if model == "kolivand2009":
+            why = " ".join(json.loads(fr.attrs["model_range_warnings"]))
+            for name in ("lambda", "radius", "hertz_pressure", "slide_to_roll",
+                         "entraining_velocity"):
+                assert f"kolivand2009: {name} outside" in why, name
+            assert np.isfinite(fr["friction_coefficient"].values[loaded]).all()
+    assert 0.3 <= flagged["kolivand2009"] <= 0.45
+    assert flagged["kolivand2009"] < flagged["xu2007"]

@@ -54,7 +54,8 @@ Array = NDArray[np.float64]
 #: The default features of every regime (the seed's groups as power laws, with λ- and
 #: SR-dependent exponents).
 DEFAULT_FEATURES: tuple[str, ...] = ("1", "ln_lambda", "ln_lambda^2", "ln_SR", "ln_SR^2",
-                                     "ln_U", "ln_G", "ln_H", "ln_Seq/Sc", "ln_SR*ln_lambda")
+                                     "ln_U", "ln_G", "ln_H", "ln_Seq/Sc", "ln_SR*ln_lambda",
+                                     "G*H", "G*H*ln_SR")
 
 _REGIMES = ("boundary_mixed", "mixed", "full_film")
 
