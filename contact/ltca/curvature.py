@@ -3,7 +3,8 @@
 R_eq = 1/κ_rel, κ_rel(w) = κ_p(w) + κ_g(w) along w = n × t (t the contact line's tangent),
 each member's normal curvature from its principal curvatures (Euler), evaluated on the
 real surfaces (:func:`geometry.machine.flank.flank_at`) at the segment midpoints (seed Eq. 2.13).
-The envelope solves start from the nearest ease-off node's envelope parameters.
+The envelope solves start from the ease-off's envelope parameters interpolated in the gear
+grid cell (the nearest node's where the cell's nodes lie on different sections).
 
 Public functions
 ----------------
@@ -57,15 +58,30 @@ def pinion_curvature(case, eo: EaseOff, u, v, w_gear, phi):
 
 
 def _node_guess(eo: EaseOff, params, section, u, v):
-    """Envelope-parameter guesses (s, θ, q, section) at gear places (u, v): those of the
-    nearest gear grid node (``params`` (nu, nv, 3), ``section`` (nu, nv) of the ease-off;
-    None where the ease-off has none)."""
+    """Envelope-parameter guesses (s, θ, q, section) at gear places (u, v): interpolated
+    bilinearly in the gear grid cell holding each place where its four nodes have
+    parameters on one section, else those of the nearest node (``params`` (nu, nv, 3),
+    ``section`` (nu, nv) of the ease-off; None where the ease-off has none)."""
     if params is None or section is None:
         return None
-    iu = np.rint(np.interp(u, eo.u, np.arange(eo.u.size))).astype(int)
-    iv = np.rint(np.interp(v, eo.v, np.arange(eo.v.size))).astype(int)
+    fu = np.interp(u, eo.u, np.arange(eo.u.size))
+    fv = np.interp(v, eo.v, np.arange(eo.v.size))
+    iu, iv = np.rint(fu).astype(int), np.rint(fv).astype(int)
     par = params[iu, iv]
-    return par[..., 0], par[..., 1], par[..., 2], section[iu, iv]
+    sec = section[iu, iv]
+    u0 = np.minimum(np.floor(fu).astype(int), eo.u.size - 2)
+    v0 = np.minimum(np.floor(fv).astype(int), eo.v.size - 2)
+    a, b = (fu - u0)[..., None], (fv - v0)[..., None]
+    p00, p10 = params[u0, v0], params[u0 + 1, v0]
+    p01, p11 = params[u0, v0 + 1], params[u0 + 1, v0 + 1]
+    s00 = section[u0, v0]
+    same = ((section[u0 + 1, v0] == s00) & (section[u0, v0 + 1] == s00)
+            & (section[u0 + 1, v0 + 1] == s00))
+    lin = (1 - a) * ((1 - b) * p00 + b * p01) + a * ((1 - b) * p10 + b * p11)
+    use = same & np.all(np.isfinite(lin), axis=-1)
+    par = np.where(use[..., None], lin, par)
+    sec = np.where(use, s00, sec)
+    return par[..., 0], par[..., 1], par[..., 2], sec
 
 
 def gear_curvature(case, eo: EaseOff, position, w_gear):
