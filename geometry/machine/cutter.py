@@ -292,10 +292,16 @@ class ProfileSections(NamedTuple):
     names: tuple[str, ...]
 
 
+_EPS = float(np.finfo(float).eps)  # np.sinc's stand-in for 0
+
+
 def _curve_point(rho0, h0, psi0, kappa, t):
     """Point, tangent and second derivative of a constant-curvature curve at arc length t."""
     half = 0.5 * kappa * t
-    sinc = np.sinc(half / np.pi)  # sin(half)/half, exact at kappa = 0
+    # sin(half)/half, exact at kappa = 0: np.sinc(half / π)'s arithmetic without its wrapper
+    y = np.pi * (half / np.pi)
+    y = np.where(y, y, _EPS)
+    sinc = np.sin(y) / y
     mid = psi0 + half
     rho = rho0 + t * np.cos(mid) * sinc
     h = h0 + t * np.sin(mid) * sinc

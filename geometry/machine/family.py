@@ -120,7 +120,7 @@ _FIELDS = ("r", "r_s", "r_theta", "r_ss", "r_stheta", "r_thetatheta", "normal", 
            "r_thetaq", "r_qq")
 
 
-_XZ = [0, 1, 3, 6]  # cutter vectors in the blade's axial plane: r, r_s, r_ss, normal
+_XZ = np.array([0, 1, 3, 6])  # cutter vectors in the blade's axial plane: r, r_s, r_ss, normal
 
 
 def cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta: np.ndarray,
@@ -137,10 +137,11 @@ def cutter_buffer(blade: Blade, sections: ProfileSections, s: np.ndarray, theta:
     c, sn = np.cos(theta), np.sin(theta)
     sg = blade.sigma
     v = np.empty((3, 7, s.size))
-    bx = np.stack([p.rho, p.drho, p.d2rho, -sg * p.dh])
+    # (np.array of the rows: np.stack's array without its wrapper)
+    bx = np.array([p.rho, p.drho, p.d2rho, -sg * p.dh])
     v[0, _XZ] = bx * c
     v[1, _XZ] = bx * sn
-    v[2, _XZ] = np.stack([-p.h, -p.dh, -p.d2h, -sg * p.drho])
+    v[2, _XZ] = np.array([-p.h, -p.dh, -p.d2h, -sg * p.drho])
     v[0, 2] = -p.rho * sn
     v[1, 2] = p.rho * c
     v[0, 4] = -p.drho * sn
@@ -397,13 +398,13 @@ def meshing_function(family: GeneratedFamily, length_scale: float):
     return f.reshape(shape), grad.T.reshape(*shape, 3)
 
 
-_MESH_A = [1, 3, 4, 8]  # r_s, r_ss, r_sθ, r_sq (× r_θ)
+_MESH_A = np.array([1, 3, 4, 8])  # r_s, r_ss, r_sθ, r_sq (× r_θ)
 
 
-_MESH_B = [4, 5, 9]  # r_sθ, r_θθ, r_θq (r_s ×)
+_MESH_B = np.array([4, 5, 9])  # r_sθ, r_θθ, r_θq (r_s ×)
 
 
-_MESH_C = [8, 9, 10]  # r_sq, r_θq, r_qq
+_MESH_C = np.array([8, 9, 10])  # r_sq, r_θq, r_qq
 
 
 def meshing_buffer(buf: np.ndarray, length_scale: float):
@@ -415,20 +416,25 @@ def meshing_buffer(buf: np.ndarray, length_scale: float):
     nvec = x1[:, 0]
     dn = x1[:, 1:] + x2
     r_q = buf[:, 7]
-    nn = np.sqrt((nvec * nvec).sum(0))
+    # (sums over the components by np.add.reduce: ndarray.sum's reduction without its
+    # wrapper)
+    add = np.add.reduce
+    nn = np.sqrt(add(nvec * nvec, 0))
     # orientation: unit normal = sign * nvec / |nvec|
-    sign = np.sign((nvec * buf[:, 6]).sum(0))
+    sign = np.sign(add(nvec * buf[:, 6], 0))
     scale = sign / (nn * length_scale)
-    g = (nvec * r_q).sum(0)
-    dg = (dn * r_q[:, None]).sum(0) + (buf[:, _MESH_C] * nvec[:, None]).sum(0)
-    dnn = (nvec[:, None] * dn).sum(0) / nn  # d|N|
+    g = add(nvec * r_q, 0)
+    dg = add(dn * r_q[:, None], 0) + add(buf[:, _MESH_C] * nvec[:, None], 0)
+    dnn = add(nvec[:, None] * dn, 0) / nn  # d|N|
     grad = (dg - g * dnn / nn) * scale
     return g * scale, grad
 
 
 def _cross0(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Cross product over the first axis (component-major arrays, broadcasting)."""
-    out = np.empty((3, *np.broadcast_shapes(a.shape[1:], b.shape[1:])))
+    # (the broadcast shape of two arrays of equal rank, as np.broadcast_shapes gives it)
+    out = np.empty((3, *(x if y == 1 else y for x, y in zip(a.shape[1:], b.shape[1:],
+                                                             strict=True))))
     # each component a_i b_j − a_j b_i, written in place (no stack of temporaries)
     for k, (i, j) in enumerate(((1, 2), (2, 0), (0, 1))):
         np.multiply(a[i], b[j], out=out[k])

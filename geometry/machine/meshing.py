@@ -118,6 +118,9 @@ def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
     return family_buffer(ctx.chain, ctx.settings, v, q, theta)
 
 
+_DERIVS = np.array([1, 2, 7])  # r_s, r_θ, r_q in a family buffer
+
+
 def _evaluate(ctx: _Context, x: np.ndarray, section: np.ndarray, z: np.ndarray, p: np.ndarray):
     """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations, family buffer."""
     n, m = x.shape
@@ -126,7 +129,7 @@ def _evaluate(ctx: _Context, x: np.ndarray, section: np.ndarray, z: np.ndarray, 
     r = buf[:, 0]
     rho = np.hypot(r[0], r[1])
     rho_safe = np.where(rho > 0, rho, 1.0)
-    derivs = buf[:, [1, 2, 7]] if ctx.generate else buf[:, 1:3]  # r_s, r_θ (, r_q)
+    derivs = buf[:, _DERIVS] if ctx.generate else buf[:, 1:3]  # r_s, r_θ (, r_q)
     f = np.empty((m, n))
     jac = np.empty((m, m, n))
     f[0] = r[2] - z
