@@ -599,10 +599,14 @@ def _probe_shift(f: EaseOffFields, t: np.ndarray):
     def cost(tc, dd):
         """UTE_seed(t + d) + ½ K d² (inf where the iso-line misses the region or K ≤ 0)."""
         # (located on one coarse sample per cell: the shifted curve found is computed
-        # again at full resolution)
-        pr = _seed_places(f, tc + dd, frac, coarse_per_cell=1)
-        k = _gap_at_contact(f, pr)
-        c = np.where(k > 0, pr.ute + 0.5 * k * dd**2, np.nan)
+        # again at full resolution). Each distinct iso-line once: the grids of rows whose
+        # node is the same share many (a third of them on the default case); every curve
+        # is computed independently of the others in its batch, so its values are the same
+        tt, back = np.unique(tc + dd, return_inverse=True)
+        pr = _seed_places(f, tt, frac, coarse_per_cell=1)
+        back = back.ravel()
+        k = _gap_at_contact(f, pr)[back]
+        c = np.where(k > 0, pr.ute[back] + 0.5 * k * dd**2, np.nan)
         return np.where(np.isfinite(c), c, np.inf)
 
     tb = t[cand]
