@@ -169,7 +169,7 @@ def test_killed_study_resumes_with_the_missing_points_only(tmp_path, monkeypatch
 def test_friction_study_and_fit_commands(tmp_path, monkeypatch, capsys):
     """``ltca friction-study`` (4 Sobol conditions, 64 nodes, this process: ~1 s) writes
     the study file with its provenance; ``ltca friction-fit`` fits the committed study and
-    writes a coefficient file the model reads (~2 s)."""
+    writes a coefficient file the model reads (two training files; ~3 s)."""
     from contact.cli import main
     from friction.kolivand2009 import DATA_DIR, load_kolivand2009_fit
     from geometry.core.io import read_netcdf
@@ -182,7 +182,9 @@ def test_friction_study_and_fit_commands(tmp_path, monkeypatch, capsys):
     assert ds.sizes["point"] == 4 and ds.attrs["design_method"] == "sobol"
     assert ds.attrs["solver_nodes"] == 64 and "solver_commit" in ds.attrs
     assert not ResultStore.parts_dir(tmp_path / "fs.nc").exists()
-    assert main(["friction-fit", str(DATA_DIR / "friction_study_75W90.nc"), "--held-out",
+    # the Sobol design and its --skip 512 continuation, as the bundled fit was made
+    assert main(["friction-fit", str(DATA_DIR / "friction_study_75W90.nc"),
+                 str(DATA_DIR / "friction_study_75W90_skip512.nc"), "--held-out",
                  str(DATA_DIR / "friction_study_75W90_heldout.nc"), "-o", "k.toml"]) == 0
     assert "held out" in capsys.readouterr().out
     fit = load_kolivand2009_fit(tmp_path / "k.toml")

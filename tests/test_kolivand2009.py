@@ -1,9 +1,10 @@
 """The fitted ``kolivand2009`` friction model against the committed friction study.
 
-The data are the committed study files (``friction/data/friction_study_75W90*.nc``: 512
-Sobol points, seed 2009, of the gear-contact box (``GEAR_CONTACT_RANGE``) and 100 held-out
-Latin-hypercube points, seed 7, solved by the transient mixed-EHL solver of
-:mod:`friction.ehl` at 256 nodes with Barus viscosity) and the coefficient file fitted to them
+The data are the committed study files (``friction/data/friction_study_75W90*.nc``: 1024
+Sobol points, seed 2009, in two files of 512, of the gear-contact box
+(``GEAR_CONTACT_RANGE``) and 100 held-out Latin-hypercube points, seed 7, solved by the
+transient mixed-EHL solver of :mod:`friction.ehl` at 256 nodes with Barus viscosity) and
+the coefficient file fitted to them
 (``friction/data/kolivand2009_75W90.toml``). Every test reads these small files and
 evaluates closed-form expressions (the refit: one ``least_squares`` of ~40 unknowns over a
 few hundred points, ~1–2 s): cheap enough for CI.
@@ -28,6 +29,7 @@ from friction.kolivand2009 import (
 from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
 from friction.study.design import GEAR_CONTACT_RANGE, TABLE_5_1_RANGE
 from friction.study.fit import (
+    combine_studies,
     fit_kolivand2009,
     fit_statistics,
     study_inputs,
@@ -37,7 +39,8 @@ from friction.validity import FrictionModelRangeWarning
 from geometry.core.errors import InputError
 from geometry.core.io import read_netcdf
 
-TRAIN = DATA_DIR / "friction_study_75W90.nc"
+#: the Sobol design's points 0-511 and its continuation 512-1023 (``--skip 512``)
+TRAIN = (DATA_DIR / "friction_study_75W90.nc", DATA_DIR / "friction_study_75W90_skip512.nc")
 HELD = DATA_DIR / "friction_study_75W90_heldout.nc"
 
 #: a gear-like contact inside the fitted box (1500 rpm, ~300 N·m class segment at 75 °C)
@@ -48,7 +51,7 @@ REF = dict(hertz_pressure=1200.0, slide_to_roll=0.3, entraining_velocity=5.0,
 
 @pytest.fixture(scope="module")
 def train():
-    return read_netcdf(TRAIN, tree=False)
+    return combine_studies([read_netcdf(f, tree=False) for f in TRAIN])
 
 
 @pytest.fixture(scope="module")
@@ -73,14 +76,14 @@ def test_fit_against_held_out_solver_points(fit, held):
     as measured when the file was fitted (stated in docs/friction.md), and the file's
     statistics are those of the committed data (to 1e-9).
 
-    The issue's target (RMS ≤ 10 %) is NOT met over the gear box: measured 26.0 % RMS
-    (median |error| 7.4 %), worst +198 % — a low-slip (SR 0.013), low-μ (0.003) point at
+    The issue's target (RMS ≤ 10 %) is NOT met over the gear box: measured 26.7 % RMS
+    (median |error| 6.8 %), worst +208 % — a low-slip (SR 0.013), low-μ (0.003) point at
     λ = 1, where the relative error of a small μ is large. The bounds pin the measured
     values with ~8 % slack for the optimiser's platform round-off (a worse fit fails)."""
     s = fit_statistics(fit, held)
     assert s["points"] >= 95
     assert s["rms_relative_error"] <= 0.28
-    assert s["max_relative_error"] <= 2.1
+    assert s["max_relative_error"] <= 2.25
     for k in ("points", "rms_relative_error", "max_relative_error"):
         assert s[k] == pytest.approx(fit.statistics[f"heldout_{k}"], rel=1e-9), k
 
@@ -95,10 +98,10 @@ def _inside_table_5_1(d):
 
 def test_fit_inside_the_seeds_box_is_closer(fit, train, held):
     """Inside Table 5.1's box (the seed's: p_h ≥ 500 MPa, R ≤ 40 mm, u_e ≥ 1 m/s, SR ≥
-    0.025) the fit is closer to the solver than over the gear box: RMS 10.5 % over the 115
-    training points there and 15.4 % over the 21 held-out ones (bounds 12 % and 17 %); the
+    0.025) the fit is closer to the solver than over the gear box: RMS 10.9 % over the 229
+    training points there and 14.7 % over the 21 held-out ones (bounds 12 % and 17 %); the
     large errors are the gear box's low-pressure, low-slip corner (μ 0.001–0.006)."""
-    for study, bound, least in ((train, 0.12, 100), (held, 0.17, 15)):
+    for study, bound, least in ((train, 0.12, 200), (held, 0.17, 15)):
         d = study_inputs(study)
         inside = _inside_table_5_1(d)
         assert inside.sum() >= least
@@ -146,8 +149,8 @@ def test_lambda_is_the_solvers(train):
 
 def test_limits_boundary_and_film(fit, train):
     """The split's asperity share ψ follows the solver's asperity load ratio in kind: it
-    falls with λ (Spearman ρ with the solver's ratio over the training points 0.60
-    measured; ≥ 0.5), stays below the solver's largest ratio (0.36: the transient solver's
+    falls with λ (Spearman ρ with the solver's ratio over the training points 0.61
+    measured; ≥ 0.5), stays below the solver's largest ratio (0.44: the transient solver's
     rough films are thick, docs/ehl.md) and is < 1 % above λ = 3, where the solver has no
     contact nodes (film shear only)."""
     d = study_inputs(train)
@@ -166,13 +169,13 @@ def test_limits_boundary_and_film(fit, train):
 # ----------------------------------------------------------------------------- trends
 def test_trends_of_the_solver_data(train):
     """From the committed solver points (converged), with their size: ln μ regressed on
-    ln p_h, ln R, ln u_e, ln SR, T and ln σ (σ = √(Rq₁² + Rq₂²)). Measured: μ ∝ p_h^0.72,
-    SR^0.11, a hotter oil lowers μ (ln μ −1.18 per 100 °C), and roughness (σ^0.06) and
+    ln p_h, ln R, ln u_e, ln SR, T and ln σ (σ = √(Rq₁² + Rq₂²)). Measured: μ ∝ p_h^0.70,
+    SR^0.10, a hotter oil lowers μ (ln μ −1.15 per 100 °C), and roughness (σ^0.05) and
     speed (u_e^0.03) barely move it — NOT the seed's trends (μ rising with roughness and
     falling with speed): in this solver the film's Eyring shear, set by α p_h, carries most
-    of the friction, and the asperities at most 36 % of the load (docs/friction.md). The
+    of the friction, and the asperities at most 44 % of the load (docs/friction.md). The
     bounds pin these sizes. The asperity load share grows as λ falls (Spearman ρ −0.73;
-    ≤ −0.6): median 0.069 below λ = 0.3, 0.042 at 0.3–1, none above λ = 3."""
+    ≤ −0.6): median 0.068 below λ = 0.3, 0.041 at 0.3–1, none above λ = 3."""
     ok = train["status"].values == 0
     d = train.isel(point=ok)
     mu = d["friction_coefficient"].values
@@ -195,7 +198,7 @@ def test_trends_of_the_solver_data(train):
 
 def test_trends_of_the_fitted_model(fit):
     """The model at a gear-like contact follows the solver's (weak) trends: Rq 0.2 → 0.8 µm
-    each raises μ by 3.9 % (bounds 0–10 %), u_e 2 → 15 m/s by 6.5 % (0–15 %); a hotter
+    each raises μ by 3.7 % (bounds 0–10 %), u_e 2 → 15 m/s by 7.5 % (0–15 %); a hotter
     oil (η₀ and α of 75W90 at 40 → 90 °C) lowers it."""
     rq = kolivand2009(**{**REF, "roughness_1": np.array([0.2, 0.8]),
                          "roughness_2": np.array([0.2, 0.8])})
@@ -265,9 +268,9 @@ def test_gear_segments_inside_the_range_or_flagged_with_the_reason():
     90 °C, Rq 0.8 µm): every loaded segment has a finite μ, the flagged ones are those
     outside the fitted box, the ``model_range_warnings`` attribute names every input concerned, and
     the gear box covers more of this gear's contacts than xu2007's range. Measured: 41 %
-    flagged (λ below 0.023 at 274 of 836 loaded segments, R above 120 mm at 290, p_h above
+    flagged (λ below 0.020 at 260 of 836 loaded segments, R above 120 mm at 290, p_h above
     3 GPa at 208 — edge contacts —, SR outside 0.01–1.5 at 178, u_e below 0.3 m/s at 128);
-    xu2007 over the same segments: more. The bound pins the measured share."""
+    xu2007 over the same segments: 57 %. The bound pins the measured share."""
     import json
 
     from test_ltca import _run  # the suite's default-case LTCA (cached per session)
