@@ -39,6 +39,7 @@ from friction.ehl.rheology import (
     eyring_limited_shear,
 )
 from friction.lubricant import Lubricant, load_lubricant, pressure_viscosity_coefficient, viscosity
+from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, real, real_array
 
@@ -560,9 +561,8 @@ def line_contact_summary(condition: LineContactCondition, grid: Grid | None = No
     return _summary(s, condition, st, kind, f_fluid, f_boundary, w)
 
 
-def _var(data, dims, units: str, long_name: str) -> xr.Variable:
-    return xr.Variable(dims, np.asarray(data, dtype=float),
-                       attrs={"units": units, "long_name": long_name})
+def _var(data, dims, units: str, long_name: str) -> tuple:
+    return data_var(dims, np.asarray(data, dtype=float), units, long_name)
 
 
 def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None) -> xr.Dataset:

@@ -63,6 +63,7 @@ from friction.ehl.line_contact import (
 )
 from friction.ehl.reynolds import CAVITATION, CONTACT, FLUID, Squeeze, couette_difference
 from friction.ehl.roughness import GroundSurface, MeasuredSurface, MovingProfile, surface_on_grid
+from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import DEFAULT_MATERIAL, contact_pressure_limit
 from geometry.core.validation import integer, one_of, real
@@ -460,9 +461,8 @@ def transient_summary(condition: LineContactCondition, surfaces, grid: Grid | No
     return _summarise(s, condition, rec, info, times)
 
 
-def _var(data, dims, units: str, long_name: str) -> xr.Variable:
-    return xr.Variable(dims, np.asarray(data, dtype=float),
-                       attrs={"units": units, "long_name": long_name})
+def _var(data, dims, units: str, long_name: str) -> tuple:
+    return data_var(dims, np.asarray(data, dtype=float), units, long_name)
 
 
 def solve_transient_line_contact(condition: LineContactCondition, surfaces,
