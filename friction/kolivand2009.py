@@ -8,13 +8,23 @@ Eq. 5.11 is garbled (docs/friction.md), so the same method is repeated with the
 toolkit's solver (:mod:`friction.ehl`, study :mod:`friction.study`) and a regression of
 the same family (:mod:`friction.study.fit`):
 
-    ln μ = Σ_j β_{r,j} f_j(λ, SR, U, G, H, S_eq/S_c),     r = regime of λ (< 1, 1–3, > 3)
+    r = Σ_j β_{k,j} f_j(λ, SR, U, G, H, S_eq/S_c, S_c/R),   k = regime of λ (< 1, 1–3, > 3)
 
-with the features f_j of :data:`FEATURES` named in the coefficient file (default: 1,
-ln λ, (ln λ)², ln SR, (ln SR)², ln U, ln G, ln H, ln(S_eq/S_c), ln SR·ln λ), i.e. μ is a
-product of power laws with λ- and SR-dependent exponents in each regime, as in the seed's
-exp(…)·Π(group^a) form. The three regimes are fitted jointly with continuity rows at
-λ = 1 and 3, so μ is continuous there within the tolerance the file states.
+with the features f_j of :data:`FEATURES` named in the coefficient file: a product of
+power laws with λ-dependent exponents in each regime, as in the seed's exp(…)·Π(group^a)
+form. Three structures (the file's ``structure_name``):
+
+* ``regimes``: μ = exp(r), the seed's Eq. 5.11 form;
+* ``split``: μ = exp(r) + μ_b ψ, the film shear plus the boundary friction μ_b on the
+  asperities' load share ψ (logit ψ linear in features), the seed's Eq. 5.7–5.9 split;
+* ``eyring`` (the bundled fit): μ = (1 − ψ) μ_E exp(r) + μ_b ψ, where μ_E is the smooth
+  contact's Eyring film traction (:func:`friction.traction.smooth_film_traction`: Hertz
+  pressure, the central film, the oil's τ₀ and Λ, the study's viscosity model). μ_E
+  carries the traction curve's shape in SR, α p_h and temperature, which power laws
+  cannot follow; the regression corrects it for roughness and the film's shape.
+
+The three regimes are fitted jointly with continuity rows at λ = 1 and 3, so μ is
+continuous there within the tolerance the file states.
 
 λ is computed here exactly as the solver's: Pan–Hamrock's isothermal h_min over
 σ = √(Rq₁² + Rq₂²) (:func:`friction.film.pan_hamrock`), not from the pipeline's thermal λ.
@@ -46,6 +56,7 @@ from geometry.core.validation import broadcast, real_array, scalar_or_array
 __all__ = [
     "BOUNDARY_FEATURES",
     "DATA_DIR",
+    "EYRING_BOUNDARY_FEATURES",
     "FEATURES",
     "KOLIVAND2009_SCHEMA",
     "RANGE_INPUTS",
@@ -73,6 +84,7 @@ FEATURES: Mapping[str, Callable[[Mapping[str, Array]], Array]] = MappingProxyTyp
     "1": lambda g: np.ones_like(g["lambda"]),
     "ln_lambda": lambda g: np.log(g["lambda"]),
     "ln_lambda^2": lambda g: np.log(g["lambda"]) ** 2,
+    "ln_lambda^3": lambda g: np.log(g["lambda"]) ** 3,
     "ln_SR": lambda g: np.log(g["SR"]),
     "ln_SR^2": lambda g: np.log(g["SR"]) ** 2,
     "ln_U": lambda g: np.log(g["U"]),
@@ -91,13 +103,22 @@ FEATURES: Mapping[str, Callable[[Mapping[str, Array]], Array]] = MappingProxyTyp
 })
 
 #: Features of the asperity (boundary) share ψ of the ``split`` structure:
-#: logit ψ = Σ θ_j f_j.
+#: logit ψ = Σ θ_j f_j (a file without ``boundary.features`` has these).
 BOUNDARY_FEATURES: tuple[str, ...] = ("1", "ln_lambda", "ln_H", "ln_U")
 
+#: Default features of ψ in the ``eyring`` structure (the share's S-curve in ln λ needs
+#: the square and cube; measured: 5-fold cross-validated RMS 20.6 % with them, 25.7 %
+#: without, on the 75W90 study).
+EYRING_BOUNDARY_FEATURES: tuple[str, ...] = ("1", "ln_lambda", "ln_lambda^2", "ln_lambda^3",
+                                             "ln_H", "ln_U")
+
 #: The model's structures: ``regimes`` (ln μ regressed directly, the seed's Eq. 5.11
-#: form) or ``split`` (μ = exp(regression) + μ_b ψ: film shear plus boundary friction on
-#: the asperity share, the seed's Eq. 5.7–5.9 split).
-STRUCTURES = ("regimes", "split")
+#: form), ``split`` (μ = exp(regression) + μ_b ψ: film shear plus boundary friction on
+#: the asperity share, the seed's Eq. 5.7–5.9 split) or ``eyring`` (μ = (1 − ψ) μ_E
+#: exp(regression) + μ_b ψ: the split with the film part the smooth contact's Eyring
+#: traction μ_E of :func:`friction.traction.smooth_film_traction` corrected by the
+#: regression).
+STRUCTURES = ("regimes", "split", "eyring")
 
 #: Inputs whose fitted range a coefficient file states: name → units.
 RANGE_INPUTS: Mapping[str, str] = MappingProxyType({
@@ -138,7 +159,9 @@ def contact_groups(*, hertz_pressure: ArrayLike, slide_to_roll: ArrayLike,
         ``lambda`` (Pan–Hamrock h_min/σ), ``SR`` (|SR|), ``U`` = η₀u_e/(E′R),
         ``G`` = αE′, ``H`` = p_h/E′, ``W`` = w′/(E′R) = 2πH², ``Sc/R`` = σ/R,
         ``Seq/R`` = Rq₁Rq₂/(Rq₁ + Rq₂)/R, ``Seq/Sc``; also ``load_per_length`` [N/mm]
-        (w′ = 2πR p_h²/E′) and ``film_min`` [µm].
+        (w′ = 2πR p_h²/E′) and ``film_min`` [µm], and the inputs in their units
+        (``hertz_pressure``, ``radius``, ``entraining_velocity``, ``viscosity``,
+        ``pressure_viscosity``, ``e_prime``: the ``eyring`` structure's film traction).
 
     Raises
     ------
@@ -165,6 +188,8 @@ def contact_groups(*, hertz_pressure: ArrayLike, slide_to_roll: ArrayLike,
     ph, sr, ue, eta, alpha, r, s1, s2, ep = broadcast(
         hertz_pressure=ph, slide_to_roll=sr, entraining_velocity=ue, viscosity=eta,
         pressure_viscosity=alpha, radius=r, roughness_1=s1, roughness_2=s2, e_prime=ep)
+    ph, sr, ue, eta, alpha, r, s1, s2, ep = (np.asarray(v, float) for v in (
+        ph, sr, ue, eta, alpha, r, s1, s2, ep))
     load = 2.0 * math.pi * r * ph**2 / ep
     hmin = np.asarray(pan_hamrock(ue, eta, alpha, load, r, ep), float)
     sc = np.hypot(s1, s2)
@@ -175,6 +200,8 @@ def contact_groups(*, hertz_pressure: ArrayLike, slide_to_roll: ArrayLike,
         "G": alpha * 1e-9 * ep * 1e6, "H": h, "W": 2.0 * math.pi * h**2,
         "Sc/R": sc * 1e-3 / r, "Seq/R": seq * 1e-3 / r, "Seq/Sc": seq / sc,
         "load_per_length": load, "film_min": hmin,
+        "hertz_pressure": ph, "radius": r, "entraining_velocity": ue, "viscosity": eta,
+        "pressure_viscosity": alpha, "e_prime": ep,
     }
 
 
@@ -199,13 +226,23 @@ class Kolivand2009Fit:
         held-out points, continuity jumps at the regime bounds).
     provenance : mapping
         The study it was fitted to (file, commit, design, solver settings).
-    structure : {"regimes", "split"}
-        ``regimes``: μ = exp(Σβf); ``split``: μ = exp(Σβf) + μ_b ψ with
-        logit ψ = Σθ_j f_j over :data:`BOUNDARY_FEATURES`.
+    structure : {"regimes", "split", "eyring"}
+        ``regimes``: μ = exp(Σβf); ``split``: μ = exp(Σβf) + μ_b ψ; ``eyring``:
+        μ = (1 − ψ) μ_E exp(Σβf) + μ_b ψ, μ_E the smooth film's Eyring traction
+        (:func:`friction.traction.smooth_film_traction`); logit ψ = Σθ_j f_j over
+        ``boundary_features``.
     boundary : tuple of float
-        θ of the ``split`` structure (empty for ``regimes``).
+        θ of ψ (empty for ``regimes``).
     boundary_friction : float — [1]
-        μ_b of the ``split`` structure (the study oil's boundary friction).
+        μ_b (the study oil's boundary friction).
+    boundary_features : tuple of str
+        Features of ψ (default :data:`BOUNDARY_FEATURES`).
+    eyring_stress : float — [MPa]
+        τ₀ of μ_E (``eyring``: the study oil's, > 0).
+    limiting_shear_coefficient : float — [1]
+        Λ of μ_E (``eyring``: the study oil's, > 0).
+    viscosity_model : {"barus", "roelands"}
+        η(p) of μ_E (``eyring``: the study's).
     """
 
     lubricant: str
@@ -218,6 +255,10 @@ class Kolivand2009Fit:
     structure: str = "regimes"
     boundary: tuple[float, ...] = ()
     boundary_friction: float = 0.0
+    boundary_features: tuple[str, ...] = BOUNDARY_FEATURES
+    eyring_stress: float = 0.0
+    limiting_shear_coefficient: float = 0.0
+    viscosity_model: str = "barus"
 
     def __post_init__(self) -> None:
         unknown = [f for f in self.features if f not in FEATURES]
@@ -240,14 +281,28 @@ class Kolivand2009Fit:
                 raise InputError(f"range.{k}: must be finite, low <= high, got ({a}, {b})")
         if self.structure not in STRUCTURES:
             raise InputError(f"structure: must be one of {STRUCTURES}, got {self.structure!r}")
-        if self.structure == "split":
-            if len(self.boundary) != len(BOUNDARY_FEATURES) or not all(
+        if self.structure != "regimes":
+            unknown = [f for f in self.boundary_features if f not in FEATURES]
+            if unknown:
+                raise InputError(f"boundary.features: unknown {unknown}; known "
+                                 f"{sorted(FEATURES)}")
+            if len(self.boundary) != len(self.boundary_features) or not all(
                     math.isfinite(v) for v in self.boundary):
-                raise InputError(f"boundary: must be {len(BOUNDARY_FEATURES)} finite values "
-                                 f"(θ of {BOUNDARY_FEATURES})")
+                raise InputError(f"boundary: must be {len(self.boundary_features)} finite "
+                                 f"values (θ of {self.boundary_features})")
             if not 0.0 <= self.boundary_friction <= 1.0:
                 raise InputError(f"boundary_friction: must be in [0, 1] [1], got "
                                  f"{self.boundary_friction}")
+        if self.structure == "eyring":
+            if not (math.isfinite(self.eyring_stress) and self.eyring_stress > 0.0):
+                raise InputError(f"film.eyring_stress: must be finite and > 0 [MPa], got "
+                                 f"{self.eyring_stress}")
+            if not self.limiting_shear_coefficient > 0.0:
+                raise InputError("film.limiting_shear_coefficient: must be > 0 [1], got "
+                                 f"{self.limiting_shear_coefficient}")
+            if self.viscosity_model not in ("barus", "roelands"):
+                raise InputError("film.viscosity_model: must be 'barus' or 'roelands', got "
+                                 f"{self.viscosity_model!r}")
 
     def mu(self, groups: Mapping[str, Array]) -> Array:
         """μ of the fit at the groups (:func:`contact_groups`), no clipping.
@@ -260,15 +315,45 @@ class Kolivand2009Fit:
         Returns
         -------
         array — [1]
-            μ = exp(:meth:`log_mu`) (+ μ_b ψ for ``split``), the shape of the groups.
+            μ = exp(:meth:`log_mu`) (+ μ_b ψ for ``split``; (1 − ψ) μ_E exp(…) + μ_b ψ
+            for ``eyring``), the shape of the groups.
         """
         mu = np.exp(self.log_mu(groups))
-        if self.structure == "split":
-            mu = mu + self.boundary_friction * self.asperity_share(groups)
-        return mu
+        if self.structure == "regimes":
+            return mu
+        psi = self.asperity_share(groups)
+        if self.structure == "eyring":
+            mu = (1.0 - psi) * self.film_traction(groups) * mu
+        return mu + self.boundary_friction * psi
+
+    def film_traction(self, groups: Mapping[str, Array]) -> Array:
+        """μ_E of the ``eyring`` structure at the groups [1] (1 for the others).
+
+        Parameters
+        ----------
+        groups : mapping of str to array
+            :func:`contact_groups` (its inputs ``hertz_pressure`` … ``e_prime``).
+
+        Returns
+        -------
+        array — [1]
+            :func:`friction.traction.smooth_film_traction` with the fit's τ₀, Λ and
+            viscosity model.
+        """
+        if self.structure != "eyring":
+            return np.ones_like(np.asarray(groups["lambda"], float))
+        from friction.traction import smooth_film_traction
+
+        return np.asarray(smooth_film_traction(
+            hertz_pressure=groups["hertz_pressure"], slide_to_roll=groups["SR"],
+            entraining_velocity=groups["entraining_velocity"], viscosity=groups["viscosity"],
+            pressure_viscosity=groups["pressure_viscosity"], radius=groups["radius"],
+            e_prime=groups["e_prime"], eyring_stress=self.eyring_stress,
+            limiting_shear_coefficient=self.limiting_shear_coefficient,
+            viscosity_model=self.viscosity_model), float)
 
     def asperity_share(self, groups: Mapping[str, Array]) -> Array:
-        """ψ of the ``split`` structure (0 for ``regimes``) [1].
+        """ψ of the ``split`` and ``eyring`` structures (0 for ``regimes``) [1].
 
         Parameters
         ----------
@@ -279,14 +364,16 @@ class Kolivand2009Fit:
         array — [1]
             ψ = 1/(1 + exp(−Σθ_j f_j)) ∈ (0, 1).
         """
-        if self.structure != "split":
+        if self.structure == "regimes":
             return np.zeros_like(np.asarray(groups["lambda"], float))
-        x = np.stack([np.asarray(FEATURES[f](groups), float) for f in BOUNDARY_FEATURES], -1)
+        x = np.stack([np.asarray(FEATURES[f](groups), float) for f in self.boundary_features],
+                     -1)
         return 1.0 / (1.0 + np.exp(-(x @ np.asarray(self.boundary, float))))
 
     def log_mu(self, groups: Mapping[str, Array]) -> Array:
         """ln of the regression part at the groups (:func:`contact_groups`), no clipping:
-        ln μ for ``regimes``, ln of the film part for ``split``.
+        ln μ for ``regimes``, ln of the film part for ``split``, ln of the film part's
+        correction to μ_E for ``eyring``.
 
         Parameters
         ----------
@@ -323,6 +410,12 @@ def _fit_from_document(doc: Mapping[str, Any], where: str) -> Kolivand2009Fit:
             structure=str(doc.get("structure_name", "regimes")),
             boundary=tuple(float(v) for v in doc.get("boundary", {}).get("coefficients", ())),
             boundary_friction=float(doc.get("boundary", {}).get("boundary_friction", 0.0)),
+            boundary_features=tuple(doc.get("boundary", {}).get("features",
+                                                                BOUNDARY_FEATURES)),
+            eyring_stress=float(doc.get("film", {}).get("eyring_stress", 0.0)),
+            limiting_shear_coefficient=float(doc.get("film", {}).get(
+                "limiting_shear_coefficient", 0.0)),
+            viscosity_model=str(doc.get("film", {}).get("viscosity_model", "barus")),
         )
     except (KeyError, IndexError, TypeError, ValueError) as exc:
         raise InputError(f"{where}: missing or malformed field ({exc!r})") from None

@@ -2,9 +2,10 @@
 
 The data are the committed study files (``friction/data/friction_study_75W90*.nc``: 1024
 Sobol points, seed 2009, in two files of 512, of the gear-contact box
-(``GEAR_CONTACT_RANGE``) and 100 held-out Latin-hypercube points, seed 7, solved by the
-transient mixed-EHL solver of :mod:`friction.ehl` at 256 nodes with Barus viscosity) and
-the coefficient file fitted to them
+(``GEAR_CONTACT_RANGE``), and 100 held-out Latin-hypercube points, seed 7, solved by the
+transient mixed-EHL solver of :mod:`friction.ehl` at 256 nodes with Barus viscosity; the
+held-out points twice, averaged over 2 and over 8 passages of the contact) and the
+coefficient file fitted to them
 (``friction/data/kolivand2009_75W90.toml``). Every test reads these small files and
 evaluates closed-form expressions (the refit: one ``least_squares`` of ~40 unknowns over a
 few hundred points, ~1–2 s): cheap enough for CI.
@@ -42,6 +43,8 @@ from geometry.core.io import read_netcdf
 #: the Sobol design's points 0-511 and its continuation 512-1023 (``--skip 512``)
 TRAIN = (DATA_DIR / "friction_study_75W90.nc", DATA_DIR / "friction_study_75W90_skip512.nc")
 HELD = DATA_DIR / "friction_study_75W90_heldout.nc"
+#: the same held-out conditions averaged over 2 passages (the training files' window)
+HELD_AVG2 = DATA_DIR / "friction_study_75W90_heldout_avg2.nc"
 
 #: a gear-like contact inside the fitted box (1500 rpm, ~300 N·m class segment at 75 °C)
 REF = dict(hertz_pressure=1200.0, slide_to_roll=0.3, entraining_velocity=5.0,
@@ -72,18 +75,16 @@ def _inputs(d):
 
 # ----------------------------------------------------------------------------- the fit
 def test_fit_against_held_out_solver_points(fit, held):
-    """Held-out points (LHS, seed 7, never in the fit): RMS relative error and worst case
-    as measured when the file was fitted (stated in docs/friction.md), and the file's
-    statistics are those of the committed data (to 1e-9).
-
-    The issue's target (RMS ≤ 10 %) is NOT met over the gear box: measured 26.7 % RMS
-    (median |error| 6.8 %), worst +208 % — a low-slip (SR 0.013), low-μ (0.003) point at
-    λ = 1, where the relative error of a small μ is large. The bounds pin the measured
-    values with ~8 % slack for the optimiser's platform round-off (a worse fit fails)."""
+    """Held-out points (LHS, seed 7, never in the fit; the solver averaged over 8 passages
+    of the contact): the issue's target, RMS relative error ≤ 10 %, met over the whole gear
+    box — measured 9.0 % (median |error| 3.4 %), worst −35 % (p_h 314 MPa, SR 0.017,
+    λ 0.18, the box's light-load corner). The file's statistics are those of the committed
+    data (to 1e-9). Bounds: the target, and the worst case with ~10 % slack for the
+    optimiser's platform round-off."""
     s = fit_statistics(fit, held)
-    assert s["points"] >= 95
-    assert s["rms_relative_error"] <= 0.28
-    assert s["max_relative_error"] <= 2.25
+    assert s["points"] == 100
+    assert s["rms_relative_error"] <= 0.10
+    assert s["max_relative_error"] <= 0.40
     for k in ("points", "rms_relative_error", "max_relative_error"):
         assert s[k] == pytest.approx(fit.statistics[f"heldout_{k}"], rel=1e-9), k
 
@@ -98,10 +99,11 @@ def _inside_table_5_1(d):
 
 def test_fit_inside_the_seeds_box_is_closer(fit, train, held):
     """Inside Table 5.1's box (the seed's: p_h ≥ 500 MPa, R ≤ 40 mm, u_e ≥ 1 m/s, SR ≥
-    0.025) the fit is closer to the solver than over the gear box: RMS 10.9 % over the 229
-    training points there and 14.7 % over the 21 held-out ones (bounds 12 % and 17 %); the
-    large errors are the gear box's low-pressure, low-slip corner (μ 0.001–0.006)."""
-    for study, bound, least in ((train, 0.12, 200), (held, 0.17, 15)):
+    0.025) the fit is closer to the solver than over the gear box: RMS 10.2 % over the 229
+    training points there (averaged over 2 passages: their sampling scatter, see
+    ``test_the_solvers_sampling_scatter``) and 6.7 % over the 21 held-out ones (bounds 12
+    and 8 %); the large errors are the gear box's light-load, low-slip corner."""
+    for study, bound, least in ((train, 0.12, 200), (held, 0.08, 15)):
         d = study_inputs(study)
         inside = _inside_table_5_1(d)
         assert inside.sum() >= least
@@ -111,6 +113,37 @@ def test_fit_inside_the_seeds_box_is_closer(fit, train, held):
                               coefficients=fit)
         rel = mu / d["friction_coefficient"][inside] - 1.0
         assert np.sqrt(np.mean(rel**2)) <= bound
+
+
+def test_the_solvers_sampling_scatter(held):
+    """The study's μ is a time mean over the roughness passing through the contact; over 2
+    passages (the training files) it scatters about the 8-passage mean of the same
+    condition by RMS 12.7 % (median |difference| 0.8 %, worst 66 %: the light-load points
+    where a few asperity contacts come and go; measured on the 99 held-out conditions
+    converged in both). This is why the held-out reference is the 8-passage run, and
+    why the training RMS (18 %) cannot fall to the held-out one: the model cannot fit
+    the training points' scatter (a perfect model would show ~12 % against them).
+    Bounds: RMS 10–15 %, median < 2 %."""
+    short = read_netcdf(HELD_AVG2, tree=False)
+    assert short.attrs["solver_average"] == 2.0 and held.attrs["solver_average"] == 8.0
+    for k in ("hertz_pressure", "radius", "entraining_velocity", "slide_to_roll",
+              "temperature", "roughness_1", "roughness_2"):
+        np.testing.assert_array_equal(short[k].values, held[k].values)
+    ok = (short["status"].values == 0) & (held["status"].values == 0)
+    assert ok.sum() == 99
+    rel = short["friction_coefficient"].values[ok] / held["friction_coefficient"].values[ok] - 1
+    assert 0.10 <= np.sqrt(np.mean(rel**2)) <= 0.15
+    assert np.median(np.abs(rel)) < 0.02
+
+
+def test_eyring_structure_beats_the_power_laws(fit, train, held):
+    """The shipped ``eyring`` structure (the smooth film's Eyring traction corrected by the
+    regression) against the ``split`` and ``regimes`` power laws refitted on the same
+    points: held-out RMS 9.0 % against 17.9 % and 22.7 % (measured; asserted: ≤ 0.6 × each)."""
+    ours = fit_statistics(fit, held)["rms_relative_error"]
+    for structure in ("split", "regimes"):
+        other = fit_kolivand2009(train, structure=structure, box=GEAR_CONTACT_RANGE)
+        assert ours <= 0.6 * fit_statistics(other, held)["rms_relative_error"], structure
 
 
 def test_refit_reproduces_the_bundled_coefficients(fit, train, held):
@@ -128,9 +161,16 @@ def test_continuous_at_lambda_1_and_3(fit):
     """μ just below and at λ = 1 and 3 over 500 random points of the box differ by less
     than 0.5 % (the continuity rows; the file states the training points' maximum)."""
     rng = np.random.default_rng(1)
-    g = {"SR": rng.uniform(0.025, 1.0, 500), "U": np.exp(rng.uniform(-28, -22, 500)),
-         "G": rng.uniform(2200, 4100, 500), "H": rng.uniform(0.0022, 0.011, 500),
-         "Seq/Sc": rng.uniform(0.1, 0.35, 500), "Sc/R": rng.uniform(1e-5, 1e-4, 500)}
+    oil = load_lubricant("75W90")
+    t = rng.uniform(25.0, 110.0, 500)
+    g = contact_groups(hertz_pressure=rng.uniform(300.0, 3000.0, 500),
+                       slide_to_roll=np.exp(rng.uniform(np.log(0.01), np.log(1.5), 500)),
+                       entraining_velocity=np.exp(rng.uniform(np.log(0.3), np.log(20.0), 500)),
+                       viscosity=viscosity(oil, t),
+                       pressure_viscosity=pressure_viscosity_coefficient(oil, t),
+                       radius=np.exp(rng.uniform(np.log(5.0), np.log(120.0), 500)),
+                       roughness_1=rng.uniform(0.1, 1.0, 500),
+                       roughness_2=rng.uniform(0.1, 1.0, 500))
     for at in fit.lambda_bounds:
         below = fit.mu({**g, "lambda": np.full(500, np.nextafter(at, 0.0))})
         above = fit.mu({**g, "lambda": np.full(500, at)})
@@ -148,14 +188,15 @@ def test_lambda_is_the_solvers(train):
 
 
 def test_limits_boundary_and_film(fit, train):
-    """The split's asperity share ψ follows the solver's asperity load ratio in kind: it
-    falls with λ (Spearman ρ with the solver's ratio over the training points 0.61
-    measured; ≥ 0.5), stays below the solver's largest ratio (0.44: the transient solver's
-    rough films are thick, docs/ehl.md) and is < 1 % above λ = 3, where the solver has no
-    contact nodes (film shear only)."""
+    """The asperity share ψ follows the solver's asperity load ratio in kind: it falls
+    with λ (Spearman ρ with the solver's ratio over the training points 0.77 measured;
+    ≥ 0.65), stays below the solver's largest ratio (ψ ≤ 0.28; the solver's 0.44: the
+    transient solver's rough films are thick, docs/ehl.md) and is < 1 % above λ = 3,
+    where the solver has no contact nodes (film shear only): 0.16 at λ 0.09, 3e-4 at
+    λ 5.6."""
     d = study_inputs(train)
     psi = fit.asperity_share(contact_groups(**_inputs(d)))
-    assert spearmanr(psi, d["asperity_load_ratio"]).statistic >= 0.5
+    assert spearmanr(psi, d["asperity_load_ratio"]).statistic >= 0.65
     assert np.max(psi) <= 0.5
     low = dict(REF, entraining_velocity=4.0, viscosity=0.0107, pressure_viscosity=9.7,
                roughness_1=1.0, roughness_2=1.0, hertz_pressure=2000.0, radius=10.0)
@@ -198,8 +239,8 @@ def test_trends_of_the_solver_data(train):
 
 def test_trends_of_the_fitted_model(fit):
     """The model at a gear-like contact follows the solver's (weak) trends: Rq 0.2 → 0.8 µm
-    each raises μ by 3.7 % (bounds 0–10 %), u_e 2 → 15 m/s by 7.5 % (0–15 %); a hotter
-    oil (η₀ and α of 75W90 at 40 → 90 °C) lowers it."""
+    each raises μ by 6.6 % (bounds 0–10 %), u_e 2 → 15 m/s by 5.2 % (0–15 %); a hotter
+    oil (η₀ and α of 75W90 at 40 → 90 °C) lowers it (0.058 → 0.033)."""
     rq = kolivand2009(**{**REF, "roughness_1": np.array([0.2, 0.8]),
                          "roughness_2": np.array([0.2, 0.8])})
     assert 1.0 < rq[1] / rq[0] < 1.10

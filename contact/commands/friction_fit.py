@@ -27,9 +27,10 @@ def register(sub) -> None:
     p.add_argument("--held-out", default=None, metavar="FILE.nc",
                    help="a second friction study (other design seed) used only to measure "
                    "the fit's error")
-    p.add_argument("--structure", choices=("split", "regimes"), default="split",
-                   help="split: mu = film regression + mu_b * asperity share; regimes: ln mu "
-                   "regressed directly (default %(default)s)")
+    p.add_argument("--structure", choices=("eyring", "split", "regimes"), default="eyring",
+                   help="eyring: mu = (1 - asperity share) * smooth-film Eyring traction * "
+                   "regression + mu_b * asperity share; split: mu = film regression + mu_b * "
+                   "asperity share; regimes: ln mu regressed directly (default %(default)s)")
     p.add_argument("--box", choices=("auto", "table_5_1", "gear"), default="auto",
                    help="the fitted range of the inputs: the box the study was designed in "
                    "(auto: read from its design_box attribute), or a named one "

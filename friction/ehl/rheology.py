@@ -39,14 +39,14 @@ ROELANDS_P0 = 1.96e8
 _LN_ETA_INF = math.log(6.31e-5)
 
 
-def roelands_z(eta0: float, alpha: float) -> float:
+def roelands_z(eta0: float | Array, alpha: float | Array) -> float | Array:
     """Roelands pressure–viscosity index Z matching a pressure–viscosity coefficient α.
 
     Parameters
     ----------
-    eta0 : float — [Pa s]
+    eta0 : float or array — [Pa s]
         Viscosity at ambient pressure.
-    alpha : float — [1/Pa]
+    alpha : float or array — [1/Pa]
         Pressure–viscosity coefficient (initial slope of ln η).
 
     Returns
@@ -61,18 +61,19 @@ def roelands_z(eta0: float, alpha: float) -> float:
     is Hamrock, Schmid & Jacobson, *Fundamentals of Machine Elements*, §8.7 (and Venner &
     Lubrecht 2000, Eq. 2.7).
     """
-    return alpha * ROELANDS_P0 / (math.log(eta0) - _LN_ETA_INF)
+    return alpha * ROELANDS_P0 / (np.log(eta0) - _LN_ETA_INF)
 
 
-def roelands_viscosity(pressure: Array, eta0: float, alpha: float) -> tuple[Array, Array]:
+def roelands_viscosity(pressure: Array, eta0: float | Array,
+                       alpha: float | Array) -> tuple[Array, Array]:
     """Roelands viscosity η(p) and its derivative d ln η/dp.
 
     Parameters
     ----------
     pressure : array (n,) — [Pa]
         Film pressure; negative values are treated as 0.
-    eta0 : float — [Pa s]
-    alpha : float — [1/Pa]
+    eta0 : float or array (broadcast with pressure) — [Pa s]
+    alpha : float or array — [1/Pa]
 
     Returns
     -------
@@ -87,7 +88,7 @@ def roelands_viscosity(pressure: Array, eta0: float, alpha: float) -> tuple[Arra
     """
     p = np.maximum(pressure, 0.0)
     z = roelands_z(eta0, alpha)
-    a = math.log(eta0) - _LN_ETA_INF
+    a = np.log(eta0) - _LN_ETA_INF
     s = 1.0 + p / ROELANDS_P0
     expo = a * (s**z - 1.0)
     eta = eta0 * np.exp(expo)
@@ -95,15 +96,16 @@ def roelands_viscosity(pressure: Array, eta0: float, alpha: float) -> tuple[Arra
     return eta, np.where(pressure > 0.0, d, 0.0)
 
 
-def barus_viscosity(pressure: Array, eta0: float, alpha: float) -> tuple[Array, Array]:
+def barus_viscosity(pressure: Array, eta0: float | Array,
+                    alpha: float | Array) -> tuple[Array, Array]:
     """Barus viscosity η = η₀ e^(αp) and d ln η/dp.
 
     Parameters
     ----------
     pressure : array (n,) — [Pa]
         Negative values are treated as 0.
-    eta0 : float — [Pa s]
-    alpha : float — [1/Pa]
+    eta0 : float or array (broadcast with pressure) — [Pa s]
+    alpha : float or array — [1/Pa]
 
     Returns
     -------
