@@ -304,13 +304,19 @@ class Kolivand2009Fit:
                 raise InputError("film.viscosity_model: must be 'barus' or 'roelands', got "
                                  f"{self.viscosity_model!r}")
 
-    def mu(self, groups: Mapping[str, Array]) -> Array:
+    def mu(self, groups: Mapping[str, Array],
+           traction_groups: Mapping[str, Array] | None = None) -> Array:
         """μ of the fit at the groups (:func:`contact_groups`), no clipping.
 
         Parameters
         ----------
         groups : mapping of str to array
-            At least ``lambda``, ``SR``, ``U``, ``G``, ``H``, ``Seq/Sc``, ``Sc/R``.
+            At least ``lambda``, ``SR``, ``U``, ``G``, ``H``, ``Seq/Sc``, ``Sc/R``, and for
+            ``eyring`` the inputs of :meth:`film_traction`.
+        traction_groups : mapping of str to array, optional
+            ``eyring``: where μ_E is evaluated, if not at ``groups`` (:func:`kolivand2009`
+            takes μ_E at the inputs as they are and the regression and ψ at the inputs
+            clipped to the fitted box).
 
         Returns
         -------
@@ -323,7 +329,8 @@ class Kolivand2009Fit:
             return mu
         psi = self.asperity_share(groups)
         if self.structure == "eyring":
-            mu = (1.0 - psi) * self.film_traction(groups) * mu
+            at = groups if traction_groups is None else traction_groups
+            mu = (1.0 - psi) * self.film_traction(at) * mu
         return mu + self.boundary_friction * psi
 
     def film_traction(self, groups: Mapping[str, Array]) -> Array:
@@ -544,8 +551,12 @@ def kolivand2009(
     Warns
     -----
     FrictionModelRangeWarning
-        Inputs outside the fitted box (the file's ``[range]``, including λ): μ is then the
-        value at the nearest point of the box.
+        Inputs outside the fitted box (the file's ``[range]``, including λ): the fitted
+        parts are then taken at the nearest point of the box — all of μ for ``regimes``
+        and ``split``; for ``eyring`` the regression and ψ, while μ_E takes the inputs as
+        they are (its physics — Hertz pressure, the central film, the Eyring law capped at
+        Λp — holds beyond the study's box: at pure rolling the film's shear vanishes, at
+        edge pressures it is held at the limiting shear).
 
     Notes
     -----
@@ -583,7 +594,7 @@ def kolivand2009(
         e_prime=e_prime)
     lo, hi = fit.ranges["lambda"]
     groups["lambda"] = np.clip(groups["lambda"], lo, hi)
-    return scalar_or_array(fit.mu(groups))
+    return scalar_or_array(fit.mu(groups, traction_groups=raw))
 
 
 def kolivand2009_validity(*, hertz_pressure: ArrayLike, slide_to_roll: ArrayLike,

@@ -263,10 +263,38 @@ def test_registered_with_validity_and_range_warning(fit):
     with pytest.warns(FrictionModelRangeWarning, match="hertz_pressure outside the fitted"):
         mu2 = friction_coefficient("kolivand2009", **out)
     assert friction_model_validity("kolivand2009", **out).tolist() == [True, False]
+    # outside the box the regression and ψ are held at the box's edge, μ_E follows the
+    # inputs: (μ − μ_bψ)/μ_E at 3.5 GPa equals that at the edge, 3 GPa (round-off)
     hi = fit.ranges["hertz_pressure"][1]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", FrictionModelRangeWarning)
-        assert mu2[1] == pytest.approx(kolivand2009(**dict(REF, hertz_pressure=hi)))
+        edge = dict(REF, hertz_pressure=hi)
+        mu_edge = kolivand2009(**edge)
+    g_edge, g_out = contact_groups(**edge), contact_groups(**dict(REF, hertz_pressure=3500.0))
+    psi = fit.asperity_share(g_edge)
+    film_edge = (mu_edge - fit.boundary_friction * psi) / fit.film_traction(g_edge)
+    film_out = (mu2[1] - fit.boundary_friction * psi) / fit.film_traction(g_out)
+    assert film_out == pytest.approx(film_edge, rel=1e-12)
+    assert fit.film_traction(g_out) > fit.film_traction(g_edge)
+
+
+def test_outside_the_box_the_film_traction_extrapolates(fit):
+    """μ is continuous where the inputs leave the fitted box (p_h 3 GPa, R 120 mm, u_e
+    0.3 m/s, SR 0.01; jump < 1e-3 across ±0.01 %), and toward pure rolling the film's part
+    vanishes with μ_E, leaving the asperities' boundary share: μ(SR = 0) = μ_b ψ (1e-9),
+    below μ at the box's SR 0.01 (measured 0.0078 against 0.0248 at REF) — where holding
+    μ at the box's edge, as the power-law structures do, would keep the film's shear of
+    SR = 0.01 at any slip."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FrictionModelRangeWarning)
+        for name, edge in (("hertz_pressure", 3000.0), ("radius", 120.0),
+                           ("entraining_velocity", 0.3), ("slide_to_roll", 0.01)):
+            mu = kolivand2009(**dict(REF, **{name: edge * np.array([0.9999, 1.0001])}))
+            assert abs(mu[1] / mu[0] - 1.0) < 1e-3, name
+        slip = kolivand2009(**dict(REF, slide_to_roll=np.array([0.0, 0.01])))
+    g = contact_groups(**dict(REF, slide_to_roll=0.01))
+    assert slip[0] == pytest.approx(fit.boundary_friction * fit.asperity_share(g), rel=1e-9)
+    assert slip[0] < 0.5 * slip[1]
 
 
 def test_coefficient_file_round_trip(fit, tmp_path):
