@@ -583,8 +583,11 @@ def kolivand2009(
             lo, hi = fit.ranges[name]
             warnings.warn(
                 f"kolivand2009: {name} outside the fitted range [{lo:g}, {hi:g}] "
-                f"[{RANGE_INPUTS[name]}] at {n} of {bad.size} point(s); μ taken at the "
-                "nearest point of the range", FrictionModelRangeWarning, stacklevel=3)
+                f"[{RANGE_INPUTS[name]}] at {n} of {bad.size} point(s); "
+                + ("the regression and asperity share taken at the nearest point of the "
+                   "range, the film traction at the inputs" if fit.structure == "eyring"
+                   else "μ taken at the nearest point of the range"),
+                FrictionModelRangeWarning, stacklevel=3)
     clipped = _clip_to_range(fit, inputs)
     groups = contact_groups(
         hertz_pressure=clipped["hertz_pressure"], slide_to_roll=clipped["slide_to_roll"],
