@@ -440,7 +440,9 @@ def test_curve_ends_are_those_of_the_false_position_loop():
     assert 10 <= jump.sum() <= jump.size - 10
     np.testing.assert_array_equal(got[jump], want[jump])
     np.testing.assert_allclose(got[~jump], want[~jump], rtol=0, atol=1e-12)
-    assert np.all(f.measure(got, f.solve_v(got, tt, v_start=va)) >= 0)
+    # inside, but for the round-off of v solved again from another start (the loop's own
+    # ends measure down to -1.7e-13 so)
+    assert np.all(f.measure(got, f.solve_v(got, tt, v_start=va)) > -1e-15)
 
 
 def test_transitions_found_where_the_lowest_node_is_not_in_mesh():

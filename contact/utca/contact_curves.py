@@ -266,18 +266,20 @@ def _end_places(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
     done = np.zeros(a.size, dtype=bool)
     # the width after the bisection's steps (the steps stop below 1e-9)
     jump = np.flatnonzero((cb <= -0.5) & (np.abs(b - a) * 0.5**_END_ITER > 1e-9))
-    a_n, b_n, ca_n, cb_n = a.copy(), b.copy(), ca.copy(), cb.copy()
+    a_n, b_n, ca_n, cb_n, vb_n = a.copy(), b.copy(), ca.copy(), cb.copy(), vb.copy()
     newton = (cb > -0.5) & (ca >= 0.0) & (ca < 0.5)
     if jump.size:
         out[jump], done[jump], (sm, a_k, ca_k, b_k, cb_k) = _bisected_ends(
             f, t[jump], a[jump], b[jump], va[jump], vb[jump], ca[jump])
         js = jump[sm]  # the measure's zero comes first: Newton from the loop's bracket
         a_n[js], ca_n[js], b_n[js], cb_n[js] = a_k[sm], ca_k[sm], b_k[sm], cb_k[sm]
+        vb_n[js] = np.nan  # (its start: the false-position place)
         newton[js] = True
     smooth = np.flatnonzero(newton)
     if smooth.size:
         out[smooth], done[smooth] = _newton_ends(f, t[smooth], a_n[smooth], b_n[smooth],
-                                                 va[smooth], ca_n[smooth], cb_n[smooth])
+                                                 va[smooth], vb_n[smooth], ca_n[smooth],
+                                                 cb_n[smooth])
     rest = np.flatnonzero(~done)
     if rest.size:
         out[rest] = _false_position_ends(f, t[rest], a[rest], b[rest], va[rest].copy())
@@ -394,13 +396,16 @@ def _jump_places(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
 
 
 def _newton_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
-                 va: np.ndarray, ca: np.ndarray, cb: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+                 va: np.ndarray, vb: np.ndarray, ca: np.ndarray,
+                 cb: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Ends of the iso-lines Q = t (M,) where the inside measure is continuous between an
-    inside place a (measure ca ≥ 0, profile place va) and an outside place b (cb < 0) [1]:
-    Newton's method along the iso-line on the measure's active term (:func:`_measure_slope`)
-    from the false-position place, held in the bracket (its false-position place where a
-    step leaves it), until an inside place lies within :data:`_END_TOL` of the zero (the
-    steps below 1e-8, quadratic, end half that far inside).
+    inside place a (measure ca ≥ 0, profile place va) and an outside place b (cb < 0, vb;
+    NaN where not known) [1]: Newton's method along the iso-line on the measure's active
+    term (:func:`_measure_slope`) from the zero of the cubic with the measure's values and
+    slopes at a and b (:func:`_hermite_zero`; the false-position place where vb is NaN),
+    held in the bracket (its false-position place where a step leaves it), until an inside
+    place lies within :data:`_END_TOL` of the zero (the steps below 1e-8, quadratic, end
+    half that far inside).
 
     Returns
     -------
@@ -414,6 +419,11 @@ def _newton_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
     idx = np.arange(n)
     inward = 0.5 * _END_TOL * np.sign(a - b)  # half the tolerance towards a's side
     x = _held_false_position(a, b, ca, cb)
+    known = np.flatnonzero(np.isfinite(vb))
+    if known.size:
+        _, slope, _ = _measure_slope(f, np.r_[a[known], b[known]], np.r_[va[known], vb[known]])
+        x[known] = _hermite_zero(a[known], b[known], ca[known], cb[known],
+                                 slope[:known.size], slope[known.size:], x[known])
     v = va
     for _ in range(_END_NEWTON):
         vx = f.newton_v(x, t, v.copy())
@@ -439,6 +449,24 @@ def _newton_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
                 arr[live] for arr in (idx, a, b, ca, cb, t, inward, xn, v))
         x = xn
     return out, ok
+
+
+def _hermite_zero(a: np.ndarray, b: np.ndarray, ca: np.ndarray, cb: np.ndarray,
+                  sa: np.ndarray, sb: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """The zero [1] in (a, b) of the cubic with values ca, cb and slopes sa, sb (d/du) at
+    a and b: three Newton steps from x (in the bracket), held 1e-3 of it off its ends; x
+    where they leave no finite place."""
+    h = b - a
+    da, db = h * sa, h * sb
+    r = (x - a) / h
+    for _ in range(3):  # Newton on p(r) = Hermite's cubic on r ∈ [0, 1]
+        p = (((2 * ca + da - 2 * cb + db) * r + (-3 * ca - 2 * da + 3 * cb - db)) * r
+             + da) * r + ca
+        dp = (3 * (2 * ca + da - 2 * cb + db) * r + 2 * (-3 * ca - 2 * da + 3 * cb - db)) * r \
+            + da
+        r = np.minimum(np.maximum(r - p / np.where(dp != 0, dp, np.nan), 1e-3), 1 - 1e-3)
+    out = a + r * h
+    return np.where(np.isfinite(out), out, x)
 
 
 def _held_false_position(a: np.ndarray, b: np.ndarray, ca: np.ndarray,
