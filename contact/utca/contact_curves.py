@@ -256,7 +256,8 @@ def _end_places(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
     (:func:`_bisected_ends`; the same places, bit for bit). Where the measure is continuous
     at b, Newton's method along the iso-line finds its zero (:func:`_newton_ends`; the
     same end to ~1e-13 instead of 12 false-position steps). Points that neither settles
-    (the measure jumps inside the bracket, or a foretold step is not the bisection's) take
+    (the measure jumps inside the bracket, a foretold step is not the bisection's, or b's
+    measure is not below zero: its v solved again differs from the coarse sample's) take
     :func:`_false_position_ends` itself. The arguments are not changed.
     """
     ca = f.measure(a, va)
@@ -267,7 +268,7 @@ def _end_places(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
     # the width after the bisection's steps (the steps stop below 1e-9)
     jump = np.flatnonzero((cb <= -0.5) & (np.abs(b - a) * 0.5**_END_ITER > 1e-9))
     a_n, b_n, ca_n, cb_n, vb_n = a.copy(), b.copy(), ca.copy(), cb.copy(), vb.copy()
-    newton = (cb > -0.5) & (ca >= 0.0) & (ca < 0.5)
+    newton = (cb > -0.5) & (cb < 0.0) & (ca >= 0.0) & (ca < 0.5)
     if jump.size:
         out[jump], done[jump], (sm, a_k, ca_k, b_k, cb_k) = _bisected_ends(
             f, t[jump], a[jump], b[jump], va[jump], vb[jump], ca[jump])
@@ -295,9 +296,10 @@ def _bisected_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray
     b NaN; the solution is held there while |Q − t| ≤ 1e-9 rad, :meth:`newton_v`) or the
     profile line into b's cell row (:func:`_jump_places`). The bisection's midpoints are
     computed as the loop computes them, each kept on a's side of that place; then the
-    measure at every midpoint is evaluated in one batch and the foretold steps hold where
-    each midpoint on a's side is inside (≥ 0) and each other one is at the jump (≤ −0.5),
-    as the loop's would be.
+    measure at every midpoint is evaluated in one batch (Newton's method from the start
+    the loop's step would take) and the foretold steps hold where each midpoint on a's
+    side is inside (≥ 0) and each other one is at the jump (≤ −0.5), as the loop's would
+    be.
 
     Returns
     -------
@@ -325,11 +327,24 @@ def _bisected_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray
         np.copyto(hi_side, m, where=~good)
         mids[k], keep[k] = m, good
     n = a.size
-    # Newton from the chord of the iso-line from a to a known place (uv, vv) beyond
+    # the loop starts each step's Newton from the solution at its inside place (a's, then
+    # the last midpoint kept): those solutions first, from the chord of the iso-line from
+    # a to a known place (uv, vv) beyond, then every midpoint from its step's start (a
+    # start of another Newton can end elsewhere where the iteration is held at the grid)
     span = uv - a
     slope = np.where(span != 0, (vv - va) / np.where(span != 0, span, 1.0), 0.0)
-    v_start = np.clip(va + slope * (mids - a), f.v[0], f.v[-1])
-    vm = f.newton_v(mids.ravel(), np.tile(t, _END_ITER), v_start.ravel())
+    kk, cc = np.nonzero(keep)
+    v_keep = f.newton_v(mids[kk, cc], t[cc], np.clip(va[cc] + slope[cc] * (mids[kk, cc] - a[cc]),
+                                                      f.v[0], f.v[-1]))
+    sol = np.full((_END_ITER + 1, n), np.nan)  # [k + 1]: the solution at step k's midpoint
+    sol[0] = va
+    sol[kk + 1, cc] = v_keep
+    # the start of step k: the solution at the last kept midpoint before it (a's if none)
+    steps = np.arange(_END_ITER + 1)[:, None]
+    last = np.maximum.accumulate(np.where(np.r_[np.ones((1, n), bool), keep], steps, 0), axis=0)
+    v_start = sol[last[:-1], np.arange(n)]
+    vm = f.newton_v(mids.ravel(), np.tile(t, _END_ITER), np.where(
+        np.isfinite(v_start), v_start, 0.5 * (f.v[0] + f.v[-1])).ravel())
     cm = f.measure(mids.ravel(), vm).reshape(_END_ITER, n)
     wrong = np.where(keep, cm < 0.0, cm > -0.5)
     ok = ~wrong.any(axis=0)
