@@ -296,8 +296,8 @@ def _bisected_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray
     b NaN; the solution is held there while |Q − t| ≤ 1e-9 rad, :meth:`newton_v`) or the
     profile line into b's cell row (:func:`_jump_places`). The bisection's midpoints are
     computed as the loop computes them, each kept on a's side of that place; then the
-    measure at every midpoint is evaluated in one batch (Newton's method from the start
-    the loop's step would take) and the foretold steps hold where each midpoint on a's
+    measure at every midpoint is evaluated in one batch (Newton's method from about the
+    start the loop's step would take) and the foretold steps hold where each midpoint on a's
     side is inside (≥ 0) and each other one is at the jump (≤ −0.5), as the loop's would
     be.
 
@@ -328,23 +328,21 @@ def _bisected_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray
         mids[k], keep[k] = m, good
     n = a.size
     # the loop starts each step's Newton from the solution at its inside place (a's, then
-    # the last midpoint kept): those solutions first, from the chord of the iso-line from
-    # a to a known place (uv, vv) beyond, then every midpoint from its step's start (a
-    # start of another Newton can end elsewhere where the iteration is held at the grid)
+    # the last midpoint kept), and a start of another Newton can end elsewhere where the
+    # iteration is held at the grid: each midpoint starts from that place's v on the chord
+    # of the iso-line from a to a known place (uv, vv) beyond (a's own v before the first
+    # midpoint kept)
     span = uv - a
     slope = np.where(span != 0, (vv - va) / np.where(span != 0, span, 1.0), 0.0)
-    kk, cc = np.nonzero(keep)
-    v_keep = f.newton_v(mids[kk, cc], t[cc], np.clip(va[cc] + slope[cc] * (mids[kk, cc] - a[cc]),
-                                                      f.v[0], f.v[-1]))
-    sol = np.full((_END_ITER + 1, n), np.nan)  # [k + 1]: the solution at step k's midpoint
-    sol[0] = va
-    sol[kk + 1, cc] = v_keep
-    # the start of step k: the solution at the last kept midpoint before it (a's if none)
-    steps = np.arange(_END_ITER + 1)[:, None]
-    last = np.maximum.accumulate(np.where(np.r_[np.ones((1, n), bool), keep], steps, 0), axis=0)
-    v_start = sol[last[:-1], np.arange(n)]
-    vm = f.newton_v(mids.ravel(), np.tile(t, _END_ITER), np.where(
-        np.isfinite(v_start), v_start, 0.5 * (f.v[0] + f.v[-1])).ravel())
+    held = np.r_[a[None], mids[:-1]]  # step k's inside place if midpoint k − 1 was kept
+    steps = np.arange(_END_ITER)[:, None]
+    last = np.maximum.accumulate(np.where(np.r_[np.ones((1, n), bool), keep[:-1]], steps, 0),
+                                 axis=0)
+    col = np.arange(n)
+    inside_at = held[last, col]
+    v_start = np.where(last == 0, va,
+                       np.clip(va + slope * (inside_at - a), f.v[0], f.v[-1]))
+    vm = f.newton_v(mids.ravel(), np.tile(t, _END_ITER), v_start.ravel())
     cm = f.measure(mids.ravel(), vm).reshape(_END_ITER, n)
     wrong = np.where(keep, cm < 0.0, cm > -0.5)
     ok = ~wrong.any(axis=0)
@@ -352,7 +350,6 @@ def _bisected_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray
     # comes before the jump), the loop's later steps are false position: the bracket
     # from the last inside place before it to it
     k = np.argmax(wrong, axis=0)
-    col = np.arange(n)
     smooth = ~ok & keep[k, col] & (cm[k, col] > -0.5) & (k < _SMOOTH_AFTER)
     inside = keep & (np.arange(_END_ITER)[:, None] < k)
     last = _END_ITER - 1 - np.argmax(inside[::-1], axis=0)
