@@ -104,6 +104,37 @@ def test_not_positive_definite_is_refused():
         ContactProblem(np.zeros_like(C), s, R, T)
 
 
+def test_with_diagonal_is_the_constructors_problem():
+    """Weber's next problem of a roll (only C's diagonal and s change) equals the one the
+    constructor builds, to the bit, asymmetric off-diagonals and force limits included;
+    its new C is still checked positive definite, its arrays finite."""
+    C, s, R, T = _good(6)
+    C = C.copy()
+    C[0, 1] += 1e-7  # symmetrised by both
+    U = np.full(6, 1e6)
+    first = ContactProblem(C + np.diag(np.full(6, 2e-5)), s, R, T, name="roll 3",
+                           upper_bound=U)
+    d = np.linspace(1e-5, 3e-5, 6)
+    s2 = s + 1e-4
+    want = ContactProblem(C + np.diag(d), s2, R, T, name="roll 3", upper_bound=U)
+    got = first.with_diagonal(np.diag(C) + d, s2)
+    for name in ("compliance", "separation", "moment_arm", "upper_bound", "bounded"):
+        np.testing.assert_array_equal(getattr(got, name), getattr(want, name))
+    assert (got.torque, got.name, got.scale) == (want.torque, want.name, want.scale)
+    # ‖C‖ of the symmetric C: the same but for the asymmetry's own square
+    assert got.asymmetry == pytest.approx(want.asymmetry, rel=want.asymmetry**2)
+    C4, s4, R4, T4 = _good()
+    assert ContactProblem(C4, s4, R4, T4).with_diagonal(np.diag(C4), s4).asymmetry == 0.0
+    with pytest.raises(ValueError):
+        got.compliance[0, 0] = 1.0
+    with pytest.raises(NotPositiveDefiniteError):
+        first.with_diagonal(np.r_[-1e-3, d[1:]], s2)
+    with pytest.raises(ProblemInputError, match="finite"):
+        first.with_diagonal(d, np.r_[s2[:-1], np.nan])
+    with pytest.raises(ProblemInputError, match="shape"):
+        first.with_diagonal(d[:-1], s2)
+
+
 def test_errors_are_one_family():
     assert issubclass(ProblemInputError, ContactError)
     assert issubclass(ContactError, LTCAError)

@@ -159,10 +159,13 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
         cs, ct = segments.compliance(load, kind=("secant", "tangent"))
         newton = (ct > 0.5 * cs) & (load < cap)
         cw = np.where(newton, ct, cs)
-        problem = ContactProblem(sel.structural + np.diag(cw),
-                                 sel.separation + np.where(newton, (cs - ct) * load, 0.0),
-                                 sel.moment_arm, gear_torque, name=name,
-                                 upper_bound=sel.upper_bound)
+        separation = sel.separation + np.where(newton, (cs - ct) * load, 0.0)
+        if problem is None:
+            problem = ContactProblem(sel.structural + np.diag(cw), separation,
+                                     sel.moment_arm, gear_torque, name=name,
+                                     upper_bound=sel.upper_bound)
+        else:  # only C's diagonal and s change: the rest was checked at the first
+            problem = problem.with_diagonal(np.diag(sel.structural) + cw, separation)
         sol = solve_contact(problem, options.solver,
                             initial=sol if sol is not None else start)
         time_used += sol.solve_time + sol.build_time

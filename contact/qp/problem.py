@@ -178,7 +178,8 @@ class ContactProblem:
         norm = np.linalg.norm(C)
         if norm == 0:
             raise NotPositiveDefiniteError("compliance: is the zero matrix, not positive definite")
-        asym = float(np.linalg.norm(C - C.T) / norm)
+        skew = np.linalg.norm(C - C.T)
+        asym = float(skew / norm)
         if asym > ASYMMETRY_LIMIT:
             raise AsymmetricComplianceError(
                 f"compliance: relative asymmetry ‖C − Cᵀ‖/‖C‖ = {asym:.3g} exceeds "
@@ -188,17 +189,18 @@ class ContactProblem:
         if asym > 0.0:
             log.debug("compliance: relative asymmetry %.3g, symmetrised", asym)
         C = 0.5 * (C + C.T)
-        try:
-            np.linalg.cholesky(C)
-        except np.linalg.LinAlgError as exc:
-            eig_min = float(np.linalg.eigvalsh(C)[0])
-            raise NotPositiveDefiniteError(
-                "compliance: is not positive definite (Cholesky failed; smallest eigenvalue "
-                f"{eig_min:.3e} mm/N); a physical compliance matrix must be SPD"
-            ) from exc
+        _check_positive_definite(C)
         U = _upper_bound(self.upper_bound, R, T, n)
-        for arr in (C, s, R, U):
+        bounded = np.isfinite(U)
+        for arr in (C, s, R, U, bounded):
             arr.setflags(write=False)
+        self._set_checked(C, s, R, T, U, bounded, asym, float(skew))
+
+    def _set_checked(self, C: np.ndarray, s: np.ndarray, R: np.ndarray, T: float,
+                     U: np.ndarray, bounded: np.ndarray, asym: float, skew: float) -> None:
+        """Store checked, read-only inputs and what is derived from them: the scale, the
+        segments with a limit (asked for at every solve and pivot) and ‖C − Cᵀ‖ [mm/N]
+        of the compliance as given (for :meth:`with_diagonal`)."""
         f0 = T / float(R[R > 0].sum())
         d0 = f0 * float(np.mean(np.diag(C)))
         r0 = float(np.max(np.abs(R)))
@@ -209,11 +211,62 @@ class ContactProblem:
         object.__setattr__(self, "upper_bound", U)
         object.__setattr__(self, "asymmetry", asym)
         object.__setattr__(self, "scale", ProblemScale(force=f0, length=d0, arm=r0))
-        # the segments with a limit, asked for at every solve and pivot (read-only)
-        bounded = np.isfinite(U)
-        bounded.setflags(write=False)
         object.__setattr__(self, "_bounded", bounded)
         object.__setattr__(self, "_has_bounds", bool(bounded.any()))
+        object.__setattr__(self, "_skew", skew)
+
+    def with_diagonal(self, diagonal: np.ndarray, separation: np.ndarray) -> ContactProblem:
+        """The same contact with another diagonal of C and other separations.
+
+        Weber's iteration (:mod:`contact.ltca.weber`) changes only these between its
+        problems of one roll: its contact compliance is diagonal. The result equals
+        ``ContactProblem(C', separation, …)`` for a C' that differs from this problem's
+        given compliance only on its diagonal, which is ``diagonal`` (½(C + Cᵀ) keeps a
+        diagonal exactly), without checking again what it shares with this problem (the
+        moment arms, torque, force limits and off-diagonal entries, and ‖C − Cᵀ‖, which no
+        diagonal changes); C' is checked positive definite.
+
+        Parameters
+        ----------
+        diagonal : ndarray (N,) — [mm/N]
+            The new diagonal of C (finite).
+        separation : ndarray (N,) — [mm]
+            The new initial separations s (finite).
+
+        Returns
+        -------
+        ContactProblem
+            ``name`` kept; :attr:`asymmetry` ‖C − Cᵀ‖/‖C‖ with ‖C‖ of the new symmetric C
+            (equal to the constructor's but for the off-diagonal asymmetry's own square,
+            i.e. exactly where C₀ is symmetric).
+
+        Raises
+        ------
+        ProblemInputError
+            Wrong shapes or non-finite entries.
+        NotPositiveDefiniteError
+            The new C is not positive definite (its Cholesky fails).
+        """
+        n = self.size
+        d = np.asarray(diagonal, dtype=float)
+        s = np.array(separation, dtype=float, copy=True)
+        if d.shape != (n,) or s.shape != (n,):
+            raise ProblemInputError(
+                f"diagonal, separation: must have shape ({n},), got {d.shape}, {s.shape}")
+        if not (np.isfinite(d).all() and np.isfinite(s).all()):
+            raise ProblemInputError("diagonal, separation: must be finite")
+        C = self.compliance.copy()
+        np.fill_diagonal(C, d)
+        _check_positive_definite(C)
+        skew = self._skew
+        asym = float(skew / np.linalg.norm(C)) if skew else 0.0
+        C.setflags(write=False)
+        s.setflags(write=False)
+        new = object.__new__(ContactProblem)
+        object.__setattr__(new, "name", self.name)
+        new._set_checked(C, s, self.moment_arm, self.torque, self.upper_bound, self._bounded,
+                         asym, skew)
+        return new
 
     @property
     def size(self) -> int:
@@ -261,6 +314,17 @@ class ContactProblem:
     def with_torque(self, torque: float) -> ContactProblem:
         """The same contact with another torque [N·mm]."""
         return dataclasses.replace(self, torque=torque)
+
+
+def _check_positive_definite(C: np.ndarray) -> None:
+    """Refuse a symmetric compliance C (N, N) [mm/N] that is not positive definite: its
+    Cholesky factorisation (LAPACK ``potrf``) fails."""
+    _, info = scipy.linalg.lapack.dpotrf(C, lower=1, clean=0)
+    if info != 0:
+        eig_min = float(np.linalg.eigvalsh(C)[0])
+        raise NotPositiveDefiniteError(
+            "compliance: is not positive definite (Cholesky failed; smallest eigenvalue "
+            f"{eig_min:.3e} mm/N); a physical compliance matrix must be SPD")
 
 
 def _upper_bound(bound, R: np.ndarray, T: float, n: int) -> np.ndarray:

@@ -99,6 +99,11 @@ _COARSE_PER_CELL = 2  # coarse samples per grid cell along a curve
 _END_ITER = 12  # false-position steps on a curve end (to 1e-9 of the face width)
 
 
+_END_NEWTON = 8  # Newton steps on a curve end where the inside measure is continuous
+_END_TOL = 1e-13  # [1] such an end's distance from the measure's zero, in u
+_SMOOTH_AFTER = 6  # bisection steps after which false position still converges (of 12)
+
+
 class ContactCurves(NamedTuple):
     """Contact curves of a batch of roll targets (shape ``batch``), ``n_point`` samples each.
 
@@ -230,13 +235,277 @@ def _curve_ends(f: EaseOffFields, t: np.ndarray, co: _Coarse, short: _ShortCurve
         a = np.r_[uc[j_in], short.u, short.u]
         b = np.r_[uc[j_out], short.lo, short.hi]
         va = np.r_[vc[rows[: j_in.size], j_in], short.v, short.v]
-        a = _false_position_ends(f, t[rows], a, b, va)
+        a = _end_places(f, t[rows], a, b, va)
         n_lo, n_hi, n_s = int(lo_end.sum()), int(hi_end.sum()), s_rows.size
         ua[rows[:n_lo]] = a[:n_lo]
         ub[rows[n_lo:n_lo + n_hi]] = a[n_lo:n_lo + n_hi]
         ua[s_rows] = a[n_lo + n_hi:n_lo + n_hi + n_s]
         ub[s_rows] = a[n_lo + n_hi + n_s:]
     return ua, ub
+
+
+def _end_places(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
+                va: np.ndarray) -> np.ndarray:
+    """Ends of the iso-lines Q = t (M,) between an inside place a (profile place va) and an
+    outside place b [1]: the last inside place of each, as :func:`_false_position_ends`
+    finds it (issue 32: with fewer steps).
+
+    Where the inside measure jumps at b (−1: the iso-line leaves the grid or enters a cell
+    with an uncomputed corner), :func:`_false_position_ends` bisects: its steps are
+    foretold from where the iso-line crosses the jump's grid line and checked in one batch
+    (:func:`_bisected_ends`; the same places, bit for bit). Where the measure is continuous
+    at b, Newton's method along the iso-line finds its zero (:func:`_newton_ends`; the
+    same end to ~1e-13 instead of 12 false-position steps). Points that neither settles
+    (the measure jumps inside the bracket, a foretold step is not the bisection's, or b's
+    measure is not below zero: its v solved again differs from the coarse sample's) take
+    :func:`_false_position_ends` itself. The arguments are not changed.
+    """
+    ca = f.measure(a, va)
+    vb = f.solve_v(b, t, v_start=va)
+    cb = f.measure(b, vb)
+    out = np.full(a.size, np.nan)
+    done = np.zeros(a.size, dtype=bool)
+    # the width after the bisection's steps (the steps stop below 1e-9)
+    jump = np.flatnonzero((cb <= -0.5) & (np.abs(b - a) * 0.5**_END_ITER > 1e-9))
+    a_n, b_n, ca_n, cb_n, vb_n = a.copy(), b.copy(), ca.copy(), cb.copy(), vb.copy()
+    newton = (cb > -0.5) & (cb < 0.0) & (ca >= 0.0) & (ca < 0.5)
+    if jump.size:
+        out[jump], done[jump], (sm, a_k, ca_k, b_k, cb_k) = _bisected_ends(
+            f, t[jump], a[jump], b[jump], va[jump], vb[jump], ca[jump])
+        js = jump[sm]  # the measure's zero comes first: Newton from the loop's bracket
+        a_n[js], ca_n[js], b_n[js], cb_n[js] = a_k[sm], ca_k[sm], b_k[sm], cb_k[sm]
+        vb_n[js] = np.nan  # (its start: the false-position place)
+        newton[js] = True
+    smooth = np.flatnonzero(newton)
+    if smooth.size:
+        out[smooth], done[smooth] = _newton_ends(f, t[smooth], a_n[smooth], b_n[smooth],
+                                                 va[smooth], vb_n[smooth], ca_n[smooth],
+                                                 cb_n[smooth])
+    rest = np.flatnonzero(~done)
+    if rest.size:
+        out[rest] = _false_position_ends(f, t[rest], a[rest], b[rest], va[rest].copy())
+    return out
+
+
+def _bisected_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
+                   va: np.ndarray, vb: np.ndarray, ca: np.ndarray):
+    """:func:`_false_position_ends` where the inside measure jumps at the outside place b
+    (M,) [1] (its value there −1, so every step bisects), foretold and checked.
+
+    The jump is where the iso-line crosses a grid line: the grid's tip or root line (v at
+    b NaN; the solution is held there while |Q − t| ≤ 1e-9 rad, :meth:`newton_v`) or the
+    profile line into b's cell row (:func:`_jump_places`). The bisection's midpoints are
+    computed as the loop computes them, each kept on a's side of that place; then the
+    measure at every midpoint is evaluated in one batch (Newton's method from about the
+    start the loop's step would take) and the foretold steps hold where each midpoint on a's
+    side is inside (≥ 0) and each other one is at the jump (≤ −0.5), as the loop's would
+    be.
+
+    Returns
+    -------
+    a : ndarray (M,) — [1]
+        The last inside places, valid where ``ok``.
+    ok : ndarray (M,) of bool
+    smooth, a_k, ca_k, b_k, cb_k : ndarray (M,)
+        Where ``smooth``, the measure was continuous and below zero at a midpoint foretold
+        inside (one of the first :data:`_SMOOTH_AFTER`): the end is its zero between a_k
+        (inside, measure ca_k) and that midpoint b_k (measure cb_k), where the loop
+        continues by false position (:func:`_newton_ends`).
+    """
+    ustar, uv, vv = _jump_places(f, t, a, b, va, vb)
+    side = np.where(a > b, 1.0, -1.0)  # a's side of the jump
+    ustar_side = ustar * side
+    lo_side, hi_side = a.copy(), b.copy()
+    mids = np.empty((_END_ITER, a.size))
+    keep = np.empty((_END_ITER, a.size), dtype=bool)
+    for k in range(_END_ITER):
+        # the loop's midpoint (its hold 1e-3 of the bracket off the ends leaves a
+        # midpoint in place)
+        m = 0.5 * (lo_side + hi_side)
+        good = m * side > ustar_side
+        np.copyto(lo_side, m, where=good)
+        np.copyto(hi_side, m, where=~good)
+        mids[k], keep[k] = m, good
+    n = a.size
+    # the loop starts each step's Newton from the solution at its inside place (a's, then
+    # the last midpoint kept), and a start of another Newton can end elsewhere where the
+    # iteration is held at the grid: each midpoint starts from that place's v on the chord
+    # of the iso-line from a to a known place (uv, vv) beyond (a's own v before the first
+    # midpoint kept)
+    span = uv - a
+    slope = np.where(span != 0, (vv - va) / np.where(span != 0, span, 1.0), 0.0)
+    held = np.r_[a[None], mids[:-1]]  # step k's inside place if midpoint k − 1 was kept
+    steps = np.arange(_END_ITER)[:, None]
+    last = np.maximum.accumulate(np.where(np.r_[np.ones((1, n), bool), keep[:-1]], steps, 0),
+                                 axis=0)
+    col = np.arange(n)
+    inside_at = held[last, col]
+    v_start = np.where(last == 0, va,
+                       np.clip(va + slope * (inside_at - a), f.v[0], f.v[-1]))
+    vm = f.newton_v(mids.ravel(), np.tile(t, _END_ITER), v_start.ravel())
+    cm = f.measure(mids.ravel(), vm).reshape(_END_ITER, n)
+    wrong = np.where(keep, cm < 0.0, cm > -0.5)
+    ok = ~wrong.any(axis=0)
+    # where a midpoint foretold inside is outside on the continuous measure (its zero
+    # comes before the jump), the loop's later steps are false position: the bracket
+    # from the last inside place before it to it
+    k = np.argmax(wrong, axis=0)
+    smooth = ~ok & keep[k, col] & (cm[k, col] > -0.5) & (k < _SMOOTH_AFTER)
+    inside = keep & (np.arange(_END_ITER)[:, None] < k)
+    last = _END_ITER - 1 - np.argmax(inside[::-1], axis=0)
+    any_in = inside.any(axis=0)
+    a_k = np.where(any_in, mids[last, col], a)
+    ca_k = np.where(any_in, cm[last, col], ca)
+    return lo_side, ok, (smooth, a_k, ca_k, mids[k, col], cm[k, col])
+
+
+def _jump_places(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
+                 va: np.ndarray, vb: np.ndarray) -> np.ndarray:
+    """Where the iso-lines Q = t (M,) cross the grid line at which the inside measure
+    jumps between a (inside) and b [1]: v₁ or v₀ where b's solution is NaN (at
+    s (Q − t) = ∓1e-9 rad, s = :attr:`q_sign`, the tolerance the solution is held at the
+    line with), else the profile line into b's cell row, where that cell is masked in the
+    bisection's column (else b itself: the jump is b's column; a itself where a's row is
+    masked there). Newton's method in u on Q(u, line) from the false-position place (two
+    steps: ~1e-10); a foretelling, checked by the caller.
+
+    Returns u* (M,) and a place (u, v) (M,) on each iso-line beyond a [1]: where it
+    crosses the line, or b's where b's v is finite, else a's."""
+    s = f.q_sign
+    vn = f.v
+    nv = vn.size
+    nan_b = ~np.isfinite(vb)
+    top = va > 0.5 * (vn[0] + vn[-1])  # the nearer of the tip and root lines
+    ja = np.clip(np.searchsorted(vn, va, side="right") - 1, 0, nv - 2)
+    jb = np.clip(np.searchsorted(vn, np.where(nan_b, va, vb), side="right") - 1, 0, nv - 2)
+    j2 = np.where(jb > ja, ja + 1, ja)
+    line = np.where(nan_b, np.where(top, vn[-1], vn[0]), vn[j2])
+    off = np.where(nan_b, np.where(top, -1e-9, 1e-9), 0.0)
+    # the bisection's places lie in one cell column (a and b are grid columns' places or
+    # between them): where a's row is masked there, the jump is at a itself; where the
+    # row crossed into is not, the jump is b's column
+    iu = np.clip(np.searchsorted(f.u, 0.5 * (a + b), side="right") - 1, 0, f.u.size - 2)
+    at_a = ~f.cell_ok[iu, ja]
+    cross = ~at_a & (nan_b | ((jb != ja) & ~f.cell_ok[iu, np.where(jb > ja, ja + 1, ja - 1)]))
+    ustar = np.where(at_a, a, b)
+    uv, vv = np.where(nan_b, a, b), np.where(nan_b, va, vb)
+    idx = np.flatnonzero(cross)
+    if idx.size == 0:
+        return ustar, uv, vv
+    ai, bi, ti, li, oi = a[idx], b[idx], t[idx], line[idx], off[idx]
+    h = s * (f.q.ev(np.r_[ai, bi], np.r_[li, li]) - np.r_[ti, ti]) - np.r_[oi, oi]
+    ha, hb = h[:idx.size], h[idx.size:]
+    x = np.where(hb != ha, bi - hb * (bi - ai) / np.where(hb != ha, hb - ha, 1.0), bi)
+    lo, hi = np.minimum(ai, bi), np.maximum(ai, bi)
+    x = np.minimum(np.maximum(x, lo), hi)
+    for _ in range(2):
+        hx = s * (f.q.ev(x, li) - ti) - oi
+        d = s * f.q.ev(x, li, dx=1)
+        x = np.minimum(np.maximum(x - hx / np.where(d != 0, d, 1e-30), lo), hi)
+    ustar[idx] = x
+    uv[idx], vv[idx] = x, li
+    return ustar, uv, vv
+
+
+def _newton_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
+                 va: np.ndarray, vb: np.ndarray, ca: np.ndarray,
+                 cb: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Ends of the iso-lines Q = t (M,) where the inside measure is continuous between an
+    inside place a (measure ca ≥ 0, profile place va) and an outside place b (cb < 0, vb;
+    NaN where not known) [1]: Newton's method along the iso-line on the measure's active
+    term (:func:`_measure_slope`) from the zero of the cubic with the measure's values and
+    slopes at a and b (:func:`_hermite_zero`; the false-position place where vb is NaN),
+    held in the bracket (its false-position place where a step leaves it), until an inside
+    place lies within :data:`_END_TOL` of the zero (the steps below 1e-8, quadratic, end
+    half that far inside).
+
+    Returns
+    -------
+    (a (M,) [1], ok (M,) bool)
+        The ends (inside places), valid where ``ok``: not where a step met a jump of the
+        measure (−1) or :data:`_END_NEWTON` steps did not settle.
+    """
+    n = a.size
+    out = np.full(n, np.nan)
+    ok = np.zeros(n, dtype=bool)
+    idx = np.arange(n)
+    inward = 0.5 * _END_TOL * np.sign(a - b)  # half the tolerance towards a's side
+    x = _held_false_position(a, b, ca, cb)
+    known = np.flatnonzero(np.isfinite(vb))
+    if known.size:
+        _, slope, _ = _measure_slope(f, np.r_[a[known], b[known]], np.r_[va[known], vb[known]])
+        x[known] = _hermite_zero(a[known], b[known], ca[known], cb[known],
+                                 slope[:known.size], slope[known.size:], x[known])
+    v = va
+    for _ in range(_END_NEWTON):
+        vx = f.newton_v(x, t, v.copy())
+        c, slope, dv = _measure_slope(f, x, vx)
+        inside = c >= 0.0
+        step = -c / np.where(slope != 0, slope, np.nan)
+        fin = inside & (np.abs(step) <= _END_TOL)
+        out[idx[fin]] = x[fin]
+        ok[idx[fin]] = True
+        a, ca = np.where(inside, x, a), np.where(inside, c, ca)
+        b, cb = np.where(inside, b, x), np.where(inside, cb, c)
+        # quadratic steps (the next place's error ~1e-16) end half the tolerance inside
+        xn = x + step + np.where(np.abs(step) < 1e-8, inward, 0.0)
+        leave = ~((xn > np.minimum(a, b)) & (xn < np.maximum(a, b)))
+        if leave.any():
+            xn = np.where(leave, _held_false_position(a, b, ca, cb), xn)
+        v = vx + dv * (xn - x)
+        live = ~fin & (c > -0.5)  # a jump of the measure: left to the caller
+        if not live.all():
+            if not live.any():
+                break
+            idx, a, b, ca, cb, t, inward, xn, v = (
+                arr[live] for arr in (idx, a, b, ca, cb, t, inward, xn, v))
+        x = xn
+    return out, ok
+
+
+def _hermite_zero(a: np.ndarray, b: np.ndarray, ca: np.ndarray, cb: np.ndarray,
+                  sa: np.ndarray, sb: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """The zero [1] in (a, b) of the cubic with values ca, cb and slopes sa, sb (d/du) at
+    a and b: three Newton steps from x (in the bracket), held 1e-3 of it off its ends; x
+    where they leave no finite place."""
+    h = b - a
+    da, db = h * sa, h * sb
+    r = (x - a) / h
+    for _ in range(3):  # Newton on p(r) = Hermite's cubic on r ∈ [0, 1]
+        p = (((2 * ca + da - 2 * cb + db) * r + (-3 * ca - 2 * da + 3 * cb - db)) * r
+             + da) * r + ca
+        dp = (3 * (2 * ca + da - 2 * cb + db) * r + 2 * (-3 * ca - 2 * da + 3 * cb - db)) * r \
+            + da
+        r = np.minimum(np.maximum(r - p / np.where(dp != 0, dp, np.nan), 1e-3), 1 - 1e-3)
+    out = a + r * h
+    return np.where(np.isfinite(out), out, x)
+
+
+def _held_false_position(a: np.ndarray, b: np.ndarray, ca: np.ndarray,
+                         cb: np.ndarray) -> np.ndarray:
+    """The false-position place [1] of brackets (a, b) with measures (ca ≥ 0, cb < 0), held
+    1e-3 of the bracket off its ends (:func:`_false_position_ends`' step)."""
+    lo, hi = np.minimum(a, b), np.maximum(a, b)
+    w = 1e-3 * (hi - lo)
+    return np.minimum(np.maximum(b - cb * (b - a) / (cb - ca), lo + w), hi - w)
+
+
+def _measure_slope(f: EaseOffFields, u: np.ndarray, v: np.ndarray):
+    """The inside measure (:meth:`EaseOffFields.measure`) at places (u, v) (M,) on their
+    iso-lines, its derivative along the iso-line d/du [1] (of its active term) and the
+    iso-line's slope dv/du = −Q_u/Q_v [1]."""
+    fin = np.isfinite(v)
+    vs = np.where(fin, v, f.v[0])
+    dv = -f.q.ev(u, vs, dx=1) / f.q.ev(u, vs, dy=1)
+    c = f.margin.ev(u, vs)
+    slope = f.margin.ev(u, vs, dx=1) + f.margin.ev(u, vs, dy=1) * dv
+    # the least of the measure's terms in their order, and its derivative
+    for term, d in ((vs - f.v[0], dv), (f.v[-1] - vs, -dv), (u - f.u[0], 1.0),
+                    (f.u[-1] - u, -1.0)):
+        lower = term < c
+        c = np.where(lower, term, c)
+        slope = np.where(lower, d, slope)
+    return np.where(fin & f.good_cell(u, vs), c, -1.0), slope, np.where(fin, dv, 0.0)
 
 
 def _false_position_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.ndarray,
