@@ -188,10 +188,11 @@ def test_friction_study_and_fit_commands(tmp_path, monkeypatch, capsys):
                  str(DATA_DIR / "friction_study_75W90_heldout.nc"), "-o", "k.toml"]) == 0
     assert "held out" in capsys.readouterr().out
     fit = load_kolivand2009_fit(tmp_path / "k.toml")
-    # the bundled file is this fit of the committed data (optimiser tolerance: 1e-6)
+    # the bundled file is this fit of the committed data (coefficients to 1e-4: the
+    # optimum is flat along some directions, tests/test_kolivand2009.py compares μ to 1e-6)
     np.testing.assert_allclose(np.asarray(fit.coefficients),
                                np.asarray(load_kolivand2009_fit("75W90").coefficients),
-                               rtol=1e-6, atol=1e-8)
+                               rtol=1e-4, atol=1e-6)
     assert main(["friction-fit", str(DATA_DIR / "friction_study_75W90.nc"), "-o", "k.txt"]) != 0
     assert "must end in .toml" in capsys.readouterr().err
 

@@ -147,13 +147,22 @@ def test_eyring_structure_beats_the_power_laws(fit, train, held):
 
 
 def test_refit_reproduces_the_bundled_coefficients(fit, train, held):
-    """The committed coefficients are the fit of the committed data over the design's box
-    (least squares is deterministic: 1e-6 relative covers the optimiser's stopping
-    tolerance)."""
+    """The committed coefficients are the fit of the committed data over the design's box.
+    Compared by what they predict: the optimum is flat along some directions, so another
+    platform's round-off moves coefficients more than μ (measured: the data perturbed by
+    1e-11 relative moved coefficients by 3e-6 and μ by 9e-8). Tolerances: μ at every
+    training and held-out point 1e-6 relative; coefficients 1e-4."""
     again = fit_kolivand2009(train, heldout=held, box=GEAR_CONTACT_RANGE)
+    for study in (train, held):
+        d = study_inputs(study)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", FrictionModelRangeWarning)
+            np.testing.assert_allclose(kolivand2009(**_inputs(d), coefficients=again),
+                                       kolivand2009(**_inputs(d), coefficients=fit),
+                                       rtol=1e-6)
     np.testing.assert_allclose(np.asarray(again.coefficients), np.asarray(fit.coefficients),
-                               rtol=1e-6, atol=1e-8)
-    np.testing.assert_allclose(again.boundary, fit.boundary, rtol=1e-6, atol=1e-8)
+                               rtol=1e-4, atol=1e-6)
+    np.testing.assert_allclose(again.boundary, fit.boundary, rtol=1e-4, atol=1e-6)
     assert again.ranges == fit.ranges
 
 
