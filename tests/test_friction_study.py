@@ -240,3 +240,23 @@ def test_combine_studies_and_refusals():
         fit_kolivand2009(held, structure="cubic")
     with pytest.raises(InputError, match=r"^study: not a friction study"):
         fit_kolivand2009(held.drop_vars("status"))
+
+
+def test_eyring_fit_refuses_an_oil_without_traction_properties(tmp_path):
+    # the 'eyring' structure's film traction needs τ₀ and Λ: an oil TOML without them is
+    # refused naming them (the split structure still fits)
+    from friction.kolivand2009 import DATA_DIR
+    from friction.study.fit import fit_kolivand2009
+    from geometry.core.io import read_netcdf
+
+    text = (DATA_DIR / "75W90.toml").read_text(encoding="utf-8")
+    keep = [line for line in text.splitlines()
+            if not line.startswith(("eyring_stress", "limiting_shear_coefficient"))]
+    oil = tmp_path / "bare.toml"
+    oil.write_text("\n".join(keep) + "\n", encoding="utf-8")
+    held = read_netcdf(DATA_DIR / "friction_study_75W90_heldout.nc", tree=False)
+    held.attrs = {**held.attrs, "solver_lubricant": str(oil)}
+    with pytest.raises(InputError, match=r"^lubricant: .* has no \['eyring_stress', "
+                                         r"'limiting_shear_coefficient'\]"):
+        fit_kolivand2009(held)
+    assert fit_kolivand2009(held, structure="split").structure == "split"

@@ -308,6 +308,12 @@ def fit_kolivand2009(
     film: dict[str, Any] = {}
     y_start, mu_e = y, None
     if structure == "eyring":
+        missing = [k for k in ("eyring_stress", "limiting_shear_coefficient")
+                   if getattr(oil, k) is None]
+        if missing:
+            raise InputError(f"lubricant: {oil.name} has no {missing}, which the 'eyring' "
+                             "structure's film traction needs (give them in its TOML, or "
+                             "fit structure='split')")
         film = {"eyring_stress": float(oil.eyring_stress),
                 "limiting_shear_coefficient": float(oil.limiting_shear_coefficient),
                 "viscosity_model": str(study.attrs.get("solver_viscosity_model", "roelands"))}
