@@ -77,6 +77,7 @@ EDGE_KINDS = ("gear_tip", "gear_heel", "gear_toe", "pinion_edge")
 
 _FINE = 801  # samples locating a piece along the grid edges / the margin contour grid
 _CONTOUR_GRID = (161, 81)  # (u, v) samples of the pinion-margin contour
+_FOOT_STEP = 1e-13  # [1] Gauss–Newton step (of the grid fractions) that ends a foot point
 
 
 class FlankBoundary(NamedTuple):
@@ -345,8 +346,9 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
     u, v : ndarray (n,) — [1]
         Starting places (gear fractions), near the answer.
     iterations : int
-        Gauss–Newton steps (default 8: from a few tenths of a mm away the step falls
-        below 1e-12 of the grid in 4–5).
+        Gauss–Newton steps at most (default 8: from a few tenths of a mm away the step
+        falls below 1e-12 of the grid in 4–5); a point stops after a step of at most
+        :data:`_FOOT_STEP` of the grid.
 
     Returns
     -------
@@ -371,14 +373,23 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
     lo = np.array([f.u[0], f.v[0]])
     hi = np.array([f.u[-1], f.v[-1]])
     uv = np.stack([u, v], axis=-1)
+    act = np.arange(uv.shape[0])
     for _ in range(iterations):
-        x = np.stack([s.ev(uv[:, 0], uv[:, 1]) for s in f.pos], -1)
-        jac = np.stack([np.stack([s.ev(uv[:, 0], uv[:, 1], dx=1) for s in f.pos], -1),
-                        np.stack([s.ev(uv[:, 0], uv[:, 1], dy=1) for s in f.pos], -1)],
-                       axis=-1)  # (n, 3, 2)
+        if act.size == 0:
+            break
+        ua, va = uv[act, 0], uv[act, 1]
+        x = np.stack([s.ev(ua, va) for s in f.pos], -1)
+        jac = np.stack([np.stack([s.ev(ua, va, dx=1) for s in f.pos], -1),
+                        np.stack([s.ev(ua, va, dy=1) for s in f.pos], -1)],
+                       axis=-1)  # (m, 3, 2)
         jtj = np.einsum("nia,nib->nab", jac, jac)
-        jtr = np.einsum("nia,ni->na", jac, p - x)
-        uv = np.clip(uv + np.linalg.solve(jtj, jtr[..., None])[..., 0], lo, hi)
+        jtr = np.einsum("nia,ni->na", jac, p[act] - x)
+        new = np.clip(uv[act] + np.linalg.solve(jtj, jtr[..., None])[..., 0], lo, hi)
+        step = np.abs(new - uv[act]).max(axis=-1)
+        uv[act] = new
+        # a point whose step fell to _FOOT_STEP leaves the batch (the steps shrink ~100×
+        # each: the rest would move it by ~1e-15)
+        act = act[step > _FOOT_STEP]
     uu, vv = uv[:, 0], uv[:, 1]
     pos = np.stack([s.ev(uu, vv) for s in f.pos], -1)
     nrm = np.stack([s.ev(uu, vv) for s in f.nrm], -1)
