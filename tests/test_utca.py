@@ -408,43 +408,6 @@ def test_end_slope_of_the_ute_matches_a_wide_central_difference():
     np.testing.assert_allclose(g[ok], fd[ok], rtol=5e-3)
 
 
-def test_curve_ends_are_those_of_the_false_position_loop():
-    """The curves' ends (issue 32): where the inside measure jumps (the iso-line leaves the
-    grid's tip, or enters a cell with an uncomputed corner) the foretold bisection gives the
-    loop's places bit for bit; where it is continuous Newton's method gives the same end to
-    1e-12 of the face width (its own tolerance 1e-13 plus the loop's last steps); the
-    curves of a cycle of the seed 11×41 pair, misaligned, have ends of both kinds."""
-    from contact.utca import EaseOffFields
-    from contact.utca.contact_curves import _coarse_runs, _end_places, _false_position_ends
-
-    case = load_case(ROOT / "cases" / "kolivand2009_fm_11x41.toml")
-    eo = ease_off(case)
-    f = EaseOffFields(eo)
-    m1, _ = transitions(eo)
-    t = (m1 + np.arange(20)[:, None] * eo.pitch / 20
-         - np.array([-1, 0, 1, 2])[None, :] * eo.pitch).ravel()
-    co = _coarse_runs(f, t, 2)
-    lo_end = co.have & (co.start > 0)
-    rows = np.flatnonzero(lo_end)
-    a, b = co.u[co.start[rows]], co.u[co.start[rows] - 1]
-    va = co.v[rows, co.start[rows]]
-    hi_end = co.have & (co.stop < co.u.size - 1)
-    rows2 = np.flatnonzero(hi_end)
-    a = np.r_[a, co.u[co.stop[rows2]]]
-    b = np.r_[b, co.u[co.stop[rows2] + 1]]
-    va = np.r_[va, co.v[rows2, co.stop[rows2]]]
-    tt = t[np.r_[rows, rows2]]
-    want = _false_position_ends(f, tt, a.copy(), b.copy(), va.copy())
-    got = _end_places(f, tt, a, b, va)
-    jump = f.measure(b, f.solve_v(b, tt, v_start=va)) <= -0.5
-    assert 10 <= jump.sum() <= jump.size - 10
-    np.testing.assert_array_equal(got[jump], want[jump])
-    np.testing.assert_allclose(got[~jump], want[~jump], rtol=0, atol=1e-12)
-    # inside, but for the round-off of v solved again from another start (the loop's own
-    # ends measure down to -1.7e-13 so)
-    assert np.all(f.measure(got, f.solve_v(got, tt, v_start=va)) > -1e-15)
-
-
 def test_transitions_found_where_the_lowest_node_is_not_in_mesh():
     """Misaligned (ΔE = −0.1 mm, ΔP = +0.1 mm), the spiral-bevel sample's lowest ease-off
     node lies where its pair does not carry the motion; the transitions are then sought
