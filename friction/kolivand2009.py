@@ -47,6 +47,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from friction.ehl.rheology import VISCOSITY_PRESSURE_MODELS
 from friction.film import pan_hamrock
 from friction.validity import FrictionModelRangeWarning
 from geometry.core.errors import InputError
@@ -63,6 +64,7 @@ __all__ = [
     "STRUCTURES",
     "Kolivand2009Fit",
     "contact_groups",
+    "groups_film_traction",
     "kolivand2009",
     "kolivand2009_validity",
     "load_kolivand2009_fit",
@@ -205,6 +207,46 @@ def contact_groups(*, hertz_pressure: ArrayLike, slide_to_roll: ArrayLike,
     }
 
 
+def groups_film_traction(groups: Mapping[str, Array], *, eyring_stress: float,
+                         limiting_shear_coefficient: float,
+                         viscosity_model: str = "barus") -> Array:
+    """μ_E of the ``eyring`` structure at a contact's groups.
+
+    Parameters
+    ----------
+    groups : mapping of str to array
+        :func:`contact_groups` (its inputs ``hertz_pressure`` [MPa], ``SR``,
+        ``entraining_velocity`` [m/s], ``viscosity`` [Pa s], ``pressure_viscosity``
+        [1/GPa], ``radius`` [mm], ``e_prime`` [MPa]).
+    eyring_stress : float — [MPa]
+    limiting_shear_coefficient : float — [1]
+    viscosity_model : {"barus", "roelands"}
+
+    Returns
+    -------
+    array — [1]
+        :func:`friction.traction.smooth_film_traction` at those inputs, the groups' shape.
+
+    Raises
+    ------
+    InputError
+        As :func:`friction.traction.smooth_film_traction`.
+
+    Notes
+    -----
+    Source: see :func:`friction.traction.smooth_film_traction`.
+    """
+    from friction.traction import smooth_film_traction
+
+    return np.asarray(smooth_film_traction(
+        hertz_pressure=groups["hertz_pressure"], slide_to_roll=groups["SR"],
+        entraining_velocity=groups["entraining_velocity"], viscosity=groups["viscosity"],
+        pressure_viscosity=groups["pressure_viscosity"], radius=groups["radius"],
+        e_prime=groups["e_prime"], eyring_stress=eyring_stress,
+        limiting_shear_coefficient=limiting_shear_coefficient,
+        viscosity_model=viscosity_model), float)
+
+
 @dataclass(frozen=True)
 class Kolivand2009Fit:
     """The coefficients of one oil's fitted model, with where and how well they fit.
@@ -300,8 +342,9 @@ class Kolivand2009Fit:
             if not self.limiting_shear_coefficient > 0.0:
                 raise InputError("film.limiting_shear_coefficient: must be > 0 [1], got "
                                  f"{self.limiting_shear_coefficient}")
-            if self.viscosity_model not in ("barus", "roelands"):
-                raise InputError("film.viscosity_model: must be 'barus' or 'roelands', got "
+            if self.viscosity_model not in VISCOSITY_PRESSURE_MODELS:
+                raise InputError("film.viscosity_model: must be one of "
+                                 f"{tuple(VISCOSITY_PRESSURE_MODELS)}, got "
                                  f"{self.viscosity_model!r}")
 
     def mu(self, groups: Mapping[str, Array],
@@ -349,15 +392,9 @@ class Kolivand2009Fit:
         """
         if self.structure != "eyring":
             return np.ones_like(np.asarray(groups["lambda"], float))
-        from friction.traction import smooth_film_traction
-
-        return np.asarray(smooth_film_traction(
-            hertz_pressure=groups["hertz_pressure"], slide_to_roll=groups["SR"],
-            entraining_velocity=groups["entraining_velocity"], viscosity=groups["viscosity"],
-            pressure_viscosity=groups["pressure_viscosity"], radius=groups["radius"],
-            e_prime=groups["e_prime"], eyring_stress=self.eyring_stress,
-            limiting_shear_coefficient=self.limiting_shear_coefficient,
-            viscosity_model=self.viscosity_model), float)
+        return groups_film_traction(groups, eyring_stress=self.eyring_stress,
+                                    limiting_shear_coefficient=self.limiting_shear_coefficient,
+                                    viscosity_model=self.viscosity_model)
 
     def asperity_share(self, groups: Mapping[str, Array]) -> Array:
         """ψ of the ``split`` and ``eyring`` structures (0 for ``regimes``) [1].

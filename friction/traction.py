@@ -28,7 +28,7 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from friction.ehl.rheology import VISCOSITY_PRESSURE_MODELS
+from friction.ehl.rheology import VISCOSITY_PRESSURE_MODELS, eyring_limited_shear
 from friction.film import dowson_toyoda_central
 from geometry.core.errors import InputError
 from geometry.core.validation import broadcast, integer, one_of, real_array, scalar_or_array
@@ -125,10 +125,8 @@ def smooth_film_traction(
     tau0 = eyring_stress * 1e6
     eta, _ = VISCOSITY_PRESSURE_MODELS[viscosity_model](p, eta0[..., None],
                                                         alpha[..., None] * 1e-9)
-    tau = tau0 * np.arcsinh(eta * rate[..., None] / tau0)
-    if math.isfinite(limiting_shear_coefficient):
-        tau = np.minimum(tau, limiting_shear_coefficient * p)
-    # ∫_{−b}^{b} τ dx = b ∫_{−π/2}^{π/2} τ(θ) cos θ dθ; w′ = π b p_h/2
-    integral = 0.5 * math.pi * np.sum(tau * cos * weight, axis=-1)
-    return scalar_or_array(integral / (0.5 * math.pi * ph * 1e6))
+    tau = eyring_limited_shear(eta, rate[..., None], p, tau0, limiting_shear_coefficient)
+    # ∫_{−b}^{b} τ dx = b ∫_{−π/2}^{π/2} τ(θ) cos θ dθ, the rule's weights on θ ∈ [−1, 1]
+    # scaled by π/2, and w′ = π b p_h/2: μ = Σ τ cos θ w / p_h
+    return scalar_or_array(np.sum(tau * cos * weight, axis=-1) / (ph * 1e6))
 

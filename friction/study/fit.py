@@ -38,6 +38,7 @@ from friction.kolivand2009 import (
     STRUCTURES,
     Kolivand2009Fit,
     contact_groups,
+    groups_film_traction,
     kolivand2009,
 )
 from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
@@ -428,13 +429,7 @@ def _eyring_start(d: Mapping[str, Array], groups: Mapping[str, Array], mu_b: flo
                   film: Mapping[str, Any]) -> tuple[Array, Array]:
     """The ``eyring`` fit's linear start and μ_E: ln of the solver's film part (μ less
     μ_b times its asperity load ratio, at least 5 % of μ) over (1 − ratio) μ_E."""
-    from friction.traction import smooth_film_traction
-
-    mu_e = np.asarray(smooth_film_traction(
-        hertz_pressure=groups["hertz_pressure"], slide_to_roll=groups["SR"],
-        entraining_velocity=groups["entraining_velocity"], viscosity=groups["viscosity"],
-        pressure_viscosity=groups["pressure_viscosity"], radius=groups["radius"],
-        e_prime=groups["e_prime"], **film), float)
+    mu_e = groups_film_traction(groups, **film)
     share = np.clip(d["asperity_load_ratio"], 0.0, 0.99)
     mu = d["friction_coefficient"]
     film_part = np.maximum(mu - mu_b * share, 0.05 * mu)
