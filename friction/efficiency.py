@@ -59,7 +59,7 @@ from geometry.core.conventions import binary_flag, data_var
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL, contact_modulus
 
-__all__ = ["efficiency_analysis", "extrapolated_segments"]
+__all__ = ["efficiency_analysis", "extrapolated_segments", "extrapolation_summary"]
 
 log = logging.getLogger(__name__)
 
@@ -95,7 +95,7 @@ def efficiency_analysis(
         ``contact_tangent`` and the axes in its attributes).
     operating : friction.operating.OperatingConditions, optional
         Pinion speed, lubricant, inlet temperature, roughness and friction model; default
-        ``OperatingConditions()`` (1500 rpm, 75W90 at 90 °C, Rq 0.8 µm, xu2007).
+        ``OperatingConditions()`` (1500 rpm, 75W90 at 90 °C, Rq 0.8 µm, kolivand2009).
     pinion_speed : float, optional — [rpm], > 0
     lubricant : str, optional
         Bundled oil name or TOML path (:func:`friction.lubricant.load_lubricant`).
@@ -439,8 +439,77 @@ def _friction_dataset(
         "inlet_viscosity_Pa_s": oil.viscosity,
         "pressure_viscosity_1_per_GPa": oil.pressure_viscosity,
         "model_range_warnings": json.dumps(fric.range_warnings),
+        "model_range_by_contact": json.dumps(_range_by_contact(ltca, seg, fric)),
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+#: The inputs whose spans :func:`_range_by_contact` reports: name → (symbol, units, digits).
+_SPAN_INPUTS = {"hertz_pressure": ("p_h", "MPa", 0), "radius": ("R_eq", "mm", 2),
+                "lambda_ratio": ("λ", "", 3), "slide_to_roll": ("|SR|", "", 4),
+                "entraining_velocity": ("u_e", "m/s", 2)}
+
+
+def _range_by_contact(ltca: xr.Dataset, seg: _Segments, fric: _Friction) -> dict[str, dict]:
+    """The extrapolated segments split by the kind of contact — ``flank`` (the contact
+    curves: line contact of two flanks, what a line-contact study covers) and ``edge``
+    (a rounded tooth edge on the mating flank, R_eq ≈ the edge radius) — each with its
+    loaded and flagged segment counts, the flagged share of the load [1] and the spans
+    (min, max) of p_h [MPa], R_eq [mm], λ, |SR| [1] and u_e [m/s] over the flagged ones: what
+    lies outside the model's range, and where (the flag says why)."""
+    kind = ltca["segment_kind"].values if "segment_kind" in ltca else None
+    is_edge = (np.broadcast_to(kind != "curve", seg.loaded.shape)[seg.loaded]
+               if kind is not None else np.zeros(seg.force.shape, bool))
+    total = float(np.sum(seg.force)) or 1.0
+    values = {"hertz_pressure": seg.pressure_max, "radius": seg.radius,
+              "lambda_ratio": fric.lambda_ratio, "slide_to_roll": np.abs(seg.slide_to_roll),
+              "entraining_velocity": seg.rolling_velocity}
+    out = {}
+    for name, mask in (("flank", ~is_edge), ("edge", is_edge)):
+        flagged = mask & np.asarray(fric.extrapolated, bool)
+        entry: dict = {"loaded": int(mask.sum()), "extrapolated": int(flagged.sum()),
+                       # rounded, as the spans: a text attribute is compared as text,
+                       # and its last digits would follow the machine's round-off
+                       "load_share": round(float(np.sum(seg.force[flagged]) / total), 5)}
+        if flagged.any():
+            entry["spans"] = {k: [round(float(np.min(values[k][flagged])), d),
+                                  round(float(np.max(values[k][flagged])), d)]
+                              for k, (_, _, d) in _SPAN_INPUTS.items()}
+        out[name] = entry
+    return out
+
+
+def extrapolation_summary(friction: xr.Dataset) -> str:
+    """One sentence on where the friction model ran outside its fitted range: on the
+    flanks and on the edges, how many segments, their share of the load and the spans of
+    their inputs (the ``model_range_by_contact`` attribute of :func:`efficiency_analysis`).
+
+    Parameters
+    ----------
+    friction : xarray.Dataset
+        A ``/friction`` dataset.
+
+    Returns
+    -------
+    str
+        Empty when nothing was extrapolated or the dataset predates the attribute.
+    """
+    try:
+        parts = json.loads(friction.attrs.get("model_range_by_contact", "{}"))
+    except (TypeError, ValueError):
+        return ""
+    texts = []
+    for name, what in (("flank", "on the flanks"), ("edge", "on the edges (a rounded tooth "
+                                                           "edge on the mating flank)")):
+        e = parts.get(name)
+        if not e or not e.get("extrapolated"):
+            continue
+        spans = ", ".join(
+            f"{_SPAN_INPUTS[k][0]} {lo:g}-{hi:g} {_SPAN_INPUTS[k][1]}".rstrip()
+            for k, (lo, hi) in e.get("spans", {}).items() if k in _SPAN_INPUTS)
+        texts.append(f"{e['extrapolated']} of {e['loaded']} segments {what}, "
+                     f"{e['load_share']:.1%} of the load ({spans})")
+    return "; ".join(texts)
 
 
 def extrapolated_segments(friction: xr.Dataset, torque_index: int | None = None

@@ -16,10 +16,13 @@ from contact.study.friction_study import run_friction_study
 from contact.study.store import ResultStore
 from friction.study.design import (
     DESIGN_INPUTS,
+    GEAR_CONTACT_RANGE,
+    GEAR_FLANK_RANGE,
     TABLE_5_1,
     TABLE_5_1_RANGE,
     check_design,
     factorial_design,
+    inside_box,
     space_filling_design,
 )
 from friction.study.points import RESULT_VARIABLES, SolveSettings, solve_design_point
@@ -79,6 +82,30 @@ def test_space_filling_design_is_seeded_inside_the_box_and_continues():
     lhs = space_filling_design(20, method="lhs", seed=3)
     strata = np.floor((lhs["temperature"] - 25.0) / 75.0 * 20).astype(int)
     assert sorted(strata) == list(range(20))
+
+
+@pytest.mark.parametrize("method", ["sobol", "lhs"])
+def test_design_outside_a_box_fills_the_shell(method):
+    """``exclude``: every point inside the outer box and outside the excluded one, n of
+    them, the same for the same seed; the Sobol shell is the sequence's points outside
+    the excluded box, in order (the points inside are passed over, not moved)."""
+    a = space_filling_design(40, method=method, seed=4, box=GEAR_FLANK_RANGE,
+                             exclude=GEAR_CONTACT_RANGE)
+    b = space_filling_design(40, method=method, seed=4, box=GEAR_FLANK_RANGE,
+                             exclude=GEAR_CONTACT_RANGE)
+    assert a["radius"].size == 40
+    assert not inside_box(a, GEAR_CONTACT_RANGE).any()
+    assert inside_box(a, GEAR_FLANK_RANGE).all()
+    for k in DESIGN_INPUTS:
+        np.testing.assert_array_equal(a[k], b[k])
+    if method == "sobol":
+        whole = space_filling_design(40, seed=4, box=GEAR_FLANK_RANGE)
+        out = ~inside_box(whole, GEAR_CONTACT_RANGE)
+        k = int(out.sum())
+        np.testing.assert_array_equal(a["radius"][:k], whole["radius"][out])
+    with pytest.raises(InputError, match=r"^exclude: leaves 0 of"):
+        space_filling_design(4, method=method, box=GEAR_CONTACT_RANGE,
+                             exclude=GEAR_FLANK_RANGE)
 
 
 @pytest.mark.parametrize(("call", "match"), [
@@ -226,6 +253,9 @@ def test_combine_studies_and_refusals():
     assert both["point"].values.tolist() == list(range(2 * held.sizes["point"]))
     assert both.attrs["wall_time"] == pytest.approx(2 * held.attrs["wall_time"])
     assert both.attrs["design_method"] == "lhs; lhs"
+    longer = held.copy()
+    longer.attrs = {**held.attrs, "solver_average": 2.0}  # the same model sampled shorter
+    assert combine_studies([held, longer]).attrs["solver_average"] == "8.0; 2.0"
     other = held.copy()
     other.attrs = {**held.attrs, "solver_nodes": 512}
     with pytest.raises(InputError, match="solver_nodes differs"):

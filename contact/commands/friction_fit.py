@@ -24,17 +24,18 @@ def register(sub) -> None:
     p.add_argument("study", metavar="STUDY.nc", nargs="+",
                    help="friction study (or studies of one oil and solver setting, e.g. a "
                    "Sobol design and its --skip continuation) to fit")
-    p.add_argument("--held-out", default=None, metavar="FILE.nc",
-                   help="a second friction study (other design seed) used only to measure "
-                   "the fit's error")
+    p.add_argument("--held-out", default=None, nargs="+", metavar="FILE.nc",
+                   help="friction studies (other design seeds) used only to measure the "
+                   "fit's error")
     p.add_argument("--structure", choices=("eyring", "split", "regimes"), default="eyring",
                    help="eyring: mu = (1 - asperity share) * smooth-film Eyring traction * "
                    "regression + mu_b * asperity share; split: mu = film regression + mu_b * "
                    "asperity share; regimes: ln mu regressed directly (default %(default)s)")
-    p.add_argument("--box", choices=("auto", "table_5_1", "gear"), default="auto",
+    p.add_argument("--box", choices=("auto", "table_5_1", "gear", "gear_flank", "gear_edge"),
+                   default="auto",
                    help="the fitted range of the inputs: the box the study was designed in "
-                   "(auto: read from its design_box attribute), or a named one "
-                   "(default %(default)s)")
+                   "(auto: read from the studies' design_box attributes, the widest named), "
+                   "or a named one (default %(default)s)")
     p.add_argument("-o", "--output", default="kolivand2009_fit.toml", metavar="FILE",
                    help="coefficient file to write (default %(default)s)")
     p.set_defaults(func=run)
@@ -51,10 +52,13 @@ def run(args: argparse.Namespace) -> int:
     if not str(args.output).endswith(".toml"):
         raise InputError(f"-o: the coefficient file must end in .toml, got {args.output!r}")
     study = combine_studies([read_netcdf(f, tree=False) for f in args.study])
-    held = read_netcdf(args.held_out, tree=False) if args.held_out else None
+    held = (combine_studies([read_netcdf(f, tree=False) for f in args.held_out])
+            if args.held_out else None)
     box = args.box
     if box == "auto":
-        box = "gear" if "gear contacts" in str(study.attrs.get("design_box", "")) else "table_5_1"
+        named = str(study.attrs.get("design_box", ""))
+        box = ("gear_flank" if "gear flank contacts" in named else
+               "gear" if "gear contacts" in named else "table_5_1")
     fit = fit_kolivand2009(study, heldout=held, structure=args.structure,
                            box=DESIGN_BOXES[box])
     path = write_fit(fit, args.output)

@@ -10,6 +10,16 @@ from contact.commands.options import progress_option
 #: Place in ``ltca --help``.
 ORDER = 61
 
+#: The design box as the study file's ``design_box`` names it (``ltca friction-fit --box
+#: auto`` reads it back).
+BOX_TEXT = {"table_5_1": "seed Table 5.1; R, u_e, SR log-uniform",
+            "gear": "gear contacts (friction.study.design.GEAR_CONTACT_RANGE); R, u_e, SR "
+                    "log-uniform",
+            "gear_flank": "gear flank contacts (friction.study.design.GEAR_FLANK_RANGE); p_h, "
+                          "R, u_e, SR log-uniform",
+            "gear_edge": "tooth-edge contacts (friction.study.design.GEAR_EDGE_RANGE); R, "
+                         "u_e, SR log-uniform"}
+
 
 def register(sub) -> None:
     """Add the sub-command to an ``argparse`` sub-parser collection."""
@@ -32,10 +42,17 @@ def register(sub) -> None:
     p.add_argument("--seed", type=int, default=2009,
                    help="seed of the sampler (default %(default)s; held-out points: another "
                    "seed and --design lhs)")
-    p.add_argument("--box", choices=("table_5_1", "gear"), default="table_5_1",
+    p.add_argument("--box", choices=("table_5_1", "gear", "gear_flank", "gear_edge"),
+                   default="table_5_1",
                    help="sobol/lhs: the seed's Table 5.1 box, or a wider one covering a hypoid "
-                   "gear's contacts (p_h 0.3-3 GPa, R 5-120 mm, u_e 0.3-20 m/s, SR 0.01-1.5, "
-                   "25-110 degC) (default %(default)s)")
+                   "gear's contacts (gear: p_h 0.3-3 GPa, R 5-120 mm, u_e 0.3-20 m/s, SR "
+                   "0.01-1.5, 25-110 degC; gear_flank: p_h from 0.1 GPa, R from 4 mm, SR from "
+                   "1e-4), or a rounded tooth edge on a flank (gear_edge: R 0.3-1 mm, p_h "
+                   "0.5-5.3 GPa, u_e 0.3-5 m/s, SR 0.2-2) (default %(default)s)")
+    p.add_argument("--exclude-box", choices=("table_5_1", "gear"), default=None,
+                   metavar="BOX",
+                   help="sobol/lhs: pass over the points inside this box (a study that "
+                   "extends one already run in it, e.g. --box gear_flank --exclude-box gear)")
     p.add_argument("--skip", type=int, default=0, metavar="K",
                    help="sobol: continue the sequence after its first K points")
     p.add_argument("--nodes", type=int, default=256,
@@ -89,12 +106,14 @@ def run(args: argparse.Namespace) -> int:
         design = factorial_design()
         attrs = {"method": "factorial", "source": "seed Table 5.1 (unordered Rq pairs)"}
     else:
+        exclude = DESIGN_BOXES[args.exclude_box] if args.exclude_box else None
         design = space_filling_design(args.points, method=args.design, seed=args.seed,
-                                      skip=args.skip, box=DESIGN_BOXES[args.box])
+                                      skip=args.skip, box=DESIGN_BOXES[args.box],
+                                      exclude=exclude)
         attrs = {"method": args.design, "seed": args.seed, "skip": args.skip,
-                 "box": ("seed Table 5.1" if args.box == "table_5_1" else
-                         "gear contacts (friction.study.design.GEAR_CONTACT_RANGE)")
-                 + "; R, u_e, SR log-uniform"}
+                 "box": BOX_TEXT[args.box]}
+        if exclude is not None:
+            attrs["box"] += f"; outside {BOX_TEXT[args.exclude_box]}"
     attrs["points"] = int(next(iter(design.values())).size)
     settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
                              lubricant=args.lubricant, realisations=args.realisations,

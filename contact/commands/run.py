@@ -338,14 +338,15 @@ def print_plausibility_warnings(ltca) -> None:
 def print_extrapolation_warning(friction) -> None:
     """A WARNING line when the friction model ran outside its fitted range (flagged per
     segment in ``/friction/friction_model_extrapolated``)."""
-    from friction.efficiency import extrapolated_segments
+    from friction.efficiency import extrapolated_segments, extrapolation_summary
 
     flagged, loaded = extrapolated_segments(friction)
     if flagged:
+        where = extrapolation_summary(friction)
         print(f"WARNING: friction model {friction.attrs.get('friction_model', '')} "
               f"extrapolated outside its fitted range at {flagged} of {loaded} loaded "
               "segments (flag /friction/friction_model_extrapolated; marked on the plots): "
-              "the efficiency there is an extrapolation")
+              "the efficiency there is an extrapolation" + (f": {where}" if where else ""))
 
 
 def write_figures(path: Path, plots: str | None, report: str | None,

@@ -27,8 +27,9 @@ from numpy.typing import NDArray
 from geometry.core.errors import InputError
 from geometry.core.validation import integer, one_of
 
-__all__ = ["DESIGN_BOXES", "DESIGN_INPUTS", "DESIGN_METHODS", "GEAR_CONTACT_RANGE", "TABLE_5_1",
-           "TABLE_5_1_RANGE", "check_design", "factorial_design", "space_filling_design"]
+__all__ = ["DESIGN_BOXES", "DESIGN_INPUTS", "DESIGN_METHODS", "GEAR_CONTACT_RANGE",
+           "GEAR_EDGE_RANGE", "GEAR_FLANK_RANGE", "TABLE_5_1", "TABLE_5_1_RANGE", "check_design",
+           "factorial_design", "inside_box", "space_filling_design"]
 
 Array = NDArray[np.float64]
 
@@ -79,10 +80,44 @@ GEAR_CONTACT_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
     "roughness_2": (0.1, 1.0, False),
 })
 
+#: The gear box widened to every flank (contact-curve) segment of the default case and of
+#: Table 5.4's A and B at the seed's operating points (1500 rpm, 500 N·m, 90 °C, Rq 0.8 µm),
+#: measured: p_h down to ~100 MPa (1 % of the flank segments lie lower, at the contact
+#: curves' light-load ends, ~0.1 % of the load: a Hertz zone narrower than the ground
+#: profile's wavelengths), SR down to 1e-4 at the pitch line, R from 4.8 mm; p_h
+#: log-uniform here. Points outside :data:`GEAR_CONTACT_RANGE` (``exclude``) extend the
+#: study already run in it.
+GEAR_FLANK_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
+    "hertz_pressure": (100.0, 3000.0, True),
+    "radius": (4.0, 120.0, True),
+    "entraining_velocity": (0.3, 20.0, True),
+    "slide_to_roll": (1e-4, 1.5, True),
+    "temperature": (25.0, 110.0, False),
+    "roughness_1": (0.1, 1.0, False),
+    "roughness_2": (0.1, 1.0, False),
+})
+
+#: The contacts of a rounded tooth edge on the mating flank (the LTCA's edge segments:
+#: R_eq ≈ the edge radius, 0.45–0.5 mm on the bundled cases; p_h up to the shakedown limit
+#: 5.26 GPa; |SR| 0.3–2.4, u_e 0.5–4 m/s, λ 0.011–0.11 at 1500 rpm, 90 °C, Rq 0.8 µm,
+#: measured on the default case and Table 5.4's A and B): R 0.3–1 mm, p_h 0.5–5.3 GPa,
+#: u_e 0.3–5 m/s, SR 0.2–2 (the solver's limit).
+GEAR_EDGE_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
+    "hertz_pressure": (500.0, 5300.0, False),
+    "radius": (0.3, 1.0, True),
+    "entraining_velocity": (0.3, 5.0, True),
+    "slide_to_roll": (0.2, 2.0, True),
+    "temperature": (25.0, 110.0, False),
+    "roughness_1": (0.1, 1.0, False),
+    "roughness_2": (0.1, 1.0, False),
+})
+
 #: Named boxes of :func:`space_filling_design` (``ltca friction-study --box``).
 DESIGN_BOXES: Mapping[str, Mapping[str, tuple[float, float, bool]]] = MappingProxyType({
     "table_5_1": TABLE_5_1_RANGE,
     "gear": GEAR_CONTACT_RANGE,
+    "gear_flank": GEAR_FLANK_RANGE,
+    "gear_edge": GEAR_EDGE_RANGE,
 })
 
 #: Space-filling samplers of :func:`space_filling_design` (scipy.stats.qmc).
@@ -182,8 +217,33 @@ def factorial_design(levels: Mapping[str, tuple[float, ...]] = TABLE_5_1, *,
     return check_design({k: arr[:, i] for i, k in enumerate(names)})
 
 
+def inside_box(design: Mapping[str, Array],
+               box: Mapping[str, tuple[float, float, bool]]) -> NDArray[np.bool_]:
+    """Which points of a design lie inside a box (every input within its closed range).
+
+    Parameters
+    ----------
+    design : mapping of str to array (n,)
+        Inputs of :data:`DESIGN_INPUTS` (their units).
+    box : mapping of str to (low, high, log)
+        Ranges; inputs the box does not name are not checked.
+
+    Returns
+    -------
+    array of bool (n,)
+    """
+    n = next(iter(design.values())).size
+    inside = np.ones(n, dtype=bool)
+    for k, (lo, hi, _) in box.items():
+        if k in design:
+            v = np.asarray(design[k], dtype=float)
+            inside &= (v >= lo) & (v <= hi)
+    return inside
+
+
 def space_filling_design(n: int, *, method: str = "sobol", seed: int = 2009, skip: int = 0,
                          box: Mapping[str, tuple[float, float, bool]] = TABLE_5_1_RANGE,
+                         exclude: Mapping[str, tuple[float, float, bool]] | None = None,
                          ) -> dict[str, Array]:
     """A seeded space-filling sample of the Table 5.1 box.
 
@@ -201,6 +261,11 @@ def space_filling_design(n: int, *, method: str = "sobol", seed: int = 2009, ski
         ``skip=128, n=128`` continues a design of ``n=128`` (points 128 … 255).
     box : mapping of str to (low, high, log)
         Range of each input, log-uniform where ``log``; default :data:`TABLE_5_1_RANGE`.
+    exclude : mapping of str to (low, high, log), optional
+        A box inside ``box`` whose points are passed over: the design fills the shell
+        between them (a study that extends one already run in ``exclude``). Sobol: the
+        sequence continues until ``n`` points lie outside; LHS: further hypercubes of ``n``
+        points (seeds ``[seed, 1]``, ``[seed, 2]``, …) are drawn until they do.
 
     Returns
     -------
@@ -209,7 +274,8 @@ def space_filling_design(n: int, *, method: str = "sobol", seed: int = 2009, ski
     Raises
     ------
     InputError
-        Bad ``n``, ``method``, ``seed``, ``skip`` or box (named).
+        Bad ``n``, ``method``, ``seed``, ``skip`` or box (named); an ``exclude`` box that
+        leaves less than 1 % of ``box`` outside it.
 
     Notes
     -----
@@ -230,20 +296,43 @@ def space_filling_design(n: int, *, method: str = "sobol", seed: int = 2009, ski
         if not (math.isfinite(lo) and math.isfinite(hi) and hi >= lo) or (log and lo <= 0):
             raise InputError(f"box.{k}: must be finite, low <= high (low > 0 if log), got "
                              f"({lo}, {hi})")
+    if method != "sobol" and skip:
+        raise InputError("skip: only the Sobol sequence can be continued (method 'sobol')")
+
+    def scaled(u: Array) -> dict[str, Array]:
+        out = {}
+        for i, k in enumerate(names):
+            lo, hi, log = box[k]
+            out[k] = (np.exp(np.log(lo) + u[:, i] * (np.log(hi) - np.log(lo))) if log
+                      else lo + u[:, i] * (hi - lo))
+        return out
+
     if method == "sobol":
         sampler = qmc.Sobol(d=len(names), scramble=True, seed=seed)
         if skip:
             sampler.fast_forward(skip)
-        with warnings.catch_warnings():  # the balance note for n not a power of two
-            warnings.simplefilter("ignore", UserWarning)
-            u = sampler.random(n)
+
+        def draw(_: int) -> Array:
+            with warnings.catch_warnings():  # the balance note for n not a power of two
+                warnings.simplefilter("ignore", UserWarning)
+                return sampler.random(n)
     else:
-        if skip:
-            raise InputError("skip: only the Sobol sequence can be continued (method 'sobol')")
-        u = qmc.LatinHypercube(d=len(names), seed=seed, optimization="random-cd").random(n)
-    out = {}
-    for i, k in enumerate(names):
-        lo, hi, log = box[k]
-        out[k] = (np.exp(np.log(lo) + u[:, i] * (np.log(hi) - np.log(lo))) if log
-                  else lo + u[:, i] * (hi - lo))
-    return check_design(out)
+        def draw(k: int) -> Array:
+            rng = seed if k == 0 else np.random.default_rng([seed, k])
+            return qmc.LatinHypercube(d=len(names), seed=rng,
+                                      optimization="random-cd").random(n)
+
+    if exclude is None:
+        return check_design(scaled(draw(0)))
+    kept: list[dict[str, Array]] = []
+    found = 0
+    for k in range(100):
+        part = scaled(draw(k))
+        keep = ~inside_box(part, exclude)
+        kept.append({name: v[keep] for name, v in part.items()})
+        found += int(keep.sum())
+        if found >= n:
+            return check_design({name: np.concatenate([p[name] for p in kept])[:n]
+                                 for name in names})
+    raise InputError(f"exclude: leaves {found} of {100 * n} points of the box outside it; "
+                     "it must leave at least 1 % of the box")

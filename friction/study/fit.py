@@ -47,8 +47,8 @@ from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
 from geometry.core.toml_files import dump_toml
 
-__all__ = ["DEFAULT_FEATURES", "EYRING_FEATURES", "combine_studies", "fit_kolivand2009",
-           "fit_statistics", "study_inputs", "write_fit"]
+__all__ = ["DEFAULT_FEATURES", "EYRING_FEATURES", "SAMPLING_SETTINGS", "combine_studies",
+           "fit_kolivand2009", "fit_statistics", "study_inputs", "write_fit"]
 
 Array = NDArray[np.float64]
 
@@ -69,6 +69,11 @@ EYRING_FEATURES: tuple[str, ...] = ("1", "ln_lambda", "ln_lambda^2", "ln_lambda^
 _REGIMES = ("boundary_mixed", "mixed", "full_film")
 
 
+#: Solver settings of a study that set how a point is sampled, not what is solved: studies
+#: that differ only in these combine (:func:`combine_studies`).
+SAMPLING_SETTINGS = ("solver_average", "solver_realisations")
+
+
 def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
     """Several friction studies of one oil and solver settings as one (e.g. a Sobol design
     and its continuation).
@@ -76,7 +81,10 @@ def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
     Parameters
     ----------
     studies : sequence of xarray.Dataset
-        Friction studies (``ltca friction-study``) with equal ``solver_*`` attributes.
+        Friction studies (``ltca friction-study``) with equal ``solver_*`` attributes but
+        the :data:`SAMPLING_SETTINGS` (how long a transient point is averaged, how many
+        roughness realisations: the same model sampled longer), which may differ and are
+        then joined (``"; "``).
 
     Returns
     -------
@@ -93,7 +101,7 @@ def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
         raise InputError("studies: at least one friction study is needed")
     first = studies[0]
     for k, v in first.attrs.items():
-        if k.startswith("solver_") and k != "solver_commit":
+        if k.startswith("solver_") and k not in ("solver_commit", *SAMPLING_SETTINGS):
             for other in studies[1:]:
                 if other.attrs.get(k) != v:
                     raise InputError(f"studies: {k} differs ({v!r} and {other.attrs.get(k)!r}); "
@@ -107,6 +115,10 @@ def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
         attrs[k] = "; ".join(str(st.attrs.get(k, "")) for st in studies)
     attrs["solver_commit"] = "; ".join(sorted({str(st.attrs.get("solver_commit", ""))
                                                for st in studies}))
+    for k in SAMPLING_SETTINGS:
+        values = [str(st.attrs.get(k, "")) for st in studies]
+        if len(set(values)) > 1:
+            attrs[k] = "; ".join(values)
     attrs["wall_time"] = float(sum(float(st.attrs.get("wall_time", 0.0)) for st in studies))
     attrs["points_converged"] = int(np.count_nonzero(ds["status"].values == 0))
     ds.attrs = attrs
