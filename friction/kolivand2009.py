@@ -348,7 +348,7 @@ class Kolivand2009Fit:
                                  f"{self.viscosity_model!r}")
 
     def mu(self, groups: Mapping[str, Array],
-           traction_groups: Mapping[str, Array] | None = None) -> Array:
+           raw_groups: Mapping[str, Array] | None = None) -> Array:
         """μ of the fit at the groups (:func:`contact_groups`), no clipping.
 
         Parameters
@@ -356,10 +356,14 @@ class Kolivand2009Fit:
         groups : mapping of str to array
             At least ``lambda``, ``SR``, ``U``, ``G``, ``H``, ``Seq/Sc``, ``Sc/R``, and for
             ``eyring`` the inputs of :meth:`film_traction`.
-        traction_groups : mapping of str to array, optional
-            ``eyring``: where μ_E is evaluated, if not at ``groups`` (:func:`kolivand2009`
-            takes μ_E at the inputs as they are and the regression and ψ at the inputs
-            clipped to the fitted box).
+        raw_groups : mapping of str to array, optional
+            ``eyring``: where the asperity share ψ and μ_E are evaluated, if not at
+            ``groups``. :func:`kolivand2009` passes the inputs as they are here and the
+            inputs clipped to the fitted box as ``groups``: the regression, a polynomial
+            in the logarithms that diverges outside its data, is held at the box's edge,
+            while ψ (a logistic share, bounded in (0, 1); the bundled fit's logit falls
+            monotonically with ln λ: its derivative, a quadratic in ln λ, has no real
+            root) and μ_E (a physical law) follow the inputs.
 
         Returns
         -------
@@ -370,9 +374,9 @@ class Kolivand2009Fit:
         mu = np.exp(self.log_mu(groups))
         if self.structure == "regimes":
             return mu
-        psi = self.asperity_share(groups)
+        at = groups if raw_groups is None or self.structure != "eyring" else raw_groups
+        psi = self.asperity_share(at)
         if self.structure == "eyring":
-            at = groups if traction_groups is None else traction_groups
             mu = (1.0 - psi) * self.film_traction(at) * mu
         return mu + self.boundary_friction * psi
 
@@ -590,10 +594,14 @@ def kolivand2009(
     FrictionModelRangeWarning
         Inputs outside the fitted box (the file's ``[range]``, including λ): the fitted
         parts are then taken at the nearest point of the box — all of μ for ``regimes``
-        and ``split``; for ``eyring`` the regression and ψ, while μ_E takes the inputs as
-        they are (its physics — Hertz pressure, the central film, the Eyring law capped at
-        Λp — holds beyond the study's box: at pure rolling the film's shear vanishes, at
-        edge pressures it is held at the limiting shear).
+        and ``split``; for ``eyring`` the regression only, while μ_E and the asperity
+        share ψ take the inputs as they are (μ_E's physics — Hertz pressure, the central
+        film, the Eyring law capped at Λp — holds beyond the study's box: at pure rolling
+        the film's shear vanishes, at edge pressures it is held at the limiting shear; ψ
+        is a logistic share in (0, 1) that keeps rising as λ falls). Checked against the
+        solver outside the box: ``friction_study_75W90_outside.nc`` (p_h to 4.5 GPa, SR
+        to 0.001, u_e to 0.1 m/s), ``…_flank.nc`` (a gear flank's light-load ends and
+        pitch line) and ``…_edge.nc`` (a rounded tooth edge on a flank; docs/friction.md).
 
     Notes
     -----
@@ -621,8 +629,8 @@ def kolivand2009(
             warnings.warn(
                 f"kolivand2009: {name} outside the fitted range [{lo:g}, {hi:g}] "
                 f"[{RANGE_INPUTS[name]}] at {n} of {bad.size} point(s); "
-                + ("the regression and asperity share taken at the nearest point of the "
-                   "range, the film traction at the inputs" if fit.structure == "eyring"
+                + ("the regression taken at the nearest point of the range, the asperity "
+                   "share and the film traction at the inputs" if fit.structure == "eyring"
                    else "μ taken at the nearest point of the range"),
                 FrictionModelRangeWarning, stacklevel=3)
     clipped = _clip_to_range(fit, inputs)
@@ -634,7 +642,7 @@ def kolivand2009(
         e_prime=e_prime)
     lo, hi = fit.ranges["lambda"]
     groups["lambda"] = np.clip(groups["lambda"], lo, hi)
-    return scalar_or_array(fit.mu(groups, traction_groups=raw))
+    return scalar_or_array(fit.mu(groups, raw_groups=raw))
 
 
 def kolivand2009_validity(*, hertz_pressure: ArrayLike, slide_to_roll: ArrayLike,

@@ -56,13 +56,15 @@ class OperatingConditions:
         choice, inside the 25–100 °C of the seed's Table 5.2).
     roughness : float — [µm]
         RMS roughness Rq of each flank, finite and > 0 (composite σ = √2 Rq, seed §5.2.3).
-        Default 0.8 µm, the surface of the xu2007 check point (seed/NOTES.md) and inside
-        that model's fitted 0.1–1 µm.
+        Default 0.8 µm, the seed's operating roughness (§5.3) and inside the fitted
+        0.1–1 µm of ``kolivand2009`` and ``xu2007``.
     friction_model : str
         A registered friction coefficient model
-        (:func:`friction.coefficient.available_friction_models`). Default ``"xu2007"``
-        (Xu et al. 2007, the same mixed-EHL regression methodology as the seed's
-        Eq. 5.11, whose coefficients are not recoverable).
+        (:func:`friction.coefficient.available_friction_models`). Default
+        ``"kolivand2009"``: the seed's Eq. 5.11 method — its mixed-EHL line-contact study
+        and a fitted μ formula — done again with the toolkit's solver (docs/friction.md,
+        "Which model is the default"); ``"xu2007"`` (Xu et al. 2007's published regression
+        of the same methodology) was the default before.
 
     Raises
     ------

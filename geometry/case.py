@@ -117,7 +117,7 @@ class OperatingPoint:
         RMS roughness Rq of each flank, finite and > 0. Default 0.8.
     friction_model : str
         Friction coefficient model name (checked where the efficiency stage runs).
-        Default ``"xu2007"``.
+        Default ``"kolivand2009"``.
 
     Raises
     ------

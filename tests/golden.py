@@ -5,7 +5,9 @@ bundled default case at the seed's Table 3.1 conditions, the efficiency stage at
 writes, encoded with zlib so that it is small enough to keep in the repository (lossless).
 First written before the restructuring of ``contact/`` into its layers (issue 20), which
 reproduced it; rewritten when the default case became the reference design
-``kolivand2009_fm_11x41_reference`` (issue 19), an intended change of every result. It
+``kolivand2009_fm_11x41_reference`` (issue 19), an intended change of every result; and
+when ``kolivand2009`` became the default friction model (issue 34: ``/friction`` and the
+summary's efficiency changed, every other variable identical). It
 guards every refactoring that must not change results: a new run must reproduce every
 variable and attribute but the timings and the file's creation stamp.
 
@@ -63,8 +65,9 @@ class Tolerance(NamedTuple):
 ACROSS_MACHINES: dict[str, Tolerance] = {
     "/friction/friction_coefficient": Tolerance(
         1e-7, 0.0,
-        "a friction coefficient is a power of its segment's own load (xu2007: p_h^1.03, "
-        "and through exp(|SR| p_h log ν)), not of the largest load: at the lightest loaded "
+        "a friction coefficient is a function of its segment's own load (kolivand2009: "
+        "the Eyring traction over the segment's Hertz zone and powers of p_h; xu2007: "
+        "p_h^1.03), not of the largest load: at the lightest loaded "
         "segments (force ~1e-3 of the largest) the forces' round-off, ~1e-11 of the largest "
         "force, is ~1e-8 of the segment's own, and μ there moved by 4-5e-9 of the largest μ; "
         "1e-7 keeps a factor 20"),

@@ -317,5 +317,5 @@ def test_every_help_has_examples_and_no_internal_constant_names():
             assert argv[0] == name
             p.parse_args(attach_negative_values(argv))
     run = helps["run"]
-    for value in ("1500 rpm", "75W90", "90 °C", "0.8 µm", "xu2007"):
+    for value in ("1500 rpm", "75W90", "90 °C", "0.8 µm", "kolivand2009"):
         assert value in run, value

@@ -23,5 +23,5 @@ OPERATING_DEFAULTS: Mapping[str, Any] = MappingProxyType({
     "lubricant": "75W90",
     "temperature": 90.0,
     "roughness": 0.8,
-    "friction_model": "xu2007",
+    "friction_model": "kolivand2009",
 })
