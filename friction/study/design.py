@@ -82,10 +82,10 @@ GEAR_CONTACT_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
 
 #: The gear box widened to every flank (contact-curve) segment of the default case and of
 #: Table 5.4's A and B at the seed's operating points (1500 rpm, 500 N·m, 90 °C, Rq 0.8 µm),
-#: measured: p_h down to ~100 MPa (1 % of the flank segments lie lower, at the contact
-#: curves' light-load ends, ~0.1 % of the load: a Hertz zone narrower than the ground
-#: profile's wavelengths), SR down to 1e-4 at the pitch line, R from 4.8 mm; p_h
-#: log-uniform here. Points outside :data:`GEAR_CONTACT_RANGE` (``exclude``) extend the
+#: measured: p_h down to ~100 MPa (0.3–1 % of the flank segments lie lower, at the
+#: contact curves' light-load ends, under 0.005 % of the load: a Hertz zone narrower than
+#: the ground profile's wavelengths), SR down to 1e-4 at the pitch line, R from 4.8 mm;
+#: p_h log-uniform here. Points outside :data:`GEAR_CONTACT_RANGE` (``exclude``) extend the
 #: study already run in it.
 GEAR_FLANK_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
     "hertz_pressure": (100.0, 3000.0, True),
