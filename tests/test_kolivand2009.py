@@ -508,3 +508,29 @@ def test_gear_segments_inside_the_range_or_flagged_with_the_reason():
             assert np.isfinite(fr["friction_coefficient"].values[loaded]).all()
     assert 0.3 <= flagged["kolivand2009"] <= 0.45
     assert flagged["kolivand2009"] < flagged["xu2007"]
+
+
+def test_run_warning_says_where_the_model_extrapolated(capsys):
+    """``ltca run``'s warning (``contact.commands.run.print_extrapolation_warning``) on the
+    suite's hypoid-example LTCA: the flagged count of the ``/friction`` flag, then the
+    flanks and the edges apart with their share of the load, and where the checks beyond
+    the range are documented; a dataset without flags prints nothing."""
+    from test_ltca import _run
+
+    from contact.commands.run import print_extrapolation_warning
+    from friction.efficiency import efficiency_analysis, extrapolated_segments
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FrictionModelRangeWarning)
+        fr = efficiency_analysis(_run())
+    flagged, loaded = extrapolated_segments(fr)
+    assert 0 < flagged < loaded
+    print_extrapolation_warning(fr)
+    out = capsys.readouterr().out
+    assert out.startswith("WARNING: friction model kolivand2009 extrapolated")
+    assert f"at {flagged} of {loaded} loaded segments" in out
+    assert "segments on the flanks" in out and "segments on the edges" in out
+    assert "of the load" in out and "docs/friction.md" in out
+    print_extrapolation_warning(fr.assign(friction_model_extrapolated=0
+                                          * fr["friction_model_extrapolated"]))
+    assert capsys.readouterr().out == ""

@@ -346,7 +346,9 @@ def print_extrapolation_warning(friction) -> None:
         print(f"WARNING: friction model {friction.attrs.get('friction_model', '')} "
               f"extrapolated outside its fitted range at {flagged} of {loaded} loaded "
               "segments (flag /friction/friction_model_extrapolated; marked on the plots): "
-              "the efficiency there is an extrapolation" + (f": {where}" if where else ""))
+              "the efficiency there is an extrapolation"
+              + (f": {where} (how far it was checked beyond its range: docs/friction.md)"
+                 if where else ""))
 
 
 def write_figures(path: Path, plots: str | None, report: str | None,
