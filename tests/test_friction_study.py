@@ -15,12 +15,14 @@ import contact.study.friction_study as fstudy
 from contact.study.friction_study import run_friction_study
 from contact.study.store import ResultStore
 from friction.study.design import (
+    DESIGN_BOX_TEXT,
     DESIGN_INPUTS,
     GEAR_CONTACT_RANGE,
     GEAR_FLANK_RANGE,
     TABLE_5_1,
     TABLE_5_1_RANGE,
     check_design,
+    design_box_of,
     factorial_design,
     inside_box,
     space_filling_design,
@@ -106,6 +108,21 @@ def test_design_outside_a_box_fills_the_shell(method):
     with pytest.raises(InputError, match=r"^exclude: leaves 0 of"):
         space_filling_design(4, method=method, box=GEAR_CONTACT_RANGE,
                              exclude=GEAR_FLANK_RANGE)
+
+
+def test_design_box_read_back_from_the_study_files():
+    """``ltca friction-fit --box auto``: the box each committed study was designed in is read
+    back from its ``design_box`` attribute (one table of the texts the command writes); the
+    flank shell, which also names the gear box it lies outside, is the flank box."""
+    from friction.kolivand2009 import DATA_DIR
+    from geometry.core.io import read_netcdf
+
+    expect = {"": "gear", "_heldout": "gear", "_flank": "gear_flank", "_edge": "gear_edge"}
+    for suffix, name in expect.items():
+        st = read_netcdf(DATA_DIR / f"friction_study_75W90{suffix}.nc", tree=False)
+        assert design_box_of(st.attrs["design_box"]) == name, suffix
+    for name, text in DESIGN_BOX_TEXT.items():
+        assert design_box_of(text) == name
 
 
 @pytest.mark.parametrize(("call", "match"), [

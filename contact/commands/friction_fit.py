@@ -43,7 +43,7 @@ def register(sub) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from contact.commands.output_paths import check_output_file
-    from friction.study.design import DESIGN_BOXES
+    from friction.study.design import DESIGN_BOXES, design_box_of
     from friction.study.fit import combine_studies, fit_kolivand2009, write_fit
     from geometry.core.errors import InputError
     from geometry.core.io import read_netcdf
@@ -56,9 +56,7 @@ def run(args: argparse.Namespace) -> int:
             if args.held_out else None)
     box = args.box
     if box == "auto":
-        named = str(study.attrs.get("design_box", ""))
-        box = ("gear_flank" if "gear flank contacts" in named else
-               "gear" if "gear contacts" in named else "table_5_1")
+        box = design_box_of(str(study.attrs.get("design_box", "")))
     fit = fit_kolivand2009(study, heldout=held, structure=args.structure,
                            box=DESIGN_BOXES[box])
     path = write_fit(fit, args.output)

@@ -10,16 +10,6 @@ from contact.commands.options import progress_option
 #: Place in ``ltca --help``.
 ORDER = 61
 
-#: The design box as the study file's ``design_box`` names it (``ltca friction-fit --box
-#: auto`` reads it back).
-BOX_TEXT = {"table_5_1": "seed Table 5.1; R, u_e, SR log-uniform",
-            "gear": "gear contacts (friction.study.design.GEAR_CONTACT_RANGE); R, u_e, SR "
-                    "log-uniform",
-            "gear_flank": "gear flank contacts (friction.study.design.GEAR_FLANK_RANGE); p_h, "
-                          "R, u_e, SR log-uniform",
-            "gear_edge": "tooth-edge contacts (friction.study.design.GEAR_EDGE_RANGE); R, "
-                         "u_e, SR log-uniform"}
-
 
 def register(sub) -> None:
     """Add the sub-command to an ``argparse`` sub-parser collection."""
@@ -94,7 +84,12 @@ def run(args: argparse.Namespace) -> int:
     from contact.commands.output_paths import check_output_file
     from contact.study.friction_study import run_friction_study
     from contact.study.store import ResultStore
-    from friction.study.design import DESIGN_BOXES, factorial_design, space_filling_design
+    from friction.study.design import (
+        DESIGN_BOX_TEXT,
+        DESIGN_BOXES,
+        factorial_design,
+        space_filling_design,
+    )
     from friction.study.points import SolveSettings
     from geometry.core.errors import InputError
     from geometry.core.io import write_netcdf
@@ -111,9 +106,9 @@ def run(args: argparse.Namespace) -> int:
                                       skip=args.skip, box=DESIGN_BOXES[args.box],
                                       exclude=exclude)
         attrs = {"method": args.design, "seed": args.seed, "skip": args.skip,
-                 "box": BOX_TEXT[args.box]}
+                 "box": DESIGN_BOX_TEXT[args.box]}
         if exclude is not None:
-            attrs["box"] += f"; outside {BOX_TEXT[args.exclude_box]}"
+            attrs["box"] += f"; outside {DESIGN_BOX_TEXT[args.exclude_box]}"
     attrs["points"] = int(next(iter(design.values())).size)
     settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
                              lubricant=args.lubricant, realisations=args.realisations,

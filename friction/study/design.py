@@ -27,9 +27,10 @@ from numpy.typing import NDArray
 from geometry.core.errors import InputError
 from geometry.core.validation import integer, one_of
 
-__all__ = ["DESIGN_BOXES", "DESIGN_INPUTS", "DESIGN_METHODS", "GEAR_CONTACT_RANGE",
-           "GEAR_EDGE_RANGE", "GEAR_FLANK_RANGE", "TABLE_5_1", "TABLE_5_1_RANGE", "check_design",
-           "factorial_design", "inside_box", "space_filling_design"]
+__all__ = ["DESIGN_BOXES", "DESIGN_BOX_TEXT", "DESIGN_INPUTS", "DESIGN_METHODS",
+           "GEAR_CONTACT_RANGE", "GEAR_EDGE_RANGE", "GEAR_FLANK_RANGE", "TABLE_5_1",
+           "TABLE_5_1_RANGE", "check_design", "design_box_of", "factorial_design",
+           "inside_box", "space_filling_design"]
 
 Array = NDArray[np.float64]
 
@@ -118,6 +119,18 @@ DESIGN_BOXES: Mapping[str, Mapping[str, tuple[float, float, bool]]] = MappingPro
     "gear": GEAR_CONTACT_RANGE,
     "gear_flank": GEAR_FLANK_RANGE,
     "gear_edge": GEAR_EDGE_RANGE,
+})
+
+#: How a study file's ``design_box`` attribute names each box (``ltca friction-study``
+#: writes it, :func:`design_box_of` reads it back for ``ltca friction-fit --box auto``).
+DESIGN_BOX_TEXT: Mapping[str, str] = MappingProxyType({
+    "table_5_1": "seed Table 5.1; R, u_e, SR log-uniform",
+    "gear": "gear contacts (friction.study.design.GEAR_CONTACT_RANGE); R, u_e, SR "
+            "log-uniform",
+    "gear_flank": "gear flank contacts (friction.study.design.GEAR_FLANK_RANGE); p_h, R, u_e, "
+                  "SR log-uniform",
+    "gear_edge": "tooth-edge contacts (friction.study.design.GEAR_EDGE_RANGE); R, u_e, SR "
+                 "log-uniform",
 })
 
 #: Space-filling samplers of :func:`space_filling_design` (scipy.stats.qmc).
@@ -215,6 +228,28 @@ def factorial_design(levels: Mapping[str, tuple[float, ...]] = TABLE_5_1, *,
             if not unordered_roughness or r[-2] <= r[-1]]
     arr = np.asarray(rows, dtype=float)
     return check_design({k: arr[:, i] for i, k in enumerate(names)})
+
+
+def design_box_of(design_box: str) -> str:
+    """The name of the box a study's ``design_box`` attribute names (:data:`DESIGN_BOXES`).
+
+    Parameters
+    ----------
+    design_box : str
+        The attribute (of one study, or of several joined by ``"; "``).
+
+    Returns
+    -------
+    str
+        The first of ``gear_flank``, ``gear``, ``gear_edge`` whose text
+        (:data:`DESIGN_BOX_TEXT`, up to its first ``";"``) it contains — the widest first,
+        so a flank shell ``outside`` the gear box, or a gear study joined with its flank
+        shell, is ``gear_flank`` — else ``table_5_1``.
+    """
+    for name in ("gear_flank", "gear", "gear_edge"):
+        if DESIGN_BOX_TEXT[name].split(";")[0] in design_box:
+            return name
+    return "table_5_1"
 
 
 def inside_box(design: Mapping[str, Array],
