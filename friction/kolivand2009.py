@@ -49,6 +49,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from friction.ehl.rheology import VISCOSITY_PRESSURE_MODELS
 from friction.film import pan_hamrock
+from friction.traction import smooth_film_traction
 from friction.validity import FrictionModelRangeWarning
 from geometry.core.errors import InputError
 from geometry.core.toml_files import read_toml
@@ -236,8 +237,6 @@ def groups_film_traction(groups: Mapping[str, Array], *, eyring_stress: float,
     -----
     Source: see :func:`friction.traction.smooth_film_traction`.
     """
-    from friction.traction import smooth_film_traction
-
     return np.asarray(smooth_film_traction(
         hertz_pressure=groups["hertz_pressure"], slide_to_roll=groups["SR"],
         entraining_velocity=groups["entraining_velocity"], viscosity=groups["viscosity"],
