@@ -96,7 +96,10 @@ DEFAULT_SEPARATION = 0.0063
 _COARSE_PER_CELL = 2  # coarse samples per grid cell along a curve
 
 
-_END_ITER = 12  # false-position steps on a curve end (to 1e-9 of the face width)
+#: false-position steps on a curve end: all of them run unless every end of the batch is
+#: within 1e-9 of the face width; a jump end (bisection) ends within 2⁻¹¹–2⁻¹² of its
+#: coarse step, 3–6e-6 of the face width on the default grid (:func:`_false_position_ends`)
+_END_ITER = 12
 
 
 class ContactCurves(NamedTuple):
@@ -243,8 +246,13 @@ def _false_position_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.n
                          va: np.ndarray) -> np.ndarray:
     """Ends of the iso-lines Q = t (M,) between an inside place a (profile place va) and an
     outside place b: false position (Illinois) on the continuous inside measure, bisection
-    where the measure jumps, to 1e-9 of the face width (:data:`_END_ITER` steps at most).
-    Returns the last inside place of each (``a``, ``va`` are updated in place)."""
+    where the measure jumps (an outside place without an iso-line point or in a cell with
+    an uncomputed corner: −1), :data:`_END_ITER` steps, fewer only if every end of the
+    batch is then within 1e-9 of the face width. Jump ends are left within 2⁻¹¹–2⁻¹² of
+    the coarse step, 3–6e-6 of the face width on the default grid (~0.1–0.2 µm); measured,
+    45 % of a study point's ends at the default case's mounting are such (the rest within
+    1e-9), 98 % of the transition search's at ΔE = −0.12, ΔP = −0.08 mm. Returns the last
+    inside place of each (``a``, ``b``, ``va`` are updated in place)."""
     ca = f.measure(a, va)
     cb = f.measure(b, f.solve_v(b, t, v_start=va))
     # the last step moved a (prev_in) or b (prev_out); updates in place (own arrays)
