@@ -69,6 +69,14 @@ TARGET_POINT_S = 0.25  # a study point's CPU time
 FH_TARGET_RATIO = 1.5  # a face-hobbed analysis at most this many times a face-milled one
 
 
+def _kernels_in_use() -> str:
+    """The iso-line searches' implementation the timings ran (``LTCA_KERNELS``)."""
+    from contact.utca.fields import kernels_module
+
+    return ("numpy (LTCA_KERNELS=numpy, or numba not installed)" if kernels_module() is None
+            else "numba (LTCA_KERNELS=numpy for the NumPy path)")
+
+
 def _offsets(repeat: int) -> list[tuple[float, float]]:
     """(ΔE, ΔP) offsets [mm] of the study points from the case's mounting."""
     return [(0.02 * ((i % 5) - 2), 0.015 * ((i * 3) % 5 - 2)) for i in range(repeat)]
@@ -145,7 +153,9 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
     evaluations (and their points), the spline evaluations (FITPACK, and their points),
     the contact curves' coarse samples solved on Q's column pieces (where the code has
     them: :meth:`contact.utca.EaseOffFields.solve_columns`, and their points) and the
-    Python-level calls (``cProfile``'s count of function calls)."""
+    Python-level calls (``cProfile``'s count of function calls). Counted on the iso-line
+    searches' NumPy path (``LTCA_KERNELS=numpy``): the compiled kernels do the same
+    arithmetic, out of sight of these counters."""
     import cProfile
     import pstats
 
@@ -184,11 +194,17 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
     if columns is not None:
         fields.EaseOffFields.solve_columns = solve_columns
     profile = cProfile.Profile()
+    kernels = os.environ.get("LTCA_KERNELS")
+    os.environ["LTCA_KERNELS"] = "numpy"
     try:
         profile.enable()
         analyse_point(shared, 0, point)
         profile.disable()
     finally:
+        if kernels is None:
+            del os.environ["LTCA_KERNELS"]
+        else:
+            os.environ["LTCA_KERNELS"] = kernels
         meshing._newton, meshing._evaluate, _fitpack2.BivariateSpline.ev = originals
         if columns is not None:
             fields.EaseOffFields.solve_columns = columns
@@ -261,7 +277,7 @@ def main() -> None:
     print(f"T_p = {args.torque:g} N m, {opts.cycles} x {opts.rolls_per_cycle} roll positions, "
           f"solver {opts.solver}, one BLAS thread; CPU time (process_time), medians of "
           f"{args.repeat} runs; load average {load:.1f} -> {os.getloadavg()[0]:.1f} on "
-          f"{os.cpu_count()} cores")
+          f"{os.cpu_count()} cores; iso-line kernels: {_kernels_in_use()}")
     for r in results:
         if r["passes"] > 1:
             print(f"  {r['name']}: LTCA in {r['passes']} passes (more pairs or a wider edge "

@@ -49,6 +49,7 @@ from contact.catalogue import resolve_case  # noqa: E402
 from contact.study import StudyRun, sweep  # noqa: E402
 from contact.study.engine import analyse_point, open_client  # noqa: E402
 from contact.study.points import StudyInputs  # noqa: E402
+from contact.utca.fields import kernels_module  # noqa: E402
 
 TORQUE = 250.0
 #: the stage clock's source, uploaded to the workers (read here: an upload replaces the
@@ -158,7 +159,8 @@ def main() -> None:
             res.append(r)
         small = (run_map(cases[0], args.small, 2, tmp) if args.small > 0 else None)
     print(f"{args.grid} x {args.grid} dE x dP maps at {TORQUE:g} N m; load average "
-          f"{load0:.1f} -> {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
+          f"{load0:.1f} -> {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores; iso-line "
+          f"kernels: {'numpy' if kernels_module() is None else 'numba'} (LTCA_KERNELS)")
     headers = ["", *(r["name"] for r in res)]
     rows = [
         ["CPU s per point, in this process (median)",

@@ -66,7 +66,8 @@ def test_the_comparison_sees_a_change():
 
 
 _OTHER_KERNEL_RUN = PRINT_KERNEL + """
-import sys
+import os, sys
+os.environ["LTCA_KERNELS"] = "numpy"
 sys.path.insert(0, {tests!r})
 import xarray as xr
 from sweep_guard import GUARD, differences, run_guard
@@ -79,7 +80,11 @@ def test_the_guard_on_other_blas_kernels():
     """The sweep agrees with the stored one (same tolerance) when OpenBLAS runs another
     CPU's kernels: the pinion edge of two points followed the kernels' round-off of the
     margin (one segment more or fewer, LTE mean 1e-6 relative), which the machine that
-    wrote the file never saw. About 25 s: the sweep again, in a subprocess."""
+    wrote the file never saw. About 25 s: the sweep again, in a subprocess.
+
+    That run also takes the iso-line searches' NumPy path (``LTCA_KERNELS=numpy``), where
+    the test above takes the compiled kernels wherever numba is installed (the ``fast``
+    extra, part of ``test``): both paths are held to the stored sweep."""
     out = run_on_other_kernel(_OTHER_KERNEL_RUN.format(tests=str(Path(__file__).parent),
                                                        rtol=RTOL))
     assert "AGREES" in out, out[-5000:]

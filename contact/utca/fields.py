@@ -27,13 +27,23 @@ EaseOffFields   splines of an ease-off's fields and the contact region's tests
 
 from __future__ import annotations
 
+import functools
+import importlib
+import os
+from types import ModuleType
+from typing import NamedTuple
+
 import numpy as np
 from scipy.interpolate import BSpline, RectBivariateSpline
 
 from contact.utca.easeoff import EaseOff, fill_missing
 from geometry.core.errors import InputError, ModelUnavailableError
 
-__all__ = ["EaseOffFields"]
+__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "kernels_module"]
+
+#: The implementations of the iso-line searches: ``numpy`` (the reference) and ``numba``
+#: (:mod:`contact.utca.isoline_numba`, the same arithmetic compiled; the ``fast`` extra).
+KERNELS = ("numpy", "numba")
 
 _V_NEWTON = 6  # Newton steps of the profile place v*(u) on the spline of Q
 _COLUMN_NEWTON = 12  # safeguarded Newton steps of v*(u) on a column's cubic piece
@@ -57,12 +67,68 @@ def _piece_basis(t: np.ndarray, k: int = 3) -> np.ndarray:
     return out
 
 
+class KernelSplines(NamedTuple):
+    """Splines as the compiled kernels take them: (tx, ty, c, kx, ky) each."""
+
+    q: tuple  # Q [rad]
+    q_v: tuple  # ∂Q/∂v [rad]
+    margin: tuple  # the pinion mate's inside measure [1]
+
+
+@functools.cache
+def _numba_kernels() -> ModuleType | None:
+    """:mod:`contact.utca.isoline_numba`, or None where numba is not installed."""
+    try:
+        return importlib.import_module("contact.utca.isoline_numba")
+    except ImportError:
+        return None
+
+
+def kernels_module(kernels: str | None = None) -> ModuleType | None:
+    """The compiled iso-line kernels to use, or None for the NumPy path.
+
+    Parameters
+    ----------
+    kernels : {"numpy", "numba"} or None
+        None: the environment variable ``LTCA_KERNELS`` (same values), else ``numba``
+        where it is installed and ``numpy`` otherwise.
+
+    Returns
+    -------
+    module or None
+        :mod:`contact.utca.isoline_numba`, or None (NumPy).
+
+    Raises
+    ------
+    InputError
+        An unknown name, or ``numba`` asked for where it is not installed.
+    """
+    source = "kernels"
+    if kernels is None:
+        kernels = os.environ.get("LTCA_KERNELS") or None
+        source = "LTCA_KERNELS"
+        if kernels is None:
+            return _numba_kernels()
+    if kernels not in KERNELS:
+        raise InputError(f"{source}: must be one of {', '.join(KERNELS)}, got {kernels!r}")
+    if kernels == "numpy":
+        return None
+    mod = _numba_kernels()
+    if mod is None:
+        raise InputError(f"{source}: 'numba' needs numba installed "
+                         "(pip install 'hypoid-ltca[fast]')")
+    return mod
+
+
 class EaseOffFields:
     """Bicubic splines of the ease-off fields over the gear grid (u, v).
 
     Parameters
     ----------
     eo : contact.utca.easeoff.EaseOff
+    kernels : {"numpy", "numba"} or None
+        The iso-line searches' implementation (:func:`kernels_module`; default None: numba
+        where installed unless ``LTCA_KERNELS=numpy``). Both give the same numbers.
 
     Attributes
     ----------
@@ -86,15 +152,21 @@ class EaseOffFields:
     gap_range : (float, float) — [1/rad]
         Least and greatest K of the nodes (:meth:`gap_at` holds K within it).
 
+    kernels : module or None
+        The compiled kernels in use (:mod:`contact.utca.isoline_numba`), None for NumPy.
+    kernel_splines : KernelSplines
+        Q, ∂Q/∂v and the margin as the kernels take them (only with ``kernels``).
+
     Raises
     ------
     InputError
-        Fewer than 16 valid nodes.
+        Fewer than 16 valid nodes, or an unknown ``kernels``.
     ModelUnavailableError
         Q is not monotone along the profile direction.
     """
 
-    def __init__(self, eo: EaseOff):
+    def __init__(self, eo: EaseOff, kernels: str | None = None):
+        self.kernels = kernels_module(kernels)
         self.eo = eo
         self.u, self.v = eo.u, eo.v
         computed = np.isfinite(eo.raw_ease_off_angle) & np.isfinite(eo.raw_roll_angle)
@@ -141,6 +213,12 @@ class EaseOffFields:
         # curves and the probes of near misses use two sets)
         self._lattices: dict[tuple, np.ndarray] = {}
         self._columns: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
+        if self.kernels is not None:
+            # the splines as the kernels take them: (tx, ty, c, kx, ky)
+            self.kernel_splines = KernelSplines(
+                (*self.q.tck, *self.q.degrees),
+                self.kernels.derivative_spline(self.q.tck, self.q.degrees, 0, 1),
+                (*self.margin.tck, *self.margin.degrees))
 
     def gap_at(self, u, v):
         """The pinion's gap curvature K at gear places, held within the nodes' range.
@@ -257,6 +335,13 @@ class EaseOffFields:
         target = np.asarray(target, dtype=float)
         nb, nc = target.size, uc.size
         vn, s = self.v, self.q_sign
+        if self.kernels is not None:  # the same arithmetic, compiled
+            breaks, pieces = self.columns(uc)
+            cell_piece = np.clip(np.searchsorted(breaks, 0.5 * (vn[:-1] + vn[1:]),
+                                                 side="right") - 1, 0, len(breaks) - 2)
+            return self.kernels.solve_columns(self.lattice(uc), vn, float(s),
+                                              target.ravel(), breaks, pieces, cell_piece,
+                                              _COLUMN_NEWTON)
         qn = self.lattice(uc)[None, :, :]  # (1, nc, nv)
         tg = target[:, None]
         below = (s * (qn - tg[..., None])) <= 0
@@ -319,6 +404,13 @@ class EaseOffFields:
             The least of :meth:`measure_terms`: ≥ 0 inside the contact region, < 0
             outside, −1 where undefined (v NaN or a cell with an uncomputed corner).
         """
+        if self.kernels is not None:
+            u, v = (np.asarray(a, dtype=float) for a in (u, v))
+            if u.shape != v.shape:
+                u, v = np.broadcast_arrays(u, v)
+            ks = self.kernel_splines
+            return self.kernels.measure(ks.margin, self.u, self.v, self.cell_ok, u.ravel(),
+                                        v.ravel()).reshape(u.shape)
         fin = np.isfinite(v)
         vs = np.where(fin, v, self.v[0])
         # the least of measure_terms, taken in their order (the reduction's own sequence of
@@ -396,6 +488,12 @@ class EaseOffFields:
             grid by more than 1e-9 of it or |Q − q| > 1e-9 rad.
         """
         v0, v1 = self.v[0], self.v[-1]
+        if self.kernels is not None:
+            ks = self.kernel_splines
+            return self.kernels.newton_v(
+                ks.q, ks.q_v, v0, v1, np.asarray(uf, dtype=float),
+                np.asarray(tf, dtype=float), np.asarray(v, dtype=float),
+                np.zeros(len(uf), dtype=bool) if miss is None else np.asarray(miss, bool))
         f = self.q.ev(uf, v) - tf
         # Newton on the points not yet converged (and not known to miss) only
         act = np.flatnonzero(~(np.abs(f) < 1e-13) if miss is None

@@ -1,0 +1,335 @@
+"""Compiled kernels of the iso-line searches on the ease-off splines (numba; issue 32).
+
+The contact curves' searches (:mod:`contact.utca.contact_curves`) iterate Newton's method
+and false position on a few hundred places at a time, so in NumPy most of their time is
+the interpreter's, not the arithmetic's. These kernels run the same iterations point by
+point in compiled loops, with **the same floating-point operations in the same order** as
+the NumPy path of :class:`contact.utca.fields.EaseOffFields` (which stays the reference):
+
+- the bicubic spline's value is FITPACK's ``fpbisp``/``fpbspl`` (Dierckx, *Curve and
+  Surface Fitting with Splines*, 1993, §2.1: de Boor–Cox recurrence, then the tensor
+  sum in FITPACK's order), which ``scipy.interpolate.RectBivariateSpline.ev`` calls point
+  by point (``bispeu``); a partial derivative is the spline of ``pardeu``'s differenced
+  coefficients (:func:`derivative_spline`, computed once instead of on every call);
+- Newton's method on v*(u) (:meth:`EaseOffFields.newton_v`), the inside measure
+  (:meth:`EaseOffFields.measure`), the ends' false position
+  (:func:`contact.utca.contact_curves._false_position_ends`) and the columns' Newton
+  steps (:meth:`EaseOffFields.solve_columns`) repeat their NumPy statements per point.
+
+The two paths agree to the last bit on this machine (``tests/test_isoline_kernels.py``);
+numba does not contract ``a * b + c`` into fused multiply-adds or reassociate sums unless
+asked (``fastmath`` is off), so the agreement does not depend on the CPU.
+
+This module imports numba; :mod:`contact.utca.fields` imports it only where numba is
+installed (the ``fast`` extra) and the environment variable ``LTCA_KERNELS`` is not
+``numpy``. The first call compiles the kernels (a few seconds), which numba caches on
+disk (``NUMBA_CACHE_DIR``, or beside this file).
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+__all__ = [
+    "derivative_spline",
+    "ev",
+    "false_position_ends",
+    "measure",
+    "newton_v",
+    "solve_columns",
+]
+
+_jit = numba.njit(cache=True, nogil=True)
+
+
+def derivative_spline(tck: tuple, degrees: tuple[int, int], nux: int, nuy: int) -> tuple:
+    """The partial derivative ∂^(nux+nuy) s/∂x^nux ∂y^nuy of a bivariate spline, as a
+    spline of degrees (kx − nux, ky − nuy): FITPACK ``pardeu``'s coefficient arithmetic
+    (Dierckx 1993, §2.1, eq. 2.14), ``((c[i+1] − c[i]) · k) / (t[i+k+1] − t[i+1])`` in its
+    order.
+
+    Parameters
+    ----------
+    tck : (tx, ty, c)
+        Knots and flat coefficients of ``RectBivariateSpline.tck``.
+    degrees : (int, int)
+        (kx, ky).
+    nux, nuy : int
+        Orders of the derivative, 0 ≤ nux < kx, 0 ≤ nuy < ky.
+
+    Returns
+    -------
+    (tx', ty', c', kx', ky') : the derivative's knots, flat coefficients and degrees.
+
+    Raises
+    ------
+    ValueError
+        An order outside [0, degree).
+    """
+    tx, ty, c = (np.asarray(a, dtype=float) for a in tck[:3])
+    kx, ky = degrees
+    if not (0 <= nux < kx and 0 <= nuy < ky):
+        raise ValueError(f"nux, nuy: must lie in [0, {kx}) and [0, {ky}), got {nux}, {nuy}")
+    nkx1, nky1 = tx.size - kx - 1, ty.size - ky - 1
+    w = c.reshape(nkx1, nky1).copy()
+    nxx, nyy, kkx, kky = nkx1, nky1, kx, ky
+    for j in range(nux):
+        ak = float(kkx)
+        nxx -= 1
+        for i in range(nxx):
+            fac = tx[i + 1 + j + kkx] - tx[i + 1 + j]
+            if fac > 0.0:
+                w[i, :] = (w[i + 1, :] - w[i, :]) * ak / fac
+        kkx -= 1
+    for j in range(nuy):
+        ak = float(kky)
+        nyy -= 1
+        for i in range(nyy):
+            fac = ty[i + 1 + j + kky] - ty[i + 1 + j]
+            if fac > 0.0:
+                w[:nxx, i] = (w[:nxx, i + 1] - w[:nxx, i]) * ak / fac
+        kky -= 1
+    return (np.ascontiguousarray(tx[nux:tx.size - nux]),
+            np.ascontiguousarray(ty[nuy:ty.size - nuy]),
+            np.ascontiguousarray(w[:nxx, :nyy]).ravel(), kkx, kky)
+
+
+@_jit
+def _basis(t, k, x, h, hh):
+    """FITPACK ``fpbspl``: the k + 1 B-splines nonzero at x, clamped into the knots'
+    range, into h; returns the knot interval l (t[l] ≤ x < t[l + 1], 0-based)."""
+    nk1 = t.size - k - 1
+    if x < t[k]:
+        x = t[k]
+    if x > t[nk1]:
+        x = t[nk1]
+    # the least l in [k, nk1 − 1] with x < t[l + 1]: fpbisp's linear search, bisected
+    lo, hi = k, nk1 - 1
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if x < t[mid + 1]:
+            hi = mid
+        else:
+            lo = mid + 1
+    h[0] = 1.0
+    for j in range(1, k + 1):
+        for i in range(j):
+            hh[i] = h[i]
+        h[0] = 0.0
+        for i in range(1, j + 1):
+            li = lo + i
+            lj = li - j
+            if t[li] == t[lj]:
+                h[i] = 0.0
+                continue
+            f = hh[i - 1] / (t[li] - t[lj])
+            h[i - 1] = h[i - 1] + f * (t[li] - x)
+            h[i] = f * (x - t[lj])
+    return lo
+
+
+@_jit
+def _value(tx, ty, c, kx, ky, x, y, hx, hy, hh):
+    """FITPACK ``fpbisp`` at one point (work arrays hx (kx + 1), hy (ky + 1), hh)."""
+    lx = _basis(tx, kx, x, hx, hh)
+    ly = _basis(ty, ky, y, hy, hh)
+    nky1 = ty.size - ky - 1
+    l1 = (lx - kx) * nky1 + (ly - ky)
+    sp = 0.0
+    for i1 in range(kx + 1):
+        l2 = l1
+        for j1 in range(ky + 1):
+            sp = sp + c[l2] * hx[i1] * hy[j1]
+            l2 += 1
+        l1 += nky1
+    return sp
+
+
+@_jit
+def ev(tx, ty, c, kx, ky, x, y):
+    """Spline values at the points (x[i], y[i]) (M,): ``RectBivariateSpline.ev``."""
+    out = np.empty(x.size)
+    hx = np.empty(kx + 1)
+    hy = np.empty(ky + 1)
+    hh = np.empty(max(kx, ky) + 1)
+    for p in range(x.size):
+        out[p] = _value(tx, ty, c, kx, ky, x[p], y[p], hx, hy, hh)
+    return out
+
+
+@_jit
+def _maximum(a, b):
+    """np.maximum of two floats (NaN if either is NaN)."""
+    if a != a or b != b:
+        return np.nan
+    return a if a >= b else b
+
+
+@_jit
+def _minimum(a, b):
+    """np.minimum of two floats (NaN if either is NaN)."""
+    if a != a or b != b:
+        return np.nan
+    return a if a <= b else b
+
+
+@_jit
+def _newton_one(q, qv, v0, v1, u, t, v, miss, w):
+    """:meth:`EaseOffFields.newton_v` of one point: v* [1] or NaN. ``q``, ``qv``: the
+    splines of Q and ∂Q/∂v; ``w``: work arrays (hx, hy, hh)."""
+    hx, hy, hh = w
+    f = _value(q[0], q[1], q[2], q[3], q[4], u, v, hx, hy, hh) - t
+    if not (abs(f) < 1e-13) and not miss:
+        for _ in range(6):
+            d = _value(qv[0], qv[1], qv[2], qv[3], qv[4], u, v, hx, hy, hh)
+            vn = _minimum(_maximum(v - f / (d if d != 0 else 1e-30), v0), v1)
+            fa = _value(q[0], q[1], q[2], q[3], q[4], u, vn, hx, hy, hh) - t
+            va = v
+            v, f = vn, fa
+            if abs(fa) < 1e-13 or vn == va:
+                break
+    tol = 1e-9 * (v1 - v0)
+    if v < v0 - tol or v > v1 + tol or abs(f) > 1e-9 or miss:
+        return np.nan
+    return _minimum(_maximum(v, v0), v1)
+
+
+@_jit
+def _work(q):
+    return (np.empty(q[3] + 1), np.empty(q[4] + 1), np.empty(max(q[3], q[4]) + 1))
+
+
+@_jit
+def newton_v(q, qv, v0, v1, u, t, v, miss):
+    """Newton's method on the iso-line Q(u, v*) = t (M,) from the finite starts v (M,),
+    as :meth:`EaseOffFields.newton_v`: v* [1] or NaN. A spline is (tx, ty, c, kx, ky);
+    ``q`` is Q's, ``qv`` its ∂/∂v (:func:`derivative_spline`)."""
+    w = _work(q)
+    out = np.empty(u.size)
+    for p in range(u.size):
+        out[p] = _newton_one(q, qv, v0, v1, u[p], t[p], v[p], miss[p], w)
+    return out
+
+
+@_jit
+def _measure(margin, ug, vg, cell_ok, u, v, w):
+    """:meth:`EaseOffFields.measure` of one place (v may be NaN)."""
+    hx, hy, hh = w
+    fin = v == v and abs(v) != np.inf
+    vs = v if fin else vg[0]
+    c = _minimum(_value(margin[0], margin[1], margin[2], margin[3], margin[4], u, vs,
+                        hx, hy, hh), vs - vg[0])
+    c = _minimum(c, vg[-1] - vs)
+    c = _minimum(c, u - ug[0])
+    c = _minimum(c, ug[-1] - u)
+    if not fin:
+        return -1.0
+    iu = min(max(np.searchsorted(ug, u, side="right") - 1, 0), ug.size - 2)
+    iv = min(max(np.searchsorted(vg, vs, side="right") - 1, 0), vg.size - 2)
+    return c if cell_ok[iu, iv] else -1.0
+
+
+@_jit
+def measure(margin, ug, vg, cell_ok, u, v):
+    """:meth:`EaseOffFields.measure` at the places (u, v) (M,) (v may be NaN)."""
+    w = _work(margin)
+    out = np.empty(u.size)
+    for p in range(u.size):
+        out[p] = _measure(margin, ug, vg, cell_ok, u[p], v[p], w)
+    return out
+
+
+@_jit
+def false_position_ends(q, qv, margin, ug, vg, cell_ok, t, a, b, va, n_iter):
+    """:func:`contact.utca.contact_curves._false_position_ends`: the last inside places of
+    the iso-lines Q = t (M,) between inside places a (profile places va) and outside
+    places b, ``n_iter`` Illinois / bisection steps (fewer only once every |b − a| <
+    1e-9); ``a``, ``b``, ``va`` are updated in place."""
+    w = _work(margin)
+    v0, v1 = vg[0], vg[-1]
+    m_pts = a.size
+    ca = np.empty(m_pts)
+    cb = np.empty(m_pts)
+    for p in range(m_pts):
+        ca[p] = _measure(margin, ug, vg, cell_ok, a[p], va[p], w)
+        vs = va[p] if (va[p] == va[p] and abs(va[p]) != np.inf) else 0.5 * (v0 + v1)
+        vb = _newton_one(q, qv, v0, v1, b[p], t[p], vs, False, w)
+        cb[p] = _measure(margin, ug, vg, cell_ok, b[p], vb, w)
+    prev_in = np.zeros(m_pts, dtype=np.bool_)
+    prev_out = np.zeros(m_pts, dtype=np.bool_)
+    for _ in range(n_iter):
+        done = True
+        for p in range(m_pts):
+            ap, bp, cap, cbp = a[p], b[p], ca[p], cb[p]
+            smooth = (cbp > -0.5) and (cap < 0.5) and (cbp != cap)
+            if smooth:
+                m = bp - cbp * (bp - ap) / (cbp - cap)
+            else:
+                m = 0.5 * (ap + bp)
+            lo_m, hi_m = _minimum(ap, bp), _maximum(ap, bp)
+            wd = 1e-3 * (hi_m - lo_m)
+            m = _minimum(_maximum(m, lo_m + wd), hi_m - wd)
+            vm = _newton_one(q, qv, v0, v1, m, t[p], va[p], False, w)
+            cm = _measure(margin, ug, vg, cell_ok, m, vm, w)
+            good = cm >= 0
+            if good and prev_in[p] and smooth:
+                cb[p] = cbp * 0.5
+            if (not good) and prev_out[p] and smooth:
+                ca[p] = cap * 0.5
+            if good:
+                a[p], ca[p], va[p] = m, cm, vm
+            else:
+                b[p], cb[p] = m, cm
+            prev_in[p], prev_out[p] = good, not good
+            if not (abs(b[p] - a[p]) < 1e-9):
+                done = False
+        if done:
+            break
+    return a
+
+
+@_jit
+def solve_columns(qn, vn, q_sign, target, breaks, pieces, cell_piece, n_iter):
+    """:meth:`EaseOffFields.solve_columns`: the profile places v* (nb, nc) [1] of the
+    iso-lines Q = target (nb,) on the lengthwise places of the lattice ``qn`` (nc, nv)
+    (Q at those places × the profile nodes ``vn``), NaN where Q misses the target or the
+    safeguarded Newton steps on the column's cubic piece (``pieces`` (nc, n_int, 4) on
+    the knot intervals ``breaks``; ``cell_piece`` (nv − 1,) the interval of each cell)
+    leave |Q − q| above 1e-9 rad."""
+    nc, nv = qn.shape
+    nb = target.size
+    out = np.full((nb, nc), np.nan)
+    for ib in range(nb):
+        tg = target[ib]
+        for j in range(nc):
+            # the bracketing cell: as many nodes at or below the target (Q is monotone)
+            below = 0
+            for i in range(nv):
+                if q_sign * (qn[j, i] - tg) <= 0:
+                    below += 1
+            k = min(max(below - 1, 0), nv - 2)
+            if q_sign * (qn[j, 0] - tg) > 0 or q_sign * (qn[j, nv - 1] - tg) < 0:
+                continue
+            qa, qb = qn[j, k], qn[j, k + 1]
+            tt = (tg - qa) / (qb - qa if qb != qa else 1.0)
+            tt = _minimum(_maximum(tt, 0.0), 1.0)
+            v = vn[k] + tt * (vn[k + 1] - vn[k])
+            pc = cell_piece[k]
+            c0, c1, c2, c3 = pieces[j, pc, 0], pieces[j, pc, 1], pieces[j, pc, 2], pieces[j, pc, 3]
+            x0 = breaks[pc]
+            lo, hi = vn[k] - x0, vn[k + 1] - x0
+            x = v - x0
+            f = ((c3 * x + c2) * x + c1) * x + c0 - tg
+            if not (abs(f) < 1e-13):
+                for _ in range(n_iter):
+                    xr = x
+                    d = (3.0 * c3 * xr + 2.0 * c2) * xr + c1
+                    xn = _minimum(_maximum(xr - f / (d if d != 0 else 1e-30), lo), hi)
+                    f = ((c3 * xn + c2) * xn + c1) * xn + c0 - tg
+                    x = xn
+                    if abs(f) < 1e-13 or xn == xr:
+                        break
+            if not (abs(f) > 1e-9):
+                out[ib, j] = x + x0
+    return out

@@ -1,0 +1,174 @@
+"""The compiled iso-line kernels (contact.utca.isoline_numba) against the NumPy path.
+
+The kernels repeat, point by point, the floating-point operations of the NumPy reference
+(:class:`contact.utca.fields.EaseOffFields` and the contact curves' end search), so the
+references here are independent implementations of the same arithmetic:
+
+- the bicubic spline and its partial derivatives against SciPy's FITPACK
+  (``RectBivariateSpline.ev``), on random places inside, on and beyond the knots;
+- the contact curves' places, ε and UTE of a real ease-off, and a study point's summaries,
+  computed with ``kernels="numpy"`` and ``kernels="numba"``.
+
+Tolerance: on x86-64 both sides run the same IEEE operations in the same order and agree
+to the last bit (measured: 0 differences in 1e5 spline values, in the curves and in 21
+summaries at 5 mountings). The tests allow the round-off of one fused multiply-add per
+term where a compiler fuses them on one side only (GCC contracts FITPACK's Fortran on
+aarch64, where FMA is baseline; numba never does without ``fastmath``): 16 terms of the
+tensor sum, ~1e-15 of the spline's scale, taken as 1e-13; iterations that stop at 1e-13 rad
+or 1e-9 of their scales then agree to those (the 5×5 guard's 1e-9 for the summaries).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.interpolate import RectBivariateSpline
+
+from contact.utca import fields as fields_module
+from contact.utca.fields import EaseOffFields, kernels_module
+from geometry.core.errors import InputError
+
+numba_kernels = pytest.importorskip("contact.utca.isoline_numba",
+                                    reason="numba (the 'fast' extra) is not installed")
+
+ROOT = Path(__file__).resolve().parents[1]
+SPLINE_RTOL = 1e-13
+
+
+def _random_spline(seed=3):
+    rng = np.random.default_rng(seed)
+    u = np.sort(np.r_[0.0, rng.random(39), 1.0])  # uneven lengthwise nodes
+    v = np.linspace(-0.1, 1.1, 21)
+    return RectBivariateSpline(u, v, rng.standard_normal((41, 21))), u, v, rng
+
+
+@pytest.mark.parametrize("order", [(0, 0), (1, 0), (0, 1), (1, 1), (2, 0), (0, 2)])
+def test_spline_kernel_is_fitpack(order):
+    """Values and partial derivatives at 20,000 places, a tenth of them on nodes and a
+    fifth beyond the grid (FITPACK clamps them to its ends), as ``RectBivariateSpline.ev``."""
+    s, u, v, rng = _random_spline()
+    x = rng.uniform(-0.2, 1.2, 20_000)
+    y = rng.uniform(-0.3, 1.3, 20_000)
+    x[:1000] = u[rng.integers(0, u.size, 1000)]
+    y[1000:2000] = v[rng.integers(0, v.size, 1000)]
+    if order == (0, 0):
+        spline = (*s.tck, *s.degrees)
+    else:
+        spline = numba_kernels.derivative_spline(s.tck, s.degrees, *order)
+    got = numba_kernels.ev(*spline, x, y)
+    want = s.ev(x, y, dx=order[0], dy=order[1])
+    scale = np.max(np.abs(want))
+    np.testing.assert_allclose(got, want, rtol=SPLINE_RTOL, atol=SPLINE_RTOL * scale)
+
+
+def test_derivative_spline_rejects_an_order_beyond_the_degree():
+    s, *_ = _random_spline()
+    with pytest.raises(ValueError, match="nux, nuy"):
+        numba_kernels.derivative_spline(s.tck, s.degrees, 3, 0)
+
+
+@pytest.fixture(scope="module")
+def easeoff():
+    from contact.utca.easeoff import ease_off
+    from geometry.case import load_case
+
+    case = load_case(ROOT / "cases" / "kolivand2009_fm_11x41_reference.toml")
+    # misaligned off the mounting: the curves end on the tip, the blank margin and the toe
+    mis = dataclasses.replace(case.misalignment, delta_E=case.misalignment.delta_E - 0.12,
+                              delta_P=case.misalignment.delta_P - 0.08)
+    return ease_off(dataclasses.replace(case, misalignment=mis))
+
+
+def test_contact_curves_agree(easeoff):
+    """The places, ε and UTE of 80 iso-lines over two mesh cycles (curve ends inside the
+    region, on its boundary and at jumps of the measure; short curves), both paths."""
+    from contact.utca import CURVE_SPACINGS, transitions
+    from contact.utca.contact_curves import _seed_places
+
+    eo = easeoff
+    m1, _ = transitions(eo)
+    t = m1 + np.linspace(-1.5, 0.5, 80) * eo.pitch
+    frac = CURVE_SPACINGS["cosine"](17)
+    got = _seed_places(EaseOffFields(eo, kernels="numba"), t, frac)
+    want = _seed_places(EaseOffFields(eo, kernels="numpy"), t, frac)
+    assert np.isfinite(want.ute).sum() >= 40  # not vacuous: most targets have a curve
+    for name in ("u", "v", "ease_off_angle", "ute", "contact_u", "contact_v"):
+        a, b = getattr(got, name), getattr(want, name)
+        np.testing.assert_array_equal(np.isfinite(a), np.isfinite(b), err_msg=name)
+        np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12, err_msg=name)
+    np.testing.assert_array_equal(got.index, want.index)
+
+
+def test_field_queries_agree(easeoff):
+    """newton_v, measure and solve_columns on their own: places on, inside and beyond
+    the grid, NaN places, targets the iso-lines miss."""
+    eo = easeoff
+    fk, fn = EaseOffFields(eo, kernels="numba"), EaseOffFields(eo, kernels="numpy")
+    rng = np.random.default_rng(7)
+    u = rng.uniform(-0.05, 1.05, 3000)
+    v = rng.uniform(-0.05, 1.05, 3000)
+    v[::17] = np.nan
+    np.testing.assert_allclose(fk.measure(u, v), fn.measure(u, v), rtol=SPLINE_RTOL,
+                               atol=SPLINE_RTOL)
+    q = fn.q.ev(np.clip(u, 0, 1), np.clip(np.nan_to_num(v, nan=0.5), 0, 1))
+    t = q + rng.normal(0.0, 0.002, q.size)
+    start = np.full(u.size, 0.5)
+    a, b = fk.newton_v(u, t, start.copy()), fn.newton_v(u, t, start.copy())
+    np.testing.assert_array_equal(np.isfinite(a), np.isfinite(b))
+    assert np.isfinite(b).sum() > 1000
+    np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12)
+    uc = np.linspace(0.0, 1.0, 81)
+    tc = np.linspace(np.nanmin(q) - 0.01, np.nanmax(q) + 0.01, 60)
+    a, b = fk.solve_columns(uc, tc), fn.solve_columns(uc, tc)
+    np.testing.assert_array_equal(np.isfinite(a), np.isfinite(b))
+    assert np.isfinite(b).any() and not np.isfinite(b).all()
+    np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12)
+
+
+def test_a_study_point_is_the_same_on_both_paths(monkeypatch):
+    """A study point's 21 summaries (LTE, pattern, pressures, efficiency) with either
+    path, within the 5×5 guard's 1e-9 (tests/test_sweep_guard.py)."""
+    from contact.catalogue import resolve_case
+    from contact.ltca import LTCAOptions
+    from contact.study.engine import analyse_point
+    from contact.study.points import StudyInputs
+
+    case = resolve_case("kolivand2009_fm_11x41_reference")
+    shared = StudyInputs(case=case, torque=(250.0,),
+                         options=LTCAOptions(rolls_per_cycle=8, segments=8))
+    point = {"delta_E": case.misalignment.delta_E - 0.12,
+             "delta_P": case.misalignment.delta_P - 0.08}
+    out = {}
+    for kernels in ("numpy", "numba"):
+        monkeypatch.setenv("LTCA_KERNELS", kernels)
+        out[kernels] = analyse_point(shared, 0, point)
+    a, b = out["numba"], out["numpy"]
+    assert a.status == b.status == 0
+    assert set(a.summary) == set(b.summary) and len(a.summary) >= 20
+    for name in a.summary:
+        x, y = np.asarray(a.summary[name], float), np.asarray(b.summary[name], float)
+        np.testing.assert_allclose(x, y, rtol=1e-9, atol=1e-9 * np.nanmax(np.abs(y),
+                                                                          initial=1.0),
+                                   err_msg=name)
+
+
+def test_kernels_choice(monkeypatch):
+    """The names, the environment variable, and the errors that name the field."""
+    monkeypatch.delenv("LTCA_KERNELS", raising=False)
+    assert kernels_module() is numba_kernels  # installed: the default
+    assert kernels_module("numpy") is None
+    monkeypatch.setenv("LTCA_KERNELS", "numpy")
+    assert kernels_module() is None
+    monkeypatch.setenv("LTCA_KERNELS", "fortran")
+    with pytest.raises(InputError, match="LTCA_KERNELS: must be one of numpy, numba"):
+        kernels_module()
+    with pytest.raises(InputError, match="kernels: must be one of"):
+        kernels_module("cuda")
+    monkeypatch.setattr(fields_module, "_numba_kernels", lambda: None)
+    with pytest.raises(InputError, match=r"kernels: 'numba' needs numba installed"):
+        kernels_module("numba")
+    monkeypatch.delenv("LTCA_KERNELS")
+    assert kernels_module() is None  # not installed: the NumPy path, silently
