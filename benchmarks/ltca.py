@@ -1,7 +1,7 @@
 """LTCA benchmark: the CPU time of each stage of an analysis and of a study point, per case.
 
     python benchmarks/ltca.py [CASE] [--case CASE ...] [--baseline [CASE]] [--torque 250]
-                              [--rolls-per-cycle 20] [--repeat 5]
+                              [--rolls-per-cycle 20] [--repeat 5] [--compare-kernels]
 
 Without cases: the bundled default (the reference design of the seed's 11×41 pair, at
 its Table 3.1 mounting) and the long-bearing ``kolivand2009_fm_11x41`` side by side.
@@ -40,11 +40,18 @@ e.g. face-hobbed cases beside the face-milled default (target: a face-hobbed ana
 
     python benchmarks/ltca.py --case kolivand2009_fh_12x41 \
         --case kolivand2009_table54_A_fh --baseline
+
+``--compare-kernels`` runs each case twice, taking turns: on the iso-line searches' NumPy
+path (``LTCA_KERNELS=numpy``) and on their compiled kernels (numba, the ``fast`` extra),
+the ratio column giving the kernels' gain in one run::
+
+    python benchmarks/ltca.py --case kolivand2009_fm_11x41_reference --compare-kernels
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import logging
 import os
 import statistics
@@ -105,13 +112,33 @@ def _timed(clock: StageClock, fn, *args, **kwargs):
     return out, total, stages
 
 
-def measure(cases, torque: float, opts: LTCAOptions, repeat: int) -> list[dict]:
+@contextlib.contextmanager
+def _kernels(name: str | None):
+    """``LTCA_KERNELS`` set to ``name`` (None: left as it is) for the block."""
+    old = os.environ.get("LTCA_KERNELS")
+    if name is not None:
+        os.environ["LTCA_KERNELS"] = name
+    try:
+        yield
+    finally:
+        if old is None:
+            os.environ.pop("LTCA_KERNELS", None)
+        else:
+            os.environ["LTCA_KERNELS"] = old
+
+
+def measure(cases, torque: float, opts: LTCAOptions, repeat: int,
+            kernels: list[str | None] | None = None) -> list[dict]:
     """Per case: the stage CPU times [s] of ``repeat`` whole analyses and study points.
+
+    ``kernels``: the iso-line searches' implementation of each case (``LTCA_KERNELS``;
+    None: as the environment has it), so one case can run twice, once on each path.
 
     Returns one dict per case: ``name``, ``method``, ``analysis`` and ``point`` (lists of
     (total, stages) per run), ``passes`` (the LTCA's passes in the last whole analysis),
     ``counts`` (:func:`work_counts` of a study point at the first offset).
     """
+    kernels = kernels or [None] * len(cases)
     clock = StageClock().install()
     logger = logging.getLogger("contact.ltca.mesh_cycle")
     passes, level = _Passes(), logger.level
@@ -119,21 +146,25 @@ def measure(cases, torque: float, opts: LTCAOptions, repeat: int) -> list[dict]:
     logger.setLevel(logging.INFO)
     try:
         shared = [StudyInputs(case=c, torque=(torque,), options=opts) for c in cases]
-        for c, s in zip(cases, shared, strict=True):  # warm-up: imports, memos
-            run_analysis(c, [torque], options=opts)
-            analyse_point(s, 0, {"delta_E": c.misalignment.delta_E,
-                                 "delta_P": c.misalignment.delta_P})
-        out = [{"name": c.name, "method": c.pair.method, "analysis": [], "point": [],
-                "passes": 1} for c in cases]
+        for c, s, kn in zip(cases, shared, kernels, strict=True):  # warm-up: imports, memos
+            with _kernels(kn):
+                run_analysis(c, [torque], options=opts)
+                analyse_point(s, 0, {"delta_E": c.misalignment.delta_E,
+                                     "delta_P": c.misalignment.delta_P})
+        out = [{"name": c.name + ("" if kn is None else f" [{kn}]"), "method": c.pair.method,
+                "analysis": [], "point": [], "passes": 1}
+               for c, kn in zip(cases, kernels, strict=True)]
         for dE, dP in _offsets(max(repeat, 1)):
             for k, (c, s) in enumerate(zip(cases, shared, strict=True)):
                 passes.count = 0
-                _, total, stages = _timed(clock, run_analysis, c, [torque], options=opts)
+                with _kernels(kernels[k]):
+                    _, total, stages = _timed(clock, run_analysis, c, [torque], options=opts)
                 out[k]["analysis"].append((total, stages))
                 out[k]["passes"] = 1 + passes.count
                 point = {"delta_E": c.misalignment.delta_E + dE,
                          "delta_P": c.misalignment.delta_P + dP}
-                res, total, stages = _timed(clock, analyse_point, s, 0, point)
+                with _kernels(kernels[k]):
+                    res, total, stages = _timed(clock, analyse_point, s, 0, point)
                 if res.status == 2:
                     raise RuntimeError(f"study point {point} of {c.name} failed: {res.reason}")
                 out[k]["point"].append((total, stages))
@@ -264,6 +295,9 @@ def main() -> None:
     parser.add_argument("--torque", type=float, default=250.0)
     parser.add_argument("--rolls-per-cycle", type=int, default=20)
     parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--compare-kernels", action="store_true",
+                        help="each case twice, on the iso-line searches' NumPy path and on "
+                             "the compiled kernels (LTCA_KERNELS=numpy / numba), taking turns")
     args = parser.parse_args()
     names = ([args.case_arg] if args.case_arg is not None else []) + args.case
     if args.baseline is not None:
@@ -272,12 +306,17 @@ def main() -> None:
         names = [None, LONG_BEARING]
     opts = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle)
     cases = [resolve_case(n) for n in names]
+    kernels = None
+    if args.compare_kernels:
+        cases = [c for c in cases for _ in range(2)]
+        kernels = ["numpy", "numba"] * (len(cases) // 2)
     load = os.getloadavg()[0]
-    results = measure(cases, args.torque, opts, args.repeat)
+    results = measure(cases, args.torque, opts, args.repeat, kernels)
     print(f"T_p = {args.torque:g} N m, {opts.cycles} x {opts.rolls_per_cycle} roll positions, "
           f"solver {opts.solver}, one BLAS thread; CPU time (process_time), medians of "
           f"{args.repeat} runs; load average {load:.1f} -> {os.getloadavg()[0]:.1f} on "
-          f"{os.cpu_count()} cores; iso-line kernels: {_kernels_in_use()}")
+          f"{os.cpu_count()} cores; iso-line kernels: "
+          f"{'per column' if kernels else _kernels_in_use()}")
     for r in results:
         if r["passes"] > 1:
             print(f"  {r['name']}: LTCA in {r['passes']} passes (more pairs or a wider edge "
