@@ -133,6 +133,13 @@ def _basis(t, k, x, h, hh):
 def _value(tx, ty, c, kx, ky, x, y, hx, hy, hh):
     """FITPACK ``fpbisp`` at one point (work arrays hx (kx + 1), hy (ky + 1), hh)."""
     lx = _basis(tx, kx, x, hx, hh)
+    return _value_at(ty, c, kx, ky, lx, hx, y, hy, hh)
+
+
+@_jit
+def _value_at(ty, c, kx, ky, lx, hx, y, hy, hh):
+    """:func:`_value` with the x-basis given (its interval lx and values hx): splines on
+    the same x-knots at the same x share it (the same numbers as computing it again)."""
     ly = _basis(ty, ky, y, hy, hh)
     nky1 = ty.size - ky - 1
     l1 = (lx - kx) * nky1 + (ly - ky)
@@ -179,12 +186,14 @@ def _newton_one(q, qv, v0, v1, u, t, v, miss, w):
     """:meth:`EaseOffFields.newton_v` of one point: v* [1] or NaN. ``q``, ``qv``: the
     splines of Q and ∂Q/∂v; ``w``: work arrays (hx, hy, hh)."""
     hx, hy, hh = w
-    f = _value(q[0], q[1], q[2], q[3], q[4], u, v, hx, hy, hh) - t
+    # u stays fixed: Q and ∂Q/∂v (same x-knots and degree) share the x-basis at u
+    lx = _basis(q[0], q[3], u, hx, hh)
+    f = _value_at(q[1], q[2], q[3], q[4], lx, hx, v, hy, hh) - t
     if not (abs(f) < 1e-13) and not miss:
         for _ in range(6):
-            d = _value(qv[0], qv[1], qv[2], qv[3], qv[4], u, v, hx, hy, hh)
+            d = _value_at(qv[1], qv[2], qv[3], qv[4], lx, hx, v, hy, hh)
             vn = _minimum(_maximum(v - f / (d if d != 0 else 1e-30), v0), v1)
-            fa = _value(q[0], q[1], q[2], q[3], q[4], u, vn, hx, hy, hh) - t
+            fa = _value_at(q[1], q[2], q[3], q[4], lx, hx, vn, hy, hh) - t
             va = v
             v, f = vn, fa
             if abs(fa) < 1e-13 or vn == va:
