@@ -172,3 +172,21 @@ def test_kernels_choice(monkeypatch):
         kernels_module("numba")
     monkeypatch.delenv("LTCA_KERNELS")
     assert kernels_module() is None  # not installed: the NumPy path, silently
+
+
+def test_kernels_that_cannot_be_cached_leave_the_numpy_path(monkeypatch, caplog):
+    """numba raises RuntimeError where it finds no writable cache directory: the NumPy path
+    runs, with a warning that says how to get the kernels back (not a crash on import)."""
+    def no_cache(name):
+        raise RuntimeError("cannot cache function '_basis': no locator available")
+
+    fields_module._numba_kernels.cache_clear()
+    monkeypatch.setattr(fields_module.importlib, "import_module", no_cache)
+    try:
+        with caplog.at_level("WARNING", logger="contact.utca.fields"):
+            assert fields_module._numba_kernels() is None
+        assert "NUMBA_CACHE_DIR" in caplog.text
+    finally:
+        monkeypatch.undo()
+        fields_module._numba_kernels.cache_clear()
+    assert kernels_module("numba") is numba_kernels

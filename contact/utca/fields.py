@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import functools
 import importlib
+import logging
 import os
 from types import ModuleType
 from typing import NamedTuple
@@ -81,6 +82,11 @@ def _numba_kernels() -> ModuleType | None:
     try:
         return importlib.import_module("contact.utca.isoline_numba")
     except ImportError:
+        return None
+    except RuntimeError as exc:  # numba finds no writable cache directory
+        logging.getLogger(__name__).warning(
+            "compiled iso-line kernels unavailable (%s); the NumPy path runs (set "
+            "NUMBA_CACHE_DIR to a writable directory to use them)", exc)
         return None
 
 
