@@ -23,6 +23,7 @@ piece of each place's column: :meth:`EaseOffFields.solve_columns`).
 Public functions
 ----------------
 EaseOffFields   splines of an ease-off's fields and the contact region's tests
+kernels_module  the iso-line searches' implementation (NumPy, or numba's compiled kernels)
 """
 
 from __future__ import annotations
@@ -78,7 +79,8 @@ class KernelSplines(NamedTuple):
 
 @functools.cache
 def _numba_kernels() -> ModuleType | None:
-    """:mod:`contact.utca.isoline_numba`, or None where numba is not installed."""
+    """:mod:`contact.utca.isoline_numba`, or None where numba is not installed or
+    cannot cache the kernels (logged)."""
     try:
         return importlib.import_module("contact.utca.isoline_numba")
     except ImportError:
@@ -341,10 +343,12 @@ class EaseOffFields:
         target = np.asarray(target, dtype=float)
         nb, nc = target.size, uc.size
         vn, s = self.v, self.q_sign
+        breaks, pieces = self.columns(uc)
+        # the knot interval holding each cell (cells lie within one interval: the knots are
+        # grid nodes)
+        cell_piece = np.clip(np.searchsorted(breaks, 0.5 * (vn[:-1] + vn[1:]), side="right")
+                             - 1, 0, len(breaks) - 2)
         if self.kernels is not None:  # the same arithmetic, compiled
-            breaks, pieces = self.columns(uc)
-            cell_piece = np.clip(np.searchsorted(breaks, 0.5 * (vn[:-1] + vn[1:]),
-                                                 side="right") - 1, 0, len(breaks) - 2)
             return self.kernels.solve_columns(self.lattice(uc), vn, float(s),
                                               target.ravel(), breaks, pieces, cell_piece,
                                               _COLUMN_NEWTON)
@@ -358,11 +362,7 @@ class EaseOffFields:
         t = np.clip((tg - qa) / np.where(qb != qa, qb - qa, 1.0), 0.0, 1.0)
         v = vn[k] + t * (vn[k + 1] - vn[k])
         miss = (s * (qn[..., 0] - tg) > 0) | (s * (qn[..., -1] - tg) < 0)
-        breaks, pieces = self.columns(uc)
-        # the knot interval holding each cell (cells lie within one interval: the knots are
-        # grid nodes)
-        piece = np.clip(np.searchsorted(breaks, 0.5 * (vn[:-1] + vn[1:]), side="right") - 1,
-                        0, len(breaks) - 2)[k]
+        piece = cell_piece[k]
         act = np.flatnonzero(~miss.ravel())
         vf = v.ravel().copy()
         out = np.full(nb * nc, np.nan)
@@ -483,7 +483,8 @@ class EaseOffFields:
         tf : ndarray (M,) — [rad]
             Values q of Q.
         v : ndarray (M,) — [1]
-            Finite start places; overwritten by the iterates.
+            Finite start places; the NumPy path overwrites them with its iterates (pass a
+            copy to keep them).
         miss : bool ndarray (M,), optional
             Points known to miss (left out, NaN).
 

@@ -28,6 +28,8 @@ disk (``NUMBA_CACHE_DIR``, or beside this file).
 
 from __future__ import annotations
 
+import math
+
 import numba
 import numpy as np
 
@@ -71,28 +73,29 @@ def derivative_spline(tck: tuple, degrees: tuple[int, int], nux: int, nuy: int) 
     kx, ky = degrees
     if not (0 <= nux < kx and 0 <= nuy < ky):
         raise ValueError(f"nux, nuy: must lie in [0, {kx}) and [0, {ky}), got {nux}, {nuy}")
-    nkx1, nky1 = tx.size - kx - 1, ty.size - ky - 1
-    w = c.reshape(nkx1, nky1).copy()
-    nxx, nyy, kkx, kky = nkx1, nky1, kx, ky
-    for j in range(nux):
-        ak = float(kkx)
-        nxx -= 1
-        for i in range(nxx):
-            fac = tx[i + 1 + j + kkx] - tx[i + 1 + j]
-            if fac > 0.0:
-                w[i, :] = (w[i + 1, :] - w[i, :]) * ak / fac
-        kkx -= 1
-    for j in range(nuy):
-        ak = float(kky)
-        nyy -= 1
-        for i in range(nyy):
-            fac = ty[i + 1 + j + kky] - ty[i + 1 + j]
-            if fac > 0.0:
-                w[:nxx, i] = (w[:nxx, i + 1] - w[:nxx, i]) * ak / fac
-        kky -= 1
+    w = c.reshape(tx.size - kx - 1, ty.size - ky - 1).copy()
+    # along x on the rows, then along y on the columns (a view: in place); pardeu
+    # differences only the rows it keeps along y, and each row's arithmetic is its own
+    nxx, kkx = _difference(w, tx, kx, nux)
+    nyy, kky = _difference(w.T, ty, ky, nuy)
     return (np.ascontiguousarray(tx[nux:tx.size - nux]),
             np.ascontiguousarray(ty[nuy:ty.size - nuy]),
             np.ascontiguousarray(w[:nxx, :nyy]).ravel(), kkx, kky)
+
+
+def _difference(w: np.ndarray, t: np.ndarray, k: int, nu: int) -> tuple[int, int]:
+    """``pardeu``'s ``nu`` differencing passes of the coefficient rows of ``w`` (in
+    place) for knots ``t`` and degree ``k``; returns the rows left and their degree."""
+    n = w.shape[0]
+    for j in range(nu):
+        ak = float(k)
+        n -= 1
+        for i in range(n):
+            fac = t[i + 1 + j + k] - t[i + 1 + j]
+            if fac > 0.0:
+                w[i] = (w[i + 1] - w[i]) * ak / fac
+        k -= 1
+    return n, k
 
 
 @_jit
@@ -225,7 +228,7 @@ def newton_v(q, qv, v0, v1, u, t, v, miss):
 def _measure(margin, ug, vg, cell_ok, u, v, w):
     """:meth:`EaseOffFields.measure` of one place (v may be NaN)."""
     hx, hy, hh = w
-    fin = v == v and abs(v) != np.inf
+    fin = math.isfinite(v)
     vs = v if fin else vg[0]
     c = _minimum(_value(margin[0], margin[1], margin[2], margin[3], margin[4], u, vs,
                         hx, hy, hh), vs - vg[0])
@@ -262,7 +265,7 @@ def false_position_ends(q, qv, margin, ug, vg, cell_ok, t, a, b, va, n_iter):
     cb = np.empty(m_pts)
     for p in range(m_pts):
         ca[p] = _measure(margin, ug, vg, cell_ok, a[p], va[p], w)
-        vs = va[p] if (va[p] == va[p] and abs(va[p]) != np.inf) else 0.5 * (v0 + v1)
+        vs = va[p] if math.isfinite(va[p]) else 0.5 * (v0 + v1)
         vb = _newton_one(q, qv, v0, v1, b[p], t[p], vs, False, w)
         cb[p] = _measure(margin, ug, vg, cell_ok, b[p], vb, w)
     prev_in = np.zeros(m_pts, dtype=np.bool_)
