@@ -29,6 +29,7 @@ from scipy.interpolate import RectBivariateSpline
 
 from contact.utca import fields as fields_module
 from contact.utca.fields import EaseOffFields, kernels_module
+from geometry.core import kernels as kernels_core
 from geometry.core.errors import InputError
 
 numba_kernels = pytest.importorskip("contact.utca.isoline_numba",
@@ -180,13 +181,13 @@ def test_kernels_that_cannot_be_cached_leave_the_numpy_path(monkeypatch, caplog)
     def no_cache(name):
         raise RuntimeError("cannot cache function '_basis': no locator available")
 
-    fields_module._numba_kernels.cache_clear()
-    monkeypatch.setattr(fields_module.importlib, "import_module", no_cache)
+    kernels_core.compiled_module.cache_clear()
+    monkeypatch.setattr(kernels_core.importlib, "import_module", no_cache)
     try:
-        with caplog.at_level("WARNING", logger="contact.utca.fields"):
+        with caplog.at_level("WARNING", logger="geometry.core.kernels"):
             assert fields_module._numba_kernels() is None
         assert "NUMBA_CACHE_DIR" in caplog.text
     finally:
         monkeypatch.undo()
-        fields_module._numba_kernels.cache_clear()
+        kernels_core.compiled_module.cache_clear()
     assert kernels_module("numba") is numba_kernels

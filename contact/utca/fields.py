@@ -28,10 +28,6 @@ kernels_module  the iso-line searches' implementation (NumPy, or numba's compile
 
 from __future__ import annotations
 
-import functools
-import importlib
-import logging
-import os
 from types import ModuleType
 from typing import NamedTuple
 
@@ -40,12 +36,12 @@ from scipy.interpolate import BSpline, RectBivariateSpline
 
 from contact.utca.easeoff import EaseOff, fill_missing
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.kernels import KERNELS, compiled_module
+from geometry.core.kernels import kernels_module as select_kernels
 
 __all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "kernels_module"]
 
-#: The implementations of the iso-line searches: ``numpy`` (the reference) and ``numba``
-#: (:mod:`contact.utca.isoline_numba`, the same arithmetic compiled; the ``fast`` extra).
-KERNELS = ("numpy", "numba")
+_KERNEL_MODULE = "contact.utca.isoline_numba"  # the iso-line searches' compiled kernels
 
 _V_NEWTON = 6  # Newton steps of the profile place v*(u) on the spline of Q
 _COLUMN_NEWTON = 12  # safeguarded Newton steps of v*(u) on a column's cubic piece
@@ -77,19 +73,10 @@ class KernelSplines(NamedTuple):
     margin: tuple  # the pinion mate's inside measure [1]
 
 
-@functools.cache
 def _numba_kernels() -> ModuleType | None:
     """:mod:`contact.utca.isoline_numba`, or None where numba is not installed or
-    cannot cache the kernels (logged)."""
-    try:
-        return importlib.import_module("contact.utca.isoline_numba")
-    except ImportError:
-        return None
-    except RuntimeError as exc:  # numba finds no writable cache directory
-        logging.getLogger(__name__).warning(
-            "compiled iso-line kernels unavailable (%s); the NumPy path runs (set "
-            "NUMBA_CACHE_DIR to a writable directory to use them)", exc)
-        return None
+    cannot cache the kernels (logged; :func:`geometry.core.kernels.compiled_module`)."""
+    return compiled_module(_KERNEL_MODULE)
 
 
 def kernels_module(kernels: str | None = None) -> ModuleType | None:
@@ -99,7 +86,8 @@ def kernels_module(kernels: str | None = None) -> ModuleType | None:
     ----------
     kernels : {"numpy", "numba"} or None
         None: the environment variable ``LTCA_KERNELS`` (same values), else ``numba``
-        where it is installed and ``numpy`` otherwise.
+        where it is installed and ``numpy`` otherwise
+        (:func:`geometry.core.kernels.kernels_module`).
 
     Returns
     -------
@@ -111,21 +99,7 @@ def kernels_module(kernels: str | None = None) -> ModuleType | None:
     InputError
         An unknown name, or ``numba`` asked for where it is not installed.
     """
-    source = "kernels"
-    if kernels is None:
-        kernels = os.environ.get("LTCA_KERNELS") or None
-        source = "LTCA_KERNELS"
-        if kernels is None:
-            return _numba_kernels()
-    if kernels not in KERNELS:
-        raise InputError(f"{source}: must be one of {', '.join(KERNELS)}, got {kernels!r}")
-    if kernels == "numpy":
-        return None
-    mod = _numba_kernels()
-    if mod is None:
-        raise InputError(f"{source}: 'numba' needs numba installed "
-                         "(pip install 'hypoid-ltca[fast]')")
-    return mod
+    return select_kernels(_KERNEL_MODULE, kernels, loader=lambda _name: _numba_kernels())
 
 
 class EaseOffFields:

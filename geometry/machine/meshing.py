@@ -52,8 +52,9 @@ from typing import NamedTuple
 import numpy as np
 
 from geometry.core.errors import InputError
+from geometry.core.kernels import kernels_module
 from geometry.machine.cradle import MachineSettings
-from geometry.machine.cutter import Blade, profile_sections
+from geometry.machine.cutter import Blade, placement_vectors, profile_sections
 from geometry.machine.family import (
     Chain,
     GeneratedFamily,
@@ -110,6 +111,47 @@ class _Context(NamedTuple):
     generate: bool
     length_scale: float
     chain: Chain  # the machine chain's constant factors, folded once per solve
+    #: the compiled Newton (:mod:`geometry.machine.envelope_numba`) and its constant
+    #: arguments, or None for the NumPy path
+    kernel: tuple | None = None
+
+
+#: the envelope Newton's compiled kernel module (geometry.core.kernels)
+_KERNEL_MODULE = "geometry.machine.envelope_numba"
+
+
+def _context(blade: Blade, settings: MachineSettings, length_scale: float,
+             kernels: str | None = None, sections=None) -> _Context:
+    """The solve's context: the blade's sections, the folded chain and, unless the NumPy
+    path is asked for (``kernels``, :func:`geometry.core.kernels.kernels_module`), the
+    compiled Newton with its constant arguments."""
+    sections = profile_sections(blade) if sections is None else sections
+    ctx = _Context(blade, settings, sections, settings.process == "Generate",
+                   float(length_scale), chain(settings))
+    module = kernels_module(_KERNEL_MODULE, kernels)
+    if module is None:
+        return ctx
+    return ctx._replace(kernel=(module, _kernel_arguments(ctx)))
+
+
+def _kernel_arguments(ctx: _Context) -> tuple:
+    """The constant arguments of :func:`geometry.machine.envelope_numba.newton` (after
+    the points'), packed once per solve."""
+    sec, blade, st, ch = ctx.sections, ctx.blade, ctx.settings, ctx.chain
+    place = (np.concatenate([*placement_vectors(blade), [blade.point_radius]])
+             if blade.placed else np.zeros(10))
+    # (copies: the chain's coefficients are read only, which numba would compile for apart)
+    coefs = tuple(np.zeros((0, 3)) if c is None else np.array(c, dtype=float)
+                  for c in ch.taylor)
+    m = 3 if ctx.generate else 2
+    return (np.array([sec.s_ref, sec.rho_ref, sec.h_ref, sec.psi_ref, sec.kappa], dtype=float),
+            float(blade.sigma), bool(blade.placed), place.astype(float),
+            np.ascontiguousarray(ch.k_lin, dtype=float), ch.k_point.ravel().astype(float),
+            ch.r2_y.astype(float), ch.r2_z.astype(float), bool(ch.motion), *coefs,
+            np.array([st.cradle_angle, st.blank_offset, st.sliding_base, st.ratio_of_roll,
+                      st.indexing_ratio, ctx.length_scale], dtype=float),
+            bool(ctx.generate), _STEP_LIMIT[:m].copy(),
+            np.array([_TOL_POS, _TOL_MESH, _STALL_SIZE]), _MAX_ITER, _STALL_ITER)
 
 
 def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
@@ -186,7 +228,16 @@ def _safe_solve(jac: np.ndarray, rhs: np.ndarray):
 
 
 def _newton(ctx: _Context, x0: np.ndarray, section: np.ndarray, z: np.ndarray, p: np.ndarray):
-    """Damped Newton over all points; returns x, converged flag."""
+    """Damped Newton over all points; returns x, converged flag.
+
+    Each point's iteration is independent of the batch. Where the context holds the
+    compiled kernel (:mod:`geometry.machine.envelope_numba`) it runs the same iteration
+    point by point (the same roots to round-off)."""
+    if ctx.kernel is not None:
+        module, args = ctx.kernel
+        # (C-contiguous, writeable arrays: the kernel's one compiled signature)
+        return module.newton(np.require(x0, float, "CW"), np.require(section, np.intp, "CW"),
+                             np.require(z, float, "CW"), np.require(p, float, "CW"), *args)
     x = x0.copy()
     m = x.shape[1]
     done = np.zeros(len(x), bool)
@@ -255,8 +306,7 @@ def _candidate_grid(blade: Blade, settings: MachineSettings, length_scale: float
     """The generated points of the coarse seed grid on section ``main`` (at q = 0, or
     ``wide``: over :data:`_SEED_Q`); memoised per process: they do not depend on the
     target, and the ease-off's placement iterations seed a new target each time."""
-    ctx = _Context(blade, settings, profile_sections(blade), settings.process == "Generate",
-                   float(length_scale), chain(settings))
+    ctx = _context(blade, settings, length_scale, kernels="numpy")
     sec = ctx.sections
     q_vals = _SEED_Q if wide else np.zeros(1)
     hi = min(sec.s_hi[main], sec.s_lo[main] + 2.0 * depth + 2.0)
@@ -678,7 +728,7 @@ def _solve_guesses(ctx: _Context, guess, shape: tuple, seed: int, zf, pf, depth:
 
 def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
                    length_scale: float, depth: float, seed_index=None,
-                   guess=None) -> EnvelopeSolution:
+                   guess=None, kernels: str | None = None) -> EnvelopeSolution:
     """Generated surface points at prescribed axial positions and radii (seed Eq. 2.7–2.8).
 
     Parameters
@@ -709,6 +759,10 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
         solved as without a guess (prediction from the seed, continuation from
         neighbours). Without ``section`` the section is the one whose arc-length range
         holds ``s``.
+    kernels : {"numpy", "numba"}, optional
+        Newton's implementation (:func:`geometry.core.kernels.kernels_module`; default:
+        the environment variable ``LTCA_KERNELS``, else numba where installed). The
+        compiled kernel gives the same roots to round-off (~1e-13 mm, rad).
 
     Returns
     -------
@@ -718,7 +772,8 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     ------
     InputError
         If the shapes differ, a target is not finite, the guess does not broadcast to the
-        targets or has a section index out of range, or no envelope solution exists at the
+        targets or has a section index out of range, ``kernels`` is unknown (or numba is
+        asked for and not installed), or no envelope solution exists at the
         seed point when one is needed (the settings do not generate a tooth surface inside
         the blank).
 
@@ -744,7 +799,7 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     n = zf.size
     sections = profile_sections(blade)
     gen = settings.process == "Generate"
-    ctx = _Context(blade, settings, sections, gen, float(length_scale), chain(settings))
+    ctx = _context(blade, settings, length_scale, kernels, sections)
     if seed_index is None:
         seed = np.ravel_multi_index(tuple(d // 2 for d in shape), shape) if shape else 0
     else:
