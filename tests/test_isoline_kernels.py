@@ -129,6 +129,29 @@ def test_field_queries_agree(easeoff):
     np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.parametrize("order", [(0, 0), (1, 0), (0, 1), (2, 0)])
+def test_field_values_share_the_basis(easeoff, order):
+    """EaseOffFields.values: ten fields on one basis per place (compiled) against each
+    field's own ``RectBivariateSpline.ev`` (the NumPy path), at places inside and beyond
+    the grid, in the shape of the places; an unknown name is an InputError."""
+    fk, fn = EaseOffFields(easeoff, kernels="numba"), EaseOffFields(easeoff, kernels="numpy")
+    rng = np.random.default_rng(11)
+    u = rng.uniform(-0.05, 1.05, (40, 50))
+    v = rng.uniform(-0.05, 1.05, (40, 50))
+    names = ("q", "eps", "arm", "pos", "nrm", "margin")
+    got = fk.values(names, u, v, *order)
+    want = fn.values(names, u, v, *order)
+    assert got.shape == want.shape == (40, 50, 10)
+    splines = [fn.q, fn.eps, fn.arm, *fn.pos, *fn.nrm, fn.margin]
+    for k, spline in enumerate(splines):
+        np.testing.assert_array_equal(want[..., k], spline.ev(u, v, *order))
+        scale = np.max(np.abs(want[..., k]))
+        np.testing.assert_allclose(got[..., k], want[..., k], rtol=SPLINE_RTOL,
+                                   atol=SPLINE_RTOL * scale)
+    with pytest.raises(InputError, match="names: must be among"):
+        fk.values(("q", "curvature"), u, v)
+
+
 def test_a_study_point_is_the_same_on_both_paths(monkeypatch):
     """A study point's 21 summaries (LTE, pattern, pressures, efficiency) with either
     path, within the 5×5 guard's 1e-9 (tests/test_sweep_guard.py)."""

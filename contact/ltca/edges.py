@@ -200,29 +200,31 @@ def _margin_crossing(uu, vv, m, i: int, j: int):
 
 def _piece(f, kind: int, uu: np.ndarray, vv: np.ndarray, step: float):
     """One boundary line (fine polyline) as segments of at most ``step`` mm."""
-    pos = np.stack([p.ev(uu, vv) for p in f.pos], -1)
+    pos = f.values(("pos",), uu, vv)
     arc = np.r_[0.0, np.cumsum(np.linalg.norm(np.diff(pos, axis=0), axis=-1))]
     if arc[-1] <= 1e-9:
         return None
     n = max(1, math.ceil(arc[-1] / step))
     at = np.linspace(0.0, arc[-1], 2 * n + 1)
     us, vs = np.interp(at, arc, uu), np.interp(at, arc, vv)
-    q = f.q.ev(us, vs)
+    val = f.values(("q", "eps", "arm", "pos", "nrm"), us, vs)
+    q = val[:, 0]
     if kind == 0:  # tip edge: inward is −v
-        slope = -f.q.ev(us, vs, dy=1)
+        slope = -f.values(("q",), us, vs, dy=1)[:, 0]
     elif kind == 1:  # heel: inward is −u
-        slope = -f.q.ev(us, vs, dx=1)
+        slope = -f.values(("q",), us, vs, dx=1)[:, 0]
     elif kind == 2:  # toe: inward is +u
-        slope = f.q.ev(us, vs, dx=1)
+        slope = f.values(("q",), us, vs, dx=1)[:, 0]
     else:  # pinion edge: inward is up the margin
-        slope = (f.q.ev(us, vs, dx=1) * f.margin.ev(us, vs, dx=1)
-                 + f.q.ev(us, vs, dy=1) * f.margin.ev(us, vs, dy=1))
-    nrm = np.stack([p.ev(us, vs) for p in f.nrm], -1)
+        d_u = f.values(("q", "margin"), us, vs, dx=1)
+        d_v = f.values(("q", "margin"), us, vs, dy=1)
+        slope = d_u[:, 0] * d_u[:, 1] + d_v[:, 0] * d_v[:, 1]
+    nrm = val[:, 6:9]
     nrm /= np.linalg.norm(nrm, axis=-1, keepdims=True)
-    xyz = np.stack([p.ev(us, vs) for p in f.pos], -1)
+    xyz = val[:, 3:6]
     idx = 2 * np.arange(n)[:, None] + np.arange(3)[None, :]  # (n, 3) samples per segment
-    return (np.full(n, kind), us[idx], vs[idx], q[idx], f.eps.ev(us, vs)[idx],
-            f.gap_at(us, vs)[idx], f.arm.ev(us, vs)[idx], slope[idx], xyz[idx], nrm[idx])
+    return (np.full(n, kind), us[idx], vs[idx], q[idx], val[:, 1][idx],
+            f.gap_at(us, vs)[idx], val[:, 2][idx], slope[idx], xyz[idx], nrm[idx])
 
 
 def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],
@@ -378,10 +380,9 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
         if act.size == 0:
             break
         ua, va = uv[act, 0], uv[act, 1]
-        x = np.stack([s.ev(ua, va) for s in f.pos], -1)
-        jac = np.stack([np.stack([s.ev(ua, va, dx=1) for s in f.pos], -1),
-                        np.stack([s.ev(ua, va, dy=1) for s in f.pos], -1)],
-                       axis=-1)  # (m, 3, 2)
+        x = f.values(("pos",), ua, va)
+        jac = np.stack([f.values(("pos",), ua, va, dx=1),
+                        f.values(("pos",), ua, va, dy=1)], axis=-1)  # (m, 3, 2)
         jtj = np.einsum("nia,nib->nab", jac, jac)
         jtr = np.einsum("nia,ni->na", jac, p[act] - x)
         new = np.clip(uv[act] + np.linalg.solve(jtj, jtr[..., None])[..., 0], lo, hi)
@@ -391,8 +392,8 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
         # each: the rest would move it by ~1e-15)
         act = act[step > _FOOT_STEP]
     uu, vv = uv[:, 0], uv[:, 1]
-    pos = np.stack([s.ev(uu, vv) for s in f.pos], -1)
-    nrm = np.stack([s.ev(uu, vv) for s in f.nrm], -1)
+    both = f.values(("pos", "nrm"), uu, vv)
+    pos, nrm = both[:, :3], both[:, 3:]
     nrm /= np.linalg.norm(nrm, axis=-1, keepdims=True)
     return uu, vv, pos, nrm
 

@@ -412,9 +412,10 @@ def _curve_fields(f: EaseOffFields, cc: ContactCurves) -> ContactCurves:
     """Normal arm, gear flank point and unit normal along the curves of ``cc``."""
     fin = np.isfinite(cc.v)
     us, vs = np.where(fin, cc.u, f.u[0]), np.where(fin, cc.v, f.v[0])
-    arm = np.where(fin, f.arm.ev(us, vs), np.nan)
-    pos = np.stack([np.where(fin, s.ev(us, vs), np.nan) for s in f.pos], -1)
-    nrm = np.stack([s.ev(us, vs) for s in f.nrm], -1)
+    val = f.values(("arm", "pos", "nrm"), us, vs)
+    arm = np.where(fin, val[..., 0], np.nan)
+    pos = np.where(fin[..., None], val[..., 1:4], np.nan)
+    nrm = val[..., 4:7]
     nrm = np.where(fin[..., None], nrm / np.linalg.norm(nrm, axis=-1, keepdims=True), np.nan)
     return cc._replace(normal_arm=arm, position=pos, normal=nrm)
 

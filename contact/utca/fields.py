@@ -42,6 +42,8 @@ from geometry.core.kernels import kernels_module as select_kernels
 __all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "kernels_module"]
 
 _KERNEL_MODULE = "contact.utca.isoline_numba"  # the iso-line searches' compiled kernels
+#: the scalar fields of :meth:`EaseOffFields.values` (and ``pos``, ``nrm``: three each)
+_FIELD_NAMES = ("q", "eps", "gap", "arm", "pos", "nrm", "margin", "pu", "pv")
 
 _V_NEWTON = 6  # Newton steps of the profile place v*(u) on the spline of Q
 _COLUMN_NEWTON = 12  # safeguarded Newton steps of v*(u) on a column's cubic piece
@@ -195,6 +197,7 @@ class EaseOffFields:
         # curves and the probes of near misses use two sets)
         self._lattices: dict[tuple, np.ndarray] = {}
         self._columns: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
+        self._stacked: dict[tuple, tuple] = {}  # values()'s stacked derivative splines
         if self.kernels is not None:
             # the splines as the kernels take them: (tx, ty, c, kx, ky)
             self.kernel_splines = KernelSplines(
@@ -250,6 +253,62 @@ class EaseOffFields:
         # the margin only where the rest holds (the spline is evaluated point by point)
         ok[ok] = self.margin.ev(u[ok], v[ok]) >= 0.0
         return ok
+
+    def _splines(self, name: str) -> list:
+        """The splines of one field name (:meth:`values`)."""
+        if name in ("pos", "nrm"):
+            return list(getattr(self, name))
+        if name not in _FIELD_NAMES:
+            raise InputError(f"names: must be among {', '.join(_FIELD_NAMES)}, got {name!r}")
+        return [getattr(self, name)]
+
+    def values(self, names: tuple[str, ...], u, v, dx: int = 0, dy: int = 0) -> np.ndarray:
+        """Several fields (or one partial derivative of each) at the same places.
+
+        Parameters
+        ----------
+        names : tuple of str
+            Fields among ``q`` [rad], ``eps`` [rad], ``gap`` [1/rad] (not held to
+            :attr:`gap_range`), ``arm`` [mm], ``pos`` [mm] and ``nrm`` [1] (three
+            components each: the real gear flank's point and normal, not normalised),
+            ``margin`` [1], ``pu``, ``pv`` [1].
+        u, v : array_like, broadcastable — [1]
+            Gear fractions (finite).
+        dx, dy : int
+            Order of the partial derivative in u and in v (0–2 each).
+
+        Returns
+        -------
+        ndarray, shape broadcast(u, v) + (K,)
+            The fields in the order of ``names`` (K = 1 per scalar field, 3 for ``pos``
+            and ``nrm``); each the spline's ``ev(u, v, dx, dy)``. With the compiled
+            kernels the fields share each place's B-spline basis (the fields' splines
+            are all on the grid's knots): the same numbers, to the last bit.
+
+        Raises
+        ------
+        InputError
+            An unknown field name.
+        """
+        u, v = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
+        key = (tuple(names), int(dx), int(dy))
+        if self.kernels is None:
+            splines = [s for name in names for s in self._splines(name)]
+            out = np.empty((*u.shape, len(splines)))
+            for k, spline in enumerate(splines):
+                out[..., k] = spline.ev(u, v, dx=dx, dy=dy)
+            return out
+        stacked = self._stacked.get(key)
+        if stacked is None:
+            splines = [s for name in names for s in self._splines(name)]
+            parts = [self.kernels.derivative_spline(s.tck, s.degrees, dx, dy)
+                     for s in splines]
+            tx, ty, _, kx, ky = parts[0]
+            stacked = self._stacked[key] = (tx, ty, np.stack([p[2] for p in parts]), kx, ky)
+        tx, ty, c, kx, ky = stacked
+        out = self.kernels.ev_many(tx, ty, c, kx, ky, np.ascontiguousarray(u.ravel()),
+                                   np.ascontiguousarray(v.ravel()))
+        return out.reshape(*u.shape, c.shape[0])
 
     def lattice(self, uc):
         """Q at the coarse places uc × the grid's profile nodes (cached)."""

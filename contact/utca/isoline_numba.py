@@ -14,7 +14,10 @@ the NumPy path of :class:`contact.utca.fields.EaseOffFields` (which stays the re
 - Newton's method on v*(u) (:meth:`EaseOffFields.newton_v`), the inside measure
   (:meth:`EaseOffFields.measure`), the ends' false position
   (:func:`contact.utca.contact_curves._false_position_ends`) and the columns' Newton
-  steps (:meth:`EaseOffFields.solve_columns`) repeat their NumPy statements per point.
+  steps (:meth:`EaseOffFields.solve_columns`) repeat their NumPy statements per point;
+- several fields at the same places (:meth:`EaseOffFields.values`: the flank's points
+  and normals, Q, ε, the normal arm) share each point's basis (:func:`ev_many`), as all
+  the fields' splines are on the grid's knots.
 
 The two paths agree to the last bit on this machine (``tests/test_isoline_kernels.py``);
 numba does not contract ``a * b + c`` into fused multiply-adds or reassociate sums unless
@@ -36,6 +39,7 @@ import numpy as np
 __all__ = [
     "derivative_spline",
     "ev",
+    "ev_many",
     "false_position_ends",
     "measure",
     "newton_v",
@@ -165,6 +169,33 @@ def ev(tx, ty, c, kx, ky, x, y):
     hh = np.empty(max(kx, ky) + 1)
     for p in range(x.size):
         out[p] = _value(tx, ty, c, kx, ky, x[p], y[p], hx, hy, hh)
+    return out
+
+
+@_jit
+def ev_many(tx, ty, c, kx, ky, x, y):
+    """Values (M, K) of K splines on the same knots at the points (x[i], y[i]) (M,):
+    ``RectBivariateSpline.ev`` of each (coefficients ``c`` (K, ·)), the points' bases
+    computed once for all K (the same numbers as computing them for each)."""
+    k = c.shape[0]
+    out = np.empty((x.size, k))
+    hx = np.empty(kx + 1)
+    hy = np.empty(ky + 1)
+    hh = np.empty(max(kx, ky) + 1)
+    nky1 = ty.size - ky - 1
+    for p in range(x.size):
+        lx = _basis(tx, kx, x[p], hx, hh)
+        ly = _basis(ty, ky, y[p], hy, hh)
+        for s in range(k):
+            l1 = (lx - kx) * nky1 + (ly - ky)
+            sp = 0.0
+            for i1 in range(kx + 1):
+                l2 = l1
+                for j1 in range(ky + 1):
+                    sp = sp + c[s, l2] * hx[i1] * hy[j1]
+                    l2 += 1
+                l1 += nky1
+            out[p, s] = sp
     return out
 
 
