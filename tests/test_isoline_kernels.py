@@ -103,6 +103,37 @@ def test_contact_curves_agree(easeoff):
     np.testing.assert_array_equal(got.index, want.index)
 
 
+@pytest.mark.parametrize("name, d_e, d_p", [
+    ("kolivand2009_fh_12x41_reference", 0.2, -0.2),
+    ("iso23509_sample2_fm", -0.2, 0.2),
+    ("kolivand2009_fm_11x41_reference", 0.2, -0.2)])
+def test_second_order_curves_agree(name, d_e, d_p):
+    """The whole contact-curve evaluation (coarse runs, short curves, ends, samples,
+    lowest point; first and second order) of 301 iso-lines over eight pitches, on a
+    face-hobbed pair and on ISO sample 2 at extreme mountings, both paths."""
+    from contact.catalogue import resolve_case
+    from contact.study.points import misalignment_of
+    from contact.utca import CURVE_SPACINGS
+    from contact.utca.contact_curves import _curves_second_order
+    from contact.utca.easeoff import ease_off
+
+    case = resolve_case(name)
+    m0 = case.misalignment
+    mis = misalignment_of(m0, {"delta_E": m0.delta_E + d_e, "delta_P": m0.delta_P + d_p})
+    eo = ease_off(dataclasses.replace(case, misalignment=mis))
+    fk, fn = EaseOffFields(eo, kernels="numba"), EaseOffFields(eo, kernels="numpy")
+    t = float(np.nanmedian(eo.roll_angle)) + np.linspace(-4.0, 4.0, 301) * eo.pitch
+    frac = CURVE_SPACINGS["cosine"](41)
+    got, want = _curves_second_order(fk, t, frac), _curves_second_order(fn, t, frac)
+    assert 60 <= np.isfinite(want.ute).sum() < t.size  # curves, and targets without one
+    for field in ("u", "v", "ease_off_angle", "ute", "shift", "contact_u", "contact_v",
+                  "position", "normal"):
+        a, b = getattr(got, field), getattr(want, field)
+        np.testing.assert_array_equal(np.isfinite(a), np.isfinite(b), err_msg=field)
+        np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12, err_msg=field)
+    np.testing.assert_array_equal(got.index, want.index)
+
+
 def test_field_queries_agree(easeoff):
     """newton_v, measure and solve_columns on their own: places on, inside and beyond
     the grid, NaN places, targets the iso-lines miss."""

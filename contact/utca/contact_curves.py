@@ -165,6 +165,17 @@ def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
     # peaks inside between them, that peak seeds it (a pair entering or leaving at a corner
     # of the region keeps its curve until the curve shrinks to nothing)
     short = _short_curves(f, t, co.u, co.v, co.have)
+    if f.kernels is not None:  # the same steps below, compiled
+        ks = f.kernel_splines
+        up, vp, eps, ute, cu, cv, index = f.kernels.seed_places(
+            ks.q, ks.q_v, ks.margin, ks.eps, f.u, f.v, f.cell_ok,
+            np.ascontiguousarray(t, dtype=float), np.ascontiguousarray(frac, dtype=float),
+            co.u, co.v, co.have, co.start, co.stop,
+            short.rows.astype(np.int64), short.u, short.v, short.lo, short.hi, _END_ITER)
+        return ContactCurves(
+            target=t, shift=np.zeros(nb), u=up, v=vp, ease_off_angle=eps,
+            gap=np.where(np.isfinite(vp), 0.0, np.nan), normal_arm=None, position=None,
+            normal=None, ute=ute, contact_u=cu, contact_v=cv, index=index)
     ua, ub = _curve_ends(f, t, co, short)
     up = ua[:, None] + (ub - ua)[:, None] * frac
     up_safe = np.where(np.isfinite(up), up, u0)
@@ -197,6 +208,10 @@ def _coarse_runs(f: EaseOffFields, t: np.ndarray, coarse_per_cell: int) -> _Coar
     nc = coarse_per_cell * (len(f.u) - 1) + 1
     uc = np.linspace(float(f.u[0]), float(f.u[-1]), nc)
     vc = f.solve_columns(uc, t)
+    if f.kernels is not None:  # the same runs, compiled
+        have, start, stop = f.kernels.coarse_runs(f.kernel_splines.margin, f.u, f.v,
+                                                  f.cell_ok, uc, vc)
+        return _Coarse(uc, vc, have, start, stop)
     ok = f.inside(np.broadcast_to(uc, vc.shape), vc)
     # vectorised over the curves: a run starts where ok rises and ends before it falls;
     # argmax takes the first of equally long runs

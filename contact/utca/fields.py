@@ -73,6 +73,7 @@ class KernelSplines(NamedTuple):
     q: tuple  # Q [rad]
     q_v: tuple  # ∂Q/∂v [rad]
     margin: tuple  # the pinion mate's inside measure [1]
+    eps: tuple  # ε [rad]
 
 
 def _numba_kernels() -> ModuleType | None:
@@ -203,7 +204,8 @@ class EaseOffFields:
             self.kernel_splines = KernelSplines(
                 (*self.q.tck, *self.q.degrees),
                 self.kernels.derivative_spline(self.q.tck, self.q.degrees, 0, 1),
-                (*self.margin.tck, *self.margin.degrees))
+                (*self.margin.tck, *self.margin.degrees),
+                (*self.eps.tck, *self.eps.degrees))
 
     def gap_at(self, u, v):
         """The pinion's gap curvature K at gear places, held within the nodes' range.

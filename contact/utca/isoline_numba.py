@@ -15,6 +15,12 @@ the NumPy path of :class:`contact.utca.fields.EaseOffFields` (which stays the re
   (:meth:`EaseOffFields.measure`), the ends' false position
   (:func:`contact.utca.contact_curves._false_position_ends`) and the columns' Newton
   steps (:meth:`EaseOffFields.solve_columns`) repeat their NumPy statements per point;
+- the whole evaluation of a batch of iso-lines after the column solves
+  (:func:`contact.utca.contact_curves._seed_places`: the coarse samples' largest inside
+  runs, :func:`coarse_runs`; the ends, the samples, ε and the lowest point,
+  :func:`seed_places`), so a transition search's call on 4 rolls is no longer mostly the
+  interpreter's; the short curves' grid search stays in NumPy (it runs where a curve lies
+  between two coarse samples, calling the kernels above);
 - several fields at the same places (:meth:`EaseOffFields.values`: the flank's points
   and normals, Q, ε, the normal arm) share each point's basis (:func:`ev_many`), as all
   the fields' splines are on the grid's knots.
@@ -37,12 +43,14 @@ import numba
 import numpy as np
 
 __all__ = [
+    "coarse_runs",
     "derivative_spline",
     "ev",
     "ev_many",
     "false_position_ends",
     "measure",
     "newton_v",
+    "seed_places",
     "solve_columns",
 ]
 
@@ -376,3 +384,208 @@ def solve_columns(qn, vn, q_sign, target, breaks, pieces, cell_piece, n_iter):
             if not (abs(f) > 1e-9):
                 out[ib, j] = x + x0
     return out
+
+
+@_jit
+def _inside_one(margin, ug, vg, cell_ok, u, v, w):
+    """:meth:`EaseOffFields.inside` of one place: in the grid, in a cell whose corners
+    were computed, and with the pinion mate in its blank (margin ≥ 0)."""
+    if not (u >= ug[0] and u <= ug[-1] and v >= vg[0] and v <= vg[-1]
+            and math.isfinite(v)):
+        return False
+    iu = min(max(np.searchsorted(ug, u, side="right") - 1, 0), ug.size - 2)
+    iv = min(max(np.searchsorted(vg, v, side="right") - 1, 0), vg.size - 2)
+    if not cell_ok[iu, iv]:
+        return False
+    hx, hy, hh = w
+    return _value(margin[0], margin[1], margin[2], margin[3], margin[4], u, v,
+                  hx, hy, hh) >= 0.0
+
+
+@_jit
+def coarse_runs(margin, ug, vg, cell_ok, uc, vc):
+    """The largest run of inside coarse samples of each iso-line (the first of equally
+    long ones), as :func:`contact.utca.contact_curves._coarse_runs` after its column
+    solves ``vc`` (nb, nc) at the places ``uc`` (nc,): have, start, stop (nb,) (−1 where
+    no sample is inside)."""
+    w = _work(margin)
+    nb, nc = vc.shape
+    have = np.zeros(nb, dtype=np.bool_)
+    start = np.full(nb, -1, dtype=np.int64)
+    stop = np.full(nb, -1, dtype=np.int64)
+    for r in range(nb):
+        best, best_at, run, run_at = 0, -1, 0, -1
+        for j in range(nc):
+            if _inside_one(margin, ug, vg, cell_ok, uc[j], vc[r, j], w):
+                if run == 0:
+                    run_at = j
+                run += 1
+                if run > best:  # (strictly longer: the first of equal runs is kept)
+                    best, best_at = run, run_at
+            else:
+                run = 0
+        if best > 0:
+            have[r] = True
+            start[r] = best_at
+            stop[r] = best_at + best - 1
+    return have, start, stop
+
+
+@_jit
+def _curve_ends(q, qv, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop, s_rows, s_u,
+                s_v, s_lo, s_hi, n_end):
+    """``_curve_ends``: the ends (ua, ub) (nb,) of the curves, refined by
+    :func:`false_position_ends` on the batch the NumPy path builds (the runs' low ends, their
+    high ends, the short curves' low and high ends)."""
+    nb, nc = vc.shape
+    ua = np.full(nb, np.nan)
+    ub = np.full(nb, np.nan)
+    n_lo = 0
+    n_hi = 0
+    for r in range(nb):
+        if have[r]:
+            ua[r] = uc[min(max(start[r], 0), nc - 1)]
+            ub[r] = uc[min(max(stop[r], 0), nc - 1)]
+            if start[r] > 0:
+                n_lo += 1
+            if stop[r] < nc - 1:
+                n_hi += 1
+    n_s = s_rows.size
+    m_ends = n_lo + n_hi + 2 * n_s
+    if m_ends == 0:
+        return ua, ub
+    rows = np.empty(m_ends, dtype=np.int64)
+    a = np.empty(m_ends)
+    b = np.empty(m_ends)
+    va = np.empty(m_ends)
+    i = 0
+    for r in range(nb):
+        if have[r] and start[r] > 0:
+            rows[i], a[i], b[i], va[i] = r, uc[start[r]], uc[start[r] - 1], vc[r, start[r]]
+            i += 1
+    for r in range(nb):
+        if have[r] and stop[r] < nc - 1:
+            rows[i], a[i], b[i], va[i] = r, uc[stop[r]], uc[stop[r] + 1], vc[r, stop[r]]
+            i += 1
+    for side in range(2):
+        for s in range(n_s):
+            rows[i], a[i], va[i] = s_rows[s], s_u[s], s_v[s]
+            b[i] = s_lo[s] if side == 0 else s_hi[s]
+            i += 1
+    tr = np.empty(m_ends)
+    for i in range(m_ends):
+        tr[i] = t[rows[i]]
+    a = false_position_ends(q, qv, margin, ug, vg, cell_ok, tr, a, b, va, n_end)
+    for i in range(n_lo):
+        ua[rows[i]] = a[i]
+    for i in range(n_lo, n_lo + n_hi):
+        ub[rows[i]] = a[i]
+    for s in range(n_s):
+        ua[s_rows[s]] = a[n_lo + n_hi + s]
+        ub[s_rows[s]] = a[n_lo + n_hi + n_s + s]
+    return ua, ub
+
+
+@_jit
+def _run_start(uc, vc, r, s0, s1, x):
+    """``_run_interpolation`` of one place x of curve r: its run's coarse profile places
+    (s0 … s1) interpolated linearly (ends held)."""
+    j = min(max(np.searchsorted(uc, x, side="right") - 1, s0), s1)
+    jn = min(j + 1, s1)
+    yj = vc[r, j]
+    yn = vc[r, jn]
+    step = jn != j
+    slope = (yn - yj) / (uc[jn] - uc[j] if step else 1.0)
+    val = slope * (x - uc[j]) + yj if (step and uc[j] != x) else yj
+    if x < uc[s0]:
+        return vc[r, s0]
+    if x >= uc[s1]:
+        return vc[r, s1]
+    return val
+
+
+@_jit
+def _lowest_point(q, qv, eps, vg, t, up, vp, e, w):
+    """``_lowest_point`` with ``_parabola_vertex``: ute, cu, cv, index (nb,)."""
+    nb, n = up.shape
+    hx, hy, hh = w
+    v0, v1 = vg[0], vg[-1]
+    ute = np.full(nb, np.nan)
+    cu = np.full(nb, np.nan)
+    cv = np.full(nb, np.nan)
+    index = np.full(nb, -1, dtype=np.int64)
+    for r in range(nb):
+        k = -1
+        emin = np.inf
+        for j in range(n):  # argmin of ε over the samples (the first of equal ones)
+            if math.isfinite(vp[r, j]) and (k < 0 or e[r, j] < emin):
+                k, emin = j, e[r, j]
+        if k < 0:
+            continue
+        index[r] = k
+        ute[r], cu[r], cv[r] = emin, up[r, k], vp[r, k]
+        if not (0 < k < n - 1):
+            continue
+        em, ec, ep = e[r, k - 1], e[r, k], e[r, k + 1]
+        h1 = up[r, k] - up[r, k - 1]
+        h2 = up[r, k + 1] - up[r, k]
+        a1, a2 = em - ec, ep - ec
+        den = 2 * (h2 * a1 + h1 * a2)
+        d = (h2 * h2 * a1 - h1 * h1 * a2) / den if (math.isfinite(den) and den > 0) else 0.0
+        ur = up[r, k] + _minimum(_maximum(d, -0.5 * h1), 0.5 * h2)
+        vr = _newton_one(q, qv, v0, v1, ur, t[r], vp[r, k], False, w)
+        if math.isfinite(vr):
+            er = _value(eps[0], eps[1], eps[2], eps[3], eps[4], ur, vr, hx, hy, hh)
+            if er < ec:
+                ute[r], cu[r], cv[r] = er, ur, vr
+    return ute, cu, cv, index
+
+
+@_jit
+def seed_places(q, qv, margin, eps, ug, vg, cell_ok, t, frac, uc, vc, have, start, stop,
+                s_rows, s_u, s_v, s_lo, s_hi, n_end):
+    """The iso-lines' places, ε and contact points from their coarse runs, as
+    :func:`contact.utca.contact_curves._seed_places` after :func:`coarse_runs` and the
+    short curves (rows ``s_rows`` (M,), seeds ``s_u``, ``s_v``, brackets ``s_lo``,
+    ``s_hi``): the ends (:func:`false_position_ends`, ``n_end`` steps, the same batch),
+    the samples at ``frac`` (n,) by Newton's method from the runs' interpolation, ε there,
+    the lowest sample and its parabola's vertex. Returns up, vp, ε (nb, n) and ute, cu,
+    cv (nb,), index (nb,)."""
+    w = _work(q)
+    hx, hy, hh = w
+    nb = vc.shape[0]
+    n = frac.size
+    u0 = ug[0]
+    v0, v1 = vg[0], vg[-1]
+    ua, ub = _curve_ends(q, qv, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop,
+                         s_rows, s_u, s_v, s_lo, s_hi, n_end)
+    short_v = np.full(nb, np.nan)
+    is_short = np.zeros(nb, dtype=np.bool_)
+    for s in range(s_rows.size):
+        is_short[s_rows[s]] = True
+        short_v[s_rows[s]] = s_v[s]
+    up = np.empty((nb, n))
+    vp = np.full((nb, n), np.nan)
+    e = np.full((nb, n), np.nan)
+    for r in range(nb):
+        for k in range(n):
+            up[r, k] = ua[r] + (ub[r] - ua[r]) * frac[k]
+        if not (have[r] or is_short[r]):
+            continue
+        for k in range(n):
+            # Newton from the run's interpolation (a short curve: from its seed)
+            x = up[r, k] if math.isfinite(up[r, k]) else u0
+            vs = short_v[r] if is_short[r] else _run_start(uc, vc, r, start[r], stop[r], x)
+            if not math.isfinite(vs):
+                vs = 0.5 * (v0 + v1)
+            vp[r, k] = _newton_one(q, qv, v0, v1, x, t[r], vs, False, w)
+        for k in range(n):
+            if math.isfinite(vp[r, k]):
+                e[r, k] = _value(eps[0], eps[1], eps[2], eps[3], eps[4], up[r, k], vp[r, k],
+                                 hx, hy, hh)
+    for r in range(nb):
+        for k in range(n):
+            if not math.isfinite(vp[r, k]):
+                up[r, k] = np.nan
+    ute, cu, cv, index = _lowest_point(q, qv, eps, vg, t, up, vp, e, w)
+    return up, vp, e, ute, cu, cv, index
