@@ -41,9 +41,10 @@ e.g. face-hobbed cases beside the face-milled default (target: a face-hobbed ana
     python benchmarks/ltca.py --case kolivand2009_fh_12x41 \
         --case kolivand2009_table54_A_fh --baseline
 
-``--compare-kernels`` runs each case twice, taking turns: on the iso-line searches' NumPy
-path (``LTCA_KERNELS=numpy``) and on their compiled kernels (numba, the ``fast`` extra),
-the ratio column giving the kernels' gain in one run::
+``--compare-kernels`` runs each case twice, taking turns: on the NumPy paths of the
+envelope solver's Newton and the contact curves' iso-line searches
+(``LTCA_KERNELS=numpy``) and on their compiled kernels (numba, the ``fast`` extra), the
+ratio column giving the kernels' gain in one run::
 
     python benchmarks/ltca.py --case kolivand2009_fm_11x41_reference --compare-kernels
 """
@@ -77,7 +78,8 @@ FH_TARGET_RATIO = 1.5  # a face-hobbed analysis at most this many times a face-m
 
 
 def _kernels_in_use() -> str:
-    """The iso-line searches' implementation the timings ran (``LTCA_KERNELS``)."""
+    """The implementation of the envelope Newton and the iso-line searches the timings ran
+    (``LTCA_KERNELS``)."""
     from contact.utca.fields import kernels_module
 
     return ("numpy (LTCA_KERNELS=numpy, or numba not installed)" if kernels_module() is None
@@ -131,7 +133,7 @@ def measure(cases, torque: float, opts: LTCAOptions, repeat: int,
             kernels: list[str | None] | None = None) -> list[dict]:
     """Per case: the stage CPU times [s] of ``repeat`` whole analyses and study points.
 
-    ``kernels``: the iso-line searches' implementation of each case (``LTCA_KERNELS``;
+    ``kernels``: the kernels' implementation of each case (``LTCA_KERNELS``;
     None: as the environment has it), so one case can run twice, once on each path.
 
     Returns one dict per case: ``name``, ``method``, ``analysis`` and ``point`` (lists of
@@ -184,9 +186,9 @@ def work_counts(shared: StudyInputs, point: dict) -> dict[str, float]:
     evaluations (and their points), the spline evaluations (FITPACK, and their points),
     the contact curves' coarse samples solved on Q's column pieces (where the code has
     them: :meth:`contact.utca.EaseOffFields.solve_columns`, and their points) and the
-    Python-level calls (``cProfile``'s count of function calls). Counted on the iso-line
-    searches' NumPy path (``LTCA_KERNELS=numpy``): the compiled kernels do the same
-    arithmetic, out of sight of these counters."""
+    Python-level calls (``cProfile``'s count of function calls). Counted on the NumPy
+    paths (``LTCA_KERNELS=numpy``): the compiled kernels do the same arithmetic, out of
+    sight of these counters."""
     import cProfile
     import pstats
 
@@ -296,8 +298,8 @@ def main() -> None:
     parser.add_argument("--rolls-per-cycle", type=int, default=20)
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--compare-kernels", action="store_true",
-                        help="each case twice, on the iso-line searches' NumPy path and on "
-                             "the compiled kernels (LTCA_KERNELS=numpy / numba), taking turns")
+                        help="each case twice, on the NumPy paths and on the compiled "
+                             "kernels (LTCA_KERNELS=numpy / numba), taking turns")
     args = parser.parse_args()
     names = ([args.case_arg] if args.case_arg is not None else []) + args.case
     if args.baseline is not None:
@@ -315,7 +317,7 @@ def main() -> None:
     print(f"T_p = {args.torque:g} N m, {opts.cycles} x {opts.rolls_per_cycle} roll positions, "
           f"solver {opts.solver}, one BLAS thread; CPU time (process_time), medians of "
           f"{args.repeat} runs; load average {load:.1f} -> {os.getloadavg()[0]:.1f} on "
-          f"{os.cpu_count()} cores; iso-line kernels: "
+          f"{os.cpu_count()} cores; kernels: "
           f"{'per column' if kernels else _kernels_in_use()}")
     for r in results:
         if r["passes"] > 1:

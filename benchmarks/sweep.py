@@ -159,7 +159,7 @@ def main() -> None:
             res.append(r)
         small = (run_map(cases[0], args.small, 2, tmp) if args.small > 0 else None)
     print(f"{args.grid} x {args.grid} dE x dP maps at {TORQUE:g} N m; load average "
-          f"{load0:.1f} -> {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores; iso-line "
+          f"{load0:.1f} -> {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores; "
           f"kernels: {'numpy' if kernels_module() is None else 'numba'} (LTCA_KERNELS)")
     headers = ["", *(r["name"] for r in res)]
     rows = [
