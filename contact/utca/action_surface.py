@@ -50,6 +50,7 @@ import numpy as np
 
 from geometry.core.errors import InputError
 from geometry.core.validation import one_of, real
+from geometry.core.vectors import cross
 from geometry.pair.assembly import Misalignment, case_transforms, rotate_about_axis
 
 if TYPE_CHECKING:
@@ -190,13 +191,13 @@ def meshing_coefficients(kin: MeshKinematics, r0: np.ndarray, n0: np.ndarray):
     a = kin.pinion_axis
     ag = kin.gear_axis
     w0 = r0 - kin.pinion_origin
-    m0 = np.cross(w0, n0)
+    m0 = cross(w0, n0)
     c1 = m0 @ a
-    k = np.cross(ag, kin.pinion_origin - kin.gear_origin)
+    k = cross(ag, kin.pinion_origin - kin.gear_origin)
     ka, aga = float(k @ a), float(ag @ a)
     na, ma = n0 @ a, m0 @ a
     b = (n0 @ k - ka * na) + (m0 @ ag - aga * ma)
-    c = np.cross(a, n0) @ k + np.cross(a, m0) @ ag
+    c = cross(a, n0) @ k + cross(a, m0) @ ag
     a0 = ka * na + aga * ma
     return c1, a0, b, c
 

@@ -38,7 +38,8 @@ from typing import NamedTuple
 import numpy as np
 
 from geometry.core.errors import InputError
-from geometry.machine.family import GeneratedFamily, cross, dot, meshing_function
+from geometry.core.vectors import cross
+from geometry.machine.family import GeneratedFamily, dot, meshing_function
 
 __all__ = [
     "PrincipalCurvatures",

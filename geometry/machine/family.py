@@ -13,7 +13,7 @@ GeneratedFamily     r_g and its derivatives, shape (..., 3)
 Chain, chain        the constant factors of the machine chain, folded for 3-vectors
 generated_family    r_g(s, θ, q) and all first and second derivatives in the blank frame
 meshing_function    seed Eq. 2.8, normalised, and its gradient
-cross, dot          the vector products of the last axis
+dot                 the dot product of the last axis (cross: geometry.core.vectors)
 cutter_buffer, family_buffer, family_views, meshing_buffer   the batched kernels
 """
 
@@ -358,15 +358,6 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
     v = cutter_buffer(blade, sections, s.ravel(), theta.ravel(), section)
     return family_views(family_buffer(chain(settings), settings, v, q, theta.ravel()),
                         q.shape)
-
-
-def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Cross product over the last axis (faster than np.cross for small batches)."""
-    out = np.empty(np.broadcast_shapes(a.shape, b.shape))
-    out[..., 0] = a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1]
-    out[..., 1] = a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2]
-    out[..., 2] = a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-    return out
 
 
 def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -45,6 +45,7 @@ import numpy as np
 
 from geometry.core.errors import InputError
 from geometry.core.validation import real
+from geometry.core.vectors import cross
 
 __all__ = [
     "HANDS",
@@ -254,4 +255,4 @@ def rotate_about_axis(axis: np.ndarray, angle, v: np.ndarray) -> np.ndarray:
     """
     c = np.cos(angle)[..., None]
     s = np.sin(angle)[..., None]
-    return v * c + np.cross(axis, v) * s + axis * (v @ axis)[..., None] * (1.0 - c)
+    return v * c + cross(axis, v) * s + axis * (v @ axis)[..., None] * (1.0 - c)
