@@ -27,6 +27,7 @@ one_of           a value from a fixed set of choices
 
 from __future__ import annotations
 
+import math
 from collections.abc import Collection
 from typing import Any
 
@@ -92,18 +93,27 @@ def real(name: str, value: Any, *, unit: str = "", low: float | None = None,
     InputError
         ``<name>: must be <accepted> [<unit>], got <value>``.
     """
-    accepted = _accepted(low, high, low_open, high_open, scale)
     if isinstance(value, (bool, np.bool_, str, bytes)):
-        raise InputError(f"{name}: must be a real number, {accepted}{_unit(unit)}, "
+        raise InputError(f"{name}: must be a real number, "
+                         f"{_accepted(low, high, low_open, high_open, scale)}{_unit(unit)}, "
                          f"got {value!r}")
     try:
         v = float(value)
     except (TypeError, ValueError):
-        raise InputError(f"{name}: must be a real number, {accepted}{_unit(unit)}, "
+        raise InputError(f"{name}: must be a real number, "
+                         f"{_accepted(low, high, low_open, high_open, scale)}{_unit(unit)}, "
                          f"got {value!r}") from None
-    if not bool(_inside(v, low, high, low_open, high_open)):
+    # (math.isfinite and the comparisons on the float: _inside's test without NumPy)
+    ok = math.isfinite(v)
+    if low is not None:
+        ok = ok and ((v > low) if low_open else (v >= low))
+    if high is not None:
+        ok = ok and ((v < high) if high_open else (v <= high))
+    if not ok:
         got = repr(value) if scale == 1.0 else f"{v / scale:g}"
-        raise InputError(f"{name}: must be {accepted}{_unit(unit)}, got {got}")
+        raise InputError(f"{name}: must be "
+                         f"{_accepted(low, high, low_open, high_open, scale)}{_unit(unit)}, "
+                         f"got {got}")
     return v
 
 
@@ -153,9 +163,11 @@ def real_array(name: str, value: Any, *, unit: str = "", low: float | None = Non
         Not numeric, of the wrong rank, or with entries outside the accepted set (the
         message gives how many and the first of them).
     """
-    accepted = _accepted(low, high, low_open, high_open)
+    # (the accepted set is worded only for a message: this check runs on every call of
+    # the compliance and contact models, a few hundred times per analysis)
     if isinstance(value, (bool, np.bool_, str, bytes)):
-        raise InputError(f"{name}: must be real numbers, {accepted}{_unit(unit)}, "
+        raise InputError(f"{name}: must be real numbers, "
+                         f"{_accepted(low, high, low_open, high_open)}{_unit(unit)}, "
                          f"got {value!r}")
     try:
         if not isinstance(value, np.ndarray):
@@ -164,15 +176,17 @@ def real_array(name: str, value: Any, *, unit: str = "", low: float | None = Non
             raise TypeError
         arr = np.array(value, dtype=float)
     except (TypeError, ValueError):
-        raise InputError(f"{name}: must be real numbers, {accepted}{_unit(unit)}, got "
+        raise InputError(f"{name}: must be real numbers, "
+                         f"{_accepted(low, high, low_open, high_open)}{_unit(unit)}, got "
                          f"{type(value).__name__}") from None
     if ndim is not None and arr.ndim != ndim:
         raise InputError(f"{name}: must be {ndim}-dimensional, got shape {arr.shape}")
     ok = _inside(arr, low, high, low_open, high_open)
-    if not np.all(ok):
+    if not ok.all():
         bad = arr[~ok]
-        raise InputError(f"{name}: must be {accepted}{_unit(unit)}, got {bad.size} of "
-                         f"{arr.size} value(s) outside, e.g. {float(bad.flat[0])!r}")
+        raise InputError(f"{name}: must be {_accepted(low, high, low_open, high_open)}"
+                         f"{_unit(unit)}, got {bad.size} of {arr.size} value(s) outside, "
+                         f"e.g. {float(bad.flat[0])!r}")
     return arr
 
 
