@@ -127,6 +127,12 @@ def _basis(t, k, x, h, hh):
             hi = mid
         else:
             lo = mid + 1
+    if k == 3:
+        _deboor3(t, lo, x, h)
+        return lo
+    if k == 2:
+        _deboor2(t, lo, x, h)
+        return lo
     h[0] = 1.0
     for j in range(1, k + 1):
         for i in range(j):
@@ -142,6 +148,49 @@ def _basis(t, k, x, h, hh):
             h[i - 1] = h[i - 1] + f * (t[li] - x)
             h[i] = f * (x - t[lj])
     return lo
+
+
+@_jit
+def _step(t, li, lj, x, g, lower):
+    """One term of the recurrence (``fpbspl``'s inner loop): the B-spline values (h[i − 1],
+    h[i]) from h[i − 1] = ``lower`` and hh[i − 1] = ``g`` on the knots t[lj] < t[li]."""
+    a = t[li]
+    b = t[lj]
+    if a == b:
+        return lower, 0.0
+    f = g / (a - b)
+    return lower + f * (a - x), f * (x - b)
+
+
+@_jit
+def _deboor2(t, lo, x, h):
+    """The recurrence of :func:`_basis` for k = 2, unrolled into scalars (the same
+    operations in the same order: ~2× faster than the loops over small arrays)."""
+    h0, h1 = _step(t, lo + 1, lo, x, 1.0, 0.0)
+    g0, g1 = h0, h1
+    h0, h1 = _step(t, lo + 1, lo - 1, x, g0, 0.0)
+    h1, h2 = _step(t, lo + 2, lo, x, g1, h1)
+    h[0] = h0
+    h[1] = h1
+    h[2] = h2
+
+
+@_jit
+def _deboor3(t, lo, x, h):
+    """The recurrence of :func:`_basis` for k = 3, unrolled into scalars (as
+    :func:`_deboor2`)."""
+    h0, h1 = _step(t, lo + 1, lo, x, 1.0, 0.0)
+    g0, g1 = h0, h1
+    h0, h1 = _step(t, lo + 1, lo - 1, x, g0, 0.0)
+    h1, h2 = _step(t, lo + 2, lo, x, g1, h1)
+    g0, g1, g2 = h0, h1, h2
+    h0, h1 = _step(t, lo + 1, lo - 2, x, g0, 0.0)
+    h1, h2 = _step(t, lo + 2, lo - 1, x, g1, h1)
+    h2, h3 = _step(t, lo + 3, lo, x, g2, h2)
+    h[0] = h0
+    h[1] = h1
+    h[2] = h2
+    h[3] = h3
 
 
 @_jit
