@@ -36,8 +36,10 @@ from contact.utca.action_surface import (
     action_roll_angle,
     conjugate_points,
 )
+from contact.utca.spline_group import SplineGroup
 from geometry.case import TeethKey
 from geometry.core.errors import InputError
+from geometry.core.kernels import kernels_module
 from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import working_sections
 from geometry.machine.flank import FlankSurface, blank_outline, flank_surface
@@ -193,6 +195,7 @@ class _ForwardMap:
     nodes: Mates  # the mates on the extended grid
     z: RectBivariateSpline  # [mm] the image's axial position over (u, v)
     rho: RectBivariateSpline  # [mm] and its radius
+    image: SplineGroup  # (z, ρ) evaluated together
 
     def mates(self, u, v, guess) -> Mates:
         """Mates at the fractions (u, v), the envelope solver started at ``guess``."""
@@ -202,8 +205,7 @@ class _ForwardMap:
 
     def jacobian(self, u, v) -> np.ndarray:
         """(..., 2, 2) [mm] ∂(z, ρ)/∂(u, v) of the spline."""
-        return np.stack([np.stack([self.z.ev(u, v, dx=1), self.z.ev(u, v, dy=1)], -1),
-                         np.stack([self.rho.ev(u, v, dx=1), self.rho.ev(u, v, dy=1)], -1)], -2)
+        return np.stack([self.image(u, v, dx=1), self.image(u, v, dy=1)], -1)
 
     def newton_step(self, j, u, v, e, limit=_STEP_LIMIT):
         """Places (u, v) moved by the Newton step J⁻¹ e (held to ``limit`` in each fraction;
@@ -347,9 +349,10 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
     if smooth.sum() < 16:
         smooth = ok
     image = fill_missing(fwd.image, smooth)
-    return _ForwardMap(case, pf, kin, cp, branch, up, vp, fwd,
-                       RectBivariateSpline(up, vp, image[..., 0]),
-                       RectBivariateSpline(up, vp, image[..., 1]))
+    z = RectBivariateSpline(up, vp, image[..., 0])
+    rho = RectBivariateSpline(up, vp, image[..., 1])
+    return _ForwardMap(case, pf, kin, cp, branch, up, vp, fwd, z, rho,
+                       SplineGroup([z, rho], kernels_module("contact.utca.isoline_numba")))
 
 
 _NEAREST_CANDIDATES = 4  # k-d tree neighbours re-ranked by _nearest_node's own distance
@@ -400,7 +403,7 @@ def _spline_start(fm: _ForwardMap, zt: np.ndarray, rt: np.ndarray):
     u = uu[ok][k].reshape(zt.shape)
     v = vv[ok][k].reshape(zt.shape)
     for _ in range(_SPLINE_ITER):
-        spl = np.stack([fm.z.ev(u, v), fm.rho.ev(u, v)], -1)
+        spl = fm.image(u, v)
         u, v = fm.newton_step(fm.jacobian(u, v), u, v, target - spl)
     return u, v
 

@@ -24,6 +24,7 @@ Public functions
 ----------------
 EaseOffFields   splines of an ease-off's fields and the contact region's tests
 kernels_module  the iso-line searches' implementation (NumPy, or numba's compiled kernels)
+SplineGroup     splines on the same knots evaluated together (one basis per place)
 """
 
 from __future__ import annotations
@@ -35,11 +36,12 @@ import numpy as np
 from scipy.interpolate import BSpline, RectBivariateSpline
 
 from contact.utca.easeoff import EaseOff, fill_missing
+from contact.utca.spline_group import SplineGroup
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.kernels import KERNELS, compiled_module
 from geometry.core.kernels import kernels_module as select_kernels
 
-__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "kernels_module"]
+__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "SplineGroup", "kernels_module"]
 
 _KERNEL_MODULE = "contact.utca.isoline_numba"  # the iso-line searches' compiled kernels
 #: the scalar fields of :meth:`EaseOffFields.values` (and ``pos``, ``nrm``: three each)
@@ -198,7 +200,7 @@ class EaseOffFields:
         # curves and the probes of near misses use two sets)
         self._lattices: dict[tuple, np.ndarray] = {}
         self._columns: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
-        self._stacked: dict[tuple, tuple] = {}  # values()'s stacked derivative splines
+        self._groups: dict[tuple, SplineGroup] = {}  # values()'s groups, by names
         if self.kernels is not None:
             # the splines as the kernels take them: (tx, ty, c, kx, ky)
             self.kernel_splines = KernelSplines(
@@ -223,7 +225,7 @@ class EaseOffFields:
             (on ISO sample 2 to K < 0 at the gear tip, where the nodes hold K ≥ 0.055: an
             edge's separation ε + ½ K t² then fell by hundreds of µm).
         """
-        return np.clip(self.gap.ev(u, v), *self.gap_range)
+        return np.clip(self.values(("gap",), u, v)[..., 0], *self.gap_range)
 
     def good_cell(self, u, v):
         """True where (u, v) lies in a grid cell whose corners were all computed (places
@@ -292,25 +294,12 @@ class EaseOffFields:
         InputError
             An unknown field name.
         """
-        u, v = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
-        key = (tuple(names), int(dx), int(dy))
-        if self.kernels is None:
-            splines = [s for name in names for s in self._splines(name)]
-            out = np.empty((*u.shape, len(splines)))
-            for k, spline in enumerate(splines):
-                out[..., k] = spline.ev(u, v, dx=dx, dy=dy)
-            return out
-        stacked = self._stacked.get(key)
-        if stacked is None:
-            splines = [s for name in names for s in self._splines(name)]
-            parts = [self.kernels.derivative_spline(s.tck, s.degrees, dx, dy)
-                     for s in splines]
-            tx, ty, _, kx, ky = parts[0]
-            stacked = self._stacked[key] = (tx, ty, np.stack([p[2] for p in parts]), kx, ky)
-        tx, ty, c, kx, ky = stacked
-        out = self.kernels.ev_many(tx, ty, c, kx, ky, np.ascontiguousarray(u.ravel()),
-                                   np.ascontiguousarray(v.ravel()))
-        return out.reshape(*u.shape, c.shape[0])
+        key = tuple(names)
+        group = self._groups.get(key)
+        if group is None:
+            group = self._groups[key] = SplineGroup(
+                [s for name in names for s in self._splines(name)], self.kernels)
+        return group(u, v, dx, dy)
 
     def lattice(self, uc):
         """Q at the coarse places uc × the grid's profile nodes (cached)."""
