@@ -32,6 +32,7 @@ import pytest
 from contact.catalogue import resolve_case
 from geometry.core.errors import InputError
 from geometry.machine import meshing
+from geometry.machine.family import generated_family, meshing_function
 from geometry.machine.flank import flank_surface
 from geometry.machine.meshing import solve_envelope
 
@@ -115,11 +116,41 @@ def test_solve_on_the_kernel_satisfies_the_equations(case_key, member, flank):
     np.testing.assert_array_equal(b.reason, a.reason)
     valid = b.reason == 0
     assert valid.sum() >= 0.9 * valid.size
-    assert np.nanmax(b.position_error) < 1e-10 + 1e-11
-    assert np.nanmax(np.abs(b.meshing_residual)) < 1e-12 + 1e-13
+    # the point equations in NumPy's family buffer at the kernel's roots
+    fam = generated_family(blade, settings, b.s[valid], b.theta[valid], b.q[valid],
+                           section=b.section[valid])
+    position_error = np.maximum(np.abs(fam.r[:, 2] - z[valid]),
+                                np.abs(np.hypot(fam.r[:, 0], fam.r[:, 1]) - rho[valid]))
+    assert position_error.max() < 1e-10 + 1e-11
+    if settings.process == "Generate":
+        residual, _ = meshing_function(fam, blank.outer_cone_distance)
+        assert np.abs(residual).max() < 1e-12 + 1e-13
     for name in ("s", "theta", "q", "position"):
         np.testing.assert_allclose(getattr(b, name)[valid], getattr(a, name)[valid], rtol=0,
                                    atol=ROOT_TOL, err_msg=name)
+
+
+@pytest.mark.parametrize("case_key, member, flank, motions", [
+    ("fm", "pinion", "concave", True), ("fm", "gear", "convex", False),
+    ("fh", "pinion", "convex", False), ("fh", "gear", "concave", False)])
+def test_family_buffer_on_the_kernel(case_key, member, flank, motions):
+    """The kernel's family buffer (r_g and its eleven derivative vectors, the normal) at
+    roots and off them, against geometry.machine.family.family_buffer: the same
+    expressions, to round-off (1e-12 of each vector's scale: products of a chain of
+    rotations of ~100 mm vectors, with sin and cos that may differ by an ulp)."""
+    fs, blade, settings, blank = _setup(case_key, member, flank, motions)
+    generate = settings.process == "Generate"
+    x0, section, _, _ = _starts(fs, generate, np.random.default_rng(3))
+    q = x0[:, 2] if generate else np.zeros(len(x0))
+    out = {}
+    for kernels in ("numpy", "numba"):
+        ctx = meshing._context(blade, settings, blank.outer_cone_distance, kernels)
+        out[kernels] = meshing._family(ctx, x0[:, 0], x0[:, 1], q, section)
+    a, b = out["numpy"], out["numba"]
+    assert a.shape == b.shape == (3, 11, len(x0))
+    scale = np.max(np.abs(a), axis=(0, 2), keepdims=True)  # per vector of the buffer
+    assert np.all(np.isfinite(a)) and np.all(np.isfinite(b))
+    assert (np.abs(b - a) / scale).max() < 1e-12
 
 
 def test_kernels_name_is_checked():

@@ -18,7 +18,10 @@ kernel runs the same iteration point by point in a compiled loop:
   :func:`geometry.machine.meshing._evaluate` and
   :func:`geometry.machine.family.meshing_buffer`;
 - the Cramer's-rule step, the step limits, the stall test and the final check of
-  :func:`geometry.machine.meshing._newton`.
+  :func:`geometry.machine.meshing._newton`;
+
+and :func:`family` gives the family buffer at given points (the solve's roots, the
+Jacobians of its seeds and continuation) without NumPy's per-call overhead.
 
 Every expression is the NumPy path's, in its order, but the two paths do not agree to the
 last bit: NumPy forms the chain's products with BLAS (whose kernels may fuse multiply-adds
@@ -41,7 +44,7 @@ import math
 import numba
 import numpy as np
 
-__all__ = ["newton"]
+__all__ = ["family", "newton"]
 
 _jit = numba.njit(cache=True, nogil=True)
 
@@ -456,3 +459,28 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
             x[i, j] = xi[j]
         done[i] = converged and not dead
     return x, done
+
+
+@_jit
+def family(s, theta, q, section, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
+           motion, em_coef, xb_coef, roll_coef, scalars, generate):
+    """The family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` at the
+    points (s [mm], θ [rad], q [rad], section) (n,) (q ignored in Formate); the constant
+    arguments as :func:`newton`'s."""
+    n = s.size
+    out = np.empty((3, 11, n))
+    v = np.zeros((3, 7))
+    pk = np.empty((9, 7))
+    dc = np.empty((3, 3))
+    d2c = np.empty(3)
+    y = np.empty((3, 11))
+    one = np.empty((3, 11))
+    for i in range(n):
+        qi = q[i] if generate else 0.0
+        _cutter(sec, sigma, placed, place, s[i], theta[i], section[i], v)
+        _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
+                generate, v, qi, theta[i], pk, dc, d2c, y, one)
+        for a in range(3):
+            for b in range(11):
+                out[a, b, i] = one[a, b]
+    return out

@@ -154,8 +154,18 @@ def _kernel_arguments(ctx: _Context) -> tuple:
             np.array([_TOL_POS, _TOL_MESH, _STALL_SIZE]), _MAX_ITER, _STALL_ITER)
 
 
+#: the constant arguments of envelope_numba.family: newton's up to ``generate``
+_FAMILY_ARGS = 14
+
+
 def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
-    """Family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` at flat points."""
+    """Family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` at flat points
+    (on the compiled kernel where the context holds it: the same to round-off)."""
+    if ctx.kernel is not None:
+        module, args = ctx.kernel
+        return module.family(np.require(s, float, "CW"), np.require(theta, float, "CW"),
+                             np.require(q, float, "CW"), np.require(section, np.intp, "CW"),
+                             *args[:_FAMILY_ARGS])
     v = cutter_buffer(ctx.blade, ctx.sections, s, theta, section)
     return family_buffer(ctx.chain, ctx.settings, v, q, theta)
 
