@@ -256,6 +256,25 @@ def _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, sca
 
 
 @_jit
+def _family_work():
+    """Work arrays of :func:`_point_family`: v (3, 7), pk (9, 7), dc (3, 3), d2c (3,),
+    y (3, 11)."""
+    return (np.zeros((3, 7)), np.empty((9, 7)), np.empty((3, 3)), np.empty(3),
+            np.empty((3, 11)))
+
+
+@_jit
+def _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
+                  xb_coef, roll_coef, scalars, generate, s, theta, q, k, w, out):
+    """The family buffer (3, 11) at one point (s, θ, q) on section k, into ``out``
+    (``w``: :func:`_family_work`)."""
+    v, pk, dc, d2c, y = w
+    _cutter(sec, sigma, placed, place, s, theta, k, v)
+    _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
+            generate, v, q, theta, pk, dc, d2c, y, out)
+
+
+@_jit
 def _cross_into(out, ia, ib, dst):
     """dst[:] = out[:, ia] × out[:, ib] (``_cross0``'s components)."""
     dst[0] = out[1, ia] * out[2, ib] - out[2, ia] * out[1, ib]
@@ -396,11 +415,7 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
     done = np.zeros(n, np.bool_)
     length_scale = scalars[5]
     tol_pos, tol_mesh, stall_size = controls[0], controls[1], controls[2]
-    v = np.zeros((3, 7))
-    pk = np.empty((9, 7))
-    dc = np.empty((3, 3))
-    d2c = np.empty(3)
-    y = np.empty((3, 11))
+    w = _family_work()
     out = np.empty((3, 11))
     work = np.empty((3, 3))
     grad = np.empty(3)
@@ -416,9 +431,9 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
         converged = False
         for it in range(max_iter + 1):
             q = xi[2] if generate else 0.0
-            _cutter(sec, sigma, placed, place, xi[0], xi[1], k, v)
-            _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef,
-                    scalars, generate, v, q, xi[1], pk, dc, d2c, y, out)
+            _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion,
+                          em_coef, xb_coef, roll_coef, scalars, generate, xi[0], xi[1], q, k,
+                          w, out)
             # _evaluate: residuals and Jacobian
             rho = math.hypot(out[0, 0], out[1, 0])
             rho_safe = rho if rho > 0 else 1.0
@@ -469,17 +484,13 @@ def family(s, theta, q, section, sec, sigma, placed, place, k_lin, k_point, r2_y
     arguments as :func:`newton`'s."""
     n = s.size
     out = np.empty((3, 11, n))
-    v = np.zeros((3, 7))
-    pk = np.empty((9, 7))
-    dc = np.empty((3, 3))
-    d2c = np.empty(3)
-    y = np.empty((3, 11))
+    w = _family_work()
     one = np.empty((3, 11))
     for i in range(n):
         qi = q[i] if generate else 0.0
-        _cutter(sec, sigma, placed, place, s[i], theta[i], section[i], v)
-        _family(k_lin, k_point, r2_y, r2_z, motion, em_coef, xb_coef, roll_coef, scalars,
-                generate, v, qi, theta[i], pk, dc, d2c, y, one)
+        _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
+                      xb_coef, roll_coef, scalars, generate, s[i], theta[i], qi, section[i],
+                      w, one)
         for a in range(3):
             for b in range(11):
                 out[a, b, i] = one[a, b]
