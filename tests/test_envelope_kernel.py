@@ -134,10 +134,11 @@ def test_solve_on_the_kernel_satisfies_the_equations(case_key, member, flank):
     ("fm", "pinion", "concave", True), ("fm", "gear", "convex", False),
     ("fh", "pinion", "convex", False), ("fh", "gear", "concave", False)])
 def test_family_buffer_on_the_kernel(case_key, member, flank, motions):
-    """The kernel's family buffer (r_g and its eleven derivative vectors, the normal) at
-    roots and off them, against geometry.machine.family.family_buffer: the same
-    expressions, to round-off (1e-12 of each vector's scale: products of a chain of
-    rotations of ~100 mm vectors, with sin and cos that may differ by an ulp)."""
+    """The kernel's family buffer (r_g and its eleven derivative vectors, the normal) and
+    the point equations' residuals and Jacobian, at roots and off them, against
+    geometry.machine.family.family_buffer and meshing._evaluate: the same expressions, to
+    round-off (1e-12 of each vector's, residual's or Jacobian entry's scale: products of a
+    chain of rotations of ~100 mm vectors, with sin and cos that may differ by an ulp)."""
     fs, blade, settings, blank = _setup(case_key, member, flank, motions)
     generate = settings.process == "Generate"
     x0, section, _, _ = _starts(fs, generate, np.random.default_rng(3))
@@ -151,6 +152,19 @@ def test_family_buffer_on_the_kernel(case_key, member, flank, motions):
     scale = np.max(np.abs(a), axis=(0, 2), keepdims=True)  # per vector of the buffer
     assert np.all(np.isfinite(a)) and np.all(np.isfinite(b))
     assert (np.abs(b - a) / scale).max() < 1e-12
+    # the residuals and their Jacobian (meshing._evaluate), scaled per row and column
+    z, p = fs.grid.axial[fs.reason == 0], fs.grid.radius[fs.reason == 0]
+    z, p = np.tile(z, 4), np.tile(p, 4)
+    res = {}
+    for kernels in ("numpy", "numba"):
+        ctx = meshing._context(blade, settings, blank.outer_cone_distance, kernels)
+        res[kernels] = meshing._evaluate(ctx, x0, section, z, p)[:2]
+    (fa, ja), (fb, jb) = res["numpy"], res["numba"]
+    assert fb.shape == fa.shape and jb.shape == ja.shape
+    f_scale = np.max(np.abs(fa), axis=0)
+    j_scale = np.max(np.abs(ja), axis=0)
+    assert (np.abs(fb - fa) / f_scale).max() < 1e-12
+    assert (np.abs(jb - ja) / j_scale).max() < 1e-12
 
 
 def test_kernels_name_is_checked():

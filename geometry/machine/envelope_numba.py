@@ -20,8 +20,9 @@ kernel runs the same iteration point by point in a compiled loop:
 - the Cramer's-rule step, the step limits, the stall test and the final check of
   :func:`geometry.machine.meshing._newton`;
 
-and :func:`family` gives the family buffer at given points (the solve's roots, the
-Jacobians of its seeds and continuation) without NumPy's per-call overhead.
+and :func:`family` and :func:`evaluate` give the family buffer, and the residuals with
+their Jacobian, at given points (the solve's roots, the Jacobians of its seeds and
+continuation) without NumPy's per-call overhead.
 
 Every expression is the NumPy path's, in its order, but the two paths do not agree to the
 last bit: NumPy forms the chain's products with BLAS (whose kernels may fuse multiply-adds
@@ -44,7 +45,7 @@ import math
 import numba
 import numpy as np
 
-__all__ = ["family", "newton"]
+__all__ = ["evaluate", "family", "newton"]
 
 _jit = numba.njit(cache=True, nogil=True)
 
@@ -312,6 +313,26 @@ def _meshing(out, length_scale, grad, work):
 
 
 @_jit
+def _equations(out, z, p, generate, length_scale, f, jac, grad, work):
+    """``_evaluate`` at one point from its family buffer ``out`` (3, 11): the residuals
+    f (m,) (axial position, radius [mm], and in Generate the normalised meshing function)
+    and their Jacobian jac (m, m) in (s, θ[, q])."""
+    m = f.size
+    rho = math.hypot(out[0, 0], out[1, 0])
+    rho_safe = rho if rho > 0 else 1.0
+    f[0] = out[2, 0] - z
+    f[1] = rho - p
+    for j in range(m):
+        col = 1 if j == 0 else 2 if j == 1 else 7
+        jac[0, j] = out[2, col]
+        jac[1, j] = (out[0, 0] * out[0, col] + out[1, 0] * out[1, col]) / rho_safe
+    if generate:
+        f[2] = _meshing(out, length_scale, grad, work)
+        for j in range(3):
+            jac[2, j] = grad[j]
+
+
+@_jit
 def _step(jac, f, m, limit, dx):
     """The Newton step J dx = −f into ``dx`` (``_safe_solve``) and the factor (≤ 1) that
     holds it within ``limit``; NaN where J is (near-)singular or the step is not finite."""
@@ -434,19 +455,7 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
             _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion,
                           em_coef, xb_coef, roll_coef, scalars, generate, xi[0], xi[1], q, k,
                           w, out)
-            # _evaluate: residuals and Jacobian
-            rho = math.hypot(out[0, 0], out[1, 0])
-            rho_safe = rho if rho > 0 else 1.0
-            f[0] = out[2, 0] - z[i]
-            f[1] = rho - p[i]
-            for j in range(m):
-                col = 1 if j == 0 else 2 if j == 1 else 7
-                jac[0, j] = out[2, col]
-                jac[1, j] = (out[0, 0] * out[0, col] + out[1, 0] * out[1, col]) / rho_safe
-            if generate:
-                f[2] = _meshing(out, length_scale, grad, work)
-                for j in range(3):
-                    jac[2, j] = grad[j]
+            _equations(out, z[i], p[i], generate, length_scale, f, jac, grad, work)
             converged = abs(f[0]) < tol_pos and abs(f[1]) < tol_pos
             if generate:
                 converged = converged and abs(f[2]) < tol_mesh
@@ -495,3 +504,31 @@ def family(s, theta, q, section, sec, sigma, placed, place, k_lin, k_point, r2_y
             for b in range(11):
                 out[a, b, i] = one[a, b]
     return out
+
+
+@_jit
+def evaluate(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
+             motion, em_coef, xb_coef, roll_coef, scalars, generate):
+    """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations at the points
+    x (n, m) on their sections, targets (z, p) (n,) [mm]: meshing's ``_evaluate`` (the
+    constant arguments as :func:`newton`'s)."""
+    n, m = x.shape
+    f_all = np.empty((n, m))
+    jac_all = np.empty((n, m, m))
+    w = _family_work()
+    out = np.empty((3, 11))
+    work = np.empty((3, 3))
+    grad = np.empty(3)
+    f = np.empty(m)
+    jac = np.empty((m, m))
+    for i in range(n):
+        q = x[i, 2] if generate else 0.0
+        _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
+                      xb_coef, roll_coef, scalars, generate, x[i, 0], x[i, 1], q,
+                      section[i], w, out)
+        _equations(out, z[i], p[i], generate, scalars[5], f, jac, grad, work)
+        for a in range(m):
+            f_all[i, a] = f[a]
+            for b in range(m):
+                jac_all[i, a, b] = jac[a, b]
+    return f_all, jac_all

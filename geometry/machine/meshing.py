@@ -180,7 +180,14 @@ _DERIVS = np.array([1, 2, 7])  # r_s, r_θ, r_q in a family buffer
 
 
 def _evaluate(ctx: _Context, x: np.ndarray, section: np.ndarray, z: np.ndarray, p: np.ndarray):
-    """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations, family buffer."""
+    """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations, family buffer
+    (None on the compiled kernel, which does not form it)."""
+    if ctx.kernel is not None:
+        module, args = ctx.kernel
+        f, jac = module.evaluate(np.require(x, float, "CW"), np.require(section, np.intp, "CW"),
+                                 np.require(z, float, "CW"), np.require(p, float, "CW"),
+                                 *args[:_FAMILY_ARGS])
+        return f, jac, None
     n, m = x.shape
     q = x[:, 2] if ctx.generate else np.zeros(n)
     buf = _family(ctx, x[:, 0], x[:, 1], q, section)
