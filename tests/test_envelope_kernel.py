@@ -32,7 +32,7 @@ import pytest
 from contact.catalogue import resolve_case
 from geometry.core.errors import InputError
 from geometry.machine import meshing
-from geometry.machine.family import generated_family, meshing_function
+from geometry.machine.family import generated_family, meshing_buffer, meshing_function
 from geometry.machine.flank import flank_surface
 from geometry.machine.meshing import solve_envelope
 
@@ -165,6 +165,14 @@ def test_family_buffer_on_the_kernel(case_key, member, flank, motions):
     j_scale = np.max(np.abs(ja), axis=0)
     assert (np.abs(fb - fa) / f_scale).max() < 1e-12
     assert (np.abs(jb - ja) / j_scale).max() < 1e-12
+    if generate:
+        # the meshing function of one buffer: IEEE products, sums, square roots and
+        # divisions in the NumPy path's order, so the same numbers on any machine
+        ctx = meshing._context(blade, settings, blank.outer_cone_distance, "numba")
+        got = meshing._meshing_of(ctx, b)
+        want = meshing_buffer(b, blank.outer_cone_distance)
+        np.testing.assert_array_equal(got[0], want[0])
+        np.testing.assert_array_equal(got[1], want[1])
 
 
 def test_kernels_name_is_checked():

@@ -20,9 +20,10 @@ kernel runs the same iteration point by point in a compiled loop:
 - the Cramer's-rule step, the step limits, the stall test and the final check of
   :func:`geometry.machine.meshing._newton`;
 
-and :func:`family` and :func:`evaluate` give the family buffer, and the residuals with
-their Jacobian, at given points (the solve's roots, the Jacobians of its seeds and
-continuation) without NumPy's per-call overhead.
+and :func:`family`, :func:`evaluate` and :func:`meshing` give the family buffer, the
+residuals with their Jacobian, and the meshing function of a buffer at given points (the
+solve's roots, the Jacobians of its seeds and continuation) without NumPy's per-call
+overhead.
 
 Every expression is the NumPy path's, in its order, but the two paths do not agree to the
 last bit: NumPy forms the chain's products with BLAS (whose kernels may fuse multiply-adds
@@ -45,7 +46,7 @@ import math
 import numba
 import numpy as np
 
-__all__ = ["evaluate", "family", "newton"]
+__all__ = ["evaluate", "family", "meshing", "newton"]
 
 _jit = numba.njit(cache=True, nogil=True)
 
@@ -532,3 +533,23 @@ def evaluate(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, 
             for b in range(m):
                 jac_all[i, a, b] = jac[a, b]
     return f_all, jac_all
+
+
+@_jit
+def meshing(buf, length_scale):
+    """The normalised meshing function f (n,) and its gradient (3, n) of a family buffer
+    (3, 11, n): :func:`geometry.machine.family.meshing_buffer` point by point."""
+    n = buf.shape[2]
+    f = np.empty(n)
+    grad = np.empty((3, n))
+    out = np.empty((3, 11))
+    work = np.empty((3, 3))
+    g = np.empty(3)
+    for i in range(n):
+        for a in range(3):
+            for b in range(11):
+                out[a, b] = buf[a, b, i]
+        f[i] = _meshing(out, length_scale, g, work)
+        for a in range(3):
+            grad[a, i] = g[a]
+    return f, grad

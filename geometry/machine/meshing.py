@@ -176,6 +176,14 @@ def _family(ctx: _Context, s, theta, q, section) -> np.ndarray:
     return family_buffer(ctx.chain, ctx.settings, v, q, theta)
 
 
+def _meshing_of(ctx: _Context, buf: np.ndarray):
+    """:func:`geometry.machine.family.meshing_buffer` of a family buffer (on the compiled
+    kernel where the context holds it)."""
+    if ctx.kernel is not None:
+        return ctx.kernel[0].meshing(np.require(buf, float, "CW"), ctx.length_scale)
+    return meshing_buffer(buf, ctx.length_scale)
+
+
 _DERIVS = np.array([1, 2, 7])  # r_s, r_θ, r_q in a family buffer
 
 
@@ -884,13 +892,12 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     buf = _family(ctx, x[:, 0], x[:, 1], q, section)
     fam = family_views(buf, (n,))
     if gen:
-        res, grad = meshing_buffer(buf, length_scale)
+        res, grad = _meshing_of(ctx, buf)
         # undercut: ∂f/∂q of the opposite sign to the seed point's (Litvin & Fuentes 2004,
         # §6.3: the envelope's singular line separates the regular and the cut-away parts)
         # (the seed point's family by the same buffer functions as generated_family)
-        _, grad_seed = meshing_buffer(
-            _family(ctx, x_seed[0:1], x_seed[1:2], x_seed[2:3], np.array([sec_seed])),
-            length_scale)
+        _, grad_seed = _meshing_of(
+            ctx, _family(ctx, x_seed[0:1], x_seed[1:2], x_seed[2:3], np.array([sec_seed])))
         reason[(reason == 0) & (np.sign(grad[2]) != np.sign(grad_seed[2, 0]))] = 4
     else:
         res = np.zeros(n)
