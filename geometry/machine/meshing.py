@@ -36,11 +36,12 @@ Each blade section (edge radius, toprem, profile, flankrem) is solved on its own
 curve; a point whose solution leaves its section is re-solved on the neighbouring one.
 Points that no smooth section generates are masked with a reason (:data:`REASONS`).
 
-Newton's iterations and the family buffers at given points run on a compiled kernel
-(:mod:`geometry.machine.envelope_numba`, numba, the ``fast`` extra) unless the NumPy path
-is asked for (``kernels="numpy"`` or ``LTCA_KERNELS=numpy``; :mod:`geometry.core.kernels`):
-the same iteration point by point, the same roots to round-off. The seed search's
-candidate grids stay on the NumPy path, so its ranking of candidates is unchanged.
+Newton's iterations, and the family buffers, residuals, Jacobians and meshing functions
+at given points, run on a compiled kernel (:mod:`geometry.machine.envelope_numba`, numba,
+the ``fast`` extra) unless the NumPy path is asked for (``kernels="numpy"`` or
+``LTCA_KERNELS=numpy``; :mod:`geometry.core.kernels`): the same iteration point by point,
+the same roots to round-off. The seed search's candidate grids stay on the NumPy path, so
+its ranking of candidates is unchanged.
 
 Public functions
 ----------------
