@@ -79,6 +79,14 @@ def _taylor(coef, q):
 
 
 @_jit
+def _turn_into(v, kk, w0, w1, w2, c, sn):
+    """v[:, kk] = R_z(θ) w (c, sn: cos θ, sin θ)."""
+    v[0, kk] = c * w0 - sn * w1
+    v[1, kk] = sn * w0 + c * w1
+    v[2, kk] = w2
+
+
+@_jit
 def _cutter(sec, sigma, placed, place, s, theta, k, v):
     """The cutter vectors (3, 7) of ``cutter_buffer`` at one point, into ``v``."""
     # blade_profile / _curve_point: the constant-curvature section k at arc length s
@@ -117,32 +125,27 @@ def _cutter(sec, sigma, placed, place, s, theta, k, v):
         v[0, 4] = -drho * sn
         v[1, 4] = drho * c
     else:
-        # blade_edge: e = M + (ρ − r_p) a1 − h a2, and revolution_normal
+        # blade_edge: e = M + (ρ − r_p) a1 − h a2 and its s-derivatives, turned by θ
         rr = rho - place[9]
-        e = np.empty(3)
-        e_s = np.empty(3)
-        e_ss = np.empty(3)
-        for i in range(3):
-            e[i] = place[i] + rr * place[3 + i] - h * place[6 + i]
-            e_s[i] = drho * place[3 + i] - dh * place[6 + i]
-            e_ss[i] = d2rho * place[3 + i] - d2h * place[6 + i]
-        b0 = -e[1]
-        b1 = e[0]
+        e0 = place[0] + rr * place[3] - h * place[6]
+        e1 = place[1] + rr * place[4] - h * place[7]
+        e2 = place[2] + rr * place[5] - h * place[8]
+        s0 = drho * place[3] - dh * place[6]
+        s1 = drho * place[4] - dh * place[7]
+        s2 = drho * place[5] - dh * place[8]
+        _turn_into(v, 0, e0, e1, e2, c, sn)
+        _turn_into(v, 1, s0, s1, s2, c, sn)
+        _turn_into(v, 3, d2rho * place[3] - d2h * place[6], d2rho * place[4] - d2h * place[7],
+                   d2rho * place[5] - d2h * place[8], c, sn)
+        # revolution_normal: −σ e′ × (e_z × e), normalised
+        b0 = -e1
+        b1 = e0
         b2 = 0.0
-        n0 = -sigma * (e_s[1] * b2 - e_s[2] * b1)
-        n1 = -sigma * (e_s[2] * b0 - e_s[0] * b2)
-        n2 = -sigma * (e_s[0] * b1 - e_s[1] * b0)
+        n0 = -sigma * (s1 * b2 - s2 * b1)
+        n1 = -sigma * (s2 * b0 - s0 * b2)
+        n2 = -sigma * (s0 * b1 - s1 * b0)
         norm = math.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
-        n_rev = np.empty(3)
-        n_rev[0] = n0 / norm
-        n_rev[1] = n1 / norm
-        n_rev[2] = n2 / norm
-        for col in range(4):
-            w = e if col == 0 else e_s if col == 1 else e_ss if col == 2 else n_rev
-            kk = 0 if col == 0 else 1 if col == 1 else 3 if col == 2 else 6
-            v[0, kk] = c * w[0] - sn * w[1]
-            v[1, kk] = sn * w[0] + c * w[1]
-            v[2, kk] = w[2]
+        _turn_into(v, 6, n0 / norm, n1 / norm, n2 / norm, c, sn)
         v[0, 2] = -v[1, 0]
         v[1, 2] = v[0, 0]
         v[0, 4] = -v[1, 1]
@@ -334,6 +337,28 @@ def _equations(out, z, p, generate, length_scale, f, jac, grad, work):
 
 
 @_jit
+def _equations_work(m):
+    """Work arrays of :func:`_point_equations` for m unknowns: the family's
+    (:func:`_family_work`), the buffer (3, 11), the meshing function's (3, 3) and (3,),
+    and f (m,), jac (m, m)."""
+    return (_family_work(), np.empty((3, 11)), np.empty((3, 3)), np.empty(3), np.empty(m),
+            np.empty((m, m)))
+
+
+@_jit
+def _point_equations(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
+                     xb_coef, roll_coef, scalars, generate, s, theta, q, k, z, p, ew):
+    """The residuals f (m,) and Jacobian jac (m, m) at one point (s, θ, q) on section k
+    with targets (z, p) (:func:`_point_family`, then :func:`_equations`); views into the
+    work arrays ``ew`` (:func:`_equations_work`)."""
+    w, out, work, grad, f, jac = ew
+    _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
+                  xb_coef, roll_coef, scalars, generate, s, theta, q, k, w, out)
+    _equations(out, z, p, generate, scalars[5], f, jac, grad, work)
+    return f, jac
+
+
+@_jit
 def _step(jac, f, m, limit, dx):
     """The Newton step J dx = −f into ``dx`` (``_safe_solve``) and the factor (≤ 1) that
     holds it within ``limit``; NaN where J is (near-)singular or the step is not finite."""
@@ -437,12 +462,7 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
     done = np.zeros(n, np.bool_)
     length_scale = scalars[5]
     tol_pos, tol_mesh, stall_size = controls[0], controls[1], controls[2]
-    w = _family_work()
-    out = np.empty((3, 11))
-    work = np.empty((3, 3))
-    grad = np.empty(3)
-    f = np.empty(m)
-    jac = np.empty((m, m))
+    ew = _equations_work(m)
     dx = np.empty(m)
     xi = np.empty(m)
     for i in range(n):
@@ -453,10 +473,9 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
         converged = False
         for it in range(max_iter + 1):
             q = xi[2] if generate else 0.0
-            _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion,
-                          em_coef, xb_coef, roll_coef, scalars, generate, xi[0], xi[1], q, k,
-                          w, out)
-            _equations(out, z[i], p[i], generate, length_scale, f, jac, grad, work)
+            f, jac = _point_equations(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
+                                      motion, em_coef, xb_coef, roll_coef, scalars, generate,
+                                      xi[0], xi[1], q, k, z[i], p[i], ew)
             converged = abs(f[0]) < tol_pos and abs(f[1]) < tol_pos
             if generate:
                 converged = converged and abs(f[2]) < tol_mesh
@@ -516,18 +535,12 @@ def evaluate(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, 
     n, m = x.shape
     f_all = np.empty((n, m))
     jac_all = np.empty((n, m, m))
-    w = _family_work()
-    out = np.empty((3, 11))
-    work = np.empty((3, 3))
-    grad = np.empty(3)
-    f = np.empty(m)
-    jac = np.empty((m, m))
+    ew = _equations_work(m)
     for i in range(n):
         q = x[i, 2] if generate else 0.0
-        _point_family(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z, motion, em_coef,
-                      xb_coef, roll_coef, scalars, generate, x[i, 0], x[i, 1], q,
-                      section[i], w, out)
-        _equations(out, z[i], p[i], generate, scalars[5], f, jac, grad, work)
+        f, jac = _point_equations(sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
+                                  motion, em_coef, xb_coef, roll_coef, scalars, generate,
+                                  x[i, 0], x[i, 1], q, section[i], z[i], p[i], ew)
         for a in range(m):
             f_all[i, a] = f[a]
             for b in range(m):
