@@ -27,7 +27,6 @@ import numpy as np
 import pytest
 from scipy.interpolate import RectBivariateSpline
 
-from contact.utca import fields as fields_module
 from contact.utca.fields import EaseOffFields, kernels_module
 from geometry.core import kernels as kernels_core
 from geometry.core.errors import InputError
@@ -222,7 +221,7 @@ def test_kernels_choice(monkeypatch):
         kernels_module()
     with pytest.raises(InputError, match="kernels: must be one of"):
         kernels_module("cuda")
-    monkeypatch.setattr(fields_module, "_numba_kernels", lambda: None)
+    monkeypatch.setattr(kernels_core, "compiled_module", lambda name: None)
     with pytest.raises(InputError, match=r"kernels: 'numba' needs numba installed"):
         kernels_module("numba")
     monkeypatch.delenv("LTCA_KERNELS")
@@ -239,7 +238,7 @@ def test_kernels_that_cannot_be_cached_leave_the_numpy_path(monkeypatch, caplog)
     monkeypatch.setattr(kernels_core.importlib, "import_module", no_cache)
     try:
         with caplog.at_level("WARNING", logger="geometry.core.kernels"):
-            assert fields_module._numba_kernels() is None
+            assert kernels_core.compiled_module("contact.utca.isoline_numba") is None
         assert "NUMBA_CACHE_DIR" in caplog.text
     finally:
         monkeypatch.undo()

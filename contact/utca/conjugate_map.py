@@ -193,9 +193,8 @@ class _ForwardMap:
     u: np.ndarray  # (41,) extended pinion grid
     v: np.ndarray  # (21,)
     nodes: Mates  # the mates on the extended grid
-    z: RectBivariateSpline  # [mm] the image's axial position over (u, v)
-    rho: RectBivariateSpline  # [mm] and its radius
-    image: SplineGroup  # (z, ρ) evaluated together
+    #: [mm] the image's axial position and radius over (u, v), splines evaluated together
+    image: SplineGroup
 
     def mates(self, u, v, guess) -> Mates:
         """Mates at the fractions (u, v), the envelope solver started at ``guess``."""
@@ -349,10 +348,9 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
     if smooth.sum() < 16:
         smooth = ok
     image = fill_missing(fwd.image, smooth)
-    z = RectBivariateSpline(up, vp, image[..., 0])
-    rho = RectBivariateSpline(up, vp, image[..., 1])
-    return _ForwardMap(case, pf, kin, cp, branch, up, vp, fwd, z, rho,
-                       SplineGroup([z, rho], kernels_module("contact.utca.isoline_numba")))
+    splines = [RectBivariateSpline(up, vp, image[..., k]) for k in range(2)]
+    return _ForwardMap(case, pf, kin, cp, branch, up, vp, fwd,
+                       SplineGroup(splines, kernels_module("contact.utca.isoline_numba")))
 
 
 _NEAREST_CANDIDATES = 4  # k-d tree neighbours re-ranked by _nearest_node's own distance

@@ -267,11 +267,9 @@ def _false_position_ends(f: EaseOffFields, t: np.ndarray, a: np.ndarray, b: np.n
     the coarse step, 3–6e-6 of the face width on the default grid (~0.1–0.2 µm); measured,
     45 % of a study point's ends at the default case's mounting are such (the rest within
     1e-9), 98 % of the transition search's at ΔE = −0.12, ΔP = −0.08 mm. Returns the last
-    inside place of each (``a``, ``b``, ``va`` are updated in place)."""
-    if f.kernels is not None:  # the same steps, compiled
-        ks = f.kernel_splines
-        return f.kernels.false_position_ends(ks.q, ks.q_v, ks.margin, f.u, f.v, f.cell_ok, t,
-                                             a, b, va, _END_ITER)
+    inside place of each (``a``, ``b``, ``va`` are updated in place). The NumPy path's;
+    the compiled one is :func:`contact.utca.isoline_numba.false_position_ends`, called by
+    :func:`contact.utca.isoline_numba.seed_places`."""
     ca = f.measure(a, va)
     cb = f.measure(b, f.solve_v(b, t, v_start=va))
     # the last step moved a (prev_in) or b (prev_out); updates in place (own arrays)

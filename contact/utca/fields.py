@@ -24,7 +24,6 @@ Public functions
 ----------------
 EaseOffFields   splines of an ease-off's fields and the contact region's tests
 kernels_module  the iso-line searches' implementation (NumPy, or numba's compiled kernels)
-SplineGroup     splines on the same knots evaluated together (one basis per place)
 """
 
 from __future__ import annotations
@@ -38,10 +37,10 @@ from scipy.interpolate import BSpline, RectBivariateSpline
 from contact.utca.easeoff import EaseOff, fill_missing
 from contact.utca.spline_group import SplineGroup
 from geometry.core.errors import InputError, ModelUnavailableError
-from geometry.core.kernels import KERNELS, compiled_module
+from geometry.core.kernels import KERNELS
 from geometry.core.kernels import kernels_module as select_kernels
 
-__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "SplineGroup", "kernels_module"]
+__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "kernels_module"]
 
 _KERNEL_MODULE = "contact.utca.isoline_numba"  # the iso-line searches' compiled kernels
 #: the scalar fields of :meth:`EaseOffFields.values` (and ``pos``, ``nrm``: three each)
@@ -78,12 +77,6 @@ class KernelSplines(NamedTuple):
     eps: tuple  # ε [rad]
 
 
-def _numba_kernels() -> ModuleType | None:
-    """:mod:`contact.utca.isoline_numba`, or None where numba is not installed or
-    cannot cache the kernels (logged; :func:`geometry.core.kernels.compiled_module`)."""
-    return compiled_module(_KERNEL_MODULE)
-
-
 def kernels_module(kernels: str | None = None) -> ModuleType | None:
     """The compiled iso-line kernels to use, or None for the NumPy path.
 
@@ -104,7 +97,7 @@ def kernels_module(kernels: str | None = None) -> ModuleType | None:
     InputError
         An unknown name, or ``numba`` asked for where it is not installed.
     """
-    return select_kernels(_KERNEL_MODULE, kernels, loader=lambda _name: _numba_kernels())
+    return select_kernels(_KERNEL_MODULE, kernels)
 
 
 class EaseOffFields:
@@ -142,7 +135,7 @@ class EaseOffFields:
     kernels : module or None
         The compiled kernels in use (:mod:`contact.utca.isoline_numba`), None for NumPy.
     kernel_splines : KernelSplines
-        Q, ∂Q/∂v and the margin as the kernels take them (only with ``kernels``).
+        Q, ∂Q/∂v, the margin and ε as the kernels take them (only with ``kernels``).
 
     Raises
     ------

@@ -46,7 +46,7 @@ def compiled_module(name: str) -> ModuleType | None:
         return None
 
 
-def kernels_module(name: str, kernels: str | None = None, loader=None) -> ModuleType | None:
+def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     """The compiled kernel module to use, or None for the NumPy path.
 
     Parameters
@@ -56,9 +56,6 @@ def kernels_module(name: str, kernels: str | None = None, loader=None) -> Module
     kernels : {"numpy", "numba"} or None
         None: the environment variable ``LTCA_KERNELS`` (same values), else ``numba``
         where it is installed and ``numpy`` otherwise.
-    loader : callable, optional
-        ``loader(name)`` → module or None; default :func:`compiled_module` (tests pass
-        their own to model a machine without numba).
 
     Returns
     -------
@@ -70,18 +67,17 @@ def kernels_module(name: str, kernels: str | None = None, loader=None) -> Module
     InputError
         An unknown name, or ``numba`` asked for where it is not installed.
     """
-    load = compiled_module if loader is None else loader
     source = "kernels"
     if kernels is None:
         kernels = os.environ.get("LTCA_KERNELS") or None
         source = "LTCA_KERNELS"
         if kernels is None:
-            return load(name)
+            return compiled_module(name)
     if kernels not in KERNELS:
         raise InputError(f"{source}: must be one of {', '.join(KERNELS)}, got {kernels!r}")
     if kernels == "numpy":
         return None
-    mod = load(name)
+    mod = compiled_module(name)
     if mod is None:
         raise InputError(f"{source}: 'numba' needs numba installed "
                          "(pip install 'hypoid-ltca[fast]')")
