@@ -205,8 +205,15 @@ def _value_at(ty, c, kx, ky, lx, hx, y, hy, hh):
     """:func:`_value` with the x-basis given (its interval lx and values hx): splines on
     the same x-knots at the same x share it (the same numbers as computing it again)."""
     ly = _basis(ty, ky, y, hy, hh)
-    nky1 = ty.size - ky - 1
-    l1 = (lx - kx) * nky1 + (ly - ky)
+    return _tensor_sum(c, 0, kx, ky, lx, ly, ty.size - ky - 1, hx, hy)
+
+
+@_jit
+def _tensor_sum(c, base, kx, ky, lx, ly, nky1, hx, hy):
+    """FITPACK's sum Σᵢ Σⱼ c[base + (lx − kx + i)·nky1 + ly − ky + j] hx[i] hy[j], in its
+    order, for flat coefficients (a spline's from ``base``) and the bases (intervals lx,
+    ly; values hx, hy)."""
+    l1 = base + (lx - kx) * nky1 + (ly - ky)
     sp = 0.0
     for i1 in range(kx + 1):
         l2 = l1
@@ -240,19 +247,13 @@ def ev_many(tx, ty, c, kx, ky, x, y):
     hy = np.empty(ky + 1)
     hh = np.empty(max(kx, ky) + 1)
     nky1 = ty.size - ky - 1
+    flat = c.reshape(-1)  # (the splines' coefficients one after the other)
+    size = c.shape[1]
     for p in range(x.size):
         lx = _basis(tx, kx, x[p], hx, hh)
         ly = _basis(ty, ky, y[p], hy, hh)
         for s in range(k):
-            l1 = (lx - kx) * nky1 + (ly - ky)
-            sp = 0.0
-            for i1 in range(kx + 1):
-                l2 = l1
-                for j1 in range(ky + 1):
-                    sp = sp + c[s, l2] * hx[i1] * hy[j1]
-                    l2 += 1
-                l1 += nky1
-            out[p, s] = sp
+            out[p, s] = _tensor_sum(flat, s * size, kx, ky, lx, ly, nky1, hx, hy)
     return out
 
 
@@ -313,6 +314,15 @@ def newton_v(q, qv, v0, v1, u, t, v, miss):
 
 
 @_jit
+def _good_cell(ug, vg, cell_ok, u, v):
+    """:meth:`EaseOffFields.good_cell` of one place: its grid cell's corners were all
+    computed (places beyond the grid count as its edge cells)."""
+    iu = min(max(np.searchsorted(ug, u, side="right") - 1, 0), ug.size - 2)
+    iv = min(max(np.searchsorted(vg, v, side="right") - 1, 0), vg.size - 2)
+    return cell_ok[iu, iv]
+
+
+@_jit
 def _measure(margin, ug, vg, cell_ok, u, v, w):
     """:meth:`EaseOffFields.measure` of one place (v may be NaN)."""
     hx, hy, hh = w
@@ -325,9 +335,7 @@ def _measure(margin, ug, vg, cell_ok, u, v, w):
     c = _minimum(c, ug[-1] - u)
     if not fin:
         return -1.0
-    iu = min(max(np.searchsorted(ug, u, side="right") - 1, 0), ug.size - 2)
-    iv = min(max(np.searchsorted(vg, vs, side="right") - 1, 0), vg.size - 2)
-    return c if cell_ok[iu, iv] else -1.0
+    return c if _good_cell(ug, vg, cell_ok, u, vs) else -1.0
 
 
 @_jit
@@ -442,9 +450,7 @@ def _inside_one(margin, ug, vg, cell_ok, u, v, w):
     if not (u >= ug[0] and u <= ug[-1] and v >= vg[0] and v <= vg[-1]
             and math.isfinite(v)):
         return False
-    iu = min(max(np.searchsorted(ug, u, side="right") - 1, 0), ug.size - 2)
-    iv = min(max(np.searchsorted(vg, v, side="right") - 1, 0), vg.size - 2)
-    if not cell_ok[iu, iv]:
+    if not _good_cell(ug, vg, cell_ok, u, v):
         return False
     hx, hy, hh = w
     return _value(margin[0], margin[1], margin[2], margin[3], margin[4], u, v,
