@@ -56,7 +56,9 @@ def _accepted(low: float | None, high: float | None, low_open: bool, high_open: 
 
 
 def _inside(v, low, high, low_open, high_open):
-    ok = np.isfinite(v)
+    """Finite and within the bounds: a bool for a float (without NumPy: :func:`real` runs
+    a few hundred times per analysis), a bool array for an array."""
+    ok = math.isfinite(v) if isinstance(v, float) else np.isfinite(v)
     if low is not None:
         ok &= (v > low) if low_open else (v >= low)
     if high is not None:
@@ -103,13 +105,7 @@ def real(name: str, value: Any, *, unit: str = "", low: float | None = None,
         raise InputError(f"{name}: must be a real number, "
                          f"{_accepted(low, high, low_open, high_open, scale)}{_unit(unit)}, "
                          f"got {value!r}") from None
-    # (math.isfinite and the comparisons on the float: _inside's test without NumPy)
-    ok = math.isfinite(v)
-    if low is not None:
-        ok = ok and ((v > low) if low_open else (v >= low))
-    if high is not None:
-        ok = ok and ((v < high) if high_open else (v <= high))
-    if not ok:
+    if not _inside(v, low, high, low_open, high_open):
         got = repr(value) if scale == 1.0 else f"{v / scale:g}"
         raise InputError(f"{name}: must be "
                          f"{_accepted(low, high, low_open, high_open, scale)}{_unit(unit)}, "
