@@ -141,7 +141,7 @@ def test_family_buffer_on_the_kernel(case_key, member, flank, motions):
     chain of rotations of ~100 mm vectors, with sin and cos that may differ by an ulp)."""
     fs, blade, settings, blank = _setup(case_key, member, flank, motions)
     generate = settings.process == "Generate"
-    x0, section, _, _ = _starts(fs, generate, np.random.default_rng(3))
+    x0, section, z, p = _starts(fs, generate, np.random.default_rng(3))
     q = x0[:, 2] if generate else np.zeros(len(x0))
     out = {}
     for kernels in ("numpy", "numba"):
@@ -153,8 +153,6 @@ def test_family_buffer_on_the_kernel(case_key, member, flank, motions):
     assert np.all(np.isfinite(a)) and np.all(np.isfinite(b))
     assert (np.abs(b - a) / scale).max() < 1e-12
     # the residuals and their Jacobian (meshing._evaluate), scaled per row and column
-    z, p = fs.grid.axial[fs.reason == 0], fs.grid.radius[fs.reason == 0]
-    z, p = np.tile(z, 4), np.tile(p, 4)
     res = {}
     for kernels in ("numpy", "numba"):
         ctx = meshing._context(blade, settings, blank.outer_cone_distance, kernels)

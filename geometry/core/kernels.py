@@ -13,6 +13,7 @@ Public functions
 ----------------
 KERNELS           the implementations' names
 kernels_module    the compiled kernel module to use, or None for the NumPy path
+compiled_module   a compiled kernel module, imported once per process (None without numba)
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ from types import ModuleType
 
 from geometry.core.errors import InputError
 
-__all__ = ["KERNELS", "kernels_module"]
+__all__ = ["KERNELS", "compiled_module", "kernels_module"]
 
 #: the implementations: ``numpy`` (the reference) and ``numba`` (compiled; the ``fast`` extra)
 KERNELS = ("numpy", "numba")
