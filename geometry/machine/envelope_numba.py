@@ -508,9 +508,9 @@ def newton(x0, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r
 @_jit
 def family(s, theta, q, section, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
            motion, em_coef, xb_coef, roll_coef, scalars, generate):
-    """The family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` at the
-    points (s [mm], θ [rad], q [rad], section) (n,) (q ignored in Formate); the constant
-    arguments as :func:`newton`'s."""
+    """The family buffer (3, 11, n) of :func:`geometry.machine.family.family_buffer` (seed
+    Eq. 2.7a and its derivatives) at the points (s [mm], θ [rad], q [rad], section) (n,)
+    (q ignored in Formate); the constant arguments as :func:`newton`'s."""
     n = s.size
     out = np.empty((3, 11, n))
     w = _family_work()
@@ -529,9 +529,10 @@ def family(s, theta, q, section, sec, sigma, placed, place, k_lin, k_point, r2_y
 @_jit
 def evaluate(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, r2_z,
              motion, em_coef, xb_coef, roll_coef, scalars, generate):
-    """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations at the points
-    x (n, m) on their sections, targets (z, p) (n,) [mm]: meshing's ``_evaluate`` (the
-    constant arguments as :func:`newton`'s)."""
+    """Residuals F (n, m) and Jacobian J (n, m, m) of the point equations (seed Eq. 2.7a:
+    axial position and radius [mm]; in Generate Eq. 2.8, the normalised meshing function)
+    at the points x (n, m) on their sections, targets (z, p) (n,) [mm]: meshing's
+    ``_evaluate`` (the constant arguments as :func:`newton`'s)."""
     n, m = x.shape
     f_all = np.empty((n, m))
     jac_all = np.empty((n, m, m))
@@ -550,8 +551,9 @@ def evaluate(x, section, z, p, sec, sigma, placed, place, k_lin, k_point, r2_y, 
 
 @_jit
 def meshing(buf, length_scale):
-    """The normalised meshing function f (n,) and its gradient (3, n) of a family buffer
-    (3, 11, n): :func:`geometry.machine.family.meshing_buffer` point by point."""
+    """The normalised meshing function f (n,) [1] (seed Eq. 2.8) and its gradient (3, n)
+    [1/mm, 1/rad, 1/rad] of a family buffer (3, 11, n):
+    :func:`geometry.machine.family.meshing_buffer` point by point."""
     n = buf.shape[2]
     f = np.empty(n)
     grad = np.empty((3, n))
