@@ -1,21 +1,21 @@
 """The compiled iso-line kernels (contact.utca.isoline_numba) against the NumPy path.
 
-The kernels repeat, point by point, the floating-point operations of the NumPy reference
-(:class:`contact.utca.fields.EaseOffFields` and the contact curves' end search), so the
-references here are independent implementations of the same arithmetic:
+The kernels repeat, point by point, the steps of the NumPy reference
+(:class:`contact.utca.fields.EaseOffFields` and the contact curves' end search) on the
+splines in piecewise-polynomial form (:mod:`contact.utca.piecewise`), so the references
+here are independent implementations:
 
-- the bicubic spline and its partial derivatives against SciPy's FITPACK
-  (``RectBivariateSpline.ev``), on random places inside, on and beyond the knots;
+- the piecewise-polynomial splines and their partial derivatives against SciPy's FITPACK
+  (``RectBivariateSpline.ev``, the de Boor–Cox recurrence), on random places inside, on
+  and beyond the knots;
 - the contact curves' places, ε and UTE of a real ease-off, and a study point's summaries,
   computed with ``kernels="numpy"`` and ``kernels="numba"``.
 
-Tolerance: on x86-64 both sides run the same IEEE operations in the same order and agree
-to the last bit (measured: 0 differences in 1e5 spline values, in the curves and in 21
-summaries at 5 mountings). The tests allow the round-off of one fused multiply-add per
-term where a compiler fuses them on one side only (GCC contracts FITPACK's Fortran on
-aarch64, where FMA is baseline; numba never does without ``fastmath``): 16 terms of the
-tensor sum, ~1e-15 of the spline's scale, taken as 1e-13; iterations that stop at 1e-13 rad
-or 1e-9 of their scales then agree to those (the 5×5 guard's 1e-9 for the summaries).
+Tolerance: the polynomial form and FITPACK's recurrence are two round-off paths to the
+same spline; measured ≤ 1e-15 of the spline's scale apart (16 terms, a few units in the
+last place each), taken as 1e-13 (``SPLINE_RTOL``). The iterations stop at |ΔQ| < 1e-13
+rad, so the places agree to that over the slope of Q (``PLACE_TOL``), and a study
+point's summaries to the 5×5 guard's 1e-9.
 """
 
 from __future__ import annotations
@@ -27,6 +27,7 @@ import numpy as np
 import pytest
 from scipy.interpolate import RectBivariateSpline
 
+from contact.utca import piecewise
 from contact.utca.fields import EaseOffFields, kernels_module
 from geometry.core import kernels as kernels_core
 from geometry.core.errors import InputError
@@ -36,6 +37,10 @@ numba_kernels = pytest.importorskip("contact.utca.isoline_numba",
 
 ROOT = Path(__file__).resolve().parents[1]
 SPLINE_RTOL = 1e-13
+# places solved on either spline: Newton stops at |ΔQ| < 1e-13 rad, and |∂Q/∂v| ≥ 0.0057
+# rad per unit of v on the valid nodes of the cases here (least: ISO sample 2 at its
+# extreme mounting; median 0.6–0.8), so two iterates can stop ≤ 1.8e-11 apart
+PLACE_TOL = 2e-11
 
 
 def _random_spline(seed=3):
@@ -47,27 +52,43 @@ def _random_spline(seed=3):
 
 @pytest.mark.parametrize("order", [(0, 0), (1, 0), (0, 1), (1, 1), (2, 0), (0, 2)])
 def test_spline_kernel_is_fitpack(order):
-    """Values and partial derivatives at 20,000 places, a tenth of them on nodes and a
-    fifth beyond the grid (FITPACK clamps them to its ends), as ``RectBivariateSpline.ev``."""
+    """The piecewise-polynomial form's values and partial derivatives at 20,000 places, a
+    tenth of them on nodes and a fifth beyond the grid (FITPACK clamps them to its ends),
+    as ``RectBivariateSpline.ev`` of each of two splines on the same knots."""
     s, u, v, rng = _random_spline()
+    s2 = RectBivariateSpline(u, v, rng.standard_normal((41, 21)) * 1e3 + 5.0)
     x = rng.uniform(-0.2, 1.2, 20_000)
     y = rng.uniform(-0.3, 1.3, 20_000)
     x[:1000] = u[rng.integers(0, u.size, 1000)]
     y[1000:2000] = v[rng.integers(0, v.size, 1000)]
-    if order == (0, 0):
-        spline = (*s.tck, *s.degrees)
-    else:
-        spline = numba_kernels.derivative_spline(s.tck, s.degrees, *order)
-    got = numba_kernels.ev(*spline, x, y)
-    want = s.ev(x, y, dx=order[0], dy=order[1])
-    scale = np.max(np.abs(want))
-    np.testing.assert_allclose(got, want, rtol=SPLINE_RTOL, atol=SPLINE_RTOL * scale)
+    base = piecewise.from_splines([s, s2], numba_kernels)
+    # the compiled sums and NumPy's (the same terms in another order)
+    ref = piecewise.from_splines([s, s2]).coefficients
+    scale = np.abs(ref).max(axis=(0, 1), keepdims=True)  # per spline and power
+    assert np.max(np.abs(base.coefficients - ref) / scale) < SPLINE_RTOL
+    pp = piecewise.derivative(base, *order)
+    got = numba_kernels.ev(pp.bx, pp.by, pp.coefficients, x, y)
+    assert got.shape == (x.size, 2)
+    for k, spline in enumerate((s, s2)):
+        want = spline.ev(x, y, dx=order[0], dy=order[1])
+        scale = np.max(np.abs(want))
+        np.testing.assert_allclose(got[:, k], want, rtol=SPLINE_RTOL,
+                                   atol=SPLINE_RTOL * scale)
 
 
-def test_derivative_spline_rejects_an_order_beyond_the_degree():
-    s, *_ = _random_spline()
+def test_piecewise_form_rejects_what_it_cannot_represent():
+    """An order beyond the degree, splines on different knots, no splines: ValueErrors
+    that name the argument."""
+    s, u, v, rng = _random_spline()
+    pp = piecewise.from_splines([s])
+    assert pp.coefficients.shape == (u.size - 1 - 2, v.size - 1 - 2, 1, 4, 4)
     with pytest.raises(ValueError, match="nux, nuy"):
-        numba_kernels.derivative_spline(s.tck, s.degrees, 3, 0)
+        piecewise.derivative(pp, 4, 0)
+    other = RectBivariateSpline(u, np.linspace(-0.1, 1.1, 23), rng.random((41, 23)))
+    with pytest.raises(ValueError, match="same knots"):
+        piecewise.from_splines([s, other])
+    with pytest.raises(ValueError, match="at least one"):
+        piecewise.from_splines([])
 
 
 @pytest.fixture(scope="module")
@@ -98,7 +119,7 @@ def test_contact_curves_agree(easeoff):
     for name in ("u", "v", "ease_off_angle", "ute", "contact_u", "contact_v"):
         a, b = getattr(got, name), getattr(want, name)
         np.testing.assert_array_equal(np.isfinite(a), np.isfinite(b), err_msg=name)
-        np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12, err_msg=name)
+        np.testing.assert_allclose(a, b, rtol=PLACE_TOL, atol=PLACE_TOL, err_msg=name)
     np.testing.assert_array_equal(got.index, want.index)
 
 
@@ -129,7 +150,7 @@ def test_second_order_curves_agree(name, d_e, d_p):
                   "position", "normal"):
         a, b = getattr(got, field), getattr(want, field)
         np.testing.assert_array_equal(np.isfinite(a), np.isfinite(b), err_msg=field)
-        np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12, err_msg=field)
+        np.testing.assert_allclose(a, b, rtol=PLACE_TOL, atol=PLACE_TOL, err_msg=field)
     np.testing.assert_array_equal(got.index, want.index)
 
 
@@ -150,7 +171,7 @@ def test_field_queries_agree(easeoff):
     a, b = fk.newton_v(u, t, start.copy()), fn.newton_v(u, t, start.copy())
     np.testing.assert_array_equal(np.isfinite(a), np.isfinite(b))
     assert np.isfinite(b).sum() > 1000
-    np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(a, b, rtol=PLACE_TOL, atol=PLACE_TOL)
     uc = np.linspace(0.0, 1.0, 81)
     tc = np.linspace(np.nanmin(q) - 0.01, np.nanmax(q) + 0.01, 60)
     a, b = fk.solve_columns(uc, tc), fn.solve_columns(uc, tc)
@@ -173,9 +194,13 @@ def test_field_values_share_the_basis(easeoff, order):
     want = fn.values(names, u, v, *order)
     assert got.shape == want.shape == (40, 50, 10)
     splines = [fn.q, fn.eps, fn.arm, *fn.pos, *fn.nrm, fn.margin]
+    value = fn.values(names, u, v)
+    # the round-off of a derivative is the values' (a few units in the last place of
+    # their scale) over the grid step to the derivative's order
+    step = 1.0 / (np.min(np.diff(fn.u)) ** order[0] * np.min(np.diff(fn.v)) ** order[1])
     for k, spline in enumerate(splines):
         np.testing.assert_array_equal(want[..., k], spline.ev(u, v, *order))
-        scale = np.max(np.abs(want[..., k]))
+        scale = max(np.max(np.abs(want[..., k])), np.max(np.abs(value[..., k])) * step)
         np.testing.assert_allclose(got[..., k], want[..., k], rtol=SPLINE_RTOL,
                                    atol=SPLINE_RTOL * scale)
     with pytest.raises(InputError, match="names: must be among"):

@@ -168,7 +168,7 @@ def _seed_places(f: EaseOffFields, t: np.ndarray, frac: np.ndarray,
     if f.kernels is not None:  # the same steps below, compiled
         ks = f.kernel_splines
         up, vp, eps, ute, cu, cv, index = f.kernels.seed_places(
-            ks.q, ks.q_v, ks.margin, ks.eps, f.u, f.v, f.cell_ok,
+            ks.q, ks.margin, ks.eps, f.u, f.v, f.cell_ok,
             np.ascontiguousarray(t, dtype=float), np.ascontiguousarray(frac, dtype=float),
             co.u, co.v, co.have, co.start, co.stop,
             short.rows.astype(np.int64), short.u, short.v, short.lo, short.hi, _END_ITER)

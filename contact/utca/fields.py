@@ -35,6 +35,7 @@ import numpy as np
 from scipy.interpolate import BSpline, RectBivariateSpline
 
 from contact.utca.easeoff import EaseOff, fill_missing
+from contact.utca.piecewise import from_splines, piece_basis
 from contact.utca.spline_group import SplineGroup
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.kernels import KERNELS
@@ -50,29 +51,11 @@ _V_NEWTON = 6  # Newton steps of the profile place v*(u) on the spline of Q
 _COLUMN_NEWTON = 12  # safeguarded Newton steps of v*(u) on a column's cubic piece
 
 
-def _piece_basis(t: np.ndarray, k: int = 3) -> np.ndarray:
-    """(n_int, k + 1, k + 1) the B-splines of knots ``t`` (degree k) that are nonzero on
-    each knot interval [t[k + i], t[k + i + 1]], as polynomials in s = x − t[k + i]:
-    ``[i, a, p]`` is the coefficient of s^p of B_{i+a}."""
-    n = len(t) - k - 1
-    left = t[k:n]  # the intervals' left knots (n - k intervals)
-    basis = BSpline(t, np.eye(n), k)
-    rows = np.arange(left.size)
-    out = np.empty((left.size, k + 1, k + 1))
-    fact = 1.0
-    for p in range(k + 1):
-        fact *= max(p, 1)
-        d = basis(left, nu=p)  # (n_int, n): the right-hand derivatives at the left knots
-        for a in range(k + 1):
-            out[:, a, p] = d[rows, rows + a] / fact
-    return out
-
-
 class KernelSplines(NamedTuple):
-    """Splines as the compiled kernels take them: (tx, ty, c, kx, ky) each."""
+    """Splines as the compiled kernels take them: (bx, by, coefficients) each, the
+    piecewise-polynomial form (:class:`contact.utca.piecewise.PiecewiseSpline`)."""
 
     q: tuple  # Q [rad]
-    q_v: tuple  # ∂Q/∂v [rad]
     margin: tuple  # the pinion mate's inside measure [1]
     eps: tuple  # ε [rad]
 
@@ -108,7 +91,8 @@ class EaseOffFields:
     eo : contact.utca.easeoff.EaseOff
     kernels : {"numpy", "numba"} or None
         The iso-line searches' implementation (:func:`kernels_module`; default None: numba
-        where installed unless ``LTCA_KERNELS=numpy``). Both give the same numbers.
+        where installed unless ``LTCA_KERNELS=numpy``). Both give the same numbers to
+        the splines' round-off (:mod:`contact.utca.isoline_numba`).
 
     Attributes
     ----------
@@ -135,7 +119,7 @@ class EaseOffFields:
     kernels : module or None
         The compiled kernels in use (:mod:`contact.utca.isoline_numba`), None for NumPy.
     kernel_splines : KernelSplines
-        Q, ∂Q/∂v, the margin and ε as the kernels take them (only with ``kernels``).
+        Q, the margin and ε as the kernels take them (only with ``kernels``).
 
     Raises
     ------
@@ -195,12 +179,10 @@ class EaseOffFields:
         self._columns: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
         self._groups: dict[tuple, SplineGroup] = {}  # values()'s groups, by names
         if self.kernels is not None:
-            # the splines as the kernels take them: (tx, ty, c, kx, ky)
+            # the splines as the kernels take them: (bx, by, coefficients)
             self.kernel_splines = KernelSplines(
-                (*self.q.tck, *self.q.degrees),
-                self.kernels.derivative_spline(self.q.tck, self.q.degrees, 0, 1),
-                (*self.margin.tck, *self.margin.degrees),
-                (*self.eps.tck, *self.eps.degrees))
+                *(tuple(from_splines([s], self.kernels))
+                  for s in (self.q, self.margin, self.eps)))
 
     def gap_at(self, u, v):
         """The pinion's gap curvature K at gear places, held within the nodes' range.
@@ -279,8 +261,9 @@ class EaseOffFields:
         ndarray, shape broadcast(u, v) + (K,)
             The fields in the order of ``names`` (K = 1 per scalar field, 3 for ``pos``
             and ``nrm``); each the spline's ``ev(u, v, dx, dy)``. With the compiled
-            kernels the fields share each place's B-spline basis (the fields' splines
-            are all on the grid's knots): the same numbers, to the last bit.
+            kernels the fields are evaluated in piecewise-polynomial form and share each
+            place's cell (the fields' splines are all on the grid's knots): the same
+            splines, to their round-off (~1e-15 of their scale).
 
         Raises
         ------
@@ -327,7 +310,7 @@ class EaseOffFields:
             kx, ky = self.q.degrees
             d = BSpline.design_matrix(np.asarray(uc, dtype=float), tx, kx).toarray()
             coef = d @ c.reshape(len(tx) - kx - 1, len(ty) - ky - 1)  # v-spline per column
-            basis = _piece_basis(ty, ky)  # (n_int, 4, 4)
+            basis = piece_basis(ty, ky)  # (n_int, 4, 4)
             n_int = basis.shape[0]
             idx = np.arange(n_int)[:, None] + np.arange(ky + 1)[None, :]
             cols = self._columns[key] = (ty[ky:ky + n_int + 1],
@@ -515,7 +498,7 @@ class EaseOffFields:
         if self.kernels is not None:
             ks = self.kernel_splines
             return self.kernels.newton_v(
-                ks.q, ks.q_v, v0, v1, np.asarray(uf, dtype=float),
+                ks.q, v0, v1, np.asarray(uf, dtype=float),
                 np.asarray(tf, dtype=float), np.asarray(v, dtype=float),
                 np.zeros(len(uf), dtype=bool) if miss is None else np.asarray(miss, bool))
         f = self.q.ev(uf, v) - tf

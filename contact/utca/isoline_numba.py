@@ -3,14 +3,14 @@
 The contact curves' searches (:mod:`contact.utca.contact_curves`) iterate Newton's method
 and false position on a few hundred places at a time, so in NumPy most of their time is
 the interpreter's, not the arithmetic's. These kernels run the same iterations point by
-point in compiled loops, with **the same floating-point operations in the same order** as
-the NumPy path of :class:`contact.utca.fields.EaseOffFields` (which stays the reference):
+point in compiled loops, with the same steps and tests as the NumPy path of
+:class:`contact.utca.fields.EaseOffFields` (which stays the reference):
 
-- the bicubic spline's value is FITPACK's ``fpbisp``/``fpbspl`` (Dierckx, *Curve and
-  Surface Fitting with Splines*, 1993, §2.1: de Boor–Cox recurrence, then the tensor
-  sum in FITPACK's order), which ``scipy.interpolate.RectBivariateSpline.ev`` calls point
-  by point (``bispeu``); a partial derivative is the spline of ``pardeu``'s differenced
-  coefficients (:func:`derivative_spline`, computed once instead of on every call);
+- a bicubic spline is taken in piecewise-polynomial form
+  (:mod:`contact.utca.piecewise`: per knot cell, the polynomial's coefficients), so a
+  value is two interval look-ups and a Horner scheme instead of FITPACK's de Boor–Cox
+  recurrence and tensor sum (``fpbisp``/``fpbspl``, Dierckx 1993, §2.1; ~1/3 of the time),
+  and ∂Q/∂v comes with Q from the same polynomial;
 - Newton's method on v*(u) (:meth:`EaseOffFields.newton_v`), the inside measure
   (:meth:`EaseOffFields.measure`), the ends' false position
   (:func:`contact.utca.contact_curves._false_position_ends`) and the columns' Newton
@@ -22,12 +22,15 @@ the NumPy path of :class:`contact.utca.fields.EaseOffFields` (which stays the re
   interpreter's; the short curves' grid search stays in NumPy (it runs where a curve lies
   between two coarse samples, calling the kernels above);
 - several fields at the same places (:meth:`EaseOffFields.values`: the flank's points
-  and normals, Q, ε, the normal arm) share each point's basis (:func:`ev_many`), as all
-  the fields' splines are on the grid's knots.
+  and normals, Q, ε, the normal arm) share each place's cell look-up (:func:`ev`).
 
-The two paths agree to the last bit on this machine (``tests/test_isoline_kernels.py``);
-numba does not contract ``a * b + c`` into fused multiply-adds or reassociate sums unless
-asked (``fastmath`` is off), so the agreement does not depend on the CPU.
+The two paths differ by the spline's round-off: the polynomial form and FITPACK's
+recurrence agree to a few units in the last place of the spline's scale (measured
+≤ 1e-15 relative; checked to 1e-13). The iterations stop at |ΔQ| < 1e-13 rad, so the
+places, ε and curves agree to ~1e-12 and a study point's summaries to the 5×5 guard's
+1e-9 (``tests/test_isoline_kernels.py``); numba does not contract ``a * b + c`` into
+fused multiply-adds or reassociate sums unless asked (``fastmath`` is off), so the
+kernels' numbers do not depend on the CPU.
 
 This module imports numba; :mod:`contact.utca.fields` imports it only where numba is
 installed (the ``fast`` extra) and the environment variable ``LTCA_KERNELS`` is not
@@ -44,12 +47,11 @@ import numpy as np
 
 __all__ = [
     "coarse_runs",
-    "derivative_spline",
     "ev",
-    "ev_many",
     "false_position_ends",
     "measure",
     "newton_v",
+    "pieces",
     "seed_places",
     "solve_columns",
 ]
@@ -57,203 +59,109 @@ __all__ = [
 _jit = numba.njit(cache=True, nogil=True)
 
 
-def derivative_spline(tck: tuple, degrees: tuple[int, int], nux: int, nuy: int) -> tuple:
-    """The partial derivative ∂^(nux+nuy) s/∂x^nux ∂y^nuy of a bivariate spline, as a
-    spline of degrees (kx − nux, ky − nuy): FITPACK ``pardeu``'s coefficient arithmetic
-    (Dierckx 1993, §2.1, eq. 2.14), ``((c[i+1] − c[i]) · k) / (t[i+k+1] − t[i+1])`` in its
-    order.
-
-    Parameters
-    ----------
-    tck : (tx, ty, c)
-        Knots and flat coefficients of ``RectBivariateSpline.tck``.
-    degrees : (int, int)
-        (kx, ky).
-    nux, nuy : int
-        Orders of the derivative, 0 ≤ nux < kx, 0 ≤ nuy < ky.
-
-    Returns
-    -------
-    (tx', ty', c', kx', ky') : the derivative's knots, flat coefficients and degrees.
-
-    Raises
-    ------
-    ValueError
-        An order outside [0, degree).
-    """
-    tx, ty, c = (np.asarray(a, dtype=float) for a in tck[:3])
-    kx, ky = degrees
-    if not (0 <= nux < kx and 0 <= nuy < ky):
-        raise ValueError(f"nux, nuy: must lie in [0, {kx}) and [0, {ky}), got {nux}, {nuy}")
-    w = c.reshape(tx.size - kx - 1, ty.size - ky - 1).copy()
-    # along x on the rows, then along y on the columns (a view: in place); pardeu
-    # differences only the rows it keeps along y, and each row's arithmetic is its own
-    nxx, kkx = _difference(w, tx, kx, nux)
-    nyy, kky = _difference(w.T, ty, ky, nuy)
-    return (np.ascontiguousarray(tx[nux:tx.size - nux]),
-            np.ascontiguousarray(ty[nuy:ty.size - nuy]),
-            np.ascontiguousarray(w[:nxx, :nyy]).ravel(), kkx, kky)
-
-
-def _difference(w: np.ndarray, t: np.ndarray, k: int, nu: int) -> tuple[int, int]:
-    """``pardeu``'s ``nu`` differencing passes of the coefficient rows of ``w`` (in
-    place) for knots ``t`` and degree ``k``; returns the rows left and their degree."""
-    n = w.shape[0]
-    for j in range(nu):
-        ak = float(k)
-        n -= 1
-        for i in range(n):
-            fac = t[i + 1 + j + k] - t[i + 1 + j]
-            if fac > 0.0:
-                w[i] = (w[i + 1] - w[i]) * ak / fac
-        k -= 1
-    return n, k
-
-
 @_jit
-def _basis(t, k, x, h, hh):
-    """FITPACK ``fpbspl``: the k + 1 B-splines nonzero at x, clamped into the knots'
-    range, into h; returns the knot interval l (t[l] ≤ x < t[l + 1], 0-based)."""
-    nk1 = t.size - k - 1
-    if x < t[k]:
-        x = t[k]
-    if x > t[nk1]:
-        x = t[nk1]
-    # the least l in [k, nk1 − 1] with x < t[l + 1]: fpbisp's linear search, bisected
-    lo, hi = k, nk1 - 1
+def _locate(b, x):
+    """The cell of breakpoints ``b`` holding x and x's offset in it: x clamped into
+    [b[0], b[-1]] (FITPACK's clamp), the largest i ≤ len(b) − 2 with b[i] ≤ x (FITPACK's
+    interval: an interior knot opens the cell to its right)."""
+    if x < b[0]:
+        x = b[0]
+    if x > b[-1]:
+        x = b[-1]
+    lo, hi = 0, b.size - 2
     while lo < hi:
-        mid = (lo + hi) // 2
-        if x < t[mid + 1]:
-            hi = mid
+        mid = (lo + hi + 1) // 2
+        if x >= b[mid]:
+            lo = mid
         else:
-            lo = mid + 1
-    if k == 3:
-        _deboor3(t, lo, x, h)
-        return lo
-    if k == 2:
-        _deboor2(t, lo, x, h)
-        return lo
-    h[0] = 1.0
-    for j in range(1, k + 1):
-        for i in range(j):
-            hh[i] = h[i]
-        h[0] = 0.0
-        for i in range(1, j + 1):
-            li = lo + i
-            lj = li - j
-            if t[li] == t[lj]:
-                h[i] = 0.0
-                continue
-            f = hh[i - 1] / (t[li] - t[lj])
-            h[i - 1] = h[i - 1] + f * (t[li] - x)
-            h[i] = f * (x - t[lj])
-    return lo
+            hi = mid - 1
+    return lo, x - b[lo]
 
 
 @_jit
-def _step(t, li, lj, x, g, lower):
-    """One term of the recurrence (``fpbspl``'s inner loop): the B-spline values (h[i − 1],
-    h[i]) from h[i − 1] = ``lower`` and hh[i − 1] = ``g`` on the knots t[lj] < t[li]."""
-    a = t[li]
-    b = t[lj]
-    if a == b:
-        return lower, 0.0
-    f = g / (a - b)
-    return lower + f * (a - x), f * (x - b)
+def _poly(coef, i, j, s, dx, dy):
+    """Spline s's polynomial on cell (i, j) at the offsets (dx, dy): Horner's scheme in y
+    within Horner's scheme in x."""
+    acc = 0.0
+    for p in range(coef.shape[3] - 1, -1, -1):
+        r = 0.0
+        for q in range(coef.shape[4] - 1, -1, -1):
+            r = r * dy + coef[i, j, s, p, q]
+        acc = acc * dx + r
+    return acc
 
 
 @_jit
-def _deboor2(t, lo, x, h):
-    """The recurrence of :func:`_basis` for k = 2, unrolled into scalars (the same
-    operations in the same order: ~2× faster than the loops over small arrays)."""
-    h0, h1 = _step(t, lo + 1, lo, x, 1.0, 0.0)
-    g0, g1 = h0, h1
-    h0, h1 = _step(t, lo + 1, lo - 1, x, g0, 0.0)
-    h1, h2 = _step(t, lo + 2, lo, x, g1, h1)
-    h[0] = h0
-    h[1] = h1
-    h[2] = h2
+def _value(sp, x, y):
+    """The value at (x, y) of the first spline of ``sp`` = (bx, by, coefficients)
+    (:class:`contact.utca.piecewise.PiecewiseSpline`)."""
+    i, dx = _locate(sp[0], x)
+    j, dy = _locate(sp[1], y)
+    return _poly(sp[2], i, j, 0, dx, dy)
 
 
 @_jit
-def _deboor3(t, lo, x, h):
-    """The recurrence of :func:`_basis` for k = 3, unrolled into scalars (as
-    :func:`_deboor2`)."""
-    h0, h1 = _step(t, lo + 1, lo, x, 1.0, 0.0)
-    g0, g1 = h0, h1
-    h0, h1 = _step(t, lo + 1, lo - 1, x, g0, 0.0)
-    h1, h2 = _step(t, lo + 2, lo, x, g1, h1)
-    g0, g1, g2 = h0, h1, h2
-    h0, h1 = _step(t, lo + 1, lo - 2, x, g0, 0.0)
-    h1, h2 = _step(t, lo + 2, lo - 1, x, g1, h1)
-    h2, h3 = _step(t, lo + 3, lo, x, g2, h2)
-    h[0] = h0
-    h[1] = h1
-    h[2] = h2
-    h[3] = h3
+def _value_and_slope(sp, i, dx, y):
+    """The first spline of ``sp`` and its ∂/∂y at (x, y), x given by its cell i and offset
+    dx: the polynomial in y at that x, by Horner's scheme with its derivative's."""
+    coef = sp[2]
+    j, dy = _locate(sp[1], y)
+    val = 0.0
+    der = 0.0
+    for q in range(coef.shape[4] - 1, -1, -1):
+        a = 0.0
+        for p in range(coef.shape[3] - 1, -1, -1):
+            a = a * dx + coef[i, j, 0, p, q]
+        der = der * dy + val
+        val = val * dy + a
+    return val, der
 
 
 @_jit
-def _value(tx, ty, c, kx, ky, x, y, hx, hy, hh):
-    """FITPACK ``fpbisp`` at one point (work arrays hx (kx + 1), hy (ky + 1), hh)."""
-    lx = _basis(tx, kx, x, hx, hh)
-    return _value_at(ty, c, kx, ky, lx, hx, y, hy, hh)
-
-
-@_jit
-def _value_at(ty, c, kx, ky, lx, hx, y, hy, hh):
-    """:func:`_value` with the x-basis given (its interval lx and values hx): splines on
-    the same x-knots at the same x share it (the same numbers as computing it again)."""
-    ly = _basis(ty, ky, y, hy, hh)
-    return _tensor_sum(c, 0, kx, ky, lx, ly, ty.size - ky - 1, hx, hy)
-
-
-@_jit
-def _tensor_sum(c, base, kx, ky, lx, ly, nky1, hx, hy):
-    """FITPACK's sum Σᵢ Σⱼ c[base + (lx − kx + i)·nky1 + ly − ky + j] hx[i] hy[j], in its
-    order, for flat coefficients (a spline's from ``base``) and the bases (intervals lx,
-    ly; values hx, hy)."""
-    l1 = base + (lx - kx) * nky1 + (ly - ky)
-    sp = 0.0
-    for i1 in range(kx + 1):
-        l2 = l1
-        for j1 in range(ky + 1):
-            sp = sp + c[l2] * hx[i1] * hy[j1]
-            l2 += 1
-        l1 += nky1
-    return sp
-
-
-@_jit
-def ev(tx, ty, c, kx, ky, x, y):
-    """Spline values at the points (x[i], y[i]) (M,): ``RectBivariateSpline.ev``."""
-    out = np.empty(x.size)
-    hx = np.empty(kx + 1)
-    hy = np.empty(ky + 1)
-    hh = np.empty(max(kx, ky) + 1)
-    for p in range(x.size):
-        out[p] = _value(tx, ty, c, kx, ky, x[p], y[p], hx, hy, hh)
+def ev(bx, by, coef, x, y):
+    """Values (M, K) of K splines in piecewise-polynomial form (breakpoints bx, by;
+    coefficients (nx, ny, K, kx + 1, ky + 1), :class:`contact.utca.piecewise.PiecewiseSpline`)
+    at the places (x[m], y[m]) (M,): ``RectBivariateSpline.ev`` of each, to round-off; each
+    place's cell is found once for the K splines."""
+    k = coef.shape[2]
+    out = np.empty((x.size, k))
+    for m in range(x.size):
+        i, dx = _locate(bx, x[m])
+        j, dy = _locate(by, y[m])
+        for s in range(k):
+            out[m, s] = _poly(coef, i, j, s, dx, dy)
     return out
 
 
 @_jit
-def ev_many(tx, ty, c, kx, ky, x, y):
-    """Values (M, K) of K splines on the same knots at the points (x[i], y[i]) (M,):
-    ``RectBivariateSpline.ev`` of each (coefficients ``c`` (K, ·)), the points' bases
-    computed once for all K (the same numbers as computing them for each)."""
+def pieces(c, basis_x, basis_y):
+    """The per-cell polynomial coefficients (ncx, ncy, K, kx + 1, ky + 1) of K splines on
+    the same knots, from their B-spline coefficients ``c`` (K, nx, ny) and the knots'
+    B-splines as polynomials on each interval (``basis_x`` (ncx, kx + 1, kx + 1),
+    ``basis_y``; :func:`contact.utca.piecewise.piece_basis`): Σ_a Σ_b Bx[i, a, p]
+    c[s, i + a, j + b] By[j, b, q], along x and then along y
+    (:func:`contact.utca.piecewise.from_splines`, compiled)."""
     k = c.shape[0]
-    out = np.empty((x.size, k))
-    hx = np.empty(kx + 1)
-    hy = np.empty(ky + 1)
-    hh = np.empty(max(kx, ky) + 1)
-    nky1 = ty.size - ky - 1
-    flat = c.reshape(-1)  # (the splines' coefficients one after the other)
-    size = c.shape[1]
-    for p in range(x.size):
-        lx = _basis(tx, kx, x[p], hx, hh)
-        ly = _basis(ty, ky, y[p], hy, hh)
-        for s in range(k):
-            out[p, s] = _tensor_sum(flat, s * size, kx, ky, lx, ly, nky1, hx, hy)
+    ncx, kx1 = basis_x.shape[0], basis_x.shape[1]
+    ncy, ky1 = basis_y.shape[0], basis_y.shape[1]
+    ny = c.shape[2]
+    out = np.empty((ncx, ncy, k, kx1, ky1))
+    along_x = np.empty((ny, kx1))
+    for s in range(k):
+        for i in range(ncx):
+            for jj in range(ny):
+                for p in range(kx1):
+                    acc = 0.0
+                    for a in range(kx1):
+                        acc += basis_x[i, a, p] * c[s, i + a, jj]
+                    along_x[jj, p] = acc
+            for j in range(ncy):
+                for p in range(kx1):
+                    for q in range(ky1):
+                        acc = 0.0
+                        for b in range(ky1):
+                            acc += along_x[j + b, p] * basis_y[j, b, q]
+                        out[i, j, s, p, q] = acc
     return out
 
 
@@ -274,20 +182,20 @@ def _minimum(a, b):
 
 
 @_jit
-def _newton_one(q, qv, v0, v1, u, t, v, miss, w):
-    """:meth:`EaseOffFields.newton_v` of one point: v* [1] or NaN. ``q``, ``qv``: the
-    splines of Q and ∂Q/∂v; ``w``: work arrays (hx, hy, hh)."""
-    hx, hy, hh = w
-    # u stays fixed: Q and ∂Q/∂v (same x-knots and degree) share the x-basis at u
-    lx = _basis(q[0], q[3], u, hx, hh)
-    f = _value_at(q[1], q[2], q[3], q[4], lx, hx, v, hy, hh) - t
+def _newton_one(q, v0, v1, u, t, v, miss):
+    """:meth:`EaseOffFields.newton_v` of one point: v* [1] or NaN. ``q``: the spline of Q
+    (bx, by, coefficients), whose value and ∂Q/∂v come from one polynomial per step."""
+    # u stays fixed: its cell and offset serve every step
+    i, du = _locate(q[0], u)
+    f, d = _value_and_slope(q, i, du, v)
+    f = f - t
     if not (abs(f) < 1e-13) and not miss:
         for _ in range(6):
-            d = _value_at(qv[1], qv[2], qv[3], qv[4], lx, hx, v, hy, hh)
             vn = _minimum(_maximum(v - f / (d if d != 0 else 1e-30), v0), v1)
-            fa = _value_at(q[1], q[2], q[3], q[4], lx, hx, vn, hy, hh) - t
+            fa, dn = _value_and_slope(q, i, du, vn)
+            fa = fa - t
             va = v
-            v, f = vn, fa
+            v, f, d = vn, fa, dn
             if abs(fa) < 1e-13 or vn == va:
                 break
     tol = 1e-9 * (v1 - v0)
@@ -297,19 +205,13 @@ def _newton_one(q, qv, v0, v1, u, t, v, miss, w):
 
 
 @_jit
-def _work(q):
-    return (np.empty(q[3] + 1), np.empty(q[4] + 1), np.empty(max(q[3], q[4]) + 1))
-
-
-@_jit
-def newton_v(q, qv, v0, v1, u, t, v, miss):
+def newton_v(q, v0, v1, u, t, v, miss):
     """Newton's method on the iso-line Q(u, v*) = t (M,) from the finite starts v (M,),
-    as :meth:`EaseOffFields.newton_v`: v* [1] or NaN. A spline is (tx, ty, c, kx, ky);
-    ``q`` is Q's, ``qv`` its ∂/∂v (:func:`derivative_spline`)."""
-    w = _work(q)
+    as :meth:`EaseOffFields.newton_v`: v* [1] or NaN. ``q`` is Q's spline in
+    piecewise-polynomial form (bx, by, coefficients)."""
     out = np.empty(u.size)
     for p in range(u.size):
-        out[p] = _newton_one(q, qv, v0, v1, u[p], t[p], v[p], miss[p], w)
+        out[p] = _newton_one(q, v0, v1, u[p], t[p], v[p], miss[p])
     return out
 
 
@@ -323,13 +225,11 @@ def _good_cell(ug, vg, cell_ok, u, v):
 
 
 @_jit
-def _measure(margin, ug, vg, cell_ok, u, v, w):
+def _measure(margin, ug, vg, cell_ok, u, v):
     """:meth:`EaseOffFields.measure` of one place (v may be NaN)."""
-    hx, hy, hh = w
     fin = math.isfinite(v)
     vs = v if fin else vg[0]
-    c = _minimum(_value(margin[0], margin[1], margin[2], margin[3], margin[4], u, vs,
-                        hx, hy, hh), vs - vg[0])
+    c = _minimum(_value(margin, u, vs), vs - vg[0])
     c = _minimum(c, vg[-1] - vs)
     c = _minimum(c, u - ug[0])
     c = _minimum(c, ug[-1] - u)
@@ -341,29 +241,27 @@ def _measure(margin, ug, vg, cell_ok, u, v, w):
 @_jit
 def measure(margin, ug, vg, cell_ok, u, v):
     """:meth:`EaseOffFields.measure` at the places (u, v) (M,) (v may be NaN)."""
-    w = _work(margin)
     out = np.empty(u.size)
     for p in range(u.size):
-        out[p] = _measure(margin, ug, vg, cell_ok, u[p], v[p], w)
+        out[p] = _measure(margin, ug, vg, cell_ok, u[p], v[p])
     return out
 
 
 @_jit
-def false_position_ends(q, qv, margin, ug, vg, cell_ok, t, a, b, va, n_iter):
+def false_position_ends(q, margin, ug, vg, cell_ok, t, a, b, va, n_iter):
     """:func:`contact.utca.contact_curves._false_position_ends`: the last inside places of
     the iso-lines Q = t (M,) between inside places a (profile places va) and outside
     places b, ``n_iter`` Illinois / bisection steps (fewer only once every |b − a| <
     1e-9); ``a``, ``b``, ``va`` are updated in place."""
-    w = _work(margin)
     v0, v1 = vg[0], vg[-1]
     m_pts = a.size
     ca = np.empty(m_pts)
     cb = np.empty(m_pts)
     for p in range(m_pts):
-        ca[p] = _measure(margin, ug, vg, cell_ok, a[p], va[p], w)
+        ca[p] = _measure(margin, ug, vg, cell_ok, a[p], va[p])
         vs = va[p] if math.isfinite(va[p]) else 0.5 * (v0 + v1)
-        vb = _newton_one(q, qv, v0, v1, b[p], t[p], vs, False, w)
-        cb[p] = _measure(margin, ug, vg, cell_ok, b[p], vb, w)
+        vb = _newton_one(q, v0, v1, b[p], t[p], vs, False)
+        cb[p] = _measure(margin, ug, vg, cell_ok, b[p], vb)
     prev_in = np.zeros(m_pts, dtype=np.bool_)
     prev_out = np.zeros(m_pts, dtype=np.bool_)
     for _ in range(n_iter):
@@ -378,8 +276,8 @@ def false_position_ends(q, qv, margin, ug, vg, cell_ok, t, a, b, va, n_iter):
             lo_m, hi_m = _minimum(ap, bp), _maximum(ap, bp)
             wd = 1e-3 * (hi_m - lo_m)
             m = _minimum(_maximum(m, lo_m + wd), hi_m - wd)
-            vm = _newton_one(q, qv, v0, v1, m, t[p], va[p], False, w)
-            cm = _measure(margin, ug, vg, cell_ok, m, vm, w)
+            vm = _newton_one(q, v0, v1, m, t[p], va[p], False)
+            cm = _measure(margin, ug, vg, cell_ok, m, vm)
             good = cm >= 0
             if good and prev_in[p] and smooth:
                 cb[p] = cbp * 0.5
@@ -444,7 +342,7 @@ def solve_columns(qn, vn, q_sign, target, breaks, pieces, cell_piece, n_iter):
 
 
 @_jit
-def _inside_one(margin, ug, vg, cell_ok, u, v, w):
+def _inside_one(margin, ug, vg, cell_ok, u, v):
     """:meth:`EaseOffFields.inside` of one place: in the grid, in a cell whose corners
     were computed, and with the pinion mate in its blank (margin ≥ 0)."""
     if not (u >= ug[0] and u <= ug[-1] and v >= vg[0] and v <= vg[-1]
@@ -452,9 +350,7 @@ def _inside_one(margin, ug, vg, cell_ok, u, v, w):
         return False
     if not _good_cell(ug, vg, cell_ok, u, v):
         return False
-    hx, hy, hh = w
-    return _value(margin[0], margin[1], margin[2], margin[3], margin[4], u, v,
-                  hx, hy, hh) >= 0.0
+    return _value(margin, u, v) >= 0.0
 
 
 @_jit
@@ -463,7 +359,6 @@ def coarse_runs(margin, ug, vg, cell_ok, uc, vc):
     long ones), as :func:`contact.utca.contact_curves._coarse_runs` after its column
     solves ``vc`` (nb, nc) at the places ``uc`` (nc,): have, start, stop (nb,) (−1 where
     no sample is inside)."""
-    w = _work(margin)
     nb, nc = vc.shape
     have = np.zeros(nb, dtype=np.bool_)
     start = np.full(nb, -1, dtype=np.int64)
@@ -471,7 +366,7 @@ def coarse_runs(margin, ug, vg, cell_ok, uc, vc):
     for r in range(nb):
         best, best_at, run, run_at = 0, -1, 0, -1
         for j in range(nc):
-            if _inside_one(margin, ug, vg, cell_ok, uc[j], vc[r, j], w):
+            if _inside_one(margin, ug, vg, cell_ok, uc[j], vc[r, j]):
                 if run == 0:
                     run_at = j
                 run += 1
@@ -487,7 +382,7 @@ def coarse_runs(margin, ug, vg, cell_ok, uc, vc):
 
 
 @_jit
-def _curve_ends(q, qv, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop, s_rows, s_u,
+def _curve_ends(q, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop, s_rows, s_u,
                 s_v, s_lo, s_hi, n_end):
     """``_curve_ends``: the ends (ua, ub) (nb,) of the curves, refined by
     :func:`false_position_ends` on the batch the NumPy path builds (the runs' low ends, their
@@ -530,7 +425,7 @@ def _curve_ends(q, qv, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop, s_
     tr = np.empty(m_ends)
     for i in range(m_ends):
         tr[i] = t[rows[i]]
-    a = false_position_ends(q, qv, margin, ug, vg, cell_ok, tr, a, b, va, n_end)
+    a = false_position_ends(q, margin, ug, vg, cell_ok, tr, a, b, va, n_end)
     for i in range(n_lo):
         ua[rows[i]] = a[i]
     for i in range(n_lo, n_lo + n_hi):
@@ -560,10 +455,9 @@ def _run_start(uc, vc, r, s0, s1, x):
 
 
 @_jit
-def _lowest_point(q, qv, eps, vg, t, up, vp, e, w):
+def _lowest_point(q, eps, vg, t, up, vp, e):
     """``_lowest_point`` with ``_parabola_vertex``: ute, cu, cv, index (nb,)."""
     nb, n = up.shape
-    hx, hy, hh = w
     v0, v1 = vg[0], vg[-1]
     ute = np.full(nb, np.nan)
     cu = np.full(nb, np.nan)
@@ -588,16 +482,16 @@ def _lowest_point(q, qv, eps, vg, t, up, vp, e, w):
         den = 2 * (h2 * a1 + h1 * a2)
         d = (h2 * h2 * a1 - h1 * h1 * a2) / den if (math.isfinite(den) and den > 0) else 0.0
         ur = up[r, k] + _minimum(_maximum(d, -0.5 * h1), 0.5 * h2)
-        vr = _newton_one(q, qv, v0, v1, ur, t[r], vp[r, k], False, w)
+        vr = _newton_one(q, v0, v1, ur, t[r], vp[r, k], False)
         if math.isfinite(vr):
-            er = _value(eps[0], eps[1], eps[2], eps[3], eps[4], ur, vr, hx, hy, hh)
+            er = _value(eps, ur, vr)
             if er < ec:
                 ute[r], cu[r], cv[r] = er, ur, vr
     return ute, cu, cv, index
 
 
 @_jit
-def seed_places(q, qv, margin, eps, ug, vg, cell_ok, t, frac, uc, vc, have, start, stop,
+def seed_places(q, margin, eps, ug, vg, cell_ok, t, frac, uc, vc, have, start, stop,
                 s_rows, s_u, s_v, s_lo, s_hi, n_end):
     """The iso-lines' places, ε and contact points from their coarse runs, as
     :func:`contact.utca.contact_curves._seed_places` after :func:`coarse_runs` and the
@@ -606,13 +500,11 @@ def seed_places(q, qv, margin, eps, ug, vg, cell_ok, t, frac, uc, vc, have, star
     the samples at ``frac`` (n,) by Newton's method from the runs' interpolation, ε there,
     the lowest sample and its parabola's vertex. Returns up, vp, ε (nb, n) and ute, cu,
     cv (nb,), index (nb,)."""
-    w = _work(q)
-    hx, hy, hh = w
     nb = vc.shape[0]
     n = frac.size
     u0 = ug[0]
     v0, v1 = vg[0], vg[-1]
-    ua, ub = _curve_ends(q, qv, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop,
+    ua, ub = _curve_ends(q, margin, ug, vg, cell_ok, t, uc, vc, have, start, stop,
                          s_rows, s_u, s_v, s_lo, s_hi, n_end)
     short_v = np.full(nb, np.nan)
     is_short = np.zeros(nb, dtype=np.bool_)
@@ -633,14 +525,13 @@ def seed_places(q, qv, margin, eps, ug, vg, cell_ok, t, frac, uc, vc, have, star
             vs = short_v[r] if is_short[r] else _run_start(uc, vc, r, start[r], stop[r], x)
             if not math.isfinite(vs):
                 vs = 0.5 * (v0 + v1)
-            vp[r, k] = _newton_one(q, qv, v0, v1, x, t[r], vs, False, w)
+            vp[r, k] = _newton_one(q, v0, v1, x, t[r], vs, False)
         for k in range(n):
             if math.isfinite(vp[r, k]):
-                e[r, k] = _value(eps[0], eps[1], eps[2], eps[3], eps[4], up[r, k], vp[r, k],
-                                 hx, hy, hh)
+                e[r, k] = _value(eps, up[r, k], vp[r, k])
     for r in range(nb):
         for k in range(n):
             if not math.isfinite(vp[r, k]):
                 up[r, k] = np.nan
-    ute, cu, cv, index = _lowest_point(q, qv, eps, vg, t, up, vp, e, w)
+    ute, cu, cv, index = _lowest_point(q, eps, vg, t, up, vp, e)
     return up, vp, e, ute, cu, cv, index

@@ -1,12 +1,12 @@
-"""Splines on the same knots evaluated together, with one B-spline basis per place.
+"""Splines on the same knots evaluated together, with one cell look-up per place.
 
 The ease-off's fields (:class:`contact.utca.fields.EaseOffFields`) and the forward map of
 the conjugate mapping (:mod:`contact.utca.conjugate_map`) are interpolating bicubic
-splines on one grid each, so all the splines of a group share their knots: at a place,
-the B-spline basis (FITPACK's ``fpbspl``, the costly part of an evaluation) serves them
-all. With the compiled kernels (:mod:`contact.utca.isoline_numba`) a group computes it
-once per place; without them each spline's ``ev`` runs. Both give FITPACK's numbers to
-the last bit.
+splines on one grid each, so all the splines of a group share their knots. With the
+compiled kernels (:mod:`contact.utca.isoline_numba`) a group holds them in
+piecewise-polynomial form (:mod:`contact.utca.piecewise`) and finds each place's cell
+once for all of them; without them each spline's ``ev`` (FITPACK) runs. The two agree to
+the splines' round-off (~1e-15 of their scale).
 
 Public functions
 ----------------
@@ -18,6 +18,8 @@ from __future__ import annotations
 from types import ModuleType
 
 import numpy as np
+
+from contact.utca.piecewise import PiecewiseSpline, derivative, from_splines
 
 __all__ = ["SplineGroup"]
 
@@ -31,9 +33,9 @@ class SplineGroup:
     splines : list of scipy.interpolate.RectBivariateSpline
         K splines on the same knots and degrees (interpolating splines on one grid).
     kernels : module or None
-        :mod:`contact.utca.isoline_numba` (each place's B-spline basis is then computed
-        once for the K splines: :func:`~contact.utca.isoline_numba.ev_many`), or None
-        (each spline's ``ev``). Both give FITPACK's numbers to the last bit.
+        :mod:`contact.utca.isoline_numba` (the K splines in piecewise-polynomial form,
+        each place's cell found once: :func:`~contact.utca.isoline_numba.ev`), or None
+        (each spline's ``ev``).
 
     Calling it with ``(u, v, dx=0, dy=0)`` (u, v broadcastable [1]; dx, dy the orders of
     the derivative, each below the degree) returns an array of shape broadcast(u, v) +
@@ -43,7 +45,7 @@ class SplineGroup:
     def __init__(self, splines: list, kernels: ModuleType | None):
         self.splines = list(splines)
         self.kernels = kernels
-        self._stacked: dict[tuple[int, int], tuple] = {}  # the derivatives' splines
+        self._pieces: dict[tuple[int, int], PiecewiseSpline] = {}  # by derivative order
 
     def __call__(self, u, v, dx: int = 0, dy: int = 0) -> np.ndarray:
         u, v = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
@@ -53,13 +55,12 @@ class SplineGroup:
                 out[..., k] = spline.ev(u, v, dx=dx, dy=dy)
             return out
         key = (int(dx), int(dy))
-        stacked = self._stacked.get(key)
-        if stacked is None:
-            parts = [self.kernels.derivative_spline(s.tck, s.degrees, *key)
-                     for s in self.splines]
-            tx, ty, _, kx, ky = parts[0]
-            stacked = self._stacked[key] = (tx, ty, np.stack([p[2] for p in parts]), kx, ky)
-        tx, ty, c, kx, ky = stacked
-        out = self.kernels.ev_many(tx, ty, c, kx, ky, np.ascontiguousarray(u.ravel()),
-                                   np.ascontiguousarray(v.ravel()))
-        return out.reshape(*u.shape, c.shape[0])
+        pp = self._pieces.get(key)
+        if pp is None:
+            base = self._pieces.get((0, 0))
+            if base is None:
+                base = self._pieces[(0, 0)] = from_splines(self.splines, self.kernels)
+            pp = self._pieces[key] = derivative(base, *key)
+        out = self.kernels.ev(pp.bx, pp.by, pp.coefficients, np.ascontiguousarray(u.ravel()),
+                              np.ascontiguousarray(v.ravel()))
+        return out.reshape(*u.shape, len(self.splines))
