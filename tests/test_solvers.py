@@ -243,6 +243,7 @@ def test_cycle_detection_triggers_fallback(monkeypatch):
     # (F < 0); from the set without it, a fake huge Θ makes segment 0 penetrate.
     import contact.qp.solvers.active_set as mod
 
+    monkeypatch.setenv("LTCA_KERNELS", "numpy")  # the fake KKT solve is the NumPy path's
     problem = ltca_like_problem(80, seed=3).problem
     n = problem.size
     real = mod.reduced_kkt

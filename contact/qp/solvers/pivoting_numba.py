@@ -1,0 +1,213 @@
+"""Compiled block principal pivoting of the contact LCP (numba; issue 32).
+
+:func:`contact.qp.solvers.active_set.block_pivoting` on an LTCA problem (N ≈ 60–140
+segments, ~50 loaded, 1–4 pivots) spends most of its ~0.3 ms in the interpreter: the
+KKT solve on a contact set is ~25 k flops. This kernel runs the same iterations in one
+compiled loop: the same start sets, the same KKT system on each contact set (seed
+Eq. 3.12–3.14: C_AA F_A − R_A Θ = −(s_A + C_AB F_max,B), R_Aᵀ F_A = T − R_Bᵀ F_max,B,
+by a Cholesky factorisation of C_AA and the scalar Schur complement,
+:func:`contact.qp.problem.reduced_kkt`), the same sign tests, the same pivots and the
+same record of visited sets (Kostreva 1978; Júdice & Pires 1994, §5).
+
+The factorisation is the Cholesky–Banachiewicz recurrence (Golub & Van Loan, *Matrix
+Computations*, 4th ed., 2013, Alg. 4.2.1) instead of LAPACK's blocked ``potrf``: the two
+agree to round-off (the forces to ~1e-13 relative on these problems), so a pivot decision
+could differ only where a force or gap lies within round-off of the ±1e-12 sign
+thresholds, i.e. where either decision gives a solution within them. The answer is
+certified afterwards by :func:`contact.qp.problem.contact_residuals` in NumPy, never here;
+the fallback (primal active set) stays in NumPy.
+
+This module imports numba; :mod:`contact.qp.solvers.active_set` uses it where numba is
+installed and ``LTCA_KERNELS`` is not ``numpy`` (:func:`geometry.core.kernels.kernels_module`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+__all__ = ["CANNOT_CARRY", "CYCLED", "ITERATION_CAP", "SOLVED", "block_pivoting"]
+
+#: the kernel's outcomes (the Python wrapper words them)
+SOLVED, CYCLED, CANNOT_CARRY, ITERATION_CAP = 0, 1, 2, 3
+
+_jit = numba.njit(cache=True, nogil=True)
+
+
+@_jit
+def _kkt(C, s, R, T, U, active, upper, floor, L, x_s, x_r, F):
+    """The KKT solution on the loaded set ``active`` with ``upper`` at its limits into F
+    (N,) [N]; returns Θ [rad], or NaN where C_AA is not positive definite or the Schur
+    complement R_Aᵀ C_AA⁻¹ R_A ≤ ``floor`` (the set cannot carry the torque). L, x_s,
+    x_r: work arrays (N, N), (N,), (N,)."""
+    n = s.size
+    idx = np.flatnonzero(active)
+    k = idx.size
+    if k == 0:
+        return np.nan
+    # the limits' share: s_A + C_AB F_max,B and T − R_Bᵀ F_max,B
+    t_eff = T
+    for j in range(n):
+        F[j] = 0.0
+    jdx = np.flatnonzero(upper)
+    for j in jdx:
+        F[j] = U[j]
+        t_eff -= R[j] * U[j]
+    for a in range(k):
+        i = idx[a]
+        v = s[i]
+        for j in jdx:
+            v += C[i, j] * U[j]
+        x_s[a] = v
+        x_r[a] = R[i]
+    # C_AA = L Lᵀ
+    for a in range(k):
+        ia = idx[a]
+        d = C[ia, ia]
+        for p in range(a):
+            d -= L[a, p] * L[a, p]
+        if not d > 0.0:
+            return np.nan
+        d = math.sqrt(d)
+        L[a, a] = d
+        for b in range(a + 1, k):
+            v = C[idx[b], ia]
+            for p in range(a):
+                v -= L[b, p] * L[a, p]
+            L[b, a] = v / d
+    # x = C_AA⁻¹ [s_A', R_A]: L y = b, then Lᵀ x = y
+    for a in range(k):
+        v_s, v_r = x_s[a], x_r[a]
+        for p in range(a):
+            v_s -= L[a, p] * x_s[p]
+            v_r -= L[a, p] * x_r[p]
+        x_s[a] = v_s / L[a, a]
+        x_r[a] = v_r / L[a, a]
+    for a in range(k - 1, -1, -1):
+        v_s, v_r = x_s[a], x_r[a]
+        for p in range(a + 1, k):
+            v_s -= L[p, a] * x_s[p]
+            v_r -= L[p, a] * x_r[p]
+        x_s[a] = v_s / L[a, a]
+        x_r[a] = v_r / L[a, a]
+    schur = 0.0
+    r_xs = 0.0
+    for a in range(k):
+        schur += R[idx[a]] * x_r[a]
+        r_xs += R[idx[a]] * x_s[a]
+    if not schur > floor:
+        return np.nan
+    theta = (t_eff + r_xs) / schur
+    for a in range(k):
+        F[idx[a]] = theta * x_r[a] - x_s[a]
+    return theta
+
+
+@_jit
+def block_pivoting(C, s, R, T, U, bounded, f_tol, y_tol, floor, active, upper,
+                   max_iterations):
+    """Block principal pivoting from the sets ``active`` (loaded) and ``upper`` (at their
+    limits), as :func:`contact.qp.solvers.active_set.block_pivoting` before its fallback.
+
+    Parameters
+    ----------
+    C : ndarray (N, N) — [mm/N], symmetric positive definite
+    s, R : ndarray (N,) — [mm]
+    T : float — [N·mm]
+    U : ndarray (N,) — [N], ``inf`` where no limit
+    bounded : bool
+        Whether any segment has a limit.
+    f_tol, y_tol : float — [N], [mm]
+        The sign tests' thresholds.
+    floor : float — [mm·N]
+        The least Schur complement taken as positive.
+    active, upper : bool ndarray (N,)
+        The start sets (copied).
+    max_iterations : int
+
+    Returns
+    -------
+    F (N,) [N], Θ [rad], iterations, outcome (:data:`SOLVED`, :data:`CYCLED`,
+    :data:`CANNOT_CARRY` or :data:`ITERATION_CAP`; F, Θ the last solution otherwise).
+    """
+    n = s.size
+    active = active.copy()
+    upper = upper.copy()
+    L = np.empty((n, n))
+    x_s = np.empty(n)
+    x_r = np.empty(n)
+    F = np.zeros(n)
+    F_out = np.zeros(n)
+    theta_out = 0.0
+    Y = np.empty(n)
+    seen = np.empty((max_iterations, n), dtype=np.int8)
+    for it in range(1, max_iterations + 1):
+        if _visited(seen, it - 1, active, upper):
+            return F_out, theta_out, it, CYCLED
+        theta = _kkt(C, s, R, T, U, active, upper, floor, L, x_s, x_r, F)
+        if math.isnan(theta):
+            # the set cannot carry the torque: add the loaded-side segments back
+            for i in range(n):
+                active[i] = (active[i] or R[i] > 0) and not upper[i]
+            theta = _kkt(C, s, R, T, U, active, upper, floor, L, x_s, x_r, F)
+            if math.isnan(theta):
+                return F_out, theta_out, it, CANNOT_CARRY
+        F_out[:] = F
+        theta_out = theta
+        # the gaps Y = C F + s − R Θ
+        for i in range(n):
+            v = 0.0
+            for j in range(n):
+                v += C[i, j] * F[j]
+            Y[i] = v + s[i] - R[i] * theta
+        if not _pivot(active, upper, F, Y, U, bounded, f_tol, y_tol):
+            return F_out, theta_out, it, SOLVED
+    return F_out, theta_out, max_iterations, ITERATION_CAP
+
+
+@_jit
+def _visited(seen, row, active, upper):
+    """Record the sets as row ``row`` of ``seen`` (0 open, 1 loaded, 2 at the limit) and
+    whether an earlier row holds the same sets (a cycle)."""
+    n = active.size
+    for i in range(n):
+        seen[row, i] = np.int8(1 if active[i] else (2 if upper[i] else 0))
+    for r in range(row):
+        same = True
+        for i in range(n):
+            if seen[r, i] != seen[row, i]:
+                same = False
+                break
+        if same:
+            return True
+    return False
+
+
+@_jit
+def _pivot(active, upper, F, Y, U, bounded, f_tol, y_tol):
+    """One block pivot of every segment (in place), and whether any moved: a loaded one
+    with F < −f_tol opens, one with F > F_max + f_tol goes to its limit; one at its limit
+    whose gap opens (Y > y_tol) is loaded again, an open one that penetrates (Y < −y_tol)
+    is loaded. Each segment's move depends on its own F and Y only, so moving them in one
+    pass is the NumPy path's test of all, then its moves."""
+    moved = False
+    for i in range(active.size):
+        if active[i]:
+            if F[i] < -f_tol:
+                active[i] = False
+                moved = True
+            elif bounded and F[i] > U[i] + f_tol:
+                active[i] = False
+                upper[i] = True
+                moved = True
+        elif upper[i]:
+            if Y[i] > y_tol:
+                upper[i] = False
+                active[i] = True
+                moved = True
+        elif Y[i] < -y_tol:
+            active[i] = True
+            moved = True
+    return moved
