@@ -35,7 +35,7 @@ import numpy as np
 from scipy.interpolate import BSpline, RectBivariateSpline
 
 from contact.utca.easeoff import EaseOff, fill_missing
-from contact.utca.piecewise import from_splines, piece_basis
+from contact.utca.piecewise import PiecewiseSpline, from_splines, piece_basis
 from contact.utca.spline_group import SplineGroup
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.kernels import KERNELS
@@ -178,11 +178,11 @@ class EaseOffFields:
         self._lattices: dict[tuple, np.ndarray] = {}
         self._columns: dict[tuple, tuple[np.ndarray, np.ndarray]] = {}
         self._groups: dict[tuple, SplineGroup] = {}  # values()'s groups, by names
+        self._pieces: dict[str, PiecewiseSpline] = {}  # each field's, by name
         if self.kernels is not None:
             # the splines as the kernels take them: (bx, by, coefficients)
             self.kernel_splines = KernelSplines(
-                *(tuple(from_splines([s], self.kernels))
-                  for s in (self.q, self.margin, self.eps)))
+                *(tuple(self._field_pieces(name)) for name in ("q", "margin", "eps")))
 
     def gap_at(self, u, v):
         """The pinion's gap curvature K at gear places, held within the nodes' range.
@@ -273,9 +273,22 @@ class EaseOffFields:
         key = tuple(names)
         group = self._groups.get(key)
         if group is None:
-            group = self._groups[key] = SplineGroup(
-                [s for name in names for s in self._splines(name)], self.kernels)
+            splines = [s for name in names for s in self._splines(name)]
+            pieces = None
+            if self.kernels is not None:  # each field's polynomials formed once
+                parts = [self._field_pieces(name) for name in names]
+                pieces = PiecewiseSpline(parts[0].bx, parts[0].by, np.ascontiguousarray(
+                    np.concatenate([p.coefficients for p in parts], axis=2)))
+            group = self._groups[key] = SplineGroup(splines, self.kernels, pieces)
         return group(u, v, dx, dy)
+
+    def _field_pieces(self, name: str) -> PiecewiseSpline:
+        """One field's splines in piecewise-polynomial form (formed once, for the kernels;
+        the fields' splines share the grid's knots)."""
+        pp = self._pieces.get(name)
+        if pp is None:
+            pp = self._pieces[name] = from_splines(self._splines(name), self.kernels)
+        return pp
 
     def lattice(self, uc):
         """Q at the coarse places uc × the grid's profile nodes (cached)."""

@@ -36,16 +36,26 @@ class SplineGroup:
         :mod:`contact.utca.isoline_numba` (the K splines in piecewise-polynomial form,
         each place's cell found once: :func:`~contact.utca.isoline_numba.ev`), or None
         (each spline's ``ev``).
+    pieces : PiecewiseSpline, optional
+        The K splines' piecewise-polynomial form, where the caller holds it already
+        (:func:`contact.utca.piecewise.from_splines` of ``splines``); formed on first use
+        otherwise.
 
     Calling it with ``(u, v, dx=0, dy=0)`` (u, v broadcastable [1]; dx, dy the orders of
     the derivative, each below the degree) returns an array of shape broadcast(u, v) +
     (K,).
     """
 
-    def __init__(self, splines: list, kernels: ModuleType | None):
+    def __init__(self, splines: list, kernels: ModuleType | None,
+                 pieces: PiecewiseSpline | None = None):
         self.splines = list(splines)
         self.kernels = kernels
         self._pieces: dict[tuple[int, int], PiecewiseSpline] = {}  # by derivative order
+        if pieces is not None:
+            if pieces.coefficients.shape[2] != len(self.splines):
+                raise ValueError(f"pieces: must hold the {len(self.splines)} splines, got "
+                                 f"{pieces.coefficients.shape[2]}")
+            self._pieces[(0, 0)] = pieces
 
     def __call__(self, u, v, dx: int = 0, dy: int = 0) -> np.ndarray:
         u, v = np.broadcast_arrays(np.asarray(u, dtype=float), np.asarray(v, dtype=float))
