@@ -9,6 +9,10 @@ The per-roll LTCA loop uses faster but equivalent internals of
   Gauss–Newton projection (:func:`_project_to_mid_reference`) and against feet known by
   construction;
 * C = Yᵀ Y with Y = U⁻ᵀ S Φ (one triangular solve) against Φᵀ (K⁻¹ Φ) (``cho_solve``).
+
+The trajectory and the projection are checked on both implementations: NumPy and the
+compiled kernels (:mod:`contact.compliance.tooth_map_numba`), one tooth at a time and two
+teeth stacked in one batch.
 """
 
 from __future__ import annotations
@@ -21,13 +25,14 @@ import pytest
 
 from contact.compliance.shell import ShellTooth, build_shell_model, compliance_blocks
 from contact.compliance.tooth import _PROJ_ITER, _project_to_mid, shell_tooth_from_case
-from contact.compliance.tooth_map import _TRAJ_STEPS, _mid_rows
+from contact.compliance.tooth_map import _TRAJ_STEPS, KERNEL_MODULE, _mid_rows, stack_surfaces
 from contact.compliance.tooth_map import angle_rows as _angle_rows
 from contact.compliance.tooth_map import blank_rows as _blank_rows
 from contact.compliance.tooth_map import frames as _frames
 from contact.compliance.tooth_map import trajectory as _trajectory
 from geometry.case import load_case
 from geometry.core.errors import InputError
+from geometry.core.kernels import compiled_module
 from geometry.machine.flank import projection_fractions
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -106,8 +111,16 @@ def _tooth(member: str):
     return shell_tooth_from_case(load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml"), member)
 
 
+#: the point mapping's implementations: NumPy and, where numba is installed, the compiled
+#: kernels (contact.compliance.tooth_map_numba: the same formulas point by point)
+KERNEL_PATHS = ["numpy", pytest.param("numba", marks=pytest.mark.skipif(
+    compiled_module(KERNEL_MODULE) is None, reason="numba (the 'fast' extra) is not installed"))]
+
+
+@pytest.mark.parametrize("kernels", KERNEL_PATHS)
 @pytest.mark.parametrize("member", ["pinion", "gear"])
-def test_trajectory_fast_equals_reference(member):
+def test_trajectory_fast_equals_reference(member, kernels, monkeypatch):
+    monkeypatch.setenv("LTCA_KERNELS", kernels)
     data = _tooth(member)
     rng = np.random.default_rng(3)
     u = rng.uniform(-0.05, 1.05, 200)
@@ -119,8 +132,10 @@ def test_trajectory_fast_equals_reference(member):
                                    _trajectory_reference(data.surface, *args), rtol=0, atol=1e-13)
 
 
+@pytest.mark.parametrize("kernels", KERNEL_PATHS)
 @pytest.mark.parametrize("member", ["pinion", "gear"])
-def test_newton_projection_finds_known_feet(member):
+def test_newton_projection_finds_known_feet(member, kernels, monkeypatch):
+    monkeypatch.setenv("LTCA_KERNELS", kernels)
     data = _tooth(member)
     rng = np.random.default_rng(4)
     u = rng.uniform(0.0, 1.0, 150)
@@ -138,6 +153,34 @@ def test_newton_projection_finds_known_feet(member):
     np.testing.assert_allclose(vn, v, rtol=0, atol=1e-13)
     np.testing.assert_allclose(un, ur, rtol=0, atol=1e-13)
     np.testing.assert_allclose(vn, vr, rtol=0, atol=1e-13)
+
+
+@pytest.mark.parametrize("kernels", KERNEL_PATHS)
+def test_stacked_teeth_map_as_each_alone(kernels, monkeypatch):
+    """Both members' points in one batch (stack_surfaces: per-point blank maps, each tooth
+    its own angle polynomials) give each point what its tooth alone gives: the projection
+    and the trajectory per point, to round-off (1e-13 in the fractions, as above)."""
+    monkeypatch.setenv("LTCA_KERNELS", kernels)
+    teeth = [_tooth("pinion"), _tooth("gear")]
+    rng = np.random.default_rng(9)
+    sizes = (70, 90)
+    pts, starts, alone = [], [], []
+    for data, n in zip(teeth, sizes, strict=True):
+        u = rng.uniform(0.0, 1.0, n)
+        v = rng.uniform(0.0, 1.0, n)
+        m, frame = _frames(data.surface, u, v)
+        p = m + rng.uniform(-0.5, 0.5, n)[:, None] * frame[:, 2, :]
+        u0, v0 = projection_fractions(data.corners, p[:, 2], np.hypot(p[:, 0], p[:, 1]))
+        uf, vf = _project_to_mid(data.surface, p, u0, v0)
+        alone.append((uf, vf, _trajectory(data.surface, uf, vf, 0.5)))
+        pts.append(p)
+        starts.append((u0, v0))
+    surf = stack_surfaces([t.surface for t in teeth], sizes)
+    uf, vf = _project_to_mid(surf, np.concatenate(pts), *(np.concatenate(a) for a in
+                                                         zip(*starts, strict=True)))
+    xi = _trajectory(surf, uf, vf, 0.5)
+    for got, want in zip((uf, vf, xi), zip(*alone, strict=True), strict=True):
+        np.testing.assert_allclose(got, np.concatenate(want), rtol=0, atol=1e-13)
 
 
 def test_half_solve_compliance_equals_cho_solve():

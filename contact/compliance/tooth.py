@@ -87,6 +87,7 @@ from contact.compliance.shell import (
 from contact.compliance.shell import as_points as as_shell_points
 from contact.compliance.tooth_map import (
     END_TOLERANCE,
+    KERNEL_MODULE,
     N_FACE,
     N_HEIGHT,
     RADIUS_SOURCES,
@@ -98,6 +99,7 @@ from contact.compliance.tooth_map import (
     bilinear,
     blank_rows,
     frames,
+    kernel_surface,
     mid_surface,
     rot_z,
     stack_surfaces,
@@ -105,6 +107,7 @@ from contact.compliance.tooth_map import (
 )
 from contact.compliance.tooth_measurement import shell_tooth_from_case
 from geometry.core.errors import InputError
+from geometry.core.kernels import kernels_module
 from geometry.core.validation import positive, real_array
 from geometry.machine.flank import projection_fractions
 from geometry.machine.meshing import solve_envelope
@@ -186,6 +189,14 @@ def _project_to_mid(surf: Surface, p: np.ndarray, u, v):
     """
     u = np.array(u, dtype=float)
     v = np.array(v, dtype=float)
+    kernels = kernels_module(KERNEL_MODULE)
+    if kernels is not None:  # the same Newton steps point by point, compiled
+        pts = np.asarray(p, dtype=float).reshape(-1, 3)
+        uf, vf = kernels.project_to_mid(
+            np.ascontiguousarray(pts[:, 0]), np.ascontiguousarray(pts[:, 1]),
+            np.ascontiguousarray(pts[:, 2]), u.ravel(), v.ravel(),
+            *kernel_surface(surf, u.size), *surf.degree, _PROJ_ITER)
+        return uf.reshape(u.shape), vf.reshape(v.shape)
     px, py, pz = np.asarray(p, dtype=float).T
     rho_p = np.hypot(px, py)
     phi_p = np.arctan2(py, px)

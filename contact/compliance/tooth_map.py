@@ -30,6 +30,7 @@ from contact.compliance.shell import (
     ShellTooth,
     build_shell_model,
 )
+from geometry.core.kernels import kernels_module
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -46,6 +47,9 @@ __all__ = [
 
 log = logging.getLogger(__name__)
 
+
+#: the point mapping's compiled kernels (trajectory, projection onto the mid-surface)
+KERNEL_MODULE = "contact.compliance.tooth_map_numba"
 
 _TRAJ_STEPS = 4  # RK4 steps along an orthogonal trajectory: error < 2e-8 in u (~1 nm of
 
@@ -434,6 +438,12 @@ def trajectory(surf: Surface, u, v0, v1) -> np.ndarray:
     u = u.ravel().copy()
     n_pts = u.size
     v0 = np.broadcast_to(np.asarray(v0, dtype=float), shape).ravel()
+    kernels = kernels_module(KERNEL_MODULE)
+    if kernels is not None:  # the same scheme point by point, compiled
+        v1f = np.ascontiguousarray(np.broadcast_to(np.asarray(v1, dtype=float), shape).ravel())
+        return kernels.trajectory(u, np.ascontiguousarray(v0), v1f,
+                                  *kernel_surface(surf, n_pts), *surf.degree,
+                                  _TRAJ_STEPS).reshape(shape)
     h = (np.broadcast_to(np.asarray(v1, dtype=float), shape).ravel() - v0) / _TRAJ_STEPS
     h2 = 0.5 * h
     h6 = h / 6.0
@@ -482,6 +492,21 @@ def trajectory(surf: Surface, u, v0, v1) -> np.ndarray:
         k4 = slope(u + h * k3, lv + 2)
         u = u + h6 * (k1 + 2.0 * (k2 + k3) + k4)
     return u.reshape(shape)
+
+
+def kernel_surface(surf: Surface, n_pts: int):
+    """A :class:`Surface` as the compiled kernels take it (:mod:`contact.compliance.
+    tooth_map_numba`) for ``n_pts`` points: the blank map's coefficients per point z, ρ (4,
+    P) [mm], the teeth's angle polynomials (M, 8, ·) [rad] and each point's tooth (P,)."""
+    if surf.bounds is None:
+        z = np.repeat(np.array(surf.z, dtype=float)[:, None], n_pts, axis=1)
+        rho = np.repeat(np.array(surf.rho, dtype=float)[:, None], n_pts, axis=1)
+        return z, rho, surf.power[None], np.zeros(n_pts, dtype=np.int64)
+    b = np.asarray(surf.bounds)
+    member = np.repeat(np.arange(b.size - 1, dtype=np.int64), np.diff(b))
+    return (np.stack([np.asarray(c, dtype=float) for c in surf.z]),
+            np.stack([np.asarray(c, dtype=float) for c in surf.rho]),
+            np.ascontiguousarray(surf.power), member)
 
 
 def rot_z(angle: np.ndarray, vec: np.ndarray) -> np.ndarray:
