@@ -1,13 +1,16 @@
 """Which implementation of the hot loops runs: NumPy (the reference) or numba's compiled kernels.
 
-Two searches run Newton's method point by point on small systems many thousand times per
-analysis: the envelope solve of the tooth surfaces (:mod:`geometry.machine.meshing`,
-kernels :mod:`geometry.machine.envelope_numba`) and the contact curves' iso-line
-searches (:mod:`contact.utca.fields`, kernels :mod:`contact.utca.isoline_numba`). Both
-have a NumPy path, batched over the points, and a compiled one (numba, the ``fast``
+Four loops of an analysis run small computations point by point many thousand times:
+the envelope solve of the tooth surfaces (:mod:`geometry.machine.meshing`, kernels
+:mod:`geometry.machine.envelope_numba`), the contact curves' iso-line searches on the
+ease-off splines (:mod:`contact.utca.fields`, kernels :mod:`contact.utca.isoline_numba`),
+the shell tooth's point mapping (:mod:`contact.compliance.tooth_map`, kernels
+:mod:`contact.compliance.tooth_map_numba`) and the contact problem's block pivoting
+(:mod:`contact.qp.solvers.active_set`, kernels :mod:`contact.qp.solvers.pivoting_numba`).
+Each has a NumPy path, batched over the points, and a compiled one (numba, the ``fast``
 extra) that runs the same iterations point by point. This module chooses between them,
-the same way for both: an explicit ``kernels`` argument, else the environment variable
-``LTCA_KERNELS``, else numba where it is installed.
+the same way for all: an explicit ``kernels`` argument where a function takes one, else
+the environment variable ``LTCA_KERNELS``, else numba where it is installed.
 
 Public functions
 ----------------
