@@ -13,7 +13,8 @@ turn, the candidate grid evaluated afresh: :func:`_seed_reference`, kept here as
 reference), and the ease-offs that depend on it:
 
 * the seeds themselves, bit for bit, on targets of every blade section (the profile,
-  edge, relief sections; face milling and face hobbing);
+  edge, relief sections; face milling and face hobbing), and the per-process memo of seeds
+  the solver takes them from (the same seed, repeated);
 * the ease-off of ISO sample 2 (face milled; the case whose gear-tip nodes a different
   reference masked when a relief-section root was accepted, commit cf68d5a) and of the
   face-hobbed reference design, drive and coast flank: valid masks and reasons node for
@@ -141,50 +142,47 @@ def test_seed_equals_the_search_pass_by_pass(case_name, member, flank):
 
 @pytest.mark.parametrize("case_name", ["kolivand2009_fm_11x41_reference",
                                        "kolivand2009_fh_12x41_reference"])
-def test_seed_from_a_larger_batch_is_the_same(case_name):
-    """solve_envelope runs the seed search's starts in the Newton batch of its guesses
-    where the seed target's guess lies off the profile section: the seed picked from
-    those results is the one the search's own Newton finds, bit for bit (each point's
-    Newton is independent of the batch), on targets of every blade section."""
+def test_memoised_seed_is_the_search(case_name):
+    """solve_envelope takes its seeds from a per-process memo (_memo_seed): the seed of a
+    target is the search's own, bit for bit, the first time and when repeated (read-only),
+    on targets of every blade section; a target without a seed raises each time."""
     ctx, blank, depth = _context(case_name, "pinion", "convex")
     targets, _ = _section_targets(ctx, blank, depth)
-    rng = np.random.default_rng(0)
+    meshing._seed_memoised.cache_clear()
+    found = 0
     for z0, p0 in targets:
         try:
             alone = meshing._seed(ctx, z0, p0, depth)
         except InputError:
+            with pytest.raises(InputError):
+                meshing._memo_seed(ctx, z0, p0, depth)
             continue
-        starts = meshing._seed_starts(ctx, z0, p0, depth)
-        x0, ks = starts[0], starts[1]
-        # 25 other points ahead of them, at another target, as a placement iteration's
-        # guesses would be
-        pick = rng.integers(0, len(x0), 25)
-        extra = x0[pick] + rng.normal(0.0, 0.05, (25, x0.shape[1]))
-        m = len(extra)
-        x, ok = meshing._newton(ctx, np.concatenate([extra, x0]), np.r_[ks[pick], ks],
-                                np.r_[np.full(m, z0 + 0.3), np.full(len(x0), z0)],
-                                np.full(m + len(x0), p0))
-        batched = meshing._seed(ctx, z0, p0, depth, solved=(starts, (x[m:], ok[m:])))
-        assert batched[2] == alone[2]
-        np.testing.assert_array_equal(batched[0], alone[0])
-        np.testing.assert_array_equal(batched[1], alone[1])
+        found += 1
+        for _ in range(2):
+            memo = meshing._memo_seed(ctx, z0, p0, depth)
+            assert memo[2] == alone[2]
+            np.testing.assert_array_equal(memo[0], alone[0])
+            np.testing.assert_array_equal(memo[1], alone[1])
+            assert not memo[0].flags.writeable
+    assert found >= 3
+    assert meshing._seed_memoised.cache_info().hits >= found
 
 
 @cache
 def _ease_offs(case_name, flank, reference):
     conjugate_map.clear_memos()  # the memoised forward map and gear nodes ran _seed too
     meshing._candidate_grid.cache_clear()
+    meshing._seed_memoised.cache_clear()  # (the seeds of the other search's run)
     if reference:
         mp = pytest.MonkeyPatch()
-        # (the reference search runs its own Newton: the starts solve_envelope ran along
-        # with its guesses, ``solved``, are left unused)
         mp.setattr(meshing, "_seed",
-                   lambda ctx, z0, p0, depth, solved=None: _seed_reference(ctx, z0, p0, depth))
+                   lambda ctx, z0, p0, depth: _seed_reference(ctx, z0, p0, depth))
         try:
             return ease_off(resolve_case(case_name), flank=flank)
         finally:
             mp.undo()
             conjugate_map.clear_memos()
+            meshing._seed_memoised.cache_clear()
     return ease_off(resolve_case(case_name), flank=flank)
 
 

@@ -23,7 +23,9 @@ profile section from its guess (the ease-off's placement iterations: a new targe
 time, often on a relief section) runs the whole search; its target-independent part, the
 generated points of the coarse candidate grids, is memoised per process (per blade,
 settings, section and q range), and Newton runs the candidates of all passes in one batch:
-the same root bit for bit at a fifth of the cost (issue 32).
+the same root bit for bit at a fifth of the cost (issue 32). The seeds themselves are
+memoised per target (:func:`_memo_seed`): the placement's last iterations, on nodes whose
+mates lie beyond the pinion grid, repeat their middle target.
 
 Face hobbing (indexing ratio κ ≠ 0): the work indexes while the head turns, so the one
 modelled blade meets a target once per head turn, each turn on another slot (the other
@@ -399,7 +401,7 @@ def _pick_seed(ctx: _Context, x: np.ndarray, ok: np.ndarray, k: int, s_max: floa
     return int(pick[0])
 
 
-def _seed(ctx: _Context, z0: float, p0: float, depth: float, solved=None):
+def _seed(ctx: _Context, z0: float, p0: float, depth: float):
     """Coarse search, then Newton, for one target: the start of the continuation.
 
     The passes in order: the profile section first (the middle of a flank), then the
@@ -409,15 +411,12 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float, solved=None):
     Newton is independent of the batch, so the root is the one the passes run one by one
     find, bit for bit; a profile-section target costs a few more points per iteration, a
     relief-section one a single run instead of up to eight); the candidate grids are
-    memoised (:func:`_candidate_grid`). ``solved``: the starts of :func:`_seed_starts` and
-    their Newton results (x, converged), if already run (as part of a larger batch).
+    memoised (:func:`_candidate_grid`), and the seeds too (:func:`_memo_seed`, which
+    the solver calls).
     """
-    if solved is None:
-        x0, ks, passes, sizes = _seed_starts(ctx, z0, p0, depth)
-        n = int(ks.size)
-        x, ok = _newton(ctx, x0, ks, np.full(n, z0), np.full(n, p0))
-    else:
-        (_, _, passes, sizes), (x, ok) = solved
+    x0, ks, passes, sizes = _seed_starts(ctx, z0, p0, depth)
+    n = int(ks.size)
+    x, ok = _newton(ctx, x0, ks, np.full(n, z0), np.full(n, p0))
     sec = ctx.sections
     s_max = sec.s_lo[sec.main] + 4.0 * depth + 5.0
     at = 0
@@ -448,6 +447,31 @@ def _seed_starts(ctx: _Context, z0: float, p0: float, depth: float):
     sizes = [len(a) for a in x0]
     ks = np.repeat([k for k, _ in passes], sizes)
     return np.concatenate(x0), ks, passes, sizes
+
+
+#: seed searches memoised per process (the ease-off's late placement iterations repeat the
+#: same middle target on nodes whose mates lie beyond the pinion grid)
+_SEED_MEMO = 64
+
+
+def _memo_seed(ctx: _Context, z0: float, p0: float, depth: float):
+    """:func:`_seed` of the target (z0, p0), memoised per process by the blade, the machine
+    settings, the length scale, the Newton's implementation, the target and ``depth``:
+    the search is deterministic, so a repeat returns the same seed bit for bit (read-only
+    arrays). A failing search raises :class:`InputError` each time (not memoised)."""
+    return _seed_memoised(ctx.blade, ctx.settings, ctx.length_scale,
+                          "numpy" if ctx.kernel is None else "numba", float(z0), float(p0),
+                          float(depth))
+
+
+@functools.lru_cache(maxsize=_SEED_MEMO)
+def _seed_memoised(blade: Blade, settings: MachineSettings, length_scale: float,
+                   kernels: str, z0: float, p0: float, depth: float):
+    """:func:`_memo_seed`'s search, on a context of its own."""
+    x, jac, k = _seed(_context(blade, settings, length_scale, kernels), z0, p0, depth)
+    x.setflags(write=False)
+    jac.setflags(write=False)
+    return x, jac, k
 
 
 def _predict(x_ref, jac_ref, dz, dp):
@@ -665,7 +689,7 @@ class _Early(NamedTuple):
     result: tuple | None = None  # (x (k, m), converged (k,)) once run
 
 
-def _early_prediction(ctx: _Context, xg, secg, idx, first, seed: int, seed_solved, zf, pf,
+def _early_prediction(ctx: _Context, xg, secg, idx, first, seed: int, zf, pf,
                       depth: float) -> _Early | None:
     """The seed of :func:`solve_envelope` and the starts of its prediction batch, known
     right after the guesses' first Newton batch ``first`` (x, converged) of the targets
@@ -677,12 +701,11 @@ def _early_prediction(ctx: _Context, xg, secg, idx, first, seed: int, seed_solve
     target's root from its guess where it converged there on the profile section, inside
     the section and within one limited step of its guess (the retries, the moves to
     neighbouring sections and the step check then leave it as it is), else the seed
-    search's pick among its Newton starts of the first batch (``seed_solved``). The
+    search's (:func:`_memo_seed`: the same seed bit for bit, memoised per target). The
     prediction batch takes every target but those that converged from their guess on the
     seed's section, inside it and within one limited step (they keep that root): a
-    superset of the "other" and "rest" points it will be used for. None where the seed
-    needs a search of its own (its target guessed on the profile section but not
-    converged there), or the search fails (then raised where it was before).
+    superset of the "other" and "rest" points it will be used for. None where the search
+    fails (then raised where it was before).
     """
     sections = ctx.sections
     n = zf.size
@@ -700,13 +723,11 @@ def _early_prediction(ctx: _Context, xg, secg, idx, first, seed: int, seed_solve
         _, jac, _ = _evaluate(ctx, x_seed[None], np.array([sec_seed]), zf[seed:seed + 1],
                               pf[seed:seed + 1])
         jac_seed = jac[0]
-    elif seed_solved is not None:
+    else:
         try:
-            x_seed, jac_seed, sec_seed = _seed(ctx, zf[seed], pf[seed], depth, seed_solved)
+            x_seed, jac_seed, sec_seed = _memo_seed(ctx, zf[seed], pf[seed], depth)
         except InputError:
             return None
-    else:
-        return None
     points = np.flatnonzero(~(settled & (secg == sec_seed)))
     if points.size == 0:
         return None
@@ -718,34 +739,16 @@ def _early_prediction(ctx: _Context, xg, secg, idx, first, seed: int, seed_solve
 def _solve_guesses(ctx: _Context, guess, shape: tuple, seed: int, zf, pf, depth: float, x,
                    section, reason):
     """The points of :func:`solve_envelope` that converge from their guess (x, section,
-    reason (n,) updated in place); returns the seed search's Newton results where it ran
-    with the guesses (``solved`` of :func:`_seed`, or None) and the early prediction batch
+    reason (n,) updated in place); returns the early prediction batch
     (:func:`_early_prediction`, run with the retries; or None)."""
     sections = ctx.sections
     m = x.shape[1]
-    seed_solved = early = None
     xg, secg, have = _guess_start(guess, shape, sections, ctx.generate)
     idx = np.flatnonzero(have)
-    # the seed target guessed off the profile section (or not at all) seldom converges
-    # onto it: the seed search (:func:`_seed`) will run, so its Newton starts join the
-    # guesses' batch (each point's Newton is independent of the batch: the same roots,
-    # one loop of iterations instead of two)
-    spec = None
-    if not (have[seed] and secg[seed] == sections.main):
-        spec = _seed_starts(ctx, zf[seed], pf[seed], depth)
     if idx.size == 0:
-        return seed_solved, early
-    if spec is not None:
-        ns = spec[1].size
-        xa, oka = _newton(ctx, np.concatenate([xg[idx], spec[0]]),
-                          np.concatenate([secg[idx], spec[1]]),
-                          np.concatenate([zf[idx], np.full(ns, zf[seed])]),
-                          np.concatenate([pf[idx], np.full(ns, pf[seed])]))
-        first = (xa[:idx.size], oka[:idx.size])
-        seed_solved = (spec, (xa[idx.size:], oka[idx.size:]))
-    else:
-        first = _newton(ctx, xg[idx], secg[idx], zf[idx], pf[idx])
-    early = _early_prediction(ctx, xg, secg, idx, first, seed, seed_solved, zf, pf, depth)
+        return None
+    first = _newton(ctx, xg[idx], secg[idx], zf[idx], pf[idx])
+    early = _early_prediction(ctx, xg, secg, idx, first, seed, zf, pf, depth)
     out = _solve_sections(ctx, xg[idx], secg[idx], zf[idx], pf[idx], first=first,
                           extra=None if early is None else early.starts)
     x[idx], section[idx], reason[idx] = out[:3]
@@ -755,7 +758,7 @@ def _solve_guesses(ctx: _Context, guess, shape: tuple, seed: int, zf, pf, depth:
     # solve: the root may be another branch, so solve such points afresh
     far = np.any(np.abs(x[idx] - xg[idx]) > _STEP_LIMIT[:m], axis=-1)
     reason[idx[far]] = 1
-    return seed_solved, early
+    return early
 
 
 def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
@@ -840,10 +843,9 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     x = np.full((n, m), np.nan)
     section = np.zeros(n, dtype=np.intp)
     reason = np.ones(n, dtype=np.int8)
-    seed_solved = early = None
+    early = None
     if guess is not None:
-        seed_solved, early = _solve_guesses(ctx, guess, shape, seed, zf, pf, depth, x, section,
-                                            reason)
+        early = _solve_guesses(ctx, guess, shape, seed, zf, pf, depth, x, section, reason)
     if early is not None:
         x_seed, jac_seed, sec_seed = early.seed
     elif reason[seed] == 0 and section[seed] == sections.main:
@@ -854,7 +856,7 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
                               pf[seed:seed + 1])
         jac_seed = jac[0]
     else:
-        x_seed, jac_seed, sec_seed = _seed(ctx, zf[seed], pf[seed], depth, seed_solved)
+        x_seed, jac_seed, sec_seed = _memo_seed(ctx, zf[seed], pf[seed], depth)
     # near a section junction a place can have a root on two sections (one of them cut
     # away); as without a guess, the seed's section wins where Newton from the prediction
     # finds its root inside the section ("other"); the unresolved points ("rest") start
