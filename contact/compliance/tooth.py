@@ -101,6 +101,7 @@ from contact.compliance.tooth_map import (
     frames,
     kernel_surface,
     mid_surface,
+    projection_step,
     rot_z,
     stack_surfaces,
     trajectory,
@@ -205,20 +206,8 @@ def _project_to_mid(surf: Surface, p: np.ndarray, u, v):
     for _ in range(_PROJ_ITER):
         z, rho, zu, ru, zv, rv = blank_rows(surf, u, v)
         phi, fu, fv, fuu, fuv, fvv = angle_rows(surf, u, v, slice(None))[[0, 1, 2, 5, 6, 7]]
-        d = phi_p - phi
-        r_r = rho_p * np.cos(d) - rho
-        r_f = rho_p * np.sin(d)
-        r_z = pz - z
-        rfu, rfv = rho * fu, rho * fv
-        g1 = r_r * ru + r_f * rfu + r_z * zu
-        g2 = r_r * rv + r_f * rfv + r_z * zv
-        a11 = ru * ru + rfu * rfu + zu * zu + r_r * rfu * fu - r_f * (2.0 * ru * fu + rho * fuu)
-        a22 = rv * rv + rfv * rfv + zv * zv + r_r * rfv * fv - r_f * (2.0 * rv * fv + rho * fvv)
-        a12 = (ru * rv + rfu * rfv + zu * zv - r_r * (r_uv - rfu * fv)
-               - r_f * (ru * fv + rv * fu + rho * fuv) - r_z * z_uv)
-        det = a11 * a22 - a12 * a12
-        du = (a22 * g1 - a12 * g2) / det
-        dv = (a11 * g2 - a12 * g1) / det
+        du, dv = projection_step(rho_p, phi_p, pz, z, rho, zu, ru, zv, rv, z_uv, r_uv, phi,
+                                 fu, fv, fuu, fuv, fvv)
         u += du
         v += dv
         if (np.abs(du) + np.abs(dv)).max() < 1e-14:

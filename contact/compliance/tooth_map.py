@@ -374,6 +374,45 @@ def blank_rows(surf: Surface, u: np.ndarray, v: np.ndarray):
     return z0 + zu * u + v * pv_z, r0 + ru * u + v * pv_r, pu_z, pu_r, pv_z, pv_r
 
 
+def projection_step(rho_p, phi_p, pz, z, rho, zu, ru, zv, rv, z_uv, r_uv, phi, fu, fv, fuu,
+                    fuv, fvv):
+    """The Newton step (Δu, Δv) [1] of the foot of points on the mid-surface
+    (:func:`contact.compliance.tooth._project_to_mid`, whose docstring gives the
+    gradient and the exact Hessian of |p − M(u, v)|²/2 in cylindrical components).
+
+    Plain arithmetic on floats or broadcastable arrays (the NumPy path's batch; the
+    compiled kernel's points, :mod:`contact.compliance.tooth_map_numba`, one by one).
+
+    Parameters
+    ----------
+    rho_p, phi_p, pz : [mm], [rad], [mm]
+        The points in cylindrical coordinates about the member axis.
+    z, rho, zu, ru, zv, rv, z_uv, r_uv : [mm]
+        The blank map at the iterate and its u-, v- and mixed derivatives
+        (:func:`blank_rows`; z_uv, r_uv its coefficients b_uv).
+    phi, fu, fv, fuu, fuv, fvv : [rad]
+        The mid-surface angle and its derivatives at the iterate (:func:`angle_rows`,
+        rows 0, 1, 2, 5, 6, 7).
+
+    Returns
+    -------
+    (Δu, Δv) : [1]
+    """
+    d = phi_p - phi
+    r_r = rho_p * np.cos(d) - rho
+    r_f = rho_p * np.sin(d)
+    r_z = pz - z
+    rfu, rfv = rho * fu, rho * fv
+    g1 = r_r * ru + r_f * rfu + r_z * zu
+    g2 = r_r * rv + r_f * rfv + r_z * zv
+    a11 = ru * ru + rfu * rfu + zu * zu + r_r * rfu * fu - r_f * (2.0 * ru * fu + rho * fuu)
+    a22 = rv * rv + rfv * rfv + zv * zv + r_r * rfv * fv - r_f * (2.0 * rv * fv + rho * fvv)
+    a12 = (ru * rv + rfu * rfv + zu * zv - r_r * (r_uv - rfu * fv)
+           - r_f * (ru * fv + rv * fu + rho * fuv) - r_z * z_uv)
+    det = a11 * a22 - a12 * a12
+    return (a22 * g1 - a12 * g2) / det, (a11 * g2 - a12 * g1) / det
+
+
 def _mid_rows(surf: Surface, u: np.ndarray, v: np.ndarray):
     """M, M_u, M_v at 1-D (u, v) as nine rows (x, y, z components) [mm]."""
     z, rho, pu_z, pu_r, pv_z, pv_r = blank_rows(surf, u, v)

@@ -13,15 +13,16 @@ point by point:
 - the mid-surface M(u, v) = (ρ cos φ, ρ sin φ, z) with the bilinear blank map (z, ρ) and
   the flank-angle polynomial φ(u, v) in power form (:class:`~contact.compliance.tooth_map.
   Surface`, rows φ, φ_u, φ_v, φ_uu, φ_uv, φ_vv; each tooth of a stacked batch its own);
-- the projection's Newton step with the exact Hessian and its stopping rule
+- the projection's Newton step with the exact Hessian (the NumPy path's own formula,
+  :func:`~contact.compliance.tooth_map.projection_step`, compiled) and its stopping rule
   |Δu| + |Δv| < 1e-14 (here per point: a point stops when it has converged, not when the
   batch has; the iterates then differ by round-off);
 - the trajectory's slope du/dv = −(M_u·M_v)/(M_u·M_u) and the classical RK4 scheme with
   the same steps.
 
 The polynomials are evaluated by Horner's scheme instead of a Vandermonde product, so
-the results agree with the NumPy path to round-off (the fractions to ~1e-15; checked in
-``tests/test_tooth_map_kernels.py``); numba does not contract or reassociate without
+the results agree with the NumPy path to round-off (the fractions to ~1e-15; checked to
+1e-13 in ``tests/test_compliance_fast_paths.py``); numba does not contract or reassociate without
 ``fastmath``, so they do not depend on the CPU.
 
 This module imports numba; :mod:`contact.compliance.tooth_map` and
@@ -36,9 +37,14 @@ import math
 import numba
 import numpy as np
 
+from contact.compliance.tooth_map import projection_step
+
 __all__ = ["project_to_mid", "trajectory"]
 
 _jit = numba.njit(cache=True, nogil=True)
+
+#: the Newton step of the foot on the mid-surface: the NumPy path's own formula, compiled
+_projection_step = _jit(projection_step)
 
 
 @_jit
@@ -177,21 +183,8 @@ def project_to_mid(px, py, pz, u, v, z, rho, power, member, du, dv, n_iter):
             zz = z0 + zu0 * a + b * zv
             r = r0 + ru0 * a + b * rv
             phi, fu, fv, fuu, fuv, fvv = _six(power, m, du, dv, tu, tv)
-            d = phi_p - phi
-            r_r = rho_p * math.cos(d) - r
-            r_f = rho_p * math.sin(d)
-            r_z = pz[p] - zz
-            rfu = r * fu
-            rfv = r * fv
-            g1 = r_r * ru + r_f * rfu + r_z * zu
-            g2 = r_r * rv + r_f * rfv + r_z * zv
-            a11 = ru * ru + rfu * rfu + zu * zu + r_r * rfu * fu - r_f * (2.0 * ru * fu + r * fuu)
-            a22 = rv * rv + rfv * rfv + zv * zv + r_r * rfv * fv - r_f * (2.0 * rv * fv + r * fvv)
-            a12 = (ru * rv + rfu * rfv + zu * zv - r_r * (r_uv - rfu * fv)
-                   - r_f * (ru * fv + rv * fu + r * fuv) - r_z * z_uv)
-            det = a11 * a22 - a12 * a12
-            step_u = (a22 * g1 - a12 * g2) / det
-            step_v = (a11 * g2 - a12 * g1) / det
+            step_u, step_v = _projection_step(rho_p, phi_p, pz[p], zz, r, zu, ru, zv, rv,
+                                              z_uv, r_uv, phi, fu, fv, fuu, fuv, fvv)
             a += step_u
             b += step_v
             if abs(step_u) + abs(step_v) < 1e-14:
