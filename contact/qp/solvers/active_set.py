@@ -47,6 +47,12 @@ from geometry.core.kernels import kernels_module
 
 _KERNEL_MODULE = "contact.qp.solvers.pivoting_numba"  # the compiled block pivoting
 
+#: the block pivoting's outcomes (its NumPy and compiled loops): solved, a contact set
+#: visited again, a set that cannot carry the torque, the iteration cap
+SOLVED, CYCLED, CANNOT_CARRY, ITERATION_CAP = 0, 1, 2, 3
+_OUTCOMES = {CYCLED: "cycled (contact set repeated)",
+             CANNOT_CARRY: "contact set cannot carry the torque"}
+
 __all__ = ["block_pivoting", "initial_contact_set", "initial_contact_sets",
            "primal_active_set"]
 
@@ -276,33 +282,46 @@ def block_pivoting(
     ~6× faster on LTCA problems); the fallback runs in NumPy either way.
     """
     t0 = time.perf_counter()
-    n = problem.size
-    C, s, R = problem.compliance, problem.separation, problem.moment_arm
-    bounded = problem.has_bounds
     f_tol, y_tol = _thresholds(problem)
     floor = schur_floor(problem)
     active, upper = _start_sets(problem, initial_active_set, initial_upper_set)
-    reason = f"iteration cap ({max_iterations}) reached"
-    F = np.zeros(n)
-    theta = 0.0
-    kernels = kernels_module(_KERNEL_MODULE) if max_iterations >= 1 else None
+    kernels = kernels_module(_KERNEL_MODULE)
     if kernels is not None:  # the same iterations, compiled
         F, theta, it, outcome = kernels.block_pivoting(
-            C, s, R, float(problem.torque), problem.upper_bound, bounded, f_tol, y_tol,
+            problem.compliance, problem.separation, problem.moment_arm,
+            float(problem.torque), problem.upper_bound, problem.has_bounds, f_tol, y_tol,
             floor, active, upper, int(max_iterations))
-        if outcome == kernels.SOLVED:
-            return _result(F, float(theta), int(it), True, "solved", t0, False)
-        if outcome == kernels.CYCLED:
-            reason = "cycled (contact set repeated)"
-        elif outcome == kernels.CANNOT_CARRY:
-            reason = "contact set cannot carry the torque"
-    # the NumPy path (the reference): it runs where the kernels do not
+    else:
+        F, theta, it, outcome = _pivot(problem, active, upper, floor, f_tol, y_tol,
+                                       max_iterations)
+    if outcome == SOLVED:
+        return _result(F, float(theta), int(it), True, "solved", t0, False)
+    reason = _OUTCOMES.get(outcome, f"iteration cap ({max_iterations}) reached")
+    if not fallback:
+        return _result(F, theta, max_iterations, False,
+                       f"block pivoting {reason}; fallback disabled", t0, False)
+    F, theta, its, ok = primal_active_set(problem)
+    return _result(F, theta, its, ok, ("solved" if ok else "failed")
+                   + f" (fallback: primal active set; block pivoting {reason})", t0, True)
+
+
+def _pivot(problem: ContactProblem, active: np.ndarray, upper: np.ndarray, floor: float,
+           f_tol: float, y_tol: float, max_iterations: int):
+    """The block pivoting's iterations from the sets ``active`` and ``upper`` (updated in
+    place), in NumPy: F (N,) [N], Θ [rad], iterations and the outcome (:data:`SOLVED`,
+    :data:`CYCLED`, :data:`CANNOT_CARRY` or :data:`ITERATION_CAP`; F, Θ the last solution
+    otherwise). :func:`contact.qp.solvers.pivoting_numba.block_pivoting` is the same
+    loop, compiled."""
+    n = problem.size
+    C, s, R = problem.compliance, problem.separation, problem.moment_arm
+    bounded = problem.has_bounds
+    F = np.zeros(n)
+    theta = 0.0
     seen: set[bytes] = set()
-    for it in range(1, (0 if kernels is not None else max_iterations) + 1):
+    for it in range(1, max_iterations + 1):
         key = active.tobytes() + upper.tobytes()
         if key in seen:
-            reason = "cycled (contact set repeated)"
-            break
+            return F, theta, it, CYCLED
         seen.add(key)
         sol = _solve_sets(problem, active, upper, floor)
         if sol is None:
@@ -310,8 +329,7 @@ def block_pivoting(
             active = (active | (R > 0)) & ~upper
             sol = _solve_sets(problem, active, upper, floor)
             if sol is None:
-                reason = "contact set cannot carry the torque"
-                break
+                return F, theta, it, CANNOT_CARRY
         F, theta = sol
         idx = active.nonzero()[0]
         F_A = F[idx]
@@ -322,30 +340,24 @@ def block_pivoting(
         drop = F_A < -f_tol
         add = Y < -y_tol
         add[idx] = False
-        if bounded:
-            U = problem.upper_bound
-            raise_ = F_A > U[idx] + f_tol
-            add[upper] = False
-            release = upper & (Y > y_tol)
         if not bounded:
             if not np.count_nonzero(drop) and not np.count_nonzero(add):
-                return _result(F, theta, it, True, "solved", t0, False)
+                return F, theta, it, SOLVED
             active[idx[drop]] = False
             active |= add
             continue
+        U = problem.upper_bound
+        raise_ = F_A > U[idx] + f_tol
+        add[upper] = False
+        release = upper & (Y > y_tol)
         if not (np.count_nonzero(drop) or np.count_nonzero(add) or np.count_nonzero(raise_)
                 or np.count_nonzero(release)):
-            return _result(F, theta, it, True, "solved", t0, False)
+            return F, theta, it, SOLVED
         active[idx[drop | raise_]] = False
         upper[idx[raise_]] = True
         upper &= ~release
         active |= add | release
-    if not fallback:
-        return _result(F, theta, max_iterations, False,
-                       f"block pivoting {reason}; fallback disabled", t0, False)
-    F, theta, its, ok = primal_active_set(problem)
-    return _result(F, theta, its, ok, ("solved" if ok else "failed")
-                   + f" (fallback: primal active set; block pivoting {reason})", t0, True)
+    return F, theta, max_iterations, ITERATION_CAP
 
 
 def _start_sets(problem: ContactProblem, active0: np.ndarray | None,

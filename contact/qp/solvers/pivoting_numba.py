@@ -28,10 +28,11 @@ import math
 import numba
 import numpy as np
 
+from contact.qp.solvers.active_set import CANNOT_CARRY, CYCLED, ITERATION_CAP, SOLVED
+
 __all__ = ["CANNOT_CARRY", "CYCLED", "ITERATION_CAP", "SOLVED", "block_pivoting"]
 
-#: the kernel's outcomes (the Python wrapper words them)
-SOLVED, CYCLED, CANNOT_CARRY, ITERATION_CAP = 0, 1, 2, 3
+#: the kernel's outcomes, those of the NumPy loop (the wrapper words them)
 
 _jit = numba.njit(cache=True, nogil=True)
 
