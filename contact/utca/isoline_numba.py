@@ -27,8 +27,9 @@ point in compiled loops, with the same steps and tests as the NumPy path of
 The two paths differ by the spline's round-off: the polynomial form and FITPACK's
 recurrence agree to a few units in the last place of the spline's scale (measured
 ≤ 1e-15 relative; checked to 1e-13). The iterations stop at |ΔQ| < 1e-13 rad, so the
-places, ε and curves agree to ~1e-12 and a study point's summaries to the 5×5 guard's
-1e-9 (``tests/test_isoline_kernels.py``); numba does not contract ``a * b + c`` into
+places agree to that over the slope of Q (≤ 1.8e-11 on the cases tested; measured
+≤ 2e-12), and a study point's summaries to the 5×5 guard's 1e-9
+(``tests/test_isoline_kernels.py``); numba does not contract ``a * b + c`` into
 fused multiply-adds or reassociate sums unless asked (``fastmath`` is off), so the
 kernels' numbers do not depend on the CPU.
 
