@@ -157,6 +157,22 @@ def _vogel_lsq(c: float, t: NDArray[np.float64], ln_eta: NDArray[np.float64]):
     return coef, resid
 
 
+def _vogel_sse_grid(c: NDArray[np.float64], t: NDArray[np.float64],
+                    ln_eta: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Least-squares SSE of ln η = ln a + b x, x = 1/(T − c), at each c of a grid (m,).
+
+    The straight-line fit's closed form (slope S_xy/S_xx of the centred data) for all m
+    values of c at once, the residuals summed directly rather than as S_yy − S_xy²/S_xx,
+    which cancels when the fit is close (the coarse scan of :func:`fit_vogel`).
+    """
+    x = 1.0 / (t[None, :] - c[:, None])
+    xc = x - x.mean(axis=1, keepdims=True)
+    yc = ln_eta - ln_eta.mean()
+    slope = (xc @ yc) / np.einsum("ij,ij->i", xc, xc)
+    resid = yc[None, :] - slope[:, None] * xc
+    return np.einsum("ij,ij->i", resid, resid)
+
+
 def fit_vogel(temperature: ArrayLike, dynamic_viscosity: ArrayLike) -> VogelFit:
     """Least-squares Vogel fit ln η = ln a + b/(T − c) to a viscosity table.
 
@@ -203,7 +219,7 @@ def fit_vogel(temperature: ArrayLike, dynamic_viscosity: ArrayLike) -> VogelFit:
         return float(np.sum(_vogel_lsq(c, t, ln_eta)[1] ** 2))
 
     grid = np.linspace(lo, hi, 200)
-    k = int(np.argmin([sse(c) for c in grid]))
+    k = int(np.argmin(_vogel_sse_grid(grid, t, ln_eta)))
     bracket = (grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)])
     opt = minimize_scalar(sse, bounds=bracket, method="bounded", options={"xatol": 1e-8})
     c = float(opt.x)

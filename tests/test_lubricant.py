@@ -149,6 +149,20 @@ def test_fit_vogel_recovers_exact_vogel_data() -> None:
     np.testing.assert_allclose([fit.a, fit.b, fit.c], [a, b, c], rtol=1e-4)
 
 
+def test_vogel_coarse_scan_is_the_least_squares_residual(oil: Lubricant) -> None:
+    # The fit's coarse scan over c takes each straight-line fit in closed form for all c
+    # at once; it must be the SSE of numpy's least squares at every c of the scan. rtol
+    # 1e-9: the residuals are summed directly (no S_yy − S_xy²/S_xx cancellation), so the
+    # two agree to round-off of the residuals (~1e-16 of ln η over residuals ~1e-5).
+    from friction.lubricant import _vogel_lsq, _vogel_sse_grid
+
+    t = np.asarray(oil.temperature)
+    ln_eta = np.log(oil.dynamic_viscosity)
+    grid = np.linspace(-273.15, t.min() - 1.0, 200)
+    expect = [np.sum(_vogel_lsq(c, t, ln_eta)[1] ** 2) for c in grid]
+    np.testing.assert_allclose(_vogel_sse_grid(grid, t, ln_eta), expect, rtol=1e-9)
+
+
 def test_thermal_conductivity_constant(oil: Lubricant) -> None:
     k = np.asarray(thermal_conductivity(oil, [30.0, 90.0]))
     assert k.shape == (2,)
