@@ -183,12 +183,13 @@ def test_stacked_teeth_map_as_each_alone(kernels, monkeypatch):
         np.testing.assert_allclose(got, np.concatenate(want), rtol=0, atol=1e-13)
 
 
-def test_half_solve_compliance_equals_cho_solve():
+@pytest.mark.parametrize("modes", [(5, 9), (6, 21)])  # (6, 21): the LTCA's default model
+def test_half_solve_compliance_equals_cho_solve(modes):
     tooth = ShellTooth.from_face_width(thickness_toe_root=8.0, thickness_heel_root=10.0,
                                        thickness_tip=3.0, height_toe=9.0, height_heel=11.0,
                                        face_width=40.0, radius=80.0, youngs_modulus=206000.0,
                                        poisson_ratio=0.3)
-    model = build_shell_model(tooth, 5, 9)
+    model = build_shell_model(tooth, *modes)
     rng = np.random.default_rng(5)
     n = 12
     theta = rng.uniform(0.05, 0.9, n) * tooth.subtended_angle

@@ -249,7 +249,7 @@ def build_shell_model(
     quad = _volume_quadrature(tooth, a, nq_x, nq_t, nq_z)
     layout, n_dof = _dof_layout(th, m, n)
     K = _stiffness(tooth, th, kappa, layout, n_dof, n, quad, a)
-    factor, scale = _scaled_cholesky(K, n_dof)
+    factor, scale, inverse = _scaled_cholesky(K, n_dof)
     elapsed = time.perf_counter() - t0
     log.debug(
         "shell model: %d unknowns (M=%d, N=%d, %s), %d quadrature points, %.3f s",
@@ -267,6 +267,7 @@ def build_shell_model(
         _layout=layout,
         _factor=factor,
         _scale=scale,
+        _inverse=inverse,
     )
 
 
@@ -400,10 +401,12 @@ def _strains(
     return E
 
 
-def _scaled_cholesky(K: np.ndarray, n_dof: int) -> tuple[tuple, np.ndarray]:
+def _scaled_cholesky(K: np.ndarray, n_dof: int) -> tuple[tuple, np.ndarray, np.ndarray]:
     """Cholesky factor (upper, as :func:`scipy.linalg.cho_factor`) of the Jacobi-scaled
-    stiffness S K S [1] and the scale S = diag(K)^(−1/2); raises :class:`LTCAError` for a
-    zero or non-finite diagonal term or a K that is not positive definite."""
+    stiffness S K S = UᵀU [1], the scale S = diag(K)^(−1/2), and U⁻ᵀ (lower triangular,
+    Fortran order; the half solve's operator, :meth:`ShellModel.half_solve`); raises
+    :class:`LTCAError` for a zero or non-finite diagonal term or a K that is not positive
+    definite."""
     d = np.sqrt(np.diag(K))
     if not np.all(np.isfinite(d)) or np.any(d <= 0.0):
         raise LTCAError("shell stiffness has a zero or non-finite diagonal term")
@@ -417,7 +420,9 @@ def _scaled_cholesky(K: np.ndarray, n_dof: int) -> tuple[tuple, np.ndarray]:
             f"shell stiffness ({n_dof} unknowns) is not positive definite: "
             "reduce the number of modes or check the tooth dimensions"
         ) from exc
-    return factor, scale
+    inverse = linalg.solve_triangular(factor[0], np.eye(n_dof, order="F"), trans="T",
+                                      lower=False, check_finite=False, overwrite_b=True)
+    return factor, scale, np.asfortranarray(np.tril(inverse))
 
 
 # ---------------------------------------------------------------------------------------
@@ -722,7 +727,7 @@ def compliance_blocks(
     # the segments' mean load vectors (n_dof, N): Gauss sums over their G points
     phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs, group_weights=w)
     # C = Φᵀ K⁻¹ Φ = Yᵀ Y with Y = U⁻ᵀ S Φ (K's scaled Cholesky factor): one triangular
-    # solve for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
+    # product for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
     y = model.half_solve(phi)
     out = []
     for idx in [slice(None)] if blocks is None else blocks:
