@@ -104,17 +104,18 @@ MESH_INTERFACE_COLUMNS = (
 def effective_mesh(force: np.ndarray, point: np.ndarray, normal: np.ndarray,
                    moment_arm: np.ndarray, gear_axis: Sequence[float],
                    gear_origin: Sequence[float]) -> dict[str, np.ndarray | float]:
-    """The effective mesh point, line of action and force of one roll's segment forces.
+    """The effective mesh point, line of action and force of segment forces, per roll.
 
     Parameters
     ----------
-    force : ndarray (N,) — [N]
-        Segment forces F_i (≥ 0; NaN or 0 where unloaded).
-    point : ndarray (N, 3) — [mm]
+    force : ndarray (..., N) — [N]
+        Segment forces F_i (≥ 0; NaN or 0 where unloaded); leading dimensions (e.g.
+        torque, roll) are force systems reduced each on its own.
+    point : ndarray (..., N, 3) — [mm]
         Segment contact points r_i, pair frame.
-    normal : ndarray (N, 3) — [1]
+    normal : ndarray (..., N, 3) — [1]
         Unit contact normals n_i (out of the pinion).
-    moment_arm : ndarray (N,) — [mm]
+    moment_arm : ndarray (..., N) — [mm]
         Moment arms R_i about the gear axis of the contact problem (Σ F_i R_i = T_g).
     gear_axis, gear_origin : sequence of 3 float — [1], [mm]
         The gear axis a_g (unit) and a point o_g on it.
@@ -122,9 +123,10 @@ def effective_mesh(force: np.ndarray, point: np.ndarray, normal: np.ndarray,
     Returns
     -------
     dict
-        ``mesh_point`` (3,) [mm], ``line_of_action`` (3,) [1], ``load_centre`` (3,) [mm],
-        ``mesh_force`` [N], ``gear_torque`` Σ F_i R_i [N·mm], ``gear_rotation_radius``
-        λ_g [mm] (W λ_g = Σ F_i R_i); NaN where no segment is loaded.
+        ``mesh_point`` (..., 3) [mm], ``line_of_action`` (..., 3) [1], ``load_centre``
+        (..., 3) [mm], ``mesh_force`` (...) [N], ``gear_torque`` Σ F_i R_i (...) [N·mm],
+        ``gear_rotation_radius`` λ_g (...) [mm] (W λ_g = Σ F_i R_i); NaN where no segment
+        is loaded; floats where the forces are one system (N,).
 
     Raises
     ------
@@ -140,33 +142,35 @@ def effective_mesh(force: np.ndarray, point: np.ndarray, normal: np.ndarray,
     r = np.nan_to_num(np.asarray(point, float))
     n = np.nan_to_num(np.asarray(normal, float))
     R = np.nan_to_num(np.asarray(moment_arm, float))
-    if F.ndim != 1 or r.shape != (F.size, 3) or n.shape != (F.size, 3) or R.shape != F.shape:
-        raise InputError(f"force, point, normal, moment_arm: shapes (N,), (N, 3), (N, 3), "
-                         f"(N,) expected, got {F.shape}, {r.shape}, {n.shape}, {R.shape}")
+    if F.ndim < 1 or r.shape != (*F.shape, 3) or n.shape != (*F.shape, 3) or R.shape != F.shape:
+        raise InputError(f"force, point, normal, moment_arm: shapes (..., N), (..., N, 3), "
+                         f"(..., N, 3), (..., N) expected, got {F.shape}, {r.shape}, "
+                         f"{n.shape}, {R.shape}")
     a = np.asarray(gear_axis, float)
     o = np.asarray(gear_origin, float)
     F = np.where(F > 0, F, 0.0)
-    total = float(F.sum())
-    nan3 = np.full(3, np.nan)
-    if total <= 0:
-        return {"mesh_point": nan3, "line_of_action": nan3, "load_centre": nan3,
-                "mesh_force": math.nan, "gear_torque": math.nan,
-                "gear_rotation_radius": math.nan}
-    resultant = F @ n
-    W = float(np.linalg.norm(resultant))
-    lo = resultant / W
-    centre = F @ r / total
-    torque = float(F @ R)
-    across = np.cross(resultant, a)
-    reach = float(np.linalg.norm(across))
-    if reach <= 1e-12 * W:
-        raise InputError("force: the resultant of the contact forces is parallel to the gear "
-                         "axis; it carries no torque")
-    shift = (torque - float(np.cross(centre - o, resultant) @ a)) / reach
-    p = centre + shift * across / reach
-    return {"mesh_point": p, "line_of_action": lo, "load_centre": centre, "mesh_force": W,
-            "gear_torque": torque,
-            "gear_rotation_radius": float(np.cross(p - o, lo) @ a)}
+    total = F.sum(axis=-1)
+    loaded = total > 0
+    resultant = np.einsum("...i,...ij->...j", F, n)
+    W = np.linalg.norm(resultant, axis=-1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        lo = resultant / W[..., None]
+        centre = np.einsum("...i,...ij->...j", F, r) / total[..., None]
+        torque = np.einsum("...i,...i->...", F, R)
+        across = np.cross(resultant, a)
+        reach = np.linalg.norm(across, axis=-1)
+        if np.any(loaded & (reach <= 1e-12 * W)):
+            raise InputError("force: the resultant of the contact forces is parallel to the "
+                             "gear axis; it carries no torque")
+        shift = (torque - np.cross(centre - o, resultant) @ a) / reach
+        p = centre + (shift / reach)[..., None] * across
+        radius = np.cross(p - o, lo) @ a
+    out = {"mesh_point": p, "line_of_action": lo, "load_centre": centre, "mesh_force": W,
+           "gear_torque": torque, "gear_rotation_radius": radius}
+    for k, v in out.items():
+        v = np.where(loaded[..., None] if v.ndim > loaded.ndim else loaded, v, np.nan)
+        out[k] = float(v) if v.ndim == 0 else v
+    return out
 
 
 def condensed_stiffness(problem: ContactProblem, solution: ContactSolution) -> float:
@@ -279,18 +283,14 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     points = ltca["contact_point"].values
     normals = ltca["contact_normal"].values
     arms = ltca["moment_arm"].values
-    keys3 = ("mesh_point", "line_of_action", "load_centre")
-    out3 = {k: np.full((NT, J, 3), np.nan) for k in keys3}
-    out1 = {k: np.full((NT, J), np.nan) for k in ("mesh_force", "gear_rotation_radius",
-                                                  "gear_torque")}
-    for it in range(NT):
-        for j in range(J):
-            e = effective_mesh(force[it, j].ravel(), points[j].reshape(-1, 3),
-                               normals[j].reshape(-1, 3), arms[j].ravel(), ag, og)
-            for k in keys3:
-                out3[k][it, j] = e[k]
-            for k in out1:
-                out1[k][it, j] = e[k]
+    # every (torque, roll) reduced at once: a roll's segments flattened, its points,
+    # normals and arms the same at every torque
+    pts, nrm = points.reshape(J, -1, 3), normals.reshape(J, -1, 3)
+    e = effective_mesh(force.reshape(NT, J, -1), np.broadcast_to(pts, (NT, *pts.shape)),
+                       np.broadcast_to(nrm, (NT, *nrm.shape)),
+                       np.broadcast_to(arms.reshape(J, -1), (NT, J, pts.shape[1])), ag, og)
+    out3 = {k: e[k] for k in ("mesh_point", "line_of_action", "load_centre")}
+    out1 = {k: e[k] for k in ("mesh_force", "gear_rotation_radius", "gear_torque")}
     lam_g = out1["gear_rotation_radius"]
     lam_p = np.einsum("trx,x->tr", np.cross(out3["mesh_point"] - op, out3["line_of_action"]),
                       ap)
