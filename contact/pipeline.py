@@ -25,7 +25,7 @@ from contact import catalogue
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.ltca.summary import edge_load_share
 from contact.utca import unloaded_tca
-from contact.utca.conjugate_map import gear_nodes
+from contact.utca.conjugate_map import flank_nodes
 from contact.utca.easeoff import ease_off
 from friction.operating import OperatingConditions
 from geometry import __version__
@@ -157,9 +157,9 @@ def operating_conditions(case: Case, **override) -> OperatingConditions | None:
 
 def geometry_datasets(case: Case) -> dict[tuple[str, str], xr.Dataset]:
     """The four flanks of a case as the ``/geometry`` group's Datasets, keyed by (member,
-    flank): :func:`geometry.machine.flank.geometry_datasets` on its default grid, the gear's
-    flanks taken from the per-process memo the ease-off reads
-    (:func:`contact.utca.conjugate_map.gear_nodes`).
+    flank): :func:`geometry.machine.flank.geometry_datasets` on its default grid, the
+    flanks taken from the per-process memo of the teeth
+    (:func:`contact.utca.conjugate_map.flank_nodes`), which the ease-off reads too.
 
     Parameters
     ----------
@@ -169,9 +169,10 @@ def geometry_datasets(case: Case) -> dict[tuple[str, str], xr.Dataset]:
     -------
     dict
         ``{("pinion", "concave"): Dataset, …}``, as
-        :func:`geometry.machine.flank.geometry_datasets` (the same arrays: the gear flank is
-        the same :func:`geometry.machine.flank.flank_surface` of the same grid, solved once
-        per analysis instead of twice — once here, once by the ease-off; issue 32).
+        :func:`geometry.machine.flank.geometry_datasets` (the same arrays: each flank is
+        the same :func:`geometry.machine.flank.flank_surface` of the same grid; the gear's
+        is solved once per analysis instead of twice — once here, once by the ease-off —
+        and all four once per process for the analyses of the same teeth; issue 32).
 
     Raises
     ------
@@ -181,8 +182,8 @@ def geometry_datasets(case: Case) -> dict[tuple[str, str], xr.Dataset]:
     out = {}
     for m in ("pinion", "gear"):
         for f in ("concave", "convex"):
-            surface = gear_nodes(case, f, dict(DEFAULT_GRID)) if m == "gear" else None
-            out[m, f] = flank_dataset(case, m, f, surface=surface)
+            out[m, f] = flank_dataset(case, m, f, surface=flank_nodes(case, m, f,
+                                                                      dict(DEFAULT_GRID)))
     return out
 
 

@@ -81,12 +81,13 @@ def test_local_cluster_workers_start_without_malloc_trim():
     assert dict(dask.config.get(key)) == before
 
 
-def test_geometry_group_takes_the_gear_flanks_of_the_memo_and_changes_nothing(case):
-    """The pipeline's /geometry group (contact.pipeline.geometry_datasets) takes the gear
-    flanks from the memo the ease-off reads, so an analysis solves them once: its datasets
-    equal, bit for bit, those of geometry.machine.flank.geometry_datasets (solved afresh),
-    and the ease-off's gear nodes are then a memo hit. Cheap: eight flanks of 41 × 21
-    nodes (about 0.1 s each) and one ease-off."""
+def test_geometry_group_takes_the_flanks_of_the_memo_and_changes_nothing(case):
+    """The pipeline's /geometry group (contact.pipeline.geometry_datasets) takes the four
+    flanks from the per-process memo the ease-off reads, so an analysis solves the gear's
+    once and a second analysis of the same teeth none: its datasets equal, bit for bit,
+    those of geometry.machine.flank.geometry_datasets (solved afresh), and the ease-off's
+    gear nodes are then a memo hit. Cheap: eight flanks of 41 × 21 nodes (about 0.1 s
+    each) and one ease-off."""
     import xarray as xr
 
     from contact.pipeline import geometry_datasets
@@ -98,6 +99,10 @@ def test_geometry_group_takes_the_gear_flanks_of_the_memo_and_changes_nothing(ca
     assert ours.keys() == fresh.keys()
     for key in fresh:
         xr.testing.assert_identical(ours[key], fresh[key])
-    assert memo_info()["gear_nodes"].misses == 2  # both gear flanks, once each
+    assert memo_info()["flank_nodes"].misses == 4  # the four flanks, once each
     ease_off(case)
-    assert memo_info()["gear_nodes"].hits == 1
+    assert memo_info()["flank_nodes"].hits == 1
+    again = geometry_datasets(case)
+    assert memo_info()["flank_nodes"].misses == 4
+    for key in fresh:
+        xr.testing.assert_identical(again[key], fresh[key])

@@ -15,9 +15,10 @@ Public names
 ------------
 fill_missing       fill the NaN nodes of a grid from the computed ones (linear continuation)
 map_gear_nodes     every gear node's conjugate pinion point (used by :func:`ease_off`)
-gear_nodes         the real gear flank on the ease-off's grid (memoised per process)
+flank_nodes        a real flank on a projection-plane grid (memoised per process)
+gear_nodes         the real gear flank on the ease-off's grid (``flank_nodes`` of the gear)
 memo_info, clear_memos
-                   the per-process memos of the forward map's pinion points and the gear
+                   the per-process memos of the forward map's pinion points and the flanks
 """
 
 from __future__ import annotations
@@ -51,6 +52,7 @@ if TYPE_CHECKING:
 __all__ = [
     "clear_memos",
     "fill_missing",
+    "flank_nodes",
     "gear_nodes",
     "memo_info",
 ]
@@ -266,26 +268,28 @@ def _memo_forward_points(teeth: TeethKey, flank: str) -> tuple[np.ndarray, ...]:
     return out
 
 
-@functools.lru_cache(maxsize=_MEMO_SIZE)
-def _memo_gear_nodes(teeth: TeethKey, flank: str, grid: tuple) -> FlankSurface:
-    """The real gear flank on the ease-off's grid (``grid``: its options as sorted (key,
-    value) pairs) of the case of ``teeth`` (:meth:`~geometry.case.Case.teeth_key`;
-    read-only arrays)."""
-    gs = flank_surface(teeth.case, "gear", flank, **dict(grid))
-    for a in (*gs, *gs.grid):
+@functools.lru_cache(maxsize=4 * _MEMO_SIZE)  # four flanks per case
+def _memo_flank_nodes(teeth: TeethKey, member: str, flank: str, grid: tuple) -> FlankSurface:
+    """The real flank of ``member`` on a projection-plane grid (``grid``: its options as
+    sorted (key, value) pairs) of the case of ``teeth``
+    (:meth:`~geometry.case.Case.teeth_key`; read-only arrays)."""
+    fs = flank_surface(teeth.case, member, flank, **dict(grid))
+    for a in (*fs, *fs.grid):
         if isinstance(a, np.ndarray):
             a.flags.writeable = False
-    return gs
+    return fs
 
 
-def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
-    """The real gear flank on the ease-off's grid, memoised per process.
+def flank_nodes(case: Case, member: str, flank: str, grid: dict) -> FlankSurface:
+    """A real flank on a projection-plane grid, memoised per process.
 
     Parameters
     ----------
     case : geometry.case.Case
+    member : str
+        ``"pinion"`` or ``"gear"``.
     flank : str
-        The gear flank (``"concave"`` or ``"convex"``).
+        ``"concave"`` or ``"convex"``.
     grid : dict
         ``nu``, ``nv``, ``u_limits``, ``v_limits`` of
         :func:`geometry.machine.flank.flank_surface`.
@@ -293,9 +297,10 @@ def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
     Returns
     -------
     geometry.machine.flank.FlankSurface
-        :func:`geometry.machine.flank.flank_surface` of the gear (arrays read-only): the
-        gear does not depend on the misalignment, so a misalignment study solves its 861
-        nodes once per process (keyed as the tooth models are, by
+        :func:`geometry.machine.flank.flank_surface` of the flank (arrays read-only): a
+        flank does not depend on the misalignment, so the analyses of a process that share
+        the teeth (a misalignment or torque series, a study with ``/geometry``) solve its
+        861 nodes once (keyed as the tooth models are, by
         :meth:`~geometry.case.Case.teeth_key`).
 
     Raises
@@ -305,22 +310,33 @@ def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
     """
     key = tuple(sorted((k, tuple(v) if isinstance(v, list | tuple) else v)
                        for k, v in grid.items()))
-    return _memo_gear_nodes(case.teeth_key(), flank, key)
+    return _memo_flank_nodes(case.teeth_key(), member, flank, key)
+
+
+def gear_nodes(case: Case, flank: str, grid: dict) -> FlankSurface:
+    """The real gear flank on the ease-off's grid, memoised per process
+    (:func:`flank_nodes` of the gear): the ease-off and the ``/geometry`` group of an
+    analysis share it, and a misalignment study solves it once per process.
+
+    Parameters, returns and errors as :func:`flank_nodes`.
+    """
+    return flank_nodes(case, "gear", flank, grid)
 
 
 def memo_info() -> dict[str, tuple]:
     """Hits, misses, size and capacity (``functools`` cache info) of this process's memos
-    of what an ease-off needs of the teeth alone: ``"forward_points"`` (the pinion points of
-    the forward map) and ``"gear_nodes"`` (the real gear flank on the grid); a
-    misalignment sweep solves each once per process."""
+    of what an analysis needs of the teeth alone: ``"forward_points"`` (the pinion points
+    of the forward map) and ``"flank_nodes"`` (real flanks on a grid: the ease-off's gear
+    flank, the ``/geometry`` group's four); a misalignment sweep solves each once per
+    process."""
     return {"forward_points": _memo_forward_points.cache_info(),
-            "gear_nodes": _memo_gear_nodes.cache_info()}
+            "flank_nodes": _memo_flank_nodes.cache_info()}
 
 
 def clear_memos() -> None:
-    """Forget the memoised forward-map points and gear nodes (frees memory)."""
+    """Forget the memoised forward-map points and flank nodes (frees memory)."""
     _memo_forward_points.cache_clear()
-    _memo_gear_nodes.cache_clear()
+    _memo_flank_nodes.cache_clear()
 
 
 def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:
