@@ -13,20 +13,7 @@ read_duty_cycle, example_duty_cycle, DutyCycle, DeflectionTable  its inputs
 StudyRun     how a study runs: LTCA options, flank, efficiency conditions, output, Dask
 """
 
-from contact.study.duty_cycle import run_duty_cycle
-from contact.study.duty_cycle_inputs import (
-    DeflectionTable,
-    DutyCycle,
-    example_duty_cycle,
-    read_duty_cycle,
-)
-from contact.study.engine import SYNCHRONOUS, analyse_point, open_client, run_points
-from contact.study.grid import DEFAULT_TORQUE, study_inputs, sweep
-from contact.study.monte_carlo import draw_points, parse_distribution, sample, sensitivity
-from contact.study.points import POINT_INPUTS, StudyInputs
-from contact.study.run import StudyRun
-from contact.study.summary import STATUS_MEANINGS, SUMMARY_VARIABLES, point_summary
-from contact.study.vh_check import vh_check
+from geometry.core.lazy import lazy_exports
 
 __all__ = [
     "DEFAULT_TORQUE",
@@ -53,3 +40,25 @@ __all__ = [
     "sweep",
     "vh_check",
 ]
+
+#: the public names and their modules, imported when first used (PEP 562): a Dask worker
+#: unpickling the engine's task imports :mod:`contact.study.engine` and what an analysis
+#: needs, not the Monte Carlo draws (scipy.stats), the duty cycle or the V-H check
+#: (~0.35 s of CPU per worker process)
+_LAZY = {
+    "run_duty_cycle": "contact.study.duty_cycle",
+    **dict.fromkeys(("DeflectionTable", "DutyCycle", "example_duty_cycle",
+                     "read_duty_cycle"), "contact.study.duty_cycle_inputs"),
+    **dict.fromkeys(("SYNCHRONOUS", "analyse_point", "open_client", "run_points"),
+                    "contact.study.engine"),
+    **dict.fromkeys(("DEFAULT_TORQUE", "study_inputs", "sweep"), "contact.study.grid"),
+    **dict.fromkeys(("draw_points", "parse_distribution", "sample", "sensitivity"),
+                    "contact.study.monte_carlo"),
+    **dict.fromkeys(("POINT_INPUTS", "StudyInputs"), "contact.study.points"),
+    "StudyRun": "contact.study.run",
+    **dict.fromkeys(("STATUS_MEANINGS", "SUMMARY_VARIABLES", "point_summary"),
+                    "contact.study.summary"),
+    "vh_check": "contact.study.vh_check",
+}
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())
+
