@@ -189,6 +189,19 @@ def test_output_paths_are_refused_before_any_work(argv, message, tmp_path, monke
     def trap(*args, **kwargs):
         raise AssertionError("work started before the output paths were checked")
 
+    # the lazily imported application packages first: a module first imported while the
+    # trap is set would bind it (``from contact.catalogue import resolve_case``) for the
+    # rest of the session, and later tests in this process would hit it
+    import importlib
+    import pkgutil
+
+    import contact.optimize
+    import contact.study
+
+    for pkg in (contact.study, contact.optimize):
+        for info in pkgutil.iter_modules(pkg.__path__, pkg.__name__ + "."):
+            importlib.import_module(info.name)
+
     import contact.catalogue
     import contact.qp.benchmark_problems
     import geometry.case
