@@ -119,3 +119,28 @@ def test_check_conventions_reports_every_problem():
 def test_read_missing_file(tmp_path):
     with pytest.raises(NetCDFError, match="no such"):
         read_netcdf(tmp_path / "nope.nc")
+
+
+def test_writes_in_memory_data_without_a_cluster_wide_lock(tmp_path):
+    """While a distributed Client is dask's default (a study's client), xarray would take a
+    distributed.Lock per variable written — a round trip to the scheduler each (~700 per
+    121-point study). write_netcdf writes in-memory data under the threaded scheduler's
+    lock instead; dask-backed data keep xarray's choice. Checked on an in-process
+    cluster: the lock xarray picks inside and outside the block, and a file written and
+    read back while the client is the default."""
+    distributed = pytest.importorskip("distributed")
+    from xarray.backends.locks import get_write_lock
+
+    from geometry.core.io import _local_write_lock
+
+    ds = _dataset()
+    with distributed.Client(processes=False, n_workers=1, threads_per_worker=1,
+                            dashboard_address=None):
+        assert isinstance(get_write_lock("x"), distributed.Lock)
+        with _local_write_lock(ds):
+            assert not isinstance(get_write_lock("x"), distributed.Lock)
+        with _local_write_lock(ds.chunk()):  # dask arrays: a cluster may compute them
+            assert isinstance(get_write_lock("x"), distributed.Lock)
+        write_netcdf(ds, tmp_path / "a.nc")
+        back = read_netcdf(tmp_path / "a.nc", tree=False)
+    np.testing.assert_array_equal(back["force"].values, ds["force"].values)

@@ -17,12 +17,14 @@ read_netcdf         read a file written by :func:`write_netcdf` fully into memor
 
 from __future__ import annotations
 
+import contextlib
 import datetime as _dt
 import hashlib
 import json
 import logging
 import os
-from collections.abc import Mapping
+import sys
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -396,12 +398,35 @@ def write_netcdf(
     try:
         # a temporary file renamed onto path once complete; Ctrl-C/SIGTERM held until the
         # HDF5 library returns, then the old file kept (geometry.core.atomic_files)
-        with atomic_path(path) as tmp:
+        with atomic_path(path) as tmp, _local_write_lock(out):
             out.to_netcdf(tmp, engine=_ENGINE, encoding=encoding)
     except Exception as exc:
         raise NetCDFError(f"could not write {str(path)!r}: {exc}") from exc
     log.info("wrote %s", path)
     return path
+
+
+@contextlib.contextmanager
+def _local_write_lock(obj: xr.Dataset | xr.DataTree) -> Iterator[None]:
+    """The write of in-memory data under the HDF5 library's thread lock only.
+
+    xarray takes a write lock for the dask scheduler in use, and while a
+    ``distributed.Client`` is the default (a study's client) that is a cluster-wide
+    ``distributed.Lock``: a round trip to the scheduler for every variable written
+    (~700 for a 121-point study's chunk files; ~1 s of the client's CPU, which the two
+    workers of a 2-core machine then lack). Data held in memory are written by this
+    thread alone, so within the block dask's scheduler is the threaded one (xarray's
+    lock is then its per-file thread lock, with the netCDF library's own). Data that are
+    dask arrays, which a cluster may compute, keep xarray's choice.
+    """
+    dask = sys.modules.get("dask")
+    nodes = obj.subtree if isinstance(obj, xr.DataTree) else [obj]
+    lazy = any(v.chunks is not None for node in nodes for v in node.variables.values())
+    if dask is None or lazy:
+        yield
+        return
+    with dask.config.set(scheduler="threads"):
+        yield
 
 
 def read_netcdf(path: str | os.PathLike[str], *, tree: bool | None = None):
