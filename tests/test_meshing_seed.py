@@ -221,3 +221,26 @@ def test_smallest_is_the_full_sorts_head():
     cases.append(tie)
     for values in cases:
         np.testing.assert_array_equal(meshing._smallest(values, 12), np.argsort(values)[:12])
+
+
+@pytest.mark.parametrize("case_name", ["kolivand2009_fm_11x41_reference",
+                                       "kolivand2009_fh_12x41_reference"])
+def test_nearest_candidates_are_the_full_sorts_head(case_name):
+    """The seed passes take their 12 candidates from a k-d tree of the candidate grid:
+    the same indices, in the same order, as ``np.argsort`` of the objective over the whole
+    grid, on every section and q range, for targets on the flank, beyond it and far off
+    (then the tree's neighbours may not hold the head and the grid is sorted)."""
+    ctx, blank, depth = _context(case_name, "pinion", "convex")
+    rng = np.random.default_rng(3)
+    targets, _ = _section_targets(ctx, blank, depth)
+    z = np.r_[[t[0] for t in targets], rng.uniform(-40, 40, 60)]
+    p = np.r_[[t[1] for t in targets], rng.uniform(5, 80, 60)]
+    wides = (False, True) if ctx.generate else (False,)
+    for k in range(len(ctx.sections.s_lo)):
+        for wide in wides:
+            g = meshing._candidate_grid(ctx.blade, ctx.settings, ctx.length_scale,
+                                        float(depth), k, wide)
+            for z0, p0 in zip(z, p, strict=True):
+                want = np.argsort(meshing._objective(g, z0, p0))[:12]
+                np.testing.assert_array_equal(
+                    meshing._nearest_candidates(g, z0, p0, 12), want)

@@ -56,7 +56,7 @@ from __future__ import annotations
 
 import functools
 import logging
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
@@ -73,6 +73,9 @@ from geometry.machine.family import (
     family_views,
     meshing_buffer,
 )
+
+if TYPE_CHECKING:
+    from scipy.spatial import cKDTree
 
 __all__ = ["REASONS", "EnvelopeSolution", "solve_envelope"]
 
@@ -332,6 +335,10 @@ class _CandidateGrid(NamedTuple):
     axial: np.ndarray  # [mm] z of the generated point
     radius: np.ndarray  # [mm] ρ of the generated point
     meshing: np.ndarray | None  # [mm] L·f (wide q range in Generate), else None
+    #: the finite points in the objective's space (z, ρ[, √0.1 L·f]) for nearest-neighbour
+    #: queries (:func:`_nearest_candidates`), and their rows in the flat arrays
+    tree: cKDTree | None
+    rows: np.ndarray
 
 
 @functools.lru_cache(maxsize=_GRID_MEMO)
@@ -353,9 +360,16 @@ def _candidate_grid(blade: Blade, settings: MachineSettings, length_scale: float
     if ctx.generate and len(q_vals) > 1:
         f, _ = meshing_buffer(buf, ctx.length_scale)
         mesh = ctx.length_scale * f
-    out = _CandidateGrid(sg, tg, qg, r[2].copy(), np.hypot(r[0], r[1]), mesh)
+    axial, radius = r[2].copy(), np.hypot(r[0], r[1])
+    cols = [axial, radius] if mesh is None else [axial, radius, np.sqrt(0.1) * mesh]
+    space = np.stack(cols, -1)
+    rows = np.flatnonzero(np.all(np.isfinite(space), axis=-1))
+    from scipy.spatial import cKDTree  # (here: the geometry layer's import stays light)
+
+    tree = cKDTree(space[rows]) if rows.size > _SEED_QUERY else None
+    out = _CandidateGrid(sg, tg, qg, axial, radius, mesh, tree, rows)
     for a in out:
-        if a is not None:
+        if isinstance(a, np.ndarray):
             a.flags.writeable = False
     return out
 
@@ -365,11 +379,47 @@ def _seed_candidates(ctx: _Context, z0: float, p0: float, depth: float, wide: bo
     """The :data:`_SEED_KEEP` grid points nearest the target (z0, ρ0) (and nearest the
     envelope, ``wide``) on section ``main``: Newton's starts (k, m)."""
     g = _candidate_grid(ctx.blade, ctx.settings, ctx.length_scale, float(depth), main, wide)
-    obj = (g.axial - z0) ** 2 + (g.radius - p0) ** 2
-    if g.meshing is not None:
-        obj = obj + 0.1 * g.meshing ** 2
-    order = _smallest(obj, _SEED_KEEP)
+    order = _nearest_candidates(g, z0, p0, _SEED_KEEP)
     return np.stack([g.s[order], g.theta[order], g.q[order]], -1)[:, : 3 if ctx.generate else 2]
+
+
+#: neighbours a seed pass asks the candidate tree for (of which the objective's k + 1
+#: smallest must lie strictly inside, else the whole grid is sorted)
+_SEED_QUERY = 32
+
+
+def _objective(g: _CandidateGrid, z0: float, p0: float, idx=slice(None)) -> np.ndarray:
+    """The seed search's objective at the grid's points ``idx``: the squared distance of
+    the generated point from the target (z0, ρ0) [mm²] (+ 0.1 (L·f)², near the envelope)."""
+    obj = (g.axial[idx] - z0) ** 2 + (g.radius[idx] - p0) ** 2
+    if g.meshing is not None:
+        obj = obj + 0.1 * g.meshing[idx] ** 2
+    return obj
+
+
+def _nearest_candidates(g: _CandidateGrid, z0: float, p0: float, k: int) -> np.ndarray:
+    """``_smallest(_objective(g, z0, p0), k)`` (the k grid points nearest the target, in
+    order), from the grid's k-d tree instead of the whole grid (13,608 points on a wide
+    pass: 0.19 → ~0.03 ms).
+
+    The objective is a squared Euclidean distance in the tree's space, so the tree's
+    nearest :data:`_SEED_QUERY` points hold the k + 1 smallest values wherever the
+    (k + 1)-th smallest of theirs, computed as the whole grid's are, lies below the
+    squared distance of the farthest one returned by more than round-off (1e-9
+    relative; every point left out is at least that far). Those values then are the
+    grid's own, so where they are distinct their order is the whole sort's; otherwise
+    (a tie, or a tree too small or too close) the whole grid is sorted as before.
+    """
+    if g.tree is not None and g.rows.size > _SEED_QUERY:
+        target = [z0, p0] if g.meshing is None else [z0, p0, 0.0]
+        dist, pos = g.tree.query(target, k=_SEED_QUERY)
+        cand = g.rows[pos]
+        vals = _objective(g, z0, p0, cand)
+        order = np.argsort(vals)
+        head = vals[order[:k + 1]]
+        if head[-1] < (1.0 - 1e-9) * dist[-1] ** 2 and np.all(np.diff(head) > 0):
+            return cand[order[:k]]
+    return _smallest(_objective(g, z0, p0), k)
 
 
 def _smallest(values: np.ndarray, k: int) -> np.ndarray:
