@@ -317,7 +317,7 @@ def _newton(ctx: _Context, x0: np.ndarray, section: np.ndarray, z: np.ndarray, p
 
 #: candidate grids (target-independent part of the seed search) a process keeps: one per
 #: (blade, settings, length scale, depth, section, q range); 8 per flank at most (four
-#: sections, two q ranges), ≤ 0.33 MB each
+#: sections, two q ranges), ≤ 0.33 MB each and ~0.6 MB its k-d tree
 _GRID_MEMO = 32
 
 _SEED_S, _SEED_THETA = 9, 72  # coarse seed grid along the blade and about the cutter axis
