@@ -480,7 +480,9 @@ def trajectory(surf: Surface, u, v0, v1) -> np.ndarray:
     kernels = kernels_module(KERNEL_MODULE)
     if kernels is not None:  # the same scheme point by point, compiled
         v1f = np.ascontiguousarray(np.broadcast_to(np.asarray(v1, dtype=float), shape).ravel())
-        return kernels.trajectory(u, np.ascontiguousarray(v0), v1f,
+        # (writable arrays: a read-only one, e.g. a broadcast view, would compile and load
+        # a second specialisation of the kernel in every process)
+        return kernels.trajectory(u, np.require(v0, requirements=["C", "W"]), v1f,
                                   *kernel_surface(surf, n_pts), *surf.degree,
                                   _TRAJ_STEPS).reshape(shape)
     h = (np.broadcast_to(np.asarray(v1, dtype=float), shape).ravel() - v0) / _TRAJ_STEPS

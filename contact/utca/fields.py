@@ -428,8 +428,11 @@ class EaseOffFields:
             if u.shape != v.shape:
                 u, v = np.broadcast_arrays(u, v)
             ks = self.kernel_splines
-            return self.kernels.measure(ks.margin, self.u, self.v, self.cell_ok, u.ravel(),
-                                        v.ravel()).reshape(u.shape)
+            # (writable arrays: a read-only one would compile and load a second
+            # specialisation of the kernel in every process)
+            uf, vf = (np.require(a.ravel(), requirements=["C", "W"]) for a in (u, v))
+            return self.kernels.measure(ks.margin, self.u, self.v, self.cell_ok, uf,
+                                        vf).reshape(u.shape)
         fin = np.isfinite(v)
         vs = np.where(fin, v, self.v[0])
         # the least of measure_terms, taken in their order (the reduction's own sequence of
