@@ -61,4 +61,3 @@ _LAZY = {
     "vh_check": "contact.study.vh_check",
 }
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())
-

@@ -417,7 +417,10 @@ def _local_write_lock(obj: xr.Dataset | xr.DataTree) -> Iterator[None]:
     workers of a 2-core machine then lack). Data held in memory are written by this
     thread alone, so within the block dask's scheduler is the threaded one (xarray's
     lock is then its per-file thread lock, with the netCDF library's own). Data that are
-    dask arrays, which a cluster may compute, keep xarray's choice.
+    dask arrays, which a cluster may compute, keep xarray's choice. (dask's configuration
+    is the process's, not the thread's: for the write's duration another thread's
+    ``dask.compute`` would also run threaded; the study client computes nothing on dask
+    while it writes its chunks.)
     """
     dask = sys.modules.get("dask")
     nodes = obj.subtree if isinstance(obj, xr.DataTree) else [obj]

@@ -410,7 +410,7 @@ def _nearest_candidates(g: _CandidateGrid, z0: float, p0: float, k: int) -> np.n
     grid's own, so where they are distinct their order is the whole sort's; otherwise
     (a tie, or a tree too small or too close) the whole grid is sorted as before.
     """
-    if g.tree is not None and g.rows.size > _SEED_QUERY:
+    if g.tree is not None:  # (built where the grid has more than _SEED_QUERY points)
         target = [z0, p0] if g.meshing is None else [z0, p0, 0.0]
         dist, pos = g.tree.query(target, k=_SEED_QUERY)
         cand = g.rows[pos]
@@ -451,6 +451,14 @@ def _pick_seed(ctx: _Context, x: np.ndarray, ok: np.ndarray, k: int, s_max: floa
     return int(pick[0])
 
 
+def _reference(ctx: _Context, x: np.ndarray, k: int, z0: float, p0: float):
+    """The continuation's reference (x (m,), J (m, m), section k): a root ``x`` of the
+    target (z0, ρ0) [mm] on blade section k and the Jacobian of the point equations there
+    (the seed search's result, or the seed target's own root from its guess)."""
+    _, jac, _ = _evaluate(ctx, x[None], np.array([k]), np.array([z0]), np.array([p0]))
+    return x, jac[0], k
+
+
 def _seed(ctx: _Context, z0: float, p0: float, depth: float):
     """Coarse search, then Newton, for one target: the start of the continuation.
 
@@ -475,10 +483,7 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float):
         at += size
         row = _pick_seed(ctx, x[sl], ok[sl], k, s_max)
         if row is not None:
-            xs = x[sl][row]
-            _, jac, _ = _evaluate(ctx, xs[None], np.array([k]), np.array([z0]),
-                                  np.array([p0]))
-            return xs, jac[0], k
+            return _reference(ctx, x[sl][row], k, z0, p0)
     raise InputError(
         "machine settings: no envelope solution at the middle of the flank "
         f"(axial position {z0:.4g} mm, radius {p0:.4g} mm): the cutter does not generate "
@@ -769,10 +774,8 @@ def _early_prediction(ctx: _Context, xg, secg, idx, first, seed: int, zf, pf,
     if settled[seed] and secg[seed] == sections.main:
         if np.all(settled & (secg == sections.main)):
             return None  # no prediction needed
-        x_seed, sec_seed = x[seed].copy(), int(secg[seed])
-        _, jac, _ = _evaluate(ctx, x_seed[None], np.array([sec_seed]), zf[seed:seed + 1],
-                              pf[seed:seed + 1])
-        jac_seed = jac[0]
+        x_seed, jac_seed, sec_seed = _reference(ctx, x[seed].copy(), int(secg[seed]),
+                                                zf[seed], pf[seed])
     else:
         try:
             x_seed, jac_seed, sec_seed = _memo_seed(ctx, zf[seed], pf[seed], depth)
@@ -901,10 +904,8 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     elif reason[seed] == 0 and section[seed] == sections.main:
         # the seed target converged from its guess on the profile section: it is the
         # reference, as the seed search's solution would be
-        x_seed, sec_seed = x[seed].copy(), int(section[seed])
-        _, jac, _ = _evaluate(ctx, x_seed[None], np.array([sec_seed]), zf[seed:seed + 1],
-                              pf[seed:seed + 1])
-        jac_seed = jac[0]
+        x_seed, jac_seed, sec_seed = _reference(ctx, x[seed].copy(), int(section[seed]),
+                                                zf[seed], pf[seed])
     else:
         x_seed, jac_seed, sec_seed = _memo_seed(ctx, zf[seed], pf[seed], depth)
     # near a section junction a place can have a root on two sections (one of them cut
