@@ -307,6 +307,12 @@ def flank_nodes(case: Case, member: str, flank: str, grid: dict) -> FlankSurface
     ------
     InputError
         As :func:`geometry.machine.flank.flank_surface`.
+
+    Notes
+    -----
+    Source: seed §2.2 (Eq. 2.7a, 2.8, 2.9–2.13), through
+    :func:`geometry.machine.flank.flank_surface`; the memo changes no number (tested
+    bit for bit against a fresh solve, ``tests/test_study_memos.py``).
     """
     key = tuple(sorted((k, tuple(v) if isinstance(v, list | tuple) else v)
                        for k, v in grid.items()))
