@@ -35,7 +35,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = ["BAND_OFFSETS", "CAVITATION", "CONTACT", "FLUID", "NodeState", "ReynoldsBands",
-           "Squeeze", "assemble", "couette_difference", "reynolds_bands", "reynolds_residual"]
+           "Squeeze", "assemble", "couette_difference", "flow_bands", "reynolds_bands",
+           "reynolds_residual"]
 
 Array = NDArray[np.float64]
 
@@ -160,13 +161,51 @@ def reynolds_bands(state: NodeState, spacing: float, lambda_bar: float,
     ε_(i±½) the mean of the neighbours' ε, C the upwind difference; ε uses max(H, 0) (a
     closed film carries no Poiseuille flow). Source: module docstring.
     """
-    p, h = state.pressure, state.film
+    h = state.film
+    hc = np.maximum(h, 0.0)
+    # q uses the film itself, slightly negative at a penetrating (closed) node: the rows stay
+    # regular there (with max(H, 0) a closed node's column vanishes, measured to stall the
+    # iteration) and the penalty holds the penetration at ~1e-6 of the film
+    return flow_bands(state, hc**3, 3.0 * hc**2, h, np.ones(h.size), spacing, lambda_bar,
+                      squeeze)
+
+
+def flow_bands(state: NodeState, conductance: Array, dconductance: Array, content: Array,
+               dcontent: Array, spacing: float, lambda_bar: float,
+               squeeze: Squeeze | None = None) -> ReynoldsBands:
+    """The discretised Reynolds rows for any gap's conductance and oil content.
+
+    Parameters
+    ----------
+    state : NodeState
+        Pressure P (the oil's), density, viscosity and fill θ at the nodes (its ``film``
+        is not used here).
+    conductance : array (n,) — [1]
+        g of the Poiseuille term ε = ρ̄ g/(η̄ λ̄): H³ for a smooth gap
+        (:func:`reynolds_bands`), φ_x H³ of a rough one (:mod:`friction.ehl.flow_factors`).
+    dconductance : array (n,) — [1]
+        dg/dH.
+    content : array (n,) — [1]
+        The gap's oil per area the surfaces carry (the Couette and squeeze terms act on
+        q = ρ̄θ·content): H for a smooth gap, the mean gap h_T (plus the shear-flow
+        term) for a rough one.
+    dcontent : array (n,) — [1]
+        d content/dH.
+    spacing, lambda_bar, squeeze
+        As :func:`reynolds_bands`.
+
+    Returns
+    -------
+    ReynoldsBands
+        The rows and their bands in P and in H (``dh`` through the conductance and the
+        content), every row multiplied by Δ.
+    """
+    p = state.pressure
     n = p.size
     d2 = spacing * spacing
-    hc = np.maximum(h, 0.0)
-    eps = state.density * hc**3 / (state.viscosity * lambda_bar)
+    eps = state.density * conductance / (state.viscosity * lambda_bar)
     deps_p = eps * (state.ddensity / state.density - state.dln_viscosity)
-    deps_h = 3.0 * state.density * hc**2 / (state.viscosity * lambda_bar)
+    deps_h = state.density * dconductance / (state.viscosity * lambda_bar)
     e_half = 0.5 * (eps[1:] + eps[:-1])                      # (n − 1,) at i + ½
     dpres = np.diff(p)
     flux = e_half * dpres
@@ -174,10 +213,7 @@ def reynolds_bands(state: NodeState, spacing: float, lambda_bar: float,
     res[1:-1] = (flux[1:] - flux[:-1]) / d2
     fill = np.ones(n) if state.fill is None else state.fill
     rho_f = state.density * fill                            # ρ̄θ: the oil's mass per gap
-    # q uses the film itself, slightly negative at a penetrating (closed) node: the rows stay
-    # regular there (with max(H, 0) a closed node's column vanishes, measured to stall the
-    # iteration) and the penalty holds the penetration at ~1e-6 of the film
-    gap = h
+    gap = content
     q = rho_f * gap
     cw = _couette_weights(n, spacing)
     couette = np.zeros(n)
@@ -208,9 +244,9 @@ def reynolds_bands(state: NodeState, spacing: float, lambda_bar: float,
     if defect is not None:
         a[2, i] -= state.ddensity[i] * fill[i] * defect[i]
         f[2, i] -= state.density[i] * defect[i]
-    # Couette and squeeze terms through q_k = ρ̄_k θ_k H_k (k = i − 2, i − 1, i)
+    # Couette and squeeze terms through q_k = ρ̄_k θ_k c_k (k = i − 2, i − 1, i)
     dq_p = state.ddensity * fill * gap
-    dq_h = rho_f
+    dq_h = rho_f * dcontent
     dq_f = state.density * gap
     for k in (0, 1, 2):
         rows = i[i + k - 2 >= 0]
