@@ -161,6 +161,27 @@ class Material:
         """Yield stress in shear k = Y/√3 (von Mises) — [MPa]."""
         return self.yield_strength / math.sqrt(3.0)
 
+    @property
+    def thermal_effusivity(self) -> float:
+        """Thermal effusivity B = √(kρc) of the surface layer — [W s^0.5/(m2 K)].
+
+        From the ``thermal`` group (conductivity, density, specific heat): the
+        coefficient of a moving heat source's flash temperature (Jaeger 1942).
+
+        Raises
+        ------
+        ModelUnavailableError
+            The material has no ``thermal`` group.
+        """
+        group = self.groups.get("thermal")
+        if group is None:
+            raise ModelUnavailableError(f"material {self.key!r}: no thermal properties "
+                                        f"(a [{self.key}.thermal] table)")
+        values = []
+        for name in ("thermal_conductivity", "density", "specific_heat"):
+            values.append(_number(f"{self.key}.thermal.{name}", group.get(name), low=0.0))
+        return math.sqrt(values[0] * values[1] * values[2])
+
 
 def _number(where: str, value: Any, low: float | None = None,
             high: float | None = None) -> float:
