@@ -55,6 +55,9 @@ __all__ = [
     "ehl_groups",
     "lambda_ratio",
     "minimum_film_thickness",
+    "moes_central",
+    "moes_film",
+    "moes_load_parameter",
     "pan_hamrock",
     "thermal_loading",
     "thermal_reduction_factor",
@@ -345,6 +348,84 @@ def dowson_toyoda_central(
         radius,
         e_prime,
     )
+
+
+def moes_central(
+    entraining_velocity: ArrayLike,
+    viscosity: ArrayLike,
+    pressure_viscosity: ArrayLike,
+    load_per_length: ArrayLike,
+    radius: ArrayLike,
+    e_prime: ArrayLike,
+) -> NDArray[np.float64] | float:
+    """Line-contact *central* film of Moes, over the whole range of M and L.
+
+    Parameters
+    ----------
+    entraining_velocity, viscosity, pressure_viscosity, load_per_length, radius, e_prime
+        As :func:`dowson_higginson` ([m/s], [Pa s], [1/GPa], [N/mm], [mm], [MPa]).
+
+    Returns
+    -------
+    float or array — [µm]
+        Isothermal central film thickness h_c.
+
+    Raises
+    ------
+    InputError
+        An input outside its range.
+
+    Notes
+    -----
+    Moes's dimensionless groups M = W(2U)^(−1/2), L = G(2U)^(1/4), H = (h_c/R)(2U)^(−1/2)
+    (W, U, G of :func:`ehl_groups`, E′ = 2E*), and his interpolation between the four
+    asymptotes (rigid–isoviscous, elastic–isoviscous, rigid–piezoviscous,
+    elastic–piezoviscous):
+
+        H = [(H_RI^{7/3} + H_EI^{7/3})^{3s/7} + (H_RP^{−7/2} + H_EP^{−7/2})^{−2s/7}]^{1/s},
+        s = 3/2 (1 + e^{−1.2 H_EI/H_RI}),
+        H_RI = 3 M^{−1}, H_EI = 2.621 M^{−1/5}, H_RP = 1.287 L^{2/3},
+        H_EP = 1.311 M^{−1/8} L^{3/4}.
+
+    Source: Moes, H., "Optimum similarity analysis with applications to
+    elastohydrodynamic lubrication", Wear 159 (1992) 57–66; as quoted by Venner, C. H.,
+    Lubrecht, A. A., *Multilevel Methods in Lubrication*, Elsevier (2000), §2 (line
+    contact). Checked against the toolkit's numerical smooth film (tests/test_ehl_stochastic.py).
+    """
+    g = ehl_groups(
+        entraining_velocity, viscosity, pressure_viscosity, load_per_length, radius, e_prime
+    )
+    r = np.broadcast_to(np.asarray(radius, dtype=float), g.U.shape)
+    return scalar_or_array(moes_film(g.W, g.U, g.G) * r * 1e3)
+
+
+def moes_film(load: ArrayLike, speed: ArrayLike, materials: ArrayLike) -> Array:
+    """h_c/R of :func:`moes_central` from the groups W, U, G themselves [1] (no checks:
+    the load-sharing model scales U and G beyond the ranges a physical input may take)."""
+    two_u = 2.0 * np.asarray(speed, dtype=float)
+    m = np.asarray(load, dtype=float) / np.sqrt(two_u)
+    big_l = np.asarray(materials, dtype=float) * two_u**0.25
+    h_ri = 3.0 / m
+    h_ei = 2.621 * m ** (-0.2)
+    h_rp = 1.287 * big_l ** (2.0 / 3.0)
+    h_ep = 1.311 * m ** (-0.125) * big_l**0.75
+    s = 1.5 * (1.0 + np.exp(-1.2 * h_ei / h_ri))
+    iso = (h_ri ** (7.0 / 3.0) + h_ei ** (7.0 / 3.0)) ** (3.0 * s / 7.0)
+    piezo = (h_rp**-3.5 + h_ep**-3.5) ** (-2.0 * s / 7.0)
+    return (iso + piezo) ** (1.0 / s) * np.sqrt(two_u)
+
+
+def moes_load_parameter(
+    entraining_velocity: ArrayLike,
+    viscosity: ArrayLike,
+    load_per_length: ArrayLike,
+    radius: ArrayLike,
+    e_prime: ArrayLike,
+) -> NDArray[np.float64] | float:
+    """Moes's load parameter M = W(2U)^(−1/2) of a line contact [1] (inputs as
+    :func:`ehl_groups`; α does not enter). Source: Moes (1992)."""
+    g = ehl_groups(entraining_velocity, viscosity, 10.0, load_per_length, radius, e_prime)
+    return scalar_or_array(g.W / np.sqrt(2.0 * g.U))
 
 
 #: Exponents (p_U, p_G, p_W) of :func:`dowson_toyoda_central` (h_c ∝ U^p_U G^p_G W^p_W).
