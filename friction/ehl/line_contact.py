@@ -20,6 +20,7 @@ the Jacobian, and an active set of contact (H = 0) and cavitation (P = 0) nodes.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 from dataclasses import dataclass, field
@@ -85,7 +86,13 @@ class LineContactCondition:
     roughness_1, roughness_2 : array (n,) or None — [µm]
         Heights of surface 1 and 2 on the solver's grid (positive towards the other
         surface); ``None`` is smooth.
-    viscosity_model : {"roelands", "barus"}
+    viscosity_model : {"barus", "roelands"}
+        Viscosity–pressure law of the film and its shear (:mod:`friction.ehl.rheology`).
+        Barus (default) with the oil table's α: the one law of the solver, the friction
+        study and the μ model built on it. Roelands with its index Z matched to the same
+        α gives 2 Pa s at 1 GPa for 75W90 at 90 °C, two orders of magnitude below gear
+        oils' measured high-pressure viscosity, and a film traction of 0.005–0.01, below
+        every published gear-oil value (docs/ehl.md); it stays selectable.
     eyring_stress : float or None — [MPa]
         τ₀; default the lubricant's ``eyring_stress``.
     limiting_shear_coefficient : float or None — [1]
@@ -103,7 +110,7 @@ class LineContactCondition:
     e_prime: float = STEEL_E_PRIME
     roughness_1: ArrayLike | None = None
     roughness_2: ArrayLike | None = None
-    viscosity_model: str = "roelands"
+    viscosity_model: str = "barus"
     eyring_stress: float | None = None
     limiting_shear_coefficient: float | None = None
     boundary_friction: float | None = None
@@ -246,6 +253,20 @@ def _roughness(name: str, value: ArrayLike | None, n: int) -> Array:
     return arr
 
 
+def _checked(cond: LineContactCondition) -> tuple[float, float, float, float, str, Lubricant]:
+    """The condition's scalars checked (named): w′, R, u_e, E′, viscosity model, oil."""
+    w = real("load_per_length", cond.load_per_length, unit="N/mm", low=0.0, low_open=True)
+    r = real("radius", cond.radius, unit="mm", low=0.0, low_open=True)
+    ue = real("entraining_velocity", cond.entraining_velocity, unit="m/s", low=0.0,
+              low_open=True, high=100.0)
+    real("slide_to_roll", cond.slide_to_roll, unit="1", low=-2.0, high=2.0)
+    ep = real("e_prime", cond.e_prime, unit="MPa", low=1e3, high=1e7)
+    model = one_of("viscosity_model", cond.viscosity_model, VISCOSITY_PRESSURE_MODELS)
+    oil = lubricant_of(cond.lubricant)
+    viscosity(oil, cond.temperature)                        # the temperature in the oil's range
+    return w, r, ue, ep, model, oil
+
+
 def contact_setup(cond: LineContactCondition, grid: Grid) -> ContactSetup:
     """A condition's dimensionless problem on a grid: Hertz scales, oil, kernel, roughness.
 
@@ -264,14 +285,7 @@ def contact_setup(cond: LineContactCondition, grid: Grid) -> ContactSetup:
         An input out of range (named).
     """
     grid.check()
-    w = real("load_per_length", cond.load_per_length, unit="N/mm", low=0.0, low_open=True)
-    r = real("radius", cond.radius, unit="mm", low=0.0, low_open=True)
-    ue = real("entraining_velocity", cond.entraining_velocity, unit="m/s", low=0.0,
-              low_open=True, high=100.0)
-    real("slide_to_roll", cond.slide_to_roll, unit="1", low=-2.0, high=2.0)
-    ep = real("e_prime", cond.e_prime, unit="MPa", low=1e3, high=1e7)
-    model = one_of("viscosity_model", cond.viscosity_model, VISCOSITY_PRESSURE_MODELS)
-    oil = lubricant_of(cond.lubricant)
+    w, r, ue, ep, model, oil = _checked(cond)
     eta0 = float(viscosity(oil, cond.temperature))
     alpha = float(pressure_viscosity_coefficient(oil, cond.temperature)) * 1e-9
     b_mm, ph_mpa = hertz_line_contact(w, r, ep)
@@ -485,7 +499,90 @@ def smooth_lambda_ratio(s: ContactSetup, cond: LineContactCondition) -> float:
 CLOSED_FILM = 1e-12
 
 
-def _solve(cond: LineContactCondition, grid: Grid):
+#: (Moes M, nodes): a smooth film's grid takes the nodes of the first row whose M bound
+#: exceeds the condition's (measured against 4096 nodes, central film within 3 %: at
+#: M ≈ 200, 1024 nodes were 3 % thin; at M ≈ 770, 27 % thin and 4096 needed)
+SMOOTH_NODES = ((30.0, 512), (100.0, 1024), (300.0, 2048), (math.inf, 4096))
+
+#: the most nodes a smooth film is refined to while its solution shows a closed film (the
+#: steady solver's dense Newton matrix: 4096 nodes take ~5 s per iteration, 134 MB)
+SMOOTH_NODES_MAX = 4096
+
+#: [µm] below this central film (Moes) a smooth contact is dry: a film of under a
+#: nanometre is a few molecules, not a continuum (boundary lubrication)
+DRY_FILM = 1e-3
+
+
+def smooth_grid(condition: LineContactCondition) -> Grid:
+    """The grid of a smooth film: its nodes from Moes's load parameter M.
+
+    Parameters
+    ----------
+    condition : LineContactCondition
+
+    Returns
+    -------
+    Grid
+        :data:`SMOOTH_NODES` nodes; the inlet and outlet of
+        :func:`friction.ehl.transient.default_transient_grid` (the smooth film's pressure
+        build-up with half a Hertz width to spare, 1.5 b behind).
+
+    Notes
+    -----
+    At large M the pressure spike and the exit constriction narrow, and a grid too coarse
+    for them closes the film (the friction study's 256 nodes gave h = 0 and μ ≈ μ_b at
+    M ≥ 700, where 4096 nodes give a film within 3–7 % of Pan–Hamrock: issue 51).
+    """
+    from friction.ehl.transient import default_transient_grid
+    from friction.film import moes_load_parameter
+
+    oil = lubricant_of(condition.lubricant)
+    m = float(moes_load_parameter(condition.entraining_velocity,
+                                  float(viscosity(oil, condition.temperature)),
+                                  condition.load_per_length, condition.radius,
+                                  condition.e_prime))
+    nodes = next(n for bound, n in SMOOTH_NODES if m < bound)
+    return default_transient_grid(condition, nodes)
+
+
+def _moes_film(cond: LineContactCondition) -> float:
+    """Moes's central film of the condition [µm]."""
+    from friction.film import moes_central
+
+    oil = lubricant_of(cond.lubricant)
+    return float(moes_central(cond.entraining_velocity, float(viscosity(oil, cond.temperature)),
+                              float(pressure_viscosity_coefficient(oil, cond.temperature)),
+                              cond.load_per_length, cond.radius, cond.e_prime))
+
+
+def _solve(cond: LineContactCondition, grid: Grid | None):
+    if grid is not None:
+        grid.check()
+    _checked(cond)
+    # a smooth film of a nanometre or more: on the nodes its Moes M asks, unless given
+    film = smooth = cond.roughness_1 is None and cond.roughness_2 is None
+    if smooth:
+        film = _moes_film(cond) >= DRY_FILM
+    if grid is None:
+        grid = smooth_grid(cond) if film else Grid()
+    while True:
+        out = _solve_on(cond, grid)
+        kind = out[2]
+        if not film or not np.any(kind == CONTACT):
+            return out
+        # a smooth film of a nanometre or more never closes: contact nodes are a grid too
+        # coarse for the pressure spike and the exit constriction
+        if grid.nodes >= SMOOTH_NODES_MAX:
+            raise ConvergenceError(
+                f"line contact: the smooth film closes (dry contact) even at {grid.nodes} "
+                f"nodes, where Moes's formula gives {_moes_film(cond):.4f} um; no "
+                f"converged film")
+        nodes = min(max(2 * grid.nodes, smooth_grid(cond).nodes), SMOOTH_NODES_MAX)
+        log.info("smooth film closed on %d nodes: solved again on %d", grid.nodes, nodes)
+        grid = dataclasses.replace(grid, nodes=nodes)
+
+
+def _solve_on(cond: LineContactCondition, grid: Grid):
     s = contact_setup(cond, grid)
     p, h0 = initial_pressure(s, cond)
     rough = s.roughness
@@ -508,7 +605,7 @@ def _solve(cond: LineContactCondition, grid: Grid):
     kind = np.where((kind == FLUID) & (st.film <= CLOSED_FILM) & (st.pressure > 0.0),
                     CONTACT, kind)
     tau, f_fluid, f_boundary, w = film_and_boundary_friction(s, cond, st, kind)
-    return s, st, kind, tau, f_fluid, f_boundary, w, iterations
+    return s, st, kind, tau, f_fluid, f_boundary, w, iterations, grid
 
 
 def _summary(s, cond, st, kind, f_fluid, f_boundary, w) -> LineContactSummary:
@@ -537,7 +634,11 @@ def line_contact_summary(condition: LineContactCondition, grid: Grid | None = No
     ----------
     condition : LineContactCondition
     grid : Grid, optional
-        Default :class:`Grid()` (512 nodes over −4 … 1.5 b).
+        Default: a smooth film's from Moes's M (:func:`smooth_grid`), :class:`Grid()`
+        (512 nodes over −4 … 1.5 b) with rough heights. A smooth film whose solution
+        closes anywhere is solved again on twice the nodes (up to
+        :data:`SMOOTH_NODES_MAX`), whatever the grid given: a smooth EHL film never closes,
+        unless Moes's formula puts it below :data:`DRY_FILM` (a dry contact).
 
     Returns
     -------
@@ -557,7 +658,7 @@ def line_contact_summary(condition: LineContactCondition, grid: Grid | None = No
     Source: the seed's §5.2.2 model (Li & Kahraman 2010) in its steady form; see the
     module docstring and ``docs/ehl.md``.
     """
-    s, st, kind, _tau, f_fluid, f_boundary, w, _ = _solve(condition, grid or Grid())
+    s, st, kind, _tau, f_fluid, f_boundary, w, _, _grid = _solve(condition, grid)
     return _summary(s, condition, st, kind, f_fluid, f_boundary, w)
 
 
@@ -572,7 +673,7 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
     ----------
     condition : LineContactCondition
     grid : Grid, optional
-        Default :class:`Grid()`.
+        As :func:`line_contact_summary`.
 
     Returns
     -------
@@ -597,7 +698,7 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
     Source: the seed's §5.2.2 model (Li & Kahraman 2010) in its steady form with Hu & Zhu's
     unified Reynolds equation; ``docs/ehl.md`` gives the equations and validity.
     """
-    s, st, kind, tau, f_fluid, f_boundary, w, iterations = _solve(condition, grid or Grid())
+    s, st, kind, tau, f_fluid, f_boundary, w, iterations, used = _solve(condition, grid)
     summ = _summary(s, condition, st, kind, f_fluid, f_boundary, w)
     x_mm = s.x * s.b * 1e3
     h_um = np.maximum(st.film, 0.0) * s.b**2 / s.radius * 1e6
@@ -635,6 +736,8 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
         "lubricant": oil.name,
         "viscosity_model": condition.viscosity_model,
         "newton_iterations": iterations,
+        "grid_nodes": int(used.nodes), "grid_inlet": float(used.inlet),
+        "grid_outlet": float(used.outlet),
         "load_per_length_N_per_mm": float(condition.load_per_length),
         "radius_mm": float(condition.radius),
         "entraining_velocity_m_per_s": float(condition.entraining_velocity),
