@@ -35,28 +35,35 @@ def register(sub) -> None:
     p.add_argument("--box", choices=("table_5_1", "gear", "gear_flank", "gear_edge"),
                    default="table_5_1",
                    help="sobol/lhs: the seed's Table 5.1 box, or a wider one covering a hypoid "
-                   "gear's contacts (gear: p_h 0.3-3 GPa, R 5-120 mm, u_e 0.3-20 m/s, SR "
-                   "0.01-1.5, 25-110 degC; gear_flank: p_h from 0.1 GPa, R from 4 mm, SR from "
-                   "1e-4), or a rounded tooth edge on a flank (gear_edge: R 0.3-1 mm, p_h "
-                   "0.5-5.3 GPa, u_e 0.3-5 m/s, SR 0.2-2) (default %(default)s)")
+                   "gear's contacts (gear: p_h 0.3-3 GPa, R 5-150 mm, u_e 0.05-20 m/s, SR "
+                   "0.01-2, 25-110 degC, Rq 0.05-1.5 um; gear_flank: p_h from 0.1 GPa, R from "
+                   "4 mm, SR from 1e-4), or a rounded tooth edge on a flank (gear_edge: R "
+                   "0.3-1 mm, p_h 0.5-5.3 GPa, u_e 0.3-5 m/s, SR 0.2-2) (default %(default)s)")
     p.add_argument("--exclude-box", choices=("table_5_1", "gear"), default=None,
                    metavar="BOX",
                    help="sobol/lhs: pass over the points inside this box (a study that "
                    "extends one already run in it, e.g. --box gear_flank --exclude-box gear)")
     p.add_argument("--skip", type=int, default=0, metavar="K",
                    help="sobol: continue the sequence after its first K points")
-    p.add_argument("--nodes", type=int, default=256,
-                   help="solver grid nodes (transient: from the smooth film's pressure onset "
-                   "to 1.5 Hertz half-widths; steady: over -4 ... 1.5) (default %(default)s)")
-    p.add_argument("--mode", choices=("transient", "steady"), default="transient",
-                   help="rough points with the roughness moving through the contact (the "
-                   "seed's model) or frozen (default %(default)s)")
+    p.add_argument("--nodes", type=int, default=512,
+                   help="solver grid nodes (stochastic: over the rough contact's spread; "
+                   "transient: from the smooth film's pressure onset to 1.5 Hertz "
+                   "half-widths; steady: over -4 ... 1.5) (default %(default)s)")
+    p.add_argument("--mode", choices=("stochastic", "transient", "steady"),
+                   default="stochastic",
+                   help="rough points with the roughness described by its statistics (the "
+                   "asperity scale averaged, docs/ehl.md), or resolved on the grid, moving "
+                   "through the contact (the seed's Li & Kahraman model) or frozen "
+                   "(default %(default)s)")
     p.add_argument("--courant", type=float, default=1.0, metavar="C",
                    help="transient: node spacings the faster surface moves per time step "
                    "(default %(default)s)")
-    p.add_argument("--viscosity-model", choices=("roelands", "barus"), default="roelands",
+    p.add_argument("--viscosity-model", choices=("barus", "roelands"), default="barus",
                    help="viscosity-pressure model of the film and its traction "
                    "(default %(default)s)")
+    p.add_argument("--isothermal", action="store_true",
+                   help="stochastic: the film's shear at the inlet temperature, without the "
+                   "surfaces' flash temperature")
     p.add_argument("--average", type=float, default=2.0, metavar="T",
                    help="transient: averaging window in units of b/u_e (default %(default)s)")
     p.add_argument("--max-iterations", type=int, default=60, metavar="N",
@@ -113,7 +120,8 @@ def run(args: argparse.Namespace) -> int:
     settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
                              lubricant=args.lubricant, realisations=args.realisations,
                              mode=args.mode, courant=args.courant, average=args.average,
-                             viscosity_model=args.viscosity_model)
+                             viscosity_model=args.viscosity_model,
+                             thermal=not args.isothermal)
     ds = run_friction_study(design, settings, design_attrs=attrs, output=args.output,
                             scheduler=args.scheduler, n_workers=args.workers,
                             progress=not args.no_progress)

@@ -84,19 +84,30 @@ def study_provenance(settings: SolveSettings, design_attrs: Mapping[str, Any]) -
     attrs: dict[str, Any] = {
         "toolkit_version": __version__,
         "solver_commit": _commit(),
-        "solver": (("friction.ehl.transient.transient_summary (transient, roughness moving "
-                    "with each surface, BDF2" if settings.mode == "transient" else
-                    "friction.ehl.line_contact.line_contact_summary (steady, frozen roughness")
-                   + f", {settings.viscosity_model.capitalize()}, Dowson-Higginson, Eyring + "
-                     "limiting shear, boundary mu_b on contact nodes"
-                   + (", pressure limit: shakedown" if settings.mode == "transient" else "")
-                   + ")"),
+        "solver": _SOLVER_TEXT[settings.mode].format(
+            viscosity=settings.viscosity_model.capitalize(),
+            thermal="flash temperature" if settings.thermal else "isothermal"),
     }
     for k, v in settings.as_dict().items():
         attrs[f"solver_{k}"] = json.dumps(v) if isinstance(v, list) else v
     for k, v in design_attrs.items():
         attrs[f"design_{k}"] = v
     return attrs
+
+
+#: the ``solver`` attribute of a study file, by mode
+_SOLVER_TEXT = {
+    "stochastic": "friction.ehl.stochastic.stochastic_summary (steady, statistical roughness: "
+                  "average-flow Reynolds, elastic-plastic GW summits; {viscosity}, "
+                  "Dowson-Higginson, Eyring + limiting shear at the {thermal}, boundary mu_b "
+                  "on the asperity pressure)",
+    "transient": "friction.ehl.transient.transient_summary (transient, roughness moving with "
+                 "each surface, BDF2, {viscosity}, Dowson-Higginson, Eyring + limiting shear, "
+                 "boundary mu_b on contact nodes, pressure limit: shakedown)",
+    "steady": "friction.ehl.line_contact.line_contact_summary (steady, frozen roughness, "
+              "{viscosity}, Dowson-Higginson, Eyring + limiting shear, boundary mu_b on "
+              "contact nodes)",
+}
 
 
 def _point_dataset(index: int, point: Mapping[str, float], res: PointOutcome) -> xr.Dataset:

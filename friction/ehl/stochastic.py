@@ -287,6 +287,7 @@ class StochasticSummary(NamedTuple):
     specific_film_min: float          #: least separation over composite Rq, loaded zone [1]
     temperature_max: float            #: hottest oil (surface) temperature [degC]
     flash_temperature_max: float      #: largest surface flash temperature [K]
+    pressure_max: float               #: largest total pressure over p_h [1]
     newton_iterations: int
 
 
@@ -676,6 +677,7 @@ def _summary(pr: _Problem, p: Array, its: int, fields, fr: _Friction) -> Stochas
                                 / pr.stats.summits.sigma),
         temperature_max=float(fr.temperature.max()),
         flash_temperature_max=float(fr.flash.max()),
+        pressure_max=float(p.max()),
         newton_iterations=int(its),
     )
 
@@ -763,9 +765,11 @@ def solve_stochastic_line_contact(condition: LineContactCondition, surfaces,
         "specific_film_min": ("1", "least separation over composite Rq, loaded zone"),
         "temperature_max": ("degC", "hottest oil (surface) temperature"),
         "flash_temperature_max": ("K", "largest surface flash temperature rise"),
+        "pressure_max": ("MPa", "largest total pressure"),
     }
     values = summ._asdict()
     values["boundary_friction_part"] = values.pop("boundary_part")
+    values["pressure_max"] *= ph
     data = {k: _var(values[k], (), u, ln) for k, (u, ln) in scalar_units.items()}
     data["hertz_pressure"] = _var(ph, (), "MPa", "Hertz maximum pressure p_h")
     data["hertz_half_width"] = _var(s.b * 1e3, (), "mm", "Hertz half-width b")

@@ -67,18 +67,20 @@ TABLE_5_1_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
     "roughness_2": (0.1, 1.0, False),
 })
 
-#: A wider box for a fit that covers a hypoid gear's loaded segments (issue 34: 54 % of
-#: the default case's segments lay outside Table 5.1's box, with R_eq up to ~100 mm, p_h
-#: above 2.5 GPa at 500 N·m and SR from 0 at the pitch point to ~1.3 at the tips): p_h
-#: 0.3–3 GPa, R_eq 5–120 mm, u_e 0.3–20 m/s, SR 0.01–1.5, oil 25–110 °C, Rq 0.1–1 µm.
+#: A wider box for a fit that covers a hypoid gear's loaded flank segments (issue 34: 54 %
+#: of the default case's segments lay outside Table 5.1's box, with R_eq up to ~100 mm,
+#: p_h above 2.5 GPa at 500 N·m and SR from 0 at the pitch point to ~1.3 at the tips;
+#: issue 51 widened it to the low speeds, rough and smooth flanks and long radii of a
+#: gear's efficiency map and the chapter-5 study): p_h 0.3–3 GPa, R_eq 5–150 mm, u_e
+#: 0.05–20 m/s, SR 0.01–2, oil 25–110 °C, Rq 0.05–1.5 µm.
 GEAR_CONTACT_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
     "hertz_pressure": (300.0, 3000.0, False),
-    "radius": (5.0, 120.0, True),
-    "entraining_velocity": (0.3, 20.0, True),
-    "slide_to_roll": (0.01, 1.5, True),
+    "radius": (5.0, 150.0, True),
+    "entraining_velocity": (0.05, 20.0, True),
+    "slide_to_roll": (0.01, 2.0, True),
     "temperature": (25.0, 110.0, False),
-    "roughness_1": (0.1, 1.0, False),
-    "roughness_2": (0.1, 1.0, False),
+    "roughness_1": (0.05, 1.5, False),
+    "roughness_2": (0.05, 1.5, False),
 })
 
 #: The gear box widened to every flank (contact-curve) segment of the default case and of
@@ -90,12 +92,12 @@ GEAR_CONTACT_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
 #: study already run in it.
 GEAR_FLANK_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
     "hertz_pressure": (100.0, 3000.0, True),
-    "radius": (4.0, 120.0, True),
-    "entraining_velocity": (0.3, 20.0, True),
-    "slide_to_roll": (1e-4, 1.5, True),
+    "radius": (4.0, 150.0, True),
+    "entraining_velocity": (0.05, 20.0, True),
+    "slide_to_roll": (1e-4, 2.0, True),
     "temperature": (25.0, 110.0, False),
-    "roughness_1": (0.1, 1.0, False),
-    "roughness_2": (0.1, 1.0, False),
+    "roughness_1": (0.05, 1.5, False),
+    "roughness_2": (0.05, 1.5, False),
 })
 
 #: The contacts of a rounded tooth edge on the mating flank (the LTCA's edge segments:
@@ -109,8 +111,8 @@ GEAR_EDGE_RANGE: Mapping[str, tuple[float, float, bool]] = MappingProxyType({
     "entraining_velocity": (0.3, 5.0, True),
     "slide_to_roll": (0.2, 2.0, True),
     "temperature": (25.0, 110.0, False),
-    "roughness_1": (0.1, 1.0, False),
-    "roughness_2": (0.1, 1.0, False),
+    "roughness_1": (0.05, 1.5, False),
+    "roughness_2": (0.05, 1.5, False),
 })
 
 #: Named boxes of :func:`space_filling_design` (``ltca friction-study --box``).

@@ -40,10 +40,11 @@ RESULT_VARIABLES: Mapping[str, tuple[str, str]] = {
     "friction_coefficient": ("1", "friction coefficient mu (solver)"),
     "fluid_friction": ("1", "film (Eyring) part of mu"),
     "boundary_friction_part": ("1", "asperity (boundary) part of mu"),
-    "film_central": ("um", "central film thickness h_c"),
-    "film_min": ("um", "minimum film thickness h_min"),
-    "asperity_load_ratio": ("1", "share of the load carried by contact nodes"),
-    "contact_area_ratio": ("1", "contact length over Hertz width 2b"),
+    "film_central": ("um", "central film thickness h_c (stochastic: mean-plane separation)"),
+    "film_min": ("um", "minimum film thickness h_min (stochastic: mean-plane separation)"),
+    "asperity_load_ratio": ("1", "share of the load carried by the asperities"),
+    "contact_area_ratio": ("1", "contact length (stochastic: real contact area) over Hertz "
+                                "width 2b"),
     "lambda_ratio": ("1", "smooth-film h_min (Pan-Hamrock) over composite Rq"),
     "load_per_length": ("N/mm", "normal load per unit length w'"),
     "solve_time": ("s", "wall time of the solver calls on its worker"),
@@ -54,10 +55,12 @@ RESULT_VARIABLES: Mapping[str, tuple[str, str]] = {
                                         "0 for steady)"),
     "pressure_max": ("MPa", "largest pressure (transient: over the averaging window)"),
     "newton_iterations": ("1", "Newton iterations of the solver calls"),
+    "flash_temperature_max": ("K", "largest surface flash temperature (stochastic; 0 else)"),
 }
 
-#: solution modes of a rough point
-SOLVE_MODES = ("transient", "steady")
+#: solution modes of a rough point: the statistical roughness (friction.ehl.stochastic,
+#: the default), the resolved profiles moving (friction.ehl.transient) or frozen
+SOLVE_MODES = ("stochastic", "transient", "steady")
 
 
 @dataclass(frozen=True)
@@ -86,24 +89,33 @@ class SolveSettings:
         mixed regime depend on the realisation: measured RMS 53 % between two profile pairs
         at λ 1–3, 5 % at λ < 0.3 and 4 % at λ > 3, 256 nodes; a transient run averages
         over the roughness passing through the contact already).
-    mode : {"transient", "steady"}
-        Rough points by the transient model (the roughness moving, the seed's) or the
-        steady one (frozen). Transient runs take ``nodes`` from the smooth film's pressure
-        onset to 1.5 b (:func:`friction.ehl.transient.default_transient_grid`; ``inlet``
-        and ``outlet`` are the steady grid's).
+    mode : {"stochastic", "transient", "steady"}
+        Rough points by the stochastic model (the roughness's statistics: the asperity
+        scale averaged, :mod:`friction.ehl.stochastic`; the default since issue 51, where
+        the resolved models' asperities never carried the load, docs/ehl.md), the transient
+        one (the resolved profiles moving, the seed's Li & Kahraman form) or the steady one
+        (frozen). Stochastic and transient runs take ``nodes`` over their own domains
+        (:func:`friction.ehl.stochastic.stochastic_grid`,
+        :func:`friction.ehl.transient.default_transient_grid`; ``inlet`` and ``outlet`` are
+        the steady grid's). Smooth points (both Rq 0) are the steady smooth film, on the
+        grid its Moes M asks.
     courant, ramp, flush, average : float
         The transient run's :class:`friction.ehl.transient.TimeGrid`.
     short_cutoff : float — [mm]
         λs of the ground profiles (:class:`friction.ehl.roughness.GroundSurface`).
-    viscosity_model : {"roelands", "barus"}
+    viscosity_model : {"barus", "roelands"}
         Viscosity–pressure model of the film and its traction
-        (:data:`friction.ehl.rheology.VISCOSITY_PRESSURE_MODELS`).
+        (:data:`friction.ehl.rheology.VISCOSITY_PRESSURE_MODELS`; Barus by default, as
+        :class:`friction.ehl.line_contact.LineContactCondition`).
     cavitation : {"reynolds", "mass_conserving"}
         The transient runs' cavitation condition (:class:`friction.ehl.complementarity.
         NewtonOptions`).
+    thermal : bool
+        Stochastic runs: the film's shear at the surfaces' flash temperature
+        (:class:`friction.ehl.stochastic.StochasticOptions`).
     """
 
-    nodes: int = 256
+    nodes: int = 512
     inlet: float = -4.0
     outlet: float = 1.5
     step_limit: float = 3.0
@@ -112,14 +124,15 @@ class SolveSettings:
     lubricant: str = "75W90"
     profile_seeds: tuple[int, int] = (1, 2)
     realisations: int = 1
-    mode: str = "transient"
+    mode: str = "stochastic"
     courant: float = 1.0
     ramp: float = 0.5
     flush: float = 2.5
     average: float = 2.0
     short_cutoff: float = 0.008
-    viscosity_model: str = "roelands"
+    viscosity_model: str = "barus"
     cavitation: str = "reynolds"
+    thermal: bool = True
 
     def __post_init__(self) -> None:
         integer("nodes", self.nodes, low=64, high=16384)
@@ -134,7 +147,9 @@ class SolveSettings:
             integer("profile_seeds", s, low=0)
         integer("realisations", self.realisations, low=1, high=32)
         one_of("mode", self.mode, SOLVE_MODES)
-        one_of("viscosity_model", self.viscosity_model, ("roelands", "barus"))
+        one_of("viscosity_model", self.viscosity_model, ("barus", "roelands"))
+        if not isinstance(self.thermal, bool):
+            raise InputError(f"thermal: must be true or false, got {self.thermal!r}")
         real("short_cutoff", self.short_cutoff, unit="mm", low=0.0)
         self.time_grid().check()
 
@@ -280,6 +295,12 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
     from threadpoolctl import threadpool_limits
 
     from friction.ehl.line_contact import ConvergenceError, line_contact_summary
+    from friction.ehl.stochastic import (
+        StochasticOptions,
+        roughness_statistics,
+        stochastic_grid,
+        stochastic_summary,
+    )
     from friction.ehl.transient import default_transient_grid, transient_summary
 
     values = dict.fromkeys(RESULT_VARIABLES, math.nan)
@@ -295,7 +316,17 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
             # threads, and on a busy 2-core machine the default threads made a 256-node
             # rough point 6–45 s instead of 0.3–1 s (measured, issue 34)
             with threadpool_limits(limits=1):
-                if settings.mode == "transient" and max(rq) > 0.0:
+                if max(rq) == 0.0:
+                    solved.append(line_contact_summary(cond))
+                elif settings.mode == "stochastic":
+                    surfaces = surfaces_of(settings, point, k)
+                    grid = stochastic_grid(cond, roughness_statistics(surfaces),
+                                           settings.nodes)
+                    solved.append(stochastic_summary(
+                        cond, surfaces, grid, StochasticOptions(
+                            max_iterations=max(settings.max_iterations, 200),
+                            thermal=settings.thermal)))
+                elif settings.mode == "transient":
                     grid = default_transient_grid(cond, settings.nodes)
                     solved.append(transient_summary(cond, surfaces_of(settings, point, k),
                                                     grid, settings.time_grid()))
@@ -325,7 +356,8 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
                       pressure_max=mean.get("pressure_max", math.nan) * float(
                           point["hertz_pressure"]),
                       newton_iterations=float(sum(getattr(s, "newton_iterations", 0)
-                                                  for s in solved)))
+                                                  for s in solved)),
+                      flash_temperature_max=mean.get("flash_temperature_max", 0.0))
     values["solve_time"] = time.perf_counter() - t0
     if status:
         log.info("friction study point %d %s failed: %s", index, dict(point), reason)
