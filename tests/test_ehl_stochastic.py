@@ -391,3 +391,24 @@ def test_bad_surfaces_named() -> None:
                                 roughness_1=np.zeros(512))
     with pytest.raises(InputError, match="roughness_1"):
         stochastic_summary(cond, _surfaces(0.3))
+
+
+def test_ltca_ehl_rough_runs_the_stochastic_solver(tmp_path, capsys) -> None:
+    # rough surfaces default to the stochastic model: the file's scalars equal the
+    # library's for the same inputs (round-off), with units on every variable
+    import xarray as xr
+
+    from contact.cli import main
+
+    out = tmp_path / "rough.nc"
+    assert main(["ehl", "--pressure", "1.0", "--radius", "20", "--speed", "1",
+                 "--roughness", "0.3", "0.3", "-o", str(out)]) == 0
+    line = capsys.readouterr().out
+    assert "lambda 0.21" in line and "boundary" in line
+    ref = stochastic_summary(_condition(1.0, 1.0), _surfaces(0.3))
+    with xr.open_dataset(out) as ds:
+        assert float(ds.friction_coefficient) == pytest.approx(ref.friction_coefficient,
+                                                               rel=1e-12)
+        assert ds.attrs["viscosity_model"] == "barus"
+        for name, var in ds.variables.items():
+            assert "units" in var.attrs and "long_name" in var.attrs, name

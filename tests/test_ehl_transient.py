@@ -277,9 +277,9 @@ def test_heights_on_the_grid_are_refused() -> None:
 
 # ------------------------------------------------------------------------------ command
 def test_ltca_ehl_rough_is_transient(tmp_path, capsys) -> None:
-    # rough surfaces: the command runs the transient model and stores time means with the
-    # time series; the scalars equal the library's for the same inputs (the same grid and
-    # time grid: 1e-12)
+    # rough surfaces, --model resolved: the command runs the transient model and stores time
+    # means with the time series; the scalars equal the library's for the same inputs (the
+    # same grid and time grid: 1e-12)
     import xarray as xr
 
     from contact.cli import main
@@ -287,7 +287,7 @@ def test_ltca_ehl_rough_is_transient(tmp_path, capsys) -> None:
     out = tmp_path / "rough.nc"
     rc = main(["ehl", "--pressure", "1.0", "--radius", "20", "--speed", "5",
                "--slide-to-roll", "0.3", "--temperature", "90", "--roughness", "0.3", "0.3",
-               "--nodes", "96", "-o", str(out)])
+               "--model", "resolved", "--nodes", "96", "-o", str(out)])
     assert rc == 0
     assert "time means" in capsys.readouterr().out
     with xr.open_dataset(out) as ds:

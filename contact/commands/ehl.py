@@ -19,14 +19,18 @@ def register(sub) -> None:
         help="solve one mixed-EHL line contact: pressure, film, asperity load, "
         "friction coefficient",
         description="One line contact of two surfaces under the Hertz pressure, radius, "
-        "entraining velocity, slide-to-roll ratio and oil temperature given, solved by the "
-        "unified Reynolds equation with elastic deflection (friction.ehl, docs/ehl.md). "
-        "Roughness 0 0 is the smooth case, solved steady. Rough surfaces get reproducible "
-        "measured-like ground profiles (seeds 1 and 2) scaled to the Rq given and move "
-        "through the contact with their own speeds: the transient solution (the seed's "
-        "model), whose scalars are time means (--steady freezes the roughness instead). "
-        "Writes a netCDF of the profiles and the scalars (film_central, film_min, "
-        "asperity_load_ratio, friction_coefficient) and prints one summary line.",
+        "entraining velocity, slide-to-roll ratio and oil temperature given (friction.ehl, "
+        "docs/ehl.md). Roughness 0 0 is the smooth film, solved steady on the grid its "
+        "Moes load parameter asks. Rough surfaces are reproducible measured-like ground "
+        "profiles (seeds 1 and 2) scaled to the Rq given; by default their asperity scale "
+        "is described by its statistics (--model stochastic: average-flow Reynolds "
+        "equation, elastic-plastic summits, the film's shear at the surfaces' flash "
+        "temperature), which carries the contact from full film to dry; --model resolved "
+        "moves the profiles themselves through the contact (the seed's Li & Kahraman form, "
+        "scalars as time means; --steady freezes them), whose asperities do not carry the "
+        "load in the mixed regime (docs/ehl.md). Writes a netCDF of the profiles and the "
+        "scalars (film_central, film_min, asperity_load_ratio, friction_coefficient) and "
+        "prints one summary line.",
     )
     p.add_argument("--pressure", type=float, required=True, metavar="GPA",
                    help="Hertz maximum pressure p_h [GPa]")
@@ -42,13 +46,22 @@ def register(sub) -> None:
                    metavar=("RQ1", "RQ2"), help="Rq of the two surfaces [um] (default 0 0)")
     p.add_argument("--lubricant", default="75W90", metavar="NAME",
                    help="bundled oil name or oil TOML file (default %(default)s)")
+    p.add_argument("--model", choices=("stochastic", "resolved"), default="stochastic",
+                   help="rough surfaces: the roughness's statistics, or the profiles resolved "
+                   "on the grid (default %(default)s)")
+    p.add_argument("--viscosity-model", choices=("barus", "roelands"), default="barus",
+                   help="viscosity-pressure law of the film and its shear (default "
+                   "%(default)s, the friction study's and the mu model's)")
+    p.add_argument("--isothermal", action="store_true",
+                   help="stochastic: the film's shear at the inlet temperature, without the "
+                   "surfaces' flash temperature")
     p.add_argument("--nodes", type=int, default=None,
-                   help="grid nodes (default 1024 over -4 ... 1.5 Hertz half-widths for a "
-                   "steady run; 256 from the smooth film's pressure onset to 1.5 for a "
-                   "transient one)")
+                   help="grid nodes (default: smooth, from Moes's M; stochastic 512 over the "
+                   "rough contact's spread; resolved 256 from the smooth film's pressure "
+                   "onset to 1.5 Hertz half-widths, or 1024 over -4 ... 1.5 with --steady)")
     p.add_argument("--steady", action="store_true",
-                   help="rough surfaces: solve with the roughness frozen (steady) instead of "
-                   "moving (often no solution below lambda ~1.4, docs/ehl.md)")
+                   help="--model resolved: the roughness frozen (steady) instead of moving "
+                   "(often no solution below lambda ~1.4, docs/ehl.md)")
     p.add_argument("--courant", type=float, default=1.0, metavar="C",
                    help="transient: node spacings the faster surface moves per time step "
                    "(default %(default)s)")
@@ -58,6 +71,8 @@ def register(sub) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from threadpoolctl import threadpool_limits
+
     from friction.ehl.line_contact import (
         STEEL_E_PRIME,
         Grid,
@@ -66,6 +81,12 @@ def run(args: argparse.Namespace) -> int:
         solve_line_contact,
     )
     from friction.ehl.roughness import GroundSurface, ground_profile
+    from friction.ehl.stochastic import (
+        StochasticOptions,
+        roughness_statistics,
+        solve_stochastic_line_contact,
+        stochastic_grid,
+    )
     from friction.ehl.transient import (
         TimeGrid,
         default_transient_grid,
@@ -90,29 +111,45 @@ def run(args: argparse.Namespace) -> int:
     rough = rq1 > 0.0 or rq2 > 0.0
     fields = dict(load_per_length=load, radius=args.radius, entraining_velocity=args.speed,
                   slide_to_roll=args.slide_to_roll, temperature=args.temperature,
-                  lubricant=args.lubricant)
-    if rough and not args.steady:
-        cond = LineContactCondition(**fields)
-        grid = default_transient_grid(cond, args.nodes or 256)
-        ds = solve_transient_line_contact(
-            cond, (GroundSurface(rq1, seed=1), GroundSurface(rq2, seed=2)), grid,
-            TimeGrid(courant=args.courant))
-    else:
-        grid = Grid(nodes=args.nodes or 1024, step_limit=3.0 if rough else 0.3)
-        grid.check()
-        b, _ = hertz_line_contact(load, args.radius, STEEL_E_PRIME)
-        x = grid.coordinates() * b
-        cond = LineContactCondition(
-            **fields,
-            roughness_1=ground_profile(x, rq1, seed=1) if rq1 > 0 else None,
-            roughness_2=ground_profile(x, rq2, seed=2) if rq2 > 0 else None,
-        )
-        ds = solve_line_contact(cond, grid)
+                  lubricant=args.lubricant, viscosity_model=args.viscosity_model)
+    surfaces = (GroundSurface(rq1, seed=1), GroundSurface(rq2, seed=2))
+    # one BLAS thread: the dense Newton systems of ≤ 1 k unknowns gain nothing from more,
+    # and on a busy 2-core machine the default threads cost ~8x the CPU (issue 51)
+    with threadpool_limits(limits=1):
+        if not rough:
+            cond = LineContactCondition(**fields)
+            grid = None if args.nodes is None else Grid(nodes=args.nodes)
+            ds = solve_line_contact(cond, grid)
+        elif args.model == "stochastic":
+            cond = LineContactCondition(**fields)
+            grid = None if args.nodes is None else stochastic_grid(
+                cond, roughness_statistics(surfaces), args.nodes)
+            ds = solve_stochastic_line_contact(
+                cond, surfaces, grid, StochasticOptions(thermal=not args.isothermal))
+        elif not args.steady:
+            cond = LineContactCondition(**fields)
+            grid = default_transient_grid(cond, args.nodes or 256)
+            ds = solve_transient_line_contact(cond, surfaces, grid,
+                                              TimeGrid(courant=args.courant))
+        else:
+            grid = Grid(nodes=args.nodes or 1024, step_limit=3.0)
+            grid.check()
+            b, _ = hertz_line_contact(load, args.radius, STEEL_E_PRIME)
+            x = grid.coordinates() * b
+            cond = LineContactCondition(
+                **fields,
+                roughness_1=ground_profile(x, rq1, seed=1) if rq1 > 0 else None,
+                roughness_2=ground_profile(x, rq2, seed=2) if rq2 > 0 else None,
+            )
+            ds = solve_line_contact(cond, grid)
     inputs = " ".join(f"{k}={v}" for k, v in sorted(vars(args).items()) if k != "func")
     path = write_netcdf(ds, Path(args.output), inputs=inputs)
     kind = "time means, " if "time" in ds.dims else ""
-    print(f"p_h {args.pressure:g} GPa, w' {load:.1f} N/mm: {kind}h_c "
+    lam = float(ds.lambda_ratio)
+    lam_text = f"lambda {lam:.3g}, " if lam > 0.0 else ""
+    print(f"p_h {args.pressure:g} GPa, w' {load:.1f} N/mm: {kind}{lam_text}h_c "
           f"{float(ds.film_central):.4f} um, h_min {float(ds.film_min):.4f} um, asperity load "
           f"{float(ds.asperity_load_ratio):.3f}, mu {float(ds.friction_coefficient):.4f} "
-          f"-> {path}")
+          f"(film {float(ds.fluid_friction):.4f}, boundary "
+          f"{float(ds.boundary_friction_part):.4f}) -> {path}")
     return 0
