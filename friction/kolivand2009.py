@@ -103,7 +103,19 @@ FEATURES: Mapping[str, Callable[[Mapping[str, Array]], Array]] = MappingProxyTyp
     # grows (Newtonian at low α p_h, Eyring-limited at high; Johnson & Tevaarwerk 1977)
     "G*H": lambda g: g["G"] * g["H"],
     "G*H*ln_SR": lambda g: g["G"] * g["H"] * np.log(g["SR"]),
+    # the flash-temperature group: Blok's (Jaeger's) flash temperature of the film's heat
+    # μ p̄ u_s over a band 2b moving at u_e is ∝ μ p_h |SR| √(2b u_e)/B (B the steel's
+    # effusivity, fixed); F = p_h[GPa] |SR| √(2b[mm] u_e[m/s]) carries the viscosity's fall
+    # with the surfaces' temperature that the solver's thermal film shear has and the
+    # isothermal μ_E has not (held-out RMS 16.7 % → 9.0 % with it, issue 51)
+    "ln_1+flash": lambda g: np.log1p(_flash_group(g)),
 })
+
+
+def _flash_group(g: Mapping[str, Array]) -> Array:
+    """F = p_h |SR| √(2b u_e), p_h in GPa, b in mm, u_e in m/s (the groups' inputs)."""
+    b = np.sqrt(8.0 * g["load_per_length"] * g["radius"] / (math.pi * g["e_prime"]))
+    return g["hertz_pressure"] * 1e-3 * g["SR"] * np.sqrt(2.0 * b * g["entraining_velocity"])
 
 #: Features of the asperity (boundary) share ψ of the ``split`` structure:
 #: logit ψ = Σ θ_j f_j (a file without ``boundary.features`` has these).

@@ -226,9 +226,9 @@ def test_friction_study_and_fit_commands(tmp_path, monkeypatch, capsys):
     assert ds.sizes["point"] == 4 and ds.attrs["design_method"] == "sobol"
     assert ds.attrs["solver_nodes"] == 64 and "solver_commit" in ds.attrs
     assert not ResultStore.parts_dir(tmp_path / "fs.nc").exists()
-    # the Sobol design and its --skip 512 continuation, as the bundled fit was made
+    # the Sobol design and its --skip 1024 continuation, as the bundled fit was made
     assert main(["friction-fit", str(DATA_DIR / "friction_study_75W90.nc"),
-                 str(DATA_DIR / "friction_study_75W90_skip512.nc"), "--held-out",
+                 str(DATA_DIR / "friction_study_75W90_skip1024.nc"), "--held-out",
                  str(DATA_DIR / "friction_study_75W90_heldout.nc"), "-o", "k.toml"]) == 0
     assert "held out" in capsys.readouterr().out
     fit = load_kolivand2009_fit(tmp_path / "k.toml")
@@ -271,10 +271,10 @@ def test_combine_studies_and_refusals():
     assert both.attrs["wall_time"] == pytest.approx(2 * held.attrs["wall_time"])
     assert both.attrs["design_method"] == "lhs; lhs"
     longer = held.copy()
-    longer.attrs = {**held.attrs, "solver_average": 2.0}  # the same model sampled shorter
-    assert combine_studies([held, longer]).attrs["solver_average"] == "8.0; 2.0"
+    longer.attrs = {**held.attrs, "solver_average": 8.0}  # the same model sampled longer
+    assert combine_studies([held, longer]).attrs["solver_average"] == "2.0; 8.0"
     other = held.copy()
-    other.attrs = {**held.attrs, "solver_nodes": 512}
+    other.attrs = {**held.attrs, "solver_nodes": 1024}
     with pytest.raises(InputError, match="solver_nodes differs"):
         combine_studies([held, other])
     with pytest.raises(InputError, match="at least one"):

@@ -1,11 +1,11 @@
 """The fitted ``kolivand2009`` friction model against the committed friction study.
 
-The data are the committed study files (``friction/data/friction_study_75W90*.nc``: 1024
-Sobol points, seed 2009, in two files of 512, of the gear-contact box
-(``GEAR_CONTACT_RANGE``), and 100 held-out Latin-hypercube points, seed 7, solved by the
-transient mixed-EHL solver of :mod:`friction.ehl` at 256 nodes with Barus viscosity; the
-held-out points twice, averaged over 2 and over 8 passages of the contact) and the
-coefficient file fitted to them
+The data are the committed study files (``friction/data/friction_study_75W90*.nc``: 2048
+Sobol points, seed 2009, in two files of 1024 (``--skip 1024``), of the gear-contact box
+(``GEAR_CONTACT_RANGE``: p_h 0.3–3 GPa, R 5–150 mm, u_e 0.05–20 m/s, |SR| 0.01–2, 25–110 °C,
+Rq 0.05–1.5 µm each), and 200 held-out Latin-hypercube points, seed 7, solved by the
+stochastic mixed-EHL solver of :mod:`friction.ehl.stochastic` at 512 nodes with Barus
+viscosity and the flash temperature) and the coefficient file fitted to them
 (``friction/data/kolivand2009_75W90.toml``). Every test reads these small files and
 evaluates closed-form expressions (the refit: one ``least_squares`` of ~40 unknowns over a
 few hundred points, ~1–2 s): cheap enough for CI.
@@ -40,11 +40,9 @@ from friction.validity import FrictionModelRangeWarning
 from geometry.core.errors import InputError
 from geometry.core.io import read_netcdf
 
-#: the Sobol design's points 0-511 and its continuation 512-1023 (``--skip 512``)
-TRAIN = (DATA_DIR / "friction_study_75W90.nc", DATA_DIR / "friction_study_75W90_skip512.nc")
+#: the Sobol design's points 0-1023 and its continuation 1024-2047 (``--skip 1024``)
+TRAIN = (DATA_DIR / "friction_study_75W90.nc", DATA_DIR / "friction_study_75W90_skip1024.nc")
 HELD = DATA_DIR / "friction_study_75W90_heldout.nc"
-#: the same held-out conditions averaged over 2 passages (the training files' window)
-HELD_AVG2 = DATA_DIR / "friction_study_75W90_heldout_avg2.nc"
 
 #: a gear-like contact inside the fitted box (1500 rpm, ~300 N·m class segment at 75 °C)
 REF = dict(hertz_pressure=1200.0, slide_to_roll=0.3, entraining_velocity=5.0,
@@ -75,16 +73,17 @@ def _inputs(d):
 
 # ----------------------------------------------------------------------------- the fit
 def test_fit_against_held_out_solver_points(fit, held):
-    """Held-out points (LHS, seed 7, never in the fit; the solver averaged over 8 passages
-    of the contact): the issue's target, RMS relative error ≤ 10 %, met over the whole gear
-    box — measured 9.0 % (median |error| 3.4 %), worst −35 % (p_h 314 MPa, SR 0.017,
-    λ 0.18, the box's light-load corner). The file's statistics are those of the committed
-    data (to 1e-9). Bounds: the target, and the worst case with ~10 % slack for the
-    optimiser's platform round-off."""
+    """Held-out points (LHS, seed 7, never in the fit): the issue's target, RMS relative
+    error ≤ 10 %, met over the whole widened gear box — measured 9.0 % (median |error|
+    4.2 %), worst +86 % (p_h 1.5 GPa, |SR| 1.83, u_e 11.8 m/s, λ 1.74: the box's hot
+    corner, where the flash temperature of the film's shear heat is largest and the
+    regression's flash group ``ln_1+flash`` follows the solver's thermal film only in the
+    mean). The file's statistics are those of the committed data (to 1e-9). Bounds: the
+    target, and the worst case with ~10 % slack for the optimiser's platform round-off."""
     s = fit_statistics(fit, held)
-    assert s["points"] == 100
+    assert s["points"] == 200
     assert s["rms_relative_error"] <= 0.10
-    assert s["max_relative_error"] <= 0.40
+    assert s["max_relative_error"] <= 0.95
     for k in ("points", "rms_relative_error", "max_relative_error"):
         assert s[k] == pytest.approx(fit.statistics[f"heldout_{k}"], rel=1e-9), k
 
@@ -99,11 +98,10 @@ def _inside_table_5_1(d):
 
 def test_fit_inside_the_seeds_box_is_closer(fit, train, held):
     """Inside Table 5.1's box (the seed's: p_h ≥ 500 MPa, R ≤ 40 mm, u_e ≥ 1 m/s, SR ≥
-    0.025) the fit is closer to the solver than over the gear box: RMS 10.2 % over the 229
-    training points there (averaged over 2 passages: their sampling scatter, see
-    ``test_the_solvers_sampling_scatter``) and 6.7 % over the 21 held-out ones (bounds 12
-    and 8 %); the large errors are the gear box's light-load, low-slip corner."""
-    for study, bound, least in ((train, 0.12, 200), (held, 0.08, 15)):
+    0.025) the fit is closer to the solver than over the gear box: RMS 7.1 % over the 115
+    training points there and 6.6 % over the 10 held-out ones (bounds 8 and 8 %; 9.4 and
+    9.0 % over the whole box); the large errors are the gear box's hot, high-slip corner."""
+    for study, bound, least in ((train, 0.08, 100), (held, 0.08, 8)):
         d = study_inputs(study)
         inside = _inside_table_5_1(d)
         assert inside.sum() >= least
@@ -115,31 +113,10 @@ def test_fit_inside_the_seeds_box_is_closer(fit, train, held):
         assert np.sqrt(np.mean(rel**2)) <= bound
 
 
-def test_the_solvers_sampling_scatter(held):
-    """The study's μ is a time mean over the roughness passing through the contact; over 2
-    passages (the training files) it scatters about the 8-passage mean of the same
-    condition by RMS 12.7 % (median |difference| 0.8 %, worst 66 %: the light-load points
-    where a few asperity contacts come and go; measured on the 99 held-out conditions
-    converged in both). This is why the held-out reference is the 8-passage run, and
-    why the training RMS (18 %) cannot fall to the held-out one: the model cannot fit
-    the training points' scatter (a perfect model would show ~12 % against them).
-    Bounds: RMS 10–15 %, median < 2 %."""
-    short = read_netcdf(HELD_AVG2, tree=False)
-    assert short.attrs["solver_average"] == 2.0 and held.attrs["solver_average"] == 8.0
-    for k in ("hertz_pressure", "radius", "entraining_velocity", "slide_to_roll",
-              "temperature", "roughness_1", "roughness_2"):
-        np.testing.assert_array_equal(short[k].values, held[k].values)
-    ok = (short["status"].values == 0) & (held["status"].values == 0)
-    assert ok.sum() == 99
-    rel = short["friction_coefficient"].values[ok] / held["friction_coefficient"].values[ok] - 1
-    assert 0.10 <= np.sqrt(np.mean(rel**2)) <= 0.15
-    assert np.median(np.abs(rel)) < 0.02
-
-
 def test_eyring_structure_beats_the_power_laws(fit, train, held):
     """The shipped ``eyring`` structure (the smooth film's Eyring traction corrected by the
     regression) against the ``split`` and ``regimes`` power laws refitted on the same
-    points: held-out RMS 9.0 % against 17.9 % and 22.7 % (measured; asserted: ≤ 0.6 × each)."""
+    points: held-out RMS 9.0 % against 17.1 % and 22.3 % (measured; asserted: ≤ 0.6 × each)."""
     ours = fit_statistics(fit, held)["rms_relative_error"]
     for structure in ("split", "regimes"):
         other = fit_kolivand2009(train, structure=structure, box=GEAR_CONTACT_RANGE)
@@ -178,13 +155,13 @@ def test_continuous_at_lambda_1_and_3(fit):
     oil = load_lubricant("75W90")
     t = rng.uniform(25.0, 110.0, 500)
     g = contact_groups(hertz_pressure=rng.uniform(300.0, 3000.0, 500),
-                       slide_to_roll=np.exp(rng.uniform(np.log(0.01), np.log(1.5), 500)),
-                       entraining_velocity=np.exp(rng.uniform(np.log(0.3), np.log(20.0), 500)),
+                       slide_to_roll=np.exp(rng.uniform(np.log(0.01), np.log(2.0), 500)),
+                       entraining_velocity=np.exp(rng.uniform(np.log(0.05), np.log(20.0), 500)),
                        viscosity=viscosity(oil, t),
                        pressure_viscosity=pressure_viscosity_coefficient(oil, t),
-                       radius=np.exp(rng.uniform(np.log(5.0), np.log(120.0), 500)),
-                       roughness_1=rng.uniform(0.1, 1.0, 500),
-                       roughness_2=rng.uniform(0.1, 1.0, 500))
+                       radius=np.exp(rng.uniform(np.log(5.0), np.log(150.0), 500)),
+                       roughness_1=rng.uniform(0.05, 1.5, 500),
+                       roughness_2=rng.uniform(0.05, 1.5, 500))
     for at in fit.lambda_bounds:
         below = fit.mu({**g, "lambda": np.full(500, np.nextafter(at, 0.0))})
         above = fit.mu({**g, "lambda": np.full(500, at)})
@@ -202,35 +179,37 @@ def test_lambda_is_the_solvers(train):
 
 
 def test_limits_boundary_and_film(fit, train):
-    """The asperity share ψ follows the solver's asperity load ratio in kind: it falls
-    with λ (Spearman ρ with the solver's ratio over the training points 0.77 measured;
-    ≥ 0.65), stays below the solver's largest ratio (ψ ≤ 0.28; the solver's 0.44: the
-    transient solver's rough films are thick, docs/ehl.md) and is < 1 % above λ = 3,
-    where the solver has no contact nodes (film shear only): 0.16 at λ 0.09, 3e-4 at
-    λ 5.6."""
+    """The asperity share ψ follows the solver's asperity load ratio: it falls with λ
+    (Spearman ρ with the solver's ratio over the training points 0.99 measured; ≥ 0.95),
+    reaches the boundary regime where the solver does (ψ up to 0.995, the solver's ratio
+    up to 0.9999 at the box's thinnest films) and is < 1 % above λ = 3, where the
+    solver's asperities carry < 0.03 % of the load: 0.68 at λ 0.09, 3e-5 at λ 5.6."""
     d = study_inputs(train)
     psi = fit.asperity_share(contact_groups(**_inputs(d)))
-    assert spearmanr(psi, d["asperity_load_ratio"]).statistic >= 0.65
-    assert np.max(psi) <= 0.5
+    assert spearmanr(psi, d["asperity_load_ratio"]).statistic >= 0.95
+    assert np.max(psi) >= 0.95
     low = dict(REF, entraining_velocity=4.0, viscosity=0.0107, pressure_viscosity=9.7,
                roughness_1=1.0, roughness_2=1.0, hertz_pressure=2000.0, radius=10.0)
     high = dict(REF, entraining_velocity=15.0, roughness_1=0.1, roughness_2=0.1)
     g_low, g_high = contact_groups(**low), contact_groups(**high)
     assert fit.ranges["lambda"][0] < g_low["lambda"] < 0.15 and g_high["lambda"] > 3.0
-    assert fit.asperity_share(g_low) > 5 * fit.asperity_share(g_high)
+    assert fit.asperity_share(g_low) > 0.5 > 100 * fit.asperity_share(g_high)
     assert fit.asperity_share(g_high) < 0.01
 
 
 # ----------------------------------------------------------------------------- trends
 def test_trends_of_the_solver_data(train):
     """From the committed solver points (converged), with their size: ln μ regressed on
-    ln p_h, ln R, ln u_e, ln SR, T and ln σ (σ = √(Rq₁² + Rq₂²)). Measured: μ ∝ p_h^0.70,
-    SR^0.10, a hotter oil lowers μ (ln μ −1.15 per 100 °C), and roughness (σ^0.05) and
-    speed (u_e^0.03) barely move it — NOT the seed's trends (μ rising with roughness and
-    falling with speed): in this solver the film's Eyring shear, set by α p_h, carries most
-    of the friction, and the asperities at most 44 % of the load (docs/friction.md). The
-    bounds pin these sizes. The asperity load share grows as λ falls (Spearman ρ −0.73;
-    ≤ −0.6): median 0.068 below λ = 0.3, 0.041 at 0.3–1, none above λ = 3."""
+    ln p_h, ln R, ln u_e, ln SR, T and ln σ (σ = √(Rq₁² + Rq₂²)). Measured over the gear
+    box: rougher flanks raise μ (σ^0.30), a faster contact lowers it (u_e^−0.15), a hotter
+    oil raises it (ln μ +0.42 per 100 °C: the thinner film hands load to the asperities'
+    μ_b), and μ falls weakly with p_h (p_h^−0.24: the asperities' share of the load at a
+    given λ falls as the Hertz pressure grows) and SR (SR^−0.04: the flash temperature
+    thins the film's shear) — the seed's trends in kind (chapter 5: μ rising with
+    roughness and oil temperature, falling with speed): most of the box is mixed, where
+    the asperities carry the friction (docs/friction.md). The bounds pin these sizes. The
+    asperity load share grows as λ falls (Spearman ρ −0.72; ≤ −0.6): median 0.75 below
+    λ = 0.3, 0.38 at 0.3–1, < 0.1 % above λ = 3."""
     ok = train["status"].values == 0
     d = train.isel(point=ok)
     mu = d["friction_coefficient"].values
@@ -240,31 +219,40 @@ def test_trends_of_the_solver_data(train):
                          np.log(d["slide_to_roll"].values), d["temperature"].values / 100.0,
                          np.log(sigma)])
     b, *_ = np.linalg.lstsq(x, np.log(mu), rcond=None)
-    assert 0.6 <= b[1] <= 0.85          # Hertz pressure
-    assert 0.05 <= b[4] <= 0.2          # slide-to-roll ratio
-    assert -1.4 <= b[5] <= -0.9         # temperature: hotter oil, lower μ
-    assert abs(b[6]) <= 0.15            # roughness: weak
-    assert abs(b[3]) <= 0.1             # speed: weak
+    assert -0.35 <= b[1] <= -0.15       # Hertz pressure
+    assert -0.1 <= b[4] <= 0.0          # slide-to-roll ratio
+    assert 0.3 <= b[5] <= 0.55          # temperature: hotter oil, higher μ
+    assert 0.2 <= b[6] <= 0.4           # roughness: rougher, higher μ
+    assert -0.25 <= b[3] <= -0.1        # speed: faster, lower μ
     alr, lam = d["asperity_load_ratio"].values, d["lambda_ratio"].values
     assert spearmanr(alr, lam).statistic <= -0.6
-    assert np.median(alr[lam < 0.3]) > np.median(alr[(lam >= 0.3) & (lam < 1.0)]) > 0.02
-    assert np.max(alr[lam > 3.0]) == 0.0
+    assert np.median(alr[lam < 0.3]) > 0.6 > np.median(alr[(lam >= 0.3) & (lam < 1.0)]) > 0.2
+    assert np.max(alr[lam > 3.0]) < 1e-3
 
 
 def test_trends_of_the_fitted_model(fit):
-    """The model at a gear-like contact follows the solver's (weak) trends: Rq 0.2 → 0.8 µm
-    each raises μ by 6.6 % (bounds 0–10 %), u_e 2 → 15 m/s by 5.2 % (0–15 %); a hotter
-    oil (η₀ and α of 75W90 at 40 → 90 °C) lowers it (0.058 → 0.033)."""
+    """The model at a gear-like contact (REF, λ 0.53) follows the solver's trends: Rq
+    0.2 → 0.8 µm each raises μ 2.3× (0.030 → 0.069; bounds 1.8–2.8×), u_e 2 → 15 m/s
+    lowers it by 57 % (0.072 → 0.031; bounds 0.35–0.55×) and it falls monotonically over
+    0.1–15 m/s; a hotter oil (η₀ and α of 75W90 at 40 → 90 °C) raises it at Rq 0.5 µm
+    (0.037 → 0.064) and 1.0 µm (0.050 → 0.080) — the asperities take the thinner film's
+    load — and leaves it within 2 % at 0.2 µm, where the film still carries most of it
+    (λ 3.8 → 0.9): the seed's Fig. 5.12 in kind."""
     rq = kolivand2009(**{**REF, "roughness_1": np.array([0.2, 0.8]),
                          "roughness_2": np.array([0.2, 0.8])})
-    assert 1.0 < rq[1] / rq[0] < 1.10
-    ue = kolivand2009(**{**REF, "entraining_velocity": np.array([2.0, 15.0])})
-    assert 1.0 < ue[1] / ue[0] < 1.15
+    assert 1.8 < rq[1] / rq[0] < 2.8
+    ue = kolivand2009(**{**REF, "entraining_velocity": np.array([0.1, 0.5, 1.0, 2.0, 5.0,
+                                                                   15.0])})
+    assert 0.35 < ue[-1] / ue[3] < 0.55
+    assert np.all(np.diff(ue) < 0.0)
     oil = load_lubricant("75W90")
-    cold, hot = (dict(REF, viscosity=viscosity(oil, t),
-                      pressure_viscosity=pressure_viscosity_coefficient(oil, t))
-                 for t in (40.0, 90.0))
-    assert kolivand2009(**hot) < kolivand2009(**cold)
+    for rq, rise in ((0.2, (0.98, 1.02)), (0.5, (1.4, 2.0)), (1.0, (1.3, 1.9))):
+        cold, hot = (kolivand2009(**dict(REF, viscosity=viscosity(oil, t), roughness_1=rq,
+                                         roughness_2=rq,
+                                         pressure_viscosity=pressure_viscosity_coefficient(
+                                             oil, t)))
+                     for t in (40.0, 90.0))
+        assert rise[0] < hot / cold < rise[1], rq
 
 
 # ----------------------------------------------------------------------------- registry
@@ -297,23 +285,22 @@ def test_registered_with_validity_and_range_warning(fit):
 
 
 def test_extrapolation_checked_against_the_solver(fit):
-    """24 solver conditions just outside the box (``friction_study_75W90_outside.nc``,
-    ``benchmarks/friction_extrapolation.py``: 8 per slab, p_h 3–4.5 GPa, SR 0.001–0.01,
-    u_e 0.1–0.3 m/s, the rest in the gear box, 8 passages): every one is flagged, and the
-    model's RMS relative error per slab is 8.5 / 16.6 / 7.2 % (worst −14 / +27 / −16 %;
-    23 of 24 converged) — bounds 10 / 20 / 10 %. Holding all of μ at the box's edge (the
-    power-law structures' way) would be off by 220 % at low slip."""
+    """64 solver conditions just outside the box (``friction_study_75W90_outside.nc``,
+    ``benchmarks/friction_extrapolation.py``: 16 per slab, p_h 3–4.5 GPa, SR 0.001–0.01,
+    u_e 0.01–0.05 m/s, R 150–500 mm, the rest in the gear box): every one is flagged, and
+    the model's RMS relative error per slab is 10.5 / 5.9 / 11.7 / 10.3 % (worst +21 / +11
+    / +33 / −23 %; all 64 converged) — bounds 13 / 8 / 14 / 13 %."""
     study = read_netcdf(DATA_DIR / "friction_study_75W90_outside.nc", tree=False)
     d = study_inputs(study)
     points = study["point"].values[(study["status"].values == 0)
                                    & (study["friction_coefficient"].values > 0)]
-    assert points.size == 23
+    assert points.size == 64
     assert not friction_model_validity("kolivand2009", **_inputs(d)).any()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", FrictionModelRangeWarning)
         rel = kolivand2009(**_inputs(d), coefficients=fit) / d["friction_coefficient"] - 1.0
-    for k, bound in enumerate((0.10, 0.20, 0.10)):
-        m = (points >= 8 * k) & (points < 8 * (k + 1))
+    for k, bound in enumerate((0.13, 0.08, 0.14, 0.13)):
+        m = (points >= 16 * k) & (points < 16 * (k + 1))
         assert np.sqrt(np.mean(rel[m] ** 2)) <= bound, k
 
 
@@ -332,41 +319,46 @@ def _sliding_loss_error(mu, study, d, mask=None):
 def test_flank_shell_checked_against_the_solver(fit):
     """The gear flanks' contacts outside the box — the contact curves' light-load ends (p_h
     100–300 MPa) and the pitch line (|SR| 1e-4–0.01), R_eq down to 4 mm — solved by the
-    study's solver (``friction_study_75W90_flank.nc``: 132 conditions of the shell between
-    the gear box and ``GEAR_FLANK_RANGE``, 104 Sobol + 28 LHS, 8 passages, all converged;
-    never in the fit): every one is flagged, and μ's error weighted by the sliding power
-    per unit μ, w′·|SR|·u_e (the error of the sliding loss these contacts would make) is
-    6.9 % over all, 21 % at the light-load ends, 3.8 % at the pitch line (μ there is a
-    tiny film shear: median relative error 9 %; the light-load ends' 42 %, their
-    asperities carrying up to 60 % of a load whose Hertz zone is narrower than the
-    roughness's wavelengths). Bounds 10 / 25 / 6 %; xu2007 on the same conditions: 85 %
-    (it ignores the film's physics at low slip)."""
+    study's solver (``friction_study_75W90_flank.nc``: 200 Sobol conditions, seed 2010, of
+    the shell between the gear box and ``GEAR_FLANK_RANGE``, all converged; never in the
+    fit): every one is flagged, and μ's error weighted by the sliding power per unit μ,
+    w′·|SR|·u_e (the error of the sliding loss these contacts would make) is 20 % over
+    all, 36 % at the light-load ends, 6.3 % at the pitch line; the median relative errors
+    are 2.0 % and 4.5 %. The light-load ends' weighted error is one full-film condition's
+    (p_h 297 MPa, |SR| 1.89, u_e 18 m/s, λ 5.3: +57 %, 12 of the 20 points — the hot
+    corner of the held-out test). Bounds 25 / 45 / 8 %; xu2007 on the same conditions:
+    90 % (it ignores the film's physics at low slip): asserted ≤ half of it."""
     study = read_netcdf(DATA_DIR / "friction_study_75W90_flank.nc", tree=False)
     ok = (study["status"].values == 0) & (study["friction_coefficient"].values > 0)
-    assert ok.sum() == 132
+    assert ok.sum() == 200
     d = study_inputs(study)
     assert not friction_model_validity("kolivand2009", **_inputs(d)).any()
+    sr, ph, ue = (np.abs(d["slide_to_roll"]), d["hertz_pressure"],
+                  d["entraining_velocity"])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", FrictionModelRangeWarning)
         mu = kolivand2009(**_inputs(d), coefficients=fit)
-    sr, ph = np.abs(d["slide_to_roll"]), d["hertz_pressure"]
-    assert _sliding_loss_error(mu, study, d) <= 0.10
-    assert _sliding_loss_error(mu, study, d, (ph < 300.0) & (sr >= 0.01)) <= 0.25
-    assert _sliding_loss_error(mu, study, d, (sr < 0.01) & (ph >= 300.0)) <= 0.06
+        xu = friction_coefficient(
+            "xu2007", **_inputs(d), sliding_velocity=sr * ue,
+            load_per_length=study["load_per_length"].values[ok], e_prime=226373.6)
+    assert _sliding_loss_error(mu, study, d) <= 0.25
+    assert _sliding_loss_error(mu, study, d) <= 0.5 * _sliding_loss_error(xu, study, d)
+    assert _sliding_loss_error(mu, study, d, (ph < 300.0) & (sr >= 0.01)) <= 0.45
+    assert _sliding_loss_error(mu, study, d, (sr < 0.01) & (ph >= 300.0)) <= 0.08
 
 
 def test_edge_contacts_checked_against_the_solver(fit):
     """A rounded tooth edge on the mating flank — the LTCA's edge segments: R_eq ≈ the edge
     radius, p_h to the 5.3 GPa shakedown limit, λ down to 0.01 — solved by the study's
-    solver (``friction_study_75W90_edge.nc``: 48 LHS conditions of ``GEAR_EDGE_RANGE``,
-    R 0.3–1 mm, p_h 0.5–5.3 GPa, u_e 0.3–5 m/s, SR 0.2–2, 8 passages; never in the fit):
-    every one is flagged, and the error of the sliding loss (weighted by w′·|SR|·u_e) is
-    19 % (the model low: the solver's asperities carry more of an edge's load than the
-    fitted share gives), median relative error 18 %; xu2007 on the same conditions:
-    51 %; 47 of 48 converged. Bounds 25 % and half of xu2007's."""
+    solver (``friction_study_75W90_edge.nc``: 100 LHS conditions, seed 11, of
+    ``GEAR_EDGE_RANGE``, R 0.3–1 mm, p_h 0.5–5.3 GPa, u_e 0.3–5 m/s, SR 0.2–2; never in
+    the fit): every one is flagged, and the error of the sliding loss (weighted by
+    w′·|SR|·u_e) is 7.8 %, median relative error 7.0 % (the solver's asperities carry
+    23–99.98 % of an edge's load, the fitted share follows them); xu2007 on the same
+    conditions: 62 %; all 100 converged. Bounds 12 % and a fifth of xu2007's."""
     study = read_netcdf(DATA_DIR / "friction_study_75W90_edge.nc", tree=False)
     ok = (study["status"].values == 0) & (study["friction_coefficient"].values > 0)
-    assert ok.sum() == 47
+    assert ok.sum() == 100
     d = study_inputs(study)
     assert not friction_model_validity("kolivand2009", **_inputs(d)).any()
     sr, ue = np.abs(d["slide_to_roll"]), d["entraining_velocity"]
@@ -376,8 +368,8 @@ def test_edge_contacts_checked_against_the_solver(fit):
         xu = friction_coefficient(
             "xu2007", **_inputs(d), sliding_velocity=sr * ue,
             load_per_length=study["load_per_length"].values[ok], e_prime=226373.6)
-    assert _sliding_loss_error(mu, study, d) <= 0.25
-    assert _sliding_loss_error(mu, study, d) <= 0.5 * _sliding_loss_error(xu, study, d)
+    assert _sliding_loss_error(mu, study, d) <= 0.12
+    assert _sliding_loss_error(mu, study, d) <= 0.2 * _sliding_loss_error(xu, study, d)
 
 
 @pytest.mark.parametrize("name", ["default", "kolivand2009_table54_A_fh",
@@ -391,8 +383,8 @@ def test_gear_contacts_inside_the_range_or_flagged_with_why(name):
     R_eq 4–5 mm (the shell checked against the solver above), the edge segments (a rounded
     tooth edge on the mating flank, R_eq ≈ the edge radius, p_h to 5.3 GPa) as edges; the
     run's summary names both with their share of the load. Measured: flagged flank segments
-    carry 1.29 % (default), 1.08 % (A) and 0.80 % (B) of the load and 0.4–0.6 % of the
-    power loss; xu2007 flags 3.5–10.7 % of the flank load. Bound 2 %."""
+    carry 1.29 % (default), 1.39 % (A) and 1.52 % (B) of the load; xu2007 flags 5.2–11.0 %
+    of it. Bound 2 %."""
     import json
 
     from golden import GOLDEN
@@ -415,7 +407,7 @@ def test_gear_contacts_inside_the_range_or_flagged_with_why(name):
     assert np.isfinite(fr["friction_coefficient"].values[loaded]).all()
     flank = flag & loaded & ~edge
     ph = lt["pressure_max"].values
-    sr = np.abs(fr["slide_to_roll"].values)
+    sr = fr["slide_to_roll_total"].values
     radius = np.broadcast_to(lt["equivalent_radius"].values, force.shape)
     assert ((ph < 300.0) | (sr < 0.01) | (radius < 5.0))[flank].all()
     assert force[flank].sum() / force[loaded].sum() <= 0.02
@@ -428,22 +420,22 @@ def test_gear_contacts_inside_the_range_or_flagged_with_why(name):
 
 
 def test_outside_the_box_the_film_traction_extrapolates(fit):
-    """μ is continuous where the inputs leave the fitted box (p_h 3 GPa, R 120 mm, u_e
-    0.3 m/s, SR 0.01; jump < 1e-3 across ±0.01 %), and toward pure rolling the film's part
-    vanishes with μ_E, leaving the asperities' boundary share: μ(SR = 0) = μ_b ψ (1e-9),
-    below μ at the box's SR 0.01 (measured 0.0078 against 0.0248 at REF) — where holding
-    μ at the box's edge, as the power-law structures do, would keep the film's shear of
-    SR = 0.01 at any slip."""
+    """μ is continuous where the inputs leave the fitted box (p_h 3 GPa, R 150 mm, u_e
+    0.05 m/s, SR 0.01; jump < 1e-3 across ±0.01 %), and toward pure rolling the film's
+    part vanishes with μ_E, leaving the asperities' boundary share: μ(SR = 0) = μ_b ψ
+    (1e-9), below μ at the box's SR 0.01 (measured 0.040 against 0.052 at REF, λ 0.53,
+    where the asperities carry 40 % of the load) — where holding μ at the box's edge, as
+    the power-law structures do, would keep the film's shear of SR = 0.01 at any slip."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", FrictionModelRangeWarning)
-        for name, edge in (("hertz_pressure", 3000.0), ("radius", 120.0),
-                           ("entraining_velocity", 0.3), ("slide_to_roll", 0.01)):
+        for name, edge in (("hertz_pressure", 3000.0), ("radius", 150.0),
+                           ("entraining_velocity", 0.05), ("slide_to_roll", 0.01)):
             mu = kolivand2009(**dict(REF, **{name: edge * np.array([0.9999, 1.0001])}))
             assert abs(mu[1] / mu[0] - 1.0) < 1e-3, name
         slip = kolivand2009(**dict(REF, slide_to_roll=np.array([0.0, 0.01])))
     g = contact_groups(**dict(REF, slide_to_roll=0.01))
     assert slip[0] == pytest.approx(fit.boundary_friction * fit.asperity_share(g), rel=1e-9)
-    assert slip[0] < 0.5 * slip[1]
+    assert slip[0] < 0.85 * slip[1]
 
 
 def test_coefficient_file_round_trip(fit, tmp_path):
@@ -484,11 +476,11 @@ def test_malformed_coefficients_named(fit, tmp_path):
 def test_gear_segments_inside_the_range_or_flagged_with_the_reason():
     """The efficiency stage on the suite's default-case LTCA (60 and 240 N·m, 1500 rpm,
     90 °C, Rq 0.8 µm): every loaded segment has a finite μ, the flagged ones are those
-    outside the fitted box, the ``model_range_warnings`` attribute names every input concerned, and
-    the gear box covers more of this gear's contacts than xu2007's range. Measured: 41 %
-    flagged (λ below 0.020 at 260 of 836 loaded segments, R above 120 mm at 290, p_h above
-    3 GPa at 208 — edge contacts —, SR outside 0.01–1.5 at 178, u_e below 0.3 m/s at 128);
-    xu2007 over the same segments: 57 %. The bound pins the measured share."""
+    outside the fitted box, the ``model_range_warnings`` attribute names every input
+    concerned, and the gear box covers more of this gear's contacts than xu2007's range.
+    Measured: 41 % flagged (R above 150 mm at 290 of 836 loaded segments, p_h above 3 GPa
+    at 208 — edge contacts —, SR outside 0.01–2 at 172, λ below 0.0038 at 10); xu2007
+    over the same segments: 57 %. The bound pins the measured share."""
     import json
 
     from test_ltca import _run  # the suite's default-case LTCA (cached per session)
@@ -507,8 +499,7 @@ def test_gear_segments_inside_the_range_or_flagged_with_the_reason():
         flagged[model] = flag[loaded].mean()
         if model == "kolivand2009":
             why = " ".join(json.loads(fr.attrs["model_range_warnings"]))
-            for name in ("lambda", "radius", "hertz_pressure", "slide_to_roll",
-                         "entraining_velocity"):
+            for name in ("lambda", "radius", "hertz_pressure", "slide_to_roll"):
                 assert f"kolivand2009: {name} outside" in why, name
             assert np.isfinite(fr["friction_coefficient"].values[loaded]).all()
     assert 0.3 <= flagged["kolivand2009"] <= 0.45
