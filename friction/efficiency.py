@@ -112,7 +112,9 @@ def efficiency_analysis(
     -------
     xarray.Dataset
         The ``/friction`` dataset: over (``torque``, ``roll``, ``pair``, ``segment``)
-        ``sliding_velocity``, ``rolling_velocity`` [m/s], ``slide_to_roll`` [1],
+        ``sliding_velocity``, ``rolling_velocity`` [m/s], ``slide_to_roll`` [1] (signed,
+        across the contact line), ``slide_to_roll_total`` [1] (|V_s|/V_r: the friction
+        model's and the thermal factors' SR),
         ``film_thickness`` [µm], ``lambda_ratio`` [1], ``friction_coefficient`` [1],
         ``sliding_loss``, ``rolling_loss`` [W]; over (``torque``, ``roll``)
         ``power_loss`` [W] and ``efficiency`` [1]; over ``torque`` the cycle means
@@ -237,14 +239,16 @@ class _Segments(NamedTuple):
     radius: np.ndarray  # [mm] equivalent radius across the contact line
     sliding_velocity: np.ndarray  # [m/s]
     rolling_velocity: np.ndarray  # [m/s] entraining, across the contact line
-    slide_to_roll: np.ndarray  # [1] signed
+    slide_to_roll: np.ndarray  # [1] signed, sliding across the line / rolling
+    slide_to_roll_total: np.ndarray  # [1] |V_s| / V_r, the μ model's SR (seed Eq. 5.5, 5.7)
 
 
 def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
     """Which segments of ``ltca`` carry load (force finite and > 0), and of those their
     force [N], load per length [N/mm], peak pressure [MPa], length and equivalent radius
-    [mm], and their sliding and entraining speeds [m/s] and slide-to-roll ratio [1] at the
-    pinion speed [rpm] (:func:`friction.kinematics.surface_velocities`)."""
+    [mm], and their sliding and entraining speeds [m/s] and slide-to-roll ratios [1] — the
+    signed one across the contact line, and the total |V_s|/V_r the friction model is fed —
+    at the pinion speed [rpm] (:func:`friction.kinematics.surface_velocities`)."""
     F = ltca["force"].values  # (T, J, K, S)
     loaded = np.isfinite(F) & (F > 0)
     shape = F.shape
@@ -273,7 +277,25 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
         sliding_velocity=kin["sliding_velocity"],
         rolling_velocity=kin["rolling_velocity"],
         slide_to_roll=kin["slide_to_roll"],
+        slide_to_roll_total=_total_slide_to_roll(kin["sliding_velocity"],
+                                                 kin["rolling_velocity"]),
     )
+
+
+def _total_slide_to_roll(sliding: np.ndarray, rolling: np.ndarray) -> np.ndarray:
+    """|V_s|/V_r [1] from the total sliding speed |V_s| (seed Eq. 5.5, both components)
+    and the rolling speed across the contact line V_r (Eq. 5.6) [m/s]; +inf where V_r = 0
+    and the surfaces slide (0 where neither moves).
+
+    Why the total (docs/friction.md, "Which slide-to-roll ratio"): the film's shear
+    stress is η_eff |V_s|/h (seed Eq. 5.7, V_s of Eq. 5.5) — the oil is sheared by the
+    whole relative velocity, along the line as well as across it, and the Eyring stress
+    and the shear heat follow the magnitude of the shear rate — and the loss the μ is
+    multiplied by is μ F |V_s|. The line-contact study that μ is fitted to slides across
+    its line only, where the two ratios are one."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(rolling > 0.0, sliding / np.where(rolling > 0.0, rolling, 1.0),
+                        np.where(sliding > 0.0, np.inf, 0.0))
 
 
 class _Friction(NamedTuple):
@@ -298,7 +320,7 @@ def _film_and_friction(
     eta0, alpha = oil.viscosity, oil.pressure_viscosity
     beta, k_oil = oil.temperature_viscosity, oil.thermal_conductivity
     ph, w, R = seg.pressure_max, seg.load_per_length, seg.radius
-    vs, vr, sr = seg.sliding_velocity, seg.rolling_velocity, np.abs(seg.slide_to_roll)
+    vs, vr, sr = seg.sliding_velocity, seg.rolling_velocity, seg.slide_to_roll_total
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", FrictionModelRangeWarning)
         loading = thermal_loading(beta, eta0, vr, k_oil)
@@ -402,6 +424,10 @@ def _friction_dataset(
             dims4, _scatter(seg.slide_to_roll, loaded), "1",
             "slide-to-roll ratio across the contact line",
         ),
+        "slide_to_roll_total": data_var(
+            dims4, _scatter(seg.slide_to_roll_total, loaded), "1",
+            "total slide-to-roll ratio |V_s| / V_r (the friction model's input)",
+        ),
         "film_thickness": data_var(
             dims4, _scatter(fric.film_thickness, loaded), "um", "minimum film thickness"
         ),
@@ -462,7 +488,7 @@ def _range_by_contact(ltca: xr.Dataset, seg: _Segments, fric: _Friction) -> dict
                if kind is not None else np.zeros(seg.force.shape, bool))
     total = float(np.sum(seg.force)) or 1.0
     values = {"hertz_pressure": seg.pressure_max, "radius": seg.radius,
-              "lambda_ratio": fric.lambda_ratio, "slide_to_roll": np.abs(seg.slide_to_roll),
+              "lambda_ratio": fric.lambda_ratio, "slide_to_roll": seg.slide_to_roll_total,
               "entraining_velocity": seg.rolling_velocity}
     out = {}
     for name, mask in (("flank", ~is_edge), ("edge", is_edge)):

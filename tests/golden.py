@@ -7,7 +7,10 @@ First written before the restructuring of ``contact/`` into its layers (issue 20
 reproduced it; rewritten when the default case became the reference design
 ``kolivand2009_fm_11x41_reference`` (issue 19), an intended change of every result; and
 when ``kolivand2009`` became the default friction model (issue 34: ``/friction`` and the
-summary's efficiency changed, every other variable identical). It
+summary's efficiency changed, every other variable identical); and when ``kolivand2009``
+was refitted to the stochastic mixed-EHL solver and fed the total slide-to-roll ratio
+(issue 51: ``/friction`` — its new ``slide_to_roll_total`` — and the summary's efficiency
+changed, every other variable within the tolerances below). It
 guards every refactoring that must not change results: a new run must reproduce every
 variable and attribute but the timings and the file's creation stamp.
 
