@@ -472,7 +472,7 @@ def _friction_dataset(
 
 #: The inputs whose spans :func:`_range_by_contact` reports: name → (symbol, units, digits).
 _SPAN_INPUTS = {"hertz_pressure": ("p_h", "MPa", 0), "radius": ("R_eq", "mm", 2),
-                "lambda_ratio": ("λ", "", 3), "slide_to_roll": ("|SR|", "", 4),
+                "lambda_ratio": ("λ", "", 3), "slide_to_roll": ("|V_s|/V_r", "", 4),
                 "entraining_velocity": ("u_e", "m/s", 2)}
 
 
@@ -481,8 +481,9 @@ def _range_by_contact(ltca: xr.Dataset, seg: _Segments, fric: _Friction) -> dict
     curves: line contact of two flanks, what a line-contact study covers) and ``edge``
     (a rounded tooth edge on the mating flank, R_eq ≈ the edge radius) — each with its
     loaded and flagged segment counts, the flagged share of the load [1] and the spans
-    (min, max) of p_h [MPa], R_eq [mm], λ, |SR| [1] and u_e [m/s] over the flagged ones: what
-    lies outside the model's range, and where (the flag says why)."""
+    (min, max) of p_h [MPa], R_eq [mm], λ, the total slide-to-roll ratio |V_s|/V_r [1]
+    and u_e [m/s] over the flagged ones: what lies outside the model's range, and where
+    (the flag says why)."""
     kind = ltca["segment_kind"].values if "segment_kind" in ltca else None
     is_edge = (np.broadcast_to(kind != "curve", seg.loaded.shape)[seg.loaded]
                if kind is not None else np.zeros(seg.force.shape, bool))

@@ -478,9 +478,10 @@ def test_gear_segments_inside_the_range_or_flagged_with_the_reason():
     90 °C, Rq 0.8 µm): every loaded segment has a finite μ, the flagged ones are those
     outside the fitted box, the ``model_range_warnings`` attribute names every input
     concerned, and the gear box covers more of this gear's contacts than xu2007's range.
-    Measured: 41 % flagged (R above 150 mm at 290 of 836 loaded segments, p_h above 3 GPa
-    at 208 — edge contacts —, SR outside 0.01–2 at 172, λ below 0.0038 at 10); xu2007
-    over the same segments: 57 %. The bound pins the measured share."""
+    Measured: 39 % flagged (R below 5 mm at 290 of 836 loaded segments, p_h above 3 GPa
+    at 208 — edge contacts —, the total slide-to-roll ratio |V_s|/V_r outside 0.01–2 at
+    232, λ below 0.0038 at 10); xu2007 over the same segments: 59 %. The bound pins the
+    measured share."""
     import json
 
     from test_ltca import _run  # the suite's default-case LTCA (cached per session)
