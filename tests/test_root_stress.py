@@ -188,6 +188,7 @@ def test_root_stress_in_the_analysis(tmp_path, monkeypatch):
     (one without has none). ~15 s: the coarse models of this module put in a fresh
     cache, the small LTCA three times."""
     from contact.compliance.fe import CACHE_ENV, cache_key, cache_path
+    from contact.compliance.fe.cache import write_cache_entry
     from contact.pipeline import run_analysis
     from contact.plots.analysis import analysis_specs
     from contact.plots.report import SUMMARY_COLUMNS
@@ -198,7 +199,7 @@ def test_root_stress_in_the_analysis(tmp_path, monkeypatch):
     case = resolve_case(None)
     for member, ds in _coefficients().items():
         key = cache_key(case.member(member), ds.attrs["flank"], COARSE)
-        ds.assign_attrs(cache_key=key).to_netcdf(cache_path(key), engine="netcdf4")
+        write_cache_entry(ds, cache_path(key), key)
 
     def no_build(*args, **kwargs):
         raise AssertionError("rebuilt instead of read from the cache")
@@ -246,6 +247,7 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     bending side is available (root life finite, S_F = σ_FE / the peak bin's largest
     fillet stress, to round-off)."""
     from contact.compliance.fe import CACHE_ENV, cache_key, cache_path
+    from contact.compliance.fe.cache import write_cache_entry
     from contact.durability import peak_fillet_stress, sn_curves
     from contact.pipeline import run_analysis
     from contact.study import StudyRun
@@ -256,7 +258,7 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     case = resolve_case(None)
     for member, ds in _coefficients().items():
         key = cache_key(case.member(member), ds.attrs["flank"], COARSE)
-        ds.assign_attrs(cache_key=key).to_netcdf(cache_path(key), engine="netcdf4")
+        write_cache_entry(ds, cache_path(key), key)
     duty = DutyCycle(torque=[100.0, 250.0], speed=[2000.0, 1000.0], revolutions=[1e7, 1e6])
     out = run_duty_cycle(case, duty, StudyRun(options=SMALL, scheduler="synchronous"),
                          root_stress=COARSE)

@@ -13,36 +13,74 @@ The directory is, in order: the ``cache_dir`` argument, the environment variable
 (``platformdirs.user_cache_dir("hypoid-ltca")``, e.g. ``~/.cache/hypoid-ltca`` on
 Linux) with ``fe/`` below it.
 
+A cache entry is data, checked like input. Every entry is written by
+:func:`write_cache_entry`, which stores two global attributes: ``cache_key`` (the key of
+its file name) and ``data_sha256`` (:data:`CHECKSUM_ATTR`, a SHA-256 of the bytes of every
+data variable and coordinate, :func:`data_checksum`). Every entry is read by
+:func:`read_cache_entry`, which uses it only if it is a readable netCDF file, holds the
+expected key, matches its checksum and holds finite values only; any other entry is
+renamed aside (``fe-<key>.nc.corrupt-<UTC time>``, a name the lookup never matches,
+kept for inspection), one warning naming the file and the reason is logged, and the
+caller builds and caches the coefficients again.
+
 Public names
 ------------
-CACHE_ENV        the environment variable naming the cache directory
-FORMAT_VERSION   version of the file layout (part of every key)
-cache_directory  the directory in use
-cache_key        the key of one member's coefficients
-cache_path       the file of a key
+CACHE_ENV          the environment variable naming the cache directory
+CHECKSUM_ATTR      the global attribute holding an entry's data checksum
+FORMAT_VERSION     version of the file layout (part of every key)
+cache_directory    the directory in use
+cache_key          the key of one member's coefficients
+cache_path         the file of a key
+data_checksum      SHA-256 of a dataset's data variables and coordinates
+read_cache_entry   an entry's dataset if it passes every check, else None (set aside)
+write_cache_entry  write an entry atomically, with its key and checksum
 """
 
 from __future__ import annotations
 
 import dataclasses
+import datetime
 import hashlib
 import json
+import logging
 import os
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import platformdirs
+import xarray as xr
 
 from geometry import __version__
+from geometry.core.atomic_files import atomic_path
+from geometry.core.errors import LTCAError
 
-__all__ = ["CACHE_ENV", "FORMAT_VERSION", "cache_directory", "cache_key", "cache_path"]
+__all__ = [
+    "CACHE_ENV",
+    "CHECKSUM_ATTR",
+    "FORMAT_VERSION",
+    "cache_directory",
+    "cache_key",
+    "cache_path",
+    "data_checksum",
+    "read_cache_entry",
+    "write_cache_entry",
+]
+
+log = logging.getLogger(__name__)
 
 #: environment variable that overrides the default cache directory
 CACHE_ENV = "HYPOID_LTCA_CACHE"
 #: version of the cached files' layout and of the model that made them (2: the slot
 #: bottoms rounded continuously along the face, element counts from the root size;
-#: 3: fillet_in_root); part of every key
-FORMAT_VERSION = 3
+#: 3: fillet_in_root; 4: the data checksum ``data_sha256``); part of every key, so the
+#: entries of an older format simply miss (another file name) and are built again (the
+#: old files are left where they are, never read)
+FORMAT_VERSION = 4
+#: global attribute of an entry holding the SHA-256 (hex) of its data (:func:`data_checksum`)
+CHECKSUM_ATTR = "data_sha256"
+#: the suffix before the UTC time of an entry set aside (``fe-<key>.nc.corrupt-<time>``)
+_ASIDE_SUFFIX = ".corrupt-"
 
 
 def cache_directory(cache_dir: str | os.PathLike[str] | None = None) -> Path:
@@ -92,3 +130,197 @@ def cache_key(member, flank: str, options, *, version: str = __version__) -> str
 def cache_path(key: str, cache_dir: str | os.PathLike[str] | None = None) -> Path:
     """The file of an entry: ``<cache directory>/fe-<key>.nc``."""
     return cache_directory(cache_dir) / f"fe-{key}.nc"
+
+
+# ------------------------------------------------------------------ checked entries
+def _canonical(values: Any) -> tuple[str, Any]:
+    """An array's type tag and bytes, the same in memory and read back from netCDF: numbers
+    and booleans little-endian and C-ordered; strings (``<U``, ``S`` or object arrays of
+    str, which a netCDF round trip interchanges) as the JSON of their flat list."""
+    arr = np.asarray(values)
+    if arr.dtype.kind in "OUS":
+        items = [x.decode("utf-8") if isinstance(x, bytes) else str(x) for x in arr.ravel()]
+        return "str", json.dumps(items, ensure_ascii=False).encode("utf-8")
+    dtype = arr.dtype.newbyteorder("<")
+    return dtype.str, memoryview(np.ascontiguousarray(arr, dtype=dtype)).cast("B")
+
+
+def data_checksum(ds: xr.Dataset) -> str:
+    """SHA-256 (hex) of a dataset's data: every data variable and coordinate.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The dataset (loaded or lazily read; its values are read).
+
+    Returns
+    -------
+    str
+        64 hexadecimal digits over, in a fixed order (the data variables by name, then the
+        coordinates by name), each variable's name, dimensions, shape, type and value
+        bytes (:func:`_canonical`). Attributes are not covered (the key is checked by
+        itself); the same for a dataset in memory and its netCDF file read back.
+    """
+    h = hashlib.sha256()
+    groups = (("data", ds.data_vars), ("coord", ds.coords))
+    for group, variables in groups:
+        for name in sorted(map(str, variables)):
+            var = variables[name].variable
+            tag, data = _canonical(var.values)
+            head = json.dumps([group, name, list(map(str, var.dims)), list(var.shape), tag])
+            h.update(head.encode("utf-8"))
+            h.update(len(data).to_bytes(8, "little"))
+            h.update(data)
+    return h.hexdigest()
+
+
+def _nonfinite(ds: xr.Dataset) -> str | None:
+    """The name of the first float data variable (by name) holding NaN or ±inf, or None."""
+    for name in sorted(map(str, ds.data_vars)):
+        values = ds[name].values
+        if values.dtype.kind in "fc" and not np.all(np.isfinite(values)):
+            return name
+    return None
+
+
+def write_cache_entry(ds: xr.Dataset, path: str | os.PathLike[str], key: str) -> xr.Dataset:
+    """Write a cache entry atomically, with its key and data checksum.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The influence coefficients (:func:`contact.compliance.fe.influence_dataset`).
+    path : path-like
+        The entry's file, normally ``cache_path(key)``; its directory is created.
+    key : str
+        The entry's key (:func:`cache_key`), stored as the attribute ``cache_key``.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``ds`` with the attributes ``cache_key`` and :data:`CHECKSUM_ATTR` (``data_sha256``)
+        set: what :func:`read_cache_entry` gives back from the file.
+
+    Raises
+    ------
+    LTCAError
+        A float data variable holds NaN or ±inf (named): such an entry would never be
+        used, so it is not written.
+    OSError
+        The file cannot be written (the cache's old file, if any, is left as it was:
+        :func:`geometry.core.atomic_files.atomic_path`).
+    """
+    path = Path(path)
+    bad = _nonfinite(ds)
+    if bad is not None:
+        raise LTCAError(f"FE influence coefficients: '{bad}' holds non-finite values; "
+                        f"not cached in {path}")
+    out = ds.assign_attrs({"cache_key": key, CHECKSUM_ATTR: data_checksum(ds)})
+    path.parent.mkdir(parents=True, exist_ok=True)
+    enc = {name: {"zlib": True, "complevel": 4} for name in out.data_vars}
+    with atomic_path(path) as tmp:
+        out.to_netcdf(tmp, engine="netcdf4", encoding=enc)
+    return out
+
+
+def _identity(st: os.stat_result) -> tuple[int, int, int, int]:
+    return st.st_dev, st.st_ino, st.st_size, st.st_mtime_ns
+
+
+def _set_aside(path: Path, seen: tuple[int, int, int, int], reason: str) -> None:
+    """Rename a failed entry aside (``<name>.corrupt-<UTC time>``) and log one warning."""
+    stamp = datetime.datetime.now(datetime.UTC).strftime("%Y%m%dT%H%M%S.%fZ")
+    aside = path.with_name(f"{path.name}{_ASIDE_SUFFIX}{stamp}")
+    n = 1
+    while aside.exists():
+        aside = path.with_name(f"{path.name}{_ASIDE_SUFFIX}{stamp}-{n}")
+        n += 1
+    try:
+        if _identity(path.stat()) != seen:
+            log.warning("FE cache entry %s %s; it was replaced meanwhile (left in place) and "
+                        "is rebuilt", path, reason)
+            return
+        path.rename(aside)
+    except FileNotFoundError:
+        log.warning("FE cache entry %s %s; already set aside by another process, rebuilt",
+                    path, reason)
+        return
+    except OSError as exc:
+        log.warning("FE cache entry %s %s; could not be set aside (%s), rebuilt", path,
+                    reason, exc.strerror or type(exc).__name__)
+        return
+    log.warning("FE cache entry %s %s; set aside as %s and rebuilt", path, reason, aside)
+
+
+def _check(path: Path, key: str) -> tuple[xr.Dataset | None, str | None]:
+    """(dataset, None) if the entry passes every check, else (None, the reason)."""
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            ds = ds.load()
+    except (OSError, ValueError, RuntimeError, KeyError, IndexError, TypeError,
+            AttributeError) as exc:
+        log.debug("FE cache entry %s: reading failed", path, exc_info=exc)
+        return None, "is unreadable (not a complete netCDF file)"
+    found = ds.attrs.get("cache_key")
+    if found != key:
+        return None, ("holds another key (a foreign entry)" if found
+                      else "has no cache key (a foreign file)")
+    stored = ds.attrs.get(CHECKSUM_ATTR)
+    if not isinstance(stored, str) or not stored:
+        return None, "is corrupt (no data checksum)"
+    if data_checksum(ds) != stored:
+        return None, "is corrupt (checksum mismatch)"
+    bad = _nonfinite(ds)
+    if bad is not None:
+        return None, f"holds non-finite values (in '{bad}')"
+    return ds, None
+
+
+def read_cache_entry(path: str | os.PathLike[str], key: str) -> xr.Dataset | None:
+    """An entry's coefficients if the entry can be trusted, else None (and set aside).
+
+    The checks, in order: the file is a readable netCDF file; its ``cache_key`` attribute
+    is ``key`` (else a foreign entry); its data's checksum (:func:`data_checksum`) equals
+    the stored :data:`CHECKSUM_ATTR` (else corrupt; a missing checksum too); every float
+    data variable is finite. An entry failing one is renamed to
+    ``<name>.corrupt-<UTC time>`` beside it (kept, and never matched by the lookup) and
+    one warning naming the file and the reason is logged; the caller builds and caches
+    the coefficients again.
+
+    Parameters
+    ----------
+    path : path-like
+        The entry's file, normally ``cache_path(key)``.
+    key : str
+        The expected key (:func:`cache_key`, 64 hexadecimal digits).
+
+    Returns
+    -------
+    xarray.Dataset or None
+        The loaded dataset (attributes ``cache_key`` and ``data_sha256`` included), or
+        None if the file does not exist (a miss: nothing logged) or fails a check.
+
+    Raises
+    ------
+    OSError
+        Only if the file's status cannot be read (e.g. the cache directory is not
+        accessible); a bad entry never raises.
+
+    Notes
+    -----
+    An entry that cannot be renamed aside (permissions), or that another process replaced
+    meanwhile, is left in place (the warning says so) and overwritten atomically by the
+    rebuilt entry. The data are checked at every read (the hash takes ~0.05 s per 100 MB,
+    little beside reading the compressed file;
+    :func:`contact.compliance.fe.contact_compliance.shared_coefficients` reads a file
+    once per process).
+    """
+    path = Path(path)
+    try:
+        seen = _identity(path.stat())
+    except FileNotFoundError:
+        return None
+    ds, reason = _check(path, key)
+    if ds is None:
+        _set_aside(path, seen, reason or "failed a check")
+    return ds

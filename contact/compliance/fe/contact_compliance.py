@@ -67,7 +67,7 @@ import numpy as np
 import scipy.sparse as sp
 import xarray as xr
 
-from contact.compliance.fe.cache import cache_key, cache_path
+from contact.compliance.fe.cache import cache_key, cache_path, read_cache_entry
 from contact.compliance.fe.influence import influence_coefficients
 from contact.compliance.fe.options import FEOptions, member_flank
 from contact.compliance.fe.superposition import locate_flank_points
@@ -120,17 +120,14 @@ _MEMO_SIZE = 4  # coefficient files kept in memory by _read_cached (two designs'
 
 
 @functools.lru_cache(maxsize=_MEMO_SIZE)
-def _read_cached(path: str, mtime_ns: int, key: str) -> xr.Dataset | None:
-    """A cache file's coefficients, read once per process and file version (path and
-    modification time): a study's worker analyses many points of one design. None if the
-    file holds another key or cannot be read (then the caller goes through
-    :func:`influence_coefficients`, which rebuilds it)."""
-    try:
-        with xr.open_dataset(path, engine="netcdf4") as ds:
-            ds = ds.load()
-    except (OSError, ValueError):
-        return None
-    return ds if ds.attrs.get("cache_key") == key else None
+def _read_cached(path: str, stamp: tuple[int, int, int], key: str) -> xr.Dataset | None:
+    """A cache file's coefficients, read and checked once per process and file version
+    (path, and the file's inode, size and modification time: a study's worker analyses
+    many points of one design). None if the entry fails a check of
+    :func:`contact.compliance.fe.cache.read_cache_entry` (which sets it aside and logs
+    why; then the caller goes through :func:`influence_coefficients`, which rebuilds it)
+    or vanished meanwhile."""
+    return read_cache_entry(path, key)
 
 
 def shared_coefficients(case, member: str, flank: str = "drive",
@@ -147,15 +144,17 @@ def shared_coefficients(case, member: str, flank: str = "drive",
     Returns
     -------
     xarray.Dataset — as :func:`contact.compliance.fe.influence_coefficients`; an existing
-        cache file's dataset is kept in memory (the last 4 files, keyed by path and
-        modification time) and the same object returned to every caller of the process:
-        read-only.
+        cache file's dataset, once checked, is kept in memory (the last 4 files, keyed
+        by path, inode, size and modification time) and the same object returned to
+        every caller of the process: read-only.
 
     Raises
     ------
     InputError, LTCAError, ModelUnavailableError
         As :func:`contact.compliance.fe.influence_coefficients` (which builds and caches
-        the coefficients when no file is found).
+        the coefficients when no file is found, or when the file fails a check of
+        :func:`contact.compliance.fe.cache.read_cache_entry`: unreadable, foreign,
+        corrupt or not finite; such a file is set aside and never used).
 
     Notes
     -----
@@ -167,8 +166,12 @@ def shared_coefficients(case, member: str, flank: str = "drive",
     if cache and isinstance(opt, FEOptions):
         key = cache_key(case.member(member), member_flank(case, member, flank), opt)
         path = cache_path(key, cache_dir)
-        if path.exists():
-            ds = _read_cached(str(path), path.stat().st_mtime_ns, key)
+        try:
+            st = path.stat()
+        except FileNotFoundError:
+            pass
+        else:
+            ds = _read_cached(str(path), (st.st_ino, st.st_size, st.st_mtime_ns), key)
             if ds is not None:
                 return ds
     return influence_coefficients(case, member, flank, options, cache=cache,

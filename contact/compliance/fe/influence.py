@@ -52,7 +52,12 @@ import scipy.sparse as sp
 import xarray as xr
 from tqdm.auto import tqdm
 
-from contact.compliance.fe.cache import cache_key, cache_path
+from contact.compliance.fe.cache import (
+    cache_key,
+    cache_path,
+    read_cache_entry,
+    write_cache_entry,
+)
 from contact.compliance.fe.elasticity import (
     ElasticModel,
     Factorisation,
@@ -64,7 +69,6 @@ from contact.compliance.fe.mapped_mesh import FacetPoints, facet_points
 from contact.compliance.fe.options import ELEMENTS, FEOptions, member_flank
 from contact.compliance.fe.solid import ToothSolid, build_tooth_solid
 from geometry import __version__
-from geometry.core.atomic_files import atomic_path
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, LTCAError
 from geometry.machine.flank import projection_fractions
@@ -636,18 +640,24 @@ def influence_coefficients(case, member: str, flank: str = "drive",
 
     Returns
     -------
-    xarray.Dataset — see :func:`influence_dataset`; the attribute ``cache_key`` names it.
+    xarray.Dataset — see :func:`influence_dataset`; the attribute ``cache_key`` names it,
+        ``data_sha256`` is its data's checksum (when cached).
 
     Raises
     ------
     InputError, LTCAError, ModelUnavailableError
-        As :func:`build_influence_model`; an unreadable cache file is rebuilt (logged).
+        As :func:`build_influence_model`; LTCAError also if the built coefficients hold
+        non-finite values (not cached). A cache entry that is unreadable, foreign,
+        corrupt or not finite is never used: it is set aside, one warning logged, and the
+        coefficients rebuilt (:func:`contact.compliance.fe.cache.read_cache_entry`).
 
     Notes
     -----
-    Written atomically (geometry.atomic_files): a file in the cache is always complete.
-    The key covers the member's generating inputs, the working flank, the options and the
-    toolkit version (:func:`contact.compliance.fe.cache.cache_key`).
+    Written atomically (geometry.atomic_files): a file in the cache is always complete,
+    and carries a checksum of its data
+    (:func:`contact.compliance.fe.cache.write_cache_entry`). The key covers the member's
+    generating inputs, the working flank, the options and the toolkit version
+    (:func:`contact.compliance.fe.cache.cache_key`).
     """
     opt = options if options is not None else FEOptions()
     if not isinstance(opt, FEOptions):
@@ -655,23 +665,15 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     name = member_flank(case, member, flank)
     key = cache_key(case.member(member), name, opt)
     path = cache_path(key, cache_dir)
-    if cache and path.exists():
-        try:
-            with xr.open_dataset(path, engine="netcdf4") as ds:
-                ds = ds.load()
-            if ds.attrs.get("cache_key") == key:
-                log.info("%s %s influence coefficients read from %s", case.name, member, path)
-                return ds
-            log.warning("%s: cache file holds another key; rebuilding", path)
-        except (OSError, ValueError) as exc:
-            log.warning("%s: unreadable cache file (%s); rebuilding", path, exc)
+    if cache:
+        ds = read_cache_entry(path, key)
+        if ds is not None:
+            log.info("%s %s influence coefficients read from %s", case.name, member, path)
+            return ds
     model = build_influence_model(case, member, name, opt, solver=solver)
     ds = influence_dataset(model, case, progress=progress, key=key)
     if cache:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        enc = {k: {"zlib": True, "complevel": 4} for k in ds.data_vars}
-        with atomic_path(path) as tmp:
-            ds.to_netcdf(tmp, engine="netcdf4", encoding=enc)
+        ds = write_cache_entry(ds, path, key)
         log.info("%s %s influence coefficients cached in %s", case.name, member, path)
     return ds
 

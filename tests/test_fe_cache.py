@@ -1,0 +1,292 @@
+"""The FE influence-coefficient cache checks its entries like input (issue 55 item 4).
+
+An entry (contact.compliance.fe.cache) is used only if it is a readable netCDF file under
+the expected key whose data match the SHA-256 stored with them and are finite; any other
+entry is renamed aside (kept), one warning names the file and the reason, and the
+coefficients are built again. The reader and writer are tested on small synthetic
+datasets (building real coefficients takes seconds to minutes); the end-to-end paths
+through ``influence_coefficients`` and ``shared_coefficients`` replace the FE build by a
+tiny dataset (monkeypatched where the module looks it up) and count the builds.
+"""
+
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from contact.catalogue import resolve_case
+from contact.compliance.fe import FEOptions, cache_key, cache_path, member_flank
+from contact.compliance.fe.cache import (
+    CHECKSUM_ATTR,
+    FORMAT_VERSION,
+    data_checksum,
+    read_cache_entry,
+    write_cache_entry,
+)
+from geometry.core.errors import LTCAError
+
+LOGGER = "contact.compliance.fe.cache"
+KEY = "a" * 64
+
+
+def _tiny(seed: int = 0) -> xr.Dataset:
+    """A small dataset shaped like the coefficients: floats, an int8 flag, int and string
+    coordinates, attributes."""
+    rng = np.random.default_rng(seed)
+    return xr.Dataset(
+        {"compliance": (("load_u", "u"), rng.random((6, 7)), {"units": "mm/N"}),
+         "fillet_in_root": (("u",), (rng.random(7) > 0.5).astype(np.int8))},
+        coords={"load_u": np.linspace(0.05, 0.95, 6), "u": np.linspace(0.05, 0.95, 7),
+                "tooth": ("tooth", np.array([-1, 0, 1], dtype=np.int32)),
+                "side": ("side", np.array(["concave", "convex"]))},
+        attrs={"title": "synthetic coefficients"})
+
+
+def _warnings(caplog) -> list[logging.LogRecord]:
+    return [r for r in caplog.records if r.name == LOGGER and r.levelno >= logging.WARNING]
+
+
+def _aside(path: Path) -> list[Path]:
+    return sorted(path.parent.glob(f"{path.name}.corrupt-*"))
+
+
+def _written(tmp_path: Path) -> tuple[Path, xr.Dataset]:
+    path = tmp_path / f"fe-{KEY}.nc"
+    return path, write_cache_entry(_tiny(), path, KEY)
+
+
+def test_written_entry_reads_back_with_key_and_checksum(tmp_path, caplog):
+    # the writer stamps cache_key and data_sha256 (the checksum of the in-memory data);
+    # the reader gives back the identical dataset (the checksum survives the netCDF round
+    # trip, string coordinates included) and logs nothing; the file is left in place
+    caplog.set_level(logging.DEBUG, logger=LOGGER)
+    path, written = _written(tmp_path)
+    assert written.attrs["cache_key"] == KEY
+    assert written.attrs[CHECKSUM_ATTR] == data_checksum(_tiny())
+    assert len(written.attrs[CHECKSUM_ATTR]) == 64
+    back = read_cache_entry(path, KEY)
+    assert back is not None
+    xr.testing.assert_identical(back, written)
+    assert data_checksum(back) == written.attrs[CHECKSUM_ATTR]
+    assert not _warnings(caplog) and not _aside(path) and path.is_file()
+
+
+def test_checksum_covers_every_value_and_coordinate():
+    # one ulp in a data variable, one changed coordinate value or string, a renamed
+    # variable each change the checksum; the attributes do not
+    ds = _tiny()
+    ref = data_checksum(ds)
+    bumped = ds.copy(deep=True)
+    bumped["compliance"].values[2, 3] = np.nextafter(bumped["compliance"].values[2, 3], 2.0)
+    assert data_checksum(bumped) != ref
+    assert data_checksum(ds.assign_coords(tooth=np.array([-1, 0, 2], dtype=np.int32))) != ref
+    assert data_checksum(ds.assign_coords(side=np.array(["concave", "convey"]))) != ref
+    assert data_checksum(ds.rename({"compliance": "compliance2"})) != ref
+    assert data_checksum(ds.assign_attrs(title="other")) == ref
+
+
+def test_missing_entry_is_a_quiet_miss(tmp_path, caplog):
+    # no file: None, nothing logged, nothing created
+    caplog.set_level(logging.DEBUG, logger=LOGGER)
+    assert read_cache_entry(tmp_path / f"fe-{KEY}.nc", KEY) is None
+    assert not _warnings(caplog) and list(tmp_path.iterdir()) == []
+
+
+def test_writer_refuses_non_finite_data(tmp_path):
+    # coefficients holding NaN would never be used: not written, the variable named
+    ds = _tiny()
+    ds["compliance"].values[0, 0] = np.nan
+    path = tmp_path / f"fe-{KEY}.nc"
+    with pytest.raises(LTCAError, match="'compliance' holds non-finite values"):
+        write_cache_entry(ds, path, KEY)
+    assert not path.exists()
+
+
+def _flip_coordinate_bytes(path: Path, ds: xr.Dataset) -> None:
+    """Invert a byte inside the stored values of coordinate ``u`` (written uncompressed, so
+    its little-endian bytes are in the file): the file stays readable, its data change."""
+    raw = bytearray(path.read_bytes())
+    needle = np.ascontiguousarray(ds["u"].values, dtype="<f8").tobytes()
+    at = raw.find(needle)
+    assert at >= 0 and raw.find(needle, at + 1) < 0
+    raw[at + 3 * 8 + 2] ^= 0xFF
+    path.write_bytes(bytes(raw))
+
+
+def _truncate(path: Path, ds: xr.Dataset) -> None:
+    """Keep the first half of the file (an interrupted copy, a full disk)."""
+    raw = path.read_bytes()
+    path.write_bytes(raw[: len(raw) // 2])
+
+
+def _nan_old_checksum(path: Path, ds: xr.Dataset) -> None:
+    """Overwrite a variable with NaN and rewrite the file keeping the old attributes (key
+    and checksum): what the issue's NaN-holding cache file was."""
+    bad = ds.copy(deep=True)
+    bad["compliance"].values[:] = np.nan
+    bad.to_netcdf(path, engine="netcdf4")
+
+
+def _nan_new_checksum(path: Path, ds: xr.Dataset) -> None:
+    """NaN data with a checksum that matches them (a writer that did not check)."""
+    bad = ds.copy(deep=True)
+    bad["compliance"].values[1, :] = np.nan
+    bad.assign_attrs({CHECKSUM_ATTR: data_checksum(bad)}).to_netcdf(path, engine="netcdf4")
+
+
+def _foreign_key(path: Path, ds: xr.Dataset) -> None:
+    """A valid entry of another key under this key's name."""
+    write_cache_entry(ds, path, "b" * 64)
+
+
+def _no_checksum(path: Path, ds: xr.Dataset) -> None:
+    """The right key but no checksum (written as before FORMAT_VERSION 4)."""
+    old = ds.copy()
+    old.attrs = {"cache_key": KEY}
+    old.to_netcdf(path, engine="netcdf4")
+
+
+def _no_key(path: Path, ds: xr.Dataset) -> None:
+    """Some other netCDF file under this key's name (no cache_key attribute)."""
+    other = ds.copy()
+    other.attrs = {}
+    other.to_netcdf(path, engine="netcdf4")
+
+
+@pytest.mark.parametrize(("damage", "reason"), [
+    (_flip_coordinate_bytes, "is corrupt (checksum mismatch)"),
+    (_truncate, "is unreadable (not a complete netCDF file)"),
+    (_nan_old_checksum, "is corrupt (checksum mismatch)"),
+    (_nan_new_checksum, "holds non-finite values (in 'compliance')"),
+    (_foreign_key, "holds another key (a foreign entry)"),
+    (_no_key, "has no cache key (a foreign file)"),
+    (_no_checksum, "is corrupt (no data checksum)"),
+], ids=["flipped-bytes", "truncated", "nan-old-checksum", "nan-own-checksum", "foreign-key",
+        "no-key", "no-checksum"])
+def test_bad_entry_is_set_aside_with_one_warning(tmp_path, caplog, damage, reason):
+    # a damaged entry is never used: the reader returns None, logs exactly one warning
+    # naming the file, the reason and where it went, and renames the file aside (kept,
+    # byte for byte) to a name the lookup never matches: a second read is a quiet miss
+    caplog.set_level(logging.DEBUG, logger=LOGGER)
+    path, written = _written(tmp_path)
+    damage(path, written)
+    bad_bytes = path.read_bytes()
+    assert read_cache_entry(path, KEY) is None
+    records = _warnings(caplog)
+    assert len(records) == 1, [r.getMessage() for r in records]
+    msg = records[0].getMessage()
+    aside = _aside(path)
+    assert len(aside) == 1
+    assert msg == f"FE cache entry {path} {reason}; set aside as {aside[0]} and rebuilt"
+    assert "Error" not in msg and "errno" not in msg.lower()  # no raw library text
+    assert not path.exists() and aside[0].read_bytes() == bad_bytes
+    caplog.clear()
+    assert read_cache_entry(path, KEY) is None
+    assert not _warnings(caplog)
+
+
+def test_entries_set_aside_twice_keep_both(tmp_path, caplog):
+    # two bad versions of one entry set aside one after the other are both kept (the
+    # names never collide, even within one clock tick)
+    caplog.set_level(logging.WARNING, logger=LOGGER)
+    path = tmp_path / f"fe-{KEY}.nc"
+    for _ in range(2):
+        path.write_bytes(b"not a netCDF file")
+        assert read_cache_entry(path, KEY) is None
+    assert len(_aside(path)) == 2 and len(_warnings(caplog)) == 2
+
+
+def test_format_version_is_part_of_the_key():
+    # the checksum came with format 4: entries of older formats are under other keys
+    # (they simply miss and are rebuilt)
+    case = resolve_case(None)
+    member = case.member("gear")
+    assert FORMAT_VERSION >= 4
+    assert cache_key(member, "convex", FEOptions()) == cache_key(member, "convex", FEOptions())
+    import contact.compliance.fe.cache as cache_mod
+
+    old = cache_mod.FORMAT_VERSION
+    try:
+        cache_mod.FORMAT_VERSION = 3
+        older = cache_key(member, "convex", FEOptions())
+    finally:
+        cache_mod.FORMAT_VERSION = old
+    assert older != cache_key(member, "convex", FEOptions())
+
+
+# ------------------------------------------------------------------ end to end, no FE build
+class _Builds:
+    """Stand-ins for build_influence_model/influence_dataset: count the builds and give a
+    tiny dataset under the key asked for."""
+
+    def __init__(self):
+        self.count = 0
+
+    def model(self, *args, **kwargs):
+        self.count += 1
+        return "model"
+
+    def dataset(self, model, case, *, progress=True, key=""):
+        assert model == "model"
+        return _tiny(seed=self.count).assign_attrs(cache_key=key)
+
+
+@pytest.fixture
+def fake_build(monkeypatch, tmp_path):
+    builds = _Builds()
+    monkeypatch.setattr("contact.compliance.fe.influence.build_influence_model", builds.model)
+    monkeypatch.setattr("contact.compliance.fe.influence.influence_dataset", builds.dataset)
+    case = resolve_case(None)
+    key = cache_key(case.member("gear"), member_flank(case, "gear", "drive"), FEOptions())
+    return builds, case, cache_path(key, tmp_path), key
+
+
+def test_influence_coefficients_rebuilds_a_corrupt_entry_once(fake_build, tmp_path, caplog):
+    # influence_coefficients: a first call builds and caches (with checksum); the issue's
+    # NaN-overwritten file is not used: one warning, exactly one rebuild, a new entry that
+    # passes every check; the next call reads it (no build)
+    from contact.compliance.fe import influence_coefficients
+
+    builds, case, path, key = fake_build
+    caplog.set_level(logging.WARNING, logger=LOGGER)
+    first = influence_coefficients(case, "gear", cache_dir=tmp_path, progress=False)
+    assert builds.count == 1 and first.attrs[CHECKSUM_ATTR] == data_checksum(first)
+    _nan_old_checksum(path, first)
+    again = influence_coefficients(case, "gear", cache_dir=tmp_path, progress=False)
+    assert builds.count == 2
+    assert np.isfinite(again["compliance"].values).all()
+    assert len(_warnings(caplog)) == 1 and "checksum mismatch" in caplog.text
+    assert len(_aside(path)) == 1
+    caplog.clear()
+    xr.testing.assert_identical(read_cache_entry(path, key), again)
+    third = influence_coefficients(case, "gear", cache_dir=tmp_path, progress=False)
+    assert builds.count == 2 and not _warnings(caplog)
+    xr.testing.assert_identical(third, again)
+
+
+def test_shared_coefficients_rebuilds_a_corrupt_entry_once(fake_build, tmp_path, caplog):
+    # shared_coefficients (the LTCA's and the root stress's reader, memoised per file):
+    # a truncated entry is set aside with one warning (not a second one from
+    # influence_coefficients), rebuilt exactly once, and the new entry read and kept in
+    # memory: later calls neither build nor warn and return the same object
+    from contact.compliance.fe.contact_compliance import _read_cached, shared_coefficients
+
+    builds, case, path, key = fake_build
+    _read_cached.cache_clear()
+    caplog.set_level(logging.WARNING, logger=LOGGER)
+    write_cache_entry(_tiny(seed=7), path, key)
+    _truncate(path, None)
+    got = shared_coefficients(case, "gear", cache_dir=tmp_path)
+    assert builds.count == 1
+    assert len(_warnings(caplog)) == 1 and "is unreadable" in caplog.text
+    assert len(_aside(path)) == 1
+    caplog.clear()
+    first = shared_coefficients(case, "gear", cache_dir=tmp_path)
+    xr.testing.assert_identical(first, got)
+    assert shared_coefficients(case, "gear", cache_dir=tmp_path) is first
+    assert builds.count == 1 and not _warnings(caplog)
+    _read_cached.cache_clear()
