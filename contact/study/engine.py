@@ -55,7 +55,7 @@ import numpy as np
 import xarray as xr
 
 from contact.study.points import POINT_INPUTS, StudyInputs, check_point, misalignment_of
-from contact.study.store import ResultStore
+from contact.study.store import ChunkSpec, ResultStore
 from contact.study.summary import (
     STATUS_MEANINGS,
     SUMMARY_VARIABLES,
@@ -333,7 +333,10 @@ def run_points(
     output : path-like, optional
         Final netCDF file. Finished points stream to ``OUTPUT.parts/`` and a study
         started again with the same output resumes (:class:`~contact.study.store.
-        ResultStore`); the directory must exist. None: results kept in memory.
+        ResultStore`); the directory must exist. None: results kept in memory. A chunk
+        of the parts that is not this study's (unreadable, other variables, inputs or
+        dims, NaN LTE at an ``ok`` point) is named in a warning, moved to
+        ``OUTPUT.parts/set-aside/`` and its points computed again.
     scheduler, n_workers
         Where to run (:func:`open_client`): default a LocalCluster, one process per core.
     progress : bool
@@ -356,7 +359,8 @@ def run_points(
     ------
     InputError
         An unknown or non-finite input, no points, parts of another study at
-        ``OUTPUT.parts``, a bad scheduler or worker count.
+        ``OUTPUT.parts``, a bad scheduler or worker count, points missing from the parts
+        after the run (a chunk set aside meanwhile: the study started again computes them).
     """
     if not points:
         raise InputError("points: a study needs at least one point")
@@ -383,7 +387,8 @@ def run_points(
             raise InputError(f"output: directory {str(out.parent)!r} does not exist")
         manifest = {"fingerprint": shared.fingerprint(), "kind": kind, "inputs": names,
                     "points": [[p[n] for n in names] for p in pts]}
-        store = ResultStore(out, manifest, chunk_size=chunk_size)
+        store = ResultStore(out, manifest, chunk_size=chunk_size,
+                            spec=_chunk_spec(shared, names, pts))
         done = store.done()
         if done:
             log.info("resuming %s: %d of %d points already computed", out, len(done),
@@ -399,7 +404,9 @@ def run_points(
         ds = store.combined()
         if ds.sizes["point"] != len(pts):
             raise InputError(f"output: {ds.sizes['point']} of {len(pts)} points in "
-                             f"{str(store.parts)!r} after the run")
+                             f"{str(store.parts)!r} after the run (a chunk failed its "
+                             "check, see the warning); start the study again to compute "
+                             "the missing points")
     else:
         ds = xr.concat(kept, dim="point")
         ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
@@ -420,6 +427,33 @@ def run_points(
                                       {"long_name": "gear member"}))
     ds["reason"] = ds["reason"].astype(str)
     return _stamp(ds, shared, kind, len(done))
+
+
+#: summaries finite at every point whose ``status`` is 0 (every roll position certified,
+#: so the LTE of every torque is defined); NaN there is a damaged chunk, not a result
+_FINITE_WHEN_OK = ("lte_mean", "lte_peak_to_peak")
+
+
+def _chunk_spec(shared: StudyInputs, names: Sequence[str],
+                pts: Sequence[Mapping[str, float]]) -> ChunkSpec:
+    """What the chunks of a study's parts hold (:func:`_point_dataset`): the summaries,
+    ``status`` and ``reason``; the points' inputs ``names`` as coordinates; the summaries'
+    dims of this study's torques and speeds; finite LTE summaries where ``status`` is 0."""
+    sizes = {"torque": len(shared.torque), "harmonic": 3,
+             "speed": max(len(shared.speed), 1), "member": 2}
+
+    def dims_of_study(ds: xr.Dataset) -> str | None:
+        other = {d: n for d, n in ds.sizes.items() if d != "point"}
+        wrong = sorted(d for d in other if sizes.get(d) != other[d])
+        if wrong:
+            return (f"has dimension(s) {', '.join(wrong)} of other sizes than this "
+                    "study's torques, speeds and summaries")
+        return None
+
+    return ChunkSpec(points=len(pts), variables=(*SUMMARY_VARIABLES, "status", "reason"),
+                     finite=_FINITE_WHEN_OK,
+                     coords={n: np.array([float(p[n]) for p in pts]) for n in names},
+                     check=dims_of_study)
 
 
 def stream_tasks(function: Any, shared: Any, items: Sequence[tuple],

@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from contact.study.store import ResultStore
+from contact.study.store import ChunkSpec, ResultStore
 from friction.study.design import DESIGN_INPUTS, check_design
 from friction.study.points import (
     POINT_STATUS,
@@ -128,6 +128,12 @@ def _point_dataset(index: int, point: Mapping[str, float], res: PointOutcome) ->
     return xr.Dataset(data, coords=coords)
 
 
+#: result scalars set at every converged point (``status`` 0): NaN there is a damaged
+#: chunk, never a result. Not ``pressure_max``: the steady solver (and a smooth point)
+#: reports none, so it is NaN at converged points of those modes
+_FINITE_WHEN_CONVERGED = tuple(k for k in RESULT_VARIABLES if k != "pressure_max")
+
+
 def run_friction_study(
     design: Mapping[str, Any],
     settings: SolveSettings | None = None,
@@ -154,6 +160,9 @@ def run_friction_study(
         started again with the same output, design and settings computes only the missing
         points. The final file is written by the caller (``geometry.core.io.write_netcdf``,
         then ``ResultStore.remove_parts``) — the command ``ltca friction-study`` does both.
+        A chunk of the parts that is not this study's (unreadable, other variables or
+        inputs, NaN results at a converged point) is named in a warning, moved to
+        ``OUTPUT.parts/set-aside/`` and its points solved again.
     scheduler, n_workers
         Where to run (:func:`contact.study.engine.open_client`): None a LocalCluster of
         ``n_workers`` processes, ``"synchronous"`` this process, an address a cluster.
@@ -174,7 +183,8 @@ def run_friction_study(
     ------
     InputError
         A bad design (named input), parts of another study at ``OUTPUT.parts``, a missing
-        output directory, a bad scheduler or worker count.
+        output directory, a bad scheduler or worker count, points missing from the parts
+        after the run (a chunk set aside meanwhile: the study started again solves them).
     """
     from contact.study.engine import stream_tasks
 
@@ -183,7 +193,7 @@ def run_friction_study(
     if not isinstance(settings, SolveSettings):
         raise InputError(f"settings: must be a friction.study.points.SolveSettings, got "
                          f"{type(settings).__name__}")
-    pts = check_design(design)
+    pts = check_design(design, lubricant=settings.lubricant)  # the oil and its temperatures
     n = next(iter(pts.values())).size
     points = [{k: float(pts[k][i]) for k in DESIGN_INPUTS} for i in range(n)]
     provenance = study_provenance(settings, dict(design_attrs or {}))  # the code that runs
@@ -196,7 +206,10 @@ def run_friction_study(
         rows = json.dumps([[p[k] for k in DESIGN_INPUTS] for p in points])
         manifest = {"kind": "friction_study", "settings": settings.as_dict(),
                     "design": hashlib.sha256(rows.encode()).hexdigest(), "points": n}
-        store = ResultStore(out, manifest, chunk_size=chunk_size)
+        spec = ChunkSpec(points=n, variables=(*RESULT_VARIABLES, "status", "reason"),
+                         finite=_FINITE_WHEN_CONVERGED,
+                         coords={k: np.array([p[k] for p in points]) for k in DESIGN_INPUTS})
+        store = ResultStore(out, manifest, chunk_size=chunk_size, spec=spec)
         done = store.done()
         if done:
             log.info("resuming %s: %d of %d points already solved", out, len(done), n)
@@ -208,7 +221,9 @@ def run_friction_study(
     ds = store.combined() if store is not None else xr.concat(kept, dim="point")
     ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
     if ds.sizes["point"] != n:
-        raise InputError(f"output: {ds.sizes['point']} of {n} points after the run")
+        raise InputError(f"output: {ds.sizes['point']} of {n} points after the run (a "
+                         "chunk of the parts failed its check, see the warning); start the "
+                         "study again to solve the missing points")
     ds["reason"] = ds["reason"].astype(str)
     ds.attrs = {
         "title": "hypoid-ltca friction study: mixed-EHL line contacts over a design "
