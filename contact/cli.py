@@ -81,17 +81,22 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 _NEGATIVE_VALUE = re.compile(r"^-\.?\d")
+#: what argparse itself reads as a negative number, not an option (its own pattern)
+_PLAIN_NEGATIVE = re.compile(r"^-\d+$|^-\d*\.\d+$")
 
 
 def attach_negative_values(argv: Sequence[str]) -> list[str]:
     """``--opt -0.2:0.2:21`` → ``--opt=-0.2:0.2:21``: argparse reads a value that starts
-    with ``-`` but is not a plain number (a range such as ``-0.2:0.2:21`` or a list
-    ``-0.1,0.1``) as an option; attached with ``=`` it is the option's value."""
+    with ``-`` but is not a plain number (a range such as ``-0.2:0.2:21``, a list
+    ``-0.1,0.1`` or ``-1e-3``) as an option; attached with ``=`` it is the option's value.
+    A plain negative number (``-0.3``) is left for argparse, which takes it as a value —
+    also as the first of an option's several values (``--roughness -0.3 0.3``), which an
+    attached ``=`` would cut off."""
     out: list[str] = []
     for token in argv:
         prev = out[-1] if out else ""
-        if (_NEGATIVE_VALUE.match(token) and prev.startswith("--") and "=" not in prev
-                and len(prev) > 2):
+        if (_NEGATIVE_VALUE.match(token) and not _PLAIN_NEGATIVE.match(token)
+                and prev.startswith("--") and "=" not in prev and len(prev) > 2):
             out[-1] = f"{prev}={token}"
         else:
             out.append(token)

@@ -50,6 +50,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.toml_files import read_toml
 from geometry.core.validation import real, real_array, scalar_or_array
 
 __all__ = [
@@ -822,7 +823,9 @@ def load_lubricant(path_or_name: str | Path) -> Lubricant:
     ModelUnavailableError
         Neither a bundled name nor an existing file (the message lists the bundled names).
     InputError
-        The file is not valid TOML or fails validation (the message names the field).
+        The file is not UTF-8 text (e.g. a binary file), not valid TOML, or fails
+        validation (a missing field, a NaN or non-positive property: the message names the
+        file and the field).
 
     Notes
     -----
@@ -840,8 +843,9 @@ def load_lubricant(path_or_name: str | Path) -> Lubricant:
             raise ModelUnavailableError(
                 f"no lubricant named or at {str(path_or_name)!r}; bundled: {available_lubricants()}"
             )
-        text = path.read_text(encoding="utf-8")
-        origin = str(path)
+        # one reader for input files: a binary, non-UTF-8 or invalid file is refused in
+        # one line naming it (geometry.core.toml_files.read_toml)
+        return lubricant_from_mapping(read_toml(path, "lubricant file"), str(path))
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

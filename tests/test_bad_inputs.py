@@ -144,7 +144,7 @@ def _cli_cases(tmp: Path, make: bool = True) -> list[tuple[str, list, list[str]]
         ("torque-negative", ["run", "--torque", "-50", "-o", tmp / "r.nc"], ["torque"]),
         ("torque-zero", ["run", "--torque", "0", "-o", tmp / "r.nc"], ["torque"]),
         ("rolls-zero", ["run", "--rolls-per-cycle", "0", "-o", tmp / "r.nc"],
-         ["rolls_per_cycle"]),
+         ["--rolls-per-cycle", "[4, 400]"]),
         ("segments-one", ["run", "--segments", "1", "-o", tmp / "r.nc"], ["segments"]),
         ("solver-unknown", ["run", "--solver", "magic", "-o", tmp / "r.nc"], ["magic"]),
         ("dsigma-huge", ["run", "--dSigma", "20", "-o", tmp / "r.nc"], ["delta_Sigma"]),

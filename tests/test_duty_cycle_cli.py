@@ -46,6 +46,13 @@ def test_duty_cycle_command_writes_group_and_figures(tmp_path, capsys):
     # test turns it off; tests/test_root_stress.py runs it on coarse FE options) and said
     # to be unavailable when off
     assert "bending side unavailable" in text
+    # edge contact at 300 N·m on the default design: the summary says its pressures are
+    # not pitting damage, with the edges' share and peak pressure (issue 55); so does the
+    # report
+    assert "edge pressures are NOT counted in the pitting damage" in text
+    assert "p_max edge [MPa]" in text
+    assert "NOT counted in the pitting damage" in (tmp_path / "d.html").read_text(
+        encoding="utf-8")
     tree = read_netcdf(out)
     ds = tree["/duty_cycle"].to_dataset()
     for name in ("damage", "life", "flank_damage", "cycle_efficiency", "energy_in"):

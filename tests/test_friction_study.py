@@ -131,7 +131,7 @@ def test_design_box_read_back_from_the_study_files():
     (lambda: space_filling_design(8, method="lhs", skip=2), r"^skip: only the Sobol"),
     (lambda: check_design({"radius": [1.0]}), r"^design: inputs must be"),
     (lambda: check_design({**{k: [1.0] for k in DESIGN_INPUTS}, "hertz_pressure": [-1.0]}),
-     r"^hertz_pressure: must be > 0 \[MPa\], got -1"),
+     r"^hertz_pressure: must be in \(0, 6000\] \[MPa\], got -1"),
     (lambda: check_design({**{k: [0.5] for k in DESIGN_INPUTS}, "slide_to_roll": [3.0]}),
      r"^slide_to_roll: must be in \[-2, 2\]"),
     (lambda: check_design({**{k: [0.5] for k in DESIGN_INPUTS}, "roughness_2": [np.nan]}),
@@ -143,14 +143,18 @@ def test_bad_input_named(call, match):
         call()
 
 
-def test_unknown_oil_is_a_failed_point_not_a_crash():
-    """A point the solver refuses is a row with status input_refused and the reason."""
-    out = solve_design_point(SolveSettings(lubricant="no-such-oil"), 3,
+def test_refused_point_is_a_failed_point_not_a_crash():
+    """An unknown oil is refused when the settings are made, before any work (issue 55); a
+    point the solver refuses (here a temperature outside the oil's data) is a row with
+    status input_refused and the reason."""
+    with pytest.raises(InputError, match=r"^lubricant: no lubricant named or at"):
+        SolveSettings(lubricant="no-such-oil")
+    out = solve_design_point(SolveSettings(), 3,
                              {**{k: 0.5 for k in DESIGN_INPUTS}, "hertz_pressure": 800.0,
                               "radius": 20.0, "entraining_velocity": 5.0,
-                              "temperature": 50.0})
+                              "temperature": 200.0})
     assert out.status == 2 and out.index == 3
-    assert out.reason.startswith("InputError: lubricant")
+    assert out.reason.startswith("InputError: temperature")
     assert np.isnan(out.values["friction_coefficient"])
 
 

@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from contact.commands.options import (
+    count,
     misalignment_options,
     output_option,
     progress_option,
@@ -57,7 +58,7 @@ def register(sub) -> None:
     )
     p.add_argument(
         "--repeats",
-        type=int,
+        type=count(1, 100),
         default=None,
         help="runs per (solver, problem); the fastest counts (default 3 with --quick, else 1)",
     )
@@ -112,7 +113,7 @@ def run(args: argparse.Namespace) -> int:
         solvers,
         accuracy=args.accuracy,
         polish=not args.no_polish,
-        repeats=args.repeats or (3 if args.quick else 1),
+        repeats=args.repeats if args.repeats is not None else (3 if args.quick else 1),
         progress=not args.no_progress,
     )
     summary = summarize(results)

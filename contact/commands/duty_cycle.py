@@ -7,6 +7,7 @@ import math
 
 from contact.commands.options import (
     case_argument,
+    count,
     default_output,
     flank_option,
     output_option,
@@ -35,7 +36,7 @@ def register(sub) -> None:
         "streams to OUTPUT.parts and resumes). Damage by Miner's rule on the ISO 6336-2/-3 "
         "S-N curves of the members' material, one load cycle per tooth mesh. Without "
         "--duty the case's [duty_cycle] table is used, and for a case without one the "
-        "bundled ILLUSTRATIVE axle spectrum (7 bins, 10-100 %% of the case's top torque).",
+        "bundled ILLUSTRATIVE axle spectrum (7 bins, 10-100 % of the case's top torque).",
     )
     case_argument(p, what="analyse")
     p.add_argument("--duty", default=None, metavar="FILE",
@@ -43,7 +44,7 @@ def register(sub) -> None:
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler of an existing cluster (e.g. tcp://host:8786), or "
                    "'synchronous' (this process); default a local cluster")
-    p.add_argument("--workers", type=int, default=None, metavar="N",
+    p.add_argument("--workers", type=count(1, 1024), default=None, metavar="N",
                    help="workers of the local cluster (default one per core)")
     flank_option(p)
     solver_option(p)
@@ -75,7 +76,7 @@ def run(args: argparse.Namespace) -> int:
 
     from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options
-    from contact.study.duty_cycle import bin_table, run_duty_cycle
+    from contact.study.duty_cycle import bin_table, edge_note, run_duty_cycle
     from contact.study.duty_cycle_inputs import example_duty_cycle, read_duty_cycle
     from contact.study.run import StudyRun
     from geometry.core.errors import InputError
@@ -106,11 +107,16 @@ def run(args: argparse.Namespace) -> int:
     rows = [(i, f"{r['torque']:g}", f"{r['speed']:g}", f"{r['hours']:.4g}",
              f"{r['lte_mean']:.1f}", f"{r['lte_peak_to_peak']:.2f}",
              f"{r['pressure_max_flank']:.0f}", f"{100 * r['edge_load_share']:.1f}",
+             _fmt(r['pressure_max_edge'], '.0f') if r['edge_load_share'] > 0 else "-",
              f"{100 * r['efficiency']:.3f}", f"{r['power_loss']:.1f}")
             for i, r in enumerate(bin_table(ds))]
     print(tabulate(rows, headers=["bin", "T [N m]", "n [rpm]", "t [h]", "LTE [urad]",
-                                  "LTE p-p [urad]", "p_max [MPa]", "edge [%]", "eff [%]",
-                                  "loss [W]"], tablefmt="github"))
+                                  "LTE p-p [urad]", "p_max flank [MPa]", "edge [%]",
+                                  "p_max edge [MPa]", "eff [%]", "loss [W]"],
+                   tablefmt="github"))
+    note = edge_note(ds)
+    if note:
+        print(note)
     print(f"cycle: energy in {float(ds['cycle_energy_in']):.1f} kW h, lost "
           f"{float(ds['cycle_energy_lost']):.3f} kW h, efficiency "
           f"{100 * float(ds['cycle_efficiency']):.3f} %")

@@ -8,6 +8,7 @@ from pathlib import Path
 from contact.commands.options import (
     case_argument,
     checked_outputs,
+    count,
     flank_option,
     misalignment_from_args,
     misalignment_options,
@@ -49,7 +50,7 @@ def register(sub) -> None:
     plots_option(p)
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run the torques on the Dask cluster at ADDRESS (tcp://host:8786)")
-    p.add_argument("--workers", type=int, default=None, metavar="N",
+    p.add_argument("--workers", type=count(1, 1024), default=None, metavar="N",
                    help="run the torques on a local Dask cluster of N processes "
                         "(default: in this process)")
     progress_option(p)

@@ -6,6 +6,7 @@ import argparse
 import math
 from pathlib import Path
 
+from contact.commands.options import count
 from contact.commands.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
@@ -55,7 +56,7 @@ def register(sub) -> None:
     p.add_argument("--isothermal", action="store_true",
                    help="stochastic: the film's shear at the inlet temperature, without the "
                    "surfaces' flash temperature")
-    p.add_argument("--nodes", type=int, default=None,
+    p.add_argument("--nodes", type=count(16, 16384), default=None,
                    help="grid nodes (default: smooth, from Moes's M; stochastic 512 over the "
                    "rough contact's spread; resolved 256 from the smooth film's pressure "
                    "onset to 1.5 Hertz half-widths, or 1024 over -4 ... 1.5 with --steady)")
@@ -68,6 +69,48 @@ def register(sub) -> None:
     p.add_argument("-o", "--output", default="ehl.nc", metavar="FILE",
                    help="netCDF file to write (default %(default)s)")
     p.set_defaults(func=run)
+
+
+#: [um] the largest RMS roughness of one surface (a rough-turned flank; ground and lapped
+#: flanks are 0.1-1 um)
+MAX_ROUGHNESS = 5.0
+
+
+def check_inputs(args: argparse.Namespace) -> None:
+    """Refuse, before any work, an input outside what the line-contact solvers are valid
+    for, in one line naming the option, the value and the accepted range: the Hertz
+    pressure (0, 6] GPa (:data:`friction.ehl.line_contact.MAX_HERTZ_PRESSURE`), the radius
+    [0.01, 5000] mm, the entraining velocity (0, 100] m/s, the slide-to-roll ratio
+    [-2, 2] (both surfaces moving the oil in), the oil (a bundled name or a valid oil
+    file) and the temperature inside its data's range, the roughness [0, 5] um and the
+    grid's nodes."""
+    from friction.ehl.line_contact import (
+        MAX_ENTRAINING_VELOCITY,
+        MAX_HERTZ_PRESSURE,
+        RADIUS_RANGE,
+        lubricant_of,
+    )
+    from friction.lubricant import temperature_range
+    from geometry.core.errors import InputError
+    from geometry.core.validation import integer, real
+
+    real("--pressure", args.pressure, unit="GPa", low=0.0, low_open=True,
+         high=MAX_HERTZ_PRESSURE * 1e-3)
+    real("--radius", args.radius, unit="mm", low=RADIUS_RANGE[0], high=RADIUS_RANGE[1])
+    real("--speed", args.speed, unit="m/s", low=0.0, low_open=True,
+         high=MAX_ENTRAINING_VELOCITY)
+    real("--slide-to-roll", args.slide_to_roll, unit="1", low=-2.0, high=2.0)
+    try:
+        oil = lubricant_of(args.lubricant)
+    except InputError as exc:
+        raise InputError(f"--lubricant: {str(exc).removeprefix('lubricant: ')}") from None
+    lo, hi = temperature_range(oil)
+    real("--temperature", args.temperature, unit="degC", low=lo, high=hi)
+    for label, rq in zip(("RQ1", "RQ2"), args.roughness, strict=True):
+        real(f"--roughness {label}", rq, unit="um", low=0.0, high=MAX_ROUGHNESS)
+    if args.nodes is not None:
+        integer("--nodes", args.nodes, low=16, high=16384)
+    real("--courant", args.courant, low=0.0, low_open=True, high=10.0)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -92,22 +135,13 @@ def run(args: argparse.Namespace) -> int:
         default_transient_grid,
         solve_transient_line_contact,
     )
-    from geometry.core.errors import InputError
     from geometry.core.io import write_netcdf
 
     check_output_file(args.output)
-    if not args.pressure > 0.0 or not math.isfinite(args.pressure):
-        raise InputError(f"--pressure: must be > 0 GPa, got {args.pressure}")
-    if not args.radius > 0.0 or not math.isfinite(args.radius):
-        raise InputError(f"--radius: must be > 0 mm, got {args.radius}")
+    check_inputs(args)
     ph = args.pressure * 1e3                                  # [MPa]
     load = 2.0 * math.pi * args.radius * ph**2 / STEEL_E_PRIME  # w′ = π b p_h/2 [N/mm]
     rq1, rq2 = args.roughness
-    for name, rq in (("--roughness RQ1", rq1), ("--roughness RQ2", rq2)):
-        if not 0.0 <= rq <= 50.0:
-            raise InputError(f"--roughness: {name.split()[-1]} must be in [0, 50] um, got {rq}")
-    if args.nodes is not None and not 16 <= args.nodes <= 16384:
-        raise InputError(f"--nodes: must be in [16, 16384], got {args.nodes}")
     rough = rq1 > 0.0 or rq2 > 0.0
     fields = dict(load_per_length=load, radius=args.radius, entraining_velocity=args.speed,
                   slide_to_roll=args.slide_to_roll, temperature=args.temperature,

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from contact.commands.options import progress_option
+from contact.commands.options import count, progress_option
 
 #: Place in ``ltca --help``.
 ORDER = 61
@@ -27,9 +27,9 @@ def register(sub) -> None:
     p.add_argument("--design", choices=("sobol", "lhs", "factorial"), default="sobol",
                    help="space-filling sample of the box, or Table 5.1's full factorial grid "
                    "(31,500 conditions: a cluster's job) (default %(default)s)")
-    p.add_argument("-n", "--points", type=int, default=128, metavar="N",
+    p.add_argument("-n", "--points", type=count(1, 10_000_000), default=128, metavar="N",
                    help="conditions of a sobol/lhs design (default %(default)s)")
-    p.add_argument("--seed", type=int, default=2009,
+    p.add_argument("--seed", type=count(0, 2**32 - 1), default=2009,
                    help="seed of the sampler (default %(default)s; held-out points: another "
                    "seed and --design lhs)")
     p.add_argument("--box", choices=("table_5_1", "gear", "gear_flank", "gear_edge"),
@@ -43,9 +43,9 @@ def register(sub) -> None:
                    metavar="BOX",
                    help="sobol/lhs: pass over the points inside this box (a study that "
                    "extends one already run in it, e.g. --box gear_flank --exclude-box gear)")
-    p.add_argument("--skip", type=int, default=0, metavar="K",
+    p.add_argument("--skip", type=count(0, 10**9), default=0, metavar="K",
                    help="sobol: continue the sequence after its first K points")
-    p.add_argument("--nodes", type=int, default=512,
+    p.add_argument("--nodes", type=count(64, 16384), default=512,
                    help="solver grid nodes (stochastic: over the rough contact's spread; "
                    "transient: from the smooth film's pressure onset to 1.5 Hertz "
                    "half-widths; steady: over -4 ... 1.5) (default %(default)s)")
@@ -66,10 +66,10 @@ def register(sub) -> None:
                    "surfaces' flash temperature")
     p.add_argument("--average", type=float, default=2.0, metavar="T",
                    help="transient: averaging window in units of b/u_e (default %(default)s)")
-    p.add_argument("--max-iterations", type=int, default=60, metavar="N",
+    p.add_argument("--max-iterations", type=count(1, 10000), default=60, metavar="N",
                    help="Newton iterations per time step (transient) or roughness step "
                    "(steady) before a point counts as not converged (default %(default)s)")
-    p.add_argument("--realisations", type=int, default=1, metavar="K",
+    p.add_argument("--realisations", type=count(1, 32), default=1, metavar="K",
                    help="roughness realisations per condition, their converged results "
                    "averaged (default %(default)s)")
     p.add_argument("--lubricant", default="75W90", metavar="NAME",
@@ -77,7 +77,7 @@ def register(sub) -> None:
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler of an existing cluster (e.g. tcp://host:8786), or "
                    "'synchronous' (this process); default a local cluster")
-    p.add_argument("--workers", type=int, default=None, metavar="N",
+    p.add_argument("--workers", type=count(1, 1024), default=None, metavar="N",
                    help="workers of the local cluster (default one per core)")
     p.add_argument("-o", "--output", default="friction_study.nc", metavar="FILE",
                    help="netCDF file to write (default %(default)s)")
@@ -94,11 +94,12 @@ def run(args: argparse.Namespace) -> int:
     from friction.study.design import (
         DESIGN_BOX_TEXT,
         DESIGN_BOXES,
+        check_design,
         factorial_design,
         space_filling_design,
     )
     from friction.study.points import SolveSettings
-    from geometry.core.errors import InputError
+    from geometry.core.errors import InputError, StudyFailedError
     from geometry.core.io import write_netcdf
 
     check_output_file(args.output)
@@ -117,11 +118,15 @@ def run(args: argparse.Namespace) -> int:
         if exclude is not None:
             attrs["box"] += f"; outside {DESIGN_BOX_TEXT[args.exclude_box]}"
     attrs["points"] = int(next(iter(design.values())).size)
-    settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
-                             lubricant=args.lubricant, realisations=args.realisations,
-                             mode=args.mode, courant=args.courant, average=args.average,
-                             viscosity_model=args.viscosity_model,
-                             thermal=not args.isothermal)
+    try:
+        settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
+                                 lubricant=args.lubricant, realisations=args.realisations,
+                                 mode=args.mode, courant=args.courant, average=args.average,
+                                 viscosity_model=args.viscosity_model,
+                                 thermal=not args.isothermal)
+    except InputError as exc:
+        raise InputError(_option(str(exc))) from None
+    check_design(design, lubricant=settings.lubricant)  # every condition in the oil's range
     ds = run_friction_study(design, settings, design_attrs=attrs, output=args.output,
                             scheduler=args.scheduler, n_workers=args.workers,
                             progress=not args.no_progress)
@@ -133,4 +138,24 @@ def run(args: argparse.Namespace) -> int:
     span = f", mu {np.min(mu):.4f}-{np.max(mu):.4f}" if mu.size else ""
     print(f"{ds.sizes['point']} conditions, {int(ok.sum())} converged{span}, "
           f"wall time {ds.attrs['wall_time']:.0f} s -> {path}")
+    if not ok.any():
+        # a condition that does not converge is a result; a study of which none converges
+        # is an error (its file keeps every point's reason)
+        reasons = [str(r) for r in ds["reason"].values]
+        raise StudyFailedError(
+            f"none of the {ds.sizes['point']} conditions converged; the first (point "
+            f"{int(ds['point'].values[0])}): {reasons[0] or 'no reason recorded'} "
+            f"(every point's reason: the 'reason' variable of {str(path)!r})")
     return 0
+
+
+#: SolveSettings' fields that are this command's options (the message names the option)
+_OPTIONS = {"lubricant": "--lubricant", "nodes": "--nodes", "max_iterations": "--max-iterations",
+            "realisations": "--realisations", "courant": "--courant", "average": "--average"}
+
+
+def _option(message: str) -> str:
+    """A :class:`SolveSettings` refusal with its field named as the command's option
+    (``max_iterations: ...`` → ``--max-iterations: ...``); other messages as they are."""
+    field, sep, rest = message.partition(":")
+    return f"{_OPTIONS[field]}{sep}{rest}" if sep and field in _OPTIONS else message

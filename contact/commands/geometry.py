@@ -7,6 +7,7 @@ from pathlib import Path
 
 from contact.commands.options import (
     case_argument,
+    count,
     default_output,
     deprecated_alias,
     output_option,
@@ -29,8 +30,9 @@ def register(sub) -> None:
     )
     case_argument(p, what="generate")
     output_option(p, default="<case>_geometry.nc")
-    p.add_argument("--nu", type=int, default=41, help="lengthwise grid points (default 41)")
-    p.add_argument("--nv", type=int, default=21, help="profile grid points (default 21)")
+    p.add_argument("--nu", type=count(3, 2001), default=41,
+                   help="lengthwise grid points (default 41)")
+    p.add_argument("--nv", type=count(3, 2001), default=21, help="profile grid points (default 21)")
     p.add_argument("--solid", metavar="FILE.stl", default=None,
                    help="also write each member's FE solid (the loaded tooth, its neighbours, "
                    "fillets, rim; contact.compliance.fe) as binary STL: FILE_pinion.stl and "
@@ -45,8 +47,9 @@ def register(sub) -> None:
     plots_option(q, default=".")
     deprecated_alias(q, "--output-dir", "--plots", "plots")
     deprecated_alias(q, "-o", "--plots", "plots")
-    q.add_argument("--nu", type=int, default=41, help="lengthwise grid points (default 41)")
-    q.add_argument("--nv", type=int, default=21, help="profile grid points (default 21)")
+    q.add_argument("--nu", type=count(3, 2001), default=41,
+                   help="lengthwise grid points (default 41)")
+    q.add_argument("--nv", type=count(3, 2001), default=21, help="profile grid points (default 21)")
     q.set_defaults(func=run_plot_geometry)
 
 

@@ -17,6 +17,7 @@ import tomllib
 from pathlib import Path
 
 from contact.commands import options
+from contact.commands.options import count
 from contact.commands.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
@@ -65,9 +66,9 @@ def register(sub) -> None:
                    metavar=("LOW", "HIGH"), help="LTE peak-to-peak range [urad]")
     p.add_argument("--method", choices=list(METHODS), default=None,
                    help="optimiser (default differential_evolution)")
-    p.add_argument("--max-evaluations", type=int, default=None, metavar="N",
+    p.add_argument("--max-evaluations", type=count(2, 1_000_000), default=None, metavar="N",
                    help="designs to analyse at most (default 200)")
-    p.add_argument("--seed", type=int, default=None, help="random seed (default 0)")
+    p.add_argument("--seed", type=count(0, 2**32 - 1), default=None, help="random seed (default 0)")
     options.solver_option(p)
     p.add_argument("--flank", choices=["drive", "coast"], default=None)
     options.rolls_per_cycle_option(p)
@@ -78,7 +79,7 @@ def register(sub) -> None:
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler address; default a local cluster; 'synchronous' "
                         "runs in this process")
-    p.add_argument("--workers", type=int, default=None, metavar="N",
+    p.add_argument("--workers", type=count(1, 1024), default=None, metavar="N",
                    help="processes of the local cluster (default one per core)")
     options.progress_option(p)
     p.set_defaults(func=run_optimize)
@@ -179,7 +180,8 @@ def run_optimize(args: argparse.Namespace) -> int:
     result = optimize(
         case, variables, problem,
         method=args.method or run.get("method", "differential_evolution"),
-        max_evaluations=args.max_evaluations or run.get("max_evaluations", 200),
+        max_evaluations=(args.max_evaluations if args.max_evaluations is not None
+                         else run.get("max_evaluations", 200)),
         popsize=run.get("popsize"), seed=args.seed if args.seed is not None
         else run.get("seed", 0), relief_start=run.get("relief_start", 0.5),
         scheduler=args.scheduler, n_workers=args.workers, progress=not args.no_progress,

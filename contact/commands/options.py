@@ -28,6 +28,7 @@ plots_option            --plots DIR
 progress_option         --no-progress
 verbosity_options       -v/--verbose, -q/--quiet (accepted before and after the command)
 deprecated_alias        a hidden old spelling of an option that warns when used
+count                   an argparse type: an integer in a closed range (counts, budgets)
 """
 
 from __future__ import annotations
@@ -42,6 +43,7 @@ __all__ = [
     "analysis_file_argument",
     "case_argument",
     "case_stem",
+    "count",
     "default_output",
     "deprecated_alias",
     "flank_option",
@@ -294,11 +296,42 @@ def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
                    help=f"friction coefficient model ({D['friction_model']})")
 
 
+def count(low: int, high: int):
+    """An argparse ``type``: an integer in [low, high], refused by the parser (before any
+    work, exit 2) with ``must be an integer in [low, high], got VALUE`` otherwise — for the
+    options that bound work (evaluation budgets, repeats, points, workers, steps), whose
+    zero or negative value would otherwise fall back to a default or run without end.
+
+    Parameters
+    ----------
+    low, high : int
+        The accepted range, both ends included.
+
+    Returns
+    -------
+    callable
+        ``str -> int`` for ``add_argument(type=...)``.
+    """
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"must be an integer in [{low}, {high}], got {text!r}") from None
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(
+                f"must be an integer in [{low}, {high}], got {value}")
+        return value
+
+    parse.__name__ = "integer"  # argparse names the type in its messages
+    return parse
+
+
 def rolls_per_cycle_option(p: argparse.ArgumentParser, default: int | None = None,
                            alias: str | None = None) -> None:
     """``--rolls-per-cycle N``: roll positions per mesh cycle (``alias``: an old spelling)."""
     text = "the LTCA's, 20" if default is None else str(default)
-    p.add_argument("--rolls-per-cycle", type=int, default=default, metavar="N",
+    p.add_argument("--rolls-per-cycle", type=count(4, 400), default=default, metavar="N",
                    help=f"roll positions per mesh cycle (default {text})")
     if alias:
         deprecated_alias(p, alias, "--rolls-per-cycle", "rolls_per_cycle", type=int)
@@ -306,7 +339,7 @@ def rolls_per_cycle_option(p: argparse.ArgumentParser, default: int | None = Non
 
 def segments_option(p: argparse.ArgumentParser) -> None:
     """``--segments N``: segments per contact curve (default the LTCA's, 24)."""
-    p.add_argument("--segments", type=int, default=None, metavar="N",
+    p.add_argument("--segments", type=count(2, 1000), default=None, metavar="N",
                    help="segments per contact curve (default the LTCA's, 24)")
 
 

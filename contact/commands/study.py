@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 from contact.commands.options import (
     case_argument,
     compliance_option,
+    count,
     default_output,
     flank_option,
     misalignment_options,
@@ -86,7 +87,7 @@ def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="Dask scheduler of an existing cluster (e.g. tcp://host:8786); "
                         "default a local cluster; 'synchronous' runs in this process")
-    p.add_argument("--workers", type=int, default=None, metavar="N",
+    p.add_argument("--workers", type=count(1, 1024), default=None, metavar="N",
                    help="processes of the local cluster (default one per core)")
     progress_option(p)
 
@@ -124,9 +125,14 @@ def register(sub) -> None:
                          "a distribution e.g. normal:0:0.05")
     t.add_argument("--deviation-scale", metavar="DIST",
                    help="distribution of the factor on the case's [deviations]")
-    t.add_argument("-n", type=int, default=256, help="number of draws (default %(default)s)")
-    t.add_argument("--method", choices=["sobol", "lhs", "random"], default="sobol")
-    t.add_argument("--seed", type=int, default=0, help="random seed (default %(default)s)")
+    t.add_argument("-n", type=count(1, 10_000_000), default=256,
+                   help="number of draws (default %(default)s)")
+    t.add_argument("--method", choices=["sobol", "lhs", "random"], default="sobol",
+                   help="how the draws are placed: scrambled Sobol or Latin-hypercube "
+                        "quasi-random points (scipy.stats.qmc), or plain random (default "
+                        "%(default)s)")
+    t.add_argument("--seed", type=count(0, 2**32 - 1), default=0,
+                   help="random seed (default %(default)s)")
     _root_stress_option(t)
     t.set_defaults(func=tolerance_command, study="tolerance")
 

@@ -11,6 +11,7 @@ from contact.commands.options import (
     case_and_misalignment,
     case_argument,
     checked_outputs,
+    count,
     flank_option,
     misalignment_options,
     output_option,
@@ -42,8 +43,9 @@ def register(sub) -> None:
                    help="separation bounding the contact lines [um] (default 6.3)")
     p.add_argument("--method", default="second_order",
                    help="UTE method: second_order (default) or seed")
-    p.add_argument("--nu", type=int, default=41, help="lengthwise grid points (default 41)")
-    p.add_argument("--nv", type=int, default=21, help="profile grid points (default 21)")
+    p.add_argument("--nu", type=count(3, 2001), default=41,
+                   help="lengthwise grid points (default 41)")
+    p.add_argument("--nv", type=count(3, 2001), default=21, help="profile grid points (default 21)")
     p.set_defaults(func=run_utca)
 
 

@@ -10,6 +10,7 @@ from contact.commands.options import (
     case_and_misalignment,
     case_argument,
     checked_outputs,
+    count,
     misalignment_options,
     output_option,
     progress_option,
@@ -43,7 +44,8 @@ def register(sub) -> None:
                    help="load cycles in all (pinion revolutions)")
     p.add_argument("--wear-coefficient", type=float, required=True, metavar="K",
                    help="dimensional Archard wear coefficient k [m^2/N] (= m^3/(N m))")
-    p.add_argument("--steps", type=int, default=5, help="wear steps (default %(default)s)")
+    p.add_argument("--steps", type=count(1, 10000), default=5,
+                   help="wear steps (default %(default)s)")
     torque_option(p, many=False, default="200, the seed's Table 4.2")
     misalignment_options(p)
     solver_option(p)

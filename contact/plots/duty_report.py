@@ -76,6 +76,13 @@ def _figures(ds: xr.Dataset) -> list[dict[str, str]]:
     return out
 
 
+def edge_note(ds: xr.Dataset) -> str | None:
+    """:func:`contact.study.duty_cycle.edge_note` (the printed summary's sentence)."""
+    from contact.study.duty_cycle import edge_note as note
+
+    return note(ds)
+
+
 def duty_report_context(result: xr.DataTree | xr.Dataset, *, figures: bool = True
                         ) -> dict[str, Any]:
     """The values of the duty-cycle page.
@@ -151,6 +158,7 @@ def duty_report_context(result: xr.DataTree | xr.Dataset, *, figures: bool = Tru
         "bending": bending,
         "bending_text": str(ds.attrs.get("bending", "")),
         "edge_contact": str(ds.attrs.get("edge_contact", "")),
+        "edge_note": edge_note(ds) or "",
         "figures": _figures(ds) if figures else [],
         "versions": {"file": str(ds.attrs.get("toolkit_version", "not recorded")),
                      "report": __version__},

@@ -45,7 +45,7 @@ from contact.ltca import LTCAOptions
 from contact.ltca.options import json_options
 from contact.study.duty_cycle_inputs import DutyCycle
 from contact.study.run import StudyRun
-from contact.study.store import ResultStore
+from contact.study.store import ChunkSpec, ResultStore
 from geometry import __version__
 from geometry.case import Case
 from geometry.core.conventions import data_var
@@ -208,8 +208,23 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     return xr.Dataset(data, coords=coords)
 
 
+#: the data variables of a bin's chunk (:func:`analyse_bin`; ``root_stress_peak`` only
+#: with the root stress, at the bins that did not fail)
+_BIN_CHUNK_VARIABLES = (*BIN_VARIABLES, "lte_harmonics", "pressure_envelope",
+                        "edge_pressure_envelope", "status", "reason")
+
+#: finite at every bin whose ``status`` is 0 (every roll certified: the LTE is defined;
+#: the envelopes are 0 where no segment lands): NaN there is a damaged chunk
+_FINITE_WHEN_OK = ("lte_mean", "lte_peak_to_peak", "pressure_envelope",
+                   "edge_pressure_envelope")
+
+
 def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
-    """Every bin's dataset, from the parts of an interrupted run and the engine."""
+    """Every bin's dataset, from the parts of an interrupted run and the engine.
+
+    A chunk of the parts that is not this duty cycle's (unreadable, other variables, NaN
+    where a bin's status is 0) is named in a warning, moved to ``OUTPUT.parts/set-aside/``
+    and its bins analysed again (:class:`contact.study.store.ResultStore`)."""
     from contact.study.engine import stream_tasks
 
     n = shared.duty.n_bins
@@ -220,13 +235,21 @@ def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
         if not out.parent.is_dir():
             raise InputError(f"output: directory {str(out.parent)!r} does not exist")
         store = ResultStore(out, {"fingerprint": shared.fingerprint(), "kind": "duty_cycle",
-                                  "bins": n}, chunk_size=1)
+                                  "bins": n}, chunk_size=1,
+                            spec=ChunkSpec(points=n, variables=_BIN_CHUNK_VARIABLES,
+                                           optional=("root_stress_peak",),
+                                           finite=_FINITE_WHEN_OK))
         done = store.done()
     todo = [(i,) for i in range(n) if i not in done]
     kept = stream_tasks(analyse_bin, shared, todo, lambda ds: ds, store=store,
                         progress=run.progress, desc="duty cycle", unit="bin", total=n,
                         initial=len(done), scheduler=run.scheduler, n_workers=run.n_workers)
     parts = [store.combined()] if store is not None else kept
+    if store is not None and parts[0].sizes["point"] != n:
+        raise InputError(f"output: {parts[0].sizes['point']} of {n} bins in "
+                         f"{str(store.parts)!r} after the run (a chunk failed its check, "
+                         "see the warning); start the duty cycle again to analyse the "
+                         "missing bins")
     ds = xr.concat(parts, dim="point", join="outer")
     ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
     ds.attrs["bins_resumed"] = len(done)
@@ -425,7 +448,8 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
         Bins (torque [N·m], speed [rpm], revolutions, temperature [degC]), deflection
         table, grade and Miner's rule.
     run : contact.study.StudyRun, optional
-        LTCA options, flank, output (streaming to ``OUTPUT.parts/`` and resume),
+        LTCA options, flank, output (streaming to ``OUTPUT.parts/`` and resume; a chunk
+        of the parts that is not this cycle's is set aside and its bin analysed again),
         scheduler and workers. ``operating`` is not used (each bin sets its own speed and
         temperature; the case's lubricant, roughness, friction model).
     root_stress : bool or contact.compliance.fe.FEOptions
@@ -450,7 +474,9 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
     ------
     InputError
         A bin outside the deflection table (named), an unknown grade, a failed bin (named,
-        with its reason), parts of another run at ``OUTPUT.parts``.
+        with its reason), parts of another run at ``OUTPUT.parts``, bins missing from the
+        parts after the run (a chunk set aside meanwhile: the run started again analyses
+        them).
 
     Notes
     -----
@@ -484,5 +510,22 @@ def bin_table(ds: xr.Dataset) -> list[Mapping[str, Any]]:
     for i in range(ds.sizes["bin"]):
         rows.append({k: float(ds[k].values[i]) for k in (
             "torque", "speed", "hours", "lte_mean", "lte_peak_to_peak",
-            "pressure_max_flank", "edge_load_share", "efficiency", "power_loss")})
+            "pressure_max_flank", "pressure_max_edge", "edge_load_share", "efficiency",
+            "power_loss")})
     return rows
+
+
+def edge_note(ds: xr.Dataset) -> str | None:
+    """The sentence a duty cycle's summary prints about its edge contact: edge pressures
+    are not counted as pitting damage, with the bins' largest edge share of the torque [%]
+    and edge peak pressure [MPa]; None when no bin has edge contact."""
+    share = np.nan_to_num(np.asarray(ds["edge_load_share"].values, float))
+    if not np.any(share > 0.0):
+        return None
+    peak = np.nan_to_num(np.asarray(ds["pressure_max_edge"].values, float))
+    i = int(np.argmax(share))
+    return (f"edge contact in {int(np.sum(share > 0))} of {share.size} bins (up to "
+            f"{100 * share[i]:.1f} % of the torque in bin {i}, edge peak pressure up to "
+            f"{np.max(peak):.0f} MPa): edge pressures are NOT counted in the pitting damage "
+            "(the ISO 6336-2 S-N curve is of Hertzian flank contact; the LTCA caps edges at "
+            "the shakedown limit) — judge the edges by their own limit")

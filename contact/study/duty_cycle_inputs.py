@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import math
 import os
-import tomllib
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -45,6 +44,7 @@ from scipy.interpolate import PchipInterpolator
 
 from contact.durability.sn_curve import MINER_RULES
 from geometry.core.errors import InputError
+from geometry.core.toml_files import read_toml
 from geometry.pair.assembly import Misalignment
 
 __all__ = ["DEFLECTION_FIELDS", "DeflectionTable", "DutyCycle", "example_duty_cycle",
@@ -256,7 +256,8 @@ def read_duty_cycle(source: Mapping[str, Any] | str | os.PathLike[str] | Any) ->
     Raises
     ------
     InputError
-        No table, unknown keys, both or neither of ``hours`` and ``revolutions``, bad
+        A file that is missing, not UTF-8 text (a binary file) or not valid TOML (named);
+        no table, unknown keys, both or neither of ``hours`` and ``revolutions``, bad
         values (named).
     """
     if hasattr(source, "extra") and hasattr(source, "pinion"):
@@ -267,12 +268,9 @@ def read_duty_cycle(source: Mapping[str, Any] | str | os.PathLike[str] | Any) ->
         table = source.get("duty_cycle", source)
     else:
         path = Path(source)
-        try:
-            raw = tomllib.loads(path.read_text(encoding="utf-8"))
-        except OSError as exc:
-            raise InputError(f"duty_cycle: cannot read {str(path)!r}: {exc}") from None
-        except tomllib.TOMLDecodeError as exc:
-            raise InputError(f"duty_cycle: {str(path)!r} is not valid TOML ({exc})") from None
+        # one reader for input files: missing, binary, non-UTF-8 or invalid TOML refused
+        # in one line naming the file (geometry.core.toml_files.read_toml)
+        raw = read_toml(path, "duty_cycle: spectrum file")
         if "duty_cycle" not in raw:
             raise InputError(f"duty_cycle: {str(path)!r} has no [duty_cycle] table")
         table = raw["duty_cycle"]

@@ -62,6 +62,17 @@ Array = NDArray[np.float64]
 #: E′ = 2E* of a steel pair, E = 206 GPa, ν = 0.3 [MPa].
 STEEL_E_PRIME = 206000.0 / (1.0 - 0.3**2)
 
+#: [MPa] the largest Hertz pressure a condition may have: above the shakedown limit of
+#: every steel of the materials table (5.26 GPa, case-carburised steel) a contact is no
+#: longer an elastic lubricated steel contact (the solvers cap pressures at that limit,
+#: docs/ehl.md); a typing slip (50 GPa for 0.5) is refused before any work
+MAX_HERTZ_PRESSURE = 6000.0
+#: [mm] accepted equivalent radius of curvature: a rounded tooth edge (0.1 mm) to a
+#: nearly flat flank (5 m)
+RADIUS_RANGE = (0.01, 5000.0)
+#: [m/s] the largest entraining velocity (beyond any gear's pitch-line speed)
+MAX_ENTRAINING_VELOCITY = 100.0
+
 
 @dataclass(frozen=True)
 class LineContactCondition:
@@ -256,11 +267,16 @@ def _roughness(name: str, value: ArrayLike | None, n: int) -> Array:
 def _checked(cond: LineContactCondition) -> tuple[float, float, float, float, str, Lubricant]:
     """The condition's scalars checked (named): w′, R, u_e, E′, viscosity model, oil."""
     w = real("load_per_length", cond.load_per_length, unit="N/mm", low=0.0, low_open=True)
-    r = real("radius", cond.radius, unit="mm", low=0.0, low_open=True)
+    r = real("radius", cond.radius, unit="mm", low=RADIUS_RANGE[0], high=RADIUS_RANGE[1])
     ue = real("entraining_velocity", cond.entraining_velocity, unit="m/s", low=0.0,
-              low_open=True, high=100.0)
+              low_open=True, high=MAX_ENTRAINING_VELOCITY)
     real("slide_to_roll", cond.slide_to_roll, unit="1", low=-2.0, high=2.0)
     ep = real("e_prime", cond.e_prime, unit="MPa", low=1e3, high=1e7)
+    ph = math.sqrt(w * ep / (2.0 * math.pi * r))
+    if ph > MAX_HERTZ_PRESSURE:
+        raise InputError(f"load_per_length: {w:g} N/mm on R {r:g} mm gives a Hertz pressure of "
+                         f"{ph:.0f} MPa, above {MAX_HERTZ_PRESSURE:g} MPa (beyond the shakedown "
+                         "limit of every steel; a lubricated steel contact is refused there)")
     model = one_of("viscosity_model", cond.viscosity_model, VISCOSITY_PRESSURE_MODELS)
     oil = lubricant_of(cond.lubricant)
     viscosity(oil, cond.temperature)                        # the temperature in the oil's range

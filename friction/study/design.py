@@ -139,13 +139,17 @@ DESIGN_BOX_TEXT: Mapping[str, str] = MappingProxyType({
 DESIGN_METHODS = ("sobol", "lhs")
 
 
-def check_design(design: Mapping[str, object]) -> dict[str, Array]:
+def check_design(design: Mapping[str, object], lubricant=None) -> dict[str, Array]:
     """A design as float arrays, every input of :data:`DESIGN_INPUTS`, finite, in range.
 
     Parameters
     ----------
     design : mapping of str to array (n,)
         Inputs in the units of :data:`DESIGN_INPUTS`.
+    lubricant : str or friction.lubricant.Lubricant, optional
+        The study's oil: given, it must be a bundled name or a valid oil file, and every
+        temperature must lie inside its data's range
+        (:func:`friction.lubricant.temperature_range`).
 
     Returns
     -------
@@ -154,9 +158,20 @@ def check_design(design: Mapping[str, object]) -> dict[str, Array]:
     Raises
     ------
     InputError
-        A missing or unknown input, unequal lengths, no points, or a value outside the
-        solver's accepted range (p_h, R, u_e > 0; |SR| ≤ 2; Rq ≥ 0), naming the input.
+        A missing or unknown input, unequal lengths, no points, a value outside the
+        solvers' accepted range (p_h in (0, 6000] MPa, R in [0.01, 5000] mm, u_e in
+        (0, 100] m/s, |SR| ≤ 2, Rq in [0, 50] µm: :mod:`friction.ehl.line_contact`), an
+        unknown or invalid oil, or a temperature outside its data, naming the input, the
+        first value outside and the range.
     """
+    from friction.ehl.line_contact import (
+        MAX_ENTRAINING_VELOCITY,
+        MAX_HERTZ_PRESSURE,
+        RADIUS_RANGE,
+        lubricant_of,
+    )
+    from friction.lubricant import temperature_range
+
     missing = sorted(set(DESIGN_INPUTS) - set(design))
     unknown = sorted(set(design) - set(DESIGN_INPUTS))
     if missing or unknown:
@@ -168,9 +183,14 @@ def check_design(design: Mapping[str, object]) -> dict[str, Array]:
         raise InputError(f"design: every input must be a 1-d array of one length, got {sizes}")
     if not next(iter(sizes.values())):
         raise InputError("design: a study needs at least one point")
-    bounds = {"hertz_pressure": (0.0, None), "radius": (0.0, None),
-              "entraining_velocity": (0.0, 100.0), "temperature": (-50.0, 300.0),
+    bounds = {"hertz_pressure": (0.0, MAX_HERTZ_PRESSURE),
+              "radius": (RADIUS_RANGE[0], RADIUS_RANGE[1]),
+              "entraining_velocity": (0.0, MAX_ENTRAINING_VELOCITY),
+              "temperature": (-50.0, 300.0),
               "roughness_1": (-1.0, 50.0), "roughness_2": (-1.0, 50.0)}
+    if lubricant is not None:
+        oil = lubricant_of(lubricant)
+        bounds["temperature"] = temperature_range(oil)
     for name, v in out.items():
         if not np.all(np.isfinite(v)):
             raise InputError(f"{name}: must be finite [{DESIGN_INPUTS[name][0]}]")
@@ -180,11 +200,16 @@ def check_design(design: Mapping[str, object]) -> dict[str, Array]:
                                  f"{v[np.abs(v) > 2][0]:g}")
             continue
         low, high = bounds[name]
-        bad = (v <= low) if name not in ("roughness_1", "roughness_2") else (v < 0.0)
+        closed = name in ("radius", "temperature")
+        bad = (v < low) if closed else (v <= low)
+        if name.startswith("roughness"):
+            bad = v < 0.0
         if high is not None:
             bad |= v > high
         if np.any(bad):
             rng = f"> {low:g}" if high is None else f"in ({low:g}, {high:g}]"
+            if closed:
+                rng = f"in [{low:g}, {high:g}]"
             if name.startswith("roughness"):
                 rng = "in [0, 50]"
             raise InputError(f"{name}: must be {rng} [{DESIGN_INPUTS[name][0]}], got "

@@ -76,6 +76,13 @@ _REGIMES = ("boundary_mixed", "mixed", "full_film")
 SAMPLING_SETTINGS = ("solver_average", "solver_realisations")
 
 
+def _plain(value: object) -> str:
+    """An attribute as a user reads it: ``np.int64(256)`` → ``256``, text quoted."""
+    if isinstance(value, np.generic):
+        value = value.item()
+    return repr(value) if isinstance(value, str) else str(value)
+
+
 def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
     """Several friction studies of one oil and solver settings as one (e.g. a Sobol design
     and its continuation).
@@ -106,8 +113,10 @@ def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
         if k.startswith("solver_") and k not in ("solver_commit", *SAMPLING_SETTINGS):
             for other in studies[1:]:
                 if other.attrs.get(k) != v:
-                    raise InputError(f"studies: {k} differs ({v!r} and {other.attrs.get(k)!r}); "
-                                     "only studies of one oil and one solver setting combine")
+                    raise InputError(
+                        f"studies: {k} differs ({_plain(v)} in the first, "
+                        f"{_plain(other.attrs.get(k))} in another); only studies of one oil "
+                        "and one solver setting combine")
     if len(studies) == 1:
         return first
     ds = xr.concat(list(studies), dim="point", combine_attrs="override")

@@ -141,6 +141,12 @@ class SolveSettings:
         integer("roughness_steps", self.roughness_steps, low=1, high=100)
         if not isinstance(self.lubricant, str) or not self.lubricant:
             raise InputError(f"lubricant: must be an oil name, got {self.lubricant!r}")
+        from friction.ehl.line_contact import lubricant_of
+
+        try:                            # an unknown or invalid oil refused before any work
+            lubricant_of(self.lubricant)
+        except InputError as exc:
+            raise InputError(f"lubricant: {str(exc).removeprefix('lubricant: ')}") from None
         if len(self.profile_seeds) != 2:
             raise InputError(f"profile_seeds: must be two seeds, got {self.profile_seeds!r}")
         for s in self.profile_seeds:

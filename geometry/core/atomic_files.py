@@ -29,15 +29,19 @@ stale_temporaries    the temporary files of a target left by processes that no l
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import re
+import shutil
 import signal
 import tempfile
 import threading
 from collections.abc import Iterator
 from pathlib import Path
 
-__all__ = ["atomic_path", "stale_temporaries"]
+from geometry.core.errors import FileWriteError
+
+__all__ = ["atomic_path", "stale_temporaries", "write_failure"]
 
 #: the signals held while a file is written (those a user sends to stop a program)
 HELD_SIGNALS = (signal.SIGINT, signal.SIGTERM)
@@ -118,6 +122,55 @@ def _held_signals() -> Iterator[list[int]]:
             signal.signal(sig, handler)
 
 
+#: [bytes] free space below which a failed write is put down to a full disk (the netCDF
+#: library reports a full disk as "HDF error", without the errno)
+FULL_DISK_MARGIN = 4 * 1024 * 1024
+
+#: errno → what it means for a write, in a sentence's words
+_WRITE_ERRNO = {code: text for code, text in (
+    (errno.ENOSPC, "no space left on {dir}"),
+    (getattr(errno, "EDQUOT", None), "the disk quota is exceeded on {dir}"),
+    (errno.EROFS, "{dir} is on a read-only file system"),
+    (errno.EACCES, "no permission to write in {dir}"),
+    (errno.EPERM, "no permission to write in {dir}")) if code is not None}
+
+
+def write_failure(path: str | os.PathLike[str], exc: BaseException) -> str | None:
+    """Why writing ``path`` failed, as a sentence, when the cause is the disk's or the
+    directory's: no space left, a quota, a read-only file system, no permission.
+
+    Parameters
+    ----------
+    path : path-like
+        The file being written.
+    exc : BaseException
+        The exception the write raised (its ``errno``, or its cause's, is read; an
+        exception without one — the netCDF library's "HDF error" — is put down to a full
+        disk when less than :data:`FULL_DISK_MARGIN` bytes are free).
+
+    Returns
+    -------
+    str or None
+        ``"could not write PATH: no space left on DIR"`` and the like; None when the cause
+        is not one of these (the caller reports it its own way).
+    """
+    target = Path(path)
+    folder = str(target.parent.resolve()) if target.parent.exists() else str(target.parent)
+    seen: BaseException | None = exc
+    while seen is not None:
+        code = getattr(seen, "errno", None)
+        if code in _WRITE_ERRNO:
+            return f"could not write {str(target)!r}: {_WRITE_ERRNO[code].format(dir=folder)}"
+        seen = seen.__cause__ or seen.__context__
+    try:
+        free = shutil.disk_usage(target.parent).free
+    except OSError:
+        return None
+    if free < FULL_DISK_MARGIN:
+        return f"could not write {str(target)!r}: no space left on {folder}"
+    return None
+
+
 @contextlib.contextmanager
 def atomic_path(path: str | os.PathLike[str], *, mode: int | None = None) -> Iterator[Path]:
     """A temporary path to write ``path``'s new content to, renamed onto ``path`` on success.
@@ -137,8 +190,11 @@ def atomic_path(path: str | os.PathLike[str], *, mode: int | None = None) -> Ite
 
     Raises
     ------
+    FileWriteError
+        The disk is full, the directory read-only or not writable (one sentence naming the
+        file and the directory, :func:`write_failure`); the target is left as it was.
     OSError
-        The temporary file cannot be created or renamed.
+        The temporary file cannot be created or renamed for another reason.
     KeyboardInterrupt
         SIGINT arrived while writing: the target is left as it was and the temporary file
         removed (SIGTERM is delivered to the process's handler the same way).
@@ -160,8 +216,14 @@ def atomic_path(path: str | os.PathLike[str], *, mode: int | None = None) -> Ite
     try:
         # signals held from before the temporary file exists until it is renamed or gone
         with _held_signals() as received:
-            fd, name = tempfile.mkstemp(prefix=f".{target.name}.{os.getpid()}.",
-                                        suffix=".tmp", dir=target.parent)
+            try:
+                fd, name = tempfile.mkstemp(prefix=f".{target.name}.{os.getpid()}.",
+                                            suffix=".tmp", dir=target.parent)
+            except OSError as exc:
+                reason = write_failure(target, exc)
+                if reason is None:
+                    raise
+                raise FileWriteError(reason) from exc
             os.close(fd)
             tmp = Path(name)
             try:
@@ -169,6 +231,11 @@ def atomic_path(path: str | os.PathLike[str], *, mode: int | None = None) -> Ite
                 if not received:
                     os.chmod(tmp, mode)
                     os.replace(tmp, target)
+            except OSError as exc:
+                reason = write_failure(target, exc)
+                if reason is None or isinstance(exc, FileWriteError):
+                    raise
+                raise FileWriteError(reason) from exc
             finally:
                 # on success tmp no longer exists; after an error or a signal it is removed
                 with contextlib.suppress(OSError):

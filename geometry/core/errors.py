@@ -8,7 +8,8 @@ other way round).
 
 from __future__ import annotations
 
-__all__ = ["InputError", "LTCAError", "ModelUnavailableError"]
+__all__ = ["FileWriteError", "InputError", "LTCAError", "ModelUnavailableError",
+           "StudyFailedError"]
 
 
 class LTCAError(Exception):
@@ -27,4 +28,22 @@ class ModelUnavailableError(LTCAError, LookupError):
 
     The message lists the available names and, where it applies, why the
     requested one is unavailable or how to install it.
+    """
+
+
+class StudyFailedError(LTCAError, RuntimeError):
+    """A study produced no result at all: every one of its points failed.
+
+    A point that fails is a result of a study (stored with its reason); a study none of
+    whose points succeeded is an error. The message gives the number of points and the
+    first point's reason.
+    """
+
+
+class FileWriteError(LTCAError, OSError):
+    """A file could not be written: no space left, a read-only or forbidden directory.
+
+    The message is one sentence naming the file and what failed (``no space left on
+    DIR``); the file's previous content, if any, is left as it was
+    (:mod:`geometry.core.atomic_files`).
     """

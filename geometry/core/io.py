@@ -31,9 +31,9 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from geometry.core.atomic_files import atomic_path
+from geometry.core.atomic_files import atomic_path, write_failure
 from geometry.core.conventions import data_var
-from geometry.core.errors import InputError, LTCAError
+from geometry.core.errors import FileWriteError, InputError, LTCAError
 from geometry.core.validation import integer
 from geometry.core.version import __version__
 
@@ -400,8 +400,12 @@ def write_netcdf(
         # HDF5 library returns, then the old file kept (geometry.core.atomic_files)
         with atomic_path(path) as tmp, _local_write_lock(out):
             out.to_netcdf(tmp, engine=_ENGINE, encoding=encoding)
+    except FileWriteError as exc:   # the disk's or the directory's fault, said in words
+        raise NetCDFError(str(exc)) from exc
     except Exception as exc:
-        raise NetCDFError(f"could not write {str(path)!r}: {exc}") from exc
+        # the netCDF library reports a full disk as "HDF error": put in words when it is
+        reason = write_failure(path, exc)
+        raise NetCDFError(reason or f"could not write {str(path)!r}: {exc}") from exc
     log.info("wrote %s", path)
     return path
 
@@ -454,6 +458,9 @@ def read_netcdf(path: str | os.PathLike[str], *, tree: bool | None = None):
     path = Path(path)
     if not path.is_file():
         raise NetCDFError(f"no such netCDF file: {str(path)!r}")
+    problem = _not_readable(path)
+    if problem:
+        raise NetCDFError(f"could not read {str(path)!r}: {problem}")
     try:
         if tree is None:
             import netCDF4
@@ -471,4 +478,38 @@ def read_netcdf(path: str | os.PathLike[str], *, tree: bool | None = None):
     except NetCDFError:
         raise
     except Exception as exc:
-        raise NetCDFError(f"could not read {str(path)!r}: {exc}") from exc
+        log.debug("reading %s failed: %r", path, exc)
+        raise NetCDFError(f"could not read {str(path)!r}: "
+                          f"{_not_readable(path, failed=True)}") from exc
+
+
+#: the first bytes of a netCDF file: classic (CDF\x01, \x02, \x05) or netCDF-4 (HDF5)
+_HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
+
+
+def _not_readable(path: Path, *, failed: bool = False) -> str | None:
+    """Why a file cannot be a readable netCDF file, in words (None if it looks like one
+    and ``failed`` is False): empty, not a netCDF file (and what it looks like: UTF-8 text
+    such as a case or oil file), no permission, or — when the netCDF library failed on a
+    file that starts as netCDF does — truncated or damaged."""
+    try:
+        size = path.stat().st_size
+        with open(path, "rb") as f:
+            head = f.read(512)
+    except PermissionError:
+        return "no permission to read it"
+    except OSError as exc:
+        return f"it cannot be opened ({exc.strerror or 'operating-system error'})"
+    if size == 0:
+        return "the file is empty (0 bytes), not a netCDF file"
+    if not (head[:3] == b"CDF" or head[:8] == _HDF5_SIGNATURE):
+        try:
+            text = head.decode("utf-8")
+        except UnicodeDecodeError:
+            return "not a netCDF file (binary data of another format)"
+        looks = ("a TOML file (a case, oil or coefficient file?)"
+                 if "=" in text or text.lstrip().startswith(("#", "[")) else "a text file")
+        return f"not a netCDF file: it is UTF-8 text, {looks}"
+    if failed:
+        return f"a netCDF file that is truncated or damaged ({size} bytes)"
+    return None
