@@ -290,3 +290,50 @@ def test_shared_coefficients_rebuilds_a_corrupt_entry_once(fake_build, tmp_path,
     assert shared_coefficients(case, "gear", cache_dir=tmp_path) is first
     assert builds.count == 1 and not _warnings(caplog)
     _read_cached.cache_clear()
+
+
+def test_sigint_during_a_build_leaves_no_entry(tmp_path, monkeypatch):
+    """Ctrl-C while ``ltca run`` builds the FE coefficients (root stress is on by default,
+    issue 53) into an empty cache: the run stops with the shell's 130 and one line, and the
+    cache holds no entry and no temporary file that a later run could trust. The signal is
+    sent when the build has started (the stiffness assembly's log line, read from the pipe:
+    an event, not a time); the default model's build then runs for seconds more (~15 s per
+    member with CHOLMOD), so the signal lands inside it."""
+    import os
+    import signal
+    import subprocess
+    import sys
+
+    from contact.compliance.fe import CACHE_ENV
+    from contact.ltca.root_stress import coefficients_cached
+
+    cache = tmp_path / "cache"
+    env = {**os.environ, CACHE_ENV: str(cache),
+           "PYTHONPATH": str(Path(__file__).resolve().parents[1])}
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "contact", "run", "--torque", "50", "--rolls-per-cycle", "4",
+         "--segments", "8", "--speed", "0", "--no-progress", "-v", "-o",
+         str(tmp_path / "r.nc")],
+        cwd=tmp_path, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    seen = []
+    try:
+        for line in proc.stderr:   # ends at EOF if the process exits without the line
+            seen.append(line)
+            if "stiffness:" in line:
+                proc.send_signal(signal.SIGINT)
+                break
+        else:
+            pytest.fail("the FE build never started:\n" + "".join(seen))
+        _, err = proc.communicate(timeout=300)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err
+    assert err.strip().splitlines()[-1].startswith("ltca run: interrupted")
+    assert not (tmp_path / "r.nc").exists()
+    left = sorted(p.name for p in cache.rglob("*") if p.is_file()) if cache.exists() else []
+    assert left == [], left
+    monkeypatch.setenv(CACHE_ENV, str(cache))
+    assert not coefficients_cached(resolve_case(None))

@@ -449,8 +449,9 @@ def test_studies_take_root_stress(tmp_path, monkeypatch):
     analysis: a one-point sweep's ``root_stress_max`` (point dims, torque, member) equals
     the single analysis' at the same mounting (same inputs: rtol 1e-9, the order of sums);
     ``sample`` hands the same switch to its points; ``ltca sweep``/``tolerance
-    --root-stress`` set it, ``--compliance`` the LTCA's model; a bad value is refused
-    naming the field. ~10 s: the small LTCA twice on the coarse FE model."""
+    --root-stress`` set it (the default, issue 53; ``--no-root-stress`` leaves it out),
+    ``--compliance`` the LTCA's model; a bad value is refused naming the field. ~10 s: the
+    small LTCA twice on the coarse FE model."""
     import argparse
 
     from contact.cli import build_parser
@@ -490,5 +491,8 @@ def test_studies_take_root_stress(tmp_path, monkeypatch):
         assert run.root_stress is True and run.options.compliance == "fe"
         args = parser.parse_args([*cmd, "-o", str(tmp_path / f"{cmd[0]}.nc")])
         _, run = _prepare(args)
-        assert run.root_stress is False and run.options.compliance == "shell"
+        assert run.root_stress is True and run.options.compliance == "shell"  # on by default
+        args = parser.parse_args([*cmd, "--no-root-stress", "-o", str(tmp_path / f"{cmd[0]}.nc")])
+        _, run = _prepare(args)
+        assert run.root_stress is False
     assert isinstance(args, argparse.Namespace)

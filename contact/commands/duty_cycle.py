@@ -14,6 +14,7 @@ from contact.commands.options import (
     plots_option,
     progress_option,
     rolls_per_cycle_option,
+    root_stress_option,
     segments_option,
     solver_option,
 )
@@ -55,13 +56,8 @@ def register(sub) -> None:
     p.add_argument("--report", default=None, metavar="HTML",
                    help="also write the duty-cycle report page (as `ltca report` of the "
                    "output file) to HTML")
-    p.add_argument("--root-stress", action=argparse.BooleanOptionalAction, default=True,
-                   help="the tooth-root stress of every bin and with it the bending side "
-                   "(root damage, life, bending safety factor; ISO 6336-3), on by default: "
-                   "the first run of a design builds its FE influence coefficients "
-                   "(~0.5-1.5 min per member with PARDISO on 2 cores, several with SuperLU or on "
-                   "a loaded machine), later runs read them from the cache (docs/fe.md); "
-                   "--no-root-stress: the flank (pitting) side only")
+    root_stress_option(p, "the tooth-root stress of every bin and with it the bending side "
+                          "(root damage, life, bending safety factor; ISO 6336-3)")
     progress_option(p)
     p.set_defaults(func=run)
 

@@ -29,6 +29,8 @@ progress_option         --no-progress
 verbosity_options       -v/--verbose, -q/--quiet (accepted before and after the command)
 deprecated_alias        a hidden old spelling of an option that warns when used
 count                   an argparse type: an integer in a closed range (counts, budgets)
+root_stress_option      --root-stress/--no-root-stress (on by default)
+ROOT_STRESS_COST        what the root stress costs, as the options and hints say it
 """
 
 from __future__ import annotations
@@ -55,6 +57,7 @@ __all__ = [
     "plots_option",
     "progress_option",
     "rolls_per_cycle_option",
+    "root_stress_option",
     "segments_option",
     "solver_option",
     "torque_option",
@@ -325,6 +328,23 @@ def count(low: int, high: int):
 
     parse.__name__ = "integer"  # argparse names the type in its messages
     return parse
+
+
+#: what the root stress costs, as the options' help and `ltca run`'s hint say it (docs/fe.md,
+#: "Cost": the default FE model of the default case with the default solver, CHOLMOD, on
+#: one core, issue 53)
+ROOT_STRESS_COST = ("the first run of a design builds its FE influence coefficients, ~15-20 s "
+                    "per member (~35 s for both on the default case, up to 1.5 GB), later "
+                    "runs read them from the cache (~1 s)")
+
+
+def root_stress_option(p: argparse.ArgumentParser, what: str) -> None:
+    """``--root-stress/--no-root-stress``: the tooth-root stress of both members from FE
+    influence coefficients, on by default (issue 53); ``what`` says what it adds in this
+    command."""
+    p.add_argument("--root-stress", action=argparse.BooleanOptionalAction, default=True,
+                   help=f"{what} (on by default; docs/fe.md): {ROOT_STRESS_COST}; "
+                        "--no-root-stress leaves it out")
 
 
 def rolls_per_cycle_option(p: argparse.ArgumentParser, default: int | None = None,

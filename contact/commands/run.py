@@ -8,6 +8,7 @@ import os
 from pathlib import Path
 
 from contact.commands.options import (
+    ROOT_STRESS_COST,
     analysis_file_argument,
     case_and_misalignment,
     case_argument,
@@ -23,14 +24,15 @@ from contact.commands.options import (
     progress_option,
     resolve_analysis_file,
     rolls_per_cycle_option,
+    root_stress_option,
     segments_option,
     solver_option,
     torque_option,
 )
 from contact.commands.output_paths import check_output_dir
 
-__all__ = ["TE_TABLE_HEADERS", "deviation_te_rows", "misalignment_from_args", "plot", "register",
-           "run", "write_figures"]
+__all__ = ["TE_TABLE_HEADERS", "deviation_te_rows", "durability_lines", "misalignment_from_args",
+           "plot", "register", "root_stress_rows", "run", "write_figures"]
 
 #: Place in ``ltca --help``.
 ORDER = 10
@@ -78,9 +80,8 @@ def register(sub) -> None:
     plots_option(p)
     p.add_argument("--report", default=None, metavar="HTML",
                    help="write the one-page HTML report (as `ltca report`) to HTML")
-    p.add_argument("--root-stress", action="store_true",
-                   help="also the tooth-root stress of both members from FE influence "
-                   f"coefficients (docs/fe.md): {ROOT_STRESS_COST}")
+    root_stress_option(p, "the tooth-root stress of both members from FE influence "
+                          "coefficients, in the summary, the file and the report")
     progress_option(p)
     p.set_defaults(func=run)
 
@@ -91,29 +92,21 @@ def register(sub) -> None:
     q.set_defaults(func=plot)
 
 
-#: what the root stress costs, as the help and the hint of `ltca run` say it (docs/fe.md,
-#: "Cost": the default FE model of the default case, measured with PARDISO)
-ROOT_STRESS_COST = ("the first run of a design builds them, ~0.5-1.5 min per member with PARDISO "
-                    "on 2 cores (pip install 'hypoid-ltca[fe]'; several minutes with "
-                    "SuperLU or on a loaded machine), then they are read from the cache and "
-                    "add ~1-2 s to the run")
-
-
 def root_stress_hint(case, flank, opts) -> str:
-    """The line `ltca run` prints when the root stress was not asked for: how to turn it
-    on and what it would cost for this design now (built, cached, or the FE compliance's
-    own coefficients)."""
+    """The line `ltca run --no-root-stress` prints: how to have the root stress and what
+    it would cost for this design now (built, cached, or the FE compliance's own
+    coefficients)."""
     from contact.ltca.root_stress import coefficients_cached
 
     if opts.compliance == "fe":
         cost = ("it takes the FE compliance's coefficients, already read: the "
                 "superposition only, < 1 s")
     elif coefficients_cached(case, flank):
-        cost = "this design's FE coefficients are in the cache: ~1-2 s more"
+        cost = "this design's FE coefficients are in the cache: ~1 s more"
     else:
         cost = ROOT_STRESS_COST
-    return (f"tooth-root stress not computed (opt-in): add --root-stress; {cost} "
-            "(docs/fe.md)")
+    return (f"tooth-root stress not computed (--no-root-stress): leave the option out to "
+            f"have it; {cost} (docs/fe.md)")
 
 
 #: columns of the theoretical/deviated TE table (seed Tables 4.2, 4.4), all [µrad] but T_p
@@ -273,18 +266,19 @@ def run(args: argparse.Namespace) -> int:
             f"friction model {fr.attrs['friction_model']}"
         )
         print_extrapolation_warning(fr)
+        for line in durability_lines(fr):
+            print(line)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     print(plastic_note(lt))
     if "root_stress_max" not in lt:
         print(root_stress_hint(case, args.flank, opts))
     else:
-        peak = lt["root_stress_max"]
         print("peak tooth-root stress over the mesh cycle (max principal, FE "
-              "superposition) [MPa]:")
-        print(tabulate([(f"{T:g}", f"{float(peak.isel(torque=i).sel(member='pinion')):.0f}",
-                         f"{float(peak.isel(torque=i).sel(member='gear')):.0f}")
-                        for i, T in enumerate(lt["torque"].values)],
-                       headers=["T_p [N m]", "pinion", "gear"], tablefmt="github"))
+              "superposition) [MPa], at the face station u (toe 0, heel 1):")
+        print(tabulate(root_stress_rows(lt), headers=["T_p [N m]", "pinion", "u", "gear",
+                                                      "u"], tablefmt="github"))
+        print("the FE model's peak fillet stress is mesh-converged within 5 % (docs/fe.md, "
+              "Mesh convergence)")
     if "theoretical" in tree.children:
         print(
             "transmission error of the theoretical and deviated surfaces "
@@ -333,6 +327,81 @@ def print_plausibility_warnings(ltca) -> None:
 
     for text in plausibility_warnings(ltca):
         print(f"WARNING: {text}")
+
+
+def root_stress_rows(ltca) -> list[tuple[str, ...]]:
+    """Rows of the root-stress table `ltca run` prints: per torque, each member's peak
+    tooth-root stress [MPa] and the lengthwise face station u where it is (the
+    ``fillet_u`` of the peak over rolls and teeth: toe 0, heel 1).
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        ``/ltca`` with ``root_stress`` (torque, roll, member, tooth, fillet_point) and
+        ``root_stress_max`` (torque, member).
+
+    Returns
+    -------
+    list of tuple of str
+        (torque, pinion peak, its u, gear peak, its u).
+    """
+    rs = ltca["root_stress"]
+    rows = []
+    for i, t in enumerate(ltca["torque"].values):
+        cells = [f"{t:g}"]
+        for member in ("pinion", "gear"):
+            face = rs.isel(torque=i).sel(member=member).max(("roll", "tooth"))
+            k = int(face.argmax(skipna=True))
+            cells += [f"{float(ltca['root_stress_max'].isel(torque=i).sel(member=member)):.0f}",
+                      f"{float(face['fillet_u'].values[k]):.2f}"]
+        rows.append(tuple(cells))
+    return rows
+
+
+def durability_lines(friction) -> list[str]:
+    """The lines `ltca run` prints on scuffing and micropitting: one per torque with the
+    peak contact temperature of the flanks (its flash part), the scuffing safety S_B and
+    the least specific film thickness λ_GF (and S_λ where the oil gives λ_GFP), then the
+    oil's scuffing temperature and why a safety is missing where it is (none for a file
+    that predates the variables).
+
+    Parameters
+    ----------
+    friction : xarray.Dataset
+        The ``/friction`` dataset (:func:`friction.efficiency.efficiency_analysis`).
+
+    Returns
+    -------
+    list of str
+    """
+    if "contact_temperature_max" not in friction:
+        return []
+    lines = []
+    theta_s = float(friction["scuffing_temperature"])
+    for i, t in enumerate(friction["torque"].values):
+        s_b = float(friction["scuffing_safety"].values[i])
+        s_l = float(friction["micropitting_safety"].values[i])
+        lines.append(
+            f"T_p {t:g} N m: peak contact temperature "
+            f"{float(friction['contact_temperature_max'].values[i]):.0f} degC (flash "
+            f"{float(friction['flash_temperature_max'].values[i]):.0f} K), scuffing safety "
+            f"S_B {_number(s_b)}, least lambda_GF "
+            f"{float(friction['specific_film_thickness_min'].values[i]):.3f}"
+            + (f", S_lambda {s_l:.2f}" if math.isfinite(s_l) else ""))
+    if math.isfinite(theta_s):
+        lines.append(f"scuffing temperature of the oil {theta_s:.0f} degC (FZG load stage "
+                     f"{friction.attrs.get('fzg_load_stage', float('nan')):g}); temperatures "
+                     "and lambda_GF of the flanks, the edge contacts apart "
+                     "(docs/scuffing_micropitting.md)")
+    for name in ("scuffing_safety", "micropitting_safety"):
+        comment = str(friction[name].attrs.get("comment", ""))
+        if comment.startswith("NaN"):
+            lines.append(f"{name.replace('_', ' ')}: {comment}")
+    return lines
+
+
+def _number(value: float) -> str:
+    return f"{value:.2f}" if math.isfinite(value) else "-"
 
 
 def print_extrapolation_warning(friction) -> None:

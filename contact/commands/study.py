@@ -1,10 +1,15 @@
 """``ltca sweep``, ``ltca tolerance`` and ``ltca vh-check``: design studies on Dask.
 
-Ranges are typed ``START:STOP:N`` (N values, ends included), a single value, or values
-separated by commas; distributions ``normal:MEAN:STD``, ``uniform:LOW:HIGH``,
+Ranges are typed ``START:STOP:N`` (N values, ends included) — the only form of a range —,
+a single value, or values separated by commas (``-0.2,0.2,5`` is the three values −0.2,
+0.2 and 5, not a range); distributions ``normal:MEAN:STD``, ``uniform:LOW:HIGH``,
 ``truncnormal:MEAN:STD:LOW:HIGH`` or ``triangular:LOW:MODE:HIGH``. Lengths in mm, ΔΣ in
-degrees (as ``ltca run``). ``--scheduler tcp://host:8786`` runs on an existing Dask
-cluster; by default a local cluster of ``--workers`` processes (one per core).
+degrees (as ``ltca run``). Every study prints the values it will run before it starts;
+a misalignment beyond the plausible range of the pair's blanks
+(:func:`contact.ltca.plausibility.misalignment_limits`) is refused unless ``--force``, and
+each point's plausibility (the causes ``ltca run`` warns of) is flagged in the output's
+``plausibility`` and counted in the summary. ``--scheduler tcp://host:8786`` runs on an
+existing Dask cluster; by default a local cluster of ``--workers`` processes (one per core).
 """
 
 from __future__ import annotations
@@ -25,6 +30,7 @@ from contact.commands.options import (
     plots_option,
     progress_option,
     rolls_per_cycle_option,
+    root_stress_option,
     solver_option,
     torque_option,
 )
@@ -36,6 +42,9 @@ if TYPE_CHECKING:
 
 #: Place in ``ltca --help``.
 ORDER = 45
+
+#: CLI option → the unit it is typed in
+_TYPED_UNITS = {"dE": "mm", "dP": "mm", "dG": "mm", "dSigma": "deg", "deviation_scale": "1"}
 
 #: CLI option → (study input, factor from the typed unit to the input's unit)
 _INPUT_OPTIONS = {
@@ -70,6 +79,24 @@ def parse_range(option: str, text: str) -> np.ndarray:
     return values
 
 
+def values_line(option: str, text: str, values: np.ndarray, unit: str) -> str:
+    """The line a study prints for one swept input before it starts: its values, and —
+    for a comma list of three whose last is a whole number >= 2, such as ``-0.2,0.2,5`` —
+    that a comma list is values and a range ``START:STOP:N``."""
+    shown = ", ".join(f"{x:g}" for x in values[:12]) + (" …" if values.size > 12 else "")
+    line = f"  {option} [{unit}]: {values.size} value{'s' * (values.size != 1)}: {shown}"
+    parts = text.split(",")
+    if ":" not in text and len(parts) == 3:
+        try:
+            last = float(parts[2])
+        except ValueError:
+            return line
+        if last >= 2 and last == int(last):
+            line += (f"  (a comma list is values; the range of {int(last)} values from "
+                     f"{parts[0]} to {parts[1]} is {parts[0]}:{parts[1]}:{int(last)})")
+    return line
+
+
 def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
     case_argument(p, what="study")
     if many_torques:
@@ -89,15 +116,17 @@ def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
                         "default a local cluster; 'synchronous' runs in this process")
     p.add_argument("--workers", type=count(1, 1024), default=None, metavar="N",
                    help="processes of the local cluster (default one per core)")
+    p.add_argument("--force", action="store_true",
+                   help="run points whose misalignment is beyond the plausible range of the "
+                        "blanks (5 %% of the face width; flagged in the output's "
+                        "plausibility) instead of refusing them")
     progress_option(p)
 
 
 def _root_stress_option(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--root-stress", action="store_true",
-                   help="also the peak tooth-root stress of both members at every point "
-                   "(root_stress_max) from FE influence coefficients (docs/fe.md): built once "
-                   "per design, ~0.5-1.5 min per member with PARDISO (several with SuperLU), then "
-                   "read from the cache by every worker")
+    root_stress_option(p, "the peak tooth-root stress of both members at every point "
+                          "(root_stress_max), the coefficients built once per design and "
+                          "handed to every worker")
 
 
 def register(sub) -> None:
@@ -181,7 +210,8 @@ def _prepare(args: argparse.Namespace) -> tuple:
     run = StudyRun(options=LTCAOptions(**kw), flank=args.flank, output=out,
                    scheduler=args.scheduler, n_workers=args.workers,
                    progress=not args.no_progress,
-                   root_stress=bool(getattr(args, "root_stress", False)))
+                   root_stress=bool(getattr(args, "root_stress", True)),
+                   force=bool(getattr(args, "force", False)))
     return case, run
 
 
@@ -256,25 +286,60 @@ def _status_line(ds) -> str:
     if (st == 2).any():
         reasons = sorted(set(ds["reason"].values.ravel()[st == 2]))
         line += "\n  " + "\n  ".join(reasons[:5])
+    line += "\n" + plausibility_line(ds)
     if ds.attrs.get("points_resumed"):
         line += f"\n(resumed: {ds.attrs['points_resumed']} points from an interrupted run)"
     return line
+
+
+def plausibility_line(ds, name: str = "plausibility", what: str = "points") -> str:
+    """How many points a study flagged implausible, and for which causes
+    (:data:`contact.ltca.plausibility.CAUSES`: the bits of ``name``, any torque)."""
+    import numpy as np
+
+    from contact.ltca.plausibility import CAUSES
+
+    if name not in ds:
+        return f"plausibility: not recorded (a file written before {name!r})"
+    flags = ds[name]
+    other = [d for d in flags.dims if d == "torque"]
+    bits = np.bitwise_or.reduce(flags.values.astype(np.int64), axis=flags.get_axis_num(
+        other[0])) if other else flags.values.astype(np.int64)
+    bits = np.ravel(bits)
+    n = int(np.count_nonzero(bits))
+    if n == 0:
+        return (f"plausibility: all {bits.size} {what} plausible (none flagged for plastic "
+                "contact, flank above the material's limit, LTE spread or a misalignment "
+                "beyond the blank)")
+    causes = ", ".join(f"{c.replace('_', ' ')} {int(np.count_nonzero(bits & (1 << k)))}"
+                       for k, c in enumerate(CAUSES) if np.any(bits & (1 << k)))
+    return (f"WARNING: plausibility: {n} of {bits.size} {what} flagged implausible "
+            f"({causes}; the variable {name} says which, per torque; the causes are those "
+            "`ltca run` warns of)")
 
 
 def sweep_command(args: argparse.Namespace) -> int:
     from contact.study import sweep
 
     case, run = _prepare(args)
-    axes = {}
+    axes, lines = {}, []
     for opt, (name, factor) in _INPUT_OPTIONS.items():
         text = getattr(args, opt)
         if text is not None:
-            axes[name] = parse_range(f"--{opt.replace('_', '-')}", text) * factor
+            option = f"--{opt.replace('_', '-')}"
+            typed = parse_range(option, text)
+            lines.append(values_line(option, text, typed, _TYPED_UNITS[opt]))
+            axes[name] = typed * factor
     if not axes:
         raise InputError("sweep: give at least one of --dE, --dP, --dG, --dSigma, "
                          "--deviation-scale")
-    ds = sweep(case, torque=_torques(args, case), speed=args.speed, **axes, run=run)
-    print(f"sweep of {case.name}: " + " x ".join(f"{k} {v.size}" for k, v in axes.items()))
+    torques = _torques(args, case)
+    n = math.prod(v.size for v in axes.values())
+    print(f"sweep of {case.name}: {n} points (" + " x ".join(f"{k} {v.size}" for k, v in
+                                                           axes.items())
+          + f") at T_p {', '.join(f'{t:g}' for t in torques)} N m", flush=True)
+    print("\n".join(lines), flush=True)
+    ds = sweep(case, torque=torques, speed=args.speed, **axes, run=run)
     print(_ranges_table(ds))
     print(_status_line(ds))
     print(f"wrote {run.output}")
@@ -286,7 +351,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
     import numpy as np
     from tabulate import tabulate
 
-    from contact.study import parse_distribution, sample, sensitivity
+    from contact.study import draw_points, parse_distribution, sample, sensitivity
     from contact.study.monte_carlo import draw_values
 
     case, run = _prepare(args)
@@ -298,10 +363,21 @@ def tolerance_command(args: argparse.Namespace) -> int:
     if not dists:
         raise InputError("tolerance: give the distribution of at least one of --dE, --dP, "
                          "--dG, --dSigma, --deviation-scale")
-    ds = sample(case, dists, args.n, method=args.method, seed=args.seed,
-                torque=_torques(args, case), speed=args.speed, run=run)
+    torques = _torques(args, case)
     print(f"tolerance analysis of {case.name}: {args.n} draws ({args.method}, seed "
-          f"{args.seed}) of " + ", ".join(dists))
+          f"{args.seed}) of " + ", ".join(dists)
+          + f" at T_p {', '.join(f'{t:g}' for t in torques)} N m", flush=True)
+    # the draws sample() will make (same distributions, method and seed): their range
+    draws = draw_points(dists, args.n, method=args.method, seed=args.seed)
+    for opt, (name, factor) in _INPUT_OPTIONS.items():
+        if name in draws:
+            x = draws[name] / factor
+            p5, p50, p95 = np.percentile(x, (5, 50, 95))
+            print(f"  --{opt.replace('_', '-')} [{_TYPED_UNITS[opt]}]: {getattr(args, opt)}: "
+                  f"draws from {x.min():.4g} to {x.max():.4g} (P5 {p5:.4g}, P50 {p50:.4g}, "
+                  f"P95 {p95:.4g})", flush=True)
+    ds = sample(case, dists, args.n, method=args.method, seed=args.seed,
+                torque=torques, speed=args.speed, run=run)
     ok = ds["status"].values != 2
     rows = []
     for t in ds["torque"].values:
@@ -364,6 +440,13 @@ def vh_check_command(args: argparse.Namespace) -> int:
           f"{case.misalignment.delta_E:g} mm, ΔP {case.misalignment.delta_P:g} mm: mapping "
           f"the pattern centre over {nv} x {nh} V-H points ({nv * nh} analyses), then 3 "
           "single analyses", flush=True)
+    for option, key, default, shift in (
+            ("--dE", "delta_E", VH_DEFAULT_GRID[0], case.misalignment.delta_E),
+            ("--dP", "delta_P", VH_DEFAULT_GRID[1], case.misalignment.delta_P)):
+        grid = kw[key] if key in kw else default + shift
+        text = getattr(args, option[2:])
+        print(values_line(f"{option} ({'V' if key == 'delta_E' else 'H'})",
+                          text if text is not None else "", grid, "mm"), flush=True)
     ds = vh_check(case, torque=torque,
                   toe=VH_DEFAULT_LIMITS[0] if args.toe is None else args.toe,
                   heel=VH_DEFAULT_LIMITS[1] if args.heel is None else args.heel,
@@ -377,6 +460,8 @@ def vh_check_command(args: argparse.Namespace) -> int:
           "(V = dE, H = dP; centre as fractions of face width u and whole depth v)")
     print(tabulate(rows, headers=("position", "V [mm]", "H [mm]", "target u", "centre u",
                                   "target v", "centre v", "grid tol. u"), tablefmt="github"))
+    print(plausibility_line(ds, "map_plausibility", "V-H points"))
+    print_verdict(ds, short=True)
     print(f"wrote {run.output}")
     _plots(ds, args)
     return 0

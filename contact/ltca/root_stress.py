@@ -80,8 +80,10 @@ def prepare_coefficients(case, flank: str | None = None, options=None, *,
     """Both members' FE influence coefficients, built or read from the cache, once.
 
     A study (sweep, duty cycle) whose points all use one design calls this in the client
-    before it dispatches the points, so the workers of a local cluster read the cached
-    coefficients instead of each building the same ones at once.
+    before it dispatches the points and hands the coefficients to its workers with the
+    shared inputs (scattered once per worker); each writes them into its own cache
+    (:func:`contact.compliance.fe.prime_cache`), so no worker builds them, on a local
+    cluster or on machines that share no cache directory (issue 53).
 
     Parameters
     ----------

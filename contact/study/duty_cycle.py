@@ -83,6 +83,11 @@ class DutyInputs:
         Each bin's analysis also computes the tooth-root stress (``run_analysis``'s
         ``root_stress``; FE influence coefficients, docs/fe.md), so the bending side
         (ISO 6336-3 S–N curve) has its fillet stresses. FEOptions: that FE model.
+    coefficients : tuple of xarray.Dataset
+        The FE influence coefficients the client built or read (set by
+        :func:`run_duty_cycle`, not by the user): every worker writes them into its own
+        cache before its first bin (:func:`contact.compliance.fe.prime_cache`), so no
+        worker builds them (issue 53). Not part of the fingerprint.
     """
 
     case: Case
@@ -90,6 +95,7 @@ class DutyInputs:
     options: LTCAOptions
     flank: str | None = None
     root_stress: Any = False
+    coefficients: tuple = ()
 
     def fingerprint(self) -> str:
         """A hash of everything deciding the bins' analyses (a resumed run must match):
@@ -139,6 +145,10 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
 
     case, duty = shared.case, shared.duty
     torque = float(duty.torque[index])
+    if shared.coefficients:   # the client's FE coefficients into this worker's cache
+        from contact.compliance.fe import prime_cache
+
+        prime_cache(shared.coefficients)
     try:
         mis = duty.misalignment(index, case.misalignment)
         tree = run_analysis(dataclasses.replace(case, misalignment=mis), [torque],
@@ -495,12 +505,15 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
         if not isinstance(root_stress, FEOptions):
             raise InputError("root_stress: must be True, False or a "
                              f"contact.compliance.fe.FEOptions, got {root_stress!r}")
-    if root_stress is not False:  # built once here, read from the cache by every bin
+    coefficients: tuple = ()
+    if root_stress is not False:  # built once here, handed to every worker (primed caches)
         from contact.ltca.root_stress import prepare_coefficients
 
-        prepare_coefficients(case, run.flank, None if root_stress is True else root_stress,
-                             progress=run.progress)
-    shared = DutyInputs(case, duty, run.options or LTCAOptions(), run.flank, root_stress)
+        coefficients = tuple(prepare_coefficients(
+            case, run.flank, None if root_stress is True else root_stress,
+            progress=run.progress).values())
+    shared = DutyInputs(case, duty, run.options or LTCAOptions(), run.flank, root_stress,
+                        coefficients)
     return duty_cycle_result(shared, _bins(shared, run))
 
 

@@ -118,6 +118,10 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     from friction.efficiency import efficiency_analysis
 
     case = shared.case
+    if shared.coefficients:   # the client's FE coefficients into this worker's cache
+        from contact.compliance.fe import prime_cache
+
+        prime_cache(shared.coefficients)
     try:
         tree = run_analysis(
             dataclasses.replace(case, misalignment=misalignment_of(case.misalignment, point)),
@@ -373,12 +377,15 @@ def run_points(
     if "deviation_scale" in names and shared.deviations is None:
         raise InputError(f"deviation_scale: case {shared.case.name!r} has no [deviations] "
                          "table to scale")
-    if shared.root_stress is not False:  # built once here, read from the cache by every point
+    if shared.root_stress is not False:
+        # built (or read) once here and handed to every worker with the shared inputs:
+        # a worker writes them into its own cache, so none builds them (issue 53)
         from contact.ltca.root_stress import prepare_coefficients
 
-        prepare_coefficients(shared.case, shared.flank,
-                             None if shared.root_stress is True else shared.root_stress,
-                             progress=progress)
+        coefficients = prepare_coefficients(
+            shared.case, shared.flank,
+            None if shared.root_stress is True else shared.root_stress, progress=progress)
+        shared = dataclasses.replace(shared, coefficients=tuple(coefficients.values()))
     store = None
     done: set[int] = set()
     if output is not None:

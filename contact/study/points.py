@@ -109,6 +109,12 @@ class StudyInputs:
         (torque, member), :func:`contact.run_analysis`'s ``root_stress``): the FE
         coefficients are built once per design (cached on disk) and reused by every point
         of the same design. Default False (the output has no ``root_stress_max``).
+    coefficients : tuple of xarray.Dataset
+        The FE influence coefficients the client built or read for the study (set by the
+        engine, not by the user): handed to every worker with these inputs, which writes
+        them into its own cache before its first point (:func:`contact.compliance.fe.
+        prime_cache`), so that no worker builds them, whatever its cache directory
+        (issue 53). Not part of the fingerprint.
     """
 
     case: Case
@@ -119,6 +125,7 @@ class StudyInputs:
     flank: str | None = None
     deviations: tuple[SurfaceDeviation | None, SurfaceDeviation | None] | None = None
     root_stress: Any = False
+    coefficients: tuple = ()
 
     def deviations_at(self, scale: float | None) -> tuple | bool:
         """The (pinion, gear) deviations scaled by ``scale`` (None: unscaled); False for

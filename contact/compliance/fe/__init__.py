@@ -20,7 +20,13 @@ solved with scikit-fem and a sparse direct solver (docs/fe.md):
 * :mod:`~contact.compliance.fe.export` — the solid's boundary as STL (STEP with gmsh).
 """
 
-from contact.compliance.fe.cache import CACHE_ENV, cache_directory, cache_key, cache_path
+from contact.compliance.fe.cache import (
+    CACHE_ENV,
+    cache_directory,
+    cache_key,
+    cache_path,
+    prime_cache,
+)
 from contact.compliance.fe.elasticity import SOLVERS, elastic_model, factorise
 from contact.compliance.fe.influence import (
     InfluenceModel,
@@ -62,5 +68,6 @@ __all__ = [
     "influence_dataset",
     "locate_flank_points",
     "member_flank",
+    "prime_cache",
     "principal_stresses",
 ]

@@ -27,6 +27,7 @@ Public names
 ------------
 CACHE_ENV          the environment variable naming the cache directory
 CHECKSUM_ATTR      the global attribute holding an entry's data checksum
+prime_cache        write coefficients handed over by a study's client into this cache
 FORMAT_VERSION     version of the file layout (part of every key)
 cache_directory    the directory in use
 cache_key          the key of one member's coefficients
@@ -53,7 +54,7 @@ import xarray as xr
 
 from geometry import __version__
 from geometry.core.atomic_files import atomic_path
-from geometry.core.errors import LTCAError
+from geometry.core.errors import InputError, LTCAError
 
 __all__ = [
     "CACHE_ENV",
@@ -63,6 +64,7 @@ __all__ = [
     "cache_key",
     "cache_path",
     "data_checksum",
+    "prime_cache",
     "read_cache_entry",
     "write_cache_entry",
 ]
@@ -324,3 +326,48 @@ def read_cache_entry(path: str | os.PathLike[str], key: str) -> xr.Dataset | Non
     if ds is None:
         _set_aside(path, seen, reason or "failed a check")
     return ds
+
+
+def prime_cache(coefficients, cache_dir: str | os.PathLike[str] | None = None) -> int:
+    """Write influence coefficients read elsewhere into this process's cache, where the
+    cache lacks a valid entry of their key: what a study's worker does with the
+    coefficients its client built and handed over through the engine (issue 53), so that
+    every path that reads the cache — the root stress, the FE compliance — finds them and
+    no worker builds them, whatever its cache directory (another machine's, empty). An
+    entry already there is left alone (a stat, so that priming costs nothing per point);
+    the reader checks it when it reads it (key, checksum, finiteness) and rebuilds a bad
+    one with a warning.
+
+    Parameters
+    ----------
+    coefficients : iterable of xarray.Dataset
+        Influence-coefficient datasets, each with its ``cache_key`` attribute (as
+        :func:`contact.compliance.fe.influence_coefficients` returns them).
+    cache_dir : path-like, optional
+        The cache directory (default :func:`cache_directory`).
+
+    Returns
+    -------
+    int
+        The entries written (0 when the cache had an entry of every key).
+
+    Raises
+    ------
+    InputError
+        A dataset without a ``cache_key`` attribute.
+    """
+    written = 0
+    for ds in coefficients:
+        key = ds.attrs.get("cache_key")
+        if not isinstance(key, str) or not key:
+            raise InputError("coefficients: a dataset without its cache_key attribute "
+                             "(not influence coefficients of this toolkit)")
+        path = cache_path(key, cache_dir)
+        if path.exists():  # one stat per point: the reader checks the entry when it reads it
+            continue
+        write_cache_entry(ds, path, key)
+        written += 1
+    if written:
+        log.info("FE cache %s: %d entr%s written from the study's client",
+                 cache_directory(cache_dir), written, "y" if written == 1 else "ies")
+    return written

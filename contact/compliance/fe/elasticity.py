@@ -10,8 +10,11 @@ some ten times slower for these elements). Degree of freedom 3 n + c is the comp
 (x, y, z) of the displacement at node n of the scalar basis.
 
 The solution K u = f is by a sparse direct factorisation, factorised once and applied to
-many right-hand sides: SuperLU through scipy (always there), or Intel MKL PARDISO through
-pypardiso where installed (the optional extra ``fe``), chosen from :data:`SOLVERS`.
+many right-hand sides, chosen from :data:`SOLVERS`: CHOLMOD's supernodal Cholesky
+(SuiteSparse, through cvxopt, a required dependency with wheels for every platform: the
+default, issue 53), Intel MKL PARDISO through pypardiso where installed (the optional
+extra ``fe``, x86-64 only), or SuperLU through scipy (a general LU, ~15× CHOLMOD's time on
+these matrices; kept as the reference).
 
 Public names
 ------------
@@ -70,13 +73,15 @@ class ElasticModel:
     Attributes
     ----------
     basis : skfem.CellBasis — the scalar quadratic basis (its dofs are the nodes)
-    stiffness : scipy.sparse.csr_matrix (3N, 3N) — K [N/mm]
+    stiffness : scipy.sparse.csr_matrix (3N, 3N) or None — K [N/mm]; None in a model whose
+        stiffness was handed to its factorisation and released (the influence
+        coefficients' build: its memory is the factor's, issue 53)
     youngs_modulus, poisson_ratio : float — [MPa], [1]
     assemble_time : float — [s]
     """
 
     basis: skfem.CellBasis
-    stiffness: sp.csr_matrix
+    stiffness: sp.csr_matrix | None
     youngs_modulus: float
     poisson_ratio: float
     assemble_time: float
@@ -84,7 +89,7 @@ class ElasticModel:
     @property
     def n_dofs(self) -> int:
         """Unknowns of the unconstrained problem, 3 × nodes."""
-        return self.stiffness.shape[0]
+        return 3 * int(self.basis.N)
 
     def element_dofs(self, elements: np.ndarray) -> np.ndarray:
         """(E, 3 nb) vector dofs of ``elements``, node-major (3 n + c)."""
@@ -126,7 +131,7 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     dx = basis.dx  # (E, Q)
     ne = dx.shape[0]
     n = 3 * basis.N
-    rows, cols, vals = [], [], []
+    parts: list[sp.csr_matrix] = []
     eye = np.eye(3)
     for lo in range(0, ne, _BLOCK):
         sl = slice(lo, min(lo + _BLOCK, ne))
@@ -137,14 +142,25 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
         ke = lam * gg + mu * gg.transpose(0, 1, 4, 3, 2)
         ke = ke + mu * tr[:, :, None, :, None] * eye[None, None, :, None, :]
         ke = ke.reshape(-1, 3 * nb, 3 * nb)
+        # exact symmetry element by element (symmetric to round-off): the sum over the
+        # elements is then exactly symmetric, as (i, j) and (j, i) add the same terms in
+        # the same order
+        ke = 0.5 * (ke + ke.transpose(0, 2, 1))
         dofs = (3 * basis.element_dofs[:, sl].T[:, :, None] + np.arange(3)).reshape(
             -1, 3 * nb).astype(np.int32)
-        rows.append(np.repeat(dofs, 3 * nb, axis=1).ravel())
-        cols.append(np.tile(dofs, (1, 3 * nb)).ravel())
-        vals.append(ke.ravel())
-    k = sp.coo_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
-                      shape=(n, n)).tocsr()
-    k = 0.5 * (k + k.T)  # exact symmetry (the blocks are symmetric to round-off)
+        # one block's triplets summed into CSR at once: memory of one block, not of all
+        # (issue 53: the whole mesh's triplets took ~1 GB at the default mesh)
+        parts.append(sp.csr_matrix((ke.ravel(), (np.repeat(dofs, 3 * nb, axis=1).ravel(),
+                                                 np.tile(dofs, (1, 3 * nb)).ravel())),
+                                   shape=(n, n)))
+        del ke, gg, gw
+        while len(parts) > 1 and parts[-1].nnz >= parts[-2].nnz // 2:
+            last = parts.pop()
+            parts[-1] = parts[-1] + last      # pairwise sums: each entry added O(log) times
+    k = parts[0]
+    for other in parts[1:]:
+        k = k + other
+    del parts
     elapsed = time.perf_counter() - t0
     log.info("stiffness: %d elements (%s), %d dofs, %d non-zeros, %.1f s", ne, element, n,
              k.nnz, elapsed)
@@ -195,12 +211,21 @@ def _pardiso_installed() -> bool:
     return importlib.util.find_spec("pypardiso") is not None
 
 
-#: solver name → a test whether it is installed here ("auto": PARDISO if installed, else
-#: SuperLU)
+def _cholmod_installed() -> bool:
+    return importlib.util.find_spec("cvxopt") is not None
+
+
+#: solver name → a test whether it is installed here ("auto": the first installed of
+#: CHOLMOD, PARDISO, SuperLU)
 SOLVERS: dict[str, Callable[[], bool]] = {
-    "superlu": lambda: True,
+    "cholmod": _cholmod_installed,
     "pardiso": _pardiso_installed,
+    "superlu": lambda: True,
 }
+
+#: right-hand sides solved at once by CHOLMOD: bounds the dense blocks' memory (the loads
+#: and displacements, 8 bytes × unknowns × this) while keeping its supernodal solves BLAS-3
+CHOLMOD_BLOCK = 48
 
 
 @dataclass(eq=False)
@@ -212,7 +237,8 @@ class Factorisation:
     solver : str — which solver factorised it
     free : ndarray (F,) — the unconstrained dofs, in the order of K_ff
     n_dofs : int — all dofs (3 × nodes)
-    factor_nnz : int — non-zeros of the factors (memory ≈ 12 bytes each)
+    factor_nnz : int — non-zeros of the factors (memory ≈ 12 bytes each); -1 where the
+        solver does not report them (CHOLMOD through cvxopt)
     factor_time : float — [s]
     """
 
@@ -234,15 +260,54 @@ class Factorisation:
         return out[:, 0] if vec else out
 
 
-def _superlu(a: sp.csc_matrix):
+def _superlu(box: list):
+    a = box.pop()
     lu = spla.splu(a, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
                    options={"SymmetricMode": True})
     return lu.solve, int(lu.L.nnz + lu.U.nnz)
 
 
-def _pardiso(a: sp.csc_matrix):
+def _cholmod(box: list):
+    """CHOLMOD's Cholesky factor of a symmetric positive definite matrix given by its
+    lower triangle (CSC, the one item of ``box``, taken out so that its memory is freed
+    once copied: supernodal, CHOLMOD's fill-reducing ordering: AMD, or METIS where the
+    library has it); the solve applies it to blocks of right-hand sides."""
+    from cvxopt import cholmod, matrix, spmatrix
+
+    low = box.pop()
+    columns = np.repeat(np.arange(low.shape[1], dtype=np.int64), np.diff(low.indptr))
+    mat = spmatrix(low.data, low.indices.astype(np.int64), columns, size=low.shape)
+    del columns, low
+    saved = dict(cholmod.options)
+    try:
+        cholmod.options["supernodal"] = 2          # supernodal (BLAS-3) numeric factor
+        cholmod.options["postorder"] = True
+        factor = cholmod.symbolic(mat, uplo="L")
+        cholmod.numeric(mat, factor)
+    except ArithmeticError as exc:                 # not positive definite: singular K
+        raise RuntimeError(f"CHOLMOD: {exc}") from None
+    finally:
+        cholmod.options.clear()
+        cholmod.options.update(saved)
+    del mat
+
+    def solve(b: np.ndarray) -> np.ndarray:
+        out = np.empty_like(b)
+        for start in range(0, b.shape[1], CHOLMOD_BLOCK):
+            block = matrix(np.asfortranarray(b[:, start:start + CHOLMOD_BLOCK]))
+            cholmod.solve(factor, block)
+            out[:, start:start + CHOLMOD_BLOCK] = np.asarray(block)
+        return out
+
+    # cvxopt does not report the factor's size without copying it out (getfactor: ~0.8 s
+    # and the factor's memory again): -1, "not reported"
+    return solve, -1
+
+
+def _pardiso(box: list):
     import pypardiso
 
+    a = box.pop()
     solver = pypardiso.PyPardisoSolver(mtype=2)  # real symmetric positive definite
     upper = sp.triu(a, format="csr")
     upper.sort_indices()
@@ -278,7 +343,7 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     """
     one_of("solver", solver, ("auto", *SOLVERS))
     if solver == "auto":
-        solver = "pardiso" if SOLVERS["pardiso"]() else "superlu"
+        solver = next(name for name, installed in SOLVERS.items() if installed())
     elif not SOLVERS[solver]():
         raise ModelUnavailableError(f"solver: {solver!r} is not installed here (pip install "
                                     "'hypoid-ltca[fe]'); available: "
@@ -289,10 +354,18 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
                          "has no unique displacement)")
     n = stiffness.shape[0]
     free = np.setdiff1d(np.arange(n), fixed)
-    a = sp.csr_matrix(stiffness)[free][:, free].tocsc()
+    if solver == "cholmod":  # its lower triangle only: half the memory of K_ff
+        a = sp.tril(stiffness, format="csr")[free][:, free].tocsc()
+    else:
+        a = sp.csr_matrix(stiffness)[free][:, free].tocsc()
+    # K itself is no longer needed here: a caller that handed over its only reference
+    # (build_influence_model) gets its memory back before the factor takes its own
+    del stiffness
     t0 = time.perf_counter()
     try:
-        solve, nnz = (_pardiso if solver == "pardiso" else _superlu)(a)
+        box = [a]   # the solver takes the matrix out: freed once it holds its own copy
+        del a
+        solve, nnz = {"cholmod": _cholmod, "pardiso": _pardiso, "superlu": _superlu}[solver](box)
     except RuntimeError as exc:  # SuperLU: "Factor is exactly singular"
         raise LTCAError(f"stiffness matrix: factorisation failed ({exc}); part of the mesh "
                         "is not held by the constraint") from None

@@ -39,6 +39,7 @@ principal_stresses     extreme principal values of stress tensors
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import logging
 import math
@@ -393,8 +394,11 @@ def build_influence_model(case, member: str, flank: str = "drive",
     n_nodes = elastic.basis.N
     fixed_nodes = solid.constrained_nodes()
     fixed_nodes = fixed_nodes[fixed_nodes < n_nodes]
-    factor = factorise(elastic.stiffness,
-                       (3 * fixed_nodes[:, None] + np.arange(3)).ravel(), solver)
+    # the stiffness handed to its factorisation and released from the model: K's memory
+    # is free before the factor takes its own (the build's peak, issue 53)
+    box = [elastic.stiffness]
+    elastic = dataclasses.replace(elastic, stiffness=None)
+    factor = factorise(box.pop(), (3 * fixed_nodes[:, None] + np.arange(3)).ravel(), solver)
     times["factorisation"] = factor.factor_time
     t1 = time.perf_counter()
     side = solid.sections.side_name(name)
