@@ -19,7 +19,8 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
 
       commands, cli                      (the ``ltca`` command)
         └── plots (figures, report)
-              └── study, optimize, wear, durability  (studies and loops over analyses)
+              └── study, optimize, wear, durability, rating  (studies and loops over
+                                                              analyses; the ISO rating)
                     └── catalogue, pipeline  (the bundled cases; one whole analysis)
 
 * ``geometry.core`` (the toolkit's low layer) imports nothing else of the toolkit;
@@ -55,8 +56,9 @@ LAYER_DEPENDS = {
 APPLICATION_LEVELS = (
     ("catalogue, pipeline", {"contact", "contact._moved", "contact.catalogue",
                              "contact.pipeline"}),
-    ("study, optimize, wear, durability", {"contact.study", "contact.optimize", "contact.wear",
-                                           "contact.durability"}),
+    ("study, optimize, wear, durability, rating", {"contact.study", "contact.optimize",
+                                                   "contact.wear", "contact.durability",
+                                                   "contact.rating"}),
     ("plots, report", {"contact.plots"}),
     ("commands, cli", {"contact.commands", "contact.cli", "contact.__main__"}),
 )

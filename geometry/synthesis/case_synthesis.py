@@ -403,7 +403,8 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
     parts.append(
         f"Blank: ISO 23509:2016 Method {d.method} (geometry.iso23509.blank) from the basic data "
         f"(z {d.z1}/{d.z2}, Sigma {_fmt(math.degrees(d.Sigma))} deg, a {_fmt(d.a)} mm, "
-        f"de2 {_fmt(d.de2, 6)} mm, b2 {_fmt(d.b2, 5)} mm, beta_m1 "
+        f"de2 {_fmt(geom.gear.de if d.de2 is None else d.de2, 6)} mm, b2 {_fmt(d.b2, 5)} mm, "
+        f"beta_m1 "
         f"{_fmt(math.degrees(d.beta_m), 5)} deg, rc0 {_fmt(d.rc0, 5)} mm).")
     if basic.targets:
         ach = ", ".join(
