@@ -19,6 +19,10 @@ The loaded-contact problem and its solvers::
 The whole analysis of a case (geometry → ease-off UTCA → LTCA) as one DataTree::
 
     from contact import run_analysis
+
+Every per-process cache (memo) of the toolkit is emptied by one call::
+
+    from contact import clear_caches
 """
 
 from contact import _moved
@@ -38,6 +42,7 @@ __all__ = [
     "SolverNotFoundError",
     "__version__",
     "available_solvers",
+    "clear_caches",
     "contact_residuals",
     "run_analysis",
     "solve_contact",
@@ -52,5 +57,6 @@ _LAZY = {
     **dict.fromkeys(("ContactError", "NotPositiveDefiniteError", "ProblemInputError",
                      "SolverNotFoundError"), "contact.errors"),
     "run_analysis": "contact.pipeline",
+    "clear_caches": "geometry.core.caches",
 }
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())

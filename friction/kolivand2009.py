@@ -39,7 +39,6 @@ import math
 import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from functools import cache
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any
@@ -51,6 +50,7 @@ from friction.ehl.rheology import VISCOSITY_PRESSURE_MODELS
 from friction.film import pan_hamrock
 from friction.traction import smooth_film_traction
 from friction.validity import FrictionModelRangeWarning
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.toml_files import read_toml
 from geometry.core.validation import broadcast, real_array, scalar_or_array
@@ -480,7 +480,7 @@ def _fit_from_document(doc: Mapping[str, Any], where: str) -> Kolivand2009Fit:
         raise InputError(f"{where}: missing or malformed field ({exc!r})") from None
 
 
-@cache
+@memoised(maxsize=None)
 def _bundled(name: str) -> Kolivand2009Fit:
     path = DATA_DIR / f"kolivand2009_{name}.toml"
     if not path.is_file():

@@ -35,7 +35,6 @@ The model is registered as ``"mixed_ehl"`` in :mod:`friction.coefficient`.
 
 from __future__ import annotations
 
-import functools
 import logging
 import math
 import warnings
@@ -51,6 +50,7 @@ from scipy.special import gamma, pbdv
 
 from friction.film import DOWSON_TOYODA_EXPONENTS, dowson_toyoda_central
 from friction.validity import FrictionModelRangeWarning
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.validation import broadcast, real_array, scalar_or_array
 
@@ -316,7 +316,7 @@ class MixedEHL(NamedTuple):
     valid: NDArray[np.bool_]
 
 
-@functools.cache
+@memoised(maxsize=None)
 def _ln_f52_spline() -> CubicSpline:
     """Cubic spline of ln F_{5/2}(h) on h ∈ [−6, 14] (2001 nodes, |relative error| < 1e-8
     against :func:`greenwood_tripp_integral`, tested) — built once, on first use."""

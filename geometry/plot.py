@@ -1,7 +1,7 @@
 """Plots of tooth flanks: both members in mesh, and each flank's projection-plane grid.
 
-matplotlib with the Agg backend (no display needed); every function writes a PNG and
-returns its path. Lengths are drawn in mm.
+matplotlib figures made without ``pyplot`` (:func:`new_figure`: no backend set, no global
+state); every function writes a PNG (atomically) and returns its path. Lengths are drawn in mm.
 
 Public functions
 ----------------
@@ -15,24 +15,41 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
 from geometry.machine.flank import FlankSurface, blank_outline
 from geometry.pair.assembly import case_transforms, transform_points
 
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
 __all__ = ["plot_flanks_in_mesh", "plot_projection_grid"]
 
 
-def pyplot():
-    """matplotlib.pyplot with the Agg backend (no display needed); shared by the toolkit's plots."""
-    import matplotlib
+def new_figure(**kwargs: Any) -> Figure:
+    """An empty :class:`matplotlib.figure.Figure`, made without ``pyplot``; shared by the
+    toolkit's plots.
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    No backend is chosen and nothing global changes (``matplotlib.use`` is never called,
+    the figure is not registered with ``pyplot``, so no ``close`` is needed): a notebook's
+    inline figures keep working. ``Figure.savefig`` renders PNG with Agg by itself.
 
-    return plt
+    Parameters
+    ----------
+    **kwargs
+        Passed to :class:`matplotlib.figure.Figure` (``figsize`` [in], ``layout`` …).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from matplotlib.figure import Figure
+
+    return Figure(**kwargs)
 
 
 def png_target(path) -> Path:
@@ -72,9 +89,8 @@ def plot_flanks_in_mesh(case, surfaces: Iterable[FlankSurface], path: str | os.P
     """
     if int(teeth) < 1:
         raise InputError(f"teeth: must be >= 1, got {teeth!r}")
-    plt = pyplot()
     target = png_target(path)
-    fig = plt.figure(figsize=(8, 7))
+    fig = new_figure(figsize=(8, 7))
     ax = fig.add_subplot(projection="3d")
     colours = {("pinion", "concave"): "tab:blue", ("pinion", "convex"): "tab:cyan",
                ("gear", "concave"): "tab:red", ("gear", "convex"): "tab:orange"}
@@ -95,8 +111,8 @@ def plot_flanks_in_mesh(case, surfaces: Iterable[FlankSurface], path: str | os.P
     ax.set_title(f"{case.name}: flanks in the pair frame")
     ax.legend(loc="upper left", fontsize=8)
     fig.tight_layout()
-    fig.savefig(target, dpi=110)
-    plt.close(fig)
+    with atomic_path(target) as tmp:
+        fig.savefig(tmp, dpi=110, format="png")
     return target
 
 
@@ -122,11 +138,11 @@ def plot_projection_grid(surface: FlankSurface, blank, path: str | os.PathLike[s
     """
     from geometry.machine.meshing import REASONS
 
-    plt = pyplot()
     target = png_target(path)
     out = blank_outline(blank)
     c = out.corners
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig = new_figure(figsize=(7, 5))
+    ax = fig.subplots()
     ring = np.array([c[0, 0], c[1, 0], c[1, 1], c[0, 1], c[0, 0]])
     ax.plot(ring[:, 0], ring[:, 1], "k-", lw=1, label="blank outline")
     g = surface.grid
@@ -144,6 +160,6 @@ def plot_projection_grid(surface: FlankSurface, blank, path: str | os.PathLike[s
     ax.set_title(f"{surface.member} {surface.flank}: projection-plane grid")
     ax.legend(fontsize=7, loc="best")
     fig.tight_layout()
-    fig.savefig(target, dpi=110)
-    plt.close(fig)
+    with atomic_path(target) as tmp:
+        fig.savefig(tmp, dpi=110, format="png")
     return target

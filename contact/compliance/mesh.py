@@ -27,7 +27,6 @@ mesh_compliance       C and its parts
 
 from __future__ import annotations
 
-import functools
 import logging
 import time
 from dataclasses import dataclass
@@ -49,6 +48,7 @@ from contact.compliance.tooth import (
 )
 from contact.compliance.weber import weber_compliance
 from geometry.case import TeethKey
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
@@ -189,7 +189,7 @@ def _build_pair(case: Case, theory: str, n_height: int, n_face: int,
                                build_time=time.perf_counter() - t0)
 
 
-@functools.lru_cache(maxsize=_MEMO_SIZE)
+@memoised(maxsize=_MEMO_SIZE)
 def _memo_pair(teeth: TeethKey, theory: str, n_height: int, n_face: int,
                materials: tuple[float, float, float, float],
                bores: tuple[float | None, float | None]) -> PairComplianceModel:

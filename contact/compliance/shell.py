@@ -35,7 +35,6 @@ THEORIES            registry of kinematic theories (seed Mindlin, Mindlin, highe
 
 from __future__ import annotations
 
-import functools
 import logging
 import time
 from collections.abc import Callable
@@ -55,6 +54,7 @@ from contact.compliance.shell_tooth import (
     Theory,
 )
 from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, positive, real_array
 
@@ -600,7 +600,7 @@ class ComplianceMatrix:
     centres: np.ndarray
 
 
-@functools.lru_cache(maxsize=32)
+@memoised(maxsize=32)
 def _segment_gauss(n: int) -> tuple[np.ndarray, np.ndarray]:
     """Gauss–Legendre points and weights on [0, 1] (memoised; read-only arrays)."""
     t, w = np.polynomial.legendre.leggauss(n)

@@ -55,9 +55,7 @@ def _figures(ds: xr.Dataset) -> list[dict[str, str]]:
         damage_map_figure,
         root_damage_figure,
     )
-    from geometry.plot import pyplot
 
-    plt = pyplot()
     draw = [(damage_map_figure, "cumulative flank (pitting) damage on the gear's contact "
              "grid, the first point to fail marked"),
             (bins_figure, "per bin: duration, share of the damage at the first point to "
@@ -70,7 +68,6 @@ def _figures(ds: xr.Dataset) -> list[dict[str, str]]:
         fig = function(ds)
         buf = io.BytesIO()
         fig.savefig(buf, dpi=100, format="png")
-        plt.close(fig)
         out.append({"caption": caption,
                     "data": base64.b64encode(buf.getvalue()).decode("ascii")})
     return out

@@ -18,7 +18,7 @@ import xarray as xr
 
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
-from geometry.plot import pyplot
+from geometry.plot import new_figure
 
 __all__ = ["bins_figure", "damage_map_figure", "root_damage_figure",
            "save_duty_cycle_figures"]
@@ -51,8 +51,8 @@ def damage_map_figure(ds: xr.Dataset):
         Not a duty-cycle result.
     """
     _check(ds)
-    plt = pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4), constrained_layout=True)
+    fig = new_figure(figsize=(10, 4), layout="constrained")
+    axes = fig.subplots(1, 2)
     u, v = ds["u"].values, ds["v"].values
     for k, ax in enumerate(axes):
         member = str(ds["member"].values[k])
@@ -102,8 +102,8 @@ def root_damage_figure(ds: xr.Dataset):
     if "root_damage" not in ds:
         raise InputError("duty cycle: the dataset has no 'root_damage' (run with "
                          "root_stress, `ltca duty-cycle --root-stress`)")
-    plt = pyplot()
-    fig, axes = plt.subplots(2, 2, figsize=(10, 6), constrained_layout=True, sharex=True)
+    fig = new_figure(figsize=(10, 6), layout="constrained")
+    axes = fig.subplots(2, 2, sharex=True)
     for k in range(ds.sizes["member"]):
         member = str(ds["member"].values[k])
         x = (ds["fillet_u"].values[k] if "fillet_u" in ds.coords
@@ -151,8 +151,8 @@ def bins_figure(ds: xr.Dataset):
         Not a duty-cycle result.
     """
     _check(ds)
-    plt = pyplot()
-    fig, axes = plt.subplots(2, 2, figsize=(10, 6), constrained_layout=True)
+    fig = new_figure(figsize=(10, 6), layout="constrained")
+    axes = fig.subplots(2, 2)
     labels = [f"{t:g}" for t in ds["torque"].values]
     x = np.arange(len(labels))
     # each bin's share of the damage at the point that fails first (per member)
@@ -208,7 +208,6 @@ def save_duty_cycle_figures(ds: xr.Dataset, directory: str | os.PathLike[str]) -
     out = Path(directory)
     if not out.is_dir():
         raise InputError(f"plots: directory {str(out)!r} does not exist")
-    plt = pyplot()
     case = ds.attrs.get("case", "duty_cycle")
     paths = []
     figures = [(damage_map_figure, f"{case}_duty_damage.png"),
@@ -220,6 +219,5 @@ def save_duty_cycle_figures(ds: xr.Dataset, directory: str | os.PathLike[str]) -
         path = out / name
         with atomic_path(path) as tmp:
             fig.savefig(tmp, dpi=110, format="png")
-        plt.close(fig)
         paths.append(path)
     return paths

@@ -1,6 +1,7 @@
 """Figures of design studies: sensitivity maps, tolerance histograms, the V-H check.
 
-Each function takes a study's dataset and returns a matplotlib Figure (Agg backend);
+Each function takes a study's dataset and returns a matplotlib Figure (made without
+``pyplot``: no backend set, nothing global changed);
 :func:`save_study_figures` writes the figures of any study result into a directory.
 Maps use perceptually uniform colour maps (``viridis``; ``cividis`` for positions),
 every panel names its variable and units, and every title names the case and the
@@ -22,12 +23,14 @@ from pathlib import Path
 
 import numpy as np
 import xarray as xr
+from matplotlib.patches import Rectangle
 from matplotlib.ticker import MaxNLocator
 
 from contact.study.monte_carlo import draw_values
 from contact.study.points import POINT_INPUTS
+from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
-from geometry.plot import pyplot
+from geometry.plot import new_figure
 
 __all__ = ["MAP_VARIABLES", "TOLERANCE_VARIABLES", "save_study_figures",
            "sensitivity_map_figure", "tolerance_figure", "vh_check_figure"]
@@ -90,8 +93,8 @@ def sensitivity_map_figure(ds: xr.Dataset, torque: float | None = None, *,
                          "the others first (ds.sel(...))")
     t = float(ds["torque"].values[0] if torque is None else torque)
     m = ds.isel(sel).sel(torque=t)
-    plt = pyplot()
-    fig, axes = plt.subplots(2, 2, figsize=(10, 8), layout="constrained")
+    fig = new_figure(figsize=(10, 8), layout="constrained")
+    axes = fig.subplots(2, 2)
     X, Y = m[x].values, m[y].values
     failed = m["status"].transpose(x, y).values == 2
     for ax, (name, cmap) in zip(axes.ravel(), MAP_VARIABLES, strict=True):
@@ -128,9 +131,8 @@ def tolerance_figure(ds: xr.Dataset, torque: float | None = None):
     """
     t = float(ds["torque"].values[0] if torque is None else torque)
     names = [n for n in TOLERANCE_VARIABLES if n in ds.data_vars]
-    plt = pyplot()
-    fig, axes = plt.subplots(1, len(names), figsize=(4.2 * len(names), 3.6),
-                             layout="constrained", squeeze=False)
+    fig = new_figure(figsize=(4.2 * len(names), 3.6), layout="constrained")
+    axes = fig.subplots(1, len(names), squeeze=False)
     ok = ds["status"].values != 2
     for ax, name in zip(axes[0], names, strict=True):
         values = draw_values(ds, name, t)
@@ -172,8 +174,8 @@ def vh_check_figure(vh: xr.Dataset):
         Three panels on the normalised gear flank (toe → heel, root → tip), each with
         its V and H, the target and the pattern centre; one colour scale.
     """
-    plt = pyplot()
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4), layout="constrained", sharey=True)
+    fig = new_figure(figsize=(13, 4), layout="constrained")
+    axes = fig.subplots(1, 3, sharey=True)
     env = vh["pressure_envelope"]
     vmax = float(np.nanmax(env.values)) or 1.0
     u, v = vh["u"].values, vh["v"].values
@@ -182,7 +184,7 @@ def vh_check_figure(vh: xr.Dataset):
         p = env.sel(position=pos).values.T
         mesh = ax.pcolormesh(u, v, np.ma.masked_less_equal(p, 0.0), cmap="viridis",
                              vmin=0.0, vmax=vmax, shading="nearest")
-        ax.add_patch(plt.Rectangle((0, 0), 1, 1, fill=False, lw=1.2, color="k"))
+        ax.add_patch(Rectangle((0, 0), 1, 1, fill=False, lw=1.2, color="k"))
         r = vh.sel(position=pos)
         ax.plot(float(r["pattern_centre_u"]), float(r["pattern_centre_v"]), "o", mfc="none",
                 mec="crimson", ms=9, label="pattern centre")
@@ -226,7 +228,6 @@ def save_study_figures(ds: xr.Dataset, directory: str | os.PathLike[str]) -> lis
     out = Path(directory)
     if not out.is_dir():
         raise InputError(f"plots: directory {str(out)!r} does not exist")
-    plt = pyplot()
     case = ds.attrs.get("case", "study")
     kind = ds.attrs.get("study")
     figs = []
@@ -244,7 +245,7 @@ def save_study_figures(ds: xr.Dataset, directory: str | os.PathLike[str]) -> lis
     paths = []
     for fig, name in figs:
         path = out / name
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, dpi=110, format="png")
         paths.append(path)
     return paths

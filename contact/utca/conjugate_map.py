@@ -23,7 +23,6 @@ memo_info, clear_memos
 
 from __future__ import annotations
 
-import functools
 import logging
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple
@@ -39,6 +38,7 @@ from contact.utca.action_surface import (
 )
 from contact.utca.spline_group import SplineGroup
 from geometry.case import TeethKey
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.kernels import kernels_module
 from geometry.machine.curvature import surface_curvatures
@@ -256,7 +256,7 @@ def _forward_grid(case: Case):
     return up, vp, cp, uu, vv, z, rho
 
 
-@functools.lru_cache(maxsize=_MEMO_SIZE)
+@memoised(maxsize=_MEMO_SIZE)
 def _memo_forward_points(teeth: TeethKey, flank: str) -> tuple[np.ndarray, ...]:
     """The real pinion on the forward map's grid (:func:`_pinion_points`) of the case of
     ``teeth`` (:meth:`~geometry.case.Case.teeth_key`; read-only arrays)."""
@@ -268,7 +268,7 @@ def _memo_forward_points(teeth: TeethKey, flank: str) -> tuple[np.ndarray, ...]:
     return out
 
 
-@functools.lru_cache(maxsize=4 * _MEMO_SIZE)  # four flanks per case
+@memoised(maxsize=4 * _MEMO_SIZE)  # four flanks per case
 def _memo_flank_nodes(teeth: TeethKey, member: str, flank: str, grid: tuple) -> FlankSurface:
     """The real flank of ``member`` on a projection-plane grid (``grid``: its options as
     sorted (key, value) pairs) of the case of ``teeth``

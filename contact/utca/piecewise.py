@@ -31,7 +31,6 @@ derivative       a partial derivative of a piecewise-polynomial spline
 
 from __future__ import annotations
 
-import functools
 import math
 from types import ModuleType
 from typing import NamedTuple
@@ -39,6 +38,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.lib.stride_tricks import sliding_window_view
 from scipy.interpolate import BSpline
+
+from geometry.core.caches import memoised
 
 __all__ = ["PiecewiseSpline", "derivative", "from_splines", "piece_basis"]
 
@@ -84,7 +85,7 @@ def piece_basis(t: np.ndarray, k: int = 3) -> np.ndarray:
     return _piece_basis(t.tobytes(), int(k))
 
 
-@functools.lru_cache(maxsize=64)
+@memoised(maxsize=64)
 def _piece_basis(knots: bytes, k: int) -> np.ndarray:
     """:func:`piece_basis` of the knots' bytes."""
     t = np.frombuffer(knots, dtype=float)

@@ -21,12 +21,12 @@ compiled_module   a compiled kernel module, imported once per process (None with
 
 from __future__ import annotations
 
-import functools
 import importlib
 import logging
 import os
 from types import ModuleType
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
 __all__ = ["KERNELS", "compiled_module", "kernels_module"]
@@ -35,7 +35,7 @@ __all__ = ["KERNELS", "compiled_module", "kernels_module"]
 KERNELS = ("numpy", "numba")
 
 
-@functools.cache
+@memoised(maxsize=None)
 def compiled_module(name: str) -> ModuleType | None:
     """The compiled kernel module ``name``, or None where numba is not installed or cannot
     cache the kernels (logged); imported once per process."""

@@ -64,11 +64,11 @@ import math
 import tomllib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from functools import cache
 from importlib import resources
 from types import MappingProxyType
 from typing import Any
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError, ModelUnavailableError
 
 __all__ = [
@@ -278,7 +278,7 @@ def read_material_table(table: str | Mapping[str, Any],
             if k not in ("schema", "units")}
 
 
-@cache
+@memoised(maxsize=None)
 def _bundled() -> dict[str, Material]:
     text = resources.files("geometry.core").joinpath("data", "materials.toml").read_text(
         encoding="utf-8")

@@ -58,7 +58,6 @@ settings_from_poses    inverse kinematics: settings that place a cutter and a wo
 
 from __future__ import annotations
 
-import functools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
@@ -66,6 +65,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.validation import integer, real
 
@@ -229,7 +229,7 @@ def taylor_motion(value0: float, derivatives: Sequence[float], q):
             out[:, 2].reshape(q.shape))
 
 
-@functools.lru_cache(maxsize=64)
+@memoised(maxsize=64)
 def taylor_coefficients(value0: float, derivatives: tuple[float, ...]) -> np.ndarray:
     """Polynomial coefficients of a machine motion f(q) = value0 + Σ d_k q^k/k! and its
     first two derivatives (the modified roll, helical and vertical motions of seed Eq. 2.4).

@@ -54,12 +54,12 @@ solve_envelope    solve a batch/grid of projection-plane targets
 
 from __future__ import annotations
 
-import functools
 import logging
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.kernels import kernels_module
 from geometry.machine.cradle import MachineSettings
@@ -341,7 +341,7 @@ class _CandidateGrid(NamedTuple):
     rows: np.ndarray
 
 
-@functools.lru_cache(maxsize=_GRID_MEMO)
+@memoised(maxsize=_GRID_MEMO)
 def _candidate_grid(blade: Blade, settings: MachineSettings, length_scale: float,
                     depth: float, main: int, wide: bool) -> _CandidateGrid:
     """The generated points of the coarse seed grid on section ``main`` (at q = 0, or
@@ -519,7 +519,7 @@ def _memo_seed(ctx: _Context, z0: float, p0: float, depth: float):
                           float(depth))
 
 
-@functools.lru_cache(maxsize=_SEED_MEMO)
+@memoised(maxsize=_SEED_MEMO)
 def _seed_memoised(blade: Blade, settings: MachineSettings, length_scale: float,
                    kernels: str, z0: float, p0: float, depth: float):
     """:func:`_memo_seed`'s search, on a context of its own."""

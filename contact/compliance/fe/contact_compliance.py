@@ -57,7 +57,6 @@ fe_mesh_compliance_many   C of several roll positions, as :func:`mesh_compliance
 
 from __future__ import annotations
 
-import functools
 import logging
 import time
 from dataclasses import dataclass
@@ -74,6 +73,7 @@ from contact.compliance.fe.superposition import locate_flank_points
 from contact.compliance.mesh import ContactSegments, PairComplianceModel
 from contact.compliance.tooth import END_TOLERANCE, shell_points_many, weber_depth
 from contact.compliance.weber import weber_compliance
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.pair.assembly import case_transforms
 
@@ -119,7 +119,7 @@ _MEMBERS = ("pinion", "gear")
 _MEMO_SIZE = 4  # coefficient files kept in memory by _read_cached (two designs' members)
 
 
-@functools.lru_cache(maxsize=_MEMO_SIZE)
+@memoised(maxsize=_MEMO_SIZE)
 def _read_cached(path: str, stamp: tuple[int, int, int], key: str) -> xr.Dataset | None:
     """A cache file's coefficients, read and checked once per process and file version
     (path, and the file's inode, size and modification time: a study's worker analyses

@@ -16,7 +16,6 @@ from __future__ import annotations
 import logging
 import math
 import time
-from functools import cache
 from typing import Any
 
 import numpy as np
@@ -32,6 +31,7 @@ from contact.qp.problem import (
 )
 from contact.qp.solvers.active_set import block_pivoting
 from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
+from geometry.core.caches import memoised
 
 __all__ = [
     "DEFAULT_SOLVER",
@@ -84,7 +84,7 @@ def _solve_active_set(
     )
 
 
-@cache
+@memoised(maxsize=None)
 def _builtin() -> dict[str, Backend]:
     """The toolkit's own backend (no third-party import)."""
     return {
@@ -99,7 +99,7 @@ def _builtin() -> dict[str, Backend]:
     }
 
 
-@cache
+@memoised(maxsize=None)
 def _registry() -> dict[str, Backend]:
     reg: dict[str, Backend] = dict(_builtin())
     try:

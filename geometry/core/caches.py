@@ -1,0 +1,102 @@
+"""The toolkit's per-process caches (memos), every one clearable by :func:`clear_caches`.
+
+A few results are kept in memory for the rest of the process because analyses of the same
+teeth ask for them again: the tooth models of a case, the ease-off's forward-map points,
+the seed grids of the equation of meshing, the FE coefficient files read, the bundled
+data files parsed (materials, kolivand2009 fits), the solver backends found installed.
+Each is a :func:`functools.lru_cache` made by :func:`memoised`, which also registers it
+here, so one call empties all of them::
+
+    >>> from geometry.core.caches import clear_caches
+    >>> cleared = clear_caches()   # the names of the caches emptied
+
+Nothing else in the toolkit keeps state between calls (tests/test_global_state.py reads
+every module for another ``lru_cache`` or ``functools.cache``). The FE influence
+coefficients' *disk* cache (``$HYPOID_LTCA_CACHE``, docs/environment.md) is not a memo:
+:func:`clear_caches` leaves it alone.
+
+When to clear: after editing a bundled data file in a running session (a notebook), to
+measure a cold start, or to give the memory back after a large study in the same process.
+Results never depend on it: a memo's entry is what its function computes again.
+
+Public functions
+----------------
+memoised         decorator: ``functools.lru_cache`` registered with :func:`clear_caches`
+clear_caches     empty every registered cache; returns their names
+cache_sizes      the number of entries each registered cache holds now
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+from typing import Any, TypeVar
+
+__all__ = ["cache_sizes", "clear_caches", "memoised"]
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+#: registered caches: "module.function" → the lru_cache wrapper (cache_clear, cache_info)
+_CACHES: dict[str, Any] = {}
+
+
+def memoised(maxsize: int | None = 128) -> Callable[[F], F]:
+    """``functools.lru_cache(maxsize)``, registered so that :func:`clear_caches` empties it.
+
+    Parameters
+    ----------
+    maxsize : int or None
+        Entries kept (least recently used dropped first); None: unbounded (for functions of
+        a few constant arguments: bundled data files, a spline of a fixed function).
+
+    Returns
+    -------
+    callable
+        The decorator; the decorated function has ``cache_clear`` and ``cache_info`` as
+        any ``lru_cache``'s.
+
+    Raises
+    ------
+    ValueError
+        ``maxsize`` negative.
+    """
+    if maxsize is not None and (not isinstance(maxsize, int) or maxsize < 0):
+        raise ValueError(f"maxsize: must be None or an integer >= 0, got {maxsize!r}")
+
+    def decorate(function: F) -> F:
+        wrapped = functools.lru_cache(maxsize=maxsize)(function)
+        _CACHES[f"{function.__module__}.{function.__qualname__}"] = wrapped
+        return wrapped  # type: ignore[return-value]
+
+    return decorate
+
+
+def clear_caches() -> list[str]:
+    """Empty every per-process cache of the toolkit (those of the modules imported so far;
+    a module not imported has nothing cached).
+
+    Returns
+    -------
+    list of str
+        The names (``module.function``) of the caches emptied, sorted.
+
+    Notes
+    -----
+    Registrations (the solver backends, friction models and compliance models a user
+    added: docs/extending.md) are not caches: they stay. The disk cache of FE coefficients
+    stays too.
+    """
+    for wrapped in _CACHES.values():
+        wrapped.cache_clear()
+    return sorted(_CACHES)
+
+
+def cache_sizes() -> dict[str, int]:
+    """The number of entries each registered cache holds now.
+
+    Returns
+    -------
+    dict of str to int
+        ``module.function`` → entries (``cache_info().currsize``).
+    """
+    return {name: int(w.cache_info().currsize) for name, w in sorted(_CACHES.items())}
