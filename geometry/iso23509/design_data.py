@@ -282,6 +282,23 @@ class BevelGearDesign:
         """``"face milling"`` (z0 = 0) or ``"face hobbing"`` (z0 ≥ 1)."""
         return "face hobbing" if self.z0 >= 1 else "face milling"
 
+    def to_degrees(self) -> dict[str, Any]:
+        """The fields given (``None`` left out), angles in degrees: the ``[design]`` table
+        of a case or basic file; inverse of :meth:`from_degrees`.
+
+        Returns
+        -------
+        dict
+            Field → value, ``Sigma``, ``beta_m``, ``alpha_dD``, ``alpha_dC``, ``theta_a2``,
+            ``theta_f2`` in [deg], the rest in the units of the class.
+        """
+        out: dict[str, Any] = {}
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if value is not None:
+                out[f.name] = value / _DEG if f.name in _ANGLE_INPUTS else value
+        return out
+
     @classmethod
     def from_degrees(cls, **values: Any) -> BevelGearDesign:
         """Build the design from the same fields with angles in degrees.
