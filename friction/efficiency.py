@@ -14,7 +14,14 @@ For every loaded contact segment of an LTCA (the ``/ltca`` dataset of
 5. losses: sliding P_s = μ F V_s, rolling P_r = F_R L V_r with F_R the Goksem–Hargreaves
    rolling traction per length (:mod:`friction.rolling`);
 6. per roll position the instantaneous power loss and efficiency
-   η = 1 − (ΣP_s + ΣP_r)/P_in, P_in = T_p ω_p; their mean over the mesh cycles.
+   η = 1 − (ΣP_s + ΣP_r)/P_in, P_in = T_p ω_p; their mean over the mesh cycles;
+7. scuffing and micropitting from the same local contact (docs/scuffing_micropitting.md):
+   Blok's flash temperature of each segment's Hertzian band of friction heat μ p |V_s|
+   shared by the two surfaces moving across the contact line
+   (:mod:`friction.flash_temperature`), the contact temperature on ISO/TS 6336-20's bulk
+   temperature, the scuffing safety against the oil's FZG scuffing temperature, and the
+   specific film thickness λ_GF = h_min/Ra with the safety against micropitting
+   (:mod:`friction.micropitting`).
 
 Bookkeeping identities hold by construction and are tested: each segment's sliding loss
 is μ·F·V_s, totals are sums.
@@ -45,19 +52,34 @@ from friction.film import (
     thermal_loading,
     thermal_reduction_factor,
 )
+from friction.flash_temperature import (
+    ScuffingConditions,
+    blok_flash_temperature,
+    bulk_temperature,
+    lubricant_factor,
+    scuffing_safety,
+    scuffing_temperature,
+)
 from friction.kinematics import surface_velocities
 from friction.lubricant import (
+    Lubricant,
     load_lubricant,
     pressure_viscosity_coefficient,
     temperature_viscosity_coefficient,
     thermal_conductivity,
     viscosity,
 )
+from friction.micropitting import (
+    GAUSSIAN_RA_PER_RQ,
+    micropitting_safety,
+    specific_film_thickness,
+)
 from friction.operating import OperatingConditions
 from friction.rolling import rolling_traction
 from geometry.core.conventions import binary_flag, data_var
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.hertz import STEEL, contact_modulus
+from geometry.core.materials import DEFAULT_MATERIAL, material
 
 __all__ = ["efficiency_analysis", "extrapolated_segments", "extrapolation_summary"]
 
@@ -84,8 +106,11 @@ def efficiency_analysis(
     friction_model: str | None = None,
     youngs_modulus: float | None = None,
     poisson_ratio: float | None = None,
+    scuffing: ScuffingConditions | None = None,
 ) -> xr.Dataset:
-    """Friction, power loss and mechanical efficiency of an LTCA result (seed ch. 5).
+    """Friction, power loss and mechanical efficiency of an LTCA result (seed ch. 5), with
+    the flash and contact temperature, the specific film thickness and the safeties against
+    scuffing and micropitting of the same contact.
 
     Parameters
     ----------
@@ -107,6 +132,9 @@ def efficiency_analysis(
     youngs_modulus, poisson_ratio : float, optional — [MPa], [1]
         Material of both members; default the LTCA's own (the ``options`` attribute of
         ``ltca``), else steel (:data:`geometry.core.hertz.STEEL`).
+    scuffing : friction.flash_temperature.ScuffingConditions, optional
+        Lubrication, meshing gears and structural factor of the scuffing assessment;
+        default ``ScuffingConditions()`` (dip lubrication, one mesh, X_W = 1).
 
     Returns
     -------
@@ -123,6 +151,22 @@ def efficiency_analysis(
         the segments concerned are flagged per segment in ``friction_model_extrapolated``
         (int8 0/1, CF ``flag_values``/``flag_meanings``).
 
+        Scuffing and micropitting: over (``member``, ``torque``, ``roll``, ``pair``,
+        ``segment``) ``surface_speed`` [m/s], each flank's speed across the contact line;
+        over (``torque``, ``roll``, ``pair``, ``segment``)
+        ``flash_temperature`` [K] (Blok, each member's effusivity from the material table
+        by the LTCA's ``material_pinion``/``material_gear``), ``contact_temperature``
+        [degC] (bulk + flash) and ``specific_film_thickness`` [1] (λ_GF = h_min/Ra, Ra =
+        √(2/π) Rq); over ``torque`` ``flash_temperature_mean`` [K] (length-weighted over
+        the loaded flank segments and the mesh cycles: θ_flm), ``bulk_temperature``
+        [degC], ``flash_temperature_max`` [K], ``contact_temperature_max`` [degC] and
+        ``specific_film_thickness_min`` [1] over the loaded flank segments (the contact
+        curves), ``contact_temperature_max_edge`` [degC] of the edge contacts (apart: the
+        moving-source formula overestimates there, their Péclet numbers are ≲ 1),
+        ``scuffing_safety`` and ``micropitting_safety`` [1]; 0-d ``scuffing_temperature``
+        [degC] and ``permissible_specific_film`` [1] of the oil. A safety the oil lacks
+        the data for is NaN, the reason in the variable's ``comment``.
+
     Raises
     ------
     InputError
@@ -135,6 +179,9 @@ def efficiency_analysis(
     -----
     Seed §5.2, Eq. 5.7–5.14; the EHL groups are written in the effective modulus
     E′ = 2E* (Dowson & Higginson), E* of :func:`geometry.core.hertz.contact_modulus`.
+    Scuffing: Blok (1937), ISO/TR 13989-1:2000 / ISO/TS 6336-20:2017; micropitting:
+    ISO/TR 15144-1:2014 / ISO/TS 6336-22:2018 (:mod:`friction.flash_temperature`,
+    :mod:`friction.micropitting`).
     """
     _check_variables(ltca)
     op = _operating_conditions(
@@ -153,7 +200,12 @@ def efficiency_analysis(
     for note in fric.range_warnings:
         log.info("%s", note)
     losses = _power_losses(seg, fric, ltca["torque"].values, op.pinion_speed)
-    return _friction_dataset(ltca, seg, fric, losses, op, oil)
+    cond = ScuffingConditions() if scuffing is None else scuffing
+    if not isinstance(cond, ScuffingConditions):
+        raise InputError("scuffing: must be a friction.flash_temperature.ScuffingConditions "
+                         f"or None, got {scuffing!r}")
+    durability = _surface_durability(ltca, seg, fric, oil, op, cond)
+    return _friction_dataset(ltca, seg, fric, losses, op, oil, durability)
 
 
 _NEEDED = (
@@ -209,6 +261,7 @@ class _Oil(NamedTuple):
     temperature_viscosity: float  # β [1/K]
     thermal_conductivity: float  # k [W/(m K)]
     traction: dict  # the oil's film-traction parameters that are set (mixed_ehl), by name
+    lubricant: Lubricant  # the oil as read (its surface-durability fields among them)
 
 
 def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
@@ -225,6 +278,7 @@ def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
         float(temperature_viscosity_coefficient(oil, temperature)),
         float(thermal_conductivity(oil, temperature)),
         traction,
+        oil,
     )
 
 
@@ -241,6 +295,10 @@ class _Segments(NamedTuple):
     rolling_velocity: np.ndarray  # [m/s] entraining, across the contact line
     slide_to_roll: np.ndarray  # [1] signed, sliding across the line / rolling
     slide_to_roll_total: np.ndarray  # [1] |V_s| / V_r, the μ model's SR (seed Eq. 5.5, 5.7)
+    pinion_speed_across: np.ndarray  # [m/s] |pinion surface velocity across the line|
+    gear_speed_across: np.ndarray  # [m/s] |gear surface velocity across the line|
+    half_width: np.ndarray  # [mm] Hertzian half-width 2w/(π p_max)
+    edge: np.ndarray  # bool: an edge contact (segment_kind not "curve")
 
 
 def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
@@ -248,7 +306,10 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
     force [N], load per length [N/mm], peak pressure [MPa], length and equivalent radius
     [mm], and their sliding and entraining speeds [m/s] and slide-to-roll ratios [1] — the
     signed one across the contact line, and the total |V_s|/V_r the friction model is fed —
-    at the pinion speed [rpm] (:func:`friction.kinematics.surface_velocities`)."""
+    at the pinion speed [rpm] (:func:`friction.kinematics.surface_velocities`); each
+    member's surface speed across the contact line [m/s] (the speed at which it passes
+    through the band, the flash temperature's), the Hertzian half-width [mm] and whether
+    the segment is an edge contact."""
     F = ltca["force"].values  # (T, J, K, S)
     loaded = np.isfinite(F) & (F > 0)
     shape = F.shape
@@ -267,11 +328,17 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
         ratio=float(ltca.attrs["ratio"]),
         check_meshing=False,
     )
+    across = np.cross(nrm[loaded], tan[loaded])  # unit: n ⟂ t
+    w = ltca["load_per_length"].values[loaded]
+    p = ltca["pressure_max"].values[loaded]
+    kind = ltca["segment_kind"].values if "segment_kind" in ltca else None
+    edge = (np.broadcast_to(kind != "curve", shape)[loaded] if kind is not None
+            else np.zeros(w.shape, bool))
     return _Segments(
         loaded=loaded,
         force=F[loaded],
-        load_per_length=ltca["load_per_length"].values[loaded],
-        pressure_max=ltca["pressure_max"].values[loaded],
+        load_per_length=w,
+        pressure_max=p,
         length=np.broadcast_to(ltca["segment_length"].values, shape)[loaded],
         radius=np.broadcast_to(ltca["equivalent_radius"].values, shape)[loaded],
         sliding_velocity=kin["sliding_velocity"],
@@ -279,7 +346,20 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
         slide_to_roll=kin["slide_to_roll"],
         slide_to_roll_total=_total_slide_to_roll(kin["sliding_velocity"],
                                                  kin["rolling_velocity"]),
+        pinion_speed_across=np.abs(np.sum(kin["pinion_tangential"] * across, axis=-1)),
+        gear_speed_across=np.abs(np.sum(kin["gear_tangential"] * across, axis=-1)),
+        # b = 2w/(π p_max) (hertz_half_width, without its checks: a NaN stays NaN here)
+        half_width=_half_width(w, p),
+        edge=edge,
     )
+
+
+def _half_width(w: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """The Hertzian half-width 2w/(π p_max) [mm] of load per length w [N/mm] and peak
+    pressure p [MPa] (:func:`friction.flash_temperature.hertz_half_width`; NaN where p is
+    not > 0, as the LTCA's own ``half_width``)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(p > 0.0, 2.0 * w / (math.pi * np.where(p > 0.0, p, 1.0)), np.nan)
 
 
 def _total_slide_to_roll(sliding: np.ndarray, rolling: np.ndarray) -> np.ndarray:
@@ -356,6 +436,197 @@ def _film_and_friction(
     return _Friction(h, lam, np.broadcast_to(mu, seg.force.shape), outside, fr, range_notes)
 
 
+#: Péclet number below which the high-Péclet moving-source formula overestimates the
+#: flash temperature (Jaeger 1942; Archard 1958/59 puts the high-speed regime at Pe > 5–10)
+_PECLET_HIGH = 5.0
+
+
+class _Durability(NamedTuple):
+    """Flash and contact temperature, specific film thickness and the safeties of scuffing
+    and micropitting: per segment arrays 1-D over the loaded segments (n,), per torque
+    (T,)."""
+
+    flash: np.ndarray  # (n,) [K] Blok's flash temperature
+    contact: np.ndarray  # (n,) [degC] bulk + flash
+    specific_film: np.ndarray  # (n,) [1] λ_GF = h_min / Ra
+    flash_mean: np.ndarray  # (T,) [K] θ_flm over the loaded flank segments
+    bulk: np.ndarray  # (T,) [degC] θ_M
+    flash_max: np.ndarray  # (T,) [K] over the loaded flank segments
+    contact_max: np.ndarray  # (T,) [degC] over the loaded flank segments
+    contact_max_edge: np.ndarray  # (T,) [degC] over the loaded edge segments
+    specific_film_min: np.ndarray  # (T,) [1] over the loaded flank segments
+    scuffing_temperature: float  # [degC] θ_S of the oil (NaN: unknown)
+    scuffing_safety: np.ndarray  # (T,) [1] S_B
+    permissible_specific_film: float  # [1] λ_GFP of the oil (NaN: unknown)
+    micropitting_safety: np.ndarray  # (T,) [1] S_λ
+    comments: dict  # variable name → its ``comment`` (how it was made, or why NaN)
+    attrs: dict  # the assessment's inputs, as dataset attributes
+
+
+def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: _Oil,
+                        op: OperatingConditions, cond: ScuffingConditions) -> _Durability:
+    """Blok's flash temperature [K] of each loaded segment (μ p |V_s| over the Hertzian
+    band, each member's surface speed across the line and effusivity), the bulk [degC]
+    and contact temperature [degC], the specific film thickness λ_GF = h_min/Ra [1], their
+    extremes per torque over the loaded flank segments and the safeties against scuffing
+    and micropitting [1] (NaN, with the reason in ``comments``, where the oil lacks the
+    data; :mod:`friction.flash_temperature`, :mod:`friction.micropitting`)."""
+    n_torque = seg.loaded.shape[0]
+    torque_of = np.nonzero(seg.loaded)[0]  # the torque index of each loaded segment
+    comments: dict[str, str] = {}
+    names = [str(ltca.attrs.get(f"material_{m}", DEFAULT_MATERIAL)) for m in ("pinion", "gear")]
+    flash = np.full(seg.force.shape, np.nan)
+    try:
+        effusivity = [material(n).thermal_effusivity for n in names]
+        diffusivity = [_thermal_diffusivity(material(n)) for n in names]
+    except ModelUnavailableError as exc:
+        effusivity = diffusivity = [math.nan, math.nan]
+        comments["flash_temperature"] = f"NaN: no thermal properties of the material ({exc})"
+        log.info("flash temperature not computed: %s", exc)
+    mu, vs = fric.friction_coefficient, seg.sliding_velocity
+    v_p, v_g = seg.pinion_speed_across, seg.gear_speed_across
+    good = (np.isfinite(mu) & np.isfinite(seg.pressure_max) & np.isfinite(seg.half_width)
+            & np.isfinite(vs) & np.isfinite(v_p) & np.isfinite(v_g))
+    if math.isfinite(effusivity[0]) and good.any():
+        flash[good] = blok_flash_temperature(
+            mu[good], seg.pressure_max[good], seg.half_width[good],
+            vs[good], v_p[good], v_g[good], effusivity[0], effusivity[1])
+        comments["flash_temperature"] = _peclet_comment(seg, effusivity, diffusivity)
+    flank = ~seg.edge
+    flash_mean = np.full(n_torque, np.nan)
+    flash_max = np.full(n_torque, np.nan)
+    flash_max_edge = np.full(n_torque, np.nan)
+    for i in range(n_torque):
+        here = (torque_of == i) & np.isfinite(flash)
+        on_flank = here & flank
+        length = float(np.sum(seg.length[on_flank]))
+        if on_flank.any() and length > 0.0:
+            flash_mean[i] = float(np.sum(flash[on_flank] * seg.length[on_flank])) / length
+            flash_max[i] = float(np.max(flash[on_flank]))
+        if (here & seg.edge).any():
+            flash_max_edge[i] = float(np.max(flash[here & seg.edge]))
+    bulk = np.full(n_torque, np.nan)
+    known = np.isfinite(flash_mean)
+    if known.any():
+        bulk[known] = bulk_temperature(op.temperature, flash_mean[known], cond)
+    contact = bulk[torque_of] + flash
+    contact_max, contact_max_edge = bulk + flash_max, bulk + flash_max_edge
+    lub = oil.lubricant
+    theta_s, s_b = _scuffing(lub, oil, op, cond, contact_max, comments)
+    lam = np.asarray(specific_film_thickness(fric.film_thickness, op.roughness, op.roughness),
+                     float).reshape(fric.film_thickness.shape)
+    lam_min = np.full(n_torque, np.nan)
+    for i in range(n_torque):
+        m = (torque_of == i) & flank & np.isfinite(lam)
+        if m.any():
+            lam_min[i] = float(np.min(lam[m]))
+    comments["specific_film_thickness"] = (
+        "lambda_GF = h_min / Ra, Ra = sqrt(2/pi) Rq = "
+        f"{GAUSSIAN_RA_PER_RQ * op.roughness:.3g} um of both flanks (Rq {op.roughness:g} "
+        "um, Gaussian heights; ISO/TS 6336-22)")
+    perm = lub.permissible_specific_film
+    if perm is None:
+        s_l = np.full(n_torque, np.nan)
+        comments["micropitting_safety"] = (
+            f"NaN: the oil {lub.name} gives no permissible_specific_film (lambda_GFP of its "
+            "FVA 54 micropitting test; an optional oil-file field of friction.lubricant)")
+        log.info("micropitting safety not computed: %s", comments["micropitting_safety"])
+        perm_value = math.nan
+    else:
+        perm_value = float(perm)
+        s_l = np.asarray(micropitting_safety(lam_min, perm_value), float).reshape(n_torque)
+        comments["micropitting_safety"] = (
+            f"S_lambda = lambda_GF,min / lambda_GFP, lambda_GFP = {perm_value:g} of the oil "
+            f"{lub.name} (its source: the attribute durability_source); lambda_GF,min over "
+            "the loaded flank segments")
+    attrs = {
+        "scuffing_lubrication": cond.lubrication,
+        "scuffing_meshing_gears": cond.meshing_gears,
+        "scuffing_structural_factor": cond.structural_factor,
+        "material_pinion": names[0],
+        "material_gear": names[1],
+        "effusivity_pinion_W_s0.5_per_m2_K": float(effusivity[0]),
+        "effusivity_gear_W_s0.5_per_m2_K": float(effusivity[1]),
+        "fzg_load_stage": math.nan if lub.fzg_load_stage is None else float(lub.fzg_load_stage),
+        "base_oil": lub.base_oil or "",
+        "durability_source": lub.durability_source,
+    }
+    return _Durability(flash, contact, lam, flash_mean, bulk, flash_max, contact_max,
+                       contact_max_edge, lam_min, theta_s, s_b, perm_value, s_l, comments,
+                       attrs)
+
+
+def _scuffing(lub: Lubricant, oil: _Oil, op: OperatingConditions, cond: ScuffingConditions,
+              contact_max: np.ndarray, comments: dict) -> tuple[float, np.ndarray]:
+    """The oil's scuffing temperature θ_S [degC] and the safety S_B [1] per torque of the
+    peak contact temperatures ``contact_max`` [degC]; NaN with the reason in
+    ``comments["scuffing_safety"]`` where the oil lacks its FZG load stage or base oil."""
+    missing = [k for k in ("fzg_load_stage", "base_oil") if getattr(lub, k) is None]
+    if missing:
+        comments["scuffing_safety"] = (
+            f"NaN: the oil {lub.name} gives no {' and no '.join(missing)} (optional oil-file "
+            "fields of friction.lubricant), so no scuffing temperature")
+        log.info("scuffing safety not computed: %s", comments["scuffing_safety"])
+        return math.nan, np.full(contact_max.shape, np.nan)
+    x_l = lubricant_factor(oil.viscosity, lub.base_oil)
+    theta_s = scuffing_temperature(lub.fzg_load_stage, x_l, cond.structural_factor)
+    if theta_s <= op.temperature:
+        comments["scuffing_safety"] = (
+            f"NaN: the scuffing temperature {theta_s:.0f} degC of the oil {lub.name} is not "
+            f"above the oil temperature {op.temperature:g} degC")
+        log.info("scuffing safety not computed: %s", comments["scuffing_safety"])
+        return theta_s, np.full(contact_max.shape, np.nan)
+    rise = contact_max - op.temperature
+    s_b = np.full(contact_max.shape, np.nan)
+    ok = np.isfinite(rise) & (rise > 0.0)
+    if ok.any():
+        s_b[ok] = scuffing_safety(theta_s, contact_max[ok], op.temperature)
+    s_b[np.isfinite(rise) & (rise <= 0.0)] = np.inf  # no temperature rise: nothing to scuff
+    if not np.isfinite(rise).any():
+        comments["scuffing_safety"] = (
+            f"NaN: no peak contact temperature of the flanks (theta_S {theta_s:.1f} degC; "
+            "see the comment of flash_temperature)")
+        log.info("scuffing safety not computed: %s", comments["scuffing_safety"])
+        return theta_s, s_b
+    comments["scuffing_safety"] = (
+        f"S_B = (theta_S - theta_oil) / (theta_Bmax - theta_oil), theta_S = {theta_s:.1f} degC "
+        f"= 80 + (0.85 + 1.4 X_W) X_L S_FZG^2 with S_FZG {lub.fzg_load_stage:g}, X_L "
+        f"{x_l:.4f} ({lub.base_oil} oil at {op.temperature:g} degC), X_W "
+        f"{cond.structural_factor:g} (ISO/TS 6336-20); theta_Bmax over the loaded flank "
+        "segments; the oil's data and its source: the attributes fzg_load_stage, base_oil, "
+        "durability_source")
+    return theta_s, s_b
+
+
+def _thermal_diffusivity(mat) -> float:
+    """κ = k/(ρc) [m²/s] of a material's ``thermal`` group (validated by its
+    ``thermal_effusivity``)."""
+    g = mat.groups["thermal"]
+    return float(g["thermal_conductivity"]) / (float(g["density"]) * float(g["specific_heat"]))
+
+
+def _peclet_comment(seg: _Segments, effusivity: list, diffusivity: list) -> str:
+    """What the ``flash_temperature`` variable is, and where its high-Péclet model is
+    stretched: the loaded flank and edge segments at which the surface taking most of the
+    heat has Pe = v b/(2κ) < 5 (there the formula overestimates the flash temperature)."""
+    share_p = effusivity[0] * np.sqrt(seg.pinion_speed_across)
+    share_g = effusivity[1] * np.sqrt(seg.gear_speed_across)
+    pe = np.where(share_p >= share_g,
+                  seg.pinion_speed_across * seg.half_width * 1e-3 / (2.0 * diffusivity[0]),
+                  seg.gear_speed_across * seg.half_width * 1e-3 / (2.0 * diffusivity[1]))
+    parts = []
+    for name, mask in (("flank", ~seg.edge), ("edge", seg.edge)):
+        m = mask & np.isfinite(pe)
+        if m.any():
+            low = m & (pe < _PECLET_HIGH)
+            parts.append(f"{int(low.sum())} of {int(m.sum())} loaded {name} segments (least "
+                         f"Pe {float(np.min(pe[m])):.2g})")
+    return ("Blok: Hertzian band source mu p |V_s| shared by both surfaces moving across the "
+            "contact line (Jaeger's moving source at high Peclet number); Pe = v b / (2 kappa) "
+            f"of the surface taking most of the heat is below {_PECLET_HIGH:g}, where the "
+            "formula overestimates, at " + " and ".join(parts))
+
+
 class _Losses(NamedTuple):
     """Power losses [W] and efficiency [1] of the mesh."""
 
@@ -404,11 +675,14 @@ def _friction_dataset(
     losses: _Losses,
     op: OperatingConditions,
     oil: _Oil,
+    dur: _Durability,
 ) -> xr.Dataset:
     """The ``/friction`` dataset: per-segment speeds [m/s], film [µm], friction and losses
     [W] on (torque, roll, pair, segment), the power loss [W] and efficiency [1] per roll
-    position and their cycle means, the coordinates of ``ltca`` and the conditions as
-    attributes (see :func:`efficiency_analysis`)."""
+    position and their cycle means, the flash and contact temperatures [K], [degC], the
+    specific film thickness [1] and the safeties against scuffing and micropitting [1],
+    the coordinates of ``ltca`` and the conditions as attributes (see
+    :func:`efficiency_analysis`)."""
     loaded = seg.loaded
     loss, eff = losses.total, losses.efficiency
     dims4 = ("torque", "roll", "pair", "segment")
@@ -453,8 +727,15 @@ def _friction_dataset(
         "efficiency_mean": data_var(
             ("torque",), eff.mean(axis=1), "1", "mean mechanical efficiency over the mesh cycles"
         ),
+        "surface_speed": data_var(
+            ("member", *dims4), np.stack([_scatter(seg.pinion_speed_across, loaded),
+                                          _scatter(seg.gear_speed_across, loaded)]), "m/s",
+            "each flank's speed across the contact line (through the Hertzian band: the "
+            "speeds of Blok's flash temperature)"),
+        **_durability_variables(dur, loaded),
     }
     coords = {k: ltca.coords[k] for k in ("torque", "roll", "pair", "segment")}
+    coords["member"] = ("member", ["pinion", "gear"], {"long_name": "gear pair member"})
     attrs = {
         "title": "mechanical power loss and efficiency",
         "pinion_speed_rpm": op.pinion_speed,
@@ -466,8 +747,66 @@ def _friction_dataset(
         "pressure_viscosity_1_per_GPa": oil.pressure_viscosity,
         "model_range_warnings": json.dumps(fric.range_warnings),
         "model_range_by_contact": json.dumps(_range_by_contact(ltca, seg, fric)),
+        **dur.attrs,
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _durability_variables(dur: _Durability, loaded: np.ndarray) -> dict[str, tuple]:
+    """The scuffing and micropitting variables of the ``/friction`` dataset (see
+    :func:`efficiency_analysis`), each with its ``comment`` where one was made."""
+    dims4 = ("torque", "roll", "pair", "segment")
+    c = dur.comments
+
+    def note(name: str) -> dict:
+        return {"comment": c[name]} if name in c else {}
+
+    return {
+        "flash_temperature": data_var(
+            dims4, _scatter(dur.flash, loaded), "K",
+            "flash temperature (Blok, Hertzian band of friction heat)",
+            **note("flash_temperature")),
+        "contact_temperature": data_var(
+            dims4, _scatter(dur.contact, loaded), "degC",
+            "contact temperature: bulk temperature + flash temperature"),
+        "specific_film_thickness": data_var(
+            dims4, _scatter(dur.specific_film, loaded), "1",
+            "specific film thickness lambda_GF = h_min / Ra", **note("specific_film_thickness")),
+        "flash_temperature_mean": data_var(
+            ("torque",), dur.flash_mean, "K",
+            "mean flash temperature over the loaded flank segments and the mesh cycles "
+            "(length-weighted)"),
+        "bulk_temperature": data_var(
+            ("torque",), dur.bulk, "degC",
+            "bulk temperature theta_oil + 0.47 X_S X_mp theta_flm (ISO/TS 6336-20)"),
+        "flash_temperature_max": data_var(
+            ("torque",), dur.flash_max, "K",
+            "peak flash temperature over the loaded flank segments and the mesh cycles"),
+        "contact_temperature_max": data_var(
+            ("torque",), dur.contact_max, "degC",
+            "peak contact temperature over the loaded flank segments and the mesh cycles"),
+        "contact_temperature_max_edge": data_var(
+            ("torque",), dur.contact_max_edge, "degC",
+            "peak contact temperature of the edge contacts (moving-source formula at low "
+            "Peclet number: an overestimate)"),
+        "specific_film_thickness_min": data_var(
+            ("torque",), dur.specific_film_min, "1",
+            "least specific film thickness over the loaded flank segments and the mesh "
+            "cycles"),
+        "scuffing_temperature": data_var(
+            (), dur.scuffing_temperature, "degC",
+            "scuffing temperature of the oil from its FZG load stage (ISO/TS 6336-20)"),
+        "scuffing_safety": data_var(
+            ("torque",), dur.scuffing_safety, "1",
+            "scuffing safety factor S_B (flash temperature method)", **note("scuffing_safety")),
+        "permissible_specific_film": data_var(
+            (), dur.permissible_specific_film, "1",
+            "permissible specific film thickness lambda_GFP of the oil (ISO/TS 6336-22)"),
+        "micropitting_safety": data_var(
+            ("torque",), dur.micropitting_safety, "1",
+            "safety factor against micropitting S_lambda = lambda_GF,min / lambda_GFP",
+            **note("micropitting_safety")),
+    }
 
 
 #: The inputs whose spans :func:`_range_by_contact` reports: name → (symbol, units, digits).

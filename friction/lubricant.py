@@ -26,7 +26,12 @@ Oil files are TOML with the schema of ``friction/data/75W90.toml``: ``name``, ``
 ``temperature_viscosity_coefficient``, ``thermal_conductivity_source``, ``notes``, the
 optional film-traction properties ``eyring_stress`` [MPa], ``limiting_shear_coefficient``
 and ``boundary_friction`` [1] with ``traction_source`` (used by the ``mixed_ehl``
-friction model, :mod:`friction.mixed_ehl`),
+friction model, :mod:`friction.mixed_ehl`), the optional surface-durability properties
+``fzg_load_stage`` [1] (the FZG A/8.3/90 scuffing-test failure load stage), ``base_oil``
+(the base-oil kind of the scuffing temperature's lubricant factor,
+:data:`friction.flash_temperature.BASE_OIL_FACTORS`) and ``permissible_specific_film`` [1]
+(λ_GFP against micropitting) with ``durability_source`` (used by the scuffing and
+micropitting assessment, :mod:`friction.flash_temperature`, :mod:`friction.micropitting`),
 ``schema``, an ``[extrapolation]`` table (``below``, ``above`` in K) and a required
 ``[units]`` table that must state the units above (so a file in other units is refused,
 not misread).
@@ -49,9 +54,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
+from friction.flash_temperature import BASE_OIL_FACTORS
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.toml_files import read_toml
-from geometry.core.validation import real, real_array, scalar_or_array
+from geometry.core.validation import one_of, real, real_array, scalar_or_array
 
 __all__ = [
     "VISCOSITY_MODELS",
@@ -89,7 +95,8 @@ _REQUIRED_UNITS: Mapping[str, str] = MappingProxyType(
 )
 _OPTIONAL_UNITS: Mapping[str, str] = MappingProxyType(
     {"temperature_viscosity_coefficient": "1/K", "extrapolation": "K",
-     "eyring_stress": "MPa", "limiting_shear_coefficient": "1", "boundary_friction": "1"}
+     "eyring_stress": "MPa", "limiting_shear_coefficient": "1", "boundary_friction": "1",
+     "fzg_load_stage": "1", "permissible_specific_film": "1"}
 )
 _KNOWN_KEYS = frozenset(
     {
@@ -108,6 +115,10 @@ _KNOWN_KEYS = frozenset(
         "limiting_shear_coefficient",
         "boundary_friction",
         "traction_source",
+        "fzg_load_stage",
+        "base_oil",
+        "permissible_specific_film",
+        "durability_source",
         "extrapolation",
         "units",
     }
@@ -332,6 +343,17 @@ class Lubricant:
         μ_b of the asperity contacts in [0, 1]; None: the model default.
     traction_source : str
         Where the three traction values come from.
+    fzg_load_stage : float or None — [1]
+        Failure load stage of the FZG A/8.3/90 scuffing test (ISO 14635-1), in [1, 14];
+        None: unknown (no scuffing safety).
+    base_oil : str or None
+        Base-oil kind for the scuffing temperature's lubricant factor, one of
+        :data:`friction.flash_temperature.BASE_OIL_FACTORS`; None: unknown.
+    permissible_specific_film : float or None — [1]
+        λ_GFP, the permissible specific film thickness against micropitting (ISO/TS
+        6336-22), > 0; None: unknown (no micropitting safety).
+    durability_source : str
+        Where the three surface-durability values come from.
 
     Raises
     ------
@@ -362,6 +384,10 @@ class Lubricant:
     limiting_shear_coefficient: float | None = None
     boundary_friction: float | None = None
     traction_source: str = ""
+    fzg_load_stage: float | None = None
+    base_oil: str | None = None
+    permissible_specific_film: float | None = None
+    durability_source: str = ""
     vogel: VogelFit = field(init=False, repr=False, compare=False)
     walther: WaltherFit = field(init=False, repr=False, compare=False)
 
@@ -431,6 +457,7 @@ class Lubricant:
             if getattr(self, key) is not None:
                 object.__setattr__(self, key, real(key, getattr(self, key), unit=unit, low=0.0,
                                                    low_open=low_open, high=high))
+        self._check_durability()
         vogel = fit_vogel(t, eta)
         if vogel.c >= t[0] - self.extrapolation_below:
             raise InputError(
@@ -441,6 +468,21 @@ class Lubricant:
         nu = np.asarray(eta) / np.asarray(self.density) * 1e6
         object.__setattr__(self, "walther", fit_walther(t, nu))
         log.debug("lubricant %s: %s, %s", self.name, vogel, self.walther)
+
+    def _check_durability(self) -> None:
+        """Validate the optional surface-durability fields (naming the field)."""
+        if self.fzg_load_stage is not None:
+            object.__setattr__(self, "fzg_load_stage", real(
+                "fzg_load_stage", self.fzg_load_stage, unit="1", low=1.0, high=14.0))
+        if self.base_oil is not None:
+            one_of("base_oil", self.base_oil, BASE_OIL_FACTORS)
+        if self.permissible_specific_film is not None:
+            object.__setattr__(self, "permissible_specific_film", real(
+                "permissible_specific_film", self.permissible_specific_film, unit="1",
+                low=0.0, low_open=True))
+        if not isinstance(self.durability_source, str):
+            raise InputError("durability_source: must be a string, got "
+                             f"{self.durability_source!r}")
 
 
 # ----------------------------------------------------------------------------- evaluation
@@ -792,7 +834,8 @@ def lubricant_from_mapping(data: Mapping[str, Any], origin: str = "<mapping>") -
     }
     for key in ("temperature_viscosity_coefficient", "thermal_conductivity_source", "notes",
                 "eyring_stress", "limiting_shear_coefficient", "boundary_friction",
-                "traction_source"):
+                "traction_source", "fzg_load_stage", "base_oil", "permissible_specific_film",
+                "durability_source"):
         if key in data:
             kwargs[key] = data[key]
     if "below" in extra:
