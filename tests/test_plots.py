@@ -344,6 +344,24 @@ def test_efficiency_legend_covers_no_curve(default_tree):
     assert not box.overlaps(ax.get_window_extent(renderer))
 
 
+def test_friction_flank_draws_flash_temperature_and_specific_film(default_tree):
+    """The flank figure has a panel for the flash temperature [K] and for the specific
+    film thickness λ_GF [1] (docs/scuffing_micropitting.md), each in its own sequential
+    scale up to the flank's peak at the largest torque."""
+    g = _groups(default_tree)
+    fig = friction_flank_figure(g["easeoff"], g["ltca"], g["friction"])
+    titles = [ax.get_title() for ax in fig.axes]
+    assert "flash temperature [K]" in titles
+    assert "specific film thickness λ_GF [1]" in titles
+    flank = g["ltca"]["segment_kind"].values == "curve"
+    ax = fig.axes[titles.index("flash temperature [K]")]
+    peak = float(np.nanmax(g["friction"]["flash_temperature"].isel(torque=-1).values[
+        ..., flank]))
+    lines = [c for c in ax.collections if isinstance(c, LineCollection) and c.norm.vmax]
+    assert lines and lines[0].norm.vmin == 0.0
+    assert lines[0].norm.vmax == pytest.approx(peak)
+
+
 def test_extrapolation_marks_in_a_colour_no_colour_map_uses(default_tree):
     """The friction model's extrapolated segments are marked in EXTRAPOLATED (magenta),
     which is far from every colour of the maps on the figure (RdBu_r's red end clashed

@@ -182,3 +182,30 @@ def test_one_spelling_of_the_microradian(run_files):
                     for t in (e.text, e.tail) if t)
     assert "µrad" in text
     assert not re.search(r"(?<![A-Za-z])urad\b", text)
+
+
+def test_durability_table_equals_the_file(run_files):
+    """The scuffing and micropitting table: one row per torque whose cells are the file's
+    /friction values at the table's decimals ("–" for the bundled oil's unknown λ_GFP),
+    the reason for the missing safety said below it (docs/scuffing_micropitting.md)."""
+    from contact.plots.report import DURABILITY_COLUMNS, render_report
+
+    tree = read_netcdf(run_files[0], tree=True)
+    fr = tree["friction"].to_dataset()
+    doc = _parse(render_report(tree, figures=[]))
+    rows = doc.findall(".//h:table[@id='durability-table']/h:tbody/h:tr", NS)
+    assert len(rows) == fr.sizes["torque"]
+    for i, row in enumerate(rows):
+        cells = {c.get("data-key"): c for c in row.findall("h:td", NS) if c.get("data-key")}
+        assert list(cells) == [c.key for c in DURABILITY_COLUMNS]
+        for column in DURABILITY_COLUMNS:
+            value = float(fr[column.key].values[i])
+            cell = cells[column.key]
+            if not np.isfinite(value):
+                assert cell.text == "–" and cell.get("data-value") == "", column.key
+                continue
+            assert float(cell.get("data-value")) == value, column.key
+            assert cell.text == f"{value:.{column.decimals}f}", column.key
+    notes = " ".join("".join(p.itertext()) for p in
+                     doc.findall(".//h:section[@id='summary']//h:p[@class='note']", NS))
+    assert "permissible_specific_film" in notes

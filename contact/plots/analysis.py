@@ -224,8 +224,9 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
             yield FigureSpec(
                 "friction_flank",
                 "Sliding and rolling velocity, slide-to-roll ratio, lambda ratio, friction "
-                "coefficient and sliding loss on the gear flank at the largest torque "
-                "(seed Figs. 5.5–5.10).",
+                "coefficient, sliding loss, flash temperature (Blok) and specific film "
+                "thickness λ_GF = h_min/Ra on the gear flank at the largest torque "
+                "(seed Figs. 5.5–5.10; docs/scuffing_micropitting.md).",
                 partial(friction_flank_figure, eo, lt, fr))
         yield FigureSpec("friction_efficiency",
                           "Instantaneous mechanical efficiency over the mesh cycles.",

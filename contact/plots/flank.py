@@ -18,8 +18,9 @@ pressure_figure            maximum contact pressure over the mesh cycles, one pa
                            torque and one colour scale; edge contact apart (seed Fig. 3.7)
 segment_map_figure         any segment variable (torque, roll, pair, segment) on the flank
 segment_panels_figure      segment values of several analyses side by side, one scale
-friction_flank_figure      the efficiency quantities on the flank at one torque, a panel
-                           each (seed Figs. 5.5–5.10)
+friction_flank_figure      the efficiency quantities, the flash temperature and the
+                           specific film thickness on the flank at one torque, a panel each
+                           (seed Figs. 5.5–5.10)
 colour_index               the colour-map entry of each value (the segments are drawn as
                            one path per entry)
 """
@@ -77,7 +78,8 @@ __all__ = [
     "segment_panels_figure",
 ]
 
-#: /friction variables drawn over the gear flank (seed Figs. 5.5–5.10); signed ones diverge
+#: /friction variables drawn over the gear flank (seed Figs. 5.5–5.10, and the flash
+#: temperature and specific film thickness of scuffing and micropitting); signed ones diverge
 FRICTION_FLANK_PLOTS = {
     "sliding_velocity": "sliding velocity",
     "rolling_velocity": "rolling velocity",
@@ -85,6 +87,8 @@ FRICTION_FLANK_PLOTS = {
     "lambda_ratio": "lambda ratio",
     "friction_coefficient": "friction coefficient",
     "sliding_loss": "sliding power loss",
+    "flash_temperature": "flash temperature",
+    "specific_film_thickness": "specific film thickness λ_GF",
 }
 
 
@@ -504,7 +508,8 @@ def friction_flank_figure(
     names: Sequence[str] | None = None,
     torque_index: int = -1,
 ) -> Figure:
-    """The efficiency quantities on the gear flank at one torque (seed Figs. 5.5–5.10).
+    """The efficiency quantities on the gear flank at one torque (seed Figs. 5.5–5.10), with
+    the flash temperature and the specific film thickness of scuffing and micropitting.
 
     One panel per quantity, each with its own colour bar; signed quantities (the
     slide-to-roll ratio) diverge about zero, the others are sequential; the scale is the
@@ -566,8 +571,8 @@ def friction_flank_figure(
           f"{a.get('inlet_temperature_degC', float('nan')):g} °C, "
           f"Rq {a.get('roughness_rq_um', float('nan')):g} µm, {a.get('friction_model', '')}")
     hide_unused(grid, len(names), TOE_HEEL_LABEL)
-    title(fig, f"{case_text(ltca)}\nsurface velocities, film and friction on the gear flank: "
-          f"{op}")
+    title(fig, f"{case_text(ltca)}\nsurface velocities, film, friction and flash temperature "
+          f"on the gear flank: {op}")
     legend_below(fig, handles)
     if "friction_model_extrapolated" in friction:
         # the segments where the friction model left its fitted range: crossed, and said

@@ -5,7 +5,9 @@ the operating conditions, the summary table in the layout of the seed's Table 3.
 mean, peak-to-peak, the first three mesh harmonics and their root-sum-square per torque
 and misalignment, with the peak pressures and the efficiency), the figures of
 :func:`contact.plots.analysis.analysis_figures` embedded as PNG data URIs (no network),
-the solver's certification and the toolkit versions. Nothing is taken from the machine
+the scuffing and micropitting table (peak flash and contact temperature, scuffing safety,
+least specific film thickness and micropitting safety per torque), the solver's
+certification and the toolkit versions. Nothing is taken from the machine
 or the clock: the same file gives the same page anywhere. Groups the file lacks are
 named on the page with what they would have given. The page is rendered by Jinja2 from
 the package template ``contact/templates/report.html.j2`` (autoescaped).
@@ -44,8 +46,8 @@ from geometry import __version__
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError, LTCAError
 
-__all__ = ["SUMMARY_COLUMNS", "SummaryColumn", "render_page", "render_report", "report_context",
-           "write_page", "write_report"]
+__all__ = ["DURABILITY_COLUMNS", "SUMMARY_COLUMNS", "SummaryColumn", "render_page",
+           "render_report", "report_context", "write_page", "write_report"]
 
 @dataclass(frozen=True)
 class SummaryColumn:
@@ -130,6 +132,23 @@ SUMMARY_COLUMNS: tuple[SummaryColumn, ...] = (
     SummaryColumn("power_loss_mean", "power loss", "W", 1, _var("friction", "power_loss_mean")),
 )
 
+#: The scuffing and micropitting table's columns after T_p: /friction variables over torque
+#: (docs/scuffing_micropitting.md); a file that lacks one shows "–".
+DURABILITY_COLUMNS: tuple[SummaryColumn, ...] = (
+    SummaryColumn("flash_temperature_max", "peak flash temperature θ_fl", "K", 0,
+                  _var("friction", "flash_temperature_max")),
+    SummaryColumn("bulk_temperature", "bulk temperature θ_M", "°C", 0,
+                  _var("friction", "bulk_temperature")),
+    SummaryColumn("contact_temperature_max", "peak contact temperature θ_B", "°C", 0,
+                  _var("friction", "contact_temperature_max")),
+    SummaryColumn("scuffing_safety", "scuffing safety S_B", "1", 2,
+                  _var("friction", "scuffing_safety")),
+    SummaryColumn("specific_film_thickness_min", "least λ_GF", "1", 3,
+                  _var("friction", "specific_film_thickness_min")),
+    SummaryColumn("micropitting_safety", "micropitting safety S_λ", "1", 2,
+                  _var("friction", "micropitting_safety")),
+)
+
 #: what each optional group gives, said on the page when the file lacks it
 ABSENT = {
     "utca": "unloaded TCA (UTE, unloaded pattern)",
@@ -179,6 +198,32 @@ def _summary(tree: xr.DataTree, lt: xr.Dataset) -> list[dict]:
             "certified": f"{int(np.sum(found))}/{found.size}",
         })
     return rows
+
+
+def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None) -> dict | None:
+    """The scuffing and micropitting table (:data:`DURABILITY_COLUMNS` per torque), the
+    oil's scuffing temperature and permissible λ_GF, and why a safety is missing; None
+    where the file has no ``/friction`` with the variables (written before them)."""
+    if lt is None or fr is None or "contact_temperature_max" not in fr:
+        return None
+    groups = {"ltca": lt, "friction": fr}
+    rows = [{"torque": f"{t:g}",
+             "cells": [{"key": c.key, **_cell(c.value(groups, i), c.decimals)}
+                       for c in DURABILITY_COLUMNS]}
+            for i, t in enumerate(fr["torque"].values)]
+    theta_s = _num(fr["scuffing_temperature"].values)
+    perm = _num(fr["permissible_specific_film"].values)
+    oil = (f"oil {fr.attrs.get('lubricant', '?')}: scuffing temperature θ_S "
+           + (f"{theta_s:.0f} °C (FZG load stage {_num(fr.attrs.get('fzg_load_stage')):g}, "
+              f"{fr.attrs.get('base_oil', '')} base oil)" if np.isfinite(theta_s)
+              else "unknown")
+           + ", permissible λ_GFP " + (f"{perm:g}" if np.isfinite(perm) else "unknown"))
+    notes = [f"{name.replace('_', ' ')}: {fr[name].attrs['comment']}"
+             for name in ("scuffing_safety", "micropitting_safety")
+             if str(fr[name].attrs.get("comment", "")).startswith("NaN")]
+    return {"columns": [(c.heading, c.unit) for c in DURABILITY_COLUMNS], "rows": rows,
+            "oil": oil, "notes": notes,
+            "source": str(fr.attrs.get("durability_source", ""))}
 
 
 def _basic_data(inputs_text: str) -> dict | None:
@@ -307,7 +352,8 @@ def report_context(tree: xr.DataTree,
         Keys ``case``, ``basic_data`` (:func:`contact.plots.basic_data.basic_data_rows`),
         ``provenance``, ``operating``, ``misalignment``, ``columns`` and ``summary`` (the
         table of :data:`SUMMARY_COLUMNS`), ``te_table``, ``solver``, ``absent``,
-        ``figures``, ``warnings`` (the efficiency stage's model-range warnings),
+        ``durability`` (the scuffing and micropitting table, None for a file without
+        it), ``figures``, ``warnings`` (the efficiency stage's model-range warnings),
         ``plausibility`` (:func:`contact.ltca.plausibility.plausibility_warnings`: the
         causes for which the loaded contact should not be trusted), ``versions``.
 
@@ -354,6 +400,7 @@ def report_context(tree: xr.DataTree,
                          or "not recorded"),
         "basic_data": _basic_data(inputs_text),
         "te_table": _te_table(tree),
+        "durability": _durability(lt, fr),
         "solver": _solver(lt) if lt is not None else None,
         "absent": absent,
         "figures": figs,
