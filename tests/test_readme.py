@@ -1,50 +1,62 @@
-"""The README's Python examples run as written (each asserts its key numbers)."""
+"""The Python examples of the README and of the pages that were its sections
+(tests/doc_pages.py) run as written (each asserts its key numbers), and the layout page
+answers a newcomer's questions with paths that exist."""
 
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import pytest
+from doc_pages import DOCS, LAYOUT, README, ROOT, blocks
 
-README = Path(__file__).resolve().parent.parent / "README.md"
-BLOCKS = re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), flags=re.S)
+BLOCKS = blocks("python")
 
 
 def test_readme_opens_with_the_two_commands():
-    text = README.read_text(encoding="utf-8")
-    first = re.search(r"```bash\n(.*?)```", text, flags=re.S).group(1).strip().splitlines()
-    assert first[0].startswith("pip install . && ltca ")
-    assert first[1] == "pip install '.[test]' && pytest"
-    ci = (README.parent / ".ci" / "run").read_text(encoding="utf-8")
+    for page in (README, DOCS / "getting_started.md"):
+        text = page.read_text(encoding="utf-8")
+        first = re.search(r"```bash\n(.*?)```", text, flags=re.S).group(1).strip().splitlines()
+        assert first[0].startswith("pip install . && ltca "), page
+        assert first[1] == "pip install '.[test]' && pytest", page
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
     assert first[1] in ci
 
 
-@pytest.mark.parametrize("code", BLOCKS, ids=[f"block{i}" for i in range(len(BLOCKS))])
-def test_readme_python_block(code):
-    exec(compile(code, str(README), "exec"), {"__name__": "readme"})
+def test_readme_is_a_front_page():
+    """Issue 54: the README is a front page of at most 150 lines, with one Python example of
+    at most 15 lines; the manual is the site."""
+    text = README.read_text(encoding="utf-8")
+    assert len(text.splitlines()) <= 150
+    python = re.findall(r"```python\n(.*?)```", text, flags=re.S)
+    assert len(python) == 1 and len(python[0].splitlines()) <= 15
+    for link in re.findall(r"\]\((docs/[^)#]+)", text):
+        assert (ROOT / link).is_file(), link
+
+
+@pytest.mark.parametrize("code", [c for _, c in BLOCKS], ids=[n for n, _ in BLOCKS])
+def test_readme_python_block(code, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    exec(compile(code, "docs-block", "exec"), {"__name__": "readme"})
 
 
 def _layout_section() -> str:
-    text = README.read_text(encoding="utf-8")
-    return text[text.index("## Layout"):text.index("## References")]
+    return LAYOUT.read_text(encoding="utf-8")
 
 
 def test_layout_answers_a_newcomers_three_questions_with_paths_that_exist():
     """Where is the QP, where does a backend go, where is the roll loop: each answered by
-    a path in the layout section, and the path is there."""
+    a path in the layout page, and the path is there."""
     layout = _layout_section()
-    root = README.parent
     for question, path in (("Where is the QP?", "contact/qp/problem.py"),
                            ("Where does a new solver backend go?", "contact/qp/solvers/"),
                            ("Where is the LTCA roll loop?", "contact/ltca/roll_loop.py")):
         answer = layout[layout.index(question):].split("\n- ")[0]
         assert f"`{path}" in answer, question
-        assert (root / path).exists(), path
+        assert (ROOT / path).exists(), path
 
 
 def test_layout_names_every_subpackage_of_contact():
     layout = _layout_section()
-    root = README.parent / "contact"
+    root = ROOT / "contact"
     for pkg in sorted(p.parent.name for p in root.glob("*/__init__.py")):
         assert f"{pkg}/" in layout, pkg

@@ -1,8 +1,8 @@
-"""Every ``bash`` block of the README runs as written from a scratch directory, or says
-where it runs (issue 38: "every README block should run from any directory or say where
-it runs").
+"""Every ``bash`` block of the README and of the pages that were its sections
+(tests/doc_pages.py) runs as written from a scratch directory, or says where it runs
+(issue 38: "every README block should run from any directory or say where it runs").
 
-The first block (install and run, install and test) is CI's own command
+The install-and-run block (install and run, install and test) is CI's own command
 (``tests/test_readme.py``); the walk-through has its own test
 (``tests/test_readme_walkthrough.py``). Every other block is parsed here: its ``ltca``
 commands (continuation lines joined) are run in order, block by block, through
@@ -25,12 +25,12 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from doc_pages import blocks
 from test_readme_walkthrough import REDUCED
 
 from contact.cli import attach_negative_values, build_parser, main
 
 ROOT = Path(__file__).resolve().parent.parent
-README = ROOT / "README.md"
 
 #: further reductions for commands of these blocks (same meaning as REDUCED)
 MORE: dict[str, list[str]] = {
@@ -46,10 +46,8 @@ SLOW = ("synthesize", "optimize", "export-problems", "duty-cycle")
 CLONE = "from the root of a clone"
 
 
-def _blocks() -> list[tuple[int, str]]:
-    text = README.read_text(encoding="utf-8")
-    return [(text[:m.start()].count("\n") + 1, m.group(1))
-            for m in re.finditer(r"```bash\n(.*?)```", text, flags=re.S)]
+def _blocks() -> list[tuple[str, str]]:
+    return blocks("bash")
 
 
 def _commands(block: str) -> list[list[str]]:
@@ -57,9 +55,11 @@ def _commands(block: str) -> list[list[str]]:
     return [w for w in (shlex.split(ln, comments=True) for ln in joined.splitlines()) if w]
 
 
-#: (line, commands) of every block but the first (CI's) and the walk-through's
-BLOCKS = [(line, _commands(b)) for line, b in _blocks()[1:]
-          if not b.lstrip().startswith("ltca cases")]
+#: the install-and-run block (CI's), on the README and the getting-started page
+INSTALL = "pip install . && ltca run\npip install '.[test]' && pytest"
+#: (page:line, commands) of every block but the install-and-run and the walk-through's
+BLOCKS = [(line, _commands(b)) for line, b in _blocks()
+          if b.strip() != INSTALL and not b.lstrip().startswith("ltca cases")]
 
 
 def _reduced(argv: list[str]) -> list[str]:
@@ -70,7 +70,7 @@ def test_blocks_found():
     assert len(BLOCKS) >= 3  # face hobbing, correction/optimisation, qpbenchmark
 
 
-@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[f"line{n}" for n, _ in BLOCKS])
+@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[n for n, _ in BLOCKS])
 def test_block_reads_no_repository_path_and_parses(line, commands):
     block = dict(_blocks())[line]
     parser = build_parser()
@@ -81,7 +81,7 @@ def test_block_reads_no_repository_path_and_parses(line, commands):
             assert args.command == words[1]
             continue
         # not ltca: it needs the clone, and the block says so
-        assert CLONE in block, f"README line {line}: `{' '.join(words)}` needs a clone"
+        assert CLONE in block, f"{line}: `{' '.join(words)}` needs a clone"
         for w in words:
             if w.startswith("benchmarks/") and w.endswith(".py"):
                 assert (ROOT / w).is_file(), w
@@ -115,7 +115,7 @@ def _run_block(commands, tmp_path, monkeypatch, capsys, skip=()) -> tuple[int, i
     return ran, dependent
 
 
-@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[f"line{n}" for n, _ in BLOCKS])
+@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[n for n, _ in BLOCKS])
 def test_block_runs_from_a_scratch_directory(line, commands, tmp_path, monkeypatch, capsys):
     """CI's share: the slow commands (and what reads their files) left out."""
     cheap = [w for w in commands if w[0] == "ltca" and w[1] not in SLOW]
@@ -124,7 +124,7 @@ def test_block_runs_from_a_scratch_directory(line, commands, tmp_path, monkeypat
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[f"line{n}" for n, _ in BLOCKS])
+@pytest.mark.parametrize(("line", "commands"), BLOCKS, ids=[n for n, _ in BLOCKS])
 def test_whole_block_runs_from_a_scratch_directory(line, commands, tmp_path, monkeypatch,
                                                    capsys):
     _run_block(commands, tmp_path, monkeypatch, capsys)

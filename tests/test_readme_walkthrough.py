@@ -1,6 +1,7 @@
-"""The README walk-through runs as printed, from a directory that is not the repository.
+"""The walk-through (docs/walkthrough.md, once the README's) runs as printed, from a
+directory that is not the repository.
 
-Every command of the walk-through's ``bash`` block is parsed from README.md and run, in
+Every command of the walk-through's ``bash`` block is parsed from its page and run, in
 order, through :func:`contact.cli.main` from an empty temporary directory, so a bundled
 name or a ``cases/…`` path that only resolves inside a clone fails here, and so does a
 command that reads a file an earlier one did not write under that name (``ltca plot
@@ -9,7 +10,9 @@ kolivand2009_fm_11x41_reference.nc`` after ``ltca run``).
 Reduced resolution (the CI budget): options appended to a command replace the printed
 ones (argparse keeps the last), and only the resolution changes — fewer roll positions,
 torques, speeds, grid points, draws and steps, studies in this process, ``ltca run``
-without its efficiency stage — never the command's case, files or other options.
+without its efficiency stage or its root stress (``--no-root-stress``: the FE build of each
+case is tested in tests/test_root_stress.py and tests/test_fe_*.py) — never the command's
+case, files or other options.
 :data:`REDUCED` lists them. The commands whose cost no option reduces enough (the
 synthesis, the Dask studies) run in the ``slow`` test; the CI test runs the others, in
 order, and checks that the slow ones parse.
@@ -19,17 +22,16 @@ from __future__ import annotations
 
 import re
 import shlex
-from pathlib import Path
 
 import pytest
+from doc_pages import WALKTHROUGH
 
 from contact.cli import attach_negative_values, build_parser, main
 
-README = Path(__file__).resolve().parent.parent / "README.md"
-
 #: command → options appended to it (the same options at a lower resolution)
 REDUCED: dict[str, list[str]] = {
-    "run": ["--rolls-per-cycle", "4", "--segments", "8", "--torque", "50", "--speed", "0"],
+    "run": ["--rolls-per-cycle", "4", "--segments", "8", "--torque", "50", "--speed", "0",
+            "--no-root-stress"],
     "plot": [],
     "report": [],
     "cases": [],
@@ -51,9 +53,9 @@ REDUCED: dict[str, list[str]] = {
 
 
 def walkthrough_commands() -> list[list[str]]:
-    """The ``ltca`` commands of the README's walk-through block, as argument lists."""
-    text = README.read_text(encoding="utf-8")
-    section = text[text.index("## Walk-through"):]
+    """The ``ltca`` commands of the walk-through's first block, as argument lists."""
+    text = WALKTHROUGH.read_text(encoding="utf-8")
+    section = text[text.index("# Walk-through"):]
     block = re.search(r"```bash\n(.*?)```", section, flags=re.S).group(1)
     out = []
     for line in block.splitlines():

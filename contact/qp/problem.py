@@ -352,7 +352,7 @@ def contact_residuals(
     """Relative residuals of the contact conditions, computed from F and Θ.
 
     With Y = C F + s − R Θ, reference force f = max(‖F‖∞, f₀), reference length
-    d = max(‖C F‖∞, |Θ| ‖R‖∞, δ₀) and F_max the force limits (``inf`` where none):
+    d = max(‖C F‖∞, abs(Θ) ‖R‖∞, δ₀) and F_max the force limits (``inf`` where none):
 
     - ``primal``: ‖max(−F, F − F_max, 0)‖∞ / f — forces are compressive and within
       their limits (0 ≤ F ≤ F_max);
@@ -360,7 +360,7 @@ def contact_residuals(
       after loading (Y ≥ 0; a segment with a limit may penetrate at it, which the
       upper complementarity checks);
     - ``complementarity``: maxᵢ min(Fᵢ⁺/f, Yᵢ⁺/d) — no segment both loaded and open;
-    - ``equilibrium``: |Rᵀ F − T| / T (seed Eq. 3.14);
+    - ``equilibrium``: abs(Rᵀ F − T) / T (seed Eq. 3.14);
     - ``upper_complementarity``: maxᵢ min((F_max,ᵢ − Fᵢ)⁺/f, Yᵢ⁻/d) over the segments
       with a limit — a segment penetrates only at its limit (0 without limits).
 
