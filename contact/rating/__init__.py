@@ -13,13 +13,16 @@ Modules, each a set of plain functions over arrays (one per factor):
 * :mod:`~contact.rating.inputs` — :class:`GearData`, :class:`RatingInputs`;
 * :mod:`~contact.rating.materials` — the material numbers from the material table;
 * :mod:`~contact.rating.rating` — :func:`iso10300_rating`, the entry point (the
-  ``/rating`` dataset), and :func:`rate_pair`.
+  ``/rating`` dataset), and :func:`rate_pair`;
+* :mod:`~contact.rating.beside` — :func:`analysis_rating` (the rating of an analysis, or
+  why there is none) and :func:`rating_beside_ltca` (its stresses beside the LTCA's).
 
 Checked against ISO/TR 10300-30:2024 (three worked samples, every printed intermediate
 value; tests/test_rating_iso10300.py); docs/rating.md gives the equations and the
 comparison.
 """
 
+from contact.rating.beside import analysis_rating, bin_ratings, rating_beside_ltca
 from contact.rating.inputs import GearData, RatingInputs, gear_data_from_blank
 from contact.rating.rating import (
     case_gear_data,
@@ -28,5 +31,6 @@ from contact.rating.rating import (
     rate_pair,
 )
 
-__all__ = ["GearData", "RatingInputs", "case_gear_data", "case_rating_inputs",
-           "gear_data_from_blank", "iso10300_rating", "rate_pair"]
+__all__ = ["GearData", "RatingInputs", "analysis_rating", "bin_ratings", "case_gear_data",
+           "case_rating_inputs", "gear_data_from_blank", "iso10300_rating", "rate_pair",
+           "rating_beside_ltca"]
