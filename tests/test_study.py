@@ -101,9 +101,10 @@ def test_sweep_on_a_local_cluster_equals_single_analyses(case):
 
 def test_failing_point_comes_back_with_its_status(case):
     """ΔE = 50 mm separates the flanks: that point fails with a reason, the others are
-    computed; no exception escapes."""
+    computed; no exception escapes. (ΔE = 50 mm is beyond the blank's plausible range: run
+    only with force=True, and its input flagged in ``plausibility`` although it failed.)"""
     grid = sweep(case, delta_E=[0.0, 50.0], torque=TORQUE,
-                 run=StudyRun(options=OPTIONS, scheduler="synchronous"))
+                 run=StudyRun(options=OPTIONS, scheduler="synchronous", force=True))
     st = grid["status"].values
     assert st.tolist() == [0, 2]
     assert grid["reason"].values[0] == ""
@@ -111,6 +112,7 @@ def test_failing_point_comes_back_with_its_status(case):
     assert np.isnan(grid["lte_mean"].values[1]).all()
     assert np.isfinite(grid["lte_mean"].values[0]).all()
     assert grid["status"].attrs["flag_meanings"] == "ok uncertified failed"
+    assert grid["plausibility"].values.tolist() == [[0], [8]]  # misalignment_beyond_blank
 
 
 def test_summaries_are_consistent(case):

@@ -128,6 +128,9 @@ def run(args: argparse.Namespace) -> int:
         print(line)
     if "root_life" not in ds:
         print(f"bending side {ds.attrs['bending']}")
+    from contact.commands.run import print_verdict
+
+    print_verdict(ds)
     tree = xr.DataTree.from_dict({"/duty_cycle": ds})
     path = write_netcdf(tree, output, inputs=case.to_toml())
     from contact.study.store import ResultStore

@@ -32,7 +32,7 @@ from contact.commands.options import (
 from contact.commands.output_paths import check_output_dir
 
 __all__ = ["TE_TABLE_HEADERS", "deviation_te_rows", "durability_lines", "misalignment_from_args",
-           "plot", "register", "root_stress_rows", "run", "write_figures"]
+           "plot", "print_verdict", "register", "root_stress_rows", "run", "write_figures"]
 
 #: Place in ``ltca --help``.
 ORDER = 10
@@ -290,7 +290,8 @@ def run(args: argparse.Namespace) -> int:
     path = write_netcdf(tree, Path(output), inputs=tree.attrs["inputs"])
     print(f"wrote {path}")
     write_figures(path, args.plots, args.report, progress=not args.no_progress)
-    print_plausibility_warnings(lt)
+    print_plausibility_warnings(lt, case, mis)
+    print_verdict(tree)
     return 0
 
 
@@ -320,13 +321,37 @@ def plastic_note(ltca) -> str:
             "at one roll); /ltca/segment_state.")
 
 
-def print_plausibility_warnings(ltca) -> None:
+def print_plausibility_warnings(ltca, case=None, misalignment=None) -> None:
     """A WARNING line for each cause that makes the analysis implausible
-    (:func:`contact.ltca.plausibility.plausibility_warnings`)."""
-    from contact.ltca.plausibility import plausibility_warnings
+    (:func:`contact.ltca.plausibility.plausibility_warnings`), and for a misalignment
+    beyond the plausible range of the case's blanks
+    (:func:`contact.ltca.plausibility.misalignment_warnings`; ``ltca run`` warns, the
+    studies refuse it without ``--force``)."""
+    from contact.ltca.plausibility import misalignment_warnings, plausibility_warnings
 
-    for text in plausibility_warnings(ltca):
+    texts = plausibility_warnings(ltca)
+    if case is not None and misalignment is not None:
+        texts += misalignment_warnings(case, misalignment)
+    for text in texts:
         print(f"WARNING: {text}")
+
+
+#: findings a command prints under its verdict (the report lists them all)
+VERDICT_LINES = 8
+
+
+def print_verdict(result) -> None:
+    """Print the verdict of a result (:func:`contact.study.verdicts.verdict`: an analysis
+    tree, a duty cycle or a V-H check), short: its severity and at most
+    :data:`VERDICT_LINES` findings, each wrapped at 100 columns."""
+    import textwrap
+
+    from contact.study.verdicts import verdict
+
+    for line in verdict(result).lines(VERDICT_LINES):
+        indent = " " * (len(line) - len(line.lstrip()))
+        print(textwrap.fill(line, 100, initial_indent="", subsequent_indent=indent + "    ",
+                            break_on_hyphens=False))
 
 
 def root_stress_rows(ltca) -> list[tuple[str, ...]]:

@@ -35,6 +35,7 @@ from contact.commands.options import (
     torque_option,
 )
 from contact.commands.output_paths import check_output_dir, check_output_file
+from contact.commands.run import print_verdict
 from geometry.core.errors import InputError
 
 if TYPE_CHECKING:
@@ -461,7 +462,7 @@ def vh_check_command(args: argparse.Namespace) -> int:
     print(tabulate(rows, headers=("position", "V [mm]", "H [mm]", "target u", "centre u",
                                   "target v", "centre v", "grid tol. u"), tablefmt="github"))
     print(plausibility_line(ds, "map_plausibility", "V-H points"))
-    print_verdict(ds, short=True)
+    print_verdict(ds)
     print(f"wrote {run.output}")
     _plots(ds, args)
     return 0

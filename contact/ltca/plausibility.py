@@ -27,20 +27,47 @@ The checks and their stated thresholds:
   applies where the mean LTE exceeds the unloaded TE's peak-to-peak: at lighter loads the
   LTE is the unloaded TE's own shape — parabolic pair TEs from their common minimum, whose
   peak-to-peak is 2–3 times their mean — and its ratio says nothing of the mesh.
+* **misalignment beyond the blank** — an input, not a result: a displacement ΔE, ΔP or ΔG
+  larger than :data:`MISALIGNMENT_LIMIT_FRACTION` (5 %) of the smaller face width, or a
+  shaft-angle change ΔΣ that moves the gear's outer cone distance R_e by more than that.
+  On the default design ±0.2 mm of ΔE moves the loaded pattern's centre from 0.22 to 0.74
+  of the face width (docs/study.md, the ΔE × ΔP map): 1.3 face widths per mm, so ΔE =
+  2.6 % of its 30.2 mm face width carries the pattern across the whole face; 5 % is twice
+  that, a displacement that puts the pattern of a design as sensitive off the tooth at
+  either sign. Measured axle deflections and V-H checks are tenths of a millimetre (the
+  seed's Table 3.1 mounting ΔE = −0.15, ΔP = +0.12 mm; the V-H check's default grid
+  ±0.4 mm, 1.3 % of that face width), well inside. A value beyond it is most likely a
+  typing slip (``--dE -0.2,0.2,5`` typed for ``-0.2:0.2:5`` is the values −0.2, 0.2 and
+  5 mm); the studies refuse it unless forced (``--force``), ``ltca run`` warns.
+
+The study engine stores the causes of each point as the bits of one CF flag,
+``plausibility`` (:data:`CAUSES`, :func:`plausibility_flags`).
 
 Public functions
 ----------------
 PLASTIC_SHARE_LIMIT    the torque share at the limit beyond which a run is flagged [1]
 LTE_SPREAD_LIMIT       the LTE peak-to-peak / mean beyond which a run is flagged [1]
+MISALIGNMENT_LIMIT_FRACTION  the misalignment / face width beyond which an input is flagged
+CAUSES                 the causes' names, in the order of their flag bits
+plausibility_flags     the causes of a /ltca dataset, per torque (booleans)
 plausibility_warnings  the causes, one sentence each
+misalignment_limits    the largest plausible |ΔE|, |ΔP|, |ΔG| [mm] and |ΔΣ| [rad] of a case
+misalignment_warnings  a misalignment beyond those limits, one sentence per displacement
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import xarray as xr
 
-__all__ = ["LTE_SPREAD_LIMIT", "PLASTIC_SHARE_LIMIT", "plausibility_warnings"]
+from geometry.case import Case
+from geometry.pair.assembly import Misalignment
+
+__all__ = ["CAUSES", "LTE_SPREAD_LIMIT", "MISALIGNMENT_LIMIT_FRACTION", "PLASTIC_SHARE_LIMIT",
+           "misalignment_limits", "misalignment_warnings", "plausibility_flags",
+           "plausibility_warnings"]
 
 #: [1] largest share of the gear torque that segments at their force limit may carry at a
 #: roll position before a run is flagged (module docstring)
@@ -49,10 +76,58 @@ PLASTIC_SHARE_LIMIT = 0.05
 #: [1] largest LTE peak-to-peak / mean LTE of a load-dominated run (module docstring)
 LTE_SPREAD_LIMIT = 0.5
 
+#: [1] largest |ΔE|, |ΔP|, |ΔG| as a fraction of the smaller face width, and of |ΔΣ| R_e
+#: (the gear's outer cone distance) likewise, of a plausible mounting (module docstring)
+MISALIGNMENT_LIMIT_FRACTION = 0.05
+
+#: the causes of the module docstring, in the order of their bits in a study's
+#: ``plausibility`` flag (bit k = 2**k): the three of the results, then the input's
+CAUSES = ("plastic_contact", "flank_above_limit", "lte_spread", "misalignment_beyond_blank")
+
 
 def _slashed(values: np.ndarray, fmt: str = "{:g}") -> str:
     """'12.3/4.5'-style text of values, one per flagged torque."""
     return "/".join(fmt.format(v) for v in values)
+
+
+def plausibility_flags(ltca: xr.Dataset) -> dict[str, np.ndarray]:
+    """The result causes of the module docstring, per torque.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        The ``/ltca`` dataset of an analysis (:func:`contact.ltca.loaded_tca`). Files
+        written before a variable existed simply skip its check (all False).
+
+    Returns
+    -------
+    dict of str to ndarray of bool, shape (torque,)
+        ``plastic_contact``, ``flank_above_limit``, ``lte_spread`` (the first three of
+        :data:`CAUSES`): True at the torques where the cause occurs.
+
+    Notes
+    -----
+    Thresholds and their justification: module docstring. The sentences of
+    :func:`plausibility_warnings` are made from these flags.
+    """
+    nt = ltca.sizes["torque"]
+    out = {name: np.zeros(nt, bool) for name in CAUSES[:3]}
+    if "plastic_load_share" in ltca:
+        share = np.nanmax(np.nan_to_num(ltca["plastic_load_share"].values, nan=0.0), axis=1)
+        out["plastic_contact"] = share > PLASTIC_SHARE_LIMIT
+    limit = float(ltca.attrs.get("edge_pressure_limit_MPa", np.nan))
+    flank_limit = float(ltca.attrs.get("flank_pressure_limit_MPa", np.nan))
+    if "pressure_max_flank" in ltca and np.isfinite(limit) and not np.isfinite(flank_limit):
+        out["flank_above_limit"] = np.asarray(ltca["pressure_max_flank"].values, float) > limit
+    if {"lte_peak_to_peak", "lte_mean", "unloaded_transmission_error"} <= set(ltca):
+        pp = np.asarray(ltca["lte_peak_to_peak"].values, float)
+        mean = np.asarray(ltca["lte_mean"].values, float)
+        ute = np.asarray(ltca["unloaded_transmission_error"].values, float)
+        ute_pp = float(np.nanmax(ute) - np.nanmin(ute)) if np.any(np.isfinite(ute)) else 0.0
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ratio = pp / mean
+        out["lte_spread"] = (mean > ute_pp) & (ratio > LTE_SPREAD_LIMIT)
+    return out
 
 
 def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
@@ -68,8 +143,8 @@ def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
     -------
     list of str
         Empty when the run is plausible; otherwise, for each cause of the module
-        docstring that occurs, a sentence naming it, the torques [N·m] where it occurs,
-        the numbers and the threshold.
+        docstring that occurs (:func:`plausibility_flags`), a sentence naming it, the
+        torques [N·m] where it occurs, the numbers and the threshold.
 
     Notes
     -----
@@ -78,41 +153,91 @@ def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
     cause).
     """
     out = []
+    flags = plausibility_flags(ltca)
     torque = np.asarray(ltca["torque"].values, float)
-    if "plastic_load_share" in ltca:
+    bad = flags["plastic_contact"]
+    if np.any(bad):
         share = np.nanmax(np.nan_to_num(ltca["plastic_load_share"].values, nan=0.0), axis=1)
-        bad = share > PLASTIC_SHARE_LIMIT
-        if np.any(bad):
-            out.append(
-                "plastic contact: segments at the material's contact-pressure limit carry "
-                f"up to {_slashed(100 * share[bad], '{:.1f}')} % of the torque at "
-                f"{_slashed(torque[bad])} N m (more than {100 * PLASTIC_SHARE_LIMIT:g} % at "
-                "some roll position); the edges (or flanks) would flatten in running, so "
-                "these are the results of a contact that cannot last (/ltca/segment_state)")
-    limit = float(ltca.attrs.get("edge_pressure_limit_MPa", np.nan))
-    flank_limit = float(ltca.attrs.get("flank_pressure_limit_MPa", np.nan))
-    if "pressure_max_flank" in ltca and np.isfinite(limit) and not np.isfinite(flank_limit):
+        out.append(
+            "plastic contact: segments at the material's contact-pressure limit carry "
+            f"up to {_slashed(100 * share[bad], '{:.1f}')} % of the torque at "
+            f"{_slashed(torque[bad])} N m (more than {100 * PLASTIC_SHARE_LIMIT:g} % at "
+            "some roll position); the edges (or flanks) would flatten in running, so "
+            "these are the results of a contact that cannot last (/ltca/segment_state)")
+    bad = flags["flank_above_limit"]
+    if np.any(bad):
+        limit = float(ltca.attrs["edge_pressure_limit_MPa"])
         p = np.asarray(ltca["pressure_max_flank"].values, float)
-        bad = p > limit
-        if np.any(bad):
-            out.append(
-                f"flank above the material's limit: flank peak pressure "
-                f"{_slashed(p[bad], '{:.0f}')} MPa at {_slashed(torque[bad])} N m, above the "
-                f"contact-pressure limit {limit:.0f} MPa; the flank would yield, which the "
-                "elastic flank model does not follow (LTCAOptions.flank_pressure_limit "
-                "bounds it)")
-    if {"lte_peak_to_peak", "lte_mean", "unloaded_transmission_error"} <= set(ltca):
-        pp = np.asarray(ltca["lte_peak_to_peak"].values, float)
-        mean = np.asarray(ltca["lte_mean"].values, float)
-        ute = np.asarray(ltca["unloaded_transmission_error"].values, float)
-        ute_pp = float(np.nanmax(ute) - np.nanmin(ute)) if np.any(np.isfinite(ute)) else 0.0
+        out.append(
+            f"flank above the material's limit: flank peak pressure "
+            f"{_slashed(p[bad], '{:.0f}')} MPa at {_slashed(torque[bad])} N m, above the "
+            f"contact-pressure limit {limit:.0f} MPa; the flank would yield, which the "
+            "elastic flank model does not follow (LTCAOptions.flank_pressure_limit "
+            "bounds it)")
+    bad = flags["lte_spread"]
+    if np.any(bad):
         with np.errstate(invalid="ignore", divide="ignore"):
-            ratio = pp / mean
-        bad = (mean > ute_pp) & (ratio > LTE_SPREAD_LIMIT)
-        if np.any(bad):
-            out.append(
-                f"LTE spread: LTE peak-to-peak {_slashed(ratio[bad], '{:.2f}')} times its "
-                f"mean at {_slashed(torque[bad])} N m (more than {LTE_SPREAD_LIMIT:g}); a mesh "
-                "that carries its load on the flanks varies far less (seed Table 3.1: "
-                "0.04-0.12): edge contact or loss of contact over part of the mesh cycle")
+            ratio = (np.asarray(ltca["lte_peak_to_peak"].values, float)
+                     / np.asarray(ltca["lte_mean"].values, float))
+        out.append(
+            f"LTE spread: LTE peak-to-peak {_slashed(ratio[bad], '{:.2f}')} times its "
+            f"mean at {_slashed(torque[bad])} N m (more than {LTE_SPREAD_LIMIT:g}); a mesh "
+            "that carries its load on the flanks varies far less (seed Table 3.1: "
+            "0.04-0.12): edge contact or loss of contact over part of the mesh cycle")
+    return out
+
+
+def misalignment_limits(case: Case) -> dict[str, float]:
+    """The largest plausible misalignments of a case's pair (module docstring).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    dict of str to float
+        ``delta_E``, ``delta_P``, ``delta_G`` [mm]: :data:`MISALIGNMENT_LIMIT_FRACTION`
+        times the smaller face width b; ``delta_Sigma`` [rad]: the angle that moves the
+        gear's outer cone distance R_e by that much, f b / R_e.
+    """
+    b = min(float(case.pinion.blank.face_width), float(case.gear.blank.face_width))
+    d = MISALIGNMENT_LIMIT_FRACTION * b
+    return {"delta_E": d, "delta_P": d, "delta_G": d,
+            "delta_Sigma": d / float(case.gear.blank.outer_cone_distance)}
+
+
+def misalignment_warnings(case: Case, misalignment: Misalignment) -> list[str]:
+    """The displacements of a mounting beyond :func:`misalignment_limits`, one sentence each.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        Its blanks give the limits.
+    misalignment : geometry.pair.assembly.Misalignment
+        ΔE, ΔP, ΔG [mm], ΔΣ [rad].
+
+    Returns
+    -------
+    list of str
+        Empty when every displacement is within its limit; otherwise one sentence per
+        displacement beyond it: the value, the limit and what it is a fraction of
+        (ΔΣ in degrees, as typed).
+    """
+    limits = misalignment_limits(case)
+    b = min(float(case.pinion.blank.face_width), float(case.gear.blank.face_width))
+    frac = f"{100 * MISALIGNMENT_LIMIT_FRACTION:g} % of the face width b = {b:.1f} mm"
+    out = []
+    for name, symbol in (("delta_E", "ΔE"), ("delta_P", "ΔP"), ("delta_G", "ΔG")):
+        x = float(getattr(misalignment, name))
+        if abs(x) > limits[name]:
+            out.append(f"misalignment beyond the blank: {symbol} = {x:g} mm, more than "
+                       f"{limits[name]:.2f} mm ({frac}): the pattern of a design moves "
+                       "off the tooth long before (is it a typing slip?)")
+    x = float(misalignment.delta_Sigma)
+    if abs(x) > limits["delta_Sigma"]:
+        out.append(f"misalignment beyond the blank: ΔΣ = {math.degrees(x):g} deg, more than "
+                   f"{math.degrees(limits['delta_Sigma']):.2f} deg (it moves the outer cone "
+                   f"distance R_e by more than {frac}): the pattern of a design moves off "
+                   "the tooth long before (is it a typing slip?)")
     return out

@@ -32,6 +32,7 @@ Public functions
 ----------------
 analyse_point   one point's summaries (runs on a worker)
 run_points      all points of a study, on Dask
+check_plausible_points  refuse points whose misalignment is beyond the blanks' range
 open_client     a Dask client for a scheduler argument (context manager)
 worker_environment  a LocalCluster's workers started without distributed's malloc trim
 run_tasks       any function over items on Dask, results as they finish
@@ -60,6 +61,7 @@ from contact.study.summary import (
     STATUS_MEANINGS,
     SUMMARY_VARIABLES,
     failed_summary,
+    plausibility_bits,
     point_summary,
     summary_variable,
 )
@@ -67,8 +69,9 @@ from geometry import __version__
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 
-__all__ = ["SYNCHRONOUS", "WORKER_ENVIRON_UNSET", "analyse_point", "open_client", "run_points",
-           "run_tasks", "stream_tasks", "worker_environment", "write_study"]
+__all__ = ["SYNCHRONOUS", "WORKER_ENVIRON_UNSET", "analyse_point", "check_plausible_points",
+           "open_client", "run_points", "run_tasks", "stream_tasks", "worker_environment",
+           "write_study"]
 
 log = logging.getLogger(__name__)
 
@@ -140,8 +143,11 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     except Exception as exc:
         log.info("study point %d %s failed: %s", index, dict(point), exc)
         reason = f"{type(exc).__name__}: {exc}".splitlines()[0]
-        return PointResult(index, 2, reason,
-                           failed_summary(len(shared.torque), max(len(shared.speed), 1)))
+        summary = failed_summary(len(shared.torque), max(len(shared.speed), 1))
+        # the input is judged even where the analysis failed (a slip such as ΔE = 5 mm)
+        summary["plausibility"] = plausibility_bits(
+            None, case, misalignment_of(case.misalignment, point), len(shared.torque))
+        return PointResult(index, 2, reason, summary)
 
 
 def _point_dataset(shared: StudyInputs, names: Sequence[str], index: int,
@@ -323,6 +329,7 @@ def run_points(
     progress: bool = False,
     kind: str = "study",
     chunk_size: int = 32,
+    force: bool = False,
 ) -> xr.Dataset:
     """Analyse every point of a study on Dask; one dataset over a ``point`` dim.
 
@@ -349,6 +356,10 @@ def run_points(
         What the study is (recorded in the title): ``"sweep"``, ``"sample"`` …
     chunk_size : int
         Points per chunk file of the parts directory.
+    force : bool
+        Run points whose misalignment is beyond the plausible range of the pair's blanks
+        (:func:`contact.ltca.plausibility.misalignment_limits`); they are flagged in
+        ``plausibility``. False (default): such points are refused before any work.
 
     Returns
     -------
@@ -356,13 +367,17 @@ def run_points(
         dims ``point`` (+ ``torque``, ``harmonic``, ``speed``): the summaries of
         :data:`contact.study.summary.SUMMARY_VARIABLES`, ``status`` (CF flag: ok,
         uncertified, failed) and ``reason``; coordinates ``point`` and the inputs
-        ``names``, ``torque`` [N·m], ``speed`` [rpm]. Attribute ``points_resumed``: how
-        many points were read from an interrupted run's parts.
+        ``names``, ``torque`` [N·m], ``speed`` [rpm]. ``plausibility`` (point, torque):
+        the CF flag of the causes ``ltca run`` warns of (bits of
+        :data:`contact.ltca.plausibility.CAUSES`, 0 plausible). Attribute
+        ``points_resumed``: how many points were read from an interrupted run's parts.
 
     Raises
     ------
     InputError
-        An unknown or non-finite input, no points, parts of another study at
+        Points whose misalignment is beyond the plausible range of the blanks (without
+        ``force``; the message gives the limits and the values), an unknown or non-finite
+        input, no points, parts of another study at
         ``OUTPUT.parts``, a bad scheduler or worker count, points missing from the parts
         after the run (a chunk set aside meanwhile: the study started again computes them).
     """
@@ -377,6 +392,8 @@ def run_points(
     if "deviation_scale" in names and shared.deviations is None:
         raise InputError(f"deviation_scale: case {shared.case.name!r} has no [deviations] "
                          "table to scale")
+    if not force:
+        check_plausible_points(shared.case, pts)
     if shared.root_stress is not False:
         # built (or read) once here and handed to every worker with the shared inputs:
         # a worker writes them into its own cache, so none builds them (issue 53)
@@ -434,6 +451,60 @@ def run_points(
                                       {"long_name": "gear member"}))
     ds["reason"] = ds["reason"].astype(str)
     return _stamp(ds, shared, kind, len(done))
+
+
+def check_plausible_points(case: Any, points: Sequence[Mapping[str, float]]) -> None:
+    """Refuse a study whose points put the pair beyond the plausible misalignments of its
+    blanks (:func:`contact.ltca.plausibility.misalignment_limits`).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        The study's case (its misalignment is that of inputs a point does not set).
+    points : sequence of mappings
+        The points' inputs (:data:`contact.study.points.POINT_INPUTS`; mm, rad).
+
+    Raises
+    ------
+    InputError
+        Naming each input beyond its limit: the limit, the offending values and how many
+        points they make, and how to run them anyway (``--force``, ``force=True``).
+    """
+    from contact.ltca.plausibility import MISALIGNMENT_LIMIT_FRACTION, misalignment_limits
+
+    limits = misalignment_limits(case)
+    base = case.misalignment
+    beyond: dict[str, list[float]] = {}
+    counts: dict[str, int] = {}
+    for p in points:
+        mis = misalignment_of(base, p)
+        for name, limit in limits.items():
+            x = float(getattr(mis, name))
+            if abs(x) > limit:
+                counts[name] = counts.get(name, 0) + 1
+                if x not in beyond.setdefault(name, []):
+                    beyond[name].append(x)
+    if not beyond:
+        return
+    b = min(case.pinion.blank.face_width, case.gear.blank.face_width)
+    parts = []
+    for name, xs in beyond.items():
+        deg = name == "delta_Sigma"
+        shown = [np.degrees(x) if deg else x for x in sorted(xs)]
+        unit = "deg" if deg else "mm"
+        lim = np.degrees(limits[name]) if deg else limits[name]
+        parts.append(f"{name} {', '.join(f'{x:g}' for x in shown[:6])}"
+                     f"{' …' if len(shown) > 6 else ''} {unit} ({counts[name]} "
+                     f"point{'s' * (counts[name] != 1)}) "
+                     f"beyond ±{lim:.3g} {unit}")
+    frac = 100 * MISALIGNMENT_LIMIT_FRACTION
+    raise InputError(
+        "misalignment beyond the blank: " + "; ".join(parts) + f" ({frac:g} % of the face "
+        f"width b = {b:.1f} mm, ΔΣ by its displacement at the "
+        "outer cone distance; contact.ltca.plausibility): the pattern moves off the tooth "
+        "long before, so such a point is most likely a typing slip (a range is START:STOP:N, "
+        "a comma list is values). To run them anyway (flagged in the output's "
+        "plausibility), pass --force (force=True)")
 
 
 #: summaries finite at every point whose ``status`` is 0 (every roll position certified,

@@ -182,7 +182,8 @@ def sweep(
     points = [dict(zip(names, map(float, combo), strict=True))
               for combo in itertools.product(*(axes[n] for n in names))]
     flat = run_points(shared, points, names=names, output=run.output, scheduler=run.scheduler,
-                      n_workers=run.n_workers, progress=run.progress, kind="sweep")
+                      n_workers=run.n_workers, progress=run.progress, kind="sweep",
+                      force=run.force)
     grid = _to_grid(flat, axes)
     if run.output is not None:
         write_study(grid, run.output, shared)

@@ -200,7 +200,8 @@ def sample(
     names = list(draws)
     points = [{k: float(draws[k][i]) for k in names} for i in range(int(n))]
     flat = run_points(shared, points, names=names, output=run.output, scheduler=run.scheduler,
-                      n_workers=run.n_workers, progress=run.progress, kind="sample")
+                      n_workers=run.n_workers, progress=run.progress, kind="sample",
+                      force=run.force)
     ds = flat.rename({"point": "sample"})
     ds.attrs.update(method=method, seed=-1 if seed is None else int(seed),
                     distributions="; ".join(f"{k}: {_describe(v)}"

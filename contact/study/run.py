@@ -55,6 +55,10 @@ class StudyRun:
         (``root_stress_max`` over (point…, torque, member) [MPa]; :func:`contact.run_analysis`'s
         ``root_stress``: True the default FE model — with ``options.compliance == "fe"``
         that of the compliance —, or an FEOptions). Default False.
+    force : bool
+        Run points whose misalignment is beyond the plausible range of the pair's blanks
+        (flagged in the output's ``plausibility``); default False refuses them before any
+        work (:func:`contact.study.engine.check_plausible_points`).
 
     Raises
     ------
@@ -70,6 +74,7 @@ class StudyRun:
     n_workers: int | None = None
     progress: bool = False
     root_stress: Any = False
+    force: bool = False
 
     def __post_init__(self) -> None:
         if self.options is not None and not isinstance(self.options, LTCAOptions):

@@ -11,24 +11,33 @@ point_summary      the summaries (per torque, and per speed for efficiency) of o
 failed_summary     the same variables, NaN, for a point that has no result
 summary_dims       the dims of a summary variable after the point's
 summary_variable   a summary variable with its units and long name
+plausibility_bits  the ``plausibility`` flag of one analysis (the causes' bits, per torque)
+pattern_dimensions the loaded pattern's centre and extent (fractions and mm), per torque
 SUMMARY_VARIABLES  their names
 STATUS_MEANINGS    the meaning of the per-point ``status`` flag
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 import numpy as np
 import xarray as xr
 
+from contact.ltca.plausibility import (
+    CAUSES,
+    misalignment_warnings,
+    plausibility_flags,
+)
 from contact.ltca.summary import edge_load_share
 from geometry.case import Case
 from geometry.core.conventions import binary_flag, data_var
 from geometry.machine.flank import blank_outline
+from geometry.pair.assembly import Misalignment
 
-__all__ = ["STATUS_MEANINGS", "SUMMARY_VARIABLES", "failed_summary", "point_summary",
-           "summary_dims", "summary_variable"]
+__all__ = ["STATUS_MEANINGS", "SUMMARY_VARIABLES", "failed_summary", "pattern_dimensions",
+           "plausibility_bits", "point_summary", "summary_dims", "summary_variable"]
 
 #: ``status`` flag values of a study point: 0 every roll position certified, 1 some roll
 #: positions of some torque without a certified solution (their summaries are NaN or
@@ -75,6 +84,9 @@ _VARIABLES: tuple[tuple[str, tuple[str, ...], str, str], ...] = (
     ("root_stress_max", ("torque", "member"), "MPa",
      "peak tensile tooth-root stress over the mesh cycles (pinion, gear; FE influence "
      "coefficients, contact.ltca.root_stress)"),
+    ("plausibility", ("torque",), "1",
+     "causes for which the point's results are implausible, as ltca run warns "
+     "(contact.ltca.plausibility; 0 none)"),
 )
 
 SUMMARY_VARIABLES: tuple[str, ...] = tuple(v[0] for v in _VARIABLES)
@@ -110,6 +122,98 @@ def _depth_at(case: Case, u: np.ndarray) -> np.ndarray:
     return np.linalg.norm(tip - root, axis=-1)
 
 
+def pattern_dimensions(ltca: xr.Dataset, case: Case) -> dict[str, np.ndarray]:
+    """The loaded pattern's centre and extent on the gear flank, per torque.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        ``/ltca`` with ``pressure_envelope`` (torque, u, v) [MPa] on the gear grid
+        fractions ``u`` (toe 0, heel 1) and ``v`` (root cone 0, face cone 1).
+    case : geometry.case.Case
+        The analysed case: its gear blank converts the fractions to mm.
+
+    Returns
+    -------
+    dict of str to ndarray, shape (torque,)
+        ``pattern_centre_u``, ``pattern_centre_v`` (pressure-weighted centre),
+        ``pattern_toe_u``, ``pattern_heel_u``, ``pattern_root_v``, ``pattern_tip_v``
+        (outermost loaded nodes) [1]; ``pattern_centre_lengthwise`` (from the toe along
+        the face width), ``pattern_centre_profile`` (from the root cone along the depth at
+        the centre), ``pattern_length``, ``pattern_height`` [mm]. NaN at a torque with no
+        loaded node.
+
+    Notes
+    -----
+    Seed §3.5, Fig. 3.7 (the pattern on the gear flank): the fractions are of the face
+    width on the pitch-cone generator and of the whole depth between root and face cones
+    (the blank's outline, corners interpolated), so lengths are those of the projection
+    plane; the grid's node spacing (``u``, ``v``) bounds the extents' resolution.
+    """
+    u, v = ltca["u"].values, ltca["v"].values
+    pat = _pattern(ltca["pressure_envelope"].values, u, v)
+    face = float(case.gear.blank.face_width)
+    depth_centre = _depth_at(case, pat["cu"])
+    return {
+        "pattern_centre_u": pat["cu"],
+        "pattern_centre_v": pat["cv"],
+        "pattern_toe_u": pat["u0"],
+        "pattern_heel_u": pat["u1"],
+        "pattern_root_v": pat["v0"],
+        "pattern_tip_v": pat["v1"],
+        "pattern_centre_lengthwise": pat["cu"] * face,
+        "pattern_centre_profile": pat["cv"] * depth_centre,
+        "pattern_length": (pat["u1"] - pat["u0"]) * face,
+        "pattern_height": (pat["v1"] - pat["v0"]) * depth_centre,
+    }
+
+
+def _tree_misalignment(tree: xr.DataTree, case: Case) -> Misalignment:
+    """The misalignment an analysis ran at: its root attributes
+    (``misalignment_delta_E_mm`` …, :data:`contact.pipeline.MISALIGNMENT_ATTRS`), else the
+    case's."""
+    a = tree.attrs
+    try:
+        return Misalignment(
+            delta_E=float(a["misalignment_delta_E_mm"]),
+            delta_P=float(a["misalignment_delta_P_mm"]),
+            delta_G=float(a["misalignment_delta_G_mm"]),
+            delta_Sigma=math.radians(float(a["misalignment_delta_Sigma_deg"])))
+    except KeyError:
+        return case.misalignment
+
+
+def plausibility_bits(ltca: xr.Dataset | None, case: Case, misalignment: Misalignment,
+                      n_torque: int) -> np.ndarray:
+    """The ``plausibility`` flag of one analysis: per torque, the sum of 2**k over the
+    causes k of :data:`contact.ltca.plausibility.CAUSES` that occur.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset or None
+        The ``/ltca`` dataset (:func:`contact.ltca.plausibility.plausibility_flags`); None
+        for a point whose analysis failed (only its input is judged).
+    case : geometry.case.Case
+        Its blanks bound the misalignment (:func:`contact.ltca.plausibility.
+        misalignment_limits`).
+    misalignment : geometry.pair.assembly.Misalignment
+        The point's ΔE, ΔP, ΔG [mm], ΔΣ [rad].
+    n_torque : int
+
+    Returns
+    -------
+    ndarray of int8, shape (n_torque,)
+        0 where the point is plausible at that torque.
+    """
+    bits = np.zeros(n_torque, np.int8)
+    if ltca is not None:
+        for k, flag in enumerate(plausibility_flags(ltca).values()):
+            bits |= np.where(flag, np.int8(1 << k), np.int8(0))
+    if misalignment_warnings(case, misalignment):
+        bits |= np.int8(1 << CAUSES.index("misalignment_beyond_blank"))
+    return bits
+
+
 def point_summary(tree: xr.DataTree, case: Case,
                   friction: Sequence[xr.Dataset] = ()) -> dict[str, np.ndarray]:
     """The study summaries of one analysis.
@@ -132,7 +236,9 @@ def point_summary(tree: xr.DataTree, case: Case,
         One array per name of :data:`SUMMARY_VARIABLES`, shaped by the dims after the
         point's (:func:`summary_dims`): ``torque`` (NT,), ``harmonic`` (3,), ``speed``
         (len(friction), at least 1), ``member`` (2: pinion, gear; ``root_stress_max``,
-        NaN where the tree has no root stress).
+        NaN where the tree has no root stress). ``plausibility`` (torque,) int8: the bits
+        of the causes ``ltca run`` warns of (:func:`plausibility_bits`, at the tree's own
+        misalignment).
 
     Notes
     -----
@@ -147,10 +253,6 @@ def point_summary(tree: xr.DataTree, case: Case,
     """
     ltca = tree["/ltca"].to_dataset()
     utca = tree["/utca"].to_dataset()
-    u, v = ltca["u"].values, ltca["v"].values
-    pat = _pattern(ltca["pressure_envelope"].values, u, v)
-    face = float(case.gear.blank.face_width)
-    depth_centre = _depth_at(case, pat["cu"])
     found = ltca["found"].values > 0
     NT = found.shape[0]
     out = {
@@ -161,16 +263,7 @@ def point_summary(tree: xr.DataTree, case: Case,
         "pressure_max_flank": ltca["pressure_max_flank"].values,
         "pressure_max_edge": ltca["pressure_max_edge"].values,
         "edge_load_share": edge_load_share(ltca),
-        "pattern_centre_u": pat["cu"],
-        "pattern_centre_v": pat["cv"],
-        "pattern_toe_u": pat["u0"],
-        "pattern_heel_u": pat["u1"],
-        "pattern_root_v": pat["v0"],
-        "pattern_tip_v": pat["v1"],
-        "pattern_centre_lengthwise": pat["cu"] * face,
-        "pattern_centre_profile": pat["cv"] * depth_centre,
-        "pattern_length": (pat["u1"] - pat["u0"]) * face,
-        "pattern_height": (pat["v1"] - pat["v0"]) * depth_centre,
+        **pattern_dimensions(ltca, case),
         "certified": found.all(axis=1).astype(np.int8),
     }
     if not friction and "/friction" in tree.groups:
@@ -185,14 +278,20 @@ def point_summary(tree: xr.DataTree, case: Case,
         out["root_stress_max"] = ltca["root_stress_max"].transpose("torque", "member").values
     else:
         out["root_stress_max"] = np.full((NT, 2), np.nan)
-    return {k: np.asarray(out[k], dtype=np.int8 if k == "certified" else float)
+    out["plausibility"] = plausibility_bits(ltca, case, _tree_misalignment(tree, case), NT)
+    return {k: np.asarray(out[k], dtype=np.int8 if k in _INT8 else float)
             for k in SUMMARY_VARIABLES}
 
 
+#: the summaries stored as int8 flags, not floats
+_INT8 = ("certified", "plausibility")
+
+
 def failed_summary(n_torque: int, n_speed: int = 1) -> dict[str, np.ndarray]:
-    """The summary arrays of a point without result: NaN (``certified`` 0)."""
+    """The summary arrays of a point without result: NaN (``certified`` and
+    ``plausibility`` 0: the caller sets the input's bit, :func:`plausibility_bits`)."""
     shapes = {"torque": n_torque, "harmonic": 3, "speed": n_speed, "member": 2}
-    return {name: (np.zeros([shapes[d] for d in dims], np.int8) if name == "certified"
+    return {name: (np.zeros([shapes[d] for d in dims], np.int8) if name in _INT8
                    else np.full([shapes[d] for d in dims], np.nan))
             for name, dims, _, _ in _VARIABLES}
 
@@ -212,5 +311,9 @@ def summary_variable(name: str, point_dims: tuple[str, ...], data: np.ndarray) -
             attrs = {}
             if n == "certified":
                 attrs = binary_flag("not_certified", "certified")
+            elif n == "plausibility":
+                attrs = {"flag_masks": np.array([1 << k for k in range(len(CAUSES))],
+                                                dtype=np.int8),
+                         "flag_meanings": " ".join(CAUSES)}
             return data_var((*point_dims, *dims), data, units, long_name, **attrs)
     raise KeyError(name)

@@ -123,7 +123,8 @@ def vh_check(
         found by the analysis at (V, H), ``grid_tolerance_u``/``_v`` (the change of the
         centre across the grid cell, the accuracy the grid allows) and
         ``pressure_envelope`` (position, u, v) [MPa], the loaded pattern drawn at each;
-        over (``delta_E``, ``delta_P``) the mapped centres ``map_centre_u``/``_v``.
+        over (``delta_E``, ``delta_P``) the mapped centres ``map_centre_u``/``_v``, the
+        points' ``map_status`` and ``map_plausibility`` (the study's flags).
         Misalignments ΔG and ΔΣ keep the case's values.
 
     Raises
@@ -165,7 +166,8 @@ def vh_check(
     shared = study_inputs(case, torque, options=options, flank=flank)
     points = [{"delta_E": float(v), "delta_P": float(h)} for v in V for h in H]
     flat = run_points(shared, points, names=["delta_E", "delta_P"], scheduler=run.scheduler,
-                      n_workers=run.n_workers, progress=run.progress, kind="V-H check map")
+                      n_workers=run.n_workers, progress=run.progress, kind="V-H check map",
+                      force=run.force)
     grid_cu = flat["pattern_centre_u"].values[:, 0].reshape(V.size, H.size)
     grid_cv = flat["pattern_centre_v"].values[:, 0].reshape(V.size, H.size)
     cu = RegularGridInterpolator((V, H), grid_cu, bounds_error=False, fill_value=np.nan)
@@ -246,6 +248,9 @@ def vh_check(
             "map_status": (("delta_E", "delta_P"),
                            flat["status"].values.reshape(V.size, H.size),
                            flat["status"].attrs),
+            "map_plausibility": (("delta_E", "delta_P"),
+                                 flat["plausibility"].values[:, 0].reshape(V.size, H.size),
+                                 flat["plausibility"].attrs),
         },
         coords={
             "position": ("position", list(POSITIONS), {"long_name": "pattern position"}),

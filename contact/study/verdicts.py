@@ -1,0 +1,574 @@
+"""Verdicts: what an analysis, a duty cycle or a V-H check says a gear engineer must act on.
+
+:func:`verdict` turns one result into findings, each with a severity and a one-sentence
+reason, and the result's overall severity — the worst of its findings:
+
+* ``fail`` — a criterion of the design is not met: a safety factor below its minimum, a
+  stress above the material's static strength, damage of 1 or more within the duty
+  cycle, or a loaded contact ``ltca run`` calls implausible
+  (:mod:`contact.ltca.plausibility`: its numbers describe a contact that cannot last);
+* ``attention`` — met, but not with the margin a design usually keeps, or the numbers
+  need a second look: flank pressure above the endurance limit σ_Hlim (a finite life
+  only), edge contact or a loaded pattern that reaches a tooth boundary, plastic edge
+  segments, friction evaluated outside its fitted range, uncertified roll positions, a
+  V-H check whose toe or heel position is the nominal mounting itself;
+* ``pass`` — no finding.
+
+The checks and their thresholds, per kind of result (:data:`CHECKS`):
+
+**Analysis** (a DataTree of ``ltca run``: ``/ltca``, ``/friction`` and ``/rating`` where
+present).
+
+* ``implausible`` (fail): each cause of
+  :func:`contact.ltca.plausibility.plausibility_warnings`.
+* ``flank_pressure`` : the flank peak pressure against the allowable contact stress
+  number σ_Hlim of the weaker member's material at ISO 6336-5 grade :data:`GRADE`
+  (:func:`contact.durability.sn_curves`, ``geometry/core/data/materials.toml``):
+  attention above σ_Hlim (beyond the endurance limit: a finite life, which
+  ``ltca duty-cycle`` counts), fail above the static strength σ_Hlim·Z_NT,static (the
+  S–N curve's life factor at its static end, ISO 6336-2: no life at all).
+* ``edge_contact`` (attention): per torque, the edges that carry load (gear heel, toe,
+  tip, pinion edge; their share of the torque, Σ F·arm as
+  :func:`contact.ltca.summary.edge_load_share`) and the tooth boundaries the loaded
+  pattern (``pressure_envelope``) reaches — the outermost nodes of the gear grid.
+* ``plastic_edges`` (attention): segments at their contact-pressure limit carrying a share
+  of the torque up to the plausibility limit (beyond it: ``implausible``).
+* ``certification`` (attention): roll positions without a certified contact solution.
+* ``friction_extrapolated`` (attention): the friction model ran outside its fitted range
+  (``/friction/friction_model_extrapolated``; flanks and edges as
+  :func:`friction.efficiency.extrapolation_summary` splits them).
+* ``scuffing``, ``micropitting`` (fail): S_B or S_λ below :data:`SCUFFING_MIN` /
+  :data:`MICROPITTING_MIN` = 1: the peak contact temperature reaches the oil's scuffing
+  temperature, the least specific film its permissible value — the methods' own criteria
+  (ISO/TR 13989-1, ISO/TS 6336-22 leave larger minimum factors to agreement).
+* ``rating`` (fail): the ISO 10300 ``/rating`` group's S_H, S_F against its S_Hmin, S_Fmin.
+
+**Duty cycle** (the ``/duty_cycle`` dataset of ``ltca duty-cycle``).
+
+* ``damage`` (fail): cumulative flank or root damage ≥ 1 (the life is shorter than the
+  cycle's hours).
+* ``safety`` (attention): the contact or bending safety factor of the peak-torque bin
+  below :data:`DUTY_MIN_SAFETY` = 1 — σ_lim over the peak stress with life factor 1, so
+  below 1 the peak bin is beyond the endurance limit and the Miner damage, not the factor,
+  decides the life.
+* ``static`` (fail): a flank pressure above the static strength (the dataset's
+  ``contact_static_limit_exceeded``).
+* ``edge_contact``, ``certification`` (attention): bins with edge contact or
+  uncertified roll positions; ``bending`` (attention) the bending side not evaluated;
+  ``illustrative`` (attention) the bundled made-up spectrum.
+
+**V-H check** (the dataset of ``ltca vh-check``).
+
+* ``degenerate`` (attention): a toe or heel position within :data:`VH_SAME_POSITION`
+  of the nominal mounting, or whose target the nominal pattern already meets within
+  :data:`VH_TARGET_TOLERANCE`: the check then says nothing of that side but that the
+  nominal pattern sits there.
+* ``target`` (attention): a position whose analysed centre misses its target by more
+  than the grid's resolution (``grid_tolerance_u``, at least :data:`VH_TARGET_TOLERANCE`).
+* ``map`` (attention): map points that failed or that the study flags implausible.
+
+Public names
+------------
+SEVERITIES  the severities, mildest first
+Finding     one finding: severity, check, reason
+Verdict     the findings of one result and its overall severity
+verdict     the verdict of an analysis tree, a duty cycle or a V-H check
+CHECKS      the checks of each kind of result
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+import numpy as np
+import xarray as xr
+
+from contact.ltca.plausibility import PLASTIC_SHARE_LIMIT, plausibility_warnings
+from geometry.core.errors import InputError
+
+__all__ = ["CHECKS", "DUTY_MIN_SAFETY", "GRADE", "MICROPITTING_MIN", "SCUFFING_MIN",
+           "SEVERITIES", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "Finding", "Verdict",
+           "verdict"]
+
+#: the severities, mildest first (a verdict is the worst of its findings)
+SEVERITIES = ("pass", "attention", "fail")
+
+#: ISO 6336-5 quality grade whose σ_Hlim judges an analysis's flank pressure (the duty
+#: cycle's default grade, contact.study.duty_cycle_inputs.DutyCycle.grade)
+GRADE = "MQ"
+
+#: [1] least scuffing safety S_B and micropitting safety S_λ (module docstring)
+SCUFFING_MIN = 1.0
+MICROPITTING_MIN = 1.0
+
+#: [1] least contact and bending safety factor of a duty cycle's peak-torque bin, life
+#: factor 1 (module docstring)
+DUTY_MIN_SAFETY = 1.0
+
+#: [mm] a V-H position closer than this to the nominal mounting (in V and in H) is the
+#: nominal itself: 0.01 mm is a tenth of the default grid's 0.1 mm step, below what the
+#: bilinear map resolves
+VH_SAME_POSITION = 0.01
+
+#: [1] least tolerance on a V-H position's centre (face-width fraction): the 0.02 the
+#: V-H solver itself warns above (contact.study.vh_check)
+VH_TARGET_TOLERANCE = 0.02
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One thing a result says an engineer must look at.
+
+    Attributes
+    ----------
+    severity : str
+        ``"attention"`` or ``"fail"`` (:data:`SEVERITIES`).
+    check : str
+        The check that found it (:data:`CHECKS`).
+    reason : str
+        One sentence: what, where (torque, member, bin), the numbers and the limit.
+    """
+
+    severity: str
+    check: str
+    reason: str
+
+    def __post_init__(self) -> None:
+        if self.severity not in SEVERITIES[1:]:
+            raise InputError(f"severity: must be one of {', '.join(SEVERITIES[1:])}, got "
+                             f"{self.severity!r}")
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The findings of one result.
+
+    Attributes
+    ----------
+    kind : str
+        ``"analysis"``, ``"duty cycle"`` or ``"V-H check"``.
+    findings : tuple of Finding
+        Worst first, then in the order of the checks.
+    checks : tuple of str
+        The checks that ran (those whose data the result has).
+    """
+
+    kind: str
+    findings: tuple[Finding, ...]
+    checks: tuple[str, ...]
+
+    @property
+    def severity(self) -> str:
+        """The worst severity of the findings; ``"pass"`` without any."""
+        return max((f.severity for f in self.findings), key=SEVERITIES.index,
+                   default="pass")
+
+    def lines(self, limit: int | None = None) -> list[str]:
+        """The verdict as text lines: ``VERDICT: <severity>`` with the count, then one
+        line per finding (``  fail: <reason>``); at most ``limit`` findings, the rest
+        counted."""
+        n = len(self.findings)
+        head = (f"VERDICT ({self.kind}): {self.severity.upper()}"
+                + (f", {n} finding{'s' * (n != 1)}" if n else
+                   f", no finding in {len(self.checks)} checks"))
+        shown = self.findings if limit is None else self.findings[:limit]
+        out = [head] + [f"  {f.severity}: {f.reason}" for f in shown]
+        if len(shown) < n:
+            out.append(f"  … and {n - len(shown)} more (the report lists them all)")
+        return out
+
+
+def _t(torque: float) -> str:
+    return f"{torque:g} N m"
+
+
+def _worst_first(findings: list[Finding]) -> tuple[Finding, ...]:
+    order = {s: i for i, s in enumerate(reversed(SEVERITIES))}
+    return tuple(sorted(findings, key=lambda f: order[f.severity]))  # stable
+
+
+# --------------------------------------------------------------------------- analysis
+
+def _group(tree: xr.DataTree, name: str) -> xr.Dataset | None:
+    return tree[name].to_dataset() if name in tree.children else None
+
+
+def _flank_pressure(lt: xr.Dataset) -> list[Finding]:
+    from contact.durability import sn_curves
+
+    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
+    if "pressure_max_flank" not in lt or not names:
+        return []
+    curves = [sn_curves(str(m), GRADE)["contact"] for m in sorted(names)]
+    weak = min(curves, key=lambda c: c.allowable)
+    limit, static = weak.allowable, weak.allowable * weak.static_life_factor
+    mat = sorted(names)[[c.allowable for c in curves].index(weak.allowable)]
+    out = []
+    for t, p in zip(lt["torque"].values, lt["pressure_max_flank"].values, strict=True):
+        if not np.isfinite(p) or p <= limit:
+            continue
+        if p > static:
+            out.append(Finding("fail", "flank_pressure",
+                               f"flank peak pressure {p:.0f} MPa at {_t(t)} above the static "
+                               f"strength {static:.0f} MPa (sigma_Hlim {limit:.0f} MPa x "
+                               f"Z_NT {weak.static_life_factor:g}, {mat}, grade {GRADE}): "
+                               "no life at this torque"))
+        else:
+            out.append(Finding("attention", "flank_pressure",
+                               f"flank peak pressure {p:.0f} MPa at {_t(t)} above sigma_Hlim "
+                               f"{limit:.0f} MPa ({mat}, ISO 6336-5 grade {GRADE}): beyond "
+                               "the endurance limit, a finite life at this torque "
+                               "(ltca duty-cycle counts the damage)"))
+    return out
+
+
+#: edge kinds as the findings name them
+_EDGE_WORDS = {"gear_heel": "gear heel", "gear_toe": "gear toe", "gear_tip": "gear tip",
+               "pinion_edge": "pinion edge"}
+
+
+def _edge_shares(lt: xr.Dataset) -> dict[str, np.ndarray]:
+    """Per edge kind, the share of the torque (Σ F·arm) its segments carry, per torque."""
+    if not {"force", "moment_arm", "segment_kind"} <= set(lt.variables):
+        return {}
+    moment = (np.nan_to_num(lt["force"].values)
+              * np.nan_to_num(lt["moment_arm"].values)[None])
+    total = moment.sum(axis=(1, 2, 3))
+    kind = np.asarray(lt["segment_kind"].values).astype(str)
+    out = {}
+    with np.errstate(invalid="ignore", divide="ignore"):
+        for k in _EDGE_WORDS:
+            if np.any(kind == k):
+                out[k] = np.where(total > 0, moment[..., kind == k].sum(axis=(1, 2, 3))
+                                  / total, 0.0)
+    return out
+
+
+def _boundaries(lt: xr.Dataset) -> list[list[str]]:
+    """Per torque, the tooth boundaries (toe, heel, root, tip of the gear grid) the
+    loaded pattern reaches: loaded nodes on the grid's outermost rows."""
+    if "pressure_envelope" not in lt:
+        return [[] for _ in lt["torque"].values]
+    env = np.nan_to_num(lt["pressure_envelope"].transpose("torque", "u", "v").values) > 0
+    out = []
+    for e in env:
+        reached = [name for name, edge in (("toe", e[0, :]), ("heel", e[-1, :]),
+                                           ("root", e[:, 0]), ("tip", e[:, -1]))
+                   if edge.any()]
+        out.append(reached)
+    return out
+
+
+def _edge_contact(lt: xr.Dataset) -> list[Finding]:
+    shares = _edge_shares(lt)
+    reached = _boundaries(lt)
+    out = []
+    for i, t in enumerate(lt["torque"].values):
+        loaded = {k: float(s[i]) for k, s in shares.items() if s[i] > 0}
+        if not loaded and not reached[i]:
+            continue
+        parts = []
+        if reached[i]:
+            parts.append("the loaded pattern reaches the gear's " + " and ".join(reached[i]))
+        if loaded:
+            total = sum(loaded.values())
+            each = ", ".join(f"{_EDGE_WORDS[k]} {100 * v:.2f} %" for k, v in
+                             sorted(loaded.items(), key=lambda kv: -kv[1]))
+            parts.append(f"edge contact carries {100 * total:.2f} % of the torque ({each})")
+        out.append(Finding("attention", "edge_contact", f"at {_t(t)}: " + "; ".join(parts)))
+    return out
+
+
+def _plastic(lt: xr.Dataset) -> list[Finding]:
+    if "plastic_load_share" not in lt:
+        return []
+    share = np.nanmax(np.nan_to_num(lt["plastic_load_share"].values, nan=0.0), axis=1)
+    ok = (share > 0) & (share <= PLASTIC_SHARE_LIMIT)
+    if not np.any(ok):
+        return []
+    torque = lt["torque"].values
+    where = ", ".join(f"{100 * s:.1f} % at {_t(t)}" for s, t in zip(share[ok], torque[ok],
+                                                                     strict=True))
+    return [Finding("attention", "plastic_edges",
+                    f"segments at their contact-pressure limit (plastic edges) carry up to "
+                    f"this share of the torque at one roll: {where} (below the "
+                    f"{100 * PLASTIC_SHARE_LIMIT:g} % plausibility limit); they flatten in "
+                    "running")]
+
+
+def _certification(lt: xr.Dataset) -> list[Finding]:
+    if "found" not in lt:
+        return []
+    found = lt["found"].values > 0
+    bad = ~found.all(axis=1)
+    if not np.any(bad):
+        return []
+    torque = lt["torque"].values
+    where = ", ".join(f"{int((~found[i]).sum())} of {found.shape[1]} at {_t(torque[i])}"
+                      for i in np.flatnonzero(bad))
+    return [Finding("attention", "certification",
+                    f"roll positions without a certified contact solution: {where} "
+                    "(their numbers are not certified; /ltca/status)")]
+
+
+def _friction(fr: xr.Dataset) -> list[Finding]:
+    if "friction_model_extrapolated" not in fr:
+        return []
+    if not np.any(fr["friction_model_extrapolated"].values == 1):
+        return []
+    try:
+        parts = json.loads(fr.attrs.get("model_range_by_contact", "{}"))
+    except (TypeError, ValueError):
+        parts = {}
+    where = "; ".join(
+        f"{e['extrapolated']} of {e['loaded']} {name} segments ({100 * e['load_share']:.1f} "
+        "% of the load)"
+        for name, e in ((n, parts.get(n)) for n in ("flank", "edge"))
+        if e and e.get("extrapolated"))
+    if not where:
+        n = int((fr["friction_model_extrapolated"].values == 1).sum())
+        where = f"{n} segments"
+    return [Finding("attention", "friction_extrapolated",
+                    f"friction model {fr.attrs.get('friction_model', '')} extrapolated "
+                    f"outside its fitted range: {where}; the efficiency there is an "
+                    "extrapolation (docs/friction.md)")]
+
+
+def _safeties(fr: xr.Dataset) -> list[Finding]:
+    out = []
+    for name, check, symbol, least in (
+            ("scuffing_safety", "scuffing", "S_B", SCUFFING_MIN),
+            ("micropitting_safety", "micropitting", "S_lambda", MICROPITTING_MIN)):
+        if name not in fr:
+            continue
+        for t, s in zip(fr["torque"].values, fr[name].values, strict=True):
+            if np.isfinite(s) and s < least:
+                out.append(Finding("fail", check,
+                                   f"{check} safety {symbol} {s:.3g} at {_t(t)} below "
+                                   f"{least:g}"))
+    return out
+
+
+def _rating(rt: xr.Dataset) -> list[Finding]:
+    out = []
+    for name, least, what in (("S_H", "S_Hmin", "pitting"), ("S_F", "S_Fmin", "bending")):
+        if name not in rt or least not in rt:
+            continue
+        smin = float(rt[least])
+        s = rt[name].transpose("torque", "member")
+        for i, t in enumerate(s["torque"].values):
+            for j, m in enumerate(s["member"].values):
+                x = float(s.values[i, j])
+                if np.isfinite(x) and x < smin:
+                    out.append(Finding("fail", "rating",
+                                       f"ISO 10300 {what} safety {name} {x:.2f} of the {m} at "
+                                       f"{_t(t)} below {least} {smin:g}"))
+    return out
+
+
+def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
+    lt, fr, rt = (_group(tree, g) for g in ("ltca", "friction", "rating"))
+    findings: list[Finding] = []
+    checks: list[str] = []
+    if lt is not None:
+        checks += ["implausible", "flank_pressure", "edge_contact", "plastic_edges",
+                   "certification"]
+        findings += [Finding("fail", "implausible", w) for w in plausibility_warnings(lt)]
+        findings += _flank_pressure(lt) + _edge_contact(lt) + _plastic(lt)
+        findings += _certification(lt)
+    if fr is not None:
+        checks += ["friction_extrapolated"]
+        findings += _friction(fr)
+        if "scuffing_safety" in fr or "micropitting_safety" in fr:
+            checks += ["scuffing", "micropitting"]
+            findings += _safeties(fr)
+    if rt is not None:
+        checks += ["rating"]
+        findings += _rating(rt)
+    return findings, checks
+
+
+# --------------------------------------------------------------------------- duty cycle
+
+def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
+    findings: list[Finding] = []
+    checks = ["damage", "safety", "static", "edge_contact", "certification", "bending",
+              "illustrative"]
+    hours = float(np.sum(ds["hours"].values)) if "hours" in ds else math.nan
+    members = [str(m) for m in ds["member"].values]
+    for k, m in enumerate(members):
+        for dmg, life, what in (("damage", "life", "flank (pitting)"),
+                                ("root_damage_max", "root_life", "root (bending)")):
+            if dmg in ds and float(ds[dmg][k]) >= 1.0:
+                findings.append(Finding(
+                    "fail", "damage",
+                    f"{m}: {what} damage {float(ds[dmg][k]):.3g} over the cycle: life "
+                    f"{float(ds[life][k]):.4g} h, shorter than the cycle's {hours:g} h"))
+        for name, symbol, dmg in (("contact_safety_factor", "S_H", "damage"),
+                                  ("bending_safety_factor", "S_F", "root_damage_max")):
+            if name in ds and float(ds[name][k]) < DUTY_MIN_SAFETY:
+                d = float(ds[dmg][k]) if dmg in ds else math.nan
+                findings.append(Finding(
+                    "attention", "safety",
+                    f"{m}: {symbol} {float(ds[name][k]):.2f} below {DUTY_MIN_SAFETY:g} at the "
+                    f"peak-torque bin (life factor 1): beyond the endurance limit there; "
+                    f"the Miner damage {d:.3g} over the cycle decides the life"))
+    if int(ds.attrs.get("contact_static_limit_exceeded", 0)):
+        findings.append(Finding("fail", "static",
+                                "a flank pressure exceeds the static contact strength of "
+                                "the material (sigma_Hlim x Z_NT at the S-N curve's static "
+                                "end) in some bin: no life there"))
+    if "edge_load_share" in ds and "torque" in ds:
+        share = np.nan_to_num(ds["edge_load_share"].values)
+        if np.any(share > 0):
+            i = int(np.argmax(share))
+            findings.append(Finding(
+                "attention", "edge_contact",
+                f"edge contact in {int(np.count_nonzero(share > 0))} of {share.size} bins, "
+                f"up to {100 * share[i]:.2f} % of the torque (bin {i}, "
+                f"{_t(float(ds['torque'].values[i]))}); its pressure is not counted as "
+                "pitting damage"))
+    if "certified" in ds:
+        bad = np.flatnonzero(np.asarray(ds["certified"].values).reshape(ds.sizes["bin"], -1)
+                             .min(axis=1) == 0)
+        if bad.size:
+            findings.append(Finding("attention", "certification",
+                                    f"bins {', '.join(str(b) for b in bad)} have roll "
+                                    "positions without a certified contact solution"))
+    if "root_life" not in ds:
+        findings.append(Finding("attention", "bending",
+                                "bending side not evaluated: the bins have no root stress "
+                                "(leave out --no-root-stress)"))
+    if int(ds.attrs.get("illustrative", 0)):
+        findings.append(Finding("attention", "illustrative",
+                                "the spectrum is the bundled ILLUSTRATIVE one (made-up "
+                                "proportions): its damage and life are not of a real duty"))
+    return findings, checks
+
+
+# --------------------------------------------------------------------------- V-H check
+
+def _vh(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
+    findings: list[Finding] = []
+    checks = ["degenerate", "target", "map"]
+    names = [str(x) for x in ds["position"].values]
+
+    def at(pos: str) -> xr.Dataset:
+        return ds.isel(position=names.index(pos))
+
+    nom = at("nominal")
+    v0, h0, cu0 = float(nom["V"]), float(nom["H"]), float(nom["pattern_centre_u"])
+    for pos in ("toe", "heel"):
+        r = at(pos)
+        v, h = float(r["V"]), float(r["H"])
+        target, cu = float(r["target_u"]), float(r["pattern_centre_u"])
+        tol = max(float(r["grid_tolerance_u"]), VH_TARGET_TOLERANCE)
+        same = abs(v - v0) <= VH_SAME_POSITION and abs(h - h0) <= VH_SAME_POSITION
+        if same or abs(cu0 - target) <= VH_TARGET_TOLERANCE:
+            findings.append(Finding(
+                "attention", "degenerate",
+                f"the {pos} position is the nominal mounting itself (V {v:+.3f}, H {h:+.3f} "
+                f"mm; nominal centre u {cu0:.3f} against the {pos} target {target:.2f}): the "
+                f"nominal pattern already sits at the {pos}, so the check says nothing of "
+                f"how far V and H may move it there"))
+        elif abs(cu - target) > tol:
+            findings.append(Finding(
+                "attention", "target",
+                f"the {pos} position misses its target: centre u {cu:.3f} against "
+                f"{target:.2f} (more than {tol:.3f}); widen the V-H grid (--dE, --dP)"))
+    if "map_status" in ds:
+        st = ds["map_status"].values
+        if np.any(st == 2):
+            findings.append(Finding("attention", "map",
+                                    f"{int((st == 2).sum())} of {st.size} V-H map points "
+                                    "failed (their centres are interpolated around)"))
+    if "map_plausibility" in ds:
+        bad = int(np.count_nonzero(ds["map_plausibility"].values))
+        if bad:
+            findings.append(Finding("attention", "map",
+                                    f"{bad} of {ds['map_plausibility'].size} V-H map points "
+                                    "are flagged implausible (map_plausibility)"))
+    return findings, checks
+
+
+# --------------------------------------------------------------------------- dispatch
+
+def _kind(result: xr.DataTree | xr.Dataset) -> str:
+    """The kind of a result: a tree of ``ltca run`` (``/easeoff``), a duty cycle (a tree
+    with ``/duty_cycle`` or the dataset), a V-H check (``study`` attribute)."""
+    if isinstance(result, xr.DataTree):
+        if "duty_cycle" in result.children:
+            return "duty cycle"
+        if "easeoff" in result.children or "ltca" in result.children:
+            return "analysis"
+        raise InputError("result: a DataTree without /easeoff, /ltca or /duty_cycle is no "
+                         "result the verdicts read (an analysis or a duty cycle)")
+    if isinstance(result, xr.Dataset):
+        if result.attrs.get("study") == "vh-check":
+            return "V-H check"
+        if "contact_safety_factor" in result and "bin" in result.dims:
+            return "duty cycle"
+        raise InputError("result: a Dataset that is neither a V-H check (study "
+                         "'vh-check') nor a duty cycle (contact_safety_factor over bin); "
+                         "an analysis is passed as its DataTree")
+    raise InputError(f"result: must be an xarray DataTree or Dataset, got "
+                     f"{type(result).__name__}")
+
+
+def _duty_of(result: xr.DataTree | xr.Dataset) -> tuple[list[Finding], list[str]]:
+    ds = result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree) else result
+    return _duty(ds)
+
+
+#: kind of result → (its checks, the function finding them)
+_KINDS: Mapping[str, Callable[..., tuple[list[Finding], list[str]]]] = {
+    "analysis": _analysis,
+    "duty cycle": _duty_of,
+    "V-H check": _vh,
+}
+
+#: the checks of each kind of result (module docstring)
+CHECKS: Mapping[str, tuple[str, ...]] = {
+    "analysis": ("implausible", "flank_pressure", "edge_contact", "plastic_edges",
+                 "certification", "friction_extrapolated", "scuffing", "micropitting",
+                 "rating"),
+    "duty cycle": ("damage", "safety", "static", "edge_contact", "certification",
+                   "bending", "illustrative"),
+    "V-H check": ("degenerate", "target", "map"),
+}
+
+
+def verdict(result: xr.DataTree | xr.Dataset) -> Verdict:
+    """The verdict of a result: its findings, worst first, and its overall severity.
+
+    Parameters
+    ----------
+    result : xarray.DataTree or xarray.Dataset
+        An analysis (the DataTree of :func:`contact.run_analysis` or of an ``ltca run``
+        file: ``/ltca``, ``/friction``, ``/rating`` are read where present), a duty cycle
+        (its ``/duty_cycle`` dataset, or a tree holding it) or a V-H check
+        (:func:`contact.study.vh_check`).
+
+    Returns
+    -------
+    Verdict
+        ``severity`` ``"pass"``, ``"attention"`` or ``"fail"``; ``findings`` with a
+        reason each (numbers in MPa, N m, mm, %); ``checks`` the checks that ran.
+
+    Raises
+    ------
+    InputError
+        A result of none of these kinds (the message says what is read).
+
+    Notes
+    -----
+    The checks, their severities and thresholds: module docstring. Tested on the default
+    case's analysis, duty cycle and V-H check and on synthetic datasets at each threshold
+    (tests/test_verdicts.py).
+    """
+    kind = _kind(result)
+    findings, checks = _KINDS[kind](result)
+    return Verdict(kind, _worst_first(findings), tuple(checks))

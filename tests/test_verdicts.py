@@ -1,0 +1,258 @@
+"""Verdicts (issue 56 item 4): findings with a severity from an analysis, a duty cycle and
+a V-H check.
+
+On real results: the default case's analysis (one mesh cycle of 6 rolls at 50 and
+500 N·m, ~1 s) must find the flank pressure above σ_Hlim at 500 N·m and the pattern
+reaching the heel with heel edge contact at 50 N·m (the issue's findings); its V-H check
+on a 3 × 3 grid about the mounting (~10 s) must find that its heel position is the nominal
+mounting itself. On synthetic datasets: each check at its threshold, just below and just
+above. The references are independent of the code under test: σ_Hlim, the static life
+factor and the minimum safety factors are read from the material table and the datasets
+with ``tomllib``/xarray, the edge shares summed against
+:func:`contact.ltca.summary.edge_load_share` (an existing, separately tested function).
+"""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from importlib import resources
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from contact.catalogue import resolve_case
+from contact.ltca import LTCAOptions
+from contact.ltca.summary import edge_load_share
+from contact.pipeline import run_analysis
+from contact.study.verdicts import SEVERITIES, Finding, Verdict, verdict
+from geometry.core.errors import InputError
+
+OPTS = LTCAOptions(rolls_per_cycle=6, cycles=1)
+MATERIAL = "case_carburised_steel"
+
+
+def _material() -> dict:
+    text = (resources.files("geometry.core") / "data" / "materials.toml").read_text("utf-8")
+    return tomllib.loads(text)[MATERIAL]
+
+
+def _sigma_hlim() -> tuple[float, float]:
+    """(σ_Hlim at MQ, static life factor Z_NT) from the material table itself."""
+    m = _material()
+    grades = m["allowable_stress"]["grades"]
+    return (m["allowable_stress"]["contact_allowable"][grades.index("MQ")],
+            m["sn_contact"]["static_life_factor"])
+
+
+@pytest.fixture(scope="module")
+def default_tree():
+    return run_analysis(resolve_case(None), [50.0, 500.0], options=OPTS, geometry=False,
+                        theoretical=False, mesh_interface=False)
+
+
+def test_the_default_case_is_flagged_for_its_flank_pressure_and_heel_contact(default_tree):
+    v = verdict(default_tree)
+    assert v.kind == "analysis" and v.severity == "attention"
+    lt = default_tree["ltca"].to_dataset()
+    sigma_hlim, _ = _sigma_hlim()
+    assert sigma_hlim == 1500.0
+    p500 = float(lt["pressure_max_flank"].sel(torque=500.0))
+    assert p500 > sigma_hlim  # 1.8 GPa (the issue)
+    flank = [f for f in v.findings if f.check == "flank_pressure"]
+    assert len(flank) == 1 and f"{p500:.0f} MPa at 500 N m" in flank[0].reason
+    assert "sigma_Hlim 1500 MPa" in flank[0].reason
+    edge = {f.reason.split(":")[0]: f for f in v.findings if f.check == "edge_contact"}
+    at50 = edge["at 50 N m"].reason
+    assert "reaches the gear's heel" in at50 and "gear heel" in at50
+    # the edge shares the finding names add up to the summary's edge share
+    share = float(edge_load_share(lt)[0])
+    assert f"edge contact carries {100 * share:.2f} % of the torque" in at50
+    # the pattern reaches the heel: loaded nodes on the grid's last u row at 50 N·m
+    env = lt["pressure_envelope"].sel(torque=50.0).transpose("u", "v").values
+    assert np.nan_to_num(env[-1]).max() > 0
+    lines = v.lines(limit=2)
+    assert lines[0] == f"VERDICT (analysis): ATTENTION, {len(v.findings)} findings"
+    assert lines[1].startswith("  attention: ") and lines[-1].startswith("  … and ")
+
+
+def _tree(**groups: xr.Dataset) -> xr.DataTree:
+    return xr.DataTree.from_dict({f"/{k}": ds for k, ds in groups.items()})
+
+
+def _ltca(p: list[float], **extra) -> xr.Dataset:
+    ds = xr.Dataset({"pressure_max_flank": ("torque", np.asarray(p, float))},
+                    coords={"torque": [50.0, 500.0][:len(p)]},
+                    attrs={"material_pinion": MATERIAL, "material_gear": MATERIAL,
+                           "edge_pressure_limit_MPa": 5262.0,
+                           "flank_pressure_limit_MPa": np.nan})
+    return ds.assign(extra)
+
+
+def test_flank_pressure_at_sigma_hlim_and_at_the_static_strength():
+    sigma_hlim, z_nt = _sigma_hlim()
+    static = sigma_hlim * z_nt  # 2400 MPa, below the 5262 MPa limit of the plausibility
+    just = 1e-6 * sigma_hlim
+    v = verdict(_tree(ltca=_ltca([sigma_hlim, sigma_hlim + just])))
+    assert [f.severity for f in v.findings] == ["attention"]
+    assert "at 500 N m" in v.findings[0].reason
+    v = verdict(_tree(ltca=_ltca([static, static + 1.0])))
+    assert [f.severity for f in v.findings] == ["fail", "attention"]
+    assert "static strength 2400 MPa" in v.findings[0].reason
+    assert verdict(_tree(ltca=_ltca([700.0, 1400.0]))).severity == "pass"
+
+
+def test_plastic_share_attention_up_to_the_plausibility_limit_then_fail():
+    def run(share: float) -> Verdict:
+        ds = _ltca([700.0], plastic_load_share=(("torque", "roll"), [[0.0, share]]))
+        return verdict(_tree(ltca=ds))
+
+    assert run(0.0).severity == "pass"
+    assert [f.check for f in run(0.05).findings] == ["plastic_edges"]
+    assert run(0.05).severity == "attention"
+    fail = run(0.0501)
+    assert fail.severity == "fail" and fail.findings[0].check == "implausible"
+    assert "plastic contact" in fail.findings[0].reason
+
+
+def test_edge_contact_and_boundaries_on_a_synthetic_mesh():
+    """Two segments, a curve and a gear-toe edge: the edge's Σ F·arm share, and the
+    pattern reaching the toe (first u row) and nothing else."""
+    force = np.zeros((1, 1, 1, 2))
+    force[0, 0, 0] = [3.0, 1.0]
+    arm = np.ones((1, 1, 2))
+    env = np.zeros((1, 3, 3))
+    env[0, 0, 1] = 900.0  # the toe row, mid height
+    ds = _ltca([700.0]).assign(
+        force=(("torque", "roll", "pair", "segment"), force),
+        moment_arm=(("roll", "pair", "segment"), arm),
+        pressure_envelope=(("torque", "u", "v"), env)).assign_coords(
+        segment_kind=("segment", ["curve", "gear_toe"]), u=[0.0, 0.5, 1.0],
+        v=[0.05, 0.5, 1.0])
+    (f,) = verdict(_tree(ltca=ds)).findings
+    assert f.severity == "attention" and f.check == "edge_contact"
+    assert f.reason == ("at 50 N m: the loaded pattern reaches the gear's toe; edge contact "
+                        "carries 25.00 % of the torque (gear toe 25.00 %)")
+    assert float(edge_load_share(ds)[0]) == pytest.approx(0.25)
+
+
+def test_uncertified_rolls_and_extrapolated_friction_want_attention():
+    lt = _ltca([700.0], found=(("torque", "roll"), [[1, 0, 1]]))
+    fr = xr.Dataset({"friction_model_extrapolated": (("torque", "roll"), [[0, 1, 0]])},
+                    coords={"torque": [50.0]},
+                    attrs={"friction_model": "kolivand2009", "model_range_by_contact":
+                           json.dumps({"flank": {"extrapolated": 1, "loaded": 9,
+                                                 "load_share": 0.012}})})
+    v = verdict(_tree(ltca=lt, friction=fr))
+    assert [f.check for f in v.findings] == ["certification", "friction_extrapolated"]
+    assert "1 of 3 at 50 N m" in v.findings[0].reason
+    assert "1 of 9 flank segments (1.2 % of the load)" in v.findings[1].reason
+    clean = fr.assign(friction_model_extrapolated=(("torque", "roll"), [[0, 0, 0]]))
+    assert [f.check for f in verdict(_tree(ltca=_ltca([700.0]), friction=clean)).findings] \
+        == []
+
+
+@pytest.mark.parametrize("name", ["scuffing_safety", "micropitting_safety"])
+def test_scuffing_and_micropitting_below_one_fail(name):
+    fr = xr.Dataset({name: ("torque", [1.0, 0.999, np.nan])}, coords={"torque": [1.0, 2, 3]})
+    v = verdict(_tree(ltca=_ltca([700.0]), friction=fr))
+    assert [(f.severity, f.check) for f in v.findings] == [("fail", name.split("_")[0])]
+    assert "0.999 at 2 N m below 1" in v.findings[0].reason
+
+
+def test_the_rating_group_joins_with_its_own_minimum_factors():
+    rt = xr.Dataset({"S_H": (("torque", "member"), [[1.2, 0.99]]),
+                     "S_F": (("torque", "member"), [[1.3, 1.31]]),
+                     "S_Hmin": ((), 1.0), "S_Fmin": ((), 1.3)},
+                    coords={"torque": [250.0], "member": ["pinion", "gear"]})
+    v = verdict(_tree(ltca=_ltca([700.0]), rating=rt))
+    assert v.severity == "fail" and "rating" in v.checks
+    assert [f.reason for f in v.findings] == [
+        "ISO 10300 pitting safety S_H 0.99 of the gear at 250 N m below S_Hmin 1"]
+
+
+def _duty(**over) -> xr.Dataset:
+    ds = xr.Dataset(
+        {"hours": ("bin", [1000.0, 1000.0]), "torque": ("bin", [250.0, 500.0]),
+         "damage": ("member", [0.5, 0.2]), "life": ("member", [4000.0, 1e4]),
+         "contact_safety_factor": ("member", [1.0, 1.0]),
+         "root_damage_max": ("member", [0.1, 0.1]), "root_life": ("member", [2e4, 2e4]),
+         "bending_safety_factor": ("member", [1.5, 1.5]),
+         "edge_load_share": ("bin", [0.0, 0.0]), "certified": (("bin", "torque1"),
+                                                               [[1], [1]])},
+        coords={"member": ["pinion", "gear"]}, attrs={"illustrative": 0})
+    for k, v in over.items():
+        if k in ds.attrs or k in ("illustrative", "contact_static_limit_exceeded"):
+            ds.attrs[k] = v
+        else:
+            ds[k] = (ds[k].dims, v)
+    return ds
+
+
+def test_duty_cycle_damage_fails_and_low_safety_wants_attention():
+    assert verdict(_duty()).severity == "pass"
+    v = verdict(_duty(damage=[1.0, 0.2], life=[2000.0, 1e4]))
+    assert v.kind == "duty cycle" and v.severity == "fail"
+    assert v.findings[0].reason.startswith("pinion: flank (pitting) damage 1 over the cycle")
+    v = verdict(_duty(contact_safety_factor=[0.83, 1.2]))
+    assert [(f.severity, f.check) for f in v.findings] == [("attention", "safety")]
+    assert "pinion: S_H 0.83 below 1" in v.findings[0].reason
+    v = verdict(_duty(illustrative=1, edge_load_share=[0.0, 0.045]))
+    assert {f.check for f in v.findings} == {"illustrative", "edge_contact"}
+    assert verdict(_duty(contact_static_limit_exceeded=1)).severity == "fail"
+    no_root = _duty().drop_vars(["root_life", "root_damage_max", "bending_safety_factor"])
+    assert [f.check for f in verdict(no_root).findings] == ["bending"]
+    tree = xr.DataTree.from_dict({"/duty_cycle": _duty(damage=[1.5, 0.1])})
+    assert verdict(tree).severity == "fail"
+
+
+def _vh(nominal_u: float, heel_vh=(0.2, 0.1), heel_u=0.75) -> xr.Dataset:
+    return xr.Dataset(
+        {"V": ("position", [0.3, -0.15, heel_vh[0]]),
+         "H": ("position", [-0.1, 0.12, heel_vh[1]]),
+         "target_u": ("position", [0.25, np.nan, 0.75]),
+         "pattern_centre_u": ("position", [0.25, nominal_u, heel_u]),
+         "grid_tolerance_u": ("position", [0.1, 0.1, 0.1])},
+        coords={"position": ["toe", "nominal", "heel"]}, attrs={"study": "vh-check"})
+
+
+def test_a_degenerate_vh_check_is_said():
+    assert verdict(_vh(0.5)).severity == "pass"
+    (f,) = verdict(_vh(0.731)).findings  # nominal within 0.02 of the heel target
+    assert f.check == "degenerate" and "heel position is the nominal mounting" in f.reason
+    (f,) = verdict(_vh(0.5, heel_vh=(-0.155, 0.125))).findings  # (V, H) within 0.01 mm
+    assert f.check == "degenerate"
+    (f,) = verdict(_vh(0.5, heel_u=0.6)).findings  # missed by more than the grid's 0.1
+    assert f.check == "target" and "0.600 against 0.75" in f.reason
+
+
+def test_the_default_vh_check_finds_its_heel_at_the_nominal_mounting():
+    """The issue: the default design's V-H check puts its 'heel' at the nominal mounting
+    (centre u 0.743 against 0.75) and said nothing about it."""
+    from contact.study import StudyRun, vh_check
+
+    case = resolve_case(None)
+    e, p = case.misalignment.delta_E, case.misalignment.delta_P
+    ds = vh_check(case, torque=50.0, delta_E=[e - 0.4, e, e + 0.4],
+                  delta_P=[p - 0.3, p, p + 0.3],
+                  run=StudyRun(options=LTCAOptions(rolls_per_cycle=8),
+                               scheduler="synchronous"))
+    nominal_u = float(ds["pattern_centre_u"].sel(position="nominal"))
+    assert abs(nominal_u - 0.75) <= 0.02
+    v = verdict(ds)
+    assert v.kind == "V-H check" and v.severity == "attention"
+    assert any(f.check == "degenerate" and f.reason.startswith("the heel position")
+               for f in v.findings)
+
+
+def test_what_is_no_result_is_refused():
+    with pytest.raises(InputError, match="neither a V-H check"):
+        verdict(xr.Dataset())
+    with pytest.raises(InputError, match="DataTree or Dataset"):
+        verdict({"ltca": None})
+    with pytest.raises(InputError, match="without /easeoff"):
+        verdict(xr.DataTree())
+    with pytest.raises(InputError, match="severity"):
+        Finding("pass", "x", "y")
+    assert SEVERITIES == ("pass", "attention", "fail")
