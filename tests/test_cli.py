@@ -92,7 +92,10 @@ def test_geometry_commands(tmp_path, capsys, case):
             assert int(ds["mask"].sum()) > 0.8 * 45  # most grid points generated
     assert main(["plot-geometry", case, "-o", str(tmp_path / "png"), "--nu", "9", "--nv", "5"]) == 0
     pngs = {p.name for p in (tmp_path / "png").glob("*.png")}
-    assert "flanks_in_mesh.png" in pngs and "grid_gear_convex.png" in pngs
+    from contact.catalogue import resolve_case
+
+    name = resolve_case(case).name  # the figures carry the case's name
+    assert f"{name}_flanks_in_mesh.png" in pngs and f"{name}_grid_gear_convex.png" in pngs
     if "fh_" in case:
         # the face-hobbed file records its process; the meshing residual of every generated
         # point of the generated pinion is at the solver's tolerance (1e-12 normalised)
@@ -137,8 +140,9 @@ def test_run_prints_the_deviation_te_table_of_the_file(tmp_path, capsys):
     # the deviations change the result (the table is not two copies of one run)
     assert abs(rows["deviated"][2] - rows["theoretical"][2]) > 1.0  # LTE mean, urad
     # named after the case (issue 38: the runs of one directory keep their own figures)
-    pngs = {p.name.removeprefix("kolivand2009_fm_11x41_wear_")
-            for p in (tmp_path / "png").glob("kolivand2009_fm_11x41_wear_*.png")}
+    # and their torques (issue 56): <case>_T<torques>_<figure>.png
+    pngs = {p.name.removeprefix("kolivand2009_fm_11x41_wear_").split("_", 1)[1]
+            for p in (tmp_path / "png").glob("kolivand2009_fm_11x41_wear_T*.png")}
     # theoretical and deviated side by side (UTE and LTE in one figure, pressure on one
     # scale); the deviated pattern is the run's own contact_pattern.png
     assert {"deviations_easeoff_change.png", "deviations_transmission_error.png",

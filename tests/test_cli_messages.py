@@ -145,10 +145,20 @@ def test_nan_in_a_deviation_file_names_file_row_and_column(tmp_path):
 # --- 3. file names --------------------------------------------------------------------
 
 def test_figure_files_carry_the_case_name():
-    from contact.plots.analysis import figure_prefix
+    from contact.plots.analysis import figure_prefix, torque_tag
 
     tree = xr.DataTree(xr.Dataset(attrs={"case": "kolivand2009_fh_12x41"}))
     assert figure_prefix(tree) == "kolivand2009_fh_12x41_"
+    # what the figures show: the loaded analysis's torques, the unloaded kind, the flank
+    loaded = xr.DataTree.from_dict({
+        "/": xr.Dataset(attrs={"case": "c", "inputs": '[pair]\ndrive_flank = "concave"\n'}),
+        "ltca": xr.Dataset(coords={"torque": [50.0, 250.0, 500.0]},
+                           attrs={"pinion_flank": "concave"})})
+    assert figure_prefix(loaded) == "c_T50-250-500_"
+    loaded["ltca"].attrs["pinion_flank"] = "convex"
+    assert figure_prefix(loaded) == "c_T50-250-500_coast_"
+    assert figure_prefix(xr.Dataset(attrs={"case": "c"}), "unloaded") == "c_unloaded_"
+    assert torque_tag([12.5]) == "T12.5" and torque_tag(range(10, 110, 10)) == "T10-100x10"
 
 
 def test_efficiency_maps_of_one_case_over_other_inputs_do_not_overwrite():

@@ -265,7 +265,8 @@ def test_pipeline_with_deviations_side_by_side(tmp_path):
     # and the re-shift: asserted < 16.5 µm (measured 11.0)
     assert 5.0 < float(np.nanmax(change) - np.nanmin(change)) < 16.5  # um
     assert main(["plot", str(out), "--plots", str(tmp_path / "png")]) == 0
-    assert (tmp_path / "png" / "kolivand2009_fm_11x41_deviations_easeoff_change.png").exists()
+    # named for the case and the torques (<case>_T<torques>_<figure>.png, issue 56)
+    assert list((tmp_path / "png").glob("kolivand2009_fm_11x41_T*_deviations_easeoff_change.png"))
 
 
 # --------------------------------------------------------------------- netCDF and dispatch

@@ -205,7 +205,10 @@ def test_whole_analysis_round_trip_and_plot_from_file(tmp_path):
     assert "transmission_error" in back["ltca"].dataset
     # `ltca plot` on a file from another run redraws everything from the file alone
     assert main(["plot", str(path), "--plots", str(tmp_path / "png")]) == 0
-    prefix = f"{back.attrs['case']}_"  # figures named after the case (issue 38)
+    from contact.plots.analysis import figure_prefix
+
+    prefix = figure_prefix(back)  # named after the case (issue 38) and the torques (56)
+    assert prefix.startswith(f"{back.attrs['case']}_T")
     pngs = sorted(p.name.removeprefix(prefix) for p in (tmp_path / "png").glob("*.png"))
     assert "transmission_error.png" in pngs and "easeoff.png" in pngs
     assert "friction_flank.png" in pngs and "friction_efficiency.png" in pngs

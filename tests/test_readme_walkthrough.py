@@ -20,6 +20,7 @@ order, and checks that the slow ones parse.
 
 from __future__ import annotations
 
+import hashlib
 import re
 import shlex
 
@@ -85,16 +86,42 @@ def test_every_command_is_reduced_and_parses():
         assert args.command == argv[0]
 
 
+def _contents(directory) -> dict:
+    """Every file under ``directory`` → the SHA-256 of its bytes."""
+    return {p.relative_to(directory): hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in directory.rglob("*") if p.is_file()}
+
+
 def _run_all(commands, tmp_path, monkeypatch, capsys):
+    """Run ``commands`` in order in ``tmp_path``; no command may replace a file an earlier
+    one wrote with different content (issue 56: figure names carry what they show, so
+    e.g. `ltca utca --plots figs` keeps the loaded figures of `ltca plot … --plots figs`)."""
     monkeypatch.chdir(tmp_path)
+    written: dict = {}  # file → (its content, the command that wrote it)
     for argv in commands:
         code = main([*argv, *REDUCED[argv[0]], "-q"])
         out = capsys.readouterr()
         assert code == 0, f"ltca {' '.join(argv)}: {out.err}"
+        for path, digest in _contents(tmp_path).items():
+            before = written.get(path)
+            assert before is None or before[0] == digest, (
+                f"`ltca {' '.join(argv)}` overwrote {path}, written by `ltca {before[1]}`, "
+                "with different content")
+            if before is None:
+                written[path] = (digest, " ".join(argv))
+    return written
 
 
 def test_walkthrough_runs_from_a_scratch_directory(tmp_path, monkeypatch, capsys):
-    _run_all([a for a in COMMANDS if a[0] not in SLOW], tmp_path, monkeypatch, capsys)
+    written = _run_all([a for a in COMMANDS if a[0] not in SLOW], tmp_path, monkeypatch,
+                       capsys)
+    # the loaded figures of the default run and the unloaded ones of `ltca utca` side by
+    # side, each command's under its own name
+    figures = {p.name for p in written if p.parent.name == "figs"}
+    case = "kolivand2009_fm_11x41_reference"
+    for name in ("contact_pattern", "transmission_error"):
+        assert f"{case}_T50_{name}.png" in figures and f"{case}_unloaded_{name}.png" in figures
+    assert f"{case}_mesh_interface_T50.png" in figures  # the command's, beside plot's
     # outputs named after the case, so `ltca plot` redrew the default run
     assert (tmp_path / "kolivand2009_fm_11x41_reference.nc").is_file()
     assert (tmp_path / "kolivand2009_table54_B_fh.nc").is_file()

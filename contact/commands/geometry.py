@@ -122,9 +122,12 @@ def run_plot_geometry(args: argparse.Namespace) -> int:
         for m in ("pinion", "gear")
         for f in ("concave", "convex")
     }
-    written = [plot_flanks_in_mesh(case, surfaces.values(), out / "flanks_in_mesh.png")]
+    # named for the case: the plots of several cases can share a directory
+    written = [plot_flanks_in_mesh(case, surfaces.values(),
+                                   out / f"{case.name}_flanks_in_mesh.png")]
     for (m, f), s in surfaces.items():
-        written.append(plot_projection_grid(s, case.member(m).blank, out / f"grid_{m}_{f}.png"))
+        written.append(plot_projection_grid(s, case.member(m).blank,
+                                            out / f"{case.name}_grid_{m}_{f}.png"))
     for w in written:
         print(f"wrote {w}")
     return 0

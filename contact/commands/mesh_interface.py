@@ -87,9 +87,13 @@ def run(args: argparse.Namespace) -> int:
     print(f"wrote {path} ({mesh.sizes['torque'] * mesh.sizes['roll']} rows; columns "
           "documented in its # lines)")
     if args.plots:
+        from contact.plots.analysis import torque_tag
         from contact.plots.dynamics import mesh_interface_figure
         from contact.plots.style import save_png
 
-        target = Path(args.plots) / f"{case.name}_mesh_interface.png"
+        # named for the command and its torques: apart from the analysis's own
+        # mesh_interface figure (<case>_T<torques>_mesh_interface.png, ltca run / plot)
+        target = (Path(args.plots)
+                  / f"{case.name}_mesh_interface_{torque_tag(mesh['torque'].values)}.png")
         print(f"wrote {save_png(mesh_interface_figure(mesh, tree['ltca'].to_dataset()), target)}")
     return 0

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
 
+import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
@@ -71,6 +72,7 @@ __all__ = [
     "plot_utca",
     "render_analysis",
     "render_figures",
+    "torque_tag",
 ]
 
 
@@ -333,18 +335,80 @@ def _write(figures, directory: str | os.PathLike[str], prefix: str = "") -> list
     return [save_png(nf.figure, d / f"{prefix}{nf.name}.png") for nf in figures]
 
 
-def figure_prefix(tree_or_ds: xr.DataTree | xr.Dataset) -> str:
-    """``"<case>_"``: the start of every figure file of an analysis, so the figures of
-    several runs written into one directory (the README's walk-through) do not overwrite
-    each other; empty where the data name no case."""
+#: the most torques a figure name lists one by one (more: first-last and the count)
+_TAGGED_TORQUES = 4
+
+
+def torque_tag(torques) -> str:
+    """``"T50-250-500"``: the torque set [N·m] in a figure's name (``"T50-500x8"`` for more
+    than four torques: first, last and their number); empty for no torques."""
+    t = [float(x) for x in np.atleast_1d(np.asarray(torques, dtype=float))]
+    if not t:
+        return ""
+    if len(t) > _TAGGED_TORQUES:
+        return f"T{t[0]:g}-{t[-1]:g}x{len(t)}"
+    return "T" + "-".join(f"{x:g}" for x in t)
+
+
+def _coast(tree: xr.DataTree) -> bool:
+    """Whether an analysis ran on the flank opposite the case's drive flank (the case as
+    run is the tree's ``inputs`` attribute; ``[pair] drive_flank``, concave by default)."""
+    import tomllib
+
+    pinion = None
+    for group in ("ltca", "easeoff"):
+        if group in tree.children:
+            pinion = tree[group].attrs.get("pinion_flank")
+            break
+    try:
+        pair = tomllib.loads(str(tree.attrs.get("inputs", ""))).get("pair", {})
+    except tomllib.TOMLDecodeError:
+        return False
+    drive = pair.get("drive_flank", "concave") if isinstance(pair, dict) else "concave"
+    return pinion is not None and pinion != drive
+
+
+def figure_prefix(tree_or_ds: xr.DataTree | xr.Dataset, kind: str | None = None) -> str:
+    """The start of every figure file of a result: what the figures show, so that the
+    figures of several commands written into one directory (the walk-through,
+    docs/walkthrough.md) never share a name with different content.
+
+    Parameters
+    ----------
+    tree_or_ds : xarray.DataTree or xarray.Dataset
+        An analysis tree (``ltca run``, ``ltca plot``), or a dataset with a ``case``
+        attribute (an efficiency map, a UTCA).
+    kind : str, optional
+        What the figures are, placed after the case (``"unloaded"`` for the UTCA's).
+
+    Returns
+    -------
+    str
+        ``"<case>_T<torques>_"`` for a loaded analysis (:func:`torque_tag` of its
+        ``/ltca`` torques; ``"<case>_T…_coast_"`` on the coast flank),
+        ``"<case>_<kind>_"`` with ``kind``, ``"<case>_T<torques>_"`` for a dataset with a
+        ``torque`` coordinate, ``"<case>_"`` otherwise; empty where the data name no case.
+    """
     case = tree_or_ds.attrs.get("case", "")
-    return f"{case}_" if case else ""
+    if not case:
+        return ""
+    parts = [case]
+    if kind:
+        parts.append(kind)
+    elif isinstance(tree_or_ds, xr.DataTree) and "ltca" in tree_or_ds.children:
+        parts.append(torque_tag(tree_or_ds["ltca"]["torque"].values))
+        if _coast(tree_or_ds):
+            parts.append("coast")
+    elif "torque" in tree_or_ds.coords:
+        parts.append(torque_tag(tree_or_ds["torque"].values))
+    return "_".join(p for p in parts if p) + "_"
 
 
 def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
                   workers: int = 1, progress: bool = False) -> list[Path]:
     """Write every figure of an analysis (:func:`analysis_figures`) as PNG into ``directory``
-    (created if missing), each named ``<case>_<figure>.png`` (:func:`figure_prefix`), and
+    (created if missing), each named ``<case>_T<torques>_<figure>.png``
+    (:func:`figure_prefix`), and
     return the paths; ``workers`` processes draw them (``progress``: a tqdm bar over the
     figures).
 
@@ -367,7 +431,8 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
 def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
               directory: str | os.PathLike[str]) -> list[Path]:
     """The unloaded figures (ease-off topography and contour, pattern, UTE) into
-    ``directory`` (created if missing).
+    ``directory`` (created if missing), each named ``<case>_unloaded_<figure>.png``
+    (:func:`figure_prefix`: apart from the loaded analysis's figures).
 
     Returns
     -------
@@ -377,7 +442,8 @@ def plot_utca(easeoff: xr.Dataset, utca: xr.Dataset,
             NamedFigure("easeoff", "", easeoff_contour_figure(easeoff)),
             NamedFigure("contact_pattern", "", contact_pattern_figure(easeoff, utca)),
             NamedFigure("transmission_error", "", transmission_error_figure(utca, None))]
-    return _write(figs, directory, figure_prefix(utca) or figure_prefix(easeoff))
+    data = utca if utca.attrs.get("case") else easeoff
+    return _write(figs, directory, figure_prefix(data, "unloaded"))
 
 
 def efficiency_map_figures(emap: xr.Dataset) -> Iterator[NamedFigure]:

@@ -3,11 +3,12 @@
 Run from the repository root, after ``apt-get install -y chromium``::
 
     python -m contact run --plots figs --report docs/figures/default/report.html
-    for f in figs/kolivand2009_fm_11x41_reference_*.png; do
-        mv "$f" "docs/figures/default/${f#figs/kolivand2009_fm_11x41_reference_}"; done
+    for f in figs/kolivand2009_fm_11x41_reference_T50-250-500_*.png; do
+        mv "$f" "docs/figures/default/${f#figs/kolivand2009_fm_11x41_reference_T50-250-500_}"; done
     python docs/figures/report_screenshot.py
 
-(``--plots`` names the figures after the case; the README links them without it.)
+(``--plots`` names the figures after the case and the torques; the docs link them without
+them.)
 
 renders ``docs/figures/default/report.html`` in headless Chromium (a tall window at half
 scale, so the whole page is one image) and writes ``docs/figures/report_screenshot.png``,
