@@ -379,8 +379,12 @@ def test_missing_nu40_refused():
 
 
 def test_case_without_design_table_refused():
+    from geometry.case import case_from_dict
+
+    raw = tomllib.loads((ROOT / "cases" / "iso10300_30_sample1.toml").read_text("utf-8"))
+    del raw["design"]
     with pytest.raises(InputError, match=r"^design: .*\[design\] table"):
-        iso10300_rating("hypoid_iso23509_s2", rating=_sample1_table())
+        iso10300_rating(case_from_dict(raw))
 
 
 def _case_file(tmp_path: Path, old: str, new: str) -> Path:

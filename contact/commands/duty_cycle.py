@@ -19,6 +19,7 @@ from contact.commands.options import (
     solver_option,
 )
 from contact.commands.output_paths import check_output_file
+from contact.commands.study import study_progress
 
 #: Place in ``ltca --help``.
 ORDER = 16
@@ -66,6 +67,47 @@ def _fmt(x: float, spec: str) -> str:
     return "inf" if math.isinf(x) else format(x, spec)
 
 
+def safety_lines(ds) -> list[str]:
+    """The lines ``ltca duty-cycle`` prints on its safety factors per bin: the local ones
+    (σ_Hlim over the bin's peak flank pressure, σ_FE over its peak fillet stress) beside
+    the ISO 10300 rating's S_H, S_F at the bin's torque and speed, pinion / gear; or the
+    line saying why the rating is absent.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The ``/duty_cycle`` dataset (:func:`contact.study.duty_cycle.run_duty_cycle`).
+
+    Returns
+    -------
+    list of str
+    """
+    from tabulate import tabulate
+
+    if "local_contact_safety" not in ds:
+        return []
+    iso = "iso_contact_safety" in ds
+    bending = "local_bending_safety" in ds
+
+    def pair(name: str, i: int) -> str:
+        if name not in ds:
+            return "-"
+        return " / ".join(_fmt(float(v), ".2f") for v in ds[name].values[i])
+
+    rows = [(i, f"{float(ds['torque'].values[i]):g}", f"{float(ds['speed'].values[i]):g}",
+             pair("local_contact_safety", i), pair("iso_contact_safety", i),
+             pair("local_bending_safety", i), pair("iso_bending_safety", i))
+            for i in range(ds.sizes["bin"])]
+    lines = ["safety factors per bin, pinion / gear: local (sigma_Hlim / peak flank "
+             "pressure, sigma_FE / peak fillet stress) beside the ISO 10300 rating's"
+             + ("" if bending else " (no local S_F: --no-root-stress)") + ":",
+             tabulate(rows, headers=["bin", "T [N m]", "n [rpm]", "S_H local", "S_H ISO",
+                                     "S_F local", "S_F ISO"], tablefmt="github")]
+    lines.append(f"ISO rating: {ds.attrs.get('iso_rating', '')}" if iso
+                 else str(ds.attrs.get("iso_rating", "")))
+    return lines
+
+
 def run(args: argparse.Namespace) -> int:
     import xarray as xr
     from tabulate import tabulate
@@ -93,7 +135,7 @@ def run(args: argparse.Namespace) -> int:
         duty = example_duty_cycle(max_torque=max(case.operating.torque or (500.0,)))
     ds = run_duty_cycle(case, duty, StudyRun(
         options=ltca_options(args), flank=args.flank, output=output,
-        scheduler=args.scheduler, n_workers=args.workers, progress=not args.no_progress),
+        scheduler=args.scheduler, n_workers=args.workers, progress=study_progress(args)),
         root_stress=args.root_stress)
     print(f"case {case.name}: {duty.name}, {duty.n_bins} bins, {duty.hours.sum():g} h, "
           f"grade {duty.grade}, Miner {duty.miner_rule}")
@@ -128,6 +170,8 @@ def run(args: argparse.Namespace) -> int:
         print(line)
     if "root_life" not in ds:
         print(f"bending side {ds.attrs['bending']}")
+    for line in safety_lines(ds):
+        print(line)
     from contact.commands.run import print_verdict
 
     print_verdict(ds)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import logging
 import math
 import os
 from pathlib import Path
@@ -32,7 +33,10 @@ from contact.commands.options import (
 from contact.commands.output_paths import check_output_dir
 
 __all__ = ["TE_TABLE_HEADERS", "deviation_te_rows", "durability_lines", "misalignment_from_args",
-           "plot", "print_verdict", "register", "root_stress_rows", "run", "write_figures"]
+           "plot", "print_verdict", "rating_lines", "register", "root_stress_rows", "run",
+           "run_rating", "standard_scuffing", "write_figures"]
+
+log = logging.getLogger(__name__)
 
 #: Place in ``ltca --help``.
 ORDER = 10
@@ -82,6 +86,11 @@ def register(sub) -> None:
                    help="write the one-page HTML report (as `ltca report`) to HTML")
     root_stress_option(p, "the tooth-root stress of both members from FE influence "
                           "coefficients, in the summary, the file and the report")
+    p.add_argument("--rating", action=argparse.BooleanOptionalAction, default=True,
+                   help="the ISO 10300 Method B1 rating of the case (its [design] and "
+                   "[rating] tables) at the run's torques and speed, stored as /rating and "
+                   "printed beside the LTCA's peak flank pressure and root stress (on by "
+                   "default: analytic, < 0.5 s; docs/rating.md); --no-rating leaves it out")
     progress_option(p)
     p.set_defaults(func=run)
 
@@ -192,6 +201,7 @@ def run(args: argparse.Namespace) -> int:
     output = checked_outputs(args, more={"--report": args.report})
     case, mis = case_and_misalignment(args)
     opts = ltca_options(args)
+    rating, rating_why = run_rating(args, case)  # refuses a bad [rating] before the work
     devs = None  # the case's [deviations] table, if any
     if args.no_deviations:
         devs = False
@@ -212,6 +222,8 @@ def run(args: argparse.Namespace) -> int:
         progress=not args.no_progress,
         root_stress=args.root_stress,
     )
+    if rating is not None:
+        tree["rating"] = rating
     lt = tree["ltca"].to_dataset()
     print(
         f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
@@ -266,7 +278,7 @@ def run(args: argparse.Namespace) -> int:
             f"friction model {fr.attrs['friction_model']}"
         )
         print_extrapolation_warning(fr)
-        for line in durability_lines(fr):
+        for line in durability_lines(fr, standard_scuffing(tree, fr)):
             print(line)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     print(plastic_note(lt))
@@ -279,6 +291,8 @@ def run(args: argparse.Namespace) -> int:
                                                       "u"], tablefmt="github"))
         print("the FE model's peak fillet stress is mesh-converged within 5 % (docs/fe.md, "
               "Mesh convergence)")
+    for line in rating_lines(tree, rating_why):
+        print(line)
     if "theoretical" in tree.children:
         print(
             "transmission error of the theoretical and deviated surfaces "
@@ -293,6 +307,72 @@ def run(args: argparse.Namespace) -> int:
     print_plausibility_warnings(lt, case, mis)
     print_verdict(tree)
     return 0
+
+
+def run_rating(args: argparse.Namespace, case):
+    """The ISO 10300 rating of ``ltca run``'s case at its torques, speed and flank
+    (:func:`contact.rating.analysis_rating`), or None and the line that says why not
+    (``--no-rating``, no ``[design]`` or ``[rating]`` table, no speed); a bad table is
+    refused (InputError)."""
+    if not args.rating:
+        return None, "ISO 10300 rating not computed (--no-rating)"
+    from contact.rating import analysis_rating
+
+    torque = case.operating.torque if args.torque is None else args.torque
+    speed = case.operating.pinion_speed if args.speed is None else args.speed
+    return analysis_rating(case, torque, speed, args.flank)
+
+
+def rating_lines(tree, why: str = "") -> list[str]:
+    """The lines ``ltca run`` prints on the ISO 10300 rating: per torque and member the
+    rating's σ_H0, σ_H beside the LTCA's peak flank pressure, σ_F0, σ_F beside the FE peak
+    root stress, with their ratios (:func:`contact.rating.rating_beside_ltca`), and the
+    safety factors; or the one line ``why`` for an analysis without ``/rating``.
+
+    Parameters
+    ----------
+    tree : xarray.DataTree
+        The analysis (``/ltca``, optionally ``/rating``).
+    why : str
+        Why the rating is absent (printed when it is).
+
+    Returns
+    -------
+    list of str
+    """
+    if "rating" not in tree.children:
+        return [why] if why else []
+    from tabulate import tabulate
+
+    from contact.rating import rating_beside_ltca
+
+    ds = tree["rating"].to_dataset()
+    side = rating_beside_ltca(ds, tree["ltca"].to_dataset())
+    rows = []
+    for i, t in enumerate(side["torque"].values):
+        one = side.isel(torque=i)
+        for member in side["member"].values:
+            m = one.sel(member=member)
+            rows.append((f"{t:g}", str(member), f"{float(m['sigma_H0']):.0f}",
+                         f"{float(m['sigma_H']):.0f}", f"{float(m['pressure_max_flank']):.0f}",
+                         f"{float(m['pressure_to_sigma_H']):.2f}",
+                         f"{float(m['sigma_F0']):.0f}", f"{float(m['sigma_F']):.0f}",
+                         _number(float(m["root_stress_max"]), 0),
+                         _number(float(m["root_stress_to_sigma_F"]))))
+    s_h = ds["S_H"].min("member").values
+    s_f = ds["S_F"].values
+    lines = [f"ISO 10300 Method B1 rating beside the LTCA ({ds.attrs.get('side', '')} side, "
+             f"n1 {float(ds['pinion_speed']):g} rpm, K_A {float(ds['K_A']):g}; /rating, "
+             "docs/rating.md) [MPa]:",
+             tabulate(rows, headers=["T_p [N m]", "member", "sigma_H0", "sigma_H",
+                                     "p_max flank", "p_max/sigma_H", "sigma_F0", "sigma_F",
+                                     "FE root", "FE/sigma_F"], tablefmt="github"),
+             "ISO safety factors: " + "; ".join(
+                 f"{t:g} N m S_H {s_h[i]:.2f}, S_F {s_f[i, 0]:.2f} / {s_f[i, 1]:.2f}"
+                 for i, t in enumerate(ds["torque"].values))
+             + f" (pinion / gear; S_H,min {float(ds['S_Hmin']):g}, S_F,min "
+               f"{float(ds['S_Fmin']):g}); ltca rate prints every factor"]
+    return lines
 
 
 def plastic_summary(ltca, i: int) -> str:
@@ -383,17 +463,40 @@ def root_stress_rows(ltca) -> list[tuple[str, ...]]:
     return rows
 
 
-def durability_lines(friction) -> list[str]:
+def standard_scuffing(tree, friction):
+    """The standard's flash-temperature method on the virtual cylindrical gears of the
+    tree's ``/rating`` group, at the efficiency stage's oil, temperature and roughness
+    (:func:`friction.iso_flash_temperature.iso_flash_temperature_method`), or None where the
+    tree has no ``/rating`` or the method cannot be applied (the reason logged)."""
+    if friction is None or "rating" not in tree.children:
+        return None
+    from friction.iso_flash_temperature import iso_flash_temperature_method
+    from geometry.core.errors import InputError
+
+    try:
+        return iso_flash_temperature_method(
+            tree["rating"].to_dataset(), lubricant=str(friction.attrs["lubricant"]),
+            oil_temperature=float(friction.attrs["inlet_temperature_degC"]),
+            roughness=float(friction.attrs["roughness_rq_um"]))
+    except (InputError, KeyError) as exc:
+        log.info("the standard's flash temperature method not applied: %s", exc)
+        return None
+
+
+def durability_lines(friction, standard=None) -> list[str]:
     """The lines `ltca run` prints on scuffing and micropitting: one per torque with the
     peak contact temperature of the flanks (its flash part), the scuffing safety S_B and
-    the least specific film thickness λ_GF (and S_λ where the oil gives λ_GFP), then the
-    oil's scuffing temperature and why a safety is missing where it is (none for a file
-    that predates the variables).
+    the least specific film thickness λ_GF (and S_λ where the oil gives λ_GFP), each
+    followed by the standard's peak contact temperature and S_B on the virtual cylindrical
+    gears where ``standard`` gives that torque, then the oil's scuffing temperature and
+    why a safety is missing where it is (none for a file that predates the variables).
 
     Parameters
     ----------
     friction : xarray.Dataset
         The ``/friction`` dataset (:func:`friction.efficiency.efficiency_analysis`).
+    standard : xarray.Dataset, optional
+        The standard's method (:func:`standard_scuffing`) for comparison.
 
     Returns
     -------
@@ -413,6 +516,14 @@ def durability_lines(friction) -> list[str]:
             f"S_B {_number(s_b)}, least lambda_GF "
             f"{float(friction['specific_film_thickness_min'].values[i]):.3f}"
             + (f", S_lambda {s_l:.2f}" if math.isfinite(s_l) else ""))
+        if standard is not None and t in standard["torque"].values:
+            iso = standard.sel(torque=t)
+            lines.append(
+                f"  the standard's flash temperature method on the virtual cylindrical gears "
+                f"(ISO/TS 6336-20): {float(iso['contact_temperature_max']):.0f} degC (flash "
+                f"{float(iso['flash_temperature_max']):.0f} K, mu_m "
+                f"{float(iso['mean_friction_coefficient']):.3f}), S_B "
+                f"{_number(float(iso['scuffing_safety']))}")
     if math.isfinite(theta_s):
         lines.append(f"scuffing temperature of the oil {theta_s:.0f} degC (FZG load stage "
                      f"{friction.attrs.get('fzg_load_stage', float('nan')):g}); temperatures "
@@ -425,8 +536,8 @@ def durability_lines(friction) -> list[str]:
     return lines
 
 
-def _number(value: float) -> str:
-    return f"{value:.2f}" if math.isfinite(value) else "-"
+def _number(value: float, decimals: int = 2) -> str:
+    return f"{value:.{decimals}f}" if math.isfinite(value) else "-"
 
 
 def print_extrapolation_warning(friction) -> None:

@@ -155,6 +155,9 @@ ABSENT = {
     "ltca": "loaded TCA (LTE, pressure, load sharing, the summary table)",
     "friction": "efficiency stage (efficiency, power loss, friction on the flank): "
                 "run without it (ltca run --speed 0) or written before it existed",
+    "rating": "ISO 10300 Method B1 rating beside the LTCA (σ_H, σ_F, safety factors): "
+              "the case has no [design] or [rating] table, the run had --no-rating or no "
+              "speed, or the file was written before it existed (docs/rating.md)",
 }
 
 
@@ -224,6 +227,38 @@ def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None) -> dict | None:
     return {"columns": [(c.heading, c.unit) for c in DURABILITY_COLUMNS], "rows": rows,
             "oil": oil, "notes": notes,
             "source": str(fr.attrs.get("durability_source", ""))}
+
+
+def _rating(tree: xr.DataTree, lt: xr.Dataset | None) -> dict | None:
+    """The table "Standard rating beside the LTCA": per torque and member the ISO 10300
+    σ_H0, σ_H, the LTCA's peak flank pressure and its ratio to σ_H, σ_F0, σ_F, the FE peak
+    root stress and its ratio to σ_F, the safety factors (:func:`contact.rating.
+    rating_beside_ltca`); None where the file has no ``/rating``."""
+    ra = _group(tree, "rating")
+    if ra is None or lt is None:
+        return None
+    from contact.rating import rating_beside_ltca
+
+    side = rating_beside_ltca(ra, lt)
+    keys = (("sigma_H0", 0), ("sigma_H", 0), ("pressure_max_flank", 0),
+            ("pressure_to_sigma_H", 2), ("sigma_F0", 0), ("sigma_F", 0),
+            ("root_stress_max", 0), ("root_stress_to_sigma_F", 2))
+    rows = []
+    for i, t in enumerate(side["torque"].values):
+        for member in side["member"].values:
+            one = side.isel(torque=i).sel(member=member)
+            rows.append({"torque": f"{t:g}", "member": str(member),
+                         "cells": [{"key": k, **_cell(one[k].values, d)} for k, d in keys]
+                         + [{"key": s, **_cell(ra[s].isel(torque=i).sel(member=member)
+                                               .values, 2)} for s in ("S_H", "S_F")]})
+    return {"rows": rows,
+            "method": (f"ISO 10300-1/-2/-3:2014 Method B1, {ra.attrs.get('side', '')} side, "
+                       f"n1 {_num(ra['pinion_speed'].values):g} rpm, K_A "
+                       f"{_num(ra['K_A'].values):g}, K_v {_num(ra['K_v'].values[0]):.3f} "
+                       f"(first torque), K_Hβ {_num(ra['K_Hbeta'].values):.3f}, S_H,min "
+                       f"{_num(ra['S_Hmin'].values):g}, S_F,min "
+                       f"{_num(ra['S_Fmin'].values):g}"),
+            "root_stress": "root_stress_max" in lt}
 
 
 def _basic_data(inputs_text: str) -> dict | None:
@@ -353,7 +388,8 @@ def report_context(tree: xr.DataTree,
         ``provenance``, ``operating``, ``misalignment``, ``columns`` and ``summary`` (the
         table of :data:`SUMMARY_COLUMNS`), ``te_table``, ``solver``, ``absent``,
         ``durability`` (the scuffing and micropitting table, None for a file without
-        it), ``figures``, ``warnings`` (the efficiency stage's model-range warnings),
+        it), ``rating`` (the ISO 10300 rating beside the LTCA, None for a file without
+        ``/rating``), ``figures``, ``warnings`` (the efficiency stage's model-range warnings),
         ``plausibility`` (:func:`contact.ltca.plausibility.plausibility_warnings`: the
         causes for which the loaded contact should not be trusted), ``versions``.
 
@@ -368,7 +404,8 @@ def report_context(tree: xr.DataTree,
     lt, fr, ut = _group(tree, "ltca"), _group(tree, "friction"), _group(tree, "utca")
     case, inputs_text = _inputs(tree)
     name = tree.attrs.get("case") or eo.attrs.get("case") or case.get("name", "unnamed case")
-    present = {"utca": ut is not None, "ltca": lt is not None, "friction": fr is not None}
+    present = {"utca": ut is not None, "ltca": lt is not None, "friction": fr is not None,
+               "rating": "rating" in tree.children}
     absent = [{"group": f"/{g}", "gives": ABSENT[g]} for g, ok in present.items() if not ok]
     if figures is None:
         figures = render_figures(analysis_figures(tree))
@@ -401,6 +438,7 @@ def report_context(tree: xr.DataTree,
         "basic_data": _basic_data(inputs_text),
         "te_table": _te_table(tree),
         "durability": _durability(lt, fr),
+        "rating": _rating(tree, lt),
         "solver": _solver(lt) if lt is not None else None,
         "absent": absent,
         "figures": figs,

@@ -319,6 +319,41 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
     return out
 
 
+def _iso_rating(shared: DutyInputs, ds: xr.Dataset, members: list[str]
+                ) -> tuple[dict[str, Any], str]:
+    """Per bin the local safety factors (σ_Hlim over the bin's peak flank pressure, σ_FE
+    over its peak fillet stress) beside the ISO 10300 rating's S_H, S_F at the bin's torque
+    and speed (:func:`contact.rating.bin_ratings`), and the line that says where the rating
+    comes from or why it is absent (a bad [rating] table does not lose the bins' work: it
+    is said there)."""
+    from contact.rating import bin_ratings
+
+    duty, case = shared.duty, shared.case
+    curves = [sn_curves(case.member(m).material, duty.grade) for m in members]
+    bm = ("bin", "member")
+    p = np.asarray(ds["pressure_max_flank"].values, float)
+    out = {"local_contact_safety": data_var(bm, np.stack(
+        [c["contact"].allowable / p for c in curves], -1), "1",
+        "sigma_Hlim / peak flank contact pressure of the bin (life factor 1)")}
+    if "root_stress_peak" in ds:
+        peak = np.asarray(ds["root_stress_peak"].values, float).max(axis=-1)  # bin, member
+        out["local_bending_safety"] = data_var(bm, np.stack(
+            [c["bending"].allowable for c in curves])[None, :] / np.maximum(peak, 1e-300),
+            "1", "sigma_FE / peak tensile fillet stress of the bin (life factor 1)")
+    try:
+        iso, why = bin_ratings(case, duty.torque, duty.speed, shared.flank)
+    except InputError as exc:
+        iso, why = None, f"ISO 10300 rating not computed: {exc}"
+    if iso is None:
+        return out, why
+    for name, var in (("iso_contact_stress", "sigma_H"), ("iso_root_stress", "sigma_F"),
+                      ("iso_contact_safety", "S_H"), ("iso_bending_safety", "S_F")):
+        out[name] = iso[var].variable
+    return out, (f"ISO 10300-1/-2/-3:2014 Method B1 at each bin's torque and speed "
+                 f"({iso.attrs.get('side', '')} side; the case's [rating] table, "
+                 "docs/rating.md)")
+
+
 def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
     """The ``/duty_cycle`` dataset from the bins' analyses (what :func:`run_duty_cycle`
     returns after running them).
@@ -413,6 +448,8 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
         out["bending_safety_factor"] = data_var(("member",), np.array(
             [dur[f"bending_safety_{m}"] for m in members]), "1",
             "sigma_FE / peak tensile fillet stress of the peak-torque bin")
+    iso, iso_note = _iso_rating(shared, ds, members)
+    out.update(iso)
     out = out.assign_coords(bin=("bin", np.arange(duty.n_bins),
                                  {"units": "1", "long_name": "duty-cycle bin"}),
                             harmonic=("harmonic", np.arange(1, 4),
@@ -439,6 +476,7 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
         "flank_damage_location": "both members' flank damage is placed at the gear's "
                                  "contact-grid point (u, v) in contact",
         "peak_bin": dur["peak_bin"],
+        "iso_rating": iso_note,
         "bins_resumed": int(ds.attrs.get("bins_resumed", 0)),
         "solver": shared.options.solver,
         "flank": shared.flank or "drive",
@@ -511,7 +549,7 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
 
         coefficients = tuple(prepare_coefficients(
             case, run.flank, None if root_stress is True else root_stress,
-            progress=run.progress).values())
+            progress=run.progress is True).values())  # a bar on a terminal only
     shared = DutyInputs(case, duty, run.options or LTCAOptions(), run.flank, root_stress,
                         coefficients)
     return duty_cycle_result(shared, _bins(shared, run))
