@@ -113,8 +113,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     args.quiet = args.quiet or getattr(args, "quiet_sub", False)
     if args.quiet and args.verbose:
         parser.error("-q/--quiet and -v/--verbose exclude each other")
-    if hasattr(args, "no_progress") and (args.quiet or not sys.stderr.isatty()):
-        args.no_progress = True  # progress bars only on a terminal, and not with -q
+    if hasattr(args, "no_progress"):
+        # the studies' progress (contact.study.progress): a bar on a terminal, plain
+        # periodic lines anywhere else (a file, a pipe), none with -q or --no-progress;
+        # every other progress bar only on a terminal
+        terminal = sys.stderr.isatty()
+        args.no_progress = args.no_progress or args.quiet
+        args.progress = False if args.no_progress else (True if terminal else "lines")
+        args.no_progress = args.no_progress or not terminal
     level = ([logging.WARNING, logging.INFO, logging.DEBUG][min(args.verbose, 2)]
              if not args.quiet else logging.ERROR)
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")

@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 
 from contact.commands.options import count, progress_option
+from contact.commands.study import study_progress
 
 #: Place in ``ltca --help``.
 ORDER = 61
@@ -129,7 +130,7 @@ def run(args: argparse.Namespace) -> int:
     check_design(design, lubricant=settings.lubricant)  # every condition in the oil's range
     ds = run_friction_study(design, settings, design_attrs=attrs, output=args.output,
                             scheduler=args.scheduler, n_workers=args.workers,
-                            progress=not args.no_progress)
+                            progress=study_progress(args))
     inputs = " ".join(f"{k}={v}" for k, v in sorted(vars(args).items()) if k != "func")
     path = write_netcdf(ds, args.output, inputs=inputs)
     ResultStore.remove_parts(args.output)

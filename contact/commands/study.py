@@ -57,6 +57,14 @@ _INPUT_OPTIONS = {
 }
 
 
+def study_progress(args: argparse.Namespace) -> bool | str:
+    """A study command's ``progress``: True (a bar: standard error is a terminal),
+    ``"lines"`` (plain periodic lines: it is not) or False (``-q``, ``--no-progress``), as
+    :func:`contact.cli.main` decided (:mod:`contact.study.progress`); for arguments that
+    did not pass through it, a bar unless ``--no-progress``."""
+    return getattr(args, "progress", not getattr(args, "no_progress", False))
+
+
 def parse_range(option: str, text: str) -> np.ndarray:
     """Values of ``START:STOP:N``, ``X`` or ``X,Y,…`` (InputError naming ``option``)."""
     import numpy as np
@@ -210,7 +218,7 @@ def _prepare(args: argparse.Namespace) -> tuple:
         kw["compliance"] = args.compliance
     run = StudyRun(options=LTCAOptions(**kw), flank=args.flank, output=out,
                    scheduler=args.scheduler, n_workers=args.workers,
-                   progress=not args.no_progress,
+                   progress=study_progress(args),
                    root_stress=bool(getattr(args, "root_stress", True)),
                    force=bool(getattr(args, "force", False)))
     return case, run

@@ -69,9 +69,9 @@ from geometry import __version__
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 
-__all__ = ["SYNCHRONOUS", "WORKER_ENVIRON_UNSET", "analyse_point", "check_plausible_points",
-           "open_client", "run_points", "run_tasks", "stream_tasks", "worker_environment",
-           "write_study"]
+__all__ = ["CLOSE_TIMEOUT", "SYNCHRONOUS", "WORKER_ENVIRON_UNSET", "analyse_point",
+           "check_plausible_points", "close_local_cluster", "open_client", "run_points",
+           "run_tasks", "stream_tasks", "worker_environment", "write_study"]
 
 log = logging.getLogger(__name__)
 
@@ -279,17 +279,28 @@ def open_client(scheduler: Any = None, n_workers: int | None = None) -> Iterator
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
             raise InputError(f"n_workers: must be an integer >= 1, got {n_workers!r}")
         with _workers_ignore_sigint(), worker_environment():
+            # no dashboard, and the scheduler's HTTP server (health, metrics) on a free
+            # port: not 8787, which another cluster on the machine may hold (a warning)
             cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                   dashboard_address=None, silence_logs=logging.ERROR)
+                                   dashboard_address=None, silence_logs=logging.ERROR,
+                                   scheduler_kwargs={"dashboard_address": ":0"})
         quiet = _QuietDistributed()
-        with quiet, cluster, Client(cluster) as client:
+        with quiet:
+            client = Client(cluster)
+            finished = False
             try:
                 yield client
+                finished = True
             except KeyboardInterrupt:
                 # Ctrl-C: the workers ignore it (they would each print a traceback); the
                 # cluster closes them, killing those still busy: not worth a warning each
                 quiet.on()
                 raise
+            finally:
+                # a finished study's idle workers get time to stop by themselves; after
+                # an error or an interrupt the busy ones are killed at once, as before
+                close_local_cluster(client, cluster,
+                                    CLOSE_TIMEOUT if finished else _ABORT_TIMEOUT)
         return
     if not isinstance(scheduler, str) or "://" not in scheduler:
         raise InputError(f"scheduler: must be None (a local cluster), 'synchronous', a "
@@ -350,8 +361,9 @@ def run_points(
         ``OUTPUT.parts/set-aside/`` and its points computed again.
     scheduler, n_workers
         Where to run (:func:`open_client`): default a LocalCluster, one process per core.
-    progress : bool
-        tqdm progress bar on the client.
+    progress : bool or {"lines"}
+        A tqdm bar (True) or plain periodic lines (``"lines"``) on the client
+        (:func:`stream_tasks`).
     kind : str
         What the study is (recorded in the title): ``"sweep"``, ``"sample"`` …
     chunk_size : int
@@ -401,7 +413,8 @@ def run_points(
 
         coefficients = prepare_coefficients(
             shared.case, shared.flank,
-            None if shared.root_stress is True else shared.root_stress, progress=progress)
+            None if shared.root_stress is True else shared.root_stress,
+            progress=progress is True)  # a bar on a terminal only: no lines of its own
         shared = dataclasses.replace(shared, coefficients=tuple(coefficients.values()))
     store = None
     done: set[int] = set()
@@ -422,7 +435,8 @@ def run_points(
     kept = stream_tasks(
         analyse_point, shared, [(i, pts[i]) for i in todo],
         lambda res: _point_dataset(shared, names, res.index, pts[res.index], res),
-        store=store, progress=progress, desc=kind, unit="point", total=len(pts),
+        store=store, progress=progress, desc=_PROGRESS_NAMES.get(kind, kind), unit="point",
+        total=len(pts),
         initial=len(done), scheduler=scheduler, n_workers=n_workers)
     if store is not None:
         ds = store.combined()
@@ -534,6 +548,59 @@ def _chunk_spec(shared: StudyInputs, names: Sequence[str],
                      check=dims_of_study)
 
 
+#: a study kind → its name in the progress lines
+_PROGRESS_NAMES = {"sample": "tolerance"}
+
+#: how long [s] a local cluster's closing waits for the client, then for each worker to
+#: stop by itself before it is killed (distributed's own wait is 4 s, too short on a
+#: loaded machine: "Worker process still alive after 4.0 seconds, killing")
+CLOSE_TIMEOUT = 30.0
+#: the same after an error or an interrupt (distributed's default: busy workers killed)
+_ABORT_TIMEOUT = 5.0
+
+
+def close_local_cluster(client: Any, cluster: Any, timeout: float = CLOSE_TIMEOUT) -> None:
+    """Close a study's client, then its local cluster's workers and the cluster, quietly.
+
+    Parameters
+    ----------
+    client : distributed.Client
+    cluster : distributed.LocalCluster
+    timeout : float — [s]
+        The wait for the client and for each worker to stop by itself (its nanny kills it
+        after 0.8 of it); default :data:`CLOSE_TIMEOUT`.
+
+    Notes
+    -----
+    The client first (it holds no tasks after the study), then every worker's nanny with
+    ``timeout`` — distributed's cluster closes them with 5 s, killing a worker still
+    tearing down after 4 s with a warning each — then the cluster, whose workers are
+    gone by then. A worker that does not stop within ``timeout`` is still killed (its
+    warning is distributed's). Errors while closing are logged at debug level: the
+    study's result is already in hand.
+    """
+    import asyncio
+
+    try:
+        client.close(timeout=timeout)
+    except Exception as exc:  # closing: the result is in hand
+        log.debug("closing the study's client: %s", exc)
+
+    async def stop_workers() -> None:
+        await asyncio.gather(*(w.close(timeout=timeout) for w in list(
+            cluster.workers.values())), return_exceptions=True)
+
+    try:
+        if cluster.workers:
+            cluster.sync(stop_workers)
+    except Exception as exc:
+        log.debug("stopping the local cluster's workers: %s", exc)
+    try:
+        cluster.close(timeout=timeout)
+    except Exception as exc:
+        log.debug("closing the local cluster: %s", exc)
+
+
 def stream_tasks(function: Any, shared: Any, items: Sequence[tuple],
                  to_dataset: Callable[[Any], xr.Dataset], *, store: ResultStore | None,
                  progress: bool, desc: str, unit: str, total: int, initial: int = 0,
@@ -549,8 +616,10 @@ def stream_tasks(function: Any, shared: Any, items: Sequence[tuple],
     store : contact.study.store.ResultStore or None
         Where each dataset goes (flushed at the end, also on an interrupt or error);
         None: the datasets are returned.
-    progress : bool
-        A progress bar (``desc``, ``unit``) over ``total`` tasks, ``initial`` done before.
+    progress : bool or {"lines"}
+        A progress bar (True) or plain periodic lines (``"lines"``, for output that is not
+        a terminal) over ``total`` tasks, ``initial`` done before, named ``desc`` and
+        counted in ``unit`` (:func:`contact.study.progress.progress_reporter`).
 
     Returns
     -------
@@ -561,12 +630,10 @@ def stream_tasks(function: Any, shared: Any, items: Sequence[tuple],
     ------
     As :func:`run_tasks` (an interrupted study keeps what its store was given).
     """
-    kept: list[xr.Dataset] = []
-    bar = None
-    if progress:
-        from tqdm.auto import tqdm
+    from contact.study.progress import progress_reporter
 
-        bar = tqdm(total=total, initial=initial, desc=desc, unit=unit)
+    kept: list[xr.Dataset] = []
+    bar = progress_reporter(progress, total, initial=initial, desc=desc, unit=unit)
     try:
         for res in run_tasks(function, shared, items, scheduler=scheduler,
                              n_workers=n_workers):

@@ -142,7 +142,7 @@ def run_friction_study(
     output: str | os.PathLike[str] | None = None,
     scheduler: Any = None,
     n_workers: int | None = None,
-    progress: bool = False,
+    progress: bool | str = False,
     chunk_size: int = 8,
 ) -> xr.Dataset:
     """Solve every point of a friction-study design on Dask; one dataset over ``point``.
@@ -166,8 +166,9 @@ def run_friction_study(
     scheduler, n_workers
         Where to run (:func:`contact.study.engine.open_client`): None a LocalCluster of
         ``n_workers`` processes, ``"synchronous"`` this process, an address a cluster.
-    progress : bool
-        tqdm progress bar.
+    progress : bool or {"lines"}
+        A tqdm bar (True) or plain periodic lines (``"lines"``,
+        :mod:`contact.study.progress`).
     chunk_size : int
         Points per chunk file.
 

@@ -48,8 +48,9 @@ class StudyRun:
         address (``tcp://…``) or a client an existing cluster.
     n_workers : int, optional
         Workers of the LocalCluster (default one per core).
-    progress : bool
-        A progress bar over the points.
+    progress : bool or {"lines"}
+        A progress bar over the points (True), or plain periodic lines for output that is
+        not a terminal (``"lines"``: :mod:`contact.study.progress`). Default False.
     root_stress : bool or contact.compliance.fe.FEOptions
         Also the peak tooth-root stress of both members at every point
         (``root_stress_max`` over (point…, torque, member) [MPa]; :func:`contact.run_analysis`'s
@@ -63,7 +64,8 @@ class StudyRun:
     Raises
     ------
     InputError
-        ``options``, ``operating`` or ``root_stress`` of the wrong type (named).
+        ``options``, ``operating``, ``progress`` or ``root_stress`` of the wrong type
+        (named).
     """
 
     options: LTCAOptions | None = None
@@ -72,11 +74,13 @@ class StudyRun:
     output: str | os.PathLike[str] | None = None
     scheduler: Any = None
     n_workers: int | None = None
-    progress: bool = False
+    progress: bool | str = False
     root_stress: Any = False
     force: bool = False
 
     def __post_init__(self) -> None:
+        if not (isinstance(self.progress, bool) or self.progress == "lines"):
+            raise InputError(f"progress: must be True, False or 'lines', got {self.progress!r}")
         if self.options is not None and not isinstance(self.options, LTCAOptions):
             raise InputError("options: must be a contact.ltca.LTCAOptions or None, got "
                              f"{type(self.options).__name__}")
