@@ -24,6 +24,7 @@ import xarray as xr
 from contact import catalogue
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.ltca.summary import edge_load_share
+from contact.qp.solvers import solver_name
 from contact.utca import unloaded_tca
 from contact.utca.conjugate_map import flank_nodes
 from contact.utca.easeoff import ease_off
@@ -246,7 +247,7 @@ def _point_as_run(c: Case, torques, operating: OperatingConditions | None):
     else:
         kw.update(pinion_speed=operating.pinion_speed, lubricant=os.fspath(operating.lubricant),
                   temperature=operating.temperature, roughness=operating.roughness,
-                  friction_model=operating.friction_model)
+                  friction_model=operating.friction_model_name)
     return dataclasses.replace(c.operating, **kw)
 
 
@@ -443,7 +444,7 @@ def run_analysis(
             "case": c.name,
             "case_source": c.source,
             "toolkit_version": __version__,
-            "solver": opts.solver,
+            "solver": solver_name(opts.solver),
             **misalignment_attrs(c.misalignment),
             **{f"time_{k}_s": v for k, v in times.items()},
         }

@@ -23,6 +23,13 @@ Each model validates its inputs (:class:`InputError` naming the field), warns wi
 and never returns NaN: where a formula breaks down the value is clipped and the warning
 says so.
 
+The registry is open: :func:`register_friction_model` adds a user's model under a name
+(checked as the bundled models are: keyword inputs, required ones from the vocabulary),
+installed plug-ins add theirs through the entry-point group :data:`ENTRY_POINT_GROUP`, and
+wherever a model is chosen by name a :class:`FrictionModel` or a plain model function is
+accepted too (docs/extending.md). The default model's name is
+:data:`friction.defaults.DEFAULT_FRICTION_MODEL`.
+
 ``kolivand2009`` is the seed's Eq. 5.11 *derived again*: its structure fitted to the
 toolkit's mixed-EHL solver over Table 5.1's conditions (:mod:`friction.kolivand2009`,
 :mod:`friction.study`). The seed's own Table 5.3 reading of Eq. 5.11,
@@ -32,7 +39,6 @@ toolkit's mixed-EHL solver over Table 5.1's conditions (:mod:`friction.kolivand2
 
 from __future__ import annotations
 
-import inspect
 import logging
 import math
 import warnings
@@ -44,26 +50,41 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from friction.defaults import DEFAULT_FRICTION_MODEL
 from friction.kolivand2009 import kolivand2009, kolivand2009_validity
 from friction.mixed_ehl import mixed_ehl, mixed_ehl_validity
 from friction.validity import FrictionModelRangeWarning
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.registries import (
+    callable_name,
+    check_model_name,
+    entry_point_objects,
+    keyword_parameters,
+)
 from geometry.core.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
+    "DEFAULT_FRICTION_MODEL",
+    "ENTRY_POINT_GROUP",
     "MU_CAP",
     "STANDARD_INPUTS",
     "UNAVAILABLE_MODELS",
     "XU2007_COEFFICIENTS",
     "FrictionModel",
+    "FrictionModelLike",
     "FrictionModelRangeWarning",
+    "as_friction_model",
     "available_friction_models",
     "benedict_kelley",
     "constant",
     "friction_coefficient",
+    "friction_model_name",
     "friction_model_validity",
     "get_friction_model",
+    "register_friction_model",
     "unavailable_friction_models",
+    "unregister_friction_model",
     "xu2007",
 ]
 
@@ -456,9 +477,23 @@ class FrictionModel:
 
 def _register(name: str, function: Callable[..., Any], source: str,
               validity: Callable[..., Any]) -> FrictionModel:
-    params = inspect.signature(function).parameters.values()
-    required = tuple(p.name for p in params if p.default is inspect.Parameter.empty)
-    optional = tuple(p.name for p in params if p.default is not inspect.Parameter.empty)
+    """A :class:`FrictionModel` of a function, after the checks every model passes, bundled
+    or not: a callable whose inputs are passed by keyword (no ``*args``, ``**kwargs`` or
+    positional-only parameters), whose required inputs are names of
+    :data:`STANDARD_INPUTS` (the only ones the efficiency stage can give), and a validity
+    function taking the same inputs by keyword."""
+    required, optional, _ = keyword_parameters("function", function, var_keyword=False)
+    outside = sorted(set(required) - set(STANDARD_INPUTS))
+    if outside:
+        raise InputError(
+            f"function: {callable_name(function)} requires {outside}, which are not inputs "
+            f"of the vocabulary {sorted(STANDARD_INPUTS)}; give them defaults (model "
+            "parameters) or use the vocabulary's names")
+    v_required, _, v_any = keyword_parameters("validity", validity)
+    if not v_any and set(v_required) - set(required) - set(optional):
+        raise InputError(f"validity: {callable_name(validity)} requires "
+                         f"{sorted(set(v_required) - set(required) - set(optional))}, which "
+                         "the model does not take")
     return FrictionModel(name, function, required, optional, source, validity)
 
 
@@ -539,19 +574,52 @@ UNAVAILABLE_MODELS: Mapping[str, str] = MappingProxyType(
 )
 
 
+#: what may stand where a friction model is chosen: a name, a FrictionModel, a function
+FrictionModelLike = str | FrictionModel | Callable[..., Any]
+
+#: the entry-point group in which an installed distribution advertises friction models:
+#: each entry is a :class:`FrictionModel` or a model function (registered under the entry's
+#: name), so that ``ltca run --friction-model NAME`` finds it
+ENTRY_POINT_GROUP = "hypoid_ltca.friction_models"
+
+#: models registered in this process by :func:`register_friction_model` (not a cache:
+#: ``clear_caches`` keeps them)
+_USER: dict[str, FrictionModel] = {}
+
+
+@memoised(maxsize=None)
+def _plugins() -> dict[str, FrictionModel]:
+    """The models of the installed plug-ins (:data:`ENTRY_POINT_GROUP`)."""
+    out = {}
+    for name, obj in entry_point_objects(ENTRY_POINT_GROUP).items():
+        if name in _MODELS or name in UNAVAILABLE_MODELS:
+            log.warning("entry point %s of group %s shadows a bundled friction model: left "
+                        "out", name, ENTRY_POINT_GROUP)
+            continue
+        try:
+            out[name] = (obj if isinstance(obj, FrictionModel)
+                         else _register(name, obj, f"plug-in {name}", _always_valid))
+        except InputError as exc:
+            log.warning("entry point %s of group %s is not a friction model: %s", name,
+                        ENTRY_POINT_GROUP, exc)
+    return out
+
+
 def available_friction_models() -> tuple[str, ...]:
     """Names of the friction models that can be evaluated.
 
     Returns
     -------
     tuple of str
-        Sorted names, e.g. ``("benedict_kelley", "constant", "mixed_ehl", "xu2007")``.
+        Sorted names: the bundled models (``"benedict_kelley"``, ``"constant"``,
+        ``"kolivand2009"``, ``"mixed_ehl"``, ``"xu2007"``), the installed plug-ins' and
+        those registered with :func:`register_friction_model`.
 
     Notes
     -----
     Source: the registry of this module; each model's docstring gives its reference.
     """
-    return tuple(sorted(_MODELS))
+    return tuple(sorted({*_MODELS, *_plugins(), *_USER}))
 
 
 def unavailable_friction_models() -> Mapping[str, str]:
@@ -569,13 +637,124 @@ def unavailable_friction_models() -> Mapping[str, str]:
     return UNAVAILABLE_MODELS
 
 
-def get_friction_model(name: str) -> FrictionModel:
-    """Return the registered friction model ``name``.
+def as_friction_model(function: Callable[..., Any], *, name: str | None = None,
+                      validity: Callable[..., Any] | None = None, source: str = ""
+                      ) -> FrictionModel:
+    """A :class:`FrictionModel` of a model function, checked as the bundled models are.
+
+    Parameters
+    ----------
+    function : callable
+        ``mu = function(*, <inputs>)``: keyword inputs from :data:`STANDARD_INPUTS` (units
+        there; those without a default are required) and model parameters with defaults;
+        returns μ [1], float or an array broadcasting with the inputs, finite.
+    name : str, optional
+        The name the model is recorded by (default the function's ``__name__``).
+    validity : callable, optional
+        Keyword function of the same inputs returning True where they lie in the model's
+        range (default: everywhere).
+    source : str
+        The reference the model implements.
+
+    Returns
+    -------
+    FrictionModel
+
+    Raises
+    ------
+    InputError
+        Not callable, ``*args``/``**kwargs``/positional-only parameters, a required input
+        outside the vocabulary, or a validity function needing inputs the model does not
+        take (the message names them).
+    """
+    label = check_model_name("name", name if name is not None else callable_name(function))
+    return _register(label, function, source or f"user function {label}",
+                     _always_valid if validity is None else validity)
+
+
+def register_friction_model(name: str, function: Callable[..., Any] | FrictionModel, *,
+                            validity: Callable[..., Any] | None = None, source: str = "",
+                            replace: bool = False) -> FrictionModel:
+    """Register a user's friction-coefficient model under ``name`` for this process.
+
+    After it, ``name`` is a model like the bundled ones: ``OperatingConditions(
+    friction_model=name)``, :func:`friction_coefficient`, ``run_analysis`` and the studies
+    of this process. For ``ltca run --friction-model NAME`` and a cluster's workers,
+    advertise it in the entry-point group :data:`ENTRY_POINT_GROUP` of an installed
+    package instead (docs/extending.md).
 
     Parameters
     ----------
     name : str
-        One of :func:`available_friction_models`.
+        Registry name (no spaces); not a bundled or known-unavailable model's.
+    function : callable or FrictionModel
+        The model function (:func:`as_friction_model` gives the checks), or a ready
+        :class:`FrictionModel` (registered under ``name``).
+    validity : callable, optional
+        As :func:`as_friction_model`.
+    source : str
+        The reference the model implements (listed with the model).
+    replace : bool
+        Allow replacing a model registered earlier under ``name`` (default False).
+
+    Returns
+    -------
+    FrictionModel
+
+    Raises
+    ------
+    InputError
+        A bad name or function (:func:`as_friction_model`), a bundled name, or a name
+        taken without ``replace``.
+    """
+    check_model_name("name", name)
+    if name in _MODELS or name in UNAVAILABLE_MODELS:
+        raise InputError(f"name: {name!r} is a bundled friction model; register under "
+                         "another name")
+    if (name in _USER or name in _plugins()) and not replace:
+        raise InputError(f"name: a friction model {name!r} is registered already; pass "
+                         "replace=True to replace it or choose another name")
+    if isinstance(function, FrictionModel):
+        model = _register(name, function.function, source or function.source,
+                          function.validity if validity is None else validity)
+    else:
+        model = as_friction_model(function, name=name, validity=validity, source=source)
+    _USER[name] = model
+    return model
+
+
+def unregister_friction_model(name: str) -> None:
+    """Remove a model registered with :func:`register_friction_model`.
+
+    Raises
+    ------
+    InputError
+        ``name`` was not registered with :func:`register_friction_model`.
+    """
+    if name not in _USER:
+        raise InputError(f"name: {name!r} was not registered with register_friction_model "
+                         f"(registered: {sorted(_USER)})")
+    del _USER[name]
+
+
+def friction_model_name(model: FrictionModelLike) -> str:
+    """The name a model is recorded by (the ``friction_model`` attribute of results): the
+    name itself, the FrictionModel's, or the function's ``__name__``."""
+    if isinstance(model, str):
+        return model
+    if isinstance(model, FrictionModel):
+        return model.name
+    return callable_name(model)
+
+
+def get_friction_model(name: FrictionModelLike) -> FrictionModel:
+    """Return the registered friction model ``name``.
+
+    Parameters
+    ----------
+    name : str, FrictionModel or callable
+        One of :func:`available_friction_models`; a FrictionModel is returned as it is and
+        a model function is checked and wrapped (:func:`as_friction_model`).
 
     Returns
     -------
@@ -587,18 +766,28 @@ def get_friction_model(name: str) -> FrictionModel:
     ModelUnavailableError
         ``name`` is unavailable (the message quotes the reason) or unknown (the message
         lists the available names).
+    InputError
+        A model function that fails the checks of :func:`as_friction_model`.
 
     Notes
     -----
     Source: registry pattern of the toolkit's STYLE (qpsolvers-like).
     """
-    if name in _MODELS:
-        return _MODELS[name]
+    if isinstance(name, FrictionModel):
+        return name
+    if not isinstance(name, str):
+        return as_friction_model(name)
+    for registry in (_MODELS, _USER):
+        if name in registry:
+            return registry[name]
     if name in UNAVAILABLE_MODELS:
         raise ModelUnavailableError(
             f"friction model {name!r} is unavailable: {UNAVAILABLE_MODELS[name]}"
             f" (available: {available_friction_models()})"
         )
+    plugins = _plugins()
+    if name in plugins:
+        return plugins[name]
     raise ModelUnavailableError(
         f"unknown friction model {name!r}; available: {available_friction_models()};"
         f" known but unavailable: {tuple(sorted(UNAVAILABLE_MODELS))}"
@@ -629,13 +818,13 @@ def _evaluate(model: FrictionModel, inputs: Mapping[str, Any]) -> NDArray[np.flo
     return scalar_or_array(out)
 
 
-def friction_coefficient(name: str, **inputs: Any) -> NDArray[np.float64] | float:
+def friction_coefficient(name: FrictionModelLike, **inputs: Any) -> NDArray[np.float64] | float:
     """Friction coefficient μ of the model ``name`` for the given segment inputs.
 
     Parameters
     ----------
-    name : str
-        One of :func:`available_friction_models`.
+    name : str, FrictionModel or callable
+        One of :func:`available_friction_models`, or a model (:func:`get_friction_model`).
     **inputs : float or array
         Keyword inputs from :data:`STANDARD_INPUTS` (units there) plus the model's own
         parameters (e.g. ``value`` for ``constant``). Inputs a model does not use are
@@ -666,13 +855,13 @@ def friction_coefficient(name: str, **inputs: Any) -> NDArray[np.float64] | floa
     return _evaluate(get_friction_model(name), inputs)
 
 
-def friction_model_validity(name: str, **inputs: Any) -> NDArray[np.bool_]:
+def friction_model_validity(name: FrictionModelLike, **inputs: Any) -> NDArray[np.bool_]:
     """Which points lie inside the declared validity range of the friction model ``name``.
 
     Parameters
     ----------
-    name : str
-        One of :func:`available_friction_models`.
+    name : str, FrictionModel or callable
+        One of :func:`available_friction_models`, or a model (:func:`get_friction_model`).
     **inputs : float or array
         As :func:`friction_coefficient` (the same call's keyword inputs).
 

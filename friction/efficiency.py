@@ -742,7 +742,7 @@ def _friction_dataset(
         "lubricant": oil.name,
         "inlet_temperature_degC": op.temperature,
         "roughness_rq_um": op.roughness,
-        "friction_model": op.friction_model,
+        "friction_model": op.friction_model_name,
         "inlet_viscosity_Pa_s": oil.viscosity,
         "pressure_viscosity_1_per_GPa": oil.pressure_viscosity,
         "model_range_warnings": json.dumps(fric.range_warnings),

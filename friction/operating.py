@@ -23,7 +23,8 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-from friction.coefficient import get_friction_model
+from friction.coefficient import FrictionModelLike, friction_model_name, get_friction_model
+from friction.defaults import DEFAULT_FRICTION_MODEL
 from friction.lubricant import available_lubricants
 from geometry.case import OPERATING_DEFAULTS, OperatingPoint
 from geometry.core.errors import InputError, ModelUnavailableError
@@ -58,13 +59,17 @@ class OperatingConditions:
         RMS roughness Rq of each flank, finite and > 0 (composite σ = √2 Rq, seed §5.2.3).
         Default 0.8 µm, the seed's operating roughness (§5.3) and inside the fitted
         0.1–1 µm of ``kolivand2009`` and ``xu2007``.
-    friction_model : str
+    friction_model : str, friction.coefficient.FrictionModel or callable
         A registered friction coefficient model
-        (:func:`friction.coefficient.available_friction_models`). Default
-        ``"kolivand2009"``: the seed's Eq. 5.11 method — its mixed-EHL line-contact study
-        and a fitted μ formula — done again with the toolkit's solver (docs/friction.md,
-        "Which model is the default"); ``"xu2007"`` (Xu et al. 2007's published regression
-        of the same methodology) was the default before.
+        (:func:`friction.coefficient.available_friction_models`), or a model of one's own
+        (a FrictionModel, or a model function, checked and wrapped by
+        :func:`friction.coefficient.as_friction_model`; results record its name,
+        :attr:`friction_model_name`). Default
+        :data:`friction.defaults.DEFAULT_FRICTION_MODEL`, ``"kolivand2009"``: the seed's
+        Eq. 5.11 method — its mixed-EHL line-contact study and a fitted μ formula — done
+        again with the toolkit's solver (docs/friction.md, "Which model is the default");
+        ``"xu2007"`` (Xu et al. 2007's published regression of the same methodology) was
+        the default before.
 
     Raises
     ------
@@ -86,12 +91,13 @@ class OperatingConditions:
     lubricant: str | os.PathLike[str] = OPERATING_DEFAULTS["lubricant"]
     temperature: float = OPERATING_DEFAULTS["temperature"]
     roughness: float = OPERATING_DEFAULTS["roughness"]
-    friction_model: str = OPERATING_DEFAULTS["friction_model"]
+    friction_model: FrictionModelLike = DEFAULT_FRICTION_MODEL
 
     @classmethod
     def from_point(cls, point: OperatingPoint, **override) -> OperatingConditions:
         """The conditions of a case's operating point (:attr:`geometry.case.Case.operating`,
-        its ``[operating]`` table), fields of ``override`` replacing its values.
+        its ``[operating]`` table), fields of ``override`` replacing its values (a field
+        neither gives — a case without ``friction_model`` — takes the default).
 
         Raises
         ------
@@ -103,7 +109,7 @@ class OperatingConditions:
               "temperature": point.temperature, "roughness": point.roughness,
               "friction_model": point.friction_model}
         kw.update({k: v for k, v in override.items() if v is not None})
-        return cls(**kw)
+        return cls(**{k: v for k, v in kw.items() if v is not None})
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
@@ -121,10 +127,20 @@ class OperatingConditions:
             raise ModelUnavailableError(f"lubricant: must be one of the bundled oils "
                                         f"{list(bundled)} or an existing oil TOML file, got "
                                         f"{str(oil)!r}")
-        if not isinstance(self.friction_model, str):
-            raise InputError("friction_model: must be the name of a friction model, got "
-                             f"{self.friction_model!r}")
+        model = self.friction_model
+        if not (isinstance(model, str) or callable(model)):
+            raise InputError("friction_model: must be the name of a friction model, a "
+                             f"FrictionModel or a model function, got {model!r}")
         try:
-            get_friction_model(self.friction_model)
+            resolved = get_friction_model(model)
         except ModelUnavailableError as exc:  # the message lists the available models
             raise ModelUnavailableError(f"friction_model: {exc}") from None
+        except InputError as exc:  # a function failing the registry's checks
+            raise InputError(f"friction_model: {exc}") from None
+        if not isinstance(model, str):
+            set_(self, "friction_model", resolved)
+
+    @property
+    def friction_model_name(self) -> str:
+        """The friction model's name, as results record it (``friction_model`` attribute)."""
+        return friction_model_name(self.friction_model)

@@ -115,9 +115,11 @@ class OperatingPoint:
         Oil inlet temperature, finite and above absolute zero. Default 90.
     roughness : float — [µm]
         RMS roughness Rq of each flank, finite and > 0. Default 0.8.
-    friction_model : str
-        Friction coefficient model name (checked where the efficiency stage runs).
-        Default ``"kolivand2009"``.
+    friction_model : str or None
+        Friction coefficient model name (checked where the efficiency stage runs). Default
+        None: the efficiency stage's default, the friction package's
+        (:data:`friction.defaults.DEFAULT_FRICTION_MODEL`); a case file without the field
+        writes none back.
 
     Raises
     ------
@@ -134,7 +136,7 @@ class OperatingPoint:
     lubricant: str = OPERATING_DEFAULTS["lubricant"]
     temperature: float = OPERATING_DEFAULTS["temperature"]
     roughness: float = OPERATING_DEFAULTS["roughness"]
-    friction_model: str = OPERATING_DEFAULTS["friction_model"]
+    friction_model: str | None = None
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
@@ -150,6 +152,8 @@ class OperatingPoint:
         set_(self, "roughness", positive("roughness", self.roughness, "um"))
         for name in ("lubricant", "friction_model"):
             val = getattr(self, name)
+            if val is None and name == "friction_model":
+                continue
             if isinstance(val, os.PathLike):
                 val = os.fspath(val)
                 set_(self, name, val)
@@ -513,7 +517,7 @@ _OPERATING_POINT_FIELDS = {
     "lubricant": ("str", False, OPERATING_DEFAULTS["lubricant"]),
     "temperature": ("degC", False, OPERATING_DEFAULTS["temperature"]),
     "roughness": ("um", False, OPERATING_DEFAULTS["roughness"]),
-    "friction_model": ("str", False, OPERATING_DEFAULTS["friction_model"]),
+    "friction_model": ("str", False, None),
 }
 _DEVIATION_FIELDS = {
     "pinion": ("str", False, None),
@@ -893,4 +897,6 @@ def operating_to_dict(misalignment: Misalignment, operating: OperatingPoint,
     """The ``[operating]`` table of a case (units of a case file: ΔΣ in deg); inverse of
     :func:`operating_from_dict`."""
     op = _values(operating, _OPERATING_POINT_FIELDS)
+    if op["friction_model"] is None:  # the efficiency stage's default: nothing to write
+        del op["friction_model"]
     return {"torque": op.pop("torque"), **_values(misalignment, _MISALIGNMENT_FIELDS), **op}

@@ -44,8 +44,8 @@ from contact.compliance.fe.contact_compliance import (
 )
 from contact.compliance.mesh import ContactSegments, pair_compliance_model
 from contact.ltca import LTCAOptions, loaded_tca
-from contact.ltca.options import COMPLIANCE_MODELS, json_options
-from contact.ltca.pool import COMPLIANCE_ASSEMBLERS
+from contact.ltca.compliance_models import available_compliance_models
+from contact.ltca.options import json_options
 from contact.ltca.root_stress import _roll_rotations
 from contact.utca.easeoff import ease_off
 from geometry.core.errors import InputError
@@ -210,14 +210,12 @@ def test_fe_ltca_satisfies_the_contact_conditions(tmp_path, monkeypatch):
 def test_shell_options_text_is_unchanged():
     """The default (shell) analysis writes the options text it wrote before the FE
     compliance existed (no ``compliance``/``fe`` keys: the golden file guards every other
-    byte), and an FE analysis names its model; the registry of the pool and the names of
-    the options and of the CLI agree."""
-    from contact.commands.options import COMPLIANCE_CHOICES
-
+    byte), and an FE analysis names its model; the bundled models are the one registry's
+    (contact.ltca.compliance_models, which the pool, the options and the CLI all read)."""
     text = json_options(LTCAOptions())
     assert '"compliance"' not in text and '"fe"' not in text
     assert '"compliance": "fe"' in json_options(LTCAOptions(compliance="fe"))
-    assert set(COMPLIANCE_ASSEMBLERS) == set(COMPLIANCE_MODELS) == set(COMPLIANCE_CHOICES)
+    assert available_compliance_models()[:2] == ("shell", "fe")
 
 
 def test_bad_input_is_refused_naming_the_field():

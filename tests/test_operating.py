@@ -72,9 +72,12 @@ def test_refusals_name_the_field(kwargs, error, match):
 def test_the_command_line_takes_its_defaults_from_the_dataclass():
     """One definition of the operating defaults: the command line has none of its own
     (an option left out means the case's ``[operating]`` table), and a case without one
-    gets geometry.case.OPERATING_DEFAULTS, which OperatingConditions' defaults equal."""
+    gets geometry.case.OPERATING_DEFAULTS, which OperatingConditions' defaults equal; the
+    friction model's default is the friction package's (issue 54: a case names none, and
+    the efficiency stage takes friction.defaults.DEFAULT_FRICTION_MODEL)."""
     from contact.cli import build_parser
-    from geometry.case import OPERATING_DEFAULTS
+    from friction.defaults import DEFAULT_FRICTION_MODEL
+    from geometry.case import OPERATING_DEFAULTS, OperatingPoint
 
     op = OperatingConditions()
     parser = build_parser()
@@ -82,6 +85,11 @@ def test_the_command_line_takes_its_defaults_from_the_dataclass():
         args = parser.parse_args(argv)
         assert (args.speed, args.lubricant, args.temperature, args.roughness,
                 args.friction_model) == (None,) * 5, argv
-    assert (op.pinion_speed, op.lubricant, op.temperature, op.roughness,
-            op.friction_model) == tuple(OPERATING_DEFAULTS[k] for k in (
-                "pinion_speed", "lubricant", "temperature", "roughness", "friction_model"))
+    assert (op.pinion_speed, op.lubricant, op.temperature, op.roughness) == tuple(
+        OPERATING_DEFAULTS[k] for k in ("pinion_speed", "lubricant", "temperature",
+                                        "roughness"))
+    assert "friction_model" not in OPERATING_DEFAULTS
+    assert OperatingPoint().friction_model is None
+    assert op.friction_model == DEFAULT_FRICTION_MODEL
+    assert OperatingConditions.from_point(OperatingPoint()).friction_model == (
+        DEFAULT_FRICTION_MODEL)

@@ -24,7 +24,7 @@ from contact.qp.benchmark_problems import (
     hertz_sphere_problem,
     ltca_like_problem,
 )
-from contact.qp.solvers import _registry
+from contact.qp.solvers import register_backend, unregister_backend
 from contact.qp.solvers.active_set import block_pivoting, primal_active_set
 from contact.qp.solvers.backend import Backend, RawResult
 
@@ -291,34 +291,44 @@ def test_warm_start_from_previous_solution_is_cheaper():
     np.testing.assert_allclose(warm.force, cold.force, rtol=1e-12, atol=1e-12 * cold.force.max())
 
 
-def _register(monkeypatch, name, fn):
-    monkeypatch.setitem(_registry(), name, Backend(name, "test", fn, False, "test double"))
+@pytest.fixture
+def register():
+    """Register test doubles through the public registry; unregistered after the test."""
+    names = []
+
+    def _register(name, fn):
+        register_backend(name, Backend(name, "test", fn, False, "test double"))
+        names.append(name)
+
+    yield _register
+    for name in names:
+        unregister_backend(name)
 
 
-def test_backend_exception_is_reported_not_raised(monkeypatch):
+def test_backend_exception_is_reported_not_raised(register):
     def broken(problem, **_):
         raise RuntimeError("solver crashed")
 
-    _register(monkeypatch, "broken", broken)
+    register("broken", broken)
     sol = solve_contact(ltca_like_problem(30).problem, "broken")
     assert not sol.found
     assert "solver crashed" in sol.status
     assert all(math.isinf(v) for v in sol.residuals.values())
 
 
-def test_false_success_claim_is_not_passed_on(monkeypatch):
+def test_false_success_claim_is_not_passed_on(register):
     # A backend that claims success with a poor answer (uniform forces) is reported unfound.
     def liar(problem, **_):
         F = np.full(problem.size, problem.torque / problem.moment_arm.sum())
         return RawResult(F, 0.0, True, "optimal", 0.0, 0.0)
 
-    _register(monkeypatch, "liar", liar)
+    register("liar", liar)
     sol = solve_contact(ltca_like_problem(60, seed=1).problem, "liar", polish_solution=False)
     assert not sol.found
     assert "not certified" in sol.status
 
 
-def test_polish_rescues_a_nearly_right_answer(monkeypatch):
+def test_polish_rescues_a_nearly_right_answer(register):
     problem = ltca_like_problem(120, seed=4).problem
     exact = solve_contact(problem)
 
@@ -326,7 +336,7 @@ def test_polish_rescues_a_nearly_right_answer(monkeypatch):
         F = exact.force * (1 + 1e-3 * np.sin(np.arange(problem.size)))
         return RawResult(F, exact.rotation * (1 + 1e-4), True, "optimal", 0.0, 0.0)
 
-    _register(monkeypatch, "sloppy", sloppy)
+    register("sloppy", sloppy)
     raw = solve_contact(problem, "sloppy", polish_solution=False)
     polished = solve_contact(problem, "sloppy")
     assert not raw.found

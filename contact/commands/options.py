@@ -280,6 +280,7 @@ def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
                       speed_help: str = "") -> None:
     """``--speed --lubricant --temperature --roughness --friction-model``: the efficiency
     stage's conditions, each defaulting to the case's ``[operating]`` table."""
+    from friction.defaults import DEFAULT_FRICTION_MODEL
     from geometry.core.operating_defaults import OPERATING_DEFAULTS as D
 
     g = p.add_argument_group("operating conditions of the efficiency stage (default: the "
@@ -296,7 +297,8 @@ def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
     g.add_argument("--roughness", type=float, nargs=nargs, default=None, metavar="UM",
                    help=f"RMS roughness Rq of each flank [um] ({D['roughness']:g} µm)")
     g.add_argument("--friction-model", default=None,
-                   help=f"friction coefficient model ({D['friction_model']})")
+                   help=f"friction coefficient model: a bundled one, or one of an "
+                        f"installed plug-in (docs/extending.md) ({DEFAULT_FRICTION_MODEL})")
 
 
 def count(low: int, high: int):
@@ -374,7 +376,7 @@ def solver_option(p: argparse.ArgumentParser) -> None:
     """``--solver NAME``: the contact solver (default the exact ``active_set``)."""
     p.add_argument("--solver", default=None, metavar="NAME",
                    help="contact solver (default active_set; `ltca compare-solvers` lists "
-                        "them)")
+                        "them, those of installed plug-ins among them: docs/extending.md)")
 
 
 def pressure_limit_options(p: argparse.ArgumentParser) -> None:
@@ -391,21 +393,29 @@ def pressure_limit_options(p: argparse.ArgumentParser) -> None:
                         "none)")
 
 
-#: the LTCA's compliance models (``--compliance``; the names of
-#: :data:`contact.ltca.options.COMPLIANCE_MODELS`, repeated here so that ``ltca --help``
-#: imports no NumPy; tests/test_fe_ltca.py checks they agree)
-COMPLIANCE_CHOICES = ("shell", "fe")
+def compliance_name(name: str) -> str:
+    """An argparse ``type``: a name of the compliance models' registry
+    (:mod:`contact.ltca.compliance_models`, read when the option is given, so that
+    ``ltca --help`` imports no NumPy); an unknown name is refused at parsing, listing the
+    available ones."""
+    from contact.ltca.compliance_models import get_compliance_model
+    from geometry.core.errors import ModelUnavailableError
+
+    try:
+        return get_compliance_model(name).name
+    except ModelUnavailableError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def compliance_option(p: argparse.ArgumentParser) -> None:
-    """``--compliance {shell,fe}``: the teeth's compliance model (``LTCAOptions.compliance``)."""
-    p.add_argument("--compliance", choices=COMPLIANCE_CHOICES, default=None,
+    """``--compliance NAME``: the teeth's compliance model (``LTCAOptions.compliance``)."""
+    p.add_argument("--compliance", type=compliance_name, default=None, metavar="NAME",
                    help="tooth compliance of the loaded TCA: shell (default; the seed's "
-                        "tapered shells on a fillet foundation) or fe (3-D FE models of the "
+                        "tapered shells on a fillet foundation), fe (3-D FE models of the "
                         "generated teeth, fillets and rim, docs/fe.md: the first run of a "
                         "design builds their influence coefficients, ~0.5-1.5 min per member "
-                        "with PARDISO, then reads them from the cache); Weber's contact "
-                        "term in both")
+                        "with PARDISO, then reads them from the cache) or a model of an "
+                        "installed plug-in (docs/extending.md); Weber's contact term in all")
 
 
 def output_option(p: argparse.ArgumentParser, *, default: str, what: str = "netCDF file",

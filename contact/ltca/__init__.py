@@ -13,8 +13,9 @@ solves them (:mod:`contact.qp`):
   as edge contact);
 * :mod:`contact.ltca.screening` — which segments a roll's problem must take;
 * :mod:`contact.ltca.pool` — their structural compliance, assembled once per roll, by the
-  compliance model the options name (the registry ``COMPLIANCE_ASSEMBLERS``: the shells,
-  or the FE influence coefficients);
+  compliance model the options name (the one registry
+  :mod:`contact.ltca.compliance_models`: the shells, the FE influence coefficients, or a
+  user's model registered with :func:`register_compliance_model`);
 * :mod:`contact.ltca.plastic` — the elastic–perfectly-plastic segments' pressure and
   force limits (the bound F ≤ F_max of the contact QP);
 * :mod:`contact.ltca.weber` — one roll's problem with Weber's compliance iterated
@@ -28,6 +29,11 @@ solves them (:mod:`contact.qp`):
 * :mod:`contact.ltca.mesh_cycle` — :func:`loaded_tca`, the whole analysis of a case.
 """
 
+from contact.ltca.compliance_models import (
+    available_compliance_models,
+    register_compliance_model,
+    unregister_compliance_model,
+)
 from contact.ltca.edges import EDGE_KINDS, FlankBoundary, flank_boundary
 from contact.ltca.mesh_cycle import loaded_tca, ltca_problems
 from contact.ltca.options import LTCAOptions, LTCASetup
@@ -42,10 +48,13 @@ __all__ = [
     "LTCASetup",
     "RollProblem",
     "Segments",
+    "available_compliance_models",
     "flank_boundary",
     "loaded_tca",
     "ltca_problems",
     "mesh_harmonics",
+    "register_compliance_model",
     "segment_geometry",
     "transmission_error_summary",
+    "unregister_compliance_model",
 ]

@@ -30,6 +30,7 @@ from contact.ltca.screening import Screening
 from contact.ltca.segments import Segments
 from contact.ltca.transmission_error import transmission_error_summary
 from contact.qp.problem import RESIDUALS
+from contact.qp.solvers import solver_name
 from geometry import __version__
 from geometry.core.conventions import binary_flag
 from geometry.core.conventions import data_var as _var
@@ -304,7 +305,7 @@ def _attrs(setup: LTCASetup, timing: dict[str, float]) -> dict:
         "toolkit_version": __version__,
         "pinion_flank": eo.pinion_flank,
         "gear_flank": eo.gear_flank,
-        "solver": opts.solver,
+        "solver": solver_name(opts.solver),
         "mesh_period_rad": eo.pitch,
         "transition_M1_rad": float(m1),
         "transition_M2_rad": float(m2),

@@ -3,7 +3,6 @@
 Public functions
 ----------------
 LTCAOptions      frozen dataclass of the settings, validated on construction
-COMPLIANCE_MODELS  the tooth compliance models the LTCA can assemble (name → what it is)
 LTCASetup        what one analysis is run on: case, ease-off, options, torques, rolls
 edge_radii       the (pinion, gear) edge rounding radii an analysis uses
 json_options     the options as JSON text (netCDF-safe)
@@ -13,14 +12,21 @@ from __future__ import annotations
 
 import dataclasses
 import json
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from contact.qp.solvers import DEFAULT_SOLVER, get_backend
+from contact.ltca.compliance_models import (
+    DEFAULT_COMPLIANCE,
+    ComplianceModel,
+    compliance_model_name,
+    get_compliance_model,
+)
+from contact.qp.solvers import DEFAULT_SOLVER, SolverLike, get_backend, solver_name
 from contact.utca import CURVE_SPACINGS, EaseOff
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.hertz import STEEL
 from geometry.core.materials import CONTACT_PRESSURE_LIMITS
 from geometry.core.validation import integer, one_of, positive, real
@@ -29,17 +35,7 @@ if TYPE_CHECKING:
     from contact.compliance.fe import FEOptions
     from geometry.case import Case
 
-__all__ = ["COMPLIANCE_MODELS", "LTCAOptions", "LTCASetup", "edge_radii", "json_options"]
-
-#: the tooth compliance models of the LTCA (``LTCAOptions.compliance``); each is assembled
-#: by its entry of :data:`contact.ltca.pool.COMPLIANCE_ASSEMBLERS`, and both add Weber's
-#: contact term (:mod:`contact.ltca.weber`)
-COMPLIANCE_MODELS: dict[str, str] = {
-    "shell": "tapered-shell Rayleigh–Ritz teeth (seed Eq. 3.1–3.11) on Sainsot's fillet "
-             "foundation (contact.compliance.mesh)",
-    "fe": "3-D FE models of the generated teeth, fillets and rim: the tooth mid-surface's "
-          "displacement from the influence coefficients (contact.compliance.fe)",
-}
+__all__ = ["LTCAOptions", "LTCASetup", "edge_radii", "json_options"]
 
 
 @dataclass(frozen=True)
@@ -71,8 +67,10 @@ class LTCAOptions:
         A fixed limit: segments separated by more are left out (a warning is logged if
         one of them would touch). Default None: the screening of the module docstring,
         which leaves out only segments whose gap stays open (s ≥ R Θ).
-    solver : str
-        Registered solver name (default our exact ``active_set``).
+    solver : str, contact.qp.solvers.Backend or callable
+        Registered solver name (default our exact ``active_set``;
+        :func:`contact.qp.available_solvers`), or a Backend or solve function of one's own
+        (:func:`contact.qp.solvers.as_backend`; recorded by its name).
     weber_tolerance : float — [µrad]
         Stop the Weber load iteration when the LTE changes by less, or its next Newton
         step is foretold to be ten times smaller (default 1e-3).
@@ -109,12 +107,14 @@ class LTCAOptions:
     theory, n_height, n_face
         Shell-model settings (:func:`contact.compliance.pair_compliance_model`); with
         ``compliance="fe"`` the shell tooth's measurement still gives Weber's depths.
-    compliance : str
-        The teeth's bending, shear and base compliance, a name of
-        :data:`COMPLIANCE_MODELS`: ``"shell"`` (default; the seed's model) or ``"fe"``
-        (the FE influence coefficients of both members, built once per member and design
-        and then read from the disk cache: docs/fe.md). Weber's contact term is the same
-        in both.
+    compliance : str, ComplianceModel or callable
+        The teeth's bending, shear and base compliance, a model of the registry
+        :mod:`contact.ltca.compliance_models`: ``"shell"`` (default; the seed's model),
+        ``"fe"`` (the FE influence coefficients of both members, built once per member and
+        design and then read from the disk cache: docs/fe.md), a name registered with
+        :func:`~contact.ltca.compliance_models.register_compliance_model`, or a model's
+        preparation function itself (recorded by its name). Weber's contact term is the
+        same in all.
     fe : contact.compliance.fe.FEOptions or None
         The FE model of ``compliance="fe"`` (default None: ``FEOptions()`` with this
         analysis' material); its material must be the analysis' (``youngs_modulus``,
@@ -127,7 +127,7 @@ class LTCAOptions:
     segments: int = 24
     spacing: str = "cosine"
     separation_limit: float | None = None
-    solver: str = DEFAULT_SOLVER
+    solver: SolverLike = DEFAULT_SOLVER
     weber_tolerance: float = 1e-3
     max_weber_iterations: int = 12
     edge_contact: bool = True
@@ -140,7 +140,7 @@ class LTCAOptions:
     theory: str = "seed"
     n_height: int = 6
     n_face: int = 21
-    compliance: str = "shell"
+    compliance: str | ComplianceModel | Callable[..., Any] = DEFAULT_COMPLIANCE
     fe: FEOptions | None = None
 
     def __post_init__(self) -> None:
@@ -167,7 +167,10 @@ class LTCAOptions:
         positive("youngs_modulus", self.youngs_modulus, "MPa")
         real("poisson_ratio", self.poisson_ratio, unit="1", low=0.0, high=0.5, high_open=True)
         get_backend(self.solver)
-        one_of("compliance", self.compliance, tuple(COMPLIANCE_MODELS))
+        try:
+            get_compliance_model(self.compliance)
+        except ModelUnavailableError as exc:
+            raise InputError(f"compliance: {exc}") from None
         if self.fe is not None:
             self._check_fe()
 
@@ -241,14 +244,19 @@ def edge_radii(case, opts: LTCAOptions) -> tuple[float, float]:
 def json_options(opts: LTCAOptions) -> str:
     """The options as JSON text (netCDF-safe).
 
-    ``compliance`` and ``fe`` are written only with the FE compliance (an analysis with
-    the default shell compliance writes the same text as before the FE compliance
-    existed, so its files, the golden file among them, are unchanged); ``fe`` as the dict
-    of the FE options used (:meth:`LTCAOptions.fe_options`).
+    ``compliance`` and ``fe`` are written only with a compliance other than the default
+    shell (an analysis with the shell compliance writes the same text as before the FE
+    compliance existed, so its files, the golden file among them, are unchanged); ``fe``
+    as the dict of the FE options used (:meth:`LTCAOptions.fe_options`). A solver or
+    compliance model given as an object is written by its name.
     """
     d = {f.name: getattr(opts, f.name) for f in dataclasses.fields(opts)}
+    d["solver"] = solver_name(opts.solver)
+    d["compliance"] = compliance_model_name(opts.compliance)
     if opts.compliance == "fe":
         d["fe"] = opts.fe_options().as_dict()
-    else:
+    elif d["compliance"] == DEFAULT_COMPLIANCE:
         del d["compliance"], d["fe"]
+    else:
+        del d["fe"]
     return json.dumps(d, sort_keys=True)

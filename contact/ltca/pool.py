@@ -7,83 +7,81 @@ takes the sub-matrix of its selection. Weber's contact compliance, which depends
 load, is left out here and added by the Weber iteration (:mod:`contact.ltca.weber`); the
 depths it needs are kept.
 
-The structural compliance is one of the models of
-:data:`contact.ltca.options.COMPLIANCE_MODELS`, chosen by ``LTCAOptions.compliance`` through
-the registry :data:`COMPLIANCE_ASSEMBLERS` (name → a function that prepares the model once
-per analysis and returns the batch assembler):
+The structural compliance is the model ``LTCAOptions.compliance`` names, from the one
+registry :mod:`contact.ltca.compliance_models` (the shells, the FE influence coefficients,
+or a user's model): its preparation runs once per analysis and returns the batch assembler.
+The FE model's coupling between neighbouring teeth has small negative entries (an unloaded
+neighbour moves away, ≤ 9 % of the diagonal), which the screening's bound for segments
+outside the pool (s ≥ R Θ) neglects: ~1 µm at 500 N·m against the pool's generous limit of
+tenths of a millimetre (docs/fe.md).
 
-* ``"shell"`` — both members' tapered shells and Sainsot foundations
-  (:func:`contact.compliance.mesh.mesh_compliance_many`); block diagonal by tooth pair;
-* ``"fe"`` — both members' FE influence coefficients, the tooth mid-surface's displacement
-  (bending, shear, fillets, rim down to the support) interpolated to the segments, the
-  neighbouring teeth coupled as the FE model has them
-  (:func:`contact.compliance.fe.contact_compliance.fe_mesh_compliance_many`; it replaces
-  the shells *and* the foundations). Its coupling between neighbouring teeth has small
-  negative entries (an unloaded neighbour moves away, ≤ 9 % of the diagonal), which the
-  screening's bound for segments outside the pool (s ≥ R Θ) neglects: ~1 µm at 500 N·m
-  against the pool's generous limit of tenths of a millimetre (docs/fe.md).
-
-Both return the total with Weber's term, which the pool takes out again (the iteration
-adds it at the loads), and the same Weber depths.
+Every model returns the total with Weber's term, which the pool takes out again (the
+iteration adds it at the loads), and Weber's depths; the pool checks that it does.
 
 Public functions
 ----------------
 CompliancePool          the pool of every computed roll: masks, structural compliance, depths
-COMPLIANCE_ASSEMBLERS   compliance model name → preparation of its batch assembler
 """
 
 from __future__ import annotations
 
-import functools
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
-from contact.compliance.mesh import ContactSegments, mesh_compliance_many, pair_compliance_model
+from contact.compliance.mesh import ContactSegments
+from contact.ltca.compliance_models import (
+    ComplianceModelError,
+    compliance_model_name,
+    get_compliance_model,
+)
 from contact.ltca.options import LTCAOptions
 from contact.ltca.segments import Segments
 from contact.utca import EaseOff
 from geometry.core.errors import InputError
 
-__all__ = ["COMPLIANCE_ASSEMBLERS", "CompliancePool"]
+__all__ = ["CompliancePool"]
 
-#: a batch assembler: the segments of several rolls → one (C with Weber [mm/N], info) each
-Assembler = Callable[[list[ContactSegments]], list[tuple[np.ndarray, dict[str, Any]]]]
-
-
-def _shell_model(case, options: LTCAOptions):
-    material = (options.youngs_modulus, options.poisson_ratio)
-    return pair_compliance_model(case, theory=options.theory, n_height=options.n_height,
-                                 n_face=options.n_face, pinion_material=material,
-                                 gear_material=material)
+#: what every assembler's ``info`` must hold (contact.ltca.compliance_models)
+REQUIRED_INFO = ("weber", "weber_depth", "time", "asymmetry")
 
 
-def _shell_assembler(case, easeoff: EaseOff | None, options: LTCAOptions) -> Assembler:
-    """The shell path: shells and foundations of both members (memoised per case)."""
-    return functools.partial(mesh_compliance_many, case, model=_shell_model(case, options))
+def _checked(name: str, jobs: list, mats: Any) -> list[tuple[np.ndarray, dict[str, Any]]]:
+    """A model's assembled matrices, checked against its contract: one (C, info) per roll,
+    C (P, P) finite, info with :data:`REQUIRED_INFO` of the right shapes.
 
+    Raises
+    ------
+    ComplianceModelError
+        What breaks the contract, naming the model.
+    """
+    def fail(what: str) -> ComplianceModelError:
+        return ComplianceModelError(f"compliance: model {name!r} {what} "
+                                    "(contact.ltca.compliance_models)")
 
-def _fe_assembler(case, easeoff: EaseOff | None, options: LTCAOptions) -> Assembler:
-    """The FE path: both members' influence coefficients of the analysed flanks (from the
-    disk cache, built the first time), the shell tooth measurement for Weber's depths."""
-    from contact.compliance.fe.contact_compliance import fe_mesh_compliance_many, fe_pair_model
-
-    if easeoff is None:
-        raise InputError("easeoff: the FE compliance needs the analysis' ease-off (its "
-                         "working flanks)")
-    model = fe_pair_model(case, {"pinion": easeoff.pinion_flank, "gear": easeoff.gear_flank},
-                          options.fe_options(), _shell_model(case, options))
-    return functools.partial(fe_mesh_compliance_many, case, model=model)
-
-
-#: compliance model name (:data:`contact.ltca.options.COMPLIANCE_MODELS`) → a function
-#: (case, ease-off, options) that prepares the model once per analysis and returns its
-#: batch assembler
-COMPLIANCE_ASSEMBLERS: dict[str, Callable[..., Assembler]] = {
-    "shell": _shell_assembler,
-    "fe": _fe_assembler,
-}
+    if not isinstance(mats, (list, tuple)) or len(mats) != len(jobs):
+        raise fail(f"must return one (C, info) per roll position ({len(jobs)}), got "
+                   f"{type(mats).__name__}")
+    out = []
+    for (_, mask), item in zip(jobs, mats, strict=True):
+        p = int(np.count_nonzero(mask))
+        try:
+            c, info = item
+        except (TypeError, ValueError):
+            raise fail("must return (C, info) pairs") from None
+        c = np.asarray(c, dtype=float)
+        missing = [k for k in REQUIRED_INFO if not isinstance(info, dict) or k not in info]
+        if missing:
+            raise fail(f"gave no {missing} in its info")
+        if (c.shape != (p, p) or np.shape(info["weber"]) != (p, p)
+                or np.shape(info["weber_depth"]) != (p, 2)):
+            raise fail(f"gave C {c.shape}, weber {np.shape(info['weber'])}, weber_depth "
+                       f"{np.shape(info['weber_depth'])} for {p} segments; expected ({p}, "
+                       f"{p}), ({p}, {p}), ({p}, 2)")
+        if not np.all(np.isfinite(c)):
+            raise fail("gave a compliance that is not finite")
+        out.append((c, info))
+    return out
 
 
 class CompliancePool:
@@ -117,7 +115,9 @@ class CompliancePool:
         self.case = case
         self.seg = seg
         self.options = options
-        self._assembler = COMPLIANCE_ASSEMBLERS[options.compliance](case, easeoff, options)
+        model = get_compliance_model(options.compliance)
+        self._model_name = compliance_model_name(model)
+        self._assembler = model.prepare(case, easeoff, options)
         self._masks: dict[int, np.ndarray] = {}  # (K, S) the segments assembled
         self._structural: dict[int, np.ndarray] = {}  # (P, P) [mm/N] without Weber
         self._depth: dict[int, np.ndarray] = {}  # (P, 2) [mm] Weber's depths
@@ -170,6 +170,7 @@ class CompliancePool:
                 f"separation_limit: {fixed:g} mm takes in segments so far from contact that "
                 "their points lie off the mating tooth (far pairs' edges); use a smaller "
                 f"limit or the default screening (None): {exc}") from exc
+        mats = _checked(self._model_name, jobs, mats)
         for (j, mask), (c_full, info) in zip(jobs, mats, strict=True):
             self._masks[j] = mask
             self._structural[j] = c_full - info["weber"]

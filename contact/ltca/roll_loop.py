@@ -26,6 +26,7 @@ import numpy as np
 import xarray as xr
 
 from contact.errors import ProblemInputError
+from contact.ltca.compliance_models import ComplianceModelError
 from contact.ltca.dataset import ltca_dataset
 from contact.ltca.options import LTCASetup
 from contact.ltca.plastic import force_limits, pressure_limits
@@ -329,6 +330,8 @@ def _assemble_first_pool(an: _Analysis, j: int) -> None:
     try:
         an.pool.assemble([(j, screening.first_pool(j))])
         return
+    except ComplianceModelError:  # the model's fault, not the torque's
+        raise
     except InputError as exc:
         torque = float(an.setup.torques.max())
         seps = np.unique(screening.separation[j][screening.first_pool(j)])

@@ -11,8 +11,9 @@ Eq. 3.12–3.14). This layer knows nothing of gears:
 * :mod:`contact.qp.problem` — :class:`ContactProblem`, :class:`ContactSolution` and the
   residuals of the four conditions, computed here, never taken from a solver;
 * :mod:`contact.qp.solvers` — the one registry of interchangeable backends (our exact
-  ``active_set``, every installed ``qpsolvers`` backend, ``cvxpy``); a new backend goes
-  in a module of its own there;
+  ``active_set``, every installed ``qpsolvers`` backend, ``cvxpy``, plug-ins); a bundled
+  backend goes in a module of its own there, a user's registers from outside
+  (:func:`register_backend`, docs/extending.md);
 * :mod:`contact.qp.halfspace` — Love's half-space influence coefficients and Hertz's
   solutions, the independent references;
 * :mod:`contact.qp.benchmark_problems` — the test problems of the solver study (Hertz
@@ -27,7 +28,14 @@ from contact.qp.problem import (
     ContactSolution,
     contact_residuals,
 )
-from contact.qp.solvers import DEFAULT_SOLVER, available_solvers, get_backend, solve_contact
+from contact.qp.solvers import (
+    DEFAULT_SOLVER,
+    available_solvers,
+    get_backend,
+    register_backend,
+    solve_contact,
+    unregister_backend,
+)
 
 __all__ = [
     "DEFAULT_SOLVER",
@@ -37,5 +45,7 @@ __all__ = [
     "available_solvers",
     "contact_residuals",
     "get_backend",
+    "register_backend",
     "solve_contact",
+    "unregister_backend",
 ]

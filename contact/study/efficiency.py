@@ -273,7 +273,7 @@ def efficiency_map(
             "case": c.name,
             **misalignment_attrs(c.misalignment),
             "lubricant": str(op.lubricant),
-            "friction_model": op.friction_model,
+            "friction_model": op.friction_model_name,
             "toolkit_version": __version__,
         },
     )

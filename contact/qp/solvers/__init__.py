@@ -1,11 +1,14 @@
 """One registry of interchangeable solvers for the loaded-contact problem.
 
-``available_solvers()`` lists every backend that works here: our own exact
-solver ``active_set`` (the default and the reference), each installed
-``qpsolvers`` backend by its qpsolvers name, ``cvxpy`` and ``cvxpy:NAME``.
-``solve_contact(problem, solver=NAME)`` runs one, optionally polishes its answer
-(the reduced KKT system on its contact set, solved exactly) and certifies the
-result with our own residuals: ``found`` is never taken from a backend.
+``available_solvers()`` lists every backend that works here: our own exact solver
+``active_set`` (the default and the reference), each installed ``qpsolvers`` backend by
+its qpsolvers name, ``cvxpy`` and ``cvxpy:NAME``, the backends of installed plug-ins (the
+entry-point group :data:`ENTRY_POINT_GROUP`) and those a user registered in this process
+(:func:`register_backend`). ``solve_contact(problem, solver=NAME)`` runs one, optionally
+polishes its answer (the reduced KKT system on its contact set, solved exactly) and
+certifies the result with our own residuals: ``found`` is never taken from a backend.
+Wherever a solver is chosen by name (``solve_contact``, ``LTCAOptions.solver``) a
+:class:`Backend` or a plain solve function is accepted too (docs/extending.md).
 
 Modelled on qpsolvers' registry (Caron et al.): backends register under
 try/except so a missing package removes a backend instead of breaking import.
@@ -13,9 +16,11 @@ try/except so a missing package removes a backend instead of breaking import.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 import time
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -32,13 +37,28 @@ from contact.qp.problem import (
 from contact.qp.solvers.active_set import block_pivoting
 from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
 from geometry.core.caches import memoised
+from geometry.core.errors import InputError
+from geometry.core.registries import (
+    callable_name,
+    check_model_name,
+    entry_point_objects,
+    keyword_parameters,
+)
 
 __all__ = [
     "DEFAULT_SOLVER",
+    "ENTRY_POINT_GROUP",
+    "Backend",
+    "RawResult",
+    "SolverLike",
+    "as_backend",
     "available_solvers",
     "get_backend",
     "polish",
+    "register_backend",
     "solve_contact",
+    "solver_name",
+    "unregister_backend",
 ]
 
 log = logging.getLogger(__name__)
@@ -99,9 +119,26 @@ def _builtin() -> dict[str, Backend]:
     }
 
 
+#: the entry-point group in which an installed distribution advertises solver backends:
+#: each entry is a :class:`Backend` or a solve function (registered under the entry's
+#: name), e.g. in the plug-in's ``pyproject.toml``::
+#:
+#:     [project.entry-points."hypoid_ltca.solvers"]
+#:     my_solver = "my_package.contact:solve"
+ENTRY_POINT_GROUP = "hypoid_ltca.solvers"
+
+#: what may stand where a solver is chosen: a registered name, a Backend, a solve function
+SolverLike = str | Backend | Callable[..., Any]
+
+#: backends registered in this process by :func:`register_backend` (not a cache:
+#: ``clear_caches`` keeps them)
+_USER: dict[str, Backend] = {}
+
+
 @memoised(maxsize=None)
-def _registry() -> dict[str, Backend]:
-    reg: dict[str, Backend] = dict(_builtin())
+def _discovered() -> dict[str, Backend]:
+    """The third-party backends found installed: qpsolvers', cvxpy's, the plug-ins'."""
+    reg: dict[str, Backend] = {}
     try:
         from contact.qp.solvers import qpsolvers_backend
 
@@ -114,7 +151,18 @@ def _registry() -> dict[str, Backend]:
         reg.update({b.name: b for b in cvxpy_backend.backends()})
     except Exception as exc:  # pragma: no cover
         log.warning("cvxpy backends unavailable: %s", exc)
+    for name, obj in entry_point_objects(ENTRY_POINT_GROUP).items():
+        try:
+            reg[name] = obj if isinstance(obj, Backend) else as_backend(obj, name=name)
+        except InputError as exc:
+            log.warning("entry point %s of group %s is not a solver backend: %s", name,
+                        ENTRY_POINT_GROUP, exc)
     return reg
+
+
+def _registry() -> dict[str, Backend]:
+    """Every backend by name: ours, then the installed ones, then the user's."""
+    return {**_builtin(), **_discovered(), **_USER}
 
 
 def available_solvers() -> list[str]:
@@ -123,25 +171,195 @@ def available_solvers() -> list[str]:
     Returns
     -------
     list of str
-        ``active_set`` first, then qpsolvers backends, then ``cvxpy`` and ``cvxpy:NAME``.
+        ``active_set`` first, then qpsolvers backends, then ``cvxpy`` and ``cvxpy:NAME``,
+        the plug-ins' backends (:data:`ENTRY_POINT_GROUP`) and those registered with
+        :func:`register_backend`.
     """
     return list(_registry())
 
 
-def get_backend(name: str) -> Backend:
+def _adapted(function: Callable[..., Any], name: str) -> Callable[..., RawResult]:
+    """A user's solve function as the registry calls backends: ``solve(problem, *,
+    accuracy, initial, **options) -> RawResult``. The function is passed only the keywords
+    it declares (all of them if it takes ``**kwargs``) and may return a :class:`RawResult`
+    or ``(force [N], rotation [rad])``."""
+    required, optional, takes_any = keyword_parameters("solve", function, positional=1)
+    unknown = sorted(set(required) - {"accuracy", "initial"})
+    if unknown:
+        raise InputError(f"solve: parameter(s) {unknown} of {callable_name(function)} have no "
+                         "default; a solver is passed the problem, accuracy, initial and "
+                         "the caller's options only")
+    accepted = {*required, *optional}
+
+    def solve(problem: ContactProblem, **keywords: Any) -> RawResult:
+        passed = keywords if takes_any else {k: v for k, v in keywords.items()
+                                             if k in accepted}
+        t0 = time.perf_counter()
+        out = function(problem, **passed)
+        elapsed = time.perf_counter() - t0
+        if isinstance(out, RawResult):
+            return out
+        try:
+            force, rotation = out
+        except (TypeError, ValueError):
+            raise InputError(f"solver {name!r}: must return a RawResult or (force, rotation), "
+                             f"got {type(out).__name__}") from None
+        return RawResult(None if force is None else np.asarray(force, float),
+                         None if rotation is None else float(rotation), True,
+                         f"user backend {name!r} returned", 0.0, elapsed)
+
+    return solve
+
+
+def as_backend(solver: SolverLike, *, name: str | None = None, family: str = "user",
+               warm_start: bool = False, description: str = "") -> Backend:
+    """A :class:`Backend` of a registered name, a Backend, or a solve function.
+
+    Parameters
+    ----------
+    solver : str, Backend or callable
+        A name (looked up: :func:`get_backend`), a Backend (returned as it is) or a solve
+        function ``solve(problem, **keywords)`` of a :class:`~contact.qp.ContactProblem`
+        (physical units: ``problem.compliance`` C [mm/N], ``problem.separation`` s [mm],
+        ``problem.moment_arm`` R [mm], ``problem.torque`` T [N·mm]; the scaled form
+        ``problem.scaled()``) returning a :class:`RawResult` or ``(F [N] (N,), Θ [rad])``.
+        Of the keywords ``accuracy`` (``"high"``, ``"default"``, ``"low"``), ``initial``
+        (a warm start F [N] or None) and the caller's options it is passed those it
+        declares.
+    name : str, optional
+        The function's name in results (default its ``__name__``).
+    family, warm_start, description
+        As :class:`Backend` (a function is asked for a warm start only with
+        ``warm_start=True``).
+
+    Returns
+    -------
+    Backend
+
+    Raises
+    ------
+    InputError
+        A function whose signature cannot take the problem by position and the keywords
+        by name, or a bad name.
+    SolverNotFoundError
+        An unknown name.
+    """
+    if isinstance(solver, Backend):
+        return solver
+    if isinstance(solver, str):
+        return get_backend(solver)
+    label = check_model_name("name", name if name is not None else callable_name(solver))
+    return Backend(label, family, _adapted(solver, label), bool(warm_start),
+                   description or f"user solve function {label}")
+
+
+def solver_name(solver: SolverLike) -> str:
+    """The name a solver is recorded by (results' ``solver`` attribute): the name itself,
+    the Backend's name, or the function's name (:func:`as_backend`)."""
+    if isinstance(solver, str):
+        return solver
+    if isinstance(solver, Backend):
+        return solver.name
+    return callable_name(solver)
+
+
+def register_backend(name: str, solve: Callable[..., Any] | Backend, *,
+                     family: str = "user", warm_start: bool = False, description: str = "",
+                     replace: bool = False) -> Backend:
+    """Register a solver backend under ``name`` for this process.
+
+    After it, ``name`` is a solver like any other: ``solve_contact(problem, name)``,
+    ``LTCAOptions(solver=name)``, ``ltca compare-solvers --solvers name`` (in the same
+    process), listed by :func:`available_solvers`, certified by the toolkit's own
+    residuals. To make a backend available to every process (``ltca run --solver``, the
+    workers of a study), advertise it in the entry-point group :data:`ENTRY_POINT_GROUP`
+    of an installed package instead (docs/extending.md).
+
+    Parameters
+    ----------
+    name : str
+        The registry name (no spaces).
+    solve : callable or Backend
+        The solve function (:func:`as_backend` says what it is given and may return) or a
+        ready :class:`Backend` (its own name is replaced by ``name``).
+    family : str
+        Algorithm family for reports (``active-set``, ``interior-point``, ``ADMM`` …;
+        default ``user``).
+    warm_start : bool
+        Pass the previous roll's forces as ``initial`` (default False).
+    description : str
+    replace : bool
+        Allow replacing a backend registered earlier under ``name`` with this function
+        (default False). The toolkit's ``active_set`` is never replaced.
+
+    Returns
+    -------
+    Backend
+        What was registered.
+
+    Raises
+    ------
+    InputError
+        A bad name or solve function, or a name already taken (the message names it).
+    """
+    check_model_name("name", name)
+    if name == DEFAULT_SOLVER:
+        raise InputError(f"name: {DEFAULT_SOLVER!r} is the toolkit's reference solver and "
+                         "cannot be replaced; register under another name")
+    taken = name in _USER or (name in _discovered())
+    if taken and not replace:
+        raise InputError(f"name: a solver {name!r} is registered already; pass "
+                         "replace=True to replace it or choose another name")
+    if isinstance(solve, Backend):
+        backend = dataclasses.replace(solve, name=name)
+    else:
+        backend = as_backend(solve, name=name, family=family, warm_start=warm_start,
+                             description=description)
+    _USER[name] = backend
+    return backend
+
+
+def unregister_backend(name: str) -> None:
+    """Remove a backend registered with :func:`register_backend` (nothing if none).
+
+    Raises
+    ------
+    InputError
+        ``name`` is not a name of a backend registered with :func:`register_backend`.
+    """
+    if name not in _USER:
+        raise InputError(f"name: {name!r} was not registered with register_backend "
+                         f"(registered: {sorted(_USER)})")
+    del _USER[name]
+
+
+def get_backend(name: SolverLike) -> Backend:
     """The registered :class:`Backend` for ``name``.
 
     The default, ``active_set``, is the toolkit's own and is returned without importing
     the third-party backends (qpsolvers and cvxpy with their solvers: ~0.7 s of CPU, once
-    per process — every study worker's, every ``ltca run``'s); any other name loads them.
+    per process — every study worker's, every ``ltca run``'s); so are backends a user
+    registered; any other name loads them.
+
+    Parameters
+    ----------
+    name : str, Backend or callable
+        A registered name; a Backend or a solve function is returned as a Backend
+        (:func:`as_backend`).
 
     Raises
     ------
     SolverNotFoundError
         Unknown or uninstalled name; the message lists the available solvers.
+    InputError
+        A solve function whose signature does not fit (:func:`as_backend`).
     """
+    if not isinstance(name, str):
+        return as_backend(name)
     if name == DEFAULT_SOLVER:
         return _builtin()[name]
+    if name in _USER:
+        return _USER[name]
     reg = _registry()
     if name not in reg:
         raise SolverNotFoundError(
@@ -206,7 +424,7 @@ def _certified(res: dict[str, float], tolerance: float) -> bool:
 
 def solve_contact(
     problem: ContactProblem,
-    solver: str = DEFAULT_SOLVER,
+    solver: SolverLike = DEFAULT_SOLVER,
     *,
     accuracy: str = "high",
     polish_solution: bool = True,
@@ -219,8 +437,9 @@ def solve_contact(
     Parameters
     ----------
     problem : ContactProblem
-    solver : str
-        A name from :func:`available_solvers` (default ``active_set``, our exact solver).
+    solver : str, Backend or callable
+        A name from :func:`available_solvers` (default ``active_set``, our exact solver),
+        a :class:`Backend`, or a solve function (:func:`as_backend`).
     accuracy : {"high", "default", "low"}
         Accuracy level mapped onto each backend's own tolerance parameters on the
         scaled problem (1e-9, backend defaults, 1e-3).
@@ -250,10 +469,13 @@ def solve_contact(
         Unknown solver name.
     ProblemInputError
         Unknown accuracy level or a non-positive tolerance.
+    InputError
+        A solve function whose signature does not fit (:func:`as_backend`).
     """
     from contact.errors import ProblemInputError
 
     backend = get_backend(solver)
+    solver = backend.name
     if accuracy not in ACCURACY_LEVELS:
         raise ProblemInputError(
             f"accuracy: must be one of {sorted(ACCURACY_LEVELS)}, got {accuracy!r}"
