@@ -40,7 +40,7 @@ from contact.compliance.fe import SOLVERS
 
 _CHILD = """
 import json, sys, time
-from contact.pipeline import resolve_case
+from contact.catalogue import resolve_case
 from contact.compliance.fe import influence_coefficients
 case = resolve_case(sys.argv[1])
 t0 = time.perf_counter()

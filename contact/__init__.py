@@ -25,11 +25,8 @@ Every per-process cache (memo) of the toolkit is emptied by one call::
     from contact import clear_caches
 """
 
-from contact import _moved
 from geometry import __version__
 from geometry.core.lazy import lazy_exports
-
-_moved.install()
 
 __all__ = [
     "DEFAULT_SOLVER",

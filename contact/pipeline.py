@@ -67,29 +67,7 @@ SEED_TABLE_3_1 = {
     "misalignment": Misalignment(delta_E=-0.15, delta_P=0.12),
 }
 
-#: names that moved out of this module (issue 31): name → the module that has it now
-_MOVED_NAMES = {
-    **dict.fromkeys(("DEFAULT_CASE", "SEED_TABLE_3_1", "bundled_case_path", "bundled_cases",
-                     "resolve_case"), "contact.catalogue"),
-    **dict.fromkeys(("efficiency_map", "EFFICIENCY_MAP_TORQUES", "EFFICIENCY_MAP_SPEEDS"),
-                    "contact.study.efficiency"),
-}
-
-
-def __getattr__(name: str):
-    # the moved names keep working for one release, with a warning naming their module (a
-    # look-up at use, not an import of the layers above: the study engine imports this one)
-    if name in _MOVED_NAMES:
-        import importlib
-        import warnings
-
-        warnings.warn(f"contact.pipeline.{name} moved to {_MOVED_NAMES[name]}.{name}; the old "
-                      "path goes in the next release", DeprecationWarning, stacklevel=2)
-        return getattr(importlib.import_module(_MOVED_NAMES[name]), name)
-    raise AttributeError(f"module 'contact.pipeline' has no attribute {name!r}")
-
 log = logging.getLogger(__name__)
-
 
 
 def resolve_deviations(c: Case, deviations) -> tuple | None:

@@ -6,7 +6,7 @@ named for what it computes:
 
 * :mod:`geometry.core` — the toolkit-wide low layer (no gear in it): errors, validation,
   dataset conventions and netCDF files, atomic files, TOML files, Hertz line contact,
-  version, moved module paths;
+  version, caches, registries' helpers;
 * :mod:`geometry.iso23509` — the blank by ISO 23509: pitch cone (clause 5), blank
   dimensions (clause 6), input data types I and II;
 * :mod:`geometry.machine` — the cradle-type generator: cutter and blades, the machine's
@@ -19,15 +19,11 @@ named for what it computes:
 * :mod:`geometry.case` — case files; :mod:`geometry.plot` — geometry figures.
 """
 
-from geometry import _moved
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.lazy import lazy_exports
 from geometry.core.version import __version__
 
-_moved.install()
-MOVED = _moved.MOVED
-
-__all__ = ["MOVED", "Case", "InputError", "LTCAError", "ModelUnavailableError", "__version__",
+__all__ = ["Case", "InputError", "LTCAError", "ModelUnavailableError", "__version__",
            "load_case"]
 
 # the case schema pulls in NumPy and the machine: imported when first used, so that what

@@ -39,8 +39,8 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = ("contact", "geometry", "friction")
 
 #: the toolkit's low layer, no gear in it (errors, validators, Hertz line contact, dataset
-#: conventions and netCDF files, atomic and TOML files, version, moved paths): the qp
-#: layer may use it and nothing else of geometry
+#: conventions and netCDF files, atomic and TOML files, version, caches, registries'
+#: helpers): the qp layer may use it and nothing else of geometry
 GEOMETRY_LOW = {"geometry.core"}
 
 #: contact's layers and what each may import (besides itself, contact.errors and,
@@ -54,7 +54,7 @@ LAYER_DEPENDS = {
 #: the application layer's levels, lowest first: each unit (a module or subpackage) may
 #: import units of its own level and those below, never above; no cycle between units
 APPLICATION_LEVELS = (
-    ("catalogue, pipeline", {"contact", "contact._moved", "contact.catalogue",
+    ("catalogue, pipeline", {"contact", "contact.catalogue",
                              "contact.pipeline"}),
     ("study, optimize, wear, durability, rating", {"contact.study", "contact.optimize",
                                                    "contact.wear", "contact.durability",

@@ -10,8 +10,11 @@ from pathlib import Path
 
 import pytest
 
+from geometry.core.version import __version__
+
 ROOT = Path(__file__).resolve().parents[1]
 PROJECT = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
+CONFIG = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]
 
 
 def test_license_file_is_the_declared_license():
@@ -30,14 +33,35 @@ def test_citation_file_matches_the_package():
     text = (ROOT / "CITATION.cff").read_text(encoding="utf-8")
     fields = dict(re.findall(r"^([a-z-]+): *\"?([^\"\n]*)\"?$", text, flags=re.MULTILINE))
     assert fields["cff-version"] == "1.2.0"
-    assert fields["version"] == PROJECT["version"]
+    assert fields["version"] == __version__
     assert fields["license"] == PROJECT["license"]["text"]
     assert "Kolivand" in text and "Ohio State" in text
 
 
+def test_the_version_is_written_in_one_place():
+    """pyproject.toml reads the version from geometry/core/version.py (its only literal);
+    the toolkit reports that one (no installed metadata is consulted)."""
+    assert "version" not in PROJECT and "version" in PROJECT["dynamic"]
+    assert CONFIG["setuptools"]["dynamic"]["version"] == {
+        "attr": "geometry.core.version.__version__"}
+    import geometry
+
+    assert geometry.__version__ == __version__
+    assert re.fullmatch(r"\d+\.\d+\.\d+(\.dev\d+|rc\d+)?", __version__)
+
+
 def test_changelog_has_the_current_version():
+    """Keep a Changelog: the first entry is the version being made (``[Unreleased] —
+    X.Y.Z`` until it is released, then ``[X.Y.Z] - YYYY-MM-DD``), with no subsection twice."""
     text = (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
-    assert f"{PROJECT['version']}" in text.split("\n## ")[1].split("\n")[0]
+    first = text.split("\n## ")[1]
+    heading = first.split("\n")[0]
+    assert re.fullmatch(rf"\[Unreleased\] — {re.escape(__version__)}"
+                        rf"|\[{re.escape(__version__)}\] - \d{{4}}-\d{{2}}-\d{{2}}", heading)
+    subsections = re.findall(r"^### (.+)$", first, flags=re.MULTILINE)
+    assert subsections and len(subsections) == len(set(subsections)), subsections
+    assert set(subsections) <= {"Added", "Changed", "Deprecated", "Removed", "Fixed",
+                                "Security"}
 
 
 @pytest.mark.parametrize("package", ["contact", "geometry", "friction"])

@@ -13,6 +13,8 @@ import platform
 from collections.abc import Sequence
 from importlib import metadata
 
+from geometry.core.version import __version__
+
 __all__ = ["cpu_model", "machine_info", "solver_versions"]
 
 #: qpsolvers backend → distribution name where they differ (as qpbenchmark maps them)
@@ -69,7 +71,7 @@ def solver_versions(solvers: Sequence[str]) -> dict[str, str]:
     cvxpy = _version("cvxpy")
     for name in solvers:
         if name == "active_set":
-            out[name] = f"hypoid-ltca {_version('hypoid-ltca')}"
+            out[name] = f"hypoid-ltca {__version__}"
         elif name == "cvxpy":
             out[name] = f"cvxpy {cvxpy}"
         elif name.startswith("cvxpy:"):

@@ -8,5 +8,7 @@ atomic_files   write to a temporary file, then rename
 toml_files     TOML input files read and written
 hertz          Hertz line contact and the contact modulus
 version        the toolkit's version
-moved          old module paths that keep working for one release
+caches         the per-process memos, all cleared by clear_caches
+registries     what the registries of interchangeable models share (names, signatures,
+               plug-ins)
 """
