@@ -81,8 +81,11 @@ def test_report_is_valid_html_whose_summary_equals_the_file(run_files, tmp_path)
     assert said and "ΔE −0.15, ΔP +0.12 mm" in said[0].text
     assert not doc.findall(".//h:table[@id='summary-table']//h:th[.='errors']", NS)
     # every figure embedded as a PNG data URI, nothing fetched from the network
-    imgs = doc.findall(".//h:img", NS)
+    imgs = doc.findall(".//h:section[@id='figures']//h:img", NS)
     assert len(imgs) == len(list(analysis_figures(tree)))
+    # the only other image is the empty one of the click-to-enlarge overlay
+    assert [i.get("src") for i in doc.findall(".//h:div[@id='lightbox']/h:img", NS)] == [None]
+    assert len(doc.findall(".//h:img", NS)) == len(imgs) + 1
     for img in imgs:
         head, data = img.get("src").split(",", 1)
         assert head == "data:image/png;base64"

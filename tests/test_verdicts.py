@@ -170,6 +170,10 @@ def test_the_rating_group_joins_with_its_own_minimum_factors():
     assert v.severity == "fail" and "rating" in v.checks
     assert [f.reason for f in v.findings] == [
         "ISO 10300 pitting safety S_H 0.99 of the gear at 250 N m below S_Hmin 1"]
+    long_life = rt.assign(load_cycles=("member", [np.nan, np.nan]))
+    (f,) = verdict(_tree(ltca=_ltca([700.0]), rating=long_life)).findings
+    assert f.reason.endswith("(long life, Z_NT 1: the [rating] load_cycles of this torque "
+                             "raise it)")
 
 
 def _duty(**over) -> xr.Dataset:

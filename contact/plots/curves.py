@@ -203,6 +203,11 @@ def load_share_figure(ltca: xr.Dataset) -> Figure:
     return fig
 
 
+#: markers of the torques' lines, in order (with their colours C0, C1 …, so that the
+#: torques stay apart in grey print too)
+TORQUE_MARKERS = ("o", "s", "^", "D", "v", "P", "X")
+
+
 def efficiency_curve_figure(friction: xr.Dataset,
                             ltca: xr.Dataset | None = None) -> Figure:
     """Instantaneous mechanical efficiency over the mesh cycles, one line per torque.
@@ -210,9 +215,10 @@ def efficiency_curve_figure(friction: xr.Dataset,
     Parameters
     ----------
     friction : xarray.Dataset
-        ``/friction`` (``efficiency`` (torque, roll) [1], ``mesh_cycle``); roll positions
-        where ``friction_model_extrapolated`` is set are marked with a magenta cross
-        (:data:`contact.plots.style.EXTRAPOLATED`).
+        ``/friction`` (``efficiency`` (torque, roll) [1], ``mesh_cycle``): one line per
+        torque, each with its colour and marker (:data:`TORQUE_MARKERS`); roll positions
+        where ``friction_model_extrapolated`` is set show the torque's marker open with a
+        magenta dot (:data:`contact.plots.style.EXTRAPOLATED`) inside.
     ltca : xarray.Dataset, optional
         ``/ltca``, for the case name and misalignment in the title.
 
@@ -232,19 +238,34 @@ def efficiency_curve_figure(friction: xr.Dataset,
         eff = 100 * friction["efficiency"].isel(torque=i).values
         mean = (100 * float(friction["efficiency_mean"].values[i])
                 if "efficiency_mean" in friction else float(np.nanmean(eff)))
-        ax.plot(x, eff, "o-", ms=2.5, lw=1.1, label=f"{torque_text(tq)} (mean {mean:.2f} %)")
+        # each torque its own colour and marker (issue 56: one colour hid the torques)
+        colour, marker = f"C{i % 10}", TORQUE_MARKERS[i % len(TORQUE_MARKERS)]
+        ax.plot(x, eff, "-", color=colour, marker=marker, ms=3.5, lw=1.2,
+                label=f"{torque_text(tq)} (mean {mean:.2f} %)")
         if "friction_model_extrapolated" in friction:
-            # roll positions where the friction model left its fitted range: marked
+            # roll positions where the friction model left its fitted range: the torque's
+            # marker drawn open in its colour with a magenta dot inside, so the torques
+            # keep their colours and the extrapolation its mark
             out = (friction["friction_model_extrapolated"].isel(torque=i) == 1).any(
                 ("pair", "segment")).values
             if out.any():
-                ax.plot(x[out], eff[out], "x", color=EXTRAPOLATED, ms=6, mew=1.2,
-                        label=None if marked else "friction model extrapolated")
+                ax.plot(x[out], eff[out], ls="none", marker=marker, ms=5.5, mfc="white",
+                        mec=colour, mew=1.1, zorder=3)
+                ax.plot(x[out], eff[out], ls="none", marker="o", ms=1.8, color=EXTRAPOLATED,
+                        zorder=4)
                 marked = True
+    handles = list(ax.get_lines())
+    if marked:
+        from matplotlib.lines import Line2D
+
+        handles.append(Line2D([], [], ls="none", marker="o", ms=5.5, mfc=EXTRAPOLATED,
+                              mec="0.3", mew=1.1,
+                              label="open marker, magenta dot: friction model extrapolated "
+                                    "at that roll"))
     ax.set_xlabel(MESH_CYCLES_LABEL)
     ax.set_ylabel("mechanical efficiency [%]")
     ax.grid(alpha=0.3)
-    legend_below(fig, ax.get_lines(), ncols=2)
+    legend_below(fig, handles, ncols=2)
     a = friction.attrs
     op = (f"{a.get('pinion_speed_rpm', float('nan')):g} rpm, {a.get('lubricant', '')} at "
           f"{a.get('inlet_temperature_degC', float('nan')):g} °C, Rq "

@@ -100,7 +100,8 @@ def duty_report_context(result: xr.DataTree | xr.Dataset, *, figures: bool = Tru
         S_H; with root stress root damage [1], bending life [h], its fillet station's u,
         S_F), ``durability_columns``, ``bins`` (rows of :data:`BIN_COLUMNS`),
         ``bin_columns``, ``cycle`` (energy in and lost [kW h], efficiency [%]),
-        ``bending``, ``bending_text``, ``edge_contact``, ``figures``, ``versions``.
+        ``bending``, ``bending_text``, ``edge_contact``, ``figures``, ``verdict`` (the
+        verdict box: :func:`contact.study.verdicts.verdict`), ``versions``.
 
     Raises
     ------
@@ -157,9 +158,22 @@ def duty_report_context(result: xr.DataTree | xr.Dataset, *, figures: bool = Tru
         "edge_contact": str(ds.attrs.get("edge_contact", "")),
         "edge_note": edge_note(ds) or "",
         "figures": _figures(ds) if figures else [],
+        "verdict": _verdict(ds),
         "versions": {"file": str(ds.attrs.get("toolkit_version", "not recorded")),
                      "report": __version__},
     }
+
+
+def _verdict(ds: xr.Dataset) -> dict[str, Any]:
+    """The verdict box of the page (:func:`contact.study.verdicts.verdict` of the duty
+    cycle): severity, findings, checks."""
+    from contact.study.verdicts import verdict
+
+    v = verdict(ds)
+    return {"severity": v.severity,
+            "findings": [{"severity": f.severity, "check": f.check, "reason": f.reason}
+                         for f in v.findings],
+            "checks": [c.replace("_", " ") for c in v.checks]}
 
 
 def render_duty_report(result: xr.DataTree | xr.Dataset, *, figures: bool = True) -> str:

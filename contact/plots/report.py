@@ -7,7 +7,13 @@ and misalignment, with the peak pressures and the efficiency), the figures of
 :func:`contact.plots.analysis.analysis_figures` embedded as PNG data URIs (no network),
 the scuffing and micropitting table (peak flash and contact temperature, scuffing safety,
 least specific film thickness and micropitting safety per torque), the solver's
-certification and the toolkit versions. Nothing is taken from the machine
+certification and the toolkit versions. It opens with the verdict
+(:func:`contact.study.verdicts.verdict`: pass, attention or fail and the reasons), holds
+the machine-settings sheet per member and flank (:mod:`contact.plots.machine_sheet`) and
+the loaded pattern's dimensions in mm with the contact ratio per torque; its figures
+enlarge on a click, its tables reflow on a narrow screen, and it prints on A4 or Letter
+with each section on its own pages (plain HTML, CSS and a few lines of JavaScript, no
+network). Nothing is taken from the machine
 or the clock: the same file gives the same page anywhere. Groups the file lacks are
 named on the page with what they would have given. The page is rendered by Jinja2 from
 the package template ``contact/templates/report.html.j2`` (autoescaped).
@@ -41,7 +47,8 @@ import xarray as xr
 
 from contact.ltca.summary import edge_load_share
 from contact.plots.analysis import RenderedFigure, analysis_figures, render_figures
-from contact.plots.style import misalignment_text
+from contact.plots.machine_sheet import machine_sheet
+from contact.plots.style import DPI, misalignment_text
 from geometry import __version__
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError, LTCAError
@@ -277,12 +284,14 @@ def _basic_data(inputs_text: str) -> dict | None:
 #: "urad" (UDUNITS, as files and the console write it) → "µrad" on the page: one spelling
 _URAD = re.compile(r"(?<![A-Za-z])urad\b")
 _UM = re.compile(r"(?<=[\d\s(])um\b")
+#: "N m" after a number (the console's torque) → "N·m", as the page's headings write it
+_NM = re.compile(r"(?<=\d) N m\b")
 
 
 def page_units(text: str) -> str:
     """ASCII unit spellings of files and the console as the page writes them: ``urad`` →
-    ``µrad``, ``um`` after a number → ``µm``."""
-    return _UM.sub("µm", _URAD.sub("µrad", str(text)))
+    ``µrad``, ``um`` after a number → ``µm``, ``N m`` after a number → ``N·m``."""
+    return _NM.sub(" N·m", _UM.sub("µm", _URAD.sub("µrad", str(text))))
 
 
 def _solver(lt: xr.Dataset) -> dict:
@@ -369,6 +378,71 @@ def _operating(tree: xr.DataTree, lt, fr, eo) -> list[tuple[str, str]]:
     return rows
 
 
+def _verdict(tree: xr.DataTree) -> dict:
+    """The verdict box: severity, findings (severity, check, reason) and the checks run
+    (:func:`contact.study.verdicts.verdict`)."""
+    from contact.study.verdicts import verdict
+
+    v = verdict(tree)
+    return {"severity": v.severity,
+            "findings": [{"severity": f.severity, "check": f.check, "reason": f.reason}
+                         for f in v.findings],
+            "checks": [c.replace("_", " ") for c in v.checks]}
+
+
+def _pattern(lt: xr.Dataset | None, inputs_text: str) -> list[dict] | None:
+    """Per torque: the loaded pattern's centre and extent on the gear flank in mm
+    (:func:`contact.study.summary.pattern_dimensions`) and the contact ratio, the mean
+    number of tooth pairs carrying load over the mesh cycles (``pairs_in_contact``; its
+    least and largest); None where the file lacks ``/ltca`` or its case does not load."""
+    if lt is None or "pressure_envelope" not in lt:
+        return None
+    from contact.study.summary import pattern_dimensions
+    from geometry.case import case_from_dict
+
+    try:
+        case = case_from_dict(tomllib.loads(inputs_text))
+    except (LTCAError, tomllib.TOMLDecodeError, TypeError, KeyError, ValueError):
+        return None
+    dims = pattern_dimensions(lt, case)
+    pairs = (np.asarray(lt["pairs_in_contact"].values, float) if "pairs_in_contact" in lt
+             else np.full((lt.sizes["torque"], 1), np.nan))
+    rows = []
+    for i, t in enumerate(lt["torque"].values):
+        cells = [_cell(dims[k][i], d) for k, d in (
+            ("pattern_length", 1), ("pattern_height", 1), ("pattern_centre_lengthwise", 1),
+            ("pattern_centre_profile", 1), ("pattern_toe_u", 2), ("pattern_heel_u", 2),
+            ("pattern_root_v", 2), ("pattern_tip_v", 2))]
+        p = pairs[i][np.isfinite(pairs[i])]
+        cells += [_cell(p.mean() if p.size else np.nan, 2),
+                  {"text": f"{p.min():.0f}–{p.max():.0f}" if p.size else "–",
+                   "value": ""}]
+        rows.append({"torque": f"{t:g}", "cells": cells})
+    return rows
+
+
+def _png_size(png: bytes) -> tuple[int, int]:
+    """(width, height) [px] of a PNG from its IHDR chunk (0, 0 if it is none)."""
+    if png[:8] != b"\x89PNG\r\n\x1a\n" or len(png) < 24:
+        return 0, 0
+    return int.from_bytes(png[16:20], "big"), int.from_bytes(png[20:24], "big")
+
+
+#: [in] a figure wider than this spans the page's whole width (a multi-panel figure,
+#: whose panels would be too small in one of the grid's columns)
+WIDE_FIGURE = 7.5
+
+
+def _figure(rf: RenderedFigure, dpi: int = DPI) -> dict:
+    """A figure as the page embeds it: name, caption, base64 PNG, its size in CSS pixels
+    (96 per inch: the figure's own size, drawn at ``dpi``) and whether it spans the page."""
+    w, h = _png_size(rf.png)
+    return {"name": rf.name, "caption": rf.caption,
+            "data": base64.b64encode(rf.png).decode("ascii"),
+            "width": round(w * 96 / dpi), "height": round(h * 96 / dpi),
+            "wide": w / dpi > WIDE_FIGURE}
+
+
 def report_context(tree: xr.DataTree,
                    figures: Iterable[RenderedFigure] | None = None) -> dict:
     """Everything the report shows, from the analysis tree alone.
@@ -384,7 +458,12 @@ def report_context(tree: xr.DataTree,
     Returns
     -------
     dict
-        Keys ``case``, ``basic_data`` (:func:`contact.plots.basic_data.basic_data_rows`),
+        Keys ``verdict`` (:func:`contact.study.verdicts.verdict`: ``severity``,
+        ``findings``, ``checks``), ``case``, ``basic_data``
+        (:func:`contact.plots.basic_data.basic_data_rows`), ``machine_sheet``
+        (:func:`contact.plots.machine_sheet.machine_sheet`), ``pattern`` (per torque the
+        loaded pattern in mm and the contact ratio; None without ``/ltca``), ``figures``
+        (each with its size in CSS pixels and ``wide``),
         ``provenance``, ``operating``, ``misalignment``, ``columns`` and ``summary`` (the
         table of :data:`SUMMARY_COLUMNS`), ``te_table``, ``solver``, ``absent``,
         ``durability`` (the scuffing and micropitting table, None for a file without
@@ -409,8 +488,7 @@ def report_context(tree: xr.DataTree,
     absent = [{"group": f"/{g}", "gives": ABSENT[g]} for g, ok in present.items() if not ok]
     if figures is None:
         figures = render_figures(analysis_figures(tree))
-    figs = [{"name": rf.name, "caption": rf.caption,
-             "data": base64.b64encode(rf.png).decode("ascii")} for rf in figures]
+    figs = [_figure(rf) for rf in figures]
     warnings = []
     if fr is not None and "model_range_warnings" in fr.attrs:
         try:
@@ -436,6 +514,9 @@ def report_context(tree: xr.DataTree,
         "misalignment": (misalignment_text(tree.attrs) or misalignment_text(eo.attrs)
                          or "not recorded"),
         "basic_data": _basic_data(inputs_text),
+        "machine_sheet": machine_sheet(case),
+        "pattern": _pattern(lt, inputs_text),
+        "verdict": _verdict(tree),
         "te_table": _te_table(tree),
         "durability": _durability(lt, fr),
         "rating": _rating(tree, lt),

@@ -69,8 +69,11 @@ EDGE = "Reds"
 #: the mark of results a model extrapolated (friction model outside its fitted range): a
 #: colour none of the colour maps above uses, so it never reads as a value
 EXTRAPOLATED = "#ff00ff"
-#: resolution of the written PNGs [dots per inch]
-DPI = 100
+#: resolution of the written PNGs [dots per inch]: 150, so that the figures' 7-10 pt text
+#: (legends, ticks) keeps 15-21 px of height (at 100 dpi it had 10-14, hard to read once a
+#: multi-panel figure is scaled down; issue 56); the report shows each figure at its own
+#: size (96 CSS px per inch), sharp on high-density screens and in print
+DPI = 150
 
 #: how netCDF (UDUNITS) unit strings are written on axes
 _UNIT_TEXT = {"urad": "µrad", "um": "µm", "degC": "°C", "N m": "N·m", "m/s": "m/s",

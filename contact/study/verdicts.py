@@ -354,7 +354,11 @@ def _safeties(fr: xr.Dataset) -> list[Finding]:
 
 def _rating(rt: xr.Dataset) -> list[Finding]:
     out = []
-    for name, least, what in (("S_H", "S_Hmin", "pitting"), ("S_F", "S_Fmin", "bending")):
+    # the rating's load cycles per member, NaN: long life (absent: not said)
+    cycles = (np.asarray(rt["load_cycles"].values, float).ravel() if "load_cycles" in rt
+              else np.zeros(1))
+    for name, least, what, factor in (("S_H", "S_Hmin", "pitting", "Z_NT"),
+                                      ("S_F", "S_Fmin", "bending", "Y_NT")):
         if name not in rt or least not in rt:
             continue
         smin = float(rt[least])
@@ -363,9 +367,12 @@ def _rating(rt: xr.Dataset) -> list[Finding]:
             for j, m in enumerate(s["member"].values):
                 x = float(s.values[i, j])
                 if np.isfinite(x) and x < smin:
+                    life = (f" (long life, {factor} 1: the [rating] load_cycles of this "
+                            "torque raise it)" if not np.isfinite(cycles[j % cycles.size])
+                            else "")
                     out.append(Finding("fail", "rating",
                                        f"ISO 10300 {what} safety {name} {x:.2f} of the {m} at "
-                                       f"{_t(t)} below {least} {smin:g}"))
+                                       f"{_t(t)} below {least} {smin:g}{life}"))
     return out
 
 
