@@ -545,8 +545,9 @@ def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: 
         "scuffing_structural_factor": cond.structural_factor,
         "material_pinion": names[0],
         "material_gear": names[1],
-        "effusivity_pinion_W_s0.5_per_m2_K": float(effusivity[0]),
-        "effusivity_gear_W_s0.5_per_m2_K": float(effusivity[1]),
+        # [W s^0.5 / (m^2 K)]; CF 1.8 §2.3: attribute names of letters, digits, underscores
+        "effusivity_pinion_W_s05_per_m2_K": float(effusivity[0]),
+        "effusivity_gear_W_s05_per_m2_K": float(effusivity[1]),
         "fzg_load_stage": math.nan if lub.fzg_load_stage is None else float(lub.fzg_load_stage),
         "base_oil": lub.base_oil or "",
         "durability_source": lub.durability_source,

@@ -113,7 +113,7 @@ def _value(ds: xr.Dataset, name: str) -> np.ndarray:
     if name == "middle_line_ends":  # (x1, y1, x2) of the middle contact line
         return contact_line_ends(float(ds["f"][1]), float(ds["beta_vb"]), float(ds["gamma"]),
                                  float(ds["g_va"]), float(ds["b_veff"]))[:3]
-    v = np.atleast_1d(ds[name].values).astype(float)
+    v = np.atleast_1d(ds[{"Z_v": "Z_speed"}.get(name, name)].values).astype(float)
     return np.degrees(v) if name in ANGLES else v
 
 

@@ -43,7 +43,7 @@ _GEOMETRY = (("d_v", "d_v [mm]", 3), ("z_v", "z_v", 3), ("z_vn", "z_vn", 3),
              ("eps_vb", "eps_vb", 3), ("eps_vg", "eps_vg", 3), ("b_veff", "b_v,eff [mm]", 3),
              ("l_bm", "l_bm [mm]", 3), ("rho_rel", "rho_rel [mm]", 3))
 _PITTING = (("Z_MB", "Z_M-B", 3), ("Z_LS", "Z_LS", 3), ("Z_E", "Z_E [N^0.5/mm]", 3),
-            ("Z_Hyp", "Z_Hyp", 3), ("Z_L", "Z_L", 3), ("Z_v", "Z_v", 3), ("Z_R", "Z_R", 3),
+            ("Z_Hyp", "Z_Hyp", 3), ("Z_L", "Z_L", 3), ("Z_speed", "Z_v", 3), ("Z_R", "Z_R", 3),
             ("Z_NT", "Z_NT", 3), ("sigma_H0", "sigma_H0 [N/mm2]", 1),
             ("sigma_H", "sigma_H [N/mm2]", 1), ("sigma_HP", "sigma_HP [N/mm2]", 1),
             ("S_H", "S_H", 3))
@@ -83,7 +83,7 @@ def tables(ds) -> str:
                     disable_numparse=True)]
     for t in ds["torque"].values:
         one = ds.sel(torque=t)
-        out += ["", f"T1 = {t:g} N m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
+        out += ["", f"T1 = {t:g} N·m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
                     f"{float(one['F_vmt']):.1f} N, F_n {float(one['F_n']):.1f} N",
                 "load factors: " + "  ".join(
                     f"{label} {float(one[name]):.3f}" for name, label in (

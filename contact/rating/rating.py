@@ -309,7 +309,9 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
         "nu40": var((), inputs.nu40, "mm2/s", "kinematic viscosity of the oil at 40 degC "
                                               "nu40", f"{_P2} cl. 8"),
         "Z_L": var(m, v["Z_L"], "1", "lubricant factor Z_L", f"{_P2} cl. 8"),
-        "Z_v": var(m, v["Z_v"], "1", "speed factor Z_v", f"{_P2} cl. 8"),
+        # Z_speed, not Z_v: netCDF names are compared case-blind (CF 1.8 §2.3) and z_v is
+        # the virtual number of teeth
+        "Z_speed": var(m, v["Z_v"], "1", "speed factor Z_v", f"{_P2} cl. 8"),
         "Z_R": var(m, v["Z_R"], "1", "roughness factor Z_R", f"{_P2} cl. 8"),
         "v_g": var((), v["slide"]["v_g"], "m/s", "sliding velocity at the mean point v_g",
                    f"{_P2} cl. 6"),
