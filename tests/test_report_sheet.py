@@ -52,8 +52,8 @@ def test_the_page_opens_with_the_verdict(page):
     assert "attention" in sections[0].get("class").split()
     assert _text(sections[0].find("h:h2", NS)) == "Verdict: ATTENTION"
     items = {li.get("data-check"): _text(li) for li in sections[0].iter(f"{{{NS['h']}}}li")}
-    assert "flank_pressure" in items and "sigma_Hlim 1500 MPa" in items["flank_pressure"]
-    assert "at 500 N·m" in items["flank_pressure"]  # the page's spelling of N m
+    assert "flank_pressure" in items and "σ_Hlim 1500 MPa" in items["flank_pressure"]
+    assert "at 500 N·m" in items["flank_pressure"]  # the page's spelling of N·m
     heel = [t for k, t in ((li.get("data-check"), _text(li)) for li in
                            sections[0].iter(f"{{{NS['h']}}}li")) if k == "edge_contact"]
     assert any(t.startswith("attention at 50 N·m") and "heel" in t for t in heel), heel

@@ -61,10 +61,10 @@ def test_the_default_case_is_flagged_for_its_flank_pressure_and_heel_contact(def
     p500 = float(lt["pressure_max_flank"].sel(torque=500.0))
     assert p500 > sigma_hlim  # 1.8 GPa (the issue)
     flank = [f for f in v.findings if f.check == "flank_pressure"]
-    assert len(flank) == 1 and f"{p500:.0f} MPa at 500 N m" in flank[0].reason
-    assert "sigma_Hlim 1500 MPa" in flank[0].reason
+    assert len(flank) == 1 and f"{p500:.0f} MPa at 500 N·m" in flank[0].reason
+    assert "σ_Hlim 1500 MPa" in flank[0].reason
     edge = {f.reason.split(":")[0]: f for f in v.findings if f.check == "edge_contact"}
-    at50 = edge["at 50 N m"].reason
+    at50 = edge["at 50 N·m"].reason
     assert "reaches the gear's heel" in at50 and "gear heel" in at50
     # the edge shares the finding names add up to the summary's edge share
     share = float(edge_load_share(lt)[0])
@@ -96,7 +96,7 @@ def test_flank_pressure_at_sigma_hlim_and_at_the_static_strength():
     just = 1e-6 * sigma_hlim
     v = verdict(_tree(ltca=_ltca([sigma_hlim, sigma_hlim + just])))
     assert [f.severity for f in v.findings] == ["attention"]
-    assert "at 500 N m" in v.findings[0].reason
+    assert "at 500 N·m" in v.findings[0].reason
     v = verdict(_tree(ltca=_ltca([static, static + 1.0])))
     assert [f.severity for f in v.findings] == ["fail", "attention"]
     assert "static strength 2400 MPa" in v.findings[0].reason
@@ -132,7 +132,7 @@ def test_edge_contact_and_boundaries_on_a_synthetic_mesh():
         v=[0.05, 0.5, 1.0])
     (f,) = verdict(_tree(ltca=ds)).findings
     assert f.severity == "attention" and f.check == "edge_contact"
-    assert f.reason == ("at 50 N m: the loaded pattern reaches the gear's toe; edge contact "
+    assert f.reason == ("at 50 N·m: the loaded pattern reaches the gear's toe; edge contact "
                         "carries 25.00 % of the torque (gear toe 25.00 %)")
     assert float(edge_load_share(ds)[0]) == pytest.approx(0.25)
 
@@ -146,7 +146,7 @@ def test_uncertified_rolls_and_extrapolated_friction_want_attention():
                                                  "load_share": 0.012}})})
     v = verdict(_tree(ltca=lt, friction=fr))
     assert [f.check for f in v.findings] == ["certification", "friction_extrapolated"]
-    assert "1 of 3 at 50 N m" in v.findings[0].reason
+    assert "1 of 3 at 50 N·m" in v.findings[0].reason
     assert "1 of 9 flank segments (1.2 % of the load)" in v.findings[1].reason
     clean = fr.assign(friction_model_extrapolated=(("torque", "roll"), [[0, 0, 0]]))
     assert [f.check for f in verdict(_tree(ltca=_ltca([700.0]), friction=clean)).findings] \
@@ -158,7 +158,7 @@ def test_scuffing_and_micropitting_below_one_fail(name):
     fr = xr.Dataset({name: ("torque", [1.0, 0.999, np.nan])}, coords={"torque": [1.0, 2, 3]})
     v = verdict(_tree(ltca=_ltca([700.0]), friction=fr))
     assert [(f.severity, f.check) for f in v.findings] == [("fail", name.split("_")[0])]
-    assert "0.999 at 2 N m below 1" in v.findings[0].reason
+    assert "0.999 at 2 N·m below 1" in v.findings[0].reason
 
 
 def test_the_rating_group_joins_with_its_own_minimum_factors():
@@ -169,7 +169,7 @@ def test_the_rating_group_joins_with_its_own_minimum_factors():
     v = verdict(_tree(ltca=_ltca([700.0]), rating=rt))
     assert v.severity == "fail" and "rating" in v.checks
     assert [f.reason for f in v.findings] == [
-        "ISO 10300 pitting safety S_H 0.99 of the gear at 250 N m below S_Hmin 1"]
+        "ISO 10300 pitting safety S_H 0.99 of the gear at 250 N·m below S_Hmin 1"]
     long_life = rt.assign(load_cycles=("member", [np.nan, np.nan]))
     (f,) = verdict(_tree(ltca=_ltca([700.0]), rating=long_life)).findings
     assert f.reason.endswith("(long life, Z_NT 1: the [rating] load_cycles of this torque "
@@ -207,6 +207,10 @@ def test_duty_cycle_damage_fails_and_low_safety_wants_attention():
     assert verdict(_duty(contact_static_limit_exceeded=1)).severity == "fail"
     no_root = _duty().drop_vars(["root_life", "root_damage_max", "bending_safety_factor"])
     assert [f.check for f in verdict(no_root).findings] == ["bending"]
+    flagged = _duty().assign(plausibility=("bin", np.array([0, 1], np.int8)))
+    (f,) = verdict(flagged).findings
+    assert (f.severity, f.check) == ("fail", "implausible")
+    assert f.reason.startswith("plastic contact in bin 1")
     tree = xr.DataTree.from_dict({"/duty_cycle": _duty(damage=[1.5, 0.1])})
     assert verdict(tree).severity == "fail"
 
@@ -260,3 +264,18 @@ def test_what_is_no_result_is_refused():
     with pytest.raises(InputError, match="severity"):
         Finding("pass", "x", "y")
     assert SEVERITIES == ("pass", "attention", "fail")
+
+
+def test_a_real_duty_cycle_flags_its_bins_and_says_its_safety():
+    """Two bins of the illustrative spectrum (one mesh cycle of 6 rolls each): every bin
+    carries the study's plausibility flag, and the verdict names what it finds."""
+    from contact.study import StudyRun, example_duty_cycle, run_duty_cycle
+
+    ds = run_duty_cycle(resolve_case(None), example_duty_cycle(bins=2),
+                        StudyRun(options=OPTS, scheduler="synchronous"))
+    assert ds["plausibility"].dims == ("bin",)
+    assert ds["plausibility"].attrs["flag_meanings"].split()[0] == "plastic_contact"
+    assert ds["plausibility"].values.tolist() == [0, 0]  # 50 and 100 N·m: plausible
+    v = verdict(ds)
+    assert v.kind == "duty cycle" and "implausible" in v.checks
+    assert {"illustrative", "bending"} <= {f.check for f in v.findings}

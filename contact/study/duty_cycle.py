@@ -43,6 +43,7 @@ from contact.durability import (
 )
 from contact.ltca import LTCAOptions
 from contact.ltca.options import json_options
+from contact.ltca.plausibility import CAUSES
 from contact.study.duty_cycle_inputs import DutyCycle
 from contact.study.run import StudyRun
 from contact.study.store import ChunkSpec, ResultStore
@@ -131,7 +132,9 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         (u, v) [MPa] of the flank (contact-curve) segments and ``edge_pressure_envelope``
         of the edge segments (their larger is ``/ltca/pressure_envelope``) and, when the
         analysis has ``root_stress``, ``root_stress_peak`` (member, fillet_point) [MPa];
-        ``status`` 0 ok, 1 uncertified rolls, 2 failed (``reason``). A failing bin does not raise.
+        ``status`` 0 ok, 1 uncertified rolls, 2 failed (``reason``); ``plausibility``, the
+        CF flag of the causes ``ltca run`` warns of (:func:`contact.study.summary.
+        plausibility_bits`, as every study point). A failing bin does not raise.
 
     Notes
     -----
@@ -141,10 +144,12 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     """
     from contact.ltca.summary import edge_load_share
     from contact.pipeline import operating_conditions, run_analysis
+    from contact.study.summary import plausibility_bits
     from friction.efficiency import efficiency_analysis
 
     case, duty = shared.case, shared.duty
     torque = float(duty.torque[index])
+    ltca = None
     if shared.coefficients:   # the client's FE coefficients into this worker's cache
         from contact.compliance.fe import prime_cache
 
@@ -185,8 +190,19 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         vals = dict.fromkeys(BIN_VARIABLES, np.nan)
         harm, u, v, root, fillet_u = np.full(3, np.nan), [0.0], [0.0], None, None
         env = edge_env = np.full((1, 1), np.nan)
+        ltca = None  # the input alone is judged
     data = {k: data_var(("point",), np.array([float(x)]), *BIN_VARIABLES[k])
             for k, x in vals.items()}
+    # the causes ltca run warns of, as the studies flag every point (contact.study.summary)
+    try:
+        bits = plausibility_bits(ltca, case, duty.misalignment(index, case.misalignment), 1)
+    except InputError:  # a misalignment the table cannot give: the bin failed for it
+        bits = np.zeros(1, np.int8)
+    data["plausibility"] = data_var(
+        ("point",), bits, "1", "causes for which the bin's results are implausible, as "
+        "ltca run warns (contact.ltca.plausibility; 0 none)",
+        flag_masks=np.array([1 << k for k in range(len(CAUSES))], dtype=np.int8),
+        flag_meanings=" ".join(CAUSES))
     data["lte_harmonics"] = data_var(("point", "harmonic"), np.asarray(harm, float)[None],
                                      "urad", "amplitude of the first three mesh harmonics "
                                      "of the loaded transmission error")
@@ -221,7 +237,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
 #: the data variables of a bin's chunk (:func:`analyse_bin`; ``root_stress_peak`` only
 #: with the root stress, at the bins that did not fail)
 _BIN_CHUNK_VARIABLES = (*BIN_VARIABLES, "lte_harmonics", "pressure_envelope",
-                        "edge_pressure_envelope", "status", "reason")
+                        "edge_pressure_envelope", "plausibility", "status", "reason")
 
 #: finite at every bin whose ``status`` is 0 (every roll certified: the LTE is defined;
 #: the envelopes are 0 where no segment lands): NaN there is a damaged chunk

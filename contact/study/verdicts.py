@@ -51,6 +51,8 @@ present).
   below :data:`DUTY_MIN_SAFETY` = 1 — σ_lim over the peak stress with life factor 1, so
   below 1 the peak bin is beyond the endurance limit and the Miner damage, not the factor,
   decides the life.
+* ``implausible`` (fail): bins whose ``plausibility`` flag holds a cause ``ltca run``
+  warns of (as every study point).
 * ``static`` (fail): a flank pressure above the static strength (the dataset's
   ``contact_static_limit_exceeded``).
 * ``edge_contact``, ``certification`` (attention): bins with edge contact or
@@ -182,7 +184,7 @@ class Verdict:
 
 
 def _t(torque: float) -> str:
-    return f"{torque:g} N m"
+    return f"{torque:g} N·m"
 
 
 def _worst_first(findings: list[Finding]) -> tuple[Finding, ...]:
@@ -213,12 +215,12 @@ def _flank_pressure(lt: xr.Dataset) -> list[Finding]:
         if p > static:
             out.append(Finding("fail", "flank_pressure",
                                f"flank peak pressure {p:.0f} MPa at {_t(t)} above the static "
-                               f"strength {static:.0f} MPa (sigma_Hlim {limit:.0f} MPa x "
+                               f"strength {static:.0f} MPa (σ_Hlim {limit:.0f} MPa × "
                                f"Z_NT {weak.static_life_factor:g}, {mat}, grade {GRADE}): "
                                "no life at this torque"))
         else:
             out.append(Finding("attention", "flank_pressure",
-                               f"flank peak pressure {p:.0f} MPa at {_t(t)} above sigma_Hlim "
+                               f"flank peak pressure {p:.0f} MPa at {_t(t)} above σ_Hlim "
                                f"{limit:.0f} MPa ({mat}, ISO 6336-5 grade {GRADE}): beyond "
                                "the endurance limit, a finite life at this torque "
                                "(ltca duty-cycle counts the damage)"))
@@ -341,7 +343,7 @@ def _safeties(fr: xr.Dataset) -> list[Finding]:
     out = []
     for name, check, symbol, least in (
             ("scuffing_safety", "scuffing", "S_B", SCUFFING_MIN),
-            ("micropitting_safety", "micropitting", "S_lambda", MICROPITTING_MIN)):
+            ("micropitting_safety", "micropitting", "S_λ", MICROPITTING_MIN)):
         if name not in fr:
             continue
         for t, s in zip(fr["torque"].values, fr[name].values, strict=True):
@@ -402,8 +404,8 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
 
 def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
     findings: list[Finding] = []
-    checks = ["damage", "safety", "static", "edge_contact", "certification", "bending",
-              "illustrative"]
+    checks = ["damage", "safety", "implausible", "static", "edge_contact", "certification",
+              "bending", "illustrative"]
     hours = float(np.sum(ds["hours"].values)) if "hours" in ds else math.nan
     members = [str(m) for m in ds["member"].values]
     for k, m in enumerate(members):
@@ -423,10 +425,22 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                     f"{m}: {symbol} {float(ds[name][k]):.2f} below {DUTY_MIN_SAFETY:g} at the "
                     f"peak-torque bin (life factor 1): beyond the endurance limit there; "
                     f"the Miner damage {d:.3g} over the cycle decides the life"))
+    if "plausibility" in ds:
+        from contact.ltca.plausibility import CAUSES
+
+        bits = np.asarray(ds["plausibility"].values, np.int64).ravel()
+        for k, cause in enumerate(CAUSES):
+            bad = np.flatnonzero(bits & (1 << k))
+            if bad.size:
+                findings.append(Finding(
+                    "fail", "implausible",
+                    f"{cause.replace('_', ' ')} in bin{'s' * (bad.size > 1)} "
+                    f"{', '.join(str(b) for b in bad)} (the cause ltca run warns of; "
+                    "/duty_cycle/plausibility)"))
     if int(ds.attrs.get("contact_static_limit_exceeded", 0)):
         findings.append(Finding("fail", "static",
                                 "a flank pressure exceeds the static contact strength of "
-                                "the material (sigma_Hlim x Z_NT at the S-N curve's static "
+                                "the material (σ_Hlim × Z_NT at the S–N curve's static "
                                 "end) in some bin: no life there"))
     if "edge_load_share" in ds and "torque" in ds:
         share = np.nan_to_num(ds["edge_load_share"].values)
@@ -542,8 +556,8 @@ CHECKS: Mapping[str, tuple[str, ...]] = {
     "analysis": ("implausible", "flank_pressure", "edge_contact", "plastic_edges",
                  "certification", "friction_extrapolated", "scuffing", "micropitting",
                  "rating"),
-    "duty cycle": ("damage", "safety", "static", "edge_contact", "certification",
-                   "bending", "illustrative"),
+    "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
+                   "certification", "bending", "illustrative"),
     "V-H check": ("degenerate", "target", "map"),
 }
 
@@ -563,7 +577,7 @@ def verdict(result: xr.DataTree | xr.Dataset) -> Verdict:
     -------
     Verdict
         ``severity`` ``"pass"``, ``"attention"`` or ``"fail"``; ``findings`` with a
-        reason each (numbers in MPa, N m, mm, %); ``checks`` the checks that ran.
+        reason each (numbers in MPa, N·m, mm, %); ``checks`` the checks that ran.
 
     Raises
     ------
