@@ -320,11 +320,18 @@ def plausibility_line(ds, name: str = "plausibility", what: str = "points") -> s
         return (f"plausibility: all {bits.size} {what} plausible (none flagged for plastic "
                 "contact, flank above the material's limit, LTE spread or a misalignment "
                 "beyond the blank)")
-    causes = ", ".join(f"{c.replace('_', ' ')} {int(np.count_nonzero(bits & (1 << k)))}"
+    causes = ", ".join(f"{_CAUSE_WORDS.get(c, c)} {int(np.count_nonzero(bits & (1 << k)))}"
                        for k, c in enumerate(CAUSES) if np.any(bits & (1 << k)))
+    per = ", per torque" if other else ""
     return (f"WARNING: plausibility: {n} of {bits.size} {what} flagged implausible "
-            f"({causes}; the variable {name} says which, per torque; the causes are those "
+            f"({causes}; the variable {name} says which{per}; the causes are those "
             "`ltca run` warns of)")
+
+
+#: the causes of contact.ltca.plausibility.CAUSES as the summary line says them
+_CAUSE_WORDS = {"plastic_contact": "plastic contact", "flank_above_limit": "flank above limit",
+                "lte_spread": "LTE spread",
+                "misalignment_beyond_blank": "misalignment beyond blank"}
 
 
 def sweep_command(args: argparse.Namespace) -> int:
