@@ -279,3 +279,21 @@ def test_a_real_duty_cycle_flags_its_bins_and_says_its_safety():
     v = verdict(ds)
     assert v.kind == "duty cycle" and "implausible" in v.checks
     assert {"illustrative", "bending"} <= {f.check for f in v.findings}
+
+
+def test_an_analysis_mounted_beyond_its_blanks_fails():
+    """The tree's own case and misalignment (its ``inputs`` and ``misalignment_*``
+    attributes): ΔE 5 mm is beyond 5 % of the 30.2 mm face width; 1.5 mm is not."""
+    case = resolve_case(None)
+
+    def tree(e: float) -> xr.DataTree:
+        t = _tree(ltca=_ltca([700.0]))
+        t.attrs = {"inputs": case.to_toml(), "misalignment_delta_E_mm": e,
+                   "misalignment_delta_P_mm": 0.12, "misalignment_delta_G_mm": 0.0,
+                   "misalignment_delta_Sigma_deg": 0.0}
+        return t
+
+    (f,) = verdict(tree(5.0)).findings
+    assert (f.severity, f.check) == ("fail", "implausible")
+    assert f.reason.startswith("misalignment beyond the blank: ΔE = 5 mm, more than 1.51 mm")
+    assert verdict(tree(1.5)).severity == "pass"

@@ -161,7 +161,7 @@ def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
         out.append(
             "plastic contact: segments at the material's contact-pressure limit carry "
             f"up to {_slashed(100 * share[bad], '{:.1f}')} % of the torque at "
-            f"{_slashed(torque[bad])} N m (more than {100 * PLASTIC_SHARE_LIMIT:g} % at "
+            f"{_slashed(torque[bad])} N·m (more than {100 * PLASTIC_SHARE_LIMIT:g} % at "
             "some roll position); the edges (or flanks) would flatten in running, so "
             "these are the results of a contact that cannot last (/ltca/segment_state)")
     bad = flags["flank_above_limit"]
@@ -170,7 +170,7 @@ def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
         p = np.asarray(ltca["pressure_max_flank"].values, float)
         out.append(
             f"flank above the material's limit: flank peak pressure "
-            f"{_slashed(p[bad], '{:.0f}')} MPa at {_slashed(torque[bad])} N m, above the "
+            f"{_slashed(p[bad], '{:.0f}')} MPa at {_slashed(torque[bad])} N·m, above the "
             f"contact-pressure limit {limit:.0f} MPa; the flank would yield, which the "
             "elastic flank model does not follow (LTCAOptions.flank_pressure_limit "
             "bounds it)")
@@ -181,7 +181,7 @@ def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
                      / np.asarray(ltca["lte_mean"].values, float))
         out.append(
             f"LTE spread: LTE peak-to-peak {_slashed(ratio[bad], '{:.2f}')} times its "
-            f"mean at {_slashed(torque[bad])} N m (more than {LTE_SPREAD_LIMIT:g}); a mesh "
+            f"mean at {_slashed(torque[bad])} N·m (more than {LTE_SPREAD_LIMIT:g}); a mesh "
             "that carries its load on the flanks varies far less (seed Table 3.1: "
             "0.04-0.12): edge contact or loss of contact over part of the mesh cycle")
     return out

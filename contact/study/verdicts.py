@@ -20,7 +20,9 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
 present).
 
 * ``implausible`` (fail): each cause of
-  :func:`contact.ltca.plausibility.plausibility_warnings`.
+  :func:`contact.ltca.plausibility.plausibility_warnings`, and a misalignment beyond the
+  blanks' plausible range (:func:`contact.ltca.plausibility.misalignment_warnings`, from
+  the case and misalignment the tree records).
 * ``flank_pressure`` : the flank peak pressure against the allowable contact stress
   number σ_Hlim of the weaker member's material at ISO 6336-5 grade :data:`GRADE`
   (:func:`contact.durability.sn_curves`, ``geometry/core/data/materials.toml``):
@@ -378,6 +380,30 @@ def _rating(rt: xr.Dataset) -> list[Finding]:
     return out
 
 
+def _misalignment(tree: xr.DataTree) -> list[str]:
+    """The mounting of an analysis beyond its blanks' plausible range
+    (:func:`contact.ltca.plausibility.misalignment_warnings`), from the case it ran (the
+    ``inputs`` attribute) and its misalignment (the root's ``misalignment_*``); none where
+    the tree records neither."""
+    import tomllib
+
+    from contact.ltca.plausibility import misalignment_warnings
+    from geometry.case import case_from_dict
+    from geometry.core.errors import LTCAError
+    from geometry.pair.assembly import Misalignment
+
+    a = tree.attrs
+    try:
+        case = case_from_dict(tomllib.loads(str(a["inputs"])))
+        mis = Misalignment(delta_E=float(a["misalignment_delta_E_mm"]),
+                           delta_P=float(a["misalignment_delta_P_mm"]),
+                           delta_G=float(a["misalignment_delta_G_mm"]),
+                           delta_Sigma=math.radians(float(a["misalignment_delta_Sigma_deg"])))
+    except (KeyError, ValueError, TypeError, LTCAError, tomllib.TOMLDecodeError):
+        return []
+    return misalignment_warnings(case, mis)
+
+
 def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
     lt, fr, rt = (_group(tree, g) for g in ("ltca", "friction", "rating"))
     findings: list[Finding] = []
@@ -386,6 +412,7 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
         checks += ["implausible", "flank_pressure", "edge_contact", "plastic_edges",
                    "certification"]
         findings += [Finding("fail", "implausible", w) for w in plausibility_warnings(lt)]
+        findings += [Finding("fail", "implausible", w) for w in _misalignment(tree)]
         findings += _flank_pressure(lt) + _edge_contact(lt) + _plastic(lt)
         findings += _certification(lt)
     if fr is not None:
