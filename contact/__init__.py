@@ -23,36 +23,81 @@ The whole analysis of a case (geometry → ease-off UTCA → LTCA) as one DataTr
 Every per-process cache (memo) of the toolkit is emptied by one call::
 
     from contact import clear_caches
+
+The names in ``__all__`` are the package's public, stable surface (issue 54; with those of
+``friction`` and ``geometry``, docs/api.md): the analysis, its options and files, the
+studies, duty cycle, rating, optimisation and report, the QP and its solver registry, the
+compliance-model registry. Everything else is internal and may move.
 """
 
 from geometry import __version__
 from geometry.core.lazy import lazy_exports
 
 __all__ = [
+    "DEFAULT_CASE",
     "DEFAULT_SOLVER",
     "DEFAULT_TOLERANCE",
     "ContactError",
     "ContactProblem",
     "ContactSolution",
+    "DutyCycle",
+    "FEOptions",
+    "LTCAOptions",
     "NotPositiveDefiniteError",
+    "OptimizeProblem",
     "ProblemInputError",
     "SolverNotFoundError",
+    "StudyRun",
     "__version__",
+    "available_compliance_models",
     "available_solvers",
+    "bundled_cases",
     "clear_caches",
     "contact_residuals",
+    "ease_off",
+    "influence_coefficients",
+    "iso10300_rating",
+    "loaded_tca",
+    "optimize",
+    "read_duty_cycle",
+    "read_netcdf",
+    "register_backend",
+    "register_compliance_model",
+    "resolve_case",
     "run_analysis",
+    "run_duty_cycle",
+    "sample",
     "solve_contact",
+    "sweep",
+    "unloaded_tca",
+    "verdict",
+    "vh_check",
+    "write_netcdf",
+    "write_report",
 ]
 
 #: the public names and the module each comes from, imported when first used (PEP 562):
 #: the QP layer pulls in SciPy and the pipeline the whole chain, which ``ltca --help`` and
-#: ``ltca cases`` do not need (issue 32: start-up ≤ 0.5 s)
+#: ``ltca cases`` do not need (issue 32: start-up ≤ 0.5 s). This is the stable surface
+#: (issue 54): the examples and the documentation import from here, never from a submodule.
 _LAZY = {
     **dict.fromkeys(("DEFAULT_SOLVER", "DEFAULT_TOLERANCE", "ContactProblem", "ContactSolution",
                      "available_solvers", "contact_residuals", "solve_contact"), "contact.qp"),
+    "register_backend": "contact.qp.solvers",
     **dict.fromkeys(("ContactError", "NotPositiveDefiniteError", "ProblemInputError",
                      "SolverNotFoundError"), "contact.errors"),
+    **dict.fromkeys(("DEFAULT_CASE", "bundled_cases", "resolve_case"), "contact.catalogue"),
+    **dict.fromkeys(("LTCAOptions", "loaded_tca", "available_compliance_models",
+                     "register_compliance_model"), "contact.ltca"),
+    **dict.fromkeys(("ease_off", "unloaded_tca"), "contact.utca"),
+    **dict.fromkeys(("FEOptions", "influence_coefficients"), "contact.compliance.fe"),
+    **dict.fromkeys(("DutyCycle", "StudyRun", "read_duty_cycle", "run_duty_cycle", "sample",
+                     "sweep", "vh_check"), "contact.study"),
+    "verdict": "contact.study.verdicts",
+    **dict.fromkeys(("OptimizeProblem", "optimize"), "contact.optimize"),
+    "iso10300_rating": "contact.rating",
+    "write_report": "contact.plots.report",
+    **dict.fromkeys(("read_netcdf", "write_netcdf"), "geometry.core.io"),
     "run_analysis": "contact.pipeline",
     "clear_caches": "geometry.core.caches",
 }

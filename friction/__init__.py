@@ -1,5 +1,58 @@
 """Mechanical power loss and efficiency (seed chapter 5).
 
-Lubricant properties, film thickness and lambda ratio, friction coefficient
-models, rolling loss, power loss and efficiency.
+Lubricant properties, film thickness and lambda ratio, friction coefficient models
+(a registry: the bundled ``kolivand2009``, ``xu2007``, ``benedict_kelley``, ``constant``
+and any registered with :func:`register_friction_model`), the mixed-EHL line-contact
+solvers, rolling loss, power loss and efficiency, flash temperature and scuffing, specific
+film thickness and micropitting.
+
+The names below are the package's public, stable surface (issue 54): import them from
+``friction``, never from a submodule::
+
+    from friction import efficiency_analysis, load_lubricant, register_friction_model
 """
+
+from geometry.core.lazy import lazy_exports
+
+__all__ = [
+    "DEFAULT_FRICTION_MODEL",
+    "LineContactCondition",
+    "Lubricant",
+    "OperatingConditions",
+    "available_friction_models",
+    "available_lubricants",
+    "blok_flash_temperature",
+    "efficiency_analysis",
+    "friction_coefficient",
+    "kolivand2009",
+    "load_kolivand2009_fit",
+    "load_lubricant",
+    "micropitting_safety",
+    "pressure_viscosity_coefficient",
+    "register_friction_model",
+    "scuffing_safety",
+    "solve_line_contact",
+    "solve_stochastic_line_contact",
+    "specific_film_thickness",
+    "viscosity",
+]
+
+#: the public names and the module each comes from, imported when first used (PEP 562)
+_LAZY = {
+    **dict.fromkeys(("DEFAULT_FRICTION_MODEL", "available_friction_models",
+                     "friction_coefficient", "register_friction_model"),
+                    "friction.coefficient"),
+    **dict.fromkeys(("Lubricant", "available_lubricants", "load_lubricant",
+                     "pressure_viscosity_coefficient", "viscosity"), "friction.lubricant"),
+    "OperatingConditions": "friction.operating",
+    "efficiency_analysis": "friction.efficiency",
+    **dict.fromkeys(("kolivand2009", "load_kolivand2009_fit"), "friction.kolivand2009"),
+    **dict.fromkeys(("LineContactCondition", "solve_line_contact"),
+                    "friction.ehl.line_contact"),
+    "solve_stochastic_line_contact": "friction.ehl.stochastic",
+    **dict.fromkeys(("blok_flash_temperature", "scuffing_safety"),
+                    "friction.flash_temperature"),
+    **dict.fromkeys(("micropitting_safety", "specific_film_thickness"),
+                    "friction.micropitting"),
+}
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())

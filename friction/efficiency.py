@@ -16,7 +16,7 @@ For every loaded contact segment of an LTCA (the ``/ltca`` dataset of
 6. per roll position the instantaneous power loss and efficiency
    η = 1 − (ΣP_s + ΣP_r)/P_in, P_in = T_p ω_p; their mean over the mesh cycles;
 7. scuffing and micropitting from the same local contact (docs/scuffing_micropitting.md):
-   Blok's flash temperature of each segment's Hertzian band of friction heat μ p |V_s|
+   Blok's flash temperature of each segment's Hertzian band of friction heat μ p abs(V_s)
    shared by the two surfaces moving across the contact line
    (:mod:`friction.flash_temperature`), the contact temperature on ISO/TS 6336-20's bulk
    temperature, the scuffing safety against the oil's FZG scuffing temperature, and the
@@ -141,7 +141,7 @@ def efficiency_analysis(
     xarray.Dataset
         The ``/friction`` dataset: over (``torque``, ``roll``, ``pair``, ``segment``)
         ``sliding_velocity``, ``rolling_velocity`` [m/s], ``slide_to_roll`` [1] (signed,
-        across the contact line), ``slide_to_roll_total`` [1] (|V_s|/V_r: the friction
+        across the contact line), ``slide_to_roll_total`` [1] (abs(V_s)/V_r: the friction
         model's and the thermal factors' SR),
         ``film_thickness`` [µm], ``lambda_ratio`` [1], ``friction_coefficient`` [1],
         ``sliding_loss``, ``rolling_loss`` [W]; over (``torque``, ``roll``)
@@ -294,7 +294,7 @@ class _Segments(NamedTuple):
     sliding_velocity: np.ndarray  # [m/s]
     rolling_velocity: np.ndarray  # [m/s] entraining, across the contact line
     slide_to_roll: np.ndarray  # [1] signed, sliding across the line / rolling
-    slide_to_roll_total: np.ndarray  # [1] |V_s| / V_r, the μ model's SR (seed Eq. 5.5, 5.7)
+    slide_to_roll_total: np.ndarray  # [1] abs(V_s) / V_r, the μ model's SR (seed Eq. 5.5, 5.7)
     pinion_speed_across: np.ndarray  # [m/s] |pinion surface velocity across the line|
     gear_speed_across: np.ndarray  # [m/s] |gear surface velocity across the line|
     half_width: np.ndarray  # [mm] Hertzian half-width 2w/(π p_max)
@@ -305,7 +305,7 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
     """Which segments of ``ltca`` carry load (force finite and > 0), and of those their
     force [N], load per length [N/mm], peak pressure [MPa], length and equivalent radius
     [mm], and their sliding and entraining speeds [m/s] and slide-to-roll ratios [1] — the
-    signed one across the contact line, and the total |V_s|/V_r the friction model is fed —
+    signed one across the contact line, and the total abs(V_s)/V_r the friction model is fed —
     at the pinion speed [rpm] (:func:`friction.kinematics.surface_velocities`); each
     member's surface speed across the contact line [m/s] (the speed at which it passes
     through the band, the flash temperature's), the Hertzian half-width [mm] and whether
@@ -363,15 +363,15 @@ def _half_width(w: np.ndarray, p: np.ndarray) -> np.ndarray:
 
 
 def _total_slide_to_roll(sliding: np.ndarray, rolling: np.ndarray) -> np.ndarray:
-    """|V_s|/V_r [1] from the total sliding speed |V_s| (seed Eq. 5.5, both components)
+    """abs(V_s)/V_r [1] from the total sliding speed abs(V_s) (seed Eq. 5.5, both components)
     and the rolling speed across the contact line V_r (Eq. 5.6) [m/s]; +inf where V_r = 0
     and the surfaces slide (0 where neither moves).
 
     Why the total (docs/friction.md, "Which slide-to-roll ratio"): the film's shear
-    stress is η_eff |V_s|/h (seed Eq. 5.7, V_s of Eq. 5.5) — the oil is sheared by the
+    stress is η_eff abs(V_s)/h (seed Eq. 5.7, V_s of Eq. 5.5) — the oil is sheared by the
     whole relative velocity, along the line as well as across it, and the Eyring stress
     and the shear heat follow the magnitude of the shear rate — and the loss the μ is
-    multiplied by is μ F |V_s|. The line-contact study that μ is fitted to slides across
+    multiplied by is μ F abs(V_s). The line-contact study that μ is fitted to slides across
     its line only, where the two ratios are one."""
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(rolling > 0.0, sliding / np.where(rolling > 0.0, rolling, 1.0),
@@ -465,7 +465,7 @@ class _Durability(NamedTuple):
 
 def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: _Oil,
                         op: OperatingConditions, cond: ScuffingConditions) -> _Durability:
-    """Blok's flash temperature [K] of each loaded segment (μ p |V_s| over the Hertzian
+    """Blok's flash temperature [K] of each loaded segment (μ p abs(V_s) over the Hertzian
     band, each member's surface speed across the line and effusivity), the bulk [degC]
     and contact temperature [degC], the specific film thickness λ_GF = h_min/Ra [1], their
     extremes per torque over the loaded flank segments and the safeties against scuffing
@@ -622,7 +622,7 @@ def _peclet_comment(seg: _Segments, effusivity: list, diffusivity: list) -> str:
             low = m & (pe < _PECLET_HIGH)
             parts.append(f"{int(low.sum())} of {int(m.sum())} loaded {name} segments (least "
                          f"Pe {float(np.min(pe[m])):.2g})")
-    return ("Blok: Hertzian band source mu p |V_s| shared by both surfaces moving across the "
+    return ("Blok: Hertzian band source mu p abs(V_s) shared by both surfaces moving across the "
             "contact line (Jaeger's moving source at high Peclet number); Pe = v b / (2 kappa) "
             f"of the surface taking most of the heat is below {_PECLET_HIGH:g}, where the "
             "formula overestimates, at " + " and ".join(parts))
@@ -701,7 +701,7 @@ def _friction_dataset(
         ),
         "slide_to_roll_total": data_var(
             dims4, _scatter(seg.slide_to_roll_total, loaded), "1",
-            "total slide-to-roll ratio |V_s| / V_r (the friction model's input)",
+            "total slide-to-roll ratio abs(V_s) / V_r (the friction model's input)",
         ),
         "film_thickness": data_var(
             dims4, _scatter(fric.film_thickness, loaded), "um", "minimum film thickness"
@@ -812,7 +812,7 @@ def _durability_variables(dur: _Durability, loaded: np.ndarray) -> dict[str, tup
 
 #: The inputs whose spans :func:`_range_by_contact` reports: name → (symbol, units, digits).
 _SPAN_INPUTS = {"hertz_pressure": ("p_h", "MPa", 0), "radius": ("R_eq", "mm", 2),
-                "lambda_ratio": ("λ", "", 3), "slide_to_roll": ("|V_s|/V_r", "", 4),
+                "lambda_ratio": ("λ", "", 3), "slide_to_roll": ("abs(V_s)/V_r", "", 4),
                 "entraining_velocity": ("u_e", "m/s", 2)}
 
 
@@ -821,7 +821,7 @@ def _range_by_contact(ltca: xr.Dataset, seg: _Segments, fric: _Friction) -> dict
     curves: line contact of two flanks, what a line-contact study covers) and ``edge``
     (a rounded tooth edge on the mating flank, R_eq ≈ the edge radius) — each with its
     loaded and flagged segment counts, the flagged share of the load [1] and the spans
-    (min, max) of p_h [MPa], R_eq [mm], λ, the total slide-to-roll ratio |V_s|/V_r [1]
+    (min, max) of p_h [MPa], R_eq [mm], λ, the total slide-to-roll ratio abs(V_s)/V_r [1]
     and u_e [m/s] over the flagged ones: what lies outside the model's range, and where
     (the flag says why)."""
     kind = ltca["segment_kind"].values if "segment_kind" in ltca else None

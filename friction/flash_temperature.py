@@ -1,8 +1,8 @@
 """Blok's flash temperature, the contact temperature and the scuffing safety of a loaded mesh.
 
 Friction heats a sliding contact. In a lubricated line contact of Hertzian half-width b
-the heat of friction is generated as a band source of flux q(x) = μ p(x) |V_s| across
-the contact line (μ the friction coefficient, p(x) the contact pressure, |V_s| the
+the heat of friction is generated as a band source of flux q(x) = μ p(x) abs(V_s) across
+the contact line (μ the friction coefficient, p(x) the contact pressure, abs(V_s) the
 sliding speed), and the two surfaces carry it away as they pass through the band, each
 at its own speed v₁, v₂ across the line. At the Péclet numbers of gear contacts
 (Pe = v b/(2κ) ≳ 5 on the flanks) heat is conducted into each surface only normal to it
@@ -19,7 +19,7 @@ holds at every x when the heat is shared in proportion to B_i √v_i,
 
 and the flash temperature, the maximum of the surfaces' common rise over the band, is
 
-    θ_fl = C · μ p_max |V_s| √b / (B₁√v₁ + B₂√v₂)                        (Blok)
+    θ_fl = C · μ p_max abs(V_s) √b / (B₁√v₁ + B₂√v₂)                        (Blok)
 
 with C = 2√2/√π = 1.5958 for a uniform band (p_max the uniform pressure; the maximum is at
 the band's trailing edge) and C = max_X I(X)/√π = 1.2346 for the semi-elliptic (Hertzian)
@@ -27,7 +27,7 @@ band p(x) = p_max √(1 − x²/b²), I(X) = ∫_{−1}^{X} √(1 − s²)/√(X
 at x = 0.652 b (x from the band's centre, the surfaces entering at x = −b). In Blok's own
 form, with the load per length w (2b p_max of the uniform band, π b p_max/2 of the
 semi-elliptic one) and the band's width 2b, they are θ_fl = 1.128 and
-1.11 μ w |V_s| / ((B₁√v₁ + B₂√v₂) √(2b)) — his "1.13" (uniform) and "1.11"
+1.11 μ w abs(V_s) / ((B₁√v₁ + B₂√v₂) √(2b)) — his "1.13" (uniform) and "1.11"
 (semi-elliptic) (Blok 1937, 1963). :data:`BLOK_HERTZIAN` was
 computed by adaptive quadrature of I(X) and a bounded scalar maximisation to 1e-10;
 ``tests/test_scuffing_micropitting.py`` checks both constants against Jaeger's integral
@@ -120,7 +120,7 @@ __all__ = [
 
 Array = NDArray[np.float64]
 
-#: C of θ_fl = C μ p_max |V_s| √b / Σ B√v for a uniform band of pressure p_max:
+#: C of θ_fl = C μ p_max abs(V_s) √b / Σ B√v for a uniform band of pressure p_max:
 #: 2√2/√π (the maximum, at the trailing edge x = b, of 2 q √(x + b)/√π)
 BLOK_UNIFORM = 2.0 * math.sqrt(2.0 / math.pi)
 #: C for the semi-elliptic (Hertzian) band: max over X of
@@ -244,7 +244,7 @@ def blok_flash_temperature(
     *,
     distribution: str = "hertzian",
 ) -> Array | float:
-    """Blok's flash temperature of a band heat source μ p(x) |V_s| on two moving surfaces.
+    """Blok's flash temperature of a band heat source μ p(x) abs(V_s) on two moving surfaces.
 
     Parameters
     ----------
@@ -255,7 +255,7 @@ def blok_flash_temperature(
     half_width : array_like — [mm]
         Half-width b of the band across the contact line, ≥ 0.
     sliding_speed : array_like — [m/s]
-        |V_s|, the magnitude of the sliding velocity (the heat's source), ≥ 0.
+        abs(V_s), the magnitude of the sliding velocity (the heat's source), ≥ 0.
     speed_1, speed_2 : array_like — [m/s]
         Each surface's speed through the band (its velocity across the contact line,
         magnitude), ≥ 0.
@@ -269,7 +269,7 @@ def blok_flash_temperature(
     Returns
     -------
     float or array — [K]
-        θ_fl = C μ p_max |V_s| √b / (B₁√v₁ + B₂√v₂), the maximum over the band of both
+        θ_fl = C μ p_max abs(V_s) √b / (B₁√v₁ + B₂√v₂), the maximum over the band of both
         surfaces' common temperature rise (broadcast shape of the inputs); 0 where no heat
         is generated; NaN where heat is generated but neither surface moves across the
         line (the moving-source model has no answer: nothing carries the heat through
@@ -297,7 +297,7 @@ def blok_flash_temperature(
     mu, p, b, vs, s1, s2, e1, e2 = broadcast(
         friction_coefficient=mu, pressure=p, half_width=b, sliding_speed=vs, speed_1=s1,
         speed_2=s2, effusivity_1=e1, effusivity_2=e2)
-    # q_max [W/m2] = μ p [MPa → Pa] |V_s|; √b [√m]
+    # q_max [W/m2] = μ p [MPa → Pa] abs(V_s); √b [√m]
     heat = mu * p * 1e6 * vs * np.sqrt(b * 1e-3)
     total = e1 * np.sqrt(s1) + e2 * np.sqrt(s2)
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -104,8 +104,8 @@ FEATURES: Mapping[str, Callable[[Mapping[str, Array]], Array]] = MappingProxyTyp
     "G*H": lambda g: g["G"] * g["H"],
     "G*H*ln_SR": lambda g: g["G"] * g["H"] * np.log(g["SR"]),
     # the flash-temperature group: Blok's (Jaeger's) flash temperature of the film's heat
-    # μ p̄ u_s over a band 2b moving at u_e is ∝ μ p_h |SR| √(2b u_e)/B (B the steel's
-    # effusivity, fixed); F = p_h[GPa] |SR| √(2b[mm] u_e[m/s]) carries the viscosity's fall
+    # μ p̄ u_s over a band 2b moving at u_e is ∝ μ p_h abs(SR) √(2b u_e)/B (B the steel's
+    # effusivity, fixed); F = p_h[GPa] abs(SR) √(2b[mm] u_e[m/s]) carries the viscosity's fall
     # with the surfaces' temperature that the solver's thermal film shear has and the
     # isothermal μ_E has not (held-out RMS 16.7 % → 9.0 % with it, issue 51)
     "ln_1+flash": lambda g: np.log1p(_flash_group(g)),
@@ -113,7 +113,7 @@ FEATURES: Mapping[str, Callable[[Mapping[str, Array]], Array]] = MappingProxyTyp
 
 
 def _flash_group(g: Mapping[str, Array]) -> Array:
-    """F = p_h |SR| √(2b u_e), p_h in GPa, b in mm, u_e in m/s (the groups' inputs)."""
+    """F = p_h abs(SR) √(2b u_e), p_h in GPa, b in mm, u_e in m/s (the groups' inputs)."""
     b = np.sqrt(8.0 * g["load_per_length"] * g["radius"] / (math.pi * g["e_prime"]))
     return g["hertz_pressure"] * 1e-3 * g["SR"] * np.sqrt(2.0 * b * g["entraining_velocity"])
 
@@ -171,7 +171,7 @@ def contact_groups(*, hertz_pressure: ArrayLike, slide_to_roll: ArrayLike,
     Returns
     -------
     dict of str to array (broadcast shape)
-        ``lambda`` (Pan–Hamrock h_min/σ), ``SR`` (|SR|), ``U`` = η₀u_e/(E′R),
+        ``lambda`` (Pan–Hamrock h_min/σ), ``SR`` (abs(SR)), ``U`` = η₀u_e/(E′R),
         ``G`` = αE′, ``H`` = p_h/E′, ``W`` = w′/(E′R) = 2πH², ``Sc/R`` = σ/R,
         ``Seq/R`` = Rq₁Rq₂/(Rq₁ + Rq₂)/R, ``Seq/Sc``; also ``load_per_length`` [N/mm]
         (w′ = 2πR p_h²/E′) and ``film_min`` [µm], and the inputs in their units
@@ -574,7 +574,7 @@ def kolivand2009(
     hertz_pressure : float or array — [MPa]
         p_h > 0.
     slide_to_roll : float or array — [1]
-        SR; |SR| is used.
+        SR; abs(SR) is used.
     entraining_velocity : float or array — [m/s]
         u_e = (u₁ + u₂)/2 > 0.
     viscosity : float or array — [Pa s]

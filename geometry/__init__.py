@@ -23,10 +23,19 @@ from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.lazy import lazy_exports
 from geometry.core.version import __version__
 
-__all__ = ["Case", "InputError", "LTCAError", "ModelUnavailableError", "__version__",
-           "load_case"]
+__all__ = ["BevelGearDesign", "Case", "InputError", "LTCAError", "Misalignment",
+           "ModelUnavailableError", "__version__", "blank_geometry", "load_basic", "load_case",
+           "synthesize"]
 
 # the case schema pulls in NumPy and the machine: imported when first used, so that what
-# needs only the version or the exceptions (``ltca --help``) starts quickly
-__getattr__, __dir__ = lazy_exports(__name__, {"Case": "geometry.case",
-                                               "load_case": "geometry.case"}, globals())
+# needs only the version or the exceptions (``ltca --help``) starts quickly. These names
+# are the package's public, stable surface (issue 54).
+__getattr__, __dir__ = lazy_exports(__name__, {
+    "Case": "geometry.case",
+    "load_case": "geometry.case",
+    "Misalignment": "geometry.pair.assembly",
+    "BevelGearDesign": "geometry.iso23509.design_data",
+    "blank_geometry": "geometry.iso23509.blank",
+    "load_basic": "geometry.synthesis.basic_design",
+    "synthesize": "geometry.synthesis.case_synthesis",
+}, globals())

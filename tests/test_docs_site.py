@@ -3,7 +3,8 @@ every Markdown page parses (MyST), every public name's docstring renders (numpyd
 toctree entry exists, and the example gallery's quickest script is executed.
 
 The build runs on a copy of ``docs/`` (sphinx-gallery writes its pages into the source
-directory) with ``CHANGELOG.md`` and ``CONTRIBUTING.md`` beside it, as in the repository.
+directory) with the rest of the repository linked beside it (the pages include
+``CHANGELOG.md`` and ``CONTRIBUTING.md`` and link to sources, cases and benchmarks).
 ``HYPOID_LTCA_DOCS_GALLERY`` selects the gallery's quickest example (the whole gallery
 runs when the site is built for publication: ``sphinx-build -W -b html docs …``). ~30 s.
 """
@@ -28,8 +29,9 @@ def test_site_builds_with_warnings_as_errors(tmp_path):
     src = tmp_path / "repo" / "docs"
     shutil.copytree(DOCS, src, ignore=shutil.ignore_patterns("_build", "auto_examples",
                                                              "sg_execution_times.rst"))
-    for name in ("CHANGELOG.md", "CONTRIBUTING.md"):
-        shutil.copy(ROOT / name, tmp_path / "repo" / name)
+    for entry in ROOT.iterdir():  # the rest of the repository, which pages link to
+        if entry.name not in ("docs", ".git") and not entry.name.startswith("."):
+            (tmp_path / "repo" / entry.name).symlink_to(entry)
     out = tmp_path / "html"
     env = {**os.environ, "HYPOID_LTCA_DOCS_GALLERY": "/plot_stribeck", "MPLBACKEND": "Agg"}
     res = subprocess.run([sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-b",
@@ -51,3 +53,22 @@ def test_site_builds_with_warnings_as_errors(tmp_path):
                 assert f"{package.__name__}.{name}" in api, f"{package.__name__}.{name}"
     # the executed example's figure is on its page
     assert (out / "_images").is_dir() and any((out / "_images").glob("sphx_glr_plot_stribeck*"))
+
+
+def test_examples_import_only_the_public_api():
+    """The gallery's scripts and the pages' Python blocks import from the package tops
+    (``import contact``, ``from friction import …``), never from a submodule: what a user
+    copies keeps working across releases (issue 54 item 3)."""
+    import re
+
+    from doc_pages import blocks
+
+    sources = [(p.name, p.read_text(encoding="utf-8"))
+               for p in sorted((DOCS / "examples").glob("*.py"))]
+    sources += [(where, code) for where, code in blocks("python")
+                if where.startswith(("README", "docs/getting_started"))]
+    assert sources
+    for where, code in sources:
+        deep = re.findall(r"^\s*(?:from|import)\s+((?:contact|friction|geometry)\.\S+)",
+                          code, flags=re.M)
+        assert not deep, (where, deep)

@@ -53,7 +53,7 @@ def register(sub) -> None:
                         "output with suffix .nc)")
     p.add_argument("--variable", nargs=3, action="append", default=None,
                    metavar=("NAME", "LOW", "HIGH"),
-                   help="a variable and its bounds in its unit (deg, mm, µm, 1/rad ...); "
+                   help="a variable and its bounds in its unit (deg, mm, um, 1/rad ...); "
                         "repeatable; replaces the table's variables")
     options.torque_option(p, default="the [optimize] table's, else the case's [operating]")
     options.misalignment_options(p, default="the [optimize] table's misalignments, else the "
@@ -63,7 +63,7 @@ def register(sub) -> None:
     p.add_argument("--max-flank-pressure", type=float, nargs="+", default=None,
                    metavar="MPA", help="largest flank peak pressure [MPa] per torque")
     p.add_argument("--lte-pp-range", type=float, nargs=2, default=None,
-                   metavar=("LOW", "HIGH"), help="LTE peak-to-peak range [µrad]")
+                   metavar=("LOW", "HIGH"), help="LTE peak-to-peak range [urad]")
     p.add_argument("--method", choices=list(METHODS), default=None,
                    help="optimiser (default differential_evolution)")
     p.add_argument("--max-evaluations", type=count(2, 1_000_000), default=None, metavar="N",
@@ -87,8 +87,9 @@ def register(sub) -> None:
 
 def _start(arg: str | None):
     """(case, basic design or None) of the command's CASE argument: a basic design file
-    (it has a ``[design]`` table and no ``[pinion]``/``[gear]``) is synthesised; anything else is a case or a bundled
-    name (:func:`contact.catalogue.resolve_case`, which names a bad file)."""
+    (it has a ``[design]`` table and no ``[pinion]``/``[gear]``) is synthesised; anything
+    else is a case or a bundled name (:func:`contact.catalogue.resolve_case`, which names
+    a bad file)."""
     from contact.catalogue import resolve_case
 
     path = Path(arg) if arg is not None else None
@@ -197,7 +198,7 @@ def run_optimize(args: argparse.Namespace) -> int:
                     zip(result.names, result.units, result.start, result.best, strict=True)],
                    headers=["variable", "unit", "start", "result"], tablefmt="github"))
     rows = []
-    for k, unit, scale in (("lte_mean", "µrad", 1), ("lte_peak_to_peak", "µrad", 1),
+    for k, unit, scale in (("lte_mean", "urad", 1), ("lte_peak_to_peak", "urad", 1),
                            ("edge_load_share", "%", 100), ("pressure_max_flank", "MPa", 1)):
         rows.append((k, unit, " / ".join(f"{v:.4g}" for v in scale * s.metrics[k].max(0)),
                      " / ".join(f"{v:.4g}" for v in scale * b.metrics[k].max(0))))

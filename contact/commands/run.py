@@ -53,7 +53,7 @@ def register(sub) -> None:
         "are the case's [operating] table unless given here; the default case's are the "
         "seed's Table 3.1 conditions (pinion torque 50/250/500 N m, ΔE = −0.15 mm, "
         "ΔP = +0.12 mm (the text extraction lost the seed's signs; this reading is argued "
-        "in docs/cases.md); 1500 rpm, 75W90 at 90 °C, Rq 0.8 µm).",
+        "in docs/cases.md); 1500 rpm, 75W90 at 90 degC, Rq 0.8 um).",
     )
     case_argument(p)
     torque_option(p)
@@ -413,7 +413,7 @@ def print_plausibility_warnings(ltca, case=None, misalignment=None) -> None:
     if case is not None and misalignment is not None:
         texts += misalignment_warnings(case, misalignment)
     for text in texts:
-        print(f"WARNING: {text}")
+        print(f"WARNING: {console_text(text)}")
 
 
 #: findings a command prints under its verdict (the report lists them all)
@@ -429,6 +429,7 @@ def print_verdict(result) -> None:
     from contact.study.verdicts import verdict
 
     for line in verdict(result).lines(VERDICT_LINES):
+        line = console_text(line)
         indent = " " * (len(line) - len(line.lstrip()))
         print(textwrap.fill(line, 100, initial_indent="", subsequent_indent=indent + "    ",
                             break_on_hyphens=False))
@@ -456,7 +457,7 @@ def root_stress_rows(ltca) -> list[tuple[str, ...]]:
         cells = [f"{t:g}"]
         for member in ("pinion", "gear"):
             face = rs.isel(torque=i).sel(member=member).max(("roll", "tooth"))
-            k = int(face.argmax(skipna=True))
+            k = int(face.argmax("fillet_point", skipna=True))
             cells += [f"{float(ltca['root_stress_max'].isel(torque=i).sel(member=member)):.0f}",
                       f"{float(face['fillet_u'].values[k]):.2f}"]
         rows.append(tuple(cells))
@@ -548,12 +549,37 @@ def print_extrapolation_warning(friction) -> None:
     flagged, loaded = extrapolated_segments(friction)
     if flagged:
         where = extrapolation_summary(friction)
-        print(f"WARNING: friction model {friction.attrs.get('friction_model', '')} "
-              f"extrapolated outside its fitted range at {flagged} of {loaded} loaded "
-              "segments (flag /friction/friction_model_extrapolated; marked on the plots): "
-              "the efficiency there is an extrapolation"
-              + (f": {where} (how far it was checked beyond its range: docs/friction.md)"
-                 if where else ""))
+        print_wrapped(f"WARNING: friction model {friction.attrs.get('friction_model', '')} "
+                      f"extrapolated outside its fitted range at {flagged} of {loaded} loaded "
+                      "segments (flag /friction/friction_model_extrapolated; marked on the "
+                      "plots): the efficiency there is an extrapolation"
+                      + (f": {where} (how far it was checked beyond its range: "
+                         "docs/friction.md)" if where else ""))
+
+
+#: the width [characters] the command line wraps its long messages to
+LINE_WIDTH = 100
+
+#: the page's unit spellings → the console's (docs/nomenclature.md, Units: one spelling
+#: per medium; the console writes the files' UDUNITS spelling, in ASCII)
+CONSOLE_UNITS = {"N·m": "N m", "µm": "um", "µrad": "urad", "°C": "degC"}
+
+
+def console_text(text: str) -> str:
+    """``text`` (a finding, a warning shared with the HTML report) with its units spelt as
+    the console spells them (:data:`CONSOLE_UNITS`)."""
+    for page, console in CONSOLE_UNITS.items():
+        text = text.replace(page, console)
+    return text
+
+
+def print_wrapped(text: str, width: int = LINE_WIDTH) -> None:
+    """Print ``text`` wrapped to ``width`` columns at spaces (never inside a word, a path
+    or a number), its continuation lines indented by two."""
+    import textwrap
+
+    print(textwrap.fill(text, width, subsequent_indent="  ", break_long_words=False,
+                        break_on_hyphens=False))
 
 
 def write_figures(path: Path, plots: str | None, report: str | None,

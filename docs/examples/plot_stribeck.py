@@ -14,8 +14,7 @@ falling up to 20 m/s: docs/ehl.md, the regime map).
 import matplotlib.pyplot as plt
 import numpy as np
 
-from friction.kolivand2009 import kolivand2009
-from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
+from friction import kolivand2009, load_lubricant, pressure_viscosity_coefficient, viscosity
 
 oil = load_lubricant("75W90")
 speed = np.geomspace(0.05, 20.0, 40)  # m/s

@@ -75,7 +75,7 @@ class Misalignment:
     delta_G : float — [mm]
         Gear axial displacement; positive away from the mesh.
     delta_Sigma : float — [rad]
-        Change of the shaft angle; positive increases it; |ΔΣ| < 10°.
+        Change of the shaft angle; positive increases it; abs(ΔΣ) < 10°.
 
     Raises
     ------
