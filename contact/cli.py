@@ -9,6 +9,7 @@ sub-command lives in its own module of :mod:`contact.commands` with a
 from __future__ import annotations
 
 import argparse
+import difflib
 import importlib
 import logging
 import os
@@ -103,11 +104,57 @@ def attach_negative_values(argv: Sequence[str]) -> list[str]:
     return out
 
 
+def _subcommand(parser: argparse.ArgumentParser, name: str | None):
+    """The sub-command parser ``name`` of ``parser`` (None: no such command)."""
+    for action in parser._actions:  # argparse keeps its sub-parsers on this action
+        if isinstance(action, argparse._SubParsersAction):
+            return action.choices.get(name)
+    return None
+
+
+def suggest_options(parser: argparse.ArgumentParser, tokens: Sequence[str]) -> list[str]:
+    """``"did you mean --torque?"`` for each mistyped option among ``tokens`` that is close
+    to one of ``parser``'s (difflib's similarity ≥ 0.75: a slip of a letter or two, not
+    another word); none for the others."""
+    options = [o for a in parser._actions for o in a.option_strings if o.startswith("--")]
+    hints = []
+    for token in tokens:
+        if token.startswith("--"):
+            close = difflib.get_close_matches(token.split("=", 1)[0], options, n=1,
+                                              cutoff=0.75)
+            if close:
+                hints.append(f"did you mean {close[0]}?")
+    return hints
+
+
+def parse_arguments(parser: argparse.ArgumentParser, argv: Sequence[str]) -> argparse.Namespace:
+    """Parse ``argv`` (after :func:`attach_negative_values`); refuse, with the sub-command's
+    usage (exit 2), an option it does not know — suggesting the closest one it does
+    (``ltca run --torqe 5``: "did you mean --torque?") — and a torque ≤ 0 (the coast flank
+    is ``--flank coast`` with a positive torque, where the command has ``--flank``)."""
+    args, extras = parser.parse_known_args(attach_negative_values(argv))
+    command = _subcommand(parser, getattr(args, "command", None)) or parser
+    if extras:
+        hints = suggest_options(command, extras)
+        command.error(f"unrecognized arguments: {' '.join(extras)}"
+                      + (f" ({'; '.join(hints)})" if hints else ""))
+    torque = getattr(args, "torque", None)
+    if torque is not None:
+        values = torque if isinstance(torque, list) else [torque]
+        bad = [t for t in values if not t > 0.0]
+        if bad:
+            coast = any("--flank" in a.option_strings for a in command._actions)
+            command.error(f"--torque: must be > 0 [N m], got {bad[0]:g}"
+                          + ("; the coast flank is --flank coast with a positive torque"
+                             if coast else ""))
+    return args
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
     argv = list(sys.argv[1:] if argv is None else argv)
-    args = parser.parse_args(attach_negative_values(argv))
+    args = parse_arguments(parser, argv)
     args.argv = argv  # as typed, for the provenance of files a command writes
     args.verbose = args.verbose + getattr(args, "verbose_sub", 0)
     args.quiet = args.quiet or getattr(args, "quiet_sub", False)

@@ -523,7 +523,10 @@ def test_run_warning_says_where_the_model_extrapolated(capsys):
     flagged, loaded = extrapolated_segments(fr)
     assert 0 < flagged < loaded
     print_extrapolation_warning(fr)
-    out = capsys.readouterr().out
+    printed = capsys.readouterr().out
+    # wrapped to lines of at most 100 characters (issue 56), read here as one text
+    assert all(len(line) <= 100 for line in printed.splitlines())
+    out = " ".join(line.strip() for line in printed.splitlines())
     assert out.startswith("WARNING: friction model kolivand2009 extrapolated")
     assert f"at {flagged} of {loaded} loaded segments" in out
     assert "segments on the flanks" in out and "segments on the edges" in out

@@ -112,7 +112,7 @@ def sweep_tag(args: argparse.Namespace) -> str:
 
 def run(args: argparse.Namespace) -> int:
     from contact.catalogue import resolve_case
-    from contact.commands.run import ltca_options
+    from contact.commands.run import ltca_options, print_wrapped
     from contact.plots import plot_efficiency_map
     from contact.plots.style import misalignment_text
     from contact.study.efficiency import efficiency_map
@@ -147,11 +147,12 @@ def run(args: argparse.Namespace) -> int:
     print(efficiency_table(emap))
     share = emap["friction_model_extrapolated_share"]
     if float(share.max()) > 0:
-        print(f"WARNING: friction model {emap.attrs.get('friction_model', '')} extrapolated "
-              f"outside its fitted range at {100 * float(share.max()):.0f} % of the loaded "
-              "segments at worst "
-              f"({int((share > 0).sum())} of {share.size} operating points; "
-              "friction_model_extrapolated_share): those efficiencies are extrapolations")
+        print_wrapped(f"WARNING: friction model {emap.attrs.get('friction_model', '')} "
+                      f"extrapolated outside its fitted range at "
+                      f"{100 * float(share.max()):.0f} % of the loaded segments at worst "
+                      f"({int((share > 0).sum())} of {share.size} operating points; "
+                      "friction_model_extrapolated_share): those efficiencies are "
+                      "extrapolations")
     path = write_netcdf(emap, Path(output), inputs=case.to_toml())
     print(f"wrote {path}")
     if args.plots:

@@ -19,7 +19,7 @@ TOP_EXAMPLES = (
 #: command → its examples
 EXAMPLES: dict[str, tuple[str, ...]] = {
     "cases": ("ltca cases",),
-    "run": ("ltca run                                  # 50/250/500 N·m, 1500 rpm",
+    "run": ("ltca run                                  # 50/250/500 N m, 1500 rpm",
             "ltca run kolivand2009_fh_12x41 --torque 200 --dE 0.05 --plots figs "
             "--report report.html"),
     "plot": ("ltca plot kolivand2009_fm_11x41_reference.nc --plots figs",),

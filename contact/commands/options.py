@@ -293,9 +293,9 @@ def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
     g.add_argument("--lubricant", default=None,
                    help=f"bundled oil name or oil TOML file ({D['lubricant']})")
     g.add_argument("--temperature", type=float, nargs=nargs, default=None, metavar="DEGC",
-                   help=f"oil inlet temperature [degC] ({D['temperature']:g} °C)")
+                   help=f"oil inlet temperature [degC] ({D['temperature']:g} degC)")
     g.add_argument("--roughness", type=float, nargs=nargs, default=None, metavar="UM",
-                   help=f"RMS roughness Rq of each flank [um] ({D['roughness']:g} µm)")
+                   help=f"RMS roughness Rq of each flank [um] ({D['roughness']:g} um)")
     g.add_argument("--friction-model", default=None,
                    help=f"friction coefficient model: a bundled one, or one of an "
                         f"installed plug-in (docs/extending.md) ({DEFAULT_FRICTION_MODEL})")

@@ -83,7 +83,7 @@ def tables(ds) -> str:
                     disable_numparse=True)]
     for t in ds["torque"].values:
         one = ds.sel(torque=t)
-        out += ["", f"T1 = {t:g} N·m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
+        out += ["", f"T1 = {t:g} N m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
                     f"{float(one['F_vmt']):.1f} N, F_n {float(one['F_n']):.1f} N",
                 "load factors: " + "  ".join(
                     f"{label} {float(one[name]):.3f}" for name, label in (

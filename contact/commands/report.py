@@ -34,14 +34,60 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+#: files of other commands that ``ltca report`` does not read: (test on the file's root
+#: attributes, what it is, the command that wrote it, what reads or draws it)
+OTHER_FILES = (
+    (lambda a: a.get("study") == "sweep", "a misalignment sweep", "ltca sweep",
+     "its maps: `ltca sweep … --plots DIR`, or contact.study.figures.save_study_figures"),
+    (lambda a: a.get("study") == "sample", "a tolerance study", "ltca tolerance",
+     "its figures: `ltca tolerance … --plots DIR`, or contact.study.figures.save_study_figures"),
+    (lambda a: a.get("study") == "vh-check", "a V-H check", "ltca vh-check",
+     "its figure: `ltca vh-check … --plots DIR`, or contact.study.figures.save_study_figures"),
+    (lambda a: str(a.get("title", "")).startswith("hypoid-ltca friction study"),
+     "a friction study", "ltca friction-study", "`ltca friction-fit FILE` fits μ to it"),
+    (lambda a: a.get("title") == "mechanical efficiency map", "an efficiency map",
+     "ltca efficiency-map", "its figures: `ltca efficiency-map … --plots DIR`"),
+    (lambda a: str(a.get("title", "")).startswith("hypoid-ltca simulated wear"),
+     "a wear simulation", "ltca wear", "its worn flanks: `ltca run --deviations`"),
+    (lambda a: str(a.get("title", "")).startswith("mixed-EHL line contact"),
+     "a mixed-EHL line contact", "ltca ehl", "xarray reads its profiles"),
+    (lambda a: a.get("title") == "tooth surfaces", "tooth surfaces", "ltca geometry",
+     "their figures: `ltca plot-geometry CASE --plots DIR`"),
+    (lambda a: str(a.get("title", "")).startswith("ISO 10300"), "an ISO 10300 rating",
+     "ltca rate", "`ltca rate` prints its table"),
+    (lambda a: a.get("title") == "hypoid-ltca solver comparison", "a solver comparison",
+     "ltca compare-solvers", "`ltca compare-solvers` prints its table"),
+    (lambda a: str(a.get("title", "")).startswith("hypoid-ltca optimisation"),
+     "a machine-setting optimisation", "ltca optimize", "its settings: the case file it wrote"),
+)
+
+
+def other_file(tree, path) -> str | None:
+    """Why ``ltca report`` does not read a file that another command wrote: what it is,
+    which command wrote it and what reads it (:data:`OTHER_FILES`); None for a file that
+    is none of them."""
+    attrs = dict(tree.attrs)
+    for test, what, command, reader in OTHER_FILES:
+        if test(attrs):
+            return (f"{str(path)!r} is {what} file, written by `{command}`, not an analysis: "
+                    "`ltca report` reads the files of `ltca run` and `ltca duty-cycle`; "
+                    f"{reader}")
+    return None
+
+
 def run(args: argparse.Namespace) -> int:
     from contact.plots.report import write_report
+    from geometry.core.errors import InputError
     from geometry.core.io import read_netcdf
 
     path = resolve_analysis_file(args.file)
     output = args.output or path.with_suffix(".html").name
     check_output_file(output)
     tree = read_netcdf(path, tree=True)
+    if not {"easeoff", "duty_cycle"} & set(tree.children):
+        message = other_file(tree, path)
+        if message is not None:
+            raise InputError(message)
     if "duty_cycle" in tree.children:
         from contact.plots.duty_report import write_duty_report
 

@@ -14,8 +14,9 @@ each scaled as the toolkit scales problems for its backends
 problem. Only qpbenchmark's ``high_accuracy`` settings are run (absolute tolerance
 1e-9, relative 0, time limit 10 s): the level the toolkit's certification needs.
 
-Requires the optional dependency ``qpbenchmark`` (``pip install 'hypoid-ltca[bench]'``);
-used through ``benchmarks/ltca_contact.py``, whose docstring gives the command.
+Requires the optional dependency ``qpbenchmark`` (``pip install 'hypoid-ltca[bench]'``,
+from a clone ``pip install '.[bench]'``); used through ``benchmarks/ltca_contact.py``, whose
+docstring gives the command.
 """
 
 from __future__ import annotations

@@ -84,5 +84,6 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     mod = compiled_module(name)
     if mod is None:
         raise InputError(f"{source}: 'numba' needs numba installed "
-                         "(pip install 'hypoid-ltca[fast]')")
+                         "(pip install 'hypoid-ltca[fast]', from a clone: pip install "
+                         "'.[fast]')")
     return mod

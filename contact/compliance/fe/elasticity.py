@@ -346,7 +346,8 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
         solver = next(name for name, installed in SOLVERS.items() if installed())
     elif not SOLVERS[solver]():
         raise ModelUnavailableError(f"solver: {solver!r} is not installed here (pip install "
-                                    "'hypoid-ltca[fe]'); available: "
+                                    "'hypoid-ltca[fe]', from a clone: pip install '.[fe]'); "
+                                    "available: "
                                     f"{[k for k, ok in SOLVERS.items() if ok()]}")
     fixed = np.unique(np.asarray(fixed_dofs, dtype=int))
     if fixed.size == 0:

@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["ACCURACY_LEVELS", "Backend", "RawResult"]
+__all__ = ["ACCURACY_LEVELS", "Backend", "RawResult", "quiet_highs_banner"]
 
 #: Absolute tolerance asked of a backend on the scaled problem (see
 #: ``ContactProblem.scaled``), per accuracy level — the levels of qpbenchmark.
@@ -58,3 +58,39 @@ class Backend:
     solve: Callable[..., RawResult]
     warm_start: bool
     description: str
+
+
+#: whether this process has made its first HiGHS object (:func:`quiet_highs_banner`)
+_highs_started = False
+
+
+def quiet_highs_banner() -> None:
+    """Make the process's first HiGHS object with the C-level standard output on the null
+    device: highspy prints its banner ("Running HiGHS …", two lines) to file descriptor 1
+    when the first ``Highs()`` is made, before any option (``log_to_console``, which
+    qpsolvers sets off) can be set — in the middle of whatever the CLI prints then
+    (`ltca compare-solvers`' table header). Later objects print nothing. Once per process;
+    a failure leaves the banner, never the solve."""
+    global _highs_started
+    if _highs_started:
+        return
+    _highs_started = True
+    import os
+    import sys
+
+    try:
+        import highspy
+    except ImportError:  # pragma: no cover - qpsolvers lists highs only where it imports
+        return
+    sys.stdout.flush()
+    try:
+        saved = os.dup(1)
+    except OSError:  # pragma: no cover - no file descriptor 1
+        return
+    try:
+        with open(os.devnull, "w") as null:
+            os.dup2(null.fileno(), 1)
+            highspy.Highs()
+    finally:
+        os.dup2(saved, 1)
+        os.close(saved)

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from contact.qp.problem import ContactProblem
-from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
+from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult, quiet_highs_banner
 
 __all__ = ["backends"]
 
@@ -98,6 +98,8 @@ def _make_solve(solver: str | None):
             F.value = np.asarray(initial, float) / sc.force
         kwargs = _accuracy_options(solver, accuracy)
         kwargs.update(options)
+        if solver in (None, "HIGHS"):  # cvxpy's own choice may be HiGHS
+            quiet_highs_banner()
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             t1 = time.perf_counter()

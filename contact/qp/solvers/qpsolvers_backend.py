@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from contact.qp.problem import ContactProblem
-from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
+from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult, quiet_highs_banner
 
 __all__ = ["BACKEND_FAMILIES", "backend_settings", "backends"]
 
@@ -173,6 +173,8 @@ def _make_solve(name: str):
             G = sp.csc_matrix(G) if sparse_only else G
             h = problem.scaled_upper_bound()[b]
         qp = qpsolvers.Problem(P, ss, G, h, A, np.array([Ts]), np.zeros(problem.size), None)
+        if name == "highs":
+            quiet_highs_banner()
         settings = backend_settings(name, accuracy)
         settings.update(options)
         initvals = None if initial is None else np.asarray(initial, float) / sc.force
