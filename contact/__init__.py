@@ -58,7 +58,6 @@ __all__ = [
     "influence_coefficients",
     "iso10300_rating",
     "loaded_tca",
-    "optimize",
     "read_duty_cycle",
     "read_netcdf",
     "register_backend",
@@ -94,7 +93,9 @@ _LAZY = {
     **dict.fromkeys(("DutyCycle", "StudyRun", "read_duty_cycle", "run_duty_cycle", "sample",
                      "sweep", "vh_check"), "contact.study"),
     "verdict": "contact.study.verdicts",
-    **dict.fromkeys(("OptimizeProblem", "optimize"), "contact.optimize"),
+    # (the optimiser itself is contact.optimize.optimize: a name ``optimize`` here would
+    # hide the subpackage)
+    "OptimizeProblem": "contact.optimize",
     "iso10300_rating": "contact.rating",
     "write_report": "contact.plots.report",
     **dict.fromkeys(("read_netcdf", "write_netcdf"), "geometry.core.io"),

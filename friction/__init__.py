@@ -24,7 +24,6 @@ __all__ = [
     "blok_flash_temperature",
     "efficiency_analysis",
     "friction_coefficient",
-    "kolivand2009",
     "load_kolivand2009_fit",
     "load_lubricant",
     "micropitting_safety",
@@ -46,7 +45,9 @@ _LAZY = {
                      "pressure_viscosity_coefficient", "viscosity"), "friction.lubricant"),
     "OperatingConditions": "friction.operating",
     "efficiency_analysis": "friction.efficiency",
-    **dict.fromkeys(("kolivand2009", "load_kolivand2009_fit"), "friction.kolivand2009"),
+    # (the model function is friction_coefficient("kolivand2009", ...): a name kolivand2009
+    # here would be hidden by the module of that name once it is imported)
+    "load_kolivand2009_fit": "friction.kolivand2009",
     **dict.fromkeys(("LineContactCondition", "solve_line_contact"),
                     "friction.ehl.line_contact"),
     "solve_stochastic_line_contact": "friction.ehl.stochastic",

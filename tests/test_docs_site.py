@@ -72,3 +72,16 @@ def test_examples_import_only_the_public_api():
         deep = re.findall(r"^\s*(?:from|import)\s+((?:contact|friction|geometry)\.\S+)",
                           code, flags=re.M)
         assert not deep, (where, deep)
+
+
+def test_no_public_name_hides_a_subpackage():
+    """A public name equal to a submodule's (``contact.optimize``, ``friction.kolivand2009``)
+    would be replaced by the module as soon as anything imports it: the package tops
+    export none (issue 54 item 3)."""
+    import importlib
+    import pkgutil
+
+    for name in ("contact", "friction", "geometry"):
+        package = importlib.import_module(name)
+        submodules = {m.name for m in pkgutil.iter_modules(package.__path__)}
+        assert not submodules & set(package.__all__), name

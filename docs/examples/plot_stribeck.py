@@ -14,16 +14,17 @@ falling up to 20 m/s: docs/ehl.md, the regime map).
 import matplotlib.pyplot as plt
 import numpy as np
 
-from friction import kolivand2009, load_lubricant, pressure_viscosity_coefficient, viscosity
+from friction import friction_coefficient, load_lubricant, pressure_viscosity_coefficient, viscosity
 
 oil = load_lubricant("75W90")
 speed = np.geomspace(0.05, 20.0, 40)  # m/s
 fig, ax = plt.subplots(figsize=(6, 3.5))
 for temperature in (50.0, 90.0):  # degC
-    mu = kolivand2009(hertz_pressure=500.0, slide_to_roll=0.3, entraining_velocity=speed,
-                      viscosity=viscosity(oil, temperature),
-                      pressure_viscosity=pressure_viscosity_coefficient(oil, temperature),
-                      radius=20.0, roughness_1=0.1, roughness_2=0.1)
+    mu = friction_coefficient(
+        "kolivand2009", hertz_pressure=500.0, slide_to_roll=0.3, entraining_velocity=speed,
+        viscosity=viscosity(oil, temperature),
+        pressure_viscosity=pressure_viscosity_coefficient(oil, temperature),
+        radius=20.0, roughness_1=0.1, roughness_2=0.1)
     ax.semilogx(speed, mu, label=f"{temperature:g} °C")
     print(f"{temperature:g} °C: μ from {mu.max():.3f} (boundary side) to a minimum of "
           f"{mu.min():.4f} at {speed[np.argmin(mu)]:.2g} m/s")
