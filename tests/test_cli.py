@@ -33,6 +33,7 @@ def test_python_dash_m_contact():
 
 
 def test_compare_solvers_command_writes_netcdf(tmp_path, capsys):
+    pytest.importorskip("daqp", reason="an optional backend: pip install 'hypoid-ltca[solvers]'")
     path = tmp_path / "cmp.nc"
     code = main(
         [
@@ -61,7 +62,24 @@ def test_unknown_solver_is_a_clean_error(capsys):
     assert "available" in capsys.readouterr().err
 
 
+def test_compare_solvers_lists_the_backends_not_installed(monkeypatch, capsys, tmp_path):
+    """A known backend missing here (a name no one installs stands for it) is printed with
+    its install line and recorded in the results (``solvers_not_installed``)."""
+    from contact.qp import solvers
+
+    monkeypatch.setitem(solvers.KNOWN_BACKENDS, "nosuchqp", "nosuchqp-dist")
+    path = tmp_path / "cmp.nc"
+    assert main(["compare-solvers", "--quick", "--solvers", "active_set", "--repeats", "1",
+                 "--no-progress", "-o", str(path)]) == 0
+    out = capsys.readouterr().out
+    line = next(x for x in out.splitlines() if x.startswith("not installed here: "))
+    assert "nosuchqp" in line and solvers.SOLVERS_EXTRA in line
+    assert "nosuchqp" in read_netcdf(path).attrs["solvers_not_installed"]
+
+
 def test_summary_success_rate_and_relative_time():
+    pytest.importorskip("quadprog",
+                        reason="an optional backend: pip install 'hypoid-ltca[solvers]'")
     problems = [ltca_like_problem(40, seed=s) for s in range(3)]
     res = compare_solvers(problems, ["active_set", "quadprog"])
     summ = summarize(res)

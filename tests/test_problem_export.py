@@ -116,6 +116,7 @@ def test_exported_problems_are_those_run_analysis_solved(exported):
 
 
 def test_compare_solvers_records_versions_cpu_and_blas(exported, tmp_path, capsys):
+    pytest.importorskip("daqp", reason="an optional backend: pip install 'hypoid-ltca[solvers]'")
     path = tmp_path / "cmp.nc"
     assert main(["compare-solvers", "--problems", str(exported), "--solvers", "active_set",
                  "daqp", "--no-progress", "-o", str(path)]) == 0
@@ -132,6 +133,7 @@ def test_compare_solvers_records_versions_cpu_and_blas(exported, tmp_path, capsy
 
 def test_qpbenchmark_command_writes_its_report(exported, tmp_path):
     pytest.importorskip("qpbenchmark")  # the [bench] extra
+    pytest.importorskip("daqp", reason="an optional backend: pip install 'hypoid-ltca[solvers]'")
     # the test set of benchmarks/ltca_contact.py on the small export, without the
     # standard set (its N = 2000 problems take minutes)
     test_set = tmp_path / "small_set.py"

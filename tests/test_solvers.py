@@ -156,6 +156,8 @@ def test_backends_agree_with_exact_solver_under_force_limits(solver, limited_pro
 def test_exact_solver_matches_quadprog_to_1e8():
     # quadprog (Goldfarb & Idnani 1983) is an exact dual active-set method written
     # independently of ours: the two must agree to round-off, 1e-8 relative at least.
+    pytest.importorskip("quadprog",
+                        reason="an optional backend: pip install 'hypoid-ltca[solvers]'")
     for seed, n in enumerate((50, 120, 300, 500)):
         problem = ltca_like_problem(n, seed=100 + seed).problem
         ours = solve_contact(problem)
@@ -345,3 +347,18 @@ def test_polish_rescues_a_nearly_right_answer(register):
         polished.force, exact.force, rtol=1e-9, atol=1e-9 * exact.force.max()
     )
     assert "raw_residuals" in polished.extras
+
+
+def test_a_missing_optional_backend_is_named_with_its_install_line(monkeypatch):
+    """A known backend the registry lacks (a name no one installs stands for one) is listed
+    by missing_backends and named, with the line that installs it, when asked for."""
+    from contact.errors import SolverNotFoundError
+    from contact.qp import solvers
+
+    monkeypatch.setitem(solvers.KNOWN_BACKENDS, "nosuchqp", "nosuchqp-dist")
+    missing = solvers.missing_backends()
+    assert missing["nosuchqp"] == f"pip install nosuchqp-dist (or {solvers.SOLVERS_EXTRA})"
+    assert set(missing) == {n for n in solvers.KNOWN_BACKENDS if n not in available_solvers()}
+    with pytest.raises(SolverNotFoundError, match=r"'nosuchqp' is an optional backend: pip "
+                                                  r"install nosuchqp-dist"):
+        solve_contact(ltca_like_problem(10).problem, "nosuchqp")

@@ -48,7 +48,8 @@ def register(sub) -> None:
         "--solvers",
         nargs="+",
         metavar="NAME",
-        help="solver names (default: all but the cvxpy:NAME variants)",
+        help="solver names (default: every installed one but the cvxpy:NAME variants; "
+        "those not installed are listed with their install line)",
     )
     p.add_argument("--accuracy", choices=["high", "default", "low"], default="high")
     p.add_argument(
@@ -71,7 +72,12 @@ def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.qp.benchmark_problems import standard_problem_set
-    from contact.qp.solver_study import compare_solvers, default_study_solvers, summarize
+    from contact.qp.solver_study import (
+        compare_solvers,
+        default_study_solvers,
+        not_installed_text,
+        summarize,
+    )
     from geometry.core.io import write_netcdf
 
     if args.output:
@@ -103,6 +109,9 @@ def run(args: argparse.Namespace) -> int:
     else:
         problems = standard_problem_set(quick=args.quick)
     solvers = args.solvers or default_study_solvers()
+    missing = not_installed_text()
+    if missing:
+        print(f"not installed here: {missing}")
     print(
         f"hypoid-ltca {__version__}: {len(solvers)} solvers × {len(problems)} problems "
         f"(N = {min(p.problem.size for p in problems)}…{max(p.problem.size for p in problems)}), "

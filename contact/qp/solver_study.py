@@ -30,12 +30,20 @@ import xarray as xr
 from contact.qp.benchmark_problems import TestProblem
 from contact.qp.problem import DEFAULT_TOLERANCE, RESIDUALS, ContactProblem, ContactSolution
 from contact.qp.run_environment import machine_info, solver_versions
-from contact.qp.solvers import DEFAULT_SOLVER, available_solvers, get_backend, solve_contact
+from contact.qp.solvers import (
+    DEFAULT_SOLVER,
+    SOLVERS_EXTRA,
+    available_solvers,
+    get_backend,
+    missing_backends,
+    solve_contact,
+)
 
 __all__ = [
     "QPBENCHMARK_SHIFT",
     "compare_solvers",
     "default_study_solvers",
+    "not_installed_text",
     "shifted_geometric_mean",
     "summarize",
 ]
@@ -112,7 +120,8 @@ def compare_solvers(
         ``solver_version`` (:func:`contact.qp.run_environment.solver_versions`); attrs
         the settings and the machine (``cpu``, ``cpu_count``, ``blas``, ``blas_threads``,
         ``platform``, ``python``, NumPy, SciPy and qpsolvers versions:
-        :func:`contact.qp.run_environment.machine_info`).
+        :func:`contact.qp.run_environment.machine_info`), and ``solvers_not_installed``, the
+        known backends missing here with their install line (:func:`not_installed_text`).
     """
     kwargs = dict(accuracy=accuracy, polish=polish, tolerance=tolerance, repeats=repeats,
                   max_size=max_size, progress=progress)
@@ -174,9 +183,24 @@ def _study(
         "repeats": repeats,
         "reference_solver": DEFAULT_SOLVER,
         "blas_threads": blas_threads,
+        "solvers_not_installed": not_installed_text(),
         **machine_info(),
     }
     return _study_dataset(table, problems, solvers, attrs)
+
+
+def not_installed_text() -> str:
+    """The known open-source backends not installed here and the line that installs them,
+    as one sentence (empty when every one is installed): what the solver study records in
+    its ``solvers_not_installed`` attribute and ``ltca compare-solvers`` prints.
+
+    Returns
+    -------
+    str
+        E.g. ``"daqp, quadprog (pip install 'hypoid-ltca[solvers]')"``.
+    """
+    missing = missing_backends()
+    return f"{', '.join(missing)} ({SOLVERS_EXTRA})" if missing else ""
 
 
 class _Table(NamedTuple):

@@ -48,12 +48,15 @@ from geometry.core.registries import (
 __all__ = [
     "DEFAULT_SOLVER",
     "ENTRY_POINT_GROUP",
+    "KNOWN_BACKENDS",
+    "SOLVERS_EXTRA",
     "Backend",
     "RawResult",
     "SolverLike",
     "as_backend",
     "available_solvers",
     "get_backend",
+    "missing_backends",
     "polish",
     "register_backend",
     "solve_contact",
@@ -362,12 +365,57 @@ def get_backend(name: SolverLike) -> Backend:
         return _USER[name]
     reg = _registry()
     if name not in reg:
+        missing = missing_backends()
+        hint = (f"{name!r} is an optional backend: {missing[name]}" if name in missing
+                else "qpsolvers backends install from PyPI by their package names; the "
+                f"open-source ones with {SOLVERS_EXTRA}")
         raise SolverNotFoundError(
-            f"solver {name!r} is not available; available: {', '.join(reg)}. "
-            "qpsolvers backends install from PyPI by their package names "
-            "(e.g. `pip install qpsolvers[open_source_solvers]`)."
+            f"solver {name!r} is not available; available: {', '.join(reg)}. {hint}."
         )
     return reg[name]
+
+
+#: the open-source qpsolvers backends that install from PyPI: registry name → the
+#: distribution that provides it. The design card's (clarabel, osqp) and cvxopt (CHOLMOD
+#: for the FE models) are required by the toolkit; the others are the ``solvers`` extra
+#: (pyproject.toml); scs and highspy come with cvxpy too.
+KNOWN_BACKENDS: dict[str, str] = {
+    "clarabel": "clarabel",
+    "cvxopt": "cvxopt",
+    "daqp": "daqp",
+    "ecos": "ecos",
+    "highs": "highspy",
+    "osqp": "osqp",
+    "piqp": "piqp",
+    "proxqp": "proxsuite",
+    "qpalm": "qpalm",
+    "quadprog": "quadprog",
+    "scs": "scs",
+}
+
+#: the line that installs every optional backend
+SOLVERS_EXTRA = "pip install 'hypoid-ltca[solvers]'"
+
+
+def missing_backends() -> dict[str, str]:
+    """The known open-source backends that are not installed here, with how to install them.
+
+    Returns
+    -------
+    dict of str to str
+        Registry name → the install line (``pip install <distribution>``, or all at once:
+        :data:`SOLVERS_EXTRA`), in the order of :data:`KNOWN_BACKENDS`; empty where every
+        one is installed. Listed by ``ltca compare-solvers`` and recorded by the solver
+        study (:func:`contact.qp.solver_study.compare_solvers`).
+
+    Notes
+    -----
+    A backend counts as installed when the registry has it (qpsolvers found it importable
+    and working), not merely when its distribution is present.
+    """
+    installed = _registry()
+    return {name: f"pip install {dist} (or {SOLVERS_EXTRA})"
+            for name, dist in KNOWN_BACKENDS.items() if name not in installed}
 
 
 #: block-pivoting steps a polish may take from a backend's sets on a problem with force
