@@ -289,7 +289,33 @@ def _broken(case, easeoff, options):
 _broken.__name__ = "broken"
 
 
-# --------------------------------------------------------------------------- plug-ins
+# --------------------------------------------------------------------------- in a study
+def test_a_study_takes_the_functions_and_records_their_names(tmp_path, reference):
+    """A one-point sweep (in this process) with the user's solver, compliance preparation
+    and friction function: the point is the default analysis' and the study's file names
+    them (a function's name, not its object, goes into the netCDF attributes)."""
+    from contact.catalogue import resolve_case
+    from contact.study import StudyRun, sweep
+    from geometry.core.io import read_netcdf, write_netcdf
+
+    case = resolve_case(None)
+    run = StudyRun(options=LTCAOptions(**SMALL, solver=user_active_set,
+                                       compliance=scaled_shell(1.0)),
+                   operating=OperatingConditions(friction_model=coleman),
+                   scheduler="synchronous", root_stress=False)
+    grid = sweep(case, delta_E=[float(case.misalignment.delta_E)], torque=TORQUE,
+                 speed=1500.0, run=run)
+    assert (grid["status"].values == 0).all()
+    # the point is the default analysis: LTE to round-off (exact solvers, the same shell
+    # matrices), the efficiency of μ = 0.05 exactly as the bundled constant model's
+    assert float(grid["lte_mean"].squeeze()) == pytest.approx(
+        float(reference["ltca"]["lte_mean"][0]), rel=1e-12)
+    assert float(grid["efficiency"].squeeze()) == float(
+        reference["friction"]["efficiency_mean"][0])
+    back = read_netcdf(write_netcdf(grid, tmp_path / "sweep.nc"))
+    assert back.attrs["solver"] == "user_active_set"
+
+
 PLUGIN = '''
 """A plug-in of hypoid-ltca: a solver, a friction model and a compliance model."""
 import numpy as np

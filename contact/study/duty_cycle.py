@@ -44,6 +44,7 @@ from contact.durability import (
 from contact.ltca import LTCAOptions
 from contact.ltca.options import json_options
 from contact.ltca.plausibility import CAUSES
+from contact.qp.solvers import solver_name
 from contact.study.duty_cycle_inputs import DutyCycle
 from contact.study.run import StudyRun
 from contact.study.store import ChunkSpec, ResultStore
@@ -494,7 +495,7 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
         "peak_bin": dur["peak_bin"],
         "iso_rating": iso_note,
         "bins_resumed": int(ds.attrs.get("bins_resumed", 0)),
-        "solver": shared.options.solver,
+        "solver": solver_name(shared.options.solver),
         "flank": shared.flank or "drive",
     }
     return out

@@ -55,6 +55,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from contact.qp.solvers import solver_name
 from contact.study.points import POINT_INPUTS, StudyInputs, check_point, misalignment_of
 from contact.study.store import ChunkSpec, ResultStore
 from contact.study.summary import (
@@ -322,7 +323,7 @@ def _stamp(ds: xr.Dataset, shared: StudyInputs, kind: str, resumed: int) -> xr.D
         "case_source": shared.case.source,
         "toolkit_version": __version__,
         "study": kind,
-        "solver": shared.options.solver,
+        "solver": solver_name(shared.options.solver),
         "flank": shared.flank or "drive",
         "points_resumed": int(resumed),
     }
