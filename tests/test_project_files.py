@@ -52,9 +52,13 @@ def test_the_version_is_written_in_one_place():
 
 def test_changelog_has_the_current_version():
     """Keep a Changelog: the first entry is the version being made (``[Unreleased] —
-    X.Y.Z`` until it is released, then ``[X.Y.Z] - YYYY-MM-DD``), with no subsection twice."""
+    X.Y.Z`` until it is released, then ``[X.Y.Z] - YYYY-MM-DD`` below an empty
+    ``[Unreleased]``), with no subsection twice."""
     text = (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
-    first = text.split("\n## ")[1]
+    entries = text.split("\n## ")[1:]
+    if entries[0].strip() == "[Unreleased]":  # an empty Unreleased above a release
+        entries = entries[1:]
+    first = entries[0]
     heading = first.split("\n")[0]
     assert re.fullmatch(rf"\[Unreleased\] — {re.escape(__version__)}"
                         rf"|\[{re.escape(__version__)}\] - \d{{4}}-\d{{2}}-\d{{2}}", heading)
