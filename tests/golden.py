@@ -192,7 +192,7 @@ def differences(new: xr.DataTree, golden: xr.DataTree, *, rtol: float = 0.0) -> 
             if x.dtype.kind == "f" and y.dtype.kind == "f":
                 same_nan = np.array_equal(np.isnan(x), np.isnan(y))
                 d = np.nan_to_num(np.abs(x - y), nan=0.0)
-                scale = float(np.nanmax(np.abs(y), initial=0.0))
+                scale = float(np.nanmax(np.abs(y), initial=0.0)) if np.any(~np.isnan(y)) else 0.0
                 worst = float(d.max(initial=0.0))
                 tol = tolerance(where, rtol)
                 reviewed = REVIEWED.get(where, (0.0, ""))[0]

@@ -77,7 +77,7 @@ def differences(new: xr.Dataset, stored: xr.Dataset, rtol: float) -> list[str]:
             if not np.array_equal(np.isnan(x), np.isnan(y)):
                 out.append(f"{name}: NaN pattern differs")
                 continue
-            scale = float(np.nanmax(np.abs(y), initial=0.0))
+            scale = float(np.nanmax(np.abs(y), initial=0.0)) if np.any(~np.isnan(y)) else 0.0
             d = np.nan_to_num(np.abs(x - y))
             bound = rtol * np.maximum(np.nan_to_num(np.abs(y)), scale)
             if np.any(d > bound):
