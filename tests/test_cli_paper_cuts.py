@@ -161,3 +161,39 @@ def test_install_hints_work_from_a_clone():
     with pytest.raises(ModelUnavailableError) as info:
         factorise(sp.identity(3, format="csr"), np.array([0]), missing[0])
     assert "pip install 'hypoid-ltca[fe]', from a clone: pip install '.[fe]'" in str(info.value)
+
+
+class _Stop(Exception):
+    """Raised in place of a study's work: the test is what the command printed before it."""
+
+
+def _stop(*args, **kwargs):
+    raise _Stop
+
+
+@pytest.mark.parametrize(("argv", "target", "expected"), [
+    (["duty-cycle", "--no-root-stress"], "contact.study.duty_cycle.run_duty_cycle",
+     ["duty cycle of kolivand2009_fm_11x41_reference", "7 bins: T [N m] 50, 125, 200"]),
+    (["efficiency-map", "--torque", "100", "250", "--speed", "500", "1500"],
+     "contact.study.efficiency.efficiency_map",
+     ["efficiency map of kolivand2009_fm_11x41_reference: torque [N m] 100, 250; speed "
+      "[rpm] 500, 1500", "(4 points)"]),
+    (["friction-study", "-n", "4", "--seed", "3"],
+     "contact.study.friction_study.run_friction_study",
+     ["friction study: 4 conditions (sobol, seed 3)"]),
+])
+def test_every_study_prints_what_it_will_run_before_it_starts(argv, target, expected,
+                                                               monkeypatch, tmp_path, capsys):
+    """Issue 56: every study prints the values it will run before it starts (the sweeps and
+    the tolerance analysis: tests/test_study_inputs.py); here the duty cycle, the efficiency
+    map and the friction study, whose work is replaced by an exception: what they printed
+    is what a user sees before the first point."""
+    from contact.cli import main
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(target, _stop)
+    with pytest.raises(_Stop):
+        main([*argv, "-o", str(tmp_path / "out.nc"), "--no-progress"])
+    out = " ".join(capsys.readouterr().out.split())  # the lines are wrapped at 100 columns
+    for text in expected:
+        assert text in out, (text, out)

@@ -133,6 +133,13 @@ def run(args: argparse.Namespace) -> int:
         duty = read_duty_cycle(case)
     else:
         duty = example_duty_cycle(max_torque=max(case.operating.torque or (500.0,)))
+    # what will run, before it starts (issue 56): the bins' torques, speeds and hours
+    from contact.commands.run import print_wrapped
+
+    print_wrapped(f"duty cycle of {case.name}: {duty.name}, {duty.n_bins} bins: T [N m] "
+                  + ", ".join(f"{t:g}" for t in duty.torque) + "; n [rpm] "
+                  + ", ".join(f"{n:g}" for n in duty.speed) + "; t [h] "
+                  + ", ".join(f"{h:.4g}" for h in duty.hours))
     ds = run_duty_cycle(case, duty, StudyRun(
         options=ltca_options(args), flank=args.flank, output=output,
         scheduler=args.scheduler, n_workers=args.workers, progress=study_progress(args)),

@@ -110,6 +110,25 @@ def sweep_tag(args: argparse.Namespace) -> str:
     return "_".join(d for d, n in sizes.items() if n > 1) or "point"
 
 
+def efficiency_map_plan(name: str, args: argparse.Namespace) -> str:
+    """The line ``ltca efficiency-map`` prints before it starts: the values of every swept
+    input and how many analyses they make (issue 56: every study says what it will run)."""
+    from contact.study.efficiency import EFFICIENCY_MAP_SPEEDS
+
+    axes = {"torque [N m]": args.torque, "speed [rpm]": args.speed or EFFICIENCY_MAP_SPEEDS,
+            "temperature [degC]": args.temperature, "roughness Rq [um]": args.roughness}
+    parts, n = [], 1
+    for k, v in axes.items():
+        if v is None:
+            parts.append(f"{k.split(' [')[0]} the case's")
+            continue
+        values = [v] if isinstance(v, (int, float)) else list(v)
+        n *= len(values)
+        parts.append(f"{k} {', '.join(f'{x:g}' for x in values)}")
+    return (f"efficiency map of {name}: " + "; ".join(parts)
+            + f" ({n} point{'s' if n != 1 else ''})")
+
+
 def run(args: argparse.Namespace) -> int:
     from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options, print_wrapped
@@ -128,6 +147,7 @@ def run(args: argparse.Namespace) -> int:
     scheduler = args.scheduler
     if scheduler is None:
         scheduler = "synchronous" if args.workers is None else None
+    print_wrapped(efficiency_map_plan(case.name, args))  # what will run, before it starts
     emap = efficiency_map(
         case,
         args.torque,

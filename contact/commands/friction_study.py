@@ -128,6 +128,13 @@ def run(args: argparse.Namespace) -> int:
     except InputError as exc:
         raise InputError(_option(str(exc))) from None
     check_design(design, lubricant=settings.lubricant)  # every condition in the oil's range
+    # what will run, before it starts (issue 56): the conditions and their ranges
+    ranges = ", ".join(f"{k} {np.min(v):.4g}..{np.max(v):.4g}" for k, v in design.items())
+    from contact.commands.run import print_wrapped
+
+    print_wrapped(f"friction study: {attrs['points']} conditions ({attrs['method']}"
+                  + (f", seed {attrs['seed']}" if "seed" in attrs else "") + f"), {ranges}; "
+                  f"{settings.lubricant}, {settings.nodes} nodes")
     ds = run_friction_study(design, settings, design_attrs=attrs, output=args.output,
                             scheduler=args.scheduler, n_workers=args.workers,
                             progress=study_progress(args))

@@ -579,7 +579,7 @@ def print_wrapped(text: str, width: int = LINE_WIDTH) -> None:
     import textwrap
 
     print(textwrap.fill(text, width, subsequent_indent="  ", break_long_words=False,
-                        break_on_hyphens=False))
+                        break_on_hyphens=False), flush=True)
 
 
 def write_figures(path: Path, plots: str | None, report: str | None,
