@@ -678,6 +678,22 @@ def line_contact_summary(condition: LineContactCondition, grid: Grid | None = No
     return _summary(s, condition, st, kind, f_fluid, f_boundary, w)
 
 
+def condition_attrs(condition: LineContactCondition) -> dict[str, str | float]:
+    """The condition as a solution dataset's attributes (every line-contact solver's file
+    records it the same way): lubricant and viscosity model, w′ [N/mm], R [mm], u_e [m/s],
+    SR [1], inlet temperature [degC] and E′ [MPa], units in the names."""
+    return {
+        "lubricant": lubricant_of(condition.lubricant).name,
+        "viscosity_model": condition.viscosity_model,
+        "load_per_length_N_per_mm": float(condition.load_per_length),
+        "radius_mm": float(condition.radius),
+        "entraining_velocity_m_per_s": float(condition.entraining_velocity),
+        "slide_to_roll": float(condition.slide_to_roll),
+        "temperature_degC": float(condition.temperature),
+        "e_prime_MPa": float(condition.e_prime),
+    }
+
+
 def _var(data, dims, units: str, long_name: str) -> tuple:
     return data_var(dims, np.asarray(data, dtype=float), units, long_name)
 
@@ -746,19 +762,11 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
     })
     x_attrs = {"units": "mm", "long_name": "distance from contact centre"}
     ds = xr.Dataset(data, coords={"x": ("x", x_mm, x_attrs)})
-    oil = lubricant_of(condition.lubricant)
     ds.attrs.update({
         "title": "mixed-EHL line contact (steady)",
-        "lubricant": oil.name,
-        "viscosity_model": condition.viscosity_model,
+        **condition_attrs(condition),
         "newton_iterations": iterations,
         "grid_nodes": int(used.nodes), "grid_inlet": float(used.inlet),
         "grid_outlet": float(used.outlet),
-        "load_per_length_N_per_mm": float(condition.load_per_length),
-        "radius_mm": float(condition.radius),
-        "entraining_velocity_m_per_s": float(condition.entraining_velocity),
-        "slide_to_roll": float(condition.slide_to_roll),
-        "temperature_degC": float(condition.temperature),
-        "e_prime_MPa": float(condition.e_prime),
     })
     return ds
