@@ -6,7 +6,7 @@ import argparse
 import math
 from pathlib import Path
 
-from contact.commands.options import count
+from contact.commands.options import count, film_model_options
 from contact.commands.output_paths import check_output_file
 
 #: Place in ``ltca --help``.
@@ -50,12 +50,7 @@ def register(sub) -> None:
     p.add_argument("--model", choices=("stochastic", "resolved"), default="stochastic",
                    help="rough surfaces: the roughness's statistics, or the profiles resolved "
                    "on the grid (default %(default)s)")
-    p.add_argument("--viscosity-model", choices=("barus", "roelands"), default="barus",
-                   help="viscosity-pressure law of the film and its shear (default "
-                   "%(default)s, the friction study's and the mu model's)")
-    p.add_argument("--isothermal", action="store_true",
-                   help="stochastic: the film's shear at the inlet temperature, without the "
-                   "surfaces' flash temperature")
+    film_model_options(p)
     p.add_argument("--nodes", type=count(16, 16384), default=None,
                    help="grid nodes (default: smooth, from Moes's M; stochastic 512 over the "
                    "rough contact's spread; resolved 256 from the smooth film's pressure "

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from contact.commands.options import count, progress_option
+from contact.commands.options import count, film_model_options, progress_option
 from contact.commands.study import study_progress
 
 #: Place in ``ltca --help``.
@@ -59,12 +59,7 @@ def register(sub) -> None:
     p.add_argument("--courant", type=float, default=1.0, metavar="C",
                    help="transient: node spacings the faster surface moves per time step "
                    "(default %(default)s)")
-    p.add_argument("--viscosity-model", choices=("barus", "roelands"), default="barus",
-                   help="viscosity-pressure model of the film and its traction "
-                   "(default %(default)s)")
-    p.add_argument("--isothermal", action="store_true",
-                   help="stochastic: the film's shear at the inlet temperature, without the "
-                   "surfaces' flash temperature")
+    film_model_options(p)
     p.add_argument("--average", type=float, default=2.0, metavar="T",
                    help="transient: averaging window in units of b/u_e (default %(default)s)")
     p.add_argument("--max-iterations", type=count(1, 10000), default=60, metavar="N",

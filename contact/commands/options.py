@@ -30,6 +30,7 @@ verbosity_options       -v/--verbose, -q/--quiet (accepted before and after the 
 deprecated_alias        a hidden old spelling of an option that warns when used
 count                   an argparse type: an integer in a closed range (counts, budgets)
 root_stress_option      --root-stress/--no-root-stress (on by default)
+film_model_options      --viscosity-model --isothermal (the mixed-EHL film)
 ROOT_STRESS_COST        what the root stress costs, as the options and hints say it
 """
 
@@ -48,6 +49,7 @@ __all__ = [
     "count",
     "default_output",
     "deprecated_alias",
+    "film_model_options",
     "flank_option",
     "misalignment_from_args",
     "misalignment_options",
@@ -338,6 +340,18 @@ def count(low: int, high: int):
 ROOT_STRESS_COST = ("the first run of a design builds its FE influence coefficients, ~15-20 s "
                     "per member (~35 s for both on the default case, up to 1.5 GB), later "
                     "runs read them from the cache (~1 s)")
+
+
+def film_model_options(p: argparse.ArgumentParser) -> None:
+    """``--viscosity-model`` and ``--isothermal``: the mixed-EHL film's viscosity-pressure
+    law and whether its shear sees the surfaces' flash temperature (``ltca ehl`` and the
+    friction study: one condition or many, the same model)."""
+    p.add_argument("--viscosity-model", choices=("barus", "roelands"), default="barus",
+                   help="viscosity-pressure law of the film and its shear (default "
+                   "%(default)s, the friction study's and the mu model's)")
+    p.add_argument("--isothermal", action="store_true",
+                   help="stochastic: the film's shear at the inlet temperature, without the "
+                   "surfaces' flash temperature")
 
 
 def root_stress_option(p: argparse.ArgumentParser, what: str) -> None:
