@@ -96,35 +96,42 @@ def efficiency_table(emap) -> str:
     return f"at {head}:\n{table}" if head else table
 
 
+def swept_values(args: argparse.Namespace) -> dict[str, list[float] | None]:
+    """The values of each input of an ``efficiency-map`` command, known before the work:
+    speed [rpm] and torque [N m] as given or the map's defaults, temperature [degC] and
+    roughness Rq [um] as given or None (the case's)."""
+    from contact.study.efficiency import EFFICIENCY_MAP_SPEEDS, EFFICIENCY_MAP_TORQUES
+
+    def listed(v):
+        return None if v is None else list(v)
+
+    return {"speed": list(args.speed or EFFICIENCY_MAP_SPEEDS),
+            "torque": list(args.torque or EFFICIENCY_MAP_TORQUES),
+            "temperature": listed(args.temperature), "roughness": listed(args.roughness)}
+
+
 def sweep_tag(args: argparse.Namespace) -> str:
     """The inputs an ``efficiency-map`` command sweeps (more than one value) joined by
     ``_`` (``speed_torque``, ``temperature_roughness``), known before the work: the
     default output and figure names carry it, so maps of one case over different inputs
     do not overwrite each other."""
-    from contact.study.efficiency import EFFICIENCY_MAP_SPEEDS, EFFICIENCY_MAP_TORQUES
-
-    sizes = {"speed": len(args.speed or EFFICIENCY_MAP_SPEEDS),
-             "torque": len(args.torque or EFFICIENCY_MAP_TORQUES),
-             "temperature": len(args.temperature or [0]),
-             "roughness": len(args.roughness or [0])}
+    sizes = {d: len(v) if v else 1 for d, v in swept_values(args).items()}
     return "_".join(d for d, n in sizes.items() if n > 1) or "point"
 
 
 def efficiency_map_plan(name: str, args: argparse.Namespace) -> str:
     """The line ``ltca efficiency-map`` prints before it starts: the values of every swept
     input and how many analyses they make (issue 56: every study says what it will run)."""
-    from contact.study.efficiency import EFFICIENCY_MAP_SPEEDS
-
-    axes = {"torque [N m]": args.torque, "speed [rpm]": args.speed or EFFICIENCY_MAP_SPEEDS,
-            "temperature [degC]": args.temperature, "roughness Rq [um]": args.roughness}
+    values = swept_values(args)
+    labels = {"torque": "torque [N m]", "speed": "speed [rpm]",
+              "temperature": "temperature [degC]", "roughness": "roughness Rq [um]"}
     parts, n = [], 1
-    for k, v in axes.items():
-        if v is None:
-            parts.append(f"{k.split(' [')[0]} the case's")
+    for dim, label in labels.items():
+        if values[dim] is None:
+            parts.append(f"{label.split(' [')[0]} the case's")
             continue
-        values = [v] if isinstance(v, (int, float)) else list(v)
-        n *= len(values)
-        parts.append(f"{k} {', '.join(f'{x:g}' for x in values)}")
+        n *= len(values[dim])
+        parts.append(f"{label} {', '.join(f'{x:g}' for x in values[dim])}")
     return (f"efficiency map of {name}: " + "; ".join(parts)
             + f" ({n} point{'s' if n != 1 else ''})")
 
