@@ -19,25 +19,21 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+# the coarse FE model and small LTCA of tests/test_fe_ltca.py: the subject here is where
+# the coefficients come from, not their accuracy
+from test_fe_ltca import COARSE, SMALL
+
 from contact.catalogue import resolve_case
 from contact.compliance.fe import (
     CACHE_ENV,
-    FEOptions,
     cache_key,
     cache_path,
     influence_coefficients,
 )
 from contact.compliance.fe.cache import CHECKSUM_ATTR, read_cache_entry
-from contact.ltca import LTCAOptions
 from contact.utca.easeoff import working_flanks
 
 distributed = pytest.importorskip("distributed")
-
-#: the coarse FE model of tests/test_fe_ltca.py: the subject is where the coefficients
-#: come from, not their accuracy
-COARSE = FEOptions(face_divisions=4, across_divisions=2, flank_divisions=3, slot_divisions=1,
-                   rim_divisions=2, fillet_divisions=2, load_nu=5, load_nv=4)
-SMALL = LTCAOptions(cycles=1, rolls_per_cycle=4, segments=8)
 
 
 def _isolate_worker(root: str, dask_worker=None) -> str:
