@@ -14,13 +14,12 @@ of 6 rolls (~1 s); the page drawn without figures except where figures are the s
 from __future__ import annotations
 
 import tomllib
-from importlib import resources
 
 import html5lib
 import numpy as np
 import pytest
 
-from contact.catalogue import DEFAULT_CASE, resolve_case
+from contact.catalogue import DEFAULT_CASE, bundled_case_path, resolve_case
 from contact.ltca import LTCAOptions
 from contact.pipeline import run_analysis
 from contact.plots.machine_sheet import machine_sheet
@@ -60,7 +59,7 @@ def test_the_page_opens_with_the_verdict(page):
 
 
 def _case_file(name: str = DEFAULT_CASE) -> dict:
-    text = (resources.files("cases") / name).read_text(encoding="utf-8")
+    text = bundled_case_path(name).read_text(encoding="utf-8")
     return tomllib.loads(text)
 
 

@@ -18,7 +18,7 @@ import tomllib
 import numpy as np
 import pytest
 
-from contact.catalogue import DEFAULT_CASE, resolve_case
+from contact.catalogue import DEFAULT_CASE, bundled_case_path, resolve_case
 from contact.cli import main
 from contact.commands.study import parse_range, values_line
 from contact.ltca import LTCAOptions
@@ -41,9 +41,8 @@ QUICK = ["--rolls-per-cycle", "6", "--scheduler", "synchronous", "--no-progress"
 
 
 def _case_file() -> dict:
-    from importlib import resources
 
-    text = (resources.files("cases") / DEFAULT_CASE).read_text(encoding="utf-8")
+    text = bundled_case_path(DEFAULT_CASE).read_text(encoding="utf-8")
     return tomllib.loads(text)
 
 
