@@ -15,7 +15,9 @@ gained the tooth-root stress (issue 53: ``/ltca/root_stress``, ``root_stress_max
 ISO 10300 rating (issue 52: the ``/rating`` group; the cases' ``inputs`` gained their
 ``[design]`` and ``[rating]`` tables), scuffing and micropitting (issue 52: new
 ``/friction`` variables) and version 0.2.0 — every variable of the previous file
-unchanged (``--check`` listed only new variables, groups and attributes). It
+unchanged (``--check`` listed only new variables, groups and attributes); and for 0.3.0,
+whose run stores the standard's flash temperature method as ``/rating/flash_temperature``
+(the group added, every other group and value kept, the version attribute adopted). It
 guards every refactoring that must not change results: a new run must reproduce every
 variable and attribute but the timings and the file's creation stamp.
 

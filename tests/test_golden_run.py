@@ -31,6 +31,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import xarray as xr
 from blas_kernels import PRINT_KERNEL, run_on_other_kernel
 from golden import GOLDEN, differences, run_default
 
@@ -87,3 +88,19 @@ def test_golden_file_on_other_blas_kernels():
     out = run_on_other_kernel(_OTHER_KERNEL_RUN.format(tests=str(Path(__file__).parent),
                                                        rtol=RTOL))
     assert "AGREES" in out, out[-5000:]
+
+
+def test_the_standards_scuffing_method_is_stored_beside_the_rating(default_run):
+    """``/rating/flash_temperature`` is the standard's flash temperature method recomputed
+    from the file's own ``/rating`` and ``/friction`` (same inputs, so to round-off:
+    rtol 1e-12), and it gives a finite scuffing safety at every torque."""
+    from contact.commands.run import standard_scuffing
+
+    stored = default_run["rating/flash_temperature"].to_dataset()  # with the inherited coords
+    again = standard_scuffing(default_run, default_run["friction"].to_dataset())
+    assert again is not None
+    assert set(stored.data_vars) == set(again.data_vars)
+    for name, var in again.data_vars.items():
+        xr.testing.assert_allclose(stored[name], var, rtol=1e-12)
+    assert np.all(np.isfinite(stored["scuffing_safety"].values))
+    assert stored.attrs["method"] == again.attrs["method"]

@@ -224,6 +224,10 @@ def run(args: argparse.Namespace) -> int:
     )
     if rating is not None:
         tree["rating"] = rating
+    fr = tree["friction"].to_dataset() if "friction" in tree.children else None
+    standard = standard_scuffing(tree, fr)
+    if standard is not None:  # stored beside the rating it is computed on
+        tree["rating/flash_temperature"] = standard
     lt = tree["ltca"].to_dataset()
     print(
         f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
@@ -231,7 +235,6 @@ def run(args: argparse.Namespace) -> int:
         f"solver {lt.attrs['solver']}"
         + (f"; tooth compliance {opts.compliance}" if opts.compliance != "shell" else "")
     )
-    fr = tree["friction"].to_dataset() if "friction" in tree.children else None
     rows = []
     for i, T in enumerate(lt["torque"].values):
         h = lt["lte_harmonics"].values[i]
@@ -278,7 +281,7 @@ def run(args: argparse.Namespace) -> int:
             f"friction model {fr.attrs['friction_model']}"
         )
         print_extrapolation_warning(fr)
-        for line in durability_lines(fr, standard_scuffing(tree, fr)):
+        for line in durability_lines(fr, standard):
             print(line)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     print(plastic_note(lt))

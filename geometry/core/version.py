@@ -13,4 +13,4 @@ __all__ = ["__version__"]
 
 #: the version (PEP 440) of hypoid-ltca; to release, change it here, in CITATION.cff and in
 #: CHANGELOG.md's heading (CONTRIBUTING.md, "Releasing")
-__version__ = "0.2.0"
+__version__ = "0.3.0"
