@@ -75,3 +75,25 @@ def test_packages_are_marked_typed(package):
     assert importlib.resources.files(package).joinpath("py.typed").is_file()
     data = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
     assert "py.typed" in data["tool"]["setuptools"]["package-data"][package]
+
+
+#: distributions that qpsolvers can use as a QP backend (qpsolvers 4.x's solver list)
+QP_BACKEND_DISTRIBUTIONS = {
+    "clarabel", "cvxopt", "daqp", "ecos", "gurobipy", "highspy", "hpipm", "jaxopt",
+    "kvxopt", "mosek", "osqp", "piqp", "proxsuite", "pyqpmad", "qpalm", "qpax",
+    "qpoases", "qpswift", "quadprog", "scs", "sip-python"}
+
+
+def _name(requirement: str) -> str:
+    return re.split(r"[\s<>=!~;\[]", requirement, maxsplit=1)[0].lower()
+
+
+def test_the_core_pulls_only_the_design_cards_qp_backends():
+    """``pip install .`` requires, of the QP backends, only the design card's (clarabel,
+    osqp; cvxpy and qpsolvers are front ends) and cvxopt, whose CHOLMOD is the FE models'
+    direct solver for the root stress of the main job (docs/fe.md); scs and highspy come
+    only with cvxpy's own requirements. The other backends are the ``[solvers]`` extra."""
+    required = {_name(r) for r in PROJECT["dependencies"]}
+    assert required & QP_BACKEND_DISTRIBUTIONS == {"clarabel", "osqp", "cvxopt"}
+    extra = {_name(r) for r in PROJECT["optional-dependencies"]["solvers"]}
+    assert {"daqp", "quadprog", "proxsuite", "piqp", "qpalm"} <= extra
