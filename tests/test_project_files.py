@@ -97,3 +97,16 @@ def test_the_core_pulls_only_the_design_cards_qp_backends():
     assert required & QP_BACKEND_DISTRIBUTIONS == {"clarabel", "osqp", "cvxopt"}
     extra = {_name(r) for r in PROJECT["optional-dependencies"]["solvers"]}
     assert {"daqp", "quadprog", "proxsuite", "piqp", "qpalm"} <= extra
+
+
+def test_no_test_imports_the_source_trees_cases_folder():
+    """``cases`` is a module only where the clone itself is on ``sys.path`` (an editable
+    install); an installed copy names the bundled cases ``contact.cases``. A test that
+    imports ``cases`` passes here and fails in CI's ``pip install '.[test]'`` (it did:
+    four tests), so tests reach case files through ``contact.catalogue`` or by path."""
+    pattern = re.compile(r"""files\(\s*["']cases["']|^\s*(import|from)\s+cases\b""",
+                         flags=re.MULTILINE)
+    offenders = [p.name for p in sorted((ROOT / "tests").glob("*.py"))
+                 if pattern.search(p.read_text(encoding="utf-8"))
+                 and p.name != "test_project_files.py"]
+    assert offenders == []
