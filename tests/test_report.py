@@ -190,6 +190,7 @@ def test_one_spelling_of_the_microradian(run_files):
 def test_durability_table_equals_the_file(run_files):
     """The scuffing and micropitting table: one row per torque whose cells are the file's
     /friction values at the table's decimals ("–" for the bundled oil's unknown λ_GFP),
+    then the standard's peak contact temperature and S_B from /rating/flash_temperature,
     the reason for the missing safety said below it (docs/scuffing_micropitting.md)."""
     from contact.plots.report import DURABILITY_COLUMNS, render_report
 
@@ -202,7 +203,12 @@ def test_durability_table_equals_the_file(run_files):
         cells = {c.get("data-key"): c for c in row.findall("h:td", NS) if c.get("data-key")}
         assert list(cells) == [c.key for c in DURABILITY_COLUMNS]
         for column in DURABILITY_COLUMNS:
-            value = float(fr[column.key].values[i])
+            if column.key.startswith("iso_"):  # the standard's method, stored beside /rating
+                std = tree["rating/flash_temperature"].to_dataset()
+                value = float(std[column.key.removeprefix("iso_")].sel(
+                    torque=fr["torque"].values[i]))
+            else:
+                value = float(fr[column.key].values[i])
             cell = cells[column.key]
             if not np.isfinite(value):
                 assert cell.text == "–" and cell.get("data-value") == "", column.key
@@ -212,3 +218,11 @@ def test_durability_table_equals_the_file(run_files):
     notes = " ".join("".join(p.itertext()) for p in
                      doc.findall(".//h:section[@id='summary']//h:p[@class='note']", NS))
     assert "permissible_specific_film" in notes
+    # a file without the standard's method (no rating): its two cells say "–"
+    bare = tree.copy()
+    del bare["rating"]
+    doc = _parse(render_report(bare, figures=[]))
+    for row in doc.findall(".//h:table[@id='durability-table']/h:tbody/h:tr", NS):
+        cells = {c.get("data-key"): c for c in row.findall("h:td", NS) if c.get("data-key")}
+        assert cells["iso_scuffing_safety"].text == "–"
+        assert cells["iso_contact_temperature_max"].text == "–"

@@ -139,8 +139,23 @@ SUMMARY_COLUMNS: tuple[SummaryColumn, ...] = (
     SummaryColumn("power_loss_mean", "power loss", "W", 1, _var("friction", "power_loss_mean")),
 )
 
+def _standard(name: str):
+    """A column value: ``name`` of the standard's flash temperature method
+    (``/rating/flash_temperature``) at the torque of the friction stage's index (NaN where
+    the file has no such group or the method did not run at that torque)."""
+    def value(groups: Mapping[str, xr.Dataset | None], i: int) -> float:
+        ds, fr = groups.get("standard_scuffing"), groups.get("friction")
+        if ds is None or fr is None or name not in ds:
+            return math.nan
+        match = np.flatnonzero(ds["torque"].values == fr["torque"].values[i])
+        return float(ds[name].values[match[0]]) if match.size else math.nan
+    return value
+
+
 #: The scuffing and micropitting table's columns after T_p: /friction variables over torque
-#: (docs/scuffing_micropitting.md); a file that lacks one shows "–".
+#: (docs/scuffing_micropitting.md), then the standard's flash temperature method on the
+#: rating's virtual cylindrical gears (/rating/flash_temperature); a file that lacks one
+#: shows "–".
 DURABILITY_COLUMNS: tuple[SummaryColumn, ...] = (
     SummaryColumn("flash_temperature_max", "peak flash temperature θ_fl", "K", 0,
                   _var("friction", "flash_temperature_max")),
@@ -154,6 +169,10 @@ DURABILITY_COLUMNS: tuple[SummaryColumn, ...] = (
                   _var("friction", "specific_film_thickness_min")),
     SummaryColumn("micropitting_safety", "micropitting safety S_λ", "1", 2,
                   _var("friction", "micropitting_safety")),
+    SummaryColumn("iso_contact_temperature_max", "ISO/TS 6336-20: peak θ_B", "°C", 0,
+                  _standard("contact_temperature_max")),
+    SummaryColumn("iso_scuffing_safety", "ISO/TS 6336-20: S_B", "1", 2,
+                  _standard("scuffing_safety")),
 )
 
 #: what each optional group gives, said on the page when the file lacks it
@@ -210,13 +229,15 @@ def _summary(tree: xr.DataTree, lt: xr.Dataset) -> list[dict]:
     return rows
 
 
-def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None) -> dict | None:
-    """The scuffing and micropitting table (:data:`DURABILITY_COLUMNS` per torque), the
-    oil's scuffing temperature and permissible λ_GF, and why a safety is missing; None
-    where the file has no ``/friction`` with the variables (written before them)."""
+def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None,
+                standard: xr.Dataset | None = None) -> dict | None:
+    """The scuffing and micropitting table (:data:`DURABILITY_COLUMNS` per torque; the
+    standard's method from ``standard``, ``/rating/flash_temperature``), the oil's scuffing
+    temperature and permissible λ_GF, and why a safety is missing; None where the file
+    has no ``/friction`` with the variables (written before them)."""
     if lt is None or fr is None or "contact_temperature_max" not in fr:
         return None
-    groups = {"ltca": lt, "friction": fr}
+    groups = {"ltca": lt, "friction": fr, "standard_scuffing": standard}
     rows = [{"torque": f"{t:g}",
              "cells": [{"key": c.key, **_cell(c.value(groups, i), c.decimals)}
                        for c in DURABILITY_COLUMNS]}
@@ -518,7 +539,7 @@ def report_context(tree: xr.DataTree,
         "pattern": _pattern(lt, inputs_text),
         "verdict": _verdict(tree),
         "te_table": _te_table(tree),
-        "durability": _durability(lt, fr),
+        "durability": _durability(lt, fr, _group(tree, "rating/flash_temperature")),
         "rating": _rating(tree, lt),
         "solver": _solver(lt) if lt is not None else None,
         "absent": absent,
