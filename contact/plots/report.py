@@ -139,6 +139,7 @@ SUMMARY_COLUMNS: tuple[SummaryColumn, ...] = (
     SummaryColumn("power_loss_mean", "power loss", "W", 1, _var("friction", "power_loss_mean")),
 )
 
+
 def _standard(name: str):
     """A column value: ``name`` of the standard's flash temperature method
     (``/rating/flash_temperature``) at the torque of the friction stage's index (NaN where
