@@ -13,7 +13,10 @@ A basic file (``cases/basic/*.toml``, schema in ``docs/synthesis.md``) holds
 * ``[synthesis]`` — the synthesis options with documented defaults (:class:`SynthesisOptions`),
   optionally overridden per pinion flank in ``[synthesis.concave]`` / ``[synthesis.convex]``;
 * ``[optimize]`` (optional) — the problem ``ltca optimize`` solves when it re-synthesises
-  the design (``docs/optimize.md``); not read by the synthesis.
+  the design (``docs/optimize.md``); not read by the synthesis;
+* ``[rating]`` (optional) — the ISO 10300 rating inputs of the pair (``docs/rating.md``),
+  copied into the synthesised case; without it the case gets the stated defaults of
+  ``ltca synthesize`` (``docs/synthesis.md``, "The written case").
 
 Public functions
 ----------------
@@ -157,6 +160,13 @@ class SynthesisOptions:
         W = π m_mn − s_mn2 − h_fm2 (tan α_D + tan α_C).
     edge_radius : float or None — [mm]
         Blade edge radius of both members; default min(0.25 m_mn, 0.4 W).
+    design_torque : float or None — [N·m]
+        Pinion torque at which the development bearing is checked under load (no edge
+        contact beyond a small share, no plastic edge; ``docs/synthesis.md``), in
+        (0, 1e6]. Default None: the pinion torque at which the ISO 10300 pitting safety
+        factor S_H of the synthesised case's ``[rating]`` inputs equals 1
+        (:func:`contact.rating.capacity.design_torque`) — the largest torque the flank
+        carries at long life, so the torque the bearing must hold without edge contact.
     concave, convex : FlankOptions
         Local-synthesis prescriptions per pinion flank.
     """
@@ -169,6 +179,7 @@ class SynthesisOptions:
     blade_angle_coast: float | None = None
     point_width: float | None = None
     edge_radius: float | None = None
+    design_torque: float | None = None
     concave: FlankOptions = field(default_factory=FlankOptions)
     convex: FlankOptions = field(default_factory=FlankOptions)
 
@@ -186,7 +197,8 @@ class SynthesisOptions:
                 f"available: {[p for p, ok in PROCESSES.items() if ok]}")
         for name, lo, hi, unit in (("cutter_radius", 0.0, 1e4, "mm"),
                                    ("point_width", 0.0, 100.0, "mm"),
-                                   ("edge_radius", 0.0, 20.0, "mm")):
+                                   ("edge_radius", 0.0, 20.0, "mm"),
+                                   ("design_torque", 0.0, 1e6, "N m")):
             v = getattr(self, name)
             if v is not None:
                 object.__setattr__(self, name, real(f"synthesis.{name}", v, unit=unit, low=lo,
@@ -227,6 +239,10 @@ class BasicDesign:
         The file's ``[optimize]`` table (read by ``ltca optimize`` when it re-synthesises
         this design; schema of :func:`contact.optimize.problem_from_table`), unvalidated
         here; empty if absent.
+    rating : dict
+        The file's ``[rating]`` table (ISO 10300 inputs, schema of
+        :class:`contact.rating.inputs.RatingInputs`), copied into the synthesised case;
+        validated by ``ltca synthesize``, not here; empty if absent.
     """
 
     name: str
@@ -238,6 +254,7 @@ class BasicDesign:
     comments: Mapping[str, str] = field(default_factory=dict)
     operating: Mapping[str, Any] = field(default_factory=dict)
     optimize: Mapping[str, Any] = field(default_factory=dict)
+    rating: Mapping[str, Any] = field(default_factory=dict)
 
     def blank(self) -> BlankGeometry:
         """ISO 23509 blank geometry of the design (pitch cone and both members)."""
@@ -316,9 +333,11 @@ def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
 
 
 _OPTION_FIELDS = {"drive_flank", "gear_process", "pinion_process", "cutter_radius",
-                  "blade_angle_drive", "blade_angle_coast", "point_width", "edge_radius"}
+                  "blade_angle_drive", "blade_angle_coast", "point_width", "edge_radius",
+                  "design_torque"}
 _FLANK_FIELDS = {f.name for f in fields(FlankOptions)}
-_TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating", "optimize"}
+_TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating", "optimize",
+        "rating"}
 
 
 def _same(v):
@@ -496,10 +515,15 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
         raise InputError(f"notes: must be a table of strings, got {notes!r}")
     operating_from_dict(raw)  # the [operating] table validated here (operating.<field>)
     operating = dict(raw.get("operating", {}))
+    rating = raw.get("rating", {})
+    if not isinstance(rating, Mapping):
+        raise InputError(f"rating: must be a table (the ISO 10300 inputs, docs/rating.md), "
+                         f"got {rating!r}")
     return BasicDesign(name=raw["name"], source=raw["source"], design=design,
                        targets=targets, adjust=tuple(adjust), options=options,
                        comments=dict(notes), operating=operating,
-                       optimize=dict(raw.get("optimize", {})))
+                       optimize=dict(raw.get("optimize", {})),
+                       rating=dict(rating))
 
 
 def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign:
