@@ -6,7 +6,7 @@ offers that family of models behind one interface::
 
     >>> from friction.coefficient import available_friction_models, friction_coefficient
     >>> available_friction_models()
-    ('benedict_kelley', 'constant', 'kolivand2009', 'mixed_ehl', 'xu2007')
+    ('benedict_kelley', 'constant', 'iso_tr_14179_2', 'kolivand2009', 'mixed_ehl', 'xu2007')
     >>> mu = friction_coefficient("xu2007", hertz_pressure=1000.0, slide_to_roll=0.5,
     ...                           entraining_velocity=10.0, viscosity=0.0163, radius=20.0,
     ...                           roughness_1=0.8, roughness_2=0.8)
@@ -67,6 +67,7 @@ from geometry.core.validation import broadcast, real_array, scalar_or_array
 __all__ = [
     "DEFAULT_FRICTION_MODEL",
     "ENTRY_POINT_GROUP",
+    "ISO_TR_14179_2_RANGE",
     "MU_CAP",
     "STANDARD_INPUTS",
     "UNAVAILABLE_MODELS",
@@ -82,6 +83,7 @@ __all__ = [
     "friction_model_name",
     "friction_model_validity",
     "get_friction_model",
+    "iso_tr_14179_2",
     "register_friction_model",
     "unavailable_friction_models",
     "unregister_friction_model",
@@ -410,6 +412,127 @@ def benedict_kelley(
     return scalar_or_array(_cap("benedict_kelley", mu))
 
 
+# ----------------------------------------------------------------------------- ISO/TR 14179-2
+#: Declared range of ``iso_tr_14179_2`` as applied per contact segment: (low, high, units).
+#: The standard states no numeric range for the formula; these are the conditions of the FZG
+#: test gears it was fitted on as far as the sources quoted in the docstring give them
+#: (pitch-line velocity 0.5–20 m/s on centre distance 91.5 mm gears, i.e. v_Σ ≈ 0.3–14 m/s;
+#: ground or shaved flanks, Ra 0.1–1 µm), and mineral-oil viscosities of ISO VG 32–220 at
+#: 40–120 °C (≈ 3–300 mPa s). Outside it the formula is evaluated as it stands and flagged.
+ISO_TR_14179_2_RANGE: Mapping[str, tuple[float, float, str]] = MappingProxyType(
+    {
+        "sum_velocity": (0.3, 14.0, "m/s"),
+        "roughness_ra": (0.1, 1.0, "µm"),
+        "viscosity": (0.003, 0.3, "Pa s"),
+    }
+)
+
+
+def iso_tr_14179_2(
+    *,
+    load_per_length: ArrayLike,
+    entraining_velocity: ArrayLike,
+    radius: ArrayLike,
+    viscosity: ArrayLike,
+    roughness_1: ArrayLike,
+    roughness_2: ArrayLike,
+    base_oil_factor: float = 1.0,
+) -> NDArray[np.float64] | float:
+    """Mean tooth friction coefficient of ISO/TR 14179-2 (Schlenk's FZG correlation).
+
+    μ_mz = 0.048 (F_bt/b / (v_ΣC ρ_C))^0.2 · η_oil^−0.05 · Ra^0.25 · X_L,
+
+    in the standard's units: F_bt/b [N/mm], v_ΣC = u₁ + u₂ [m/s], ρ_C [mm], η_oil
+    [mPa s], Ra = (Ra₁ + Ra₂)/2 [µm]. A *measured* correlation (FZG back-to-back tests on
+    spur and helical gears, mean μ over the mesh), offered as an independent anchor to compare
+    the physics models with — not as the default. Applied here per contact segment: F_bt/b
+    is the segment's normal load per length w′, v_ΣC twice its entraining velocity and ρ_C
+    its equivalent radius R.
+
+    Parameters
+    ----------
+    load_per_length : float or array — [N/mm]
+        w′ > 0.
+    entraining_velocity : float or array — [m/s]
+        Mean entraining velocity u_e = (u₁ + u₂)/2 > 0; v_ΣC = 2 u_e.
+    radius : float or array — [mm]
+        Equivalent radius of curvature R > 0.
+    viscosity : float or array — [Pa s]
+        Dynamic viscosity at the oil (inlet) temperature, > 0.
+    roughness_1, roughness_2 : float or array — [µm]
+        RMS roughness Rq of each flank, ≥ 0; Ra = √(2/π) Rq (Gaussian heights), averaged.
+    base_oil_factor : float — [1]
+        X_L: 1.0 mineral oil (default), 0.8 polyalphaolefin, 0.7 non-water-soluble polyglycol,
+        0.6 water-soluble polyglycol (the values of
+        :data:`friction.flash_temperature.BASE_OIL_FACTORS`), in (0, 2].
+
+    Returns
+    -------
+    float or array — [1]
+        μ_mz, broadcast shape of the inputs (0 where the flanks are ideally smooth, Ra = 0,
+        the formula's own limit).
+
+    Raises
+    ------
+    InputError
+        An input outside its accepted range (the message names it).
+
+    Warns
+    -----
+    FrictionModelRangeWarning
+        v_ΣC, Ra or η outside :data:`ISO_TR_14179_2_RANGE`.
+
+    Notes
+    -----
+    Source: ISO/TR 14179-2:2001, *Gears — Thermal capacity — Part 2: Thermal load-carrying
+    capacity*, the load-dependent gear loss with the mean friction coefficient of Schlenk,
+    L., *Untersuchungen zur Fresstragfähigkeit von Großzahnrädern*, Diss. TU München (1994).
+    The constant 0.048 and the exponents 0.2 / −0.05 / 0.25 were checked against an
+    independent implementation of the standard's formula (a public gearbox-loss script,
+    "Average friction coefficient according to Schlenk", in the same units); the standard
+    itself is not open. Worked value (the test): w′ 300 N/mm, v_Σ 3 m/s, ρ 10 mm,
+    η 13.6 mPa s, Ra 0.5 µm, mineral oil → μ = 0.048 · 10^0.2 · 13.6^−0.05 · 0.5^0.25
+    = 0.0561. The standard applies it to the nominal load of a whole mesh at the pitch
+    point; evaluated per segment it follows the local load, speed and curvature with the
+    same exponents (so a mesh-mean of it is not exactly the standard's value).
+    """
+    w = real_array("load_per_length", load_per_length, low=0.0, low_open=True, unit="N/mm")
+    ve = real_array("entraining_velocity", entraining_velocity, low=0.0, low_open=True,
+                    unit="m/s")
+    r = real_array("radius", radius, low=0.0, low_open=True, unit="mm")
+    eta = real_array("viscosity", viscosity, low=0.0, low_open=True, high=100.0, unit="Pa s")
+    s1 = real_array("roughness_1", roughness_1, low=0.0, high=100.0, unit="µm")
+    s2 = real_array("roughness_2", roughness_2, low=0.0, high=100.0, unit="µm")
+    x_l = float(real_array("base_oil_factor", base_oil_factor, low=0.0, low_open=True,
+                           high=2.0, unit="1"))
+    w, ve, r, eta, s1, s2 = broadcast(load_per_length=w, entraining_velocity=ve, radius=r,
+                                      viscosity=eta, roughness_1=s1, roughness_2=s2)
+    v_sum = 2.0 * ve
+    ra = 0.5 * (s1 + s2) * _RA_OVER_RQ
+    for name, vals in (("sum_velocity", v_sum), ("roughness_ra", ra), ("viscosity", eta)):
+        lo, hi, units = ISO_TR_14179_2_RANGE[name]
+        _warn_outside("iso_tr_14179_2", name, vals, lo, hi, units)
+    mu = 0.048 * (w / (v_sum * r)) ** 0.2 * (eta * 1e3) ** -0.05 * ra**0.25 * x_l
+    return scalar_or_array(_cap("iso_tr_14179_2", mu))
+
+
+def _iso_tr_14179_2_validity(*, entraining_velocity: ArrayLike, viscosity: ArrayLike,
+                             roughness_1: ArrayLike, roughness_2: ArrayLike,
+                             **_: Any) -> NDArray[np.bool_]:
+    """True where v_Σ, Ra and η lie inside :data:`ISO_TR_14179_2_RANGE`."""
+    values = {
+        "sum_velocity": 2.0 * np.asarray(entraining_velocity, float),
+        "roughness_ra": 0.5 * (np.asarray(roughness_1, float)
+                               + np.asarray(roughness_2, float)) * _RA_OVER_RQ,
+        "viscosity": np.asarray(viscosity, float),
+    }
+    ok = np.asarray(True)
+    for name, vals in values.items():
+        lo, hi, _units = ISO_TR_14179_2_RANGE[name]
+        ok = ok & (vals >= lo) & (vals <= hi)
+    return np.asarray(ok, dtype=bool)
+
+
 # ----------------------------------------------------------------------------- constant
 def constant(*, value: float = 0.05) -> float:
     """A constant friction coefficient (Coleman's assumption for bevel and hypoid gears).
@@ -540,6 +663,11 @@ _MODELS: Mapping[str, FrictionModel] = MappingProxyType(
         ),
         "constant": _register("constant", constant, "Coleman (1975); constant μ",
                               _always_valid),
+        "iso_tr_14179_2": _register(
+            "iso_tr_14179_2", iso_tr_14179_2,
+            "ISO/TR 14179-2:2001 mean tooth friction (Schlenk 1994, FZG tests); a measured"
+            " anchor, applied per segment", _iso_tr_14179_2_validity,
+        ),
         "kolivand2009": _register(
             "kolivand2009", kolivand2009,
             "seed Eq. 5.11 structure (Kolivand 2009, §5.2.3) fitted to friction.ehl over"
@@ -612,8 +740,8 @@ def available_friction_models() -> tuple[str, ...]:
     -------
     tuple of str
         Sorted names: the bundled models (``"benedict_kelley"``, ``"constant"``,
-        ``"kolivand2009"``, ``"mixed_ehl"``, ``"xu2007"``), the installed plug-ins' and
-        those registered with :func:`register_friction_model`.
+        ``"iso_tr_14179_2"``, ``"kolivand2009"``, ``"mixed_ehl"``, ``"xu2007"``), the
+        installed plug-ins' and those registered with :func:`register_friction_model`.
 
     Notes
     -----

@@ -1,4 +1,5 @@
-"""Tests of friction.coefficient: the registry, Xu et al. 2007, Benedict & Kelley, constant."""
+"""Tests of friction.coefficient: the registry, Xu et al. 2007, Benedict & Kelley, ISO/TR
+14179-2, constant."""
 
 from __future__ import annotations
 
@@ -20,7 +21,9 @@ from friction.coefficient import (
     available_friction_models,
     benedict_kelley,
     friction_coefficient,
+    friction_model_validity,
     get_friction_model,
+    iso_tr_14179_2,
     unavailable_friction_models,
     xu2007,
 )
@@ -60,8 +63,8 @@ def _no_warnings():
 
 # ----------------------------------------------------------------------------- registry
 def test_registry_lists_models() -> None:
-    assert available_friction_models() == ("benedict_kelley", "constant", "kolivand2009",
-                                           "mixed_ehl", "xu2007")
+    assert available_friction_models() == ("benedict_kelley", "constant", "iso_tr_14179_2",
+                                           "kolivand2009", "mixed_ehl", "xu2007")
     assert "kolivand2009_table_5_3" in unavailable_friction_models()
 
 
@@ -250,6 +253,47 @@ def test_benedict_kelley_roughness_limit() -> None:
 
 
 # ----------------------------------------------------------------------------- constant
+# ----------------------------------------------------------------------------- ISO/TR 14179-2
+_RQ_OF_RA_05 = 0.5 / math.sqrt(2.0 / math.pi)  # the Rq whose Gaussian Ra is 0.5 µm
+
+
+def test_iso_tr_14179_2_worked_value() -> None:
+    # the standard's formula in its own units, written out by hand: w 300 N/mm,
+    # v_Σ 3 m/s, ρ 10 mm, η 13.6 mPa s, Ra 0.5 µm, mineral oil; the only tolerance is
+    # round-off (the model converts u_e → v_Σ, Pa s → mPa s and Rq → Ra exactly)
+    expected = 0.048 * (300.0 / (3.0 * 10.0)) ** 0.2 * 13.6**-0.05 * 0.5**0.25
+    assert expected == pytest.approx(0.05614, abs=1e-5)
+    mu = friction_coefficient("iso_tr_14179_2", load_per_length=300.0, entraining_velocity=1.5,
+                              radius=10.0, viscosity=0.0136, roughness_1=_RQ_OF_RA_05,
+                              roughness_2=_RQ_OF_RA_05)
+    assert mu == pytest.approx(expected, rel=1e-12)
+
+
+def test_iso_tr_14179_2_exponents_and_oil_factor() -> None:
+    # the published exponents as ratios: load ×2 → ×2^0.2, speed ×2 → ×2^−0.2, Ra ×4 → ×√2,
+    # viscosity ×2 → ×2^−0.05; X_L multiplies (0.8 for a polyalphaolefin)
+    base = dict(load_per_length=300.0, entraining_velocity=1.5, radius=10.0, viscosity=0.0136,
+                roughness_1=0.2, roughness_2=0.2)
+    mu0 = iso_tr_14179_2(**base)
+    assert iso_tr_14179_2(**{**base, "load_per_length": 600.0}) / mu0 == pytest.approx(2**0.2)
+    assert iso_tr_14179_2(**{**base, "entraining_velocity": 3.0}) / mu0 == pytest.approx(2**-0.2)
+    assert iso_tr_14179_2(**{**base, "roughness_1": 0.8, "roughness_2": 0.8}) / mu0 == \
+        pytest.approx(4**0.25)
+    assert iso_tr_14179_2(**{**base, "viscosity": 0.0272}) / mu0 == pytest.approx(2**-0.05)
+    assert iso_tr_14179_2(**base, base_oil_factor=0.8) / mu0 == pytest.approx(0.8)
+
+
+def test_iso_tr_14179_2_warns_outside_range_and_names_bad_input() -> None:
+    base = dict(load_per_length=300.0, radius=10.0, viscosity=0.0136, roughness_1=0.5,
+                roughness_2=0.5)
+    with pytest.warns(FrictionModelRangeWarning, match="sum_velocity"):
+        iso_tr_14179_2(entraining_velocity=0.05, **base)
+    with pytest.raises(InputError, match="load_per_length"):
+        iso_tr_14179_2(entraining_velocity=1.5, **{**base, "load_per_length": -1.0})
+    assert not friction_model_validity("iso_tr_14179_2", entraining_velocity=0.05, **base)
+    assert friction_model_validity("iso_tr_14179_2", entraining_velocity=1.5, **base)
+
+
 def test_constant_default_is_coleman_value() -> None:
     assert friction_coefficient("constant") == 0.05
     with pytest.raises(InputError, match="value"):
