@@ -66,6 +66,18 @@ SEED_RATING = {
         "26 um at its sizes); the other fields RatingInputs' defaults (docs/rating.md)."),
 }
 
+#: the design torque of the seed's 11x41 face-milled pairs [N m, pinion] (its Table 3.1
+#: loads them at 50, 250 and 500 N m; it gives no design torque): 250 N m, the middle load,
+#: rated at long life; 500 N m is then an overload of finite life whose permissible load
+#: cycles the rating states (its long-life capacity at S_H = S_Hmin is ~400 N m)
+SEED_DESIGN_TORQUE = {"kolivand2009_fm_11x41": 250.0, "kolivand2009_fm_11x41_reference": 250.0}
+SEED_DESIGN_TORQUE_SOURCE = (
+    " Design torque 250 N m (pinion): the middle load of the seed's Table 3.1 (50, 250, "
+    "500 N m), rated at long life; the seed gives no design torque, and the rating's "
+    "long-life capacity of this pair at S_H = S_Hmin is about 400 N m, so 500 N m is rated "
+    "as an overload of finite life (the permissible load cycles in /rating, ISO 10300-2/-3 "
+    "cl. 8).")
+
 #: the Annex F cases: (case, TR sample whose [rating] inputs they take)
 ANNEX_F = {"spiral_bevel_iso23509_s1": 1, "hypoid_iso23509_s2": 2}
 #: cases from a basic file of the same name, and the variants of a base case
@@ -95,7 +107,11 @@ def _tables(name: str) -> tuple[dict, dict, str]:
             "Annex F pair (cases/derive_iso10300_samples.py)")}
         return design, rating, "annex_f"
     basic = load_basic(ROOT / "cases" / "basic" / f"{base}.toml")
-    return basic.design.to_degrees(), dict(SEED_RATING), "synthesised"
+    rating = dict(SEED_RATING)
+    if base in SEED_DESIGN_TORQUE:
+        rating["design_torque"] = SEED_DESIGN_TORQUE[base]
+        rating["source"] += SEED_DESIGN_TORQUE_SOURCE
+    return basic.design.to_degrees(), rating, "synthesised"
 
 
 def _check(name: str, text: str, design: dict, kind: str) -> float:

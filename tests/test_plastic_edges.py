@@ -233,12 +233,15 @@ def test_plausibility_quiet_on_the_default_case_loud_at_dE_5(capsys, tmp_path):
     warnings = [line for line in out.splitlines() if line.startswith("WARNING: ")]
     assert any(w.startswith("WARNING: plastic contact") for w in warnings), out
     assert any(w.startswith("WARNING: LTE spread") for w in warnings), out
-    # the run ends with them and its verdict (tests/test_verdicts.py), FAIL for them
+    # the run ends with them and its verdict (tests/test_verdicts.py), FAIL for them,
+    # printed before the file is written (issue 60: what a reader needs first)
     lines = out.rstrip().splitlines()
     verdict_at = next(i for i, line in enumerate(lines) if line.startswith("VERDICT"))
+    wrote_at = next(i for i, line in enumerate(lines) if line.startswith("wrote "))
     assert lines[verdict_at - 1].startswith("WARNING: ")
     assert lines[verdict_at].startswith("VERDICT (analysis): FAIL")
-    assert all(line.startswith(" ") for line in lines[verdict_at + 1:])
+    assert verdict_at < wrote_at == len(lines) - 1
+    assert all(line.startswith(" ") for line in lines[verdict_at + 1:wrote_at])
     assert "plastic" in out.splitlines()[1]  # the summary's column
     # the HTML report says the same, above its summary table; the default case's says
     # nothing (the same sentences: plausibility_warnings of the file's /ltca)

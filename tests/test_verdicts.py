@@ -297,3 +297,41 @@ def test_an_analysis_mounted_beyond_its_blanks_fails():
     assert (f.severity, f.check) == ("fail", "implausible")
     assert f.reason.startswith("misalignment beyond the blank: ΔE = 5 mm, more than 1.51 mm")
     assert verdict(tree(1.5)).severity == "pass"
+
+
+def test_permissible_cycles_inverts_the_life_factor():
+    """The load cycles at which a required life factor is reached (the rating's finite
+    life above the design torque) give that factor back through ISO 10300-2 cl. 8's
+    S–N curve (an identity, to round-off), and the curve's ends map to inf and 0."""
+    from contact.rating.pitting import life_factor, permissible_cycles
+
+    m = _material()["sn_contact"]
+    curve = (m["knee_cycles"], m["static_cycles"], m["static_life_factor"])
+    required = np.array([1.01, 1.1234, 1.3, 0.99 * m["static_life_factor"]])
+    n = permissible_cycles(required, *curve)
+    assert np.all((n > m["static_cycles"]) & (n < m["knee_cycles"]))
+    np.testing.assert_allclose(life_factor(n, *curve), required, rtol=1e-12)
+    ends = permissible_cycles([0.9, 1.0, 1.01 * m["static_life_factor"], np.nan], *curve)
+    assert ends[0] == ends[1] == np.inf and ends[2] == 0.0 and np.isnan(ends[3])
+
+
+def test_above_the_design_torque_a_low_long_life_safety_is_a_finite_life():
+    """A torque above the rating's design torque whose long-life safety is below the
+    minimum wants attention with the load cycles it may run; at or below the design
+    torque, or beyond the static strength (0 cycles), it fails."""
+    rt = xr.Dataset({"S_H": (("torque", "member"), [[1.1, 1.1], [0.89, 0.89]]),
+                     "S_Hmin": ((), 1.0), "load_cycles": ("member", [np.nan, np.nan]),
+                     "permissible_cycles_pitting": (("torque", "member"),
+                                                    [[np.inf, np.inf], [1.07e7, 0.0]]),
+                     "design_torque": ((), 250.0), "pinion_speed": ((), 1500.0)},
+                    coords={"torque": [250.0, 500.0], "member": ["pinion", "gear"]})
+    v = verdict(_tree(ltca=_ltca([700.0, 700.0]), rating=rt))
+    pinion, gear = sorted((f for f in v.findings if f.check == "rating"),
+                          key=lambda f: "gear" in f.reason)
+    assert pinion.severity == "attention" and gear.severity == "fail"
+    # 1.07e7 cycles at 1500 rpm: 1.07e7 / (1500 * 60) = 119 h
+    assert "permissible for 1.07e+07 pinion load cycles, 119 h at 1500 rpm" in pinion.reason
+    assert "even the static strength is exceeded" in gear.reason
+    below = rt.assign(design_torque=((), 500.0))
+    assert {f.severity for f in verdict(_tree(ltca=_ltca([700.0, 700.0]),
+                                              rating=below)).findings} == {"fail"}

@@ -32,8 +32,9 @@ from contact.commands.options import (
 )
 from contact.commands.output_paths import check_output_dir
 
-__all__ = ["TE_TABLE_HEADERS", "deviation_te_rows", "durability_lines", "misalignment_from_args",
-           "plot", "print_verdict", "rating_lines", "register", "root_stress_rows", "run",
+__all__ = ["TE_TABLE_HEADERS", "check_certified", "deviation_te_rows", "durability_lines",
+           "misalignment_from_args", "plot", "print_verdict", "rating_lines", "register",
+           "root_stress_rows", "run",
            "run_rating", "standard_scuffing", "write_figures"]
 
 log = logging.getLogger(__name__)
@@ -304,12 +305,30 @@ def run(args: argparse.Namespace) -> int:
         print(tabulate(deviation_te_rows(tree), headers=TE_TABLE_HEADERS, tablefmt="github"))
     times = {k[5:-2]: v for k, v in tree.attrs.items() if k.startswith("time_")}
     print("time [s]: " + ", ".join(f"{k} {v:.2f}" for k, v in times.items()))
+    # the verdict before the file: what a reader needs first, and what the report lists
+    print_plausibility_warnings(lt, case, mis)
+    print_verdict(tree, rest=None if args.report else
+                  f"`ltca report {Path(output).name}` or `ltca run --report FILE.html` "
+                  "lists them all")
     path = write_netcdf(tree, Path(output), inputs=tree.attrs["inputs"])
     print(f"wrote {path}")
     write_figures(path, args.plots, args.report, progress=not args.no_progress)
-    print_plausibility_warnings(lt, case, mis)
-    print_verdict(tree)
+    check_certified(tree, path)
     return 0
+
+
+def check_certified(tree, path) -> None:
+    """Raise :class:`contact.errors.AnalysisFailedError` (``ltca`` exits with 1) for an
+    analysis written to ``path`` whose ``analysis_status`` is not ``"ok"``: a torque or roll
+    position without a certified contact solution is no result a script may take for one
+    (:func:`contact.ltca.summary.certification`)."""
+    from contact.errors import AnalysisFailedError
+
+    status = str(tree.attrs.get("analysis_status", "ok"))
+    if status != "ok":
+        raise AnalysisFailedError(
+            f"analysis {status}: {tree.attrs.get('analysis_status_reason', '')}; {path} "
+            "holds what was found (root attribute analysis_status)")
 
 
 def run_rating(args: argparse.Namespace, case):
@@ -423,15 +442,16 @@ def print_plausibility_warnings(ltca, case=None, misalignment=None) -> None:
 VERDICT_LINES = 8
 
 
-def print_verdict(result) -> None:
+def print_verdict(result, rest: str | None = None) -> None:
     """Print the verdict of a result (:func:`contact.study.verdicts.verdict`: an analysis
     tree, a duty cycle or a V-H check), short: its severity and at most
-    :data:`VERDICT_LINES` findings, each wrapped at 100 columns."""
+    :data:`VERDICT_LINES` findings, each wrapped at 100 columns; ``rest`` says where the
+    findings not printed can be read (default: the report)."""
     import textwrap
 
     from contact.study.verdicts import verdict
 
-    for line in verdict(result).lines(VERDICT_LINES):
+    for line in verdict(result).lines(VERDICT_LINES, rest=rest):
         line = console_text(line)
         indent = " " * (len(line) - len(line.lstrip()))
         print(textwrap.fill(line, 100, initial_indent="", subsequent_indent=indent + "    ",

@@ -305,6 +305,40 @@ def life_factor(cycles: ArrayLike, knee_cycles: ArrayLike, static_cycles: ArrayL
     return z0 ** t
 
 
+def permissible_cycles(required_factor: ArrayLike, knee_cycles: ArrayLike,
+                       static_cycles: ArrayLike, static_factor: ArrayLike) -> np.ndarray:
+    """Load cycles at which the life factor reaches ``required_factor`` — [1]: the inverse
+    of :func:`life_factor` on its sloped part.
+
+    Parameters
+    ----------
+    required_factor : array_like — [1]
+        The life factor Z_NT (or Y_NT) a load needs, e.g. S_min / S at long life.
+    knee_cycles, static_cycles, static_factor : array_like
+        The S–N curve as in :func:`life_factor`.
+
+    Returns
+    -------
+    ndarray — [1]
+        ``inf`` where ``required_factor`` ≤ 1 (long life), 0 where it exceeds the static
+        factor (not even the static strength holds), else N_L with
+        life_factor(N_L) = required_factor; NaN where ``required_factor`` is NaN.
+
+    Notes
+    -----
+    Source: ISO 10300-2:2014 cl. 8 and ISO 10300-3:2014 cl. 8 (the S–N curves of ISO
+    6336-2/-3 as :func:`life_factor` takes them), solved for N_L:
+    N_L = N_knee (N_knee / N_static)^(−ln Z / ln Z_static).
+    """
+    r, knee, static, z0 = np.broadcast_arrays(
+        *(np.asarray(x, float) for x in (required_factor, knee_cycles, static_cycles,
+                                          static_factor)))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        n = knee * (knee / static) ** (-np.log(r) / np.log(z0))
+    return np.where(np.isnan(r), np.nan,
+                    np.where(r <= 1.0, np.inf, np.where(r > z0, 0.0, n)))
+
+
 def nominal_contact_stress(F_n: ArrayLike, l_bm: float, rho_rel: float, Z_MB: float,
                            Z_LS: float, Z_E: float) -> np.ndarray:
     """Nominal contact stress σ_H0 = √(F_n / (l_bm ρ_rel)) Z_M-B Z_LS Z_E — [MPa].

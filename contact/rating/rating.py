@@ -185,7 +185,18 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
                                   alpha_["K_Falpha"][:, None])
     sigma_FP = bending.permissible_root_stress(s_Flim, Y_NT, Y_d, Y_R, Y_X)
 
+    # the load cycles each torque may run where its long-life safety is below the minimum
+    # (pinion cycles N_L1; the gear's are N_L1 z1/z2)
+    to_pinion = np.array([1.0, data.z2 / data.z1])
+    S_H_long = sigma_HP[None, :] / Z_NT[None, :] / sigma_H[:, None]
+    S_F_long = sigma_FP[None, :] / Y_NT[None, :] / sigma_F
+    N_H = pitting.permissible_cycles(inputs.min_safety_pitting / S_H_long,
+                                     *_curve(materials, "contact_curve")) * to_pinion
+    N_F = pitting.permissible_cycles(inputs.min_safety_bending / S_F_long,
+                                     *_curve(materials, "bending_curve")) * to_pinion
+
     values = dict(
+        N_H=N_H, N_F=N_F,
         vg=vg, F=F, v_mt=v_mt, speed=speed, f_pt=f_pt_members, y_alpha=float(
             factors.running_in_allowance(f_pt)), N=N, K=K, K_v=K_v, K_A=K_A,
         K_Hbeta_be=K_Hbe, K_F0=K_F0, K_Hbeta=K_Hb, K_Fbeta=K_Fb, alpha_=alpha_, Z_MB=Z_MB,
@@ -342,6 +353,13 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
                    f"{_P2} cl. 6 (Method B1)"),
         "S_Hmin": var((), inputs.min_safety_pitting, "1", "minimum safety factor for pitting "
                                                           "S_H,min", "[rating]"),
+        "design_torque": var((), np.nan if inputs.design_torque is None
+                             else inputs.design_torque, "N m",
+                             "pinion torque rated at long life (NaN: every torque)",
+                             "[rating] design_torque"),
+        "permissible_cycles_pitting": var(
+            tm, v["N_H"], "1", "pinion load cycles N_L1 at which S_H reaches S_H,min (inf: "
+            "long life; 0: beyond the static strength)", f"{_P2} cl. 8 (life factor Z_NT)"),
         # bending (ISO 10300-3)
         "E": var(m, form.E, "mm", "auxiliary quantity of the tooth form E", f"{_P3} cl. 6"),
         "G": var(m, form.G, "1", "auxiliary quantity of the tooth form G", f"{_P3} cl. 6"),
@@ -388,6 +406,9 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
                    f"{_P3} cl. 6 (Method B1)"),
         "S_Fmin": var((), inputs.min_safety_bending, "1", "minimum safety factor for bending "
                                                           "S_F,min", "[rating]"),
+        "permissible_cycles_bending": var(
+            tm, v["N_F"], "1", "pinion load cycles N_L1 at which S_F reaches S_F,min (inf: "
+            "long life; 0: beyond the static strength)", f"{_P3} cl. 8 (life factor Y_NT)"),
     }
     coords = {
         "torque": data_var(t, torque, "N m", "pinion torque T1"),

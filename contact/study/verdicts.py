@@ -35,7 +35,9 @@ present).
   pattern (``pressure_envelope``) reaches — the outermost nodes of the gear grid.
 * ``plastic_edges`` (attention): segments at their contact-pressure limit carrying a share
   of the torque up to the plausibility limit (beyond it: ``implausible``).
-* ``certification`` (attention): roll positions without a certified contact solution.
+* ``certification`` (attention): roll positions without a certified contact solution;
+  fail where a torque has none (the analysis failed there:
+  :func:`contact.ltca.summary.certification`).
 * ``friction_extrapolated`` (attention): the friction model ran outside its fitted range
   (``/friction/friction_model_extrapolated``; flanks and edges as
   :func:`friction.efficiency.extrapolation_summary` splits them).
@@ -43,7 +45,11 @@ present).
   :data:`MICROPITTING_MIN` = 1: the peak contact temperature reaches the oil's scuffing
   temperature, the least specific film its permissible value — the methods' own criteria
   (ISO/TR 13989-1, ISO/TS 6336-22 leave larger minimum factors to agreement).
-* ``rating`` (fail): the ISO 10300 ``/rating`` group's S_H, S_F against its S_Hmin, S_Fmin.
+* ``rating`` (fail): the ISO 10300 ``/rating`` group's S_H, S_F against its S_Hmin, S_Fmin;
+  attention instead for a torque above the rating's ``design_torque`` whose long-life
+  safety is below the minimum but whose static strength holds: a load of finite life, with
+  the load cycles it may run (``permissible_cycles_pitting``/``_bending``, ISO 10300-2/-3
+  cl. 8).
 
 **Duty cycle** (the ``/duty_cycle`` dataset of ``ltca duty-cycle``).
 
@@ -158,11 +164,16 @@ class Verdict:
         Worst first, then in the order of the checks.
     checks : tuple of str
         The checks that ran (those whose data the result has).
+    unchecked : tuple of (str, str)
+        The checks of the kind (:data:`CHECKS`) that could not be made, each with why
+        (the group its data lives in is absent: an analysis tree without ``/ltca`` makes
+        none of the contact checks); a verdict is only as complete as its checks.
     """
 
     kind: str
     findings: tuple[Finding, ...]
     checks: tuple[str, ...]
+    unchecked: tuple[tuple[str, str], ...] = ()
 
     @property
     def severity(self) -> str:
@@ -170,18 +181,28 @@ class Verdict:
         return max((f.severity for f in self.findings), key=SEVERITIES.index,
                    default="pass")
 
-    def lines(self, limit: int | None = None) -> list[str]:
+    def lines(self, limit: int | None = None, rest: str | None = None) -> list[str]:
         """The verdict as text lines: ``VERDICT: <severity>`` with the count, then one
         line per finding (``  fail: <reason>``); at most ``limit`` findings, the rest
-        counted."""
+        counted, with ``rest`` saying where they are listed (default: the report); a
+        line ``  not checked: <checks> (<why>)`` per reason some checks could not be made
+        (:attr:`unchecked`)."""
         n = len(self.findings)
         head = (f"VERDICT ({self.kind}): {self.severity.upper()}"
                 + (f", {n} finding{'s' * (n != 1)}" if n else
                    f", no finding in {len(self.checks)} checks"))
+        if self.unchecked:
+            head += (f"; {len(self.unchecked)} check{'s' * (len(self.unchecked) != 1)} "
+                     "not made")
         shown = self.findings if limit is None else self.findings[:limit]
         out = [head] + [f"  {f.severity}: {f.reason}" for f in shown]
+        whys: dict[str, list[str]] = {}
+        for check, why in self.unchecked:
+            whys.setdefault(why, []).append(check)
+        out += [f"  not checked: {', '.join(checks)} ({why})" for why, checks in whys.items()]
         if len(shown) < n:
-            out.append(f"  … and {n - len(shown)} more (the report lists them all)")
+            out.append(f"  … and {n - len(shown)} more "
+                       f"({rest or 'the report lists them all'})")
         return out
 
 
@@ -311,6 +332,13 @@ def _certification(lt: xr.Dataset) -> list[Finding]:
     if not np.any(bad):
         return []
     torque = lt["torque"].values
+    none = [i for i in np.flatnonzero(bad) if not found[i].any()]
+    if none:  # no contact solution at all at these torques: the analysis failed
+        where = ", ".join(_t(torque[i]) for i in none)
+        return [Finding("fail", "certification",
+                        f"no certified contact solution at {where} (0 of {found.shape[1]} "
+                        "roll positions): the analysis failed there, its LTE, pressures and "
+                        "efficiency are no results (/ltca/status)")]
     where = ", ".join(f"{int((~found[i]).sum())} of {found.shape[1]} at {_t(torque[i])}"
                       for i in np.flatnonzero(bad))
     return [Finding("attention", "certification",
@@ -361,22 +389,45 @@ def _rating(rt: xr.Dataset) -> list[Finding]:
     # the rating's load cycles per member, NaN: long life (absent: not said)
     cycles = (np.asarray(rt["load_cycles"].values, float).ravel() if "load_cycles" in rt
               else np.zeros(1))
-    for name, least, what, factor in (("S_H", "S_Hmin", "pitting", "Z_NT"),
-                                      ("S_F", "S_Fmin", "bending", "Y_NT")):
+    design = float(rt["design_torque"]) if "design_torque" in rt else np.nan
+    speed = float(rt["pinion_speed"]) if "pinion_speed" in rt else np.nan
+    for name, least, what, factor, allowed in (
+            ("S_H", "S_Hmin", "pitting", "Z_NT", "permissible_cycles_pitting"),
+            ("S_F", "S_Fmin", "bending", "Y_NT", "permissible_cycles_bending")):
         if name not in rt or least not in rt:
             continue
         smin = float(rt[least])
         s = rt[name].transpose("torque", "member")
+        n_ok = (rt[allowed].transpose("torque", "member").values if allowed in rt
+                else np.full(s.shape, np.nan))
         for i, t in enumerate(s["torque"].values):
             for j, m in enumerate(s["member"].values):
                 x = float(s.values[i, j])
-                if np.isfinite(x) and x < smin:
+                if not (np.isfinite(x) and x < smin):
+                    continue
+                reason = (f"ISO 10300 {what} safety {name} {x:.2f} of the {m} at {_t(t)} "
+                          f"below {least} {smin:g}")
+                long_life = not np.isfinite(cycles[j % cycles.size])
+                n = float(n_ok[i, j])
+                if long_life and t > design and n > 0:
+                    # an overload above the design torque: a finite life, stated
+                    hours = (f", {n / (60.0 * speed):.3g} h at {speed:g} rpm"
+                             if np.isfinite(speed) and speed > 0 else "")
+                    out.append(Finding(
+                        "attention", "rating",
+                        f"{reason} at long life: above the design torque {_t(design)} a load "
+                        f"of finite life, permissible for {n:.3g} pinion load cycles"
+                        f"{hours} ({factor} from the material's S–N curve; ltca duty-cycle "
+                        "counts the damage of a load spectrum)"))
+                    continue
+                if long_life:
                     life = (f" (long life, {factor} 1: the [rating] load_cycles of this "
-                            "torque raise it)" if not np.isfinite(cycles[j % cycles.size])
-                            else "")
-                    out.append(Finding("fail", "rating",
-                                       f"ISO 10300 {what} safety {name} {x:.2f} of the {m} at "
-                                       f"{_t(t)} below {least} {smin:g}{life}"))
+                            "torque raise it")
+                    life += (f"; it holds for {n:.3g} pinion load cycles)" if n > 0 else
+                             ": even the static strength is exceeded)" if n == 0 else ")")
+                else:
+                    life = ""
+                out.append(Finding("fail", "rating", reason + life))
     return out
 
 
@@ -619,4 +670,31 @@ def verdict(result: xr.DataTree | xr.Dataset) -> Verdict:
     """
     kind = _kind(result)
     findings, checks = _KINDS[kind](result)
-    return Verdict(kind, _worst_first(findings), tuple(checks))
+    return Verdict(kind, _worst_first(findings), tuple(checks),
+                   _unchecked(result, kind, checks))
+
+
+#: the group an analysis check reads and why it is missing when the group is
+_ANALYSIS_GROUPS = {
+    "ltca": "no /ltca group: the tree holds no loaded contact",
+    "friction": "no /friction group: the analysis ran without an efficiency stage",
+    "rating": "no /rating group: the analysis ran without the ISO 10300 rating",
+}
+
+
+def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], ...]:
+    """The checks of ``kind`` (:data:`CHECKS`) not among ``checks``, each with why: for
+    an analysis the absent group it reads (:data:`_ANALYSIS_GROUPS`), else the data the
+    result lacks."""
+    missing = [c for c in CHECKS[kind] if c not in checks]
+    if kind != "analysis":
+        return tuple((c, "the result lacks its data") for c in missing)
+    group = {"friction_extrapolated": "friction", "scuffing": "friction",
+             "micropitting": "friction", "rating": "rating"}
+    out = []
+    for c in missing:
+        g = group.get(c, "ltca")
+        why = (_ANALYSIS_GROUPS[g] if _group(result, g) is None
+               else f"/{g} lacks the variables it reads")
+        out.append((c, why))
+    return tuple(out)
