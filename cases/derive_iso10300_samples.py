@@ -17,7 +17,8 @@ gear sets of ISO 23509:2016 Annex F that the TR rates by ISO 10300 Method B1, ea
   Annex F), sample 2 from ``cases/iso23509_sample2_fm.toml`` (synthesised from the same
   basic data), sample 3 synthesised here (face hobbing, ISO 23509 Method 2, z0 = 13; no
   profile relief: the default 15 µm needs a blade rem angle beyond the synthesis' limit
-  on this small 9-tooth pinion).
+  on this small 9-tooth pinion; the pitch cone at the TR's gear pitch angle δ2 = 63.212°,
+  where the standard's Method 2 iteration stopped, ``[design].delta2``).
 """
 
 from __future__ import annotations
@@ -80,12 +81,16 @@ SAMPLES = {
         "title": "hypoid 9/34, offset 31.75 mm (ISO 23509 Annex F sample 3, face hobbing, "
                  "Method 2, z0 = 13)",
         # the Annex F file gives no backlash kind: j_et2 0.2 mm reproduces its thicknesses
-        # (tests/test_blank_face_hobbing.py)
+        # (tests/test_blank_face_hobbing.py). delta2: the gear pitch angle at which the
+        # standard's Method 2 iteration stopped in Annex F (63.212 deg, 0.3 % short of its
+        # closing condition; exact closure 63.145 deg) and which the TR rates: with it the
+        # blank reproduces Annex F's R_m2 82.168, R_e2 95.168, delta_a1 24.765 and the TR's
+        # d_v2 325.506 (tests/test_rating_iso10300.py)
         "design": dict(method=2, Sigma=90.0, a=31.75, z1=9, z2=34, dm2=146.7, b2=26.0,
                        beta_m=21.009, rc0=76.0, z0=13, alpha_dD=20.0, alpha_dC=20.0,
                        f_alim=1.0, c_ham=0.275, k_d=2.0, k_c=0.125, k_t=0.1,
                        backlash="j_et2", backlash_value=0.2, theta_a2=0.0, theta_f2=0.0,
-                       hand="left"),
+                       hand="left", delta2=63.212),
         "operating": {"torque": [250.0], "pinion_speed": 4500.0},
         "rating": {"single_pitch_deviation": [12.0, 25.0], "nu40": 100.0,
                    "flank_roughness": 3.0, "root_roughness": 10.0, "sigma_Hlim": 1510.0,

@@ -497,6 +497,8 @@ _BAD = [
     ("sample4", {"x_smn": 0.3}, InputError, "x_smn"),
     ("sample4", {"x_smn": "thin"}, InputError, "x_smn"),
     ("sample3", {"a": 80.0}, InputError, "a"),
+    ("sample3", {"delta2": 95.0}, InputError, "delta2"),
+    ("sample4", {"delta2": 63.0}, InputError, "delta2"),  # Method 3: not a field of it
 ]
 
 
@@ -507,6 +509,14 @@ def test_bad_input_names_the_field(sample, override, error, field):
     # the message starts with the field's name ("z0: must be …", "method = 2 is …")
     with pytest.raises(error, match=rf"^{field}[: ]"):
         design_from_annex(sample, **override)
+
+
+def test_gear_pitch_angle_no_hypoid_cone_has_is_refused():
+    """A given δ2 (Method 2) more than 1° from the exact closure (63.145° for sample 3) is
+    another design, not a stopped iteration: the pitch cone refuses it naming the field."""
+    with pytest.raises(InputError, match=r"^delta2: must lie within 1 deg of the exact "
+                                         r"Method 2 closure, in \[62\.145, 64\.145\]"):
+        blank_geometry(design_from_annex("sample3", delta2=65.0))
 
 
 def test_bad_input_message_style():

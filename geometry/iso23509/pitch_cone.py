@@ -732,8 +732,38 @@ def _method_2(design: BevelGearDesign) -> PitchCone:
             f"{design.rc0:g}"
         )
     st = found[1]
+    if design.delta2 is not None:
+        st = _published_state(design, st, r2)
     Re2 = st["Rm2"] + 0.5 * design.b2
     return _hypoid_result(design, st, r2, Re2)
+
+
+#: [rad] how far a given gear pitch angle of Method 2 may lie from the exact closing
+#: condition: a stopped iteration (Annex F sample 3: 0.067°), not another design
+_DELTA2_GIVEN_SPAN = math.radians(1.0)
+
+
+def _published_state(design: BevelGearDesign, exact: dict[str, float], r2: float
+                     ) -> dict[str, float]:
+    """The hypoid state of Method 2 whose gear pitch angle is the given ``design.delta2``
+    (the offset and ratio conditions hold; the apex closure is left where the standard's
+    iteration stopped), within :data:`_DELTA2_GIVEN_SPAN` of the exact state ``exact``."""
+    lo, hi = exact["delta2"] - _DELTA2_GIVEN_SPAN, exact["delta2"] + _DELTA2_GIVEN_SPAN
+    if not lo <= design.delta2 <= hi:
+        raise InputError(
+            f"delta2: must lie within 1 deg of the exact Method 2 closure, in "
+            f"[{lo / _DEG:.3f}, {hi / _DEG:.3f}] (the gear pitch angle at which a published "
+            f"iteration stopped) [deg], got {design.delta2 / _DEG:g}")
+    found = None
+    for rising in (True, False):
+        found = _solve_shape(lambda st: st["delta2"] - design.delta2, design.a, r2, design.u,
+                             design.beta_m, design.Sigma, gear_beta=True, rising=rising)
+        if found is not None:
+            break
+    if found is None:  # pragma: no cover - δ2 is continuous in the shape near the closure
+        raise InputError(f"delta2: no Method 2 hypoid pitch cone has this gear pitch angle "
+                         f"[deg], got {design.delta2 / _DEG:g}")
+    return found[1]
 
 
 #: iterations allowed for the gear mean pitch radius of Method 3 (converges in about 5)
