@@ -243,6 +243,10 @@ class BasicDesign:
         The file's ``[rating]`` table (ISO 10300 inputs, schema of
         :class:`contact.rating.inputs.RatingInputs`), copied into the synthesised case;
         validated by ``ltca synthesize``, not here; empty if absent.
+    development : dict
+        The file's ``[development]`` table: the development-bearing targets of
+        ``ltca synthesize`` (schema of :class:`contact.optimize.development.DevelopmentTargets`,
+        ``docs/synthesis.md``), unvalidated here; empty for the stated defaults.
     """
 
     name: str
@@ -255,6 +259,7 @@ class BasicDesign:
     operating: Mapping[str, Any] = field(default_factory=dict)
     optimize: Mapping[str, Any] = field(default_factory=dict)
     rating: Mapping[str, Any] = field(default_factory=dict)
+    development: Mapping[str, Any] = field(default_factory=dict)
 
     def blank(self) -> BlankGeometry:
         """ISO 23509 blank geometry of the design (pitch cone and both members)."""
@@ -337,7 +342,7 @@ _OPTION_FIELDS = {"drive_flank", "gear_process", "pinion_process", "cutter_radiu
                   "design_torque"}
 _FLANK_FIELDS = {f.name for f in fields(FlankOptions)}
 _TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating", "optimize",
-        "rating"}
+        "rating", "development"}
 
 
 def _same(v):
@@ -523,7 +528,16 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
                        targets=targets, adjust=tuple(adjust), options=options,
                        comments=dict(notes), operating=operating,
                        optimize=dict(raw.get("optimize", {})),
-                       rating=dict(rating))
+                       rating=dict(rating), development=_table(raw, "development"))
+
+
+def _table(raw: Mapping[str, Any], name: str) -> dict[str, Any]:
+    """The optional table ``name`` of a basic file (empty if absent); InputError if it is
+    not a table."""
+    tab = raw.get(name, {})
+    if not isinstance(tab, Mapping):
+        raise InputError(f"{name}: must be a table, got {tab!r}")
+    return dict(tab)
 
 
 def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign:
