@@ -276,28 +276,21 @@ def test_heights_on_the_grid_are_refused() -> None:
 
 
 # ------------------------------------------------------------------------------ command
-def test_ltca_ehl_rough_is_transient(tmp_path, capsys) -> None:
-    # rough surfaces, --model resolved: the command runs the transient model and stores time
-    # means with the time series; the scalars equal the library's for the same inputs (the
-    # same grid and time grid: 1e-12)
-    import xarray as xr
-
+def test_resolved_model_not_offered_by_the_commands(capsys) -> None:
+    # issue 61: the resolved transient model is kept for these tests and the record in
+    # docs/ehl.md, not offered to users (its asperity share stays at 0.03-0.04 where the
+    # stochastic model's is 0.5-0.9 and falls as its grid is refined): `ltca ehl --model`
+    # and `ltca friction-study --mode` are gone, and argparse refuses them by name
     from contact.cli import main
 
-    out = tmp_path / "rough.nc"
-    rc = main(["ehl", "--pressure", "1.0", "--radius", "20", "--speed", "5",
-               "--slide-to-roll", "0.3", "--temperature", "90", "--roughness", "0.3", "0.3",
-               "--model", "resolved", "--nodes", "96", "-o", str(out)])
-    assert rc == 0
-    assert "time means" in capsys.readouterr().out
-    with xr.open_dataset(out) as ds:
-        assert "time" in ds.dims and "friction_coefficient_t" in ds
-        for name, var in ds.variables.items():
-            assert "units" in var.attrs and "long_name" in var.attrs, name
-        cond = _condition()
-        ref = transient_summary(cond, ROUGH, default_transient_grid(cond, 96))
-        assert float(ds.friction_coefficient) == pytest.approx(ref.friction_coefficient,
-                                                               rel=1e-12)
+    for argv in (["ehl", "--pressure", "1.0", "--radius", "20", "--speed", "5",
+                  "--roughness", "0.3", "0.3", "--model", "resolved"],
+                 ["friction-study", "-n", "4", "--mode", "transient"]):
+        with pytest.raises(SystemExit) as exc:
+            main(argv)
+        assert exc.value.code == 2
+        err = capsys.readouterr().err
+        assert "unrecognized arguments" in err and argv[-2] in err
 
 
 # ------------------------------------------------------------------------------ slow

@@ -26,10 +26,10 @@ def register(sub) -> None:
         "profiles (seeds 1 and 2) scaled to the Rq given; by default their asperity scale "
         "is described by its statistics (--model stochastic: average-flow Reynolds "
         "equation, elastic-plastic summits, the film's shear at the surfaces' flash "
-        "temperature), which carries the contact from full film to dry; --model resolved "
-        "moves the profiles themselves through the contact (the seed's Li & Kahraman form, "
-        "scalars as time means; --steady freezes them), whose asperities do not carry the "
-        "load in the mixed regime (docs/ehl.md). Writes a netCDF of the profiles and the "
+        "temperature), which carries the contact from full film to dry. (The resolved "
+        "transient model of the seed's Li & Kahraman form is no longer offered here: its "
+        "asperities never carried the load in the mixed regime and its asperity share did "
+        "not converge with the grid; docs/ehl.md.) Writes a netCDF of the profiles and the "
         "scalars (film_central, film_min, asperity_load_ratio, friction_coefficient) and "
         "prints one summary line.",
     )
@@ -47,20 +47,10 @@ def register(sub) -> None:
                    metavar=("RQ1", "RQ2"), help="Rq of the two surfaces [um] (default 0 0)")
     p.add_argument("--lubricant", default="75W90", metavar="NAME",
                    help="bundled oil name or oil TOML file (default %(default)s)")
-    p.add_argument("--model", choices=("stochastic", "resolved"), default="stochastic",
-                   help="rough surfaces: the roughness's statistics, or the profiles resolved "
-                   "on the grid (default %(default)s)")
     film_model_options(p)
     p.add_argument("--nodes", type=count(16, 16384), default=None,
-                   help="grid nodes (default: smooth, from Moes's M; stochastic 512 over the "
-                   "rough contact's spread; resolved 256 from the smooth film's pressure "
-                   "onset to 1.5 Hertz half-widths, or 1024 over -4 ... 1.5 with --steady)")
-    p.add_argument("--steady", action="store_true",
-                   help="--model resolved: the roughness frozen (steady) instead of moving "
-                   "(often no solution below lambda ~1.4, docs/ehl.md)")
-    p.add_argument("--courant", type=float, default=1.0, metavar="C",
-                   help="transient: node spacings the faster surface moves per time step "
-                   "(default %(default)s)")
+                   help="grid nodes (default: smooth, from Moes's M; rough, 512 over the "
+                   "rough contact's spread)")
     p.add_argument("-o", "--output", default="ehl.nc", metavar="FILE",
                    help="netCDF file to write (default %(default)s)")
     p.set_defaults(func=run)
@@ -105,7 +95,6 @@ def check_inputs(args: argparse.Namespace) -> None:
         real(f"--roughness {label}", rq, unit="um", low=0.0, high=MAX_ROUGHNESS)
     if args.nodes is not None:
         integer("--nodes", args.nodes, low=16, high=16384)
-    real("--courant", args.courant, low=0.0, low_open=True, high=10.0)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -115,20 +104,14 @@ def run(args: argparse.Namespace) -> int:
         STEEL_E_PRIME,
         Grid,
         LineContactCondition,
-        hertz_line_contact,
         solve_line_contact,
     )
-    from friction.ehl.roughness import GroundSurface, ground_profile
+    from friction.ehl.roughness import GroundSurface
     from friction.ehl.stochastic import (
         StochasticOptions,
         roughness_statistics,
         solve_stochastic_line_contact,
         stochastic_grid,
-    )
-    from friction.ehl.transient import (
-        TimeGrid,
-        default_transient_grid,
-        solve_transient_line_contact,
     )
     from geometry.core.io import write_netcdf
 
@@ -149,34 +132,17 @@ def run(args: argparse.Namespace) -> int:
             cond = LineContactCondition(**fields)
             grid = None if args.nodes is None else Grid(nodes=args.nodes)
             ds = solve_line_contact(cond, grid)
-        elif args.model == "stochastic":
+        else:
             cond = LineContactCondition(**fields)
             grid = None if args.nodes is None else stochastic_grid(
                 cond, roughness_statistics(surfaces), args.nodes)
             ds = solve_stochastic_line_contact(
                 cond, surfaces, grid, StochasticOptions(thermal=not args.isothermal))
-        elif not args.steady:
-            cond = LineContactCondition(**fields)
-            grid = default_transient_grid(cond, args.nodes or 256)
-            ds = solve_transient_line_contact(cond, surfaces, grid,
-                                              TimeGrid(courant=args.courant))
-        else:
-            grid = Grid(nodes=args.nodes or 1024, step_limit=3.0)
-            grid.check()
-            b, _ = hertz_line_contact(load, args.radius, STEEL_E_PRIME)
-            x = grid.coordinates() * b
-            cond = LineContactCondition(
-                **fields,
-                roughness_1=ground_profile(x, rq1, seed=1) if rq1 > 0 else None,
-                roughness_2=ground_profile(x, rq2, seed=2) if rq2 > 0 else None,
-            )
-            ds = solve_line_contact(cond, grid)
     inputs = " ".join(f"{k}={v}" for k, v in sorted(vars(args).items()) if k != "func")
     path = write_netcdf(ds, Path(args.output), inputs=inputs)
-    kind = "time means, " if "time" in ds.dims else ""
     lam = float(ds.lambda_ratio)
     lam_text = f"lambda {lam:.3g}, " if lam > 0.0 else ""
-    print(f"p_h {args.pressure:g} GPa, w' {load:.1f} N/mm: {kind}{lam_text}h_c "
+    print(f"p_h {args.pressure:g} GPa, w' {load:.1f} N/mm: {lam_text}h_c "
           f"{float(ds.film_central):.4f} um, h_min {float(ds.film_min):.4f} um, asperity load "
           f"{float(ds.asperity_load_ratio):.3f}, mu {float(ds.friction_coefficient):.4f} "
           f"(film {float(ds.fluid_friction):.4f}, boundary "

@@ -47,24 +47,13 @@ def register(sub) -> None:
     p.add_argument("--skip", type=count(0, 10**9), default=0, metavar="K",
                    help="sobol: continue the sequence after its first K points")
     p.add_argument("--nodes", type=count(64, 16384), default=512,
-                   help="solver grid nodes (stochastic: over the rough contact's spread; "
-                   "transient: from the smooth film's pressure onset to 1.5 Hertz "
-                   "half-widths; steady: over -4 ... 1.5) (default %(default)s)")
-    p.add_argument("--mode", choices=("stochastic", "transient", "steady"),
-                   default="stochastic",
-                   help="rough points with the roughness described by its statistics (the "
-                   "asperity scale averaged, docs/ehl.md), or resolved on the grid, moving "
-                   "through the contact (the seed's Li & Kahraman model) or frozen "
-                   "(default %(default)s)")
-    p.add_argument("--courant", type=float, default=1.0, metavar="C",
-                   help="transient: node spacings the faster surface moves per time step "
-                   "(default %(default)s)")
+                   help="solver grid nodes over the rough contact's spread (the stochastic "
+                   "solver; the resolved transient and steady models are not offered: "
+                   "docs/ehl.md) (default %(default)s)")
     film_model_options(p)
-    p.add_argument("--average", type=float, default=2.0, metavar="T",
-                   help="transient: averaging window in units of b/u_e (default %(default)s)")
     p.add_argument("--max-iterations", type=count(1, 10000), default=60, metavar="N",
-                   help="Newton iterations per time step (transient) or roughness step "
-                   "(steady) before a point counts as not converged (default %(default)s)")
+                   help="Newton iterations before a point counts as not converged "
+                   "(default %(default)s)")
     p.add_argument("--realisations", type=count(1, 32), default=1, metavar="K",
                    help="roughness realisations per condition, their converged results "
                    "averaged (default %(default)s)")
@@ -117,7 +106,6 @@ def run(args: argparse.Namespace) -> int:
     try:
         settings = SolveSettings(nodes=args.nodes, max_iterations=args.max_iterations,
                                  lubricant=args.lubricant, realisations=args.realisations,
-                                 mode=args.mode, courant=args.courant, average=args.average,
                                  viscosity_model=args.viscosity_model,
                                  thermal=not args.isothermal)
     except InputError as exc:
@@ -154,7 +142,7 @@ def run(args: argparse.Namespace) -> int:
 
 #: SolveSettings' fields that are this command's options (the message names the option)
 _OPTIONS = {"lubricant": "--lubricant", "nodes": "--nodes", "max_iterations": "--max-iterations",
-            "realisations": "--realisations", "courant": "--courant", "average": "--average"}
+            "realisations": "--realisations"}
 
 
 def _option(message: str) -> str:
