@@ -22,6 +22,7 @@ from collections.abc import Sequence
 from types import ModuleType
 
 from contact.commands.options import verbosity_options
+from contact.errors import AnalysisFailedError
 from geometry import __version__
 from geometry.core.errors import LTCAError
 
@@ -150,6 +151,34 @@ def parse_arguments(parser: argparse.ArgumentParser, argv: Sequence[str]) -> arg
     return args
 
 
+#: option (argparse dest) → its bound in :data:`geometry.core.bounds.PHYSICAL_BOUNDS`, for
+#: every command but those of :data:`OWN_BOUNDS`
+OPTION_BOUNDS = {"torque": "torque", "speed": "pinion_speed", "temperature": "temperature",
+                 "roughness": "roughness"}
+#: commands whose options of those names mean other quantities, checked by the command
+#: (``ltca ehl``: --speed the entraining velocity [m/s], --roughness two flanks' Rq)
+OWN_BOUNDS = ("ehl",)
+
+
+def check_option_bounds(args: argparse.Namespace) -> None:
+    """Refuse (InputError: exit 2, one line) an operating option outside the one table of
+    physical bounds (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`: ``--torque`` (0, 1e6]
+    N m, ``--speed`` (0, 5e4] rpm — 0 where a command takes it for "no efficiency stage" —,
+    ``--temperature`` [-40, 200] degC, ``--roughness`` (0, 5] um) before any work, for
+    every command that has them (issue 64: ``ltca rate --speed 1e12`` printed full tables).
+    """
+    if getattr(args, "command", None) in OWN_BOUNDS:
+        return
+    from geometry.core.bounds import check_bound
+
+    for dest, bound in OPTION_BOUNDS.items():
+        value = getattr(args, dest, None)
+        for v in value if isinstance(value, (list, tuple)) else [value]:
+            if v is None or (dest == "speed" and v == 0):
+                continue
+            check_bound(bound, v, field=f"--{dest}", positive=dest == "roughness")
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
@@ -184,7 +213,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     main_thread = threading.current_thread() is threading.main_thread()
     previous = signal.signal(signal.SIGTERM, _terminate) if main_thread else None
     try:
+        check_option_bounds(args)  # before any work
         return int(args.func(args) or 0)
+    except AnalysisFailedError as exc:  # ran, wrote its file, found no certified contact
+        print(f"ltca {args.command}: error: {exc}", file=sys.stderr)
+        return 1
     except LTCAError as exc:
         print(f"ltca {args.command}: error: {exc}", file=sys.stderr)
         return 2

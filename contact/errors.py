@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
-from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError, PluginError
 
 __all__ = [
     "ASYMMETRY_LIMIT",
+    "AnalysisFailedError",
     "AsymmetricComplianceError",
     "ContactError",
     "NotPositiveDefiniteError",
+    "PluginError",
     "ProblemInputError",
     "SolverNotFoundError",
 ]
@@ -16,6 +18,13 @@ __all__ = [
 
 class ContactError(LTCAError):
     """Root of the errors raised by the contact package."""
+
+
+class AnalysisFailedError(ContactError, RuntimeError):
+    """An analysis ran but has no certified contact solution at some torque or roll
+    position (:func:`contact.ltca.summary.certification`): its file is written, with
+    ``analysis_status`` and ``analysis_status_reason`` at the root, and ``ltca run`` exits
+    with status 1 (a refused input exits with 2). The message is the reason."""
 
 
 class ProblemInputError(ContactError, InputError):

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import dataclasses
 import logging
-import math
 import os
 import time
 
@@ -23,7 +22,7 @@ import xarray as xr
 
 from contact import catalogue
 from contact.ltca import LTCAOptions, loaded_tca
-from contact.ltca.summary import edge_load_share
+from contact.ltca.summary import certification, edge_load_share
 from contact.qp.solvers import solver_name
 from contact.utca import unloaded_tca
 from contact.utca.conjugate_map import flank_nodes
@@ -229,6 +228,67 @@ def _point_as_run(c: Case, torques, operating: OperatingConditions | None):
     return dataclasses.replace(c.operating, **kw)
 
 
+def check_torques(torque, field: str = "torque") -> tuple[float, ...]:
+    """Pinion torques [N·m] of an API call, each a number in the table of physical bounds
+    (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`, (0, 1e6] N·m).
+
+    Parameters
+    ----------
+    torque : float or sequence of float — [N·m]
+    field : str
+        The argument's name in the message.
+
+    Returns
+    -------
+    tuple of float
+
+    Raises
+    ------
+    InputError
+        Text, an empty sequence, a value not finite or outside the bound (one sentence
+        naming ``field`` and the range).
+    """
+    from geometry.core.bounds import check_bound
+
+    try:
+        ndim = -1 if isinstance(torque, (str, bytes)) else np.ndim(torque)
+    except ValueError:  # a ragged nesting
+        ndim = -1
+    if ndim not in (0, 1):
+        raise InputError(f"{field}: must be a number or a sequence of numbers in (0, 1e+06] "
+                         f"[N m] (pinion torques), got {torque!r}")
+    values = [torque] if np.ndim(torque) == 0 else list(torque)
+    if not values:
+        raise InputError(f"{field}: must hold at least one pinion torque [N m], got none")
+    return tuple(check_bound("torque", t, field=field) for t in values)
+
+
+def _check_arguments(case, torque, misalignment, flank, options, **flags) -> None:
+    """Refuse a bad argument of :func:`run_analysis` before any work, in one sentence
+    naming it, what was given and what is accepted (the CLI's refusals, for the API)."""
+    from contact.utca.easeoff import FLANK_ROLES, MATING_FLANK
+
+    if not (case is None or isinstance(case, (Case, str, os.PathLike))):
+        raise InputError("case: must be a geometry.case.Case, the path of a case file, the "
+                         f"name of a bundled case or None (the default case), got "
+                         f"{type(case).__name__} {case!r}")
+    if torque is not None:
+        check_torques(torque)
+    if misalignment is not None and not isinstance(misalignment, Misalignment):
+        raise InputError("misalignment: must be a geometry.pair.assembly.Misalignment or None "
+                         f"(the case's), got {type(misalignment).__name__} {misalignment!r}")
+    flanks = [*FLANK_ROLES, *MATING_FLANK]
+    if flank is not None and flank not in flanks:
+        raise InputError(f"flank: must be 'drive' or 'coast' (or a pinion flank name, "
+                         f"'concave' or 'convex'), got {flank!r}")
+    if options is not None and not isinstance(options, LTCAOptions):
+        raise InputError("options: must be a contact.ltca.LTCAOptions or None (the defaults), "
+                         f"got {type(options).__name__} {options!r}")
+    for name, value in flags.items():
+        if not isinstance(value, (bool, np.bool_)):
+            raise InputError(f"{name}: must be True or False, got {value!r}")
+
+
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
     torque=None,
@@ -305,19 +365,35 @@ def run_analysis(
         (the case as TOML, its
         ``[operating]`` table as run), the misalignment once (:data:`MISALIGNMENT_ATTRS`:
         ``misalignment_delta_E_mm`` … ``misalignment_delta_Sigma_deg``; the groups'
-        ``misalignment`` attribute refers to them), per-stage times ``time_*_s``.
+        ``misalignment`` attribute refers to them), per-stage times ``time_*_s``, and
+        ``analysis_status`` (``"ok"``, ``"uncertified"``: some roll positions without a
+        certified contact solution, ``"failed"``: some torque without any) with
+        ``analysis_status_reason``, the sentence that says where and why
+        (:func:`contact.ltca.summary.certification`). A failed or uncertified analysis is
+        returned, not raised, so that its file can be written and read; ``ltca run``
+        then exits with status 1. Its efficiency is NaN where the contact is not certified
+        (:func:`friction.efficiency.efficiency_analysis`).
 
     Raises
     ------
     InputError
-        Bad case, torque, misalignment, options or operating conditions (the message
-        names the field).
+        Bad case, torque, misalignment, flank, options, flags or operating conditions,
+        refused before any work (the message names the argument, what was given and what
+        is accepted; torques and operating conditions against
+        :data:`geometry.core.bounds.PHYSICAL_BOUNDS`, the oil temperature against the oil's
+        range).
+    PluginError
+        A solver, friction or compliance model of the user's that raised or returned what
+        its contract refuses (named; docs/extending.md).
 
     Notes
     -----
     Seed ch. 2 (geometry, ease-off), ch. 3 (UTCA, LTCA), ch. 4 (deviations), ch. 5
     (efficiency).
     """
+    _check_arguments(case, torque, misalignment, flank, options,
+                     geometry=geometry, progress=progress, theoretical=theoretical,
+                     mesh_interface=mesh_interface)
     c = catalogue.resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
@@ -336,6 +412,8 @@ def run_analysis(
     elif not isinstance(operating, OperatingConditions):
         raise InputError("operating: must be a friction.operating.OperatingConditions, False "
                          f"or None, got {operating!r}")
+    if operating is not None:  # the oil's range before the work, not after the LTCA
+        operating.check_oil_temperature()
     # the case as run: its [operating] table (in the file's ``inputs``) records what ran
     c = dataclasses.replace(c, operating=_point_as_run(c, torques, operating))
     times: dict[str, float] = {}
@@ -428,9 +506,12 @@ def run_analysis(
         }
     )
     root.attrs["summary"] = result_summary(c.name, tree)
+    cert = certification(ltca_ds)
+    root.attrs["analysis_status"] = cert.status
+    root.attrs["analysis_status_reason"] = cert.reason
     tree["/"] = root
     out = xr.DataTree.from_dict(tree)
     out.attrs["inputs"] = c.to_toml()
-    if not math.isfinite(float(ltca_ds["transmission_error"].mean())):
-        log.warning("some roll positions have no certified solution (see /ltca status)")
+    if cert.status != "ok":
+        log.warning("%s (/ltca status)", cert.reason)
     return out

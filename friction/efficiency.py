@@ -165,7 +165,10 @@ def efficiency_analysis(
         moving-source formula overestimates there, their Péclet numbers are ≲ 1),
         ``scuffing_safety`` and ``micropitting_safety`` [1]; 0-d ``scuffing_temperature``
         [degC] and ``permissible_specific_film`` [1] of the oil. A safety the oil lacks
-        the data for is NaN, the reason in the variable's ``comment``.
+        the data for is NaN, the reason in the variable's ``comment``. Roll positions
+        whose loaded contact has no certified solution (``ltca["found"]`` 0) have NaN
+        values over (torque, roll), and their torques NaN values over torque (a comment
+        says why): no contact forces, no efficiency (never a loss-free 100 %).
 
     Raises
     ------
@@ -205,7 +208,39 @@ def efficiency_analysis(
         raise InputError("scuffing: must be a friction.flash_temperature.ScuffingConditions "
                          f"or None, got {scuffing!r}")
     durability = _surface_durability(ltca, seg, fric, oil, op, cond)
-    return _friction_dataset(ltca, seg, fric, losses, op, oil, durability)
+    return _uncertified_as_nan(_friction_dataset(ltca, seg, fric, losses, op, oil, durability),
+                               ltca)
+
+
+def _uncertified_as_nan(friction: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
+    """``friction`` with its values over (torque, roll) NaN at the roll positions whose
+    loaded contact has no certified solution (``ltca["found"]`` 0), and its values over
+    torque NaN at the torques with such a roll, each with a ``comment`` saying why.
+
+    A roll without a certified contact solution has no forces (NaN, read as 0 by the
+    power loss): its efficiency would be a loss-free 100 %, not a result; the means over
+    the mesh cycle are NaN as the LTE summary is (:mod:`contact.ltca.dataset`)."""
+    if "found" not in ltca.variables:
+        return friction
+    found = np.asarray(ltca["found"].values) > 0
+    if found.all():
+        return friction
+    torques = np.asarray(ltca["torque"].values, float)
+    some = ~found.all(axis=1)
+    where = ", ".join(f"T_p {t:g} N m ({int((~found[i]).sum())} of {found.shape[1]})"
+                      for i, t in enumerate(torques) if some[i])
+    why = (f"NaN where the loaded contact has no certified solution (roll positions of {where}; "
+           "/ltca/found, /ltca/status): no efficiency without contact forces")
+    out = friction.copy()
+    for name, var in friction.data_vars.items():
+        if var.dims == ("torque", "roll"):
+            values = np.where(found, var.values, np.nan)
+        elif var.dims == ("torque",) and np.issubdtype(var.dtype, np.floating):
+            values = np.where(some, var.values, np.nan)
+        else:
+            continue
+        out[name] = var.copy(data=values).assign_attrs(comment=why)
+    return out
 
 
 _NEEDED = (

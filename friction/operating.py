@@ -27,15 +27,10 @@ from friction.coefficient import FrictionModelLike, friction_model_name, get_fri
 from friction.defaults import DEFAULT_FRICTION_MODEL
 from friction.lubricant import available_lubricants
 from geometry.case import OPERATING_DEFAULTS, OperatingPoint
+from geometry.core.bounds import check_bound
 from geometry.core.errors import InputError, ModelUnavailableError
-from geometry.core.validation import positive, real
 
 __all__ = ["OperatingConditions"]
-
-#: Absolute zero [degC]: the one physical bound of an oil temperature (each lubricant's
-#: own range is checked where its properties are evaluated).
-_ABSOLUTE_ZERO_C = -273.15
-
 
 @dataclass(frozen=True)
 class OperatingConditions:
@@ -44,19 +39,22 @@ class OperatingConditions:
     Parameters
     ----------
     pinion_speed : float — [rpm]
-        Pinion speed, finite and > 0. Default 1500 rpm (the toolkit's choice, inside
-        the 500–4000 rpm of ``ltca efficiency-map``'s default sweep).
+        Pinion speed, in (0, 5e4] (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`). Default
+        1500 rpm (the toolkit's choice, inside the 500–4000 rpm of
+        ``ltca efficiency-map``'s default sweep).
     lubricant : str or path
         A bundled oil name (case-insensitive, :func:`friction.lubricant.available_lubricants`)
         or the path of an oil TOML file (:func:`friction.lubricant.load_lubricant`).
         Default ``"75W90"``, the axle oil of the seed's Table 5.2.
     temperature : float — [degC]
-        Oil inlet temperature, finite and above absolute zero; the lubricant's own range
-        (its table plus extrapolation margins, :func:`friction.lubricant.temperature_range`)
-        is checked when its properties are evaluated. Default 90 °C (the toolkit's
-        choice, inside the 25–100 °C of the seed's Table 5.2).
+        Oil inlet temperature, in [-40, 200] (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`);
+        the lubricant's own range (its table plus extrapolation margins,
+        :func:`friction.lubricant.temperature_range`) is checked when its properties are
+        evaluated, or before an analysis by :meth:`check_oil_temperature`. Default 90 °C
+        (the toolkit's choice, inside the 25–100 °C of the seed's Table 5.2).
     roughness : float — [µm]
-        RMS roughness Rq of each flank, finite and > 0 (composite σ = √2 Rq, seed §5.2.3).
+        RMS roughness Rq of each flank, in (0, 5] (the table of bounds; composite
+        σ = √2 Rq, seed §5.2.3).
         Default 0.8 µm, the seed's operating roughness (§5.3) and inside the fitted
         0.1–1 µm of ``kolivand2009`` and ``xu2007``.
     friction_model : str, friction.coefficient.FrictionModel or callable
@@ -113,10 +111,11 @@ class OperatingConditions:
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
-        set_(self, "pinion_speed", positive("pinion_speed", self.pinion_speed, "rpm"))
-        set_(self, "temperature", real("temperature", self.temperature, unit="degC",
-                                       low=_ABSOLUTE_ZERO_C, low_open=True))
-        set_(self, "roughness", positive("roughness", self.roughness, "um"))
+        # the one table of physical bounds (a speed of 1e12 rpm or an Rq of 100 um is a
+        # slip, refused before any work; issue 64), then each oil's range where it is read
+        set_(self, "pinion_speed", check_bound("pinion_speed", self.pinion_speed))
+        set_(self, "temperature", check_bound("temperature", self.temperature))
+        set_(self, "roughness", check_bound("roughness", self.roughness, positive=True))
         oil = self.lubricant
         if not isinstance(oil, (str, os.PathLike)) or not str(oil).strip():
             raise InputError("lubricant: must be a bundled oil name or the path of an oil "
@@ -139,6 +138,25 @@ class OperatingConditions:
             raise InputError(f"friction_model: {exc}") from None
         if not isinstance(model, str):
             set_(self, "friction_model", resolved)
+
+    def check_oil_temperature(self) -> None:
+        """Refuse an inlet temperature outside the oil's data range
+        (:func:`friction.lubricant.temperature_range`) now, before an analysis, rather than
+        when the efficiency stage reads the oil's properties after the loaded contact.
+
+        Raises
+        ------
+        InputError
+            ``temperature: must be in [5, 140] [degC] for the lubricant '75W90' (its
+            data and extrapolation margins), got 150``; an unreadable oil file.
+        """
+        from friction.lubricant import load_lubricant, temperature_range
+
+        lo, hi = temperature_range(load_lubricant(self.lubricant))
+        if not lo <= self.temperature <= hi:
+            raise InputError(f"temperature: must be in [{lo:g}, {hi:g}] [degC] for the "
+                             f"lubricant {str(self.lubricant)!r} (its data and extrapolation "
+                             f"margins), got {self.temperature:g}")
 
     @property
     def friction_model_name(self) -> str:

@@ -38,6 +38,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
+from geometry.core.bounds import check_bound
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import DEFAULT_MATERIAL, available_materials
 from geometry.core.operating_defaults import OPERATING_DEFAULTS as _OPERATING_DEFAULTS
@@ -87,8 +88,6 @@ def _fmt(x: float) -> str:
 #: the toolkit's operating point where a case's ``[operating]`` table gives none
 #: (:mod:`geometry.core.operating_defaults`, a module light enough for the commands' help)
 OPERATING_DEFAULTS = _OPERATING_DEFAULTS
-#: absolute zero [degC]: the one physical bound of an oil temperature
-_ABSOLUTE_ZERO_C = -273.15
 
 
 @dataclass(frozen=True)
@@ -103,18 +102,19 @@ class OperatingPoint:
     Parameters
     ----------
     torque : tuple of float — [N·m]
-        Pinion torques of the analysis, each finite and > 0 (at least one). Default the
-        seed's Table 3.1 torques 50, 250, 500.
+        Pinion torques of the analysis, each in (0, 1e6] (at least one; the table of
+        physical bounds, :data:`geometry.core.bounds.PHYSICAL_BOUNDS`). Default the seed's
+        Table 3.1 torques 50, 250, 500.
     pinion_speed : float — [rpm]
-        Pinion speed of the efficiency stage, finite and >= 0; 0 runs no efficiency stage.
+        Pinion speed of the efficiency stage, 0 or in (0, 5e4]; 0 runs no efficiency stage.
         Default 1500.
     lubricant : str
         Bundled oil name or the path of an oil TOML file (checked where the efficiency
         stage runs, :class:`friction.operating.OperatingConditions`). Default ``"75W90"``.
     temperature : float — [degC]
-        Oil inlet temperature, finite and above absolute zero. Default 90.
+        Oil inlet temperature, in [-40, 200]. Default 90.
     roughness : float — [µm]
-        RMS roughness Rq of each flank, finite and > 0. Default 0.8.
+        RMS roughness Rq of each flank, in (0, 5]. Default 0.8.
     friction_model : str or None
         Friction coefficient model name (checked where the efficiency stage runs). Default
         None: the efficiency stage's default, the friction package's
@@ -144,12 +144,12 @@ class OperatingPoint:
         values = [t] if isinstance(t, (int, float)) and not isinstance(t, bool) else t
         if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") or not values:
             raise InputError(f"torque: must be one or more pinion torques > 0 [N m], got {t!r}")
-        set_(self, "torque", tuple(positive("torque", v, "N m") for v in values))
-        set_(self, "pinion_speed", real("pinion_speed", self.pinion_speed, unit="rpm",
-                                        low=0.0))
-        set_(self, "temperature", real("temperature", self.temperature, unit="degC",
-                                       low=_ABSOLUTE_ZERO_C, low_open=True))
-        set_(self, "roughness", positive("roughness", self.roughness, "um"))
+        # the one table of physical bounds (geometry.core.bounds; issue 64)
+        set_(self, "torque", tuple(check_bound("torque", v) for v in values))
+        speed = real("pinion_speed", self.pinion_speed, unit="rpm")
+        set_(self, "pinion_speed", speed if speed == 0.0 else check_bound("pinion_speed", speed))
+        set_(self, "temperature", check_bound("temperature", self.temperature))
+        set_(self, "roughness", check_bound("roughness", self.roughness, positive=True))
         for name in ("lubricant", "friction_model"):
             val = getattr(self, name)
             if val is None and name == "friction_model":
@@ -838,13 +838,24 @@ def load_case(path: str | os.PathLike[str]) -> Case:
     Raises
     ------
     InputError
-        If the file is missing, unreadable, not UTF-8 text, not valid TOML, or a field is
+        If ``path`` is no path, the file is missing, unreadable, not UTF-8 text, not valid
+        TOML, a basic design file (which ``ltca synthesize`` makes a case of), or a field is
         invalid (named by its path).
     ModelUnavailableError
         For a ``pair.method`` that is reserved but not implemented (none today).
     """
+    if isinstance(path, bool) or not isinstance(path, (str, os.PathLike)):
+        raise InputError("path: must be the path of a case file (str or os.PathLike), got "
+                         f"{type(path).__name__} {path!r}")
     p = Path(path)
-    return case_from_dict(read_toml(p, "case file"), base_dir=p.resolve().parent)
+    data = read_toml(p, "case file")
+    if "pair" not in data and "design" in data and "pinion" not in data:
+        # basic design data (ISO 23509 input, targets): no machine settings to analyse yet
+        raise InputError(f"case file {str(p)!r} is a basic design file ([design] without "
+                         "[pair], [pinion], [gear]); make a case of it first: ltca "
+                         f"synthesize {str(p)!r} -o CASE.toml (or geometry.synthesis."
+                         "synthesize(load_basic(path))), then use that case")
+    return case_from_dict(data, base_dir=p.resolve().parent)
 
 
 # ---------------------------------------------------------------------------- writing

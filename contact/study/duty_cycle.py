@@ -177,6 +177,8 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         }
         status = 0 if bool(np.all(ltca["found"].values > 0)) else 1
         reason = ""
+        if tree.attrs.get("analysis_status") == "failed":  # no certified roll at all
+            status, reason = 2, str(tree.attrs["analysis_status_reason"])
         harm = ltca["lte_harmonics"].values[0]
         u, v = ltca["u"].values, ltca["v"].values
         env, edge_env = pressure_envelopes(
@@ -299,8 +301,11 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
     """Damage per flank and fillet point, life and safety factors (the /duty_cycle vars)."""
     if np.any(ds["status"].values == 2):
         bad = int(np.argmax(ds["status"].values == 2))
-        raise InputError(f"duty_cycle bin {bad}: its analysis failed "
-                         f"({ds['reason'].values[bad]}); no damage without every bin")
+        from contact.errors import AnalysisFailedError
+
+        raise AnalysisFailedError(f"duty_cycle bin {bad}: its analysis failed "
+                                  f"({ds['reason'].values[bad]}); no damage without every "
+                                  "bin")
     out: dict[str, Any] = {}
     cycles = member_cycles(duty.revolutions, case.pinion.blank.teeth, case.gear.blank.teeth)
     members = ("pinion", "gear")
@@ -388,8 +393,10 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
 
     Raises
     ------
+    contact.errors.AnalysisFailedError
+        A failed bin (named, with its reason: an error, or no certified contact solution).
     InputError
-        A failed bin (named), an unknown grade.
+        An unknown grade.
     """
     duty, case = shared.duty, shared.case
     cyc = _cycle(duty, ds)
@@ -537,11 +544,13 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
 
     Raises
     ------
+    contact.errors.AnalysisFailedError
+        A failed bin (named, with its reason: an error, or no certified contact solution
+        at its torque); the parts on disk keep every bin's status.
     InputError
-        A bin outside the deflection table (named), an unknown grade, a failed bin (named,
-        with its reason), parts of another run at ``OUTPUT.parts``, bins missing from the
-        parts after the run (a chunk set aside meanwhile: the run started again analyses
-        them).
+        A bin outside the deflection table (named), an unknown grade, parts of another
+        run at ``OUTPUT.parts``, bins missing from the parts after the run (a chunk set
+        aside meanwhile: the run started again analyses them).
 
     Notes
     -----

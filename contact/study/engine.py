@@ -106,7 +106,9 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     -------
     PointResult
         ``status`` 0 ok, 1 some roll position uncertified, 2 failed (``reason`` the
-        error's message; every summary NaN). Never raises for a failing analysis.
+        error's message, every summary NaN; or an analysis with a torque none of whose
+        roll positions has a certified contact solution, ``reason`` saying so,
+        :func:`contact.ltca.summary.certification`). Never raises for a failing analysis.
 
     Notes
     -----
@@ -139,6 +141,9 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
             friction = [efficiency_analysis(ltca, shared.operating, pinion_speed=float(n))
                         for n in shared.speed]
         summary = point_summary(tree, case, friction)
+        cert = tree.attrs.get("analysis_status", "ok")
+        if cert == "failed":  # a torque without any certified roll: no result there
+            return PointResult(index, 2, str(tree.attrs["analysis_status_reason"]), summary)
         status = 0 if bool(np.all(summary["certified"] > 0)) else 1
         return PointResult(index, status, "", summary)
     except Exception as exc:

@@ -191,9 +191,6 @@ class Verdict:
         head = (f"VERDICT ({self.kind}): {self.severity.upper()}"
                 + (f", {n} finding{'s' * (n != 1)}" if n else
                    f", no finding in {len(self.checks)} checks"))
-        if self.unchecked:
-            head += (f"; {len(self.unchecked)} check{'s' * (len(self.unchecked) != 1)} "
-                     "not made")
         shown = self.findings if limit is None else self.findings[:limit]
         out = [head] + [f"  {f.severity}: {f.reason}" for f in shown]
         whys: dict[str, list[str]] = {}

@@ -8,7 +8,7 @@ other way round).
 
 from __future__ import annotations
 
-__all__ = ["FileWriteError", "InputError", "LTCAError", "ModelUnavailableError",
+__all__ = ["FileWriteError", "InputError", "LTCAError", "ModelUnavailableError", "PluginError",
            "StudyFailedError"]
 
 
@@ -28,6 +28,17 @@ class ModelUnavailableError(LTCAError, LookupError):
 
     The message lists the available names and, where it applies, why the
     requested one is unavailable or how to install it.
+    """
+
+
+class PluginError(InputError):
+    """A model or solver given by the user (registered, a plug-in or the object itself)
+    raised, or returned what its contract refuses, when called: the wrong shape, a
+    negative or non-finite value.
+
+    The message names the plug-in, what it raised or returned and what is accepted
+    (docs/extending.md); the toolkit's own exceptions raised inside a plug-in pass
+    through unchanged.
     """
 
 
