@@ -24,9 +24,16 @@ it, with
 
     tan(α + Δα) = tan α ± δ / (|h_e − h_c| cos α)     (+ flankrem, − toprem).
 
-The relief grows linearly from 0 at the corner to δ at h_e. For a circular main profile
-the relief line leaves the circle's tangent at the corner and Δα is solved numerically
-(Brent) for the same normal distance at h_e. Generating with the relieved blade moves the
+The relief grows linearly from 0 at the corner to δ at h_e. For any main profile (the
+synthesis makes circular ones, of either sign of curvature, on face-milling and placed
+face-hobbing blades) the same line through the corner on the profile gives δ at h_e in
+closed form, tan(α + Δα) = [δ / cos α_e − σ (ρ_c − ρ_e)] / (h_e − h_c) with ρ_c, ρ_e the
+profile's radii at the corner and the end and α_e its angle at the end
+(:func:`rem_angle`); where the end lies on the edge radius (a root end the mating tip
+reaches on the fillet) the toprem moves the arc, and Δα is solved numerically (Brent) for
+the same normal distance, within the blade model's range of rem angles. A relief the
+blade cannot make raises :class:`ReliefError` naming the input to change and the blade
+length the relief needs. Generating with the relieved blade moves the
 flank, to first order in δ, by the blade's normal offset at the generating height: a flank
 point cut by blade height h is eased off by δ(h) along its normal (the envelope of a tool
 surface offset along its normal by δ is the flank offset by δ, up to terms in δ · dδ/dh).
@@ -43,6 +50,7 @@ way from M's height to each end's height.
 
 Public functions
 ----------------
+ReliefError     a relief the blade cannot make (names the input to change)
 ReliefHeights   blade heights of M and of the two flank ends
 relief_places   projection-plane places (z, ρ) of M and the two ends
 relief_heights  the blade heights that cut them
@@ -69,8 +77,8 @@ if TYPE_CHECKING:
     from geometry.case import Blank
     from geometry.machine.cradle import MachineSettings
 
-__all__ = ["ReliefHeights", "blade_relief", "relief_heights", "relief_places", "relieved_blade",
-           "rem_angle"]
+__all__ = ["ReliefError", "ReliefHeights", "blade_relief", "relief_heights", "relief_places",
+           "relieved_blade", "rem_angle"]
 
 #: largest |rem angle| the blade model accepts is 20 deg; keep clear of it
 _MAX_REM = math.radians(19.0)
@@ -143,10 +151,15 @@ def relief_heights(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
     """
     places = relief_places(blank, mating_blank)
     pts = flank_points(blade, machine, blank, hand, places[:, 0], places[:, 1])
-    if not np.all(pts.ok):
-        bad = ["M", "tip end", "root end"][int(np.flatnonzero(~pts.ok)[0])]
-        raise InputError(f"relief: the flank is not generated at its {bad} (mean section)")
-    h = blade_profile(blade, pts.params[:, 0], pts.params[:, 3].astype(int)).h
+    params = np.array(pts.params)
+    for k in np.flatnonzero(~pts.ok):
+        params[k] = _march(blade, machine, blank, hand, places[0], places[k],
+                           pts.params[0] if pts.ok[0] else None)
+        if not np.all(np.isfinite(params[k])):
+            bad = ["M", "tip end", "root end"][k]
+            raise InputError(f"relief: the flank is not generated at its {bad} (mean "
+                             "section)")
+    h = blade_profile(blade, params[:, 0], params[:, 3].astype(int)).h
     out = ReliefHeights(float(h[0]), float(h[1]), float(h[2]))
     if not out.root < out.mean < out.tip:
         raise InputError(f"relief: blade heights root {out.root:.4g}, M {out.mean:.4g}, tip "
@@ -154,14 +167,67 @@ def relief_heights(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
     return out
 
 
+def _march(blade: Blade, machine: MachineSettings, blank: Blank, hand: str,
+           start: np.ndarray, end: np.ndarray, guess: np.ndarray | None,
+           steps: int = 16) -> np.ndarray:
+    """Envelope parameters (s, θ, q, section) of the flank point at ``end`` (z, ρ) [mm],
+    followed from ``start`` in ``steps`` steps, each seeded by the last (a place the
+    envelope solver misses when seeded far away, e.g. a root end on the fillet); NaN if
+    the march loses the flank."""
+    par = None if guess is None else np.asarray(guess, dtype=float)
+    for t in np.linspace(0.0, 1.0, steps + 1):
+        z, rho = start + t * (end - start)
+        pt = flank_points(blade, machine, blank, hand, np.array([z]), np.array([rho]),
+                          guess=None if par is None else par[None, :])
+        if not pt.ok[0]:
+            return np.full(4, np.nan)
+        par = pt.params[0]
+    return par
+
+
 def _rho_at(blade: Blade, h: float) -> tuple[float, float]:
     """ρ [mm] and the tangent's blade angle [rad] of the edge where it reaches height h."""
     sec = profile_sections(blade)
-    s_top = 50.0 * (1.0 + h)
-    s = brentq(lambda t: float(blade_profile(sec, t).h) - h, 0.0, s_top, xtol=1e-13,
-               rtol=1e-15)
+    # the first crossing of h going up the edge (a concave circular profile turns over,
+    # so h(s) is not monotone to any length): bracket it on a grid, then Brent
+    grid = np.linspace(0.0, 50.0 * (1.0 + h), 4001)
+    above = np.flatnonzero(blade_profile(sec, grid).h >= h)
+    if above.size == 0 or above[0] == 0:
+        raise InputError(f"relief: the blade edge does not reach the height {h:.4g} mm")
+    k = int(above[0])
+    s = brentq(lambda t: float(blade_profile(sec, t).h) - h, grid[k - 1], grid[k],
+               xtol=1e-13, rtol=1e-15)
     p = blade_profile(sec, s)
     return float(p.rho), math.atan2(abs(float(p.drho)), float(p.dh))
+
+
+class ReliefError(InputError):
+    """A relief the blade cannot make; ``field`` names the input to change
+    (``tip_relief``, ``root_relief`` or ``relief_start``) and the message what would work.
+
+    ``span`` is (shortest, longest) blade length [mm] from corner to end that would make
+    the relief (None where no bound applies), for :func:`relieved_blade` to turn into a
+    ``relief_start``.
+    """
+
+    def __init__(self, message: str, field: str,
+                 span: tuple[float | None, float | None] = (None, None)) -> None:
+        super().__init__(message)
+        self.field = field
+        self.span = span
+
+
+def _rem_limits(blade: Blade) -> tuple[float, float]:
+    """Range [rad] of rem angles the blade model takes, kept clear of its limits: |Δα| < 19°
+    (the model's 20°) and 0 ≤ α + Δα < 90°."""
+    a = blade.blade_angle
+    return max(-_MAX_REM, -a), min(_MAX_REM, 0.5 * math.pi - a - 1e-6)
+
+
+def _with_rem(blade: Blade, up: bool, d_alpha: float, corner_height: float) -> Blade:
+    kw = (dict(flankrem_angle=d_alpha, flankrem_height=corner_height) if up else
+          dict(toprem_angle=d_alpha, toprem_height=corner_height))
+    return Blade(**{**blade.__dict__, **kw})
 
 
 def rem_angle(blade: Blade, corner_height: float, end_height: float, relief: float) -> float:
@@ -171,7 +237,8 @@ def rem_angle(blade: Blade, corner_height: float, end_height: float, relief: flo
     Parameters
     ----------
     blade : geometry.machine.cutter.Blade
-        The blade without rems (its main profile, straight or circular).
+        The blade without rems (its main profile, straight or circular; face milling or a
+        placed face-hobbing blade: the profile is in the rake plane either way).
     corner_height, end_height : float — [mm]
         Heights above the blade tip: end above the corner for a flankrem, below for a
         toprem.
@@ -181,42 +248,126 @@ def rem_angle(blade: Blade, corner_height: float, end_height: float, relief: flo
     Returns
     -------
     float — [rad]
-        Δα (> 0 flankrem, < 0 toprem; 0 for no relief).
+        Δα, the rem line's blade angle minus the blade's nominal angle α (0 for no relief).
+        Usually > 0 for a flankrem and < 0 for a toprem; a circular main profile turns the
+        edge's own angle away from α, so a small relief on a strongly curved profile can
+        take the other sign.
 
     Raises
     ------
-    InputError
-        If the relief needs |Δα| beyond 19° (the blade model's limit is 20°).
+    ReliefError
+        If no rem angle the blade model takes (|Δα| < 19°, 0 ≤ α + Δα < 90°) gives the
+        relief, or the edge radius no longer fits below a toprem; the message says how
+        much relief the blade takes over this span and which ``relief_start`` would give
+        the requested one.
 
     Notes
     -----
-    Straight profile: tan(α + Δα) = tan α ± δ/(|h_e − h_c| cos α), exact. Circular profile:
-    Brent's method on the normal distance, started from that value.
+    The rem is a straight line through the corner (ρ_c, h_c) on the main profile, of blade
+    angle α + Δα; at the end height h_e it lies at ρ_c + σ (h_e − h_c) tan(α + Δα). With
+    ρ_e and α_e the main profile's radius and tangent angle at h_e, the normal relief
+    σ (ρ_line − ρ_e) cos α_e = δ gives, for **any** main profile,
+
+        tan(α + Δα) = [δ / cos α_e − σ (ρ_c − ρ_e)] / (h_e − h_c),
+
+    which for a straight profile (ρ_e − ρ_c = σ (h_e − h_c) tan α, α_e = α) is the module
+    docstring's tan(α + Δα) = tan α ± δ / (|h_e − h_c| cos α). It is exact while h_e lies
+    on the rem line. A root end below the edge radius' tangent point lies on the edge arc,
+    which the toprem moves (the arc is tangent to the toprem line): the closed form then
+    starts Brent's method on the same normal distance (:func:`blade_relief`'s measure),
+    bracketed within the blade model's range.
     """
     relief = real("relief", relief, unit="mm", low=0.0)
     if relief == 0.0:
         return 0.0
-    a = blade.blade_angle
     up = end_height > corner_height
-    sign = 1.0 if up else -1.0
-    closed = math.atan(math.tan(a) + sign * relief
-                       / (abs(end_height - corner_height) * math.cos(a))) - a
-    if blade.profile == "straight" and abs(closed) < _MAX_REM:
-        return closed
-    rho_main, a_loc = _rho_at(blade, end_height)
+    field = "tip_relief" if up else "root_relief"
+    rem = "flankrem" if up else "toprem"
+    span = abs(end_height - corner_height)
+    a = blade.blade_angle
+    rho_c, a_c = _rho_at(blade, corner_height)
+    rho_e, a_e = _rho_at(blade, end_height)
+    sg = blade.sigma
+
+    def closed(delta: float) -> float:
+        t = (delta / math.cos(a_e) - sg * (rho_c - rho_e)) / (end_height - corner_height)
+        return math.atan(t) - a
 
     def gap(d_alpha: float) -> float:
-        kw = (dict(flankrem_angle=d_alpha, flankrem_height=corner_height) if up else
-              dict(toprem_angle=d_alpha, toprem_height=corner_height))
-        b = Blade(**{**blade.__dict__, **kw})
-        return blade.sigma * (_rho_at(b, end_height)[0] - rho_main) * math.cos(a_loc) - relief
+        """Normal relief at the end minus the target [mm]; increasing in Δα for a
+        flankrem, decreasing for a toprem (ρ_line moves by σ (h_e − h_c) d tan)."""
+        b = _with_rem(blade, up, d_alpha, corner_height)
+        return sg * (_rho_at(b, end_height)[0] - rho_e) * math.cos(a_e) - relief
 
-    lo, hi = (1e-9, _MAX_REM) if up else (-_MAX_REM, -1e-9)
+    lo, hi = _rem_limits(blade)
+    sense = 1.0 if up else -1.0
+
+    def too_steep(why: str) -> ReliefError:
+        # what this span takes at the model's limit, and the blade length the relief needs
+        lim = hi if up else lo
+        most = (sg * (rho_c - rho_e) + (end_height - corner_height) * math.tan(a + lim)) \
+            * math.cos(a_e)
+        need = relief / max(math.cos(a_e) * abs(math.tan(a + lim) - math.tan(a)), 1e-12)
+        return ReliefError(
+            f"{field}: {relief * 1e3:.4g} um over {span:.3g} mm of blade (corner at "
+            f"{corner_height:.3g} mm, flank end cut at {end_height:.3g} mm) {why}; the "
+            f"blade's {rem} takes at most about {max(most, 0.0) * 1e3:.3g} um over this "
+            f"span, and {relief * 1e3:.4g} um needs at least {need:.3g} mm of blade: lower "
+            f"{field} or move the corner towards M", field, (need, None))
+
+    def _removing(d_alpha: float) -> float:
+        """Δα, if the rem line leaves the corner on the material side of the main
+        profile's tangent there (else it would first add material: a bump, no relief)."""
+        turn = sense * (a + d_alpha - a_c)
+        if turn < -1e-12:
+            # the tangent at the corner already lies `sag` off the profile at the end
+            sag = (sg * (rho_c - rho_e) + (end_height - corner_height) * math.tan(a_c)) \
+                * math.cos(a_e)
+            longest = span * math.sqrt(relief / sag) if sag > relief else None
+            raise ReliefError(
+                f"{field}: {relief * 1e3:.4g} um over {span:.3g} mm of blade (corner at "
+                f"{corner_height:.3g} mm, flank end cut at {end_height:.3g} mm): the "
+                f"circular profile (radius {blade.profile_radius:.4g} mm) turns "
+                f"{sag * 1e3:.3g} um away from its tangent at the corner over this span, "
+                f"more than the relief, so the {rem} would first add material; give "
+                f"{field} >= {math.ceil(sag * 1e4) / 10:.4g} um or move the corner towards "
+                "the flank end", field, (None, longest))
+        return d_alpha
+
+    d0 = closed(relief)
+    if lo < d0 < hi and d0 != 0.0:
+        try:
+            g0 = gap(d0)
+        except InputError as exc:
+            raise too_steep(f"leaves a blade the model refuses ({exc})") from None
+        if abs(g0) < 1e-10:  # the end lies on the rem line: the closed form is exact
+            return _removing(d0)
+    # the end lies on the edge arc (or the closed form fell outside the model's range):
+    # bracket the root of the monotone gap within [lo, hi], starting at the closed form
+    start = min(max(d0, lo + 1e-9), hi - 1e-9)
+    step = max(abs(start) * 0.25, math.radians(0.05))
+    a_lo = a_hi = start
     try:
-        return float(brentq(gap, lo, hi, xtol=1e-14))
-    except ValueError:
-        raise InputError(f"relief: {relief * 1e3:.4g} um over {abs(end_height - corner_height):.3g}"
-                         " mm of blade needs a rem angle beyond 19 deg") from None
+        g_lo = g_hi = gap(start)
+        direction = -sense if g_lo > 0.0 else sense  # towards the root
+        while (g_lo > 0.0) == (g_hi > 0.0):
+            nxt = (a_hi if direction > 0 else a_lo) + direction * step
+            if not lo < nxt < hi:
+                nxt = hi - 1e-9 if direction > 0 else lo + 1e-9
+                if nxt in (a_lo, a_hi):
+                    raise too_steep("needs a rem angle beyond the blade model's range "
+                                 f"({math.degrees(lo):.3g} to {math.degrees(hi):.3g} deg)")
+            g = gap(nxt)
+            if direction > 0:
+                a_lo, g_lo, a_hi, g_hi = a_hi, g_hi, nxt, g
+            else:
+                a_hi, g_hi, a_lo, g_lo = a_lo, g_lo, nxt, g
+            step *= 2.0
+    except ReliefError:
+        raise
+    except InputError as exc:
+        raise too_steep(f"leaves a blade the model refuses ({exc})") from None
+    return _removing(float(brentq(gap, a_lo, a_hi, xtol=1e-14)))
 
 
 def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: str,
@@ -248,8 +399,10 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
     Raises
     ------
     InputError
-        Out-of-range relief or start, a flank not generated at M or its ends, or a
-        toprem corner below the blade's edge radius.
+        Out-of-range relief or start, or a flank not generated at M or its ends.
+    ReliefError
+        A relief the blade cannot make (:func:`rem_angle`) or a toprem corner below the
+        blade's edge radius; ``field`` names the input to change.
 
     Notes
     -----
@@ -265,17 +418,35 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
     if tip_relief == 0.0 and root_relief == 0.0:
         return plain
     h = relief_heights(plain, machine, blank, hand, mating_blank)
+
+    def rem(corner: float, end: float, relief: float) -> float:
+        try:
+            return rem_angle(plain, corner, end, relief)
+        except ReliefError as exc:
+            shortest, longest = exc.span
+            whole = abs(end - h.mean)
+            if shortest is not None and shortest < whole:
+                hint = f"relief_start <= {math.floor(100 * (1 - shortest / whole)) / 100:.2f}"
+            elif longest is not None:
+                hint = f"relief_start >= {math.ceil(100 * (1 - longest / whole)) / 100:.2f}"
+            else:
+                hint = f"no relief_start does: lower {exc.field}"
+            raise ReliefError(f"{exc} (relief_start {start:g}; {hint} would work)",
+                              exc.field, exc.span) from None
+
     kw = {}
     if tip_relief > 0.0:
         hc = h.mean + start * (h.tip - h.mean)
-        kw.update(flankrem_angle=rem_angle(plain, hc, h.tip, tip_relief), flankrem_height=hc)
+        kw.update(flankrem_angle=rem(hc, h.tip, tip_relief), flankrem_height=hc)
     if root_relief > 0.0:
         hc = h.mean + start * (h.root - h.mean)
         if hc <= plain.edge_radius:
-            raise InputError(f"relief_start: the root-relief corner at {hc:.4g} mm lies within "
-                             f"the blade's edge radius {plain.edge_radius:g} mm; raise "
-                             "relief_start towards 0")
-        kw.update(toprem_angle=rem_angle(plain, hc, h.root, root_relief), toprem_height=hc)
+            most = (plain.edge_radius - h.mean) / (h.root - h.mean)
+            raise ReliefError(f"relief_start: the root-relief corner at {hc:.4g} mm lies "
+                              f"within the blade's edge radius {plain.edge_radius:g} mm; give "
+                              f"relief_start below {most:.3g} (or root_relief = 0)",
+                              "relief_start")
+        kw.update(toprem_angle=rem(hc, h.root, root_relief), toprem_height=hc)
     return Blade(**{**plain.__dict__, **kw})
 
 

@@ -79,7 +79,7 @@ from geometry.iso23509.blank import BlankGeometry
 from geometry.machine.cradle import MachineSettings, cutter_pose, roll_angle
 from geometry.machine.cutter import Blade
 from geometry.machine.flank_point import FlankPoint, MemberFlank
-from geometry.machine.relief import relieved_blade
+from geometry.machine.relief import ReliefError, relieved_blade
 from geometry.pair.assembly import member_transform
 from geometry.pair.conventional_tca import ToothPair
 from geometry.pair.design_point import (
@@ -320,9 +320,13 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
                        ratio=z1 / geom.gear.z)
     # step 7, profile relief: flankrem and toprem beyond corners above and below M, so the
     # flank near M (and with it steps 4-6) is unchanged (geometry.machine.relief)
-    blade = relieved_blade(tools.blade, tools.settings, pair.pinion_blank, pair.pinion_hand,
-                           pair.gear_blank, tip_relief=fo.tip_relief,
-                           root_relief=fo.root_relief, start=fo.relief_start)
+    try:
+        blade = relieved_blade(tools.blade, tools.settings, pair.pinion_blank,
+                               pair.pinion_hand, pair.gear_blank, tip_relief=fo.tip_relief,
+                               root_relief=fo.root_relief, start=fo.relief_start)
+    except ReliefError as exc:  # named as the basic file's per-flank input
+        raise ReliefError(f"synthesis.{pf}.{exc} ([synthesis] {exc.field} sets both "
+                          "pinion flanks)", exc.field) from None
     return FlankSynthesis(pf, fo, a21, mp, ls, tools._replace(blade=blade))
 
 
