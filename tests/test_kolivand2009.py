@@ -509,9 +509,13 @@ def test_gear_segments_inside_the_range_or_flagged_with_the_reason():
 
 def test_run_warning_says_where_the_model_extrapolated(capsys):
     """``ltca run``'s warning (``contact.commands.run.print_extrapolation_warning``) on the
-    suite's hypoid-example LTCA: the flagged count of the ``/friction`` flag, then the
-    flanks and the edges apart with their share of the load, and where the checks beyond
-    the range are documented; a dataset without flags prints nothing."""
+    suite's hypoid-example LTCA: one line of at most 100 characters (issue 61) with the
+    flagged flank segments and their share of the load, the edge contacts after them (the
+    counts of ``model_range_by_contact``, which add up to the ``/friction`` flag's); a
+    dataset without flags, or with only edge contacts carrying < 1 % of the load, prints
+    nothing."""
+    import json
+
     from test_ltca import _run
 
     from contact.commands.run import print_extrapolation_warning
@@ -522,15 +526,19 @@ def test_run_warning_says_where_the_model_extrapolated(capsys):
         fr = efficiency_analysis(_run())
     flagged, loaded = extrapolated_segments(fr)
     assert 0 < flagged < loaded
+    parts = json.loads(fr.attrs["model_range_by_contact"])
+    n_flank, n_edge = parts["flank"]["extrapolated"], parts["edge"]["extrapolated"]
+    assert n_flank + n_edge == flagged
     print_extrapolation_warning(fr)
     printed = capsys.readouterr().out
-    # wrapped to lines of at most 100 characters (issue 56), read here as one text
-    assert all(len(line) <= 100 for line in printed.splitlines())
-    out = " ".join(line.strip() for line in printed.splitlines())
-    assert out.startswith("WARNING: friction model kolivand2009 extrapolated")
-    assert f"at {flagged} of {loaded} loaded segments" in out
-    assert "segments on the flanks" in out and "segments on the edges" in out
-    assert "of the load" in out and "docs/friction.md" in out
+    assert len(printed.splitlines()) == 1 and len(printed.rstrip("\n")) <= 100
+    assert printed.startswith(f"WARNING: kolivand2009 extrapolated: {n_flank} flank segments")
+    assert f"{parts['flank']['load_share']:.2%} of load" in printed
+    assert f"{n_edge} edge contacts" in printed
     print_extrapolation_warning(fr.assign(friction_model_extrapolated=0
                                           * fr["friction_model_extrapolated"]))
+    assert capsys.readouterr().out == ""
+    edges_only = {"flank": {**parts["flank"], "extrapolated": 0},
+                  "edge": {**parts["edge"], "load_share": 0.005}}
+    print_extrapolation_warning(fr.assign_attrs(model_range_by_contact=json.dumps(edges_only)))
     assert capsys.readouterr().out == ""

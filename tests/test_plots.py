@@ -404,3 +404,20 @@ def test_tolerance_histogram_labels_off_the_bars_and_integer_draws():
     assert f"P50 {p[1]:.4g}" in ax.get_title()
     ticks = [t for t in ax.get_yticks() if ax.get_ylim()[0] <= t <= ax.get_ylim()[1]]
     assert all(float(t).is_integer() for t in ticks), ticks
+
+
+def test_efficiency_figure_marks_only_rolls_the_extrapolation_matters_for():
+    """A roll is marked where flagged segments make ≥ 5 % of its sliding loss (issue 61:
+    every roll was marked, since every roll has an edge outside any line-contact box): a
+    flagged segment with 10 % of the loss marks its roll, one with 1 % does not, and a roll
+    without loss is not marked."""
+    import xarray as xr
+
+    from contact.plots.curves import EXTRAPOLATED_LOSS_SHARE, _extrapolated_rolls
+
+    loss = np.array([[[[9.0, 1.0]], [[99.0, 1.0]], [[0.0, 0.0]]]])   # (torque, roll, pair, seg)
+    flag = np.array([[[[0, 1]], [[0, 1]], [[0, 1]]]], dtype=np.int8)
+    dims = ("torque", "roll", "pair", "segment")
+    fr = xr.Dataset({"sliding_loss": (dims, loss), "friction_model_extrapolated": (dims, flag)})
+    assert EXTRAPOLATED_LOSS_SHARE == 0.05
+    assert _extrapolated_rolls(fr, 0).tolist() == [True, False, False]

@@ -565,19 +565,38 @@ def _number(value: float, decimals: int = 2) -> str:
 
 
 def print_extrapolation_warning(friction) -> None:
-    """A WARNING line when the friction model ran outside its fitted range (flagged per
-    segment in ``/friction/friction_model_extrapolated``)."""
-    from friction.efficiency import extrapolated_segments, extrapolation_summary
+    """One WARNING line when the friction model ran outside its fitted range: how many
+    flank segments and their share of the load (from the
+    ``model_range_by_contact`` attribute; per segment ``/friction/friction_model_extrapolated``),
+    with the edge contacts' count and load share after it. Edge contacts alone (a rounded
+    tooth edge, outside every line-contact study's box and checked against the solver
+    separately, docs/friction.md) give the line only when they carry ≥ 1 % of the load;
+    nothing flagged, nothing printed."""
+    import json
 
-    flagged, loaded = extrapolated_segments(friction)
-    if flagged:
-        where = extrapolation_summary(friction)
-        print_wrapped(f"WARNING: friction model {friction.attrs.get('friction_model', '')} "
-                      f"extrapolated outside its fitted range at {flagged} of {loaded} loaded "
-                      "segments (flag /friction/friction_model_extrapolated; marked on the "
-                      "plots): the efficiency there is an extrapolation"
-                      + (f": {where} (how far it was checked beyond its range: "
-                         "docs/friction.md)" if where else ""))
+    from friction.efficiency import extrapolated_segments
+
+    flagged, _loaded = extrapolated_segments(friction)
+    if not flagged:
+        return
+    try:
+        parts = json.loads(friction.attrs.get("model_range_by_contact", "{}"))
+    except (TypeError, ValueError):
+        parts = {}
+    flank, edge = parts.get("flank") or {}, parts.get("edge") or {}
+    n_flank, n_edge = int(flank.get("extrapolated", 0)), int(edge.get("extrapolated", 0))
+    edge_share = float(edge.get("load_share", 0.0))
+    if not n_flank and edge_share < 0.01 and parts:
+        return
+    model = friction.attrs.get("friction_model", "")
+    if not parts:
+        print(f"WARNING: {model} extrapolated at {flagged} segments (docs/friction.md)")
+        return
+    text = (f"WARNING: {model} extrapolated: {n_flank} flank segments "
+            f"({float(flank.get('load_share', 0.0)):.2%} of load)")
+    if n_edge:
+        text += f", {n_edge} edge contacts ({edge_share:.1%})"
+    print(text)
 
 
 #: the width [characters] the command line wraps its long messages to
