@@ -54,9 +54,9 @@ from friction.film import (
 )
 from friction.flash_temperature import (
     ScuffingConditions,
+    base_oil_factor,
     blok_flash_temperature,
     bulk_temperature,
-    lubricant_factor,
     scuffing_safety,
     scuffing_temperature,
 )
@@ -71,6 +71,7 @@ from friction.lubricant import (
 )
 from friction.micropitting import (
     GAUSSIAN_RA_PER_RQ,
+    film_at_bulk_temperature,
     micropitting_safety,
     specific_film_thickness,
 )
@@ -207,7 +208,7 @@ def efficiency_analysis(
     if not isinstance(cond, ScuffingConditions):
         raise InputError("scuffing: must be a friction.flash_temperature.ScuffingConditions "
                          f"or None, got {scuffing!r}")
-    durability = _surface_durability(ltca, seg, fric, oil, op, cond)
+    durability = _surface_durability(ltca, seg, fric, oil, op, cond, e_prime)
     return _uncertified_as_nan(_friction_dataset(ltca, seg, fric, losses, op, oil, durability),
                                ltca)
 
@@ -489,7 +490,8 @@ class _Durability(NamedTuple):
     flash_max: np.ndarray  # (T,) [K] over the loaded flank segments
     contact_max: np.ndarray  # (T,) [degC] over the loaded flank segments
     contact_max_edge: np.ndarray  # (T,) [degC] over the loaded edge segments
-    specific_film_min: np.ndarray  # (T,) [1] over the loaded flank segments
+    specific_film_min: np.ndarray  # (T,) [1] over the loaded flank segments, film at θ_M
+    specific_film_min_inlet: np.ndarray  # (T,) [1] the same, film at the oil inlet
     scuffing_temperature: float  # [degC] θ_S of the oil (NaN: unknown)
     scuffing_safety: np.ndarray  # (T,) [1] S_B
     permissible_specific_film: float  # [1] λ_GFP of the oil (NaN: unknown)
@@ -499,10 +501,12 @@ class _Durability(NamedTuple):
 
 
 def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: _Oil,
-                        op: OperatingConditions, cond: ScuffingConditions) -> _Durability:
+                        op: OperatingConditions, cond: ScuffingConditions, e_prime: float
+                        ) -> _Durability:
     """Blok's flash temperature [K] of each loaded segment (μ p abs(V_s) over the Hertzian
     band, each member's surface speed across the line and effusivity), the bulk [degC]
-    and contact temperature [degC], the specific film thickness λ_GF = h_min/Ra [1], their
+    and contact temperature [degC], the specific film thickness λ_GF = h_min/Ra [1] with
+    the film at the bulk temperature θ_M (ISO/TS 6336-22; E′ [MPa] for that film), their
     extremes per torque over the loaded flank segments and the safeties against scuffing
     and micropitting [1] (NaN, with the reason in ``comments``, where the oil lacks the
     data; :mod:`friction.flash_temperature`, :mod:`friction.micropitting`)."""
@@ -548,17 +552,32 @@ def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: 
     contact_max, contact_max_edge = bulk + flash_max, bulk + flash_max_edge
     lub = oil.lubricant
     theta_s, s_b = _scuffing(lub, oil, op, cond, contact_max, comments)
-    lam = np.asarray(specific_film_thickness(fric.film_thickness, op.roughness, op.roughness),
+    # ISO/TS 6336-22: the film at the bulk temperature θ_M (NaN where θ_M is unknown)
+    h_bulk = np.full(fric.film_thickness.shape, np.nan)
+    at = np.isfinite(bulk[torque_of])
+    if at.any():
+        h_bulk[at] = film_at_bulk_temperature(
+            lub, bulk[torque_of][at], seg.rolling_velocity[at], seg.load_per_length[at],
+            seg.radius[at], seg.pressure_max[at], seg.slide_to_roll_total[at], e_prime)
+    lam = np.asarray(specific_film_thickness(h_bulk, op.roughness, op.roughness),
                      float).reshape(fric.film_thickness.shape)
-    lam_min = np.full(n_torque, np.nan)
+    lam_inlet = np.asarray(specific_film_thickness(fric.film_thickness, op.roughness,
+                                                   op.roughness), float).reshape(lam.shape)
+    lam_min, lam_min_inlet = np.full(n_torque, np.nan), np.full(n_torque, np.nan)
     for i in range(n_torque):
         m = (torque_of == i) & flank & np.isfinite(lam)
         if m.any():
             lam_min[i] = float(np.min(lam[m]))
+        m = (torque_of == i) & flank & np.isfinite(lam_inlet)
+        if m.any():
+            lam_min_inlet[i] = float(np.min(lam_inlet[m]))
     comments["specific_film_thickness"] = (
-        "lambda_GF = h_min / Ra, Ra = sqrt(2/pi) Rq = "
+        "lambda_GF = h_min(theta_M) / Ra: film at the bulk temperature theta_M (ISO/TS "
+        "6336-22's temperature; the toolkit's Dowson-Higginson film with Gupta's thermal "
+        "factor, not ISO's h_Y), Ra = sqrt(2/pi) Rq = "
         f"{GAUSSIAN_RA_PER_RQ * op.roughness:.3g} um of both flanks (Rq {op.roughness:g} "
-        "um, Gaussian heights; ISO/TS 6336-22)")
+        "um, Gaussian heights)"
+        + ("" if at.all() else "; NaN where theta_M is unknown (no flash temperature)"))
     perm = lub.permissible_specific_film
     if perm is None:
         s_l = np.full(n_torque, np.nan)
@@ -588,8 +607,8 @@ def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: 
         "durability_source": lub.durability_source,
     }
     return _Durability(flash, contact, lam, flash_mean, bulk, flash_max, contact_max,
-                       contact_max_edge, lam_min, theta_s, s_b, perm_value, s_l, comments,
-                       attrs)
+                       contact_max_edge, lam_min, lam_min_inlet, theta_s, s_b, perm_value,
+                       s_l, comments, attrs)
 
 
 def _scuffing(lub: Lubricant, oil: _Oil, op: OperatingConditions, cond: ScuffingConditions,
@@ -604,7 +623,7 @@ def _scuffing(lub: Lubricant, oil: _Oil, op: OperatingConditions, cond: Scuffing
             "fields of friction.lubricant), so no scuffing temperature")
         log.info("scuffing safety not computed: %s", comments["scuffing_safety"])
         return math.nan, np.full(contact_max.shape, np.nan)
-    x_l = lubricant_factor(oil.viscosity, lub.base_oil)
+    x_l = base_oil_factor(lub.base_oil)  # θ_S has no viscosity term (ISO/TR 13989-1)
     theta_s = scuffing_temperature(lub.fzg_load_stage, x_l, cond.structural_factor)
     if theta_s <= op.temperature:
         comments["scuffing_safety"] = (
@@ -627,7 +646,7 @@ def _scuffing(lub: Lubricant, oil: _Oil, op: OperatingConditions, cond: Scuffing
     comments["scuffing_safety"] = (
         f"S_B = (theta_S - theta_oil) / (theta_Bmax - theta_oil), theta_S = {theta_s:.1f} degC "
         f"= 80 + (0.85 + 1.4 X_W) X_L S_FZG^2 with S_FZG {lub.fzg_load_stage:g}, X_L "
-        f"{x_l:.4f} ({lub.base_oil} oil at {op.temperature:g} degC), X_W "
+        f"{x_l:g} (the {lub.base_oil} base oil's), X_W "
         f"{cond.structural_factor:g} (ISO/TS 6336-20); theta_Bmax over the loaded flank "
         "segments; the oil's data and its source: the attributes fzg_load_stage, base_oil, "
         "durability_source")
@@ -807,7 +826,9 @@ def _durability_variables(dur: _Durability, loaded: np.ndarray) -> dict[str, tup
             "contact temperature: bulk temperature + flash temperature"),
         "specific_film_thickness": data_var(
             dims4, _scatter(dur.specific_film, loaded), "1",
-            "specific film thickness lambda_GF = h_min / Ra", **note("specific_film_thickness")),
+            "specific film thickness lambda_GF = h_min / Ra, film at the bulk temperature "
+            "theta_M (ISO/TS 6336-22)", film_temperature="bulk temperature theta_M",
+            **note("specific_film_thickness")),
         "flash_temperature_mean": data_var(
             ("torque",), dur.flash_mean, "K",
             "mean flash temperature over the loaded flank segments and the mesh cycles "
@@ -828,7 +849,13 @@ def _durability_variables(dur: _Durability, loaded: np.ndarray) -> dict[str, tup
         "specific_film_thickness_min": data_var(
             ("torque",), dur.specific_film_min, "1",
             "least specific film thickness over the loaded flank segments and the mesh "
-            "cycles"),
+            "cycles, film at the bulk temperature theta_M (ISO/TS 6336-22)",
+            film_temperature="bulk temperature theta_M"),
+        "specific_film_thickness_min_inlet": data_var(
+            ("torque",), dur.specific_film_min_inlet, "1",
+            "least specific film thickness with the film at the oil inlet temperature (the "
+            "friction stage's film; for comparison, not ISO/TS 6336-22's)",
+            film_temperature="oil inlet temperature"),
         "scuffing_temperature": data_var(
             (), dur.scuffing_temperature, "degC",
             "scuffing temperature of the oil from its FZG load stage (ISO/TS 6336-20)"),

@@ -48,10 +48,16 @@ into ISO/TS 6336-20:2017):
     θ_S = 80 + (0.85 + 1.4 X_W) X_L S_FZG²   [degC]
 
 with X_W the structural factor of the material (1.0 for case-hardened steel of average
-retained austenite, ISO/TR 13989-1 Table 2) and X_L = X_lub η_oil^(−0.05) the lubricant
-factor (η_oil the dynamic viscosity at the oil temperature in mPa s; X_lub 1.0 mineral
-oils, 0.8 polyalphaolefins, 0.7 non-water-soluble and 0.6 water-soluble polyglycols, 1.3
-phosphate esters, 1.5 traction fluids, ISO/TR 13989-1 Eq. (27)). The safety factor is
+retained austenite, ISO/TR 13989-1 Table 2) and X_L the lubricant factor of the base oil
+(1.0 mineral oils, 0.8 polyalphaolefins, 0.7 non-water-soluble and 0.6 water-soluble
+polyglycols, 1.3 phosphate esters, 1.5 traction fluids; ISO/TR 13989-1 Eq. (27), DIN
+3990-4:1987 the same table). The oil's viscosity has no term of its own in θ_S: the
+factor η_oil^(−0.05) (η_oil in mPa s) belongs to the mean friction coefficient of the
+standard's method, μ_m = 0.045 (w_Bt K_Bγ/(v_ΣC ρ_redC))^0.2 η_oil^(−0.05) X_R X_L
+(ISO/TR 13989-1 Eq. (25); :mod:`friction.iso_flash_temperature`), where it stands
+beside X_L. (Earlier versions multiplied it into θ_S's X_L too: 364 °C instead of 404 °C
+for a mineral oil of S_FZG 12 at 13.6 mPa s; the standard's method keeps that reading
+as one end of the spread of its S_B.) The safety factor is
 S_B = (θ_S − θ_oil)/(θ_Bmax − θ_oil) (ISO/TR 13989-1 Eq. (100)); the standard advises
 stating the margin θ_S − θ_Bmax beside it.
 
@@ -64,7 +70,8 @@ heat_partition          Blok's share of the heat taken by surface 1
 blok_flash_temperature  the flash temperature of a uniform or Hertzian band source
 hertz_half_width        b = 2w/(π p_max) of a Hertzian line contact
 bulk_temperature        θ_M = θ_oil + 0.47 X_S X_mp θ_flm
-lubricant_factor        X_L = X_lub η_oil^(−0.05)
+base_oil_factor         X_L of the base oil (θ_S and μ_m)
+lubricant_factor        η_oil^(−0.05) X_L, the lubricant term of ISO's μ_m
 scuffing_temperature    θ_S from the FZG load stage
 scuffing_safety         S_B = (θ_S − θ_oil)/(θ_Bmax − θ_oil)
 ScuffingConditions      the inputs of the assessment beyond the contact and the oil
@@ -109,6 +116,7 @@ __all__ = [
     "HEAT_DISTRIBUTIONS",
     "LUBRICATION_FACTORS",
     "ScuffingConditions",
+    "base_oil_factor",
     "blok_flash_temperature",
     "bulk_temperature",
     "heat_partition",
@@ -135,8 +143,8 @@ HEAT_DISTRIBUTIONS: Mapping[str, float] = MappingProxyType(
 LUBRICATION_FACTORS: Mapping[str, float] = MappingProxyType(
     {"spray": 1.2, "dip": 1.0, "submerged": 0.2})
 
-#: base-oil factor X_lub of the lubricant factor X_L = X_lub η_oil^(−0.05)
-#: (ISO/TR 13989-1:2000 Eq. (27))
+#: lubricant factor X_L of the base oil, of the scuffing temperature θ_S and of ISO's mean
+#: friction coefficient (ISO/TR 13989-1:2000 Eq. (27); DIN 3990-4:1987 the same values)
 BASE_OIL_FACTORS: Mapping[str, float] = MappingProxyType({
     "mineral": 1.0,
     "polyalphaolefin": 0.8,
@@ -374,8 +382,37 @@ def bulk_temperature(oil_temperature: float, mean_flash_temperature: ArrayLike,
     return _out(t_oil + 0.47 * cond.lubrication_factor * cond.multiple_mesh_factor * flm)
 
 
+def base_oil_factor(base_oil: str) -> float:
+    """The lubricant factor X_L of a base oil.
+
+    Parameters
+    ----------
+    base_oil : str
+        One of :data:`BASE_OIL_FACTORS` (``"mineral"``, ``"polyalphaolefin"`` …).
+
+    Returns
+    -------
+    float — [1]
+        X_L: 1.0 mineral, 0.8 polyalphaolefin, 0.7 / 0.6 non-water-soluble / water-soluble
+        polyglycol, 1.3 phosphate ester, 1.5 traction fluid.
+
+    Raises
+    ------
+    InputError
+        An unknown base oil (the message lists the known ones).
+
+    Notes
+    -----
+    ISO/TR 13989-1:2000 Eq. (27) (ISO/TS 6336-20:2017; DIN 3990-4:1987): the factor of
+    the scuffing temperature θ_S (:func:`scuffing_temperature`) and of the mean friction
+    coefficient μ_m, which has the oil's viscosity as a term of its own
+    (:func:`lubricant_factor`).
+    """
+    return BASE_OIL_FACTORS[one_of("base_oil", base_oil, BASE_OIL_FACTORS)]
+
+
 def lubricant_factor(viscosity: float, base_oil: str) -> float:
-    """The lubricant factor X_L of the scuffing temperature.
+    """The lubricant term η_oil^(−0.05) X_L of ISO's mean friction coefficient.
 
     Parameters
     ----------
@@ -387,7 +424,7 @@ def lubricant_factor(viscosity: float, base_oil: str) -> float:
     Returns
     -------
     float — [1]
-        X_L = X_lub (1000 η_oil)^(−0.05) (η_oil in mPa s).
+        X_L (1000 η_oil)^(−0.05) (η_oil in mPa s; X_L :func:`base_oil_factor`).
 
     Raises
     ------
@@ -396,11 +433,12 @@ def lubricant_factor(viscosity: float, base_oil: str) -> float:
 
     Notes
     -----
-    ISO/TR 13989-1:2000 Eq. (27) (ISO/TS 6336-20:2017).
+    ISO/TR 13989-1:2000 Eq. (25), (27) (ISO/TS 6336-20:2017): the viscosity term and the
+    base oil's X_L of the mean friction coefficient μ_m. Not the scuffing temperature's
+    factor, which is X_L alone (module docstring).
     """
     eta = positive("viscosity", viscosity, "Pa s")
-    x_lub = BASE_OIL_FACTORS[one_of("base_oil", base_oil, BASE_OIL_FACTORS)]
-    return x_lub * (1e3 * eta) ** -0.05
+    return base_oil_factor(base_oil) * (1e3 * eta) ** -0.05
 
 
 def scuffing_temperature(fzg_load_stage: float, lubricant_factor: float,
@@ -412,7 +450,7 @@ def scuffing_temperature(fzg_load_stage: float, lubricant_factor: float,
     fzg_load_stage : float — [1]
         S_FZG, the failure load stage of the FZG A/8.3/90 test (ISO 14635-1), in [1, 14].
     lubricant_factor : float — [1]
-        X_L > 0 (:func:`lubricant_factor`).
+        X_L > 0, the base oil's (:func:`base_oil_factor`).
     structural_factor : float — [1]
         X_W > 0 (:class:`ScuffingConditions`); default 1.0.
 

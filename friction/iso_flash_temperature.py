@@ -33,11 +33,11 @@ is this expression with the involute geometry folded into its factors).
 The standard's inputs:
 
 * the mean friction coefficient (ISO/TR 13989-1:2000 Eq. (25)–(27)),
-  μ_m = 0.045 (w_Bt K_Bγ / (v_ΣC ρ_redC))^0.2 X_L X_R with v_ΣC = 2 v_vt sin α_vet
-  [m/s], ρ_redC = ρ_n at the pitch point [mm], X_R = 2.2 (Ra/ρ_redC)^0.25 (Ra [µm] the
-  mean of both flanks), X_L = X_lub η_oil^−0.05 the lubricant factor of the scuffing
-  temperature too (:func:`friction.flash_temperature.lubricant_factor`, η_oil [mPa s] at
-  the oil temperature, X_lub of the base oil) and the helical
+  μ_m = 0.045 (w_Bt K_Bγ / (v_ΣC ρ_redC))^0.2 η_oil^−0.05 X_R X_L with
+  v_ΣC = 2 v_vt sin α_vet [m/s], ρ_redC = ρ_n at the pitch point [mm],
+  X_R = 2.2 (Ra/ρ_redC)^0.25 (Ra [µm] the mean of both flanks), η_oil [mPa s] at the oil
+  temperature, X_L the base oil's lubricant factor
+  (:func:`friction.flash_temperature.base_oil_factor`) and the helical
   load factor K_Bγ = 1 (ε_γ ≤ 2), 1 + 0.2 √((ε_γ − 2)(5 − ε_γ)) (2 < ε_γ < 3.5), 1.3
   (ε_γ ≥ 3.5);
 * the load sharing factor X_Γ: 1/ε_α for ε_β ≥ 1 (helical: the load spread evenly over
@@ -50,10 +50,25 @@ The standard's inputs:
   :func:`friction.flash_temperature.bulk_temperature`), the scuffing temperature and the
   safety S_B of :mod:`friction.flash_temperature`.
 
-Not the standard's: the hypoid's lengthwise sliding v_g (ISO 10300-2 cl. 6, the rating's
-``v_g``) added to the profile sliding as an orthogonal component — a cylindrical gear has
-none, and without it the flash temperature of a hypoid would vanish at the pitch point,
-where the hypoid slides most along the tooth.
+Two variants, both stored and labelled (:func:`iso_flash_temperature_variants`):
+
+* ``standard`` — ISO/TS 6336-20's method as written, on the virtual cylindrical gears
+  (:data:`METHOD_STANDARD`): the sliding of the involute profiles only. The bevel/hypoid
+  standard ISO/TS 10300-20:2021 exists, but its text could not be sourced here: this is
+  not it, and is named so.
+* ``lengthwise_sliding`` — not the standard's (:data:`METHOD_LENGTHWISE`): the hypoid's
+  lengthwise sliding v_g (ISO 10300-2 cl. 6, the rating's ``v_g``) added to the profile
+  sliding as an orthogonal component. A cylindrical gear has none; without it the flash
+  temperature of a hypoid vanishes at the pitch point, where the hypoid slides most
+  along the tooth. For a spiral bevel pair (v_g = 0) both variants are the same.
+
+The spread of S_B its uncertain constants give (``scuffing_safety_low``/``_high``): the
+mean friction coefficient in ISO's form above or in DIN 3990-4:1987's,
+μ_m = 0.060 (w_Bt K_Bγ/(v_ΣC ρ_redC))^0.2 η_oil^−0.05 Ra^0.25 X_L (the same regression
+before ISO made the roughness term dimensionless: 0.045 · 2.2 ρ_redC^−0.25 = 0.060 at
+ρ_redC = 7.2 mm), and the scuffing temperature θ_S with X_L alone (the standard's, adopted)
+or with X_L η_oil^−0.05 (this toolkit's earlier reading): four combinations, their least
+and largest S_B.
 
 Units: lengths mm, speeds m/s, loads N/mm, pressure MPa, temperatures degC, temperature
 differences K.
@@ -62,16 +77,20 @@ Public functions
 ----------------
 helical_load_factor            K_Bγ
 roughness_factor               X_R = 2.2 (Ra/ρ_redC)^0.25
-mean_friction_coefficient      μ_m (ISO/TR 13989-1 Eq. (25))
+mean_friction_coefficient      μ_m (ISO/TR 13989-1 Eq. (25); DIN 3990-4's form as an option)
 load_sharing_factor            X_Γ along the path of contact
 path_of_contact                positions, radii of curvature of the involute path
 iso_flash_temperature_method   the whole method from a ``/rating`` dataset, as a Dataset
+iso_flash_temperature_variants the standard and the lengthwise-sliding variant, with the
+                               spread of S_B (the ``/rating/flash_temperature`` group)
 
 References
 ----------
 ISO/TR 13989-1:2000 (replaced by ISO/TS 6336-20:2017), Calculation of scuffing load
 capacity of cylindrical, bevel and hypoid gears — Part 1: Flash temperature method.
 ISO 10300-1:2014 Annex A (the virtual cylindrical gears).
+DIN 3990-4:1987, Tragfähigkeitsberechnung von Stirnrädern — Berechnung der
+Freßtragfähigkeit (the flash temperature criterion; its mean friction coefficient).
 Blok, H., "The flash temperature concept", Wear 6 (1963) 483–494.
 Johnson, K. L., *Contact Mechanics*, Cambridge (1985) §4.2 (the Hertz line contact).
 """
@@ -88,6 +107,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from friction.flash_temperature import (
     ScuffingConditions,
+    base_oil_factor,
     blok_flash_temperature,
     bulk_temperature,
     lubricant_factor,
@@ -100,12 +120,17 @@ from geometry import __version__
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import material
-from geometry.core.validation import integer, positive, real, real_array
+from geometry.core.validation import integer, one_of, positive, real, real_array
 
 __all__ = [
+    "FRICTION_FORMS",
     "METHOD",
+    "METHOD_LENGTHWISE",
+    "METHOD_STANDARD",
+    "VARIANTS",
     "helical_load_factor",
     "iso_flash_temperature_method",
+    "iso_flash_temperature_variants",
     "load_sharing_factor",
     "mean_friction_coefficient",
     "path_of_contact",
@@ -116,10 +141,19 @@ log = logging.getLogger(__name__)
 
 Array = NDArray[np.float64]
 
-#: what the method is, said on every output
-METHOD = ("ISO/TS 6336-20 flash temperature method (ISO/TR 13989-1) applied to the virtual "
-          "cylindrical gears of ISO 10300-1 Annex A, with the hypoid's lengthwise sliding "
-          "added (ISO/TS 10300-20's own definitions not sourced)")
+#: what each variant is, said on every output
+METHOD_STANDARD = ("ISO/TS 6336-20 flash temperature method (ISO/TR 13989-1) on the virtual "
+                   "cylindrical gears of ISO 10300-1 Annex A, as written (profile sliding "
+                   "only); not ISO/TS 10300-20, whose text was not sourced")
+METHOD_LENGTHWISE = ("not a standard: ISO/TS 6336-20's flash temperature method on the "
+                     "virtual cylindrical gears of ISO 10300-1 Annex A with the hypoid's "
+                     "lengthwise sliding v_g added to the profile sliding")
+#: the variants of :func:`iso_flash_temperature_variants`: name → lengthwise sliding added
+VARIANTS = {"standard": False, "lengthwise_sliding": True}
+#: the forms of the mean friction coefficient: ISO/TR 13989-1's and DIN 3990-4's
+FRICTION_FORMS = ("iso", "din")
+#: kept for files and code that name the method in one string: the lengthwise variant
+METHOD = METHOD_LENGTHWISE
 
 
 def helical_load_factor(eps_gamma: float) -> float:
@@ -190,8 +224,9 @@ def mean_friction_coefficient(
     roughness_ra: float,
     base_oil: str,
     helical_factor: float = 1.0,
+    form: str = "iso",
 ) -> Array | float:
-    """ISO's mean friction coefficient of the mesh.
+    """ISO's mean friction coefficient of the mesh (or DIN 3990-4's form of it).
 
     Parameters
     ----------
@@ -209,33 +244,42 @@ def mean_friction_coefficient(
         One of :data:`friction.flash_temperature.BASE_OIL_FACTORS` (X_lub).
     helical_factor : float — [1]
         K_Bγ (:func:`helical_load_factor`), ≥ 1; default 1.
+    form : {"iso", "din"}
+        ``"iso"`` (default): ISO/TR 13989-1's; ``"din"``: DIN 3990-4:1987's, with Ra^0.25
+        (Ra in µm) in place of X_R and 0.060 in place of 0.045.
 
     Returns
     -------
     float or array — [1]
-        μ_m = 0.045 (w_Bt K_Bγ/(v_ΣC ρ_redC))^0.2 X_L X_R with X_L = X_lub (1000 η_oil)^−0.05
-        (:func:`friction.flash_temperature.lubricant_factor`; the shape of
-        ``load_per_width``).
+        ISO: μ_m = 0.045 (w_Bt K_Bγ/(v_ΣC ρ_redC))^0.2 η_oil^−0.05 X_R X_L; DIN:
+        μ_m = 0.060 (w_Bt K_Bγ/(v_ΣC ρ_redC))^0.2 η_oil^−0.05 Ra^0.25 X_L (η_oil in mPa s,
+        X_L the base oil's, :func:`friction.flash_temperature.lubricant_factor`; the shape
+        of ``load_per_width``).
 
     Raises
     ------
     InputError
-        A non-positive or non-finite input, or an unknown base oil (naming the field).
+        A non-positive or non-finite input, an unknown base oil or form (naming the
+        field).
 
     Notes
     -----
     ISO/TR 13989-1:2000 Eq. (25)–(27) (ISO/TS 6336-20:2017), units as in the standard:
     N/mm, m/s, mm, mPa s, µm. E.g. w_Bt = 300 N/mm, v_ΣC = 3 m/s, ρ_redC = 10 mm,
-    η_oil = 13.6 mPa s, Ra = 0.64 µm, mineral oil: μ_m = 0.069.
+    η_oil = 13.6 mPa s, Ra = 0.64 µm, mineral oil: μ_m = 0.069 (ISO), 0.075 (DIN).
     """
     w = real_array("load_per_width", load_per_width, unit="N/mm", low=0.0, low_open=True)
     v = positive("sum_velocity", sum_velocity, "m/s")
     rho = positive("relative_radius", relative_radius, "mm")
     eta = positive("oil_viscosity", oil_viscosity, "Pa s")
-    x_l = lubricant_factor(eta, base_oil)  # X_lub (1000 η)^−0.05
+    one_of("form", form, FRICTION_FORMS)
+    x_l = lubricant_factor(eta, base_oil)  # η_oil^−0.05 X_L, η_oil in mPa s
     k = real("helical_factor", helical_factor, unit="1", low=1.0)
-    x_r = roughness_factor(roughness_ra, rho)
-    mu = 0.045 * (w * k / (v * rho)) ** 0.2 * x_l * x_r
+    if form == "iso":
+        mu = 0.045 * (w * k / (v * rho)) ** 0.2 * x_l * roughness_factor(roughness_ra, rho)
+    else:
+        ra = positive("roughness_ra", roughness_ra, "um")
+        mu = 0.060 * (w * k / (v * rho)) ** 0.2 * x_l * ra ** 0.25
     return float(mu) if mu.ndim == 0 else mu
 
 
@@ -370,6 +414,9 @@ def iso_flash_temperature_method(
     roughness: float,
     conditions: ScuffingConditions | None = None,
     points: int = 41,
+    lengthwise_sliding: bool = False,
+    friction_form: str = "iso",
+    viscosity_in_scuffing_temperature: bool = False,
 ) -> xr.Dataset:
     """The standard's flash-temperature method on the virtual cylindrical gears of a pair.
 
@@ -394,6 +441,16 @@ def iso_flash_temperature_method(
         Lubrication and meshing gears (bulk temperature) and X_W (scuffing temperature).
     points : int
         Points along the path of contact, ≥ 3; default 41.
+    lengthwise_sliding : bool
+        Add the hypoid's lengthwise sliding v_g to the profile sliding (not the standard's,
+        :data:`METHOD_LENGTHWISE`); default False, the standard as written
+        (:data:`METHOD_STANDARD`).
+    friction_form : {"iso", "din"}
+        The form of the mean friction coefficient (:func:`mean_friction_coefficient`);
+        default ISO's.
+    viscosity_in_scuffing_temperature : bool
+        Multiply θ_S's X_L by η_oil^−0.05 (not the standard's; one end of the spread of
+        S_B, module docstring); default False.
 
     Returns
     -------
@@ -406,7 +463,9 @@ def iso_flash_temperature_method(
         [N/mm], ``mean_friction_coefficient`` [1], ``flash_temperature_mean``,
         ``flash_temperature_max`` [K], ``bulk_temperature``, ``contact_temperature_max``
         [degC], ``scuffing_safety`` [1]; 0-d ``scuffing_temperature`` [degC]. The method
-        (:data:`METHOD`) in the attribute ``method``.
+        (:data:`METHOD_STANDARD` or :data:`METHOD_LENGTHWISE`) in the attribute ``method``,
+        the options in the attributes ``lengthwise_sliding`` (0/1), ``friction_form`` and
+        ``viscosity_in_scuffing_temperature`` (0/1).
 
     Raises
     ------
@@ -444,7 +503,7 @@ def iso_flash_temperature_method(
     v_vt = float(v["v_mt"][0]) * math.cos(beta_m1) / math.cos(float(v["beta_v"]))
     omega = 2.0 * v_vt / (v["d_v"] * 1e-3)
     speed = omega[:, None] * rho_t * 1e-3  # (2, path) along the profiles
-    v_g = float(v["v_g"])
+    v_g = float(v["v_g"]) if lengthwise_sliding else 0.0
     sliding = np.hypot(speed[0] - speed[1], v_g)
     across = speed * math.cos(beta_vb)
     # loads and contact
@@ -467,7 +526,8 @@ def iso_flash_temperature_method(
     ra = GAUSSIAN_RA_PER_RQ * rq
     k_bg = helical_load_factor(float(v["eps_va"] + v["eps_vb"]))
     mu = np.asarray(mean_friction_coefficient(
-        w_bt, 2.0 * v_vt * math.sin(alpha), rho_c, eta, ra, oil.base_oil, k_bg), float)
+        w_bt, 2.0 * v_vt * math.sin(alpha), rho_c, eta, ra, oil.base_oil, k_bg,
+        form=friction_form), float)
     names = [n.strip() for n in str(rating.attrs.get("materials", "")).split(",")]
     if len(names) != 2 or not all(names):
         raise InputError("rating: the dataset's attribute 'materials' must name the pinion's "
@@ -484,10 +544,16 @@ def iso_flash_temperature_method(
     bulk = np.asarray(bulk_temperature(t_oil, flm, cond), float).reshape(flm.shape)
     contact = bulk[:, None] + flash
     theta_max = contact.max(axis=1)
-    theta_s, s_b, comment = _iso_scuffing(oil, eta, t_oil, cond, theta_max)
+    theta_s, s_b, comment = _iso_scuffing(oil, eta, t_oil, cond, theta_max,
+                                          viscosity_in_scuffing_temperature)
+    method = METHOD_LENGTHWISE if lengthwise_sliding else METHOD_STANDARD
     return _dataset(rating, torque, path, x_gamma, rho_n, sliding, across, p_h, half_width,
                     flash, contact, w_bt, mu, flm, bulk, theta_max, theta_s, s_b, comment,
-                    dict(lubricant=oil.name, oil_temperature_degC=t_oil, roughness_rq_um=rq,
+                    dict(method=method, lengthwise_sliding=int(bool(lengthwise_sliding)),
+                         friction_form=friction_form,
+                         viscosity_in_scuffing_temperature=int(
+                             bool(viscosity_in_scuffing_temperature)),
+                         lubricant=oil.name, oil_temperature_degC=t_oil, roughness_rq_um=rq,
                          helical_load_factor=k_bg, inlet_viscosity_Pa_s=eta,
                          scuffing_lubrication=cond.lubrication,
                          scuffing_meshing_gears=cond.meshing_gears,
@@ -504,14 +570,17 @@ def _beta_m1(rating: xr.Dataset) -> float:
 
 
 def _iso_scuffing(oil, eta: float, t_oil: float, cond: ScuffingConditions,
-                  theta_max: np.ndarray) -> tuple[float, np.ndarray, str]:
+                  theta_max: np.ndarray, viscosity_term: bool = False
+                  ) -> tuple[float, np.ndarray, str]:
     """θ_S [degC] and S_B [1] per torque, NaN with the reason where the oil lacks its FZG
-    load stage or θ_S is not above the oil."""
+    load stage or θ_S is not above the oil; θ_S's X_L is the base oil's, times
+    η_oil^−0.05 with ``viscosity_term`` (not the standard's)."""
     if oil.fzg_load_stage is None:
         return (math.nan, np.full(theta_max.shape, np.nan),
                 f"NaN: the oil {oil.name} gives no fzg_load_stage")
-    theta_s = scuffing_temperature(oil.fzg_load_stage, lubricant_factor(eta, oil.base_oil),
-                                   cond.structural_factor)
+    x_l = lubricant_factor(eta, oil.base_oil) if viscosity_term else base_oil_factor(
+        oil.base_oil)
+    theta_s = scuffing_temperature(oil.fzg_load_stage, x_l, cond.structural_factor)
     if theta_s <= t_oil:
         return (theta_s, np.full(theta_max.shape, np.nan),
                 f"NaN: the scuffing temperature {theta_s:.0f} degC is not above the oil's")
@@ -563,5 +632,90 @@ def _dataset(rating, torque, path, x_gamma, rho_n, sliding, across, p_h, half_wi
               "member": ("member", ["pinion", "gear"], {"long_name": "gear pair member"})}
     return xr.Dataset(data, coords=coords, attrs={
         "title": "scuffing by the standard's flash temperature method",
-        "method": METHOD, "case": str(rating.attrs.get("case", "")),
+        "case": str(rating.attrs.get("case", "")),
         "pitch_point_mm": float(path["pitch"]), "toolkit_version": __version__, **attrs})
+
+
+#: the variables the lengthwise sliding changes (over ``variant``); the others are shared
+_BY_VARIANT = ("sliding_velocity", "flash_temperature", "contact_temperature",
+               "flash_temperature_mean", "flash_temperature_max", "bulk_temperature",
+               "contact_temperature_max", "scuffing_safety")
+#: the combinations of the uncertain constants whose S_B spread is reported:
+#: (friction_form, viscosity_in_scuffing_temperature)
+_SPREAD = (("iso", False), ("iso", True), ("din", False), ("din", True))
+
+
+def iso_flash_temperature_variants(
+    rating: xr.Dataset,
+    *,
+    lubricant: str = "75W90",
+    oil_temperature: float,
+    roughness: float,
+    conditions: ScuffingConditions | None = None,
+    points: int = 41,
+) -> xr.Dataset:
+    """The standard's flash-temperature method and its lengthwise-sliding variant, with the
+    spread of S_B its uncertain constants give: the ``/rating/flash_temperature`` group.
+
+    Parameters
+    ----------
+    rating, lubricant, oil_temperature, roughness, conditions, points
+        As :func:`iso_flash_temperature_method`.
+
+    Returns
+    -------
+    xarray.Dataset
+        The variables of :func:`iso_flash_temperature_method` (ISO's μ_m, θ_S with X_L
+        alone) over a leading dimension ``variant`` = :data:`VARIANTS` (``standard``:
+        ISO/TS 6336-20 as written on the virtual gears; ``lengthwise_sliding``: with the
+        hypoid's lengthwise sliding, not a standard), the variant's description in the
+        coordinate variable ``method`` (variant), plus ``scuffing_safety_low`` and
+        ``scuffing_safety_high`` (variant, torque) [1]: the least and largest S_B over
+        μ_m in ISO's or DIN 3990-4's form and θ_S with or without η_oil^−0.05 (module
+        docstring).
+
+    Raises
+    ------
+    InputError
+        As :func:`iso_flash_temperature_method`.
+
+    Notes
+    -----
+    Module docstring (ISO/TR 13989-1:2000 / ISO/TS 6336-20:2017 on ISO 10300-1 Annex A's
+    virtual gears; DIN 3990-4:1987 for the other form of μ_m).
+    """
+    kw = dict(lubricant=lubricant, oil_temperature=oil_temperature, roughness=roughness,
+              conditions=conditions, points=points)
+    parts, low, high = [], [], []
+    for lengthwise in VARIANTS.values():
+        parts.append(iso_flash_temperature_method(rating, lengthwise_sliding=lengthwise, **kw))
+        spread = np.stack([np.asarray(iso_flash_temperature_method(
+            rating, lengthwise_sliding=lengthwise, friction_form=form,
+            viscosity_in_scuffing_temperature=visc, **kw)["scuffing_safety"].values, float)
+            for form, visc in _SPREAD])
+        with np.errstate(invalid="ignore"):
+            low.append(np.min(spread, axis=0))
+            high.append(np.max(spread, axis=0))
+    methods = [str(d.attrs["method"]) for d in parts]
+    ds = xr.concat([d.drop_attrs(deep=False) for d in parts], dim="variant",
+                   data_vars=list(_BY_VARIANT), coords="minimal", compat="override",
+                   join="exact")
+    attrs = {k: v for k, v in parts[0].attrs.items()
+             if k not in ("method", "lengthwise_sliding")}
+    ds = ds.assign_coords(
+        variant=("variant", list(VARIANTS), {"long_name": "variant of the flash temperature "
+                                            "method"}),
+        method=("variant", methods, {"long_name": "what the variant is"}))
+    note = ("over the mean friction coefficient in ISO/TR 13989-1's form and in DIN "
+            "3990-4's (0.060 (w_Bt K_Bgamma/(v_SigmaC rho_redC))^0.2 eta_oil^-0.05 Ra^0.25 "
+            "X_L), and the scuffing temperature with X_L alone (the standard's) or X_L "
+            "eta_oil^-0.05")
+    ds["scuffing_safety_low"] = (("variant", "torque"), np.stack(low),
+                                 {"units": "1", "long_name": "least scuffing safety factor "
+                                  "S_B of the uncertain constants", "comment": note})
+    ds["scuffing_safety_high"] = (("variant", "torque"), np.stack(high),
+                                  {"units": "1", "long_name": "largest scuffing safety factor "
+                                   "S_B of the uncertain constants", "comment": note})
+    return ds.assign_attrs(
+        attrs, method="; ".join(f"{k}: {m}" for k, m in zip(VARIANTS, methods, strict=True)),
+        friction_form="iso", viscosity_in_scuffing_temperature=0)

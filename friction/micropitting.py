@@ -13,11 +13,17 @@ at every point of the contact, its minimum over the flank and the mesh, and the 
 against the oil's permissible specific film thickness λ_GFP (from the oil's FVA 54
 micropitting test, ISO/TS 6336-22 Method B, or as given by its maker).
 
-Here h is the friction stage's minimum film thickness h_min (Dowson–Higginson with the
-Gupta thermal factor at the oil inlet temperature, :mod:`friction.film`) at every loaded
-contact segment of the LTCA — the toolkit's own film, not ISO's h_Y, which takes the
-viscosity at the bulk temperature and a sliding parameter; docs/scuffing_micropitting.md
-says what that difference is worth.
+Film temperature: ISO/TS 6336-22 takes the oil's viscosity and pressure–viscosity
+coefficient at the bulk (tooth body) temperature θ_M, not at the oil inlet: the flanks
+heat the oil that enters the contact. :func:`film_at_bulk_temperature` therefore evaluates
+the toolkit's minimum film thickness h_min (Dowson–Higginson with Gupta's thermal factor,
+:mod:`friction.film`) with the oil's η, α, β and k at θ_M at every loaded contact segment
+of the LTCA — ISO's temperature with the toolkit's film formula. ISO's own h_Y (its
+constant 1600, exponents and the sliding parameter S_GF that corrects for the local
+contact temperature) is not reproduced: its text was not at hand to source the constants.
+The friction stage keeps the film at the inlet temperature for the friction coefficient
+(the seed's choice) and stores the inlet λ_GF,min beside the ISO one for comparison;
+docs/scuffing_micropitting.md gives what the difference is worth.
 
 Roughness: the toolkit's input is the RMS roughness Rq of each flank; ISO's is the
 arithmetic mean roughness Ra. They are converted by the Gaussian relation Ra = √(2/π) Rq
@@ -30,9 +36,10 @@ Units: film thickness and roughness µm; λ dimensionless.
 
 Public functions
 ----------------
-arithmetic_roughness     Ra from Rq (Gaussian)
-specific_film_thickness  λ_GF = h / Ra
-micropitting_safety      S_λ = λ_GF,min / λ_GFP
+arithmetic_roughness       Ra from Rq (Gaussian)
+film_at_bulk_temperature   h_min with the oil's properties at θ_M (ISO/TS 6336-22's temperature)
+specific_film_thickness    λ_GF = h / Ra
+micropitting_safety        S_λ = λ_GF,min / λ_GFP
 
 References
 ----------
@@ -48,11 +55,19 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from friction.film import minimum_film_thickness, thermal_loading, thermal_reduction_factor
+from friction.lubricant import (
+    Lubricant,
+    pressure_viscosity_coefficient,
+    temperature_viscosity_coefficient,
+    thermal_conductivity,
+    viscosity,
+)
 from geometry.core.errors import InputError
 from geometry.core.validation import broadcast, one_of, positive, real_array
 
-__all__ = ["GAUSSIAN_RA_PER_RQ", "arithmetic_roughness", "micropitting_safety",
-           "specific_film_thickness"]
+__all__ = ["GAUSSIAN_RA_PER_RQ", "arithmetic_roughness", "film_at_bulk_temperature",
+           "micropitting_safety", "specific_film_thickness"]
 
 Array = NDArray[np.float64]
 
@@ -84,6 +99,63 @@ def arithmetic_roughness(rq: ArrayLike) -> Array | float:
     """
     r = real_array("rq", rq, unit="um", low=0.0, low_open=True)
     return _out(GAUSSIAN_RA_PER_RQ * r)
+
+
+def film_at_bulk_temperature(
+    lubricant: Lubricant, bulk_temperature: ArrayLike, rolling_velocity: ArrayLike,
+    load_per_length: ArrayLike, radius: ArrayLike, hertz_pressure: ArrayLike,
+    slide_to_roll: ArrayLike, e_prime: float,
+) -> Array | float:
+    """The minimum film thickness with the oil's properties at the bulk temperature θ_M.
+
+    Parameters
+    ----------
+    lubricant : friction.lubricant.Lubricant
+        The oil (its viscosity, pressure–viscosity coefficient, temperature–viscosity
+        coefficient and thermal conductivity against temperature).
+    bulk_temperature : array_like — [degC]
+        θ_M at each contact (ISO/TS 6336-20's θ_oil + 0.47 X_S X_mp θ_flm,
+        :func:`friction.flash_temperature.bulk_temperature`), finite.
+    rolling_velocity : array_like — [m/s]
+        Entraining velocity u = (V₁ + V₂)/2 along the rolling direction, > 0.
+    load_per_length : array_like — [N/mm]
+    radius : array_like — [mm]
+        Equivalent radius of curvature across the contact line.
+    hertz_pressure : array_like — [MPa]
+    slide_to_roll : array_like — [1]
+        abs(V_s)/V_r, for Gupta's thermal factor.
+    e_prime : float — [MPa]
+        Effective modulus E′.
+
+    Returns
+    -------
+    float or array — [µm]
+        h_min (Dowson–Higginson, Gupta's thermal factor;
+        :func:`friction.film.minimum_film_thickness`) with η, α, β and k of the oil at θ_M
+        (broadcast shape).
+
+    Raises
+    ------
+    InputError
+        A non-finite bulk temperature or one outside the oil's data (naming the field),
+        or a bad kinematic input (from :mod:`friction.film`).
+
+    Notes
+    -----
+    ISO/TS 6336-22:2018 (Method B; ISO/TR 15144-1:2014 before it) evaluates the film at
+    the bulk temperature θ_M; the formula here is the toolkit's film (module docstring),
+    not ISO's h_Y.
+    """
+    theta = real_array("bulk_temperature", bulk_temperature, unit="degC")
+    eta = np.asarray(viscosity(lubricant, theta), float)
+    alpha = np.asarray(pressure_viscosity_coefficient(lubricant, theta), float)
+    beta = np.asarray(temperature_viscosity_coefficient(lubricant, theta), float)
+    k_oil = np.asarray(thermal_conductivity(lubricant, theta), float)
+    loading = thermal_loading(beta, eta, rolling_velocity, k_oil)
+    phi_t = thermal_reduction_factor(loading, hertz_pressure, e_prime, slide_to_roll)
+    return _out(np.asarray(minimum_film_thickness(rolling_velocity, eta, alpha, load_per_length,
+                                                  radius, e_prime, thermal_factor=phi_t),
+                           float))
 
 
 def specific_film_thickness(film_thickness: ArrayLike, roughness_1: ArrayLike,

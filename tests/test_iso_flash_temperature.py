@@ -8,7 +8,14 @@ References, each independent of the code under test:
 * the load sharing factor: the pairs in contact at one instant (positions p_et apart)
   carry the whole load, X_Γ(s) + X_Γ(s + p_et) = 1 along the double-contact zone of a spur
   pair, and 1/ε_α everywhere for a helical pair — identities, 1e-12;
-* K_Bγ continuous at its joints, X_R and μ_m by hand from ISO/TR 13989-1 Eq. (25)–(27);
+* K_Bγ continuous at its joints, X_R and μ_m by hand from ISO/TR 13989-1 Eq. (25)–(27),
+  DIN 3990-4's form of μ_m by hand, and the two forms' identity 0.045 · 2.2 ρ^−0.25 =
+  0.060 at ρ = (0.099/0.060)^4 mm (the same regression);
+* θ_S = 80 + (0.85 + 1.4 X_W) X_L S_FZG² with X_L the base oil's alone: 404 °C for a
+  mineral oil of stage 12 (ISO/TR 13989-1 Eq. (99), (27));
+* the variants: the standard as written has no lengthwise sliding (a hypoid's pitch
+  point does not slide, as a bevel's), the lengthwise variant adds v_g orthogonally; the
+  spread of S_B brackets the adopted value and equals the four combinations by hand;
 * the flash temperature at the pinion's tip (E) of a spur-like pair computed by hand with
   Blok's own rounded form θ = 1.11 μ w |v₁ − v₂| / (B (√v₁ + √v₂) √(2b)) (Blok 1963) and
   a Hertz line contact written out here: 0.2 % (Blok's "1.11" is 1.1113 rounded, 0.12 %);
@@ -27,9 +34,11 @@ import xarray as xr
 
 from friction.flash_temperature import ScuffingConditions
 from friction.iso_flash_temperature import (
-    METHOD,
+    METHOD_LENGTHWISE,
+    METHOD_STANDARD,
     helical_load_factor,
     iso_flash_temperature_method,
+    iso_flash_temperature_variants,
     load_sharing_factor,
     mean_friction_coefficient,
     path_of_contact,
@@ -115,6 +124,14 @@ def test_friction_coefficient_by_hand():
     assert mu == pytest.approx(0.045 * 10 ** 0.2 * 13.6 ** -0.05 * 2.2 * 0.064 ** 0.25,
                                rel=1e-14)
     assert mu == pytest.approx(0.069, abs=5e-4)
+    din = mean_friction_coefficient(300.0, 3.0, 10.0, 0.0136, 0.64, "mineral", form="din")
+    assert din == pytest.approx(0.060 * 10 ** 0.2 * 13.6 ** -0.05 * 0.64 ** 0.25, rel=1e-14)
+    assert din == pytest.approx(0.075, abs=5e-4)
+    # the same regression: equal where 0.045 · 2.2 ρ^−0.25 = 0.060
+    rho = (0.045 * 2.2 / 0.060) ** 4
+    assert mean_friction_coefficient(300.0, 3.0, rho, 0.0136, 0.64, "mineral") == (
+        pytest.approx(mean_friction_coefficient(300.0, 3.0, rho, 0.0136, 0.64, "mineral",
+                                                form="din"), rel=1e-12))
     pao = mean_friction_coefficient([300.0, 600.0], 3.0, 10.0, 0.0136, 0.64,
                                     "polyalphaolefin", 1.1)
     np.testing.assert_allclose(pao, 0.8 * mu * 1.1 ** 0.2 * np.array([1.0, 2 ** 0.2]),
@@ -158,22 +175,71 @@ def test_flash_temperature_at_the_pinion_tip_by_hand():
     peak = float(iso["contact_temperature"][0].max())
     assert float(iso["scuffing_safety"][0]) == pytest.approx(
         (float(iso["scuffing_temperature"]) - 90.0) / (peak - 90.0), rel=1e-12)
-    assert iso.attrs["method"] == METHOD
+    assert iso.attrs["method"] == METHOD_STANDARD
+    assert iso.attrs["lengthwise_sliding"] == 0
 
 
 def test_hypoid_sliding_and_the_pitch_point():
     """A bevel pair does not slide at its pitch point, so its flash temperature is least
-    there; the hypoid's lengthwise sliding heats it everywhere, most where it adds to the
-    least profile sliding."""
+    there; so does the standard as written for a hypoid (no lengthwise sliding); the
+    lengthwise variant adds the hypoid's v_g and heats it everywhere, most where it adds
+    to the least profile sliding."""
     bevel = iso_flash_temperature_method(_rating(), oil_temperature=90.0, roughness=0.8)
     pitch = bevel.attrs["pitch_point_mm"]
     at = int(np.argmin(abs(bevel["path"].values - pitch)))
     assert int(np.argmin(bevel["sliding_velocity"].values)) == at
+    standard = iso_flash_temperature_method(_rating(v_g=1.0), oil_temperature=90.0,
+                                            roughness=0.8)
+    xr.testing.assert_allclose(standard["flash_temperature"], bevel["flash_temperature"],
+                               rtol=1e-14)
     hypoid = iso_flash_temperature_method(_rating(v_g=1.0), oil_temperature=90.0,
-                                          roughness=0.8)
+                                          roughness=0.8, lengthwise_sliding=True)
     np.testing.assert_allclose(hypoid["sliding_velocity"],
                                np.hypot(bevel["sliding_velocity"], 1.0), rtol=1e-12)
     assert np.all(hypoid["flash_temperature"] > bevel["flash_temperature"])
+    assert hypoid.attrs["method"] == METHOD_LENGTHWISE
+    assert hypoid.attrs["method"].startswith("not a standard")
+
+
+def test_scuffing_temperature_has_the_base_oil_factor_alone():
+    """θ_S = 80 + (0.85 + 1.4 X_W) X_L S_FZG²: the 75W90 (mineral, stage 12) gives
+    80 + 2.25 · 144 = 404 °C whatever its viscosity; the viscosity's η^−0.05 is a term of
+    μ_m (test_friction_coefficient_by_hand), and 364 °C, its product into X_L at 90 °C,
+    only one end of the spread."""
+    iso = iso_flash_temperature_method(_rating(), oil_temperature=90.0, roughness=0.8)
+    assert float(iso["scuffing_temperature"]) == pytest.approx(404.0, rel=1e-14)
+    eta = float(viscosity(load_lubricant("75W90"), 90.0))
+    other = iso_flash_temperature_method(_rating(), oil_temperature=90.0, roughness=0.8,
+                                         viscosity_in_scuffing_temperature=True)
+    assert float(other["scuffing_temperature"]) == pytest.approx(
+        80 + 2.25 * 144 * (1e3 * eta) ** -0.05, rel=1e-14)
+
+
+def test_variants_and_the_spread_of_the_safety():
+    """The group ``/rating/flash_temperature``: the standard and the lengthwise-sliding
+    variant over ``variant``, each labelled, and the least and largest S_B over the four
+    combinations of μ_m's form and θ_S's viscosity term, computed one by one here."""
+    rating = _rating(v_g=1.0, torque=(100.0, 300.0))
+    ds = iso_flash_temperature_variants(rating, oil_temperature=90.0, roughness=0.8)
+    assert list(ds["variant"].values) == ["standard", "lengthwise_sliding"]
+    assert list(ds["method"].values) == [METHOD_STANDARD, METHOD_LENGTHWISE]
+    assert ds["scuffing_safety"].dims == ("variant", "torque")
+    for k, lengthwise in enumerate((False, True)):
+        combos = np.array([iso_flash_temperature_method(
+            rating, oil_temperature=90.0, roughness=0.8, lengthwise_sliding=lengthwise,
+            friction_form=form, viscosity_in_scuffing_temperature=visc)[
+            "scuffing_safety"].values for form in ("iso", "din") for visc in (False, True)])
+        np.testing.assert_allclose(ds["scuffing_safety"][k], combos[0], rtol=1e-14)
+        np.testing.assert_allclose(ds["scuffing_safety_low"][k], combos.min(axis=0),
+                                   rtol=1e-14)
+        np.testing.assert_allclose(ds["scuffing_safety_high"][k], combos.max(axis=0),
+                                   rtol=1e-14)
+    assert np.all(ds["scuffing_safety_low"] <= ds["scuffing_safety"])
+    assert np.all(ds["scuffing_safety"] <= ds["scuffing_safety_high"])
+    assert np.all(ds["scuffing_safety"].sel(variant="lengthwise_sliding")
+                  < ds["scuffing_safety"].sel(variant="standard"))
+    for name, var in ds.data_vars.items():
+        assert var.attrs["units"] and var.attrs["long_name"], name
 
 
 def test_units_and_conditions():
@@ -194,6 +260,8 @@ def test_units_and_conditions():
     (lambda: roughness_factor(0.0, 10.0), "roughness_ra"),
     (lambda: mean_friction_coefficient(300, 3, 10, 0.01, 0.5, "whale"), "base_oil"),
     (lambda: mean_friction_coefficient(-1, 3, 10, 0.01, 0.5, "mineral"), "load_per_width"),
+    (lambda: mean_friction_coefficient(300, 3, 10, 0.01, 0.5, "mineral", form="agma"),
+     "form"),
     (lambda: load_sharing_factor([30.0], 20.0, 9.0, 1.5, 0.0), "position"),
     (lambda: load_sharing_factor([1.0], 20.0, 9.0, 2.5, 0.0), "eps_alpha"),
     (lambda: path_of_contact([66, 126], [56, 112], [60, 120], ALPHA, points=2), "points"),
@@ -224,7 +292,8 @@ def test_the_standard_and_the_ltca_on_tr_sample_1():
     tree = run_analysis("iso10300_30_sample1", torque=[300.0], root_stress=False)
     fr = tree["friction"].to_dataset()
     rating = iso10300_rating("iso10300_30_sample1", torque=[300.0], speed=1200.0)
-    iso = iso_flash_temperature_method(rating, oil_temperature=90.0, roughness=0.8)
+    iso = iso_flash_temperature_method(rating, oil_temperature=90.0, roughness=0.8,
+                                       lengthwise_sliding=True)
     ours = float(fr["contact_temperature_max"][0]) - 90.0
     theirs = float(iso["contact_temperature_max"][0]) - 90.0
     assert ours == pytest.approx(theirs, rel=0.15)

@@ -16,8 +16,12 @@ References, each independent of the code under test:
   its effusivity, by Jaeger's integral — both equal, and equal to the formula.
 * The limits: no sliding, no flash temperature; equal speeds and materials share the heat
   half and half; a stationary surface takes none.
-* Micropitting λ_GF against the friction stage's own film and the case's roughness (an
-  identity: λ_GF = h_min/(√(2/π) Rq) = √π λ for two flanks of equal Rq).
+* Micropitting λ_GF with the film at the bulk temperature θ_M (ISO/TS 6336-22's
+  temperature): every segment against Dowson–Higginson's h_min/R = 2.65 U^0.7 G^0.54
+  W^−0.13 written out here with the oil's η and α at the stored θ_M (times Gupta's
+  thermal factor, friction.film's), to 1e-9; the inlet λ_GF,min kept beside it against the
+  friction stage's own film (an identity: λ_GF = h_min/(√(2/π) Rq) = √π λ for two flanks
+  of equal Rq).
 * ISO/TS 6336-20's arithmetic (θ_S = 80 + (0.85 + 1.4 X_W) X_L S_FZG², S_B, θ_M) and ISO/TS
   6336-22's (S_λ) by hand; bad inputs refused naming the field; the dataset variables with
   units on a cheap LTCA (``test_ltca._run``), recomputed from the stored fields.
@@ -304,6 +308,7 @@ NEW_VARIABLES = {
     "flash_temperature_mean": "K", "bulk_temperature": "degC",
     "flash_temperature_max": "K", "contact_temperature_max": "degC",
     "contact_temperature_max_edge": "degC", "specific_film_thickness_min": "1",
+    "specific_film_thickness_min_inlet": "1",
     "scuffing_temperature": "degC", "scuffing_safety": "1",
     "permissible_specific_film": "1", "micropitting_safety": "1", "surface_speed": "m/s",
 }
@@ -343,22 +348,73 @@ def test_dataset_is_consistent_with_its_own_fields(ltca, fr):
                                fr["contact_temperature"].where(~flank).max(
                                    ("roll", "pair", "segment")), rtol=1e-14)
     theta_s = float(fr["scuffing_temperature"])
-    assert theta_s == pytest.approx(
-        80 + 2.25 * (1e3 * fr.attrs["inlet_viscosity_Pa_s"]) ** -0.05 * 144, rel=1e-12)
+    assert theta_s == pytest.approx(80 + 2.25 * 144, rel=1e-12)  # X_L 1 (mineral) alone
     np.testing.assert_allclose(fr["scuffing_safety"],
                                (theta_s - 90.0) / (fr["contact_temperature_max"] - 90.0),
                                rtol=1e-14)
     ra = math.sqrt(2 / math.pi) * 0.8
-    np.testing.assert_allclose(fr["specific_film_thickness"], fr["film_thickness"] / ra,
-                               rtol=1e-14)
-    np.testing.assert_allclose(fr["specific_film_thickness"],
-                               math.sqrt(math.pi) * fr["lambda_ratio"], rtol=1e-12)
+    inlet = fr["film_thickness"] / ra
+    np.testing.assert_allclose(inlet, math.sqrt(math.pi) * fr["lambda_ratio"], rtol=1e-12)
+    np.testing.assert_allclose(fr["specific_film_thickness_min_inlet"],
+                               inlet.where(flank).min(("roll", "pair", "segment")), rtol=1e-14)
     np.testing.assert_allclose(fr["specific_film_thickness_min"],
                                fr["specific_film_thickness"].where(flank).min(
                                    ("roll", "pair", "segment")), rtol=1e-14)
     # the temperature grows with the torque, the film thins
     assert np.all(np.diff(fr["contact_temperature_max"].values) > 0)
     assert np.all(np.diff(fr["scuffing_safety"].values) < 0)
+
+
+def test_specific_film_at_the_bulk_temperature_by_hand(ltca, fr):
+    """ISO/TS 6336-22 takes the film at the bulk temperature θ_M: every loaded segment's
+    λ_GF is Dowson–Higginson's h_min = 2.65 R U^0.7 G^0.54 W^−0.13 (U = η u/(E′R),
+    G = α E′, W = w/(E′R), SI units written out here) with the oil's η and α at the
+    stored θ_M of its torque, times Gupta's thermal factor at θ_M, over Ra = √(2/π) Rq
+    (to 1e-9: the same arithmetic in another order). θ_M lies above the inlet, so the
+    film is thinner than the friction stage's inlet film everywhere, and the stored
+    attributes say which temperature each λ_GF,min takes."""
+    from friction.film import thermal_loading, thermal_reduction_factor
+    from friction.lubricant import (
+        pressure_viscosity_coefficient,
+        temperature_viscosity_coefficient,
+        thermal_conductivity,
+        viscosity,
+    )
+
+    oil = load_lubricant("75W90")
+    loaded = np.isfinite(fr["specific_film_thickness"].values)
+    assert loaded.sum() > 500
+    theta = np.broadcast_to(fr["bulk_temperature"].values[:, None, None, None],
+                            loaded.shape)[loaded]
+    assert np.all(theta > 90.0)
+    u = np.abs(fr["rolling_velocity"].values[loaded])
+    w = ltca["load_per_length"].values[loaded] * 1e3  # N/m
+    r = np.broadcast_to(ltca["equivalent_radius"].values, loaded.shape)[loaded] * 1e-3  # m
+    import json
+
+    opts = json.loads(ltca.attrs["options"])  # the E and nu the LTCA ran with
+    e_prime = opts["youngs_modulus"] * 1e6 / (1 - opts["poisson_ratio"] ** 2)  # Pa, 2E*
+    eta = viscosity(oil, theta)
+    alpha = pressure_viscosity_coefficient(oil, theta) * 1e-9  # 1/Pa
+    phi = thermal_reduction_factor(
+        thermal_loading(temperature_viscosity_coefficient(oil, theta), eta, u,
+                        thermal_conductivity(oil, theta)),
+        ltca["pressure_max"].values[loaded], e_prime * 1e-6,
+        fr["slide_to_roll_total"].values[loaded])
+    h = phi * 2.65 * r * (eta * u / (e_prime * r)) ** 0.7 * (alpha * e_prime) ** 0.54 * (
+        w / (e_prime * r)) ** -0.13 * 1e6  # um
+    ra = math.sqrt(2 / math.pi) * 0.8
+    np.testing.assert_allclose(fr["specific_film_thickness"].values[loaded], h / ra,
+                               rtol=1e-9)
+    inlet = fr["film_thickness"].values[loaded] / ra
+    assert np.all(fr["specific_film_thickness"].values[loaded] < inlet)
+    assert np.all(fr["specific_film_thickness_min"].values
+                  < fr["specific_film_thickness_min_inlet"].values)
+    assert fr["specific_film_thickness_min"].attrs["film_temperature"] == (
+        "bulk temperature theta_M")
+    assert fr["specific_film_thickness_min_inlet"].attrs["film_temperature"] == (
+        "oil inlet temperature")
+    assert "theta_M" in fr["specific_film_thickness"].attrs["long_name"]
 
 
 def test_every_segment_against_bloks_form_by_hand(ltca, fr):
@@ -452,15 +508,17 @@ def test_netcdf_round_trip(fr, tmp_path):
 
 def test_a_material_without_thermal_data_gives_nan_with_its_reason(ltca):
     """A member material the table has no thermal properties for (here: one it does not
-    know): no flash temperature and no scuffing safety, each saying why; the film and
-    λ_GF do not depend on it."""
+    know): no flash temperature, no bulk temperature θ_M, so no scuffing safety and no
+    λ_GF at θ_M, each saying why; the film at the inlet does not depend on it."""
     odd = efficiency_analysis(ltca.assign_attrs(material_gear="unobtainium"))
     assert np.all(np.isnan(odd["flash_temperature"].values))
     assert odd["flash_temperature"].attrs["comment"].startswith("NaN")
     assert "unobtainium" in odd["flash_temperature"].attrs["comment"]
     assert np.all(np.isnan(odd["scuffing_safety"].values))
     assert odd["scuffing_safety"].attrs["comment"].startswith("NaN")
-    assert np.all(np.isfinite(odd["specific_film_thickness_min"].values))
+    assert np.all(np.isnan(odd["specific_film_thickness_min"].values))
+    assert "theta_M is unknown" in odd["specific_film_thickness"].attrs["comment"]
+    assert np.all(np.isfinite(odd["specific_film_thickness_min_inlet"].values))
 
 
 def test_ltca_run_lines(fr):
