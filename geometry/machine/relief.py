@@ -444,7 +444,8 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
             most = (plain.edge_radius - h.mean) / (h.root - h.mean)
             raise ReliefError(f"relief_start: the root-relief corner at {hc:.4g} mm lies "
                               f"within the blade's edge radius {plain.edge_radius:g} mm; give "
-                              f"relief_start below {most:.3g} (or root_relief = 0)",
+                              f"relief_start <= {math.floor(100 * most) / 100:.2f} (or "
+                              "root_relief = 0)",
                               "relief_start")
         kw.update(toprem_angle=rem(hc, h.root, root_relief), toprem_height=hc)
     return Blade(**{**plain.__dict__, **kw})
