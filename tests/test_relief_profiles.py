@@ -249,7 +249,7 @@ def test_root_relief_corner_in_the_edge_radius_names_relief_start():
     case = _case(DESIGNS / "spiral_bevel_13x39_unrelieved.toml")
     tool, mem = case.pinion.concave, case.pinion
     args = (tool.blade, tool.machine, mem.blank, mem.hand, case.gear.blank)
-    with pytest.raises(ReliefError, match="relief_start: .* <= ") as info:
+    with pytest.raises(ReliefError, match=r"relief_start: .* <= ") as info:
         relieved_blade(*args, tip_relief=0.0, root_relief=0.015, start=0.999)
     assert info.value.field == "relief_start"
     most = float(info.value.args[0].split("relief_start <= ")[1].split(" ")[0])
