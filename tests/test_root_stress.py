@@ -312,6 +312,156 @@ def test_bad_input_is_refused_naming_the_field():
                      mesh_interface=False, root_stress="yes")
 
 
+# ------------------------------------------------- loads the FE model cannot place (issue 60)
+@functools.cache
+def _coast():
+    """The small LTCA of the default case's coast flank at 250 N·m (a fifth of its load on
+    the edges, most of it pinion tip edges) and the coarse models of its working flanks."""
+    case = resolve_case(None)
+    eo = ease_off(case, flank="coast")
+    lt = loaded_tca(case, [250.0], easeoff=eo, options=SMALL, flank="coast")
+    coef = {}
+    for member in ("pinion", "gear"):
+        flank = eo.pinion_flank if member == "pinion" else eo.gear_flank
+        model = build_influence_model(case, member, flank, COARSE, solver="superlu")
+        coef[member] = influence_dataset(model, case, progress=False)
+    return case, eo, lt, coef
+
+
+def test_edge_loads_are_placed_where_they_act():
+    """The default case's coast flank at 250 N·m, whose edge contact refused the root
+    stress before (issue 60: "0.501 mm off the gear's working flank"). A pinion tip edge
+    presses on the gear flank at the foot g of the gear flank's normal through the edge
+    point P (contact.ltca.edges): on the gear the load is placed at g, which lies on the
+    gear's FE flank within 0.02 mm (the FE flank follows the generated one within 5 µm; g
+    is a point of the generated flank), where P lies up to ~0.8 mm off; on the pinion at
+    P, on the tip edge of its FE tooth (within 0.2 mm of the flank, the profile fraction
+    at the grid's tip within the grid tolerance). For curve segments the gear's point is
+    the contact point itself (the rotation of segment_position onto the tooth is an
+    identity, 1e-9 mm). Then the root stress of both members is computed, finite and
+    positive, with no load left out."""
+    from contact.ltca.root_stress import (
+        GRID_LIMIT,
+        LEFT_OUT_ATTR,
+        NOT_COMPUTED_ATTR,
+        _onto_tooth,
+    )
+
+    case, eo, lt, coef = _coast()
+    pts = member_contact_points(case, eo, lt)
+    kind = lt["segment_kind"].values.astype(str)
+    loaded = np.nan_to_num(lt["force"].values[0]) > 0
+    edge = loaded & (kind == "pinion_edge")[None, None, :]
+    assert edge.sum() >= 5  # the case's point: pinion tip edges carry load
+    fp = locate_flank_points(coef["gear"], pts["gear"][edge], strict=False)
+    assert np.abs(fp.distance).max() < 0.02
+    # without segment_kind the gear takes the contact point P itself, off its flank
+    p_gear = member_contact_points(case, eo, lt.drop_vars("segment_kind"))["gear"]
+    at_p = locate_flank_points(coef["gear"], p_gear[edge], strict=False)
+    assert np.abs(at_p.distance).max() > 0.1
+    curve = loaded & (kind == "curve")[None, None, :]
+    g = lt["segment_position"].transpose("roll", "pair", "segment", "xyz").values
+    np.testing.assert_allclose(
+        _onto_tooth(g, p_gear, 2 * np.pi / case.member("gear").blank.teeth)[curve],
+        p_gear[curve], atol=1e-9)
+    fpp = locate_flank_points(coef["pinion"], pts["pinion"][edge], strict=False)
+    assert np.abs(fpp.distance).max() < 0.2
+    v_tip = coef["pinion"]["v"].values[-1]
+    assert np.all(np.abs(fpp.v - v_tip) < GRID_LIMIT)
+    rs = root_stress(case, eo, lt, coefficients=coef)
+    assert np.all(rs["root_stress_max"].values > 0)
+    assert NOT_COMPUTED_ATTR not in rs["root_stress_max"].attrs
+    assert LEFT_OUT_ATTR not in rs["root_stress_max"].attrs
+
+
+def _one_torque_more(lt):
+    """The small LTCA with a second torque: the first one's forces doubled (what a
+    torque's loads are does not matter here, only that there are two)."""
+    import xarray as xr
+
+    two = xr.concat([lt, lt.assign_coords(torque=lt["torque"] * 2)], dim="torque",
+                    data_vars="minimal", coords="minimal", compat="override")
+    force = two["force"].values.copy()
+    force[1] *= 2.0
+    return two.assign(force=two["force"].copy(data=force))
+
+
+def test_loads_the_model_cannot_place_give_nan_with_the_reason(monkeypatch):
+    """A member whose loaded segments lie beyond the placement limit at a torque: its root
+    stress there is NaN, the sentence in the ``not_computed`` attribute names the member,
+    the torque and the distance; the other member is computed as without the limit (to
+    the bit: the same superposition), and ``ltca run``'s table and notes show it. The
+    limit is lowered to 0.015 mm, below most of the pinion's loaded points (0.02–0.05 mm
+    off its flank at 250 N·m: its mate differs by the loaded approach) and above all the
+    gear's (≤ 0.001 mm). With a large allowed share the pinion's unplaced loads are left
+    out instead, the stress equal to the superposition of the other loads alone (1e-12)."""
+    import contact.ltca.root_stress as rsm
+    from contact.commands.run import root_stress_rows
+    from contact.ltca.root_stress import root_stress_notes
+
+    case, eo, lt = _analysis()
+    coef = _coefficients()
+    two = _one_torque_more(lt)
+    ref = root_stress(case, eo, two, coefficients=coef)
+    assert np.all(np.isfinite(ref["root_stress"].values))
+    monkeypatch.setattr(rsm, "OFF_FLANK_LIMIT", 0.015)
+    monkeypatch.setattr(rsm, "UNPLACED_SHARE", 1e-3)
+    got = root_stress(case, eo, two, coefficients=coef)
+    text = got["root_stress_max"].attrs[rsm.NOT_COMPUTED_ATTR]
+    pin = got["root_stress_max"].sel(member="pinion").values
+    assert np.all(np.isnan(pin))  # both torques: their pinion points lie 0.02–0.05 mm off
+    for t in (250, 500):
+        assert f"pinion at {t} N m: not computed (NaN)" in text
+    assert "gear at" not in text and "mm off its working flank (at most 0.015 mm)" in text
+    np.testing.assert_array_equal(got["root_stress"].sel(member="gear").values,
+                                  ref["root_stress"].sel(member="gear").values)
+    assert np.all(np.isnan(got["root_stress"].sel(member="pinion").values))
+    rows = root_stress_rows(got)
+    assert [r[1:3] for r in rows] == [("nan", "-"), ("nan", "-")]
+    notes = root_stress_notes(got)
+    assert len(notes) == 2 and all(n.startswith("root stress: pinion at ") for n in notes)
+    # a small share of unplaced load is left out instead: computed, the share stated, and
+    # equal to the superposition of the other loads alone
+    monkeypatch.setattr(rsm, "UNPLACED_SHARE", 1.0)
+    kept = root_stress(case, eo, two, coefficients=coef)
+    assert rsm.NOT_COMPUTED_ATTR not in kept["root_stress_max"].attrs
+    assert "left out" in kept["root_stress_max"].attrs[rsm.LEFT_OUT_ATTR]
+    pts = member_contact_points(case, eo, two)["pinion"]
+    loaded = np.nan_to_num(two["force"].values) > 0
+    off = np.zeros_like(loaded)
+    finite = np.all(np.isfinite(pts), axis=-1)
+    fp = locate_flank_points(coef["pinion"], pts[finite], strict=False)
+    dist = np.zeros(finite.shape)
+    dist[finite] = np.abs(fp.distance)
+    off[:] = dist[None] > 0.015
+    only_on = two.assign(force=two["force"].where(~off, 0.0))
+    monkeypatch.setattr(rsm, "OFF_FLANK_LIMIT", 0.5)
+    direct = root_stress(case, eo, only_on, coefficients=coef)
+    np.testing.assert_allclose(kept["root_stress"].sel(member="pinion").values,
+                               direct["root_stress"].sel(member="pinion").values,
+                               rtol=1e-12, atol=1e-9)
+    assert 0 < off[loaded].mean() < 1  # some, not all, of the pinion's loads left out
+
+
+def test_coefficients_of_another_design_are_refused():
+    """Coefficients whose flank is not where this design's loaded contact lies — the
+    coarse gear model turned by 0.3 pitch, as a design whose teeth are that much thicker —
+    are refused with the member and the reason named, not turned into NaN: the loaded
+    contact curves lie a median ~4 mm off its working flank (at most 0.5 mm)."""
+    case, eo, lt = _analysis()
+    coef = dict(_coefficients())
+    g = coef["gear"]
+    turn = 0.3 * float(g.attrs["pitch"])
+    x = g["flank_position"].values
+    c, s = np.cos(turn), np.sin(turn)
+    turned = np.stack([c * x[..., 0] - s * x[..., 1], s * x[..., 0] + c * x[..., 1],
+                       x[..., 2]], axis=-1)
+    coef["gear"] = g.assign(flank_position=g["flank_position"].copy(data=turned))
+    with pytest.raises(InputError, match=r"the gear's loaded contact lies a median .* "
+                                         r"not of this design"):
+        root_stress(case, eo, lt, coefficients=coef)
+
+
 # ------------------------------------------------------------------ slow: the default case
 @functools.cache
 def _default_analysis():

@@ -18,6 +18,18 @@ above, where a contact load's own stress lies) — (the tension side is the load
 fillet);
 its peak over the mesh cycle, per torque and member, is ``root_stress_max``.
 
+Each load is placed where it acts on the member (:func:`member_contact_points`): a pinion
+tip edge's load on the gear at the foot of the gear flank's normal through the edge point,
+on the pinion at the edge point, on the tip edge of its FE tooth. A loaded segment the FE
+model cannot place — more than :data:`OFF_FLANK_LIMIT` off the working flank of its tooth
+or :data:`GRID_LIMIT` outside the load grid (an edge contact past the model's face, a
+deflection beyond its range) — never ends the analysis: if such segments carry at most
+:data:`UNPLACED_SHARE` of the member's load at that torque they are left out (said in the
+attribute ``left_out``), else the member's root stress at that torque is NaN and the
+attribute ``not_computed`` of ``root_stress`` and ``root_stress_max`` says why (one
+sentence per member and torque, logged as a warning too). Coefficients on which this
+design's loaded contact curves do not lie (of another design) are refused.
+
 Teeth are labelled by the LTCA's tooth-pair offset: tooth k of each member is the one in
 pair k (the segment window of :func:`contact.ltca.segments.segment_geometry` repeats per
 mesh cycle, so pair k is always the same tooth of the member frame at the cycle's roll
@@ -36,6 +48,7 @@ from __future__ import annotations
 
 import logging
 import time
+from typing import NamedTuple
 
 import numpy as np
 import scipy.sparse as sp
@@ -43,19 +56,64 @@ import xarray as xr
 
 from contact.compliance.fe import FEOptions, locate_flank_points
 from contact.compliance.fe.contact_compliance import pair_coefficients
+from contact.compliance.fe.superposition import GRID_TOLERANCE
 from contact.ltca.segments import roll_phases
 from contact.utca import EaseOff
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 from geometry.pair.assembly import case_transforms
 
-__all__ = ["MEMBERS", "coefficients_cached", "member_contact_points", "prepare_coefficients",
-           "root_stress"]
+__all__ = ["DESIGN_LIMIT", "GRID_LIMIT", "LEFT_OUT_ATTR", "MEMBERS", "NOT_COMPUTED_ATTR",
+           "OFF_FLANK_LIMIT", "UNPLACED_SHARE", "Unplaced", "coefficients_cached",
+           "member_contact_points", "prepare_coefficients", "root_stress",
+           "root_stress_notes", "unplaced_reason"]
 
 log = logging.getLogger(__name__)
 
-#: [mm] largest distance of a loaded segment's point from the FE model's working flank
+#: [mm] largest distance (along the circumference) of a loaded segment's point from the
+#: working flank of its tooth in a member's FE model, for its load to be placed there.
+#: Only the point's projection-plane place (z, ρ) enters the hat weights: a point d off
+#: the flank along the circumference is misplaced in (z, ρ) by d n_θ (1 − n_θ²)^½ ≤ d/2
+#: (n_θ the flank normal's circumferential component), at this limit ≤ 0.25 mm, a third of
+#: the smallest load-grid cell of the bundled cases' default models (0.7–1.7 mm up the
+#: profile, 1.3–2.8 mm along the face). Moving *every* loaded point of the default case by
+#: 0.25 mm in ρ changes the peak root stress by ≤ 2.2 % (50–500 N·m, both members), along
+#: the face by ≤ 3.3 %, except the pinion's at 500 N·m, whose peak lies at a face end (12 %):
+#: the error stays within the FE model's 5 % mesh convergence where the points are this
+#: close. Loaded points that belong to the member lie much closer (measured, default case
+#: drive and coast, ISO/TR 10300-30 sample 3 drive, 50–500 N·m): the gear's within 0.001 mm
+#: (they are its flank points; a pinion edge's on the gear is the foot under it,
+#: :func:`member_contact_points`), the pinion's within 0.17 mm (its mate differs by the
+#: loaded approach, tens of µm along the normal, ~2× that along the circumference; a
+#: pinion tip-edge point lies on its member's edge). Beyond it lie only a few gear
+#: tip-edge points on the pinion (sample 3 at 500 N·m: up to 0.65 mm, 0.008 % of the
+#: load), and the loads an FE model cannot place (an edge contact past its face, a
+#: deflection beyond its range)
 OFF_FLANK_LIMIT = 0.5
+#: [1] how far (in face or profile fractions) a loaded point may lie outside the load grid
+#: and take the grid boundary's weights (an end segment of a contact curve, an edge):
+#: :data:`contact.compliance.fe.superposition.GRID_TOLERANCE`, 1.5 mm on a 30 mm face
+GRID_LIMIT = GRID_TOLERANCE
+#: [mm] the median distance from a member's FE flank of the loaded contact-curve points
+#: above which the coefficients are refused as not of this design (an error, not NaN):
+#: those points are the gear's flank points (≤ 0.001 mm off its FE flank) and their
+#: pinion mates (≤ 0.17 mm, the loaded approach), while another design's flank lies
+#: millimetres away (a tenth of a pitch is 1.3 mm on the default gear)
+DESIGN_LIMIT = 1.0
+#: [1] the largest share of a member's load at one torque (over all rolls) that loaded
+#: segments the FE model cannot place may carry and be left out, the rest superposed (the
+#: share stored: :data:`LEFT_OUT_ATTR`): leaving out a load share s lowers no fillet
+#: stress by more than s times the ratio of the largest unit-load stress to the loads'
+#: mean, ~3 on the default case, so ≤ 0.3 %. A larger share: the member's root stress at
+#: that torque is NaN, the reason stored (:data:`NOT_COMPUTED_ATTR`)
+UNPLACED_SHARE = 1e-3
+
+#: the attribute of ``root_stress`` and ``root_stress_max`` that says, one sentence per
+#: member and torque, why a torque's root stress is NaN (absent where all were computed)
+NOT_COMPUTED_ATTR = "not_computed"
+#: the attribute that says, one sentence per member and torque, which loads (at most
+#: :data:`UNPLACED_SHARE` of them) the FE model could not place and left out
+LEFT_OUT_ATTR = "left_out"
 
 #: rows (pair, distinct loads) whose fillet stresses are superposed and reduced at once
 ROW_BLOCK = 32
@@ -160,6 +218,18 @@ def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str,
     Raises
     ------
     InputError — ``ltca`` lacks ``contact_point``.
+
+    Notes
+    -----
+    ``contact_point`` is where the load acts on the member whose flank carries it: the
+    gear's flank point on a contact curve, the gear's edge point x of a gear edge (on the
+    pinion flank), and the pinion's edge point P of a pinion edge
+    (:mod:`contact.ltca.edges`). A pinion edge presses on the gear flank at the foot g of
+    the gear flank's normal through P, not at P (up to ~0.8 mm away along the
+    circumference, measured on the default case's coast flank at 250 N·m): the gear's
+    point of such a segment is g (``segment_position``, on the reference gear tooth),
+    turned by whole gear pitches onto P's tooth — the tip edge of the pinion's FE tooth
+    takes P, the gear's FE flank takes g.
     """
     if "contact_point" not in ltca.variables:
         raise InputError("ltca: lacks contact_point (not an /ltca dataset)")
@@ -172,7 +242,33 @@ def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str,
         # r_member = Rᵀ (r_pair − t), per roll: (r − t)ᵀ R as one batched product
         d = (p - shift[:, None, None, :]).reshape(p.shape[0], -1, 3)
         out[name] = np.matmul(d, rot).reshape(p.shape)
+    edge = _pinion_edges(ltca)
+    if edge is not None and edge.any():
+        g = ltca["segment_position"].transpose("roll", "pair", "segment", "xyz").values
+        out["gear"] = np.where(edge[None, None, :, None],
+                               _onto_tooth(g, out["gear"],
+                                           2 * np.pi / case.member("gear").blank.teeth),
+                               out["gear"])
     return out
+
+
+def _pinion_edges(ltca: xr.Dataset) -> np.ndarray | None:
+    """(S,) bool: the segments that are pinion edges (``segment_kind``), or None where the
+    dataset does not say (no ``segment_kind`` or ``segment_position``)."""
+    if "segment_kind" not in ltca.variables or "segment_position" not in ltca.variables:
+        return None
+    return np.asarray(ltca["segment_kind"].values).astype(str) == "pinion_edge"
+
+
+def _onto_tooth(ref: np.ndarray, near: np.ndarray, pitch: float) -> np.ndarray:
+    """Points ``ref`` (..., 3) [mm] of a member's reference tooth turned about its axis (z)
+    by the whole pitches [rad] that bring them nearest to the points ``near`` (..., 3)."""
+    turn = pitch * np.rint((np.arctan2(near[..., 1], near[..., 0])
+                            - np.arctan2(ref[..., 1], ref[..., 0])) / pitch)
+    turn = np.nan_to_num(turn)
+    c, s = np.cos(turn), np.sin(turn)
+    return np.stack([c * ref[..., 0] - s * ref[..., 1], s * ref[..., 0] + c * ref[..., 1],
+                     ref[..., 2]], axis=-1)
 
 
 def _pair_teeth(coef: xr.Dataset, pts: np.ndarray, pairs: np.ndarray) -> np.ndarray:
@@ -215,19 +311,69 @@ def _unique_rows(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return a[row], inverse
 
 
+class Unplaced(NamedTuple):
+    """The loaded segments of one torque that a member's FE model cannot place.
+
+    segments : int — how many; share : float — [1] their share of the member's load at
+    that torque (the sum of their forces over all forces, all rolls); distance : float —
+    [mm] the largest distance of one from the working flank of its tooth; outside : float —
+    [1] the largest face or profile fraction by which one lies outside the load grid;
+    kinds : tuple of str — their ``segment_kind`` (``"curve"``, ``"gear_tip"`` …)
+    """
+
+    segments: int
+    share: float
+    distance: float
+    outside: float
+    kinds: tuple
+
+
+def _grid_excess(coef: xr.Dataset, u: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """[1] how far points at fractions (u, v) lie outside the coefficients' load grid (the
+    larger of the face and the profile excess; 0 inside)."""
+    gu, gv = coef["u"].values, coef["v"].values
+    return np.maximum.reduce([gu[0] - u, u - gu[-1], gv[0] - v, v - gv[-1],
+                              np.zeros_like(u)])
+
+
+def _check_design(coef: xr.Dataset, distance: np.ndarray, excess: np.ndarray,
+                  curve: np.ndarray) -> None:
+    """Refuse coefficients that are not of the analysed design: the loaded contact-curve
+    segments (``curve``, all loaded segments where none is a curve's), which lie on the
+    member's flank and inside the load grid for the design the coefficients are of, lie
+    more than :data:`DESIGN_LIMIT` off it or :data:`GRID_LIMIT` outside it at their
+    median."""
+    sel = curve if curve.any() else np.ones_like(curve)
+    d, e = float(np.median(np.abs(distance[sel]))), float(np.median(excess[sel]))
+    if d > DESIGN_LIMIT or e > GRID_LIMIT:
+        member = coef.attrs.get("member", "member")
+        raise InputError(
+            f"coefficients: the {member}'s loaded contact lies a median {d:.3g} mm off its "
+            f"working flank ({e:.3g} outside the load grid) in the FE model of case "
+            f"{coef.attrs.get('case', '?')!r} (at most {DESIGN_LIMIT:g} mm, {GRID_LIMIT:g}): "
+            "the coefficients are not of this design")
+
+
 def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
-                   pairs: np.ndarray) -> np.ndarray:
+                   pairs: np.ndarray, kinds: np.ndarray | None = None
+                   ) -> tuple[np.ndarray, dict[int, Unplaced]]:
     """(NT, J, K, station) [MPa] root stress of one member: forces (NT, J, K, S) [N],
-    points (J, K, S, 3) [mm] in its frame.
+    points (J, K, S, 3) [mm] in its frame, segment kinds (S,) (default all curves); and
+    the torques (their index) whose loaded segments the FE model cannot place, with what
+    it could not place: their stress is NaN.
 
     The points are located on the flank once for all torques; each (torque, roll)'s
     forces become hat loads per loaded tooth, the distinct ones kept once (rolls whole
     mesh cycles apart); one sparse product of the (pair, distinct loads) rows with the
     coefficients S[a, d] gives every pair's fillet stress tensors, reduced block by block
     to the largest maximum principal stress over the root points (docs/fe.md, "Root
-    stress in the analysis", for the cost).
+    stress in the analysis", for the cost). A loaded segment more than
+    :data:`OFF_FLANK_LIMIT` off the flank or :data:`GRID_LIMIT` outside the load grid
+    makes its torque's stress NaN; coefficients on which the loaded curves themselves do
+    not lie are refused (:func:`_check_design`).
     """
-    nt, nj, nk, _ = force.shape
+    nt, nj, nk, ns = force.shape
+    kinds = np.full(ns, "curve") if kinds is None else np.asarray(kinds).astype(str)
     # the variable, not a DataArray: its many coordinates cost more than the transpose
     s = coef.variables["fillet_stress"].transpose("load_u", "load_v", "tooth", "side",
                                                   "station", "arc", "component")
@@ -244,18 +390,32 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
     t, j, k, m = np.nonzero(f > 0)  # the loaded segments of every torque
     out = np.zeros((nt, nj, nk, s.sizes["station"]))
     if not t.size:
-        return out
+        return out, {}
     p = point[j, k, m]
     if np.any(p < 0):
         raise InputError("ltca: a loaded segment has no contact point")
-    # the contact point is the gear's; the pinion's mate differs by the separation (and
-    # an edge segment's by its rounding), and edge segments lie on the flank's boundary:
-    # located leniently, then checked against a looser bound than a flank point's
-    worst = float(np.max(np.abs(fp.distance[p])))
-    if worst > OFF_FLANK_LIMIT:
-        raise InputError(f"ltca: a loaded segment lies {worst:.3g} mm off the "
-                         f"{coef.attrs['member']}'s working flank in the FE model (at most "
-                         f"{OFF_FLANK_LIMIT} mm): the coefficients are not of this design")
+    # the contact points are where the load acts on the member whose flank carries it
+    # (member_contact_points): the mate's differs by the loaded approach, an edge's lies
+    # on the flank's boundary; located leniently, then checked (OFF_FLANK_LIMIT)
+    dist = np.abs(fp.distance[p])
+    excess = _grid_excess(coef, fp.u[p], fp.v[p])
+    _check_design(coef, dist, excess, kinds[m] == "curve")
+    bad = (dist > OFF_FLANK_LIMIT) | (excess > GRID_LIMIT)
+    unplaced: dict[int, Unplaced] = {}
+    for ti in np.unique(t[bad]):
+        sel = bad & (t == ti)
+        unplaced[int(ti)] = Unplaced(int(sel.sum()),
+                                     float(f[t[sel], j[sel], k[sel], m[sel]].sum()
+                                           / f[ti].sum()),
+                                     float(dist[sel].max()), float(excess[sel].max()),
+                                     tuple(sorted(set(kinds[m[sel]]))))
+    # a torque's few unplaced loads are left out; with more, its stress is NaN
+    nan_t = [ti for ti, u in unplaced.items() if u.share > UNPLACED_SHARE]
+    keep = ~(bad | np.isin(t, nan_t))
+    t, j, k, m, p = t[keep], j[keep], k[keep], m[keep], p[keep]
+    out[nan_t] = np.nan
+    if not t.size:
+        return out, unplaced
     # hat loads [N] per (torque, roll, loaded tooth of the member frame, grid node)
     teeth = np.unique(fp.tooth[p])
     rows = (t * nj + j) * teeth.size + np.searchsorted(teeth, fp.tooth[p])
@@ -293,8 +453,54 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
         # the largest over the sides and the fillet arc
         smax[reached[block]] = np.where(root, _max_principal(tensor[block]),
                                         -np.inf).max(axis=(1, 3))
-    out[:] = smax.reshape(nk, nu, -1)[:, inverse].swapaxes(0, 1).reshape(out.shape)
-    return out
+    done = np.ones(nt, bool)
+    done[nan_t] = False
+    out[done] = smax.reshape(nk, nu, -1)[:, inverse].swapaxes(0, 1).reshape(
+        -1, nj, nk, out.shape[-1])[done]
+    return out, unplaced
+
+
+def unplaced_reason(member: str, torque: float, unplaced: Unplaced) -> str:
+    """One sentence: which loads of ``member`` at ``torque`` [N·m] its FE model could not
+    place, and whether its root stress there is NaN (their share above
+    :data:`UNPLACED_SHARE`) or computed without them."""
+    where = []
+    if unplaced.distance > OFF_FLANK_LIMIT:
+        where.append(f"up to {unplaced.distance:.3g} mm off its working flank (at most "
+                     f"{OFF_FLANK_LIMIT:g} mm)")
+    if unplaced.outside > GRID_LIMIT:
+        where.append(f"up to {unplaced.outside:.3g} of the face or depth outside the load "
+                     f"grid (at most {GRID_LIMIT:g})")
+    n = unplaced.segments
+    what = (f"{n} loaded segment{'s' if n != 1 else ''} ({', '.join(unplaced.kinds)}; "
+            f"{100 * unplaced.share:.2g} % of the load over the mesh cycle) lie "
+            f"{' and '.join(where)} in the FE model, which cannot place their load")
+    if unplaced.share > UNPLACED_SHARE:
+        return f"{member} at {torque:g} N m: not computed (NaN): {what}."
+    return (f"{member} at {torque:g} N m: {what}; left out (at most "
+            f"{100 * UNPLACED_SHARE:g} % of the load may be).")
+
+
+def root_stress_notes(ltca: xr.Dataset) -> list[str]:
+    """Why a member's root stress at a torque is NaN, and which loads its FE model could
+    not place and left out: the lines of the ``not_computed`` and ``left_out`` attributes of
+    ``root_stress_max`` (:func:`root_stress`), each prefixed ``"root stress: "``, as
+    ``ltca run`` prints them under its table.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset — ``/ltca`` with ``root_stress_max``
+
+    Returns
+    -------
+    list of str — one sentence per member and torque; empty when every value was computed
+        from every load (or the dataset has no root stress)
+    """
+    if "root_stress_max" not in ltca.variables:
+        return []
+    attrs = ltca["root_stress_max"].attrs
+    return [f"root stress: {line}" for attr in (NOT_COMPUTED_ATTR, LEFT_OUT_ATTR)
+            for line in str(attrs.get(attr, "")).splitlines() if line]
 
 
 def root_points(coef: xr.Dataset) -> np.ndarray:
@@ -353,13 +559,18 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         station; ``root_stress_max`` [MPa] over (torque, member): its peak over the mesh
         cycles and teeth; coordinates ``member`` ("pinion", "gear"), ``tooth`` (the
         tooth-pair offset), ``fillet_point`` and ``fillet_u`` (member, fillet_point) [1]
-        the station's lengthwise fraction of the fillet.
+        the station's lengthwise fraction of the fillet. NaN for a member and torque whose
+        loaded segments the FE model cannot place (beyond :data:`OFF_FLANK_LIMIT` or
+        :data:`GRID_LIMIT`, carrying more than :data:`UNPLACED_SHARE` of its load); the
+        attributes ``not_computed`` (:data:`NOT_COMPUTED_ATTR`) and ``left_out``
+        (:data:`LEFT_OUT_ATTR`) of both variables say, one line per member and torque,
+        why a value is NaN and which few loads were left out (absent when none).
 
     Raises
     ------
-    InputError — ``ltca`` lacks a variable; a loaded segment's point lies off the FE
-        model's load grid or working flank (:func:`contact.compliance.fe.
-        locate_flank_points`); bad ``options``.
+    InputError — ``ltca`` lacks a variable; coefficients of another design (the loaded
+        contact curves lie a median beyond :data:`DESIGN_LIMIT` off the FE flank or
+        :data:`GRID_LIMIT` outside its load grid); bad ``options``.
 
     Notes
     -----
@@ -378,13 +589,26 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
     pts = member_contact_points(case, easeoff, ltca)
     force = ltca["force"].transpose("torque", "roll", "pair", "segment").values
     pairs = np.asarray(ltca["pair"].values, int)
-    stress = np.stack([_member_stress(coef[m], pts[m], force, pairs) for m in MEMBERS], axis=2)
+    kinds = ltca["segment_kind"].values if "segment_kind" in ltca.variables else None
+    torques = np.asarray(ltca["torque"].values, float)
+    parts, notes, left = [], [], []
+    for m in MEMBERS:
+        st, unplaced = _member_stress(coef[m], pts[m], force, pairs, kinds)
+        parts.append(st)
+        for i, u in sorted(unplaced.items()):
+            (notes if u.share > UNPLACED_SHARE else left).append(
+                unplaced_reason(m, torques[i], u))
+    stress = np.stack(parts, axis=2)
+    for note in notes:
+        log.warning("root stress: %s", note)
+    for note in left:
+        log.info("root stress: %s", note)
     n_st = {coef[m].sizes["station"] for m in MEMBERS}
     if len(n_st) != 1:
         raise InputError("coefficients: the members' FE models have different numbers of "
                          f"face stations {sorted(n_st)}")
     dims = ("torque", "roll", "member", "tooth", "fillet_point")
-    peak = np.max(stress, axis=(1, 3, 4))
+    peak = np.max(stress, axis=(1, 3, 4))  # NaN where a torque's loads were not placed
     ds = xr.Dataset({
         "root_stress": data_var(dims, stress, "MPa",
                                 "tooth-root stress along the face width: largest maximum "
@@ -403,6 +627,10 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
                      {"units": "1", "long_name": "lengthwise fraction of the fillet face "
                                                  "station (toe 0, heel 1)"}),
     })
+    for attr, text in ((NOT_COMPUTED_ATTR, notes), (LEFT_OUT_ATTR, left)):
+        if text:  # why a torque's root stress is NaN, which loads were left out: in the file
+            for name in ("root_stress", "root_stress_max"):
+                ds[name].attrs[attr] = "\n".join(text)
     ds["root_stress"].attrs["fe_cache_keys"] = " ".join(
         str(coef[m].attrs.get("cache_key", "")) for m in MEMBERS)
     ds["root_stress"].attrs["source"] = ("superposition of FE fillet-stress influence "
