@@ -293,6 +293,10 @@ def run(args: argparse.Namespace) -> int:
               "superposition) [MPa], at the face station u (toe 0, heel 1):")
         print(tabulate(root_stress_rows(lt), headers=["T_p [N m]", "pinion", "u", "gear",
                                                       "u"], tablefmt="github"))
+        from contact.ltca.root_stress import root_stress_notes
+
+        for line in root_stress_notes(lt):  # NaN torques and loads left out, and why
+            print(line)
         print("the FE model's peak fillet stress is mesh-converged within 5 % (docs/fe.md, "
               "Mesh convergence)")
     for line in rating_lines(tree, rating_why):
@@ -480,6 +484,9 @@ def root_stress_rows(ltca) -> list[tuple[str, ...]]:
         cells = [f"{t:g}"]
         for member in ("pinion", "gear"):
             face = rs.isel(torque=i).sel(member=member).max(("roll", "tooth"))
+            if not bool(face.notnull().any()):  # not computed: the notes say why
+                cells += ["nan", "-"]
+                continue
             k = int(face.argmax("fillet_point", skipna=True))
             cells += [f"{float(ltca['root_stress_max'].isel(torque=i).sel(member=member)):.0f}",
                       f"{float(face['fillet_u'].values[k]):.2f}"]
