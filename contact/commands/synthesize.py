@@ -6,7 +6,7 @@ import argparse
 import math
 from pathlib import Path
 
-from contact.commands.options import output_option
+from contact.commands.options import output_option, progress_option
 from contact.commands.output_paths import check_output_file
 from geometry.core.atomic_files import atomic_path
 
@@ -35,6 +35,7 @@ def register(sub) -> None:
                         + ", ".join(bundled_basic_names()) + "); default the default case's, "
                         "kolivand2009_fm_11x41_reference")
     output_option(p, default="<name>.toml, the design's name", what="case file (TOML)")
+    progress_option(p)
     p.set_defaults(func=run_synthesize)
 
 
@@ -87,20 +88,51 @@ def write_text_atomic(path: Path, text: str) -> Path:
     return path
 
 
+class StepLines:
+    """Plain progress lines of a command made of named steps, on standard error:
+    ``synthesize: step 3/10, pinion concave: generating tools (12 s)`` — complete lines,
+    readable in a log file as on a terminal (the studies' ``"lines"`` mode,
+    :mod:`contact.study.progress`)."""
+
+    def __init__(self, desc: str, total: int) -> None:
+        import time
+
+        self.desc, self.total, self.done = desc, total, 0
+        self.clock = time.monotonic
+        self.start = self.clock()
+
+    def __call__(self, step: str) -> None:
+        import sys
+
+        self.done += 1
+        elapsed = round(self.clock() - self.start)
+        took = f"{elapsed} s" if elapsed < 60 else f"{elapsed // 60} min {elapsed % 60} s"
+        print(f"{self.desc}: step {self.done}/{self.total}, {step} ({took})",
+              file=sys.stderr, flush=True)
+
+
 def run_synthesize(args: argparse.Namespace) -> int:
+    import dataclasses
     import tomllib
 
+    from contact.rating.capacity import with_design_torque
+    from contact.rating.inputs import RatingInputs
     from geometry.case import case_from_dict
     from geometry.synthesis.basic_design import load_basic
-    from geometry.synthesis.case_synthesis import synthesize
+    from geometry.synthesis.case_synthesis import SYNTHESIS_STEPS, synthesize
 
     source = resolve_basic(args.basic)
     output = args.output or f"{source.stem}.toml"
     check_output_file(output, create_parents=True)
-    basic = load_basic(source)
-    case, report = synthesize(basic)
     shown = (f"cases/basic/{source.name}" if args.basic is None or not Path(args.basic).is_file()
              else Path(args.basic).as_posix())
+    basic = dataclasses.replace(load_basic(source), path=shown)
+    if basic.rating:  # a bad [rating] table refused before the work (rating.<field>)
+        RatingInputs.from_mapping(basic.rating)
+    steps = (StepLines("synthesize", SYNTHESIS_STEPS) if getattr(args, "progress", False)
+             else None)
+    case, report = synthesize(basic, progress=steps)
+    case, torque, torque_why = with_design_torque(case, basic.options.design_torque)
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
@@ -114,6 +146,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
         print(f"  pinion {flank}: r_p {fs.tools.blade.point_radius:.3f} mm, R_a "
               f"{s.ratio_of_roll:.5f}, S_r {s.radial_setting:.3f} mm, E_m "
               f"{s.blank_offset:.3f} mm, curvature residual {fs.tools.shape_error:.1e} 1/mm")
+    print("  design torque: " + (f"{torque:.4g} N m, {torque_why}" if math.isfinite(torque)
+                                  else torque_why))
     print(f"wrote {path}")
     if basic.optimize:
         print(f"note: {shown} carries an [optimize] table: the synthesis alone is written; "

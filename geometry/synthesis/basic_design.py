@@ -35,6 +35,7 @@ import math
 import os
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, replace
+from types import MappingProxyType
 from typing import Any
 
 from scipy.optimize import least_squares
@@ -47,6 +48,7 @@ from geometry.iso23509.blank import BlankGeometry, blank_geometry
 from geometry.iso23509.pitch_cone import BevelGearDesign
 
 __all__ = [
+    "DEFAULT_RATING",
     "FLANK_OPTION_UNITS",
     "PROCESSES",
     "TARGETS",
@@ -73,6 +75,26 @@ TARGETS: dict[str, tuple[str, Callable[[BlankGeometry], float]]] = {
     "de2": ("mm", lambda g: g.gear.de),
     "dm2": ("mm", lambda g: g.gear.dm),
 }
+#: the ``[rating]`` table of a synthesised case whose basic file gives none (ISO 10300
+#: inputs, :class:`contact.rating.inputs.RatingInputs`; its ``source`` states each value)
+DEFAULT_RATING: Mapping[str, Any] = MappingProxyType({
+    "application_factor": 1.0,
+    "mounting": "one",
+    "accuracy_grade": [6, 8],
+    "source": (
+        "Stated defaults of ltca synthesize (the basic file gives no [rating] table; "
+        "docs/synthesis.md, 'The written case'): K_A = 1.0, ISO 10300-1:2014's application "
+        "factor of a uniform driving and driven machine, so that the rating and the LTCA "
+        "carry the same nominal torque; mounting 'one' (one member cantilever-mounted), "
+        "the automotive axle's overhung pinion with a straddle-mounted ring gear, as "
+        "ISO/TR 10300-30:2024's samples; ISO 17485 accuracy grades 6 (pinion) and 8 "
+        "(gear), the grades of the TR's f_pt (sample 1: 12 and 26 um at its sizes); load "
+        "cycles: long life (Z_NT = Y_NT = 1, the TR's samples); materials: both members "
+        "the case's material (case-carburised steel, geometry/core/data/materials.toml) at "
+        "ISO 6336-5 quality MQ; pattern checked under a light test load, flank/root Rz "
+        "8/16 um, S_H,min 1.0, S_F,min 1.3 (RatingInputs' defaults, docs/rating.md)."),
+})
+
 _ADJUSTABLE = ("de2", "dm2", "b2", "rc0", "beta_m", "theta_a2", "theta_f2", "c_ham")
 _DESIGN_ANGLES = {"Sigma", "beta_m", "alpha_dD", "alpha_dC", "theta_a2", "theta_f2"}
 
@@ -239,9 +261,14 @@ class BasicDesign:
         The file's ``[optimize]`` table (read by ``ltca optimize`` when it re-synthesises
         this design; schema of :func:`contact.optimize.problem_from_table`), unvalidated
         here; empty if absent.
+    path : str
+        The basic file as the user named it (set by :func:`load_basic`; ``ltca
+        synthesize`` passes the name it shows), cited first in the case ``source``; empty
+        for a design built from a mapping.
     rating : dict
         The file's ``[rating]`` table (ISO 10300 inputs, schema of
-        :class:`contact.rating.inputs.RatingInputs`), copied into the synthesised case;
+        :class:`contact.rating.inputs.RatingInputs`), copied into the synthesised case
+        (else :data:`DEFAULT_RATING`);
         validated by ``ltca synthesize``, not here; empty if absent.
     development : dict
         The file's ``[development]`` table: the development-bearing targets of
@@ -259,6 +286,7 @@ class BasicDesign:
     operating: Mapping[str, Any] = field(default_factory=dict)
     optimize: Mapping[str, Any] = field(default_factory=dict)
     rating: Mapping[str, Any] = field(default_factory=dict)
+    path: str = ""
     development: Mapping[str, Any] = field(default_factory=dict)
 
     def blank(self) -> BlankGeometry:
@@ -561,4 +589,5 @@ def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign
     ModelUnavailableError
         As :func:`basic_from_dict`.
     """
-    return basic_from_dict(read_toml(path, "basic file"), fit=fit)
+    return replace(basic_from_dict(read_toml(path, "basic file"), fit=fit),
+                   path=os.fspath(path))

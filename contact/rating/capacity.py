@@ -1,0 +1,186 @@
+"""The torque capacity of a pair by ISO 10300: the design torque of a synthesis.
+
+:func:`capacity_torque` inverts the ISO 10300 Method B1 rating (:func:`contact.rating.
+rating.iso10300_rating`) for the pinion torque at which the long-life safety factors reach
+their minimum: S_H = S_H,min (pitting, ISO 10300-2) or S_F = S_F,min (tooth root, ISO
+10300-3), whichever comes first. :func:`design_torque` is the torque a synthesised design
+is developed for (``[synthesis] design_torque`` of a basic file, ``docs/synthesis.md``):
+the case's ``[rating] design_torque`` if given, else that capacity — the most the pair
+carries at long life, so the torque its bearing must hold without edge contact.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import dataclasses
+import json
+import logging
+import math
+from collections.abc import Mapping
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+from scipy.optimize import brentq
+
+from geometry.core.errors import InputError
+
+__all__ = ["capacity_torque", "design_torque", "with_design_torque"]
+
+#: the torques [N·m] the capacity is bracketed on (log-spaced, one rating call)
+_GRID = np.geomspace(1e-2, 1e6, 161)
+
+
+def _long_life_safety(case, torque: Any, speed: float,
+                      rating: Mapping[str, Any] | None) -> np.ndarray:
+    """min over members of S_H/(Z_NT S_H,min) and S_F/(Y_NT S_F,min) at each torque."""
+    from contact.rating.rating import iso10300_rating
+
+    ds = iso10300_rating(case, torque=np.atleast_1d(torque), speed=speed, rating=rating)
+    s_h = ds["S_H"] / ds["Z_NT"] / ds["S_Hmin"]
+    s_f = ds["S_F"] / ds["Y_NT"] / ds["S_Fmin"]
+    return np.minimum(s_h.min("member"), s_f.min("member")).values
+
+
+def capacity_torque(case, speed: float | None = None,
+                    rating: Mapping[str, Any] | None = None) -> float:
+    """Pinion torque at which the pair's long-life ISO 10300 safety reaches its minimum.
+
+    Parameters
+    ----------
+    case : geometry.case.Case, str or path-like
+        With ``[design]`` and ``[rating]`` tables (:func:`contact.rating.rating.
+        iso10300_rating`).
+    speed : float — [rpm], optional
+        Pinion speed; default the case's ``[operating] pinion_speed``, or 1500 rpm (the
+        toolkit's default speed) where the case runs no efficiency stage (speed 0).
+    rating : mapping, optional
+        Replaces the case's ``[rating]`` table.
+
+    Returns
+    -------
+    float — [N·m]
+        The smallest pinion torque at which S_H/Z_NT = S_H,min or S_F/Y_NT = S_F,min for
+        pinion or gear (ISO 10300-2:2014 and -3:2014 cl. 6, Method B1; the life factors
+        divided out: the safety at long life, whatever ``load_cycles`` says), to 1e-6
+        relative.
+
+    Raises
+    ------
+    InputError
+        No or a bad ``[design]``/``[rating]`` table (named), or no torque in
+        [0.01, 1e6] N·m at which the safety crosses its minimum.
+
+    Notes
+    -----
+    σ_H grows as √T and σ_F as T (times K_v(T), K_Hβ …): the safety falls monotonically
+    with the torque. Bracketed on a log grid of 161 torques (one vectorised rating), then
+    Brent's method on log T.
+    """
+    from contact.catalogue import resolve_case
+    from geometry.core.operating_defaults import OPERATING_DEFAULTS
+
+    case = resolve_case(case)
+    if speed is None:
+        speed = case.operating.pinion_speed or OPERATING_DEFAULTS["pinion_speed"]
+    with _quiet():
+        return _capacity(case, speed, rating)
+
+
+@contextlib.contextmanager
+def _quiet():
+    """The rating's warnings (K_v in the resonance range …) silenced: they concern the
+    bracketing grid's torques, not the user's (``ltca run`` and ``ltca rate`` give them)."""
+    logger = logging.getLogger("contact.rating")
+    level = logger.level
+    logger.setLevel(logging.ERROR)
+    try:
+        yield
+    finally:
+        logger.setLevel(level)
+
+
+def _capacity(case, speed: float, rating: Mapping[str, Any] | None) -> float:
+    f = _long_life_safety(case, _GRID, speed, rating) - 1.0
+    below = np.flatnonzero(f <= 0.0)
+    if below.size == 0 or below[0] == 0:
+        raise InputError(f"design_torque: the ISO 10300 long-life safety of {case.name!r} "
+                         f"does not reach its minimum between {_GRID[0]:g} and "
+                         f"{_GRID[-1]:g} N m; give [synthesis] design_torque [N m]")
+    k = int(below[0])
+
+    def g(log_t: float) -> float:
+        return float(_long_life_safety(case, math.exp(log_t), speed, rating)[0]) - 1.0
+
+    return math.exp(brentq(g, math.log(_GRID[k - 1]), math.log(_GRID[k]), xtol=1e-7))
+
+
+def design_torque(case, speed: float | None = None) -> float:
+    """The pinion torque [N·m] a design is developed and rated for.
+
+    Parameters
+    ----------
+    case : geometry.case.Case, str or path-like
+    speed : float — [rpm], optional
+        As :func:`capacity_torque`.
+
+    Returns
+    -------
+    float — [N·m]
+        The case's ``[rating] design_torque`` if it gives one, else
+        :func:`capacity_torque` (S_H = S_H,min or S_F = S_F,min at long life).
+
+    Raises
+    ------
+    InputError
+        As :func:`capacity_torque`.
+    """
+    from contact.catalogue import resolve_case
+
+    case = resolve_case(case)
+    table = case.extra.get("rating")
+    if isinstance(table, Mapping) and table.get("design_torque") is not None:
+        return float(table["design_torque"])
+    return capacity_torque(case, speed)
+
+
+def with_design_torque(case, torque: float | None = None):
+    """The case with its ``[rating] design_torque`` set: the torque its synthesis developed
+    the bearing for.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        With ``[design]`` and ``[rating]`` tables (a synthesised case has them).
+    torque : float — [N·m], optional
+        ``[synthesis] design_torque`` of the basic file; default: the case's own
+        ``[rating] design_torque`` if it gives one, else :func:`capacity_torque` (rounded
+        to 4 significant digits).
+
+    Returns
+    -------
+    case : geometry.case.Case
+        ``extra["rating"]`` with ``design_torque`` and a sentence on it appended to its
+        ``source``; the case unchanged where the rating cannot give a torque.
+    torque : float — [N·m]
+        NaN where the rating cannot give one.
+    why : str
+        Where the torque comes from, or why there is none.
+    """
+    table = dict(case.extra.get("rating") or {})
+    if torque is not None:
+        value, why = float(torque), "[synthesis] design_torque of the basic file"
+    elif table.get("design_torque") is not None:
+        return case, float(table["design_torque"]), "[rating] design_torque of the basic file"
+    else:
+        try:
+            value = float(f"{capacity_torque(case):.4g}")
+        except InputError as exc:
+            return case, math.nan, f"none: {exc}"
+        why = ("the ISO 10300 capacity, the pinion torque at which the long-life safety "
+               "reaches S_H,min or S_F,min (contact.rating.capacity)")
+    table["design_torque"] = value
+    table["source"] = (str(table.get("source", "")).rstrip() + f" design_torque {value:g} N m: "
+                       f"{why}.").lstrip()
+    extra = json.loads(json.dumps({**case.extra, "rating": table}))
+    return dataclasses.replace(case, extra=MappingProxyType(extra)), value, why

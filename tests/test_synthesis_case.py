@@ -1,0 +1,136 @@
+"""The case ``ltca synthesize`` writes is complete (issue 60, item 2): the basic file's
+``[design]``, a ``[rating]`` table (the basic file's, else stated defaults) with the
+design torque, provenance naming the user's basic file, progress lines off a terminal.
+
+The design torque's default is the ISO 10300 capacity (:mod:`contact.rating.capacity`);
+it is checked against the structure of ISO 10300-2/-3 rather than against itself:
+σ_H = σ_H0 √(K_A K_v K_Hβ K_Hα) with σ_H0 ∝ √T, and σ_F ∝ T K_v K_Fβ K_Fα, so from any
+torque T the capacity follows in closed form up to the load-dependent factors.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from contact.cli import main as ltca
+from contact.rating.capacity import capacity_torque, design_torque, with_design_torque
+from contact.rating.inputs import RatingInputs
+from contact.rating.rating import iso10300_rating
+from geometry.case import load_case
+from geometry.synthesis.basic_design import DEFAULT_RATING, load_basic
+
+ROOT = Path(__file__).resolve().parents[1]
+BASIC = ROOT / "cases" / "basic" / "kolivand2009_fm_11x41.toml"
+
+
+def test_capacity_inverts_the_pitting_rating():
+    """hypoid_iso23509_s2 (ISO/TR 10300-30 sample 2's rating inputs): pitting governs. From
+    T/2, T_cap = (T/2) S_H(T/2)² K_v(T/2) K_Hα(T/2) / (K_v(T_cap) K_Hα(T_cap)) (σ_H0 ∝ √T,
+    ISO 10300-2 cl. 6), to 1e-6 (Brent's xtol 1e-7 on ln T); bending is not reached."""
+    t_cap = capacity_torque("hypoid_iso23509_s2")
+    ds = iso10300_rating("hypoid_iso23509_s2", torque=[0.5 * t_cap, t_cap])
+    s_h = (ds["S_H"] / ds["Z_NT"] / ds["S_Hmin"]).min("member").values
+    k = (ds["K_v"] * ds["K_Halpha"]).values
+    assert 0.5 * t_cap * s_h[0] ** 2 * k[0] / k[1] == pytest.approx(t_cap, rel=1e-6)
+    s_f = (ds["S_F"] / ds["Y_NT"] / ds["S_Fmin"]).min("member").values
+    assert s_f[1] > 1.0
+
+
+def test_capacity_takes_the_first_limit_reached():
+    """With S_F,min = 3 bending governs: T_cap = T S_F(T)/S_F,min K_v(T) K_Fα(T) / (K_v
+    K_Fα)(T_cap) (σ_F ∝ T, ISO 10300-3 cl. 6), to 1e-6; the pitting safety is still above
+    its minimum there."""
+    table = dict(load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml").extra["rating"])
+    table["min_safety_bending"] = 3.0
+    t_cap = capacity_torque("hypoid_iso23509_s2", rating=table)
+    ds = iso10300_rating("hypoid_iso23509_s2", torque=[0.5 * t_cap, t_cap], rating=table)
+    s_f = (ds["S_F"] / ds["Y_NT"] / ds["S_Fmin"]).min("member").values
+    k = (ds["K_v"] * ds["K_Falpha"]).values
+    assert 0.5 * t_cap * s_f[0] * k[0] / k[1] == pytest.approx(t_cap, rel=1e-6)
+    s_h = (ds["S_H"] / ds["Z_NT"] / ds["S_Hmin"]).min("member").values
+    assert s_h[1] > 1.0
+
+
+def test_design_torque_prefers_the_rating_table():
+    """A case whose ``[rating]`` gives ``design_torque`` (the default case: 250 N m) keeps
+    it; the capacity is only the default."""
+    assert design_torque("kolivand2009_fm_11x41") == 250.0
+    case = load_case(ROOT / "cases" / "kolivand2009_fm_11x41.toml")
+    same, torque, why = with_design_torque(case)
+    assert same is case and torque == 250.0 and "[rating]" in why
+    given, torque, why = with_design_torque(case, 123.0)
+    assert torque == 123.0 and given.extra["rating"]["design_torque"] == 123.0
+    assert "[synthesis] design_torque" in given.extra["rating"]["source"]
+
+
+def test_default_rating_table_is_valid_and_sourced():
+    """The stated defaults are a valid ``[rating]`` table, and their source names each
+    value's origin (K_A, mounting, accuracy grades, load cycles, materials)."""
+    inputs = RatingInputs.from_mapping(DEFAULT_RATING)
+    assert inputs.application_factor == 1.0 and inputs.mounting == "one"
+    assert inputs.accuracy_grade == (6, 8) and inputs.load_cycles is None
+    for word in ("K_A", "mounting", "accuracy grades", "load cycles", "materials"):
+        assert word in DEFAULT_RATING["source"]
+
+
+def _basic_with_rating(tmp_path: Path, rating: dict | None) -> Path:
+    text = BASIC.read_text(encoding="utf-8")
+    if rating is not None:
+        lines = [f"{k} = {v!r}".replace("'", '"') for k, v in rating.items()]
+        text += "\n[rating]\n" + "\n".join(lines) + "\n"
+    path = tmp_path / "my_design.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_synthesised_case_is_rated(tmp_path, capsys):
+    """``ltca synthesize`` of a user's basic file (the default design with its own
+    ``[rating]`` table) writes ``[design]`` = the fitted basic design data, the basic
+    file's ``[rating]`` copied with the design torque added (its capacity), and a source
+    that starts with the user's file; ``ltca rate`` rates the written case; off a terminal
+    the ten steps are plain lines on standard error."""
+    own = {"application_factor": 1.25, "mounting": "both", "accuracy_grade": [5, 7],
+           "source": "my rating inputs"}
+    basic_path = _basic_with_rating(tmp_path, own)
+    out = tmp_path / "my_case.toml"
+    assert ltca(["synthesize", str(basic_path), "-o", str(out)]) == 0
+    cap = capsys.readouterr()
+    assert "synthesize: step 10/10, the case" in cap.err
+    assert "design torque:" in cap.out
+    raw = tomllib.loads(out.read_text(encoding="utf-8"))
+    assert raw["design"] == load_basic(basic_path).design.to_degrees()
+    rating = raw["rating"]
+    for key, value in own.items():
+        if key != "source":
+            assert rating[key] == value
+    assert rating["source"].startswith("my rating inputs")
+    case = load_case(out)
+    assert rating["design_torque"] == pytest.approx(capacity_torque(case), rel=1e-3)
+    assert case.source.startswith(f"Synthesised from the basic design file {basic_path}")
+    assert ltca(["rate", str(out)]) == 0
+
+
+def test_default_rating_goes_into_a_case_without_one():
+    """The API: a basic design without ``[rating]`` gives a case with
+    :data:`DEFAULT_RATING` (the design torque is the command's), rated by ISO 10300."""
+    from geometry.synthesis.case_synthesis import synthesize
+
+    case, _ = synthesize(load_basic(BASIC))
+    assert dict(case.extra["rating"]) == dict(DEFAULT_RATING)
+    assert case.extra["design"] == load_basic(BASIC).design.to_degrees()
+    ds = iso10300_rating(case, torque=[250.0])
+    assert float(ds["S_H"].min()) > 0.0
+
+
+def test_bad_rating_table_is_refused_before_the_work(tmp_path, capsys):
+    """K_A 0.5 in the basic file's [rating]: rc 2 at once, the field named, no file."""
+    basic_path = _basic_with_rating(tmp_path, {"application_factor": 0.5, "mounting": "one",
+                                               "accuracy_grade": 6})
+    out = tmp_path / "never.toml"
+    assert ltca(["synthesize", str(basic_path), "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "application_factor" in err and "synthesize: step" not in err
+    assert not out.exists()
