@@ -263,9 +263,19 @@ def check_torques(torque, field: str = "torque") -> tuple[float, ...]:
     return tuple(check_bound("torque", t, field=field) for t in values)
 
 
-def _check_arguments(case, torque, misalignment, flank, options, **flags) -> None:
-    """Refuse a bad argument of :func:`run_analysis` before any work, in one sentence
-    naming it, what was given and what is accepted (the CLI's refusals, for the API)."""
+def check_analysis_arguments(case, torque, misalignment, flank, options, **flags) -> None:
+    """Refuse a bad argument of :func:`run_analysis` (and of the studies that take the
+    same) before any work, in one sentence naming it, what was given and what is accepted
+    (the CLI's refusals, for the API).
+
+    Raises
+    ------
+    InputError
+        A ``case`` of another type, a bad torque (:func:`check_torques`), a
+        ``misalignment`` that is no Misalignment, a ``flank`` other than ``"drive"``,
+        ``"coast"`` (or a pinion flank name), ``options`` that are no LTCAOptions, a flag
+        that is not a bool.
+    """
     from contact.utca.easeoff import FLANK_ROLES, MATING_FLANK
 
     if not (case is None or isinstance(case, (Case, str, os.PathLike))):
@@ -391,7 +401,7 @@ def run_analysis(
     Seed ch. 2 (geometry, ease-off), ch. 3 (UTCA, LTCA), ch. 4 (deviations), ch. 5
     (efficiency).
     """
-    _check_arguments(case, torque, misalignment, flank, options,
+    check_analysis_arguments(case, torque, misalignment, flank, options,
                      geometry=geometry, progress=progress, theoretical=theoretical,
                      mesh_interface=mesh_interface)
     c = catalogue.resolve_case(case)

@@ -55,7 +55,7 @@ from friction.kolivand2009 import kolivand2009, kolivand2009_validity
 from friction.mixed_ehl import mixed_ehl, mixed_ehl_validity
 from friction.validity import FrictionModelRangeWarning
 from geometry.core.caches import memoised
-from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError, PluginError
 from geometry.core.registries import (
     callable_name,
     check_model_name,
@@ -934,16 +934,53 @@ def _evaluate(model: FrictionModel, inputs: Mapping[str, Any]) -> NDArray[np.flo
     if missing:
         meaning = "; ".join(f"{k} {STANDARD_INPUTS.get(k, '')}" for k in missing)
         raise InputError(f"friction model {model.name!r} needs input(s) {missing} ({meaning})")
-    mu = np.asarray(model.function(**{k: v for k, v in inputs.items() if k in accepted}))
     shapes = [np.shape(v) for k, v in inputs.items() if k in STANDARD_INPUTS]
     try:
-        shape = np.broadcast_shapes(mu.shape, *shapes)
+        shape = np.broadcast_shapes(*shapes)
     except ValueError as exc:
         raise InputError(f"input shapes do not broadcast together: {shapes}") from exc
-    out = np.broadcast_to(mu, shape).astype(float)
+    mu = _called(model, "μ", model.function,
+                 **{k: v for k, v in inputs.items() if k in accepted})
+    try:
+        mu = np.asarray(mu, dtype=float)
+        out = np.broadcast_to(mu, np.broadcast_shapes(mu.shape, shape))
+    except (TypeError, ValueError):
+        out = None
+    if out is None or out.shape != shape:  # a μ per input point, or one for all
+        raise PluginError(f"friction model {model.name!r} returned {_returned(mu)} for inputs "
+                          f"of shape {shape}; a model returns μ [1] as a number or an array "
+                          "of the inputs' shape (docs/extending.md)")
     if not np.all(np.isfinite(out)):  # a guard: every model is written to stay finite
-        raise InputError(f"friction model {model.name!r} produced a non-finite μ for these inputs")
-    return scalar_or_array(out)
+        raise PluginError(f"friction model {model.name!r} returned a non-finite μ "
+                          f"({int(np.sum(~np.isfinite(out)))} of {out.size} values) for these "
+                          "inputs; μ must be finite and >= 0")
+    if np.any(out < 0.0):
+        raise PluginError(f"friction model {model.name!r} returned a negative μ (least "
+                          f"{float(out.min()):.3g}); a sliding friction coefficient is >= 0 "
+                          "(its direction is the sliding velocity's)")
+    return scalar_or_array(out.astype(float))
+
+
+def _returned(value: Any) -> str:
+    """What a plug-in returned, short: type, shape and the first characters."""
+    text = repr(value)
+    text = text if len(text) <= 50 else text[:49] + "…"
+    shape = np.shape(value) if isinstance(value, np.ndarray) else None
+    return f"{type(value).__name__}{'' if shape is None else f' of shape {shape}'} {text}"
+
+
+def _called(model: FrictionModel, what: str, function: Callable[..., Any], **inputs: Any) -> Any:
+    """``function(**inputs)`` of a friction model: an exception of the toolkit's family
+    passes (a bundled model's range check), any other becomes a :class:`PluginError` that
+    names the model, what it was computing and what it raised."""
+    try:
+        return function(**inputs)
+    except LTCAError:
+        raise
+    except Exception as exc:
+        raise PluginError(f"friction model {model.name!r} raised {type(exc).__name__} "
+                          f"computing {what}: {str(exc).splitlines()[0] if str(exc) else ''}"
+                          " (docs/extending.md)") from exc
 
 
 def friction_coefficient(name: FrictionModelLike, **inputs: Any) -> NDArray[np.float64] | float:
@@ -1015,7 +1052,7 @@ def friction_model_validity(name: FrictionModelLike, **inputs: Any) -> NDArray[n
     missing = [k for k in model.required if k not in inputs]
     if missing:
         raise InputError(f"friction model {model.name!r} needs input(s) {missing}")
-    ok = np.asarray(model.validity(**inputs), dtype=bool)
+    ok = np.asarray(_called(model, "its validity", model.validity, **inputs), dtype=bool)
     shapes = [np.shape(v) for k, v in inputs.items() if k in STANDARD_INPUTS]
     try:
         shape = np.broadcast_shapes(ok.shape, *shapes)

@@ -237,7 +237,7 @@ def _uncertified_as_nan(friction: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
         if var.dims == ("torque", "roll"):
             values = np.where(found, var.values, np.nan)
         elif var.dims == ("torque",) and np.issubdtype(var.dtype, np.floating):
-            values = np.where(some, var.values, np.nan)
+            values = np.where(some, np.nan, var.values)
         else:
             continue
         out[name] = var.copy(data=values).assign_attrs(comment=why)

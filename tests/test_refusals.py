@@ -58,7 +58,10 @@ def _refused(argv, capsys, pattern):
 # --------------------------------------------------------------------------- ltca ehl
 @pytest.mark.parametrize(("extra", "pattern"), [
     # a typing slip of 50 for 0.5 GPa: refused with the range, not solved
-    (["--pressure", "50"], r"--pressure: must be in \(0, 6\] \[GPa\], got 50"),
+    (["--pressure", "50"], r"--pressure: must be in \[0.01, 6\] \[GPa\], got 50"),
+    # no gear contact carries 1e-9 GPa: refused at once, not solved for 30 s to a Newton
+    # failure (issue 64); the bound is the table's (geometry.core.bounds)
+    (["--pressure", "1e-9"], r"--pressure: must be in \[0.01, 6\] \[GPa\], got 1e-09"),
     (["--radius", "0"], r"--radius: must be in \[0.01, 5000\] \[mm\]"),
     (["--speed", "250"], r"--speed: must be in \(0, 100\] \[m/s\]"),
     (["--slide-to-roll", "3"], r"--slide-to-roll: must be in \[-2, 2\]"),

@@ -186,4 +186,9 @@ def run(args: argparse.Namespace) -> int:
         for p in plot_efficiency_map(emap, args.plots, progress=not args.no_progress,
                                      prefix=f"{case.name}_{tag}_"):
             print(f"wrote {p}")
+    if int(emap["analysis_status"].max()) > 0:  # a torque without certified contact
+        from contact.errors import AnalysisFailedError
+
+        raise AnalysisFailedError(f"efficiency map {path}: {emap.attrs['analysis_status_reason']}"
+                                  " (its efficiencies are NaN there; analysis_status)")
     return 0

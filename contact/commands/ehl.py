@@ -8,6 +8,7 @@ from pathlib import Path
 
 from contact.commands.options import count, film_model_options
 from contact.commands.output_paths import check_output_file
+from geometry.core.bounds import PHYSICAL_BOUNDS
 
 #: Place in ``ltca --help``.
 ORDER = 60
@@ -57,34 +58,29 @@ def register(sub) -> None:
 
 
 #: [um] the largest RMS roughness of one surface (a rough-turned flank; ground and lapped
-#: flanks are 0.1-1 um)
-MAX_ROUGHNESS = 5.0
+#: flanks are 0.1-1 um): the table of physical bounds' (geometry.core.bounds)
+MAX_ROUGHNESS = PHYSICAL_BOUNDS["roughness"].high
 
 
 def check_inputs(args: argparse.Namespace) -> None:
     """Refuse, before any work, an input outside what the line-contact solvers are valid
-    for, in one line naming the option, the value and the accepted range: the Hertz
-    pressure (0, 6] GPa (:data:`friction.ehl.line_contact.MAX_HERTZ_PRESSURE`), the radius
-    [0.01, 5000] mm, the entraining velocity (0, 100] m/s, the slide-to-roll ratio
-    [-2, 2] (both surfaces moving the oil in), the oil (a bundled name or a valid oil
-    file) and the temperature inside its data's range, the roughness [0, 5] um and the
-    grid's nodes."""
-    from friction.ehl.line_contact import (
-        MAX_ENTRAINING_VELOCITY,
-        MAX_HERTZ_PRESSURE,
-        RADIUS_RANGE,
-        lubricant_of,
-    )
+    for, in one line naming the option, the value and the accepted range — the table of
+    physical bounds (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`): the Hertz pressure
+    [0.01, 6] GPa (below 10 MPa no gear contact carries load, and the solvers ran tens of
+    seconds to a Newton failure there), the radius [0.01, 5000] mm, the entraining
+    velocity (0, 100] m/s, the slide-to-roll ratio [-2, 2] (both surfaces moving the oil
+    in), the roughness [0, 5] um —, the oil (a bundled name or a valid oil file) and the
+    temperature inside its data's range, and the grid's nodes."""
+    from friction.ehl.line_contact import lubricant_of
     from friction.lubricant import temperature_range
+    from geometry.core.bounds import check_bound
     from geometry.core.errors import InputError
     from geometry.core.validation import integer, real
 
-    real("--pressure", args.pressure, unit="GPa", low=0.0, low_open=True,
-         high=MAX_HERTZ_PRESSURE * 1e-3)
-    real("--radius", args.radius, unit="mm", low=RADIUS_RANGE[0], high=RADIUS_RANGE[1])
-    real("--speed", args.speed, unit="m/s", low=0.0, low_open=True,
-         high=MAX_ENTRAINING_VELOCITY)
-    real("--slide-to-roll", args.slide_to_roll, unit="1", low=-2.0, high=2.0)
+    check_bound("hertz_pressure", args.pressure, field="--pressure", scale=1e3, unit="GPa")
+    check_bound("radius", args.radius, field="--radius")
+    check_bound("entraining_velocity", args.speed, field="--speed")
+    check_bound("slide_to_roll", args.slide_to_roll, field="--slide-to-roll")
     try:
         oil = lubricant_of(args.lubricant)
     except InputError as exc:
@@ -92,7 +88,7 @@ def check_inputs(args: argparse.Namespace) -> None:
     lo, hi = temperature_range(oil)
     real("--temperature", args.temperature, unit="degC", low=lo, high=hi)
     for label, rq in zip(("RQ1", "RQ2"), args.roughness, strict=True):
-        real(f"--roughness {label}", rq, unit="um", low=0.0, high=MAX_ROUGHNESS)
+        check_bound("roughness", rq, field=f"--roughness {label}")
     if args.nodes is not None:
         integer("--nodes", args.nodes, low=16, high=16384)
 
@@ -142,9 +138,36 @@ def run(args: argparse.Namespace) -> int:
     path = write_netcdf(ds, Path(args.output), inputs=inputs)
     lam = float(ds.lambda_ratio)
     lam_text = f"lambda {lam:.3g}, " if lam > 0.0 else ""
-    print(f"p_h {args.pressure:g} GPa, w' {load:.1f} N/mm: {lam_text}h_c "
-          f"{float(ds.film_central):.4f} um, h_min {float(ds.film_min):.4f} um, asperity load "
+    print(f"p_h {args.pressure:g} GPa, w' {load:.1f} N/mm: {lam_text}{film_text(ds)}, "
+          f"asperity load "
           f"{float(ds.asperity_load_ratio):.3f}, mu {float(ds.friction_coefficient):.4f} "
           f"(film {float(ds.fluid_friction):.4f}, boundary "
           f"{float(ds.boundary_friction_part):.4f}) -> {path}")
     return 0
+
+
+def film_text(ds) -> str:
+    """The film part of ``ltca ehl``'s summary line: ``h_c … um, h_min … um`` where the
+    surfaces are separated, and where the mean planes of rough surfaces interpenetrate
+    (the asperities interlock: no film separates them, the stochastic model's
+    ``film_central``/``film_min`` are negative) the *separation* of the mean planes, named
+    as such, with the mean gap the oil fills (``mean_gap_central``, ≥ 0): a film thickness
+    is never printed negative (issue 64).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        The line contact's dataset (``film_central``, ``film_min`` [µm]; rough:
+        ``mean_gap_central`` [µm]).
+
+    Returns
+    -------
+    str
+    """
+    hc, hmin = float(ds.film_central), float(ds.film_min)
+    if hmin >= 0.0:
+        return f"h_c {hc:.4f} um, h_min {hmin:.4f} um"
+    gap = (f", mean gap (oil) {float(ds.mean_gap_central):.4f} um at x = 0"
+           if "mean_gap_central" in ds else "")
+    return (f"no film: the mean planes interpenetrate (asperities in contact), separation "
+            f"of the mean planes {hc:.4f} um at x = 0, least {hmin:.4f} um{gap}")

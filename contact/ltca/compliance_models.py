@@ -52,7 +52,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from geometry.core.caches import memoised
-from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, ModelUnavailableError, PluginError
 from geometry.core.registries import (
     callable_name,
     check_model_name,
@@ -90,10 +90,10 @@ Assembler = Callable[[list["ContactSegments"]], list[tuple[np.ndarray, dict[str,
 DEFAULT_COMPLIANCE = "shell"
 
 
-class ComplianceModelError(InputError):
-    """A compliance model returned what its contract (the module docstring) does not allow:
-    the wrong number of matrices, shapes, missing ``info`` entries, values not finite. The
-    message names the model."""
+class ComplianceModelError(PluginError):
+    """A compliance model raised, or returned what its contract (the module docstring) does
+    not allow: the wrong number of matrices, shapes, missing ``info`` entries, values not
+    finite, a diagonal entry <= 0. The message names the model."""
 
 
 @dataclass(frozen=True)

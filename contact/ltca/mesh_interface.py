@@ -230,6 +230,16 @@ def _harmonics(values: np.ndarray, cycles: int, n: int) -> tuple[np.ndarray, np.
     return amp, phase
 
 
+def _nanmean(a: np.ndarray, axis: int, keepdims: bool = False) -> np.ndarray:
+    """``np.nanmean`` that gives NaN for a slice of NaN alone silently (a torque
+    none of whose rolls has a certified solution: the analysis says why, in its status)."""
+    given = ~np.isnan(a)   # as np.nanmean: the same sums, so the same numbers
+    n = given.sum(axis=axis, keepdims=keepdims)
+    total = np.where(given, a, 0.0).sum(axis=axis, keepdims=keepdims)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(n > 0, total / np.maximum(n, 1), np.nan)
+
+
 def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Dataset:
     """The ``/mesh_interface`` dataset of a loaded analysis (module docstring).
 
@@ -300,7 +310,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     opts = _options(ltca)
     cycles = int(opts.get("cycles", 1)) or 1
     n_h = max(1, min(N_HARMONICS, (J // cycles - 1) // 2))
-    e_amp, e_phase = _harmonics(excitation - np.nanmean(excitation, axis=1, keepdims=True),
+    e_amp, e_phase = _harmonics(excitation - _nanmean(excitation, axis=1, keepdims=True),
                                 cycles, n_h)
     k_amp, k_phase = _harmonics(k_mesh, cycles, n_h)
     tr = ("torque", "roll")
@@ -340,7 +350,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
                                       "transmission-error excitation: the loaded "
                                       "transmission error as a displacement along the line "
                                       "of action"),
-            "te_excitation_mean": data_var("torque", np.nanmean(excitation, axis=1), "um",
+            "te_excitation_mean": data_var("torque", _nanmean(excitation, axis=1), "um",
                                            "mean of the transmission-error excitation"),
             "te_excitation_amplitude": data_var(th, e_amp, "um",
                                                 "peak amplitude of the mesh harmonics of the "
@@ -349,7 +359,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
                                             "phase of the mesh harmonics of the "
                                             "transmission-error excitation (cosine, from "
                                             "the first roll position)"),
-            "mesh_stiffness_mean": data_var("torque", np.nanmean(k_mesh, axis=1), "N/um",
+            "mesh_stiffness_mean": data_var("torque", _nanmean(k_mesh, axis=1), "N/um",
                                             "mean effective mesh stiffness over the mesh "
                                             "cycles"),
             "mesh_stiffness_amplitude": data_var(th, k_amp, "N/um",

@@ -38,7 +38,7 @@ from contact.ltca.compliance_models import (
 from contact.ltca.options import LTCAOptions
 from contact.ltca.segments import Segments
 from contact.utca import EaseOff
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, LTCAError
 
 __all__ = ["CompliancePool"]
 
@@ -80,8 +80,28 @@ def _checked(name: str, jobs: list, mats: Any) -> list[tuple[np.ndarray, dict[st
                        f"{p}), ({p}, {p}), ({p}, 2)")
         if not np.all(np.isfinite(c)):
             raise fail("gave a compliance that is not finite")
+        if p and not np.all(np.diag(c) > 0.0):  # a segment that moves against its load
+            raise fail(f"gave a compliance with a diagonal entry <= 0 (least "
+                       f"{float(np.min(np.diag(c))):.3g} mm/N); a segment's own compliance "
+                       "is > 0 (positive strain energy)")
         out.append((c, info))
     return out
+
+
+def _plugin_call(name: str, what: str, function: Any, *args: Any) -> Any:
+    """``function(*args)`` of the compliance model ``name``: an exception of the toolkit's
+    family passes as it is (a bundled model's refusal), any other becomes a
+    :class:`ComplianceModelError` naming the model, the call and what it raised (a user's
+    model that fails at call time, not only at registration; docs/extending.md)."""
+    try:
+        return function(*args)
+    except LTCAError:
+        raise
+    except Exception as exc:
+        text = str(exc).splitlines()[0] if str(exc) else ""
+        raise ComplianceModelError(f"compliance: model {name!r} raised {type(exc).__name__} "
+                                   f"in {what}: {text} (contact.ltca.compliance_models)"
+                                   ) from exc
 
 
 class CompliancePool:
@@ -117,7 +137,13 @@ class CompliancePool:
         self.options = options
         model = get_compliance_model(options.compliance)
         self._model_name = compliance_model_name(model)
-        self._assembler = model.prepare(case, easeoff, options)
+        self._assembler = _plugin_call(self._model_name, "prepare", model.prepare, case,
+                                       easeoff, options)
+        if not callable(self._assembler):
+            raise ComplianceModelError(
+                f"compliance: model {self._model_name!r} prepare returned "
+                f"{type(self._assembler).__name__} {self._assembler!r:.60}, not an assembler "
+                "(a function of the segments of several rolls; contact.ltca.compliance_models)")
         self._masks: dict[int, np.ndarray] = {}  # (K, S) the segments assembled
         self._structural: dict[int, np.ndarray] = {}  # (P, P) [mm/N] without Weber
         self._depth: dict[int, np.ndarray] = {}  # (P, 2) [mm] Weber's depths
@@ -162,7 +188,7 @@ class CompliancePool:
             ))
         fixed = self.options.separation_limit
         try:
-            mats = self._assembler(batch)
+            mats = _plugin_call(self._model_name, "its assembler", self._assembler, batch)
         except InputError as exc:
             if fixed is None:
                 raise

@@ -609,8 +609,44 @@ def render_report(tree: xr.DataTree, figures: Iterable[RenderedFigure] | None = 
     -------
     str
         The HTML text (UTF-8, no external resources).
+
+    Raises
+    ------
+    InputError
+        ``tree`` is no analysis (not a DataTree, no ``/ltca``) or its ``/ltca`` lacks a
+        variable the report reads (named: a tree cut down or made by other means than
+        :func:`contact.run_analysis`).
     """
-    return render_page("report.html.j2", report_context(tree, figures))
+    _check_analysis_tree(tree)
+    try:
+        return render_page("report.html.j2", report_context(tree, figures))
+    except KeyError as exc:  # a variable deeper in the page that the tree lacks
+        name = exc.args[0] if exc.args else exc
+        raise InputError(f"tree: lacks {name} that the report reads (an analysis as "
+                         "contact.run_analysis or ltca run writes it)") from None
+
+
+#: the /ltca variables every report reads (its summary table and first figures)
+REPORT_LTCA_VARIABLES = ("force", "found", "transmission_error", "lte_mean",
+                         "lte_peak_to_peak", "pressure_max_flank", "pressure_max_edge")
+
+
+def _check_analysis_tree(tree) -> None:
+    """Refuse what is no analysis tree, before any figure is drawn: not a DataTree, no
+    ``/ltca`` group, or an ``/ltca`` without :data:`REPORT_LTCA_VARIABLES`."""
+    if not isinstance(tree, xr.DataTree):
+        raise InputError("tree: must be the xarray.DataTree of an analysis "
+                         f"(contact.run_analysis, or an ltca run file read with "
+                         f"geometry.core.io.read_netcdf(path, tree=True)), got "
+                         f"{type(tree).__name__}")
+    if "ltca" not in tree.children:
+        raise InputError("tree: has no /ltca group (groups: "
+                         f"{', '.join(tree.children) or 'none'}); the report is of an "
+                         "analysis as contact.run_analysis or ltca run writes it")
+    missing = [v for v in REPORT_LTCA_VARIABLES if v not in tree["ltca"].variables]
+    if missing:
+        raise InputError(f"tree: /ltca lacks {', '.join(missing)}, which the report reads "
+                         "(an analysis as contact.run_analysis or ltca run writes it)")
 
 
 def write_report(tree: xr.DataTree, path: str | os.PathLike[str],
@@ -624,8 +660,10 @@ def write_report(tree: xr.DataTree, path: str | os.PathLike[str],
     Raises
     ------
     InputError
-        If the directory of ``path`` does not exist.
+        If the directory of ``path`` does not exist, or ``tree`` is no analysis
+        (:func:`render_report`), both before the figures are drawn.
     """
+    _check_analysis_tree(tree)
     if not Path(path).parent.exists():  # before the figures are drawn
         raise InputError(f"path: directory {str(Path(path).parent)!r} does not exist")
     return write_page(render_report(tree, figures), path)

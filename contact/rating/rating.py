@@ -328,9 +328,9 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
                    f"{_P2} cl. 6"),
         "v_g_par": var((), v["slide"]["v_g_par"], "m/s",
                        "sliding velocity along the contact line v_g,par", f"{_P2} cl. 6"),
-        "v_sum_vert": var((), v["slide"]["v_sum_vert"], "m/s",
-                          "sum velocity normal to the contact line v_Sigma,vert",
-                          f"{_P2} cl. 6"),
+        "v_sum_vert": _v_sum_vert(var((), v["slide"]["v_sum_vert"], "m/s",
+                                      "sum velocity normal to the contact line v_Sigma,vert",
+                                      f"{_P2} cl. 6")),
         "Z_Hyp": var((), v["Z_Hyp"], "1", "hypoid factor Z_Hyp", f"{_P2} cl. 6"),
         "Z_K": var((), pitting.BEVEL_GEAR_FACTOR, "1", "bevel gear factor Z_K",
                    f"{_P2} cl. 6"),
@@ -562,3 +562,14 @@ def iso10300_rating(case, torque: Any = None, speed: float | None = None,
     log.info("rating %s (%s side) at %s N m, %s rpm", case.name, inputs.side,
              np.atleast_1d(torque), speed)
     return rate_pair(data, inputs, torque, speed, members, side=inputs.side, name=case.name)
+
+
+def _v_sum_vert(variable):
+    """``v_sum_vert`` with a ``comment`` where it is NaN: a pair without hypoid offset
+    (a spiral bevel pair) has Z_Hyp = 1 by ISO 10300-2 cl. 6, and v_Σ,vert, which
+    enters only the hypoid factor, is not evaluated (issue 64: a NaN says why)."""
+    if np.all(np.isfinite(variable[1])):
+        return variable
+    return (*variable[:2], {**variable[2], "comment": (
+        "NaN: not evaluated for a pair without hypoid offset (spiral bevel, a = 0), whose "
+        "hypoid factor Z_Hyp is 1 (ISO 10300-2 cl. 6); v_Sigma,vert enters only Z_Hyp")})

@@ -43,6 +43,7 @@ import numpy as np
 from scipy.interpolate import PchipInterpolator
 
 from contact.durability.sn_curve import MINER_RULES
+from geometry.core.bounds import check_bound
 from geometry.core.errors import InputError
 from geometry.core.toml_files import read_toml
 from geometry.pair.assembly import Misalignment
@@ -198,6 +199,12 @@ class DutyCycle:
             if np.any(a <= -273.15):
                 raise InputError("duty_cycle.temperature: must be above absolute zero [degC]")
             object.__setattr__(self, "temperature", a)
+        # the one table of physical bounds, bin by bin, before any analysis (issue 64)
+        for name, bound in (("torque", "torque"), ("speed", "pinion_speed"),
+                            ("temperature", "temperature")):
+            values = getattr(self, name)
+            for i, v in enumerate(() if values is None else values):
+                check_bound(bound, float(v), field=f"duty_cycle.{name} (bin {i})")
         if self.miner_rule not in MINER_RULES:
             raise InputError(f"duty_cycle.miner_rule: must be one of {', '.join(MINER_RULES)},"
                              f" got {self.miner_rule!r}")

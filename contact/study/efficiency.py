@@ -19,11 +19,14 @@ import xarray as xr
 
 from contact.catalogue import resolve_case
 from contact.ltca import LTCAOptions, loaded_tca
-from contact.pipeline import misalignment_attrs
+from contact.ltca.summary import ANALYSIS_STATUS, certification
+from contact.pipeline import check_analysis_arguments, check_torques, misalignment_attrs
 from contact.study.engine import run_tasks
 from friction.operating import OperatingConditions
 from geometry import __version__
 from geometry.case import OPERATING_DEFAULTS, Case
+from geometry.core.bounds import check_bound
+from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment
 
 __all__ = ["EFFICIENCY_MAP_SPEEDS", "EFFICIENCY_MAP_TORQUES", "EfficiencyInputs",
@@ -75,7 +78,10 @@ def efficiency_at_torque(shared: EfficiencyInputs, index: int,
         ``index`` and ``efficiency`` [1], ``power_loss`` [W] (means over the mesh
         cycles), ``friction_coefficient_mean``, ``lambda_ratio_mean`` [1] (load-weighted
         over the loaded segments), ``extrapolated_share`` [1] (share of the loaded
-        segments where the friction model is extrapolated).
+        segments where the friction model is extrapolated); ``analysis_status`` (index
+        into :data:`contact.ltca.summary.ANALYSIS_STATUS`) and ``analysis_status_reason``
+        of the LTCA (:func:`contact.ltca.summary.certification`; NaN efficiencies where
+        it is not certified).
 
     Raises
     ------
@@ -97,6 +103,9 @@ def efficiency_at_torque(shared: EfficiencyInputs, index: int,
                                                "friction_coefficient_mean",
                                                "lambda_ratio_mean",
                                                "extrapolated_share")}
+    cert = certification(lt)  # a torque without certified contact has no efficiency
+    out["analysis_status"] = np.int8(ANALYSIS_STATUS.index(cert.status))
+    out["analysis_status_reason"] = cert.reason
     F = lt["force"].fillna(0.0)
     dims = ("roll", "pair", "segment")
     for j, n in enumerate(shared.speed):
@@ -177,12 +186,20 @@ def efficiency_map(
         ``power_loss`` [W] (means over the mesh cycles), ``friction_coefficient_mean``,
         ``lambda_ratio_mean`` [1] (load-weighted means over the loaded segments),
         ``friction_model_extrapolated_share`` [1] (share of the loaded segments where the
-        friction model is extrapolated, flagged per segment by the efficiency stage).
+        friction model is extrapolated, flagged per segment by the efficiency stage);
+        ``analysis_status`` (torque) int8, 0 ok, 1 uncertified, 2 failed
+        (:data:`contact.ltca.summary.ANALYSIS_STATUS`: the torque's loaded contact
+        certified at every roll, at some, at none), why in the attribute
+        ``analysis_status_reason``; the efficiencies of a torque not certified at every
+        roll are NaN.
 
     Raises
     ------
     InputError
-        Bad case, options or operating point (the message names the field).
+        Bad case, options or operating point (the message names the field); a torque,
+        speed, temperature or roughness outside the table of physical bounds
+        (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`) or a temperature outside the oil's
+        range, refused before any work.
     ModelUnavailableError
         Unknown lubricant or friction model.
 
@@ -190,6 +207,7 @@ def efficiency_map(
     -----
     Seed §5.3 (efficiency over operating conditions).
     """
+    check_analysis_arguments(case, torque, misalignment, flank, options)
     c = resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
@@ -202,6 +220,7 @@ def efficiency_map(
     speed = EFFICIENCY_MAP_SPEEDS if speed is None else speed
     temperature = (op.temperature,) if temperature is None else temperature
     roughness = (op.roughness,) if roughness is None else roughness
+    _check_sweep(op, torque, speed, temperature, roughness)  # all of it, before any work
     shared = EfficiencyInputs(c, options or LTCAOptions(), op,
                               tuple(float(x) for x in speed),
                               tuple(float(x) for x in temperature),
@@ -209,6 +228,8 @@ def efficiency_map(
                               progress=bool(progress) and scheduler == "synchronous")
     shape = (len(torque), len(speed), len(temperature), len(roughness))
     eff, loss, mu_m, lam_m, extra = (np.full(shape, np.nan) for _ in range(5))
+    status = np.zeros(len(torque), np.int8)
+    reasons = [""] * len(torque)
     bar = None
     if progress:
         from tqdm.auto import tqdm
@@ -220,6 +241,7 @@ def efficiency_map(
         eff[it], loss[it] = res["efficiency"], res["power_loss"]
         mu_m[it], lam_m[it] = res["friction_coefficient_mean"], res["lambda_ratio_mean"]
         extra[it] = res["extrapolated_share"]
+        status[it], reasons[it] = res["analysis_status"], res["analysis_status_reason"]
         if bar is not None:
             bar.update()
     if bar is not None:
@@ -244,6 +266,13 @@ def efficiency_map(
                 extra,
                 {"units": "1", "long_name": "share of the loaded segments where the friction "
                  "model is evaluated outside its fitted range"},
+            ),
+            "analysis_status": (
+                ("torque",),
+                status,
+                {"units": "1", "long_name": "certification of the torque's loaded contact",
+                 "flag_values": np.arange(len(ANALYSIS_STATUS), dtype=np.int8),
+                 "flag_meanings": " ".join(ANALYSIS_STATUS)},
             ),
         },
         coords={
@@ -275,5 +304,24 @@ def efficiency_map(
             "lubricant": str(op.lubricant),
             "friction_model": op.friction_model_name,
             "toolkit_version": __version__,
+            "analysis_status_reason": "; ".join(r for r in reasons if r),
         },
     )
+
+
+def _check_sweep(op: OperatingConditions, torque, speed, temperature, roughness) -> None:
+    """Every value of an efficiency map's sweep against the table of physical bounds
+    (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`) and the temperatures against the oil's
+    range, before the LTCA (issue 64: a bad speed or temperature was refused only after
+    the geometry and ease-off of the first torque)."""
+    check_torques(torque)
+    for name, values, bound in (("speed", speed, "pinion_speed"),
+                                ("temperature", temperature, "temperature"),
+                                ("roughness", roughness, "roughness")):
+        if isinstance(values, (str, bytes)) or np.ndim(values) != 1 or not len(values):
+            raise InputError(f"{name}: must be a sequence of one or more numbers, got "
+                             f"{values!r}")
+        for v in values:
+            check_bound(bound, v, field=name, positive=name == "roughness")
+    for t in temperature:
+        dataclasses.replace(op, temperature=float(t)).check_oil_temperature()

@@ -133,6 +133,8 @@ _WRITE_ERRNO = {code: text for code, text in (
     (errno.EROFS, "{dir} is on a read-only file system"),
     (errno.EACCES, "no permission to write in {dir}"),
     (errno.EPERM, "no permission to write in {dir}")) if code is not None}
+#: the errors that say "no permission", trusted only where the disk has space left
+_PERMISSION_ERRNO = (errno.EACCES, errno.EPERM)
 
 
 def write_failure(path: str | os.PathLike[str], exc: BaseException) -> str | None:
@@ -145,8 +147,10 @@ def write_failure(path: str | os.PathLike[str], exc: BaseException) -> str | Non
         The file being written.
     exc : BaseException
         The exception the write raised (its ``errno``, or its cause's, is read; an
-        exception without one — the netCDF library's "HDF error" — is put down to a full
-        disk when less than :data:`FULL_DISK_MARGIN` bytes are free).
+        exception without one — the netCDF library's "HDF error" — or one saying "no
+        permission" (EACCES, EPERM) is put down to a full disk when less than
+        :data:`FULL_DISK_MARGIN` bytes are free: the free space is checked before the
+        error is trusted).
 
     Returns
     -------
@@ -156,19 +160,23 @@ def write_failure(path: str | os.PathLike[str], exc: BaseException) -> str | Non
     """
     target = Path(path)
     folder = str(target.parent.resolve()) if target.parent.exists() else str(target.parent)
+    full = f"could not write {str(target)!r}: no space left on {folder}"
+    try:  # the disk first: a full disk is reported as such whatever error the write gave
+        free: int | None = shutil.disk_usage(target.parent).free
+    except OSError:
+        free = None
+    disk_full = free is not None and free < FULL_DISK_MARGIN
     seen: BaseException | None = exc
     while seen is not None:
         code = getattr(seen, "errno", None)
         if code in _WRITE_ERRNO:
+            if disk_full and code in _PERMISSION_ERRNO:
+                # a library that cannot write its file on a full disk may say EACCES (the
+                # netCDF library's create, issue 64): no permission is not the cause then
+                return full
             return f"could not write {str(target)!r}: {_WRITE_ERRNO[code].format(dir=folder)}"
         seen = seen.__cause__ or seen.__context__
-    try:
-        free = shutil.disk_usage(target.parent).free
-    except OSError:
-        return None
-    if free < FULL_DISK_MARGIN:
-        return f"could not write {str(target)!r}: no space left on {folder}"
-    return None
+    return full if disk_full else None
 
 
 @contextlib.contextmanager

@@ -37,7 +37,7 @@ from contact.qp.problem import (
 from contact.qp.solvers.active_set import block_pivoting
 from contact.qp.solvers.backend import ACCURACY_LEVELS, Backend, RawResult
 from geometry.core.caches import memoised
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, PluginError
 from geometry.core.registries import (
     callable_name,
     check_model_name,
@@ -205,13 +205,27 @@ def _adapted(function: Callable[..., Any], name: str) -> Callable[..., RawResult
         try:
             force, rotation = out
         except (TypeError, ValueError):
-            raise InputError(f"solver {name!r}: must return a RawResult or (force, rotation), "
-                             f"got {type(out).__name__}") from None
-        return RawResult(None if force is None else np.asarray(force, float),
-                         None if rotation is None else float(rotation), True,
-                         f"user backend {name!r} returned", 0.0, elapsed)
+            raise PluginError(f"solver {name!r} returned {type(out).__name__} {_short(out)}; "
+                              "a solver returns a RawResult or (force [N], rotation [rad]) "
+                              "(docs/extending.md)") from None
+        try:
+            force = None if force is None else np.asarray(force, float)
+            rotation = None if rotation is None else float(rotation)
+        except (TypeError, ValueError):
+            raise PluginError(f"solver {name!r} returned force {_short(force)} and rotation "
+                              f"{_short(rotation)}; a solver returns F [N], one number per "
+                              "segment, and one rotation [rad] (docs/extending.md)") from None
+        return RawResult(force, rotation, True, f"user backend {name!r} returned", 0.0,
+                         elapsed)
 
     return solve
+
+
+def _short(value: Any, width: int = 60) -> str:
+    """``repr(value)`` cut to ``width`` characters, for messages about what a plug-in
+    returned."""
+    text = repr(value)
+    return text if len(text) <= width else text[:width - 1] + "…"
 
 
 def as_backend(solver: SolverLike, *, name: str | None = None, family: str = "user",
@@ -393,8 +407,10 @@ KNOWN_BACKENDS: dict[str, str] = {
     "scs": "scs",
 }
 
-#: the line that installs every optional backend
-SOLVERS_EXTRA = "pip install 'hypoid-ltca[solvers]'"
+#: the line that installs every optional backend: for an installed package and for a
+#: clone of the repository (where the package name would fetch the release from PyPI
+#: instead of installing the clone's extra; issue 64), as the FE and kernel hints say it
+SOLVERS_EXTRA = "pip install 'hypoid-ltca[solvers]', from a clone: pip install '.[solvers]'"
 
 
 def missing_backends() -> dict[str, str]:
@@ -466,6 +482,29 @@ def polish(
     return (out["force"], out["rotation"]) if out["converged"] else sol
 
 
+def _check_returned(solver: str, raw: RawResult, n: int) -> None:
+    """Refuse a backend's answer of the wrong shape: forces F that are not N numbers, a
+    rotation Θ that is not one. Not a failure to solve (reported by ``found``) but a
+    broken backend, whose forces would otherwise meet the problem's matrices in a NumPy
+    shape error.
+
+    Raises
+    ------
+    PluginError
+        Naming the solver, what it returned and what a solver returns (docs/extending.md).
+    """
+    if raw.force is None or raw.rotation is None:
+        return
+    force = np.asarray(raw.force)
+    if force.shape != (n,) or not np.issubdtype(force.dtype, np.number):
+        raise PluginError(f"solver {solver!r} returned forces of shape {force.shape} "
+                          f"({force.dtype}) for a problem of {n} segments; a solver returns "
+                          f"F [N] of shape ({n},) and the rotation [rad] (docs/extending.md)")
+    if np.ndim(raw.rotation) != 0:
+        raise PluginError(f"solver {solver!r} returned a rotation of shape "
+                          f"{np.shape(raw.rotation)}; a solver returns one rotation [rad]")
+
+
 def _certified(res: dict[str, float], tolerance: float) -> bool:
     return all(math.isfinite(v) and v <= tolerance for v in res.values())
 
@@ -508,8 +547,8 @@ def solve_contact(
     ContactSolution
         ``found`` is True only if our own residuals are within ``tolerance``.
         A backend that raises, returns nothing, or returns an uncertifiable answer
-        gives ``found=False`` with the reason in ``status``; this function does not
-        raise for solver failures.
+        gives ``found=False`` with the reason in ``status`` (naming the backend); this
+        function does not raise for solver failures.
 
     Raises
     ------
@@ -519,6 +558,9 @@ def solve_contact(
         Unknown accuracy level or a non-positive tolerance.
     InputError
         A solve function whose signature does not fit (:func:`as_backend`).
+    PluginError
+        A backend that returned forces of the wrong shape (not one per segment) or more
+        than one rotation: a broken backend, not a failed solve (named).
     """
     from contact.errors import ProblemInputError
 
@@ -539,10 +581,14 @@ def solve_contact(
             init = None
     try:
         raw = backend.solve(problem, accuracy=accuracy, initial=init, **options)
+    except PluginError:  # a broken backend (what it returned), not a failed solve
+        raise
     except Exception as exc:  # any backend failure becomes a reported, unfound solution
         log.info("backend %s raised %s: %s", solver, type(exc).__name__, exc)
-        raw = RawResult(None, None, False, f"backend raised {type(exc).__name__}: {exc}", 0.0, 0.0)
+        raw = RawResult(None, None, False,
+                        f"backend {solver!r} raised {type(exc).__name__}: {exc}", 0.0, 0.0)
     n = problem.size
+    _check_returned(solver, raw, n)
     extras = dict(raw.extras)
     extras["claimed_success"] = raw.claimed
     if raw.force is None or raw.rotation is None:
