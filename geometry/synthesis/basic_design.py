@@ -35,6 +35,7 @@ import math
 import os
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, fields, replace
+from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
@@ -589,5 +590,8 @@ def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign
     ModelUnavailableError
         As :func:`basic_from_dict`.
     """
-    return replace(basic_from_dict(read_toml(path, "basic file"), fit=fit),
-                   path=os.fspath(path))
+    p = Path(path)
+    # a bundled file by its place in the repository, not this machine's install path
+    shown = (f"cases/basic/{p.name}" if p.resolve().parent.parts[-2:] == ("cases", "basic")
+             else os.fspath(path))
+    return replace(basic_from_dict(read_toml(path, "basic file"), fit=fit), path=shown)
