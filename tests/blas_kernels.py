@@ -4,7 +4,7 @@ A result that depends on a machine's last digit (a contact set, a vertex's cell,
 iteration count chosen by round-off) passes on the machine that stored it and fails on a
 new user's CPU (issue 31). Forcing ``OPENBLAS_CORETYPE`` to a generic kernel of the
 architecture in a subprocess makes it fail on any machine. Used by
-``tests/test_golden_run.py`` (the golden file) and ``tests/test_sweep_guard.py`` (the
+``tests/test_golden_run.py`` (the golden file's summary) and ``tests/test_sweep_guard.py`` (the
 sweep guard).
 
 The code run must print, as its first line, ``kernel`` and the kernels OpenBLAS took

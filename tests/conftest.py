@@ -9,11 +9,16 @@ is one directory for the whole session and every xdist worker, beside pytest's o
 (``.pytest_cache/hypoid-ltca-fe``), unless ``HYPOID_LTCA_CACHE`` is set: a design's
 coefficients are built once per session (once ever on a developer's machine), never in the
 user's own cache. Tests that need an empty cache set their own (monkeypatch).
+
+The default ``ltca run`` (``default_run_file``) is run once per session, by the first
+xdist worker that needs it (the golden-file test, the plots' global-state test and the
+friction model's range check read it): ``tests/golden.py``'s ``shared_default_run``.
 """
 
 import os
 from pathlib import Path
 
+import pytest
 from threadpoolctl import threadpool_limits
 
 threadpool_limits(limits=1, user_api="blas")
@@ -21,3 +26,15 @@ threadpool_limits(limits=1, user_api="blas")
 os.environ.setdefault(
     "HYPOID_LTCA_CACHE",
     str(Path(__file__).resolve().parents[1] / ".pytest_cache" / "hypoid-ltca-fe"))
+
+
+@pytest.fixture(scope="session")
+def default_run_file(tmp_path_factory) -> Path:
+    """The netCDF file of the default ``ltca run`` (no arguments), shared by the session's
+    xdist workers (their base temporary directories have one parent)."""
+    from golden import shared_default_run
+
+    base = tmp_path_factory.getbasetemp()
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        base = base.parent
+    return shared_default_run(base / "default-run")

@@ -73,7 +73,7 @@ case = resolve_case(None)
 surface = flank_surface(case, "pinion", "concave", nu=9, nv=7)
 plot_projection_grid(surface, case.pinion.blank, out / "grid.png")
 plot_flanks_in_mesh(case, [surface], out / "mesh.png")
-tree = xr.open_datatree(data / "golden_default_run.nc")
+tree = xr.open_datatree(sys.argv[3])  # the default run (tests/conftest.py)
 first = next(iter(analysis_figures(tree)))
 save_png(first.figure, out / "analysis.png")
 save_study_figures(xr.open_dataset(data / "sweep_guard_5x5.nc"), out)
@@ -81,13 +81,14 @@ print(matplotlib.get_backend(), "matplotlib.pyplot" in sys.modules)
 """
 
 
-def test_plot_calls_leave_the_matplotlib_backend_alone(tmp_path):
-    """geometry.plot's writers, an analysis figure (contact.plots) and a study's figures
-    (contact.study.figures), drawn in a process whose backend is ``template``: the backend
-    is still ``template`` afterwards and pyplot was never imported (pyplot would pick a
-    backend of its own on import)."""
+def test_plot_calls_leave_the_matplotlib_backend_alone(tmp_path, default_run_file):
+    """geometry.plot's writers, an analysis figure (contact.plots, of the default run the
+    session shares) and a study's figures (contact.study.figures), drawn in a process
+    whose backend is ``template``: the backend is still ``template`` afterwards and pyplot
+    was never imported (pyplot would pick a backend of its own on import)."""
     run = subprocess.run(
-        [sys.executable, "-c", _PLOTTING, str(tmp_path), str(ROOT / "tests" / "data")],
+        [sys.executable, "-c", _PLOTTING, str(tmp_path), str(ROOT / "tests" / "data"),
+         str(default_run_file)],
         capture_output=True, text=True, cwd=tmp_path,
         env={**{k: v for k, v in os.environ.items() if k != "MPLBACKEND"},
              "PYTHONPATH": str(ROOT)})

@@ -374,8 +374,8 @@ def test_edge_contacts_checked_against_the_solver(fit):
 
 @pytest.mark.parametrize("name", ["default", "kolivand2009_table54_A_fh",
                                   "kolivand2009_table54_B_fh"])
-def test_gear_contacts_inside_the_range_or_flagged_with_why(name):
-    """The default model on the default case's run (the golden file's LTCA: 50/250/500 N·m,
+def test_gear_contacts_inside_the_range_or_flagged_with_why(name, request):
+    """The default model on the default case's run (``ltca run``'s LTCA: 50/250/500 N·m,
     Table 3.1 mounting) and on Table 5.4's A and B at the seed's operating point (500 N·m;
     the suite's 6-roll LTCA), all at 1500 rpm, 90 °C, Rq 0.8 µm: every loaded segment is
     inside the fitted box or flagged, and the flag says why — a flank segment only at the
@@ -387,13 +387,14 @@ def test_gear_contacts_inside_the_range_or_flagged_with_why(name):
     of it. Bound 2 %."""
     import json
 
-    from golden import GOLDEN
     from test_face_hobbing_chain import _run as _fh_run
 
     from friction.efficiency import efficiency_analysis, extrapolation_summary
 
     if name == "default":
-        lt = read_netcdf(GOLDEN, tree=True)["ltca"].to_dataset()
+        # the session's one default run (tests/conftest.py), only when this case asks
+        lt = read_netcdf(request.getfixturevalue("default_run_file"), tree=True)["ltca"]
+        lt = lt.to_dataset()
     else:
         lt = _fh_run(name)
     with warnings.catch_warnings():
