@@ -638,6 +638,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--from", dest="run", type=Path, default=None, metavar="FILE",
                         help="a file `ltca run` (no other arguments) wrote, instead of running")
     args = parser.parse_args(argv)
+    if args.run is not None and not args.run.is_file():
+        parser.error(f"--from {args.run}: no such file (give a file `ltca run` wrote)")
+    if not args.write and not GOLDEN.is_file():
+        parser.error(f"{GOLDEN} does not exist: write it first with --write")
     from threadpoolctl import threadpool_limits
 
     # as the test suite runs (tests/conftest.py): one BLAS thread
