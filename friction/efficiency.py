@@ -198,7 +198,10 @@ def efficiency_analysis(
     )
     e_prime = _effective_modulus(ltca, youngs_modulus, poisson_ratio)
     oil = _oil_at_inlet(op.lubricant, op.temperature)
-    sigma = float(composite_roughness(op.roughness, op.roughness))
+    # the film and μ on the flanks' roughness in their surface state (run-in by default,
+    # friction.operating.RUNNING_IN_FACTORS); λ_GF of the durability checks on Rq as given
+    rq = op.effective_roughness
+    sigma = float(composite_roughness(rq, rq))
     seg = _loaded_segments(ltca, op.pinion_speed)
     fric = _film_and_friction(seg, oil, e_prime, sigma, op)
     for note in fric.range_warnings:
@@ -453,8 +456,8 @@ def _film_and_friction(
             load_per_length=w,
             viscosity=eta0,
             radius=R,
-            roughness_1=op.roughness,
-            roughness_2=op.roughness,
+            roughness_1=op.effective_roughness,
+            roughness_2=op.effective_roughness,
             lambda_ratio=lam,
             pressure_viscosity=alpha,
             e_prime=e_prime,
@@ -797,6 +800,8 @@ def _friction_dataset(
         "lubricant": oil.name,
         "inlet_temperature_degC": op.temperature,
         "roughness_rq_um": op.roughness,
+        "surface_state": op.surface_state,
+        "roughness_effective_rq_um": op.effective_roughness,
         "friction_model": op.friction_model_name,
         "inlet_viscosity_Pa_s": oil.viscosity,
         "pressure_viscosity_1_per_GPa": oil.pressure_viscosity,

@@ -150,7 +150,8 @@ def run(args: argparse.Namespace) -> int:
     case = resolve_case(args.case)
     op = OperatingConditions.from_point(
         case.operating, pinion_speed=case.operating.pinion_speed or None,
-        lubricant=args.lubricant, friction_model=args.friction_model)
+        lubricant=args.lubricant, friction_model=args.friction_model,
+        surface_state=args.surface_state)
     scheduler = args.scheduler
     if scheduler is None:
         scheduler = "synchronous" if args.workers is None else None

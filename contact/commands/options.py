@@ -17,7 +17,8 @@ analysis_file_argument  the positional FILE of ``plot``/``report``: a netCDF fil
 torque_option           --torque
 misalignment_options    --dE --dP --dG --dSigma (numbers, ranges or distributions)
 misalignment_from_args  a Misalignment from those numbers over a base
-operating_options       --speed --lubricant --temperature --roughness --friction-model
+operating_options       --speed --lubricant --temperature --roughness --surface-state
+                        --friction-model
 rolls_per_cycle_option  --rolls-per-cycle (alias --n-roll)
 segments_option         --segments
 flank_option            --flank
@@ -280,8 +281,9 @@ def misalignment_from_args(args: argparse.Namespace, base):
 
 def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
                       speed_help: str = "") -> None:
-    """``--speed --lubricant --temperature --roughness --friction-model``: the efficiency
-    stage's conditions, each defaulting to the case's ``[operating]`` table."""
+    """``--speed --lubricant --temperature --roughness --surface-state --friction-model``:
+    the efficiency stage's conditions, each defaulting to the case's ``[operating]`` table
+    (``--surface-state`` to :class:`friction.operating.OperatingConditions`' run-in)."""
     from friction.defaults import DEFAULT_FRICTION_MODEL
     from geometry.core.operating_defaults import OPERATING_DEFAULTS as D
 
@@ -298,6 +300,10 @@ def operating_options(p: argparse.ArgumentParser, *, many: bool = False,
                    help=f"oil inlet temperature [degC] ({D['temperature']:g} degC)")
     g.add_argument("--roughness", type=float, nargs=nargs, default=None, metavar="UM",
                    help=f"RMS roughness Rq of each flank [um] ({D['roughness']:g} um)")
+    g.add_argument("--surface-state", choices=("run_in", "new"), default=None,
+                   help="the flanks' state: run_in (a gear in service: the film and friction "
+                        "on Rq x 0.68, AGMA's run-in improvement of carburised gears) or new "
+                        "(Rq as given) (run_in; docs/friction.md)")
     g.add_argument("--friction-model", default=None,
                    help=f"friction coefficient model: a bundled one, or one of an "
                         f"installed plug-in (docs/extending.md) ({DEFAULT_FRICTION_MODEL})")

@@ -211,7 +211,8 @@ def run(args: argparse.Namespace) -> int:
         devs = tuple(None if f == "-" else f for f in args.deviations)
     operating = operating_conditions(
         case, pinion_speed=args.speed, lubricant=args.lubricant, temperature=args.temperature,
-        roughness=args.roughness, friction_model=args.friction_model)
+        roughness=args.roughness, friction_model=args.friction_model,
+        surface_state=args.surface_state)
     tree = run_analysis(
         case,
         args.torque,
