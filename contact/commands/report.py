@@ -7,6 +7,7 @@ import argparse
 from contact.commands.options import (
     analysis_file_argument,
     output_option,
+    progress_option,
     resolve_analysis_file,
 )
 from contact.commands.output_paths import check_output_file
@@ -31,6 +32,7 @@ def register(sub) -> None:
     analysis_file_argument(p)
     output_option(p, default="FILE's name with .html, e.g. kolivand2009_fm_11x41_reference.html",
                   what="HTML file")
+    progress_option(p)
     p.set_defaults(func=run)
 
 
@@ -93,5 +95,29 @@ def run(args: argparse.Namespace) -> int:
 
         print(f"wrote {write_duty_report(tree, output)}")
         return 0
-    print(f"wrote {write_report(tree, output)}")
+    print(f"wrote {write_report(tree, output, figures=_figures(tree, args))}")
     return 0
+
+
+def _figures(tree, args: argparse.Namespace):
+    """The report's figures drawn here with progress: a bar on a terminal, a plain line per
+    figure anywhere else (``report: figure 3/14, contact_pattern (5 s)``); None (the
+    report draws them) without progress or for a tree that is no analysis (the report
+    refuses it before drawing)."""
+    progress = getattr(args, "progress", False)
+    if not progress or "ltca" not in tree.children:
+        return None
+    from contact.plots.analysis import RenderedFigure, analysis_specs, render_analysis
+    from contact.plots.style import png_bytes
+
+    if progress is True:
+        return render_analysis(tree, progress=True)
+    from contact.commands.step_lines import StepLines
+
+    specs = list(analysis_specs(tree))
+    say = StepLines("report", len(specs), unit="figure")
+    out = []
+    for spec in specs:
+        say(spec.name)
+        out.append(RenderedFigure(spec.name, spec.caption, png_bytes(spec.draw())))
+    return out

@@ -88,33 +88,11 @@ def write_text_atomic(path: Path, text: str) -> Path:
     return path
 
 
-class StepLines:
-    """Plain progress lines of a command made of named steps, on standard error:
-    ``synthesize: step 3/10, pinion concave: generating tools (12 s)`` — complete lines,
-    readable in a log file as on a terminal (the studies' ``"lines"`` mode,
-    :mod:`contact.study.progress`)."""
-
-    def __init__(self, desc: str, total: int) -> None:
-        import time
-
-        self.desc, self.total, self.done = desc, total, 0
-        self.clock = time.monotonic
-        self.start = self.clock()
-
-    def __call__(self, step: str) -> None:
-        import sys
-
-        self.done += 1
-        elapsed = round(self.clock() - self.start)
-        took = f"{elapsed} s" if elapsed < 60 else f"{elapsed // 60} min {elapsed % 60} s"
-        print(f"{self.desc}: step {self.done}/{self.total}, {step} ({took})",
-              file=sys.stderr, flush=True)
-
-
 def run_synthesize(args: argparse.Namespace) -> int:
     import dataclasses
     import tomllib
 
+    from contact.commands.step_lines import StepLines
     from contact.rating.capacity import with_design_torque
     from contact.rating.inputs import RatingInputs
     from geometry.case import case_from_dict
