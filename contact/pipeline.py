@@ -295,6 +295,8 @@ def check_analysis_arguments(case, torque, misalignment, flank, options, **flags
         raise InputError("options: must be a contact.ltca.LTCAOptions or None (the defaults), "
                          f"got {type(options).__name__} {options!r}")
     for name, value in flags.items():
+        if name == "progress" and value == "lines":  # plain progress lines
+            continue
         if not isinstance(value, (bool, np.bool_)):
             raise InputError(f"{name}: must be True or False, got {value!r}")
 

@@ -281,3 +281,214 @@ def test_text_files_written_atomically_report_a_full_disk(tmp_path, monkeypatch)
         tmp.write_text("new", encoding="utf-8")
     monkeypatch.undo()
     assert target.read_text(encoding="utf-8") == "old"
+
+
+@pytest.mark.parametrize(("free", "text"), [
+    (1024, r"no space left on"),                    # a full disk, whatever the library said
+    (10**9, r"no permission to write in"),          # room left: the permission is the cause
+])
+def test_a_full_disk_is_reported_as_such_before_trusting_eacces(free, text, tmp_path,
+                                                               monkeypatch):
+    # the netCDF library may report a full disk as EACCES (issue 64: ltca rate and
+    # efficiency-map said "no permission to write" on a full disk): the free space is read
+    # first, and EACCES trusted only where there is room
+    import shutil
+
+    import geometry.core.atomic_files as af
+
+    path = _study_file(tmp_path)
+    ds = read_netcdf(path)
+
+    def eacces(self, *args, **kwargs):
+        raise PermissionError(errno.EACCES, "Permission denied")
+
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", eacces)
+    monkeypatch.setattr(af.shutil, "disk_usage",
+                        lambda p: shutil._ntuple_diskusage(10**10, 10**10 - free, free))
+    with pytest.raises(NetCDFError, match=rf"could not write '.*good\.nc': {text}") as err:
+        write_netcdf(ds, path)
+    assert not RAW.search(str(err.value))
+
+
+# --------------------------------------------------------------------------- issue 64
+# the table of physical bounds, the public API's arguments and output that misled
+
+def test_the_table_of_bounds_is_the_line_contact_solvers_range():
+    """One table: ``ltca ehl``'s bounds, the friction study's and the line-contact
+    library's are the same numbers (the library keeps its own names for them)."""
+    from friction.ehl.line_contact import (
+        MAX_ENTRAINING_VELOCITY,
+        MAX_HERTZ_PRESSURE,
+        RADIUS_RANGE,
+    )
+    from geometry.core.bounds import PHYSICAL_BOUNDS as B
+
+    assert B["hertz_pressure"].high == MAX_HERTZ_PRESSURE
+    assert (B["radius"].low, B["radius"].high) == RADIUS_RANGE
+    assert B["entraining_velocity"].high == MAX_ENTRAINING_VELOCITY
+    # the operating defaults lie inside (a default refused would be a broken table)
+    from geometry.core.operating_defaults import OPERATING_DEFAULTS as D
+
+    for name in ("pinion_speed", "temperature", "roughness"):
+        assert B[name].low < D[name] <= B[name].high
+    assert all(B["torque"].low < t <= B["torque"].high for t in D["torque"])
+
+
+@pytest.mark.parametrize(("argv", "pattern"), [
+    # ISO ratings at 10^12 rpm or N m printed full tables (S_H 1.688)
+    (["rate", "--speed", "1e12"], r"--speed: must be in \(0, 50000\] \[rpm\], got 1e\+12"),
+    (["rate", "--torque", "1e12"], r"--torque: must be in \(0, 1e\+06\] \[N m\], got 1e\+12"),
+    # efficiency maps at 10^12 rpm (98.54 %) or Rq 100 um (95.58 %), after 15 s of work
+    (["efficiency-map", "--speed", "1e12"], r"--speed: must be in \(0, 50000\] \[rpm\]"),
+    (["efficiency-map", "--roughness", "100"], r"--roughness: must be in \(0, 5\] \[um\], "
+                                               r"got 100"),
+    (["run", "--temperature", "500"], r"--temperature: must be in \[-40, 200\] \[degC\]"),
+    (["mesh-interface", "--torque", "2e6"], r"--torque: must be in \(0, 1e\+06\] \[N m\]"),
+    (["sweep", "--speed", "1e12"], r"--speed: must be in \(0, 50000\] \[rpm\]"),
+])
+def test_absurd_magnitudes_are_refused_by_every_command(argv, pattern, capsys, tmp_path,
+                                                        monkeypatch):
+    import contact.ltca
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(contact.ltca, "loaded_tca", None)  # nothing may run
+    _refused(argv, capsys, pattern)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_efficiency_map_checks_its_sweep_before_any_geometry(monkeypatch):
+    """An oil temperature outside the oil's data (inside the table's bound) is refused
+    before the first torque's LTCA, which took ~15 s of geometry and ease-off."""
+    import contact.study.efficiency as ef
+
+    def no_work(*args, **kwargs):
+        raise AssertionError("the LTCA ran before the sweep was checked")
+
+    monkeypatch.setattr(ef, "loaded_tca", no_work)
+    with pytest.raises(InputError, match=r"^temperature: must be in \[5, 140\] \[degC\] for "
+                                         r"the lubricant '75W90'.*got 150$"):
+        ef.efficiency_map(None, [250.0], [1500.0], temperature=[90.0, 150.0])
+    with pytest.raises(InputError, match=r"^speed: must be in \(0, 50000\] \[rpm\], got "
+                                         r"1e\+12$"):
+        ef.efficiency_map(None, [250.0], [1e12])
+    with pytest.raises(InputError, match=r"^roughness: must be in \(0, 5\] \[um\], got 100$"):
+        ef.efficiency_map(None, [250.0], [1500.0], roughness=[100.0])
+
+
+def test_a_duty_cycle_of_absurd_bins_is_refused_bin_by_bin():
+    from contact.study.duty_cycle_inputs import DutyCycle
+
+    with pytest.raises(InputError, match=r"^duty_cycle\.speed \(bin 1\): must be in \(0, "
+                                         r"50000\] \[rpm\], got 1e\+12$"):
+        DutyCycle(torque=[100.0, 200.0], speed=[1500.0, 1e12], revolutions=[1e5, 1e5])
+
+
+def _api_calls():
+    from contact.pipeline import run_analysis
+    from geometry import load_case
+
+    return [
+        (lambda: run_analysis(None, torque="abc"),
+         r"^torque: must be a number or a sequence of numbers in \(0, 1e\+06\] \[N m\] "
+         r"\(pinion torques\), got 'abc'$"),
+        (lambda: run_analysis(None, torque=1e12),
+         r"^torque: must be in \(0, 1e\+06\] \[N m\], got 1e\+12$"),
+        (lambda: run_analysis(case=42), r"^case: must be a geometry\.case\.Case, the path of a "
+                                        r"case file, the name of a bundled case or None"),
+        (lambda: run_analysis(None, 50.0, options="fast"),
+         r"^options: must be a contact\.ltca\.LTCAOptions or None \(the defaults\), got str "
+         r"'fast'$"),
+        # a flank, not a misalignment ("reduce them together")
+        (lambda: run_analysis(None, 50.0, flank="up"),
+         r"^flank: must be 'drive' or 'coast' \(or a pinion flank name, 'concave' or "
+         r"'convex'\), got 'up'$"),
+        (lambda: run_analysis(None, 50.0, misalignment=(0.1, 0.0)),
+         r"^misalignment: must be a geometry\.pair\.assembly\.Misalignment"),
+        (lambda: run_analysis(None, 50.0, geometry="yes"),
+         r"^geometry: must be True or False, got 'yes'$"),
+        (lambda: load_case(None), r"^path: must be the path of a case file \(str or "
+                                  r"os\.PathLike\), got NoneType None$"),
+        (lambda: load_case(42), r"^path: must be the path of a case file .*got int 42$"),
+    ]
+
+
+@pytest.mark.parametrize("k", range(9))
+def test_the_public_api_refuses_bad_arguments_in_one_sentence(k):
+    call, pattern = _api_calls()[k]
+    with pytest.raises(InputError, match=pattern) as info:
+        call()
+    assert "\n" not in str(info.value)
+
+
+def test_write_report_of_a_tree_without_ltca_variables_names_them(tmp_path):
+    from contact import write_report
+
+    tree = xr.DataTree.from_dict({"/ltca": xr.Dataset({"lte_mean": ("torque", [1.0])})})
+    with pytest.raises(InputError, match=r"^tree: /ltca lacks force, found, "
+                                         r"transmission_error, lte_peak_to_peak, "
+                                         r"pressure_max_flank, pressure_max_edge, which the "
+                                         r"report reads"):
+        write_report(tree, tmp_path / "r.html")
+    with pytest.raises(InputError, match=r"^tree: has no /ltca group \(groups: easeoff\)"):
+        write_report(xr.DataTree.from_dict({"/easeoff": xr.Dataset()}), tmp_path / "r.html")
+    with pytest.raises(InputError, match=r"^tree: must be the xarray\.DataTree"):
+        write_report(xr.Dataset(), tmp_path / "r.html")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_rating_a_basic_design_file_says_what_it_is(capsys):
+    from contact.commands.synthesize import resolve_basic
+
+    basic = resolve_basic("iso23509_sample2_fm")
+    _refused(["rate", str(basic)], capsys,
+             r"is a basic design file \(\[design\] without \[pair\], \[pinion\], \[gear\]\); "
+             r"make a case of it first: ltca synthesize .*iso23509_sample2_fm\.toml.* -o "
+             r"CASE\.toml")
+
+
+def test_a_spiral_bevel_rating_says_why_v_sum_vert_is_nan():
+    from contact.catalogue import resolve_case
+    from contact.rating import iso10300_rating
+
+    case = resolve_case("iso10300_30_sample1")
+    assert case.pair.offset == 0.0                     # a spiral bevel pair
+    ds = iso10300_rating(case)
+    assert np.isnan(float(ds["v_sum_vert"]))
+    assert float(ds["Z_Hyp"]) == 1.0                # ISO 10300-2 cl. 6 for a = 0
+    assert ds["v_sum_vert"].attrs["comment"].startswith("NaN: not evaluated for a pair "
+                                                        "without hypoid offset")
+    hypoid = iso10300_rating(resolve_case("iso10300_30_sample2"))
+    assert np.isfinite(float(hypoid["v_sum_vert"]))
+    assert "comment" not in hypoid["v_sum_vert"].attrs
+
+
+def test_the_verdict_of_a_tree_without_ltca_names_the_checks_it_could_not_make():
+    from contact.study.verdicts import CHECKS, verdict
+
+    tree = xr.DataTree.from_dict({"/easeoff": xr.Dataset()})
+    v = verdict(tree)
+    contact_checks = ("implausible", "flank_pressure", "edge_contact", "plastic_edges",
+                      "certification")
+    assert [c for c, _ in v.unchecked] == [c for c in CHECKS["analysis"]]
+    lines = v.lines()
+    assert lines[1] == ("  not checked: " + ", ".join(contact_checks)
+                        + " (no /ltca group: the tree holds no loaded contact)")
+    assert any(line.startswith("  not checked: friction_extrapolated, scuffing, "
+                               "micropitting (no /friction group") for line in lines)
+
+
+def test_ehl_never_prints_a_negative_film(tmp_path, capsys, monkeypatch):
+    """Rough surfaces at 3 GPa and 0.05 m/s interlock: the stochastic model's mean-plane
+    separation is negative there; it is printed as a separation, with the mean gap."""
+    monkeypatch.chdir(tmp_path)
+    assert main([*EHL[:2], "3", "--radius", "20", "--speed", "0.05", "--roughness", "1.5",
+                 "1.5", "-o", "e.nc"]) == 0
+    out = capsys.readouterr().out
+    ds = xr.open_dataset(tmp_path / "e.nc")
+    sep = float(ds["film_central"])
+    ds.close()
+    assert sep < 0.0   # the case of the issue: the mean planes interpenetrate
+    assert "h_c" not in out and "h_min" not in out
+    assert re.search(rf"no film: the mean planes interpenetrate \(asperities in contact\), "
+                     rf"separation of the mean planes {sep:.4f} um at x = 0", out), out
+    assert re.search(r"mean gap \(oil\) \d+\.\d+ um", out)   # the gap is never negative
