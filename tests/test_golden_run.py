@@ -46,9 +46,11 @@ from blas_kernels import PRINT_KERNEL, run_on_other_kernel
 from golden import (
     AGGREGATE_SHARE,
     SMALL,
+    adopt_attributes,
     differences,
     load,
     statistic_bounds,
+    store,
     summarise,
     variable_entry,
 )
@@ -263,6 +265,26 @@ def test_a_new_variable_adds_one_entry_and_is_named(default_run, golden):
         "/ltca/new_result", "/ltca/new_result@units", "/ltca/new_result@long_name"}
     assert "/ltca: variables differ: new ['new_result']" in differences(new, golden,
                                                                         rtol=RTOL)
+
+
+def test_adopt_attributes_takes_attributes_and_nothing_else(golden, tmp_path):
+    """``--adopt-attributes`` on a copy of the golden file: a run differing in an attribute
+    only gives the file that attribute (every value entry kept, byte for byte); a run
+    differing in a value is refused, the file left as it was."""
+    path = tmp_path / "golden.json"
+    store(golden, path)
+    before = path.read_bytes()
+    changed_value = dict(golden)
+    changed_value["/ltca/force"] = {**golden["/ltca/force"],
+                                    "max": golden["/ltca/force"]["max"] * (1 + 1e-6)}
+    assert adopt_attributes(changed_value, path)
+    assert path.read_bytes() == before
+    restamped = {**golden, "/ltca@title": "a new title"}
+    assert adopt_attributes(restamped, path) == []
+    adopted = load(path)
+    assert adopted["/ltca@title"] == "a new title"
+    assert {k: v for k, v in adopted.items() if "@" not in k} == \
+        {k: v for k, v in golden.items() if "@" not in k}
 
 
 _OTHER_KERNEL_RUN = PRINT_KERNEL + """
