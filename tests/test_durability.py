@@ -123,3 +123,29 @@ def test_bad_inputs_named():
         SNCurve(1500, 5e7, 1e5, 1.6).damage(np.nan, 1.0)
     with pytest.raises(InputError, match="root_stress"):
         peak_fillet_stress(np.ones((2, 2)))
+
+
+def test_rated_curve_and_one_curve_per_bin():
+    """SNCurve.rated: the allowable times the rating's long-life factors at the knee, the
+    static stress without those of them that are 1 there (ISO 6336-2: Z_L Z_v Z_R = 1 for
+    the static stress) — both ends by hand; cumulative_damage takes one curve per bin and
+    equals each bin's own damage (identity), and refuses a count that is not one per bin."""
+    from contact.durability import SNCurve, cumulative_damage
+    from geometry.core.errors import InputError
+
+    bare = SNCurve(1500.0, 5e7, 1e5, 1.6)
+    rated = bare.rated(1.2 * 0.9, 0.9)
+    assert rated.allowable == pytest.approx(1620.0, rel=1e-15)
+    assert rated.static_stress == pytest.approx(1500.0 * 1.2 * 1.6, rel=1e-15)
+    assert rated.knee_cycles == bare.knee_cycles and rated.static_cycles == bare.static_cycles
+    # on the sloped line at the static end and the knee: the cycles of the two ends
+    n = rated.cycles_to_failure(np.array([rated.static_stress, rated.allowable]))
+    np.testing.assert_allclose(n, [1e5, 5e7], rtol=1e-12)
+    stress = np.array([[1700.0, 0.0], [1900.0, 1650.0]])
+    per_bin = cumulative_damage(stress, np.array([1e6, 2e6]), [bare, rated])
+    np.testing.assert_allclose(per_bin[0], bare.damage(stress[0], 1e6), rtol=1e-15)
+    np.testing.assert_allclose(per_bin[1], rated.damage(stress[1], 2e6), rtol=1e-15)
+    with pytest.raises(InputError, match="curve"):
+        cumulative_damage(stress, np.array([1e6, 2e6]), [bare])
+    with pytest.raises(InputError, match="static_influence"):
+        bare.rated(1.0, 0.0)

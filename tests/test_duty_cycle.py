@@ -168,17 +168,38 @@ def test_energy_balance_per_bin(one_bin):
         1 - float(ds["energy_lost"].sum()) / float(ds["energy_in"].sum()), rel=1e-15)
 
 
+def _rated(case, torque: float, speed: float, member: int):
+    """The rating's influence factors of one bin, from ISO 10300 at its torque and speed:
+    (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp, Z_L Z_v Z_R, Y_δ Y_R Y_X, Y_R Y_X) of ``member``."""
+    from contact.rating import iso10300_rating
+
+    r = iso10300_rating(case, [torque], speed).isel(torque=0, member=member)
+    z = float(r["Z_L"] * r["Z_speed"] * r["Z_R"])
+    y = float(r["Y_RrelT"] * r["Y_X"])
+    return (z * float(r["Z_X"] * r["Z_W"] * r["Z_K"] * r["Z_Hyp"]), z,
+            y * float(r["Y_deltarelT"]), y)
+
+
 def test_damage_of_one_bin_by_hand(case, one_bin):
-    """The flank damage is Σ n / N at the envelope's pressures (hand: Basquin by numpy), the
-    life the hours over the largest, located at its node; bending unavailable, said."""
+    """The flank damage is Σ n / N at the envelope's pressures on the rating's allowable of
+    the bin (issue 62: σ_Hlim Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp = σ_HP/Z_NT at the knee, Z_L Z_v
+    Z_R taken out at the static end 10⁵, ISO 6336-2; hand: Basquin by numpy with the
+    exponent of that line), the life the hours over the largest, located at its node;
+    bending unavailable, said."""
     duty, ds = one_bin
     c = sn_curves(case.pinion.material, "MQ")["contact"]
+    factor, zlvr, _, _ = _rated(case, 250.0, 1500.0, 0)
+    assert 0.95 < factor < 1.1 and factor != 1.0  # not the bare σ_Hlim
+    allowable = c.allowable * factor
+    m = math.log(c.knee_cycles / c.static_cycles) / math.log(c.static_life_factor / zlvr)
     p = ds["pressure_envelope"].values[0]
-    m = c.exponent
     n_pin = duty.revolutions[0]
-    ratio = np.where(p > 0, c.allowable / np.where(p > 0, p, 1.0), np.inf)
-    hand = np.where(p >= c.allowable, n_pin / (c.knee_cycles * ratio ** m),
+    ratio = np.where(p > 0, allowable / np.where(p > 0, p, 1.0), np.inf)
+    hand = np.where(p >= allowable, n_pin / (c.knee_cycles * ratio ** m),
                     n_pin / (c.knee_cycles * ratio ** (2 * m - 1)))
+    assert float(ds["contact_safety_factor"].sel(member="pinion")) == pytest.approx(
+        allowable / p.max(), rel=1e-12)
+    assert "rating's allowables" in ds.attrs["allowables"]
     np.testing.assert_allclose(ds["flank_damage"].sel(member="pinion").values[0], hand,
                                rtol=1e-12, atol=0)
     np.testing.assert_allclose(ds["flank_damage"].sel(member="gear").values[0],
@@ -220,7 +241,8 @@ def test_resume_and_twice_the_duration(case, one_bin, tmp_path):
 def test_bending_side_consumes_root_stress(case, one_bin):
     """With ``root_stress_peak`` in the bins (here built in the test, two bins: the same
     analysis at two durations) the root damage is Miner's sum by hand per fillet point,
-    one cycle per tooth mesh, the life hours / max damage, and S_F = σ_FE / peak stress."""
+    one cycle per tooth mesh, the life hours / max damage, and S_F = allowable / peak
+    stress, the allowable the rating's σ_FE Y_δ,relT Y_R,relT Y_X of the bin (σ_FP/Y_NT)."""
     from contact.study.duty_cycle import DutyInputs, duty_cycle_result
 
     _, ds = one_bin
@@ -236,10 +258,12 @@ def test_bending_side_consumes_root_stress(case, one_bin):
                      revolutions=[1e6, 3e6], miner_rule="elementary")
     out = duty_cycle_result(DutyInputs(case, duty, OPTIONS), bins)
     c = sn_curves(case.gear.material, "MQ")["bending"]
-    m = c.exponent
+    _, _, factor, yrx = _rated(case, 250.0, 1500.0, 1)  # the gear's Y_δ Y_R Y_X, Y_R Y_X
+    allowable = 850.0 * factor
+    m = math.log(c.knee_cycles / c.static_cycles) / math.log(c.static_life_factor / yrx)
     ratio = case.pinion.blank.teeth / case.gear.blank.teeth
-    hand = (1e6 * ratio / (c.knee_cycles * (850.0 / 900.0) ** m)
-            + 3e6 * ratio / (c.knee_cycles * (850.0 / 880.0) ** m))
+    hand = (1e6 * ratio / (c.knee_cycles * (allowable / 900.0) ** m)
+            + 3e6 * ratio / (c.knee_cycles * (allowable / 880.0) ** m))
     got = out["root_damage"].sel(member="gear").sum("bin").values
     assert got[2] == pytest.approx(hand, rel=1e-12)
     assert got[0] > 0 and float(out["root_damage"].sel(member="pinion")[:, 2].sum()) == 0.0
@@ -247,5 +271,5 @@ def test_bending_side_consumes_root_stress(case, one_bin):
         float(duty.hours.sum()) / got.max(), rel=1e-12)
     assert int(out["root_life_point"].sel(member="gear")) == 2
     assert float(out["bending_safety_factor"].sel(member="gear")) == pytest.approx(
-        850.0 / 900.0, rel=1e-15)  # the first bin is the peak-torque bin (argmax: first)
+        allowable / 900.0, rel=1e-12)  # the first bin is the peak-torque bin (argmax: first)
     assert out.attrs["bending"] == "available"

@@ -528,3 +528,79 @@ def test_cli_writes_the_rating_group(tmp_path, capsys):
             assert var.attrs.get("long_name") and var.attrs.get("clause"), name
         assert float(ds["sigma_H0"].isel(torque=0)) == pytest.approx(1194.5,
                                                                      rel=STRESS_TOLERANCE)
+
+
+def test_static_range_takes_the_film_factors_as_one():
+    """ISO 6336-2 (and ISO 10300-2 cl. 8 after it): Z_L Z_v Z_R are 1 for the static stress
+    and their calculated values at the knee, log-linear in N_L between; bending likewise
+    Y_R,relT and Y_X (ISO 6336-3). Sample 1 (Z_L Z_v Z_R = 0.992 · 0.974 · 0.930 = 0.899):
+    at N_L = 10⁵ (the contact curve's static end) σ_HP = σ_Hlim Z_NT,stat Z_K = 1500 · 1.6 ·
+    1.2 = 2880 N/mm², not 0.899 × that; at the knee and beyond, the TR's 1617.8; halfway in
+    log N_L, half the exponent; the long-life permissible cycles solve σ_HP(N) = S_min σ_H
+    on that curve."""
+    from contact.catalogue import resolve_case
+    from contact.rating.rating import case_rating_inputs
+
+    case = resolve_case("iso10300_30_sample1")
+    inputs = case_rating_inputs(case, None)
+
+    def rated(n):
+        return iso10300_rating(case, rating=dataclasses.replace(inputs, load_cycles=n)).isel(
+            torque=0)
+
+    long = rated(None)
+    zlvr = float(long["Z_L"][0] * long["Z_speed"][0] * long["Z_R"][0])
+    assert zlvr == pytest.approx(0.992 * 0.974 * 0.930, abs=2e-3)
+    static = rated(1e5)
+    assert static["sigma_HP"].values[0] == pytest.approx(1500.0 * 1.6 * 1.2, rel=1e-12)
+    assert rated(1e9)["sigma_HP"].values[0] == pytest.approx(1617.8, abs=0.05)
+    mid = rated(math.sqrt(1e5 * 5e7))  # halfway between static end and knee in log N_L
+    assert mid["sigma_HP"].values[0] == pytest.approx(
+        1500.0 * 1.2 * math.sqrt(1.6) * math.sqrt(zlvr), rel=1e-12)
+    # bending (pinion): Y_R,relT Y_X = 1 at the static end 10³, Y_δ,relT kept
+    yrx = float(long["Y_RrelT"][0] * long["Y_X"][0])
+    static_f = rated(1e3)
+    assert static_f["sigma_FP"].values[0] == pytest.approx(
+        long["sigma_FP"].values[0] * 2.5 / yrx, rel=1e-12)
+    # the permissible cycles land on the curve: σ_HP(N_H) = S_Hmin σ_H at a torque whose
+    # long-life S_H is 0.944 (sample 1's), pinion
+    n_h = float(long["permissible_cycles_pitting"].values[0])
+    assert 1e5 < n_h < 5e7
+    at = rated(n_h)
+    assert float(at["sigma_HP"][0]) == pytest.approx(
+        float(at["S_Hmin"]) * float(at["sigma_H"]), rel=1e-9)
+
+
+def test_dynamic_factor_warning_names_the_loads_in_the_main_resonance_range(caplog):
+    """The warning gives the N of the loads in the main resonance range (0.75, 1.25], not
+    the largest N of all torques (issue 62: 'N = 1.31 in the main resonance range' while
+    the loads in it had N = 1.06). Sample 1 at 30000 rpm: N = 3.38 (5 N·m, supercritical),
+    1.07 and 0.95 (50 and 300 N·m, main resonance) — the stiffness correction C_F of the
+    light load raises its N."""
+    import logging
+
+    with caplog.at_level(logging.WARNING, logger="contact.rating.factors"):
+        ds = iso10300_rating("iso10300_30_sample1", torque=[5.0, 50.0, 300.0], speed=30000.0)
+    n = ds["N"].values
+    assert n[0] > 1.5 and 0.75 < n[1] <= 1.25 and 0.75 < n[2] <= 1.25
+    text = " ".join(r.getMessage() for r in caplog.records if "resonance" in r.getMessage())
+    assert f"N = {n[1]:.3g}, {n[2]:.3g} in the main resonance range" in text
+    assert "at 2 of 3 loads" in text
+    assert f"{n[0]:.3g}" not in text
+
+
+def test_one_roughness_for_the_rating_and_the_ltca():
+    """A [rating] table without flank_roughness rates the flanks at the case's own Rq (the
+    LTCA's and the film's): Rz = 6 Ra (DIN 3990/3991's approximation) with Ra = √(2/π) Rq
+    (Gaussian heights), 4.79 Rq — Rz 3.83 µm for the default case's Rq 0.8 µm, not the
+    former default 8 µm; a table that gives it keeps it (the TR's samples: Rz 8, 3)."""
+    from contact.catalogue import resolve_case
+    from contact.rating.rating import RZ_PER_RQ, case_rating_inputs
+
+    assert RZ_PER_RQ == pytest.approx(6.0 * math.sqrt(2.0 / math.pi), rel=1e-15)
+    case = resolve_case(None)
+    assert "flank_roughness" not in case.extra["rating"]
+    rz = case_rating_inputs(case).flank_roughness
+    assert rz == pytest.approx((3.830, 3.830), abs=1e-3)
+    assert rz[0] == pytest.approx(RZ_PER_RQ * case.operating.roughness, abs=5e-4)
+    assert case_rating_inputs(resolve_case("iso10300_30_sample3")).flank_roughness == (3.0, 3.0)

@@ -190,8 +190,9 @@ def test_one_spelling_of_the_microradian(run_files):
 def test_durability_table_equals_the_file(run_files):
     """The scuffing and micropitting table: one row per torque whose cells are the file's
     /friction values at the table's decimals ("–" for the bundled oil's unknown λ_GFP),
-    then the standard's peak contact temperature and S_B from /rating/flash_temperature,
-    the reason for the missing safety said below it (docs/scuffing_micropitting.md)."""
+    then the standard's peak contact temperature and S_B from /rating/flash_temperature, as
+    written and with the lengthwise sliding, the spread of S_B per variant and the reason
+    for the missing safety said below it (docs/scuffing_micropitting.md)."""
     from contact.plots.report import DURABILITY_COLUMNS, render_report
 
     tree = read_netcdf(run_files[0], tree=True)
@@ -205,8 +206,11 @@ def test_durability_table_equals_the_file(run_files):
         for column in DURABILITY_COLUMNS:
             if column.key.startswith("iso_"):  # the standard's method, stored beside /rating
                 std = tree["rating/flash_temperature"].to_dataset()
-                value = float(std[column.key.removeprefix("iso_")].sel(
-                    torque=fr["torque"].values[i]))
+                name = column.key.removeprefix("iso_")
+                variant = "standard"
+                if name.startswith("lengthwise_"):
+                    name, variant = name.removeprefix("lengthwise_"), "lengthwise_sliding"
+                value = float(std[name].sel(torque=fr["torque"].values[i], variant=variant))
             else:
                 value = float(fr[column.key].values[i])
             cell = cells[column.key]
@@ -218,11 +222,21 @@ def test_durability_table_equals_the_file(run_files):
     notes = " ".join("".join(p.itertext()) for p in
                      doc.findall(".//h:section[@id='summary']//h:p[@class='note']", NS))
     assert "permissible_specific_film" in notes
+    page = "".join(doc.find(".//h:section[@id='summary']", NS).itertext())
+    std = tree["rating/flash_temperature"].to_dataset()
+    low = float(std["scuffing_safety_low"].sel(variant="standard").values[0])
+    high = float(std["scuffing_safety_high"].sel(variant="standard").values[0])
+    assert f"ISO/TS 6336-20 on the virtual gears: S_B {fr['torque'].values[0]:g} N·m " \
+        f"{low:.2f}–{high:.2f}" in page
+    assert "not a standard" in page and "film at θ_M" in page
+    assert "pressure / σ_H: the LTCA's peak Hertzian pressure" in page
+    assert "root stress / σ_F: the FE peak maximum principal tooth-root stress" in page
     # a file without the standard's method (no rating): its two cells say "–"
     bare = tree.copy()
     del bare["rating"]
     doc = _parse(render_report(bare, figures=[]))
     for row in doc.findall(".//h:table[@id='durability-table']/h:tbody/h:tr", NS):
         cells = {c.get("data-key"): c for c in row.findall("h:td", NS) if c.get("data-key")}
-        assert cells["iso_scuffing_safety"].text == "–"
-        assert cells["iso_contact_temperature_max"].text == "–"
+        for key in ("iso_scuffing_safety", "iso_contact_temperature_max",
+                    "iso_lengthwise_scuffing_safety", "iso_lengthwise_contact_temperature_max"):
+            assert cells[key].text == "–", key

@@ -352,9 +352,13 @@ def test_dataset_is_consistent_with_its_own_fields(ltca, fr):
     np.testing.assert_allclose(fr["scuffing_safety"],
                                (theta_s - 90.0) / (fr["contact_temperature_max"] - 90.0),
                                rtol=1e-14)
-    ra = math.sqrt(2 / math.pi) * 0.8
+    rq = fr.attrs["roughness_rq_um"]  # the case's Rq: λ_GF's roughness
+    ra = math.sqrt(2 / math.pi) * rq
     inlet = fr["film_thickness"] / ra
-    np.testing.assert_allclose(inlet, math.sqrt(math.pi) * fr["lambda_ratio"], rtol=1e-12)
+    # λ = h/(√2 Rq_film), the film's Rq (the same, or run in where the file says so)
+    rq_film = fr.attrs.get("roughness_effective_rq_um", rq)
+    np.testing.assert_allclose(inlet, math.sqrt(math.pi) * fr["lambda_ratio"] * rq_film / rq,
+                               rtol=1e-12)
     np.testing.assert_allclose(fr["specific_film_thickness_min_inlet"],
                                inlet.where(flank).min(("roll", "pair", "segment")), rtol=1e-14)
     np.testing.assert_allclose(fr["specific_film_thickness_min"],
@@ -532,7 +536,9 @@ def test_ltca_run_lines(fr):
         assert line.startswith(f"T_p {fr['torque'].values[i]:g} N m: peak contact temperature "
                                f"{float(fr['contact_temperature_max'][i]):.0f} degC")
         assert f"S_B {float(fr['scuffing_safety'][i]):.2f}" in line
-        assert f"least lambda_GF {float(fr['specific_film_thickness_min'][i]):.3f}" in line
+        assert (f"least lambda_GF (film at the bulk temperature theta_M, ISO/TS 6336-22) "
+                f"{float(fr['specific_film_thickness_min'][i]):.3f} (at the oil inlet "
+                f"{float(fr['specific_film_thickness_min_inlet'][i]):.3f})") in line
     assert lines[-2].startswith(f"scuffing temperature of the oil "
                                 f"{float(fr['scuffing_temperature']):.0f} degC")
     assert lines[-1].startswith("micropitting safety: NaN")
@@ -542,26 +548,35 @@ def test_ltca_run_lines(fr):
 def test_ltca_run_lines_with_the_standards_method(fr):
     """With a /rating group in the tree, each torque's line is followed by the standard's
     flash temperature method on the virtual cylindrical gears at the same oil, temperature
-    and roughness (friction.iso_flash_temperature; here a hand-made spur-like rating at the
-    file's torques)."""
+    and roughness, as written and with the hypoid's lengthwise sliding, each labelled, with
+    the spread of S_B (friction.iso_flash_temperature; here a hand-made spur-like rating
+    with v_g 1 m/s at the file's torques)."""
     from test_iso_flash_temperature import _rating
 
     from contact.commands.run import durability_lines, standard_scuffing
-    from friction.iso_flash_temperature import iso_flash_temperature_method
+    from friction.iso_flash_temperature import iso_flash_temperature_variants
 
-    rating = _rating(torque=fr["torque"].values)
+    rating = _rating(torque=fr["torque"].values, v_g=1.0)
     tree = xr.DataTree.from_dict({"friction": fr, "rating": rating})
     std = standard_scuffing(tree, fr)
-    expected = iso_flash_temperature_method(rating, lubricant="75W90", oil_temperature=90.0,
-                                            roughness=0.8)
+    expected = iso_flash_temperature_variants(rating, lubricant="75W90",
+                                              oil_temperature=90.0, roughness=0.8)
     xr.testing.assert_identical(std, expected)
     lines = durability_lines(fr, std)
-    assert len(lines) == 2 * fr.sizes["torque"] + 2
+    assert len(lines) == 3 * fr.sizes["torque"] + 2
     for i in range(fr.sizes["torque"]):
-        line = lines[2 * i + 1]
-        assert line.startswith("  the standard's flash temperature method")
-        assert f"{float(std['contact_temperature_max'][i]):.0f} degC" in line
-        assert f"S_B {float(std['scuffing_safety'][i]):.2f}" in line
+        for k, (variant, label) in enumerate((
+                ("standard", "  ISO/TS 6336-20 on the ISO 10300 virtual cylindrical gears "
+                             "(the standard): "),
+                ("lengthwise_sliding", "  the same with the hypoid's lengthwise sliding (not "
+                                       "a standard): "))):
+            line, one = lines[3 * i + 1 + k], std.sel(variant=variant).isel(torque=i)
+            assert line.startswith(label)
+            assert f"{float(one['contact_temperature_max']):.0f} degC" in line
+            assert (f"S_B {float(one['scuffing_safety']):.2f} "
+                    f"({float(one['scuffing_safety_low']):.2f}-"
+                    f"{float(one['scuffing_safety_high']):.2f} over the uncertain "
+                    "constants)") in line
     # no /rating, or one the method cannot use: no comparison
     assert standard_scuffing(xr.DataTree.from_dict({"friction": fr}), fr) is None
     bad = xr.DataTree.from_dict({"friction": fr, "rating": rating.drop_vars("F_vmt")})

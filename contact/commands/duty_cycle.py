@@ -98,8 +98,10 @@ def safety_lines(ds) -> list[str]:
              pair("local_contact_safety", i), pair("iso_contact_safety", i),
              pair("local_bending_safety", i), pair("iso_bending_safety", i))
             for i in range(ds.sizes["bin"])]
-    lines = ["safety factors per bin, pinion / gear: local (sigma_Hlim / peak flank "
-             "pressure, sigma_FE / peak fillet stress) beside the ISO 10300 rating's"
+    allow = ("sigma_HP/Z_NT, sigma_FP/Y_NT of the bin's rating" if iso
+             else "sigma_Hlim, sigma_FE")
+    lines = [f"safety factors per bin, pinion / gear: local ({allow} over the peak flank "
+             "pressure and the peak fillet stress) beside the ISO 10300 rating's"
              + ("" if bending else " (no local S_F: --no-root-stress)") + ":",
              tabulate(rows, headers=["bin", "T [N m]", "n [rpm]", "S_H local", "S_H ISO",
                                      "S_F local", "S_F ISO"], tablefmt="github")]
@@ -177,6 +179,8 @@ def run(args: argparse.Namespace) -> int:
         print(line)
     if "root_life" not in ds:
         print(f"bending side {ds.attrs['bending']}")
+    if ds.attrs.get("allowables"):
+        print_wrapped(f"allowables: {ds.attrs['allowables']}")
     for line in safety_lines(ds):
         print(line)
     from contact.commands.run import print_verdict

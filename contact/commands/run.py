@@ -221,7 +221,8 @@ def run(args: argparse.Namespace) -> int:
         options=opts,
         deviations=devs,
         operating=False if operating is None else operating,
-        progress=not args.no_progress,
+        # a bar on a terminal, plain lines in a log (the LTCA and a first FE build)
+        progress=args.progress,
         root_stress=args.root_stress,
     )
     if rating is not None:
@@ -394,6 +395,8 @@ def rating_lines(tree, why: str = "") -> list[str]:
              tabulate(rows, headers=["T_p [N m]", "member", "sigma_H0", "sigma_H",
                                      "p_max flank", "p_max/sigma_H", "sigma_F0", "sigma_F",
                                      "FE root", "FE/sigma_F"], tablefmt="github"),
+             side["pressure_to_sigma_H"].attrs["comment"] + ".",
+             side["root_stress_to_sigma_F"].attrs["comment"] + ".",
              "ISO safety factors: " + "; ".join(
                  f"{t:g} N m S_H {s_h[i]:.2f}, S_F {s_f[i, 0]:.2f} / {s_f[i, 1]:.2f}"
                  for i, t in enumerate(ds["torque"].values))
@@ -497,16 +500,17 @@ def root_stress_rows(ltca) -> list[tuple[str, ...]]:
 
 def standard_scuffing(tree, friction):
     """The standard's flash-temperature method on the virtual cylindrical gears of the
-    tree's ``/rating`` group, at the efficiency stage's oil, temperature and roughness
-    (:func:`friction.iso_flash_temperature.iso_flash_temperature_method`), or None where the
-    tree has no ``/rating`` or the method cannot be applied (the reason logged)."""
+    tree's ``/rating`` group and its hypoid lengthwise-sliding variant, with the spread of
+    S_B, at the efficiency stage's oil, temperature and roughness
+    (:func:`friction.iso_flash_temperature.iso_flash_temperature_variants`), or None where
+    the tree has no ``/rating`` or the method cannot be applied (the reason logged)."""
     if friction is None or "rating" not in tree.children:
         return None
-    from friction.iso_flash_temperature import iso_flash_temperature_method
+    from friction.iso_flash_temperature import iso_flash_temperature_variants
     from geometry.core.errors import InputError
 
     try:
-        return iso_flash_temperature_method(
+        return iso_flash_temperature_variants(
             tree["rating"].to_dataset(), lubricant=str(friction.attrs["lubricant"]),
             oil_temperature=float(friction.attrs["inlet_temperature_degC"]),
             roughness=float(friction.attrs["roughness_rq_um"]))
@@ -538,6 +542,7 @@ def durability_lines(friction, standard=None) -> list[str]:
         return []
     lines = []
     theta_s = float(friction["scuffing_temperature"])
+    inlet = friction.get("specific_film_thickness_min_inlet")
     for i, t in enumerate(friction["torque"].values):
         s_b = float(friction["scuffing_safety"].values[i])
         s_l = float(friction["micropitting_safety"].values[i])
@@ -545,17 +550,13 @@ def durability_lines(friction, standard=None) -> list[str]:
             f"T_p {t:g} N m: peak contact temperature "
             f"{float(friction['contact_temperature_max'].values[i]):.0f} degC (flash "
             f"{float(friction['flash_temperature_max'].values[i]):.0f} K), scuffing safety "
-            f"S_B {_number(s_b)}, least lambda_GF "
-            f"{float(friction['specific_film_thickness_min'].values[i]):.3f}"
+            f"S_B {_number(s_b)}, least lambda_GF (film at the bulk temperature theta_M, "
+            f"ISO/TS 6336-22) {float(friction['specific_film_thickness_min'].values[i]):.3f}"
+            + (f" (at the oil inlet {float(inlet.values[i]):.3f})" if inlet is not None
+               else "")
             + (f", S_lambda {s_l:.2f}" if math.isfinite(s_l) else ""))
         if standard is not None and t in standard["torque"].values:
-            iso = standard.sel(torque=t)
-            lines.append(
-                f"  the standard's flash temperature method on the virtual cylindrical gears "
-                f"(ISO/TS 6336-20): {float(iso['contact_temperature_max']):.0f} degC (flash "
-                f"{float(iso['flash_temperature_max']):.0f} K, mu_m "
-                f"{float(iso['mean_friction_coefficient']):.3f}), S_B "
-                f"{_number(float(iso['scuffing_safety']))}")
+            lines += _standard_lines(standard.sel(torque=t))
     if math.isfinite(theta_s):
         lines.append(f"scuffing temperature of the oil {theta_s:.0f} degC (FZG load stage "
                      f"{friction.attrs.get('fzg_load_stage', float('nan')):g}); temperatures "
@@ -566,6 +567,37 @@ def durability_lines(friction, standard=None) -> list[str]:
         if comment.startswith("NaN"):
             lines.append(f"{name.replace('_', ' ')}: {comment}")
     return lines
+
+
+#: how the console names the variants of the standard's flash temperature method
+STANDARD_VARIANT_LABELS = {
+    "standard": "ISO/TS 6336-20 on the ISO 10300 virtual cylindrical gears (the standard)",
+    "lengthwise_sliding": "the same with the hypoid's lengthwise sliding (not a standard)",
+}
+
+
+def _standard_lines(iso) -> list[str]:
+    """One line per variant of the standard's flash temperature method at one torque: peak
+    contact and flash temperature, μ_m, S_B and its spread (a file written before the
+    variants has one line)."""
+    if "variant" not in iso.dims:
+        return [f"  the standard's flash temperature method on the virtual cylindrical gears: "
+                f"{float(iso['contact_temperature_max']):.0f} degC, S_B "
+                f"{_number(float(iso['scuffing_safety']))}"]
+    out = []
+    for v in iso["variant"].values:
+        one = iso.sel(variant=v)
+        spread = ""
+        if "scuffing_safety_low" in one:
+            spread = (f" ({_number(float(one['scuffing_safety_low']))}-"
+                      f"{_number(float(one['scuffing_safety_high']))} over the uncertain "
+                      "constants)")
+        out.append(f"  {STANDARD_VARIANT_LABELS.get(str(v), str(v))}: "
+                   f"{float(one['contact_temperature_max']):.0f} degC (flash "
+                   f"{float(one['flash_temperature_max']):.0f} K, mu_m "
+                   f"{float(one['mean_friction_coefficient']):.3f}), S_B "
+                   f"{_number(float(one['scuffing_safety']))}{spread}")
+    return out
 
 
 def _number(value: float, decimals: int = 2) -> str:

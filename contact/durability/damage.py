@@ -20,6 +20,8 @@ pressure_envelopes   peak pressure of a tooth mesh on the gear grid, flank and e
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from contact.durability.sn_curve import SNCurve
@@ -110,8 +112,9 @@ def member_cycles(pinion_revolutions: np.ndarray, pinion_teeth: int, gear_teeth:
     return {"pinion": n, "gear": n * pinion_teeth / gear_teeth}
 
 
-def cumulative_damage(stress: np.ndarray, cycles: np.ndarray, curve: SNCurve,
-                      rule: str = "modified") -> np.ndarray:
+def cumulative_damage(stress: np.ndarray, cycles: np.ndarray,
+                      curve: SNCurve | Sequence[SNCurve], rule: str = "modified"
+                      ) -> np.ndarray:
     """Miner's cumulative damage at every point over the bins.
 
     Parameters
@@ -120,7 +123,9 @@ def cumulative_damage(stress: np.ndarray, cycles: np.ndarray, curve: SNCurve,
         Peak stress of one load cycle at each point in each bin (0 where unloaded).
     cycles : array_like (NB,) — [1]
         Load cycles of a point in each bin.
-    curve : SNCurve
+    curve : SNCurve or sequence of NB SNCurve
+        One curve for every bin, or one per bin (the rating's allowables depend on the
+        bin's speed: :meth:`SNCurve.rated`).
     rule : str
         Miner's variant (:data:`contact.durability.sn_curve.MINER_RULES`).
 
@@ -139,7 +144,12 @@ def cumulative_damage(stress: np.ndarray, cycles: np.ndarray, curve: SNCurve,
     if n.ndim != 1 or s.shape[:1] != n.shape:
         raise InputError(f"cycles: one number per bin, got shape {n.shape} for stresses "
                          f"of shape {s.shape}")
-    return curve.damage(s, n.reshape((-1,) + (1,) * (s.ndim - 1)), rule)
+    if isinstance(curve, SNCurve):
+        return curve.damage(s, n.reshape((-1,) + (1,) * (s.ndim - 1)), rule)
+    curves = list(curve)
+    if len(curves) != n.size:
+        raise InputError(f"curve: one S-N curve per bin, got {len(curves)} for {n.size} bins")
+    return np.stack([c.damage(s[b], n[b], rule) for b, c in enumerate(curves)])
 
 
 def peak_fillet_stress(root_stress: np.ndarray) -> np.ndarray:

@@ -112,6 +112,44 @@ class SNCurve:
         """The stress [MPa] at the static end: life factor × allowable."""
         return self.static_life_factor * self.allowable
 
+    def rated(self, allowable_factor: float, static_influence: float = 1.0) -> SNCurve:
+        """The curve of a rating's permissible stress: the allowable times the rating's
+        long-life influence factors, those of them that are 1 for the static stress taken
+        out at the static end.
+
+        Parameters
+        ----------
+        allowable_factor : float — [1]
+            σ_HP/(σ_Hlim Z_NT) at long life (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp of ISO 10300-2),
+            or σ_FP/(σ_FE Y_NT) (Y_δ,relT Y_R,relT Y_X of ISO 10300-3), > 0.
+        static_influence : float — [1]
+            The part of ``allowable_factor`` that is 1 for the static stress (Z_L Z_v Z_R;
+            Y_R,relT Y_X), > 0.
+
+        Returns
+        -------
+        SNCurve
+            Allowable × ``allowable_factor`` at the knee; at the static end the static
+            life factor × allowable × ``allowable_factor`` / ``static_influence``; the
+            straight line in log-log axes between (a new exponent).
+
+        Raises
+        ------
+        InputError
+            A non-positive factor, or one that leaves the static end at or below the
+            knee's stress (named).
+
+        Notes
+        -----
+        ISO 6336-2:2019 cl. 5 and ISO 6336-3:2019 (the influence factors of the static and
+        the reference stress; ISO 10300-2/-3:2014 cl. 8 follow them), through
+        :func:`contact.rating.pitting.long_life_share`.
+        """
+        f = real("allowable_factor", allowable_factor, low=0.0, low_open=True, unit="1")
+        z = real("static_influence", static_influence, low=0.0, low_open=True, unit="1")
+        return SNCurve(self.allowable * f, self.knee_cycles, self.static_cycles,
+                       self.static_life_factor / z, self.kind, self.source)
+
     def scaled(self, factor: float) -> SNCurve:
         """The curve of the same allowable and exponent with its constant σ^m N scaled.
 

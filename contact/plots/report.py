@@ -140,13 +140,21 @@ SUMMARY_COLUMNS: tuple[SummaryColumn, ...] = (
 )
 
 
-def _standard(name: str):
+def _standard(name: str, variant: str = "standard"):
     """A column value: ``name`` of the standard's flash temperature method
-    (``/rating/flash_temperature``) at the torque of the friction stage's index (NaN where
-    the file has no such group or the method did not run at that torque)."""
+    (``/rating/flash_temperature``), its ``variant`` (``standard`` or
+    ``lengthwise_sliding``), at the torque of the friction stage's index (NaN where the
+    file has no such group or variant, or the method did not run at that torque; a file
+    written before the variants has the lengthwise one alone)."""
     def value(groups: Mapping[str, xr.Dataset | None], i: int) -> float:
         ds, fr = groups.get("standard_scuffing"), groups.get("friction")
         if ds is None or fr is None or name not in ds:
+            return math.nan
+        if "variant" in ds.dims:
+            if variant not in ds["variant"].values:
+                return math.nan
+            ds = ds.sel(variant=variant)
+        elif variant != "lengthwise_sliding":
             return math.nan
         match = np.flatnonzero(ds["torque"].values == fr["torque"].values[i])
         return float(ds[name].values[match[0]]) if match.size else math.nan
@@ -166,15 +174,41 @@ DURABILITY_COLUMNS: tuple[SummaryColumn, ...] = (
                   _var("friction", "contact_temperature_max")),
     SummaryColumn("scuffing_safety", "scuffing safety S_B", "1", 2,
                   _var("friction", "scuffing_safety")),
-    SummaryColumn("specific_film_thickness_min", "least λ_GF", "1", 3,
+    SummaryColumn("specific_film_thickness_min", "least λ_GF (film at θ_M)", "1", 3,
                   _var("friction", "specific_film_thickness_min")),
     SummaryColumn("micropitting_safety", "micropitting safety S_λ", "1", 2,
                   _var("friction", "micropitting_safety")),
-    SummaryColumn("iso_contact_temperature_max", "ISO/TS 6336-20: peak θ_B", "°C", 0,
-                  _standard("contact_temperature_max")),
-    SummaryColumn("iso_scuffing_safety", "ISO/TS 6336-20: S_B", "1", 2,
+    SummaryColumn("iso_contact_temperature_max", "ISO/TS 6336-20, virtual gears: peak θ_B",
+                  "°C", 0, _standard("contact_temperature_max")),
+    SummaryColumn("iso_scuffing_safety", "ISO/TS 6336-20, virtual gears: S_B", "1", 2,
                   _standard("scuffing_safety")),
+    SummaryColumn("iso_lengthwise_contact_temperature_max",
+                  "with lengthwise sliding (not a standard): peak θ_B", "°C", 0,
+                  _standard("contact_temperature_max", "lengthwise_sliding")),
+    SummaryColumn("iso_lengthwise_scuffing_safety",
+                  "with lengthwise sliding (not a standard): S_B", "1", 2,
+                  _standard("scuffing_safety", "lengthwise_sliding")),
 )
+
+#: how the page names the variants of the standard's method in the spread of S_B
+_VARIANT_NAMES = {"standard": "ISO/TS 6336-20 on the virtual gears",
+                  "lengthwise_sliding": "with lengthwise sliding"}
+
+
+def _scuffing_spread(standard: xr.Dataset | None) -> list[str]:
+    """Per variant the spread of the standard's S_B over its uncertain constants
+    (``scuffing_safety_low``/``_high``), one line each; [] where the file has none."""
+    if standard is None or "scuffing_safety_low" not in standard:
+        return []
+    out = []
+    for v in standard["variant"].values:
+        one = standard.sel(variant=v)
+        cells = ", ".join(
+            f"{t:g} N·m {_num(one['scuffing_safety_low'].values[i]):.2f}–"
+            f"{_num(one['scuffing_safety_high'].values[i]):.2f}"
+            for i, t in enumerate(standard["torque"].values))
+        out.append(f"{_VARIANT_NAMES.get(str(v), str(v))}: S_B {cells}")
+    return out
 
 #: what each optional group gives, said on the page when the file lacks it
 ABSENT = {
@@ -254,7 +288,7 @@ def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None,
              for name in ("scuffing_safety", "micropitting_safety")
              if str(fr[name].attrs.get("comment", "")).startswith("NaN")]
     return {"columns": [(c.heading, c.unit) for c in DURABILITY_COLUMNS], "rows": rows,
-            "oil": oil, "notes": notes,
+            "oil": oil, "notes": notes, "spread": _scuffing_spread(standard),
             "source": str(fr.attrs.get("durability_source", ""))}
 
 
@@ -287,7 +321,14 @@ def _rating(tree: xr.DataTree, lt: xr.Dataset | None) -> dict | None:
                        f"(first torque), K_Hβ {_num(ra['K_Hbeta'].values):.3f}, S_H,min "
                        f"{_num(ra['S_Hmin'].values):g}, S_F,min "
                        f"{_num(ra['S_Fmin'].values):g}"),
-            "root_stress": "root_stress_max" in lt}
+            "root_stress": "root_stress_max" in lt,
+            "ratios": [page_units(side[k].attrs["comment"]).replace("sigma_", "σ_")
+                       .replace("_Hbeta", "_Hβ").replace("_Halpha", "_Hα")
+                       .replace("_Fbeta", "_Fβ").replace("_Falpha", "_Fα")
+                       .replace("sqrt", "√").replace("30-degree", "30°")
+                       .replace("p_max/σ_H", "pressure / σ_H")
+                       .replace("FE/σ_F", "root stress / σ_F")
+                       for k in ("pressure_to_sigma_H", "root_stress_to_sigma_F")]}
 
 
 def _basic_data(inputs_text: str) -> dict | None:

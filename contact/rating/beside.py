@@ -21,7 +21,6 @@ peaks of the actual contact at the case's misalignment; docs/rating.md discusses
 
 from __future__ import annotations
 
-import dataclasses
 import logging
 from collections.abc import Mapping
 from typing import Any
@@ -83,14 +82,30 @@ def analysis_rating(case, torque: Any, speed: float | None, flank: str | None = 
     if speed is None or not speed > 0.0:
         return None, ("ISO 10300 rating not computed: no pinion speed (the case's "
                       "[operating] pinion_speed is 0; give --speed)")
-    inputs = RatingInputs.from_mapping(table)
+    inputs = RatingInputs.from_mapping(table)  # a bad table is refused here, named
     if flank is not None and inputs.side is None:
         drive = case.pair.drive_flank
         pinion_flank = {"drive": drive,
                         "coast": "convex" if drive == "concave" else "concave"}.get(flank, flank)
-        inputs = dataclasses.replace(
-            inputs, side="drive" if pinion_flank == "concave" else "coast")
-    return iso10300_rating(case, torque, speed, rating=inputs), ""
+        table = {**table, "side": "drive" if pinion_flank == "concave" else "coast"}
+    # the table itself, so that the case fills what it leaves out (case_rating_inputs)
+    return iso10300_rating(case, torque, speed, rating=table), ""
+
+
+#: what the ratio of the LTCA's peak flank pressure to σ_H compares (console, report, file)
+PRESSURE_RATIO_NOTE = (
+    "p_max/sigma_H: the LTCA's peak Hertzian pressure on the flanks (the local elastic peak "
+    "of the actual contact at the case's misalignment and the nominal torque, no load "
+    "factors) over ISO 10300-2's contact stress sigma_H = sigma_H0 sqrt(K_A K_v K_Hbeta "
+    "K_Halpha) (the mean-point stress of the virtual cylindrical gears with the load "
+    "factors); p_max/sigma_H0 leaves the load factors out of both")
+#: what the ratio of the FE peak root stress to σ_F compares (console, report, file)
+ROOT_RATIO_NOTE = (
+    "FE/sigma_F: the FE peak maximum principal tooth-root stress over the fillets and the "
+    "mesh cycle (nominal torque, no load factors) over ISO 10300-3's tooth root stress "
+    "sigma_F = sigma_F0 K_A K_v K_Fbeta K_Falpha (the 30-degree tangent section of the "
+    "virtual cylindrical gears with the load factors); FE/sigma_F0 leaves the load factors "
+    "out of both")
 
 
 def rating_beside_ltca(rating: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
@@ -153,7 +168,7 @@ def rating_beside_ltca(rating: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
         "pressure_to_sigma_H0": data_var(T, p / s_h0, "1",
                                          "LTCA peak flank pressure / sigma_H0", clause=c2),
         "pressure_to_sigma_H": data_var(T, p / s_h, "1", "LTCA peak flank pressure / sigma_H",
-                                        clause=c2),
+                                        clause=c2, comment=PRESSURE_RATIO_NOTE),
         "sigma_F0": data_var(TM, s_f0, "MPa", "nominal tooth root stress sigma_F0",
                              clause=c3),
         "sigma_F": data_var(TM, s_f, "MPa", "tooth root stress sigma_F", clause=c3),
@@ -162,7 +177,7 @@ def rating_beside_ltca(rating: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
         "root_stress_to_sigma_F0": data_var(TM, fe / s_f0, "1",
                                             "FE peak root stress / sigma_F0", clause=c3),
         "root_stress_to_sigma_F": data_var(TM, fe / s_f, "1", "FE peak root stress / sigma_F",
-                                           clause=c3),
+                                           clause=c3, comment=ROOT_RATIO_NOTE),
     }
     coords = {"torque": data_var(T, t, "N m", "pinion torque T1"),
               "member": data_var(("member",), members, None, "member of the pair")}
@@ -186,10 +201,14 @@ def bin_ratings(case, torque: Any, speed: Any, flank: str | None = None
     Returns
     -------
     (xarray.Dataset or None, str)
-        Over ``bin`` (and ``member``): ``sigma_H`` [MPa] (bin), ``sigma_F`` [MPa],
-        ``S_H``, ``S_F`` [1] (bin, member), each with ``units``, ``long_name`` and
-        ``clause``, and ``""``; or None and the one line of :func:`analysis_rating` saying
-        why there is no rating.
+        Over ``bin`` (and ``member``): ``sigma_H`` [MPa] (bin), ``sigma_F``,
+        ``sigma_HP``, ``sigma_FP`` [MPa], ``S_H``, ``S_F`` [1] (bin, member), and for the
+        duty cycle's S-N curves the rating's long-life influence factors
+        ``contact_allowable_factor`` (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp),
+        ``contact_static_influence`` (Z_L Z_v Z_R), ``bending_allowable_factor``
+        (Y_δ,relT Y_R,relT Y_X) and ``bending_static_influence`` (Y_R,relT Y_X) [1]
+        (bin, member), each with ``units``, ``long_name`` and ``clause``, and ``""``; or
+        None and the one line of :func:`analysis_rating` saying why there is no rating.
 
     Raises
     ------
@@ -224,8 +243,34 @@ def bin_ratings(case, torque: Any, speed: Any, flank: str | None = None
                         "safety factor for pitting S_H of the bin", clause=c2),
         "S_F": data_var(BM, np.stack([r["S_F"].values for r in ratings]), "1",
                         "safety factor for bending S_F of the bin", clause=c3),
+        "sigma_HP": data_var(BM, np.stack([r["sigma_HP"].values for r in ratings]), "MPa",
+                             "permissible contact stress sigma_HP of the bin", clause=c2),
+        "sigma_FP": data_var(BM, np.stack([r["sigma_FP"].values for r in ratings]), "MPa",
+                             "permissible tooth root stress sigma_FP of the bin", clause=c3),
+        # the rating's allowables for the duty cycle's S-N curves (SNCurve.rated): the
+        # long-life influence factors, and the part of them that is 1 for the static stress
+        "contact_allowable_factor": data_var(BM, np.stack([_contact_factor(r)
+                                                           for r in ratings]), "1",
+                                             "sigma_HP / (sigma_Hlim Z_NT) at long life: Z_X "
+                                             "Z_L Z_v Z_R Z_W Z_K Z_Hyp of the bin", clause=c2),
+        "contact_static_influence": data_var(BM, np.stack([
+            (r["Z_L"] * r["Z_speed"] * r["Z_R"]).values for r in ratings]), "1",
+            "Z_L Z_v Z_R of the bin (1 for the static stress)", clause=c2),
+        "bending_allowable_factor": data_var(BM, np.stack([
+            (r["Y_deltarelT"] * r["Y_RrelT"] * r["Y_X"]).values for r in ratings]), "1",
+            "sigma_FP / (sigma_Flim Y_ST Y_NT) at long life: Y_delta,relT Y_R,relT Y_X of "
+            "the bin", clause=c3),
+        "bending_static_influence": data_var(BM, np.stack([
+            (r["Y_RrelT"] * r["Y_X"]).values for r in ratings]), "1",
+            "Y_R,relT Y_X of the bin (1 for the static stress)", clause=c3),
     }
     members = list(ratings[0]["member"].values)
     return xr.Dataset(out, coords={"member": data_var(("member",), members, None,
                                                       "member of the pair")},
                       attrs={"side": ratings[0].attrs.get("side", "")}), ""
+
+
+def _contact_factor(r: xr.Dataset) -> np.ndarray:
+    """Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp of one rating (σ_HP/(σ_Hlim Z_NT) at long life)."""
+    return (r["Z_X"] * r["Z_L"] * r["Z_speed"] * r["Z_R"] * r["Z_W"] * r["Z_K"]
+            * r["Z_Hyp"]).values

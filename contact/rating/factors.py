@@ -249,8 +249,8 @@ def dynamic_factor(N: ArrayLike, F_vmt: ArrayLike, K_A: float, b_v: float, f_pt:
     Notes
     -----
     Source: ISO 10300-1:2014 cl. 7 (Method B). ISO/TR 10300-30:2024 checks the subcritical
-    range (K = 0.589 of sample 3 fixes b_v, not b_v,eff, in B_p); a speed in the main
-    resonance range is logged as a warning (ISO: to be avoided).
+    range (K = 0.589 of sample 3 fixes b_v, not b_v,eff, in B_p); a load in the main
+    resonance range is logged as a warning naming its own N (ISO: to be avoided).
     """
     N, F_vmt = np.broadcast_arrays(np.asarray(N, float), np.asarray(F_vmt, float))
     c = dynamic_coefficients(eps_vg)
@@ -261,10 +261,14 @@ def dynamic_factor(N: ArrayLike, F_vmt: ArrayLike, K_A: float, b_v: float, f_pt:
     main = B_p * (c["c_v1"] + c["c_v2"]) + c["c_v4"] + 1.0
     sup = B_p * (c["c_v5"] + c["c_v6"]) + c["c_v7"]
     inter = sup + (main - sup) * (1.5 - N) / 0.25
-    if np.any((N > 0.75) & (N <= 1.25)):
-        log.warning("dynamic factor: resonance ratio N = %.3g in the main resonance range "
-                    "(0.75, 1.25] (ISO 10300-1: avoid; a Method A analysis is advised)",
-                    float(np.max(N)))
+    main_range = (N > 0.75) & (N <= 1.25)
+    if np.any(main_range):  # the N of each load in the range, not the largest of all
+        log.warning("dynamic factor: resonance ratio N = %s in the main resonance range "
+                    "(0.75, 1.25] at %d of %d loads (F_vmt %s N; ISO 10300-1: avoid; a "
+                    "Method A analysis is advised)",
+                    ", ".join(f"{n:.3g}" for n in N[main_range].ravel()),
+                    int(main_range.sum()), N.size,
+                    ", ".join(f"{f:.0f}" for f in F_vmt[main_range].ravel()))
     K_v = np.where(N <= 0.75, N * K + 1.0, np.where(N <= 1.25, main,
                                                      np.where(N < 1.5, inter, sup)))
     return K_v, K

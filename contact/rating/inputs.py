@@ -238,7 +238,9 @@ RATING_FIELDS: dict[str, tuple[str, str]] = {
     "contact_pattern": ("", "how the pattern was checked: 'full_load', 'light_load' "
                             "(default) or 'estimated'"),
     "nu40": ("mm2/s", "oil viscosity at 40 degC, in [2, 5000]; default: the case's oil"),
-    "flank_roughness": ("um", "Rz of the flanks [pinion, gear], in (0, 100], default 8"),
+    "flank_roughness": ("um", "Rz of the flanks [pinion, gear], in (0, 100]; default the "
+                        "case's [operating] roughness Rq as Rz = 6 sqrt(2/pi) Rq (8 without "
+                        "a case)"),
     "root_roughness": ("um", "Rz of the roots [pinion, gear], in (0, 100], default 16"),
     "quality_grade": ("", "ISO 6336-5 material quality 'ML', 'MQ' (default) or 'ME'"),
     "sigma_Hlim": ("MPa", "allowable contact stress number [pinion, gear], (0, 3000]; "

@@ -28,7 +28,9 @@ numbers were not checked against the printed text, the equations against ISO/TR
 
 σ_HP here is σ_H,lim Z_NT Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp, the permissible stress as the TR
 prints it (not divided by S_H,min); the safety factor S_H = σ_HP/σ_H is compared with
-S_H,min.
+S_H,min. Below the knee of the S–N curve Z_L Z_v Z_R enter as (Z_L Z_v Z_R)^s with s of
+:func:`long_life_share`: 1 in the static range (ISO 6336-2's static stress), their long-life
+values at the knee.
 """
 
 from __future__ import annotations
@@ -44,6 +46,7 @@ __all__ = [
     "hypoid_factor",
     "life_factor",
     "load_sharing_factor",
+    "long_life_share",
     "lubricant_factor",
     "mid_zone_factor",
     "nominal_contact_stress",
@@ -303,6 +306,41 @@ def life_factor(cycles: ArrayLike, knee_cycles: ArrayLike, static_cycles: ArrayL
     t = np.clip(np.log(knee / np.where(np.isnan(n), knee, n)) / np.log(knee / static),
                 0.0, 1.0)
     return z0 ** t
+
+
+def long_life_share(cycles: ArrayLike, knee_cycles: ArrayLike,
+                    static_cycles: ArrayLike) -> np.ndarray:
+    """How much of the long-life influence factors a number of load cycles takes — [1].
+
+    Parameters
+    ----------
+    cycles : array_like — [1]
+        Load cycles N_L; NaN: long life.
+    knee_cycles, static_cycles : array_like — [1]
+        Ends of the sloped part of the S–N curve.
+
+    Returns
+    -------
+    ndarray — [1]
+        1 from the knee on (and for NaN), 0 at the static end and below, log-linear in
+        N_L between: s = log(N_L/N_static)/log(N_knee/N_static). The permissible stress
+        takes Z_L Z_v Z_R (and Y_R,relT Y_X for bending) as (product)^s: their long-life
+        values at the knee, 1 in the static range.
+
+    Notes
+    -----
+    Source: ISO 6336-2:2019 cl. 5 and Table 4 (and ISO 6336-3:2019 for bending: Y_R,relT
+    and Y_X of the static stress are 1), which ISO 10300-2/-3:2014 cl. 8 follow for the
+    life factor: the influence factors of the lubricant film, speed and roughness are 1.0
+    for the static stress, their calculated values for the reference (long-life) stress,
+    and the permissible stress of limited life is interpolated log-linearly between the
+    two. The notch sensitivity Y_δ,relT keeps its long-life value here (its static value
+    of ISO 6336-3 is not modelled).
+    """
+    n, knee, static = np.broadcast_arrays(
+        *(np.asarray(x, float) for x in (cycles, knee_cycles, static_cycles)))
+    n = np.where(np.isnan(n), knee, n)
+    return np.clip(np.log(n / static) / np.log(knee / static), 0.0, 1.0)
 
 
 def permissible_cycles(required_factor: ArrayLike, knee_cycles: ArrayLike,

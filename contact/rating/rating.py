@@ -19,6 +19,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import logging
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -158,8 +159,13 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
     Z_NT = pitting.life_factor(cycles, *_curve(materials, "contact_curve"))
     sigma_H0 = pitting.nominal_contact_stress(F["F_n"], vg.l_bm, vg.rho_rel, Z_MB, Z_LS, Z_E)
     sigma_H = pitting.contact_stress(sigma_H0, K_A, K_v, K_Hb, alpha_["K_Halpha"])
-    sigma_HP = pitting.permissible_contact_stress(s_Hlim, Z_NT, Z_X, Z_L, Z_v, Z_R, Z_W,
-                                                  Z_Hyp)
+    # Z_L Z_v Z_R: their long-life values at the knee, 1 in the static range (ISO 6336-2)
+    knee_H, static_H, z0_H = _curve(materials, "contact_curve")
+    share_H = pitting.long_life_share(cycles, knee_H, static_H)
+    sigma_HP = pitting.permissible_contact_stress(s_Hlim, Z_NT, Z_X, Z_L ** share_H,
+                                                  Z_v ** share_H, Z_R ** share_H, Z_W, Z_Hyp)
+    sigma_HP_long = pitting.permissible_contact_stress(s_Hlim, 1.0, Z_X, Z_L, Z_v, Z_R, Z_W,
+                                                       Z_Hyp)
 
     # ISO 10300-3: bending
     rho_a0 = np.array(inputs.edge_radius)
@@ -179,21 +185,26 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
                     for q, m in zip(q_s, materials, strict=True)])
     Y_X = np.full(2, bending.size_factor(data.m_mn))
     Y_NT = pitting.life_factor(cycles, *_curve(materials, "bending_curve"))
+    knee_F, static_F, y0_F = _curve(materials, "bending_curve")
+    share_F = pitting.long_life_share(cycles, knee_F, static_F)
     sigma_F0 = bending.nominal_root_stress(F["F_vmt"][:, None], vg.b_v, data.m_mn, form.Y_Fa,
                                            Y_Sa, Y_eps, Y_BS, Y_LS)
     sigma_F = bending.root_stress(sigma_F0, K_A, K_v[:, None], K_Fb,
                                   alpha_["K_Falpha"][:, None])
-    sigma_FP = bending.permissible_root_stress(s_Flim, Y_NT, Y_d, Y_R, Y_X)
+    sigma_FP = bending.permissible_root_stress(s_Flim, Y_NT, Y_d, Y_R ** share_F,
+                                               Y_X ** share_F)
+    sigma_FP_long = bending.permissible_root_stress(s_Flim, 1.0, Y_d, Y_R, Y_X)
 
     # the load cycles each torque may run where its long-life safety is below the minimum
-    # (pinion cycles N_L1; the gear's are N_L1 z1/z2)
+    # (pinion cycles N_L1; the gear's are N_L1 z1/z2): on the sloped part the permissible
+    # stress rises as (static factor / the influence factors that fall to 1 there)^t
     to_pinion = np.array([1.0, data.z2 / data.z1])
-    S_H_long = sigma_HP[None, :] / Z_NT[None, :] / sigma_H[:, None]
-    S_F_long = sigma_FP[None, :] / Y_NT[None, :] / sigma_F
-    N_H = pitting.permissible_cycles(inputs.min_safety_pitting / S_H_long,
-                                     *_curve(materials, "contact_curve")) * to_pinion
-    N_F = pitting.permissible_cycles(inputs.min_safety_bending / S_F_long,
-                                     *_curve(materials, "bending_curve")) * to_pinion
+    S_H_long = sigma_HP_long[None, :] / sigma_H[:, None]
+    S_F_long = sigma_FP_long[None, :] / sigma_F
+    N_H = pitting.permissible_cycles(inputs.min_safety_pitting / S_H_long, knee_H, static_H,
+                                     z0_H / (Z_L * Z_v * Z_R)) * to_pinion
+    N_F = pitting.permissible_cycles(inputs.min_safety_bending / S_F_long, knee_F, static_F,
+                                     y0_F / (Y_R * Y_X)) * to_pinion
 
     values = dict(
         N_H=N_H, N_F=N_F,
@@ -462,6 +473,12 @@ def case_gear_data(case):
     return gear_data_from_blank(blank), blank
 
 
+#: Rz per Rq of the flanks [1]: Rz = 6 Ra, the approximation of DIN 3990/3991 that gear
+#: rating programs use to convert the mean roughness depth (e.g. FVA's, adoc.fva-service.de,
+#: attribute 391), with Ra = √(2/π) Rq of Gaussian heights (friction.micropitting): 4.79
+RZ_PER_RQ = 6.0 * math.sqrt(2.0 / math.pi)
+
+
 def case_rating_inputs(case, rating: RatingInputs | Mapping[str, Any] | None = None
                        ) -> RatingInputs:
     """A case's rating inputs, completed from the case where the table leaves them out.
@@ -476,8 +493,11 @@ def case_rating_inputs(case, rating: RatingInputs | Mapping[str, Any] | None = N
     -------
     RatingInputs
         With ``nu40`` (the case's oil at 40 °C), ``edge_radius`` (the edge radii of the
-        blades that cut the rated flanks) and ``side`` (ISO's drive side when the pinion's
-        concave flank drives) filled in.
+        blades that cut the rated flanks), ``side`` (ISO's drive side when the pinion's
+        concave flank drives) and, where the table leaves ``flank_roughness`` out, the
+        flanks' Rz from the case's ``[operating] roughness`` Rq (Rz = 6 Ra = 6 √(2/π) Rq,
+        :data:`RZ_PER_RQ`: the rating's Z_R and the LTCA's film then see one roughness)
+        filled in.
 
     Raises
     ------
@@ -485,16 +505,21 @@ def case_rating_inputs(case, rating: RatingInputs | Mapping[str, Any] | None = N
         No ``[rating]`` table, a bad field (``rating.<field>``), or ν40 neither given nor
         obtainable from the case's oil (``rating.nu40``).
     """
+    given: Mapping[str, Any] = {}
     if rating is None:
         table = case.extra.get("rating")
         if table is None:
             raise InputError("rating: the case has no [rating] table (at least "
                              "application_factor, mounting and single_pitch_deviation or "
                              "accuracy_grade; docs/rating.md)")
-        rating = RatingInputs.from_mapping(table)
+        rating, given = RatingInputs.from_mapping(table), table
     elif isinstance(rating, Mapping):
-        rating = RatingInputs.from_mapping(rating)
+        rating, given = RatingInputs.from_mapping(rating), rating
     fill: dict[str, Any] = {}
+    if given and "flank_roughness" not in given:
+        # one roughness for the rating and the LTCA: the case's Rq as Rz (RZ_PER_RQ)
+        rz = round(RZ_PER_RQ * float(case.operating.roughness), 3)
+        fill["flank_roughness"] = (rz, rz)
     if rating.side is None:
         fill["side"] = "drive" if case.pair.drive_flank == "concave" else "coast"
     side = fill.get("side", rating.side)

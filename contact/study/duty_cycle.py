@@ -297,8 +297,30 @@ def _cycle(duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
             "energy_out": e_out}
 
 
-def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
-    """Damage per flank and fillet point, life and safety factors (the /duty_cycle vars)."""
+def _rated_curves(curve, rated: xr.Dataset | None, kind: str, k: int):
+    """The S-N curve of each bin on the rating's allowables (``rated``: the bins'
+    :func:`contact.rating.bin_ratings`; ``kind`` contact or bending, member index ``k``):
+    :meth:`contact.durability.SNCurve.rated` with the bin's long-life influence factors
+    (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp; Y_δ,relT Y_R,relT Y_X), those that are 1 for the static
+    stress taken out at the static end (ISO 6336-2/-3); the material's bare curve, one for
+    every bin, without a rating."""
+    if rated is None:
+        return curve
+    f = rated[f"{kind}_allowable_factor"].values[:, k]
+    z = rated[f"{kind}_static_influence"].values[:, k]
+    return [curve.rated(float(a), float(b)) for a, b in zip(f, z, strict=True)]
+
+
+def _peak(curves, b: int):
+    """The curve of bin ``b`` (one curve for all bins, or one per bin)."""
+    return curves[b] if isinstance(curves, list) else curves
+
+
+def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset,
+                rated: xr.Dataset | None = None) -> dict[str, Any]:
+    """Damage per flank and fillet point, life and safety factors (the /duty_cycle vars),
+    on the rating's allowables of each bin where ``rated`` (the bins' ratings) is given,
+    else on the material's bare σ_Hlim and σ_FE."""
     if np.any(ds["status"].values == 2):
         bad = int(np.argmax(ds["status"].values == 2))
         from contact.errors import AnalysisFailedError
@@ -314,58 +336,77 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
     for m in members:
         mat = case.member(m).material
         curves = sn_curves(mat, duty.grade)
+        k = members.index(m)
+        contact = _rated_curves(curves["contact"], rated, "contact", k)
+        bend = _rated_curves(curves["bending"], rated, "bending", k)
         env = ds["pressure_envelope"].values
-        d = cumulative_damage(env, cycles[m], curves["contact"], duty.miner_rule)
+        d = cumulative_damage(env, cycles[m], contact, duty.miner_rule)
         out[f"flank_damage_{m}"] = d
         total = d.sum(axis=0)
         life, idx = life_at_first_failure(total, hours)
         out[f"flank_life_{m}"] = life
         out[f"flank_location_{m}"] = (float(ds["u"].values[idx[0]]),
                                       float(ds["v"].values[idx[1]]))
-        out[f"contact_safety_{m}"] = (curves["contact"].allowable
+        out[f"contact_safety_{m}"] = (_peak(contact, peak_bin).allowable
                                       / float(env[peak_bin].max()))
-        out[f"contact_allowable_{m}"] = curves["contact"].allowable
-        out[f"static_exceeded_{m}"] = bool(np.any(curves["contact"].beyond_static(env)))
+        out[f"contact_allowable_{m}"] = _peak(contact, peak_bin).allowable
+        out[f"static_exceeded_{m}"] = bool(any(
+            np.any(_peak(contact, b).beyond_static(env[b])) for b in range(env.shape[0])))
         if "root_stress_peak" in ds:
-            k = members.index(m)
             root = ds["root_stress_peak"].values[:, k, :]
-            rd = cumulative_damage(root, cycles[m], curves["bending"], duty.miner_rule)
+            rd = cumulative_damage(root, cycles[m], bend, duty.miner_rule)
             out[f"root_damage_{m}"] = rd
             rlife, ridx = life_at_first_failure(rd.sum(axis=0), hours)
             out[f"root_life_{m}"] = rlife
             out[f"root_location_{m}"] = int(ridx[0])
-            out[f"bending_safety_{m}"] = (curves["bending"].allowable
+            out[f"bending_safety_{m}"] = (_peak(bend, peak_bin).allowable
                                           / max(float(root[peak_bin].max()), 1e-300))
     out["cycles"] = cycles
     out["peak_bin"] = peak_bin
     return out
 
 
-def _iso_rating(shared: DutyInputs, ds: xr.Dataset, members: list[str]
+def _bin_ratings(shared: DutyInputs) -> tuple[xr.Dataset | None, str]:
+    """The ISO 10300 rating of every bin (:func:`contact.rating.bin_ratings`), or None and
+    why (a bad [rating] table does not lose the bins' work: it is said)."""
+    from contact.rating import bin_ratings
+
+    try:
+        return bin_ratings(shared.case, shared.duty.torque, shared.duty.speed, shared.flank)
+    except InputError as exc:
+        return None, f"ISO 10300 rating not computed: {exc}"
+
+
+def _iso_rating(shared: DutyInputs, ds: xr.Dataset, members: list[str],
+                rated: tuple[xr.Dataset | None, str] | None = None
                 ) -> tuple[dict[str, Any], str]:
     """Per bin the local safety factors (σ_Hlim over the bin's peak flank pressure, σ_FE
     over its peak fillet stress) beside the ISO 10300 rating's S_H, S_F at the bin's torque
     and speed (:func:`contact.rating.bin_ratings`), and the line that says where the rating
     comes from or why it is absent (a bad [rating] table does not lose the bins' work: it
     is said there)."""
-    from contact.rating import bin_ratings
-
     duty, case = shared.duty, shared.case
+    iso, why = _bin_ratings(shared) if rated is None else rated
     curves = [sn_curves(case.member(m).material, duty.grade) for m in members]
     bm = ("bin", "member")
+    # the allowables at long life (life factor 1): the rating's of each bin where there is
+    # one (sigma_Hlim and sigma_FE times its influence factors), else the bare numbers
+    f_h = (iso["contact_allowable_factor"].values if iso is not None
+           else np.ones((duty.n_bins, len(members))))
+    f_f = (iso["bending_allowable_factor"].values if iso is not None
+           else np.ones((duty.n_bins, len(members))))
+    which = ("the rating's sigma_HP/Z_NT of the bin" if iso is not None else "sigma_Hlim")
     p = np.asarray(ds["pressure_max_flank"].values, float)
     out = {"local_contact_safety": data_var(bm, np.stack(
-        [c["contact"].allowable / p for c in curves], -1), "1",
-        "sigma_Hlim / peak flank contact pressure of the bin (life factor 1)")}
+        [c["contact"].allowable for c in curves])[None, :] * f_h / p[:, None], "1",
+        f"{which} / peak flank contact pressure of the bin (life factor 1)")}
     if "root_stress_peak" in ds:
         peak = np.asarray(ds["root_stress_peak"].values, float).max(axis=-1)  # bin, member
         out["local_bending_safety"] = data_var(bm, np.stack(
-            [c["bending"].allowable for c in curves])[None, :] / np.maximum(peak, 1e-300),
-            "1", "sigma_FE / peak tensile fillet stress of the bin (life factor 1)")
-    try:
-        iso, why = bin_ratings(case, duty.torque, duty.speed, shared.flank)
-    except InputError as exc:
-        iso, why = None, f"ISO 10300 rating not computed: {exc}"
+            [c["bending"].allowable for c in curves])[None, :] * f_f
+            / np.maximum(peak, 1e-300), "1",
+            ("the rating's sigma_FP/Y_NT" if iso is not None else "sigma_FE")
+            + " / peak tensile fillet stress of the bin (life factor 1)")
     if iso is None:
         return out, why
     for name, var in (("iso_contact_stress", "sigma_H"), ("iso_root_stress", "sigma_F"),
@@ -400,7 +441,8 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
     """
     duty, case = shared.duty, shared.case
     cyc = _cycle(duty, ds)
-    dur = _durability(case, duty, ds)
+    rated = _bin_ratings(shared)
+    dur = _durability(case, duty, ds, rated[0])
     members = ["pinion", "gear"]
     out = ds.drop_vars([v for v in ("pressure_envelope", "edge_pressure_envelope",
                                      "root_stress_peak") if v in ds])
@@ -452,7 +494,8 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
         "gear profile fraction of the flank point first reaching damage 1")
     out["contact_safety_factor"] = data_var(("member",), np.array(
         [dur[f"contact_safety_{m}"] for m in members]), "1",
-        "sigma_Hlim / peak contact pressure of the peak-torque bin (life factor 1)")
+        "allowable at long life (the rating's sigma_HP/Z_NT of the bin, else sigma_Hlim; "
+        "the attribute allowables) / peak contact pressure of the peak-torque bin")
     bending = "root_stress_peak" in ds
     if bending:
         out["root_stress_peak"] = ds["root_stress_peak"]
@@ -471,8 +514,9 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
             "fillet point first reaching damage 1")
         out["bending_safety_factor"] = data_var(("member",), np.array(
             [dur[f"bending_safety_{m}"] for m in members]), "1",
-            "sigma_FE / peak tensile fillet stress of the peak-torque bin")
-    iso, iso_note = _iso_rating(shared, ds, members)
+            "allowable at long life (the rating's sigma_FP/Y_NT of the bin, else sigma_FE; "
+            "the attribute allowables) / peak tensile fillet stress of the peak-torque bin")
+    iso, iso_note = _iso_rating(shared, ds, members, rated)
     out.update(iso)
     out = out.assign_coords(bin=("bin", np.arange(duty.n_bins),
                                  {"units": "1", "long_name": "duty-cycle bin"}),
@@ -501,6 +545,15 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
                                  "contact-grid point (u, v) in contact",
         "peak_bin": dur["peak_bin"],
         "iso_rating": iso_note,
+        "allowables": (
+            "the S-N curves of each bin on the ISO 10300 rating's allowables: sigma_Hlim "
+            "Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp and sigma_FE Y_delta,relT Y_R,relT Y_X of the "
+            "bin's speed at the knee (sigma_HP/Z_NT, sigma_FP/Y_NT), Z_L Z_v Z_R and "
+            "Y_R,relT Y_X taken as 1 at the static end (ISO 6336-2/-3), the life factor "
+            "Z_NT, Y_NT on the line between (contact.durability.SNCurve.rated)"
+            if rated[0] is not None else
+            "the material's bare sigma_Hlim and sigma_FE (no ISO 10300 rating: "
+            + rated[1] + ")"),
         "bins_resumed": int(ds.attrs.get("bins_resumed", 0)),
         "solver": solver_name(shared.options.solver),
         "flank": shared.flank or "drive",
