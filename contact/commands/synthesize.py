@@ -36,6 +36,11 @@ def register(sub) -> None:
                         "kolivand2009_fm_11x41_reference")
     output_option(p, default="<name>.toml, the design's name", what="case file (TOML)")
     progress_option(p)
+    p.add_argument("--no-development", dest="development", action="store_false",
+                   help="write the local synthesis of the [synthesis] prescriptions as they "
+                        "are, without developing the bearing under load (default: the "
+                        "drive flank's path angle, ellipse and relief are developed to the "
+                        "[development] targets, contact.optimize.development)")
     p.set_defaults(func=run_synthesize)
 
 
@@ -79,6 +84,11 @@ def resolve_basic(arg: str | None) -> Path:
     raise InputError(f"BASIC: no such file and no bundled basic design {name!r}; {hint}")
 
 
+def _say(line: str) -> None:
+    """A development progress line, at once (plain text: a log file reads it too)."""
+    print(line, flush=True)
+
+
 def write_text_atomic(path: Path, text: str) -> Path:
     """Write ``text`` to ``path`` through a temporary file in the same directory + rename."""
     path = Path(path)
@@ -109,8 +119,19 @@ def run_synthesize(args: argparse.Namespace) -> int:
         RatingInputs.from_mapping(basic.rating)
     steps = (StepLines("synthesize", SYNTHESIS_STEPS) if getattr(args, "progress", False)
              else None)
-    case, report = synthesize(basic, progress=steps)
+    development = None
+    if getattr(args, "development", True):
+        from contact.optimize.development import develop, targets_from_table
+
+        targets = targets_from_table(basic.development)  # refused before the work
+        development = develop(basic, targets=targets, progress=_say,
+                              synthesis_progress=steps)
+        case, report = development.case, development.report
+    else:
+        case, report = synthesize(basic, progress=steps)
     case, torque, torque_why = with_design_torque(case, basic.options.design_torque)
+    if development is not None:
+        case = development.recorded(case)
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))

@@ -1,0 +1,809 @@
+"""Synthesis to a development bearing: basic data → settings whose loaded pattern is released.
+
+Litvin's local synthesis (:mod:`geometry.synthesis`) makes the pinion from prescriptions at
+the mean point M (contact-path angle, TE level, contact-ellipse length, profile relief);
+it says nothing of the pattern under load, of the edges or of the mounting tolerances.
+The **development** closes that loop the way a gear engineer does on the test stand and in
+Gleason CAGE or Klingelnberg KIMoS: the prescriptions are varied until the loaded pattern
+is a production bearing (:class:`DevelopmentTargets`):
+
+* at light load (``light_load`` × the design torque) the pattern is about half the face
+  width long, its centre slightly towards the toe and at mid-height, and it stays clear of
+  toe, heel, tip and root;
+* at the design torque no edge carries more than ``max_edge_share`` of the torque and no
+  segment is plastic (at its contact-pressure limit);
+* the LTE peak-to-peak stays below ``max_lte`` at both torques;
+* the developed design is then checked at the mounting excursions ``offset_tolerance``
+  (ΔE = ±V) and ``mounting_tolerance`` (ΔP = ±H) — the V-H check's two directions
+  (:mod:`contact.study.vh_check`) at a typical assembly tolerance — and the result says
+  whether the pattern stays clear of toe and heel and the edges elastic there.
+
+Every design is the full synthesis (:func:`geometry.synthesis.case_synthesis.synthesize`)
+followed by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll positions, 12
+segments per curve, shell compliance, no root stress), summarised by
+:func:`contact.study.summary.point_summary`. The objective (:func:`development_score`) is a
+sum of squared, dimensionless shortfalls; it is minimised by Nelder–Mead
+(``scipy.optimize.minimize``, bounded) over a few synthesis inputs (:data:`VARIABLES`),
+which stops as soon as every target is met.
+
+Public names
+------------
+DevelopmentTargets   the targets (the ``[development]`` table of a basic file)
+targets_from_table   the targets from that table (file units), validated
+VARIABLES            the developed synthesis inputs and their default bounds
+COARSE_LTCA          the LTCA settings inside the loop
+development_score    objective, per-target shortfalls and whether all are met
+DevelopmentEvaluation, DevelopmentResult   one design, the whole development
+develop              run the development of a basic design
+design_torque_of     the torque the bearing is checked at
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import time
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from contact.ltca import LTCAOptions
+from geometry.case import Case
+from geometry.core.errors import InputError
+from geometry.core.validation import real
+from geometry.pair.assembly import Misalignment
+from geometry.synthesis.basic_design import (
+    FLANK_OPTION_UNITS,
+    BasicDesign,
+    flank_option_values,
+    with_flank_options,
+)
+
+__all__ = ["COARSE_LTCA", "VARIABLES", "DevelopmentEvaluation", "DevelopmentResult",
+           "DevelopmentTargets", "design_torque_of", "develop", "development_score",
+           "targets_from_table"]
+
+log = logging.getLogger(__name__)
+
+#: The developed synthesis inputs of the drive flank and their default bounds [file
+#: units, ``[synthesis]`` of docs/synthesis.md], in two stages as on the test stand: the
+#: **bearing** (path angle, ellipse length: re-synthesised, steps 3-6 of
+#: :mod:`geometry.synthesis.case_synthesis`) against the light-load pattern and the LTE,
+#: then the **relief** (:data:`RELIEF_NAMES`: the blade's toprem and flankrem only, step 7,
+#: no new synthesis) against the edges at the design torque. The path angle stays on the
+#: far side of the conjugate contact line (nearly lengthwise for a Formate pair, −10° to
+#: +25°); the relief within the 10–60 µm of automotive practice (Stadtfeld, *Handbook of
+#: Bevel and Hypoid Gears*, 1993, ch. 3; ``geometry.machine.relief``).
+VARIABLES: Mapping[str, tuple[float, float]] = {
+    "path_angle": (-80.0, -35.0),
+    "ellipse_length": (0.15, 0.75),
+    "tip_relief": (0.0, 60.0),
+    "root_relief": (0.0, 60.0),
+    "relief_start": (0.2, 0.7),
+}
+#: the relief inputs (second stage)
+RELIEF_NAMES = ("tip_relief", "root_relief", "relief_start")
+
+#: LTCA settings inside the loop: one mesh cycle, 8 roll positions, 12 segments per curve
+#: (the default analysis has 2 × 20 and 24); shell compliance, no root stress. On the
+#: passenger-car hypoid of tests/data the pattern ends move by at most one grid node and
+#: the LTE by a few µrad against the default sampling — enough to rank designs; the
+#: developed design is reported with the default sampling by ``ltca run``.
+COARSE_LTCA = LTCAOptions(cycles=1, rolls_per_cycle=8, segments=12)
+
+#: objective of a design whose synthesis or analysis failed
+FAILED = 1e6
+
+
+@dataclass(frozen=True)
+class DevelopmentTargets:
+    """The development bearing a synthesis must reach (``[development]`` of a basic file).
+
+    Parameters
+    ----------
+    light_load : float — [1]
+        Light-load torque as a fraction of the design torque, in (0, 0.5]; default 0.15
+        (the pattern is developed at 10–20 % of the design torque, as on a roll tester
+        under light brake load).
+    pattern_length : float — [1]
+        Lengthwise extent of the light-load pattern, fraction of the face width, in
+        (0.1, 0.9); default 0.5: "about half the face width", the pattern the V-H check's
+        toe and heel limits assume (:data:`contact.study.vh_check.VH_DEFAULT_LIMITS`).
+    pattern_length_tolerance : float — [1]
+        Accepted deviation of the length; default 0.1 (two nodes of the gear grid).
+    pattern_centre_u : float — [1]
+        Light-load pattern centre along the face, toe 0 → heel 1; default 0.45: centred
+        with a slight toe bias, since the pattern spreads towards the heel under load
+        (US Army TM 9-2320-273-34 §10-29, fig. 10-27: a satisfactory hypoid pattern
+        "favors the toe and is centered between the top and bottom of the tooth").
+    pattern_centre_v : float or None — [1]
+        Centre along the depth, root cone 0 → face cone 1; default None: the middle of the
+        working depth (TM 9-2320-273-34: "centered between the top and bottom"), whose
+        lower end is the lowest point the pinion tip reaches,
+        1 − (h_a1 + h_a2)/(2 (h_a2 + h_f2)) with the outer addenda and dedendum of the
+        blanks (:func:`working_depth_centre`).
+    centre_tolerance : float — [1]
+        Accepted deviation of each centre coordinate; default 0.08.
+    clearance : float — [1]
+        Least distance of the light-load pattern's ends from the outermost rows of the
+        gear grid (toe, heel, root, tip), fraction of face width or depth; default 0.04.
+    max_edge_share : float — [1]
+        Largest share of the torque carried by edge contact at the design torque;
+        default 0.02 (the loaded pattern may just touch an edge of the relief).
+    max_plastic_share : float — [1]
+        Largest share of the torque on segments at their contact-pressure limit at any
+        roll, light and design torque; default 0 (no plastic edge).
+    max_lte : float — [µrad]
+        Largest LTE peak-to-peak at the light and the design torque; default 40 µrad.
+    offset_tolerance, mounting_tolerance : float — [mm]
+        The excursions ΔE = ±V and ΔP = ±H of the tolerance check (the V-H check's
+        directions); default 0.05 mm each (a careful axle assembly, well inside the V-H
+        check's ±0.4/±0.3 mm grid).
+    max_evaluations : int
+        Most designs analysed; default 16, at most 6 of them in the bearing stage (each a
+        synthesis, ≈ 8 s CPU), the rest in the relief stage (each ≈ 2 s).
+    variables : mapping name → (low, high)
+        Developed synthesis inputs (``[synthesis]`` names and units); default
+        :data:`VARIABLES`; ``te_level`` and ``approach`` may be added (bearing stage).
+    """
+
+    light_load: float = 0.15
+    pattern_length: float = 0.5
+    pattern_length_tolerance: float = 0.1
+    pattern_centre_u: float = 0.45
+    pattern_centre_v: float | None = None
+    centre_tolerance: float = 0.08
+    clearance: float = 0.04
+    max_edge_share: float = 0.02
+    max_plastic_share: float = 0.0
+    max_lte: float = 40.0
+    offset_tolerance: float = 0.05
+    mounting_tolerance: float = 0.05
+    max_evaluations: int = 16
+    variables: Mapping[str, tuple[float, float]] = field(
+        default_factory=lambda: dict(VARIABLES))
+
+    def __post_init__(self) -> None:
+        def chk(name, low, high, unit="1", **kw):
+            object.__setattr__(self, name, real(f"development.{name}", getattr(self, name),
+                                                unit=unit, low=low, high=high, **kw))
+
+        chk("light_load", 0.0, 0.5, low_open=True)
+        chk("pattern_length", 0.1, 0.9, low_open=True, high_open=True)
+        chk("pattern_length_tolerance", 0.0, 0.5, low_open=True)
+        chk("pattern_centre_u", 0.1, 0.9)
+        if self.pattern_centre_v is not None:
+            chk("pattern_centre_v", 0.1, 0.9)
+        chk("centre_tolerance", 0.0, 0.5, low_open=True)
+        chk("clearance", 0.0, 0.3)
+        chk("max_edge_share", 0.0, 1.0)
+        chk("max_plastic_share", 0.0, 1.0)
+        chk("max_lte", 0.0, 1000.0, unit="urad", low_open=True)
+        chk("offset_tolerance", 0.0, 5.0, unit="mm")
+        chk("mounting_tolerance", 0.0, 5.0, unit="mm")
+        n = self.max_evaluations
+        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= 500:
+            raise InputError(f"development.max_evaluations: must be an integer in [1, 500], "
+                             f"got {n!r}")
+        if not isinstance(self.variables, Mapping) or not self.variables:
+            raise InputError("development.variables: give at least one synthesis input as "
+                             f"name = [low, high]; accepted: {', '.join(FLANK_OPTION_UNITS)}")
+        out = {}
+        for name, pair in self.variables.items():
+            if name not in FLANK_OPTION_UNITS:
+                raise InputError(f"development.variables.{name}: not a synthesis input; "
+                                 f"accepted: {', '.join(FLANK_OPTION_UNITS)}")
+            if not isinstance(pair, (list, tuple)) or len(pair) != 2:
+                raise InputError(f"development.variables.{name}: must be [low, high] "
+                                 f"[{FLANK_OPTION_UNITS[name]}], got {pair!r}")
+            lo, hi = (real(f"development.variables.{name}", v,
+                           unit=FLANK_OPTION_UNITS[name]) for v in pair)
+            if not lo < hi:
+                raise InputError(f"development.variables.{name}: must be low < high, got "
+                                 f"[{lo:g}, {hi:g}] {FLANK_OPTION_UNITS[name]}")
+            out[name] = (lo, hi)
+        object.__setattr__(self, "variables", out)
+
+
+def targets_from_table(table: Mapping[str, Any] | None) -> DevelopmentTargets:
+    """The targets of a ``[development]`` table (file units as :class:`DevelopmentTargets`).
+
+    Raises
+    ------
+    InputError
+        An unknown field (the message lists the accepted ones) or a value out of range.
+    """
+    table = dict(table or {})
+    accepted = [f.name for f in dataclasses.fields(DevelopmentTargets)]
+    unknown = sorted(set(table) - set(accepted))
+    if unknown:
+        raise InputError(f"development.{unknown[0]}: unknown field; accepted: "
+                         f"{', '.join(accepted)}")
+    if "variables" in table:
+        if not isinstance(table["variables"], Mapping):
+            raise InputError("development.variables: must be a table name = [low, high]")
+        table["variables"] = {k: tuple(v) if isinstance(v, list) else v
+                              for k, v in table["variables"].items()}
+    return DevelopmentTargets(**table)
+
+
+# --------------------------------------------------------------------------- scoring
+#: metrics of one design at (light, design) torque, as :func:`development_score` reads them
+METRIC_NAMES = ("pattern_toe_u", "pattern_heel_u", "pattern_root_v", "pattern_tip_v",
+                "pattern_centre_u", "pattern_centre_v", "edge_load_share", "plastic_share",
+                "lte_peak_to_peak", "pressure_max_flank")
+
+
+def working_depth_centre(case: Case) -> float:
+    """Middle of the working depth on the gear flank, fraction of the whole depth from the
+    root cone [1]: 1 − (h_a1 + h_a2)/(2 (h_a2 + h_f2)), outer addenda h_a and dedendum h_f
+    of the case's blanks (the gear tip is the working depth's upper end, the lowest point
+    the pinion tip reaches its lower end)."""
+    p, g = case.pinion.blank, case.gear.blank
+    return 1.0 - (p.outer_addendum + g.outer_addendum) / (
+        2.0 * (g.outer_addendum + g.outer_dedendum))
+
+
+#: the shortfalls each stage of :func:`develop` minimises (the bearing stage leaves the
+#: edges of the working depth to the relief)
+STAGE_TERMS = {
+    "bearing": ("length", "centre_u", "centre_v", "toe", "heel", "lte"),
+    "relief": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
+               "plastic", "lte"),
+}
+
+
+def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTargets,
+                      grid: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 1.0), *,
+                      centre_v: float | None = None, stage: str = "relief"
+                      ) -> tuple[float, dict[str, float], bool]:
+    """The development objective of one design.
+
+    Parameters
+    ----------
+    metrics : mapping name → ndarray (2,)
+        :data:`METRIC_NAMES` at the (light, design) torque: pattern ends and centre on the
+        gear flank [1] (:func:`contact.study.summary.pattern_dimensions`), edge load share
+        [1], largest plastic share at a roll [1], LTE peak-to-peak [µrad], flank peak
+        pressure [MPa].
+    targets : DevelopmentTargets
+    grid : (u_toe, u_heel, v_root, v_tip)
+        The outermost rows of the gear grid the pattern is drawn on [1].
+    centre_v : float, optional — [1]
+        The depth centre aimed at where ``targets.pattern_centre_v`` is None (the case's
+        :func:`working_depth_centre`); default 0.5.
+    stage : str
+        ``"relief"`` (default: every target) or ``"bearing"`` (:data:`STAGE_TERMS`).
+
+    Returns
+    -------
+    objective : float
+        Σ of the squared shortfalls of the stage, plus 0.1 × (LTE at the design torque /
+        10 µrad) so that among designs meeting every target the quieter one wins; NaN
+        metrics (no loaded node, a failed analysis) give :data:`FAILED`.
+    shortfalls : dict name → float
+        Each target's shortfall, dimensionless (0 when met): ``length`` and ``centre_u``,
+        ``centre_v`` (deviation beyond the tolerance / tolerance), ``toe``, ``heel``,
+        ``root``, ``tip`` (clearance missing / clearance, light load), ``edge`` (share
+        beyond the limit / 1 %), ``plastic`` (share beyond the limit / 1 %, worst torque),
+        ``lte`` (LTE beyond the limit / 5 µrad, worst torque).
+    met : bool
+        Every shortfall of the stage is 0.
+
+    Raises
+    ------
+    InputError
+        An unknown stage.
+
+    Notes
+    -----
+    A quadratic exterior penalty (Nocedal & Wright, *Numerical Optimization*, 2nd ed.,
+    §17.1) on each target: designs that meet all score only the small LTE term; the scales
+    (a grid node, 1 % of the torque, 5 µrad) are the resolutions of the coarse LTCA.
+    """
+    if stage not in STAGE_TERMS:
+        raise InputError(f"stage: must be one of {', '.join(STAGE_TERMS)}, got {stage!r}")
+    m = {k: np.asarray(metrics[k], float) for k in METRIC_NAMES}
+    u0, u1, v0, v1 = grid
+    t = targets
+    cv = (t.pattern_centre_v if t.pattern_centre_v is not None else
+          0.5 if centre_v is None else centre_v)
+    c = max(t.clearance, 1e-3)
+    length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
+    short = {
+        "length": max(0.0, abs(length - t.pattern_length) - t.pattern_length_tolerance)
+        / t.pattern_length_tolerance,
+        "centre_u": max(0.0, abs(m["pattern_centre_u"][0] - t.pattern_centre_u)
+                        - t.centre_tolerance) / t.centre_tolerance,
+        "centre_v": max(0.0, abs(m["pattern_centre_v"][0] - cv) - t.centre_tolerance)
+        / t.centre_tolerance,
+        "toe": max(0.0, c - (m["pattern_toe_u"][0] - u0)) / c,
+        "heel": max(0.0, c - (u1 - m["pattern_heel_u"][0])) / c,
+        "root": max(0.0, c - (m["pattern_root_v"][0] - v0)) / c,
+        "tip": max(0.0, c - (v1 - m["pattern_tip_v"][0])) / c,
+        "edge": max(0.0, m["edge_load_share"][1] - t.max_edge_share) / 0.01,
+        "plastic": max(0.0, float(np.max(m["plastic_share"])) - t.max_plastic_share) / 0.01,
+        "lte": max(0.0, float(np.max(m["lte_peak_to_peak"])) - t.max_lte) / 5.0,
+    }
+    short = {k: float(v) for k, v in short.items()}
+    terms = STAGE_TERMS[stage]
+    read = [m[k][0] for k in METRIC_NAMES[:6]] + [m["edge_load_share"][1],
+                                                 *m["plastic_share"], *m["lte_peak_to_peak"]]
+    if not np.all(np.isfinite(read)):  # max(0, NaN) would hide a missing pattern
+        return FAILED, dict.fromkeys(short, math.inf), False
+    met = all(short[k] == 0.0 for k in terms)
+    objective = float(sum(short[k] ** 2 for k in terms)
+                      + 0.1 * m["lte_peak_to_peak"][1] / 10.0)
+    return objective, short, met
+
+
+# --------------------------------------------------------------------------- evaluation
+@dataclass(frozen=True, eq=False)
+class DevelopmentEvaluation:
+    """One analysed design of a development.
+
+    Attributes
+    ----------
+    index : int
+    values : dict name → float
+        The developed inputs [file units].
+    metrics : dict name → ndarray (2,)
+        :data:`METRIC_NAMES` at (light, design) torque; NaN when it failed.
+    objective : float
+    shortfalls : dict name → float
+    met : bool
+    reason : str
+        Why the design failed (empty if it did not).
+    seconds : float
+        CPU time of its synthesis and analysis [s].
+    case : Case or None
+        The synthesised case (None when the synthesis failed).
+    full : (objective, shortfalls, met) or None
+        The score on every target (stage ``"relief"``), for comparing designs of both
+        stages; None when it failed.
+    """
+
+    index: int
+    values: dict[str, float]
+    metrics: dict[str, np.ndarray]
+    objective: float
+    shortfalls: dict[str, float]
+    met: bool
+    reason: str
+    seconds: float
+    case: Case | None = None
+    full: tuple[float, dict[str, float], bool] | None = None
+
+
+def design_torque_of(basic: BasicDesign, case: Case) -> tuple[float, str]:
+    """The pinion torque [N·m] the development checks the bearing at, and where it is from.
+
+    ``[synthesis] design_torque`` of the basic file if given, else the synthesised case's
+    ``[rating] design_torque``, else the ISO 10300 capacity of the case (the torque at
+    which the long-life safety reaches S_H,min or S_F,min;
+    :func:`contact.rating.capacity.with_design_torque`); where the rating cannot give one,
+    the largest torque of the case's ``[operating]`` table.
+    """
+    from contact.rating.capacity import with_design_torque
+
+    _, torque, why = with_design_torque(case, basic.options.design_torque)
+    if math.isfinite(torque) and torque > 0:
+        return float(torque), why
+    log.info("design torque from the rating unavailable (%s)", why)
+    return float(max(case.operating.torque)), f"largest [operating] torque ({why})"
+
+
+def _metrics(tree, case: Case) -> dict[str, np.ndarray]:
+    from contact.study.summary import point_summary
+
+    s = point_summary(tree, case)
+    out = {k: np.asarray(s[k], float) for k in METRIC_NAMES if k in s}
+    lt = tree["/ltca"]
+    share = (np.nan_to_num(lt["plastic_load_share"].values, nan=0.0)
+             if "plastic_load_share" in lt else np.zeros((len(out["lte_peak_to_peak"]), 1)))
+    out["plastic_share"] = share.max(axis=1)
+    return out
+
+
+def _grid(tree) -> tuple[float, float, float, float]:
+    lt = tree["/ltca"]
+    u, v = lt["u"].values, lt["v"].values
+    return float(u[0]), float(u[-1]), float(v[0]), float(v[-1])
+
+
+def _analyse(case: Case, torques: list[float], misalignment: Misalignment | None = None,
+             options: LTCAOptions = COARSE_LTCA):
+    from contact.pipeline import run_analysis
+
+    c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
+    tree = run_analysis(c, torques, options=options, deviations=False, geometry=False,
+                        operating=False, mesh_interface=False)
+    return _metrics(tree, c), _grid(tree)
+
+
+@dataclass(frozen=True, eq=False)
+class DevelopmentResult:
+    """What :func:`develop` did.
+
+    Attributes
+    ----------
+    basic : BasicDesign
+        The design with the developed prescriptions of the drive flank.
+    case : Case
+        Its synthesis (the developed case).
+    report : geometry.synthesis.case_synthesis.SynthesisReport
+        The synthesis report of ``case``.
+    best : DevelopmentEvaluation
+        The chosen design (every target met, else the least objective).
+    evaluations : tuple of DevelopmentEvaluation
+        Every design analysed, in order.
+    torque : (float, float) — [N·m]
+        Light and design pinion torque.
+    torque_source : str
+        Where the design torque came from (:func:`design_torque_of`).
+    tolerance : dict label → (metrics, shortfalls)
+        The developed design at each excursion (``dE+0.05`` …) at (light, design) torque,
+        with the shortfalls of the clearance, edge and plastic targets there.
+    targets : DevelopmentTargets
+    seconds : float
+        CPU time of the whole development [s].
+    centre_v : float — [1]
+        The depth centre aimed at (``targets.pattern_centre_v`` or the working depth's
+        middle, :func:`working_depth_centre`).
+    """
+
+    basic: BasicDesign
+    case: Case
+    report: Any
+    best: DevelopmentEvaluation
+    evaluations: tuple[DevelopmentEvaluation, ...]
+    torque: tuple[float, float]
+    torque_source: str
+    tolerance: dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]
+    targets: DevelopmentTargets
+    seconds: float
+    centre_v: float = 0.5
+
+    @property
+    def tolerant(self) -> bool:
+        """At every excursion the pattern stays clear of toe and heel at light load and the
+        edges elastic with at most the edge share allowed."""
+        keys = ("toe", "heel", "edge", "plastic")
+        return all(all(s[k] == 0.0 for k in keys) for _, s in self.tolerance.values())
+
+    def summary(self) -> str:
+        """One paragraph for the case's ``source``: prescriptions, targets, achieved."""
+        b, t = self.best, self.targets
+        m = b.metrics
+        vals = ", ".join(f"{k} {v:.4g} {FLANK_OPTION_UNITS[k]}" for k, v in b.values.items())
+        tl, td = self.torque
+        tol = "; ".join(
+            f"{lab}: pattern {ms['pattern_toe_u'][0]:.2f}-{ms['pattern_heel_u'][0]:.2f}, edge "
+            f"{100 * ms['edge_load_share'][1]:.1f} %, plastic "
+            f"{100 * np.max(ms['plastic_share']):.1f} %"
+            for lab, (ms, _) in self.tolerance.items())
+        return (
+            f"Development bearing (contact.optimize.development, {len(self.evaluations)} "
+            f"designs, coarse LTCA): drive flank {vals}; targets at {tl:.4g} N m (light, "
+            f"{t.light_load:g} x design) pattern {t.pattern_length:g} +/- "
+            f"{t.pattern_length_tolerance:g} of the face width centred at "
+            f"({t.pattern_centre_u:g}, {self.centre_v:.3g}), clear of the flank ends by "
+            f"{t.clearance:g}; at {td:.4g} N m (design, {self.torque_source}) edge share <= "
+            f"{100 * t.max_edge_share:g} %, plastic <= {100 * t.max_plastic_share:g} %; LTE "
+            f"p-p <= {t.max_lte:g} urad. Achieved: pattern u {m['pattern_toe_u'][0]:.2f}-"
+            f"{m['pattern_heel_u'][0]:.2f}, v {m['pattern_root_v'][0]:.2f}-"
+            f"{m['pattern_tip_v'][0]:.2f}, centre ({m['pattern_centre_u'][0]:.2f}, "
+            f"{m['pattern_centre_v'][0]:.2f}); edge share {100 * m['edge_load_share'][0]:.1f}/"
+            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
+            f"{100 * m['plastic_share'][0]:.1f}/{100 * m['plastic_share'][1]:.1f} %, LTE p-p "
+            f"{m['lte_peak_to_peak'][0]:.1f}/{m['lte_peak_to_peak'][1]:.1f} urad (light/"
+            f"design); {self._met_text()}. "
+            f"Tolerance (dE = +/-{t.offset_tolerance:g} mm, dP = +/-"
+            f"{t.mounting_tolerance:g} mm): {tol}"
+            f" ({'tolerant' if self.tolerant else 'not tolerant'}).")
+
+    def recorded(self, case: Case) -> Case:
+        """``case`` (the developed case, maybe with its rating's design torque set) with
+        :meth:`summary` appended to its ``source`` and :meth:`table` as its informational
+        ``[development]`` table."""
+        import json
+        from types import MappingProxyType
+
+        extra = json.loads(json.dumps({**case.extra, "development": self.table()}))
+        return dataclasses.replace(case, source=case.source.rstrip() + " " + self.summary(),
+                                   extra=MappingProxyType(extra))
+
+    def _met_text(self) -> str:
+        _, short, met = self.best.full
+        return ("every target met" if met else "not every target met: "
+                + ", ".join(k for k, v in short.items() if v > 0))
+
+    def table(self) -> dict[str, Any]:
+        """The case's informational ``[development]`` table (TOML-safe values)."""
+        b = self.best
+        m = {k: [round(float(x), 6) for x in v] for k, v in b.metrics.items()}
+        return {
+            "note": "informational (contact.optimize.development): the developed drive-flank "
+                    "prescriptions and what the coarse LTCA gave at [light, design] torque",
+            "torque_Nm": [float(x) for x in self.torque],
+            "design_torque_source": self.torque_source,
+            "prescriptions": {k: float(v) for k, v in b.values.items()},
+            "targets_met": int(b.full[2]),
+            "tolerant": int(self.tolerant),
+            "evaluations": len(self.evaluations),
+            "cpu_seconds": round(self.seconds, 1),
+            "achieved": m,
+        }
+
+
+class _Stop(Exception):
+    """Raised inside the objective when a design meets every target of its stage or the
+    stage's budget is spent."""
+
+
+def _start(names: list[str], targets: DevelopmentTargets, start: Mapping[str, float],
+           basic: BasicDesign) -> np.ndarray:
+    """Start values of ``names``: the basic design's prescriptions where the bounds allow
+    (else the bound's middle); the ellipse at the target pattern length less the spread
+    under light load (about a fifth of it) unless the file bounds it itself."""
+    x = []
+    for n in names:
+        lo, hi = targets.variables[n]
+        v = start[n] if lo <= start[n] <= hi else 0.5 * (lo + hi)
+        if n == "ellipse_length" and "variables" not in basic.development:
+            v = float(np.clip(0.8 * targets.pattern_length, lo, hi))
+        x.append(v)
+    return np.asarray(x, float)
+
+
+def _minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray, low: np.ndarray,
+              high: np.ndarray) -> None:
+    """Bounded Nelder–Mead on the variables scaled to [0, 1], initial simplex 0.25 wide
+    (towards the middle of each bound); ``fun`` ends it by raising :class:`_Stop`."""
+    from scipy.optimize import minimize
+
+    n = len(x0)
+    z0 = (x0 - low) / (high - low)
+    simplex = np.vstack([z0] + [np.clip(z0 + 0.25 * np.eye(n)[i]
+                                        * (1.0 if z0[i] <= 0.5 else -1.0), 0.0, 1.0)
+                                for i in range(n)])
+    try:
+        minimize(lambda z: fun(low + np.clip(z, 0.0, 1.0) * (high - low)), z0,
+                 method="Nelder-Mead", bounds=[(0.0, 1.0)] * n,
+                 options={"initial_simplex": simplex, "maxfev": 10_000, "xatol": 0.02,
+                          "fatol": 1e-3})
+    except _Stop:
+        pass
+
+
+def _sample_then_minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray,
+                          low: np.ndarray, high: np.ndarray, n_sample: int) -> None:
+    """``x0`` and ``n_sample`` scrambled-Sobol points of the box (``scipy.stats.qmc``, seed
+    0: the same designs every run), then :func:`_minimise` from the best: the relief's
+    objective has steps where an edge starts or stops carrying, on which a simplex from
+    one corner stalls."""
+    from scipy.stats import qmc
+
+    tried = []
+    try:
+        tried.append((fun(x0), x0))
+        if n_sample:
+            m = max(1, math.ceil(math.log2(n_sample)))
+            pts = qmc.Sobol(len(x0), scramble=True, seed=0).random_base2(m)[:n_sample]
+            for z in pts:
+                x = low + z * (high - low)
+                tried.append((fun(x), x))
+    except _Stop:
+        return
+    _minimise(fun, min(tried, key=lambda fx: fx[0])[1], low, high)
+
+
+def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
+            progress: Callable[[str], None] | None = None,
+            synthesis_progress: Any = None) -> DevelopmentResult:
+    """Develop the drive flank of a basic design to the bearing of ``targets``.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+        The design (its drive flank's ``[synthesis]`` prescriptions are the start where a
+        variable's bound allows, else the middle of the bound).
+    targets : DevelopmentTargets, optional
+        Default: the basic file's ``[development]`` table (:func:`targets_from_table`).
+    progress : callable, optional
+        Called with one plain line per analysed design (the CLI prints them).
+    synthesis_progress : optional
+        The ``progress`` of the final synthesis of the developed design
+        (:func:`geometry.synthesis.case_synthesis.synthesize`).
+
+    Returns
+    -------
+    DevelopmentResult
+
+    Raises
+    ------
+    InputError
+        Bad targets, or no design could be synthesised and analysed (the reasons).
+
+    Notes
+    -----
+    Two stages, as a bearing is developed on the test stand (:data:`VARIABLES`):
+
+    1. **bearing**: the path angle and ellipse length (and any other non-relief input)
+       varied, each design the full synthesis
+       (:func:`geometry.synthesis.case_synthesis.synthesize` with the drive flank's
+       prescriptions replaced) and :data:`COARSE_LTCA` at the light and the design
+       torque, scored by :func:`development_score` (stage ``"bearing"``: pattern length,
+       centre, toe and heel clearance, LTE); at most 6 designs or half the budget;
+    2. **relief**: from the best bearing, the tip and root relief and their start varied
+       on the blade alone (:func:`contact.optimize.variables.case_at`, the synthesis'
+       own step 7, :func:`geometry.machine.relief.relieved_blade`), scored on every
+       target, until the budget ``max_evaluations`` is spent.
+
+    Each stage is a bounded Nelder–Mead (``scipy.optimize.minimize``, variables scaled to
+    [0, 1]) that stops at the first design meeting every target of its stage. The chosen
+    design (every target met first, then the least objective) is synthesised once more
+    with all its prescriptions (the written case) and checked at the excursions
+    ΔE = ±``offset_tolerance``, ΔP = ±``mounting_tolerance``.
+    """
+    from contact.optimize.variables import case_at
+    from geometry.synthesis.case_synthesis import synthesize
+
+    t0 = time.process_time()
+    targets = targets or targets_from_table(basic.development)
+    say = progress or (lambda line: None)
+    flank = basic.options.drive_flank
+    start = flank_option_values(basic.options.flank(flank))
+    bearing = [n for n in targets.variables if n not in RELIEF_NAMES]
+    relief = [n for n in targets.variables if n in RELIEF_NAMES]
+    n_bearing = min(6, max(1, targets.max_evaluations // 2)) if bearing else 1
+    evals: list[DevelopmentEvaluation] = []
+    setup: dict[str, Any] = {}
+
+    seen: dict[tuple, DevelopmentEvaluation] = {}
+
+    def evaluate(values: dict[str, float], stage: str, make: Callable[[], Case],
+                 budget: int) -> DevelopmentEvaluation:
+        key = (stage, *(round(v, 9) for v in values.values()))
+        if key in seen:  # a design analysed before (the simplex returns to its start)
+            if seen[key].met:
+                raise _Stop
+            return seen[key]
+        if len(evals) >= budget:
+            raise _Stop
+        c0 = time.process_time()
+        case = None
+        try:
+            case = make()
+            if not setup:
+                torque, source = design_torque_of(basic, case)
+                setup.update(torques=[targets.light_load * torque, torque], source=source,
+                             centre_v=working_depth_centre(case))
+                say(f"development: drive flank {flank}, light {setup['torques'][0]:.4g} "
+                    f"N m, design {torque:.4g} N m ({source}); varying "
+                    f"{', '.join(targets.variables)} (at most {targets.max_evaluations} "
+                    "designs, coarse LTCA)")
+            metrics, grid = _analyse(case, setup["torques"])
+            obj, short, met = development_score(metrics, targets, grid,
+                                                centre_v=setup["centre_v"], stage=stage)
+            reason = ""
+        except Exception as exc:  # one failing design never ends the development
+            log.info("development design %s failed: %s", values, exc)
+            metrics = {k: np.full(2, np.nan) for k in METRIC_NAMES}
+            obj, short, met, grid = FAILED, {}, False, None
+            reason = f"{type(exc).__name__}: {exc}".splitlines()[0]
+        e = DevelopmentEvaluation(len(evals), dict(values), metrics, obj, short, met, reason,
+                                  time.process_time() - c0, case)
+        if grid is not None:  # the full score too: designs of both stages are compared
+            full = development_score(metrics, targets, grid, centre_v=setup["centre_v"])
+            e = dataclasses.replace(e, full=full)
+        evals.append(e)
+        seen[key] = e
+        if stage == "bearing" and grid is not None:  # the relief stage starts here
+            seen[("relief", *key[1:])] = dataclasses.replace(e, objective=e.full[0],
+                                                             shortfalls=e.full[1],
+                                                             met=e.full[2])
+        say(_line(e, targets.max_evaluations, stage))
+        if met:
+            raise _Stop
+        return e
+
+    # stage 1, the bearing: a synthesis per design
+    fixed = {n: start[n] for n in relief}
+    low = np.array([targets.variables[n][0] for n in bearing])
+    high = np.array([targets.variables[n][1] for n in bearing])
+
+    def bearing_design(x: np.ndarray) -> float:
+        values = {n: float(v) for n, v in zip(bearing, x, strict=True)} | fixed
+        b = with_flank_options(basic, flank, values)
+        return evaluate(values, "bearing", lambda: synthesize(b)[0], n_bearing).objective
+
+    x0 = _start(bearing, targets, start, basic)
+    if bearing:
+        _minimise(bearing_design, x0, low, high)
+    else:
+        try:
+            bearing_design(x0)
+        except _Stop:
+            pass
+    ok = [e for e in evals if e.case is not None and e.objective < FAILED]
+    if not ok:
+        reasons = "; ".join(sorted({e.reason for e in evals}))
+        raise InputError(f"development: the drive flank could not be synthesised and "
+                         f"analysed ({reasons}); change [development] variables bounds")
+    first = min(ok, key=lambda e: (not e.met, e.objective))
+    # stage 2, the relief on the blade of the best bearing
+    if relief:
+        low = np.array([targets.variables[n][0] for n in relief])
+        high = np.array([targets.variables[n][1] for n in relief])
+        names = [n for n in relief if n != "relief_start"]
+
+        def relief_design(x: np.ndarray) -> float:
+            values = {n: float(v) for n, v in zip(relief, x, strict=True)}
+            rs = values.get("relief_start", first.values.get("relief_start",
+                                                               start["relief_start"]))
+
+            def make() -> Case:
+                return case_at(first.case, flank, names, [values[n] for n in names],
+                               relief_start=rs)
+
+            return evaluate(first.values | values, "relief", make,
+                            targets.max_evaluations).objective
+
+        _sample_then_minimise(relief_design,
+                              np.array([first.values[n] for n in relief]), low, high,
+                              n_sample=min(8, max(0, (targets.max_evaluations - len(evals))
+                                                  // 2)))
+    ok = [e for e in evals if e.full is not None]
+    best = min(ok, key=lambda e: (not e.full[2], e.full[0]))
+    developed = with_flank_options(basic, flank, best.values)
+    case, report = synthesize(developed, progress=synthesis_progress)
+    tolerance = {}
+    for lab, mis in _excursions(targets):
+        try:
+            ms, grid = _analyse(case, setup["torques"], mis)
+            _, short, _ = development_score(ms, targets, grid, centre_v=setup["centre_v"])
+        except Exception as exc:  # reported, never fatal
+            log.info("development tolerance %s failed: %s", lab, exc)
+            ms = {k: np.full(2, np.nan) for k in METRIC_NAMES}
+            short = {k: math.inf for k in ("toe", "heel", "edge", "plastic")}
+        tolerance[lab] = (ms, short)
+    result = DevelopmentResult(developed, case, report, best, tuple(evals),
+                               tuple(setup["torques"]), setup["source"], tolerance, targets,
+                               time.process_time() - t0,
+                               targets.pattern_centre_v or setup["centre_v"])
+    say(f"development: chosen design {best.index + 1} "
+        f"({'every target met' if best.full[2] else 'not every target met'}), "
+        f"{'tolerant' if result.tolerant else 'not tolerant'} at dE +/-"
+        f"{targets.offset_tolerance:g} mm, dP +/-{targets.mounting_tolerance:g} mm; "
+        f"{result.seconds:.0f} s CPU")
+    return result
+
+
+def _excursions(t: DevelopmentTargets) -> list[tuple[str, Misalignment]]:
+    out = []
+    for s in (1.0, -1.0):
+        if t.offset_tolerance > 0:
+            out.append((f"dE{s * t.offset_tolerance:+g}",
+                        Misalignment(delta_E=s * t.offset_tolerance)))
+    for s in (1.0, -1.0):
+        if t.mounting_tolerance > 0:
+            out.append((f"dP{s * t.mounting_tolerance:+g}",
+                        Misalignment(delta_P=s * t.mounting_tolerance)))
+    return out
+
+
+def _line(e: DevelopmentEvaluation, n: int, stage: str = "relief") -> str:
+    vals = ", ".join(f"{k} {v:.3g}" for k, v in e.values.items())
+    if e.reason:
+        return f"  {stage} design {e.index + 1}/{n}: {vals}: failed ({e.reason})"
+    m = e.metrics
+    return (f"  {stage} design {e.index + 1}/{n}: {vals}: pattern {m['pattern_toe_u'][0]:.2f}-"
+            f"{m['pattern_heel_u'][0]:.2f} x {m['pattern_root_v'][0]:.2f}-"
+            f"{m['pattern_tip_v'][0]:.2f}, edge {100 * m['edge_load_share'][1]:.1f} %, "
+            f"plastic {100 * np.max(m['plastic_share']):.1f} %, LTE "
+            f"{m['lte_peak_to_peak'][0]:.0f}/{m['lte_peak_to_peak'][1]:.0f} urad; objective "
+            f"{e.objective:.3g}{' (all targets met)' if e.met else ''} [{e.seconds:.0f} s]")

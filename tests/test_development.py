@@ -1,0 +1,172 @@
+"""The development-bearing step of ``ltca synthesize`` (contact.optimize.development,
+issue 60 item 1): its targets, its objective, and its metrics against the verdict's own.
+
+Fast: the objective on hand-made metrics (every shortfall by hand), the targets' refusals,
+and the metrics of one coarse LTCA of a cheap case (the passenger-car hypoid of
+tests/data/designs without relief, whose pattern reaches the gear tip with edge contact)
+compared with an independent reading of the same tree — the verdict's boundary and edge
+checks (contact.study.verdicts). The whole step on four user designs is the slow test
+tests/test_development_designs.py.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from contact.optimize.development import (
+    COARSE_LTCA,
+    FAILED,
+    STAGE_TERMS,
+    DevelopmentTargets,
+    _analyse,
+    development_score,
+    targets_from_table,
+    working_depth_centre,
+)
+from geometry.core.errors import InputError
+
+DESIGNS = Path(__file__).parent / "data" / "designs"
+
+
+def _metrics(**over):
+    """Metrics at (light, design) torque of a design meeting every default target."""
+    m = {"pattern_toe_u": [0.2, 0.15], "pattern_heel_u": [0.7, 0.8],
+         "pattern_root_v": [0.3, 0.25], "pattern_tip_v": [0.85, 0.9],
+         "pattern_centre_u": [0.45, 0.5], "pattern_centre_v": [0.6, 0.6],
+         "edge_load_share": [0.0, 0.01], "plastic_share": [0.0, 0.0],
+         "lte_peak_to_peak": [20.0, 30.0], "pressure_max_flank": [900.0, 1500.0]}
+    m.update(over)
+    return {k: np.asarray(v, float) for k, v in m.items()}
+
+
+def test_a_design_meeting_every_target_scores_only_its_lte():
+    """Every shortfall 0; the objective is the tie-break 0.1 × LTE(design)/10 µrad."""
+    obj, short, met = development_score(_metrics(), DevelopmentTargets(), centre_v=0.6)
+    assert met and set(short) == set(STAGE_TERMS["relief"])
+    assert all(v == 0.0 for v in short.values())
+    assert obj == pytest.approx(0.1 * 30.0 / 10.0, rel=1e-12)
+
+
+def test_each_shortfall_is_the_excess_over_its_tolerance():
+    """Hand-computed shortfalls: length 0.75 vs 0.5 ± 0.1 → (0.25 − 0.1)/0.1 = 1.5; toe
+    on the grid's first row with clearance 0.04 → 1; edge 5 % vs 2 % → 3 (per 1 %);
+    plastic 0.5 % → 0.5; LTE 50 µrad vs 40 → 2 (per 5 µrad); centre v 0.8 vs 0.6 ± 0.08
+    → 1.5; the objective is their sum of squares plus 0.1 × 50/10."""
+    m = _metrics(pattern_toe_u=[0.0, 0.0], pattern_heel_u=[0.75, 0.8],
+                 pattern_centre_v=[0.8, 0.7], edge_load_share=[0.0, 0.05],
+                 plastic_share=[0.0, 0.005], lte_peak_to_peak=[20.0, 50.0])
+    obj, short, met = development_score(m, DevelopmentTargets(), centre_v=0.6)
+    assert not met
+    expect = {"length": 1.5, "toe": 1.0, "edge": 3.0, "plastic": 0.5, "lte": 2.0,
+              "centre_v": 1.5}
+    for k, v in expect.items():
+        assert short[k] == pytest.approx(v, rel=1e-9), k
+    assert all(short[k] == 0.0 for k in short if k not in expect)
+    assert obj == pytest.approx(sum(v * v for v in expect.values()) + 0.5, rel=1e-12)
+
+
+def test_the_bearing_stage_leaves_the_edges_to_the_relief():
+    """Edge, plastic, root and tip shortfalls do not count in the bearing stage: the
+    relief stage removes them."""
+    m = _metrics(edge_load_share=[0.05, 0.08], plastic_share=[0.0, 0.03],
+                 pattern_tip_v=[1.0, 1.0])
+    obj_b, short, met_b = development_score(m, DevelopmentTargets(), centre_v=0.6,
+                                            stage="bearing")
+    _, _, met_r = development_score(m, DevelopmentTargets(), centre_v=0.6)
+    assert met_b and not met_r
+    assert short["edge"] == pytest.approx(6.0) and short["tip"] == pytest.approx(1.0)
+    assert obj_b == pytest.approx(0.3)
+
+
+def test_a_failed_or_empty_pattern_scores_failed():
+    m = _metrics(pattern_toe_u=[np.nan, 0.1])
+    obj, _, met = development_score(m, DevelopmentTargets())
+    assert obj == FAILED and not met
+
+
+@pytest.mark.parametrize("table, field", [
+    ({"pattern_lenght": 0.5}, "development.pattern_lenght"),
+    ({"pattern_length": 0.95}, "pattern_length"),
+    ({"light_load": 0.0}, "light_load"),
+    ({"max_evaluations": 0}, "development.max_evaluations"),
+    ({"variables": {"blade_angle": [20, 25]}}, "development.variables.blade_angle"),
+    ({"variables": {"path_angle": [-40, -60]}}, "development.variables.path_angle"),
+])
+def test_bad_targets_name_their_field(table, field):
+    with pytest.raises(InputError, match=field.replace(".", r"\.")):
+        targets_from_table(table)
+
+
+def test_targets_from_an_empty_table_are_the_stated_defaults():
+    t = targets_from_table({})
+    assert t == DevelopmentTargets()
+    assert (t.light_load, t.pattern_length, t.max_edge_share, t.max_lte) == (
+        0.15, 0.5, 0.02, 40.0)
+    assert t.pattern_centre_v is None  # the working depth's middle of each design
+
+
+def test_working_depth_centre_from_the_iso_blank():
+    """The middle of the working depth from the case's blanks equals the one from the ISO
+    23509 blank geometry of the same design (h_ae1 + h_ae2 over the gear's whole depth,
+    the other's own fields)."""
+    from geometry.case import load_case
+    from geometry.synthesis.basic_design import load_basic
+
+    case = load_case(DESIGNS / "pc_hypoid_10x43_unrelieved.toml")
+    geom = load_basic(DESIGNS / "pc_hypoid_10x43.toml").blank()
+    h = geom.gear.hae + geom.gear.hfe
+    expect = 1.0 - (geom.pinion.hae + geom.gear.hae) / (2.0 * h)
+    assert working_depth_centre(case) == pytest.approx(expect, abs=1e-9)
+    assert 0.5 < expect < 1.0  # above mid-depth: the clearance lies below the working depth
+
+
+@pytest.fixture(scope="module")
+def unrelieved_pc():
+    """One coarse LTCA (COARSE_LTCA) of the unrelieved passenger-car hypoid at 50 and
+    330 N m (light load ≈ 0.15 × its design torque), the tree and the metrics."""
+    from contact.pipeline import run_analysis
+    from geometry.case import load_case
+
+    case = load_case(DESIGNS / "pc_hypoid_10x43_unrelieved.toml")
+    tree = run_analysis(case, [50.0, 330.0], options=COARSE_LTCA, deviations=False,
+                        geometry=False, operating=False, mesh_interface=False)
+    metrics, grid = _analyse(case, [50.0, 330.0])
+    return tree, metrics, grid
+
+
+def test_clearance_shortfalls_agree_with_the_verdicts_boundaries(unrelieved_pc):
+    """A clearance shortfall is exactly 1 where the verdict (an independent reading of the
+    pressure envelope, contact.study.verdicts) says the light-load pattern reaches that
+    boundary, and below 1 where it does not; this design reaches the gear tip."""
+    from contact.study.verdicts import _boundaries
+
+    tree, metrics, grid = unrelieved_pc
+    reached = _boundaries(tree["/ltca"].to_dataset())[0]
+    assert "tip" in reached
+    _, short, met = development_score(metrics, DevelopmentTargets(), grid)
+    assert not met
+    for side in ("toe", "heel", "root", "tip"):
+        if side in reached:
+            assert short[side] == pytest.approx(1.0, abs=1e-12), side
+        else:
+            assert short[side] < 1.0, side
+
+
+def test_edge_share_agrees_with_the_verdicts_edge_kinds(unrelieved_pc):
+    """The edge share the objective reads (contact.ltca.summary.edge_load_share) is the
+    sum of the verdict's per-edge shares (Σ F·arm per edge kind / Σ F·arm), to round-off;
+    this design has edge contact at both torques (pinion tip and gear tip)."""
+    from contact.study.verdicts import _edge_shares
+
+    tree, metrics, _ = unrelieved_pc
+    kinds = _edge_shares(tree["/ltca"].to_dataset())
+    total = sum(kinds.values())
+    np.testing.assert_allclose(metrics["edge_load_share"], total, rtol=1e-9, atol=1e-12)
+    assert np.all(total > 0.01)
+    assert metrics["plastic_share"].shape == (2,)
+    assert np.all((metrics["plastic_share"] >= 0) & (metrics["plastic_share"] <= 1))
+    assert not math.isnan(float(metrics["lte_peak_to_peak"][1]))

@@ -1,0 +1,52 @@
+"""Four user designs from basic data to a rated analysis (issue 60, item 7): slow.
+
+A spiral bevel without offset, a passenger-car hypoid, a large-offset truck hypoid and a
+face-hobbed hypoid (``tests/data/designs/*.toml``, none bundled, each written from
+docs/synthesis.md with every synthesis default) go through ``ltca synthesize`` (defaults:
+the development bearing on, contact.optimize.development) and ``ltca run`` (root stress
+and the ISO 10300 rating on, the defaults): rc 0, a verdict that is not FAIL, root stress
+of both members at every torque, the rating present, and the developed case records what
+its development achieved. ``benchmarks/development_designs.py`` prints the same runs as a
+table (pattern, LTE, edge share, verdict, CPU time).
+
+Run with ``pytest -m slow tests/test_development_designs.py -n 0`` (≈ 3–5 min of CPU per
+design with a cold FE cache).
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+DESIGNS = sorted(p for p in (Path(__file__).parent / "data" / "designs").glob("*.toml")
+                 if not p.stem.endswith("_unrelieved"))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("basic", DESIGNS, ids=[p.stem for p in DESIGNS])
+def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys):
+    from contact.cli import main
+    from contact.study.verdicts import verdict
+
+    case_path = tmp_path / f"{basic.stem}.toml"
+    assert main(["synthesize", str(basic), "-o", str(case_path)]) == 0
+    out = capsys.readouterr().out
+    assert "development: chosen design" in out
+    case = tomllib.loads(case_path.read_text(encoding="utf-8"))
+    assert "Development bearing" in case["source"]
+    dev = case["development"]
+    assert len(dev["torque_Nm"]) == 2 and dev["torque_Nm"][0] < dev["torque_Nm"][1]
+
+    nc = tmp_path / f"{basic.stem}.nc"
+    assert main(["run", str(case_path), "-o", str(nc)]) == 0
+    tree = xr.open_datatree(nc)
+    v = verdict(tree)
+    assert v.severity != "fail", [f.reason for f in v.findings]
+    root = tree["/ltca"]["root_stress_max"].values
+    assert root.shape[-1] == 2 or root.shape[0] == 2
+    assert np.all(np.isfinite(root)) and np.all(root > 0)
+    assert "rating" in tree.children and "S_H" in tree["/rating"]
