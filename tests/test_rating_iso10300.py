@@ -604,3 +604,18 @@ def test_one_roughness_for_the_rating_and_the_ltca():
     assert rz == pytest.approx((3.830, 3.830), abs=1e-3)
     assert rz[0] == pytest.approx(RZ_PER_RQ * case.operating.roughness, abs=5e-4)
     assert case_rating_inputs(resolve_case("iso10300_30_sample3")).flank_roughness == (3.0, 3.0)
+
+
+def test_capacity_is_the_long_life_one_whatever_the_load_cycles():
+    """The capacity torque (S_H or S_F at its minimum at long life) does not depend on the
+    [rating] load_cycles: below the knee σ_HP is not Z_NT times its long-life value (Z_L
+    Z_v Z_R go to 1 towards the static end), so the capacity rates without them (1e-9: the
+    same root search)."""
+    from contact.catalogue import resolve_case
+    from contact.rating.capacity import capacity_torque
+
+    case = resolve_case("iso10300_30_sample1")
+    table = dict(case.extra["rating"])
+    long = capacity_torque(case, rating=table)
+    assert capacity_torque(case, rating={**table, "load_cycles": 3e5}) == pytest.approx(
+        long, rel=1e-9)

@@ -33,12 +33,17 @@ _GRID = np.geomspace(1e-2, 1e6, 161)
 
 def _long_life_safety(case, torque: Any, speed: float,
                       rating: Mapping[str, Any] | None) -> np.ndarray:
-    """min over members of S_H/(Z_NT S_H,min) and S_F/(Y_NT S_F,min) at each torque."""
+    """min over members of S_H/S_H,min and S_F/S_F,min at long life at each torque: rated
+    without ``load_cycles`` (below the knee σ_HP is not Z_NT times its long-life value:
+    Z_L Z_v Z_R go to 1 towards the static end, contact.rating.pitting.long_life_share)."""
     from contact.rating.rating import iso10300_rating
 
-    ds = iso10300_rating(case, torque=np.atleast_1d(torque), speed=speed, rating=rating)
-    s_h = ds["S_H"] / ds["Z_NT"] / ds["S_Hmin"]
-    s_f = ds["S_F"] / ds["Y_NT"] / ds["S_Fmin"]
+    table = case.extra.get("rating") if rating is None else rating
+    if isinstance(table, Mapping):  # (else: the rating's own error, naming [rating])
+        table = {k: v for k, v in table.items() if k != "load_cycles"}
+    ds = iso10300_rating(case, torque=np.atleast_1d(torque), speed=speed, rating=table)
+    s_h = ds["S_H"] / ds["S_Hmin"]
+    s_f = ds["S_F"] / ds["S_Fmin"]
     return np.minimum(s_h.min("member"), s_f.min("member")).values
 
 
