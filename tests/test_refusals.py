@@ -492,3 +492,16 @@ def test_ehl_never_prints_a_negative_film(tmp_path, capsys, monkeypatch):
     assert re.search(rf"no film: the mean planes interpenetrate \(asperities in contact\), "
                      rf"separation of the mean planes {sep:.4f} um at x = 0", out), out
     assert re.search(r"mean gap \(oil\) \d+\.\d+ um", out)   # the gap is never negative
+
+
+@pytest.mark.parametrize(("torque", "speed", "pattern"), [
+    (1e12, None, r"^torque: must be in \(0, 1e\+06\] \[N m\], got 1e\+12$"),
+    (None, 1e12, r"^speed: must be in \(0, 50000\] \[rpm\], got 1e\+12$"),
+    ("lots", None, r"^torque: must be a number or a sequence of numbers"),
+])
+def test_the_rating_api_applies_the_table_of_bounds(torque, speed, pattern):
+    # the API as the command: 10^12 rpm printed S_H 1.688 before (issue 64)
+    from contact.rating import iso10300_rating
+
+    with pytest.raises(InputError, match=pattern):
+        iso10300_rating("iso10300_30_sample1", torque, speed)

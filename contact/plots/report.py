@@ -683,7 +683,8 @@ def _check_analysis_tree(tree) -> None:
     if "ltca" not in tree.children:
         raise InputError("tree: has no /ltca group (groups: "
                          f"{', '.join(tree.children) or 'none'}); the report is of an "
-                         "analysis as contact.run_analysis or ltca run writes it")
+                         "analysis, the /easeoff, /utca, /ltca … groups contact.run_analysis "
+                         "or ltca run write")
     missing = [v for v in REPORT_LTCA_VARIABLES if v not in tree["ltca"].variables]
     if missing:
         raise InputError(f"tree: /ltca lacks {', '.join(missing)}, which the report reads "

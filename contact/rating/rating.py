@@ -572,8 +572,9 @@ def iso10300_rating(case, torque: Any = None, speed: float | None = None,
     Raises
     ------
     InputError
-        A missing or bad ``[design]`` or ``[rating]`` field (named), a torque ≤ 0 or a
-        speed ≤ 0.
+        A missing or bad ``[design]`` or ``[rating]`` field (named), a torque or speed
+        outside the table of physical bounds (:data:`geometry.core.bounds.
+        PHYSICAL_BOUNDS`: (0, 1e6] N·m, (0, 5e4] rpm; issue 64: 10¹² rpm was rated).
     """
     from contact.catalogue import resolve_case
 
@@ -582,6 +583,7 @@ def iso10300_rating(case, torque: Any = None, speed: float | None = None,
     data, _ = case_gear_data(case)
     torque = case.operating.torque if torque is None else torque
     speed = case.operating.pinion_speed if speed is None else speed
+    _check_bounds(torque, speed)
     members = tuple(rating_material(case.member(mm).material, inputs.quality_grade)
                     for mm in MEMBERS)
     log.info("rating %s (%s side) at %s N m, %s rpm", case.name, inputs.side,
@@ -598,3 +600,13 @@ def _v_sum_vert(variable):
     return (*variable[:2], {**variable[2], "comment": (
         "NaN: not evaluated for a pair without hypoid offset (spiral bevel, a = 0), whose "
         "hypoid factor Z_Hyp is 1 (ISO 10300-2 cl. 6); v_Sigma,vert enters only Z_Hyp")})
+
+
+def _check_bounds(torque: Any, speed: Any) -> None:
+    """Refuse a torque [N·m] or pinion speed [rpm] outside the table of physical bounds
+    before any rating (one sentence naming it and the range)."""
+    from contact.pipeline import check_torques
+    from geometry.core.bounds import check_bound
+
+    check_torques(torque)
+    check_bound("pinion_speed", speed, field="speed")
