@@ -311,7 +311,7 @@ def run_analysis(
     operating: OperatingConditions | bool | None = None,
     deviations: tuple | bool | None = None,
     geometry: bool = True,
-    progress: bool = False,
+    progress: bool | str = False,
     theoretical: bool = True,
     mesh_interface: bool = True,
     root_stress: bool | FEOptions = False,  # noqa: F821 (FEOptions: imported lazily)
@@ -350,8 +350,10 @@ def run_analysis(
         ``(None, None)`` ignores it (theoretical surfaces only).
     geometry : bool
         Include the four generated flanks as ``/geometry`` (default True).
-    progress : bool
-        Progress bar over the LTCA roll positions.
+    progress : bool or "lines"
+        Progress bar over the LTCA roll positions and the unit loads of a first FE build,
+        or plain lines with the rate and the remaining time (``"lines"``, as ``ltca run``
+        prints when not on a terminal: :mod:`contact.study.progress`).
     theoretical : bool
         With deviations, also analyse the theoretical surfaces (``/theoretical``,
         default True); False skips them (studies keep only the deviated results, which

@@ -612,3 +612,33 @@ def test_ltca_run_has_the_root_stress_switch(tmp_path, monkeypatch):
     assert ROOT_STRESS_COST in root_stress_hint(case, "coast", shell)
     fe = root_stress_hint(case, None, LTCAOptions(compliance="fe"))
     assert "--no-root-stress" in fe and "superposition only" in fe
+
+
+def test_a_first_build_prints_progress_lines_off_a_terminal(tmp_path, monkeypatch, capfd):
+    """``run_analysis(progress="lines")`` — what ``ltca run`` passes when its output is
+    not a terminal (issue 60 item 5) — with root stress on a cold FE cache: plain lines on
+    standard error, no bar: the LTCA's rolls, then per member a line that the coefficients
+    are being built, one after the model is factorised, the unit loads solved with the
+    rate and the remaining time (ETA), and the build's end; the gear, built second, gets
+    an estimate from the pinion's build in the same cache. ~20 s: two coarse builds (with
+    68 unit loads each: three blocks, so lines between them)."""
+    import dataclasses
+
+    from contact.compliance.fe import CACHE_ENV
+    from contact.pipeline import run_analysis
+
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))
+    run_analysis(None, [250.0], options=SMALL, operating=False, geometry=False,
+                 mesh_interface=False, root_stress=dataclasses.replace(COARSE, load_nu=17),
+                 progress="lines")
+    err = capfd.readouterr().err.splitlines()
+    assert "\r" not in "".join(err)  # no bar
+    assert any(line.startswith("LTCA: 4/4 rolls in") for line in err), err
+    for member in ("pinion", "gear"):
+        mine = [line for line in err if line.startswith(f"FE {member}")]
+        assert "not in the cache, building them" in mine[0], mine
+        assert "unknowns built and factorised" in mine[1]
+        assert any("unit loads:" in line and "ETA" in line for line in mine), mine
+        assert "influence coefficients built in" in mine[-1]
+    gear = next(line for line in err if line.startswith("FE gear influence coefficients of"))
+    assert "by the last builds in this cache" in gear

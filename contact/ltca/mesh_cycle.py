@@ -87,7 +87,7 @@ def loaded_tca(
     flank: str | None = None,
     options: LTCAOptions | None = None,
     easeoff: EaseOff | None = None,
-    progress: bool = False,
+    progress: bool | str = False,
     problem_sink: Callable[[ContactProblem], None] | None = None,
     transitions: tuple[float, float] | None = None,
     roll_problems: list[RollProblem] | None = None,
@@ -108,8 +108,8 @@ def loaded_tca(
     options : LTCAOptions, optional
     easeoff : contact.utca.easeoff.EaseOff, optional
         A precomputed ease-off of the same case, flank and misalignment.
-    progress : bool
-        Show a progress bar over roll positions.
+    progress : bool or "lines"
+        Show a progress bar over roll positions, or plain lines (``"lines"``).
     problem_sink : callable, optional
         Called with the final :class:`contact.ContactProblem` of every (torque, roll)
         (after the Weber iteration), e.g. to collect real problems for a solver study.
@@ -152,7 +152,7 @@ def loaded_tca(
 
 def _analyse(case, torque, misalignment: Misalignment | None, flank: str | None,
              options: LTCAOptions | None, easeoff: EaseOff | None,
-             transitions: tuple[float, float] | None, progress: bool,
+             transitions: tuple[float, float] | None, progress: bool | str,
              problem_sink: list[RollProblem] | None) -> xr.Dataset:
     """The analysis of :func:`loaded_tca`; the final problem of every (torque, roll) of the
     last pass (the pair window and edge limit settled) is appended to ``problem_sink``."""

@@ -96,7 +96,7 @@ class _Analysis:
     limits: tuple[float, float] = (np.inf, np.inf)  # [MPa] (edge, flank) pressure limits
 
 
-def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
+def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False,
                 sink: list[RollProblem] | None = None,
                 timing: dict[str, float]) -> tuple[xr.Dataset, float]:
     """The contact problems of every (torque, roll) of an analysis on its segments.
@@ -107,8 +107,9 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
         Case, ease-off, options, torques [N·m], roll positions [rad], transitions.
     seg : Segments
         The segments of every (roll, pair) (:func:`contact.ltca.segment_geometry`).
-    progress : bool
-        tqdm progress bar over the roll positions.
+    progress : bool or "lines"
+        tqdm progress bar over the roll positions, or plain lines (``"lines"``:
+        :func:`contact.study.progress.progress_reporter`).
     sink : list, optional
         The final problem of every (torque, roll) is appended as a :class:`RollProblem`,
         roll by roll and at each roll torque by torque.
@@ -146,10 +147,10 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool = False,
     elif computed:
         _assemble_first_pool(an, computed[0])
     bar = None
-    if progress:
-        from tqdm.auto import tqdm
+    if progress:  # a tqdm bar, or plain lines off a terminal ("lines", as the studies)
+        from contact.study.progress import progress_reporter
 
-        bar = tqdm(total=J, desc="LTCA", unit="roll")
+        bar = progress_reporter(progress, J, desc="LTCA", unit="roll")
     for j in range(J):
         src = int(seg.source[j])
         if src != j:

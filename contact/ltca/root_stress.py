@@ -134,7 +134,7 @@ def _roll_rotations(eo: EaseOff, roll: np.ndarray,
 
 
 def prepare_coefficients(case, flank: str | None = None, options=None, *,
-                         progress: bool = True) -> dict[str, xr.Dataset]:
+                         progress: bool | str = True) -> dict[str, xr.Dataset]:
     """Both members' FE influence coefficients, built or read from the cache, once.
 
     A study (sweep, duty cycle) whose points all use one design calls this in the client
@@ -533,7 +533,7 @@ def _max_principal(t: np.ndarray) -> np.ndarray:
 def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
                 options: FEOptions | None = None, *,
                 coefficients: dict[str, xr.Dataset] | None = None, cache: bool = True,
-                cache_dir=None, progress: bool = False, solver: str = "auto") -> xr.Dataset:
+                cache_dir=None, progress: bool | str = False, solver: str = "auto") -> xr.Dataset:
     """Root (fillet) stress of both members from the LTCA's segment forces.
 
     Parameters

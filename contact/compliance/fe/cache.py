@@ -25,6 +25,7 @@ caller builds and caches the coefficients again.
 
 Public names
 ------------
+BlockCheckpoint    the solved unit-load blocks of an interrupted build, kept for the next
 CACHE_ENV          the environment variable naming the cache directory
 CHECKSUM_ATTR      the global attribute holding an entry's data checksum
 prime_cache        write coefficients handed over by a study's client into this cache
@@ -60,6 +61,7 @@ __all__ = [
     "CACHE_ENV",
     "CHECKSUM_ATTR",
     "FORMAT_VERSION",
+    "BlockCheckpoint",
     "cache_directory",
     "cache_key",
     "cache_path",
@@ -326,6 +328,60 @@ def read_cache_entry(path: str | os.PathLike[str], key: str) -> xr.Dataset | Non
     if ds is None:
         _set_aside(path, seen, reason or "failed a check")
     return ds
+
+
+# ------------------------------------------------------------------ partial entries
+class BlockCheckpoint:
+    """The unit-load blocks of an interrupted build, kept for the next one (issue 64).
+
+    While :func:`contact.compliance.fe.influence_dataset` solves the unit loads block by
+    block, each solved block's responses are written beside the entry as
+    ``fe-<key>.part-<first>-<end>.nc`` (atomically, with its own key
+    ``<key>/loads <first>-<end>`` and data checksum, as an entry: :func:`write_cache_entry`).
+    A build of the same key that finds such parts reads them (:func:`read_cache_entry`:
+    a part that fails a check is set aside and solved again) and solves only the other
+    blocks; once the entry is written the parts are removed. A part of another block
+    layout simply does not match a block's name and is never read.
+
+    Parameters
+    ----------
+    path : path-like — the entry's file (``cache_path(key)``)
+    key : str — the entry's key
+    """
+
+    def __init__(self, path: str | os.PathLike[str], key: str) -> None:
+        self.path = Path(path)
+        self.key = key
+
+    def part(self, first: int, end: int) -> Path:
+        """The file of the block of unit loads ``first`` … ``end`` − 1."""
+        return self.path.with_name(f"{self.path.stem}.part-{first:04d}-{end:04d}.nc")
+
+    def _key(self, first: int, end: int) -> str:
+        return f"{self.key}/loads {first}-{end}"
+
+    def read(self, first: int, end: int) -> dict[str, np.ndarray] | None:
+        """The block's arrays (name → ndarray) if its part exists and passes every check,
+        else None."""
+        ds = read_cache_entry(self.part(first, end), self._key(first, end))
+        return None if ds is None else {name: ds[name].values for name in ds.data_vars}
+
+    def write(self, first: int, end: int, arrays: dict[str, np.ndarray]) -> None:
+        """Keep a solved block (name → ndarray, the loads along the last axis)."""
+        ds = xr.Dataset({name: (tuple(f"{name}_{i}" for i in range(a.ndim)), a)
+                         for name, a in arrays.items()})
+        write_cache_entry(ds, self.part(first, end), self._key(first, end))
+
+    def clear(self) -> int:
+        """Remove every part of this entry (of any block layout); the number removed."""
+        n = 0
+        for part in self.path.parent.glob(f"{self.path.stem}.part-*.nc"):
+            try:
+                part.unlink()
+                n += 1
+            except FileNotFoundError:
+                pass
+        return n
 
 
 def prime_cache(coefficients, cache_dir: str | os.PathLike[str] | None = None) -> int:

@@ -132,7 +132,7 @@ def _read_cached(path: str, stamp: tuple[int, int, int], key: str) -> xr.Dataset
 
 def shared_coefficients(case, member: str, flank: str = "drive",
                         options: FEOptions | None = None, *, cache: bool = True,
-                        cache_dir=None, progress: bool = False,
+                        cache_dir=None, progress: bool | str = False,
                         solver: str = "auto") -> xr.Dataset:
     """A member's influence coefficients, a cache file read once per process.
 
@@ -210,7 +210,7 @@ class FEPairModel:
 def fe_pair_model(case: Case, flanks: dict[str, str], options: FEOptions | None,
                   teeth: PairComplianceModel, *, coefficients: dict | None = None,
                   variable: str = "centreline", cache: bool = True, cache_dir=None,
-                  progress: bool = False, solver: str = "auto") -> FEPairModel:
+                  progress: bool | str = False, solver: str = "auto") -> FEPairModel:
     """Both members' FE coefficients of the analysed flanks, from the cache or built.
 
     Parameters
@@ -251,7 +251,7 @@ def fe_pair_model(case: Case, flanks: dict[str, str], options: FEOptions | None,
 
 def pair_coefficients(case: Case, flanks: dict[str, str], options: FEOptions | None,
                       coefficients: dict | None = None, *, cache: bool = True,
-                      cache_dir=None, progress: bool = False, solver: str = "auto"
+                      cache_dir=None, progress: bool | str = False, solver: str = "auto"
                       ) -> dict[str, xr.Dataset]:
     """Both members' coefficients of the analysed flanks: those given, the others from
     :func:`shared_coefficients` (read once per process, or built and cached).

@@ -30,6 +30,8 @@ from __future__ import annotations
 
 import importlib.util
 import logging
+import signal
+import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -49,6 +51,7 @@ __all__ = [
     "Factorisation",
     "elastic_model",
     "factorise",
+    "isolation_available",
     "lame",
     "stress_operator",
 ]
@@ -240,6 +243,7 @@ class Factorisation:
     factor_nnz : int — non-zeros of the factors (memory ≈ 12 bytes each); -1 where the
         solver does not report them (CHOLMOD through cvxopt)
     factor_time : float — [s]
+    isolated : bool — the factor lives in a worker process (:func:`factorise`)
     """
 
     solver: str
@@ -248,6 +252,15 @@ class Factorisation:
     factor_nnz: int
     factor_time: float
     _solve: Callable[[np.ndarray], np.ndarray]
+    isolated: bool = False
+    _close: Callable[[], None] | None = None
+
+    def close(self) -> None:
+        """End the worker process that holds an isolated factor (nothing otherwise); the
+        factorisation cannot solve afterwards."""
+        if self._close is not None:
+            self._close()
+            self._close = None
 
     def solve(self, rhs: np.ndarray) -> np.ndarray:
         """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N]; the
@@ -320,8 +333,134 @@ def _pardiso(box: list):
     return solve, nnz
 
 
-def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "auto"
-              ) -> Factorisation:
+# ------------------------------------------------------------ the factor in a worker process
+#: [s] how often a process waiting for its solver worker looks at it (and lets a signal
+#: handler run: a SIGTERM or Ctrl-C is honoured within this, not after the native call)
+WORKER_POLL = 0.1
+
+_PENDING: list = []  # the matrix handed to a forked worker (read by it, cleared here)
+
+
+def _set_parent_death_signal() -> None:
+    """Linux: the worker is killed when the process that started it dies (a SIGKILL of
+    ``ltca run`` leaves no orphan factorising on); elsewhere nothing."""
+    if sys.platform != "linux":
+        return
+    try:
+        import ctypes
+
+        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):  # pragma: no cover - no libc
+        pass
+
+
+def _serve(kernel: Callable[[list], tuple], conn) -> None:
+    """The worker: factorise the pending matrix with ``kernel``, report ``("ready", nnz,
+    seconds)`` or ``("error", exception)``, then solve each block of right-hand sides it
+    receives until ``None`` or the end of the pipe."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)   # the parent decides; it kills this
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # at once, even inside native code
+    _set_parent_death_signal()
+    box = [_PENDING.pop()]
+    try:
+        t0 = time.perf_counter()
+        solve, nnz = kernel(box)
+        conn.send(("ready", nnz, time.perf_counter() - t0))
+    except Exception as exc:  # handed to the parent, which raises it
+        conn.send(("error", exc))
+        return
+    while True:
+        try:
+            block = conn.recv()
+        except (EOFError, OSError):
+            return
+        if block is None:
+            return
+        try:
+            conn.send(("ok", solve(block)))
+        except Exception as exc:  # the parent raises it
+            conn.send(("error", exc))
+
+
+class _Worker:
+    """A forked process holding a factor: :meth:`call` waits for its answers in short
+    polls, so that a signal handler of the waiting (main) thread runs within
+    :data:`WORKER_POLL`; any exception while waiting (KeyboardInterrupt from SIGINT or the
+    CLI's SIGTERM handler among them) kills the worker first."""
+
+    def __init__(self, kernel: Callable[[list], tuple], box: list) -> None:
+        import multiprocessing
+
+        ctx = multiprocessing.get_context("fork")
+        self.conn, child = ctx.Pipe()
+        _PENDING.append(box.pop())
+        try:
+            self.proc = ctx.Process(target=_serve, args=(kernel, child), daemon=True,
+                                    name="fe-factor")
+            self.proc.start()
+        finally:
+            _PENDING.clear()  # this process's reference: the worker holds its own copy
+            child.close()
+
+    def receive(self):
+        """The worker's next message; raises what it reports, LTCAError if it died."""
+        try:
+            while not self.conn.poll(WORKER_POLL):
+                if not self.proc.is_alive():
+                    raise LTCAError(f"FE solver worker ended unexpectedly (exit code "
+                                    f"{self.proc.exitcode})")
+            msg = self.conn.recv()
+        except BaseException:
+            self.kill()
+            raise
+        if msg[0] == "error":
+            self.kill()
+            raise msg[1]
+        return msg
+
+    def solve(self, b: np.ndarray) -> np.ndarray:
+        try:
+            self.conn.send(b)
+        except BaseException:
+            self.kill()
+            raise
+        return self.receive()[1]
+
+    def close(self) -> None:
+        """Ask the worker to end, then make sure it did."""
+        if self.proc.is_alive():
+            try:
+                self.conn.send(None)
+            except OSError:
+                pass
+            self.proc.join(5.0)
+        self.kill()
+
+    def kill(self) -> None:
+        if self.proc.is_alive():
+            self.proc.kill()
+        self.proc.join()
+        self.conn.close()
+
+
+def _isolated(kernel: Callable[[list], tuple], box: list):
+    """``kernel``'s factorisation and solves in a :class:`_Worker`: (solve, nnz, close)."""
+    worker = _Worker(kernel, box)
+    _, nnz, _ = worker.receive()
+    return worker.solve, nnz, worker.close
+
+
+def isolation_available() -> bool:
+    """Whether the factor can live in a forked worker process here: POSIX ``fork``, and
+    this process may have children (not a daemonic process, e.g. a process pool's)."""
+    import multiprocessing
+
+    return ("fork" in multiprocessing.get_all_start_methods()
+            and not multiprocessing.current_process().daemon)
+
+
+def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "auto", *,
+              isolated: bool = False) -> Factorisation:
     """Factorise K with the ``fixed_dofs`` removed (homogeneous Dirichlet conditions).
 
     Parameters
@@ -329,6 +468,13 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     stiffness : sparse (3N, 3N) — K [N/mm]
     fixed_dofs : ndarray of int — constrained dofs
     solver : str — ``"auto"``, or a key of :data:`SOLVERS`
+    isolated : bool — factorise and solve in a forked worker process (where ``fork``
+        exists, :func:`isolation_available`; else in this process): the native
+        factorisation and solves hold the interpreter for seconds to minutes, in which a
+        signal handler cannot run; waiting for a worker, a SIGTERM or Ctrl-C is honoured
+        within :data:`WORKER_POLL` and the worker killed (issue 64). The right-hand sides
+        and solutions go through a pipe (~20 MB per block of 32, tens of ms). Call
+        :meth:`Factorisation.close` when done (the worker also ends with this process).
 
     Returns
     -------
@@ -363,14 +509,22 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     # (build_influence_model) gets its memory back before the factor takes its own
     del stiffness
     t0 = time.perf_counter()
+    kernel = {"cholmod": _cholmod, "pardiso": _pardiso, "superlu": _superlu}[solver]
+    isolated = isolated and isolation_available()
+    close = None
+    log.info("factorising %d unknowns with %s%s", free.size, solver,
+             " in a worker process" if isolated else "")
     try:
         box = [a]   # the solver takes the matrix out: freed once it holds its own copy
         del a
-        solve, nnz = {"cholmod": _cholmod, "pardiso": _pardiso, "superlu": _superlu}[solver](box)
+        if isolated:
+            solve, nnz, close = _isolated(kernel, box)
+        else:
+            solve, nnz = kernel(box)
     except RuntimeError as exc:  # SuperLU: "Factor is exactly singular"
         raise LTCAError(f"stiffness matrix: factorisation failed ({exc}); part of the mesh "
                         "is not held by the constraint") from None
     elapsed = time.perf_counter() - t0
     log.info("factorised %d unknowns with %s: %d non-zeros in the factors, %.1f s", free.size,
              solver, nnz, elapsed)
-    return Factorisation(solver, free, n, nnz, elapsed, solve)
+    return Factorisation(solver, free, n, nnz, elapsed, solve, isolated, close)

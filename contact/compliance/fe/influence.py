@@ -54,6 +54,7 @@ import xarray as xr
 from tqdm.auto import tqdm
 
 from contact.compliance.fe.cache import (
+    BlockCheckpoint,
     cache_key,
     cache_path,
     read_cache_entry,
@@ -358,7 +359,7 @@ def load_v_limits(sections, flank: str, options: FEOptions) -> tuple[float, floa
 
 def build_influence_model(case, member: str, flank: str = "drive",
                           options: FEOptions | None = None, *,
-                          solver: str = "auto") -> InfluenceModel:
+                          solver: str = "auto", isolated: bool = False) -> InfluenceModel:
     """Build a member's FE model: solid, stiffness, factorisation, loads, fillet points.
 
     Parameters
@@ -369,6 +370,10 @@ def build_influence_model(case, member: str, flank: str = "drive",
         (:func:`contact.compliance.fe.options.member_flank`)
     options : FEOptions, optional
     solver : str — ``"auto"`` or a key of :data:`contact.compliance.fe.elasticity.SOLVERS`
+    isolated : bool — factorise and solve in a worker process, so that a signal is
+        honoured within a tenth of a second (:func:`contact.compliance.fe.elasticity.
+        factorise`); then close the model's factorisation (``model.factor.close()``)
+        when done
 
     Returns
     -------
@@ -398,7 +403,8 @@ def build_influence_model(case, member: str, flank: str = "drive",
     # is free before the factor takes its own (the build's peak, issue 53)
     box = [elastic.stiffness]
     elastic = dataclasses.replace(elastic, stiffness=None)
-    factor = factorise(box.pop(), (3 * fixed_nodes[:, None] + np.arange(3)).ravel(), solver)
+    factor = factorise(box.pop(), (3 * fixed_nodes[:, None] + np.arange(3)).ravel(), solver,
+                       isolated=isolated)
     times["factorisation"] = factor.factor_time
     t1 = time.perf_counter()
     side = solid.sections.side_name(name)
@@ -435,16 +441,40 @@ def principal_stresses(tensor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return ev[..., -1], ev[..., 0]
 
 
-def influence_dataset(model: InfluenceModel, case, *, progress: bool = True,
-                      key: str = "") -> xr.Dataset:
+def _load_progress(progress, total: int, initial: int, desc: str):
+    """The reporter of the unit loads solved: a tqdm bar (``True``), plain lines with the
+    rate and the remaining time (``"lines"``: :class:`contact.study.progress.
+    ProgressLines`, as the studies print them when not on a terminal) or None."""
+    if progress == "lines":
+        from contact.study.progress import ProgressLines
+
+        return ProgressLines(total, initial, desc, "load")
+    if progress:
+        return tqdm(total=total, initial=initial, desc=desc, unit="load")
+    return None
+
+
+def progress_line(progress, text: str) -> None:
+    """A plain progress line of an FE build on standard error, in the ``"lines"`` mode of
+    ``progress`` only (a bar or nothing otherwise)."""
+    if progress == "lines":
+        print(text, file=sys.stderr, flush=True)
+
+
+def influence_dataset(model: InfluenceModel, case, *, progress: bool | str = True,
+                      key: str = "", checkpoint=None) -> xr.Dataset:
     """Solve the unit loads of a model and gather the influence coefficients.
 
     Parameters
     ----------
     model : InfluenceModel
     case : geometry.case.Case — for the case name and the member's blank data
-    progress : bool — show a progress bar over the blocks of loads (tqdm)
+    progress : bool or "lines" — a progress bar over the loads solved (tqdm), plain lines
+        with the rate and the remaining time (``"lines"``), or none (False)
     key : str — the cache key, stored as an attribute
+    checkpoint : contact.compliance.fe.cache.BlockCheckpoint, optional — where the
+        solved blocks of loads are kept as they are solved, and read from before (an
+        interrupted build's: only the other blocks are solved)
 
     Returns
     -------
@@ -459,17 +489,40 @@ def influence_dataset(model: InfluenceModel, case, *, progress: bool = True,
     t0 = time.perf_counter()
     nl = model.loads[0].shape[1]
     offsets = model.offsets
-    comp = np.empty((len(offsets), nl, nl))
-    centre = np.empty((len(offsets), nl, nl))
-    n_pts = model.fillet.position.shape[0]
-    stress = np.empty((n_pts, 6, nl))
-    for lo in tqdm(range(0, nl, _CHUNK), disable=not progress, unit="block",
-                   desc=f"FE {model.solid.member} unit loads"):
-        hi = min(lo + _CHUNK, nl)
+    member = model.solid.member
+    arrays = {"compliance": np.empty((len(offsets), nl, nl)),
+              "centreline": np.empty((len(offsets), nl, nl)),
+              "stress": np.empty((model.fillet.position.shape[0], 6, nl))}
+    blocks = [(lo, min(lo + _CHUNK, nl)) for lo in range(0, nl, _CHUNK)]
+    todo = []
+    for lo, hi in blocks:  # the blocks an interrupted build kept
+        part = checkpoint.read(lo, hi) if checkpoint is not None else None
+        if part is not None and all(part.get(n, np.empty(0)).shape == a[..., lo:hi].shape
+                                    for n, a in arrays.items()):
+            for name, a in arrays.items():
+                a[..., lo:hi] = part[name]
+        else:
+            todo.append((lo, hi))
+    kept = nl - sum(hi - lo for lo, hi in todo)
+    if kept:
+        log.info("%s %s unit loads: resuming, %d of %d already solved (kept by an interrupted "
+                 "build)", case.name, member, kept, nl)
+    bar = _load_progress(progress, nl, kept, f"FE {member} unit loads")
+    for lo, hi in todo:
         disp = model.solve(model.loads[0][:, lo:hi].toarray())
-        comp[:, :, lo:hi] = model.compliance_of(disp)
-        centre[:, :, lo:hi] = model.centreline_of(disp)
-        stress[:, :, lo:hi] = model.stress_of(disp)
+        solved = {"compliance": model.compliance_of(disp),
+                  "centreline": model.centreline_of(disp), "stress": model.stress_of(disp)}
+        del disp
+        for name, a in arrays.items():
+            a[..., lo:hi] = solved[name]
+        if checkpoint is not None:
+            checkpoint.write(lo, hi, solved)
+        log.info("%s %s unit loads %d-%d of %d solved", case.name, member, lo, hi, nl)
+        if bar is not None:
+            bar.update(hi - lo)
+    if bar is not None:
+        bar.close()
+    comp, centre, stress = arrays["compliance"], arrays["centreline"], arrays["stress"]
     solve_time = time.perf_counter() - t0
     nu, nv = len(model.grid_u), len(model.grid_v)
     idx = model.fillet.index  # (T, 2, S, A)
@@ -627,7 +680,7 @@ def _grid_positions(model: InfluenceModel) -> np.ndarray:
 def influence_coefficients(case, member: str, flank: str = "drive",
                            options: FEOptions | None = None, *, cache: bool = True,
                            cache_dir: str | os.PathLike[str] | None = None,
-                           progress: bool = True, solver: str = "auto") -> xr.Dataset:
+                           progress: bool | str = True, solver: str = "auto") -> xr.Dataset:
     """A member's FE influence coefficients, from the cache or built and cached.
 
     Parameters
@@ -639,8 +692,11 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     cache : bool — read and write the cache (default True)
     cache_dir : path, optional — the cache directory (default
         :func:`contact.compliance.fe.cache.cache_directory`)
-    progress : bool — a progress bar while the unit loads are solved
-    solver : str — ``"auto"`` (PARDISO if installed, else SuperLU) or a solver name
+    progress : bool or "lines" — a progress bar while the unit loads are solved, or
+        plain lines on standard error (``"lines"``: a line per build phase with the
+        estimate of the last builds in this cache, then the loads solved with the rate
+        and the remaining time, as the studies print when not on a terminal)
+    solver : str — ``"auto"`` (CHOLMOD, else PARDISO, else SuperLU) or a solver name
 
     Returns
     -------
@@ -657,6 +713,12 @@ def influence_coefficients(case, member: str, flank: str = "drive",
 
     Notes
     -----
+    The factorisation and the solves run in a worker process (where ``fork`` exists), so
+    that SIGTERM or Ctrl-C ends a build within a tenth of a second rather than after the
+    native factorisation (issue 64); each solved block of unit loads is kept beside the
+    entry (:class:`contact.compliance.fe.cache.BlockCheckpoint`), so that a build
+    interrupted after some blocks resumes from them.
+
     Written atomically (geometry.atomic_files): a file in the cache is always complete,
     and carries a checksum of its data
     (:func:`contact.compliance.fe.cache.write_cache_entry`). The key covers the member's
@@ -674,10 +736,50 @@ def influence_coefficients(case, member: str, flank: str = "drive",
         if ds is not None:
             log.info("%s %s influence coefficients read from %s", case.name, member, path)
             return ds
-    model = build_influence_model(case, member, name, opt, solver=solver)
-    ds = influence_dataset(model, case, progress=progress, key=key)
+    t0 = time.perf_counter()
+    progress_line(progress, f"FE {member} influence coefficients of {case.name} ({name} "
+                            f"flank): not in the cache, building them"
+                            + (_estimate_text(cache_dir) if cache else ""))
+    # the factor in a worker process: a signal is honoured at once (issue 64)
+    model = build_influence_model(case, member, name, opt, solver=solver, isolated=True)
+    try:
+        if progress == "lines":
+            progress_line(progress, f"FE {member}: model of {model.factor.free.size} unknowns "
+                                    f"built and factorised ({model.factor.solver}) in "
+                                    f"{time.perf_counter() - t0:.0f} s; solving "
+                                    f"{model.loads[0].shape[1]} unit loads")
+        checkpoint = BlockCheckpoint(path, key) if cache else None
+        ds = influence_dataset(model, case, progress=progress, key=key,
+                               checkpoint=checkpoint)
+    finally:
+        model.factor.close()
     if cache:
         ds = write_cache_entry(ds, path, key)
+        checkpoint.clear()
         log.info("%s %s influence coefficients cached in %s", case.name, member, path)
+    progress_line(progress, f"FE {member} influence coefficients built in "
+                            f"{time.perf_counter() - t0:.0f} s")
     return ds
+
+
+def _estimate_text(cache_dir) -> str:
+    """``" (~40 s by the last builds here)"``: the median build time of the entries of the
+    cache directory (their ``cost_time_total_s``, the ten newest), or "" without any."""
+    from contact.compliance.fe.cache import cache_directory
+
+    try:
+        files = sorted(cache_directory(cache_dir).glob("fe-*.nc"),
+                       key=lambda f: f.stat().st_mtime)[-10:]
+    except OSError:
+        return ""
+    times = []
+    for f in files:
+        try:
+            with xr.open_dataset(f, engine="netcdf4") as ds:
+                times.append(float(ds.attrs["cost_time_total_s"]))
+        except (OSError, KeyError, ValueError, TypeError):
+            continue
+    if not times:
+        return ""
+    return f" (~{float(np.median(times)):.0f} s by the last builds in this cache)"
 
