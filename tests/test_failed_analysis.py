@@ -171,3 +171,16 @@ def test_a_duty_cycle_bin_without_certified_contact_is_failed(failing_solver):
     assert int(ds["status"].values[0]) == 2
     assert str(ds["reason"].values[0]).startswith("no certified contact solution")
     assert math.isnan(float(ds["efficiency"].values[0]))
+
+
+def test_ltca_mesh_interface_without_certified_contact_exits_1(failing_solver, tmp_path,
+                                                              capsys):
+    out = tmp_path / "m.csv"
+    code = main(["mesh-interface", "--solver", failing_solver, "--rolls-per-cycle", "4",
+                 "--segments", "8", "--torque", "250", "--no-progress", "-o", str(out)])
+    err = capsys.readouterr().err.strip()
+    assert code == 1
+    assert err.startswith("ltca mesh-interface: error: analysis failed: no certified contact "
+                          "solution at T_p 250 N m") and err.endswith("m.csv holds what was "
+                                                                      "found")
+    assert out.exists()

@@ -54,7 +54,7 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
-    from contact.commands.run import ltca_options
+    from contact.commands.run import check_certified, ltca_options
     from contact.ltca.mesh_interface import write_mesh_interface_csv
     from contact.pipeline import run_analysis
     from contact.plots.style import misalignment_text
@@ -96,4 +96,5 @@ def run(args: argparse.Namespace) -> int:
         target = (Path(args.plots)
                   / f"{case.name}_mesh_interface_{torque_tag(mesh['torque'].values)}.png")
         print(f"wrote {save_png(mesh_interface_figure(mesh, tree['ltca'].to_dataset()), target)}")
+    check_certified(tree, path)  # no certified contact: exit 1, as ltca run (issue 64)
     return 0

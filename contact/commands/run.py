@@ -334,7 +334,8 @@ def check_certified(tree, path) -> None:
     if status != "ok":
         raise AnalysisFailedError(
             f"analysis {status}: {tree.attrs.get('analysis_status_reason', '')}; {path} "
-            "holds what was found (root attribute analysis_status)")
+            "holds what was found"
+            + (" (root attribute analysis_status)" if str(path).endswith(".nc") else ""))
 
 
 def run_rating(args: argparse.Namespace, case):
