@@ -18,21 +18,27 @@ is a production bearing (:class:`DevelopmentTargets`):
   (:mod:`contact.study.vh_check`) at a typical assembly tolerance — and the result says
   whether the pattern stays clear of toe and heel and the edges elastic there.
 
-Every design is the full synthesis (:func:`geometry.synthesis.case_synthesis.synthesize`)
-followed by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll positions, 12
-segments per curve, shell compliance, no root stress), summarised by
-:func:`contact.study.summary.point_summary`. The objective (:func:`development_score`) is a
-sum of squared, dimensionless shortfalls; it is minimised by Nelder–Mead
-(``scipy.optimize.minimize``, bounded) over a few synthesis inputs (:data:`VARIABLES`),
-which stops as soon as every target is met.
+Two stages (:func:`develop`): the **bearing** (path angle, ellipse length), each design
+the full synthesis (:func:`geometry.synthesis.case_synthesis.synthesize`); then the
+**relief** (tip and root relief and their start) on the blade alone. Each design is
+analysed by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll positions, 12
+segments per curve, shell compliance, no root stress) at the light and the design torque,
+summarised by :func:`contact.study.summary.point_summary`. The objective
+(:func:`development_score`) is a sum of squared, dimensionless shortfalls, minimised by a
+bounded Nelder–Mead (``scipy.optimize.minimize``; the relief stage first samples its box
+with scrambled Sobol points, ``scipy.stats.qmc``) that stops as soon as every target is
+met. When the targets conflict (a short pattern and a low LTE on a pinion of few teeth),
+the least objective wins and the case says which targets were missed.
 
 Public names
 ------------
 DevelopmentTargets   the targets (the ``[development]`` table of a basic file)
 targets_from_table   the targets from that table (file units), validated
 VARIABLES            the developed synthesis inputs and their default bounds
+RELIEF_NAMES         those of the relief stage
 COARSE_LTCA          the LTCA settings inside the loop
 development_score    objective, per-target shortfalls and whether all are met
+working_depth_centre the depth centre aimed at by default
 DevelopmentEvaluation, DevelopmentResult   one design, the whole development
 develop              run the development of a basic design
 design_torque_of     the torque the bearing is checked at
@@ -62,9 +68,10 @@ from geometry.synthesis.basic_design import (
     with_flank_options,
 )
 
-__all__ = ["COARSE_LTCA", "VARIABLES", "DevelopmentEvaluation", "DevelopmentResult",
-           "DevelopmentTargets", "design_torque_of", "develop", "development_score",
-           "targets_from_table"]
+__all__ = ["COARSE_LTCA", "RELIEF_NAMES", "STAGE_TERMS", "VARIABLES",
+           "DevelopmentEvaluation", "DevelopmentResult", "DevelopmentTargets",
+           "design_torque_of", "develop", "development_score", "targets_from_table",
+           "working_depth_centre"]
 
 log = logging.getLogger(__name__)
 
@@ -478,7 +485,9 @@ class DevelopmentResult:
         """One paragraph for the case's ``source``: prescriptions, targets, achieved."""
         b, t = self.best, self.targets
         m = b.metrics
-        vals = ", ".join(f"{k} {v:.4g} {FLANK_OPTION_UNITS[k]}" for k, v in b.values.items())
+        vals = ", ".join(f"{k} {v:.4g}" + (f" {FLANK_OPTION_UNITS[k]}"
+                                             if FLANK_OPTION_UNITS[k] != "1" else "")
+                         for k, v in b.values.items())
         tl, td = self.torque
         tol = "; ".join(
             f"{lab}: pattern {ms['pattern_toe_u'][0]:.2f}-{ms['pattern_heel_u'][0]:.2f}, edge "
