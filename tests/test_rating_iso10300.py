@@ -619,3 +619,15 @@ def test_capacity_is_the_long_life_one_whatever_the_load_cycles():
     long = capacity_torque(case, rating=table)
     assert capacity_torque(case, rating={**table, "load_cycles": 3e5}) == pytest.approx(
         long, rel=1e-9)
+
+
+def test_cli_says_where_the_flank_roughness_comes_from(capsys):
+    """``ltca rate`` of the default case (no flank_roughness in its [rating]) says the
+    flanks' Rz is its Rq as Rz = 6 √(2/π) Rq; a case that gives it (the TR's sample 1) says
+    nothing of it."""
+    assert main(["rate"]) == 0
+    out = capsys.readouterr().out
+    assert ("flank roughness Rz 3.83 / 3.83 um: the case's [operating] roughness Rq 0.8 um "
+            "(the flanks the analysis runs) as Rz = 6 Ra = 6 sqrt(2/pi) Rq") in out
+    assert main(["rate", "iso10300_30_sample1", "--torque", "300", "--speed", "1200"]) == 0
+    assert "flank roughness Rz" not in capsys.readouterr().out

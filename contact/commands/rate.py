@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import math
 from pathlib import Path
 
@@ -117,6 +118,11 @@ def run(args: argparse.Namespace) -> int:
     case = resolve_case(args.case)
     ds = iso10300_rating(case, args.torque, args.speed)
     print(tables(ds))
+    rz = json.loads(ds.attrs["rating_inputs"])["flank_roughness"]
+    if "flank_roughness" not in (case.extra.get("rating") or {}):
+        print(f"flank roughness Rz {rz[0]:g} / {rz[1]:g} um: the case's [operating] roughness "
+              f"Rq {case.operating.roughness:g} um (the flanks the analysis runs) as Rz = 6 "
+              "Ra = 6 sqrt(2/pi) Rq (docs/rating.md)")
     if args.output:
         tree = xr.DataTree.from_dict({
             "/": xr.Dataset(attrs={"case": case.name,
