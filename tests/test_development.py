@@ -170,3 +170,26 @@ def test_edge_share_agrees_with_the_verdicts_edge_kinds(unrelieved_pc):
     assert metrics["plastic_share"].shape == (2,)
     assert np.all((metrics["plastic_share"] >= 0) & (metrics["plastic_share"] <= 1))
     assert not math.isnan(float(metrics["lte_peak_to_peak"][1]))
+
+
+def test_a_bad_development_table_stops_ltca_synthesize_before_the_work(tmp_path, capsys):
+    """``ltca synthesize`` refuses a bad ``[development]`` field at once (rc 2, the field
+    named), before any synthesis; no case is written."""
+    from contact.cli import main
+
+    text = (DESIGNS / "pc_hypoid_10x43.toml").read_text(encoding="utf-8")
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text + "\n[development]\npattern_lenght = 0.5\n", encoding="utf-8")
+    out = tmp_path / "case.toml"
+    assert main(["synthesize", str(bad), "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "development.pattern_lenght" in err and "pattern_length" in err
+    assert not out.exists()
+
+
+def test_no_development_is_an_option_of_ltca_synthesize():
+    from contact.cli import build_parser
+
+    parser = build_parser()
+    assert parser.parse_args(["synthesize", "x.toml"]).development is True
+    assert parser.parse_args(["synthesize", "x.toml", "--no-development"]).development is False
