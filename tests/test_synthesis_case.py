@@ -1,6 +1,7 @@
 """The case ``ltca synthesize`` writes is complete (issue 60, item 2): the basic file's
 ``[design]``, a ``[rating]`` table (the basic file's, else stated defaults) with the
-design torque, provenance naming the user's basic file, progress lines off a terminal.
+design torque, provenance naming the user's basic file (also in the report of its run),
+progress lines off a terminal.
 
 The design torque's default is the ISO 10300 capacity (:mod:`contact.rating.capacity`);
 it is checked against the structure of ISO 10300-2/-3 rather than against itself:
@@ -96,7 +97,9 @@ def test_synthesised_case_is_rated(tmp_path, capsys):
            "source": "my rating inputs"}
     basic_path = _basic_with_rating(tmp_path, own)
     out = tmp_path / "my_case.toml"
-    assert ltca(["synthesize", str(basic_path), "-o", str(out)]) == 0
+    # the plain synthesis (the development bearing, tested elsewhere, writes the same
+    # tables on top)
+    assert ltca(["synthesize", str(basic_path), "-o", str(out), "--no-development"]) == 0
     cap = capsys.readouterr()
     assert "synthesize: step 10/10, the case" in cap.err
     assert "design torque:" in cap.out
@@ -111,6 +114,19 @@ def test_synthesised_case_is_rated(tmp_path, capsys):
     assert rating["design_torque"] == pytest.approx(capacity_torque(case), rel=1e-3)
     assert case.source.startswith(f"Synthesised from the basic design file {basic_path}")
     assert ltca(["rate", str(out)]) == 0
+    # ltca run rates it beside the LTCA, and its report cites the user's file, with the
+    # toolkit's method reference labelled as such
+    nc, page = tmp_path / "my_run.nc", tmp_path / "my_run.html"
+    assert ltca(["run", str(out), "--torque", "100", "--rolls-per-cycle", "4", "--segments",
+                 "10", "--no-progress", "--no-root-stress", "-o", str(nc)]) == 0
+    assert ltca(["report", str(nc), "-o", str(page), "--no-progress"]) == 0
+    from geometry.core.io import read_netcdf
+
+    assert "rating" in read_netcdf(nc, tree=True).children
+    html = page.read_text(encoding="utf-8")
+    assert (f"<tr><td>design source</td><td>Synthesised from the basic design file "
+            f"{basic_path}: Kolivand") in html
+    assert "<td>method (the toolkit&#39;s references)</td><td>Kolivand, M., 2009." in html
 
 
 def test_default_rating_goes_into_a_case_without_one():

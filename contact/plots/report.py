@@ -239,6 +239,24 @@ def _cell(value: float, decimals: int) -> dict:
             "value": repr(v) if np.isfinite(v) else ""}
 
 
+#: how the page labels the file's provenance attributes: the file's ``references`` cite
+#: the toolkit's method (Kolivand 2009), not the design, whose source is the case's own
+_PROVENANCE_LABELS = {"source": "written by", "references": "method (the toolkit's references)"}
+
+
+def _provenance(tree: xr.DataTree, case_source: str) -> list[tuple[str, str]]:
+    """The page's provenance rows: the design's source first (the case's ``source`` up to
+    its first sentence's end, e.g. the user's basic file of a synthesised case), then the
+    file's attributes, the method references labelled as the toolkit's."""
+    text = str(case_source).strip()
+    first = re.split(r"(?<=\.)\s+(?=[A-Z][a-z])", text, maxsplit=1)[0] if text else ""
+    rows = [("design source", first or "not recorded in the file")]
+    rows += [(_PROVENANCE_LABELS.get(k, k), str(tree.attrs[k])) for k in
+             ("title", "date_created", "history", "source", "Conventions", "references")
+             if k in tree.attrs]
+    return rows
+
+
 def _inputs(tree: xr.DataTree) -> tuple[dict, str]:
     text = str(tree.attrs.get("inputs", ""))
     if not text:
@@ -568,9 +586,8 @@ def report_context(tree: xr.DataTree,
                  "source": tree.attrs.get("case_source") or case.get("source", ""),
                  "synthesised": list(case.get("synthesised", [])),
                  "inputs": inputs_text},
-        "provenance": [(k, str(tree.attrs[k])) for k in
-                       ("title", "date_created", "history", "source", "Conventions",
-                        "references") if k in tree.attrs],
+        "provenance": _provenance(tree, tree.attrs.get("case_source")
+                                  or case.get("source", "")),
         "operating": _operating(tree, lt, fr, eo),
         "columns": [(c.heading, c.unit) for c in SUMMARY_COLUMNS],
         "summary": _summary(tree, lt) if lt is not None else [],
