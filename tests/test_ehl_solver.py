@@ -401,6 +401,10 @@ def test_ltca_ehl_command_writes_dataset(tmp_path, capsys) -> None:
         load = 2 * math.pi * R * 1000.0**2 / STEEL_E_PRIME
         ref = line_contact_summary(LineContactCondition(
             load_per_length=load, radius=R, entraining_velocity=5.0, slide_to_roll=0.3,
-            temperature=75.0), Grid(nodes=256))
+            temperature=75.0), Grid(nodes=256), thermal=True)
         assert float(ds.film_central) == pytest.approx(ref.film_central, rel=1e-12)
+        # the command's film shears at the flash temperature, as its rough path (issue 61)
+        assert int(ds.attrs["thermal"]) == 1
+        assert float(ds.friction_coefficient) == pytest.approx(ref.friction_coefficient,
+                                                               rel=1e-12)
         assert float(ds.hertz_pressure) == pytest.approx(1000.0, rel=1e-12)

@@ -127,7 +127,7 @@ def run(args: argparse.Namespace) -> int:
         if not rough:
             cond = LineContactCondition(**fields)
             grid = None if args.nodes is None else Grid(nodes=args.nodes)
-            ds = solve_line_contact(cond, grid)
+            ds = solve_line_contact(cond, grid, thermal=not args.isothermal)
         else:
             cond = LineContactCondition(**fields)
             grid = None if args.nodes is None else stochastic_grid(

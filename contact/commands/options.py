@@ -356,8 +356,8 @@ def film_model_options(p: argparse.ArgumentParser) -> None:
                    help="viscosity-pressure law of the film and its shear (default "
                    "%(default)s, the friction study's and the mu model's)")
     p.add_argument("--isothermal", action="store_true",
-                   help="stochastic: the film's shear at the inlet temperature, without the "
-                   "surfaces' flash temperature")
+                   help="the film's shear at the inlet temperature, without the surfaces' "
+                   "flash temperature (smooth and rough films alike)")
 
 
 def root_stress_option(p: argparse.ArgumentParser, what: str) -> None:

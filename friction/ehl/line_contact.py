@@ -477,11 +477,18 @@ def steady_active_set(s: ContactSetup, p: Array, h0: float, grid: Grid,
 
 
 def film_and_boundary_friction(s: ContactSetup, cond: LineContactCondition, st: NodeState,
-                               kind: NDArray[np.int_]) -> tuple[Array, float, float, float]:
+                               kind: NDArray[np.int_], thermal: bool = False
+                               ) -> tuple[Array, float, float, float]:
     """Film shear stress τ(x) [Pa], the fluid and boundary friction forces [N/m], load [N/m].
 
     Eyring shear with the limiting shear stress on open non-contact nodes, μ_b p on
-    contact nodes (seed Eq. 5.7–5.8); the load is ∫ p dx.
+    contact nodes (seed Eq. 5.7–5.8); the load is ∫ p dx. With ``thermal`` the film
+    shears at the surfaces' temperature — the inlet's plus the flash temperature of the
+    friction heat (Jaeger's moving band source on both surfaces, split by their speeds,
+    :func:`friction.ehl.thermal.flash_temperature`; the materials table's default steel),
+    iterated to a fixed point relaxed by half — the stochastic solver's thermal footing
+    (:mod:`friction.ehl.stochastic`), so that a rough contact's μ tends to the smooth
+    one's as Rq → 0 (issue 61); without it at the inlet temperature.
     """
     b = s.b
     h = np.maximum(st.film, 0.0) * b**2 / s.radius  # [m]
@@ -492,10 +499,42 @@ def film_and_boundary_friction(s: ContactSetup, cond: LineContactCondition, st: 
     tau = eyring_limited_shear(st.viscosity * s.eta0, rate, p, s.tau0, s.lim)
     tau = np.where(fluid, tau, 0.0)
     dx = s.spacing * b
+    if thermal and us != 0.0:
+        tau = _thermal_shear(s, cond, p, rate, fluid, kind, dx)
     f_fluid = float(np.abs(tau).sum() * dx)
     w = float(p.sum() * dx)
     f_boundary = s.mu_b * float(p[kind == CONTACT].sum() * dx)
     return tau, f_fluid, f_boundary, w
+
+
+def _thermal_shear(s: ContactSetup, cond: LineContactCondition, p: Array, rate: Array,
+                   fluid: NDArray[np.bool_], kind: NDArray[np.int_], dx: float) -> Array:
+    """τ(x) [Pa] at the inlet temperature plus the flash temperature of the heat of the
+    film's shear and of the boundary friction, to a fixed point (0.05 K, ≤ 60 steps)."""
+    from friction.ehl.stochastic import _oil_properties  # (stochastic imports this module)
+    from friction.ehl.thermal import flash_temperature
+    from geometry.core.materials import DEFAULT_MATERIAL, material
+
+    oil = lubricant_of(cond.lubricant)
+    model = VISCOSITY_PRESSURE_MODELS[cond.viscosity_model]
+    ue, sr = cond.entraining_velocity, cond.slide_to_roll
+    us = abs(sr * ue)
+    effusivity = material(DEFAULT_MATERIAL).thermal_effusivity
+    speeds = [u for u in (abs(ue * (1.0 + 0.5 * sr)), abs(ue * (1.0 - 0.5 * sr))) if u > 0.0]
+    boundary_flux = np.where(kind == CONTACT, s.mu_b * p * us, 0.0)   # [W/m2]
+    flash = np.zeros(p.size)
+    tau = np.zeros(p.size)
+    for _ in range(60):
+        eta0, alpha = _oil_properties(oil, float(cond.temperature) + flash)
+        eta, _ = model(p, eta0, alpha)  # type: ignore[operator]
+        tau = np.where(fluid, eyring_limited_shear(eta, rate, p, s.tau0, s.lim), 0.0)
+        q = 0.5 * (np.abs(tau) * us + boundary_flux)                    # each surface's
+        new_flash = 0.5 * sum(flash_temperature(q, dx, u, effusivity) for u in speeds)
+        change = float(np.max(np.abs(new_flash - flash)))
+        flash = 0.5 * (flash + new_flash)
+        if change < 0.05:
+            break
+    return tau
 
 
 def smooth_lambda_ratio(s: ContactSetup, cond: LineContactCondition) -> float:
@@ -571,7 +610,7 @@ def _moes_film(cond: LineContactCondition) -> float:
                               cond.load_per_length, cond.radius, cond.e_prime))
 
 
-def _solve(cond: LineContactCondition, grid: Grid | None):
+def _solve(cond: LineContactCondition, grid: Grid | None, thermal: bool = False):
     if grid is not None:
         grid.check()
     _checked(cond)
@@ -582,7 +621,7 @@ def _solve(cond: LineContactCondition, grid: Grid | None):
     if grid is None:
         grid = smooth_grid(cond) if film else Grid()
     while True:
-        out = _solve_on(cond, grid)
+        out = _solve_on(cond, grid, thermal)
         kind = out[2]
         if not film or not np.any(kind == CONTACT):
             return out
@@ -598,7 +637,7 @@ def _solve(cond: LineContactCondition, grid: Grid | None):
         grid = dataclasses.replace(grid, nodes=nodes)
 
 
-def _solve_on(cond: LineContactCondition, grid: Grid):
+def _solve_on(cond: LineContactCondition, grid: Grid, thermal: bool = False):
     s = contact_setup(cond, grid)
     p, h0 = initial_pressure(s, cond)
     rough = s.roughness
@@ -620,7 +659,7 @@ def _solve_on(cond: LineContactCondition, grid: Grid):
     # or two BLAS threads)
     kind = np.where((kind == FLUID) & (st.film <= CLOSED_FILM) & (st.pressure > 0.0),
                     CONTACT, kind)
-    tau, f_fluid, f_boundary, w = film_and_boundary_friction(s, cond, st, kind)
+    tau, f_fluid, f_boundary, w = film_and_boundary_friction(s, cond, st, kind, thermal)
     return s, st, kind, tau, f_fluid, f_boundary, w, iterations, grid
 
 
@@ -642,8 +681,8 @@ def _summary(s, cond, st, kind, f_fluid, f_boundary, w) -> LineContactSummary:
     )
 
 
-def line_contact_summary(condition: LineContactCondition, grid: Grid | None = None
-                         ) -> LineContactSummary:
+def line_contact_summary(condition: LineContactCondition, grid: Grid | None = None, *,
+                         thermal: bool = False) -> LineContactSummary:
     """Scalar results of one steady line contact (no dataset built).
 
     Parameters
@@ -655,6 +694,9 @@ def line_contact_summary(condition: LineContactCondition, grid: Grid | None = No
         closes anywhere is solved again on twice the nodes (up to
         :data:`SMOOTH_NODES_MAX`), whatever the grid given: a smooth EHL film never closes,
         unless Moes's formula puts it below :data:`DRY_FILM` (a dry contact).
+    thermal : bool
+        The film's shear at the surfaces' flash temperature, as the stochastic solver's
+        (:func:`film_and_boundary_friction`); default False, at the inlet temperature.
 
     Returns
     -------
@@ -674,7 +716,7 @@ def line_contact_summary(condition: LineContactCondition, grid: Grid | None = No
     Source: the seed's §5.2.2 model (Li & Kahraman 2010) in its steady form; see the
     module docstring and ``docs/ehl.md``.
     """
-    s, st, kind, _tau, f_fluid, f_boundary, w, _, _grid = _solve(condition, grid)
+    s, st, kind, _tau, f_fluid, f_boundary, w, _, _grid = _solve(condition, grid, thermal)
     return _summary(s, condition, st, kind, f_fluid, f_boundary, w)
 
 
@@ -698,7 +740,8 @@ def _var(data, dims, units: str, long_name: str) -> tuple:
     return data_var(dims, np.asarray(data, dtype=float), units, long_name)
 
 
-def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None) -> xr.Dataset:
+def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None, *,
+                       thermal: bool = False) -> xr.Dataset:
     """Solve one steady mixed-EHL line contact and return its dataset.
 
     Parameters
@@ -706,6 +749,8 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
     condition : LineContactCondition
     grid : Grid, optional
         As :func:`line_contact_summary`.
+    thermal : bool
+        As :func:`line_contact_summary` (the attribute ``thermal`` records it, 0/1).
 
     Returns
     -------
@@ -730,7 +775,7 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
     Source: the seed's §5.2.2 model (Li & Kahraman 2010) in its steady form with Hu & Zhu's
     unified Reynolds equation; ``docs/ehl.md`` gives the equations and validity.
     """
-    s, st, kind, tau, f_fluid, f_boundary, w, iterations, used = _solve(condition, grid)
+    s, st, kind, tau, f_fluid, f_boundary, w, iterations, used = _solve(condition, grid, thermal)
     summ = _summary(s, condition, st, kind, f_fluid, f_boundary, w)
     x_mm = s.x * s.b * 1e3
     h_um = np.maximum(st.film, 0.0) * s.b**2 / s.radius * 1e6
@@ -767,6 +812,6 @@ def solve_line_contact(condition: LineContactCondition, grid: Grid | None = None
         **condition_attrs(condition),
         "newton_iterations": iterations,
         "grid_nodes": int(used.nodes), "grid_inlet": float(used.inlet),
-        "grid_outlet": float(used.outlet),
+        "grid_outlet": float(used.outlet), "thermal": int(thermal),
     })
     return ds

@@ -90,6 +90,7 @@ from friction.ehl.line_contact import (
     contact_setup,
     initial_pressure,
     lubricant_of,
+    smooth_grid,
     smooth_lambda_ratio,
 )
 from friction.ehl.newton_system import (
@@ -625,12 +626,42 @@ def _friction(pr: _Problem, pf: Array, h: Array, pa: Array, oil: Lubricant,
 CONTINUATION = (8.0, 4.0, 2.0, 1.0)
 
 
+#: [1] asperity load ratio below which the film carries most of the load, and a default
+#: grid is refined to the nodes Moes's M asks of a smooth film (:func:`_solve`)
+FILM_CARRIED = 0.5
+
+
 def _solve(condition: LineContactCondition, surfaces, grid: Grid | None,
            options: StochasticOptions | None):
+    """One condition: on ``grid``, or — by default — on :func:`stochastic_grid`'s 512
+    nodes and, where the film carries most of the load (asperity load ratio below
+    :data:`FILM_CARRIED`) and Moes's load parameter M asks a smooth film for more
+    (:data:`friction.ehl.line_contact.SMOOTH_NODES`), again on those nodes over the same
+    domain. The pressure spike and the exit constriction of a heavily loaded film narrow
+    as M grows; measured against 4096 nodes (issue 61): p_h 2 GPa, u_e 0.05 m/s, Rq
+    0.05 µm (M 894, load ratio 0.15): h_c 40 % thin and μ +3.5 % on 512 nodes; where the
+    asperities carry the load (load ratio 0.59–0.96 at M 8–571) 512 nodes are within 6 %
+    of h_c and 0.2 % of μ, at 6–30× less time."""
+    if grid is not None:
+        return _solve_on(condition, surfaces, grid, options)
+    stats = roughness_statistics(surfaces)
+    out = _solve_on(condition, surfaces, stochastic_grid(condition, stats), options)
+    _pr, g, _stats, p, _h0, _its, fields, _fr = out
+    pa = fields[1]
+    if float(pa.sum() / p.sum()) >= FILM_CARRIED:
+        return out
+    nodes = smooth_grid(condition).nodes
+    if nodes <= g.nodes:
+        return out
+    log.debug("film-carried contact at Moes M asking %d nodes: solved again", nodes)
+    return _solve_on(condition, surfaces, dataclasses.replace(g, nodes=nodes), options)
+
+
+def _solve_on(condition: LineContactCondition, surfaces, g: Grid,
+              options: StochasticOptions | None):
     opts = options or StochasticOptions()
     mat = opts.check()
     stats = roughness_statistics(surfaces)
-    g = grid or stochastic_grid(condition, stats)
     pr = _problem(condition, stats, g, opts, mat)
     oil = lubricant_of(condition.lubricant)
     p0, h00 = _start(pr)
