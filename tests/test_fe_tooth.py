@@ -51,7 +51,7 @@ from contact.compliance.fe.export import boundary_triangles, write_stl
 from contact.compliance.fe.mapped_mesh import at_index, facet_points, graded, mapped_mesh
 from contact.compliance.fe.options import ELEMENTS
 from geometry.case import load_case
-from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.machine.flank import blank_outline, flank_at
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -430,6 +430,33 @@ def test_cholmod_is_the_default_and_solves_as_superlu():
     assert auto.solver == "cholmod"
     got = auto.solve(rhs)        # 60 loads: two of CHOLMOD's blocks of right-hand sides
     np.testing.assert_allclose(got, ref, rtol=1e-9, atol=1e-9 * np.abs(ref).max())
+
+
+def test_isolated_factorisation_solves_as_in_process():
+    """The factor in a worker process (``factorise(..., isolated=True)``, what a build of
+    influence coefficients uses so that a signal is honoured at once, issue 64) gives the
+    same displacements to the bit as in this process (the same CHOLMOD calls; the loads
+    and solutions pass a pipe unchanged), and a matrix CHOLMOD refuses (−K, negative
+    definite) gives the LTCAError it gives in process; closing ends the worker. A
+    cantilever (hex20, 4 × 2 × 2)."""
+    from contact.compliance.fe.elasticity import isolation_available
+    from contact.compliance.fe.mapped_mesh import mapped_mesh
+
+    if not isolation_available():
+        pytest.skip("no fork here: the factor stays in process")
+    mm = mapped_mesh((4, 2, 2), lambda p: np.vstack([10.0 * p[0], 2.0 * p[1], 2.0 * p[2]]))
+    model = elastic_model(mm.mesh, "hex20", 206000.0, 0.3)
+    clamp = mm.nodes_where(lambda p: p[0] < 1e-9)
+    clamp = clamp[clamp < model.basis.N]
+    fixed = (3 * clamp[:, None] + np.arange(3)).ravel()
+    rhs = np.random.default_rng(7).standard_normal((model.n_dofs, 60))
+    ref = factorise(model.stiffness, fixed, "cholmod").solve(rhs)
+    iso = factorise(model.stiffness, fixed, "cholmod", isolated=True)
+    assert iso.isolated
+    np.testing.assert_array_equal(iso.solve(rhs), ref)
+    iso.close()
+    with pytest.raises(LTCAError, match="factorisation failed"):  # not positive definite
+        factorise(-model.stiffness, fixed, "cholmod", isolated=True)
 
 
 @pytest.mark.parametrize("member", ["pinion", "gear"])

@@ -35,6 +35,7 @@ import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import scipy.sparse as sp
@@ -47,6 +48,7 @@ from geometry.core.validation import one_of, positive, real
 
 __all__ = [
     "SOLVERS",
+    "DofMap",
     "ElasticModel",
     "Factorisation",
     "elastic_model",
@@ -69,13 +71,26 @@ def lame(youngs_modulus: float, poisson_ratio: float) -> tuple[float, float]:
     return e * nu / ((1 + nu) * (1 - 2 * nu)), e / (2 * (1 + nu))
 
 
+class DofMap(NamedTuple):
+    """The dof numbering of a scalar basis, without its quadrature data.
+
+    N : int — scalar dofs (the nodes); element_dofs : ndarray (nb, E) — each element's
+    scalar dofs (as ``skfem.CellBasis.element_dofs``)
+    """
+
+    N: int
+    element_dofs: np.ndarray
+
+
 @dataclass(frozen=True, eq=False)
 class ElasticModel:
     """Stiffness of a mesh.
 
     Attributes
     ----------
-    basis : skfem.CellBasis — the scalar quadratic basis (its dofs are the nodes)
+    basis : DofMap — the scalar quadratic basis's numbering (its dofs are the nodes); the
+        basis's values and gradients at every quadrature point are released once K is
+        assembled (~100-250 MB on the default models, issue 62 item 6)
     stiffness : scipy.sparse.csr_matrix (3N, 3N) or None — K [N/mm]; None in a model whose
         stiffness was handed to its factorisation and released (the influence
         coefficients' build: its memory is the factor's, issue 53)
@@ -83,7 +98,7 @@ class ElasticModel:
     assemble_time : float — [s]
     """
 
-    basis: skfem.CellBasis
+    basis: DofMap
     stiffness: sp.csr_matrix | None
     youngs_modulus: float
     poisson_ratio: float
@@ -167,7 +182,9 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     elapsed = time.perf_counter() - t0
     log.info("stiffness: %d elements (%s), %d dofs, %d non-zeros, %.1f s", ne, element, n,
              k.nnz, elapsed)
-    return ElasticModel(basis, k.tocsr(), float(youngs_modulus), float(poisson_ratio),
+    dofmap = DofMap(int(basis.N), basis.element_dofs)
+    del basis, grads, dx  # the quadrature data: only the numbering is needed from here on
+    return ElasticModel(dofmap, k.tocsr(), float(youngs_modulus), float(poisson_ratio),
                         elapsed)
 
 
