@@ -85,7 +85,7 @@ log = logging.getLogger(__name__)
 #: +25°); the relief within the 10–60 µm of automotive practice (Stadtfeld, *Handbook of
 #: Bevel and Hypoid Gears*, 1993, ch. 3; ``geometry.machine.relief``).
 VARIABLES: Mapping[str, tuple[float, float]] = {
-    "path_angle": (-80.0, -35.0),
+    "path_angle": (-80.0, -25.0),
     "ellipse_length": (0.15, 0.75),
     "tip_relief": (0.0, 60.0),
     "root_relief": (0.0, 60.0),
