@@ -193,3 +193,36 @@ def test_no_development_is_an_option_of_ltca_synthesize():
     parser = build_parser()
     assert parser.parse_args(["synthesize", "x.toml"]).development is True
     assert parser.parse_args(["synthesize", "x.toml", "--no-development"]).development is False
+
+
+def test_the_developed_case_records_what_was_achieved_and_round_trips():
+    """``DevelopmentResult.recorded``: the case's ``source`` gains the development
+    paragraph (prescriptions, targets, achieved values per torque, tolerance) and a
+    ``[development]`` table with the same numbers; the TOML text loads back to it."""
+    import tomllib
+
+    from contact.optimize.development import DevelopmentEvaluation, DevelopmentResult
+    from geometry.case import case_from_dict, load_case
+    from geometry.synthesis.basic_design import load_basic
+
+    case = load_case(DESIGNS / "pc_hypoid_10x43_unrelieved.toml")
+    basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
+    m = _metrics(edge_load_share=[0.0, 0.05])
+    t = DevelopmentTargets()
+    full = development_score(m, t, centre_v=0.6)
+    values = {"path_angle": -60.0, "ellipse_length": 0.5, "tip_relief": 20.0}
+    best = DevelopmentEvaluation(0, values, m, full[0], full[1], full[2], "", 1.0, case,
+                                 full)
+    tol = {"dE+0.05": (m, development_score(m, t, centre_v=0.6)[1])}
+    result = DevelopmentResult(basic, case, None, best, (best,), (50.0, 330.0), "given",
+                               tol, t, 12.0, 0.6)
+    out = result.recorded(case)
+    assert out.source.startswith(case.source.rstrip())
+    assert "Development bearing" in out.source and "not every target met: edge" in out.source
+    assert "edge share 0.0/5.0 %" in out.source and "path_angle -60 deg" in out.source
+    assert not result.tolerant  # 5 % on the edges at the excursion
+    back = case_from_dict(tomllib.loads(out.to_toml()))
+    dev = back.extra["development"]
+    assert dev["prescriptions"] == values and dev["targets_met"] == 0
+    assert dev["torque_Nm"] == [50.0, 330.0]
+    assert dev["achieved"]["edge_load_share"] == [0.0, 0.05]
