@@ -234,7 +234,8 @@ def _uncertified_as_nan(friction: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
     where = ", ".join(f"T_p {t:g} N m ({int((~found[i]).sum())} of {found.shape[1]})"
                       for i, t in enumerate(torques) if some[i])
     why = (f"NaN where the loaded contact has no certified solution (roll positions of {where}; "
-           "/ltca/found, /ltca/status): no efficiency without contact forces")
+           "/ltca/found, /ltca/status): no efficiency, temperature or safety without contact "
+           "forces")
     out = friction.copy()
     for name, var in friction.data_vars.items():
         if var.dims == ("torque", "roll"):

@@ -78,7 +78,8 @@ def test_ltca_run_with_a_solver_of_the_wrong_shape_is_one_line(tmp_path, capsys)
     register_backend("three_forces", lambda p: (np.ones(3), 0.0), replace=True)
     try:
         code = main(["run", "--solver", "three_forces", "--rolls-per-cycle", "4",
-                     "--segments", "8", "--torque", "250", "--no-rating", "--no-progress",
+                     "--segments", "8", "--torque", "250", "--no-rating", "--no-root-stress",
+                     "--no-progress",
                      "-o", str(tmp_path / "r.nc")])
     finally:
         unregister_backend("three_forces")
@@ -135,7 +136,8 @@ def test_ltca_run_with_a_friction_model_that_raises_is_one_line(tmp_path, capsys
     register_friction_model("boom", _boom, replace=True)
     try:
         code = main(["run", "--friction-model", "boom", "--rolls-per-cycle", "4",
-                     "--segments", "8", "--torque", "250", "--no-rating", "--no-progress",
+                     "--segments", "8", "--torque", "250", "--no-rating", "--no-root-stress",
+                     "--no-progress",
                      "-o", str(tmp_path / "r.nc")])
     finally:
         unregister_friction_model("boom")

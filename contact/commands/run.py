@@ -241,7 +241,8 @@ def run(args: argparse.Namespace) -> int:
     rows = []
     for i, T in enumerate(lt["torque"].values):
         h = lt["lte_harmonics"].values[i]
-        rows.append(
+        none = not bool(lt["found"].isel(torque=i).any())  # no contact solution: no numbers
+        rows.append(tuple("-" if none and k not in (0, 10) else cell for k, cell in enumerate(
             (
                 f"{T:g}",
                 f"{lt['lte_mean'].values[i]:.1f}",
@@ -255,8 +256,7 @@ def run(args: argparse.Namespace) -> int:
                 plastic_summary(lt, i),
                 f"{int(lt['found'].isel(torque=i).sum())}/{lt.sizes['roll']}",
                 f"{100 * fr['efficiency_mean'].values[i]:.2f}" if fr is not None else "-",
-            )
-        )
+            ))))
     print(
         tabulate(
             rows,
