@@ -559,6 +559,12 @@ def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: 
     # ISO/TS 6336-22: the film at the bulk temperature θ_M (NaN where θ_M is unknown)
     h_bulk = np.full(fric.film_thickness.shape, np.nan)
     at = np.isfinite(bulk[torque_of])
+    # a bulk temperature beyond the oil's data (a hot, rough mesh: B at 100 degC, Rq 0.8 um
+    # reaches 142 degC) leaves lambda_GF NaN with the reason, never a failed analysis
+    from friction.lubricant import temperature_range
+
+    t_lo, t_hi = temperature_range(lub)
+    at &= (bulk[torque_of] >= t_lo) & (bulk[torque_of] <= t_hi)
     if at.any():
         h_bulk[at] = film_at_bulk_temperature(
             lub, bulk[torque_of][at], seg.rolling_velocity[at], seg.load_per_length[at],
@@ -581,7 +587,8 @@ def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: 
         "factor, not ISO's h_Y), Ra = sqrt(2/pi) Rq = "
         f"{GAUSSIAN_RA_PER_RQ * op.roughness:.3g} um of both flanks (Rq {op.roughness:g} "
         "um, Gaussian heights)"
-        + ("" if at.all() else "; NaN where theta_M is unknown (no flash temperature)"))
+        + ("" if at.all() else "; NaN where theta_M is unknown (no flash temperature) or "
+           "beyond the oil's data range (no film there)"))
     perm = lub.permissible_specific_film
     if perm is None:
         s_l = np.full(n_torque, np.nan)

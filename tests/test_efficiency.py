@@ -252,3 +252,17 @@ def test_run_in_flanks_are_the_new_flanks_at_the_run_in_roughness(ltca):
 def test_surface_state_refused_by_name():
     with pytest.raises(InputError, match="surface_state: must be one of"):
         OperatingConditions(surface_state="polished")
+
+
+def test_bulk_temperature_beyond_the_oil_leaves_specific_film_nan_not_a_failure(ltca):
+    """A hot, rough mesh whose bulk temperature θ_M passes the oil's data range (75W90:
+    5–140 °C with its margins; Table 5.4's B at 100 °C, Rq 0.8 µm reached 142 °C and the
+    whole efficiency stage failed) gives its efficiency, with λ_GF NaN at those torques
+    and the reason in the comment."""
+    fr = efficiency_analysis(ltca, OperatingConditions(temperature=135.0, roughness=1.5))
+    bulk = fr["bulk_temperature"].values
+    assert np.nanmax(bulk) > 140.0                      # the case the guard is for
+    assert np.isfinite(fr["efficiency_mean"].values).all()
+    hot = bulk > 140.0
+    assert np.isnan(fr["specific_film_thickness_min"].values[hot]).all()
+    assert "beyond the oil's data range" in fr["specific_film_thickness"].attrs["comment"]
