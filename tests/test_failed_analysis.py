@@ -190,3 +190,36 @@ def test_ltca_mesh_interface_without_certified_contact_exits_1(failing_solver, t
                           "solution at T_p 250 N m") and err.endswith("m.csv holds what was "
                                                                       "found")
     assert out.exists()
+
+
+def test_an_efficiency_map_torque_without_certified_contact_is_failed(failing_solver,
+                                                                     tmp_path, capsys):
+    from contact.study.efficiency import efficiency_map
+
+    emap = efficiency_map(None, [250.0], [1500.0, 3000.0],
+                          options=LTCAOptions(rolls_per_cycle=4, segments=8,
+                                              solver=failing_solver))
+    assert emap["analysis_status"].values.tolist() == [ANALYSIS_STATUS.index("failed")]
+    assert emap["analysis_status"].attrs["flag_meanings"] == "ok uncertified failed"
+    assert emap.attrs["analysis_status_reason"].startswith(
+        "no certified contact solution at T_p 250 N m")
+    assert np.all(np.isnan(emap["efficiency"].values))   # was 98.5 % of no contact at all
+
+
+def test_a_duty_cycle_with_a_failed_bin_ends_in_analysis_failed():
+    import xarray as xr
+
+    from contact.catalogue import resolve_case
+    from contact.errors import AnalysisFailedError
+    from contact.study.duty_cycle import _durability
+    from contact.study.duty_cycle_inputs import DutyCycle
+
+    duty = DutyCycle(torque=[250.0], speed=[1500.0], revolutions=[1e6])
+    bins = xr.Dataset({"status": ("bin", np.array([2], np.int8)),
+                       "reason": ("bin", np.array(["no certified contact solution at T_p "
+                                                   "250 N m (0 of 8 roll positions "
+                                                   "certified)"], dtype=object))})
+    with pytest.raises(AnalysisFailedError, match=r"^duty_cycle bin 0: its analysis failed "
+                                                  r"\(no certified contact solution at T_p "
+                                                  r"250 N m"):
+        _durability(resolve_case(None), duty, bins)
