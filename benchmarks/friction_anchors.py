@@ -103,7 +103,8 @@ def case_rows(args: argparse.Namespace) -> list[list]:
                 warnings.simplefilter("ignore", FrictionModelRangeWarning)
                 fr = efficiency_analysis(lt, OperatingConditions(
                     pinion_speed=args.speed, temperature=args.temperature,
-                    roughness=args.roughness, friction_model=model))
+                    roughness=args.roughness, friction_model=model,
+                    surface_state=args.surface_state))
             mus[model] = _flank_weighted(lt, fr, "friction_coefficient")
             eff[model] = fr["efficiency_mean"].values * 100.0
             if model == MODELS[0]:
@@ -150,6 +151,59 @@ def twin_disc_rows(args: argparse.Namespace) -> list[list]:
     return rows
 
 
+def segment_check_rows(args: argparse.Namespace) -> list[list]:
+    """The default model against the stochastic solver on flank segments of the default
+    case (load-weighted random sample, seed 61, at the lightest and heaviest torque): the
+    fit's error where the default run evaluates it."""
+    from threadpoolctl import threadpool_limits
+
+    from friction.ehl.line_contact import LineContactCondition
+    from friction.ehl.roughness import GroundSurface
+    from friction.ehl.stochastic import stochastic_summary
+
+    label, case, torques, rolls = CASES[0]
+    lt = _ltca(case, torques, rolls, args.ltca_cache)
+    op = OperatingConditions(pinion_speed=args.speed, temperature=args.temperature,
+                             roughness=args.roughness)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FrictionModelRangeWarning)
+        fr = efficiency_analysis(lt, op)
+    rq = op.effective_roughness
+    e_prime = 206000.0 / (1.0 - 0.3**2)
+    rng = np.random.default_rng(61)
+    rows = []
+    for ti in (0, len(torques) - 1):
+        force = lt["force"].isel(torque=ti).values
+        ok = np.isfinite(force) & (force > 0)
+        if "segment_kind" in lt:
+            ok &= np.broadcast_to(lt["segment_kind"].values == "curve", force.shape)
+        idx = np.argwhere(ok)
+        pick = rng.choice(len(idx), size=min(args.segments, len(idx)), replace=False,
+                          p=force[ok] / force[ok].sum())
+        err, weight, lam = [], [], []
+        for j in pick:
+            r, k, s = (int(v) for v in idx[j])
+            at = dict(torque=ti, roll=r, pair=k, segment=s)
+            ph = float(lt["pressure_max"].isel(**at))
+            radius = float(lt["equivalent_radius"].isel(roll=r, pair=k, segment=s))
+            cond = LineContactCondition(
+                load_per_length=2.0 * math.pi * radius * ph**2 / e_prime, radius=radius,
+                entraining_velocity=float(fr["rolling_velocity"].isel(**at)),
+                slide_to_roll=min(float(fr["slide_to_roll_total"].isel(**at)), 2.0),
+                temperature=args.temperature)
+            with threadpool_limits(limits=1):
+                sol = stochastic_summary(cond, (GroundSurface(rq, seed=1),
+                                                GroundSurface(rq, seed=2)))
+            err.append(float(fr["friction_coefficient"].isel(**at)) / sol.friction_coefficient
+                       - 1.0)
+            weight.append(force[r, k, s])
+            lam.append(sol.lambda_ratio)
+        e, wt = np.array(err), np.array(weight)
+        rows.append([label, torques[ti], len(e), f"{min(lam):.2f}-{max(lam):.2f}",
+                     100 * float(np.sqrt(np.mean(e**2))), 100 * float((e * wt).sum() / wt.sum())])
+    return rows
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--ltca-cache", type=Path,
@@ -157,11 +211,17 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--roughness", type=float, default=0.8, help="Rq of each flank [µm]")
     ap.add_argument("--temperature", type=float, default=90.0, help="oil inlet [degC]")
     ap.add_argument("--speed", type=float, default=1500.0, help="pinion speed [rpm]")
+    ap.add_argument("--surface-state", choices=("run_in", "new"), default="run_in",
+                    help="the flanks' state (friction.operating.RUNNING_IN_FACTORS)")
     ap.add_argument("--no-solver", action="store_true",
-                    help="leave the stochastic solver out of the twin-disc table")
+                    help="leave the stochastic solver out (twin-disc and segment tables)")
+    ap.add_argument("--segments", type=int, default=25, metavar="N",
+                    help="flank segments of the default case per torque checked against the "
+                    "solver (default %(default)s)")
     args = ap.parse_args(argv)
     print(f"Flank load-weighted μ (edges apart), {args.speed:g} rpm, 75W90 at "
-          f"{args.temperature:g} °C, Rq {args.roughness:g} µm each")
+          f"{args.temperature:g} °C, Rq {args.roughness:g} µm each, {args.surface_state} "
+          "flanks")
     head = ["case", "T [N·m]", "λ", "p_h [MPa]", "u_e [m/s]", "|SR|", *MODELS,
             f"{MODELS[0]}/ISO", f"η {MODELS[0]} [%]"]
     rows = case_rows(args)
@@ -177,6 +237,12 @@ def main(argv: list[str] | None = None) -> int:
     head = ["p_h [MPa]", "R [mm]", "u_e [m/s]", "SR", "T [°C]", "Rq [µm]", "λ (solver)",
             "ALR (solver)", "μ solver", *MODELS]
     print(tabulate(twin_disc_rows(args), headers=head, floatfmt=".4g"))
+    if not args.no_solver:
+        print(f"\n{MODELS[0]} against the stochastic solver on the default case's flank "
+              "segments (load-weighted sample, seed 61)")
+        head = ["case", "T [N·m]", "segments", "λ (solver)", "RMS error [%]",
+                "load-weighted error [%]"]
+        print(tabulate(segment_check_rows(args), headers=head, floatfmt=".3g"))
     return 0
 
 

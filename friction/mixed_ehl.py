@@ -12,8 +12,14 @@ solver, so that μ depends on the film parameter λ continuously from boundary t
    (Dowson & Toyoda, :func:`friction.film.dowson_toyoda_central`, times the thermal
    factor φ_T of :func:`friction.film.thermal_reduction_factor`) becomes
    h_c(γ₁) = h_c,s · γ₁^(p_U − p_G) = h_c,s · γ₁^0.13.
-2. **Asperity pressure** (Greenwood & Tripp 1970): at the mean-plane separation h_c the
-   asperities carry the nominal pressure p_a = K′ E′ F_{5/2}(h_c/σ),
+2. **Asperity pressure** (Greenwood & Tripp 1970): at the mean-plane separation h the
+   asperities carry the nominal pressure p_a = K′ E′ F_{5/2}(h/σ), where h is the
+   separation whose mean gap over the Gaussian heights is the film's h_c: h_T(h) =
+   σ[tΦ(t) + φ(t)] = h_c, t = h/σ (Patir & Cheng 1978: the entrained flux, which the EHL
+   film formula fixes, is carried by the mean gap; :func:`friction.ehl.flow_factors.mean_gap`,
+   the stochastic solver's). As the film closes (h_c/σ → 0) t → −∞ and p_a grows without
+   bound, so the asperities can take the whole load (issue 61: with h = h_c, p_a was
+   capped at K′E′F_{5/2}(0) ≈ 83 MPa and μ never reached μ_b at gear pressures);
    K′ = (8√2/15) π (ηβσ)² √(σ/β) with E′ = 2E* (two rough surfaces; Greenwood & Tripp's
    (16√2/15)π… multiplies E*), which must equal the asperity share w′/(γ₂ · 2b) of
    the Hertz mean pressure p̄ = w′/(2b). One equation in γ₁, solved per segment.
@@ -46,7 +52,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.interpolate import CubicSpline
 from scipy.optimize import elementwise
-from scipy.special import gamma, pbdv
+from scipy.special import gamma, ndtr, pbdv
 
 from friction.film import DOWSON_TOYODA_EXPONENTS, dowson_toyoda_central
 from friction.validity import FrictionModelRangeWarning
@@ -217,11 +223,9 @@ def asperity_pressure(
     loads of all summit pairs of two rough surfaces gives (16√2/15)π with E* (Greenwood &
     Tripp 1970), hence (8√2/15)π with the toolkit's E′ = 2E* (the test derives it).
 
-    The load-sharing scheme of :func:`mixed_ehl_solution` keeps the mean-plane separation
-    at or above the smooth-film value, so the asperity pressure never exceeds
-    K′E′F_{5/2}(0) (≈ 80 MPa with the defaults): this cap is a property of the scheme, not
-    of rough contacts, and keeps the asperity share well below 1 even at λ → 0 (see
-    ``docs/ehl.md``; the line-contact solver :mod:`friction.ehl` has no such cap).
+    :func:`mixed_ehl_solution` evaluates it at the separation whose mean gap is the film's
+    (:func:`separation_of_mean_gap`), negative as the film closes, so it is not capped at
+    K′E′F_{5/2}(0) (≈ 83 MPa with the defaults; it was before issue 61).
     """
     h = real_array("separation", separation, unit="1")
     e = real_array("e_prime", e_prime, low=0.0, low_open=True, unit="MPa")
@@ -338,11 +342,51 @@ def _f52(h: Array) -> Array:
     return out
 
 
+def separation_of_mean_gap(mean_gap_ratio: ArrayLike) -> Array:
+    """t = h/σ [1] whose Gaussian mean gap t Φ(t) + φ(t) equals ``mean_gap_ratio`` = h_T/σ.
+
+    Parameters
+    ----------
+    mean_gap_ratio : array — [1]
+        h_T/σ > 0.
+
+    Returns
+    -------
+    array — [1]
+        t, the same shape: ≈ h_T/σ for thick films (h_T/σ ≳ 3), negative below
+        h_T/σ = φ(0) ≈ 0.399 (the mean planes overlap; the oil in the valleys), → −∞ as
+        h_T/σ → 0.
+
+    Notes
+    -----
+    Patir & Cheng (1978), the average gap of Gaussian heights (as
+    :func:`friction.ehl.flow_factors.mean_gap`). Newton's method on ln g(t), g = tΦ + φ,
+    whose derivative Φ/g is positive (g is increasing and log-concave), from
+    t = max(g, −√(−2 ln(√(2π) g))) (the asymptotes of both ends); 60 steps, each bounded
+    to 4, reach round-off.
+    """
+    g = np.asarray(mean_gap_ratio, dtype=float)
+    with np.errstate(divide="ignore"):
+        t = np.where(g > 0.4, g, -np.sqrt(np.maximum(-2.0 * np.log(
+            np.sqrt(2.0 * math.pi) * np.maximum(g, 1e-300)), 0.0)))
+    for _ in range(60):
+        cdf = ndtr(t)
+        val = t * cdf + np.exp(-0.5 * t * t) / math.sqrt(2.0 * math.pi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = (np.log(val) - np.log(g)) * val / cdf
+        step = np.clip(np.nan_to_num(step, nan=0.0), -4.0, 4.0)
+        t = t - step
+        if np.all(np.abs(step) < 1e-13 * np.maximum(1.0, np.abs(t))):
+            break
+    return t
+
+
 def _share_equation(x: Array, h_s: Array, p_mean: Array, k_e: Array) -> Array:
-    """JGP load balance in x = ln γ₁ [1]: p_a(h_c(γ₁)) − p̄ (1 − 1/γ₁) [MPa]; decreasing in x
-    (h_s = h_c,s/σ [1], p̄ [MPa], k_e = K E′ [MPa])."""
+    """JGP load balance in x = ln γ₁ [1]: p_a(h(γ₁)) − p̄ (1 − 1/γ₁) [MPa] with h the
+    separation of the film's mean gap h_c(γ₁) (:func:`separation_of_mean_gap`); decreasing
+    in x (h_s = h_c,s/σ [1], p̄ [MPa], k_e = K E′ [MPa])."""
     lam = h_s * np.exp(_FILM_GAMMA_EXPONENT * x)
-    return k_e * _f52(lam) - p_mean * (-np.expm1(-x))
+    return k_e * _f52(separation_of_mean_gap(lam)) - p_mean * (-np.expm1(-x))
 
 
 def mixed_ehl_solution(
@@ -504,7 +548,7 @@ def _solve_share(lam_s: Array, p_mean: Array, k_e: Array) -> Array:
     K E′ [MPa]): 0 where the asperities carry nothing, else the root bracketed in
     [0, x_hi] by scipy's elementwise bracketing root finder (the balance is monotonic)."""
     x = np.zeros(lam_s.shape)
-    need = _f52(lam_s) * k_e > 1e-12 * p_mean
+    need = _f52(separation_of_mean_gap(lam_s)) * k_e > 1e-12 * p_mean
     if not np.any(need):
         return x
     ls, pm, ke = lam_s[need], p_mean[need], k_e[need]

@@ -129,14 +129,31 @@ def test_boundary_limit_lambda_to_zero() -> None:
     assert sol.friction_coefficient[-1] == pytest.approx(MU_B, abs=1e-4 * MU_B + 1e-5)
 
 
-def test_heavy_load_asperity_share_bounded_by_capacity() -> None:
-    # At gear pressures the asperities cannot carry the whole load at positive separation
-    # (JGP): the share stays below p_a(0)/p̄ however thin the film
+def test_heavy_load_asperities_take_the_load_as_the_film_closes() -> None:
+    # issue 61: at gear pressures the share was capped at p_a(0)/p̄ (the mean-plane
+    # separation held at the film's h_c ≥ 0); with the separation of the film's mean gap
+    # (Patir & Cheng) it goes negative as the film closes, and the asperities take the load:
+    # μ → μ_b, far above the old cap
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", FrictionModelRangeWarning)
         sol = mixed_ehl_solution(**dict(SEGMENT, entraining_velocity=1e-6))
+        mu = mixed_ehl(**dict(SEGMENT, entraining_velocity=1e-6))
     cap = float(asperity_pressure(0.0, SEGMENT["e_prime"])) / (math.pi / 4 * 1000.0)
-    assert 0.9 * cap < float(sol.asperity_load_share) < cap
+    assert float(sol.asperity_load_share) > 0.999 > 5 * cap
+    assert float(mu) == pytest.approx(0.1, rel=1e-3)   # μ_b of the 75W90 file
+
+
+def test_separation_of_mean_gap_inverts_the_gaussian_mean_gap() -> None:
+    # identity: t Φ(t) + φ(t) (flow_factors.mean_gap) at the returned t gives the mean gap
+    # back to round-off, from a closing film (1e-8 σ: t ≈ −5.3) to a thick one (t ≈ h_T/σ)
+    from friction.ehl.flow_factors import mean_gap
+    from friction.mixed_ehl import separation_of_mean_gap
+
+    g = np.array([1e-8, 1e-3, 0.05, 0.2, 0.399, 0.5, 1.0, 3.0, 10.0])
+    t = separation_of_mean_gap(g)
+    np.testing.assert_allclose(mean_gap(t)[0], g, rtol=1e-12)
+    assert t[0] < -5.0 and t[-1] == pytest.approx(10.0, rel=1e-12)
+    assert np.all(np.diff(t) > 0)
 
 
 def test_full_film_limit() -> None:
