@@ -221,6 +221,9 @@ def test_the_developed_case_records_what_was_achieved_and_round_trips():
     assert "Development bearing" in out.source and "not every target met: edge" in out.source
     assert "edge share 0.0/5.0 %" in out.source and "path_angle -60 deg" in out.source
     assert not result.tolerant  # 5 % on the edges at the excursion
+    line = result.headline()
+    assert "not every target met: edge" in line and "not tolerant" in line
+    assert "edge share 5.0 % and LTE p-p 30 urad at 330 N m" in line
     back = case_from_dict(tomllib.loads(out.to_toml()))
     dev = back.extra["development"]
     assert dev["prescriptions"] == values and dev["targets_met"] == 0

@@ -35,7 +35,7 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     case_path = tmp_path / f"{basic.stem}.toml"
     assert main(["synthesize", str(basic), "-o", str(case_path)]) == 0
     out = capsys.readouterr().out
-    assert "development: chosen design" in out
+    assert "development: design" in out
     case = tomllib.loads(case_path.read_text(encoding="utf-8"))
     assert "Development bearing" in case["source"]
     dev = case["development"]

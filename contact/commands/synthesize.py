@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from pathlib import Path
 
 from contact.commands.options import output_option, progress_option
@@ -85,8 +86,9 @@ def resolve_basic(arg: str | None) -> Path:
 
 
 def _say(line: str) -> None:
-    """A development progress line, at once (plain text: a log file reads it too)."""
-    print(line, flush=True)
+    """A development progress line on standard error, at once (plain text, as the
+    synthesis' step lines: a log file reads it too)."""
+    print(line, file=sys.stderr, flush=True)
 
 
 def write_text_atomic(path: Path, text: str) -> Path:
@@ -124,7 +126,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
         from contact.optimize.development import develop, targets_from_table
 
         targets = targets_from_table(basic.development)  # refused before the work
-        development = develop(basic, targets=targets, progress=_say,
+        development = develop(basic, targets=targets,
+                              progress=_say if getattr(args, "progress", False) else None,
                               synthesis_progress=steps)
         case, report = development.case, development.report
     else:
@@ -147,6 +150,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
               f"{s.blank_offset:.3f} mm, curvature residual {fs.tools.shape_error:.1e} 1/mm")
     print("  design torque: " + (f"{torque:.4g} N m, {torque_why}" if math.isfinite(torque)
                                   else torque_why))
+    if development is not None:
+        print("  " + development.headline())
     print(f"wrote {path}")
     if basic.optimize:
         print(f"note: {shown} carries an [optimize] table: the synthesis alone is written; "

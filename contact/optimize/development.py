@@ -518,6 +518,19 @@ class DevelopmentResult:
             f"{t.mounting_tolerance:g} mm): {tol}"
             f" ({'tolerant' if self.tolerant else 'not tolerant'}).")
 
+    def headline(self) -> str:
+        """One line: the chosen design, whether it met its targets and is tolerant."""
+        b, t = self.best, self.targets
+        m = b.metrics
+        return (f"development: design {b.index + 1} of {len(self.evaluations)}, "
+                f"{self._met_text()}; light-load pattern {m['pattern_toe_u'][0]:.2f}-"
+                f"{m['pattern_heel_u'][0]:.2f} of the face, edge share "
+                f"{100 * m['edge_load_share'][1]:.1f} % and LTE p-p "
+                f"{m['lte_peak_to_peak'][1]:.0f} urad at {self.torque[1]:.4g} N m; "
+                f"{'tolerant' if self.tolerant else 'not tolerant'} at dE +/-"
+                f"{t.offset_tolerance:g} mm, dP +/-{t.mounting_tolerance:g} mm; "
+                f"{self.seconds:.0f} s CPU")
+
     def recorded(self, case: Case) -> Case:
         """``case`` (the developed case, maybe with its rating's design torque set) with
         :meth:`summary` appended to its ``source`` and :meth:`table` as its informational
@@ -788,11 +801,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                tuple(setup["torques"]), setup["source"], tolerance, targets,
                                time.process_time() - t0,
                                targets.pattern_centre_v or setup["centre_v"])
-    say(f"development: chosen design {best.index + 1} "
-        f"({'every target met' if best.full[2] else 'not every target met'}), "
-        f"{'tolerant' if result.tolerant else 'not tolerant'} at dE +/-"
-        f"{targets.offset_tolerance:g} mm, dP +/-{targets.mounting_tolerance:g} mm; "
-        f"{result.seconds:.0f} s CPU")
+    say(result.headline())
     return result
 
 
