@@ -461,6 +461,7 @@ _BLADE_FIELDS = {
     "point_radius": ("mm", True, None),
     "blade_angle": ("deg", True, None),
     "edge_radius": ("mm", False, 0.0),
+    "point_width": ("mm", False, 0.0),
     "profile": ("str", False, "straight"),
     "profile_radius": ("mm", False, 0.0),
     "profile_reference_height": ("mm", False, 0.0),

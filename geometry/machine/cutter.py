@@ -133,6 +133,12 @@ class Blade:
         γ_h, hook of the rake plane: its turn about its own horizontal line through M
         (tilts the edge towards or away from the cutting direction); |γ_h| < 20°.
         Default 0.
+    point_width : float — [mm]
+        W ≥ 0, the blade's point width: the width of its flat tip in the tip plane, from the
+        point (ρ = r_p) across the slot (towards smaller ρ on an outside blade, larger on an
+        inside blade). The tip cuts the slot bottom; a spread-blade cutter's W is the
+        outside minus the inside point radius, a blade that finishes one flank alone has its
+        own. 0 = not given (the FE root model then cannot bound the tip's cut). Default 0.
 
     Notes
     -----
@@ -162,6 +168,7 @@ class Blade:
     blade_offset_angle: float = 0.0
     rake_angle: float = 0.0
     hook_angle: float = 0.0
+    point_width: float = 0.0
 
     def __post_init__(self) -> None:
         if self.side not in BLADE_SIDES:
@@ -171,7 +178,7 @@ class Blade:
         for name in ("point_radius", "blade_angle", "edge_radius", "profile_radius",
                      "profile_reference_height", "toprem_angle", "toprem_height",
                      "flankrem_angle", "flankrem_height", "blade_phase",
-                     "blade_offset_angle", "rake_angle", "hook_angle"):
+                     "blade_offset_angle", "rake_angle", "hook_angle", "point_width"):
             object.__setattr__(self, name, real(name, getattr(self, name)))
         for name, bound, closed in (("blade_phase", 360.0, True),
                                     ("blade_offset_angle", 45.0, False),
@@ -190,6 +197,10 @@ class Blade:
             raise InputError(
                 f"edge_radius: must be in [0, point_radius/2) = [0, {0.5 * self.point_radius:g}) "
                 f"mm, got {self.edge_radius}")
+        if not 0.0 <= self.point_width < self.point_radius:
+            raise InputError(
+                f"point_width: must be in [0, point_radius) = [0, {self.point_radius:g}) mm "
+                f"(0: not given), got {self.point_width}")
         if self.profile == "circular":
             if abs(self.profile_radius) <= max(self.edge_radius, 1e-6):
                 raise InputError(

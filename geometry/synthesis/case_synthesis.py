@@ -88,7 +88,14 @@ from geometry.pair.design_point import (
 )
 from geometry.synthesis.basic_design import DEFAULT_RATING, BasicDesign, FlankOptions
 from geometry.synthesis.face_hobbing import face_hobbing_pinion_tools
-from geometry.synthesis.gear import GearTools, blank, case_blank, flank_point, gear_formate_tools
+from geometry.synthesis.gear import (
+    GearTools,
+    blank,
+    case_blank,
+    flank_point,
+    gear_formate_tools,
+    slot_width_at_root,
+)
 from geometry.synthesis.local import LocalSynthesis, local_synthesis
 from geometry.synthesis.mean_point import MeanPoint, mean_point, pair_kw
 from geometry.synthesis.modified_roll import nominal_transforms, tune_roll
@@ -172,7 +179,7 @@ def _settings_table(s: MachineSettings) -> dict[str, Any]:
 def _blade_table(b: Blade) -> dict[str, Any]:
     out: dict[str, Any] = {"point_radius": b.point_radius,
                            "blade_angle": math.degrees(b.blade_angle),
-                           "edge_radius": b.edge_radius}
+                           "edge_radius": b.edge_radius, "point_width": b.point_width}
     if b.profile != "straight":
         out.update(profile=b.profile, profile_radius=b.profile_radius,
                    profile_reference_height=b.profile_reference_height)
@@ -184,6 +191,18 @@ def _blade_table(b: Blade) -> dict[str, Any]:
         out.update(blade_phase=math.degrees(b.blade_phase),
                    blade_offset_angle=math.degrees(b.blade_offset_angle))
     return out
+
+
+def _pinion_blades(geom: BlankGeometry, flanks: dict[str, FlankSynthesis]
+                   ) -> dict[str, Blade]:
+    """The pinion's blades with their point width: each flank is cut alone, and its blade's
+    tip spans the pinion's slot width at the mean root,
+    W1 = π m_mn − s_mn1 − h_fm1 (tan α_IB + tan α_OB) (:func:`slot_width_at_root`, the
+    gear's relation on the pinion's slot)."""
+    blades = {f: flanks[f].tools.blade for f in FLANKS}
+    w1 = slot_width_at_root(geom.pinion, geom.m_mn, blades["convex"].blade_angle,
+                            blades["concave"].blade_angle)
+    return {f: replace(b, point_width=w1) for f, b in blades.items()}
 
 
 def _cutter_table(blades: dict[str, Blade], blade_groups: int,
@@ -541,8 +560,8 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
                  "drive_flank": opt.drive_flank},
         "pinion": {
             "process": "Generate", "blank": case_blank(geom.pinion),
-            "cutter": _cutter_table({f: flanks[f].tools.blade for f in FLANKS},
-                                    gear.blade_groups, gear.cutter_radius),
+            "cutter": _cutter_table(_pinion_blades(geom, flanks), gear.blade_groups,
+                                    gear.cutter_radius),
             "machine": {f: _settings_table(flanks[f].tools.settings) for f in FLANKS},
         },
         "gear": {

@@ -35,6 +35,8 @@ __all__ = [
     "GearTools",
     "case_blank",
     "gear_formate_tools",
+    "mean_root_point",
+    "slot_width_at_root",
 ]
 
 _OTHER = {"concave": "convex", "convex": "concave"}
@@ -97,6 +99,63 @@ def blank(member: MemberBlank) -> Blank:
     """The case blank (angles [rad], lengths [mm]) of an ISO 23509 member blank."""
     d = case_blank(member)
     return Blank(**{k: (math.radians(v) if k.endswith("angle") else v) for k, v in d.items()})
+
+
+def mean_root_point(member: MemberBlank) -> tuple[float, float]:
+    """Root cone distance R_mf and dedendum h_fm of a member's mean point.
+
+    Parameters
+    ----------
+    member : geometry.iso23509.blank.MemberBlank — one member of an ISO 23509 blank
+
+    Returns
+    -------
+    (R_mf, h_fm) : [mm], [mm]
+        The mean root point is where the root line meets the normal to the pitch cone
+        through the mean point P_m of the axial section; R_mf its distance from the root
+        apex along the root line, h_fm its distance from P_m (ISO 23509:2016 §6, the mean
+        dedendum measured normal to the pitch cone).
+    """
+    out = blank_outline(blank(member))
+    d, df = member.delta, member.delta_f
+    pm = out.mean_point
+    root_dir = np.array([math.cos(df), math.sin(df)])
+    perp = np.array([-math.sin(d), math.cos(d)])
+    a = np.array([[root_dir[0], -perp[0]], [root_dir[1], -perp[1]]])
+    t = np.linalg.solve(a, pm - np.array([out.root_apex, 0.0]))
+    return float(t[0]), float(abs(t[1]))
+
+
+def slot_width_at_root(member: MemberBlank, m_mn: float, blade_angle_inside: float,
+                       blade_angle_outside: float) -> float:
+    """Slot width at the mean root, W = π m_mn − s_mn − h_fm (tan α_IB + tan α_OB).
+
+    Parameters
+    ----------
+    member : geometry.iso23509.blank.MemberBlank — its ``smn`` is s_mn [mm]
+    m_mn : float — [mm] mean normal module
+    blade_angle_inside, blade_angle_outside : float — [rad] α_IB, α_OB (the convex and
+        the concave flank's blade angle)
+
+    Returns
+    -------
+    float — [mm] the width, in the mean normal section, between the two flanks' straight
+    nominal profiles at the root line: the point width of a spread-blade cutter whose tip
+    plane holds the mean root line (Stadtfeld 1993, Handbook of bevel and hypoid gears,
+    §2; Litvin & Fuentes 2004 §20.3), and the width that the tip of a blade cutting one
+    flank alone can span without reaching the other flank at the mean point.
+
+    Raises
+    ------
+    InputError — a width ≤ 0 (the slot closes above the root for these blade angles).
+    """
+    h_fm = mean_root_point(member)[1]
+    w = (math.pi * m_mn - member.smn
+         - h_fm * (math.tan(blade_angle_inside) + math.tan(blade_angle_outside)))
+    if w <= 0:
+        raise InputError(f"point_width: must be > 0 mm, got {w:.4g} (slot too narrow at the "
+                         "root for these blade angles)")
+    return w
 
 
 # --------------------------------------------------------------------------- gear
@@ -173,18 +232,8 @@ def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
     in the tip plane.
     """
     g = geom.gear
-    gear_blank = blank(g)
-    out = blank_outline(gear_blank)
-    d, df = g.delta, g.delta_f
-    pm = out.mean_point
     # mean root point: the root line met by the normal to the pitch cone through P_m
-    zr = out.root_apex
-    root_dir = np.array([math.cos(df), math.sin(df)])
-    perp = np.array([-math.sin(d), math.cos(d)])
-    a = np.array([[root_dir[0], -perp[0]], [root_dir[1], -perp[1]]])
-    t = np.linalg.solve(a, pm - np.array([zr, 0.0]))
-    rmf = float(t[0])
-    hfm2 = float(abs(t[1]))
+    rmf = mean_root_point(g)[0]
     beta = g.beta_m
     sr2 = rmf**2 + cutter_radius**2 - 2 * rmf * cutter_radius * math.sin(beta)
     if sr2 <= 0:
@@ -195,8 +244,7 @@ def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
     alpha = {other: blade_angle_drive, drive_flank: blade_angle_coast}
     a_ib, a_ob = alpha["convex"], alpha["concave"]
     if point_width is None:
-        point_width = (math.pi * geom.m_mn - g.smn
-                       - hfm2 * (math.tan(a_ib) + math.tan(a_ob)))
+        point_width = slot_width_at_root(g, geom.m_mn, a_ib, a_ob)
     if point_width <= 0:
         raise InputError(f"point_width: must be > 0 mm, got {point_width:.4g} (slot too narrow "
                          "at the root for these blade angles)")
@@ -207,15 +255,15 @@ def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
                                         edge_radius, geom.m_mn, blade_groups)
     blades = {
         "concave": Blade("outside", cutter_radius + 0.5 * point_width, a_ob,
-                         edge_radius=edge_radius),
+                         edge_radius=edge_radius, point_width=point_width),
         "convex": Blade("inside", cutter_radius - 0.5 * point_width, a_ib,
-                        edge_radius=edge_radius),
+                        edge_radius=edge_radius, point_width=point_width),
     }
     settings = MachineSettings(
         process="Formate", radial_setting=math.sqrt(sr2),
         cradle_angle=math.atan2(cutter_radius * math.cos(beta),
                                 rmf - cutter_radius * math.sin(beta)),
-        machine_root_angle=df, machine_center_to_back=g.t_zR)
+        machine_root_angle=g.delta_f, machine_center_to_back=g.t_zR)
     return GearTools(blades, settings, rmf, point_width, cutter_radius)
 
 
@@ -245,6 +293,7 @@ def _face_hobbing_gear_tools(g: MemberBlank, rmf: float, rc0: float, a_ob: float
                                      ("convex", "inside", -1, a_ib)):
         rp = rc0 + sign * 0.5 * wr
         blades[flank] = Blade(side, rp, alpha, edge_radius=edge_radius,
+                              point_width=slot_width,
                               blade_phase=theta0 + sign * 0.5 * math.pi / z0,
                               blade_offset_angle=trace(rp).nu)
     settings = MachineSettings(
