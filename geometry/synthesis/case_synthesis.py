@@ -67,6 +67,7 @@ synthesize             basic design → complete case (and report)
 
 from __future__ import annotations
 
+import logging
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, replace
@@ -76,6 +77,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from geometry.case import FLANKS, Blank, Case, case_from_dict
+from geometry.core.errors import InputError
 from geometry.iso23509.blank import BlankGeometry
 from geometry.machine.cradle import MachineSettings, cutter_pose, roll_angle
 from geometry.machine.cutter import Blade
@@ -112,6 +114,8 @@ __all__ = [
     "SynthesisReport",
     "synthesize",
 ]
+
+log = logging.getLogger(__name__)
 
 _MIRROR = np.diag([1.0, -1.0, 1.0])
 
@@ -198,10 +202,16 @@ def _pinion_blades(geom: BlankGeometry, flanks: dict[str, FlankSynthesis]
     """The pinion's blades with their point width: each flank is cut alone, and its blade's
     tip spans the pinion's slot width at the mean root,
     W1 = π m_mn − s_mn1 − h_fm1 (tan α_IB + tan α_OB) (:func:`slot_width_at_root`, the
-    gear's relation on the pinion's slot)."""
+    gear's relation on the pinion's slot). Where the relation gives no width (the straight
+    profiles meet above the mean root) the point width is left 0, not given, and a warning
+    logged: the pinion's blades are still those of the synthesis."""
     blades = {f: flanks[f].tools.blade for f in FLANKS}
-    w1 = slot_width_at_root(geom.pinion, geom.m_mn, blades["convex"].blade_angle,
-                            blades["concave"].blade_angle)
+    try:
+        w1 = slot_width_at_root(geom.pinion, geom.m_mn, blades["convex"].blade_angle,
+                                blades["concave"].blade_angle)
+    except InputError as exc:
+        log.warning("synthesis: no pinion point width written (%s)", exc)
+        return blades
     return {f: replace(b, point_width=w1) for f, b in blades.items()}
 
 
