@@ -28,6 +28,7 @@ stress_operator     sparse map from displacements to stress components at points
 
 from __future__ import annotations
 
+import gc
 import importlib.util
 import logging
 import signal
@@ -90,7 +91,7 @@ class ElasticModel:
     ----------
     basis : DofMap — the scalar quadratic basis's numbering (its dofs are the nodes); the
         basis's values and gradients at every quadrature point are released once K is
-        assembled (~100-250 MB on the default models, issue 62 item 6)
+        assembled (~100 MB on the default pinion model, measured; issue 62 item 6)
     stiffness : scipy.sparse.csr_matrix (3N, 3N) or None — K [N/mm]; None in a model whose
         stiffness was handed to its factorisation and released (the influence
         coefficients' build: its memory is the factor's, issue 53)
@@ -355,6 +356,11 @@ def _pardiso(box: list):
 #: handler run: a SIGTERM or Ctrl-C is honoured within this, not after the native call)
 WORKER_POLL = 0.1
 
+#: right-hand sides sent to a solver worker at once (2.7 MB each on the default pinion
+#: model; the copies of a piece on its way through the pipe are the worker's transient
+#: memory)
+PIPE_BLOCK = 16
+
 _PENDING: list = []  # the matrix handed to a forked worker (read by it, cleared here)
 
 
@@ -378,6 +384,9 @@ def _serve(kernel: Callable[[list], tuple], conn) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)   # the parent decides; it kills this
     signal.signal(signal.SIGTERM, signal.SIG_DFL)  # at once, even inside native code
     _set_parent_death_signal()
+    # a collection would touch every object inherited from the parent and copy their
+    # pages (copy-on-write); the worker makes few objects of its own
+    gc.disable()
     box = [_PENDING.pop()]
     try:
         t0 = time.perf_counter()
@@ -436,12 +445,20 @@ class _Worker:
         return msg
 
     def solve(self, b: np.ndarray) -> np.ndarray:
-        try:
-            self.conn.send(b)
-        except BaseException:
-            self.kill()
-            raise
-        return self.receive()[1]
+        """Solutions of right-hand sides ``b`` (F, k), sent in pieces of at most
+        :data:`PIPE_BLOCK` columns (each piece is copied several times on its way: pickled,
+        unpickled, into CHOLMOD's matrix and back)."""
+        out = np.empty_like(b)
+        for start in range(0, b.shape[1], PIPE_BLOCK):
+            piece = np.ascontiguousarray(b[:, start:start + PIPE_BLOCK])
+            try:
+                self.conn.send(piece)
+            except BaseException:
+                self.kill()
+                raise
+            del piece
+            out[:, start:start + PIPE_BLOCK] = self.receive()[1]
+        return out
 
     def close(self) -> None:
         """Ask the worker to end, then make sure it did."""
