@@ -229,3 +229,25 @@ def test_the_developed_case_records_what_was_achieved_and_round_trips():
     assert dev["prescriptions"] == values and dev["targets_met"] == 0
     assert dev["torque_Nm"] == [50.0, 330.0]
     assert dev["achieved"]["edge_load_share"] == [0.0, 0.05]
+
+
+def test_the_relief_stage_makes_the_blade_the_synthesis_makes():
+    """The relief stage sets the relief on the bearing's blade alone
+    (contact.optimize.variables.case_at); the written case is the synthesis with the same
+    prescriptions. The two blades and settings are identical (an identity: both are
+    geometry.machine.relief.relieved_blade on the same unrelieved blade), so the case
+    written is the design the development analysed."""
+    from contact.optimize.variables import case_at
+    from geometry.synthesis.basic_design import load_basic, with_flank_options
+    from geometry.synthesis.case_synthesis import synthesize
+
+    basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
+    bearing = {"path_angle": -60.0, "ellipse_length": 0.6}
+    relief = {"tip_relief": 22.0, "root_relief": 31.0}
+    staged = case_at(synthesize(with_flank_options(basic, "concave", bearing))[0],
+                     "concave", list(relief), list(relief.values()), relief_start=0.4)
+    written = synthesize(with_flank_options(basic, "concave",
+                                            bearing | relief | {"relief_start": 0.4}))[0]
+    assert staged.pinion.concave.blade == written.pinion.concave.blade
+    assert staged.pinion.concave.machine == written.pinion.concave.machine
+    assert written.pinion.concave.blade.toprem_angle != 0.0
