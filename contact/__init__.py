@@ -40,6 +40,7 @@ __all__ = [
     "ContactError",
     "ContactProblem",
     "ContactSolution",
+    "DevelopmentTargets",
     "DutyCycle",
     "FEOptions",
     "LTCAOptions",
@@ -54,6 +55,7 @@ __all__ = [
     "bundled_cases",
     "clear_caches",
     "contact_residuals",
+    "develop",
     "ease_off",
     "influence_coefficients",
     "iso10300_rating",
@@ -95,7 +97,7 @@ _LAZY = {
     "verdict": "contact.study.verdicts",
     # (the optimiser itself is contact.optimize.optimize: a name ``optimize`` here would
     # hide the subpackage)
-    "OptimizeProblem": "contact.optimize",
+    **dict.fromkeys(("OptimizeProblem", "develop", "DevelopmentTargets"), "contact.optimize"),
     "iso10300_rating": "contact.rating",
     "write_report": "contact.plots.report",
     **dict.fromkeys(("read_netcdf", "write_netcdf"), "geometry.core.io"),
