@@ -511,7 +511,7 @@ def _thermal_shear(s: ContactSetup, cond: LineContactCondition, p: Array, rate: 
                    fluid: NDArray[np.bool_], kind: NDArray[np.int_], dx: float) -> Array:
     """τ(x) [Pa] at the inlet temperature plus the flash temperature of the heat of the
     film's shear and of the boundary friction, to a fixed point (0.05 K, ≤ 60 steps)."""
-    from friction.ehl.stochastic import _oil_properties  # (stochastic imports this module)
+    from friction.ehl.stochastic import film_oil_properties  # (stochastic imports this module)
     from friction.ehl.thermal import flash_temperature
     from geometry.core.materials import DEFAULT_MATERIAL, material
 
@@ -525,7 +525,7 @@ def _thermal_shear(s: ContactSetup, cond: LineContactCondition, p: Array, rate: 
     flash = np.zeros(p.size)
     tau = np.zeros(p.size)
     for _ in range(60):
-        eta0, alpha = _oil_properties(oil, float(cond.temperature) + flash)
+        eta0, alpha = film_oil_properties(oil, float(cond.temperature) + flash)
         eta, _ = model(p, eta0, alpha)  # type: ignore[operator]
         tau = np.where(fluid, eyring_limited_shear(eta, rate, p, s.tau0, s.lim), 0.0)
         q = 0.5 * (np.abs(tau) * us + boundary_flux)                    # each surface's

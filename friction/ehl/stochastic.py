@@ -547,8 +547,23 @@ def _newton(pr: _Problem, p: Array, h0: float, options: StochasticOptions
                            f"{big:.2e})")
 
 
-def _oil_properties(oil: Lubricant, temperature: Array) -> tuple[Array, Array]:
-    """η₀ [Pa s] and α [1/Pa] at film temperatures, extrapolated above the oil's table."""
+def film_oil_properties(oil: Lubricant, temperature: Array) -> tuple[Array, Array]:
+    """η₀ [Pa s] and α [1/Pa] at film temperatures, extrapolated above the oil's table.
+
+    Parameters
+    ----------
+    oil : Lubricant
+    temperature : array_like — [°C]
+        Film temperatures (inlet plus flash), clipped to the oil's lowest tabulated
+        temperature and :data:`FILM_TEMPERATURE_CAP`.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        Ambient-pressure viscosity [Pa s] from the oil's Vogel law, and the
+        pressure-viscosity coefficient [1/Pa] from its table, continued above it on the
+        last segment's slope of ln α (the oil data's source: friction.lubricant).
+    """
     lo, hi = temperature_range(oil)
     t = np.clip(temperature, lo, FILM_TEMPERATURE_CAP)
     inside = np.clip(t, lo, hi)
@@ -601,7 +616,7 @@ def _friction(pr: _Problem, pf: Array, h: Array, pa: Array, oil: Lubricant,
     model = pr.viscosity_fn
     for _ in range(60):
         if options.thermal:
-            eta0, alpha = _oil_properties(oil, t_in + flash)
+            eta0, alpha = film_oil_properties(oil, t_in + flash)
         else:
             eta0, alpha = s.eta0, s.alpha
         eta, _ = model(p_oil, eta0, alpha)  # type: ignore[operator]
