@@ -370,9 +370,11 @@ def test_committed_case_is_reproduced_and_cli_writes_it(tmp_path, capsys):
     """``ltca synthesize`` on the default basic file writes a case that loads and equals the
     synthesis in memory (TOML round trip of floats: 1e-12 relative) and the committed
     ``cases/kolivand2009_fm_11x41.toml`` (regenerate it with that command when the synthesis
-    changes); no temporary file is left behind."""
+    changes); no temporary file is left behind. ``--no-development``: the committed case is
+    the local synthesis of its basic file's own prescriptions (the development of the bearing
+    under load, on by default since issue 60, varies them: tests/test_development.py)."""
     out = tmp_path / "case.toml"
-    assert ltca(["synthesize", str(BASIC), "-o", str(out)]) == 0
+    assert ltca(["synthesize", str(BASIC), "-o", str(out), "--no-development"]) == 0
     assert "wrote" in capsys.readouterr().out
     assert [p.name for p in tmp_path.iterdir()] == ["case.toml"]
     written = load_case(out)
