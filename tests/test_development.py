@@ -53,15 +53,15 @@ def test_a_design_meeting_every_target_scores_only_its_lte():
 
 def test_each_shortfall_is_the_excess_over_its_tolerance():
     """Hand-computed shortfalls: length 0.75 vs 0.5 ± 0.1 → (0.25 − 0.1)/0.1 = 1.5; toe
-    on the grid's first row with clearance 0.04 → 1; edge 5 % vs 2 % → 3 (per 1 %);
-    plastic 0.5 % → 0.5; LTE 50 µrad vs 40 → 2 (per 5 µrad); centre v 0.8 vs 0.6 ± 0.08
-    → 1.5; the objective is their sum of squares plus 0.1 × 50/10."""
+    on the grid's first row with clearance 0.04 → 1; edge 5 % vs 2 % → 6 (per 0.5 %);
+    plastic 0.5 % → 5 (per 0.1 %); LTE 50 µrad vs 40 → 1 (per 10 µrad); centre v 0.8 vs
+    0.6 ± 0.08 → 1.5; the objective is their sum of squares plus 0.1 × 50/10."""
     m = _metrics(pattern_toe_u=[0.0, 0.0], pattern_heel_u=[0.75, 0.8],
                  pattern_centre_v=[0.8, 0.7], edge_load_share=[0.0, 0.05],
                  plastic_share=[0.0, 0.005], lte_peak_to_peak=[20.0, 50.0])
     obj, short, met = development_score(m, DevelopmentTargets(), centre_v=0.6)
     assert not met
-    expect = {"length": 1.5, "toe": 1.0, "edge": 3.0, "plastic": 0.5, "lte": 2.0,
+    expect = {"length": 1.5, "toe": 1.0, "edge": 6.0, "plastic": 5.0, "lte": 1.0,
               "centre_v": 1.5}
     for k, v in expect.items():
         assert short[k] == pytest.approx(v, rel=1e-9), k
@@ -78,7 +78,7 @@ def test_the_bearing_stage_leaves_the_edges_to_the_relief():
                                             stage="bearing")
     _, _, met_r = development_score(m, DevelopmentTargets(), centre_v=0.6)
     assert met_b and not met_r
-    assert short["edge"] == pytest.approx(6.0) and short["tip"] == pytest.approx(1.0)
+    assert short["edge"] == pytest.approx(12.0) and short["tip"] == pytest.approx(1.0)
     assert obj_b == pytest.approx(0.3)
 
 
