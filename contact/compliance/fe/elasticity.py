@@ -362,6 +362,7 @@ WORKER_POLL = 0.1
 PIPE_BLOCK = 16
 
 _PENDING: list = []  # the matrix handed to a forked worker (read by it, cleared here)
+_SIGNALS = {signal.SIGINT, signal.SIGTERM}
 
 
 def _set_parent_death_signal() -> None:
@@ -383,6 +384,7 @@ def _serve(kernel: Callable[[list], tuple], conn) -> None:
     receives until ``None`` or the end of the pipe."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)   # the parent decides; it kills this
     signal.signal(signal.SIGTERM, signal.SIG_DFL)  # at once, even inside native code
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, _SIGNALS)  # blocked by the parent's fork
     _set_parent_death_signal()
     # a collection would touch every object inherited from the parent and copy their
     # pages (copy-on-write); the worker makes few objects of its own
@@ -419,7 +421,11 @@ class _Worker:
 
         ctx = multiprocessing.get_context("fork")
         self.conn, child = ctx.Pipe()
+        self.busy = False
         _PENDING.append(box.pop())
+        # no signal handler may run between the fork and knowing the worker (it would be
+        # left factorising with this process's handlers): both blocked until then
+        mask = signal.pthread_sigmask(signal.SIG_BLOCK, _SIGNALS)
         try:
             self.proc = ctx.Process(target=_serve, args=(kernel, child), daemon=True,
                                     name="fe-factor")
@@ -427,9 +433,15 @@ class _Worker:
         finally:
             _PENDING.clear()  # this process's reference: the worker holds its own copy
             child.close()
+            try:
+                signal.pthread_sigmask(signal.SIG_SETMASK, mask)  # a pending one runs now
+            except BaseException:
+                self.kill()
+                raise
 
     def receive(self):
         """The worker's next message; raises what it reports, LTCAError if it died."""
+        self.busy = True
         try:
             while not self.conn.poll(WORKER_POLL):
                 if not self.proc.is_alive():
@@ -439,6 +451,7 @@ class _Worker:
         except BaseException:
             self.kill()
             raise
+        self.busy = False
         if msg[0] == "error":
             self.kill()
             raise msg[1]
@@ -451,6 +464,7 @@ class _Worker:
         out = np.empty_like(b)
         for start in range(0, b.shape[1], PIPE_BLOCK):
             piece = np.ascontiguousarray(b[:, start:start + PIPE_BLOCK])
+            self.busy = True
             try:
                 self.conn.send(piece)
             except BaseException:
@@ -461,8 +475,9 @@ class _Worker:
         return out
 
     def close(self) -> None:
-        """Ask the worker to end, then make sure it did."""
-        if self.proc.is_alive():
+        """Ask an idle worker to end, then make sure it did (one still at work, e.g. when
+        an exception ends the build, is killed at once)."""
+        if self.proc.is_alive() and not self.busy:
             try:
                 self.conn.send(None)
             except OSError:
