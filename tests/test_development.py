@@ -147,7 +147,7 @@ def test_clearance_shortfalls_agree_with_the_verdicts_boundaries(unrelieved_pc):
     tree, metrics, grid = unrelieved_pc
     reached = _boundaries(tree["/ltca"].to_dataset())[0]
     assert "tip" in reached
-    _, short, met = development_score(metrics, DevelopmentTargets(), grid)
+    _, short, met = development_score(metrics, DevelopmentTargets(), grid[:4])
     assert not met
     for side in ("toe", "heel", "root", "tip"):
         if side in reached:
@@ -251,3 +251,22 @@ def test_the_relief_stage_makes_the_blade_the_synthesis_makes():
     assert staged.pinion.concave.blade == written.pinion.concave.blade
     assert staged.pinion.concave.machine == written.pinion.concave.machine
     assert written.pinion.concave.blade.toprem_angle != 0.0
+
+
+def test_flank_pressure_limit_is_the_static_strength(unrelieved_pc):
+    """The default flank-pressure limit is the static strength of case-carburised steel at
+    grade MQ: σ_Hlim 1500 MPa (ISO 6336-5:2016, Fig. 9 MQ) × Z_NT 1.6 at the static end
+    of its S–N curve (ISO 6336-2:2019, Table 2) = 2400 MPa; a design pressure 200 MPa
+    above it is a shortfall of 2 (per 100 MPa), and an explicit limit replaces it."""
+    from contact.optimize.development import static_strength
+
+    tree, _, grid = unrelieved_pc
+    assert static_strength(tree) == pytest.approx(2400.0, rel=1e-9)
+    assert grid[4] == pytest.approx(2400.0, rel=1e-9)
+    m = _metrics(pressure_max_flank=[1500.0, 2600.0])
+    _, short, met = development_score(m, DevelopmentTargets(), centre_v=0.6,
+                                      pressure_limit=2400.0)
+    assert not met and short["pressure"] == pytest.approx(2.0)
+    _, short, met = development_score(m, DevelopmentTargets(max_flank_pressure=2700.0),
+                                      centre_v=0.6, pressure_limit=2400.0)
+    assert met and short["pressure"] == 0.0

@@ -70,8 +70,8 @@ from geometry.synthesis.basic_design import (
 
 __all__ = ["COARSE_LTCA", "RELIEF_NAMES", "STAGE_TERMS", "VARIABLES",
            "DevelopmentEvaluation", "DevelopmentResult", "DevelopmentTargets",
-           "design_torque_of", "develop", "development_score", "targets_from_table",
-           "working_depth_centre"]
+           "design_torque_of", "develop", "development_score", "static_strength",
+           "targets_from_table", "working_depth_centre"]
 
 log = logging.getLogger(__name__)
 
@@ -152,6 +152,11 @@ class DevelopmentTargets:
         roll, light and design torque; default 0 (no plastic edge).
     max_lte : float — [µrad]
         Largest LTE peak-to-peak at the light and the design torque; default 40 µrad.
+    max_flank_pressure : float or None — [MPa]
+        Largest flank peak pressure at the design torque; default None: the static
+        strength σ_Hlim·Z_NT,static of the weaker member's material at grade MQ, the limit
+        above which the verdict finds "no life at this torque"
+        (:mod:`contact.study.verdicts`, ISO 6336-2/-5).
     offset_tolerance, mounting_tolerance : float — [mm]
         The excursions ΔE = ±V and ΔP = ±H of the tolerance check (the V-H check's
         directions); default 0.05 mm each (a careful axle assembly, well inside the V-H
@@ -174,6 +179,7 @@ class DevelopmentTargets:
     max_edge_share: float = 0.02
     max_plastic_share: float = 0.0
     max_lte: float = 40.0
+    max_flank_pressure: float | None = None
     offset_tolerance: float = 0.05
     mounting_tolerance: float = 0.05
     max_evaluations: int = 16
@@ -196,6 +202,8 @@ class DevelopmentTargets:
         chk("max_edge_share", 0.0, 1.0)
         chk("max_plastic_share", 0.0, 1.0)
         chk("max_lte", 0.0, 1000.0, unit="urad", low_open=True)
+        if self.max_flank_pressure is not None:
+            chk("max_flank_pressure", 0.0, 1e5, unit="MPa", low_open=True)
         chk("offset_tolerance", 0.0, 5.0, unit="mm")
         chk("mounting_tolerance", 0.0, 5.0, unit="mm")
         n = self.max_evaluations
@@ -266,13 +274,14 @@ def working_depth_centre(case: Case) -> float:
 STAGE_TERMS = {
     "bearing": ("length", "centre_u", "centre_v", "toe", "heel", "lte"),
     "relief": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
-               "plastic", "lte"),
+               "plastic", "lte", "pressure"),
 }
 
 
 def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTargets,
                       grid: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 1.0), *,
-                      centre_v: float | None = None, stage: str = "relief"
+                      centre_v: float | None = None, stage: str = "relief",
+                      pressure_limit: float = math.inf
                       ) -> tuple[float, dict[str, float], bool]:
     """The development objective of one design.
 
@@ -291,6 +300,9 @@ def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTar
         :func:`working_depth_centre`); default 0.5.
     stage : str
         ``"relief"`` (default: every target) or ``"bearing"`` (:data:`STAGE_TERMS`).
+    pressure_limit : float — [MPa]
+        Flank peak pressure allowed at the design torque where
+        ``targets.max_flank_pressure`` is None (:func:`static_strength`); default inf.
 
     Returns
     -------
@@ -303,7 +315,8 @@ def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTar
         ``centre_v`` (deviation beyond the tolerance / tolerance), ``toe``, ``heel``,
         ``root``, ``tip`` (clearance missing / clearance, light load), ``edge`` (share
         beyond the limit / 0.5 %), ``plastic`` (share beyond the limit / 0.1 %, worst
-        torque), ``lte`` (LTE beyond the limit / 10 µrad, worst torque).
+        torque), ``lte`` (LTE beyond the limit / 10 µrad, worst torque), ``pressure``
+        (flank peak pressure at the design torque beyond its limit / 100 MPa).
     met : bool
         Every shortfall of the stage is 0.
 
@@ -330,6 +343,7 @@ def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTar
     cv = (t.pattern_centre_v if t.pattern_centre_v is not None else
           0.5 if centre_v is None else centre_v)
     c = max(t.clearance, 1e-3)
+    plimit = t.max_flank_pressure if t.max_flank_pressure is not None else pressure_limit
     length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
     short = {
         "length": max(0.0, abs(length - t.pattern_length) - t.pattern_length_tolerance)
@@ -346,6 +360,7 @@ def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTar
         "plastic": max(0.0, float(np.max(m["plastic_share"])) - t.max_plastic_share)
         / _PLASTIC_SCALE,
         "lte": max(0.0, float(np.max(m["lte_peak_to_peak"])) - t.max_lte) / _LTE_SCALE,
+        "pressure": max(0.0, m["pressure_max_flank"][1] - plimit) / 100.0,
     }
     short = {k: float(v) for k, v in short.items()}
     terms = STAGE_TERMS[stage]
@@ -415,6 +430,22 @@ def design_torque_of(basic: BasicDesign, case: Case) -> tuple[float, str]:
     return float(max(case.operating.torque)), f"largest [operating] torque ({why})"
 
 
+def static_strength(tree) -> float:
+    """The static strength σ_Hlim·Z_NT,static [MPa] of the weaker member's material of an
+    analysis (its ``/ltca`` attributes ``material_pinion``, ``material_gear``) at the
+    verdict's grade (:data:`contact.study.verdicts.GRADE`, ISO 6336-5; the S–N curve's
+    life factor at its static end, ISO 6336-2); inf where the tree names no material."""
+    from contact.durability import sn_curves
+    from contact.study.verdicts import GRADE
+
+    a = tree["/ltca"].attrs
+    names = sorted({a.get("material_pinion"), a.get("material_gear")} - {None})
+    if not names:
+        return math.inf
+    curves = [sn_curves(str(n), GRADE)["contact"] for n in names]
+    return float(min(c.allowable * c.static_life_factor for c in curves))
+
+
 def _metrics(tree, case: Case) -> dict[str, np.ndarray]:
     from contact.study.summary import point_summary
 
@@ -440,7 +471,7 @@ def _analyse(case: Case, torques: list[float], misalignment: Misalignment | None
     c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
     tree = run_analysis(c, torques, options=options, deviations=False, geometry=False,
                         operating=False, mesh_interface=False)
-    return _metrics(tree, c), _grid(tree)
+    return _metrics(tree, c), (*_grid(tree), static_strength(tree))
 
 
 @dataclass(frozen=True, eq=False)
@@ -721,8 +752,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                     f"{', '.join(targets.variables)} (at most {targets.max_evaluations} "
                     "designs, coarse LTCA)")
             metrics, grid = _analyse(case, setup["torques"])
-            obj, short, met = development_score(metrics, targets, grid,
-                                                centre_v=setup["centre_v"], stage=stage)
+            obj, short, met = development_score(metrics, targets, grid[:4],
+                                                centre_v=setup["centre_v"], stage=stage,
+                                                pressure_limit=grid[4])
             reason = ""
         except Exception as exc:  # one failing design never ends the development
             log.info("development design %s failed: %s", values, exc)
@@ -732,7 +764,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         e = DevelopmentEvaluation(len(evals), dict(values), metrics, obj, short, met, reason,
                                   time.process_time() - c0, case)
         if grid is not None:  # the full score too: designs of both stages are compared
-            full = development_score(metrics, targets, grid, centre_v=setup["centre_v"])
+            full = development_score(metrics, targets, grid[:4], centre_v=setup["centre_v"],
+                                     pressure_limit=grid[4])
             e = dataclasses.replace(e, full=full)
         evals.append(e)
         seen[key] = e
@@ -799,7 +832,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     for lab, mis in _excursions(targets):
         try:
             ms, grid = _analyse(case, setup["torques"], mis)
-            _, short, _ = development_score(ms, targets, grid, centre_v=setup["centre_v"])
+            _, short, _ = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                                            pressure_limit=grid[4])
         except Exception as exc:  # reported, never fatal
             log.info("development tolerance %s failed: %s", lab, exc)
             ms = {k: np.full(2, np.nan) for k in METRIC_NAMES}
