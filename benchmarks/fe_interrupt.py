@@ -4,7 +4,8 @@ Issue 64: a process inside an FE build answered SIGTERM only after 3 min 41 s (t
 waited for the native factorisation), and an interrupted build kept nothing. Prints one
 table, measured in one run: ``ltca run`` of the default case (one torque, a small LTCA,
 no efficiency stage) into an empty temporary FE cache, sent SIGTERM when its log (``-v``)
-shows a phase of the first member's build, in two set-ups —
+shows a phase of the first member's build (2 s into the native factorisation, or as the
+first block of unit loads is kept), in two set-ups —
 
 * ``worker``: as shipped, the factorisation and the solves in a worker process
   (:func:`contact.compliance.fe.elasticity.factorise` with ``isolated=True``);
@@ -31,8 +32,10 @@ from pathlib import Path
 
 from tabulate import tabulate
 
-#: the phases at which the signal is sent: (label, the log line's text)
-PHASES = (("factorisation", "factorising"), ("unit-load solves", "unit loads 0-32 of"))
+#: the phases at which the signal is sent: (label, the log line's text, then a delay [s]:
+#: 2 s after "factorising" the native factorisation of the default model (≥ 5 s) runs)
+PHASES = (("factorisation", "factorising", 2.0),
+          ("unit-load solves", "unit loads 0-32 of", 0.0))
 
 _RUN = """
 import sys
@@ -44,8 +47,9 @@ sys.exit(main(sys.argv[2:]))
 """
 
 
-def run(mode: str, cache: Path, out: Path, stop_at: str | None) -> dict:
-    """One ``ltca run``; SIGTERM when a stderr line contains ``stop_at``."""
+def run(mode: str, cache: Path, out: Path, stop_at: str | None, delay: float = 0.0) -> dict:
+    """One ``ltca run``; SIGTERM ``delay`` seconds after a stderr line contains
+    ``stop_at``."""
     env = {**os.environ, "HYPOID_LTCA_CACHE": str(cache),
            "PYTHONPATH": str(Path(__file__).resolve().parents[1])}
     args = ["run", "--torque", "50", "--rolls-per-cycle", "4", "--segments", "8",
@@ -56,6 +60,7 @@ def run(mode: str, cache: Path, out: Path, stop_at: str | None) -> dict:
     sent = None
     for line in proc.stderr:
         if stop_at is not None and sent is None and stop_at in line:
+            time.sleep(delay)
             proc.send_signal(signal.SIGTERM)
             sent = time.perf_counter()
     proc.wait()
@@ -69,9 +74,9 @@ def main() -> None:
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for mode in ("worker", "in-process"):
-            for label, text in PHASES:
+            for label, text, delay in PHASES:
                 cache = Path(tmp) / f"{mode}-{label[:5]}"
-                r = run(mode, cache, Path(tmp) / "r.nc", text)
+                r = run(mode, cache, Path(tmp) / "r.nc", text, delay)
                 rerun = cold = float("nan")
                 if mode == "worker" and r["parts"]:
                     rerun = run(mode, cache, Path(tmp) / "r.nc", None)["total_s"]
