@@ -190,7 +190,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.quiet and args.verbose:
         parser.error("-q/--quiet and -v/--verbose exclude each other")
     if hasattr(args, "no_progress"):
-        # the studies' progress (contact.study.progress): a bar on a terminal, plain
+        # the studies' progress (geometry.core.progress): a bar on a terminal, plain
         # periodic lines anywhere else (a file, a pipe), none with -q or --no-progress;
         # every other progress bar only on a terminal
         terminal = sys.stderr.isatty()

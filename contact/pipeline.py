@@ -353,7 +353,7 @@ def run_analysis(
     progress : bool or "lines"
         Progress bar over the LTCA roll positions and the unit loads of a first FE build,
         or plain lines with the rate and the remaining time (``"lines"``, as ``ltca run``
-        prints when not on a terminal: :mod:`contact.study.progress`).
+        prints when not on a terminal: :mod:`geometry.core.progress`).
     theoretical : bool
         With deviations, also analyse the theoretical surfaces (``/theoretical``,
         default True); False skips them (studies keep only the deviated results, which

@@ -229,6 +229,9 @@ def test_the_developed_case_records_what_was_achieved_and_round_trips():
     assert dev["prescriptions"] == values and dev["targets_met"] == 0
     assert dev["torque_Nm"] == [50.0, 330.0]
     assert dev["achieved"]["edge_load_share"] == [0.0, 0.05]
+    # the basic file gives no [operating] torques: the case runs at the developed loads
+    assert "torque" not in basic.operating
+    assert out.operating.torque == back.operating.torque == (50.0, 330.0)
 
 
 def test_the_relief_stage_makes_the_blade_the_synthesis_makes():

@@ -297,8 +297,12 @@ def test_friction_stage_reads_only_the_contact_geometry():
     lengths; the axes, ratio and material) under a face-milled case's name: nothing in it
     depends on the cutting process (the LTCA dataset does not even record it)."""
     _, ltca, fr = _fh_ltca()
+    # (and ``found``, the certification of each roll: a roll without a certified contact
+    # solution has no efficiency, issue 64 — this coarse FH example's first roll collapses
+    # plastically at 250 N m)
     needed = ("force", "load_per_length", "pressure_max", "segment_length",
-              "equivalent_radius", "contact_point", "contact_normal", "contact_tangent")
+              "equivalent_radius", "contact_point", "contact_normal", "contact_tangent",
+              "found")
     keep = ("pinion_axis", "pinion_origin_mm", "gear_axis", "gear_origin_mm", "ratio",
             "options")
     bare = xr.Dataset({k: ltca[k] for k in needed},

@@ -244,8 +244,8 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     """``run_duty_cycle(root_stress=FEOptions)``: every bin's analysis has the root stress,
     the bin's ``root_stress_peak`` is the peak tensile fillet stress of the same single
     analysis (same inputs, so equal but for the order of sums: rtol 1e-9), and the
-    bending side is available (root life finite, S_F = σ_FE / the peak bin's largest
-    fillet stress, to round-off)."""
+    bending side is available (root life finite, S_F = the ISO 10300 rating's σ_FP of the
+    peak bin / its largest fillet stress, to round-off)."""
     from contact.compliance.fe import CACHE_ENV, cache_key, cache_path
     from contact.compliance.fe.cache import write_cache_entry
     from contact.durability import peak_fillet_stress, sn_curves
@@ -268,10 +268,18 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     single = peak_fillet_stress(tree["ltca"].to_dataset()["root_stress"].values[0])
     np.testing.assert_allclose(out["root_stress_peak"].isel(bin=1).values, single,
                                rtol=1e-9)
+    # the allowable at long life is the ISO 10300 rating's sigma_FP (Y_NT = 1 without
+    # load cycles) of the peak bin's torque and speed (issue 62: the duty cycle on the
+    # rating's allowables), not the material's bare sigma_FE
+    from contact.rating import iso10300_rating
+
+    sigma_FP = iso10300_rating(case, [250.0], 1000.0)["sigma_FP"]
     for member in ("pinion", "gear"):
         life = float(out["root_life"].sel(member=member))
         assert life > 0  # finite, or inf when no fillet point reaches the knee
-        allowable = sn_curves(case.member(member).material, "MQ")["bending"].allowable
+        allowable = float(sigma_FP.sel(member=member))
+        assert allowable != pytest.approx(
+            sn_curves(case.member(member).material, "MQ")["bending"].allowable, rel=1e-3)
         peak = float(out["root_stress_peak"].sel(member=member).isel(bin=1).max())
         assert float(out["bending_safety_factor"].sel(member=member)) == pytest.approx(
             allowable / peak, rel=1e-12)

@@ -1,6 +1,6 @@
 """Studies talk without a terminal and close their cluster quietly (issue 56, item 3).
 
-* :class:`contact.study.progress.ProgressLines` on a clock the test moves: a line at every
+* :class:`geometry.core.progress.ProgressLines` on a clock the test moves: a line at every
   tenth of the work, one when the interval passes between them, the rate and the ETA of
   the tasks done so far, a last line — asserted on content, the clock is the test's;
 * ``ltca sweep`` in a subprocess with its output in pipes (not a terminal) on a local
@@ -18,8 +18,8 @@ import sys
 
 import pytest
 
-from contact.study.progress import ProgressLines, progress_reporter
 from geometry.core.errors import InputError
+from geometry.core.progress import ProgressLines, progress_reporter
 
 
 class _Clock:

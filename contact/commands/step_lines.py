@@ -3,7 +3,7 @@ report``): ``synthesize: step 3/10, pinion concave: generating tools (12 s)``.
 
 Each line is complete, so a log file or a pipe (CI, ``nohup``, a batch system) shows how
 far a command of minutes is, as the studies' ``"lines"`` mode does
-(:mod:`contact.study.progress`). ``ltca`` turns them on when the command's ``progress``
+(:mod:`geometry.core.progress`). ``ltca`` turns them on when the command's ``progress``
 (set by :func:`contact.cli.main` from ``--no-progress``, ``-q`` and whether standard error
 is a terminal) is not False.
 """

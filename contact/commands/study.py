@@ -60,7 +60,7 @@ _INPUT_OPTIONS = {
 def study_progress(args: argparse.Namespace) -> bool | str:
     """A study command's ``progress``: True (a bar: standard error is a terminal),
     ``"lines"`` (plain periodic lines: it is not) or False (``-q``, ``--no-progress``), as
-    :func:`contact.cli.main` decided (:mod:`contact.study.progress`); for arguments that
+    :func:`contact.cli.main` decided (:mod:`geometry.core.progress`); for arguments that
     did not pass through it, a bar unless ``--no-progress``."""
     return getattr(args, "progress", not getattr(args, "no_progress", False))
 

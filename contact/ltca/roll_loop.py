@@ -109,7 +109,7 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False
         The segments of every (roll, pair) (:func:`contact.ltca.segment_geometry`).
     progress : bool or "lines"
         tqdm progress bar over the roll positions, or plain lines (``"lines"``:
-        :func:`contact.study.progress.progress_reporter`).
+        :func:`geometry.core.progress.progress_reporter`).
     sink : list, optional
         The final problem of every (torque, roll) is appended as a :class:`RollProblem`,
         roll by roll and at each roll torque by torque.
@@ -148,7 +148,7 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False
         _assemble_first_pool(an, computed[0])
     bar = None
     if progress:  # a tqdm bar, or plain lines off a terminal ("lines", as the studies)
-        from contact.study.progress import progress_reporter
+        from geometry.core.progress import progress_reporter
 
         bar = progress_reporter(progress, J, desc="LTCA", unit="roll")
     for j in range(J):

@@ -572,14 +572,21 @@ class DevelopmentResult:
 
     def recorded(self, case: Case) -> Case:
         """``case`` (the developed case, maybe with its rating's design torque set) with
-        :meth:`summary` appended to its ``source`` and :meth:`table` as its informational
-        ``[development]`` table."""
+        :meth:`summary` appended to its ``source``, :meth:`table` as its informational
+        ``[development]`` table and, where the basic file's ``[operating]`` gives no
+        torques, the light and the design torque as its operating torques [N·m]."""
         import json
         from types import MappingProxyType
 
         extra = json.loads(json.dumps({**case.extra, "development": self.table()}))
+        more: dict[str, Any] = {}
+        if "torque" not in self.basic.operating:
+            # the loads the bearing was developed for are the case's operating torques
+            # (the seed's 50/250/500 N·m otherwise, unrelated to this design's size)
+            more["operating"] = dataclasses.replace(
+                case.operating, torque=tuple(round(float(t), 1) for t in self.torque))
         return dataclasses.replace(case, source=case.source.rstrip() + " " + self.summary(),
-                                   extra=MappingProxyType(extra))
+                                   extra=MappingProxyType(extra), **more)
 
     def _met_text(self) -> str:
         _, short, met = self.best.full

@@ -625,7 +625,7 @@ def stream_tasks(function: Any, shared: Any, items: Sequence[tuple],
     progress : bool or {"lines"}
         A progress bar (True) or plain periodic lines (``"lines"``, for output that is not
         a terminal) over ``total`` tasks, ``initial`` done before, named ``desc`` and
-        counted in ``unit`` (:func:`contact.study.progress.progress_reporter`).
+        counted in ``unit`` (:func:`geometry.core.progress.progress_reporter`).
 
     Returns
     -------
@@ -636,7 +636,7 @@ def stream_tasks(function: Any, shared: Any, items: Sequence[tuple],
     ------
     As :func:`run_tasks` (an interrupted study keeps what its store was given).
     """
-    from contact.study.progress import progress_reporter
+    from geometry.core.progress import progress_reporter
 
     kept: list[xr.Dataset] = []
     bar = progress_reporter(progress, total, initial=initial, desc=desc, unit=unit)

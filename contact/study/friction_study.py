@@ -168,7 +168,7 @@ def run_friction_study(
         ``n_workers`` processes, ``"synchronous"`` this process, an address a cluster.
     progress : bool or {"lines"}
         A tqdm bar (True) or plain periodic lines (``"lines"``,
-        :mod:`contact.study.progress`).
+        :mod:`geometry.core.progress`).
     chunk_size : int
         Points per chunk file.
 

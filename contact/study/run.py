@@ -50,7 +50,7 @@ class StudyRun:
         Workers of the LocalCluster (default one per core).
     progress : bool or {"lines"}
         A progress bar over the points (True), or plain periodic lines for output that is
-        not a terminal (``"lines"``: :mod:`contact.study.progress`). Default False.
+        not a terminal (``"lines"``: :mod:`geometry.core.progress`). Default False.
     root_stress : bool or contact.compliance.fe.FEOptions
         Also the peak tooth-root stress of both members at every point
         (``root_stress_max`` over (point…, torque, member) [MPa]; :func:`contact.run_analysis`'s

@@ -443,10 +443,10 @@ def principal_stresses(tensor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _load_progress(progress, total: int, initial: int, desc: str):
     """The reporter of the unit loads solved: a tqdm bar (``True``), plain lines with the
-    rate and the remaining time (``"lines"``: :class:`contact.study.progress.
+    rate and the remaining time (``"lines"``: :class:`geometry.core.progress.
     ProgressLines`, as the studies print them when not on a terminal) or None."""
     if progress == "lines":
-        from contact.study.progress import ProgressLines
+        from geometry.core.progress import ProgressLines
 
         return ProgressLines(total, initial, desc, "load")
     if progress:

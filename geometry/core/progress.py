@@ -1,4 +1,4 @@
-"""Progress of a study: a bar on a terminal, plain periodic lines anywhere else.
+"""Progress of long work (studies, FE builds, rolls): a bar on a terminal, else plain lines.
 
 A study of a few hundred points runs for minutes. On a terminal a tqdm bar shows how far
 it is; written to a file or a pipe (a CI runner, ``nohup``, a batch system) a bar is one
