@@ -307,11 +307,13 @@ def test_a_study_takes_the_functions_and_records_their_names(tmp_path, reference
                  speed=1500.0, run=run)
     assert (grid["status"].values == 0).all()
     # the point is the default analysis: LTE to round-off (exact solvers, the same shell
-    # matrices), the efficiency of μ = 0.05 exactly as the bundled constant model's
+    # matrices), the efficiency of μ = 0.05 as the bundled constant model's, to round-off
+    # (the same sums over segments and rolls; the plug-in's μ passes through the plug-in
+    # checks as a copy, which may change the order of a sum's last bit: 1e-16 measured)
     assert float(grid["lte_mean"].squeeze()) == pytest.approx(
         float(reference["ltca"]["lte_mean"][0]), rel=1e-12)
-    assert float(grid["efficiency"].squeeze()) == float(
-        reference["friction"]["efficiency_mean"][0])
+    assert float(grid["efficiency"].squeeze()) == pytest.approx(
+        float(reference["friction"]["efficiency_mean"][0]), rel=1e-12)
     back = read_netcdf(write_netcdf(grid, tmp_path / "sweep.nc"))
     assert back.attrs["solver"] == "user_active_set"
 

@@ -11,8 +11,10 @@ torque T the capacity follows in closed form up to the load-dependent factors.
 
 from __future__ import annotations
 
+import dataclasses
 import tomllib
 from pathlib import Path
+from types import MappingProxyType
 
 import pytest
 
@@ -65,6 +67,24 @@ def test_design_torque_prefers_the_rating_table():
     given, torque, why = with_design_torque(case, 123.0)
     assert torque == 123.0 and given.extra["rating"]["design_torque"] == 123.0
     assert "[synthesis] design_torque" in given.extra["rating"]["source"]
+
+
+def test_default_design_torque_is_rated_at_its_minimum_safety():
+    """Without a design torque the capacity is the default, rounded *down* to 4 significant
+    digits: the design torque then rates at S_H ≥ S_H,min and S_F ≥ S_F,min (the rating
+    itself, independent of the rounding), and lies within 1e-3 of the capacity."""
+    from contact.rating import iso10300_rating
+
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+    table = {k: v for k, v in case.extra["rating"].items() if k != "design_torque"}
+    bare = dataclasses.replace(case, extra=MappingProxyType({**case.extra, "rating": table}))
+    rated, torque, _ = with_design_torque(bare)
+    exact = capacity_torque(bare)
+    assert torque <= exact and torque == pytest.approx(exact, rel=1e-3)
+    assert torque == float(f"{torque:.4g}")
+    r = iso10300_rating(rated, [torque], bare.operating.pinion_speed or 1500.0)
+    assert float(r["S_H"].min()) >= float(r["S_Hmin"])
+    assert float(r["S_F"].min()) >= float(r["S_Fmin"])
 
 
 def test_default_rating_table_is_valid_and_sourced():

@@ -583,8 +583,12 @@ class DevelopmentResult:
         if "torque" not in self.basic.operating:
             # the loads the bearing was developed for are the case's operating torques
             # (the seed's 50/250/500 N·m otherwise, unrelated to this design's size)
+            # (to 0.1 N·m, rounded down: the design torque is the rating's long-life
+            # capacity by default, at which S_H = S_H,min exactly; rounded up it would fail
+            # the rating by round-off)
             more["operating"] = dataclasses.replace(
-                case.operating, torque=tuple(round(float(t), 1) for t in self.torque))
+                case.operating, torque=tuple(math.floor(10.0 * float(t)) / 10.0
+                                             for t in self.torque))
         return dataclasses.replace(case, source=case.source.rstrip() + " " + self.summary(),
                                    extra=MappingProxyType(extra), **more)
 

@@ -160,7 +160,7 @@ def with_design_torque(case, torque: float | None = None):
     torque : float — [N·m], optional
         ``[synthesis] design_torque`` of the basic file; default: the case's own
         ``[rating] design_torque`` if it gives one, else :func:`capacity_torque` (rounded
-        to 4 significant digits).
+        down to 4 significant digits, so that the design torque is rated at S ≥ S_min).
 
     Returns
     -------
@@ -179,7 +179,12 @@ def with_design_torque(case, torque: float | None = None):
         return case, float(table["design_torque"]), "[rating] design_torque of the basic file"
     else:
         try:
-            value = float(f"{capacity_torque(case):.4g}")
+            # rounded *down* to 4 significant digits: the capacity is where S = S_min
+            # exactly, and a design torque rounded up would fail its own rating by round-off
+            exact = capacity_torque(case)
+            step = 10.0 ** (math.floor(math.log10(exact)) - 3)
+            value = math.floor(exact / step) * step
+            value = float(f"{value:.4g}")
         except InputError as exc:
             return case, math.nan, f"none: {exc}"
         why = ("the ISO 10300 capacity, the pinion torque at which the long-life safety "
