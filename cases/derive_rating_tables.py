@@ -69,14 +69,14 @@ SEED_RATING = {
 #: the design torque of the seed's 11x41 face-milled pairs [N m, pinion] (its Table 3.1
 #: loads them at 50, 250 and 500 N m; it gives no design torque): 250 N m, the middle load,
 #: rated at long life; 500 N m is then an overload of finite life whose permissible load
-#: cycles the rating states (its long-life capacity at S_H = S_Hmin is ~400 N m)
+#: cycles the rating states (its long-life capacity at S_H = S_Hmin is ~445 N m)
 SEED_DESIGN_TORQUE = {"kolivand2009_fm_11x41": 250.0, "kolivand2009_fm_11x41_reference": 250.0}
 SEED_DESIGN_TORQUE_SOURCE = (
     " Design torque 250 N m (pinion): the middle load of the seed's Table 3.1 (50, 250, "
     "500 N m), rated at long life; the seed gives no design torque, and the rating's "
-    "long-life capacity of this pair at S_H = S_Hmin is about 400 N m, so 500 N m is rated "
-    "as an overload of finite life (the permissible load cycles in /rating, ISO 10300-2/-3 "
-    "cl. 8).")
+    "long-life capacity of this pair at S_H = S_Hmin is about 445 N m "
+    "(contact.rating.capacity), so 500 N m is rated as an overload of finite life (the "
+    "permissible load cycles in /rating, ISO 10300-2/-3 cl. 8).")
 
 #: the Annex F cases: (case, TR sample whose [rating] inputs they take)
 ANNEX_F = {"spiral_bevel_iso23509_s1": 1, "hypoid_iso23509_s2": 2}
