@@ -4,7 +4,8 @@ Run from the repository root::
 
     python cases/derive_rating_tables.py
 
-``ltca run`` rates every case beside its loaded contact (contact.rating, docs/rating.md);
+``ltca run`` rates every case beside its loaded contact (contact.load_capacity.iso10300,
+docs/rating.md);
 the rating needs the pair's ISO 23509 basic design data (``[design]``, from which it
 computes the blank) and its rating inputs (``[rating]``). This script appends both
 tables, after a marker comment, to each bundled case below (replacing what an earlier run
@@ -48,7 +49,8 @@ MARKER = ("# ISO 10300 rating tables, appended by `python cases/derive_rating_ta
           "(docs/rating.md); rerun it after regenerating this case.")
 
 #: the rating inputs of the seed's pairs (Kolivand 2009 gives none): each value stated
-#: with its source; the fields left out take RatingInputs' defaults (contact.rating.inputs:
+#: with its source; the fields left out take RatingInputs' defaults
+#: (contact.load_capacity.iso10300.inputs:
 #: pattern checked under a light test load, flank/root Rz 8/16 um as the TR's lapped
 #: samples, material quality MQ, long life, S_Hmin 1.0, S_Fmin 1.3, nu40 and the edge radii
 #: from the case's oil and blades)
@@ -75,8 +77,8 @@ SEED_DESIGN_TORQUE_SOURCE = (
     " Design torque 250 N m (pinion): the middle load of the seed's Table 3.1 (50, 250, "
     "500 N m), rated at long life; the seed gives no design torque, and the rating's "
     "long-life capacity of this pair at S_H = S_Hmin is about 445 N m "
-    "(contact.rating.capacity), so 500 N m is rated as an overload of finite life (the "
-    "permissible load cycles in /rating, ISO 10300-2/-3 cl. 8).")
+    "(contact.load_capacity.iso10300.capacity), so 500 N m is rated as an overload of "
+    "finite life (the permissible load cycles in /rating, ISO 10300-2/-3 cl. 8).")
 
 #: the Annex F cases: (case, TR sample whose [rating] inputs they take)
 ANNEX_F = {"spiral_bevel_iso23509_s1": 1, "hypoid_iso23509_s2": 2}

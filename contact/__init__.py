@@ -98,7 +98,7 @@ _LAZY = {
     # (the optimiser itself is contact.optimize.optimize: a name ``optimize`` here would
     # hide the subpackage)
     **dict.fromkeys(("OptimizeProblem", "develop", "DevelopmentTargets"), "contact.optimize"),
-    "iso10300_rating": "contact.rating",
+    "iso10300_rating": "contact.load_capacity.iso10300",
     "write_report": "contact.plots.report",
     **dict.fromkeys(("read_netcdf", "write_netcdf"), "geometry.core.io"),
     "run_analysis": "contact.pipeline",

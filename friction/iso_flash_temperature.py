@@ -9,7 +9,8 @@ sharing factor, and one mean friction coefficient for the whole mesh. ISO/TS 103
 (bevel and hypoid gears) applies it through virtual cylindrical gears; its own
 definitions could not be sourced, so this module applies ISO/TS 6336-20's method to the
 virtual cylindrical gears of ISO 10300-1 Annex A (the ``/rating`` group,
-:mod:`contact.rating`), as issue 52 allows, and says so on every output. The comparison
+:mod:`contact.load_capacity.iso10300`), as issue 52 allows, and says so on every output. The
+comparison
 of the two on the same case is in docs/scuffing_micropitting.md.
 
 Along the path of contact of the virtual pair (transverse section; positions g from the
@@ -402,7 +403,7 @@ def path_of_contact(tip_diameter: ArrayLike, base_diameter: ArrayLike,
 def _rating_value(rating: xr.Dataset, name: str) -> np.ndarray:
     if name not in rating:
         raise InputError(f"rating: the dataset has no {name!r} (an ISO 10300 /rating group, "
-                         "contact.rating, is needed)")
+                         "contact.load_capacity.iso10300, is needed)")
     return np.asarray(rating[name].values, dtype=float)
 
 
@@ -423,7 +424,8 @@ def iso_flash_temperature_method(
     Parameters
     ----------
     rating : xarray.Dataset
-        An ISO 10300 ``/rating`` dataset (:func:`contact.rating.iso10300_rating`): the
+        An ISO 10300 ``/rating`` dataset (:func:`contact.load_capacity.iso10300.iso10300_rating`):
+        the
         virtual gears ``d_v``, ``d_va``, ``d_vb``, ``alpha_vet``, ``beta_v``, ``beta_vb``,
         ``p_vet``, ``eps_va``, ``eps_vb``, ``b_veff``, the speeds ``v_mt``, ``v_g``, the
         loads ``F_vmt`` and factors ``K_A``, ``K_v``, ``K_Hbeta``, ``K_Halpha`` over
@@ -566,7 +568,8 @@ def _beta_m1(rating: xr.Dataset) -> float:
         return float(json.loads(rating.attrs["gear_data"])["beta_m1"])
     except (KeyError, TypeError, ValueError) as exc:
         raise InputError("rating: the dataset's attribute 'gear_data' must hold the pair's "
-                         f"beta_m1 [rad] (contact.rating), got an error: {exc}") from None
+                         f"beta_m1 [rad] (contact.load_capacity.iso10300), got an error: "
+                         f"{exc}") from None
 
 
 def _iso_scuffing(oil, eta: float, t_oil: float, cond: ScuffingConditions,

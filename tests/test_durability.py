@@ -1,4 +1,5 @@
-"""Durability arithmetic (contact.durability): S–N curves, Miner's rule, damage and life.
+"""Durability arithmetic (contact.load_capacity.durability): S–N curves, Miner's rule, damage
+and life.
 
 All cheap (no analysis: arrays of a few numbers). Every check is against an identity the
 equations must satisfy or a hand calculation written out in the test.
@@ -11,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from contact.durability import (
+from contact.load_capacity.durability import (
     SNCurve,
     cumulative_damage,
     life_at_first_failure,
@@ -130,7 +131,7 @@ def test_rated_curve_and_one_curve_per_bin():
     static stress without those of them that are 1 there (ISO 6336-2: Z_L Z_v Z_R = 1 for
     the static stress) — both ends by hand; cumulative_damage takes one curve per bin and
     equals each bin's own damage (identity), and refuses a count that is not one per bin."""
-    from contact.durability import SNCurve, cumulative_damage
+    from contact.load_capacity.durability import SNCurve, cumulative_damage
     from geometry.core.errors import InputError
 
     bare = SNCurve(1500.0, 5e7, 1e5, 1.6)

@@ -16,7 +16,7 @@ import pytest
 import xarray as xr
 
 from contact.catalogue import resolve_case
-from contact.durability import sn_curves
+from contact.load_capacity.durability import sn_curves
 from contact.ltca import LTCAOptions
 from contact.study.duty_cycle import run_duty_cycle
 from contact.study.duty_cycle_inputs import (
@@ -171,7 +171,7 @@ def test_energy_balance_per_bin(one_bin):
 def _rated(case, torque: float, speed: float, member: int):
     """The rating's influence factors of one bin, from ISO 10300 at its torque and speed:
     (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp, Z_L Z_v Z_R, Y_δ Y_R Y_X, Y_R Y_X) of ``member``."""
-    from contact.rating import iso10300_rating
+    from contact.load_capacity.iso10300 import iso10300_rating
 
     r = iso10300_rating(case, [torque], speed).isel(torque=0, member=member)
     z = float(r["Z_L"] * r["Z_speed"] * r["Z_R"])

@@ -19,8 +19,9 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
 
       commands, cli                      (the ``ltca`` command)
         └── plots (figures, report)
-              └── study, optimize, wear, durability, rating  (studies and loops over
-                                                              analyses; the ISO rating)
+              └── study, optimize, wear, load_capacity  (studies and loops over
+                                                         analyses; rating, durability,
+                                                         scuffing, micropitting)
                     └── catalogue, pipeline  (the bundled cases; one whole analysis)
 
 * ``geometry.core`` (the toolkit's low layer) imports nothing else of the toolkit;
@@ -56,9 +57,8 @@ LAYER_DEPENDS = {
 APPLICATION_LEVELS = (
     ("catalogue, pipeline", {"contact", "contact.catalogue",
                              "contact.pipeline"}),
-    ("study, optimize, wear, durability, rating", {"contact.study", "contact.optimize",
-                                                   "contact.wear", "contact.durability",
-                                                   "contact.rating"}),
+    ("study, optimize, wear, load capacity", {"contact.study", "contact.optimize",
+                                              "contact.wear", "contact.load_capacity"}),
     ("plots, report", {"contact.plots"}),
     ("commands, cli", {"contact.commands", "contact.cli", "contact.__main__"}),
 )

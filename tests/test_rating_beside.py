@@ -1,6 +1,7 @@
 """The ISO 10300 rating beside the loaded contact (issue 52 item 2).
 
-``ltca run`` rates the case (contact.rating.analysis_rating) at its torques and speed,
+``ltca run`` rates the case (contact.load_capacity.iso10300.analysis_rating) at its torques
+and speed,
 stores ``/rating`` and prints the rating's stresses beside the LTCA's peaks
 (rating_beside_ltca); the HTML report shows the same table; ``ltca duty-cycle`` prints its
 local safety factors beside the rating's per bin (bin_ratings). A case without the tables
@@ -22,7 +23,12 @@ import xarray as xr
 
 from contact.catalogue import resolve_case
 from contact.cli import main
-from contact.rating import analysis_rating, bin_ratings, iso10300_rating, rating_beside_ltca
+from contact.load_capacity.iso10300 import (
+    analysis_rating,
+    bin_ratings,
+    iso10300_rating,
+    rating_beside_ltca,
+)
 from geometry.case import case_from_dict
 from geometry.core.errors import InputError
 

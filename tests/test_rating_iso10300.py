@@ -1,17 +1,20 @@
-"""ISO 10300 Method B1 rating (contact.rating) against ISO/TR 10300-30:2024's three samples.
+"""ISO 10300 Method B1 rating (contact.load_capacity.iso10300) against ISO/TR 10300-30:2024's
+three samples.
 
 The reference is tests/data/iso10300_30_samples.toml: the TR's printed gear data, rating
 inputs and every intermediate and final value of its samples 1-3 that the public
 transcription gives (its header says where from). Two paths are checked:
 
-* :func:`contact.rating.rate_pair` fed the TR's own printed gear data: every published
+* :func:`contact.load_capacity.iso10300.rate_pair` fed the TR's own printed gear data: every
+published
   intermediate quantity within the TR's printed precision — one unit of its last printed
   digit (the TR's own rounding of the value, half a unit, and of the numbers it computed
   it from, half a unit) plus the effect of the rounding of the printed gear data we start
   from (each rounded input moved by half a unit of its last digit, the changes added: a
   worst-case linear bound, computed here); the stresses, permissible stresses and safety
   factors within 0.5 % (issue 52);
-* :func:`contact.rating.iso10300_rating` on the bundled cases ``iso10300_30_sample1..3``,
+* :func:`contact.load_capacity.iso10300.iso10300_rating` on the bundled cases
+  ``iso10300_30_sample1..3``,
   whose geometry is the toolkit's own ISO 23509 blank of the same basic data (not the TR's
   printed gear data): the stresses, permissible stresses and safety factors within 0.5 %.
 
@@ -35,9 +38,9 @@ import pytest
 import xarray as xr
 
 from contact.cli import main
-from contact.rating import GearData, RatingInputs, iso10300_rating, rate_pair
-from contact.rating.materials import rating_material
-from contact.rating.virtual_gears import contact_line_ends
+from contact.load_capacity.iso10300 import GearData, RatingInputs, iso10300_rating, rate_pair
+from contact.load_capacity.iso10300.materials import rating_material
+from contact.load_capacity.iso10300.virtual_gears import contact_line_ends
 from geometry.core.errors import InputError
 from geometry.core.materials import DEFAULT_MATERIAL
 
@@ -215,7 +218,7 @@ def test_sample3_case_has_the_published_pitch_cone(case_runs):
     R_m2 82.168, R_e2 95.168, b1 31.139, δ_a1 24.765 (Annex F, printed to 0.001) and the
     TR's δ1 24.763, d_v 56.448 / 325.506 (to its rounding of δ1, 0.002°, and 0.05 %)."""
     from contact.catalogue import resolve_case
-    from contact.rating.rating import case_gear_data
+    from contact.load_capacity.iso10300.rating import case_gear_data
 
     ds = case_runs[3].isel(torque=0)
     _, blank = case_gear_data(resolve_case("iso10300_30_sample3"))
@@ -233,7 +236,7 @@ def test_sample3_case_has_the_published_pitch_cone(case_runs):
 
 def _case_without_delta2():
     from contact.catalogue import resolve_case
-    from contact.rating.rating import case_gear_data, case_rating_inputs
+    from contact.load_capacity.iso10300.rating import case_gear_data, case_rating_inputs
     from geometry.case import case_from_dict
 
     case = resolve_case("iso10300_30_sample3")
@@ -253,7 +256,7 @@ def test_sample3_with_the_tr_dynamic_factor_reproduces_its_stresses():
     σ_H 1609.2 and σ_F 568.9 / 590.5 N/mm² directly, within 0.5 %: the whole difference of
     the Method B rating (σ_H +2.4 %, σ_F +4.9 %) is the dynamic factor."""
     from contact.catalogue import resolve_case
-    from contact.rating.rating import case_rating_inputs
+    from contact.load_capacity.iso10300.rating import case_rating_inputs
 
     inputs = dataclasses.replace(case_rating_inputs(resolve_case("iso10300_30_sample3"), None),
                                  dynamic_factor=1.0)
@@ -326,7 +329,8 @@ def test_sample3_middle_contact_line_is_clipped_at_the_face_edge(tr_runs):
     (tan γ + tan β_vb), gives x2 = −2.094 mm, beyond the face edge x = 0: the whole line
     l_b0 = 25.620 mm, and l_bm = 23.228 mm with the transcription's correction
     (+8.7 %, σ_H0 +4 %), 23.623 mm with ours. The TR clips the line at the edge: so does
-    contact.rating (the line inside the zone of action, l_b0 = 23.183 mm), which gives its
+    contact.load_capacity.iso10300 (the line inside the zone of action, l_b0 = 23.183 mm), which
+    gives its
     x2 = 0 and l_bm = 21.376 mm."""
     ds = tr_runs[3][0].isel(torque=0)
     f, bvb, gam = float(ds["f"][1]), float(ds["beta_vb"]), float(ds["gamma"])
@@ -354,7 +358,8 @@ def test_sample2_load_sharing_factor_follows_from_clipped_lines(tr_runs):
     """Sample 2 prints Z_LS = 0.703, which the transcription calls a limitation of its
     reading (unclipped lines, l_b = l_b0 [1 − √((f/f_max)² + k² (1 − (f/f_max)²))],
     k = 1 − √(b_v,eff/b_v): 0.776). With the tip and root lines clipped to the zone of
-    action and l_b = l_b0 [1 − k √(1 − (f/f_max)²)] (contact.rating.virtual_gears), the
+    action and l_b = l_b0 [1 − k √(1 − (f/f_max)²)] (contact.load_capacity.iso10300.virtual_gears),
+    the
     TR's 0.703 follows; the same reading gives samples 1 and 3 (0.935, 0.961)."""
     ds = tr_runs[2][0].isel(torque=0)
     bvb, gam = float(ds["beta_vb"]), float(ds["gamma"])
@@ -539,7 +544,7 @@ def test_static_range_takes_the_film_factors_as_one():
     log N_L, half the exponent; the long-life permissible cycles solve σ_HP(N) = S_min σ_H
     on that curve."""
     from contact.catalogue import resolve_case
-    from contact.rating.rating import case_rating_inputs
+    from contact.load_capacity.iso10300.rating import case_rating_inputs
 
     case = resolve_case("iso10300_30_sample1")
     inputs = case_rating_inputs(case, None)
@@ -579,7 +584,7 @@ def test_dynamic_factor_warning_names_the_loads_in_the_main_resonance_range(capl
     light load raises its N."""
     import logging
 
-    with caplog.at_level(logging.WARNING, logger="contact.rating.factors"):
+    with caplog.at_level(logging.WARNING, logger="contact.load_capacity.iso10300.factors"):
         ds = iso10300_rating("iso10300_30_sample1", torque=[5.0, 50.0, 300.0], speed=30000.0)
     n = ds["N"].values
     assert n[0] > 1.5 and 0.75 < n[1] <= 1.25 and 0.75 < n[2] <= 1.25
@@ -595,7 +600,7 @@ def test_one_roughness_for_the_rating_and_the_ltca():
     (Gaussian heights), 4.79 Rq — Rz 3.83 µm for the default case's Rq 0.8 µm, not the
     former default 8 µm; a table that gives it keeps it (the TR's samples: Rz 8, 3)."""
     from contact.catalogue import resolve_case
-    from contact.rating.rating import RZ_PER_RQ, case_rating_inputs
+    from contact.load_capacity.iso10300.rating import RZ_PER_RQ, case_rating_inputs
 
     assert RZ_PER_RQ == pytest.approx(6.0 * math.sqrt(2.0 / math.pi), rel=1e-15)
     case = resolve_case(None)
@@ -612,7 +617,7 @@ def test_capacity_is_the_long_life_one_whatever_the_load_cycles():
     Z_v Z_R go to 1 towards the static end), so the capacity rates without them (1e-9: the
     same root search)."""
     from contact.catalogue import resolve_case
-    from contact.rating.capacity import capacity_torque
+    from contact.load_capacity.iso10300.capacity import capacity_torque
 
     case = resolve_case("iso10300_30_sample1")
     table = dict(case.extra["rating"])

@@ -448,7 +448,7 @@ def test_rating_a_basic_design_file_says_what_it_is(capsys):
 
 def test_a_spiral_bevel_rating_says_why_v_sum_vert_is_nan():
     from contact.catalogue import resolve_case
-    from contact.rating import iso10300_rating
+    from contact.load_capacity.iso10300 import iso10300_rating
 
     case = resolve_case("iso10300_30_sample1")
     assert case.pair.offset == 0.0                     # a spiral bevel pair
@@ -501,7 +501,7 @@ def test_ehl_never_prints_a_negative_film(tmp_path, capsys, monkeypatch):
 ])
 def test_the_rating_api_applies_the_table_of_bounds(torque, speed, pattern):
     # the API as the command: 10^12 rpm printed S_H 1.688 before (issue 64)
-    from contact.rating import iso10300_rating
+    from contact.load_capacity.iso10300 import iso10300_rating
 
     with pytest.raises(InputError, match=pattern):
         iso10300_rating("iso10300_30_sample1", torque, speed)

@@ -248,7 +248,7 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     peak bin / its largest fillet stress, to round-off)."""
     from contact.compliance.fe import CACHE_ENV, cache_key, cache_path
     from contact.compliance.fe.cache import write_cache_entry
-    from contact.durability import peak_fillet_stress, sn_curves
+    from contact.load_capacity.durability import peak_fillet_stress, sn_curves
     from contact.pipeline import run_analysis
     from contact.study import StudyRun
     from contact.study.duty_cycle import run_duty_cycle
@@ -271,7 +271,7 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     # the allowable at long life is the ISO 10300 rating's sigma_FP (Y_NT = 1 without
     # load cycles) of the peak bin's torque and speed (issue 62: the duty cycle on the
     # rating's allowables), not the material's bare sigma_FE
-    from contact.rating import iso10300_rating
+    from contact.load_capacity.iso10300 import iso10300_rating
 
     sigma_FP = iso10300_rating(case, [250.0], 1000.0)["sigma_FP"]
     for member in ("pinion", "gear"):

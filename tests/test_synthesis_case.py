@@ -3,7 +3,8 @@
 design torque, provenance naming the user's basic file (also in the report of its run),
 progress lines off a terminal.
 
-The design torque's default is the ISO 10300 capacity (:mod:`contact.rating.capacity`);
+The design torque's default is the ISO 10300 capacity
+(:mod:`contact.load_capacity.iso10300.capacity`);
 it is checked against the structure of ISO 10300-2/-3 rather than against itself:
 σ_H = σ_H0 √(K_A K_v K_Hβ K_Hα) with σ_H0 ∝ √T, and σ_F ∝ T K_v K_Fβ K_Fα, so from any
 torque T the capacity follows in closed form up to the load-dependent factors.
@@ -19,9 +20,13 @@ from types import MappingProxyType
 import pytest
 
 from contact.cli import main as ltca
-from contact.rating.capacity import capacity_torque, design_torque, with_design_torque
-from contact.rating.inputs import RatingInputs
-from contact.rating.rating import iso10300_rating
+from contact.load_capacity.iso10300.capacity import (
+    capacity_torque,
+    design_torque,
+    with_design_torque,
+)
+from contact.load_capacity.iso10300.inputs import RatingInputs
+from contact.load_capacity.iso10300.rating import iso10300_rating
 from geometry.case import load_case
 from geometry.synthesis.basic_design import DEFAULT_RATING, load_basic
 
@@ -73,7 +78,7 @@ def test_default_design_torque_is_rated_at_its_minimum_safety():
     """Without a design torque the capacity is the default, rounded *down* to 4 significant
     digits: the design torque then rates at S_H ≥ S_H,min and S_F ≥ S_F,min (the rating
     itself, independent of the rounding), and lies within 1e-3 of the capacity."""
-    from contact.rating import iso10300_rating
+    from contact.load_capacity.iso10300 import iso10300_rating
 
     case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
     table = {k: v for k, v in case.extra["rating"].items() if k != "design_torque"}

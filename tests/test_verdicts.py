@@ -307,7 +307,7 @@ def test_permissible_cycles_inverts_the_life_factor():
     """The load cycles at which a required life factor is reached (the rating's finite
     life above the design torque) give that factor back through ISO 10300-2 cl. 8's
     S–N curve (an identity, to round-off), and the curve's ends map to inf and 0."""
-    from contact.rating.pitting import life_factor, permissible_cycles
+    from contact.load_capacity.iso10300.pitting import life_factor, permissible_cycles
 
     m = _material()["sn_contact"]
     curve = (m["knee_cycles"], m["static_cycles"], m["static_life_factor"])

@@ -1,4 +1,5 @@
-"""``ltca rate``: the ISO 10300 Method B1 load capacity rating of a case (contact.rating)."""
+"""``ltca rate``: the load capacity rating of a case by a method of the registry
+(:mod:`contact.load_capacity`; default ISO 10300 Method B1)."""
 
 from __future__ import annotations
 
@@ -19,10 +20,10 @@ def register(sub) -> None:
         "rate",
         help="ISO 10300 Method B1 rating: contact and root stresses, permissible stresses "
         "and safety factors",
-        description="Rate the case's pair by ISO 10300-1/-2/-3 Method B1 (contact.rating, "
-        "docs/rating.md): the virtual cylindrical gears of its ISO 23509 blank (the "
-        "case's [design] table), the load factors, the contact stress against pitting "
-        "and the tooth root stress of both members, with the permissible stresses and "
+        description="Rate the case's pair by ISO 10300-1/-2/-3 Method B1 "
+        "(contact.load_capacity.iso10300, docs/rating.md): the virtual cylindrical gears "
+        "of its ISO 23509 blank (the case's [design] table), the load factors, the contact "
+        "stress against pitting and the tooth root stress of both members, with the permissible stresses and "
         "safety factors, printed in the layout of ISO/TR 10300-30's result tables. The "
         "rating inputs (application factor, pitch deviation, mounting, oil, roughness, material "
         "quality, life, minimum safety factors) are the case's [rating] table; the "
@@ -110,7 +111,7 @@ def run(args: argparse.Namespace) -> int:
 
     from contact.catalogue import resolve_case
     from contact.commands.output_paths import check_output_file
-    from contact.rating import iso10300_rating
+    from contact.load_capacity.iso10300 import iso10300_rating
     from geometry.core.io import write_netcdf
 
     if args.output:

@@ -340,12 +340,12 @@ def check_certified(tree, path) -> None:
 
 def run_rating(args: argparse.Namespace, case):
     """The ISO 10300 rating of ``ltca run``'s case at its torques, speed and flank
-    (:func:`contact.rating.analysis_rating`), or None and the line that says why not
+    (:func:`contact.load_capacity.iso10300.analysis_rating`), or None and the line that says why not
     (``--no-rating``, no ``[design]`` or ``[rating]`` table, no speed); a bad table is
     refused (InputError)."""
     if not args.rating:
         return None, "ISO 10300 rating not computed (--no-rating)"
-    from contact.rating import analysis_rating
+    from contact.load_capacity.iso10300 import analysis_rating
 
     torque = case.operating.torque if args.torque is None else args.torque
     speed = case.operating.pinion_speed if args.speed is None else args.speed
@@ -355,7 +355,8 @@ def run_rating(args: argparse.Namespace, case):
 def rating_lines(tree, why: str = "") -> list[str]:
     """The lines ``ltca run`` prints on the ISO 10300 rating: per torque and member the
     rating's σ_H0, σ_H beside the LTCA's peak flank pressure, σ_F0, σ_F beside the FE peak
-    root stress, with their ratios (:func:`contact.rating.rating_beside_ltca`), and the
+    root stress, with their ratios (:func:`contact.load_capacity.iso10300.rating_beside_ltca`), and
+    the
     safety factors; or the one line ``why`` for an analysis without ``/rating``.
 
     Parameters
@@ -373,7 +374,7 @@ def rating_lines(tree, why: str = "") -> list[str]:
         return [why] if why else []
     from tabulate import tabulate
 
-    from contact.rating import rating_beside_ltca
+    from contact.load_capacity.iso10300 import rating_beside_ltca
 
     ds = tree["rating"].to_dataset()
     side = rating_beside_ltca(ds, tree["ltca"].to_dataset())

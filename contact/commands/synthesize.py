@@ -105,8 +105,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
     import tomllib
 
     from contact.commands.step_lines import StepLines
-    from contact.rating.capacity import with_design_torque
-    from contact.rating.inputs import RatingInputs
+    from contact.load_capacity.iso10300.capacity import with_design_torque
+    from contact.load_capacity.iso10300.inputs import RatingInputs
     from geometry.case import case_from_dict
     from geometry.synthesis.basic_design import load_basic
     from geometry.synthesis.case_synthesis import SYNTHESIS_STEPS, synthesize

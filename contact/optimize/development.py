@@ -418,10 +418,11 @@ def design_torque_of(basic: BasicDesign, case: Case) -> tuple[float, str]:
     ``[synthesis] design_torque`` of the basic file if given, else the synthesised case's
     ``[rating] design_torque``, else the ISO 10300 capacity of the case (the torque at
     which the long-life safety reaches S_H,min or S_F,min;
-    :func:`contact.rating.capacity.with_design_torque`); where the rating cannot give one,
+    :func:`contact.load_capacity.iso10300.capacity.with_design_torque`); where the rating
+    cannot give one,
     the largest torque of the case's ``[operating]`` table.
     """
-    from contact.rating.capacity import with_design_torque
+    from contact.load_capacity.iso10300.capacity import with_design_torque
 
     _, torque, why = with_design_torque(case, basic.options.design_torque)
     if math.isfinite(torque) and torque > 0:
@@ -435,7 +436,7 @@ def static_strength(tree) -> float:
     analysis (its ``/ltca`` attributes ``material_pinion``, ``material_gear``) at the
     verdict's grade (:data:`contact.study.verdicts.GRADE`, ISO 6336-5; the S–N curve's
     life factor at its static end, ISO 6336-2); inf where the tree names no material."""
-    from contact.durability import sn_curves
+    from contact.load_capacity.durability import sn_curves
     from contact.study.verdicts import GRADE
 
     a = tree["/ltca"].attrs

@@ -313,12 +313,12 @@ def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None,
 def _rating(tree: xr.DataTree, lt: xr.Dataset | None) -> dict | None:
     """The table "Standard rating beside the LTCA": per torque and member the ISO 10300
     σ_H0, σ_H, the LTCA's peak flank pressure and its ratio to σ_H, σ_F0, σ_F, the FE peak
-    root stress and its ratio to σ_F, the safety factors (:func:`contact.rating.
+    root stress and its ratio to σ_F, the safety factors (:func:`contact.load_capacity.iso10300.
     rating_beside_ltca`); None where the file has no ``/rating``."""
     ra = _group(tree, "rating")
     if ra is None or lt is None:
         return None
-    from contact.rating import rating_beside_ltca
+    from contact.load_capacity.iso10300 import rating_beside_ltca
 
     side = rating_beside_ltca(ra, lt)
     keys = (("sigma_H0", 0), ("sigma_H", 0), ("pressure_max_flank", 0),

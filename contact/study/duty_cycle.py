@@ -7,7 +7,7 @@ efficiency stage at the bin's speed and oil temperature; the bins run on the stu
 (:func:`contact.study.engine.run_tasks`: Dask, one process per core, or
 ``"synchronous"``), stream to ``OUTPUT.parts/`` as they finish and resume after a kill
 (:class:`contact.study.store.ResultStore`). From the bins' stresses the durability code
-(:mod:`contact.durability`) sums Miner's damage per flank point and per fillet point.
+(:mod:`contact.load_capacity.durability`) sums Miner's damage per flank point and per fillet point.
 
 Public names
 ------------
@@ -33,7 +33,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from contact.durability import (
+from contact.load_capacity.durability import (
     cumulative_damage,
     life_at_first_failure,
     member_cycles,
@@ -299,8 +299,10 @@ def _cycle(duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
 
 def _rated_curves(curve, rated: xr.Dataset | None, kind: str, k: int):
     """The S-N curve of each bin on the rating's allowables (``rated``: the bins'
-    :func:`contact.rating.bin_ratings`; ``kind`` contact or bending, member index ``k``):
-    :meth:`contact.durability.SNCurve.rated` with the bin's long-life influence factors
+    :func:`contact.load_capacity.iso10300.bin_ratings`; ``kind`` contact or bending, member index
+    ``k``):
+    :meth:`contact.load_capacity.durability.SNCurve.rated` with the bin's long-life influence
+    factors
     (Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp; Y_δ,relT Y_R,relT Y_X), those that are 1 for the static
     stress taken out at the static end (ISO 6336-2/-3); the material's bare curve, one for
     every bin, without a rating."""
@@ -367,9 +369,9 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset,
 
 
 def _bin_ratings(shared: DutyInputs) -> tuple[xr.Dataset | None, str]:
-    """The ISO 10300 rating of every bin (:func:`contact.rating.bin_ratings`), or None and
-    why (a bad [rating] table does not lose the bins' work: it is said)."""
-    from contact.rating import bin_ratings
+    """The ISO 10300 rating of every bin (:func:`contact.load_capacity.iso10300.bin_ratings`),
+    or None and why (a bad [rating] table does not lose the bins' work: it is said)."""
+    from contact.load_capacity.iso10300 import bin_ratings
 
     try:
         return bin_ratings(shared.case, shared.duty.torque, shared.duty.speed, shared.flank)
@@ -382,7 +384,8 @@ def _iso_rating(shared: DutyInputs, ds: xr.Dataset, members: list[str],
                 ) -> tuple[dict[str, Any], str]:
     """Per bin the local safety factors (σ_Hlim over the bin's peak flank pressure, σ_FE
     over its peak fillet stress) beside the ISO 10300 rating's S_H, S_F at the bin's torque
-    and speed (:func:`contact.rating.bin_ratings`), and the line that says where the rating
+    and speed (:func:`contact.load_capacity.iso10300.bin_ratings`), and the line that says where
+    the rating
     comes from or why it is absent (a bad [rating] table does not lose the bins' work: it
     is said there)."""
     duty, case = shared.duty, shared.case
@@ -550,7 +553,7 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
             "Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp and sigma_FE Y_delta,relT Y_R,relT Y_X of the "
             "bin's speed at the knee (sigma_HP/Z_NT, sigma_FP/Y_NT), Z_L Z_v Z_R and "
             "Y_R,relT Y_X taken as 1 at the static end (ISO 6336-2/-3), the life factor "
-            "Z_NT, Y_NT on the line between (contact.durability.SNCurve.rated)"
+            "Z_NT, Y_NT on the line between (contact.load_capacity.durability.SNCurve.rated)"
             if rated[0] is not None else
             "the material's bare sigma_Hlim and sigma_FE (no ISO 10300 rating: "
             + rated[1] + ")"),
@@ -608,7 +611,8 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
     Notes
     -----
     Damage by Miner's rule on the ISO 6336-2/-3 S–N curves of the members' material
-    (:mod:`contact.durability`), one load cycle per tooth mesh; local stresses from the
+    (:mod:`contact.load_capacity.durability`), one load cycle per tooth mesh; local stresses from
+    the
     LTCA (peak Hertz pressure of the contact grid, peak tensile fillet stress).
     """
     if not isinstance(duty, DutyCycle):

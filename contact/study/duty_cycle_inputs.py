@@ -42,7 +42,7 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import PchipInterpolator
 
-from contact.durability.sn_curve import MINER_RULES
+from contact.load_capacity.durability.sn_curve import MINER_RULES
 from geometry.core.bounds import check_bound
 from geometry.core.errors import InputError
 from geometry.core.toml_files import read_toml
@@ -163,7 +163,7 @@ class DutyCycle:
     grade : str
         ISO 6336-5 quality grade (``ML``, ``MQ``, ``ME``).
     miner_rule : str
-        :data:`contact.durability.sn_curve.MINER_RULES`.
+        :data:`contact.load_capacity.durability.sn_curve.MINER_RULES`.
     name : str
     illustrative : bool
         True for the bundled example (said in the output).

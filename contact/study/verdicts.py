@@ -25,7 +25,7 @@ present).
   the case and misalignment the tree records).
 * ``flank_pressure`` : the flank peak pressure against the allowable contact stress
   number σ_Hlim of the weaker member's material at ISO 6336-5 grade :data:`GRADE`
-  (:func:`contact.durability.sn_curves`, ``geometry/core/data/materials.toml``):
+  (:func:`contact.load_capacity.durability.sn_curves`, ``geometry/core/data/materials.toml``):
   attention above σ_Hlim (beyond the endurance limit: a finite life, which
   ``ltca duty-cycle`` counts), fail above the static strength σ_Hlim·Z_NT,static (the
   S–N curve's life factor at its static end, ISO 6336-2: no life at all).
@@ -219,7 +219,7 @@ def _group(tree: xr.DataTree, name: str) -> xr.Dataset | None:
 
 
 def _flank_pressure(lt: xr.Dataset) -> list[Finding]:
-    from contact.durability import sn_curves
+    from contact.load_capacity.durability import sn_curves
 
     names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
     if "pressure_max_flank" not in lt or not names:

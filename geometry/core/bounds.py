@@ -2,7 +2,8 @@
 
 Every command and the public API (``ltca run``, ``rate``, ``efficiency-map``,
 ``duty-cycle``, ``ehl``; :func:`contact.run_analysis`,
-:class:`friction.operating.OperatingConditions`, :func:`contact.rating.iso10300_rating`,
+:class:`friction.operating.OperatingConditions`,
+:func:`contact.load_capacity.iso10300.iso10300_rating`,
 :func:`contact.study.efficiency.efficiency_map`) checks a speed, torque, roughness,
 temperature or pressure against the same bound here, so that a value no gear pair runs at
 — a typing slip of orders of magnitude (``--speed 1e12``, ``--roughness 100`` µm,

@@ -77,7 +77,8 @@ TARGETS: dict[str, tuple[str, Callable[[BlankGeometry], float]]] = {
     "dm2": ("mm", lambda g: g.gear.dm),
 }
 #: the ``[rating]`` table of a synthesised case whose basic file gives none (ISO 10300
-#: inputs, :class:`contact.rating.inputs.RatingInputs`; its ``source`` states each value)
+#: inputs, :class:`contact.load_capacity.iso10300.inputs.RatingInputs`; its ``source`` states each
+#: value)
 DEFAULT_RATING: Mapping[str, Any] = MappingProxyType({
     "application_factor": 1.0,
     "mounting": "one",
@@ -188,7 +189,8 @@ class SynthesisOptions:
         contact beyond a small share, no plastic edge; ``docs/synthesis.md``), in
         (0, 1e6]. Default None: the pinion torque at which the ISO 10300 pitting safety
         factor S_H of the synthesised case's ``[rating]`` inputs equals 1
-        (:func:`contact.rating.capacity.design_torque`) — the largest torque the flank
+        (:func:`contact.load_capacity.iso10300.capacity.design_torque`) — the largest torque the
+        flank
         carries at long life, so the torque the bearing must hold without edge contact.
     concave, convex : FlankOptions
         Local-synthesis prescriptions per pinion flank.
@@ -268,7 +270,8 @@ class BasicDesign:
         for a design built from a mapping.
     rating : dict
         The file's ``[rating]`` table (ISO 10300 inputs, schema of
-        :class:`contact.rating.inputs.RatingInputs`), copied into the synthesised case
+        :class:`contact.load_capacity.iso10300.inputs.RatingInputs`), copied into the synthesised
+        case
         (else :data:`DEFAULT_RATING`);
         validated by ``ltca synthesize``, not here; empty if absent.
     development : dict

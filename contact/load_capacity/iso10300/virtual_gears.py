@@ -527,7 +527,7 @@ def virtual_gears(data, side: str = "drive", effective_width_ratio: float = 0.85
 
     Parameters
     ----------
-    data : contact.rating.inputs.GearData
+    data : contact.load_capacity.iso10300.inputs.GearData
         The pair's ISO 10300 geometry (from its ISO 23509 blank).
     side : {"drive", "coast"}
         The rated flank in ISO 23509's naming (drive: the pinion's concave flank).

@@ -5,7 +5,8 @@ flank point, the peak contact pressure of a tooth mesh (``/ltca/pressure_envelop
 envelope over the mesh cycle on the gear's contact grid) and, per fillet point, the peak
 tensile fillet stress of a tooth mesh (``/ltca/root_stress`` where the analysis has it).
 Every point of a tooth sees one such stress cycle each time its tooth meshes: once per
-revolution of its member. Miner's rule sums the bins' n / N(σ) (:mod:`contact.durability.
+revolution of its member. Miner's rule sums the bins' n / N(σ)
+(:mod:`contact.load_capacity.durability.
 sn_curve`); damage grows linearly with the duration of the spectrum, so the life [h] is
 the spectrum's duration divided by the largest damage, at the point that has it.
 
@@ -24,7 +25,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from contact.durability.sn_curve import SNCurve
+from contact.load_capacity.durability.sn_curve import SNCurve
 from geometry.core.errors import InputError
 
 __all__ = ["cumulative_damage", "life_at_first_failure", "member_cycles",
@@ -127,7 +128,7 @@ def cumulative_damage(stress: np.ndarray, cycles: np.ndarray,
         One curve for every bin, or one per bin (the rating's allowables depend on the
         bin's speed: :meth:`SNCurve.rated`).
     rule : str
-        Miner's variant (:data:`contact.durability.sn_curve.MINER_RULES`).
+        Miner's variant (:data:`contact.load_capacity.durability.sn_curve.MINER_RULES`).
 
     Returns
     -------

@@ -3,9 +3,10 @@
 :func:`iso10300_rating` rates a case's pair at its torques and speed: the geometry from
 the case's ISO 23509 basic design data (its ``[design]`` table, through the blank the
 toolkit computes, :func:`geometry.iso23509.blank.blank_geometry`), the rest from its
-``[rating]`` table (:class:`~contact.rating.inputs.RatingInputs`) and the members' material
-(:mod:`contact.rating.materials`). :func:`rate_pair` does the same from the gear data
-directly (:class:`~contact.rating.inputs.GearData`): what the tests feed ISO/TR
+``[rating]`` table (:class:`~contact.load_capacity.iso10300.inputs.RatingInputs`) and the
+members' material (:mod:`contact.load_capacity.iso10300.materials`). :func:`rate_pair` does
+the same from the gear data directly (:class:`~contact.load_capacity.iso10300.inputs.GearData`):
+what the tests feed ISO/TR
 10300-30:2024's printed data to.
 
 The result is the ``/rating`` group of an analysis: an ``xarray.Dataset`` with dimensions
@@ -26,10 +27,10 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from contact.rating import bending, factors, pitting
-from contact.rating.inputs import GearData, RatingInputs, gear_data_from_blank
-from contact.rating.materials import RatingMaterial, rating_material
-from contact.rating.virtual_gears import virtual_gears
+from contact.load_capacity.iso10300 import bending, factors, pitting
+from contact.load_capacity.iso10300.inputs import GearData, RatingInputs, gear_data_from_blank
+from contact.load_capacity.iso10300.materials import RatingMaterial, rating_material
+from contact.load_capacity.iso10300.virtual_gears import virtual_gears
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 from geometry.core.validation import positive, real_array

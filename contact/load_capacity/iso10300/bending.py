@@ -15,7 +15,7 @@ load sharing factor Y_LS = Z_LS²     :func:`load_sharing_factor`               
 relative surface factor Y_R,relT     :func:`relative_surface_factor`             1
 relative notch sensitivity Y_δrelT   :func:`relative_notch_sensitivity`          1
 size factor Y_X                      :func:`size_factor`                         1
-life factor Y_NT                     :func:`contact.rating.pitting.life_factor`  1
+life factor Y_NT                     :func:`contact.load_capacity.iso10300.pitting.life_factor`  1
 σ_F0, σ_F, σ_FP                      :func:`nominal_root_stress`,                MPa
                                      :func:`root_stress`,
                                      :func:`permissible_root_stress`
@@ -107,7 +107,8 @@ def tooth_form(m_mn: float, z_vn: ArrayLike, d_van: ArrayLike, d_vbn: ArrayLike,
     ----------
     m_mn : float — [mm]
     z_vn, d_van, d_vbn : array_like — [1], [mm]
-        The normal-section virtual gear (:func:`contact.rating.virtual_gears.normal_section`).
+        The normal-section virtual gear
+        (:func:`contact.load_capacity.iso10300.virtual_gears.normal_section`).
     x_hm, x_sm : array_like — [1]
         Profile shift and thickness modification coefficients.
     h_a0, rho_a0, s_pr : array_like — [mm]

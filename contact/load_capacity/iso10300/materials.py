@@ -6,15 +6,15 @@ the allowable stress numbers of an ISO 6336-5 quality grade (``allowable_stress`
 σ_H,lim, and σ_F,lim = σ_FE / Y_ST), the life-factor curves (``sn_contact``,
 ``sn_bending``) and the material factors of ISO 10300-3 (``rating_factors``: slip-layer
 thickness of Y_δrelT, coefficients of Y_R,relT). A ``[rating]`` table may override E, ν,
-σ_H,lim and σ_F,lim (:class:`contact.rating.inputs.RatingInputs`).
+σ_H,lim and σ_F,lim (:class:`contact.load_capacity.iso10300.inputs.RatingInputs`).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from contact.durability.sn_curve import SNCurve, sn_curves
-from contact.rating.bending import STRESS_CORRECTION_TEST_GEAR
+from contact.load_capacity.durability.sn_curve import SNCurve, sn_curves
+from contact.load_capacity.iso10300.bending import STRESS_CORRECTION_TEST_GEAR
 from geometry.core.errors import InputError
 from geometry.core.materials import material
 

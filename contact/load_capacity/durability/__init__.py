@@ -6,14 +6,14 @@ sn_curve   S–N curves of ISO 6336-2/-3 from the material table, Miner's rule v
 damage     cumulative damage over a spectrum's bins, peak fillet stress, life
 """
 
-from contact.durability.damage import (
+from contact.load_capacity.durability.damage import (
     cumulative_damage,
     life_at_first_failure,
     member_cycles,
     peak_fillet_stress,
     pressure_envelopes,
 )
-from contact.durability.sn_curve import GRADES, MINER_RULES, SNCurve, sn_curves
+from contact.load_capacity.durability.sn_curve import GRADES, MINER_RULES, SNCurve, sn_curves
 
 __all__ = ["GRADES", "MINER_RULES", "SNCurve", "cumulative_damage", "life_at_first_failure",
            "member_cycles", "peak_fillet_stress", "pressure_envelopes", "sn_curves"]

@@ -11,7 +11,7 @@
   — K_Hβ-be, K_Hβ, K_Fβ, K_F0 (cl. 8);
 * :func:`transverse_load_factors` — K_Hα, K_Fα, Method B (cl. 9).
 
-The application factor K_A is given (:class:`contact.rating.inputs.RatingInputs`).
+The application factor K_A is given (:class:`contact.load_capacity.iso10300.inputs.RatingInputs`).
 Every function takes plain numbers or NumPy arrays that broadcast (torque arrays give
 arrays). Units: forces [N], torques [N·m], lengths [mm], speeds [rpm] and [m/s], angles
 [rad], pitch deviations [µm], mesh stiffness [N/(mm·µm)], density [kg/mm³].
@@ -29,7 +29,7 @@ import logging
 import numpy as np
 from numpy.typing import ArrayLike
 
-from contact.rating.inputs import CONTACT_PATTERNS, MOUNTINGS
+from contact.load_capacity.iso10300.inputs import CONTACT_PATTERNS, MOUNTINGS
 from geometry.core.validation import one_of
 
 __all__ = [

@@ -1,7 +1,8 @@
 """The standard's rating beside the loaded contact: ISO 10300 stresses next to the LTCA's.
 
 A gear engineer reads a bevel or hypoid pair twice: by the rating the standard prescribes
-(ISO 10300 Method B1, :func:`contact.rating.iso10300_rating`) and by the local stresses of
+(ISO 10300 Method B1, :func:`contact.load_capacity.iso10300.iso10300_rating`) and by the local
+stresses of
 the loaded contact (the peak flank pressure of ``/ltca`` and, where root stress was
 computed, the FE peak tooth-root stress). Two functions put them side by side:
 
@@ -55,7 +56,8 @@ def analysis_rating(case, torque: Any, speed: float | None, flank: str | None = 
     Returns
     -------
     (xarray.Dataset or None, str)
-        The ``/rating`` dataset (:func:`contact.rating.iso10300_rating`) and ``""``; or
+        The ``/rating`` dataset (:func:`contact.load_capacity.iso10300.iso10300_rating`) and
+        ``""``; or
         None and one line saying why the rating is absent: the case has no ``[design]``
         table (its ISO 23509 basic data), no ``[rating]`` table, or no speed.
 
@@ -67,10 +69,11 @@ def analysis_rating(case, torque: Any, speed: float | None, flank: str | None = 
 
     Notes
     -----
-    Source: ISO 10300-1/-2/-3:2014 Method B1 through :func:`contact.rating.rate_pair`.
+    Source: ISO 10300-1/-2/-3:2014 Method B1 through
+    :func:`contact.load_capacity.iso10300.rate_pair`.
     """
-    from contact.rating.inputs import RatingInputs
-    from contact.rating.rating import iso10300_rating
+    from contact.load_capacity.iso10300.inputs import RatingInputs
+    from contact.load_capacity.iso10300.rating import iso10300_rating
 
     if not isinstance(case.extra.get("design"), Mapping):
         return None, ("ISO 10300 rating not computed: the case has no [design] table (its "
@@ -114,7 +117,8 @@ def rating_beside_ltca(rating: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
     Parameters
     ----------
     rating : xarray.Dataset
-        The ``/rating`` group (:func:`contact.rating.iso10300_rating`) at the analysis'
+        The ``/rating`` group (:func:`contact.load_capacity.iso10300.iso10300_rating`) at the
+        analysis'
         torques.
     ltca : xarray.Dataset
         The ``/ltca`` group: ``pressure_max_flank`` (torque) and, when root stress was

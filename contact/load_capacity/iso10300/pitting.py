@@ -107,7 +107,7 @@ def load_sharing_factor(f: ArrayLike, l_b: ArrayLike, f_max: float,
     f : array_like (3,) — [mm]
         Signed distances of the tip, middle and root contact lines.
     l_b : array_like (3,) — [mm]
-        Their lengths (:func:`contact.rating.virtual_gears.contact_line_length`).
+        Their lengths (:func:`contact.load_capacity.iso10300.virtual_gears.contact_line_length`).
     f_max : float — [mm]
     exponent : float — [1]
         e_LS of the peak-load distribution (3: moderate profile crowning, the TR's).

@@ -143,7 +143,7 @@ class SNCurve:
         -----
         ISO 6336-2:2019 cl. 5 and ISO 6336-3:2019 (the influence factors of the static and
         the reference stress; ISO 10300-2/-3:2014 cl. 8 follow them), through
-        :func:`contact.rating.pitting.long_life_share`.
+        :func:`contact.load_capacity.iso10300.pitting.long_life_share`.
         """
         f = real("allowable_factor", allowable_factor, low=0.0, low_open=True, unit="1")
         z = real("static_influence", static_influence, low=0.0, low_open=True, unit="1")

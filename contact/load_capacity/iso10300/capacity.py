@@ -1,6 +1,7 @@
 """The torque capacity of a pair by ISO 10300: the design torque of a synthesis.
 
-:func:`capacity_torque` inverts the ISO 10300 Method B1 rating (:func:`contact.rating.
+:func:`capacity_torque` inverts the ISO 10300 Method B1 rating
+(:func:`contact.load_capacity.iso10300.
 rating.iso10300_rating`) for the pinion torque at which the long-life safety factors reach
 their minimum: S_H = S_H,min (pitting, ISO 10300-2) or S_F = S_F,min (tooth root, ISO
 10300-3), whichever comes first. :func:`design_torque` is the torque a synthesised design
@@ -35,8 +36,9 @@ def _long_life_safety(case, torque: Any, speed: float,
                       rating: Mapping[str, Any] | None) -> np.ndarray:
     """min over members of S_H/S_H,min and S_F/S_F,min at long life at each torque: rated
     without ``load_cycles`` (below the knee σ_HP is not Z_NT times its long-life value:
-    Z_L Z_v Z_R go to 1 towards the static end, contact.rating.pitting.long_life_share)."""
-    from contact.rating.rating import iso10300_rating
+    Z_L Z_v Z_R go to 1 towards the static end,
+    contact.load_capacity.iso10300.pitting.long_life_share)."""
+    from contact.load_capacity.iso10300.rating import iso10300_rating
 
     table = case.extra.get("rating") if rating is None else rating
     if isinstance(table, Mapping):  # (else: the rating's own error, naming [rating])
@@ -54,7 +56,7 @@ def capacity_torque(case, speed: float | None = None,
     Parameters
     ----------
     case : geometry.case.Case, str or path-like
-        With ``[design]`` and ``[rating]`` tables (:func:`contact.rating.rating.
+        With ``[design]`` and ``[rating]`` tables (:func:`contact.load_capacity.iso10300.rating.
         iso10300_rating`).
     speed : float — [rpm], optional
         Pinion speed; default the case's ``[operating] pinion_speed``, or 1500 rpm (the
@@ -96,7 +98,7 @@ def capacity_torque(case, speed: float | None = None,
 def _quiet():
     """The rating's warnings (K_v in the resonance range …) silenced: they concern the
     bracketing grid's torques, not the user's (``ltca run`` and ``ltca rate`` give them)."""
-    logger = logging.getLogger("contact.rating")
+    logger = logging.getLogger("contact.load_capacity.iso10300")
     level = logger.level
     logger.setLevel(logging.ERROR)
     try:
@@ -188,7 +190,7 @@ def with_design_torque(case, torque: float | None = None):
         except InputError as exc:
             return case, math.nan, f"none: {exc}"
         why = ("the ISO 10300 capacity, the pinion torque at which the long-life safety "
-               "reaches S_H,min or S_F,min (contact.rating.capacity)")
+               "reaches S_H,min or S_F,min (contact.load_capacity.iso10300.capacity)")
     table["design_torque"] = value
     table["source"] = (str(table.get("source", "")).rstrip() + f" design_torque {value:g} N m: "
                        f"{why}.").lstrip()

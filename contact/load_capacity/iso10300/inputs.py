@@ -286,7 +286,7 @@ class RatingInputs:
         f_pt of pinion and gear, in (0, 500]. One of it and ``accuracy_grade`` is required.
     accuracy_grade : (int, int), optional
         ISO 17485 accuracy grades of pinion and gear, in [2, 11]: f_pt is then the
-        single pitch tolerance of the grade (:func:`contact.rating.factors.
+        single pitch tolerance of the grade (:func:`contact.load_capacity.iso10300.factors.
         single_pitch_tolerance`).
     contact_pattern : str
         How the contact pattern was verified: ``"full_load"`` (each set in its housing

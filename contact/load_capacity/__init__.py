@@ -1,0 +1,1 @@
+"""Load capacity of the gear pair: rating methods, durability, scuffing and micropitting."""
