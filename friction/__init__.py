@@ -16,6 +16,7 @@ from geometry.core.lazy import lazy_exports
 
 __all__ = [
     "DEFAULT_FRICTION_MODEL",
+    "GroundSurface",
     "LineContactCondition",
     "Lubricant",
     "OperatingConditions",
@@ -33,13 +34,16 @@ __all__ = [
     "solve_line_contact",
     "solve_stochastic_line_contact",
     "specific_film_thickness",
+    "stochastic_summary",
+    "unregister_friction_model",
     "viscosity",
 ]
 
 #: the public names and the module each comes from, imported when first used (PEP 562)
 _LAZY = {
     **dict.fromkeys(("DEFAULT_FRICTION_MODEL", "available_friction_models",
-                     "friction_coefficient", "register_friction_model"),
+                     "friction_coefficient", "register_friction_model",
+                     "unregister_friction_model"),
                     "friction.coefficient"),
     **dict.fromkeys(("Lubricant", "available_lubricants", "load_lubricant",
                      "pressure_viscosity_coefficient", "viscosity"), "friction.lubricant"),
@@ -50,7 +54,9 @@ _LAZY = {
     "load_kolivand2009_fit": "friction.kolivand2009",
     **dict.fromkeys(("LineContactCondition", "solve_line_contact"),
                     "friction.ehl.line_contact"),
-    "solve_stochastic_line_contact": "friction.ehl.stochastic",
+    **dict.fromkeys(("solve_stochastic_line_contact", "stochastic_summary"),
+                    "friction.ehl.stochastic"),
+    "GroundSurface": "friction.ehl.roughness",
     **dict.fromkeys(("blok_flash_temperature", "scuffing_safety"),
                     "friction.flash_temperature"),
     **dict.fromkeys(("micropitting_safety", "specific_film_thickness"),

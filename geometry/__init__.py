@@ -24,8 +24,8 @@ from geometry.core.lazy import lazy_exports
 from geometry.core.version import __version__
 
 __all__ = ["BevelGearDesign", "Case", "InputError", "LTCAError", "Misalignment",
-           "ModelUnavailableError", "__version__", "blank_geometry", "load_basic", "load_case",
-           "synthesize"]
+           "ModelUnavailableError", "__version__", "blank_geometry", "corrected_case",
+           "corrective_settings", "load_basic", "load_case", "synthesize"]
 
 # the case schema pulls in NumPy and the machine: imported when first used, so that what
 # needs only the version or the exceptions (``ltca --help``) starts quickly. These names
@@ -38,4 +38,6 @@ __getattr__, __dir__ = lazy_exports(__name__, {
     "blank_geometry": "geometry.iso23509.blank",
     "load_basic": "geometry.synthesis.basic_design",
     "synthesize": "geometry.synthesis.case_synthesis",
+    "corrective_settings": "geometry.synthesis.correction",
+    "corrected_case": "geometry.synthesis.correction",
 }, globals())
