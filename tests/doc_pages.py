@@ -26,6 +26,34 @@ PAGES: tuple[Path, ...] = (README, *(DOCS / f"{name}.md" for name in (
     "layout")))
 
 
+#: every page of the documentation: the README and every page of the site (docs/*.md).
+#: Their ``python`` blocks run (tests/test_docs_blocks.py) and import only the public API
+#: (tests/test_docs_site.py)
+ALL_PAGES: tuple[Path, ...] = (README, *sorted(DOCS.glob("*.md")))
+
+#: a directive for the docs test, on the line right before a ```python fence (an HTML
+#: comment: the site does not show it): ``<!-- docs-test: replace OLD => NEW -->`` runs
+#: the block with OLD replaced by NEW (a smaller case, fewer rolls or torques: only the
+#: resolution, never what the block shows), ``<!-- docs-test: skip REASON -->`` leaves the
+#: block out with its reason in the test's report
+DIRECTIVE = re.compile(r"<!-- docs-test: (replace|skip) (.*?) -->")
+
+
+def python_blocks(page: Path) -> list[tuple[int, str, list[tuple[str, str]]]]:
+    """(line, code, directives) of every ```python block of ``page``, in order; the
+    directives are the ``docs-test`` comments on the lines right above the fence."""
+    text = page.read_text(encoding="utf-8")
+    found = []
+    for m in re.finditer(r"```python\n(.*?)```", text, flags=re.S):
+        above = text[:m.start()].rstrip("\n").splitlines()
+        directives = []
+        while above and (d := DIRECTIVE.fullmatch(above[-1].strip())):
+            directives.insert(0, (d.group(1), d.group(2)))
+            above.pop()
+        found.append((text[:m.start()].count("\n") + 1, m.group(1), directives))
+    return found
+
+
 def blocks(language: str, pages=PAGES) -> list[tuple[str, str]]:
     """(``page:line``, code) of every fenced block in ``language`` on the pages."""
     found = []

@@ -8,15 +8,13 @@ import subprocess
 import sys
 from pathlib import Path
 
-from doc_pages import ROOT
-from doc_pages import blocks as doc_blocks
+from doc_pages import ALL_PAGES, ROOT, python_blocks
 
 
 def test_readme_python_examples_pass_ruff(tmp_path):
-    """Every ```python block of the README and of the pages that were its sections
-    (tests/doc_pages.py), written to its own file, passes ``ruff check`` with the project's
-    configuration."""
-    blocks = [code for _, code in doc_blocks("python")]
+    """Every ```python block of every page (the README and docs/*.md), written to its own
+    file, passes ``ruff check`` with the project's configuration."""
+    blocks = [code for page in ALL_PAGES for _, code, _ in python_blocks(page)]
     assert blocks, "no python examples"
     for i, block in enumerate(blocks):
         (tmp_path / f"readme_example_{i}.py").write_text(block)

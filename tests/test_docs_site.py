@@ -56,18 +56,18 @@ def test_site_builds_with_warnings_as_errors(tmp_path):
 
 
 def test_examples_import_only_the_public_api():
-    """The gallery's scripts and the pages' Python blocks import from the package tops
+    """The gallery's scripts and every page's Python blocks import from the package tops
     (``import contact``, ``from friction import …``), never from a submodule: what a user
     copies keeps working across releases (issue 54 item 3)."""
     import re
 
-    from doc_pages import blocks
+    from doc_pages import ALL_PAGES, python_blocks
 
     sources = [(p.name, p.read_text(encoding="utf-8"))
                for p in sorted((DOCS / "examples").glob("*.py"))]
-    sources += [(where, code) for where, code in blocks("python")
-                if where.startswith(("README", "docs/getting_started"))]
-    assert sources
+    sources += [(f"{page.name}:{line}", code) for page in ALL_PAGES
+                for line, code, _ in python_blocks(page)]
+    assert len(sources) > 10
     for where, code in sources:
         deep = re.findall(r"^\s*(?:from|import)\s+((?:contact|friction|geometry)\.\S+)",
                           code, flags=re.M)

@@ -1,15 +1,12 @@
-"""The Python examples of the README and of the pages that were its sections
-(tests/doc_pages.py) run as written (each asserts its key numbers), and the layout page
-answers a newcomer's questions with paths that exist."""
+"""The README opens with the two commands and is a front page, and the layout page answers
+a newcomer's questions with paths that exist (every page's Python blocks run in
+tests/test_docs_blocks.py)."""
 
 from __future__ import annotations
 
 import re
 
-import pytest
-from doc_pages import DOCS, LAYOUT, README, ROOT, blocks
-
-BLOCKS = blocks("python")
+from doc_pages import DOCS, LAYOUT, README, ROOT
 
 
 def test_readme_opens_with_the_two_commands():
@@ -31,12 +28,6 @@ def test_readme_is_a_front_page():
     assert len(python) == 1 and len(python[0].splitlines()) <= 15
     for link in re.findall(r"\]\((docs/[^)#]+)", text):
         assert (ROOT / link).is_file(), link
-
-
-@pytest.mark.parametrize("code", [c for _, c in BLOCKS], ids=[n for n, _ in BLOCKS])
-def test_readme_python_block(code, tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    exec(compile(code, "docs-block", "exec"), {"__name__": "readme"})
 
 
 def _layout_section() -> str:
