@@ -94,18 +94,26 @@ MIXED_EHL_DEFAULTS: Mapping[str, tuple[float, str]] = MappingProxyType(
             0.1,
             "[1] μ_b, friction of the asperity contacts under boundary films (seed Eq. 5.8"
             " 'dry contact friction coefficient'); 0.08–0.13 is the usual range for steel"
-            " with additive-containing oils — assumed 0.1",
+            " with additive-containing oils — assumed 0.1, the same value as the stochastic"
+            " solver and the kolivand2009 fit (the oil file's boundary_friction)",
         ),
         "asperity_density_radius_sigma": (
             0.05,
             "[1] ηβσ, summit density × summit radius × RMS roughness; 0.03–0.05 on the"
-            " engineering surfaces measured by Greenwood & Williamson (1966) — upper value",
+            " engineering surfaces measured by Greenwood & Williamson (1966) — upper value;"
+            " McCool's (1986) summit statistics of the toolkit's ground profile (the"
+            " stochastic solver's, friction.ehl.roughness.GroundSurface seeds 1 and 2 through"
+            " λs 8 µm) give 0.056 at any Rq (issue 61)",
         ),
         "sigma_over_beta": (
             0.01,
-            "[1] σ/β, composite RMS roughness over summit radius; 0.01 gives β ≈ 110 µm at"
-            " the toolkit's σ = 1.13 µm (Rq 0.8 µm per flank), the order of ground steel"
-            " surfaces — assumed",
+            "[1] σ/β, composite RMS roughness over summit radius, held fixed (the summits'"
+            " radius grows with Rq); 0.01 gives β ≈ 110 µm at σ = 1.13 µm (Rq 0.8 µm per"
+            " flank) — assumed, the order of ground steel. The toolkit's ground profile"
+            " scaled in height (β ∝ 1/σ) gives σ/β = 0.154 σ² [σ in µm] instead (0.09 at the"
+            " run-in Rq 0.544 µm): with it the flank μ falls with torque and is 1.95× ISO/TR"
+            " 14179-2 at 50 N·m (docs/friction.md, 'Which model is the default'), which the"
+            " measured correlation contradicts — so the fixed ratio is kept",
         ),
     }
 )

@@ -75,11 +75,12 @@ class OperatingConditions:
         (a FrictionModel, or a model function, checked and wrapped by
         :func:`friction.coefficient.as_friction_model`; results record its name,
         :attr:`friction_model_name`). Default
-        :data:`friction.defaults.DEFAULT_FRICTION_MODEL`, ``"kolivand2009"``: the seed's
-        Eq. 5.11 method — its mixed-EHL line-contact study and a fitted μ formula — done
-        again with the toolkit's solver (docs/friction.md, "Which model is the default");
-        ``"xu2007"`` (Xu et al. 2007's published regression of the same methodology) was
-        the default before.
+        :data:`friction.defaults.DEFAULT_FRICTION_MODEL`, ``"mixed_ehl"`` since issue 61:
+        Johnson, Greenwood & Poon's load sharing with Greenwood–Tripp asperities, an Eyring
+        film and boundary friction, whose flank μ stays within 0.6–1.4× the measured
+        ISO/TR 14179-2 correlation (docs/friction.md, "Which model is the default");
+        ``"kolivand2009"`` (the seed's Eq. 5.11 method fitted to the toolkit's stochastic
+        solver) was the default in issues 34–61 and ``"xu2007"`` before it.
     surface_state : {"run_in", "new"}
         The flanks' state: ``"run_in"`` (default: a gear in service) runs the film and the
         friction model on the run-in roughness Rq × :data:`RUNNING_IN_FACTORS` ["run_in"]
@@ -101,7 +102,8 @@ class OperatingConditions:
     -----
     Sources: seed ch. 5 (Kolivand 2009: §5.2 the efficiency model and its inputs, Table
     5.2 the 75W90 oil, §5.3 the operating-condition sweeps); Xu, Kahraman, Anderson &
-    Maddock, J. Mech. Des. 129 (2007) 58–68 for the friction model.
+    Maddock, J. Mech. Des. 129 (2007) 58–68 and Johnson, Greenwood & Poon, Wear 19 (1972)
+    91–108 for the friction models.
     """
 
     pinion_speed: float = OPERATING_DEFAULTS["pinion_speed"]

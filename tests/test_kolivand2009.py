@@ -399,7 +399,8 @@ def test_gear_contacts_inside_the_range_or_flagged_with_why(name, request):
         lt = _fh_run(name)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", FrictionModelRangeWarning)
-        fr = efficiency_analysis(lt, pinion_speed=1500.0, temperature=90.0, roughness=0.8)
+        fr = efficiency_analysis(lt, pinion_speed=1500.0, temperature=90.0, roughness=0.8,
+                                 friction_model="kolivand2009")  # not the default since issue 61
     assert fr.attrs["friction_model"] == "kolivand2009"
     force = lt["force"].values
     loaded = np.isfinite(force) & (force > 0)

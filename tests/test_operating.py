@@ -18,7 +18,7 @@ from geometry.core.errors import InputError, ModelUnavailableError
 def test_defaults():
     op = OperatingConditions()
     assert (op.pinion_speed, op.lubricant, op.temperature, op.roughness, op.friction_model) == (
-        1500.0, "75W90", 90.0, 0.8, "kolivand2009")
+        1500.0, "75W90", 90.0, 0.8, "mixed_ehl")
     assert all(type(v) is float for v in (op.pinion_speed, op.temperature, op.roughness))
 
 
