@@ -77,7 +77,14 @@ def _cases_root():
 
 
 def bundled_cases() -> list[str]:
-    """File names of the cases shipped with the toolkit."""
+    """File names of the cases shipped with the toolkit.
+
+    Returns
+    -------
+    list of str
+        The ``*.toml`` file names of the bundled cases, sorted (``ltca cases`` lists them
+        with their sources).
+    """
     root = _cases_root()
     return sorted(p.name for p in root.iterdir() if p.name.endswith(".toml"))
 
@@ -99,6 +106,16 @@ def _suggestion(name: str) -> str:
 
 def bundled_case_path(name: str = DEFAULT_CASE) -> Path:
     """Path of a bundled case file.
+
+    Parameters
+    ----------
+    name : str
+        A bundled case's name, with or without ``.toml`` (default: the default case).
+
+    Returns
+    -------
+    pathlib.Path
+        The installed case file (``contact.cases``; the clone's ``cases/``).
 
     Raises
     ------
@@ -124,6 +141,17 @@ def _looks_like_a_path(text: str) -> bool:
 
 def resolve_case(case: Case | str | os.PathLike[str] | None) -> Case:
     """A Case from a Case, a file path, a bundled case name, or None (the default case).
+
+    Parameters
+    ----------
+    case : Case, str, os.PathLike or None
+        A loaded case (returned as it is), a case file's path, a bundled case's name
+        (``ltca cases``), or None for :data:`DEFAULT_CASE`.
+
+    Returns
+    -------
+    geometry.Case
+        The case, validated (:func:`geometry.load_case`).
 
     Raises
     ------

@@ -505,6 +505,7 @@ def load_kolivand2009_fit(coefficients: str | Path | Kolivand2009Fit = "75W90"
     Returns
     -------
     Kolivand2009Fit
+        The fitted coefficients of the friction-coefficient regression and their range.
 
     Raises
     ------

@@ -241,6 +241,7 @@ def available_compliance_models() -> tuple[str, ...]:
     Returns
     -------
     tuple of str
+        The models' names: the bundled ones, then the plug-ins' and the registered ones.
     """
     return tuple(dict.fromkeys([*_BUNDLED, *_plugins(), *_USER]))
 
@@ -317,6 +318,7 @@ def register_compliance_model(name: str, prepare: Callable[..., Any], *, descrip
     Returns
     -------
     ComplianceModel
+        The registered model (name, preparation, description).
 
     Raises
     ------
@@ -338,6 +340,11 @@ def register_compliance_model(name: str, prepare: Callable[..., Any], *, descrip
 
 def unregister_compliance_model(name: str) -> None:
     """Remove a model registered with :func:`register_compliance_model`.
+
+    Parameters
+    ----------
+    name : str
+        The name it was registered under.
 
     Raises
     ------

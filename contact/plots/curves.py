@@ -101,6 +101,8 @@ def transmission_error_figure(utca: xr.Dataset | None, ltca: xr.Dataset | None) 
     Returns
     -------
     matplotlib.figure.Figure
+        The transmission error [µrad] over the mesh cycles: unloaded per pair (UTE),
+        loaded per torque (LTE).
 
     Raises
     ------
@@ -175,6 +177,8 @@ def load_share_figure(ltca: xr.Dataset) -> Figure:
     Returns
     -------
     matplotlib.figure.Figure
+        The share of the torque [1] each tooth pair carries over the mesh cycles,
+        one panel per torque.
 
     Raises
     ------

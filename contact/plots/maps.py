@@ -131,6 +131,8 @@ def map_figure(
     Returns
     -------
     matplotlib.figure.Figure
+        Filled contours of ``var`` over ``x`` × ``y``, one panel per value of ``facet``,
+        axes and colour bar labelled with the coordinates' ``long_name`` and ``units``.
 
     Raises
     ------

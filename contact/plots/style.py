@@ -186,6 +186,20 @@ def legend_below(fig: Figure, handles, ncols: int = 3) -> None:
 def save_png(fig: Figure, path: str | os.PathLike[str], dpi: int = DPI) -> Path:
     """Write ``fig`` as PNG and return the path.
 
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure (any ``*_figure`` function's).
+    path : str or os.PathLike
+        The PNG file to write (as given); its directory must exist.
+    dpi : int
+        Resolution [1/inch] (default :data:`DPI`).
+
+    Returns
+    -------
+    pathlib.Path
+        The file written.
+
     Raises
     ------
     InputError

@@ -259,6 +259,7 @@ def read_duty_cycle(source: Mapping[str, Any] | str | os.PathLike[str] | Any) ->
     Returns
     -------
     DutyCycle
+        The bins (torque [N m], speed [rpm], time or revolutions) as read and checked.
 
     Raises
     ------

@@ -746,6 +746,9 @@ def stochastic_summary(condition: LineContactCondition, surfaces, grid: Grid | N
     Returns
     -------
     StochasticSummary
+        The contact's scalars: μ [1] and its fluid and boundary parts, film thickness
+        [µm], asperity load and area ratios [1], λ [1], temperatures [degC, K] and the
+        peak pressure over p_h [1] (the class's fields say which).
 
     Raises
     ------

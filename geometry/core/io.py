@@ -449,6 +449,7 @@ def read_netcdf(path: str | os.PathLike[str], *, tree: bool | None = None):
     Returns
     -------
     xarray.Dataset or xarray.DataTree
+        The file's data and attributes: a DataTree when the file has groups.
 
     Raises
     ------

@@ -339,6 +339,11 @@ def register_backend(name: str, solve: Callable[..., Any] | Backend, *,
 def unregister_backend(name: str) -> None:
     """Remove a backend registered with :func:`register_backend` (nothing if none).
 
+    Parameters
+    ----------
+    name : str
+        The name it was registered under.
+
     Raises
     ------
     InputError
