@@ -42,7 +42,7 @@ __all__ = ["LTCAOptions", "LTCASetup", "edge_radii", "json_options"]
 class LTCAOptions:
     """Discretisation and solution settings of the LTCA.
 
-    Attributes
+    Parameters
     ----------
     cycles : int
         Mesh cycles analysed (≥ 1; default 2).

@@ -146,6 +146,8 @@ def sweep(
         worker per core, no file). The former keywords ``options``, ``flank``,
         ``operating``, ``output``, ``scheduler``, ``n_workers``, ``progress`` still work
         for one release (DeprecationWarning).
+    **legacy
+        Those former keywords (fields of :class:`StudyRun`), deprecated.
 
     Returns
     -------

@@ -176,10 +176,18 @@ def sample(
         for ``delta_Sigma``, [1] for ``deviation_scale``; :data:`POINT_INPUTS`).
     n : int
         Number of draws.
-    method, seed
-        As :func:`draw_points` (a fixed seed makes the study reproducible).
-    torque, speed, run
-        As :func:`contact.study.sweep` (the former run keywords likewise, deprecated).
+    method : str
+        ``"sobol"`` (default), ``"lhs"`` or ``"random"``, as :func:`draw_points`.
+    seed : int, optional
+        Seed of the draws (a fixed seed makes the study reproducible).
+    torque : float or sequence — [N·m], optional
+        Pinion torques, as :func:`contact.study.sweep`.
+    speed : float or sequence — [rpm], optional
+        Pinion speeds (adds efficiency and power loss), as :func:`contact.study.sweep`.
+    run : contact.study.StudyRun, optional
+        Where and how the points run, as :func:`contact.study.sweep`.
+    **legacy
+        The former run keywords (fields of :class:`StudyRun`), deprecated.
 
     Returns
     -------

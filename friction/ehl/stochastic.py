@@ -776,8 +776,14 @@ def solve_stochastic_line_contact(condition: LineContactCondition, surfaces,
 
     Parameters
     ----------
-    condition, surfaces, grid, options
-        As :func:`stochastic_summary`.
+    condition : LineContactCondition
+        The contact, without roughness (the surfaces are given separately).
+    surfaces : (GroundSurface | MeasuredSurface, GroundSurface | MeasuredSurface)
+        Surface 1 moves at u_e(1 + SR/2), surface 2 at u_e(1 − SR/2); not both smooth.
+    grid : Grid, optional
+        Default :func:`stochastic_grid` (512 nodes).
+    options : StochasticOptions, optional
+        The solver's settings, as :func:`stochastic_summary`.
 
     Returns
     -------
