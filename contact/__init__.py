@@ -20,6 +20,11 @@ The whole analysis of a case (geometry → ease-off UTCA → LTCA) as one DataTr
 
     from contact import run_analysis
 
+Its steps (geometry, utca, ltca, root stress, mesh interface, efficiency, load capacity),
+each chosen by name, replaced by a callable or skipped::
+
+    from contact import AnalysisChain, available_steps
+
 Every per-process cache (memo) of the toolkit is emptied by one call::
 
     from contact import clear_caches
@@ -34,6 +39,8 @@ from geometry import __version__
 from geometry.core.lazy import lazy_exports
 
 __all__ = [
+    "AnalysisChain",
+    "ChainState",
     "DEFAULT_CASE",
     "DEFAULT_SOLVER",
     "DEFAULT_TOLERANCE",
@@ -53,6 +60,7 @@ __all__ = [
     "available_compliance_models",
     "available_solvers",
     "bundled_case_path",
+    "available_steps",
     "bundled_cases",
     "clear_caches",
     "contact_pattern_figure",
@@ -125,3 +133,4 @@ _LAZY = {
     "clear_caches": "geometry.core.caches",
 }
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())
+    **dict.fromkeys(("AnalysisChain", "ChainState", "available_steps"), "contact.chain"),

@@ -15,23 +15,27 @@ from __future__ import annotations
 import dataclasses
 import logging
 import os
-import time
+from collections.abc import Mapping
 
 import numpy as np
 import xarray as xr
 
 from contact import catalogue
-from contact.ltca import LTCAOptions, loaded_tca
+from contact.chain import (
+    AnalysisChain,
+    ChainState,
+    StepChoice,
+    geometry_datasets,  # noqa: F401 (the geometry step's; callers' name)
+    resolve_chain,
+    run_chain,
+)
+from contact.ltca import LTCAOptions
 from contact.ltca.summary import certification, edge_load_share
 from contact.qp.solvers import solver_name
-from contact.utca import unloaded_tca
-from contact.utca.conjugate_map import flank_nodes
-from contact.utca.easeoff import ease_off
 from friction.operating import OperatingConditions
 from geometry import __version__
 from geometry.case import Case
 from geometry.core.errors import InputError
-from geometry.machine.flank import DEFAULT_GRID, flank_dataset
 from geometry.pair.assembly import Misalignment
 
 __all__ = [
@@ -131,38 +135,6 @@ def operating_conditions(case: Case, **override) -> OperatingConditions | None:
     if speed == 0:
         return None
     return OperatingConditions.from_point(case.operating, **{**override, "pinion_speed": speed})
-
-
-def geometry_datasets(case: Case) -> dict[tuple[str, str], xr.Dataset]:
-    """The four flanks of a case as the ``/geometry`` group's Datasets, keyed by (member,
-    flank): :func:`geometry.machine.flank.geometry_datasets` on its default grid, the
-    flanks taken from the per-process memo of the teeth
-    (:func:`contact.utca.conjugate_map.flank_nodes`), which the ease-off reads too.
-
-    Parameters
-    ----------
-    case : geometry.case.Case
-
-    Returns
-    -------
-    dict
-        ``{("pinion", "concave"): Dataset, …}``, as
-        :func:`geometry.machine.flank.geometry_datasets` (the same arrays: each flank is
-        the same :func:`geometry.machine.flank.flank_surface` of the same grid; the gear's
-        is solved once per analysis instead of twice — once here, once by the ease-off —
-        and all four once per process for the analyses of the same teeth; issue 32).
-
-    Raises
-    ------
-    InputError
-        As :func:`geometry.machine.flank.flank_surface`.
-    """
-    out = {}
-    for m in ("pinion", "gear"):
-        for f in ("concave", "convex"):
-            out[m, f] = flank_dataset(case, m, f, surface=flank_nodes(case, m, f,
-                                                                      dict(DEFAULT_GRID)))
-    return out
 
 
 def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
@@ -310,13 +282,16 @@ def run_analysis(
     options: LTCAOptions | None = None,
     operating: OperatingConditions | bool | None = None,
     deviations: tuple | bool | None = None,
-    geometry: bool = True,
+    geometry: bool | None = None,
     progress: bool | str = False,
     theoretical: bool = True,
-    mesh_interface: bool = True,
-    root_stress: bool | FEOptions = False,  # noqa: F821 (FEOptions: imported lazily)
+    mesh_interface: bool | None = None,
+    root_stress: bool | FEOptions | None = None,  # noqa: F821 (FEOptions: imported lazily)
+    steps: AnalysisChain | Mapping[str, StepChoice] | None = None,
 ) -> xr.DataTree:
-    """Run geometry, ease-off UTCA and LTCA of a case; return one DataTree.
+    """Run the analysis chain of a case — geometry, ease-off UTCA, LTCA, root stress, mesh
+    interface, efficiency, load capacity (:class:`contact.AnalysisChain`) — and return one
+    DataTree: by default the same groups and variables ``ltca run`` writes.
 
     Parameters
     ----------
@@ -348,8 +323,9 @@ def run_analysis(
         ``/easeoff`` gains ``ease_off_change`` [µm]. None (default) uses the case's
         ``[deviations]`` table if it has one (``Case.deviations``); ``False`` or
         ``(None, None)`` ignores it (theoretical surfaces only).
-    geometry : bool
-        Include the four generated flanks as ``/geometry`` (default True).
+    geometry : bool, optional
+        Include the four generated flanks as ``/geometry`` (the ``geometry`` step; default
+        on). False skips the step, as ``steps={"geometry": None}``.
     progress : bool or "lines"
         Progress bar over the LTCA roll positions and the unit loads of a first FE build,
         or plain lines with the rate and the remaining time (``"lines"``, as ``ltca run``
@@ -358,28 +334,45 @@ def run_analysis(
         With deviations, also analyse the theoretical surfaces (``/theoretical``,
         default True); False skips them (studies keep only the deviated results, which
         are the same either way).
-    mesh_interface : bool
-        Add ``/mesh_interface`` (default True): mesh point, line of action, mesh
-        stiffness and transmission-error excitation for dynamic models
-        (:func:`contact.ltca.mesh_interface.mesh_interface`).
-    root_stress : bool or contact.compliance.fe.FEOptions
-        Add the tooth-root stress of both members to ``/ltca`` (``root_stress`` [MPa] over
-        (torque, roll, member, tooth, fillet_point), ``root_stress_max`` [MPa] over
-        (torque, member); :func:`contact.ltca.root_stress.root_stress`): True with the
-        default FE model (with ``options.compliance == "fe"``: the compliance's FE model,
-        ``options.fe_options()``), or the FE model's options. Default False: the FE influence
-        coefficients cost ~0.5–1.5 min per member and design the first time (then they are
-        read from the cache, and the superposition adds a few % to the LTCA).
+    mesh_interface : bool, optional
+        Add ``/mesh_interface`` (the ``mesh_interface`` step; default on): mesh point, line
+        of action, mesh stiffness and transmission-error excitation for dynamic models
+        (:func:`contact.ltca.mesh_interface.mesh_interface`). False skips it.
+    root_stress : bool or contact.compliance.fe.FEOptions, optional
+        The ``root_stress`` step: the tooth-root stress of both members in ``/ltca``
+        (``root_stress`` [MPa] over (torque, roll, member, tooth, fillet_point),
+        ``root_stress_max`` [MPa] over (torque, member);
+        :func:`contact.ltca.root_stress.root_stress`) with the default FE model (with
+        ``options.compliance == "fe"``: the compliance's FE model,
+        ``options.fe_options()``), or with the FE model's options given here. On by
+        default, as in ``ltca run`` (it was off before issue 63): a design's first run
+        builds its FE influence coefficients, ~15–20 s per member, later runs read them
+        from the cache (~1 s); False skips the step.
+    steps : contact.AnalysisChain or mapping, optional
+        The chain's steps (:mod:`contact.chain`): an :class:`contact.AnalysisChain`, or
+        the steps that differ from its defaults, each a name
+        (:func:`contact.chain.available_steps`), a callable ``f(state)`` of a
+        :class:`contact.chain.ChainState` that adds its group(s) to ``state.groups``, or
+        None to skip an optional step — e.g. ``{"load_capacity": None}``. The keywords
+        ``geometry``, ``mesh_interface``, ``root_stress`` (False skips, True runs) and
+        ``operating=False`` (no ``efficiency`` step) apply on top of it. The
+        ``load_capacity`` step writes ``/rating`` (ISO 10300 Method B1 at the run's torques
+        and pinion speed, from the case's ``[design]`` and ``[rating]`` tables) and, with
+        ``/friction``, ``/rating/flash_temperature``; without those tables or a speed it
+        writes nothing and the root attribute ``load_capacity_not_run`` says why.
 
     Returns
     -------
     xarray.DataTree
-        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca``, ``/mesh_interface`` (and
-        ``/friction`` with operating conditions); root attributes ``case``, ``inputs``
+        Groups ``/geometry``, ``/easeoff``, ``/utca``, ``/ltca`` (with the root stress),
+        ``/mesh_interface``, ``/friction`` (with operating conditions), ``/rating`` and
+        ``/rating/flash_temperature`` (where the case can be rated) — those of the steps
+        run; root attributes ``case``, ``inputs``
         (the case as TOML, its
         ``[operating]`` table as run), the misalignment once (:data:`MISALIGNMENT_ATTRS`:
         ``misalignment_delta_E_mm`` … ``misalignment_delta_Sigma_deg``; the groups'
-        ``misalignment`` attribute refers to them), per-stage times ``time_*_s``, and
+        ``misalignment`` attribute refers to them), per-stage times ``time_*_s``,
+        ``<step>_not_run`` for an optional step that gave no group (why), and
         ``analysis_status`` (``"ok"``, ``"uncertified"``: some roll positions without a
         certified contact solution, ``"failed"``: some torque without any) with
         ``analysis_status_reason``, the sentence that says where and why
@@ -391,8 +384,9 @@ def run_analysis(
     Raises
     ------
     InputError
-        Bad case, torque, misalignment, flank, options, flags or operating conditions,
-        refused before any work (the message names the argument, what was given and what
+        Bad case, torque, misalignment, flank, options, flags, steps, operating conditions
+        or ``[rating]``/``[design]`` table (with the load-capacity step), refused before
+        any work (the message names the argument, what was given and what
         is accepted; torques and operating conditions against
         :data:`geometry.core.bounds.PHYSICAL_BOUNDS`, the oil temperature against the oil's
         range).
@@ -403,108 +397,56 @@ def run_analysis(
     Notes
     -----
     Seed ch. 2 (geometry, ease-off), ch. 3 (UTCA, LTCA), ch. 4 (deviations), ch. 5
-    (efficiency).
+    (efficiency); ISO 10300-1/-2/-3:2014 Method B1 (rating), ISO/TS 6336-20 (flash
+    temperature). The chain after pvlib's ``ModelChain`` (docs/api.md, "The analysis
+    chain").
+
+    Examples
+    --------
+    The contact alone, as a study's hot loop runs it::
+
+        tree = run_analysis(None, [250.0], geometry=False, root_stress=False,
+                            mesh_interface=False, operating=False,
+                            steps={"load_capacity": None})
     """
+    flags = {k: v for k, v in (("geometry", geometry), ("mesh_interface", mesh_interface))
+             if v is not None}
     check_analysis_arguments(case, torque, misalignment, flank, options,
-                     geometry=geometry, progress=progress, theoretical=theoretical,
-                     mesh_interface=mesh_interface)
+                             progress=progress, theoretical=theoretical, **flags)
     c = catalogue.resolve_case(case)
     if misalignment is not None:
         c = dataclasses.replace(c, misalignment=misalignment)
-    if root_stress is not False and root_stress is not True:
+    fe_options = None
+    if root_stress not in (None, False, True):
         from contact.compliance.fe import FEOptions
 
         if not isinstance(root_stress, FEOptions):
             raise InputError("root_stress: must be True, False or a "
                              f"contact.compliance.fe.FEOptions, got {root_stress!r}")
-    torques = c.operating.torque if torque is None else torque
-    opts = options or LTCAOptions()
-    if operating is None:
-        operating = operating_conditions(c)
-    elif operating is False:
-        operating = None
-    elif not isinstance(operating, OperatingConditions):
+        fe_options = root_stress
+    if operating is not None and operating is not False and not isinstance(
+            operating, OperatingConditions):
         raise InputError("operating: must be a friction.operating.OperatingConditions, False "
                          f"or None, got {operating!r}")
+    chain = resolve_chain(steps, geometry=geometry, mesh_interface=mesh_interface,
+                          root_stress=None if root_stress is None else root_stress is not False,
+                          efficiency=False if operating is False else None)
+    torques = c.operating.torque if torque is None else torque
+    opts = options or LTCAOptions()
+    if chain.efficiency is None:
+        operating = None
+    elif operating is None:
+        operating = operating_conditions(c)
     if operating is not None:  # the oil's range before the work, not after the LTCA
         operating.check_oil_temperature()
     # the case as run: its [operating] table (in the file's ``inputs``) records what ran
     c = dataclasses.replace(c, operating=_point_as_run(c, torques, operating))
-    times: dict[str, float] = {}
-    tree: dict[str, xr.Dataset] = {}
-    t0 = time.perf_counter()
-    if geometry:
-        for (m, f), ds in geometry_datasets(c).items():
-            tree[f"/geometry/{m}/{f}"] = ds
-    times["geometry"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    eo = ease_off(c, flank=flank)
-    times["easeoff"] = time.perf_counter() - t0
-    deviations = resolve_deviations(c, deviations)
-    if deviations is not None:
-        from contact.utca.deviations import apply_deviations
-
-        pin_dev, gear_dev = deviations
-        t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo)
-        tree["/theoretical/easeoff"] = t_eo
-        if theoretical:
-            tree["/theoretical/utca"] = t_ut
-            tree["/theoretical/ltca"] = loaded_tca(
-                c, torques, flank=flank, options=opts, easeoff=eo,
-                transitions=tuple(t_ut["transition_roll"].values),
-            )
-        eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
-    t0 = time.perf_counter()
-    eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
-    times["utca"] = time.perf_counter() - t0
-    if "/theoretical/easeoff" in tree:
-        change = (eo_ds["ease_off"] - tree["/theoretical/easeoff"]["ease_off"]).astype(float)
-        if not theoretical:
-            del tree["/theoretical/easeoff"]
-        eo_ds["ease_off_change"] = change.assign_attrs(
-            units=eo_ds["ease_off"].attrs.get("units", "um"),
-            long_name="ease-off change by the surface deviations (deviated - theoretical)",
-        )
-        eo_ds.attrs["deviations"] = (
-            "pinion: "
-            + ("yes" if deviations[0] is not None else "no")
-            + ", gear: "
-            + ("yes" if deviations[1] is not None else "no")
-        )
-    t0 = time.perf_counter()
-    problems: list | None = [] if mesh_interface else None
-    ltca_ds = loaded_tca(c, torques, flank=flank, options=opts, easeoff=eo, progress=progress,
-                         transitions=tuple(utca_ds["transition_roll"].values),
-                         roll_problems=problems)
-    times["ltca"] = time.perf_counter() - t0
-    if root_stress is not False:
-        from contact.compliance.fe import FEOptions
-        from contact.ltca.root_stress import root_stress as _root_stress
-
-        t0 = time.perf_counter()
-        # True: the default FE model, or the compliance's own with the FE compliance
-        fe_options = root_stress if isinstance(root_stress, FEOptions) else (
-            opts.fe_options() if opts.compliance == "fe" else None)
-        rs = _root_stress(c, eo, ltca_ds, fe_options, progress=progress)
-        ltca_ds = ltca_ds.assign(root_stress=rs["root_stress"],
-                                 root_stress_max=rs["root_stress_max"])
-        times["root_stress"] = time.perf_counter() - t0
-    tree["/easeoff"] = eo_ds
-    tree["/utca"] = utca_ds
-    tree["/ltca"] = ltca_ds
-    if problems is not None:
-        from contact.ltca.mesh_interface import mesh_interface as _mesh_interface
-
-        t0 = time.perf_counter()
-        tree["/mesh_interface"] = _mesh_interface(ltca_ds, problems)
-        del problems  # the roll problems' compliance matrices are not kept
-        times["mesh_interface"] = time.perf_counter() - t0
-    if operating is not None:
-        from friction.efficiency import efficiency_analysis
-
-        t0 = time.perf_counter()
-        tree["/friction"] = efficiency_analysis(ltca_ds, operating)
-        times["friction"] = time.perf_counter() - t0
+    state = run_chain(chain, ChainState(
+        case=c, torque=torques, flank=flank, options=opts, operating=operating,
+        deviations=resolve_deviations(c, deviations), theoretical=theoretical,
+        progress=progress, fe_options=fe_options))
+    tree, times = state.groups, state.times
+    ltca_ds = tree["/ltca"]
     for path, ds in tree.items():
         if "misalignment" in ds.attrs:  # stored once, at the root
             tree[path] = ds.assign_attrs(misalignment=MISALIGNMENT_REFERENCE)
@@ -517,6 +459,7 @@ def run_analysis(
             "solver": solver_name(opts.solver),
             **misalignment_attrs(c.misalignment),
             **{f"time_{k}_s": v for k, v in times.items()},
+            **{f"{k}_not_run": why for k, why in state.not_run.items()},
         }
     )
     root.attrs["summary"] = result_summary(c.name, tree)

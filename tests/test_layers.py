@@ -22,7 +22,8 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
               └── study, optimize, wear, load_capacity  (studies and loops over
                                                          analyses; rating, durability,
                                                          scuffing, micropitting)
-                    └── catalogue, pipeline  (the bundled cases; one whole analysis)
+                    └── catalogue, pipeline, chain  (the bundled cases; one whole
+                                                     analysis and its steps)
 
 * ``geometry.core`` (the toolkit's low layer) imports nothing else of the toolkit;
 * no private name (``_x``) imported from another module, and no private module imported
@@ -56,7 +57,7 @@ LAYER_DEPENDS = {
 #: import units of its own level and those below, never above; no cycle between units
 APPLICATION_LEVELS = (
     ("catalogue, pipeline", {"contact", "contact.catalogue",
-                             "contact.pipeline"}),
+                             "contact.pipeline", "contact.chain"}),
     ("study, optimize, wear, load capacity", {"contact.study", "contact.optimize",
                                               "contact.wear", "contact.load_capacity"}),
     ("plots, report", {"contact.plots"}),

@@ -63,7 +63,8 @@ def run(args: argparse.Namespace) -> int:
     case, mis = case_and_misalignment(args)
     tree = run_analysis(case, args.torque, misalignment=mis, flank=args.flank,
                         options=ltca_options(args), operating=False, geometry=False,
-                        deviations=None, progress=not args.no_progress)
+                        deviations=None, progress=not args.no_progress, root_stress=False,
+                        steps={"load_capacity": None})
     mesh = tree["mesh_interface"].to_dataset()
     print(f"mesh interface of {case.name} ({misalignment_text(tree.attrs)}), means over the "
           "mesh cycles and the peak amplitudes of the first mesh harmonics:")

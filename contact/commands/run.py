@@ -34,8 +34,7 @@ from contact.commands.output_paths import check_output_dir
 
 __all__ = ["TE_TABLE_HEADERS", "check_certified", "deviation_te_rows", "durability_lines",
            "misalignment_from_args", "plot", "print_verdict", "rating_lines", "register",
-           "root_stress_rows", "run",
-           "run_rating", "standard_scuffing", "write_figures"]
+           "root_stress_rows", "run", "standard_scuffing", "write_figures"]
 
 log = logging.getLogger(__name__)
 
@@ -202,7 +201,6 @@ def run(args: argparse.Namespace) -> int:
     output = checked_outputs(args, more={"--report": args.report})
     case, mis = case_and_misalignment(args)
     opts = ltca_options(args)
-    rating, rating_why = run_rating(args, case)  # refuses a bad [rating] before the work
     devs = None  # the case's [deviations] table, if any
     if args.no_deviations:
         devs = False
@@ -224,13 +222,16 @@ def run(args: argparse.Namespace) -> int:
         # a bar on a terminal, plain lines in a log (the LTCA and a first FE build)
         progress=args.progress,
         root_stress=args.root_stress,
+        # the chain's load-capacity step (/rating, /rating/flash_temperature; a bad
+        # [rating] table is refused before the work)
+        steps=None if args.rating else {"load_capacity": None},
     )
-    if rating is not None:
-        tree["rating"] = rating
+    rating_why = ("ISO 10300 rating not computed (--no-rating)" if not args.rating
+                  else str(tree.attrs.get("load_capacity_not_run", "")))
     fr = tree["friction"].to_dataset() if "friction" in tree.children else None
-    standard = standard_scuffing(tree, fr)
-    if standard is not None:  # stored beside the rating it is computed on
-        tree["rating/flash_temperature"] = standard
+    standard = (tree["rating/flash_temperature"].to_dataset()
+                if "rating" in tree.children and "flash_temperature" in tree["rating"].children
+                else None)
     lt = tree["ltca"].to_dataset()
     print(
         f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
@@ -336,20 +337,6 @@ def check_certified(tree, path) -> None:
             f"analysis {status}: {tree.attrs.get('analysis_status_reason', '')}; {path} "
             "holds what was found"
             + (" (root attribute analysis_status)" if str(path).endswith(".nc") else ""))
-
-
-def run_rating(args: argparse.Namespace, case):
-    """The ISO 10300 rating of ``ltca run``'s case at its torques, speed and flank
-    (:func:`contact.load_capacity.iso10300.analysis_rating`), or None and the line that says why not
-    (``--no-rating``, no ``[design]`` or ``[rating]`` table, no speed); a bad table is
-    refused (InputError)."""
-    if not args.rating:
-        return None, "ISO 10300 rating not computed (--no-rating)"
-    from contact.load_capacity.iso10300 import analysis_rating
-
-    torque = case.operating.torque if args.torque is None else args.torque
-    speed = case.operating.pinion_speed if args.speed is None else args.speed
-    return analysis_rating(case, torque, speed, args.flank)
 
 
 def rating_lines(tree, why: str = "") -> list[str]:
@@ -504,21 +491,14 @@ def standard_scuffing(tree, friction):
     """The standard's flash-temperature method on the virtual cylindrical gears of the
     tree's ``/rating`` group and its hypoid lengthwise-sliding variant, with the spread of
     S_B, at the efficiency stage's oil, temperature and roughness
-    (:func:`friction.iso_flash_temperature.iso_flash_temperature_variants`), or None where
-    the tree has no ``/rating`` or the method cannot be applied (the reason logged)."""
+    (:func:`contact.chain.scuffing_flash_temperature`, which the chain's load-capacity step
+    stores as ``/rating/flash_temperature``), or None where the tree has no ``/rating`` or
+    the method cannot be applied (the reason logged)."""
     if friction is None or "rating" not in tree.children:
         return None
-    from friction.iso_flash_temperature import iso_flash_temperature_variants
-    from geometry.core.errors import InputError
+    from contact.chain import scuffing_flash_temperature
 
-    try:
-        return iso_flash_temperature_variants(
-            tree["rating"].to_dataset(), lubricant=str(friction.attrs["lubricant"]),
-            oil_temperature=float(friction.attrs["inlet_temperature_degC"]),
-            roughness=float(friction.attrs["roughness_rq_um"]))
-    except (InputError, KeyError) as exc:
-        log.info("the standard's flash temperature method not applied: %s", exc)
-        return None
+    return scuffing_flash_temperature(tree["rating"].to_dataset(), friction)
 
 
 def durability_lines(friction, standard=None) -> list[str]:

@@ -471,7 +471,8 @@ def _analyse(case: Case, torques: list[float], misalignment: Misalignment | None
 
     c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
     tree = run_analysis(c, torques, options=options, deviations=False, geometry=False,
-                        operating=False, mesh_interface=False)
+                        operating=False, mesh_interface=False, root_stress=False,
+                        steps={"load_capacity": None})
     return _metrics(tree, c), (*_grid(tree), static_strength(tree))
 
 

@@ -371,7 +371,9 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
             c = dataclasses.replace(case, misalignment=mis)
             tree = run_analysis(c, list(problem.torque), flank=problem.flank,
                                 options=problem.options, deviations=False, geometry=False,
-                                operating=False)  # the objective needs no efficiency stage
+                                # the objective needs no efficiency, root stress or rating
+                                operating=False, root_stress=False,
+                                steps={"load_capacity": None})
             s = point_summary(tree, c)
             for k in METRICS:
                 metrics[k][im] = s[k]

@@ -160,7 +160,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         tree = run_analysis(dataclasses.replace(case, misalignment=mis), [torque],
                             flank=shared.flank, options=shared.options, geometry=False,
                             theoretical=False, operating=False, mesh_interface=False,
-                            root_stress=shared.root_stress)
+                            root_stress=shared.root_stress, steps={"load_capacity": None})
         ltca = tree["/ltca"].to_dataset()
         temp = None if duty.temperature is None else float(duty.temperature[index])
         op = operating_conditions(case, pinion_speed=float(duty.speed[index]),

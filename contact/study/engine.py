@@ -134,7 +134,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
             list(shared.torque), flank=shared.flank, options=shared.options,
             deviations=shared.deviations_at(point.get("deviation_scale")), geometry=False,
             theoretical=False, operating=False, mesh_interface=False,
-            root_stress=shared.root_stress)
+            root_stress=shared.root_stress, steps={"load_capacity": None})
         friction = []
         if shared.speed:
             ltca = tree["/ltca"].to_dataset()

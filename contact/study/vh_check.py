@@ -178,7 +178,8 @@ def vh_check(
         delta_E=mis.delta_E, delta_P=mis.delta_P, delta_G=mis.delta_G,
         delta_Sigma=mis.delta_Sigma),
         flank=flank, options=shared.options, deviations=shared.deviations_at(None),
-        geometry=False, theoretical=False, operating=False)
+        geometry=False, theoretical=False, operating=False, root_stress=False,
+        steps={"load_capacity": None})
     nom = point_summary(nominal, c)
     v_target = float(nom["pattern_centre_v"][0]) if profile is None else float(profile)
     if not np.isfinite(v_target):
@@ -206,7 +207,8 @@ def vh_check(
                                                        delta_G=mis.delta_G,
                                                        delta_Sigma=mis.delta_Sigma),
             flank=flank, options=shared.options, deviations=shared.deviations_at(None),
-            geometry=False, theoretical=False, operating=False)
+            geometry=False, theoretical=False, operating=False, root_stress=False,
+            steps={"load_capacity": None})
         s = point_summary(tree, c)
         centres.append((float(s["pattern_centre_u"][0]), float(s["pattern_centre_v"][0])))
         envelopes.append(tree["/ltca"]["pressure_envelope"].values[0])

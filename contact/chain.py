@@ -1,0 +1,548 @@
+"""The analysis chain: the named steps :func:`contact.run_analysis` runs, after pvlib's
+``ModelChain``.
+
+One analysis of a case is a fixed sequence of steps (:data:`STEP_ORDER`)::
+
+    geometry → utca → ltca → root_stress → mesh_interface → efficiency → load_capacity
+
+Each step is chosen by name from :data:`STEPS` (its implementations), given as a callable of
+the user's, or — the optional ones, all but ``utca`` and ``ltca`` — skipped with ``None``.
+:class:`AnalysisChain` holds one choice per step; its defaults are the one set of defaults
+of the toolkit, the steps ``ltca run`` runs (so ``contact.run_analysis(case)`` and
+``ltca run case`` write the same groups and variables)::
+
+    from contact import AnalysisChain, run_analysis
+
+    # the contact alone (a study's hot loop): no root stress, mesh interface, efficiency
+    # or load capacity
+    tree = run_analysis(None, [250.0], steps={"root_stress": None, "mesh_interface": None,
+                                              "efficiency": None, "load_capacity": None})
+
+A step is a function of one argument, the :class:`ChainState` of the analysis: it reads
+what the earlier steps left there (the case as run, the torques, the ease-off, the groups
+so far) and adds its group(s) to ``state.groups`` (paths such as ``"/ltca"``) — the same
+contract for the built-in steps and a user's.
+
+The step that writes ``/rating`` (load capacity) calls the load-capacity package
+(:func:`_load_capacity_step`, one function: the seam where the package's method registry
+plugs in).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import importlib
+import logging
+import time
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import xarray as xr
+
+from contact.utca.conjugate_map import flank_nodes
+from geometry.case import Case
+from geometry.core.errors import InputError
+from geometry.machine.flank import DEFAULT_GRID, flank_dataset
+
+__all__ = [
+    "OPTIONAL_STEPS",
+    "STEPS",
+    "STEP_ORDER",
+    "AnalysisChain",
+    "ChainState",
+    "available_steps",
+    "geometry_datasets",
+    "resolve_chain",
+    "scuffing_flash_temperature",
+]
+
+log = logging.getLogger(__name__)
+
+#: the steps of one analysis, in the order they run
+STEP_ORDER = ("geometry", "utca", "ltca", "root_stress", "mesh_interface", "efficiency",
+              "load_capacity")
+#: the steps that may be skipped (``None``); ``utca`` and ``ltca`` make the analysis
+OPTIONAL_STEPS = ("geometry", "root_stress", "mesh_interface", "efficiency", "load_capacity")
+
+#: a step: a name of :data:`STEPS`, a callable ``f(state: ChainState) -> None`` or None
+StepChoice = str | Callable[["ChainState"], None] | None
+
+
+@dataclass
+class ChainState:
+    """What the steps of one analysis share: the inputs as run and the results so far.
+
+    A step (built-in or a user's callable) reads the attributes it needs and adds its
+    group(s) to :attr:`groups`; it may replace a group an earlier step made (the root
+    stress step adds its variables to ``/ltca``).
+
+    Attributes
+    ----------
+    case : geometry.case.Case
+        The case as run: its misalignment and its ``[operating]`` table the run's (torques,
+        speed, oil, roughness; the file's ``inputs`` attribute is its TOML).
+    torque : float or sequence of float — [N·m]
+        The pinion torques, as given.
+    flank : str or None
+        ``"drive"``, ``"coast"``, a pinion flank name, or None (the drive flank).
+    options : contact.ltca.LTCAOptions
+        The LTCA's settings (solver, compliance model, roll positions, segments …).
+    operating : friction.operating.OperatingConditions or None
+        The efficiency step's conditions; None: no efficiency step.
+    deviations : (SurfaceDeviation or None, SurfaceDeviation or None) or None
+        The flanks' surface deviations (pinion, gear) [mm]; None: theoretical surfaces.
+    theoretical : bool
+        With deviations, also analyse the theoretical surfaces (``/theoretical``).
+    progress : bool or "lines"
+        Progress of the LTCA's rolls and of a first FE build.
+    fe_options : contact.compliance.fe.FEOptions or None
+        The root-stress step's FE model; None: the default one (with the FE compliance,
+        the compliance's own).
+    groups : dict of str to xarray.Dataset
+        The analysis groups so far, by path (``"/geometry/pinion/concave"``, ``"/easeoff"``,
+        ``"/utca"``, ``"/ltca"``, ``"/mesh_interface"``, ``"/friction"``, ``"/rating"`` …).
+    times : dict of str to float — [s]
+        Wall time per step (the file's ``time_<step>_s`` root attributes).
+    easeoff : contact.utca.easeoff.EaseOff or None
+        The ease-off the LTCA loads (the deviated surfaces' where there are deviations).
+    transitions : tuple of float — [rad]
+        The UTCA's roll angles where the contact passes to the next tooth pair.
+    roll_problems : list or None
+        Filled by the LTCA with every roll position's problem and solution when a
+        ``mesh_interface`` step follows (it linearises them), else None.
+    not_run : dict of str to str
+        Why an optional step gave no group (``"not requested"`` when the chain skips it;
+        the file's ``<step>_not_run`` root attributes).
+    """
+
+    case: Case
+    torque: Any
+    flank: str | None
+    options: Any
+    operating: Any = None
+    deviations: tuple | None = None
+    theoretical: bool = True
+    progress: bool | str = False
+    fe_options: Any = None
+    groups: dict[str, xr.Dataset] = field(default_factory=dict)
+    times: dict[str, float] = field(default_factory=dict)
+    easeoff: Any = None
+    transitions: tuple = ()
+    theoretical_easeoff: Any = None
+    theoretical_transitions: tuple = ()
+    roll_problems: list | None = None
+    not_run: dict[str, str] = field(default_factory=dict)
+    prepared: dict[str, Any] = field(default_factory=dict)
+
+
+# --------------------------------------------------------------------------- the steps
+
+def geometry_datasets(case: Case) -> dict[tuple[str, str], xr.Dataset]:
+    """The four flanks of a case as the ``/geometry`` group's Datasets, keyed by (member,
+    flank): :func:`geometry.machine.flank.geometry_datasets` on its default grid, the
+    flanks taken from the per-process memo of the teeth
+    (:func:`contact.utca.conjugate_map.flank_nodes`), which the ease-off reads too.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    dict
+        ``{("pinion", "concave"): Dataset, …}``, as
+        :func:`geometry.machine.flank.geometry_datasets` (the same arrays: each flank is
+        the same :func:`geometry.machine.flank.flank_surface` of the same grid; the gear's
+        is solved once per analysis instead of twice — once here, once by the ease-off —
+        and all four once per process for the analyses of the same teeth; issue 32).
+
+    Raises
+    ------
+    InputError
+        As :func:`geometry.machine.flank.flank_surface`.
+    """
+    out = {}
+    for m in ("pinion", "gear"):
+        for f in ("concave", "convex"):
+            out[m, f] = flank_dataset(case, m, f, surface=flank_nodes(case, m, f,
+                                                                      dict(DEFAULT_GRID)))
+    return out
+
+
+def geometry_flanks(state: ChainState) -> None:
+    """``/geometry/<member>/<flank>``: the four generated flanks on the default grid
+    (:func:`geometry_datasets`; seed ch. 2)."""
+    for (m, f), ds in geometry_datasets(state.case).items():
+        state.groups[f"/geometry/{m}/{f}"] = ds
+
+
+def utca_easeoff(state: ChainState) -> None:
+    """``/easeoff`` and ``/utca``: the ease-off and the unloaded TCA of the flank pair in
+    contact (:func:`contact.utca.easeoff.ease_off`, :func:`contact.utca.unloaded_tca`; seed
+    §2.3–2.4, ch. 3), of the deviated surfaces where there are deviations
+    (:func:`contact.utca.deviations.apply_deviations`, seed ch. 4) with the theoretical
+    ones under ``/theoretical`` and ``ease_off_change`` [µm] in ``/easeoff``."""
+    from contact.utca import unloaded_tca
+    from contact.utca.easeoff import ease_off
+
+    c, flank = state.case, state.flank
+    t0 = time.perf_counter()
+    eo = ease_off(c, flank=flank)
+    state.times["easeoff"] = time.perf_counter() - t0
+    t_eo = None  # the theoretical surfaces' /easeoff dataset
+    if state.deviations is not None:
+        from contact.utca.deviations import apply_deviations
+
+        t_eo, t_ut = unloaded_tca(c, flank=flank, easeoff=eo)
+        if state.theoretical:
+            state.groups["/theoretical/easeoff"] = t_eo
+            state.groups["/theoretical/utca"] = t_ut
+        state.theoretical_easeoff = eo
+        state.theoretical_transitions = tuple(t_ut["transition_roll"].values)
+        pin_dev, gear_dev = state.deviations
+        eo = apply_deviations(eo, pinion=pin_dev, gear=gear_dev, case=c)
+    t0 = time.perf_counter()
+    eo_ds, utca_ds = unloaded_tca(c, flank=flank, easeoff=eo)
+    state.times["utca"] = time.perf_counter() - t0
+    if t_eo is not None:
+        change = (eo_ds["ease_off"] - t_eo["ease_off"]).astype(float)
+        eo_ds["ease_off_change"] = change.assign_attrs(
+            units=eo_ds["ease_off"].attrs.get("units", "um"),
+            long_name="ease-off change by the surface deviations (deviated - theoretical)",
+        )
+        eo_ds.attrs["deviations"] = (
+            "pinion: " + ("yes" if state.deviations[0] is not None else "no")
+            + ", gear: " + ("yes" if state.deviations[1] is not None else "no"))
+    state.groups["/easeoff"] = eo_ds
+    state.groups["/utca"] = utca_ds
+    state.easeoff = eo
+    state.transitions = tuple(utca_ds["transition_roll"].values)
+
+
+def ltca_qp(state: ChainState) -> None:
+    """``/ltca``: the loaded TCA, the contact QP at every roll position
+    (:func:`contact.ltca.loaded_tca`, seed Eq. 3.12–3.14), with the solver and the
+    compliance model of ``state.options``; with deviations and ``theoretical``, also
+    ``/theoretical/ltca``."""
+    from contact.ltca import loaded_tca
+
+    c = state.case
+    if state.theoretical_easeoff is not None and state.theoretical:
+        t0 = time.perf_counter()
+        state.groups["/theoretical/ltca"] = loaded_tca(
+            c, state.torque, flank=state.flank, options=state.options,
+            easeoff=state.theoretical_easeoff, transitions=state.theoretical_transitions)
+        state.times["theoretical_ltca"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    state.groups["/ltca"] = loaded_tca(
+        c, state.torque, flank=state.flank, options=state.options, easeoff=state.easeoff,
+        progress=state.progress, transitions=state.transitions,
+        roll_problems=state.roll_problems)
+    state.times["ltca"] = time.perf_counter() - t0
+
+
+def root_stress_fe(state: ChainState) -> None:
+    """``root_stress`` [MPa] (torque, roll, member, tooth, fillet_point) and
+    ``root_stress_max`` [MPa] (torque, member) added to ``/ltca``: the fillet stress of both
+    members superposed from FE influence coefficients and the LTCA's segment forces
+    (:func:`contact.ltca.root_stress.root_stress`; docs/fe.md). The FE model is
+    ``state.fe_options``, or with the FE compliance (``options.compliance == "fe"``) the
+    compliance's own, else the default one. A design's first run builds its coefficients
+    (~15–20 s per member), later runs read them from the cache."""
+    from contact.ltca.root_stress import root_stress
+
+    opts = state.options
+    fe_options = state.fe_options
+    if fe_options is None and opts.compliance == "fe":
+        fe_options = opts.fe_options()
+    lt = state.groups["/ltca"]
+    rs = root_stress(state.case, state.easeoff, lt, fe_options, progress=state.progress)
+    state.groups["/ltca"] = lt.assign(root_stress=rs["root_stress"],
+                                      root_stress_max=rs["root_stress_max"])
+
+
+def mesh_interface_linearised(state: ChainState) -> None:
+    """``/mesh_interface``: mesh point, line of action, mesh stiffness and transmission-
+    error excitation for dynamic models, linearised from the LTCA's roll problems
+    (:func:`contact.ltca.mesh_interface.mesh_interface`); the problems' compliance
+    matrices are let go after it."""
+    from contact.ltca.mesh_interface import mesh_interface
+
+    state.groups["/mesh_interface"] = mesh_interface(state.groups["/ltca"],
+                                                     state.roll_problems or [])
+    state.roll_problems = None
+
+
+def efficiency_local_friction(state: ChainState) -> None:
+    """``/friction``: sliding and rolling velocities, film, friction coefficient, power
+    loss and mechanical efficiency at every contact segment of ``/ltca``
+    (:func:`friction.efficiency.efficiency_analysis`, seed ch. 5) at ``state.operating``;
+    nothing where there are no conditions (pinion speed 0)."""
+    if state.operating is None:
+        state.not_run["efficiency"] = "no pinion speed (the [operating] pinion_speed is 0)"
+        return
+    from friction.efficiency import efficiency_analysis
+
+    state.groups["/friction"] = efficiency_analysis(state.groups["/ltca"], state.operating)
+
+
+#: the load-capacity package the load-capacity step calls. It sits above the pipeline in
+#: tests/test_layers.py and imports ``contact.pipeline`` (``check_torques``), so a static
+#: import from here would close a cycle; the chain reaches it by name at run time until
+#: the package moves below the pipeline (issue 63: the coordinator re-points this seam to
+#: the package's method registry).
+LOAD_CAPACITY_PACKAGE = "contact.load_capacity"
+
+
+def _load_capacity(module: str, name: str) -> Any:
+    """``name`` of ``contact.load_capacity.<module>`` (:data:`LOAD_CAPACITY_PACKAGE`)."""
+    return getattr(importlib.import_module(f"{LOAD_CAPACITY_PACKAGE}.{module}"), name)
+
+
+def _rating_of(state: ChainState):
+    """(``/rating`` dataset or None, why not): the ISO 10300 Method B1 rating of the case
+    as run at its torques, pinion speed and flank (what ``ltca run`` rated before the
+    chain; :func:`contact.load_capacity.iso10300.analysis_rating`)."""
+    analysis_rating = _load_capacity("iso10300", "analysis_rating")
+    c = state.case
+    return analysis_rating(c, state.torque, c.operating.pinion_speed, state.flank)
+
+
+def _load_capacity_inputs(state: ChainState) -> None:
+    """Before any work: the rating (analytic, < 0.5 s), so that a bad ``[rating]`` or
+    ``[design]`` table is refused before the LTCA, not after it (the step uses it)."""
+    state.prepared["load_capacity"] = _rating_of(state)
+
+
+def _load_capacity_step(state: ChainState) -> None:
+    """``/rating`` and ``/rating/flash_temperature``: the load capacity of the pair — the
+    ISO 10300-1/-2/-3:2014 Method B1 rating at the run's torques and speed
+    (:func:`contact.load_capacity.iso10300.analysis_rating`) and, with ``/friction``, the
+    standard's flash-temperature method on its virtual cylindrical gears
+    (:func:`scuffing_flash_temperature`). Without a ``[design]`` or ``[rating]`` table or
+    a pinion speed there is no ``/rating``; ``state.not_run["load_capacity"]`` says why.
+
+    This is the one function through which the chain reaches the load-capacity package:
+    the seam its method registry (ISO 10300, AGMA 2003 …) plugs into.
+
+    With ``/friction``, first ``/scuffing_micropitting``: Blok's flash temperature, the
+    contact temperature, λ_GF and the safeties S_B, S_λ on the LTCA's contact segments
+    (:func:`contact.load_capacity.scuffing_micropitting.scuffing_micropitting`, from
+    ``/ltca`` and ``/friction``; with or without a rating)."""
+    friction = state.groups.get("/friction")
+    if friction is not None:
+        scuffing_micropitting = _load_capacity("scuffing_micropitting", "scuffing_micropitting")
+        state.groups["/scuffing_micropitting"] = scuffing_micropitting(
+            state.groups["/ltca"], friction,
+            lubricant=None if state.operating is None else state.operating.lubricant)
+    rating, why = state.prepared.pop("load_capacity", None) or _rating_of(state)
+    if rating is None:
+        state.not_run["load_capacity"] = why
+        return
+    state.groups["/rating"] = rating
+    flash = scuffing_flash_temperature(rating, state.groups.get("/friction"))
+    if flash is not None:  # stored beside the rating it is computed on
+        state.groups["/rating/flash_temperature"] = flash
+
+
+def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
+                               ) -> xr.Dataset | None:
+    """The standard's flash-temperature method on the virtual cylindrical gears of a
+    ``/rating`` dataset and its hypoid lengthwise-sliding variant, with the spread of S_B,
+    at the efficiency step's oil, oil temperature [degC] and roughness Rq [µm]
+    (:func:`contact.load_capacity.iso_flash_temperature.iso_flash_temperature_variants`;
+    ISO/TS 6336-20).
+
+    Parameters
+    ----------
+    rating : xarray.Dataset
+        The ``/rating`` group.
+    friction : xarray.Dataset or None
+        The ``/friction`` group (its attributes ``lubricant``, ``inlet_temperature_degC``,
+        ``roughness_rq_um``); None: no method.
+
+    Returns
+    -------
+    xarray.Dataset or None
+        The ``/rating/flash_temperature`` group; None without ``friction`` or where the
+        method cannot be applied (the reason logged at INFO).
+    """
+    if friction is None:
+        return None
+    iso_flash_temperature_variants = _load_capacity("iso_flash_temperature",
+                                                    "iso_flash_temperature_variants")
+
+    try:
+        return iso_flash_temperature_variants(
+            rating, lubricant=str(friction.attrs["lubricant"]),
+            oil_temperature=float(friction.attrs["inlet_temperature_degC"]),
+            roughness=float(friction.attrs["roughness_rq_um"]))
+    except (InputError, KeyError) as exc:
+        log.info("the standard's flash temperature method not applied: %s", exc)
+        return None
+
+
+#: every step's implementations by name; the first of each is the default
+STEPS: Mapping[str, Mapping[str, Callable[[ChainState], None]]] = {
+    "geometry": {"flanks": geometry_flanks},
+    "utca": {"easeoff": utca_easeoff},
+    "ltca": {"qp": ltca_qp},
+    "root_stress": {"fe": root_stress_fe},
+    "mesh_interface": {"linearised": mesh_interface_linearised},
+    "efficiency": {"local_friction": efficiency_local_friction},
+    "load_capacity": {"iso10300": _load_capacity_step},
+}
+
+#: checks a built-in step makes on its inputs before any step runs
+_BEFORE_WORK: Mapping[Callable, Callable[[ChainState], None]] = {
+    _load_capacity_step: _load_capacity_inputs,
+}
+
+
+def available_steps() -> dict[str, tuple[str, ...]]:
+    """The steps of the chain and the names each may be chosen by (default first).
+
+    Returns
+    -------
+    dict of str to tuple of str
+        ``{"geometry": ("flanks",), "utca": ("easeoff",), …}`` in :data:`STEP_ORDER`.
+    """
+    return {step: tuple(STEPS[step]) for step in STEP_ORDER}
+
+
+def _default(step: str) -> str:
+    return next(iter(STEPS[step]))
+
+
+@dataclass(frozen=True)
+class AnalysisChain:
+    """One choice per step of the analysis (:data:`STEP_ORDER`): a name of
+    :data:`STEPS`, a callable ``f(state: ChainState) -> None``, or None to skip an optional
+    step (:data:`OPTIONAL_STEPS`). The defaults are the steps ``ltca run`` runs.
+
+    Raises
+    ------
+    InputError
+        An unknown name (the message lists the available ones), a value that is neither
+        a name, a callable nor None, or None for ``utca`` or ``ltca``.
+
+    Examples
+    --------
+    >>> from contact import AnalysisChain
+    >>> AnalysisChain(root_stress=None).root_stress is None
+    True
+    """
+
+    geometry: StepChoice = "flanks"
+    utca: StepChoice = "easeoff"
+    ltca: StepChoice = "qp"
+    root_stress: StepChoice = "fe"
+    mesh_interface: StepChoice = "linearised"
+    efficiency: StepChoice = "local_friction"
+    load_capacity: StepChoice = "iso10300"
+
+    def __post_init__(self) -> None:
+        for step in STEP_ORDER:
+            _check_choice(step, getattr(self, step))
+
+    def function(self, step: str) -> Callable[[ChainState], None] | None:
+        """The callable that runs ``step`` (None: skipped)."""
+        choice = getattr(self, step)
+        return STEPS[step][choice] if isinstance(choice, str) else choice
+
+    def describe(self) -> dict[str, str]:
+        """Each step's choice as text: its name, ``"callable <qualified name>"`` or
+        ``"skipped"``."""
+        out = {}
+        for step in STEP_ORDER:
+            choice = getattr(self, step)
+            out[step] = ("skipped" if choice is None else choice if isinstance(choice, str)
+                         else f"callable {getattr(choice, '__qualname__', repr(choice))}")
+        return out
+
+
+def _check_choice(step: str, choice: StepChoice) -> None:
+    names = ", ".join(STEPS[step])
+    if choice is None:
+        if step not in OPTIONAL_STEPS:
+            raise InputError(f"steps.{step}: the analysis cannot skip it; give one of "
+                             f"{names} or a callable f(state)")
+        return
+    if isinstance(choice, str):
+        if choice not in STEPS[step]:
+            skip = ", or None to skip it" if step in OPTIONAL_STEPS else ""
+            raise InputError(f"steps.{step}: unknown step {choice!r}; available: {names} "
+                             f"(or a callable f(state){skip})")
+        return
+    if not callable(choice):
+        raise InputError(f"steps.{step}: must be one of {names}, a callable f(state) or "
+                         f"None, got {type(choice).__name__} {choice!r}")
+
+
+def resolve_chain(steps: AnalysisChain | Mapping[str, StepChoice] | None = None,
+                  **switches: bool | None) -> AnalysisChain:
+    """The chain of :func:`contact.run_analysis`'s ``steps`` and on/off keywords.
+
+    Parameters
+    ----------
+    steps : AnalysisChain, mapping of step name to choice, or None
+        The chain, or the steps that differ from the defaults (:class:`AnalysisChain`).
+    **switches : bool or None
+        ``geometry``, ``root_stress``, ``mesh_interface``, ``efficiency``,
+        ``load_capacity``: False skips the step, True runs it (its default implementation
+        where ``steps`` skips it), None leaves ``steps``' choice.
+
+    Returns
+    -------
+    AnalysisChain
+
+    Raises
+    ------
+    InputError
+        A step name not among :data:`STEP_ORDER` (listed), or as :class:`AnalysisChain`.
+    """
+    if steps is None:
+        chain = AnalysisChain()
+    elif isinstance(steps, AnalysisChain):
+        chain = steps
+    elif isinstance(steps, Mapping):
+        unknown = [k for k in steps if k not in STEP_ORDER]
+        if unknown:
+            raise InputError(f"steps: unknown step {unknown[0]!r}; the steps are "
+                             f"{', '.join(STEP_ORDER)}")
+        chain = AnalysisChain(**steps)
+    else:
+        raise InputError("steps: must be a contact.AnalysisChain, a mapping of step name to "
+                         f"a name, callable or None, or None; got {type(steps).__name__}")
+    change: dict[str, StepChoice] = {}
+    for step, on in switches.items():
+        if on is None:
+            continue
+        if on is False:
+            change[step] = None
+        elif getattr(chain, step) is None:
+            change[step] = _default(step)
+    return dataclasses.replace(chain, **change) if change else chain
+
+
+def run_chain(chain: AnalysisChain, state: ChainState) -> ChainState:
+    """Run the steps of ``chain`` on ``state`` in :data:`STEP_ORDER`; each step's wall time
+    in ``state.times`` (the step's own entries kept), a skipped step's reason in
+    ``state.not_run``. Checks the built-in steps make on their inputs run first, before
+    any work."""
+    functions = {step: chain.function(step) for step in STEP_ORDER}
+    if functions["mesh_interface"] is not None:
+        state.roll_problems = []
+    for f in functions.values():
+        if f in _BEFORE_WORK:
+            _BEFORE_WORK[f](state)
+    for step, f in functions.items():
+        if f is None:
+            state.not_run[step] = "not requested (steps)"
+            continue
+        t0 = time.perf_counter()
+        f(state)
+        key = "friction" if step == "efficiency" else step
+        state.times.setdefault(key, time.perf_counter() - t0)
+    return state
