@@ -45,7 +45,43 @@ myst_enable_extensions = ["dollarmath", "colon_fence", "deflist"]
 myst_heading_anchors = 4
 autodoc_typehints = "none"
 numpydoc_show_class_members = False
-numpydoc_validation_checks: set[str] = set()
+#: numpydoc's validation of every public docstring (the names of docs/api.md), warnings
+#: that ``-W`` makes errors. The checks that carry CONTRIBUTING.md's promise: GL08 a
+#: docstring, SS01 a summary line; PR01 every parameter documented (its entry holds the
+#: type, shape and unit), PR02 none documented that the signature lacks, PR04 every
+#: parameter typed (the type line carries the shape: ``array_like (N, 3)``); RT01 a Returns
+#: section where the function returns, RT03 the returned value described (dims, units).
+#: Units, sources and Raises sections are the project's own checks
+#: (tests/test_api_docs.py), which numpydoc has none for. Not checked: numpydoc's style
+#: rules (GL01-GL03, SS02-SS06, PR06-PR10, RT02, RT04, RT05: our entries put "— [unit]" on
+#: the type line), extended summaries (ES01), See Also (SA01) and Examples (EX01).
+numpydoc_validation_checks = {"GL08", "SS01", "PR01", "PR02", "PR04", "RT01", "RT03"}
+#: the public names whose docstrings do not pass yet, each with why; a short, named list
+#: (tests/test_api_docs.py fails on a name listed here that passes, so it only shrinks)
+NUMPYDOC_PENDING = {
+    # results and containers read by attribute: their fields are documented under
+    # "Attributes" (PR01 reads the constructor's parameters)
+    "contact.ContactSolution": "a result; fields under Attributes",
+    "geometry.Case": "a loaded case file; fields under Attributes",
+    # modules other work of issue 63 was changing while validation was turned on
+    "contact.AnalysisChain": "contact/chain.py new (issue 63 item 1): fields undocumented",
+    "contact.ChainState": "contact/chain.py new (issue 63 item 1): fields undocumented",
+    "contact.FEOptions": "a Raises section inside Parameters (contact/compliance/fe)",
+    "contact.develop": "Returns without a description (contact/optimize/development.py)",
+    "contact.contact_pattern_figure": "Returns without a description (contact/plots/flank.py)",
+    "contact.plot_analysis": "parameters and Returns undocumented (contact/plots/analysis.py)",
+    "contact.write_report": "parameters undocumented (contact/plots/report.py)",
+    "contact.vh_check": "**legacy undocumented (contact/study/vh_check.py)",
+    "friction.load_lubricant": "Returns without a description (friction/lubricant.py)",
+    "friction.pressure_viscosity_coefficient": "Returns without a description "
+                                               "(friction/lubricant.py)",
+    "friction.register_friction_model": "Returns without a description "
+                                        "(friction/coefficient.py)",
+    "friction.unregister_friction_model": "name undocumented (friction/coefficient.py)",
+    "geometry.load_basic": "Returns without a description (geometry/synthesis)",
+    "geometry.synthesize": "Returns without a description (geometry/synthesis)",
+}
+numpydoc_validation_exclude = {rf"^{name.replace('.', '[.]')}$" for name in NUMPYDOC_PENDING}
 
 sphinx_gallery_conf = {
     "examples_dirs": "examples",

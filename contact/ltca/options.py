@@ -104,9 +104,13 @@ class LTCAOptions:
         flank's Hertz pressure is reported as computed).
     youngs_modulus, poisson_ratio : float — [MPa], [1]
         Steel for both members (default 206 000 MPa, 0.3).
-    theory, n_height, n_face
-        Shell-model settings (:func:`contact.compliance.pair_compliance_model`); with
-        ``compliance="fe"`` the shell tooth's measurement still gives Weber's depths.
+    theory : str
+        Shell theory of the shell model (default ``"seed"``;
+        :func:`contact.compliance.pair_compliance_model`).
+    n_height, n_face : int
+        The shell model's shape functions over the tooth height (1–20, default 6) and the
+        face width (1–30, default 21). With ``compliance="fe"`` the shell tooth's
+        measurement still gives Weber's depths.
     compliance : str, ComplianceModel or callable
         The teeth's bending, shear and base compliance, a model of the registry
         :mod:`contact.ltca.compliance_models`: ``"shell"`` (default; the seed's model),
@@ -119,6 +123,12 @@ class LTCAOptions:
         The FE model of ``compliance="fe"`` (default None: ``FEOptions()`` with this
         analysis' material); its material must be the analysis' (``youngs_modulus``,
         ``poisson_ratio``). Refused with the shell compliance (it would be unused).
+
+    Raises
+    ------
+    InputError
+        A field out of its range (named, with the range): counts, ``spacing``, ``pairs``
+        without the reference pair 0, non-positive lengths or limits, an unknown model.
     """
 
     cycles: int = 2

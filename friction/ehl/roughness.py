@@ -280,6 +280,12 @@ class GroundSurface:
         Spacing on which the profile is generated before it is filtered and resampled to a
         solver's grid, > 0; the same seed and sampling give the same profile whatever the
         solver's grid (a grid-convergence study compares one surface).
+
+    Notes
+    -----
+    A Gaussian random profile of exponential autocorrelation, the form measured on ground
+    and other finished surfaces (Whitehouse & Archard 1970; Patir 1978), synthesised by
+    filtering white noise (Hu & Tonder 1992; :func:`ground_profile`).
     """
 
     rq: float

@@ -759,7 +759,9 @@ def stochastic_summary(condition: LineContactCondition, surfaces, grid: Grid | N
 
     Notes
     -----
-    Source: module docstring; docs/ehl.md.
+    Source: the average-flow Reynolds equation of Patir & Cheng (1978, 1979) with
+    Greenwood & Williamson (1966) summits and the seed's friction, Eq. 5.7–5.9 (module
+    docstring; docs/ehl.md).
     """
     pr, _g, _stats, p, _h0, its, fields, fr = _solve(condition, surfaces, grid, options)
     return _summary(pr, p, its, fields, fr)
@@ -800,6 +802,11 @@ def solve_stochastic_line_contact(condition: LineContactCondition, surfaces,
     ------
     InputError, ConvergenceError
         As :func:`stochastic_summary`.
+
+    Notes
+    -----
+    The model of :func:`stochastic_summary`: Patir & Cheng's average-flow Reynolds equation
+    (1978, 1979), Greenwood & Williamson (1966) summits, the seed's friction (Eq. 5.7–5.9).
     """
     t0 = _time.perf_counter()
     pr, g, stats, p, _h0, its, fields, fr = _solve(condition, surfaces, grid, options)

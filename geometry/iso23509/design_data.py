@@ -146,6 +146,11 @@ class BevelGearDesign:
         against 63.145° exact. Giving the published δ2 reproduces the published pitch cone
         (the offset and ratio conditions still hold exactly); leave it out for a design.
 
+    Raises
+    ------
+    InputError
+        A bad, missing or superfluous value (named, with its accepted range).
+
     Notes
     -----
     Source: ISO 23509:2016 cl. 5.1 (initial data) and cl. 6.1 (input data types I and II);

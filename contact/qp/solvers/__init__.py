@@ -538,7 +538,7 @@ def solve_contact(
     polish_solution : bool
         If the backend's answer does not certify, solve the KKT system on its
         contact set exactly and keep that if it certifies (default True).
-    tolerance : float
+    tolerance : float — [1]
         Relative tolerance on every residual for ``found`` (default 1e-7).
     initial : ContactSolution or array (N,) of forces [N], optional
         Warm start (the previous roll position's solution); ignored by backends
@@ -566,6 +566,13 @@ def solve_contact(
     PluginError
         A backend that returned forces of the wrong shape (not one per segment) or more
         than one rotation: a broken backend, not a failed solve (named).
+
+    Notes
+    -----
+    The problem is the seed's loaded-contact problem (Eq. 3.12–3.14) written as the convex
+    QP of Conry & Seireg (1972): compatibility with slack, complementarity and torque
+    equilibrium are its KKT conditions, and the residuals that certify a solution are
+    those four conditions, computed here (:func:`contact.qp.contact_residuals`).
     """
     from contact.errors import ProblemInputError
 
