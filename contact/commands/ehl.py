@@ -25,7 +25,7 @@ def register(sub) -> None:
         "docs/ehl.md). Roughness 0 0 is the smooth film, solved steady on the grid its "
         "Moes load parameter asks. Rough surfaces are reproducible measured-like ground "
         "profiles (seeds 1 and 2) scaled to the Rq given; by default their asperity scale "
-        "is described by its statistics (--model stochastic: average-flow Reynolds "
+        "is described by its statistics (the stochastic model: average-flow Reynolds "
         "equation, elastic-plastic summits, the film's shear at the surfaces' flash "
         "temperature), which carries the contact from full film to dry. (The resolved "
         "transient model of the seed's Li & Kahraman form is no longer offered here: its "
