@@ -46,6 +46,7 @@ from geometry.synthesis.basic_design import (
     with_flank_options,
 )
 from geometry.synthesis.correction import SETTING_VARIABLES, setting_value, tool_with_values
+from geometry.synthesis.tip_plane import tip_plane_on_root_cone
 
 __all__ = ["RELIEF_VARIABLES", "SYNTHESIS_VARIABLES", "DesignVariable", "case_at",
            "check_variables", "start_values", "synthesised_case", "variable_unit"]
@@ -211,6 +212,12 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
     settings = {n: float(v) * SETTING_VARIABLES[n].scale
                 for n, v in zip(names, values, strict=True) if n not in RELIEF_VARIABLES}
     new = tool_with_values(tool, settings) if settings else tool
+    if (settings and case.pair.method == "FM" and new.machine.process == "Generate"
+            and not new.blade.placed):
+        # a setting moves the cut's root line: its tip plane back onto the root cone, as
+        # the synthesis' step 8 (the flank is unchanged)
+        placed = tip_plane_on_root_cone(new.blade, new.machine, mem.blank, mem.hand)
+        new = dataclasses.replace(new, blade=placed.blade, machine=placed.settings)
     relief = {n: float(v) for n, v in zip(names, values, strict=True) if n in RELIEF_VARIABLES}
     if relief:
         missing = [n for n in RELIEF_VARIABLES if n not in relief]

@@ -68,39 +68,21 @@ from scipy.interpolate import Akima1DInterpolator, CubicSpline
 
 from geometry.core.errors import InputError, LTCAError
 from geometry.machine.cutter import profile_sections
-from geometry.machine.family import generated_family, meshing_function
 from geometry.machine.flank import blank_outline
 from geometry.machine.meshing import solve_envelope
+from geometry.machine.root_line import MIRROR as _MIRROR
+from geometry.machine.root_line import below_root_cone as _below_root
+from geometry.machine.root_line import projection_point as _bilinear
+from geometry.machine.root_line import section_envelope, section_march, tip_sections
 
 __all__ = ["SideCurve", "ToothSection", "ToothSections", "tooth_sections"]
 
 log = logging.getLogger(__name__)
 
-_MIRROR = np.array([1.0, -1.0, 1.0])
-#: profile fractions of the flank targets: down to a whole depth under the root cone
-#: (generated slot bottoms lie up to half a depth under it at the toe of a tilted
-#: pinion), denser near the root
-_V_TARGETS = np.r_[np.linspace(-1.0, -0.3, 15)[:-1], np.linspace(-0.3, 0.2, 41)[:-1],
-                   np.linspace(0.2, 1.0, 17)]
-_EDGE_STEPS = 24  # blade arc-length steps of the fillet continuation down to s = 0
-_NEWTON_ITER = 40
-_NEWTON_TOL = 1e-10  # [mm] position, [1] × L meshing residual
-_STEP_LIMIT = np.array([0.05, 0.05, 0.05])  # [rad, rad, 1] Newton step limits θ, q, v
 _SPLIT_SLOPE = math.radians(45.0)  # the fillet is split where it leans 45° in the section
 _SPLIT_RANGE = (0.2, 0.8)  # ... clamped to this fraction of its arc from the slot bottom
 _CREASE_ANGLE = 1.0  # [deg] slot-bottom creases sharper than this are rounded
 _BLEND_BISECTIONS = 8  # bisections of the rounding radius (to 0.4 % of its range)
-
-
-def _bilinear(corners: np.ndarray, u, v):
-    """(z, ρ) [mm] of projection-plane fractions and their v-derivative (..., 2)."""
-    u = np.asarray(u, dtype=float)[..., None]
-    v = np.asarray(v, dtype=float)[..., None]
-    c = corners
-    p = (1 - u) * (1 - v) * c[0, 0] + u * (1 - v) * c[1, 0] + (1 - u) * v * c[0, 1] \
-        + u * v * c[1, 1]
-    pv = (1 - u) * (c[0, 1] - c[0, 0]) + u * (c[1, 1] - c[1, 0])
-    return p, np.broadcast_to(pv, p.shape)
 
 
 @dataclass(frozen=True, eq=False)
@@ -294,100 +276,6 @@ def _unwrap(phi, ref: float):
     return ref + np.remainder(np.asarray(phi) - ref + math.pi, 2.0 * math.pi) - math.pi
 
 
-def _fillet_march(tool, blank, corners, u, start, mirror: bool, s_end=0.0,
-                  steps: int = _EDGE_STEPS, sections=None):
-    """Fillet points at blade arc lengths from ``start`` down to ``s_end``, per section.
-
-    ``start`` (K, 4): s, θ, q, v of a generated point in each section (NaN where none).
-    Newton's method on [z − Z(u, v), ρ − P(u, v), f] = 0 in (θ, q, v) at fixed s (seed
-    Eq. 2.7a, 2.8; in Formate q ≡ 0 and f is not used), continued in s from the previous
-    step. ``s_end`` [mm] (scalar or (K,)): below 0 the march goes on along the blade's tip
-    (``sections`` from :func:`_tip_sections`). Returns (K, steps) arrays s, v, φ, with NaN
-    after a step that fails, and (K, 3) θ, q, v of each section's last point.
-    """
-    gen = tool.machine.process == "Generate"
-    length = blank.outer_cone_distance
-    k = len(u)
-    s_out = np.full((k, steps), np.nan)
-    v_out, phi_out = s_out.copy(), s_out.copy()
-    alive = np.all(np.isfinite(start), axis=1)
-    x = np.where(alive[:, None], start[:, 1:], 0.0)
-    s0 = np.where(alive, start[:, 0], 0.0)
-    s_end = np.broadcast_to(np.asarray(s_end, dtype=float), s0.shape)
-    m = 3 if gen else 2
-    for j in range(steps):
-        s = s0 + (s_end - s0) * ((j + 1) / steps)
-        idx = np.flatnonzero(alive)
-        if idx.size == 0:
-            break
-        xi = x[idx].copy()
-        ok = np.zeros(idx.size, bool)
-        for _ in range(_NEWTON_ITER):
-            th, q, v = xi.T
-            fam = generated_family(tool.blade, tool.machine, s[idx], th,
-                                   q if gen else np.zeros_like(q), sections=sections)
-            r = fam.r
-            rho = np.hypot(r[:, 0], r[:, 1])
-            p, pv = _bilinear(corners, u[idx], v)
-            rows = [np.stack([r[:, 2] - p[..., 0], rho - p[..., 1]], -1)]
-            drho = [(r[:, 0] * d[:, 0] + r[:, 1] * d[:, 1]) / rho
-                    for d in (fam.r_theta, fam.r_q)]
-            jac = np.zeros((idx.size, m, m))
-            jac[:, 0, 0], jac[:, 1, 0] = fam.r_theta[:, 2], drho[0]
-            jac[:, 0, m - 1], jac[:, 1, m - 1] = -pv[..., 0], -pv[..., 1]
-            if gen:
-                f, g = meshing_function(fam, length)
-                rows.append(f[:, None])
-                jac[:, 0, 1], jac[:, 1, 1] = fam.r_q[:, 2], drho[1]
-                jac[:, 2, 0], jac[:, 2, 1] = g[:, 1], g[:, 2]
-            res = np.concatenate(rows, axis=1)
-            err = np.abs(res[:, :2]).max(axis=1)
-            if gen:
-                err = np.maximum(err, length * np.abs(res[:, 2]))
-            ok = err < _NEWTON_TOL
-            if ok.all():
-                break
-            try:
-                dx = np.linalg.solve(jac, -res[..., None])[..., 0]
-            except np.linalg.LinAlgError:
-                break
-            lim = _STEP_LIMIT[[0, 1, 2] if gen else [0, 2]]
-            fac = np.minimum(1.0, np.min(lim / np.maximum(np.abs(dx), 1e-300), axis=1))
-            step = fac[:, None] * dx
-            if gen:
-                xi += step
-            else:
-                xi[:, 0] += step[:, 0]
-                xi[:, 2] += step[:, 1]
-        good = ok & np.isfinite(xi).all(axis=1)
-        alive[idx[~good]] = False
-        gi = idx[good]
-        x[gi] = xi[good]
-        fam = generated_family(tool.blade, tool.machine, s[gi], x[gi, 0],
-                               x[gi, 1] if gen else np.zeros(gi.size), sections=sections)
-        pos = fam.r * (_MIRROR if mirror else 1.0)
-        s_out[gi, j], v_out[gi, j] = s[gi], x[gi, 2]
-        phi_out[gi, j] = np.arctan2(pos[:, 1], pos[:, 0])
-    return s_out, v_out, phi_out, np.where(alive[:, None], x, np.nan)
-
-
-def _tip_sections(blade):
-    """The blade's :func:`profile_sections` with its flat tip below s = 0: the tip line
-    (h = 0, continuing the edge radius's tangent at s = 0 across the slot), so that the
-    same generation (seed Eq. 2.7a, 2.8) gives the slot bottom the tip cuts."""
-    sec = profile_sections(blade)
-
-    def cat(a, x):
-        return np.r_[x, a]
-
-    return sec._replace(
-        s_lo=cat(sec.s_lo, -np.inf), s_hi=cat(sec.s_hi, 0.0), s_ref=cat(sec.s_ref, 0.0),
-        rho_ref=cat(sec.rho_ref, sec.rho_ref[0]), h_ref=cat(sec.h_ref, 0.0),
-        psi_ref=cat(sec.psi_ref, sec.psi_ref[0]), kappa=cat(sec.kappa, 0.0),
-        corner_above=cat(sec.corner_above, False), main=sec.main + 1,
-        names=("tip", *sec.names))
-
-
 def _flank_samples(case, member: str, flank: str, u: np.ndarray, shift: float,
                    ref: float, tip: float = 0.0) -> _Samples:
     """Generated points of one flank in each section: at the profile-fraction targets,
@@ -397,36 +285,23 @@ def _flank_samples(case, member: str, flank: str, u: np.ndarray, shift: float,
     mem = case.member(member)
     tool, blank = mem.flank(flank), mem.blank
     corners = blank_outline(blank).corners
-    uu, vv = np.meshgrid(u, _V_TARGETS, indexing="ij")
-    p, _ = _bilinear(corners, uu, vv)
-    seed = (len(u) // 2, int(np.argmin(np.abs(_V_TARGETS - 0.5))))
-    sol = solve_envelope(tool.blade, tool.machine, p[..., 0], p[..., 1],
-                         length_scale=blank.outer_cone_distance,
-                         depth=blank.outer_addendum + blank.outer_dedendum, seed_index=seed)
+    sol, vv, start = section_envelope(tool.blade, tool.machine, blank, u)
     mirror = mem.hand == "left"
     pos = sol.position * (_MIRROR if mirror else 1.0)
     phi = np.arctan2(pos[..., 1], pos[..., 0])
     ok = sol.reason == 0
     # the fillet march starts from the lowest generated point of each section
-    s_low = np.where(ok, sol.s, np.inf)
-    j0 = np.argmin(s_low, axis=1)
-    rows = np.arange(len(u))
-    start = np.column_stack([sol.s[rows, j0], sol.theta[rows, j0], sol.q[rows, j0],
-                             vv[rows, j0]])
-    start[~ok[rows, j0]] = np.nan
-    if tool.machine.process != "Generate":
-        start[:, 2] = 0.0
-        start[~ok[rows, j0]] = np.nan
-    sm, vm, pm, last = _fillet_march(tool, blank, corners, u, start, mirror)
+    sm, vm, pm, last = section_march(tool.blade, tool.machine, blank, corners, u, start,
+                                     mirror)
     at0 = np.isfinite(sm[:, -1]) & (np.abs(sm[:, -1]) < 1e-12)
     root = np.column_stack([np.where(at0, vm[:, -1], np.nan),
                             np.where(at0, _unwrap(pm[:, -1] + shift, ref), np.nan)])
     if tip > 0.0:
         steps = max(8, math.ceil(tip / 0.1))
-        st, vt, pt, _ = _fillet_march(tool, blank, corners, u,
+        st, vt, pt, _ = section_march(tool.blade, tool.machine, blank, corners, u,
                                       np.column_stack([np.where(at0, 0.0, np.nan), last]),
                                       mirror, s_end=-tip, steps=steps,
-                                      sections=_tip_sections(tool.blade))
+                                      sections=tip_sections(tool.blade))
         sm, vm, pm = np.hstack([sm, st]), np.hstack([vm, vt]), np.hstack([pm, pt])
     out_v, out_phi, out_s = [], [], []
     for i in range(len(u)):
@@ -739,13 +614,3 @@ def tooth_sections(case, member: str, u) -> ToothSections:
     return ToothSections(member, u, tuple(sections), pitch, shift, left_flank, corners,
                          depth, edge, bool(one_cut), root_line,
                          {f: mem.flank(f).blade.point_width for f in edge})
-
-
-def _below_root(corners: np.ndarray, u, v) -> np.ndarray:
-    """Distance [mm] of projection-plane points (u, v) below the blank's root cone,
-    perpendicular to its generatrix (negative: above it)."""
-    root = corners[1, 0] - corners[0, 0]
-    normal = np.array([root[1], -root[0]]) / np.hypot(*root)
-    normal *= math.copysign(1.0, float(normal @ (corners[0, 1] - corners[0, 0])))
-    pts, _ = _bilinear(corners, u, v)
-    return -(pts - corners[0, 0]) @ normal
