@@ -3,8 +3,9 @@
 Lubricant properties, film thickness and lambda ratio, friction coefficient models
 (a registry: the bundled ``kolivand2009``, ``xu2007``, ``benedict_kelley``, ``constant``
 and any registered with :func:`register_friction_model`), the mixed-EHL line-contact
-solvers, rolling loss, power loss and efficiency, flash temperature and scuffing, specific
-film thickness and micropitting.
+solvers, rolling loss, power loss and efficiency. (Flash temperature, scuffing, specific film
+thickness and micropitting are load capacity: :mod:`contact.load_capacity`, which reads the
+efficiency stage's ``/friction`` dataset; nothing here reads its outputs.)
 
 The names below are the package's public, stable surface (issue 54): import them from
 ``friction``, never from a submodule::
@@ -22,18 +23,14 @@ __all__ = [
     "OperatingConditions",
     "available_friction_models",
     "available_lubricants",
-    "blok_flash_temperature",
     "efficiency_analysis",
     "friction_coefficient",
     "load_kolivand2009_fit",
     "load_lubricant",
-    "micropitting_safety",
     "pressure_viscosity_coefficient",
     "register_friction_model",
-    "scuffing_safety",
     "solve_line_contact",
     "solve_stochastic_line_contact",
-    "specific_film_thickness",
     "stochastic_summary",
     "unregister_friction_model",
     "viscosity",
@@ -57,9 +54,5 @@ _LAZY = {
     **dict.fromkeys(("solve_stochastic_line_contact", "stochastic_summary"),
                     "friction.ehl.stochastic"),
     "GroundSurface": "friction.ehl.roughness",
-    **dict.fromkeys(("blok_flash_temperature", "scuffing_safety"),
-                    "friction.flash_temperature"),
-    **dict.fromkeys(("micropitting_safety", "specific_film_thickness"),
-                    "friction.micropitting"),
 }
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())

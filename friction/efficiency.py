@@ -14,14 +14,13 @@ For every loaded contact segment of an LTCA (the ``/ltca`` dataset of
 5. losses: sliding P_s = μ F V_s, rolling P_r = F_R L V_r with F_R the Goksem–Hargreaves
    rolling traction per length (:mod:`friction.rolling`);
 6. per roll position the instantaneous power loss and efficiency
-   η = 1 − (ΣP_s + ΣP_r)/P_in, P_in = T_p ω_p; their mean over the mesh cycles;
-7. scuffing and micropitting from the same local contact (docs/scuffing_micropitting.md):
-   Blok's flash temperature of each segment's Hertzian band of friction heat μ p abs(V_s)
-   shared by the two surfaces moving across the contact line
-   (:mod:`friction.flash_temperature`), the contact temperature on ISO/TS 6336-20's bulk
-   temperature, the scuffing safety against the oil's FZG scuffing temperature, and the
-   specific film thickness λ_GF = h_min/Ra with the safety against micropitting
-   (:mod:`friction.micropitting`).
+   η = 1 − (ΣP_s + ΣP_r)/P_in, P_in = T_p ω_p; their mean over the mesh cycles.
+
+Scuffing and micropitting of the same local contact (flash and contact temperature,
+specific film thickness, their safeties) are load capacity, not friction: the chain's
+load-capacity step computes them from this dataset and ``/ltca``
+(``contact.load_capacity.scuffing_micropitting``, docs/scuffing_micropitting.md); this
+stage gives the inputs they need (μ, film, speeds, each flank's speed across the line).
 
 Bookkeeping identities hold by construction and are tested: each segment's sliding loss
 is μ·F·V_s, totals are sums.
@@ -52,14 +51,6 @@ from friction.film import (
     thermal_loading,
     thermal_reduction_factor,
 )
-from friction.flash_temperature import (
-    ScuffingConditions,
-    base_oil_factor,
-    blok_flash_temperature,
-    bulk_temperature,
-    scuffing_safety,
-    scuffing_temperature,
-)
 from friction.kinematics import surface_velocities
 from friction.lubricant import (
     Lubricant,
@@ -69,20 +60,14 @@ from friction.lubricant import (
     thermal_conductivity,
     viscosity,
 )
-from friction.micropitting import (
-    GAUSSIAN_RA_PER_RQ,
-    film_at_bulk_temperature,
-    micropitting_safety,
-    specific_film_thickness,
-)
 from friction.operating import OperatingConditions
 from friction.rolling import rolling_traction
 from geometry.core.conventions import binary_flag, data_var
-from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL, contact_modulus
-from geometry.core.materials import DEFAULT_MATERIAL, material
 
-__all__ = ["efficiency_analysis", "extrapolated_segments", "extrapolation_summary"]
+__all__ = ["efficiency_analysis", "extrapolated_segments", "extrapolation_summary",
+           "uncertified_as_nan"]
 
 log = logging.getLogger(__name__)
 
@@ -107,11 +92,8 @@ def efficiency_analysis(
     friction_model: str | None = None,
     youngs_modulus: float | None = None,
     poisson_ratio: float | None = None,
-    scuffing: ScuffingConditions | None = None,
 ) -> xr.Dataset:
-    """Friction, power loss and mechanical efficiency of an LTCA result (seed ch. 5), with
-    the flash and contact temperature, the specific film thickness and the safeties against
-    scuffing and micropitting of the same contact.
+    """Friction, power loss and mechanical efficiency of an LTCA result (seed ch. 5).
 
     Parameters
     ----------
@@ -133,9 +115,6 @@ def efficiency_analysis(
     youngs_modulus, poisson_ratio : float, optional — [MPa], [1]
         Material of both members; default the LTCA's own (the ``options`` attribute of
         ``ltca``), else steel (:data:`geometry.core.hertz.STEEL`).
-    scuffing : friction.flash_temperature.ScuffingConditions, optional
-        Lubrication, meshing gears and structural factor of the scuffing assessment;
-        default ``ScuffingConditions()`` (dip lubrication, one mesh, X_W = 1).
 
     Returns
     -------
@@ -152,24 +131,13 @@ def efficiency_analysis(
         the segments concerned are flagged per segment in ``friction_model_extrapolated``
         (int8 0/1, CF ``flag_values``/``flag_meanings``).
 
-        Scuffing and micropitting: over (``member``, ``torque``, ``roll``, ``pair``,
-        ``segment``) ``surface_speed`` [m/s], each flank's speed across the contact line;
-        over (``torque``, ``roll``, ``pair``, ``segment``)
-        ``flash_temperature`` [K] (Blok, each member's effusivity from the material table
-        by the LTCA's ``material_pinion``/``material_gear``), ``contact_temperature``
-        [degC] (bulk + flash) and ``specific_film_thickness`` [1] (λ_GF = h_min/Ra, Ra =
-        √(2/π) Rq); over ``torque`` ``flash_temperature_mean`` [K] (length-weighted over
-        the loaded flank segments and the mesh cycles: θ_flm), ``bulk_temperature``
-        [degC], ``flash_temperature_max`` [K], ``contact_temperature_max`` [degC] and
-        ``specific_film_thickness_min`` [1] over the loaded flank segments (the contact
-        curves), ``contact_temperature_max_edge`` [degC] of the edge contacts (apart: the
-        moving-source formula overestimates there, their Péclet numbers are ≲ 1),
-        ``scuffing_safety`` and ``micropitting_safety`` [1]; 0-d ``scuffing_temperature``
-        [degC] and ``permissible_specific_film`` [1] of the oil. A safety the oil lacks
-        the data for is NaN, the reason in the variable's ``comment``. Roll positions
-        whose loaded contact has no certified solution (``ltca["found"]`` 0) have NaN
-        values over (torque, roll), and their torques NaN values over torque (a comment
-        says why): no contact forces, no efficiency (never a loss-free 100 %).
+        Over (``member``, ``torque``, ``roll``, ``pair``, ``segment``)
+        ``surface_speed`` [m/s], each flank's speed across the contact line (through the
+        Hertzian band: the speeds of Blok's flash temperature, which the load-capacity
+        step computes from this dataset). Roll positions whose loaded contact has no
+        certified solution (``ltca["found"]`` 0) have NaN values over (torque, roll), and
+        their torques NaN values over torque (a comment says why): no contact forces, no
+        efficiency (never a loss-free 100 %).
 
     Raises
     ------
@@ -183,9 +151,8 @@ def efficiency_analysis(
     -----
     Seed §5.2, Eq. 5.7–5.14; the EHL groups are written in the effective modulus
     E′ = 2E* (Dowson & Higginson), E* of :func:`geometry.core.hertz.contact_modulus`.
-    Scuffing: Blok (1937), ISO/TR 13989-1:2000 / ISO/TS 6336-20:2017; micropitting:
-    ISO/TR 15144-1:2014 / ISO/TS 6336-22:2018 (:mod:`friction.flash_temperature`,
-    :mod:`friction.micropitting`).
+    Scuffing and micropitting of the same contact are the load-capacity step's
+    (``contact.load_capacity.scuffing_micropitting``, from this dataset and ``/ltca``).
     """
     _check_variables(ltca)
     op = _operating_conditions(
@@ -207,23 +174,32 @@ def efficiency_analysis(
     for note in fric.range_warnings:
         log.info("%s", note)
     losses = _power_losses(seg, fric, ltca["torque"].values, op.pinion_speed)
-    cond = ScuffingConditions() if scuffing is None else scuffing
-    if not isinstance(cond, ScuffingConditions):
-        raise InputError("scuffing: must be a friction.flash_temperature.ScuffingConditions "
-                         f"or None, got {scuffing!r}")
-    durability = _surface_durability(ltca, seg, fric, oil, op, cond, e_prime)
-    return _uncertified_as_nan(_friction_dataset(ltca, seg, fric, losses, op, oil, durability),
-                               ltca)
+    return uncertified_as_nan(_friction_dataset(ltca, seg, fric, losses, op, oil), ltca)
 
 
-def _uncertified_as_nan(friction: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
-    """``friction`` with its values over (torque, roll) NaN at the roll positions whose
+def uncertified_as_nan(friction: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
+    """A stage's dataset with its values over (torque, roll) NaN at the roll positions whose
     loaded contact has no certified solution (``ltca["found"]`` 0), and its values over
     torque NaN at the torques with such a roll, each with a ``comment`` saying why.
 
     A roll without a certified contact solution has no forces (NaN, read as 0 by the
     power loss): its efficiency would be a loss-free 100 %, not a result; the means over
-    the mesh cycle are NaN as the LTE summary is (:mod:`contact.ltca.dataset`)."""
+    the mesh cycle are NaN as the LTE summary is (:mod:`contact.ltca.dataset`).
+
+    Parameters
+    ----------
+    friction : xarray.Dataset
+        A dataset over (torque, roll, …) made from ``ltca`` (``/friction``, the
+        load-capacity step's scuffing and micropitting).
+    ltca : xarray.Dataset
+        The ``/ltca`` dataset, with ``found`` (torque, roll) where it was written.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``friction`` itself when every roll is certified (or ``found`` is absent), else a
+        copy with those values NaN.
+    """
     if "found" not in ltca.variables:
         return friction
     found = np.asarray(ltca["found"].values) > 0
@@ -396,8 +372,8 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
 
 def _half_width(w: np.ndarray, p: np.ndarray) -> np.ndarray:
     """The Hertzian half-width 2w/(π p_max) [mm] of load per length w [N/mm] and peak
-    pressure p [MPa] (:func:`friction.flash_temperature.hertz_half_width`; NaN where p is
-    not > 0, as the LTCA's own ``half_width``)."""
+    pressure p [MPa] (Hertz line contact; NaN where p is not > 0, as the LTCA's own
+    ``half_width``)."""
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(p > 0.0, 2.0 * w / (math.pi * np.where(p > 0.0, p, 1.0)), np.nan)
 
@@ -476,223 +452,6 @@ def _film_and_friction(
     return _Friction(h, lam, np.broadcast_to(mu, seg.force.shape), outside, fr, range_notes)
 
 
-#: Péclet number below which the high-Péclet moving-source formula overestimates the
-#: flash temperature (Jaeger 1942; Archard 1958/59 puts the high-speed regime at Pe > 5–10)
-_PECLET_HIGH = 5.0
-
-
-class _Durability(NamedTuple):
-    """Flash and contact temperature, specific film thickness and the safeties of scuffing
-    and micropitting: per segment arrays 1-D over the loaded segments (n,), per torque
-    (T,)."""
-
-    flash: np.ndarray  # (n,) [K] Blok's flash temperature
-    contact: np.ndarray  # (n,) [degC] bulk + flash
-    specific_film: np.ndarray  # (n,) [1] λ_GF = h_min / Ra
-    flash_mean: np.ndarray  # (T,) [K] θ_flm over the loaded flank segments
-    bulk: np.ndarray  # (T,) [degC] θ_M
-    flash_max: np.ndarray  # (T,) [K] over the loaded flank segments
-    contact_max: np.ndarray  # (T,) [degC] over the loaded flank segments
-    contact_max_edge: np.ndarray  # (T,) [degC] over the loaded edge segments
-    specific_film_min: np.ndarray  # (T,) [1] over the loaded flank segments, film at θ_M
-    specific_film_min_inlet: np.ndarray  # (T,) [1] the same, film at the oil inlet
-    scuffing_temperature: float  # [degC] θ_S of the oil (NaN: unknown)
-    scuffing_safety: np.ndarray  # (T,) [1] S_B
-    permissible_specific_film: float  # [1] λ_GFP of the oil (NaN: unknown)
-    micropitting_safety: np.ndarray  # (T,) [1] S_λ
-    comments: dict  # variable name → its ``comment`` (how it was made, or why NaN)
-    attrs: dict  # the assessment's inputs, as dataset attributes
-
-
-def _surface_durability(ltca: xr.Dataset, seg: _Segments, fric: _Friction, oil: _Oil,
-                        op: OperatingConditions, cond: ScuffingConditions, e_prime: float
-                        ) -> _Durability:
-    """Blok's flash temperature [K] of each loaded segment (μ p abs(V_s) over the Hertzian
-    band, each member's surface speed across the line and effusivity), the bulk [degC]
-    and contact temperature [degC], the specific film thickness λ_GF = h_min/Ra [1] with
-    the film at the bulk temperature θ_M (ISO/TS 6336-22; E′ [MPa] for that film), their
-    extremes per torque over the loaded flank segments and the safeties against scuffing
-    and micropitting [1] (NaN, with the reason in ``comments``, where the oil lacks the
-    data; :mod:`friction.flash_temperature`, :mod:`friction.micropitting`)."""
-    n_torque = seg.loaded.shape[0]
-    torque_of = np.nonzero(seg.loaded)[0]  # the torque index of each loaded segment
-    comments: dict[str, str] = {}
-    names = [str(ltca.attrs.get(f"material_{m}", DEFAULT_MATERIAL)) for m in ("pinion", "gear")]
-    flash = np.full(seg.force.shape, np.nan)
-    try:
-        effusivity = [material(n).thermal_effusivity for n in names]
-        diffusivity = [_thermal_diffusivity(material(n)) for n in names]
-    except ModelUnavailableError as exc:
-        effusivity = diffusivity = [math.nan, math.nan]
-        comments["flash_temperature"] = f"NaN: no thermal properties of the material ({exc})"
-        log.info("flash temperature not computed: %s", exc)
-    mu, vs = fric.friction_coefficient, seg.sliding_velocity
-    v_p, v_g = seg.pinion_speed_across, seg.gear_speed_across
-    good = (np.isfinite(mu) & np.isfinite(seg.pressure_max) & np.isfinite(seg.half_width)
-            & np.isfinite(vs) & np.isfinite(v_p) & np.isfinite(v_g))
-    if math.isfinite(effusivity[0]) and good.any():
-        flash[good] = blok_flash_temperature(
-            mu[good], seg.pressure_max[good], seg.half_width[good],
-            vs[good], v_p[good], v_g[good], effusivity[0], effusivity[1])
-        comments["flash_temperature"] = _peclet_comment(seg, effusivity, diffusivity)
-    flank = ~seg.edge
-    flash_mean = np.full(n_torque, np.nan)
-    flash_max = np.full(n_torque, np.nan)
-    flash_max_edge = np.full(n_torque, np.nan)
-    for i in range(n_torque):
-        here = (torque_of == i) & np.isfinite(flash)
-        on_flank = here & flank
-        length = float(np.sum(seg.length[on_flank]))
-        if on_flank.any() and length > 0.0:
-            flash_mean[i] = float(np.sum(flash[on_flank] * seg.length[on_flank])) / length
-            flash_max[i] = float(np.max(flash[on_flank]))
-        if (here & seg.edge).any():
-            flash_max_edge[i] = float(np.max(flash[here & seg.edge]))
-    bulk = np.full(n_torque, np.nan)
-    known = np.isfinite(flash_mean)
-    if known.any():
-        bulk[known] = bulk_temperature(op.temperature, flash_mean[known], cond)
-    contact = bulk[torque_of] + flash
-    contact_max, contact_max_edge = bulk + flash_max, bulk + flash_max_edge
-    lub = oil.lubricant
-    theta_s, s_b = _scuffing(lub, oil, op, cond, contact_max, comments)
-    # ISO/TS 6336-22: the film at the bulk temperature θ_M (NaN where θ_M is unknown)
-    h_bulk = np.full(fric.film_thickness.shape, np.nan)
-    at = np.isfinite(bulk[torque_of])
-    # a bulk temperature beyond the oil's data (a hot, rough mesh: B at 100 degC, Rq 0.8 um
-    # reaches 142 degC) leaves lambda_GF NaN with the reason, never a failed analysis
-    from friction.lubricant import temperature_range
-
-    t_lo, t_hi = temperature_range(lub)
-    at &= (bulk[torque_of] >= t_lo) & (bulk[torque_of] <= t_hi)
-    if at.any():
-        h_bulk[at] = film_at_bulk_temperature(
-            lub, bulk[torque_of][at], seg.rolling_velocity[at], seg.load_per_length[at],
-            seg.radius[at], seg.pressure_max[at], seg.slide_to_roll_total[at], e_prime)
-    lam = np.asarray(specific_film_thickness(h_bulk, op.roughness, op.roughness),
-                     float).reshape(fric.film_thickness.shape)
-    lam_inlet = np.asarray(specific_film_thickness(fric.film_thickness, op.roughness,
-                                                   op.roughness), float).reshape(lam.shape)
-    lam_min, lam_min_inlet = np.full(n_torque, np.nan), np.full(n_torque, np.nan)
-    for i in range(n_torque):
-        m = (torque_of == i) & flank & np.isfinite(lam)
-        if m.any():
-            lam_min[i] = float(np.min(lam[m]))
-        m = (torque_of == i) & flank & np.isfinite(lam_inlet)
-        if m.any():
-            lam_min_inlet[i] = float(np.min(lam_inlet[m]))
-    comments["specific_film_thickness"] = (
-        "lambda_GF = h_min(theta_M) / Ra: film at the bulk temperature theta_M (ISO/TS "
-        "6336-22's temperature; the toolkit's Dowson-Higginson film with Gupta's thermal "
-        "factor, not ISO's h_Y), Ra = sqrt(2/pi) Rq = "
-        f"{GAUSSIAN_RA_PER_RQ * op.roughness:.3g} um of both flanks (Rq {op.roughness:g} "
-        "um, Gaussian heights)"
-        + ("" if at.all() else "; NaN where theta_M is unknown (no flash temperature) or "
-           "beyond the oil's data range (no film there)"))
-    perm = lub.permissible_specific_film
-    if perm is None:
-        s_l = np.full(n_torque, np.nan)
-        comments["micropitting_safety"] = (
-            f"NaN: the oil {lub.name} gives no permissible_specific_film (lambda_GFP of its "
-            "FVA 54 micropitting test; an optional oil-file field of friction.lubricant)")
-        log.info("micropitting safety not computed: %s", comments["micropitting_safety"])
-        perm_value = math.nan
-    else:
-        perm_value = float(perm)
-        s_l = np.asarray(micropitting_safety(lam_min, perm_value), float).reshape(n_torque)
-        comments["micropitting_safety"] = (
-            f"S_lambda = lambda_GF,min / lambda_GFP, lambda_GFP = {perm_value:g} of the oil "
-            f"{lub.name} (its source: the attribute durability_source); lambda_GF,min over "
-            "the loaded flank segments")
-    attrs = {
-        "scuffing_lubrication": cond.lubrication,
-        "scuffing_meshing_gears": cond.meshing_gears,
-        "scuffing_structural_factor": cond.structural_factor,
-        "material_pinion": names[0],
-        "material_gear": names[1],
-        # [W s^0.5 / (m^2 K)]; CF 1.8 §2.3: attribute names of letters, digits, underscores
-        "effusivity_pinion_W_s05_per_m2_K": float(effusivity[0]),
-        "effusivity_gear_W_s05_per_m2_K": float(effusivity[1]),
-        "fzg_load_stage": math.nan if lub.fzg_load_stage is None else float(lub.fzg_load_stage),
-        "base_oil": lub.base_oil or "",
-        "durability_source": lub.durability_source,
-    }
-    return _Durability(flash, contact, lam, flash_mean, bulk, flash_max, contact_max,
-                       contact_max_edge, lam_min, lam_min_inlet, theta_s, s_b, perm_value,
-                       s_l, comments, attrs)
-
-
-def _scuffing(lub: Lubricant, oil: _Oil, op: OperatingConditions, cond: ScuffingConditions,
-              contact_max: np.ndarray, comments: dict) -> tuple[float, np.ndarray]:
-    """The oil's scuffing temperature θ_S [degC] and the safety S_B [1] per torque of the
-    peak contact temperatures ``contact_max`` [degC]; NaN with the reason in
-    ``comments["scuffing_safety"]`` where the oil lacks its FZG load stage or base oil."""
-    missing = [k for k in ("fzg_load_stage", "base_oil") if getattr(lub, k) is None]
-    if missing:
-        comments["scuffing_safety"] = (
-            f"NaN: the oil {lub.name} gives no {' and no '.join(missing)} (optional oil-file "
-            "fields of friction.lubricant), so no scuffing temperature")
-        log.info("scuffing safety not computed: %s", comments["scuffing_safety"])
-        return math.nan, np.full(contact_max.shape, np.nan)
-    x_l = base_oil_factor(lub.base_oil)  # θ_S has no viscosity term (ISO/TR 13989-1)
-    theta_s = scuffing_temperature(lub.fzg_load_stage, x_l, cond.structural_factor)
-    if theta_s <= op.temperature:
-        comments["scuffing_safety"] = (
-            f"NaN: the scuffing temperature {theta_s:.0f} degC of the oil {lub.name} is not "
-            f"above the oil temperature {op.temperature:g} degC")
-        log.info("scuffing safety not computed: %s", comments["scuffing_safety"])
-        return theta_s, np.full(contact_max.shape, np.nan)
-    rise = contact_max - op.temperature
-    s_b = np.full(contact_max.shape, np.nan)
-    ok = np.isfinite(rise) & (rise > 0.0)
-    if ok.any():
-        s_b[ok] = scuffing_safety(theta_s, contact_max[ok], op.temperature)
-    s_b[np.isfinite(rise) & (rise <= 0.0)] = np.inf  # no temperature rise: nothing to scuff
-    if not np.isfinite(rise).any():
-        comments["scuffing_safety"] = (
-            f"NaN: no peak contact temperature of the flanks (theta_S {theta_s:.1f} degC; "
-            "see the comment of flash_temperature)")
-        log.info("scuffing safety not computed: %s", comments["scuffing_safety"])
-        return theta_s, s_b
-    comments["scuffing_safety"] = (
-        f"S_B = (theta_S - theta_oil) / (theta_Bmax - theta_oil), theta_S = {theta_s:.1f} degC "
-        f"= 80 + (0.85 + 1.4 X_W) X_L S_FZG^2 with S_FZG {lub.fzg_load_stage:g}, X_L "
-        f"{x_l:g} (the {lub.base_oil} base oil's), X_W "
-        f"{cond.structural_factor:g} (ISO/TS 6336-20); theta_Bmax over the loaded flank "
-        "segments; the oil's data and its source: the attributes fzg_load_stage, base_oil, "
-        "durability_source")
-    return theta_s, s_b
-
-
-def _thermal_diffusivity(mat) -> float:
-    """κ = k/(ρc) [m²/s] of a material's ``thermal`` group (validated by its
-    ``thermal_effusivity``)."""
-    g = mat.groups["thermal"]
-    return float(g["thermal_conductivity"]) / (float(g["density"]) * float(g["specific_heat"]))
-
-
-def _peclet_comment(seg: _Segments, effusivity: list, diffusivity: list) -> str:
-    """What the ``flash_temperature`` variable is, and where its high-Péclet model is
-    stretched: the loaded flank and edge segments at which the surface taking most of the
-    heat has Pe = v b/(2κ) < 5 (there the formula overestimates the flash temperature)."""
-    share_p = effusivity[0] * np.sqrt(seg.pinion_speed_across)
-    share_g = effusivity[1] * np.sqrt(seg.gear_speed_across)
-    pe = np.where(share_p >= share_g,
-                  seg.pinion_speed_across * seg.half_width * 1e-3 / (2.0 * diffusivity[0]),
-                  seg.gear_speed_across * seg.half_width * 1e-3 / (2.0 * diffusivity[1]))
-    parts = []
-    for name, mask in (("flank", ~seg.edge), ("edge", seg.edge)):
-        m = mask & np.isfinite(pe)
-        if m.any():
-            low = m & (pe < _PECLET_HIGH)
-            parts.append(f"{int(low.sum())} of {int(m.sum())} loaded {name} segments (least "
-                         f"Pe {float(np.min(pe[m])):.2g})")
-    return ("Blok: Hertzian band source mu p abs(V_s) shared by both surfaces moving across the "
-            "contact line (Jaeger's moving source at high Peclet number); Pe = v b / (2 kappa) "
-            f"of the surface taking most of the heat is below {_PECLET_HIGH:g}, where the "
-            "formula overestimates, at " + " and ".join(parts))
-
-
 class _Losses(NamedTuple):
     """Power losses [W] and efficiency [1] of the mesh."""
 
@@ -741,7 +500,6 @@ def _friction_dataset(
     losses: _Losses,
     op: OperatingConditions,
     oil: _Oil,
-    dur: _Durability,
 ) -> xr.Dataset:
     """The ``/friction`` dataset: per-segment speeds [m/s], film [µm], friction and losses
     [W] on (torque, roll, pair, segment), the power loss [W] and efficiency [1] per roll
@@ -798,7 +556,6 @@ def _friction_dataset(
                                           _scatter(seg.gear_speed_across, loaded)]), "m/s",
             "each flank's speed across the contact line (through the Hertzian band: the "
             "speeds of Blok's flash temperature)"),
-        **_durability_variables(dur, loaded),
     }
     coords = {k: ltca.coords[k] for k in ("torque", "roll", "pair", "segment")}
     coords["member"] = ("member", ["pinion", "gear"], {"long_name": "gear pair member"})
@@ -815,74 +572,8 @@ def _friction_dataset(
         "pressure_viscosity_1_per_GPa": oil.pressure_viscosity,
         "model_range_warnings": json.dumps(fric.range_warnings),
         "model_range_by_contact": json.dumps(_range_by_contact(ltca, seg, fric)),
-        **dur.attrs,
     }
     return xr.Dataset(data, coords=coords, attrs=attrs)
-
-
-def _durability_variables(dur: _Durability, loaded: np.ndarray) -> dict[str, tuple]:
-    """The scuffing and micropitting variables of the ``/friction`` dataset (see
-    :func:`efficiency_analysis`), each with its ``comment`` where one was made."""
-    dims4 = ("torque", "roll", "pair", "segment")
-    c = dur.comments
-
-    def note(name: str) -> dict:
-        return {"comment": c[name]} if name in c else {}
-
-    return {
-        "flash_temperature": data_var(
-            dims4, _scatter(dur.flash, loaded), "K",
-            "flash temperature (Blok, Hertzian band of friction heat)",
-            **note("flash_temperature")),
-        "contact_temperature": data_var(
-            dims4, _scatter(dur.contact, loaded), "degC",
-            "contact temperature: bulk temperature + flash temperature"),
-        "specific_film_thickness": data_var(
-            dims4, _scatter(dur.specific_film, loaded), "1",
-            "specific film thickness lambda_GF = h_min / Ra, film at the bulk temperature "
-            "theta_M (ISO/TS 6336-22)", film_temperature="bulk temperature theta_M",
-            **note("specific_film_thickness")),
-        "flash_temperature_mean": data_var(
-            ("torque",), dur.flash_mean, "K",
-            "mean flash temperature over the loaded flank segments and the mesh cycles "
-            "(length-weighted)"),
-        "bulk_temperature": data_var(
-            ("torque",), dur.bulk, "degC",
-            "bulk temperature theta_oil + 0.47 X_S X_mp theta_flm (ISO/TS 6336-20)"),
-        "flash_temperature_max": data_var(
-            ("torque",), dur.flash_max, "K",
-            "peak flash temperature over the loaded flank segments and the mesh cycles"),
-        "contact_temperature_max": data_var(
-            ("torque",), dur.contact_max, "degC",
-            "peak contact temperature over the loaded flank segments and the mesh cycles"),
-        "contact_temperature_max_edge": data_var(
-            ("torque",), dur.contact_max_edge, "degC",
-            "peak contact temperature of the edge contacts (moving-source formula at low "
-            "Peclet number: an overestimate)"),
-        "specific_film_thickness_min": data_var(
-            ("torque",), dur.specific_film_min, "1",
-            "least specific film thickness over the loaded flank segments and the mesh "
-            "cycles, film at the bulk temperature theta_M (ISO/TS 6336-22)",
-            film_temperature="bulk temperature theta_M"),
-        "specific_film_thickness_min_inlet": data_var(
-            ("torque",), dur.specific_film_min_inlet, "1",
-            "least specific film thickness with the film at the oil inlet temperature (the "
-            "friction stage's film; for comparison, not ISO/TS 6336-22's)",
-            film_temperature="oil inlet temperature"),
-        "scuffing_temperature": data_var(
-            (), dur.scuffing_temperature, "degC",
-            "scuffing temperature of the oil from its FZG load stage (ISO/TS 6336-20)"),
-        "scuffing_safety": data_var(
-            ("torque",), dur.scuffing_safety, "1",
-            "scuffing safety factor S_B (flash temperature method)", **note("scuffing_safety")),
-        "permissible_specific_film": data_var(
-            (), dur.permissible_specific_film, "1",
-            "permissible specific film thickness lambda_GFP of the oil (ISO/TS 6336-22)"),
-        "micropitting_safety": data_var(
-            ("torque",), dur.micropitting_safety, "1",
-            "safety factor against micropitting S_lambda = lambda_GF,min / lambda_GFP",
-            **note("micropitting_safety")),
-    }
 
 
 #: The inputs whose spans :func:`_range_by_contact` reports: name → (symbol, units, digits).

@@ -29,9 +29,10 @@ and ``boundary_friction`` [1] with ``traction_source`` (used by the ``mixed_ehl`
 friction model, :mod:`friction.mixed_ehl`), the optional surface-durability properties
 ``fzg_load_stage`` [1] (the FZG A/8.3/90 scuffing-test failure load stage), ``base_oil``
 (the base-oil kind of the scuffing temperature's lubricant factor,
-:data:`friction.flash_temperature.BASE_OIL_FACTORS`) and ``permissible_specific_film`` [1]
+:data:`BASE_OIL_FACTORS`) and ``permissible_specific_film`` [1]
 (λ_GFP against micropitting) with ``durability_source`` (used by the scuffing and
-micropitting assessment, :mod:`friction.flash_temperature`, :mod:`friction.micropitting`),
+micropitting assessment, :mod:`contact.load_capacity.flash_temperature`,
+:mod:`contact.load_capacity.micropitting`),
 ``schema``, an ``[extrapolation]`` table (``below``, ``above`` in K) and a required
 ``[units]`` table that must state the units above (so a file in other units is refused,
 not misread).
@@ -54,12 +55,12 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
-from friction.flash_temperature import BASE_OIL_FACTORS
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.toml_files import read_toml
 from geometry.core.validation import one_of, real, real_array, scalar_or_array
 
 __all__ = [
+    "BASE_OIL_FACTORS",
     "VISCOSITY_MODELS",
     "Lubricant",
     "VogelFit",
@@ -77,6 +78,19 @@ __all__ = [
     "thermal_conductivity",
     "viscosity",
 ]
+
+#: lubricant factor X_L of the base oil, of the scuffing temperature θ_S and of ISO's mean
+#: friction coefficient (ISO/TR 13989-1:2000 Eq. (27); DIN 3990-4:1987 the same values):
+#: the base oils an oil file's ``base_oil`` may name (used by
+#: :mod:`contact.load_capacity.flash_temperature`)
+BASE_OIL_FACTORS: Mapping[str, float] = MappingProxyType({
+    "mineral": 1.0,
+    "polyalphaolefin": 0.8,
+    "polyglycol_non_water_soluble": 0.7,
+    "polyglycol_water_soluble": 0.6,
+    "phosphate_ester": 1.3,
+    "traction_fluid": 1.5,
+})
 
 log = logging.getLogger(__name__)
 
@@ -348,7 +362,7 @@ class Lubricant:
         None: unknown (no scuffing safety).
     base_oil : str or None
         Base-oil kind for the scuffing temperature's lubricant factor, one of
-        :data:`friction.flash_temperature.BASE_OIL_FACTORS`; None: unknown.
+        :data:`BASE_OIL_FACTORS`; None: unknown.
     permissible_specific_film : float or None — [1]
         λ_GFP, the permissible specific film thickness against micropitting (ISO/TS
         6336-22), > 0; None: unknown (no micropitting safety).

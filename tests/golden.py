@@ -198,11 +198,11 @@ ACROSS_MACHINES: dict[str, Tolerance] = {
         1e-7, 0.0,
         "[1] the film thickness over the composite roughness (see film_thickness): "
         "1.3e-9 of the largest 0.64 measured"),
-    "/friction/specific_film_thickness": Tolerance(
+    "/scuffing_micropitting/specific_film_thickness": Tolerance(
         1e-7, 0.0,
         "[1] λ_GF = h_min / Ra of the segment (issue 52): the film thickness's tolerance (see "
         "film_thickness), 1.3e-9 of the largest 1.12 measured on forced kernels"),
-    "/friction/specific_film_thickness_min": Tolerance(
+    "/scuffing_micropitting/specific_film_thickness_min": Tolerance(
         1e-7, 0.0, "[1] the least specific_film_thickness of a torque (see that entry)"),
     "placement_error": Tolerance(
         0.0, 1e-9,

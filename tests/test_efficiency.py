@@ -245,8 +245,11 @@ def test_run_in_flanks_are_the_new_flanks_at_the_run_in_roughness(ltca):
                                new["lambda_ratio"].values, rtol=1e-12, equal_nan=True)
     assert float(new["power_loss_mean"].max()) > float(run_in["power_loss_mean"].max())
     # λ_GF's Ra is the given Rq's (its film at the bulk temperature moves with μ, so only
-    # the roughness it divides by is asserted)
-    assert "(Rq 0.8 um" in run_in["specific_film_thickness"].attrs["comment"]
+    # the roughness it divides by is asserted; the load-capacity step's, issue 63)
+    from contact.load_capacity.scuffing_micropitting import scuffing_micropitting
+
+    durability = scuffing_micropitting(ltca, run_in)
+    assert "(Rq 0.8 um" in durability["specific_film_thickness"].attrs["comment"]
 
 
 def test_surface_state_refused_by_name():
@@ -258,11 +261,14 @@ def test_bulk_temperature_beyond_the_oil_leaves_specific_film_nan_not_a_failure(
     """A hot, rough mesh whose bulk temperature θ_M passes the oil's data range (75W90:
     5–140 °C with its margins; Table 5.4's B at 100 °C, Rq 0.8 µm reached 142 °C and the
     whole efficiency stage failed) gives its efficiency, with λ_GF NaN at those torques
-    and the reason in the comment."""
+    and the reason in the comment (the load-capacity step's λ_GF, issue 63)."""
+    from contact.load_capacity.scuffing_micropitting import scuffing_micropitting
+
     fr = efficiency_analysis(ltca, OperatingConditions(temperature=135.0, roughness=1.5))
-    bulk = fr["bulk_temperature"].values
+    sm = scuffing_micropitting(ltca, fr)
+    bulk = sm["bulk_temperature"].values
     assert np.nanmax(bulk) > 140.0                      # the case the guard is for
     assert np.isfinite(fr["efficiency_mean"].values).all()
     hot = bulk > 140.0
-    assert np.isnan(fr["specific_film_thickness_min"].values[hot]).all()
-    assert "beyond the oil's data range" in fr["specific_film_thickness"].attrs["comment"]
+    assert np.isnan(sm["specific_film_thickness_min"].values[hot]).all()
+    assert "beyond the oil's data range" in sm["specific_film_thickness"].attrs["comment"]

@@ -32,8 +32,8 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from friction.flash_temperature import ScuffingConditions
-from friction.iso_flash_temperature import (
+from contact.load_capacity.flash_temperature import ScuffingConditions
+from contact.load_capacity.iso_flash_temperature import (
     METHOD_LENGTHWISE,
     METHOD_STANDARD,
     helical_load_factor,

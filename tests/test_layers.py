@@ -25,6 +25,9 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
                     └── catalogue, pipeline, chain  (the bundled cases; one whole
                                                      analysis and its steps)
 
+* ``friction`` reads no output of ``contact``'s load-capacity package (``/rating``,
+  ``/scuffing_micropitting``): no group of it is named in ``friction``'s source (issue 63:
+  the load-capacity package reads the chain's datasets, never the other way round);
 * ``geometry.core`` (the toolkit's low layer) imports nothing else of the toolkit;
 * no private name (``_x``) imported from another module, and no private module imported
   from outside its own package — in the packages and in the bundled ``cases/`` scripts.
@@ -232,6 +235,26 @@ def _violations() -> list[str]:
     return bad
 
 
+#: the groups the load-capacity package (contact.load_capacity) writes: friction names none
+LOAD_CAPACITY_GROUPS = ("rating", "scuffing_micropitting")
+
+
+def _load_capacity_reads() -> list[str]:
+    """Every text constant of a ``friction`` source that names a load-capacity group
+    (``"rating"``, ``"/rating/flash_temperature"``, ``"scuffing_micropitting"`` …): a
+    friction module reading the load-capacity package's output by name."""
+    bad = []
+    for path in sorted((ROOT / "friction").rglob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Constant) and isinstance(node.value, str):
+                first = node.value.strip("/").split("/")[0]
+                if first in LOAD_CAPACITY_GROUPS:
+                    bad.append(f"{path.relative_to(ROOT)}:{node.lineno}: names the "
+                               f"load-capacity group {node.value!r}")
+    return bad
+
+
 def _full(mod: str, name: str) -> str:
     """``mod.name`` when that is a module of the tree (``from contact import pipeline``)."""
     candidate = f"{mod}.{name}" if name else mod
@@ -248,6 +271,46 @@ def test_import_rules_hold():
 def test_application_layer_is_ordered_without_cycles():
     bad = _application_violations()
     assert not bad, "\n".join(bad)
+
+
+def test_friction_reads_no_load_capacity_output():
+    bad = _load_capacity_reads()
+    assert not bad, "\n".join(bad)
+
+
+def test_load_capacity_is_one_unit_of_the_application():
+    """Rating, durability, scuffing and micropitting are one subpackage of contact (issue
+    63), a unit of the application layer: its modules are placed, and none is left in
+    friction or at contact's top."""
+    assert _application_unit("contact.load_capacity.iso10300.rating") == "contact.load_capacity"
+    assert _application_unit("contact.load_capacity.durability") == "contact.load_capacity"
+    for gone in ("contact/rating", "contact/durability", "friction/flash_temperature.py",
+                 "friction/iso_flash_temperature.py", "friction/micropitting.py"):
+        assert not (ROOT / gone).exists(), gone
+
+
+def test_the_load_capacity_check_is_not_vacuous(monkeypatch):
+    """A friction module reading ``tree["rating"]`` is reported."""
+    import test_layers as me
+
+    fake = ROOT / "friction" / "_probe.py"
+    real = Path.rglob
+
+    def rglob(self, pattern):
+        found = list(real(self, pattern))
+        return [*found, fake] if self == ROOT / "friction" else found
+
+    monkeypatch.setattr(Path, "rglob", rglob)
+    monkeypatch.setattr(Path, "read_text", _reader(fake, 'x = tree["rating"]["S_H"]\n',
+                                                   Path.read_text))
+    assert any("_probe.py:1" in v and "'rating'" in v for v in me._load_capacity_reads())
+
+
+def _reader(fake: Path, text: str, read):
+    def reader(self, *args, **kwargs):
+        return text if self == fake else read(self, *args, **kwargs)
+
+    return reader
 
 
 def test_case_scripts_import_no_private_names():

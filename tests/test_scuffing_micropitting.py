@@ -38,9 +38,7 @@ from scipy.integrate import quad
 from scipy.optimize import minimize_scalar
 from test_ltca import _run  # the same LTCA result (cached per session)
 
-from friction.efficiency import efficiency_analysis
-from friction.ehl.thermal import flash_temperature as jaeger_flash_temperature
-from friction.flash_temperature import (
+from contact.load_capacity.flash_temperature import (
     BLOK_HERTZIAN,
     BLOK_UNIFORM,
     ScuffingConditions,
@@ -52,13 +50,19 @@ from friction.flash_temperature import (
     scuffing_safety,
     scuffing_temperature,
 )
-from friction.lubricant import load_lubricant, lubricant_from_mapping
-from friction.micropitting import (
+from contact.load_capacity.micropitting import (
     GAUSSIAN_RA_PER_RQ,
     arithmetic_roughness,
     micropitting_safety,
     specific_film_thickness,
 )
+from contact.load_capacity.scuffing_micropitting import (
+    scuffing_micropitting,
+    scuffing_micropitting_of,
+)
+from friction.efficiency import efficiency_analysis
+from friction.ehl.thermal import flash_temperature as jaeger_flash_temperature
+from friction.lubricant import load_lubricant, lubricant_from_mapping
 from geometry.core.errors import InputError
 from geometry.core.io import read_netcdf, write_netcdf
 from geometry.core.materials import material
@@ -290,7 +294,7 @@ def test_bundled_oil_states_its_assumed_values():
     assert "assumed" in oil.durability_source
 
 
-# ---------------------------------------------------------------- the /friction variables
+# ------------------------------------------------- the /scuffing_micropitting variables
 
 
 @pytest.fixture(scope="module")
@@ -299,8 +303,34 @@ def ltca():
 
 
 @pytest.fixture(scope="module")
-def fr(ltca):
+def friction(ltca):
     return efficiency_analysis(ltca)
+
+
+@pytest.fixture(scope="module")
+def sm(ltca, friction):
+    """The load-capacity step's dataset, from /ltca and /friction alone."""
+    return scuffing_micropitting(ltca, friction)
+
+
+def _side_by_side(friction: xr.Dataset, sm: xr.Dataset) -> xr.Dataset:
+    """Both stages' variables in one dataset, as the checks below read them (the
+    attributes they agree on kept)."""
+    return xr.merge([friction, sm], combine_attrs="drop_conflicts")
+
+
+@pytest.fixture(scope="module")
+def fr(friction, sm):
+    return _side_by_side(friction, sm)
+
+
+def _both(ltca: xr.Dataset, *, scuffing=None, **efficiency) -> xr.Dataset:
+    """The efficiency stage with ``efficiency``'s keywords, then the scuffing and
+    micropitting of its result (the oil the stage ran), side by side."""
+    friction = efficiency_analysis(ltca, **efficiency)
+    sm = scuffing_micropitting(ltca, friction, lubricant=efficiency.get("lubricant"),
+                               scuffing=scuffing)
+    return _side_by_side(friction, sm)
 
 
 NEW_VARIABLES = {
@@ -454,7 +484,7 @@ def test_every_segment_against_bloks_form_by_hand(ltca, fr):
 
 def test_flash_temperature_is_linear_in_the_friction_coefficient(ltca, fr):
     """The only input the friction model changes is μ: θ_fl ∝ μ segment by segment."""
-    const = efficiency_analysis(ltca, friction_model="constant")
+    const = _both(ltca, friction_model="constant")
     ratio = (const["flash_temperature"] / fr["flash_temperature"]
              * fr["friction_coefficient"] / const["friction_coefficient"])
     np.testing.assert_allclose(ratio.values[np.isfinite(ratio.values)], 1.0, rtol=1e-12)
@@ -477,7 +507,7 @@ def test_a_missing_oil_field_gives_nan_with_its_reason(ltca, fr, tmp_path):
         text = text.replace(old, new)
     path = tmp_path / "oil.toml"
     path.write_text(text, encoding="utf-8")
-    other = efficiency_analysis(ltca, lubricant=str(path))
+    other = _both(ltca, lubricant=str(path))
     np.testing.assert_allclose(other["micropitting_safety"],
                                other["specific_film_thickness_min"] / 0.2, rtol=1e-14)
     assert float(other["permissible_specific_film"]) == 0.2
@@ -487,34 +517,69 @@ def test_a_missing_oil_field_gives_nan_with_its_reason(ltca, fr, tmp_path):
     assert other["scuffing_safety"].attrs["comment"].startswith("NaN")
 
 
-def test_scuffing_conditions_reach_the_bulk_temperature(ltca, fr):
-    spray = efficiency_analysis(ltca, scuffing=ScuffingConditions(lubrication="spray"))
+def test_scuffing_conditions_reach_the_bulk_temperature(ltca, friction, fr):
+    spray = scuffing_micropitting(ltca, friction,
+                                  scuffing=ScuffingConditions(lubrication="spray"))
     np.testing.assert_allclose(spray["bulk_temperature"] - 90.0,
                                1.2 * (fr["bulk_temperature"] - 90.0), rtol=1e-13)
     np.testing.assert_allclose(spray["flash_temperature"], fr["flash_temperature"])
     assert spray.attrs["scuffing_lubrication"] == "spray"
     with pytest.raises(InputError, match="scuffing"):
-        efficiency_analysis(ltca, scuffing="spray")
+        scuffing_micropitting(ltca, friction, scuffing="spray")
 
 
-def test_netcdf_round_trip(fr, tmp_path):
+def test_netcdf_round_trip(sm, tmp_path):
     """Written and read back (the file's conventions added on the first write), then again:
     identical; the values, units and comments survive the first write unchanged."""
-    first = read_netcdf(write_netcdf(fr, tmp_path / "friction.nc"))
+    first = read_netcdf(write_netcdf(sm, tmp_path / "scuffing_micropitting.nc"))
     again = read_netcdf(write_netcdf(first, tmp_path / "again.nc"))
     xr.testing.assert_identical(again, first)
-    for name in NEW_VARIABLES:
-        np.testing.assert_array_equal(first[name].values, fr[name].values)
+    for name in set(NEW_VARIABLES) - {"surface_speed"}:
+        np.testing.assert_array_equal(first[name].values, sm[name].values)
         for key in ("units", "long_name", "comment"):
-            assert first[name].attrs.get(key) == fr[name].attrs.get(key), (name, key)
-    assert first.attrs["durability_source"] == fr.attrs["durability_source"]
+            assert first[name].attrs.get(key) == sm[name].attrs.get(key), (name, key)
+    assert first.attrs["durability_source"] == sm.attrs["durability_source"]
+
+
+def test_load_capacity_reads_the_friction_stage_and_writes_its_own_group(ltca, friction, sm):
+    """Issue 63: the efficiency stage computes film, μ and losses (and each flank's speed
+    across the line), nothing of load capacity; the load-capacity dataset holds scuffing
+    and micropitting alone, on the LTCA's coordinates, with the oil it read named."""
+    durability = set(NEW_VARIABLES) - {"surface_speed"}
+    assert not durability & set(friction.data_vars)
+    assert "surface_speed" in friction and "surface_speed" not in sm
+    assert set(sm.data_vars) == durability
+    for dim in ("torque", "roll", "pair", "segment"):
+        np.testing.assert_array_equal(sm[dim].values, ltca[dim].values)
+    assert sm.attrs["lubricant"] == friction.attrs["lubricant"] == "75W90"
+    assert sm.attrs["inlet_temperature_degC"] == friction.attrs["inlet_temperature_degC"]
+    # a tree of either layout gives the dataset (files before issue 63: in /friction)
+    tree = xr.DataTree.from_dict({"friction": friction, "scuffing_micropitting": sm})
+    xr.testing.assert_identical(scuffing_micropitting_of(tree), sm)
+    old = xr.DataTree.from_dict({"friction": _side_by_side(friction, sm)})
+    assert float(scuffing_micropitting_of(old)["scuffing_temperature"]) == float(
+        sm["scuffing_temperature"])
+    assert scuffing_micropitting_of(xr.DataTree.from_dict({"friction": friction})) is None
+
+
+@pytest.mark.parametrize(("change", "field"), [
+    (lambda lt, fr: (lt, fr.drop_vars("friction_coefficient")), "friction_coefficient"),
+    (lambda lt, fr: (lt.drop_vars("pressure_max"), fr), "pressure_max"),
+    (lambda lt, fr: (lt, fr.drop_attrs()), "lubricant"),
+    (lambda lt, fr: (lt.isel(torque=[0]), fr), "shape"),
+    (lambda lt, fr: (lt, fr.to_array()), "friction"),
+])
+def test_scuffing_micropitting_refuses_inputs_naming_them(ltca, friction, change, field):
+    lt, fr = change(ltca, friction)
+    with pytest.raises(InputError, match=field):
+        scuffing_micropitting(lt, fr)
 
 
 def test_a_material_without_thermal_data_gives_nan_with_its_reason(ltca):
     """A member material the table has no thermal properties for (here: one it does not
     know): no flash temperature, no bulk temperature θ_M, so no scuffing safety and no
     λ_GF at θ_M, each saying why; the film at the inlet does not depend on it."""
-    odd = efficiency_analysis(ltca.assign_attrs(material_gear="unobtainium"))
+    odd = _both(ltca.assign_attrs(material_gear="unobtainium"))
     assert np.all(np.isnan(odd["flash_temperature"].values))
     assert odd["flash_temperature"].attrs["comment"].startswith("NaN")
     assert "unobtainium" in odd["flash_temperature"].attrs["comment"]
@@ -525,11 +590,12 @@ def test_a_material_without_thermal_data_gives_nan_with_its_reason(ltca):
     assert np.all(np.isfinite(odd["specific_film_thickness_min_inlet"].values))
 
 
-def test_ltca_run_lines(fr):
+def test_ltca_run_lines(sm):
     """`ltca run` prints one line per torque (peak contact temperature, S_B, least λ_GF),
     the oil's θ_S and why the micropitting safety is missing."""
     from contact.commands.run import durability_lines
 
+    fr = sm
     lines = durability_lines(fr)
     assert len(lines) == fr.sizes["torque"] + 2
     for i, line in enumerate(lines[:fr.sizes["torque"]]):
@@ -549,12 +615,12 @@ def test_ltca_run_lines_with_the_standards_method(fr):
     """With a /rating group in the tree, each torque's line is followed by the standard's
     flash temperature method on the virtual cylindrical gears at the same oil, temperature
     and roughness, as written and with the hypoid's lengthwise sliding, each labelled, with
-    the spread of S_B (friction.iso_flash_temperature; here a hand-made spur-like rating
-    with v_g 1 m/s at the file's torques)."""
+    the spread of S_B (contact.load_capacity.iso_flash_temperature; here a hand-made
+    spur-like rating with v_g 1 m/s at the file's torques)."""
     from test_iso_flash_temperature import _rating
 
     from contact.commands.run import durability_lines, standard_scuffing
-    from friction.iso_flash_temperature import iso_flash_temperature_variants
+    from contact.load_capacity.iso_flash_temperature import iso_flash_temperature_variants
 
     rating = _rating(torque=fr["torque"].values, v_g=1.0)
     tree = xr.DataTree.from_dict({"friction": fr, "rating": rating})

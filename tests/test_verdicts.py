@@ -157,12 +157,22 @@ def test_uncertified_rolls_and_extrapolated_friction_want_attention():
         == []
 
 
+@pytest.mark.parametrize("group", ["scuffing_micropitting", "friction"])
 @pytest.mark.parametrize("name", ["scuffing_safety", "micropitting_safety"])
-def test_scuffing_and_micropitting_below_one_fail(name):
+def test_scuffing_and_micropitting_below_one_fail(name, group):
+    """The load-capacity step's /scuffing_micropitting (issue 63), and /friction of a file
+    written before it, are judged alike."""
     fr = xr.Dataset({name: ("torque", [1.0, 0.999, np.nan])}, coords={"torque": [1.0, 2, 3]})
-    v = verdict(_tree(ltca=_ltca([700.0]), friction=fr))
+    v = verdict(_tree(ltca=_ltca([700.0]), **{group: fr}))
     assert [(f.severity, f.check) for f in v.findings] == [("fail", name.split("_")[0])]
     assert "0.999 at 2 N·m below 1" in v.findings[0].reason
+    assert {"scuffing", "micropitting"} <= set(v.checks)
+
+
+def test_scuffing_unchecked_says_which_group_is_missing():
+    v = verdict(_tree(ltca=_ltca([700.0])))
+    why = dict(v.unchecked)
+    assert why["scuffing"].startswith("no /scuffing_micropitting group")
 
 
 def test_the_rating_group_joins_with_its_own_minimum_factors():

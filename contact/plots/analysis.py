@@ -222,6 +222,11 @@ def analysis_specs(tree: xr.DataTree) -> Iterator[FigureSpec]:
                 "over the face width at the largest torque, and its envelope along the "
                 "face per torque.", partial(root_stress_figure, lt))
     if fr is not None and lt is not None:
+        # the flash temperature and λ_GF on the flank: the load-capacity step's
+        # /scuffing_micropitting (in /friction in a file written before issue 63)
+        sm = _group(tree, "scuffing_micropitting")
+        if sm is not None:
+            fr = fr.assign({n: sm[n] for n in FRICTION_FLANK_PLOTS if n in sm and n not in fr})
         if any(name in fr for name in FRICTION_FLANK_PLOTS):
             yield FigureSpec(
                 "friction_flank",

@@ -78,8 +78,9 @@ __all__ = [
     "segment_panels_figure",
 ]
 
-#: /friction variables drawn over the gear flank (seed Figs. 5.5–5.10, and the flash
-#: temperature and specific film thickness of scuffing and micropitting); signed ones diverge
+#: /friction variables drawn over the gear flank (seed Figs. 5.5–5.10), and the flash
+#: temperature and specific film thickness of scuffing and micropitting
+#: (/scuffing_micropitting, merged in by the analysis figures); signed ones diverge
 FRICTION_FLANK_PLOTS = {
     "sliding_velocity": "sliding velocity",
     "rolling_velocity": "rolling velocity",

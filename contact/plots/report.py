@@ -143,11 +143,11 @@ SUMMARY_COLUMNS: tuple[SummaryColumn, ...] = (
 def _standard(name: str, variant: str = "standard"):
     """A column value: ``name`` of the standard's flash temperature method
     (``/rating/flash_temperature``), its ``variant`` (``standard`` or
-    ``lengthwise_sliding``), at the torque of the friction stage's index (NaN where the
+    ``lengthwise_sliding``), at the torque of the scuffing table's index (NaN where the
     file has no such group or variant, or the method did not run at that torque; a file
     written before the variants has the lengthwise one alone)."""
     def value(groups: Mapping[str, xr.Dataset | None], i: int) -> float:
-        ds, fr = groups.get("standard_scuffing"), groups.get("friction")
+        ds, fr = groups.get("standard_scuffing"), groups.get("scuffing_micropitting")
         if ds is None or fr is None or name not in ds:
             return math.nan
         if "variant" in ds.dims:
@@ -161,23 +161,23 @@ def _standard(name: str, variant: str = "standard"):
     return value
 
 
-#: The scuffing and micropitting table's columns after T_p: /friction variables over torque
-#: (docs/scuffing_micropitting.md), then the standard's flash temperature method on the
-#: rating's virtual cylindrical gears (/rating/flash_temperature); a file that lacks one
-#: shows "–".
+#: The scuffing and micropitting table's columns after T_p: /scuffing_micropitting
+#: variables over torque (docs/scuffing_micropitting.md; /friction in files written before
+#: issue 63), then the standard's flash temperature method on the rating's virtual
+#: cylindrical gears (/rating/flash_temperature); a file that lacks one shows "–".
 DURABILITY_COLUMNS: tuple[SummaryColumn, ...] = (
     SummaryColumn("flash_temperature_max", "peak flash temperature θ_fl", "K", 0,
-                  _var("friction", "flash_temperature_max")),
+                  _var("scuffing_micropitting", "flash_temperature_max")),
     SummaryColumn("bulk_temperature", "bulk temperature θ_M", "°C", 0,
-                  _var("friction", "bulk_temperature")),
+                  _var("scuffing_micropitting", "bulk_temperature")),
     SummaryColumn("contact_temperature_max", "peak contact temperature θ_B", "°C", 0,
-                  _var("friction", "contact_temperature_max")),
+                  _var("scuffing_micropitting", "contact_temperature_max")),
     SummaryColumn("scuffing_safety", "scuffing safety S_B", "1", 2,
-                  _var("friction", "scuffing_safety")),
+                  _var("scuffing_micropitting", "scuffing_safety")),
     SummaryColumn("specific_film_thickness_min", "least λ_GF (film at θ_M)", "1", 3,
-                  _var("friction", "specific_film_thickness_min")),
+                  _var("scuffing_micropitting", "specific_film_thickness_min")),
     SummaryColumn("micropitting_safety", "micropitting safety S_λ", "1", 2,
-                  _var("friction", "micropitting_safety")),
+                  _var("scuffing_micropitting", "micropitting_safety")),
     SummaryColumn("iso_contact_temperature_max", "ISO/TS 6336-20, virtual gears: peak θ_B",
                   "°C", 0, _standard("contact_temperature_max")),
     SummaryColumn("iso_scuffing_safety", "ISO/TS 6336-20, virtual gears: S_B", "1", 2,
@@ -286,11 +286,12 @@ def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None,
                 standard: xr.Dataset | None = None) -> dict | None:
     """The scuffing and micropitting table (:data:`DURABILITY_COLUMNS` per torque; the
     standard's method from ``standard``, ``/rating/flash_temperature``), the oil's scuffing
-    temperature and permissible λ_GF, and why a safety is missing; None where the file
-    has no ``/friction`` with the variables (written before them)."""
+    temperature and permissible λ_GF, and why a safety is missing; ``fr`` the
+    ``/scuffing_micropitting`` group (``/friction`` in a file written before issue 63);
+    None where the file has neither with the variables."""
     if lt is None or fr is None or "contact_temperature_max" not in fr:
         return None
-    groups = {"ltca": lt, "friction": fr, "standard_scuffing": standard}
+    groups = {"ltca": lt, "scuffing_micropitting": fr, "standard_scuffing": standard}
     rows = [{"torque": f"{t:g}",
              "cells": [{"key": c.key, **_cell(c.value(groups, i), c.decimals)}
                        for c in DURABILITY_COLUMNS]}
@@ -308,6 +309,13 @@ def _durability(lt: xr.Dataset | None, fr: xr.Dataset | None,
     return {"columns": [(c.heading, c.unit) for c in DURABILITY_COLUMNS], "rows": rows,
             "oil": oil, "notes": notes, "spread": _scuffing_spread(standard),
             "source": str(fr.attrs.get("durability_source", ""))}
+
+
+def _scuffing_micropitting(tree: xr.DataTree, fr: xr.Dataset | None) -> xr.Dataset | None:
+    """The scuffing and micropitting dataset: ``/scuffing_micropitting`` (the load-capacity
+    step's), else ``fr`` (``/friction``, which held the variables before issue 63)."""
+    sm = _group(tree, "scuffing_micropitting")
+    return fr if sm is None else sm
 
 
 def _rating(tree: xr.DataTree, lt: xr.Dataset | None) -> dict | None:
@@ -598,7 +606,8 @@ def report_context(tree: xr.DataTree,
         "pattern": _pattern(lt, inputs_text),
         "verdict": _verdict(tree),
         "te_table": _te_table(tree),
-        "durability": _durability(lt, fr, _group(tree, "rating/flash_temperature")),
+        "durability": _durability(lt, _scuffing_micropitting(tree, fr),
+                                  _group(tree, "rating/flash_temperature")),
         "rating": _rating(tree, lt),
         "solver": _solver(lt) if lt is not None else None,
         "absent": absent,

@@ -16,8 +16,8 @@ reason, and the result's overall severity — the worst of its findings:
 
 The checks and their thresholds, per kind of result (:data:`CHECKS`):
 
-**Analysis** (a DataTree of ``ltca run``: ``/ltca``, ``/friction`` and ``/rating`` where
-present).
+**Analysis** (a DataTree of ``ltca run``: ``/ltca``, ``/friction``,
+``/scuffing_micropitting`` and ``/rating`` where present).
 
 * ``implausible`` (fail): each cause of
   :func:`contact.ltca.plausibility.plausibility_warnings`, and a misalignment beyond the
@@ -41,10 +41,11 @@ present).
 * ``friction_extrapolated`` (attention): the friction model ran outside its fitted range
   (``/friction/friction_model_extrapolated``; flanks and edges as
   :func:`friction.efficiency.extrapolation_summary` splits them).
-* ``scuffing``, ``micropitting`` (fail): S_B or S_λ below :data:`SCUFFING_MIN` /
-  :data:`MICROPITTING_MIN` = 1: the peak contact temperature reaches the oil's scuffing
-  temperature, the least specific film its permissible value — the methods' own criteria
-  (ISO/TR 13989-1, ISO/TS 6336-22 leave larger minimum factors to agreement).
+* ``scuffing``, ``micropitting`` (fail): ``/scuffing_micropitting``'s S_B or S_λ below
+  :data:`SCUFFING_MIN` / :data:`MICROPITTING_MIN` = 1: the peak contact temperature
+  reaches the oil's scuffing temperature, the least specific film its permissible value —
+  the methods' own criteria (ISO/TR 13989-1, ISO/TS 6336-22 leave larger minimum factors
+  to agreement).
 * ``rating`` (fail): the ISO 10300 ``/rating`` group's S_H, S_F against its S_Hmin, S_Fmin;
   attention instead for a torque above the rating's ``design_torque`` whose long-life
   safety is below the minimum but whose static strength holds: a load of finite life, with
@@ -466,9 +467,14 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
     if fr is not None:
         checks += ["friction_extrapolated"]
         findings += _friction(fr)
-        if "scuffing_safety" in fr or "micropitting_safety" in fr:
-            checks += ["scuffing", "micropitting"]
-            findings += _safeties(fr)
+    # the load-capacity step's group; a file written before issue 63 holds the safeties in
+    # /friction
+    sm = _group(tree, "scuffing_micropitting")
+    if sm is None and fr is not None:
+        sm = fr
+    if sm is not None and ("scuffing_safety" in sm or "micropitting_safety" in sm):
+        checks += ["scuffing", "micropitting"]
+        findings += _safeties(sm)
     if rt is not None:
         checks += ["rating"]
         findings += _rating(rt)
@@ -675,6 +681,8 @@ def verdict(result: xr.DataTree | xr.Dataset) -> Verdict:
 _ANALYSIS_GROUPS = {
     "ltca": "no /ltca group: the tree holds no loaded contact",
     "friction": "no /friction group: the analysis ran without an efficiency stage",
+    "scuffing_micropitting": "no /scuffing_micropitting group: the analysis ran without an "
+                             "efficiency stage or without the load-capacity step",
     "rating": "no /rating group: the analysis ran without the ISO 10300 rating",
 }
 
@@ -686,8 +694,8 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
     missing = [c for c in CHECKS[kind] if c not in checks]
     if kind != "analysis":
         return tuple((c, "the result lacks its data") for c in missing)
-    group = {"friction_extrapolated": "friction", "scuffing": "friction",
-             "micropitting": "friction", "rating": "rating"}
+    group = {"friction_extrapolated": "friction", "scuffing": "scuffing_micropitting",
+             "micropitting": "scuffing_micropitting", "rating": "rating"}
     out = []
     for c in missing:
         g = group.get(c, "ltca")

@@ -73,6 +73,7 @@ def analysis_rating(case, torque: Any, speed: float | None, flank: str | None = 
     :func:`contact.load_capacity.iso10300.rate_pair`.
     """
     from contact.load_capacity.iso10300.inputs import RatingInputs
+    from contact.load_capacity.iso10300.method import rated_side
     from contact.load_capacity.iso10300.rating import iso10300_rating
 
     if not isinstance(case.extra.get("design"), Mapping):
@@ -87,10 +88,7 @@ def analysis_rating(case, torque: Any, speed: float | None, flank: str | None = 
                       "[operating] pinion_speed is 0; give --speed)")
     inputs = RatingInputs.from_mapping(table)  # a bad table is refused here, named
     if flank is not None and inputs.side is None:
-        drive = case.pair.drive_flank
-        pinion_flank = {"drive": drive,
-                        "coast": "convex" if drive == "concave" else "concave"}.get(flank, flank)
-        table = {**table, "side": "drive" if pinion_flank == "concave" else "coast"}
+        table = {**table, "side": rated_side(case, flank)}
     # the table itself, so that the case fills what it leaves out (case_rating_inputs)
     return iso10300_rating(case, torque, speed, rating=table), ""
 

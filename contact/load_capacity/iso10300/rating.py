@@ -429,6 +429,8 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
     }
     attrs = {
         "title": "ISO 10300 Method B1 load capacity rating",
+        # the registry name of the method that made it (contact.load_capacity.METHODS)
+        "rating_method": "iso10300",
         "case": name,
         "method": "ISO 10300-1/-2/-3:2014 Method B1 (virtual cylindrical gears, Annex A; "
                   "K_v Method B, K_Hbeta Method C, K_Halpha Method B)",
@@ -476,7 +478,8 @@ def case_gear_data(case):
 
 #: Rz per Rq of the flanks [1]: Rz = 6 Ra, the approximation of DIN 3990/3991 that gear
 #: rating programs use to convert the mean roughness depth (e.g. FVA's, adoc.fva-service.de,
-#: attribute 391), with Ra = √(2/π) Rq of Gaussian heights (friction.micropitting): 4.79
+#: attribute 391), with Ra = √(2/π) Rq of Gaussian heights (contact.load_capacity.micropitting):
+#: 4.79
 RZ_PER_RQ = 6.0 * math.sqrt(2.0 / math.pi)
 
 

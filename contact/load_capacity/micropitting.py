@@ -115,7 +115,7 @@ def film_at_bulk_temperature(
         coefficient and thermal conductivity against temperature).
     bulk_temperature : array_like — [degC]
         θ_M at each contact (ISO/TS 6336-20's θ_oil + 0.47 X_S X_mp θ_flm,
-        :func:`friction.flash_temperature.bulk_temperature`), finite.
+        :func:`contact.load_capacity.flash_temperature.bulk_temperature`), finite.
     rolling_velocity : array_like — [m/s]
         Entraining velocity u = (V₁ + V₂)/2 along the rolling direction, > 0.
     load_per_length : array_like — [N/mm]

@@ -1,7 +1,7 @@
 """The standard's flash-temperature method on the virtual cylindrical gears of a bevel pair.
 
-The LTCA's flash temperature (:mod:`friction.flash_temperature`) is Blok's, evaluated on
-every loaded contact segment with the segment's own load, curvature, speeds and μ. The
+The LTCA's flash temperature (:mod:`contact.load_capacity.flash_temperature`) is Blok's,
+evaluated on every loaded contact segment with the segment's own load, curvature, speeds and μ. The
 standard's flash-temperature method of scuffing (ISO/TS 6336-20:2017, formerly ISO/TR
 13989-1:2000) is Blok's too, but on an idealised mesh: the involute path of contact of a
 cylindrical gear pair, the nominal load shared between the pairs in contact by a load
@@ -38,7 +38,7 @@ The standard's inputs:
   v_ΣC = 2 v_vt sin α_vet [m/s], ρ_redC = ρ_n at the pitch point [mm],
   X_R = 2.2 (Ra/ρ_redC)^0.25 (Ra [µm] the mean of both flanks), η_oil [mPa s] at the oil
   temperature, X_L the base oil's lubricant factor
-  (:func:`friction.flash_temperature.base_oil_factor`) and the helical
+  (:func:`contact.load_capacity.flash_temperature.base_oil_factor`) and the helical
   load factor K_Bγ = 1 (ε_γ ≤ 2), 1 + 0.2 √((ε_γ − 2)(5 − ε_γ)) (2 < ε_γ < 3.5), 1.3
   (ε_γ ≥ 3.5);
 * the load sharing factor X_Γ: 1/ε_α for ε_β ≥ 1 (helical: the load spread evenly over
@@ -48,8 +48,8 @@ The standard's inputs:
 * no approach factor (X_J = 1) and no tip-relief factor: the flanks are unmodified;
 * the bulk temperature θ_M = θ_oil + 0.47 X_S X_mp θ_flm with θ_flm the mean of θ_fl
   along the path of contact (ISO/TR 13989-1 Eq. (22)–(23),
-  :func:`friction.flash_temperature.bulk_temperature`), the scuffing temperature and the
-  safety S_B of :mod:`friction.flash_temperature`.
+  :func:`contact.load_capacity.flash_temperature.bulk_temperature`), the scuffing
+  temperature and the safety S_B of :mod:`contact.load_capacity.flash_temperature`.
 
 Two variants, both stored and labelled (:func:`iso_flash_temperature_variants`):
 
@@ -106,7 +106,7 @@ import numpy as np
 import xarray as xr
 from numpy.typing import ArrayLike, NDArray
 
-from friction.flash_temperature import (
+from contact.load_capacity.flash_temperature import (
     ScuffingConditions,
     base_oil_factor,
     blok_flash_temperature,
@@ -115,8 +115,8 @@ from friction.flash_temperature import (
     scuffing_safety,
     scuffing_temperature,
 )
+from contact.load_capacity.micropitting import GAUSSIAN_RA_PER_RQ
 from friction.lubricant import load_lubricant, viscosity
-from friction.micropitting import GAUSSIAN_RA_PER_RQ
 from geometry import __version__
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, ModelUnavailableError
@@ -242,7 +242,7 @@ def mean_friction_coefficient(
     roughness_ra : float — [µm]
         Ra, the mean arithmetic roughness of both flanks, > 0.
     base_oil : str
-        One of :data:`friction.flash_temperature.BASE_OIL_FACTORS` (X_lub).
+        One of :data:`contact.load_capacity.flash_temperature.BASE_OIL_FACTORS` (X_lub).
     helical_factor : float — [1]
         K_Bγ (:func:`helical_load_factor`), ≥ 1; default 1.
     form : {"iso", "din"}
@@ -254,8 +254,8 @@ def mean_friction_coefficient(
     float or array — [1]
         ISO: μ_m = 0.045 (w_Bt K_Bγ/(v_ΣC ρ_redC))^0.2 η_oil^−0.05 X_R X_L; DIN:
         μ_m = 0.060 (w_Bt K_Bγ/(v_ΣC ρ_redC))^0.2 η_oil^−0.05 Ra^0.25 X_L (η_oil in mPa s,
-        X_L the base oil's, :func:`friction.flash_temperature.lubricant_factor`; the shape
-        of ``load_per_width``).
+        X_L the base oil's, :func:`contact.load_capacity.flash_temperature.lubricant_factor`;
+        the shape of ``load_per_width``).
 
     Raises
     ------
@@ -482,8 +482,8 @@ def iso_flash_temperature_method(
     """
     cond = ScuffingConditions() if conditions is None else conditions
     if not isinstance(cond, ScuffingConditions):
-        raise InputError("conditions: must be a friction.flash_temperature.ScuffingConditions "
-                         f"or None, got {conditions!r}")
+        raise InputError("conditions: must be a contact.load_capacity.flash_temperature."
+                         f"ScuffingConditions or None, got {conditions!r}")
     t_oil = real("oil_temperature", oil_temperature, unit="degC", low=-273.15, low_open=True)
     rq = positive("roughness", roughness, "um")
     if not isinstance(rating, xr.Dataset):

@@ -54,7 +54,7 @@ polyglycols, 1.3 phosphate esters, 1.5 traction fluids; ISO/TR 13989-1 Eq. (27),
 3990-4:1987 the same table). The oil's viscosity has no term of its own in θ_S: the
 factor η_oil^(−0.05) (η_oil in mPa s) belongs to the mean friction coefficient of the
 standard's method, μ_m = 0.045 (w_Bt K_Bγ/(v_ΣC ρ_redC))^0.2 η_oil^(−0.05) X_R X_L
-(ISO/TR 13989-1 Eq. (25); :mod:`friction.iso_flash_temperature`), where it stands
+(ISO/TR 13989-1 Eq. (25); :mod:`contact.load_capacity.iso_flash_temperature`), where it stands
 beside X_L. (Earlier versions multiplied it into θ_S's X_L too: 364 °C instead of 404 °C
 for a mineral oil of S_FZG 12 at 13.6 mPa s; the standard's method keeps that reading
 as one end of the spread of its S_B.) The safety factor is
@@ -106,6 +106,7 @@ from types import MappingProxyType
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from friction.lubricant import BASE_OIL_FACTORS  # a property of the oil's base stock
 from geometry.core.errors import InputError
 from geometry.core.validation import broadcast, integer, one_of, positive, real, real_array
 
@@ -143,16 +144,6 @@ HEAT_DISTRIBUTIONS: Mapping[str, float] = MappingProxyType(
 LUBRICATION_FACTORS: Mapping[str, float] = MappingProxyType(
     {"spray": 1.2, "dip": 1.0, "submerged": 0.2})
 
-#: lubricant factor X_L of the base oil, of the scuffing temperature θ_S and of ISO's mean
-#: friction coefficient (ISO/TR 13989-1:2000 Eq. (27); DIN 3990-4:1987 the same values)
-BASE_OIL_FACTORS: Mapping[str, float] = MappingProxyType({
-    "mineral": 1.0,
-    "polyalphaolefin": 0.8,
-    "polyglycol_non_water_soluble": 0.7,
-    "polyglycol_water_soluble": 0.6,
-    "phosphate_ester": 1.3,
-    "traction_fluid": 1.5,
-})
 
 #: the FZG A/8.3/90 test's load stages (ISO 14635-1: 1 to 12; stages 13 and 14 of the
 #: extended test are accepted)

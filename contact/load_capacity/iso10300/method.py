@@ -1,0 +1,177 @@
+"""ISO 10300 Method B1 as a method of the load-capacity registry (``"iso10300"``).
+
+:func:`rate` is the registry's protocol (:class:`contact.load_capacity.methods.RatingMethod`)
+around :func:`contact.load_capacity.iso10300.rating.iso10300_rating`: the case's ``[design]``
+and ``[rating]`` tables, the pinion torques and speed, and the flank the analysis loads
+(which sets the rated side where the ``[rating]`` table does not).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from contact.load_capacity.iso10300.inputs import RatingInputs
+from contact.load_capacity.iso10300.rating import iso10300_rating
+from geometry.core.errors import InputError
+
+__all__ = ["rate", "rated_side", "tables"]
+
+
+def rated_side(case, flank: str | None) -> str | None:
+    """The ISO 23509 side (``"drive"`` or ``"coast"``) a loaded pinion flank is rated on.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : {"concave", "convex", "drive", "coast"} or None
+        The pinion flank, by name or as the case's drive or coast flank.
+
+    Returns
+    -------
+    str or None
+        ``"drive"`` when the pinion's concave flank drives (ISO 23509's drive side),
+        ``"coast"`` otherwise; None for ``flank`` None (the ``[rating]`` table's own side).
+    """
+    if flank is None:
+        return None
+    drive = case.pair.drive_flank
+    pinion_flank = {"drive": drive,
+                    "coast": "convex" if drive == "concave" else "concave"}.get(flank, flank)
+    return "drive" if pinion_flank == "concave" else "coast"
+
+
+def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
+         datasets: Mapping[str, xr.Dataset] | None = None,
+         rating: RatingInputs | Mapping[str, Any] | None = None) -> xr.Dataset:
+    """The ISO 10300-1/-2/-3:2014 Method B1 ``/rating`` dataset of a case (the registry's
+    ``"iso10300"`` method).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        With a ``[design]`` table (ISO 23509 basic data) and a ``[rating]`` table
+        (docs/rating.md).
+    torque : numpy.ndarray, shape (n,) — [N·m]
+        Pinion torques.
+    speed : float — [rpm]
+        Pinion speed (> 0).
+    flank : {"concave", "convex", "drive", "coast"}, optional
+        The pinion flank the analysis loads; sets the rated side where the rating inputs
+        leave it open (:func:`rated_side`). Default: the inputs' side (the drive side).
+    datasets : mapping of str to xarray.Dataset, optional
+        The analysis' groups; unused (Method B1 rates the nominal geometry of the virtual
+        cylindrical gears, not the loaded contact).
+    rating : RatingInputs or mapping, optional
+        Replaces the case's ``[rating]`` table.
+
+    Returns
+    -------
+    xarray.Dataset
+        :func:`contact.load_capacity.iso10300.rating.iso10300_rating`'s dataset.
+
+    Raises
+    ------
+    InputError
+        No ``[rating]`` table (and no ``rating``), or a bad table, torque or speed (named).
+
+    Notes
+    -----
+    ISO 10300-1/-2/-3:2014 Method B1; checked against ISO/TR 10300-30:2024 samples 1–3.
+    """
+    table = case.extra.get("rating") if rating is None else rating
+    if table is None:
+        raise InputError("rating: the case has no [rating] table (application factor, "
+                         "mounting, pitch deviation; docs/rating.md), and none was given")
+    side = rated_side(case, flank)
+    if side is not None:
+        inputs = table if isinstance(table, RatingInputs) else RatingInputs.from_mapping(table)
+        if inputs.side is None:
+            table = (dataclasses.replace(table, side=side) if isinstance(table, RatingInputs)
+                     else {**table, "side": side})
+    return iso10300_rating(case, torque, speed, rating=table)
+
+
+#: (variable, label, digits) of the rows of each table; a variable without the member
+#: dimension is shown once, in the column of the pair
+_GEOMETRY = (("d_v", "d_v [mm]", 3), ("z_v", "z_v", 3), ("z_vn", "z_vn", 3),
+             ("d_van", "d_van [mm]", 3), ("g_va", "g_va [mm]", 3), ("eps_va", "eps_va", 3),
+             ("eps_vb", "eps_vb", 3), ("eps_vg", "eps_vg", 3), ("b_veff", "b_v,eff [mm]", 3),
+             ("l_bm", "l_bm [mm]", 3), ("rho_rel", "rho_rel [mm]", 3))
+_PITTING = (("Z_MB", "Z_M-B", 3), ("Z_LS", "Z_LS", 3), ("Z_E", "Z_E [N^0.5/mm]", 3),
+            ("Z_Hyp", "Z_Hyp", 3), ("Z_L", "Z_L", 3), ("Z_speed", "Z_v", 3), ("Z_R", "Z_R", 3),
+            ("Z_NT", "Z_NT", 3), ("sigma_H0", "sigma_H0 [N/mm2]", 1),
+            ("sigma_H", "sigma_H [N/mm2]", 1), ("sigma_HP", "sigma_HP [N/mm2]", 1),
+            ("S_H", "S_H", 3))
+_BENDING = (("Y_Fa", "Y_Fa", 3), ("Y_Sa", "Y_Sa", 3), ("Y_eps", "Y_eps", 3),
+            ("Y_BS", "Y_BS", 3), ("Y_LS", "Y_LS", 3), ("Y_deltarelT", "Y_delta,relT", 3),
+            ("Y_RrelT", "Y_R,relT", 3), ("Y_NT", "Y_NT", 3),
+            ("sigma_F0", "sigma_F0 [N/mm2]", 1), ("sigma_F", "sigma_F [N/mm2]", 1),
+            ("sigma_FP", "sigma_FP [N/mm2]", 1), ("S_F", "S_F", 3))
+
+
+def _rows(ds, spec) -> list[tuple[str, str, str, str]]:
+    """(label, pair, pinion, gear): a value of the pair once, a member's in its column."""
+    rows = []
+    for name, label, digits in spec:
+        x = ds[name]
+        if "member" in x.dims:
+            rows.append((label, "", *(f"{float(v):.{digits}f}" for v in x.values)))
+        else:
+            rows.append((label, f"{float(x):.{digits}f}", "", ""))
+    return rows
+
+
+def tables(ds: xr.Dataset) -> str:
+    """The rating as text: the virtual gears, then per torque the load factors and the
+    pitting and bending tables (the layout of ISO/TR 10300-30's result tables), what
+    ``ltca rate`` prints.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A ``/rating`` dataset of :func:`rate`.
+
+    Returns
+    -------
+    str
+        The tables, lines separated by newlines (angles in degrees, stresses in N/mm²).
+    """
+    from tabulate import tabulate
+
+    head = ("", "pair", "pinion", "gear")
+    deg = 180.0 / math.pi
+    out = [f"ISO 10300 Method B1: {ds.attrs.get('case', '')} ({ds.attrs['side']} side), "
+           f"n1 {float(ds['pinion_speed']):g} rpm, K_A {float(ds['K_A']):.3f}, "
+           f"beta_v {float(ds['beta_v']) * deg:.3f} deg, alpha_vet "
+           f"{float(ds['alpha_vet']) * deg:.3f} deg",
+           "",
+           "virtual cylindrical gears (ISO 10300-1 Annex A)",
+           tabulate(_rows(ds, _GEOMETRY), headers=head, tablefmt="simple",
+                    disable_numparse=True)]
+    for t in ds["torque"].values:
+        one = ds.sel(torque=t)
+        out += ["", f"T1 = {t:g} N m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
+                    f"{float(one['F_vmt']):.1f} N, F_n {float(one['F_n']):.1f} N",
+                "load factors: " + "  ".join(
+                    f"{label} {float(one[name]):.3f}" for name, label in (
+                        ("K_v", "K_v"), ("K_Hbeta", "K_Hbeta"), ("K_Fbeta", "K_Fbeta"),
+                        ("K_Halpha", "K_Halpha"), ("K_Falpha", "K_Falpha"))),
+                "", "pitting (ISO 10300-2)",
+                tabulate(_rows(one, _PITTING), headers=head, tablefmt="simple",
+                         disable_numparse=True),
+                "", "tooth root (ISO 10300-3)",
+                tabulate(_rows(one, _BENDING), headers=head, tablefmt="simple",
+                         disable_numparse=True)]
+        for s, smin, what in (("S_H", "S_Hmin", "pitting"), ("S_F", "S_Fmin", "bending")):
+            low = [m for m, v in zip(ds["member"].values, one[s].values, strict=True)
+                   if v < float(ds[smin])]
+            if low:
+                out.append(f"{what}: {s} below {s},min {float(ds[smin]):g} for the "
+                           f"{' and the '.join(low)}")
+    return "\n".join(out)
