@@ -285,7 +285,10 @@ def run(args: argparse.Namespace) -> int:
             f"friction model {fr.attrs['friction_model']}"
         )
         print_extrapolation_warning(fr)
-        for line in durability_lines(fr, standard):
+        # scuffing and micropitting: the load-capacity step's group (issue 63)
+        sm = (tree["scuffing_micropitting"].to_dataset()
+              if "scuffing_micropitting" in tree.children else fr)
+        for line in durability_lines(sm, standard):
             print(line)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     print(plastic_note(lt))
@@ -512,7 +515,9 @@ def durability_lines(friction, standard=None) -> list[str]:
     Parameters
     ----------
     friction : xarray.Dataset
-        The ``/friction`` dataset (:func:`friction.efficiency.efficiency_analysis`).
+        The ``/scuffing_micropitting`` dataset
+        (:func:`contact.load_capacity.scuffing_micropitting.scuffing_micropitting`; the
+        ``/friction`` dataset of a file written before issue 63).
     standard : xarray.Dataset, optional
         The standard's method (:func:`standard_scuffing`) for comparison.
 
