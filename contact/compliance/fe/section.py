@@ -42,7 +42,8 @@ then cut at the slot bottom.
 Taking the crossing keeps what only one of the two cuts removed: it is this model's
 reading, not the union of the two cuts. The union needs the blades' point widths (case
 data now, ``point_width``) and the shape of each blade's far side (not case data); with
-the point widths alone the two tips of the default pinion leave a 0.55 mm step over a
+the point widths alone the two tips of the default pinion (before its tip planes were
+placed on the root cone, :mod:`geometry.synthesis.tip_plane`) left a 0.55 mm step over a
 0.8 mm gap at the heel, a bottom that changes kind along the face faster than the mapped
 mesh follows. :attr:`ToothSections.root_line` gives each cut's generated root line,
 :meth:`ToothSections.root_depth` its depth below the blank's root cone (docs/fe.md,
@@ -577,8 +578,9 @@ def tooth_sections(case, member: str, u) -> ToothSections:
     one_cut = mem.concave.machine == mem.convex.machine
     # separate cuts: each side runs on along its blade's flat tip, generated, across the
     # slot (half the circular pitch at the mean root). Not to the far end of the blade's
-    # point width: where two such tips do not meet (the heel of the default pinion, a
-    # 0.55 mm step over a 0.8 mm gap) the bottom between them is the roughing cut's,
+    # point width: where two such tips do not meet (the heel of the default pinion before
+    # its tip planes were placed: a 0.55 mm step over a 0.8 mm gap) the bottom between
+    # them is the roughing cut's,
     # not data, and its kind changes along the face faster than the mapped mesh follows
     reach = 0.5 * pitch * float(_bilinear(corners, 0.5, 0.0)[0][1])
     tips = {f: 0.0 if one_cut else reach for f in edge}
