@@ -20,6 +20,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # docs/gallery_scraper.py
 
 from geometry import __version__  # noqa: E402  (after the path, for a build from a clone)
 
@@ -91,12 +92,14 @@ sphinx_gallery_conf = {
     "remove_config_comments": True,
     "within_subsection_order": "FileNameSortKey",
     "matplotlib_animations": False,
-    "image_scrapers": ("matplotlib",),
+    "image_scrapers": ("matplotlib", "gallery_scraper"),  # docs/gallery_scraper.py
 }
+
 
 html_theme = "alabaster"
 html_title = f"hypoid-ltca {__version__}"
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+html_css_files = ["code.css"]  # code blocks wrap instead of running off the page
 
 
 def _public_api(package: str) -> str:

@@ -21,7 +21,7 @@ WALKTHROUGH = DOCS / "walkthrough.md"
 LAYOUT = DOCS / "layout.md"
 PAGES: tuple[Path, ...] = (README, *(DOCS / f"{name}.md" for name in (
     "getting_started", "walkthrough", "capabilities", "face_hobbed_pairs",
-    "studies_at_scale", "duty_cycle", "mesh_interface_overview",
+    "studies_at_scale", "duty_cycle", "mesh_interface",
     "correction_and_optimisation", "shell_vs_fe", "contact_problem", "solver_comparison",
     "layout")))
 
