@@ -34,7 +34,7 @@ def test_default_fe_root_stress_against_iso_and_the_pinion_heel():
     and ≥ 2× its toe end (measured 6.3× and 2.6×: the drive flank meets the heel's back
     cone at an acute 48°), where the gear's weak end is its toe (measured 3.2× its heel;
     its drive flank meets the toe at 67°), while the heel tenth of the face carries
-    11–15 % of the load at every torque."""
+    11.5–15.6 % of the load at every torque."""
     tree = run_analysis(DEFAULT)
     lt, rating = tree["/ltca"], tree["/rating"]
     fe = lt["root_stress_max"].transpose("torque", "member")
