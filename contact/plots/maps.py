@@ -176,8 +176,8 @@ def map_figure(
     else:
         nrows = ncols = 1
         cells = [{}]
-    # a lone panel is drawn wider: its title and annotations fit (was 370-400 px wide)
-    fig, grid, (cax,) = panel_grid(nrows, ncols, panel=(3.0 if ncols > 1 else 5.0, 2.3),
+    # a lone panel is drawn larger: its title, axis labels and annotations fit
+    fig, grid, (cax,) = panel_grid(nrows, ncols, panel=(3.0, 2.3) if ncols > 1 else (5.0, 3.2),
                                    colorbars=1, left=0.9)
     axes = grid.ravel()
     mappable = None

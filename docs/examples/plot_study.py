@@ -16,7 +16,8 @@ run = contact.StudyRun(scheduler="synchronous",
 study = contact.sweep(delta_E=[-0.1, 0.0, 0.1], delta_P=[-0.1, 0.0, 0.1], torque=250,
                       run=run)
 assert (study["status"] == 0).all()
-te_map = contact.map_figure(study, "lte_peak_to_peak", x="delta_E", y="delta_P")
+te_map = contact.map_figure(study, "lte_peak_to_peak", x="delta_E", y="delta_P",
+                            heading="LTE peak-to-peak at 250 N·m")
 
 # %%
 # The loaded pattern's centre moves toward the toe as ΔE grows (toe 0 → heel 1):
