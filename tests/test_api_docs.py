@@ -51,6 +51,7 @@ MODELS = {
     "contact.ease_off", "contact.unloaded_tca", "contact.loaded_tca",
     "contact.influence_coefficients", "contact.fe_compliance_matrix", "contact.fillet_stress",
     "contact.shell_assembler", "contact.iso10300_rating", "contact.rate_load_capacity",
+    "contact.scuffing_micropitting",
     "contact.run_duty_cycle", "contact.sensitivity", "contact.vh_check", "contact.develop",
     "friction.GroundSurface", "friction.efficiency_analysis", "friction.friction_coefficient",
     "friction.load_kolivand2009_fit", "friction.pressure_viscosity_coefficient",
@@ -118,7 +119,6 @@ SOURCE_PENDING = {
     "contact.fe_compliance_matrix": "contact/compliance/fe/superposition.py",
     "contact.fillet_stress": "contact/compliance/fe/superposition.py",
     "contact.influence_coefficients": "contact/compliance/fe/influence.py",
-    "contact.rate_load_capacity": "contact/load_capacity (moved while this was written)",
     "friction.load_kolivand2009_fit": "friction/kolivand2009.py",
 }
 

@@ -234,6 +234,12 @@ def rate(case: Any, torque: Any = None, speed: float | None = None, *,
         A bad case, torque, speed, flank or option (named), or a method that returned
         something other than a Dataset.
 
+    Notes
+    -----
+    The rating is the method's: ``"iso10300"`` is ISO 10300-1/-2/-3:2014 Method B1,
+    checked against ISO/TR 10300-30:2024's three worked samples; each method's ``source``
+    (:class:`RatingMethod`) names its standard and worked example.
+
     Examples
     --------
     >>> from contact.load_capacity import available_methods, rate
