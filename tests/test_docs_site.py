@@ -85,3 +85,28 @@ def test_no_public_name_hides_a_subpackage():
         package = importlib.import_module(name)
         submodules = {m.name for m in pkgutil.iter_modules(package.__path__)}
         assert not submodules & set(package.__all__), name
+
+
+def test_bundled_cases_name_files_that_install():
+    """The provenance of a bundled case (its ``[optimize]`` table's optimiser log and basic
+    design, its ``[deviations]``) names files beside it, relative to the case, that install
+    with it as the package data ``contact.cases`` (pyproject.toml) — never a path of the
+    repository such as ``docs/`` that an installed toolkit lacks (issue 63 item 3)."""
+    import fnmatch
+    import tomllib
+
+    from contact import bundled_case_path, bundled_cases
+
+    pyproject = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    installed = pyproject["tool"]["setuptools"]["package-data"]["contact.cases"]
+    named = 0
+    for name in bundled_cases():
+        path = bundled_case_path(name)
+        table = tomllib.loads(path.read_text(encoding="utf-8"))
+        files = [table.get("optimize", {}).get(k) for k in ("log_file", "basic_design")]
+        files += list(table.get("deviations", {}).values())
+        for file in filter(None, files):
+            named += 1
+            assert (path.parent / file).is_file(), (name, file)
+            assert any(fnmatch.fnmatch(file, pattern) for pattern in installed), (name, file)
+    assert named >= 8
