@@ -2,13 +2,13 @@
 A Stribeck curve from the friction model
 ========================================
 
-The friction-coefficient model ``kolivand2009`` (the seed's Eq. 5.11 form, refitted to
-the toolkit's stochastic mixed-EHL solver; the default until issue 61, now ``mixed_ehl``) at a hypoid flank's conditions:
-0.5 GPa Hertz pressure, slide-to-roll ratio 0.3, 75W90 at 50 and 90 °C, R 20 mm,
-superfinished flanks of Rq 0.1 µm, over the entraining speed. The friction coefficient
-falls from the boundary regime as the film builds up and rises again with the film's
-shear at higher speed: the Stribeck minimum (at 1 GPa and above the thermal film's μ keeps
-falling up to 20 m/s: docs/ehl.md, the regime map).
+The friction-coefficient model ``kolivand2009`` (the seed's Eq. 5.11 form, refitted to the
+toolkit's stochastic mixed-EHL solver; the default until issue 61, now ``mixed_ehl``) at a
+hypoid flank's conditions: 0.5 GPa Hertz pressure, slide-to-roll ratio 0.3, 75W90 at 50
+and 90 °C, R 20 mm, superfinished flanks of Rq 0.1 µm, over the entraining speed. The
+friction coefficient falls from the boundary regime as the film builds up and rises again
+with the film's shear at higher speed: the Stribeck minimum (at 1 GPa and above the
+thermal film's μ keeps falling up to 20 m/s: docs/ehl.md, the regime map).
 """
 
 import matplotlib.pyplot as plt
