@@ -189,14 +189,15 @@ def test_one_spelling_of_the_microradian(run_files):
 
 def test_durability_table_equals_the_file(run_files):
     """The scuffing and micropitting table: one row per torque whose cells are the file's
-    /friction values at the table's decimals ("–" for the bundled oil's unknown λ_GFP),
+    /scuffing_micropitting values (issue 63) at the table's decimals ("–" for the bundled
+    oil's unknown λ_GFP),
     then the standard's peak contact temperature and S_B from /rating/flash_temperature, as
     written and with the lengthwise sliding, the spread of S_B per variant and the reason
     for the missing safety said below it (docs/scuffing_micropitting.md)."""
     from contact.plots.report import DURABILITY_COLUMNS, render_report
 
     tree = read_netcdf(run_files[0], tree=True)
-    fr = tree["friction"].to_dataset()
+    fr = tree["scuffing_micropitting"].to_dataset()
     doc = _parse(render_report(tree, figures=[]))
     rows = doc.findall(".//h:table[@id='durability-table']/h:tbody/h:tr", NS)
     assert len(rows) == fr.sizes["torque"]
