@@ -233,6 +233,8 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
         if abs(top) <= tol:
             break
         slope = 1.0 if prev is None or prev[0] == moved else (top - prev[1]) / (moved - prev[0])
+        if not 0.5 < slope < 2.0:  # the depth grows with the move nearly one to one
+            slope = 1.0
         prev = (moved, top)
         moved -= top / slope
         b, s = move_tip_plane(blade, settings, moved)
