@@ -464,7 +464,7 @@ def iso_tr_14179_2(
     base_oil_factor : float — [1]
         X_L: 1.0 mineral oil (default), 0.8 polyalphaolefin, 0.7 non-water-soluble polyglycol,
         0.6 water-soluble polyglycol (the values of
-        :data:`friction.flash_temperature.BASE_OIL_FACTORS`), in (0, 2].
+        :data:`friction.lubricant.BASE_OIL_FACTORS`), in (0, 2].
 
     Returns
     -------
