@@ -146,7 +146,7 @@ def _ablation(cases) -> list[list[str]]:
                 tree = run_analysis(name, list(TORQUES),
                                     misalignment=Misalignment(delta_E=de, delta_P=dp),
                                     options=LTCAOptions(compliance="fe"), operating=False,
-                                    geometry=False, mesh_interface=False)
+                                    geometry=False, mesh_interface=False, root_stress=False)
                 lt = tree["ltca"].to_dataset()
                 share = 100 * np.nanmax(np.nan_to_num(lt["load_share"].values), axis=(1, 2))
                 rows.append([name.replace("kolivand2009_", ""), label,

@@ -87,7 +87,8 @@ def main(argv=None) -> None:
         for model in args.models:
             options = LTCAOptions(rolls_per_cycle=args.rolls_per_cycle, **EDGE_MODELS[model])
             tree = run_analysis(case, args.torque, options=options, deviations=False,
-                                geometry=False, operating=False, mesh_interface=False)
+                                geometry=False, operating=False, mesh_interface=False,
+                                root_stress=False, steps={"load_capacity": None})
             ltca = tree["/ltca"].to_dataset()
             print(f"\n{case.name}, {model}, {args.rolls_per_cycle} rolls per cycle "
                   f"(UTE p-p {np.ptp(ltca['unloaded_transmission_error'].values):.1f} µrad)")

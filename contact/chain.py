@@ -75,9 +75,10 @@ class ChainState:
 
     A step (built-in or a user's callable) reads the attributes it needs and adds its
     group(s) to :attr:`groups`; it may replace a group an earlier step made (the root
-    stress step adds its variables to ``/ltca``).
+    stress step adds its variables to ``/ltca``). :func:`contact.run_analysis` makes it;
+    each parameter is the attribute of the same name.
 
-    Attributes
+    Parameters
     ----------
     case : geometry.case.Case
         The case as run: its misalignment and its ``[operating]`` table the run's (torques,
@@ -108,12 +109,19 @@ class ChainState:
         The ease-off the LTCA loads (the deviated surfaces' where there are deviations).
     transitions : tuple of float — [rad]
         The UTCA's roll angles where the contact passes to the next tooth pair.
+    theoretical_easeoff : contact.utca.easeoff.EaseOff or None
+        With deviations, the theoretical surfaces' ease-off (``/theoretical/ltca``).
+    theoretical_transitions : tuple of float — [rad]
+        Its UTCA's transition roll angles.
     roll_problems : list or None
         Filled by the LTCA with every roll position's problem and solution when a
         ``mesh_interface`` step follows (it linearises them), else None.
     not_run : dict of str to str
-        Why an optional step gave no group (``"not requested"`` when the chain skips it;
-        the file's ``<step>_not_run`` root attributes).
+        Why an optional step gave no group (``"not requested (steps)"`` when the chain
+        skips it; the file's ``<step>_not_run`` root attributes).
+    prepared : dict of str to object
+        What a built-in step computed from the inputs before any work (the rating, so
+        that a bad ``[rating]`` table is refused before the LTCA).
     """
 
     case: Case
@@ -433,6 +441,26 @@ class AnalysisChain:
     >>> AnalysisChain(root_stress=None).root_stress is None
     True
     """
+
+    Parameters
+    ----------
+    geometry : str, callable or None
+        ``/geometry``: the four generated flanks (``"flanks"``, seed ch. 2).
+    utca : str or callable
+        ``/easeoff``, ``/utca``: ease-off and unloaded TCA (``"easeoff"``, seed §2.3–2.4,
+        ch. 3; deviations ch. 4).
+    ltca : str or callable
+        ``/ltca``: the loaded TCA, the contact QP (``"qp"``, seed Eq. 3.12–3.14).
+    root_stress : str, callable or None
+        ``root_stress``, ``root_stress_max`` [MPa] in ``/ltca`` from FE influence
+        coefficients (``"fe"``).
+    mesh_interface : str, callable or None
+        ``/mesh_interface``: mesh stiffness and TE excitation (``"linearised"``).
+    efficiency : str, callable or None
+        ``/friction``: friction, power loss, efficiency (``"local_friction"``, seed ch. 5).
+    load_capacity : str, callable or None
+        ``/rating`` and ``/rating/flash_temperature``: ISO 10300 Method B1 and ISO/TS
+        6336-20 (``"iso10300"``).
 
     geometry: StepChoice = "flanks"
     utca: StepChoice = "easeoff"

@@ -137,7 +137,7 @@ def test_single_bin_reproduces_run_analysis(case, one_bin):
 
     _, ds = one_bin
     tree = run_analysis(case, [250.0], options=OPTIONS, operating=False, geometry=False,
-                        mesh_interface=False)
+                        mesh_interface=False, root_stress=False)
     lt = tree["/ltca"].to_dataset()
     fr = efficiency_analysis(lt, operating_conditions(case, pinion_speed=1500.0))
     for name, ref in (("lte_mean", lt["lte_mean"].values[0]),

@@ -195,7 +195,7 @@ def test_bad_input():
 
 def test_whole_analysis_round_trip_and_plot_from_file(tmp_path):
     tree = run_analysis(_case(), [100.0], options=SMALL, geometry=True,
-                        operating=OperatingConditions())
+                        operating=OperatingConditions(), root_stress=False)
     assert {"geometry", "easeoff", "utca", "ltca", "friction"} <= set(tree.children)
     check_conventions(tree)
     path = write_netcdf(tree, tmp_path / "a.nc", inputs=tree.attrs["inputs"])
@@ -313,7 +313,7 @@ def test_stored_contact_points_satisfy_the_equation_of_meshing():
 
 def test_run_analysis_adds_friction_with_a_speed():
     tree = run_analysis(_case(), [100.0], options=SMALL, geometry=False,
-                        operating=OperatingConditions())
+                        operating=OperatingConditions(), root_stress=False)
     fr = tree["friction"].dataset
     assert {"efficiency", "power_loss", "friction_coefficient", "lambda_ratio"} <= set(fr)
     assert 0.9 < float(fr["efficiency_mean"].item()) < 1.0

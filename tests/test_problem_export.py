@@ -107,7 +107,7 @@ def test_exported_problems_are_those_run_analysis_solved(exported):
     for label, mis in (("aligned", Misalignment()),
                        ("misaligned", SEED_TABLE_3_1["misalignment"])):
         ltca = run_analysis(CASE, [TORQUE], misalignment=mis, options=SMALL,
-                            geometry=False)["ltca"].dataset
+                            geometry=False, root_stress=False)["ltca"].dataset
         for e in (e for e in entries if e["misalignment"] == label):
             sol = solve_contact(read_problem(exported / e["file"]))
             assert sol.found

@@ -51,7 +51,7 @@ def _single(case, **misalignment) -> dict[str, np.ndarray]:
     # Dask's workers run BLAS single-threaded (OMP_NUM_THREADS=1); so does the
     # reference, so that sums are taken in the same order
     with threadpool_limits(1):
-        tree = run_analysis(c, [TORQUE], options=OPTIONS, geometry=False)
+        tree = run_analysis(c, [TORQUE], options=OPTIONS, geometry=False, root_stress=False)
     return point_summary(tree, case)
 
 
@@ -118,7 +118,8 @@ def test_failing_point_comes_back_with_its_status(case):
 def test_summaries_are_consistent(case):
     """Identities of the summaries: shares in [0, 1], the pattern centre inside its
     extent, mm = fraction × face width, the LTE summary is /ltca's own."""
-    tree = run_analysis(case, [50.0, TORQUE], options=OPTIONS, geometry=False)
+    tree = run_analysis(case, [50.0, TORQUE], options=OPTIONS, geometry=False,
+                        root_stress=False)
     s = point_summary(tree, case)
     assert np.all((s["edge_load_share"] >= 0) & (s["edge_load_share"] <= 1))
     assert np.all(s["pattern_toe_u"] <= s["pattern_centre_u"])
@@ -228,7 +229,7 @@ def test_vh_check_moves_the_pattern_to_toe_and_heel(case):
         V, H = float(r["V"]), float(r["H"])
         mis = Misalignment(delta_E=V, delta_P=H)
         tree = run_analysis(dataclasses.replace(case, misalignment=mis), [50.0],
-                            options=OPTIONS, geometry=False)
+                            options=OPTIONS, geometry=False, root_stress=False)
         s = point_summary(tree, case)
         assert abs(s["pattern_centre_u"][0] - float(r["target_u"])) <= float(
             r["grid_tolerance_u"]), pos

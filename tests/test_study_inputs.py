@@ -121,7 +121,8 @@ def test_forced_points_are_flagged_as_ltca_run_warns(tmp_path, capsys):
     for e, bits in zip(ds["delta_E"].values, flag.values[:, 0], strict=True):
         mis = Misalignment(delta_E=float(e), delta_P=case.misalignment.delta_P)
         tree = run_analysis(case, [50.0], misalignment=mis, options=LTCAOptions(
-            rolls_per_cycle=6), geometry=False, theoretical=False, operating=False)
+            rolls_per_cycle=6), geometry=False, theoretical=False, operating=False,
+            root_stress=False)
         said = {w.split(":")[0] for w in plausibility_warnings(tree["ltca"].to_dataset())}
         names = {"plastic contact": 1, "flank above the material's limit": 2,
                  "LTE spread": 4}
