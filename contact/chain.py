@@ -429,19 +429,6 @@ class AnalysisChain:
     :data:`STEPS`, a callable ``f(state: ChainState) -> None``, or None to skip an optional
     step (:data:`OPTIONAL_STEPS`). The defaults are the steps ``ltca run`` runs.
 
-    Raises
-    ------
-    InputError
-        An unknown name (the message lists the available ones), a value that is neither
-        a name, a callable nor None, or None for ``utca`` or ``ltca``.
-
-    Examples
-    --------
-    >>> from contact import AnalysisChain
-    >>> AnalysisChain(root_stress=None).root_stress is None
-    True
-    """
-
     Parameters
     ----------
     geometry : str, callable or None
@@ -461,6 +448,19 @@ class AnalysisChain:
     load_capacity : str, callable or None
         ``/rating`` and ``/rating/flash_temperature``: ISO 10300 Method B1 and ISO/TS
         6336-20 (``"iso10300"``).
+
+    Raises
+    ------
+    InputError
+        An unknown name (the message lists the available ones), a value that is neither
+        a name, a callable nor None, or None for ``utca`` or ``ltca``.
+
+    Examples
+    --------
+    >>> from contact import AnalysisChain
+    >>> AnalysisChain(root_stress=None).root_stress is None
+    True
+    """
 
     geometry: StepChoice = "flanks"
     utca: StepChoice = "easeoff"
