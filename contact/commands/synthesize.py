@@ -135,6 +135,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
     case, torque, torque_why = with_design_torque(case, basic.options.design_torque)
     if development is not None:
         case = development.recorded(case)
+        if development.torque_lowered:  # the developed bearing's own capacity
+            torque, torque_why = development.torque[1], development.torque_source
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))

@@ -235,7 +235,8 @@ SYNTHESIS_STEPS = 10
 
 
 def synthesize(basic: BasicDesign, *, conjugate: bool = False,
-               progress: Callable[[str], None] | None = None) -> tuple[Case, SynthesisReport]:
+               progress: Callable[[str], None] | None = None,
+               memo: dict | None = None) -> tuple[Case, SynthesisReport]:
     """Complete face-milled case from basic design data (ISO 23509 blank + local synthesis).
 
     Parameters
@@ -251,6 +252,17 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         starts (blanks and gear; per pinion flank its mean point and local synthesis, its
         generating tools, its modified roll, its relief; the case), for a command's
         progress lines; the synthesis takes from 15 s to minutes.
+    memo : dict, optional
+        Kept by the caller across syntheses of one design whose pinion prescriptions vary
+        (the development bearing, :mod:`contact.optimize.development`): steps 3–6 of a
+        pinion flank (mean point, local synthesis, generating tools, modified roll) are
+        stored under the design's blank and gear inputs and the flank's path angle, TE
+        level, ellipse length, approach and reference gear rotation, and reused when they
+        recur; only the relief (step 7) and the tip plane (step 8) are made again. The
+        result is the same as without a memo (steps 3–6 do not read the relief; the coast
+        flank depends on the drive flank only through the mean point's gear rotation,
+        which the prescriptions do not move), so a development that varies the drive
+        flank synthesises the coast flank once. Default None: nothing kept.
 
     Returns
     -------
@@ -297,9 +309,12 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
                      gear_hand, pair_kw(design.Sigma, design.a, gear_hand))
     flanks: dict[str, FlankSynthesis] = {}
     ref_gear_rotation = None
+    # the memo's entries of this design: every input but the pinion flanks' prescriptions
+    kept = (None if memo is None else memo.setdefault(
+        (design, replace(opt, concave=FlankOptions(), convex=FlankOptions())), {}))
     for pf in (drive, coast):
         flanks[pf] = _synthesize_flank(pair, pf, opt.flank(pf), ref_gear_rotation,
-                                       conjugate=conjugate, say=say)
+                                       conjugate=conjugate, say=say, memo=kept)
         if ref_gear_rotation is None:
             ref_gear_rotation = flanks[pf].mean.gear_rotation
     flanks[coast] = _coast_in_drive_frame(flanks[coast], flanks[drive])
@@ -326,12 +341,46 @@ class _PairData(NamedTuple):
 def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
                       ref_gear_rotation: float | None, *,
                       conjugate: bool = False,
-                      say: Callable[[str], None] = lambda _step: None) -> FlankSynthesis:
-    """Steps 3–6 of the module docstring for pinion flank ``pf``: mean point, local
-    synthesis, generating tools and the higher-order roll. The second flank is placed
-    with the ISO mean normal backlash against the first's gear rotation
+                      say: Callable[[str], None] = lambda _step: None,
+                      memo: dict | None = None) -> FlankSynthesis:
+    """Steps 3–7 of the module docstring for pinion flank ``pf``: mean point, local
+    synthesis, generating tools, the higher-order roll and the relief. The second flank is
+    placed with the ISO mean normal backlash against the first's gear rotation
     ``ref_gear_rotation`` [rad] (None for the first). ``conjugate``: no mismatch (a21 = 0,
-    zero curvature gap, no higher-order roll)."""
+    zero curvature gap, no higher-order roll). ``memo`` (the design's entries of
+    :func:`synthesize`'s memo): steps 3–6 reused where the prescriptions they read
+    recur."""
+    key = (pf, fo.path_angle, fo.te_level, fo.ellipse_length, fo.approach,
+           ref_gear_rotation, conjugate)
+    if memo is not None and key in memo:
+        for step in ("mean point and local synthesis", "generating tools (point radius, "
+                     "blade profile, ratio of roll)", "modified roll (6D, 24E)"):
+            say(f"pinion {pf}: {step} (kept from an earlier synthesis)")
+        fs = replace(memo[key], options=fo)
+    else:
+        fs = _unrelieved_flank(pair, pf, fo, ref_gear_rotation, conjugate=conjugate, say=say)
+        if memo is not None:
+            memo[key] = fs
+    if conjugate:
+        return fs
+    # step 7, profile relief: flankrem and toprem beyond corners above and below M, so the
+    # flank near M (and with it steps 4-6) is unchanged (geometry.machine.relief)
+    say(f"pinion {pf}: tip and root relief")
+    tools = fs.tools
+    try:
+        blade = relieved_blade(tools.blade, tools.settings, pair.pinion_blank,
+                               pair.pinion_hand, pair.gear_blank, tip_relief=fo.tip_relief,
+                               root_relief=fo.root_relief, start=fo.relief_start)
+    except ReliefError as exc:  # named as the basic file's per-flank input
+        raise ReliefError(f"synthesis.{pf}.{exc} ([synthesis] {exc.field} sets both "
+                          "pinion flanks)", exc.field) from None
+    return replace(fs, tools=tools._replace(blade=blade))
+
+
+def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
+                      ref_gear_rotation: float | None, *, conjugate: bool,
+                      say: Callable[[str], None]) -> FlankSynthesis:
+    """Steps 3–6 of :func:`_synthesize_flank` (the blade before its relief)."""
     geom, design = pair.geom, pair.geom.design
     z1 = geom.pinion.z
     gblade = pair.gear.blades[_OTHER[pf]]
@@ -379,17 +428,7 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
                        phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
                        pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
                        ratio=z1 / geom.gear.z)
-    # step 7, profile relief: flankrem and toprem beyond corners above and below M, so the
-    # flank near M (and with it steps 4-6) is unchanged (geometry.machine.relief)
-    say(f"pinion {pf}: tip and root relief")
-    try:
-        blade = relieved_blade(tools.blade, tools.settings, pair.pinion_blank,
-                               pair.pinion_hand, pair.gear_blank, tip_relief=fo.tip_relief,
-                               root_relief=fo.root_relief, start=fo.relief_start)
-    except ReliefError as exc:  # named as the basic file's per-flank input
-        raise ReliefError(f"synthesis.{pf}.{exc} ([synthesis] {exc.field} sets both "
-                          "pinion flanks)", exc.field) from None
-    return FlankSynthesis(pf, fo, a21, mp, ls, tools._replace(blade=blade))
+    return FlankSynthesis(pf, fo, a21, mp, ls, tools)
 
 
 def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
