@@ -208,6 +208,9 @@ def test_a_case_that_cannot_be_rated_says_why():
     assert "rating" not in tree.children
     assert "no pinion speed" in tree.attrs["load_capacity_not_run"]
     assert tree.attrs["efficiency_not_run"] == "not requested (steps)"
+    # the verdict gives the rating's own reason
+    assert dict(verdict(tree).unchecked)["rating"] == (
+        "no /rating group: " + tree.attrs["load_capacity_not_run"])
 
 
 def test_a_bad_rating_table_is_refused_before_the_ltca():

@@ -689,8 +689,9 @@ _ANALYSIS_GROUPS = {
 
 def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], ...]:
     """The checks of ``kind`` (:data:`CHECKS`) not among ``checks``, each with why: for
-    an analysis the absent group it reads (:data:`_ANALYSIS_GROUPS`), else the data the
-    result lacks."""
+    an analysis the absent group it reads (:data:`_ANALYSIS_GROUPS`; the rating's with the
+    analysis' own reason where its root attribute ``load_capacity_not_run`` gives one,
+    :func:`contact.run_analysis`), else the data the result lacks."""
     missing = [c for c in CHECKS[kind] if c not in checks]
     if kind != "analysis":
         return tuple((c, "the result lacks its data") for c in missing)
@@ -701,5 +702,9 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
         g = group.get(c, "ltca")
         why = (_ANALYSIS_GROUPS[g] if _group(result, g) is None
                else f"/{g} lacks the variables it reads")
+        said = str(getattr(result, "attrs", {}).get("load_capacity_not_run", ""))
+        if g == "rating" and _group(result, g) is None and said and not said.startswith(
+                "not requested"):  # why the rating step gave none (else: it was skipped)
+            why = f"no /rating group: {said}"
         out.append((c, why))
     return tuple(out)
