@@ -338,12 +338,7 @@ def _load_capacity_step(state: ChainState) -> None:
     contact temperature, λ_GF and the safeties S_B, S_λ on the LTCA's contact segments
     (:func:`contact.load_capacity.scuffing_micropitting.scuffing_micropitting`, from
     ``/ltca`` and ``/friction``; with or without a rating)."""
-    friction = state.groups.get("/friction")
-    if friction is not None:
-        scuffing_micropitting = _load_capacity("scuffing_micropitting", "scuffing_micropitting")
-        state.groups["/scuffing_micropitting"] = scuffing_micropitting(
-            state.groups["/ltca"], friction,
-            lubricant=None if state.operating is None else state.operating.lubricant)
+    load_capacity_without_rating(state)
     rating, why = state.prepared.pop("load_capacity", None) or _rating_of(state)
     if rating is None:
         state.not_run["load_capacity"] = why
@@ -352,6 +347,23 @@ def _load_capacity_step(state: ChainState) -> None:
     flash = scuffing_flash_temperature(rating, state.groups.get("/friction"))
     if flash is not None:  # stored beside the rating it is computed on
         state.groups["/rating/flash_temperature"] = flash
+
+
+def load_capacity_without_rating(state: ChainState) -> None:
+    """``/scuffing_micropitting`` alone (the ``load_capacity`` step's
+    ``"scuffing_micropitting"`` implementation; ``ltca run --no-rating``): with
+    ``/friction``, Blok's flash temperature, the contact temperature, λ_GF and the safeties
+    S_B, S_λ on the LTCA's contact segments
+    (:func:`contact.load_capacity.scuffing_micropitting.scuffing_micropitting`, from
+    ``/ltca`` and ``/friction``; ISO/TS 6336-20, ISO/TS 6336-22); nothing without
+    ``/friction``."""
+    friction = state.groups.get("/friction")
+    if friction is None:
+        return
+    scuffing_micropitting = _load_capacity("scuffing_micropitting", "scuffing_micropitting")
+    state.groups["/scuffing_micropitting"] = scuffing_micropitting(
+        state.groups["/ltca"], friction,
+        lubricant=None if state.operating is None else state.operating.lubricant)
 
 
 def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
@@ -399,7 +411,8 @@ STEPS: Mapping[str, Mapping[str, Callable[[ChainState], None]]] = {
     "root_stress": {"fe": root_stress_fe},
     "mesh_interface": {"linearised": mesh_interface_linearised},
     "efficiency": {"local_friction": efficiency_local_friction},
-    "load_capacity": {"iso10300": _load_capacity_step},
+    "load_capacity": {"iso10300": _load_capacity_step,
+                      "scuffing_micropitting": load_capacity_without_rating},
 }
 
 #: checks a built-in step makes on its inputs before any step runs
@@ -446,8 +459,10 @@ class AnalysisChain:
     efficiency : str, callable or None
         ``/friction``: friction, power loss, efficiency (``"local_friction"``, seed ch. 5).
     load_capacity : str, callable or None
+        ``/scuffing_micropitting`` (Blok, ISO/TS 6336-20/-22 on the LTCA's contact),
         ``/rating`` and ``/rating/flash_temperature``: ISO 10300 Method B1 and ISO/TS
-        6336-20 (``"iso10300"``).
+        6336-20 (``"iso10300"``); ``"scuffing_micropitting"``: the first alone (no rating,
+        ``ltca run --no-rating``).
 
     Raises
     ------

@@ -201,14 +201,20 @@ def test_report_shows_the_rating_table(sample1_run):
 
 
 def test_run_without_rating(tmp_path, capsys):
+    """--no-rating leaves the rating out, not the rest of the load capacity: scuffing and
+    micropitting on the LTCA's contact (/scuffing_micropitting, issue 63) are written and
+    printed as with the rating."""
     path = tmp_path / "s1.nc"
     assert main(["run", "iso10300_30_sample1", "-o", str(path), "--no-rating", *QUICK]) == 0
-    assert "ISO 10300 rating not computed (--no-rating)" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "ISO 10300 rating not computed (--no-rating)" in out
+    assert "scuffing safety S_B" in out
     from contact.plots.report import report_context
     from geometry.core.io import read_netcdf
 
     tree = read_netcdf(path, tree=True)
     assert "rating" not in tree.children
+    assert "scuffing_safety" in tree["scuffing_micropitting"].variables
     ctx = report_context(tree, figures=[])
     assert ctx["rating"] is None and "/rating" in [a["group"] for a in ctx["absent"]]
 

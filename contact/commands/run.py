@@ -222,9 +222,10 @@ def run(args: argparse.Namespace) -> int:
         # a bar on a terminal, plain lines in a log (the LTCA and a first FE build)
         progress=args.progress,
         root_stress=args.root_stress,
-        # the chain's load-capacity step (/rating, /rating/flash_temperature; a bad
-        # [rating] table is refused before the work)
-        steps=None if args.rating else {"load_capacity": None},
+        # the chain's load-capacity step (/scuffing_micropitting, /rating,
+        # /rating/flash_temperature; a bad [rating] table is refused before the work);
+        # --no-rating keeps scuffing and micropitting, without the rating
+        steps=None if args.rating else {"load_capacity": "scuffing_micropitting"},
     )
     rating_why = ("ISO 10300 rating not computed (--no-rating)" if not args.rating
                   else str(tree.attrs.get("load_capacity_not_run", "")))
