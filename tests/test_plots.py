@@ -76,7 +76,8 @@ def emap():
 
 
 def _groups(tree):
-    return {g: tree[g].to_dataset() for g in ("easeoff", "utca", "ltca", "friction")
+    return {g: tree[g].to_dataset() for g in ("easeoff", "utca", "ltca", "friction",
+                                              "scuffing_micropitting")
             if g in tree.children}
 
 
@@ -349,14 +350,18 @@ def test_friction_flank_draws_flash_temperature_and_specific_film(default_tree):
     film thickness λ_GF [1] (docs/scuffing_micropitting.md), each in its own sequential
     scale up to the flank's peak at the largest torque."""
     g = _groups(default_tree)
-    fig = friction_flank_figure(g["easeoff"], g["ltca"], g["friction"])
+    # the load-capacity step's variables beside the friction stage's (issue 63), as the
+    # analysis figures draw them
+    sm = g["scuffing_micropitting"]
+    fr = g["friction"].assign({n: sm[n] for n in ("flash_temperature",
+                                                  "specific_film_thickness")})
+    fig = friction_flank_figure(g["easeoff"], g["ltca"], fr)
     titles = [ax.get_title() for ax in fig.axes]
     assert "flash temperature [K]" in titles
     assert "specific film thickness λ_GF [1]" in titles
     flank = g["ltca"]["segment_kind"].values == "curve"
     ax = fig.axes[titles.index("flash temperature [K]")]
-    peak = float(np.nanmax(g["friction"]["flash_temperature"].isel(torque=-1).values[
-        ..., flank]))
+    peak = float(np.nanmax(sm["flash_temperature"].isel(torque=-1).values[..., flank]))
     lines = [c for c in ax.collections if isinstance(c, LineCollection) and c.norm.vmax]
     assert lines and lines[0].norm.vmin == 0.0
     assert lines[0].norm.vmax == pytest.approx(peak)
