@@ -46,7 +46,13 @@ def _spline(eo: EaseOff, field: np.ndarray) -> RectBivariateSpline:
 def pinion_curvature(case, eo: EaseOff, u, v, w_gear, phi):
     """Normal curvature [1/mm] of the real pinion, at the mates of gear places (u, v),
     along gear-frame directions ``w_gear`` (..., 3), the pinion turned by φ [rad] and the
-    gear at its ideal rotation (the directions are carried to the pinion frame)."""
+    gear at its ideal rotation (the directions are carried to the pinion frame).
+
+    Notes
+    -----
+    Source: Euler's formula for the normal curvature from the principal curvatures of the
+    real flank (seed Eq. 2.13); module docstring.
+    """
     kin = eo.kinematics
     ps = flank_at(case, "pinion", eo.pinion_flank, _spline(eo, eo.pinion_axial).ev(u, v),
                   _spline(eo, eo.pinion_radius).ev(u, v),
@@ -85,7 +91,13 @@ def _node_guess(eo: EaseOff, params, section, u, v):
 
 
 def gear_curvature(case, eo: EaseOff, position, w_gear):
-    """Normal curvature [1/mm] of the real gear at gear-frame points along ``w_gear``."""
+    """Normal curvature [1/mm] of the real gear at gear-frame points along ``w_gear``.
+
+    Notes
+    -----
+    Source: Euler's formula for the normal curvature from the principal curvatures of the
+    real flank (seed Eq. 2.13); module docstring.
+    """
     z, rho = position[..., 2], np.hypot(position[..., 0], position[..., 1])
     u, v = projection_fractions(blank_outline(case.gear.blank).corners, z, rho)
     guess = _node_guess(eo, eo.gear_parameters, eo.gear_section, np.clip(u, 0.0, 1.0),

@@ -266,6 +266,9 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     pinion's surface has the same form), on the gear flank point g under P: the segment's
     normal, (u, v) and gear-frame point are g's (:func:`gear_flank_under`), its moment arm
     that of the normal through P.
+
+    Source: the LTCA's line model (seed §3.3) continued onto the flank boundary, as the
+    module docstring derives it.
     """
     kin = eo.kinematics
     quad = SegmentQuadratic(np.array([0.0, 0.5, 1.0]))
@@ -449,7 +452,14 @@ def edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, fl
     """R_eq [mm] across the boundary segments ``which`` (indices (M,)): the edge's
     rounding (radius r_e: ``edge_radius`` (pinion, gear) [mm], the edge's own member's)
     on the other member's flank, 1/(1/r_e + κ_other) at the segment's middle (κ_other
-    along n × t, t the edge tangent; the pinion taken at its mate's instant Q)."""
+    along n × t, t the edge tangent; the pinion taken at its mate's instant Q).
+
+    Notes
+    -----
+    Source: Hertz line contact of a cylinder of the edge radius on the other member's flank,
+    R_eq = 1/(1/r_e + κ_other) (seed Eq. 2.13 with the edge's curvature; Johnson 1985,
+    ch. 4).
+    """
     if which.size == 0:
         return np.zeros(0)
     u, v = bd.u[which, 1], bd.v[which, 1]

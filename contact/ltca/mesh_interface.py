@@ -270,6 +270,11 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     InputError
         ``ltca`` lacks a variable or attribute named above, or ``problems`` does not
         cover its (torque, roll) grid.
+
+    Notes
+    -----
+    Source: the mesh point, line of action, mesh stiffness and TE excitation of Cheng & Lim
+    (2001) from the LTCA's certified forces (seed Eq. 3.12–3.14); module docstring.
     """
     need = ("force", "contact_point", "contact_normal", "moment_arm", "transmission_error")
     missing = [k for k in need if k not in ltca]

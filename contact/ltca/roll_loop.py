@@ -129,6 +129,11 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False
     InputError
         If some roll position has no tooth pair in contact, or a fixed separation limit
         takes in segments off the mating tooth.
+
+    Notes
+    -----
+    Source: the seed's loaded TCA over the mesh cycle (§3.4), each roll's contact problem
+    that of seed Eq. 3.12–3.14 with Weber's (1949) load-dependent contact compliance.
     """
     opts, torques = setup.options, setup.torques
     J, K, S = seg.shape

@@ -576,6 +576,9 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
     -----
     Superposition of the FE unit-load stresses (module docstring; docs/fe.md); tested
     against a direct FE solve of the same forces (tests/test_root_stress.py).
+
+    Source: linear superposition of the FE influence coefficients (docs/fe.md) over the
+    segment forces of the loaded contact (seed Eq. 3.12–3.14); module docstring.
     """
     missing = [v for v in ("force", "contact_point") if v not in ltca.variables]
     if missing:

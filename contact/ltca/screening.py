@@ -71,6 +71,11 @@ def carried_torque(limit: float, ratio: float) -> float:
     Used to say which torques a case carries: the LTCA takes in the segments up to the
     generous limit, which must all lie on their mating teeth (:func:`contact.ltca.
     roll_loop.solve_rolls` finds the largest such limit when a torque breaks it).
+
+    Notes
+    -----
+    Source: the screening rule of the module docstring (complementarity of the seed's Eq.
+    3.12–3.13: a segment whose gap stays open carries nothing).
     """
     return max(0.0, (limit - 0.05) * 1000.0 / (0.15 * ratio))
 
@@ -93,6 +98,11 @@ class Screening:
         :func:`generous_limit` of the analysis' largest torque.
     fixed : float or None — [mm]
         A fixed separation limit (``LTCAOptions.separation_limit``), or None to screen.
+
+    Notes
+    -----
+    Source: the complementarity of the seed's Eq. 3.12–3.13 (a segment whose gap stays open
+    carries nothing); module docstring.
     """
 
     ute: np.ndarray

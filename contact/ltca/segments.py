@@ -165,6 +165,10 @@ def roll_phases(eo: EaseOff, roll: np.ndarray, pairs: Sequence[int]
         pair, roll_zero + s_p (r − c·pitch)
     source : ndarray (J,) of int — the first roll with the same targets (to 1e-12 pitch):
         rolls whole mesh cycles apart, whose segments (and rotations) are the source's
+
+    Notes
+    -----
+    Source: the LTCA's discretisation (seed §3.3, Fig. 3.3).
     """
     roll = np.asarray(roll, float)
     pairs = np.asarray(pairs, int)

@@ -71,6 +71,11 @@ def mesh_harmonics(roll, te, mesh_period: float, n_harmonics: int = 3) -> np.nda
     ------
     InputError
         Shapes, non-finite values, non-increasing roll, or not whole mesh cycles.
+
+    Notes
+    -----
+    Source: the first mesh harmonics of the TE as the seed reports them (Table 3.1, 4.2), by
+    a discrete Fourier series over whole mesh cycles; module docstring.
     """
     phi, y, cycles = _check(roll, te, mesh_period)
     if not (isinstance(n_harmonics, int) and n_harmonics >= 1):
