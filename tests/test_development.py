@@ -342,3 +342,43 @@ def test_the_written_case_is_the_design_checked_and_the_coast_is_checked_at_the_
     table = r.table()
     assert set(table["cpu_seconds_stages"]) == {"bearing", "relief", "check"}
     assert "coast_achieved" in table and "Coast flank (not developed)" in r.summary()
+
+
+@pytest.mark.parametrize("exponent", [1.0 / 3.0, 0.45])
+def test_design_torque_lowered_to_the_bearings_static_capacity(monkeypatch, exponent):
+    """Where the flank peak pressure at the rating's capacity exceeds the static strength,
+    the design torque becomes the torque at which it meets it: on a bearing whose peak
+    pressure follows p = p0 (T/T0)^a (Hertz: a = 1/3 for a point contact, up to 1/2 as the
+    pattern grows), the new torque gives p within the limit and within 2 % below it (the
+    1 % margin aimed at plus the 0.1 N·m rounding), the light load follows at
+    light_load × the new torque, and the source says why; a bearing within the limit keeps
+    its torque."""
+    from contact.optimize import development as dev
+
+    p0, t0, limit = 2537.0, 270.8, 2400.0
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        p = np.array([p0 * (t / t0) ** exponent for t in torques])
+        m = {k: v.copy() for k, v in _metrics().items()} | {"pressure_max_flank": p}
+        return m, (0.0, 1.0, 0.0, 1.0, limit)
+
+    monkeypatch.setattr(dev, "_analyse", fake)
+    best = dev.DevelopmentEvaluation(0, {"path_angle": -40.0}, fake(None, [0.15 * t0, t0])[0],
+                                     0.0, {}, False, "", 0.0)
+    setup = {"torques": [0.15 * t0, t0], "source": "the ISO 10300 capacity, the torque",
+             "pressure_limit": limit, "centre_v": 0.6, "lowered": False}
+    out = dev._static_capacity(best, DevelopmentTargets(), setup, None, lambda _: None)
+    light, design = setup["torques"]
+    p = out.metrics["pressure_max_flank"][1]
+    assert design < t0 and setup["lowered"]
+    assert 0.98 * limit <= p <= limit
+    assert light == pytest.approx(0.15 * design)
+    assert "static capacity" in setup["source"] and "270.8" in setup["source"]
+    assert out.full[1]["pressure"] == 0.0
+    # within the limit: nothing changes
+    setup2 = {"torques": [0.15 * t0, t0], "source": "s", "pressure_limit": 2600.0,
+              "centre_v": 0.6, "lowered": False}
+    assert dev._static_capacity(best, DevelopmentTargets(), setup2, None,
+                                lambda _: None) is best
+    assert setup2["torques"] == [0.15 * t0, t0] and not setup2["lowered"]

@@ -741,10 +741,11 @@ class DevelopmentResult:
         if not c:
             return "Coast flank: not checked (its analysis failed). "
         return (f"Coast flank (not developed): pattern u {c['pattern_toe_u'][0]:.2f}-"
-                f"{c['pattern_heel_u'][0]:.2f}, edge share "
-                f"{100 * c['edge_load_share'][1]:.1f} %, plastic "
-                f"{100 * np.max(c['plastic_share']):.1f} %, LTE p-p "
-                f"{c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} urad. ")
+                f"{c['pattern_heel_u'][0]:.2f}, plastic "
+                f"{100 * np.max(c['plastic_share']):.1f} %, flank peak pressure "
+                f"{c['pressure_max_flank'][0]:.0f}/{c['pressure_max_flank'][1]:.0f} MPa, "
+                f"LTE p-p {c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} "
+                "urad. ")
 
     def _met_text(self) -> str:
         _, short, met = self.best.full
@@ -1069,22 +1070,31 @@ def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if not (math.isfinite(p) and p > limit):
         return best
     capacity, exponent = torque, 1.0 / 3.0
+    accepted = None
     for _ in range(3):
         new = torque * (_STATIC_MARGIN * limit / p) ** (1.0 / exponent)
         new = float(f"{math.floor(new * 10.0) / 10.0:.4g}")  # rounded down to 0.1 N·m
+        if new == torque:
+            break
         torques = [targets.light_load * new, new]
         ms, grid = _analyse(best.case, torques, options=CHECK_LTCA, teeth=teeth,
                             pinion_key=_bearing_key(best.values))
         p_new = float(ms["pressure_max_flank"][1])
-        if p_new < p and new < torque:
-            exponent = min(1.0, max(0.2, math.log(p / p_new) / math.log(torque / new)))
+        if math.isfinite(p_new) and p_new != p:  # the exponent measured on this bearing
+            exponent = min(1.0, max(0.2, math.log(p_new / p) / math.log(new / torque)))
         torque, p = new, p_new
-        if p <= limit:
-            break
+        if p <= limit:  # within the strength: kept; closer than 3 % ends the search
+            accepted = (torques, ms, grid, p)
+            if p >= 0.97 * limit:
+                break
+    if accepted is not None:
+        torques, ms, grid, p = accepted
+    torque = torques[1]
     full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
                              pressure_limit=grid[4])
     source = (f"the flank's static capacity of the developed bearing: its LTCA flank peak "
-              f"pressure {p:.0f} MPa within the static strength {limit:.0f} MPa, below "
+              f"pressure {p:.0f} MPa {'within' if p <= limit else 'still above'} the "
+              f"static strength {limit:.0f} MPa, below "
               f"{setup['source'].split(',')[0]} {capacity:.4g} N m, at which it reached "
               f"{float(best.metrics['pressure_max_flank'][1]):.0f} MPa")
     setup.update(torques=torques, source=source, lowered=True)

@@ -52,9 +52,11 @@ with tempfile.TemporaryDirectory() as tmp:
     basic = geometry.load_basic(path)
 
 # %%
-# Synthesis and development of the bearing: each candidate is a full local synthesis
-# analysed by a coarse LTCA at the light and the design torque; the design torque is the
-# ISO 10300 capacity at long life (the basic file gives none).
+# Synthesis and development of the bearing: each candidate is a local synthesis of the
+# drive flank analysed by a coarse LTCA at the light and the design torque, the best
+# checked at the default sampling; the design torque is the ISO 10300 capacity at long life
+# (the basic file gives none), lowered to the bearing's static flank capacity where the
+# flank peak pressure there would exceed the static strength.
 developed = contact.develop(basic)
 case = developed.case
 light, design = developed.torque
