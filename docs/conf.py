@@ -67,13 +67,6 @@ NUMPYDOC_PENDING = {
     # modules other work of issue 63 was changing while validation was turned on
     "contact.FEOptions": "a Raises section inside Parameters (contact/compliance/fe)",
     "contact.develop": "Returns without a description (contact/optimize/development.py)",
-    "contact.contact_pattern_figure": "Returns without a description (contact/plots/flank.py)",
-    "contact.plot_analysis": "parameters and Returns undocumented (contact/plots/analysis.py)",
-    "contact.write_report": "parameters undocumented (contact/plots/report.py)",
-    "contact.vh_check": "**legacy undocumented (contact/study/vh_check.py)",
-    "friction.load_lubricant": "Returns without a description (friction/lubricant.py)",
-    "friction.pressure_viscosity_coefficient": "Returns without a description "
-                                               "(friction/lubricant.py)",
     "friction.register_friction_model": "Returns without a description "
                                         "(friction/coefficient.py)",
     "friction.unregister_friction_model": "name undocumented (friction/coefficient.py)",

@@ -636,6 +636,7 @@ def pressure_viscosity_coefficient(
     Returns
     -------
     float or array — [1/GPa]
+        The pressure-viscosity coefficient α at the temperature(s).
 
     Raises
     ------
@@ -874,6 +875,7 @@ def load_lubricant(path_or_name: str | Path) -> Lubricant:
     Returns
     -------
     Lubricant
+        The oil's properties (viscosity, pressure-viscosity and thermal data) and sources.
 
     Raises
     ------

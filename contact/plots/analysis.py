@@ -417,6 +417,22 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
     return the paths; ``workers`` processes draw them (``progress``: a tqdm bar over the
     figures).
 
+    Parameters
+    ----------
+    tree : xarray.DataTree
+        An analysis (:func:`contact.run_analysis`, or its file read back).
+    directory : str or os.PathLike
+        Where the PNG files go (created if missing).
+    workers : int
+        Processes drawing the figures (default 1: this process).
+    progress : bool
+        A tqdm bar over the figures.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written, one per figure, each written atomically.
+
     Raises
     ------
     InputError

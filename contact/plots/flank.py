@@ -659,6 +659,8 @@ def contact_pattern_figure(easeoff: xr.Dataset, utca: xr.Dataset,
     Returns
     -------
     matplotlib.figure.Figure
+        The unloaded pattern, then one panel per torque of ``ltca``, on the normalised gear
+        flank (face width toe → heel × profile root → tip [1]).
 
     Raises
     ------

@@ -721,9 +721,19 @@ def write_report(tree: xr.DataTree, path: str | os.PathLike[str],
                  figures: Iterable[RenderedFigure] | None = None) -> Path:
     """Write :func:`render_report` to ``path`` atomically (a temporary file, then a rename).
 
+    Parameters
+    ----------
+    tree : xarray.DataTree
+        An analysis (:func:`contact.run_analysis`, or its file read back).
+    path : str or os.PathLike
+        The HTML file; its directory must exist.
+    figures : iterable of RenderedFigure, optional
+        Figures already encoded (e.g. by ``ltca run --plots``); default drawn here.
+
     Returns
     -------
     pathlib.Path
+        The page written: self-contained HTML (figures embedded, no external resources).
 
     Raises
     ------

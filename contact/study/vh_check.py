@@ -114,6 +114,8 @@ def vh_check(
         As :func:`contact.study.sweep` (``output``: the check's netCDF file; no efficiency
         stage runs, so ``run.operating`` must be None). The former run keywords likewise,
         deprecated.
+    **legacy
+        Those former run keywords (fields of :class:`StudyRun`), deprecated.
 
     Returns
     -------
