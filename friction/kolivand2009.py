@@ -514,7 +514,9 @@ def load_kolivand2009_fit(coefficients: str | Path | Kolivand2009Fit = "75W90"
 
     Notes
     -----
-    Source: the fit of :mod:`friction.study.fit` (docs/friction.md, "kolivand2009").
+    Source: the seed's method (§5.2.3: its mixed-EHL line-contact model run over Table 5.1's
+    conditions, then a regression of the form of Eq. 5.11a–c) repeated with the toolkit's
+    solver, the fit of :mod:`friction.study.fit` (docs/friction.md, "kolivand2009").
     """
     if isinstance(coefficients, Kolivand2009Fit):
         return coefficients

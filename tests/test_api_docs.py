@@ -102,7 +102,6 @@ QUANTITY = re.compile(r"\b(float|array_like|ndarray)\b")
 
 #: public names whose entries miss a unit, each with why (only shrinks)
 UNITS_PENDING = {
-    "contact.OptimizeProblem": "weights, torque_weights, penalty (contact/optimize)",
     "friction.friction_coefficient": "**inputs: the models' inputs, units in "
                                      "STANDARD_INPUTS (friction/coefficient.py)",
     "geometry.corrective_settings": "cond_max (geometry/synthesis/correction.py)",
@@ -111,7 +110,6 @@ UNITS_PENDING = {
 RAISES_PENDING = {
     "contact.DevelopmentTargets": "contact/optimize/development.py",
     "contact.FEOptions": "Raises inside Parameters (contact/compliance/fe/options.py)",
-    "contact.OptimizeProblem": "contact/optimize",
 }
 #: public models without a source, each with why (only shrinks)
 SOURCE_PENDING = {
@@ -119,7 +117,6 @@ SOURCE_PENDING = {
     "contact.fe_compliance_matrix": "contact/compliance/fe/superposition.py",
     "contact.fillet_stress": "contact/compliance/fe/superposition.py",
     "contact.influence_coefficients": "contact/compliance/fe/influence.py",
-    "friction.load_kolivand2009_fit": "friction/kolivand2009.py",
 }
 
 

@@ -80,18 +80,26 @@ class OptimizeProblem:
         Range of the LTE peak-to-peak at every torque; default (0, inf).
     lte_mean_range : tuple of (float, float) or None — [µrad]
         Per torque, range of the LTE mean; None: no limit.
-    weights : mapping term → float
-        Weights of :data:`TERM_NAMES`; default 1, 1, 1, 0.2.
-    torque_weights : tuple of float
+    weights : mapping term → float — [1]
+        Weights of :data:`TERM_NAMES` (each term made dimensionless by its reference);
+        default 1, 1, 1, 0.2.
+    torque_weights : tuple of float — [1]
         Weights of the torques in the terms (normalised); default equal.
     pattern_target : (float, float) — [1]
         Target pattern centre (u toe→heel, v root→tip of the gear flank); default (0.5, 0.5).
-    penalty : float
-        Weight of the squared constraint violations; default 100.
+    penalty : float — [1]
+        Weight of the squared (normalised) constraint violations; default 100.
     options : contact.ltca.LTCAOptions
         Analysis settings (coarser rolls/segments make an optimisation faster).
     flank : str or None
         ``"drive"``/``"coast"``.
+
+    Raises
+    ------
+    InputError
+        A field out of its range (named): no torque or torques not ascending, limits of
+        the wrong length or out of range, torque weights all 0, a reversed range, an
+        unknown term in ``weights``.
     """
 
     torque: tuple[float, ...] = (50.0, 250.0, 500.0)
