@@ -123,7 +123,7 @@ COARSE_LTCA = LTCAOptions(cycles=1, rolls_per_cycle=8, segments=12)
 CHECK_LTCA = LTCAOptions()
 #: most designs of the search checked at :data:`CHECK_LTCA`, best first, until one meets
 #: every target
-VERIFIED_DESIGNS = 3
+VERIFIED_DESIGNS = 2
 
 #: objective of a design whose synthesis or analysis failed
 FAILED = 1e6

@@ -319,7 +319,7 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
             ref_gear_rotation = flanks[pf].mean.gear_rotation
     flanks[coast] = _coast_in_drive_frame(flanks[coast], flanks[drive])
     if not gear.blade_groups:  # step 8, face milling: each cut's root line on the root cone
-        flanks = {pf: _tip_on_root_cone(fs, pair) for pf, fs in flanks.items()}
+        flanks = {pf: _tip_on_root_cone(fs, pair, kept) for pf, fs in flanks.items()}
     say("the case")
     case = _assemble(basic, geom, gear, flanks, pinion_hand, gear_hand)
     return case, SynthesisReport(geom, gear, flanks)
@@ -495,11 +495,21 @@ def _coast_in_drive_frame(coast: FlankSynthesis, drive: FlankSynthesis) -> Flank
                                             blank_phase=ct.blank_phase - dphi))
 
 
-def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData) -> FlankSynthesis:
+def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
+                      memo: dict | None = None) -> FlankSynthesis:
     """Step 8: the flank's tip plane moved so that its root line touches the pinion's
-    root cone from below (:func:`tip_plane_on_root_cone`; the flank is unchanged)."""
+    root cone from below (:func:`tip_plane_on_root_cone`; the flank is unchanged).
+    ``memo`` (the design's entries of :func:`synthesize`'s memo): the placement kept under
+    its inputs (the blade and settings), so a flank the development does not vary is
+    placed once."""
     t = fs.tools
-    placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank, pair.pinion_hand)
+    key = ("tip plane", repr(t.blade), repr(t.settings))
+    placed = None if memo is None else memo.get(key)
+    if placed is None:
+        placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
+                                        pair.pinion_hand)
+        if memo is not None:
+            memo[key] = placed
     return replace(fs, tools=t._replace(blade=placed.blade, settings=placed.settings),
                    tip_moved=placed.moved)
 
