@@ -13,15 +13,27 @@ user's own cache. Tests that need an empty cache set their own (monkeypatch).
 The default ``ltca run`` (``default_run_file``) is run once per session, by the first
 xdist worker that needs it (the golden-file test, the plots' global-state test and the
 friction model's range check read it): ``tests/golden.py``'s ``shared_default_run``.
+
+A shell that starts pytest as a background job without job control (``pytest &`` in a
+script, ``(cmd &)``) starts it with SIGINT ignored, and an ignored SIGINT is inherited
+through ``exec`` by every ``ltca`` the tests start: the tests of Ctrl-C (the held signal of
+an atomic write, a build interrupted in the FE cache, a signal during ``ltca run``'s write)
+then wait for a run that never stops. Python's own handler is put back here, as an
+interactive shell would have it (seen in a fresh-clone CI run started with ``&``: three
+signal tests failed, one after its 300 s safety bound).
 """
 
 import os
+import signal
 from pathlib import Path
 
 import pytest
 from threadpoolctl import threadpool_limits
 
 threadpool_limits(limits=1, user_api="blas")
+
+if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+    signal.signal(signal.SIGINT, signal.default_int_handler)
 
 os.environ.setdefault(
     "HYPOID_LTCA_CACHE",
