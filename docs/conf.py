@@ -67,12 +67,6 @@ NUMPYDOC_PENDING = {
     # modules other work of issue 63 was changing while validation was turned on
     "contact.FEOptions": "a Raises section inside Parameters (contact/compliance/fe)",
     "contact.develop": "Returns without a description (contact/optimize/development.py)",
-    "friction.register_friction_model": "Returns without a description "
-                                        "(friction/coefficient.py)",
-    "friction.unregister_friction_model": "name undocumented (friction/coefficient.py)",
-    "contact.rate_load_capacity": "the '#:' comment above the alias in "
-                                  "contact/load_capacity/methods.py replaces the docstring "
-                                  "in autodoc (make it a plain '#' comment)",
     "geometry.load_basic": "Returns without a description (geometry/synthesis)",
     "geometry.synthesize": "Returns without a description (geometry/synthesis)",
 }

@@ -828,6 +828,7 @@ def register_friction_model(name: str, function: Callable[..., Any] | FrictionMo
     Returns
     -------
     FrictionModel
+        The registered model (its name, function, validity check and source).
 
     Raises
     ------
@@ -853,6 +854,11 @@ def register_friction_model(name: str, function: Callable[..., Any] | FrictionMo
 
 def unregister_friction_model(name: str) -> None:
     """Remove a model registered with :func:`register_friction_model`.
+
+    Parameters
+    ----------
+    name : str
+        The name it was registered under.
 
     Raises
     ------
@@ -991,9 +997,14 @@ def friction_coefficient(name: FrictionModelLike, **inputs: Any) -> NDArray[np.f
     name : str, FrictionModel or callable
         One of :func:`available_friction_models`, or a model (:func:`get_friction_model`).
     **inputs : float or array
-        Keyword inputs from :data:`STANDARD_INPUTS` (units there) plus the model's own
-        parameters (e.g. ``value`` for ``constant``). Inputs a model does not use are
-        ignored; names outside the vocabulary are refused.
+        Keyword inputs from :data:`STANDARD_INPUTS`, broadcastable to one shape:
+        ``hertz_pressure`` [MPa], ``slide_to_roll`` [1], ``entraining_velocity`` and
+        ``sliding_velocity`` [m/s], ``load_per_length`` [N/mm], ``viscosity`` [Pa s],
+        ``radius`` [mm], ``roughness_1`` and ``roughness_2`` [µm], ``lambda_ratio`` [1],
+        ``pressure_viscosity`` [1/GPa], ``e_prime`` [MPa], ``temperature`` [degC],
+        ``thermal_factor`` [1]; plus the model's own parameters (e.g. ``value`` [1] for
+        ``constant``). Inputs a model does not use are ignored; names outside the
+        vocabulary are refused.
 
     Returns
     -------

@@ -102,8 +102,6 @@ QUANTITY = re.compile(r"\b(float|array_like|ndarray)\b")
 
 #: public names whose entries miss a unit, each with why (only shrinks)
 UNITS_PENDING = {
-    "friction.friction_coefficient": "**inputs: the models' inputs, units in "
-                                     "STANDARD_INPUTS (friction/coefficient.py)",
     "geometry.corrective_settings": "cond_max (geometry/synthesis/correction.py)",
 }
 #: public names that raise without a Raises section, each with why (only shrinks)

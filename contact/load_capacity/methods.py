@@ -293,8 +293,8 @@ def _datasets(analysis: Any) -> dict[str, xr.Dataset]:
                      f"datasets or None, got {type(analysis).__name__}")
 
 
-#: the names :mod:`contact` exports at its top (``contact.rate_load_capacity`` …), where
-#: ``rate`` alone would not say what is rated
+# the names :mod:`contact` exports at its top (``contact.rate_load_capacity`` …), where
+# ``rate`` alone would not say what is rated
 rate_load_capacity = rate
 available_rating_methods = available_methods
 register_rating_method = register_method
