@@ -1,4 +1,5 @@
-"""Tests of friction.film (EHL film, thermal factor, λ) and friction.hertz (line contact)."""
+"""Tests of friction.film (EHL film, thermal factor, λ) and of the Hertz line contact it
+uses (geometry.core.hertz, in the EHL convention E′ = 2 E*)."""
 
 from __future__ import annotations
 
@@ -25,7 +26,6 @@ from friction.film import (
     thermal_loading,
     thermal_reduction_factor,
 )
-from friction.hertz import combined_modulus, half_width, peak_pressure
 from friction.lubricant import (
     load_lubricant,
     pressure_viscosity_coefficient,
@@ -34,6 +34,7 @@ from friction.lubricant import (
     viscosity,
 )
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.hertz import contact_modulus, hertz_line_contact
 
 DATA = Path(__file__).parent / "data"
 
@@ -61,6 +62,19 @@ def _seed_ranges() -> dict[str, tuple[float, float]]:
 
 
 # ----------------------------------------------------------------------------- Hertz
+def combined_modulus(e1: float, nu1: float, e2: float, nu2: float) -> float:
+    """E′ = 2 E* (the EHL convention) from geometry.core.hertz's contact modulus."""
+    return 2.0 * contact_modulus(e1, nu1, e2, nu2)
+
+
+def half_width(load_per_length, radius, e_prime):
+    return hertz_line_contact(load_per_length, radius, e_prime / 2.0).half_width
+
+
+def peak_pressure(load_per_length, radius, e_prime):
+    return hertz_line_contact(load_per_length, radius, e_prime / 2.0).peak_pressure
+
+
 def test_combined_modulus_identical_bodies() -> None:
     # Identity: for equal bodies E′ = E/(1 − ν²) in the Dowson–Hamrock convention.
     assert combined_modulus(E_STEEL, NU_STEEL, E_STEEL, NU_STEEL) == pytest.approx(
@@ -106,7 +120,7 @@ def test_peak_pressure_relation_to_half_width() -> None:
     [
         (dict(load_per_length=-1.0, radius=20.0, e_prime=E_PRIME), "load_per_length"),
         (dict(load_per_length=1.0, radius=0.0, e_prime=E_PRIME), "radius"),
-        (dict(load_per_length=1.0, radius=20.0, e_prime=float("nan")), "e_prime"),
+        (dict(load_per_length=1.0, radius=20.0, e_prime=float("nan")), "modulus"),
     ],
 )
 def test_hertz_bad_input(kwargs: dict, field: str) -> None:
@@ -115,7 +129,7 @@ def test_hertz_bad_input(kwargs: dict, field: str) -> None:
 
 
 def test_combined_modulus_bad_poisson() -> None:
-    with pytest.raises(InputError, match="poisson_ratio_2"):
+    with pytest.raises(InputError, match="nu2"):
         combined_modulus(E_STEEL, 0.3, E_STEEL, 0.5)
 
 

@@ -9,7 +9,6 @@ import pytest
 
 from friction.coefficient import FrictionModelRangeWarning
 from friction.film import thermal_loading, thermal_reduction_factor
-from friction.hertz import peak_pressure
 from friction.lubricant import (
     load_lubricant,
     pressure_viscosity_coefficient,
@@ -19,6 +18,7 @@ from friction.lubricant import (
 )
 from friction.rolling import rolling_power_loss, rolling_traction, rolling_traction_isothermal
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.hertz import hertz_line_contact
 
 E_PRIME = 206000.0 / (1 - 0.3**2)  # steel/steel, E′ = E/(1 − ν²) [MPa] (assumed material)
 
@@ -95,7 +95,7 @@ def test_thermal_correction_is_factor_times_isothermal() -> None:
     cold = np.asarray(rolling_traction_isothermal(**args))
     phi = thermal_reduction_factor(
         thermal_loading(beta, eta, u, k),
-        peak_pressure(POINT["load_per_length"], POINT["radius"], E_PRIME),
+        hertz_line_contact(POINT["load_per_length"], POINT["radius"], E_PRIME / 2).peak_pressure,
         E_PRIME,
         sr,
     )
