@@ -16,6 +16,9 @@ change every setting), so this script applies step 8 alone to every bundled face
 case with a Generate pinion and leaves every other line as it is. Face-hobbed pinions
 (placed blades) are left alone.
 
+Run it again after a script that rewrites a bundled case's pinion tables without the
+synthesis (``derive_basic_settings.py``, ``derive_iso10300_samples.py``,
+``deviations/make_wear_case.py``); tests/test_generated_root.py runs ``--check``.
 ``--check`` writes nothing and exits with status 1 if a file would change.
 """
 
