@@ -23,15 +23,16 @@ what the earlier steps left there (the case as run, the torques, the ease-off, t
 so far) and adds its group(s) to ``state.groups`` (paths such as ``"/ltca"``) — the same
 contract for the built-in steps and a user's.
 
-The step that writes ``/rating`` (load capacity) calls the load-capacity package
-(:func:`_load_capacity_step`, one function: the seam where the package's method registry
-plugs in).
+The step that writes ``/rating`` (load capacity) is chosen by the name of a method of the
+load-capacity registry (:func:`contact.load_capacity.available_methods`: ``"iso10300"`` by
+default, a plug-in's by its name) and rates through :func:`contact.load_capacity.rate`;
+``"scuffing_micropitting"`` writes ``/scuffing_micropitting`` without a rating.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import importlib
+import functools
 import logging
 import time
 from collections.abc import Callable, Mapping
@@ -295,58 +296,61 @@ def efficiency_local_friction(state: ChainState) -> None:
     state.groups["/friction"] = efficiency_analysis(state.groups["/ltca"], state.operating)
 
 
-#: the load-capacity package the load-capacity step calls. It sits above the pipeline in
-#: tests/test_layers.py and imports ``contact.pipeline`` (``check_torques``), so a static
-#: import from here would close a cycle; the chain reaches it by name at run time until
-#: the package moves below the pipeline (issue 63: the coordinator re-points this seam to
-#: the package's method registry).
-LOAD_CAPACITY_PACKAGE = "contact.load_capacity"
+def _rating_of(state: ChainState, method: str):
+    """(``/rating`` dataset or None, why not): the load-capacity rating of the case as run
+    by the registered ``method`` (:func:`contact.load_capacity.rate`) at the run's torques,
+    pinion speed and flank. A case the method cannot rate although nothing in it is wrong
+    (:attr:`contact.load_capacity.RatingMethod.missing`: ISO 10300 without a ``[design]`` or
+    ``[rating]`` table) or a run without a pinion speed gives None and the reason; a table
+    that is there but wrong is refused (InputError)."""
+    from contact.load_capacity.methods import METHODS, rate
 
-
-def _load_capacity(module: str, name: str) -> Any:
-    """``name`` of ``contact.load_capacity.<module>`` (:data:`LOAD_CAPACITY_PACKAGE`)."""
-    return getattr(importlib.import_module(f"{LOAD_CAPACITY_PACKAGE}.{module}"), name)
-
-
-def _rating_of(state: ChainState):
-    """(``/rating`` dataset or None, why not): the ISO 10300 Method B1 rating of the case
-    as run at its torques, pinion speed and flank (what ``ltca run`` rated before the
-    chain; :func:`contact.load_capacity.iso10300.analysis_rating`)."""
-    analysis_rating = _load_capacity("iso10300", "analysis_rating")
     c = state.case
-    return analysis_rating(c, state.torque, c.operating.pinion_speed, state.flank)
+    entry = METHODS.get(method)
+    why = "" if entry is None or entry.missing is None else entry.missing(c)
+    if why:
+        return None, why
+    speed = c.operating.pinion_speed
+    if not speed > 0.0:
+        return None, (f"{method} rating not computed: no pinion speed (the case's "
+                      "[operating] pinion_speed is 0; give --speed)")
+    return rate(c, state.torque, speed, method=method, flank=state.flank,
+                analysis=state.groups), ""
 
 
-def _load_capacity_inputs(state: ChainState) -> None:
-    """Before any work: the rating (analytic, < 0.5 s), so that a bad ``[rating]`` or
-    ``[design]`` table is refused before the LTCA, not after it (the step uses it)."""
-    state.prepared["load_capacity"] = _rating_of(state)
+@functools.cache
+def _rating_step(method: str) -> Callable[[ChainState], None]:
+    """The load-capacity step that rates by the registered ``method`` (one function per
+    name, so that the chain's checks before work find it again)."""
 
+    def rating_step(state: ChainState) -> None:
+        """``/scuffing_micropitting`` (with ``/friction``), then ``/rating`` by the
+        registered method (:func:`contact.load_capacity.rate`) and, for ISO 10300, the
+        standard's flash-temperature method on its virtual cylindrical gears
+        (``/rating/flash_temperature``, :func:`scuffing_flash_temperature`). Without the
+        tables the method needs or a pinion speed there is no ``/rating``;
+        ``state.not_run["load_capacity"]`` says why."""
+        load_capacity_without_rating(state)
+        rating, why = state.prepared.pop("load_capacity", None) or _rating_of(state, method)
+        if rating is None:
+            state.not_run["load_capacity"] = why
+            return
+        state.groups["/rating"] = rating
+        if rating.attrs.get("rating_method") == "iso10300":
+            flash = scuffing_flash_temperature(rating, state.groups.get("/friction"))
+            if flash is not None:  # stored beside the rating it is computed on
+                state.groups["/rating/flash_temperature"] = flash
 
-def _load_capacity_step(state: ChainState) -> None:
-    """``/rating`` and ``/rating/flash_temperature``: the load capacity of the pair — the
-    ISO 10300-1/-2/-3:2014 Method B1 rating at the run's torques and speed
-    (:func:`contact.load_capacity.iso10300.analysis_rating`) and, with ``/friction``, the
-    standard's flash-temperature method on its virtual cylindrical gears
-    (:func:`scuffing_flash_temperature`). Without a ``[design]`` or ``[rating]`` table or
-    a pinion speed there is no ``/rating``; ``state.not_run["load_capacity"]`` says why.
+    def inputs(state: ChainState) -> None:
+        """Before any work: the rating (analytic, < 0.5 s for ISO 10300), so that a bad
+        ``[rating]`` or ``[design]`` table is refused before the LTCA, not after it. A
+        method that rates from the analysis' datasets is left to its step."""
+        if method == "iso10300":
+            state.prepared["load_capacity"] = _rating_of(state, method)
 
-    This is the one function through which the chain reaches the load-capacity package:
-    the seam its method registry (ISO 10300, AGMA 2003 …) plugs into.
-
-    With ``/friction``, first ``/scuffing_micropitting``: Blok's flash temperature, the
-    contact temperature, λ_GF and the safeties S_B, S_λ on the LTCA's contact segments
-    (:func:`contact.load_capacity.scuffing_micropitting.scuffing_micropitting`, from
-    ``/ltca`` and ``/friction``; with or without a rating)."""
-    load_capacity_without_rating(state)
-    rating, why = state.prepared.pop("load_capacity", None) or _rating_of(state)
-    if rating is None:
-        state.not_run["load_capacity"] = why
-        return
-    state.groups["/rating"] = rating
-    flash = scuffing_flash_temperature(rating, state.groups.get("/friction"))
-    if flash is not None:  # stored beside the rating it is computed on
-        state.groups["/rating/flash_temperature"] = flash
+    rating_step.__name__ = rating_step.__qualname__ = f"rating_{method}"
+    rating_step.before_work = inputs  # type: ignore[attr-defined]
+    return rating_step
 
 
 def load_capacity_without_rating(state: ChainState) -> None:
@@ -360,7 +364,8 @@ def load_capacity_without_rating(state: ChainState) -> None:
     friction = state.groups.get("/friction")
     if friction is None:
         return
-    scuffing_micropitting = _load_capacity("scuffing_micropitting", "scuffing_micropitting")
+    from contact.load_capacity.scuffing_micropitting import scuffing_micropitting
+
     state.groups["/scuffing_micropitting"] = scuffing_micropitting(
         state.groups["/ltca"], friction,
         lubricant=None if state.operating is None else state.operating.lubricant)
@@ -390,8 +395,7 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
     """
     if friction is None:
         return None
-    iso_flash_temperature_variants = _load_capacity("iso_flash_temperature",
-                                                    "iso_flash_temperature_variants")
+    from contact.load_capacity.iso_flash_temperature import iso_flash_temperature_variants
 
     try:
         return iso_flash_temperature_variants(
@@ -411,14 +415,21 @@ STEPS: Mapping[str, Mapping[str, Callable[[ChainState], None]]] = {
     "root_stress": {"fe": root_stress_fe},
     "mesh_interface": {"linearised": mesh_interface_linearised},
     "efficiency": {"local_friction": efficiency_local_friction},
-    "load_capacity": {"iso10300": _load_capacity_step,
+    "load_capacity": {"iso10300": _rating_step("iso10300"),
                       "scuffing_micropitting": load_capacity_without_rating},
 }
 
-#: checks a built-in step makes on its inputs before any step runs
-_BEFORE_WORK: Mapping[Callable, Callable[[ChainState], None]] = {
-    _load_capacity_step: _load_capacity_inputs,
-}
+
+def _implementations(step: str) -> Mapping[str, Callable[[ChainState], None]]:
+    """``step``'s implementations by name, default first: :data:`STEPS`'s and, for the
+    load-capacity step, every method of the load-capacity registry
+    (:func:`contact.load_capacity.available_methods`, a plug-in's among them) by its name."""
+    if step != "load_capacity":
+        return STEPS[step]
+    from contact.load_capacity.methods import available_methods
+
+    return {**STEPS[step], **{m: _rating_step(m) for m in available_methods()
+                              if m not in STEPS[step]}}
 
 
 def available_steps() -> dict[str, tuple[str, ...]]:
@@ -427,9 +438,12 @@ def available_steps() -> dict[str, tuple[str, ...]]:
     Returns
     -------
     dict of str to tuple of str
-        ``{"geometry": ("flanks",), "utca": ("easeoff",), …}`` in :data:`STEP_ORDER`.
+        ``{"geometry": ("flanks",), "utca": ("easeoff",), …}`` in :data:`STEP_ORDER`; the
+        load-capacity step's names are the registry's rating methods
+        (:func:`contact.load_capacity.available_methods`) and ``"scuffing_micropitting"``
+        (no rating).
     """
-    return {step: tuple(STEPS[step]) for step in STEP_ORDER}
+    return {step: tuple(_implementations(step)) for step in STEP_ORDER}
 
 
 def _default(step: str) -> str:
@@ -461,8 +475,9 @@ class AnalysisChain:
     load_capacity : str, callable or None
         ``/scuffing_micropitting`` (Blok, ISO/TS 6336-20/-22 on the LTCA's contact),
         ``/rating`` and ``/rating/flash_temperature``: ISO 10300 Method B1 and ISO/TS
-        6336-20 (``"iso10300"``); ``"scuffing_micropitting"``: the first alone (no rating,
-        ``ltca run --no-rating``).
+        6336-20 (``"iso10300"``), or the rating of another method of the load-capacity
+        registry by its name (:func:`contact.load_capacity.available_methods`);
+        ``"scuffing_micropitting"``: the first alone (no rating, ``ltca run --no-rating``).
 
     Raises
     ------
@@ -492,7 +507,7 @@ class AnalysisChain:
     def function(self, step: str) -> Callable[[ChainState], None] | None:
         """The callable that runs ``step`` (None: skipped)."""
         choice = getattr(self, step)
-        return STEPS[step][choice] if isinstance(choice, str) else choice
+        return _implementations(step)[choice] if isinstance(choice, str) else choice
 
     def describe(self) -> dict[str, str]:
         """Each step's choice as text: its name, ``"callable <qualified name>"`` or
@@ -506,14 +521,14 @@ class AnalysisChain:
 
 
 def _check_choice(step: str, choice: StepChoice) -> None:
-    names = ", ".join(STEPS[step])
+    names = ", ".join(_implementations(step))
     if choice is None:
         if step not in OPTIONAL_STEPS:
             raise InputError(f"steps.{step}: the analysis cannot skip it; give one of "
                              f"{names} or a callable f(state)")
         return
     if isinstance(choice, str):
-        if choice not in STEPS[step]:
+        if choice not in _implementations(step):
             skip = ", or None to skip it" if step in OPTIONAL_STEPS else ""
             raise InputError(f"steps.{step}: unknown step {choice!r}; available: {names} "
                              f"(or a callable f(state){skip})")
@@ -577,9 +592,10 @@ def run_chain(chain: AnalysisChain, state: ChainState) -> ChainState:
     functions = {step: chain.function(step) for step in STEP_ORDER}
     if functions["mesh_interface"] is not None:
         state.roll_problems = []
-    for f in functions.values():
-        if f in _BEFORE_WORK:
-            _BEFORE_WORK[f](state)
+    for f in functions.values():  # a built-in step's checks of its inputs
+        before_work = getattr(f, "before_work", None)
+        if before_work is not None:
+            before_work(state)
     for step, f in functions.items():
         if f is None:
             state.not_run[step] = "not requested (steps)"

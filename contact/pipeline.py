@@ -35,6 +35,7 @@ from contact.qp.solvers import solver_name
 from friction.operating import OperatingConditions
 from geometry import __version__
 from geometry.case import Case
+from geometry.core.bounds import check_torques
 from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment
 
@@ -198,41 +199,6 @@ def _point_as_run(c: Case, torques, operating: OperatingConditions | None):
                   temperature=operating.temperature, roughness=operating.roughness,
                   friction_model=operating.friction_model_name)
     return dataclasses.replace(c.operating, **kw)
-
-
-def check_torques(torque, field: str = "torque") -> tuple[float, ...]:
-    """Pinion torques [N·m] of an API call, each a number in the table of physical bounds
-    (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`, (0, 1e6] N·m).
-
-    Parameters
-    ----------
-    torque : float or sequence of float — [N·m]
-    field : str
-        The argument's name in the message.
-
-    Returns
-    -------
-    tuple of float
-
-    Raises
-    ------
-    InputError
-        Text, an empty sequence, a value not finite or outside the bound (one sentence
-        naming ``field`` and the range).
-    """
-    from geometry.core.bounds import check_bound
-
-    try:
-        ndim = -1 if isinstance(torque, (str, bytes)) else np.ndim(torque)
-    except ValueError:  # a ragged nesting
-        ndim = -1
-    if ndim not in (0, 1):
-        raise InputError(f"{field}: must be a number or a sequence of numbers in (0, 1e+06] "
-                         f"[N m] (pinion torques), got {torque!r}")
-    values = [torque] if np.ndim(torque) == 0 else list(torque)
-    if not values:
-        raise InputError(f"{field}: must hold at least one pinion torque [N m], got none")
-    return tuple(check_bound("torque", t, field=field) for t in values)
 
 
 def check_analysis_arguments(case, torque, misalignment, flank, options, **flags) -> None:

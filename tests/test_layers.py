@@ -19,11 +19,11 @@ Read from the source with ``ast`` (nothing is imported), every ``import`` and
 
       commands, cli                      (the ``ltca`` command)
         └── plots (figures, report)
-              └── study, optimize, wear, load_capacity  (studies and loops over
-                                                         analyses; rating, durability,
-                                                         scuffing, micropitting)
-                    └── catalogue, pipeline, chain  (the bundled cases; one whole
-                                                     analysis and its steps)
+              └── study, optimize, wear  (studies and loops over analyses)
+                    └── pipeline, chain  (one whole analysis and its steps)
+                          └── load_capacity  (rating, durability, scuffing,
+                                              micropitting: the chain's last step)
+                                └── catalogue  (the bundled cases)
 
 * ``friction`` reads no output of ``contact``'s load-capacity package (``/rating``,
   ``/scuffing_micropitting``): no group of it is named in ``friction``'s source (issue 63:
@@ -59,10 +59,10 @@ LAYER_DEPENDS = {
 #: the application layer's levels, lowest first: each unit (a module or subpackage) may
 #: import units of its own level and those below, never above; no cycle between units
 APPLICATION_LEVELS = (
-    ("catalogue, pipeline", {"contact", "contact.catalogue",
-                             "contact.pipeline", "contact.chain"}),
-    ("study, optimize, wear, load capacity", {"contact.study", "contact.optimize",
-                                              "contact.wear", "contact.load_capacity"}),
+    ("catalogue", {"contact.catalogue"}),
+    ("load capacity", {"contact.load_capacity"}),
+    ("pipeline, chain", {"contact", "contact.pipeline", "contact.chain"}),
+    ("study, optimize, wear", {"contact.study", "contact.optimize", "contact.wear"}),
     ("plots, report", {"contact.plots"}),
     ("commands, cli", {"contact.commands", "contact.cli", "contact.__main__"}),
 )
@@ -328,7 +328,7 @@ def test_application_rules_catch_an_upward_import_and_a_cycle(monkeypatch):
     monkeypatch.setattr(me, "_application_edges", lambda: {
         **real(), "contact.pipeline": {"contact.study"}})
     found = me._application_violations()
-    assert any("contact.pipeline (catalogue, pipeline) imports contact.study" in v
+    assert any("contact.pipeline (pipeline, chain) imports contact.study" in v
                for v in found)
     assert any(v.startswith("import cycle") and "contact.pipeline" in v
                and "contact.study" in v for v in found)

@@ -205,3 +205,28 @@ def test_ltca_rate_method_goes_through_the_registry(toy, tmp_path, capsys):
     assert main(["rate", CASE, "--method", "agma2003"]) == 2
     err = capsys.readouterr().err
     assert "unknown load-capacity rating method 'agma2003'" in err and "iso10300" in err
+
+
+def test_the_analysis_chain_rates_by_a_registered_method_chosen_by_name(toy):
+    """The chain's load-capacity step is chosen by a registry name (a plug-in's too): the
+    analysis' /rating is the toy's, made from the analysis' own torques, speed and groups,
+    and its F_mt1 is the ISO 10300 method's for the same case (same definition, 1e-12).
+    Without the toy registered its name is refused listing the available ones."""
+    from contact import LTCAOptions, available_steps, run_analysis
+
+    assert toy in available_steps()["load_capacity"]
+    tree = run_analysis(None, [250.0], options=LTCAOptions(rolls_per_cycle=4, segments=8),
+                        geometry=False, root_stress=False, mesh_interface=False,
+                        steps={"load_capacity": toy})
+    rating = tree["rating"].to_dataset()
+    assert rating.attrs["rating_method"] == toy
+    assert {"/ltca", "/friction"} <= set(rating.attrs["groups_seen"].split(","))
+    speed = float(tree["friction"].attrs["pinion_speed_rpm"])
+    iso = rate("kolivand2009_fm_11x41_reference", [250.0], speed, method="iso10300")
+    np.testing.assert_allclose(rating["F_mt1"].values, iso["F_mt1"].values, rtol=1e-12)
+    assert "flash_temperature" not in tree["rating"].children  # ISO 10300's alone
+    assert "scuffing_micropitting" in tree.children
+    unregister_method(toy)
+    with pytest.raises(InputError, match=r"steps\.load_capacity: unknown step "
+                                         r"'mean_point_forces'; available: iso10300"):
+        run_analysis(None, [250.0], steps={"load_capacity": toy})

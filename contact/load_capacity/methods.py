@@ -30,7 +30,6 @@ import numpy as np
 import xarray as xr
 
 from geometry.core.errors import InputError, ModelUnavailableError, PluginError
-from geometry.core.renamed import renamed_keywords
 
 __all__ = ["DEFAULT_METHOD", "METHODS", "RatingMethod", "available_methods",
            "available_rating_methods", "rate", "rate_load_capacity", "register_method",
@@ -67,6 +66,12 @@ class RatingMethod:
         ``tables(dataset) -> str``: the rating as text in the standard's layout, what
         ``ltca rate`` prints; None: one line per variable
         (:func:`contact.commands.rate.variable_lines`).
+    missing : callable, optional
+        ``missing(case) -> str``: why the method cannot rate this case although nothing in
+        it is wrong (a table the method needs is absent), or ``""``. An analysis then
+        records the reason and goes on without ``/rating`` (the analysis chain's
+        load-capacity step), where :func:`rate` itself would refuse the case. None: every
+        case can be rated.
     """
 
     name: str
@@ -74,18 +79,19 @@ class RatingMethod:
     title: str
     source: str
     tables: Callable[[xr.Dataset], str] | None = None
+    missing: Callable[[Any], str] | None = None
 
 
 def _iso10300() -> RatingMethod:
+    from contact.load_capacity.iso10300.method import missing_tables, tables
     from contact.load_capacity.iso10300.method import rate as iso10300_rate
-    from contact.load_capacity.iso10300.method import tables
 
     return RatingMethod(
         "iso10300", iso10300_rate,
         "ISO 10300-1/-2/-3:2014 Method B1 (pitting and tooth root strength of bevel and "
         "hypoid gears)",
         "ISO 10300-1/-2/-3:2014; checked against ISO/TR 10300-30:2024 samples 1-3 "
-        "(tests/test_rating_iso10300.py)", tables)
+        "(tests/test_rating_iso10300.py)", tables, missing_tables)
 
 
 #: name → :class:`RatingMethod`: every method that imported (one module each, imported
@@ -114,6 +120,7 @@ def available_methods() -> list[str]:
 
 def register_method(name: str, function: Callable[..., xr.Dataset], *, title: str,
                     source: str, tables: Callable[[xr.Dataset], str] | None = None,
+                    missing: Callable[[Any], str] | None = None,
                     replace: bool = False) -> RatingMethod:
     """Add a rating method to the registry (a plug-in's; the bundled ones are entries of
     :data:`METHODS`).
@@ -129,6 +136,9 @@ def register_method(name: str, function: Callable[..., xr.Dataset], *, title: st
         against (non-empty).
     tables : callable, optional
         The rating as text for ``ltca rate`` (:attr:`RatingMethod.tables`).
+    missing : callable, optional
+        Why a case cannot be rated although nothing in it is wrong, or ``""``
+        (:attr:`RatingMethod.missing`).
     replace : bool
         Allow replacing a registered method of the same name (default False).
 
@@ -158,7 +168,9 @@ def register_method(name: str, function: Callable[..., xr.Dataset], *, title: st
                           "(replace=True replaces it)")
     if tables is not None and not callable(tables):
         raise PluginError(f"tables: must be callable or None, got {tables!r}")
-    METHODS[name] = RatingMethod(name, function, title, source, tables)
+    if missing is not None and not callable(missing):
+        raise PluginError(f"missing: must be callable or None, got {missing!r}")
+    METHODS[name] = RatingMethod(name, function, title, source, tables, missing)
     return METHODS[name]
 
 
@@ -189,8 +201,7 @@ def _method(name: str) -> RatingMethod:
     return METHODS[name]
 
 
-@renamed_keywords(speed="pinion_speed")
-def rate(case: Any, torque: Any = None, pinion_speed: float | None = None, *,
+def rate(case: Any, torque: Any = None, speed: float | None = None, *,
          method: str = DEFAULT_METHOD, flank: str | None = None,
          analysis: xr.DataTree | Mapping[str, xr.Dataset] | None = None,
          **options: Any) -> xr.Dataset:
@@ -205,9 +216,8 @@ def rate(case: Any, torque: Any = None, pinion_speed: float | None = None, *,
     torque : array_like, shape (n,) — [N·m], optional
         Pinion torques; default the analysis' (its ``/ltca`` torque coordinate), else the
         case's ``[operating]`` torques.
-    pinion_speed : float — [rpm], optional
-        Pinion speed (> 0; old name ``speed``, deprecated); default the analysis'
-        efficiency stage's
+    speed : float — [rpm], optional
+        Pinion speed (> 0); default the analysis' efficiency stage's
         (``/friction`` attribute ``pinion_speed_rpm``), else the case's ``[operating]
         pinion_speed``.
     method : str
@@ -261,14 +271,14 @@ def rate(case: Any, torque: Any = None, pinion_speed: float | None = None, *,
         ltca = datasets.get("/ltca")
         torque = (ltca["torque"].values if ltca is not None and "torque" in ltca.coords
                   else c.operating.torque)
-    if pinion_speed is None:
+    if speed is None:
         friction = datasets.get("/friction")
-        pinion_speed = (float(friction.attrs["pinion_speed_rpm"]) if friction is not None
-                        and "pinion_speed_rpm" in friction.attrs else c.operating.pinion_speed)
+        speed = (float(friction.attrs["pinion_speed_rpm"]) if friction is not None
+                 and "pinion_speed_rpm" in friction.attrs else c.operating.pinion_speed)
     if flank is not None and flank not in ("concave", "convex", "drive", "coast"):
         raise InputError(f"flank: must be concave, convex, drive or coast, got {flank!r}")
     log.info("rating %s by %s", c.name, entry.name)
-    out = entry.function(c, np.atleast_1d(np.asarray(torque, float)), float(pinion_speed),
+    out = entry.function(c, np.atleast_1d(np.asarray(torque, float)), float(speed),
                          flank=flank, datasets=datasets, **options)
     if not isinstance(out, xr.Dataset):
         raise InputError(f"method: {entry.name} returned {type(out).__name__}, not an "

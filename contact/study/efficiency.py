@@ -20,12 +20,12 @@ import xarray as xr
 from contact.catalogue import resolve_case
 from contact.ltca import LTCAOptions, loaded_tca
 from contact.ltca.summary import ANALYSIS_STATUS, certification
-from contact.pipeline import check_analysis_arguments, check_torques, misalignment_attrs
+from contact.pipeline import check_analysis_arguments, misalignment_attrs
 from contact.study.engine import run_tasks
 from friction.operating import OperatingConditions
 from geometry import __version__
 from geometry.case import OPERATING_DEFAULTS, Case
-from geometry.core.bounds import check_bound
+from geometry.core.bounds import check_bound, check_torques
 from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment
 

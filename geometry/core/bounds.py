@@ -25,9 +25,11 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
+import numpy as np
+
 from geometry.core.errors import InputError
 
-__all__ = ["PHYSICAL_BOUNDS", "Bound", "check_bound"]
+__all__ = ["PHYSICAL_BOUNDS", "Bound", "check_bound", "check_torques"]
 
 
 @dataclass(frozen=True)
@@ -138,3 +140,36 @@ def check_bound(name: str, value: Any, *, field: str | None = None, scale: float
         raise InputError(f"{field or name}: must be in {'(' if low_open else '['}{low:g}, "
                          f"{high:g}] [{unit or b.unit}], got {v:g}")
     return v
+
+
+def check_torques(torque, field: str = "torque") -> tuple[float, ...]:
+    """Pinion torques [N·m] of an API call, each a number in the table of physical bounds
+    (:data:`geometry.core.bounds.PHYSICAL_BOUNDS`, (0, 1e6] N·m).
+
+    Parameters
+    ----------
+    torque : float or sequence of float — [N·m]
+    field : str
+        The argument's name in the message.
+
+    Returns
+    -------
+    tuple of float
+
+    Raises
+    ------
+    InputError
+        Text, an empty sequence, a value not finite or outside the bound (one sentence
+        naming ``field`` and the range).
+    """
+    try:
+        ndim = -1 if isinstance(torque, (str, bytes)) else np.ndim(torque)
+    except ValueError:  # a ragged nesting
+        ndim = -1
+    if ndim not in (0, 1):
+        raise InputError(f"{field}: must be a number or a sequence of numbers in (0, 1e+06] "
+                         f"[N m] (pinion torques), got {torque!r}")
+    values = [torque] if np.ndim(torque) == 0 else list(torque)
+    if not values:
+        raise InputError(f"{field}: must hold at least one pinion torque [N m], got none")
+    return tuple(check_bound("torque", t, field=field) for t in values)

@@ -23,7 +23,6 @@ peaks of the actual contact at the case's misalignment; docs/rating.md discusses
 from __future__ import annotations
 
 import logging
-from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -73,16 +72,13 @@ def analysis_rating(case, torque: Any, speed: float | None, flank: str | None = 
     :func:`contact.load_capacity.iso10300.rate_pair`.
     """
     from contact.load_capacity.iso10300.inputs import RatingInputs
-    from contact.load_capacity.iso10300.method import rated_side
+    from contact.load_capacity.iso10300.method import missing_tables, rated_side
     from contact.load_capacity.iso10300.rating import iso10300_rating
 
-    if not isinstance(case.extra.get("design"), Mapping):
-        return None, ("ISO 10300 rating not computed: the case has no [design] table (its "
-                      "ISO 23509 basic design data, docs/rating.md)")
-    table = case.extra.get("rating")
-    if table is None:
-        return None, ("ISO 10300 rating not computed: the case has no [rating] table "
-                      "(application factor, mounting, pitch deviation; docs/rating.md)")
+    why = missing_tables(case)
+    if why:
+        return None, why
+    table = case.extra["rating"]
     if speed is None or not speed > 0.0:
         return None, ("ISO 10300 rating not computed: no pinion speed (the case's "
                       "[operating] pinion_speed is 0; give --speed)")

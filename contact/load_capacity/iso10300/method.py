@@ -20,7 +20,7 @@ from contact.load_capacity.iso10300.inputs import RatingInputs
 from contact.load_capacity.iso10300.rating import iso10300_rating
 from geometry.core.errors import InputError
 
-__all__ = ["rate", "rated_side", "tables"]
+__all__ = ["missing_tables", "rate", "rated_side", "tables"]
 
 
 def rated_side(case, flank: str | None) -> str | None:
@@ -44,6 +44,34 @@ def rated_side(case, flank: str | None) -> str | None:
     pinion_flank = {"drive": drive,
                     "coast": "convex" if drive == "concave" else "concave"}.get(flank, flank)
     return "drive" if pinion_flank == "concave" else "coast"
+
+
+def missing_tables(case) -> str:
+    """Why ISO 10300 Method B1 cannot rate ``case`` although nothing in it is wrong, or
+    ``""``: it has no ``[design]`` table (the ISO 23509 basic data the virtual cylindrical
+    gears are computed from) or no ``[rating]`` table (application factor, mounting, pitch
+    deviation; docs/rating.md).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    str
+        One line naming the absent table, or ``""``.
+
+    Notes
+    -----
+    ISO 10300-1:2014 cl. 4 (the data the method needs).
+    """
+    if not isinstance(case.extra.get("design"), Mapping):
+        return ("ISO 10300 rating not computed: the case has no [design] table (its "
+                "ISO 23509 basic design data, docs/rating.md)")
+    if case.extra.get("rating") is None:
+        return ("ISO 10300 rating not computed: the case has no [rating] table "
+                "(application factor, mounting, pitch deviation; docs/rating.md)")
+    return ""
 
 
 def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
