@@ -80,7 +80,7 @@ def main(argv=None) -> int:
     n_roll, pairs = 30, np.array([-1, 0, 1])
     print(f"case: {label}; grid 41 x 21, {n_roll} rolls x {len(pairs)} pairs, one core\n")
 
-    t_total, (_, ds) = best_of(lambda: unloaded_tca(case, n_roll=n_roll), args.repeat)
+    t_total, (_, ds) = best_of(lambda: unloaded_tca(case, rolls_per_cycle=n_roll), args.repeat)
     t_eo, eo = best_of(lambda: ease_off(case), args.repeat)
     fields = EaseOffFields(eo)
     q = ds["roll"].values[:, None] - pairs[None, :] * eo.pitch

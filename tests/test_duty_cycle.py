@@ -69,7 +69,7 @@ def test_deflection_misalignment_adds_assembly_and_converts_degrees():
 
 def test_outside_table_refused_naming_the_bin():
     with pytest.raises(InputError, match=r"duty_cycle bin 1.*700"):
-        DutyCycle(torque=[100.0, 700.0], speed=[1000.0, 1000.0], revolutions=[1e5, 1e5],
+        DutyCycle(torque=[100.0, 700.0], pinion_speed=[1000.0, 1000.0], revolutions=[1e5, 1e5],
                   deflection=_table())
 
 
@@ -99,7 +99,7 @@ def test_bad_bins_named():
 
 
 def test_unknown_grade_refused_before_any_bin(case):
-    duty = DutyCycle(torque=[100.0], speed=[1000.0], revolutions=[1e5], grade="MX")
+    duty = DutyCycle(torque=[100.0], pinion_speed=[1000.0], revolutions=[1e5], grade="MX")
     with pytest.raises(InputError, match="grade"):
         run_duty_cycle(case, duty, RUN)
 
@@ -124,7 +124,7 @@ def test_example_is_labelled_and_linear():
 @pytest.fixture(scope="module")
 def one_bin(case):
     """A single bin at the case's own misalignment (no deflection table)."""
-    duty = DutyCycle(torque=[250.0], speed=[1500.0], revolutions=[1e7])
+    duty = DutyCycle(torque=[250.0], pinion_speed=[1500.0], revolutions=[1e7])
     return duty, run_duty_cycle(case, duty, RUN)
 
 
@@ -254,7 +254,7 @@ def test_bending_side_consumes_root_stress(case, one_bin):
                      [[310.0, 700.0, 0.0], [250.0, 400.0, 880.0]]])  # (bin, member, point)
     bins["root_stress_peak"] = xr.DataArray(root, dims=("bin", "member", "fillet_point"),
                                             attrs={"units": "MPa", "long_name": "peak"})
-    duty = DutyCycle(torque=[250.0, 250.0], speed=[1500.0, 1500.0],
+    duty = DutyCycle(torque=[250.0, 250.0], pinion_speed=[1500.0, 1500.0],
                      revolutions=[1e6, 3e6], miner_rule="elementary")
     out = duty_cycle_result(DutyInputs(case, duty, OPTIONS), bins)
     c = sn_curves(case.gear.material, "MQ")["bending"]

@@ -304,7 +304,7 @@ def test_a_study_takes_the_functions_and_records_their_names(tmp_path, reference
                    operating=OperatingConditions(friction_model=coleman),
                    scheduler="synchronous", root_stress=False)
     grid = sweep(case, delta_E=[float(case.misalignment.delta_E)], torque=TORQUE,
-                 speed=1500.0, run=run)
+                 pinion_speed=1500.0, run=run)
     assert (grid["status"].values == 0).all()
     # the point is the default analysis: LTE to round-off (exact solvers, the same shell
     # matrices), the efficiency of μ = 0.05 as the bundled constant model's, to round-off

@@ -170,7 +170,7 @@ def test_a_duty_cycle_bin_without_certified_contact_is_failed(failing_solver):
     from contact.study.duty_cycle import DutyInputs, analyse_bin
     from contact.study.duty_cycle_inputs import DutyCycle
 
-    duty = DutyCycle(torque=[250.0], speed=[1500.0], revolutions=[1e6])
+    duty = DutyCycle(torque=[250.0], pinion_speed=[1500.0], revolutions=[1e6])
     shared = DutyInputs(resolve_case(None), duty,
                         LTCAOptions(rolls_per_cycle=4, segments=8, solver=failing_solver))
     ds = analyse_bin(shared, 0)
@@ -214,7 +214,7 @@ def test_a_duty_cycle_with_a_failed_bin_ends_in_analysis_failed():
     from contact.study.duty_cycle import _durability
     from contact.study.duty_cycle_inputs import DutyCycle
 
-    duty = DutyCycle(torque=[250.0], speed=[1500.0], revolutions=[1e6])
+    duty = DutyCycle(torque=[250.0], pinion_speed=[1500.0], revolutions=[1e6])
     bins = xr.Dataset({"status": ("bin", np.array([2], np.int8)),
                        "reason": ("bin", np.array(["no certified contact solution at T_p "
                                                    "250 N m (0 of 8 roll positions "

@@ -291,7 +291,7 @@ def test_the_standard_and_the_ltca_on_tr_sample_1():
 
     tree = run_analysis("iso10300_30_sample1", torque=[300.0], root_stress=False)
     fr = tree["friction"].to_dataset()
-    rating = iso10300_rating("iso10300_30_sample1", torque=[300.0], speed=1200.0)
+    rating = iso10300_rating("iso10300_30_sample1", torque=[300.0], pinion_speed=1200.0)
     iso = iso_flash_temperature_method(rating, oil_temperature=90.0, roughness=0.8,
                                        lengthwise_sliding=True)
     ours = float(fr["contact_temperature_max"][0]) - 90.0

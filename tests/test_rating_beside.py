@@ -61,7 +61,7 @@ def _ltca(torque, pressure, root=None) -> xr.Dataset:
 
 
 def test_beside_ratios_are_the_quotients():
-    rating = iso10300_rating("iso10300_30_sample1", torque=[150.0, 300.0], speed=1200.0)
+    rating = iso10300_rating("iso10300_30_sample1", torque=[150.0, 300.0], pinion_speed=1200.0)
     side = rating_beside_ltca(rating, _ltca([150.0, 300.0], [2000.0, 3000.0],
                                             [[400.0, 500.0], [700.0, 800.0]]))
     s_h = rating["sigma_H"].values
@@ -77,7 +77,7 @@ def test_beside_ratios_are_the_quotients():
 
 
 def test_beside_without_root_stress_and_with_a_torque_order():
-    rating = iso10300_rating("iso10300_30_sample1", torque=[300.0, 150.0], speed=1200.0)
+    rating = iso10300_rating("iso10300_30_sample1", torque=[300.0, 150.0], pinion_speed=1200.0)
     side = rating_beside_ltca(rating, _ltca([150.0, 300.0], [2000.0, 3000.0]))
     assert np.all(np.isnan(side["root_stress_to_sigma_F"].values))
     assert "no root stress" in side["root_stress_max"].attrs["comment"]
@@ -86,7 +86,7 @@ def test_beside_without_root_stress_and_with_a_torque_order():
 
 
 def test_beside_refuses_a_torque_the_rating_lacks():
-    rating = iso10300_rating("iso10300_30_sample1", torque=[300.0], speed=1200.0)
+    rating = iso10300_rating("iso10300_30_sample1", torque=[300.0], pinion_speed=1200.0)
     with pytest.raises(InputError, match=r"^torque: the rating has no torque 150"):
         rating_beside_ltca(rating, _ltca([150.0, 300.0], [2000.0, 3000.0]))
 

@@ -406,7 +406,7 @@ def test_rating_round_trip(case_runs, tmp_path):
 
 def test_torques_broadcast_and_scale():
     """σ_H0 ∝ √T and σ_F0 ∝ T (Method B1 is linear in the force up to the load factors)."""
-    ds = iso10300_rating("iso10300_30_sample1", torque=[150.0, 300.0, 600.0], speed=1200.0)
+    ds = iso10300_rating("iso10300_30_sample1", torque=[150.0, 300.0, 600.0], pinion_speed=1200.0)
     s_h0, s_f0 = ds["sigma_H0"].values, ds["sigma_F0"].values
     assert s_h0[2] / s_h0[1] == pytest.approx(math.sqrt(2.0), rel=1e-12)
     assert s_f0[0] / s_f0[1] == pytest.approx([0.5, 0.5], rel=1e-12)
@@ -585,7 +585,7 @@ def test_dynamic_factor_warning_names_the_loads_in_the_main_resonance_range(capl
     import logging
 
     with caplog.at_level(logging.WARNING, logger="contact.load_capacity.iso10300.factors"):
-        ds = iso10300_rating("iso10300_30_sample1", torque=[5.0, 50.0, 300.0], speed=30000.0)
+        ds = iso10300_rating("iso10300_30_sample1", torque=[5.0, 50.0, 300.0], pinion_speed=30000.0)
     n = ds["N"].values
     assert n[0] > 1.5 and 0.75 < n[1] <= 1.25 and 0.75 < n[2] <= 1.25
     text = " ".join(r.getMessage() for r in caplog.records if "resonance" in r.getMessage())

@@ -380,7 +380,7 @@ def test_a_duty_cycle_of_absurd_bins_is_refused_bin_by_bin():
 
     with pytest.raises(InputError, match=r"^duty_cycle\.speed \(bin 1\): must be in \(0, "
                                          r"50000\] \[rpm\], got 1e\+12$"):
-        DutyCycle(torque=[100.0, 200.0], speed=[1500.0, 1e12], revolutions=[1e5, 1e5])
+        DutyCycle(torque=[100.0, 200.0], pinion_speed=[1500.0, 1e12], revolutions=[1e5, 1e5])
 
 
 def _api_calls():

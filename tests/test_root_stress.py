@@ -259,7 +259,7 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     for member, ds in _coefficients().items():
         key = cache_key(case.member(member), ds.attrs["flank"], COARSE)
         write_cache_entry(ds, cache_path(key), key)
-    duty = DutyCycle(torque=[100.0, 250.0], speed=[2000.0, 1000.0], revolutions=[1e7, 1e6])
+    duty = DutyCycle(torque=[100.0, 250.0], pinion_speed=[2000.0, 1000.0], revolutions=[1e7, 1e6])
     out = run_duty_cycle(case, duty, StudyRun(options=SMALL, scheduler="synchronous"),
                          root_stress=COARSE)
     assert out.attrs["bending"] == "available"

@@ -223,7 +223,7 @@ def test_duty_cycle_resumes_past_a_nan_chunk(tmp_path, monkeypatch, caplog):
     from contact.study.run import StudyRun
 
     case = resolve_case(None)
-    duty = DutyCycle(torque=[250.0], speed=[1500.0], revolutions=[1e7])
+    duty = DutyCycle(torque=[250.0], pinion_speed=[1500.0], revolutions=[1e7])
     out = tmp_path / "d.nc"
     run = StudyRun(options=LTCAOptions(rolls_per_cycle=8, segments=8),
                    scheduler="synchronous", output=out)

@@ -69,7 +69,7 @@ def _easeoff(mis: Misalignment | None = None, flank: str = "drive"):
 
 @cache
 def _utca():
-    return unloaded_tca(_crowned(), n_roll=24)
+    return unloaded_tca(_crowned(), rolls_per_cycle=24)
 
 
 def _gear_frame(case, gear_rotation, points, mis=None):
@@ -109,7 +109,7 @@ def test_conjugate_pair_has_zero_transmission_error():
     the whole contact curve is within the separation (line contact: the contact line is the
     full curve, length = its arc length to 1e-9 mm)."""
     case = load_case(DATA / "hypoid_iso23509_s2_conjugate.toml")
-    _, ds = unloaded_tca(case, n_roll=8)
+    _, ds = unloaded_tca(case, rolls_per_cycle=8)
     te = ds["pair_transmission_error"].values
     assert np.nanmax(np.abs(te)) < 0.01
     assert float(ds["peak_to_peak_transmission_error"]) < 0.01
@@ -311,7 +311,7 @@ def test_utca_dataset_conventions_roundtrip_and_errors(tmp_path):
         got = without_stamps(back[group].to_dataset(inherit=False), orig)
         xr.testing.assert_identical(got, orig)
     case = _crowned()
-    for kwargs, field in (({"n_roll": 2}, "n_roll"), ({"separation": -1.0}, "separation"),
+    for kwargs, field in (({"rolls_per_cycle": 2}, "rolls_per_cycle"), ({"separation": -1.0}, "separation"),
                           ({"pairs": (1, 2)}, "pairs"), ({"method": "exact"}, "method")):
         with pytest.raises(InputError, match=field):
             unloaded_tca(case, grid={"nu": 11, "nv": 7}, **kwargs)
@@ -341,7 +341,7 @@ def test_cli_writes_groups_and_plots(tmp_path):
 def test_every_bundled_case_runs_the_utca(name):
     # (ISO sample 2's synthesised pair has a fold of the roll-angle surface at the gear tip
     # near the heel; those nodes are masked as ``beyond_fold``)
-    eo, ut = unloaded_tca(load_case(ROOT / "cases" / name), n_roll=8,
+    eo, ut = unloaded_tca(load_case(ROOT / "cases" / name), rolls_per_cycle=8,
                           misalignment=Misalignment())  # aligned
     te = ut["unloaded_transmission_error"]
     assert np.isfinite(te).any()

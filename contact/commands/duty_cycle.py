@@ -140,7 +140,7 @@ def run(args: argparse.Namespace) -> int:
 
     print_wrapped(f"duty cycle of {case.name}: {duty.name}, {duty.n_bins} bins: T [N m] "
                   + ", ".join(f"{t:g}" for t in duty.torque) + "; n [rpm] "
-                  + ", ".join(f"{n:g}" for n in duty.speed) + "; t [h] "
+                  + ", ".join(f"{n:g}" for n in duty.pinion_speed) + "; t [h] "
                   + ", ".join(f"{h:.4g}" for h in duty.hours))
     ds = run_duty_cycle(case, duty, StudyRun(
         options=ltca_options(args), flank=args.flank, output=output,

@@ -355,7 +355,7 @@ def sweep_command(args: argparse.Namespace) -> int:
                                                            axes.items())
           + f") at T_p {', '.join(f'{t:g}' for t in torques)} N m", flush=True)
     print("\n".join(lines), flush=True)
-    ds = sweep(case, torque=torques, speed=args.speed, **axes, run=run)
+    ds = sweep(case, torque=torques, pinion_speed=args.speed, **axes, run=run)
     print(_ranges_table(ds))
     print(_status_line(ds))
     print(f"wrote {run.output}")
@@ -393,7 +393,7 @@ def tolerance_command(args: argparse.Namespace) -> int:
                   f"draws from {x.min():.4g} to {x.max():.4g} (P5 {p5:.4g}, P50 {p50:.4g}, "
                   f"P95 {p95:.4g})", flush=True)
     ds = sample(case, dists, args.n, method=args.method, seed=args.seed,
-                torque=torques, speed=args.speed, run=run)
+                torque=torques, pinion_speed=args.speed, run=run)
     ok = ds["status"].values != 2
     rows = []
     for t in ds["torque"].values:

@@ -60,7 +60,7 @@ def run_utca(args: argparse.Namespace) -> int:
     output = checked_outputs(args, "_utca.nc")
     case, mis = case_and_misalignment(args)
     easeoff, utca = unloaded_tca(case, misalignment=mis, flank=args.flank,
-                                 n_roll=args.rolls_per_cycle,
+                                 rolls_per_cycle=args.rolls_per_cycle,
                                  separation=args.separation * 1e-3,
                                  grid={"nu": args.nu, "nv": args.nv}, method=args.method)
     m1, m2 = utca["transition_roll"].values

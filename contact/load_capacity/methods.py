@@ -30,6 +30,7 @@ import numpy as np
 import xarray as xr
 
 from geometry.core.errors import InputError, ModelUnavailableError, PluginError
+from geometry.core.renamed import renamed_keywords
 
 __all__ = ["DEFAULT_METHOD", "METHODS", "RatingMethod", "available_methods",
            "available_rating_methods", "rate", "rate_load_capacity", "register_method",
@@ -201,7 +202,8 @@ def _method(name: str) -> RatingMethod:
     return METHODS[name]
 
 
-def rate(case: Any, torque: Any = None, speed: float | None = None, *,
+@renamed_keywords(speed="pinion_speed")
+def rate(case: Any, torque: Any = None, pinion_speed: float | None = None, *,
          method: str = DEFAULT_METHOD, flank: str | None = None,
          analysis: xr.DataTree | Mapping[str, xr.Dataset] | None = None,
          **options: Any) -> xr.Dataset:
@@ -216,8 +218,9 @@ def rate(case: Any, torque: Any = None, speed: float | None = None, *,
     torque : array_like, shape (n,) — [N·m], optional
         Pinion torques; default the analysis' (its ``/ltca`` torque coordinate), else the
         case's ``[operating]`` torques.
-    speed : float — [rpm], optional
-        Pinion speed (> 0); default the analysis' efficiency stage's
+    pinion_speed : float — [rpm], optional
+        Pinion speed (> 0; old name ``speed``, deprecated); default the analysis'
+        efficiency stage's
         (``/friction`` attribute ``pinion_speed_rpm``), else the case's ``[operating]
         pinion_speed``.
     method : str
@@ -271,14 +274,14 @@ def rate(case: Any, torque: Any = None, speed: float | None = None, *,
         ltca = datasets.get("/ltca")
         torque = (ltca["torque"].values if ltca is not None and "torque" in ltca.coords
                   else c.operating.torque)
-    if speed is None:
+    if pinion_speed is None:
         friction = datasets.get("/friction")
-        speed = (float(friction.attrs["pinion_speed_rpm"]) if friction is not None
-                 and "pinion_speed_rpm" in friction.attrs else c.operating.pinion_speed)
+        pinion_speed = (float(friction.attrs["pinion_speed_rpm"]) if friction is not None
+                        and "pinion_speed_rpm" in friction.attrs else c.operating.pinion_speed)
     if flank is not None and flank not in ("concave", "convex", "drive", "coast"):
         raise InputError(f"flank: must be concave, convex, drive or coast, got {flank!r}")
     log.info("rating %s by %s", c.name, entry.name)
-    out = entry.function(c, np.atleast_1d(np.asarray(torque, float)), float(speed),
+    out = entry.function(c, np.atleast_1d(np.asarray(torque, float)), float(pinion_speed),
                          flank=flank, datasets=datasets, **options)
     if not isinstance(out, xr.Dataset):
         raise InputError(f"method: {entry.name} returned {type(out).__name__}, not an "

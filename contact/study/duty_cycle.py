@@ -107,7 +107,7 @@ class DutyInputs:
         d = self.duty
         mis = [dataclasses.astuple(d.misalignment(i, self.case.misalignment))
                for i in range(d.n_bins)]
-        bins = {"torque": d.torque.tolist(), "speed": d.speed.tolist(), "misalignment": mis,
+        bins = {"torque": d.torque.tolist(), "speed": d.pinion_speed.tolist(), "misalignment": mis,
                 "temperature": None if d.temperature is None else d.temperature.tolist()}
         text = json.dumps({"case": self.case.to_toml(), "bins": bins,
                            "options": json_options(self.options), "flank": self.flank,
@@ -163,7 +163,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
                             root_stress=shared.root_stress, steps={"load_capacity": None})
         ltca = tree["/ltca"].to_dataset()
         temp = None if duty.temperature is None else float(duty.temperature[index])
-        op = operating_conditions(case, pinion_speed=float(duty.speed[index]),
+        op = operating_conditions(case, pinion_speed=float(duty.pinion_speed[index]),
                                   temperature=temp)
         fr = efficiency_analysis(ltca, op)
         vals = {
@@ -287,7 +287,7 @@ def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
 
 def _cycle(duty: DutyCycle, ds: xr.Dataset) -> dict[str, Any]:
     """Per-bin energy and the cycle's totals (energy in, lost, efficiency)."""
-    omega = duty.speed * 2.0 * math.pi / 60.0  # rad/s
+    omega = duty.pinion_speed * 2.0 * math.pi / 60.0  # rad/s
     power_in = duty.torque * omega  # W
     seconds = duty.hours * 3600.0
     e_in = power_in * seconds / 3.6e6  # kWh
@@ -374,7 +374,7 @@ def _bin_ratings(shared: DutyInputs) -> tuple[xr.Dataset | None, str]:
     from contact.load_capacity.iso10300 import bin_ratings
 
     try:
-        return bin_ratings(shared.case, shared.duty.torque, shared.duty.speed, shared.flank)
+        return bin_ratings(shared.case, shared.duty.torque, shared.duty.pinion_speed, shared.flank)
     except InputError as exc:
         return None, f"ISO 10300 rating not computed: {exc}"
 
@@ -452,7 +452,7 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
     out = out.assign_coords(member=("member", members, {"long_name": "gear member"}))
     bin_ = ("bin",)
     out["torque"] = data_var(bin_, duty.torque, "N m", "pinion torque of the bin")
-    out["speed"] = data_var(bin_, duty.speed, "rpm", "pinion speed of the bin")
+    out["speed"] = data_var(bin_, duty.pinion_speed, "rpm", "pinion speed of the bin")
     out["hours"] = data_var(bin_, duty.hours, "h", "duration of the bin")
     out["revolutions"] = data_var(bin_, duty.revolutions, "1", "pinion revolutions of the bin")
     if duty.temperature is not None:

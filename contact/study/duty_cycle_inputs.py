@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import math
 import os
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -45,6 +46,7 @@ from scipy.interpolate import PchipInterpolator
 from contact.load_capacity.durability.sn_curve import MINER_RULES
 from geometry.core.bounds import check_bound
 from geometry.core.errors import InputError
+from geometry.core.renamed import renamed_keywords
 from geometry.core.toml_files import read_toml
 from geometry.pair.assembly import Misalignment
 
@@ -144,6 +146,7 @@ class DeflectionTable:
                             delta_Sigma=assembly.delta_Sigma + math.radians(d["delta_Sigma"]))
 
 
+@renamed_keywords(speed="pinion_speed")
 @dataclass(frozen=True)
 class DutyCycle:
     """A load spectrum of bins, its deflection table and the durability settings.
@@ -152,8 +155,9 @@ class DutyCycle:
     ----------
     torque : (NB,) — [N·m]
         Pinion torque of each bin, > 0.
-    speed : (NB,) — [rpm]
-        Pinion speed of each bin, > 0.
+    pinion_speed : (NB,) — [rpm]
+        Pinion speed of each bin, > 0 (the ``[duty_cycle]`` table's ``speed``; old
+        keyword and attribute ``speed``, deprecated).
     revolutions : (NB,) — [1]
         Pinion revolutions of each bin, > 0 (``hours`` converted: n × 60 × h).
     deflection : DeflectionTable or None
@@ -175,7 +179,7 @@ class DutyCycle:
     """
 
     torque: np.ndarray
-    speed: np.ndarray
+    pinion_speed: np.ndarray
     revolutions: np.ndarray
     deflection: DeflectionTable | None = None
     temperature: np.ndarray | None = None
@@ -187,11 +191,12 @@ class DutyCycle:
     def __post_init__(self) -> None:
         t = _array("duty_cycle.torque", self.torque)
         n = t.size
-        for name in ("torque", "speed", "revolutions"):
-            a = _array(f"duty_cycle.{name}", getattr(self, name), n)
+        for name in ("torque", "pinion_speed", "revolutions"):
+            field = "speed" if name == "pinion_speed" else name  # the table's key
+            a = _array(f"duty_cycle.{field}", getattr(self, name), n)
             if np.any(a <= 0):
                 i = int(np.argmax(a <= 0))
-                raise InputError(f"duty_cycle.{name}: must be > 0 in every bin, bin {i} "
+                raise InputError(f"duty_cycle.{field}: must be > 0 in every bin, bin {i} "
                                  f"has {a[i]:g}")
             object.__setattr__(self, name, a)
         if self.temperature is not None:
@@ -200,11 +205,11 @@ class DutyCycle:
                 raise InputError("duty_cycle.temperature: must be above absolute zero [degC]")
             object.__setattr__(self, "temperature", a)
         # the one table of physical bounds, bin by bin, before any analysis (issue 64)
-        for name, bound in (("torque", "torque"), ("speed", "pinion_speed"),
+        for name, field in (("torque", "torque"), ("pinion_speed", "speed"),
                             ("temperature", "temperature")):
             values = getattr(self, name)
             for i, v in enumerate(() if values is None else values):
-                check_bound(bound, float(v), field=f"duty_cycle.{name} (bin {i})")
+                check_bound(name, float(v), field=f"duty_cycle.{field} (bin {i})")
         if self.miner_rule not in MINER_RULES:
             raise InputError(f"duty_cycle.miner_rule: must be one of {', '.join(MINER_RULES)},"
                              f" got {self.miner_rule!r}")
@@ -213,9 +218,16 @@ class DutyCycle:
                 self.deflection.at(float(tq), f"duty_cycle bin {i}")
 
     @property
+    def speed(self) -> np.ndarray:
+        """Deprecated name of :attr:`pinion_speed` (goes in the next release)."""
+        warnings.warn("DutyCycle.speed is renamed pinion_speed; the old name goes in the "
+                      "next release", DeprecationWarning, stacklevel=2)
+        return self.pinion_speed
+
+    @property
     def hours(self) -> np.ndarray:
-        """(NB,) [h] duration of each bin: revolutions / (speed × 60)."""
-        return self.revolutions / (self.speed * 60.0)
+        """(NB,) [h] duration of each bin: revolutions / (pinion speed × 60)."""
+        return self.revolutions / (self.pinion_speed * 60.0)
 
     @property
     def n_bins(self) -> int:
@@ -233,7 +245,7 @@ class DutyCycle:
         out: dict[str, Any] = {"name": self.name, "grade": self.grade,
                                "miner_rule": self.miner_rule,
                                "illustrative": self.illustrative,
-                               "torque": self.torque.tolist(), "speed": self.speed.tolist(),
+                               "torque": self.torque.tolist(), "speed": self.pinion_speed.tolist(),
                                "revolutions": self.revolutions.tolist()}
         if self.temperature is not None:
             out["temperature"] = self.temperature.tolist()
@@ -314,7 +326,7 @@ def read_duty_cycle(source: Mapping[str, Any] | str | os.PathLike[str] | Any) ->
         if missing:
             raise InputError(f"duty_cycle.deflection.{missing[0]}: missing")
         deflection = DeflectionTable(**{k: d[k] for k in ("torque", *DEFLECTION_FIELDS)})
-    return DutyCycle(torque=torque, speed=speed, revolutions=revolutions,
+    return DutyCycle(torque=torque, pinion_speed=speed, revolutions=revolutions,
                      deflection=deflection, temperature=table.get("temperature"),
                      grade=str(table.get("grade", "MQ")),
                      miner_rule=str(table.get("miner_rule", "modified")),
@@ -380,7 +392,7 @@ def example_duty_cycle(max_torque: float = 500.0, max_speed: float = 3000.0,
     table = DeflectionTable(torque=[0.0, top], delta_E=[0.0, 0.05 * scale],
                             delta_P=[0.0, -0.03 * scale], delta_G=[0.0, 0.03 * scale],
                             delta_Sigma=[0.0, 0.01 * scale])
-    return DutyCycle(torque=np.array([r[0] for r in rows]) * max_torque, speed=speed,
+    return DutyCycle(torque=np.array([r[0] for r in rows]) * max_torque, pinion_speed=speed,
                      revolutions=share / share.sum() * hours * speed * 60.0,
                      deflection=table, grade="MQ", miner_rule="modified",
                      name="illustrative axle spectrum (not a measured drive cycle)",

@@ -25,6 +25,7 @@ from contact.study.run import StudyRun, study_run
 from friction.operating import OperatingConditions
 from geometry.case import Case
 from geometry.core.errors import InputError
+from geometry.core.renamed import renamed_keywords
 from geometry.core.validation import real_array
 
 __all__ = ["DEFAULT_TORQUE", "study_inputs", "sweep"]
@@ -108,6 +109,7 @@ def study_inputs(
                        deviations=devs, root_stress=root_stress)
 
 
+@renamed_keywords(speed="pinion_speed")
 def sweep(
     case: Case | str | os.PathLike[str] | None = None,
     *,
@@ -117,7 +119,7 @@ def sweep(
     delta_Sigma: Any = None,
     deviation_scale: Any = None,
     torque: Any = None,
-    speed: Any = None,
+    pinion_speed: Any = None,
     run: StudyRun | None = None,
     **legacy: Any,
 ) -> xr.Dataset:
@@ -138,8 +140,9 @@ def sweep(
         Factors on the case's ``[deviations]`` (0 theoretical, 1 as measured).
     torque : float or sequence — [N·m], optional
         Pinion torques (default :data:`DEFAULT_TORQUE`).
-    speed : float or sequence — [rpm], optional
-        Pinion speeds: adds efficiency and power loss (default none).
+    pinion_speed : float or sequence — [rpm], optional
+        Pinion speeds (the result's ``speed`` dimension; old name ``speed``, deprecated):
+        adds efficiency and power loss (default none).
     run : contact.study.StudyRun, optional
         The LTCA options, flank and efficiency conditions of every point, the output file
         (streamed, resumable) and where the points run (default a LocalCluster of one
@@ -178,7 +181,7 @@ def sweep(
     if not axes:
         raise InputError("sweep: give at least one of delta_E, delta_P, delta_G, "
                          "delta_Sigma, deviation_scale")
-    shared = study_inputs(case, torque, speed, operating=run.operating, options=run.options,
+    shared = study_inputs(case, torque, pinion_speed, operating=run.operating, options=run.options,
                           flank=run.flank, root_stress=run.root_stress)
     names = list(axes)
     points = [dict(zip(names, map(float, combo), strict=True))

@@ -27,6 +27,7 @@ from contact.study.points import POINT_INPUTS
 from contact.study.run import StudyRun, study_run
 from geometry.case import Case
 from geometry.core.errors import InputError
+from geometry.core.renamed import renamed_keywords
 
 __all__ = ["DISTRIBUTIONS", "METHODS", "draw_points", "draw_values", "parse_distribution",
            "sample", "sensitivity"]
@@ -154,6 +155,7 @@ def draw_points(distributions: Mapping[str, Any], n: int, *, method: str = "sobo
     return out
 
 
+@renamed_keywords(speed="pinion_speed")
 def sample(
     case: Case | str | os.PathLike[str] | None,
     distributions: Mapping[str, Any],
@@ -162,7 +164,7 @@ def sample(
     method: str = "sobol",
     seed: int | None = None,
     torque: Any = None,
-    speed: Any = None,
+    pinion_speed: Any = None,
     run: StudyRun | None = None,
     **legacy: Any,
 ) -> xr.Dataset:
@@ -182,8 +184,8 @@ def sample(
         Seed of the draws (a fixed seed makes the study reproducible).
     torque : float or sequence — [N·m], optional
         Pinion torques, as :func:`contact.study.sweep`.
-    speed : float or sequence — [rpm], optional
-        Pinion speeds (adds efficiency and power loss), as :func:`contact.study.sweep`.
+    pinion_speed : float or sequence — [rpm], optional
+        Pinion speeds (old name ``speed``, deprecated), as :func:`contact.study.sweep`.
     run : contact.study.StudyRun, optional
         Where and how the points run, as :func:`contact.study.sweep`.
     **legacy
@@ -203,7 +205,7 @@ def sample(
     """
     run = study_run(run, legacy, "sample")
     draws = draw_points(distributions, n, method=method, seed=seed)
-    shared = study_inputs(case, torque, speed, operating=run.operating, options=run.options,
+    shared = study_inputs(case, torque, pinion_speed, operating=run.operating, options=run.options,
                           flank=run.flank, root_stress=run.root_stress)
     names = list(draws)
     points = [{k: float(draws[k][i]) for k in names} for i in range(int(n))]

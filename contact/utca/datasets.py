@@ -47,6 +47,7 @@ from geometry import __version__
 from geometry.core.conventions import binary_flag
 from geometry.core.conventions import data_var as _var
 from geometry.core.errors import InputError
+from geometry.core.renamed import renamed_keywords
 from geometry.core.validation import integer, one_of, positive
 
 if TYPE_CHECKING:
@@ -100,8 +101,9 @@ class UnloadedCycle:
     method: str = "second_order"
 
 
+@renamed_keywords(n_roll="rolls_per_cycle")
 def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
-                 flank: str | None = None, n_roll: int = 30, pairs=(-1, 0, 1),
+                 flank: str | None = None, rolls_per_cycle: int = 30, pairs=(-1, 0, 1),
                  separation: float = DEFAULT_SEPARATION, grid: dict | None = None,
                  method: str = "second_order",
                  n_point: int = 41,
@@ -116,9 +118,9 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
         UTCA is recomputed in the misaligned frame.
     flank : str, optional
         ``"drive"`` (default), ``"coast"``, or a pinion flank name.
-    n_roll : int
+    rolls_per_cycle : int
         Roll positions over one mesh cycle (≥ 4), from the transition M1 (uniform,
-        the end point M2 = M1 + pitch excluded).
+        the end point M2 = M1 + pitch excluded); old name ``n_roll``, deprecated.
     pairs : sequence of int
         Tooth-pair offsets; pair k is the pair that comes into mesh k mesh cycles after
         the reference pair 0 (its contact curve at roll r is Q = r − k·pitch).
@@ -158,18 +160,18 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
     the contact curves at M1 and M2 and by LPP and RPP (:func:`unloaded_cycle`,
     :func:`utca_dataset`).
     """
-    _check_cycle_options(n_roll, pairs, method, n_point)
+    _check_cycle_options(rolls_per_cycle, pairs, method, n_point)
     separation = positive("separation", separation, "mm")
     eo = easeoff if easeoff is not None else ease_off(case, flank=flank,
                                                       misalignment=misalignment, grid=grid)
-    cycle = unloaded_cycle(eo, n_roll=n_roll, pairs=pairs, method=method, n_point=n_point)
+    cycle = unloaded_cycle(eo, n_roll=rolls_per_cycle, pairs=pairs, method=method, n_point=n_point)
     ds = utca_dataset(eo, cycle, case=case, separation=separation, misalignment=misalignment)
     return easeoff_dataset(eo, case, misalignment=misalignment), ds
 
 
 def _check_cycle_options(n_roll, pairs, method, n_point) -> tuple[int, ...]:
     """The options of :func:`unloaded_cycle` checked; the pairs as a tuple of int."""
-    integer("n_roll", n_roll, low=4)
+    integer("rolls_per_cycle", n_roll, low=4)
     pairs = tuple(integer("pairs", k) for k in pairs)
     if not pairs or len(set(pairs)) != len(pairs) or 0 not in pairs:
         raise InputError(f"pairs: must be distinct integers including 0, got {pairs!r}")

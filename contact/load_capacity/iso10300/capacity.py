@@ -43,7 +43,7 @@ def _long_life_safety(case, torque: Any, speed: float,
     table = case.extra.get("rating") if rating is None else rating
     if isinstance(table, Mapping):  # (else: the rating's own error, naming [rating])
         table = {k: v for k, v in table.items() if k != "load_cycles"}
-    ds = iso10300_rating(case, torque=np.atleast_1d(torque), speed=speed, rating=table)
+    ds = iso10300_rating(case, torque=np.atleast_1d(torque), pinion_speed=speed, rating=table)
     s_h = ds["S_H"] / ds["S_Hmin"]
     s_f = ds["S_F"] / ds["S_Fmin"]
     return np.minimum(s_h.min("member"), s_f.min("member")).values

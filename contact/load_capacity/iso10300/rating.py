@@ -33,6 +33,7 @@ from contact.load_capacity.iso10300.materials import RatingMaterial, rating_mate
 from contact.load_capacity.iso10300.virtual_gears import virtual_gears
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
+from geometry.core.renamed import renamed_keywords
 from geometry.core.validation import positive, real_array
 from geometry.core.version import __version__
 
@@ -551,7 +552,8 @@ def _oil_nu40(lubricant: str) -> float:
                          f"at 40 degC ({exc}); give nu40 [mm2/s] in [2, 5000]") from None
 
 
-def iso10300_rating(case, torque: Any = None, speed: float | None = None,
+@renamed_keywords(speed="pinion_speed")
+def iso10300_rating(case, torque: Any = None, pinion_speed: float | None = None,
                     rating: RatingInputs | Mapping[str, Any] | None = None) -> xr.Dataset:
     """ISO 10300 Method B1 load capacity rating of a case's pair.
 
@@ -563,8 +565,9 @@ def iso10300_rating(case, torque: Any = None, speed: float | None = None,
         table (docs/rating.md).
     torque : array_like, shape (n,) — [N·m], optional
         Pinion torques; default the case's ``[operating]`` torques.
-    speed : float — [rpm], optional
-        Pinion speed; default the case's ``[operating] pinion_speed`` (> 0).
+    pinion_speed : float — [rpm], optional
+        Pinion speed; default the case's ``[operating] pinion_speed`` (> 0; old name
+        ``speed``, deprecated).
     rating : RatingInputs or mapping, optional
         Replaces the case's ``[rating]`` table.
 
@@ -586,7 +589,7 @@ def iso10300_rating(case, torque: Any = None, speed: float | None = None,
     inputs = case_rating_inputs(case, rating)
     data, _ = case_gear_data(case)
     torque = case.operating.torque if torque is None else torque
-    speed = case.operating.pinion_speed if speed is None else speed
+    speed = case.operating.pinion_speed if pinion_speed is None else pinion_speed
     _check_bounds(torque, speed)
     members = tuple(rating_material(case.member(mm).material, inputs.quality_grade)
                     for mm in MEMBERS)
