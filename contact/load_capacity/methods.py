@@ -22,15 +22,19 @@ outside the toolkit): docs/extending.md, "A load-capacity rating method".
 from __future__ import annotations
 
 import logging
+import os
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import xarray as xr
 
 from geometry.core.errors import InputError, ModelUnavailableError, PluginError
 from geometry.core.renamed import renamed_keywords
+
+if TYPE_CHECKING:
+    from geometry.case import Case
 
 __all__ = ["DEFAULT_METHOD", "METHODS", "RatingMethod", "available_methods",
            "available_rating_methods", "rate", "rate_load_capacity", "register_method",
@@ -203,8 +207,9 @@ def _method(name: str) -> RatingMethod:
 
 
 @renamed_keywords(speed="pinion_speed")
-def rate(case: Any, torque: Any = None, pinion_speed: float | None = None, *,
-         method: str = DEFAULT_METHOD, flank: str | None = None,
+def rate(case: Case | str | os.PathLike[str] | None, torque: Any = None,
+         pinion_speed: float | None = None, *, method: str = DEFAULT_METHOD,
+         flank: str | None = None,
          analysis: xr.DataTree | Mapping[str, xr.Dataset] | None = None,
          **options: Any) -> xr.Dataset:
     """Rate a gear pair's load capacity by a registered method: the ``/rating`` dataset.

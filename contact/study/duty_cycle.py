@@ -25,6 +25,7 @@ import hashlib
 import json
 import logging
 import math
+import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,6 +34,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from contact.catalogue import resolve_case
 from contact.load_capacity.durability import (
     cumulative_damage,
     life_at_first_failure,
@@ -564,16 +566,17 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
     return out
 
 
-def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
-                   root_stress: Any = False) -> xr.Dataset:
+def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
+                   run: StudyRun | None = None, *, root_stress: Any = False) -> xr.Dataset:
     """Analyse every bin of a duty cycle and its damage, life and cycle efficiency.
 
     Parameters
     ----------
-    case : geometry.case.Case
-        The gear set (its ``misalignment`` is the assembly misalignment).
+    case : Case, path, bundled name or None (the default case)
+        The gear set (its ``misalignment`` is the assembly misalignment;
+        :func:`contact.resolve_case`).
     duty : DutyCycle
-        Bins (torque [N·m], speed [rpm], revolutions, temperature [degC]), deflection
+        Bins (torque [N·m], pinion speed [rpm], revolutions, temperature [degC]), deflection
         table, grade and Miner's rule.
     run : contact.study.StudyRun, optional
         LTCA options, flank, output (streaming to ``OUTPUT.parts/`` and resume; a chunk
@@ -611,10 +614,10 @@ def run_duty_cycle(case: Case, duty: DutyCycle, run: StudyRun | None = None, *,
     Notes
     -----
     Damage by Miner's rule on the ISO 6336-2/-3 S–N curves of the members' material
-    (:mod:`contact.load_capacity.durability`), one load cycle per tooth mesh; local stresses from
-    the
-    LTCA (peak Hertz pressure of the contact grid, peak tensile fillet stress).
+    (:mod:`contact.load_capacity.durability`), one load cycle per tooth mesh; local stresses
+    from the LTCA (peak Hertz pressure of the contact grid, peak tensile fillet stress).
     """
+    case = resolve_case(case)
     if not isinstance(duty, DutyCycle):
         raise InputError(f"duty: must be a DutyCycle, got {type(duty).__name__}")
     run = run or StudyRun()

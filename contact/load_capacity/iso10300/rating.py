@@ -21,8 +21,9 @@ import dataclasses
 import json
 import logging
 import math
+import os
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import xarray as xr
@@ -36,6 +37,9 @@ from geometry.core.errors import InputError
 from geometry.core.renamed import renamed_keywords
 from geometry.core.validation import positive, real_array
 from geometry.core.version import __version__
+
+if TYPE_CHECKING:
+    from geometry.case import Case
 
 __all__ = [
     "LINES",
@@ -553,7 +557,8 @@ def _oil_nu40(lubricant: str) -> float:
 
 
 @renamed_keywords(speed="pinion_speed")
-def iso10300_rating(case, torque: Any = None, pinion_speed: float | None = None,
+def iso10300_rating(case: Case | str | os.PathLike[str] | None, torque: Any = None,
+                    pinion_speed: float | None = None,
                     rating: RatingInputs | Mapping[str, Any] | None = None) -> xr.Dataset:
     """ISO 10300 Method B1 load capacity rating of a case's pair.
 
