@@ -86,7 +86,7 @@ def test_provenance_table_is_consistent_with_the_basic_file(name):
     case = load_case(ROOT / "cases" / f"{name}.toml")
     table = case.extra["optimize"]
     assert table["feasible"] is True
-    basic = ROOT / table["basic_design"]
+    basic = ROOT / "cases" / table["basic_design"]
     assert basic.name == f"{name}.toml"
     with basic.open("rb") as f:
         bounds = tomllib.load(f)["optimize"]["variables"]
@@ -111,7 +111,7 @@ def test_case_is_its_basic_design_at_the_recorded_optimum(name):
     table = case.extra["optimize"]
     names = list(table["variables"])
     values = [table["variables"][n]["result"] for n in names]
-    basic = load_basic(ROOT / table["basic_design"])
+    basic = load_basic(ROOT / "cases" / table["basic_design"])
     start = dataclasses.replace(synthesize(basic)[0], name=case.name)
     again = case_at(start, "concave", names, values, basic=basic)
     a, b = again.pinion.concave, case.pinion.concave

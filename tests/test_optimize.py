@@ -260,3 +260,15 @@ def test_start_values_replace_the_cases_and_are_checked(monkeypatch):
     with pytest.raises(InputError, match="start value 50 um lies outside"):
         optimize(_case(), [DesignVariable("tip_relief", 0.0, 40.0)], _problem(),
                  scheduler="synchronous", start={"tip_relief": 50.0})
+
+
+def test_an_optimised_case_names_its_basic_file_and_log_relative_to_itself(tmp_path):
+    """``ltca optimize`` records ``basic_design`` and ``log_file`` relative to the case file
+    it writes, as the bundled cases do (tests/test_docs_site.py checks those resolve beside
+    the installed case): the case and its inputs can move together."""
+    from contact.commands.optimize import _shown
+
+    out = tmp_path / "cases" / "mine.toml"
+    assert _shown(tmp_path / "cases" / "optimize" / "mine.nc", out) == "optimize/mine.nc"
+    assert _shown(tmp_path / "cases" / "basic" / "mine.toml", out) == "basic/mine.toml"
+    assert _shown(tmp_path / "elsewhere.toml", out) == "../elsewhere.toml"

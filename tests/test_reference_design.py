@@ -118,7 +118,7 @@ def test_case_is_its_basic_design_at_the_recorded_optimum():
 
     case = _case()
     table = case.extra["optimize"]
-    assert table["basic_design"] == "cases/basic/kolivand2009_fm_11x41_reference.toml"
+    assert table["basic_design"] == "basic/kolivand2009_fm_11x41_reference.toml"  # beside the case
     names = list(table["variables"])
     values = [table["variables"][n]["result"] for n in names]
     basic = load_basic(BASIC)

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import tomllib
 from pathlib import Path
 
@@ -112,12 +113,14 @@ def _start(arg: str | None):
     return resolve_case(arg), None
 
 
-def _shown(path) -> str:
-    """A path as the provenance records it: relative to the working directory when inside
-    it (a case written in a repository names its inputs portably), else absolute."""
+def _shown(path, case_file) -> str:
+    """A path as the provenance records it: relative to the directory of the case file
+    that records it (``case_file``), as the bundled cases name their basic file and log
+    (a case and its inputs move together, installed or copied), else absolute (another
+    drive)."""
     p = Path(path).resolve()
     try:
-        return p.relative_to(Path.cwd().resolve()).as_posix()
+        return Path(os.path.relpath(p, Path(case_file).resolve().parent)).as_posix()
     except ValueError:
         return str(p)
 
@@ -205,8 +208,9 @@ def run_optimize(args: argparse.Namespace) -> int:
     rows.append(("objective", "1", f"{s.objective:.5g}", f"{b.objective:.5g}"))
     print(tabulate(rows, headers=["worst over misalignments, per torque", "unit", "start",
                                   "result"], tablefmt="github", disable_numparse=True))
-    provenance = {"source_file": _shown(args.case) if args.case and Path(args.case).is_file()
-                  else (args.case or case.name), "log_file": _shown(log_path)}
+    provenance = {"source_file": _shown(args.case, out) if args.case
+                  and Path(args.case).is_file() else (args.case or case.name),
+                  "log_file": _shown(log_path, out)}
     if basic is not None:
         provenance["basic_design"] = provenance.pop("source_file")
     new = optimized_case(result, provenance=provenance, name=args.name)
