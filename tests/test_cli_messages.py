@@ -241,7 +241,7 @@ def test_vh_check_grid_centres_on_the_case_mounting(monkeypatch):
     dE = sorted({p["delta_E"] for p in seen["points"]})
     dP = sorted({p["delta_P"] for p in seen["points"]})
     assert np.mean(dE) == pytest.approx(-0.15) and np.mean(dP) == pytest.approx(0.12)
-    assert _or_dash(float("nan")) == "–"  # the nominal row has no target
+    assert _or_dash(float("nan")) == "-"  # the nominal row has no target
 
 
 # --- 5. Ctrl-C on a Dask study ---------------------------------------------------------

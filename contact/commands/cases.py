@@ -24,7 +24,7 @@ def register(sub) -> None:
 def case_line(case, default: bool = False) -> tuple[str, ...]:
     """The row of one case: name, method/processes, z1 x z2, torques, misalignment, source."""
     mis = case.misalignment.labelled()
-    errs = ", ".join(f"Δ{k[6:-3]} {v:+g}" for k, v in mis.items() if v) or "aligned"
+    errs = ", ".join(f"d{k[6:-3]} {v:+g}" for k, v in mis.items() if v) or "aligned"
     source = case.source.split(" (")[0].split(". ")[0]
     if len(source) > 80:
         source = source[:77] + "..."
@@ -44,5 +44,5 @@ def run(args: argparse.Namespace) -> int:
             for name in bundled_cases()]
     print(tabulate(rows, headers=("", "case", "method", "teeth", "T_p [N m]",
                                   "misalignment [mm, deg]", "source"), tablefmt="simple"))
-    print("* the default case (CASE omitted); ΔΣ in deg")
+    print("* the default case (CASE omitted); dSigma in deg")
     return 0

@@ -38,7 +38,7 @@ def register(sub) -> None:
     p.add_argument("--problems", metavar="DIR",
                    help="run on a problem set written by `ltca export-problems -o DIR` "
                    "(with --with-standard also the standard set)")
-    p.add_argument("--quick", action="store_true", help="a small problem set (N ≤ 250)")
+    p.add_argument("--quick", action="store_true", help="a small problem set (N <= 250)")
     torque_option(p, default="with CASE: the case's [operating] torques")
     misalignment_options(p, default="with CASE: the case's [operating] values")
     rolls_per_cycle_option(p, default=20)
@@ -113,8 +113,8 @@ def run(args: argparse.Namespace) -> int:
     if missing:
         print(f"not installed here: {missing}")
     print(
-        f"hypoid-ltca {__version__}: {len(solvers)} solvers × {len(problems)} problems "
-        f"(N = {min(p.problem.size for p in problems)}…{max(p.problem.size for p in problems)}), "
+        f"hypoid-ltca {__version__}: {len(solvers)} solvers x {len(problems)} problems "
+        f"(N = {min(p.problem.size for p in problems)}...{max(p.problem.size for p in problems)}), "
         f"accuracy {args.accuracy}, polish {'on' if not args.no_polish else 'off'}"
     )
     results = compare_solvers(

@@ -184,7 +184,7 @@ def register(sub) -> None:
                    help="directory to write the problems and manifest.json into")
     torque_option(p, default="50 250 500, the seed's Table 3.1")
     misalignment_options(p, default="of the misaligned set: the seed's Table 3.1, "
-                         "ΔE -0.15, ΔP +0.12")
+                         "dE -0.15, dP +0.12")
     rolls_per_cycle_option(p, default=20)
     progress_option(p)
     p.set_defaults(func=run)
@@ -211,5 +211,5 @@ def run(args: argparse.Namespace) -> int:
 
     entries = read_manifest(path.parent)["problems"]
     sizes = [e["n"] for e in entries]
-    print(f"wrote {len(entries)} problems (N = {min(sizes)}…{max(sizes)}) and {path}")
+    print(f"wrote {len(entries)} problems (N = {min(sizes)}...{max(sizes)}) and {path}")
     return 0

@@ -72,12 +72,12 @@ FLANK_CHOICES = ("drive", "coast", "concave", "convex")
 
 #: ``--dE`` … → (Misalignment field, unit typed, factor to the field's unit, meaning)
 MISALIGNMENT_OPTIONS = {
-    "dE": ("delta_E", "mm", 1.0, "offset change ΔE (V), positive increases the offset"),
-    "dP": ("delta_P", "mm", 1.0, "pinion axial displacement ΔP (H), positive away from the "
+    "dE": ("delta_E", "mm", 1.0, "offset change dE (V), positive increases the offset"),
+    "dP": ("delta_P", "mm", 1.0, "pinion axial displacement dP (H), positive away from the "
            "mesh"),
-    "dG": ("delta_G", "mm", 1.0, "gear axial displacement ΔG, positive away from the mesh"),
+    "dG": ("delta_G", "mm", 1.0, "gear axial displacement dG, positive away from the mesh"),
     "dSigma": ("delta_Sigma", "deg", math.pi / 180.0,
-               "shaft-angle change ΔΣ, positive increases the shaft angle"),
+               "shaft-angle change dSigma, positive increases the shaft angle"),
 }
 
 
@@ -239,7 +239,7 @@ def misalignment_options(p: argparse.ArgumentParser, *, kind: str = "value",
     extra : dict, optional
         Option → help text replacing the generic one (e.g. ``vh-check``'s V, H grids).
     """
-    g = p.add_argument_group("misalignment (ΔE, ΔP, ΔG in mm; ΔΣ in deg, as in case files)")
+    g = p.add_argument_group("misalignment (dE, dP, dG in mm; dSigma in deg, as in case files)")
     metavar = {"value": None, "range": "RANGE", "distribution": "DIST"}[kind]
     for opt, (_field, unit, _factor, meaning) in MISALIGNMENT_OPTIONS.items():
         if extra is not None and opt not in extra:

@@ -51,8 +51,8 @@ def register(sub) -> None:
         "prints a summary, writes one netCDF (/geometry, /easeoff, /utca, /ltca, /friction) "
         "named after the case and plots. The torques, misalignment and efficiency conditions "
         "are the case's [operating] table unless given here; the default case's are the "
-        "seed's Table 3.1 conditions (pinion torque 50/250/500 N m, ΔE = −0.15 mm, "
-        "ΔP = +0.12 mm (the text extraction lost the seed's signs; this reading is argued "
+        "seed's Table 3.1 conditions (pinion torque 50/250/500 N m, dE = -0.15 mm, "
+        "dP = +0.12 mm (the text extraction lost the seed's signs; this reading is argued "
         "in docs/cases.md); 1500 rpm, 75W90 at 90 degC, Rq 0.8 um).",
     )
     case_argument(p)
@@ -235,8 +235,8 @@ def run(args: argparse.Namespace) -> int:
                 else None)
     lt = tree["ltca"].to_dataset()
     print(
-        f"case {case.name}: ΔE {mis.delta_E:g} mm, ΔP {mis.delta_P:g} mm, "
-        f"ΔG {mis.delta_G:g} mm, ΔΣ {math.degrees(mis.delta_Sigma):g} deg; "
+        f"case {case.name}: dE {mis.delta_E:g} mm, dP {mis.delta_P:g} mm, "
+        f"dG {mis.delta_G:g} mm, dSigma {math.degrees(mis.delta_Sigma):g} deg; "
         f"solver {lt.attrs['solver']}"
         + (f"; tooth compliance {opts.compliance}" if opts.compliance != "shell" else "")
     )
@@ -634,11 +634,21 @@ LINE_WIDTH = 100
 #: per medium; the console writes the files' UDUNITS spelling, in ASCII)
 CONSOLE_UNITS = {"N·m": "N m", "µm": "um", "µrad": "urad", "°C": "degC"}
 
+#: the page's symbols → the console's, in this order (docs/nomenclature.md, Units): the
+#: misalignments as the CLI flags name them, the Greek letters as the files' variables do
+#: (``sigma_Hlim``, ``lambda_GF``), the page's punctuation in ASCII
+CONSOLE_SYMBOLS = {"ΔΣ": "dSigma", "Δ": "d", "Σ": "Sigma", "σ": "sigma", "λ": "lambda",
+                   "μ": "mu", "θ": "theta", "ε": "eps", "β": "beta", "α": "alpha",
+                   "ρ": "rho", "ν": "nu", "η": "eta", "π": "pi", "–": "-", "−": "-",
+                   "—": "-", "…": "...", "≥": ">=", "≤": "<=", "×": "x", "±": "+/-",
+                   "≈": "~", "→": "->", "²": "2", "³": "3", "’": "'"}
+
 
 def console_text(text: str) -> str:
-    """``text`` (a finding, a warning shared with the HTML report) with its units spelt as
-    the console spells them (:data:`CONSOLE_UNITS`)."""
-    for page, console in CONSOLE_UNITS.items():
+    """``text`` (a finding, a warning shared with the HTML report) with its units and
+    symbols spelt as the console spells them (:data:`CONSOLE_UNITS`,
+    :data:`CONSOLE_SYMBOLS`): ASCII."""
+    for page, console in (*CONSOLE_UNITS.items(), *CONSOLE_SYMBOLS.items()):
         text = text.replace(page, console)
     return text
 

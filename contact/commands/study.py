@@ -92,7 +92,7 @@ def values_line(option: str, text: str, values: np.ndarray, unit: str) -> str:
     """The line a study prints for one swept input before it starts: its values, and —
     for a comma list of three whose last is a whole number >= 2, such as ``-0.2,0.2,5`` —
     that a comma list is values and a range ``START:STOP:N``."""
-    shown = ", ".join(f"{x:g}" for x in values[:12]) + (" …" if values.size > 12 else "")
+    shown = ", ".join(f"{x:g}" for x in values[:12]) + (" ..." if values.size > 12 else "")
     line = f"  {option} [{unit}]: {values.size} value{'s' * (values.size != 1)}: {shown}"
     parts = text.split(",")
     if ":" not in text and len(parts) == 3:
@@ -177,8 +177,8 @@ def register(sub) -> None:
     v = sub.add_parser(
         "vh-check", help="V-H check: offset (V) and pinion mounting (H) moving the pattern "
         "to toe and heel",
-        description="Maps the loaded pattern centre over a V (= ΔE) x H (= ΔP) grid about the "
-        "case's mounting (its [operating] ΔE, ΔP) on Dask and solves for the displacements "
+        description="Maps the loaded pattern centre over a V (= dE) x H (= dP) grid about the "
+        "case's mounting (its [operating] dE, dP) on Dask and solves for the displacements "
         "that put it at the toe and heel targets at the nominal pattern's height; each "
         "solution is checked by a single analysis.")
     _common(v, many_torques=False)
@@ -191,8 +191,8 @@ def register(sub) -> None:
     v.add_argument("--profile", type=float, default=None,
                    help="height the centre keeps, depth fraction (default the nominal's)")
     misalignment_options(v, kind="range", extra={
-        "dE": "V grid, offset change ΔE [mm] (default the case's ΔE ± 0.4 mm, 9 values)",
-        "dP": "H grid, pinion axial ΔP [mm] (default the case's ΔP ± 0.3 mm, 7 values)"})
+        "dE": "V grid, offset change dE [mm] (default the case's dE +/- 0.4 mm, 9 values)",
+        "dP": "H grid, pinion axial dP [mm] (default the case's dP +/- 0.3 mm, 7 values)"})
     v.set_defaults(func=vh_check_command, study="vh_check")
 
 
@@ -432,8 +432,8 @@ def tolerance_command(args: argparse.Namespace) -> int:
 
 
 def _or_dash(x: float) -> str:
-    """A target to three decimals, "–" where there is none (the nominal row)."""
-    return f"{x:.3f}" if math.isfinite(x) else "–"
+    """A target to three decimals, "-" where there is none (the nominal row)."""
+    return f"{x:.3f}" if math.isfinite(x) else "-"
 
 
 def vh_check_command(args: argparse.Namespace) -> int:
@@ -452,8 +452,8 @@ def vh_check_command(args: argparse.Namespace) -> int:
                              else VH_DEFAULT_TORQUE)
     nv = len(kw.get("delta_E", VH_DEFAULT_GRID[0]))
     nh = len(kw.get("delta_P", VH_DEFAULT_GRID[1]))
-    print(f"V-H check of {case.name} at {torque:g} N m about its mounting ΔE "
-          f"{case.misalignment.delta_E:g} mm, ΔP {case.misalignment.delta_P:g} mm: mapping "
+    print(f"V-H check of {case.name} at {torque:g} N m about its mounting dE "
+          f"{case.misalignment.delta_E:g} mm, dP {case.misalignment.delta_P:g} mm: mapping "
           f"the pattern centre over {nv} x {nh} V-H points ({nv * nh} analyses), then 3 "
           "single analyses", flush=True)
     for option, key, default, shift in (
