@@ -111,6 +111,13 @@ class ComplianceModel:
         assembler's contract is the module docstring's.
     description : str
         What the model is, for listings.
+
+    Notes
+    -----
+    A model supplies the members' tooth compliance matrices C_p, C_g of seed Eq. (3.11)
+    (each entry the deflection at segment i under a unit load at segment j) that seed
+    Eq. (3.12) sums with the Hertzian compliance; the bundled ``"shell"`` model is the seed's
+    §3.2.
     """
 
     name: str

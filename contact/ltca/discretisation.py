@@ -102,6 +102,12 @@ class SegmentQuadratic:
     ----------
     fractions : array (2S + 1,) — [1]
         The sample fractions along the curve (:data:`contact.utca.CURVE_SPACINGS`).
+
+    Notes
+    -----
+    Source: the contact curves divided into N_c segments, each carrying its own load, are the
+    seed's (§3.2, Figure 3.3, Eq. 3.11). The mean of the three-point Lagrange quadratic over
+    the whole segment with τ_m = 1/2 is Simpson's rule (f₀ + 4 f_m + f₁)/6.
     """
 
     def __init__(self, fractions: np.ndarray):

@@ -370,7 +370,10 @@ def gear_flank_under(fields, kin, psi: np.ndarray, points: np.ndarray, u: np.nda
     frame (turned back by ψ); the splines' own derivatives. A point beyond the grid (a
     pinion edge past the gear flank's computed part, far from contact) gets the nearest
     grid edge's place. Checked in tests/test_plastic_edges.py: the force along the normal
-    at g through the pinion edge point balances the gear torque with the others.
+    at g through the pinion edge point balances the gear torque with the others. These
+    are the normal equations of min ‖x(u, v) − p‖² over the flank's parameters, a
+    nonlinear least-squares problem (Gauss–Newton: Nocedal & Wright, Numerical
+    Optimization, 2nd ed., Springer 2006, ch. 10).
     """
     f = fields
     p = rotate_about_axis(kin.gear_axis, -psi, points - kin.gear_origin) \

@@ -128,6 +128,15 @@ class CompliancePool:
         Largest relative asymmetry ‖C − Cᵀ‖_F/‖C‖_F of the shell blocks (or the members'
         FE matrices) assembled (they are symmetrised; above
         :data:`contact.errors.ASYMMETRY_LIMIT` shell blocks are refused).
+
+    Notes
+    -----
+    Source: the members' tooth compliance matrices C_p, C_g of seed Eq. (3.11), the
+    structural part of the total compliance C = C_p + C_g + C_h of seed Eq. (3.12): the
+    shell model of §3.2 (Eq. 3.1–3.10) on its foundation, or the FE influence coefficients
+    (docs/fe.md); the Hertzian C_h (Weber's closed form, seed ref. [3.8]) is added at the
+    loads (:mod:`contact.ltca.weber`). A matrix that comes out slightly non-symmetric is
+    symmetrised (Maxwell–Betti reciprocity) and its asymmetry reported.
     """
 
     def __init__(self, case, seg: Segments, options: LTCAOptions,

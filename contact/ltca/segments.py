@@ -61,6 +61,13 @@ class Segments(SegmentFields):
         The first roll with the same segments (rolls whole mesh cycles apart: their
         targets agree to 1e-12 pitch; they are computed once and their entries are
         identical).
+
+    Notes
+    -----
+    Source: seed §3.3 — the potential contact curves of all the tooth pairs that may share
+    the torque, divided into segments, each with its length, separation and the surface
+    curvatures of both members: the LTCA's input. The edge segments continue that line model
+    onto the flank boundary (:mod:`contact.ltca.edges`).
     """
 
     kind: np.ndarray

@@ -59,7 +59,15 @@ def edge_load_share(ltca: xr.Dataset) -> np.ndarray:
 class Certification(NamedTuple):
     """What :func:`certification` finds: ``status`` one of :data:`ANALYSIS_STATUS`,
     ``reason`` one sentence (empty for ``"ok"``), ``certified`` and ``rolls`` (NT,) the
-    certified and all roll positions per torque."""
+    certified and all roll positions per torque.
+
+    Notes
+    -----
+    A roll position is certified when its solution satisfies seed Eq. (3.12)–(3.14) —
+    compatibility with the slack Y, complementarity F·Y = 0 and the torque equilibrium
+    RᵀF = T — within the residual tolerances, computed by the toolkit (DESIGN.md, the loaded
+    contact problem).
+    """
 
     status: str
     reason: str

@@ -17,6 +17,14 @@ cumulative_damage    Σ over bins of n / N(σ) at every point
 peak_fillet_stress   the peak tensile fillet stress of a tooth mesh from ``root_stress``
 life_at_first_failure  life [h] and the index of the point first reaching damage 1
 pressure_envelopes   peak pressure of a tooth mesh on the gear grid, flank and edge apart
+
+References
+----------
+ISO 6336-6:2019, Calculation of load capacity of spur and helical gears — Part 6:
+Calculation of service life under variable load (the damage of a load spectrum by the
+Palmgren–Miner rule on the S–N curves of ISO 6336-2 and -3).
+A. Palmgren (1924). Die Lebensdauer von Kugellagern. Z. VDI 68, 339–341.
+M. A. Miner (1945). Cumulative damage in fatigue. J. Appl. Mech. 12, A159–A164.
 """
 
 from __future__ import annotations
@@ -104,6 +112,12 @@ def member_cycles(pinion_revolutions: np.ndarray, pinion_teeth: int, gear_teeth:
     ------
     InputError
         Negative revolutions or tooth numbers below 1.
+
+    Notes
+    -----
+    The load-cycle count of ISO 6336-2/-3 (N_L) and of a load spectrum's bins in
+    ISO 6336-6:2019: a tooth of a member meshing with one mate sees one load cycle per
+    revolution of its member, so n_gear = n_pinion z1/z2.
     """
     n = np.asarray(pinion_revolutions, float)
     if not np.all(np.isfinite(n)) or np.any(n < 0):
@@ -139,6 +153,14 @@ def cumulative_damage(stress: np.ndarray, cycles: np.ndarray,
     ------
     InputError
         Mismatched shapes, negative or non-finite stresses or cycles, unknown rule.
+
+    Notes
+    -----
+    D = Σ_b n_b / N(σ_b), the linear damage accumulation of Palmgren (1924) and Miner
+    (1945) as ISO 6336-6:2019 applies it to a load spectrum; N(σ) from the S–N curve of
+    ISO 6336-2 (contact) or -3 (bending) below the knee as the chosen variant has it
+    (:data:`contact.load_capacity.durability.sn_curve.MINER_RULES`: elementary, modified
+    after Haibach 1970, original).
     """
     s = np.asarray(stress, float)
     n = np.asarray(cycles, float)
@@ -172,6 +194,13 @@ def peak_fillet_stress(root_stress: np.ndarray) -> np.ndarray:
     ------
     InputError
         Wrong number of dimensions, or no finite stress at all.
+
+    Notes
+    -----
+    One load cycle per tooth mesh from 0 to the peak: the one-directional (pulsating)
+    tooth-root loading for which ISO 6336-3's bending strength σ_FE and its S–N curve hold
+    (the local approach: the stress of the FE model, docs/fe.md, in place of ISO's nominal
+    σ_F).
     """
     a = np.asarray(root_stress, float)
     if a.ndim != 4:
@@ -204,6 +233,12 @@ def life_at_first_failure(damage: np.ndarray, hours: float) -> tuple[float, tupl
     ------
     InputError
         Non-finite or negative damage, non-positive hours.
+
+    Notes
+    -----
+    Failure where the accumulated damage reaches D = 1 (Miner 1945); as D grows linearly
+    with the number of repetitions of the spectrum, the life is the spectrum's duration
+    over the largest damage (ISO 6336-6:2019's service life of a load spectrum).
     """
     d = np.asarray(damage, float)
     if d.size == 0 or not np.all(np.isfinite(d)) or np.any(d < 0):

@@ -35,6 +35,8 @@ E. Haibach (1970). Modifizierte lineare Schadensakkumulations-Hypothese zur
 Berücksichtigung des Dauerfestigkeitsabfalls mit fortschreitender Schädigung. LBF TM
 50/70, Darmstadt.
 M. A. Miner (1945). Cumulative damage in fatigue. J. Appl. Mech. 12, A159–A164.
+A. Palmgren (1924). Die Lebensdauer von Kugellagern. Z. VDI 68, 339–341.
+ISO 6336-6:2019 (service life under variable load: Palmgren–Miner on these curves).
 """
 
 from __future__ import annotations
