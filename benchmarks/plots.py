@@ -83,7 +83,7 @@ def _once(out: Path) -> dict:
     t0 = (time.perf_counter(), time.process_time())
     rows, _ = _draw(back, out)
     res["figures, one process"] = (time.perf_counter() - t0[0], time.process_time() - t0[1])
-    rendered, w, c = _timed(lambda: render_analysis(back, workers=2))
+    rendered, w, c = _timed(lambda: render_analysis(back, n_workers=2))
     res["figures, two processes (--plots)"] = (w, c)
     _, w, c = _timed(lambda: render_report(back, rendered))
     res["report HTML from the PNGs (--report)"] = (w, c)

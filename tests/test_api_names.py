@@ -24,6 +24,7 @@ CANONICAL = {
     "temperature": ("oil_temperature", "inlet_temperature", "theta_oil"),
     "rolls_per_cycle": ("n_roll", "n_rolls", "rolls"),
     "torque": ("pinion_torque", "T1"),
+    "n_workers": ("workers", "processes", "jobs"),
 }
 
 PACKAGES = ("contact", "geometry", "friction")
@@ -103,6 +104,7 @@ def test_renamed_keywords_on_a_dataclass_and_refusals_at_decoration():
     ("contact.sample", "speed", "pinion_speed"),
     ("contact.unloaded_tca", "n_roll", "rolls_per_cycle"),
     ("contact.DutyCycle", "speed", "pinion_speed"),
+    ("contact.plot_analysis", "workers", "n_workers"),
 ])
 def test_each_rename_keeps_its_old_keyword_for_one_release(function, old, new):
     """Each renamed public function declares its old keyword (the decorator's record)."""

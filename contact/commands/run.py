@@ -680,7 +680,7 @@ def write_figures(path: Path, plots: str | None, report: str | None,
     figures = []
     # two processes draw the figures (independent of each other): on two free cores the
     # drawing takes half the wall time (benchmarks/plots.py)
-    for rf in render_analysis(tree, workers=min(2, os.cpu_count() or 1), progress=progress):
+    for rf in render_analysis(tree, n_workers=min(2, os.cpu_count() or 1), progress=progress):
         if plots:
             target = Path(plots) / f"{prefix}{rf.name}.png"
             with atomic_path(target) as tmp:
@@ -699,7 +699,7 @@ def plot(args: argparse.Namespace) -> int:
     path = resolve_analysis_file(args.file)
     check_output_dir(args.plots)
     tree = read_netcdf(path, tree=True)
-    for p in plot_analysis(tree, args.plots, workers=min(2, os.cpu_count() or 1),
+    for p in plot_analysis(tree, args.plots, n_workers=min(2, os.cpu_count() or 1),
                            progress=not args.no_progress):
         print(f"wrote {p}")
     return 0

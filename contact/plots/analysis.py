@@ -58,6 +58,7 @@ from contact.plots.stress import root_stress_figure
 from contact.plots.style import DPI, png_bytes, save_png, torque_text
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
+from geometry.core.renamed import renamed_keywords
 
 __all__ = [
     "FigureSpec",
@@ -275,16 +276,18 @@ def _bar(total: int, progress: bool, desc: str = "figures"):
     return tqdm(total=total, desc=desc, unit="figure", leave=False)
 
 
-def render_analysis(tree: xr.DataTree, workers: int = 1, dpi: int = DPI,
+@renamed_keywords(workers="n_workers")
+def render_analysis(tree: xr.DataTree, n_workers: int = 1, dpi: int = DPI,
                     progress: bool = False) -> list[RenderedFigure]:
-    """Every figure of an analysis encoded as PNG, drawn by ``workers`` processes.
+    """Every figure of an analysis encoded as PNG, drawn by ``n_workers`` processes.
 
     Parameters
     ----------
     tree : xarray.DataTree
-    workers : int
-        Processes drawing at once (≥ 1; 1 draws here). The figures are independent, so
-        on a machine with that many free cores the wall time falls with them.
+    n_workers : int
+        Processes drawing at once (≥ 1; 1 draws here; old name ``workers``, deprecated).
+        The figures are independent, so on a machine with that many free cores the wall
+        time falls with them.
     dpi : int
     progress : bool
         A tqdm progress bar over the figures.
@@ -297,10 +300,11 @@ def render_analysis(tree: xr.DataTree, workers: int = 1, dpi: int = DPI,
     Raises
     ------
     InputError
-        If the tree lacks ``/easeoff`` or ``workers`` < 1.
+        If the tree lacks ``/easeoff`` or ``n_workers`` < 1.
     """
+    workers = n_workers
     if int(workers) < 1:
-        raise InputError(f"workers: must be >= 1, got {workers!r}")
+        raise InputError(f"n_workers: must be >= 1, got {workers!r}")
     specs = list(analysis_specs(tree))
     bar = _bar(len(specs), progress)
     try:
@@ -409,12 +413,13 @@ def figure_prefix(tree_or_ds: xr.DataTree | xr.Dataset, kind: str | None = None)
     return "_".join(p for p in parts if p) + "_"
 
 
+@renamed_keywords(workers="n_workers")
 def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
-                  workers: int = 1, progress: bool = False) -> list[Path]:
+                  n_workers: int = 1, progress: bool = False) -> list[Path]:
     """Write every figure of an analysis (:func:`analysis_figures`) as PNG into ``directory``
     (created if missing), each named ``<case>_T<torques>_<figure>.png``
     (:func:`figure_prefix`), and
-    return the paths; ``workers`` processes draw them (``progress``: a tqdm bar over the
+    return the paths; ``n_workers`` processes draw them (``progress``: a tqdm bar over the
     figures).
 
     Parameters
@@ -423,8 +428,9 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
         An analysis (:func:`contact.run_analysis`, or its file read back).
     directory : str or os.PathLike
         Where the PNG files go (created if missing).
-    workers : int
-        Processes drawing the figures (default 1: this process).
+    n_workers : int
+        Processes drawing the figures (default 1: this process; old name ``workers``,
+        deprecated; Dask's and :class:`contact.study.StudyRun`'s name).
     progress : bool
         A tqdm bar over the figures.
 
@@ -442,7 +448,7 @@ def plot_analysis(tree: xr.DataTree, directory: str | os.PathLike[str],
     d.mkdir(parents=True, exist_ok=True)
     out = []
     prefix = figure_prefix(tree)
-    for rf in render_analysis(tree, workers, progress=progress):
+    for rf in render_analysis(tree, n_workers, progress=progress):
         with atomic_path(d / f"{prefix}{rf.name}.png") as tmp:
             tmp.write_bytes(rf.png)
         out.append(d / f"{prefix}{rf.name}.png")
