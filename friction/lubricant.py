@@ -56,6 +56,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
 from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.renamed import renamed_keywords
 from geometry.core.toml_files import read_toml
 from geometry.core.validation import one_of, real, real_array, scalar_or_array
 
@@ -863,14 +864,16 @@ def lubricant_from_mapping(data: Mapping[str, Any], origin: str = "<mapping>") -
         raise InputError(f"{origin}: {exc}") from exc
 
 
-def load_lubricant(path_or_name: str | Path) -> Lubricant:
+@renamed_keywords(path_or_name="lubricant")
+def load_lubricant(lubricant: str | Path) -> Lubricant:
     """Load a lubricant by bundled name (e.g. ``"75W90"``) or from a TOML file path.
 
     Parameters
     ----------
-    path_or_name : str or Path
+    lubricant : str or Path
         A bundled name (case-insensitive; see :func:`available_lubricants`) or the path
-        of a TOML file with the schema of the module docstring.
+        of a TOML file with the schema of the module docstring (the ``lubricant`` of
+        :class:`friction.OperatingConditions`; old name ``path_or_name``, deprecated).
 
     Returns
     -------
@@ -892,15 +895,15 @@ def load_lubricant(path_or_name: str | Path) -> Lubricant:
     conductivity assumed — see the file's header).
     """
     bundled = {k.lower(): v for k, v in _bundled().items()}
-    key = str(path_or_name).lower()
-    if isinstance(path_or_name, str) and key in bundled:
+    key = str(lubricant).lower()
+    if isinstance(lubricant, str) and key in bundled:
         text = bundled[key].read_text(encoding="utf-8")
-        origin = f"bundled lubricant {path_or_name!r}"
+        origin = f"bundled lubricant {lubricant!r}"
     else:
-        path = Path(path_or_name)
+        path = Path(lubricant)
         if not path.is_file():
             raise ModelUnavailableError(
-                f"no lubricant named or at {str(path_or_name)!r}; bundled: {available_lubricants()}"
+                f"no lubricant named or at {str(lubricant)!r}; bundled: {available_lubricants()}"
             )
         # one reader for input files: a binary, non-UTF-8 or invalid file is refused in
         # one line naming it (geometry.core.toml_files.read_toml)

@@ -25,6 +25,7 @@ CANONICAL = {
     "rolls_per_cycle": ("n_roll", "n_rolls", "rolls"),
     "torque": ("pinion_torque", "T1"),
     "n_workers": ("workers", "processes", "jobs"),
+    "lubricant": ("path_or_name", "oil"),
 }
 
 PACKAGES = ("contact", "geometry", "friction")
@@ -105,6 +106,7 @@ def test_renamed_keywords_on_a_dataclass_and_refusals_at_decoration():
     ("contact.unloaded_tca", "n_roll", "rolls_per_cycle"),
     ("contact.DutyCycle", "speed", "pinion_speed"),
     ("contact.plot_analysis", "workers", "n_workers"),
+    ("friction.load_lubricant", "path_or_name", "lubricant"),
 ])
 def test_each_rename_keeps_its_old_keyword_for_one_release(function, old, new):
     """Each renamed public function declares its old keyword (the decorator's record)."""
