@@ -142,7 +142,7 @@ def test_flash_temperature_at_the_pinion_tip_by_hand():
     """At E (the pinion's tip) of the spur-like pair: Blok's rounded form with a Hertz line
     contact and the speeds written out here (0.2 %: Blok's 1.11 is 1.1113 rounded)."""
     rating = _rating()
-    iso = iso_flash_temperature_method(rating, oil_temperature=90.0, roughness=0.8)
+    iso = iso_flash_temperature_method(rating, temperature=90.0, roughness=0.8)
     g = _spur_pair()
     rb, ra = g["db"] / 2, g["da"] / 2
     rho1 = math.sqrt(ra[0] ** 2 - rb[0] ** 2)
@@ -184,15 +184,15 @@ def test_hypoid_sliding_and_the_pitch_point():
     there; so does the standard as written for a hypoid (no lengthwise sliding); the
     lengthwise variant adds the hypoid's v_g and heats it everywhere, most where it adds
     to the least profile sliding."""
-    bevel = iso_flash_temperature_method(_rating(), oil_temperature=90.0, roughness=0.8)
+    bevel = iso_flash_temperature_method(_rating(), temperature=90.0, roughness=0.8)
     pitch = bevel.attrs["pitch_point_mm"]
     at = int(np.argmin(abs(bevel["path"].values - pitch)))
     assert int(np.argmin(bevel["sliding_velocity"].values)) == at
-    standard = iso_flash_temperature_method(_rating(v_g=1.0), oil_temperature=90.0,
+    standard = iso_flash_temperature_method(_rating(v_g=1.0), temperature=90.0,
                                             roughness=0.8)
     xr.testing.assert_allclose(standard["flash_temperature"], bevel["flash_temperature"],
                                rtol=1e-14)
-    hypoid = iso_flash_temperature_method(_rating(v_g=1.0), oil_temperature=90.0,
+    hypoid = iso_flash_temperature_method(_rating(v_g=1.0), temperature=90.0,
                                           roughness=0.8, lengthwise_sliding=True)
     np.testing.assert_allclose(hypoid["sliding_velocity"],
                                np.hypot(bevel["sliding_velocity"], 1.0), rtol=1e-12)
@@ -206,10 +206,10 @@ def test_scuffing_temperature_has_the_base_oil_factor_alone():
     80 + 2.25 · 144 = 404 °C whatever its viscosity; the viscosity's η^−0.05 is a term of
     μ_m (test_friction_coefficient_by_hand), and 364 °C, its product into X_L at 90 °C,
     only one end of the spread."""
-    iso = iso_flash_temperature_method(_rating(), oil_temperature=90.0, roughness=0.8)
+    iso = iso_flash_temperature_method(_rating(), temperature=90.0, roughness=0.8)
     assert float(iso["scuffing_temperature"]) == pytest.approx(404.0, rel=1e-14)
     eta = float(viscosity(load_lubricant("75W90"), 90.0))
-    other = iso_flash_temperature_method(_rating(), oil_temperature=90.0, roughness=0.8,
+    other = iso_flash_temperature_method(_rating(), temperature=90.0, roughness=0.8,
                                          viscosity_in_scuffing_temperature=True)
     assert float(other["scuffing_temperature"]) == pytest.approx(
         80 + 2.25 * 144 * (1e3 * eta) ** -0.05, rel=1e-14)
@@ -220,13 +220,13 @@ def test_variants_and_the_spread_of_the_safety():
     variant over ``variant``, each labelled, and the least and largest S_B over the four
     combinations of μ_m's form and θ_S's viscosity term, computed one by one here."""
     rating = _rating(v_g=1.0, torque=(100.0, 300.0))
-    ds = iso_flash_temperature_variants(rating, oil_temperature=90.0, roughness=0.8)
+    ds = iso_flash_temperature_variants(rating, temperature=90.0, roughness=0.8)
     assert list(ds["variant"].values) == ["standard", "lengthwise_sliding"]
     assert list(ds["method"].values) == [METHOD_STANDARD, METHOD_LENGTHWISE]
     assert ds["scuffing_safety"].dims == ("variant", "torque")
     for k, lengthwise in enumerate((False, True)):
         combos = np.array([iso_flash_temperature_method(
-            rating, oil_temperature=90.0, roughness=0.8, lengthwise_sliding=lengthwise,
+            rating, temperature=90.0, roughness=0.8, lengthwise_sliding=lengthwise,
             friction_form=form, viscosity_in_scuffing_temperature=visc)[
             "scuffing_safety"].values for form in ("iso", "din") for visc in (False, True)])
         np.testing.assert_allclose(ds["scuffing_safety"][k], combos[0], rtol=1e-14)
@@ -243,13 +243,13 @@ def test_variants_and_the_spread_of_the_safety():
 
 
 def test_units_and_conditions():
-    iso = iso_flash_temperature_method(_rating(torque=(100.0, 300.0)), oil_temperature=90.0,
+    iso = iso_flash_temperature_method(_rating(torque=(100.0, 300.0)), temperature=90.0,
                                        roughness=0.8,
                                        conditions=ScuffingConditions(lubrication="spray"))
     for name, var in iso.data_vars.items():
         assert var.attrs["units"] and var.attrs["long_name"], name
     assert np.all(np.diff(iso["contact_temperature_max"].values) > 0)
-    dip = iso_flash_temperature_method(_rating(torque=(100.0, 300.0)), oil_temperature=90.0,
+    dip = iso_flash_temperature_method(_rating(torque=(100.0, 300.0)), temperature=90.0,
                                        roughness=0.8)
     np.testing.assert_allclose(iso["bulk_temperature"] - 90, 1.2 * (dip["bulk_temperature"] - 90),
                                rtol=1e-13)
@@ -267,13 +267,13 @@ def test_units_and_conditions():
     (lambda: path_of_contact([66, 126], [56, 112], [60, 120], ALPHA, points=2), "points"),
     (lambda: path_of_contact([55, 126], [56, 112], [60, 120], ALPHA), "tip_diameter"),
     (lambda: path_of_contact([66, 126, 1], [56, 112], [60, 120], ALPHA), "tip_diameter"),
-    (lambda: iso_flash_temperature_method(_rating().drop_vars("F_vmt"), oil_temperature=90.0,
+    (lambda: iso_flash_temperature_method(_rating().drop_vars("F_vmt"), temperature=90.0,
                                           roughness=0.8), "F_vmt"),
-    (lambda: iso_flash_temperature_method(_rating(), oil_temperature=90.0, roughness=0.0),
+    (lambda: iso_flash_temperature_method(_rating(), temperature=90.0, roughness=0.0),
      "roughness"),
     (lambda: iso_flash_temperature_method(_rating().assign_attrs(materials="steel"),
-                                          oil_temperature=90.0, roughness=0.8), "materials"),
-    (lambda: iso_flash_temperature_method(_rating(), oil_temperature=90.0, roughness=0.8,
+                                          temperature=90.0, roughness=0.8), "materials"),
+    (lambda: iso_flash_temperature_method(_rating(), temperature=90.0, roughness=0.8,
                                           conditions="dip"), "conditions"),
 ])
 def test_bad_inputs_are_refused_naming_the_field(call, field):
@@ -292,7 +292,7 @@ def test_the_standard_and_the_ltca_on_tr_sample_1():
     tree = run_analysis("iso10300_30_sample1", torque=[300.0], root_stress=False)
     fr = tree["friction"].to_dataset()
     rating = iso10300_rating("iso10300_30_sample1", torque=[300.0], pinion_speed=1200.0)
-    iso = iso_flash_temperature_method(rating, oil_temperature=90.0, roughness=0.8,
+    iso = iso_flash_temperature_method(rating, temperature=90.0, roughness=0.8,
                                        lengthwise_sliding=True)
     ours = float(fr["contact_temperature_max"][0]) - 90.0
     theirs = float(iso["contact_temperature_max"][0]) - 90.0

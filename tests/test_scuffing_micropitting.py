@@ -626,7 +626,7 @@ def test_ltca_run_lines_with_the_standards_method(fr):
     tree = xr.DataTree.from_dict({"friction": fr, "rating": rating})
     std = standard_scuffing(tree, fr)
     expected = iso_flash_temperature_variants(rating, lubricant="75W90",
-                                              oil_temperature=90.0, roughness=0.8)
+                                              temperature=90.0, roughness=0.8)
     xr.testing.assert_identical(std, expected)
     lines = durability_lines(fr, std)
     assert len(lines) == 3 * fr.sizes["torque"] + 2

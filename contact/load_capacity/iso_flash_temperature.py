@@ -121,6 +121,7 @@ from geometry import __version__
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import material
+from geometry.core.renamed import renamed_keywords
 from geometry.core.validation import integer, one_of, positive, real, real_array
 
 __all__ = [
@@ -407,11 +408,12 @@ def _rating_value(rating: xr.Dataset, name: str) -> np.ndarray:
     return np.asarray(rating[name].values, dtype=float)
 
 
+@renamed_keywords(oil_temperature="temperature")
 def iso_flash_temperature_method(
     rating: xr.Dataset,
     *,
     lubricant: str = "75W90",
-    oil_temperature: float,
+    temperature: float,
     roughness: float,
     conditions: ScuffingConditions | None = None,
     points: int = 41,
@@ -435,8 +437,9 @@ def iso_flash_temperature_method(
     lubricant : str
         Oil name or file (:func:`friction.lubricant.load_lubricant`); it needs
         ``base_oil`` (X_L), and ``fzg_load_stage`` for the scuffing safety.
-    oil_temperature : float — [degC]
-        θ_oil.
+    temperature : float — [degC]
+        θ_oil, the oil's inlet temperature (the ``temperature`` of
+        :class:`friction.OperatingConditions`; old name ``oil_temperature``, deprecated).
     roughness : float — [µm]
         RMS roughness Rq of each flank (the case's), > 0; Ra = √(2/π) Rq.
     conditions : ScuffingConditions, optional
@@ -484,7 +487,7 @@ def iso_flash_temperature_method(
     if not isinstance(cond, ScuffingConditions):
         raise InputError("conditions: must be a contact.load_capacity.flash_temperature."
                          f"ScuffingConditions or None, got {conditions!r}")
-    t_oil = real("oil_temperature", oil_temperature, unit="degC", low=-273.15, low_open=True)
+    t_oil = real("temperature", temperature, unit="degC", low=-273.15, low_open=True)
     rq = positive("roughness", roughness, "um")
     if not isinstance(rating, xr.Dataset):
         raise InputError(f"rating: must be an xarray.Dataset (/rating), got {type(rating)!r}")
@@ -648,11 +651,12 @@ _BY_VARIANT = ("sliding_velocity", "flash_temperature", "contact_temperature",
 _SPREAD = (("iso", False), ("iso", True), ("din", False), ("din", True))
 
 
+@renamed_keywords(oil_temperature="temperature")
 def iso_flash_temperature_variants(
     rating: xr.Dataset,
     *,
     lubricant: str = "75W90",
-    oil_temperature: float,
+    temperature: float,
     roughness: float,
     conditions: ScuffingConditions | None = None,
     points: int = 41,
@@ -662,7 +666,7 @@ def iso_flash_temperature_variants(
 
     Parameters
     ----------
-    rating, lubricant, oil_temperature, roughness, conditions, points
+    rating, lubricant, temperature, roughness, conditions, points
         As :func:`iso_flash_temperature_method`.
 
     Returns
@@ -687,7 +691,7 @@ def iso_flash_temperature_variants(
     Module docstring (ISO/TR 13989-1:2000 / ISO/TS 6336-20:2017 on ISO 10300-1 Annex A's
     virtual gears; DIN 3990-4:1987 for the other form of μ_m).
     """
-    kw = dict(lubricant=lubricant, oil_temperature=oil_temperature, roughness=roughness,
+    kw = dict(lubricant=lubricant, temperature=temperature, roughness=roughness,
               conditions=conditions, points=points)
     parts, low, high = [], [], []
     for lengthwise in VARIANTS.values():
