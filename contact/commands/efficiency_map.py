@@ -98,8 +98,8 @@ def efficiency_table(emap) -> str:
 
 def swept_values(args: argparse.Namespace) -> dict[str, list[float] | None]:
     """The values of each input of an ``efficiency-map`` command, known before the work:
-    speed [rpm] and torque [N m] as given or the map's defaults, temperature [degC] and
-    roughness Rq [um] as given or None (the case's)."""
+    speed [rpm] and torque [N·m] as given or the map's defaults, temperature [degC] and
+    roughness Rq [µm] as given or None (the case's)."""
     from contact.study.efficiency import EFFICIENCY_MAP_SPEEDS, EFFICIENCY_MAP_TORQUES
 
     def listed(v):

@@ -259,10 +259,10 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     xarray.Dataset
         Over (``torque``, ``roll``): ``mesh_point`` and ``load_centre`` (…, ``xyz``)
         [mm], ``line_of_action`` (…, ``xyz``) [1], ``mesh_force`` [N],
-        ``torsional_mesh_stiffness`` [N m/rad], ``mesh_stiffness`` [N/um],
+        ``torsional_mesh_stiffness`` [N·m/rad], ``mesh_stiffness`` [N/µm],
         ``gear_rotation_radius``, ``pinion_rotation_radius`` [mm],
-        ``transmission_error`` [urad], ``te_excitation`` [um]; over (``torque``,
-        ``harmonic``) the peak amplitude [um], [N/um] and phase [rad] of the excitation's
+        ``transmission_error`` [µrad], ``te_excitation`` [µm]; over (``torque``,
+        ``harmonic``) the peak amplitude [µm], [N/µm] and phase [rad] of the excitation's
         and the stiffness's mesh harmonics; over ``torque`` their means.
 
     Raises

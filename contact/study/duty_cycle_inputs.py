@@ -7,13 +7,13 @@ A duty cycle is a case's ``[duty_cycle]`` table (kept by the case reader in
     name = "axle spectrum"
     grade = "MQ"                  # ISO 6336-5 quality grade of both members' material
     miner_rule = "modified"       # elementary | modified | original
-    torque   = [100.0, 300.0]     # pinion torque of each bin [N m]
+    torque   = [100.0, 300.0]     # pinion torque of each bin [N·m]
     speed    = [3000.0, 1500.0]   # pinion speed [rpm]
     hours    = [500.0, 50.0]      # duration [h] (or `revolutions`, pinion revolutions)
     temperature = [80.0, 95.0]    # oil inlet temperature [degC], optional
 
     [duty_cycle.deflection]       # housing, bearing and shaft deflections vs pinion torque
-    torque      = [0.0, 600.0]    # [N m], strictly increasing
+    torque      = [0.0, 600.0]    # [N·m], strictly increasing
     delta_E     = [0.0, 0.06]     # [mm]
     delta_P     = [0.0, -0.03]    # [mm]
     delta_G     = [0.0, 0.04]     # [mm]
@@ -271,7 +271,7 @@ def read_duty_cycle(source: Mapping[str, Any] | str | os.PathLike[str] | Any) ->
     Returns
     -------
     DutyCycle
-        The bins (torque [N m], speed [rpm], time or revolutions) as read and checked.
+        The bins (torque [N·m], speed [rpm], time or revolutions) as read and checked.
 
     Raises
     ------

@@ -553,7 +553,7 @@ def film_oil_properties(oil: Lubricant, temperature: Array) -> tuple[Array, Arra
     Parameters
     ----------
     oil : Lubricant
-    temperature : array_like — [°C]
+    temperature : array_like — [degC]
         Film temperatures (inlet plus flash), clipped to the oil's lowest tabulated
         temperature and :data:`FILM_TEMPERATURE_CAP`.
 
