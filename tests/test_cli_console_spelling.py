@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import re
 
 import pytest
 
@@ -24,6 +25,17 @@ COMMANDS = ("cases", "run", "plot", "report", "mesh-interface", "efficiency-map"
             "duty-cycle", "wear", "geometry", "plot-geometry", "synthesize", "correct",
             "optimize", "utca", "rate", "sweep", "tolerance", "vh-check", "ehl",
             "friction-study")
+
+
+#: other spellings of a console unit → the one the console uses (a stress in MPa as the
+#: files' ``units`` and ``ltca run``'s tables, not ISO's N/mm²)
+REFUSED = {r"N/mm2": "MPa", r"N/mm\^2": "MPa", r"N\^0\.5/mm": "MPa^0.5", r"\bNm\b": "N m",
+           r"\bmicrons?\b": "um", r"\bdeg C\b": "degC"}
+
+
+def _refused(text: str) -> list[str]:
+    return [f"{m.group(0)!r} (write {REFUSED[pattern]!r})" for pattern in REFUSED
+            for m in re.finditer(pattern, text)]
 
 
 def _printed(argv: list[str]) -> str:
@@ -66,6 +78,7 @@ def test_cheap_commands_print_ascii(argv):
     text = _printed(argv)
     assert text.strip()
     assert not _not_ascii(text), _not_ascii(text)
+    assert not _refused(text), _refused(text)
 
 
 def test_a_run_prints_ascii(tmp_path):
@@ -77,3 +90,11 @@ def test_a_run_prints_ascii(tmp_path):
     assert "case kolivand2009_fm_11x41_reference: dE -0.15 mm" in text
     assert "T_p [N m]" in text and "[urad]" in text
     assert not _not_ascii(text), _not_ascii(text)
+    assert not _refused(text), _refused(text)
+
+
+def test_the_rating_prints_stresses_in_mpa():
+    """``ltca rate`` writes its stresses in MPa as ``ltca run``'s rating table does (the
+    standard's N/mm² is the same number)."""
+    text = _printed(["rate", "iso10300_30_sample1"])
+    assert "sigma_H [MPa]" in text and "sigma_F [MPa]" in text and "Z_E [MPa^0.5]" in text

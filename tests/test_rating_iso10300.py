@@ -516,8 +516,8 @@ def test_cli_acceptance_line(capsys):
     σ_F 680.1 / 700.1 N/mm² (ISO/TR 10300-30 sample 1) within 0.5 %."""
     assert main(["rate", "iso10300_30_sample1", "--torque", "300", "--speed", "1200"]) == 0
     out = capsys.readouterr().out
-    assert _row(out, "sigma_H [N/mm2]") == pytest.approx([1712.8], rel=STRESS_TOLERANCE)
-    assert _row(out, "sigma_F [N/mm2]") == pytest.approx([680.1, 700.1],
+    assert _row(out, "sigma_H [MPa]") == pytest.approx([1712.8], rel=STRESS_TOLERANCE)
+    assert _row(out, "sigma_F [MPa]") == pytest.approx([680.1, 700.1],
                                                          rel=STRESS_TOLERANCE)
     assert _row(out, "Z_LS") == pytest.approx([0.935], abs=1e-3)
 

@@ -131,16 +131,16 @@ _GEOMETRY = (("d_v", "d_v [mm]", 3), ("z_v", "z_v", 3), ("z_vn", "z_vn", 3),
              ("d_van", "d_van [mm]", 3), ("g_va", "g_va [mm]", 3), ("eps_va", "eps_va", 3),
              ("eps_vb", "eps_vb", 3), ("eps_vg", "eps_vg", 3), ("b_veff", "b_v,eff [mm]", 3),
              ("l_bm", "l_bm [mm]", 3), ("rho_rel", "rho_rel [mm]", 3))
-_PITTING = (("Z_MB", "Z_M-B", 3), ("Z_LS", "Z_LS", 3), ("Z_E", "Z_E [N^0.5/mm]", 3),
+_PITTING = (("Z_MB", "Z_M-B", 3), ("Z_LS", "Z_LS", 3), ("Z_E", "Z_E [MPa^0.5]", 3),
             ("Z_Hyp", "Z_Hyp", 3), ("Z_L", "Z_L", 3), ("Z_speed", "Z_v", 3), ("Z_R", "Z_R", 3),
-            ("Z_NT", "Z_NT", 3), ("sigma_H0", "sigma_H0 [N/mm2]", 1),
-            ("sigma_H", "sigma_H [N/mm2]", 1), ("sigma_HP", "sigma_HP [N/mm2]", 1),
+            ("Z_NT", "Z_NT", 3), ("sigma_H0", "sigma_H0 [MPa]", 1),
+            ("sigma_H", "sigma_H [MPa]", 1), ("sigma_HP", "sigma_HP [MPa]", 1),
             ("S_H", "S_H", 3))
 _BENDING = (("Y_Fa", "Y_Fa", 3), ("Y_Sa", "Y_Sa", 3), ("Y_eps", "Y_eps", 3),
             ("Y_BS", "Y_BS", 3), ("Y_LS", "Y_LS", 3), ("Y_deltarelT", "Y_delta,relT", 3),
             ("Y_RrelT", "Y_R,relT", 3), ("Y_NT", "Y_NT", 3),
-            ("sigma_F0", "sigma_F0 [N/mm2]", 1), ("sigma_F", "sigma_F [N/mm2]", 1),
-            ("sigma_FP", "sigma_FP [N/mm2]", 1), ("S_F", "S_F", 3))
+            ("sigma_F0", "sigma_F0 [MPa]", 1), ("sigma_F", "sigma_F [MPa]", 1),
+            ("sigma_FP", "sigma_FP [MPa]", 1), ("S_F", "S_F", 3))
 
 
 def _rows(ds, spec) -> list[tuple[str, str, str, str]]:
