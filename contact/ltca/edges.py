@@ -306,9 +306,15 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     n_pair = -gear_to_pair(kin, psi, nrm, vec=True)
     if np.any(pe):
         # the moment arm of the force along n(g) through the edge point P (P lies on the
-        # normal through g: the normal arm at g, to the spline's interpolation error)
-        arm[pe] = np.einsum("ni,i->n", np.cross(mid_pair[pe] - kin.gear_origin, n_pair[pe]),
-                            kin.gear_axis)
+        # normal through g: the normal arm at g, to the spline's interpolation error),
+        # signed as the flank's normal arm ρ|n·e_θ| is: (P − O) × n_pair · a_g = −ρ n_θ(g)
+        # (n_pair the gear normal reversed) has the sign of −s_g, s_g = sign(n_g·e_θ) the
+        # lag sense of this flank, so −s_g times it is the arm in the sense the gear torque
+        # loads the flank: positive on either flank (drive: s_g = −1, unchanged; coast:
+        # s_g = +1, where the unsigned cross product gave every pinion edge a negative arm,
+        # hence a negative separation R (lag − UTE) and a negative moment)
+        arm[pe] = -eo.lag_sense * np.einsum(
+            "ni,i->n", np.cross(mid_pair[pe] - kin.gear_origin, n_pair[pe]), kin.gear_axis)
     end_a = quad.at(pts, a1, vector=True)[:, 0]
     end_b = quad.at(pts, b1, vector=True)[:, 0]
     chord = end_b - end_a
