@@ -116,7 +116,10 @@ def effective_mesh(force: np.ndarray, point: np.ndarray, normal: np.ndarray,
     normal : ndarray (..., N, 3) — [1]
         Unit contact normals n_i (out of the pinion).
     moment_arm : ndarray (..., N) — [mm]
-        Moment arms R_i about the gear axis of the contact problem (Σ F_i R_i = T_g).
+        Moment arms R_i about the gear axis of the contact problem (Σ F_i R_i = T_g): in
+        the sense the torque loads the flank (the LTCA's, positive on either flank) or
+        signed about a_g; the mesh point reproduces T_g in the forces' own sense about
+        a_g (the sign of Σ F_i ((r_i − o_g) × n_i)·a_g: negative on the coast flank).
     gear_axis, gear_origin : sequence of 3 float — [1], [mm]
         The gear axis a_g (unit) and a point o_g on it.
 
@@ -157,14 +160,20 @@ def effective_mesh(force: np.ndarray, point: np.ndarray, normal: np.ndarray,
         lo = resultant / W[..., None]
         centre = np.einsum("...i,...ij->...j", F, r) / total[..., None]
         torque = np.einsum("...i,...i->...", F, R)
+        # the arms are the contact problem's, in the sense the gear torque loads the flank
+        # (positive on either flank); about the stored axis the forces' moment has its own
+        # sign: opposite on the coast flank (-1 here), where the mesh point must reproduce
+        # -T_g about a_g or it lands on the far side of the gear axis (issue 60)
+        moment = np.einsum("...i,...i->...", F, np.cross(r - o, n) @ a)
+        sense = np.where(moment * torque < 0, -1.0, 1.0)
         across = np.cross(resultant, a)
         reach = np.linalg.norm(across, axis=-1)
         if np.any(loaded & (reach <= 1e-12 * W)):
             raise InputError("force: the resultant of the contact forces is parallel to the "
                              "gear axis; it carries no torque")
-        shift = (torque - np.cross(centre - o, resultant) @ a) / reach
+        shift = (sense * torque - np.cross(centre - o, resultant) @ a) / reach
         p = centre + (shift / reach)[..., None] * across
-        radius = np.cross(p - o, lo) @ a
+        radius = sense * (np.cross(p - o, lo) @ a)
     out = {"mesh_point": p, "line_of_action": lo, "load_centre": centre, "mesh_force": W,
            "gear_torque": torque, "gear_rotation_radius": radius}
     for k, v in out.items():
