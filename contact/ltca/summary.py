@@ -38,7 +38,9 @@ def edge_load_share(ltca: xr.Dataset) -> np.ndarray:
     Returns
     -------
     ndarray (NT,)
-        NaN where no segment carries load.
+        In [0, 1]: the arms are positive on either flank (the sense the gear torque loads
+        it; a pinion edge's on the coast flank since issue 60: files written before carry
+        negative ones there and give a negative share). NaN where no segment carries load.
 
     Raises
     ------
