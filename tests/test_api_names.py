@@ -123,3 +123,23 @@ def test_duty_cycle_keeps_its_old_attribute_for_one_release():
     assert duty.hours[0] == 1.0  # 6e4 rev at 1000 rpm: one hour
     with pytest.warns(DeprecationWarning, match="pinion_speed"):
         assert duty.speed[0] == 1000.0
+
+
+def test_an_old_keyword_gives_the_same_result_as_the_new():
+    """Through the decorator the old keyword reaches the same argument: the ISO 10300
+    rating at 1200 rpm is identical either way, the oil too."""
+    import xarray as xr
+
+    import contact
+    import friction
+
+    new = contact.iso10300_rating("iso10300_30_sample1", torque=[300.0], pinion_speed=1200.0)
+    with pytest.warns(DeprecationWarning, match="pinion_speed"):
+        old = contact.iso10300_rating("iso10300_30_sample1", torque=[300.0], speed=1200.0)
+    xr.testing.assert_identical(new, old)
+    # the speed reached the rating: the mean-point speed is proportional to it
+    double = contact.iso10300_rating("iso10300_30_sample1", torque=[300.0], pinion_speed=2400.0)
+    assert float(double["v_mt"].isel(member=0)) == pytest.approx(
+        2.0 * float(new["v_mt"].isel(member=0)), rel=1e-12)
+    with pytest.warns(DeprecationWarning, match="'lubricant'"):
+        assert friction.load_lubricant(path_or_name="75W90") == friction.load_lubricant("75W90")
