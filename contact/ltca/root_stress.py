@@ -225,8 +225,10 @@ def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str,
     gear's flank point on a contact curve, the gear's edge point x of a gear edge (on the
     pinion flank), and the pinion's edge point P of a pinion edge
     (:mod:`contact.ltca.edges`). A pinion edge presses on the gear flank at the foot g of
-    the gear flank's normal through P, not at P (up to ~0.8 mm away along the
-    circumference, measured on the default case's coast flank at 250 N·m): the gear's
+    the gear flank's normal through P, not at P (P lies the edge's gap off g along the
+    normal: the loaded approach, ≤ 0.014 mm on the default case's coast flank at 500 N·m;
+    up to ~0.8 mm at 250 N·m before issue 60's fix of the coast pinion edges' moment arms,
+    which loaded open edges): the gear's
     point of such a segment is g (``segment_position``, on the reference gear tooth),
     turned by whole gear pitches onto P's tooth — the tip edge of the pinion's FE tooth
     takes P, the gear's FE flank takes g.
