@@ -32,7 +32,6 @@ default, a plug-in's by its name) and rates through :func:`contact.load_capacity
 from __future__ import annotations
 
 import dataclasses
-import functools
 import logging
 import time
 from collections.abc import Callable, Mapping
@@ -318,10 +317,9 @@ def _rating_of(state: ChainState, method: str):
                 analysis=state.groups), ""
 
 
-@functools.cache
 def _rating_step(method: str) -> Callable[[ChainState], None]:
-    """The load-capacity step that rates by the registered ``method`` (one function per
-    name, so that the chain's checks before work find it again)."""
+    """The load-capacity step that rates by the registered ``method``, with its check
+    before work (``before_work``, which :func:`run_chain` calls before any step)."""
 
     def rating_step(state: ChainState) -> None:
         """``/scuffing_micropitting`` (with ``/friction``), then ``/rating`` by the

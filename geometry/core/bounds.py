@@ -25,8 +25,6 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
-import numpy as np
-
 from geometry.core.errors import InputError
 
 __all__ = ["PHYSICAL_BOUNDS", "Bound", "check_bound", "check_torques"]
@@ -162,6 +160,8 @@ def check_torques(torque, field: str = "torque") -> tuple[float, ...]:
         Text, an empty sequence, a value not finite or outside the bound (one sentence
         naming ``field`` and the range).
     """
+    import numpy as np  # here: `ltca --help` reads the bounds without numpy (test_startup)
+
     try:
         ndim = -1 if isinstance(torque, (str, bytes)) else np.ndim(torque)
     except ValueError:  # a ragged nesting
