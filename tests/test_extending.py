@@ -398,13 +398,17 @@ def test_ltca_run_finds_the_plugins(plugin, tmp_path):
 
 def test_the_page_examples_run():
     """docs/extending.md's Python examples (a backend, a friction model, a compliance model
-    registered, used and removed) run as printed, each in a namespace of its own."""
+    and a load-capacity rating method registered, used and removed) run as printed, each in
+    a namespace of its own."""
     import re
 
     page = (ROOT / "docs" / "extending.md").read_text(encoding="utf-8")
     examples = re.findall(r"```python\n(.*?)```", page, flags=re.S)
-    assert len(examples) == 3
+    assert len(examples) == 4
     for i, code in enumerate(examples):
         exec(compile(code, f"docs/extending.md example {i + 1}", "exec"), {})
     assert "projected_gradient" not in available_solvers()
     assert "stiffer_teeth" not in available_compliance_models()
+    from contact import available_rating_methods
+
+    assert "mean_point_forces" not in available_rating_methods()
