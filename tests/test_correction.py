@@ -26,6 +26,7 @@ from geometry.synthesis.correction import (
     corrected_case,
     corrective_settings,
     identifiable_subset,
+    measurement_places,
     setting_value,
     settings_deviation,
 )
@@ -125,13 +126,28 @@ def test_recovers_known_settings(case, key, sign):
 
 def test_corrected_case_cuts_the_opposite_deviation(case, pinion_measured, tmp_path):
     """On a machine without error the corrected settings cut minus the measured deviation
-    (first order: the second-order remainder is below 0.2 % of the 23 um deviation); the
-    corrected case round-trips through TOML with its provenance."""
+    (first order: the second-order remainder is below 0.2 % of the 23 um deviation on the
+    flank proper); the corrected case round-trips through TOML with its provenance.
+
+    The grid's root row (v = 0.05) lies on the fillet the blade's edge radius cuts at the
+    heel half of the face (u >= 0.625; at u = 0.5 on the profile by 0.05 mm of blade arc):
+    since the tip plane sits on the root cone (c716685; it lay 0.43 mm deeper), the fillet
+    reaches higher, and those points lie up to 0.23 mm of arc into the edge radius
+    (0.00-0.09 mm before). There the remainder is of order κ_e |δ| with the edge radius's
+    curvature κ_e = 1/0.813 mm: at most 2.8 % of δ (measured 0.65 % at the heel, 0.16 %
+    with the old tip plane); the flank proper keeps its 0.2 % (measured 0.025 %)."""
     pert = PERTURBATIONS["pinion", "concave"]
     c = corrective_settings(case, "pinion", "concave", U, V, pinion_measured,
                             settings=list(pert))
     back = settings_deviation(case, "pinion", "concave", c.values, U, V)
-    assert np.abs(back + pinion_measured).max() <= 2e-3 * np.abs(pinion_measured).max()
+    tool = case.pinion.concave
+    z, rho = measurement_places(case.pinion.blank, U, V)
+    fillet = flank_at(case, "pinion", "concave", z, rho).section == (
+        profile_sections(tool.blade).names.index("edge"))
+    assert not fillet[:, 1:].any()  # only the root row reaches the fillet
+    residual, scale = np.abs(back + pinion_measured), np.abs(pinion_measured).max()
+    assert residual[~fillet].max() <= 2e-3 * scale
+    assert residual[fillet].max() <= scale / tool.blade.edge_radius * scale
     out = corrected_case(case, [c], provenance={"deviation_files": ["p.csv"]})
     path = tmp_path / "corrected.toml"
     path.write_text(out.to_toml(), encoding="utf-8")
