@@ -398,7 +398,7 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
     try:
         return iso_flash_temperature_variants(
             rating, lubricant=str(friction.attrs["lubricant"]),
-            oil_temperature=float(friction.attrs["inlet_temperature_degC"]),
+            temperature=float(friction.attrs["inlet_temperature_degC"]),
             roughness=float(friction.attrs["roughness_rq_um"]))
     except (InputError, KeyError) as exc:
         log.info("the standard's flash temperature method not applied: %s", exc)

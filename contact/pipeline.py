@@ -152,11 +152,11 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
     Returns
     -------
     str
-        One sentence per torque: LTE mean and peak-to-peak [urad], peak pressure of the
+        One sentence per torque: LTE mean and peak-to-peak [µrad], peak pressure of the
         flanks and of the edges [MPa], the edges' share of the torque [%], the efficiency
-        [%], the mean mesh stiffness [N/um] and the peak root stress of both members
-        [MPa] where the groups hold them (units as
-        UDUNITS text, so that a catalogue shows them as the file's variables do).
+        [%], the mean mesh stiffness [N/µm] and the peak root stress of both members
+        [MPa] where the groups hold them (the text spells the units as UDUNITS does,
+        ``urad``, ``N/um``, so that a catalogue shows them as the file's variables do).
     """
     lt = groups["/ltca"]
     fr = groups.get("/friction")
