@@ -584,6 +584,10 @@ def load_basic(path: str | os.PathLike[str], *, fit: bool = True) -> BasicDesign
     Returns
     -------
     BasicDesign
+        The validated file: design data, ``[targets]``, synthesis options and its other
+        tables (``[operating]``, ``[rating]``, ``[development]``, ``[optimize]``), the
+        design fitted to the targets when ``fit``; ``path`` as given
+        (``cases/basic/<name>`` for a bundled file).
 
     Raises
     ------

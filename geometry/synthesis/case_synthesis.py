@@ -275,6 +275,8 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         data; the basic file's ``[rating]`` table, else :data:`~geometry.synthesis.
         basic_design.DEFAULT_RATING`).
     report : SynthesisReport
+        What the synthesis did: the blank geometry, the gear's tools and, per pinion
+        flank, its synthesis (prescriptions, mean point, local synthesis, tools).
 
     Raises
     ------

@@ -580,8 +580,9 @@ def corrective_settings(case: Case, member: str, flank: str, u, v, deviation, *,
     bounds : mapping name → (low, high), optional
         Bounds of the corrected values in internal units (rad, mm), None for open; each
         must lie in the setting's valid range.
-    cond_max : float
-        Condition-number threshold of the subset selection (:data:`COND_MAX`).
+    cond_max : float — [1]
+        Condition-number threshold of the subset selection, σ₁/σ of the unit-column
+        Jacobian's singular values (dimensionless); default :data:`COND_MAX` (100).
     max_iter : int
         Gauss–Newton steps at most (≥ 1).
 
