@@ -713,6 +713,20 @@ def influence_coefficients(case, member: str, flank: str = "drive",
 
     Notes
     -----
+    The influence-coefficient (unit-load superposition) method: tooth compliance is "the
+    amount of deflection at any contact point due to a unit load applied at various
+    points on the same tooth surface" (seed §3.2, after Vaidyanathan, Houser & Busby
+    1993, seed ref. [3.5]; the matrix of seed Eq. 3.11). The seed computes it with a
+    Rayleigh–Ritz shell and validates the shell against an FE model (seed Fig. 3.4);
+    here each unit load is solved on a 3-D FE model of the member's teeth (quadratic
+    hexahedra, isotropic linear elasticity; scikit-fem: T. Gustafsson, G. D. McBain
+    2020, "scikit-fem: A Python package for finite element assembly", *JOSS* 5(52),
+    2369), as in the FE tooth models the seed cites (Wilcox, Chimner & Nowell 1997, seed
+    ref. [3.1]); the fillet stresses per unit load are recorded with them, and the
+    maximum principal stress at the fillet is the root stress
+    (:func:`contact.compliance.fe.superposition.fillet_stress`). Load and response are the same hat
+    functional, so G is symmetric (Maxwell–Betti; module docstring, docs/fe.md).
+
     The factorisation and the solves run in a worker process (where ``fork`` exists), so
     that SIGTERM or Ctrl-C ends a build within a tenth of a second rather than after the
     native factorisation (issue 64); each solved block of unit loads is kept beside the

@@ -153,10 +153,16 @@ class FEOptions:
         the flank is generated down to 0.04 of the depth, higher where it is not (the
         hypoid example's gear begins at v = 0.093 at the heel).
         Given: 0 ≤ low < high ≤ 1, and the flank must exist down to low.
+
     Raises
     ------
     InputError
-        A field out of its range; the message names the field.
+        On construction, a field out of its range or of the wrong type (``teeth`` even
+        or outside 3–9, a division count outside its range, ``across_divisions`` odd,
+        ``rim_depth``, ``root_element_size`` or ``youngs_modulus`` not > 0,
+        ``poisson_ratio`` outside [0, 0.5), an unknown ``constraint`` or ``element``,
+        ``load_v_limits`` not two fractions 0 ≤ low < high ≤ 1); the message names the
+        field and the accepted range.
 
     Notes
     -----

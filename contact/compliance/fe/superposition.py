@@ -164,7 +164,17 @@ def fe_compliance_matrix(coefficients: xr.Dataset, points) -> np.ndarray:
 
     Notes
     -----
-    Module docstring: bilinear hat interpolation of the coefficients G[a, tooth, b].
+    The tooth compliance matrix of the seed's LTCA (seed §3.2, Eq. 3.11: w_ij, the
+    deflection at segment i due to a unit load at segment j, after Vaidyanathan, Houser &
+    Busby 1993, seed ref. [3.5]), which enters the compatibility condition
+    C F + s − R Θ = Y (seed Eq. 3.12–3.14). The seed builds it from a Rayleigh–Ritz
+    shell and checks that against an FE model (seed Fig. 3.4, §3.2); here it is the FE
+    model's own unit-load influence coefficients
+    (:func:`contact.compliance.fe.influence.influence_coefficients`; scikit-fem:
+    Gustafsson & McBain 2020, *JOSS* 5(52), 2369),
+    superposed by linearity with the bilinear hat interpolation of the coefficients
+    G[a, tooth, b] (module docstring) — the influence-coefficient method of the FE
+    tooth models the seed cites (Wilcox, Chimner & Nowell 1997, seed ref. [3.1]).
     """
     fp = locate_flank_points(coefficients, points)
     g = coefficients["compliance"]
@@ -209,6 +219,19 @@ def fillet_stress(coefficients: xr.Dataset, points, forces) -> xr.Dataset:
     Raises
     ------
     InputError — bad points (:func:`locate_flank_points`) or forces not (N,) finite.
+
+    Notes
+    -----
+    Linear superposition of the unit-load fillet stresses of the member's FE model
+    (:func:`contact.compliance.fe.influence.influence_coefficients`; scikit-fem:
+    Gustafsson & McBain 2020, *JOSS* 5(52), 2369) with the point forces spread on the
+    load grid by the bilinear hat weights (module docstring) — the FE route to the root
+    stress of bevel and hypoid teeth the seed cites (Wilcox, Chimner & Nowell 1997, seed
+    ref. [3.1]; the shell model's root stresses: Vaidyanathan, Houser & Busby 1993, seed
+    ref. [3.5]). The fillet stress reported is the maximum principal stress at the root
+    fillet points (tension on the loaded side) and the minimum (compression on the
+    other); it is checked against the 30°-tangent tooth-form formula of ISO 10300-3
+    Method B1 (Y_Fa, Y_Sa) in docs/fe.md, which gives the measured FE/formula ratios.
     """
     fp = locate_flank_points(coefficients, points)
     f = real_array("forces", forces, unit="N")
