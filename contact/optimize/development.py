@@ -187,6 +187,15 @@ class DevelopmentTargets:
     variables : mapping name → (low, high)
         Developed synthesis inputs (``[synthesis]`` names and units); default
         :data:`VARIABLES`; ``te_level`` and ``approach`` may be added (bearing stage).
+
+    Raises
+    ------
+    InputError
+        On construction, a field outside its range above (not a finite number, or
+        ``max_evaluations`` not an integer in [1, 500]), or ``variables`` empty, naming
+        something other than a synthesis input, or giving a bound that is not
+        ``[low, high]`` with low < high; the message names the field
+        (``development.<field>``) and the accepted range.
     """
 
     light_load: float = 0.15
@@ -858,6 +867,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     Returns
     -------
     DevelopmentResult
+        The developed basic design and its synthesised case, the chosen design and every
+        design analysed, the light and design torque, and the chosen design's metrics at
+        the mounting excursions.
 
     Raises
     ------
@@ -891,6 +903,17 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     synthesised once more (the written case; the memo makes this its relief alone), its
     coast flank analysed once at :data:`CHECK_LTCA`, and it is checked at the excursions
     ΔE = ±``offset_tolerance``, ΔP = ±``mounting_tolerance``.
+
+    Sources: the varied inputs are the prescriptions of Litvin's local synthesis at the
+    mean point (Litvin & Fuentes 2004, §9.4–9.5;
+    :func:`geometry.synthesis.local.local_synthesis`) and the blade's tip and root
+    relief that keep the loaded pattern off the edges (Stadtfeld, *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3;
+    :mod:`geometry.machine.relief`); the light-load pattern aimed at is the
+    satisfactory hypoid pattern of US Army TM 9-2320-273-34 §10-29, fig. 10-27
+    (:class:`DevelopmentTargets`); the loop follows the development of a bearing on
+    the roll tester and in Gleason CAGE or Klingelnberg KIMoS (docs/synthesis.md,
+    "Development bearing"). The search is the Nelder–Mead simplex (Nelder & Mead 1965,
+    *Computer Journal* 7, 308–313), as in :func:`scipy.optimize.minimize`.
     """
     from geometry.synthesis.case_synthesis import synthesize
 
