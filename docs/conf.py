@@ -64,11 +64,6 @@ NUMPYDOC_PENDING = {
     # "Attributes" (PR01 reads the constructor's parameters)
     "contact.ContactSolution": "a result; fields under Attributes",
     "geometry.Case": "a loaded case file; fields under Attributes",
-    # modules other work of issue 63 was changing while validation was turned on
-    "contact.FEOptions": "a Raises section inside Parameters (contact/compliance/fe)",
-    "contact.develop": "Returns without a description (contact/optimize/development.py)",
-    "geometry.load_basic": "Returns without a description (geometry/synthesis)",
-    "geometry.synthesize": "Returns without a description (geometry/synthesis)",
 }
 numpydoc_validation_exclude = {rf"^{name.replace('.', '[.]')}$" for name in NUMPYDOC_PENDING}
 

@@ -101,21 +101,11 @@ UNIT = re.compile(r"\[[^\]]+\]")
 QUANTITY = re.compile(r"\b(float|array_like|ndarray)\b")
 
 #: public names whose entries miss a unit, each with why (only shrinks)
-UNITS_PENDING = {
-    "geometry.corrective_settings": "cond_max (geometry/synthesis/correction.py)",
-}
+UNITS_PENDING: dict[str, str] = {}
 #: public names that raise without a Raises section, each with why (only shrinks)
-RAISES_PENDING = {
-    "contact.DevelopmentTargets": "contact/optimize/development.py",
-    "contact.FEOptions": "Raises inside Parameters (contact/compliance/fe/options.py)",
-}
+RAISES_PENDING: dict[str, str] = {}
 #: public models without a source, each with why (only shrinks)
-SOURCE_PENDING = {
-    "contact.develop": "contact/optimize/development.py",
-    "contact.fe_compliance_matrix": "contact/compliance/fe/superposition.py",
-    "contact.fillet_stress": "contact/compliance/fe/superposition.py",
-    "contact.influence_coefficients": "contact/compliance/fe/influence.py",
-}
+SOURCE_PENDING: dict[str, str] = {}
 
 
 def _public() -> list[tuple[str, object]]:
