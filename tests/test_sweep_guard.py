@@ -13,8 +13,18 @@ options the test runs: the default case about its Table 3.1 mounting (ΔE = −0
 was run again when the pinion edge stopped depending on the last bit of a contour vertex
 (``contact.ltca.edges``: the writer's OpenBLAS kernels had put a vertex on a grid line one
 ulp into the computed cell, giving the edge one segment more than every other kernel did;
-LTE mean +3.6e-4 µrad, pattern centre 0.01 mm); the other 24 points are as written
-(the file's ``amended`` attribute).
+LTE mean +3.6e-4 µrad, pattern centre 0.01 mm). All 25 points were written again when
+the pinion's blade tip planes were placed on the root cone (c716685, a reviewed change of
+results; the file's ``rewritten`` attribute): the flank is unchanged (to 1e-13 mm), but
+(1) the pinion FE tooth is built on the raised root lines (slot bottom 0.51 mm higher under
+the concave cut, 0.03 mm under the convex one), which at every point moved the LTE mean by
+−0.26 to −0.41 µrad, the flank pressure by −1.3 to −2.2 MPa and the pattern centre by
++0.01 mm, the UTE unchanged; and (2) the ease-off's mapping maps other gear nodes next to
+the pinion blade's flankrem corner (the extended pinion grid is built on the blade's main
+section, whose heights count from the tip plane: 0–3 nodes per point, the common nodes
+equal to 1e-11 rad), which changed the UTE p-p at ΔE, ΔP = (−0.15, 0.095) mm by −3.0 µrad,
+and with the edge contact at that corner the LTE p-p (−7.9 µrad at (−0.175, 0.095)), the
+edge pressure (−207 to +130 MPa) and the pattern's root row (one grid step) at six points.
 
 Why it is cheap enough for CI: the coarse LTCA (8 rolls per cycle, 8 segments per curve)
 leaves the ease-off, UTCA and the tooth models as they are in a full analysis (so every
