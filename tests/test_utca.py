@@ -311,7 +311,8 @@ def test_utca_dataset_conventions_roundtrip_and_errors(tmp_path):
         got = without_stamps(back[group].to_dataset(inherit=False), orig)
         xr.testing.assert_identical(got, orig)
     case = _crowned()
-    for kwargs, field in (({"rolls_per_cycle": 2}, "rolls_per_cycle"), ({"separation": -1.0}, "separation"),
+    for kwargs, field in (({"rolls_per_cycle": 2}, "rolls_per_cycle"),
+                          ({"separation": -1.0}, "separation"),
                           ({"pairs": (1, 2)}, "pairs"), ({"method": "exact"}, "method")):
         with pytest.raises(InputError, match=field):
             unloaded_tca(case, grid={"nu": 11, "nv": 7}, **kwargs)

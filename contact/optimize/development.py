@@ -907,9 +907,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     Sources: the varied inputs are the prescriptions of Litvin's local synthesis at the
     mean point (Litvin & Fuentes 2004, §9.4–9.5;
     :func:`geometry.synthesis.local.local_synthesis`) and the blade's tip and root
-    relief that keep the loaded pattern off the edges (Stadtfeld, *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3;
-    :mod:`geometry.machine.relief`); the light-load pattern aimed at is the
-    satisfactory hypoid pattern of US Army TM 9-2320-273-34 §10-29, fig. 10-27
+    relief that keep the loaded pattern off the edges (Stadtfeld, *Handbook of Bevel and
+    Hypoid Gears*, 1993, ch. 3; :mod:`geometry.machine.relief`); the light-load pattern
+    aimed at is the satisfactory hypoid pattern of US Army TM 9-2320-273-34 §10-29, fig. 10-27
     (:class:`DevelopmentTargets`); the loop follows the development of a bearing on
     the roll tester and in Gleason CAGE or Klingelnberg KIMoS (docs/synthesis.md,
     "Development bearing"). The search is the Nelder–Mead simplex (Nelder & Mead 1965,
