@@ -73,3 +73,21 @@ def test_batched_search_equals_the_sequential_one(misalignment):
     np.testing.assert_allclose(ute[:2], ute[2:], rtol=0.0, atol=1e-12)
     # the batched search ran (it did not leave the transitions to the sequential one)
     assert n_batched < n_sequential
+
+
+def test_one_handover_where_the_pinion_corner_holes_are():
+    """At ΔE = ΔP = −0.12 mm the contact curves of rolls 0.70–0.73 rad cross the pinion's
+    flankrem corner (gear column v = 5, where the mapped corner nodes give way to the
+    corner's strip of unmapped ones). Pair 0's UTE is smooth there, so its difference to
+    the preceding pair changes sign once in that bracket (the handover). Measured: once;
+    before the corner holes were filled from the two faces (contact.utca.easeoff), 7 times
+    (a ±50 µrad zig-zag from the 65 µrad step of the spline's fill).
+    """
+    case = resolve_case(None)
+    eo = ease_off(case, misalignment=Misalignment(delta_E=-0.12, delta_P=-0.12))
+    h = transitions_module._PairDifference(eo, EaseOffFields(eo), "second_order", 41)
+    x = np.linspace(0.70, 0.73, 121)  # 0.25 mrad steps
+    d = h(x, np.full_like(x, -1.0))
+    assert np.all(np.abs(d) < transitions_module._OUT_OF_MESH)  # both pairs in mesh
+    s = np.sign(d[d != 0.0])
+    assert int(np.count_nonzero(s[1:] != s[:-1])) == 1
