@@ -30,6 +30,7 @@ import sys
 from pathlib import Path
 
 from geometry.case import FLANKS, load_case
+from geometry.core.atomic_files import atomic_path
 from geometry.synthesis.tip_plane import tip_plane_on_root_cone
 
 CASES = Path(__file__).resolve().parent
@@ -98,9 +99,8 @@ def main(argv: list[str]) -> int:
         if new != text:
             changed.append(path.name)
             if not check:
-                tmp = path.with_suffix(".toml.tmp")
-                tmp.write_text(new, encoding="utf-8")
-                tmp.replace(path)
+                with atomic_path(path) as tmp:
+                    tmp.write_text(new, encoding="utf-8")
     verb = "would change" if check else "wrote"
     print(f"{verb} {len(changed)} case(s): {', '.join(changed) or 'none'}")
     return 1 if check and changed else 0
