@@ -66,8 +66,8 @@ from geometry.core.conventions import binary_flag, data_var
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL, contact_modulus
 
-__all__ = ["efficiency_analysis", "extrapolated_segments", "extrapolation_summary",
-           "uncertified_as_nan"]
+__all__ = ["LoadedSegments", "efficiency_analysis", "extrapolated_segments",
+           "extrapolation_summary", "loaded_segments", "uncertified_as_nan"]
 
 log = logging.getLogger(__name__)
 
@@ -317,18 +317,75 @@ class _Segments(NamedTuple):
     edge: np.ndarray  # bool: an edge contact (segment_kind not "curve")
 
 
-def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
-    """Which segments of ``ltca`` carry load (force finite and > 0), and of those their
-    force [N], load per length [N/mm], peak pressure [MPa], length and equivalent radius
-    [mm], and their sliding and entraining speeds [m/s] and slide-to-roll ratios [1] — the
-    signed one across the contact line, and the total abs(V_s)/V_r the friction model is fed —
-    at the pinion speed [rpm] (:func:`friction.kinematics.surface_velocities`); each
-    member's surface speed across the contact line [m/s] (the speed at which it passes
-    through the band, the flash temperature's), the Hertzian half-width [mm] and whether
-    the segment is an edge contact."""
+class LoadedSegments(NamedTuple):
+    """The loaded contact segments of an LTCA (:func:`loaded_segments`): ``loaded`` on the
+    LTCA's (torque, roll, pair, segment) grid, every other array 1-D over the loaded ones
+    (n,), in the order of ``ltca["force"].values[loaded]``."""
+
+    loaded: np.ndarray  # (T, J, K, S) bool: force finite and > 0
+    force: np.ndarray  # [N]
+    load_per_length: np.ndarray  # [N/mm]
+    pressure_max: np.ndarray  # [MPa]
+    length: np.ndarray  # [mm]
+    radius: np.ndarray  # [mm] equivalent radius across the contact line
+    half_width: np.ndarray  # [mm] Hertzian half-width 2w/(π p_max)
+    edge: np.ndarray  # bool: an edge contact (segment_kind not "curve")
+
+
+def loaded_segments(ltca: xr.Dataset) -> LoadedSegments:
+    """Which segments of an LTCA carry load, and their loads and contact geometry.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        The ``/ltca`` group: ``force`` [N] over (torque, roll, pair, segment),
+        ``load_per_length`` [N/mm], ``pressure_max`` [MPa], ``segment_length`` [mm],
+        ``equivalent_radius`` [mm] and, where present, ``segment_kind``.
+
+    Returns
+    -------
+    LoadedSegments
+        ``loaded`` (force finite and > 0, shape of ``force``) and, 1-D over the loaded
+        segments: force [N], load per length [N/mm], peak pressure [MPa], length and
+        equivalent radius [mm], the Hertzian half-width b = 2w/(π p_max) [mm] (NaN where
+        p_max is not > 0) and whether each is an edge contact.
+
+    Notes
+    -----
+    The segments of the loaded TCA (seed §3.3); b is the Hertz line contact's (Johnson
+    1985, Eq. 4.45), as the LTCA's own ``half_width``.
+    """
     F = ltca["force"].values  # (T, J, K, S)
     loaded = np.isfinite(F) & (F > 0)
     shape = F.shape
+    w = ltca["load_per_length"].values[loaded]
+    p = ltca["pressure_max"].values[loaded]
+    kind = ltca["segment_kind"].values if "segment_kind" in ltca else None
+    edge = (np.broadcast_to(kind != "curve", shape)[loaded] if kind is not None
+            else np.zeros(w.shape, bool))
+    return LoadedSegments(
+        loaded=loaded,
+        force=F[loaded],
+        load_per_length=w,
+        pressure_max=p,
+        length=np.broadcast_to(ltca["segment_length"].values, shape)[loaded],
+        radius=np.broadcast_to(ltca["equivalent_radius"].values, shape)[loaded],
+        # b = 2w/(π p_max) (hertz_half_width, without its checks: a NaN stays NaN here)
+        half_width=_half_width(w, p),
+        edge=edge,
+    )
+
+
+def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
+    """The loaded segments of ``ltca`` (:func:`loaded_segments`) with their sliding and
+    entraining speeds [m/s] and slide-to-roll ratios [1] — the signed one across the
+    contact line, and the total abs(V_s)/V_r the friction model is fed — at the pinion
+    speed [rpm] (:func:`friction.kinematics.surface_velocities`), and each member's surface
+    speed across the contact line [m/s] (the speed at which it passes through the band,
+    the flash temperature's)."""
+    seg = loaded_segments(ltca)
+    loaded = seg.loaded
+    shape = loaded.shape
     pts = np.broadcast_to(ltca["contact_point"].values, (*shape, 3))
     nrm = np.broadcast_to(ltca["contact_normal"].values, (*shape, 3))
     tan = np.broadcast_to(ltca["contact_tangent"].values, (*shape, 3))
@@ -345,18 +402,8 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
         check_meshing=False,
     )
     across = np.cross(nrm[loaded], tan[loaded])  # unit: n ⟂ t
-    w = ltca["load_per_length"].values[loaded]
-    p = ltca["pressure_max"].values[loaded]
-    kind = ltca["segment_kind"].values if "segment_kind" in ltca else None
-    edge = (np.broadcast_to(kind != "curve", shape)[loaded] if kind is not None
-            else np.zeros(w.shape, bool))
     return _Segments(
-        loaded=loaded,
-        force=F[loaded],
-        load_per_length=w,
-        pressure_max=p,
-        length=np.broadcast_to(ltca["segment_length"].values, shape)[loaded],
-        radius=np.broadcast_to(ltca["equivalent_radius"].values, shape)[loaded],
+        **seg._asdict(),
         sliding_velocity=kin["sliding_velocity"],
         rolling_velocity=kin["rolling_velocity"],
         slide_to_roll=kin["slide_to_roll"],
@@ -364,9 +411,6 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
                                                  kin["rolling_velocity"]),
         pinion_speed_across=np.abs(np.sum(kin["pinion_tangential"] * across, axis=-1)),
         gear_speed_across=np.abs(np.sum(kin["gear_tangential"] * across, axis=-1)),
-        # b = 2w/(π p_max) (hertz_half_width, without its checks: a NaN stays NaN here)
-        half_width=_half_width(w, p),
-        edge=edge,
     )
 
 

@@ -53,7 +53,7 @@ from contact.load_capacity.micropitting import (
     micropitting_safety,
     specific_film_thickness,
 )
-from friction.efficiency import uncertified_as_nan
+from friction.efficiency import loaded_segments, uncertified_as_nan
 from friction.lubricant import Lubricant, load_lubricant, temperature_range
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, ModelUnavailableError
@@ -245,32 +245,17 @@ def _check_inputs(ltca: xr.Dataset, friction: xr.Dataset) -> None:
 
 def _contact(ltca: xr.Dataset, friction: xr.Dataset) -> _Contact:
     """The loaded segments (force finite and > 0) of ``ltca`` with their loads and
-    geometry from ``ltca`` and their friction, film and speeds from ``friction``."""
-    F = ltca["force"].values
-    loaded = np.isfinite(F) & (F > 0)
-    shape = F.shape
-    w = ltca["load_per_length"].values[loaded]
-    p = ltca["pressure_max"].values[loaded]
-    kind = ltca["segment_kind"].values if "segment_kind" in ltca else None
-    edge = (np.broadcast_to(kind != "curve", shape)[loaded] if kind is not None
-            else np.zeros(w.shape, bool))
-    # b = 2w/(π p_max) (hertz_half_width, without its checks: a NaN stays NaN here)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        half_width = np.where(p > 0.0, 2.0 * w / (math.pi * np.where(p > 0.0, p, 1.0)), np.nan)
+    geometry from ``ltca`` (:func:`friction.efficiency.loaded_segments`) and their
+    friction, film and speeds from ``friction``."""
+    seg = loaded_segments(ltca)
+    loaded, shape = seg.loaded, seg.loaded.shape
     speed = friction["surface_speed"].transpose("member", ...).values
 
     def on(name: str) -> np.ndarray:
         return np.broadcast_to(friction[name].values, shape)[loaded]
 
     return _Contact(
-        loaded=loaded,
-        force=F[loaded],
-        load_per_length=w,
-        pressure_max=p,
-        length=np.broadcast_to(ltca["segment_length"].values, shape)[loaded],
-        radius=np.broadcast_to(ltca["equivalent_radius"].values, shape)[loaded],
-        half_width=half_width,
-        edge=edge,
+        **seg._asdict(),
         sliding_velocity=on("sliding_velocity"),
         rolling_velocity=on("rolling_velocity"),
         slide_to_roll_total=on("slide_to_roll_total"),
