@@ -430,6 +430,16 @@ def test_cholmod_is_the_default_and_solves_as_superlu():
     assert auto.solver == "cholmod"
     got = auto.solve(rhs)        # 60 loads: two of CHOLMOD's blocks of right-hand sides
     np.testing.assert_allclose(got, ref, rtol=1e-9, atol=1e-9 * np.abs(ref).max())
+    # unit loads as an influence build solves them: a few nonzeros per column (CHOLMOD's
+    # sparse solve), a zero column, and a whole block of zero loads (zero displacements)
+    sparse = np.zeros((model.n_dofs, 100))
+    pick = np.random.default_rng(6).choice(model.n_dofs, (5, 50))
+    sparse[pick, np.arange(50)] = 1.0
+    sparse[:, 7] = 0.0
+    ref = factorise(model.stiffness, fixed, "superlu").solve(sparse)
+    got = auto.solve(sparse)
+    np.testing.assert_allclose(got, ref, rtol=1e-9, atol=1e-9 * np.abs(ref).max())
+    assert not got[:, 50:].any() and not got[:, 7].any()
 
 
 def test_isolated_factorisation_solves_as_in_process():
