@@ -135,6 +135,63 @@ def test_with_diagonal_is_the_constructors_problem():
         first.with_diagonal(d[:-1], s2)
 
 
+def test_with_diagonal_skips_the_cholesky_only_where_weyl_proves_it(monkeypatch):
+    """A diagonal nowhere below the (checked) problem's keeps C positive definite (Weyl's
+    inequality: λ_min(A + D) ≥ λ_min(A) for D ≥ 0), so no Cholesky is paid; one entry below
+    it is checked again. Checked here by the smallest eigenvalue of every C made, over
+    random symmetric positive definite problems whose smallest eigenvalue is tiny (the
+    case where a wrong skip would show)."""
+    import contact.qp.problem as problem_module
+
+    calls = []
+    real = problem_module._check_positive_definite
+    monkeypatch.setattr(problem_module, "_check_positive_definite",
+                        lambda C: (calls.append(1), real(C)))
+    rng = np.random.default_rng(11)
+    for _ in range(20):
+        n = 8
+        q, _r = np.linalg.qr(rng.standard_normal((n, n)))
+        eig = np.r_[1e-9, rng.uniform(1e-6, 1e-4, n - 1)]
+        C = (q * eig) @ q.T
+        C = 0.5 * (C + C.T)
+        _, s, R, T = _good(n)
+        base = ContactProblem(C, s, R, T)
+        calls.clear()
+        up = base.with_diagonal(np.diag(C) + rng.uniform(0.0, 1e-5, n), s)
+        assert not calls
+        assert np.linalg.eigvalsh(up.compliance)[0] > 0.0
+        down = np.diag(C).copy()
+        down[rng.integers(n)] *= 0.999
+        try:
+            base.with_diagonal(down, s)
+        except NotPositiveDefiniteError:
+            pass
+        assert calls  # checked: a lower diagonal may lose positive definiteness
+
+
+def test_weber_iterations_stay_above_their_checked_base():
+    """Weber's iteration checks one base problem per roll, whose diagonal is the structural
+    compliance plus half the secant contact compliance at the load cap; the identity its
+    skip rests on: the secant compliance falls with the load (so it is least at the cap)
+    and the iteration's compliance (the tangent where above half the secant, else the
+    secant) is never below that floor, over loads from the floor to the cap."""
+    from contact.compliance.weber import WeberSegments
+
+    seg = WeberSegments.of(np.array([0.5, 1.0, 2.0]), np.array([2.0, 3.0, 4.0]),
+                           np.array([2.5, 2.0, 5.0]), e1=206000.0, nu1=0.3, e2=206000.0,
+                           nu2=0.3, r_eq=np.array([5.0, 20.0, 60.0]))
+    e_star = 206000.0 / (2 * (1 - 0.3**2))
+    depth = np.minimum([2.0, 3.0, 4.0], [2.5, 2.0, 5.0])
+    cap = np.pi * e_star * depth**2 / (4 * np.array([5.0, 20.0, 60.0])) * np.array(
+        [0.5, 1.0, 2.0])
+    floor = 0.5 * seg.compliance(cap, kind="secant")
+    loads = np.linspace(0.0, 1.0, 400)[:, None] * cap
+    cs, ct = seg.compliance(loads, kind=("secant", "tangent"))
+    assert np.all(np.diff(cs, axis=0) <= 0.0)
+    newton = (ct > 0.5 * cs) & (loads < cap)
+    assert np.all(np.where(newton, ct, cs) >= floor)
+
+
 def test_errors_are_one_family():
     assert issubclass(ProblemInputError, ContactError)
     assert issubclass(ContactError, LTCAError)

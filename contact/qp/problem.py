@@ -224,7 +224,11 @@ class ContactProblem:
         given compliance only on its diagonal, which is ``diagonal`` (½(C + Cᵀ) keeps a
         diagonal exactly), without checking again what it shares with this problem (the
         moment arms, torque, force limits and off-diagonal entries, and ‖C − Cᵀ‖, which no
-        diagonal changes); C' is checked positive definite.
+        diagonal changes); C' is checked positive definite (its Cholesky) unless its diagonal
+        is nowhere below this problem's, where it is so by Weyl's inequality (this problem
+        is positive definite: checked when it was made). Weber's iteration makes its
+        problems from one base with the smallest diagonal the iteration can reach, checked
+        once per roll.
 
         Parameters
         ----------
@@ -257,7 +261,11 @@ class ContactProblem:
             raise ProblemInputError("diagonal, separation: must be finite")
         C = self.compliance.copy()
         np.fill_diagonal(C, d)
-        _check_positive_definite(C)
+        if not np.all(d >= np.diagonal(self.compliance)):
+            # a diagonal nowhere below this (checked) problem's adds a positive
+            # semi-definite matrix to a positive definite one: positive definite by Weyl's
+            # inequality (λ_min(A + D) ≥ λ_min(A) + min D), with no Cholesky to pay
+            _check_positive_definite(C)
         skew = self._skew
         asym = float(skew / np.linalg.norm(C)) if skew else 0.0
         C.setflags(write=False)
