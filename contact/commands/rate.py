@@ -74,7 +74,8 @@ def run(args: argparse.Namespace) -> int:
     ds = rate(case, args.torque, args.speed, method=args.method)  # unknown: lists the names
     show = METHODS[args.method].tables or variable_lines
     print(show(ds))
-    if "rating_inputs" in ds.attrs:  # ISO 10300: the flank roughness it took
+    if ds.attrs.get("rating_method") == "iso10300" and "rating_inputs" in ds.attrs:
+        # ISO 10300: the flank roughness it took
         rz = json.loads(ds.attrs["rating_inputs"])["flank_roughness"]
         if "flank_roughness" not in (case.extra.get("rating") or {}):
             print(f"flank roughness Rz {rz[0]:g} / {rz[1]:g} um: the case's [operating] "

@@ -13,6 +13,9 @@ The methods
 ``iso10300``
     ISO 10300-1/-2/-3:2014 Method B1 (:func:`contact.load_capacity.iso10300.method.rate`),
     checked against ISO/TR 10300-30:2024's three worked samples.
+``agma2003``
+    ANSI/AGMA 2003-D19 (:func:`contact.load_capacity.agma2003.method.rate`), straight,
+    Zerol and spiral bevel gears without offset, checked against the standard's Annex E.
 
 Adding a method is one module with a function of the protocol of
 :class:`RatingMethod` and one entry in :data:`METHODS` (or :func:`register_method` from
@@ -99,11 +102,23 @@ def _iso10300() -> RatingMethod:
         "(tests/test_rating_iso10300.py)", tables, missing_tables)
 
 
+def _agma2003() -> RatingMethod:
+    from contact.load_capacity.agma2003.method import missing, tables
+    from contact.load_capacity.agma2003.method import rate as agma2003_rate
+
+    return RatingMethod(
+        "agma2003", agma2003_rate,
+        "ANSI/AGMA 2003-D19 (pitting resistance and bending strength of generated "
+        "straight, Zerol and spiral bevel gear teeth)",
+        "ANSI/AGMA 2003-D19 clauses 5-21 (SI equations); checked against its Annex E "
+        "worked example (tests/test_rating_agma2003.py)", tables, missing)
+
+
 #: name → :class:`RatingMethod`: every method that imported (one module each, imported
 #: under try/except as qpsolvers' backends, so a method whose module fails to import is
 #: absent with a warning in the log instead of breaking the package)
 METHODS: dict[str, RatingMethod] = {}
-for _entry in (_iso10300,):
+for _entry in (_iso10300, _agma2003):
     try:
         _method = _entry()
     except ImportError as _exc:  # pragma: no cover - the bundled methods import
