@@ -130,7 +130,8 @@ def test_unknown_step_names_list_the_available_ones():
     step the analysis needs are refused in one sentence naming the step and what is
     accepted."""
     with pytest.raises(InputError, match=r"^steps\.load_capacity: unknown step 'agma9999'; "
-                                         r"available: iso10300, scuffing_micropitting \(or a "
+                                         r"available: iso10300, scuffing_micropitting, "
+                                         r"agma2003 \(or a "
                                          r"callable f\(state\), "
                                          r"or None to skip it\)$"):
         AnalysisChain(load_capacity="agma9999")

@@ -310,3 +310,15 @@ def test_the_chain_rates_by_agma2003_chosen_by_name():
     direct = rate_load_capacity(CASE, [T1], N1, method="agma2003")
     np.testing.assert_allclose(rating["s_c"].values, direct["s_c"].values, rtol=1e-12)
     np.testing.assert_allclose(rating["s_t"].values, direct["s_t"].values, rtol=1e-12)
+
+
+def test_the_chain_refuses_a_bad_table_before_the_contact_analysis():
+    """A bad [agma2003] field stops ``run_analysis`` before any step runs (the rating is
+    analytic: the chain rates first), naming the field."""
+    from contact import run_analysis
+    from geometry.case import case_from_dict
+
+    doc = tomllib.loads(resolve_case(CASE).to_toml())
+    doc["agma2003"]["accuracy_number"] = 12
+    with pytest.raises(InputError, match=r"agma2003\.accuracy_number"):
+        run_analysis(case_from_dict(doc), [T1], steps={"load_capacity": "agma2003"})

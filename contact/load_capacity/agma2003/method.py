@@ -165,11 +165,11 @@ def agma2003_rating(case, torque, speed: float, *,
     Returns
     -------
     xarray.Dataset
-        Coordinates ``torque`` [N m] and ``member`` (pinion, gear); the factors (K_o, K_v,
+        Coordinates ``torque`` [N·m] and ``member`` (pinion, gear); the factors (K_o, K_v,
         C_s, K_s, K_mb, K_m, C_xc, K_x, I, J, C_p, C_L, K_L, C_H, K_T, C_R, K_R), the
         geometry (d_e, m_et, b, R_e, R_m, beta_m, r_c0), the allowable and permissible
         stress numbers s_ac, s_at, s_wc, s_wt [MPa] and power ratings P_ac, P_at, P_a [kW]
-        per member, and per torque the gear torque T2 [N m], the transmitted power P [kW],
+        per member, and per torque the gear torque T2 [N·m], the transmitted power P [kW],
         s_c (torque) and s_t (torque, member) [MPa], the ratios ``safety_pitting`` =
         s_wc/s_c and ``safety_bending`` = s_wt/s_t, and the power ratios P_ac/P, P_at/P.
         Every variable has ``units`` and ``long_name`` (with its equation); attributes
@@ -369,8 +369,9 @@ def tables(ds: xr.Dataset) -> str:
            f"m_et {f('m_et', 4)} mm, b {f('b')} mm, R_e {f('R_e')} mm, beta_m "
            f"{float(ds['beta_m']) * deg:.3f} deg, r_c0 {f('r_c0')} mm",
            "factors: " + "  ".join(f"{n} {f(n, 4)}" for n in (
-               "K_o", "K_v", "K_mb", "K_m", "C_s", "K_s", "C_xc", "K_x", "I", "K_T", "C_R",
-               "K_R", "S_H", "S_F")) + f"  C_p {f('C_p', 1)} MPa^0.5",
+               "K_o", "K_v", "K_mb", "K_m", "C_s", "K_s", "C_xc", "K_x", "I")),
+           "         " + "  ".join(f"{n} {f(n, 4)}" for n in (
+               "K_T", "C_R", "K_R", "S_H", "S_F")) + f"  C_p {f('C_p', 1)} MPa^0.5",
            ""]
     rows = [(label, *(f"{float(v):.{d}f}" for v in ds[name].values)) for name, label, d in (
         ("J", "J", 3), ("N_L", "N_L", 0), ("C_L", "C_L", 3), ("K_L", "K_L", 3),
