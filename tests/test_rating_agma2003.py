@@ -322,3 +322,16 @@ def test_the_chain_refuses_a_bad_table_before_the_contact_analysis():
     doc["agma2003"]["accuracy_number"] = 12
     with pytest.raises(InputError, match=r"agma2003\.accuracy_number"):
         run_analysis(case_from_dict(doc), [T1], steps={"load_capacity": "agma2003"})
+
+
+def test_the_docs_name_every_field_and_variable(annex_e):
+    """docs/rating.md's table lists every field of the [agma2003] table, and
+    docs/nomenclature.md's /rating row of the method every variable it writes."""
+    from contact.load_capacity.agma2003 import FIELDS
+
+    docs = Path(__file__).resolve().parents[1] / "docs"
+    rating = (docs / "rating.md").read_text(encoding="utf-8")
+    assert [f for f in FIELDS if f"`{f}`" not in rating] == []
+    row = next(ln for ln in (docs / "nomenclature.md").read_text(encoding="utf-8")
+               .splitlines() if '"agma2003"' in ln)
+    assert [v for v in annex_e.data_vars if f"`{v}`" not in row] == []

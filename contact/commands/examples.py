@@ -34,7 +34,8 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "wear": ("ltca wear --torque 200 --wear-coefficient 1e-17 --cycles 2.5e6 --steps 10 "
              "-o wear.nc",),
     "rate": ("ltca rate iso10300_30_sample1 --torque 300 --speed 1200",
-             "ltca rate iso10300_30_sample3 -o rating.nc"),
+             "ltca rate iso10300_30_sample3 -o rating.nc",
+             "ltca rate agma2003_d19_annex_e --method agma2003 --torque 162.70 --speed 1750"),
     "ehl": ("ltca ehl --pressure 1.0 --radius 20 --speed 5 --slide-to-roll 0.3 "
             "--temperature 75 --roughness 0 0 -o ehl.nc",),
     "friction-study": ("ltca friction-study -n 16 --nodes 128 -o friction_study.nc",

@@ -35,7 +35,8 @@ def register(sub) -> None:
                    help="pinion speed [rpm] (default the case's [operating] pinion_speed)")
     p.add_argument("--method", default="iso10300", metavar="NAME",
                    help="load-capacity rating method of the registry (default iso10300: "
-                   "ISO 10300-1/-2/-3:2014 Method B1; an unknown name lists those available; "
+                   "ISO 10300-1/-2/-3:2014 Method B1; agma2003: ANSI/AGMA 2003-D19, the "
+                   "case's [agma2003] table; an unknown name lists those available; "
                    "docs/extending.md adds one)")
     output_option(p, default="none: the tables only",
                   what="netCDF file of the /rating dataset")
