@@ -1,4 +1,4 @@
-"""Put the bundled face-milled pinions' blade tip planes on their root cones.
+"""Put the bundled pinions' blade tip planes on their root cones (face milling and hobbing).
 
 Run from the repository root::
 
@@ -12,9 +12,11 @@ the root line moves. ``ltca synthesize`` now places each pinion cut's tip plane 
 root line touches the pinion's root cone and lies nowhere above it (step 8,
 :func:`geometry.synthesis.tip_plane.tip_plane_on_root_cone`). The bundled cases were
 written before, by scripts whose other results have moved on since (re-running them would
-change every setting), so this script applies step 8 alone to every bundled face-milled
-case with a Generate pinion and leaves every other line as it is. Face-hobbed pinions
-(placed blades) are left alone.
+change every setting), so this script applies step 8 alone to every bundled case with a
+``[design]`` table and a Generate pinion and leaves every other line as it is. A
+face-hobbed pinion's blade is placed in the head (phase, offset angle): its move also
+turns the blade phase and the blade offset angle (the same rake plane through the new
+reference point, :func:`geometry.synthesis.tip_plane.move_tip_plane`).
 
 Run it again after a script that rewrites a bundled case's pinion tables without the
 synthesis (``derive_basic_settings.py``, ``derive_iso10300_samples.py``,
@@ -45,12 +47,10 @@ def placed_values(case) -> dict[tuple[str, str], dict[str, float]]:
     loaded case's pinion ("cutter"/"machine" tables); empty where nothing moves."""
     out: dict[tuple[str, str], dict[str, float]] = {}
     mem = case.pinion
-    if case.pair.method != "FM" or mem.process != "Generate":
+    if mem.process != "Generate":
         return out
     for flank in FLANKS:
         tool = mem.flank(flank)
-        if tool.blade.placed:
-            continue
         p = tip_plane_on_root_cone(tool.blade, tool.machine, mem.blank, mem.hand)
         if abs(p.moved) < _MOVE_TOL:
             continue
@@ -59,6 +59,10 @@ def placed_values(case) -> dict[tuple[str, str], dict[str, float]]:
                                   "profile_reference_height": b.profile_reference_height,
                                   "toprem_height": b.toprem_height,
                                   "flankrem_height": b.flankrem_height}
+        if tool.blade.placed:
+            out[("cutter", flank)] |= {"blade_phase": math.degrees(b.blade_phase),
+                                       "blade_offset_angle":
+                                           math.degrees(b.blade_offset_angle)}
         out[("machine", flank)] = {"radial_setting": s.radial_setting,
                                    "cradle_angle": math.degrees(s.cradle_angle),
                                    "swivel": math.degrees(s.swivel),

@@ -5,6 +5,7 @@ A few seconds each (transverse sections only, no FE solve)."""
 
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
 import math
 from pathlib import Path
@@ -169,6 +170,12 @@ def test_point_width_out_of_range_is_refused(tmp_path):
 #: tip planes; ltca synthesize does it as its step 8)
 FM_PINIONS = [DEFAULT, "kolivand2009_fm_11x41", "hypoid_iso23509_s2",
               "spiral_bevel_iso23509_s1", "iso23509_sample2_fm"]
+#: bundled face-hobbed cases (placed blades, separate settings per pinion flank; the
+#: `_measured` variant of the 12×41 pair has its base case's pinion)
+FH_PINIONS = ["kolivand2009_fh_12x41_reference", "kolivand2009_fh_12x41",
+              "kolivand2009_table54_A_fh_reference", "kolivand2009_table54_A_fh",
+              "kolivand2009_table54_B_fh_reference", "kolivand2009_table54_B_fh",
+              "iso10300_30_sample3"]
 
 
 def test_moving_the_tip_plane_keeps_the_flank_and_moves_the_root_line():
@@ -213,11 +220,100 @@ def test_moving_the_tip_plane_keeps_the_flank_and_moves_the_root_line():
     np.testing.assert_allclose(d1 - d0, delta, rtol=0.05)
 
 
-@pytest.mark.parametrize("name", FM_PINIONS)
+@pytest.mark.parametrize("flank", ["concave", "convex"])
+@pytest.mark.parametrize("hook", [0.0, 6.0])
+def test_moving_a_face_hobbing_tip_plane_keeps_the_flank(flank, hook):
+    """The same change of datum for a placed (face-hobbing) blade: the new reference point
+    is the old nominal edge line's point at the new tip plane, the phase and the blade
+    offset angle turn so that the rake plane stays the same plane (its directions a1, a2
+    equal to 1e-12), the machine chain is the old one followed by T(0, 0, Δ) at every roll
+    and cutter spin (the indexing κθ included; 1e-12 mm), the working flank is the same
+    surface (1e-9 mm against the Newton tolerance 1e-10 mm; measured 4e-11 mm) and the
+    root line moves deeper by Δ within 5 % (measured 0.998–1.009 Δ). The bundled blades
+    have no hook; a 6° hook (heights along the rake plane's leaning vertical line, moved
+    by Δ / cos γ_h) is checked on the same cut."""
+    from geometry.machine.cradle import machine_transform, trans
+    from geometry.machine.cutter import placement_vectors, profile_sections
+    from geometry.machine.meshing import solve_envelope
+    from geometry.machine.root_line import projection_point
+    from geometry.synthesis.tip_plane import generated_root_line, move_tip_plane
+
+    mem = _case("kolivand2009_fh_12x41_reference").pinion
+    tool = mem.flank(flank)
+    blade0 = dataclasses.replace(tool.blade, hook_angle=math.radians(hook))
+    assert blade0.placed and tool.machine.indexing_ratio != 0.0
+    delta = 0.3
+    blade, settings = move_tip_plane(blade0, tool.machine, delta)
+    assert blade.point_radius != blade0.point_radius
+    assert blade.blade_phase != blade0.blade_phase
+    for a, b in zip(placement_vectors(blade0)[1:], placement_vectors(blade)[1:], strict=True):
+        np.testing.assert_allclose(a, b, atol=1e-12)
+    q, theta = np.meshgrid(np.linspace(-0.5, 0.5, 5), np.linspace(-0.3, 0.3, 5))
+    old = machine_transform(tool.machine, q, theta)[0] @ trans([0.0, 0.0, delta])
+    assert np.abs(machine_transform(settings, q, theta)[0] - old).max() < 1e-12
+    corners = blank_outline(mem.blank).corners
+    uu, vv = np.meshgrid(np.linspace(0.0, 1.0, 7), np.linspace(0.1, 1.0, 7), indexing="ij")
+    p, _ = projection_point(corners, uu, vv)
+    kw = {"length_scale": mem.blank.outer_cone_distance,
+          "depth": mem.blank.outer_addendum + mem.blank.outer_dedendum}
+    a = solve_envelope(blade0, tool.machine, p[..., 0], p[..., 1], **kw)
+    b = solve_envelope(blade, settings, p[..., 0], p[..., 1], **kw)
+    working = ((a.reason == 0) & (b.reason == 0)
+               & (np.array(profile_sections(blade0).names)[a.section] != "edge")
+               & (np.array(profile_sections(blade).names)[b.section] != "edge"))
+    assert working.sum() >= 40
+    assert np.abs(a.position - b.position)[working].max() < 1e-9
+    u = np.array([0.0, 0.5, 1.0])
+    d0 = generated_root_line(blade0, tool.machine, mem.blank, mem.hand, u).depth
+    d1 = generated_root_line(blade, settings, mem.blank, mem.hand, u).depth
+    np.testing.assert_allclose(d1 - d0, delta, rtol=0.05)
+
+
+@pytest.mark.parametrize("name", ["kolivand2009_fh_12x41_reference",
+                                  "kolivand2009_table54_A_fh_reference",
+                                  "kolivand2009_table54_B_fh_reference",
+                                  "iso10300_30_sample3"])
+def test_face_hobbed_pinion_slot_width_at_the_root(name):
+    """The slot between the two separately cut flanks' generated root-line points at mid
+    face (measured as for the Formate gears above) against the blades' point width W,
+    the slot width at the mean root between the nominal profile lines (ISO 23509's
+    s_mn1, cases/derive_point_widths.py): W less the two edge radii's insets
+    r_e tan(45° − α/2), less d tan α for each cut whose root line lies d below the root
+    cone there (the nominal line has come in by that much), is the generated width up to
+    the difference of the generated tooth from ISO's nominal thickness. The synthesis
+    takes the mean normal backlash j_mn (0.110–0.161 mm) off the pinion's tooth at M;
+    tolerance j_mn + 0.02 mm (the mid-face section is not the hypoid pinion's mean point,
+    and the chord measure's few µm). Measured: +0.125, −0.029, +0.018, −0.038 mm (before
+    the tip planes were placed +0.129, −0.011, +0.028, −0.013 mm: the relation holds at
+    any tip plane; the placement changed the widths themselves from 0.897, 0.724, 0.791,
+    0.810 to 0.884, 0.843, 0.853, 0.735 mm, where W − insets is 0.919, 0.883, 0.880,
+    0.905 mm)."""
+    case = _case(name)
+    ts = tooth_sections(case, "pinion", np.array([0.45, 0.5, 0.55]))
+    assert not ts.one_cut
+    right = "concave" if ts.left_flank == "convex" else "convex"
+    pr = [ts.root_point(right, k) for k in range(3)]
+    pl = ts.root_point(ts.left_flank, 1, ts.pitch)
+    t = (pr[2] - pr[0]) / np.linalg.norm(pr[2] - pr[0])
+    d = pl - pr[1]
+    width = float(np.linalg.norm(d - (d @ t) * t))
+    expected = case.pinion.concave.blade.point_width
+    for flank in ("concave", "convex"):
+        b = case.pinion.flank(flank).blade
+        expected -= b.edge_radius * math.tan(0.25 * math.pi - 0.5 * b.blade_angle)
+        expected -= float(ts.root_depth(flank)[1]) * math.tan(b.blade_angle)
+    j_mn = case.extra["synthesis"]["mean_normal_backlash_mm"]
+    assert abs(width - expected) <= j_mn + 0.02, (width, expected, j_mn)
+
+
+@pytest.mark.parametrize("name", FM_PINIONS + FH_PINIONS)
 def test_pinion_root_lines_touch_the_root_cone(name):
     """Each separately cut pinion flank's generated root line lies nowhere above the
     blank's root cone and touches it (the gear's face cone keeps its clearance along the
-    whole face, and no cut goes deeper than that needs): at 21 sections no point lies
+    whole face, and no cut goes deeper than that needs), face milling and face hobbing
+    (before the face-hobbed pinions were placed, their cuts' highest points lay from
+    0.263 mm above the root cone (ISO/TR 10300-30 sample 3, concave, at the heel) to
+    0.234 mm below it (Table 5.4 A, convex)): at 21 sections no point lies
     above the root cone by more than 1e-6 mm, and the highest point, found by a bounded
     search between the neighbours of the highest section (an interior highest point is
     a flat minimum of the depth: 21 sections alone miss it by 0.3 µm on the ISO 23509
@@ -250,8 +346,8 @@ def test_pinion_root_lines_touch_the_root_cone(name):
 
 
 def test_tip_plane_refusals():
-    """A placed (face-hobbing) blade, a move that takes the toprem corner below the edge
-    radius, and a Formate cut are refused by name."""
+    """A move that takes the toprem corner below the edge radius, a depth that is not
+    finite and a Formate cut (face milling and face hobbing) are refused by name."""
     from geometry.synthesis.tip_plane import move_tip_plane, tip_plane_on_root_cone
 
     case = _case(DEFAULT)
@@ -260,18 +356,18 @@ def test_tip_plane_refusals():
         move_tip_plane(tool.blade, tool.machine, -tool.blade.toprem_height)
     with pytest.raises(InputError, match="depth: must be a finite length"):
         move_tip_plane(tool.blade, tool.machine, float("nan"))
-    fh = _case("kolivand2009_fh_12x41_reference").pinion.flank("concave")
-    with pytest.raises(InputError, match="placed"):
-        move_tip_plane(fh.blade, fh.machine, 0.1)
     gear = case.gear.flank("concave")
     with pytest.raises(InputError, match="Generate"):
         tip_plane_on_root_cone(gear.blade, gear.machine, case.gear.blank, case.gear.hand)
+    fh = _case("kolivand2009_fh_12x41_reference").gear
+    with pytest.raises(InputError, match="Generate"):
+        tip_plane_on_root_cone(fh.concave.blade, fh.concave.machine, fh.blank, fh.hand)
 
 
 def test_bundled_tip_planes_are_the_derivation_s(capsys):
     """cases/derive_tip_planes.py --check finds no bundled case to change: every bundled
-    face-milled pinion's tip planes are on its root cone as ``ltca synthesize`` places
-    them."""
+    pinion's tip planes (face milling and face hobbing) are on its root cone as ``ltca
+    synthesize`` places them."""
     spec = importlib.util.spec_from_file_location(
         "derive_tip_planes", ROOT / "cases" / "derive_tip_planes.py")
     mod = importlib.util.module_from_spec(spec)

@@ -212,8 +212,7 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
     settings = {n: float(v) * SETTING_VARIABLES[n].scale
                 for n, v in zip(names, values, strict=True) if n not in RELIEF_VARIABLES}
     new = tool_with_values(tool, settings) if settings else tool
-    if (settings and case.pair.method == "FM" and new.machine.process == "Generate"
-            and not new.blade.placed):
+    if settings and new.machine.process == "Generate":
         # a setting moves the cut's root line: its tip plane back onto the root cone, as
         # the synthesis' step 8 (the flank is unchanged)
         placed = tip_plane_on_root_cone(new.blade, new.machine, mem.blank, mem.hand)

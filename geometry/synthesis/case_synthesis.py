@@ -46,12 +46,13 @@ From a :class:`geometry.synthesis.basic_design.BasicDesign` this module builds a
    pinion flank (``tip_relief``, ``root_relief``, from ``relief_start`` of the way from M to
    each end) by the blade's flankrem and toprem, whose corners lie away from M, so that
    steps 4–6 stay exact.
-8. **Tip planes** (face milling, :func:`geometry.synthesis.tip_plane.tip_plane_on_root_cone`):
-   each pinion cut's blade tip plane moved along its cutter axis (the flank unchanged) so
-   that the root line it generates touches the pinion's root cone and lies nowhere above
-   it; step 5 placed it by the root below M and the gear face's rise over half the face
-   width, which left the two cuts of the default case 0.03 and 0.52 mm under the root cone
-   at their highest (docs/fe.md, "Root and slot bottom").
+8. **Tip planes** (:func:`geometry.synthesis.tip_plane.tip_plane_on_root_cone`, face
+   milling and face hobbing): each pinion cut's blade tip plane moved along its cutter axis
+   (the flank unchanged) so that the root line it generates touches the pinion's root cone
+   and lies nowhere above it; step 5 placed it by the root below M and the gear face's
+   rise over half the face width, which left the two cuts of the default case 0.03 and
+   0.52 mm under the root cone at their highest, and the face-hobbed pinions' cuts from
+   0.045 mm above it to 0.23 mm under it (docs/fe.md, "Root and slot bottom").
 
 Public functions
 ----------------
@@ -320,8 +321,8 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         if ref_gear_rotation is None:
             ref_gear_rotation = flanks[pf].mean.gear_rotation
     flanks[coast] = _coast_in_drive_frame(flanks[coast], flanks[drive])
-    if not gear.blade_groups:  # step 8, face milling: each cut's root line on the root cone
-        flanks = {pf: _tip_on_root_cone(fs, pair, kept) for pf, fs in flanks.items()}
+    # step 8: each cut's root line on the root cone (face milling and face hobbing)
+    flanks = {pf: _tip_on_root_cone(fs, pair, kept) for pf, fs in flanks.items()}
     say("the case")
     case = _assemble(basic, geom, gear, flanks, pinion_hand, gear_hand)
     return case, SynthesisReport(geom, gear, flanks)

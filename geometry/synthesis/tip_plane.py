@@ -19,6 +19,13 @@ tip its clearance along the whole face and cuts no deeper than that needs
 the root cone where their root lines are highest, and their bottoms differ only by the
 difference of their root lines' inclinations (docs/fe.md, "Root and slot bottom").
 
+A face-hobbing blade is placed in the head (phase, offset angle, rake and hook; design
+note "Face hobbing" §2.3) and the work indexes with the cutter spin, which commutes with a
+move along the cutter axis: the same change of datum holds, the reference point and the
+placement angles following the edge (:func:`move_tip_plane`). The face-hobbed pinions'
+cuts of step 5 (tip plane through the root below M) lay from 0.26 mm above to 0.23 mm
+below the root cone at their highest; step 8 places them as the face-milled ones.
+
 Public functions
 ----------------
 move_tip_plane           the same cutting surface with its tip plane moved along the axis
@@ -38,7 +45,7 @@ from scipy.optimize import minimize_scalar
 from geometry.case import Blank
 from geometry.core.errors import InputError
 from geometry.machine.cradle import MachineSettings
-from geometry.machine.cutter import Blade
+from geometry.machine.cutter import Blade, placement_vectors
 from geometry.machine.root_line import below_root_cone, root_line_points
 
 __all__ = [
@@ -59,56 +66,82 @@ _U_SAMPLES = np.linspace(0.0, 1.0, 11)
 
 def move_tip_plane(blade: Blade, settings: MachineSettings, depth: float
                    ) -> tuple[Blade, MachineSettings]:
-    """The blade and settings of the same cutting surface with the tip plane ``depth``
+    """The blade and settings of the same cutting edge with the tip plane ``depth``
     further along the cutter axis (towards the work: a deeper cut).
 
     Parameters
     ----------
-    blade : geometry.machine.cutter.Blade — a face-milling blade (not placed off the
-        head's axial plane)
-    settings : geometry.machine.cradle.MachineSettings — its machine settings
+    blade : geometry.machine.cutter.Blade — a face-milling blade, or a placed
+        (face-hobbing) blade: phase θ_b, offset angle δ_b, rake and hook γ_h
+    settings : geometry.machine.cradle.MachineSettings — its machine settings (the indexing
+        ratio of face hobbing included)
     depth : float — [mm] Δ, the tip plane's move along the cutter axis towards the tips
         (> 0 deeper, < 0 shallower)
 
     Returns
     -------
     (Blade, MachineSettings)
-        Every height above the tip grows by Δ (circular profile reference, toprem and
-        flankrem heights), the point radius becomes r_p − σ Δ tan α (the nominal line's
-        radius at the new tip plane; σ = +1 outside, −1 inside blade); in the machine
-        chain the cutter frame is moved by T(0, 0, Δ): its component along the cradle axis
-        Δ cos i goes to the sliding base (a shift along the cradle axis commutes with the
-        cradle's rotation), the rest Δ sin i (sin j, −cos j) in the cradle plane changes
-        the radial setting and turns the cradle angle by δ and the swivel by −δ.
+        The new reference point M' is the nominal profile line's point at the new tip
+        plane: on the edge's nominal line in the rake plane at the height
+        −Δ / cos γ_h below the old tip (the rake plane's "vertical" line a2 leans by the
+        hook γ_h from the cutter axis), M' = M + (Δ / cos γ_h)(a2 − σ tan α a1)
+        (:func:`geometry.machine.cutter.placement_vectors`; σ = +1 outside, −1 inside
+        blade). Every height above the tip grows by Δ / cos γ_h (circular profile
+        reference, toprem and flankrem heights); the point radius becomes |M'| in the
+        tip plane — r_p − σ Δ tan α for a face-milling blade — and, for a placed blade,
+        the phase turns by δ = ∠M' − ∠M and the blade offset angle by −δ, so that the rake
+        plane (its directions a1, a2, which depend on θ_b + γ_a and γ_h only) is the same
+        plane through M'. In the machine chain the cutter frame is moved by T(0, 0, Δ):
+        its component along the cradle axis Δ cos i goes to the sliding base (a shift
+        along the cradle axis commutes with the cradle's rotation), the rest
+        Δ sin i (sin j, −cos j) in the cradle plane changes the radial setting and turns
+        the cradle angle by δ and the swivel by −δ (other δ than the blade's).
 
     Raises
     ------
     InputError
-        A placed (face-hobbing) blade; a move that leaves a height of the profile below
-        the tip (the circular profile's reference height below 0, the toprem corner
-        below the edge radius), named by the field.
+        A move that leaves a height of the profile below the tip (the circular profile's
+        reference height below 0, the toprem corner below the edge radius) or a placement
+        angle out of its range, named by the field; a depth that is not finite.
 
     Notes
     -----
     The chain is that of :func:`geometry.machine.cradle.machine_transform` (seed
-    Eq. 2.7a): M(q) = … R_z(q_c + q) T(S_r, 0, 0) R_z(j) R_x(i); the new settings give
-    M'(q) = M(q) T(0, 0, Δ) for every roll q, modified roll and helical motion included
-    (tests/test_generated_root.py checks it to 1e-12 mm and that the generated flank is
-    unchanged).
+    Eq. 2.7a): M(q, θ) = R_z(−φ(q, θ)) … R_z(q_c + q) T(S_r, 0, 0) R_z(j) R_x(i),
+    followed by the cutter spin R_z(θ), which commutes with T(0, 0, Δ); the new settings
+    give M'(q, θ) = M(q, θ) T(0, 0, Δ) for every roll q and spin θ, modified roll, helical
+    motion and the face-hobbing indexing φ = φ_roll(q) + κθ included (κ is unchanged).
+    The blade edge e'(s') in the moved cutter frame is the old edge e(s) less (0, 0, Δ),
+    point by point above the new edge radius, so the cutting surface — a surface of
+    revolution in face milling, the edge swept by spin and indexing in face hobbing
+    (design note "Face hobbing" §2.3) — and the generated flank are unchanged
+    (tests/test_generated_root.py checks the chain to 1e-12 mm and the flank to 1e-9 mm,
+    face milling and face hobbing).
     """
-    if blade.placed:
-        raise InputError("blade: a placed (face-hobbing) blade's tip plane is not moved here")
     d = float(depth)
     if not math.isfinite(d):
         raise InputError(f"depth: must be a finite length [mm], got {depth}")
     sg = blade.sigma
-    fields = {"point_radius": blade.point_radius - sg * d * math.tan(blade.blade_angle)}
+    if blade.placed:
+        m, a1, a2 = placement_vectors(blade)
+        dh = d / math.cos(blade.hook_angle)
+        m_new = m + dh * (a2 - sg * math.tan(blade.blade_angle) * a1)
+        turn = math.atan2(m_new[1], m_new[0]) - blade.blade_phase
+        turn = math.remainder(turn, 2.0 * math.pi)
+        phase = blade.blade_phase + turn
+        if abs(phase) > 2.0 * math.pi:
+            phase = math.remainder(phase, 2.0 * math.pi)
+        fields = {"point_radius": math.hypot(m_new[0], m_new[1]), "blade_phase": phase,
+                  "blade_offset_angle": blade.blade_offset_angle - turn}
+    else:
+        dh = d
+        fields = {"point_radius": blade.point_radius - sg * d * math.tan(blade.blade_angle)}
     if blade.profile == "circular":
-        fields["profile_reference_height"] = blade.profile_reference_height + d
+        fields["profile_reference_height"] = blade.profile_reference_height + dh
     if blade.toprem_angle != 0.0:
-        fields["toprem_height"] = blade.toprem_height + d
+        fields["toprem_height"] = blade.toprem_height + dh
     if blade.flankrem_angle != 0.0:
-        fields["flankrem_height"] = blade.flankrem_height + d
+        fields["flankrem_height"] = blade.flankrem_height + dh
     try:
         new_blade = replace(blade, **fields)
     except InputError as exc:
@@ -178,7 +211,8 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
 
     Parameters
     ----------
-    blade, settings : a Generate cut's blade and machine settings (face milling)
+    blade, settings : a Generate cut's blade and machine settings (face milling or face
+        hobbing)
     blank : geometry.case.Blank
     hand : str
     tol : float — [mm] accepted distance of the root line's highest point from the
@@ -200,8 +234,10 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     The root line must not rise above the root cone anywhere along the face (the mating
     member's face cone keeps its clearance there, ISO 23509's whole depth) and should not
     run deeper than that needs (it weakens the tooth): its highest point is put on the
-    root cone. Its height over the face is sampled at 11 sections and refined by a
-    bounded scalar search between the neighbours of the highest; the move is solved by
+    root cone. Its height over the face is sampled at 11 sections and each sampled local
+    highest point (an end section included) refined by a bounded scalar search between
+    its neighbours (a face-hobbed root line can peak a fraction of a µm between the heel
+    section and the next); the move is solved by
     secant steps (the root line moves with the tip plane nearly one to one).
     """
     if settings.process != "Generate":
@@ -215,13 +251,19 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
             raise InputError(f"{blade.side} blade: its root line is not generated at face "
                              f"fractions {np.round(bad, 2).tolist()}; no tip height puts it "
                              "on the root cone")
-        k = int(np.argmin(line.depth))
-        u_best, d_best = float(line.u[k]), float(line.depth[k])
-        lo, hi = float(line.u[max(k - 1, 0)]), float(line.u[min(k + 1, line.u.size - 1)])
-        if 0 < k < line.u.size - 1:
+        dep, last = line.depth, line.u.size - 1
+        k = int(np.argmin(dep))
+        u_best, d_best = float(line.u[k]), float(dep[k])
+        # every sampled local height maximum, an end section's too (a face-hobbed root
+        # line can rise a fraction of a µm between the heel section and its neighbour),
+        # refined between its neighbours
+        for k in range(last + 1):
+            if (k > 0 and dep[k] > dep[k - 1]) or (k < last and dep[k] > dep[k + 1]):
+                continue
             res = minimize_scalar(
                 lambda x: float(generated_root_line(b, s, blank, hand, [x]).depth[0]),
-                bounds=(lo, hi), method="bounded", options={"xatol": 1e-4})
+                bounds=(float(line.u[max(k - 1, 0)]), float(line.u[min(k + 1, last)])),
+                method="bounded", options={"xatol": 1e-4})
             if res.fun < d_best:
                 u_best, d_best = float(res.x), float(res.fun)
         return u_best, d_best
