@@ -340,11 +340,15 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
                 state.groups["/rating/flash_temperature"] = flash
 
     def inputs(state: ChainState) -> None:
-        """Before any work: the rating (analytic, < 0.5 s for ISO 10300 and ANSI/AGMA
-        2003), so that a bad ``[rating]``, ``[agma2003]`` or ``[design]`` table is refused
-        before the LTCA, not after it. A method that rates from the analysis' datasets is
-        left to its step."""
-        if method in ("iso10300", "agma2003"):
+        """Before any work: the rating of a method that rates the nominal geometry
+        (:attr:`contact.load_capacity.RatingMethod.nominal`: ISO 10300, ANSI/AGMA 2003;
+        analytic, < 0.5 s), so that a bad ``[rating]``, ``[agma2003]`` or ``[design]``
+        table is refused before the LTCA, not after it. A method that rates from the
+        analysis' datasets is left to its step."""
+        from contact.load_capacity.methods import METHODS
+
+        entry = METHODS.get(method)
+        if entry is not None and entry.nominal:
             state.prepared["load_capacity"] = _rating_of(state, method)
 
     rating_step.__name__ = rating_step.__qualname__ = f"rating_{method}"

@@ -226,7 +226,34 @@ def test_the_analysis_chain_rates_by_a_registered_method_chosen_by_name(toy):
     np.testing.assert_allclose(rating["F_mt1"].values, iso["F_mt1"].values, rtol=1e-12)
     assert "flash_temperature" not in tree["rating"].children  # ISO 10300's alone
     assert "scuffing_micropitting" in tree.children
+    assert not METHODS[toy].nominal  # a plug-in rates after the analysis unless it says so
     unregister_method(toy)
     with pytest.raises(InputError, match=r"steps\.load_capacity: unknown step "
                                          r"'mean_point_forces'; available: iso10300"):
         run_analysis(None, [250.0], steps={"load_capacity": toy})
+
+
+def test_a_nominal_method_is_rated_before_any_work():
+    """A method that says it rates the nominal geometry (``nominal=True``, as ISO 10300 and
+    ANSI/AGMA 2003 do) is rated before the chain's first step, so a bad table is refused
+    before the contact analysis: here a nominal method refusing its input stops the chain
+    before its LTCA step (a callable that records being called) ever runs."""
+    from contact import run_analysis
+
+    assert METHODS["iso10300"].nominal and METHODS["agma2003"].nominal
+
+    def refuses(case, torque, speed, **_kw):
+        raise InputError("rating.toy_field: must be in [0, 1], got 2")
+
+    calls = []
+    register_method("refusing_nominal", refuses, title="a nominal method refusing its input",
+                    source="this test", nominal=True)
+    try:
+        with pytest.raises(InputError, match="toy_field"):
+            run_analysis(None, [250.0], geometry=False, root_stress=False,
+                         mesh_interface=False,
+                         steps={"load_capacity": "refusing_nominal",
+                                "ltca": lambda state: calls.append("ltca")})
+    finally:
+        unregister_method("refusing_nominal")
+    assert calls == []

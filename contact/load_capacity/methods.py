@@ -80,6 +80,12 @@ class RatingMethod:
         records the reason and goes on without ``/rating`` (the analysis chain's
         load-capacity step), where :func:`rate` itself would refuse the case. None: every
         case can be rated.
+    nominal : bool
+        True: the method rates the nominal geometry from the case's tables alone (it reads
+        no analysis dataset), so the analysis chain rates it before any work and a bad
+        table is refused before the contact analysis, not after it (ISO 10300 Method B1,
+        ANSI/AGMA 2003). False (default, a plug-in's unless it says so): rated in its step,
+        after the analysis whose datasets it may read.
     """
 
     name: str
@@ -88,6 +94,7 @@ class RatingMethod:
     source: str
     tables: Callable[[xr.Dataset], str] | None = None
     missing: Callable[[Any], str] | None = None
+    nominal: bool = False
 
 
 def _iso10300() -> RatingMethod:
@@ -99,7 +106,7 @@ def _iso10300() -> RatingMethod:
         "ISO 10300-1/-2/-3:2014 Method B1 (pitting and tooth root strength of bevel and "
         "hypoid gears)",
         "ISO 10300-1/-2/-3:2014; checked against ISO/TR 10300-30:2024 samples 1-3 "
-        "(tests/test_rating_iso10300.py)", tables, missing_tables)
+        "(tests/test_rating_iso10300.py)", tables, missing_tables, nominal=True)
 
 
 def _agma2003() -> RatingMethod:
@@ -111,7 +118,7 @@ def _agma2003() -> RatingMethod:
         "ANSI/AGMA 2003-D19 (pitting resistance and bending strength of generated "
         "straight, Zerol and spiral bevel gear teeth)",
         "ANSI/AGMA 2003-D19 clauses 5-21 (SI equations); checked against its Annex E "
-        "worked example (tests/test_rating_agma2003.py)", tables, missing)
+        "worked example (tests/test_rating_agma2003.py)", tables, missing, nominal=True)
 
 
 #: name → :class:`RatingMethod`: every method that imported (one module each, imported
@@ -141,7 +148,7 @@ def available_methods() -> list[str]:
 def register_method(name: str, function: Callable[..., xr.Dataset], *, title: str,
                     source: str, tables: Callable[[xr.Dataset], str] | None = None,
                     missing: Callable[[Any], str] | None = None,
-                    replace: bool = False) -> RatingMethod:
+                    nominal: bool = False, replace: bool = False) -> RatingMethod:
     """Add a rating method to the registry (a plug-in's; the bundled ones are entries of
     :data:`METHODS`).
 
@@ -159,6 +166,9 @@ def register_method(name: str, function: Callable[..., xr.Dataset], *, title: st
     missing : callable, optional
         Why a case cannot be rated although nothing in it is wrong, or ``""``
         (:attr:`RatingMethod.missing`).
+    nominal : bool
+        The method reads no analysis dataset, so the analysis chain rates it before any
+        work (:attr:`RatingMethod.nominal`; default False).
     replace : bool
         Allow replacing a registered method of the same name (default False).
 
@@ -190,7 +200,8 @@ def register_method(name: str, function: Callable[..., xr.Dataset], *, title: st
         raise PluginError(f"tables: must be callable or None, got {tables!r}")
     if missing is not None and not callable(missing):
         raise PluginError(f"missing: must be callable or None, got {missing!r}")
-    METHODS[name] = RatingMethod(name, function, title, source, tables, missing)
+    METHODS[name] = RatingMethod(name, function, title, source, tables, missing,
+                                 bool(nominal))
     return METHODS[name]
 
 
