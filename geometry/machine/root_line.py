@@ -198,16 +198,24 @@ def tip_sections(blade: Blade) -> ProfileSections:
 
 
 def root_line_points(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
-                     u) -> np.ndarray:
+                     u, start: np.ndarray | None = None) -> np.ndarray:
     """(K, 2) v [1], φ [rad] of a cut's root line in the sections ``u`` (K,) [1].
 
     The generated points of the blade's s = 0 point, where its edge radius leaves the tip
     plane (module docstring); φ of the member as cut (a left-hand member mirrored), not
     turned to a reference tooth; NaN where the fillet march does not reach s = 0.
+
+    ``start`` (K, 4), optional: the fillet march's start s, θ, q, v in each section
+    (:func:`section_envelope`'s third result), e.g. those of a nearby cut of the same blade
+    with its tip plane moved (:func:`geometry.synthesis.tip_plane.tip_plane_on_root_cone`
+    reuses them over its iterations); the march solves each of its points to the Newton
+    tolerance from there, so the points are the same as from this cut's own starts
+    (solved by default) wherever the march reaches s = 0.
     """
     u = np.atleast_1d(np.asarray(u, dtype=float))
     corners = blank_outline(blank).corners
-    _, _, start = section_envelope(blade, settings, blank, u)
+    if start is None:
+        _, _, start = section_envelope(blade, settings, blank, u)
     sm, vm, pm, _ = section_march(blade, settings, blank, corners, u, start, hand == "left")
     at0 = np.isfinite(sm[:, -1]) & (np.abs(sm[:, -1]) < 1e-12)
     return np.column_stack([np.where(at0, vm[:, -1], np.nan),

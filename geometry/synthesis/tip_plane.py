@@ -46,7 +46,7 @@ from geometry.case import Blank
 from geometry.core.errors import InputError
 from geometry.machine.cradle import MachineSettings
 from geometry.machine.cutter import Blade, placement_vectors
-from geometry.machine.root_line import below_root_cone, root_line_points
+from geometry.machine.root_line import below_root_cone, root_line_points, section_envelope
 
 __all__ = [
     "RootLine",
@@ -168,7 +168,7 @@ class RootLine(NamedTuple):
 
 
 def generated_root_line(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
-                        u=_U_SAMPLES) -> RootLine:
+                        u=_U_SAMPLES, *, start: np.ndarray | None = None) -> RootLine:
     """The root line a cut generates: where its blade's edge radius leaves the tip plane.
 
     Parameters
@@ -177,6 +177,9 @@ def generated_root_line(blade: Blade, settings: MachineSettings, blank: Blank, h
     blank : geometry.case.Blank — the member's blank (its root cone is the datum)
     hand : str — ``"left"`` or ``"right"``
     u : array_like (K,) — [1] lengthwise fractions (toe 0, heel 1), K ≥ 1
+    start : ndarray (K, 4), optional — the fillet march's starts (s [mm], θ [rad], q [rad],
+        v [1]) per section, e.g. a nearby cut's (:func:`geometry.machine.root_line.
+        root_line_points`); default this cut's own
 
     Returns
     -------
@@ -191,7 +194,7 @@ def generated_root_line(blade: Blade, settings: MachineSettings, blank: Blank, h
     root_line_points`), the same points as the FE tooth's ``ToothSections.root_line``.
     """
     u = np.atleast_1d(np.asarray(u, dtype=float))
-    v = root_line_points(blade, settings, blank, hand, u)[:, 0]
+    v = root_line_points(blade, settings, blank, hand, u, start)[:, 0]
     return RootLine(u, v, below_root_cone(blank, u, v))
 
 
@@ -237,15 +240,33 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     root cone. Its height over the face is sampled at 11 sections and each sampled local
     highest point (an end section included) refined by a bounded scalar search between
     its neighbours (a face-hobbed root line can peak a fraction of a µm between the heel
-    section and the next); the move is solved by
-    secant steps (the root line moves with the tip plane nearly one to one).
+    section and the next); the move is solved by secant steps (the root line moves with
+    the tip plane nearly one to one, and nearly as a whole: between the steps only the
+    samples and the last highest point's section are evaluated, and the whole search
+    confirms the converged placement).
     """
     if settings.process != "Generate":
         raise InputError("settings: only a Generate cut's tip plane is placed on the root "
                          "cone (a Formate tip plane holds a root generatrix already)")
 
+    # the fillet march's starts, solved once on the given cut's sampled sections (the
+    # envelope over a section is a third of a root line's cost) and reused, interpolated
+    # between the samples, for the moved tip planes and the sections between: the march
+    # solves each root-line point from them to its Newton tolerance; a line it does not
+    # complete from them is solved from its own starts
+    _, _, sampled = section_envelope(blade, settings, blank, _U_SAMPLES)
+
+    def root_line(b: Blade, s: MachineSettings, u=_U_SAMPLES) -> RootLine:
+        u = np.atleast_1d(np.asarray(u, dtype=float))
+        if np.all(np.isfinite(sampled)):  # between the samples: interpolated starts
+            start = np.column_stack([np.interp(u, _U_SAMPLES, c) for c in sampled.T])
+            line = generated_root_line(b, s, blank, hand, u, start=start)
+            if np.all(np.isfinite(line.depth)):
+                return line
+        return generated_root_line(b, s, blank, hand, u)
+
     def highest(b: Blade, s: MachineSettings) -> tuple[float, float]:
-        line = generated_root_line(b, s, blank, hand)
+        line = root_line(b, s)
         if not np.all(np.isfinite(line.depth)):
             bad = line.u[~np.isfinite(line.depth)]
             raise InputError(f"{blade.side} blade: its root line is not generated at face "
@@ -261,27 +282,43 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
             if (k > 0 and dep[k] > dep[k - 1]) or (k < last and dep[k] > dep[k + 1]):
                 continue
             res = minimize_scalar(
-                lambda x: float(generated_root_line(b, s, blank, hand, [x]).depth[0]),
+                lambda x: float(root_line(b, s, [x]).depth[0]),
                 bounds=(float(line.u[max(k - 1, 0)]), float(line.u[min(k + 1, last)])),
                 method="bounded", options={"xatol": 1e-4})
             if res.fun < d_best:
                 u_best, d_best = float(res.x), float(res.fun)
         return u_best, d_best
 
+    def near(b: Blade, s: MachineSettings, u_last: float) -> tuple[float, float]:
+        # the sampled sections and the last highest point's: the root line moves with the
+        # tip plane nearly as a whole, so its highest point stays where it was found
+        line = root_line(b, s, np.r_[_U_SAMPLES, u_last])
+        if not np.all(np.isfinite(line.depth)):
+            return highest(b, s)
+        k = int(np.argmin(line.depth))
+        return float(line.u[k]), float(line.depth[k])
+
     moved, (u_top, top) = 0.0, highest(blade, settings)
     b, s = blade, settings
     prev = None
-    for _ in range(12):
+    searched = True  # (u_top, top) from the whole search, not from near()
+    for _ in range(16):
         if abs(top) <= tol:
-            break
+            if searched:
+                break
+            u_top, top = highest(b, s)  # the whole search confirms it, or goes on
+            searched = True
+            if abs(top) <= tol:
+                break
         slope = 1.0 if prev is None or prev[0] == moved else (top - prev[1]) / (moved - prev[0])
         if not 0.5 < slope < 2.0:  # the depth grows with the move nearly one to one
             slope = 1.0
         prev = (moved, top)
         moved -= top / slope
         b, s = move_tip_plane(blade, settings, moved)
-        u_top, top = highest(b, s)
+        u_top, top = near(b, s, u_top)
+        searched = False
     else:
         raise InputError(f"{blade.side} blade: the tip plane does not converge onto the "
                          f"root cone (highest root-line point {top:.3g} mm below it)")
-    return TipPlacement(b, s, moved, u_top, generated_root_line(b, s, blank, hand))
+    return TipPlacement(b, s, moved, u_top, root_line(b, s))
