@@ -62,6 +62,11 @@ __all__ = [
 TOUCH_TOLERANCE = 1e-9
 #: lengthwise fractions where the root line is first sampled (then refined at its highest)
 _U_SAMPLES = np.linspace(0.0, 1.0, 11)
+#: [1] the step inside an end section at which a root line's highest end section is
+#: probed: an end higher than the point this far inside is its interval's highest (a
+#: smooth root line does not turn twice between two samples 0.1 apart); lower, the
+#: interval is searched (a face-hobbed root line can peak just inside the heel)
+_END_PROBE = 1e-3
 
 
 def move_tip_plane(blade: Blade, settings: MachineSettings, depth: float
@@ -238,9 +243,9 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     member's face cone keeps its clearance there, ISO 23509's whole depth) and should not
     run deeper than that needs (it weakens the tooth): its highest point is put on the
     root cone. Its height over the face is sampled at 11 sections and each sampled local
-    highest point (an end section included) refined by a bounded scalar search between
-    its neighbours (a face-hobbed root line can peak a fraction of a µm between the heel
-    section and the next); the move is solved by secant steps (the root line moves with
+    highest point refined by a bounded scalar search between its neighbours; an end
+    section is that only where the point 0.001 inside it is higher (a face-hobbed root line
+    can peak a fraction of a µm between the heel section and the next); the move is solved by secant steps (the root line moves with
     the tip plane nearly one to one, and nearly as a whole: between the steps only the
     samples and the last highest point's section are evaluated, and the whole search
     confirms the converged placement).
@@ -281,6 +286,10 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
         for k in range(last + 1):
             if (k > 0 and dep[k] > dep[k - 1]) or (k < last and dep[k] > dep[k + 1]):
                 continue
+            if k in (0, last):  # an end section higher than just inside it is the highest
+                x = float(line.u[k]) + (_END_PROBE if k == 0 else -_END_PROBE)
+                if float(root_line(b, s, [x]).depth[0]) >= dep[k]:
+                    continue
             res = minimize_scalar(
                 lambda x: float(root_line(b, s, [x]).depth[0]),
                 bounds=(float(line.u[max(k - 1, 0)]), float(line.u[min(k + 1, last)])),
