@@ -78,9 +78,11 @@ def test_machine_settings_are_the_case_files(page):
     blade = table["point radius r_p"]
     assert float(blade[1]) == pytest.approx(raw["pinion"]["cutter"]["concave"]["point_radius"],
                                             abs=1e-4)
-    # the pinion's modified roll: one row per coefficient given, none for the motions absent
+    # the pinion's modified roll: one row per coefficient given, none for the motions absent;
+    # printed to 4 significant digits (machine_sheet's "{x:.4g}"), whose rounding is at most
+    # half a unit of the 4th digit: 5e-4 relative (0.003113 for 2C = 0.0031126)
     assert float(table["modified roll 2C"][1]) == pytest.approx(
-        raw["pinion"]["machine"]["concave"]["modified_roll"][0], rel=1e-4)
+        raw["pinion"]["machine"]["concave"]["modified_roll"][0], rel=5e-4)
     assert "vertical motion V1" not in table
     gear = page.findall(".//h:table[@id='machine-gear']/h:tbody/h:tr", NS)
     assert gear and "helical motion H1" not in {_text(r[0]) for r in gear}

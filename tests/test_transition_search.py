@@ -76,17 +76,20 @@ def test_batched_search_equals_the_sequential_one(misalignment):
 
 
 def test_one_handover_where_the_pinion_corner_holes_are():
-    """At ΔE = ΔP = −0.12 mm the contact curves of rolls 0.70–0.73 rad cross the pinion's
-    flankrem corner (gear column v = 5, where the mapped corner nodes give way to the
-    corner's strip of unmapped ones). Pair 0's UTE is smooth there, so its difference to
-    the preceding pair changes sign once in that bracket (the handover). Measured: once;
-    before the corner holes were filled from the two faces (contact.utca.easeoff), 7 times
-    (a ±50 µrad zig-zag from the 65 µrad step of the spline's fill).
+    """At ΔE = −0.15, ΔP = −0.06 mm the contact curves of rolls 0.61–0.64 rad cross the
+    pinion's flankrem corner (gear column v = 5, where the mapped corner nodes give way to
+    the corner's strip of unmapped ones: nodes u = 32–40 there, at rolls 0.60–0.77 rad).
+    Pair 0's UTE is smooth there, so its difference to the preceding pair changes sign once
+    in that bracket (the handover). Measured: once, at 0.625 rad. Before the corner holes
+    were filled from the two faces (contact.utca.easeoff), on the design bundled then, at
+    ΔE = ΔP = −0.12 mm (where its corner nodes were at rolls 0.61–0.71 rad; the
+    re-optimised design's strip falls between that misalignment's grid nodes there), 7
+    times (a ±50 µrad zig-zag from the 65 µrad step of the spline's fill).
     """
     case = resolve_case(None)
-    eo = ease_off(case, misalignment=Misalignment(delta_E=-0.12, delta_P=-0.12))
+    eo = ease_off(case, misalignment=Misalignment(delta_E=-0.15, delta_P=-0.06))
     h = transitions_module._PairDifference(eo, EaseOffFields(eo), "second_order", 41)
-    x = np.linspace(0.70, 0.73, 121)  # 0.25 mrad steps
+    x = np.linspace(0.61, 0.64, 121)  # 0.25 mrad steps
     d = h(x, np.full_like(x, -1.0))
     assert np.all(np.abs(d) < transitions_module._OUT_OF_MESH)  # both pairs in mesh
     s = np.sign(d[d != 0.0])
