@@ -994,7 +994,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     def bearing_design(x: np.ndarray) -> float:
         values = {n: float(v) for n, v in zip(bearing, x, strict=True)} | fixed
         b = with_flank_options(basic, flank, values)
-        return evaluate(values, "bearing", lambda: synthesize(b, memo=memo)[0], n_bearing,
+        return evaluate(values, "bearing",
+                        lambda: synthesize(b, memo=memo, tip_planes=False)[0], n_bearing,
                         _bearing_key(values)).objective
 
     x0 = _start(bearing, targets, start, basic)
@@ -1018,10 +1019,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
 
         def relief_design(x: np.ndarray) -> float:
             values = first.values | {n: float(v) for n, v in zip(relief, x, strict=True)}
-            # the synthesis itself (steps 3-6 from the memo, the relief and the tip plane
-            # made again), so that the design analysed is the case that is written
+            # the synthesis itself (steps 3-6 from the memo, the relief made again; the
+            # tip plane, which keeps the flank, placed for the designs checked below)
             b = with_flank_options(basic, flank, values)
-            return evaluate(values, "relief", lambda: synthesize(b, memo=memo)[0],
+            return evaluate(values, "relief",
+                            lambda: synthesize(b, memo=memo, tip_planes=False)[0],
                             targets.max_evaluations, _bearing_key(first.values)).objective
 
         _sample_then_minimise(relief_design,
@@ -1032,7 +1034,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # coarse search in turn until one meets every target (the coarse LTCA's peak pressure
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
     c_check = time.process_time()
-    best = _checked_best(evals, targets, setup, teeth, say)
+    best = _checked_best(evals, targets, setup, teeth, say,
+                         functools.partial(_placed_case, basic, flank, memo))
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = _static_capacity(best, targets, setup, teeth, say)
     developed = with_flank_options(basic, flank, best.values)
@@ -1126,17 +1129,33 @@ def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                                met=full[2], full=full)
 
 
+def _placed_case(basic: BasicDesign, flank: str, memo: dict,
+                 values: Mapping[str, float]) -> Case:
+    """A design of the coarse search as it is written: its synthesis with step 8, the tip
+    planes on the root cone (steps 3-6 and the relief from the memo), so that the design
+    checked is the case written, bit for bit."""
+    from geometry.synthesis.case_synthesis import synthesize
+
+    return synthesize(with_flank_options(basic, flank, values), memo=memo)[0]
+
+
 def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets,
                   setup: Mapping[str, Any], teeth: KeptTeeth,
-                  say: Callable[[str], None]) -> DevelopmentEvaluation:
+                  say: Callable[[str], None],
+                  placed: Callable[[Mapping[str, float]], Case] | None = None
+                  ) -> DevelopmentEvaluation:
     """The chosen design: the best of the coarse search checked in turn at
     :data:`CHECK_LTCA` (at most :data:`VERIFIED_DESIGNS`) until one meets every target
-    there, then the best by its checked score (every target met first)."""
+    there, then the best by its checked score (every target met first). ``placed``: the
+    case of a design's values as it is written (its tip planes placed; the coarse search
+    leaves them out), checked and kept in place of the coarse search's."""
     ranked = sorted((e for e in evals if e.full is not None),
                     key=lambda e: (not e.full[2], e.full[0]))
     checked = []
     for e in ranked[:VERIFIED_DESIGNS]:
         try:
+            if placed is not None:
+                e = dataclasses.replace(e, case=placed(e.values))
             ms, grid = _analyse(e.case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
                                 pinion_key=_bearing_key(e.values))
         except Exception as exc:  # a design that fails here is not chosen

@@ -237,7 +237,8 @@ SYNTHESIS_STEPS = 10
 
 def synthesize(basic: BasicDesign, *, conjugate: bool = False,
                progress: Callable[[str], None] | None = None,
-               memo: dict | None = None) -> tuple[Case, SynthesisReport]:
+               memo: dict | None = None,
+               tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
     """Complete face-milled case from basic design data (ISO 23509 blank + local synthesis).
 
     Parameters
@@ -264,6 +265,14 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         flank depends on the drive flank only through the mean point's gear rotation,
         which the prescriptions do not move), so a development that varies the drive
         flank synthesises the coast flank once. Default None: nothing kept.
+    tip_planes : bool
+        Step 8, each pinion cut's tip plane moved onto the root cone (default True).
+        False leaves the tip planes where the local synthesis put them: the flanks are the
+        same (the move keeps them), the fillets and root lines are not, so the case is not
+        one to write or rate; for a search that ranks designs by their contact and
+        re-synthesises the ones it checks with the step (the development bearing,
+        :func:`contact.optimize.development.develop`: a placement is 1-2 s of its CPU
+        per design).
 
     Returns
     -------
@@ -322,7 +331,8 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
             ref_gear_rotation = flanks[pf].mean.gear_rotation
     flanks[coast] = _coast_in_drive_frame(flanks[coast], flanks[drive])
     # step 8: each cut's root line on the root cone (face milling and face hobbing)
-    flanks = {pf: _tip_on_root_cone(fs, pair, kept) for pf, fs in flanks.items()}
+    if tip_planes:
+        flanks = {pf: _tip_on_root_cone(fs, pair, kept) for pf, fs in flanks.items()}
     say("the case")
     case = _assemble(basic, geom, gear, flanks, pinion_hand, gear_hand)
     return case, SynthesisReport(geom, gear, flanks)

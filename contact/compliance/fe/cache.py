@@ -187,7 +187,8 @@ def _nonfinite(ds: xr.Dataset) -> str | None:
     return None
 
 
-def write_cache_entry(ds: xr.Dataset, path: str | os.PathLike[str], key: str) -> xr.Dataset:
+def write_cache_entry(ds: xr.Dataset, path: str | os.PathLike[str], key: str, *,
+                      compress: bool = True) -> xr.Dataset:
     """Write a cache entry atomically, with its key and data checksum.
 
     Parameters
@@ -198,6 +199,10 @@ def write_cache_entry(ds: xr.Dataset, path: str | os.PathLike[str], key: str) ->
         The entry's file, normally ``cache_path(key)``; its directory is created.
     key : str
         The entry's key (:func:`cache_key`), stored as the attribute ``cache_key``.
+    compress : bool
+        zlib level 4 on the data variables (default True: an entry is kept); False for a
+        file soon removed (a build's block parts, :class:`BlockCheckpoint`), where the
+        compression costs CPU and saves nothing.
 
     Returns
     -------
@@ -221,7 +226,8 @@ def write_cache_entry(ds: xr.Dataset, path: str | os.PathLike[str], key: str) ->
                         f"not cached in {path}")
     out = ds.assign_attrs({"cache_key": key, CHECKSUM_ATTR: data_checksum(ds)})
     path.parent.mkdir(parents=True, exist_ok=True)
-    enc = {name: {"zlib": True, "complevel": 4} for name in out.data_vars}
+    enc = {name: {"zlib": True, "complevel": 4} if compress else {}
+           for name in out.data_vars}
     with atomic_path(path) as tmp:
         out.to_netcdf(tmp, engine="netcdf4", encoding=enc)
     return out
@@ -370,7 +376,7 @@ class BlockCheckpoint:
         """Keep a solved block (name → ndarray, the loads along the last axis)."""
         ds = xr.Dataset({name: (tuple(f"{name}_{i}" for i in range(a.ndim)), a)
                          for name, a in arrays.items()})
-        write_cache_entry(ds, self.part(first, end), self._key(first, end))
+        write_cache_entry(ds, self.part(first, end), self._key(first, end), compress=False)
 
     def clear(self) -> int:
         """Remove every part of this entry (of any block layout); the number removed."""
