@@ -157,7 +157,7 @@ def test_permissible_stresses_and_power_ratings_match_annex_e(annex_e,
     np.testing.assert_allclose(annex_e["P_at"].values, np.array(PUBLISHED["P_at"]) * HP,
                                rtol=0.015)
     assert float(annex_e["P_a"]) == pytest.approx(
-        min(annex_e["P_ac"].min(), annex_e["P_at"].min()), rel=1e-15)
+        min(float(annex_e["P_ac"].min()), float(annex_e["P_at"].min())), rel=1e-15)
 
 
 def test_ratings_are_the_stress_numbers_reaching_the_permissible(annex_e):
