@@ -364,6 +364,8 @@ def test_tip_plane_refusals():
         tip_plane_on_root_cone(fh.concave.blade, fh.concave.machine, fh.blank, fh.hand)
 
 
+@pytest.mark.slow  # 25 s: every bundled case's placement again; the touch tests above
+# check the same property on every distinct FM and FH pinion in the default suite
 def test_bundled_tip_planes_are_the_derivation_s(capsys):
     """cases/derive_tip_planes.py --check finds no bundled case to change: every bundled
     pinion's tip planes (face milling and face hobbing) are on its root cone as ``ltca
