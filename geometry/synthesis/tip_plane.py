@@ -243,12 +243,13 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     member's face cone keeps its clearance there, ISO 23509's whole depth) and should not
     run deeper than that needs (it weakens the tooth): its highest point is put on the
     root cone. Its height over the face is sampled at 11 sections and each sampled local
-    highest point refined by a bounded scalar search between its neighbours; an end
-    section is that only where the point 0.001 inside it is higher (a face-hobbed root line
-    can peak a fraction of a µm between the heel section and the next); the move is solved by secant steps (the root line moves with
-    the tip plane nearly one to one, and nearly as a whole: between the steps only the
-    samples and the last highest point's section are evaluated, and the whole search
-    confirms the converged placement).
+    highest point refined by a bounded scalar search between its neighbours, but for an
+    end section lying above the point 0.001 inside it, which is its interval's highest (a
+    face-hobbed root line can peak a fraction of a µm between the heel section and the
+    next: there the point inside is higher and the interval is searched); the move is
+    solved by secant steps (the root line moves with the tip plane nearly one to one, and
+    nearly as a whole: between the steps only the samples and the last highest point's
+    section are evaluated, and the whole search confirms the converged placement).
     """
     if settings.process != "Generate":
         raise InputError("settings: only a Generate cut's tip plane is placed on the root "
