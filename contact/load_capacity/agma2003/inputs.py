@@ -347,22 +347,14 @@ def geometry_from_case(case) -> AGMAGeometry:
     -----
     ANSI/AGMA 2003-D19 clause 1 (scope) and Table 1 (symbols).
     """
-    from geometry.iso23509.blank import blank_geometry
-    from geometry.iso23509.pitch_cone import BevelGearDesign
+    from contact.load_capacity.design_table import design_blank, design_table
 
-    design = case.extra.get("design")
-    if not isinstance(design, Mapping):
-        raise InputError("design: the ANSI/AGMA 2003-D19 rating needs the case's basic "
-                         "design data, a [design] table (docs/rating.md); this case has none")
+    design = design_table(case, "the ANSI/AGMA 2003-D19 rating needs the case's basic "
+                                "design data, a [design] table (docs/rating.md)")
     why = offset_refusal(design)
     if why:
         raise InputError(f"design.a: must be 0 (no hypoid offset): {why}")
-    try:
-        blank = blank_geometry(BevelGearDesign.from_degrees(**design))
-    except InputError as exc:
-        raise InputError(f"design.{exc}") from None
-    except TypeError as exc:
-        raise InputError(f"design: {exc}") from None
+    blank = design_blank(design)
     b = min(blank.pinion.b, blank.gear.b)
     m_et = blank.met2
     r_e = blank.gear.Re

@@ -464,20 +464,11 @@ def case_gear_data(case):
     InputError
         No ``[design]`` table, or a bad one (``design.<field>``).
     """
-    from geometry.iso23509.blank import blank_geometry
-    from geometry.iso23509.pitch_cone import BevelGearDesign
+    from contact.load_capacity.design_table import design_blank, design_table
 
-    design = case.extra.get("design")
-    if not isinstance(design, Mapping):
-        raise InputError("design: the ISO 10300 rating needs the case's ISO 23509 basic "
-                         "design data, a [design] table (the fields of a basic design file, "
-                         "docs/synthesis.md); this case has none")
-    try:
-        blank = blank_geometry(BevelGearDesign.from_degrees(**design))
-    except InputError as exc:
-        raise InputError(f"design.{exc}") from None
-    except TypeError as exc:
-        raise InputError(f"design: {exc}") from None
+    blank = design_blank(design_table(
+        case, "the ISO 10300 rating needs the case's ISO 23509 basic design data, a "
+              "[design] table (the fields of a basic design file, docs/synthesis.md)"))
     return gear_data_from_blank(blank), blank
 
 
