@@ -43,7 +43,7 @@ from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import DEFAULT_MATERIAL, available_materials
 from geometry.core.operating_defaults import OPERATING_DEFAULTS as _OPERATING_DEFAULTS
 from geometry.core.toml_files import dump_toml, read_toml
-from geometry.core.validation import integer, positive, real
+from geometry.core.validation import integer, known_fields, positive, real
 from geometry.machine.convention import (
     SPYGO_BLADE_FIELDS,
     blade_from_spygo,
@@ -543,9 +543,7 @@ def _table(parent: Mapping, key: str, path: str, required: bool = True) -> Mappi
 
 
 def _fields(table: Mapping, schema: dict, path: str) -> dict[str, Any]:
-    unknown = sorted(set(table) - set(schema))
-    if unknown:
-        raise InputError(f"{path}.{unknown[0]}: unknown field; accepted: {', '.join(schema)}")
+    known_fields(path, table, schema)
     out: dict[str, Any] = {}
     for key, (unit, required, default) in schema.items():
         where = f"{path}.{key}"
@@ -587,10 +585,7 @@ def _build(cls, kwargs: dict, path: str):
 
 
 def _member(raw: Mapping, name: str, hand: str) -> Member:
-    unknown = sorted(set(raw) - _MEMBER_KEYS)
-    if unknown:
-        raise InputError(f"{name}.{unknown[0]}: unknown field; accepted: "
-                         f"{', '.join(sorted(_MEMBER_KEYS))}")
+    known_fields(name, raw, sorted(_MEMBER_KEYS))
     process = raw.get("process")
     if process not in PROCESSES:
         raise InputError(f"{name}.process: must be one of {sorted(PROCESSES)}, got {process!r}")
@@ -600,11 +595,7 @@ def _member(raw: Mapping, name: str, hand: str) -> Member:
     machine = _table(raw, "machine", f"{name}.machine")
     tools = {}
     for tab, where, extra in ((cutter, "cutter", set(_HEAD_FIELDS)), (machine, "machine", set())):
-        unknown = sorted(set(tab) - set(FLANKS) - extra - {"convention"})
-        if unknown:
-            accepted = ", ".join([*FLANKS, *sorted(extra), "convention"])
-            raise InputError(f"{name}.{where}.{unknown[0]}: unknown field; accepted: "
-                             f"{accepted}")
+        known_fields(f"{name}.{where}", tab, [*FLANKS, *sorted(extra), "convention"])
     # the convention each summary is typed in (docs/machine.md); converted to ours below
     conv = {where: check_convention(f"{name}.{where}.convention",
                                     tab.get("convention", "ours"))

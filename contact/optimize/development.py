@@ -72,7 +72,7 @@ from contact.ltca import LTCAOptions
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT
 from geometry.case import Case
 from geometry.core.errors import InputError
-from geometry.core.validation import real
+from geometry.core.validation import known_fields, real
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import (
     FLANK_OPTION_UNITS,
@@ -269,10 +269,7 @@ def targets_from_table(table: Mapping[str, Any] | None) -> DevelopmentTargets:
     """
     table = dict(table or {})
     accepted = [f.name for f in dataclasses.fields(DevelopmentTargets)]
-    unknown = sorted(set(table) - set(accepted))
-    if unknown:
-        raise InputError(f"development.{unknown[0]}: unknown field; accepted: "
-                         f"{', '.join(accepted)}")
+    known_fields("development", table, accepted)
     if "variables" in table:
         if not isinstance(table["variables"], Mapping):
             raise InputError("development.variables: must be a table name = [low, high]")

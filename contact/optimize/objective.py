@@ -44,7 +44,7 @@ import numpy as np
 from contact.ltca import LTCAOptions
 from geometry.case import Case
 from geometry.core.errors import InputError
-from geometry.core.validation import real
+from geometry.core.validation import known_fields, real
 from geometry.pair.assembly import Misalignment
 
 __all__ = ["FAILED_OBJECTIVE", "TERM_NAMES", "Evaluation", "OptimizeProblem",
@@ -228,10 +228,7 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
             "lte_peak_to_peak_range", "lte_mean_range", "weights", "torque_weights",
             "pattern_target", "penalty", "variables", "method", "max_evaluations",
             "popsize", "seed", "relief_start", "start", "rolls_per_cycle", "segments"}
-    unknown = sorted(set(table) - keys)
-    if unknown:
-        raise InputError(f"optimize.{unknown[0]}: unknown field; accepted: "
-                         f"{', '.join(sorted(keys))}")
+    known_fields("optimize", table, sorted(keys))
     kw: dict = {}
     for k in ("torque", "max_edge_share", "max_flank_pressure", "torque_weights"):
         if k in table:

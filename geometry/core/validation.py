@@ -23,19 +23,21 @@ broadcast        arrays broadcast together, or an error naming them and their sh
 scalar_or_array  a Python float for a 0-d result, the array otherwise
 integer          an integer within bounds (bool refused)
 one_of           a value from a fixed set of choices
+known_fields     a table's field names all accepted, else the first unknown one named
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Collection
+from collections.abc import Collection, Iterable
 from typing import Any
 
 import numpy as np
 
 from geometry.core.errors import InputError
 
-__all__ = ["broadcast", "integer", "one_of", "positive", "real", "real_array", "scalar_or_array"]
+__all__ = ["broadcast", "integer", "known_fields", "one_of", "positive", "real", "real_array",
+           "scalar_or_array"]
 
 
 def _unit(unit: str) -> str:
@@ -283,3 +285,28 @@ def one_of(name: str, value: Any, choices: Collection[Any]) -> Any:
             listed = list(choices)
         raise InputError(f"{name}: must be one of {listed}, got {value!r}")
     return value
+
+
+def known_fields(where: str, table: Collection[str], accepted: Iterable[str]) -> None:
+    """Refuse a table (an input file's, or its mapping) with a field not in ``accepted``.
+
+    Parameters
+    ----------
+    where : str
+        The table's name in the message (``rating``, ``pinion.concave`` …).
+    table : collection of str
+        The table's field names (a mapping: its keys).
+    accepted : iterable of str
+        The accepted names, listed in the message in this order.
+
+    Raises
+    ------
+    InputError
+        ``<where>.<name>: unknown field; accepted: <a>, <b>, …`` for the first unknown name
+        in alphabetical order.
+    """
+    accepted = list(accepted)
+    unknown = sorted(set(table) - set(accepted))
+    if unknown:
+        raise InputError(f"{where}.{unknown[0]}: unknown field; accepted: "
+                         f"{', '.join(accepted)}")

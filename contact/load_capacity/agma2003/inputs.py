@@ -24,7 +24,7 @@ from typing import Any
 
 from contact.load_capacity.agma2003.factors import MOUNTING_MODIFIER, RELIABILITY_FACTORS
 from geometry.core.errors import InputError
-from geometry.core.validation import integer, one_of, real
+from geometry.core.validation import integer, known_fields, one_of, real
 
 __all__ = ["FIELDS", "AGMAGeometry", "AGMAInputs", "geometry_from_case"]
 
@@ -263,10 +263,7 @@ class AGMAInputs:
         if not isinstance(table, Mapping):
             raise InputError(f"agma2003: must be a table of the fields {sorted(FIELDS)}, got "
                              f"{type(table).__name__}")
-        unknown = sorted(set(table) - set(FIELDS))
-        if unknown:
-            raise InputError(f"agma2003.{unknown[0]}: unknown field; accepted: "
-                             f"{', '.join(FIELDS)}")
+        known_fields("agma2003", table, FIELDS)
         required = [f.name for f in dataclasses.fields(cls)
                     if f.default is dataclasses.MISSING and f.name not in table]
         if required:

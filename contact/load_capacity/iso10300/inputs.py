@@ -27,7 +27,7 @@ from dataclasses import dataclass, fields
 from typing import Any
 
 from geometry.core.errors import InputError
-from geometry.core.validation import integer, one_of, real
+from geometry.core.validation import integer, known_fields, one_of, real
 
 __all__ = [
     "CONTACT_PATTERNS",
@@ -451,10 +451,7 @@ class RatingInputs:
         """
         if not isinstance(table, Mapping):
             raise InputError(f"{where}: must be a table, got {type(table).__name__}")
-        unknown = sorted(set(table) - set(RATING_FIELDS))
-        if unknown:
-            raise InputError(f"{where}.{unknown[0]}: unknown field; accepted: "
-                             f"{', '.join(RATING_FIELDS)}")
+        known_fields(where, table, RATING_FIELDS)
         for name in ("application_factor", "mounting"):
             if name not in table:
                 raise InputError(f"{where}.{name}: missing ({RATING_FIELDS[name][1]})")
