@@ -109,10 +109,8 @@ def dynamic_factor(accuracy_number: int, v_et: float) -> float:
     equation's 196.85 ft/min per m/s: Annex E's 1.081 (US units) is 1.0822 here
     (0.1 %). The velocity limit of the accuracy number is :func:`max_pitch_line_velocity`.
     """
-    qv = integer("accuracy_number", accuracy_number, 5, 11, allow_float=True)
+    _, a, b = _dynamic_coefficients(accuracy_number)
     v = real("v_et", v_et, unit="m/s", low=0.0)
-    b = 0.25 * (12.0 - qv) ** 0.667
-    a = 50.0 + 56.0 * (1.0 - b)
     return (a / (a + math.sqrt(200.0 * v))) ** -b
 
 
@@ -139,10 +137,16 @@ def max_pitch_line_velocity(accuracy_number: int) -> float:
     ANSI/AGMA 2003-D19 Eq. 17M (clause 10.6): above it, a higher Q_v or a dynamic
     analysis (clause 10.7).
     """
+    qv, a, _ = _dynamic_coefficients(accuracy_number)
+    return (a + (qv - 3.0)) ** 2 / 200.0
+
+
+def _dynamic_coefficients(accuracy_number: int) -> tuple[int, float, float]:
+    """Q_v checked (an integer in [5, 11]) and the dynamic factor's A and B of it
+    (ANSI/AGMA 2003-D19 Eq. 14, 15)."""
     qv = integer("accuracy_number", accuracy_number, 5, 11, allow_float=True)
     b = 0.25 * (12.0 - qv) ** 0.667
-    a = 50.0 + 56.0 * (1.0 - b)
-    return (a + (qv - 3.0)) ** 2 / 200.0
+    return qv, 50.0 + 56.0 * (1.0 - b), b
 
 
 def size_factor_pitting(b: float) -> float:
