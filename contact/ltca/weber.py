@@ -46,6 +46,11 @@ __all__ = ["RollSelection", "WeberSolution", "even_share", "weber_solve"]
 
 log = logging.getLogger(__name__)
 
+#: [1] Newton's step takes Weber's tangent compliance only where it exceeds this share of
+#: the secant (else the secant: b near the depth h); the same share bounds every
+#: iteration's contact compliance from below (the base problem checked once per roll)
+_TANGENT_SHARE = 0.5
+
 
 @dataclass(frozen=True, eq=False)
 class RollSelection:
@@ -157,7 +162,7 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     # inequality (ContactProblem.with_diagonal), where a Cholesky per iteration cost 60 %
     # of an LTCA's time (issue 60's CPU budget). Where the base is not positive definite,
     # each problem is made and checked as before.
-    floor = 0.5 * segments.compliance(cap, kind="secant")
+    floor = _TANGENT_SHARE * segments.compliance(cap, kind="secant")
     try:
         base = ContactProblem(sel.structural + np.diag(floor), sel.separation,
                               sel.moment_arm, gear_torque, name=name,
@@ -173,7 +178,7 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
         # s + (c_s − c_t) F₀; the secant alone where c_t is not well positive (b near the
         # depth h) or the load is at the cap (frozen there)
         cs, ct = segments.compliance(load, kind=("secant", "tangent"))
-        newton = (ct > 0.5 * cs) & (load < cap)
+        newton = (ct > _TANGENT_SHARE * cs) & (load < cap)
         cw = np.where(newton, ct, cs)
         separation = sel.separation + np.where(newton, (cs - ct) * load, 0.0)
         if base is not None:
