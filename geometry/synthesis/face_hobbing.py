@@ -213,13 +213,20 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
             return None
         return make(sol.x)
 
+    # the envelope parameters of M on the last generated flank: the next trial's tool
+    # differs by a finite-difference step or a least-squares step, so Newton starts there
+    # instead of the coarse seed search (which falls back where it does not converge)
+    last = [None]
+
     def evaluate(x):
         t = tool_for(x)
         if t is None:
             return None
-        pt = flank_points(t.blade, t.settings, pinion_blank, "right", [zm], [pm])
+        pt = flank_points(t.blade, t.settings, pinion_blank, "right", [zm], [pm],
+                          guess=last[0])
         if not pt.ok[0]:
             return None
+        last[0] = pt.params
         rz = _rot_z(t.blank_phase)
         return t, rz @ pt.r[0], rz @ pt.n[0], rz @ pt.shape[0] @ rz.T
 

@@ -175,14 +175,21 @@ def pinion_generate_tools(point, normal, target_shape, *, side: str, blade_angle
     zm, pm = float(m[2]), float(math.hypot(m[0], m[1]))
     length = pinion_blank.outer_cone_distance
 
+    # the envelope parameters of M on the last generated flank: Newton's start for the
+    # next trial (a finite-difference or least-squares step away) instead of the coarse
+    # seed search (which runs where Newton from it does not converge)
+    last = [None]
+
     def evaluate(x):
         st = _pinion_state(x, m, nn, u, cp, ca, side, blade_angle, h_m, edge_radius)
         if st is None:
             return None
         blade, ps = st
-        pt = flank_points(blade, ps.settings, pinion_blank, "right", [zm], [pm])
+        pt = flank_points(blade, ps.settings, pinion_blank, "right", [zm], [pm],
+                          guess=last[0])
         if not pt.ok[0]:
             return None
+        last[0] = pt.params
         c, s = math.cos(ps.blank_phase), math.sin(ps.blank_phase)
         rz = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
         return blade, ps, rz @ pt.r[0], rz @ pt.n[0], rz @ pt.shape[0] @ rz.T
