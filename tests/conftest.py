@@ -27,10 +27,19 @@ import os
 import signal
 from pathlib import Path
 
+import numpy  # noqa: F401 - loads NumPy's BLAS, so that the limit below reaches it
 import pytest
+import scipy.linalg  # noqa: F401 - loads SciPy's own BLAS (LAPACK's potrf, the QPs)
 from threadpoolctl import threadpool_limits
 
+# One BLAS thread per process: xdist runs a worker per core, and a second BLAS thread per
+# worker only spins on the small dense matrices of the contact problems (measured on 2
+# cores: tests/test_ltca*.py + test_study.py 112 -> 50 s wall, 125 -> 51 s CPU, when
+# SciPy's BLAS, loaded after this file, kept its 2 threads). threadpoolctl limits only the
+# libraries already loaded, hence the imports above; the subprocesses of the CLI tests
+# start their BLAS with the variable.
 threadpool_limits(limits=1, user_api="blas")
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
     signal.signal(signal.SIGINT, signal.default_int_handler)
