@@ -35,6 +35,7 @@ from contact.qp.solvers import solver_name
 from friction.operating import OperatingConditions
 from geometry import __version__
 from geometry.case import Case
+from geometry.core.blas import blas_threads
 from geometry.core.bounds import check_torques
 from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment
@@ -239,6 +240,7 @@ def check_analysis_arguments(case, torque, misalignment, flank, options, **flags
             raise InputError(f"{name}: must be True or False, got {value!r}")
 
 
+@blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
     torque=None,

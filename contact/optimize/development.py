@@ -71,6 +71,7 @@ import numpy as np
 from contact.ltca import LTCAOptions
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT
 from geometry.case import Case
+from geometry.core.blas import blas_threads
 from geometry.core.errors import InputError
 from geometry.core.validation import known_fields, real
 from geometry.pair.assembly import Misalignment
@@ -843,6 +844,7 @@ def _sample_then_minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray,
     _minimise(fun, min(tried, key=lambda fx: fx[0])[1], low, high)
 
 
+@blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
             synthesis_progress: Any = None) -> DevelopmentResult:

@@ -1,0 +1,78 @@
+"""The BLAS thread limit of the toolkit's entry points (geometry.core.blas).
+
+The limit exists because a second OpenBLAS thread spins on the toolkit's small matrices
+(measured in the module docstring); what is tested here is the contract: one thread
+inside, the caller's setting back outside, the environment's choice honoured, a bad
+value refused with the variable's name. The suite itself runs with one thread
+(conftest.py), so the tests raise the count first to see the limit act.
+"""
+
+import numpy as np
+import pytest
+import scipy.linalg  # noqa: F401 - loads SciPy's BLAS for threadpoolctl
+from threadpoolctl import threadpool_info, threadpool_limits
+
+from geometry.core.blas import blas_threads
+from geometry.core.errors import InputError
+
+ENV = ("HYPOID_LTCA_BLAS_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
+       "OMP_NUM_THREADS")
+
+
+def _threads() -> list[int]:
+    return [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]
+
+
+@pytest.fixture
+def clean_env(monkeypatch):
+    for name in ENV:
+        monkeypatch.delenv(name, raising=False)
+    return monkeypatch
+
+
+def test_one_thread_inside_and_the_callers_setting_back(clean_env):
+    with threadpool_limits(limits=2, user_api="blas"):
+        outside = _threads()
+        with blas_threads() as limit:
+            assert limit == 1
+            assert set(_threads()) == {1}
+        assert _threads() == outside
+
+
+def test_the_environment_chooses(clean_env):
+    clean_env.setenv("OPENBLAS_NUM_THREADS", "2")
+    with threadpool_limits(limits=1, user_api="blas"), blas_threads() as limit:
+        assert limit == 2
+    clean_env.setenv("HYPOID_LTCA_BLAS_THREADS", "0")  # read first: no limit
+    with threadpool_limits(limits=2, user_api="blas"):
+        before = _threads()
+        with blas_threads() as limit:
+            assert limit is None
+            assert _threads() == before
+
+
+@pytest.mark.parametrize("value", ["two", "-1", "1.5"])
+def test_a_bad_variable_is_named(clean_env, value):
+    clean_env.setenv("HYPOID_LTCA_BLAS_THREADS", value)
+    with pytest.raises(InputError, match="HYPOID_LTCA_BLAS_THREADS"), blas_threads():
+        pass
+
+
+def test_a_negative_limit_is_refused():
+    with pytest.raises(InputError, match="limit: must be >= 0"), blas_threads(-2):
+        pass
+
+
+def test_results_do_not_depend_on_the_thread_count(clean_env):
+    """A Cholesky factor (what the contact problem's check computes) is the same with one
+    thread as with two to round-off: the limit changes the cost, not the answer (the
+    blocked algorithm's summation order may differ, so 1e-12 relative, far above the
+    ~1e-15 of one reordering and far below any physical tolerance)."""
+    rng = np.random.default_rng(3)
+    a = rng.standard_normal((300, 300))
+    c = a @ a.T + 300.0 * np.eye(300)
+    with threadpool_limits(limits=2, user_api="blas"):
+        two = scipy.linalg.cholesky(c, lower=True)
+    with blas_threads():
+        one = scipy.linalg.cholesky(c, lower=True)
+    np.testing.assert_allclose(one, two, rtol=1e-12, atol=1e-12 * np.abs(two).max())
