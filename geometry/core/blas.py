@@ -33,15 +33,15 @@ from geometry.core.errors import InputError
 
 __all__ = ["blas_threads"]
 
-#: the environment variables that set a BLAS's thread count, in the order they are read
-_VARIABLES = ("HYPOID_LTCA_BLAS_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
-              "OMP_NUM_THREADS")
-
-
 def _limit_from_environment() -> int | None:
     """The limit the environment asks for: 1 where it says nothing, None for ``0``."""
-    for name in _VARIABLES:
-        text = os.environ.get(name, "").strip()
+    # (each read by its name, as docs/environment.md lists them: tests/test_global_state.py)
+    given = (("HYPOID_LTCA_BLAS_THREADS", os.environ.get("HYPOID_LTCA_BLAS_THREADS")),
+             ("OPENBLAS_NUM_THREADS", os.environ.get("OPENBLAS_NUM_THREADS")),
+             ("MKL_NUM_THREADS", os.environ.get("MKL_NUM_THREADS")),
+             ("OMP_NUM_THREADS", os.environ.get("OMP_NUM_THREADS")))
+    for name, value in given:
+        text = (value or "").strip()
         if not text:
             continue
         try:
@@ -73,8 +73,8 @@ def blas_threads(limit: int | None = None) -> Iterator[int | None]:
     Raises
     ------
     InputError
-        A negative ``limit``, or an environment variable of :data:`_VARIABLES` that is
-        not a whole number >= 0.
+        A negative ``limit``, or an environment variable of the module docstring that is not a
+        whole number >= 0.
 
     Notes
     -----
