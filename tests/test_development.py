@@ -382,3 +382,63 @@ def test_design_torque_lowered_to_the_bearings_static_capacity(monkeypatch, expo
     assert dev._static_capacity(best, DevelopmentTargets(), setup2, None,
                                 lambda _: None) is best
     assert setup2["torques"] == [0.15 * t0, t0] and not setup2["lowered"]
+
+
+def _fake_design(index, values, lte_short, met=False, stage="relief"):
+    from contact.optimize.development import DevelopmentEvaluation
+
+    short = dict.fromkeys(STAGE_TERMS["relief"], 0.0) | {"lte": lte_short}
+    full = (lte_short ** 2, short, met)
+    return DevelopmentEvaluation(index, dict(values), {}, full[0], short, met, "", 0.0,
+                                 full=full, stage=stage)
+
+
+@pytest.mark.parametrize("lte_short, second_tried", [(1.5, True), (0.0, False)])
+def test_the_second_bearing_is_relieved_only_where_the_first_misses_the_lte(
+        lte_short, second_tried):
+    """The relief stage's budget: 10 designs of the default 22 on the best bearing (the
+    budget of the single-bearing stage it replaced: 16 − 6), then SECOND_BEARING_DESIGNS
+    on the next bearing only where the first's best design misses the LTE target; never
+    more than max_evaluations in all. The designs are stand-ins (no analysis): the test
+    is the budget's bookkeeping, counted by hand."""
+    from contact.optimize import development as dev
+
+    targets = DevelopmentTargets()
+    relief = list(dev.RELIEF_NAMES)
+    bearings = [_fake_design(i, {"path_angle": p, "ellipse_length": e, "tip_relief": 15.0,
+                                 "root_relief": 15.0, "relief_start": 0.5}, lte_short,
+                             stage="bearing")
+                for i, (p, e) in enumerate([(-45, 0.4), (-58.8, 0.4), (-45, 0.55),
+                                            (-58.8, 0.55), (-65.6, 0.625), (-79.4, 0.475)])]
+    evals = list(bearings)
+    firsts = [bearings[5], bearings[4]]
+
+    def evaluate(values, stage, make, budget, key):
+        if len(evals) >= budget:
+            raise dev._Stop
+        e = _fake_design(len(evals), values, lte_short)
+        evals.append(e)
+        return e
+
+    dev._relief_stage(evaluate, firsts, relief, targets, evals, lambda v: v, lambda b: b)
+    on = [sum(1 for e in evals[6:] if e.values["ellipse_length"] == b.values["ellipse_length"])
+          for b in firsts]
+    assert targets.max_evaluations == 22
+    assert on[0] == 22 - 6 - dev.SECOND_BEARING_DESIGNS == 10
+    assert on[1] == (dev.SECOND_BEARING_DESIGNS if second_tried else 0)
+    assert len(evals) <= targets.max_evaluations
+
+
+def test_the_relieved_bearings_are_distinct_and_best_first():
+    """Two designs of one bearing (same path angle and ellipse, other relief) count once;
+    designs meeting the bearing stage's targets rank before lower objectives that do
+    not."""
+    from contact.optimize.development import _relief_bearings
+
+    a = _fake_design(0, {"path_angle": -60.0, "ellipse_length": 0.5, "tip_relief": 15.0}, 0.5)
+    a2 = _fake_design(1, {"path_angle": -60.0, "ellipse_length": 0.5, "tip_relief": 30.0}, 0.1)
+    b = _fake_design(2, {"path_angle": -70.0, "ellipse_length": 0.6, "tip_relief": 15.0}, 2.0,
+                     met=True)
+    c = _fake_design(3, {"path_angle": -50.0, "ellipse_length": 0.4, "tip_relief": 15.0}, 1.0)
+    assert [e.index for e in _relief_bearings([a, a2, b, c], 2)] == [2, 1]
+    assert [e.index for e in _relief_bearings([a, a2, b, c], 3)] == [2, 1, 3]
