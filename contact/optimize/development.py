@@ -901,7 +901,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     2. **relief**: from the best bearing, the tip and root relief and their start varied,
        each design the synthesis with steps 3–6 from the memo (the relief, step 7, and
        the tip plane made again), scored on every target, until the budget
-       ``max_evaluations`` is spent.
+       ``max_evaluations`` is spent but :data:`SECOND_BEARING_DESIGNS`; where the best
+       of them misses the LTE target, the same on the next-best bearing with those
+       designs (:func:`_relief_stage`: the relief that keeps the edges elastic is what
+       makes the LTE, docs/synthesis.md "The LTE against the relief").
 
     Each stage is a bounded Nelder–Mead (``scipy.optimize.minimize``, variables scaled to
     [0, 1]) that stops at the first design meeting every target of its stage. The search
