@@ -24,7 +24,7 @@ from types import ModuleType
 from contact.commands.options import verbosity_options
 from contact.errors import AnalysisFailedError
 from geometry import __version__
-from geometry.core.blas import blas_threads
+from geometry.core.blas import limit_at_start
 from geometry.core.errors import LTCAError
 
 log = logging.getLogger("ltca")
@@ -215,8 +215,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     previous = signal.signal(signal.SIGTERM, _terminate) if main_thread else None
     try:
         check_option_bounds(args)  # before any work
-        with blas_threads():  # one BLAS thread: its matrices are small (geometry.core.blas)
-            return int(args.func(args) or 0)
+        # one BLAS thread for the command's computations (its matrices are small,
+        # geometry.core.blas), set before NumPy loads: `ltca cases` stays light
+        limit_at_start()
+        return int(args.func(args) or 0)
     except AnalysisFailedError as exc:  # ran, wrote its file, found no certified contact
         print(f"ltca {args.command}: error: {exc}", file=sys.stderr)
         return 1

@@ -9,7 +9,7 @@ value refused with the variable's name. The suite itself runs with one thread
 
 import numpy as np
 import pytest
-import scipy.linalg  # noqa: F401 - loads SciPy's BLAS for threadpoolctl
+import scipy.linalg
 from threadpoolctl import threadpool_info, threadpool_limits
 
 from geometry.core.blas import blas_threads
@@ -76,3 +76,25 @@ def test_results_do_not_depend_on_the_thread_count(clean_env):
     with blas_threads():
         one = scipy.linalg.cholesky(c, lower=True)
     np.testing.assert_allclose(one, two, rtol=1e-12, atol=1e-12 * np.abs(two).max())
+
+
+def test_the_command_starts_its_blas_with_the_limit(clean_env):
+    """limit_at_start (the ``ltca`` command, before NumPy loads) makes every BLAS the
+    process loads afterwards start with one thread; a process that asked for none keeps
+    the library's own count (checked in a fresh interpreter: the suite's own BLAS is
+    already loaded and limited)."""
+    import subprocess
+    import sys
+
+    code = ("from geometry.core.blas import limit_at_start; print(limit_at_start()); "
+            "import numpy, scipy.linalg; from threadpoolctl import threadpool_info; "
+            "print(sorted({i['num_threads'] for i in threadpool_info() "
+            "if i['user_api'] == 'blas'}))")
+    env = {k: v for k, v in __import__("os").environ.items() if k not in ENV}
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=env, check=True).stdout.split("\n")
+    assert out[0] == "1" and out[1] == "[1]"
+    env["HYPOID_LTCA_BLAS_THREADS"] = "0"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=env, check=True).stdout.split("\n")
+    assert out[0] == "None"

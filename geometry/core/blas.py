@@ -21,17 +21,19 @@ Dask's workers are started with one BLAS thread by ``distributed`` already.
 Public names
 ------------
 blas_threads   context manager: the BLAS thread limit of the toolkit's computations
+limit_at_start the same limit as start-up variables, for the ``ltca`` command
 """
 
 from __future__ import annotations
 
 import contextlib
 import os
+import sys
 from collections.abc import Iterator
 
 from geometry.core.errors import InputError
 
-__all__ = ["blas_threads"]
+__all__ = ["blas_threads", "limit_at_start"]
 
 def _limit_from_environment() -> int | None:
     """The limit the environment asks for: 1 where it says nothing, None for ``0``."""
@@ -53,6 +55,31 @@ def _limit_from_environment() -> int | None:
             raise InputError(f"{name}: must be >= 0 (0 = as the library has it), got {value}")
         return value or None
     return 1
+
+
+def limit_at_start() -> int | None:
+    """At an application's start (the ``ltca`` command, before NumPy is imported): the
+    limit of :func:`blas_threads` as OpenBLAS's and MKL's start-up variables, so that
+    every BLAS the process loads starts with it, without importing one here (a command
+    that needs no NumPy stays light).
+
+    Returns
+    -------
+    int or None
+        The limit set, or None where the environment asks for none or NumPy or SciPy is
+        already loaded (then :func:`blas_threads` limits the loaded libraries).
+
+    Raises
+    ------
+    InputError
+        As :func:`blas_threads`, for a variable that is not a whole number >= 0.
+    """
+    limit = _limit_from_environment()
+    if limit is None or {"numpy", "scipy"} & sys.modules.keys():
+        return None
+    os.environ["OPENBLAS_NUM_THREADS"] = str(limit)
+    os.environ["MKL_NUM_THREADS"] = str(limit)
+    return limit
 
 
 @contextlib.contextmanager
