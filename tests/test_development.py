@@ -24,6 +24,7 @@ from contact.optimize.development import (
     DevelopmentTargets,
     _analyse,
     development_score,
+    footprint_centre,
     targets_from_table,
     working_depth_centre,
 )
@@ -125,6 +126,27 @@ def test_working_depth_centre_from_the_iso_blank():
     assert 0.5 < expect < 1.0  # above mid-depth: the clearance lies below the working depth
 
 
+def test_footprint_centre_weighs_every_loaded_node_alike():
+    """The footprint centre of a hand-made envelope is the mean of its loaded nodes'
+    grid positions, whatever their pressure (hand-computed), and NaN with none loaded.
+
+    Grid u = (0, 0.25, 0.5, 0.75, 1), v = (0, 0.5, 1). Torque 0: nodes (u, v) = (0.25, 0.5),
+    (0.5, 0.5), (0.5, 1) loaded at 100, 100, 1000 MPa: footprint centre (0.4167, 0.6667)
+    (pressure-weighted it would be (0.4792, 0.9167)); NaN and negative entries are
+    unloaded. Torque 1: nothing loaded."""
+    u = np.array([0.0, 0.25, 0.5, 0.75, 1.0])
+    v = np.array([0.0, 0.5, 1.0])
+    env = np.zeros((2, 5, 3))
+    env[0, 1, 1], env[0, 2, 1], env[0, 2, 2] = 100.0, 100.0, 1000.0
+    env[0, 4, 0], env[0, 0, 2] = np.nan, -5.0
+    cu, cv = footprint_centre(env, u, v)
+    assert cu[0] == pytest.approx((0.25 + 0.5 + 0.5) / 3, abs=1e-15)
+    assert cv[0] == pytest.approx((0.5 + 0.5 + 1.0) / 3, abs=1e-15)
+    assert np.isnan(cu[1]) and np.isnan(cv[1])
+    with pytest.raises(InputError, match="pressure envelope"):
+        footprint_centre(env[0], u, v)
+
+
 @pytest.fixture(scope="module")
 def unrelieved_pc():
     """One coarse LTCA (COARSE_LTCA) of the unrelieved passenger-car hypoid at 50 and
@@ -156,6 +178,26 @@ def test_clearance_shortfalls_agree_with_the_verdicts_boundaries(unrelieved_pc):
             assert short[side] == pytest.approx(1.0, abs=1e-12), side
         else:
             assert short[side] < 1.0, side
+
+
+def test_the_development_judges_the_footprint_centre(unrelieved_pc):
+    """The centre the development's metrics carry is the footprint centre of the tree's
+    pressure envelope (footprint_centre), and lies inside the pattern's extent; the
+    pressure-weighted centre of the studies (contact.study.summary.pattern_dimensions)
+    is left as it was."""
+    from contact.study.summary import pattern_dimensions
+    from geometry.case import load_case
+
+    tree, metrics, _ = unrelieved_pc
+    lt = tree["/ltca"].to_dataset()
+    cu, cv = footprint_centre(lt["pressure_envelope"].transpose("torque", "u", "v").values,
+                              lt["u"].values, lt["v"].values)
+    np.testing.assert_allclose(metrics["pattern_centre_u"], cu, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(metrics["pattern_centre_v"], cv, rtol=0, atol=1e-12)
+    assert np.all((metrics["pattern_toe_u"] <= cu) & (cu <= metrics["pattern_heel_u"]))
+    assert np.all((metrics["pattern_root_v"] <= cv) & (cv <= metrics["pattern_tip_v"]))
+    studied = pattern_dimensions(lt, load_case(DESIGNS / "pc_hypoid_10x43_unrelieved.toml"))
+    assert not np.allclose(studied["pattern_centre_v"], cv)
 
 
 def test_edge_share_agrees_with_the_verdicts_edge_kinds(unrelieved_pc):
