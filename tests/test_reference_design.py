@@ -131,7 +131,12 @@ def test_case_is_its_basic_design_at_the_recorded_optimum():
                   "blank_offset", "tilt", "swivel"):
         assert getattr(a.machine, field) == pytest.approx(getattr(b.machine, field),
                                                           rel=1e-9, abs=1e-12)
-    np.testing.assert_allclose(a.machine.modified_roll, b.machine.modified_roll, rtol=1e-9,
+    # the modified roll is the Newton result of TEs followed to the contact solve's
+    # residual (1e-7, geometry.synthesis.modified_roll): reproducible to that, not to the
+    # settings' round-off (measured 3.7e-7 relative after the local synthesis' Newton
+    # started from the last trial's root instead of a seed search, the tools equal to
+    # 1e-13); 2e-6 relative moves the TE at ±pitch/4 by < 1e-4 µrad
+    np.testing.assert_allclose(a.machine.modified_roll, b.machine.modified_roll, rtol=2e-6,
                                atol=1e-12)
     np.testing.assert_allclose(a.machine.helical_motion, b.machine.helical_motion,
                                rtol=1e-9, atol=1e-12)
