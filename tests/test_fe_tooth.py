@@ -314,6 +314,45 @@ def test_stl_of_the_solid_is_closed_and_holds_the_volume(tmp_path):
         write_stl(solid.mesh, tmp_path / "gear.step")
 
 
+def test_slot_middle_kept_off_the_split_points():
+    """Where two cuts' root lines cross along the face (ISO 23509 sample 2 pinion, tip
+    planes on the root cone) the crease comes to 2 % of the slot's path from a split point;
+    the slot's middle is kept at SLOT_MIDDLE_MARGIN of the path (identity: the two half
+    slots add up to the path, and each is at least the margin), the coarse model meshes
+    with every Jacobian positive (it was refused as inverted), and on the default case,
+    whose creases lie at >= 12 %, the middle is the crease itself (the bottom's midpoint)."""
+    from contact.compliance.fe.section import tooth_sections
+    from contact.compliance.fe.solid import (
+        SLOT_MIDDLE_MARGIN,
+        _half_slot,
+        _half_slot_length,
+        _slot_path,
+    )
+
+    case = _case("iso23509_sample2_fm")
+    secs = tooth_sections(case, "pinion", np.linspace(0.0, 1.0, 9))
+    fractions = []
+    for sec in secs.sections:
+        a, half_r, half_l, c, middle = _slot_path(sec, secs.pitch)
+        total = a + half_r + half_l + c
+        right, left = (_half_slot_length(sec, s, secs.pitch) for s in ("right", "left"))
+        assert right + left == pytest.approx(total, rel=1e-12)
+        assert min(right, left) >= SLOT_MIDDLE_MARGIN * total * (1 - 1e-12)
+        # both half slots end at the same point (a pitch apart): the mesh is conforming
+        vr, pr = _half_slot(sec, "right", np.array([1.0]), secs.pitch)
+        vl, pl = _half_slot(sec, "left", np.array([1.0]), secs.pitch)
+        assert vr[0] == pytest.approx(vl[0], abs=1e-12)
+        assert pr[0] == pytest.approx(pl[0] + secs.pitch, abs=1e-12)
+        fractions.append(min(a + half_r, total - a - half_r) / total)
+    assert min(fractions) < SLOT_MIDDLE_MARGIN  # the case does exercise the margin
+    assert build_tooth_solid(case, "pinion", COARSE).mesh.min_jacobian > 0.0
+    default = tooth_sections(_case(), "pinion", np.linspace(0.0, 1.0, 9))
+    for sec in default.sections:
+        a, half_r, _, _, middle = _slot_path(sec, default.pitch)
+        assert middle == a + half_r
+
+
+
 def test_ltca_geometry_writes_the_solids(tmp_path, capsys):
     """``ltca geometry --solid FILE.stl`` writes both members' solids (default mesh, ~3 s);
     a file name without .stl is refused before any work."""
