@@ -62,8 +62,37 @@ BLOCKS = [(line, _commands(b)) for line, b in _blocks()
           if b.strip() != INSTALL and not b.lstrip().startswith("ltca cases")]
 
 
+#: options that take one value or one per torque: when the reduction keeps fewer torques
+#: than the block gives, these keep the values of the torques kept (else the command
+#: would be refused for a count mismatch the block as written does not have)
+PER_TORQUE = ("--max-edge-share", "--max-flank-pressure")
+
+
+def _values(argv: list[str], option: str) -> tuple[int, int]:
+    """Where ``option``'s values start in ``argv`` and where they end (exclusive)."""
+    start = argv.index(option) + 1
+    end = start
+    while end < len(argv) and not (argv[end].startswith("--") or argv[end] == "-o"):
+        end += 1
+    return start, end
+
+
 def _reduced(argv: list[str]) -> list[str]:
-    return [*argv, *REDUCED.get(argv[0], []), *MORE.get(argv[0], [])]
+    extra = [*REDUCED.get(argv[0], []), *MORE.get(argv[0], [])]
+    argv = list(argv)
+    if "--torque" in argv and "--torque" in extra:
+        start, end = _values(argv, "--torque")
+        given = [float(w) for w in argv[start:end]]
+        ks, ke = _values(extra, "--torque")
+        kept = [given.index(float(w)) if float(w) in given else 0 for w in extra[ks:ke]]
+        for option in PER_TORQUE:
+            if option not in argv:
+                continue
+            start, end = _values(argv, option)
+            values = argv[start:end]
+            if len(values) == len(given) > 1:
+                argv[start:end] = [values[i] for i in kept]
+    return [*argv, *extra]
 
 
 def test_blocks_found():
