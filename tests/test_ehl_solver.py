@@ -7,6 +7,7 @@ are marked slow.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -286,11 +287,18 @@ def test_asperity_load_ratio_monotone_where_converged() -> None:
     # (the near-dry point on the grid of test_dry_rough_contact_equals_qp: with the inlet
     # at −4 b and steps limited to 3 its node sets wander; on either grid it never
     # returns an unconverged answer). ~25 s: slow.
+    # Roelands' viscosity: these are the conditions that converge with it (measured: ratios
+    # 0, 0.047, 0.967, 1.000; mu 0.0087 ... 0.1000), the law of the sweep they were picked
+    # from. With the default Barus (issue 51, 6c) the three mixed ones cycle (a
+    # ConvergenceError, the "lottery" below λ 1.4 of docs/ehl.md "History: the steady rough
+    # solver"); the steady rough solver is history, so the sweep is not re-picked for Barus.
     mixed = Grid(nodes=512, step_limit=3.0)
     dry = Grid(nodes=512, inlet=-2.0, step_limit=1e9)
     ratios, mus = [], []
     for speed, grid in ((19.95, mixed), (10.05, mixed), (0.495, mixed), (1e-4, dry)):
-        s = line_contact_summary(_rough_condition(556.0, speed, 0.3, grid), grid)
+        cond = dataclasses.replace(_rough_condition(556.0, speed, 0.3, grid),
+                                   viscosity_model="roelands")
+        s = line_contact_summary(cond, grid)
         ratios.append(s.asperity_load_ratio)
         mus.append(s.friction_coefficient)
     assert ratios[0] < 1e-3 and ratios[-1] > 0.999
