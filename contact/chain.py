@@ -42,7 +42,7 @@ import xarray as xr
 
 from contact.utca.conjugate_map import flank_nodes
 from geometry.case import Case
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.machine.flank import DEFAULT_GRID, flank_dataset
 
 __all__ = [
@@ -265,7 +265,18 @@ def root_stress_fe(state: ChainState) -> None:
     if fe_options is None and opts.compliance == "fe":
         fe_options = opts.fe_options()
     lt = state.groups["/ltca"]
-    rs = root_stress(state.case, state.easeoff, lt, fe_options, progress=state.progress)
+    try:
+        rs = root_stress(state.case, state.easeoff, lt, fe_options, progress=state.progress)
+    except (InputError, ModelUnavailableError):
+        raise  # a wrong input or a missing solver is the user's to fix, said at once
+    except LTCAError as exc:
+        # the FE model of these teeth could not be built or solved (e.g. a fillet whose
+        # mapped elements invert): root stress never sinks an analysis (issue 60) - the
+        # rest is written, and the file and the console say why it is missing
+        log.warning("root stress not computed: %s", exc)
+        state.not_run["root_stress"] = (f"root stress not computed: the FE model failed "
+                                        f"({exc})")
+        return
     state.groups["/ltca"] = lt.assign(root_stress=rs["root_stress"],
                                       root_stress_max=rs["root_stress_max"])
 

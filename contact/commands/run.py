@@ -293,7 +293,10 @@ def run(args: argparse.Namespace) -> int:
             print(line)
     print("RMS*: root-sum-square of the first three harmonics, as the seed's Table 3.1.")
     print(plastic_note(lt))
-    if "root_stress_max" not in lt:
+    failed = str(tree.attrs.get("root_stress_not_run", ""))
+    if "root_stress_max" not in lt and failed.startswith("root stress not computed"):
+        print(failed)  # the FE model failed: why (contact.chain.root_stress_fe)
+    elif "root_stress_max" not in lt:
         print(root_stress_hint(case, args.flank, opts))
     else:
         print("peak tooth-root stress over the mesh cycle (max principal, FE "
