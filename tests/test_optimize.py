@@ -164,6 +164,56 @@ def test_optimize_table_is_read_and_checked():
         problem_from_table({"torque": [50, 250, 500], "max_flank_pressure": [1, 2]})
 
 
+def test_command_line_torques_keep_the_tables_per_torque_limits():
+    """``--torque`` among the table's own torques keeps the per-torque limits the table
+    gives them (the bundled reference design's table is for 50, 250, 500 N·m: `ltca
+    optimize ... --torque 50 250` must not be refused for its three-value limits); an
+    option given replaces the table's; a torque the table has no limit for is refused,
+    naming the field and the option that gives it."""
+    table = {"torque": [50, 250, 500], "max_edge_share": [0.01, 0.05, 0.04],
+             "max_flank_pressure": [math.inf, math.inf, 2000.0],
+             "lte_mean_range": [[73.3, 165.0], [193.3, 435.0], [400.0, 900.0]],
+             "torque_weights": [1, 2, 3]}
+    problem = problem_from_table(table, torque=(50.0, 500.0))[0]
+    assert problem.torque == (50.0, 500.0)
+    assert problem.max_edge_share == (0.01, 0.04)
+    assert problem.max_flank_pressure == (math.inf, 2000.0)
+    assert problem.lte_mean_range == ((73.3, 165.0), (400.0, 900.0))
+    assert problem.torque_weights == (1, 3)
+    given = problem_from_table(table, torque=(50.0, 250.0), max_edge_share=(0.02,))[0]
+    assert given.max_edge_share == (0.02, 0.02)
+    with pytest.raises(InputError, match=r"optimize\.max_edge_share: .*not for 300 N·m: "
+                                         r"give --max-edge-share"):
+        problem_from_table(table, torque=(50.0, 300.0))
+    with pytest.raises(InputError, match=r"optimize\.lte_mean_range: .*edit the \[optimize\]"):
+        problem_from_table({"torque": [50, 250], "lte_mean_range": [[1, 2], [3, 4]]},
+                           torque=(100.0,))
+
+
+def test_cli_variables_keep_only_their_own_table_start(tmp_path, monkeypatch):
+    """``--variable`` replaces the table's variables, so the table's ``[optimize.start]``
+    values go with them: a start is kept for a variable still varied inside the bounds
+    given, the others start from the case (the reference design's basic file starts
+    te_level, 2C and H1, which `--variable tip_relief ...` does not vary: it was refused as
+    "not one of the variables")."""
+    import contact.optimize
+
+    seen = {}
+
+    def fake(case, variables, problem, **kw):  # records the call, stops before any work
+        seen.update(kw, names=[v.name for v in variables])
+        raise InputError("stop")
+
+    monkeypatch.setattr(contact.optimize, "optimize", fake)
+    basic = BASIC.with_name("kolivand2009_fm_11x41_reference.toml")
+    assert ltca(["optimize", str(basic), "-o", str(tmp_path / "o.toml"), "--torque", "50", "250",
+              "--variable", "tip_relief", "0", "60", "--variable", "root_relief", "0", "5",
+              "--flank", "coast"]) != 0  # the fake's stop
+    assert seen["names"] == ["tip_relief", "root_relief"]
+    # the table starts tip_relief 16.5 (kept) and root_relief 7.09 (outside 0-5: dropped)
+    assert seen["start"] == {"tip_relief": pytest.approx(16.508817284513)}
+
+
 def test_cli_checks_the_output_before_work(tmp_path, capsys):
     """An output path in a missing directory is refused before the case is read."""
     rc = ltca(["optimize", "no-such-case", "-o", str(tmp_path / "missing" / "x" / "o.toml"),

@@ -182,6 +182,11 @@ def run_optimize(args: argparse.Namespace) -> int:
     if not bounds:
         raise InputError("variables: give --variable NAME LOW HIGH or an [optimize.variables] "
                          "table in the case")
+    start = run.get("start") or {}
+    if args.variable:  # the table's start values belong to its variables: those kept that
+        # are still varied within the bounds given, the others start from the case
+        start = {n: v for n, v in start.items()
+                 if n in bounds and bounds[n][0] <= float(v) <= bounds[n][1]}
     variables = [DesignVariable(n, lo, hi) for n, (lo, hi) in bounds.items()]
     result = optimize(
         case, variables, problem,
@@ -191,7 +196,7 @@ def run_optimize(args: argparse.Namespace) -> int:
         popsize=run.get("popsize"), seed=args.seed if args.seed is not None
         else run.get("seed", 0), relief_start=run.get("relief_start", 0.5),
         scheduler=args.scheduler, n_workers=args.workers, progress=not args.no_progress,
-        basic=basic, start=run.get("start"))
+        basic=basic, start=start)
     b, s = result.best_evaluation, result.start_evaluation
     verdict = "all constraints met" if result.feasible else "INFEASIBLE: no design met every " \
         "constraint; the best design found is written"

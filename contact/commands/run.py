@@ -6,6 +6,7 @@ import argparse
 import logging
 import math
 import os
+import textwrap
 from pathlib import Path
 
 from contact.commands.options import (
@@ -324,11 +325,88 @@ def run(args: argparse.Namespace) -> int:
     print_verdict(tree, rest=None if args.report else
                   f"`ltca report {Path(output).name}` or `ltca run --report FILE.html` "
                   "lists them all")
+    for line in next_steps(tree, case, args.case, args.flank):  # commands unwrapped
+        print(line if line.startswith("  ") else textwrap.fill(line, 100))
     path = write_netcdf(tree, Path(output), inputs=tree.attrs["inputs"])
     print(f"wrote {path}")
     write_figures(path, args.plots, args.report, progress=not args.no_progress)
     check_certified(tree, path)
     return 0
+
+
+#: the verdict's checks a bearing change answers (the pattern, its edges, its pressure)
+BEARING_CHECKS = ("implausible", "plastic_edges", "edge_contact", "flank_pressure")
+#: the checks only a larger or stronger gear set answers
+CAPACITY_CHECKS = ("rating", "static")
+#: the case-level variables the bearing hint offers, with their half-range about the
+#: flank's own value (file units): lengthwise crowning by the point radius, profile
+#: position by the blade angle, the bias by the ratio of roll, and the profile relief;
+#: measured on the reference design's coast flank (docs/optimize.md, "A flank that fails")
+BEARING_VARIABLES = {"point_radius": 4.0, "blade_angle": 1.25, "ratio_of_roll": 0.03}
+
+
+def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]:
+    """The lines `ltca run` prints after a FAIL verdict: the commands that answer its
+    findings. A bearing finding (plastic or edge contact, flank pressure; :data:`BEARING_CHECKS`)
+    gets the V-H check and an `ltca optimize` command for this flank with the case's own
+    setting variables (:data:`BEARING_VARIABLES`, those the pinion's process has) and the
+    profile relief, edge share limited to 2 %; a capacity finding (:data:`CAPACITY_CHECKS`)
+    the rating's factors. Nothing for a verdict that is not FAIL.
+
+    Parameters
+    ----------
+    tree : xarray.DataTree
+        The analysis (:func:`contact.study.verdicts.verdict` reads it).
+    case : geometry.case.Case
+    case_arg : str or None
+        The CASE argument as given (None: the default case).
+    flank : str or None
+        ``"drive"``, ``"coast"``, or the pinion flank by name (``"concave"``,
+        ``"convex"``); None: drive.
+
+    Returns
+    -------
+    list of str
+    """
+    from contact.optimize.variables import DesignVariable, check_variables, start_values
+    from contact.study.verdicts import verdict
+    from contact.utca.easeoff import FLANK_ROLES
+    from geometry.core.errors import InputError
+
+    v = verdict(tree)
+    if v.severity != "fail":
+        return []
+    failed = {f.check for f in v.findings}
+    shown = case_arg if case_arg is not None else case.name
+    torques = " ".join(f"{t:g}" for t in tree["ltca"]["torque"].values)
+    side = flank or "drive"
+    if side not in FLANK_ROLES:  # a pinion flank by name: its role, as `ltca optimize` takes
+        side = "drive" if side == case.pair.drive_flank else "coast"
+    out = []
+    if failed & set(BEARING_CHECKS):
+        pinion_flank = FLANK_ROLES[side](case)
+        parts = []
+        for name, half in BEARING_VARIABLES.items():
+            try:
+                (x,) = start_values(case, pinion_flank, (name,))
+                var = DesignVariable(name, float(x) - half, float(x) + half)
+                check_variables(case, pinion_flank, [var])
+            except (InputError, KeyError, ValueError):
+                continue  # not a variable of this pinion's process
+            parts.append(f"--variable {name} {var.low:.4g} {var.high:.4g}")
+        parts += ["--variable tip_relief 0 60", "--variable root_relief 0 60"]
+        out += [f"next, the {side} flank's bearing: the pattern over the mounting positions, "
+                "then its settings and relief developed against the loaded result, the other "
+                "flank kept (docs/optimize.md, \"A flank that fails\"):",
+                f"  ltca vh-check {shown} --flank {side}",
+                f"  ltca optimize {shown} --flank {side} --torque {torques} {' '.join(parts)} "
+                "--max-edge-share 0.02 --max-evaluations 100"]
+    if failed & set(CAPACITY_CHECKS):
+        out += ["next, the load capacity: every factor of the rating; a wider face, a larger "
+                "module or a stronger material (the basic file's [design] and [rating]) carry "
+                "more (docs/rating.md):",
+                f"  ltca rate {shown} --torque {torques}"]
+    return out
 
 
 def check_certified(tree, path) -> None:

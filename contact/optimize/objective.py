@@ -211,7 +211,8 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
     **override
         Problem fields that replace the table's (e.g. from the command line); ``options``
         as a mapping of :class:`contact.ltca.LTCAOptions` fields is laid over the table's
-        sampling (an ``LTCAOptions`` replaces it).
+        sampling (an ``LTCAOptions`` replaces it). A ``torque`` among the table's own
+        keeps the per-torque limits the table gives those torques (:data:`PER_TORQUE_FIELDS`).
 
     Returns
     -------
@@ -229,6 +230,7 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
             "pattern_target", "penalty", "variables", "method", "max_evaluations",
             "popsize", "seed", "relief_start", "start", "rolls_per_cycle", "segments"}
     known_fields("optimize", table, sorted(keys))
+    table = _per_torque_of(table, override.get("torque"), override)
     kw: dict = {}
     for k in ("torque", "max_edge_share", "max_flank_pressure", "torque_weights"):
         if k in table:
@@ -280,6 +282,50 @@ def problem_from_table(table: Mapping, **override) -> tuple[OptimizeProblem, dic
             raise InputError(f"optimize.variables.{name}: must be [low, high], got {pair!r}")
         run["variables"][name] = (float(pair[0]), float(pair[1]))
     return problem, run
+
+
+#: the [optimize] fields given one entry per torque of the table's ``torque``
+PER_TORQUE_FIELDS = ("max_edge_share", "max_flank_pressure", "torque_weights",
+                     "lte_mean_range")
+
+
+def _per_torque_of(table: Mapping, torque, override: Mapping) -> dict:
+    """The table with its per-torque fields (:data:`PER_TORQUE_FIELDS`) reduced to the
+    torques of ``torque`` where these replace the table's own: each kept torque keeps the
+    limits the table gives it (``--torque 50 250`` on a table for 50, 250, 500 N·m keeps the
+    first two limits). A field of one value, or replaced by ``override``, stays as it is.
+
+    Raises
+    ------
+    InputError
+        A per-torque field where a torque of ``torque`` is not among the table's: which
+        field, and the option that gives it.
+    """
+    table = dict(table)
+    if torque is None or "torque" not in table:
+        return table
+    own = table["torque"]
+    own = tuple(float(t) for t in (own if isinstance(own, (list, tuple)) else (own,)))
+    new = tuple(float(t) for t in torque)
+    options = {"max_edge_share": "--max-edge-share", "max_flank_pressure":
+               "--max-flank-pressure"}
+    for name in PER_TORQUE_FIELDS:
+        v = table.get(name)
+        if (override.get(name) is not None or not isinstance(v, (list, tuple))
+                or len(v) != len(own) or len(own) == 1 or own == new):
+            continue
+        missing = [t for t in new if not any(math.isclose(t, o, rel_tol=1e-9) for o in own)]
+        if missing:
+            how = (f"give {options[name]}" if name in options else
+                   f"edit the [optimize] table's {name}")
+            raise InputError(
+                f"optimize.{name}: the table gives one per torque of its own "
+                f"({', '.join(f'{t:g}' for t in own)} N·m), not for "
+                f"{', '.join(f'{t:g}' for t in missing)} N·m: {how} for the torques "
+                "analysed, or choose among the table's torques")
+        table[name] = [v[next(i for i, o in enumerate(own)
+                              if math.isclose(t, o, rel_tol=1e-9))] for t in new]
+    return table
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,87 @@
+"""What `ltca run` prints after a FAIL verdict (``contact.commands.run.next_steps``).
+
+The lines must be commands a user can paste: each is parsed by the ``ltca`` parser, and the
+optimize command's variables are checked against the case by the optimiser's own
+validation (:func:`contact.optimize.variables.check_variables`) and centred on the flank's
+own setting (read independently from the case). The verdict is replaced by a stated one so
+that no analysis runs; that the command turns the reference design's failing coast flank
+into ATTENTION is measured in docs/optimize.md ("A flank that fails"), too slow for here.
+"""
+
+from __future__ import annotations
+
+import shlex
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import contact.study.verdicts
+from contact.catalogue import resolve_case
+from contact.cli import build_parser
+from contact.commands.run import BEARING_VARIABLES, next_steps
+from contact.optimize.variables import DesignVariable, check_variables
+from contact.study.verdicts import Finding, Verdict
+
+CASE = "kolivand2009_fm_11x41_reference"
+
+
+def _tree(torques=(50.0, 250.0)):
+    ltca = xr.Dataset(coords={"torque": np.asarray(torques)})
+    return xr.DataTree.from_dict({"/ltca": ltca})
+
+
+def _verdict(monkeypatch, *findings):
+    v = Verdict("analysis", tuple(Finding(*f) for f in findings), ("rating",))
+    monkeypatch.setattr(contact.study.verdicts, "verdict", lambda result: v)
+
+
+def _commands(lines):
+    return [shlex.split(line) for line in lines if line.startswith("  ltca ")]
+
+
+def test_no_step_for_a_verdict_that_is_not_fail(monkeypatch):
+    _verdict(monkeypatch, ("attention", "edge_contact", "edge contact 3 %"))
+    assert next_steps(_tree(), resolve_case(CASE), None, "coast") == []
+
+
+@pytest.mark.parametrize("given, flank, member_flank", [
+    ("coast", "coast", "convex"), ("drive", "drive", "concave"), (None, "drive", "concave"),
+    ("convex", "coast", "convex")])  # the reference design drives on the pinion's concave
+def test_a_bearing_failure_names_a_development_of_that_flank(monkeypatch, given, flank,
+                                                             member_flank):
+    case = resolve_case(CASE)
+    assert case.pair.drive_flank == "concave"
+    _verdict(monkeypatch, ("fail", "implausible", "plastic contact 5.7 %"))
+    lines = next_steps(_tree(), case, None, given)
+    commands = _commands(lines)
+    assert [c[1] for c in commands] == ["vh-check", "optimize"]
+    parser = build_parser()
+    for c in commands:  # the ltca parser accepts them as printed
+        parser.parse_args(c[1:])
+    opt = commands[1]
+    assert opt[opt.index("--flank") + 1] == flank
+    assert opt[opt.index("--torque") + 1: opt.index("--torque") + 3] == ["50", "250"]
+    variables = {}
+    for i, tok in enumerate(opt):
+        if tok == "--variable":
+            variables[opt[i + 1]] = (float(opt[i + 2]), float(opt[i + 3]))
+    assert set(variables) == set(BEARING_VARIABLES) | {"tip_relief", "root_relief"}
+    check_variables(case, member_flank, [DesignVariable(n, lo, hi)
+                                         for n, (lo, hi) in variables.items()])
+    # centred on the flank's own settings (4 significant digits printed)
+    blade = getattr(case.pinion, member_flank).blade
+    machine = getattr(case.pinion, member_flank).machine
+    own = {"point_radius": blade.point_radius, "ratio_of_roll": machine.ratio_of_roll}
+    for name, value in own.items():
+        lo, hi = variables[name]
+        assert (lo + hi) / 2 == pytest.approx(value, rel=1e-3)
+        assert hi - lo == pytest.approx(2 * BEARING_VARIABLES[name], rel=1e-2)
+
+
+def test_a_capacity_failure_names_the_rating(monkeypatch):
+    _verdict(monkeypatch, ("fail", "rating", "S_F 1.1 below 1.3"))
+    lines = next_steps(_tree((500.0,)), resolve_case(CASE), "my_case.toml", "drive")
+    commands = _commands(lines)
+    assert commands == [["ltca", "rate", "my_case.toml", "--torque", "500"]]
+    build_parser().parse_args(commands[0][1:])
