@@ -37,7 +37,7 @@ def _verdict(monkeypatch, *findings):
 
 
 def _commands(lines):
-    return [shlex.split(line) for line in lines if line.startswith("  ltca ")]
+    return [shlex.split(line) for line in lines if line.startswith("    ltca ")]
 
 
 def test_no_step_for_a_verdict_that_is_not_fail(monkeypatch):

@@ -325,8 +325,10 @@ def run(args: argparse.Namespace) -> int:
     print_verdict(tree, rest=None if args.report else
                   f"`ltca report {Path(output).name}` or `ltca run --report FILE.html` "
                   "lists them all")
-    for line in next_steps(tree, case, args.case, args.flank):  # commands unwrapped
-        print(line if line.startswith("  ") else textwrap.fill(line, 100))
+    for line in next_steps(tree, case, args.case, args.flank):  # under the verdict's
+        # findings; the commands unwrapped, to paste
+        print(line if line.startswith("    ltca ") else
+              textwrap.fill(line, 100, subsequent_indent="      "))
     path = write_netcdf(tree, Path(output), inputs=tree.attrs["inputs"])
     print(f"wrote {path}")
     write_figures(path, args.plots, args.report, progress=not args.no_progress)
@@ -346,12 +348,13 @@ BEARING_VARIABLES = {"point_radius": 4.0, "blade_angle": 1.25, "ratio_of_roll": 
 
 
 def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]:
-    """The lines `ltca run` prints after a FAIL verdict: the commands that answer its
-    findings. A bearing finding (plastic or edge contact, flank pressure; :data:`BEARING_CHECKS`)
-    gets the V-H check and an `ltca optimize` command for this flank with the case's own
-    setting variables (:data:`BEARING_VARIABLES`, those the pinion's process has) and the
-    profile relief, edge share limited to 2 %; a capacity finding (:data:`CAPACITY_CHECKS`)
-    the rating's factors. Nothing for a verdict that is not FAIL.
+    """The lines `ltca run` prints under a FAIL verdict's findings (indented as they are):
+    the commands that answer them. A bearing finding (plastic or edge contact, flank
+    pressure; :data:`BEARING_CHECKS`) gets the V-H check and an `ltca optimize` command
+    for this flank with the case's own setting variables (:data:`BEARING_VARIABLES`, those
+    the pinion's process has) and the profile relief, edge share limited to 2 %; a
+    capacity finding (:data:`CAPACITY_CHECKS`) the rating's factors. Nothing for a verdict
+    that is not FAIL.
 
     Parameters
     ----------
@@ -395,17 +398,17 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                 continue  # not a variable of this pinion's process
             parts.append(f"--variable {name} {var.low:.4g} {var.high:.4g}")
         parts += ["--variable tip_relief 0 60", "--variable root_relief 0 60"]
-        out += [f"next, the {side} flank's bearing: the pattern over the mounting positions, "
+        out += [f"  next, the {side} flank's bearing: the pattern over the mounting positions, "
                 "then its settings and relief developed against the loaded result, the other "
                 "flank kept (docs/optimize.md, \"A flank that fails\"):",
-                f"  ltca vh-check {shown} --flank {side}",
-                f"  ltca optimize {shown} --flank {side} --torque {torques} {' '.join(parts)} "
+                f"    ltca vh-check {shown} --flank {side}",
+                f"    ltca optimize {shown} --flank {side} --torque {torques} {' '.join(parts)} "
                 "--max-edge-share 0.02 --max-evaluations 100"]
     if failed & set(CAPACITY_CHECKS):
-        out += ["next, the load capacity: every factor of the rating; a wider face, a larger "
+        out += ["  next, the load capacity: every factor of the rating; a wider face, a larger "
                 "module or a stronger material (the basic file's [design] and [rating]) carry "
                 "more (docs/rating.md):",
-                f"  ltca rate {shown} --torque {torques}"]
+                f"    ltca rate {shown} --torque {torques}"]
     return out
 
 
