@@ -121,6 +121,18 @@ def test_plastic_share_attention_up_to_the_plausibility_limit_then_fail():
     assert "plastic contact" in fail.findings[0].reason
 
 
+def test_a_small_plastic_share_is_not_printed_as_zero():
+    """A share below 0.1 % (2 plastic segments of 40 rolls on a user design) printed as
+    "0.0 %" read as none at all beside a finding that says there are some: two
+    significant digits below 0.1 %, one decimal above (the values are the shares given)."""
+    def reason(share: float) -> str:
+        ds = _ltca([700.0], plastic_load_share=(("torque", "roll"), [[0.0, share]]))
+        return verdict(_tree(ltca=ds)).findings[0].reason
+
+    assert "one roll: 0.021 % at " in reason(0.00021)
+    assert "one roll: 2.5 % at " in reason(0.025)
+
+
 def test_edge_contact_and_boundaries_on_a_synthetic_mesh():
     """Two segments, a curve and a gear-toe edge: the edge's Σ F·arm share, and the
     pattern reaching the toe (first u row) and nothing else."""

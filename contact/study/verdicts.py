@@ -313,8 +313,10 @@ def _plastic(lt: xr.Dataset) -> list[Finding]:
     if not np.any(ok):
         return []
     torque = lt["torque"].values
-    where = ", ".join(f"{100 * s:.1f} % at {_t(t)}" for s, t in zip(share[ok], torque[ok],
-                                                                     strict=True))
+    # a share below 0.1 % with two significant digits: "0.0 %" read as none at all
+    where = ", ".join(f"{100 * s:.1f} % at {_t(t)}" if s >= 1e-3 else
+                      f"{100 * s:.2g} % at {_t(t)}"
+                      for s, t in zip(share[ok], torque[ok], strict=True))
     return [Finding("attention", "plastic_edges",
                     f"segments at their contact-pressure limit (plastic edges) carry up to "
                     f"this share of the torque at one roll: {where} (below the "
