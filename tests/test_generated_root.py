@@ -62,6 +62,19 @@ def test_bundled_cases_carry_the_derived_point_widths(capsys):
                     assert mem.flank(flank).blade.point_width > 0.0, (path.name, mem.name)
 
 
+def test_the_check_tells_round_off_from_a_change():
+    """--check compares the derived widths with a relative tolerance (ROUND_OFF, 1e-12): the
+    last digit of a width moves with the NumPy build (1.2412878285717923 against ...914 on
+    numpy 2.4, which failed the exact comparison in a fresh CI venv), a change of 1e-9
+    relative is a change, and so is any other line."""
+    mod = _derivation()
+    text = "[gear.cutter.concave]\nedge_radius = 0.813\npoint_width = 1.2412878285717923\n"
+    assert mod._same(text.replace("923", "914"), text)
+    assert not mod._same(text.replace("1.2412878285717923", "1.2412878298130801"), text)
+    assert not mod._same(text.replace("0.813", "0.814"), text)
+    assert not mod._same(text + "x = 1\n", text)
+
+
 @pytest.mark.parametrize("name, tol", [(DEFAULT, 1e-6), ("hypoid_iso23509_s2", 1e-3)])
 def test_spread_blade_point_width_is_the_slot_width_at_the_mean_root(name, tol):
     """A face-milled Formate gear's point width is its cutter's spread, r_OB − r_IB, and
