@@ -294,6 +294,20 @@ def test_resolved_model_not_offered_by_the_commands(capsys) -> None:
         assert "unrecognized arguments" in err and argv[-2] in err
 
 
+@pytest.mark.parametrize("mode", ["transient", "steady"])
+def test_resolved_model_not_run_by_the_study_api(mode) -> None:
+    # nor through the API: the public friction study (contact.study.friction_study, its
+    # SolveSettings) runs the stochastic model only and says where the resolved ones went
+    from friction.study.points import SOLVE_MODES, SolveSettings
+
+    assert SOLVE_MODES == ("stochastic",)
+    with pytest.raises(InputError, match=rf"^mode: must be 'stochastic', got '{mode}'; .*"
+                       r'docs/ehl\.md, "Why the resolved model left the commands"'):
+        SolveSettings(mode=mode)
+    with pytest.raises(TypeError, match="courant"):  # its time stepping went with it
+        SolveSettings(courant=1.0)  # type: ignore[call-arg]
+
+
 # ------------------------------------------------------------------------------ slow
 def _convergence_condition():
     cond = _condition(speed=5.0)

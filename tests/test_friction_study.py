@@ -265,7 +265,7 @@ def test_realisations_are_averaged():
 
 def test_combine_studies_and_refusals():
     from friction.kolivand2009 import DATA_DIR
-    from friction.study.fit import combine_studies, fit_kolivand2009
+    from friction.study.fit import RESOLVED_MODEL_SETTINGS, combine_studies, fit_kolivand2009
     from geometry.core.io import read_netcdf
 
     held = read_netcdf(DATA_DIR / "friction_study_75W90_heldout.nc", tree=False)
@@ -274,9 +274,20 @@ def test_combine_studies_and_refusals():
     assert both["point"].values.tolist() == list(range(2 * held.sizes["point"]))
     assert both.attrs["wall_time"] == pytest.approx(2 * held.attrs["wall_time"])
     assert both.attrs["design_method"] == "lhs; lhs"
-    longer = held.copy()
-    longer.attrs = {**held.attrs, "solver_average": 8.0}  # the same model sampled longer
-    assert combine_studies([held, longer]).attrs["solver_average"] == "2.0; 8.0"
+    more = held.copy()
+    more.attrs = {**held.attrs, "solver_realisations": 2}  # the same model sampled more often
+    assert combine_studies([held, more]).attrs["solver_realisations"] == "1; 2"
+    # a stored study (written before issue 61, with the resolved models' settings) and a
+    # new one without them combine, either first; the settings that differ still refuse
+    new = held.copy()
+    new.attrs = {k: v for k, v in held.attrs.items() if k not in RESOLVED_MODEL_SETTINGS}
+    assert "solver_courant" in held.attrs and "solver_courant" not in new.attrs
+    assert combine_studies([held, new]).sizes["point"] == 2 * held.sizes["point"]
+    assert combine_studies([new, held]).sizes["point"] == 2 * held.sizes["point"]
+    transient = new.copy()
+    transient.attrs = {**new.attrs, "solver_mode": "transient"}
+    with pytest.raises(InputError, match="solver_mode differs"):
+        combine_studies([new, transient])
     other = held.copy()
     other.attrs = {**held.attrs, "solver_nodes": 1024}
     with pytest.raises(InputError, match="solver_nodes differs"):

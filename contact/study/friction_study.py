@@ -84,7 +84,7 @@ def study_provenance(settings: SolveSettings, design_attrs: Mapping[str, Any]) -
     attrs: dict[str, Any] = {
         "toolkit_version": __version__,
         "solver_commit": _commit(),
-        "solver": _SOLVER_TEXT[settings.mode].format(
+        "solver": _SOLVER_TEXT.format(
             viscosity=settings.viscosity_model.capitalize(),
             thermal="flash temperature" if settings.thermal else "isothermal"),
     }
@@ -95,19 +95,12 @@ def study_provenance(settings: SolveSettings, design_attrs: Mapping[str, Any]) -
     return attrs
 
 
-#: the ``solver`` attribute of a study file, by mode
-_SOLVER_TEXT = {
-    "stochastic": "friction.ehl.stochastic.stochastic_summary (steady, statistical roughness: "
-                  "average-flow Reynolds, elastic-plastic GW summits; {viscosity}, "
-                  "Dowson-Higginson, Eyring + limiting shear at the {thermal}, boundary mu_b "
-                  "on the asperity pressure)",
-    "transient": "friction.ehl.transient.transient_summary (transient, roughness moving with "
-                 "each surface, BDF2, {viscosity}, Dowson-Higginson, Eyring + limiting shear, "
-                 "boundary mu_b on contact nodes, pressure limit: shakedown)",
-    "steady": "friction.ehl.line_contact.line_contact_summary (steady, frozen roughness, "
-              "{viscosity}, Dowson-Higginson, Eyring + limiting shear, boundary mu_b on "
-              "contact nodes)",
-}
+#: the ``solver`` attribute of a study file (the stochastic solver, the study's only mode
+#: since issue 61; stored studies of issue 34 name the resolved transient one)
+_SOLVER_TEXT = ("friction.ehl.stochastic.stochastic_summary (steady, statistical roughness: "
+                "average-flow Reynolds, elastic-plastic GW summits; {viscosity}, "
+                "Dowson-Higginson, Eyring + limiting shear at the {thermal}, boundary mu_b "
+                "on the asperity pressure)")
 
 
 def _point_dataset(index: int, point: Mapping[str, float], res: PointOutcome) -> xr.Dataset:
@@ -129,8 +122,8 @@ def _point_dataset(index: int, point: Mapping[str, float], res: PointOutcome) ->
 
 
 #: result scalars set at every converged point (``status`` 0): NaN there is a damaged
-#: chunk, never a result. Not ``pressure_max``: the steady solver (and a smooth point)
-#: reports none, so it is NaN at converged points of those modes
+#: chunk, never a result. Not ``pressure_max``: a smooth point's steady film reports
+#: none, so it is NaN at converged smooth points
 _FINITE_WHEN_CONVERGED = tuple(k for k in RESULT_VARIABLES if k != "pressure_max")
 
 
@@ -152,7 +145,8 @@ def run_friction_study(
     design : mapping of str to array (n,)
         :data:`friction.study.design.DESIGN_INPUTS` (MPa, mm, m/s, 1, degC, µm).
     settings : SolveSettings, optional
-        Solver grid, mode and oil (default ``SolveSettings()``: transient, 256 nodes, 75W90).
+        Solver grid and oil (default ``SolveSettings()``: the stochastic solver, 512 nodes,
+        75W90).
     design_attrs : mapping, optional
         How the design was made, stored as ``design_*`` attributes.
     output : path-like, optional

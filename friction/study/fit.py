@@ -47,8 +47,8 @@ from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
 from geometry.core.toml_files import dump_toml
 
-__all__ = ["DEFAULT_FEATURES", "EYRING_FEATURES", "SAMPLING_SETTINGS", "combine_studies",
-           "fit_kolivand2009", "fit_statistics", "study_inputs", "write_fit"]
+__all__ = ["DEFAULT_FEATURES", "EYRING_FEATURES", "RESOLVED_MODEL_SETTINGS", "SAMPLING_SETTINGS",
+           "combine_studies", "fit_kolivand2009", "fit_statistics", "study_inputs", "write_fit"]
 
 Array = NDArray[np.float64]
 
@@ -73,7 +73,15 @@ _REGIMES = ("boundary_mixed", "mixed", "full_film")
 
 #: Solver settings of a study that set how a point is sampled, not what is solved: studies
 #: that differ only in these combine (:func:`combine_studies`).
-SAMPLING_SETTINGS = ("solver_average", "solver_realisations")
+SAMPLING_SETTINGS = ("solver_realisations",)
+
+#: Settings that studies written before issue 61 carry and later ones do not: read only by
+#: the resolved models (the steady grid's and the transient time stepping's), which left
+#: the study (docs/ehl.md), never by the stochastic solver. A stored study and a new one
+#: that differ in these alone combine; the first study's values are kept.
+RESOLVED_MODEL_SETTINGS = ("solver_inlet", "solver_outlet", "solver_step_limit",
+                           "solver_roughness_steps", "solver_courant", "solver_ramp",
+                           "solver_flush", "solver_average", "solver_cavitation")
 
 
 def _plain(value: object) -> str:
@@ -91,9 +99,9 @@ def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
     ----------
     studies : sequence of xarray.Dataset
         Friction studies (``ltca friction-study``) with equal ``solver_*`` attributes but
-        the :data:`SAMPLING_SETTINGS` (how long a transient point is averaged, how many
-        roughness realisations: the same model sampled longer), which may differ and are
-        then joined (``"; "``).
+        the :data:`SAMPLING_SETTINGS` (how many roughness realisations: the same model
+        sampled more often), which may differ and are then joined (``"; "``), and the
+        :data:`RESOLVED_MODEL_SETTINGS` that only studies written before issue 61 carry.
 
     Returns
     -------
@@ -110,7 +118,8 @@ def combine_studies(studies: Sequence[xr.Dataset]) -> xr.Dataset:
         raise InputError("studies: at least one friction study is needed")
     first = studies[0]
     for k, v in first.attrs.items():
-        if k.startswith("solver_") and k not in ("solver_commit", *SAMPLING_SETTINGS):
+        if k.startswith("solver_") and k not in ("solver_commit", *SAMPLING_SETTINGS,
+                                                  *RESOLVED_MODEL_SETTINGS):
             for other in studies[1:]:
                 if other.attrs.get(k) != v:
                     raise InputError(

@@ -5,12 +5,14 @@
 LineContactCondition` — load per length from p_h (w′ = 2πR p_h²/E′) — and the two
 surfaces: ground profiles (:class:`friction.ehl.roughness.GroundSurface`, seeds 1 and 2,
 the seed's "baseline profile multiplied by a constant") of Rq₁ and Rq₂. It solves it
-through the solver's public API only: the transient model with the roughness moving
-(:func:`friction.ehl.transient.transient_summary`, the seed's model, ``mode="transient"``,
-the default) or the steady one with it frozen (:func:`~friction.ehl.line_contact.
-line_contact_summary`, ``mode="steady"``); smooth points are steady either way. A
-condition the solver does not converge on is recorded as failed with the reason, never
-as a result. It runs on a Dask worker (the runner is :mod:`contact.study.friction_study`).
+through the solver's public API only: rough points by the stochastic model (the
+profiles' statistics, :func:`friction.ehl.stochastic.stochastic_summary`), smooth points
+(both Rq 0) by the steady smooth film (:func:`friction.ehl.line_contact.
+line_contact_summary`). The resolved models (the profiles moving, transient, or frozen,
+steady) left the study in issue 61 (docs/ehl.md, "Why the resolved model left the
+commands"). A condition the solver does not converge on is recorded as failed with the
+reason, never as a result. It runs on a Dask worker (the runner is
+:mod:`contact.study.friction_study`).
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ from geometry.core.errors import InputError
 from geometry.core.validation import integer, one_of, real
 
 __all__ = ["POINT_STATUS", "RESULT_VARIABLES", "SOLVE_MODES", "PointOutcome", "SolveSettings",
-           "condition_of", "outcome_arrays", "solve_design_point", "surfaces_of"]
+           "outcome_arrays", "solve_design_point", "surfaces_of"]
 
 log = logging.getLogger(__name__)
 
@@ -51,16 +53,22 @@ RESULT_VARIABLES: Mapping[str, tuple[str, str]] = {
     "realisations_converged": ("1", "roughness realisations the solver converged on"),
     "friction_coefficient_spread": ("1", "standard deviation of mu over the converged "
                                          "realisations (0 for one)"),
-    "friction_coefficient_error": ("1", "standard error of the time mean of mu (transient; "
-                                        "0 for steady)"),
-    "pressure_max": ("MPa", "largest pressure (transient: over the averaging window)"),
+    "friction_coefficient_error": ("1", "standard error of the time mean of mu (0: the "
+                                        "study's solvers are steady; issue 34's transient "
+                                        "studies stored theirs)"),
+    "pressure_max": ("MPa", "largest pressure (NaN for a smooth point)"),
     "newton_iterations": ("1", "Newton iterations of the solver calls"),
     "flash_temperature_max": ("K", "largest surface flash temperature (stochastic; 0 else)"),
 }
 
-#: solution modes of a rough point: the statistical roughness (friction.ehl.stochastic,
-#: the default), the resolved profiles moving (friction.ehl.transient) or frozen
-SOLVE_MODES = ("stochastic", "transient", "steady")
+#: solution modes of a rough point: the statistical roughness (friction.ehl.stochastic).
+#: The resolved profiles, moving ("transient") or frozen ("steady"), left the study in
+#: issue 61: their asperities carried 11–27× less of the load than the stochastic model's
+#: on the same surfaces, a share that fell as their grid was refined (docs/ehl.md)
+SOLVE_MODES = ("stochastic",)
+
+#: where :class:`SolveSettings` refusing a resolved mode points to
+_RESOLVED_GONE = 'docs/ehl.md, "Why the resolved model left the commands"'
 
 
 @dataclass(frozen=True)
@@ -70,75 +78,60 @@ class SolveSettings:
     Parameters
     ----------
     nodes : int
-        Grid nodes over ``inlet`` … ``outlet`` Hertz half-widths, 64 … 16384.
-    inlet, outlet : float — [1]
-        Domain in units of b.
-    step_limit : float — [1]
-        Newton step limit (max |ΔP|) of :class:`friction.ehl.line_contact.Grid`.
+        Grid nodes of a rough point over the stochastic solver's domain
+        (:func:`friction.ehl.stochastic.stochastic_grid`), 64 … 16384. Smooth points
+        (both Rq 0) are the steady smooth film on the grid its Moes M asks.
     max_iterations : int
-        Newton iterations per roughness-homotopy step before a point counts as failed.
-    roughness_steps : int
-        Homotopy steps in the roughness amplitude.
+        Newton iterations before a point counts as failed (the stochastic solver takes at
+        least 200).
     lubricant : str
         Bundled oil name or oil TOML file (:func:`friction.lubricant.load_lubricant`).
     profile_seeds : (int, int)
         Seeds of the two surfaces' ground profiles (realisation k uses seeds + 2k).
     realisations : int
         Roughness realisations per condition, 1 … 32: the point's values are the means over
-        the realisations the solver converged on (steady frozen roughness makes μ in the
-        mixed regime depend on the realisation: measured RMS 53 % between two profile pairs
-        at λ 1–3, 5 % at λ < 0.3 and 4 % at λ > 3, 256 nodes; a transient run averages
-        over the roughness passing through the contact already).
-    mode : {"stochastic", "transient", "steady"}
+        the realisations the solver converged on (each realisation's profiles have their
+        own summit statistics).
+    mode : {"stochastic"}
         Rough points by the stochastic model (the roughness's statistics: the asperity
-        scale averaged, :mod:`friction.ehl.stochastic`; the default since issue 51, where
-        the resolved models' asperities never carried the load, docs/ehl.md), the transient
-        one (the resolved profiles moving, the seed's Li & Kahraman form) or the steady one
-        (frozen). Stochastic and transient runs take ``nodes`` over their own domains
-        (:func:`friction.ehl.stochastic.stochastic_grid`,
-        :func:`friction.ehl.transient.default_transient_grid`; ``inlet`` and ``outlet`` are
-        the steady grid's). Smooth points (both Rq 0) are the steady smooth film, on the
-        grid its Moes M asks.
-    courant, ramp, flush, average : float
-        The transient run's :class:`friction.ehl.transient.TimeGrid`.
+        scale averaged, :mod:`friction.ehl.stochastic`), the only mode. ``"transient"``
+        and ``"steady"`` (the resolved profiles moving or frozen) are refused: they left
+        the study in issue 61 (docs/ehl.md, "Why the resolved model left the commands");
+        :mod:`friction.ehl.transient` itself stays for its tests and that record.
     short_cutoff : float — [mm]
         λs of the ground profiles (:class:`friction.ehl.roughness.GroundSurface`).
     viscosity_model : {"barus", "roelands"}
         Viscosity–pressure model of the film and its traction
         (:data:`friction.ehl.rheology.VISCOSITY_PRESSURE_MODELS`; Barus by default, as
         :class:`friction.ehl.line_contact.LineContactCondition`).
-    cavitation : {"reynolds", "mass_conserving"}
-        The transient runs' cavitation condition (:class:`friction.ehl.complementarity.
-        NewtonOptions`).
     thermal : bool
         Stochastic runs: the film's shear at the surfaces' flash temperature
         (:class:`friction.ehl.stochastic.StochasticOptions`).
+
+    Raises
+    ------
+    InputError
+        A field out of its range, named (``mode`` other than ``"stochastic"`` with where
+        the resolved models went).
     """
 
     nodes: int = 512
-    inlet: float = -4.0
-    outlet: float = 1.5
-    step_limit: float = 3.0
     max_iterations: int = 60
-    roughness_steps: int = 4
     lubricant: str = "75W90"
     profile_seeds: tuple[int, int] = (1, 2)
     realisations: int = 1
     mode: str = "stochastic"
-    courant: float = 1.0
-    ramp: float = 0.5
-    flush: float = 2.5
-    average: float = 2.0
     short_cutoff: float = 0.008
     viscosity_model: str = "barus"
-    cavitation: str = "reynolds"
     thermal: bool = True
 
     def __post_init__(self) -> None:
+        if self.mode not in SOLVE_MODES:
+            raise InputError(
+                f"mode: must be 'stochastic', got {self.mode!r}; the resolved transient and "
+                f"steady models are no longer run by the friction study ({_RESOLVED_GONE})")
         integer("nodes", self.nodes, low=64, high=16384)
-        real("step_limit", self.step_limit, low=0.0, low_open=True, unit="1")
         integer("max_iterations", self.max_iterations, low=1, high=10000)
-        integer("roughness_steps", self.roughness_steps, low=1, high=100)
         if not isinstance(self.lubricant, str) or not self.lubricant:
             raise InputError(f"lubricant: must be an oil name, got {self.lubricant!r}")
         from friction.ehl.line_contact import lubricant_of
@@ -152,32 +145,10 @@ class SolveSettings:
         for s in self.profile_seeds:
             integer("profile_seeds", s, low=0)
         integer("realisations", self.realisations, low=1, high=32)
-        one_of("mode", self.mode, SOLVE_MODES)
         one_of("viscosity_model", self.viscosity_model, ("barus", "roelands"))
         if not isinstance(self.thermal, bool):
             raise InputError(f"thermal: must be true or false, got {self.thermal!r}")
         real("short_cutoff", self.short_cutoff, unit="mm", low=0.0)
-        self.time_grid().check()
-
-    def time_grid(self):
-        """The transient runs' time stepping (:class:`friction.ehl.transient.TimeGrid`)."""
-        from friction.ehl.complementarity import NewtonOptions
-        from friction.ehl.transient import TimeGrid
-
-        return TimeGrid(courant=self.courant, ramp=self.ramp, flush=self.flush,
-                        average=self.average,
-                        newton=NewtonOptions(max_iterations=self.max_iterations,
-                                             cavitation=self.cavitation))
-
-    def grid(self):
-        """The solver grid (:class:`friction.ehl.line_contact.Grid`)."""
-        from friction.ehl.line_contact import Grid
-
-        g = Grid(nodes=self.nodes, inlet=self.inlet, outlet=self.outlet,
-                 step_limit=self.step_limit, max_iterations=self.max_iterations,
-                 roughness_steps=self.roughness_steps)
-        g.check()
-        return g
 
     def as_dict(self) -> dict[str, object]:
         """The settings as plain values (JSON and netCDF attributes)."""
@@ -196,42 +167,6 @@ class PointOutcome:
     values: dict[str, float]    #: :data:`RESULT_VARIABLES` (NaN where failed)
 
 
-def condition_of(settings: SolveSettings, point: Mapping[str, float], realisation: int = 0):
-    """The solver's condition for a design point (steady mode: roughness on the grid).
-
-    Parameters
-    ----------
-    settings : SolveSettings
-    point : mapping of str to float
-        ``hertz_pressure`` [MPa], ``radius`` [mm], ``entraining_velocity`` [m/s],
-        ``slide_to_roll`` [1], ``temperature`` [degC], ``roughness_1``, ``roughness_2`` [µm].
-    realisation : int
-        Roughness realisation k: profile seeds ``settings.profile_seeds`` + 2k.
-
-    Returns
-    -------
-    friction.ehl.line_contact.LineContactCondition
-        w′ = 2πR p_h²/E′ [N/mm] (from p_h = E′b/(4R), b = √(8w′R/(πE′))), steel E′, the
-        ground profiles of ``settings.profile_seeds`` scaled to Rq₁, Rq₂ on the steady grid
-        (None for Rq 0).
-
-    Raises
-    ------
-    InputError
-        A non-positive p_h or R (named).
-    """
-    from friction.ehl.line_contact import STEEL_E_PRIME, LineContactCondition, hertz_line_contact
-    from friction.ehl.roughness import ground_profile
-
-    cond, rq = _smooth_condition(settings, point)
-    b, _ = hertz_line_contact(cond.load_per_length, cond.radius, STEEL_E_PRIME)
-    x = settings.grid().coordinates() * b
-    rough = [ground_profile(x, q, seed=seed + 2 * realisation) if q > 0.0 else None
-             for q, seed in zip(rq, settings.profile_seeds, strict=True)]
-    return LineContactCondition(**{**{f: getattr(cond, f) for f in cond.__dataclass_fields__},
-                                   "roughness_1": rough[0], "roughness_2": rough[1]})
-
-
 def _smooth_condition(settings: SolveSettings, point: Mapping[str, float]):
     """The point's smooth condition and its two Rq [µm]."""
     from friction.ehl.line_contact import STEEL_E_PRIME, LineContactCondition
@@ -248,13 +183,13 @@ def _smooth_condition(settings: SolveSettings, point: Mapping[str, float]):
 
 
 def surfaces_of(settings: SolveSettings, point: Mapping[str, float], realisation: int = 0):
-    """The point's two surfaces for a transient run.
+    """The point's two surfaces (ground profiles of its Rq₁ and Rq₂).
 
     Parameters
     ----------
     settings : SolveSettings
     point : mapping of str to float
-        As :func:`condition_of`.
+        As :func:`solve_design_point`.
     realisation : int
         Profile seeds ``settings.profile_seeds`` + 2k.
 
@@ -281,7 +216,10 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
     index : int
         The point's place in the design.
     point : mapping of str to float
-        Its inputs (:func:`condition_of`).
+        Its inputs: ``hertz_pressure`` [MPa], ``radius`` [mm], ``entraining_velocity``
+        [m/s], ``slide_to_roll`` [1], ``temperature`` [degC], ``roughness_1``,
+        ``roughness_2`` [µm]; w′ = 2πR p_h²/E′ (from p_h = E′b/(4R), b = √(8w′R/(πE′))),
+        steel E′.
 
     Returns
     -------
@@ -307,8 +245,6 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
         stochastic_grid,
         stochastic_summary,
     )
-    from friction.ehl.transient import default_transient_grid, transient_summary
-
     values = dict.fromkeys(RESULT_VARIABLES, math.nan)
     t0 = time.perf_counter()
     solved: list = []
@@ -324,7 +260,7 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
             with threadpool_limits(limits=1):
                 if max(rq) == 0.0:
                     solved.append(line_contact_summary(cond))
-                elif settings.mode == "stochastic":
+                else:
                     surfaces = surfaces_of(settings, point, k)
                     grid = stochastic_grid(cond, roughness_statistics(surfaces),
                                            settings.nodes)
@@ -332,13 +268,6 @@ def solve_design_point(settings: SolveSettings, index: int, point: Mapping[str, 
                         cond, surfaces, grid, StochasticOptions(
                             max_iterations=max(settings.max_iterations, 200),
                             thermal=settings.thermal)))
-                elif settings.mode == "transient":
-                    grid = default_transient_grid(cond, settings.nodes)
-                    solved.append(transient_summary(cond, surfaces_of(settings, point, k),
-                                                    grid, settings.time_grid()))
-                else:
-                    solved.append(line_contact_summary(condition_of(settings, point, k),
-                                                       settings.grid()))
         except ConvergenceError as exc:
             status, reason = 1, f"ConvergenceError: {exc}".splitlines()[0]
         except InputError as exc:
