@@ -20,18 +20,22 @@ is a production bearing (:class:`DevelopmentTargets`):
 
 Two stages (:func:`develop`): the **bearing** (path angle, ellipse length), each design
 a synthesis of its drive flank (:func:`geometry.synthesis.case_synthesis.synthesize` with
-a memo: the coast flank, never varied, is synthesised once); then the **relief** (tip and
+a memo: the coast flank, not varied there, is synthesised once); then the **relief** (tip and
 root relief and their start), each design the synthesis' relief and tip plane alone (the
 same function, so the design analysed is the case written). Each design is analysed on
 its drive flank by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll positions,
 12 segments per curve, shell compliance with the teeth kept across designs,
 :class:`KeptTeeth`; no root stress) at the light and the design torque, summarised by
 :func:`contact.study.summary.point_summary`. The best designs are then checked at
-``ltca run``'s sampling (:data:`CHECK_LTCA`), the chosen one's coast flank is analysed
-once, and where its flank peak pressure at the rating's capacity exceeds the static
-strength the design torque is lowered to what the bearing carries
-(:func:`_static_capacity`): a design never fails its own check at its own design torque.
-The objective
+``ltca run``'s sampling (:data:`CHECK_LTCA`), and where the chosen one's flank peak
+pressure at the rating's capacity exceeds the static strength the design torque is
+lowered to what the bearing carries (:func:`_static_capacity`): a design never fails its
+own check at its own design torque. Then the **coast flank** (:func:`_coast_development`):
+the chosen design's coast flank, synthesised from its own prescriptions, is checked at
+:data:`CHECK_LTCA` at the same light and design torque against the same targets (it
+carries the full torque in reverse gear), and where it misses one it gets the same two
+stages and check on its own prescriptions with its own budget
+(``coast_max_evaluations``); the drive flank's result stays as chosen. The objective
 (:func:`development_score`) is a sum of squared, dimensionless shortfalls, minimised by a
 bounded Nelder–Mead (``scipy.optimize.minimize``; the relief stage first samples its box
 with scrambled Sobol points, ``scipy.stats.qmc``) that stops as soon as every target is
@@ -44,6 +48,7 @@ DevelopmentTargets   the targets (the ``[development]`` table of a basic file)
 targets_from_table   the targets from that table (file units), validated
 VARIABLES            the developed synthesis inputs and their default bounds
 RELIEF_NAMES         those of the relief stage
+COAST_STATUS         what the coast flank's development did, in words
 COARSE_LTCA          the LTCA settings inside the loop
 CHECK_LTCA           the LTCA settings of the final check (ltca run's)
 KeptTeeth            the shell teeth kept across a development's designs
@@ -65,7 +70,7 @@ import math
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -83,7 +88,8 @@ from geometry.synthesis.basic_design import (
     with_flank_options,
 )
 
-__all__ = ["CHECK_LTCA", "COARSE_LTCA", "RELIEF_NAMES", "STAGE_TERMS", "VARIABLES",
+__all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "RELIEF_NAMES", "STAGE_TERMS",
+           "VARIABLES",
            "VERIFIED_DESIGNS", "DevelopmentEvaluation", "DevelopmentResult",
            "DevelopmentTargets", "KeptTeeth", "design_torque_of", "develop",
            "development_score", "footprint_centre", "lte_spread", "static_strength",
@@ -137,6 +143,13 @@ VERIFIED_DESIGNS = 2
 RELIEF_BEARINGS = 2
 #: designs of the relief stage kept for the second bearing (≈ 0.3 s CPU each)
 SECOND_BEARING_DESIGNS = 6
+#: most bearings of the coast flank's search (each a synthesis, ≈ 2 s CPU face milled, 4 s
+#: face hobbed): the initial simplex of the path angle and the ellipse. On four designs of
+#: docs/own_gear_set.md (hypoids 12x41, 10x43, 9x37 face milled, 11x43 face hobbed) 6
+#: bearings of 12 designs chose the same coast design as 3 of 10 or of 8, for 40-50 % more
+#: CPU (18.7 against 12.3 s on the 12x41, 28.7 against 20.3 s on the 11x43): the coast
+#: flank's shortfalls are its edges, which its relief answers
+COAST_BEARING_DESIGNS = 3
 #: objective of a design whose synthesis or analysis failed
 FAILED = 1e6
 #: shortfall scales of the edge share, the plastic share [1] and the LTE [µrad]
@@ -200,6 +213,13 @@ class DevelopmentTargets:
         synthesis, ≈ 2 s CPU), the rest in the relief stage (each ≈ 0.3 s): 10 on the best
         bearing, and :data:`SECOND_BEARING_DESIGNS` (6) on the next where the first
         misses the LTE target.
+    coast_max_evaluations : int
+        Most designs of the coast flank's search, after the drive flank is chosen, at the
+        same light and design torque and on the same targets (the coast flank carries the
+        full torque in reverse gear); default 10 (:data:`COAST_BEARING_DESIGNS` = 3
+        bearings, 7 reliefs), in [0, 500]; 0 turns the coast development off (the coast
+        flank is synthesised from its own prescriptions and checked once). The search runs
+        only where the coast flank as synthesised misses a target.
     variables : mapping name → (low, high)
         Developed synthesis inputs (``[synthesis]`` names and units); default
         :data:`VARIABLES`; ``te_level`` and ``approach`` may be added (bearing stage).
@@ -208,7 +228,8 @@ class DevelopmentTargets:
     ------
     InputError
         On construction, a field outside its range above (not a finite number, or
-        ``max_evaluations`` not an integer in [1, 500]), or ``variables`` empty, naming
+        ``max_evaluations`` not an integer in [1, 500], ``coast_max_evaluations`` not
+        one in [0, 500]), or ``variables`` empty, naming
         something other than a synthesis input, or giving a bound that is not
         ``[low, high]`` with low < high; the message names the field
         (``development.<field>``) and the accepted range.
@@ -228,6 +249,7 @@ class DevelopmentTargets:
     offset_tolerance: float = 0.05
     mounting_tolerance: float = 0.05
     max_evaluations: int = 22
+    coast_max_evaluations: int = 10
     variables: Mapping[str, tuple[float, float]] = field(
         default_factory=lambda: dict(VARIABLES))
 
@@ -251,10 +273,11 @@ class DevelopmentTargets:
             chk("max_flank_pressure", 0.0, 1e5, unit="MPa", low_open=True)
         chk("offset_tolerance", 0.0, 5.0, unit="mm")
         chk("mounting_tolerance", 0.0, 5.0, unit="mm")
-        n = self.max_evaluations
-        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= 500:
-            raise InputError(f"development.max_evaluations: must be an integer in [1, 500], "
-                             f"got {n!r}")
+        for name, low in (("max_evaluations", 1), ("coast_max_evaluations", 0)):
+            n = getattr(self, name)
+            if isinstance(n, bool) or not isinstance(n, int) or not low <= n <= 500:
+                raise InputError(f"development.{name}: must be an integer in [{low}, 500], "
+                                 f"got {n!r}")
         if not isinstance(self.variables, Mapping) or not self.variables:
             raise InputError("development.variables: give at least one synthesis input as "
                              f"name = [low, high]; accepted: {', '.join(FLANK_OPTION_UNITS)}")
@@ -598,10 +621,11 @@ class KeptTeeth:
     once: the LTCA's ``"shell"`` compliance with the teeth kept across designs.
 
     Every design of a development has the same gear (the Formate gear of the basic
-    design's blank; the development varies only the pinion's drive flank), so the gear's
+    design's blank; the development varies only the pinion's flanks), so the gear's
     tooth is measured and its shell factorised once, keyed by the case's pair and gear
     data. The pinion's tooth is keyed by the caller's ``pinion_key``: the development
-    gives the bearing-stage prescriptions, so the designs of the relief stage (the same
+    gives the bearing-stage prescriptions (the coast flank's search: the drive's and the
+    coast's), so the designs of the relief stage (the same
     flanks but for the blade's toprem and flankrem, ≤ 60 µm of normal ease-off at the
     flank's ends) share the tooth of their bearing design. The shell's thickness and
     height are least-squares fits over the whole tooth (a linear thickness from toe to
@@ -672,7 +696,8 @@ class DevelopmentResult:
     Attributes
     ----------
     basic : BasicDesign
-        The design with the developed prescriptions of the drive flank.
+        The design with the developed prescriptions of the drive flank (and of the coast
+        flank where :attr:`coast_status` is ``"developed"``).
     case : Case
         Its synthesis (the developed case).
     report : geometry.synthesis.case_synthesis.SynthesisReport
@@ -695,15 +720,31 @@ class DevelopmentResult:
         The depth centre aimed at (``targets.pattern_centre_v`` or the working depth's
         middle, :func:`working_depth_centre`).
     coast : dict name → ndarray (2,) or None
-        :data:`METRIC_NAMES` of the coast flank (never varied) at (light, design) torque,
-        checked once at the end at :data:`CHECK_LTCA`; None where that analysis failed.
+        :data:`METRIC_NAMES` of the written case's coast flank at (light, design) torque
+        at :data:`CHECK_LTCA`; None where that analysis failed.
     check_seconds : float
-        CPU time [s] of the final check, the final synthesis, the coast check and the
-        tolerance check (the rest of ``seconds`` is the designs' :attr:`stage_seconds`).
+        CPU time [s] of the drive flank's final check, the final synthesis and the
+        tolerance check (the rest of ``seconds`` is the designs' and the coast flank's,
+        :attr:`stage_seconds`).
     torque_lowered : bool
         The design torque is the bearing's static flank capacity, below the rating's
         (:func:`_static_capacity`); :meth:`recorded` writes it as the case's
         ``[rating] design_torque``.
+    coast_best : DevelopmentEvaluation or None
+        The coast flank written: a design of its search (checked at :data:`CHECK_LTCA`)
+        or, stage ``"synthesised"``, the flank as synthesised from its own prescriptions;
+        None where its analysis failed.
+    coast_evaluations : tuple of DevelopmentEvaluation
+        Every design of the coast flank's search, in order (empty where none ran).
+    coast_status : str
+        A key of :data:`COAST_STATUS`: ``"developed"``, ``"met"`` (every target met as
+        synthesised: no search), ``"off"`` (``coast_max_evaluations`` = 0), ``"not
+        improved"`` (the search found nothing better) or ``"not checked"``; empty where
+        not known (a result made by hand).
+    coast_before : dict name → ndarray (2,) or None
+        The coast flank's metrics as synthesised where its search ran (else None).
+    coast_seconds : float
+        CPU time [s] of the coast flank's check and development.
     """
 
     basic: BasicDesign
@@ -720,6 +761,11 @@ class DevelopmentResult:
     coast: dict[str, np.ndarray] | None = None
     check_seconds: float = 0.0
     torque_lowered: bool = False
+    coast_best: DevelopmentEvaluation | None = None
+    coast_evaluations: tuple[DevelopmentEvaluation, ...] = ()
+    coast_status: str = ""
+    coast_before: dict[str, np.ndarray] | None = None
+    coast_seconds: float = 0.0
 
     @property
     def tolerant(self) -> bool:
@@ -730,19 +776,18 @@ class DevelopmentResult:
 
     @property
     def stage_seconds(self) -> dict[str, float]:
-        """CPU time [s] of the bearing stage, the relief stage (their designs' syntheses
-        and coarse LTCAs) and the final checks."""
+        """CPU time [s] of the drive flank's bearing stage, its relief stage (their
+        designs' syntheses and coarse LTCAs), the final checks and the coast flank (its
+        check and development)."""
         out = {st: sum(e.seconds for e in self.evaluations if e.stage == st)
                for st in ("bearing", "relief")}
-        return out | {"check": self.check_seconds}
+        return out | {"check": self.check_seconds, "coast": self.coast_seconds}
 
     def summary(self) -> str:
         """One paragraph for the case's ``source``: prescriptions, targets, achieved."""
         b, t = self.best, self.targets
         m = b.metrics
-        vals = ", ".join(f"{k} {v:.4g}" + (f" {FLANK_OPTION_UNITS[k]}"
-                                             if FLANK_OPTION_UNITS[k] != "1" else "")
-                         for k, v in b.values.items())
+        vals = _values_text(b.values)
         tl, td = self.torque
         tol = "; ".join(
             f"{lab}: pattern {ms['pattern_toe_u'][0]:.2f}-{ms['pattern_heel_u'][0]:.2f}, edge "
@@ -768,12 +813,14 @@ class DevelopmentResult:
             f"{m['lte_peak_to_peak'][0]:.1f}/{m['lte_peak_to_peak'][1]:.1f} urad, flank "
             f"peak pressure {m['pressure_max_flank'][0]:.0f}/"
             f"{m['pressure_max_flank'][1]:.0f} MPa (light/design); {self._met_text()}. "
-            + self._coast_text() + f"Tolerance (dE = +/-{t.offset_tolerance:g} mm, dP = +/-"
+            f"Tolerance (dE = +/-{t.offset_tolerance:g} mm, dP = +/-"
             f"{t.mounting_tolerance:g} mm): {tol}"
-            f" ({'tolerant' if self.tolerant else 'not tolerant'}).")
+            f" ({'tolerant' if self.tolerant else 'not tolerant'}). "
+            + self._coast_text().rstrip())
 
     def headline(self) -> str:
-        """One line: the chosen design, whether it met its targets and is tolerant."""
+        """One line: the chosen design, whether it met its targets and is tolerant, and
+        what became of the coast flank."""
         b, t = self.best, self.targets
         m = b.metrics
         return (f"development: design {b.index + 1} of {len(self.evaluations)}, "
@@ -783,7 +830,7 @@ class DevelopmentResult:
                 f"{m['lte_peak_to_peak'][1]:.0f} urad at {self.torque[1]:.4g} N m; "
                 f"{'tolerant' if self.tolerant else 'not tolerant'} at dE +/-"
                 f"{t.offset_tolerance:g} mm, dP +/-{t.mounting_tolerance:g} mm; "
-                f"{self.seconds:.0f} s CPU")
+                f"{self._coast_headline()}; {self.seconds:.0f} s CPU")
 
     def recorded(self, case: Case) -> Case:
         """``case`` (the developed case, maybe with its rating's design torque set) with
@@ -818,17 +865,48 @@ class DevelopmentResult:
         c = self.coast
         if not c:
             return "Coast flank: not checked (its analysis failed). "
-        return (f"Coast flank (not developed): pattern u {c['pattern_toe_u'][0]:.2f}-"
-                f"{c['pattern_heel_u'][0]:.2f}, plastic "
-                f"{100 * np.max(c['plastic_share']):.1f} %, flank peak pressure "
-                f"{c['pressure_max_flank'][0]:.0f}/{c['pressure_max_flank'][1]:.0f} MPa, "
-                f"LTE p-p {c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} "
-                "urad. ")
+        achieved = (f"pattern u {c['pattern_toe_u'][0]:.2f}-{c['pattern_heel_u'][0]:.2f}, v "
+                    f"{c['pattern_root_v'][0]:.2f}-{c['pattern_tip_v'][0]:.2f}, centre "
+                    f"({c['pattern_centre_u'][0]:.2f}, {c['pattern_centre_v'][0]:.2f}); edge share "
+                    f"{100 * c['edge_load_share'][0]:.1f}/{100 * c['edge_load_share'][1]:.1f}"
+                    f" %, plastic {100 * c['plastic_share'][0]:.1f}/"
+                    f"{100 * c['plastic_share'][1]:.1f} %, flank peak pressure "
+                    f"{c['pressure_max_flank'][0]:.0f}/{c['pressure_max_flank'][1]:.0f} MPa, "
+                    f"LTE p-p {c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} "
+                    "urad (light/design)")
+        b = self.coast_best
+        met = "" if b is None or b.full is None else f"; {_met_text(b.full)}"
+        if self.coast_status == "developed":
+            before = self.coast_before
+            was = ("" if not before else
+                   f"; as synthesised plastic {100 * np.max(before['plastic_share']):.1f} %, "
+                   f"edge share {100 * before['edge_load_share'][1]:.1f} %, LTE p-p "
+                   f"{before['lte_peak_to_peak'][0]:.1f}/"
+                   f"{before['lte_peak_to_peak'][1]:.1f} urad")
+            n = len(self.coast_evaluations)
+            return (f"Coast flank (developed, {n} design{'s' if n != 1 else ''} at the "
+                    f"same torques and targets, the chosen one checked at the default "
+                    f"sampling): {_values_text(b.values)}{was}. Achieved: {achieved}{met}. ")
+        why = COAST_STATUS.get(self.coast_status, "not developed")
+        if self.coast_status == "not improved":
+            why += f" ({len(self.coast_evaluations)} designs)"
+        return f"Coast flank ({why}): {achieved}{met}. "
+
+    def _coast_headline(self) -> str:
+        b = self.coast_best
+        if self.coast_status == "developed":
+            return (f"coast flank developed ({len(self.coast_evaluations)} designs): plastic "
+                    f"{100 * np.max(b.metrics['plastic_share']):.1f} %, {_met_text(b.full)}")
+        if b is None or b.full is None:
+            return "coast flank not checked"
+        what = {"met": "met every target as synthesised", "off": "coast development off",
+                "not improved": "its search found nothing better"}.get(self.coast_status,
+                                                                      "not developed")
+        return (f"coast flank not developed ({what}): plastic "
+                f"{100 * np.max(b.metrics['plastic_share']):.1f} %")
 
     def _met_text(self) -> str:
-        _, short, met = self.best.full
-        return ("every target met" if met else "not every target met: "
-                + ", ".join(k for k, v in short.items() if v > 0))
+        return _met_text(self.best.full)
 
     def table(self) -> dict[str, Any]:
         """The case's informational ``[development]`` table (TOML-safe values)."""
@@ -839,7 +917,9 @@ class DevelopmentResult:
                     "prescriptions and what the LTCA gave at [light, design] torque "
                     + ("(the final check at ltca run's default sampling)" if b.checked
                        else "(the coarse LTCA of the search)")
-                    + "; coast_achieved: the coast flank (not developed) at the same torques",
+                    + "; coast: the coast flank at the same torques and targets (its "
+                    "development, the prescriptions written, achieved at the default "
+                    "sampling); coast_achieved: the same metrics as achieved",
             "torque_Nm": [float(x) for x in self.torque],
             "design_torque_source": self.torque_source,
             "prescriptions": {k: float(v) for k, v in b.values.items()},
@@ -849,8 +929,39 @@ class DevelopmentResult:
             "cpu_seconds": round(self.seconds, 1),
             "cpu_seconds_stages": {k: round(v, 1) for k, v in self.stage_seconds.items()},
             "achieved": m,
-        } | ({"coast_achieved": {k: [round(float(x), 6) for x in v]
-                                 for k, v in self.coast.items()}} if self.coast else {})
+            "coast": self._coast_table(),
+        } | ({"coast_achieved": _rounded(self.coast)} if self.coast else {})
+
+    def _coast_table(self) -> dict[str, Any]:
+        c = self.coast_best
+        out: dict[str, Any] = {
+            "development": COAST_STATUS.get(self.coast_status, "not developed"),
+            "evaluations": len(self.coast_evaluations),
+            "cpu_seconds": round(self.coast_seconds, 1)}
+        if c is not None:
+            out["prescriptions"] = {k: float(v) for k, v in c.values.items()}
+            if c.full is not None:
+                out["targets_met"] = int(c.full[2])
+                out["missed"] = [k for k, v in c.full[1].items() if v > 0]
+        if self.coast_before:
+            out["as_synthesised"] = _rounded(self.coast_before)
+        return out
+
+
+def _rounded(metrics: Mapping[str, np.ndarray]) -> dict[str, list[float]]:
+    return {k: [round(float(x), 6) for x in v] for k, v in metrics.items()}
+
+
+def _met_text(full: tuple[float, dict[str, float], bool]) -> str:
+    _, short, met = full
+    return ("every target met" if met else "not every target met: "
+            + ", ".join(k for k, v in short.items() if v > 0))
+
+
+def _values_text(values: Mapping[str, float]) -> str:
+    return ", ".join(f"{k} {v:.4g}" + (f" {FLANK_OPTION_UNITS[k]}"
+                                        if FLANK_OPTION_UNITS[k] != "1" else "")
+                     for k, v in values.items())
 
 
 class _Stop(Exception):
@@ -919,7 +1030,8 @@ def _sample_then_minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray,
 def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
             synthesis_progress: Any = None) -> DevelopmentResult:
-    """Develop the drive flank of a basic design to the bearing of ``targets``.
+    """Develop the drive flank, then the coast flank, of a basic design to the bearing of
+    ``targets``.
 
     Parameters
     ----------
@@ -938,8 +1050,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     -------
     DevelopmentResult
         The developed basic design and its synthesised case, the chosen design and every
-        design analysed, the light and design torque, and the chosen design's metrics at
-        the mounting excursions.
+        design analysed, the light and design torque, the chosen design's metrics at
+        the mounting excursions, and what became of the coast flank (its check, its
+        search's designs, the coast design written).
 
     Raises
     ------
@@ -948,7 +1061,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
 
     Notes
     -----
-    Two stages, as a bearing is developed on the test stand (:data:`VARIABLES`):
+    Two stages on the drive flank, as a bearing is developed on the test stand
+    (:data:`VARIABLES`), then the coast flank (3.):
 
     1. **bearing**: the path angle and ellipse length (and any other non-relief input)
        varied, each design the full synthesis
@@ -967,15 +1081,27 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
 
     Each stage is a bounded Nelder–Mead (``scipy.optimize.minimize``, variables scaled to
     [0, 1]) that stops at the first design meeting every target of its stage. The search
-    analyses the drive flank alone, coarsely (:data:`COARSE_LTCA`); then the best designs
+    analyses the drive flank, coarsely (:data:`COARSE_LTCA`); then the best designs
     are checked in turn at :data:`CHECK_LTCA` (at most :data:`VERIFIED_DESIGNS`, until one
     meets every target) and the chosen one is scored by that check. Where the design
     torque is the rating's capacity (the default) and the chosen design's flank peak
     pressure there exceeds the static strength, the design torque is lowered to the
-    bearing's static flank capacity (:func:`_static_capacity`). The chosen design is
-    synthesised once more (the written case; the memo makes this its relief alone), its
-    coast flank analysed once at :data:`CHECK_LTCA`, and it is checked at the excursions
-    ΔE = ±``offset_tolerance``, ΔP = ±``mounting_tolerance``.
+    bearing's static flank capacity (:func:`_static_capacity`).
+
+    3. **coast flank** (:func:`_coast_development`): the chosen design's coast flank, as
+       synthesised from its own prescriptions, analysed at :data:`CHECK_LTCA` at the same
+       light and design torque and scored on the same targets — the coast flank carries
+       the full torque in reverse gear; where it misses a target and
+       ``coast_max_evaluations`` > 0, stages 1 and 2 and the check on the coast flank's
+       own prescriptions with that budget (at most :data:`COAST_BEARING_DESIGNS`
+       bearings), the best checked design kept where it scores better than the flank as
+       synthesised. The drive flank is placed first and the coast flank against it, so the
+       drive flank's chosen design and numbers do not depend on this stage.
+
+    The chosen design is synthesised once more with both flanks' prescriptions (the
+    written case, the very design checked on either flank; the memo makes this its relief
+    alone), and its drive flank is checked at the excursions ΔE = ±``offset_tolerance``,
+    ΔP = ±``mounting_tolerance``.
 
     Sources: the varied inputs are the prescriptions of Litvin's local synthesis at the
     mean point (Litvin & Fuentes 2004, §9.4–9.5;
@@ -995,18 +1121,79 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     say = progress or (lambda line: None)
     flank = basic.options.drive_flank
     start = flank_option_values(basic.options.flank(flank))
-    bearing = [n for n in targets.variables if n not in RELIEF_NAMES]
-    relief = [n for n in targets.variables if n in RELIEF_NAMES]
-    n_bearing = min(6, max(1, targets.max_evaluations // 2)) if bearing else 1
     evals: list[DevelopmentEvaluation] = []
     setup: dict[str, Any] = {}
     # kept across designs: steps 3-6 of each pinion flank's synthesis (the coast flank is
-    # synthesised once; the relief stage and the final synthesis re-make only the relief)
-    # and the shell tooth models (the gear's once, the pinion's once per bearing design)
+    # synthesised once per coast bearing; the relief stage and the final synthesis re-make
+    # only the relief) and the shell tooth models (the gear's once, the pinion's once per
+    # bearing design)
     memo: dict = {}
     teeth = KeptTeeth()
 
+    def make(b: BasicDesign) -> Case:  # a design of the coarse search: no tip planes
+        return synthesize(b, memo=memo, tip_planes=False)[0]
+
+    evaluate = _evaluator(basic, targets, setup, teeth, say, evals, "drive",
+                          targets.max_evaluations)
+    ok = _search(evaluate, evals, lambda values: with_flank_options(basic, flank, values),
+                 make, targets, start, basic, targets.max_evaluations)
+    if not ok:
+        reasons = "; ".join(sorted({e.reason for e in evals}))
+        raise InputError(f"development: the drive flank could not be synthesised and "
+                         f"analysed ({reasons}); change [development] variables bounds")
+    # the final check at the default sampling (ltca run's): the best designs of the
+    # coarse search in turn until one meets every target (the coarse LTCA's peak pressure
+    # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
+    c_check = time.process_time()
+    best = _checked_best(evals, targets, setup, teeth, say,
+                         functools.partial(_placed_case, basic, flank, memo))
+    if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
+        best = _static_capacity(best, targets, setup, teeth, say)
+    developed = with_flank_options(basic, flank, best.values)
+    # the coast flank, after the drive flank is chosen (which it does not change): checked
+    # at the default sampling as synthesised, developed where it misses a target
+    c_coast = time.process_time()
+    coast = _coast_development(developed, best, targets, setup, teeth, memo, say, make)
+    coast_seconds = time.process_time() - c_coast
+    developed = coast.basic
+    case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
+    tolerance = {}
+    for lab, mis in _excursions(targets):
+        try:
+            ms, grid = _analyse(case, setup["torques"], mis, teeth=teeth,
+                                pinion_key=_bearing_key(best.values))
+            _, short, _ = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                                            pressure_limit=grid[4])
+        except Exception as exc:  # reported, never fatal
+            log.info("development tolerance %s failed: %s", lab, exc)
+            ms = {k: np.full(2, np.nan) for k in METRIC_NAMES}
+            short = {k: math.inf for k in ("toe", "heel", "edge", "plastic")}
+        tolerance[lab] = (ms, short)
+    result = DevelopmentResult(developed, case, report, best, tuple(evals),
+                               tuple(setup["torques"]), setup["source"], tolerance, targets,
+                               time.process_time() - t0,
+                               targets.pattern_centre_v or setup["centre_v"],
+                               coast.best.metrics if coast.best is not None else None,
+                               time.process_time() - c_check - coast_seconds,
+                               setup["lowered"], coast.best, tuple(coast.evaluations),
+                               coast.status, coast.before, coast_seconds)
+    say(result.headline())
+    return result
+
+
+def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],
+               teeth: KeptTeeth, say: Callable[[str], None],
+               evals: list[DevelopmentEvaluation], side: str, n_max: int,
+               key_prefix: tuple = ()) -> Callable[..., DevelopmentEvaluation]:
+    """The objective of one side's search (:func:`develop`): ``evaluate(values, stage,
+    make, budget, pinion_key)`` synthesises a design (``make()``), analyses its ``side``
+    flank (``"drive"`` or ``"coast"``) by :data:`COARSE_LTCA` at the light and the design
+    torque, appends it to ``evals``, prints its line and raises :class:`_Stop` where it
+    meets every target of ``stage`` or the stage's ``budget`` is spent. The first design
+    of the drive flank fixes ``setup`` (torques, the depth centre aimed at). The pinion
+    tooth is kept under ``key_prefix + pinion_key`` (:class:`KeptTeeth`)."""
     seen: dict[tuple, DevelopmentEvaluation] = {}
+    label = "" if side == "drive" else f"{side} "
 
     def evaluate(values: dict[str, float], stage: str, make: Callable[[], Case],
                  budget: int, pinion_key: tuple) -> DevelopmentEvaluation:
@@ -1026,19 +1213,19 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 setup.update(torques=[targets.light_load * torque, torque], source=source,
                              lowered=False,
                              centre_v=working_depth_centre(case))
-                say(f"development: drive flank {flank}, light {setup['torques'][0]:.4g} "
-                    f"N m, design {torque:.4g} N m ({source}); varying "
-                    f"{', '.join(targets.variables)} (at most {targets.max_evaluations} "
-                    "designs, coarse LTCA)")
+                say(f"development: drive flank {basic.options.drive_flank}, light "
+                    f"{setup['torques'][0]:.4g} N m, design {torque:.4g} N m ({source}); "
+                    f"varying {', '.join(targets.variables)} (at most "
+                    f"{targets.max_evaluations} designs, coarse LTCA)")
             metrics, grid = _analyse(case, setup["torques"], teeth=teeth,
-                                     pinion_key=pinion_key)
+                                     pinion_key=(*key_prefix, *pinion_key), flank=side)
             setup["pressure_limit"] = grid[4]
             obj, short, met = development_score(metrics, targets, grid[:4],
                                                 centre_v=setup["centre_v"], stage=stage,
                                                 pressure_limit=grid[4])
             reason = ""
         except Exception as exc:  # one failing design never ends the development
-            log.info("development design %s failed: %s", values, exc)
+            log.info("development %sdesign %s failed: %s", label, values, exc)
             metrics = {k: np.full(2, np.nan) for k in METRIC_NAMES}
             obj, short, met, grid = FAILED, {}, False, None
             reason = f"{type(exc).__name__}: {exc}".splitlines()[0]
@@ -1054,21 +1241,37 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             seen[("relief", *key[1:])] = dataclasses.replace(e, objective=e.full[0],
                                                              shortfalls=e.full[1],
                                                              met=e.full[2])
-        say(_line(e, targets.max_evaluations, stage))
+        say(_line(e, n_max, label + stage))
         if met:
             raise _Stop
         return e
 
-    # stage 1, the bearing: a synthesis per design
+    return evaluate
+
+
+def _search(evaluate: Callable[..., DevelopmentEvaluation],
+            evals: list[DevelopmentEvaluation],
+            basic_of: Callable[[dict[str, float]], BasicDesign],
+            make: Callable[[BasicDesign], Case], targets: DevelopmentTargets,
+            start: Mapping[str, float], basic: BasicDesign, n_max: int,
+            max_bearings: int = 6) -> bool:
+    """The two stages of one flank's search (:func:`develop`), designs appended to
+    ``evals``: the **bearing** (the non-relief variables, at most ``max_bearings``
+    designs or half of ``n_max``; a synthesis ``make(basic_of(values))`` each), then the
+    **relief** (:func:`_relief_stage`, the rest of ``n_max``). ``start``: the flank's
+    prescriptions [file units]. Returns whether any design was synthesised and
+    analysed."""
+    bearing = [n for n in targets.variables if n not in RELIEF_NAMES]
+    relief = [n for n in targets.variables if n in RELIEF_NAMES]
+    n_bearing = min(max_bearings, max(1, n_max // 2)) if bearing else 1
     fixed = {n: start[n] for n in relief}
     low = np.array([targets.variables[n][0] for n in bearing])
     high = np.array([targets.variables[n][1] for n in bearing])
 
     def bearing_design(x: np.ndarray) -> float:
         values = {n: float(v) for n, v in zip(bearing, x, strict=True)} | fixed
-        b = with_flank_options(basic, flank, values)
-        return evaluate(values, "bearing",
-                        lambda: synthesize(b, memo=memo, tip_planes=False)[0], n_bearing,
+        b = basic_of(values)
+        return evaluate(values, "bearing", lambda: make(b), n_bearing,
                         _bearing_key(values)).objective
 
     x0 = _start(bearing, targets, start, basic)
@@ -1081,51 +1284,14 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             pass
     ok = [e for e in evals if e.case is not None and e.objective < FAILED]
     if not ok:
-        reasons = "; ".join(sorted({e.reason for e in evals}))
-        raise InputError(f"development: the drive flank could not be synthesised and "
-                         f"analysed ({reasons}); change [development] variables bounds")
+        return False
     # stage 2, the relief on the blade of each of the best bearings in turn (the relief a
     # bearing needs to keep its edges elastic costs LTE, so the bearing with the least
     # objective before the relief is not always the one with the least after it)
     if relief:
         _relief_stage(evaluate, _relief_bearings(ok, RELIEF_BEARINGS), relief, targets,
-                      evals, lambda values: with_flank_options(basic, flank, values),
-                      lambda b: synthesize(b, memo=memo, tip_planes=False)[0])
-    # the final check at the default sampling (ltca run's): the best designs of the
-    # coarse search in turn until one meets every target (the coarse LTCA's peak pressure
-    # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
-    c_check = time.process_time()
-    best = _checked_best(evals, targets, setup, teeth, say,
-                         functools.partial(_placed_case, basic, flank, memo))
-    if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
-        best = _static_capacity(best, targets, setup, teeth, say)
-    developed = with_flank_options(basic, flank, best.values)
-    case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-    coast = None
-    try:  # the coast flank, never varied, checked once at the end
-        coast, _ = _analyse(case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
-                            pinion_key=_bearing_key(best.values), flank="coast")
-    except Exception as exc:  # reported, never fatal
-        log.info("development coast check failed: %s", exc)
-    tolerance = {}
-    for lab, mis in _excursions(targets):
-        try:
-            ms, grid = _analyse(case, setup["torques"], mis, teeth=teeth,
-                                pinion_key=_bearing_key(best.values))
-            _, short, _ = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                                            pressure_limit=grid[4])
-        except Exception as exc:  # reported, never fatal
-            log.info("development tolerance %s failed: %s", lab, exc)
-            ms = {k: np.full(2, np.nan) for k in METRIC_NAMES}
-            short = {k: math.inf for k in ("toe", "heel", "edge", "plastic")}
-        tolerance[lab] = (ms, short)
-    result = DevelopmentResult(developed, case, report, best, tuple(evals),
-                               tuple(setup["torques"]), setup["source"], tolerance, targets,
-                               time.process_time() - t0,
-                               targets.pattern_centre_v or setup["centre_v"], coast,
-                               time.process_time() - c_check, setup["lowered"])
-    say(result.headline())
-    return result
+                      evals, basic_of, make, n_max)
+    return True
 
 
 #: margin below the flank's static strength that :func:`_static_capacity` aims at [1]
@@ -1200,22 +1366,131 @@ def _placed_case(basic: BasicDesign, flank: str, memo: dict,
     return synthesize(with_flank_options(basic, flank, values), memo=memo)[0]
 
 
+class _CoastOutcome(NamedTuple):
+    """What :func:`_coast_development` did: the basic design with the chosen coast
+    prescriptions, the chosen coast design (None where its analysis failed), the designs
+    of its search, its status (:data:`COAST_STATUS`) and the coast flank's metrics as
+    synthesised where the search ran (else None)."""
+
+    basic: BasicDesign
+    best: DevelopmentEvaluation | None
+    evaluations: list[DevelopmentEvaluation]
+    status: str
+    before: dict[str, np.ndarray] | None
+
+
+#: the outcomes of the coast flank's development (``DevelopmentResult.coast_status``)
+COAST_STATUS = {
+    "developed": "developed",
+    "met": "not developed: met every target as synthesised",
+    "off": "not developed: coast development off (coast_max_evaluations = 0)",
+    "not improved": "not developed: no design of its search did better than as synthesised",
+    "not checked": "not checked: its analysis failed",
+}
+
+
+def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
+                       targets: DevelopmentTargets, setup: dict[str, Any],
+                       teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                       make: Callable[[BasicDesign], Case]) -> _CoastOutcome:
+    """The coast flank of :func:`develop`, after the drive flank ``drive`` is chosen
+    (``developed`` carries its prescriptions): analysed as synthesised at
+    :data:`CHECK_LTCA` at the same light and design torque; where it misses a target and
+    ``targets.coast_max_evaluations`` > 0, the two stages of the drive flank's search
+    (:func:`_search`) on the coast flank's own prescriptions with that budget, the best
+    checked at :data:`CHECK_LTCA` (:func:`_checked_best`) and chosen where it scores
+    better than the flank as synthesised. The drive flank is the same in every design
+    (the synthesis places the coast flank against it, never the reverse), so its result
+    stands; the coast designs' pinion teeth are kept under the drive's bearing and the
+    coast's (:class:`KeptTeeth`). ``make``: the coarse search's synthesis (no tip
+    planes); the designs checked are synthesised as written (with the memo), so the
+    chosen one is the case written, bit for bit."""
+    from geometry.synthesis.case_synthesis import _OTHER, synthesize
+
+    side = _OTHER[developed.options.drive_flank]
+    start = flank_option_values(developed.options.flank(side))
+    drive_key = _bearing_key(drive.values)
+    c0 = time.process_time()
+    try:  # the flank as synthesised (its pinion tooth is the drive bearing's: the same)
+        case0 = drive.case if drive.checked else synthesize(developed, memo=memo)[0]
+        m0, grid = _analyse(case0, setup["torques"], options=CHECK_LTCA, teeth=teeth,
+                            pinion_key=drive_key, flank="coast")
+        full = development_score(m0, targets, grid[:4], centre_v=setup["centre_v"],
+                                 pressure_limit=grid[4])
+    except Exception as exc:  # reported, never fatal
+        log.info("development coast check failed: %s", exc)
+        say(f"development: coast flank {side}: not checked (its analysis failed: "
+            f"{type(exc).__name__})")
+        return _CoastOutcome(developed, None, [], "not checked", None)
+    synthesised = DevelopmentEvaluation(-1, {k: start[k] for k in targets.variables}, m0,
+                                        full[0], full[1], full[2], "",
+                                        time.process_time() - c0, case0, full, checked=True,
+                                        stage="synthesised")
+    missed = [k for k, v in full[1].items() if v > 0]
+    head = (f"development: coast flank {side} as synthesised, at the default sampling: "
+            f"{_metrics_text(m0)}; ")
+    if full[2]:
+        say(head + "every target met: not developed")
+        return _CoastOutcome(developed, synthesised, [], "met", None)
+    n_max = targets.coast_max_evaluations
+    if n_max == 0:
+        say(head + f"misses {', '.join(missed)}; coast development off "
+            "(coast_max_evaluations = 0)")
+        return _CoastOutcome(developed, synthesised, [], "off", None)
+    say(head + f"misses {', '.join(missed)}; developing it at the same torques: varying "
+        f"{', '.join(targets.variables)} (at most {n_max} designs, coarse LTCA)")
+    evals: list[DevelopmentEvaluation] = []
+    prefix = (*drive_key, "coast")
+    evaluate = _evaluator(developed, targets, setup, teeth, say, evals, "coast", n_max,
+                          key_prefix=prefix)
+
+    def basic_of(values: dict[str, float]) -> BasicDesign:
+        return with_flank_options(developed, side, values)
+
+    chosen = synthesised
+    if _search(evaluate, evals, basic_of, make, targets, start, developed, n_max,
+               COAST_BEARING_DESIGNS):
+        best = _checked_best(evals, targets, setup, teeth, say,
+                             lambda values: synthesize(basic_of(values), memo=memo)[0],
+                             side="coast", key_prefix=prefix, n_max=n_max)
+        as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
+        if (best.checked and not as_synthesised
+                and (not best.full[2], best.full[0]) < (not full[2], full[0])):
+            chosen = best
+    if chosen is synthesised:
+        say(f"development: coast flank {side}: no design of its search did better than "
+            "as synthesised; kept")
+        return _CoastOutcome(developed, synthesised, evals, "not improved", m0)
+    return _CoastOutcome(basic_of(chosen.values), chosen, evals, "developed", m0)
+
+
+def _metrics_text(m: Mapping[str, np.ndarray]) -> str:
+    """A design's metrics in one phrase (light-load pattern, design-torque edge share,
+    worst plastic share, LTE at both torques)."""
+    return (f"pattern {m['pattern_toe_u'][0]:.2f}-{m['pattern_heel_u'][0]:.2f} x "
+            f"{m['pattern_root_v'][0]:.2f}-{m['pattern_tip_v'][0]:.2f}, edge "
+            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
+            f"{100 * np.max(m['plastic_share']):.1f} %, LTE "
+            f"{m['lte_peak_to_peak'][0]:.0f}/{m['lte_peak_to_peak'][1]:.0f} urad")
+
+
 def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
                   firsts: list[DevelopmentEvaluation], relief: list[str],
                   targets: DevelopmentTargets, evals: list[DevelopmentEvaluation],
                   basic_of: Callable[[dict[str, float]], BasicDesign],
-                  make: Callable[[BasicDesign], Case]) -> None:
+                  make: Callable[[BasicDesign], Case], n_max: int | None = None) -> None:
     """The relief stage of :func:`develop`: ``relief`` varied on the blade of the best
-    bearing (:func:`_sample_then_minimise`), with the budget left
-    (``targets.max_evaluations`` less the designs in ``evals``) but
+    bearing (:func:`_sample_then_minimise`), with the budget left (``n_max``, default
+    ``targets.max_evaluations``, less the designs in ``evals``) but
     :data:`SECOND_BEARING_DESIGNS`; then, only where its best design misses the LTE
     target, on the blade of the next bearing of ``firsts`` with those designs. Ends at the
     first design meeting every target."""
+    n_max = targets.max_evaluations if n_max is None else n_max
     low = np.array([targets.variables[n][0] for n in relief])
     high = np.array([targets.variables[n][1] for n in relief])
-    remaining = targets.max_evaluations - len(evals)
+    remaining = n_max - len(evals)
     second = min(SECOND_BEARING_DESIGNS, remaining // 2) if len(firsts) > 1 else 0
-    budgets = [len(evals) + remaining - second] + [targets.max_evaluations] * (len(firsts) - 1)
+    budgets = [len(evals) + remaining - second] + [n_max] * (len(firsts) - 1)
     for first, budget in zip(firsts, budgets, strict=True):
         if len(evals) >= budget:
             return
@@ -1256,13 +1531,19 @@ def _relief_bearings(designs: list[DevelopmentEvaluation], n: int
 def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets,
                   setup: Mapping[str, Any], teeth: KeptTeeth,
                   say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case] | None = None
+                  placed: Callable[[Mapping[str, float]], Case] | None = None, *,
+                  side: str = "drive", key_prefix: tuple = (), n_max: int | None = None
                   ) -> DevelopmentEvaluation:
     """The chosen design: the best of the coarse search checked in turn at
     :data:`CHECK_LTCA` (at most :data:`VERIFIED_DESIGNS`) until one meets every target
     there, then the best by its checked score (every target met first). ``placed``: the
     case of a design's values as it is written (its tip planes placed; the coarse search
-    leaves them out), checked and kept in place of the coarse search's."""
+    leaves them out), checked and kept in place of the coarse search's. ``side``: the
+    flank analysed (``"drive"`` or ``"coast"``), its pinion tooth kept under
+    ``key_prefix`` and the design's bearing (:class:`KeptTeeth`); ``n_max``: the budget
+    its lines name (default ``targets.max_evaluations``)."""
+    n_max = targets.max_evaluations if n_max is None else n_max
+    what = "design" if side == "drive" else f"{side} design"
     ranked = sorted((e for e in evals if e.full is not None),
                     key=lambda e: (not e.full[2], e.full[0]))
     checked = []
@@ -1271,17 +1552,18 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
             if placed is not None:
                 e = dataclasses.replace(e, case=placed(e.values))
             ms, grid = _analyse(e.case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
-                                pinion_key=_bearing_key(e.values))
+                                pinion_key=(*key_prefix, *_bearing_key(e.values)),
+                                flank=side)
         except Exception as exc:  # a design that fails here is not chosen
-            log.info("development check of design %d failed: %s", e.index + 1, exc)
+            log.info("development check of %s %d failed: %s", what, e.index + 1, exc)
             continue
         full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
                                  pressure_limit=grid[4])
         checked.append(dataclasses.replace(e, metrics=ms, objective=full[0],
                                            shortfalls=full[1], met=full[2], full=full,
                                            checked=True))
-        say(f"  check of design {e.index + 1} at the default sampling: "
-            + _line(checked[-1], targets.max_evaluations).split(": ", 2)[-1])
+        say(f"  check of {what} {e.index + 1} at the default sampling: "
+            + _line(checked[-1], n_max).split(": ", 2)[-1])
         if full[2]:
             break
     return min(checked or ranked, key=lambda e: (not e.full[2], e.full[0]))
@@ -1310,10 +1592,6 @@ def _line(e: DevelopmentEvaluation, n: int, stage: str = "relief") -> str:
     vals = ", ".join(f"{k} {v:.3g}" for k, v in e.values.items())
     if e.reason:
         return f"  {stage} design {e.index + 1}/{n}: {vals}: failed ({e.reason})"
-    m = e.metrics
-    return (f"  {stage} design {e.index + 1}/{n}: {vals}: pattern {m['pattern_toe_u'][0]:.2f}-"
-            f"{m['pattern_heel_u'][0]:.2f} x {m['pattern_root_v'][0]:.2f}-"
-            f"{m['pattern_tip_v'][0]:.2f}, edge {100 * m['edge_load_share'][1]:.1f} %, "
-            f"plastic {100 * np.max(m['plastic_share']):.1f} %, LTE "
-            f"{m['lte_peak_to_peak'][0]:.0f}/{m['lte_peak_to_peak'][1]:.0f} urad; objective "
-            f"{e.objective:.3g}{' (all targets met)' if e.met else ''} [{e.seconds:.0f} s]")
+    return (f"  {stage} design {e.index + 1}/{n}: {vals}: {_metrics_text(e.metrics)}; "
+            f"objective {e.objective:.3g}{' (all targets met)' if e.met else ''} "
+            f"[{e.seconds:.0f} s]")
