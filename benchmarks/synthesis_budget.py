@@ -10,16 +10,21 @@ temporary directory, so the FE influence coefficients of both members are built 
 first run; ``--warm`` uses the user's cache instead). CPU is the children's user + system
 time (``resource.getrusage(RUSAGE_CHILDREN)``, the FE worker process included), so a
 loaded machine inflates it less than wall time; the development's own split (bearing
-stage, relief stage, final check and tolerance, from the case's ``[development]`` table)
-shows where the synthesis spends it. The table also gives what the run found: verdict,
-LTE peak-to-peak and flank peak pressure at the light and design torque, and the
-light-load pattern (u toe-heel on the gear flank).
+stage, relief stage, final check and tolerance, coast flank, from the case's
+``[development]`` table) shows where the synthesis spends it. The table also gives what
+the run found: verdict, LTE peak-to-peak and flank peak pressure at the light and design
+torque, and the light-load pattern (u toe-heel on the gear flank); then the coast flank:
+what its development did (``dev``, ``met``: every target met as synthesised, ``off``,
+``kept``: nothing better found), its plastic share as synthesised → as written (the
+development's check, the larger of both torques), and ``ltca run CASE --flank coast``
+(root stress and rating on, the same FE cache; its CPU is not in the budget, a check the
+user runs besides): its verdict and plastic share. ``--no-coast`` leaves that run out.
 
 ``--baseline DIR`` also runs ``ltca synthesize`` of another source tree first on each
 design (column ``base``): the ratio of the two is measured under the same machine load.
 
 Usage: ``python benchmarks/synthesis_budget.py [BASIC.toml ...] [--warm] [--keep DIR]
-[--baseline DIR]``.
+[--baseline DIR] [--no-coast]``.
 Run one design at a time on a shared machine (each cold FE build is ~1.5 min of CPU).
 """
 
@@ -54,7 +59,8 @@ def _command(args: list[str], env: dict[str, str] | None = None,
     return p.returncode, _cpu() - c0, p.stdout + p.stderr
 
 
-def run_design(basic: Path, work: Path, warm: bool, baseline: Path | None = None) -> dict:
+def run_design(basic: Path, work: Path, warm: bool, baseline: Path | None = None,
+               coast: bool = True) -> dict:
     """Synthesise and run one design; the numbers of the table."""
     import numpy as np
     import xarray as xr
@@ -76,15 +82,29 @@ def run_design(basic: Path, work: Path, warm: bool, baseline: Path | None = None
     dev = tomllib.loads(case.read_text(encoding="utf-8")).get("development", {})
     row["stages"] = dev.get("cpu_seconds_stages", {})
     row["evaluations"] = dev.get("evaluations")
+    row["coast_dev"] = _coast_status(dev)
     env = dict(os.environ)
     with tempfile.TemporaryDirectory(prefix="ltca-fe-") as cache:
         if not warm:
             env["HYPOID_LTCA_CACHE"] = cache
         rc, cpu, text = _command(["run", str(case), "-o", str(nc), "--no-progress"], env)
-    row["run_cpu"] = cpu
-    if rc:
-        row["error"] = "run: " + (text.strip().splitlines() or ["?"])[-1]
-        return row
+        row["run_cpu"] = cpu
+        if rc:
+            row["error"] = "run: " + (text.strip().splitlines() or ["?"])[-1]
+            return row
+        if coast:
+            cnc = work / f"{basic.stem}_coast.nc"
+            rc, cpu, text = _command(["run", str(case), "--flank", "coast", "-o", str(cnc),
+                                      "--no-progress"], env)
+            row["coast_run_cpu"] = cpu
+            if rc:
+                row["coast_run"] = "error: " + (text.strip().splitlines() or ["?"])[-1]
+            else:
+                ct = xr.open_datatree(cnc)
+                lt = ct["/ltca"].to_dataset()
+                share = (float(np.nanmax(lt["plastic_load_share"].values))
+                         if "plastic_load_share" in lt else 0.0)
+                row["coast_run"] = f"{verdict(ct).severity} {100 * share:.1f} %"
     tree = xr.open_datatree(nc)
     lt = tree["/ltca"].to_dataset()
     from contact.study.summary import pattern_dimensions
@@ -100,6 +120,20 @@ def run_design(basic: Path, work: Path, warm: bool, baseline: Path | None = None
     return row
 
 
+def _coast_status(dev: dict) -> str:
+    """The coast flank's development from the case's ``[development]`` table: what it did
+    and its plastic share as synthesised → as written [%]."""
+    c = dev.get("coast", {})
+    what = c.get("development", "")
+    short = ("dev" if what == "developed" else "met" if "met every" in what
+             else "off" if "off" in what else "kept" if "did better" in what else "-")
+    after = dev.get("coast_achieved", {}).get("plastic_share")
+    before = c.get("as_synthesised", {}).get("plastic_share", after)
+    if not after:
+        return short
+    return f"{short} {100 * max(before):.1f}->{100 * max(after):.1f}"
+
+
 def _pattern(dims) -> str:
     try:
         return f"{float(dims['pattern_toe_u'][0]):.2f}-{float(dims['pattern_heel_u'][0]):.2f}"
@@ -109,7 +143,8 @@ def _pattern(dims) -> str:
 
 def _fmt(row: dict) -> str:
     st = row.get("stages", {})
-    split = "/".join(f"{st.get(k, float('nan')):.0f}" for k in ("bearing", "relief", "check"))
+    split = "/".join(f"{st.get(k, float('nan')):.0f}"
+                     for k in ("bearing", "relief", "check", "coast"))
     base = row.get("baseline_cpu")
     head = (f"{row['design']:<20} " + (f"{base:>6.0f} " if base is not None else "")
             + f"{row['synth_cpu']:>6.0f} {split:<11}")
@@ -122,7 +157,9 @@ def _fmt(row: dict) -> str:
             f"{t[0]:>6.1f}/{t[-1]:<7.1f}"
             f"{'/'.join(f'{x:.0f}' for x in row['lte']):<10}"
             f"{'/'.join(f'{x:.0f}' for x in row['pressure']):<11}"
-            f"{row['pattern']:<10}{'yes' if row['root_stress'] else 'no'}")
+            f"{row['pattern']:<10}{'yes' if row['root_stress'] else 'no':<4}"
+            f"{row.get('coast_dev', '-'):<15}{row.get('coast_run', '-'):<16}"
+            f"{row.get('coast_run_cpu', float('nan')):>5.0f}")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -131,6 +168,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--warm", action="store_true",
                     help="ltca run with the user's FE cache (default: an empty one)")
     ap.add_argument("--keep", type=Path, default=None, help="keep the cases and files here")
+    ap.add_argument("--no-coast", dest="coast", action="store_false",
+                    help="leave out ltca run --flank coast")
     ap.add_argument("--baseline", type=Path, default=None,
                     help="a source tree of another version (e.g. `git archive REV | tar -x "
                          "-C DIR`): its ltca synthesize runs first on each design, so the "
@@ -138,14 +177,17 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     work = args.keep or Path(tempfile.mkdtemp(prefix="ltca-budget-"))
     work.mkdir(parents=True, exist_ok=True)
-    print(f"CPU [s] of ltca synthesize (development split bearing/relief/check) and ltca run "
-          f"({'warm' if args.warm else 'cold'} FE cache); budget {BUDGET:.0f} s")
+    print(f"CPU [s] of ltca synthesize (development split bearing/relief/check/coast) and "
+          f"ltca run ({'warm' if args.warm else 'cold'} FE cache); budget {BUDGET:.0f} s; "
+          "coast: its development (plastic % as synthesised->written) and ltca run --flank "
+          "coast (verdict, plastic %, CPU)")
     print(f"{'design':<20} " + (f"{'base':>6} " if args.baseline else "")
-          + f"{'synth':>6} {'b/r/c':<11} {'run':>6} {'total':>6} {'ok':<4} "
+          + f"{'synth':>6} {'b/r/c/k':<11} {'run':>6} {'total':>6} {'ok':<4} "
           f"{'verdict':<10}{'T light/design':<14}{'LTE urad':<10}{'p_max MPa':<11}"
-          f"{'pattern':<10}RS")
+          f"{'pattern':<10}{'RS':<4}{'coast dev':<15}{'coast run':<16}{'cpu':>5}")
     for basic in args.basic:
-        print(_fmt(run_design(basic, work, args.warm, args.baseline)), flush=True)
+        print(_fmt(run_design(basic, work, args.warm, args.baseline, args.coast)),
+              flush=True)
     return 0
 
 
