@@ -12,6 +12,7 @@ pressure–viscosity coefficient α  piecewise log-linear in T                  
 density ρ                         straight line fitted by least squares      kg/m3
 thermal conductivity k            constant, or piecewise linear              W/(m K)
 temperature–viscosity coeff. β    −d ln η₀/dT of the Vogel fit, or tabulated 1/K
+boundary friction μ_b             constant, or linear in T, held at the ends 1
 ================================  =========================================  ===========
 
 Units: temperature in degC at the boundary (the Vogel constant c is in degC, so the fit
@@ -26,7 +27,10 @@ Oil files are TOML with the schema of ``friction/data/75W90.toml``: ``name``, ``
 ``temperature_viscosity_coefficient``, ``thermal_conductivity_source``, ``notes``, the
 optional film-traction properties ``eyring_stress`` [MPa], ``limiting_shear_coefficient``
 and ``boundary_friction`` [1] with ``traction_source`` (used by the ``mixed_ehl``
-friction model, :mod:`friction.mixed_ehl`), the optional surface-durability properties
+friction model, :mod:`friction.mixed_ehl`; ``boundary_friction`` is one number or a
+``[boundary_friction]`` table of values measured against temperature with its own
+``source``, :class:`BoundaryFrictionTable`, :func:`boundary_friction_coefficient`), the
+optional surface-durability properties
 ``fzg_load_stage`` [1] (the FZG A/8.3/90 scuffing-test failure load stage), ``base_oil``
 (the base-oil kind of the scuffing temperature's lubricant factor,
 :data:`BASE_OIL_FACTORS`) and ``permissible_specific_film`` [1]
@@ -44,6 +48,7 @@ import itertools
 import logging
 import math
 import tomllib
+import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from importlib import resources
@@ -55,18 +60,23 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
+from friction.validity import FrictionModelRangeWarning
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.renamed import renamed_keywords
 from geometry.core.toml_files import read_toml
-from geometry.core.validation import one_of, real, real_array, scalar_or_array
+from geometry.core.validation import known_fields, one_of, real, real_array, scalar_or_array
 
 __all__ = [
     "BASE_OIL_FACTORS",
     "VISCOSITY_MODELS",
+    "BoundaryFrictionTable",
     "Lubricant",
     "VogelFit",
     "WaltherFit",
     "available_lubricants",
+    "boundary_friction_coefficient",
+    "boundary_friction_in_range",
+    "boundary_friction_source",
     "density",
     "fit_vogel",
     "fit_walther",
@@ -327,6 +337,100 @@ def _check_positive(field_name: str, values: tuple[float, ...], units: str) -> N
     real_array(field_name, values, unit=units, low=0.0, low_open=True)
 
 
+#: The fields of an oil file's ``[boundary_friction]`` table.
+_BOUNDARY_FRICTION_FIELDS = ("temperature", "value", "source")
+
+
+@dataclass(frozen=True)
+class BoundaryFrictionTable:
+    """Boundary friction μ_b of an oil measured against temperature.
+
+    The friction of the asperity junctions under the oil's boundary (additive) films: the
+    low-speed plateau of a Stribeck curve measured on steel (MTM, ball-on-disc, twin disc)
+    at several oil temperatures. Interpolated linearly in temperature and held at the end
+    values outside the measured range (:func:`boundary_friction_coefficient`).
+
+    Parameters
+    ----------
+    temperature : sequence of float (n ≥ 2) — [degC]
+        Strictly increasing temperatures of the measurements (the oil file's temperature
+        unit, ``units.temperature``).
+    value : sequence of float (n) — [1]
+        μ_b at those temperatures, each in [0, 1].
+    source : str
+        Where the values come from (test rig, load, speed, slide-to-roll ratio, materials,
+        lab and year); required, non-empty.
+
+    Raises
+    ------
+    InputError
+        On construction, naming the field (``boundary_friction.temperature``,
+        ``boundary_friction.value``, ``boundary_friction.source``): fewer than 2 points,
+        unequal lengths, temperatures not finite or not strictly increasing, a value
+        outside [0, 1], an empty source.
+
+    Notes
+    -----
+    Source: the oil file (``source``); a table rather than a fit because boundary friction
+    against temperature has no accepted functional form (it may rise or fall as the
+    additives' films form and desorb).
+    """
+
+    temperature: tuple[float, ...]
+    value: tuple[float, ...]
+    source: str
+
+    def __post_init__(self) -> None:
+        t = _float_tuple("boundary_friction.temperature", self.temperature)
+        v = _float_tuple("boundary_friction.value", self.value)
+        if len(t) < 2:
+            raise InputError("boundary_friction.temperature: must be at least 2 values [degC]"
+                             f" for a table (a single value: give boundary_friction as one "
+                             f"number), got {len(t)}")
+        real_array("boundary_friction.temperature", t, unit="degC", low=_ABSOLUTE_ZERO_C,
+                   low_open=True)
+        if any(b <= a for a, b in itertools.pairwise(t)):
+            raise InputError("boundary_friction.temperature: must be strictly increasing "
+                             f"[degC], got {t!r}")
+        if len(v) != len(t):
+            raise InputError(f"boundary_friction.value: must be one value per temperature "
+                             f"({len(t)}), got {len(v)}")
+        real_array("boundary_friction.value", v, unit="1", low=0.0, high=1.0)
+        if not isinstance(self.source, str) or not self.source.strip():
+            raise InputError("boundary_friction.source: must be a non-empty string naming "
+                             "where the measured values come from (rig, load, speed, slide-"
+                             f"to-roll ratio, materials), got {self.source!r}")
+        object.__setattr__(self, "temperature", t)
+        object.__setattr__(self, "value", v)
+
+    @classmethod
+    def from_mapping(cls, table: Mapping[str, Any]) -> BoundaryFrictionTable:
+        """The table of an oil file's ``[boundary_friction]`` (keys ``temperature``,
+        ``value``, ``source``).
+
+        Parameters
+        ----------
+        table : mapping
+            The parsed TOML table.
+
+        Returns
+        -------
+        BoundaryFrictionTable
+
+        Raises
+        ------
+        InputError
+            An unknown or missing key (named ``boundary_friction.<key>``), or a check of
+            the class.
+        """
+        known_fields("boundary_friction", table, _BOUNDARY_FRICTION_FIELDS)
+        missing = [k for k in _BOUNDARY_FRICTION_FIELDS if k not in table]
+        if missing:
+            raise InputError(f"boundary_friction.{missing[0]}: missing; a boundary_friction "
+                             "table needs temperature [degC], value [1] and source")
+        return cls(table["temperature"], table["value"], table["source"])
+
+
 @dataclass(frozen=True)
 class Lubricant:
     """A lubricant's property table versus temperature.
@@ -354,10 +458,14 @@ class Lubricant:
         Eyring stress τ₀ of the film (> 0); None: the model default.
     limiting_shear_coefficient : float or None — [1]
         Λ = τ_L/p in (0, 1]; None: the model default.
-    boundary_friction : float or None — [1]
-        μ_b of the asperity contacts in [0, 1]; None: the model default.
+    boundary_friction : float, BoundaryFrictionTable, mapping or None — [1]
+        μ_b of the asperity contacts: one value in [0, 1], or measured values against
+        temperature (a :class:`BoundaryFrictionTable`, or the mapping of an oil file's
+        ``[boundary_friction]`` table, made one on construction); None: the model
+        default. Evaluated at a temperature by :func:`boundary_friction_coefficient`.
     traction_source : str
-        Where the three traction values come from.
+        Where the three traction values come from (a table's own ``source`` says where
+        its μ_b come from).
     fzg_load_stage : float or None — [1]
         Failure load stage of the FZG A/8.3/90 scuffing test (ISO 14635-1), in [1, 14];
         None: unknown (no scuffing safety).
@@ -397,7 +505,7 @@ class Lubricant:
     notes: str = ""
     eyring_stress: float | None = None
     limiting_shear_coefficient: float | None = None
-    boundary_friction: float | None = None
+    boundary_friction: float | BoundaryFrictionTable | None = None
     traction_source: str = ""
     fzg_load_stage: float | None = None
     base_oil: str | None = None
@@ -466,12 +574,7 @@ class Lubricant:
             val = getattr(self, key)
             if not isinstance(val, (int, float)) or not math.isfinite(val) or val < 0:
                 raise InputError(f"{key}: must be finite and >= 0 [K], got {val!r}")
-        for key, high, low_open, unit in (("eyring_stress", None, True, "MPa"),
-                                           ("limiting_shear_coefficient", 1.0, True, "1"),
-                                           ("boundary_friction", 1.0, False, "1")):
-            if getattr(self, key) is not None:
-                object.__setattr__(self, key, real(key, getattr(self, key), unit=unit, low=0.0,
-                                                   low_open=low_open, high=high))
+        self._check_traction()
         self._check_durability()
         vogel = fit_vogel(t, eta)
         if vogel.c >= t[0] - self.extrapolation_below:
@@ -483,6 +586,25 @@ class Lubricant:
         nu = np.asarray(eta) / np.asarray(self.density) * 1e6
         object.__setattr__(self, "walther", fit_walther(t, nu))
         log.debug("lubricant %s: %s, %s", self.name, vogel, self.walther)
+
+    def _check_traction(self) -> None:
+        """Validate the optional film-traction fields (naming the field); make a
+        ``boundary_friction`` mapping (an oil file's table) a :class:`BoundaryFrictionTable`."""
+        if isinstance(self.boundary_friction, Mapping):
+            object.__setattr__(self, "boundary_friction",
+                               BoundaryFrictionTable.from_mapping(self.boundary_friction))
+        for key, high, low_open, unit in (("eyring_stress", None, True, "MPa"),
+                                           ("limiting_shear_coefficient", 1.0, True, "1"),
+                                           ("boundary_friction", 1.0, False, "1")):
+            value = getattr(self, key)
+            if key == "boundary_friction" and isinstance(value, (Sequence, np.ndarray)) \
+                    and not isinstance(value, str):
+                raise InputError("boundary_friction: must be one number in [0, 1] [1] or a "
+                                 "[boundary_friction] table with temperature [degC], value "
+                                 f"[1] and source, got {value!r}")
+            if value is not None and not isinstance(value, BoundaryFrictionTable):
+                object.__setattr__(self, key, real(key, value, unit=unit, low=0.0,
+                                                   low_open=low_open, high=high))
 
     def _check_durability(self) -> None:
         """Validate the optional surface-durability fields (naming the field)."""
@@ -761,6 +883,124 @@ def temperature_viscosity_coefficient(
         )
     v = lubricant.vogel
     return scalar_or_array(v.b / (t - v.c) ** 2)
+
+
+def boundary_friction_coefficient(
+    lubricant: Lubricant, temperature: ArrayLike
+) -> NDArray[np.float64] | float:
+    """Boundary friction μ_b of the asperity junctions at an oil temperature.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+        An oil that gives ``boundary_friction`` (one number or a
+        :class:`BoundaryFrictionTable`).
+    temperature : float or array — [degC]
+        The oil temperature at which μ_b is wanted, inside :func:`temperature_range`; the
+        efficiency stage and the line-contact solvers pass the inlet (bulk) oil
+        temperature of their operating condition.
+
+    Returns
+    -------
+    float or array — [1]
+        μ_b, the shape of ``temperature``: the constant where the oil gives one number;
+        for a table, ``numpy.interp`` of its values (linear in temperature between the
+        measured points, the end value held below the first and above the last).
+
+    Raises
+    ------
+    InputError
+        The oil gives no ``boundary_friction``, or a temperature outside the accepted
+        range.
+
+    Warns
+    -----
+    FrictionModelRangeWarning
+        A temperature outside the table's measured range: μ_b is held at the end value
+        there, an extrapolation (:func:`boundary_friction_in_range` says where).
+
+    Notes
+    -----
+    Source: the oil file (a table's ``source``, a constant's ``traction_source``;
+    :func:`boundary_friction_source`). Held, not extended, beyond the table: a boundary
+    film's friction has no accepted temperature law to extend by.
+    """
+    mu_b = lubricant.boundary_friction
+    if mu_b is None:
+        raise InputError(f"boundary_friction: the lubricant {lubricant.name!r} gives none "
+                         "(add boundary_friction to its oil file)")
+    t = _temperature(lubricant, temperature)
+    if not isinstance(mu_b, BoundaryFrictionTable):
+        return scalar_or_array(np.full(t.shape, float(mu_b)))
+    outside = ~np.asarray(boundary_friction_in_range(lubricant, t), bool)
+    if np.any(outside):
+        lo, hi = mu_b.temperature[0], mu_b.temperature[-1]
+        first = float(t[outside].flat[0])
+        warnings.warn(
+            f"lubricant {lubricant.name!r}: boundary_friction measured at {lo:g}-{hi:g} degC"
+            f" only; at {int(np.count_nonzero(outside))} of {t.size} temperature(s) outside"
+            f" it (e.g. {first:g} degC) held at the end value ({mu_b.value[0]:g} below,"
+            f" {mu_b.value[-1]:g} above); result extrapolated",
+            FrictionModelRangeWarning,
+            stacklevel=2,
+        )
+    return scalar_or_array(np.interp(t, mu_b.temperature, mu_b.value))
+
+
+def boundary_friction_in_range(
+    lubricant: Lubricant, temperature: ArrayLike
+) -> NDArray[np.bool_]:
+    """Where an oil's boundary friction is measured, not held at a table's end value.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+    temperature : float or array — [degC]
+
+    Returns
+    -------
+    array of bool
+        The shape of ``temperature``: True inside the table's measured range (ends
+        included), everywhere for a constant μ_b or none.
+
+    Notes
+    -----
+    Source: the oil file's ``[boundary_friction]`` table (:class:`BoundaryFrictionTable`).
+    """
+    t = np.asarray(real_array("temperature", temperature, unit="degC"), float)
+    mu_b = lubricant.boundary_friction
+    if not isinstance(mu_b, BoundaryFrictionTable):
+        return np.ones(t.shape, dtype=bool)
+    return (t >= mu_b.temperature[0]) & (t <= mu_b.temperature[-1])
+
+
+def boundary_friction_source(lubricant: Lubricant) -> str:
+    """Where an oil's boundary friction comes from, in one line for a dataset's attribute.
+
+    Parameters
+    ----------
+    lubricant : Lubricant
+
+    Returns
+    -------
+    str
+        For a table: its points and its ``source``; for a constant: the value and the
+        oil's ``traction_source`` (or that the oil file gives none); empty without μ_b.
+
+    Notes
+    -----
+    Source: the oil file.
+    """
+    mu_b = lubricant.boundary_friction
+    if mu_b is None:
+        return ""
+    if isinstance(mu_b, BoundaryFrictionTable):
+        points = ", ".join(f"{v:g} at {t:g} degC" for t, v in zip(mu_b.temperature, mu_b.value,
+                                                                  strict=True))
+        return (f"oil {lubricant.name!r}: boundary_friction table [1] ({points}), linear in "
+                f"temperature, end values held outside; source: {mu_b.source}")
+    why = lubricant.traction_source.strip() or "the oil file gives no traction_source"
+    return f"oil {lubricant.name!r}: boundary_friction {float(mu_b):g} [1], constant; source: {why}"
 
 
 # ----------------------------------------------------------------------------- loading

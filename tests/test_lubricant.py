@@ -3,14 +3,19 @@
 from __future__ import annotations
 
 import csv
+import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from friction.lubricant import (
+    BoundaryFrictionTable,
     Lubricant,
     available_lubricants,
+    boundary_friction_coefficient,
+    boundary_friction_in_range,
+    boundary_friction_source,
     density,
     fit_vogel,
     kinematic_viscosity,
@@ -21,6 +26,7 @@ from friction.lubricant import (
     thermal_conductivity,
     viscosity,
 )
+from friction.validity import FrictionModelRangeWarning
 from geometry.core.errors import InputError, ModelUnavailableError
 
 DATA = Path(__file__).parent / "data"
@@ -252,3 +258,107 @@ def test_invalid_toml(tmp_path: Path) -> None:
     p.write_text("name = ", encoding="utf-8")
     with pytest.raises(InputError, match="TOML"):
         load_lubricant(p)
+
+
+# ----------------------------------------------------------------------------- boundary friction
+#: A measured μ_b table (the docs' example): 0.11 / 0.12 / 0.13 at 40 / 80 / 120 degC.
+MU_B_TABLE = (
+    "\n[boundary_friction]\ntemperature = [40.0, 80.0, 120.0]\nvalue = [0.11, 0.12, 0.13]\n"
+    'source = "MTM, 20 N, 10 mm/s, SRR 50 %, AISI 52100, a test"\n'
+)
+
+
+def _oil_with_boundary_friction(tmp_path: Path, table: str = MU_B_TABLE,
+                                 constant: str | None = None) -> Path:
+    """The test oil with a ``[boundary_friction]`` table (or one number) and its unit."""
+    text = _toml(boundary_friction=constant).replace(
+        "[units]\n", '[units]\nboundary_friction = "1"\n')
+    p = tmp_path / "oil.toml"
+    p.write_text(text if constant is not None else text + table, encoding="utf-8")
+    return p
+
+
+def test_boundary_friction_table_interpolates_and_holds_its_ends(tmp_path: Path) -> None:
+    """Linear between the measured points, the end values held outside: by hand, 0.115 at
+    60 degC (half-way 0.11 → 0.12), 0.1225 at 90 (a quarter of 0.12 → 0.13), 0.11 at 25 and
+    0.13 at 135 degC (held), with the range warning only for the held ones."""
+    oil = load_lubricant(_oil_with_boundary_friction(tmp_path))
+    assert isinstance(oil.boundary_friction, BoundaryFrictionTable)
+    assert oil.boundary_friction.source.startswith("MTM")
+    inside = np.array([40.0, 60.0, 80.0, 90.0, 120.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", FrictionModelRangeWarning)
+        mu = boundary_friction_coefficient(oil, inside)
+    np.testing.assert_allclose(mu, [0.11, 0.115, 0.12, 0.1225, 0.13], rtol=1e-14)
+    assert np.all(boundary_friction_in_range(oil, inside))
+    grid = np.array([[25.0, 60.0], [121.0, 135.0]])  # array in, array out (same shape)
+    with pytest.warns(FrictionModelRangeWarning, match=r"measured at 40-120 degC.*3 of 4"):
+        held = boundary_friction_coefficient(oil, grid)
+    np.testing.assert_allclose(held, [[0.11, 0.115], [0.13, 0.13]], rtol=1e-14)
+    np.testing.assert_array_equal(boundary_friction_in_range(oil, grid),
+                                  [[False, True], [False, False]])
+    assert isinstance(boundary_friction_coefficient(oil, 80.0), float)
+    assert "0.12 at 80 degC" in boundary_friction_source(oil)
+    assert "AISI 52100" in boundary_friction_source(oil)
+    with pytest.raises(InputError, match="temperature"):  # the oil's own range still holds
+        boundary_friction_coefficient(oil, 150.0)
+
+
+def test_boundary_friction_constant_as_before(oil: Lubricant) -> None:
+    """The bundled 75W90's one number: the same μ_b at every temperature, never flagged."""
+    assert oil.boundary_friction == 0.1
+    t = np.array([10.0, 90.0, 140.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", FrictionModelRangeWarning)
+        np.testing.assert_array_equal(boundary_friction_coefficient(oil, t), 0.1)
+    assert np.all(boundary_friction_in_range(oil, t))
+    assert "0.1 [1], constant" in boundary_friction_source(oil)
+
+
+def test_boundary_friction_missing_is_refused_by_name(tmp_path: Path) -> None:
+    p = tmp_path / "oil.toml"
+    p.write_text(_toml(), encoding="utf-8")
+    with pytest.raises(InputError, match="boundary_friction: the lubricant 'test oil' gives none"):
+        boundary_friction_coefficient(load_lubricant(p), 80.0)
+
+
+@pytest.mark.parametrize(
+    ("table", "field"),
+    [
+        ("temperature = [80.0, 40.0, 120.0]\nvalue = [0.1, 0.1, 0.1]\nsource = 'x'",
+         r"boundary_friction\.temperature: must be strictly increasing"),
+        ("temperature = [40.0, 40.0]\nvalue = [0.1, 0.1]\nsource = 'x'",
+         r"boundary_friction\.temperature: must be strictly increasing"),
+        ("temperature = [40.0]\nvalue = [0.1]\nsource = 'x'",
+         r"boundary_friction\.temperature: must be at least 2"),
+        ("temperature = [40.0, 80.0]\nvalue = [0.1, 0.1, 0.1]\nsource = 'x'",
+         r"boundary_friction\.value: must be one value per temperature"),
+        ("temperature = [40.0, 80.0]\nvalue = [0.1, 1.2]\nsource = 'x'",
+         r"boundary_friction\.value.*\[0, 1\]"),
+        ("temperature = [40.0, 80.0]\nvalue = [-0.01, 0.1]\nsource = 'x'",
+         r"boundary_friction\.value.*\[0, 1\]"),
+        ("temperature = [40.0, 80.0]\nvalue = [0.1, 0.1]",
+         r"boundary_friction\.source: missing"),
+        ("temperature = [40.0, 80.0]\nvalue = [0.1, 0.1]\nsource = ' '",
+         r"boundary_friction\.source: must be a non-empty string"),
+        ("temperature = [40.0, 80.0]\nvalue = [0.1, 0.1]\nsource = 'x'\nunit = '1'",
+         r"boundary_friction\.unit: unknown field; accepted: temperature, value, source"),
+        ("temperature = ['hot', 'cold']\nvalue = [0.1, 0.1]\nsource = 'x'",
+         r"boundary_friction\.temperature: must be a list of numbers"),
+    ],
+)
+def test_boundary_friction_table_refusals_name_the_field(tmp_path: Path, table: str,
+                                                         field: str) -> None:
+    p = _oil_with_boundary_friction(tmp_path, "\n[boundary_friction]\n" + table + "\n")
+    with pytest.raises(InputError, match=field) as err:
+        load_lubricant(p)
+    assert str(p) in str(err.value)  # and the file
+
+
+@pytest.mark.parametrize(("value", "field"), [("1.5", r"boundary_friction: .*\[0, 1\]"),
+                                              ("[0.1, 0.12]", r"boundary_friction: must be one "
+                                               r"number in \[0, 1\] \[1\] or a "
+                                               r"\[boundary_friction\] table")])
+def test_boundary_friction_number_refusals(tmp_path: Path, value: str, field: str) -> None:
+    with pytest.raises(InputError, match=field):
+        load_lubricant(_oil_with_boundary_friction(tmp_path, constant=value))
