@@ -10,7 +10,8 @@ For every loaded contact segment of an LTCA (the ``/ltca`` dataset of
    lambda ratio λ = h_min/σ with σ = √(Rq₁² + Rq₂²);
 4. friction coefficient μ by a registered model (:mod:`friction.coefficient`), with the
    thermal factor φ_T and the oil's film-traction properties for the models that use
-   them (``mixed_ehl``), and a per-segment flag where the model is extrapolated;
+   them (``mixed_ehl``; the boundary friction μ_b at the inlet temperature, a measured
+   table's interpolated there), and a per-segment flag where the model is extrapolated;
 5. losses: sliding P_s = μ F V_s, rolling P_r = F_R L V_r with F_R the Goksem–Hargreaves
    rolling traction per length (:mod:`friction.rolling`);
 6. per roll position the instantaneous power loss and efficiency
@@ -29,6 +30,7 @@ is μ·F·V_s, totals are sums.
 from __future__ import annotations
 
 import dataclasses
+import inspect
 import json
 import logging
 import math
@@ -39,6 +41,7 @@ import numpy as np
 import xarray as xr
 
 from friction.coefficient import (
+    FrictionModelLike,
     FrictionModelRangeWarning,
     friction_coefficient,
     friction_model_validity,
@@ -54,6 +57,9 @@ from friction.film import (
 from friction.kinematics import surface_velocities
 from friction.lubricant import (
     Lubricant,
+    boundary_friction_coefficient,
+    boundary_friction_in_range,
+    boundary_friction_source,
     load_lubricant,
     pressure_viscosity_coefficient,
     temperature_viscosity_coefficient,
@@ -129,7 +135,14 @@ def efficiency_analysis(
         ``power_loss_mean`` [W] and ``efficiency_mean`` [1]. Inputs outside a model's
         fitted range are logged (INFO) and listed in the ``model_range_warnings`` attribute;
         the segments concerned are flagged per segment in ``friction_model_extrapolated``
-        (int8 0/1, CF ``flag_values``/``flag_meanings``).
+        (int8 0/1, CF ``flag_values``/``flag_meanings``). For a model that takes the
+        oil's boundary friction (``mixed_ehl``) the attributes ``boundary_friction`` [1]
+        — μ_b of the asperity junctions as the model used it, the oil's evaluated at the
+        inlet temperature (:func:`friction.lubricant.boundary_friction_coefficient`; no
+        flash temperature) — and ``boundary_friction_source`` (the oil file's table or
+        constant and its source); an inlet temperature outside the oil's measured
+        μ_b table holds μ_b at the table's end value and flags every loaded segment,
+        the range warning saying why.
 
         Over (``member``, ``torque``, ``roll``, ``pair``, ``segment``)
         ``surface_speed`` [m/s], each flank's speed across the contact line (through the
@@ -278,15 +291,27 @@ class _Oil(NamedTuple):
     thermal_conductivity: float  # k [W/(m K)]
     traction: dict  # the oil's film-traction parameters that are set (mixed_ehl), by name
     lubricant: Lubricant  # the oil as read (its surface-durability fields among them)
+    boundary_friction_measured: bool  # μ_b inside its table's range (True for a constant)
+    boundary_friction_notes: list[str]  # why μ_b is extrapolated (the range warning), if it is
 
 
 def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
-    """Name, η₀ [Pa s], α [1/GPa], β [1/K] and k [W/(m K)] of the lubricant (bundled name
-    or TOML path) at the inlet temperature [degC]."""
+    """Name, η₀ [Pa s], α [1/GPa], β [1/K], k [W/(m K)] and the film-traction parameters
+    of the lubricant (bundled name or TOML path) at the inlet temperature [degC] — the
+    boundary friction μ_b [1] too, a table's interpolated there
+    (:func:`friction.lubricant.boundary_friction_coefficient`; no flash temperature), with
+    whether it lies inside the table's measured range and the range warning if not."""
     oil = load_lubricant(lubricant)
-    traction = {k: getattr(oil, k) for k in
-                ("eyring_stress", "limiting_shear_coefficient", "boundary_friction")
+    traction = {k: getattr(oil, k) for k in ("eyring_stress", "limiting_shear_coefficient")
                 if getattr(oil, k) is not None}
+    measured, notes = True, []
+    if oil.boundary_friction is not None:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", FrictionModelRangeWarning)
+            traction["boundary_friction"] = float(boundary_friction_coefficient(oil, temperature))
+        measured = bool(boundary_friction_in_range(oil, temperature))
+        notes = sorted({str(w.message) for w in caught
+                        if issubclass(w.category, FrictionModelRangeWarning)})
     return _Oil(
         oil.name,
         float(viscosity(oil, temperature)),
@@ -295,7 +320,25 @@ def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
         float(thermal_conductivity(oil, temperature)),
         traction,
         oil,
+        measured,
+        notes,
     )
+
+
+def _boundary_friction_used(oil: _Oil, model: FrictionModelLike) -> tuple[float, str] | None:
+    """The boundary friction μ_b [1] the friction model ``model`` ran with and where it
+    comes from — the oil's at the inlet temperature, else the model's own default —; None
+    for a model that takes no ``boundary_friction``."""
+    fm = get_friction_model(model)
+    if "boundary_friction" not in fm.optional:
+        return None
+    if "boundary_friction" in oil.traction:
+        return oil.traction["boundary_friction"], boundary_friction_source(oil.lubricant)
+    default = inspect.signature(fm.function).parameters["boundary_friction"].default
+    if isinstance(default, bool) or not isinstance(default, (int, float)):
+        return None  # a plug-in's own default that is not a number: nothing to record
+    return float(default), (f"the default of the friction model {fm.name!r} (the oil "
+                            f"{oil.name!r} gives no boundary_friction)")
 
 
 class _Segments(NamedTuple):
@@ -491,8 +534,14 @@ def _film_and_friction(
         outside = ~np.broadcast_to(friction_model_validity(op.friction_model, **inputs),
                                    seg.force.shape)
         fr = np.asarray(rolling_traction(vr, sr, eta0, alpha, w, R, e_prime, beta, k_oil), float)
-    range_notes = sorted({str(w.message) for w in caught
-                          if issubclass(w.category, FrictionModelRangeWarning)})
+    range_notes = {str(w.message) for w in caught
+                   if issubclass(w.category, FrictionModelRangeWarning)}
+    if "boundary_friction" in accepted and "boundary_friction" in oil.traction \
+            and not oil.boundary_friction_measured:
+        # μ_b held at its table's end value: every segment's μ rests on it
+        outside = np.ones(seg.force.shape, bool)
+        range_notes.update(oil.boundary_friction_notes)
+    range_notes = sorted(range_notes)
     return _Friction(h, lam, np.broadcast_to(mu, seg.force.shape), outside, fr, range_notes)
 
 
@@ -617,6 +666,10 @@ def _friction_dataset(
         "model_range_warnings": json.dumps(fric.range_warnings),
         "model_range_by_contact": json.dumps(_range_by_contact(ltca, seg, fric)),
     }
+    used = _boundary_friction_used(oil, op.friction_model)
+    if used is not None:
+        # the μ_b [1] of the asperity junctions the model ran with, at the inlet temperature
+        attrs["boundary_friction"], attrs["boundary_friction_source"] = used
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 

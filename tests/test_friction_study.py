@@ -322,3 +322,25 @@ def test_eyring_fit_refuses_an_oil_without_traction_properties(tmp_path):
                                          r"'limiting_shear_coefficient'\]"):
         fit_kolivand2009(held)
     assert fit_kolivand2009(held, structure="split").structure == "split"
+
+
+def test_fit_refuses_a_boundary_friction_table(tmp_path):
+    # kolivand2009 holds one μ_b and takes no temperature: an oil whose boundary_friction is
+    # a table against temperature is refused by the structures that use μ_b, naming it
+    # (the 'regimes' structure, without μ_b, still fits)
+    from friction.kolivand2009 import DATA_DIR
+    from friction.study.fit import fit_kolivand2009
+    from geometry.core.io import read_netcdf
+
+    text = (DATA_DIR / "75W90.toml").read_text(encoding="utf-8").replace(
+        "boundary_friction = 0.1\n", "")
+    oil = tmp_path / "table.toml"
+    oil.write_text(text + "\n[boundary_friction]\ntemperature = [40.0, 120.0]\n"
+                   "value = [0.1, 0.12]\nsource = \"a test\"\n", encoding="utf-8")
+    held = read_netcdf(DATA_DIR / "friction_study_75W90_heldout.nc", tree=False)
+    held.attrs = {**held.attrs, "solver_lubricant": str(oil)}
+    for structure in ("eyring", "split"):
+        with pytest.raises(InputError, match=r"^boundary_friction: .* table against "
+                                             r"temperature.*'regimes'"):
+            fit_kolivand2009(held, structure=structure)
+    assert fit_kolivand2009(held, structure="regimes").structure == "regimes"

@@ -11,8 +11,12 @@ falls with the film parameter and rises with roughness).
 
 from __future__ import annotations
 
+import dataclasses
+import json
 import math
+import re
 import warnings
+from importlib import resources
 
 import numpy as np
 import pytest
@@ -24,7 +28,7 @@ from friction.coefficient import (
     friction_coefficient,
     friction_model_validity,
 )
-from friction.efficiency import efficiency_analysis
+from friction.efficiency import efficiency_analysis, extrapolated_segments
 from friction.film import dowson_toyoda_central
 from friction.mixed_ehl import (
     MIXED_EHL_DEFAULTS,
@@ -252,3 +256,115 @@ def test_efficiency_stage_with_mixed_ehl() -> None:
     ph = lt["pressure_max"].values[loaded]
     np.testing.assert_array_equal(flag.values[loaded] == 1,
                                   (ph > 2500.0) | (fr["rolling_velocity"].values[loaded] < 0.1))
+
+
+# ----------------------------------------------------------------------------- μ_b of the oil
+def _oil_file(tmp_path, name: str, boundary_friction: str) -> str:
+    """The bundled 75W90 oil file with its ``boundary_friction = 0.1`` line replaced (a
+    number or a ``[boundary_friction]`` table, written at the end)."""
+    text = resources.files("friction").joinpath("data", "75W90.toml").read_text("utf-8")
+    text, n = re.subn(r"(?m)^boundary_friction = 0\.1$", "", text)
+    assert n == 1
+    if boundary_friction.startswith("["):
+        text += "\n" + boundary_friction
+    else:
+        text = f"boundary_friction = {boundary_friction}\n" + text
+    path = tmp_path / f"{name}.toml"
+    path.write_text(text, encoding="utf-8")
+    return str(path)
+
+
+#: A measured table (docs/friction.md's example) and its value at the run's 90 °C inlet.
+MU_B_TABLE = ("[boundary_friction]\ntemperature = [40.0, 80.0, 120.0]\n"
+              "value = [0.11, 0.12, 0.13]\nsource = \"MTM, a test\"\n")
+MU_B_AT_90 = float(np.interp(90.0, [40.0, 80.0, 120.0], [0.11, 0.12, 0.13]))
+
+
+@pytest.fixture(scope="module")
+def small_ltca():
+    return _run()
+
+
+def test_oil_table_gives_the_constant_oil_result_at_its_inlet_value(small_ltca, tmp_path):
+    """Identity: an oil whose μ_b table reads x at the inlet temperature (0.1225 at 90 °C,
+    by hand a quarter of the way from 0.12 to 0.13) gives exactly the μ, losses and
+    efficiency of the same oil with the constant x — μ_b is evaluated at the inlet
+    temperature, nothing else changes — and the dataset records the μ_b used."""
+    assert MU_B_AT_90 == pytest.approx(0.1225, rel=1e-14)
+    table = _oil_file(tmp_path, "table", MU_B_TABLE)
+    const = _oil_file(tmp_path, "const", repr(MU_B_AT_90))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FrictionModelRangeWarning)
+        a = efficiency_analysis(small_ltca, lubricant=table, friction_model="mixed_ehl")
+        b = efficiency_analysis(small_ltca, lubricant=const, friction_model="mixed_ehl")
+        base = efficiency_analysis(small_ltca, friction_model="mixed_ehl")
+    for name in ("friction_coefficient", "sliding_loss", "efficiency", "efficiency_mean",
+                 "friction_model_extrapolated"):
+        np.testing.assert_array_equal(a[name].values, b[name].values)
+    assert a.attrs["model_range_warnings"] == b.attrs["model_range_warnings"]
+    assert a.attrs["boundary_friction"] == MU_B_AT_90 == b.attrs["boundary_friction"]
+    assert "table" in a.attrs["boundary_friction_source"]
+    assert "MTM, a test" in a.attrs["boundary_friction_source"]
+    assert "constant" in b.attrs["boundary_friction_source"]
+    # the bundled oil: its constant 0.1 and its source recorded; a larger μ_b costs efficiency
+    assert base.attrs["boundary_friction"] == 0.1
+    assert "0.08-0.13" in base.attrs["boundary_friction_source"]
+    assert np.all(a["efficiency_mean"].values < base["efficiency_mean"].values)
+
+
+def test_oil_temperature_outside_the_table_is_flagged(small_ltca, tmp_path):
+    """Inlet 130 °C, above the table's 120 °C: μ_b held at 0.13 (the constant-0.13 oil's
+    μ exactly), every loaded segment flagged, the range warning saying why; a model that
+    takes no μ_b (kolivand2009) is neither flagged for it nor records one."""
+    table = _oil_file(tmp_path, "table", MU_B_TABLE)
+    const = _oil_file(tmp_path, "const", "0.13")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FrictionModelRangeWarning)
+        hot = efficiency_analysis(small_ltca, lubricant=table, temperature=130.0,
+                                  friction_model="mixed_ehl")
+        ref = efficiency_analysis(small_ltca, lubricant=const, temperature=130.0,
+                                  friction_model="mixed_ehl")
+        k09 = efficiency_analysis(small_ltca, lubricant=table, temperature=130.0,
+                                  friction_model="kolivand2009")
+        k09_const = efficiency_analysis(small_ltca, lubricant=const, temperature=130.0,
+                                        friction_model="kolivand2009")
+    np.testing.assert_array_equal(hot["friction_coefficient"].values,
+                                  ref["friction_coefficient"].values)
+    assert hot.attrs["boundary_friction"] == 0.13
+    loaded = hot["friction_coefficient"].notnull().values
+    assert np.all(hot["friction_model_extrapolated"].values[loaded] == 1)
+    assert not np.all(ref["friction_model_extrapolated"].values[loaded] == 1)
+    notes = json.loads(hot.attrs["model_range_warnings"])
+    assert any("boundary_friction measured at 40-120 degC" in n and "130 degC" in n
+               for n in notes)
+    assert extrapolated_segments(hot)[0] == int(loaded.sum())
+    np.testing.assert_array_equal(k09["friction_model_extrapolated"].values,
+                                  k09_const["friction_model_extrapolated"].values)
+    assert "boundary_friction" not in k09.attrs
+    assert not any("boundary_friction" in n for n in json.loads(k09.attrs["model_range_warnings"]))
+
+
+def test_line_contact_takes_the_oil_table_at_its_inlet_temperature(tmp_path):
+    """The line-contact solvers' μ_b (``ltca ehl``, the friction study): the oil's at the
+    condition's inlet temperature, the condition's own where given; recorded in the
+    solution's attributes."""
+    from friction.ehl.line_contact import (
+        Grid,
+        LineContactCondition,
+        condition_attrs,
+        condition_boundary_friction,
+        contact_setup,
+    )
+
+    table = _oil_file(tmp_path, "table", MU_B_TABLE)
+    cond = LineContactCondition(load_per_length=300.0, radius=20.0, entraining_velocity=2.0,
+                                slide_to_roll=0.3, temperature=60.0, lubricant=table)
+    assert condition_boundary_friction(cond) == pytest.approx(0.115, rel=1e-14)
+    assert contact_setup(cond, Grid()).mu_b == condition_boundary_friction(cond)
+    assert condition_attrs(cond)["boundary_friction"] == condition_boundary_friction(cond)
+    own = dataclasses.replace(cond, boundary_friction=0.05)
+    assert condition_boundary_friction(own) == 0.05
+    with pytest.warns(FrictionModelRangeWarning, match="held at the end value"):
+        assert condition_boundary_friction(dataclasses.replace(cond, temperature=20.0)) == 0.11
+    with pytest.raises(InputError, match="boundary_friction"):
+        condition_boundary_friction(dataclasses.replace(cond, boundary_friction=2.0))

@@ -39,7 +39,13 @@ from friction.ehl.rheology import (
     dowson_higginson_density,
     eyring_limited_shear,
 )
-from friction.lubricant import Lubricant, load_lubricant, pressure_viscosity_coefficient, viscosity
+from friction.lubricant import (
+    Lubricant,
+    boundary_friction_coefficient,
+    load_lubricant,
+    pressure_viscosity_coefficient,
+    viscosity,
+)
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, real, real_array
@@ -109,7 +115,10 @@ class LineContactCondition:
     limiting_shear_coefficient : float or None — [1]
         Λ; default the lubricant's.
     boundary_friction : float or None — [1]
-        μ_b on the contact nodes; default the lubricant's.
+        μ_b on the contact nodes; default the lubricant's at the inlet ``temperature``
+        (a measured table's interpolated there, held at its end values outside it,
+        :func:`friction.lubricant.boundary_friction_coefficient`; not at the flash
+        temperature).
     """
 
     load_per_length: float
@@ -236,6 +245,39 @@ class ContactSetup:
     kernel_matrix: Array = field(repr=False)
 
 
+def condition_boundary_friction(condition: LineContactCondition) -> float:
+    """The boundary friction μ_b [1] of a line-contact condition's asperity contacts.
+
+    Parameters
+    ----------
+    condition : LineContactCondition
+
+    Returns
+    -------
+    float — [1]
+        The condition's ``boundary_friction`` where given, else the lubricant's at the
+        condition's inlet temperature (:func:`friction.lubricant.boundary_friction_coefficient`:
+        a measured table interpolated linearly, held at its end values outside it).
+
+    Raises
+    ------
+    InputError
+        Neither gives one, or a value outside [0, 1] (naming ``boundary_friction``).
+
+    Warns
+    -----
+    FrictionModelRangeWarning
+        The inlet temperature outside the oil's measured μ_b table.
+    """
+    if condition.boundary_friction is not None:
+        return real("boundary_friction", condition.boundary_friction, unit="1", low=0.0,
+                    high=1.0)
+    oil = lubricant_of(condition.lubricant)
+    if oil.boundary_friction is None:
+        raise InputError(f"boundary_friction: the lubricant {oil.name!r} gives none; pass one (1)")
+    return float(boundary_friction_coefficient(oil, condition.temperature))
+
+
 def lubricant_of(lubricant: str | Lubricant) -> Lubricant:
     """The oil of a condition: a Lubricant as given, a bundled name or a file loaded.
 
@@ -323,8 +365,7 @@ def contact_setup(cond: LineContactCondition, grid: Grid) -> ContactSetup:
     tau0 = param("eyring_stress", cond.eyring_stress, oil.eyring_stress, "MPa", 1e-3, 1e3) * 1e6
     lim = param("limiting_shear_coefficient", cond.limiting_shear_coefficient,
                 oil.limiting_shear_coefficient, "1", 0.0, math.inf)
-    mu_b = param("boundary_friction", cond.boundary_friction, oil.boundary_friction, "1",
-                 0.0, 1.0)
+    mu_b = condition_boundary_friction(cond)
     kernel = ElasticKernel(grid.nodes, spacing)
     return ContactSetup(
         x=x, spacing=spacing, b=b, ph=ph, radius=rm, eta0=eta0, alpha=alpha,
@@ -723,7 +764,8 @@ def line_contact_summary(condition: LineContactCondition, grid: Grid | None = No
 def condition_attrs(condition: LineContactCondition) -> dict[str, str | float]:
     """The condition as a solution dataset's attributes (every line-contact solver's file
     records it the same way): lubricant and viscosity model, w′ [N/mm], R [mm], u_e [m/s],
-    SR [1], inlet temperature [degC] and E′ [MPa], units in the names."""
+    SR [1], inlet temperature [degC] and E′ [MPa], units in the names, and the boundary
+    friction μ_b [1] the asperity contacts had (:func:`condition_boundary_friction`)."""
     return {
         "lubricant": lubricant_of(condition.lubricant).name,
         "viscosity_model": condition.viscosity_model,
@@ -733,6 +775,7 @@ def condition_attrs(condition: LineContactCondition) -> dict[str, str | float]:
         "slide_to_roll": float(condition.slide_to_roll),
         "temperature_degC": float(condition.temperature),
         "e_prime_MPa": float(condition.e_prime),
+        "boundary_friction": condition_boundary_friction(condition),
     }
 
 

@@ -41,7 +41,12 @@ from friction.kolivand2009 import (
     groups_film_traction,
     kolivand2009,
 )
-from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
+from friction.lubricant import (
+    BoundaryFrictionTable,
+    load_lubricant,
+    pressure_viscosity_coefficient,
+    viscosity,
+)
 from friction.study.design import TABLE_5_1_RANGE
 from geometry.core.atomic_files import atomic_path
 from geometry.core.errors import InputError
@@ -312,7 +317,9 @@ def fit_kolivand2009(
     Raises
     ------
     InputError
-        Bad features or parameters (named), or fewer converged points than features.
+        Bad features or parameters (named), or fewer converged points than features, or
+        a 'split'/'eyring' structure on an oil whose ``boundary_friction`` is a table
+        against temperature (the fit holds one μ_b; named ``boundary_friction``).
 
     Notes
     -----
@@ -328,6 +335,13 @@ def fit_kolivand2009(
     lo_b, hi_b = (float(v) for v in lambda_bounds)
     if not 0.0 < lo_b < hi_b:
         raise InputError(f"lambda_bounds: must be 0 < λ1 < λ2, got {lambda_bounds}")
+    oil = load_lubricant(str(study.attrs.get("solver_lubricant", "75W90")))
+    if isinstance(oil.boundary_friction, BoundaryFrictionTable) and structure != "regimes":
+        raise InputError(
+            f"boundary_friction: the lubricant {oil.name!r} gives a table against temperature,"
+            f" but the {structure!r} structure holds one μ_b and kolivand2009 takes no"
+            " temperature; give the oil one boundary_friction for the fit, or fit"
+            " structure='regimes'")
     d = study_inputs(study)
     n = d["friction_coefficient"].size
     nf = len(features)
@@ -336,7 +350,6 @@ def fit_kolivand2009(
     groups = contact_groups(**_model_inputs(d))
     x = _features(features, groups)
     y = np.log(d["friction_coefficient"])
-    oil = load_lubricant(str(study.attrs.get("solver_lubricant", "75W90")))
     mu_b = float(oil.boundary_friction or 0.0) if structure != "regimes" else 0.0
     film: dict[str, Any] = {}
     y_start, mu_e = y, None
