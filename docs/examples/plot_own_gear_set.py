@@ -56,7 +56,9 @@ with tempfile.TemporaryDirectory() as tmp:
 # drive flank analysed by a coarse LTCA at the light and the design torque, the best
 # checked at the default sampling; the design torque is the ISO 10300 capacity at long life
 # (the basic file gives none), lowered to the bearing's static flank capacity where the
-# flank peak pressure there would exceed the static strength.
+# flank peak pressure there would exceed the static strength. Then the coast flank, which
+# carries the full torque in reverse gear: checked at the same torques, and developed the
+# same way on its own prescriptions where it misses a target.
 developed = contact.develop(basic)
 case = developed.case
 light, design = developed.torque
