@@ -339,7 +339,7 @@ def fit_kolivand2009(
     if isinstance(oil.boundary_friction, BoundaryFrictionTable) and structure != "regimes":
         raise InputError(
             f"boundary_friction: the lubricant {oil.name!r} gives a table against temperature,"
-            f" but the {structure!r} structure holds one μ_b and kolivand2009 takes no"
+            f" but the {structure!r} structure holds one mu_b and kolivand2009 takes no"
             " temperature; give the oil one boundary_friction for the fit, or fit"
             " structure='regimes'")
     d = study_inputs(study)
