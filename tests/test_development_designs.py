@@ -6,11 +6,19 @@ docs/synthesis.md with every synthesis default) go through ``ltca synthesize`` (
 the development bearing on, contact.optimize.development) and ``ltca run`` (root stress
 and the ISO 10300 rating on, the defaults): rc 0, a verdict that is not FAIL, root stress
 of both members at every torque, the rating present, and the developed case records what
-its development achieved. ``benchmarks/development_designs.py`` prints the same runs as a
-table (pattern, LTE, edge share, verdict, CPU time).
+its development achieved. The coast flank, developed at the same torques where it misses
+a target as synthesised, is run too (``ltca run CASE --flank coast``, root stress and
+rating on): no FAIL from the contact (plastic edges, static strength, plausibility) or
+the root stress. The ISO 10300 rating's coast side is left out of that assertion: the
+design torque is the drive side's long-life capacity, and at it the coast side's S_H and
+S_F of Method B1 — read from the basic data, not from the flank's prescriptions — fall
+below their minima on some designs (measured: passenger-car hypoid S_H 0.99, truck
+hypoid S_H 1.00 and gear S_F 1.18 against 1 and 1.3).
+``benchmarks/development_designs.py`` prints the same runs as a table (pattern, LTE, edge
+share, verdict, CPU time).
 
 Run with ``pytest -m slow tests/test_development_designs.py -n 0`` (≈ 3–5 min of CPU per
-design with a cold FE cache).
+design with a cold FE cache, the coast run ≈ 1 min of it).
 """
 
 from __future__ import annotations
@@ -30,6 +38,7 @@ DESIGNS = sorted(p for p in (Path(__file__).parent / "data" / "designs").glob("*
 @pytest.mark.parametrize("basic", DESIGNS, ids=[p.stem for p in DESIGNS])
 def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys):
     from contact.cli import main
+    from contact.optimize.development import COAST_STATUS
     from contact.study.verdicts import verdict
 
     case_path = tmp_path / f"{basic.stem}.toml"
@@ -51,3 +60,16 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert root.shape == (lt.sizes["torque"], 2)  # pinion and gear at every torque
     assert np.all(np.isfinite(root)) and np.all(root > 0)
     assert "rating" in tree.children and "S_H" in tree["/rating"]
+
+    # the coast flank (reverse gear: the full torque on the coast side)
+    coast = case["development"]["coast"]
+    assert coast["development"] != COAST_STATUS["not checked"]
+    assert "Coast flank (" in case["source"]
+    nc_coast = tmp_path / f"{basic.stem}_coast.nc"
+    assert main(["run", str(case_path), "--flank", "coast", "-o", str(nc_coast)]) == 0
+    tree = xr.open_datatree(nc_coast)
+    fails = [f.reason for f in verdict(tree).findings
+             if f.severity == "fail" and f.check != "rating"]
+    assert not fails, fails
+    root = tree["/ltca"]["root_stress_max"].values
+    assert np.all(np.isfinite(root)) and np.all(root > 0)
