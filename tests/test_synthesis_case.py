@@ -17,6 +17,7 @@ import tomllib
 from pathlib import Path
 from types import MappingProxyType
 
+import numpy as np
 import pytest
 
 from contact.cli import main as ltca
@@ -28,6 +29,7 @@ from contact.load_capacity.iso10300.capacity import (
 from contact.load_capacity.iso10300.inputs import RatingInputs
 from contact.load_capacity.iso10300.rating import iso10300_rating
 from geometry.case import load_case
+from geometry.core.errors import InputError
 from geometry.synthesis.basic_design import DEFAULT_RATING, load_basic
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -175,3 +177,52 @@ def test_bad_rating_table_is_refused_before_the_work(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "application_factor" in err and "synthesize: step" not in err
     assert not out.exists()
+
+
+def test_coast_design_torque_is_the_coast_sides_capacity_below_the_design_torque():
+    """A synthesised hypoid whose coast side carries less than its design torque at long
+    life gets ``coast_design_torque``: the torque at which the coast side's own rating
+    (``side = "coast"``, computed here by the rating, not by the capacity search) reaches
+    its minimum safety, to the 4-digit rounding (1e-3) and not above it; the coast side's
+    rating then reports that torque as its design torque, and a larger one at a finite
+    life (permissible cycles finite). A case where the coast side carries the design torque,
+    or whose table sets the field, is unchanged."""
+    from contact.load_capacity.iso10300 import iso10300_rating
+    from contact.load_capacity.iso10300.capacity import with_coast_design_torque
+
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+    table = dict(case.extra["rating"])
+    coast_rating = {**table, "side": "coast"}
+    speed = case.operating.pinion_speed or 1500.0
+    # a design torque above the coast side's long-life capacity
+    cap = capacity_torque(case, rating=coast_rating)
+    high = dataclasses.replace(case, extra=MappingProxyType(
+        {**case.extra, "rating": {**table, "design_torque": 1.5 * cap}}))
+    rated, torque = with_coast_design_torque(high)
+    assert torque <= cap and torque == pytest.approx(cap, rel=1e-3)
+    assert rated.extra["rating"]["coast_design_torque"] == torque
+    assert "coast_design_torque" in rated.extra["rating"]["source"]
+    r = iso10300_rating(rated, [torque, 1.5 * cap], speed,
+                        rating={**rated.extra["rating"], "side": "coast"})
+    safety = np.minimum((r["S_H"] / r["Z_NT"] / r["S_Hmin"]).min("member").values,
+                        (r["S_F"] / r["Y_NT"] / r["S_Fmin"]).min("member").values)
+    assert safety[0] >= 1.0 - 1e-9 and safety[1] < 1.0
+    assert float(r["design_torque"]) == torque
+    assert r["design_torque"].attrs["clause"] == "[rating] coast_design_torque"
+    # the drive side keeps the design torque
+    d = iso10300_rating(rated, [torque], speed, rating=rated.extra["rating"])
+    assert float(d["design_torque"]) == 1.5 * cap
+    # below the coast capacity, or given by the table: unchanged
+    low = dataclasses.replace(case, extra=MappingProxyType(
+        {**case.extra, "rating": {**table, "design_torque": 0.5 * cap}}))
+    assert with_coast_design_torque(low)[0] is low
+    given = dataclasses.replace(case, extra=MappingProxyType(
+        {**case.extra, "rating": {**table, "design_torque": 1.5 * cap,
+                                  "coast_design_torque": 100.0}}))
+    assert with_coast_design_torque(given)[0] is given
+
+
+def test_coast_design_torque_is_validated():
+    """The field is refused outside (0, 1e6] N m, naming it."""
+    with pytest.raises(InputError, match="coast_design_torque"):
+        RatingInputs.from_mapping({**DEFAULT_RATING, "coast_design_torque": -1.0})

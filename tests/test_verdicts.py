@@ -131,6 +131,12 @@ def test_a_small_plastic_share_is_not_printed_as_zero():
 
     assert "one roll: 0.021 % at " in reason(0.00021)
     assert "one roll: 2.5 % at " in reason(0.025)
+    # edge shares: two decimals, or two significant digits below 0.01 % (a light-load
+    # pattern touching the gear tip printed "edge contact carries 0.00 %")
+    from contact.study.verdicts import _percent
+
+    assert _percent(1.23e-5, 2) == "0.0012" and _percent(0.0114, 2) == "1.14"
+    assert _percent(0.0, 2) == "0.00"
 
 
 def test_edge_contact_and_boundaries_on_a_synthetic_mesh():

@@ -105,7 +105,10 @@ def run_synthesize(args: argparse.Namespace) -> int:
     import tomllib
 
     from contact.commands.step_lines import StepLines
-    from contact.load_capacity.iso10300.capacity import with_design_torque
+    from contact.load_capacity.iso10300.capacity import (
+        with_coast_design_torque,
+        with_design_torque,
+    )
     from contact.load_capacity.iso10300.inputs import RatingInputs
     from geometry.case import case_from_dict
     from geometry.synthesis.basic_design import load_basic
@@ -137,6 +140,7 @@ def run_synthesize(args: argparse.Namespace) -> int:
         case = development.recorded(case)
         if development.torque_lowered:  # the developed bearing's own capacity
             torque, torque_why = development.torque[1], development.torque_source
+    case, coast_torque = with_coast_design_torque(case)
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
@@ -152,6 +156,9 @@ def run_synthesize(args: argparse.Namespace) -> int:
               f"{s.blank_offset:.3f} mm, curvature residual {fs.tools.shape_error:.1e} 1/mm")
     print("  design torque: " + (f"{torque:.4g} N m, {torque_why}" if math.isfinite(torque)
                                   else torque_why))
+    if math.isfinite(coast_torque):
+        print(f"  coast design torque: {coast_torque:.4g} N m, the ISO 10300 capacity of the "
+              "coast side (above it the coast side is rated at a finite life)")
     if development is not None:
         print("  " + development.headline())
     print(f"wrote {path}")

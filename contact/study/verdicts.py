@@ -298,11 +298,21 @@ def _edge_contact(lt: xr.Dataset) -> list[Finding]:
             parts.append("the loaded pattern reaches the gear's " + " and ".join(reached[i]))
         if loaded:
             total = sum(loaded.values())
-            each = ", ".join(f"{_EDGE_WORDS[k]} {100 * v:.2f} %" for k, v in
+            each = ", ".join(f"{_EDGE_WORDS[k]} {_percent(v, 2)} %" for k, v in
                              sorted(loaded.items(), key=lambda kv: -kv[1]))
-            parts.append(f"edge contact carries {100 * total:.2f} % of the torque ({each})")
+            parts.append(f"edge contact carries {_percent(total, 2)} % of the torque ({each})")
         out.append(Finding("attention", "edge_contact", f"at {_t(t)}: " + "; ".join(parts)))
     return out
+
+
+def _percent(share: float, decimals: int) -> str:
+    """A share [1] in per cent with ``decimals`` decimals, or with two significant digits
+    where those decimals would print a share that is there as 0 ("0.00 %" beside a finding
+    that says the edge carries load read as none at all)."""
+    pct = 100.0 * float(share)
+    if pct == 0.0 or abs(pct) >= 10.0 ** -decimals:
+        return f"{pct:.{decimals}f}"
+    return f"{pct:.2g}"
 
 
 def _plastic(lt: xr.Dataset) -> list[Finding]:
@@ -313,9 +323,7 @@ def _plastic(lt: xr.Dataset) -> list[Finding]:
     if not np.any(ok):
         return []
     torque = lt["torque"].values
-    # a share below 0.1 % with two significant digits: "0.0 %" read as none at all
-    where = ", ".join(f"{100 * s:.1f} % at {_t(t)}" if s >= 1e-3 else
-                      f"{100 * s:.2g} % at {_t(t)}"
+    where = ", ".join(f"{_percent(s, 1)} % at {_t(t)}"
                       for s, t in zip(share[ok], torque[ok], strict=True))
     return [Finding("attention", "plastic_edges",
                     f"segments at their contact-pressure limit (plastic edges) carry up to "

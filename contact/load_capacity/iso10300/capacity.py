@@ -26,7 +26,8 @@ from scipy.optimize import brentq
 
 from geometry.core.errors import InputError
 
-__all__ = ["capacity_torque", "design_torque", "with_design_torque"]
+__all__ = ["capacity_torque", "design_torque", "with_coast_design_torque",
+           "with_design_torque"]
 
 #: the torques [N·m] the capacity is bracketed on (log-spaced, one rating call)
 _GRID = np.geomspace(1e-2, 1e6, 161)
@@ -196,3 +197,67 @@ def with_design_torque(case, torque: float | None = None):
                        f"{why}.").lstrip()
     extra = json.loads(json.dumps({**case.extra, "rating": table}))
     return dataclasses.replace(case, extra=MappingProxyType(extra)), value, why
+
+
+def with_coast_design_torque(case):
+    """The case with ``[rating] coast_design_torque`` set where its coast side carries less
+    than the design torque at long life.
+
+    A hypoid's coast side (the pinion's convex flank driving) has its own pressure angle and
+    virtual gears, so its ISO 10300 long-life capacity is not the drive side's; the torque
+    it carries in reverse gear is a load of limited duration. Rating it at the drive side's
+    design torque for long life fails a design that is sound (issue 60: three of six
+    synthesised hypoids, coast S_H 0.99-0.997, gear S_F 1.18 at the drive side's capacity);
+    with the coast side's own long-life torque, a larger torque on that side is rated at a
+    finite life with its permissible load cycles stated (the verdict's attention), as above
+    the design torque on the drive side.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+        With ``[design]`` and ``[rating]`` tables and ``[rating] design_torque``.
+
+    Returns
+    -------
+    case : geometry.case.Case
+        ``extra["rating"]`` with ``coast_design_torque`` = the coast side's capacity
+        (:func:`capacity_torque` with ``side = "coast"``, rounded down to 4 significant
+        digits) and a sentence on it in its ``source``, where that capacity is below the
+        design torque; else unchanged (the design torque rates both sides). Unchanged also
+        where the table gives ``coast_design_torque`` or ``side``, where the pinion's convex
+        flank drives (its coast side is ISO's drive side), or where the rating gives no
+        capacity.
+    torque : float — [N·m]
+        The coast side's design torque; NaN where none is written.
+
+    Raises
+    ------
+    InputError
+        A bad ``[rating]`` table (named), from the rating.
+
+    Notes
+    -----
+    Source: ISO 10300-2:2014 and -3:2014 rate the drive and the coast side each with its
+    own flank angles (ISO 23509:2016 cl. 5: α_nD, α_nC); cl. 8, the life factors of a load
+    of finite life.
+    """
+    table = dict(case.extra.get("rating") or {})
+    design = table.get("design_torque")
+    if (design is None or table.get("coast_design_torque") is not None
+            or table.get("side") is not None or case.pair.drive_flank != "concave"):
+        return case, math.nan
+    try:
+        exact = capacity_torque(case, rating={**table, "side": "coast"})
+    except InputError:
+        return case, math.nan
+    if exact >= float(design):
+        return case, math.nan
+    step = 10.0 ** (math.floor(math.log10(exact)) - 3)
+    value = float(f"{math.floor(exact / step) * step:.4g}")
+    table["coast_design_torque"] = value
+    table["source"] = (str(table.get("source", "")).rstrip() + f" coast_design_torque {value:g}"
+                       " N m: the ISO 10300 capacity of the coast side (the pinion's convex "
+                       "flank driving), below the design torque; above it the coast side is "
+                       "rated at a finite life.").lstrip()
+    extra = json.loads(json.dumps({**case.extra, "rating": table}))
+    return dataclasses.replace(case, extra=MappingProxyType(extra)), value

@@ -253,6 +253,8 @@ RATING_FIELDS: dict[str, tuple[str, str]] = {
                              "torques above it are rated at a finite life (the verdict "
                              "states the permissible load cycles); default: none (every "
                              "torque at long life)"),
+    "coast_design_torque": ("N m", "pinion torque the coast side is rated for at long life, "
+                                   "in (0, 1e6]; default: design_torque (both sides)"),
     "min_safety_pitting": ("1", "S_H,min, in (0, 10], default 1.0"),
     "min_safety_bending": ("1", "S_F,min, in (0, 10], default 1.3"),
     "effective_width_ratio": ("1", "b2,eff / b2, in (0, 1], default 0.85"),
@@ -316,6 +318,13 @@ class RatingInputs:
         load cycles they may run (``permissible_cycles_pitting``/``_bending``) and the
         verdict wants attention rather than failing, as ISO 10300-2/-3 cl. 8 rate a load
         of finite life by its life factor. Default: none, every torque at long life.
+    coast_design_torque : float — [N·m], optional
+        The pinion torque the coast side is rated for at long life, in (0, 1e6]: used in
+        place of ``design_torque`` where the rated side is the coast side. A hypoid's coast
+        side carries less than its drive side at long life (other pressure angle, other
+        spiral angle of the virtual gears); the torque it carries in reverse gear is a
+        load of limited duration, rated at a finite life above this torque. Default:
+        ``design_torque`` for both sides.
     min_safety_pitting, min_safety_bending : float — [1]
         S_H,min and S_F,min, in (0, 10]. Defaults 1.0 and 1.3: ISO/TR 10300-30:2024's
         samples (ISO 10300 leaves them to agreement).
@@ -362,6 +371,7 @@ class RatingInputs:
     sigma_Flim: tuple[float, float] | None = None
     load_cycles: float | None = None
     design_torque: float | None = None
+    coast_design_torque: float | None = None
     min_safety_pitting: float = 1.0
     min_safety_bending: float = 1.3
     effective_width_ratio: float = 0.85
@@ -417,6 +427,7 @@ class RatingInputs:
             "nu40": dict(unit="mm2/s", low=2.0, high=5000.0),
             "load_cycles": dict(unit="1", low=1.0, high=1e13),
             "design_torque": dict(unit="N m", low=0.0, high=1e6, low_open=True),
+            "coast_design_torque": dict(unit="N m", low=0.0, high=1e6, low_open=True),
             "min_safety_pitting": dict(unit="1", low=0.0, high=10.0, low_open=True),
             "min_safety_bending": dict(unit="1", low=0.0, high=10.0, low_open=True),
             "effective_width_ratio": dict(unit="1", low=0.0, high=1.0, low_open=True),

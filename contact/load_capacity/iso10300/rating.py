@@ -232,6 +232,14 @@ def _curve(materials, attr: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             np.array([c.static_life_factor for c in curves]))
 
 
+def _design_torque(inputs, side: str) -> float | None:
+    """The torque [N·m] the rated side is rated for at long life: ``coast_design_torque``
+    on the coast side where it is given, else ``design_torque`` (None: every torque)."""
+    if side == "coast" and inputs.coast_design_torque is not None:
+        return inputs.coast_design_torque
+    return inputs.design_torque
+
+
 def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: GearData,
              side: str, name: str, materials) -> xr.Dataset:
     """The ``/rating`` dataset: every quantity with units, long name and clause."""
@@ -370,10 +378,12 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
                    f"{_P2} cl. 6 (Method B1)"),
         "S_Hmin": var((), inputs.min_safety_pitting, "1", "minimum safety factor for pitting "
                                                           "S_H,min", "[rating]"),
-        "design_torque": var((), np.nan if inputs.design_torque is None
-                             else inputs.design_torque, "N m",
+        "design_torque": var((), np.nan if _design_torque(inputs, side) is None
+                             else _design_torque(inputs, side), "N m",
                              "pinion torque rated at long life (NaN: every torque)",
-                             "[rating] design_torque"),
+                             "[rating] coast_design_torque" if side == "coast"
+                             and inputs.coast_design_torque is not None
+                             else "[rating] design_torque"),
         "permissible_cycles_pitting": var(
             tm, v["N_H"], "1", "pinion load cycles N_L1 at which S_H reaches S_H,min (inf: "
             "long life; 0: beyond the static strength)", f"{_P2} cl. 8 (life factor Z_NT)"),
