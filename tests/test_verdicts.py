@@ -207,6 +207,12 @@ def test_the_rating_group_joins_with_its_own_minimum_factors():
     (f,) = verdict(_tree(ltca=_ltca([700.0]), rating=long_life)).findings
     assert f.reason.endswith("(long life, Z_NT 1: the [rating] load_cycles of this torque "
                              "raise it)")
+    # read back from a file the member names are the coordinate member_label (the file's
+    # convention for string coordinates): the verdict names the member, not its index
+    on_file = rt.assign_coords(member=[0, 1]).assign_coords(
+        member_label=("member", ["pinion", "gear"]))
+    (f,) = verdict(_tree(ltca=_ltca([700.0]), rating=on_file)).findings
+    assert "S_H 0.99 of the gear at" in f.reason
 
 
 def _duty(**over) -> xr.Dataset:

@@ -408,8 +408,12 @@ def _rating(rt: xr.Dataset) -> list[Finding]:
         s = rt[name].transpose("torque", "member")
         n_ok = (rt[allowed].transpose("torque", "member").values if allowed in rt
                 else np.full(s.shape, np.nan))
+        # a file stores the member names as the coordinate member_label (string
+        # coordinates are labels on file): the verdict read back said "of the 1"
+        names = (s["member_label"].values if "member_label" in s.coords
+                 else s["member"].values)
         for i, t in enumerate(s["torque"].values):
-            for j, m in enumerate(s["member"].values):
+            for j, m in enumerate(names):
                 x = float(s.values[i, j])
                 if not (np.isfinite(x) and x < smin):
                     continue
