@@ -1405,9 +1405,9 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     coast's (:class:`KeptTeeth`). ``make``: the coarse search's synthesis (no tip
     planes); the designs checked are synthesised as written (with the memo), so the
     chosen one is the case written, bit for bit."""
-    from geometry.synthesis.case_synthesis import _OTHER, synthesize
+    from geometry.synthesis.case_synthesis import synthesize
 
-    side = _OTHER[developed.options.drive_flank]
+    side = "convex" if developed.options.drive_flank == "concave" else "concave"
     start = flank_option_values(developed.options.flank(side))
     drive_key = _bearing_key(drive.values)
     c0 = time.process_time()
