@@ -58,7 +58,6 @@ from friction.kinematics import surface_velocities
 from friction.lubricant import (
     Lubricant,
     boundary_friction_coefficient,
-    boundary_friction_in_range,
     boundary_friction_source,
     load_lubricant,
     pressure_viscosity_coefficient,
@@ -291,8 +290,8 @@ class _Oil(NamedTuple):
     thermal_conductivity: float  # k [W/(m K)]
     traction: dict  # the oil's film-traction parameters that are set (mixed_ehl), by name
     lubricant: Lubricant  # the oil as read (its surface-durability fields among them)
-    boundary_friction_measured: bool  # μ_b inside its table's range (True for a constant)
-    boundary_friction_notes: list[str]  # why μ_b is extrapolated (the range warning), if it is
+    # why μ_b is held at its table's end value (the range warning); empty: measured there
+    boundary_friction_notes: list[str]
 
 
 def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
@@ -300,16 +299,15 @@ def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
     of the lubricant (bundled name or TOML path) at the inlet temperature [degC] — the
     boundary friction μ_b [1] too, a table's interpolated there
     (:func:`friction.lubricant.boundary_friction_coefficient`; no flash temperature), with
-    whether it lies inside the table's measured range and the range warning if not."""
+    the range warning where it lies outside the table's measured range."""
     oil = load_lubricant(lubricant)
     traction = {k: getattr(oil, k) for k in ("eyring_stress", "limiting_shear_coefficient")
                 if getattr(oil, k) is not None}
-    measured, notes = True, []
+    notes: list[str] = []
     if oil.boundary_friction is not None:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", FrictionModelRangeWarning)
             traction["boundary_friction"] = float(boundary_friction_coefficient(oil, temperature))
-        measured = bool(boundary_friction_in_range(oil, temperature))
         notes = sorted({str(w.message) for w in caught
                         if issubclass(w.category, FrictionModelRangeWarning)})
     return _Oil(
@@ -320,7 +318,6 @@ def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
         float(thermal_conductivity(oil, temperature)),
         traction,
         oil,
-        measured,
         notes,
     )
 
@@ -537,7 +534,7 @@ def _film_and_friction(
     range_notes = {str(w.message) for w in caught
                    if issubclass(w.category, FrictionModelRangeWarning)}
     if "boundary_friction" in accepted and "boundary_friction" in oil.traction \
-            and not oil.boundary_friction_measured:
+            and oil.boundary_friction_notes:
         # μ_b held at its table's end value: every segment's μ rests on it
         outside = np.ones(seg.force.shape, bool)
         range_notes.update(oil.boundary_friction_notes)

@@ -182,21 +182,30 @@ def with_design_torque(case, torque: float | None = None):
         return case, float(table["design_torque"]), "[rating] design_torque of the basic file"
     else:
         try:
-            # rounded *down* to 4 significant digits: the capacity is where S = S_min
-            # exactly, and a design torque rounded up would fail its own rating by round-off
-            exact = capacity_torque(case)
-            step = 10.0 ** (math.floor(math.log10(exact)) - 3)
-            value = math.floor(exact / step) * step
-            value = float(f"{value:.4g}")
+            value = _rounded_down(capacity_torque(case))
         except InputError as exc:
             return case, math.nan, f"none: {exc}"
         why = ("the ISO 10300 capacity, the pinion torque at which the long-life safety "
                "reaches S_H,min or S_F,min (contact.load_capacity.iso10300.capacity)")
-    table["design_torque"] = value
-    table["source"] = (str(table.get("source", "")).rstrip() + f" design_torque {value:g} N m: "
+    return _with_rating_field(case, table, "design_torque", value, why), value, why
+
+
+def _rounded_down(exact: float) -> float:
+    """A capacity [N·m] rounded *down* to 4 significant digits: the capacity is where
+    S = S_min exactly, and a design torque rounded up would fail its own rating by
+    round-off."""
+    step = 10.0 ** (math.floor(math.log10(exact)) - 3)
+    return float(f"{math.floor(exact / step) * step:.4g}")
+
+
+def _with_rating_field(case, table: dict, name: str, value: float, why: str):
+    """The case with ``[rating] name = value`` and a sentence on it, ``why``, appended to
+    the table's ``source``."""
+    table = {**table, name: value}
+    table["source"] = (str(table.get("source", "")).rstrip() + f" {name} {value:g} N m: "
                        f"{why}.").lstrip()
     extra = json.loads(json.dumps({**case.extra, "rating": table}))
-    return dataclasses.replace(case, extra=MappingProxyType(extra)), value, why
+    return dataclasses.replace(case, extra=MappingProxyType(extra))
 
 
 def with_coast_design_torque(case):
@@ -252,12 +261,7 @@ def with_coast_design_torque(case):
         return case, math.nan
     if exact >= float(design):
         return case, math.nan
-    step = 10.0 ** (math.floor(math.log10(exact)) - 3)
-    value = float(f"{math.floor(exact / step) * step:.4g}")
-    table["coast_design_torque"] = value
-    table["source"] = (str(table.get("source", "")).rstrip() + f" coast_design_torque {value:g}"
-                       " N m: the ISO 10300 capacity of the coast side (the pinion's convex "
-                       "flank driving), below the design torque; above it the coast side is "
-                       "rated at a finite life.").lstrip()
-    extra = json.loads(json.dumps({**case.extra, "rating": table}))
-    return dataclasses.replace(case, extra=MappingProxyType(extra)), value
+    value = _rounded_down(exact)
+    why = ("the ISO 10300 capacity of the coast side (the pinion's convex flank driving), "
+           "below the design torque; above it the coast side is rated at a finite life")
+    return _with_rating_field(case, table, "coast_design_torque", value, why), value

@@ -232,12 +232,13 @@ def _curve(materials, attr: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             np.array([c.static_life_factor for c in curves]))
 
 
-def _design_torque(inputs, side: str) -> float | None:
-    """The torque [N·m] the rated side is rated for at long life: ``coast_design_torque``
-    on the coast side where it is given, else ``design_torque`` (None: every torque)."""
+def _design_torque(inputs, side: str) -> tuple[float, str]:
+    """The torque [N·m] the rated side is rated for at long life and the ``[rating]`` field
+    it comes from: ``coast_design_torque`` on the coast side where it is given, else
+    ``design_torque`` (NaN: every torque)."""
     if side == "coast" and inputs.coast_design_torque is not None:
-        return inputs.coast_design_torque
-    return inputs.design_torque
+        return inputs.coast_design_torque, "coast_design_torque"
+    return (np.nan if inputs.design_torque is None else inputs.design_torque), "design_torque"
 
 
 def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: GearData,
@@ -246,6 +247,7 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
     vg = v["vg"]
     t, m, li = ("torque",), ("member",), ("line",)
     tm = ("torque", "member")
+    design_torque, design_field = _design_torque(inputs, side)
 
     def var(dims, value, units, long_name, clause):
         return data_var(dims, np.asarray(value, dtype=float), units, long_name, clause=clause)
@@ -378,12 +380,9 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
                    f"{_P2} cl. 6 (Method B1)"),
         "S_Hmin": var((), inputs.min_safety_pitting, "1", "minimum safety factor for pitting "
                                                           "S_H,min", "[rating]"),
-        "design_torque": var((), np.nan if _design_torque(inputs, side) is None
-                             else _design_torque(inputs, side), "N m",
+        "design_torque": var((), design_torque, "N m",
                              "pinion torque rated at long life (NaN: every torque)",
-                             "[rating] coast_design_torque" if side == "coast"
-                             and inputs.coast_design_torque is not None
-                             else "[rating] design_torque"),
+                             f"[rating] {design_field}"),
         "permissible_cycles_pitting": var(
             tm, v["N_H"], "1", "pinion load cycles N_L1 at which S_H reaches S_H,min (inf: "
             "long life; 0: beyond the static strength)", f"{_P2} cl. 8 (life factor Z_NT)"),
