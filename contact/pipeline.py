@@ -240,6 +240,30 @@ def check_analysis_arguments(case, torque, misalignment, flank, options, **flags
             raise InputError(f"{name}: must be True or False, got {value!r}")
 
 
+#: run_analysis's on/off keywords and the named configuration that replaces each
+_SWITCH_REPLACEMENT = {
+    "geometry": "AnalysisChain.analysis().with_geometry(...)",
+    "mesh_interface": "AnalysisChain.analysis().with_mesh_interface(...)",
+    "root_stress": "AnalysisChain.analysis().with_root_stress(...) (True, False or the "
+                   "FEOptions)",
+    "operating": "AnalysisChain.analysis().without('efficiency')",
+}
+
+
+def _warn_switches(**given) -> None:
+    """A DeprecationWarning per on/off keyword of :func:`run_analysis` given (issue 72
+    item 5: the chain is configured one way, by ``steps``)."""
+    import warnings
+
+    for name, value in given.items():
+        if value is None or (name == "operating" and value is False):
+            continue
+        what = "operating=False" if name == "operating" else f"{name}=..."
+        warnings.warn(f"run_analysis({what}) is deprecated: give the chain as "
+                      f"steps={_SWITCH_REPLACEMENT[name]} (docs/api.md, 'The analysis "
+                      "chain')", DeprecationWarning, stacklevel=4)
+
+
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
@@ -377,6 +401,8 @@ def run_analysis(
                             mesh_interface=False, operating=False,
                             steps={"load_capacity": None})
     """
+    _warn_switches(geometry=geometry, mesh_interface=mesh_interface,
+                   root_stress=root_stress, operating=operating is False)
     flags = {k: v for k, v in (("geometry", geometry), ("mesh_interface", mesh_interface))
              if v is not None}
     check_analysis_arguments(case, torque, misalignment, flank, options,
@@ -399,6 +425,8 @@ def run_analysis(
     chain = resolve_chain(steps, geometry=geometry, mesh_interface=mesh_interface,
                           root_stress=None if root_stress is None else root_stress is not False,
                           efficiency=False if operating is False else None)
+    if fe_options is None:
+        fe_options = chain.fe_options
     torques = c.operating.torque if torque is None else torque
     opts = options or LTCAOptions()
     if chain.efficiency is None:
