@@ -45,7 +45,8 @@ def _one_sentence(exc: BaseException) -> str:
 
 @pytest.mark.parametrize("bad, said", [
     (lambda: None, r"the callable .*<lambda>\(\) cannot be called as f\(state\)"),
-    (lambda state, extra: None, r"the callable .*<lambda>\(state, extra\) cannot be called as f\(state\)"),
+    (lambda state, extra: None,
+     r"the callable .*<lambda>\(state, extra\) cannot be called as f\(state\)"),
     (ChainState, r"ChainState is a class"),
 ])
 def test_a_callable_that_cannot_take_the_state_is_refused_when_given(bad, said):
@@ -163,8 +164,8 @@ def test_named_configurations():
         "scuffing_micropitting")
     with pytest.raises(InputError, match=r"^steps: unknown step 'friction'; the steps are"):
         lean.without("friction")
-    with pytest.raises(InputError, match=r"^root_stress: must be True, False or a contact\.compliance"
-                                          r"\.fe\.FEOptions, got str 'yes'"):
+    with pytest.raises(InputError, match=r"^root_stress: must be True, False or a "
+                                          r"contact\.compliance\.fe\.FEOptions, got str 'yes'"):
         lean.with_root_stress("yes")
     with pytest.raises(InputError, match=r"^fe_options: must be a contact\.compliance\.fe\."
                                           r"FEOptions or None, got int"):
