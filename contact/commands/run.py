@@ -644,7 +644,10 @@ def durability_lines(friction, standard=None) -> list[str]:
         lines.append(f"scuffing temperature of the oil {theta_s:.0f} degC (FZG load stage "
                      f"{friction.attrs.get('fzg_load_stage', float('nan')):g}); temperatures "
                      "and lambda_GF of the flanks, the edge contacts apart "
-                     "(docs/scuffing_micropitting.md)")
+                     "(docs/scuffing_micropitting.md); the verdict judges the LTCA's S_B, "
+                     "each torque's first"
+                     + (", and says where the standard's is below 1 (docs/verdicts.md)"
+                        if standard is not None else " (docs/verdicts.md)"))
     for name in ("scuffing_safety", "micropitting_safety"):
         comment = str(friction[name].attrs.get("comment", ""))
         if comment.startswith("NaN"):
