@@ -148,3 +148,16 @@ def test_the_judged_scuffing_safety_is_named():
     assert "S_B 0.9 at 300 N·m below 1 (the LTCA's: Blok's flash" in f.reason
     assert dict(v.unchecked)["scuffing_standard"].startswith(
         "no /rating/flash_temperature: no /rating group")
+
+
+def test_a_root_stress_not_computed_at_a_torque_is_said():
+    """A NaN root stress (the FE model could not place a torque's loads) is not passed
+    silently: an attention finding with the reason the step stored."""
+    lt = _ltca([50.0, 500.0], [[100.0, 90.0], [300.0, np.nan]])
+    lt["root_stress_max"].attrs["not_computed"] = (
+        "gear at 500 N m: not computed (NaN): 2.1 % of the load lies off its FE load grid.")
+    v = verdict(_tree({"/ltca": lt}))
+    (f,) = _found(v, "root_stress")
+    assert f.severity == "attention"
+    assert f.reason == ("root stress of the gear at 500 N·m not checked: not computed (NaN): "
+                        "2.1 % of the load lies off its FE load grid.")

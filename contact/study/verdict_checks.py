@@ -123,6 +123,26 @@ def root_stress_safety(root_stress_max: np.ndarray, rt: xr.Dataset) -> np.ndarra
         return fp / (root_stress_max * k_a * k_v)
 
 
+def _not_computed(rs: xr.DataArray, names: list[str], torques: np.ndarray,
+                  values: np.ndarray) -> list:
+    """An attention finding per member and torque whose root stress is NaN (not checked
+    there), with the reason the root-stress step stored (``not_computed``,
+    :func:`contact.ltca.root_stress.root_stress`)."""
+    from contact.study.verdicts import Finding
+
+    said = str(rs.attrs.get("not_computed", "")).splitlines()
+    out = []
+    for i, t in enumerate(torques):
+        for j, m in enumerate(names):
+            if np.isfinite(values[i, j]):
+                continue
+            why = next((line.split(": ", 1)[1] for line in said
+                        if line.startswith(f"{m} at {t:g} N m:")), "no reason recorded")
+            out.append(Finding("attention", "root_stress",
+                               f"root stress of the {m} at {_t(t)} not checked: {why}"))
+    return out
+
+
 def _root_stress(lt: xr.Dataset, rt: xr.Dataset | None) -> list:
     from contact.study.verdicts import Finding
 
@@ -130,7 +150,7 @@ def _root_stress(lt: xr.Dataset, rt: xr.Dataset | None) -> list:
     names = _member_names(rs)
     torques = rs["torque"].values
     values = np.asarray(rs.values, float)
-    out = []
+    out = _not_computed(rs, names, torques, values)
     if _iso_rating(rt) and np.array_equal(rt["torque"].values, torques):
         safety = root_stress_safety(values, rt)
         smin = float(rt["S_Fmin"])
