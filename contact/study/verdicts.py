@@ -51,6 +51,9 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   safety is below the minimum but whose static strength holds: a load of finite life, with
   the load cycles it may run (``permissible_cycles_pitting``/``_bending``, ISO 10300-2/-3
   cl. 8).
+* ``root_stress`` (fail/attention): the FE peak root stress against ISO 10300-3's σ_FP;
+  ``scuffing_standard`` (attention): the standard's S_B below 1 beside the judged one —
+  :mod:`contact.study.verdict_checks` (issue 72).
 
 **Duty cycle** (the ``/duty_cycle`` dataset of ``ltca duty-cycle``).
 
