@@ -493,6 +493,9 @@ class AnalysisChain:
         6336-20 (``"iso10300"``), or the rating of another method of the load-capacity
         registry by its name (:func:`contact.load_capacity.available_methods`);
         ``"scuffing_micropitting"``: the first alone (no rating, ``ltca run --no-rating``).
+    fe_options : contact.compliance.fe.FEOptions or None
+        The root-stress step's FE model (None: the default one, or with the FE compliance
+        the compliance's own; :meth:`with_root_stress` sets it).
 
     Raises
     ------
@@ -500,11 +503,21 @@ class AnalysisChain:
         An unknown name (the message lists the available ones), a value that is neither
         a name, a callable nor None, or None for ``utca`` or ``ltca``.
 
+    Notes
+    -----
+    Named configurations (after pvlib's ``ModelChain.with_pvwatts``; issue 72):
+    :meth:`analysis` (every step, ``ltca run``'s), :meth:`contact_only` (ease-off, UTCA,
+    LTCA), and on either :meth:`with_root_stress`, :meth:`with_mesh_interface`,
+    :meth:`with_geometry`, :meth:`with_efficiency`, :meth:`with_load_capacity`,
+    :meth:`without`, :meth:`with_steps`, each returning a new chain.
+
     Examples
     --------
     >>> from contact import AnalysisChain
     >>> AnalysisChain(root_stress=None).root_stress is None
     True
+    >>> AnalysisChain.contact_only().with_root_stress().describe()["root_stress"]
+    'fe'
     """
 
     geometry: StepChoice = "flanks"
