@@ -688,6 +688,10 @@ def resolve_chain(steps: AnalysisChain | Mapping[str, StepChoice] | None = None,
             raise InputError(f"steps: unknown step {unknown[0]!r}; the steps are "
                              f"{', '.join(STEP_ORDER)}")
         chain = AnalysisChain(**steps)
+    elif steps is AnalysisChain or getattr(steps, "__self__", None) is AnalysisChain:
+        name = getattr(steps, "__qualname__", "AnalysisChain")
+        raise InputError(f"steps: got {name} itself; call it: {name}() (a chain, e.g. "
+                         "AnalysisChain.analysis() or AnalysisChain.contact_only())")
     else:
         raise InputError("steps: must be a contact.AnalysisChain, a mapping of step name to "
                          f"a name, callable or None, or None; got {type(steps).__name__}")

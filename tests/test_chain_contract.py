@@ -190,3 +190,12 @@ def test_the_on_off_keywords_are_deprecated(switch, said):
                                                                      match="stop here"):
         run_analysis(None, [TORQUE], options=SMALL, **switch, steps=AnalysisChain.contact_only()
                      .with_steps(utca=_utca, ltca=stop))
+
+
+@pytest.mark.parametrize("given, name", [(AnalysisChain, "AnalysisChain"),
+                                         (AnalysisChain.contact_only,
+                                          "AnalysisChain.contact_only")])
+def test_a_chain_not_called_is_refused_naming_the_call(given, name):
+    """``steps=AnalysisChain.contact_only`` (the parentheses forgotten) or the class."""
+    with pytest.raises(InputError, match=rf"^steps: got {name} itself; call it: {name}\(\)"):
+        run_analysis(None, [TORQUE], options=SMALL, steps=given)
