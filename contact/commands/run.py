@@ -193,6 +193,21 @@ def ltca_options(args: argparse.Namespace, **defaults):
     return LTCAOptions(**kw)
 
 
+def _chain_of(args: argparse.Namespace, operating):
+    """The chain ``ltca run`` runs (:meth:`contact.AnalysisChain.analysis`): without the root
+    stress for ``--no-root-stress``, without the efficiency step where there is no pinion
+    speed (``operating`` None), and the load-capacity step's scuffing and micropitting
+    without the rating for ``--no-rating`` (/scuffing_micropitting, /rating,
+    /rating/flash_temperature otherwise; a bad [rating] table is refused before the
+    work)."""
+    from contact.chain import AnalysisChain
+
+    chain = AnalysisChain.analysis().with_root_stress(bool(args.root_stress))
+    if operating is None:
+        chain = chain.without("efficiency")
+    return chain if args.rating else chain.with_load_capacity("scuffing_micropitting")
+
+
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
@@ -219,14 +234,10 @@ def run(args: argparse.Namespace) -> int:
         flank=args.flank,
         options=opts,
         deviations=devs,
-        operating=False if operating is None else operating,
+        operating=operating,
         # a bar on a terminal, plain lines in a log (the LTCA and a first FE build)
         progress=args.progress,
-        root_stress=args.root_stress,
-        # the chain's load-capacity step (/scuffing_micropitting, /rating,
-        # /rating/flash_temperature; a bad [rating] table is refused before the work);
-        # --no-rating keeps scuffing and micropitting, without the rating
-        steps=None if args.rating else {"load_capacity": "scuffing_micropitting"},
+        steps=_chain_of(args, operating),
     )
     rating_why = ("ISO 10300 rating not computed (--no-rating)" if not args.rating
                   else str(tree.attrs.get("load_capacity_not_run", "")))
@@ -633,7 +644,10 @@ def durability_lines(friction, standard=None) -> list[str]:
         lines.append(f"scuffing temperature of the oil {theta_s:.0f} degC (FZG load stage "
                      f"{friction.attrs.get('fzg_load_stage', float('nan')):g}); temperatures "
                      "and lambda_GF of the flanks, the edge contacts apart "
-                     "(docs/scuffing_micropitting.md)")
+                     "(docs/scuffing_micropitting.md); the verdict judges the LTCA's S_B, "
+                     "each torque's first"
+                     + (", and says where the standard's is below 1 (docs/verdicts.md)"
+                        if standard is not None else " (docs/verdicts.md)"))
     for name in ("scuffing_safety", "micropitting_safety"):
         comment = str(friction[name].attrs.get("comment", ""))
         if comment.startswith("NaN"):

@@ -405,6 +405,7 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
     """
     import time
 
+    from contact.chain import AnalysisChain
     from contact.optimize.variables import case_at
     from contact.pipeline import run_analysis
     from contact.study.summary import point_summary
@@ -421,10 +422,9 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
         for im, mis in enumerate(problem.misalignments):
             c = dataclasses.replace(case, misalignment=mis)
             tree = run_analysis(c, list(problem.torque), flank=problem.flank,
-                                options=problem.options, deviations=False, geometry=False,
+                                options=problem.options, deviations=False,
                                 # the objective needs no efficiency, root stress or rating
-                                operating=False, root_stress=False,
-                                steps={"load_capacity": None})
+                                steps=AnalysisChain.contact_only().with_mesh_interface())
             s = point_summary(tree, c)
             for k in METRICS:
                 metrics[k][im] = s[k]

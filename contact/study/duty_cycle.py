@@ -145,6 +145,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     geometry, no mesh interface) and :func:`friction.efficiency.efficiency_analysis` at its
     speed and oil temperature.
     """
+    from contact.chain import AnalysisChain
     from contact.ltca.summary import edge_load_share
     from contact.pipeline import operating_conditions, run_analysis
     from contact.study.summary import plausibility_bits
@@ -160,9 +161,9 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     try:
         mis = duty.misalignment(index, case.misalignment)
         tree = run_analysis(dataclasses.replace(case, misalignment=mis), [torque],
-                            flank=shared.flank, options=shared.options, geometry=False,
-                            theoretical=False, operating=False, mesh_interface=False,
-                            root_stress=shared.root_stress, steps={"load_capacity": None})
+                            flank=shared.flank, options=shared.options, theoretical=False,
+                            steps=AnalysisChain.contact_only().with_root_stress(
+                                shared.root_stress))
         ltca = tree["/ltca"].to_dataset()
         temp = None if duty.temperature is None else float(duty.temperature[index])
         op = operating_conditions(case, pinion_speed=float(duty.pinion_speed[index]),

@@ -51,6 +51,9 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   safety is below the minimum but whose static strength holds: a load of finite life, with
   the load cycles it may run (``permissible_cycles_pitting``/``_bending``, ISO 10300-2/-3
   cl. 8).
+* ``root_stress`` (fail/attention): the FE peak root stress against ISO 10300-3's σ_FP;
+  ``scuffing_standard`` (attention): the standard's S_B below 1 beside the judged one —
+  :mod:`contact.study.verdict_checks` (issue 72).
 
 **Duty cycle** (the ``/duty_cycle`` dataset of ``ltca duty-cycle``).
 
@@ -386,9 +389,12 @@ def _safeties(fr: xr.Dataset) -> list[Finding]:
             continue
         for t, s in zip(fr["torque"].values, fr[name].values, strict=True):
             if np.isfinite(s) and s < least:
+                judged = (" (the LTCA's: Blok's flash temperature on its loaded contact, "
+                          "ISO/TS 6336-20's bulk and scuffing temperatures)"
+                          if check == "scuffing" else "")
                 out.append(Finding("fail", check,
                                    f"{check} safety {symbol} {s:.3g} at {_t(t)} below "
-                                   f"{least:g}"))
+                                   f"{least:g}{judged}"))
     return out
 
 
@@ -492,7 +498,10 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
     if rt is not None:
         checks += ["rating"]
         findings += _rating(rt)
-    return findings, checks
+    from contact.study.verdict_checks import analysis_checks  # root stress, scuffing (#72)
+
+    more, made = analysis_checks(tree, lt, rt, sm)
+    return findings + more, checks + made
 
 
 # --------------------------------------------------------------------------- duty cycle
@@ -650,7 +659,7 @@ _KINDS: Mapping[str, Callable[..., tuple[list[Finding], list[str]]]] = {
 CHECKS: Mapping[str, tuple[str, ...]] = {
     "analysis": ("implausible", "flank_pressure", "edge_contact", "plastic_edges",
                  "certification", "friction_extrapolated", "scuffing", "micropitting",
-                 "rating"),
+                 "rating", "root_stress", "scuffing_standard"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
                    "certification", "bending", "illustrative"),
     "V-H check": ("degenerate", "target", "map"),
@@ -712,7 +721,13 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
     group = {"friction_extrapolated": "friction", "scuffing": "scuffing_micropitting",
              "micropitting": "scuffing_micropitting", "rating": "rating"}
     out = []
+    from contact.study.verdict_checks import CHECKS as MORE
+    from contact.study.verdict_checks import unchecked_reason
+
     for c in missing:
+        if c in MORE:  # root stress, the standard's scuffing (issue 72)
+            out.append((c, unchecked_reason(result, c)))
+            continue
         g = group.get(c, "ltca")
         why = (_ANALYSIS_GROUPS[g] if _group(result, g) is None
                else f"/{g} lacks the variables it reads")

@@ -57,6 +57,7 @@ from contact.compliance.fe.cache import (
     BlockCheckpoint,
     cache_key,
     cache_path,
+    not_written,
     read_cache_entry,
     write_cache_entry,
 )
@@ -709,7 +710,10 @@ def influence_coefficients(case, member: str, flank: str = "drive",
         As :func:`build_influence_model`; LTCAError also if the built coefficients hold
         non-finite values (not cached). A cache entry that is unreadable, foreign,
         corrupt or not finite is never used: it is set aside, one warning logged, and the
-        coefficients rebuilt (:func:`contact.compliance.fe.cache.read_cache_entry`).
+        coefficients rebuilt (:func:`contact.compliance.fe.cache.read_cache_entry`). A
+        cache that cannot be written (a read-only or full file system) is no error: the
+        built coefficients are returned with the attribute ``cache_not_written`` (why;
+        :func:`contact.compliance.fe.cache.not_written`) and one warning logged.
 
     Notes
     -----
@@ -768,9 +772,13 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     finally:
         model.factor.close()
     if cache:
-        ds = write_cache_entry(ds, path, key)
-        checkpoint.clear()
-        log.info("%s %s influence coefficients cached in %s", case.name, member, path)
+        try:
+            ds = write_cache_entry(ds, path, key)
+        except OSError as exc:  # read-only or full: used from memory, said (issue 72)
+            ds = not_written(ds, path, exc)
+        else:
+            checkpoint.clear()
+            log.info("%s %s influence coefficients cached in %s", case.name, member, path)
     progress_line(progress, f"FE {member} influence coefficients built in "
                             f"{time.perf_counter() - t0:.0f} s")
     return ds
