@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+import os
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -347,7 +348,9 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
             return
         state.groups["/rating"] = rating
         if rating.attrs.get("rating_method") == "iso10300":
-            flash = scuffing_flash_temperature(rating, state.groups.get("/friction"))
+            flash = scuffing_flash_temperature(
+                rating, state.groups.get("/friction"),
+                lubricant=None if state.operating is None else state.operating.lubricant)
             if flash is not None:  # stored beside the rating it is computed on
                 state.groups["/rating/flash_temperature"] = flash
 
@@ -386,7 +389,8 @@ def load_capacity_without_rating(state: ChainState) -> None:
         lubricant=None if state.operating is None else state.operating.lubricant)
 
 
-def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
+def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None,
+                               lubricant: str | os.PathLike[str] | None = None
                                ) -> xr.Dataset | None:
     """The standard's flash-temperature method on the virtual cylindrical gears of a
     ``/rating`` dataset and its hypoid lengthwise-sliding variant, with the spread of S_B,
@@ -401,6 +405,11 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
     friction : xarray.Dataset or None
         The ``/friction`` group (its attributes ``lubricant``, ``inlet_temperature_degC``,
         ``roughness_rq_um``); None: no method.
+    lubricant : str or path-like, optional
+        The oil the efficiency step ran with (:attr:`friction.OperatingConditions.lubricant`:
+        a bundled name or the oil file); default the ``/friction`` group's ``lubricant``
+        attribute, which is the oil's *name* and finds a bundled oil only — an oil file of
+        the user's is carried by its path, never looked up by its name.
 
     Returns
     -------
@@ -414,10 +423,11 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
 
     try:
         return iso_flash_temperature_variants(
-            rating, lubricant=str(friction.attrs["lubricant"]),
+            rating, lubricant=(str(friction.attrs["lubricant"]) if lubricant is None
+                               else lubricant),
             temperature=float(friction.attrs["inlet_temperature_degC"]),
             roughness=float(friction.attrs["roughness_rq_um"]))
-    except (InputError, KeyError) as exc:
+    except (InputError, ModelUnavailableError, KeyError) as exc:
         log.info("the standard's flash temperature method not applied: %s", exc)
         return None
 
