@@ -128,7 +128,22 @@ DESIGN = (
     ("k_t", "stage", {"2.0.0": "circular_thickness_factor"}, "none"),
     ("de2", "gear", {"1.7": "outer_pitch_diameter", "2.0.0": "outer_pitch_diameter"}, "mm"),
     ("b2", "gear", {"1.7": "face_width", "2.0.0": "face_width"}, "mm"),
+    ("theta_a2", "gear", {"2.0.0": "addendum_angle"}, "deg"),
+    ("theta_f2", "gear", {"2.0.0": "dedendum_angle"}, "deg"),
 )
+#: design.backlash (its kind) → where its value goes: (component, attribute per version)
+BACKLASH = {
+    "j_en": ("stage", {"2.0.0": "outer_normal_backlash"}),
+    "j_mn": ("stage", {"2.0.0": "mean_normal_backlash"}),
+    "j_et2": ("gear", {"2.0.0": "outer_transverse_backlash"}),
+}
+#: the basic design's fields an import needs: (design key, component, attribute)
+BASIC_NEEDS = (("Sigma", "stage", "shaft_angle"), ("a", "stage", "hypoid_offset"),
+               ("de2", "gear", "outer_pitch_diameter"), ("b2", "gear", "face_width"),
+               ("beta_m", "spiral", "mean_spiral_angle"), ("rc0", "stage", "cutter_radius"),
+               ("f_alim", "stage", "influence_factor_of_limit_pressure_angle"),
+               ("theta_a2", "gear", "addendum_angle"), ("theta_f2", "gear", "dedendum_angle"),
+               ("backlash_value", "gear", "outer_transverse_backlash"))
 #: custom attributes of the stage for what the case holds beyond REXS
 STAGE_CUSTOM = ("custom_cutting_method", "custom_drive_flank", "custom_case_name",
                 "custom_source", "custom_synthesised", "custom_ltca_tables",
@@ -238,6 +253,10 @@ def case_to_model(doc: dict[str, Any], version: str = "2.0.0") -> Model:
                 log.info("design.%s = %g: outside the REXS %s range %s of %s, not written "
                          "as that attribute", key, design[key], version, spec.range_text(),
                          spec.id)
+    kind = BACKLASH.get(design.get("backlash", ""))
+    if kind is not None and kind[0] == "stage" and version in kind[1] \
+            and "backlash_value" in design:
+        stage.add(kind[1][version], design["backlash_value"], "mm")
     if "method" in design and db.has("bevel_stage", "calculation_method_iso_23509_2025"):
         stage.add("calculation_method_iso_23509_2025", str(design["method"]), "none", "enum")
     model.components.append(stage)
@@ -279,6 +298,17 @@ def _member(model: Model, doc: dict, name: str, db, design: dict, rel_id: int) -
         gear.add("mean_spiral_angle", design["beta_m"], "deg")
     if name == "gear" and "de2" in design:
         gear.add("outer_pitch_diameter", design["de2"], "mm")
+    if db.has("bevel_gear", "addendum_angle"):  # REXS 2.0.0: the blank's θ_a, θ_f
+        b = m["blank"]
+        own = name == "gear" and "theta_a2" in design and "theta_f2" in design
+        gear.add("addendum_angle", design["theta_a2"] if own
+                 else b["face_angle"] - b["pitch_angle"], "deg")
+        gear.add("dedendum_angle", design["theta_f2"] if own
+                 else b["pitch_angle"] - b["root_angle"], "deg")
+    kind = BACKLASH.get(design.get("backlash", ""))
+    if name == "gear" and kind is not None and kind[0] == "gear" \
+            and db.version in kind[1] and "backlash_value" in design:
+        gear.add(kind[1][db.version], design["backlash_value"], "mm")
     model.components.append(gear)
     data = Component(DATA_IDS[name], "bevel_stage_gear_data", f"{name} stage data")
     data.add("is_driving_gear", name == "pinion", "none", "boolean")
@@ -346,6 +376,8 @@ class _Reader:
             if default is ...:
                 raise InputError(f"REXS {comp.where()}: missing attribute {attr}, needed "
                                  f"for the case field {field or attr}")
+            if field is not None:
+                self.origin.setdefault(field, f"{comp.where()}, attribute {attr} (not given)")
             return default
         if field is not None:
             self.origin[field] = f"{comp.where()}, attribute {attr}"
@@ -665,13 +697,16 @@ def model_to_basic_dict(model: Model) -> dict[str, Any]:
     if z0 is not None:
         design["z0"] = z0
     design["hand"] = _hand(rd, pinion)
-    for key, comp, attr in (("Sigma", stage, "shaft_angle"), ("a", stage, "hypoid_offset"),
-                            ("de2", gear, "outer_pitch_diameter"), ("b2", gear, "face_width"),
-                            ("beta_m", spiral, "mean_spiral_angle"),
-                            ("rc0", stage, "cutter_radius")):
+    for kind, (where, names) in BACKLASH.items():
+        comp = stage if where == "stage" else gear
+        v = rd.get(comp, names.get(ver, ""), "float", default=None)
+        if v is not None:
+            design["backlash"], design["backlash_value"] = kind, v
+    parts = {"stage": stage, "gear": gear, "spiral": spiral}
+    for key, where, attr in BASIC_NEEDS:
         if key not in design:
-            raise InputError(f"REXS {comp.where()}: missing attribute {attr}, needed for the "
-                             f"basic design's design.{key}")
+            raise InputError(f"REXS {parts[where].where()}: missing attribute {attr}, needed "
+                             f"for the basic design's design.{key}")
     name = rd.get(stage, "custom_case_name", "str", default=stage.name or "rexs")
     source = rd.get(stage, "custom_source", "str", default=(
         f"Imported from REXS {ver} ({model.application_id} {model.application_version})"))
