@@ -356,3 +356,42 @@ def test_round_trip_gives_the_same_tca(tmp_path, name):
         x, y = np.asarray(getattr(a, field)), np.asarray(getattr(b, field))
         np.testing.assert_allclose(y, x, rtol=RTOL, atol=1e-15)
     assert dataclasses.fields(a)  # a TCAResult
+
+
+# ------------------------------------------------------------------------- results
+@pytest.fixture(scope="module")
+def rating_file(tmp_path_factory):
+    """The /rating group of the default case (``ltca rate -o``: analytic, seconds)."""
+    path = tmp_path_factory.mktemp("rating") / "rating.nc"
+    assert main(["rate", "kolivand2009_fm_11x41_reference", "-o", str(path), "-q"]) == 0
+    return path
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_the_rating_goes_into_the_iso_10300_slots(tmp_path, rating_file, version):
+    """Every ISO 10300 value written equals the rating's (the same float), per load case
+    (torque) and member; the file passes the checks; the case comes back unchanged."""
+    import xarray as xr
+
+    case = resolve_case("kolivand2009_fm_11x41_reference")
+    path = tmp_path / "rated.rexsj"
+    model = export_rexs(case, path, version=version, analysis=rating_file)
+    assert validate_file(path) == []
+    ds = xr.open_datatree(rating_file)["rating"].to_dataset()
+    cases = model.load_spectrum.load_cases
+    assert [lc.components[1].value("torque") for lc in cases] == list(ds["torque"].values)
+    for i, lc in enumerate(cases):
+        data = {c.id: c for c in lc.components}
+        for k, cid in enumerate((4, 5)):
+            assert data[cid].value("safety_factor_pitting_iso_10300_2014") == \
+                float(ds["S_H"].isel(torque=i, member=k))
+            assert data[cid].value("tooth_root_stress_iso_10300_2014") == \
+                float(ds["sigma_F"].isel(torque=i, member=k))
+        assert data[1].value("dynamic_factor_iso_10300_2014") == float(ds["K_v"].isel(torque=i))
+    assert model.component(1).value("mid_zone_factor_pitting_iso_10300_2014") == \
+        float(ds["Z_MB"])
+    assert import_rexs(path).case == case
+    with pytest.raises(InputError, match="is an analysis of case "
+                                         "'kolivand2009_fm_11x41_reference'"):
+        export_rexs(resolve_case("kolivand2009_fh_12x41"), tmp_path / "x.rexs",
+                    analysis=rating_file)
