@@ -13,7 +13,7 @@ export_rexs          write a case (and analysis results) as a REXS file
 import_rexs          read a REXS file: a Case, or a basic design mapping (blank data only)
 read_rexs            a REXS file as a validated Model
 write_rexs           write a Model, validated, atomically
-validate_file        the problems of a REXS file (empty: valid)
+validate_file        the problems of a REXS file (empty: valid); ``validate_rexs`` the same
 VERSIONS             the REXS versions supported
 """
 
@@ -27,5 +27,8 @@ from contact.exchange.rexs.api import (
 from contact.exchange.rexs.database import VERSIONS
 from contact.exchange.rexs.validate import RexsValidationError, validate_file
 
+#: :func:`validate_file` under the name ``contact`` exports it by
+validate_rexs = validate_file
+
 __all__ = ["VERSIONS", "ImportedStage", "RexsValidationError", "export_rexs", "import_rexs",
-           "read_rexs", "validate_file", "write_rexs"]
+           "read_rexs", "validate_file", "validate_rexs", "write_rexs"]

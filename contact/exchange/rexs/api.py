@@ -79,13 +79,16 @@ def read_rexs(path: str | os.PathLike[str]) -> Model:
     return check_text(text, fmt, what=f"REXS file {os.fspath(path)!r}")
 
 
-def export_rexs(case: Case, path: str | os.PathLike[str], *, version: str = "2.0.0",
+def export_rexs(case: Case | str | os.PathLike[str] | None, path: str | os.PathLike[str], *,
+                version: str = "2.0.0",
                 analysis: str | os.PathLike[str] | None = None) -> Model:
     """Write a case's bevel stage (and an analysis' results) as a REXS file.
 
     Parameters
     ----------
-    case : geometry.Case
+    case : geometry.Case, str, os.PathLike or None
+        A case, a case file's path or a bundled case's name (None: the default case;
+        :func:`contact.resolve_case`).
     path : path-like
         ``*.rexs`` (XML) or ``*.rexsj`` (JSON).
     version : {"1.7", "2.0.0"}
@@ -102,13 +105,18 @@ def export_rexs(case: Case, path: str | os.PathLike[str], *, version: str = "2.0
     Raises
     ------
     InputError
-        Unsupported version, wrong suffix, an analysis file of another case.
+        Unknown case (the resolver's message), unsupported version, wrong suffix, an
+        analysis file of another case.
     RexsValidationError
         The model fails a check (a bug: reported, nothing written).
 
     Source: FVA REXS attribute databases 1.7 and 2.0.0 (data/README.md); mapping in
     docs/exchange.md.
     """
+    from contact.catalogue import resolve_case
+
+    case = resolve_case(case)
+    file_format(path)  # the suffix refused before any work
     doc = tomllib.loads(case.to_toml())
     model = case_to_model(doc, version)
     if analysis is not None:
@@ -154,6 +162,7 @@ def import_rexs(path: str | os.PathLike[str]) -> ImportedStage:
     Returns
     -------
     ImportedStage
+        ``.case`` (a Case) or ``.basic`` (a basic design mapping), ``.to_toml()`` its file.
 
     Raises
     ------

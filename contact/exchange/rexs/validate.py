@@ -267,6 +267,16 @@ def validate_file(path: str | Path) -> list[str]:
     """The problems of a ``.rexs`` / ``.rexsj`` file (empty: valid against the file schema
     and the attribute database of its version).
 
+    Parameters
+    ----------
+    path : path-like
+        ``*.rexs`` (XML) or ``*.rexsj`` (JSON).
+
+    Returns
+    -------
+    list of str
+        One sentence per problem, naming the component type, id and attribute.
+
     Raises
     ------
     InputError
