@@ -287,6 +287,11 @@ def _member(model: Model, doc: dict, name: str, db, design: dict, rel_id: int) -
         _put(gear, attr, m["blank"][key], unit, vt, db)
     gear.add("spiral_angle_pitch_direction", hand, "none", "enum")
     gear.add("custom_process", m["process"], "none", "string")
+    # completing (both flanks cut in one setting: the same machine settings) or single
+    # side; the case says it by its settings, REXS not at all: informational, not read
+    same = m["machine"]["concave"] == m["machine"]["convex"]
+    gear.add("custom_cutting_cycle", "completing" if same else "single_side", "none",
+             "string")
     if "material" in m:
         gear.add("custom_material", m["material"], "none", "string")
     if name == "pinion":
@@ -603,6 +608,7 @@ def _used(rd: _Reader) -> set[str]:
     out |= {f"bevel_stage.{a}" for a in (*STAGE_CUSTOM, "shaft_angle", "hypoid_offset",
                                          "number_of_blade_groups", "temperature_lubricant")}
     out |= {"bevel_gear.spiral_angle_pitch_direction", "bevel_gear.custom_process",
+            "bevel_gear.custom_cutting_cycle",
             "bevel_gear.custom_material", "bevel_gear.rotational_speed",
             "bevel_gear_tool.number_of_blade_groups_bevel_gear_tool",
             "bevel_gear_tool.custom_cutter_radius", "bevel_gear_flank.custom_flank_curvature",
