@@ -379,7 +379,8 @@ def test_the_rating_goes_into_the_iso_10300_slots(tmp_path, rating_file, version
     assert validate_file(path) == []
     ds = xr.open_datatree(rating_file)["rating"].to_dataset()
     cases = model.load_spectrum.load_cases
-    assert [lc.components[1].value("torque") for lc in cases] == list(ds["torque"].values)
+    assert [next(c for c in lc.components if c.id == 4).value("torque") for lc in cases] \
+        == list(ds["torque"].values)
     for i, lc in enumerate(cases):
         data = {c.id: c for c in lc.components}
         for k, cid in enumerate((4, 5)):
@@ -395,3 +396,64 @@ def test_the_rating_goes_into_the_iso_10300_slots(tmp_path, rating_file, version
                                          "'kolivand2009_fm_11x41_reference'"):
         export_rexs(resolve_case("kolivand2009_fh_12x41"), tmp_path / "x.rexs",
                     analysis=rating_file)
+
+
+def _synthetic_analysis(path, case_name):
+    """A small analysis file with /ltca and /easeoff of known values: two roll positions,
+    one pair of two segments; a 2 x 2 ease-off grid with one node masked."""
+    import xarray as xr
+
+    force = np.array([[[[300.0, 100.0]], [[200.0, 200.0]]]])          # (torque, roll, pair, seg)
+    arm = np.array([[[80.0, 100.0]], [[90.0, 90.0]]])                  # (roll, pair, seg) mm
+    theta = np.array([[50.0, -1.0]])                                   # urad; second: no stiffness
+    ltca = xr.Dataset(
+        {"force": (("torque", "roll", "pair", "segment"), force),
+         "moment_arm": (("roll", "pair", "segment"), arm),
+         "loaded_rotation": (("torque", "roll"), theta),
+         "found": (("torque", "roll"), np.array([[1, 1]]))},
+        coords={"torque": [250.0], "roll": [0.1, 0.2]}, attrs={"case": case_name})
+    pos = np.arange(12, dtype=float).reshape(2, 2, 3) + 50.0
+    nrm = np.tile([0.0, 0.6, 0.8], (2, 2, 1))
+    easeoff = xr.Dataset(
+        {"ease_off": (("u", "v"), np.array([[1.5, 2.5], [3.5, 4.5]])),
+         "gear_position": (("u", "v", "xyz"), pos), "gear_normal": (("u", "v", "xyz"), nrm),
+         "mask": (("u", "v"), np.array([[1, 1], [0, 1]]))},
+        attrs={"case": case_name, "gear_flank": "convex"})
+    xr.DataTree.from_dict({"/ltca": ltca, "/easeoff": easeoff}).to_netcdf(path)
+    return force, arm, theta
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+@pytest.mark.parametrize("suffix", SUFFIXES)
+def test_mesh_stiffness_and_ease_off_go_into_their_slots(tmp_path, version, suffix):
+    """k = ΣF / (Θ r_m), r_m = ΣFa/ΣF, per mesh position (hand-computed: 400 N over 50 urad
+    at r_m = 85 mm gives 400 / (50e-6 * 85) = 94117.6 N/mm; the roll with Θ <= 0 is left
+    out), with the roll positions in deg; the ease-off's unmasked nodes as a point list on the
+    gear's convex flank with their amounts [mm] and normals; the file passes the checks and
+    reads back to the same numbers; the case's load cases are kept."""
+    case = resolve_case("kolivand2009_fm_11x41")
+    nc = tmp_path / "analysis.nc"
+    _synthetic_analysis(nc, case.name)
+    path = tmp_path / f"stage{suffix}"
+    export_rexs(case, path, version=version, analysis=nc)
+    assert validate_file(path) == []
+    model = read_rexs(path)
+    lc = next(lc for lc in model.load_spectrum.load_cases
+              if lc.components[0].value("torque") == 250.0)
+    comps = {c.id: c for c in lc.components}
+    k = comps[1].value("meshing_stiffness_characteristic")
+    assert k == pytest.approx([400.0 / (50e-6 * 85.0)], rel=1e-12)
+    assert comps[4].value("rotational_meshing_position") == pytest.approx([np.degrees(0.1)])
+    points = model.of_type("point_list")[0]
+    data = model.of_type("gear_flank_data_set")[0]
+    assert data.value("topographical_deviation_amounts_point_list") == \
+        pytest.approx([1.5e-3, 2.5e-3, 4.5e-3])
+    assert data.value("topographical_deviation_normals") == [[0.0, 0.6, 0.8]] * 3
+    coords = (points.value("point_coordinates") if version == "1.7" else
+              [list(r) for r in zip(*(points.value(f"point_coordinates_{a}_coord")
+                                      for a in "uvw"), strict=True)])
+    assert coords == [[50.0, 51.0, 52.0], [53.0, 54.0, 55.0], [59.0, 60.0, 61.0]]
+    flank = next(r for r in model.relations_of("assembly") if r.component("part") == points.id)
+    assert model.component(flank.component("assembly")).value("custom_flank_curvature") == \
+        "convex"
+    assert import_rexs(path).case == case

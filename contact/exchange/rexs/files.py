@@ -24,6 +24,7 @@ from typing import Any
 from contact.exchange.rexs.database import load_database
 from contact.exchange.rexs.model import (
     ARRAY_TYPES,
+    MATRIX_TYPES,
     Attribute,
     Component,
     LoadCase,
@@ -67,6 +68,8 @@ def _text(value: Any, value_type: str) -> str:
 
 def _check_finite(value: Any, where: str) -> None:
     values = value if isinstance(value, (list, tuple)) else [value]
+    if values and isinstance(values[0], (list, tuple)):  # a matrix
+        values = [v for row in values for v in row]
     for v in values:
         if isinstance(v, float) and not math.isfinite(v):
             raise InputError(f"{where}: must be finite, got {v!r}")
@@ -76,7 +79,13 @@ def _check_finite(value: Any, where: str) -> None:
 def _xml_attribute(parent: ET.Element, a: Attribute, where: str) -> None:
     _check_finite(a.value, f"{where} attribute {a.id}")
     el = ET.SubElement(parent, "attribute", {"id": a.id, "unit": a.unit})
-    if a.value_type in ARRAY_TYPES:
+    if a.value_type in MATRIX_TYPES:
+        mat = ET.SubElement(el, "matrix")
+        for row in a.value:
+            r = ET.SubElement(mat, "r")
+            for v in row:
+                ET.SubElement(r, "c").text = _text(v, "floating_point")
+    elif a.value_type in ARRAY_TYPES:
         arr = ET.SubElement(el, "array")
         scalar = a.value_type.removesuffix("_array")
         for v in a.value:
@@ -134,8 +143,15 @@ def _xml_value(el: ET.Element, value_type: str | None, where: str) -> tuple[Any,
         vt = value_type or "floating_point_array"
         scalar = vt.removesuffix("_array")
         return [_scalar(t, scalar, where) for t in items], vt
-    if el.find("matrix") is not None or el.find("array_of_arrays") is not None:
-        raise InputError(f"{where}: matrices are not read by this importer")
+    mat = el.find("matrix")
+    if mat is not None:
+        vt = value_type or "floating_point_matrix"
+        if vt not in MATRIX_TYPES:
+            raise InputError(f"{where}: a matrix where the database has {vt}")
+        return [[_scalar(c.text or "", "floating_point", where) for c in r.findall("c")]
+                for r in mat.findall("r")], vt
+    if el.find("array_of_arrays") is not None:
+        raise InputError(f"{where}: arrays of arrays are not read by this importer")
     text = (el.text or "").strip()
     vt = value_type or "string"
     return _scalar(text, vt, where), vt
@@ -230,7 +246,8 @@ def _json_attributes(comp: Component, where: str) -> list[dict[str, Any]]:
     out = []
     for a in comp.attributes:
         _check_finite(a.value, f"{where} attribute {a.id}")
-        value = list(a.value) if a.value_type in ARRAY_TYPES else a.value
+        value = ([list(r) for r in a.value] if a.value_type in MATRIX_TYPES
+                 else list(a.value) if a.value_type in ARRAY_TYPES else a.value)
         out.append({"id": a.id, "unit": a.unit, a.value_type: value})
     return out
 

@@ -25,6 +25,7 @@ SCALAR_TYPES = ("floating_point", "integer", "boolean", "string", "enum",
                 "reference_component", "date_time", "file_reference")
 ARRAY_TYPES = ("floating_point_array", "integer_array", "string_array", "boolean_array",
                "enum_array")
+MATRIX_TYPES = ("floating_point_matrix",)
 
 
 @dataclass
