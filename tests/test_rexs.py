@@ -245,8 +245,9 @@ def test_the_writer_refuses_an_invalid_model_and_writes_nothing(tmp_path):
 
 
 def test_a_case_field_refused_by_the_case_check_is_named_by_its_rexs_attribute(tmp_path):
-    """A blade groups count FH needs but the pinion's tools lack: the case validation's
-    refusal (pinion.cutter.blade_groups) is reported on the REXS attribute it came from."""
+    """A blade groups count FH needs but the pinion's tools and the stage lack: the case
+    validation's refusal (pinion.cutter.blade_groups) is reported on the REXS attribute it
+    came from."""
     case = resolve_case("kolivand2009_fh_12x41")
     model = case_to_model(_doc(case), "2.0.0")
     for cid in (13, 14):
@@ -254,6 +255,10 @@ def test_a_case_field_refused_by_the_case_check_is_named_by_its_rexs_attribute(t
         tool.attributes = [a for a in tool.attributes
                            if a.id != "number_of_blade_groups_bevel_gear_tool"]
     path = tmp_path / "fh.rexs"
+    write_rexs(model, path)  # the tools without z0 take the stage's (REXS's one z0)
+    assert import_rexs(path).case.pinion.blade_groups == 13
+    stage = model.component(1)
+    stage.attributes = [a for a in stage.attributes if a.id != "number_of_blade_groups"]
     write_rexs(model, path)
     with pytest.raises(InputError, match=r"REXS bevel_gear_tool id 1[34], attribute "
                                          r"number_of_blade_groups_bevel_gear_tool \(not "

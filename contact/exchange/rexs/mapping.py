@@ -472,7 +472,8 @@ def _hand(rd: _Reader, gear: Component) -> str:
     return hand
 
 
-def _member_dict(rd: _Reader, gear: Component, name: str, hand: str) -> tuple[dict, int, float]:
+def _member_dict(rd: _Reader, gear: Component, name: str, hand: str,
+                 stage_z0: int = 0) -> tuple[dict, int, float]:
     blank = {key: rd.get(gear, attr, "int" if vt == "integer" else "float",
                          f"{name}.blank.{key}", default=(... if key in (
                              "teeth", "face_width", "outer_cone_distance", "pitch_angle",
@@ -495,7 +496,7 @@ def _member_dict(rd: _Reader, gear: Component, name: str, hand: str) -> tuple[di
                 blade[key] = v
         cutter[flank] = blade
         z0s.add(rd.get(tool, "number_of_blade_groups_bevel_gear_tool", "int",
-                       f"{name}.cutter.blade_groups", default=0))
+                       f"{name}.cutter.blade_groups", default=stage_z0))
         radii.add(rd.get(tool, "custom_cutter_radius", "float",
                          f"{name}.cutter.cutter_radius", default=0.0))
         ms = {}
@@ -557,10 +558,11 @@ def model_to_case_dict(model: Model) -> tuple[dict[str, Any], dict[str, str]]:
     stage, pinion, gear = _stage(model)
     hands = {"pinion": _hand(rd, pinion), "gear": _hand(rd, gear)}
     members, z0 = {}, {}
-    for name, comp in (("pinion", pinion), ("gear", gear)):
-        members[name], z0[name], _rc = _member_dict(rd, comp, name, hands[name])
-    method = rd.get(stage, "custom_cutting_method", "str", "pair.method", default=None)
+    # a tool without its own blade groups takes the stage's (z0 ≥ 1: face hobbing)
     stage_z0 = rd.get(stage, "number_of_blade_groups", "int", default=0)
+    for name, comp in (("pinion", pinion), ("gear", gear)):
+        members[name], z0[name], _rc = _member_dict(rd, comp, name, hands[name], stage_z0)
+    method = rd.get(stage, "custom_cutting_method", "str", "pair.method", default=None)
     if stage_z0 and stage_z0 != z0["gear"]:
         raise InputError(f"REXS {stage.where()}, attribute number_of_blade_groups: "
                          f"{stage_z0} disagrees with the gear's tools ({z0['gear']})")
