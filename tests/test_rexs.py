@@ -462,3 +462,26 @@ def test_mesh_stiffness_and_ease_off_go_into_their_slots(tmp_path, version, suff
     assert model.component(flank.component("assembly")).value("custom_flank_curvature") == \
         "convex"
     assert import_rexs(path).case == case
+
+
+@pytest.mark.slow
+def test_blank_data_only_synthesize_to_the_bundled_case(tmp_path):
+    """REXS blank data only → basic design file → ltca synthesize (no development; ~30 s)
+    gives the bundled case's blanks (to the last bit: the same ISO 23509 inputs) and gear
+    settings within 1e-9 relative."""
+    case = resolve_case("kolivand2009_fm_11x41")
+    model = case_to_model(_doc(case), "2.0.0")
+    model.components = [c for c in model.components
+                        if c.type in ("bevel_stage", "bevel_gear", "bevel_stage_gear_data")]
+    model.relations = [r for r in model.relations if r.type in ("stage", "stage_gear_data")]
+    write_rexs(model, tmp_path / "blank.rexs")
+    basic, out = tmp_path / "basic.toml", tmp_path / "case.toml"
+    assert main(["import-rexs", str(tmp_path / "blank.rexs"), "-o", str(basic)]) == 0
+    assert main(["synthesize", str(basic), "--no-development", "-o", str(out), "-q"]) == 0
+    from geometry.case import load_case
+
+    got = _doc(load_case(out))
+    want = _doc(case)
+    for m in ("pinion", "gear"):
+        _close(want[m]["blank"], got[m]["blank"], f"{m}.blank")
+    _close(want["gear"]["machine"], got["gear"]["machine"], "gear.machine")
