@@ -420,7 +420,11 @@ def _stage(model: Model) -> tuple[Component, Component, Component]:
     if len(rel) != 1:
         raise InputError(f"REXS {stage.where()}: needs exactly one 'stage' relation naming "
                          f"its gear_1 and gear_2, found {len(rel)}")
-    g1, g2 = (model.component(rel[0].component(r) or -1) for r in ("gear_1", "gear_2"))
+    for role in ("gear_1", "gear_2"):
+        if rel[0].component(role) is None:
+            raise InputError(f"REXS relation stage id {rel[0].id}: no {role} of "
+                             f"{stage.where()}")
+    g1, g2 = (model.component(rel[0].component(r)) for r in ("gear_1", "gear_2"))
     for g in (g1, g2):
         if g.type != "bevel_gear":
             raise InputError(f"REXS {g.where()}: the stage's gear must be a bevel_gear")
