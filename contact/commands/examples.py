@@ -51,6 +51,10 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "geometry": ("ltca geometry -o flanks.nc",),
     "plot-geometry": ("ltca plot-geometry -o figs",),
     "synthesize": ("ltca synthesize kolivand2009_fh_12x41 -o my_case.toml",),
+    "export-rexs": ("ltca export-rexs kolivand2009_fh_12x41 -o stage.rexs --version 1.7",
+                    "ltca export-rexs kolivand2009_fm_11x41_reference "
+                    "kolivand2009_fm_11x41_reference.nc -o stage.rexsj"),
+    "import-rexs": ("ltca import-rexs stage.rexs -o my_case.toml",),
     "correct": ("ltca correct iso23509_sample2_fm_measured -o corrected.toml",),
     "optimize": ("ltca optimize kolivand2009_fm_11x41 -o optimized.toml --variable "
                  "tip_relief 0 40 --torque 50 250 500",),
