@@ -416,8 +416,11 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
     metrics = {k: np.full((nm, nt), np.nan) for k in METRICS}
     status = 0
     try:
-        case = case_at(shared.case, shared.pinion_flank, shared.names, x,
-                       relief_start=shared.relief_start, basic=shared.basic)
+        if shared.start is not None and np.array_equal(x, shared.start):
+            case = shared.case  # the start design is the case as given, not rebuilt
+        else:
+            case = case_at(shared.case, shared.pinion_flank, shared.names, x,
+                           relief_start=shared.relief_start, basic=shared.basic)
         for im, mis in enumerate(problem.misalignments):
             c = dataclasses.replace(case, misalignment=mis)
             tree = run_analysis(c, list(problem.torque), flank=problem.flank,
