@@ -235,13 +235,21 @@ def run_optimize(args: argparse.Namespace) -> int:
                     zip(result.names, result.units, result.start, result.best, strict=True)],
                    headers=["variable", "unit", "start", "result"], tablefmt="github"))
     rows = []
+    conf = result.confirmation
+
+    def worst(metrics, k, scale):
+        return " / ".join(f"{v:.4g}" for v in scale * metrics[k].max(0))
+
     for k, unit, scale in (("lte_mean", "urad", 1), ("lte_peak_to_peak", "urad", 1),
                            ("edge_load_share", "%", 100), ("pressure_max_flank", "MPa", 1)):
-        rows.append((k, unit, " / ".join(f"{v:.4g}" for v in scale * s.metrics[k].max(0)),
-                     " / ".join(f"{v:.4g}" for v in scale * b.metrics[k].max(0))))
-    rows.append(("objective", "1", f"{s.objective:.5g}", f"{b.objective:.5g}"))
+        rows.append((k, unit, worst(s.metrics, k, scale), worst(b.metrics, k, scale))
+                    + ((worst(conf.metrics, k, scale),) if conf is not None else ()))
+    rows.append(("objective", "1", f"{s.objective:.5g}", f"{b.objective:.5g}")
+                + (("",) if conf is not None else ()))
     print(tabulate(rows, headers=["worst over misalignments, per torque", "unit", "start",
-                                  "result"], tablefmt="github", disable_numparse=True))
+                                  "result"] + (["result at ltca run's sampling"]
+                                               if conf is not None else []),
+                   tablefmt="github", disable_numparse=True))
     import xarray as xr
 
     if result.case is None:  # no confirmed design has a tooth the FE model can mesh

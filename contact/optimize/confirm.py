@@ -56,7 +56,7 @@ class Confirmation:
         Names of the constraints not met (:func:`constraint_names`).
     severity : str
         The verdict of the ``ltca run``-equivalent analysis, worst over the misalignments
-        (``"ok"``, ``"attention"``, ``"fail"``; ``""`` when it did not run).
+        (``"pass"``, ``"attention"``, ``"fail"``; ``""`` when it did not run).
     findings : tuple of str
         The verdict's failing findings (one sentence each).
     mesh : str
@@ -132,7 +132,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
     from contact.optimize.variables import case_at
     from contact.pipeline import run_analysis
     from contact.study.summary import point_summary
-    from contact.study.verdicts import verdict
+    from contact.study.verdicts import SEVERITIES, verdict
     from geometry.core.errors import LTCAError
 
     t0 = time.perf_counter()
@@ -161,8 +161,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
         return Confirmation(ev.index, x, metrics, np.full(len(names), np.inf), names, "",
                             (), mesh, time.perf_counter() - t0)
     opts = LTCAOptions(solver=problem.options.solver, compliance=problem.options.compliance)
-    order = {"ok": 0, "attention": 1, "fail": 2}
-    severity, findings, bearing = "ok", [], False
+    severity, findings, bearing = SEVERITIES[0], [], False
     try:
         for im, mis in enumerate(problem.misalignments):
             c = dataclasses.replace(case, misalignment=mis)
@@ -172,7 +171,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
             for k in METRICS:
                 metrics[k][im] = s[k]
             v = verdict(tree)
-            if order.get(v.severity, 0) > order[severity]:
+            if SEVERITIES.index(v.severity) > SEVERITIES.index(severity):
                 severity = v.severity
             for f in v.findings:
                 if f.severity == "fail":
