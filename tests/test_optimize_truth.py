@@ -226,3 +226,33 @@ def test_optimize_api_progress_lines_and_confirmation(monkeypatch):
     assert res.confirmation is None and res.confirmations == ()
     assert len(lines) == res.log.sizes["evaluation"]
     assert all(ln.startswith(f"optimize: design {i + 1}/") for i, ln in enumerate(lines))
+
+
+def test_a_limit_met_only_at_the_coarse_sampling_is_not_reported_met():
+    """A limit set between the start's flank peak (or LTE p-p) at the optimiser's coarse
+    sampling and at ``ltca run``'s — which the coarse one under-samples — is met by every
+    design the optimiser ranks (2C varied by ±1e-9 1/rad: the start's flank), and met by
+    none as ``ltca run`` analyses them: the result says "not met", names the constraint,
+    and the headline does not say "constraints met"."""
+    from contact.commands.optimize import _outcome
+
+    case, torque = _edge_case(), (250.0,)
+    coarse = point_summary(run_analysis(case, list(torque), options=COARSE,
+                                        deviations=False, geometry=False, root_stress=False),
+                           case)
+    full = _ltca_run(case, torque)
+    key, name = next((k, n) for k, n in (("pressure_max_flank", "flank_pressure_250Nm"),
+                                         ("lte_peak_to_peak", "lte_pp_high_250Nm"))
+                     if float(coarse[k][0]) < float(full[k][0]) - 1e-3)
+    limit = 0.5 * (float(coarse[key][0]) + float(full[key][0]))
+    kw = ({"max_flank_pressure": (limit,)} if key == "pressure_max_flank"
+          else {"lte_peak_to_peak_range": (0.0, limit)})
+    (c0,) = start_values(case, "concave", ("2C",))
+    res = optimize(case, [DesignVariable("2C", c0 - 1e-9, c0 + 1e-9)],
+                   OptimizeProblem(torque=torque, options=COARSE, **kw), method="powell",
+                   max_evaluations=2, scheduler="synchronous", confirm=2)
+    assert bool(res.log["feasible"].values.all())  # the optimiser's own ranking: all met
+    assert not res.feasible and res.confirmation is not None
+    assert name in res.confirmation.violated
+    assert len(res.confirmations) == 2
+    assert "NOT every constraint met at ltca run's sampling" in _outcome(res, 2)
