@@ -84,7 +84,7 @@ def _parts(case, pinion_flank: str, half_ranges: Mapping[str, float]) -> list[st
 
 
 def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[str, float],
-                  pressure_limit: float | None = None) -> list[str]:
+                  pressure_limit: float | None = None, rate: bool = True) -> list[str]:
     """The next-step lines of a bearing finding of ``ltca run``'s verdict.
 
     Parameters
@@ -101,6 +101,9 @@ def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[
     pressure_limit : float, optional — [MPa]
         The static strength a flank peak exceeded: given to the optimisation as
         ``--max-flank-pressure``, so that its "constraints met" covers the finding.
+    rate : bool
+        Offer ``ltca rate`` (a lower torque) where the bearing variables are exhausted;
+        False where the caller prints it already (a capacity finding).
 
     Returns
     -------
@@ -135,15 +138,16 @@ def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[
                 "over the mounting positions, then a wider set — the modified roll 2C and "
                 "helical motion H1 (bias, lengthwise position) beside them (docs/optimize.md):",
                 vh, f"    ltca optimize {shown} --flank {side} --torque {torques} "
-                f"{' '.join(base + wider + relief)} {limits} --max-evaluations 150",
-                "  or a lower torque: the rating's capacity at these torques "
-                "(docs/rating.md):", f"    ltca rate {shown} --torque {torques}"]
+                f"{' '.join(base + wider + relief)} {limits} --max-evaluations 150"] + (
+                ["  or a lower torque: the rating's capacity at these torques "
+                 "(docs/rating.md):", f"    ltca rate {shown} --torque {torques}"]
+                if rate else [])
     return [f"  next, the {side} flank's bearing: {seen} (its [optimize] table), over the "
             "settings and relief a flank prescription has; optimising them again does not "
             "answer the finding. What would: the pattern over the mounting positions, the "
             "bearing re-developed from the basic data (`ltca synthesize`, docs/synthesis.md), "
-            "or a lower torque (the rating's capacity, docs/rating.md):", vh,
-            f"    ltca rate {shown} --torque {torques}"]
+            "or a lower torque (the rating's capacity, docs/rating.md):", vh] + (
+            [f"    ltca rate {shown} --torque {torques}"] if rate else [])
 
 
 def duty_cycle_lines(ds, shown: str, flank: str | None,

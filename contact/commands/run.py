@@ -393,7 +393,7 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
         static = any(f.check == "flank_pressure" and f.severity == "fail" for f in v.findings)
         out += bearing_lines(case, shown, side, torques, BEARING_VARIABLES,
                              static_flank_strength(tree["ltca"].to_dataset()) if static
-                             else None)
+                             else None, rate=not failed & set(CAPACITY_CHECKS))
     if failed & set(CAPACITY_CHECKS):
         out += ["  next, the load capacity: every factor of the rating; a wider face, a larger "
                 "module or a stronger material (the basic file's [design] and [rating]) carry "
