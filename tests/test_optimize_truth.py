@@ -209,7 +209,7 @@ def test_a_failed_duty_cycle_prints_its_next_steps():
                      "damage": ("member", [1.0, 0.3])},
                     coords={"member": ["pinion", "gear"]})
     lines = duty_cycle_lines(ds, "e.toml", "coast", ["damage"])
-    assert "bin 1 (150 N·m) does 80 % of the pinion's flank damage" in lines[0]
+    assert "bin 1 (150 N m) does 80 % of the pinion's flank damage" in lines[0]
     assert lines[1:] == ["    ltca run e.toml --flank coast --torque 150",
                          "    ltca rate e.toml --torque 150"]
     assert duty_cycle_lines(ds, "e.toml", None, []) == []

@@ -189,12 +189,12 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
             per_bin = fd[:, iu, iv]
             worst = int(np.argmax(per_bin))
             member = str(ds["member"].values[k])
-            why = (f"bin {worst} ({torque[worst]:g} N·m) does "
+            why = (f"bin {worst} ({torque[worst]:g} N m) does "
                    f"{100 * per_bin[worst] / per_bin.sum():.0f} % of the {member}'s flank "
                    "damage at its first point to fail")
     if worst is None:
         worst = int(np.argmax(torque))
-        why = f"the peak-torque bin {worst} ({torque[worst]:g} N·m)"
+        why = f"the peak-torque bin {worst} ({torque[worst]:g} N m)"
     t = f"{torque[worst]:g}"
     return [f"  next: {why}; its bearing at that torque as ltca run analyses it (the verdict "
             "there prints what answers a high or edge-loaded pattern), then the rating's "
