@@ -21,7 +21,7 @@ from contact.catalogue import SEED_TABLE_3_1, resolve_case
 from contact.cli import main as ltca
 from contact.ltca import LTCAOptions
 from contact.optimize import DesignVariable, OptimizeProblem, optimize
-from contact.optimize.objective import METRICS, _score, evaluate_design
+from contact.optimize.objective import METRICS, evaluate_design, score
 from contact.optimize.run import SharedDesign, _pinion_flank
 from contact.optimize.variables import _measured_relief, case_at, start_values
 from contact.pipeline import run_analysis
@@ -113,7 +113,7 @@ def test_constraints_met_agree_with_ltca_run_of_the_written_case(tmp_path, capsy
         np.testing.assert_allclose(np.asarray(conf[k])[0], ref[k], rtol=1e-9, atol=1e-6,
                                    err_msg=k)
     problem = OptimizeProblem(torque=torque, max_edge_share=max_edge)
-    _, g, _ = _score(problem, {k: np.asarray(ref[k], float)[None, :] for k in METRICS})
+    _, g, _ = score(problem, {k: np.asarray(ref[k], float)[None, :] for k in METRICS})
     met = bool(np.all(g <= 0))
     assert prov["feasible"] is met and conf["constraints_met"] is met
     head = captured.out.splitlines()[0]

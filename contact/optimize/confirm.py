@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contact.optimize.objective import METRICS, Evaluation, _score, constraint_names
+from contact.optimize.objective import METRICS, Evaluation, constraint_names, score
 
 __all__ = ["BEARING_CHECKS", "Confirmation", "confirm_design"]
 
@@ -177,7 +177,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
                 if f.severity == "fail":
                     findings.append(f.reason)
                     bearing = bearing or f.check in BEARING_CHECKS
-        _, g, _ = _score(problem, metrics)
+        _, g, _ = score(problem, metrics)
     except Exception as exc:  # the confirmation of one design never stops the command
         log.info("confirmation of design %d failed: %s", ev.index, exc)
         g = np.full(len(names), np.inf)
