@@ -363,9 +363,11 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     the commands that answer them. A bearing finding (plastic or edge contact, flank
     pressure; :data:`BEARING_CHECKS`) gets the V-H check and an `ltca optimize` command
     for this flank with the case's own setting variables (:data:`BEARING_VARIABLES`, those
-    the pinion's process has) and the profile relief, edge share limited to 2 %; a
-    capacity finding (:data:`CAPACITY_CHECKS`) the rating's factors. Nothing for a verdict
-    that is not FAIL.
+    the pinion's process has) and the profile relief, edge share limited to 2 % (and the
+    flank peak to the static strength it exceeded) — never the optimisation whose result
+    the case already is (:func:`contact.commands.next_steps.bearing_lines`); a capacity
+    finding (:data:`CAPACITY_CHECKS`) the rating's factors. Nothing for a verdict that is
+    not FAIL.
 
     Parameters
     ----------
@@ -382,10 +384,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     -------
     list of str
     """
-    from contact.optimize.variables import DesignVariable, check_variables, start_values
+    from contact.commands.next_steps import bearing_lines, static_flank_strength
     from contact.study.verdicts import verdict
     from contact.utca.easeoff import FLANK_ROLES
-    from geometry.core.errors import InputError
 
     v = verdict(tree)
     if v.severity != "fail":
@@ -398,23 +399,12 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
         side = "drive" if side == case.pair.drive_flank else "coast"
     out = []
     if failed & set(BEARING_CHECKS):
-        pinion_flank = FLANK_ROLES[side](case)
-        parts = []
-        for name, half in BEARING_VARIABLES.items():
-            try:
-                (x,) = start_values(case, pinion_flank, (name,))
-                var = DesignVariable(name, float(x) - half, float(x) + half)
-                check_variables(case, pinion_flank, [var])
-            except (InputError, KeyError, ValueError):
-                continue  # not a variable of this pinion's process
-            parts.append(f"--variable {name} {var.low:.4g} {var.high:.4g}")
-        parts += ["--variable tip_relief 0 60", "--variable root_relief 0 60"]
-        out += [f"  next, the {side} flank's bearing: the pattern over the mounting positions, "
-                "then its settings and relief developed against the loaded result, the other "
-                "flank kept (docs/optimize.md, \"A flank that fails\"):",
-                f"    ltca vh-check {shown} --flank {side}",
-                f"    ltca optimize {shown} --flank {side} --torque {torques} {' '.join(parts)} "
-                "--max-edge-share 0.02 --max-evaluations 100"]
+        # a flank peak above the static strength: the optimisation is given it as a limit;
+        # an optimised case's own optimisation is not printed again (its [optimize] table)
+        static = any(f.check == "flank_pressure" and f.severity == "fail" for f in v.findings)
+        out += bearing_lines(case, shown, side, torques, BEARING_VARIABLES,
+                             static_flank_strength(tree["ltca"].to_dataset()) if static
+                             else None, rate=not failed & set(CAPACITY_CHECKS))
     if failed & set(CAPACITY_CHECKS):
         out += ["  next, the load capacity: every factor of the rating; a wider face, a larger "
                 "module or a stronger material (the basic file's [design] and [rating]) carry "
