@@ -32,6 +32,7 @@ from contact.load_capacity.agma2003.inputs import (
     geometry_from_case,
     offset_refusal,
 )
+from contact.load_capacity.contract import contract_variables
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 from geometry.core.materials import material
@@ -121,7 +122,19 @@ def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
     out = agma2003_rating(case, torque, speed, inputs=table)
     if flank is not None:
         out.attrs["flank"] = flank
-    return out
+    # the result contract (contact.load_capacity.contract): the standard's stress safety
+    # s_wc S_H / s_c = s_ac C_L C_H / (K_T C_R s_c) against S_H (Eq. 1M, 2M), and
+    # s_wt S_F / s_t against S_F (Eq. 5M, 6M): below its S_H exactly where s_c > s_wc
+    out["stress_safety_pitting"] = (out["safety_pitting"] * out["S_H"]).assign_attrs(
+        units="1", long_name="calculated safety for pitting s_wc S_H/s_c",
+        source="ANSI/AGMA 2003-D19 Eq. 1M, 2M")
+    out["stress_safety_bending"] = (out["safety_bending"] * out["S_F"]).assign_attrs(
+        units="1", long_name="calculated safety for bending s_wt S_F/s_t",
+        source="ANSI/AGMA 2003-D19 Eq. 5M, 6M")
+    return contract_variables(
+        out, pitting=("stress_safety_pitting", "S_H", "s_wc S_H/s_c", "S_H"),
+        bending=("stress_safety_bending", "S_F", "s_wt S_F/s_t", "S_F"),
+        stresses=("s_c", "s_t"))
 
 
 def _inputs(table: AGMAInputs | Mapping[str, Any]) -> AGMAInputs:

@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from contact.load_capacity.contract import contract_variables
 from contact.load_capacity.iso10300.inputs import RatingInputs
 from contact.load_capacity.iso10300.rating import iso10300_rating
 from geometry.core.errors import InputError
@@ -101,7 +102,10 @@ def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
     Returns
     -------
     xarray.Dataset
-        :func:`contact.load_capacity.iso10300.rating.iso10300_rating`'s dataset.
+        :func:`contact.load_capacity.iso10300.rating.iso10300_rating`'s dataset with the
+        result contract (:mod:`contact.load_capacity.contract`: ``pitting_safety`` = S_H,
+        ``bending_safety`` = S_F, their minima S_Hmin, S_Fmin, ``contact_stress`` σ_H,
+        ``root_stress`` σ_F).
 
     Raises
     ------
@@ -122,7 +126,10 @@ def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
         if inputs.side is None:
             table = (dataclasses.replace(table, side=side) if isinstance(table, RatingInputs)
                      else {**table, "side": side})
-    return iso10300_rating(case, torque, speed, rating=table)
+    return contract_variables(iso10300_rating(case, torque, speed, rating=table),
+                              pitting=("S_H", "S_Hmin", "S_H", "S_Hmin"),
+                              bending=("S_F", "S_Fmin", "S_F", "S_Fmin"),
+                              stresses=("sigma_H", "sigma_F"))
 
 
 #: (variable, label, digits) of the rows of each table; a variable without the member
