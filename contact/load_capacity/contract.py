@@ -157,7 +157,8 @@ def check_result(method: str, ds: object, torque: np.ndarray | None = None) -> x
 
 def contract_variables(ds: xr.Dataset, *, pitting: tuple[str, str, str, str],
                        bending: tuple[str, str, str, str],
-                       stresses: tuple[str, str] | None = None) -> xr.Dataset:
+                       stresses: tuple[str, str] | None = None,
+                       life: tuple[str, str] | None = None) -> xr.Dataset:
     """``ds`` with the contract's variables made from its own (a helper for a method).
 
     Parameters
@@ -170,6 +171,8 @@ def contract_variables(ds: xr.Dataset, *, pitting: tuple[str, str, str, str],
     stresses : (contact, root), optional
         Names of ``ds``'s contact (torque, or torque and member) and root (torque,
         member) stresses [MPa].
+    life : (pitting, bending), optional
+        The symbols of the life factors (``("Z_NT", "Y_NT")``), the findings' words.
 
     Returns
     -------
@@ -185,6 +188,8 @@ def contract_variables(ds: xr.Dataset, *, pitting: tuple[str, str, str, str],
         out[v] = ds[value].transpose("torque", "member").copy().assign_attrs(
             units="1", long_name=f"safety against {mode} ({symbol})", symbol=symbol,
             source=f"{value} (the method's own)")
+        if life is not None:
+            out[v].attrs["life_factor"] = life[0 if mode == "pitting" else 1]
         out[m] = ds[least].copy().assign_attrs(
             units="1", long_name=f"least permissible safety against {mode} ({least_symbol})",
             symbol=least_symbol, source=f"{least} (the method's own)")
@@ -222,7 +227,7 @@ def safeties(ds: xr.Dataset | None) -> tuple[xr.Dataset | None, str]:
         # a file of ISO 10300 written before the contract existed: the same quantities
         ds = contract_variables(ds, pitting=("S_H", "S_Hmin", "S_H", "S_Hmin"),
                                 bending=("S_F", "S_Fmin", "S_F", "S_Fmin"),
-                                stresses=(("sigma_H", "sigma_F")
+                                life=("Z_NT", "Y_NT"), stresses=(("sigma_H", "sigma_F")
                                           if {"sigma_H", "sigma_F"} <= set(ds) else None))
     missing = [v for v in REQUIRED if v not in ds.data_vars]
     if missing:

@@ -129,7 +129,7 @@ def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
     return contract_variables(iso10300_rating(case, torque, speed, rating=table),
                               pitting=("S_H", "S_Hmin", "S_H", "S_Hmin"),
                               bending=("S_F", "S_Fmin", "S_F", "S_Fmin"),
-                              stresses=("sigma_H", "sigma_F"))
+                              stresses=("sigma_H", "sigma_F"), life=("Z_NT", "Y_NT"))
 
 
 #: (variable, label, digits) of the rows of each table; a variable without the member
