@@ -88,10 +88,16 @@ def register(sub) -> None:
     root_stress_option(p, "the tooth-root stress of both members from FE influence "
                           "coefficients, in the summary, the file and the report")
     p.add_argument("--rating", action=argparse.BooleanOptionalAction, default=True,
-                   help="the ISO 10300 Method B1 rating of the case (its [design] and "
-                   "[rating] tables) at the run's torques and speed, stored as /rating and "
-                   "printed beside the LTCA's peak flank pressure and root stress (on by "
+                   help="the load-capacity rating of the case (ISO 10300 Method B1 unless "
+                   "--rating-method or the case's [rating] method names another) at the "
+                   "run's torques and speed, stored as /rating, printed beside the LTCA's "
+                   "peak flank pressure and root stress and judged by the verdict (on by "
                    "default: analytic, < 0.5 s; docs/rating.md); --no-rating leaves it out")
+    p.add_argument("--rating-method", default=None, metavar="NAME",
+                   help="the load-capacity rating method of the registry (iso10300: ISO "
+                   "10300-1/-2/-3:2014 Method B1; agma2003: ANSI/AGMA 2003-D19, the case's "
+                   "[agma2003] table; a plug-in's; default the case's [rating] method, else "
+                   "iso10300; an unknown name lists those available)")
     progress_option(p)
     p.set_defaults(func=run)
 
@@ -200,6 +206,11 @@ def run(args: argparse.Namespace) -> int:
     from geometry.core.io import write_netcdf
 
     output = checked_outputs(args, more={"--report": args.report})
+    if args.rating_method is not None and not args.rating:
+        from geometry.core.errors import InputError
+
+        raise InputError("--rating-method: a method was named with --no-rating; give one "
+                         "of the two")
     case, mis = case_and_misalignment(args)
     opts = ltca_options(args)
     devs = None  # the case's [deviations] table, if any
@@ -226,7 +237,8 @@ def run(args: argparse.Namespace) -> int:
         # the chain's load-capacity step (/scuffing_micropitting, /rating,
         # /rating/flash_temperature; a bad [rating] table is refused before the work);
         # --no-rating keeps scuffing and micropitting, without the rating
-        steps=None if args.rating else {"load_capacity": "scuffing_micropitting"},
+        steps=(rating_steps(args.rating_method) if args.rating
+               else {"load_capacity": "scuffing_micropitting"}),
     )
     rating_why = ("ISO 10300 rating not computed (--no-rating)" if not args.rating
                   else str(tree.attrs.get("load_capacity_not_run", "")))
@@ -310,7 +322,7 @@ def run(args: argparse.Namespace) -> int:
             print(line)
         print("the FE model's peak fillet stress is mesh-converged within 5 % (docs/fe.md, "
               "Mesh convergence)")
-    for line in rating_lines(tree, rating_why):
+    for line in rating_lines(tree, rating_why, args.case):
         print(line)
     if "theoretical" in tree.children:
         print(
@@ -353,7 +365,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     pressure; :data:`BEARING_CHECKS`) gets the V-H check and an `ltca optimize` command
     for this flank with the case's own setting variables (:data:`BEARING_VARIABLES`, those
     the pinion's process has) and the profile relief, edge share limited to 2 %; a
-    capacity finding (:data:`CAPACITY_CHECKS`) the rating's factors. Nothing for a verdict
+    capacity finding (:data:`CAPACITY_CHECKS`) the rating's factors — first where the
+    gear set is too small for its load (a failed rating, or a flank pressure above its
+    static strength: no bearing change answers that). Nothing for a verdict
     that is not FAIL.
 
     Parameters
@@ -381,11 +395,27 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
         return []
     failed = {f.check for f in v.findings}
     shown = case_arg if case_arg is not None else case.name
+    method = (str(tree["rating"].attrs.get("rating_method", "")) if "rating" in tree.children
+              else "")
+    method = "" if method in ("", "iso10300") else method
     torques = " ".join(f"{t:g}" for t in tree["ltca"]["torque"].values)
     side = flank or "drive"
     if side not in FLANK_ROLES:  # a pinion flank by name: its role, as `ltca optimize` takes
         side = "drive" if side == case.pair.drive_flank else "coast"
-    out = []
+    out: list[str] = []
+    capacity: list[str] = []
+    if failed & set(CAPACITY_CHECKS):
+        capacity = ["  next, the load capacity: every factor of the rating; a wider face, a "
+                    "larger module or a stronger material (the basic file's [design] and "
+                    "[rating]) carry more (docs/rating.md):",
+                    f"    ltca rate {shown} --torque {torques}"
+                    + (f" --method {method}" if method else "")]
+    # a gear set too small for its load (a failed rating, a flank above its static
+    # strength) is answered first: no bearing change carries the load it cannot
+    overloaded = any(f.severity == "fail" and (f.check in CAPACITY_CHECKS or (
+        f.check == "flank_pressure" and "static strength" in f.reason)) for f in v.findings)
+    if overloaded:
+        out += capacity
     if failed & set(BEARING_CHECKS):
         pinion_flank = FLANK_ROLES[side](case)
         parts = []
@@ -404,11 +434,8 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                 f"    ltca vh-check {shown} --flank {side}",
                 f"    ltca optimize {shown} --flank {side} --torque {torques} {' '.join(parts)} "
                 "--max-edge-share 0.02 --max-evaluations 100"]
-    if failed & set(CAPACITY_CHECKS):
-        out += ["  next, the load capacity: every factor of the rating; a wider face, a larger "
-                "module or a stronger material (the basic file's [design] and [rating]) carry "
-                "more (docs/rating.md):",
-                f"    ltca rate {shown} --torque {torques}"]
+    if not overloaded:
+        out += capacity
     return out
 
 
@@ -427,59 +454,27 @@ def check_certified(tree, path) -> None:
             + (" (root attribute analysis_status)" if str(path).endswith(".nc") else ""))
 
 
-def rating_lines(tree, why: str = "") -> list[str]:
-    """The lines ``ltca run`` prints on the ISO 10300 rating: per torque and member the
-    rating's σ_H0, σ_H beside the LTCA's peak flank pressure, σ_F0, σ_F beside the FE peak
-    root stress, with their ratios (:func:`contact.load_capacity.iso10300.rating_beside_ltca`), and
-    the
-    safety factors; or the one line ``why`` for an analysis without ``/rating``.
+def rating_steps(method: str | None) -> dict | None:
+    """The chain's steps for ``--rating-method``: None (the default chain, the case's
+    ``[rating] method`` or ISO 10300) or ``{"load_capacity": method}`` for a registered
+    method (an unknown name refused listing the available ones)."""
+    if method is None:
+        return None
+    from contact.load_capacity.methods import METHODS
+    from geometry.core.errors import ModelUnavailableError
 
-    Parameters
-    ----------
-    tree : xarray.DataTree
-        The analysis (``/ltca``, optionally ``/rating``).
-    why : str
-        Why the rating is absent (printed when it is).
+    try:
+        return {"load_capacity": METHODS.entry(method).name}
+    except ModelUnavailableError as exc:
+        raise ModelUnavailableError(f"--rating-method: {exc}") from None
 
-    Returns
-    -------
-    list of str
-    """
-    if "rating" not in tree.children:
-        return [why] if why else []
-    from tabulate import tabulate
 
-    from contact.load_capacity.iso10300 import rating_beside_ltca
+def rating_lines(tree, why: str = "", case_arg: str | None = None) -> list[str]:
+    """The lines ``ltca run`` prints on the rating, from the load-capacity methods' result
+    contract (:func:`contact.commands.rating_text.rating_lines`)."""
+    from contact.commands.rating_text import rating_lines as lines
 
-    ds = tree["rating"].to_dataset()
-    side = rating_beside_ltca(ds, tree["ltca"].to_dataset())
-    rows = []
-    for i, t in enumerate(side["torque"].values):
-        one = side.isel(torque=i)
-        for member in side["member"].values:
-            m = one.sel(member=member)
-            rows.append((f"{t:g}", str(member), f"{float(m['sigma_H0']):.0f}",
-                         f"{float(m['sigma_H']):.0f}", f"{float(m['pressure_max_flank']):.0f}",
-                         f"{float(m['pressure_to_sigma_H']):.2f}",
-                         f"{float(m['sigma_F0']):.0f}", f"{float(m['sigma_F']):.0f}",
-                         _number(float(m["root_stress_max"]), 0),
-                         _number(float(m["root_stress_to_sigma_F"]))))
-    s_h = ds["S_H"].min("member").values
-    s_f = ds["S_F"].values
-    lines = [f"ISO 10300 Method B1 rating beside the LTCA ({ds.attrs.get('side', '')} side, "
-             f"n1 {float(ds['pinion_speed']):g} rpm, K_A {float(ds['K_A']):g}; /rating, "
-             "docs/rating.md) [MPa]:",
-             tabulate(rows, headers=["T_p [N m]", "member", "sigma_H0", "sigma_H",
-                                     "p_max flank", "p_max/sigma_H", "sigma_F0", "sigma_F",
-                                     "FE root", "FE/sigma_F"], tablefmt="github"),
-             side["pressure_to_sigma_H"].attrs["comment"] + ".",
-             side["root_stress_to_sigma_F"].attrs["comment"] + ".",
-             "ISO safety factors: " + "; ".join(
-                 f"{t:g} N m S_H {s_h[i]:.2f}, S_F {s_f[i, 0]:.2f} / {s_f[i, 1]:.2f}"
-                 for i, t in enumerate(ds["torque"].values))
-             + f" (pinion / gear; S_H,min {float(ds['S_Hmin']):g}, S_F,min "
-               f"{float(ds['S_Fmin']):g}); ltca rate prints every factor"]
-    return lines
+    return lines(tree, why, case_arg)
 
 
 def plastic_summary(ltca, i: int) -> str:

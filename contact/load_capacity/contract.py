@@ -229,6 +229,7 @@ def safeties(ds: xr.Dataset | None) -> tuple[xr.Dataset | None, str]:
                                 bending=("S_F", "S_Fmin", "S_F", "S_Fmin"),
                                 life=("Z_NT", "Y_NT"), stresses=(("sigma_H", "sigma_F")
                                           if {"sigma_H", "sigma_F"} <= set(ds) else None))
+        ds.attrs.setdefault("rating_standard", "ISO 10300")
     missing = [v for v in REQUIRED if v not in ds.data_vars]
     if missing:
         return None, (f"/rating of {ds.attrs.get('rating_method', 'an unnamed method')} "

@@ -42,8 +42,8 @@ if TYPE_CHECKING:
     from geometry.case import Case
 
 __all__ = ["COMPANIONS", "DEFAULT_METHOD", "ENTRY_POINT_GROUP", "METHODS", "RatingMethod",
-           "available_methods", "available_rating_methods", "rate", "rate_load_capacity",
-           "register_method", "register_rating_method", "unregister_method",
+           "available_methods", "available_rating_methods", "case_method", "rate",
+           "rate_load_capacity", "register_method", "register_rating_method", "unregister_method",
            "unregister_rating_method"]
 
 log = logging.getLogger(__name__)
@@ -302,6 +302,34 @@ def _method(name: str) -> RatingMethod:
         return METHODS.entry(name)
     except ModelUnavailableError as exc:
         raise ModelUnavailableError(f"method: {exc}") from None
+
+
+def case_method(case: Any) -> str | None:
+    """The load-capacity rating method a case chooses: its ``[rating] method`` field.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    str or None
+        A registered method's name, or None where the case names none.
+
+    Raises
+    ------
+    ModelUnavailableError
+        The case names a method that is not registered (``rating.method: …``, the
+        available ones listed).
+    """
+    table = getattr(case, "extra", {}).get("rating")
+    name = table.get("method") if isinstance(table, Mapping) else None
+    if name is None:
+        return None
+    try:
+        return METHODS.entry(name).name
+    except ModelUnavailableError as exc:
+        raise ModelUnavailableError(f"rating.method: {exc}") from None
 
 
 @renamed_keywords(speed="pinion_speed")
