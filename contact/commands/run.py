@@ -398,6 +398,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     method = (str(tree["rating"].attrs.get("rating_method", "")) if "rating" in tree.children
               else "")
     method = "" if method in ("", "iso10300") else method
+    speed = (float(tree["rating"]["pinion_speed"].values) if "rating" in tree.children
+             and "pinion_speed" in tree["rating"].variables
+             and tree["rating"]["pinion_speed"].ndim == 0 else 0.0)
     torques = " ".join(f"{t:g}" for t in tree["ltca"]["torque"].values)
     side = flank or "drive"
     if side not in FLANK_ROLES:  # a pinion flank by name: its role, as `ltca optimize` takes
@@ -409,7 +412,8 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                     "larger module or a stronger material (the basic file's [design] and "
                     "[rating]) carry more (docs/rating.md):",
                     f"    ltca rate {shown} --torque {torques}"
-                    + (f" --method {method}" if method else "")]
+                    + (f" --method {method}" if method else "")
+                    + (f" --speed {speed:g}" if speed else "")]
     # a gear set too small for its load (a failed rating, a flank above its static
     # strength) is answered first: no bearing change carries the load it cannot
     overloaded = any(f.severity == "fail" and (f.check in CAPACITY_CHECKS or (

@@ -330,8 +330,9 @@ def _edge_contact(lt: xr.Dataset) -> list[Finding]:
             small = [_EDGE_WORDS[k] for k, v in loaded.items() if v < EDGE_SHARE_MIN]
             each = ", ".join(f"{_EDGE_WORDS[k]} {_percent(v, 2)} %" for k, v in big)
             if small:
-                each = "; ".join(filter(None, [each, f"{' and '.join(small)} below "
-                                                     f"{100 * EDGE_SHARE_MIN:g} % each"]))
+                below = (f"{' and '.join(small)} below {100 * EDGE_SHARE_MIN:g} %"
+                         + " each" * (len(small) > 1))
+                each = "; ".join(filter(None, [each, below]))
             parts.append(f"edge contact carries {_percent(total, 2)} % of the torque ({each})")
         out.append(Finding("attention", "edge_contact", f"at {_t(t)}: " + "; ".join(parts)))
     return out
