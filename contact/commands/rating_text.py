@@ -107,7 +107,7 @@ def rating_lines(tree: xr.DataTree, why: str = "", case_arg: str | None = None,
     side = f", {ds.attrs['side']} side" if ds.attrs.get("side") else ""
     lines = [f"{standard} rating beside the LTCA (method {name}{side}{speed}; /rating, "
              "docs/rating.md)" + (" [MPa]:" if stresses else ":"),
-             tabulate(rows, headers=headers, tablefmt="github", disable_numparse=True)]
+             tabulate(rows, headers=headers, tablefmt="github")]
     if stresses:
         lines.append("p_max/" + ch + ": the LTCA's peak flank pressure over the standard's "
                      "contact stress (with its load factors); FE/" + rh + ": the FE peak "
