@@ -383,10 +383,11 @@ def _rating(tree: xr.DataTree, lt: xr.Dataset | None) -> dict | None:
             "missing": "",
             "method": f"{title} (method {method}){side}{speed}; minima {mins}",
             "root_stress": "root_stress_max" in lt,
-            "ratios": ([f"pressure / {ch}: the LTCA's peak flank pressure over the standard's "
-                        "contact stress with its load factors",
-                        f"root stress / {rh}: the FE peak root stress over the standard's "
-                        "root stress with its load factors"] if stresses else [])}
+            "ratios": ([page_units(r).replace("sigma_", "σ_") for r in (
+                f"pressure / {ch}: the LTCA's peak Hertzian pressure on the flank over the "
+                "standard's contact stress with its load factors",
+                f"root stress / {rh}: the FE peak maximum principal tooth-root stress over "
+                "the standard's root stress with its load factors")] if stresses else [])}
 
 
 def _basic_data(inputs_text: str) -> dict | None:
