@@ -263,16 +263,20 @@ def test_a_toy_method_from_an_entry_point(monkeypatch):
     from contact.load_capacity import methods
     from geometry.core import registries
 
+    group = "hypoid_ltca.rating_methods_of_this_test"
     monkeypatch.setattr(registries, "entry_point_objects",
-                        lambda group: {"ep_capacity": capacity_method, "ep_broken": 3}
-                        if group == methods.ENTRY_POINT_GROUP else {})
-    reg = registries.Registry("load-capacity rating method", methods.ENTRY_POINT_GROUP,
-                              (), name_of=lambda m: m.name, adapt=methods._adapt)
+                        lambda g: {"ep_capacity": capacity_method, "ep_broken": 3}
+                        if g == group else {})
+    reg = registries.Registry("load-capacity rating method", group, (),
+                              name_of=lambda m: m.name, adapt=methods._adapt)
     assert list(reg) == ["ep_capacity"]
     assert reg["ep_capacity"].function is capacity_method
     assert reg["ep_capacity"].title.startswith("A toy rating method after docs/extending.md")
     with pytest.raises(ModelUnavailableError, match="available: ep_capacity"):
         reg.entry("nothing")
+    reg.unregister("ep_capacity")  # for this process, as a user's registration
+    assert "ep_capacity" not in reg
+    registries._group_objects.cache_clear()
 
 
 def test_a_rating_without_the_contract_is_not_checked_never_passed():

@@ -32,6 +32,7 @@ from collections.abc import Callable, Iterator, Mapping
 from importlib import metadata
 from typing import Any, Generic, TypeVar
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError, ModelUnavailableError, PluginError
 
 __all__ = ["Registry", "callable_name", "check_model_name", "entry_point_objects",
@@ -163,6 +164,14 @@ def entry_point_objects(group: str) -> dict[str, Any]:
     return out
 
 
+@memoised(maxsize=None)
+def _group_objects(group: str) -> dict[str, Any]:
+    """The entry-point objects of ``group``, found once per process
+    (:func:`geometry.core.caches.clear_caches` forgets them, so that a package installed
+    meanwhile is seen)."""
+    return entry_point_objects(group)
+
+
 class Registry(Mapping[str, T], Generic[T]):
     """Named entries of one kind — bundled, advertised by installed distributions in an
     entry-point group, registered in the process — read as one mapping (name → entry).
@@ -207,15 +216,17 @@ class Registry(Mapping[str, T], Generic[T]):
                             exc)
                 continue
             self._bundled[name_of(entry)] = entry
-        self._plugins: dict[str, T] | None = None
+        self._plugins: tuple[object, dict[str, T]] | None = None
         self._user: dict[str, T] = {}
+        self._dropped: set[str] = set()
 
     def plugins(self) -> dict[str, T]:
-        """The entries of the installed distributions' entry points (:attr:`group`), loaded
-        once per process."""
-        if self._plugins is None:
+        """The entries of the installed distributions' entry points (:attr:`group`), found
+        once per process (until :func:`geometry.core.caches.clear_caches`)."""
+        objects = _group_objects(self.group)
+        if self._plugins is None or self._plugins[0] is not objects:
             out: dict[str, T] = {}
-            for name, obj in entry_point_objects(self.group).items():
+            for name, obj in objects.items():
                 if name in self._bundled:
                     log.warning("entry point %s of group %s shadows a bundled %s: left out",
                                 name, self.group, self.kind)
@@ -225,8 +236,8 @@ class Registry(Mapping[str, T], Generic[T]):
                 except InputError as exc:
                     log.warning("entry point %s of group %s is not a %s: %s", name,
                                 self.group, self.kind, exc)
-            self._plugins = out
-        return self._plugins
+            self._plugins = (objects, out)
+        return {k: v for k, v in self._plugins[1].items() if k not in self._dropped}
 
     def _all(self) -> dict[str, T]:
         return {**self._bundled, **self.plugins(), **self._user}
@@ -270,6 +281,7 @@ class Registry(Mapping[str, T], Generic[T]):
             raise PluginError(f"name: the {self.kind} {name!r} is registered already "
                               "(replace=True replaces it)")
         self._user[name] = entry
+        self._dropped.discard(name)
         return entry
 
     def unregister(self, name: str) -> None:
@@ -282,5 +294,7 @@ class Registry(Mapping[str, T], Generic[T]):
             ``name`` is not registered (listed as :meth:`entry`).
         """
         self.entry(name)
-        for layer in (self._user, self.plugins(), self._bundled):
-            layer.pop(name, None)
+        self._user.pop(name, None)
+        self._bundled.pop(name, None)
+        if name in self.plugins():
+            self._dropped.add(name)
