@@ -382,3 +382,14 @@ def test_ltca_rate_prints_every_factor(capsys):
     # each factor printed to 3 decimals: 8 roundings of ≤ 5e-4 relative each
     assert product == pytest.approx(float(rows["sigma_HP [MPa]"]), rel=8 * 5e-4)
     assert "K_A 1.100" in text and "K_Hbeta-be 1.100" in text
+
+
+def test_ltca_report_names_the_file_whose_group_is_missing(tmp_path, capsys):
+    """A file that is neither an analysis nor a duty cycle nor another command's file:
+    the refusal names it and the groups it has."""
+    path = tmp_path / "other.nc"
+    xr.DataTree.from_dict({"/": xr.Dataset(attrs={"title": "something else"}),
+                           "/stuff": xr.Dataset({"x": ("i", [1.0])})}).to_netcdf(path)
+    assert main(["report", str(path), "-o", str(tmp_path / "r.html")]) == 2
+    err = capsys.readouterr().err
+    assert f"{str(path)!r} has no /easeoff or /duty_cycle group (groups: /stuff)" in err

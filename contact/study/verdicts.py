@@ -46,11 +46,19 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   reaches the oil's scuffing temperature, the least specific film its permissible value —
   the methods' own criteria (ISO/TR 13989-1, ISO/TS 6336-22 leave larger minimum factors
   to agreement).
-* ``rating`` (fail): the ISO 10300 ``/rating`` group's S_H, S_F against its S_Hmin, S_Fmin;
-  attention instead for a torque above the rating's ``design_torque`` whose long-life
-  safety is below the minimum but whose static strength holds: a load of finite life, with
-  the load cycles it may run (``permissible_cycles_pitting``/``_bending``, ISO 10300-2/-3
-  cl. 8).
+* ``rating`` (fail): the ``/rating`` group's safeties against their minima, read from the
+  result contract of the load-capacity methods (:mod:`contact.load_capacity.contract`:
+  ``pitting_safety``, ``bending_safety`` and their minima, whatever the method: ISO 10300's
+  S_H, S_F, ANSI/AGMA 2003's, a plug-in's); attention instead for a torque above the
+  rating's ``design_torque`` whose long-life safety is below the minimum but whose static
+  strength holds: a load of finite life, with the load cycles it may run
+  (``permissible_cycles_pitting``/``_bending``, ISO 10300-2/-3 cl. 8). A ``/rating``
+  without the contract is not checked (:attr:`Verdict.unchecked` says why), never passed.
+
+Findings a reader trusts: an edge share below :data:`EDGE_SHARE_MIN` is no finding (the
+discretisation's); findings are worst first, then in :data:`CHECK_ORDER`; the
+flank-pressure finding promises no finite life at a torque whose rating is beyond the
+static strength (docs/verdicts.md, "Findings a reader trusts").
 
 **Duty cycle** (the ``/duty_cycle`` dataset of ``ltca duty-cycle``).
 
