@@ -393,3 +393,20 @@ def test_ltca_report_names_the_file_whose_group_is_missing(tmp_path, capsys):
     assert main(["report", str(path), "-o", str(tmp_path / "r.html")]) == 2
     err = capsys.readouterr().err
     assert f"{str(path)!r} has no /easeoff or /duty_cycle group (groups: /stuff)" in err
+
+
+def test_no_finite_life_where_the_ltca_flank_exceeds_the_static_strength():
+    """At a torque whose LTCA flank peak is above the static strength (2400 MPa), the
+    rating's pitting finding offers no load cycles (they would contradict 'no life at this
+    torque'): a fail with the LTCA's finding named, even above the design torque."""
+    tree = _overloaded(3000.0)
+    rt = tree["rating"].to_dataset().assign(
+        permissible_cycles_pitting=(("torque", "member"), [[2.0e7, 2.0e7]]))
+    tree = xr.DataTree.from_dict({"/ltca": tree["ltca"].to_dataset(), "/rating": rt})
+    v = verdict(tree)
+    pitting = [f for f in v.findings if f.check == "rating" and "pitting" in f.reason]
+    assert [f.severity for f in pitting] == ["fail", "fail"]
+    assert all(f.reason.endswith("(rated at long life, Z_NT 1; the LTCA's flank peak at "
+                                 "this torque exceeds the static strength: its finding)")
+               for f in pitting)
+    assert not any("permissible for" in f.reason for f in v.findings)

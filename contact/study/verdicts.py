@@ -245,6 +245,25 @@ def _group(tree: xr.DataTree, name: str) -> xr.Dataset | None:
     return tree[name].to_dataset() if name in tree.children else None
 
 
+def _flank_static_torques(lt: xr.Dataset | None) -> frozenset:
+    """The torques at which the LTCA's flank peak pressure exceeds the static strength of
+    the weaker member (as :func:`_flank_pressure` judges it): the rating's finding there
+    does not offer a finite life."""
+    from contact.load_capacity.durability import sn_curves
+
+    if lt is None or "pressure_max_flank" not in lt:
+        return frozenset()
+    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
+    if not names:
+        return frozenset()
+    weak = min((sn_curves(str(m), GRADE)["contact"] for m in sorted(names)),
+               key=lambda c: c.allowable)
+    static = weak.allowable * weak.static_life_factor
+    return frozenset(float(t) for t, p in zip(lt["torque"].values,
+                                              lt["pressure_max_flank"].values, strict=True)
+                     if np.isfinite(p) and p > static)
+
+
 def _flank_pressure(lt: xr.Dataset, static_torques: frozenset = frozenset()
                     ) -> list[Finding]:
     from contact.load_capacity.durability import sn_curves
@@ -433,7 +452,7 @@ def _safeties(fr: xr.Dataset) -> list[Finding]:
     return out
 
 
-def _rating(rt: xr.Dataset) -> list[Finding]:
+def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Finding]:
     """The rating's findings from the result contract of the load-capacity methods
     (:mod:`contact.load_capacity.contract`; ``rt`` its view): per torque and member a
     safety below its minimum fails, but a torque above the rating's design torque whose
@@ -471,7 +490,8 @@ def _rating(rt: xr.Dataset) -> list[Finding]:
                           f"{x:.2f} of the {m} at {_t(t)} below {least_symbol} {smin[j]:g}")
                 long_life = cycles is not None and not np.isfinite(cycles[j % cycles.size])
                 n = float(n_ok[i, j])
-                if long_life and t > design and n > 0:
+                beyond = what == "pitting" and float(t) in flank_static
+                if long_life and t > design and n > 0 and not beyond:
                     # an overload above the design torque: a finite life, stated
                     hours = (f", {n / (60.0 * speed):.3g} h at {speed:g} rpm"
                              if np.isfinite(speed) and speed > 0 else "")
@@ -484,6 +504,11 @@ def _rating(rt: xr.Dataset) -> list[Finding]:
                     continue
                 if n == 0:  # the static end of the S–N curve: no life whatever the cycles
                     life = ": beyond the static strength, no load cycles are permissible"
+                elif long_life and n > 0 and beyond:
+                    # the LTCA's own peak is beyond the static strength here: no cycles
+                    # offered beside the flank-pressure finding that says so
+                    life = (f" (rated at long life, {factor} 1; the LTCA's flank peak at this "
+                            "torque exceeds the static strength: its finding)")
                 elif long_life and n > 0:
                     life = (f" (rated at long life, {factor} 1; the safety holds for {n:.3g} "
                             "pinion load cycles: give them as the [rating] load_cycles if "
@@ -559,7 +584,7 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
         findings += _safeties(sm)
     if rt is not None:
         checks += ["rating"]
-        findings += _rating(rt)
+        findings += _rating(rt, _flank_static_torques(lt))
     return findings, checks
 
 
