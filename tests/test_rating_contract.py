@@ -410,3 +410,22 @@ def test_no_finite_life_where_the_ltca_flank_exceeds_the_static_strength():
                                  "this torque exceeds the static strength: its finding)")
                for f in pitting)
     assert not any("permissible for" in f.reason for f in v.findings)
+
+
+def test_the_rate_command_ltca_run_names_rates_the_side_it_rated(capsys):
+    """`ltca run --flank coast` rates the coast side; the `ltca rate` command its lines
+    name says --flank coast, and that command rates the same side (same S_H)."""
+    from contact.commands.rating_text import rating_lines
+
+    coast = rate("iso10300_30_sample1", [300.0], 1200.0, flank="coast")
+    assert coast.attrs["side"] == "coast"
+    lt = xr.Dataset({"pressure_max_flank": ("torque", [1500.0])}, coords={"torque": [300.0]})
+    tree = xr.DataTree.from_dict({"/ltca": lt, "/rating": coast})
+    last = rating_lines(tree, case_arg="iso10300_30_sample1")[-1]
+    command = last[last.index("`") + 1:last.rindex("`")]
+    assert command.endswith("--speed 1200 --flank coast")
+    assert main(command.split()[1:]) == 0
+    text = capsys.readouterr().out
+    assert text.startswith("ISO 10300 Method B1: iso10300_30_sample1 (coast side)")
+    s_h = float(coast["S_H"].values[0, 0])
+    assert any(ln.startswith("S_H ") and f"{s_h:.3f}" in ln for ln in text.splitlines())

@@ -38,6 +38,9 @@ def register(sub) -> None:
                    "[rating] method, else iso10300: ISO 10300-1/-2/-3:2014 Method B1; "
                    "agma2003: ANSI/AGMA 2003-D19, the case's [agma2003] table; an unknown "
                    "name lists those available; docs/extending.md adds one)")
+    p.add_argument("--flank", default=None, choices=("drive", "coast", "concave", "convex"),
+                   help="the pinion flank rated, as `ltca run --flank` loads it (default the "
+                   "[rating] table's side, else the drive flank)")
     output_option(p, default="none: the tables only",
                   what="netCDF file of the /rating dataset")
     p.set_defaults(func=run)
@@ -73,7 +76,8 @@ def run(args: argparse.Namespace) -> int:
         check_output_file(args.output)
     case = resolve_case(args.case)
     method = args.method or case_method(case) or DEFAULT_METHOD
-    ds = rate(case, args.torque, args.speed, method=method)  # unknown: lists the names
+    # unknown method: lists the names
+    ds = rate(case, args.torque, args.speed, method=method, flank=args.flank)
     show = METHODS[method].tables or variable_lines
     print(show(ds))
     if ds.attrs.get("rating_method") == "iso10300" and "rating_inputs" in ds.attrs:

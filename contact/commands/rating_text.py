@@ -115,7 +115,8 @@ def rating_lines(tree: xr.DataTree, why: str = "", case_arg: str | None = None,
                      "side, not a check of either (docs/rating.md).")
     rate = (f"ltca rate {case_arg or str(tree.attrs.get('case', ''))} --method {name} "
             "--torque " + " ".join(f"{t:g}" for t in ds["torque"].values)
-            + (f" --speed {float(ds['pinion_speed']):g}" if speed else ""))
+            + (f" --speed {float(ds['pinion_speed']):g}" if speed else "")
+            + (" --flank coast" if ds.attrs.get("side") == "coast" else ""))
     lines.append(f"safeties per member (pinion / gear) against their minima ({mins}); "
                  f"every factor of the rating is a variable of /rating in the file written "
                  f"below, and `{rate}` prints them")

@@ -398,6 +398,8 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     method = (str(tree["rating"].attrs.get("rating_method", "")) if "rating" in tree.children
               else "")
     method = "" if method in ("", "iso10300") else method
+    coast = ("rating" in tree.children
+             and tree["rating"].attrs.get("side") == "coast")  # the side it rated
     speed = (float(tree["rating"]["pinion_speed"].values) if "rating" in tree.children
              and "pinion_speed" in tree["rating"].variables
              and tree["rating"]["pinion_speed"].ndim == 0 else 0.0)
@@ -413,7 +415,8 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                     "[rating]) carry more (docs/rating.md):",
                     f"    ltca rate {shown} --torque {torques}"
                     + (f" --method {method}" if method else "")
-                    + (f" --speed {speed:g}" if speed else "")]
+                    + (f" --speed {speed:g}" if speed else "")
+                    + (" --flank coast" if coast else "")]
     # a gear set too small for its load (a failed rating, a flank above its static
     # strength) is answered first: no bearing change carries the load it cannot
     overloaded = any(f.severity == "fail" and (f.check in CAPACITY_CHECKS or (
