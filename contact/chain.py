@@ -336,9 +336,11 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
 
     def rating_step(state: ChainState) -> None:
         """``/scuffing_micropitting`` (with ``/friction``), then ``/rating`` by the
-        registered method (:func:`contact.load_capacity.rate`) and, for ISO 10300, the
-        standard's flash-temperature method on its virtual cylindrical gears
-        (``/rating/flash_temperature``, :func:`scuffing_flash_temperature`). Without the
+        registered method (:func:`contact.load_capacity.rate`) and the companion results
+        the method declares (:attr:`contact.load_capacity.RatingMethod.companions`; ISO
+        10300's ``"flash_temperature"``: the standard's flash-temperature method on its
+        virtual cylindrical gears, ``/rating/flash_temperature``,
+        :func:`scuffing_flash_temperature`). Without the
         tables the method needs or a pinion speed there is no ``/rating``;
         ``state.not_run["load_capacity"]`` says why."""
         load_capacity_without_rating(state)
@@ -347,7 +349,11 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
             state.not_run["load_capacity"] = why
             return
         state.groups["/rating"] = rating
-        if rating.attrs.get("rating_method") == "iso10300":
+        from contact.load_capacity.methods import METHODS
+
+        entry = METHODS.get(str(rating.attrs.get("rating_method", method)))
+        # the results the method declares beside its rating (RatingMethod.companions)
+        if entry is not None and "flash_temperature" in entry.companions:
             flash = scuffing_flash_temperature(
                 rating, state.groups.get("/friction"),
                 lubricant=None if state.operating is None else state.operating.lubricant)

@@ -352,7 +352,8 @@ def run_analysis(
         None to skip an optional step — e.g. ``{"load_capacity": None}``. The keywords
         ``geometry``, ``mesh_interface``, ``root_stress`` (False skips, True runs) and
         ``operating=False`` (no ``efficiency`` step) apply on top of it. The
-        ``load_capacity`` step writes ``/rating`` (ISO 10300 Method B1 at the run's torques
+        ``load_capacity`` step writes ``/rating`` (ISO 10300 Method B1, or the method the
+        case's ``[rating] method`` names where the steps name none, at the run's torques
         and pinion speed, from the case's ``[design]`` and ``[rating]`` tables) and, with
         ``/friction``, ``/rating/flash_temperature``; without those tables or a speed it
         writes nothing and the root attribute ``load_capacity_not_run`` says why.
@@ -424,6 +425,12 @@ def run_analysis(
             operating, OperatingConditions):
         raise InputError("operating: must be a friction.operating.OperatingConditions, False "
                          f"or None, got {operating!r}")
+    from contact.load_capacity.methods import case_method
+
+    chosen = case_method(c)  # the case's [rating] method, where the steps name none
+    if chosen is not None and (steps is None or (isinstance(steps, Mapping)
+                                                 and "load_capacity" not in steps)):
+        steps = {**(steps or {}), "load_capacity": chosen}
     chain = resolve_chain(steps, geometry=geometry, mesh_interface=mesh_interface,
                           root_stress=None if root_stress is None else root_stress is not False,
                           efficiency=False if operating is False else None)
