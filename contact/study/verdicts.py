@@ -593,7 +593,8 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
         findings += _rating(rt, _flank_static_torques(lt))
     from contact.study.verdict_checks import analysis_checks  # root stress, scuffing (#72)
 
-    more, made = analysis_checks(tree, lt, rt, sm)
+    # the root-stress check reads the ISO 10300 factors of the rating as written
+    more, made = analysis_checks(tree, lt, _group(tree, "rating"), sm)
     return findings + more, checks + made
 
 
