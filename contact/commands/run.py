@@ -623,7 +623,7 @@ def durability_lines(friction, standard=None) -> list[str]:
             f"{float(friction['contact_temperature_max'].values[i]):.0f} degC (flash "
             f"{float(friction['flash_temperature_max'].values[i]):.0f} K), scuffing safety "
             f"S_B {_number(s_b)}, least lambda_GF (film at the bulk temperature theta_M, "
-            f"ISO/TS 6336-22) {float(friction['specific_film_thickness_min'].values[i]):.3f}"
+            f"ISO/TS 6336-22) {_film_at_bulk(friction, i)}"
             + (f" (at the oil inlet {float(inlet.values[i]):.3f})" if inlet is not None
                else "")
             + (f", S_lambda {s_l:.2f}" if math.isfinite(s_l) else ""))
@@ -670,6 +670,22 @@ def _standard_lines(iso) -> list[str]:
                    f"{float(one['mean_friction_coefficient']):.3f}), S_B "
                    f"{_number(float(one['scuffing_safety']))}{spread}")
     return out
+
+
+def _film_at_bulk(friction, i: int) -> str:
+    """The least λ_GF at θ_M of torque ``i`` (3 decimals), or "-" with the reason where
+    the bulk temperature lies beyond the oil's data (no film computed there; the
+    segments' ``specific_film_thickness`` comment says so) instead of a bare "nan"."""
+    lam = float(friction["specific_film_thickness_min"].values[i])
+    if math.isfinite(lam):
+        return f"{lam:.3f}"
+    bulk = friction.get("bulk_temperature")
+    comment = str(friction["specific_film_thickness"].attrs.get("comment", "")
+                  if "specific_film_thickness" in friction else "")
+    if bulk is not None and math.isfinite(float(bulk.values[i])) and "beyond" in comment:
+        return (f"- (theta_M {float(bulk.values[i]):.0f} degC lies beyond the oil's "
+                "viscosity data: no film computed there)")
+    return "-"
 
 
 def _number(value: float, decimals: int = 2) -> str:
