@@ -353,8 +353,10 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     pressure; :data:`BEARING_CHECKS`) gets the V-H check and an `ltca optimize` command
     for this flank with the case's own setting variables (:data:`BEARING_VARIABLES`, those
     the pinion's process has) and the profile relief, edge share limited to 2 %; a
-    capacity finding (:data:`CAPACITY_CHECKS`) the rating's factors. Nothing for a verdict
-    that is not FAIL.
+    capacity finding (:data:`CAPACITY_CHECKS`) the rating's factors; a scuffing finding
+    the oil, inlet temperature and roughness it depends on (ISO/TS 6336-20: the flash
+    temperature and the oil's scuffing temperature), as the same run with those options.
+    Nothing for a verdict that is not FAIL.
 
     Parameters
     ----------
@@ -404,6 +406,13 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                 f"    ltca vh-check {shown} --flank {side}",
                 f"    ltca optimize {shown} --flank {side} --torque {torques} {' '.join(parts)} "
                 "--max-edge-share 0.02 --max-evaluations 100"]
+    if "scuffing" in failed:
+        out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "
+                "flanks and a lower speed, and an oil of a higher FZG load stage has a higher "
+                "scuffing temperature (an oil file: docs/friction.md; "
+                "docs/scuffing_micropitting.md); the same run with them:",
+                f"    ltca run {shown} --flank {side} --torque {torques} --lubricant OIL.toml "
+                "--temperature DEGC --roughness UM"]
     if failed & set(CAPACITY_CHECKS):
         out += ["  next, the load capacity: every factor of the rating; a wider face, a larger "
                 "module or a stronger material (the basic file's [design] and [rating]) carry "
