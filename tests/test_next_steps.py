@@ -99,3 +99,6 @@ def test_a_scuffing_failure_names_the_oil_temperature_and_roughness(monkeypatch)
     assert len(commands) == 1 and commands[0][:3] == ["ltca", "run", "e.toml"]
     args = build_parser().parse_args(commands[0][1:])
     assert args.flank == "coast" and args.torque == [49.1, 327.6]
+    case = resolve_case(CASE)  # the example: 20 K below the case's inlet, half its Rq
+    assert args.temperature == case.operating.temperature - 20.0
+    assert args.roughness == case.operating.roughness / 2.0

@@ -407,12 +407,14 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                 f"    ltca optimize {shown} --flank {side} --torque {torques} {' '.join(parts)} "
                 "--max-edge-share 0.02 --max-evaluations 100"]
     if "scuffing" in failed:
+        op = case.operating
         out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "
                 "flanks and a lower speed, and an oil of a higher FZG load stage has a higher "
-                "scuffing temperature (an oil file: docs/friction.md; "
-                "docs/scuffing_micropitting.md); the same run with them:",
-                f"    ltca run {shown} --flank {side} --torque {torques} --lubricant OIL.toml "
-                "--temperature DEGC --roughness UM"]
+                "scuffing temperature (--lubricant OIL.toml, an oil file: docs/friction.md; "
+                "docs/scuffing_micropitting.md); the same run 20 K cooler with flanks half as "
+                "rough, for example:",
+                f"    ltca run {shown} --flank {side} --torque {torques} --temperature "
+                f"{op.temperature - 20.0:g} --roughness {op.roughness / 2.0:g}"]
     if failed & set(CAPACITY_CHECKS):
         out += ["  next, the load capacity: every factor of the rating; a wider face, a larger "
                 "module or a stronger material (the basic file's [design] and [rating]) carry "
