@@ -38,6 +38,9 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
 * ``certification`` (attention): roll positions without a certified contact solution;
   fail where a torque has none (the analysis failed there:
   :func:`contact.ltca.summary.certification`).
+* ``root_stress`` (attention): the tooth-root stress was asked for but its FE model of the
+  teeth failed (the root attribute ``root_stress_not_run`` says why, e.g. an inverted
+  element): the bending side then rests on the ISO 10300 rating alone.
 * ``friction_extrapolated`` (attention): the friction model ran outside its fitted range
   (``/friction/friction_model_extrapolated``; flanks and edges as
   :func:`friction.efficiency.extrapolation_summary` splits them).
@@ -478,6 +481,12 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
         findings += [Finding("fail", "implausible", w) for w in _misalignment(tree)]
         findings += _flank_pressure(lt) + _edge_contact(lt) + _plastic(lt)
         findings += _certification(lt)
+        checks += ["root_stress"]
+        said = str(getattr(tree, "attrs", {}).get("root_stress_not_run", ""))
+        if "root_stress_max" not in lt and said.startswith("root stress not computed"):
+            findings.append(Finding("attention", "root_stress",
+                                    f"{said}; the bending side rests on the ISO 10300 "
+                                    "rating alone"))
     if fr is not None:
         checks += ["friction_extrapolated"]
         findings += _friction(fr)
@@ -649,8 +658,8 @@ _KINDS: Mapping[str, Callable[..., tuple[list[Finding], list[str]]]] = {
 #: the checks of each kind of result (module docstring)
 CHECKS: Mapping[str, tuple[str, ...]] = {
     "analysis": ("implausible", "flank_pressure", "edge_contact", "plastic_edges",
-                 "certification", "friction_extrapolated", "scuffing", "micropitting",
-                 "rating"),
+                 "certification", "root_stress", "friction_extrapolated", "scuffing",
+                 "micropitting", "rating"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
                    "certification", "bending", "illustrative"),
     "V-H check": ("degenerate", "target", "map"),
