@@ -125,3 +125,53 @@ def test_five_tooth_pinion_runs_with_root_stress(tmp_path, monkeypatch):
     peak = lt["root_stress_max"].isel(torque=0)
     assert set(peak["member"].values) == {"pinion", "gear"}
     assert np.all(np.isfinite(peak.values)) and np.all(peak.values > 0)
+
+
+# ------------------------------------------------------------------ folded envelopes
+FOLDED = ROOT / "tests" / "data" / "spiral_bevel_14x35_s70_case.toml"
+
+
+def test_a_fold_of_the_side_is_cut_at_its_lowest_level():
+    """A side that rises, turns down and rises again (a Z of samples, as the
+    envelope's swallowtail): the boundary follows the first branch to the fold's lowest
+    level, v = 0.2, and the last branch from there — the point on the first branch at
+    that level interpolated by hand (v 0.1 → 0.3 over φ 0 → 0.2: φ 0.1) —, and the
+    rest is kept; a side that only rises, or whose fold is below the tolerance, is
+    returned unchanged."""
+    from contact.compliance.fe.section import _FOLD_TOLERANCE, _without_folds
+
+    v = np.array([-0.1, 0.0, 0.1, 0.3, 0.25, 0.2, 0.4, 1.0])
+    phi = np.array([0.0, 0.0, 0.0, 0.2, 0.21, 0.22, 0.25, 0.3])
+    s = np.arange(v.size, dtype=float)
+    rho = np.full(v.size, 20.0)
+    nv, nphi, ns, _ = _without_folds(v, phi, s, rho, 10.0)
+    np.testing.assert_allclose(nv, [-0.1, 0.0, 0.1, 0.2, 0.2, 0.4, 1.0], atol=1e-15)
+    np.testing.assert_allclose(nphi, [0.0, 0.0, 0.0, 0.1, 0.22, 0.25, 0.3], atol=1e-15)
+    np.testing.assert_allclose(ns, [0.0, 1.0, 2.0, 2.5, 5.0, 6.0, 7.0], atol=1e-15)
+    assert np.all(np.diff(nv) >= 0)
+    rising = np.sort(v)
+    assert all(np.array_equal(a, b) for a, b in
+               zip(_without_folds(rising, phi, s, rho, 10.0), (rising, phi, s, rho),
+                   strict=True))
+    tiny = v.copy()
+    tiny[4:6] = 0.3 - 0.5 * _FOLD_TOLERANCE / 10.0  # half the tolerance deep
+    assert _without_folds(tiny, phi, s, rho, 10.0)[0].size == v.size
+
+
+def test_the_sigma_70_spiral_bevel_pinion_meshes_by_default():
+    """Issue 71: the 14x35 spiral bevel pinion at Σ = 70° (synthesised with every
+    default) ran without root stress: its concave side's samples fold at the toe (up to
+    0.25 of the depth, down to 0.17, up the flank) and the default mesh's rows, placed by
+    arc length along the side, inverted 138 elements. With the fold cut every side rises
+    from its lowest point to the tip (within the tolerance) and the default solid has no
+    inverted element (worst Jacobian ratio measured 0.47 > 0.1)."""
+    from contact.compliance.fe.section import _FOLD_TOLERANCE
+
+    case = load_case(FOLDED)
+    solid = build_tooth_solid(case, "pinion", FEOptions())
+    assert solid.mesh.min_jacobian > 0.1
+    for sec in solid.sections.sections:
+        for side in (sec.left, sec.right):
+            rest = side.v[int(np.argmin(side.v)):]
+            drop = np.maximum.accumulate(rest) - rest
+            assert drop.max() * sec.length_v < _FOLD_TOLERANCE
