@@ -564,9 +564,12 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                                     f"bins {', '.join(str(b) for b in bad)} have roll "
                                     "positions without a certified contact solution"))
     if "root_life" not in ds:
+        said = str(ds.attrs.get("bending", ""))
+        why = (said.removeprefix("unavailable: ").split("; no bending")[0]
+               if "the FE model failed" in said else "leave out --no-root-stress")
         findings.append(Finding("attention", "bending",
                                 "bending side not evaluated: the bins have no root stress "
-                                "(leave out --no-root-stress)"))
+                                f"({why})"))
     if int(ds.attrs.get("illustrative", 0)):
         findings.append(Finding("attention", "illustrative",
                                 "the spectrum is the bundled ILLUSTRATIVE one (made-up "
