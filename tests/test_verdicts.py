@@ -380,3 +380,27 @@ def test_above_the_design_torque_a_low_long_life_safety_is_a_finite_life():
     below = rt.assign(design_torque=((), 500.0))
     assert {f.severity for f in verdict(_tree(ltca=_ltca([700.0, 700.0]),
                                               rating=below)).findings} == {"fail"}
+
+
+def test_a_failed_fe_model_is_a_finding_not_only_a_console_line():
+    """Issue 71: the 14x35 spiral bevel at Sigma 70 deg ran with rc 0 but without root
+    stress (its pinion's FE mesh inverted an element); the verdict said nothing of it.
+    The tree's root attribute ``root_stress_not_run`` (contact.chain) with the FE model's
+    failure gives an attention finding that quotes it; root stress present, or left out
+    on purpose (--no-root-stress: a different sentence), gives none."""
+    said = ("root stress not computed: the FE model failed (mesh mapping: element 6489 "
+            "(parameter centre [56.5  9.5 11.5]) is inverted or collapsed; refine the mesh "
+            "or check the geometry)")
+    tree = _tree(ltca=_ltca([1000.0, 1200.0]))
+    tree.attrs["root_stress_not_run"] = said
+    v = verdict(tree)
+    found = [f for f in v.findings if f.check == "root_stress"]
+    assert len(found) == 1 and found[0].severity == "attention"
+    assert found[0].reason.startswith(said) and "ISO 10300 rating alone" in found[0].reason
+    assert "root_stress" in v.checks
+    tree.attrs["root_stress_not_run"] = "tooth-root stress not computed (--no-root-stress)"
+    assert not [f for f in verdict(tree).findings if f.check == "root_stress"]
+    ok = _tree(ltca=_ltca([1000.0, 1200.0], root_stress_max=(("torque", "member"),
+                                                             np.ones((2, 2)))))
+    ok.attrs["root_stress_not_run"] = said
+    assert not [f for f in verdict(ok).findings if f.check == "root_stress"]

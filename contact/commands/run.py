@@ -385,7 +385,10 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     the case already is (:func:`contact.commands.next_steps.bearing_lines`); a capacity
     finding (:data:`CAPACITY_CHECKS`) the rating's factors — first where the gear set is
     too small for its load (a failed rating, or a flank pressure above its static
-    strength: no bearing change answers that). Nothing for a verdict that is not FAIL.
+    strength: no bearing change answers that); a scuffing finding the oil, inlet temperature
+    and roughness it depends on (ISO/TS 6336-20: the flash temperature and the oil's
+    scuffing temperature), as the same run with those options. Nothing for a verdict
+    that is not FAIL.
 
     Parameters
     ----------
@@ -448,6 +451,15 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                              else None, rate=not failed & set(CAPACITY_CHECKS))
     if not overloaded:
         out += capacity
+    if "scuffing" in failed:
+        op = case.operating
+        out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "
+                "flanks and a lower speed, and an oil of a higher FZG load stage has a higher "
+                "scuffing temperature (--lubricant OIL.toml, an oil file: docs/friction.md; "
+                "docs/scuffing_micropitting.md); the same run 20 K cooler with flanks half as "
+                "rough, for example:",
+                f"    ltca run {shown} --flank {side} --torque {torques} --temperature "
+                f"{op.temperature - 20.0:g} --roughness {op.roughness / 2.0:g}"]
     return out
 
 
@@ -630,7 +642,7 @@ def durability_lines(friction, standard=None) -> list[str]:
             f"{float(friction['contact_temperature_max'].values[i]):.0f} degC (flash "
             f"{float(friction['flash_temperature_max'].values[i]):.0f} K), scuffing safety "
             f"S_B {_number(s_b)}, least lambda_GF (film at the bulk temperature theta_M, "
-            f"ISO/TS 6336-22) {float(friction['specific_film_thickness_min'].values[i]):.3f}"
+            f"ISO/TS 6336-22) {_film_at_bulk(friction, i)}"
             + (f" (at the oil inlet {float(inlet.values[i]):.3f})" if inlet is not None
                else "")
             + (f", S_lambda {s_l:.2f}" if math.isfinite(s_l) else ""))
@@ -680,6 +692,22 @@ def _standard_lines(iso) -> list[str]:
                    f"{float(one['mean_friction_coefficient']):.3f}), S_B "
                    f"{_number(float(one['scuffing_safety']))}{spread}")
     return out
+
+
+def _film_at_bulk(friction, i: int) -> str:
+    """The least λ_GF at θ_M of torque ``i`` (3 decimals), or "-" with the reason where
+    the bulk temperature lies beyond the oil's data (no film computed there; the
+    segments' ``specific_film_thickness`` comment says so) instead of a bare "nan"."""
+    lam = float(friction["specific_film_thickness_min"].values[i])
+    if math.isfinite(lam):
+        return f"{lam:.3f}"
+    bulk = friction.get("bulk_temperature")
+    comment = str(friction["specific_film_thickness"].attrs.get("comment", "")
+                  if "specific_film_thickness" in friction else "")
+    if bulk is not None and math.isfinite(float(bulk.values[i])) and "beyond" in comment:
+        return (f"- (theta_M {float(bulk.values[i]):.0f} degC lies beyond the oil's "
+                "viscosity data: no film computed there)")
+    return "-"
 
 
 def _number(value: float, decimals: int = 2) -> str:

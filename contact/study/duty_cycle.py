@@ -631,15 +631,29 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
             raise InputError("root_stress: must be True, False or a "
                              f"contact.compliance.fe.FEOptions, got {root_stress!r}")
     coefficients: tuple = ()
+    fe_failed = ""
     if root_stress is not False:  # built once here, handed to every worker (primed caches)
         from contact.ltca.root_stress import prepare_coefficients
+        from geometry.core.errors import LTCAError
 
-        coefficients = tuple(prepare_coefficients(
-            case, run.flank, None if root_stress is True else root_stress,
-            progress=run.progress is True).values())  # a bar on a terminal only
+        try:
+            coefficients = tuple(prepare_coefficients(
+                case, run.flank, None if root_stress is True else root_stress,
+                progress=run.progress is True).values())  # a bar on a terminal only
+        except LTCAError as exc:
+            # the FE model of these teeth could not be built (an inverted element): the
+            # duty cycle runs on without the bending side, as `ltca run` does without
+            # root stress (contact.chain.root_stress_fe), and says why
+            fe_failed = f"root stress not computed: the FE model failed ({exc})"
+            log.warning("%s", fe_failed)
+            root_stress = False
     shared = DutyInputs(case, duty, run.options or LTCAOptions(), run.flank, root_stress,
                         coefficients)
-    return duty_cycle_result(shared, _bins(shared, run))
+    out = duty_cycle_result(shared, _bins(shared, run))
+    if fe_failed:
+        out.attrs["bending"] = (f"unavailable: {fe_failed}; no bending damage or life is "
+                                "reported")
+    return out
 
 
 def bin_table(ds: xr.Dataset) -> list[Mapping[str, Any]]:

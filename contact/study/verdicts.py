@@ -38,6 +38,9 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
 * ``certification`` (attention): roll positions without a certified contact solution;
   fail where a torque has none (the analysis failed there:
   :func:`contact.ltca.summary.certification`).
+* ``root_stress`` (attention): the tooth-root stress was asked for but its FE model of the
+  teeth failed (the root attribute ``root_stress_not_run`` says why, e.g. an inverted
+  element): the bending side then rests on the ISO 10300 rating alone.
 * ``friction_extrapolated`` (attention): the friction model ran outside its fitted range
   (``/friction/friction_model_extrapolated``; flanks and edges as
   :func:`friction.efficiency.extrapolation_summary` splits them).
@@ -577,6 +580,13 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
         findings += (_flank_pressure(lt, _static_torques(rt)) + _edge_contact(lt)
                      + _plastic(lt))
         findings += _certification(lt)
+        # the FE model failed: an attention of its own beside "not checked: root_stress"
+        # (contact.study.verdict_checks makes the check where the root stress is there)
+        said = str(getattr(tree, "attrs", {}).get("root_stress_not_run", ""))
+        if "root_stress_max" not in lt and said.startswith("root stress not computed"):
+            findings.append(Finding("attention", "root_stress",
+                                    f"{said}; the bending side rests on the ISO 10300 "
+                                    "rating alone"))
     if fr is not None:
         checks += ["friction_extrapolated"]
         findings += _friction(fr)
@@ -659,9 +669,12 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                                     f"bins {', '.join(str(b) for b in bad)} have roll "
                                     "positions without a certified contact solution"))
     if "root_life" not in ds:
+        said = str(ds.attrs.get("bending", ""))
+        why = (said.removeprefix("unavailable: ").split("; no bending")[0]
+               if "the FE model failed" in said else "leave out --no-root-stress")
         findings.append(Finding("attention", "bending",
                                 "bending side not evaluated: the bins have no root stress "
-                                "(leave out --no-root-stress)"))
+                                f"({why})"))
     if int(ds.attrs.get("illustrative", 0)):
         findings.append(Finding("attention", "illustrative",
                                 "the spectrum is the bundled ILLUSTRATIVE one (made-up "
