@@ -524,6 +524,8 @@ def _film_and_friction(
             e_prime=e_prime,
             temperature=op.temperature,
             thermal_factor=phi_t,
+            temperature_viscosity=beta,
+            oil_thermal_conductivity=k_oil,
         )
         accepted = get_friction_model(op.friction_model).optional
         inputs.update({k: v for k, v in oil.traction.items() if k in accepted})
