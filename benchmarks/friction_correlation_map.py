@@ -42,20 +42,21 @@ import tempfile
 import warnings
 from pathlib import Path
 
-import numpy as np
 from tabulate import tabulate
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+# the tree this script belongs to, before an installed copy of the package
+sys.path.insert(1, str(Path(__file__).resolve().parents[1]))
 
-from friction_anchors import _flank_weighted, _ltca  # noqa: E402
+from friction_anchors import _flank_weighted, _ltca
 
-from friction.coefficient import FrictionModelRangeWarning, iso_tr_14179_2  # noqa: E402
-from friction.efficiency import efficiency_analysis  # noqa: E402
-from friction.lubricant import BASE_OIL_FACTORS, load_lubricant  # noqa: E402
-from friction.oil_data_sheet import OilDataSheet, oil_file_mapping  # noqa: E402
-from friction.operating import OperatingConditions  # noqa: E402
-from friction.thermal_eyring import thermal_eyring  # noqa: E402
-from geometry.core.toml_files import dump_toml  # noqa: E402
+from friction.coefficient import FrictionModelRangeWarning, iso_tr_14179_2
+from friction.efficiency import efficiency_analysis
+from friction.lubricant import BASE_OIL_FACTORS, load_lubricant
+from friction.oil_data_sheet import OilDataSheet, oil_file_mapping
+from friction.operating import OperatingConditions
+from friction.thermal_eyring import thermal_eyring
+from geometry.core.toml_files import dump_toml
 
 #: label → (case, torques [N·m], rolls per cycle or None, index of the 500 N·m torque)
 CASES = {
