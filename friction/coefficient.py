@@ -121,6 +121,8 @@ STANDARD_INPUTS: Mapping[str, str] = MappingProxyType(
                                  " (friction.lubricant.temperature_viscosity_coefficient)",
         "oil_thermal_conductivity": "[W/(m K)] the oil's thermal conductivity at the inlet"
                                     " temperature",
+        "pressure_viscosity_temperature": "[1/K] −d ln α/dT of the oil at the inlet"
+                                          " temperature (α's fall with temperature)",
     }
 )
 

@@ -9,13 +9,15 @@ and its boundary friction, and replaces the film shear with a *thermal* Eyring s
 at every quadrature node of the Hertz zone the shear stress τ satisfies
 
     τ = min(τ₀ asinh(η(p, T_f) V_s / (h_c τ₀)), Λ p),
-    η(p, T_f) = η₀ exp(α p − β (T_f − T₀)),
+    η(p, T_f) = η₀ exp(α₀ e^(−β_α (T_f − T₀)) p − β (T_f − T₀)),
     T_f − T₀ = ΔT_s + c_f ΔT_c,
     ΔT_s = (4/(3√π)) q √(2b) / (B (√u₁ + √u₂)),   ΔT_c = q h_c / (8 k),   q = τ V_s,
 
 with p = p_h cos θ / γ₁ (the film's share of the Hertz pressure), T₀ the inlet (bulk)
-oil temperature, β the oil's temperature–viscosity coefficient at T₀, k its thermal
-conductivity, and
+oil temperature, β the oil's temperature–viscosity coefficient at T₀, β_α = −d ln α/dT
+the fall of its pressure–viscosity coefficient with temperature at T₀ (from the oil's α
+table; ISO/TR 15144-1's α(θ) relation for a data-sheet oil), k its thermal conductivity,
+and
 
 * ΔT_s the surfaces' mean flash temperature under the heat flux q of the film's shear:
   Jaeger's band source at high Péclet number, ΔT(x) = 2q√(x + b)/(√π B √u) for one
@@ -36,10 +38,9 @@ root finder. As V_s → 0 the heating vanishes and the model is ``mixed_ehl``; t
 temperature enters through β and k, which are properties of the oil (its file), so oils
 differ only through their data.
 
-Assumptions stated (not fitted): τ₀ and Λ independent of temperature; α at the inlet
-temperature (its fall with the film temperature is not modelled, which overstates the
-viscosity of a hot film at high pressure); the exponential η(T) with the inlet β (over
-large ΔT it overstates the fall of viscosity that Vogel's form gives); steel surfaces
+Assumptions stated (not fitted): τ₀ and Λ independent of temperature; the exponential
+η(T) and α(T) with their slopes at the inlet temperature (over large ΔT they overstate
+the fall that Vogel's form and the α table give); Barus' η(p); steel surfaces
 (K 46 W/(m K), ρ 7850 kg/m³, c 470 J/(kg K)).
 
 Sources: Eyring (1936); Johnson, K. L., Tevaarwerk, J. L., Proc. R. Soc. Lond. A 356
@@ -91,6 +92,10 @@ THERMAL_EYRING_DEFAULTS = {
         "passes the oil's (friction.lubricant.temperature_viscosity_coefficient)"),
     "oil_thermal_conductivity": (
         0.135, "[W/(m K)] the oil's; the efficiency stage passes the oil file's"),
+    "pressure_viscosity_temperature": (
+        0.0, "[1/K] β_α = −d ln α/dT at the inlet temperature (0: α held at the inlet's); "
+        "the efficiency stage passes the oil's, from its α table (75W90, Table 5.2: "
+        "0.0065 at 90 °C)"),
     "film_heating": (
         1.0, "[1] c_f, weight of the film's Couette mid-plane rise q h/(8k) (Johnson & "
         "Greenwood 1980): 1 uniform shear across the film, 0 the surfaces' flash "
@@ -103,6 +108,7 @@ def thermal_eyring_film_shear(
     shear_rate_film: ArrayLike, sliding_velocity: ArrayLike, film_thickness: ArrayLike,
     flash_factor: ArrayLike, eyring_stress: float, limiting_shear_coefficient: float,
     temperature_viscosity: float, oil_thermal_conductivity: float, film_heating: float,
+    pressure_viscosity_temperature: float = 0.0,
 ) -> tuple[Array, Array]:
     """The thermal Eyring shear stress τ [MPa] and the film's temperature rise [K] at
     given film pressures (all arrays broadcast together).
@@ -121,11 +127,13 @@ def thermal_eyring_film_shear(
     temperature_viscosity : float — [1/K] β
     oil_thermal_conductivity : float — [W/(m K)] k
     film_heating : float — [1] c_f
+    pressure_viscosity_temperature : float — [1/K] β_α ≥ 0
 
     Returns
     -------
     (τ, ΔT) : arrays — [MPa], [K]
-        The root of τ = min(τ₀ asinh(η(p, T₀ + ΔT(τ)) γ̇/τ₀), Λ p) and its temperature rise.
+        The root of τ = min(τ₀ asinh(η(p, T₀ + ΔT(τ)) γ̇/τ₀), Λ p) and its temperature rise;
+        η(p, T₀ + ΔT) = η₀ exp(α e^(−β_α ΔT) p − β ΔT).
 
     Notes
     -----
@@ -138,23 +146,28 @@ def thermal_eyring_film_shear(
     # ΔT per MPa of τ: q = τ·1e6·V_s [W/m²]
     dt_per_tau = 1e6 * vs * (flash + film_heating * h * 1e-6 / (8.0 * oil_thermal_conductivity))
     cap = limiting_shear_coefficient * p
+    ap = alpha * 1e-3 * p  # α₀ p [1]
     with np.errstate(over="ignore"):
-        eta_iso = eta0 * np.exp(alpha * 1e-3 * p)
+        eta_iso = eta0 * np.exp(ap)
+    b_a = pressure_viscosity_temperature
 
-    def stress(tau: Array, eta_i: Array, r: Array, k: Array, c: Array) -> Array:
+    def stress(tau: Array, e0: Array, a_p: Array, r: Array, k: Array, c: Array) -> Array:
         # the Eyring law of eyring_shear_stress, written out: the heated viscosity may
         # underflow to 0 (τ → 0), which that function's input check refuses
+        dt = k * tau
         with np.errstate(over="ignore", under="ignore"):
-            arg = eta_i * np.exp(-temperature_viscosity * k * tau) * r / (eyring_stress * 1e6)
+            arg = e0 * np.exp(a_p * np.exp(-b_a * dt) - temperature_viscosity * dt) * r \
+                / (eyring_stress * 1e6)
         return np.minimum(eyring_stress * np.arcsinh(arg), c)
 
     tau_iso = np.minimum(np.asarray(eyring_shear_stress(eta_iso, rate, eyring_stress)), cap)
     tau = np.array(tau_iso, dtype=float)
-    need = (tau_iso > 0.0) & (dt_per_tau * tau_iso * temperature_viscosity > 1e-12)
+    need = (tau_iso > 0.0) & (dt_per_tau * tau_iso * (temperature_viscosity + b_a * ap)
+                              > 1e-12)
     if np.any(need):
-        args = (eta_iso[need], rate[need], dt_per_tau[need], cap[need])
+        args = (eta0[need], ap[need], rate[need], dt_per_tau[need], cap[need])
         res = elementwise.find_root(
-            lambda t, e, r, k, c: t - stress(t, e, r, k, c),
+            lambda t, e, a, r, k, c: t - stress(t, e, a, r, k, c),
             (np.zeros(int(need.sum())), tau_iso[need]), args=args,
             tolerances={"xatol": 1e-12, "xrtol": 1e-10})
         tau[need] = res.x
@@ -175,6 +188,8 @@ def thermal_eyring(
     roughness_2: ArrayLike,
     thermal_factor: ArrayLike = 1.0,
     temperature_viscosity: float = THERMAL_EYRING_DEFAULTS["temperature_viscosity"][0],
+    pressure_viscosity_temperature: float = THERMAL_EYRING_DEFAULTS[
+        "pressure_viscosity_temperature"][0],
     oil_thermal_conductivity: float = THERMAL_EYRING_DEFAULTS["oil_thermal_conductivity"][0],
     film_heating: float = THERMAL_EYRING_DEFAULTS["film_heating"][0],
     eyring_stress: float = MIXED_EHL_DEFAULTS["eyring_stress"][0],
@@ -191,7 +206,10 @@ def thermal_eyring(
         As :func:`friction.mixed_ehl.mixed_ehl_solution` (toolkit units: N/mm, MPa, mm,
         MPa, m/s, m/s, Pa s, 1/GPa, µm, µm, 1).
     temperature_viscosity : float — [1/K]
-        β ≥ 0 of the oil at the inlet temperature (0: isothermal, μ = ``mixed_ehl``'s).
+        β ≥ 0 of the oil at the inlet temperature (0 with β_α = 0: isothermal, μ =
+        ``mixed_ehl``'s).
+    pressure_viscosity_temperature : float — [1/K]
+        β_α = −d ln α/dT ≥ 0 of the oil at the inlet temperature.
     oil_thermal_conductivity : float — [W/(m K)]
         k > 0 of the oil.
     film_heating : float — [1]
@@ -226,6 +244,8 @@ def thermal_eyring(
     k_oil = float(real_array("oil_thermal_conductivity", oil_thermal_conductivity, low=0.0,
                              low_open=True, high=10.0, unit="W/(m K)"))
     c_f = float(real_array("film_heating", film_heating, low=0.0, high=1.0, unit="1"))
+    b_a = float(real_array("pressure_viscosity_temperature", pressure_viscosity_temperature,
+                           low=0.0, high=1.0, unit="1/K"))
     sol = mixed_ehl_solution(
         load_per_length=load_per_length, hertz_pressure=hertz_pressure, radius=radius,
         e_prime=e_prime, entraining_velocity=entraining_velocity,
@@ -254,7 +274,8 @@ def thermal_eyring(
         shear_rate_film=(vs / (h_c * 1e-6))[..., None], sliding_velocity=vs[..., None],
         film_thickness=h_c[..., None], flash_factor=flash[..., None],
         eyring_stress=eyring_stress, limiting_shear_coefficient=limiting_shear_coefficient,
-        temperature_viscosity=beta, oil_thermal_conductivity=k_oil, film_heating=c_f)
+        temperature_viscosity=beta, oil_thermal_conductivity=k_oil, film_heating=c_f,
+        pressure_viscosity_temperature=b_a)
     mu_film = b * np.sum(tau * _COS_THETA * _W_THETA, axis=-1) / w
     return scalar_or_array(mu_film + sol.boundary_friction)
 
