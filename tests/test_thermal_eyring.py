@@ -152,3 +152,13 @@ def test_registered_and_refuses_bad_parameters() -> None:
         thermal_eyring(**SEGMENT, film_heating=1.5)
     with pytest.raises(InputError, match="oil_thermal_conductivity"):
         thermal_eyring(**SEGMENT, oil_thermal_conductivity=0.0)
+
+
+def test_efficiency_stage_passes_the_oils_alpha_slope() -> None:
+    # the bundled 75W90 (seed Table 5.2: α 11.4 at 75 °C, 9.7 GPa⁻¹ at 100 °C, log-linear
+    # between): −d ln α/dT at 90 °C is ln(11.4/9.7)/25 K exactly
+    from friction.efficiency import _alpha_temperature_coefficient
+    from friction.lubricant import load_lubricant
+
+    slope = _alpha_temperature_coefficient(load_lubricant("75W90"), 90.0)
+    assert slope == pytest.approx(math.log(11.4 / 9.7) / 25.0, rel=1e-9)
