@@ -2,7 +2,8 @@
 speed, torque and oil (issue 74, item 3).
 
 For Table 5.4's face-hobbed A and B (100 / 500 / 1000 N·m, 20 rolls per cycle) and the
-default case (``kolivand2009_fm_11x41_reference``, 50 / 250 / 500 N·m), prints the
+default case (``kolivand2009_fm_11x41_reference``) and a spiral bevel pair (ISO 23509's
+sample 1, ``spiral_bevel_iso23509_s1``; both 50 / 250 / 500 N·m), prints the
 **flank** load-weighted μ (edge contacts apart) and the mean mesh efficiency of
 
 * ``mixed_ehl`` — the default model;
@@ -27,7 +28,7 @@ the number.
 Usage::
 
     python benchmarks/friction_correlation_map.py [--ltca-cache DIR] [--cases A,B,default]
-        [--no-thermal]
+        [--no-thermal]   (cases: A, B, default, spiral)
 
 The LTCAs are those of ``benchmarks/friction_anchors.py`` / ``friction_map.py`` (computed
 once and cached in ``--ltca-cache``, default ``~/.cache/hypoid-ltca/benchmarks``).
@@ -63,6 +64,7 @@ CASES = {
     "A": ("kolivand2009_table54_A_fh", (100.0, 500.0, 1000.0), 20, 1),
     "B": ("kolivand2009_table54_B_fh", (100.0, 500.0, 1000.0), 20, 1),
     "default": ("kolivand2009_fm_11x41_reference", (50.0, 250.0, 500.0), None, 2),
+    "spiral": ("spiral_bevel_iso23509_s1", (50.0, 250.0, 500.0), None, 2),
 }
 ROUGHNESS = (0.1, 0.4, 0.8, 1.3)
 TEMPERATURES = (50.0, 70.0, 90.0, 100.0)
@@ -250,7 +252,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--ltca-cache", type=Path,
                     default=Path.home() / ".cache" / "hypoid-ltca" / "benchmarks")
-    ap.add_argument("--cases", default="A,B,default")
+    ap.add_argument("--cases", default="A,B,default,spiral")
     ap.add_argument("--no-thermal", action="store_true",
                     help="leave the opt-in thermal_eyring model out (faster)")
     args = ap.parse_args(argv)
