@@ -65,6 +65,7 @@ from contact.compliance.fe.elasticity import (
     Factorisation,
     elastic_model,
     factorise,
+    resolve_solver,
     stress_operator,
 )
 from contact.compliance.fe.mapped_mesh import FacetPoints, facet_points
@@ -91,7 +92,7 @@ log = logging.getLogger(__name__)
 #: stress components in Voigt order (member frame)
 COMPONENTS = ("xx", "yy", "zz", "yz", "xz", "xy")
 _SIDES = ("left", "right")
-_CHUNK = 32  # right-hand sides per solve
+_CHUNK = 64  # right-hand sides per solve (one dense block of CHOLMOD's: elasticity)
 _LOAD_ORDER = 6  # facet quadrature order of the hat loads (4 × 4 Gauss points per facet) ...
 _POINTS_PER_CELL = 2  # ... or more: Gauss points per load-grid cell across the largest facet
 
@@ -393,8 +394,10 @@ def build_influence_model(case, member: str, flank: str = "drive",
     grid_u = np.linspace(0.0, 1.0, opt.load_nu)
     grid_v = np.linspace(*load_v_limits(solid.sections, name, opt), opt.load_nv)
     times["solid"] = time.perf_counter() - t0
+    solver = resolve_solver(solver)
+    # CHOLMOD reads K's lower triangle: only that is assembled (half the memory, issue 75)
     elastic = elastic_model(solid.mesh.mesh, opt.element, opt.youngs_modulus,
-                            opt.poisson_ratio)
+                            opt.poisson_ratio, lower=solver == "cholmod")
     times["assembly"] = elastic.assemble_time
     n_nodes = elastic.basis.N
     fixed_nodes = solid.constrained_nodes()
