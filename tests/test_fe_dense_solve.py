@@ -112,3 +112,28 @@ def test_a_dense_solve_that_disagrees_falls_back(monkeypatch, caplog):
     assert sum("sparse solves used instead" in r.getMessage() for r in caplog.records) == 1
     np.testing.assert_allclose(got, ref, rtol=0, atol=1e-12 * np.abs(ref).max())
     np.testing.assert_array_equal(again, got)
+
+
+def test_lower_triangle_assembly_equals_the_whole_ks_to_the_bit(monkeypatch):
+    """``elastic_model(..., lower=True)`` (what a CHOLMOD build assembles, issue 75) stores
+    exactly the lower triangle of the whole K: the same pattern and the same values to the
+    bit (each block's duplicates summed as in the whole K, the blocks' pairwise sums
+    decided on the whole K's sizes), over many blocks (7 elements each) of a distorted
+    mesh, so the FE coefficients do not move."""
+    import scipy.sparse as sp
+
+    from contact.compliance.fe import elasticity
+
+    monkeypatch.setattr(elasticity, "_BLOCK", 7)
+    mm = mapped_mesh((6, 4, 3), lambda p: np.vstack([10.0 * p[0] + p[1] ** 2, 2.0 * p[1],
+                                                     2.0 * p[2] + 0.3 * p[0]]))
+    full = elastic_model(mm.mesh, "hex20", 206000.0, 0.3)
+    low = elastic_model(mm.mesh, "hex20", 206000.0, 0.3, lower=True)
+    want = sp.tril(full.stiffness, format="csr")
+    got = low.stiffness
+    want.sort_indices()
+    got.sort_indices()
+    assert got.nnz == want.nnz
+    np.testing.assert_array_equal(got.indptr, want.indptr)
+    np.testing.assert_array_equal(got.indices, want.indices)
+    np.testing.assert_array_equal(got.data, want.data)

@@ -123,6 +123,13 @@ class ElasticModel:
         return (3 * nodes[:, :, None] + np.arange(3)).reshape(len(elements), -1)
 
 
+def _full_nnz(part: sp.csr_matrix, lower: bool) -> int:
+    """Non-zeros of a part of K, or of the whole part where only its lower triangle is
+    stored (its pattern is symmetric: twice the lower's, less the diagonal, whose entries
+    are all positive: a stiffness's diagonal)."""
+    return part.nnz if not lower else 2 * part.nnz - int(np.count_nonzero(part.diagonal()))
+
+
 def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
                   poisson_ratio: float, *, lower: bool = False) -> ElasticModel:
     """Assemble the stiffness matrix of isotropic linear elasticity.
@@ -135,7 +142,8 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     poisson_ratio : float — [1]
     lower : bool — assemble K's lower triangle only (row ≥ column), all CHOLMOD reads:
         half the memory of the assembly and of K (issue 75); its entries are those of the
-        whole K to the bit (the same element terms summed in the same order)
+        whole K to the bit (the same element terms summed in the same order: the parts'
+        pairwise sums are decided on the whole K's sizes)
 
     Returns
     -------
@@ -165,6 +173,7 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     # pinion model) released before the assembly's sums, where its peak is (issue 75)
     del basis
     parts: list[sp.csr_matrix] = []
+    sizes: list[int] = []  # the whole K's non-zeros of each part
     eye = np.eye(3)
     for lo in range(0, ne, _BLOCK):
         sl = slice(lo, min(lo + _BLOCK, ne))
@@ -187,14 +196,20 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
         cols = np.tile(dofs, (1, 3 * nb)).ravel()
         values = ke.ravel()
         del ke, gg, gw
-        if lower:
-            keep = rows >= cols
-            rows, cols, values = rows[keep], cols[keep], values[keep]
-        parts.append(sp.csr_matrix((values, (rows, cols)), shape=(n, n)))
+        part = sp.csr_matrix((values, (rows, cols)), shape=(n, n))
+        if lower:  # the block's own sums first: its duplicates summed as in the whole K
+            part = sp.tril(part, format="csr")
+        parts.append(part)
+        del part
+        sizes.append(_full_nnz(parts[-1], lower))
         del rows, cols, values
-        while len(parts) > 1 and parts[-1].nnz >= parts[-2].nnz // 2:
+        # pairwise sums, each entry added O(log) times; decided on the whole K's sizes, so
+        # that the lower triangle's entries are summed in the same order (to the bit)
+        while len(parts) > 1 and sizes[-1] >= sizes[-2] // 2:
             last = parts.pop()
-            parts[-1] = parts[-1] + last      # pairwise sums: each entry added O(log) times
+            sizes.pop()
+            parts[-1] = parts[-1] + last
+            sizes[-1] = _full_nnz(parts[-1], lower)
     k = parts[0]
     for other in parts[1:]:
         k = k + other
