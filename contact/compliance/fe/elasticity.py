@@ -612,12 +612,14 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
         (:func:`elastic_model` with ``lower=True``), the others need the whole K
     fixed_dofs : ndarray of int — constrained dofs
     solver : str — ``"auto"``, or a key of :data:`SOLVERS`
-    isolated : bool — factorise and solve in a forked worker process (where ``fork``
-        exists, :func:`isolation_available`; else in this process): the native
-        factorisation and solves hold the interpreter for seconds to minutes, in which a
-        signal handler cannot run; waiting for a worker, a SIGTERM or Ctrl-C is honoured
-        within :data:`WORKER_POLL` and the worker killed (issue 64). The right-hand sides
-        and solutions go through a pipe (~20 MB per block of 32, tens of ms). Call
+    isolated : bool — factorise and solve in a worker process (where ``fork`` exists,
+        :func:`isolation_available`; else in this process): the native factorisation and
+        solves hold the interpreter for seconds to minutes, in which a signal handler
+        cannot run; waiting for a worker, a SIGTERM or Ctrl-C is honoured within
+        :data:`WORKER_POLL` and the worker killed (issue 64). CHOLMOD's worker is a new
+        lean interpreter (:mod:`contact.compliance.fe.solver_worker`, issue 75), the
+        other solvers' a fork of this process. The matrix, the right-hand sides and the
+        solutions go through a pipe (~40 MB per block of 64, tens of ms). Call
         :meth:`Factorisation.close` when done (the worker also ends with this process).
 
     Returns

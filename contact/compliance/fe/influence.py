@@ -730,7 +730,8 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     (:func:`contact.compliance.fe.superposition.fillet_stress`). Load and response are the same hat
     functional, so G is symmetric (Maxwell–Betti; module docstring, docs/fe.md).
 
-    The factorisation and the solves run in a worker process (where ``fork`` exists), so
+    The factorisation and the solves run in a worker process (where ``fork`` exists; for
+    CHOLMOD a new lean interpreter, :mod:`contact.compliance.fe.solver_worker`), so
     that SIGTERM or Ctrl-C ends a build within a tenth of a second rather than after the
     native factorisation (issue 64); each solved block of unit loads is kept beside the
     entry (:class:`contact.compliance.fe.cache.BlockCheckpoint`), so that a build
