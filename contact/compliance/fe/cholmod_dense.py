@@ -180,8 +180,9 @@ def cholmod_kernel(box: list) -> tuple[Callable[[np.ndarray], np.ndarray], int]:
     ----------
     box : list
         One item, taken out (its memory freed once copied into cvxopt's matrix): the
-        tuple ``(data, indices, indptr, n)`` of the matrix's lower triangle in CSC
-        (float64, integer, integer, int) [N/mm].
+        tuple ``(data, indices, indptr, n, ordering)`` of the matrix's lower triangle in
+        CSC (float64, integer, integer, int) [N/mm] and its fill-reducing permutation
+        (ndarray (n,) of int: entry k the row eliminated k-th) or None (AMD).
 
     Returns
     -------
@@ -197,12 +198,14 @@ def cholmod_kernel(box: list) -> tuple[Callable[[np.ndarray], np.ndarray], int]:
 
     Notes
     -----
-    Supernodal factor, CHOLMOD's fill-reducing ordering (AMD: cvxopt's CHOLMOD has no
-    METIS). Source: Chen, Davis, Hager, Rajamanickam 2008 (:func:`dense_solver`).
+    Supernodal factor; the ordering given (METIS's nested dissection,
+    :func:`contact.compliance.fe.elasticity.nested_dissection`) or CHOLMOD's AMD (cvxopt's
+    CHOLMOD has no METIS of its own). Source: Chen, Davis, Hager, Rajamanickam 2008
+    (:func:`dense_solver`).
     """
     from cvxopt import cholmod, matrix, spmatrix
 
-    data, indices, indptr, n = box.pop()
+    data, indices, indptr, n, ordering = box.pop()
     columns = np.repeat(np.arange(n, dtype=np.int64), np.diff(indptr))
     mat = spmatrix(data, np.asarray(indices, dtype=np.int64), columns, size=(n, n))
     del columns, data, indices, indptr
@@ -210,7 +213,13 @@ def cholmod_kernel(box: list) -> tuple[Callable[[np.ndarray], np.ndarray], int]:
     try:
         cholmod.options["supernodal"] = 2          # supernodal (BLAS-3) numeric factor
         cholmod.options["postorder"] = True
-        factor = cholmod.symbolic(mat, uplo="L")
+        if ordering is None:
+            factor = cholmod.symbolic(mat, uplo="L")
+        else:  # the given ordering alone (nmethods 1: not compared with AMD's)
+            cholmod.options["nmethods"] = 1
+            factor = cholmod.symbolic(mat, p=matrix(np.asarray(ordering, dtype=np.int64)),
+                                      uplo="L")
+            del ordering
         cholmod.numeric(mat, factor)
     except ArithmeticError as exc:                 # not positive definite: singular K
         raise RuntimeError(f"CHOLMOD: {exc}") from None

@@ -65,6 +65,7 @@ from contact.compliance.fe.elasticity import (
     Factorisation,
     elastic_model,
     factorise,
+    nested_dissection,
     resolve_solver,
     stress_operator,
 )
@@ -406,8 +407,12 @@ def build_influence_model(case, member: str, flank: str = "drive",
     # is free before the factor takes its own (the build's peak, issue 53)
     box = [elastic.stiffness]
     elastic = dataclasses.replace(elastic, stiffness=None)
-    factor = factorise(box.pop(), (3 * fixed_nodes[:, None] + np.arange(3)).ravel(), solver,
-                       isolated=isolated)
+    fixed = (3 * fixed_nodes[:, None] + np.arange(3)).ravel()
+    # METIS's nested dissection where pymetis is installed (issue 75), else CHOLMOD's AMD
+    ordering = None if solver != "cholmod" else nested_dissection(
+        elastic.basis.element_dofs, n_nodes, np.setdiff1d(np.arange(3 * n_nodes), fixed))
+    factor = factorise(box.pop(), fixed, solver, isolated=isolated, ordering=ordering)
+    del ordering
     times["factorisation"] = factor.factor_time
     t1 = time.perf_counter()
     side = solid.sections.side_name(name)
