@@ -67,9 +67,9 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import elementwise
 
 from friction.mixed_ehl import (
-    _COS_THETA,
-    _W_THETA,
+    COS_THETA,
     MIXED_EHL_DEFAULTS,
+    W_THETA,
     eyring_shear_stress,
     mixed_ehl_solution,
 )
@@ -272,7 +272,7 @@ def thermal_eyring(
     u2 = np.maximum(u - 0.5 * vs, 0.0)
     flash = _BAND_MEAN * np.sqrt(2.0 * b * 1e-3) / (STEEL_EFFUSIVITY
                                                    * (np.sqrt(u1) + np.sqrt(u2)))
-    p_film = (ph / gamma1)[..., None] * _COS_THETA
+    p_film = (ph / gamma1)[..., None] * COS_THETA
     tau, _ = thermal_eyring_film_shear(
         pressure=p_film, viscosity=eta0[..., None], pressure_viscosity=alpha[..., None],
         shear_rate_film=(vs / (h_c * 1e-6))[..., None], sliding_velocity=vs[..., None],
@@ -280,6 +280,6 @@ def thermal_eyring(
         eyring_stress=eyring_stress, limiting_shear_coefficient=limiting_shear_coefficient,
         temperature_viscosity=beta, oil_thermal_conductivity=k_oil, film_heating=c_f,
         pressure_viscosity_temperature=b_a)
-    mu_film = b * np.sum(tau * _COS_THETA * _W_THETA, axis=-1) / w
+    mu_film = b * np.sum(tau * COS_THETA * W_THETA, axis=-1) / w
     return scalar_or_array(mu_film + sol.boundary_friction)
 

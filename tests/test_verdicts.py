@@ -397,7 +397,9 @@ def test_a_failed_fe_model_is_a_finding_not_only_a_console_line():
     found = [f for f in v.findings if f.check == "root_stress"]
     assert len(found) == 1 and found[0].severity == "attention"
     assert found[0].reason.startswith(said) and "ISO 10300 rating alone" in found[0].reason
-    assert "root_stress" in v.checks
+    # the check itself was not made (no root stress): said as not checked, with its reason
+    assert "root_stress" not in v.checks
+    assert any(c == "root_stress" for c, _ in v.unchecked)
     tree.attrs["root_stress_not_run"] = "tooth-root stress not computed (--no-root-stress)"
     assert not [f for f in verdict(tree).findings if f.check == "root_stress"]
     ok = _tree(ltca=_ltca([1000.0, 1200.0], root_stress_max=(("torque", "member"),
