@@ -65,9 +65,10 @@ def test_a_negative_torque_names_the_coast_flank(capsys, tmp_path):
     assert last == ("ltca run: error: --torque: must be > 0 [N m], got -50; the coast flank "
                     "is --flank coast with a positive torque")
     assert not (tmp_path / "r.nc").exists()
-    # a command without a flank to choose: the range alone
+    # ltca rate rates the coast side by --flank coast too (issue 72): the same hint
     last = _refused(["rate", "--torque", "0"], capsys).strip().splitlines()[-1]
-    assert last == "ltca rate: error: --torque: must be > 0 [N m], got 0"
+    assert last == ("ltca rate: error: --torque: must be > 0 [N m], got 0; the coast flank "
+                    "is --flank coast with a positive torque")
 
 
 @pytest.mark.parametrize("attrs, what, command", [

@@ -9,9 +9,9 @@ ORDER = 63
 
 
 def register(sub) -> None:
-    """Add the sub-command to an ``argparse`` sub-parser collection."""
-    from friction.lubricant import BASE_OIL_FACTORS
-
+    """Add the sub-command to an ``argparse`` sub-parser collection (no numerical library
+    imported: the base stock is checked by :class:`friction.oil_data_sheet.OilDataSheet`,
+    which names the accepted ones)."""
     p = sub.add_parser(
         "oil",
         help="write an oil file from a data sheet's nu40, nu100, rho15 and base stock",
@@ -28,8 +28,10 @@ def register(sub) -> None:
                    help="kinematic viscosity at 100 degC [mm2/s]")
     p.add_argument("--rho15", type=float, required=True, metavar="KG/M3",
                    help="density at 15 degC [kg/m3] (a sheet's g/ml x 1000)")
-    p.add_argument("--base-oil", required=True, choices=sorted(BASE_OIL_FACTORS),
-                   help="the base stock")
+    p.add_argument("--base-oil", required=True,
+                   help="the base stock: mineral, polyalphaolefin, "
+                   "polyglycol_non_water_soluble, polyglycol_water_soluble, phosphate_ester "
+                   "or traction_fluid (the last two need --alpha38)")
     p.add_argument("--source", required=True,
                    help="the data sheet (maker, product, edition)")
     p.add_argument("--alpha38", type=float, default=None, metavar="1/GPA",

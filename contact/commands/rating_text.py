@@ -10,9 +10,10 @@ registry — ISO 10300, ANSI/AGMA 2003, a plug-in's — is printed the same way,
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
-import numpy as np
-import xarray as xr
+if TYPE_CHECKING:  # the command modules load for `ltca --help` without numerical libraries
+    import xarray as xr
 
 __all__ = ["rating_lines"]
 
@@ -22,6 +23,8 @@ def _number(value: float, decimals: int = 0) -> str:
 
 
 def _ltca_at(lt: xr.Dataset | None, name: str, torque: float, member: int) -> float:
+    import numpy as np
+
     """``/ltca``'s ``name`` at ``torque`` (and member index where it has one), NaN where
     the analysis lacks it."""
     if lt is None or name not in lt or "torque" not in lt.coords:
@@ -59,6 +62,8 @@ def rating_lines(tree: xr.DataTree, why: str = "", case_arg: str | None = None,
     -------
     list of str
     """
+    import numpy as np
+
     if "rating" not in tree.children:
         return [why] if why else []
     from tabulate import tabulate

@@ -20,9 +20,9 @@ from __future__ import annotations
 import gzip
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
-from functools import cache
 from importlib import resources
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
 __all__ = ["VERSIONS", "AttributeSpec", "Database", "RelationSpec", "load_database"]
@@ -147,7 +147,7 @@ def _parse(root: ET.Element, version: str) -> Database:
                     relations=relations, units=frozenset(units.values()))
 
 
-@cache
+@memoised(maxsize=None)
 def load_database(version: str) -> Database:
     """The attribute database of a REXS version (bundled, read once per process).
 
