@@ -43,6 +43,7 @@ member_solid        build it from a case
 volume_estimate     the member's volume by quadrature of the blank and slot sections
 write_step          write both members (parts and the assembly) as a STEP file
 read_step           read the parts back (each in its own frame) with their placements
+StepPart            one part read back
 face_distance       distances of points to the nearest face of a solid
 ocp_available       whether the extra is installed
 """
@@ -69,6 +70,7 @@ from geometry.pair.assembly import case_transforms
 __all__ = [
     "EXTRA",
     "MemberSolid",
+    "StepPart",
     "face_distance",
     "member_solid",
     "ocp_available",
