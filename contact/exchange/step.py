@@ -50,6 +50,7 @@ ocp_available       whether the extra is installed
 
 from __future__ import annotations
 
+import contextlib
 import logging
 import math
 import os
@@ -546,6 +547,23 @@ def member_solid(case, member: str, *, nu: int = 41, nv: int = 21, refine: int =
 
 
 # --------------------------------------------------------------------------- STEP files
+@contextlib.contextmanager
+def _quiet():
+    """OpenCASCADE's console messages (the STEP transfer statistics) held to failures
+    while the block runs; the printers' levels are restored after."""
+    from OCP.Message import Message, Message_Gravity
+
+    printers = list(_static(Message, "DefaultMessenger")().Printers())
+    levels = [p.GetTraceLevel() for p in printers]
+    for p in printers:
+        p.SetTraceLevel(Message_Gravity.Message_Fail)
+    try:
+        yield
+    finally:
+        for p, level in zip(printers, levels, strict=True):
+            p.SetTraceLevel(level)
+
+
 def _trsf(matrix: np.ndarray):
     from OCP.gp import gp_Trsf
 
@@ -618,9 +636,10 @@ def write_step(case, path: str | os.PathLike[str], *, nu: int = 41, nv: int = 21
     _static(Interface_Static, "SetCVal")("write.step.product.name", case.name)
     writer = STEPCAFControl_Writer()
     writer.SetNameMode(True)
-    if not writer.Transfer(doc, STEPControl_AsIs):
-        raise LTCAError("OpenCASCADE could not transfer the solids to STEP")
-    with atomic_path(target) as tmp:
+    with _quiet():
+        if not writer.Transfer(doc, STEPControl_AsIs):
+            raise LTCAError("OpenCASCADE could not transfer the solids to STEP")
+    with _quiet(), atomic_path(target) as tmp:
         if writer.Write(str(tmp)) != IFSelect_RetDone:
             raise LTCAError(f"OpenCASCADE could not write {str(target)!r}")
     return target
@@ -670,10 +689,14 @@ def read_step(path: str | os.PathLike[str]) -> dict[str, StepPart]:
 
     reader = STEPCAFControl_Reader()
     reader.SetNameMode(True)
-    if reader.ReadFile(str(path)) != IFSelect_RetDone:
+    with _quiet():
+        status = reader.ReadFile(str(path))
+    if status != IFSelect_RetDone:
         raise InputError(f"path: OpenCASCADE cannot read {str(path)!r} as STEP")
     doc = TDocStd_Document(TCollection_ExtendedString("XmlXCAF"))
-    if not reader.Transfer(doc):
+    with _quiet():
+        transferred = reader.Transfer(doc)
+    if not transferred:
         raise InputError(f"path: no shapes transferred from {str(path)!r}")
     label_sequence = _collection("Sequence_TDF_Label", ("OCP.TDF", "TDF_LabelSequence"))
     tool = _static(XCAFDoc_DocumentTool, "ShapeTool")(doc.Main())
