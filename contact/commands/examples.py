@@ -66,4 +66,6 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "vh-check": ("ltca vh-check --plots figs",),
     "compare-solvers": ("ltca compare-solvers kolivand2009_fm_11x41",),
     "export-problems": ("ltca export-problems kolivand2009_fm_11x41 -o problems",),
+    "export-step": ("ltca export-step kolivand2009_fm_11x41_reference -o pair.step",
+                    "ltca export-step my_case.toml --dE 0.1 -o misaligned_pair.step"),
 }
