@@ -116,9 +116,30 @@ VARIABLES: Mapping[str, tuple[float, float]] = {
     "tip_relief": (0.0, 60.0),
     "root_relief": (0.0, 60.0),
     "relief_start": (0.2, 0.5),
+    "blade_angle_change": (-3.0, 3.0),
+    "profile_crowning": (0.0, 30.0),
 }
-#: the relief inputs (second stage)
+#: the relief inputs (the blade's toprem and flankrem; no new synthesis of steps 3-6)
 RELIEF_NAMES = ("tip_relief", "root_relief", "relief_start")
+#: the input that shortens the pattern in depth (the pinion blade's profile curvature,
+#: :func:`geometry.synthesis.blade_change.blade_profile_crowned`), raised by
+#: :data:`CROWNING_STEP` in the height stage where the centred light-load pattern still
+#: touches an edge of the working depth
+CROWNING_NAME = "profile_crowning"
+#: step of the profile crowning in the height stage [µm]
+CROWNING_STEP = 10.0
+#: the input that sets the pattern's height (the pinion blade's pressure-angle change
+#: about M, :mod:`geometry.synthesis.blade_change`), found by a 1-D root-find on the
+#: light-load footprint centre v (:func:`_centre_height`) before and after the relief
+HEIGHT_NAME = "blade_angle_change"
+#: first guess of d(centre v)/d(blade angle change) [1/deg] of the root-find, before it
+#: has measured its own: on the passenger-car hypoid 10x43 of tests/data/designs (drive,
+#: concave flank, the synthesis' default bearing, coarse LTCA at 15 % of 357 N m) a change
+#: of -1/0/+1 deg put the footprint centre at v 0.35/0.68/0.91, i.e. 0.28 per degree
+HEIGHT_SLOPE = 0.28
+#: most designs of one root-find on the pattern's height (each ≈ 0.3 s CPU: steps 3-6
+#: from the memo, the blade turned and relieved again, a coarse LTCA)
+HEIGHT_DESIGNS = 4
 
 #: LTCA settings inside the loop: one mesh cycle, 8 roll positions, 12 segments per curve
 #: (the default analysis has 2 × 20 and 24); shell compliance, no root stress. On the
@@ -248,8 +269,8 @@ class DevelopmentTargets:
     max_flank_pressure: float | None = None
     offset_tolerance: float = 0.05
     mounting_tolerance: float = 0.05
-    max_evaluations: int = 22
-    coast_max_evaluations: int = 10
+    max_evaluations: int = 36
+    coast_max_evaluations: int = 20
     variables: Mapping[str, tuple[float, float]] = field(
         default_factory=lambda: dict(VARIABLES))
 
@@ -338,8 +359,9 @@ def working_depth_centre(case: Case) -> float:
 #: edges of the working depth to the relief; the flank pressure and the LTE spread are the
 #: bearing's as much as the relief's: a short or narrow bearing peaks in its middle)
 STAGE_TERMS = {
-    "bearing": ("length", "centre_u", "centre_v", "toe", "heel", "lte", "pressure",
-                "spread"),
+    "bearing": ("length", "centre_u", "toe", "heel", "lte", "pressure", "spread"),
+    "height": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
+               "plastic", "lte", "pressure", "spread"),
     "relief": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
                "plastic", "lte", "pressure", "spread"),
 }
@@ -745,6 +767,9 @@ class DevelopmentResult:
         The coast flank's metrics as synthesised where its search ran (else None).
     coast_seconds : float
         CPU time [s] of the coast flank's check and development.
+    pressure_limit : float — [MPa]
+        The flank peak pressure allowed at the design torque (``max_flank_pressure`` or
+        the static strength, :func:`static_strength`); inf where not known.
     """
 
     basic: BasicDesign
@@ -766,6 +791,7 @@ class DevelopmentResult:
     coast_status: str = ""
     coast_before: dict[str, np.ndarray] | None = None
     coast_seconds: float = 0.0
+    pressure_limit: float = math.inf
 
     @property
     def tolerant(self) -> bool:
@@ -780,7 +806,7 @@ class DevelopmentResult:
         designs' syntheses and coarse LTCAs), the final checks and the coast flank (its
         check and development)."""
         out = {st: sum(e.seconds for e in self.evaluations if e.stage == st)
-               for st in ("bearing", "relief")}
+               for st in ("bearing", "height", "relief")}
         return out | {"check": self.check_seconds, "coast": self.coast_seconds}
 
     def summary(self) -> str:
@@ -824,13 +850,76 @@ class DevelopmentResult:
         b, t = self.best, self.targets
         m = b.metrics
         return (f"development: design {b.index + 1} of {len(self.evaluations)}, "
-                f"{self._met_text()}; light-load pattern {m['pattern_toe_u'][0]:.2f}-"
+                f"{self.missed_text(b)}; light-load pattern {m['pattern_toe_u'][0]:.2f}-"
                 f"{m['pattern_heel_u'][0]:.2f} of the face, edge share "
                 f"{100 * m['edge_load_share'][1]:.1f} % and LTE p-p "
                 f"{m['lte_peak_to_peak'][1]:.0f} urad at {self.torque[1]:.4g} N m; "
                 f"{'tolerant' if self.tolerant else 'not tolerant'} at dE +/-"
                 f"{t.offset_tolerance:g} mm, dP +/-{t.mounting_tolerance:g} mm; "
-                f"{self._coast_headline()}; {self.seconds:.0f} s CPU")
+                f"{self._coast_headline()}; {self._pressures_text()}; "
+                f"{self.seconds:.0f} s CPU")
+
+    @property
+    def coast_static_capacity(self) -> float:
+        """The coast flank's static flank capacity [N·m] where its flank peak pressure at
+        the design torque exceeds the limit (:attr:`pressure_limit`), else NaN:
+        T (0.99 p_lim / p_max)³, rounded down to 0.1 N·m — Hertz's p ∝ F^(1/3) of a point
+        contact, conservative where the pattern grows under load (p grows more slowly),
+        as the drive flank's first step (:func:`_static_capacity`)."""
+        if not self.coast or not math.isfinite(self.pressure_limit):
+            return math.nan
+        p = float(self.coast["pressure_max_flank"][1])
+        if not (math.isfinite(p) and p > self.pressure_limit):
+            return math.nan
+        t = self.torque[1] * (_STATIC_MARGIN * self.pressure_limit / p) ** 3
+        return math.floor(10.0 * t) / 10.0
+
+    def with_coast_capacity(self, case: Case) -> tuple[Case, float]:
+        """``case`` with ``[rating] coast_design_torque`` lowered to
+        :attr:`coast_static_capacity` where that is below the coast side's design torque
+        (its ``coast_design_torque``, else the design torque), with a sentence in the
+        rating's ``source``; the torque written (NaN where unchanged). Each flank's design
+        torque is then no higher than its own static flank capacity at its developed
+        bearing."""
+        import json
+        from types import MappingProxyType
+
+        cap = self.coast_static_capacity
+        rating = dict(case.extra.get("rating") or {})
+        now = rating.get("coast_design_torque", rating.get("design_torque"))
+        if not math.isfinite(cap) or now is None or cap >= float(now):
+            return case, math.nan
+        p = float(self.coast["pressure_max_flank"][1])
+        rating["coast_design_torque"] = cap
+        rating["source"] = (str(rating.get("source", "")).rstrip()
+                            + f" coast_design_torque {cap:g} N m: the coast flank's static "
+                            f"capacity of its developed bearing (contact.optimize.development:"
+                            f" flank peak pressure {p:.0f} MPa at {self.torque[1]:g} N m "
+                            f"above the static strength {self.pressure_limit:.0f} MPa).")
+        extra = json.loads(json.dumps({**case.extra, "rating": rating}))
+        return dataclasses.replace(case, extra=MappingProxyType(extra)), cap
+
+    def missed_text(self, e: DevelopmentEvaluation | None = None) -> str:
+        """Whether ``e`` (default the chosen drive design) met every target, else each
+        missed target with its value and its limit, in numbers."""
+        e = self.best if e is None else e
+        if e.full is None:
+            return "not analysed"
+        if e.full[2]:
+            return "every target met"
+        return "not every target met: " + "; ".join(
+            _missed(k, e.metrics, self.targets, self.centre_v, self.pressure_limit)
+            for k, v in e.full[1].items() if v > 0)
+
+    def _pressures_text(self) -> str:
+        """Both flanks' flank peak pressure at the design torque against the limit."""
+        drive = float(self.best.metrics["pressure_max_flank"][1])
+        coast = (float(self.coast["pressure_max_flank"][1]) if self.coast
+                 else math.nan)
+        lim = (f" (limit {self.pressure_limit:.0f} MPa)"
+               if math.isfinite(self.pressure_limit) else "")
+        return (f"flank peak pressure at {self.torque[1]:.4g} N m drive {drive:.0f} MPa, "
+                f"coast {coast:.0f} MPa{lim}")
 
     def recorded(self, case: Case) -> Case:
         """``case`` (the developed case, maybe with its rating's design torque set) with
@@ -896,14 +985,15 @@ class DevelopmentResult:
         b = self.coast_best
         if self.coast_status == "developed":
             return (f"coast flank developed ({len(self.coast_evaluations)} designs): plastic "
-                    f"{100 * np.max(b.metrics['plastic_share']):.1f} %, {_met_text(b.full)}")
+                    f"{100 * np.max(b.metrics['plastic_share']):.1f} %, "
+                    f"{self.missed_text(b)}")
         if b is None or b.full is None:
             return "coast flank not checked"
         what = {"met": "met every target as synthesised", "off": "coast development off",
                 "not improved": "its search found nothing better"}.get(self.coast_status,
                                                                       "not developed")
         return (f"coast flank not developed ({what}): plastic "
-                f"{100 * np.max(b.metrics['plastic_share']):.1f} %")
+                f"{100 * np.max(b.metrics['plastic_share']):.1f} %, {self.missed_text(b)}")
 
     def _met_text(self) -> str:
         return _met_text(self.best.full)
@@ -956,6 +1046,44 @@ def _met_text(full: tuple[float, dict[str, float], bool]) -> str:
     _, short, met = full
     return ("every target met" if met else "not every target met: "
             + ", ".join(k for k, v in short.items() if v > 0))
+
+
+def _missed(name: str, m: Mapping[str, np.ndarray], t: DevelopmentTargets,
+            centre_v: float, pressure_limit: float) -> str:
+    """One missed target of :func:`development_score` with its value and its limit."""
+    if name == "length":
+        length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
+        return (f"pattern length {length:.2f} (target {t.pattern_length:g} +/- "
+                f"{t.pattern_length_tolerance:g})")
+    if name == "centre_u":
+        return (f"centre u {m['pattern_centre_u'][0]:.2f} (target {t.pattern_centre_u:g} "
+                f"+/- {t.centre_tolerance:g})")
+    if name == "centre_v":
+        return (f"centre v {m['pattern_centre_v'][0]:.2f} (target {centre_v:.3g} +/- "
+                f"{t.centre_tolerance:g})")
+    ends = {"toe": ("pattern_toe_u", "toe u"), "heel": ("pattern_heel_u", "heel u"),
+            "root": ("pattern_root_v", "root v"), "tip": ("pattern_tip_v", "tip v")}
+    if name in ends:
+        key, what = ends[name]
+        return (f"{name} clearance: pattern {what} {m[key][0]:.2f} (clear of the grid's "
+                f"end by {t.clearance:g})")
+    if name == "edge":
+        return (f"edge share {100 * m['edge_load_share'][1]:.1f} % (limit "
+                f"{100 * t.max_edge_share:g} %)")
+    if name == "plastic":
+        return (f"plastic share {100 * np.max(m['plastic_share']):.1f} % (limit "
+                f"{100 * t.max_plastic_share:g} %)")
+    if name == "lte":
+        return (f"LTE p-p {np.max(m['lte_peak_to_peak']):.0f} urad (limit "
+                f"{t.max_lte:g})")
+    if name == "pressure":
+        lim = t.max_flank_pressure if t.max_flank_pressure is not None else pressure_limit
+        return (f"flank peak pressure {m['pressure_max_flank'][1]:.0f} MPa (limit "
+                f"{lim:.0f})")
+    if name == "spread":
+        return (f"LTE spread {np.max(m['lte_spread']):.2f} (limit "
+                f"{LTE_SPREAD_LIMIT:g})")
+    return name
 
 
 def _values_text(values: Mapping[str, float]) -> str:
@@ -1176,7 +1304,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                coast.best.metrics if coast.best is not None else None,
                                time.process_time() - c_check - coast_seconds,
                                setup["lowered"], coast.best, tuple(coast.evaluations),
-                               coast.status, coast.before, coast_seconds)
+                               coast.status, coast.before, coast_seconds,
+                               setup.get("pressure_limit", math.inf))
     say(result.headline())
     return result
 
@@ -1237,7 +1366,7 @@ def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str,
             e = dataclasses.replace(e, full=full)
         evals.append(e)
         seen[key] = e
-        if stage == "bearing" and grid is not None:  # the relief stage starts here
+        if stage in ("bearing", "height") and grid is not None:  # the relief starts here
             seen[("relief", *key[1:])] = dataclasses.replace(e, objective=e.full[0],
                                                              shortfalls=e.full[1],
                                                              met=e.full[2])
@@ -1246,6 +1375,9 @@ def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str,
             raise _Stop
         return e
 
+    evaluate.evals = evals  # type: ignore[attr-defined]  (read by _centre_height)
+    evaluate.setup = setup  # type: ignore[attr-defined]
+    evaluate.slopes = {}  # type: ignore[attr-defined]  (per bearing, _note_slope)
     return evaluate
 
 
@@ -1261,10 +1393,14 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
     **relief** (:func:`_relief_stage`, the rest of ``n_max``). ``start``: the flank's
     prescriptions [file units]. Returns whether any design was synthesised and
     analysed."""
-    bearing = [n for n in targets.variables if n not in RELIEF_NAMES]
+    bearing = [n for n in targets.variables
+               if n not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)]
     relief = [n for n in targets.variables if n in RELIEF_NAMES]
     n_bearing = min(max_bearings, max(1, n_max // 2)) if bearing else 1
     fixed = {n: start[n] for n in relief}
+    for n in (HEIGHT_NAME, CROWNING_NAME):
+        if n in targets.variables:
+            fixed[n] = float(np.clip(start[n], *targets.variables[n]))
     low = np.array([targets.variables[n][0] for n in bearing])
     high = np.array([targets.variables[n][1] for n in bearing])
 
@@ -1494,23 +1630,223 @@ def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
     for first, budget in zip(firsts, budgets, strict=True):
         if len(evals) >= budget:
             return
+        if HEIGHT_NAME in targets.variables:  # the pattern's height first
+            first = _height_stage(evaluate, first, targets, budget, basic_of, make)
+            if first is None:
+                return  # a design met every target
 
-        def relief_design(x: np.ndarray, first=first, budget=budget) -> float:
+        # designs kept for the re-centring after the relief, where the budget allows
+        relief_budget = budget - (_RECENTRE_DESIGNS if HEIGHT_NAME in targets.variables
+                                  and budget - len(evals) > 3 * _RECENTRE_DESIGNS else 0)
+
+        def relief_design(x: np.ndarray, first=first, budget=relief_budget) -> float:
             values = first.values | {n: float(v) for n, v in zip(relief, x, strict=True)}
             # the synthesis itself (steps 3-6 from the memo, the relief made again; the
             # tip plane, which keeps the flank, placed for the designs checked later)
             b = basic_of(values)
-            return evaluate(values, "relief", lambda: make(b), budget,
-                            _bearing_key(first.values)).objective
+            e = evaluate(values, "relief", lambda: make(b), budget,
+                         _bearing_key(first.values))
+            return _recentred(evaluate, e, targets, budget, basic_of, make).objective
 
+        n_sample = min(8, max(0, (budget - len(evals) - HEIGHT_DESIGNS // 2) // 2))
         _sample_then_minimise(relief_design, np.array([first.values[n] for n in relief]),
-                              low, high, n_sample=min(8, max(0, (budget - len(evals)) // 2)))
-        if any(e.met and e.stage == "relief" for e in evals):
+                              low, high, n_sample=n_sample)
+        if any(e.met for e in evals if e.stage in ("relief", "height")):
             return
         key = _bearing_key(first.values)  # this bearing's designs, its own included
         done = [e for e in evals if e.full is not None and _bearing_key(e.values) == key]
+        if done and HEIGHT_NAME in targets.variables:  # the relief moved it: again
+            best = min(done, key=lambda e: e.full[0])
+            if best.full[1]["centre_v"] > 0.0 and _centre_height(
+                    evaluate, best, targets, budget, basic_of, make,
+                    _RECENTRE_DESIGNS) is None:
+                return
+            done = [e for e in evals
+                    if e.full is not None and _bearing_key(e.values) == key]
         if not done or min(done, key=lambda e: e.full[0]).full[1]["lte"] == 0.0:
             return  # the LTE met: the next bearing is tried for the LTE alone
+
+
+def _recentred(evaluate: Callable[..., DevelopmentEvaluation], e: DevelopmentEvaluation,
+               targets: DevelopmentTargets, budget: int,
+               basic_of: Callable[[dict[str, float]], BasicDesign],
+               make: Callable[[BasicDesign], Case]) -> DevelopmentEvaluation:
+    """A relief design with its pattern put back to the height aimed at: the relief moves
+    the light-load pattern in depth (a toprem or flankrem takes the load off one end), so
+    where ``e`` misses the centre v one Newton step of the blade-angle change with the
+    slope its bearing's height stage measured (:func:`_centre_height`) is analysed too
+    (the same stage), and the better of the two returned: the relief stage's objective is
+    that of the design re-centred, the relief and the height developed together."""
+    slope = getattr(evaluate, "slopes", {}).get(_bearing_key(e.values))
+    if (slope is None or e.full is None or HEIGHT_NAME not in targets.variables
+            or e.full[1]["centre_v"] == 0.0 or not math.isfinite(_centre_v(e))):
+        return e
+    lo, hi = targets.variables[HEIGHT_NAME]
+    f = _centre_v(e) - _target_v(evaluate, targets)
+    x = float(np.clip(e.values[HEIGHT_NAME] - f / slope, lo, hi))
+    if abs(x - e.values[HEIGHT_NAME]) < 1e-3:
+        return e
+    values = e.values | {HEIGHT_NAME: x}
+    b = basic_of(values)
+    e2 = evaluate(values, e.stage, lambda: make(b), budget, _bearing_key(values))
+    return e2 if e2.objective < e.objective else e
+
+
+#: designs of the root-find on the pattern's height after a bearing's relief (the relief
+#: moves the pattern in depth: its toprem and flankrem take load off one end)
+_RECENTRE_DESIGNS = 2
+
+
+def _centre_height(evaluate: Callable[..., DevelopmentEvaluation],
+                   base: DevelopmentEvaluation, targets: DevelopmentTargets, budget: int,
+                   basic_of: Callable[[dict[str, float]], BasicDesign],
+                   make: Callable[[BasicDesign], Case], n_designs: int = HEIGHT_DESIGNS
+                   ) -> DevelopmentEvaluation | None:
+    """The pattern's height by the pinion blade's pressure-angle change: a 1-D root-find
+    of the light-load footprint centre v (:func:`footprint_centre`) on the target, from the
+    design ``base`` (its other inputs kept).
+
+    The change Δα of :data:`HEIGHT_NAME` moves the pattern monotonically and strongly up or
+    down the tooth (:data:`HEIGHT_SLOPE`, 0.28 of the depth per degree measured), the lever
+    a gear engineer develops the height with (Stadtfeld, *Gleason Bevel Gear Technology*,
+    2014; :mod:`geometry.synthesis.blade_change`). The root-find is a secant on
+    f(Δα) = v_c(Δα) − v_target, the first step with :data:`HEIGHT_SLOPE`, then with the
+    slope measured, kept in a bracket once f changes sign (regula falsi), Δα clipped to
+    its bounds; it stops within a quarter of ``centre_tolerance``, after ``n_designs``
+    designs or at the stage's ``budget``. A design whose pattern could not be found (NaN
+    centre) halves the last step. Each design is ``evaluate``d (stage ``"height"``: every
+    target, so one that meets them all ends the development).
+
+    Returns
+    -------
+    DevelopmentEvaluation or None
+        The design of the least objective among those within the centre's tolerance (else
+        the one nearest the target), ``base`` included; None where a design met every
+        target (the caller stops).
+    """
+    lo, hi = targets.variables[HEIGHT_NAME]
+    if base.full is None or not math.isfinite(_centre_v(base)):
+        return base
+    target = _target_v(evaluate, targets)
+    tried = [(float(base.values[HEIGHT_NAME]), _centre_v(base) - target, base)]
+    good = 0.25 * targets.centre_tolerance
+    x_prev = None
+    for _ in range(n_designs):
+        x0, f0, _ = min(tried, key=lambda t: abs(t[1]) if math.isfinite(t[1]) else math.inf)
+        if abs(f0) <= good:
+            break
+        finite = [t for t in tried if math.isfinite(t[1])]
+        below = [t for t in finite if t[1] < 0.0]
+        above = [t for t in finite if t[1] > 0.0]
+        if below and above:  # bracketed: regula falsi between the nearest on each side
+            a = min(below, key=lambda t: -t[1])
+            b = min(above, key=lambda t: t[1])
+            x = a[0] - a[1] * (b[0] - a[0]) / (b[1] - a[1])
+        else:
+            slope = HEIGHT_SLOPE
+            if len(finite) >= 2:
+                (xa, fa, _), (xb, fb, _) = sorted(finite, key=lambda t: abs(t[1]))[:2]
+                if xa != xb and (fa - fb) / (xa - xb) > 0.05:
+                    slope = (fa - fb) / (xa - xb)
+            x = x0 - f0 / slope
+        if x_prev is not None and not math.isfinite(tried[-1][1]):
+            x = 0.5 * (x_prev + tried[-1][0])  # the last design failed: half its step
+        x = float(np.clip(x, lo, hi))
+        if any(abs(x - t[0]) < 1e-3 for t in tried):
+            break
+        values = base.values | {HEIGHT_NAME: x}
+        b = basic_of(values)
+        try:
+            e = evaluate(values, "height", lambda b=b: make(b), budget,
+                         _bearing_key(values))
+        except _Stop:
+            return None if any(e.met for e in _evaluated(evaluate)) else _best_height(tried)
+        x_prev = x0
+        tried.append((x, _centre_v(e) - target, e))
+        _note_slope(evaluate, tried)
+    return _best_height(tried)
+
+
+def _centre_v(e: DevelopmentEvaluation) -> float:
+    """The light-load footprint centre v of a design [1]; NaN where it has none."""
+    v = e.metrics.get("pattern_centre_v")
+    return math.nan if v is None else float(v[0])
+
+
+def _note_slope(evaluate: Callable[..., DevelopmentEvaluation],
+                tried: list[tuple[float, float, DevelopmentEvaluation]]) -> None:
+    """The slope d(centre v)/d(blade-angle change) [1/deg] measured between the two
+    designs of ``tried`` nearest the target, kept per bearing for :func:`_recentred`
+    (where it is positive and not tiny; else :data:`HEIGHT_SLOPE`'s sign is kept)."""
+    finite = sorted((t for t in tried if math.isfinite(t[1])), key=lambda t: abs(t[1]))
+    if len(finite) < 2 or finite[0][0] == finite[1][0]:
+        return
+    slope = (finite[0][1] - finite[1][1]) / (finite[0][0] - finite[1][0])
+    if slope > 0.05:
+        evaluate.slopes[_bearing_key(finite[0][2].values)] = slope  # type: ignore[attr-defined]
+
+
+def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
+                  base: DevelopmentEvaluation, targets: DevelopmentTargets, budget: int,
+                  basic_of: Callable[[dict[str, float]], BasicDesign],
+                  make: Callable[[BasicDesign], Case]) -> DevelopmentEvaluation | None:
+    """The height stage of a bearing: its light-load pattern centred in depth by the
+    blade-angle change (:func:`_centre_height`); where the centred pattern still reaches
+    the gear tip (the ``tip`` clearance) or carries edge contact at light load, the
+    profile crowning (:data:`CROWNING_NAME`) raised by :data:`CROWNING_STEP` and the
+    pattern centred again, at most twice: a pattern as deep as the working depth cannot be
+    centred clear of both its ends, a crowned one can (Stadtfeld 2014: pattern height by
+    the pressure angle, its depth by the profile crowning). Returns the best design (None
+    where one met every target)."""
+    e = _centre_height(evaluate, base, targets, budget, basic_of, make)
+    for _ in range(2):
+        if (e is None or e.full is None or CROWNING_NAME not in targets.variables
+                or not math.isfinite(_centre_v(e))):
+            return e
+        short, m = e.full[1], e.metrics
+        if short["tip"] == 0.0 and short["root"] == 0.0 and m["edge_load_share"][0] <= 0.0:
+            return e
+        lo, hi = targets.variables[CROWNING_NAME]
+        crown = float(np.clip(e.values[CROWNING_NAME] + CROWNING_STEP, lo, hi))
+        if crown == e.values[CROWNING_NAME] or len(_evaluated(evaluate)) >= budget:
+            return e
+        values = e.values | {CROWNING_NAME: crown}
+        b = basic_of(values)
+        try:
+            crowned = evaluate(values, "height", lambda b=b: make(b), budget,
+                               _bearing_key(values))
+        except _Stop:
+            return None if any(x.met for x in _evaluated(evaluate)) else e
+        nxt = _centre_height(evaluate, crowned, targets, budget, basic_of, make,
+                             HEIGHT_DESIGNS - 1)
+        if nxt is None:
+            return None
+        if nxt.full is None or e.full is None or nxt.full[0] >= e.full[0]:
+            return e if nxt.full is None or e.full[0] <= nxt.full[0] else nxt
+        e = nxt
+    return e
+
+
+def _target_v(evaluate: Callable[..., DevelopmentEvaluation],
+              targets: DevelopmentTargets) -> float:
+    """The footprint centre v aimed at: ``targets.pattern_centre_v``, else the working
+    depth's middle the evaluator's first design fixed (:func:`working_depth_centre`)."""
+    if targets.pattern_centre_v is not None:
+        return float(targets.pattern_centre_v)
+    return float(evaluate.setup["centre_v"])  # type: ignore[attr-defined]
+
+
+def _best_height(tried: list[tuple[float, float, DevelopmentEvaluation]]
+                 ) -> DevelopmentEvaluation:
+    ok = [t[2] for t in tried if t[2].full is not None and t[2].full[1]["centre_v"] == 0.0]
+    if ok:
+        return min(ok, key=lambda e: e.full[0])
+    return min(tried, key=lambda t: abs(t[1]) if math.isfinite(t[1]) else math.inf)[2]
+
+
+def _evaluated(evaluate: Callable[..., DevelopmentEvaluation]
+               ) -> list[DevelopmentEvaluation]:
+    return evaluate.evals  # type: ignore[attr-defined]
 
 
 def _relief_bearings(designs: list[DevelopmentEvaluation], n: int
@@ -1572,7 +1908,8 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
 def _bearing_key(values: Mapping[str, float]) -> tuple:
     """The prescriptions of a design that shape its pinion tooth (all but the relief):
     :class:`KeptTeeth`'s key."""
-    return tuple(sorted((k, v) for k, v in values.items() if k not in RELIEF_NAMES))
+    return tuple(sorted((k, v) for k, v in values.items()
+                        if k not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)))
 
 
 def _excursions(t: DevelopmentTargets) -> list[tuple[str, Misalignment]]:
