@@ -1601,10 +1601,11 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
 
 
 def _metrics_text(m: Mapping[str, np.ndarray]) -> str:
-    """A design's metrics in one phrase (light-load pattern, design-torque edge share,
-    worst plastic share, LTE at both torques)."""
+    """A design's metrics in one phrase (light-load pattern and its footprint centre,
+    design-torque edge share, worst plastic share, LTE at both torques)."""
     return (f"pattern {m['pattern_toe_u'][0]:.2f}-{m['pattern_heel_u'][0]:.2f} x "
-            f"{m['pattern_root_v'][0]:.2f}-{m['pattern_tip_v'][0]:.2f}, edge "
+            f"{m['pattern_root_v'][0]:.2f}-{m['pattern_tip_v'][0]:.2f} centre "
+            f"({m['pattern_centre_u'][0]:.2f}, {m['pattern_centre_v'][0]:.2f}), edge "
             f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
             f"{100 * np.max(m['plastic_share']):.1f} %, LTE "
             f"{m['lte_peak_to_peak'][0]:.0f}/{m['lte_peak_to_peak'][1]:.0f} urad")
