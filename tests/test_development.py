@@ -656,10 +656,10 @@ def _fake_design(index, values, lte_short, met=False, stage="relief"):
 def test_the_second_bearing_is_relieved_only_where_the_first_misses_the_lte(
         lte_short, second_tried):
     """The relief stage's budget: 22 designs of the default 36 on the best bearing (less
-    the bearing stage's 6, the next bearing's and 2 kept for re-centring), then SECOND_BEARING_DESIGNS
-    on the next bearing only where the first's best design misses the LTE target; never
-    more than max_evaluations in all. The designs are stand-ins (no analysis): the test
-    is the budget's bookkeeping, counted by hand."""
+    the bearing stage's 6, the next bearing's and 2 kept for re-centring), then
+    SECOND_BEARING_DESIGNS on the next bearing only where the first's best design misses
+    the LTE target; never more than max_evaluations in all. The designs are stand-ins (no
+    analysis): the test is the budget's bookkeeping, counted by hand."""
     from contact.optimize import development as dev
 
     targets = DevelopmentTargets()

@@ -18,13 +18,21 @@ is a production bearing (:class:`DevelopmentTargets`):
   (:mod:`contact.study.vh_check`) at a typical assembly tolerance — and the result says
   whether the pattern stays clear of toe and heel and the edges elastic there.
 
-Two stages (:func:`develop`): the **bearing** (path angle, ellipse length), each design
+Three stages per flank (:func:`develop`), with the levers a gear engineer develops a
+bearing with (Stadtfeld, *Gleason Bevel Gear Technology*, 2014; Litvin & Fuentes 2004 ch.
+9): the **bearing** (path angle, ellipse length: the pattern's bias and length), each design
 a synthesis of its drive flank (:func:`geometry.synthesis.case_synthesis.synthesize` with
-a memo: the coast flank, not varied there, is synthesised once); then the **relief** (tip and
-root relief and their start), each design the synthesis' relief and tip plane alone (the
-same function, so the design analysed is the case written). Each design is analysed on
-its drive flank by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll positions,
-12 segments per curve, shell compliance with the teeth kept across designs,
+a memo: the coast flank, not varied there, is synthesised once); the **height**
+(:func:`_height_stage`): the pinion blade's pressure-angle change
+(:data:`HEIGHT_NAME`, :mod:`geometry.synthesis.blade_change`) found by a 1-D root-find on
+the light-load footprint centre v (:func:`_centre_height`: secant, then regula falsi), with
+the profile crowning (:data:`CROWNING_NAME`) raised where the centred pattern still
+reaches an end of the working depth; then the **relief** (tip and root relief and their
+start), each relief design re-centred by one step of the blade angle with the slope the
+height stage measured (:func:`_recentred`). The height and relief designs are the
+synthesis' step 7 alone (steps 3-6 from the memo), ≈ 0.3 s CPU each. Each design is
+analysed on its drive flank by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll
+positions, 12 segments per curve, shell compliance with the teeth kept across designs,
 :class:`KeptTeeth`; no root stress) at the light and the design torque, summarised by
 :func:`contact.study.summary.point_summary`. The best designs are then checked at
 ``ltca run``'s sampling (:data:`CHECK_LTCA`), and where the chosen one's flank peak
@@ -33,14 +41,21 @@ lowered to what the bearing carries (:func:`_static_capacity`): a design never f
 own check at its own design torque. Then the **coast flank** (:func:`_coast_development`):
 the chosen design's coast flank, synthesised from its own prescriptions, is checked at
 :data:`CHECK_LTCA` at the same light and design torque against the same targets (it
-carries the full torque in reverse gear), and where it misses one it gets the same two
-stages and check on its own prescriptions with its own budget
-(``coast_max_evaluations``); the drive flank's result stays as chosen. The objective
+carries the full torque in reverse gear), and where it misses one it gets the same
+stages and check on its own prescriptions (its own blade-angle change) with its own
+budget (``coast_max_evaluations``); the drive flank's result stays as chosen, and the
+coast side's design torque is capped at the coast flank's static capacity
+(:meth:`DevelopmentResult.with_coast_capacity`). The objective
 (:func:`development_score`) is a sum of squared, dimensionless shortfalls, minimised by a
 bounded Nelder–Mead (``scipy.optimize.minimize``; the relief stage first samples its box
 with scrambled Sobol points, ``scipy.stats.qmc``) that stops as soon as every target is
 met. When the targets conflict (a short pattern and a low LTE on a pinion of few teeth),
-the least objective wins and the case says which targets were missed.
+the least objective wins and the case says which targets were missed, with their values.
+
+The module is split by concern: the targets and their score in
+:mod:`contact.optimize.development_targets`, one design and the result (its text and
+its records in the case) in :mod:`contact.optimize.development_result`; the search, its
+stages and the coast flank here. Every public name is importable from here.
 
 Public names
 ------------
@@ -48,6 +63,7 @@ DevelopmentTargets   the targets (the ``[development]`` table of a basic file)
 targets_from_table   the targets from that table (file units), validated
 VARIABLES            the developed synthesis inputs and their default bounds
 RELIEF_NAMES         those of the relief stage
+HEIGHT_NAME, CROWNING_NAME   the height stage's levers (blade angle, profile crowning)
 COAST_STATUS         what the coast flank's development did, in words
 COARSE_LTCA          the LTCA settings inside the loop
 CHECK_LTCA           the LTCA settings of the final check (ltca run's)
@@ -69,69 +85,53 @@ import logging
 import math
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
 import numpy as np
 
 from contact.ltca import LTCAOptions
-from contact.ltca.plausibility import LTE_SPREAD_LIMIT
+from contact.optimize.development_result import (
+    COAST_STATUS,
+    STATIC_MARGIN,
+    DevelopmentEvaluation,
+    DevelopmentResult,
+    metrics_text,
+)
+from contact.optimize.development_targets import (
+    CROWNING_NAME,
+    FAILED,
+    HEIGHT_NAME,
+    METRIC_NAMES,
+    RELIEF_NAMES,
+    STAGE_TERMS,
+    VARIABLES,
+    DevelopmentTargets,
+    development_score,
+    footprint_centre,
+    targets_from_table,
+    working_depth_centre,
+)
 from geometry.case import Case
 from geometry.core.blas import blas_threads
 from geometry.core.errors import InputError
-from geometry.core.validation import known_fields, real
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import (
-    FLANK_OPTION_UNITS,
     BasicDesign,
     flank_option_values,
     with_flank_options,
 )
 
-__all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "RELIEF_NAMES", "STAGE_TERMS",
-           "VARIABLES",
-           "VERIFIED_DESIGNS", "DevelopmentEvaluation", "DevelopmentResult",
-           "DevelopmentTargets", "KeptTeeth", "design_torque_of", "develop",
-           "development_score", "footprint_centre", "lte_spread", "static_strength",
-           "targets_from_table", "working_depth_centre"]
+__all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNING_STEP",
+           "FAILED", "HEIGHT_DESIGNS", "HEIGHT_NAME", "HEIGHT_SLOPE", "METRIC_NAMES",
+           "RELIEF_NAMES", "STAGE_TERMS", "VARIABLES", "VERIFIED_DESIGNS",
+           "DevelopmentEvaluation", "DevelopmentResult", "DevelopmentTargets", "KeptTeeth",
+           "design_torque_of", "develop", "development_score", "footprint_centre",
+           "lte_spread", "static_strength", "targets_from_table", "working_depth_centre"]
 
 log = logging.getLogger(__name__)
 
-#: The developed synthesis inputs of the drive flank and their default bounds [file
-#: units, ``[synthesis]`` of docs/synthesis.md], in two stages as on the test stand: the
-#: **bearing** (path angle, ellipse length: re-synthesised, steps 3-6 of
-#: :mod:`geometry.synthesis.case_synthesis`) against the light-load pattern and the LTE,
-#: then the **relief** (:data:`RELIEF_NAMES`: the blade's toprem and flankrem only, step 7,
-#: no new synthesis) against the edges at the design torque. The relief starts at most
-#: half-way from M to the ends (the synthesis' default): farther out the rems shorten and
-#: steepen, and on the spiral bevel 13x39 of tests/data/designs a toprem from 0.645 of
-#: the way (corner 1.66 mm above the blade tip, two edge radii) left a fillet the FE tooth
-#: model cannot mesh (contact.compliance.fe: an inverted element). The path angle stays
-#: on the far side of the conjugate contact line (nearly lengthwise for a Formate pair,
-#: −10° to +25°); the relief within the 10–60 µm of automotive practice (Stadtfeld,
-#: *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3; ``geometry.machine.relief``).
-VARIABLES: Mapping[str, tuple[float, float]] = {
-    "path_angle": (-80.0, -25.0),
-    "ellipse_length": (0.15, 0.75),
-    "tip_relief": (0.0, 60.0),
-    "root_relief": (0.0, 60.0),
-    "relief_start": (0.2, 0.5),
-    "blade_angle_change": (-3.0, 3.0),
-    "profile_crowning": (0.0, 30.0),
-}
-#: the relief inputs (the blade's toprem and flankrem; no new synthesis of steps 3-6)
-RELIEF_NAMES = ("tip_relief", "root_relief", "relief_start")
-#: the input that shortens the pattern in depth (the pinion blade's profile curvature,
-#: :func:`geometry.synthesis.blade_change.blade_profile_crowned`), raised by
-#: :data:`CROWNING_STEP` in the height stage where the centred light-load pattern still
-#: touches an edge of the working depth
-CROWNING_NAME = "profile_crowning"
 #: step of the profile crowning in the height stage [µm]
 CROWNING_STEP = 10.0
-#: the input that sets the pattern's height (the pinion blade's pressure-angle change
-#: about M, :mod:`geometry.synthesis.blade_change`), found by a 1-D root-find on the
-#: light-load footprint centre v (:func:`_centre_height`) before and after the relief
-HEIGHT_NAME = "blade_angle_change"
 #: first guess of d(centre v)/d(blade angle change) [1/deg] of the root-find, before it
 #: has measured its own: on the passenger-car hypoid 10x43 of tests/data/designs (drive,
 #: concave flank, the synthesis' default bearing, coarse LTCA at 15 % of 357 N m) a change
@@ -171,348 +171,20 @@ SECOND_BEARING_DESIGNS = 6
 #: CPU (18.7 against 12.3 s on the 12x41, 28.7 against 20.3 s on the 11x43): the coast
 #: flank's shortfalls are its edges, which its relief answers
 COAST_BEARING_DESIGNS = 3
-#: objective of a design whose synthesis or analysis failed
-FAILED = 1e6
-#: shortfall scales of the edge share, the plastic share [1] and the LTE [µrad]
-#: (:func:`development_score`)
-_EDGE_SCALE, _PLASTIC_SCALE, _LTE_SCALE = 0.005, 0.001, 10.0
 
 
-@dataclass(frozen=True)
-class DevelopmentTargets:
-    """The development bearing a synthesis must reach (``[development]`` of a basic file).
-
-    Parameters
-    ----------
-    light_load : float — [1]
-        Light-load torque as a fraction of the design torque, in (0, 0.5]; default 0.15
-        (the pattern is developed at 10–20 % of the design torque, as on a roll tester
-        under light brake load).
-    pattern_length : float — [1]
-        Lengthwise extent of the light-load pattern, fraction of the face width, in
-        (0.1, 0.9); default 0.5: "about half the face width", the pattern the V-H check's
-        toe and heel limits assume (:data:`contact.study.vh_check.VH_DEFAULT_LIMITS`).
-    pattern_length_tolerance : float — [1]
-        Accepted deviation of the length; default 0.1 (two nodes of the gear grid).
-    pattern_centre_u : float — [1]
-        Light-load pattern centre along the face, toe 0 → heel 1; default 0.45: centred
-        with a slight toe bias, since the pattern spreads towards the heel under load
-        (US Army TM 9-2320-273-34 §10-29, fig. 10-27: a satisfactory hypoid pattern
-        "favors the toe and is centered between the top and bottom of the tooth"). The
-        centre is that of the pattern's footprint (:func:`footprint_centre`): the source
-        judges a marking-compound pattern.
-    pattern_centre_v : float or None — [1]
-        Centre along the depth, root cone 0 → face cone 1; default None: the middle of the
-        working depth (TM 9-2320-273-34: "centered between the top and bottom"), whose
-        lower end is the lowest point the pinion tip reaches,
-        1 − (h_a1 + h_a2)/(2 (h_a2 + h_f2)) with the outer addenda and dedendum of the
-        blanks (:func:`working_depth_centre`).
-    centre_tolerance : float — [1]
-        Accepted deviation of each centre coordinate; default 0.08.
-    clearance : float — [1]
-        Least distance of the light-load pattern's ends from the outermost rows of the
-        gear grid (toe, heel, root, tip), fraction of face width or depth; default 0.04.
-    max_edge_share : float — [1]
-        Largest share of the torque carried by edge contact at the design torque;
-        default 0.02 (the loaded pattern may just touch an edge of the relief).
-    max_plastic_share : float — [1]
-        Largest share of the torque on segments at their contact-pressure limit at any
-        roll, light and design torque; default 0 (no plastic edge).
-    max_lte : float — [µrad]
-        Largest LTE peak-to-peak at the light and the design torque; default 40 µrad.
-    max_flank_pressure : float or None — [MPa]
-        Largest flank peak pressure at the design torque; default None: the static
-        strength σ_Hlim·Z_NT,static of the weaker member's material at grade MQ, the limit
-        above which the verdict finds "no life at this torque"
-        (:mod:`contact.study.verdicts`, ISO 6336-2/-5).
-    offset_tolerance, mounting_tolerance : float — [mm]
-        The excursions ΔE = ±V and ΔP = ±H of the tolerance check (the V-H check's
-        directions); default 0.05 mm each (a careful axle assembly, well inside the V-H
-        check's ±0.4/±0.3 mm grid).
-    max_evaluations : int
-        Most designs analysed; default 22, at most 6 of them in the bearing stage (each a
-        synthesis, ≈ 2 s CPU), the rest in the relief stage (each ≈ 0.3 s): 10 on the best
-        bearing, and :data:`SECOND_BEARING_DESIGNS` (6) on the next where the first
-        misses the LTE target.
-    coast_max_evaluations : int
-        Most designs of the coast flank's search, after the drive flank is chosen, at the
-        same light and design torque and on the same targets (the coast flank carries the
-        full torque in reverse gear); default 10 (:data:`COAST_BEARING_DESIGNS` = 3
-        bearings, 7 reliefs), in [0, 500]; 0 turns the coast development off (the coast
-        flank is synthesised from its own prescriptions and checked once). The search runs
-        only where the coast flank as synthesised misses a target.
-    variables : mapping name → (low, high)
-        Developed synthesis inputs (``[synthesis]`` names and units); default
-        :data:`VARIABLES`; ``te_level`` and ``approach`` may be added (bearing stage).
-
-    Raises
-    ------
-    InputError
-        On construction, a field outside its range above (not a finite number, or
-        ``max_evaluations`` not an integer in [1, 500], ``coast_max_evaluations`` not
-        one in [0, 500]), or ``variables`` empty, naming
-        something other than a synthesis input, or giving a bound that is not
-        ``[low, high]`` with low < high; the message names the field
-        (``development.<field>``) and the accepted range.
-    """
-
-    light_load: float = 0.15
-    pattern_length: float = 0.5
-    pattern_length_tolerance: float = 0.1
-    pattern_centre_u: float = 0.45
-    pattern_centre_v: float | None = None
-    centre_tolerance: float = 0.08
-    clearance: float = 0.04
-    max_edge_share: float = 0.02
-    max_plastic_share: float = 0.0
-    max_lte: float = 40.0
-    max_flank_pressure: float | None = None
-    offset_tolerance: float = 0.05
-    mounting_tolerance: float = 0.05
-    max_evaluations: int = 36
-    coast_max_evaluations: int = 20
-    variables: Mapping[str, tuple[float, float]] = field(
-        default_factory=lambda: dict(VARIABLES))
-
-    def __post_init__(self) -> None:
-        def chk(name, low, high, unit="1", **kw):
-            object.__setattr__(self, name, real(f"development.{name}", getattr(self, name),
-                                                unit=unit, low=low, high=high, **kw))
-
-        chk("light_load", 0.0, 0.5, low_open=True)
-        chk("pattern_length", 0.1, 0.9, low_open=True, high_open=True)
-        chk("pattern_length_tolerance", 0.0, 0.5, low_open=True)
-        chk("pattern_centre_u", 0.1, 0.9)
-        if self.pattern_centre_v is not None:
-            chk("pattern_centre_v", 0.1, 0.9)
-        chk("centre_tolerance", 0.0, 0.5, low_open=True)
-        chk("clearance", 0.0, 0.3)
-        chk("max_edge_share", 0.0, 1.0)
-        chk("max_plastic_share", 0.0, 1.0)
-        chk("max_lte", 0.0, 1000.0, unit="urad", low_open=True)
-        if self.max_flank_pressure is not None:
-            chk("max_flank_pressure", 0.0, 1e5, unit="MPa", low_open=True)
-        chk("offset_tolerance", 0.0, 5.0, unit="mm")
-        chk("mounting_tolerance", 0.0, 5.0, unit="mm")
-        for name, low in (("max_evaluations", 1), ("coast_max_evaluations", 0)):
-            n = getattr(self, name)
-            if isinstance(n, bool) or not isinstance(n, int) or not low <= n <= 500:
-                raise InputError(f"development.{name}: must be an integer in [{low}, 500], "
-                                 f"got {n!r}")
-        if not isinstance(self.variables, Mapping) or not self.variables:
-            raise InputError("development.variables: give at least one synthesis input as "
-                             f"name = [low, high]; accepted: {', '.join(FLANK_OPTION_UNITS)}")
-        out = {}
-        for name, pair in self.variables.items():
-            if name not in FLANK_OPTION_UNITS:
-                raise InputError(f"development.variables.{name}: not a synthesis input; "
-                                 f"accepted: {', '.join(FLANK_OPTION_UNITS)}")
-            if not isinstance(pair, (list, tuple)) or len(pair) != 2:
-                raise InputError(f"development.variables.{name}: must be [low, high] "
-                                 f"[{FLANK_OPTION_UNITS[name]}], got {pair!r}")
-            lo, hi = (real(f"development.variables.{name}", v,
-                           unit=FLANK_OPTION_UNITS[name]) for v in pair)
-            if not lo < hi:
-                raise InputError(f"development.variables.{name}: must be low < high, got "
-                                 f"[{lo:g}, {hi:g}] {FLANK_OPTION_UNITS[name]}")
-            out[name] = (lo, hi)
-        object.__setattr__(self, "variables", out)
 
 
-def targets_from_table(table: Mapping[str, Any] | None) -> DevelopmentTargets:
-    """The targets of a ``[development]`` table (file units as :class:`DevelopmentTargets`).
-
-    Raises
-    ------
-    InputError
-        An unknown field (the message lists the accepted ones) or a value out of range.
-    """
-    table = dict(table or {})
-    accepted = [f.name for f in dataclasses.fields(DevelopmentTargets)]
-    known_fields("development", table, accepted)
-    if "variables" in table:
-        if not isinstance(table["variables"], Mapping):
-            raise InputError("development.variables: must be a table name = [low, high]")
-        table["variables"] = {k: tuple(v) if isinstance(v, list) else v
-                              for k, v in table["variables"].items()}
-    return DevelopmentTargets(**table)
 
 
-# --------------------------------------------------------------------------- scoring
-#: metrics of one design at (light, design) torque, as :func:`development_score` reads them
-METRIC_NAMES = ("pattern_toe_u", "pattern_heel_u", "pattern_root_v", "pattern_tip_v",
-                "pattern_centre_u", "pattern_centre_v", "edge_load_share", "plastic_share",
-                "lte_peak_to_peak", "pressure_max_flank", "lte_spread")
 
 
-def working_depth_centre(case: Case) -> float:
-    """Middle of the working depth on the gear flank, fraction of the whole depth from the
-    root cone [1]: 1 − (h_a1 + h_a2)/(2 (h_a2 + h_f2)), outer addenda h_a and dedendum h_f
-    of the case's blanks (the gear tip is the working depth's upper end, the lowest point
-    the pinion tip reaches its lower end)."""
-    p, g = case.pinion.blank, case.gear.blank
-    return 1.0 - (p.outer_addendum + g.outer_addendum) / (
-        2.0 * (g.outer_addendum + g.outer_dedendum))
 
 
-#: the shortfalls each stage of :func:`develop` minimises (the bearing stage leaves the
-#: edges of the working depth to the relief; the flank pressure and the LTE spread are the
-#: bearing's as much as the relief's: a short or narrow bearing peaks in its middle)
-STAGE_TERMS = {
-    "bearing": ("length", "centre_u", "toe", "heel", "lte", "pressure", "spread"),
-    "height": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
-               "plastic", "lte", "pressure", "spread"),
-    "relief": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
-               "plastic", "lte", "pressure", "spread"),
-}
-#: shortfall scale of the LTE spread [1] (:func:`development_score`)
-_SPREAD_SCALE = 0.05
 
 
-def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTargets,
-                      grid: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 1.0), *,
-                      centre_v: float | None = None, stage: str = "relief",
-                      pressure_limit: float = math.inf
-                      ) -> tuple[float, dict[str, float], bool]:
-    """The development objective of one design.
-
-    Parameters
-    ----------
-    metrics : mapping name → ndarray (2,)
-        :data:`METRIC_NAMES` at the (light, design) torque: pattern ends on the gear
-        flank [1] (:func:`contact.study.summary.pattern_dimensions`) and its footprint
-        centre [1] (:func:`footprint_centre`), edge load share
-        [1], largest plastic share at a roll [1], LTE peak-to-peak [µrad], flank peak
-        pressure [MPa], LTE spread [1] (:func:`lte_spread`).
-    targets : DevelopmentTargets
-    grid : (u_toe, u_heel, v_root, v_tip)
-        The outermost rows of the gear grid the pattern is drawn on [1].
-    centre_v : float, optional — [1]
-        The depth centre aimed at where ``targets.pattern_centre_v`` is None (the case's
-        :func:`working_depth_centre`); default 0.5.
-    stage : str
-        ``"relief"`` (default: every target) or ``"bearing"`` (:data:`STAGE_TERMS`).
-    pressure_limit : float — [MPa]
-        Flank peak pressure allowed at the design torque where
-        ``targets.max_flank_pressure`` is None (:func:`static_strength`); default inf.
-
-    Returns
-    -------
-    objective : float
-        Σ of the squared shortfalls of the stage, plus 0.1 × (LTE at the design torque /
-        10 µrad) so that among designs meeting every target the quieter one wins; NaN
-        metrics (no loaded node, a failed analysis) give :data:`FAILED`.
-    shortfalls : dict name → float
-        Each target's shortfall, dimensionless (0 when met): ``length`` and ``centre_u``,
-        ``centre_v`` (deviation beyond the tolerance / tolerance), ``toe``, ``heel``,
-        ``root``, ``tip`` (clearance missing / clearance, light load), ``edge`` (share
-        beyond the limit / 0.5 %), ``plastic`` (share beyond the limit / 0.1 %, worst
-        torque), ``lte`` (LTE beyond the limit / 10 µrad, worst torque), ``pressure``
-        (flank peak pressure at the design torque beyond its limit / 100 MPa), ``spread``
-        (LTE spread beyond the verdict's plausibility limit
-        :data:`~contact.ltca.plausibility.LTE_SPREAD_LIMIT` / 0.05, worst torque).
-    met : bool
-        Every shortfall of the stage is 0.
-
-    Raises
-    ------
-    InputError
-        An unknown stage.
-
-    Notes
-    -----
-    A quadratic exterior penalty (Nocedal & Wright, *Numerical Optimization*, 2nd ed.,
-    §17.1) on each target: designs that meet all score only the small LTE term. The scales
-    rank durability before noise: a plastic edge (0.1 % of the torque a unit; above 5 %
-    the verdict calls the contact implausible) and edge contact (0.5 % a unit) weigh more
-    than the LTE (10 µrad a unit), so that where the targets conflict (the spiral bevel
-    13x39 of tests/data/designs: no relief without 100 µrad of LTE) the development keeps
-    the edges elastic and says the LTE was missed.
-    """
-    if stage not in STAGE_TERMS:
-        raise InputError(f"stage: must be one of {', '.join(STAGE_TERMS)}, got {stage!r}")
-    m = {k: np.asarray(metrics[k], float) for k in METRIC_NAMES}
-    u0, u1, v0, v1 = grid
-    t = targets
-    cv = (t.pattern_centre_v if t.pattern_centre_v is not None else
-          0.5 if centre_v is None else centre_v)
-    c = max(t.clearance, 1e-3)
-    plimit = t.max_flank_pressure if t.max_flank_pressure is not None else pressure_limit
-    length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
-    short = {
-        "length": max(0.0, abs(length - t.pattern_length) - t.pattern_length_tolerance)
-        / t.pattern_length_tolerance,
-        "centre_u": max(0.0, abs(m["pattern_centre_u"][0] - t.pattern_centre_u)
-                        - t.centre_tolerance) / t.centre_tolerance,
-        "centre_v": max(0.0, abs(m["pattern_centre_v"][0] - cv) - t.centre_tolerance)
-        / t.centre_tolerance,
-        "toe": max(0.0, c - (m["pattern_toe_u"][0] - u0)) / c,
-        "heel": max(0.0, c - (u1 - m["pattern_heel_u"][0])) / c,
-        "root": max(0.0, c - (m["pattern_root_v"][0] - v0)) / c,
-        "tip": max(0.0, c - (v1 - m["pattern_tip_v"][0])) / c,
-        "edge": max(0.0, m["edge_load_share"][1] - t.max_edge_share) / _EDGE_SCALE,
-        "plastic": max(0.0, float(np.max(m["plastic_share"])) - t.max_plastic_share)
-        / _PLASTIC_SCALE,
-        "lte": max(0.0, float(np.max(m["lte_peak_to_peak"])) - t.max_lte) / _LTE_SCALE,
-        "pressure": max(0.0, m["pressure_max_flank"][1] - plimit) / 100.0,
-        "spread": max(0.0, float(np.max(m["lte_spread"])) - LTE_SPREAD_LIMIT)
-        / _SPREAD_SCALE,
-    }
-    short = {k: float(v) for k, v in short.items()}
-    terms = STAGE_TERMS[stage]
-    read = [m[k][0] for k in METRIC_NAMES[:6]] + [m["edge_load_share"][1],
-                                                 *m["plastic_share"], *m["lte_peak_to_peak"]]
-    if not np.all(np.isfinite(read)):  # max(0, NaN) would hide a missing pattern
-        return FAILED, dict.fromkeys(short, math.inf), False
-    met = all(short[k] == 0.0 for k in terms)
-    objective = float(sum(short[k] ** 2 for k in terms)
-                      + 0.1 * m["lte_peak_to_peak"][1] / 10.0)
-    return objective, short, met
 
 
-# --------------------------------------------------------------------------- evaluation
-@dataclass(frozen=True, eq=False)
-class DevelopmentEvaluation:
-    """One analysed design of a development.
-
-    Attributes
-    ----------
-    index : int
-    values : dict name → float
-        The developed inputs [file units].
-    metrics : dict name → ndarray (2,)
-        :data:`METRIC_NAMES` at (light, design) torque; NaN when it failed.
-    objective : float
-    shortfalls : dict name → float
-    met : bool
-    reason : str
-        Why the design failed (empty if it did not).
-    seconds : float
-        CPU time of its synthesis and analysis [s].
-    case : Case or None
-        The synthesised case (None when the synthesis failed).
-    full : (objective, shortfalls, met) or None
-        The score on every target (stage ``"relief"``), for comparing designs of both
-        stages; None when it failed.
-    checked : bool
-        ``metrics`` and ``full`` are those of the final check at the default sampling
-        (:data:`CHECK_LTCA`), not of the coarse search.
-    stage : str
-        ``"bearing"`` or ``"relief"``.
-    """
-
-    index: int
-    values: dict[str, float]
-    metrics: dict[str, np.ndarray]
-    objective: float
-    shortfalls: dict[str, float]
-    met: bool
-    reason: str
-    seconds: float
-    case: Case | None = None
-    full: tuple[float, dict[str, float], bool] | None = None
-    checked: bool = False
-    stage: str = ""
 
 
 def design_torque_of(basic: BasicDesign, case: Case) -> tuple[float, str]:
@@ -550,55 +222,6 @@ def static_strength(tree) -> float:
     return float(min(c.allowable * c.static_life_factor for c in curves))
 
 
-def footprint_centre(envelope: np.ndarray, u: np.ndarray, v: np.ndarray
-                     ) -> tuple[np.ndarray, np.ndarray]:
-    """The centroid of the loaded pattern's footprint, per torque: the mean grid position
-    of the loaded nodes, each weighted equally whatever its pressure.
-
-    Parameters
-    ----------
-    envelope : ndarray, shape (NT, nu, nv) — [MPa]
-        The pressure envelope (``/ltca pressure_envelope``); a node is loaded where it is
-        positive (NaN counts as unloaded).
-    u : ndarray, shape (nu,) — [1]
-        Gear grid fractions along the face, toe 0 → heel 1.
-    v : ndarray, shape (nv,) — [1]
-        Gear grid fractions along the depth, root cone 0 → face cone 1.
-
-    Returns
-    -------
-    (ndarray, ndarray), each shape (NT,) — [1]
-        Footprint centre u and v; NaN at a torque with no loaded node.
-
-    Raises
-    ------
-    InputError
-        ``envelope`` not three-dimensional or its last two axes not (len(u), len(v)).
-
-    Notes
-    -----
-    This is the centre the development judges (``pattern_centre_u``/``_v`` of its
-    metrics), not the pressure-weighted one of
-    :func:`contact.study.summary.pattern_dimensions`: the targets' source judges a
-    marking-compound pattern, the area the mating flank wipes clear (US Army TM
-    9-2320-273-34 §10-29: "centered between the top and bottom of the tooth"), a footprint
-    in which every marked point counts alike. Weighted by pressure the centre leans to
-    where the Hertzian pressure peaks — on a hypoid, towards the gear tip, which meets the
-    pinion's root of largest profile curvature — by 0.03-0.08 of the depth on the
-    passenger-car hypoid 10x43 and the spiral bevel 13x39 of tests/data/designs
-    (docs/synthesis.md, "Development bearing": the pattern's centre).
-    """
-    env = np.asarray(envelope, float)
-    u, v = np.asarray(u, float), np.asarray(v, float)
-    if env.ndim != 3 or env.shape[1:] != (u.size, v.size):
-        raise InputError(f"pressure envelope: shape {env.shape} is not (torque, "
-                         f"{u.size}, {v.size}) (torque, u, v of the gear grid)")
-    loaded = np.nan_to_num(env) > 0.0
-    n = loaded.sum(axis=(1, 2)).astype(float)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        cu = np.where(n > 0, (loaded.sum(axis=2) * u).sum(axis=1) / n, np.nan)
-        cv = np.where(n > 0, (loaded.sum(axis=1) * v).sum(axis=1) / n, np.nan)
-    return cu, cv
 
 
 def _metrics(tree, case: Case) -> dict[str, np.ndarray]:
@@ -711,385 +334,14 @@ def _analyse(case: Case, torques: list[float], misalignment: Misalignment | None
     return _metrics(tree, c), (*_grid(tree), static_strength(tree))
 
 
-@dataclass(frozen=True, eq=False)
-class DevelopmentResult:
-    """What :func:`develop` did.
-
-    Attributes
-    ----------
-    basic : BasicDesign
-        The design with the developed prescriptions of the drive flank (and of the coast
-        flank where :attr:`coast_status` is ``"developed"``).
-    case : Case
-        Its synthesis (the developed case).
-    report : geometry.synthesis.case_synthesis.SynthesisReport
-        The synthesis report of ``case``.
-    best : DevelopmentEvaluation
-        The chosen design (every target met, else the least objective).
-    evaluations : tuple of DevelopmentEvaluation
-        Every design analysed, in order.
-    torque : (float, float) — [N·m]
-        Light and design pinion torque.
-    torque_source : str
-        Where the design torque came from (:func:`design_torque_of`).
-    tolerance : dict label → (metrics, shortfalls)
-        The developed design at each excursion (``dE+0.05`` …) at (light, design) torque,
-        with the shortfalls of the clearance, edge and plastic targets there.
-    targets : DevelopmentTargets
-    seconds : float
-        CPU time of the whole development [s].
-    centre_v : float — [1]
-        The depth centre aimed at (``targets.pattern_centre_v`` or the working depth's
-        middle, :func:`working_depth_centre`).
-    coast : dict name → ndarray (2,) or None
-        :data:`METRIC_NAMES` of the written case's coast flank at (light, design) torque
-        at :data:`CHECK_LTCA`; None where that analysis failed.
-    check_seconds : float
-        CPU time [s] of the drive flank's final check, the final synthesis and the
-        tolerance check (the rest of ``seconds`` is the designs' and the coast flank's,
-        :attr:`stage_seconds`).
-    torque_lowered : bool
-        The design torque is the bearing's static flank capacity, below the rating's
-        (:func:`_static_capacity`); :meth:`recorded` writes it as the case's
-        ``[rating] design_torque``.
-    coast_best : DevelopmentEvaluation or None
-        The coast flank written: a design of its search (checked at :data:`CHECK_LTCA`)
-        or, stage ``"synthesised"``, the flank as synthesised from its own prescriptions;
-        None where its analysis failed.
-    coast_evaluations : tuple of DevelopmentEvaluation
-        Every design of the coast flank's search, in order (empty where none ran).
-    coast_status : str
-        A key of :data:`COAST_STATUS`: ``"developed"``, ``"met"`` (every target met as
-        synthesised: no search), ``"off"`` (``coast_max_evaluations`` = 0), ``"not
-        improved"`` (the search found nothing better) or ``"not checked"``; empty where
-        not known (a result made by hand).
-    coast_before : dict name → ndarray (2,) or None
-        The coast flank's metrics as synthesised where its search ran (else None).
-    coast_seconds : float
-        CPU time [s] of the coast flank's check and development.
-    pressure_limit : float — [MPa]
-        The flank peak pressure allowed at the design torque (``max_flank_pressure`` or
-        the static strength, :func:`static_strength`); inf where not known.
-    """
-
-    basic: BasicDesign
-    case: Case
-    report: Any
-    best: DevelopmentEvaluation
-    evaluations: tuple[DevelopmentEvaluation, ...]
-    torque: tuple[float, float]
-    torque_source: str
-    tolerance: dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]
-    targets: DevelopmentTargets
-    seconds: float
-    centre_v: float = 0.5
-    coast: dict[str, np.ndarray] | None = None
-    check_seconds: float = 0.0
-    torque_lowered: bool = False
-    coast_best: DevelopmentEvaluation | None = None
-    coast_evaluations: tuple[DevelopmentEvaluation, ...] = ()
-    coast_status: str = ""
-    coast_before: dict[str, np.ndarray] | None = None
-    coast_seconds: float = 0.0
-    pressure_limit: float = math.inf
-
-    @property
-    def tolerant(self) -> bool:
-        """At every excursion the pattern stays clear of toe and heel at light load and the
-        edges elastic with at most the edge share allowed."""
-        keys = ("toe", "heel", "edge", "plastic")
-        return all(all(s[k] == 0.0 for k in keys) for _, s in self.tolerance.values())
-
-    @property
-    def stage_seconds(self) -> dict[str, float]:
-        """CPU time [s] of the drive flank's bearing stage, its relief stage (their
-        designs' syntheses and coarse LTCAs), the final checks and the coast flank (its
-        check and development)."""
-        out = {st: sum(e.seconds for e in self.evaluations if e.stage == st)
-               for st in ("bearing", "height", "relief")}
-        return out | {"check": self.check_seconds, "coast": self.coast_seconds}
-
-    def summary(self) -> str:
-        """One paragraph for the case's ``source``: prescriptions, targets, achieved."""
-        b, t = self.best, self.targets
-        m = b.metrics
-        vals = _values_text(b.values)
-        tl, td = self.torque
-        tol = "; ".join(
-            f"{lab}: pattern {ms['pattern_toe_u'][0]:.2f}-{ms['pattern_heel_u'][0]:.2f}, edge "
-            f"{100 * ms['edge_load_share'][1]:.1f} %, plastic "
-            f"{100 * np.max(ms['plastic_share']):.1f} %"
-            for lab, (ms, _) in self.tolerance.items())
-        return (
-            f"Development bearing (contact.optimize.development, {len(self.evaluations)} "
-            f"designs, coarse LTCA, the chosen one "
-            f"{'checked at the default sampling' if b.checked else 'not checked'}): drive "
-            f"flank {vals}; targets at {tl:.4g} N m (light, "
-            f"{t.light_load:g} x design) pattern {t.pattern_length:g} +/- "
-            f"{t.pattern_length_tolerance:g} of the face width centred at "
-            f"({t.pattern_centre_u:g}, {self.centre_v:.3g}), clear of the flank ends by "
-            f"{t.clearance:g}; at {td:.4g} N m (design, {self.torque_source}) edge share <= "
-            f"{100 * t.max_edge_share:g} %, plastic <= {100 * t.max_plastic_share:g} %; LTE "
-            f"p-p <= {t.max_lte:g} urad. Achieved: pattern u {m['pattern_toe_u'][0]:.2f}-"
-            f"{m['pattern_heel_u'][0]:.2f}, v {m['pattern_root_v'][0]:.2f}-"
-            f"{m['pattern_tip_v'][0]:.2f}, centre ({m['pattern_centre_u'][0]:.2f}, "
-            f"{m['pattern_centre_v'][0]:.2f}); edge share {100 * m['edge_load_share'][0]:.1f}/"
-            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
-            f"{100 * m['plastic_share'][0]:.1f}/{100 * m['plastic_share'][1]:.1f} %, LTE p-p "
-            f"{m['lte_peak_to_peak'][0]:.1f}/{m['lte_peak_to_peak'][1]:.1f} urad, flank "
-            f"peak pressure {m['pressure_max_flank'][0]:.0f}/"
-            f"{m['pressure_max_flank'][1]:.0f} MPa (light/design); {self._met_text()}. "
-            f"Tolerance (dE = +/-{t.offset_tolerance:g} mm, dP = +/-"
-            f"{t.mounting_tolerance:g} mm): {tol}"
-            f" ({'tolerant' if self.tolerant else 'not tolerant'}). "
-            + self._coast_text().rstrip())
-
-    def headline(self) -> str:
-        """One line: the chosen design, whether it met its targets and is tolerant, and
-        what became of the coast flank."""
-        b, t = self.best, self.targets
-        m = b.metrics
-        return (f"development: design {b.index + 1} of {len(self.evaluations)}, "
-                f"{self.missed_text(b)}; light-load pattern {m['pattern_toe_u'][0]:.2f}-"
-                f"{m['pattern_heel_u'][0]:.2f} of the face, edge share "
-                f"{100 * m['edge_load_share'][1]:.1f} % and LTE p-p "
-                f"{m['lte_peak_to_peak'][1]:.0f} urad at {self.torque[1]:.4g} N m; "
-                f"{'tolerant' if self.tolerant else 'not tolerant'} at dE +/-"
-                f"{t.offset_tolerance:g} mm, dP +/-{t.mounting_tolerance:g} mm; "
-                f"{self._coast_headline()}; {self._pressures_text()}; "
-                f"{self.seconds:.0f} s CPU")
-
-    @property
-    def coast_static_capacity(self) -> float:
-        """The coast flank's static flank capacity [N·m] where its flank peak pressure at
-        the design torque exceeds the limit (:attr:`pressure_limit`), else NaN:
-        T (0.99 p_lim / p_max)³, rounded down to 0.1 N·m — Hertz's p ∝ F^(1/3) of a point
-        contact, conservative where the pattern grows under load (p grows more slowly),
-        as the drive flank's first step (:func:`_static_capacity`)."""
-        if not self.coast or not math.isfinite(self.pressure_limit):
-            return math.nan
-        p = float(self.coast["pressure_max_flank"][1])
-        if not (math.isfinite(p) and p > self.pressure_limit):
-            return math.nan
-        t = self.torque[1] * (_STATIC_MARGIN * self.pressure_limit / p) ** 3
-        return math.floor(10.0 * t) / 10.0
-
-    def with_coast_capacity(self, case: Case) -> tuple[Case, float]:
-        """``case`` with ``[rating] coast_design_torque`` lowered to
-        :attr:`coast_static_capacity` where that is below the coast side's design torque
-        (its ``coast_design_torque``, else the design torque), with a sentence in the
-        rating's ``source``; the torque written (NaN where unchanged). Each flank's design
-        torque is then no higher than its own static flank capacity at its developed
-        bearing."""
-        import json
-        from types import MappingProxyType
-
-        cap = self.coast_static_capacity
-        rating = dict(case.extra.get("rating") or {})
-        now = rating.get("coast_design_torque", rating.get("design_torque"))
-        if not math.isfinite(cap) or now is None or cap >= float(now):
-            return case, math.nan
-        p = float(self.coast["pressure_max_flank"][1])
-        rating["coast_design_torque"] = cap
-        rating["source"] = (str(rating.get("source", "")).rstrip()
-                            + f" coast_design_torque {cap:g} N m: the coast flank's static "
-                            f"capacity of its developed bearing (contact.optimize.development:"
-                            f" flank peak pressure {p:.0f} MPa at {self.torque[1]:g} N m "
-                            f"above the static strength {self.pressure_limit:.0f} MPa).")
-        extra = json.loads(json.dumps({**case.extra, "rating": rating}))
-        return dataclasses.replace(case, extra=MappingProxyType(extra)), cap
-
-    def missed_text(self, e: DevelopmentEvaluation | None = None) -> str:
-        """Whether ``e`` (default the chosen drive design) met every target, else each
-        missed target with its value and its limit, in numbers."""
-        e = self.best if e is None else e
-        if e.full is None:
-            return "not analysed"
-        if e.full[2]:
-            return "every target met"
-        return "not every target met: " + "; ".join(
-            _missed(k, e.metrics, self.targets, self.centre_v, self.pressure_limit)
-            for k, v in e.full[1].items() if v > 0)
-
-    def _pressures_text(self) -> str:
-        """Both flanks' flank peak pressure at the design torque against the limit."""
-        drive = float(self.best.metrics["pressure_max_flank"][1])
-        coast = (float(self.coast["pressure_max_flank"][1]) if self.coast
-                 else math.nan)
-        lim = (f" (limit {self.pressure_limit:.0f} MPa)"
-               if math.isfinite(self.pressure_limit) else "")
-        return (f"flank peak pressure at {self.torque[1]:.4g} N m drive {drive:.0f} MPa, "
-                f"coast {coast:.0f} MPa{lim}")
-
-    def recorded(self, case: Case) -> Case:
-        """``case`` (the developed case, maybe with its rating's design torque set) with
-        :meth:`summary` appended to its ``source``, :meth:`table` as its informational
-        ``[development]`` table and, where the basic file's ``[operating]`` gives no
-        torques, the light and the design torque as its operating torques [N·m]."""
-        import json
-        from types import MappingProxyType
-
-        extra = json.loads(json.dumps({**case.extra, "development": self.table()}))
-        if self.torque_lowered:  # the rating's design torque is the bearing's capacity
-            rating = dict(extra.get("rating") or {})
-            rating["design_torque"] = float(self.torque[1])
-            rating["source"] = (str(rating.get("source", "")).rstrip()
-                                + f" design_torque lowered to {self.torque[1]:g} N m by the "
-                                f"development: {self.torque_source}.").lstrip()
-            extra["rating"] = rating
-        more: dict[str, Any] = {}
-        if "torque" not in self.basic.operating:
-            # the loads the bearing was developed for are the case's operating torques
-            # (the seed's 50/250/500 N·m otherwise, unrelated to this design's size)
-            # (to 0.1 N·m, rounded down: the design torque is the rating's long-life
-            # capacity by default, at which S_H = S_H,min exactly; rounded up it would fail
-            # the rating by round-off)
-            more["operating"] = dataclasses.replace(
-                case.operating, torque=tuple(math.floor(10.0 * float(t)) / 10.0
-                                             for t in self.torque))
-        return dataclasses.replace(case, source=case.source.rstrip() + " " + self.summary(),
-                                   extra=MappingProxyType(extra), **more)
-
-    def _coast_text(self) -> str:
-        c = self.coast
-        if not c:
-            return "Coast flank: not checked (its analysis failed). "
-        achieved = (f"pattern u {c['pattern_toe_u'][0]:.2f}-{c['pattern_heel_u'][0]:.2f}, v "
-                    f"{c['pattern_root_v'][0]:.2f}-{c['pattern_tip_v'][0]:.2f}, centre "
-                    f"({c['pattern_centre_u'][0]:.2f}, {c['pattern_centre_v'][0]:.2f}); edge share "
-                    f"{100 * c['edge_load_share'][0]:.1f}/{100 * c['edge_load_share'][1]:.1f}"
-                    f" %, plastic {100 * c['plastic_share'][0]:.1f}/"
-                    f"{100 * c['plastic_share'][1]:.1f} %, flank peak pressure "
-                    f"{c['pressure_max_flank'][0]:.0f}/{c['pressure_max_flank'][1]:.0f} MPa, "
-                    f"LTE p-p {c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} "
-                    "urad (light/design)")
-        b = self.coast_best
-        met = "" if b is None or b.full is None else f"; {_met_text(b.full)}"
-        if self.coast_status == "developed":
-            before = self.coast_before
-            was = ("" if not before else
-                   f"; as synthesised plastic {100 * np.max(before['plastic_share']):.1f} %, "
-                   f"edge share {100 * before['edge_load_share'][1]:.1f} %, LTE p-p "
-                   f"{before['lte_peak_to_peak'][0]:.1f}/"
-                   f"{before['lte_peak_to_peak'][1]:.1f} urad")
-            n = len(self.coast_evaluations)
-            return (f"Coast flank (developed, {n} design{'s' if n != 1 else ''} at the "
-                    f"same torques and targets, the chosen one checked at the default "
-                    f"sampling): {_values_text(b.values)}{was}. Achieved: {achieved}{met}. ")
-        why = COAST_STATUS.get(self.coast_status, "not developed")
-        if self.coast_status == "not improved":
-            why += f" ({len(self.coast_evaluations)} designs)"
-        return f"Coast flank ({why}): {achieved}{met}. "
-
-    def _coast_headline(self) -> str:
-        b = self.coast_best
-        if self.coast_status == "developed":
-            return (f"coast flank developed ({len(self.coast_evaluations)} designs): plastic "
-                    f"{100 * np.max(b.metrics['plastic_share']):.1f} %, "
-                    f"{self.missed_text(b)}")
-        if b is None or b.full is None:
-            return "coast flank not checked"
-        what = {"met": "met every target as synthesised", "off": "coast development off",
-                "not improved": "its search found nothing better"}.get(self.coast_status,
-                                                                      "not developed")
-        return (f"coast flank not developed ({what}): plastic "
-                f"{100 * np.max(b.metrics['plastic_share']):.1f} %, {self.missed_text(b)}")
-
-    def _met_text(self) -> str:
-        return _met_text(self.best.full)
-
-    def table(self) -> dict[str, Any]:
-        """The case's informational ``[development]`` table (TOML-safe values)."""
-        b = self.best
-        m = {k: [round(float(x), 6) for x in v] for k, v in b.metrics.items()}
-        return {
-            "note": "informational (contact.optimize.development): the developed drive-flank "
-                    "prescriptions and what the LTCA gave at [light, design] torque "
-                    + ("(the final check at ltca run's default sampling)" if b.checked
-                       else "(the coarse LTCA of the search)")
-                    + "; coast: the coast flank at the same torques and targets (its "
-                    "development, the prescriptions written, achieved at the default "
-                    "sampling); coast_achieved: the same metrics as achieved",
-            "torque_Nm": [float(x) for x in self.torque],
-            "design_torque_source": self.torque_source,
-            "prescriptions": {k: float(v) for k, v in b.values.items()},
-            "targets_met": int(b.full[2]),
-            "tolerant": int(self.tolerant),
-            "evaluations": len(self.evaluations),
-            "cpu_seconds": round(self.seconds, 1),
-            "cpu_seconds_stages": {k: round(v, 1) for k, v in self.stage_seconds.items()},
-            "achieved": m,
-            "coast": self._coast_table(),
-        } | ({"coast_achieved": _rounded(self.coast)} if self.coast else {})
-
-    def _coast_table(self) -> dict[str, Any]:
-        c = self.coast_best
-        out: dict[str, Any] = {
-            "development": COAST_STATUS.get(self.coast_status, "not developed"),
-            "evaluations": len(self.coast_evaluations),
-            "cpu_seconds": round(self.coast_seconds, 1)}
-        if c is not None:
-            out["prescriptions"] = {k: float(v) for k, v in c.values.items()}
-            if c.full is not None:
-                out["targets_met"] = int(c.full[2])
-                out["missed"] = [k for k, v in c.full[1].items() if v > 0]
-        if self.coast_before:
-            out["as_synthesised"] = _rounded(self.coast_before)
-        return out
 
 
-def _rounded(metrics: Mapping[str, np.ndarray]) -> dict[str, list[float]]:
-    return {k: [round(float(x), 6) for x in v] for k, v in metrics.items()}
 
 
-def _met_text(full: tuple[float, dict[str, float], bool]) -> str:
-    _, short, met = full
-    return ("every target met" if met else "not every target met: "
-            + ", ".join(k for k, v in short.items() if v > 0))
 
 
-def _missed(name: str, m: Mapping[str, np.ndarray], t: DevelopmentTargets,
-            centre_v: float, pressure_limit: float) -> str:
-    """One missed target of :func:`development_score` with its value and its limit."""
-    if name == "length":
-        length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
-        return (f"pattern length {length:.2f} (target {t.pattern_length:g} +/- "
-                f"{t.pattern_length_tolerance:g})")
-    if name == "centre_u":
-        return (f"centre u {m['pattern_centre_u'][0]:.2f} (target {t.pattern_centre_u:g} "
-                f"+/- {t.centre_tolerance:g})")
-    if name == "centre_v":
-        return (f"centre v {m['pattern_centre_v'][0]:.2f} (target {centre_v:.3g} +/- "
-                f"{t.centre_tolerance:g})")
-    ends = {"toe": ("pattern_toe_u", "toe u"), "heel": ("pattern_heel_u", "heel u"),
-            "root": ("pattern_root_v", "root v"), "tip": ("pattern_tip_v", "tip v")}
-    if name in ends:
-        key, what = ends[name]
-        return (f"{name} clearance: pattern {what} {m[key][0]:.2f} (clear of the grid's "
-                f"end by {t.clearance:g})")
-    if name == "edge":
-        return (f"edge share {100 * m['edge_load_share'][1]:.1f} % (limit "
-                f"{100 * t.max_edge_share:g} %)")
-    if name == "plastic":
-        return (f"plastic share {100 * np.max(m['plastic_share']):.1f} % (limit "
-                f"{100 * t.max_plastic_share:g} %)")
-    if name == "lte":
-        return (f"LTE p-p {np.max(m['lte_peak_to_peak']):.0f} urad (limit "
-                f"{t.max_lte:g})")
-    if name == "pressure":
-        lim = t.max_flank_pressure if t.max_flank_pressure is not None else pressure_limit
-        return (f"flank peak pressure {m['pressure_max_flank'][1]:.0f} MPa (limit "
-                f"{lim:.0f})")
-    if name == "spread":
-        return (f"LTE spread {np.max(m['lte_spread']):.2f} (limit "
-                f"{LTE_SPREAD_LIMIT:g})")
-    return name
 
 
-def _values_text(values: Mapping[str, float]) -> str:
-    return ", ".join(f"{k} {v:.4g}" + (f" {FLANK_OPTION_UNITS[k]}"
-                                        if FLANK_OPTION_UNITS[k] != "1" else "")
-                     for k, v in values.items())
 
 
 class _Stop(Exception):
@@ -1430,8 +682,6 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
     return True
 
 
-#: margin below the flank's static strength that :func:`_static_capacity` aims at [1]
-_STATIC_MARGIN = 0.99
 
 
 def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -1461,7 +711,7 @@ def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     capacity, exponent = torque, 1.0 / 3.0
     accepted = None
     for _ in range(3):
-        new = torque * (_STATIC_MARGIN * limit / p) ** (1.0 / exponent)
+        new = torque * (STATIC_MARGIN * limit / p) ** (1.0 / exponent)
         new = float(f"{math.floor(new * 10.0) / 10.0:.4g}")  # rounded down to 0.1 N·m
         if new == torque:
             break
@@ -1515,14 +765,6 @@ class _CoastOutcome(NamedTuple):
     before: dict[str, np.ndarray] | None
 
 
-#: the outcomes of the coast flank's development (``DevelopmentResult.coast_status``)
-COAST_STATUS = {
-    "developed": "developed",
-    "met": "not developed: met every target as synthesised",
-    "off": "not developed: coast development off (coast_max_evaluations = 0)",
-    "not improved": "not developed: no design of its search did better than as synthesised",
-    "not checked": "not checked: its analysis failed",
-}
 
 
 def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
@@ -1564,7 +806,7 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
                                         stage="synthesised")
     missed = [k for k, v in full[1].items() if v > 0]
     head = (f"development: coast flank {side} as synthesised, at the default sampling: "
-            f"{_metrics_text(m0)}; ")
+            f"{metrics_text(m0)}; ")
     if full[2]:
         say(head + "every target met: not developed")
         return _CoastOutcome(developed, synthesised, [], "met", None)
@@ -1600,15 +842,6 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     return _CoastOutcome(basic_of(chosen.values), chosen, evals, "developed", m0)
 
 
-def _metrics_text(m: Mapping[str, np.ndarray]) -> str:
-    """A design's metrics in one phrase (light-load pattern and its footprint centre,
-    design-torque edge share, worst plastic share, LTE at both torques)."""
-    return (f"pattern {m['pattern_toe_u'][0]:.2f}-{m['pattern_heel_u'][0]:.2f} x "
-            f"{m['pattern_root_v'][0]:.2f}-{m['pattern_tip_v'][0]:.2f} centre "
-            f"({m['pattern_centre_u'][0]:.2f}, {m['pattern_centre_v'][0]:.2f}), edge "
-            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
-            f"{100 * np.max(m['plastic_share']):.1f} %, LTE "
-            f"{m['lte_peak_to_peak'][0]:.0f}/{m['lte_peak_to_peak'][1]:.0f} urad")
 
 
 def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
@@ -1930,6 +1163,6 @@ def _line(e: DevelopmentEvaluation, n: int, stage: str = "relief") -> str:
     vals = ", ".join(f"{k} {v:.3g}" for k, v in e.values.items())
     if e.reason:
         return f"  {stage} design {e.index + 1}/{n}: {vals}: failed ({e.reason})"
-    return (f"  {stage} design {e.index + 1}/{n}: {vals}: {_metrics_text(e.metrics)}; "
+    return (f"  {stage} design {e.index + 1}/{n}: {vals}: {metrics_text(e.metrics)}; "
             f"objective {e.objective:.3g}{' (all targets met)' if e.met else ''} "
             f"[{e.seconds:.0f} s]")
