@@ -526,7 +526,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
     c_check = time.process_time()
     best = _checked_best(evals, targets, setup, teeth, say,
-                         functools.partial(_placed_case, basic, flank, memo))
+                         functools.partial(_placed_case, basic, flank, memo),
+                         slopes=evaluate.slopes)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = _static_capacity(best, targets, setup, teeth, say)
     developed = with_flank_options(basic, flank, best.values)
@@ -830,7 +831,8 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
                COAST_BEARING_DESIGNS):
         best = _checked_best(evals, targets, setup, teeth, say,
                              lambda values: synthesize(basic_of(values), memo=memo)[0],
-                             side="coast", key_prefix=prefix, n_max=n_max)
+                             side="coast", key_prefix=prefix, n_max=n_max,
+                             slopes=evaluate.slopes)
         as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
         if (best.checked and not as_synthesised
                 and (not best.full[2], best.full[0]) < (not full[2], full[0])):
@@ -1102,8 +1104,8 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
                   setup: Mapping[str, Any], teeth: KeptTeeth,
                   say: Callable[[str], None],
                   placed: Callable[[Mapping[str, float]], Case] | None = None, *,
-                  side: str = "drive", key_prefix: tuple = (), n_max: int | None = None
-                  ) -> DevelopmentEvaluation:
+                  side: str = "drive", key_prefix: tuple = (), n_max: int | None = None,
+                  slopes: Mapping[tuple, float] | None = None) -> DevelopmentEvaluation:
     """The chosen design: the best of the coarse search checked in turn at
     :data:`CHECK_LTCA` (at most :data:`VERIFIED_DESIGNS`) until one meets every target
     there, then the best by its checked score (every target met first). ``placed``: the
@@ -1111,7 +1113,11 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
     leaves them out), checked and kept in place of the coarse search's. ``side``: the
     flank analysed (``"drive"`` or ``"coast"``), its pinion tooth kept under
     ``key_prefix`` and the design's bearing (:class:`KeptTeeth`); ``n_max``: the budget
-    its lines name (default ``targets.max_evaluations``)."""
+    its lines name (default ``targets.max_evaluations``); ``slopes``: the height stage's
+    measured d(centre v)/d(blade angle) per bearing (:func:`_note_slope`): where the chosen
+    design misses the centre v at the default sampling (the coarse LTCA's footprint sits a
+    node off), one Newton step of its blade angle is checked too and kept where it scores
+    better."""
     n_max = targets.max_evaluations if n_max is None else n_max
     what = "design" if side == "drive" else f"{side} design"
     ranked = sorted((e for e in evals if e.full is not None),
@@ -1136,7 +1142,33 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
             + _line(checked[-1], n_max).split(": ", 2)[-1])
         if full[2]:
             break
-    return min(checked or ranked, key=lambda e: (not e.full[2], e.full[0]))
+    chosen = min(checked or ranked, key=lambda e: (not e.full[2], e.full[0]))
+    slope = (slopes or {}).get(_bearing_key(chosen.values))
+    if (placed is None or slope is None or not chosen.checked
+            or HEIGHT_NAME not in chosen.values or chosen.full[1]["centre_v"] == 0.0
+            or not math.isfinite(_centre_v(chosen))):
+        return chosen
+    lo, hi = targets.variables.get(HEIGHT_NAME, (-3.0, 3.0))
+    target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
+              else setup["centre_v"])
+    x = float(np.clip(chosen.values[HEIGHT_NAME] - (_centre_v(chosen) - target) / slope,
+                      lo, hi))
+    values = chosen.values | {HEIGHT_NAME: x}
+    try:
+        case = placed(values)
+        ms, grid = _analyse(case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
+                            pinion_key=(*key_prefix, *_bearing_key(values)), flank=side)
+    except Exception as exc:  # reported, never fatal: the chosen design stands
+        log.info("development re-centring of %s %d failed: %s", what, chosen.index + 1, exc)
+        return chosen
+    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                             pressure_limit=grid[4])
+    again = dataclasses.replace(chosen, values=values, metrics=ms, objective=full[0],
+                                shortfalls=full[1], met=full[2], full=full, case=case,
+                                checked=True, stage="re-centred")
+    say(f"  {what} {chosen.index + 1} re-centred at the default sampling, "
+        f"{HEIGHT_NAME} {x:.3g}: " + _line(again, n_max).split(": ", 2)[-1])
+    return again if (not full[2], full[0]) < (not chosen.full[2], chosen.full[0]) else chosen
 
 
 def _bearing_key(values: Mapping[str, float]) -> tuple:
