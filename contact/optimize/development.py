@@ -648,7 +648,9 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
     analysed."""
     bearing = [n for n in targets.variables
                if n not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)]
-    relief = [n for n in targets.variables if n in RELIEF_NAMES]
+    # the relief stage varies the profile crowning too: the height stage raises it where
+    # the centred pattern reaches an end, the relief may do that work with less LTE
+    relief = [n for n in targets.variables if n in (*RELIEF_NAMES, CROWNING_NAME)]
     n_bearing = min(max_bearings, max(1, n_max // 2)) if bearing else 1
     fixed = {n: start[n] for n in relief}
     for n in (HEIGHT_NAME, CROWNING_NAME):
