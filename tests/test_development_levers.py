@@ -166,3 +166,75 @@ def test_the_root_find_puts_the_pattern_at_the_height_aimed_at(lever):
     assert out.full[1]["centre_v"] == 0.0
     slopes = evaluate.slopes
     assert slopes and all(s > 0.05 for s in slopes.values())
+
+
+def _result(coast_pressure: float, design_torque: float = 300.0):
+    """A DevelopmentResult made by hand (no analysis): the drive design misses the LTE
+    (55 µrad) and the length; the coast flank peaks at ``coast_pressure`` at the design
+    torque; the static strength 2400 MPa."""
+    from contact.optimize.development import (
+        DevelopmentEvaluation,
+        DevelopmentResult,
+        DevelopmentTargets,
+        development_score,
+    )
+    from geometry.case import load_case
+    from geometry.synthesis.basic_design import load_basic
+
+    case = load_case(DESIGNS / "pc_hypoid_10x43_unrelieved.toml")
+    basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
+    t = DevelopmentTargets()
+
+    def metrics(**over):
+        m = {"pattern_toe_u": [0.15, 0.1], "pattern_heel_u": [0.85, 0.9],
+             "pattern_root_v": [0.3, 0.25], "pattern_tip_v": [0.85, 0.9],
+             "pattern_centre_u": [0.45, 0.5], "pattern_centre_v": [0.6, 0.6],
+             "edge_load_share": [0.0, 0.01], "plastic_share": [0.0, 0.0],
+             "lte_peak_to_peak": [30.0, 55.0], "pressure_max_flank": [900.0, 1500.0],
+             "lte_spread": [0.0, 0.1]} | over
+        return {k: np.asarray(v, float) for k, v in m.items()}
+
+    m, cm = metrics(), metrics(pressure_max_flank=[1200.0, coast_pressure])
+    full = development_score(m, t, centre_v=0.6, pressure_limit=2400.0)
+    best = DevelopmentEvaluation(0, {"tip_relief": 20.0}, m, *full, "", 1.0, case, full,
+                                 checked=True)
+    return DevelopmentResult(basic, case, None, best, (best,),
+                             (0.15 * design_torque, design_torque), "given", {}, t, 30.0,
+                             0.6, cm, 2.0, False, best, (), "met", None, 0.5, 2400.0)
+
+
+def test_the_headline_states_each_missed_target_in_numbers():
+    """The missed targets with value and limit (pattern length 0.70 against 0.5 ± 0.1, LTE
+    55 against 40 µrad) and both flanks' peak pressure at the design torque against the
+    static strength."""
+    head = _result(1800.0).headline()
+    assert "pattern length 0.70 (target 0.5 +/- 0.1)" in head
+    assert "LTE p-p 55 urad (limit 40)" in head
+    assert "flank peak pressure at 300 N m drive 1500 MPa, coast 1800 MPa (limit 2400 MPa)" \
+        in head
+
+
+def test_the_coast_design_torque_is_capped_at_the_coast_flank_static_capacity():
+    """Coast flank peak 3000 MPa at 300 N·m, static strength 2400 MPa: its static capacity
+    is T (0.99 p_lim / p)³ = 149.0 N·m (rounded down to 0.1 N·m), the torque at which a
+    Hertzian point contact (p ∝ T^(1/3), an independent statement of the same law) peaks at
+    0.99 × 2400 MPa; written as [rating] coast_design_torque where it is below the one the
+    case has (here the design torque 300 N·m), with the reason; a coast flank within the
+    strength leaves the case as it is."""
+    import dataclasses
+    import math as m
+    from types import MappingProxyType
+
+    r = _result(3000.0)
+    cap = r.coast_static_capacity
+    assert cap == pytest.approx(149.0, abs=0.05)
+    assert 3000.0 * (cap / 300.0) ** (1.0 / 3.0) == pytest.approx(0.99 * 2400.0, rel=1e-3)
+    extra = dict(r.case.extra) | {"rating": {"design_torque": 300.0}}
+    case = dataclasses.replace(r.case, extra=MappingProxyType(extra))
+    out, value = r.with_coast_capacity(case)
+    assert value == cap and out.extra["rating"]["coast_design_torque"] == cap
+    assert "static capacity" in out.extra["rating"]["source"]
+    ok = _result(2000.0)
+    assert m.isnan(ok.coast_static_capacity)
+    same, value = ok.with_coast_capacity(case)
+    assert same is case and m.isnan(value)
