@@ -1,12 +1,13 @@
 """CPU time of each stage of an analysis, measured in the process that runs it.
 
-:class:`StageClock` wraps the functions that make up an analysis (as
-:func:`contact.pipeline.run_analysis` and a study point, :func:`contact.study.engine.
-analyse_point`, call them) and adds up the CPU time (``time.process_time``: this process,
-all its threads) spent in each, exclusive of the stages nested in it (the transitions
-inside the UTCA, the compliance assembly and the contact solves inside the LTCA). CPU time,
-not wall time: the machines these benchmarks run on are shared, and another process's load
-moves wall times far more than CPU times. Used by ``benchmarks/ltca.py`` and
+:class:`StageClock` wraps the functions that make up an analysis where the steps of
+:mod:`contact.chain` look them up (:func:`contact.pipeline.run_analysis` and a study
+point, :func:`contact.study.engine.analyse_point`, run those steps) and adds up the CPU
+time (``time.process_time``: this process, all its threads) spent in each, exclusive of
+the stages nested in it (the transitions inside the UTCA, the compliance assembly and the
+contact solves inside the LTCA). CPU time, not wall time: the machines these benchmarks
+run on are shared, and another process's load moves wall times far more than CPU times.
+Used by ``benchmarks/ltca.py`` and
 ``benchmarks/sweep.py`` (also inside Dask workers, :func:`worker_clock`).
 """
 
@@ -20,15 +21,21 @@ from collections import defaultdict
 #: (module, attribute, stage): the functions timed, where the analysis looks them up; a
 #: method is given as "Class.method". Stages not nested in another are the analysis's own.
 STAGES = (
-    ("contact.pipeline", "geometry_datasets", "geometry (4 flanks)"),
-    ("contact.pipeline", "ease_off", "ease-off"),
-    ("contact.pipeline", "unloaded_tca", "UTCA curves and dataset"),
+    ("contact.chain", "geometry_datasets", "geometry (4 flanks)"),
+    ("contact.utca.easeoff", "ease_off", "ease-off"),
+    ("contact.utca", "unloaded_tca", "UTCA curves and dataset"),
     ("contact.utca.datasets", "transitions", "UTCA transitions"),
-    ("contact.pipeline", "loaded_tca", "LTCA other (screening, results, dataset)"),
+    ("contact.ltca", "loaded_tca", "LTCA other (screening, results, dataset)"),
     ("contact.ltca.mesh_cycle", "segment_geometry", "LTCA segment geometry"),
     ("contact.ltca.pool", "CompliancePool.assemble", "LTCA compliance assembly"),
     ("contact.ltca.roll_loop", "weber_solve", "LTCA contact solves (Weber)"),
+    ("contact.ltca.root_stress", "root_stress", "root stress (FE coefficients, superposition)"),
     ("friction.efficiency", "efficiency_analysis", "efficiency"),
+    ("contact.load_capacity.methods", "rate", "rating (ISO 10300)"),
+    ("contact.load_capacity.scuffing_micropitting", "scuffing_micropitting",
+     "scuffing and micropitting"),
+    ("contact.load_capacity.iso_flash_temperature", "iso_flash_temperature_variants",
+     "ISO flash temperature"),
     ("contact.study.engine", "point_summary", "study summary"),
 )
 
@@ -48,17 +55,24 @@ class StageClock:
         self._patches: list[tuple[object, str, object]] = []
 
     def install(self) -> StageClock:
-        """Wrap every function of :data:`STAGES` (those that do not exist are skipped)."""
+        """Wrap every function of :data:`STAGES`.
+
+        Raises
+        ------
+        LookupError
+            A module or function of :data:`STAGES` is not there (moved or renamed): a
+            stage silently left out would read zero (issue 75: four stages did, after the
+            steps moved from ``contact.pipeline`` to ``contact.chain``).
+        """
         for module, attr, stage in STAGES:
-            try:
-                owner = importlib.import_module(module)
-            except ImportError:
-                continue
+            owner = importlib.import_module(module)
             *path, name = attr.split(".")
             for part in path:
                 owner = getattr(owner, part)
-            if hasattr(owner, name):
-                self._wrap(owner, name, stage)
+            if not callable(getattr(owner, name, None)):
+                raise LookupError(f"stage clock: {module}.{attr} is not there (moved?); "
+                                  f"update benchmarks/stage_clock.py STAGES")
+            self._wrap(owner, name, stage)
         return self
 
     def remove(self) -> None:

@@ -68,8 +68,10 @@ __all__ = [
     "contact_residuals",
     "develop",
     "ease_off",
+    "export_rexs",
     "fe_compliance_matrix",
     "fillet_stress",
+    "import_rexs",
     "influence_coefficients",
     "iso10300_rating",
     "load_share_figure",
@@ -98,6 +100,7 @@ __all__ = [
     "unregister_backend",
     "unregister_compliance_model",
     "unregister_rating_method",
+    "validate_rexs",
     "verdict",
     "vh_check",
     "write_netcdf",
@@ -142,5 +145,7 @@ _LAZY = {
     "run_analysis": "contact.pipeline",
     **dict.fromkeys(("AnalysisChain", "ChainState", "available_steps"), "contact.chain"),
     "clear_caches": "geometry.core.caches",
+    # REXS bevel stages in and out (docs/exchange.md)
+    **dict.fromkeys(("export_rexs", "import_rexs", "validate_rexs"), "contact.exchange.rexs"),
 }
 __getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())

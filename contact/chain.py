@@ -33,11 +33,13 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+import os
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
 import xarray as xr
 
 from contact.utca.conjugate_map import flank_nodes
@@ -334,9 +336,11 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
 
     def rating_step(state: ChainState) -> None:
         """``/scuffing_micropitting`` (with ``/friction``), then ``/rating`` by the
-        registered method (:func:`contact.load_capacity.rate`) and, for ISO 10300, the
-        standard's flash-temperature method on its virtual cylindrical gears
-        (``/rating/flash_temperature``, :func:`scuffing_flash_temperature`). Without the
+        registered method (:func:`contact.load_capacity.rate`) and the companion results
+        the method declares (:attr:`contact.load_capacity.RatingMethod.companions`; ISO
+        10300's ``"flash_temperature"``: the standard's flash-temperature method on its
+        virtual cylindrical gears, ``/rating/flash_temperature``,
+        :func:`scuffing_flash_temperature`). Without the
         tables the method needs or a pinion speed there is no ``/rating``;
         ``state.not_run["load_capacity"]`` says why."""
         load_capacity_without_rating(state)
@@ -345,8 +349,14 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
             state.not_run["load_capacity"] = why
             return
         state.groups["/rating"] = rating
-        if rating.attrs.get("rating_method") == "iso10300":
-            flash = scuffing_flash_temperature(rating, state.groups.get("/friction"))
+        from contact.load_capacity.methods import METHODS
+
+        entry = METHODS.get(str(rating.attrs.get("rating_method", method)))
+        # the results the method declares beside its rating (RatingMethod.companions)
+        if entry is not None and "flash_temperature" in entry.companions:
+            flash = scuffing_flash_temperature(
+                rating, state.groups.get("/friction"),
+                lubricant=None if state.operating is None else state.operating.lubricant)
             if flash is not None:  # stored beside the rating it is computed on
                 state.groups["/rating/flash_temperature"] = flash
 
@@ -385,7 +395,8 @@ def load_capacity_without_rating(state: ChainState) -> None:
         lubricant=None if state.operating is None else state.operating.lubricant)
 
 
-def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
+def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None,
+                               lubricant: str | os.PathLike[str] | None = None
                                ) -> xr.Dataset | None:
     """The standard's flash-temperature method on the virtual cylindrical gears of a
     ``/rating`` dataset and its hypoid lengthwise-sliding variant, with the spread of S_B,
@@ -400,6 +411,11 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
     friction : xarray.Dataset or None
         The ``/friction`` group (its attributes ``lubricant``, ``inlet_temperature_degC``,
         ``roughness_rq_um``); None: no method.
+    lubricant : str or path-like, optional
+        The oil the efficiency step ran with (:attr:`friction.OperatingConditions.lubricant`:
+        a bundled name or the oil file); default the ``/friction`` group's ``lubricant``
+        attribute, which is the oil's *name* and finds a bundled oil only — an oil file of
+        the user's is carried by its path, never looked up by its name.
 
     Returns
     -------
@@ -413,10 +429,11 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None
 
     try:
         return iso_flash_temperature_variants(
-            rating, lubricant=str(friction.attrs["lubricant"]),
+            rating, lubricant=(str(friction.attrs["lubricant"]) if lubricant is None
+                               else lubricant),
             temperature=float(friction.attrs["inlet_temperature_degC"]),
             roughness=float(friction.attrs["roughness_rq_um"]))
-    except (InputError, KeyError) as exc:
+    except (InputError, ModelUnavailableError, KeyError) as exc:
         log.info("the standard's flash temperature method not applied: %s", exc)
         return None
 
@@ -492,6 +509,9 @@ class AnalysisChain:
         6336-20 (``"iso10300"``), or the rating of another method of the load-capacity
         registry by its name (:func:`contact.load_capacity.available_methods`);
         ``"scuffing_micropitting"``: the first alone (no rating, ``ltca run --no-rating``).
+    fe_options : contact.compliance.fe.FEOptions or None
+        The root-stress step's FE model (None: the default one, or with the FE compliance
+        the compliance's own; :meth:`with_root_stress` sets it).
 
     Raises
     ------
@@ -499,11 +519,21 @@ class AnalysisChain:
         An unknown name (the message lists the available ones), a value that is neither
         a name, a callable nor None, or None for ``utca`` or ``ltca``.
 
+    Notes
+    -----
+    Named configurations (after pvlib's ``ModelChain.with_pvwatts``; issue 72):
+    :meth:`analysis` (every step, ``ltca run``'s), :meth:`contact_only` (ease-off, UTCA,
+    LTCA), and on either :meth:`with_root_stress`, :meth:`with_mesh_interface`,
+    :meth:`with_geometry`, :meth:`with_efficiency`, :meth:`with_load_capacity`,
+    :meth:`without`, :meth:`with_steps`, each returning a new chain.
+
     Examples
     --------
     >>> from contact import AnalysisChain
     >>> AnalysisChain(root_stress=None).root_stress is None
     True
+    >>> AnalysisChain.contact_only().with_root_stress().describe()["root_stress"]
+    'fe'
     """
 
     geometry: StepChoice = "flanks"
@@ -513,10 +543,97 @@ class AnalysisChain:
     mesh_interface: StepChoice = "linearised"
     efficiency: StepChoice = "local_friction"
     load_capacity: StepChoice = "iso10300"
+    #: the root-stress step's FE model (contact.compliance.fe.FEOptions; None: the default
+    #: one, or with the FE compliance the compliance's own)
+    fe_options: Any = None
 
     def __post_init__(self) -> None:
         for step in STEP_ORDER:
             _check_choice(step, getattr(self, step))
+        if self.fe_options is not None:
+            from contact.compliance.fe import FEOptions
+
+            if not isinstance(self.fe_options, FEOptions):
+                raise InputError("fe_options: must be a contact.compliance.fe.FEOptions or "
+                                 f"None, got {type(self.fe_options).__name__}")
+
+    # ----------------------------------------------------------- named configurations
+    # after pvlib's ModelChain.with_pvwatts: one way to say which steps a run makes
+    # (issue 72 item 5), instead of run_analysis's on/off keywords
+
+    @classmethod
+    def analysis(cls) -> AnalysisChain:
+        """Every step with its default implementation: what ``ltca run`` runs (geometry,
+        ease-off and UTCA, LTCA, root stress, mesh interface, efficiency, ISO 10300
+        load capacity)."""
+        return cls()
+
+    @classmethod
+    def contact_only(cls) -> AnalysisChain:
+        """The contact alone — ease-off, UTCA and LTCA — as a study's hot loop, an
+        optimisation's objective or ``ltca mesh-interface`` start from: geometry, root
+        stress, mesh interface, efficiency and load capacity skipped (add any back with
+        the ``with_…`` methods)."""
+        return cls(geometry=None, root_stress=None, mesh_interface=None, efficiency=None,
+                   load_capacity=None)
+
+    def with_steps(self, **choices: StepChoice) -> AnalysisChain:
+        """This chain with the given steps' choices replaced (a name, a callable
+        ``f(state)`` or None); e.g. ``AnalysisChain.contact_only().with_steps(efficiency=f)``.
+
+        Raises
+        ------
+        InputError
+            A step name not among :data:`STEP_ORDER`, or a choice :class:`AnalysisChain`
+            refuses.
+        """
+        unknown = [k for k in choices if k not in STEP_ORDER]
+        if unknown:
+            raise InputError(f"steps: unknown step {unknown[0]!r}; the steps are "
+                             f"{', '.join(STEP_ORDER)}")
+        return dataclasses.replace(self, **choices)
+
+    def without(self, *steps: str) -> AnalysisChain:
+        """This chain with ``steps`` skipped (each an optional step,
+        :data:`OPTIONAL_STEPS`)."""
+        return self.with_steps(**dict.fromkeys(steps))
+
+    def _on(self, step: str, on: bool) -> AnalysisChain:
+        if not isinstance(on, (bool, np.bool_)):
+            raise InputError(f"{step}: must be True or False, got {on!r}")
+        if not on:
+            return self.with_steps(**{step: None})
+        return self if getattr(self, step) is not None else self.with_steps(
+            **{step: _default(step)})
+
+    def with_root_stress(self, on: bool | Any = True) -> AnalysisChain:
+        """This chain with the root-stress step (``"fe"``) on or off; an
+        :class:`contact.compliance.fe.FEOptions` turns it on with that FE model."""
+        if isinstance(on, (bool, np.bool_)):
+            return self._on("root_stress", bool(on))
+        from contact.compliance.fe import FEOptions
+
+        if not isinstance(on, FEOptions):
+            raise InputError("root_stress: must be True, False or a contact.compliance.fe."
+                             f"FEOptions, got {type(on).__name__} {on!r}")
+        return dataclasses.replace(self._on("root_stress", True), fe_options=on)
+
+    def with_geometry(self, on: bool = True) -> AnalysisChain:
+        """This chain with the ``/geometry`` step on or off."""
+        return self._on("geometry", on)
+
+    def with_mesh_interface(self, on: bool = True) -> AnalysisChain:
+        """This chain with the ``/mesh_interface`` step on or off."""
+        return self._on("mesh_interface", on)
+
+    def with_efficiency(self, on: bool = True) -> AnalysisChain:
+        """This chain with the efficiency step (``/friction``) on or off."""
+        return self._on("efficiency", on)
+
+    def with_load_capacity(self, method: str | None = "iso10300") -> AnalysisChain:
+        """This chain with the load-capacity step by ``method`` (a method of the
+        load-capacity registry or ``"scuffing_micropitting"``), or skipped (None)."""
+        return self.with_steps(load_capacity=method)
 
     def function(self, step: str) -> Callable[[ChainState], None] | None:
         """The callable that runs ``step`` (None: skipped)."""
@@ -550,6 +667,9 @@ def _check_choice(step: str, choice: StepChoice) -> None:
     if not callable(choice):
         raise InputError(f"steps.{step}: must be one of {names}, a callable f(state) or "
                          f"None, got {type(choice).__name__} {choice!r}")
+    from contact.chain_contract import check_step_callable
+
+    check_step_callable(step, choice)  # one argument, the state (issue 72)
 
 
 def resolve_chain(steps: AnalysisChain | Mapping[str, StepChoice] | None = None,
@@ -584,6 +704,10 @@ def resolve_chain(steps: AnalysisChain | Mapping[str, StepChoice] | None = None,
             raise InputError(f"steps: unknown step {unknown[0]!r}; the steps are "
                              f"{', '.join(STEP_ORDER)}")
         chain = AnalysisChain(**steps)
+    elif steps is AnalysisChain or getattr(steps, "__self__", None) is AnalysisChain:
+        name = getattr(steps, "__qualname__", "AnalysisChain")
+        raise InputError(f"steps: got {name} itself; call it: {name}() (a chain, e.g. "
+                         "AnalysisChain.analysis() or AnalysisChain.contact_only())")
     else:
         raise InputError("steps: must be a contact.AnalysisChain, a mapping of step name to "
                          f"a name, callable or None, or None; got {type(steps).__name__}")
@@ -610,12 +734,16 @@ def run_chain(chain: AnalysisChain, state: ChainState) -> ChainState:
         before_work = getattr(f, "before_work", None)
         if before_work is not None:
             before_work(state)
+    from contact.chain_contract import run_step
+
     for step, f in functions.items():
         if f is None:
             state.not_run[step] = "not requested (steps)"
             continue
         t0 = time.perf_counter()
-        f(state)
+        # a user's step: its exception and what it left refused naming it (issue 72)
+        run_step(step, f, state, builtin=isinstance(getattr(chain, step), str),
+                 order=STEP_ORDER)
         key = "friction" if step == "efficiency" else step
         state.times.setdefault(key, time.perf_counter() - t0)
     return state

@@ -240,6 +240,30 @@ def check_analysis_arguments(case, torque, misalignment, flank, options, **flags
             raise InputError(f"{name}: must be True or False, got {value!r}")
 
 
+#: run_analysis's on/off keywords and the named configuration that replaces each
+_SWITCH_REPLACEMENT = {
+    "geometry": "AnalysisChain.analysis().with_geometry(...)",
+    "mesh_interface": "AnalysisChain.analysis().with_mesh_interface(...)",
+    "root_stress": "AnalysisChain.analysis().with_root_stress(...) (True, False or the "
+                   "FEOptions)",
+    "operating": "AnalysisChain.analysis().without('efficiency')",
+}
+
+
+def _warn_switches(**given) -> None:
+    """A DeprecationWarning per on/off keyword of :func:`run_analysis` given (issue 72
+    item 5: the chain is configured one way, by ``steps``)."""
+    import warnings
+
+    for name, value in given.items():
+        if value is None or (name == "operating" and value is False):
+            continue
+        what = "operating=False" if name == "operating" else f"{name}=..."
+        warnings.warn(f"run_analysis({what}) is deprecated: give the chain as "
+                      f"steps={_SWITCH_REPLACEMENT[name]} (docs/api.md, 'The analysis "
+                      "chain')", DeprecationWarning, stacklevel=4)
+
+
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
@@ -281,7 +305,8 @@ def run_analysis(
         temperature [degC], roughness Rq [µm], friction model; ``/friction``,
         :func:`friction.efficiency.efficiency_analysis`). None (default): the case's
         ``[operating]`` table (:func:`operating_conditions`; no efficiency stage where its
-        ``pinion_speed`` is 0); False: no efficiency stage.
+        ``pinion_speed`` is 0); False: no efficiency stage (deprecated, issue 72: give
+        ``steps=AnalysisChain.analysis().without("efficiency")``).
     deviations : (pinion, gear), False or None
         Measured or wear deviations of the (pinion, gear) flanks in contact
         (:mod:`contact.utca.deviations`, seed ch. 4): each a SurfaceDeviation [mm], a
@@ -293,7 +318,8 @@ def run_analysis(
         ``(None, None)`` ignores it (theoretical surfaces only).
     geometry : bool, optional
         Include the four generated flanks as ``/geometry`` (the ``geometry`` step; default
-        on). False skips the step, as ``steps={"geometry": None}``.
+        on). False skips the step, as ``steps={"geometry": None}``. Deprecated (issue 72,
+        DeprecationWarning): give ``steps=AnalysisChain.analysis().with_geometry(...)``.
     progress : bool or "lines"
         Progress bar over the LTCA roll positions and the unit loads of a first FE build,
         or plain lines with the rate and the remaining time (``"lines"``, as ``ltca run``
@@ -305,7 +331,8 @@ def run_analysis(
     mesh_interface : bool, optional
         Add ``/mesh_interface`` (the ``mesh_interface`` step; default on): mesh point, line
         of action, mesh stiffness and transmission-error excitation for dynamic models
-        (:func:`contact.ltca.mesh_interface.mesh_interface`). False skips it.
+        (:func:`contact.ltca.mesh_interface.mesh_interface`). False skips it. Deprecated
+        (issue 72): give ``steps=AnalysisChain.analysis().with_mesh_interface(...)``.
     root_stress : bool or contact.compliance.fe.FEOptions, optional
         The ``root_stress`` step: the tooth-root stress of both members in ``/ltca``
         (``root_stress`` [MPa] over (torque, roll, member, tooth, fillet_point),
@@ -315,7 +342,8 @@ def run_analysis(
         ``options.fe_options()``), or with the FE model's options given here. On by
         default, as in ``ltca run`` (it was off before issue 63): a design's first run
         builds its FE influence coefficients, ~15–20 s per member, later runs read them
-        from the cache (~1 s); False skips the step.
+        from the cache (~1 s); False skips the step. Deprecated (issue 72): give
+        ``steps=AnalysisChain.analysis().with_root_stress(True | False | FEOptions)``.
     steps : contact.AnalysisChain or mapping, optional
         The chain's steps (:mod:`contact.chain`): an :class:`contact.AnalysisChain`, or
         the steps that differ from its defaults, each a name
@@ -324,7 +352,8 @@ def run_analysis(
         None to skip an optional step — e.g. ``{"load_capacity": None}``. The keywords
         ``geometry``, ``mesh_interface``, ``root_stress`` (False skips, True runs) and
         ``operating=False`` (no ``efficiency`` step) apply on top of it. The
-        ``load_capacity`` step writes ``/rating`` (ISO 10300 Method B1 at the run's torques
+        ``load_capacity`` step writes ``/rating`` (ISO 10300 Method B1, or the method the
+        case's ``[rating] method`` names where the steps name none, at the run's torques
         and pinion speed, from the case's ``[design]`` and ``[rating]`` tables) and, with
         ``/friction``, ``/rating/flash_temperature``; without those tables or a speed it
         writes nothing and the root attribute ``load_capacity_not_run`` says why.
@@ -373,10 +402,10 @@ def run_analysis(
     --------
     The contact alone, as a study's hot loop runs it::
 
-        tree = run_analysis(None, [250.0], geometry=False, root_stress=False,
-                            mesh_interface=False, operating=False,
-                            steps={"load_capacity": None})
+        tree = run_analysis(None, [250.0], steps=AnalysisChain.contact_only())
     """
+    _warn_switches(geometry=geometry, mesh_interface=mesh_interface,
+                   root_stress=root_stress, operating=operating is False)
     flags = {k: v for k, v in (("geometry", geometry), ("mesh_interface", mesh_interface))
              if v is not None}
     check_analysis_arguments(case, torque, misalignment, flank, options,
@@ -396,9 +425,17 @@ def run_analysis(
             operating, OperatingConditions):
         raise InputError("operating: must be a friction.operating.OperatingConditions, False "
                          f"or None, got {operating!r}")
+    from contact.load_capacity.methods import case_method
+
+    chosen = case_method(c)  # the case's [rating] method, where the steps name none
+    if chosen is not None and (steps is None or (isinstance(steps, Mapping)
+                                                 and "load_capacity" not in steps)):
+        steps = {**(steps or {}), "load_capacity": chosen}
     chain = resolve_chain(steps, geometry=geometry, mesh_interface=mesh_interface,
                           root_stress=None if root_stress is None else root_stress is not False,
                           efficiency=False if operating is False else None)
+    if fe_options is None:
+        fe_options = chain.fe_options
     torques = c.operating.torque if torque is None else torque
     opts = options or LTCAOptions()
     if chain.efficiency is None:

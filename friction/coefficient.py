@@ -53,6 +53,7 @@ from numpy.typing import ArrayLike, NDArray
 from friction.defaults import DEFAULT_FRICTION_MODEL
 from friction.kolivand2009 import kolivand2009, kolivand2009_validity
 from friction.mixed_ehl import mixed_ehl, mixed_ehl_validity
+from friction.thermal_eyring import thermal_eyring
 from friction.validity import FrictionModelRangeWarning
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError, PluginError
@@ -115,6 +116,13 @@ STANDARD_INPUTS: Mapping[str, str] = MappingProxyType(
         "temperature": "[degC] inlet oil temperature",
         "thermal_factor": "[1] thermal reduction factor φ_T of the film thickness"
                           " (friction.film.thermal_reduction_factor)",
+        "temperature_viscosity": "[1/K] the oil's temperature-viscosity coefficient β at"
+                                 " the inlet temperature"
+                                 " (friction.lubricant.temperature_viscosity_coefficient)",
+        "oil_thermal_conductivity": "[W/(m K)] the oil's thermal conductivity at the inlet"
+                                    " temperature",
+        "pressure_viscosity_temperature": "[1/K] −d ln α/dT of the oil at the inlet"
+                                          " temperature (α's fall with temperature)",
     }
 )
 
@@ -679,6 +687,12 @@ _MODELS: Mapping[str, FrictionModel] = MappingProxyType(
             "Johnson, Greenwood & Poon, Wear 19 (1972) 91 load sharing; Greenwood & Tripp"
             " (1970) asperities; Eyring film shear; boundary friction (friction.mixed_ehl)",
             mixed_ehl_validity,
+        ),
+        "thermal_eyring": _register(
+            "thermal_eyring", thermal_eyring,
+            "mixed_ehl's load sharing with a thermal Eyring film shear: Johnson & Greenwood,"
+            " Wear 61 (1980) 353; Jaeger (1942) flash temperature (friction.thermal_eyring);"
+            " opt-in", mixed_ehl_validity,
         ),
     }
 )

@@ -61,6 +61,7 @@ from friction.lubricant import (
     boundary_friction_source,
     load_lubricant,
     pressure_viscosity_coefficient,
+    temperature_range,
     temperature_viscosity_coefficient,
     thermal_conductivity,
     viscosity,
@@ -524,6 +525,10 @@ def _film_and_friction(
             e_prime=e_prime,
             temperature=op.temperature,
             thermal_factor=phi_t,
+            temperature_viscosity=beta,
+            oil_thermal_conductivity=k_oil,
+            pressure_viscosity_temperature=_alpha_temperature_coefficient(
+                oil.lubricant, op.temperature),
         )
         accepted = get_friction_model(op.friction_model).optional
         inputs.update({k: v for k, v in oil.traction.items() if k in accepted})
@@ -540,6 +545,18 @@ def _film_and_friction(
         range_notes.update(oil.boundary_friction_notes)
     range_notes = sorted(range_notes)
     return _Friction(h, lam, np.broadcast_to(mu, seg.force.shape), outside, fr, range_notes)
+
+
+def _alpha_temperature_coefficient(lubricant: Lubricant, temperature: float) -> float:
+    """−d ln α/dT [1/K] of the oil at ``temperature`` [degC]: the central difference over
+    ±5 K of :func:`friction.lubricant.pressure_viscosity_coefficient` (its table's
+    piecewise log-linear α), held inside the oil's accepted temperature range."""
+    lo, hi = temperature_range(lubricant)
+    t1, t2 = max(temperature - 5.0, lo), min(temperature + 5.0, hi)
+    if t2 <= t1:
+        return 0.0
+    a1, a2 = (float(pressure_viscosity_coefficient(lubricant, t)) for t in (t1, t2))
+    return max(-math.log(a2 / a1) / (t2 - t1), 0.0)
 
 
 class _Losses(NamedTuple):

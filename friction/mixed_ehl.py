@@ -140,8 +140,10 @@ MIXED_EHL_VALIDITY: Mapping[str, tuple[float, float, str, str]] = MappingProxyTy
 # order; tested against an adaptive quadrature).
 _N_QUAD = 24
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(_N_QUAD)
-_COS_THETA = np.cos(0.5 * math.pi * _NODES)
-_W_THETA = 0.5 * math.pi * _WEIGHTS
+#: Gauss–Legendre nodes (cosines) and weights over the contact half-width θ ∈ [0, π/2],
+#: shared with friction.thermal_eyring
+COS_THETA = np.cos(0.5 * math.pi * _NODES)
+W_THETA = 0.5 * math.pi * _WEIGHTS
 
 #: h_c ∝ γ₁^(p_U − p_G) under the JGP scaling w′ → w′/γ₁, E′ → E′/γ₁ (U → γ₁U, G → G/γ₁).
 _FILM_GAMMA_EXPONENT = DOWSON_TOYODA_EXPONENTS[0] - DOWSON_TOYODA_EXPONENTS[1]
@@ -530,13 +532,13 @@ def mixed_ehl_solution(
     h_c = h_s * gamma1**_FILM_GAMMA_EXPONENT
     # film shear over the Hertz zone (θ quadrature, module constants)
     b = 2.0 * w / (math.pi * ph)  # mm
-    p_film = (ph / gamma1)[..., None] * _COS_THETA  # MPa
+    p_film = (ph / gamma1)[..., None] * COS_THETA  # MPa
     with np.errstate(over="ignore"):
         eta = eta0[..., None] * np.exp(alpha[..., None] * 1e-3 * p_film)
     rate = (vs / (h_c * 1e-6))[..., None]  # 1/s
     tau = np.minimum(np.asarray(eyring_shear_stress(eta, rate, tau0)),
                      lam_l * p_film)  # MPa
-    film_force = b * np.sum(tau * _COS_THETA * _W_THETA, axis=-1)  # MPa·mm = N/mm
+    film_force = b * np.sum(tau * COS_THETA * W_THETA, axis=-1)  # MPa·mm = N/mm
     mu_film = film_force / w
     mu_bound = mu_b * share_a
     return MixedEHL(

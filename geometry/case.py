@@ -687,6 +687,32 @@ def _deviation_files(raw: Mapping, base_dir: str | os.PathLike[str] | None,
     return _build(DeviationFiles, kw, "deviations")
 
 
+def _oil_file_beside_case(operating: OperatingPoint,
+                          base_dir: str | os.PathLike[str] | None) -> OperatingPoint:
+    """``operating.lubricant`` given as an oil file (a value with a directory separator or
+    ending in ``.toml``) resolved against the case file's directory, as the ``[deviations]``
+    files are: a case and its oil travel together, whatever the working directory. A bundled
+    oil's name (``"75W90"``) is left as it is.
+
+    Raises
+    ------
+    InputError
+        ``operating.lubricant`` names an oil file that does not exist there.
+    """
+    oil = operating.lubricant
+    if not isinstance(oil, str) or not (
+            "/" in oil or "\\" in oil or oil.lower().endswith(".toml")):
+        return operating
+    p = Path(oil).expanduser()
+    if not p.is_absolute():
+        p = (Path.cwd() if base_dir is None else Path(base_dir)) / p
+    if not p.is_file():
+        raise InputError(f"operating.lubricant: no oil file at {str(p)!r} (a relative oil "
+                         "path is read from the case file's directory); give a bundled oil "
+                         "name or an existing oil TOML file")
+    return dataclasses.replace(operating, lubricant=str(p.resolve()))
+
+
 def case_from_dict(raw: Mapping[str, Any], *,
                    base_dir: str | os.PathLike[str] | None = None) -> Case:
     """Validate a parsed case mapping and build the :class:`Case`.
@@ -696,8 +722,9 @@ def case_from_dict(raw: Mapping[str, Any], *,
     raw : mapping
         The parsed TOML document (degrees and mm, as in files).
     base_dir : path-like, optional
-        Directory against which relative paths of the ``[deviations]`` table are resolved
-        (:func:`load_case` passes the case file's directory); default the current directory.
+        Directory against which relative paths of the ``[deviations]`` table and an oil
+        file given as ``[operating] lubricant`` are resolved (:func:`load_case` passes the
+        case file's directory); default the current directory.
 
     Returns
     -------
@@ -755,6 +782,7 @@ def case_from_dict(raw: Mapping[str, Any], *,
             "[pinion] and [gear] tables swapped?")
     _check_method(pr["method"], pinion, gear)
     mis, operating = operating_from_dict(raw)
+    operating = _oil_file_beside_case(operating, base_dir)
     devs = _deviation_files(raw, base_dir)
     extra = {k: v for k, v in raw.items() if k not in _TOP_KEYS}
     if extra:

@@ -27,6 +27,7 @@ RESOLVING = {
     "sweep": lambda c: contact.sweep(c, delta_E=[0.0]),
     "sample": lambda c: contact.sample(c, {"delta_E": scipy.stats.norm(0.0, 0.01)}, 2),
     "vh_check": lambda c: contact.vh_check(c),
+    "export_rexs": lambda c: contact.export_rexs(c, Path("never_written.rexs")),
     "run_duty_cycle": lambda c: contact.run_duty_cycle(
         c, contact.DutyCycle(torque=[1.0], pinion_speed=[1.0], revolutions=[1.0])),
 }

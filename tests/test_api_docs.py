@@ -81,6 +81,7 @@ TOOLS = {
     "contact.read_netcdf", "contact.write_netcdf", "contact.read_deviations",
     "contact.write_report", "contact.clear_caches", "friction.load_lubricant",
     "friction.available_lubricants", "geometry.load_case", "geometry.load_basic",
+    "contact.export_rexs", "contact.import_rexs", "contact.validate_rexs",
     # registries
     "contact.available_solvers", "contact.register_backend", "contact.unregister_backend",
     "contact.available_compliance_models", "contact.register_compliance_model",

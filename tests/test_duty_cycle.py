@@ -273,3 +273,30 @@ def test_bending_side_consumes_root_stress(case, one_bin):
     assert float(out["bending_safety_factor"].sel(member="gear")) == pytest.approx(
         allowable / 900.0, rel=1e-12)  # the first bin is the peak-torque bin (argmax: first)
     assert out.attrs["bending"] == "available"
+
+
+def test_a_failed_fe_model_leaves_the_bending_side_out_and_says_why(case, monkeypatch):
+    """Issue 71: `ltca duty-cycle` of the 14x35 spiral bevel at Sigma 70 deg stopped with
+    rc 2 on its pinion's inverted FE element, where `ltca run` of the same case ran on
+    without root stress. The FE build failing (here made to, the way
+    contact.compliance.fe.mapped_mesh fails) the duty cycle runs on: the flank side is
+    there, the bending side is not, and the dataset's ``bending`` attribute and the
+    verdict's bending finding quote the FE model's failure instead of suggesting
+    --root-stress."""
+    from contact.study.verdicts import verdict
+    from geometry.core.errors import LTCAError
+
+    why = "mesh mapping: element 6489 (parameter centre [56.5 9.5 11.5]) is inverted"
+
+    def fails(*args, **kwargs):
+        raise LTCAError(why)
+
+    monkeypatch.setattr("contact.ltca.root_stress.prepare_coefficients", fails)
+    duty = DutyCycle(torque=[250.0], pinion_speed=[1500.0], revolutions=[1e7])
+    ds = run_duty_cycle(case, duty, RUN, root_stress=True)
+    assert "damage" in ds and np.all(np.isfinite(ds["damage"].values))
+    assert "root_life" not in ds
+    assert ds.attrs["bending"].startswith("unavailable: root stress not computed: the FE "
+                                          f"model failed ({why})")
+    (bending,) = [f for f in verdict(ds).findings if f.check == "bending"]
+    assert why in bending.reason and "--no-root-stress" not in bending.reason

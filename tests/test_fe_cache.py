@@ -361,7 +361,7 @@ except KeyboardInterrupt:
 
 
 def _build(cache, *, stop_at=None):
-    """Build the coarse gear model (132 unit loads, 5 blocks) into ``cache`` in a child
+    """Build the coarse gear model (132 unit loads, 3 blocks of 64) into ``cache`` in a child
     Python; with ``stop_at``, send SIGTERM when a stderr line contains it (an event, not a
     time). Returns (exit code, stderr lines)."""
     import os
@@ -397,21 +397,21 @@ def test_sigterm_during_a_build_keeps_the_solved_blocks(tmp_path):
     import psutil
 
     cache = tmp_path / "cache"
-    rc, err = _build(cache, stop_at="unit loads 0-32 of 132 solved")
+    rc, err = _build(cache, stop_at="unit loads 0-64 of 132 solved")
     assert rc == 143, "".join(err)
     assert "Traceback" not in "".join(err) and err[-1].strip() == "interrupted"
     # the forked worker has the build's command line; none is left running
     assert not [p for p in psutil.process_iter(["cmdline"])
                 if str(cache) in (p.info["cmdline"] or [])]
     parts = sorted(p.name for p in cache.glob("fe-*.part-*.nc"))
-    assert parts and parts[0].endswith(".part-0000-0032.nc"), parts
+    assert parts and parts[0].endswith(".part-0000-0064.nc"), parts
     assert not [p for p in cache.glob("fe-*.nc") if ".part-" not in p.name]
-    solved_before = 32 * len(parts)
+    solved_before = 64 * len(parts)
     rc, err = _build(cache)
     assert rc == 0, "".join(err)
     text = "".join(err)
     assert f"resuming, {solved_before} of 132 already solved" in text
-    assert "unit loads 0-32 of 132 solved" not in text  # read back, not solved again
+    assert "unit loads 0-64 of 132 solved" not in text  # read back, not solved again
     assert not list(cache.glob("fe-*.part-*.nc"))
     (entry,) = cache.glob("fe-*.nc")
     fresh = tmp_path / "fresh"

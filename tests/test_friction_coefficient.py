@@ -64,7 +64,8 @@ def _no_warnings():
 # ----------------------------------------------------------------------------- registry
 def test_registry_lists_models() -> None:
     assert available_friction_models() == ("benedict_kelley", "constant", "iso_tr_14179_2",
-                                           "kolivand2009", "mixed_ehl", "xu2007")
+                                           "kolivand2009", "mixed_ehl", "thermal_eyring",
+                                           "xu2007")
     assert "kolivand2009_table_5_3" in unavailable_friction_models()
 
 

@@ -61,7 +61,9 @@ LAYER_DEPENDS = {
 APPLICATION_LEVELS = (
     ("catalogue", {"contact.catalogue"}),
     ("load capacity", {"contact.load_capacity"}),
-    ("pipeline, chain", {"contact", "contact.pipeline", "contact.chain"}),
+    ("pipeline, chain", {"contact", "contact.pipeline", "contact.chain",
+                         "contact.chain_contract"}),
+    ("exchange", {"contact.exchange"}),
     ("study, optimize, wear", {"contact.study", "contact.optimize", "contact.wear"}),
     ("plots, report", {"contact.plots"}),
     ("commands, cli", {"contact.commands", "contact.cli", "contact.__main__"}),

@@ -57,14 +57,24 @@ def mean_point_forces(case, torque, speed, *, flank=None, datasets=None):
     f1 = 2000.0 * np.asarray(torque, float) / data.d_m1
     f2 = f1 * math.cos(data.beta_m2) / math.cos(data.beta_m1)
     v = math.pi * data.d_m1 * speed / 60000.0
+    # the result contract (contact.load_capacity.contract): a stated capacity of 1000 N m,
+    # the contact stress growing as the square root of the torque, the root stress with it
+    ratio = np.tile((1000.0 / np.asarray(torque, float))[:, None], (1, 2))
     return xr.Dataset(
         {"F_mt1": data_var(("torque",), f1, "N", "nominal tangential force of the pinion "
                                                  "at the mean point"),
          "F_mt2": data_var(("torque",), f2, "N", "nominal tangential force of the gear at "
                                                  "the mean point"),
-         "v_mt1": data_var((), v, "m/s", "pinion pitch-line speed at the mean point")},
+         "v_mt1": data_var((), v, "m/s", "pinion pitch-line speed at the mean point"),
+         "pitting_safety": data_var(("torque", "member"), np.sqrt(ratio), "1",
+                                    "safety against pitting"),
+         "pitting_safety_min": data_var((), 1.0, "1", "its minimum"),
+         "bending_safety": data_var(("torque", "member"), ratio, "1",
+                                    "safety against bending"),
+         "bending_safety_min": data_var((), 1.0, "1", "its minimum")},
         coords={"torque": data_var(("torque",), np.asarray(torque, float), "N m",
-                                   "pinion torque T1")},
+                                   "pinion torque T1"),
+                "member": data_var(("member",), ["pinion", "gear"], None, "member")},
         attrs={"title": "mean-point forces", "case": case.name,
                "groups_seen": ",".join(sorted(datasets or {})), "flank": str(flank)})
 
@@ -122,8 +132,15 @@ def test_the_registry_rates_iso10300_as_the_function_does():
     direct = iso10300_rating(CASE, [300.0], 1200.0)
     via = rate(CASE, [300.0], 1200.0)
     assert direct.attrs["rating_method"] == "iso10300"  # the method says so itself
-    xr.testing.assert_identical(
-        via, direct.assign_attrs(rating_method_title=METHODS["iso10300"].title))
+    # every variable of the function, and the result contract beside them: S_H, S_F and
+    # their minima under the contract's names
+    xr.testing.assert_identical(via[list(direct.data_vars)].drop_attrs(deep=False),
+                                direct.drop_attrs(deep=False))
+    for contract, own in (("pitting_safety", "S_H"), ("bending_safety", "S_F"),
+                          ("pitting_safety_min", "S_Hmin"), ("bending_safety_min", "S_Fmin")):
+        np.testing.assert_array_equal(via[contract].values, direct[own].values)
+    assert via.attrs["rating_method_title"] == METHODS["iso10300"].title
+    assert via.attrs["rating_standard"] == "ISO 10300"
 
 
 def test_defaults_come_from_the_analysis(toy):
@@ -181,7 +198,8 @@ def test_bad_inputs_are_refused_naming_them(toy):
         rate(CASE, method=toy, analysis={"ltca": "not a dataset"})
     register_method("broken", lambda *a, **k: {"F": 1.0}, title="t", source="s")
     try:
-        with pytest.raises(InputError, match="broken returned dict"):
+        with pytest.raises(PluginError, match="'broken' breaks the result contract: it "
+                                              "returned dict"):
             rate(CASE, method="broken")
     finally:
         unregister_method("broken")

@@ -85,3 +85,20 @@ def test_a_capacity_failure_names_the_rating(monkeypatch):
     commands = _commands(lines)
     assert commands == [["ltca", "rate", "my_case.toml", "--torque", "500"]]
     build_parser().parse_args(commands[0][1:])
+
+
+def test_a_scuffing_failure_names_the_oil_temperature_and_roughness(monkeypatch):
+    """Issue 71: the e-axle hypoid (11x39, Sigma 80 deg, 8000 rpm) failed its coast run on
+    S_B 0.98 alone of the scuffing side, and nothing said what moves it: the line names
+    the inputs of ISO/TS 6336-20's flash and scuffing temperatures, and the same run with
+    them is a command the parser accepts (placeholders for the user's values)."""
+    _verdict(monkeypatch, ("fail", "scuffing", "scuffing safety S_B 0.982 at 327.6 N m"))
+    lines = next_steps(_tree((49.1, 327.6)), resolve_case(CASE), "e.toml", "coast")
+    assert "oil" in lines[0] and "smoother flanks" in lines[0] and "FZG" in lines[0]
+    commands = _commands(lines)
+    assert len(commands) == 1 and commands[0][:3] == ["ltca", "run", "e.toml"]
+    args = build_parser().parse_args(commands[0][1:])
+    assert args.flank == "coast" and args.torque == [49.1, 327.6]
+    case = resolve_case(CASE)  # the example: 20 K below the case's inlet, half its Rq
+    assert args.temperature == case.operating.temperature - 20.0
+    assert args.roughness == case.operating.roughness / 2.0

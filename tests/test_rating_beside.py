@@ -173,14 +173,20 @@ def test_run_stores_and_prints_the_rating(sample1_run):
         s_h = float(ra["sigma_H"].isel(torque=0))
         p = float(lt["pressure_max_flank"].isel(torque=0))
         assert s_h == pytest.approx(1712.8, rel=0.005)  # the TR's sample 1
-        assert float(cells[3]) == pytest.approx(s_h, abs=0.5)
-        assert float(cells[4]) == pytest.approx(p, abs=0.5)
-        assert float(cells[5]) == pytest.approx(p / s_h, abs=0.005)
-        assert float(cells[7]) == pytest.approx(float(ra["sigma_F"].isel(torque=0)[0]),
+        # the console reads the result contract: contact_stress = sigma_H, root_stress =
+        # sigma_F, the safeties S_H, S_F (contact.load_capacity.contract)
+        assert float(cells[2]) == pytest.approx(s_h, abs=0.5)
+        assert float(cells[3]) == pytest.approx(p, abs=0.5)
+        assert float(cells[4]) == pytest.approx(p / s_h, abs=0.005)
+        assert float(cells[5]) == pytest.approx(float(ra["sigma_F"].isel(torque=0)[0]),
                                                 abs=0.5)
+        assert cells[8:] == [f"{float(ra[s].isel(torque=0)[0]):.2f}" for s in ("S_H", "S_F")]
         for name, var in ra.data_vars.items():
-            assert var.attrs.get("clause"), name
-    assert "ISO safety factors: 300 N m S_H 0.94, S_F 1.38 / 1.33" in out
+            assert var.attrs.get("clause") or var.attrs.get("source"), name
+    assert cells[8:] == ["0.94", "1.38"]  # the TR's sample 1: S_H 0.944, S_F 1.385
+    assert "ISO 10300 rating beside the LTCA (method iso10300, drive side, n1 1200 rpm" in out
+    assert "`ltca rate iso10300_30_sample1 --method iso10300 --torque 300 --speed 1200` " \
+           "prints them" in out
 
 
 def test_report_shows_the_rating_table(sample1_run):
@@ -193,9 +199,11 @@ def test_report_shows_the_rating_table(sample1_run):
     assert [(r["torque"], r["member"]) for r in rows] == [("300", "pinion"), ("300", "gear")]
     cells = {c["key"]: float(c["value"]) for c in rows[1]["cells"] if c["value"]}
     ra = tree["rating"].to_dataset()
-    assert cells["sigma_F"] == pytest.approx(float(ra["sigma_F"].isel(torque=0)[1]),
-                                             rel=1e-12)
-    assert cells["S_F"] == pytest.approx(float(ra["S_F"].isel(torque=0)[1]), rel=1e-12)
+    assert cells["root_stress"] == pytest.approx(float(ra["sigma_F"].isel(torque=0)[1]),
+                                                 rel=1e-12)
+    assert cells["bending_safety"] == pytest.approx(float(ra["S_F"].isel(torque=0)[1]),
+                                                    rel=1e-12)
+    assert ctx["rating"]["headers"][2] == "ISO 10300 σ_H [MPa]"
     assert "root_stress_max" not in cells  # --no-root-stress: an empty cell
     assert "/rating" not in [a["group"] for a in ctx["absent"]]
 

@@ -230,6 +230,7 @@ def test_durability_table_equals_the_file(run_files):
     assert f"ISO/TS 6336-20 on the virtual gears: S_B {fr['torque'].values[0]:g} N·m " \
         f"{low:.2f}–{high:.2f}" in page
     assert "not a standard" in page and "film at θ_M" in page
+    # the rating table reads the result contract: ISO 10300's contact_stress is σ_H
     assert "pressure / σ_H: the LTCA's peak Hertzian pressure" in page
     assert "root stress / σ_F: the FE peak maximum principal tooth-root stress" in page
     # a file without the standard's method (no rating): its two cells say "–"

@@ -611,6 +611,26 @@ def test_ltca_run_lines(sm):
     assert durability_lines(fr.drop_vars("contact_temperature_max")) == []
 
 
+def test_ltca_run_line_says_why_lambda_is_missing_beyond_the_oils_data(ltca):
+    """A bulk temperature θ_M beyond the oil's viscosity data (75W90: up to 140 degC; an
+    inlet at 135 degC and a fast pinion put it above): no film is computed there, and
+    `ltca run`'s line says so with θ_M instead of a bare "nan" (issue 71: the e-axle's
+    coast run at 8000 rpm printed "least lambda_GF ... nan" at θ_M 141 degC). The inlet
+    film, at 135 degC inside the data, is still printed."""
+    from contact.commands.run import durability_lines
+
+    hot = _both(ltca, pinion_speed=8000.0, temperature=135.0)
+    bulk = hot["bulk_temperature"].values
+    beyond = bulk > 140.0
+    assert beyond.any()  # the premise: θ_M beyond the oil's data at some torque
+    lines = durability_lines(hot)
+    for i in np.flatnonzero(beyond):
+        assert math.isnan(float(hot["specific_film_thickness_min"][i]))
+        assert (f"ISO/TS 6336-22) - (theta_M {bulk[i]:.0f} degC lies beyond the oil's "
+                "viscosity data: no film computed there) (at the oil inlet ") in lines[i]
+        assert "nan" not in lines[i]
+
+
 def test_ltca_run_lines_with_the_standards_method(fr):
     """With a /rating group in the tree, each torque's line is followed by the standard's
     flash temperature method on the virtual cylindrical gears at the same oil, temperature

@@ -186,6 +186,16 @@ def run(args: argparse.Namespace) -> int:
     from contact.commands.run import print_verdict
 
     print_verdict(ds)
+    import textwrap
+
+    from contact.commands.next_steps import duty_cycle_lines
+    from contact.study.verdicts import verdict
+
+    fails = [f.check for f in verdict(ds).findings if f.severity == "fail"]
+    for line in duty_cycle_lines(ds, args.case or case.name, args.flank, fails):
+        # under the verdict's findings, as ltca run's; the commands unwrapped, to paste
+        print(line if line.startswith("    ltca ") else
+              textwrap.fill(line, 100, subsequent_indent="      "))
     tree = xr.DataTree.from_dict({"/duty_cycle": ds})
     path = write_netcdf(tree, output, inputs=case.to_toml())
     from contact.study.store import ResultStore

@@ -42,12 +42,19 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
                        "ltca friction-study --design factorial --scheduler tcp://host:8786 "
                        "-o table_5_1.nc"),
     "friction-fit": ("ltca friction-fit friction_study.nc -o kolivand2009_fit.toml",),
+    "oil": ("ltca oil --name VG220_mineral --nu40 220 --nu100 19.4 --rho15 890 "
+            "--base-oil mineral --fzg-stage 12 --source vendor-data-sheet "
+            "-o vg220_mineral.toml",),
     "duty-cycle": ("ltca duty-cycle -o duty.nc --plots duty_plots   # illustrative spectrum",
                    "ltca duty-cycle kolivand2009_fm_11x41_reference --duty spectrum.toml "
                    "--no-root-stress -o duty.nc"),
     "geometry": ("ltca geometry -o flanks.nc",),
     "plot-geometry": ("ltca plot-geometry -o figs",),
     "synthesize": ("ltca synthesize kolivand2009_fh_12x41 -o my_case.toml",),
+    "export-rexs": ("ltca export-rexs kolivand2009_fh_12x41 -o stage.rexs --version 1.7",
+                    "ltca export-rexs kolivand2009_fm_11x41_reference "
+                    "kolivand2009_fm_11x41_reference.nc -o stage.rexsj"),
+    "import-rexs": ("ltca import-rexs stage.rexs -o my_case.toml",),
     "correct": ("ltca correct iso23509_sample2_fm_measured -o corrected.toml",),
     "optimize": ("ltca optimize kolivand2009_fm_11x41 -o optimized.toml --variable "
                  "tip_relief 0 40 --torque 50 250 500",),

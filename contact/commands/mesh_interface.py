@@ -54,6 +54,7 @@ def register(sub) -> None:
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
+    from contact.chain import AnalysisChain
     from contact.commands.run import check_certified, ltca_options
     from contact.ltca.mesh_interface import write_mesh_interface_csv
     from contact.pipeline import run_analysis
@@ -62,9 +63,9 @@ def run(args: argparse.Namespace) -> int:
     output = checked_outputs(args, "_mesh_interface.csv")
     case, mis = case_and_misalignment(args)
     tree = run_analysis(case, args.torque, misalignment=mis, flank=args.flank,
-                        options=ltca_options(args), operating=False, geometry=False,
-                        deviations=None, progress=not args.no_progress, root_stress=False,
-                        steps={"load_capacity": None})
+                        options=ltca_options(args), deviations=None,
+                        progress=not args.no_progress,
+                        steps=AnalysisChain.contact_only().with_mesh_interface())
     mesh = tree["mesh_interface"].to_dataset()
     print(f"mesh interface of {case.name} ({misalignment_text(tree.attrs)}), means over the "
           "mesh cycles and the peak amplitudes of the first mesh harmonics:")

@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import math
 import os
+import shlex
 import tomllib
 from pathlib import Path
 
@@ -70,6 +71,11 @@ def register(sub) -> None:
     p.add_argument("--max-evaluations", type=count(2, 1_000_000), default=None, metavar="N",
                    help="designs to analyse at most (default 200)")
     p.add_argument("--seed", type=count(0, 2**32 - 1), default=None, help="random seed (default 0)")
+    p.add_argument("--confirm", type=count(0, 1000), default=3, metavar="N",
+                   help="designs to confirm at most as `ltca run` analyses the written case "
+                        "(its sampling, the rating's verdict, the FE mesh of the pinion "
+                        "tooth), best first, until one meets every constraint (default 3; "
+                        "0: report the optimiser's own ranking, unconfirmed)")
     options.solver_option(p)
     p.add_argument("--flank", choices=["drive", "coast"], default=None)
     options.rolls_per_cycle_option(p)
@@ -130,6 +136,28 @@ def _table(case) -> dict:
     if "source_case" in t:  # an optimised case: its problem is kept under "problem"
         t = t.get("problem", {})
     return dict(t)
+
+
+def _outcome(result, confirm: int) -> str:
+    """The headline of an optimisation: constraints met only where the confirmation at
+    ``ltca run``'s sampling meets them (:mod:`contact.optimize.confirm`)."""
+    conf = result.confirmation
+    if not confirm:
+        return ("all constraints met at the optimiser's sampling (not confirmed: --confirm 0)"
+                if result.feasible else "INFEASIBLE: no design met every constraint; the "
+                "best design found is written")
+    if result.case is None:
+        return "no design confirmed: the FE model cannot mesh their pinion teeth"
+    if conf is not None and conf.met:
+        head = (f"all constraints met, confirmed at ltca run's sampling (design "
+                f"{conf.index + 1})")
+        if conf.severity == "fail":
+            head += f"; but ltca run's verdict is FAIL: {'; '.join(conf.findings)}"
+        return head
+    why = f" ({', '.join(conf.violated)})" if conf is not None and conf.violated else ""
+    return (f"NOT every constraint met at ltca run's sampling{why}: of "
+            f"{len(result.confirmations)} designs confirmed none met them; the best whose "
+            "mesh builds is written")
 
 
 def run_optimize(args: argparse.Namespace) -> int:
@@ -194,35 +222,54 @@ def run_optimize(args: argparse.Namespace) -> int:
         max_evaluations=(args.max_evaluations if args.max_evaluations is not None
                          else run.get("max_evaluations", 200)),
         popsize=run.get("popsize"), seed=args.seed if args.seed is not None
-        else run.get("seed", 0), relief_start=run.get("relief_start", 0.5),
-        scheduler=args.scheduler, n_workers=args.workers, progress=not args.no_progress,
-        basic=basic, start=start)
+        else run.get("seed", 0), relief_start=run.get("relief_start"),
+        scheduler=args.scheduler, n_workers=args.workers,
+        progress=getattr(args, "progress", not args.no_progress), basic=basic, start=start,
+        confirm=args.confirm)
     b, s = result.best_evaluation, result.start_evaluation
-    verdict = "all constraints met" if result.feasible else "INFEASIBLE: no design met every " \
-        "constraint; the best design found is written"
     print(f"{case.name}: {result.log.sizes['evaluation']} designs in {result.seconds:.1f} s "
-          f"({result.method}); {verdict}")
+          f"({result.method}); {_outcome(result, args.confirm)}")
+    for conf in result.confirmations:
+        print(f"  design {conf.index + 1} at ltca run's sampling: {conf.summary()}")
     print(tabulate([(n, u, f"{x0:.8g}", f"{x1:.8g}") for n, u, x0, x1 in
                     zip(result.names, result.units, result.start, result.best, strict=True)],
                    headers=["variable", "unit", "start", "result"], tablefmt="github"))
     rows = []
+    conf = result.confirmation
+
+    def worst(metrics, k, scale):
+        return " / ".join(f"{v:.4g}" for v in scale * metrics[k].max(0))
+
     for k, unit, scale in (("lte_mean", "urad", 1), ("lte_peak_to_peak", "urad", 1),
                            ("edge_load_share", "%", 100), ("pressure_max_flank", "MPa", 1)):
-        rows.append((k, unit, " / ".join(f"{v:.4g}" for v in scale * s.metrics[k].max(0)),
-                     " / ".join(f"{v:.4g}" for v in scale * b.metrics[k].max(0))))
-    rows.append(("objective", "1", f"{s.objective:.5g}", f"{b.objective:.5g}"))
+        rows.append((k, unit, worst(s.metrics, k, scale), worst(b.metrics, k, scale))
+                    + ((worst(conf.metrics, k, scale),) if conf is not None else ()))
+    rows.append(("objective", "1", f"{s.objective:.5g}", f"{b.objective:.5g}")
+                + (("",) if conf is not None else ()))
     print(tabulate(rows, headers=["worst over misalignments, per torque", "unit", "start",
-                                  "result"], tablefmt="github", disable_numparse=True))
+                                  "result"] + (["result at ltca run's sampling"]
+                                               if conf is not None else []),
+                   tablefmt="github", disable_numparse=True))
+    import xarray as xr
+
+    if result.case is None:  # no confirmed design has a tooth the FE model can mesh
+        write_netcdf(xr.DataTree.from_dict({"/optimize": result.log}), log_path,
+                     inputs=case.to_toml())
+        print(f"no case written: none of the {len(result.confirmations)} designs confirmed "
+              f"has a pinion tooth the FE model can mesh (ltca run's root stress and ltca "
+              f"duty-cycle would fail on it); every evaluation is in {log_path}")
+        return 1
     provenance = {"source_file": _shown(args.case, out) if args.case
                   and Path(args.case).is_file() else (args.case or case.name),
                   "log_file": _shown(log_path, out)}
+    if getattr(args, "argv", None):  # the command as typed: ltca run's next steps read it
+        provenance["command"] = "ltca " + shlex.join(str(a) for a in args.argv)
     if basic is not None:
         provenance["basic_design"] = provenance.pop("source_file")
     new = optimized_case(result, provenance=provenance, name=args.name)
     header = _HEADER if basic is None else _HEADER_BASIC
     text = header.format(case=case.name) + new.to_toml()
     case_from_dict(tomllib.loads(text))  # the written text must load back
-    import xarray as xr
 
     write_netcdf(xr.DataTree.from_dict({"/optimize": result.log}), log_path,
                  inputs=case.to_toml())

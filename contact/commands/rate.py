@@ -33,11 +33,14 @@ def register(sub) -> None:
     torque_option(p, default="the case's [operating] torques")
     p.add_argument("--speed", type=float, default=None, metavar="RPM",
                    help="pinion speed [rpm] (default the case's [operating] pinion_speed)")
-    p.add_argument("--method", default="iso10300", metavar="NAME",
-                   help="load-capacity rating method of the registry (default iso10300: "
-                   "ISO 10300-1/-2/-3:2014 Method B1; agma2003: ANSI/AGMA 2003-D19, the "
-                   "case's [agma2003] table; an unknown name lists those available; "
-                   "docs/extending.md adds one)")
+    p.add_argument("--method", default=None, metavar="NAME",
+                   help="load-capacity rating method of the registry (default the case's "
+                   "[rating] method, else iso10300: ISO 10300-1/-2/-3:2014 Method B1; "
+                   "agma2003: ANSI/AGMA 2003-D19, the case's [agma2003] table; an unknown "
+                   "name lists those available; docs/extending.md adds one)")
+    p.add_argument("--flank", default=None, choices=("drive", "coast", "concave", "convex"),
+                   help="the pinion flank rated, as `ltca run --flank` loads it (default the "
+                   "[rating] table's side, else the drive flank)")
     output_option(p, default="none: the tables only",
                   what="netCDF file of the /rating dataset")
     p.set_defaults(func=run)
@@ -66,14 +69,16 @@ def run(args: argparse.Namespace) -> int:
 
     from contact.catalogue import resolve_case
     from contact.commands.output_paths import check_output_file
-    from contact.load_capacity.methods import METHODS, rate
+    from contact.load_capacity.methods import DEFAULT_METHOD, METHODS, case_method, rate
     from geometry.core.io import write_netcdf
 
     if args.output:
         check_output_file(args.output)
     case = resolve_case(args.case)
-    ds = rate(case, args.torque, args.speed, method=args.method)  # unknown: lists the names
-    show = METHODS[args.method].tables or variable_lines
+    method = args.method or case_method(case) or DEFAULT_METHOD
+    # unknown method: lists the names
+    ds = rate(case, args.torque, args.speed, method=method, flank=args.flank)
+    show = METHODS[method].tables or variable_lines
     print(show(ds))
     if ds.attrs.get("rating_method") == "iso10300" and "rating_inputs" in ds.attrs:
         # ISO 10300: the flank roughness it took

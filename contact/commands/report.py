@@ -57,6 +57,9 @@ OTHER_FILES = (
      "their figures: `ltca plot-geometry CASE --plots DIR`"),
     (lambda a: str(a.get("title", "")).startswith("ISO 10300"), "an ISO 10300 rating",
      "ltca rate", "`ltca rate` prints its table"),
+    # any method's rating file (ltca rate -o: a root and /rating, no analysis)
+    (lambda a: bool(a.get("_rating_group")), "a load-capacity rating", "ltca rate",
+     "`ltca rate CASE --method NAME` prints its tables"),
     (lambda a: a.get("title") == "hypoid-ltca solver comparison", "a solver comparison",
      "ltca compare-solvers", "`ltca compare-solvers` prints its table"),
     (lambda a: str(a.get("title", "")).startswith("hypoid-ltca optimisation"),
@@ -69,6 +72,9 @@ def other_file(tree, path) -> str | None:
     which command wrote it and what reads it (:data:`OTHER_FILES`); None for a file that
     is none of them."""
     attrs = dict(tree.attrs)
+    if "rating" in getattr(tree, "children", {}):  # a rating file: say whose method
+        method = str(tree["rating"].attrs.get("rating_method", ""))
+        attrs["_rating_group"] = method or "a method"
     for test, what, command, reader in OTHER_FILES:
         if test(attrs):
             return (f"{str(path)!r} is {what} file, written by `{command}`, not an analysis: "
@@ -90,12 +96,18 @@ def run(args: argparse.Namespace) -> int:
         message = other_file(tree, path)
         if message is not None:
             raise InputError(message)
+        raise InputError(f"{str(path)!r} has no /easeoff or /duty_cycle group (groups: "
+                         f"{', '.join('/' + g for g in tree.children) or 'none'}): "
+                         "`ltca report` reads the files of `ltca run` and `ltca duty-cycle`")
     if "duty_cycle" in tree.children:
         from contact.plots.duty_report import write_duty_report
 
         print(f"wrote {write_duty_report(tree, output)}")
         return 0
-    print(f"wrote {write_report(tree, output, figures=_figures(tree, args))}")
+    try:
+        print(f"wrote {write_report(tree, output, figures=_figures(tree, args))}")
+    except InputError as exc:  # a group or variable the page reads is absent: which file
+        raise InputError(f"{str(path)!r}: {exc}") from None
     return 0
 
 

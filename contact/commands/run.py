@@ -88,10 +88,16 @@ def register(sub) -> None:
     root_stress_option(p, "the tooth-root stress of both members from FE influence "
                           "coefficients, in the summary, the file and the report")
     p.add_argument("--rating", action=argparse.BooleanOptionalAction, default=True,
-                   help="the ISO 10300 Method B1 rating of the case (its [design] and "
-                   "[rating] tables) at the run's torques and speed, stored as /rating and "
-                   "printed beside the LTCA's peak flank pressure and root stress (on by "
+                   help="the load-capacity rating of the case (ISO 10300 Method B1 unless "
+                   "--rating-method or the case's [rating] method names another) at the "
+                   "run's torques and speed, stored as /rating, printed beside the LTCA's "
+                   "peak flank pressure and root stress and judged by the verdict (on by "
                    "default: analytic, < 0.5 s; docs/rating.md); --no-rating leaves it out")
+    p.add_argument("--rating-method", default=None, metavar="NAME",
+                   help="the load-capacity rating method of the registry (iso10300: ISO "
+                   "10300-1/-2/-3:2014 Method B1; agma2003: ANSI/AGMA 2003-D19, the case's "
+                   "[agma2003] table; a plug-in's; default the case's [rating] method, else "
+                   "iso10300; an unknown name lists those available)")
     progress_option(p)
     p.set_defaults(func=run)
 
@@ -193,6 +199,27 @@ def ltca_options(args: argparse.Namespace, **defaults):
     return LTCAOptions(**kw)
 
 
+def _chain_of(args: argparse.Namespace, operating, case):
+    """The chain ``ltca run`` runs (:meth:`contact.AnalysisChain.analysis`): without the root
+    stress for ``--no-root-stress``, without the efficiency step where there is no pinion
+    speed (``operating`` None), and the load-capacity step's scuffing and micropitting
+    without the rating for ``--no-rating``; otherwise /scuffing_micropitting, /rating by
+    ``--rating-method``, else the case's ``[rating] method``, else ISO 10300, and the
+    method's companions (/rating/flash_temperature; a bad [rating] table is refused before
+    the work)."""
+    from contact.chain import AnalysisChain
+    from contact.load_capacity.methods import case_method
+
+    chain = AnalysisChain.analysis().with_root_stress(bool(args.root_stress))
+    if operating is None:
+        chain = chain.without("efficiency")
+    if not args.rating:
+        return chain.with_load_capacity("scuffing_micropitting")
+    named = rating_steps(args.rating_method)
+    method = named["load_capacity"] if named else case_method(case)
+    return chain if method is None else chain.with_load_capacity(method)
+
+
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
@@ -200,6 +227,11 @@ def run(args: argparse.Namespace) -> int:
     from geometry.core.io import write_netcdf
 
     output = checked_outputs(args, more={"--report": args.report})
+    if args.rating_method is not None and not args.rating:
+        from geometry.core.errors import InputError
+
+        raise InputError("--rating-method: a method was named with --no-rating; give one "
+                         "of the two")
     case, mis = case_and_misalignment(args)
     opts = ltca_options(args)
     devs = None  # the case's [deviations] table, if any
@@ -219,14 +251,10 @@ def run(args: argparse.Namespace) -> int:
         flank=args.flank,
         options=opts,
         deviations=devs,
-        operating=False if operating is None else operating,
+        operating=operating,
         # a bar on a terminal, plain lines in a log (the LTCA and a first FE build)
         progress=args.progress,
-        root_stress=args.root_stress,
-        # the chain's load-capacity step (/scuffing_micropitting, /rating,
-        # /rating/flash_temperature; a bad [rating] table is refused before the work);
-        # --no-rating keeps scuffing and micropitting, without the rating
-        steps=None if args.rating else {"load_capacity": "scuffing_micropitting"},
+        steps=_chain_of(args, operating, case),
     )
     rating_why = ("ISO 10300 rating not computed (--no-rating)" if not args.rating
                   else str(tree.attrs.get("load_capacity_not_run", "")))
@@ -310,7 +338,7 @@ def run(args: argparse.Namespace) -> int:
             print(line)
         print("the FE model's peak fillet stress is mesh-converged within 5 % (docs/fe.md, "
               "Mesh convergence)")
-    for line in rating_lines(tree, rating_why):
+    for line in rating_lines(tree, rating_why, args.case):
         print(line)
     if "theoretical" in tree.children:
         print(
@@ -352,8 +380,14 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     the commands that answer them. A bearing finding (plastic or edge contact, flank
     pressure; :data:`BEARING_CHECKS`) gets the V-H check and an `ltca optimize` command
     for this flank with the case's own setting variables (:data:`BEARING_VARIABLES`, those
-    the pinion's process has) and the profile relief, edge share limited to 2 %; a
-    capacity finding (:data:`CAPACITY_CHECKS`) the rating's factors. Nothing for a verdict
+    the pinion's process has) and the profile relief, edge share limited to 2 % (and the
+    flank peak to the static strength it exceeded) — never the optimisation whose result
+    the case already is (:func:`contact.commands.next_steps.bearing_lines`); a capacity
+    finding (:data:`CAPACITY_CHECKS`) the rating's factors — first where the gear set is
+    too small for its load (a failed rating, or a flank pressure above its static
+    strength: no bearing change answers that); a scuffing finding the oil, inlet temperature
+    and roughness it depends on (ISO/TS 6336-20: the flash temperature and the oil's
+    scuffing temperature), as the same run with those options. Nothing for a verdict
     that is not FAIL.
 
     Parameters
@@ -371,44 +405,61 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     -------
     list of str
     """
-    from contact.optimize.variables import DesignVariable, check_variables, start_values
+    from contact.commands.next_steps import bearing_lines, static_flank_strength
     from contact.study.verdicts import verdict
     from contact.utca.easeoff import FLANK_ROLES
-    from geometry.core.errors import InputError
 
     v = verdict(tree)
     if v.severity != "fail":
         return []
     failed = {f.check for f in v.findings}
     shown = case_arg if case_arg is not None else case.name
+    method = (str(tree["rating"].attrs.get("rating_method", "")) if "rating" in tree.children
+              else "")
+    method = "" if method in ("", "iso10300") else method
+    coast = ("rating" in tree.children
+             and tree["rating"].attrs.get("side") == "coast")  # the side it rated
+    speed = (float(tree["rating"]["pinion_speed"].values) if "rating" in tree.children
+             and "pinion_speed" in tree["rating"].variables
+             and tree["rating"]["pinion_speed"].ndim == 0 else 0.0)
     torques = " ".join(f"{t:g}" for t in tree["ltca"]["torque"].values)
     side = flank or "drive"
     if side not in FLANK_ROLES:  # a pinion flank by name: its role, as `ltca optimize` takes
         side = "drive" if side == case.pair.drive_flank else "coast"
-    out = []
-    if failed & set(BEARING_CHECKS):
-        pinion_flank = FLANK_ROLES[side](case)
-        parts = []
-        for name, half in BEARING_VARIABLES.items():
-            try:
-                (x,) = start_values(case, pinion_flank, (name,))
-                var = DesignVariable(name, float(x) - half, float(x) + half)
-                check_variables(case, pinion_flank, [var])
-            except (InputError, KeyError, ValueError):
-                continue  # not a variable of this pinion's process
-            parts.append(f"--variable {name} {var.low:.4g} {var.high:.4g}")
-        parts += ["--variable tip_relief 0 60", "--variable root_relief 0 60"]
-        out += [f"  next, the {side} flank's bearing: the pattern over the mounting positions, "
-                "then its settings and relief developed against the loaded result, the other "
-                "flank kept (docs/optimize.md, \"A flank that fails\"):",
-                f"    ltca vh-check {shown} --flank {side}",
-                f"    ltca optimize {shown} --flank {side} --torque {torques} {' '.join(parts)} "
-                "--max-edge-share 0.02 --max-evaluations 100"]
+    out: list[str] = []
+    capacity: list[str] = []
     if failed & set(CAPACITY_CHECKS):
-        out += ["  next, the load capacity: every factor of the rating; a wider face, a larger "
-                "module or a stronger material (the basic file's [design] and [rating]) carry "
-                "more (docs/rating.md):",
-                f"    ltca rate {shown} --torque {torques}"]
+        capacity = ["  next, the load capacity: every factor of the rating; a wider face, a "
+                    "larger module or a stronger material (the basic file's [design] and "
+                    "[rating]) carry more (docs/rating.md):",
+                    f"    ltca rate {shown} --torque {torques}"
+                    + (f" --method {method}" if method else "")
+                    + (f" --speed {speed:g}" if speed else "")
+                    + (" --flank coast" if coast else "")]
+    # a gear set too small for its load (a failed rating, a flank above its static
+    # strength) is answered first: no bearing change carries the load it cannot
+    overloaded = any(f.severity == "fail" and (f.check in CAPACITY_CHECKS or (
+        f.check == "flank_pressure" and "static strength" in f.reason)) for f in v.findings)
+    if overloaded:
+        out += capacity
+    if failed & set(BEARING_CHECKS):
+        # a flank peak above the static strength: the optimisation is given it as a limit;
+        # an optimised case's own optimisation is not printed again (its [optimize] table)
+        static = any(f.check == "flank_pressure" and f.severity == "fail" for f in v.findings)
+        out += bearing_lines(case, shown, side, torques, BEARING_VARIABLES,
+                             static_flank_strength(tree["ltca"].to_dataset()) if static
+                             else None, rate=not failed & set(CAPACITY_CHECKS))
+    if not overloaded:
+        out += capacity
+    if "scuffing" in failed:
+        op = case.operating
+        out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "
+                "flanks and a lower speed, and an oil of a higher FZG load stage has a higher "
+                "scuffing temperature (--lubricant OIL.toml, an oil file: docs/friction.md; "
+                "docs/scuffing_micropitting.md); the same run 20 K cooler with flanks half as "
+                "rough, for example:",
+                f"    ltca run {shown} --flank {side} --torque {torques} --temperature "
+                f"{op.temperature - 20.0:g} --roughness {op.roughness / 2.0:g}"]
     return out
 
 
@@ -427,59 +478,27 @@ def check_certified(tree, path) -> None:
             + (" (root attribute analysis_status)" if str(path).endswith(".nc") else ""))
 
 
-def rating_lines(tree, why: str = "") -> list[str]:
-    """The lines ``ltca run`` prints on the ISO 10300 rating: per torque and member the
-    rating's σ_H0, σ_H beside the LTCA's peak flank pressure, σ_F0, σ_F beside the FE peak
-    root stress, with their ratios (:func:`contact.load_capacity.iso10300.rating_beside_ltca`), and
-    the
-    safety factors; or the one line ``why`` for an analysis without ``/rating``.
+def rating_steps(method: str | None) -> dict | None:
+    """The chain's steps for ``--rating-method``: None (the default chain, the case's
+    ``[rating] method`` or ISO 10300) or ``{"load_capacity": method}`` for a registered
+    method (an unknown name refused listing the available ones)."""
+    if method is None:
+        return None
+    from contact.load_capacity.methods import METHODS
+    from geometry.core.errors import ModelUnavailableError
 
-    Parameters
-    ----------
-    tree : xarray.DataTree
-        The analysis (``/ltca``, optionally ``/rating``).
-    why : str
-        Why the rating is absent (printed when it is).
+    try:
+        return {"load_capacity": METHODS.entry(method).name}
+    except ModelUnavailableError as exc:
+        raise ModelUnavailableError(f"--rating-method: {exc}") from None
 
-    Returns
-    -------
-    list of str
-    """
-    if "rating" not in tree.children:
-        return [why] if why else []
-    from tabulate import tabulate
 
-    from contact.load_capacity.iso10300 import rating_beside_ltca
+def rating_lines(tree, why: str = "", case_arg: str | None = None) -> list[str]:
+    """The lines ``ltca run`` prints on the rating, from the load-capacity methods' result
+    contract (:func:`contact.commands.rating_text.rating_lines`)."""
+    from contact.commands.rating_text import rating_lines as lines
 
-    ds = tree["rating"].to_dataset()
-    side = rating_beside_ltca(ds, tree["ltca"].to_dataset())
-    rows = []
-    for i, t in enumerate(side["torque"].values):
-        one = side.isel(torque=i)
-        for member in side["member"].values:
-            m = one.sel(member=member)
-            rows.append((f"{t:g}", str(member), f"{float(m['sigma_H0']):.0f}",
-                         f"{float(m['sigma_H']):.0f}", f"{float(m['pressure_max_flank']):.0f}",
-                         f"{float(m['pressure_to_sigma_H']):.2f}",
-                         f"{float(m['sigma_F0']):.0f}", f"{float(m['sigma_F']):.0f}",
-                         _number(float(m["root_stress_max"]), 0),
-                         _number(float(m["root_stress_to_sigma_F"]))))
-    s_h = ds["S_H"].min("member").values
-    s_f = ds["S_F"].values
-    lines = [f"ISO 10300 Method B1 rating beside the LTCA ({ds.attrs.get('side', '')} side, "
-             f"n1 {float(ds['pinion_speed']):g} rpm, K_A {float(ds['K_A']):g}; /rating, "
-             "docs/rating.md) [MPa]:",
-             tabulate(rows, headers=["T_p [N m]", "member", "sigma_H0", "sigma_H",
-                                     "p_max flank", "p_max/sigma_H", "sigma_F0", "sigma_F",
-                                     "FE root", "FE/sigma_F"], tablefmt="github"),
-             side["pressure_to_sigma_H"].attrs["comment"] + ".",
-             side["root_stress_to_sigma_F"].attrs["comment"] + ".",
-             "ISO safety factors: " + "; ".join(
-                 f"{t:g} N m S_H {s_h[i]:.2f}, S_F {s_f[i, 0]:.2f} / {s_f[i, 1]:.2f}"
-                 for i, t in enumerate(ds["torque"].values))
-             + f" (pinion / gear; S_H,min {float(ds['S_Hmin']):g}, S_F,min "
-               f"{float(ds['S_Fmin']):g}); ltca rate prints every factor"]
-    return lines
+    return lines(tree, why, case_arg)
 
 
 def plastic_summary(ltca, i: int) -> str:
@@ -623,7 +642,7 @@ def durability_lines(friction, standard=None) -> list[str]:
             f"{float(friction['contact_temperature_max'].values[i]):.0f} degC (flash "
             f"{float(friction['flash_temperature_max'].values[i]):.0f} K), scuffing safety "
             f"S_B {_number(s_b)}, least lambda_GF (film at the bulk temperature theta_M, "
-            f"ISO/TS 6336-22) {float(friction['specific_film_thickness_min'].values[i]):.3f}"
+            f"ISO/TS 6336-22) {_film_at_bulk(friction, i)}"
             + (f" (at the oil inlet {float(inlet.values[i]):.3f})" if inlet is not None
                else "")
             + (f", S_lambda {s_l:.2f}" if math.isfinite(s_l) else ""))
@@ -633,7 +652,10 @@ def durability_lines(friction, standard=None) -> list[str]:
         lines.append(f"scuffing temperature of the oil {theta_s:.0f} degC (FZG load stage "
                      f"{friction.attrs.get('fzg_load_stage', float('nan')):g}); temperatures "
                      "and lambda_GF of the flanks, the edge contacts apart "
-                     "(docs/scuffing_micropitting.md)")
+                     "(docs/scuffing_micropitting.md); the verdict judges the LTCA's S_B, "
+                     "each torque's first"
+                     + (", and says where the standard's is below 1 (docs/verdicts.md)"
+                        if standard is not None else " (docs/verdicts.md)"))
     for name in ("scuffing_safety", "micropitting_safety"):
         comment = str(friction[name].attrs.get("comment", ""))
         if comment.startswith("NaN"):
@@ -670,6 +692,22 @@ def _standard_lines(iso) -> list[str]:
                    f"{float(one['mean_friction_coefficient']):.3f}), S_B "
                    f"{_number(float(one['scuffing_safety']))}{spread}")
     return out
+
+
+def _film_at_bulk(friction, i: int) -> str:
+    """The least λ_GF at θ_M of torque ``i`` (3 decimals), or "-" with the reason where
+    the bulk temperature lies beyond the oil's data (no film computed there; the
+    segments' ``specific_film_thickness`` comment says so) instead of a bare "nan"."""
+    lam = float(friction["specific_film_thickness_min"].values[i])
+    if math.isfinite(lam):
+        return f"{lam:.3f}"
+    bulk = friction.get("bulk_temperature")
+    comment = str(friction["specific_film_thickness"].attrs.get("comment", "")
+                  if "specific_film_thickness" in friction else "")
+    if bulk is not None and math.isfinite(float(bulk.values[i])) and "beyond" in comment:
+        return (f"- (theta_M {float(bulk.values[i]):.0f} degC lies beyond the oil's "
+                "viscosity data: no film computed there)")
+    return "-"
 
 
 def _number(value: float, decimals: int = 2) -> str:

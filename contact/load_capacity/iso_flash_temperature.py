@@ -483,6 +483,26 @@ def iso_flash_temperature_method(
     Module docstring (ISO/TR 13989-1:2000 / ISO/TS 6336-20:2017 on ISO 10300-1 Annex A's
     virtual gears; Blok 1963).
     """
+    return _dataset(*_method(
+        rating, lubricant=lubricant, temperature=temperature, roughness=roughness,
+        conditions=conditions, points=points, lengthwise_sliding=lengthwise_sliding,
+        friction_form=friction_form,
+        viscosity_in_scuffing_temperature=viscosity_in_scuffing_temperature))
+
+
+#: position of S_B in :func:`_method`'s result (the arguments of :func:`_dataset`)
+_S_B = 17
+
+
+def _method(rating: xr.Dataset, *, lubricant: str, temperature: float, roughness: float,
+            conditions: ScuffingConditions | None, points: int, lengthwise_sliding: bool,
+            friction_form: str, viscosity_in_scuffing_temperature: bool,
+            memo: dict | None = None) -> tuple:
+    """:func:`iso_flash_temperature_method`'s arithmetic: the arguments of
+    :func:`_dataset` (S_B [1] per torque at :data:`_S_B`), no dataset built (the spread
+    of :func:`iso_flash_temperature_variants` reads S_B alone, issue 75); ``memo`` keeps
+    the rating's values and the oil between the calls of one set of variants."""
+    memo = {} if memo is None else memo
     cond = ScuffingConditions() if conditions is None else conditions
     if not isinstance(cond, ScuffingConditions):
         raise InputError("conditions: must be a contact.load_capacity.flash_temperature."
@@ -491,11 +511,13 @@ def iso_flash_temperature_method(
     rq = positive("roughness", roughness, "um")
     if not isinstance(rating, xr.Dataset):
         raise InputError(f"rating: must be an xarray.Dataset (/rating), got {type(rating)!r}")
-    v = {k: _rating_value(rating, k) for k in (
-        "d_v", "d_va", "d_vb", "alpha_vet", "beta_v", "beta_vb", "p_vet", "eps_va", "eps_vb",
-        "b_veff", "v_mt", "v_g", "F_vmt", "K_A", "K_v", "K_Hbeta", "K_Halpha",
-        "youngs_modulus", "poisson_ratio")}
-    torque = np.atleast_1d(_rating_value(rating, "torque"))
+    if "v" not in memo:  # the rating's values, read once for all the variants
+        memo["v"] = {k: _rating_value(rating, k) for k in (
+            "d_v", "d_va", "d_vb", "alpha_vet", "beta_v", "beta_vb", "p_vet", "eps_va",
+            "eps_vb", "b_veff", "v_mt", "v_g", "F_vmt", "K_A", "K_v", "K_Hbeta", "K_Halpha",
+            "youngs_modulus", "poisson_ratio")}
+        memo["torque"] = np.atleast_1d(_rating_value(rating, "torque"))
+    v, torque = memo["v"], memo["torque"]
     alpha, beta_vb = float(v["alpha_vet"]), float(v["beta_vb"])
     path = path_of_contact(v["d_va"], v["d_vb"], v["d_v"], alpha, points)
     x_gamma = load_sharing_factor(path["position"], path["length"], float(v["p_vet"]),
@@ -520,7 +542,9 @@ def iso_flash_temperature_method(
     half_width = np.sqrt(4.0 * w_n * rho_n[None, :] / (math.pi * e_star))
     p_h = 2.0 * w_n / (math.pi * half_width)
     # the oil, ISO's friction coefficient, the materials' effusivities
-    oil = load_lubricant(lubricant)
+    if "oil" not in memo:
+        memo["oil"] = load_lubricant(lubricant)
+    oil = memo["oil"]
     if oil.base_oil is None:
         raise InputError(f"lubricant: the oil {oil.name} gives no base_oil (X_L of ISO's mean "
                          "friction coefficient; an optional oil-file field of "
@@ -552,9 +576,9 @@ def iso_flash_temperature_method(
     theta_s, s_b, comment = _iso_scuffing(oil, eta, t_oil, cond, theta_max,
                                           viscosity_in_scuffing_temperature)
     method = METHOD_LENGTHWISE if lengthwise_sliding else METHOD_STANDARD
-    return _dataset(rating, torque, path, x_gamma, rho_n, sliding, across, p_h, half_width,
-                    flash, contact, w_bt, mu, flm, bulk, theta_max, theta_s, s_b, comment,
-                    dict(method=method, lengthwise_sliding=int(bool(lengthwise_sliding)),
+    return (rating, torque, path, x_gamma, rho_n, sliding, across, p_h, half_width,
+            flash, contact, w_bt, mu, flm, bulk, theta_max, theta_s, s_b, comment,
+            dict(method=method, lengthwise_sliding=int(bool(lengthwise_sliding)),
                          friction_form=friction_form,
                          viscosity_in_scuffing_temperature=int(
                              bool(viscosity_in_scuffing_temperature)),
@@ -692,13 +716,15 @@ def iso_flash_temperature_variants(
     virtual gears; DIN 3990-4:1987 for the other form of μ_m).
     """
     kw = dict(lubricant=lubricant, temperature=temperature, roughness=roughness,
-              conditions=conditions, points=points)
+              conditions=conditions, points=points, memo={})
     parts, low, high = [], [], []
     for lengthwise in VARIANTS.values():
-        parts.append(iso_flash_temperature_method(rating, lengthwise_sliding=lengthwise, **kw))
-        spread = np.stack([np.asarray(iso_flash_temperature_method(
+        parts.append(_dataset(*_method(rating, lengthwise_sliding=lengthwise,
+                                       friction_form="iso",
+                                       viscosity_in_scuffing_temperature=False, **kw)))
+        spread = np.stack([np.asarray(_method(
             rating, lengthwise_sliding=lengthwise, friction_form=form,
-            viscosity_in_scuffing_temperature=visc, **kw)["scuffing_safety"].values, float)
+            viscosity_in_scuffing_temperature=visc, **kw)[_S_B], float)
             for form, visc in _SPREAD])
         with np.errstate(invalid="ignore"):
             low.append(np.min(spread, axis=0))

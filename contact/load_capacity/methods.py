@@ -24,6 +24,7 @@ outside the toolkit): docs/extending.md, "A load-capacity rating method".
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import os
 from collections.abc import Callable, Mapping
@@ -34,19 +35,27 @@ import numpy as np
 import xarray as xr
 
 from geometry.core.errors import InputError, ModelUnavailableError, PluginError
+from geometry.core.registries import Registry
 from geometry.core.renamed import renamed_keywords
 
 if TYPE_CHECKING:
     from geometry.case import Case
 
-__all__ = ["DEFAULT_METHOD", "METHODS", "RatingMethod", "available_methods",
-           "available_rating_methods", "rate", "rate_load_capacity", "register_method",
-           "register_rating_method", "unregister_method", "unregister_rating_method"]
+__all__ = ["COMPANIONS", "DEFAULT_METHOD", "ENTRY_POINT_GROUP", "METHODS", "RatingMethod",
+           "available_methods", "available_rating_methods", "case_method", "rate",
+           "rate_load_capacity", "register_method", "register_rating_method", "unregister_method",
+           "unregister_rating_method"]
 
 log = logging.getLogger(__name__)
 
 #: the method :func:`rate` uses when none is named (``ltca rate``'s default)
 DEFAULT_METHOD = "iso10300"
+
+#: the results a method may ask the analysis chain to compute beside its rating
+#: (:attr:`RatingMethod.companions`): ``"flash_temperature"``, ISO/TS 6336-20's flash
+#: temperature method on the virtual cylindrical gears of an ISO 10300 ``/rating``
+#: (``/rating/flash_temperature``)
+COMPANIONS = ("flash_temperature",)
 
 
 @dataclass(frozen=True)
@@ -56,7 +65,8 @@ class RatingMethod:
     Attributes
     ----------
     name : str
-        The registry name (``ltca rate --method NAME``), lower case.
+        The registry name (``ltca rate --method NAME``, ``ltca run --rating-method NAME``),
+        lower case.
     function : callable
         ``function(case, torque, speed, *, flank=None, datasets=None, **options) ->
         xarray.Dataset``: ``case`` a :class:`geometry.case.Case`, ``torque`` the pinion
@@ -64,15 +74,17 @@ class RatingMethod:
         ``flank`` the pinion flank the analysis loads (None: the case's drive flank),
         ``datasets`` the analysis' groups by path (``{"/ltca": …, "/friction": …}``, empty
         without an analysis); ``options`` the method's own keywords. It returns the
-        ``/rating`` dataset (every variable with ``units`` and ``long_name``) and raises
-        :class:`geometry.core.errors.InputError` naming a bad input.
+        ``/rating`` dataset (every variable with ``units`` and ``long_name``) holding the
+        result contract (:mod:`contact.load_capacity.contract`: ``pitting_safety``,
+        ``pitting_safety_min``, ``bending_safety``, ``bending_safety_min`` over torque and
+        member) and raises :class:`geometry.core.errors.InputError` naming a bad input.
     title : str
         What the method is, one line (the standard and its method).
     source : str
         The standard (edition) and the worked example it is checked against.
     tables : callable, optional
         ``tables(dataset) -> str``: the rating as text in the standard's layout, what
-        ``ltca rate`` prints; None: one line per variable
+        ``ltca rate`` prints, every factor it uses; None: one line per variable
         (:func:`contact.commands.rate.variable_lines`).
     missing : callable, optional
         ``missing(case) -> str``: why the method cannot rate this case although nothing in
@@ -86,6 +98,15 @@ class RatingMethod:
         table is refused before the contact analysis, not after it (ISO 10300 Method B1,
         ANSI/AGMA 2003). False (default, a plug-in's unless it says so): rated in its step,
         after the analysis whose datasets it may read.
+    standard : str
+        The standard the findings name (``"ISO 10300"``); default the title.
+    worked_example : str
+        The worked example the method is checked against; default the source.
+    companions : tuple of str
+        Results the analysis chain computes beside this rating from it (names of
+        :data:`COMPANIONS`: ``"flash_temperature"``, ISO/TS 6336-20's flash temperature
+        method on ISO 10300's virtual cylindrical gears, ``/rating/flash_temperature``,
+        :func:`contact.chain.scuffing_flash_temperature`); default none.
     """
 
     name: str
@@ -95,6 +116,9 @@ class RatingMethod:
     tables: Callable[[xr.Dataset], str] | None = None
     missing: Callable[[Any], str] | None = None
     nominal: bool = False
+    standard: str = ""
+    worked_example: str = ""
+    companions: tuple[str, ...] = ()
 
 
 def _iso10300() -> RatingMethod:
@@ -106,7 +130,9 @@ def _iso10300() -> RatingMethod:
         "ISO 10300-1/-2/-3:2014 Method B1 (pitting and tooth root strength of bevel and "
         "hypoid gears)",
         "ISO 10300-1/-2/-3:2014; checked against ISO/TR 10300-30:2024 samples 1-3 "
-        "(tests/test_rating_iso10300.py)", tables, missing_tables, nominal=True)
+        "(tests/test_rating_iso10300.py)", tables, missing_tables, nominal=True,
+        standard="ISO 10300", worked_example="ISO/TR 10300-30:2024 samples 1-3",
+        companions=("flash_temperature",))
 
 
 def _agma2003() -> RatingMethod:
@@ -118,20 +144,40 @@ def _agma2003() -> RatingMethod:
         "ANSI/AGMA 2003-D19 (pitting resistance and bending strength of generated "
         "straight, Zerol and spiral bevel gear teeth)",
         "ANSI/AGMA 2003-D19 clauses 5-21 (SI equations); checked against its Annex E "
-        "worked example (tests/test_rating_agma2003.py)", tables, missing, nominal=True)
+        "worked example (tests/test_rating_agma2003.py)", tables, missing, nominal=True,
+        standard="ANSI/AGMA 2003-D19", worked_example="ANSI/AGMA 2003-D19 Annex E")
 
 
-#: name → :class:`RatingMethod`: every method that imported (one module each, imported
-#: under try/except as qpsolvers' backends, so a method whose module fails to import is
-#: absent with a warning in the log instead of breaking the package)
-METHODS: dict[str, RatingMethod] = {}
-for _entry in (_iso10300, _agma2003):
-    try:
-        _method = _entry()
-    except ImportError as _exc:  # pragma: no cover - the bundled methods import
-        log.warning("load-capacity method %s unavailable: %s", _entry.__name__, _exc)
-    else:
-        METHODS[_method.name] = _method
+#: the entry-point group in which an installed distribution advertises rating methods: each
+#: entry a :class:`RatingMethod` or a rating function (registered under the entry's name,
+#: ``title`` and ``source`` its docstring's first line), e.g. in its ``pyproject.toml``::
+#:
+#:     [project.entry-points."hypoid_ltca.rating_methods"]
+#:     my_method = "my_package.rating:rate"
+ENTRY_POINT_GROUP = "hypoid_ltca.rating_methods"
+
+
+def _adapt(name: str, obj: Any) -> RatingMethod:
+    """An entry-point object as a :class:`RatingMethod` (a function is wrapped)."""
+    if isinstance(obj, RatingMethod):
+        return obj if obj.name == name else dataclasses.replace(obj, name=name)
+    if not callable(obj):
+        raise InputError(f"function: must be callable, got {obj!r}")
+    doc = (getattr(obj, "__doc__", None) or "").strip().splitlines()
+    line = doc[0] if doc else f"plug-in rating method {name}"
+    return _entry(name, obj, title=line, source=line)
+
+
+#: name → :class:`RatingMethod`: the bundled methods (one module each, imported under
+#: try/except as qpsolvers' backends, so a method whose module fails to import is absent
+#: with a warning in the log instead of breaking the package), the plug-ins' of
+#: :data:`ENTRY_POINT_GROUP`, and those of :func:`register_method`
+#: (:class:`geometry.core.registries.Registry`, a read-only mapping)
+METHODS: Registry[RatingMethod] = Registry(
+    "load-capacity rating method", ENTRY_POINT_GROUP, (_iso10300, _agma2003),
+    name_of=lambda m: m.name, adapt=_adapt,
+    hint="contact.load_capacity.register_method or the entry-point group "
+         f"{ENTRY_POINT_GROUP} adds one; docs/extending.md")
 
 
 def available_methods() -> list[str]:
@@ -140,24 +186,62 @@ def available_methods() -> list[str]:
     Returns
     -------
     list of str
-        Names :func:`rate` and ``ltca rate --method`` accept (``"iso10300"`` …).
+        Names :func:`rate` and ``ltca rate --method`` accept (``"iso10300"`` …): the
+        bundled ones, the plug-ins' (:data:`ENTRY_POINT_GROUP`) and the registered ones.
     """
     return sorted(METHODS)
+
+
+def _entry(name: str, function: Callable[..., xr.Dataset], *, title: str, source: str,
+           tables: Callable[[xr.Dataset], str] | None = None,
+           missing: Callable[[Any], str] | None = None, nominal: bool = False,
+           standard: str | None = None, worked_example: str | None = None,
+           companions: tuple[str, ...] = ()) -> RatingMethod:
+    """A checked :class:`RatingMethod` (the rules of :func:`register_method`)."""
+    if not (isinstance(name, str) and name[:1].isalpha() and name == name.lower()
+            and name.replace("_", "").isalnum()):
+        raise PluginError(f"name: a method name is lower-case letters, digits and "
+                          f"underscores starting with a letter, got {name!r}")
+    if not callable(function):
+        raise PluginError(f"function: must be callable, got {function!r}")
+    if not (isinstance(title, str) and title.strip() and isinstance(source, str)
+            and source.strip()):
+        raise PluginError("title, source: a method states what it is and what it is "
+                          "checked against (non-empty text)")
+    for field, text in (("standard", standard), ("worked_example", worked_example)):
+        if text is not None and not (isinstance(text, str) and text.strip()):
+            raise PluginError(f"{field}: must be non-empty text naming the "
+                              f"{field.replace('_', ' ')}, got {text!r}")
+    if tables is not None and not callable(tables):
+        raise PluginError(f"tables: must be callable or None, got {tables!r}")
+    if missing is not None and not callable(missing):
+        raise PluginError(f"missing: must be callable or None, got {missing!r}")
+    companions = tuple(companions)
+    unknown = [c for c in companions if c not in COMPANIONS]
+    if unknown:
+        raise PluginError(f"companions: unknown companion result {unknown[0]!r} of method "
+                          f"{name!r}; available: {', '.join(COMPANIONS)}")
+    return RatingMethod(name, function, title, source, tables, missing, bool(nominal),
+                        standard or title, worked_example or source, companions)
 
 
 def register_method(name: str, function: Callable[..., xr.Dataset], *, title: str,
                     source: str, tables: Callable[[xr.Dataset], str] | None = None,
                     missing: Callable[[Any], str] | None = None,
-                    nominal: bool = False, replace: bool = False) -> RatingMethod:
-    """Add a rating method to the registry (a plug-in's; the bundled ones are entries of
-    :data:`METHODS`).
+                    nominal: bool = False, replace: bool = False,
+                    standard: str | None = None, worked_example: str | None = None,
+                    companions: tuple[str, ...] = ()) -> RatingMethod:
+    """Add a rating method to the registry for the running process (a plug-in's; the
+    bundled ones are entries of :data:`METHODS`, an installed distribution's come from the
+    entry-point group :data:`ENTRY_POINT_GROUP`).
 
     Parameters
     ----------
     name : str
         Registry name: lower-case letters, digits and underscores, starting with a letter.
     function : callable
-        The method, of the protocol of :attr:`RatingMethod.function`.
+        The method, of the protocol of :attr:`RatingMethod.function`; its result must hold
+        the result contract (:mod:`contact.load_capacity.contract`), checked at each call.
     title, source : str
         One line on what the method is, and the standard and worked example it is checked
         against (non-empty).
@@ -171,6 +255,12 @@ def register_method(name: str, function: Callable[..., xr.Dataset], *, title: st
         work (:attr:`RatingMethod.nominal`; default False).
     replace : bool
         Allow replacing a registered method of the same name (default False).
+    standard, worked_example : str, optional
+        The standard the findings name and the worked example (default the title and the
+        source).
+    companions : tuple of str
+        Results the analysis chain computes beside the rating (:attr:`RatingMethod.
+        companions`).
 
     Returns
     -------
@@ -180,29 +270,13 @@ def register_method(name: str, function: Callable[..., xr.Dataset], *, title: st
     Raises
     ------
     PluginError
-        A bad name, a function that is not callable, empty title or source, or a name
-        already registered without ``replace``.
+        A bad name, a function that is not callable, empty title or source, an unknown
+        companion, or a name already registered without ``replace``.
     """
-    if not (isinstance(name, str) and name[:1].isalpha() and name == name.lower()
-            and name.replace("_", "").isalnum()):
-        raise PluginError(f"name: a method name is lower-case letters, digits and "
-                          f"underscores starting with a letter, got {name!r}")
-    if not callable(function):
-        raise PluginError(f"function: must be callable, got {function!r}")
-    if not (isinstance(title, str) and title.strip() and isinstance(source, str)
-            and source.strip()):
-        raise PluginError("title, source: a method states what it is and what it is "
-                          "checked against (non-empty text)")
-    if name in METHODS and not replace:
-        raise PluginError(f"name: the load-capacity method {name!r} is registered already "
-                          "(replace=True replaces it)")
-    if tables is not None and not callable(tables):
-        raise PluginError(f"tables: must be callable or None, got {tables!r}")
-    if missing is not None and not callable(missing):
-        raise PluginError(f"missing: must be callable or None, got {missing!r}")
-    METHODS[name] = RatingMethod(name, function, title, source, tables, missing,
-                                 bool(nominal))
-    return METHODS[name]
+    return METHODS.register(_entry(name, function, title=title, source=source,
+                                   tables=tables, missing=missing, nominal=nominal,
+                                   standard=standard, worked_example=worked_example,
+                                   companions=companions), replace=replace)
 
 
 def unregister_method(name: str) -> None:
@@ -219,17 +293,43 @@ def unregister_method(name: str) -> None:
         ``name`` is not registered (the message lists those that are).
     """
     _method(name)
-    del METHODS[name]
+    METHODS.unregister(name)
 
 
 def _method(name: str) -> RatingMethod:
     """The registered method ``name``, or ModelUnavailableError listing the available."""
-    if not isinstance(name, str) or name not in METHODS:
-        raise ModelUnavailableError(
-            f"method: unknown load-capacity rating method {name!r}; available: "
-            f"{', '.join(available_methods()) or 'none'} (contact.load_capacity."
-            "register_method adds one; docs/extending.md)")
-    return METHODS[name]
+    try:
+        return METHODS.entry(name)
+    except ModelUnavailableError as exc:
+        raise ModelUnavailableError(f"method: {exc}") from None
+
+
+def case_method(case: Any) -> str | None:
+    """The load-capacity rating method a case chooses: its ``[rating] method`` field.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    str or None
+        A registered method's name, or None where the case names none.
+
+    Raises
+    ------
+    ModelUnavailableError
+        The case names a method that is not registered (``rating.method: …``, the
+        available ones listed).
+    """
+    table = getattr(case, "extra", {}).get("rating")
+    name = table.get("method") if isinstance(table, Mapping) else None
+    if name is None:
+        return None
+    try:
+        return METHODS.entry(name).name
+    except ModelUnavailableError as exc:
+        raise ModelUnavailableError(f"rating.method: {exc}") from None
 
 
 @renamed_keywords(speed="pinion_speed")
@@ -270,16 +370,20 @@ def rate(case: Case | str | os.PathLike[str] | None, torque: Any = None,
     Returns
     -------
     xarray.Dataset
-        The method's ``/rating`` dataset, with the attributes ``rating_method`` (the
-        registry name) and ``rating_method_title``.
+        The method's ``/rating`` dataset, holding the result contract, with the
+        attributes ``rating_method`` (the registry name), ``rating_method_title``,
+        ``rating_standard`` and ``rating_worked_example``.
 
     Raises
     ------
     ModelUnavailableError
         ``method`` is not registered (the message lists the available ones).
     InputError
-        A bad case, torque, speed, flank or option (named), or a method that returned
-        something other than a Dataset.
+        A bad case, torque, speed, flank or option (named).
+    PluginError
+        The method raised (its name and exception said), or its result breaks the result
+        contract (:func:`contact.load_capacity.contract.check_result`: the method and the
+        variable named).
 
     Notes
     -----
@@ -297,6 +401,7 @@ def rate(case: Case | str | os.PathLike[str] | None, torque: Any = None,
     'iso10300'
     """
     from contact.catalogue import resolve_case
+    from contact.load_capacity.contract import check_result
 
     entry = _method(method)
     c = resolve_case(case)
@@ -312,12 +417,19 @@ def rate(case: Case | str | os.PathLike[str] | None, torque: Any = None,
     if flank is not None and flank not in ("concave", "convex", "drive", "coast"):
         raise InputError(f"flank: must be concave, convex, drive or coast, got {flank!r}")
     log.info("rating %s by %s", c.name, entry.name)
-    out = entry.function(c, np.atleast_1d(np.asarray(torque, float)), float(pinion_speed),
-                         flank=flank, datasets=datasets, **options)
-    if not isinstance(out, xr.Dataset):
-        raise InputError(f"method: {entry.name} returned {type(out).__name__}, not an "
-                         "xarray.Dataset (the /rating group)")
-    return out.assign_attrs(rating_method=entry.name, rating_method_title=entry.title)
+    torques = np.atleast_1d(np.asarray(torque, float))
+    try:
+        out = entry.function(c, torques, float(pinion_speed), flank=flank,
+                             datasets=datasets, **options)
+    except InputError:
+        raise  # names its field
+    except Exception as exc:  # a method's own failure, said with its name
+        raise PluginError(f"load-capacity method {entry.name!r} raised {type(exc).__name__}: "
+                          f"{exc}") from exc
+    check_result(entry.name, out, torques)
+    return out.assign_attrs(rating_method=entry.name, rating_method_title=entry.title,
+                            rating_standard=entry.standard,
+                            rating_worked_example=entry.worked_example)
 
 
 def _datasets(analysis: Any) -> dict[str, xr.Dataset]:

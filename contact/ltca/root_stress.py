@@ -114,6 +114,9 @@ NOT_COMPUTED_ATTR = "not_computed"
 #: the attribute that says, one sentence per member and torque, which loads (at most
 #: :data:`UNPLACED_SHARE` of them) the FE model could not place and left out
 LEFT_OUT_ATTR = "left_out"
+#: the attribute that says, one sentence per member, that its FE coefficients were built
+#: and used from memory because the cache could not be written (issue 72)
+CACHE_NOTE_ATTR = "fe_cache_not_written"
 
 #: rows (pair, distinct loads) whose fillet stresses are superposed and reduced at once
 ROW_BLOCK = 32
@@ -484,10 +487,11 @@ def unplaced_reason(member: str, torque: float, unplaced: Unplaced) -> str:
 
 
 def root_stress_notes(ltca: xr.Dataset) -> list[str]:
-    """Why a member's root stress at a torque is NaN, and which loads its FE model could
-    not place and left out: the lines of the ``not_computed`` and ``left_out`` attributes of
-    ``root_stress_max`` (:func:`root_stress`), each prefixed ``"root stress: "``, as
-    ``ltca run`` prints them under its table.
+    """Why a member's root stress at a torque is NaN, which loads its FE model could not
+    place and left out, and whose FE coefficients were used from memory because the cache
+    could not be written: the lines of the ``not_computed``, ``left_out`` and
+    ``fe_cache_not_written`` attributes of ``root_stress_max`` (:func:`root_stress`), each
+    prefixed ``"root stress: "``, as ``ltca run`` prints them under its table.
 
     Parameters
     ----------
@@ -501,7 +505,8 @@ def root_stress_notes(ltca: xr.Dataset) -> list[str]:
     if "root_stress_max" not in ltca.variables:
         return []
     attrs = ltca["root_stress_max"].attrs
-    return [f"root stress: {line}" for attr in (NOT_COMPUTED_ATTR, LEFT_OUT_ATTR)
+    return [f"root stress: {line}"
+            for attr in (NOT_COMPUTED_ATTR, LEFT_OUT_ATTR, CACHE_NOTE_ATTR)
             for line in str(attrs.get(attr, "")).splitlines() if line]
 
 
@@ -636,6 +641,14 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         if text:  # why a torque's root stress is NaN, which loads were left out: in the file
             for name in ("root_stress", "root_stress_max"):
                 ds[name].attrs[attr] = "\n".join(text)
+    from contact.compliance.fe.cache import NOT_WRITTEN_ATTR
+
+    unwritten = [f"the {m}'s FE coefficients were built and used from memory; the cache was "
+                 f"not written ({coef[m].attrs[NOT_WRITTEN_ATTR]}): the next run builds them "
+                 "again" for m in MEMBERS if NOT_WRITTEN_ATTR in coef[m].attrs]
+    if unwritten:
+        for name in ("root_stress", "root_stress_max"):
+            ds[name].attrs[CACHE_NOTE_ATTR] = "\n".join(unwritten)
     ds["root_stress"].attrs["fe_cache_keys"] = " ".join(
         str(coef[m].attrs.get("cache_key", "")) for m in MEMBERS)
     ds["root_stress"].attrs["source"] = ("superposition of FE fillet-stress influence "

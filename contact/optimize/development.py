@@ -322,15 +322,14 @@ class KeptTeeth:
 def _analyse(case: Case, torques: list[float], misalignment: Misalignment | None = None,
              options: LTCAOptions = COARSE_LTCA, teeth: KeptTeeth | None = None,
              pinion_key: tuple = (), flank: str = "drive"):
+    from contact.chain import AnalysisChain
     from contact.pipeline import run_analysis
 
     c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
     if teeth is not None:
         options = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
     tree = run_analysis(c, torques, flank=flank, options=options, deviations=False,
-                        geometry=False,
-                        operating=False, mesh_interface=False, root_stress=False,
-                        steps={"load_capacity": None})
+                        steps=AnalysisChain.contact_only())
     return _metrics(tree, c), (*_grid(tree), static_strength(tree))
 
 

@@ -29,6 +29,7 @@ TERM_NAMES          objective term names
 constraint_names    the constraint names of a problem
 Evaluation          what one design's analyses give
 evaluate_design     analyse one design (runs on a Dask worker)
+score               terms, constraints and objective of a design's metrics
 """
 
 from __future__ import annotations
@@ -48,7 +49,7 @@ from geometry.core.validation import known_fields, real
 from geometry.pair.assembly import Misalignment
 
 __all__ = ["FAILED_OBJECTIVE", "TERM_NAMES", "Evaluation", "OptimizeProblem",
-           "constraint_names", "evaluate_design", "problem_from_table"]
+           "constraint_names", "evaluate_design", "problem_from_table", "score"]
 
 log = logging.getLogger(__name__)
 
@@ -352,7 +353,26 @@ METRICS = ("lte_mean", "lte_peak_to_peak", "edge_load_share", "pressure_max_flan
            "pressure_max_edge", "pattern_centre_u", "pattern_centre_v")
 
 
-def _score(problem: OptimizeProblem, m: dict[str, np.ndarray]):
+def score(problem: OptimizeProblem, m: dict[str, np.ndarray]):
+    """Objective terms, constraints and objective of a design's metrics (module docstring).
+
+    Parameters
+    ----------
+    problem : OptimizeProblem
+    m : dict of str → ndarray (n_mis, n_torque)
+        :data:`METRICS` per misalignment and torque (LTE [µrad], shares [1], pressures
+        [MPa], pattern centre [1]).
+
+    Returns
+    -------
+    terms : ndarray (n_term,)
+        Dimensionless, unweighted (:data:`TERM_NAMES`).
+    g : ndarray (n_con,)
+        Normalised constraints (:func:`constraint_names`), ≤ 0 met; a NaN metric gives inf.
+    f : float
+        The objective, weighted terms plus the quadratic exterior penalty (Nocedal &
+        Wright, *Numerical Optimization*, 2nd ed., §17.1).
+    """
     tw = np.asarray(problem.torque_weights) / sum(problem.torque_weights)
     terms = np.array([
         float(np.mean(m["lte_peak_to_peak"] @ tw)) / _TERM_REF["lte_peak_to_peak"],
@@ -405,6 +425,7 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
     """
     import time
 
+    from contact.chain import AnalysisChain
     from contact.optimize.variables import case_at
     from contact.pipeline import run_analysis
     from contact.study.summary import point_summary
@@ -416,21 +437,23 @@ def evaluate_design(shared, index: int, x) -> Evaluation:
     metrics = {k: np.full((nm, nt), np.nan) for k in METRICS}
     status = 0
     try:
-        case = case_at(shared.case, shared.pinion_flank, shared.names, x,
-                       relief_start=shared.relief_start, basic=shared.basic)
+        if shared.start is not None and np.array_equal(x, shared.start):
+            case = shared.case  # the start design is the case as given, not rebuilt
+        else:
+            case = case_at(shared.case, shared.pinion_flank, shared.names, x,
+                           relief_start=shared.relief_start, basic=shared.basic)
         for im, mis in enumerate(problem.misalignments):
             c = dataclasses.replace(case, misalignment=mis)
             tree = run_analysis(c, list(problem.torque), flank=problem.flank,
-                                options=problem.options, deviations=False, geometry=False,
+                                options=problem.options, deviations=False,
                                 # the objective needs no efficiency, root stress or rating
-                                operating=False, root_stress=False,
-                                steps={"load_capacity": None})
+                                steps=AnalysisChain.contact_only().with_mesh_interface())
             s = point_summary(tree, c)
             for k in METRICS:
                 metrics[k][im] = s[k]
             if not np.all(s["certified"] > 0):
                 status = 1
-        terms, g, f = _score(problem, metrics)
+        terms, g, f = score(problem, metrics)
         reason = ""
     except Exception as exc:  # one failing design never stops an optimisation
         log.info("design %d %s failed: %s", index, x.tolist(), exc)

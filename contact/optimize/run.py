@@ -24,8 +24,9 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
+import sys
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
@@ -47,6 +48,7 @@ from contact.optimize.variables import (
     DesignVariable,
     case_at,
     check_variables,
+    own_relief_start,
     start_values,
     variable_unit,
 )
@@ -74,6 +76,7 @@ class SharedDesign:
     names: tuple[str, ...]
     relief_start: float = 0.5
     basic: BasicDesign | None = None  # the start's basic design: synthesis variables
+    start: np.ndarray | None = None  # the start values: that design is ``case`` itself
 
 
 @dataclass(frozen=True, eq=False)
@@ -97,6 +100,12 @@ class OptimizeResult:
         Wall time [s].
     problem : OptimizeProblem or None
         The problem solved (limits, weights, the analysis's options).
+    confirmations : tuple of Confirmation
+        The designs confirmed at ``ltca run``'s sampling, in the order tried
+        (:func:`contact.optimize.confirm.confirm_design`); empty with ``confirm=0``.
+    confirmation : Confirmation or None
+        The chosen design's (``best``); None when not confirmed. ``feasible`` is its
+        ``met``: the constraints as ``ltca run`` of the written case meets them.
     """
 
     names: tuple[str, ...]
@@ -111,6 +120,8 @@ class OptimizeResult:
     method: str
     seconds: float
     problem: OptimizeProblem | None = None
+    confirmations: tuple = ()
+    confirmation: Any = None
 
 
 def _rank(e: Evaluation) -> tuple:
@@ -144,7 +155,9 @@ class _Evaluator:
         for ev in results:
             self.cache[tuple(np.round(ev.x, 12))] = ev
             self.done.append(ev)
-            if self.progress is not None:
+            if callable(self.progress):  # one line per design (off a terminal)
+                self.progress(design_line(self.shared, ev, self.budget))
+            elif self.progress is not None:
                 self.progress.update()
                 self.progress.set_postfix(best=f"{min(e.objective for e in self.done):.4g}")
 
@@ -153,6 +166,32 @@ class _Evaluator:
         if key not in self.cache:
             self.run([np.asarray(x, float)])
         return self.cache[key].objective
+
+
+def _stderr_line(line: str) -> None:
+    """A progress line on standard error, at once (the ``"lines"`` mode)."""
+    print(line, file=sys.stderr, flush=True)
+
+
+def design_line(shared: SharedDesign, ev: Evaluation, budget: int | None = None) -> str:
+    """One progress line of an evaluated design: its number, variable values, the worst
+    flank peak [MPa], edge share [%] and LTE p-p [µrad] over misalignments and torques,
+    the objective, whether it meets every constraint, and its wall time [s] — or why it
+    failed."""
+    of = f"/{budget}" if budget else ""
+    values = ", ".join(f"{n} {x:.5g}" for n, x in zip(shared.names, ev.x, strict=True))
+    head = f"optimize: design {ev.index + 1}{of}{' (start)' if ev.index == 0 else ''}: {values}"
+    if ev.status == 2:
+        return f"{head}: rejected, {ev.reason} [{ev.seconds:.0f} s]"
+    m = ev.metrics
+    with np.errstate(invalid="ignore"):
+        peak = np.nanmax(m["pressure_max_flank"])
+        edge = 100.0 * np.nanmax(m["edge_load_share"])
+        pp = np.nanmax(m["lte_peak_to_peak"])
+    return (f"{head}: flank peak {peak:.0f} MPa, edge {edge:.2g} %, LTE p-p {pp:.1f} urad; "
+            f"objective {ev.objective:.4g}, "
+            f"{'constraints met' if ev.feasible else 'not every constraint met'} "
+            f"[{ev.seconds:.0f} s]")
 
 
 def _log_dataset(shared: SharedDesign, evals: Sequence[Evaluation], units: Sequence[str],
@@ -224,10 +263,11 @@ def _log_dataset(shared: SharedDesign, evals: Sequence[Evaluation], units: Seque
 
 def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeProblem, *,
              method: str = "differential_evolution", max_evaluations: int = 200,
-             popsize: int | None = None, seed: int | None = 0, relief_start: float = 0.5,
+             popsize: int | None = None, seed: int | None = 0, relief_start: float | None = None,
              scheduler: Any = None, n_workers: int | None = None,
-             progress: bool = False, basic: BasicDesign | None = None,
-             start: Mapping[str, float] | None = None) -> OptimizeResult:
+             progress: bool | str | Callable[[str], None] = False,
+             basic: BasicDesign | None = None,
+             start: Mapping[str, float] | None = None, confirm: int = 3) -> OptimizeResult:
     """Optimise the pinion flank's variables for a loaded target.
 
     Parameters
@@ -248,13 +288,19 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
         population is at least 5).
     seed : int or None
         DE random seed (reproducible runs).
-    relief_start : float
-        Where relief variables start (:func:`geometry.machine.relief.relieved_blade`).
+    relief_start : float, optional
+        Where a relief variable starts on a blade without that rem
+        (:func:`geometry.machine.relief.relieved_blade`); default the case's synthesis
+        record for the flank (``[synthesis.<flank>] relief_start``), else 0.5. A rem the
+        blade has keeps its corner (:func:`contact.optimize.variables.case_at`).
     scheduler, n_workers
         Where designs are analysed (:func:`contact.study.engine.open_client`): None a
         LocalCluster, ``"synchronous"`` this process.
-    progress : bool
-        tqdm progress bar over the evaluations.
+    progress : bool, "lines" or callable
+        True: a tqdm bar over the evaluations (a terminal); ``"lines"``: one line per
+        design on standard error (:func:`design_line`; a log file or a pipe reads it, as
+        ``ltca optimize`` prints off a terminal); a callable: called with each line;
+        False: nothing.
     basic : geometry.synthesis.basic_design.BasicDesign, optional
         The basic design ``case`` was synthesised from: its flank prescriptions
         (:data:`contact.optimize.variables.SYNTHESIS_VARIABLES`, and the relief) may be
@@ -262,6 +308,14 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
     start : mapping of str to float, optional
         Start values [file units] of some variables, replacing the case's own (e.g. to go
         on from an earlier run's result); each inside its bounds.
+    confirm : int
+        Designs to confirm at most (≥ 0): the best is analysed as ``ltca run`` analyses its
+        written case (:func:`contact.optimize.confirm.confirm_design`: ``ltca run``'s
+        sampling, the rating's verdict, the FE mesh of the pinion tooth); where it fails,
+        the next-best designs the optimiser found feasible, until one is accepted. The
+        result is the first accepted, else the first whose mesh builds (``feasible``
+        False); None of them meshing leaves ``case`` None (nothing to write). 0: no
+        confirmation, ``feasible`` the optimiser's own ranking.
 
     Returns
     -------
@@ -293,6 +347,7 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
     lo = np.array([v.low for v in variables], float)
     hi = np.array([v.high for v in variables], float)
     x0 = start_values(case, pinion_flank, names, basic=basic)
+    own = x0.copy()  # the case's own values: that design is the case itself
     for n, v in (start or {}).items():
         if n not in names:
             raise InputError(f"optimize.start.{n}: not one of the variables "
@@ -305,20 +360,31 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
         raise InputError(f"optimize.bounds.{n}: the start value {x:.8g} {variable_unit(n)} lies "
                          f"outside the bounds ({a:g}, {b:g}); widen them")
     problem = problem.with_case(case)
-    shared = SharedDesign(case, problem, pinion_flank, names, relief_start, basic)
+    if relief_start is None:
+        recorded = own_relief_start(case, pinion_flank)
+        relief_start = recorded if recorded is not None else 0.5
+    shared = SharedDesign(case, problem, pinion_flank, names, relief_start, basic, own)
     span = hi - lo
 
     def to_x(z):
         return lo + np.clip(np.asarray(z, float), 0.0, 1.0) * span
 
     bar = None
-    if progress:
+    if callable(progress):
+        bar = progress
+    elif progress == "lines":
+        bar = _stderr_line
+    elif progress is True:
         from tqdm.auto import tqdm
 
         bar = tqdm(total=int(max_evaluations), desc="optimize", unit="design")
+    elif progress is not False and progress is not None:
+        raise InputError(f"progress: must be True, False, 'lines' or a callable, got "
+                         f"{progress!r}")
     try:
         with open_client(scheduler, n_workers) as client:
             ev = _Evaluator(shared, client, bar)
+            ev.budget = int(max_evaluations)
             ev.run([x0])
             z0 = (x0 - lo) / span
             if method == "differential_evolution":
@@ -329,6 +395,7 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
                 pop = max(math.ceil(5 / n), min(pop, int(max_evaluations) // n))
                 per_gen = max(5, pop * n)
                 maxiter = max(0, int(max_evaluations) // per_gen - 1)
+                ev.budget = max(int(max_evaluations), per_gen * (maxiter + 1))
 
                 def mapper(func, zs):
                     zs = list(zs)
@@ -345,21 +412,63 @@ def optimize(case: Case, variables: Sequence[DesignVariable], problem: OptimizeP
                          options={"maxfev": int(max_evaluations), "xtol": 1e-3,
                                   "ftol": 1e-4})
     finally:
-        if bar is not None:
+        if bar is not None and hasattr(bar, "close"):
             bar.close()
     evals = ev.done
     best = min(evals, key=_rank)
+    feasible = best.feasible
     start = evals[0]
-    best_case = case_at(case, pinion_flank, names, best.x, relief_start=relief_start,
-                        basic=basic)
+    confirmations: tuple = ()
+    chosen_conf = None
+    if isinstance(confirm, bool) or int(confirm) != confirm or confirm < 0:
+        raise InputError(f"confirm: must be an integer >= 0, got {confirm!r}")
+    if confirm:
+        best, chosen_conf, confirmations = _confirmed(shared, evals, int(confirm), bar)
+        feasible = chosen_conf is not None and chosen_conf.met
+    if best is None:
+        best_case = None
+        best = min(evals, key=_rank)
+    elif np.array_equal(best.x, own):
+        best_case = case
+    else:
+        best_case = case_at(case, pinion_flank, names, best.x, relief_start=relief_start,
+                            basic=basic)
     log_ds = _log_dataset(shared, evals, units, method)
-    if not best.feasible:
-        log.warning("optimize: no design met every constraint; best found %s (objective "
-                    "%.4g)", dict(zip(names, best.x.tolist(), strict=True)), best.objective)
+    if not feasible:
+        log.warning("optimize: no design met every constraint%s; best found %s (objective "
+                    "%.4g)", " at ltca run's sampling" if confirm else "",
+                    dict(zip(names, best.x.tolist(), strict=True)), best.objective)
     return OptimizeResult(names=names, units=units, start=x0, best=best.x, case=best_case,
-                          feasible=best.feasible, start_evaluation=start,
+                          feasible=feasible, start_evaluation=start,
                           best_evaluation=best, log=log_ds, method=method,
-                          seconds=time.perf_counter() - t_start, problem=problem)
+                          seconds=time.perf_counter() - t_start, problem=problem,
+                          confirmations=confirmations, confirmation=chosen_conf)
+
+
+def _confirmed(shared: SharedDesign, evals: Sequence[Evaluation], budget: int, say: Any):
+    """(evaluation, confirmation, all confirmations) of the design to write: the best
+    ranked design that ``ltca run``'s analysis accepts (:func:`confirm_design`), trying the
+    optimiser's feasible designs in rank order, at most ``budget``; else the first whose FE
+    mesh builds; else (None, None, ...)."""
+    from contact.optimize.confirm import confirm_design
+
+    tried = []
+    fallback = None
+    for e in sorted((e for e in evals if e.status < 2), key=_rank):
+        if len(tried) >= budget or (tried and not e.feasible):
+            break
+        conf = confirm_design(shared, e)
+        tried.append(conf)
+        if callable(say):
+            say(f"optimize: design {e.index + 1} at ltca run's sampling: {conf.summary()} "
+                f"[{conf.seconds:.0f} s]")
+        if conf.accepted:
+            return e, conf, tuple(tried)
+        if fallback is None and not conf.mesh:
+            fallback = (e, conf)
+    if fallback is None:
+        return None, None, tuple(tried)
+    return fallback[0], fallback[1], tuple(tried)
 
 
 def _pinion_flank(case: Case, flank: str | None) -> str:
@@ -403,8 +512,19 @@ def optimized_case(result: OptimizeResult, *, provenance: Mapping[str, object] |
         "torque_Nm": [float(t) for t in lo["torque"].values],
     }
     if result.problem is not None:  # the sampling the designs were ranked at
+        table["flank"] = result.problem.flank or "drive"
         table["rolls_per_cycle"] = int(result.problem.options.rolls_per_cycle)
         table["segments"] = int(result.problem.options.segments)
+    conf = result.confirmation
+    if conf is not None:  # the design as ltca run analyses the written case
+        table["confirmed"] = {
+            "sampling": "ltca run's defaults (contact.ltca.LTCAOptions), the rating, the FE "
+                        "mesh of the pinion tooth (contact.optimize.confirm)",
+            "constraints_met": bool(conf.met), "not_met": list(conf.violated),
+            "verdict": conf.severity, "verdict_fail": list(conf.findings),
+            "designs_confirmed": len(result.confirmations),
+            **{k: np.round(conf.metrics[k], 6).tolist() for k in
+               ("lte_mean", "lte_peak_to_peak", "edge_load_share", "pressure_max_flank")}}
     for tag, e in (("start", s), ("result", b)):
         table[tag] = {k: np.round(e.metrics[k], 6).tolist() for k in
                       ("lte_mean", "lte_peak_to_peak", "edge_load_share",

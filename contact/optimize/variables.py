@@ -49,7 +49,8 @@ from geometry.synthesis.correction import SETTING_VARIABLES, setting_value, tool
 from geometry.synthesis.tip_plane import tip_plane_on_root_cone
 
 __all__ = ["RELIEF_VARIABLES", "SYNTHESIS_VARIABLES", "DesignVariable", "case_at",
-           "check_variables", "start_values", "synthesised_case", "variable_unit"]
+           "check_variables", "own_relief_start", "start_values", "synthesised_case",
+           "variable_unit"]
 
 #: relief variables (µm of normal relief at the flank's tip end / root end, mean section)
 RELIEF_VARIABLES: Mapping[str, str] = {"tip_relief": "um", "root_relief": "um"}
@@ -134,6 +135,15 @@ def start_values(case: Case, flank: str, names: Sequence[str], *,
     return np.asarray(out, float)
 
 
+def own_relief_start(case: Case, flank: str) -> float | None:
+    """The ``relief_start`` [1] the case's synthesis recorded for its pinion flank ``flank``
+    (``[synthesis.<flank>]``, written by ``ltca synthesize``), or None."""
+    rec = case.extra.get("synthesis", {})
+    rec = rec.get(flank) if isinstance(rec, Mapping) else None
+    value = rec.get("relief_start") if isinstance(rec, Mapping) else None
+    return float(value) if isinstance(value, (int, float)) else None
+
+
 def synthesised_case(case: Case, basic: BasicDesign) -> Case:
     """``basic`` synthesised, in the place of ``case``.
 
@@ -178,8 +188,11 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
     values : array_like (len(names),)
         Values in file units (deg, mm, µm …).
     relief_start : float
-        Where a relief starts (:func:`geometry.machine.relief.relieved_blade`); unused with
-        ``basic`` (the basic design's own ``relief_start``, or the variable, holds).
+        Where a relief starts (:func:`geometry.machine.relief.relieved_blade`) on a blade
+        without that rem; a rem the blade has keeps its corner (the relief measured there
+        by :func:`start_values` is the variable's start, so the start values give the case
+        itself). Unused with ``basic`` (the basic design's own ``relief_start``, or the
+        variable, holds).
     basic : geometry.synthesis.basic_design.BasicDesign, optional
         The design ``case`` was synthesised from: synthesis variables (and the relief) are
         set in its prescriptions for ``flank`` and the design re-synthesised
@@ -197,9 +210,11 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
 
     Notes
     -----
-    With ``basic``, synthesis first; then the settings are set; a relief variable without
-    ``basic`` then re-makes the blade's rems on the new flank (both reliefs, the one not
-    varied kept at its start value measured on the case).
+    With ``basic``, synthesis first; then the settings are set (a value equal to the
+    case's own leaves the setting as it is); a relief variable without ``basic`` then
+    re-makes the blade's rems at their own corners on the new flank (both reliefs, the one
+    not varied kept at its start value measured on the case) where a setting or a relief
+    changed. Values equal to the case's own (:func:`start_values`) return ``case`` itself.
     """
     synth = _synthesised(names, basic)
     if synth:
@@ -209,8 +224,15 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
         names, values = [n for n, _ in kept], [v for _, v in kept]
     mem = case.pinion
     tool = mem.flank(flank)
-    settings = {n: float(v) * SETTING_VARIABLES[n].scale
-                for n, v in zip(names, values, strict=True) if n not in RELIEF_VARIABLES}
+    # a setting at the case's own value leaves the tool as it is (no re-placed tip plane),
+    # so that the start design is the case itself
+    settings = {}
+    for n, v in zip(names, values, strict=True):
+        if n in RELIEF_VARIABLES:
+            continue
+        value = float(v) * SETTING_VARIABLES[n].scale
+        if not math.isclose(value, setting_value(tool, n), rel_tol=1e-12, abs_tol=1e-15):
+            settings[n] = value
     new = tool_with_values(tool, settings) if settings else tool
     if settings and new.machine.process == "Generate":
         # a setting moves the cut's root line: its tip plane back onto the root cone, as
@@ -219,14 +241,22 @@ def case_at(case: Case, flank: str, names: Sequence[str], values, *,
         new = dataclasses.replace(new, blade=placed.blade, machine=placed.settings)
     relief = {n: float(v) for n, v in zip(names, values, strict=True) if n in RELIEF_VARIABLES}
     if relief:
-        missing = [n for n in RELIEF_VARIABLES if n not in relief]
-        if missing:
-            kept = _measured_relief(case, flank)
-            relief |= {n: kept[list(RELIEF_VARIABLES).index(n)] for n in missing}
-        blade = relieved_blade(new.blade, new.machine, mem.blank, mem.hand, case.gear.blank,
-                               tip_relief=1e-3 * relief["tip_relief"],
-                               root_relief=1e-3 * relief["root_relief"], start=relief_start)
-        new = dataclasses.replace(new, blade=blade)
+        own = dict(zip(RELIEF_VARIABLES, _measured_relief(case, flank), strict=True))
+        relief = own | relief
+        if settings or any(not math.isclose(relief[n], own[n], rel_tol=1e-12, abs_tol=1e-9)
+                           for n in RELIEF_VARIABLES):
+            # the blade's own rem corners kept (the relief measured there is the
+            # variable's start), a rem the blade lacks from relief_start
+            b = tool.blade
+            corners = (b.flankrem_height if b.flankrem_angle != 0.0 else None,
+                       b.toprem_height if b.toprem_angle != 0.0 else None)
+            blade = relieved_blade(new.blade, new.machine, mem.blank, mem.hand,
+                                   case.gear.blank, tip_relief=1e-3 * relief["tip_relief"],
+                                   root_relief=1e-3 * relief["root_relief"],
+                                   start=relief_start, corners=corners)
+            new = dataclasses.replace(new, blade=blade)
+    if new is tool:
+        return case
     return dataclasses.replace(case, pinion=dataclasses.replace(mem, **{flank: new}))
 
 

@@ -319,42 +319,75 @@ def _scuffing_micropitting(tree: xr.DataTree, fr: xr.Dataset | None) -> xr.Datas
 
 
 def _rating(tree: xr.DataTree, lt: xr.Dataset | None) -> dict | None:
-    """The table "Standard rating beside the LTCA": per torque and member the ISO 10300
-    σ_H0, σ_H, the LTCA's peak flank pressure and its ratio to σ_H, σ_F0, σ_F, the FE peak
-    root stress and its ratio to σ_F, the safety factors (:func:`contact.load_capacity.iso10300.
-    rating_beside_ltca`); None where the file has no ``/rating``."""
+    """The table "Standard rating beside the LTCA", from the load-capacity methods' result
+    contract (:mod:`contact.load_capacity.contract`): per torque and member the standard's
+    contact stress beside the LTCA's peak flank pressure, its root stress beside the FE
+    peak root stress (where the method gives the stresses), with their ratios, and the
+    safeties against pitting and bending; None where the file has no ``/rating``, and a
+    table of none but the reason (``missing``) where its ``/rating`` lacks the contract."""
     ra = _group(tree, "rating")
     if ra is None or lt is None:
         return None
-    from contact.load_capacity.iso10300 import rating_beside_ltca
+    from contact.load_capacity.contract import safeties
 
-    side = rating_beside_ltca(ra, lt)
-    keys = (("sigma_H0", 0), ("sigma_H", 0), ("pressure_max_flank", 0),
-            ("pressure_to_sigma_H", 2), ("sigma_F0", 0), ("sigma_F", 0),
-            ("root_stress_max", 0), ("root_stress_to_sigma_F", 2))
+    method = str(ra.attrs.get("rating_method", ""))
+    ds, lacks = safeties(ra)
+    if ds is None:
+        return {"rows": [], "headers": [], "missing": f"not checked: {lacks}",
+                "method": method, "root_stress": False, "ratios": []}
+    stresses = {"contact_stress", "root_stress"} <= set(ds.data_vars)
+    sym = {v: str(ds[v].attrs.get("symbol", "")) for v in ds.data_vars}
+    names = ds["member_label"].values if "member_label" in ds.coords else ds["member"].values
+    torques = np.asarray(lt["torque"].values, float) if "torque" in lt.coords else np.array([])
+
+    def at(name: str, t: float, j: int) -> float:
+        hit = np.flatnonzero(np.isclose(torques, t, rtol=1e-9, atol=0.0))
+        if name not in lt or hit.size == 0:
+            return float("nan")
+        x = lt[name].isel(torque=int(hit[0]))
+        return float((x.isel(member=j) if "member" in x.dims else x).values)
+
     rows = []
-    for i, t in enumerate(side["torque"].values):
-        for member in side["member"].values:
-            one = side.isel(torque=i).sel(member=member)
-            rows.append({"torque": f"{t:g}", "member": str(member),
-                         "cells": [{"key": k, **_cell(one[k].values, d)} for k, d in keys]
-                         + [{"key": s, **_cell(ra[s].isel(torque=i).sel(member=member)
-                                               .values, 2)} for s in ("S_H", "S_F")]})
-    return {"rows": rows,
-            "method": (f"ISO 10300-1/-2/-3:2014 Method B1, {ra.attrs.get('side', '')} side, "
-                       f"n1 {_num(ra['pinion_speed'].values):g} rpm, K_A "
-                       f"{_num(ra['K_A'].values):g}, K_v {_num(ra['K_v'].values[0]):.3f} "
-                       f"(first torque), K_Hβ {_num(ra['K_Hbeta'].values):.3f}, S_H,min "
-                       f"{_num(ra['S_Hmin'].values):g}, S_F,min "
-                       f"{_num(ra['S_Fmin'].values):g}"),
+    for i, t in enumerate(ds["torque"].values):
+        for j, member in enumerate(names):
+            cells = []
+            if stresses:
+                c = float(ds["contact_stress"].transpose("torque", "member").values[i, j])
+                r = float(ds["root_stress"].transpose("torque", "member").values[i, j])
+                p, fe = at("pressure_max_flank", float(t), j), at("root_stress_max", float(t), j)
+                cells += [{"key": k, **_cell(v, d)} for k, v, d in (
+                    ("contact_stress", c, 0), ("pressure_max_flank", p, 0),
+                    ("pressure_to_contact_stress", p / c, 2), ("root_stress", r, 0),
+                    ("root_stress_max", fe, 0), ("root_stress_to_root_stress", fe / r, 2))]
+            cells += [{"key": k, **_cell(ds[k].transpose("torque", "member").values[i, j], 2)}
+                      for k in ("pitting_safety", "bending_safety")]
+            rows.append({"torque": f"{t:g}", "member": str(member), "cells": cells})
+    standard = str(ds.attrs.get("rating_standard") or method)
+    headers = ["T_p [N·m]", "member"]
+    if stresses:
+        ch, rh = sym["contact_stress"] or "contact stress", sym["root_stress"] or "root stress"
+        headers += [f"{standard} {ch} [MPa]", "LTCA peak flank pressure [MPa]",
+                    f"pressure / {ch}", f"{standard} {rh} [MPa]",
+                    "FE peak root stress [MPa]", f"root stress / {rh}"]
+    headers += [f"{standard} {sym['pitting_safety'] or 'pitting safety'}",
+                f"{standard} {sym['bending_safety'] or 'bending safety'}"]
+    mins = ", ".join(
+        f"{sym[v] or v} " + " / ".join(f"{x:g}" for x in np.unique(np.asarray(ds[v].values,
+                                                                             float)))
+        for v in ("pitting_safety_min", "bending_safety_min"))
+    title = str(ds.attrs.get("rating_method_title") or ds.attrs.get("method") or standard)
+    side = f", {ds.attrs['side']} side" if ds.attrs.get("side") else ""
+    speed = (f", n1 {_num(ds['pinion_speed'].values):g} rpm" if "pinion_speed" in ds
+             and np.ndim(ds["pinion_speed"].values) == 0 else "")
+    return {"rows": rows, "headers": [page_units(h).replace("sigma_", "σ_") for h in headers],
+            "missing": "",
+            "method": f"{title} (method {method}){side}{speed}; minima {mins}",
             "root_stress": "root_stress_max" in lt,
-            "ratios": [page_units(side[k].attrs["comment"]).replace("sigma_", "σ_")
-                       .replace("_Hbeta", "_Hβ").replace("_Halpha", "_Hα")
-                       .replace("_Fbeta", "_Fβ").replace("_Falpha", "_Fα")
-                       .replace("sqrt", "√").replace("30-degree", "30°")
-                       .replace("p_max/σ_H", "pressure / σ_H")
-                       .replace("FE/σ_F", "root stress / σ_F")
-                       for k in ("pressure_to_sigma_H", "root_stress_to_sigma_F")]}
+            "ratios": ([page_units(r).replace("sigma_", "σ_") for r in (
+                f"pressure / {ch}: the LTCA's peak Hertzian pressure on the flank over the "
+                "standard's contact stress with its load factors",
+                f"root stress / {rh}: the FE peak maximum principal tooth-root stress over "
+                "the standard's root stress with its load factors")] if stresses else [])}
 
 
 def _basic_data(inputs_text: str) -> dict | None:

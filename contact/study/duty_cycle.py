@@ -145,6 +145,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     geometry, no mesh interface) and :func:`friction.efficiency.efficiency_analysis` at its
     speed and oil temperature.
     """
+    from contact.chain import AnalysisChain
     from contact.ltca.summary import edge_load_share
     from contact.pipeline import operating_conditions, run_analysis
     from contact.study.summary import plausibility_bits
@@ -160,9 +161,9 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     try:
         mis = duty.misalignment(index, case.misalignment)
         tree = run_analysis(dataclasses.replace(case, misalignment=mis), [torque],
-                            flank=shared.flank, options=shared.options, geometry=False,
-                            theoretical=False, operating=False, mesh_interface=False,
-                            root_stress=shared.root_stress, steps={"load_capacity": None})
+                            flank=shared.flank, options=shared.options, theoretical=False,
+                            steps=AnalysisChain.contact_only().with_root_stress(
+                                shared.root_stress))
         ltca = tree["/ltca"].to_dataset()
         temp = None if duty.temperature is None else float(duty.temperature[index])
         op = operating_conditions(case, pinion_speed=float(duty.pinion_speed[index]),
@@ -630,15 +631,29 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
             raise InputError("root_stress: must be True, False or a "
                              f"contact.compliance.fe.FEOptions, got {root_stress!r}")
     coefficients: tuple = ()
+    fe_failed = ""
     if root_stress is not False:  # built once here, handed to every worker (primed caches)
         from contact.ltca.root_stress import prepare_coefficients
+        from geometry.core.errors import LTCAError
 
-        coefficients = tuple(prepare_coefficients(
-            case, run.flank, None if root_stress is True else root_stress,
-            progress=run.progress is True).values())  # a bar on a terminal only
+        try:
+            coefficients = tuple(prepare_coefficients(
+                case, run.flank, None if root_stress is True else root_stress,
+                progress=run.progress is True).values())  # a bar on a terminal only
+        except LTCAError as exc:
+            # the FE model of these teeth could not be built (an inverted element): the
+            # duty cycle runs on without the bending side, as `ltca run` does without
+            # root stress (contact.chain.root_stress_fe), and says why
+            fe_failed = f"root stress not computed: the FE model failed ({exc})"
+            log.warning("%s", fe_failed)
+            root_stress = False
     shared = DutyInputs(case, duty, run.options or LTCAOptions(), run.flank, root_stress,
                         coefficients)
-    return duty_cycle_result(shared, _bins(shared, run))
+    out = duty_cycle_result(shared, _bins(shared, run))
+    if fe_failed:
+        out.attrs["bending"] = (f"unavailable: {fe_failed}; no bending damage or life is "
+                                "reported")
+    return out
 
 
 def bin_table(ds: xr.Dataset) -> list[Mapping[str, Any]]:

@@ -120,6 +120,7 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     study's numbers equal those of single analyses at the same inputs (but for the order
     of floating-point sums: ≈ 1e-15 relative).
     """
+    from contact.chain import AnalysisChain
     from contact.pipeline import run_analysis
     from friction.efficiency import efficiency_analysis
 
@@ -132,9 +133,9 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
         tree = run_analysis(
             dataclasses.replace(case, misalignment=misalignment_of(case.misalignment, point)),
             list(shared.torque), flank=shared.flank, options=shared.options,
-            deviations=shared.deviations_at(point.get("deviation_scale")), geometry=False,
-            theoretical=False, operating=False, mesh_interface=False,
-            root_stress=shared.root_stress, steps={"load_capacity": None})
+            deviations=shared.deviations_at(point.get("deviation_scale")),
+            theoretical=False,
+            steps=AnalysisChain.contact_only().with_root_stress(shared.root_stress))
         friction = []
         if shared.speed:
             ltca = tree["/ltca"].to_dataset()

@@ -38,6 +38,9 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
 * ``certification`` (attention): roll positions without a certified contact solution;
   fail where a torque has none (the analysis failed there:
   :func:`contact.ltca.summary.certification`).
+* ``root_stress`` (attention): the tooth-root stress was asked for but its FE model of the
+  teeth failed (the root attribute ``root_stress_not_run`` says why, e.g. an inverted
+  element): the bending side then rests on the ISO 10300 rating alone.
 * ``friction_extrapolated`` (attention): the friction model ran outside its fitted range
   (``/friction/friction_model_extrapolated``; flanks and edges as
   :func:`friction.efficiency.extrapolation_summary` splits them).
@@ -46,11 +49,22 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   reaches the oil's scuffing temperature, the least specific film its permissible value —
   the methods' own criteria (ISO/TR 13989-1, ISO/TS 6336-22 leave larger minimum factors
   to agreement).
-* ``rating`` (fail): the ISO 10300 ``/rating`` group's S_H, S_F against its S_Hmin, S_Fmin;
-  attention instead for a torque above the rating's ``design_torque`` whose long-life
-  safety is below the minimum but whose static strength holds: a load of finite life, with
-  the load cycles it may run (``permissible_cycles_pitting``/``_bending``, ISO 10300-2/-3
-  cl. 8).
+* ``rating`` (fail): the ``/rating`` group's safeties against their minima, read from the
+  result contract of the load-capacity methods (:mod:`contact.load_capacity.contract`:
+  ``pitting_safety``, ``bending_safety`` and their minima, whatever the method: ISO 10300's
+  S_H, S_F, ANSI/AGMA 2003's, a plug-in's); attention instead for a torque above the
+  rating's ``design_torque`` whose long-life safety is below the minimum but whose static
+  strength holds: a load of finite life, with the load cycles it may run
+  (``permissible_cycles_pitting``/``_bending``, ISO 10300-2/-3 cl. 8). A ``/rating``
+  without the contract is not checked (:attr:`Verdict.unchecked` says why), never passed.
+* ``root_stress`` (fail/attention): the FE peak root stress against ISO 10300-3's σ_FP;
+  ``scuffing_standard`` (attention): the standard's S_B below 1 beside the judged one —
+  :mod:`contact.study.verdict_checks` (issue 72).
+
+Findings a reader trusts: an edge share below :data:`EDGE_SHARE_MIN` is no finding (the
+discretisation's); findings are worst first, then in :data:`CHECK_ORDER`; the
+flank-pressure finding promises no finite life at a torque whose rating is beyond the
+static strength (docs/verdicts.md, "Findings a reader trusts").
 
 **Duty cycle** (the ``/duty_cycle`` dataset of ``ltca duty-cycle``).
 
@@ -100,9 +114,9 @@ import xarray as xr
 from contact.ltca.plausibility import PLASTIC_SHARE_LIMIT, plausibility_warnings
 from geometry.core.errors import InputError
 
-__all__ = ["CHECKS", "DUTY_MIN_SAFETY", "GRADE", "MICROPITTING_MIN", "SCUFFING_MIN",
-           "SEVERITIES", "VH_SAME_POSITION", "VH_TARGET_TOLERANCE", "Finding", "Verdict",
-           "verdict"]
+__all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
+           "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES", "VH_SAME_POSITION",
+           "VH_TARGET_TOLERANCE", "Finding", "Verdict", "verdict"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -114,6 +128,20 @@ GRADE = "MQ"
 #: [1] least scuffing safety S_B and micropitting safety S_λ (module docstring)
 SCUFFING_MIN = 1.0
 MICROPITTING_MIN = 1.0
+
+#: [1] least share of the torque (Σ F·arm over the mesh cycle) an edge must carry to be a
+#: finding: 0.05 %, a fortieth of what one loaded segment carries on average (the default
+#: analysis' 24 segments on each of two loaded contact curves: 1/48 ≈ 2.1 %). The load of
+#: the segment where a pattern ends depends on where in that segment the end falls, so a
+#: smaller share is the discretisation's, not the design's (docs/verdicts.md)
+EDGE_SHARE_MIN = 5e-4
+
+#: the order of the checks within one severity: what makes the other numbers meaningless
+#: first (no solution, an implausible contact), then the load capacity (a gear set too
+#: small for its load: no bearing change answers it), then the rest
+CHECK_ORDER = ("certification", "implausible", "rating", "root_stress", "flank_pressure",
+               "scuffing", "scuffing_standard", "micropitting", "static", "damage", "safety",
+               "plastic_edges", "edge_contact", "friction_extrapolated")
 
 #: [1] least contact and bending safety factor of a duty cycle's peak-torque bin, life
 #: factor 1 (module docstring)
@@ -209,8 +237,12 @@ def _t(torque: float) -> str:
 
 
 def _worst_first(findings: list[Finding]) -> tuple[Finding, ...]:
+    """Worst severity first; within one, in :data:`CHECK_ORDER` (stable: a check's own
+    findings keep their order, by torque)."""
     order = {s: i for i, s in enumerate(reversed(SEVERITIES))}
-    return tuple(sorted(findings, key=lambda f: order[f.severity]))  # stable
+    rank = {c: i for i, c in enumerate(CHECK_ORDER)}
+    return tuple(sorted(findings, key=lambda f: (order[f.severity],
+                                                 rank.get(f.check, len(rank)))))
 
 
 # --------------------------------------------------------------------------- analysis
@@ -219,7 +251,27 @@ def _group(tree: xr.DataTree, name: str) -> xr.Dataset | None:
     return tree[name].to_dataset() if name in tree.children else None
 
 
-def _flank_pressure(lt: xr.Dataset) -> list[Finding]:
+def _flank_static_torques(lt: xr.Dataset | None) -> frozenset:
+    """The torques at which the LTCA's flank peak pressure exceeds the static strength of
+    the weaker member (as :func:`_flank_pressure` judges it): the rating's finding there
+    does not offer a finite life."""
+    from contact.load_capacity.durability import sn_curves
+
+    if lt is None or "pressure_max_flank" not in lt:
+        return frozenset()
+    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
+    if not names:
+        return frozenset()
+    weak = min((sn_curves(str(m), GRADE)["contact"] for m in sorted(names)),
+               key=lambda c: c.allowable)
+    static = weak.allowable * weak.static_life_factor
+    return frozenset(float(t) for t, p in zip(lt["torque"].values,
+                                              lt["pressure_max_flank"].values, strict=True)
+                     if np.isfinite(p) and p > static)
+
+
+def _flank_pressure(lt: xr.Dataset, static_torques: frozenset = frozenset()
+                    ) -> list[Finding]:
     from contact.load_capacity.durability import sn_curves
 
     names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
@@ -239,6 +291,12 @@ def _flank_pressure(lt: xr.Dataset) -> list[Finding]:
                                f"strength {static:.0f} MPa (σ_Hlim {limit:.0f} MPa × "
                                f"Z_NT {weak.static_life_factor:g}, {mat}, grade {GRADE}): "
                                "no life at this torque"))
+        elif float(t) in static_torques:  # the rating's finding says what life there is
+            out.append(Finding("attention", "flank_pressure",
+                               f"flank peak pressure {p:.0f} MPa at {_t(t)} above σ_Hlim "
+                               f"{limit:.0f} MPa ({mat}, ISO 6336-5 grade {GRADE}), below its "
+                               f"static strength {static:.0f} MPa; the rating at this torque "
+                               "exceeds the static strength (its finding)"))
         else:
             out.append(Finding("attention", "flank_pressure",
                                f"flank peak pressure {p:.0f} MPa at {_t(t)} above σ_Hlim "
@@ -291,15 +349,23 @@ def _edge_contact(lt: xr.Dataset) -> list[Finding]:
     out = []
     for i, t in enumerate(lt["torque"].values):
         loaded = {k: float(s[i]) for k, s in shares.items() if s[i] > 0}
+        total = sum(loaded.values())
+        if total < EDGE_SHARE_MIN:  # the discretisation's load, not a finding
+            loaded, total = {}, 0.0
         if not loaded and not reached[i]:
             continue
         parts = []
         if reached[i]:
             parts.append("the loaded pattern reaches the gear's " + " and ".join(reached[i]))
         if loaded:
-            total = sum(loaded.values())
-            each = ", ".join(f"{_EDGE_WORDS[k]} {_percent(v, 2)} %" for k, v in
-                             sorted(loaded.items(), key=lambda kv: -kv[1]))
+            big = sorted(((k, v) for k, v in loaded.items() if v >= EDGE_SHARE_MIN),
+                         key=lambda kv: -kv[1])
+            small = [_EDGE_WORDS[k] for k, v in loaded.items() if v < EDGE_SHARE_MIN]
+            each = ", ".join(f"{_EDGE_WORDS[k]} {_percent(v, 2)} %" for k, v in big)
+            if small:
+                below = (f"{' and '.join(small)} below {100 * EDGE_SHARE_MIN:g} %"
+                         + " each" * (len(small) > 1))
+                each = "; ".join(filter(None, [each, below]))
             parts.append(f"edge contact carries {_percent(total, 2)} % of the torque ({each})")
         out.append(Finding("attention", "edge_contact", f"at {_t(t)}: " + "; ".join(parts)))
     return out
@@ -386,26 +452,38 @@ def _safeties(fr: xr.Dataset) -> list[Finding]:
             continue
         for t, s in zip(fr["torque"].values, fr[name].values, strict=True):
             if np.isfinite(s) and s < least:
+                judged = (" (the LTCA's: Blok's flash temperature on its loaded contact, "
+                          "ISO/TS 6336-20's bulk and scuffing temperatures)"
+                          if check == "scuffing" else "")
                 out.append(Finding("fail", check,
                                    f"{check} safety {symbol} {s:.3g} at {_t(t)} below "
-                                   f"{least:g}"))
+                                   f"{least:g}{judged}"))
     return out
 
 
-def _rating(rt: xr.Dataset) -> list[Finding]:
+def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Finding]:
+    """The rating's findings from the result contract of the load-capacity methods
+    (:mod:`contact.load_capacity.contract`; ``rt`` its view): per torque and member a
+    safety below its minimum fails, but a torque above the rating's design torque whose
+    long-life safety is below the minimum and which has a finite permissible life is an
+    overload of finite life (attention)."""
+    from contact.load_capacity.contract import MODES
+
     out = []
+    standard = str(rt.attrs.get("rating_standard") or rt.attrs.get("rating_method")
+                   or "rating")
     # the rating's load cycles per member, NaN: long life (absent: not said)
     cycles = (np.asarray(rt["load_cycles"].values, float).ravel() if "load_cycles" in rt
-              else np.zeros(1))
+              else None)
     design = float(rt["design_torque"]) if "design_torque" in rt else np.nan
     speed = float(rt["pinion_speed"]) if "pinion_speed" in rt else np.nan
-    for name, least, what, factor, allowed in (
-            ("S_H", "S_Hmin", "pitting", "Z_NT", "permissible_cycles_pitting"),
-            ("S_F", "S_Fmin", "bending", "Y_NT", "permissible_cycles_bending")):
-        if name not in rt or least not in rt:
-            continue
-        smin = float(rt[least])
+    for what, (name, least) in MODES.items():
         s = rt[name].transpose("torque", "member")
+        symbol = str(s.attrs.get("symbol", ""))
+        least_symbol = str(rt[least].attrs.get("symbol", "")) or "its minimum"
+        factor = str(s.attrs.get("life_factor", "the life factor"))
+        smin = np.broadcast_to(np.asarray(rt[least].values, float), (s.sizes["member"],))
+        allowed = f"permissible_cycles_{what}"
         n_ok = (rt[allowed].transpose("torque", "member").values if allowed in rt
                 else np.full(s.shape, np.nan))
         # a file stores the member names as the coordinate member_label (string
@@ -415,13 +493,14 @@ def _rating(rt: xr.Dataset) -> list[Finding]:
         for i, t in enumerate(s["torque"].values):
             for j, m in enumerate(names):
                 x = float(s.values[i, j])
-                if not (np.isfinite(x) and x < smin):
+                if not (np.isfinite(x) and x < smin[j]):
                     continue
-                reason = (f"ISO 10300 {what} safety {name} {x:.2f} of the {m} at {_t(t)} "
-                          f"below {least} {smin:g}")
-                long_life = not np.isfinite(cycles[j % cycles.size])
+                reason = (f"{standard} {what} safety{' ' + symbol if symbol else ''} "
+                          f"{x:.2f} of the {m} at {_t(t)} below {least_symbol} {smin[j]:g}")
+                long_life = cycles is not None and not np.isfinite(cycles[j % cycles.size])
                 n = float(n_ok[i, j])
-                if long_life and t > design and n > 0:
+                beyond = what == "pitting" and float(t) in flank_static
+                if long_life and t > design and n > 0 and not beyond:
                     # an overload above the design torque: a finite life, stated
                     hours = (f", {n / (60.0 * speed):.3g} h at {speed:g} rpm"
                              if np.isfinite(speed) and speed > 0 else "")
@@ -432,15 +511,34 @@ def _rating(rt: xr.Dataset) -> list[Finding]:
                         f"{hours} ({factor} from the material's S–N curve; ltca duty-cycle "
                         "counts the damage of a load spectrum)"))
                     continue
-                if long_life:
-                    life = (f" (long life, {factor} 1: the [rating] load_cycles of this "
-                            "torque raise it")
-                    life += (f"; it holds for {n:.3g} pinion load cycles)" if n > 0 else
-                             ": even the static strength is exceeded)" if n == 0 else ")")
+                if n == 0:  # the static end of the S–N curve: no life whatever the cycles
+                    life = ": beyond the static strength, no load cycles are permissible"
+                elif long_life and n > 0 and beyond:
+                    # the LTCA's own peak is beyond the static strength here: no cycles
+                    # offered beside the flank-pressure finding that says so
+                    life = (f" (rated at long life, {factor} 1; the LTCA's flank peak at this "
+                            "torque exceeds the static strength: its finding)")
+                elif long_life and n > 0:
+                    life = (f" (rated at long life, {factor} 1; the safety holds for {n:.3g} "
+                            "pinion load cycles: give them as the [rating] load_cycles if "
+                            "that is the duty)")
+                elif long_life:
+                    life = f" (rated at long life, {factor} 1)"
                 else:
                     life = ""
                 out.append(Finding("fail", "rating", reason + life))
     return out
+
+
+def _static_torques(rt: xr.Dataset | None) -> frozenset:
+    """The torques at which the rating's pitting safety is beyond the static strength
+    (permissible cycles 0): the flank-pressure finding there promises no finite life."""
+    if rt is None or "permissible_cycles_pitting" not in rt:
+        return frozenset()
+    n = rt["permissible_cycles_pitting"].transpose("torque", ...).values
+    n = n.reshape(n.shape[0], -1)
+    return frozenset(float(t) for t, row in zip(rt["torque"].values, n, strict=True)
+                     if np.any(row == 0))
 
 
 def _misalignment(tree: xr.DataTree) -> list[str]:
@@ -468,7 +566,10 @@ def _misalignment(tree: xr.DataTree) -> list[str]:
 
 
 def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
-    lt, fr, rt = (_group(tree, g) for g in ("ltca", "friction", "rating"))
+    from contact.load_capacity.contract import safeties
+
+    lt, fr = (_group(tree, g) for g in ("ltca", "friction"))
+    rt, _ = safeties(_group(tree, "rating"))  # the result contract, or None: not checked
     findings: list[Finding] = []
     checks: list[str] = []
     if lt is not None:
@@ -476,8 +577,16 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
                    "certification"]
         findings += [Finding("fail", "implausible", w) for w in plausibility_warnings(lt)]
         findings += [Finding("fail", "implausible", w) for w in _misalignment(tree)]
-        findings += _flank_pressure(lt) + _edge_contact(lt) + _plastic(lt)
+        findings += (_flank_pressure(lt, _static_torques(rt)) + _edge_contact(lt)
+                     + _plastic(lt))
         findings += _certification(lt)
+        # the FE model failed: an attention of its own beside "not checked: root_stress"
+        # (contact.study.verdict_checks makes the check where the root stress is there)
+        said = str(getattr(tree, "attrs", {}).get("root_stress_not_run", ""))
+        if "root_stress_max" not in lt and said.startswith("root stress not computed"):
+            findings.append(Finding("attention", "root_stress",
+                                    f"{said}; the bending side rests on the ISO 10300 "
+                                    "rating alone"))
     if fr is not None:
         checks += ["friction_extrapolated"]
         findings += _friction(fr)
@@ -491,8 +600,12 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
         findings += _safeties(sm)
     if rt is not None:
         checks += ["rating"]
-        findings += _rating(rt)
-    return findings, checks
+        findings += _rating(rt, _flank_static_torques(lt))
+    from contact.study.verdict_checks import analysis_checks  # root stress, scuffing (#72)
+
+    # the root-stress check reads the ISO 10300 factors of the rating as written
+    more, made = analysis_checks(tree, lt, _group(tree, "rating"), sm)
+    return findings + more, checks + made
 
 
 # --------------------------------------------------------------------------- duty cycle
@@ -539,6 +652,7 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                                 "end) in some bin: no life there"))
     if "edge_load_share" in ds and "torque" in ds:
         share = np.nan_to_num(ds["edge_load_share"].values)
+        share = np.where(share >= EDGE_SHARE_MIN, share, 0.0)  # below: no finding
         if np.any(share > 0):
             i = int(np.argmax(share))
             findings.append(Finding(
@@ -555,9 +669,12 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                                     f"bins {', '.join(str(b) for b in bad)} have roll "
                                     "positions without a certified contact solution"))
     if "root_life" not in ds:
+        said = str(ds.attrs.get("bending", ""))
+        why = (said.removeprefix("unavailable: ").split("; no bending")[0]
+               if "the FE model failed" in said else "leave out --no-root-stress")
         findings.append(Finding("attention", "bending",
                                 "bending side not evaluated: the bins have no root stress "
-                                "(leave out --no-root-stress)"))
+                                f"({why})"))
     if int(ds.attrs.get("illustrative", 0)):
         findings.append(Finding("attention", "illustrative",
                                 "the spectrum is the bundled ILLUSTRATIVE one (made-up "
@@ -650,7 +767,7 @@ _KINDS: Mapping[str, Callable[..., tuple[list[Finding], list[str]]]] = {
 CHECKS: Mapping[str, tuple[str, ...]] = {
     "analysis": ("implausible", "flank_pressure", "edge_contact", "plastic_edges",
                  "certification", "friction_extrapolated", "scuffing", "micropitting",
-                 "rating"),
+                 "rating", "root_stress", "scuffing_standard"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
                    "certification", "bending", "illustrative"),
     "V-H check": ("degenerate", "target", "map"),
@@ -697,7 +814,7 @@ _ANALYSIS_GROUPS = {
     "friction": "no /friction group: the analysis ran without an efficiency stage",
     "scuffing_micropitting": "no /scuffing_micropitting group: the analysis ran without an "
                              "efficiency stage or without the load-capacity step",
-    "rating": "no /rating group: the analysis ran without the ISO 10300 rating",
+    "rating": "no /rating group: the analysis ran without a load-capacity rating",
 }
 
 
@@ -712,10 +829,20 @@ def _unchecked(result, kind: str, checks: list[str]) -> tuple[tuple[str, str], .
     group = {"friction_extrapolated": "friction", "scuffing": "scuffing_micropitting",
              "micropitting": "scuffing_micropitting", "rating": "rating"}
     out = []
+    from contact.study.verdict_checks import CHECKS as MORE
+    from contact.study.verdict_checks import unchecked_reason
+
     for c in missing:
+        if c in MORE:  # root stress, the standard's scuffing (issue 72)
+            out.append((c, unchecked_reason(result, c)))
+            continue
         g = group.get(c, "ltca")
         why = (_ANALYSIS_GROUPS[g] if _group(result, g) is None
                else f"/{g} lacks the variables it reads")
+        if g == "rating" and _group(result, g) is not None:
+            from contact.load_capacity.contract import safeties
+
+            why = safeties(_group(result, g))[1] or why
         said = str(getattr(result, "attrs", {}).get("load_capacity_not_run", ""))
         if g == "rating" and _group(result, g) is None and said and not said.startswith(
                 "not requested"):  # why the rating step gave none (else: it was skipped)

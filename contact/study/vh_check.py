@@ -142,6 +142,7 @@ def vh_check(
     the case's own mounting, its ``[operating]`` ΔE, ΔP (the default case's are the seed's
     Table 3.1 values), as every other command takes them; V and H are absolute ΔE and ΔP.
     """
+    from contact.chain import AnalysisChain
     from contact.pipeline import run_analysis
     from contact.study.summary import point_summary
 
@@ -180,8 +181,7 @@ def vh_check(
         delta_E=mis.delta_E, delta_P=mis.delta_P, delta_G=mis.delta_G,
         delta_Sigma=mis.delta_Sigma),
         flank=flank, options=shared.options, deviations=shared.deviations_at(None),
-        geometry=False, theoretical=False, operating=False, root_stress=False,
-        steps={"load_capacity": None})
+        theoretical=False, steps=AnalysisChain.contact_only().with_mesh_interface())
     nom = point_summary(nominal, c)
     v_target = float(nom["pattern_centre_v"][0]) if profile is None else float(profile)
     if not np.isfinite(v_target):

@@ -372,7 +372,8 @@ def rem_angle(blade: Blade, corner_height: float, end_height: float, relief: flo
 
 def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: str,
                    mating_blank: Blank, *, tip_relief: float, root_relief: float,
-                   start: float = 0.5) -> Blade:
+                   start: float = 0.5,
+                   corners: tuple[float | None, float | None] = (None, None)) -> Blade:
     """The blade with tip relief (flankrem) and root relief (toprem) of a flank.
 
     Parameters
@@ -390,6 +391,12 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
     start : float — [1]
         Where the relief starts, as the fraction of the way from M's blade height to each
         end's, in [0, 1).
+    corners : (float or None, float or None) — [mm]
+        Blade heights above the tip of the flankrem and toprem corners, replacing
+        ``start``'s for that rem (None: ``start``'s). A corner kept from a blade's own rem
+        (``blade.flankrem_height``, ``blade.toprem_height``) makes the same relief the
+        same rem again (:func:`blade_relief` is its inverse), so that a variation of the
+        relief starts from the blade as it is.
 
     Returns
     -------
@@ -436,10 +443,10 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
 
     kw = {}
     if tip_relief > 0.0:
-        hc = h.mean + start * (h.tip - h.mean)
+        hc = corners[0] if corners[0] is not None else h.mean + start * (h.tip - h.mean)
         kw.update(flankrem_angle=rem(hc, h.tip, tip_relief), flankrem_height=hc)
     if root_relief > 0.0:
-        hc = h.mean + start * (h.root - h.mean)
+        hc = corners[1] if corners[1] is not None else h.mean + start * (h.root - h.mean)
         if hc <= plain.edge_radius:
             most = (plain.edge_radius - h.mean) / (h.root - h.mean)
             raise ReliefError(f"relief_start: the root-relief corner at {hc:.4g} mm lies "

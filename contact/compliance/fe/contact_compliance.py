@@ -66,7 +66,7 @@ import numpy as np
 import scipy.sparse as sp
 import xarray as xr
 
-from contact.compliance.fe.cache import cache_key, cache_path, read_cache_entry
+from contact.compliance.fe.cache import NOT_WRITTEN_ATTR, cache_key, cache_path, read_cache_entry
 from contact.compliance.fe.influence import influence_coefficients
 from contact.compliance.fe.options import FEOptions, member_flank
 from contact.compliance.fe.superposition import locate_flank_points
@@ -119,6 +119,10 @@ _MEMBERS = ("pinion", "gear")
 _MEMO_SIZE = 4  # coefficient files kept in memory by _read_cached (two designs' members)
 
 
+#: coefficients built where their cache entry could not be written, by (path, key)
+_UNWRITTEN: dict[tuple[str, str], xr.Dataset] = {}
+
+
 @memoised(maxsize=_MEMO_SIZE)
 def _read_cached(path: str, stamp: tuple[int, int, int], key: str) -> xr.Dataset | None:
     """A cache file's coefficients, read and checked once per process and file version
@@ -160,7 +164,9 @@ def shared_coefficients(case, member: str, flank: str = "drive",
     -----
     A study's worker analyses many points of one design: reading the two compressed files
     (24 + 31 MB on the default case, ~1 s) once instead of at every point. The memo
-    (:func:`_read_cached`) is the only state of this module.
+    (:func:`_read_cached`) and the coefficients built where the cache could not be written
+    (:data:`_UNWRITTEN`, the last :data:`_MEMO_SIZE`: used from memory by the later
+    analyses of the process, not built again) are the only state of this module.
     """
     opt = options if options is not None else FEOptions()
     if cache and isinstance(opt, FEOptions):
@@ -168,14 +174,22 @@ def shared_coefficients(case, member: str, flank: str = "drive",
         path = cache_path(key, cache_dir)
         try:
             st = path.stat()
-        except FileNotFoundError:
+        except OSError:  # no entry, or a cache directory that cannot be reached
             pass
         else:
             ds = _read_cached(str(path), (st.st_ino, st.st_size, st.st_mtime_ns), key)
             if ds is not None:
                 return ds
-    return influence_coefficients(case, member, flank, options, cache=cache,
-                                  cache_dir=cache_dir, progress=progress, solver=solver)
+        kept = _UNWRITTEN.get((str(path), key))
+        if kept is not None:
+            return kept
+    ds = influence_coefficients(case, member, flank, options, cache=cache,
+                                cache_dir=cache_dir, progress=progress, solver=solver)
+    if cache and isinstance(opt, FEOptions) and NOT_WRITTEN_ATTR in ds.attrs:
+        _UNWRITTEN[(str(path), key)] = ds
+        while len(_UNWRITTEN) > _MEMO_SIZE:
+            _UNWRITTEN.pop(next(iter(_UNWRITTEN)))
+    return ds
 
 
 @dataclass(frozen=True, eq=False)

@@ -23,6 +23,8 @@ elastic_model       assemble it
 SOLVERS             solver name → whether it is installed here
 Factorisation       a factorised matrix: solve many right-hand sides
 factorise           factorise the stiffness matrix with its constrained dofs removed
+resolve_solver      the solver "auto" (or a name) stands for here
+nested_dissection   METIS's fill-reducing ordering for CHOLMOD, where pymetis is installed
 stress_operator     sparse map from displacements to stress components at points
 """
 
@@ -31,11 +33,14 @@ from __future__ import annotations
 import gc
 import importlib.util
 import logging
+import os
 import signal
+import subprocess
 import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
@@ -43,6 +48,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 import skfem
 
+from contact.compliance.fe.cholmod_dense import cholmod_kernel
 from contact.compliance.fe.options import ELEMENTS
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import one_of, positive, real
@@ -56,6 +62,8 @@ __all__ = [
     "factorise",
     "isolation_available",
     "lame",
+    "nested_dissection",
+    "resolve_solver",
     "stress_operator",
 ]
 
@@ -92,8 +100,9 @@ class ElasticModel:
     basis : DofMap — the scalar quadratic basis's numbering (its dofs are the nodes); the
         basis's values and gradients at every quadrature point are released once K is
         assembled (~100 MB on the default pinion model, measured; issue 62 item 6)
-    stiffness : scipy.sparse.csr_matrix (3N, 3N) or None — K [N/mm]; None in a model whose
-        stiffness was handed to its factorisation and released (the influence
+    stiffness : scipy.sparse.csr_matrix (3N, 3N) or None — K [N/mm], or its lower
+        triangle where assembled with ``lower=True`` (what CHOLMOD reads); None in a model
+        whose stiffness was handed to its factorisation and released (the influence
         coefficients' build: its memory is the factor's, issue 53)
     youngs_modulus, poisson_ratio : float — [MPa], [1]
     assemble_time : float — [s]
@@ -116,8 +125,15 @@ class ElasticModel:
         return (3 * nodes[:, :, None] + np.arange(3)).reshape(len(elements), -1)
 
 
+def _full_nnz(part: sp.csr_matrix, lower: bool) -> int:
+    """Non-zeros of a part of K, or of the whole part where only its lower triangle is
+    stored (its pattern is symmetric: twice the lower's, less the diagonal, whose entries
+    are all positive: a stiffness's diagonal)."""
+    return part.nnz if not lower else 2 * part.nnz - int(np.count_nonzero(part.diagonal()))
+
+
 def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
-                  poisson_ratio: float) -> ElasticModel:
+                  poisson_ratio: float, *, lower: bool = False) -> ElasticModel:
     """Assemble the stiffness matrix of isotropic linear elasticity.
 
     Parameters
@@ -126,6 +142,10 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     element : str — a key of :data:`contact.compliance.fe.options.ELEMENTS`
     youngs_modulus : float — [MPa]
     poisson_ratio : float — [1]
+    lower : bool — assemble K's lower triangle only (row ≥ column), all CHOLMOD reads:
+        half the memory of the assembly and of K (issue 75); its entries are those of the
+        whole K to the bit (the same element terms summed in the same order: the parts'
+        pairwise sums are decided on the whole K's sizes)
 
     Returns
     -------
@@ -150,7 +170,12 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     dx = basis.dx  # (E, Q)
     ne = dx.shape[0]
     n = 3 * basis.N
+    dofmap = DofMap(int(basis.N), basis.element_dofs)
+    # the basis's quadrature data (values, gradients, mapping: ~130 MB on the default
+    # pinion model) released before the assembly's sums, where its peak is (issue 75)
+    del basis
     parts: list[sp.csr_matrix] = []
+    sizes: list[int] = []  # the whole K's non-zeros of each part
     eye = np.eye(3)
     for lo in range(0, ne, _BLOCK):
         sl = slice(lo, min(lo + _BLOCK, ne))
@@ -165,17 +190,28 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
         # elements is then exactly symmetric, as (i, j) and (j, i) add the same terms in
         # the same order
         ke = 0.5 * (ke + ke.transpose(0, 2, 1))
-        dofs = (3 * basis.element_dofs[:, sl].T[:, :, None] + np.arange(3)).reshape(
+        dofs = (3 * dofmap.element_dofs[:, sl].T[:, :, None] + np.arange(3)).reshape(
             -1, 3 * nb).astype(np.int32)
         # one block's triplets summed into CSR at once: memory of one block, not of all
         # (issue 53: the whole mesh's triplets took ~1 GB at the default mesh)
-        parts.append(sp.csr_matrix((ke.ravel(), (np.repeat(dofs, 3 * nb, axis=1).ravel(),
-                                                 np.tile(dofs, (1, 3 * nb)).ravel())),
-                                   shape=(n, n)))
+        rows = np.repeat(dofs, 3 * nb, axis=1).ravel()
+        cols = np.tile(dofs, (1, 3 * nb)).ravel()
+        values = ke.ravel()
         del ke, gg, gw
-        while len(parts) > 1 and parts[-1].nnz >= parts[-2].nnz // 2:
+        part = sp.csr_matrix((values, (rows, cols)), shape=(n, n))
+        if lower:  # the block's own sums first: its duplicates summed as in the whole K
+            part = sp.tril(part, format="csr")
+        parts.append(part)
+        del part
+        sizes.append(_full_nnz(parts[-1], lower))
+        del rows, cols, values
+        # pairwise sums, each entry added O(log) times; decided on the whole K's sizes, so
+        # that the lower triangle's entries are summed in the same order (to the bit)
+        while len(parts) > 1 and sizes[-1] >= sizes[-2] // 2:
             last = parts.pop()
-            parts[-1] = parts[-1] + last      # pairwise sums: each entry added O(log) times
+            sizes.pop()
+            parts[-1] = parts[-1] + last
+            sizes[-1] = _full_nnz(parts[-1], lower)
     k = parts[0]
     for other in parts[1:]:
         k = k + other
@@ -183,8 +219,7 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     elapsed = time.perf_counter() - t0
     log.info("stiffness: %d elements (%s), %d dofs, %d non-zeros, %.1f s", ne, element, n,
              k.nnz, elapsed)
-    dofmap = DofMap(int(basis.N), basis.element_dofs)
-    del basis, grads, dx  # the quadrature data: only the numbering is needed from here on
+    del grads, dx  # the quadrature data: only the numbering is needed from here on
     return ElasticModel(dofmap, k.tocsr(), float(youngs_modulus), float(poisson_ratio),
                         elapsed)
 
@@ -244,11 +279,6 @@ SOLVERS: dict[str, Callable[[], bool]] = {
     "superlu": lambda: True,
 }
 
-#: right-hand sides solved at once by CHOLMOD: bounds the dense blocks' memory (the loads
-#: and displacements, 8 bytes × unknowns × this) while keeping its supernodal solves BLAS-3
-CHOLMOD_BLOCK = 48
-
-
 @dataclass(eq=False)
 class Factorisation:
     """A factorised constrained stiffness matrix K_ff.
@@ -299,52 +329,13 @@ def _superlu(box: list):
 
 
 def _cholmod(box: list):
-    """CHOLMOD's Cholesky factor of a symmetric positive definite matrix given by its
-    lower triangle (CSC, the one item of ``box``, taken out so that its memory is freed
-    once copied: supernodal, CHOLMOD's fill-reducing ordering: AMD, or METIS where the
-    library has it); the solve applies it to blocks of right-hand sides."""
-    from cvxopt import cholmod, matrix, spmatrix
-
-    low = box.pop()
-    columns = np.repeat(np.arange(low.shape[1], dtype=np.int64), np.diff(low.indptr))
-    mat = spmatrix(low.data, low.indices.astype(np.int64), columns, size=low.shape)
-    del columns, low
-    saved = dict(cholmod.options)
-    try:
-        cholmod.options["supernodal"] = 2          # supernodal (BLAS-3) numeric factor
-        cholmod.options["postorder"] = True
-        factor = cholmod.symbolic(mat, uplo="L")
-        cholmod.numeric(mat, factor)
-    except ArithmeticError as exc:                 # not positive definite: singular K
-        raise RuntimeError(f"CHOLMOD: {exc}") from None
-    finally:
-        cholmod.options.clear()
-        cholmod.options.update(saved)
-    del mat
-
-    def solve(b: np.ndarray) -> np.ndarray:
-        # cvxopt's cholmod.solve applies the factor one column at a time (its time is
-        # linear in the columns: ~0.12 s each on the default pinion model, the factor read
-        # from memory twice per column); cholmod.spsolve hands a block of sparse
-        # right-hand sides to CHOLMOD's supernodal solve, which takes several columns per
-        # pass over the factor: 2.3x faster on these unit loads (a few hundred nonzeros
-        # each), the same displacements to 1e-14 relative (issue 60, the cold-run budget)
-        out = np.empty_like(b)
-        for start in range(0, b.shape[1], CHOLMOD_BLOCK):
-            block = b[:, start:start + CHOLMOD_BLOCK]
-            rows, cols = np.nonzero(block)
-            if rows.size == 0:
-                out[:, start:start + CHOLMOD_BLOCK] = 0.0
-                continue
-            rhs = spmatrix(block[rows, cols], rows.astype(np.int64), cols.astype(np.int64),
-                           size=block.shape)
-            x = cholmod.spsolve(factor, rhs, sys=0)
-            out[:, start:start + CHOLMOD_BLOCK] = np.asarray(matrix(x))
-        return out
-
-    # cvxopt does not report the factor's size without copying it out (getfactor: ~0.8 s
-    # and the factor's memory again): -1, "not reported"
-    return solve, -1
+    """CHOLMOD's factor of the lower triangle given (CSC, with its ordering or None: the
+    one item of ``box``, taken out so that its memory is freed once copied):
+    :func:`contact.compliance.fe.cholmod_dense.cholmod_kernel` on its arrays."""
+    low, ordering = box.pop()
+    arrays = [(low.data, low.indices, low.indptr, low.shape[0], ordering)]
+    del low
+    return cholmod_kernel(arrays)
 
 
 def _pardiso(box: list):
@@ -368,10 +359,10 @@ def _pardiso(box: list):
 #: handler run: a SIGTERM or Ctrl-C is honoured within this, not after the native call)
 WORKER_POLL = 0.1
 
-#: right-hand sides sent to a solver worker at once (2.7 MB each on the default pinion
+#: right-hand sides sent to a solver worker at once (0.63 MB each on the default pinion
 #: model; the copies of a piece on its way through the pipe are the worker's transient
-#: memory)
-PIPE_BLOCK = 16
+#: memory): CHOLMOD's dense block solve takes them all in one pass over the factor
+PIPE_BLOCK = 64
 
 _PENDING: list = []  # the matrix handed to a forked worker (read by it, cleared here)
 _SIGNALS = {signal.SIGINT, signal.SIGTERM}
@@ -504,9 +495,83 @@ class _Worker:
         self.conn.close()
 
 
+class _Child:
+    """A :class:`subprocess.Popen` seen as the :class:`multiprocessing.Process` that
+    :class:`_Worker` waits for."""
+
+    def __init__(self, popen: subprocess.Popen) -> None:
+        self.popen = popen
+
+    def is_alive(self) -> bool:
+        return self.popen.poll() is None
+
+    @property
+    def exitcode(self) -> int | None:
+        return self.popen.returncode
+
+    def kill(self) -> None:
+        self.popen.kill()
+
+    def join(self, timeout: float | None = None) -> None:
+        try:
+            self.popen.wait(timeout)
+        except subprocess.TimeoutExpired:
+            pass
+
+
+class _LeanWorker(_Worker):
+    """CHOLMOD's factor in a new interpreter that imports NumPy and cvxopt only
+    (:mod:`contact.compliance.fe.solver_worker`): a forked worker's resident set would
+    start with all of this process's pages (~300 MB at the default model's
+    factorisation), to which the factor adds its own (issue 75). The matrix goes through
+    the connection (its lower triangle, ~70 MB on the default pinion model); waiting,
+    signals and the end are :class:`_Worker`'s."""
+
+    def __init__(self, box: list) -> None:
+        import socket
+        from multiprocessing.connection import Connection
+
+        ours, theirs = socket.socketpair()
+        self.conn = Connection(ours.detach())
+        self.busy = False
+        fd = theirs.detach()
+        script = str(Path(__file__).resolve().with_name("solver_worker.py"))
+        mask = signal.pthread_sigmask(signal.SIG_BLOCK, _SIGNALS)  # as _Worker: known
+        try:                                                       # before any handler
+            self.proc = _Child(subprocess.Popen(
+                [sys.executable, script, str(fd), *sys.argv], pass_fds=(fd,),
+                stdin=subprocess.DEVNULL))
+        finally:
+            os.close(fd)
+            try:
+                signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+            except BaseException:
+                self.kill()
+                raise
+        low, ordering = box.pop()
+        self.busy = True
+        try:
+            self.conn.send(("cholmod", low.data, low.indices, low.indptr, low.shape[0],
+                            ordering))
+        except BaseException:
+            self.kill()
+            raise
+        del low
+
+
+def lean_worker_available() -> bool:
+    """Whether CHOLMOD's factor can live in a new lean interpreter here (POSIX: the
+    connection's descriptor is passed to it), :class:`_LeanWorker`."""
+    return os.name == "posix"
+
+
 def _isolated(kernel: Callable[[list], tuple], box: list):
-    """``kernel``'s factorisation and solves in a :class:`_Worker`: (solve, nnz, close)."""
-    worker = _Worker(kernel, box)
+    """``kernel``'s factorisation and solves in a worker process — CHOLMOD's in a
+    :class:`_LeanWorker`, the others in a forked :class:`_Worker`: (solve, nnz, close)."""
+    if kernel is _cholmod and lean_worker_available():
+        worker = _LeanWorker(box)
+    else:
+        worker = _Worker(kernel, box)
     _, nnz, _ = worker.receive()
     return worker.solve, nnz, worker.close
 
@@ -520,21 +585,102 @@ def isolation_available() -> bool:
             and not multiprocessing.current_process().daemon)
 
 
+def nested_dissection(element_dofs: np.ndarray, n_nodes: int,
+                      free: np.ndarray) -> np.ndarray | None:
+    """A fill-reducing ordering of the free dofs for CHOLMOD: METIS's nested dissection of
+    the mesh's node graph (pymetis, where installed: the ``fe`` extra), each node's three
+    dofs together.
+
+    Parameters
+    ----------
+    element_dofs : ndarray (nb, E) of int — each element's scalar dofs (nodes)
+    n_nodes : int — scalar dofs N
+    free : ndarray (F,) of int — the unconstrained vector dofs (3 n + c), increasing
+
+    Returns
+    -------
+    ndarray (F,) of int64 or None
+        Entry k: the position in ``free`` of the dof eliminated k-th (``factorise``'s
+        ``ordering``); None where pymetis is not installed (CHOLMOD then orders by AMD,
+        cvxopt's CHOLMOD having no METIS of its own).
+
+    Notes
+    -----
+    G. Karypis, V. Kumar 1998, "A fast and high quality multilevel scheme for partitioning
+    irregular graphs", *SIAM J. Sci. Comput.* 20(1) 359–392 (METIS); A. George 1973,
+    "Nested dissection of a regular finite element mesh", *SIAM J. Numer. Anal.* 10(2)
+    345–363. On the default pinion model (issue 75): the factorisation 4.2 → 2.4 s, the
+    solves −15 %, the factor ~100 MB smaller, for 0.6 s of ordering (docs/performance.md).
+    """
+    try:
+        import pymetis
+    except ImportError:
+        return None
+    nb = element_dofs.shape[0]
+    nodes = element_dofs.T
+    graph = sp.csr_matrix((np.ones(nodes.size * nb, dtype=np.int8),
+                           (np.repeat(nodes, nb, axis=1).ravel(),
+                            np.tile(nodes, (1, nb)).ravel())), shape=(n_nodes, n_nodes))
+    graph.setdiag(0)
+    graph.eliminate_zeros()
+    graph.sort_indices()
+    if hasattr(pymetis, "CSRAdjacency"):  # pymetis 2025.2 on
+        order, _ = pymetis.nested_dissection(pymetis.CSRAdjacency(graph.indptr,
+                                                                  graph.indices))
+    else:
+        order, _ = pymetis.nested_dissection(xadj=graph.indptr, adjncy=graph.indices)
+    del graph
+    dofs = (3 * np.asarray(order, dtype=np.int64)[:, None] + np.arange(3)).ravel()
+    position = np.full(3 * n_nodes, -1, dtype=np.int64)
+    position[free] = np.arange(free.size)
+    ordering = position[dofs]
+    ordering = ordering[ordering >= 0]
+    if ordering.size != free.size:  # pragma: no cover - METIS gives a permutation
+        raise LTCAError("nested dissection: not a permutation of the free dofs")
+    return ordering
+
+
+def resolve_solver(solver: str = "auto") -> str:
+    """The solver :func:`factorise` uses for ``solver``: a key of :data:`SOLVERS` (for
+    ``"auto"`` the first installed of CHOLMOD, PARDISO, SuperLU).
+
+    Raises
+    ------
+    InputError — an unknown solver name.
+    ModelUnavailableError — the solver asked for is not installed (with the hint).
+    """
+    one_of("solver", solver, ("auto", *SOLVERS))
+    if solver == "auto":
+        return next(name for name, installed in SOLVERS.items() if installed())
+    if not SOLVERS[solver]():
+        raise ModelUnavailableError(f"solver: {solver!r} is not installed here (pip install "
+                                    "'hypoid-ltca[fe]', from a clone: pip install '.[fe]'); "
+                                    "available: "
+                                    f"{[k for k, ok in SOLVERS.items() if ok()]}")
+    return solver
+
+
 def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "auto", *,
-              isolated: bool = False) -> Factorisation:
+              isolated: bool = False, ordering: np.ndarray | None = None) -> Factorisation:
     """Factorise K with the ``fixed_dofs`` removed (homogeneous Dirichlet conditions).
 
     Parameters
     ----------
-    stiffness : sparse (3N, 3N) — K [N/mm]
+    stiffness : sparse (3N, 3N) — K [N/mm]; for CHOLMOD its lower triangle is enough
+        (:func:`elastic_model` with ``lower=True``), the others need the whole K
     fixed_dofs : ndarray of int — constrained dofs
     solver : str — ``"auto"``, or a key of :data:`SOLVERS`
-    isolated : bool — factorise and solve in a forked worker process (where ``fork``
-        exists, :func:`isolation_available`; else in this process): the native
-        factorisation and solves hold the interpreter for seconds to minutes, in which a
-        signal handler cannot run; waiting for a worker, a SIGTERM or Ctrl-C is honoured
-        within :data:`WORKER_POLL` and the worker killed (issue 64). The right-hand sides
-        and solutions go through a pipe (~20 MB per block of 32, tens of ms). Call
+    isolated : bool — factorise and solve in a worker process (where ``fork`` exists,
+        :func:`isolation_available`; else in this process): the native factorisation and
+        solves hold the interpreter for seconds to minutes, in which a signal handler
+        cannot run; waiting for a worker, a SIGTERM or Ctrl-C is honoured within
+        :data:`WORKER_POLL` and the worker killed (issue 64). CHOLMOD's worker is a new
+        lean interpreter (:mod:`contact.compliance.fe.solver_worker`, issue 75), the
+        other solvers' a fork of this process. The matrix, the right-hand sides and the
+        solutions go through a pipe (~40 MB per block of 64, tens of ms).
+    ordering : ndarray (F,) of int, optional — CHOLMOD's fill-reducing permutation of the
+        free dofs (:func:`nested_dissection`; entry k: the free dof eliminated k-th);
+        None: CHOLMOD's own (AMD). Ignored by the other solvers. Call
         :meth:`Factorisation.close` when done (the worker also ends with this process).
 
     Returns
@@ -548,14 +694,7 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     LTCAError — the factorisation fails (a singular matrix: a part of the mesh not
         connected to the support).
     """
-    one_of("solver", solver, ("auto", *SOLVERS))
-    if solver == "auto":
-        solver = next(name for name, installed in SOLVERS.items() if installed())
-    elif not SOLVERS[solver]():
-        raise ModelUnavailableError(f"solver: {solver!r} is not installed here (pip install "
-                                    "'hypoid-ltca[fe]', from a clone: pip install '.[fe]'); "
-                                    "available: "
-                                    f"{[k for k, ok in SOLVERS.items() if ok()]}")
+    solver = resolve_solver(solver)
     fixed = np.unique(np.asarray(fixed_dofs, dtype=int))
     if fixed.size == 0:
         raise InputError("fixed_dofs: at least one dof must be constrained (a free body "
@@ -576,7 +715,8 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     log.info("factorising %d unknowns with %s%s", free.size, solver,
              " in a worker process" if isolated else "")
     try:
-        box = [a]   # the solver takes the matrix out: freed once it holds its own copy
+        # the solver takes the matrix out: freed once it holds its own copy
+        box = [(a, ordering)] if solver == "cholmod" else [a]
         del a
         if isolated:
             solve, nnz, close = _isolated(kernel, box)

@@ -57,6 +57,7 @@ from contact.compliance.fe.cache import (
     BlockCheckpoint,
     cache_key,
     cache_path,
+    not_written,
     read_cache_entry,
     write_cache_entry,
 )
@@ -65,6 +66,8 @@ from contact.compliance.fe.elasticity import (
     Factorisation,
     elastic_model,
     factorise,
+    nested_dissection,
+    resolve_solver,
     stress_operator,
 )
 from contact.compliance.fe.mapped_mesh import FacetPoints, facet_points
@@ -91,7 +94,7 @@ log = logging.getLogger(__name__)
 #: stress components in Voigt order (member frame)
 COMPONENTS = ("xx", "yy", "zz", "yz", "xz", "xy")
 _SIDES = ("left", "right")
-_CHUNK = 32  # right-hand sides per solve
+_CHUNK = 64  # right-hand sides per solve (one dense block of CHOLMOD's: elasticity)
 _LOAD_ORDER = 6  # facet quadrature order of the hat loads (4 × 4 Gauss points per facet) ...
 _POINTS_PER_CELL = 2  # ... or more: Gauss points per load-grid cell across the largest facet
 
@@ -393,8 +396,10 @@ def build_influence_model(case, member: str, flank: str = "drive",
     grid_u = np.linspace(0.0, 1.0, opt.load_nu)
     grid_v = np.linspace(*load_v_limits(solid.sections, name, opt), opt.load_nv)
     times["solid"] = time.perf_counter() - t0
+    solver = resolve_solver(solver)
+    # CHOLMOD reads K's lower triangle: only that is assembled (half the memory, issue 75)
     elastic = elastic_model(solid.mesh.mesh, opt.element, opt.youngs_modulus,
-                            opt.poisson_ratio)
+                            opt.poisson_ratio, lower=solver == "cholmod")
     times["assembly"] = elastic.assemble_time
     n_nodes = elastic.basis.N
     fixed_nodes = solid.constrained_nodes()
@@ -403,8 +408,12 @@ def build_influence_model(case, member: str, flank: str = "drive",
     # is free before the factor takes its own (the build's peak, issue 53)
     box = [elastic.stiffness]
     elastic = dataclasses.replace(elastic, stiffness=None)
-    factor = factorise(box.pop(), (3 * fixed_nodes[:, None] + np.arange(3)).ravel(), solver,
-                       isolated=isolated)
+    fixed = (3 * fixed_nodes[:, None] + np.arange(3)).ravel()
+    # METIS's nested dissection where pymetis is installed (issue 75), else CHOLMOD's AMD
+    ordering = None if solver != "cholmod" else nested_dissection(
+        elastic.basis.element_dofs, n_nodes, np.setdiff1d(np.arange(3 * n_nodes), fixed))
+    factor = factorise(box.pop(), fixed, solver, isolated=isolated, ordering=ordering)
+    del ordering
     times["factorisation"] = factor.factor_time
     t1 = time.perf_counter()
     side = solid.sections.side_name(name)
@@ -709,7 +718,10 @@ def influence_coefficients(case, member: str, flank: str = "drive",
         As :func:`build_influence_model`; LTCAError also if the built coefficients hold
         non-finite values (not cached). A cache entry that is unreadable, foreign,
         corrupt or not finite is never used: it is set aside, one warning logged, and the
-        coefficients rebuilt (:func:`contact.compliance.fe.cache.read_cache_entry`).
+        coefficients rebuilt (:func:`contact.compliance.fe.cache.read_cache_entry`). A
+        cache that cannot be written (a read-only or full file system) is no error: the
+        built coefficients are returned with the attribute ``cache_not_written`` (why;
+        :func:`contact.compliance.fe.cache.not_written`) and one warning logged.
 
     Notes
     -----
@@ -727,7 +739,8 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     (:func:`contact.compliance.fe.superposition.fillet_stress`). Load and response are the same hat
     functional, so G is symmetric (Maxwell–Betti; module docstring, docs/fe.md).
 
-    The factorisation and the solves run in a worker process (where ``fork`` exists), so
+    The factorisation and the solves run in a worker process (where ``fork`` exists; for
+    CHOLMOD a new lean interpreter, :mod:`contact.compliance.fe.solver_worker`), so
     that SIGTERM or Ctrl-C ends a build within a tenth of a second rather than after the
     native factorisation (issue 64); each solved block of unit loads is kept beside the
     entry (:class:`contact.compliance.fe.cache.BlockCheckpoint`), so that a build
@@ -768,9 +781,13 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     finally:
         model.factor.close()
     if cache:
-        ds = write_cache_entry(ds, path, key)
-        checkpoint.clear()
-        log.info("%s %s influence coefficients cached in %s", case.name, member, path)
+        try:
+            ds = write_cache_entry(ds, path, key)
+        except OSError as exc:  # read-only or full: used from memory, said (issue 72)
+            ds = not_written(ds, path, exc)
+        else:
+            checkpoint.clear()
+            log.info("%s %s influence coefficients cached in %s", case.name, member, path)
     progress_line(progress, f"FE {member} influence coefficients built in "
                             f"{time.perf_counter() - t0:.0f} s")
     return ds

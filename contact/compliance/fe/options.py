@@ -102,8 +102,11 @@ class FEOptions:
         Depth of the rim under the slots: its inner surface is the cone parallel to the
         blank's root cone this far below the deepest point of the generated slot
         bottoms. Default None: 1.2 × the outer whole depth, the rim thickness above
-        which ISO 6336-3 (rim factor Y_B = 1 for s_R/h_t ≥ 1.2) treats a gear as solid.
-        > 0.
+        which ISO 6336-3 (rim factor Y_B = 1 for s_R/h_t ≥ 1.2) treats a gear as solid;
+        for a member whose body is a solid shaft (a small hypoid pinion, where that rim
+        would come near or through the axis) the depth that stops at a quarter of the
+        root radius, the core inside held rigid
+        (:func:`contact.compliance.fe.solid.default_rim_depth`). > 0.
     constraint : str
         What is fixed, a key of :data:`CONSTRAINTS` (default ``"bore"``).
     element : str

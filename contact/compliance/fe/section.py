@@ -464,10 +464,63 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
     return ra, lb, np.array([pt, pt]), kind + ", rounded"
 
 
+#: [mm] a fold of a side's samples less deep than this is left as it is: sampling noise
+#: (the bundled face-hobbed 12×41 pinion has one of 0.3 µm near its slot bottom),
+#: hundreds of times below the root element size, which cutting it would not change but
+#: for the cached models of those designs
+_FOLD_TOLERANCE = 1e-3
+
+
+def _without_folds(v, phi, s, rho, length_v: float):
+    """The side (v, φ, s, ρ) with the folds of its envelope cut off: above its lowest
+    point a side rises to the tip; where the generated samples turn down and up again
+    (a swallowtail of the envelope: the blade's edge radius generating the fillet above
+    the height where the flank below it starts, an undercut) the material's boundary is
+    the later branch, the flank, which the earlier one meets at the fold's lowest level;
+    the part between lies in the slot, cut away by the blade's other positions. The
+    earlier branch is cut at that level (the crossing point takes its blade arc length
+    s by interpolation) and joined to the later branch from its lowest point. Samples
+    that rise throughout, or fold by less than :data:`_FOLD_TOLERANCE` (``length_v`` [mm]
+    the section's depth, v's scale), are returned as they are.
+
+    Issue 71: the 14×35 spiral bevel pinion at Σ = 70° has such a fold on its concave
+    side at the toe (up from 0.05 to 0.25 of the depth, down to 0.17, then up the flank),
+    and the mapped mesh's rows, placed by arc length along the side, inverted its
+    elements there."""
+    k = int(np.argmin(v)) + 1
+    while k < v.size:
+        if v[k] >= v[k - 1]:
+            k += 1
+            continue
+        p = k - 1  # a peak: the side turns down
+        above = np.flatnonzero(v[p + 1:] > v[p])
+        if not above.size:
+            break  # turns down at the tip: nothing rises past it
+        q = p + 1 + int(above[0])
+        m = p + int(np.argmin(v[p:q]))
+        if (v[p] - v[m]) * length_v < _FOLD_TOLERANCE:
+            k = q
+            continue
+        e = p - 1
+        while e > 0 and v[e] > v[m]:
+            e -= 1
+        if v[e] > v[m]:
+            break  # pragma: no cover - the side starts at its lowest point
+        t = (v[m] - v[e]) / (v[e + 1] - v[e])
+        point = [x[e] + t * (x[e + 1] - x[e]) for x in (v, phi, s, rho)]
+        v, phi, s, rho = (np.r_[x[:e + 1], c, x[m:]] for x, c in zip((v, phi, s, rho), point,
+                                                                     strict=True))
+        k = e + 2
+    return v, phi, s, rho
+
+
 def _side(flank: str, v, phi, s, corners, u: float, length_v: float, s_junction: float,
           where: str) -> SideCurve:
-    """A :class:`SideCurve` from samples ordered bottom → top."""
+    """A :class:`SideCurve` from samples ordered bottom → top (a fold of the envelope cut
+    off, :func:`_without_folds`)."""
     rho = _bilinear(corners, u, v)[0][..., 1]
+    v, phi, s, rho = _without_folds(np.asarray(v, float), np.asarray(phi, float),
+                                    np.asarray(s, float), rho, length_v)
     dv, dphi = np.diff(v), np.diff(phi)
     rho_m = 0.5 * (rho[1:] + rho[:-1])
     ds = np.hypot(length_v * dv, rho_m * dphi)

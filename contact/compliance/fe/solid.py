@@ -53,7 +53,8 @@ from contact.compliance.fe.options import FEOptions
 from contact.compliance.fe.section import ToothSection, ToothSections, tooth_sections
 from geometry.core.errors import InputError
 
-__all__ = ["SolidLayout", "ToothSolid", "build_tooth_solid", "mesh_layout"]
+__all__ = ["SOLID_CORE_FRACTION", "SolidLayout", "ToothSolid", "build_tooth_solid",
+           "default_rim_depth", "mesh_layout"]
 
 log = logging.getLogger(__name__)
 
@@ -291,7 +292,8 @@ class ToothSolid:
         (2 face + 1 planes, W = 0, ½, 1, …)
     rim_v : ndarray (2 face + 1,) — [1] profile fraction of the rim's inner surface
         in each node plane
-    rim_depth : float — [mm] the rim depth used (under the deepest slot bottom)
+    rim_depth : float — [mm] the rim depth used (under the deepest slot bottom; where the
+        default follows a solid shaft, :func:`default_rim_depth`, its smaller end's)
     fillet_rows : int — [1] element rows of the tooth sides that reach past the
         fillets' junction with the flanks in every section, plus one
     junction_rows : ndarray (2 face + 1, 2) — [1] in each node plane, on the left and
@@ -433,17 +435,88 @@ def _plane_points(sec: ToothSection, rim_v: float, a, b, lay: SolidLayout, grad:
     return v, phi + offset * pitch
 
 
-def _rim_line(sections: ToothSections, depth: float, u: np.ndarray) -> np.ndarray:
+def _rim_line(sections: ToothSections, depth, u: np.ndarray) -> np.ndarray:
     """Profile fraction v of the rim's inner cone in the sections at ``u``: the line
-    parallel to the root cone ``depth`` [mm] below its deepest slot bottom."""
+    parallel to the root cone ``depth`` [mm] below its deepest slot bottom; ``depth`` a
+    pair (toe, heel) [mm]: the line through the end sections' points that far below it
+    (a cone that narrows towards the toe faster than the root cone: a solid shaft's,
+    :func:`default_rim_depth`)."""
     c = sections.corners
-    root = c[1, 0] - c[0, 0]
-    n = np.array([root[1], -root[0]]) / np.hypot(*root)
-    n *= math.copysign(1.0, float(n @ (c[0, 1] - c[0, 0])))  # towards the teeth
     a = (1 - u)[:, None] * c[0, 0] + u[:, None] * c[1, 0]
     d = (1 - u)[:, None] * c[0, 1] + u[:, None] * c[1, 1] - a
-    level = -(sections.slot_depth + depth)
-    return (level - (a - c[0, 0]) @ n) / (d @ n)
+    if np.ndim(depth) == 0:
+        root = c[1, 0] - c[0, 0]
+        n = np.array([root[1], -root[0]]) / np.hypot(*root)
+        n *= math.copysign(1.0, float(n @ (c[0, 1] - c[0, 0])))  # towards the teeth
+        level = -(sections.slot_depth + depth)
+        return (level - (a - c[0, 0]) @ n) / (d @ n)
+    v0 = _rim_line(sections, float(depth[0]), np.array([0.0]))[0]
+    v1 = _rim_line(sections, float(depth[1]), np.array([1.0]))[0]
+    p0 = (1 - v0) * c[0, 0] + v0 * c[0, 1]
+    e = (1 - v1) * c[1, 0] + v1 * c[1, 1] - p0
+
+    def cross(x, y):
+        return x[..., 0] * y[..., 1] - x[..., 1] * y[..., 0]
+
+    return cross(p0 - a, e) / cross(d, e)
+
+
+#: [1] the default rim of a member too small for a 1.2 h_e rim (a small pinion, a solid
+#: shaft) stops at this fraction of the radius its inner cone has at the slot bottoms:
+#: the core inside it is held rigid instead of modelled to the axis (where the mapped
+#: mesh's elements would collapse). The polar and axial second moments of a solid
+#: section grow as r⁴, so the core inside a quarter of the radius carries 0.25⁴ = 0.4 %
+#: of the shaft section's torsional and bending stiffness.
+SOLID_CORE_FRACTION = 0.25
+
+
+def _rim_end_radii(sections: ToothSections, depth) -> np.ndarray:
+    """Radii [mm] (toe, heel) of the rim's inner cone ``depth`` [mm] (one, or a pair toe,
+    heel) below the deepest slot bottom (:func:`_rim_line`) at the model's end sections."""
+    c = sections.corners
+    v = _rim_line(sections, depth, np.array([0.0, 1.0]))
+    return np.array([((1 - v[0]) * c[0, 0] + v[0] * c[0, 1])[1],
+                     ((1 - v[1]) * c[1, 0] + v[1] * c[1, 1])[1]])
+
+
+def default_rim_depth(sections: ToothSections, blank) -> float | tuple[float, float]:
+    """The FE model's default rim depth [mm] of a member (``FEOptions.rim_depth`` None).
+
+    Parameters
+    ----------
+    sections : ToothSections — the member's tooth sections (its end sections, u = 0, 1,
+        among them)
+    blank : geometry.case.Blank — the member's blank (outer addendum and dedendum [mm])
+
+    Returns
+    -------
+    float or (float, float) — [mm] 1.2 × the outer whole depth h_e, the rim thickness
+    above which ISO 6336-3 treats a gear as solid (rim factor Y_B = 1 for s_R/h_t ≥ 1.2),
+    a rim parallel to the root cone. Where that rim's inner cone would come within
+    :data:`SOLID_CORE_FRACTION` of the axis at the toe or the heel — a small hypoid
+    pinion (5–7 teeth), which is a solid shaft, not a rim — the pair (toe, heel) of the
+    depths at which the inner cone reaches that fraction of its radius at the slot
+    bottoms, each at most 1.2 h_e: the body is modelled down to a quarter of its root
+    radius at both ends and the core inside held rigid (source of the fraction: the r⁴
+    law of a solid section's second moments, :data:`SOLID_CORE_FRACTION`; docs/fe.md,
+    "Rim and support"). A member with a rim of 1.2 h_e everywhere gets the float, so its
+    model is unchanged.
+
+    The inner cone's radius at each end is affine in that end's depth, so the limiting
+    depths are exact: r(d) = r(0) + (r(d₁) − r(0)) d/d₁.
+    """
+    full = 1.2 * (blank.outer_addendum + blank.outer_dedendum)
+    at_root = _rim_end_radii(sections, 0.0)
+    at_full = _rim_end_radii(sections, full)
+    if np.all(at_full >= SOLID_CORE_FRACTION * at_root):
+        return float(full)
+    drop = np.maximum((at_root - at_full) / full, 1e-12)  # [mm/mm] radius lost per mm
+    toe, heel = np.minimum(full, (1.0 - SOLID_CORE_FRACTION) * at_root / drop)
+    log.info("%s: default rim depth %.3g mm at the toe, %.3g mm at the heel (1.2 h_e = "
+             "%.3g mm would reach radius %.3g / %.3g mm): a solid shaft held inside %.0f %% "
+             "of its root radius", sections.member, toe, heel, full, *at_full,
+             100 * SOLID_CORE_FRACTION)
+    return float(toe), float(heel)
 
 
 def _check_root_size(sections: ToothSections, opt: FEOptions) -> None:
@@ -491,15 +564,15 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
     u = np.linspace(0.0, 1.0, 2 * opt.face_divisions + 1)
     sections = tooth_sections(case, member, u)
     blank = case.member(member).blank
-    depth = opt.rim_depth if opt.rim_depth is not None else 1.2 * (
-        blank.outer_addendum + blank.outer_dedendum)
+    depth = opt.rim_depth if opt.rim_depth is not None else default_rim_depth(sections, blank)
     rim_v = _rim_line(sections, depth, u)
     c = sections.corners
     for ui, vi in ((0.0, rim_v[0]), (1.0, rim_v[-1])):
         rho = ((1 - ui) * (1 - vi) * c[0, 0] + ui * (1 - vi) * c[1, 0]
                + (1 - ui) * vi * c[0, 1] + ui * vi * c[1, 1])[1]
         if rho <= 0.05 * blank.outer_cone_distance * math.sin(blank.root_angle):
-            raise InputError(f"rim_depth: {depth:.4g} mm puts the rim's inner cone at radius "
+            raise InputError(f"rim_depth: {np.min(depth):.4g} mm puts the rim's inner cone at "
+                             "radius "
                              f"{rho:.3g} mm at the {'toe' if ui == 0 else 'heel'}, at or "
                              "through the member axis; give a smaller rim depth")
 
@@ -539,5 +612,5 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
     log.info("%s %s solid: %d elements, %d nodes, worst Jacobian ratio %.3f, %.1f s",
              case.name, member, mesh.mesh.nelements, mesh.mesh.doflocs.shape[1],
              mesh.min_jacobian, elapsed)
-    return ToothSolid(case.name, member, opt, lay, sections, rim_v, float(depth),
+    return ToothSolid(case.name, member, opt, lay, sections, rim_v, float(np.min(depth)),
                       min(fillet_rows, lay.flank), junction_rows, mesh, elapsed)

@@ -32,6 +32,7 @@ from contact.load_capacity.agma2003.inputs import (
     geometry_from_case,
     offset_refusal,
 )
+from contact.load_capacity.contract import contract_variables
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 from geometry.core.materials import material
@@ -121,7 +122,19 @@ def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
     out = agma2003_rating(case, torque, speed, inputs=table)
     if flank is not None:
         out.attrs["flank"] = flank
-    return out
+    # the result contract (contact.load_capacity.contract): the standard's stress safety
+    # s_wc S_H / s_c = s_ac C_L C_H / (K_T C_R s_c) against S_H (Eq. 1M, 2M), and
+    # s_wt S_F / s_t against S_F (Eq. 5M, 6M): below its S_H exactly where s_c > s_wc
+    out["stress_safety_pitting"] = (out["safety_pitting"] * out["S_H"]).assign_attrs(
+        units="1", long_name="calculated safety for pitting s_wc S_H/s_c",
+        source="ANSI/AGMA 2003-D19 Eq. 1M, 2M")
+    out["stress_safety_bending"] = (out["safety_bending"] * out["S_F"]).assign_attrs(
+        units="1", long_name="calculated safety for bending s_wt S_F/s_t",
+        source="ANSI/AGMA 2003-D19 Eq. 5M, 6M")
+    return contract_variables(
+        out, pitting=("stress_safety_pitting", "S_H", "s_wc S_H/s_c", "S_H"),
+        bending=("stress_safety_bending", "S_F", "s_wt S_F/s_t", "S_F"),
+        stresses=("s_c", "s_t"))
 
 
 def _inputs(table: AGMAInputs | Mapping[str, Any]) -> AGMAInputs:
@@ -372,10 +385,13 @@ def tables(ds: xr.Dataset) -> str:
                "K_o", "K_v", "K_mb", "K_m", "C_s", "K_s", "C_xc", "K_x", "I")),
            "         " + "  ".join(f"{n} {f(n, 4)}" for n in (
                "K_T", "C_R", "K_R", "S_H", "S_F")) + f"  C_p {f('C_p', 1)} MPa^0.5",
+           f"         (K_T at the blank temperature {f('temperature', 1)} degC; C_R, K_R at "
+           f"the reliability {float(ds['reliability']):g})",
            ""]
     rows = [(label, *(f"{float(v):.{d}f}" for v in ds[name].values)) for name, label, d in (
-        ("J", "J", 3), ("N_L", "N_L", 0), ("C_L", "C_L", 3), ("K_L", "K_L", 3),
-        ("C_H", "C_H", 3), ("s_ac", "s_ac [MPa]", 1), ("s_at", "s_at [MPa]", 1),
+        ("J", "J", 3), ("youngs_modulus", "E [MPa]", 0), ("poisson_ratio", "nu", 3),
+        ("N_L", "N_L", 0), ("C_L", "C_L", 3), ("K_L", "K_L", 3), ("C_H", "C_H", 3),
+        ("s_ac", "s_ac [MPa]", 1), ("s_at", "s_at [MPa]", 1),
         ("s_wc", "s_wc [MPa]", 1), ("s_wt", "s_wt [MPa]", 1), ("P_ac", "P_ac [kW]", 2),
         ("P_at", "P_at [kW]", 2))]
     out.append(tabulate(rows, headers=("", "pinion", "gear"), tablefmt="simple",
@@ -390,6 +406,8 @@ def tables(ds: xr.Dataset) -> str:
                           for name, label, d in (
                               ("s_t", "s_t [MPa]", 1), ("safety_pitting", "s_wc/s_c", 3),
                               ("safety_bending", "s_wt/s_t", 3),
+                              ("pitting_safety", "s_wc S_H/s_c", 3),
+                              ("bending_safety", "s_wt S_F/s_t", 3),
                               ("power_ratio_pitting", "P_ac/P", 3),
                               ("power_ratio_bending", "P_at/P", 3))],
                          headers=("", "pinion", "gear"), tablefmt="simple",

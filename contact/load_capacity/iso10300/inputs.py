@@ -269,6 +269,9 @@ RATING_FIELDS: dict[str, tuple[str, str]] = {
     "side": ("", "rated flank 'drive' or 'coast' (ISO 23509); default: the case's "
                  "drive flank"),
     "source": ("", "where the values come from (text), optional"),
+    "method": ("", "the load-capacity rating method ltca run and ltca rate use for this "
+                   "case, a name of contact.load_capacity.available_methods(); default "
+                   "iso10300"),
 }
 
 
@@ -350,6 +353,9 @@ class RatingInputs:
     source : str, optional
         Where the values come from (free text, kept in the ``/rating`` dataset's
         ``rating_inputs`` attribute).
+    method : str, optional
+        The load-capacity rating method the case is rated by in ``ltca run`` and ``ltca
+        rate`` (:func:`contact.load_capacity.methods.case_method`); None: ISO 10300.
 
     Raises
     ------
@@ -383,11 +389,15 @@ class RatingInputs:
     poisson_ratio: tuple[float, float] | None = None
     side: str | None = None
     source: str | None = None
+    method: str | None = None
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
         if self.source is not None and not isinstance(self.source, str):
             raise InputError(f"source: must be text, got {type(self.source).__name__}")
+        if self.method is not None and not (isinstance(self.method, str) and self.method):
+            raise InputError(f"method: must be the name of a load-capacity rating method, "
+                             f"got {self.method!r}")
         set_(self, "application_factor", real("application_factor", self.application_factor,
                                               unit="1", low=1.0, high=5.0))
         one_of("mounting", self.mounting, MOUNTINGS)

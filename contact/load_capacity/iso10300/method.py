@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from contact.load_capacity.contract import contract_variables
 from contact.load_capacity.iso10300.inputs import RatingInputs
 from contact.load_capacity.iso10300.rating import iso10300_rating
 from geometry.core.errors import InputError
@@ -101,7 +102,10 @@ def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
     Returns
     -------
     xarray.Dataset
-        :func:`contact.load_capacity.iso10300.rating.iso10300_rating`'s dataset.
+        :func:`contact.load_capacity.iso10300.rating.iso10300_rating`'s dataset with the
+        result contract (:mod:`contact.load_capacity.contract`: ``pitting_safety`` = S_H,
+        ``bending_safety`` = S_F, their minima S_Hmin, S_Fmin, ``contact_stress`` σ_H,
+        ``root_stress`` σ_F).
 
     Raises
     ------
@@ -122,7 +126,10 @@ def rate(case, torque: np.ndarray, speed: float, *, flank: str | None = None,
         if inputs.side is None:
             table = (dataclasses.replace(table, side=side) if isinstance(table, RatingInputs)
                      else {**table, "side": side})
-    return iso10300_rating(case, torque, speed, rating=table)
+    return contract_variables(iso10300_rating(case, torque, speed, rating=table),
+                              pitting=("S_H", "S_Hmin", "S_H", "S_Hmin"),
+                              bending=("S_F", "S_Fmin", "S_F", "S_Fmin"),
+                              stresses=("sigma_H", "sigma_F"), life=("Z_NT", "Y_NT"))
 
 
 #: (variable, label, digits) of the rows of each table; a variable without the member
@@ -131,22 +138,30 @@ _GEOMETRY = (("d_v", "d_v [mm]", 3), ("z_v", "z_v", 3), ("z_vn", "z_vn", 3),
              ("d_van", "d_van [mm]", 3), ("g_va", "g_va [mm]", 3), ("eps_va", "eps_va", 3),
              ("eps_vb", "eps_vb", 3), ("eps_vg", "eps_vg", 3), ("b_veff", "b_v,eff [mm]", 3),
              ("l_bm", "l_bm [mm]", 3), ("rho_rel", "rho_rel [mm]", 3))
+#: every factor of the stresses and permissible stresses, in the order of their equations
+#: (sigma_H0 = ... Z_M-B Z_LS Z_E; sigma_HP = sigma_Hlim Z_NT Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp;
+#: sigma_F0 = ... Y_Fa Y_Sa Y_eps Y_BS Y_LS; sigma_FP = sigma_Flim Y_ST Y_NT Y_delta,relT
+#: Y_R,relT Y_X), so that a reader sees why sigma_HP is what it is
 _PITTING = (("Z_MB", "Z_M-B", 3), ("Z_LS", "Z_LS", 3), ("Z_E", "Z_E [MPa^0.5]", 3),
-            ("Z_Hyp", "Z_Hyp", 3), ("Z_L", "Z_L", 3), ("Z_speed", "Z_v", 3), ("Z_R", "Z_R", 3),
-            ("Z_NT", "Z_NT", 3), ("sigma_H0", "sigma_H0 [MPa]", 1),
-            ("sigma_H", "sigma_H [MPa]", 1), ("sigma_HP", "sigma_HP [MPa]", 1),
-            ("S_H", "S_H", 3))
+            ("sigma_H0", "sigma_H0 [MPa]", 1), ("sigma_H", "sigma_H [MPa]", 1),
+            ("sigma_Hlim", "sigma_Hlim [MPa]", 1), ("Z_NT", "Z_NT", 3), ("Z_X", "Z_X", 3),
+            ("Z_L", "Z_L", 3), ("Z_speed", "Z_v", 3), ("Z_R", "Z_R", 3), ("Z_W", "Z_W", 3),
+            ("Z_K", "Z_K", 3), ("Z_Hyp", "Z_Hyp", 3), ("sigma_HP", "sigma_HP [MPa]", 1),
+            ("S_H", "S_H", 3), ("S_Hmin", "S_H,min", 3))
 _BENDING = (("Y_Fa", "Y_Fa", 3), ("Y_Sa", "Y_Sa", 3), ("Y_eps", "Y_eps", 3),
-            ("Y_BS", "Y_BS", 3), ("Y_LS", "Y_LS", 3), ("Y_deltarelT", "Y_delta,relT", 3),
-            ("Y_RrelT", "Y_R,relT", 3), ("Y_NT", "Y_NT", 3),
-            ("sigma_F0", "sigma_F0 [MPa]", 1), ("sigma_F", "sigma_F [MPa]", 1),
-            ("sigma_FP", "sigma_FP [MPa]", 1), ("S_F", "S_F", 3))
+            ("Y_BS", "Y_BS", 3), ("Y_LS", "Y_LS", 3), ("sigma_F0", "sigma_F0 [MPa]", 1),
+            ("sigma_F", "sigma_F [MPa]", 1), ("sigma_Flim", "sigma_Flim [MPa]", 1),
+            ("Y_ST", "Y_ST", 3), ("Y_NT", "Y_NT", 3), ("Y_deltarelT", "Y_delta,relT", 3),
+            ("Y_RrelT", "Y_R,relT", 3), ("Y_X", "Y_X", 3), ("sigma_FP", "sigma_FP [MPa]", 1),
+            ("S_F", "S_F", 3), ("S_Fmin", "S_F,min", 3))
 
 
 def _rows(ds, spec) -> list[tuple[str, str, str, str]]:
     """(label, pair, pinion, gear): a value of the pair once, a member's in its column."""
     rows = []
     for name, label, digits in spec:
+        if name not in ds:  # a file of an older version
+            continue
         x = ds[name]
         if "member" in x.dims:
             rows.append((label, "", *(f"{float(v):.{digits}f}" for v in x.values)))
@@ -188,8 +203,12 @@ def tables(ds: xr.Dataset) -> str:
                     f"{float(one['F_vmt']):.1f} N, F_n {float(one['F_n']):.1f} N",
                 "load factors: " + "  ".join(
                     f"{label} {float(one[name]):.3f}" for name, label in (
-                        ("K_v", "K_v"), ("K_Hbeta", "K_Hbeta"), ("K_Fbeta", "K_Fbeta"),
-                        ("K_Halpha", "K_Halpha"), ("K_Falpha", "K_Falpha"))),
+                        ("K_A", "K_A"), ("K_v", "K_v"), ("K_Hbeta_be", "K_Hbeta-be"),
+                        ("K_Hbeta", "K_Hbeta"), ("K_F0", "K_F0"), ("K_Fbeta", "K_Fbeta"),
+                        ("K_Halpha", "K_Halpha"), ("K_Falpha", "K_Falpha"))
+                    if name in one)
+                + (f"  (K_v Method B: resonance ratio N {float(one['N']):.3f})"
+                   if "N" in one else ""),
                 "", "pitting (ISO 10300-2)",
                 tabulate(_rows(one, _PITTING), headers=head, tablefmt="simple",
                          disable_numparse=True),

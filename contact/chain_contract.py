@@ -1,0 +1,189 @@
+"""The contract of a chain step, checked where a step is given and after it runs (issue 72
+item 4): a misused extension point is refused in one sentence naming the step, never a
+traceback from inside :mod:`contact.chain` or :mod:`contact.pipeline`.
+
+A step of :class:`contact.AnalysisChain` is a callable ``f(state)`` of one positional
+argument, the :class:`contact.chain.ChainState`, that adds its group(s) to
+``state.groups`` and returns None (docs/extending.md, "A step of the analysis chain").
+Checked:
+
+* **when it is given** (:func:`check_step_callable`): it must be callable with one
+  positional argument — ``lambda: …``, ``def f(state, extra)`` (no default) or a class
+  are refused with the signature they have;
+* **after it runs** (:func:`check_step_output`): it returned None (a step that returns
+  its dataset instead of storing it would lose it silently); ``state.groups`` is still a
+  dict whose keys are paths (``"/name"``) and whose values are ``xarray.Dataset``; the
+  groups the later steps read exist: ``/easeoff`` and ``/utca`` after the ``utca`` step,
+  ``/ltca`` (with its ``torque`` dimension) from the ``ltca`` step on — a step that deletes
+  ``/ltca`` is named, not the ``KeyError`` of the step after it;
+* **when it raises** (:func:`run_step`): a user's step's exception is re-raised as a
+  :class:`geometry.core.errors.PluginError` naming the step and the callable, the original
+  chained as its cause (``raise … from exc``); the built-in steps' own errors pass
+  unchanged (they name their field already).
+
+Public names
+------------
+check_step_callable  refuse a step callable that cannot take the state
+check_step_output    refuse what a step left in the state
+run_step             run one step, its misuse and its exceptions said with its name
+READS                the groups each built-in step reads
+"""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import xarray as xr
+
+from geometry.core.errors import PluginError
+
+__all__ = ["READS", "check_step_callable", "check_step_output", "run_step"]
+
+#: the groups each step leaves for the steps after it (a step's output is checked for
+#: those of its own and of every earlier step; the ``ltca`` step's ``/ltca`` is read by
+#: every later built-in step and by :func:`contact.run_analysis` itself)
+MAKES: Mapping[str, tuple[str, ...]] = {
+    "utca": ("/easeoff", "/utca"),
+    "ltca": ("/ltca",),
+}
+
+#: the groups each built-in step reads (contact/chain.py)
+READS: Mapping[str, tuple[str, ...]] = {
+    "ltca": (),
+    "root_stress": ("/ltca",),
+    "mesh_interface": ("/ltca",),
+    "efficiency": ("/ltca",),
+    "load_capacity": ("/ltca",),
+}
+
+
+def _name(f: Any) -> str:
+    return str(getattr(f, "__qualname__", None) or getattr(f, "__name__", None)
+               or type(f).__name__)
+
+
+def check_step_callable(step: str, f: Callable[..., Any]) -> None:
+    """Refuse a step callable that cannot be called as ``f(state)``.
+
+    Parameters
+    ----------
+    step : str
+        The step it is given for (:data:`contact.chain.STEP_ORDER`).
+    f : callable
+        The user's callable.
+
+    Raises
+    ------
+    InputError (PluginError)
+        ``f`` is a class (a step is a function of the state, not a type), or its
+        signature does not accept exactly one positional argument (the message gives the
+        signature it has). A callable whose signature Python cannot inspect (some
+        built-ins) is accepted and checked when it runs.
+    """
+    name = _name(f)
+    if inspect.isclass(f):
+        raise PluginError(f"steps.{step}: {name} is a class; a step is a callable f(state) "
+                          "of the contact.chain.ChainState that adds its groups to "
+                          "state.groups (docs/extending.md)")
+    try:
+        sig = inspect.signature(f)
+    except (TypeError, ValueError):
+        return
+    try:
+        sig.bind(object())
+    except TypeError:
+        raise PluginError(f"steps.{step}: the callable {name}{sig} cannot be called as "
+                          "f(state): a step takes one argument, the contact.chain.ChainState "
+                          "(docs/extending.md)") from None
+
+
+def check_step_output(step: str, f: Callable[..., Any], state: Any, returned: Any,
+                      order: tuple[str, ...]) -> None:
+    """Refuse what step ``step`` left in ``state`` where the steps after it could not read
+    it, naming the step.
+
+    Parameters
+    ----------
+    step : str
+        The step that just ran.
+    f : callable
+        Its callable (named in the message).
+    state : contact.chain.ChainState
+        The state after it.
+    returned : object
+        What it returned (must be None).
+    order : tuple of str
+        The steps in the order they run (:data:`contact.chain.STEP_ORDER`).
+
+    Raises
+    ------
+    PluginError
+        A value returned; ``state.groups`` no dict; a key that is no path ``"/…"``; a value
+        that is no ``xarray.Dataset`` (a list, a dict, a DataTree); a group the later steps
+        read (:data:`MAKES` of this and every earlier step) missing; ``/ltca`` without its
+        ``torque`` dimension.
+    """
+    who = f"steps.{step}: the callable {_name(f)}"
+    if returned is not None:
+        raise PluginError(f"{who} returned {type(returned).__name__}; a step adds its groups "
+                          "to state.groups (e.g. state.groups['/name'] = dataset) and returns "
+                          "None (docs/extending.md)")
+    groups = state.groups
+    if not isinstance(groups, dict):
+        raise PluginError(f"{who} left state.groups as {type(groups).__name__}; it must stay "
+                          "a dict of path to xarray.Dataset")
+    for path, ds in groups.items():
+        if not (isinstance(path, str) and path.startswith("/")):
+            raise PluginError(f"{who} wrote state.groups[{path!r}]: a group's key is its path, "
+                              "a str starting with '/' (e.g. '/friction')")
+        if not isinstance(ds, xr.Dataset):
+            raise PluginError(f"{who} wrote state.groups[{path!r}] as {type(ds).__name__}; a "
+                              "group must be an xarray.Dataset")
+    done = order[:order.index(step) + 1]
+    for earlier in done:
+        for path in MAKES.get(earlier, ()):
+            if path not in groups:
+                made = "it should make" if earlier == step else f"the {earlier} step made"
+                raise PluginError(f"{who} left no {path} group ({made} it and the later "
+                                  "steps read it)")
+    if "ltca" in done and "torque" not in groups["/ltca"].dims:
+        raise PluginError(f"{who} left a /ltca group without the dimension 'torque' (the "
+                          "later steps and the file read the LTCA per torque)")
+
+
+def run_step(step: str, f: Callable[..., Any], state: Any, *, builtin: bool,
+             order: tuple[str, ...]) -> None:
+    """Run one step on ``state`` and check what it left (:func:`check_step_output`).
+
+    Parameters
+    ----------
+    step : str
+        The step's name.
+    f : callable
+        Its callable.
+    state : contact.chain.ChainState
+    builtin : bool
+        A built-in step (contact/chain.py or a registered method): its exceptions pass
+        unchanged; a user's are wrapped.
+    order : tuple of str
+        :data:`contact.chain.STEP_ORDER`.
+
+    Raises
+    ------
+    PluginError
+        A user's step raised (the message names the step, the callable, the exception's
+        type and text; the exception is chained as ``__cause__``), or left the state where
+        the later steps cannot read it.
+    """
+    if builtin:
+        returned = f(state)
+    else:
+        try:
+            returned = f(state)
+        except Exception as exc:
+            first = str(exc).splitlines()[0] if str(exc) else ""
+            raise PluginError(f"steps.{step}: the callable {_name(f)} raised "
+                              f"{type(exc).__name__}" + (f": {first}" if first else "")) from exc
+    check_step_output(step, f, state, returned, order)

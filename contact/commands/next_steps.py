@@ -1,0 +1,203 @@
+"""What a FAIL verdict prints next: commands that answer its findings, never one whose
+result it has already seen fail.
+
+``ltca run`` prints, under a FAIL on the bearing (plastic or edge contact, flank pressure),
+an ``ltca optimize`` of the flank's settings and relief (:func:`bearing_lines`). A case
+that *is* such an optimisation's result records it (its ``[optimize]`` table: the flank,
+the variables, the command); when ``ltca run`` of it FAILs again, printing the same
+optimisation would send the user round in a circle. So the lines read the provenance: an
+optimisation over the same variables is answered by a wider set (the first-order modified
+roll 2C and helical motion H1: bias and lengthwise position, docs/optimize.md), and once
+that too is the case's own, by no ``ltca optimize`` at all — the bearing's re-development
+from its basic data, the V–H check, and a lower torque (``ltca rate``).
+
+``ltca duty-cycle`` prints :func:`duty_cycle_lines` under its FAIL: the bin that does most
+of the damage, analysed as ``ltca run`` (whose verdict then says what answers it), and the
+rating at that torque.
+
+Public functions
+----------------
+optimised_variables   the variables of the optimisation a case is the result of
+static_flank_strength the static contact strength the verdict's flank check uses [MPa]
+bearing_lines         the next-step lines of a bearing finding
+duty_cycle_lines      the next-step lines of a FAILed duty cycle
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+
+__all__ = ["bearing_lines", "duty_cycle_lines", "optimised_variables",
+           "static_flank_strength"]
+
+#: the wider set offered once the bearing variables' optimisation is the case's own, with
+#: their half-range about the flank's value (file units): bias and lengthwise position
+WIDER_VARIABLES = {"2C": 0.02, "H1": 0.4}
+
+
+def optimised_variables(case, side: str) -> tuple[frozenset[str], str]:
+    """(variable names, command) of the ``ltca optimize`` run whose result ``case`` is, for
+    its flank ``side`` (``"drive"``/``"coast"``); (empty, "") for a case that is none. A
+    table without a ``flank`` (written before it was recorded) counts for either flank."""
+    table = case.extra.get("optimize")
+    if not isinstance(table, Mapping) or "source_case" not in table:
+        return frozenset(), ""
+    if table.get("flank", side) != side:
+        return frozenset(), ""
+    names = table.get("variables", {})
+    return frozenset(names) if isinstance(names, Mapping) else frozenset(), \
+        str(table.get("command", ""))
+
+
+def static_flank_strength(lt) -> float:
+    """The static contact strength σ_Hlim·Z_NT,static [MPa] of the weaker member's material
+    at the verdict's grade (:func:`contact.study.verdicts.verdict`'s flank check, ISO
+    6336-2's life factor at the S–N curve's static end); NaN without materials."""
+    from contact.load_capacity.durability import sn_curves
+    from contact.study.verdicts import GRADE
+
+    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
+    if not names:
+        return math.nan
+    curves = [sn_curves(str(m), GRADE)["contact"] for m in sorted(names)]
+    weak = min(curves, key=lambda c: c.allowable)
+    return float(weak.allowable * weak.static_life_factor)
+
+
+def _parts(case, pinion_flank: str, half_ranges: Mapping[str, float]) -> list[str]:
+    """``--variable NAME LOW HIGH`` of each variable about the flank's own value, those the
+    pinion's process has."""
+    from contact.optimize.variables import DesignVariable, check_variables, start_values
+    from geometry.core.errors import InputError
+
+    parts = []
+    for name, half in half_ranges.items():
+        try:
+            (x,) = start_values(case, pinion_flank, (name,))
+            var = DesignVariable(name, float(x) - half, float(x) + half)
+            check_variables(case, pinion_flank, [var])
+        except (InputError, KeyError, ValueError):
+            continue  # not a variable of this pinion's process
+        parts.append(f"--variable {name} {var.low:.4g} {var.high:.4g}")
+    return parts
+
+
+def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[str, float],
+                  pressure_limit: float | None = None, rate: bool = True) -> list[str]:
+    """The next-step lines of a bearing finding of ``ltca run``'s verdict.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    shown : str
+        The case as the command names it.
+    side : str
+        ``"drive"``/``"coast"``.
+    torques : str
+        The analysed torques [N·m], as the command line gives them.
+    variables : mapping name → half-range
+        The bearing variables (file units) about the flank's own values.
+    pressure_limit : float, optional — [MPa]
+        The static strength a flank peak exceeded: given to the optimisation as
+        ``--max-flank-pressure``, so that its "constraints met" covers the finding.
+    rate : bool
+        Offer ``ltca rate`` (a lower torque) where the bearing variables are exhausted;
+        False where the caller prints it already (a capacity finding).
+
+    Returns
+    -------
+    list of str
+        The V–H check and an ``ltca optimize`` command — a wider one, or none, where the
+        case is already the result of that optimisation (:func:`optimised_variables`).
+    """
+    from contact.utca.easeoff import FLANK_ROLES
+
+    pinion_flank = FLANK_ROLES[side](case)
+    done, command = optimised_variables(case, side)
+    base = _parts(case, pinion_flank, variables)
+    relief = ["--variable tip_relief 0 60", "--variable root_relief 0 60"]
+    limits = "--max-edge-share 0.02" + (
+        f" --max-flank-pressure {math.floor(pressure_limit):d}"
+        if pressure_limit is not None and math.isfinite(pressure_limit) else "")
+    first = set(variables) | {"tip_relief", "root_relief"}
+    vh = f"    ltca vh-check {shown} --flank {side}"
+    if not done or not first <= done:
+        return [f"  next, the {side} flank's bearing: the pattern over the mounting positions, "
+                "then its settings and relief developed against the loaded result, the other "
+                "flank kept (docs/optimize.md, \"A flank that fails\"):", vh,
+                f"    ltca optimize {shown} --flank {side} --torque {torques} "
+                f"{' '.join(base + relief)} {limits} --max-evaluations 100"]
+    seen = (f"this case is the result of `{command}`" if command else
+            f"this case is `ltca optimize`'s result over {', '.join(sorted(done))}")
+    wider = _parts(case, pinion_flank, {k: v for k, v in WIDER_VARIABLES.items()
+                                        if k not in done})
+    if wider:
+        return [f"  next, the {side} flank's bearing: {seen} (its [optimize] table), and "
+                "optimising those variables again does not answer the finding; the pattern "
+                "over the mounting positions, then a wider set — the modified roll 2C and "
+                "helical motion H1 (bias, lengthwise position) beside them (docs/optimize.md):",
+                vh, f"    ltca optimize {shown} --flank {side} --torque {torques} "
+                f"{' '.join(base + wider + relief)} {limits} --max-evaluations 150"] + (
+                ["  or a lower torque: the rating's capacity at these torques "
+                 "(docs/rating.md):", f"    ltca rate {shown} --torque {torques}"]
+                if rate else [])
+    return [f"  next, the {side} flank's bearing: {seen} (its [optimize] table), over the "
+            "settings and relief a flank prescription has; optimising them again does not "
+            "answer the finding. What would: the pattern over the mounting positions, the "
+            "bearing re-developed from the basic data (`ltca synthesize`, docs/synthesis.md), "
+            "or a lower torque (the rating's capacity, docs/rating.md):", vh] + (
+            [f"    ltca rate {shown} --torque {torques}"] if rate else [])
+
+
+def duty_cycle_lines(ds, shown: str, flank: str | None,
+                     fail_checks: Sequence[str]) -> list[str]:
+    """The next-step lines under a FAILed duty cycle (``ltca duty-cycle``).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        ``/duty_cycle`` (:func:`contact.study.duty_cycle.run_duty_cycle`): ``torque``,
+        ``flank_damage`` (bin, member, u, v), ``damage`` (member).
+    shown : str
+        The case as the command names it.
+    flank : str or None
+        The analysed flank (``--flank``).
+    fail_checks : sequence of str
+        The checks of the verdict's failing findings.
+
+    Returns
+    -------
+    list of str
+        The bin that does most of the damage at the first point to fail, analysed as
+        ``ltca run`` (whose verdict prints what answers its bearing), and the rating at its
+        torque; a failing bin otherwise; nothing without a failing finding.
+    """
+    import numpy as np
+
+    if not fail_checks:
+        return []
+    torque = np.asarray(ds["torque"].values, float)
+    flag = f" --flank {flank}" if flank else ""
+    worst, why = None, ""
+    if "flank_damage" in ds and "damage" in ds:
+        k = int(np.argmax(ds["damage"].values))
+        fd = np.nan_to_num(np.asarray(ds["flank_damage"].isel(member=k).values, float))
+        if fd.size and fd.sum() > 0:
+            total = fd.sum(axis=0)
+            iu, iv = np.unravel_index(int(np.argmax(total)), total.shape)
+            per_bin = fd[:, iu, iv]
+            worst = int(np.argmax(per_bin))
+            member = str(ds["member"].values[k])
+            why = (f"bin {worst} ({torque[worst]:g} N m) does "
+                   f"{100 * per_bin[worst] / per_bin.sum():.0f} % of the {member}'s flank "
+                   "damage at its first point to fail")
+    if worst is None:
+        worst = int(np.argmax(torque))
+        why = f"the peak-torque bin {worst} ({torque[worst]:g} N m)"
+    t = f"{torque[worst]:g}"
+    return [f"  next: {why}; its bearing at that torque as ltca run analyses it (the verdict "
+            "there prints what answers a high or edge-loaded pattern), then the rating's "
+            "capacity — a lower spectrum, or a larger or stronger gear set (docs/rating.md):",
+            f"    ltca run {shown}{flag} --torque {t}",
+            f"    ltca rate {shown} --torque {t}"]

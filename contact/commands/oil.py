@@ -1,0 +1,85 @@
+"""``ltca oil``: an oil file from the values of a gear oil's data sheet."""
+
+from __future__ import annotations
+
+import argparse
+
+#: Place in ``ltca --help``.
+ORDER = 63
+
+
+def register(sub) -> None:
+    """Add the sub-command to an ``argparse`` sub-parser collection."""
+    from friction.lubricant import BASE_OIL_FACTORS
+
+    p = sub.add_parser(
+        "oil",
+        help="write an oil file from a data sheet's nu40, nu100, rho15 and base stock",
+        description="Builds the oil file every command takes as --lubricant (or a case's "
+        "[operating] lubricant) from the values of the oil's data sheet: the viscosity "
+        "by ASTM D341 through nu40 and nu100, the density and the pressure-viscosity "
+        "coefficient by ISO/TR 15144-1 (mineral, polyalphaolefin, polyglycol; another base "
+        "stock needs --alpha38). docs/oils.md says what each value does.",
+    )
+    p.add_argument("--name", required=True, help="the oil's name (results record it)")
+    p.add_argument("--nu40", type=float, required=True, metavar="MM2/S",
+                   help="kinematic viscosity at 40 degC [mm2/s]")
+    p.add_argument("--nu100", type=float, required=True, metavar="MM2/S",
+                   help="kinematic viscosity at 100 degC [mm2/s]")
+    p.add_argument("--rho15", type=float, required=True, metavar="KG/M3",
+                   help="density at 15 degC [kg/m3] (a sheet's g/ml x 1000)")
+    p.add_argument("--base-oil", required=True, choices=sorted(BASE_OIL_FACTORS),
+                   help="the base stock")
+    p.add_argument("--source", required=True,
+                   help="the data sheet (maker, product, edition)")
+    p.add_argument("--alpha38", type=float, default=None, metavar="1/GPA",
+                   help="measured pressure-viscosity coefficient at 38 degC [1/GPa] "
+                   "(default: ISO/TR 15144-1's of the base stock)")
+    p.add_argument("--fzg-stage", type=float, default=None,
+                   help="FZG A/8.3/90 failure load stage (scuffing safety)")
+    p.add_argument("--boundary-friction", type=float, default=None, metavar="MU_B",
+                   help="boundary friction coefficient measured on the oil (default the "
+                   "assumed 0.1)")
+    p.add_argument("--lambda-gfp", type=float, default=None,
+                   help="permissible specific film thickness from the FVA 54 test "
+                   "(micropitting safety)")
+    p.add_argument("-o", "--output", required=True, metavar="FILE.toml",
+                   help="oil file to write")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from tabulate import tabulate
+
+    from contact.commands.output_paths import check_output_file
+    from friction.lubricant import density, pressure_viscosity_coefficient, viscosity
+    from friction.oil_data_sheet import (
+        TABLE_TEMPERATURES,
+        OilDataSheet,
+        lubricant_from_data_sheet,
+        oil_file_mapping,
+    )
+    from geometry.core.atomic_files import atomic_path
+    from geometry.core.errors import InputError
+    from geometry.core.toml_files import dump_toml
+
+    check_output_file(args.output)
+    if not str(args.output).endswith(".toml"):
+        raise InputError(f"-o: the oil file must end in .toml, got {args.output!r}")
+    sheet = OilDataSheet(
+        name=args.name, kinematic_viscosity_40=args.nu40, kinematic_viscosity_100=args.nu100,
+        density_15=args.rho15, base_oil=args.base_oil, source=args.source,
+        pressure_viscosity_38=args.alpha38, fzg_load_stage=args.fzg_stage,
+        boundary_friction=args.boundary_friction,
+        permissible_specific_film=args.lambda_gfp)
+    oil = lubricant_from_data_sheet(sheet)  # validated as an oil file before it is written
+    text = ("# Built by `ltca oil` from a data sheet (friction.oil_data_sheet); the source "
+            "line says how.\n" + dump_toml(oil_file_mapping(sheet)))
+    with atomic_path(args.output) as tmp:
+        tmp.write_text(text, encoding="utf-8")
+    rows = [(t, float(viscosity(oil, t)) * 1e3, float(pressure_viscosity_coefficient(oil, t)),
+             float(density(oil, t))) for t in TABLE_TEMPERATURES]
+    print(tabulate(rows, headers=("T [degC]", "eta [mPa s]", "alpha [1/GPa]", "rho [kg/m3]"),
+                   floatfmt=("g", ".2f", ".2f", ".1f")))
+    print(f"wrote {args.output}")
+    return 0

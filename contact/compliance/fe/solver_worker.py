@@ -1,0 +1,86 @@
+"""The FE build's CHOLMOD worker, a lean process of its own (run as a script).
+
+``python solver_worker.py FD [LABEL ...]``: a connection on file descriptor FD
+(:class:`multiprocessing.connection.Connection`) brings the lower triangle of the matrix
+(``("cholmod", data, indices, indptr, n)``, CSC); the worker factorises it
+(:func:`contact.compliance.fe.cholmod_dense.cholmod_kernel`), answers ``("ready", nnz,
+seconds)`` or ``("error", exception)``, then answers each block of right-hand sides it
+receives with ``("ok", solution)`` until ``None`` or the end of the connection. LABEL is
+not read: the words of the parent's command line, so that the worker is recognisable as
+the build's in a process list.
+
+Why a new interpreter and not a fork of the build (issue 75): a forked worker's resident
+set starts with every page of its parent (~300 MB: the imported toolkit, the mesh), to
+which the factor (~0.6 GB on the default pinion model) is added; this process imports
+NumPy and cvxopt only (~30 MB), so the largest process of a cold ``ltca run`` stays near
+the factor's own size. The signal handling is the forked worker's
+(:func:`contact.compliance.fe.elasticity.factorise`, issue 64): SIGINT ignored (the parent
+decides), SIGTERM ends it at once, and it dies with its parent (Linux).
+"""
+
+from __future__ import annotations
+
+import gc
+import importlib.util
+import signal
+import sys
+import time
+from pathlib import Path
+
+
+def _kernel_module():
+    """:mod:`contact.compliance.fe.cholmod_dense` loaded from its file (not through the
+    ``contact`` package, whose import pulls in the whole toolkit)."""
+    path = Path(__file__).resolve().with_name("cholmod_dense.py")
+    spec = importlib.util.spec_from_file_location("_fe_cholmod_dense", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def main(argv: list[str]) -> None:
+    """Serve the connection on file descriptor ``argv[0]`` (module docstring)."""
+    from multiprocessing.connection import Connection
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})
+    if sys.platform == "linux":
+        try:
+            import ctypes
+
+            ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL)  # PDEATHSIG
+        except (OSError, AttributeError):  # pragma: no cover - no libc
+            pass
+    gc.disable()  # few objects of its own; the arrays are freed by reference counts
+    conn = Connection(int(argv[0]))
+    try:
+        request = conn.recv()
+    except (EOFError, OSError):
+        return
+    try:
+        kernel = _kernel_module().cholmod_kernel
+        t0 = time.perf_counter()
+        box = [tuple(request[1:])]
+        del request
+        solve, nnz = kernel(box)
+        conn.send(("ready", nnz, time.perf_counter() - t0))
+    except Exception as exc:  # handed to the parent, which raises it
+        conn.send(("error", exc))
+        return
+    while True:
+        try:
+            block = conn.recv()
+        except (EOFError, OSError):
+            return
+        if block is None:
+            return
+        try:
+            conn.send(("ok", solve(block)))
+        except Exception as exc:  # the parent raises it
+            conn.send(("error", exc))
+
+
+if __name__ == "__main__":
+    sys.path.pop(0)  # this file's directory: its modules must not shadow any other
+    main(sys.argv[1:])

@@ -1,0 +1,285 @@
+"""Thermal Eyring film shear on the mixed-EHL load sharing: an opt-in friction model.
+
+``mixed_ehl`` (:mod:`friction.mixed_ehl`) shears its film isothermally at the inlet oil
+temperature, so its full-film friction settles near the Eyring plateau and *rises* with
+speed (issue 74: +24 % from 100 to 6000 rpm where ISO/TR 14179-2 falls 56 %). This model
+keeps its load sharing (Johnson, Greenwood & Poon 1972; Greenwood & Tripp 1970: the same
+γ₁, central film h_c and asperity share, from :func:`friction.mixed_ehl.mixed_ehl_solution`)
+and its boundary friction, and replaces the film shear with a *thermal* Eyring shear:
+at every quadrature node of the Hertz zone the shear stress τ satisfies
+
+    τ = min(τ₀ asinh(η(p, T_f) V_s / (h_c τ₀)), Λ p),
+    η(p, T_f) = η₀ exp(α₀ e^(−β_α (T_f − T₀)) p − β (T_f − T₀)),
+    T_f − T₀ = ΔT_s + c_f ΔT_c,
+    ΔT_s = (4/(3√π)) q √(2b) / (B (√u₁ + √u₂)),   ΔT_c = q h_c / (8 k),   q = τ V_s,
+
+with p = p_h cos θ / γ₁ (the film's share of the Hertz pressure), T₀ the inlet (bulk)
+oil temperature, β the oil's temperature–viscosity coefficient at T₀, β_α = −d ln α/dT
+the fall of its pressure–viscosity coefficient with temperature at T₀ (from the oil's α
+table; ISO/TR 15144-1's α(θ) relation for a data-sheet oil), k its thermal conductivity,
+and
+
+* ΔT_s the surfaces' mean flash temperature under the heat flux q of the film's shear:
+  Jaeger's band source at high Péclet number, ΔT(x) = 2q√(x + b)/(√π B √u) for one
+  surface moving at u (Carslaw & Jaeger 1959 §10.7), averaged over the band, split
+  between the two surfaces so that their temperatures are equal
+  (Blok 1937), B = √(K ρ c) the steel's effusivity. The flux is the node's own q, taken
+  as if uniform over the band (a local approximation of the convolution in
+  :func:`friction.ehl.thermal.flash_temperature`);
+* ΔT_c the rise of the film's mid-plane above its walls by conduction of a uniform
+  dissipation q/h_c across the film (Couette; Johnson & Greenwood 1980), weighted by
+  ``film_heating`` c_f ∈ [0, 1]: 1 is Johnson & Greenwood's uniform shear, 0 the surfaces'
+  temperature alone (the stochastic solver's choice, :mod:`friction.ehl.thermal`, which
+  argues from shear localisation, Bair, Qureshi & Winer 1993).
+
+The right side decreases with τ (more shear, more heat, thinner oil), so the equation has
+one root in [0, τ_iso] (τ_iso the isothermal stress), found per node by a bracketing
+root finder. As V_s → 0 the heating vanishes and the model is ``mixed_ehl``; the
+temperature enters through β, β_α and k, which are properties of the oil (its file), so
+oils differ only through their data. Mapped against ISO/TR 14179-2 and Xu et al. (2007)
+in docs/friction.md ("Mapped against the measured correlations"): μ falls with speed in
+full film and hotter oil is worse on rough flanks, but the level is 0.64–0.68 × ISO at
+the seed's point and a VG 220 mineral oil still gets 19–31 % more μ than the 75W90.
+
+Assumptions stated (not fitted): τ₀ and Λ independent of temperature; the exponential
+η(T) and α(T) with their slopes at the inlet temperature (over large ΔT they overstate
+the fall that Vogel's form and the α table give); Barus' η(p); steel surfaces
+(K 46 W/(m K), ρ 7850 kg/m³, c 470 J/(kg K)).
+
+Sources: Eyring (1936); Johnson, K. L., Tevaarwerk, J. L., Proc. R. Soc. Lond. A 356
+(1977) 215; Johnson, K. L., Greenwood, J. A., "Thermal analysis of an Eyring fluid in
+elastohydrodynamic traction", Wear 61 (1980) 353–374; Jaeger, J. C., J. Proc. R. Soc.
+N.S.W. 76 (1942) 203; Carslaw, H. S., Jaeger, J. C., *Conduction of Heat in Solids*,
+2nd ed. (1959) §10.7; Blok, H., Proc. Gen. Disc.
+Lubrication, IMechE 2 (1937) 222; Bair, S., Winer, W. O., J. Lubr. Technol. 101 (1979)
+258 (limiting shear stress).
+
+Registered as ``"thermal_eyring"`` in :mod:`friction.coefficient` (opt-in: the default
+model is unchanged).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import elementwise
+
+from friction.mixed_ehl import (
+    COS_THETA,
+    MIXED_EHL_DEFAULTS,
+    W_THETA,
+    eyring_shear_stress,
+    mixed_ehl_solution,
+)
+from geometry.core.validation import real_array, scalar_or_array
+
+__all__ = ["STEEL_EFFUSIVITY", "THERMAL_EYRING_DEFAULTS", "thermal_eyring",
+           "thermal_eyring_film_shear"]
+
+Array = NDArray[np.float64]
+
+#: √(K ρ c) of steel [W s^½/(m² K)]: K 46 W/(m K), ρ 7850 kg/m³, c 470 J/(kg K) (typical
+#: case-hardening steel; the effusivity ISO/TS 6336-20 calls the thermal contact
+#: coefficient, ≈ 13 000 there too)
+STEEL_EFFUSIVITY = math.sqrt(46.0 * 7850.0 * 470.0)
+#: mean over the band of Jaeger's high-Péclet rise ΔT(x) = 2q√(x + b)/(√π B √u) under a
+#: uniform flux: (4/(3√π)) q √(2b)/(B √u) (the closed form that
+#: :func:`friction.ehl.thermal.flash_temperature` is tested against, averaged)
+_BAND_MEAN = 4.0 / (3.0 * math.sqrt(math.pi))
+
+#: Default parameters beyond mixed_ehl's: name → (value, "[units] meaning; source").
+THERMAL_EYRING_DEFAULTS = {
+    "temperature_viscosity": (
+        0.03, "[1/K] β of η ∝ exp(−β ΔT) at the inlet temperature; the efficiency stage "
+        "passes the oil's (friction.lubricant.temperature_viscosity_coefficient)"),
+    "oil_thermal_conductivity": (
+        0.135, "[W/(m K)] the oil's; the efficiency stage passes the oil file's"),
+    "pressure_viscosity_temperature": (
+        0.0, "[1/K] β_α = −d ln α/dT at the inlet temperature (0: α held at the inlet's); "
+        "the efficiency stage passes the oil's, from its α table (75W90, Table 5.2: "
+        "0.0065 at 90 °C)"),
+    "film_heating": (
+        1.0, "[1] c_f, weight of the film's Couette mid-plane rise q h/(8k) (Johnson & "
+        "Greenwood 1980): 1 uniform shear across the film, 0 the surfaces' flash "
+        "temperature alone"),
+}
+
+
+def thermal_eyring_film_shear(
+    *, pressure: ArrayLike, viscosity: ArrayLike, pressure_viscosity: ArrayLike,
+    shear_rate_film: ArrayLike, sliding_velocity: ArrayLike, film_thickness: ArrayLike,
+    flash_factor: ArrayLike, eyring_stress: float, limiting_shear_coefficient: float,
+    temperature_viscosity: float, oil_thermal_conductivity: float, film_heating: float,
+    pressure_viscosity_temperature: float = 0.0,
+) -> tuple[Array, Array]:
+    """The thermal Eyring shear stress τ [MPa] and the film's temperature rise [K] at
+    given film pressures (all arrays broadcast together).
+
+    Parameters
+    ----------
+    pressure : array — [MPa] film pressure p ≥ 0
+    viscosity : array — [Pa s] η₀ at the inlet temperature
+    pressure_viscosity : array — [1/GPa] α
+    shear_rate_film : array — [1/s] V_s/h_c
+    sliding_velocity : array — [m/s] V_s
+    film_thickness : array — [µm] h_c
+    flash_factor : array — [K/(W/m²)] ΔT_s per unit heat flux, (4/(3√π)) √(2b)/(B(√u₁+√u₂))
+    eyring_stress : float — [MPa] τ₀
+    limiting_shear_coefficient : float — [1] Λ
+    temperature_viscosity : float — [1/K] β
+    oil_thermal_conductivity : float — [W/(m K)] k
+    film_heating : float — [1] c_f
+    pressure_viscosity_temperature : float — [1/K] β_α ≥ 0
+
+    Returns
+    -------
+    (τ, ΔT) : arrays — [MPa], [K]
+        The root of τ = min(τ₀ asinh(η(p, T₀ + ΔT(τ)) γ̇/τ₀), Λ p) and its temperature rise;
+        η(p, T₀ + ΔT) = η₀ exp(α e^(−β_α ΔT) p − β ΔT).
+
+    Notes
+    -----
+    Source: see the module docstring (Johnson & Greenwood 1980; Jaeger 1942; Blok 1937).
+    """
+    p, eta0, alpha, rate, vs, h, flash = np.broadcast_arrays(
+        *(np.asarray(a, float) for a in (pressure, viscosity, pressure_viscosity,
+                                         shear_rate_film, sliding_velocity, film_thickness,
+                                         flash_factor)))
+    # ΔT per MPa of τ: q = τ·1e6·V_s [W/m²]
+    dt_per_tau = 1e6 * vs * (flash + film_heating * h * 1e-6 / (8.0 * oil_thermal_conductivity))
+    cap = limiting_shear_coefficient * p
+    ap = alpha * 1e-3 * p  # α₀ p [1]
+    with np.errstate(over="ignore"):
+        eta_iso = eta0 * np.exp(ap)
+    b_a = pressure_viscosity_temperature
+
+    def stress(tau: Array, e0: Array, a_p: Array, r: Array, k: Array, c: Array) -> Array:
+        # the Eyring law of eyring_shear_stress, written out: the heated viscosity may
+        # underflow to 0 (τ → 0), which that function's input check refuses
+        dt = k * tau
+        with np.errstate(over="ignore", under="ignore"):
+            arg = e0 * np.exp(a_p * np.exp(-b_a * dt) - temperature_viscosity * dt) * r \
+                / (eyring_stress * 1e6)
+        return np.minimum(eyring_stress * np.arcsinh(arg), c)
+
+    tau_iso = np.minimum(np.asarray(eyring_shear_stress(eta_iso, rate, eyring_stress)), cap)
+    tau = np.array(tau_iso, dtype=float)
+    need = (tau_iso > 0.0) & (dt_per_tau * tau_iso * (temperature_viscosity + b_a * ap)
+                              > 1e-12)
+    if np.any(need):
+        args = (eta0[need], ap[need], rate[need], dt_per_tau[need], cap[need])
+        res = elementwise.find_root(
+            lambda t, e, a, r, k, c: t - stress(t, e, a, r, k, c),
+            (np.zeros(int(need.sum())), tau_iso[need]), args=args,
+            tolerances={"xatol": 1e-12, "xrtol": 1e-10})
+        tau[need] = res.x
+    return tau, dt_per_tau * tau
+
+
+def thermal_eyring(
+    *,
+    load_per_length: ArrayLike,
+    hertz_pressure: ArrayLike,
+    radius: ArrayLike,
+    e_prime: ArrayLike,
+    entraining_velocity: ArrayLike,
+    sliding_velocity: ArrayLike,
+    viscosity: ArrayLike,
+    pressure_viscosity: ArrayLike,
+    roughness_1: ArrayLike,
+    roughness_2: ArrayLike,
+    thermal_factor: ArrayLike = 1.0,
+    temperature_viscosity: float = THERMAL_EYRING_DEFAULTS["temperature_viscosity"][0],
+    pressure_viscosity_temperature: float = THERMAL_EYRING_DEFAULTS[
+        "pressure_viscosity_temperature"][0],
+    oil_thermal_conductivity: float = THERMAL_EYRING_DEFAULTS["oil_thermal_conductivity"][0],
+    film_heating: float = THERMAL_EYRING_DEFAULTS["film_heating"][0],
+    eyring_stress: float = MIXED_EHL_DEFAULTS["eyring_stress"][0],
+    limiting_shear_coefficient: float = MIXED_EHL_DEFAULTS["limiting_shear_coefficient"][0],
+    boundary_friction: float = MIXED_EHL_DEFAULTS["boundary_friction"][0],
+    asperity_density_radius_sigma: float = MIXED_EHL_DEFAULTS["asperity_density_radius_sigma"][0],
+    sigma_over_beta: float = MIXED_EHL_DEFAULTS["sigma_over_beta"][0],
+) -> NDArray[np.float64] | float:
+    """Mixed-EHL μ with a thermal Eyring film shear (module docstring).
+
+    Parameters
+    ----------
+    load_per_length … thermal_factor :
+        As :func:`friction.mixed_ehl.mixed_ehl_solution` (toolkit units: N/mm, MPa, mm,
+        MPa, m/s, m/s, Pa s, 1/GPa, µm, µm, 1).
+    temperature_viscosity : float — [1/K]
+        β ≥ 0 of the oil at the inlet temperature (0 with β_α = 0: isothermal, μ =
+        ``mixed_ehl``'s).
+    pressure_viscosity_temperature : float — [1/K]
+        β_α = −d ln α/dT ≥ 0 of the oil at the inlet temperature.
+    oil_thermal_conductivity : float — [W/(m K)]
+        k > 0 of the oil.
+    film_heating : float — [1]
+        c_f ∈ [0, 1], weight of the film's Couette rise (:data:`THERMAL_EYRING_DEFAULTS`).
+    eyring_stress, limiting_shear_coefficient, boundary_friction,
+    asperity_density_radius_sigma, sigma_over_beta : float
+        As ``mixed_ehl`` (:data:`friction.mixed_ehl.MIXED_EHL_DEFAULTS`).
+
+    Returns
+    -------
+    float or array — [1]
+        μ = (μ_b w′/γ₂ + ∫τ dx)/w′, broadcast shape; finite, ≤ μ_b/γ₂ + Λ/γ₁.
+
+    Raises
+    ------
+    InputError
+        An input outside its accepted range (the message names it).
+
+    Warns
+    -----
+    FrictionModelRangeWarning
+        As ``mixed_ehl`` (its validity range).
+
+    Notes
+    -----
+    Sources: module docstring (Johnson & Greenwood 1980 thermal Eyring traction; Jaeger
+    1942 / Carslaw & Jaeger 1959 flash temperature; Blok 1937 partition; Johnson, Greenwood & Poon
+    1972 load sharing).
+    """
+    beta = float(real_array("temperature_viscosity", temperature_viscosity, low=0.0,
+                            high=1.0, unit="1/K"))
+    k_oil = float(real_array("oil_thermal_conductivity", oil_thermal_conductivity, low=0.0,
+                             low_open=True, high=10.0, unit="W/(m K)"))
+    c_f = float(real_array("film_heating", film_heating, low=0.0, high=1.0, unit="1"))
+    b_a = float(real_array("pressure_viscosity_temperature", pressure_viscosity_temperature,
+                           low=0.0, high=1.0, unit="1/K"))
+    sol = mixed_ehl_solution(
+        load_per_length=load_per_length, hertz_pressure=hertz_pressure, radius=radius,
+        e_prime=e_prime, entraining_velocity=entraining_velocity,
+        sliding_velocity=sliding_velocity, viscosity=viscosity,
+        pressure_viscosity=pressure_viscosity, roughness_1=roughness_1,
+        roughness_2=roughness_2, thermal_factor=thermal_factor, eyring_stress=eyring_stress,
+        limiting_shear_coefficient=limiting_shear_coefficient,
+        boundary_friction=boundary_friction,
+        asperity_density_radius_sigma=asperity_density_radius_sigma,
+        sigma_over_beta=sigma_over_beta,
+    )
+    shape = sol.friction_coefficient.shape
+    w, ph, u, vs, eta0, alpha = (np.broadcast_to(np.asarray(a, float), shape) for a in (
+        load_per_length, hertz_pressure, entraining_velocity, sliding_velocity, viscosity,
+        pressure_viscosity))
+    gamma1 = 1.0 / (1.0 - sol.asperity_load_share)
+    h_c = sol.film_thickness
+    b = 2.0 * w / (math.pi * ph)  # mm
+    u1 = np.maximum(u + 0.5 * vs, 0.0)
+    u2 = np.maximum(u - 0.5 * vs, 0.0)
+    flash = _BAND_MEAN * np.sqrt(2.0 * b * 1e-3) / (STEEL_EFFUSIVITY
+                                                   * (np.sqrt(u1) + np.sqrt(u2)))
+    p_film = (ph / gamma1)[..., None] * COS_THETA
+    tau, _ = thermal_eyring_film_shear(
+        pressure=p_film, viscosity=eta0[..., None], pressure_viscosity=alpha[..., None],
+        shear_rate_film=(vs / (h_c * 1e-6))[..., None], sliding_velocity=vs[..., None],
+        film_thickness=h_c[..., None], flash_factor=flash[..., None],
+        eyring_stress=eyring_stress, limiting_shear_coefficient=limiting_shear_coefficient,
+        temperature_viscosity=beta, oil_thermal_conductivity=k_oil, film_heating=c_f,
+        pressure_viscosity_temperature=b_a)
+    mu_film = b * np.sum(tau * COS_THETA * W_THETA, axis=-1) / w
+    return scalar_or_array(mu_film + sol.boundary_friction)
+

@@ -1,0 +1,201 @@
+"""Misuse of the chain's extension point refused in one sentence naming the step (issue 72
+item 4, contact/chain_contract.py): a callable that cannot take the state is refused when
+it is given, what a step leaves is checked after it runs, and a user step's exception is
+wrapped with the step's name and chained.
+
+Each misuse is run on the default case at one torque with the contact-only chain whose
+ease-off and LTCA are stand-ins of the user's (empty groups, an ``/ltca`` with only its
+torque): the refusals come from the contract, not from the numbers, and the tests take
+milliseconds; one well-behaved user step wrapping the built-in LTCA is run for real.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from contact import AnalysisChain, LTCAOptions, run_analysis
+from contact.chain import ChainState, ltca_qp
+from geometry.core.errors import InputError, PluginError
+
+TORQUE = 250.0
+SMALL = LTCAOptions(rolls_per_cycle=4, segments=8)
+
+
+def _utca(state):
+    state.groups["/easeoff"] = xr.Dataset()
+    state.groups["/utca"] = xr.Dataset()
+
+
+def _ltca(state):
+    state.groups["/ltca"] = xr.Dataset(coords={"torque": [TORQUE]})
+
+
+def _run(**steps):
+    chain = AnalysisChain.contact_only().with_steps(**{"utca": _utca, "ltca": _ltca, **steps})
+    return run_analysis(None, [TORQUE], options=SMALL, steps=chain)
+
+
+def _one_sentence(exc: BaseException) -> str:
+    text = str(exc)
+    assert "\n" not in text
+    return text
+
+
+@pytest.mark.parametrize("bad, said", [
+    (lambda: None, r"the callable .*<lambda>\(\) cannot be called as f\(state\)"),
+    (lambda state, extra: None,
+     r"the callable .*<lambda>\(state, extra\) cannot be called as f\(state\)"),
+    (ChainState, r"ChainState is a class"),
+])
+def test_a_callable_that_cannot_take_the_state_is_refused_when_given(bad, said):
+    with pytest.raises(InputError, match=r"^steps\.efficiency: " + said) as info:
+        AnalysisChain(efficiency=bad)
+    _one_sentence(info.value)
+    # through run_analysis's mapping too, before any work
+    with pytest.raises(InputError, match=r"^steps\.efficiency: "):
+        run_analysis(None, [TORQUE], options=SMALL, steps={"efficiency": bad})
+
+
+def test_callables_with_defaults_or_varargs_are_accepted():
+    AnalysisChain(efficiency=lambda state, extra=1: None)
+    AnalysisChain(efficiency=lambda *args: None)
+
+
+def test_a_step_that_never_makes_ltca_is_named():
+    with pytest.raises(PluginError, match=r"^steps\.ltca: the callable .*nothing.* left no "
+                                          r"/ltca group \(it should make it"):
+        def nothing(state):
+            pass
+        _run(ltca=nothing)
+
+
+def test_a_step_that_deletes_ltca_is_named_not_a_key_error():
+    def drop(state):
+        del state.groups["/ltca"]
+
+    with pytest.raises(PluginError, match=r"^steps\.efficiency: the callable .*drop left no "
+                                          r"/ltca group \(the ltca step made it"):
+        _run(efficiency=drop)
+
+
+def test_a_step_that_writes_a_list_as_a_group_is_named():
+    def as_list(state):
+        state.groups["/friction"] = [1.0, 2.0]
+
+    with pytest.raises(PluginError, match=r"^steps\.efficiency: .*as_list wrote "
+                                          r"state\.groups\['/friction'\] as list; a group "
+                                          r"must be an xarray\.Dataset"):
+        _run(efficiency=as_list)
+
+
+def test_a_step_that_returns_its_dataset_is_refused():
+    def returns(state):
+        return xr.Dataset()
+
+    with pytest.raises(PluginError, match=r"^steps\.efficiency: .*returns returned Dataset; "
+                                          r"a step adds its groups to state\.groups"):
+        _run(efficiency=returns)
+
+
+def test_a_group_key_that_is_no_path_is_refused():
+    def no_path(state):
+        state.groups["friction"] = xr.Dataset()
+
+    with pytest.raises(PluginError, match=r"state\.groups\['friction'\]: a group's key is "
+                                          r"its path"):
+        _run(efficiency=no_path)
+
+
+def test_an_ltca_without_torque_is_refused():
+    def flat(state):
+        state.groups["/ltca"] = xr.Dataset({"x": ("roll", np.zeros(3))})
+
+    with pytest.raises(PluginError, match=r"^steps\.ltca: .*flat left a /ltca group without "
+                                          r"the dimension 'torque'"):
+        _run(ltca=flat)
+
+
+def test_a_user_step_that_raises_is_wrapped_with_its_name_and_cause():
+    def broken(state):
+        return 1 / 0
+
+    with pytest.raises(PluginError, match=r"^steps\.efficiency: the callable .*broken raised "
+                                          r"ZeroDivisionError: division by zero$") as info:
+        _run(efficiency=broken)
+    assert isinstance(info.value.__cause__, ZeroDivisionError)
+
+
+def test_a_user_step_wrapping_a_built_in_one_still_works():
+    """The checks pass a well-behaved user step through: the ``ltca`` step wrapped gives
+    the built-in one's /ltca."""
+    calls = []
+
+    def mine(state):
+        calls.append(1)
+        ltca_qp(state)
+
+    tree = run_analysis(None, [TORQUE], options=SMALL,
+                        steps=AnalysisChain.contact_only().with_steps(ltca=mine))
+    assert calls == [1] and "ltca" in tree.children
+
+
+# --------------------------------------------------------------------------- named chains
+
+def test_named_configurations():
+    """``analysis()`` is the defaults (``ltca run``'s chain); ``contact_only()`` skips
+    every optional step; the ``with_…`` methods turn one back on or off; an FEOptions
+    turns the root stress on with that model."""
+    from contact.chain import OPTIONAL_STEPS
+    from contact.compliance.fe import FEOptions
+
+    assert AnalysisChain.analysis() == AnalysisChain()
+    lean = AnalysisChain.contact_only()
+    assert all(getattr(lean, s) is None for s in OPTIONAL_STEPS)
+    assert lean.with_root_stress().root_stress == "fe"
+    assert lean.with_root_stress(False) == lean
+    fe = FEOptions()
+    assert lean.with_root_stress(fe).fe_options is fe
+    assert lean.with_mesh_interface().mesh_interface == "linearised"
+    assert AnalysisChain.analysis().without("efficiency", "geometry").describe()[
+        "efficiency"] == "skipped"
+    assert lean.with_load_capacity("scuffing_micropitting").load_capacity == (
+        "scuffing_micropitting")
+    with pytest.raises(InputError, match=r"^steps: unknown step 'friction'; the steps are"):
+        lean.without("friction")
+    with pytest.raises(InputError, match=r"^root_stress: must be True, False or a "
+                                          r"contact\.compliance\.fe\.FEOptions, got str 'yes'"):
+        lean.with_root_stress("yes")
+    with pytest.raises(InputError, match=r"^fe_options: must be a contact\.compliance\.fe\."
+                                          r"FEOptions or None, got int"):
+        AnalysisChain(fe_options=3)
+
+
+@pytest.mark.parametrize("switch, said", [
+    ({"geometry": False}, r"run_analysis\(geometry=\.\.\.\) is deprecated: give the chain as "
+                          r"steps=AnalysisChain\.analysis\(\)\.with_geometry"),
+    ({"root_stress": False}, r"run_analysis\(root_stress=\.\.\.\) is deprecated"),
+    ({"mesh_interface": False}, r"run_analysis\(mesh_interface=\.\.\.\) is deprecated"),
+    ({"operating": False}, r"run_analysis\(operating=False\) is deprecated: give the chain "
+                           r"as steps=AnalysisChain\.analysis\(\)\.without\('efficiency'\)"),
+])
+def test_the_on_off_keywords_are_deprecated(switch, said):
+    """The booleans still work (the stand-in steps run) and warn, naming the named
+    configuration that replaces them."""
+    def stop(state):
+        raise RuntimeError("stop here")
+
+    with pytest.warns(DeprecationWarning, match=said), pytest.raises(PluginError,
+                                                                     match="stop here"):
+        run_analysis(None, [TORQUE], options=SMALL, **switch, steps=AnalysisChain.contact_only()
+                     .with_steps(utca=_utca, ltca=stop))
+
+
+@pytest.mark.parametrize("given, name", [(AnalysisChain, "AnalysisChain"),
+                                         (AnalysisChain.contact_only,
+                                          "AnalysisChain.contact_only")])
+def test_a_chain_not_called_is_refused_naming_the_call(given, name):
+    """``steps=AnalysisChain.contact_only`` (the parentheses forgotten) or the class."""
+    with pytest.raises(InputError, match=rf"^steps: got {name} itself; call it: {name}\(\)"):
+        run_analysis(None, [TORQUE], options=SMALL, steps=given)

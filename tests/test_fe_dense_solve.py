@@ -1,0 +1,170 @@
+"""CHOLMOD's dense block solve (issue 75): the same displacements as cvxopt's own solves.
+
+The FE build's unit loads are solved by ``cholmod_l_solve`` on whole dense blocks
+(:mod:`contact.compliance.fe.cholmod_dense`, BLAS-3) instead of cvxopt's sparse solves of
+a few columns per pass over the factor. Both apply the same factor; the references here
+are cvxopt's own solve and SciPy's SuperLU, on a meshed cantilever (hex20, 4 × 2 × 2).
+"""
+
+from __future__ import annotations
+
+import sys
+
+import numpy as np
+import pytest
+
+from contact.compliance.fe import cholmod_dense
+from contact.compliance.fe.cholmod_dense import dense_solver
+from contact.compliance.fe.elasticity import elastic_model, factorise
+from contact.compliance.fe.mapped_mesh import mapped_mesh
+
+
+def _cantilever():
+    mm = mapped_mesh((4, 2, 2), lambda p: np.vstack([10.0 * p[0], 2.0 * p[1], 2.0 * p[2]]))
+    model = elastic_model(mm.mesh, "hex20", 206000.0, 0.3)
+    clamp = mm.nodes_where(lambda p: p[0] < 1e-9)
+    clamp = clamp[clamp < model.basis.N]
+    return model, (3 * clamp[:, None] + np.arange(3)).ravel()
+
+
+def _factor(model, fixed):
+    """cvxopt's factor of K_ff (lower triangle) and its own column-by-column solve."""
+    import scipy.sparse as sp
+    from cvxopt import cholmod, matrix, spmatrix
+
+    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
+    low = sp.tril(model.stiffness, format="csr")[free][:, free].tocsc()
+    cols = np.repeat(np.arange(low.shape[1], dtype=np.int64), np.diff(low.indptr))
+    mat = spmatrix(low.data, low.indices.astype(np.int64), cols, size=low.shape)
+    factor = cholmod.symbolic(mat, uplo="L")
+    cholmod.numeric(mat, factor)
+
+    def own(b):
+        x = matrix(np.asfortranarray(b, dtype=float))
+        cholmod.solve(factor, x, sys=0)
+        return np.asarray(x)
+
+    return factor, own, free
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="found on Linux only")
+def test_dense_block_solve_equals_cvxopt_solve():
+    """On Linux the dense solver is found in cvxopt's CHOLMOD library; a block of 70
+    right-hand sides (dense and unit-load-like sparse columns, a zero column) is solved to
+    1e-12 of cvxopt's column-by-column solve (the same factor, the same triangular
+    solves; measured equal to the bit on the default pinion model) and to 1e-9 of SuperLU
+    (another factorisation: round-off of a matrix of condition ~1e6)."""
+    model, fixed = _cantilever()
+    factor, own, free = _factor(model, fixed)
+    solve = dense_solver(factor, own)
+    assert solve is not None
+    rng = np.random.default_rng(11)
+    b = rng.standard_normal((free.size, 70))
+    b[:, 40:] = 0.0
+    b[rng.integers(0, free.size, 30), np.arange(40, 70)] = 1.0
+    b[:, 55] = 0.0
+    got = solve(b)
+    ref = own(b)
+    scale = np.abs(ref).max()
+    np.testing.assert_allclose(got, ref, rtol=0, atol=1e-12 * scale)
+    assert not got[:, 55].any()
+    lu = factorise(model.stiffness, fixed, "superlu")
+    full = np.zeros((model.n_dofs, b.shape[1]))
+    full[free] = b
+    np.testing.assert_allclose(got, lu.solve(full)[free], rtol=0, atol=1e-9 * scale)
+    assert solve(np.empty((free.size, 0))).shape == (free.size, 0)
+
+
+def test_dense_solver_refuses_what_is_not_a_factor():
+    """Anything but cvxopt's real factor capsule gives None (the caller keeps cvxopt's
+    solves), never a crash."""
+    assert dense_solver(object(), lambda b: b) is None
+
+
+def test_sparse_fallback_where_the_dense_solve_is_missing(monkeypatch):
+    """Where the dense solve cannot be reached (not Linux, another cvxopt build), the
+    factorisation solves with cvxopt's sparse solves: the same displacements (1e-12)."""
+    model, fixed = _cantilever()
+    rhs = np.random.default_rng(12).standard_normal((model.n_dofs, 50))
+    ref = factorise(model.stiffness, fixed, "cholmod").solve(rhs)
+    monkeypatch.setattr(cholmod_dense, "dense_solver", lambda factor, reference: None)
+    got = factorise(model.stiffness, fixed, "cholmod").solve(rhs)
+    np.testing.assert_allclose(got, ref, rtol=0, atol=1e-12 * np.abs(ref).max())
+
+
+def test_a_dense_solve_that_disagrees_falls_back(monkeypatch, caplog):
+    """A dense solve that fails its first check (an incompatible library) is dropped with
+    one warning, and the sparse solves give the displacements."""
+    model, fixed = _cantilever()
+    rhs = np.random.default_rng(13).standard_normal((model.n_dofs, 20))
+    ref = factorise(model.stiffness, fixed, "cholmod").solve(rhs)
+
+    def broken(factor, reference):
+        def solve(b):
+            raise RuntimeError("CHOLMOD's dense solve differs from cvxopt's")
+        return solve
+
+    monkeypatch.setattr(cholmod_dense, "dense_solver", broken)
+    fac = factorise(model.stiffness, fixed, "cholmod")
+    with caplog.at_level("WARNING", logger="contact.compliance.fe.cholmod_dense"):
+        got = fac.solve(rhs)
+        again = fac.solve(rhs)
+    assert sum("sparse solves used instead" in r.getMessage() for r in caplog.records) == 1
+    np.testing.assert_allclose(got, ref, rtol=0, atol=1e-12 * np.abs(ref).max())
+    np.testing.assert_array_equal(again, got)
+
+
+def test_lower_triangle_assembly_equals_the_whole_ks_to_the_bit(monkeypatch):
+    """``elastic_model(..., lower=True)`` (what a CHOLMOD build assembles, issue 75) stores
+    exactly the lower triangle of the whole K: the same pattern and the same values to the
+    bit (each block's duplicates summed as in the whole K, the blocks' pairwise sums
+    decided on the whole K's sizes), over many blocks (7 elements each) of a distorted
+    mesh, so the FE coefficients do not move."""
+    import scipy.sparse as sp
+
+    from contact.compliance.fe import elasticity
+
+    monkeypatch.setattr(elasticity, "_BLOCK", 7)
+    mm = mapped_mesh((6, 4, 3), lambda p: np.vstack([10.0 * p[0] + p[1] ** 2, 2.0 * p[1],
+                                                     2.0 * p[2] + 0.3 * p[0]]))
+    full = elastic_model(mm.mesh, "hex20", 206000.0, 0.3)
+    low = elastic_model(mm.mesh, "hex20", 206000.0, 0.3, lower=True)
+    want = sp.tril(full.stiffness, format="csr")
+    got = low.stiffness
+    want.sort_indices()
+    got.sort_indices()
+    assert got.nnz == want.nnz
+    np.testing.assert_array_equal(got.indptr, want.indptr)
+    np.testing.assert_array_equal(got.indices, want.indices)
+    np.testing.assert_array_equal(got.data, want.data)
+
+
+def test_nested_dissection_orders_the_free_dofs_and_solves_alike():
+    """METIS's nested dissection (pymetis, the ``fe`` extra; issue 75) is a permutation of
+    the free dofs, and CHOLMOD factorising in that order gives the displacements of its own
+    AMD ordering to round-off (1e-10 relative: another elimination order of the same
+    matrix, condition ~1e6), in process and in the lean worker alike."""
+    pytest.importorskip("pymetis")
+    from contact.compliance.fe.elasticity import nested_dissection
+
+    model, fixed = _cantilever()
+    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
+    order = nested_dissection(model.basis.element_dofs, model.basis.N, free)
+    assert order is not None and np.array_equal(np.sort(order), np.arange(free.size))
+    rhs = np.random.default_rng(14).standard_normal((model.n_dofs, 30))
+    ref = factorise(model.stiffness, fixed, "cholmod").solve(rhs)
+    got = factorise(model.stiffness, fixed, "cholmod", ordering=order).solve(rhs)
+    np.testing.assert_allclose(got, ref, rtol=0, atol=1e-10 * np.abs(ref).max())
+    iso = factorise(model.stiffness, fixed, "cholmod", ordering=order, isolated=True)
+    np.testing.assert_array_equal(iso.solve(rhs), got)
+    iso.close()
+
+
+def test_without_pymetis_no_ordering(monkeypatch):
+    """Without pymetis the ordering is None: CHOLMOD orders by AMD, as before."""
+    from contact.compliance.fe.elasticity import nested_dissection
+
+    monkeypatch.setitem(sys.modules, "pymetis", None)
+    model, fixed = _cantilever()
+    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
+    assert nested_dissection(model.basis.element_dofs, model.basis.N, free) is None

@@ -1,0 +1,163 @@
+"""The verdict's root-stress and scuffing checks (issue 72 item 2,
+contact/study/verdict_checks.py), against hand calculations on synthetic analyses and on
+the default case's own analysis.
+
+The synthetic trees hold only what the checks read: ``/ltca`` with ``root_stress_max``
+(torque, member) and the members' materials, ``/rating`` with ISO 10300-3's σ_FP, K_A, K_v,
+S_Fmin, the design torque and Y_NT, ``/scuffing_micropitting`` with the LTCA's S_B and
+``/rating/flash_temperature`` with the standard's two variants and their spread. The hand
+calculations are written out in each test; they are exact arithmetic, so the tolerance is
+the two decimals the finding prints.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from contact import verdict
+from contact.study.verdict_checks import root_stress_safety
+
+MAT = "case_carburised_steel"  # σ_Flim·Y_ST 850 MPa, Y_NT static 2.5 at grade MQ
+
+
+def _ltca(torques, root):
+    return xr.Dataset(
+        {"root_stress_max": (("torque", "member"), np.asarray(root, float))},
+        coords={"torque": np.asarray(torques, float),
+                "member_label": ("member", ["pinion", "gear"])},
+        attrs={"material_pinion": MAT, "material_gear": MAT})
+
+
+def _rating(torques, sigma_fp, k_a, k_v, design):
+    return xr.Dataset(
+        {"sigma_FP": ("member", np.asarray(sigma_fp, float)), "K_A": k_a,
+         "K_v": ("torque", np.asarray(k_v, float)), "S_Fmin": 1.3,
+         "Y_NT": ("member", [1.0, 1.0]), "load_cycles": ("member", [np.nan, np.nan]),
+         "design_torque": design},
+        coords={"torque": np.asarray(torques, float)})
+
+
+def _tree(groups, attrs=None):
+    tree = xr.DataTree.from_dict({"/": xr.Dataset(attrs=attrs or {}), **groups})
+    return tree
+
+
+def _found(v, check):
+    return [f for f in v.findings if f.check == check]
+
+
+def test_root_stress_against_sigma_fp_by_hand():
+    """σ_FP = σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X = 425·2·1·0.99·0.98·1 = 824.67 MPa.
+    At 100 N·m (the design torque), pinion FE peak 500 MPa, K_A 1.25, K_v 1.1:
+    σ_F,FE = 500·1.25·1.1 = 687.5 MPa, S_F = 824.67/687.5 = 1.20 < 1.3: fail.
+    Gear 400 MPa: 550 MPa, S_F 1.50: no finding.
+    At 150 N·m, above the design torque at long life, pinion 600 MPa, K_v 1.05:
+    787.5 MPa, S_F 1.05: attention (a finite life); gear 1600 MPa: 2100 MPa, above the
+    static strength 824.67·2.5 = 2061.7 MPa: fail, no life."""
+    fp = 425 * 2 * 1.0 * 0.99 * 0.98 * 1.0
+    torques = [100.0, 150.0]
+    root = [[500.0, 400.0], [600.0, 1600.0]]
+    rt = _rating(torques, [fp, fp], 1.25, [1.1, 1.05], 100.0)
+    s = root_stress_safety(np.asarray(root), rt)
+    np.testing.assert_allclose(s, [[fp / 687.5, fp / 550.0], [fp / 787.5, fp / 2100.0]],
+                               rtol=1e-12)
+    v = verdict(_tree({"/ltca": _ltca(torques, root), "/rating": rt}))
+    assert "root_stress" in v.checks
+    found = _found(v, "root_stress")
+    assert sorted((f.severity, f.reason.split(":")[0]) for f in found) == sorted([
+        ("fail", "FE root stress of the pinion at 100 N·m"),
+        ("attention", "FE root stress of the pinion at 150 N·m"),
+        ("fail", "FE root stress of the gear at 150 N·m")])
+    text = " | ".join(f.reason for f in found)
+    assert "500 MPa × K_A 1.25 × K_v 1.100 = 688 MPa against σ_FP 825 MPa" in text
+    assert "S_F 1.20 below S_Fmin 1.3" in text
+    assert "S_F 1.05 below S_Fmin 1.3 at long life: above the design torque 100 N·m" in text
+    assert "above the static strength 2062 MPa" in text
+
+
+def test_root_stress_without_a_rating_against_the_material():
+    """No ISO 10300 rating: σ_FE = σ_Flim·Y_ST = 425·2 = 850 MPa (grade MQ), static
+    850·2.5 = 2125 MPa, K_A = K_v = 1. 900 MPa: attention; 2200 MPa: fail; 800: none."""
+    v = verdict(_tree({"/ltca": _ltca([50.0], [[900.0, 800.0]])}))
+    (f,) = _found(v, "root_stress")
+    assert f.severity == "attention" and "above σ_FE = σ_Flim·Y_ST 850 MPa" in f.reason
+    v = verdict(_tree({"/ltca": _ltca([50.0], [[2200.0, 800.0]])}))
+    (f,) = _found(v, "root_stress")
+    assert f.severity == "fail" and "static strength 2125 MPa" in f.reason
+
+
+@pytest.mark.parametrize("said, why", [
+    ("not requested (steps)", "no root stress: the chain skipped its step"),
+    ("root stress not computed: the FE model failed (mesh)",
+     "no root stress: root stress not computed: the FE model failed (mesh)"),
+    (None, "no root stress: /ltca has no root_stress_max"),
+])
+def test_root_stress_missing_is_listed_not_checked(said, why):
+    lt = _ltca([50.0], [[1.0, 1.0]]).drop_vars("root_stress_max")
+    v = verdict(_tree({"/ltca": lt}, {"root_stress_not_run": said} if said else None))
+    assert "root_stress" not in v.checks
+    assert dict(v.unchecked)["root_stress"].startswith(why)
+    assert any(line.startswith("  not checked: ") and "root_stress" in line
+               for line in v.lines())
+
+
+def _flash(torques, s, low, high):
+    return xr.Dataset(
+        {"scuffing_safety": (("variant", "torque"), np.asarray(s, float)),
+         "scuffing_safety_low": (("variant", "torque"), np.asarray(low, float)),
+         "scuffing_safety_high": (("variant", "torque"), np.asarray(high, float))},
+        coords={"torque": np.asarray(torques, float),
+                "variant_label": ("variant", ["standard", "lengthwise_sliding"])})
+
+
+def test_scuffing_standard_below_its_minimum_is_said_beside_the_judged_one():
+    """The issue's 300 N·m case: the LTCA's S_B 1.82 (judged, passes), the standard's 1.40
+    (1.02–1.40), the lengthwise-sliding variant's 1.09 (0.83–1.09): one attention finding,
+    for the variant whose uncertain constants put S_B below 1, naming the judged S_B. At
+    400 N·m the standard's own S_B 0.95 is below 1: a finding for each variant."""
+    sm = xr.Dataset({"scuffing_safety": ("torque", [1.82, 1.30])},
+                    coords={"torque": [300.0, 400.0]})
+    flash = _flash([300.0, 400.0], [[1.40, 0.95], [1.09, 0.80]],
+                   [[1.02, 0.70], [0.83, 0.60]], [[1.40, 0.95], [1.09, 0.80]])
+    tree = _tree({"/ltca": _ltca([300.0, 400.0], [[1.0, 1.0], [1.0, 1.0]]),
+                  "/scuffing_micropitting": sm, "/rating": xr.Dataset(
+                      coords={"torque": [300.0, 400.0]}),
+                  "/rating/flash_temperature": flash})
+    v = verdict(tree)
+    assert "scuffing" in v.checks and "scuffing_standard" in v.checks
+    found = _found(v, "scuffing_standard")
+    assert all(f.severity == "attention" for f in found)
+    assert len(found) == 3
+    text = " | ".join(f.reason for f in found)
+    assert ("ISO/TS 6336-20 with the hypoid's lengthwise sliding (not a standard) gives S_B "
+            "1.09 at 300 N·m, but its uncertain constants (μ_m's form, θ_S with η^−0.05) put "
+            "it down to 0.83, below 1; the verdict judges the LTCA's S_B, 1.82") in text
+    assert ("(the standard) gives S_B 0.95 (0.70–0.95 over its uncertain constants) at "
+            "400 N·m, below 1; the verdict judges the LTCA's S_B, 1.30") in text
+    assert not _found(v, "scuffing")  # the judged S_B passes
+
+
+def test_the_judged_scuffing_safety_is_named():
+    sm = xr.Dataset({"scuffing_safety": ("torque", [0.9])}, coords={"torque": [300.0]})
+    v = verdict(_tree({"/ltca": _ltca([300.0], [[1.0, 1.0]]),
+                       "/scuffing_micropitting": sm}))
+    (f,) = _found(v, "scuffing")
+    assert f.severity == "fail"
+    assert "S_B 0.9 at 300 N·m below 1 (the LTCA's: Blok's flash" in f.reason
+    assert dict(v.unchecked)["scuffing_standard"].startswith(
+        "no /rating/flash_temperature: no /rating group")
+
+
+def test_a_root_stress_not_computed_at_a_torque_is_said():
+    """A NaN root stress (the FE model could not place a torque's loads) is not passed
+    silently: an attention finding with the reason the step stored."""
+    lt = _ltca([50.0, 500.0], [[100.0, 90.0], [300.0, np.nan]])
+    lt["root_stress_max"].attrs["not_computed"] = (
+        "gear at 500 N m: not computed (NaN): 2.1 % of the load lies off its FE load grid.")
+    v = verdict(_tree({"/ltca": lt}))
+    (f,) = _found(v, "root_stress")
+    assert f.severity == "attention"
+    assert f.reason == ("root stress of the gear at 500 N·m not checked: not computed (NaN): "
+                        "2.1 % of the load lies off its FE load grid.")
