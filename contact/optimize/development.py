@@ -537,6 +537,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     coast_seconds = time.process_time() - c_coast
     developed = coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
+    root_safety, root_text = math.nan, ""
+    if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
+        # the FE root stress of the written case at the design torque (ltca run's FE
+        # model, cached: ltca run reads it), the torque lowered to its capacity if below
+        best, coast, root_safety, root_text = _root_capacity(case, best, coast, targets,
+                                                             setup, say)
     tolerance = {}
     for lab, mis in _excursions(targets):
         try:
@@ -557,9 +563,44 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                time.process_time() - c_check - coast_seconds,
                                setup["lowered"], coast.best, tuple(coast.evaluations),
                                coast.status, coast.before, coast_seconds,
-                               setup.get("pressure_limit", math.inf))
+                               setup.get("pressure_limit", math.inf), root_safety,
+                               root_text)
     say(result.headline())
     return result
+
+
+def _root_capacity(case: Case, best: DevelopmentEvaluation, coast: _CoastOutcome,
+                   targets: DevelopmentTargets, setup: dict[str, Any],
+                   say: Callable[[str], None]
+                   ) -> tuple[DevelopmentEvaluation, _CoastOutcome, float, str]:
+    """The written case's FE root stress at the design torque
+    (:func:`contact.optimize.development_root.root_capacity`); where that lowered the
+    design torque, the drive flank's metrics are those of its analysis at the new torques
+    and the coast flank is analysed again there at :data:`CHECK_LTCA` (the coast flank's
+    root stress is not checked: its check is contact-only). Returns the drive and coast
+    outcome, S_F,FE at the design torque and the reason the torque was lowered (empty
+    where not)."""
+    from contact.optimize.development_root import root_capacity
+
+    tree, safety, text = root_capacity(case, setup, targets.light_load, say)
+    if tree is None:
+        return best, coast, safety, text
+    ms, grid = _metrics(tree, case), (*_grid(tree), static_strength(tree))
+    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                             pressure_limit=grid[4])
+    best = dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
+                               met=full[2], full=full)
+    if coast.best is not None:
+        try:
+            mc, gc = _analyse(case, setup["torques"], options=CHECK_LTCA, flank="coast")
+            fc = development_score(mc, targets, gc[:4], centre_v=setup["centre_v"],
+                                   pressure_limit=gc[4])
+            coast = coast._replace(best=dataclasses.replace(
+                coast.best, metrics=mc, objective=fc[0], shortfalls=fc[1], met=fc[2],
+                full=fc))
+        except Exception as exc:  # reported, never fatal: its metrics stay the higher torque's
+            log.info("development coast check at the root-stress torque failed: %s", exc)
+    return best, coast, safety, text
 
 
 def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],

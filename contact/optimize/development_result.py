@@ -135,6 +135,12 @@ class DevelopmentResult:
     pressure_limit : float — [MPa]
         The flank peak pressure allowed at the design torque (``max_flank_pressure`` or
         the static strength, :func:`static_strength`); inf where not known.
+    root_safety : float — [1]
+        S_F,FE of the weaker member at the design torque written, from the FE root stress
+        of the written case (:func:`contact.optimize.development_root.root_capacity`);
+        NaN where not computed (a design torque given, no rating, the FE model failed).
+    root_text : str
+        Why the design torque was lowered to the root-stress capacity (empty where not).
     """
 
     basic: BasicDesign
@@ -157,6 +163,8 @@ class DevelopmentResult:
     coast_before: dict[str, np.ndarray] | None = None
     coast_seconds: float = 0.0
     pressure_limit: float = math.inf
+    root_safety: float = math.nan
+    root_text: str = ""
 
     @property
     def tolerant(self) -> bool:
@@ -221,8 +229,16 @@ class DevelopmentResult:
                 f"{m['lte_peak_to_peak'][1]:.0f} urad at {self.torque[1]:.4g} N m; "
                 f"{'tolerant' if self.tolerant else 'not tolerant'} at dE +/-"
                 f"{t.offset_tolerance:g} mm, dP +/-{t.mounting_tolerance:g} mm; "
-                f"{self._coast_headline()}; {self._pressures_text()}; "
-                f"{self.seconds:.0f} s CPU")
+                f"{self._coast_headline()}; {self._pressures_text()}"
+                f"{self._root_headline()}; {self.seconds:.0f} s CPU")
+
+    def _root_headline(self) -> str:
+        if not math.isfinite(self.root_safety):
+            return ""
+        why = (" (design torque lowered to the root-stress capacity)" if self.root_text
+               else "")
+        return (f"; FE root stress S_F,FE {self.root_safety:.2f} at "
+                f"{self.torque[1]:.4g} N m{why}")
 
     @property
     def coast_static_capacity(self) -> float:
@@ -377,6 +393,8 @@ class DevelopmentResult:
                     "sampling); coast_achieved: the same metrics as achieved",
             "torque_Nm": [float(x) for x in self.torque],
             "design_torque_source": self.torque_source,
+            "root_safety_fe": (round(float(self.root_safety), 4)
+                               if math.isfinite(self.root_safety) else "not computed"),
             "prescriptions": {k: float(v) for k, v in b.values.items()},
             "targets_met": int(b.full[2]),
             "tolerant": int(self.tolerant),
