@@ -429,7 +429,10 @@ def short_developments():
     for n in (0, 2):
         lines = []
         targets = DevelopmentTargets(coast_max_evaluations=n, **_SHORT)
-        out[n] = develop(basic, targets=targets, progress=lines.append), lines
+        # without the FE root-stress check (an FE model build, ~1 min CPU: tested on
+        # hand-made analyses in tests/test_development_root.py, measured in the slow test)
+        out[n] = develop(basic, targets=targets, progress=lines.append,
+                         root_stress=False), lines
     return out
 
 

@@ -408,7 +408,7 @@ def _sample_then_minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray,
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
-            synthesis_progress: Any = None) -> DevelopmentResult:
+            synthesis_progress: Any = None, root_stress: bool = True) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -424,6 +424,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     synthesis_progress : optional
         The ``progress`` of the final synthesis of the developed design
         (:func:`geometry.synthesis.case_synthesis.synthesize`).
+    root_stress : bool, optional
+        Check the written case's FE root stress at the design torque and lower the design
+        torque to its root-stress capacity where S_F,FE < S_Fmin
+        (:func:`contact.optimize.development_root.root_capacity`; default True: one FE
+        model build, ``ltca run``'s own, which it then reads from the cache).
 
     Returns
     -------
@@ -538,7 +543,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     developed = coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
     root_safety, root_text = math.nan, ""
-    if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
+    if (root_stress and basic.options.design_torque is None
+            and basic.rating.get("design_torque") is None):
         # the FE root stress of the written case at the design torque (ltca run's FE
         # model, cached: ltca run reads it), the torque lowered to its capacity if below
         best, coast, root_safety, root_text = _root_capacity(case, best, coast, targets,
