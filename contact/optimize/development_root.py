@@ -94,13 +94,15 @@ def root_safety(tree) -> tuple[np.ndarray, float, str]:
 
 def _root_tree(case, torques: list[float]):
     """``ltca run``'s drive-flank analysis of ``case`` at ``torques`` with the root stress
-    (its default FE model) and the ISO 10300 rating, without the mesh interface and the
-    efficiency."""
+    (its default FE model) and the ISO 10300 rating, without the mesh interface (the
+    efficiency stage is run: the rating takes the pinion speed from it, as in
+    ``ltca run``)."""
     from contact.chain import AnalysisChain
     from contact.optimize.development import CHECK_LTCA
     from contact.pipeline import run_analysis
 
-    steps = AnalysisChain.contact_only().with_root_stress().with_load_capacity()
+    steps = (AnalysisChain.contact_only().with_root_stress().with_efficiency()
+             .with_load_capacity())
     return run_analysis(case, torques, flank="drive", options=CHECK_LTCA, deviations=False,
                         steps=steps)
 
