@@ -470,7 +470,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     meets every target) and the chosen one is scored by that check. Where the design
     torque is the rating's capacity (the default) and the chosen design's flank peak
     pressure there exceeds the static strength, the design torque is lowered to the
-    bearing's static flank capacity (:func:`_static_capacity`).
+    bearing's static flank capacity (:func:`_static_capacity`); after the final synthesis,
+    where the written case's FE root stress gives S_F,FE < S_Fmin at the design torque,
+    to its root-stress capacity (:func:`contact.optimize.development_root.root_capacity`;
+    ``root_stress``), the drive and coast flank analysed again at the new torques.
 
     3. **coast flank** (:func:`_coast_development`): the chosen design's coast flank, as
        synthesised from its own prescriptions, analysed at :data:`CHECK_LTCA` at the same
