@@ -114,10 +114,12 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
                   say: Callable[[str], None]) -> tuple[Any, float, str]:
     """Check the written ``case``'s FE root stress at the design torque
     (``setup["torques"][1]``) and lower the design torque to its root-stress capacity where
-    S_F,FE < S_Fmin there: T ← :func:`root_capacity_step`, checked at the new light
-    (``light_load`` × T) and design torque and stepped again from the new safety while
-    still below (at most :data:`ROOT_STEPS`). ``setup`` gets the new torques, source and
-    ``lowered`` where lowered.
+    S_F,FE < S_Fmin there: T ← :func:`root_capacity_step` with the exponent b of
+    S_F,FE ∝ T^(−b) measured between the light and the design torque, checked at the new
+    light (``light_load`` × T) and design torque and stepped again, b measured between the
+    last two design torques, while still below (at most :data:`ROOT_STEPS`). ``setup``
+    gets the new torques, source and ``lowered`` where lowered. An analysis that fails is
+    said through ``say`` and never raised (the torque last checked is kept).
 
     Returns
     -------
@@ -142,24 +144,33 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
         return None, s, ""
     # the exponent b of S_F,FE ∝ T^(-b) first from the light and the design torque, then
     # from the last two design torques (the local slope)
-    first, t, tree = (s, torque), torque, None
+    first, t, tree, used = (s, torque, member), torque, None, []
     b = _exponent(torques[0], float(safety[0]), torque, s)
     for _ in range(ROOT_STEPS):
         new = root_capacity_step(t, s, s_min, exponent=b)
         if new >= t:
             break
-        torques = [light_load * new, new]
-        tree = _root_tree(case, torques)
-        safety, s_min, member = root_safety(tree)
+        try:
+            step = _root_tree(case, [light_load * new, new])
+            safety, s_min, member = root_safety(step)
+        except Exception as exc:  # reported, never fatal: the last torque checked is kept
+            log.info("development root stress at %g N m failed: %s", new, exc)
+            say(f"development: root stress at {new:.4g} N m not computed ({exc})")
+            break
+        tree, torques, used = step, [light_load * new, new], [*used, b]
         b = _exponent(new, float(safety[-1]), t, s, b)
         t, s = new, float(safety[-1])
         if s >= s_min:
             break
+    if tree is None:  # no lower torque checked
+        return None, first[0], ""
     source = (f"the root-stress capacity of the developed bearing: its FE root stress gives "
-              f"S_F,FE {first[0]:.2f} ({member}) below S_Fmin {s_min:g} at the design "
+              f"S_F,FE {first[0]:.2f} ({first[2]}) below S_Fmin {s_min:g} at the design "
               f"torque {first[1]:.4g} N m ({setup['source'].split(',')[0].split(':')[0]}); "
-              f"T (0.99 S_F,FE/S_Fmin)^(1/b), b = {b:.2f} measured (S_F,FE ~ T^-b) -> "
-              f"{t:.4g} N m, where S_F,FE is "
+              f"T (0.99 S_F,FE/S_Fmin)^(1/b) in {len(used)} step"
+              f"{'s' if len(used) > 1 else ''}, b = "
+              f"{'/'.join(f'{x:.2f}' for x in used)} measured (S_F,FE ~ T^-b) -> "
+              f"{t:.4g} N m, where S_F,FE ({member}) is "
               f"{s:.2f}{'' if s >= s_min else ' (still below)'}")
     say(f"  design torque {first[1]:.4g} -> {t:.4g} N m: {source}")
     setup.update(torques=torques, source=source, lowered=True)
