@@ -144,7 +144,7 @@ def _pattern(dims) -> str:
 def _fmt(row: dict) -> str:
     st = row.get("stages", {})
     split = "/".join(f"{st.get(k, float('nan')):.0f}"
-                     for k in ("bearing", "relief", "check", "coast"))
+                     for k in ("bearing", "height", "relief", "check", "coast"))
     base = row.get("baseline_cpu")
     head = (f"{row['design']:<20} " + (f"{base:>6.0f} " if base is not None else "")
             + f"{row['synth_cpu']:>6.0f} {split:<11}")
@@ -182,7 +182,7 @@ def main(argv: list[str] | None = None) -> int:
           "coast: its development (plastic % as synthesised->written) and ltca run --flank "
           "coast (verdict, plastic %, CPU)")
     print(f"{'design':<20} " + (f"{'base':>6} " if args.baseline else "")
-          + f"{'synth':>6} {'b/r/c/k':<11} {'run':>6} {'total':>6} {'ok':<4} "
+          + f"{'synth':>6} {'b/h/r/c/k':<11} {'run':>6} {'total':>6} {'ok':<4} "
           f"{'verdict':<10}{'T light/design':<14}{'LTE urad':<10}{'p_max MPa':<11}"
           f"{'pattern':<10}{'RS':<4}{'coast dev':<15}{'coast run':<16}{'cpu':>5}")
     for basic in args.basic:

@@ -34,6 +34,19 @@ import xarray as xr
 DESIGNS = sorted(p for p in (Path(__file__).parent / "data" / "designs").glob("*.toml")
                  if not p.stem.endswith("_unrelieved"))
 
+#: the issue-71 criteria ("done when") each design meets at ``ltca run``, measured
+#: 2026-11-25 with the height stage (docs/own_gear_set.md, step 2): "plastic" no plastic
+#: segment at any torque, "light_edge" no edge contact at the light torque (15 % of the
+#: design torque), "lte60" LTE p-p <= 60 urad at every torque. Not yet met: the spiral
+#: bevel 13x39's LTE (131/92 urad) and its pinion tip edge at light load (0.35 % of the
+#: torque), the truck hypoid's plastic segments at its design torque (0.3 %).
+DONE_WHEN = {
+    "fh_hypoid_11x43": {"plastic", "light_edge", "lte60"},
+    "pc_hypoid_10x43": {"plastic", "light_edge", "lte60"},
+    "spiral_bevel_13x39": {"plastic"},
+    "truck_hypoid_9x37": {"light_edge", "lte60"},
+}
+
 
 @pytest.mark.slow
 @pytest.mark.parametrize("basic", DESIGNS, ids=[p.stem for p in DESIGNS])
@@ -46,6 +59,10 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert main(["synthesize", str(basic), "-o", str(case_path)]) == 0
     out = capsys.readouterr().out
     assert "development: design" in out
+    # the outcome in numbers: each missed target's value and limit, both flanks' pressure
+    assert "flank peak pressure at" in out and "coast" in out
+    head = next(line for line in out.splitlines() if "development: design" in line)
+    assert ", every target met;" in head or "(limit " in head or "(target " in head, head
     case = tomllib.loads(case_path.read_text(encoding="utf-8"))
     assert "Development bearing" in case["source"]
     dev = case["development"]
@@ -61,6 +78,16 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert root.shape == (lt.sizes["torque"], 2)  # pinion and gear at every torque
     assert np.all(np.isfinite(root)) and np.all(root > 0)
     assert "rating" in tree.children and "S_H" in tree["/rating"]
+    # issue 71's criteria, where this design meets them (DONE_WHEN)
+    met = DONE_WHEN.get(basic.stem, set())
+    if "plastic" in met:
+        share = np.nan_to_num(lt["plastic_load_share"].values) if (
+            "plastic_load_share" in lt) else np.zeros(1)
+        assert np.all(share == 0.0), share
+    if "light_edge" in met:  # the light torque is the first (the development's)
+        assert float(np.nan_to_num(lt["pressure_max_edge"].values)[0]) == 0.0
+    if "lte60" in met:
+        assert np.all(lt["lte_peak_to_peak"].values <= 60.0), lt["lte_peak_to_peak"].values
 
     # the coast flank (reverse gear: the full torque on the coast side)
     coast = case["development"]["coast"]

@@ -141,6 +141,14 @@ def run_synthesize(args: argparse.Namespace) -> int:
         if development.torque_lowered:  # the developed bearing's own capacity
             torque, torque_why = development.torque[1], development.torque_source
     case, coast_torque = with_coast_design_torque(case)
+    coast_why = ("the ISO 10300 capacity of the coast side (above it the coast side is rated "
+                 "at a finite life)")
+    if development is not None:  # no higher than the coast flank's static capacity
+        case, coast_static = development.with_coast_capacity(case)
+        if math.isfinite(coast_static):
+            coast_torque, coast_why = coast_static, (
+                "the coast flank's static capacity of its developed bearing (its flank "
+                "peak pressure at the design torque is above the static strength)")
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))
@@ -157,8 +165,7 @@ def run_synthesize(args: argparse.Namespace) -> int:
     print("  design torque: " + (f"{torque:.4g} N m, {torque_why}" if math.isfinite(torque)
                                   else torque_why))
     if math.isfinite(coast_torque):
-        print(f"  coast design torque: {coast_torque:.4g} N m, the ISO 10300 capacity of the "
-              "coast side (above it the coast side is rated at a finite life)")
+        print(f"  coast design torque: {coast_torque:.4g} N m, {coast_why}")
     if development is not None:
         print("  " + development.headline())
     print(f"wrote {path}")

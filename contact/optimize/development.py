@@ -18,13 +18,21 @@ is a production bearing (:class:`DevelopmentTargets`):
   (:mod:`contact.study.vh_check`) at a typical assembly tolerance — and the result says
   whether the pattern stays clear of toe and heel and the edges elastic there.
 
-Two stages (:func:`develop`): the **bearing** (path angle, ellipse length), each design
+Three stages per flank (:func:`develop`), with the levers a gear engineer develops a
+bearing with (Stadtfeld, *Gleason Bevel Gear Technology*, 2014; Litvin & Fuentes 2004 ch.
+9): the **bearing** (path angle, ellipse length: the pattern's bias and length), each design
 a synthesis of its drive flank (:func:`geometry.synthesis.case_synthesis.synthesize` with
-a memo: the coast flank, not varied there, is synthesised once); then the **relief** (tip and
-root relief and their start), each design the synthesis' relief and tip plane alone (the
-same function, so the design analysed is the case written). Each design is analysed on
-its drive flank by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll positions,
-12 segments per curve, shell compliance with the teeth kept across designs,
+a memo: the coast flank, not varied there, is synthesised once); the **height**
+(:func:`_height_stage`): the pinion blade's pressure-angle change
+(:data:`HEIGHT_NAME`, :mod:`geometry.synthesis.blade_change`) found by a 1-D root-find on
+the light-load footprint centre v (:func:`_centre_height`: secant, then regula falsi), with
+the profile crowning (:data:`CROWNING_NAME`) raised where the centred pattern still
+reaches an end of the working depth; then the **relief** (tip and root relief and their
+start), each relief design re-centred by one step of the blade angle with the slope the
+height stage measured (:func:`_recentred`). The height and relief designs are the
+synthesis' step 7 alone (steps 3-6 from the memo), ≈ 0.3 s CPU each. Each design is
+analysed on its drive flank by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll
+positions, 12 segments per curve, shell compliance with the teeth kept across designs,
 :class:`KeptTeeth`; no root stress) at the light and the design torque, summarised by
 :func:`contact.study.summary.point_summary`. The best designs are then checked at
 ``ltca run``'s sampling (:data:`CHECK_LTCA`), and where the chosen one's flank peak
@@ -33,14 +41,21 @@ lowered to what the bearing carries (:func:`_static_capacity`): a design never f
 own check at its own design torque. Then the **coast flank** (:func:`_coast_development`):
 the chosen design's coast flank, synthesised from its own prescriptions, is checked at
 :data:`CHECK_LTCA` at the same light and design torque against the same targets (it
-carries the full torque in reverse gear), and where it misses one it gets the same two
-stages and check on its own prescriptions with its own budget
-(``coast_max_evaluations``); the drive flank's result stays as chosen. The objective
+carries the full torque in reverse gear), and where it misses one it gets the same
+stages and check on its own prescriptions (its own blade-angle change) with its own
+budget (``coast_max_evaluations``); the drive flank's result stays as chosen, and the
+coast side's design torque is capped at the coast flank's static capacity
+(:meth:`DevelopmentResult.with_coast_capacity`). The objective
 (:func:`development_score`) is a sum of squared, dimensionless shortfalls, minimised by a
 bounded Nelder–Mead (``scipy.optimize.minimize``; the relief stage first samples its box
 with scrambled Sobol points, ``scipy.stats.qmc``) that stops as soon as every target is
 met. When the targets conflict (a short pattern and a low LTE on a pinion of few teeth),
-the least objective wins and the case says which targets were missed.
+the least objective wins and the case says which targets were missed, with their values.
+
+The module is split by concern: the targets and their score in
+:mod:`contact.optimize.development_targets`, one design and the result (its text and
+its records in the case) in :mod:`contact.optimize.development_result`; the search, its
+stages and the coast flank here. Every public name is importable from here.
 
 Public names
 ------------
@@ -48,6 +63,7 @@ DevelopmentTargets   the targets (the ``[development]`` table of a basic file)
 targets_from_table   the targets from that table (file units), validated
 VARIABLES            the developed synthesis inputs and their default bounds
 RELIEF_NAMES         those of the relief stage
+HEIGHT_NAME, CROWNING_NAME   the height stage's levers (blade angle, profile crowning)
 COAST_STATUS         what the coast flank's development did, in words
 COARSE_LTCA          the LTCA settings inside the loop
 CHECK_LTCA           the LTCA settings of the final check (ltca run's)
@@ -69,56 +85,61 @@ import logging
 import math
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
 import numpy as np
 
 from contact.ltca import LTCAOptions
-from contact.ltca.plausibility import LTE_SPREAD_LIMIT
+from contact.optimize.development_result import (
+    COAST_STATUS,
+    STATIC_MARGIN,
+    DevelopmentEvaluation,
+    DevelopmentResult,
+    metrics_text,
+)
+from contact.optimize.development_targets import (
+    CROWNING_NAME,
+    FAILED,
+    HEIGHT_NAME,
+    METRIC_NAMES,
+    RELIEF_NAMES,
+    STAGE_TERMS,
+    VARIABLES,
+    DevelopmentTargets,
+    development_score,
+    footprint_centre,
+    targets_from_table,
+    working_depth_centre,
+)
 from geometry.case import Case
 from geometry.core.blas import blas_threads
 from geometry.core.errors import InputError
-from geometry.core.validation import known_fields, real
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import (
-    FLANK_OPTION_UNITS,
     BasicDesign,
     flank_option_values,
     with_flank_options,
 )
 
-__all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "RELIEF_NAMES", "STAGE_TERMS",
-           "VARIABLES",
-           "VERIFIED_DESIGNS", "DevelopmentEvaluation", "DevelopmentResult",
-           "DevelopmentTargets", "KeptTeeth", "design_torque_of", "develop",
-           "development_score", "footprint_centre", "lte_spread", "static_strength",
-           "targets_from_table", "working_depth_centre"]
+__all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNING_STEP",
+           "FAILED", "HEIGHT_DESIGNS", "HEIGHT_NAME", "HEIGHT_SLOPE", "METRIC_NAMES",
+           "RELIEF_NAMES", "STAGE_TERMS", "VARIABLES", "VERIFIED_DESIGNS",
+           "DevelopmentEvaluation", "DevelopmentResult", "DevelopmentTargets", "KeptTeeth",
+           "design_torque_of", "develop", "development_score", "footprint_centre",
+           "lte_spread", "static_strength", "targets_from_table", "working_depth_centre"]
 
 log = logging.getLogger(__name__)
 
-#: The developed synthesis inputs of the drive flank and their default bounds [file
-#: units, ``[synthesis]`` of docs/synthesis.md], in two stages as on the test stand: the
-#: **bearing** (path angle, ellipse length: re-synthesised, steps 3-6 of
-#: :mod:`geometry.synthesis.case_synthesis`) against the light-load pattern and the LTE,
-#: then the **relief** (:data:`RELIEF_NAMES`: the blade's toprem and flankrem only, step 7,
-#: no new synthesis) against the edges at the design torque. The relief starts at most
-#: half-way from M to the ends (the synthesis' default): farther out the rems shorten and
-#: steepen, and on the spiral bevel 13x39 of tests/data/designs a toprem from 0.645 of
-#: the way (corner 1.66 mm above the blade tip, two edge radii) left a fillet the FE tooth
-#: model cannot mesh (contact.compliance.fe: an inverted element). The path angle stays
-#: on the far side of the conjugate contact line (nearly lengthwise for a Formate pair,
-#: −10° to +25°); the relief within the 10–60 µm of automotive practice (Stadtfeld,
-#: *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3; ``geometry.machine.relief``).
-VARIABLES: Mapping[str, tuple[float, float]] = {
-    "path_angle": (-80.0, -25.0),
-    "ellipse_length": (0.15, 0.75),
-    "tip_relief": (0.0, 60.0),
-    "root_relief": (0.0, 60.0),
-    "relief_start": (0.2, 0.5),
-}
-#: the relief inputs (second stage)
-RELIEF_NAMES = ("tip_relief", "root_relief", "relief_start")
+#: step of the profile crowning in the height stage [µm]
+CROWNING_STEP = 10.0
+#: first guess of d(centre v)/d(blade angle change) [1/deg] of the root-find, before it
+#: has measured its own: on the passenger-car hypoid 10x43 of tests/data/designs (drive,
+#: concave flank, the synthesis' default bearing, coarse LTCA at 15 % of 357 N m) a change
+#: of -1/0/+1 deg put the footprint centre at v 0.35/0.68/0.91, i.e. 0.28 per degree
+HEIGHT_SLOPE = 0.28
+#: most designs of one root-find on the pattern's height (each ≈ 0.3 s CPU: steps 3-6
+#: from the memo, the blade turned and relieved again, a coarse LTCA)
+HEIGHT_DESIGNS = 4
 
 #: LTCA settings inside the loop: one mesh cycle, 8 roll positions, 12 segments per curve
 #: (the default analysis has 2 × 20 and 24); shell compliance, no root stress. On the
@@ -150,347 +171,20 @@ SECOND_BEARING_DESIGNS = 6
 #: CPU (18.7 against 12.3 s on the 12x41, 28.7 against 20.3 s on the 11x43): the coast
 #: flank's shortfalls are its edges, which its relief answers
 COAST_BEARING_DESIGNS = 3
-#: objective of a design whose synthesis or analysis failed
-FAILED = 1e6
-#: shortfall scales of the edge share, the plastic share [1] and the LTE [µrad]
-#: (:func:`development_score`)
-_EDGE_SCALE, _PLASTIC_SCALE, _LTE_SCALE = 0.005, 0.001, 10.0
 
 
-@dataclass(frozen=True)
-class DevelopmentTargets:
-    """The development bearing a synthesis must reach (``[development]`` of a basic file).
-
-    Parameters
-    ----------
-    light_load : float — [1]
-        Light-load torque as a fraction of the design torque, in (0, 0.5]; default 0.15
-        (the pattern is developed at 10–20 % of the design torque, as on a roll tester
-        under light brake load).
-    pattern_length : float — [1]
-        Lengthwise extent of the light-load pattern, fraction of the face width, in
-        (0.1, 0.9); default 0.5: "about half the face width", the pattern the V-H check's
-        toe and heel limits assume (:data:`contact.study.vh_check.VH_DEFAULT_LIMITS`).
-    pattern_length_tolerance : float — [1]
-        Accepted deviation of the length; default 0.1 (two nodes of the gear grid).
-    pattern_centre_u : float — [1]
-        Light-load pattern centre along the face, toe 0 → heel 1; default 0.45: centred
-        with a slight toe bias, since the pattern spreads towards the heel under load
-        (US Army TM 9-2320-273-34 §10-29, fig. 10-27: a satisfactory hypoid pattern
-        "favors the toe and is centered between the top and bottom of the tooth"). The
-        centre is that of the pattern's footprint (:func:`footprint_centre`): the source
-        judges a marking-compound pattern.
-    pattern_centre_v : float or None — [1]
-        Centre along the depth, root cone 0 → face cone 1; default None: the middle of the
-        working depth (TM 9-2320-273-34: "centered between the top and bottom"), whose
-        lower end is the lowest point the pinion tip reaches,
-        1 − (h_a1 + h_a2)/(2 (h_a2 + h_f2)) with the outer addenda and dedendum of the
-        blanks (:func:`working_depth_centre`).
-    centre_tolerance : float — [1]
-        Accepted deviation of each centre coordinate; default 0.08.
-    clearance : float — [1]
-        Least distance of the light-load pattern's ends from the outermost rows of the
-        gear grid (toe, heel, root, tip), fraction of face width or depth; default 0.04.
-    max_edge_share : float — [1]
-        Largest share of the torque carried by edge contact at the design torque;
-        default 0.02 (the loaded pattern may just touch an edge of the relief).
-    max_plastic_share : float — [1]
-        Largest share of the torque on segments at their contact-pressure limit at any
-        roll, light and design torque; default 0 (no plastic edge).
-    max_lte : float — [µrad]
-        Largest LTE peak-to-peak at the light and the design torque; default 40 µrad.
-    max_flank_pressure : float or None — [MPa]
-        Largest flank peak pressure at the design torque; default None: the static
-        strength σ_Hlim·Z_NT,static of the weaker member's material at grade MQ, the limit
-        above which the verdict finds "no life at this torque"
-        (:mod:`contact.study.verdicts`, ISO 6336-2/-5).
-    offset_tolerance, mounting_tolerance : float — [mm]
-        The excursions ΔE = ±V and ΔP = ±H of the tolerance check (the V-H check's
-        directions); default 0.05 mm each (a careful axle assembly, well inside the V-H
-        check's ±0.4/±0.3 mm grid).
-    max_evaluations : int
-        Most designs analysed; default 22, at most 6 of them in the bearing stage (each a
-        synthesis, ≈ 2 s CPU), the rest in the relief stage (each ≈ 0.3 s): 10 on the best
-        bearing, and :data:`SECOND_BEARING_DESIGNS` (6) on the next where the first
-        misses the LTE target.
-    coast_max_evaluations : int
-        Most designs of the coast flank's search, after the drive flank is chosen, at the
-        same light and design torque and on the same targets (the coast flank carries the
-        full torque in reverse gear); default 10 (:data:`COAST_BEARING_DESIGNS` = 3
-        bearings, 7 reliefs), in [0, 500]; 0 turns the coast development off (the coast
-        flank is synthesised from its own prescriptions and checked once). The search runs
-        only where the coast flank as synthesised misses a target.
-    variables : mapping name → (low, high)
-        Developed synthesis inputs (``[synthesis]`` names and units); default
-        :data:`VARIABLES`; ``te_level`` and ``approach`` may be added (bearing stage).
-
-    Raises
-    ------
-    InputError
-        On construction, a field outside its range above (not a finite number, or
-        ``max_evaluations`` not an integer in [1, 500], ``coast_max_evaluations`` not
-        one in [0, 500]), or ``variables`` empty, naming
-        something other than a synthesis input, or giving a bound that is not
-        ``[low, high]`` with low < high; the message names the field
-        (``development.<field>``) and the accepted range.
-    """
-
-    light_load: float = 0.15
-    pattern_length: float = 0.5
-    pattern_length_tolerance: float = 0.1
-    pattern_centre_u: float = 0.45
-    pattern_centre_v: float | None = None
-    centre_tolerance: float = 0.08
-    clearance: float = 0.04
-    max_edge_share: float = 0.02
-    max_plastic_share: float = 0.0
-    max_lte: float = 40.0
-    max_flank_pressure: float | None = None
-    offset_tolerance: float = 0.05
-    mounting_tolerance: float = 0.05
-    max_evaluations: int = 22
-    coast_max_evaluations: int = 10
-    variables: Mapping[str, tuple[float, float]] = field(
-        default_factory=lambda: dict(VARIABLES))
-
-    def __post_init__(self) -> None:
-        def chk(name, low, high, unit="1", **kw):
-            object.__setattr__(self, name, real(f"development.{name}", getattr(self, name),
-                                                unit=unit, low=low, high=high, **kw))
-
-        chk("light_load", 0.0, 0.5, low_open=True)
-        chk("pattern_length", 0.1, 0.9, low_open=True, high_open=True)
-        chk("pattern_length_tolerance", 0.0, 0.5, low_open=True)
-        chk("pattern_centre_u", 0.1, 0.9)
-        if self.pattern_centre_v is not None:
-            chk("pattern_centre_v", 0.1, 0.9)
-        chk("centre_tolerance", 0.0, 0.5, low_open=True)
-        chk("clearance", 0.0, 0.3)
-        chk("max_edge_share", 0.0, 1.0)
-        chk("max_plastic_share", 0.0, 1.0)
-        chk("max_lte", 0.0, 1000.0, unit="urad", low_open=True)
-        if self.max_flank_pressure is not None:
-            chk("max_flank_pressure", 0.0, 1e5, unit="MPa", low_open=True)
-        chk("offset_tolerance", 0.0, 5.0, unit="mm")
-        chk("mounting_tolerance", 0.0, 5.0, unit="mm")
-        for name, low in (("max_evaluations", 1), ("coast_max_evaluations", 0)):
-            n = getattr(self, name)
-            if isinstance(n, bool) or not isinstance(n, int) or not low <= n <= 500:
-                raise InputError(f"development.{name}: must be an integer in [{low}, 500], "
-                                 f"got {n!r}")
-        if not isinstance(self.variables, Mapping) or not self.variables:
-            raise InputError("development.variables: give at least one synthesis input as "
-                             f"name = [low, high]; accepted: {', '.join(FLANK_OPTION_UNITS)}")
-        out = {}
-        for name, pair in self.variables.items():
-            if name not in FLANK_OPTION_UNITS:
-                raise InputError(f"development.variables.{name}: not a synthesis input; "
-                                 f"accepted: {', '.join(FLANK_OPTION_UNITS)}")
-            if not isinstance(pair, (list, tuple)) or len(pair) != 2:
-                raise InputError(f"development.variables.{name}: must be [low, high] "
-                                 f"[{FLANK_OPTION_UNITS[name]}], got {pair!r}")
-            lo, hi = (real(f"development.variables.{name}", v,
-                           unit=FLANK_OPTION_UNITS[name]) for v in pair)
-            if not lo < hi:
-                raise InputError(f"development.variables.{name}: must be low < high, got "
-                                 f"[{lo:g}, {hi:g}] {FLANK_OPTION_UNITS[name]}")
-            out[name] = (lo, hi)
-        object.__setattr__(self, "variables", out)
 
 
-def targets_from_table(table: Mapping[str, Any] | None) -> DevelopmentTargets:
-    """The targets of a ``[development]`` table (file units as :class:`DevelopmentTargets`).
-
-    Raises
-    ------
-    InputError
-        An unknown field (the message lists the accepted ones) or a value out of range.
-    """
-    table = dict(table or {})
-    accepted = [f.name for f in dataclasses.fields(DevelopmentTargets)]
-    known_fields("development", table, accepted)
-    if "variables" in table:
-        if not isinstance(table["variables"], Mapping):
-            raise InputError("development.variables: must be a table name = [low, high]")
-        table["variables"] = {k: tuple(v) if isinstance(v, list) else v
-                              for k, v in table["variables"].items()}
-    return DevelopmentTargets(**table)
 
 
-# --------------------------------------------------------------------------- scoring
-#: metrics of one design at (light, design) torque, as :func:`development_score` reads them
-METRIC_NAMES = ("pattern_toe_u", "pattern_heel_u", "pattern_root_v", "pattern_tip_v",
-                "pattern_centre_u", "pattern_centre_v", "edge_load_share", "plastic_share",
-                "lte_peak_to_peak", "pressure_max_flank", "lte_spread")
 
 
-def working_depth_centre(case: Case) -> float:
-    """Middle of the working depth on the gear flank, fraction of the whole depth from the
-    root cone [1]: 1 − (h_a1 + h_a2)/(2 (h_a2 + h_f2)), outer addenda h_a and dedendum h_f
-    of the case's blanks (the gear tip is the working depth's upper end, the lowest point
-    the pinion tip reaches its lower end)."""
-    p, g = case.pinion.blank, case.gear.blank
-    return 1.0 - (p.outer_addendum + g.outer_addendum) / (
-        2.0 * (g.outer_addendum + g.outer_dedendum))
 
 
-#: the shortfalls each stage of :func:`develop` minimises (the bearing stage leaves the
-#: edges of the working depth to the relief; the flank pressure and the LTE spread are the
-#: bearing's as much as the relief's: a short or narrow bearing peaks in its middle)
-STAGE_TERMS = {
-    "bearing": ("length", "centre_u", "centre_v", "toe", "heel", "lte", "pressure",
-                "spread"),
-    "relief": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
-               "plastic", "lte", "pressure", "spread"),
-}
-#: shortfall scale of the LTE spread [1] (:func:`development_score`)
-_SPREAD_SCALE = 0.05
 
 
-def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTargets,
-                      grid: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 1.0), *,
-                      centre_v: float | None = None, stage: str = "relief",
-                      pressure_limit: float = math.inf
-                      ) -> tuple[float, dict[str, float], bool]:
-    """The development objective of one design.
-
-    Parameters
-    ----------
-    metrics : mapping name → ndarray (2,)
-        :data:`METRIC_NAMES` at the (light, design) torque: pattern ends on the gear
-        flank [1] (:func:`contact.study.summary.pattern_dimensions`) and its footprint
-        centre [1] (:func:`footprint_centre`), edge load share
-        [1], largest plastic share at a roll [1], LTE peak-to-peak [µrad], flank peak
-        pressure [MPa], LTE spread [1] (:func:`lte_spread`).
-    targets : DevelopmentTargets
-    grid : (u_toe, u_heel, v_root, v_tip)
-        The outermost rows of the gear grid the pattern is drawn on [1].
-    centre_v : float, optional — [1]
-        The depth centre aimed at where ``targets.pattern_centre_v`` is None (the case's
-        :func:`working_depth_centre`); default 0.5.
-    stage : str
-        ``"relief"`` (default: every target) or ``"bearing"`` (:data:`STAGE_TERMS`).
-    pressure_limit : float — [MPa]
-        Flank peak pressure allowed at the design torque where
-        ``targets.max_flank_pressure`` is None (:func:`static_strength`); default inf.
-
-    Returns
-    -------
-    objective : float
-        Σ of the squared shortfalls of the stage, plus 0.1 × (LTE at the design torque /
-        10 µrad) so that among designs meeting every target the quieter one wins; NaN
-        metrics (no loaded node, a failed analysis) give :data:`FAILED`.
-    shortfalls : dict name → float
-        Each target's shortfall, dimensionless (0 when met): ``length`` and ``centre_u``,
-        ``centre_v`` (deviation beyond the tolerance / tolerance), ``toe``, ``heel``,
-        ``root``, ``tip`` (clearance missing / clearance, light load), ``edge`` (share
-        beyond the limit / 0.5 %), ``plastic`` (share beyond the limit / 0.1 %, worst
-        torque), ``lte`` (LTE beyond the limit / 10 µrad, worst torque), ``pressure``
-        (flank peak pressure at the design torque beyond its limit / 100 MPa), ``spread``
-        (LTE spread beyond the verdict's plausibility limit
-        :data:`~contact.ltca.plausibility.LTE_SPREAD_LIMIT` / 0.05, worst torque).
-    met : bool
-        Every shortfall of the stage is 0.
-
-    Raises
-    ------
-    InputError
-        An unknown stage.
-
-    Notes
-    -----
-    A quadratic exterior penalty (Nocedal & Wright, *Numerical Optimization*, 2nd ed.,
-    §17.1) on each target: designs that meet all score only the small LTE term. The scales
-    rank durability before noise: a plastic edge (0.1 % of the torque a unit; above 5 %
-    the verdict calls the contact implausible) and edge contact (0.5 % a unit) weigh more
-    than the LTE (10 µrad a unit), so that where the targets conflict (the spiral bevel
-    13x39 of tests/data/designs: no relief without 100 µrad of LTE) the development keeps
-    the edges elastic and says the LTE was missed.
-    """
-    if stage not in STAGE_TERMS:
-        raise InputError(f"stage: must be one of {', '.join(STAGE_TERMS)}, got {stage!r}")
-    m = {k: np.asarray(metrics[k], float) for k in METRIC_NAMES}
-    u0, u1, v0, v1 = grid
-    t = targets
-    cv = (t.pattern_centre_v if t.pattern_centre_v is not None else
-          0.5 if centre_v is None else centre_v)
-    c = max(t.clearance, 1e-3)
-    plimit = t.max_flank_pressure if t.max_flank_pressure is not None else pressure_limit
-    length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
-    short = {
-        "length": max(0.0, abs(length - t.pattern_length) - t.pattern_length_tolerance)
-        / t.pattern_length_tolerance,
-        "centre_u": max(0.0, abs(m["pattern_centre_u"][0] - t.pattern_centre_u)
-                        - t.centre_tolerance) / t.centre_tolerance,
-        "centre_v": max(0.0, abs(m["pattern_centre_v"][0] - cv) - t.centre_tolerance)
-        / t.centre_tolerance,
-        "toe": max(0.0, c - (m["pattern_toe_u"][0] - u0)) / c,
-        "heel": max(0.0, c - (u1 - m["pattern_heel_u"][0])) / c,
-        "root": max(0.0, c - (m["pattern_root_v"][0] - v0)) / c,
-        "tip": max(0.0, c - (v1 - m["pattern_tip_v"][0])) / c,
-        "edge": max(0.0, m["edge_load_share"][1] - t.max_edge_share) / _EDGE_SCALE,
-        "plastic": max(0.0, float(np.max(m["plastic_share"])) - t.max_plastic_share)
-        / _PLASTIC_SCALE,
-        "lte": max(0.0, float(np.max(m["lte_peak_to_peak"])) - t.max_lte) / _LTE_SCALE,
-        "pressure": max(0.0, m["pressure_max_flank"][1] - plimit) / 100.0,
-        "spread": max(0.0, float(np.max(m["lte_spread"])) - LTE_SPREAD_LIMIT)
-        / _SPREAD_SCALE,
-    }
-    short = {k: float(v) for k, v in short.items()}
-    terms = STAGE_TERMS[stage]
-    read = [m[k][0] for k in METRIC_NAMES[:6]] + [m["edge_load_share"][1],
-                                                 *m["plastic_share"], *m["lte_peak_to_peak"]]
-    if not np.all(np.isfinite(read)):  # max(0, NaN) would hide a missing pattern
-        return FAILED, dict.fromkeys(short, math.inf), False
-    met = all(short[k] == 0.0 for k in terms)
-    objective = float(sum(short[k] ** 2 for k in terms)
-                      + 0.1 * m["lte_peak_to_peak"][1] / 10.0)
-    return objective, short, met
 
 
-# --------------------------------------------------------------------------- evaluation
-@dataclass(frozen=True, eq=False)
-class DevelopmentEvaluation:
-    """One analysed design of a development.
-
-    Attributes
-    ----------
-    index : int
-    values : dict name → float
-        The developed inputs [file units].
-    metrics : dict name → ndarray (2,)
-        :data:`METRIC_NAMES` at (light, design) torque; NaN when it failed.
-    objective : float
-    shortfalls : dict name → float
-    met : bool
-    reason : str
-        Why the design failed (empty if it did not).
-    seconds : float
-        CPU time of its synthesis and analysis [s].
-    case : Case or None
-        The synthesised case (None when the synthesis failed).
-    full : (objective, shortfalls, met) or None
-        The score on every target (stage ``"relief"``), for comparing designs of both
-        stages; None when it failed.
-    checked : bool
-        ``metrics`` and ``full`` are those of the final check at the default sampling
-        (:data:`CHECK_LTCA`), not of the coarse search.
-    stage : str
-        ``"bearing"`` or ``"relief"``.
-    """
-
-    index: int
-    values: dict[str, float]
-    metrics: dict[str, np.ndarray]
-    objective: float
-    shortfalls: dict[str, float]
-    met: bool
-    reason: str
-    seconds: float
-    case: Case | None = None
-    full: tuple[float, dict[str, float], bool] | None = None
-    checked: bool = False
-    stage: str = ""
 
 
 def design_torque_of(basic: BasicDesign, case: Case) -> tuple[float, str]:
@@ -528,55 +222,6 @@ def static_strength(tree) -> float:
     return float(min(c.allowable * c.static_life_factor for c in curves))
 
 
-def footprint_centre(envelope: np.ndarray, u: np.ndarray, v: np.ndarray
-                     ) -> tuple[np.ndarray, np.ndarray]:
-    """The centroid of the loaded pattern's footprint, per torque: the mean grid position
-    of the loaded nodes, each weighted equally whatever its pressure.
-
-    Parameters
-    ----------
-    envelope : ndarray, shape (NT, nu, nv) — [MPa]
-        The pressure envelope (``/ltca pressure_envelope``); a node is loaded where it is
-        positive (NaN counts as unloaded).
-    u : ndarray, shape (nu,) — [1]
-        Gear grid fractions along the face, toe 0 → heel 1.
-    v : ndarray, shape (nv,) — [1]
-        Gear grid fractions along the depth, root cone 0 → face cone 1.
-
-    Returns
-    -------
-    (ndarray, ndarray), each shape (NT,) — [1]
-        Footprint centre u and v; NaN at a torque with no loaded node.
-
-    Raises
-    ------
-    InputError
-        ``envelope`` not three-dimensional or its last two axes not (len(u), len(v)).
-
-    Notes
-    -----
-    This is the centre the development judges (``pattern_centre_u``/``_v`` of its
-    metrics), not the pressure-weighted one of
-    :func:`contact.study.summary.pattern_dimensions`: the targets' source judges a
-    marking-compound pattern, the area the mating flank wipes clear (US Army TM
-    9-2320-273-34 §10-29: "centered between the top and bottom of the tooth"), a footprint
-    in which every marked point counts alike. Weighted by pressure the centre leans to
-    where the Hertzian pressure peaks — on a hypoid, towards the gear tip, which meets the
-    pinion's root of largest profile curvature — by 0.03-0.08 of the depth on the
-    passenger-car hypoid 10x43 and the spiral bevel 13x39 of tests/data/designs
-    (docs/synthesis.md, "Development bearing": the pattern's centre).
-    """
-    env = np.asarray(envelope, float)
-    u, v = np.asarray(u, float), np.asarray(v, float)
-    if env.ndim != 3 or env.shape[1:] != (u.size, v.size):
-        raise InputError(f"pressure envelope: shape {env.shape} is not (torque, "
-                         f"{u.size}, {v.size}) (torque, u, v of the gear grid)")
-    loaded = np.nan_to_num(env) > 0.0
-    n = loaded.sum(axis=(1, 2)).astype(float)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        cu = np.where(n > 0, (loaded.sum(axis=2) * u).sum(axis=1) / n, np.nan)
-        cv = np.where(n > 0, (loaded.sum(axis=1) * v).sum(axis=1) / n, np.nan)
-    return cu, cv
 
 
 def _metrics(tree, case: Case) -> dict[str, np.ndarray]:
@@ -688,279 +333,14 @@ def _analyse(case: Case, torques: list[float], misalignment: Misalignment | None
     return _metrics(tree, c), (*_grid(tree), static_strength(tree))
 
 
-@dataclass(frozen=True, eq=False)
-class DevelopmentResult:
-    """What :func:`develop` did.
-
-    Attributes
-    ----------
-    basic : BasicDesign
-        The design with the developed prescriptions of the drive flank (and of the coast
-        flank where :attr:`coast_status` is ``"developed"``).
-    case : Case
-        Its synthesis (the developed case).
-    report : geometry.synthesis.case_synthesis.SynthesisReport
-        The synthesis report of ``case``.
-    best : DevelopmentEvaluation
-        The chosen design (every target met, else the least objective).
-    evaluations : tuple of DevelopmentEvaluation
-        Every design analysed, in order.
-    torque : (float, float) — [N·m]
-        Light and design pinion torque.
-    torque_source : str
-        Where the design torque came from (:func:`design_torque_of`).
-    tolerance : dict label → (metrics, shortfalls)
-        The developed design at each excursion (``dE+0.05`` …) at (light, design) torque,
-        with the shortfalls of the clearance, edge and plastic targets there.
-    targets : DevelopmentTargets
-    seconds : float
-        CPU time of the whole development [s].
-    centre_v : float — [1]
-        The depth centre aimed at (``targets.pattern_centre_v`` or the working depth's
-        middle, :func:`working_depth_centre`).
-    coast : dict name → ndarray (2,) or None
-        :data:`METRIC_NAMES` of the written case's coast flank at (light, design) torque
-        at :data:`CHECK_LTCA`; None where that analysis failed.
-    check_seconds : float
-        CPU time [s] of the drive flank's final check, the final synthesis and the
-        tolerance check (the rest of ``seconds`` is the designs' and the coast flank's,
-        :attr:`stage_seconds`).
-    torque_lowered : bool
-        The design torque is the bearing's static flank capacity, below the rating's
-        (:func:`_static_capacity`); :meth:`recorded` writes it as the case's
-        ``[rating] design_torque``.
-    coast_best : DevelopmentEvaluation or None
-        The coast flank written: a design of its search (checked at :data:`CHECK_LTCA`)
-        or, stage ``"synthesised"``, the flank as synthesised from its own prescriptions;
-        None where its analysis failed.
-    coast_evaluations : tuple of DevelopmentEvaluation
-        Every design of the coast flank's search, in order (empty where none ran).
-    coast_status : str
-        A key of :data:`COAST_STATUS`: ``"developed"``, ``"met"`` (every target met as
-        synthesised: no search), ``"off"`` (``coast_max_evaluations`` = 0), ``"not
-        improved"`` (the search found nothing better) or ``"not checked"``; empty where
-        not known (a result made by hand).
-    coast_before : dict name → ndarray (2,) or None
-        The coast flank's metrics as synthesised where its search ran (else None).
-    coast_seconds : float
-        CPU time [s] of the coast flank's check and development.
-    """
-
-    basic: BasicDesign
-    case: Case
-    report: Any
-    best: DevelopmentEvaluation
-    evaluations: tuple[DevelopmentEvaluation, ...]
-    torque: tuple[float, float]
-    torque_source: str
-    tolerance: dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]
-    targets: DevelopmentTargets
-    seconds: float
-    centre_v: float = 0.5
-    coast: dict[str, np.ndarray] | None = None
-    check_seconds: float = 0.0
-    torque_lowered: bool = False
-    coast_best: DevelopmentEvaluation | None = None
-    coast_evaluations: tuple[DevelopmentEvaluation, ...] = ()
-    coast_status: str = ""
-    coast_before: dict[str, np.ndarray] | None = None
-    coast_seconds: float = 0.0
-
-    @property
-    def tolerant(self) -> bool:
-        """At every excursion the pattern stays clear of toe and heel at light load and the
-        edges elastic with at most the edge share allowed."""
-        keys = ("toe", "heel", "edge", "plastic")
-        return all(all(s[k] == 0.0 for k in keys) for _, s in self.tolerance.values())
-
-    @property
-    def stage_seconds(self) -> dict[str, float]:
-        """CPU time [s] of the drive flank's bearing stage, its relief stage (their
-        designs' syntheses and coarse LTCAs), the final checks and the coast flank (its
-        check and development)."""
-        out = {st: sum(e.seconds for e in self.evaluations if e.stage == st)
-               for st in ("bearing", "relief")}
-        return out | {"check": self.check_seconds, "coast": self.coast_seconds}
-
-    def summary(self) -> str:
-        """One paragraph for the case's ``source``: prescriptions, targets, achieved."""
-        b, t = self.best, self.targets
-        m = b.metrics
-        vals = _values_text(b.values)
-        tl, td = self.torque
-        tol = "; ".join(
-            f"{lab}: pattern {ms['pattern_toe_u'][0]:.2f}-{ms['pattern_heel_u'][0]:.2f}, edge "
-            f"{100 * ms['edge_load_share'][1]:.1f} %, plastic "
-            f"{100 * np.max(ms['plastic_share']):.1f} %"
-            for lab, (ms, _) in self.tolerance.items())
-        return (
-            f"Development bearing (contact.optimize.development, {len(self.evaluations)} "
-            f"designs, coarse LTCA, the chosen one "
-            f"{'checked at the default sampling' if b.checked else 'not checked'}): drive "
-            f"flank {vals}; targets at {tl:.4g} N m (light, "
-            f"{t.light_load:g} x design) pattern {t.pattern_length:g} +/- "
-            f"{t.pattern_length_tolerance:g} of the face width centred at "
-            f"({t.pattern_centre_u:g}, {self.centre_v:.3g}), clear of the flank ends by "
-            f"{t.clearance:g}; at {td:.4g} N m (design, {self.torque_source}) edge share <= "
-            f"{100 * t.max_edge_share:g} %, plastic <= {100 * t.max_plastic_share:g} %; LTE "
-            f"p-p <= {t.max_lte:g} urad. Achieved: pattern u {m['pattern_toe_u'][0]:.2f}-"
-            f"{m['pattern_heel_u'][0]:.2f}, v {m['pattern_root_v'][0]:.2f}-"
-            f"{m['pattern_tip_v'][0]:.2f}, centre ({m['pattern_centre_u'][0]:.2f}, "
-            f"{m['pattern_centre_v'][0]:.2f}); edge share {100 * m['edge_load_share'][0]:.1f}/"
-            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
-            f"{100 * m['plastic_share'][0]:.1f}/{100 * m['plastic_share'][1]:.1f} %, LTE p-p "
-            f"{m['lte_peak_to_peak'][0]:.1f}/{m['lte_peak_to_peak'][1]:.1f} urad, flank "
-            f"peak pressure {m['pressure_max_flank'][0]:.0f}/"
-            f"{m['pressure_max_flank'][1]:.0f} MPa (light/design); {self._met_text()}. "
-            f"Tolerance (dE = +/-{t.offset_tolerance:g} mm, dP = +/-"
-            f"{t.mounting_tolerance:g} mm): {tol}"
-            f" ({'tolerant' if self.tolerant else 'not tolerant'}). "
-            + self._coast_text().rstrip())
-
-    def headline(self) -> str:
-        """One line: the chosen design, whether it met its targets and is tolerant, and
-        what became of the coast flank."""
-        b, t = self.best, self.targets
-        m = b.metrics
-        return (f"development: design {b.index + 1} of {len(self.evaluations)}, "
-                f"{self._met_text()}; light-load pattern {m['pattern_toe_u'][0]:.2f}-"
-                f"{m['pattern_heel_u'][0]:.2f} of the face, edge share "
-                f"{100 * m['edge_load_share'][1]:.1f} % and LTE p-p "
-                f"{m['lte_peak_to_peak'][1]:.0f} urad at {self.torque[1]:.4g} N m; "
-                f"{'tolerant' if self.tolerant else 'not tolerant'} at dE +/-"
-                f"{t.offset_tolerance:g} mm, dP +/-{t.mounting_tolerance:g} mm; "
-                f"{self._coast_headline()}; {self.seconds:.0f} s CPU")
-
-    def recorded(self, case: Case) -> Case:
-        """``case`` (the developed case, maybe with its rating's design torque set) with
-        :meth:`summary` appended to its ``source``, :meth:`table` as its informational
-        ``[development]`` table and, where the basic file's ``[operating]`` gives no
-        torques, the light and the design torque as its operating torques [N·m]."""
-        import json
-        from types import MappingProxyType
-
-        extra = json.loads(json.dumps({**case.extra, "development": self.table()}))
-        if self.torque_lowered:  # the rating's design torque is the bearing's capacity
-            rating = dict(extra.get("rating") or {})
-            rating["design_torque"] = float(self.torque[1])
-            rating["source"] = (str(rating.get("source", "")).rstrip()
-                                + f" design_torque lowered to {self.torque[1]:g} N m by the "
-                                f"development: {self.torque_source}.").lstrip()
-            extra["rating"] = rating
-        more: dict[str, Any] = {}
-        if "torque" not in self.basic.operating:
-            # the loads the bearing was developed for are the case's operating torques
-            # (the seed's 50/250/500 N·m otherwise, unrelated to this design's size)
-            # (to 0.1 N·m, rounded down: the design torque is the rating's long-life
-            # capacity by default, at which S_H = S_H,min exactly; rounded up it would fail
-            # the rating by round-off)
-            more["operating"] = dataclasses.replace(
-                case.operating, torque=tuple(math.floor(10.0 * float(t)) / 10.0
-                                             for t in self.torque))
-        return dataclasses.replace(case, source=case.source.rstrip() + " " + self.summary(),
-                                   extra=MappingProxyType(extra), **more)
-
-    def _coast_text(self) -> str:
-        c = self.coast
-        if not c:
-            return "Coast flank: not checked (its analysis failed). "
-        achieved = (f"pattern u {c['pattern_toe_u'][0]:.2f}-{c['pattern_heel_u'][0]:.2f}, v "
-                    f"{c['pattern_root_v'][0]:.2f}-{c['pattern_tip_v'][0]:.2f}, centre "
-                    f"({c['pattern_centre_u'][0]:.2f}, {c['pattern_centre_v'][0]:.2f}); edge share "
-                    f"{100 * c['edge_load_share'][0]:.1f}/{100 * c['edge_load_share'][1]:.1f}"
-                    f" %, plastic {100 * c['plastic_share'][0]:.1f}/"
-                    f"{100 * c['plastic_share'][1]:.1f} %, flank peak pressure "
-                    f"{c['pressure_max_flank'][0]:.0f}/{c['pressure_max_flank'][1]:.0f} MPa, "
-                    f"LTE p-p {c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} "
-                    "urad (light/design)")
-        b = self.coast_best
-        met = "" if b is None or b.full is None else f"; {_met_text(b.full)}"
-        if self.coast_status == "developed":
-            before = self.coast_before
-            was = ("" if not before else
-                   f"; as synthesised plastic {100 * np.max(before['plastic_share']):.1f} %, "
-                   f"edge share {100 * before['edge_load_share'][1]:.1f} %, LTE p-p "
-                   f"{before['lte_peak_to_peak'][0]:.1f}/"
-                   f"{before['lte_peak_to_peak'][1]:.1f} urad")
-            n = len(self.coast_evaluations)
-            return (f"Coast flank (developed, {n} design{'s' if n != 1 else ''} at the "
-                    f"same torques and targets, the chosen one checked at the default "
-                    f"sampling): {_values_text(b.values)}{was}. Achieved: {achieved}{met}. ")
-        why = COAST_STATUS.get(self.coast_status, "not developed")
-        if self.coast_status == "not improved":
-            why += f" ({len(self.coast_evaluations)} designs)"
-        return f"Coast flank ({why}): {achieved}{met}. "
-
-    def _coast_headline(self) -> str:
-        b = self.coast_best
-        if self.coast_status == "developed":
-            return (f"coast flank developed ({len(self.coast_evaluations)} designs): plastic "
-                    f"{100 * np.max(b.metrics['plastic_share']):.1f} %, {_met_text(b.full)}")
-        if b is None or b.full is None:
-            return "coast flank not checked"
-        what = {"met": "met every target as synthesised", "off": "coast development off",
-                "not improved": "its search found nothing better"}.get(self.coast_status,
-                                                                      "not developed")
-        return (f"coast flank not developed ({what}): plastic "
-                f"{100 * np.max(b.metrics['plastic_share']):.1f} %")
-
-    def _met_text(self) -> str:
-        return _met_text(self.best.full)
-
-    def table(self) -> dict[str, Any]:
-        """The case's informational ``[development]`` table (TOML-safe values)."""
-        b = self.best
-        m = {k: [round(float(x), 6) for x in v] for k, v in b.metrics.items()}
-        return {
-            "note": "informational (contact.optimize.development): the developed drive-flank "
-                    "prescriptions and what the LTCA gave at [light, design] torque "
-                    + ("(the final check at ltca run's default sampling)" if b.checked
-                       else "(the coarse LTCA of the search)")
-                    + "; coast: the coast flank at the same torques and targets (its "
-                    "development, the prescriptions written, achieved at the default "
-                    "sampling); coast_achieved: the same metrics as achieved",
-            "torque_Nm": [float(x) for x in self.torque],
-            "design_torque_source": self.torque_source,
-            "prescriptions": {k: float(v) for k, v in b.values.items()},
-            "targets_met": int(b.full[2]),
-            "tolerant": int(self.tolerant),
-            "evaluations": len(self.evaluations),
-            "cpu_seconds": round(self.seconds, 1),
-            "cpu_seconds_stages": {k: round(v, 1) for k, v in self.stage_seconds.items()},
-            "achieved": m,
-            "coast": self._coast_table(),
-        } | ({"coast_achieved": _rounded(self.coast)} if self.coast else {})
-
-    def _coast_table(self) -> dict[str, Any]:
-        c = self.coast_best
-        out: dict[str, Any] = {
-            "development": COAST_STATUS.get(self.coast_status, "not developed"),
-            "evaluations": len(self.coast_evaluations),
-            "cpu_seconds": round(self.coast_seconds, 1)}
-        if c is not None:
-            out["prescriptions"] = {k: float(v) for k, v in c.values.items()}
-            if c.full is not None:
-                out["targets_met"] = int(c.full[2])
-                out["missed"] = [k for k, v in c.full[1].items() if v > 0]
-        if self.coast_before:
-            out["as_synthesised"] = _rounded(self.coast_before)
-        return out
 
 
-def _rounded(metrics: Mapping[str, np.ndarray]) -> dict[str, list[float]]:
-    return {k: [round(float(x), 6) for x in v] for k, v in metrics.items()}
 
 
-def _met_text(full: tuple[float, dict[str, float], bool]) -> str:
-    _, short, met = full
-    return ("every target met" if met else "not every target met: "
-            + ", ".join(k for k, v in short.items() if v > 0))
 
 
-def _values_text(values: Mapping[str, float]) -> str:
-    return ", ".join(f"{k} {v:.4g}" + (f" {FLANK_OPTION_UNITS[k]}"
-                                        if FLANK_OPTION_UNITS[k] != "1" else "")
-                     for k, v in values.items())
+
+
 
 
 class _Stop(Exception):
@@ -1028,7 +408,7 @@ def _sample_then_minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray,
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
-            synthesis_progress: Any = None) -> DevelopmentResult:
+            synthesis_progress: Any = None, root_stress: bool = True) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -1044,6 +424,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     synthesis_progress : optional
         The ``progress`` of the final synthesis of the developed design
         (:func:`geometry.synthesis.case_synthesis.synthesize`).
+    root_stress : bool, optional
+        Check the written case's FE root stress at the design torque and lower the design
+        torque to its root-stress capacity where S_F,FE < S_Fmin
+        (:func:`contact.optimize.development_root.root_capacity`; default True: one FE
+        model build, ``ltca run``'s own, which it then reads from the cache).
 
     Returns
     -------
@@ -1085,7 +470,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     meets every target) and the chosen one is scored by that check. Where the design
     torque is the rating's capacity (the default) and the chosen design's flank peak
     pressure there exceeds the static strength, the design torque is lowered to the
-    bearing's static flank capacity (:func:`_static_capacity`).
+    bearing's static flank capacity (:func:`_static_capacity`); after the final synthesis,
+    where the written case's FE root stress gives S_F,FE < S_Fmin at the design torque,
+    to its root-stress capacity (:func:`contact.optimize.development_root.root_capacity`;
+    ``root_stress``), the drive and coast flank analysed again at the new torques.
 
     3. **coast flank** (:func:`_coast_development`): the chosen design's coast flank, as
        synthesised from its own prescriptions, analysed at :data:`CHECK_LTCA` at the same
@@ -1145,7 +533,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
     c_check = time.process_time()
     best = _checked_best(evals, targets, setup, teeth, say,
-                         functools.partial(_placed_case, basic, flank, memo))
+                         functools.partial(_placed_case, basic, flank, memo),
+                         slopes=evaluate.slopes)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = _static_capacity(best, targets, setup, teeth, say)
     developed = with_flank_options(basic, flank, best.values)
@@ -1156,6 +545,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     coast_seconds = time.process_time() - c_coast
     developed = coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
+    root_safety, root_text = math.nan, ""
+    if (root_stress and basic.options.design_torque is None
+            and basic.rating.get("design_torque") is None):
+        # the FE root stress of the written case at the design torque (ltca run's FE
+        # model, cached: ltca run reads it), the torque lowered to its capacity if below
+        best, coast, root_safety, root_text = _root_capacity(case, best, coast, targets,
+                                                             setup, say)
     tolerance = {}
     for lab, mis in _excursions(targets):
         try:
@@ -1175,9 +571,45 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                coast.best.metrics if coast.best is not None else None,
                                time.process_time() - c_check - coast_seconds,
                                setup["lowered"], coast.best, tuple(coast.evaluations),
-                               coast.status, coast.before, coast_seconds)
+                               coast.status, coast.before, coast_seconds,
+                               setup.get("pressure_limit", math.inf), root_safety,
+                               root_text)
     say(result.headline())
     return result
+
+
+def _root_capacity(case: Case, best: DevelopmentEvaluation, coast: _CoastOutcome,
+                   targets: DevelopmentTargets, setup: dict[str, Any],
+                   say: Callable[[str], None]
+                   ) -> tuple[DevelopmentEvaluation, _CoastOutcome, float, str]:
+    """The written case's FE root stress at the design torque
+    (:func:`contact.optimize.development_root.root_capacity`); where that lowered the
+    design torque, the drive flank's metrics are those of its analysis at the new torques
+    and the coast flank is analysed again there at :data:`CHECK_LTCA` (the coast flank's
+    root stress is not checked: its check is contact-only). Returns the drive and coast
+    outcome, S_F,FE at the design torque and the reason the torque was lowered (empty
+    where not)."""
+    from contact.optimize.development_root import root_capacity
+
+    tree, safety, text = root_capacity(case, setup, targets.light_load, say)
+    if tree is None:
+        return best, coast, safety, text
+    ms, grid = _metrics(tree, case), (*_grid(tree), static_strength(tree))
+    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                             pressure_limit=grid[4])
+    best = dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
+                               met=full[2], full=full)
+    if coast.best is not None:
+        try:
+            mc, gc = _analyse(case, setup["torques"], options=CHECK_LTCA, flank="coast")
+            fc = development_score(mc, targets, gc[:4], centre_v=setup["centre_v"],
+                                   pressure_limit=gc[4])
+            coast = coast._replace(best=dataclasses.replace(
+                coast.best, metrics=mc, objective=fc[0], shortfalls=fc[1], met=fc[2],
+                full=fc))
+        except Exception as exc:  # reported, never fatal: its metrics stay the higher torque's
+            log.info("development coast check at the root-stress torque failed: %s", exc)
+    return best, coast, safety, text
 
 
 def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],
@@ -1236,7 +668,7 @@ def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str,
             e = dataclasses.replace(e, full=full)
         evals.append(e)
         seen[key] = e
-        if stage == "bearing" and grid is not None:  # the relief stage starts here
+        if stage in ("bearing", "height") and grid is not None:  # the relief starts here
             seen[("relief", *key[1:])] = dataclasses.replace(e, objective=e.full[0],
                                                              shortfalls=e.full[1],
                                                              met=e.full[2])
@@ -1245,6 +677,9 @@ def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str,
             raise _Stop
         return e
 
+    evaluate.evals = evals  # type: ignore[attr-defined]  (read by _centre_height)
+    evaluate.setup = setup  # type: ignore[attr-defined]
+    evaluate.slopes = {}  # type: ignore[attr-defined]  (per bearing, _note_slope)
     return evaluate
 
 
@@ -1260,10 +695,16 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
     **relief** (:func:`_relief_stage`, the rest of ``n_max``). ``start``: the flank's
     prescriptions [file units]. Returns whether any design was synthesised and
     analysed."""
-    bearing = [n for n in targets.variables if n not in RELIEF_NAMES]
-    relief = [n for n in targets.variables if n in RELIEF_NAMES]
+    bearing = [n for n in targets.variables
+               if n not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)]
+    # the relief stage varies the profile crowning too: the height stage raises it where
+    # the centred pattern reaches an end, the relief may do that work with less LTE
+    relief = [n for n in targets.variables if n in (*RELIEF_NAMES, CROWNING_NAME)]
     n_bearing = min(max_bearings, max(1, n_max // 2)) if bearing else 1
     fixed = {n: start[n] for n in relief}
+    for n in (HEIGHT_NAME, CROWNING_NAME):
+        if n in targets.variables:
+            fixed[n] = float(np.clip(start[n], *targets.variables[n]))
     low = np.array([targets.variables[n][0] for n in bearing])
     high = np.array([targets.variables[n][1] for n in bearing])
 
@@ -1293,8 +734,6 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
     return True
 
 
-#: margin below the flank's static strength that :func:`_static_capacity` aims at [1]
-_STATIC_MARGIN = 0.99
 
 
 def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -1324,7 +763,7 @@ def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     capacity, exponent = torque, 1.0 / 3.0
     accepted = None
     for _ in range(3):
-        new = torque * (_STATIC_MARGIN * limit / p) ** (1.0 / exponent)
+        new = torque * (STATIC_MARGIN * limit / p) ** (1.0 / exponent)
         new = float(f"{math.floor(new * 10.0) / 10.0:.4g}")  # rounded down to 0.1 N·m
         if new == torque:
             break
@@ -1378,14 +817,6 @@ class _CoastOutcome(NamedTuple):
     before: dict[str, np.ndarray] | None
 
 
-#: the outcomes of the coast flank's development (``DevelopmentResult.coast_status``)
-COAST_STATUS = {
-    "developed": "developed",
-    "met": "not developed: met every target as synthesised",
-    "off": "not developed: coast development off (coast_max_evaluations = 0)",
-    "not improved": "not developed: no design of its search did better than as synthesised",
-    "not checked": "not checked: its analysis failed",
-}
 
 
 def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
@@ -1427,7 +858,7 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
                                         stage="synthesised")
     missed = [k for k, v in full[1].items() if v > 0]
     head = (f"development: coast flank {side} as synthesised, at the default sampling: "
-            f"{_metrics_text(m0)}; ")
+            f"{metrics_text(m0)}; ")
     if full[2]:
         say(head + "every target met: not developed")
         return _CoastOutcome(developed, synthesised, [], "met", None)
@@ -1451,7 +882,8 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
                COAST_BEARING_DESIGNS):
         best = _checked_best(evals, targets, setup, teeth, say,
                              lambda values: synthesize(basic_of(values), memo=memo)[0],
-                             side="coast", key_prefix=prefix, n_max=n_max)
+                             side="coast", key_prefix=prefix, n_max=n_max,
+                             slopes=evaluate.slopes)
         as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
         if (best.checked and not as_synthesised
                 and (not best.full[2], best.full[0]) < (not full[2], full[0])):
@@ -1463,14 +895,6 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     return _CoastOutcome(basic_of(chosen.values), chosen, evals, "developed", m0)
 
 
-def _metrics_text(m: Mapping[str, np.ndarray]) -> str:
-    """A design's metrics in one phrase (light-load pattern, design-torque edge share,
-    worst plastic share, LTE at both torques)."""
-    return (f"pattern {m['pattern_toe_u'][0]:.2f}-{m['pattern_heel_u'][0]:.2f} x "
-            f"{m['pattern_root_v'][0]:.2f}-{m['pattern_tip_v'][0]:.2f}, edge "
-            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
-            f"{100 * np.max(m['plastic_share']):.1f} %, LTE "
-            f"{m['lte_peak_to_peak'][0]:.0f}/{m['lte_peak_to_peak'][1]:.0f} urad")
 
 
 def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
@@ -1493,23 +917,223 @@ def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
     for first, budget in zip(firsts, budgets, strict=True):
         if len(evals) >= budget:
             return
+        if HEIGHT_NAME in targets.variables:  # the pattern's height first
+            first = _height_stage(evaluate, first, targets, budget, basic_of, make)
+            if first is None:
+                return  # a design met every target
 
-        def relief_design(x: np.ndarray, first=first, budget=budget) -> float:
+        # designs kept for the re-centring after the relief, where the budget allows
+        relief_budget = budget - (_RECENTRE_DESIGNS if HEIGHT_NAME in targets.variables
+                                  and budget - len(evals) > 3 * _RECENTRE_DESIGNS else 0)
+
+        def relief_design(x: np.ndarray, first=first, budget=relief_budget) -> float:
             values = first.values | {n: float(v) for n, v in zip(relief, x, strict=True)}
             # the synthesis itself (steps 3-6 from the memo, the relief made again; the
             # tip plane, which keeps the flank, placed for the designs checked later)
             b = basic_of(values)
-            return evaluate(values, "relief", lambda: make(b), budget,
-                            _bearing_key(first.values)).objective
+            e = evaluate(values, "relief", lambda: make(b), budget,
+                         _bearing_key(first.values))
+            return _recentred(evaluate, e, targets, budget, basic_of, make).objective
 
+        n_sample = min(8, max(0, (budget - len(evals) - HEIGHT_DESIGNS // 2) // 2))
         _sample_then_minimise(relief_design, np.array([first.values[n] for n in relief]),
-                              low, high, n_sample=min(8, max(0, (budget - len(evals)) // 2)))
-        if any(e.met and e.stage == "relief" for e in evals):
+                              low, high, n_sample=n_sample)
+        if any(e.met for e in evals if e.stage in ("relief", "height")):
             return
         key = _bearing_key(first.values)  # this bearing's designs, its own included
         done = [e for e in evals if e.full is not None and _bearing_key(e.values) == key]
+        if done and HEIGHT_NAME in targets.variables:  # the relief moved it: again
+            best = min(done, key=lambda e: e.full[0])
+            if best.full[1]["centre_v"] > 0.0 and _centre_height(
+                    evaluate, best, targets, budget, basic_of, make,
+                    _RECENTRE_DESIGNS) is None:
+                return
+            done = [e for e in evals
+                    if e.full is not None and _bearing_key(e.values) == key]
         if not done or min(done, key=lambda e: e.full[0]).full[1]["lte"] == 0.0:
             return  # the LTE met: the next bearing is tried for the LTE alone
+
+
+def _recentred(evaluate: Callable[..., DevelopmentEvaluation], e: DevelopmentEvaluation,
+               targets: DevelopmentTargets, budget: int,
+               basic_of: Callable[[dict[str, float]], BasicDesign],
+               make: Callable[[BasicDesign], Case]) -> DevelopmentEvaluation:
+    """A relief design with its pattern put back to the height aimed at: the relief moves
+    the light-load pattern in depth (a toprem or flankrem takes the load off one end), so
+    where ``e`` misses the centre v one Newton step of the blade-angle change with the
+    slope its bearing's height stage measured (:func:`_centre_height`) is analysed too
+    (the same stage), and the better of the two returned: the relief stage's objective is
+    that of the design re-centred, the relief and the height developed together."""
+    slope = getattr(evaluate, "slopes", {}).get(_bearing_key(e.values))
+    if (slope is None or e.full is None or HEIGHT_NAME not in targets.variables
+            or e.full[1]["centre_v"] == 0.0 or not math.isfinite(_centre_v(e))):
+        return e
+    lo, hi = targets.variables[HEIGHT_NAME]
+    f = _centre_v(e) - _target_v(evaluate, targets)
+    x = float(np.clip(e.values[HEIGHT_NAME] - f / slope, lo, hi))
+    if abs(x - e.values[HEIGHT_NAME]) < 1e-3:
+        return e
+    values = e.values | {HEIGHT_NAME: x}
+    b = basic_of(values)
+    e2 = evaluate(values, e.stage, lambda: make(b), budget, _bearing_key(values))
+    return e2 if e2.objective < e.objective else e
+
+
+#: designs of the root-find on the pattern's height after a bearing's relief (the relief
+#: moves the pattern in depth: its toprem and flankrem take load off one end)
+_RECENTRE_DESIGNS = 2
+
+
+def _centre_height(evaluate: Callable[..., DevelopmentEvaluation],
+                   base: DevelopmentEvaluation, targets: DevelopmentTargets, budget: int,
+                   basic_of: Callable[[dict[str, float]], BasicDesign],
+                   make: Callable[[BasicDesign], Case], n_designs: int = HEIGHT_DESIGNS
+                   ) -> DevelopmentEvaluation | None:
+    """The pattern's height by the pinion blade's pressure-angle change: a 1-D root-find
+    of the light-load footprint centre v (:func:`footprint_centre`) on the target, from the
+    design ``base`` (its other inputs kept).
+
+    The change Δα of :data:`HEIGHT_NAME` moves the pattern monotonically and strongly up or
+    down the tooth (:data:`HEIGHT_SLOPE`, 0.28 of the depth per degree measured), the lever
+    a gear engineer develops the height with (Stadtfeld, *Gleason Bevel Gear Technology*,
+    2014; :mod:`geometry.synthesis.blade_change`). The root-find is a secant on
+    f(Δα) = v_c(Δα) − v_target, the first step with :data:`HEIGHT_SLOPE`, then with the
+    slope measured, kept in a bracket once f changes sign (regula falsi), Δα clipped to
+    its bounds; it stops within a quarter of ``centre_tolerance``, after ``n_designs``
+    designs or at the stage's ``budget``. A design whose pattern could not be found (NaN
+    centre) halves the last step. Each design is ``evaluate``d (stage ``"height"``: every
+    target, so one that meets them all ends the development).
+
+    Returns
+    -------
+    DevelopmentEvaluation or None
+        The design of the least objective among those within the centre's tolerance (else
+        the one nearest the target), ``base`` included; None where a design met every
+        target (the caller stops).
+    """
+    lo, hi = targets.variables[HEIGHT_NAME]
+    if base.full is None or not math.isfinite(_centre_v(base)):
+        return base
+    target = _target_v(evaluate, targets)
+    tried = [(float(base.values[HEIGHT_NAME]), _centre_v(base) - target, base)]
+    good = 0.25 * targets.centre_tolerance
+    x_prev = None
+    for _ in range(n_designs):
+        x0, f0, _ = min(tried, key=lambda t: abs(t[1]) if math.isfinite(t[1]) else math.inf)
+        if abs(f0) <= good:
+            break
+        finite = [t for t in tried if math.isfinite(t[1])]
+        below = [t for t in finite if t[1] < 0.0]
+        above = [t for t in finite if t[1] > 0.0]
+        if below and above:  # bracketed: regula falsi between the nearest on each side
+            a = min(below, key=lambda t: -t[1])
+            b = min(above, key=lambda t: t[1])
+            x = a[0] - a[1] * (b[0] - a[0]) / (b[1] - a[1])
+        else:
+            slope = HEIGHT_SLOPE
+            if len(finite) >= 2:
+                (xa, fa, _), (xb, fb, _) = sorted(finite, key=lambda t: abs(t[1]))[:2]
+                if xa != xb and (fa - fb) / (xa - xb) > 0.05:
+                    slope = (fa - fb) / (xa - xb)
+            x = x0 - f0 / slope
+        if x_prev is not None and not math.isfinite(tried[-1][1]):
+            x = 0.5 * (x_prev + tried[-1][0])  # the last design failed: half its step
+        x = float(np.clip(x, lo, hi))
+        if any(abs(x - t[0]) < 1e-3 for t in tried):
+            break
+        values = base.values | {HEIGHT_NAME: x}
+        b = basic_of(values)
+        try:
+            e = evaluate(values, "height", lambda b=b: make(b), budget,
+                         _bearing_key(values))
+        except _Stop:
+            return None if any(e.met for e in _evaluated(evaluate)) else _best_height(tried)
+        x_prev = x0
+        tried.append((x, _centre_v(e) - target, e))
+        _note_slope(evaluate, tried)
+    return _best_height(tried)
+
+
+def _centre_v(e: DevelopmentEvaluation) -> float:
+    """The light-load footprint centre v of a design [1]; NaN where it has none."""
+    v = e.metrics.get("pattern_centre_v")
+    return math.nan if v is None else float(v[0])
+
+
+def _note_slope(evaluate: Callable[..., DevelopmentEvaluation],
+                tried: list[tuple[float, float, DevelopmentEvaluation]]) -> None:
+    """The slope d(centre v)/d(blade-angle change) [1/deg] measured between the two
+    designs of ``tried`` nearest the target, kept per bearing for :func:`_recentred`
+    (where it is positive and not tiny; else :data:`HEIGHT_SLOPE`'s sign is kept)."""
+    finite = sorted((t for t in tried if math.isfinite(t[1])), key=lambda t: abs(t[1]))
+    if len(finite) < 2 or finite[0][0] == finite[1][0]:
+        return
+    slope = (finite[0][1] - finite[1][1]) / (finite[0][0] - finite[1][0])
+    if slope > 0.05:
+        evaluate.slopes[_bearing_key(finite[0][2].values)] = slope  # type: ignore[attr-defined]
+
+
+def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
+                  base: DevelopmentEvaluation, targets: DevelopmentTargets, budget: int,
+                  basic_of: Callable[[dict[str, float]], BasicDesign],
+                  make: Callable[[BasicDesign], Case]) -> DevelopmentEvaluation | None:
+    """The height stage of a bearing: its light-load pattern centred in depth by the
+    blade-angle change (:func:`_centre_height`); where the centred pattern still reaches
+    the gear tip (the ``tip`` clearance) or carries edge contact at light load, the
+    profile crowning (:data:`CROWNING_NAME`) raised by :data:`CROWNING_STEP` and the
+    pattern centred again, at most twice: a pattern as deep as the working depth cannot be
+    centred clear of both its ends, a crowned one can (Stadtfeld 2014: pattern height by
+    the pressure angle, its depth by the profile crowning). Returns the best design (None
+    where one met every target)."""
+    e = _centre_height(evaluate, base, targets, budget, basic_of, make)
+    for _ in range(2):
+        if (e is None or e.full is None or CROWNING_NAME not in targets.variables
+                or not math.isfinite(_centre_v(e))):
+            return e
+        short, m = e.full[1], e.metrics
+        if short["tip"] == 0.0 and short["root"] == 0.0 and m["edge_load_share"][0] <= 0.0:
+            return e
+        lo, hi = targets.variables[CROWNING_NAME]
+        crown = float(np.clip(e.values[CROWNING_NAME] + CROWNING_STEP, lo, hi))
+        if crown == e.values[CROWNING_NAME] or len(_evaluated(evaluate)) >= budget:
+            return e
+        values = e.values | {CROWNING_NAME: crown}
+        b = basic_of(values)
+        try:
+            crowned = evaluate(values, "height", lambda b=b: make(b), budget,
+                               _bearing_key(values))
+        except _Stop:
+            return None if any(x.met for x in _evaluated(evaluate)) else e
+        nxt = _centre_height(evaluate, crowned, targets, budget, basic_of, make,
+                             HEIGHT_DESIGNS - 1)
+        if nxt is None:
+            return None
+        if nxt.full is None or e.full is None or nxt.full[0] >= e.full[0]:
+            return e if nxt.full is None or e.full[0] <= nxt.full[0] else nxt
+        e = nxt
+    return e
+
+
+def _target_v(evaluate: Callable[..., DevelopmentEvaluation],
+              targets: DevelopmentTargets) -> float:
+    """The footprint centre v aimed at: ``targets.pattern_centre_v``, else the working
+    depth's middle the evaluator's first design fixed (:func:`working_depth_centre`)."""
+    if targets.pattern_centre_v is not None:
+        return float(targets.pattern_centre_v)
+    return float(evaluate.setup["centre_v"])  # type: ignore[attr-defined]
+
+
+def _best_height(tried: list[tuple[float, float, DevelopmentEvaluation]]
+                 ) -> DevelopmentEvaluation:
+    ok = [t[2] for t in tried if t[2].full is not None and t[2].full[1]["centre_v"] == 0.0]
+    if ok:
+        return min(ok, key=lambda e: e.full[0])
+    return min(tried, key=lambda t: abs(t[1]) if math.isfinite(t[1]) else math.inf)[2]
+
+
+def _evaluated(evaluate: Callable[..., DevelopmentEvaluation]
+               ) -> list[DevelopmentEvaluation]:
+    return evaluate.evals  # type: ignore[attr-defined]
 
 
 def _relief_bearings(designs: list[DevelopmentEvaluation], n: int
@@ -1531,8 +1155,8 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
                   setup: Mapping[str, Any], teeth: KeptTeeth,
                   say: Callable[[str], None],
                   placed: Callable[[Mapping[str, float]], Case] | None = None, *,
-                  side: str = "drive", key_prefix: tuple = (), n_max: int | None = None
-                  ) -> DevelopmentEvaluation:
+                  side: str = "drive", key_prefix: tuple = (), n_max: int | None = None,
+                  slopes: Mapping[tuple, float] | None = None) -> DevelopmentEvaluation:
     """The chosen design: the best of the coarse search checked in turn at
     :data:`CHECK_LTCA` (at most :data:`VERIFIED_DESIGNS`) until one meets every target
     there, then the best by its checked score (every target met first). ``placed``: the
@@ -1540,7 +1164,11 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
     leaves them out), checked and kept in place of the coarse search's. ``side``: the
     flank analysed (``"drive"`` or ``"coast"``), its pinion tooth kept under
     ``key_prefix`` and the design's bearing (:class:`KeptTeeth`); ``n_max``: the budget
-    its lines name (default ``targets.max_evaluations``)."""
+    its lines name (default ``targets.max_evaluations``); ``slopes``: the height stage's
+    measured d(centre v)/d(blade angle) per bearing (:func:`_note_slope`): where the chosen
+    design misses the centre v at the default sampling (the coarse LTCA's footprint sits a
+    node off), one Newton step of its blade angle is checked too and kept where it scores
+    better."""
     n_max = targets.max_evaluations if n_max is None else n_max
     what = "design" if side == "drive" else f"{side} design"
     ranked = sorted((e for e in evals if e.full is not None),
@@ -1565,13 +1193,40 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
             + _line(checked[-1], n_max).split(": ", 2)[-1])
         if full[2]:
             break
-    return min(checked or ranked, key=lambda e: (not e.full[2], e.full[0]))
+    chosen = min(checked or ranked, key=lambda e: (not e.full[2], e.full[0]))
+    slope = (slopes or {}).get(_bearing_key(chosen.values))
+    if (placed is None or slope is None or not chosen.checked
+            or HEIGHT_NAME not in chosen.values or chosen.full[1]["centre_v"] == 0.0
+            or not math.isfinite(_centre_v(chosen))):
+        return chosen
+    lo, hi = targets.variables.get(HEIGHT_NAME, (-3.0, 3.0))
+    target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
+              else setup["centre_v"])
+    x = float(np.clip(chosen.values[HEIGHT_NAME] - (_centre_v(chosen) - target) / slope,
+                      lo, hi))
+    values = chosen.values | {HEIGHT_NAME: x}
+    try:
+        case = placed(values)
+        ms, grid = _analyse(case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
+                            pinion_key=(*key_prefix, *_bearing_key(values)), flank=side)
+    except Exception as exc:  # reported, never fatal: the chosen design stands
+        log.info("development re-centring of %s %d failed: %s", what, chosen.index + 1, exc)
+        return chosen
+    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                             pressure_limit=grid[4])
+    again = dataclasses.replace(chosen, values=values, metrics=ms, objective=full[0],
+                                shortfalls=full[1], met=full[2], full=full, case=case,
+                                checked=True, stage="re-centred")
+    say(f"  {what} {chosen.index + 1} re-centred at the default sampling, "
+        f"{HEIGHT_NAME} {x:.3g}: " + _line(again, n_max).split(": ", 2)[-1])
+    return again if (not full[2], full[0]) < (not chosen.full[2], chosen.full[0]) else chosen
 
 
 def _bearing_key(values: Mapping[str, float]) -> tuple:
     """The prescriptions of a design that shape its pinion tooth (all but the relief):
     :class:`KeptTeeth`'s key."""
-    return tuple(sorted((k, v) for k, v in values.items() if k not in RELIEF_NAMES))
+    return tuple(sorted((k, v) for k, v in values.items()
+                        if k not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)))
 
 
 def _excursions(t: DevelopmentTargets) -> list[tuple[str, Misalignment]]:
@@ -1591,6 +1246,6 @@ def _line(e: DevelopmentEvaluation, n: int, stage: str = "relief") -> str:
     vals = ", ".join(f"{k} {v:.3g}" for k, v in e.values.items())
     if e.reason:
         return f"  {stage} design {e.index + 1}/{n}: {vals}: failed ({e.reason})"
-    return (f"  {stage} design {e.index + 1}/{n}: {vals}: {_metrics_text(e.metrics)}; "
+    return (f"  {stage} design {e.index + 1}/{n}: {vals}: {metrics_text(e.metrics)}; "
             f"objective {e.objective:.3g}{' (all targets met)' if e.met else ''} "
             f"[{e.seconds:.0f} s]")

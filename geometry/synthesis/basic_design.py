@@ -132,6 +132,17 @@ class FlankOptions:
     relief_start : float — [1]
         Where the relief starts, as the fraction of the way from M to each end (blade
         heights); default 0.5, in [0, 1).
+    blade_angle_change : float — [rad]
+        Pressure-angle (blade-angle) change of the pinion blade about M's blade height,
+        applied after steps 4–6 (:func:`geometry.synthesis.blade_change.blade_angle_changed`):
+        the lever that moves the bearing up or down the tooth. Default 0, in (−5°, 5°);
+        the file gives it in degrees.
+    profile_crowning : float — [mm]
+        Profile crowning added by the pinion blade's profile curvature about M's blade
+        height (:func:`geometry.synthesis.blade_change.blade_profile_crowned`): the normal
+        ease-off at ±m_mn of blade height from M, > 0 crowned; applied after steps 4–6,
+        the lever that shortens the bearing in depth. Default 0, in (−100, 100) µm; the
+        file gives it in µm.
     """
 
     path_angle: float = math.radians(-45.0)
@@ -141,6 +152,8 @@ class FlankOptions:
     tip_relief: float = 0.015
     root_relief: float = 0.015
     relief_start: float = 0.5
+    blade_angle_change: float = 0.0
+    profile_crowning: float = 0.0
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "path_angle", math.radians(real(
@@ -161,6 +174,14 @@ class FlankOptions:
         object.__setattr__(self, "relief_start", real(
             "relief_start", self.relief_start, unit="1, fraction of the way from M to the "
             "flank end", low=0.0, high=1.0, high_open=True))
+        object.__setattr__(self, "blade_angle_change", math.radians(real(
+            "blade_angle_change", math.degrees(real("blade_angle_change",
+                                                    self.blade_angle_change, unit="rad")),
+            unit="deg", low=-5.0, high=5.0, low_open=True, high_open=True)))
+        object.__setattr__(self, "profile_crowning", 1e-3 * real(
+            "profile_crowning", 1e3 * real("profile_crowning", self.profile_crowning,
+                                           unit="mm"),
+            unit="um", low=-100.0, high=100.0, low_open=True, high_open=True))
 
 
 @dataclass(frozen=True)
@@ -391,6 +412,8 @@ _FILE_UNITS: dict[str, tuple[str, Callable[[Any], Any], Callable[[Any], Any]]] =
     "tip_relief": ("um", lambda v: v * 1e-3, lambda v: 1e3 * v),
     "root_relief": ("um", lambda v: v * 1e-3, lambda v: 1e3 * v),
     "relief_start": ("1", _same, _same),
+    "blade_angle_change": ("deg", math.radians, math.degrees),
+    "profile_crowning": ("um", lambda v: v * 1e-3, lambda v: 1e3 * v),
 }
 #: file units of the flank prescriptions (``[synthesis]`` of a basic file)
 FLANK_OPTION_UNITS: Mapping[str, str] = {k: u for k, (u, _, _) in _FILE_UNITS.items()}

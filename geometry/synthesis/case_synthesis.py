@@ -46,6 +46,10 @@ From a :class:`geometry.synthesis.basic_design.BasicDesign` this module builds a
    pinion flank (``tip_relief``, ``root_relief``, from ``relief_start`` of the way from M to
    each end) by the blade's flankrem and toprem, whose corners lie away from M, so that
    steps 4–6 stay exact.
+   7a. **Blade-angle change** (:func:`geometry.synthesis.blade_change.blade_angle_changed`,
+   ``blade_angle_change``, default 0): the pinion blade turned about M's blade height,
+   before the relief: the pressure angle at M and with it the bearing's height on the
+   tooth (the development's lever for the pattern's height, contact.optimize.development).
 8. **Tip planes** (:func:`geometry.synthesis.tip_plane.tip_plane_on_root_cone`, face
    milling and face hobbing): each pinion cut's blade tip plane moved along its cutter axis
    (the flank unchanged) so that the root line it generates touches the pinion's root cone
@@ -89,13 +93,14 @@ from geometry.iso23509.blank import BlankGeometry
 from geometry.machine.cradle import MachineSettings, cutter_pose, roll_angle
 from geometry.machine.cutter import Blade
 from geometry.machine.flank_point import FlankPoint, MemberFlank
-from geometry.machine.relief import ReliefError, relieved_blade
+from geometry.machine.relief import ReliefError, relief_heights, relieved_blade
 from geometry.pair.assembly import member_transform
 from geometry.pair.conventional_tca import ToothPair
 from geometry.pair.design_point import (
     design_point,
 )
 from geometry.synthesis.basic_design import DEFAULT_RATING, BasicDesign, FlankOptions
+from geometry.synthesis.blade_change import blade_angle_changed, blade_profile_crowned
 from geometry.synthesis.face_hobbing import face_hobbing_pinion_tools
 from geometry.synthesis.gear import (
     GearTools,
@@ -380,8 +385,19 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
     # flank near M (and with it steps 4-6) is unchanged (geometry.machine.relief)
     say(f"pinion {pf}: tip and root relief")
     tools = fs.tools
+    blade = tools.blade
+    if fo.blade_angle_change or fo.profile_crowning:  # step 7a (blade_change)
+        pivot = (blade.profile_reference_height if blade.profile == "circular" else
+                 relief_heights(blade, tools.settings, pair.pinion_blank, pair.pinion_hand,
+                                pair.gear_blank).mean)
+        try:
+            blade = blade_angle_changed(blade, fo.blade_angle_change, pivot)
+            blade = blade_profile_crowned(blade, fo.profile_crowning, pivot,
+                                          pair.geom.m_mn)
+        except InputError as exc:
+            raise InputError(f"synthesis.{pf}.{exc}") from None
     try:
-        blade = relieved_blade(tools.blade, tools.settings, pair.pinion_blank,
+        blade = relieved_blade(blade, tools.settings, pair.pinion_blank,
                                pair.pinion_hand, pair.gear_blank, tip_relief=fo.tip_relief,
                                root_relief=fo.root_relief, start=fo.relief_start)
     except ReliefError as exc:  # named as the basic file's per-flank input
@@ -604,7 +620,11 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             f"{_fmt(o.ellipse_length)} x b2 at {_fmt(o.approach * 1e3)} um, tip/root "
             f"relief {_fmt(o.tip_relief * 1e3)}/{_fmt(o.root_relief * 1e3)} um from "
             f"{_fmt(o.relief_start)} of the way to the ends; "
-            f"curvature residual {fs.tools.shape_error:.1g} 1/mm.")
+            + (f"blade angle changed by {_fmt(math.degrees(o.blade_angle_change))} deg "
+               "about M (step 7a); " if o.blade_angle_change else "")
+            + (f"profile crowning {_fmt(o.profile_crowning * 1e3)} um at +/-m_mn from M "
+               "(step 7a); " if o.profile_crowning else "")
+            + f"curvature residual {fs.tools.shape_error:.1g} 1/mm.")
     return " ".join(parts)
 
 
@@ -635,6 +655,10 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             "tip_relief_um": round(fs.options.tip_relief * 1e3, 9),
             "root_relief_um": round(fs.options.root_relief * 1e3, 9),
             "relief_start": fs.options.relief_start,
+            **({"blade_angle_change_deg": round(math.degrees(fs.options.blade_angle_change), 9)}
+               if fs.options.blade_angle_change else {}),
+            **({"profile_crowning_um": round(fs.options.profile_crowning * 1e3, 9)}
+               if fs.options.profile_crowning else {}),
             "gear_rotation_deg": math.degrees(mp.gear_rotation),
             "pinion_rotation_deg": math.degrees(mp.pinion_rotation),
             "pinion_blank_phase_deg": math.degrees(fs.tools.blank_phase),

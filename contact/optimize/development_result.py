@@ -1,0 +1,500 @@
+"""One design of a development and the whole development's result, in words and in the
+case (:mod:`contact.optimize.development`).
+
+:class:`DevelopmentEvaluation` is one analysed design, :class:`DevelopmentResult` what
+:func:`contact.optimize.development.develop` did: its headline (each missed target with
+its value and limit, both flanks' peak pressure), the paragraph and the informational
+``[development]`` table written into the case, and the coast design torque capped at the
+coast flank's static capacity. Imported through :mod:`contact.optimize.development`.
+
+Public names
+------------
+DevelopmentEvaluation, DevelopmentResult, COAST_STATUS, STATIC_MARGIN, metrics_text
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from contact.ltca.plausibility import LTE_SPREAD_LIMIT
+from contact.optimize.development_targets import DevelopmentTargets
+from geometry.case import Case
+from geometry.synthesis.basic_design import FLANK_OPTION_UNITS, BasicDesign
+
+__all__ = ["COAST_STATUS", "STATIC_MARGIN", "DevelopmentEvaluation", "DevelopmentResult",
+           "metrics_text"]
+
+
+# --------------------------------------------------------------------------- evaluation
+@dataclass(frozen=True, eq=False)
+class DevelopmentEvaluation:
+    """One analysed design of a development.
+
+    Attributes
+    ----------
+    index : int
+    values : dict name → float
+        The developed inputs [file units].
+    metrics : dict name → ndarray (2,)
+        :data:`METRIC_NAMES` at (light, design) torque; NaN when it failed.
+    objective : float
+    shortfalls : dict name → float
+    met : bool
+    reason : str
+        Why the design failed (empty if it did not).
+    seconds : float
+        CPU time of its synthesis and analysis [s].
+    case : Case or None
+        The synthesised case (None when the synthesis failed).
+    full : (objective, shortfalls, met) or None
+        The score on every target (stage ``"relief"``), for comparing designs of both
+        stages; None when it failed.
+    checked : bool
+        ``metrics`` and ``full`` are those of the final check at the default sampling
+        (:data:`CHECK_LTCA`), not of the coarse search.
+    stage : str
+        ``"bearing"`` or ``"relief"``.
+    """
+
+    index: int
+    values: dict[str, float]
+    metrics: dict[str, np.ndarray]
+    objective: float
+    shortfalls: dict[str, float]
+    met: bool
+    reason: str
+    seconds: float
+    case: Case | None = None
+    full: tuple[float, dict[str, float], bool] | None = None
+    checked: bool = False
+    stage: str = ""
+
+
+@dataclass(frozen=True, eq=False)
+class DevelopmentResult:
+    """What :func:`develop` did.
+
+    Attributes
+    ----------
+    basic : BasicDesign
+        The design with the developed prescriptions of the drive flank (and of the coast
+        flank where :attr:`coast_status` is ``"developed"``).
+    case : Case
+        Its synthesis (the developed case).
+    report : geometry.synthesis.case_synthesis.SynthesisReport
+        The synthesis report of ``case``.
+    best : DevelopmentEvaluation
+        The chosen design (every target met, else the least objective).
+    evaluations : tuple of DevelopmentEvaluation
+        Every design analysed, in order.
+    torque : (float, float) — [N·m]
+        Light and design pinion torque.
+    torque_source : str
+        Where the design torque came from (:func:`design_torque_of`).
+    tolerance : dict label → (metrics, shortfalls)
+        The developed design at each excursion (``dE+0.05`` …) at (light, design) torque,
+        with the shortfalls of the clearance, edge and plastic targets there.
+    targets : DevelopmentTargets
+    seconds : float
+        CPU time of the whole development [s].
+    centre_v : float — [1]
+        The depth centre aimed at (``targets.pattern_centre_v`` or the working depth's
+        middle, :func:`working_depth_centre`).
+    coast : dict name → ndarray (2,) or None
+        :data:`METRIC_NAMES` of the written case's coast flank at (light, design) torque
+        at :data:`CHECK_LTCA`; None where that analysis failed.
+    check_seconds : float
+        CPU time [s] of the drive flank's final check, the final synthesis and the
+        tolerance check (the rest of ``seconds`` is the designs' and the coast flank's,
+        :attr:`stage_seconds`).
+    torque_lowered : bool
+        The design torque is the bearing's static flank capacity, below the rating's
+        (:func:`_static_capacity`); :meth:`recorded` writes it as the case's
+        ``[rating] design_torque``.
+    coast_best : DevelopmentEvaluation or None
+        The coast flank written: a design of its search (checked at :data:`CHECK_LTCA`)
+        or, stage ``"synthesised"``, the flank as synthesised from its own prescriptions;
+        None where its analysis failed.
+    coast_evaluations : tuple of DevelopmentEvaluation
+        Every design of the coast flank's search, in order (empty where none ran).
+    coast_status : str
+        A key of :data:`COAST_STATUS`: ``"developed"``, ``"met"`` (every target met as
+        synthesised: no search), ``"off"`` (``coast_max_evaluations`` = 0), ``"not
+        improved"`` (the search found nothing better) or ``"not checked"``; empty where
+        not known (a result made by hand).
+    coast_before : dict name → ndarray (2,) or None
+        The coast flank's metrics as synthesised where its search ran (else None).
+    coast_seconds : float
+        CPU time [s] of the coast flank's check and development.
+    pressure_limit : float — [MPa]
+        The flank peak pressure allowed at the design torque (``max_flank_pressure`` or
+        the static strength, :func:`static_strength`); inf where not known.
+    root_safety : float — [1]
+        S_F,FE of the weaker member at the design torque written, from the FE root stress
+        of the written case (:func:`contact.optimize.development_root.root_capacity`);
+        NaN where not computed (a design torque given, no rating, the FE model failed).
+    root_text : str
+        Why the design torque was lowered to the root-stress capacity (empty where not).
+    """
+
+    basic: BasicDesign
+    case: Case
+    report: Any
+    best: DevelopmentEvaluation
+    evaluations: tuple[DevelopmentEvaluation, ...]
+    torque: tuple[float, float]
+    torque_source: str
+    tolerance: dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]
+    targets: DevelopmentTargets
+    seconds: float
+    centre_v: float = 0.5
+    coast: dict[str, np.ndarray] | None = None
+    check_seconds: float = 0.0
+    torque_lowered: bool = False
+    coast_best: DevelopmentEvaluation | None = None
+    coast_evaluations: tuple[DevelopmentEvaluation, ...] = ()
+    coast_status: str = ""
+    coast_before: dict[str, np.ndarray] | None = None
+    coast_seconds: float = 0.0
+    pressure_limit: float = math.inf
+    root_safety: float = math.nan
+    root_text: str = ""
+
+    @property
+    def tolerant(self) -> bool:
+        """At every excursion the pattern stays clear of toe and heel at light load and the
+        edges elastic with at most the edge share allowed."""
+        keys = ("toe", "heel", "edge", "plastic")
+        return all(all(s[k] == 0.0 for k in keys) for _, s in self.tolerance.values())
+
+    @property
+    def stage_seconds(self) -> dict[str, float]:
+        """CPU time [s] of the drive flank's bearing stage, its relief stage (their
+        designs' syntheses and coarse LTCAs), the final checks and the coast flank (its
+        check and development)."""
+        out = {st: sum(e.seconds for e in self.evaluations if e.stage == st)
+               for st in ("bearing", "height", "relief")}
+        return out | {"check": self.check_seconds, "coast": self.coast_seconds}
+
+    def summary(self) -> str:
+        """One paragraph for the case's ``source``: prescriptions, targets, achieved."""
+        b, t = self.best, self.targets
+        m = b.metrics
+        vals = _values_text(b.values)
+        tl, td = self.torque
+        tol = "; ".join(
+            f"{lab}: pattern {ms['pattern_toe_u'][0]:.2f}-{ms['pattern_heel_u'][0]:.2f}, edge "
+            f"{100 * ms['edge_load_share'][1]:.1f} %, plastic "
+            f"{100 * np.max(ms['plastic_share']):.1f} %"
+            for lab, (ms, _) in self.tolerance.items())
+        return (
+            f"Development bearing (contact.optimize.development, {len(self.evaluations)} "
+            f"designs, coarse LTCA, the chosen one "
+            f"{'checked at the default sampling' if b.checked else 'not checked'}): drive "
+            f"flank {vals}; targets at {tl:.4g} N m (light, "
+            f"{t.light_load:g} x design) pattern {t.pattern_length:g} +/- "
+            f"{t.pattern_length_tolerance:g} of the face width centred at "
+            f"({t.pattern_centre_u:g}, {self.centre_v:.3g}), clear of the flank ends by "
+            f"{t.clearance:g}; at {td:.4g} N m (design, {self.torque_source}) edge share <= "
+            f"{100 * t.max_edge_share:g} %, plastic <= {100 * t.max_plastic_share:g} %; LTE "
+            f"p-p <= {t.max_lte:g} urad. Achieved: pattern u {m['pattern_toe_u'][0]:.2f}-"
+            f"{m['pattern_heel_u'][0]:.2f}, v {m['pattern_root_v'][0]:.2f}-"
+            f"{m['pattern_tip_v'][0]:.2f}, centre ({m['pattern_centre_u'][0]:.2f}, "
+            f"{m['pattern_centre_v'][0]:.2f}); edge share {100 * m['edge_load_share'][0]:.1f}/"
+            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
+            f"{100 * m['plastic_share'][0]:.1f}/{100 * m['plastic_share'][1]:.1f} %, LTE p-p "
+            f"{m['lte_peak_to_peak'][0]:.1f}/{m['lte_peak_to_peak'][1]:.1f} urad, flank "
+            f"peak pressure {m['pressure_max_flank'][0]:.0f}/"
+            f"{m['pressure_max_flank'][1]:.0f} MPa (light/design); {self._met_text()}. "
+            f"Tolerance (dE = +/-{t.offset_tolerance:g} mm, dP = +/-"
+            f"{t.mounting_tolerance:g} mm): {tol}"
+            f" ({'tolerant' if self.tolerant else 'not tolerant'}). "
+            + self._coast_text().rstrip())
+
+    def headline(self) -> str:
+        """One line: the chosen design, whether it met its targets and is tolerant, and
+        what became of the coast flank."""
+        b, t = self.best, self.targets
+        m = b.metrics
+        return (f"development: design {b.index + 1} of {len(self.evaluations)}, "
+                f"{self.missed_text(b)}; light-load pattern {m['pattern_toe_u'][0]:.2f}-"
+                f"{m['pattern_heel_u'][0]:.2f} of the face, edge share "
+                f"{100 * m['edge_load_share'][1]:.1f} % and LTE p-p "
+                f"{m['lte_peak_to_peak'][1]:.0f} urad at {self.torque[1]:.4g} N m; "
+                f"{'tolerant' if self.tolerant else 'not tolerant'} at dE +/-"
+                f"{t.offset_tolerance:g} mm, dP +/-{t.mounting_tolerance:g} mm; "
+                f"{self._coast_headline()}; {self._pressures_text()}"
+                f"{self._root_headline()}; {self.seconds:.0f} s CPU")
+
+    def _root_headline(self) -> str:
+        if not math.isfinite(self.root_safety):
+            return ""
+        why = (" (design torque lowered to the root-stress capacity)" if self.root_text
+               else "")
+        return (f"; FE root stress S_F,FE {self.root_safety:.2f} at "
+                f"{self.torque[1]:.4g} N m{why}")
+
+    @property
+    def coast_static_capacity(self) -> float:
+        """The coast flank's static flank capacity [N·m] where its flank peak pressure at
+        the design torque exceeds the limit (:attr:`pressure_limit`), else NaN:
+        T (0.99 p_lim / p_max)³, rounded down to 0.1 N·m — Hertz's p ∝ F^(1/3) of a point
+        contact, conservative where the pattern grows under load (p grows more slowly),
+        as the drive flank's first step (:func:`_static_capacity`)."""
+        if not self.coast or not math.isfinite(self.pressure_limit):
+            return math.nan
+        p = float(self.coast["pressure_max_flank"][1])
+        if not (math.isfinite(p) and p > self.pressure_limit):
+            return math.nan
+        t = self.torque[1] * (STATIC_MARGIN * self.pressure_limit / p) ** 3
+        return math.floor(10.0 * t) / 10.0
+
+    def with_coast_capacity(self, case: Case) -> tuple[Case, float]:
+        """``case`` with ``[rating] coast_design_torque`` lowered to
+        :attr:`coast_static_capacity` where that is below the coast side's design torque
+        (its ``coast_design_torque``, else the design torque), with a sentence in the
+        rating's ``source``; the torque written (NaN where unchanged). Each flank's design
+        torque is then no higher than its own static flank capacity at its developed
+        bearing."""
+        import json
+        from types import MappingProxyType
+
+        cap = self.coast_static_capacity
+        rating = dict(case.extra.get("rating") or {})
+        now = rating.get("coast_design_torque", rating.get("design_torque"))
+        if not math.isfinite(cap) or now is None or cap >= float(now):
+            return case, math.nan
+        p = float(self.coast["pressure_max_flank"][1])
+        rating["coast_design_torque"] = cap
+        rating["source"] = (str(rating.get("source", "")).rstrip()
+                            + f" coast_design_torque {cap:g} N m: the coast flank's static "
+                            f"capacity of its developed bearing (contact.optimize.development:"
+                            f" flank peak pressure {p:.0f} MPa at {self.torque[1]:g} N m "
+                            f"above the static strength {self.pressure_limit:.0f} MPa).")
+        extra = json.loads(json.dumps({**case.extra, "rating": rating}))
+        return dataclasses.replace(case, extra=MappingProxyType(extra)), cap
+
+    def missed_text(self, e: DevelopmentEvaluation | None = None) -> str:
+        """Whether ``e`` (default the chosen drive design) met every target, else each
+        missed target with its value and its limit, in numbers."""
+        e = self.best if e is None else e
+        if e.full is None:
+            return "not analysed"
+        if e.full[2]:
+            return "every target met"
+        return "not every target met: " + "; ".join(
+            _missed(k, e.metrics, self.targets, self.centre_v, self.pressure_limit)
+            for k, v in e.full[1].items() if v > 0)
+
+    def _pressures_text(self) -> str:
+        """Both flanks' flank peak pressure at the design torque against the limit."""
+        drive = float(self.best.metrics["pressure_max_flank"][1])
+        coast = (float(self.coast["pressure_max_flank"][1]) if self.coast
+                 else math.nan)
+        lim = (f" (limit {self.pressure_limit:.0f} MPa)"
+               if math.isfinite(self.pressure_limit) else "")
+        return (f"flank peak pressure at {self.torque[1]:.4g} N m drive {drive:.0f} MPa, "
+                f"coast {coast:.0f} MPa{lim}")
+
+    def recorded(self, case: Case) -> Case:
+        """``case`` (the developed case, maybe with its rating's design torque set) with
+        :meth:`summary` appended to its ``source``, :meth:`table` as its informational
+        ``[development]`` table and, where the basic file's ``[operating]`` gives no
+        torques, the light and the design torque as its operating torques [N·m]."""
+        import json
+        from types import MappingProxyType
+
+        extra = json.loads(json.dumps({**case.extra, "development": self.table()}))
+        if self.torque_lowered:  # the rating's design torque is the bearing's capacity
+            rating = dict(extra.get("rating") or {})
+            rating["design_torque"] = float(self.torque[1])
+            rating["source"] = (str(rating.get("source", "")).rstrip()
+                                + f" design_torque lowered to {self.torque[1]:g} N m by the "
+                                f"development: {self.torque_source}.").lstrip()
+            extra["rating"] = rating
+        more: dict[str, Any] = {}
+        if "torque" not in self.basic.operating:
+            # the loads the bearing was developed for are the case's operating torques
+            # (the seed's 50/250/500 N·m otherwise, unrelated to this design's size)
+            # (to 0.1 N·m, rounded down: the design torque is the rating's long-life
+            # capacity by default, at which S_H = S_H,min exactly; rounded up it would fail
+            # the rating by round-off)
+            more["operating"] = dataclasses.replace(
+                case.operating, torque=tuple(math.floor(10.0 * float(t)) / 10.0
+                                             for t in self.torque))
+        return dataclasses.replace(case, source=case.source.rstrip() + " " + self.summary(),
+                                   extra=MappingProxyType(extra), **more)
+
+    def _coast_text(self) -> str:
+        c = self.coast
+        if not c:
+            return "Coast flank: not checked (its analysis failed). "
+        achieved = (f"pattern u {c['pattern_toe_u'][0]:.2f}-{c['pattern_heel_u'][0]:.2f}, v "
+                    f"{c['pattern_root_v'][0]:.2f}-{c['pattern_tip_v'][0]:.2f}, centre "
+                    f"({c['pattern_centre_u'][0]:.2f}, {c['pattern_centre_v'][0]:.2f}); edge share "
+                    f"{100 * c['edge_load_share'][0]:.1f}/{100 * c['edge_load_share'][1]:.1f}"
+                    f" %, plastic {100 * c['plastic_share'][0]:.1f}/"
+                    f"{100 * c['plastic_share'][1]:.1f} %, flank peak pressure "
+                    f"{c['pressure_max_flank'][0]:.0f}/{c['pressure_max_flank'][1]:.0f} MPa, "
+                    f"LTE p-p {c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} "
+                    "urad (light/design)")
+        b = self.coast_best
+        met = "" if b is None or b.full is None else f"; {_met_text(b.full)}"
+        if self.coast_status == "developed":
+            before = self.coast_before
+            was = ("" if not before else
+                   f"; as synthesised plastic {100 * np.max(before['plastic_share']):.1f} %, "
+                   f"edge share {100 * before['edge_load_share'][1]:.1f} %, LTE p-p "
+                   f"{before['lte_peak_to_peak'][0]:.1f}/"
+                   f"{before['lte_peak_to_peak'][1]:.1f} urad")
+            n = len(self.coast_evaluations)
+            return (f"Coast flank (developed, {n} design{'s' if n != 1 else ''} at the "
+                    f"same torques and targets, the chosen one checked at the default "
+                    f"sampling): {_values_text(b.values)}{was}. Achieved: {achieved}{met}. ")
+        why = COAST_STATUS.get(self.coast_status, "not developed")
+        if self.coast_status == "not improved":
+            why += f" ({len(self.coast_evaluations)} designs)"
+        return f"Coast flank ({why}): {achieved}{met}. "
+
+    def _coast_headline(self) -> str:
+        b = self.coast_best
+        if self.coast_status == "developed":
+            return (f"coast flank developed ({len(self.coast_evaluations)} designs): plastic "
+                    f"{100 * np.max(b.metrics['plastic_share']):.1f} %, "
+                    f"{self.missed_text(b)}")
+        if b is None or b.full is None:
+            return "coast flank not checked"
+        what = {"met": "met every target as synthesised", "off": "coast development off",
+                "not improved": "its search found nothing better"}.get(self.coast_status,
+                                                                      "not developed")
+        return (f"coast flank not developed ({what}): plastic "
+                f"{100 * np.max(b.metrics['plastic_share']):.1f} %, {self.missed_text(b)}")
+
+    def _met_text(self) -> str:
+        return _met_text(self.best.full)
+
+    def table(self) -> dict[str, Any]:
+        """The case's informational ``[development]`` table (TOML-safe values)."""
+        b = self.best
+        m = {k: [round(float(x), 6) for x in v] for k, v in b.metrics.items()}
+        return {
+            "note": "informational (contact.optimize.development): the developed drive-flank "
+                    "prescriptions and what the LTCA gave at [light, design] torque "
+                    + ("(the final check at ltca run's default sampling)" if b.checked
+                       else "(the coarse LTCA of the search)")
+                    + "; coast: the coast flank at the same torques and targets (its "
+                    "development, the prescriptions written, achieved at the default "
+                    "sampling); coast_achieved: the same metrics as achieved",
+            "torque_Nm": [float(x) for x in self.torque],
+            "design_torque_source": self.torque_source,
+            "root_safety_fe": (round(float(self.root_safety), 4)
+                               if math.isfinite(self.root_safety) else "not computed"),
+            "prescriptions": {k: float(v) for k, v in b.values.items()},
+            "targets_met": int(b.full[2]),
+            "tolerant": int(self.tolerant),
+            "evaluations": len(self.evaluations),
+            "cpu_seconds": round(self.seconds, 1),
+            "cpu_seconds_stages": {k: round(v, 1) for k, v in self.stage_seconds.items()},
+            "achieved": m,
+            "coast": self._coast_table(),
+        } | ({"coast_achieved": _rounded(self.coast)} if self.coast else {})
+
+    def _coast_table(self) -> dict[str, Any]:
+        c = self.coast_best
+        out: dict[str, Any] = {
+            "development": COAST_STATUS.get(self.coast_status, "not developed"),
+            "evaluations": len(self.coast_evaluations),
+            "cpu_seconds": round(self.coast_seconds, 1)}
+        if c is not None:
+            out["prescriptions"] = {k: float(v) for k, v in c.values.items()}
+            if c.full is not None:
+                out["targets_met"] = int(c.full[2])
+                out["missed"] = [k for k, v in c.full[1].items() if v > 0]
+        if self.coast_before:
+            out["as_synthesised"] = _rounded(self.coast_before)
+        return out
+
+
+def _rounded(metrics: Mapping[str, np.ndarray]) -> dict[str, list[float]]:
+    return {k: [round(float(x), 6) for x in v] for k, v in metrics.items()}
+
+
+def _met_text(full: tuple[float, dict[str, float], bool]) -> str:
+    _, short, met = full
+    return ("every target met" if met else "not every target met: "
+            + ", ".join(k for k, v in short.items() if v > 0))
+
+
+def _missed(name: str, m: Mapping[str, np.ndarray], t: DevelopmentTargets,
+            centre_v: float, pressure_limit: float) -> str:
+    """One missed target of :func:`development_score` with its value and its limit."""
+    if name == "length":
+        length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
+        return (f"pattern length {length:.2f} (target {t.pattern_length:g} +/- "
+                f"{t.pattern_length_tolerance:g})")
+    if name == "centre_u":
+        return (f"centre u {m['pattern_centre_u'][0]:.2f} (target {t.pattern_centre_u:g} "
+                f"+/- {t.centre_tolerance:g})")
+    if name == "centre_v":
+        return (f"centre v {m['pattern_centre_v'][0]:.2f} (target {centre_v:.3g} +/- "
+                f"{t.centre_tolerance:g})")
+    ends = {"toe": ("pattern_toe_u", "toe u"), "heel": ("pattern_heel_u", "heel u"),
+            "root": ("pattern_root_v", "root v"), "tip": ("pattern_tip_v", "tip v")}
+    if name in ends:
+        key, what = ends[name]
+        return (f"{name} clearance: pattern {what} {m[key][0]:.2f} (clear of the grid's "
+                f"end by {t.clearance:g})")
+    if name == "edge":
+        return (f"edge share {100 * m['edge_load_share'][1]:.1f} % (limit "
+                f"{100 * t.max_edge_share:g} %)")
+    if name == "plastic":
+        return (f"plastic share {100 * np.max(m['plastic_share']):.1f} % (limit "
+                f"{100 * t.max_plastic_share:g} %)")
+    if name == "lte":
+        return (f"LTE p-p {np.max(m['lte_peak_to_peak']):.0f} urad (limit "
+                f"{t.max_lte:g})")
+    if name == "pressure":
+        lim = t.max_flank_pressure if t.max_flank_pressure is not None else pressure_limit
+        return (f"flank peak pressure {m['pressure_max_flank'][1]:.0f} MPa (limit "
+                f"{lim:.0f})")
+    if name == "spread":
+        return (f"LTE spread {np.max(m['lte_spread']):.2f} (limit "
+                f"{LTE_SPREAD_LIMIT:g})")
+    return name
+
+
+def _values_text(values: Mapping[str, float]) -> str:
+    return ", ".join(f"{k} {v:.4g}" + (f" {FLANK_OPTION_UNITS[k]}"
+                                        if FLANK_OPTION_UNITS[k] != "1" else "")
+                     for k, v in values.items())
+
+
+#: margin below the flank's static strength that :func:`_static_capacity` aims at [1]
+STATIC_MARGIN = 0.99
+
+
+#: the outcomes of the coast flank's development (``DevelopmentResult.coast_status``)
+COAST_STATUS = {
+    "developed": "developed",
+    "met": "not developed: met every target as synthesised",
+    "off": "not developed: coast development off (coast_max_evaluations = 0)",
+    "not improved": "not developed: no design of its search did better than as synthesised",
+    "not checked": "not checked: its analysis failed",
+}
+
+
+def metrics_text(m: Mapping[str, np.ndarray]) -> str:
+    """A design's metrics in one phrase (light-load pattern and its footprint centre,
+    design-torque edge share, worst plastic share, LTE at both torques)."""
+    return (f"pattern {m['pattern_toe_u'][0]:.2f}-{m['pattern_heel_u'][0]:.2f} x "
+            f"{m['pattern_root_v'][0]:.2f}-{m['pattern_tip_v'][0]:.2f} centre "
+            f"({m['pattern_centre_u'][0]:.2f}, {m['pattern_centre_v'][0]:.2f}), edge "
+            f"{100 * m['edge_load_share'][1]:.1f} %, plastic "
+            f"{100 * np.max(m['plastic_share']):.1f} %, LTE "
+            f"{m['lte_peak_to_peak'][0]:.0f}/{m['lte_peak_to_peak'][1]:.0f} urad")

@@ -1,0 +1,150 @@
+"""The development's root-stress capacity (issue 71 item 2, contact/optimize/
+development_root.py) against hand calculations on hand-made ``/ltca`` + ``/rating``
+(built as in tests/test_verdict_checks.py).
+
+The synthetic analysis is a root stress linear in the torque (σ_FE,max = c·T, the first-
+order model the capacity step assumes) and a K_v of ISO 10300-1 Method B's form,
+K_v = 1 + k/T (K_v − 1 ∝ 1/(F/b)). The safety is the verdict's own
+(:func:`contact.study.verdict_checks.root_stress_safety`), so the test checks the capacity
+arithmetic and the stepping; the tolerances are exact arithmetic (1e-12) or the 0.1 N·m the
+capacity is rounded down to.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from contact.optimize import development_root as dr
+from contact.study.verdict_checks import root_stress_safety
+
+MAT = "case_carburised_steel"
+FP = 425 * 2 * 1.0 * 0.99 * 0.98 * 1.0  # σ_FP = σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X [MPa]
+K_A = 1.25
+
+
+def _tree(torques, c=(5.0, 4.0), k_v=10.0):
+    """Root stress c·T [MPa] per member, K_v = 1 + k_v/T, S_Fmin 1.3."""
+    t = np.asarray(torques, float)
+    lt = xr.Dataset({"root_stress_max": (("torque", "member"), np.outer(t, c))},
+                    coords={"torque": t, "member_label": ("member", ["pinion", "gear"])},
+                    attrs={"material_pinion": MAT, "material_gear": MAT})
+    rt = xr.Dataset({"sigma_FP": ("member", [FP, FP]), "K_A": K_A,
+                     "K_v": ("torque", 1.0 + k_v / t), "S_Fmin": 1.3,
+                     "Y_NT": ("member", [1.0, 1.0]), "design_torque": t[-1]},
+                    coords={"torque": t})
+    return xr.DataTree.from_dict({"/": xr.Dataset(), "/ltca": lt, "/rating": rt})
+
+
+def test_capacity_step_by_hand():
+    """The 10x43's numbers: 357 N·m, S_F,FE 1.20 against 1.3, margin 0.99:
+    357·0.99·1.20/1.3 = 326.243 N·m, rounded down to 326.2."""
+    assert dr.root_capacity_step(357.0, 1.20, 1.3) == 326.2
+    assert dr.root_capacity_step(100.0, 1.3, 1.3, margin=1.0) == 100.0
+    with pytest.raises(ValueError, match="S_Fmin"):
+        dr.root_capacity_step(100.0, 1.2, 0.0)
+    with pytest.raises(ValueError, match="S_F,FE"):
+        dr.root_capacity_step(100.0, math.nan, 1.3)
+
+
+def test_root_safety_is_the_verdicts():
+    """At 100 N·m: pinion 500 MPa, K_v 1.1: σ_F,FE = 500·1.25·1.1 = 687.5 MPa,
+    S_F,FE = 824.67/687.5 = 1.1995 (the weaker member); gear 400 MPa: 1.499."""
+    s, s_min, member = dr.root_safety(_tree([15.0, 100.0]))
+    assert member == "pinion" and s_min == 1.3
+    np.testing.assert_allclose(s[-1], FP / 687.5, rtol=1e-12)
+    rt = _tree([100.0])["/rating"].to_dataset()
+    np.testing.assert_allclose(s[-1], root_stress_safety(np.array([[500.0, 400.0]]), rt)[0, 0],
+                               rtol=1e-12)
+
+
+def _model(power, k_v):
+    """σ_FE,max = c·100·(T/100)^power [MPa] (c 5.5 and 4 per member), K_v = 1 + k_v/T."""
+    def tree(case, torques):
+        t = np.asarray(torques, float)
+        out = _tree(t, k_v=k_v)
+        rs = out["/ltca"].to_dataset()
+        rs["root_stress_max"] = (("torque", "member"),
+                                 np.outer(100.0 * (t / 100.0) ** power, (5.5, 4.0)))
+        out["/ltca"] = rs
+        return out
+    return tree
+
+
+def _exact(power, k_v):
+    """The torque at which S_F,FE = 1.3 exactly (the pinion, the weaker member)."""
+    from scipy.optimize import brentq
+
+    return brentq(lambda t: FP / (550.0 * (t / 100.0) ** power * K_A * (1 + k_v / t)) - 1.3,
+                  1.0, 100.0, xtol=1e-10)
+
+
+@pytest.mark.parametrize("power", [1.0, 0.55])
+def test_lowered_torque_holds(monkeypatch, power):
+    """On a root stress linear in the torque and on one growing as T^0.55 (the 10x43's
+    measured slope near its design torque), with K_v = 1 + 1.6/T (the 10x43's K_v 1.016 at
+    its design torque, scaled to 100 N·m): at 100 N·m S_F,FE = 824.67/(550·1.25·1.016) =
+    1.1806 < 1.3; the torque written makes S_F,FE ≥ S_Fmin and is within 5 % below the
+    exact root-stress capacity (solved by brentq: 90.67 N·m for the linear model,
+    550·1.25·(T + 1.6) = 824.67/1.3; the 1 % margin and the first step's secant exponent
+    make it conservative); the light torque follows and the source says why."""
+    monkeypatch.setattr(dr, "_root_tree", _model(power, 1.6))
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity, the pinion torque"}
+    lines: list[str] = []
+    tree, s, text = dr.root_capacity(None, setup, 0.15, lines.append)
+    light, t = setup["torques"]
+    exact = _exact(power, 1.6)
+    if power == 1.0:
+        assert exact == pytest.approx(FP / 1.3 / 6.875 - 1.6, abs=1e-6)
+    assert s >= 1.3 and 0.95 * exact <= t <= exact and setup["lowered"]
+    assert light == pytest.approx(0.15 * t)
+    hand = FP / (550.0 * (t / 100.0) ** power * K_A * (1.0 + 1.6 / t))
+    assert s == pytest.approx(hand, rel=1e-12)
+    assert "S_F,FE 1.18 (pinion) below S_Fmin 1.3 at the design torque 100 N m" in text
+    assert f"-> {t:.4g} N m, where S_F,FE (pinion) is {s:.2f}" in text
+    assert "still below" not in text and "measured (S_F,FE ~ T^-b)" in text
+    assert setup["source"] == text and tree is not None
+
+
+def test_capacity_step_with_the_measured_exponent():
+    """357·(0.99·1.20/1.3)^(1/0.55) = 357·0.913846^1.81818 = 357·0.848905 = 303.06 → 303.0;
+    the exponent between (T1, S1) and (T2, S2): ln(S1/S2)/ln(T2/T1), bounded to [0.3, 1]."""
+    assert dr.root_capacity_step(357.0, 1.20, 1.3, exponent=0.55) == 303.0
+    assert dr._exponent(313.7, 1.29, 357.0, 1.2022) == pytest.approx(
+        math.log(1.29 / 1.2022) / math.log(357.0 / 313.7), rel=1e-12)
+    assert dr._exponent(50.0, 10.0, 100.0, 1.0) == 1.0
+    assert dr._exponent(50.0, 1.0, 50.0, 1.0, 0.7) == 0.7
+
+
+def test_nothing_lowered_when_it_holds(monkeypatch):
+    """S_F,FE 824.67/(300·1.25·1.1) = 1.999 ≥ 1.3 at 100 N·m: the torque stays."""
+    monkeypatch.setattr(dr, "_root_tree", lambda case, torques: _tree(torques, c=(3.0, 2.0)))
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity"}
+    tree, s, text = dr.root_capacity(None, setup, 0.15, lambda line: None)
+    assert tree is None and text == "" and "lowered" not in setup
+    assert s == pytest.approx(FP / (300.0 * K_A * 1.1), rel=1e-12)
+
+
+def test_a_failed_analysis_is_said_not_raised(monkeypatch):
+    """The FE model failing at the design torque: nothing lowered, S_F,FE NaN, said; a step
+    failing after the first check: nothing lowered either (no lower torque checked)."""
+    def broken(case, torques):
+        raise RuntimeError("mesh mapping: element inverted")
+
+    monkeypatch.setattr(dr, "_root_tree", broken)
+    lines: list[str] = []
+    setup = {"torques": [15.0, 100.0], "source": "s"}
+    tree, s, text = dr.root_capacity(None, setup, 0.15, lines.append)
+    assert tree is None and math.isnan(s) and text == "" and "lowered" not in setup
+    assert "root stress not checked (mesh mapping" in lines[-1]
+    good = _model(1.0, 1.6)
+    monkeypatch.setattr(dr, "_root_tree",
+                        lambda case, torques: good(case, torques) if torques[1] == 100.0
+                        else broken(case, torques))
+    tree, s, text = dr.root_capacity(None, setup, 0.15, lines.append)
+    assert tree is None and text == "" and setup["torques"] == [15.0, 100.0]
+    assert s == pytest.approx(FP / (550.0 * K_A * 1.016), rel=1e-12)
+    assert "not computed (mesh mapping" in lines[-1]
