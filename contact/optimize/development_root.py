@@ -79,7 +79,7 @@ def root_safety(tree) -> tuple[np.ndarray, float, str]:
     LookupError
         No ``root_stress_max`` or no ISO ``/rating`` at the same torques (the reason).
     """
-    from contact.study.verdict_checks import _iso_rating, _member_names, root_stress_safety
+    from contact.study.verdict_checks import has_iso_rating, member_names, root_stress_safety
 
     lt = tree["/ltca"].to_dataset()
     if "root_stress_max" not in lt:
@@ -87,12 +87,12 @@ def root_safety(tree) -> tuple[np.ndarray, float, str]:
         raise LookupError(f"no root stress ({why})")
     rt = tree["/rating"].to_dataset() if "/rating" in tree.groups else None
     rs = lt["root_stress_max"].transpose("torque", "member")
-    if not _iso_rating(rt) or not np.array_equal(rt["torque"].values, rs["torque"].values):
+    if not has_iso_rating(rt) or not np.array_equal(rt["torque"].values, rs["torque"].values):
         raise LookupError("no ISO 10300 rating at the analysed torques (a pinion speed and a "
                           "[rating] material are needed)")
     s = root_stress_safety(np.asarray(rs.values, float), rt)
     j = int(np.nanargmin(s[-1]))
-    return s[:, j], float(rt["S_Fmin"]), _member_names(rs)[j]
+    return s[:, j], float(rt["S_Fmin"]), member_names(rs)[j]
 
 
 def _root_tree(case, torques: list[float]):

@@ -55,7 +55,8 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-__all__ = ["CHECKS", "analysis_checks", "unchecked_reason"]
+__all__ = ["CHECKS", "analysis_checks", "has_iso_rating", "member_names", "root_stress_safety",
+           "unchecked_reason"]
 
 #: the checks of this module, in the order they are listed after contact.study.verdicts'
 CHECKS = ("root_stress", "scuffing_standard")
@@ -75,7 +76,9 @@ def _t(torque: float) -> str:
     return f"{torque:g} N·m"
 
 
-def _member_names(ds: xr.Dataset | xr.DataArray) -> list[str]:
+def member_names(ds: xr.Dataset | xr.DataArray) -> list[str]:
+    """The member names of a dataset's ``member`` axis: its ``member_label`` coordinate (a
+    file read back), else ``member``, else pinion, gear."""
     if "member_label" in ds.coords:
         return [str(m) for m in ds["member_label"].values]
     if "member" in ds.coords:
@@ -83,7 +86,9 @@ def _member_names(ds: xr.Dataset | xr.DataArray) -> list[str]:
     return ["pinion", "gear"][:ds.sizes.get("member", 2)]
 
 
-def _iso_rating(rt: xr.Dataset | None) -> bool:
+def has_iso_rating(rt: xr.Dataset | None) -> bool:
+    """Whether a ``/rating`` dataset holds the ISO 10300 bending factors the FE root-stress
+    check applies (σ_FP, K_A, K_v, S_Fmin; ISO 10300-3:2014 cl. 6)."""
     return rt is not None and {"sigma_FP", "K_A", "K_v", "S_Fmin"} <= set(rt.variables)
 
 
@@ -147,11 +152,11 @@ def _root_stress(lt: xr.Dataset, rt: xr.Dataset | None) -> list:
     from contact.study.verdicts import Finding
 
     rs = lt["root_stress_max"].transpose("torque", "member")
-    names = _member_names(rs)
+    names = member_names(rs)
     torques = rs["torque"].values
     values = np.asarray(rs.values, float)
     out = _not_computed(rs, names, torques, values)
-    if _iso_rating(rt) and np.array_equal(rt["torque"].values, torques):
+    if has_iso_rating(rt) and np.array_equal(rt["torque"].values, torques):
         safety = root_stress_safety(values, rt)
         smin = float(rt["S_Fmin"])
         design = float(rt["design_torque"]) if "design_torque" in rt else np.nan
