@@ -354,11 +354,13 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
         entry = METHODS.get(str(rating.attrs.get("rating_method", method)))
         # the results the method declares beside its rating (RatingMethod.companions)
         if entry is not None and "flash_temperature" in entry.companions:
-            flash = scuffing_flash_temperature(
+            flash, why = _flash_temperature_or_reason(
                 rating, state.groups.get("/friction"),
-                lubricant=None if state.operating is None else state.operating.lubricant)
+                None if state.operating is None else state.operating.lubricant)
             if flash is not None:  # stored beside the rating it is computed on
                 state.groups["/rating/flash_temperature"] = flash
+            else:  # the verdict's "not checked: scuffing_standard" says why
+                rating.attrs["flash_temperature_not_run"] = why
 
     def inputs(state: ChainState) -> None:
         """Before any work: the rating of a method that rates the nominal geometry
@@ -423,8 +425,17 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None,
         The ``/rating/flash_temperature`` group; None without ``friction`` or where the
         method cannot be applied (the reason logged at INFO).
     """
+    return _flash_temperature_or_reason(rating, friction, lubricant)[0]
+
+
+def _flash_temperature_or_reason(rating: xr.Dataset, friction: xr.Dataset | None,
+                                 lubricant: str | os.PathLike[str] | None
+                                 ) -> tuple[xr.Dataset | None, str]:
+    """:func:`scuffing_flash_temperature`'s group, or None with the reason it could not be
+    computed (the verdict's "not checked" says it: e.g. a virtual transverse contact ratio
+    below 1, which the standard's method does not cover)."""
     if friction is None:
-        return None
+        return None, "the analysis ran without an efficiency stage"
     from contact.load_capacity.iso_flash_temperature import iso_flash_temperature_variants
 
     try:
@@ -432,10 +443,10 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None,
             rating, lubricant=(str(friction.attrs["lubricant"]) if lubricant is None
                                else lubricant),
             temperature=float(friction.attrs["inlet_temperature_degC"]),
-            roughness=float(friction.attrs["roughness_rq_um"]))
+            roughness=float(friction.attrs["roughness_rq_um"])), ""
     except (InputError, ModelUnavailableError, KeyError) as exc:
         log.info("the standard's flash temperature method not applied: %s", exc)
-        return None
+        return None, f"the standard's method does not apply here ({exc})"
 
 
 #: every step's implementations by name; the first of each is the default

@@ -103,6 +103,24 @@ def test_root_stress_missing_is_listed_not_checked(said, why):
                for line in v.lines())
 
 
+def test_the_standard_scuffing_method_not_applied_says_why():
+    """A 7-tooth pinion's virtual gears have ε_α 0.987 < 1, outside the standard's
+    flash-temperature method: the chain records why on /rating and the verdict's "not
+    checked" says it (it said "the rating method gives no virtual gears for it")."""
+    from contact.chain import _flash_temperature_or_reason
+
+    friction = xr.Dataset(attrs={"lubricant": "75W90", "inlet_temperature_degC": 90.0,
+                                 "roughness_rq_um": 0.8})
+    flash, why = _flash_temperature_or_reason(xr.Dataset(), friction, None)
+    assert flash is None and why.startswith("the standard's method does not apply here")
+    rt = _rating([50.0], [800.0, 800.0], 1.0, [1.0], 50.0)
+    rt.attrs["flash_temperature_not_run"] = "the standard's method does not apply here (x)"
+    v = verdict(_tree({"/ltca": _ltca([50.0], [[1.0, 1.0]]), "/rating": rt,
+                       "/friction": xr.Dataset()}))
+    assert dict(v.unchecked)["scuffing_standard"] == (
+        "no /rating/flash_temperature: the standard's method does not apply here (x)")
+
+
 def _flash(torques, s, low, high):
     return xr.Dataset(
         {"scuffing_safety": (("variant", "torque"), np.asarray(s, float)),

@@ -311,4 +311,7 @@ def unchecked_reason(tree: xr.DataTree, check: str) -> str:
                 + (f" ({said})" if said else ""))
     if "friction" not in tree.children:
         return "no /rating/flash_temperature: the analysis ran without an efficiency stage"
+    why = str(tree["rating"].attrs.get("flash_temperature_not_run", ""))
+    if why:
+        return f"no /rating/flash_temperature: {why}"
     return "no /rating/flash_temperature: the rating method gives no virtual gears for it"
