@@ -760,7 +760,7 @@ CONSOLE_UNITS = {"N·m": "N m", "µm": "um", "µrad": "urad", "°C": "degC"}
 #: misalignments as the CLI flags name them, the Greek letters as the files' variables do
 #: (``sigma_Hlim``, ``lambda_GF``), the page's punctuation in ASCII
 CONSOLE_SYMBOLS = {"ΔΣ": "dSigma", "Δ": "d", "Σ": "Sigma", "σ": "sigma", "λ": "lambda",
-                   "μ": "mu", "θ": "theta", "ε": "eps", "β": "beta", "α": "alpha",
+                   "μ": "mu", "θ": "theta", "ε": "eps", "β": "beta", "α": "alpha", "δ": "delta",
                    "ρ": "rho", "ν": "nu", "η": "eta", "π": "pi", "–": "-", "−": "-",
                    "—": "-", "…": "...", "≥": ">=", "≤": "<=", "×": "x", "±": "+/-",
                    "≈": "~", "→": "->", "²": "2", "³": "3", "’": "'"}
