@@ -368,49 +368,21 @@ _PENDING: list = []  # the matrix handed to a forked worker (read by it, cleared
 _SIGNALS = {signal.SIGINT, signal.SIGTERM}
 
 
-def _set_parent_death_signal() -> None:
-    """Linux: the worker is killed when the process that started it dies (a SIGKILL of
-    ``ltca run`` leaves no orphan factorising on); elsewhere nothing."""
-    if sys.platform != "linux":
-        return
-    try:
-        import ctypes
-
-        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
-    except (OSError, AttributeError):  # pragma: no cover - no libc
-        pass
-
-
 def _serve(kernel: Callable[[list], tuple], conn) -> None:
-    """The worker: factorise the pending matrix with ``kernel``, report ``("ready", nnz,
-    seconds)`` or ``("error", exception)``, then solve each block of right-hand sides it
-    receives until ``None`` or the end of the pipe."""
+    """The forked worker: factorise the pending matrix with ``kernel``, report ``("ready",
+    nnz, seconds)`` or ``("error", exception)``, then solve each block of right-hand sides
+    it receives until ``None`` or the end of the pipe
+    (:func:`contact.compliance.fe.solver_worker.serve`, the lean worker's loop too)."""
+    from contact.compliance.fe.solver_worker import serve, set_parent_death_signal
+
     signal.signal(signal.SIGINT, signal.SIG_IGN)   # the parent decides; it kills this
     signal.signal(signal.SIGTERM, signal.SIG_DFL)  # at once, even inside native code
     signal.pthread_sigmask(signal.SIG_UNBLOCK, _SIGNALS)  # blocked by the parent's fork
-    _set_parent_death_signal()
+    set_parent_death_signal()
     # a collection would touch every object inherited from the parent and copy their
     # pages (copy-on-write); the worker makes few objects of its own
     gc.disable()
-    box = [_PENDING.pop()]
-    try:
-        t0 = time.perf_counter()
-        solve, nnz = kernel(box)
-        conn.send(("ready", nnz, time.perf_counter() - t0))
-    except Exception as exc:  # handed to the parent, which raises it
-        conn.send(("error", exc))
-        return
-    while True:
-        try:
-            block = conn.recv()
-        except (EOFError, OSError):
-            return
-        if block is None:
-            return
-        try:
-            conn.send(("ok", solve(block)))
-        except Exception as exc:  # the parent raises it
-            conn.send(("error", exc))
+    serve(conn, kernel, [_PENDING.pop()])
 
 
 class _Worker:

@@ -38,31 +38,27 @@ def _kernel_module():
     return module
 
 
-def main(argv: list[str]) -> None:
-    """Serve the connection on file descriptor ``argv[0]`` (module docstring)."""
-    from multiprocessing.connection import Connection
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})
-    if sys.platform == "linux":
-        try:
-            import ctypes
-
-            ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL)  # PDEATHSIG
-        except (OSError, AttributeError):  # pragma: no cover - no libc
-            pass
-    gc.disable()  # few objects of its own; the arrays are freed by reference counts
-    conn = Connection(int(argv[0]))
-    try:
-        request = conn.recv()
-    except (EOFError, OSError):
+def set_parent_death_signal() -> None:
+    """Linux: the worker is killed when the process that started it dies (a SIGKILL of
+    ``ltca run`` leaves no orphan factorising on); elsewhere nothing."""
+    if sys.platform != "linux":
         return
     try:
-        kernel = _kernel_module().cholmod_kernel
+        import ctypes
+
+        ctypes.CDLL("libc.so.6", use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):  # pragma: no cover - no libc
+        pass
+
+
+def serve(conn, kernel, box: list) -> None:
+    """Factorise the matrix in ``box`` with ``kernel`` (its solve and the factor's nonzeros),
+    report ``("ready", nnz, seconds)`` or ``("error", exception)``, then answer each block
+    of right-hand sides received on ``conn`` with ``("ok", solution)`` (or ``("error",
+    exception)``) until ``None`` or the end of the connection. The loop of this lean
+    worker and of the forked one (:func:`contact.compliance.fe.elasticity.factorise`)."""
+    try:
         t0 = time.perf_counter()
-        box = [tuple(request[1:])]
-        del request
         solve, nnz = kernel(box)
         conn.send(("ready", nnz, time.perf_counter() - t0))
     except Exception as exc:  # handed to the parent, which raises it
@@ -79,6 +75,25 @@ def main(argv: list[str]) -> None:
             conn.send(("ok", solve(block)))
         except Exception as exc:  # the parent raises it
             conn.send(("error", exc))
+
+
+def main(argv: list[str]) -> None:
+    """Serve the connection on file descriptor ``argv[0]`` (module docstring)."""
+    from multiprocessing.connection import Connection
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})
+    set_parent_death_signal()
+    gc.disable()  # few objects of its own; the arrays are freed by reference counts
+    conn = Connection(int(argv[0]))
+    try:
+        request = conn.recv()
+    except (EOFError, OSError):
+        return
+    box = [tuple(request[1:])]
+    del request
+    serve(conn, lambda b: _kernel_module().cholmod_kernel(b), box)
 
 
 if __name__ == "__main__":
