@@ -186,6 +186,11 @@ class WaltherFit:
     B: float
     rms_log_residual: float
 
+    def kinematic_viscosity(self, temperature: ArrayLike) -> NDArray[np.float64]:
+        """ν [mm²/s] on this line at ``temperature`` [degC] (ASTM D341, Eq. (1)–(2))."""
+        t_k = np.asarray(temperature, float) - _ABSOLUTE_ZERO_C
+        return 10.0 ** (10.0 ** (self.A - self.B * np.log10(t_k))) - _WALTHER_SHIFT
+
 
 def _vogel_lsq(c: float, t: NDArray[np.float64], ln_eta: NDArray[np.float64]):
     design = np.column_stack([np.ones_like(t), 1.0 / (t - c)])
@@ -664,9 +669,7 @@ def _vogel_eval(lubricant: Lubricant, t: NDArray[np.float64]) -> NDArray[np.floa
 
 
 def _walther_eval(lubricant: Lubricant, t: NDArray[np.float64]) -> NDArray[np.float64]:
-    w = lubricant.walther
-    nu = 10.0 ** (10.0 ** (w.A - w.B * np.log10(t - _ABSOLUTE_ZERO_C))) - _WALTHER_SHIFT
-    return nu * _density_eval(lubricant, t) * 1e-6
+    return lubricant.walther.kinematic_viscosity(t) * _density_eval(lubricant, t) * 1e-6
 
 
 #: Viscosity–temperature models by name: ``(lubricant, T [degC]) -> η₀ [Pa s]``.

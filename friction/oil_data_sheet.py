@@ -40,7 +40,12 @@ from typing import Any
 
 import numpy as np
 
-from friction.lubricant import BASE_OIL_FACTORS, Lubricant, lubricant_from_mapping
+from friction.lubricant import (
+    BASE_OIL_FACTORS,
+    Lubricant,
+    fit_walther,
+    lubricant_from_mapping,
+)
 from geometry.core.errors import InputError
 
 __all__ = [
@@ -66,9 +71,6 @@ PRESSURE_VISCOSITY_CORRELATIONS: Mapping[str, tuple[float, float]] = {
 #: Table temperatures of a built oil [degC]: the range of gear-oil data sheets and of the
 #: efficiency studies (the oil file's extrapolation margins add 20 K below, 40 K above).
 TABLE_TEMPERATURES: tuple[float, ...] = (20.0, 40.0, 60.0, 80.0, 100.0, 120.0)
-
-_WALTHER_SHIFT = 0.7  # ASTM D341, ν ≥ 2 mm²/s
-_K = 273.15
 
 # what a data sheet does not give: the bundled 75W90's stated assumptions
 # (friction/data/75W90.toml), so an oil built here and the bundled oil differ only in what
@@ -188,19 +190,16 @@ def kinematic_viscosity_astm_d341(kinematic_viscosity_40: float,
     Returns
     -------
     numpy.ndarray — [mm²/s]
-        log₁₀ log₁₀(ν + 0.7) linear in log₁₀ T_K through the two points.
+        log₁₀ log₁₀(ν + 0.7) linear in log₁₀ T_K through the two points (the line of
+        :func:`friction.lubricant.fit_walther` through them).
 
     Notes
     -----
     Source: ASTM D341, "Standard practice for viscosity–temperature equations and charts
     for liquid petroleum or hydrocarbon products" (the simple form, ν ≥ 2 mm²/s).
     """
-    t = np.log10(np.array([40.0, 100.0]) + _K)
-    z = np.log10(np.log10(np.array([kinematic_viscosity_40, kinematic_viscosity_100])
-                          + _WALTHER_SHIFT))
-    slope = (z[1] - z[0]) / (t[1] - t[0])
-    zt = z[0] + slope * (np.log10(np.asarray(temperature, float) + _K) - t[0])
-    return 10.0 ** (10.0 ** zt) - _WALTHER_SHIFT
+    line = fit_walther([40.0, 100.0], [kinematic_viscosity_40, kinematic_viscosity_100])
+    return line.kinematic_viscosity(temperature)
 
 
 def density_from_data_sheet(density_15: float, temperature: np.ndarray | float) -> np.ndarray:
