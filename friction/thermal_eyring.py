@@ -66,13 +66,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import elementwise
 
+from friction.flank_summits import greenwood_tripp_parameters
 from friction.mixed_ehl import (
     COS_THETA,
     MIXED_EHL_DEFAULTS,
     W_THETA,
+    MixedEHL,
     eyring_shear_stress,
     mixed_ehl_solution,
 )
+from geometry.core.errors import InputError
 from geometry.core.validation import real_array, scalar_or_array
 
 __all__ = ["STEEL_EFFUSIVITY", "THERMAL_EYRING_DEFAULTS", "thermal_eyring",
@@ -201,6 +204,7 @@ def thermal_eyring(
     boundary_friction: float = MIXED_EHL_DEFAULTS["boundary_friction"][0],
     asperity_density_radius_sigma: float = MIXED_EHL_DEFAULTS["asperity_density_radius_sigma"][0],
     sigma_over_beta: float = MIXED_EHL_DEFAULTS["sigma_over_beta"][0],
+    summits: str = "ground",
 ) -> NDArray[np.float64] | float:
     """Mixed-EHL μ with a thermal Eyring film shear (module docstring).
 
@@ -218,9 +222,16 @@ def thermal_eyring(
         k > 0 of the oil.
     film_heating : float — [1]
         c_f ∈ [0, 1], weight of the film's Couette rise (:data:`THERMAL_EYRING_DEFAULTS`).
-    eyring_stress, limiting_shear_coefficient, boundary_friction,
-    asperity_density_radius_sigma, sigma_over_beta : float
+    eyring_stress, limiting_shear_coefficient, boundary_friction : float
         As ``mixed_ehl`` (:data:`friction.mixed_ehl.MIXED_EHL_DEFAULTS`).
+    summits : str
+        How the asperities follow the roughness: ``"ground"`` (default) Greenwood &
+        Tripp's law with ηβσ and σ/β of ground flanks at the given Rq
+        (:mod:`friction.flank_summits`: McCool 1986 summits of the scaled ground profile's
+        spectral moments); ``"fixed"`` with the constants ``asperity_density_radius_sigma``
+        and ``sigma_over_beta`` (``mixed_ehl``'s, issue 74's first version).
+    asperity_density_radius_sigma, sigma_over_beta : float
+        ηβσ and σ/β [1] of ``summits="fixed"`` (unused otherwise).
 
     Returns
     -------
@@ -250,7 +261,10 @@ def thermal_eyring(
     c_f = float(real_array("film_heating", film_heating, low=0.0, high=1.0, unit="1"))
     b_a = float(real_array("pressure_viscosity_temperature", pressure_viscosity_temperature,
                            low=0.0, high=1.0, unit="1/K"))
-    sol = mixed_ehl_solution(
+    if summits not in ("ground", "fixed"):
+        raise InputError(f"summits: {summits!r} is not 'ground' or 'fixed'")
+    sol = _load_sharing(
+        summits=summits,
         load_per_length=load_per_length, hertz_pressure=hertz_pressure, radius=radius,
         e_prime=e_prime, entraining_velocity=entraining_velocity,
         sliding_velocity=sliding_velocity, viscosity=viscosity,
@@ -283,3 +297,40 @@ def thermal_eyring(
     mu_film = b * np.sum(tau * COS_THETA * W_THETA, axis=-1) / w
     return scalar_or_array(mu_film + sol.boundary_friction)
 
+
+
+def _load_sharing(*, summits: str, **inputs) -> MixedEHL:
+    """``mixed_ehl``'s load sharing with the asperities of ``summits``: for ``"ground"``
+    one solution per distinct (Rq₁, Rq₂) of the inputs, each with its own ηβσ and σ/β
+    (:func:`friction.flank_summits.greenwood_tripp_parameters`; the efficiency stage has
+    one pair), reassembled in the inputs' broadcast shape."""
+    if summits == "fixed":
+        return mixed_ehl_solution(**inputs)
+    inputs = {k: v for k, v in inputs.items()
+              if k not in ("asperity_density_radius_sigma", "sigma_over_beta")}
+    arrays = {k: np.asarray(v, float) for k, v in inputs.items() if k not in _SCALAR_INPUTS}
+    shape = np.broadcast_shapes(*(a.shape for a in arrays.values()))
+    full = {k: np.broadcast_to(a, shape) for k, a in arrays.items()}
+    key = np.stack([np.ravel(full["roughness_1"]), np.ravel(full["roughness_2"])])
+    combos, which = np.unique(key, axis=1, return_inverse=True)
+    if combos.shape[1] == 1:
+        ebs, sb = greenwood_tripp_parameters(*(float(v) for v in combos[:, 0]))
+        return mixed_ehl_solution(**inputs, asperity_density_radius_sigma=ebs,
+                                  sigma_over_beta=sb)
+    scalars = {k: v for k, v in inputs.items() if k in _SCALAR_INPUTS}
+    fields = {n: np.empty(key.shape[1], dtype=bool if n == "valid" else float)
+              for n in MixedEHL._fields}
+    for c in range(combos.shape[1]):
+        mask = np.ravel(which) == c
+        ebs, sb = greenwood_tripp_parameters(*(float(v) for v in combos[:, c]))
+        sol = mixed_ehl_solution(**{k: np.ravel(v)[mask] for k, v in full.items()},
+                                 **scalars, asperity_density_radius_sigma=ebs,
+                                 sigma_over_beta=sb)
+        for n in MixedEHL._fields:
+            fields[n][mask] = getattr(sol, n)
+    return MixedEHL(**{n: v.reshape(shape) for n, v in fields.items()})
+
+
+#: mixed_ehl_solution's keyword inputs that are scalars (not broadcast with the points)
+_SCALAR_INPUTS = frozenset({"eyring_stress", "limiting_shear_coefficient",
+                            "boundary_friction"})
