@@ -72,7 +72,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import elementwise
 
-from friction.flank_summits import greenwood_tripp_parameters
+from friction.flank_summits import greenwood_tripp_parameters, height_tail_integral
 from friction.mixed_ehl import (
     COS_THETA,
     MIXED_EHL_DEFAULTS,
@@ -320,21 +320,30 @@ def _load_sharing(*, summits: str, **inputs) -> MixedEHL:
     key = np.stack([np.ravel(full["roughness_1"]), np.ravel(full["roughness_2"])])
     combos, which = np.unique(key, axis=1, return_inverse=True)
     if combos.shape[1] == 1:
-        ebs, sb = greenwood_tripp_parameters(*(float(v) for v in combos[:, 0]))
-        return mixed_ehl_solution(**inputs, asperity_density_radius_sigma=ebs,
-                                  sigma_over_beta=sb)
+        return mixed_ehl_solution(**inputs, **_ground_summits(*combos[:, 0]))
     scalars = {k: v for k, v in inputs.items() if k in _SCALAR_INPUTS}
     fields = {n: np.empty(key.shape[1], dtype=bool if n == "valid" else float)
               for n in MixedEHL._fields}
     for c in range(combos.shape[1]):
         mask = np.ravel(which) == c
-        ebs, sb = greenwood_tripp_parameters(*(float(v) for v in combos[:, c]))
         sol = mixed_ehl_solution(**{k: np.ravel(v)[mask] for k, v in full.items()},
-                                 **scalars, asperity_density_radius_sigma=ebs,
-                                 sigma_over_beta=sb)
+                                 **scalars, **_ground_summits(*combos[:, c]))
         for n in MixedEHL._fields:
             fields[n][mask] = getattr(sol, n)
     return MixedEHL(**{n: v.reshape(shape) for n, v in fields.items()})
+
+
+def _ground_summits(roughness_1: float, roughness_2: float) -> dict:
+    """mixed_ehl_solution's asperity inputs for two ground flanks of these Rq [µm]: ηβσ,
+    σ/β and the skewed heights' F_{5/2} (:mod:`friction.flank_summits`)."""
+    r1, r2 = float(roughness_1), float(roughness_2)
+    ebs, sb = greenwood_tripp_parameters(r1, r2)
+
+    def heights(t: Array) -> Array:
+        return height_tail_integral(t, r1, r2)
+
+    return {"asperity_density_radius_sigma": ebs, "sigma_over_beta": sb,
+            "height_integral": heights}
 
 
 #: mixed_ehl_solution's keyword inputs that are scalars (not broadcast with the points)

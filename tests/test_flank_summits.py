@@ -18,11 +18,15 @@ import pytest
 
 from friction.ehl.asperity import composite_moments
 from friction.flank_summits import (
+    _composite_heights,
     flank_summit_statistics,
     greenwood_tripp_parameters,
+    height_tail_integral,
     plasticity_index,
     unit_profile_moments,
+    unit_profile_skewness,
 )
+from friction.mixed_ehl import greenwood_tripp_integral
 from geometry.core.errors import InputError
 
 
@@ -86,3 +90,40 @@ def test_refusals_name_the_field() -> None:
     with pytest.raises(InputError, match="roughness_1"):
         flank_summit_statistics(-1.0, 0.5)
     assert np.isfinite(greenwood_tripp_parameters(0.0, 0.5)[1])
+
+
+def test_height_integral_of_gaussian_heights_is_greenwood_tripps() -> None:
+    # zero skewness: the composite is Gaussian and F_{5/2} is the closed form (parabolic
+    # cylinder function); the 0.002 σ binning of the quadrature bounds the error (< 1e-3
+    # relative up to t = 5, where F is 3e-9 of its value at 0)
+    x, p = _composite_heights(0.0, 0.0, 0.6)
+    t = np.array([-3.0, -1.0, 0.0, 1.0, 2.0, 3.0, 5.0])
+    f = np.array([np.sum(p * np.maximum(x - ti, 0.0) ** 2.5) for ti in t])
+    np.testing.assert_allclose(f, greenwood_tripp_integral(2.5, t), rtol=1e-3)
+
+
+def test_composite_heights_have_the_flanks_moments() -> None:
+    # the sum of independent unit-variance heights weighted w₁, w₂ (w₁² + w₂² = 1) has mean
+    # 0, variance 1 and skewness w₁³ s₁ + w₂³ s₂ (third cumulants add)
+    s1, s2 = unit_profile_skewness("ground")
+    assert -0.6 < s1 < -0.2 and -0.6 < s2 < -0.2  # generated at −0.5, lowered by λs
+    for r1, r2 in ((0.5, 0.5), (0.8, 0.3)):
+        w1 = r1 / math.hypot(r1, r2)
+        w2 = r2 / math.hypot(r1, r2)
+        x, p = _composite_heights(s1, s2, w1)
+        assert np.sum(p * x) == pytest.approx(0.0, abs=1e-9)
+        assert np.sum(p * x * x) == pytest.approx(1.0, rel=1e-9)
+        assert np.sum(p * x**3) == pytest.approx(w1**3 * s1 + w2**3 * s2, abs=2e-3)
+
+
+def test_skewed_heights_carry_less_at_positive_separation() -> None:
+    # negative skewness thins the upper tail: F_{5/2} below the Gaussian's for t ≥ 0,
+    # approaching it deep in contact (t → −∞: E[(z − t)^{5/2}] ≈ |t|^{5/2}, skew-free to
+    # first order); continuous across the tabulated range's lower end (−8)
+    t = np.array([0.0, 0.5, 1.0, 2.0])
+    ratio = height_tail_integral(t, 0.5, 0.5) / greenwood_tripp_integral(2.5, t)
+    assert np.all(np.diff(ratio) < 0) and np.all(ratio < 1.0)
+    deep = height_tail_integral(np.array([-12.0]), 0.5, 0.5)
+    assert deep[0] == pytest.approx(float(greenwood_tripp_integral(2.5, -12.0)), rel=2e-3)
+    edge = height_tail_integral(np.array([-8.0 - 1e-9, -8.0 + 1e-9]), 0.5, 0.5)
+    assert edge[0] == pytest.approx(edge[1], rel=1e-6)

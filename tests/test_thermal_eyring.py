@@ -18,7 +18,7 @@ import pytest
 
 from friction.coefficient import friction_coefficient
 from friction.ehl.thermal import flash_temperature
-from friction.flank_summits import greenwood_tripp_parameters
+from friction.flank_summits import greenwood_tripp_parameters, height_tail_integral
 from friction.mixed_ehl import MIXED_EHL_DEFAULTS, mixed_ehl, mixed_ehl_solution
 from friction.thermal_eyring import (
     _BAND_MEAN,
@@ -44,11 +44,13 @@ def test_no_temperature_dependence_is_mixed_ehl() -> None:
     np.testing.assert_allclose(thermal_eyring(**kw, temperature_viscosity=0.0,
                                               summits="fixed"),
                                mixed_ehl(**kw), rtol=1e-12)
-    # with the ground flanks' summits: mixed_ehl with their ηβσ and σ/β
+    # with the ground flanks' summits: mixed_ehl with their ηβσ, σ/β and skewed heights
     ebs, sb = greenwood_tripp_parameters(0.8, 0.8)
-    np.testing.assert_allclose(thermal_eyring(**kw, temperature_viscosity=0.0),
-                               mixed_ehl(**kw, asperity_density_radius_sigma=ebs,
-                                         sigma_over_beta=sb), rtol=1e-12)
+    np.testing.assert_allclose(
+        thermal_eyring(**kw, temperature_viscosity=0.0),
+        mixed_ehl_solution(**kw, asperity_density_radius_sigma=ebs, sigma_over_beta=sb,
+                           height_integral=lambda t: height_tail_integral(t, 0.8, 0.8)
+                           ).friction_coefficient, rtol=1e-12)
 
 
 def test_ground_summits_per_roughness_pair() -> None:
