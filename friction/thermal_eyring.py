@@ -42,10 +42,10 @@ temperature enters through β, β_α and k, which are properties of the oil (its
 oils differ only through their data. Mapped against ISO/TR 14179-2 and Xu et al. (2007)
 in docs/friction.md ("Mapped against the measured correlations"): on the seed's Table 5.4
 A and B it meets 16 of the 19 rows of issue 74's done-when (μ falling with speed in full
-film, hotter oil worse on rough flanks, the roughness cost at 50 °C, the level 1.19 / 1.23 ×
-ISO at the seed's point, A − B 1.39 points, a VG 220 mineral within ±15 % of the 75W90 in 3
-of 4 conditions) and misses the roughness cost at 90 °C (2.5–2.7 × ISO's); its μ falls
-with torque, 1.96 × ISO at 50 N·m on the default case (why: that page).
+film, hotter oil worse on rough flanks, the roughness cost at 50 °C, the level 1.12 / 1.14 ×
+ISO at the seed's point, A − B 1.29 points, a VG 220 mineral within ±15 % of the 75W90 in 3
+of 4 conditions) and misses the roughness cost at 90 °C (2.4–2.6 × ISO's); its μ falls
+with torque, 1.80 × ISO at 50 N·m and 90 °C on the default case (why: that page).
 
 Assumptions stated (not fitted): τ₀ and Λ independent of temperature; the exponential
 η(T) and α(T) with their slopes at the inlet temperature (over large ΔT they overstate
