@@ -223,6 +223,11 @@ def greenwood_tripp_parameters(roughness_1: float, roughness_2: float,
     McCool (1986) summits of the composite surface (module docstring) in the form
     :func:`friction.mixed_ehl.asperity_pressure` takes (Greenwood & Tripp 1970, with
     their approximations: summit heights spread by the composite σ about its mean plane).
+    Greenwood & Tripp's constant was derived with each surface's own η and β; the
+    composite's (the toolkit's convention for two flanks, as
+    :func:`friction.ehl.stochastic.roughness_statistics`) gives, for two flanks of one
+    profile, a K′ 2^(−3/4) = 0.59 × that (docs/friction.md, "Which summits enter Greenwood &
+    Tripp's constant", measures both).
     """
     s = flank_summit_statistics(roughness_1, roughness_2, finish)
     beta_um = s.radius * 1e3
