@@ -11,7 +11,7 @@ from the flank's roughness instead:
   filter λs 8 µm, inside the ranges measured on ground gear flanks — that module's
   sources) *scaled in height to the flank's Rq*: the seed's own construction of its
   rough surfaces ("a baseline ground profile multiplied by a constant", Kolivand 2009
-  §5.2.3) and Li & Kahraman's (2010). Its spectral moments m₀, m₂, m₄ then scale with
+  §5.2.3). Its spectral moments m₀, m₂, m₄ then scale with
   Rq², each surface's computed once at unit Rq (:func:`unit_profile_moments`).
 * **The summits** of the composite surface (the two flanks' moments added, Greenwood &
   Tripp 1970) follow from the moments by Nayak (1971) / McCool (1986)
@@ -31,6 +31,11 @@ from the flank's roughness instead:
   Greenwood & Tripp's law is the skewed heights' (:func:`height_tail_integral`: 0.88 /
   0.63 / 0.25 × the Gaussian's at h/σ = 0 / 1 / 2).
 
+Greenwood & Tripp's constant was derived with each surface's own summit density and radius;
+the composite surface's are taken here (the toolkit's convention for two flanks, as its
+stochastic solver): for two flanks of one profile K′ is then 2^(−3/4) = 0.59 × the
+per-surface value (:func:`greenwood_tripp_parameters`; both measured in docs/friction.md).
+
 Measured alternative, not adopted: Greenwood & Williamson's one-surface sum over the same
 summits with their mean height y_s above the mean plane and Chang, Etsion & Bogy's (1987)
 elastic–plastic summits (:func:`friction.ehl.asperity.asperity_contact`, the stochastic
@@ -47,8 +52,10 @@ of the profile at the run-in Rq — blunter (β / 0.68) — so running-in lowers
 References
 ----------
 Kolivand, M., PhD dissertation, Ohio State University (2009), §5.2.3 (scaled profiles).
-Li, S., Kahraman, A., "A transient mixed elastohydrodynamic lubrication model for spur
-gear pairs", J. Tribol. 132 (2010) 011501; Tribol. Int. 43 (2010) 1034.
+Li, S., Kahraman, A., Tribol. Int. 43 (2010) 1034 (the ground profile's parameter ranges,
+via :mod:`friction.ehl.roughness`).
+Fleishman, A. I., "A method for simulating non-normal distributions", Psychometrika 43
+(1978) 521–532 (the skewed heights' transform).
 Nayak, P. R., J. Lubr. Technol. 93 (1971) 398–407.
 McCool, J. I., "Comparison of models for the contact of rough surfaces", Wear 107 (1986)
 37–60.

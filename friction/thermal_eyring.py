@@ -304,7 +304,6 @@ def thermal_eyring(
     return scalar_or_array(mu_film + sol.boundary_friction)
 
 
-
 def _load_sharing(*, summits: str, **inputs) -> MixedEHL:
     """``mixed_ehl``'s load sharing with the asperities of ``summits``: for ``"ground"``
     one solution per distinct (Rq₁, Rq₂) of the inputs, each with its own ηβσ and σ/β
