@@ -35,6 +35,8 @@ import numpy as np
 from tabulate import tabulate
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+# the tree this script belongs to, before an installed copy of the package
+sys.path.insert(1, str(Path(__file__).resolve().parents[1]))
 
 from friction_anchors import _flank_weighted, _ltca
 
