@@ -92,9 +92,16 @@ SAMPLES = {
                        backlash="j_et2", backlash_value=0.2, theta_a2=0.0, theta_f2=0.0,
                        hand="left", delta2=63.212),
         "operating": {"torque": [250.0], "pinion_speed": 4500.0},
+        # K_v: the TR's printed 1.000, with which it computed F_mtH, K_Halpha and the
+        # stresses; ISO 10300-1 Method B gives N K + 1 = 1.049 at its printed N 0.084 and
+        # K 0.589 (tests/test_rating_iso10300.py, test_sample3_dynamic_factor_misprint)
         "rating": {"single_pitch_deviation": [12.0, 25.0], "nu40": 100.0,
                    "flank_roughness": 3.0, "root_roughness": 10.0, "sigma_Hlim": 1510.0,
-                   "sigma_Flim": 500.0},
+                   "sigma_Flim": 500.0, "dynamic_factor": 1.0,
+                   "source": "ISO/TR 10300-30:2024 sample 3 (Annex C): dynamic_factor is the "
+                             "TR's printed K_v = 1.000, with which it computes F_mtH, "
+                             "K_Halpha and the stresses (ISO 10300-1 Method B gives N K + 1 "
+                             "= 1.049 at the TR's N 0.084, K 0.589)"},
     },
 }
 

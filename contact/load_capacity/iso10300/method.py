@@ -9,6 +9,7 @@ and ``[rating]`` tables, the pinion torques and speed, and the flank the analysi
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -170,6 +171,27 @@ def _rows(ds, spec) -> list[tuple[str, str, str, str]]:
     return rows
 
 
+def _given_lines(given: Mapping[str, Any], i: int) -> list[str]:
+    """The line on the load factors the ``[rating]`` table gives (``given_load_factors``
+    of the dataset), each beside the value the method computes, at torque index ``i``; no
+    line where none is given."""
+    if not given:
+        return []
+
+    def at(x) -> float:
+        return float(x[min(i, len(x) - 1)] if isinstance(x, list) else x)
+
+    parts = []
+    for name, g in given.items():
+        if "field" in g:
+            parts.append(f"{name} {g['given']:.3f} ([rating] {g['field']}; "
+                         f"{g['computed_by']} gives {at(g['computed']):.3f})")
+        else:
+            parts.append(f"{name} {at(g['value']):.3f} (follows: {g['follows']}; "
+                         f"{g['computed_by']} gives {at(g['computed']):.3f})")
+    return ["given load factors: " + "; ".join(parts)]
+
+
 def tables(ds: xr.Dataset) -> str:
     """The rating as text: the virtual gears, then per torque the load factors and the
     pitting and bending tables (the layout of ISO/TR 10300-30's result tables), what
@@ -197,7 +219,8 @@ def tables(ds: xr.Dataset) -> str:
            "virtual cylindrical gears (ISO 10300-1 Annex A)",
            tabulate(_rows(ds, _GEOMETRY), headers=head, tablefmt="simple",
                     disable_numparse=True)]
-    for t in ds["torque"].values:
+    given = json.loads(ds.attrs.get("given_load_factors", "{}"))
+    for i, t in enumerate(ds["torque"].values):
         one = ds.sel(torque=t)
         out += ["", f"T1 = {t:g} N m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
                     f"{float(one['F_vmt']):.1f} N, F_n {float(one['F_n']):.1f} N",
@@ -208,7 +231,8 @@ def tables(ds: xr.Dataset) -> str:
                         ("K_Halpha", "K_Halpha"), ("K_Falpha", "K_Falpha"))
                     if name in one)
                 + (f"  (K_v Method B: resonance ratio N {float(one['N']):.3f})"
-                   if "N" in one else ""),
+                   if "N" in one and "K_v" not in given else ""),
+                *_given_lines(given, i),
                 "", "pitting (ISO 10300-2)",
                 tabulate(_rows(one, _PITTING), headers=head, tablefmt="simple",
                          disable_numparse=True),
