@@ -49,7 +49,17 @@ COMMON = {
     "min_safety_bending": 1.3,
     "effective_width_ratio": 0.85,
     "load_sharing_exponent": 3.0,
+    # the TR rates both members by the generated tooth form: its printed gear q_s 2.166,
+    # 2.073, 2.118 are the generated fillet's (the non-generated one, the edge radius, gives
+    # 3.008, 2.427, 3.796; tests/test_rating_iso10300.py), while the cases' gears are cut
+    # Formate for the contact analysis
+    "process": "Generate",
 }
+
+#: what each sample's [rating] source says of its process (not the case's own)
+_PROCESS_SOURCE = ("process Generate for both members as the TR rates them (its printed gear "
+                   "q_s is the generated fillet's), although the case's gear is cut Formate "
+                   "for the contact analysis")
 
 SAMPLES = {
     1: {
@@ -62,7 +72,8 @@ SAMPLES = {
         "operating": {"torque": [300.0], "pinion_speed": 1200.0},
         "rating": {"single_pitch_deviation": [12.0, 26.0], "nu40": 150.0,
                    "flank_roughness": 8.0, "root_roughness": 16.0, "sigma_Hlim": 1500.0,
-                   "sigma_Flim": 480.0},
+                   "sigma_Flim": 480.0,
+                   "source": f"ISO/TR 10300-30:2024 sample 1 (Annex A): {_PROCESS_SOURCE}"},
     },
     2: {
         "from": "iso23509_sample2_fm.toml",
@@ -74,7 +85,8 @@ SAMPLES = {
         "operating": {"torque": [250.0], "pinion_speed": 1200.0},
         "rating": {"single_pitch_deviation": [11.6, 23.5], "nu40": 150.0,
                    "flank_roughness": 8.0, "root_roughness": 16.0, "sigma_Hlim": 1500.0,
-                   "sigma_Flim": 480.0},
+                   "sigma_Flim": 480.0,
+                   "source": f"ISO/TR 10300-30:2024 sample 2 (Annex B): {_PROCESS_SOURCE}"},
     },
     3: {
         "from": None,
@@ -101,7 +113,7 @@ SAMPLES = {
                    "source": "ISO/TR 10300-30:2024 sample 3 (Annex C): dynamic_factor is the "
                              "TR's printed K_v = 1.000, with which it computes F_mtH, "
                              "K_Halpha and the stresses (ISO 10300-1 Method B gives N K + 1 "
-                             "= 1.049 at the TR's N 0.084, K 0.589)"},
+                             "= 1.049 at the TR's N 0.084, K 0.589); " + _PROCESS_SOURCE},
     },
 }
 

@@ -717,3 +717,121 @@ def test_cli_says_where_the_flank_roughness_comes_from(capsys):
             "(the flanks the analysis runs) as Rz = 6 Ra = 6 sqrt(2/pi) Rq") in out
     assert main(["rate", "iso10300_30_sample1", "--torque", "300", "--speed", "1200"]) == 0
     assert "flank roughness Rz" not in capsys.readouterr().out
+
+
+# --------------------------------------------------------------------------- non-generated
+
+
+def _non_generated_teeth():
+    """(m_mn, h_am, x_hm, x_sm, h_a0, rho_a0, alpha) of two straight-sided tool copies:
+    sample 3's gear (TR data) and a deep, thin tooth with a large edge radius."""
+    g = _gear_data(3)
+    return [(g.m_mn, g.h_am2, g.x_hm2, g.x_sm2, g.h_a0, 1.2, g.alpha_eD),
+            (5.0, 3.5, -0.3, -0.08, 6.25, 2.0, math.radians(17.0))]
+
+
+@pytest.mark.parametrize("tooth", _non_generated_teeth(), ids=["sample3-gear", "deep"])
+def test_non_generated_form_from_the_tool_copied_slot(tooth):
+    """The non-generated tooth form against a direct construction of the slot the blade
+    copies (issue 74): in the normal section the tooth's right flank is the line
+    x = (π/4 + x_sm) m − (y − x_hm m) tan α, the slot bottom the tool tip line
+    y = x_hm m − h_a0, rounded with the edge radius ρ_a0 tangent to both; the 30° tangent
+    point is the point of that outline where the line at 30° to the tooth's centre line
+    touches it (the minimum of x cos 30° + y sin 30° over a dense outline), and the load at
+    the tip corner along the flank normal meets the centre line at y = h_am − x_a tan α.
+    The fillet radius there is the edge radius (identity); s_Fn and h_Fa agree to the
+    outline's sampling: the arc's step ρ_a0 Δφ (< 1e-5 mm) moves the tangent point by at
+    most that, s_Fn by twice it."""
+    from contact.load_capacity.iso10300.bending import non_generated_tooth_form
+
+    m, h_am, x_hm, x_sm, h_a0, rho, alpha = tooth
+    ta = math.tan(alpha)
+
+    def flank_x(y):
+        return (0.25 * math.pi + x_sm) * m - (y - x_hm * m) * ta
+
+    y_root = x_hm * m - h_a0
+    yc = y_root + rho
+    xc = flank_x(yc) + rho / math.cos(alpha)  # the centre ρ off the flank, in the slot
+    phi = np.linspace(math.pi + alpha, 1.5 * math.pi, 400001)
+    arc = np.stack([xc + rho * np.cos(phi), yc + rho * np.sin(phi)])
+    y_flank = np.linspace(yc - rho * math.sin(alpha), h_am, 20001)
+    flank = np.stack([flank_x(y_flank), y_flank])
+    bottom = np.stack([np.linspace(xc, 0.5 * math.pi * m, 2001), np.full(2001, y_root)])
+    outline = np.concatenate([arc, flank, bottom], axis=1)
+    k = np.argmin(math.cos(math.pi / 6) * outline[0] + math.sin(math.pi / 6) * outline[1])
+    x30, y30 = outline[:, k]
+    assert math.hypot(x30 - xc, y30 - yc) == pytest.approx(rho, abs=1e-12)  # on the fillet
+    x_a = flank_x(h_am)
+    h_fa = h_am - x_a * ta - y30
+
+    form = non_generated_tooth_form(m, [h_am], [x_hm], [x_sm], [h_a0], [rho], [0.0], alpha,
+                                    alpha)
+    assert float(form.rho_F[0]) == rho
+    step = rho * (phi[1] - phi[0])
+    assert float(form.s_Fn[0]) == pytest.approx(2.0 * x30, abs=2.0 * step)
+    assert float(form.h_Fa[0]) == pytest.approx(h_fa, abs=step)
+    assert float(form.alpha_Fan[0]) == alpha
+
+
+@pytest.mark.parametrize("tooth", _non_generated_teeth(), ids=["sample3-gear", "deep"])
+def test_generated_form_tends_to_the_non_generated_one(tooth):
+    """A tool-copied slot is what a generated one becomes with no roll left to generate:
+    ISO 10300-3's generated equations on a virtual gear of z_vn teeth (involute of the
+    tool's pressure angle) converge to the non-generated s_Fn, h_Fa, ρ_F and Y_Fa as z_vn
+    grows, their difference falling as 1/z_vn (×10 teeth: ÷10 ± 20 %)."""
+    from contact.load_capacity.iso10300.bending import non_generated_tooth_form, tooth_form
+
+    m, h_am, x_hm, x_sm, h_a0, rho, alpha = tooth
+    rack = non_generated_tooth_form(m, [h_am], [x_hm], [x_sm], [h_a0], [rho], [0.0], alpha,
+                                    alpha)
+    errors = []
+    for z in (1e3, 1e4, 1e5):
+        d = z * m
+        gen = tooth_form(m, [z], [d + 2.0 * h_am], [d * math.cos(alpha)], [x_hm], [x_sm],
+                         h_a0, rho, 0.0, alpha, alpha)
+        errors.append(np.array([float(getattr(gen, k)[0] - getattr(rack, k)[0])
+                                for k in ("s_Fn", "h_Fa", "rho_F", "Y_Fa")]))
+    assert np.all(np.abs(errors[2]) < 2e-3)
+    assert np.abs(errors[1]) / np.abs(errors[2]) == pytest.approx(np.full(4, 10.0), rel=0.2)
+
+
+def test_tr_samples_rate_their_gears_as_generated(tr_runs):
+    """The TR's printed gear q_s (2.166, 2.073, 2.118) and Y_Sa are the generated fillet's
+    (the intermediate tests), not the non-generated one's: the edge radius 1.2 mm as the
+    fillet gives q_s 3.008, 2.427, 3.796 — so the bundled samples give ``process =
+    "Generate"`` (cases/derive_iso10300_samples.py), although their gears are cut Formate
+    for the contact analysis."""
+    for n, q_gear in ((1, 3.008), (2, 2.427), (3, 3.796)):
+        ds = _rate_tr(n, process=["Generate", "Formate"]).isel(torque=0)
+        assert float(ds["q_s"][1]) == pytest.approx(q_gear, abs=1e-3)
+        printed = float(_sample(n)["published"]["q_s"][1])
+        assert abs(float(ds["q_s"][1]) - printed) > 0.3
+        assert float(tr_runs[n][0]["q_s"][1]) == pytest.approx(printed,
+                                                                              abs=2e-3)
+        assert float(ds["rho_F"][1]) == 1.2 and float(ds["non_generated"][1]) == 1.0
+        assert float(ds["Y_Fa"][0]) == float(tr_runs[n][0]["Y_Fa"][0])
+
+
+def test_a_formate_gear_is_rated_by_its_edge_radius():
+    """A case whose [rating] table leaves ``process`` out is rated by its members' own:
+    the default case's Formate gear gets the non-generated tooth form, its fillet radius
+    the gear blade's edge radius (0.813 mm, where the generated equations give 1.37 mm: a
+    generating roll widens the fillet beyond the edge radius), the pinion the generated
+    one; the bundled samples keep the TR's generated gears."""
+    from contact.catalogue import resolve_case
+    from contact.load_capacity.iso10300.rating import case_rating_inputs
+
+    case = resolve_case(None)
+    assert (case.pinion.process, case.gear.process) == ("Generate", "Formate")
+    assert "process" not in case.extra["rating"]
+    inputs = case_rating_inputs(case)
+    assert inputs.process == ("Generate", "Formate")
+    ds = iso10300_rating(case).isel(torque=0)
+    assert ds["non_generated"].values.tolist() == [0.0, 1.0]
+    assert float(ds["rho_F"][1]) == float(ds["edge_radius"][1]) == 0.813
+    generated = iso10300_rating(case, rating=dataclasses.replace(
+        inputs, process=("Generate", "Generate"))).isel(torque=0)
+    assert float(generated["rho_F"][1]) > float(ds["rho_F"][1]) + 0.3
+    assert float(generated["rho_F"][0]) == float(ds["rho_F"][0])
+    assert resolve_case("iso10300_30_sample1").extra["rating"]["process"] == "Generate"

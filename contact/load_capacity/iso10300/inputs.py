@@ -33,6 +33,7 @@ __all__ = [
     "CONTACT_PATTERNS",
     "GIVEN_FACTORS",
     "MOUNTINGS",
+    "PROCESSES",
     "RATING_FIELDS",
     "SIDES",
     "GearData",
@@ -46,6 +47,9 @@ MOUNTINGS = ("both", "one", "neither")
 CONTACT_PATTERNS = ("full_load", "light_load", "estimated")
 #: the rated flank, ISO 23509's naming (drive: the pinion's concave flank drives)
 SIDES = ("drive", "coast")
+#: how a member is cut: generated (rolled) or non-generated (the cutter's imprint), the
+#: names of a case's ``[pinion]``/``[gear]`` ``process``
+PROCESSES = ("Generate", "Formate")
 
 _DEG = math.pi / 180.0
 
@@ -272,6 +276,9 @@ RATING_FIELDS: dict[str, tuple[str, str]] = {
     "edge_radius": ("mm", "cutter edge radius rho_a0 [pinion, gear], in [0, 10]; default: "
                           "the case's blades"),
     "protuberance": ("mm", "s_pr [pinion, gear], in [0, 1], default 0"),
+    "process": ("", "how the members are cut [pinion, gear], 'Generate' (generated tooth "
+                    "form) or 'Formate' (non-generated: the fillet is the blade's edge "
+                    "radius); default: the case's members' process"),
     "load_sharing_exponent": ("1", "e_LS, in [1, 5], default 3"),
     "dynamic_factor": ("1", "K_v given (e.g. from Method A), in [1, 3]; default Method B"),
     "face_load_factor_contact": ("1", "K_Hbeta given (e.g. from a measured contact pattern, "
@@ -359,6 +366,12 @@ class RatingInputs:
         default: the edge radius of the blades that cut the rated flanks in the case.
     protuberance : (float, float) — [mm]
         Protuberance s_pr of the tools, in [0, 1]; default 0.
+    process : (str, str), optional
+        How pinion and gear are cut, ``"Generate"`` or ``"Formate"`` (one text for both):
+        the tooth form of ISO 10300-3 for a generated member or for a non-generated one,
+        whose root fillet is the cutter's edge radius
+        (:func:`contact.load_capacity.iso10300.bending.non_generated_tooth_form`).
+        Default: the case's members' ``process``; both generated where no case is rated.
     load_sharing_exponent : float — [1]
         e_LS of the peak-load distribution over the contact lines (Z_LS), in [1, 5];
         default 3, the TR's samples (moderate profile crowning).
@@ -414,6 +427,7 @@ class RatingInputs:
     effective_width_ratio: float = 0.85
     edge_radius: tuple[float, float] | None = None
     protuberance: tuple[float, float] = (0.0, 0.0)
+    process: tuple[str, str] | None = None
     load_sharing_exponent: float = 3.0
     dynamic_factor: float | None = None
     face_load_factor_contact: float | None = None
@@ -460,6 +474,15 @@ class RatingInputs:
             value = getattr(self, name)
             if value is not None:
                 set_(self, name, _pair(name, value, **kw))
+        if self.process is not None:
+            given = self.process
+            procs = tuple(given) if isinstance(given, (list, tuple)) else (given, given)
+            if len(procs) != 2:
+                raise InputError(f"process: must be one of {list(PROCESSES)} or [pinion, "
+                                 f"gear], got {list(procs)!r}")
+            for v in procs:
+                one_of("process", v, PROCESSES)
+            set_(self, "process", procs)
         if self.accuracy_grade is not None:
             g = self.accuracy_grade
             g = tuple(g) if isinstance(g, (list, tuple)) else (g, g)

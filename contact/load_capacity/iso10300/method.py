@@ -149,7 +149,8 @@ _PITTING = (("Z_MB", "Z_M-B", 3), ("Z_LS", "Z_LS", 3), ("Z_E", "Z_E [MPa^0.5]", 
             ("Z_L", "Z_L", 3), ("Z_speed", "Z_v", 3), ("Z_R", "Z_R", 3), ("Z_W", "Z_W", 3),
             ("Z_K", "Z_K", 3), ("Z_Hyp", "Z_Hyp", 3), ("sigma_HP", "sigma_HP [MPa]", 1),
             ("S_H", "S_H", 3), ("S_Hmin", "S_H,min", 3))
-_BENDING = (("Y_Fa", "Y_Fa", 3), ("Y_Sa", "Y_Sa", 3), ("Y_eps", "Y_eps", 3),
+_BENDING = (("s_Fn", "s_Fn [mm]", 3), ("h_Fa", "h_Fa [mm]", 3), ("rho_F", "rho_F [mm]", 3),
+            ("Y_Fa", "Y_Fa", 3), ("Y_Sa", "Y_Sa", 3), ("Y_eps", "Y_eps", 3),
             ("Y_BS", "Y_BS", 3), ("Y_LS", "Y_LS", 3), ("sigma_F0", "sigma_F0 [MPa]", 1),
             ("sigma_F", "sigma_F [MPa]", 1), ("sigma_Flim", "sigma_Flim [MPa]", 1),
             ("Y_ST", "Y_ST", 3), ("Y_NT", "Y_NT", 3), ("Y_deltarelT", "Y_delta,relT", 3),
@@ -239,6 +240,11 @@ def tables(ds: xr.Dataset) -> str:
                 "", "tooth root (ISO 10300-3)",
                 tabulate(_rows(one, _BENDING), headers=head, tablefmt="simple",
                          disable_numparse=True)]
+        if "non_generated" in ds and float(ds["non_generated"].sum()) > 0:
+            formate = [m for m, v in zip(ds["member"].values, ds["non_generated"].values,
+                                         strict=True) if v > 0]
+            out.append(f"tooth form of the {' and the '.join(formate)}: non-generated "
+                       "(Formate), its root fillet the cutter's edge radius (ISO 10300-3)")
         for s, smin, what in (("S_H", "S_Hmin", "pitting"), ("S_F", "S_Fmin", "bending")):
             low = [m for m, v in zip(ds["member"].values, one[s].values, strict=True)
                    if v < float(ds[smin])]

@@ -191,10 +191,15 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
 
     # ISO 10300-3: bending
     rho_a0 = np.array(inputs.edge_radius)
-    form = bending.tooth_form(
-        data.m_mn, vg.z_vn, vg.d_van, vg.d_vbn, [data.x_hm1, data.x_hm2],
-        [data.x_sm1, data.x_sm2], data.h_a0, rho_a0, np.array(inputs.protuberance),
-        alpha_e, alpha_n)
+    x_hm, x_sm = [data.x_hm1, data.x_hm2], [data.x_sm1, data.x_sm2]
+    s_pr = np.array(inputs.protuberance)
+    formate = np.array([p == "Formate" for p in (inputs.process or ("Generate",) * 2)])
+    form = bending.tooth_form(data.m_mn, vg.z_vn, vg.d_van, vg.d_vbn, x_hm, x_sm, data.h_a0,
+                              rho_a0, s_pr, alpha_e, alpha_n)
+    if formate.any():  # ISO 10300-3: a non-generated member's fillet is the edge radius
+        form = bending.member_tooth_forms(form, bending.non_generated_tooth_form(
+            data.m_mn, [data.h_am1, data.h_am2], x_hm, x_sm, data.h_a0, rho_a0, s_pr,
+            alpha_e, alpha_n), formate)
     Y_Sa, q_s = bending.stress_correction_factor(form.s_Fn, form.h_Fa, form.rho_F)
     Y_BS = bending.bevel_spiral_angle_factor(vg.b_v, vg.beta_v, vg.beta_vb, vg.l_bm,
                                              data.h_am1 + data.h_fm1,
@@ -238,7 +243,7 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
         sigma_Hlim=s_Hlim, sigma_HP=sigma_HP, form=form, Y_Sa=Y_Sa, q_s=q_s, Y_eps=Y_eps,
         Y_BS=Y_BS, Y_LS=Y_LS, Y_R=Y_R, Y_d=Y_d, Y_X=Y_X, Y_NT=Y_NT, sigma_F0=sigma_F0,
         sigma_F=sigma_F, sigma_Flim=s_Flim, sigma_FP=sigma_FP, E=E, nu=nu, cycles=cycles,
-        computed=computed)
+        computed=computed, formate=formate)
     return _dataset(torque, values, inputs, data, side, name, materials)
 
 
@@ -454,6 +459,9 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
             tm, v["N_H"], "1", "pinion load cycles N_L1 at which S_H reaches S_H,min (inf: "
             "long life; 0: beyond the static strength)", f"{_P2} cl. 8 (life factor Z_NT)"),
         # bending (ISO 10300-3)
+        "non_generated": var(m, v["formate"], "1", "tooth form of a non-generated (Formate) "
+                                                   "member 1, of a generated member 0",
+                             f"{_P3} cl. 6 ([rating] process or the case's members)"),
         "E": var(m, form.E, "mm", "auxiliary quantity of the tooth form E", f"{_P3} cl. 6"),
         "G": var(m, form.G, "1", "auxiliary quantity of the tooth form G", f"{_P3} cl. 6"),
         "H": var(m, form.H, "1", "auxiliary quantity of the tooth form H", f"{_P3} cl. 6"),
@@ -572,11 +580,12 @@ def case_rating_inputs(case, rating: RatingInputs | Mapping[str, Any] | None = N
     -------
     RatingInputs
         With ``nu40`` (the case's oil at 40 °C), ``edge_radius`` (the edge radii of the
-        blades that cut the rated flanks), ``side`` (ISO's drive side when the pinion's
-        concave flank drives) and, where the table leaves ``flank_roughness`` out, the
-        flanks' Rz from the case's ``[operating] roughness`` Rq (Rz = 6 Ra = 6 √(2/π) Rq,
-        :data:`RZ_PER_RQ`: the rating's Z_R and the LTCA's film then see one roughness)
-        filled in.
+        blades that cut the rated flanks), ``process`` (the members' ``process``: a
+        Formate member is rated by the non-generated tooth form), ``side`` (ISO's drive
+        side when the pinion's concave flank drives) and, where the table leaves
+        ``flank_roughness`` out, the flanks' Rz from the case's ``[operating] roughness``
+        Rq (Rz = 6 Ra = 6 √(2/π) Rq, :data:`RZ_PER_RQ`: the rating's Z_R and the LTCA's
+        film then see one roughness) filled in.
 
     Raises
     ------
@@ -604,6 +613,8 @@ def case_rating_inputs(case, rating: RatingInputs | Mapping[str, Any] | None = N
     side = fill.get("side", rating.side)
     if rating.nu40 is None:
         fill["nu40"] = _oil_nu40(case.operating.lubricant)
+    if rating.process is None:  # the tooth form of ISO 10300-3 by how each member is cut
+        fill["process"] = (case.pinion.process, case.gear.process)
     if rating.edge_radius is None:
         pinion_flank = "concave" if side == "drive" else "convex"
         gear_flank = "convex" if pinion_flank == "concave" else "concave"
