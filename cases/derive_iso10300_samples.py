@@ -49,12 +49,15 @@ COMMON = {
     "min_safety_bending": 1.3,
     "effective_width_ratio": 0.85,
     "load_sharing_exponent": 3.0,
-    # the TR rates both members by the generated tooth form: its printed gear q_s 2.166,
-    # 2.073, 2.118 are the generated fillet's (the non-generated one, the edge radius, gives
-    # 3.008, 2.427, 3.796; tests/test_rating_iso10300.py), while the cases' gears are cut
-    # Formate for the contact analysis
-    "process": "Generate",
 }
+
+#: how the TR rates the members, given in the sample cases only (not in COMMON, which
+#: cases/derive_rating_tables.py also gives the Annex F cases of the same pairs, rated by
+#: their own members' process): both by the generated tooth form — its printed gear q_s
+#: 2.166, 2.073, 2.118 are the generated fillet's (the non-generated one, the edge radius,
+#: gives 3.008, 2.427, 3.796; tests/test_rating_iso10300.py), while the cases' gears are
+#: cut Formate for the contact analysis
+TR_PROCESS = {"process": "Generate"}
 
 #: what each sample's [rating] source says of its process (not the case's own)
 _PROCESS_SOURCE = ("process Generate for both members as the TR rates them (its printed gear "
@@ -152,7 +155,7 @@ def derive(n: int) -> str:
     else:
         doc = tomllib.loads((ROOT / "cases" / spec["from"]).read_text(encoding="utf-8"))
         origin = f"those of cases/{spec['from']}, whose source: " + doc["source"]
-    rating = {**COMMON, **spec["rating"]}
+    rating = {**COMMON, **spec["rating"], **TR_PROCESS}
     op = {**doc.get("operating", {}), **spec["operating"]}
     rz = rating["flank_roughness"], rating["root_roughness"]
     doc.update(
