@@ -96,7 +96,10 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
         Dimensions ``torque``, ``member``, ``line``: every factor of ISO 10300-1/-2/-3
         Method B1 as a variable with ``units``, ``long_name`` and ``clause``
         (docs/rating.md lists them), among them the safety factors ``S_H``, ``S_F``
-        (torque, member) and their minima ``S_Hmin``, ``S_Fmin``.
+        (torque, member) and their minima ``S_Hmin``, ``S_Fmin``; where ``inputs`` gives
+        load factors (K_v, K_Hβ, K_Fβ, K_Hα, K_Fα) they are used as given and the
+        attribute ``given_load_factors`` (JSON) holds each beside the value the method
+        computes with the other factors as used.
 
     Raises
     ------
