@@ -835,3 +835,16 @@ def test_a_formate_gear_is_rated_by_its_edge_radius():
     assert float(generated["rho_F"][1]) > float(ds["rho_F"][1]) + 0.3
     assert float(generated["rho_F"][0]) == float(ds["rho_F"][0])
     assert resolve_case("iso10300_30_sample1").extra["rating"]["process"] == "Generate"
+
+
+def test_cli_names_the_non_generated_member(capsys):
+    """``ltca rate`` of the default case prints the tooth form's s_Fn, h_Fa, ρ_F and says
+    its gear is rated non-generated, its fillet the edge radius (0.813 mm); the TR's
+    sample 1, rated generated, says nothing of it."""
+    assert main(["rate"]) == 0
+    out = capsys.readouterr().out
+    assert ("tooth form of the gear: non-generated (Formate), its root fillet the cutter's "
+            "edge radius (ISO 10300-3)") in out
+    assert _row(out, "rho_F [mm]")[1] == 0.813
+    assert main(["rate", "iso10300_30_sample1"]) == 0
+    assert "non-generated" not in capsys.readouterr().out
