@@ -51,6 +51,19 @@ COMMON = {
     "load_sharing_exponent": 3.0,
 }
 
+#: how the TR rates the members, given in the sample cases only (not in COMMON, which
+#: cases/derive_rating_tables.py also gives the Annex F cases of the same pairs, rated by
+#: their own members' process): both by the generated tooth form — its printed gear q_s
+#: 2.166, 2.073, 2.118 are the generated fillet's (the non-generated one, the edge radius,
+#: gives 3.008, 2.427, 3.796; tests/test_rating_iso10300.py), while the cases' gears are
+#: cut Formate for the contact analysis
+TR_PROCESS = {"process": "Generate"}
+
+#: what each sample's [rating] source says of its process (not the case's own)
+_PROCESS_SOURCE = ("process Generate for both members as the TR rates them (its printed gear "
+                   "q_s is the generated fillet's), although the case's gear is cut Formate "
+                   "for the contact analysis")
+
 SAMPLES = {
     1: {
         "from": "spiral_bevel_iso23509_s1.toml",
@@ -62,7 +75,8 @@ SAMPLES = {
         "operating": {"torque": [300.0], "pinion_speed": 1200.0},
         "rating": {"single_pitch_deviation": [12.0, 26.0], "nu40": 150.0,
                    "flank_roughness": 8.0, "root_roughness": 16.0, "sigma_Hlim": 1500.0,
-                   "sigma_Flim": 480.0},
+                   "sigma_Flim": 480.0,
+                   "source": f"ISO/TR 10300-30:2024 sample 1 (Annex A): {_PROCESS_SOURCE}"},
     },
     2: {
         "from": "iso23509_sample2_fm.toml",
@@ -74,7 +88,8 @@ SAMPLES = {
         "operating": {"torque": [250.0], "pinion_speed": 1200.0},
         "rating": {"single_pitch_deviation": [11.6, 23.5], "nu40": 150.0,
                    "flank_roughness": 8.0, "root_roughness": 16.0, "sigma_Hlim": 1500.0,
-                   "sigma_Flim": 480.0},
+                   "sigma_Flim": 480.0,
+                   "source": f"ISO/TR 10300-30:2024 sample 2 (Annex B): {_PROCESS_SOURCE}"},
     },
     3: {
         "from": None,
@@ -92,9 +107,16 @@ SAMPLES = {
                        backlash="j_et2", backlash_value=0.2, theta_a2=0.0, theta_f2=0.0,
                        hand="left", delta2=63.212),
         "operating": {"torque": [250.0], "pinion_speed": 4500.0},
+        # K_v: the TR's printed 1.000, with which it computed F_mtH, K_Halpha and the
+        # stresses; ISO 10300-1 Method B gives N K + 1 = 1.049 at its printed N 0.084 and
+        # K 0.589 (tests/test_rating_iso10300.py, test_sample3_dynamic_factor_misprint)
         "rating": {"single_pitch_deviation": [12.0, 25.0], "nu40": 100.0,
                    "flank_roughness": 3.0, "root_roughness": 10.0, "sigma_Hlim": 1510.0,
-                   "sigma_Flim": 500.0},
+                   "sigma_Flim": 500.0, "dynamic_factor": 1.0,
+                   "source": "ISO/TR 10300-30:2024 sample 3 (Annex C): dynamic_factor is the "
+                             "TR's printed K_v = 1.000, with which it computes F_mtH, "
+                             "K_Halpha and the stresses (ISO 10300-1 Method B gives N K + 1 "
+                             "= 1.049 at the TR's N 0.084, K 0.589); " + _PROCESS_SOURCE},
     },
 }
 
@@ -133,7 +155,7 @@ def derive(n: int) -> str:
     else:
         doc = tomllib.loads((ROOT / "cases" / spec["from"]).read_text(encoding="utf-8"))
         origin = f"those of cases/{spec['from']}, whose source: " + doc["source"]
-    rating = {**COMMON, **spec["rating"]}
+    rating = {**COMMON, **spec["rating"], **TR_PROCESS}
     op = {**doc.get("operating", {}), **spec["operating"]}
     rz = rating["flank_roughness"], rating["root_roughness"]
     doc.update(

@@ -59,3 +59,16 @@ def default_run_file(tmp_path_factory) -> Path:
     if os.environ.get("PYTEST_XDIST_WORKER"):
         base = base.parent
     return shared_default_run(base / "default-run")
+
+
+@pytest.fixture(autouse=True)
+def _kernels_choice_restored():
+    """A command run in-process (``ltca synthesize``, a study …) sets ``LTCA_KERNELS=numba``
+    for its process (``geometry.core.kernels.prefer_compiled``): restored after each test,
+    so that no test passes its choice on to the next."""
+    before = os.environ.get("LTCA_KERNELS")
+    yield
+    if before is None:
+        os.environ.pop("LTCA_KERNELS", None)
+    else:
+        os.environ["LTCA_KERNELS"] = before

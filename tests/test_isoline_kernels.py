@@ -21,6 +21,7 @@ point's summaries to the 5×5 guard's 1e-9.
 from __future__ import annotations
 
 import dataclasses
+import os
 from pathlib import Path
 
 import numpy as np
@@ -237,7 +238,16 @@ def test_a_study_point_is_the_same_on_both_paths(monkeypatch):
 def test_kernels_choice(monkeypatch):
     """The names, the environment variable, and the errors that name the field."""
     monkeypatch.delenv("LTCA_KERNELS", raising=False)
-    assert kernels_module() is numba_kernels  # installed: the default
+    # the default, auto: numba where its cache holds the kernels for this machine
+    monkeypatch.setattr(kernels_core, "cache_ready", lambda name: True)
+    assert kernels_module() is numba_kernels
+    monkeypatch.setattr(kernels_core, "cache_ready", lambda name: False)
+    assert kernels_module() is None  # not compiled yet: one analysis does not pay for it
+    assert kernels_module("auto") is None
+    assert kernels_module("numba") is numba_kernels  # asked for: compiled on first use
+    monkeypatch.setenv("LTCA_KERNELS", "numba")
+    assert kernels_module() is numba_kernels
+    monkeypatch.delenv("LTCA_KERNELS")
     assert kernels_module("numpy") is None
     monkeypatch.setenv("LTCA_KERNELS", "numpy")
     assert kernels_module() is None
@@ -269,3 +279,29 @@ def test_kernels_that_cannot_be_cached_leave_the_numpy_path(monkeypatch, caplog)
         monkeypatch.undo()
         kernels_core.compiled_module.cache_clear()
     assert kernels_module("numba") is numba_kernels
+
+
+def test_cache_ready_reads_numba_index(tmp_path, monkeypatch):
+    """``cache_ready`` is True once numba's cache holds every kernel of a module for this
+    machine, False in an empty cache: checked in a child process with its own
+    ``NUMBA_CACHE_DIR`` (numba reads the variable at import), compiling the smallest
+    module (the block pivoting's four kernels) by one call of its solver."""
+    import subprocess
+    import sys
+
+    child = (
+        "import numpy as np\n"
+        "from geometry.core import kernels\n"
+        "name = 'contact.qp.solvers.pivoting_numba'\n"
+        "before = kernels.cache_ready(name)\n"
+        "from contact.qp.benchmark_problems import ltca_like_problem\n"
+        "from contact.qp.solvers.active_set import block_pivoting\n"
+        "import os; os.environ['LTCA_KERNELS'] = 'numba'\n"
+        "assert block_pivoting(ltca_like_problem(12, seed=0).problem)['converged']\n"
+        "kernels.cache_ready.cache_clear()\n"
+        "print(before, kernels.cache_ready(name))\n")
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path), LTCA_KERNELS="")
+    out = subprocess.run([sys.executable, "-c", child], env=env, capture_output=True,
+                         text=True, cwd=Path(__file__).resolve().parents[1])
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["False", "True"]

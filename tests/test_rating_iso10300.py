@@ -185,20 +185,15 @@ def test_stresses_from_the_printed_gear_data(tr_runs, n, name, i, text):
                          ids=[f"s{n}-{name}-{i}" for n, name, i, _ in CASE_RESULTS])
 def test_stresses_of_the_bundled_cases(case_runs, n, name, i, text):
     """The bundled case rates the toolkit's own ISO 23509 blank (sample 3's at the TR's gear
-    pitch angle, test_sample3_case_has_the_published_pitch_cone), K_v by Method B: sample
-    3's published σ_H and σ_F, computed with the TR's K_v = 1.000, are scaled to our K_v
-    (σ_H ∝ √K_v, σ_F ∝ K_v; test_sample3_dynamic_factor_misprint). Tolerance 0.5 %
-    (issue 62), for Y_Fa and Y_Sa too."""
+    pitch angle, test_sample3_case_has_the_published_pitch_cone) with the TR's inputs,
+    sample 3's printed K_v = 1.000 among them (``[rating] dynamic_factor``,
+    test_sample3_dynamic_factor_misprint): every printed stress, permissible stress and
+    safety factor, and Y_Fa and Y_Sa, within 0.5 % (issue 62)."""
     ds = case_runs[n]
-    expected = float(text)
-    if n == 3:
-        k_v = float(ds["K_v"].isel(torque=0))
-        assert k_v == pytest.approx(1.0494, abs=5e-4)  # N K + 1, not the TR's 1.000
-        expected *= {"sigma_H": math.sqrt(k_v), "sigma_F": k_v}.get(name, 1.0)
     ours = _value(ds, name)
     ours = float(ours[i] if ours.size > 1 else ours[0])
-    assert ours == pytest.approx(expected, rel=STRESS_TOLERANCE), (
-        f"sample {n} {name}[{i}]: TR {text} (expected {expected:.5g}), ours {ours:.5g}")
+    assert ours == pytest.approx(float(text), rel=STRESS_TOLERANCE), (
+        f"sample {n} {name}[{i}]: TR {text}, ours {ours:.5g}")
 
 
 def test_sample1_acceptance_values(case_runs):
@@ -251,18 +246,40 @@ def _materials():
     return mat, mat
 
 
-def test_sample3_with_the_tr_dynamic_factor_reproduces_its_stresses():
-    """Given the TR's K_v = 1.000, the bundled case (its own blank) reproduces the TR's
-    σ_H 1609.2 and σ_F 568.9 / 590.5 N/mm² directly, within 0.5 %: the whole difference of
-    the Method B rating (σ_H +2.4 %, σ_F +4.9 %) is the dynamic factor."""
-    from contact.catalogue import resolve_case
-    from contact.load_capacity.iso10300.rating import case_rating_inputs
+def test_sample3_case_gives_the_tr_dynamic_factor_beside_method_b(case_runs):
+    """Issue 74: the bundled sample 3 gives the TR's printed K_v = 1.000 as a sourced input
+    (``[rating] dynamic_factor`` and ``source``, written by
+    cases/derive_iso10300_samples.py); the rating uses it, says so in the variable's clause
+    and records Method B's 1.049 (N K + 1 at the TR's N 0.084, K 0.589) beside it. With it
+    the case reproduces the TR's σ_H 1609.2 and σ_F 568.9 / 590.5 N/mm² directly (measured:
+    1609.6, 568.2 / 591.4); without it, by Method B, σ_H is √1.049 and σ_F 1.049 times
+    those (σ_H ∝ √K_v, σ_F ∝ K_v, K_Hα = 1 at a_rel 0.433), to round-off."""
+    import json
 
-    inputs = dataclasses.replace(case_rating_inputs(resolve_case("iso10300_30_sample3"), None),
-                                 dynamic_factor=1.0)
-    ds = iso10300_rating("iso10300_30_sample3", rating=inputs).isel(torque=0)
+    from contact.catalogue import resolve_case
+
+    ds = case_runs[3].isel(torque=0)
+    table = resolve_case("iso10300_30_sample3").extra["rating"]
+    assert table["dynamic_factor"] == 1.0 and "K_v = 1.000" in table["source"]
+    assert float(ds["K_v"]) == 1.0
+    assert "[rating] dynamic_factor" in ds["K_v"].attrs["clause"]
+    given = json.loads(case_runs[3].attrs["given_load_factors"])
+    assert set(given) == {"K_v"}
+    assert given["K_v"]["given"] == 1.0 and given["K_v"]["field"] == "dynamic_factor"
+    k_v_b = given["K_v"]["computed"][0]
+    assert k_v_b == pytest.approx(float(ds["N"] * ds["K"]) + 1.0, rel=1e-12)
+    assert k_v_b == pytest.approx(1.0494, abs=5e-4)
     assert float(ds["sigma_H"]) == pytest.approx(1609.2, rel=STRESS_TOLERANCE)
     assert ds["sigma_F"].values == pytest.approx([568.9, 590.5], rel=STRESS_TOLERANCE)
+    table = {k: v for k, v in table.items() if k not in ("dynamic_factor", "source")}
+    method_b = iso10300_rating("iso10300_30_sample3", rating=table)
+    assert "given_load_factors" not in method_b.attrs
+    method_b = method_b.isel(torque=0)
+    assert float(method_b["K_v"]) == pytest.approx(k_v_b, rel=1e-12)
+    assert float(method_b["sigma_H"]) == pytest.approx(
+        float(ds["sigma_H"]) * math.sqrt(k_v_b), rel=1e-12)
+    assert method_b["sigma_F"].values == pytest.approx(ds["sigma_F"].values * k_v_b,
+                                                       rel=1e-12)
 
 
 def test_sample2_transverse_load_factor_misprint(tr_runs):
@@ -301,8 +318,9 @@ def test_sample3_dynamic_factor_misprint(tr_runs):
     user's choice, ``[rating] dynamic_factor``). The TR itself applies the subcritical
     formula to samples 1 and 2 (also subcritical): their printed K_v 1.020 and 1.016 are
     N K + 1 of their own N and K. So 1.000 in sample 3 is not a different reading of the
-    method but a value the TR set; the bundled case keeps Method B (1.049), and the
-    published stresses are compared scaled by it (σ_H ∝ √K_v, σ_F ∝ K_v)."""
+    method but a value the TR set; the bundled case gives it as such, a sourced input
+    (``[rating] dynamic_factor`` = 1.0 with its ``source``), and records Method B's 1.049
+    beside it (test_sample3_case_gives_the_tr_dynamic_factor_beside_method_b)."""
     for n, printed in ((1, 1.020), (2, 1.016)):
         other = tr_runs[n][0].isel(torque=0)
         assert float(other["N"]) < 0.75  # subcritical, as sample 3
@@ -427,6 +445,13 @@ BAD_RATING = [
     ("side", "left", ["rating.side"]),
     ("accuracy_grade", 6, ["rating.single_pitch_deviation", "both"]),
     ("unknown_field", 1.0, ["rating.unknown_field", "unknown field"]),
+    ("dynamic_factor", 0.9, ["rating.dynamic_factor", "[1, 3]"]),
+    ("face_load_factor_contact", math.nan, ["rating.face_load_factor_contact", "[1, 3]"]),
+    ("face_load_factor_bending", "1.5", ["rating.face_load_factor_bending"]),
+    ("transverse_load_factor_contact", 3.5, ["rating.transverse_load_factor_contact",
+                                             "[1, 3]"]),
+    ("transverse_load_factor_bending", math.inf, ["rating.transverse_load_factor_bending",
+                                                  "[1, 3]"]),
 ]
 
 
@@ -443,6 +468,62 @@ def test_bad_rating_value_refused_by_the_function(field, value, words):
         iso10300_rating("iso10300_30_sample1", rating=table)
     for w in words:
         assert w in str(err.value)
+
+
+def test_given_load_factors_replace_the_computed_ones():
+    """Issue 74: each load factor may be given in [rating]. On sample 3 (K_Hα = 1 by the
+    offset, a_rel 0.433, so σ_H ∝ √(K_Hβ K_Hα) and σ_F ∝ K_Fβ K_Fα hold exactly): a given
+    K_Hβ carries K_Fβ = K_Hβ/K_F0 with it (ISO 10300-1 cl. 8), a given K_Hα is K_Fα too
+    (Method B's one value), a given K_Fβ or K_Fα moves σ_F alone; each is recorded in
+    ``given_load_factors`` beside the computed value (a following one with ``follows``)."""
+    import json
+
+    from contact.catalogue import resolve_case
+
+    table = dict(resolve_case("iso10300_30_sample3").extra["rating"])
+    base = iso10300_rating("iso10300_30_sample3", rating=table).isel(torque=0)
+    h0, f0, k_f0 = float(base["sigma_H"]), base["sigma_F"].values, float(base["K_F0"])
+    assert float(base["K_Hbeta"]) == pytest.approx(1.65, rel=1e-12)
+    assert float(base["K_Halpha"]) == 1.0 and float(base["K_Falpha"]) == 1.0
+
+    def rated(**given):
+        ds = iso10300_rating("iso10300_30_sample3", rating={**table, **given})
+        return ds.isel(torque=0), json.loads(ds.attrs["given_load_factors"])
+
+    ds, rec = rated(face_load_factor_contact=1.8)
+    assert float(ds["K_Hbeta"]) == 1.8
+    assert float(ds["K_Fbeta"]) == pytest.approx(1.8 / k_f0, rel=1e-12)
+    assert float(ds["sigma_H"]) == pytest.approx(h0 * math.sqrt(1.8 / 1.65), rel=1e-12)
+    assert ds["sigma_F"].values == pytest.approx(f0 * 1.8 / 1.65, rel=1e-12)
+    assert rec["K_Hbeta"]["computed"] == pytest.approx(1.65, rel=1e-12)
+    assert rec["K_Fbeta"]["computed"] == pytest.approx(1.65 / k_f0, rel=1e-12)
+    assert "follows" in rec["K_Fbeta"] and "given" not in rec["K_Fbeta"]
+
+    ds, rec = rated(face_load_factor_bending=1.5)
+    assert float(ds["sigma_H"]) == pytest.approx(h0, rel=1e-12)
+    assert ds["sigma_F"].values == pytest.approx(f0 * 1.5 / (1.65 / k_f0), rel=1e-12)
+    assert set(rec) == {"K_v", "K_Fbeta"}
+
+    ds, rec = rated(transverse_load_factor_contact=1.2)
+    assert float(ds["K_Falpha"]) == 1.2
+    assert float(ds["sigma_H"]) == pytest.approx(h0 * math.sqrt(1.2), rel=1e-12)
+    assert ds["sigma_F"].values == pytest.approx(f0 * 1.2, rel=1e-12)
+    assert rec["K_Halpha"]["computed"] == [1.0] and "follows" in rec["K_Falpha"]
+
+    ds, _ = rated(transverse_load_factor_contact=1.2, transverse_load_factor_bending=1.1)
+    assert ds["sigma_F"].values == pytest.approx(f0 * 1.1, rel=1e-12)
+    assert "[rating] transverse_load_factor_bending" in ds["K_Falpha"].attrs["clause"]
+
+
+def test_cli_prints_the_given_load_factors(capsys):
+    """``ltca rate`` says which load factors the case gives and what the method computes
+    beside them (sample 3: the TR's K_v 1.000, Method B 1.049), not the Method B note."""
+    assert main(["rate", "iso10300_30_sample3"]) == 0
+    out = capsys.readouterr().out
+    assert ("given load factors: K_v 1.000 ([rating] dynamic_factor; ISO 10300-1:2014 "
+            "cl. 7 (Method B) gives 1.049)") in out
+    assert "K_v Method B: resonance ratio" not in out
+    assert "load factors: K_A 1.100  K_v 1.000" in out
 
 
 @pytest.mark.parametrize("field", ["application_factor", "mounting"])
@@ -636,3 +717,134 @@ def test_cli_says_where_the_flank_roughness_comes_from(capsys):
             "(the flanks the analysis runs) as Rz = 6 Ra = 6 sqrt(2/pi) Rq") in out
     assert main(["rate", "iso10300_30_sample1", "--torque", "300", "--speed", "1200"]) == 0
     assert "flank roughness Rz" not in capsys.readouterr().out
+
+
+# --------------------------------------------------------------------------- non-generated
+
+
+def _non_generated_teeth():
+    """(m_mn, h_am, x_hm, x_sm, h_a0, rho_a0, alpha) of two straight-sided tool copies:
+    sample 3's gear (TR data) and a deep, thin tooth with a large edge radius."""
+    g = _gear_data(3)
+    return [(g.m_mn, g.h_am2, g.x_hm2, g.x_sm2, g.h_a0, 1.2, g.alpha_eD),
+            (5.0, 3.5, -0.3, -0.08, 6.25, 2.0, math.radians(17.0))]
+
+
+@pytest.mark.parametrize("tooth", _non_generated_teeth(), ids=["sample3-gear", "deep"])
+def test_non_generated_form_from_the_tool_copied_slot(tooth):
+    """The non-generated tooth form against a direct construction of the slot the blade
+    copies (issue 74): in the normal section the tooth's right flank is the line
+    x = (π/4 + x_sm) m − (y − x_hm m) tan α, the slot bottom the tool tip line
+    y = x_hm m − h_a0, rounded with the edge radius ρ_a0 tangent to both; the 30° tangent
+    point is the point of that outline where the line at 30° to the tooth's centre line
+    touches it (the minimum of x cos 30° + y sin 30° over a dense outline), and the load at
+    the tip corner along the flank normal meets the centre line at y = h_am − x_a tan α.
+    The fillet radius there is the edge radius (identity); s_Fn and h_Fa agree to the
+    outline's sampling: the arc's step ρ_a0 Δφ (< 1e-5 mm) moves the tangent point by at
+    most that, s_Fn by twice it."""
+    from contact.load_capacity.iso10300.bending import non_generated_tooth_form
+
+    m, h_am, x_hm, x_sm, h_a0, rho, alpha = tooth
+    ta = math.tan(alpha)
+
+    def flank_x(y):
+        return (0.25 * math.pi + x_sm) * m - (y - x_hm * m) * ta
+
+    y_root = x_hm * m - h_a0
+    yc = y_root + rho
+    xc = flank_x(yc) + rho / math.cos(alpha)  # the centre ρ off the flank, in the slot
+    phi = np.linspace(math.pi + alpha, 1.5 * math.pi, 400001)
+    arc = np.stack([xc + rho * np.cos(phi), yc + rho * np.sin(phi)])
+    y_flank = np.linspace(yc - rho * math.sin(alpha), h_am, 20001)
+    flank = np.stack([flank_x(y_flank), y_flank])
+    bottom = np.stack([np.linspace(xc, 0.5 * math.pi * m, 2001), np.full(2001, y_root)])
+    outline = np.concatenate([arc, flank, bottom], axis=1)
+    k = np.argmin(math.cos(math.pi / 6) * outline[0] + math.sin(math.pi / 6) * outline[1])
+    x30, y30 = outline[:, k]
+    assert math.hypot(x30 - xc, y30 - yc) == pytest.approx(rho, abs=1e-12)  # on the fillet
+    x_a = flank_x(h_am)
+    h_fa = h_am - x_a * ta - y30
+
+    form = non_generated_tooth_form(m, [h_am], [x_hm], [x_sm], [h_a0], [rho], [0.0], alpha,
+                                    alpha)
+    assert float(form.rho_F[0]) == rho
+    step = rho * (phi[1] - phi[0])
+    assert float(form.s_Fn[0]) == pytest.approx(2.0 * x30, abs=2.0 * step)
+    assert float(form.h_Fa[0]) == pytest.approx(h_fa, abs=step)
+    assert float(form.alpha_Fan[0]) == alpha
+
+
+@pytest.mark.parametrize("tooth", _non_generated_teeth(), ids=["sample3-gear", "deep"])
+def test_generated_form_tends_to_the_non_generated_one(tooth):
+    """A tool-copied slot is what a generated one becomes with no roll left to generate:
+    ISO 10300-3's generated equations on a virtual gear of z_vn teeth (involute of the
+    tool's pressure angle) converge to the non-generated s_Fn, h_Fa, ρ_F and Y_Fa as z_vn
+    grows, their difference falling as 1/z_vn (×10 teeth: ÷10 ± 20 %)."""
+    from contact.load_capacity.iso10300.bending import non_generated_tooth_form, tooth_form
+
+    m, h_am, x_hm, x_sm, h_a0, rho, alpha = tooth
+    rack = non_generated_tooth_form(m, [h_am], [x_hm], [x_sm], [h_a0], [rho], [0.0], alpha,
+                                    alpha)
+    errors = []
+    for z in (1e3, 1e4, 1e5):
+        d = z * m
+        gen = tooth_form(m, [z], [d + 2.0 * h_am], [d * math.cos(alpha)], [x_hm], [x_sm],
+                         h_a0, rho, 0.0, alpha, alpha)
+        errors.append(np.array([float(getattr(gen, k)[0] - getattr(rack, k)[0])
+                                for k in ("s_Fn", "h_Fa", "rho_F", "Y_Fa")]))
+    assert np.all(np.abs(errors[2]) < 2e-3)
+    assert np.abs(errors[1]) / np.abs(errors[2]) == pytest.approx(np.full(4, 10.0), rel=0.2)
+
+
+def test_tr_samples_rate_their_gears_as_generated(tr_runs):
+    """The TR's printed gear q_s (2.166, 2.073, 2.118) and Y_Sa are the generated fillet's
+    (the intermediate tests), not the non-generated one's: the edge radius 1.2 mm as the
+    fillet gives q_s 3.008, 2.427, 3.796 — so the bundled samples give ``process =
+    "Generate"`` (cases/derive_iso10300_samples.py), although their gears are cut Formate
+    for the contact analysis."""
+    for n, q_gear in ((1, 3.008), (2, 2.427), (3, 3.796)):
+        ds = _rate_tr(n, process=["Generate", "Formate"]).isel(torque=0)
+        assert float(ds["q_s"][1]) == pytest.approx(q_gear, abs=1e-3)
+        printed = float(_sample(n)["published"]["q_s"][1])
+        assert abs(float(ds["q_s"][1]) - printed) > 0.3
+        assert float(tr_runs[n][0]["q_s"][1]) == pytest.approx(printed,
+                                                                              abs=2e-3)
+        assert float(ds["rho_F"][1]) == 1.2 and float(ds["non_generated"][1]) == 1.0
+        assert float(ds["Y_Fa"][0]) == float(tr_runs[n][0]["Y_Fa"][0])
+
+
+def test_a_formate_gear_is_rated_by_its_edge_radius():
+    """A case whose [rating] table leaves ``process`` out is rated by its members' own:
+    the default case's Formate gear gets the non-generated tooth form, its fillet radius
+    the gear blade's edge radius (0.813 mm, where the generated equations give 1.37 mm: a
+    generating roll widens the fillet beyond the edge radius), the pinion the generated
+    one; the bundled samples keep the TR's generated gears."""
+    from contact.catalogue import resolve_case
+    from contact.load_capacity.iso10300.rating import case_rating_inputs
+
+    case = resolve_case(None)
+    assert (case.pinion.process, case.gear.process) == ("Generate", "Formate")
+    assert "process" not in case.extra["rating"]
+    inputs = case_rating_inputs(case)
+    assert inputs.process == ("Generate", "Formate")
+    ds = iso10300_rating(case).isel(torque=0)
+    assert ds["non_generated"].values.tolist() == [0.0, 1.0]
+    assert float(ds["rho_F"][1]) == float(ds["edge_radius"][1]) == 0.813
+    generated = iso10300_rating(case, rating=dataclasses.replace(
+        inputs, process=("Generate", "Generate"))).isel(torque=0)
+    assert float(generated["rho_F"][1]) > float(ds["rho_F"][1]) + 0.3
+    assert float(generated["rho_F"][0]) == float(ds["rho_F"][0])
+    assert resolve_case("iso10300_30_sample1").extra["rating"]["process"] == "Generate"
+
+
+def test_cli_names_the_non_generated_member(capsys):
+    """``ltca rate`` of the default case prints the tooth form's s_Fn, h_Fa, ρ_F and says
+    its gear is rated non-generated, its fillet the edge radius (0.813 mm); the TR's
+    sample 1, rated generated, says nothing of it."""
+    assert main(["rate"]) == 0
+    out = capsys.readouterr().out
+    assert ("tooth form of the gear: non-generated (Formate), its root fillet the cutter's "
+            "edge radius (ISO 10300-3)") in out
+    assert _row(out, "rho_F [mm]")[1] == 0.813
+    assert main(["rate", "iso10300_30_sample1"]) == 0
+    assert "non-generated" not in capsys.readouterr().out

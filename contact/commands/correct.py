@@ -116,6 +116,9 @@ def _table(c) -> str:
 
 
 def run_correct(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from contact.catalogue import resolve_case
     from contact.commands.synthesize import write_text_atomic
     from contact.utca.deviation_files import read_deviations

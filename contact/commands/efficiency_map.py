@@ -137,6 +137,9 @@ def efficiency_map_plan(name: str, args: argparse.Namespace) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options, print_wrapped
     from contact.plots import plot_efficiency_map

@@ -42,6 +42,7 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
                        "ltca friction-study --design factorial --scheduler tcp://host:8786 "
                        "-o table_5_1.nc"),
     "friction-fit": ("ltca friction-fit friction_study.nc -o kolivand2009_fit.toml",),
+    "compile": ("ltca compile",),
     "oil": ("ltca oil --name VG220_mineral --nu40 220 --nu100 19.4 --rho15 890 "
             "--base-oil mineral --fzg-stage 12 --source vendor-data-sheet "
             "-o vg220_mineral.toml",),

@@ -71,6 +71,9 @@ def register(sub) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     import numpy as np
 
     from contact.commands.output_paths import check_output_file

@@ -161,6 +161,9 @@ def _outcome(result, confirm: int) -> str:
 
 
 def run_optimize(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from tabulate import tabulate
 
     from contact.commands.synthesize import write_text_atomic

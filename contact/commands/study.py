@@ -335,6 +335,9 @@ _CAUSE_WORDS = {"plastic_contact": "plastic contact", "flank_above_limit": "flan
 
 
 def sweep_command(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from contact.study import sweep
 
     case, run = _prepare(args)
@@ -364,6 +367,9 @@ def sweep_command(args: argparse.Namespace) -> int:
 
 
 def tolerance_command(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     import numpy as np
     from tabulate import tabulate
 
@@ -437,6 +443,9 @@ def _or_dash(x: float) -> str:
 
 
 def vh_check_command(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from tabulate import tabulate
 
     from contact.study import vh_check

@@ -101,6 +101,9 @@ def write_text_atomic(path: Path, text: str) -> Path:
 
 
 def run_synthesize(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     import dataclasses
     import tomllib
 

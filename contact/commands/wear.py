@@ -62,6 +62,9 @@ def register(sub) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from geometry.core.kernels import prefer_compiled
+
+    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from tabulate import tabulate
 
     from contact.commands.run import ltca_options

@@ -10,13 +10,29 @@ the shell tooth's point mapping (:mod:`contact.compliance.tooth_map`, kernels
 Each has a NumPy path, batched over the points, and a compiled one (numba, the ``fast``
 extra) that runs the same iterations point by point. This module chooses between them,
 the same way for all: an explicit ``kernels`` argument where a function takes one, else
-the environment variable ``LTCA_KERNELS``, else numba where it is installed.
+the environment variable ``LTCA_KERNELS``, else ``auto``.
+
+``auto`` (the default) runs a module's compiled kernels only where numba's cache already
+holds them for this machine (:func:`cache_ready`), and the NumPy path otherwise. Numba
+compiles the four modules in ≈ 22 s of CPU on their first use (the envelope's Newton
+solve 6.3 s, the iso-line seeds 4.5 s, the block pivoting 4.3 s, measured on the 2-core
+machine with ``numba.core.event``), while a warm ``ltca run`` of the default case costs
+3.9 s with either path (3.7 s NumPy, 3.9 s numba): one analysis never earns its compile
+time back. A study point (0.24 s against 0.40 s) or a synthesis (50 s against 73 s of CPU on
+the 10x43 of tests/data/designs) does, so the commands that run many analyses ask for
+``numba`` (:func:`prefer_compiled`) and fill the cache; ``ltca compile`` fills it ahead
+(a container image, each node of a cluster, or ``NUMBA_CACHE_DIR`` on a shared file
+system). Both paths give the same numbers to round-off (the kernels' tests). The choice
+is made once per process and module, so one analysis never mixes them.
 
 Public functions
 ----------------
-KERNELS           the implementations' names
+KERNELS           the implementations' names (and ``auto``)
+KERNEL_MODULES    the four compiled kernel modules
 kernels_module    the compiled kernel module to use, or None for the NumPy path
 compiled_module   a compiled kernel module, imported once per process (None without numba)
+cache_ready       whether numba's cache holds a module's kernels for this machine
+prefer_compiled   make ``auto`` mean ``numba`` in this process (commands of many analyses)
 """
 
 from __future__ import annotations
@@ -29,10 +45,16 @@ from types import ModuleType
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
-__all__ = ["KERNELS", "compiled_module", "kernels_module"]
+__all__ = ["KERNELS", "KERNEL_MODULES", "cache_ready", "compiled_module", "kernels_module",
+           "prefer_compiled"]
 
-#: the implementations: ``numpy`` (the reference) and ``numba`` (compiled; the ``fast`` extra)
-KERNELS = ("numpy", "numba")
+#: the implementations: ``numpy`` (the reference), ``numba`` (compiled; the ``fast``
+#: extra) and ``auto`` (numba where its cache holds the kernels, :func:`cache_ready`)
+KERNELS = ("numpy", "numba", "auto")
+
+#: the compiled kernel modules of the four hot loops
+KERNEL_MODULES = ("geometry.machine.envelope_numba", "contact.utca.isoline_numba",
+                  "contact.compliance.tooth_map_numba", "contact.qp.solvers.pivoting_numba")
 
 
 @memoised(maxsize=None)
@@ -50,6 +72,56 @@ def compiled_module(name: str) -> ModuleType | None:
         return None
 
 
+@memoised(maxsize=None)
+def cache_ready(name: str) -> bool:
+    """Whether numba's cache holds every kernel of module ``name`` for this machine.
+
+    Every compiled function (``numba.njit(cache=True)`` dispatcher) of the module has an
+    entry in its cache index for this CPU (numba's target triple, CPU name and features)
+    and the index matches the module's source (numba drops an index whose source stamp
+    differs). Decided once per process, so an analysis runs one path throughout.
+
+    Parameters
+    ----------
+    name : str
+        The kernel module's import name (one of :data:`KERNEL_MODULES`).
+
+    Returns
+    -------
+    bool
+        False where numba is not installed, the cache cannot be read, or a kernel has
+        not been compiled on this machine yet.
+    """
+    module = compiled_module(name)
+    if module is None:
+        return False
+    from numba.core.registry import CPUDispatcher
+
+    dispatchers = [f for f in vars(module).values() if isinstance(f, CPUDispatcher)]
+    if not dispatchers:
+        return False
+    try:
+        for f in dispatchers:
+            magic = f.targetctx.codegen().magic_tuple()
+            index = f._cache._cache_file._load_index()  # {(sig, magic, ..): file}
+            if not any(key[1] == magic for key in index):
+                return False
+    except (AttributeError, OSError, EOFError, ValueError) as exc:  # numba's layout moved
+        logging.getLogger(__name__).debug("numba cache of %s not readable: %s", name, exc)
+        return False
+    return True
+
+
+def prefer_compiled() -> None:
+    """Make ``auto`` (the default) mean ``numba`` in this process and the processes it
+    starts (Dask's local workers): for the commands that run many analyses (a synthesis'
+    development, a study, a sweep, an optimisation), where the compiled kernels earn their
+    first-use compile time back. Sets ``LTCA_KERNELS=numba`` where it is unset and numba
+    is installed; a user's ``LTCA_KERNELS`` wins. Called by the command-line layer only."""
+    if not os.environ.get("LTCA_KERNELS") and compiled_module(KERNEL_MODULES[0]) is not None:
+        os.environ["LTCA_KERNELS"] = "numba"
+
+
 def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     """The compiled kernel module to use, or None for the NumPy path.
 
@@ -57,9 +129,10 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     ----------
     name : str
         The kernel module's import name (e.g. ``"geometry.machine.envelope_numba"``).
-    kernels : {"numpy", "numba"} or None
-        None: the environment variable ``LTCA_KERNELS`` (same values), else ``numba``
-        where it is installed and ``numpy`` otherwise.
+    kernels : {"numpy", "numba", "auto"} or None
+        None: the environment variable ``LTCA_KERNELS`` (same values), else ``auto``:
+        numba where its cache holds the module's kernels for this machine
+        (:func:`cache_ready`), else NumPy.
 
     Returns
     -------
@@ -73,14 +146,14 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     """
     source = "kernels"
     if kernels is None:
-        kernels = os.environ.get("LTCA_KERNELS") or None
+        kernels = os.environ.get("LTCA_KERNELS") or "auto"
         source = "LTCA_KERNELS"
-        if kernels is None:
-            return compiled_module(name)
     if kernels not in KERNELS:
         raise InputError(f"{source}: must be one of {', '.join(KERNELS)}, got {kernels!r}")
     if kernels == "numpy":
         return None
+    if kernels == "auto":
+        return compiled_module(name) if cache_ready(name) else None
     mod = compiled_module(name)
     if mod is None:
         raise InputError(f"{source}: 'numba' needs numba installed "

@@ -6,8 +6,8 @@ pinion then gear, where the docstring says so):
 ===================================  ==========================================  ====
 factor                               function                                    unit
 ===================================  ==========================================  ====
-tooth form factor Y_Fa (and s_Fn,    :func:`tooth_form`                          1
-ρ_F, h_Fa, α_Fan, E, G, H, θ)
+tooth form factor Y_Fa (and s_Fn,    :func:`tooth_form` (generated),              1
+ρ_F, h_Fa, α_Fan, E, G, H, θ)        :func:`non_generated_tooth_form` (Formate)
 stress correction factor Y_Sa        :func:`stress_correction_factor`            1
 contact ratio factor Y_ε             :func:`contact_ratio_factor`                1
 bevel spiral angle factor Y_BS       :func:`bevel_spiral_angle_factor`           1
@@ -33,7 +33,7 @@ not covered.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -44,7 +44,9 @@ __all__ = [
     "bevel_spiral_angle_factor",
     "contact_ratio_factor",
     "load_sharing_factor",
+    "member_tooth_forms",
     "nominal_root_stress",
+    "non_generated_tooth_form",
     "permissible_root_stress",
     "relative_notch_sensitivity",
     "relative_surface_factor",
@@ -164,6 +166,85 @@ def tooth_form(m_mn: float, z_vn: ArrayLike, d_van: ArrayLike, d_vbn: ArrayLike,
     Y_Fa = 6.0 * (h_Fa / m_mn) * np.cos(alpha_Fan) / ((s_Fn / m_mn) ** 2 * np.cos(alpha_n))
     return ToothForm(E=E, G=G, H=H, theta=theta, s_Fn=s_Fn, rho_F=rho_F, alpha_an=alpha_an,
                      gamma_a=gamma_a, alpha_Fan=alpha_Fan, h_Fa=h_Fa, Y_Fa=Y_Fa)
+
+
+def non_generated_tooth_form(m_mn: float, h_am: ArrayLike, x_hm: ArrayLike, x_sm: ArrayLike,
+                             h_a0: ArrayLike, rho_a0: ArrayLike, s_pr: ArrayLike,
+                             alpha_e: float, alpha_n: float) -> ToothForm:
+    """Tooth form of a non-generated (Formate) tooth loaded at its tip, and its Y_Fa.
+
+    A non-generated member has no generating roll: each slot is a copy of the cutter's
+    blade profile (straight-sided, pressure angle α_e, tip rounded with the edge radius
+    ρ_a0), so in the normal section its tooth is the straight-sided tooth between two tool
+    copies and its root fillet is the blade's edge radius itself.
+
+    Parameters
+    ----------
+    m_mn : float — [mm]
+    h_am : array_like — [mm]
+        Mean addendum (the load at the tip).
+    x_hm, x_sm : array_like — [1]
+        Profile shift and thickness modification coefficients.
+    h_a0, rho_a0, s_pr : array_like — [mm]
+        Tool addendum, cutter edge radius, protuberance.
+    alpha_e : float — [rad]
+        Effective pressure angle of the rated flank (the blade's flank in the tooth form).
+    alpha_n : float — [rad]
+        Generated pressure angle of the rated flank (in Y_Fa's denominator, as for the
+        generated tooth).
+
+    Returns
+    -------
+    ToothForm
+        E and G as for the generated tooth (:func:`tooth_form`: E the half-width from the
+        slot's centre line to the edge-radius centre, G m_mn the centre's height above the
+        reference line); the fillet radius ρ_F = ρ_a0; the 30° tangent on the edge radius,
+        s_Fn = π m_mn − 2E − 2 ρ_a0 cos 30°; the load at the tip corner along the flank
+        normal, α_Fan = α_e, h_Fa = h_am + h_a0 − x_hm m_mn − ρ_a0/2 − s_an tan α_e with
+        the tip's half thickness s_an = (π/4 + x_sm) m_mn − (h_am − x_hm m_mn) tan α_e;
+        Y_Fa = 6 (h_Fa/m_mn) cos α_Fan / ((s_Fn/m_mn)² cos α_n). ϑ = π/3, H = −π/3,
+        γ_a = 0 and α_an = α_e are the values of the generated tooth's quantities in
+        the same limit.
+
+    Notes
+    -----
+    Source: ISO 10300-3:2014 cl. 6 (Method B1) rates a non-generated member by a tooth
+    form of its own, the fillet being the tool's edge radius; its printed equations could
+    not be consulted here. Implemented as the limit z_vn → ∞ of the clause's generated
+    equations (:func:`tooth_form`), which is what a tool-copied straight-sided slot is,
+    the tooth's flanks taken parallel to the slot's (a rack tooth; their true inclination
+    π/z_vn is neglected, 1.6° at the z_vn ≈ 110 of ISO/TR 10300-30's gears). With
+    h_am − x_hm m_mn = m_mn (k_hap = 1, ISO 23509's usual basic crown gear addendum) h_Fa
+    reads h_a0 − ρ_a0/2 + m_mn − (π/4 + x_sm − tan α_e) m_mn tan α_e, the form in which
+    ISO 10300-3 (and DIN 3991-3 before it) give it as remembered, not checked against the
+    printed text. Tested (tests/test_rating_iso10300.py): the generated equations converge
+    to these as z_vn grows, and a direct construction of the tool-copied slot (30° tangent
+    point, load line at the tip) gives the same s_Fn, h_Fa and ρ_F.
+    """
+    h_am, x_hm, x_sm, h_a0, rho_a0, s_pr = np.broadcast_arrays(
+        *(np.asarray(x, float) for x in (h_am, x_hm, x_sm, h_a0, rho_a0, s_pr)))
+    ca, sa, ta = np.cos(alpha_e), np.sin(alpha_e), np.tan(alpha_e)
+    E = ((0.25 * np.pi - x_sm) * m_mn - h_a0 * ta + s_pr / ca - rho_a0 * (1.0 - sa) / ca)
+    G = (rho_a0 - h_a0) / m_mn + x_hm
+    s_Fn = np.pi * m_mn - 2.0 * E - np.sqrt(3.0) * rho_a0
+    s_an = (0.25 * np.pi + x_sm) * m_mn - (h_am - x_hm * m_mn) * ta
+    h_Fa = h_am + h_a0 - x_hm * m_mn - 0.5 * rho_a0 - s_an * ta
+    alpha_Fan = np.full(E.shape, float(alpha_e))
+    Y_Fa = 6.0 * (h_Fa / m_mn) * np.cos(alpha_Fan) / ((s_Fn / m_mn) ** 2 * np.cos(alpha_n))
+    return ToothForm(E=E, G=G, H=np.full(E.shape, -np.pi / 3.0),
+                     theta=np.full(E.shape, np.pi / 3.0), s_Fn=s_Fn, rho_F=rho_a0.copy(),
+                     alpha_an=alpha_Fan.copy(), gamma_a=np.zeros(E.shape),
+                     alpha_Fan=alpha_Fan, h_Fa=h_Fa, Y_Fa=Y_Fa)
+
+
+def member_tooth_forms(generated: ToothForm, non_generated: ToothForm,
+                       is_non_generated: ArrayLike) -> ToothForm:
+    """Each member's tooth form by how it is cut: ``non_generated`` where
+    ``is_non_generated`` (a Formate member), ``generated`` elsewhere (arrays (2,))."""
+    pick = np.asarray(is_non_generated, bool)
+    return ToothForm(**{f.name: np.where(pick, getattr(non_generated, f.name),
+                                         getattr(generated, f.name))
+                        for f in fields(ToothForm)})
 
 
 def stress_correction_factor(s_Fn: ArrayLike, h_Fa: ArrayLike, rho_F: ArrayLike

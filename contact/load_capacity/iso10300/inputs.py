@@ -31,7 +31,9 @@ from geometry.core.validation import integer, known_fields, one_of, real
 
 __all__ = [
     "CONTACT_PATTERNS",
+    "GIVEN_FACTORS",
     "MOUNTINGS",
+    "PROCESSES",
     "RATING_FIELDS",
     "SIDES",
     "GearData",
@@ -45,8 +47,21 @@ MOUNTINGS = ("both", "one", "neither")
 CONTACT_PATTERNS = ("full_load", "light_load", "estimated")
 #: the rated flank, ISO 23509's naming (drive: the pinion's concave flank drives)
 SIDES = ("drive", "coast")
+#: how a member is cut: generated (rolled) or non-generated (the cutter's imprint), the
+#: names of a case's ``[pinion]``/``[gear]`` ``process``
+PROCESSES = ("Generate", "Formate")
 
 _DEG = math.pi / 180.0
+
+#: the load factors a ``[rating]`` table may give in place of the computed ones: field →
+#: (the ``/rating`` variable, what computes it otherwise)
+GIVEN_FACTORS: dict[str, tuple[str, str]] = {
+    "dynamic_factor": ("K_v", "ISO 10300-1:2014 cl. 7 (Method B)"),
+    "face_load_factor_contact": ("K_Hbeta", "ISO 10300-1:2014 cl. 8 (Method C)"),
+    "face_load_factor_bending": ("K_Fbeta", "ISO 10300-1:2014 cl. 8 (K_Hbeta / K_F0)"),
+    "transverse_load_factor_contact": ("K_Halpha", "ISO 10300-1:2014 cl. 9 (Method B)"),
+    "transverse_load_factor_bending": ("K_Falpha", "ISO 10300-1:2014 cl. 9 (Method B)"),
+}
 
 
 def _pair(name: str, value: Any, *, unit: str, **bounds: Any) -> tuple[float, float]:
@@ -261,8 +276,20 @@ RATING_FIELDS: dict[str, tuple[str, str]] = {
     "edge_radius": ("mm", "cutter edge radius rho_a0 [pinion, gear], in [0, 10]; default: "
                           "the case's blades"),
     "protuberance": ("mm", "s_pr [pinion, gear], in [0, 1], default 0"),
+    "process": ("", "how the members are cut [pinion, gear], 'Generate' (generated tooth "
+                    "form) or 'Formate' (non-generated: the fillet is the blade's edge "
+                    "radius); default: the case's members' process"),
     "load_sharing_exponent": ("1", "e_LS, in [1, 5], default 3"),
     "dynamic_factor": ("1", "K_v given (e.g. from Method A), in [1, 3]; default Method B"),
+    "face_load_factor_contact": ("1", "K_Hbeta given (e.g. from a measured contact pattern, "
+                                      "Method A), in [1, 3]; default Method C, 1.5 "
+                                      "K_Hbeta-be"),
+    "face_load_factor_bending": ("1", "K_Fbeta given, in [1, 3]; default K_Hbeta / K_F0 "
+                                      "(of the given K_Hbeta where that is given)"),
+    "transverse_load_factor_contact": ("1", "K_Halpha given, in [1, 3]; default Method B"),
+    "transverse_load_factor_bending": ("1", "K_Falpha given, in [1, 3]; default K_Halpha "
+                                            "(the given one where that is given), else "
+                                            "Method B"),
     "youngs_modulus": ("MPa", "E [pinion, gear], (0, 1e6]; default: the members' "
                               "material"),
     "poisson_ratio": ("1", "nu [pinion, gear], [0, 0.5); default: the members' material"),
@@ -339,11 +366,28 @@ class RatingInputs:
         default: the edge radius of the blades that cut the rated flanks in the case.
     protuberance : (float, float) — [mm]
         Protuberance s_pr of the tools, in [0, 1]; default 0.
+    process : (str, str), optional
+        How pinion and gear are cut, ``"Generate"`` or ``"Formate"`` (one text for both):
+        the tooth form of ISO 10300-3 for a generated member or for a non-generated one,
+        whose root fillet is the cutter's edge radius
+        (:func:`contact.load_capacity.iso10300.bending.non_generated_tooth_form`).
+        Default: the case's members' ``process``; both generated where no case is rated.
     load_sharing_exponent : float — [1]
         e_LS of the peak-load distribution over the contact lines (Z_LS), in [1, 5];
         default 3, the TR's samples (moderate profile crowning).
     dynamic_factor : float — [1], optional
-        K_v given (Method A, a measurement), in [1, 3]; default: Method B.
+        K_v given (Method A, a measurement, or a value a worked example prints), in
+        [1, 3]; default: Method B (ISO 10300-1:2014 cl. 7).
+    face_load_factor_contact, face_load_factor_bending : float — [1], optional
+        K_Hβ and K_Fβ given, in [1, 3]; default: Method C, K_Hβ = 1.5 K_Hβ-be and
+        K_Fβ = K_Hβ/K_F0 (ISO 10300-1:2014 cl. 8). A given K_Hβ without a given K_Fβ
+        gives K_Fβ = K_Hβ/K_F0 of it (the clause's relation).
+    transverse_load_factor_contact, transverse_load_factor_bending : float — [1], optional
+        K_Hα and K_Fα given, in [1, 3]; default: Method B (ISO 10300-1:2014 cl. 9). A given
+        K_Hα without a given K_Fα is taken for both (Method B gives one value for both).
+        A given factor is used as given, its range above the standard's limits not
+        enforced; the ``/rating`` dataset records it beside the value the method computes
+        (attribute ``given_load_factors``).
     youngs_modulus, poisson_ratio : (float, float), optional
         E [MPa] in (0, 1e6] and ν in [0, 0.5) of pinion and gear; default: the members'
         material.
@@ -383,8 +427,13 @@ class RatingInputs:
     effective_width_ratio: float = 0.85
     edge_radius: tuple[float, float] | None = None
     protuberance: tuple[float, float] = (0.0, 0.0)
+    process: tuple[str, str] | None = None
     load_sharing_exponent: float = 3.0
     dynamic_factor: float | None = None
+    face_load_factor_contact: float | None = None
+    face_load_factor_bending: float | None = None
+    transverse_load_factor_contact: float | None = None
+    transverse_load_factor_bending: float | None = None
     youngs_modulus: tuple[float, float] | None = None
     poisson_ratio: tuple[float, float] | None = None
     side: str | None = None
@@ -425,6 +474,15 @@ class RatingInputs:
             value = getattr(self, name)
             if value is not None:
                 set_(self, name, _pair(name, value, **kw))
+        if self.process is not None:
+            given = self.process
+            procs = tuple(given) if isinstance(given, (list, tuple)) else (given, given)
+            if len(procs) != 2:
+                raise InputError(f"process: must be one of {list(PROCESSES)} or [pinion, "
+                                 f"gear], got {list(procs)!r}")
+            for v in procs:
+                one_of("process", v, PROCESSES)
+            set_(self, "process", procs)
         if self.accuracy_grade is not None:
             g = self.accuracy_grade
             g = tuple(g) if isinstance(g, (list, tuple)) else (g, g)
@@ -442,7 +500,7 @@ class RatingInputs:
             "min_safety_bending": dict(unit="1", low=0.0, high=10.0, low_open=True),
             "effective_width_ratio": dict(unit="1", low=0.0, high=1.0, low_open=True),
             "load_sharing_exponent": dict(unit="1", low=1.0, high=5.0),
-            "dynamic_factor": dict(unit="1", low=1.0, high=3.0),
+            **{k: dict(unit="1", low=1.0, high=3.0) for k in GIVEN_FACTORS},
         }
         for name, kw in scalars.items():
             value = getattr(self, name)

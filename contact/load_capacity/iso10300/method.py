@@ -9,6 +9,7 @@ and ``[rating]`` tables, the pinion torques and speed, and the flank the analysi
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -148,7 +149,8 @@ _PITTING = (("Z_MB", "Z_M-B", 3), ("Z_LS", "Z_LS", 3), ("Z_E", "Z_E [MPa^0.5]", 
             ("Z_L", "Z_L", 3), ("Z_speed", "Z_v", 3), ("Z_R", "Z_R", 3), ("Z_W", "Z_W", 3),
             ("Z_K", "Z_K", 3), ("Z_Hyp", "Z_Hyp", 3), ("sigma_HP", "sigma_HP [MPa]", 1),
             ("S_H", "S_H", 3), ("S_Hmin", "S_H,min", 3))
-_BENDING = (("Y_Fa", "Y_Fa", 3), ("Y_Sa", "Y_Sa", 3), ("Y_eps", "Y_eps", 3),
+_BENDING = (("s_Fn", "s_Fn [mm]", 3), ("h_Fa", "h_Fa [mm]", 3), ("rho_F", "rho_F [mm]", 3),
+            ("Y_Fa", "Y_Fa", 3), ("Y_Sa", "Y_Sa", 3), ("Y_eps", "Y_eps", 3),
             ("Y_BS", "Y_BS", 3), ("Y_LS", "Y_LS", 3), ("sigma_F0", "sigma_F0 [MPa]", 1),
             ("sigma_F", "sigma_F [MPa]", 1), ("sigma_Flim", "sigma_Flim [MPa]", 1),
             ("Y_ST", "Y_ST", 3), ("Y_NT", "Y_NT", 3), ("Y_deltarelT", "Y_delta,relT", 3),
@@ -168,6 +170,27 @@ def _rows(ds, spec) -> list[tuple[str, str, str, str]]:
         else:
             rows.append((label, f"{float(x):.{digits}f}", "", ""))
     return rows
+
+
+def _given_lines(given: Mapping[str, Any], i: int) -> list[str]:
+    """The line on the load factors the ``[rating]`` table gives (``given_load_factors``
+    of the dataset), each beside the value the method computes, at torque index ``i``; no
+    line where none is given."""
+    if not given:
+        return []
+
+    def at(x) -> float:
+        return float(x[min(i, len(x) - 1)] if isinstance(x, list) else x)
+
+    parts = []
+    for name, g in given.items():
+        if "field" in g:
+            parts.append(f"{name} {g['given']:.3f} ([rating] {g['field']}; "
+                         f"{g['computed_by']} gives {at(g['computed']):.3f})")
+        else:
+            parts.append(f"{name} {at(g['value']):.3f} (follows: {g['follows']}; "
+                         f"{g['computed_by']} gives {at(g['computed']):.3f})")
+    return ["given load factors: " + "; ".join(parts)]
 
 
 def tables(ds: xr.Dataset) -> str:
@@ -197,7 +220,8 @@ def tables(ds: xr.Dataset) -> str:
            "virtual cylindrical gears (ISO 10300-1 Annex A)",
            tabulate(_rows(ds, _GEOMETRY), headers=head, tablefmt="simple",
                     disable_numparse=True)]
-    for t in ds["torque"].values:
+    given = json.loads(ds.attrs.get("given_load_factors", "{}"))
+    for i, t in enumerate(ds["torque"].values):
         one = ds.sel(torque=t)
         out += ["", f"T1 = {t:g} N m: F_mt1 {float(one['F_mt1']):.1f} N, F_vmt "
                     f"{float(one['F_vmt']):.1f} N, F_n {float(one['F_n']):.1f} N",
@@ -208,13 +232,19 @@ def tables(ds: xr.Dataset) -> str:
                         ("K_Halpha", "K_Halpha"), ("K_Falpha", "K_Falpha"))
                     if name in one)
                 + (f"  (K_v Method B: resonance ratio N {float(one['N']):.3f})"
-                   if "N" in one else ""),
+                   if "N" in one and "K_v" not in given else ""),
+                *_given_lines(given, i),
                 "", "pitting (ISO 10300-2)",
                 tabulate(_rows(one, _PITTING), headers=head, tablefmt="simple",
                          disable_numparse=True),
                 "", "tooth root (ISO 10300-3)",
                 tabulate(_rows(one, _BENDING), headers=head, tablefmt="simple",
                          disable_numparse=True)]
+        if "non_generated" in ds and float(ds["non_generated"].sum()) > 0:
+            formate = [m for m, v in zip(ds["member"].values, ds["non_generated"].values,
+                                         strict=True) if v > 0]
+            out.append(f"tooth form of the {' and the '.join(formate)}: non-generated "
+                       "(Formate), its root fillet the cutter's edge radius (ISO 10300-3)")
         for s, smin, what in (("S_H", "S_Hmin", "pitting"), ("S_F", "S_Fmin", "bending")):
             low = [m for m, v in zip(ds["member"].values, one[s].values, strict=True)
                    if v < float(ds[smin])]

@@ -29,7 +29,12 @@ import numpy as np
 import xarray as xr
 
 from contact.load_capacity.iso10300 import bending, factors, pitting
-from contact.load_capacity.iso10300.inputs import GearData, RatingInputs, gear_data_from_blank
+from contact.load_capacity.iso10300.inputs import (
+    GIVEN_FACTORS,
+    GearData,
+    RatingInputs,
+    gear_data_from_blank,
+)
 from contact.load_capacity.iso10300.materials import RatingMaterial, rating_material
 from contact.load_capacity.iso10300.virtual_gears import virtual_gears
 from geometry.core.conventions import data_var
@@ -91,7 +96,10 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
         Dimensions ``torque``, ``member``, ``line``: every factor of ISO 10300-1/-2/-3
         Method B1 as a variable with ``units``, ``long_name`` and ``clause``
         (docs/rating.md lists them), among them the safety factors ``S_H``, ``S_F``
-        (torque, member) and their minima ``S_Hmin``, ``S_Fmin``.
+        (torque, member) and their minima ``S_Hmin``, ``S_Fmin``; where ``inputs`` gives
+        load factors (K_v, K_Hβ, K_Fβ, K_Hα, K_Fα) they are used as given and the
+        attribute ``given_load_factors`` (JSON) holds each beside the value the method
+        computes with the other factors as used.
 
     Raises
     ------
@@ -141,7 +149,10 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
     K_Hbe = factors.mounting_factor(inputs.mounting, inputs.contact_pattern)
     R_m2 = data.d_m2 / (2.0 * np.sin(data.delta2))
     K_F0 = factors.lengthwise_curvature_factor(data.r_c0, R_m2, data.beta_m2)
-    K_Hb, K_Fb = factors.face_load_factors(K_Hbe, K_F0)
+    K_Hb_C, K_Fb_C = factors.face_load_factors(K_Hbe, K_F0)
+    # a given K_Hbeta carries K_Fbeta = K_Hbeta / K_F0 with it (ISO 10300-1 cl. 8)
+    K_Hb = _given(inputs.face_load_factor_contact, K_Hb_C)
+    K_Fb = _given(inputs.face_load_factor_bending, K_Hb / K_F0)
 
     # ISO 10300-2: pitting
     Z_MB = pitting.mid_zone_factor(vg.alpha_vet, vg.d_va, vg.d_vb, vg.z_v, vg.eps_va,
@@ -152,6 +163,14 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
     alpha_ = factors.transverse_load_factors(
         F["F_vmt"], K_A, K_v, K_Hb, vg.b_v, f_pt, vg.eps_vg, data.a, data.d_m2,
         limit_H=vg.eps_vg / (vg.eps_va * Z_LS**2), limit_F=vg.eps_vg / (vg.eps_va * Y_eps))
+    computed = {"K_v": K_v_B, "K_Hbeta": K_Hb_C, "K_Fbeta": K_Fb_C,
+                "K_Halpha": alpha_["K_Halpha"], "K_Falpha": alpha_["K_Falpha"]}
+    # a given K_Halpha is K_Falpha too where that is not given (Method B: one value)
+    K_Ha = _given(inputs.transverse_load_factor_contact, alpha_["K_Halpha"], torque.shape)
+    K_Fa = _given(inputs.transverse_load_factor_bending,
+                  K_Ha if inputs.transverse_load_factor_contact is not None
+                  else alpha_["K_Falpha"], torque.shape)
+    alpha_ = {**alpha_, "K_Halpha": K_Ha, "K_Falpha": K_Fa}
     Z_E = pitting.elasticity_factor(E, nu)
     Z_L = pitting.lubricant_factor(s_Hlim, inputs.nu40)
     Z_v = pitting.speed_factor(s_Hlim, float(v_mt[1]))
@@ -175,10 +194,15 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
 
     # ISO 10300-3: bending
     rho_a0 = np.array(inputs.edge_radius)
-    form = bending.tooth_form(
-        data.m_mn, vg.z_vn, vg.d_van, vg.d_vbn, [data.x_hm1, data.x_hm2],
-        [data.x_sm1, data.x_sm2], data.h_a0, rho_a0, np.array(inputs.protuberance),
-        alpha_e, alpha_n)
+    x_hm, x_sm = [data.x_hm1, data.x_hm2], [data.x_sm1, data.x_sm2]
+    s_pr = np.array(inputs.protuberance)
+    formate = np.array([p == "Formate" for p in (inputs.process or ("Generate",) * 2)])
+    form = bending.tooth_form(data.m_mn, vg.z_vn, vg.d_van, vg.d_vbn, x_hm, x_sm, data.h_a0,
+                              rho_a0, s_pr, alpha_e, alpha_n)
+    if formate.any():  # ISO 10300-3: a non-generated member's fillet is the edge radius
+        form = bending.member_tooth_forms(form, bending.non_generated_tooth_form(
+            data.m_mn, [data.h_am1, data.h_am2], x_hm, x_sm, data.h_a0, rho_a0, s_pr,
+            alpha_e, alpha_n), formate)
     Y_Sa, q_s = bending.stress_correction_factor(form.s_Fn, form.h_Fa, form.rho_F)
     Y_BS = bending.bevel_spiral_angle_factor(vg.b_v, vg.beta_v, vg.beta_vb, vg.l_bm,
                                              data.h_am1 + data.h_fm1,
@@ -221,8 +245,46 @@ def rate_pair(data: GearData, inputs: RatingInputs, torque: Any, speed: float,
         slide=slide, Z_W=Z_W, Z_X=Z_X, Z_NT=Z_NT, sigma_H0=sigma_H0, sigma_H=sigma_H,
         sigma_Hlim=s_Hlim, sigma_HP=sigma_HP, form=form, Y_Sa=Y_Sa, q_s=q_s, Y_eps=Y_eps,
         Y_BS=Y_BS, Y_LS=Y_LS, Y_R=Y_R, Y_d=Y_d, Y_X=Y_X, Y_NT=Y_NT, sigma_F0=sigma_F0,
-        sigma_F=sigma_F, sigma_Flim=s_Flim, sigma_FP=sigma_FP, E=E, nu=nu, cycles=cycles)
+        sigma_F=sigma_F, sigma_Flim=s_Flim, sigma_FP=sigma_FP, E=E, nu=nu, cycles=cycles,
+        computed=computed, formate=formate)
     return _dataset(torque, values, inputs, data, side, name, materials)
+
+
+def _given(value: float | None, computed, shape: tuple[int, ...] | None = None):
+    """The given factor where the ``[rating]`` table gives it (broadcast to ``shape``, the
+    torques, for a factor that varies with the load), else the computed one."""
+    if value is None:
+        return computed
+    return np.full(shape, value) if shape is not None else float(value)
+
+
+def _given_factors(inputs: RatingInputs, v: dict[str, Any]) -> dict[str, Any]:
+    """What the ``[rating]`` table gives in place of the computed load factors, each with
+    the value the method computes beside it: variable → {field, given, computed,
+    computed_by} (a factor that follows from a given one, K_Fbeta of K_Hbeta and K_Falpha
+    of K_Halpha, with ``follows``)."""
+    out: dict[str, Any] = {}
+
+    def numbers(x):
+        x = np.asarray(x, float)
+        return float(x) if x.ndim == 0 else [float(e) for e in x.ravel()]
+
+    for field, (name, method) in GIVEN_FACTORS.items():
+        value = getattr(inputs, field)
+        if value is not None:
+            out[name] = {"field": field, "given": float(value),
+                         "computed": numbers(v["computed"][name]), "computed_by": method}
+    follows = (("K_Fbeta", "face_load_factor_bending", "K_Hbeta",
+                "K_Fbeta = K_Hbeta / K_F0 of the given K_Hbeta (ISO 10300-1:2014 cl. 8)"),
+               ("K_Falpha", "transverse_load_factor_bending", "K_Halpha",
+                "K_Falpha = the given K_Halpha (ISO 10300-1:2014 cl. 9, Method B: one value)"))
+    for name, field, source, how in follows:
+        if source in out and getattr(inputs, field) is None:
+            out[name] = {"follows": how, "value": numbers(v[name] if name in v
+                                                           else v["alpha_"][name]),
+                         "computed": numbers(v["computed"][name]),
+                         "computed_by": GIVEN_FACTORS[field][1]}
+    return out
 
 
 def _curve(materials, attr: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -251,6 +313,17 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
 
     def var(dims, value, units, long_name, clause):
         return data_var(dims, np.asarray(value, dtype=float), units, long_name, clause=clause)
+
+    given = _given_factors(inputs, v)
+
+    def clause(name: str, computed_by: str) -> str:
+        """The clause of a load factor, or where the given value comes from."""
+        g = given.get(name)
+        if g is None:
+            return computed_by
+        if "field" in g:
+            return f"given ([rating] {g['field']}; {g['computed_by']} computes it otherwise)"
+        return g["follows"]
 
     a1 = f"{_A} (A.2, transverse section)"
     a3 = f"{_A} (A.3, normal section)"
@@ -316,15 +389,15 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
         "N": var(t, v["N"], "1", "resonance ratio N = n1/n_E1", f"{_P1} cl. 7 (Method B)"),
         "K": var(t, v["K"], "1", "constant K of the subcritical dynamic factor",
                  f"{_P1} cl. 7 (Method B)"),
-        "K_v": var(t, v["K_v"], "1", "dynamic factor K_v", f"{_P1} cl. 7 (Method B)"
-                   if inputs.dynamic_factor is None else "given ([rating] dynamic_factor)"),
+        "K_v": var(t, v["K_v"], "1", "dynamic factor K_v", clause("K_v",
+                                                                  f"{_P1} cl. 7 (Method B)")),
         "K_Hbeta_be": var((), v["K_Hbeta_be"], "1", "mounting factor K_Hbeta-be",
                           f"{_P1} cl. 8"),
         "K_Hbeta": var((), v["K_Hbeta"], "1", "face load factor for contact K_Hbeta",
-                       f"{_P1} cl. 8"),
+                       clause("K_Hbeta", f"{_P1} cl. 8")),
         "K_F0": var((), v["K_F0"], "1", "lengthwise curvature factor K_F0", f"{_P1} cl. 8"),
         "K_Fbeta": var((), v["K_Fbeta"], "1", "face load factor for bending K_Fbeta",
-                       f"{_P1} cl. 8"),
+                       clause("K_Fbeta", f"{_P1} cl. 8")),
         "F_mtH": var(t, al["F_mtH"], "N", "determinant tangential force F_mtH",
                      f"{_P1} cl. 9"),
         "K_Halpha_star": var(t, al["K_Halpha_star"], "1",
@@ -333,9 +406,11 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
         "a_rel": var((), al["a_rel"], "1", "relative hypoid offset a_rel = 2 a / d_m2",
                      f"{_P1} cl. 9"),
         "K_Halpha": var(t, al["K_Halpha"], "1", "transverse load factor for contact "
-                                                "K_Halpha", f"{_P1} cl. 9 (Method B)"),
+                                                "K_Halpha", clause("K_Halpha",
+                                                                   f"{_P1} cl. 9 (Method B)")),
         "K_Falpha": var(t, al["K_Falpha"], "1", "transverse load factor for bending "
-                                                "K_Falpha", f"{_P1} cl. 9 (Method B)"),
+                                                "K_Falpha", clause("K_Falpha",
+                                                                   f"{_P1} cl. 9 (Method B)")),
         # pitting (ISO 10300-2)
         "Z_MB": var((), v["Z_MB"], "1", "mid-zone factor Z_M-B", f"{_P2} cl. 6"),
         "p_star": var(li, v["p_star"], "1", "related peak load of the contact line p*",
@@ -387,6 +462,9 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
             tm, v["N_H"], "1", "pinion load cycles N_L1 at which S_H reaches S_H,min (inf: "
             "long life; 0: beyond the static strength)", f"{_P2} cl. 8 (life factor Z_NT)"),
         # bending (ISO 10300-3)
+        "non_generated": var(m, v["formate"], "1", "tooth form of a non-generated (Formate) "
+                                                   "member 1, of a generated member 0",
+                             f"{_P3} cl. 6 ([rating] process or the case's members)"),
         "E": var(m, form.E, "mm", "auxiliary quantity of the tooth form E", f"{_P3} cl. 6"),
         "G": var(m, form.G, "1", "auxiliary quantity of the tooth form G", f"{_P3} cl. 6"),
         "H": var(m, form.H, "1", "auxiliary quantity of the tooth form H", f"{_P3} cl. 6"),
@@ -447,9 +525,12 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
         "rating_method": "iso10300",
         "case": name,
         "method": "ISO 10300-1/-2/-3:2014 Method B1 (virtual cylindrical gears, Annex A; "
-                  "K_v Method B, K_Hbeta Method C, K_Halpha Method B)",
+                  "K_v Method B, K_Hbeta Method C, K_Halpha Method B"
+                  + (f"; given: {', '.join(given)}" if given else "") + ")",
         "side": side,
         "rating_inputs": json.dumps(inputs.to_mapping()),
+        # the load factors the [rating] table gives, each beside the computed value
+        **({"given_load_factors": json.dumps(given)} if given else {}),
         "gear_data": json.dumps(dataclasses.asdict(data)),
         "materials": ", ".join(mat.key for mat in materials),
         "toolkit_version": __version__,
@@ -502,11 +583,12 @@ def case_rating_inputs(case, rating: RatingInputs | Mapping[str, Any] | None = N
     -------
     RatingInputs
         With ``nu40`` (the case's oil at 40 °C), ``edge_radius`` (the edge radii of the
-        blades that cut the rated flanks), ``side`` (ISO's drive side when the pinion's
-        concave flank drives) and, where the table leaves ``flank_roughness`` out, the
-        flanks' Rz from the case's ``[operating] roughness`` Rq (Rz = 6 Ra = 6 √(2/π) Rq,
-        :data:`RZ_PER_RQ`: the rating's Z_R and the LTCA's film then see one roughness)
-        filled in.
+        blades that cut the rated flanks), ``process`` (the members' ``process``: a
+        Formate member is rated by the non-generated tooth form), ``side`` (ISO's drive
+        side when the pinion's concave flank drives) and, where the table leaves
+        ``flank_roughness`` out, the flanks' Rz from the case's ``[operating] roughness``
+        Rq (Rz = 6 Ra = 6 √(2/π) Rq, :data:`RZ_PER_RQ`: the rating's Z_R and the LTCA's
+        film then see one roughness) filled in.
 
     Raises
     ------
@@ -534,6 +616,8 @@ def case_rating_inputs(case, rating: RatingInputs | Mapping[str, Any] | None = N
     side = fill.get("side", rating.side)
     if rating.nu40 is None:
         fill["nu40"] = _oil_nu40(case.operating.lubricant)
+    if rating.process is None:  # the tooth form of ISO 10300-3 by how each member is cut
+        fill["process"] = (case.pinion.process, case.gear.process)
     if rating.edge_radius is None:
         pinion_flank = "concave" if side == "drive" else "convex"
         gear_flank = "convex" if pinion_flank == "concave" else "concave"
