@@ -13,8 +13,11 @@ sample 1, ``spiral_bevel_iso23509_s1``; both 50 / 250 / 500 N·m), prints the
   (:data:`friction.lubricant.BASE_OIL_FACTORS`);
 * ``xu2007`` — Xu, Kahraman et al. (2007)'s regression (published coefficients);
 * ``thermal_eyring`` — the opt-in thermal Eyring film shear (:mod:`friction.thermal_eyring`;
-  ``film_heating`` 1, Johnson & Greenwood's) and the same with the surfaces' flash
-  temperature alone (``film_heating`` 0, column ``thermal_eyring_s``),
+  ``film_heating`` 1, Johnson & Greenwood's) on the asperities from the flanks' roughness
+  (:mod:`friction.flank_summits`), the same with the surfaces' flash temperature alone
+  (``film_heating`` 0, column ``thermal_eyring_s``) and, with ``--fixed-summits``, its
+  first version with ``mixed_ehl``'s fixed ηβσ 0.05 and σ/β 0.01 (column
+  ``thermal_eyring_fixed``),
 
 over Rq 0.1–1.3 µm × oil inlet 50–100 °C (1500 rpm), pinion speed 100–6000 rpm, torque and
 three oils: the bundled 75W90 (the seed's Table 5.2), an ISO VG 220 mineral gear oil and a
@@ -28,7 +31,7 @@ the number.
 Usage::
 
     python benchmarks/friction_correlation_map.py [--ltca-cache DIR] [--cases A,B,default]
-        [--no-thermal]   (cases: A, B, default, spiral)
+        [--no-thermal] [--fixed-summits]   (cases: A, B, default, spiral)
 
 The LTCAs are those of ``benchmarks/friction_anchors.py`` / ``friction_map.py`` (computed
 once and cached in ``--ltca-cache``, default ``~/.cache/hypoid-ltca/benchmarks``).
@@ -88,19 +91,23 @@ def iso_model(x_l: float):
     return functools.partial(iso_tr_14179_2, base_oil_factor=x_l)
 
 
-def models(x_l: float, thermal: bool) -> dict:
+def models(x_l: float, thermal: bool, fixed_summits: bool = False) -> dict:
     out = {"mixed_ehl": "mixed_ehl", "ISO": iso_model(x_l), "xu2007": "xu2007"}
     if thermal:
         out["thermal_eyring"] = "thermal_eyring"
         out["thermal_eyring_s"] = functools.partial(thermal_eyring, film_heating=0.0)
+        if fixed_summits:
+            out["thermal_eyring_fixed"] = functools.partial(thermal_eyring, summits="fixed")
     return out
 
 
 class Evaluator:
     """μ (flank, load-weighted), efficiency [%] and λ per torque, cached per condition."""
 
-    def __init__(self, cache: Path, oils: dict[str, str], thermal: bool):
+    def __init__(self, cache: Path, oils: dict[str, str], thermal: bool,
+                 fixed_summits: bool = False):
         self.cache, self.oils, self.thermal = cache, oils, thermal
+        self.fixed_summits = fixed_summits
         self.lt = {}
         self.memo = {}
 
@@ -117,7 +124,7 @@ class Evaluator:
         lt = self.ltca(label)
         x_l = BASE_OIL_FACTORS[load_lubricant(self.oils[oil]).base_oil]
         res = {}
-        for name, model in models(x_l, self.thermal).items():
+        for name, model in models(x_l, self.thermal, self.fixed_summits).items():
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", FrictionModelRangeWarning)
                 fr = efficiency_analysis(lt, OperatingConditions(
@@ -132,7 +139,7 @@ class Evaluator:
 
 
 def _names(ev: Evaluator) -> list[str]:
-    return list(models(1.0, ev.thermal))
+    return list(models(1.0, ev.thermal, ev.fixed_summits))
 
 
 def roughness_temperature(ev: Evaluator, label: str) -> list[list]:
@@ -255,6 +262,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--cases", default="A,B,default,spiral")
     ap.add_argument("--no-thermal", action="store_true",
                     help="leave the opt-in thermal_eyring model out (faster)")
+    ap.add_argument("--fixed-summits", action="store_true",
+                    help="add thermal_eyring's first version (fixed ηβσ, σ/β)")
     args = ap.parse_args(argv)
     labels = args.cases.split(",")
     with tempfile.TemporaryDirectory() as tmp:
@@ -263,7 +272,7 @@ def main(argv: list[str] | None = None) -> int:
             path = Path(tmp) / f"{sheet.name}.toml"
             path.write_text(dump_toml(oil_file_mapping(sheet)), encoding="utf-8")
             oils[sheet.name] = str(path)
-        ev = Evaluator(args.ltca_cache, oils, not args.no_thermal)
+        ev = Evaluator(args.ltca_cache, oils, not args.no_thermal, args.fixed_summits)
         for label in labels:
             ev.ltca(label)
         names = _names(ev)

@@ -14,10 +14,11 @@ Usage::
     python benchmarks/friction_map.py [--model mixed_ehl] [--summits fixed|profile]
         [--cases default,A,B] [--ltca-cache DIR]
 
-``--summits profile`` evaluates ``mixed_ehl`` with the summit radius of the toolkit's
-ground profile scaled in height (σ/β from McCool's statistics of
-``friction.ehl.roughness.GroundSurface`` seeds 1 and 2, the stochastic solver's surfaces,
-∝ σ²) instead of the fixed σ/β = 0.01: the alternative docs/friction.md measures.
+``--summits profile`` evaluates ``mixed_ehl`` with the summits of the toolkit's ground
+profile scaled in height (:mod:`friction.flank_summits`: McCool's statistics of
+``friction.ehl.roughness.GroundSurface`` seeds 1 and 2, the stochastic solver's surfaces;
+σ/β ∝ σ²) instead of the fixed σ/β = 0.01: the alternative docs/friction.md measures, and
+the summits ``thermal_eyring`` takes (``--model thermal_eyring`` maps that model).
 The LTCAs are computed once and cached (as ``benchmarks/friction_anchors.py``); a run
 then takes about a minute per case.
 """
@@ -26,7 +27,6 @@ from __future__ import annotations
 
 import argparse
 import itertools
-import math
 import sys
 import warnings
 from pathlib import Path
@@ -35,6 +35,8 @@ import numpy as np
 from tabulate import tabulate
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+# the tree this script belongs to, before an installed copy of the package
+sys.path.insert(1, str(Path(__file__).resolve().parents[1]))
 
 from friction_anchors import _flank_weighted, _ltca
 
@@ -56,28 +58,28 @@ ISO = "iso_tr_14179_2"
 
 
 def profile_summit_model():
-    """``mixed_ehl`` with σ/β of the toolkit's ground profile scaled in height: a model
-    function for the registry (σ/β = σ²/(βσ), βσ a constant of the profile's spectrum)."""
-    from friction.ehl.roughness import GroundSurface
-    from friction.ehl.stochastic import roughness_statistics
+    """``mixed_ehl`` with ηβσ and σ/β of the toolkit's ground profile scaled in height to the
+    flanks' Rq (:func:`friction.flank_summits.greenwood_tripp_parameters`, the summits
+    ``thermal_eyring`` takes by default): a model function for the registry, and its ηβσ
+    and βσ [µm²] (σ/β = σ²/(βσ))."""
+    from friction.flank_summits import greenwood_tripp_parameters
 
-    s = roughness_statistics((GroundSurface(0.3, seed=1), GroundSurface(0.3, seed=2))).summits
-    beta_sigma = s.radius * 1e3 * s.sigma  # [µm²]: β ∝ 1/σ at a fixed spectrum
-    ebs = s.density * s.radius * s.sigma * 1e-3  # ηβσ [1], the same at any Rq
+    ebs, sb = greenwood_tripp_parameters(0.3, 0.3)
+    beta_sigma = 2 * 0.3**2 / sb  # [µm²]: β ∝ 1/σ at a fixed spectrum
 
     def mixed_ehl_profile_summits(*, load_per_length, hertz_pressure, radius, e_prime,
                                   entraining_velocity, sliding_velocity, viscosity,
                                   pressure_viscosity, roughness_1, roughness_2,
                                   thermal_factor=1.0):
-        sig = math.hypot(float(np.max(roughness_1)), float(np.max(roughness_2)))
+        e, s = greenwood_tripp_parameters(float(np.max(roughness_1)),
+                                          float(np.max(roughness_2)))
         return mixed_ehl(
             load_per_length=load_per_length, hertz_pressure=hertz_pressure, radius=radius,
             e_prime=e_prime, entraining_velocity=entraining_velocity,
             sliding_velocity=sliding_velocity, viscosity=viscosity,
             pressure_viscosity=pressure_viscosity, roughness_1=roughness_1,
             roughness_2=roughness_2, thermal_factor=thermal_factor,
-            asperity_density_radius_sigma=ebs,
-            sigma_over_beta=min(sig * sig / beta_sigma, 1.0))
+            asperity_density_radius_sigma=e, sigma_over_beta=s)
 
     return mixed_ehl_profile_summits, ebs, beta_sigma
 

@@ -44,7 +44,7 @@ from __future__ import annotations
 import logging
 import math
 import warnings
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from types import MappingProxyType
 from typing import NamedTuple
 
@@ -391,12 +391,13 @@ def separation_of_mean_gap(mean_gap_ratio: ArrayLike) -> Array:
     return t
 
 
-def _share_equation(x: Array, h_s: Array, p_mean: Array, k_e: Array) -> Array:
+def _share_equation(x: Array, h_s: Array, p_mean: Array, k_e: Array,
+                    f52: Callable[[Array], Array] = _f52) -> Array:
     """JGP load balance in x = ln γ₁ [1]: p_a(h(γ₁)) − p̄ (1 − 1/γ₁) [MPa] with h the
     separation of the film's mean gap h_c(γ₁) (:func:`separation_of_mean_gap`); decreasing
-    in x (h_s = h_c,s/σ [1], p̄ [MPa], k_e = K E′ [MPa])."""
+    in x (h_s = h_c,s/σ [1], p̄ [MPa], k_e = K E′ [MPa], ``f52`` the heights' F_{5/2})."""
     lam = h_s * np.exp(_FILM_GAMMA_EXPONENT * x)
-    return k_e * _f52(separation_of_mean_gap(lam)) - p_mean * (-np.expm1(-x))
+    return k_e * f52(separation_of_mean_gap(lam)) - p_mean * (-np.expm1(-x))
 
 
 def mixed_ehl_solution(
@@ -417,6 +418,7 @@ def mixed_ehl_solution(
     boundary_friction: float = MIXED_EHL_DEFAULTS["boundary_friction"][0],
     asperity_density_radius_sigma: float = MIXED_EHL_DEFAULTS["asperity_density_radius_sigma"][0],
     sigma_over_beta: float = MIXED_EHL_DEFAULTS["sigma_over_beta"][0],
+    height_integral: Callable[[Array], Array] | None = None,
 ) -> MixedEHL:
     """Load sharing, film and friction of the mixed-EHL model (see the module docstring).
 
@@ -448,6 +450,11 @@ def mixed_ehl_solution(
     asperity_density_radius_sigma, sigma_over_beta : float
         Model parameters; defaults and sources in :data:`MIXED_EHL_DEFAULTS`
         ([MPa], [1], [1], [1], [1]).
+    height_integral : callable, optional
+        F_{5/2}(t) [1] of the composite surface's height distribution at t = h/σ, i.e.
+        E[(z − t)₊^{5/2}] for heights z of unit variance (e.g. the ground flanks' skewed
+        heights, :func:`friction.flank_summits.height_tail_integral`); default the
+        Gaussian's, :func:`greenwood_tripp_integral`. Positive, decreasing.
 
     Returns
     -------
@@ -526,7 +533,7 @@ def mixed_ehl_solution(
     p_mean = 0.25 * math.pi * ph
     lam_s = h_s / sigma
     # ln γ₁ from the load balance; γ₁ = 1 (no asperity load) where F_{5/2} underflows
-    x = _solve_share(lam_s, p_mean, k_e)
+    x = _solve_share(lam_s, p_mean, k_e, _f52 if height_integral is None else height_integral)
     gamma1 = np.exp(x)
     share_a = -np.expm1(-x)  # 1/γ₂ = 1 − 1/γ₁
     h_c = h_s * gamma1**_FILM_GAMMA_EXPONENT
@@ -553,22 +560,24 @@ def mixed_ehl_solution(
     )
 
 
-def _solve_share(lam_s: Array, p_mean: Array, k_e: Array) -> Array:
+def _solve_share(lam_s: Array, p_mean: Array, k_e: Array,
+                 f52: Callable[[Array], Array] = _f52) -> Array:
     """x = ln γ₁ ≥ 0 of the JGP load balance for each point (λ_s = h_c,s/σ [1], p̄ and
     K E′ [MPa]): 0 where the asperities carry nothing, else the root bracketed in
     [0, x_hi] by scipy's elementwise bracketing root finder (the balance is monotonic)."""
     x = np.zeros(lam_s.shape)
-    need = _f52(separation_of_mean_gap(lam_s)) * k_e > 1e-12 * p_mean
+    need = f52(separation_of_mean_gap(lam_s)) * k_e > 1e-12 * p_mean
     if not np.any(need):
         return x
     ls, pm, ke = lam_s[need], p_mean[need], k_e[need]
     hi = np.full(ls.shape, 1.0)
     for _ in range(200):  # widen the bracket until the balance changes sign
-        pos = _share_equation(hi, ls, pm, ke) > 0
+        pos = _share_equation(hi, ls, pm, ke, f52) > 0
         if not np.any(pos):
             break
         hi = np.where(pos, 2.0 * hi, hi)
-    res = elementwise.find_root(_share_equation, (np.zeros_like(ls), hi), args=(ls, pm, ke),
+    res = elementwise.find_root(lambda x, a, b, c: _share_equation(x, a, b, c, f52),
+                                (np.zeros_like(ls), hi), args=(ls, pm, ke),
                                 tolerances={"xatol": 1e-12, "xrtol": 1e-12})
     x[need] = res.x
     return x

@@ -18,6 +18,7 @@ import pytest
 
 from friction.coefficient import friction_coefficient
 from friction.ehl.thermal import flash_temperature
+from friction.flank_summits import greenwood_tripp_parameters, height_tail_integral
 from friction.mixed_ehl import MIXED_EHL_DEFAULTS, mixed_ehl, mixed_ehl_solution
 from friction.thermal_eyring import (
     _BAND_MEAN,
@@ -40,8 +41,27 @@ def test_no_temperature_dependence_is_mixed_ehl() -> None:
     # β = 0: the viscosity does not feel the heat, the model is mixed_ehl to round-off
     u = np.array([0.5, 2.5, 10.0])
     kw = dict(SEGMENT, entraining_velocity=u)
-    np.testing.assert_allclose(thermal_eyring(**kw, temperature_viscosity=0.0),
+    np.testing.assert_allclose(thermal_eyring(**kw, temperature_viscosity=0.0,
+                                              summits="fixed"),
                                mixed_ehl(**kw), rtol=1e-12)
+    # with the ground flanks' summits: mixed_ehl with their ηβσ, σ/β and skewed heights
+    ebs, sb = greenwood_tripp_parameters(0.8, 0.8)
+    np.testing.assert_allclose(
+        thermal_eyring(**kw, temperature_viscosity=0.0),
+        mixed_ehl_solution(**kw, asperity_density_radius_sigma=ebs, sigma_over_beta=sb,
+                           height_integral=lambda t: height_tail_integral(t, 0.8, 0.8)
+                           ).friction_coefficient, rtol=1e-12)
+
+
+def test_ground_summits_per_roughness_pair() -> None:
+    # points of different Rq pairs are solved each with its own summits, as one by one
+    rq1, rq2 = np.array([0.1, 0.8, 0.1, 1.3]), np.array([0.1, 0.8, 0.1, 0.4])
+    kw = dict(SEGMENT, roughness_1=rq1, roughness_2=rq2)
+    together = np.asarray(thermal_eyring(**kw, temperature_viscosity=BETA))
+    alone = [thermal_eyring(**dict(SEGMENT, roughness_1=a, roughness_2=b),
+                            temperature_viscosity=BETA) for a, b in zip(rq1, rq2, strict=True)]
+    np.testing.assert_allclose(together, alone, rtol=1e-12)
+    assert together[0] == together[2]
 
 
 @pytest.mark.parametrize("sliding", [1e-3, 3e-3])
@@ -66,8 +86,10 @@ def test_isothermal_low_sliding_limit(sliding: float) -> None:
     tol = (BETA + BETA_ALPHA * SEGMENT["pressure_viscosity"] * 1e-3
            * SEGMENT["hertz_pressure"]) * dt_max
     assert tol < 2e-3
+    # the film's heat does not depend on how the asperities are described: the fixed
+    # summits compare with mixed_ehl's solution as it is
     mu = thermal_eyring(**kw, temperature_viscosity=BETA, oil_thermal_conductivity=K_OIL,
-                        pressure_viscosity_temperature=BETA_ALPHA)
+                        pressure_viscosity_temperature=BETA_ALPHA, summits="fixed")
     film_iso = float(iso.film_friction)
     film = mu - float(iso.boundary_friction)
     assert film <= film_iso * (1 + 1e-12)
@@ -91,7 +113,8 @@ def test_bounded_by_limiting_shear_and_isothermal_and_finite() -> None:
         with pytest.warns(Warning):
             mu = np.asarray(thermal_eyring(**kw, temperature_viscosity=0.1,
                                            oil_thermal_conductivity=0.1, film_heating=c_f,
-                                           pressure_viscosity_temperature=0.02))
+                                           pressure_viscosity_temperature=0.02,
+                                           summits="fixed"))
         assert np.all(np.isfinite(mu))
         assert np.all(mu <= iso.friction_coefficient * (1 + 1e-9) + 1e-15)
         assert np.all(mu - iso.boundary_friction <= LAMBDA * (1 + 1e-9))
