@@ -21,7 +21,7 @@ CoastCheck        one analysis of the coast flank at its light and design torque
 CoastCapacity     the coast design torque found, its checks and why it was lowered
 coast_torque_step the next torque of the search from one or two checks (pure)
 coast_capacity    the search on a case (an analysis callable: testable without an LTCA)
-COAST_STEPS, PLASTIC_STEP
+COAST_STEPS, REFINE_STEPS, CLOSENESS, PLASTIC_STEP
 """
 
 from __future__ import annotations
@@ -35,14 +35,19 @@ from typing import Any
 from contact.optimize.development_result import STATIC_MARGIN
 from contact.optimize.development_root import root_capacity_step
 
-__all__ = ["COAST_STEPS", "PLASTIC_STEP", "CoastCapacity", "CoastCheck", "coast_capacity",
-           "coast_torque_step"]
+__all__ = ["CLOSENESS", "COAST_STEPS", "PLASTIC_STEP", "REFINE_STEPS", "CoastCapacity",
+           "CoastCheck", "coast_capacity", "coast_torque_step"]
 
 log = logging.getLogger(__name__)
 
 #: most lowering steps of :func:`coast_capacity` (each one coast-flank analysis at
 #: ``ltca run``'s sampling with the FE root stress, ≈ 5 s CPU with the FE model cached)
 COAST_STEPS = 4
+#: most steps back up between the highest torque that holds and the lowest that fails
+REFINE_STEPS = 3
+#: the search ends where the lowest torque that fails is within this factor of the highest
+#: that holds [1]
+CLOSENESS = 1.05
 #: the factor a torque with plastic segments is lowered by in one step [1]: a plastic
 #: segment is at its pressure limit, so its pressure says nothing of how far below the
 #: torque lies where it is elastic; 0.85 per step reaches 0.52 of the start in 4 steps
@@ -197,29 +202,42 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
 
 def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
                    say: Callable[[str], None] = lambda line: None,
-                   n_steps: int = COAST_STEPS) -> CoastCapacity:
+                   n_steps: int = COAST_STEPS, n_refine: int = REFINE_STEPS,
+                   closeness: float = CLOSENESS) -> CoastCapacity:
     """The coast flank's design torque: ``start`` where the coast flank holds there, else
-    lowered by :func:`coast_torque_step` until it holds, each step analysed.
+    the largest torque found below it where it holds, each torque tried analysed.
+
+    Two phases: **down**, :func:`coast_torque_step` from the last failing check until one
+    holds (at most ``n_steps``); then **up**, between the highest torque that holds and the
+    lowest that fails, the step of :func:`coast_torque_step` from the failing one with the
+    exponents measured between the two (plastic: their geometric mean), kept inside the
+    bracket (at least a tenth of its log-width from either end), until the two are within
+    ``closeness`` or the estimate is within 1 % of the torque that holds (at most
+    ``n_refine``). A first step that lands far below the capacity
+    (the Hertzian exponent of a peak that sits on an edge) is so brought back up: the
+    torque written is what the bearing carries, not an arbitrary torque below it.
 
     Parameters
     ----------
     analyse : callable torque [N·m] → CoastCheck
         The coast flank analysed at its light and design torque (``ltca run --flank
         coast``'s analysis of the case with that coast design torque). An exception ends
-        the search (said through ``say``; the last torque checked is kept).
+        the search (said through ``say``; the torques checked are kept).
     start : float — [N·m] > 0
         The coast design torque to check first: the smaller of the design torque and the
         coast side's ISO 10300 capacity.
     say : callable, optional
-        Called with one line per step.
-    n_steps : int
-        Most lowering steps (default :data:`COAST_STEPS`).
+        Called with one line where the torque was lowered.
+    n_steps, n_refine : int
+        Most steps down (default :data:`COAST_STEPS`) and up (:data:`REFINE_STEPS`).
+    closeness : float — [1]
+        The bracket's ratio below which the search ends (default :data:`CLOSENESS`).
 
     Returns
     -------
     CoastCapacity
-        ``holds`` False where the last step still fails (its reason says "still"); the
-        torque is then the last one analysed.
+        ``holds`` False where no torque tried holds (the reason says "still"); the torque
+        is then the last one analysed.
 
     Raises
     ------
@@ -228,42 +246,73 @@ def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
     """
     if not (math.isfinite(start) and start > 0):
         raise ValueError(f"coast capacity: start torque {start} must be finite and > 0")
-    try:
-        first = analyse(start)
-    except Exception as exc:  # reported, never fatal
-        log.info("coast capacity check at %g N m failed: %s", start, exc)
-        say(f"development: coast flank not checked at {start:.4g} N m ({exc})")
+    checks: list[CoastCheck] = []
+
+    def check_at(t: float) -> CoastCheck | None:
+        try:
+            c = analyse(t)
+        except Exception as exc:  # reported, never fatal: the torques checked are kept
+            log.info("coast capacity check at %g N m failed: %s", t, exc)
+            say(f"development: coast flank not analysed at {t:.4g} N m ({exc})")
+            return None
+        checks.append(c)
+        return c
+
+    first = check_at(start)
+    if first is None:
         return CoastCapacity(start, start, (), "", False)
-    checks = [first]
     if not first.failures:
         return CoastCapacity(start, start, tuple(checks), "", True)
-    previous = None
-    for _ in range(n_steps):
-        check = checks[-1]
-        new, _why = coast_torque_step(check, previous)
-        if not (0.0 < new < check.torque):
+    bad, ok, previous = first, None, None
+    for _ in range(n_steps):  # down until one holds
+        new, _why = coast_torque_step(bad, previous)
+        if not (0.0 < new < bad.torque):
             break
-        try:
-            nxt = analyse(new)
-        except Exception as exc:  # reported, never fatal: the last torque checked is kept
-            log.info("coast capacity check at %g N m failed: %s", new, exc)
-            say(f"development: coast flank at {new:.4g} N m not analysed ({exc})")
+        c = check_at(new)
+        if c is None:
             break
-        previous = check
-        checks.append(nxt)
-        if not nxt.failures:
+        if not c.failures:
+            ok = c
             break
-    last = checks[-1]
-    holds = not last.failures
-    now = ("; ".join(last.failures.values()) if not holds else
-           "; ".join(_within(last)))
+        previous, bad = bad, c
+    for _ in range(n_refine if ok is not None else 0):  # up, inside the bracket
+        if bad.torque <= closeness * ok.torque:
+            break
+        estimate, new = _inside(bad, ok)
+        if estimate <= 1.01 * ok.torque or not ok.torque < new < bad.torque:
+            break  # the torque that holds is at the capacity (to the margin) already
+        c = check_at(new)
+        if c is None:
+            break
+        if c.failures:
+            bad = c
+        else:
+            ok = c
+    last = ok if ok is not None else checks[-1]
+    holds = ok is not None
+    now = "; ".join(_within(last)) if holds else "; ".join(last.failures.values())
+    n = len(checks) - 1
     reason = (f"the coast flank's capacity at its developed bearing (ltca run --flank "
               f"coast's analysis): at {start:.4g} N m {'; '.join(first.failures.values())}; "
-              f"lowered in {len(checks) - 1} checked step{'s' if len(checks) != 2 else ''} "
-              f"to {last.torque:.4g} N m, where {'still ' if not holds else ''}{now}")
-    if len(checks) > 1:
-        say(f"  coast design torque {start:.4g} -> {last.torque:.4g} N m: {reason}")
+              f"{n} torque{'s' if n != 1 else ''} below checked, the largest that holds "
+              f"{last.torque:.4g} N m, where {'still ' if not holds else ''}{now}"
+              + (f" (at {bad.torque:.4g} N m: {'; '.join(bad.failures.values())})"
+                 if holds and bad is not first else ""))
+    say(f"  coast design torque {start:.4g} -> {last.torque:.4g} N m: {reason}")
     return CoastCapacity(last.torque, start, tuple(checks), reason, holds)
+
+
+def _inside(bad: CoastCheck, ok: CoastCheck) -> tuple[float, float]:
+    """The capacity estimated between ``ok`` (holds) and ``bad`` (fails) — the step from
+    ``bad`` with the exponents measured between the two (:func:`coast_torque_step`;
+    plastic: their geometric mean) — and the next torque to check: that estimate kept a
+    tenth of the bracket's log-width from either end, rounded down to 0.1 N·m."""
+    lo, hi = math.log(ok.torque), math.log(bad.torque)
+    t, why = coast_torque_step(bad, ok)
+    if why == "plastic" or not t > 0:
+        t = math.sqrt(ok.torque * bad.torque)
+    x = min(max(math.log(t), lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
+    return t, float(f"{math.floor(10.0 * math.exp(x)) / 10.0:.4g}")
 
 
 def _within(c: CoastCheck) -> list[str]:
