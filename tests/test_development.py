@@ -525,8 +525,8 @@ def test_the_coast_search_runs_where_the_coast_misses_a_target(short_development
         assert r.coast_best.checked and r.coast_best.stage in ("bearing", "relief")
     else:
         assert r.case.to_toml() == off.case.to_toml()
-    # at the coast flank's own torques (here the design torque's: no coast design torque)
-    assert r.coast_design_torques == pytest.approx(r.torque, abs=0.1)
+    # at the coast flank's own torques (its design torque no higher than the drive's)
+    assert r.coast_design_torques[1] <= r.torque[1] + 0.1
     again, _ = _analyse(r.case, list(r.coast_design_torques), options=CHECK_LTCA,
                         flank="coast")
     for k in ("lte_peak_to_peak", "pressure_max_flank"):
