@@ -273,10 +273,11 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
     a synthesised case's are the development's light and design torque. The coast side
     has its own design torque where the case's ``[rating]`` gives a ``coast_design_torque``
     below its ``design_torque`` (its ISO 10300 long-life capacity, or the coast flank's
-    static or root-stress capacity at its developed bearing, which ``ltca synthesize``
-    writes; docs/rating.md): on the coast flank the torques are then scaled by
-    ``coast_design_torque / design_torque``, so that the coast flank is analysed at its own
-    light and design torque (issue 71: each flank checked at its own design torque).
+    static, plastic or root-stress capacity at its developed bearing, which ``ltca
+    synthesize`` writes; docs/rating.md): on the coast flank a torque above it is then
+    replaced by it (repeats dropped), so that the coast flank is analysed at the same light
+    torque as the drive flank — the one its development judged — and at its own design
+    torque, never above it (issue 71: each flank checked at its own design torque).
 
     Parameters
     ----------
@@ -288,23 +289,24 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
     Returns
     -------
     torques : tuple of float — [N·m]
-        Rounded to 4 significant digits where scaled.
     why : str
-        Empty where the torques are the case's own; else one sentence saying they are
-        scaled and by what.
+        Empty where the torques are the case's own; else one sentence saying which were
+        limited and to what.
     """
     torques = tuple(float(t) for t in case.operating.torque)
     if flank is None or flank == "drive" or flank == case.pair.drive_flank:
         return torques, ""
     rating = case.extra.get("rating") or {}
     coast, design = rating.get("coast_design_torque"), rating.get("design_torque")
-    if coast is None or design is None or not 0.0 < float(coast) < float(design):
+    if (coast is None or design is None or not 0.0 < float(coast) < float(design)
+            or max(torques) <= float(coast)):
         return torques, ""
-    k = float(coast) / float(design)
-    scaled = tuple(float(f"{t * k:.4g}") for t in torques)
-    return scaled, (f"the case's [operating] torques scaled by its [rating] "
-                    f"coast_design_torque / design_torque = {float(coast):g} / "
-                    f"{float(design):g} N m (the coast side's own design torque)")
+    limited = tuple(dict.fromkeys(min(t, float(coast)) for t in torques))
+    above = [f"{t:g}" for t in torques if t > float(coast)]
+    return limited, (f"the case's [operating] torque{'s' if len(above) > 1 else ''} "
+                     f"{', '.join(above)} N m limited to its [rating] coast_design_torque "
+                     f"{float(coast):g} N m (the coast side's own design torque, below the "
+                     f"design torque {float(design):g} N m)")
 
 
 def run_analysis(
@@ -335,7 +337,7 @@ def run_analysis(
     torque : float or sequence — [N·m], optional
         Pinion torques; default the case's ``[operating]`` torques
         (``Case.operating.torque``; 50, 250, 500 where the table gives none), on the coast
-        flank scaled to the coast side's design torque where the case's ``[rating]`` gives
+        flank none above the coast side's design torque where the case's ``[rating]`` gives
         a ``coast_design_torque`` below its ``design_torque`` (:func:`flank_torques`).
     misalignment : geometry.pair.assembly.Misalignment, optional
         Default: the case's own (its ``[operating]`` ΔE, ΔP, ΔG, ΔΣ; ``Case.misalignment``).

@@ -133,8 +133,9 @@ def test_the_step_is_the_least_of_the_failing_criteria():
 def test_ltca_run_analyses_the_coast_flank_at_its_own_design_torque():
     """A case whose [rating] coast_design_torque (150 N·m) is below its design torque
     (300 N·m): the coast flank (by role or by its pinion flank's name) runs at the
-    [operating] torques × 150/300, the drive flank at them; without a coast design torque
-    below the design torque both run at the case's own."""
+    [operating] torques with those above 150 N·m limited to it (repeats dropped), the drive
+    flank at them; without a coast design torque below the design torque both run at the
+    case's own."""
     from contact.catalogue import bundled_case_path
     from contact.pipeline import flank_torques
     from geometry.case import load_case
@@ -145,9 +146,13 @@ def test_ltca_run_analyses_the_coast_flank_at_its_own_design_torque():
         extra=MappingProxyType(dict(case.extra) | {
             "rating": {"design_torque": 300.0, "coast_design_torque": 150.0}}))
     coast_flank = "convex" if case.pair.drive_flank == "concave" else "concave"
-    assert flank_torques(case, "coast")[0] == (22.5, 150.0)
-    assert flank_torques(case, coast_flank)[0] == (22.5, 150.0)
-    assert "150 / 300 N m" in flank_torques(case, "coast")[1]
+    assert flank_torques(case, "coast")[0] == (45.0, 150.0)
+    assert flank_torques(case, coast_flank)[0] == (45.0, 150.0)
+    assert "300 N m limited to its [rating] coast_design_torque 150 N m" in flank_torques(
+        case, "coast")[1]
+    three = dataclasses.replace(case, operating=dataclasses.replace(
+        case.operating, torque=(50.0, 200.0, 250.0)))
+    assert flank_torques(three, "coast")[0] == (50.0, 150.0)
     assert flank_torques(case, "drive") == ((45.0, 300.0), "")
     assert flank_torques(case, case.pair.drive_flank) == ((45.0, 300.0), "")
     same = dataclasses.replace(case, extra=MappingProxyType(

@@ -39,8 +39,7 @@ def register(sub) -> None:
         "S-N curves of the members' material, one load cycle per tooth mesh. Without "
         "--duty the case's [duty_cycle] table is used, and for a case without one the "
         "bundled ILLUSTRATIVE axle spectrum (7 bins, 10-100 % of the case's top torque; "
-        "on the coast flank of its top torque scaled to the coast design torque, as ltca "
-        "run does).",
+        "on the coast flank no more than its coast design torque, as ltca run).",
     )
     case_argument(p, what="analyse")
     p.add_argument("--duty", default=None, metavar="FILE",

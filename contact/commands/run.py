@@ -274,7 +274,7 @@ def run(args: argparse.Namespace) -> int:
 
         why = flank_torques(case, args.flank)[1]
         if why:
-            print(f"torques of the coast flank: {why}; --torque gives others")
+            print(f"coast flank: {why}; --torque gives others")
     rows = []
     for i, T in enumerate(lt["torque"].values):
         h = lt["lte_harmonics"].values[i]

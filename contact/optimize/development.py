@@ -542,12 +542,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target
     c_coast = time.process_time()
-    # at the coast side's own light and design torque: the smaller of the design torque
-    # and the coast side's ISO 10300 capacity (or the basic file's coast_design_torque)
+    # at the coast side's own design torque: the smaller of the design torque and the
+    # coast side's ISO 10300 capacity (or the basic file's coast_design_torque)
     coast_iso = _coast_rated_torque(best.case if best.case is not None else None, basic,
                                     setup["torques"][1])
-    coast_setup = dict(setup, torques=_light_and(targets, min(setup["torques"][1],
-                                                              coast_iso)))
+    # (the light torque the drive's: `ltca run --flank coast` keeps it, flank_torques)
+    coast_setup = dict(setup, torques=[setup["torques"][0],
+                                       min(setup["torques"][1], coast_iso)])
     coast = _coast_development(developed, best, targets, coast_setup, teeth, memo, say,
                                make)
     coast_seconds = time.process_time() - c_coast
@@ -620,11 +621,6 @@ def _root_capacity(case: Case, best: DevelopmentEvaluation, targets: Development
     best = dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
                                met=full[2], full=full)
     return best, safety, text
-
-
-def _light_and(targets: DevelopmentTargets, torque: float) -> list[float]:
-    """[light, design] torque [N·m] of a design torque (the light load its fraction)."""
-    return [targets.light_load * torque, torque]
 
 
 def _coast_rated_torque(case: Case | None, basic: BasicDesign, design: float) -> float:
