@@ -158,3 +158,24 @@ def test_ltca_run_analyses_the_coast_flank_at_its_own_design_torque():
     same = dataclasses.replace(case, extra=MappingProxyType(
         dict(case.extra) | {"rating": {"design_torque": 300.0}}))
     assert flank_torques(same, "coast") == ((45.0, 300.0), "")
+
+
+def test_ltca_run_says_it_limits_the_coast_torques(tmp_path, capsys):
+    """``ltca run CASE --flank coast`` of a case with a coast design torque (the 5x43 hypoid
+    of tests/data: [operating] 50/250/500 N·m, design 83.86, coast 80.45 N·m) analyses
+    50 and 80.45 N·m and prints why."""
+    from pathlib import Path
+
+    import xarray as xr
+
+    from contact.cli import main
+
+    case = Path(__file__).parent / "data" / "hypoid_5x43_case.toml"
+    out = tmp_path / "coast.nc"
+    assert main(["run", str(case), "--flank", "coast", "--no-root-stress", "--no-progress",
+                 "-o", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert ("coast flank: the case's [operating] torques 250, 500 N m limited to its "
+            "[rating] coast_design_torque 80.45 N m") in text
+    tree = xr.open_datatree(out)
+    assert list(tree["/ltca"]["torque"].values) == [50.0, 80.45]
