@@ -671,11 +671,12 @@ def _as_run(case: Case, basic: BasicDesign, setup: dict[str, Any], coast: float)
 
 
 def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: float,
-                 root_stress: bool) -> CoastCheck:
+                 root_stress: bool, plastic_limit: float = 0.0) -> CoastCheck:
     """The coast flank of the written ``case`` analysed as ``ltca run --flank coast``
     analyses it with the coast design torque ``torque`` (:func:`_as_run`,
     :func:`contact.pipeline.flank_torques`; :data:`CHECK_LTCA`, the FE root stress where
-    ``root_stress`` and the ISO 10300 rating of the coast side)."""
+    ``root_stress`` and the ISO 10300 rating of the coast side); ``plastic_limit``: the
+    plastic share allowed [1] (the development's ``max_plastic_share``)."""
     from contact.chain import AnalysisChain
     from contact.optimize.development_root import root_safety
     from contact.pipeline import flank_torques, run_analysis
@@ -702,7 +703,7 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
                       float(safety[k]), float(s_min), member,
                       float(safety[1 - k]) if len(torques) == 2 else math.nan,
                       float(torques[1 - k]) if len(torques) == 2 else math.nan,
-                      (ms, grid, tuple(float(t) for t in torques)))
+                      (ms, grid, tuple(float(t) for t in torques)), plastic_limit)
 
 
 def _coast_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
@@ -717,7 +718,8 @@ def _coast_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
     the static strength, no plastic segment, S_F,FE >= S_Fmin). The coast outcome's
     metrics and torques become those of the last check at the torque kept."""
     def analyse(torque: float) -> CoastCheck:
-        return _coast_check(case, basic, setup, torque, root_stress)
+        return _coast_check(case, basic, setup, torque, root_stress,
+                            targets.max_plastic_share)
 
     try:
         if lower:

@@ -71,6 +71,8 @@ class CoastCheck:
     light_root_safety : float — [1] S_F,FE at the light torque (for the exponent; NaN)
     light_torque : float — [N·m]
     result : Any — what the analysis returned (its metrics), for the caller
+    plastic_limit : float — [1] the plastic share allowed (the development's
+        ``max_plastic_share``, default 0: no plastic segment)
     """
 
     torque: float
@@ -83,6 +85,7 @@ class CoastCheck:
     light_root_safety: float = math.nan
     light_torque: float = math.nan
     result: Any = None
+    plastic_limit: float = 0.0
 
     @property
     def failures(self) -> dict[str, str]:
@@ -91,7 +94,7 @@ class CoastCheck:
         if math.isfinite(self.pressure) and self.pressure > self.limit:
             out["flank"] = (f"flank peak pressure {self.pressure:.0f} MPa above the static "
                             f"strength {self.limit:.0f} MPa")
-        if self.plastic > 0.0:
+        if self.plastic > self.plastic_limit:
             out["plastic"] = (f"plastic segments carry {100 * self.plastic:.2g} % of the "
                               "torque")
         if (math.isfinite(self.root_safety) and math.isfinite(self.s_min)
@@ -317,7 +320,8 @@ def _inside(bad: CoastCheck, ok: CoastCheck) -> tuple[float, float]:
 def _within(c: CoastCheck) -> list[str]:
     """The checked criteria of a check that holds, in numbers."""
     out = [f"flank peak pressure {c.pressure:.0f} MPa within {c.limit:.0f} MPa",
-           "no plastic segment"]
+           "no plastic segment" if c.plastic == 0.0 else
+           f"plastic share {100 * c.plastic:.2g} % within {100 * c.plastic_limit:g} %"]
     if math.isfinite(c.root_safety) and math.isfinite(c.s_min):
         out.append(f"S_F,FE {c.root_safety:.2f} ({c.member}) >= S_Fmin {c.s_min:g}")
     return out
