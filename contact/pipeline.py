@@ -42,6 +42,7 @@ from geometry.pair.assembly import Misalignment
 
 __all__ = [
     "MISALIGNMENT_ATTRS",
+    "flank_torques",
     "misalignment_attrs",
     "operating_conditions",
     "resolve_deviations",
@@ -265,6 +266,49 @@ def _warn_switches(**given) -> None:
 
 
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
+def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ...], str]:
+    """The pinion torques [N·m] an analysis of ``flank`` runs at by default, and why.
+
+    The case's ``[operating]`` torques (``Case.operating.torque``) are the drive side's:
+    a synthesised case's are the development's light and design torque. The coast side
+    has its own design torque where the case's ``[rating]`` gives a ``coast_design_torque``
+    below its ``design_torque`` (its ISO 10300 long-life capacity, or the coast flank's
+    static, plastic or root-stress capacity at its developed bearing, which ``ltca
+    synthesize`` writes; docs/rating.md): on the coast flank a torque above it is then
+    replaced by it (repeats dropped), so that the coast flank is analysed at the same light
+    torque as the drive flank — the one its development judged — and at its own design
+    torque, never above it (issue 71: each flank checked at its own design torque).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    flank : str, optional
+        ``"drive"`` (default), ``"coast"`` or a pinion flank name (``"concave"``,
+        ``"convex"``; the coast one where it is not the case's drive flank).
+
+    Returns
+    -------
+    torques : tuple of float — [N·m]
+    why : str
+        Empty where the torques are the case's own; else one sentence saying which were
+        limited and to what.
+    """
+    torques = tuple(float(t) for t in case.operating.torque)
+    if flank is None or flank == "drive" or flank == case.pair.drive_flank:
+        return torques, ""
+    rating = case.extra.get("rating") or {}
+    coast, design = rating.get("coast_design_torque"), rating.get("design_torque")
+    if (coast is None or design is None or not 0.0 < float(coast) < float(design)
+            or max(torques) <= float(coast)):
+        return torques, ""
+    limited = tuple(dict.fromkeys(min(t, float(coast)) for t in torques))
+    above = [f"{t:g}" for t in torques if t > float(coast)]
+    return limited, (f"the case's [operating] torque{'s' if len(above) > 1 else ''} "
+                     f"{', '.join(above)} N m limited to its [rating] coast_design_torque "
+                     f"{float(coast):g} N m (the coast side's own design torque, below the "
+                     f"design torque {float(design):g} N m)")
+
+
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
     torque=None,
@@ -292,7 +336,9 @@ def run_analysis(
         table holds the seed's Table 3.1 conditions, :data:`SEED_TABLE_3_1`).
     torque : float or sequence — [N·m], optional
         Pinion torques; default the case's ``[operating]`` torques
-        (``Case.operating.torque``; 50, 250, 500 where the table gives none).
+        (``Case.operating.torque``; 50, 250, 500 where the table gives none), on the coast
+        flank none above the coast side's design torque where the case's ``[rating]`` gives
+        a ``coast_design_torque`` below its ``design_torque`` (:func:`flank_torques`).
     misalignment : geometry.pair.assembly.Misalignment, optional
         Default: the case's own (its ``[operating]`` ΔE, ΔP, ΔG, ΔΣ; ``Case.misalignment``).
     flank : str, optional
@@ -436,7 +482,7 @@ def run_analysis(
                           efficiency=False if operating is False else None)
     if fe_options is None:
         fe_options = chain.fe_options
-    torques = c.operating.torque if torque is None else torque
+    torques = flank_torques(c, flank)[0] if torque is None else torque
     opts = options or LTCAOptions()
     if chain.efficiency is None:
         operating = None

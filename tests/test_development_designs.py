@@ -6,11 +6,13 @@ docs/synthesis.md with every synthesis default) go through ``ltca synthesize`` (
 the development bearing on, contact.optimize.development) and ``ltca run`` (root stress
 and the ISO 10300 rating on, the defaults): rc 0, a verdict that is not FAIL, root stress
 of both members at every torque, the rating present, and the developed case records what
-its development achieved. The coast flank, developed at the same torques where it misses
+its development achieved. The coast flank, developed at its own torques where it misses
 a target as synthesised, is run too (``ltca run CASE --flank coast``, root stress and
 rating on): a verdict that is not FAIL. The coast side is rated for long life up to the
-case's ``[rating] coast_design_torque`` (its own ISO 10300 capacity, which the synthesis
-writes where it is below the design torque) and at a finite life above it: at the drive
+case's ``[rating] coast_design_torque`` (its own ISO 10300 capacity, or lower its flank's
+capacity at its developed bearing, which the synthesis writes where it is below the design
+torque; ``ltca run --flank coast`` analyses no torque above it) and at a finite life above
+it: at the drive
 side's capacity the coast side's S_H and S_F of Method B1 — read from the basic data,
 not from the flank's prescriptions — fall below their minima on some designs (measured:
 passenger-car hypoid S_H 0.99, truck hypoid S_H 1.00 and gear S_F 1.18 against 1 and

@@ -214,26 +214,28 @@ def test_the_headline_states_each_missed_target_in_numbers():
         in head
 
 
-def test_the_coast_design_torque_is_capped_at_the_coast_flank_static_capacity():
-    """Coast flank peak 3000 MPa at 300 N·m, static strength 2400 MPa: its static capacity
-    is T (0.99 p_lim / p)³ = 149.0 N·m (rounded down to 0.1 N·m), the torque at which a
-    Hertzian point contact (p ∝ T^(1/3), an independent statement of the same law) peaks at
-    0.99 × 2400 MPa; written as [rating] coast_design_torque where it is below the one the
-    case has (here the design torque 300 N·m), with the reason; a coast flank within the
-    strength leaves the case as it is."""
+def test_the_coast_design_torque_is_written_with_its_reason_where_below():
+    """A coast capacity of 149.0 N·m below the design torque 300 N·m (no ISO coast design
+    torque in the case) is written as [rating] coast_design_torque with the development's
+    reason in the rating's source; the case is left as it is where the capacity is not
+    set (NaN) or not below the coast side's torque already written."""
     import dataclasses
     import math as m
     from types import MappingProxyType
 
-    r = _result(3000.0)
-    cap = r.coast_static_capacity
-    assert cap == pytest.approx(149.0, abs=0.05)
-    assert 3000.0 * (cap / 300.0) ** (1.0 / 3.0) == pytest.approx(0.99 * 2400.0, rel=1e-3)
+    r = dataclasses.replace(_result(3000.0), coast_capacity=149.0,
+                            coast_capacity_text="the coast flank's capacity (reason)",
+                            coast_torques=(22.35, 149.0))
     extra = dict(r.case.extra) | {"rating": {"design_torque": 300.0}}
     case = dataclasses.replace(r.case, extra=MappingProxyType(extra))
     out, value = r.with_coast_capacity(case)
-    assert value == cap and out.extra["rating"]["coast_design_torque"] == cap
-    assert "static capacity" in out.extra["rating"]["source"]
+    assert value == 149.0 and out.extra["rating"]["coast_design_torque"] == 149.0
+    assert "the coast flank's capacity (reason)" in out.extra["rating"]["source"]
+    assert r.coast_design_torques == (22.35, 149.0)
+    assert "at its design torque 149 N m" in r.headline()
+    lower = dataclasses.replace(case, extra=MappingProxyType(
+        dict(case.extra) | {"rating": {"design_torque": 300.0, "coast_design_torque": 120.0}}))
+    assert lower is r.with_coast_capacity(lower)[0]
     ok = _result(2000.0)
     assert m.isnan(ok.coast_static_capacity)
     same, value = ok.with_coast_capacity(case)

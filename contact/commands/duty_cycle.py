@@ -38,7 +38,8 @@ def register(sub) -> None:
         "streams to OUTPUT.parts and resumes). Damage by Miner's rule on the ISO 6336-2/-3 "
         "S-N curves of the members' material, one load cycle per tooth mesh. Without "
         "--duty the case's [duty_cycle] table is used, and for a case without one the "
-        "bundled ILLUSTRATIVE axle spectrum (7 bins, 10-100 % of the case's top torque).",
+        "bundled ILLUSTRATIVE axle spectrum (7 bins, 10-100 % of the case's top torque; "
+        "on the coast flank no more than its coast design torque, as ltca run).",
     )
     case_argument(p, what="analyse")
     p.add_argument("--duty", default=None, metavar="FILE",
@@ -133,8 +134,11 @@ def run(args: argparse.Namespace) -> int:
         duty = read_duty_cycle(args.duty)
     elif "duty_cycle" in case.extra:
         duty = read_duty_cycle(case)
-    else:
-        duty = example_duty_cycle(max_torque=max(case.operating.torque or (500.0,)))
+    else:  # to the flank's own top torque (the coast side's design torque: flank_torques)
+        from contact.pipeline import flank_torques
+
+        duty = example_duty_cycle(max_torque=max(flank_torques(case, args.flank)[0]
+                                                 or (500.0,)))
     # what will run, before it starts (issue 56): the bins' torques, speeds and hours
     from contact.commands.run import print_wrapped
 

@@ -185,7 +185,11 @@ def run_optimize(args: argparse.Namespace) -> int:
     case, basic = _start(args.case)
     table = dict(basic.optimize) if basic is not None else _table(case)
     # torques: the option, else the [optimize] table's, else the case's [operating] ones
-    torque = args.torque or (None if "torque" in table else tuple(case.operating.torque))
+    # (on the coast flank none above its coast design torque, as ltca run: flank_torques)
+    from contact.pipeline import flank_torques
+
+    torque = args.torque or (None if "torque" in table
+                             else flank_torques(case, args.flank)[0])
     override: dict = {"torque": torque, "max_edge_share": args.max_edge_share,
                       "max_flank_pressure": args.max_flank_pressure,
                       "lte_peak_to_peak_range": args.lte_pp_range, "flank": args.flank}

@@ -269,6 +269,12 @@ def run(args: argparse.Namespace) -> int:
         f"solver {lt.attrs['solver']}"
         + (f"; tooth compliance {opts.compliance}" if opts.compliance != "shell" else "")
     )
+    if args.torque is None:  # the coast side at its own design torque (flank_torques)
+        from contact.pipeline import flank_torques
+
+        why = flank_torques(case, args.flank)[1]
+        if why:
+            print(f"coast flank: {why}; --torque gives others")
     rows = []
     for i, T in enumerate(lt["torque"].values):
         h = lt["lte_harmonics"].values[i]

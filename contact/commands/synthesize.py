@@ -146,12 +146,10 @@ def run_synthesize(args: argparse.Namespace) -> int:
     case, coast_torque = with_coast_design_torque(case)
     coast_why = ("the ISO 10300 capacity of the coast side (above it the coast side is rated "
                  "at a finite life)")
-    if development is not None:  # no higher than the coast flank's static capacity
-        case, coast_static = development.with_coast_capacity(case)
-        if math.isfinite(coast_static):
-            coast_torque, coast_why = coast_static, (
-                "the coast flank's static capacity of its developed bearing (its flank "
-                "peak pressure at the design torque is above the static strength)")
+    if development is not None:  # no higher than what the coast flank's bearing carries
+        case, coast_capacity = development.with_coast_capacity(case)
+        if math.isfinite(coast_capacity):
+            coast_torque, coast_why = coast_capacity, development.coast_capacity_text
     text = _HEADER.format(basic=shown) + case.to_toml()
     # the written text must load back to the same case
     case_from_dict(tomllib.loads(text))

@@ -90,6 +90,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from contact.ltca import LTCAOptions
+from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
 from contact.optimize.development_result import (
     COAST_STATUS,
     STATIC_MARGIN,
@@ -541,17 +542,36 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target
     c_coast = time.process_time()
-    coast = _coast_development(developed, best, targets, setup, teeth, memo, say, make)
+    # at the coast side's own design torque: the smaller of the design torque and the
+    # coast side's ISO 10300 capacity (or the basic file's coast_design_torque)
+    coast_iso = _coast_rated_torque(best.case if best.case is not None else None, basic,
+                                    setup["torques"][1])
+    # (the light torque the drive's: `ltca run --flank coast` keeps it, flank_torques)
+    coast_setup = dict(setup, torques=[setup["torques"][0],
+                                       min(setup["torques"][1], coast_iso)])
+    coast = _coast_development(developed, best, targets, coast_setup, teeth, memo, say,
+                               make)
     coast_seconds = time.process_time() - c_coast
     developed = coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
     root_safety, root_text = math.nan, ""
-    if (root_stress and basic.options.design_torque is None
-            and basic.rating.get("design_torque") is None):
+    given = (basic.options.design_torque is not None
+             or basic.rating.get("design_torque") is not None)
+    if root_stress and not given:
         # the FE root stress of the written case at the design torque (ltca run's FE
         # model, cached: ltca run reads it), the torque lowered to its capacity if below
-        best, coast, root_safety, root_text = _root_capacity(case, best, coast, targets,
-                                                             setup, say)
+        best, root_safety, root_text = _root_capacity(case, best, targets, setup, say)
+    # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
+    # the coast design torque lowered to what its developed bearing carries (flank static
+    # strength, no plastic segment, root stress) where that is less
+    c_cap = time.process_time()
+    coast_cap = None
+    if coast.best is not None:
+        start = min(setup["torques"][1], _coast_rated_torque(case, basic, setup["torques"][1]))
+        given_coast = basic.rating.get("coast_design_torque") is not None
+        coast, coast_cap = _coast_capacity(case, basic, coast, targets, setup, start,
+                                           root_stress, not (given or given_coast), say)
+    coast_seconds += time.process_time() - c_cap
     tolerance = {}
     for lab, mis in _excursions(targets):
         try:
@@ -573,43 +593,152 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                setup["lowered"], coast.best, tuple(coast.evaluations),
                                coast.status, coast.before, coast_seconds,
                                setup.get("pressure_limit", math.inf), root_safety,
-                               root_text)
+                               root_text, coast.torques,
+                               coast_cap.torque if coast_cap is not None and coast_cap.lowered
+                               else math.nan,
+                               coast_cap.reason if coast_cap is not None else "")
     say(result.headline())
     return result
 
 
-def _root_capacity(case: Case, best: DevelopmentEvaluation, coast: _CoastOutcome,
-                   targets: DevelopmentTargets, setup: dict[str, Any],
-                   say: Callable[[str], None]
-                   ) -> tuple[DevelopmentEvaluation, _CoastOutcome, float, str]:
+def _root_capacity(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                   setup: dict[str, Any], say: Callable[[str], None]
+                   ) -> tuple[DevelopmentEvaluation, float, str]:
     """The written case's FE root stress at the design torque
     (:func:`contact.optimize.development_root.root_capacity`); where that lowered the
     design torque, the drive flank's metrics are those of its analysis at the new torques
-    and the coast flank is analysed again there at :data:`CHECK_LTCA` (the coast flank's
-    root stress is not checked: its check is contact-only). Returns the drive and coast
-    outcome, S_F,FE at the design torque and the reason the torque was lowered (empty
-    where not)."""
+    (the coast flank is analysed at its own torques afterwards, :func:`_coast_capacity`).
+    Returns the drive design, S_F,FE at the design torque and the reason the torque was
+    lowered (empty where not)."""
     from contact.optimize.development_root import root_capacity
 
     tree, safety, text = root_capacity(case, setup, targets.light_load, say)
     if tree is None:
-        return best, coast, safety, text
+        return best, safety, text
     ms, grid = _metrics(tree, case), (*_grid(tree), static_strength(tree))
     full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
                              pressure_limit=grid[4])
     best = dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
                                met=full[2], full=full)
-    if coast.best is not None:
+    return best, safety, text
+
+
+def _coast_rated_torque(case: Case | None, basic: BasicDesign, design: float) -> float:
+    """The torque [N·m] the coast side is rated for at long life: the basic file's
+    ``[rating] coast_design_torque``, else the coast side's ISO 10300 capacity where it is
+    below ``design`` (:func:`contact.load_capacity.iso10300.capacity.
+    with_coast_design_torque`), else ``design``."""
+    from contact.load_capacity.iso10300.capacity import (
+        with_coast_design_torque,
+        with_design_torque,
+    )
+
+    given = basic.rating.get("coast_design_torque")
+    if given is not None:
+        return float(given)
+    if case is None:
+        return design
+    try:
+        value = with_coast_design_torque(with_design_torque(case, design)[0])[1]
+    except Exception as exc:  # reported, never fatal: the design torque rates both sides
+        log.info("coast side's ISO capacity not computed: %s", exc)
+        return design
+    return float(value) if math.isfinite(value) and value < design else design
+
+
+def _as_run(case: Case, basic: BasicDesign, setup: dict[str, Any], coast: float) -> Case:
+    """``case`` as ``ltca synthesize`` writes it for the torques in ``setup``: its
+    ``[operating]`` torques the light and the design torque (to 0.1 N·m, rounded down,
+    :meth:`DevelopmentResult.recorded`) where the basic file gives none, ``[rating]
+    design_torque`` the design torque and ``coast_design_torque`` ``coast`` where it is
+    below it — the case whose ``ltca run --flank coast`` runs at
+    :func:`contact.pipeline.flank_torques`."""
+    import json
+    from types import MappingProxyType
+
+    design = float(setup["torques"][1])
+    rating = dict(case.extra.get("rating") or {}) | {"design_torque": design}
+    rating.pop("coast_design_torque", None)
+    if coast < design:
+        rating["coast_design_torque"] = float(coast)
+    more: dict[str, Any] = {}
+    if "torque" not in basic.operating:
+        more["operating"] = dataclasses.replace(
+            case.operating, torque=tuple(math.floor(10.0 * float(t)) / 10.0
+                                         for t in setup["torques"]))
+    extra = json.loads(json.dumps({**case.extra, "rating": rating}))
+    return dataclasses.replace(case, extra=MappingProxyType(extra), **more)
+
+
+def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: float,
+                 root_stress: bool, plastic_limit: float = 0.0) -> CoastCheck:
+    """The coast flank of the written ``case`` analysed as ``ltca run --flank coast``
+    analyses it with the coast design torque ``torque`` (:func:`_as_run`,
+    :func:`contact.pipeline.flank_torques`; :data:`CHECK_LTCA`, the FE root stress where
+    ``root_stress`` and the ISO 10300 rating of the coast side); ``plastic_limit``: the
+    plastic share allowed [1] (the development's ``max_plastic_share``)."""
+    from contact.chain import AnalysisChain
+    from contact.optimize.development_root import root_safety
+    from contact.pipeline import flank_torques, run_analysis
+
+    c = _as_run(case, basic, setup, torque)
+    torques = list(flank_torques(c, "coast")[0])
+    steps = AnalysisChain.contact_only()
+    if root_stress:
+        steps = steps.with_root_stress().with_efficiency().with_load_capacity()
+    tree = run_analysis(c, torques, flank="coast", options=CHECK_LTCA, deviations=False,
+                        steps=steps)
+    ms = _metrics(tree, c)
+    lt = tree["/ltca"]
+    k = int(np.argmax(lt["torque"].values))
+    safety, s_min, member = np.full(len(torques), np.nan), math.nan, ""
+    if root_stress:
         try:
-            mc, gc = _analyse(case, setup["torques"], options=CHECK_LTCA, flank="coast")
-            fc = development_score(mc, targets, gc[:4], centre_v=setup["centre_v"],
-                                   pressure_limit=gc[4])
-            coast = coast._replace(best=dataclasses.replace(
-                coast.best, metrics=mc, objective=fc[0], shortfalls=fc[1], met=fc[2],
-                full=fc))
-        except Exception as exc:  # reported, never fatal: its metrics stay the higher torque's
-            log.info("development coast check at the root-stress torque failed: %s", exc)
-    return best, coast, safety, text
+            safety, s_min, member = root_safety(tree)
+        except LookupError as exc:  # the verdict says it; the contact criteria stand
+            log.info("development coast root stress not checked: %s", exc)
+    grid = (*_grid(tree), static_strength(tree))
+    return CoastCheck(float(torques[k]), float(ms["pressure_max_flank"][k]),
+                      float(grid[4]), float(np.max(ms["plastic_share"])),
+                      float(safety[k]), float(s_min), member,
+                      float(safety[1 - k]) if len(torques) == 2 else math.nan,
+                      float(torques[1 - k]) if len(torques) == 2 else math.nan,
+                      (ms, grid, tuple(float(t) for t in torques)), plastic_limit)
+
+
+def _coast_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
+                    targets: DevelopmentTargets, setup: dict[str, Any], start: float,
+                    root_stress: bool, lower: bool, say: Callable[[str], None]
+                    ) -> tuple[_CoastOutcome, CoastCapacity | None]:
+    """The written case's coast flank at its own design torque ``start`` (the smaller of
+    the design torque and the coast side's rated torque), as ``ltca run --flank coast``
+    analyses it (:func:`_coast_check`), and — where ``lower`` (no design torque given in
+    the basic file) — the coast design torque lowered to what the developed bearing
+    carries (:func:`contact.optimize.development_coast.coast_capacity`: flank peak within
+    the static strength, no plastic segment, S_F,FE >= S_Fmin). The coast outcome's
+    metrics and torques become those of the last check at the torque kept."""
+    def analyse(torque: float) -> CoastCheck:
+        return _coast_check(case, basic, setup, torque, root_stress,
+                            targets.max_plastic_share)
+
+    try:
+        if lower:
+            cap = coast_capacity(analyse, start, say)
+            check = cap.final
+        else:
+            cap, check = None, analyse(start)
+    except Exception as exc:  # reported, never fatal: the coast search's metrics stay
+        log.info("development coast capacity not checked: %s", exc)
+        say(f"development: coast flank not checked at its design torque ({exc})")
+        return coast, None
+    if check is None or check.result is None:
+        return coast, cap
+    mc, gc, torques = check.result
+    fc = development_score(mc, targets, gc[:4], centre_v=setup["centre_v"],
+                           pressure_limit=gc[4])
+    best = dataclasses.replace(coast.best, metrics=mc, objective=fc[0], shortfalls=fc[1],
+                               met=fc[2], full=fc)
+    return coast._replace(best=best, torques=torques), cap
 
 
 def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],
@@ -808,13 +937,15 @@ class _CoastOutcome(NamedTuple):
     """What :func:`_coast_development` did: the basic design with the chosen coast
     prescriptions, the chosen coast design (None where its analysis failed), the designs
     of its search, its status (:data:`COAST_STATUS`) and the coast flank's metrics as
-    synthesised where the search ran (else None)."""
+    synthesised where the search ran (else None), and the (light, design) torques [N·m]
+    of its metrics (its own design torque: :func:`_coast_capacity`)."""
 
     basic: BasicDesign
     best: DevelopmentEvaluation | None
     evaluations: list[DevelopmentEvaluation]
     status: str
     before: dict[str, np.ndarray] | None
+    torques: tuple[float, ...] = ()
 
 
 
@@ -840,6 +971,7 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     side = "convex" if developed.options.drive_flank == "concave" else "concave"
     start = flank_option_values(developed.options.flank(side))
     drive_key = _bearing_key(drive.values)
+    torques = tuple(setup["torques"])  # the coast side's own light and design torque
     c0 = time.process_time()
     try:  # the flank as synthesised (its pinion tooth is the drive bearing's: the same)
         case0 = drive.case if drive.checked else synthesize(developed, memo=memo)[0]
@@ -851,7 +983,7 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         log.info("development coast check failed: %s", exc)
         say(f"development: coast flank {side}: not checked (its analysis failed: "
             f"{type(exc).__name__})")
-        return _CoastOutcome(developed, None, [], "not checked", None)
+        return _CoastOutcome(developed, None, [], "not checked", None, torques)
     synthesised = DevelopmentEvaluation(-1, {k: start[k] for k in targets.variables}, m0,
                                         full[0], full[1], full[2], "",
                                         time.process_time() - c0, case0, full, checked=True,
@@ -861,13 +993,14 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
             f"{metrics_text(m0)}; ")
     if full[2]:
         say(head + "every target met: not developed")
-        return _CoastOutcome(developed, synthesised, [], "met", None)
+        return _CoastOutcome(developed, synthesised, [], "met", None, torques)
     n_max = targets.coast_max_evaluations
     if n_max == 0:
         say(head + f"misses {', '.join(missed)}; coast development off "
             "(coast_max_evaluations = 0)")
-        return _CoastOutcome(developed, synthesised, [], "off", None)
-    say(head + f"misses {', '.join(missed)}; developing it at the same torques: varying "
+        return _CoastOutcome(developed, synthesised, [], "off", None, torques)
+    say(head + f"misses {', '.join(missed)}; developing it at {torques[0]:.4g}/"
+        f"{torques[1]:.4g} N m (light/design) on the same targets: varying "
         f"{', '.join(targets.variables)} (at most {n_max} designs, coarse LTCA)")
     evals: list[DevelopmentEvaluation] = []
     prefix = (*drive_key, "coast")
@@ -891,8 +1024,8 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     if chosen is synthesised:
         say(f"development: coast flank {side}: no design of its search did better than "
             "as synthesised; kept")
-        return _CoastOutcome(developed, synthesised, evals, "not improved", m0)
-    return _CoastOutcome(basic_of(chosen.values), chosen, evals, "developed", m0)
+        return _CoastOutcome(developed, synthesised, evals, "not improved", m0, torques)
+    return _CoastOutcome(basic_of(chosen.values), chosen, evals, "developed", m0, torques)
 
 
 

@@ -141,6 +141,18 @@ class DevelopmentResult:
         NaN where not computed (a design torque given, no rating, the FE model failed).
     root_text : str
         Why the design torque was lowered to the root-stress capacity (empty where not).
+    coast_torques : tuple of float — [N·m]
+        The (light, design) torque of :attr:`coast`: the coast side's own design torque
+        (the smaller of the design torque and the coast side's rated one, lowered to
+        :attr:`coast_capacity` where that is set); empty where not known (then
+        :attr:`torque`).
+    coast_capacity : float — [N·m]
+        The coast flank's capacity at its developed bearing where it is below the coast
+        side's rated torque (:func:`contact.optimize.development_coast.coast_capacity`:
+        flank peak within the static strength, no plastic segment, S_F,FE >= S_Fmin, each
+        step analysed as ``ltca run --flank coast``); NaN where nothing was lowered.
+    coast_capacity_text : str
+        Why, in numbers (empty where not lowered).
     """
 
     basic: BasicDesign
@@ -165,6 +177,9 @@ class DevelopmentResult:
     pressure_limit: float = math.inf
     root_safety: float = math.nan
     root_text: str = ""
+    coast_torques: tuple[float, ...] = ()
+    coast_capacity: float = math.nan
+    coast_capacity_text: str = ""
 
     @property
     def tolerant(self) -> bool:
@@ -242,41 +257,35 @@ class DevelopmentResult:
 
     @property
     def coast_static_capacity(self) -> float:
-        """The coast flank's static flank capacity [N·m] where its flank peak pressure at
-        the design torque exceeds the limit (:attr:`pressure_limit`), else NaN:
-        T (0.99 p_lim / p_max)³, rounded down to 0.1 N·m — Hertz's p ∝ F^(1/3) of a point
-        contact, conservative where the pattern grows under load (p grows more slowly),
-        as the drive flank's first step (:func:`_static_capacity`)."""
-        if not self.coast or not math.isfinite(self.pressure_limit):
-            return math.nan
-        p = float(self.coast["pressure_max_flank"][1])
-        if not (math.isfinite(p) and p > self.pressure_limit):
-            return math.nan
-        t = self.torque[1] * (STATIC_MARGIN * self.pressure_limit / p) ** 3
-        return math.floor(10.0 * t) / 10.0
+        """The coast flank's capacity [N·m] at its developed bearing where it is below the
+        coast side's rated torque, else NaN (:attr:`coast_capacity`: each step analysed at
+        ``ltca run --flank coast``'s sampling, not extrapolated)."""
+        return self.coast_capacity
+
+    @property
+    def coast_design_torques(self) -> tuple[float, float]:
+        """The coast flank's (light, design) torque [N·m] of :attr:`coast`."""
+        t = self.coast_torques or self.torque
+        return float(min(t)), float(max(t))
 
     def with_coast_capacity(self, case: Case) -> tuple[Case, float]:
         """``case`` with ``[rating] coast_design_torque`` lowered to
-        :attr:`coast_static_capacity` where that is below the coast side's design torque
-        (its ``coast_design_torque``, else the design torque), with a sentence in the
-        rating's ``source``; the torque written (NaN where unchanged). Each flank's design
-        torque is then no higher than its own static flank capacity at its developed
-        bearing."""
+        :attr:`coast_capacity` where that is below the coast side's design torque (its
+        ``coast_design_torque``, else the design torque), with :attr:`coast_capacity_text`
+        in the rating's ``source``; the torque written (NaN where unchanged). Each flank's
+        design torque is then no higher than what its own developed bearing carries."""
         import json
         from types import MappingProxyType
 
-        cap = self.coast_static_capacity
+        cap = self.coast_capacity
         rating = dict(case.extra.get("rating") or {})
         now = rating.get("coast_design_torque", rating.get("design_torque"))
         if not math.isfinite(cap) or now is None or cap >= float(now):
             return case, math.nan
-        p = float(self.coast["pressure_max_flank"][1])
         rating["coast_design_torque"] = cap
         rating["source"] = (str(rating.get("source", "")).rstrip()
-                            + f" coast_design_torque {cap:g} N m: the coast flank's static "
-                            f"capacity of its developed bearing (contact.optimize.development:"
-                            f" flank peak pressure {p:.0f} MPa at {self.torque[1]:g} N m "
-                            f"above the static strength {self.pressure_limit:.0f} MPa).")
+                            + f" coast_design_torque {cap:g} N m: "
+                            f"{self.coast_capacity_text} (contact.optimize.development).")
         extra = json.loads(json.dumps({**case.extra, "rating": rating}))
         return dataclasses.replace(case, extra=MappingProxyType(extra)), cap
 
@@ -299,8 +308,10 @@ class DevelopmentResult:
                  else math.nan)
         lim = (f" (limit {self.pressure_limit:.0f} MPa)"
                if math.isfinite(self.pressure_limit) else "")
+        tc = self.coast_design_torques[1]
+        at = "" if tc == self.torque[1] else f" at its design torque {tc:.4g} N m"
         return (f"flank peak pressure at {self.torque[1]:.4g} N m drive {drive:.0f} MPa, "
-                f"coast {coast:.0f} MPa{lim}")
+                f"coast {coast:.0f} MPa{at}{lim}")
 
     def recorded(self, case: Case) -> Case:
         """``case`` (the developed case, maybe with its rating's design torque set) with
@@ -343,7 +354,10 @@ class DevelopmentResult:
                     f"{100 * c['plastic_share'][1]:.1f} %, flank peak pressure "
                     f"{c['pressure_max_flank'][0]:.0f}/{c['pressure_max_flank'][1]:.0f} MPa, "
                     f"LTE p-p {c['lte_peak_to_peak'][0]:.1f}/{c['lte_peak_to_peak'][1]:.1f} "
-                    "urad (light/design)")
+                    f"urad at {self.coast_design_torques[0]:.4g}/"
+                    f"{self.coast_design_torques[1]:.4g} N m (light/design)")
+        if self.coast_capacity_text:
+            achieved += f"; coast design torque {self.coast_capacity_text}"
         b = self.coast_best
         met = "" if b is None or b.full is None else f"; {_met_text(b.full)}"
         if self.coast_status == "developed":
@@ -354,8 +368,8 @@ class DevelopmentResult:
                    f"{before['lte_peak_to_peak'][0]:.1f}/"
                    f"{before['lte_peak_to_peak'][1]:.1f} urad")
             n = len(self.coast_evaluations)
-            return (f"Coast flank (developed, {n} design{'s' if n != 1 else ''} at the "
-                    f"same torques and targets, the chosen one checked at the default "
+            return (f"Coast flank (developed, {n} design{'s' if n != 1 else ''} at its "
+                    f"own torques on the same targets, the chosen one checked at the default "
                     f"sampling): {_values_text(b.values)}{was}. Achieved: {achieved}{met}. ")
         why = COAST_STATUS.get(self.coast_status, "not developed")
         if self.coast_status == "not improved":
@@ -363,6 +377,11 @@ class DevelopmentResult:
         return f"Coast flank ({why}): {achieved}{met}. "
 
     def _coast_headline(self) -> str:
+        low = (f", coast design torque {self.coast_capacity:.4g} N m (its capacity)"
+               if math.isfinite(self.coast_capacity) else "")
+        return self._coast_state() + low
+
+    def _coast_state(self) -> str:
         b = self.coast_best
         if self.coast_status == "developed":
             return (f"coast flank developed ({len(self.coast_evaluations)} designs): plastic "
@@ -388,7 +407,7 @@ class DevelopmentResult:
                     "prescriptions and what the LTCA gave at [light, design] torque "
                     + ("(the final check at ltca run's default sampling)" if b.checked
                        else "(the coarse LTCA of the search)")
-                    + "; coast: the coast flank at the same torques and targets (its "
+                    + "; coast: the coast flank at its own torques on the same targets (its "
                     "development, the prescriptions written, achieved at the default "
                     "sampling); coast_achieved: the same metrics as achieved",
             "torque_Nm": [float(x) for x in self.torque],
@@ -410,7 +429,10 @@ class DevelopmentResult:
         out: dict[str, Any] = {
             "development": COAST_STATUS.get(self.coast_status, "not developed"),
             "evaluations": len(self.coast_evaluations),
-            "cpu_seconds": round(self.coast_seconds, 1)}
+            "cpu_seconds": round(self.coast_seconds, 1),
+            "torque_Nm": list(self.coast_design_torques)}
+        if self.coast_capacity_text:
+            out["design_torque_source"] = self.coast_capacity_text
         if c is not None:
             out["prescriptions"] = {k: float(v) for k, v in c.values.items()}
             if c.full is not None:
