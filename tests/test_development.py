@@ -668,7 +668,8 @@ def test_the_second_bearing_is_relieved_only_where_the_first_misses_the_lte(
     targets = DevelopmentTargets()
     relief = list(dev.RELIEF_NAMES)
     bearings = [_fake_design(i, {"path_angle": p, "ellipse_length": e, "tip_relief": 15.0,
-                                 "root_relief": 15.0, "relief_start": 0.5}, lte_short,
+                                 "root_relief": 15.0, "relief_start": 0.5,
+                                 "tip_relief_start": 0.85}, lte_short,
                              stage="bearing")
                 for i, (p, e) in enumerate([(-45, 0.4), (-58.8, 0.4), (-45, 0.55),
                                             (-58.8, 0.55), (-65.6, 0.625), (-79.4, 0.475)])]
@@ -706,3 +707,75 @@ def test_the_relieved_bearings_are_distinct_and_best_first():
     c = _fake_design(3, {"path_angle": -50.0, "ellipse_length": 0.4, "tip_relief": 15.0}, 1.0)
     assert [e.index for e in _relief_bearings([a, a2, b, c], 2)] == [2, 1]
     assert [e.index for e in _relief_bearings([a, a2, b, c], 3)] == [2, 1, 3]
+
+
+@pytest.mark.parametrize("lte_at, expected", [
+    ({45.0: 1.5, 25.0: 0.8, 10.0: 0.3}, [25.0, 10.0]),  # LTE still missed at 25: to 10
+    ({45.0: 1.5, 25.0: 0.0, 10.0: 0.0}, [25.0]),        # met at 25: stops there
+    ({45.0: 1.5, 25.0: 2.0, 10.0: 0.0}, [25.0]),        # worse at 25: not lowered further
+    ({45.0: 0.0}, []),                                  # LTE met: no TE design
+])
+def test_the_te_stage_lowers_the_te_level_while_the_lte_is_missed(lte_at, expected):
+    """The TE stage (issue 71): from the best design, te_level lowered by 20 µrad, then to
+    its lower bound (10 µrad), each only while the LTE target is missed and the last step
+    scored better; the other inputs kept. Stand-in designs whose LTE shortfall is a
+    function of te_level: the test is the stage's decisions, counted by hand."""
+    from contact.optimize import development as dev
+
+    targets = DevelopmentTargets()
+    assert targets.variables["te_level"] == (10.0, 45.0)
+    base = {"path_angle": -60.0, "ellipse_length": 0.6, "tip_relief": 15.0}
+    evals = [_fake_design(0, base, lte_at[45.0])]
+    asked = []
+
+    def evaluate(values, stage, make, budget, key):
+        assert stage == "te" and {k: values[k] for k in base} == base
+        asked.append(values["te_level"])
+        e = _fake_design(len(evals), values, lte_at[values["te_level"]])
+        evals.append(e)
+        return e
+
+    dev._te_stage(evaluate, evals, targets, lambda v: v, lambda b: b,
+                  {"te_level": 45.0}, targets.max_evaluations)
+    assert asked == expected
+
+
+def test_a_high_pattern_is_lowered_by_the_root_relief_first():
+    """The height stage's first design (issue 71): a light-load pattern above its target
+    gets the root relief's corner at the lower bound of relief_start and at least
+    ROOT_HEIGHT_RELIEF of root relief, the other inputs kept; it is kept where its centre
+    v is nearer the target. A pattern at its height gets no such design."""
+    from contact.optimize import development as dev
+
+    targets = DevelopmentTargets(pattern_centre_v=0.55)
+    values = {"path_angle": -60.0, "root_relief": 15.0, "relief_start": 0.5,
+              "tip_relief": 15.0}
+
+    def design(index, v, centre_v):
+        e = _fake_design(index, v, 0.0)
+        return dataclasses.replace(e, metrics={"pattern_centre_v": np.array([centre_v,
+                                                                             centre_v])})
+
+    asked = []
+
+    def evaluate_to(centre_v):
+        def evaluate(v, stage, make, budget, key):
+            asked.append(dict(v))
+            return design(1, v, centre_v)
+        evaluate.setup = {"centre_v": 0.55}
+        return evaluate
+
+    high = design(0, values, 0.68)
+    got = dev._root_relief_height(evaluate_to(0.60), high, targets, 36, lambda v: v,
+                                  lambda b: b)
+    assert asked[-1] == values | {"relief_start": 0.2, "root_relief": dev.ROOT_HEIGHT_RELIEF}
+    assert got.metrics["pattern_centre_v"][0] == 0.60
+    # farther from the target than before: the design as it was
+    assert dev._root_relief_height(evaluate_to(0.90), high, targets, 36, lambda v: v,
+                                   lambda b: b) is high
+    # at its height: nothing analysed
+    n = len(asked)
+    assert dev._root_relief_height(evaluate_to(0.60), design(0, values, 0.56), targets, 36,
+                                   lambda v: v, lambda b: b).metrics[
+        "pattern_centre_v"][0] == 0.56
+    assert len(asked) == n

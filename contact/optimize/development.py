@@ -104,6 +104,8 @@ from contact.optimize.development_targets import (
     METRIC_NAMES,
     RELIEF_NAMES,
     STAGE_TERMS,
+    TE_NAME,
+    TIP_RELIEF_START,
     VARIABLES,
     DevelopmentTargets,
     development_score,
@@ -123,7 +125,8 @@ from geometry.synthesis.basic_design import (
 
 __all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNING_STEP",
            "FAILED", "HEIGHT_DESIGNS", "HEIGHT_NAME", "HEIGHT_SLOPE", "METRIC_NAMES",
-           "RELIEF_NAMES", "STAGE_TERMS", "VARIABLES", "VERIFIED_DESIGNS",
+           "RELIEF_NAMES", "STAGE_TERMS", "TE_DESIGNS", "TE_NAME", "TIP_RELIEF_START",
+           "VARIABLES", "VERIFIED_DESIGNS",
            "DevelopmentEvaluation", "DevelopmentResult", "DevelopmentTargets", "KeptTeeth",
            "design_torque_of", "develop", "development_score", "footprint_centre",
            "lte_spread", "static_strength", "targets_from_table", "working_depth_centre"]
@@ -507,7 +510,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     targets = targets or targets_from_table(basic.development)
     say = progress or (lambda line: None)
     flank = basic.options.drive_flank
-    start = flank_option_values(basic.options.flank(flank))
+    start = _flank_start(basic.options.flank(flank), targets)
     evals: list[DevelopmentEvaluation] = []
     setup: dict[str, Any] = {}
     # kept across designs: steps 3-6 of each pinion flank's synthesis (the coast flank is
@@ -576,6 +579,18 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                root_text)
     say(result.headline())
     return result
+
+
+def _flank_start(options: Any, targets: DevelopmentTargets) -> dict[str, float]:
+    """A flank's prescriptions as the start of its search [file units]: the basic file's
+    (:func:`~geometry.synthesis.basic_design.flank_option_values`), but the tip relief's
+    start at :data:`TIP_RELIEF_START` (within its bounds) where the file gives none and
+    the development varies it."""
+    start = flank_option_values(options)
+    name = "tip_relief_start"
+    if name in targets.variables and options.tip_relief_start is None:
+        start[name] = float(np.clip(TIP_RELIEF_START, *targets.variables[name]))
+    return start
 
 
 def _root_capacity(case: Case, best: DevelopmentEvaluation, coast: _CoastOutcome,
@@ -696,7 +711,7 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
     prescriptions [file units]. Returns whether any design was synthesised and
     analysed."""
     bearing = [n for n in targets.variables
-               if n not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)]
+               if n not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME, TE_NAME)]
     # the relief stage varies the profile crowning too: the height stage raises it where
     # the centred pattern reaches an end, the relief may do that work with less LTE
     relief = [n for n in targets.variables if n in (*RELIEF_NAMES, CROWNING_NAME)]
@@ -728,10 +743,55 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
     # stage 2, the relief on the blade of each of the best bearings in turn (the relief a
     # bearing needs to keep its edges elastic costs LTE, so the bearing with the least
     # objective before the relief is not always the one with the least after it)
+    te = TE_NAME in targets.variables and n_max - len(evals) > 2 * TE_DESIGNS
     if relief:
         _relief_stage(evaluate, _relief_bearings(ok, RELIEF_BEARINGS), relief, targets,
-                      evals, basic_of, make, n_max)
+                      evals, basic_of, make, n_max - (TE_DESIGNS if te else 0))
+    if te:
+        _te_stage(evaluate, evals, targets, basic_of, make, start, n_max)
     return True
+
+
+#: most designs of the TE stage (:func:`_te_stage`; each a synthesis of steps 3-6, ≈ 2 s
+#: CPU with its coarse LTCA)
+TE_DESIGNS = 2
+
+
+def _te_stage(evaluate: Callable[..., DevelopmentEvaluation],
+              evals: list[DevelopmentEvaluation], targets: DevelopmentTargets,
+              basic_of: Callable[[dict[str, float]], BasicDesign],
+              make: Callable[[BasicDesign], Case], start: Mapping[str, float],
+              n_max: int) -> None:
+    """The TE stage: where the best design of the search misses the LTE target, the
+    modified roll's TE level (:data:`TE_NAME`, the parabola the local synthesis prescribes,
+    a21 = 2 te_level/(2π/z1)²) lowered, the design's other inputs kept: first by 20 µrad
+    (within its bounds), then, where that scored better and the LTE is still missed, to
+    its lower bound; at most :data:`TE_DESIGNS` designs, each a synthesis of steps 3-6.
+
+    Why: with the tip relief short (:data:`TIP_RELIEF_START`) the transfer between tooth
+    pairs at light load runs on the unrelieved flank, where the unloaded TE is the
+    parabola's; a flatter parabola lets the light load carry more pairs (Litvin & Fuentes
+    2004 §9.4: the parabolic function absorbs the linear TE of misalignment, and its
+    level is a designer's choice). Measured in :data:`TE_NAME`'s comment
+    (:mod:`contact.optimize.development_targets`)."""
+    done = [e for e in evals if e.full is not None and e.objective < FAILED]
+    if not done:
+        return
+    best = min(done, key=lambda e: e.full[0])
+    lo, hi = targets.variables[TE_NAME]
+    level = float(best.values.get(TE_NAME, start[TE_NAME]))
+    for x in (max(lo, min(hi, level) - 20.0), lo):
+        if best.full[1]["lte"] == 0.0 or x >= float(best.values.get(TE_NAME, level)) - 1e-9:
+            return
+        values = best.values | {TE_NAME: float(x)}
+        b = basic_of(values)
+        try:
+            e = evaluate(values, "te", lambda b=b: make(b), n_max, _bearing_key(values))
+        except _Stop:
+            return
+        if e.full is None or e.full[0] >= best.full[0]:
+            return
+        best = e
 
 
 
@@ -1083,8 +1143,15 @@ def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
     profile crowning (:data:`CROWNING_NAME`) raised by :data:`CROWNING_STEP` and the
     pattern centred again, at most twice: a pattern as deep as the working depth cannot be
     centred clear of both its ends, a crowned one can (Stadtfeld 2014: pattern height by
-    the pressure angle, its depth by the profile crowning). Returns the best design (None
-    where one met every target)."""
+    the pressure angle, its depth by the profile crowning). A pattern above its target
+    is first lowered by the root relief (:func:`_root_relief_height`), the blade angle
+    then finding what is left. Returns the best design (None where one met every
+    target)."""
+    try:
+        base = _root_relief_height(evaluate, base, targets, budget, basic_of, make)
+    except _Stop:
+        if any(x.met for x in _evaluated(evaluate)):
+            return None
     e = _centre_height(evaluate, base, targets, budget, basic_of, make)
     for _ in range(2):
         if (e is None or e.full is None or CROWNING_NAME not in targets.variables
@@ -1112,6 +1179,50 @@ def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
             return e if nxt.full is None or e.full[0] <= nxt.full[0] else nxt
         e = nxt
     return e
+
+
+#: the root relief [µm] the height stage first lowers a high pattern with, from the lower
+#: bound of ``relief_start`` (:func:`_root_relief_height`)
+ROOT_HEIGHT_RELIEF = 40.0
+
+
+def _root_relief_height(evaluate: Callable[..., DevelopmentEvaluation],
+                        base: DevelopmentEvaluation, targets: DevelopmentTargets,
+                        budget: int, basic_of: Callable[[dict[str, float]], BasicDesign],
+                        make: Callable[[BasicDesign], Case]) -> DevelopmentEvaluation:
+    """A light-load pattern above its target lowered by the pinion's root relief: the
+    toprem's corner at the lower bound of ``relief_start`` and at least
+    :data:`ROOT_HEIGHT_RELIEF` of relief, which takes the gear's tip band (it meets the
+    pinion's root) out of the light-load footprint. Returns that design where its centre v
+    is nearer the target than ``base``'s, else ``base``.
+
+    Why not the blade angle alone: the blade-angle change tilts the whole profile, a
+    first-order ease-off whose component along the contact ellipse's major axis (the
+    direction of least relative curvature, 2δ/a²) walks the contact towards the heel and
+    the root corner. Measured on the spiral bevel 13x39 of tests/data/designs (coarse LTCA
+    at 40.6 / 270.8 N m, its bearing path −58.8°, ellipse 0.55, no relief): a change of
+    −0.1° put the footprint centre at v 0.52 with an unloaded TE of 109 µrad (13 without)
+    and a pattern 0.47 long (0.43 without); −0.24° 207 µrad and 0.55; a root relief of
+    60 µm from 0.2 of the way put it at v 0.52 with 35 µrad and 0.43
+    (docs/synthesis.md, "What sets the pattern and the LTE")."""
+    names = ("root_relief", "relief_start")
+    if (base.full is None or not all(n in targets.variables for n in names)
+            or not math.isfinite(_centre_v(base))):
+        return base
+    target = _target_v(evaluate, targets)
+    f = _centre_v(base) - target
+    if f <= 0.25 * targets.centre_tolerance:
+        return base
+    lo_r, hi_r = targets.variables["root_relief"]
+    values = base.values | {
+        "relief_start": float(targets.variables["relief_start"][0]),
+        "root_relief": float(np.clip(max(base.values.get("root_relief", 0.0),
+                                         ROOT_HEIGHT_RELIEF), lo_r, hi_r))}
+    b = basic_of(values)
+    e = evaluate(values, "height", lambda: make(b), budget, _bearing_key(values))
+    if e.full is None or not math.isfinite(_centre_v(e)):
+        return base
+    return e if abs(_centre_v(e) - target) < f else base
 
 
 def _target_v(evaluate: Callable[..., DevelopmentEvaluation],
