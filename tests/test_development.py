@@ -465,8 +465,8 @@ def test_the_written_case_is_the_design_checked_and_the_coast_is_checked_at_the_
     assert np.all(np.isfinite(r.coast["lte_peak_to_peak"]))
     assert np.all(np.isfinite(r.coast["pressure_max_flank"]))
     table = r.table()
-    assert set(table["cpu_seconds_stages"]) == {"bearing", "height", "relief", "check",
-                                                "coast"}
+    assert set(table["cpu_seconds_stages"]) == {"bearing", "height", "relief", "te",
+                                                "check", "coast"}
     assert "coast_achieved" in table
 
 
@@ -770,9 +770,19 @@ def test_a_high_pattern_is_lowered_by_the_root_relief_first():
                                   lambda b: b)
     assert asked[-1] == values | {"relief_start": 0.2, "root_relief": dev.ROOT_HEIGHT_RELIEF}
     assert got.metrics["pattern_centre_v"][0] == 0.60
-    # farther from the target than before: the design as it was
+    assert len(asked) == 1  # within the tolerance: no second design
+    # farther from the target than before: the design as it was (the upper bound tried too)
     assert dev._root_relief_height(evaluate_to(0.90), high, targets, 36, lambda v: v,
                                    lambda b: b) is high
+    assert [a["root_relief"] for a in asked[1:]] == [dev.ROOT_HEIGHT_RELIEF, 60.0]
+
+    # still above the tolerance at 40 µm: the root relief's upper bound, kept if nearer
+    def graded(v, stage, make, budget, key):
+        asked.append(dict(v))
+        return design(1, v, 0.66 if v["root_relief"] < 50.0 else 0.56)
+    graded.setup = {"centre_v": 0.55}
+    got = dev._root_relief_height(graded, high, targets, 36, lambda v: v, lambda b: b)
+    assert asked[-1]["root_relief"] == 60.0 and got.metrics["pattern_centre_v"][0] == 0.56
     # at its height: nothing analysed
     n = len(asked)
     assert dev._root_relief_height(evaluate_to(0.60), design(0, values, 0.56), targets, 36,

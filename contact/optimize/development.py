@@ -1193,8 +1193,9 @@ def _root_relief_height(evaluate: Callable[..., DevelopmentEvaluation],
     """A light-load pattern above its target lowered by the pinion's root relief: the
     toprem's corner at the lower bound of ``relief_start`` and at least
     :data:`ROOT_HEIGHT_RELIEF` of relief, which takes the gear's tip band (it meets the
-    pinion's root) out of the light-load footprint. Returns that design where its centre v
-    is nearer the target than ``base``'s, else ``base``.
+    pinion's root) out of the light-load footprint; where that leaves the centre v above
+    its tolerance, the root relief's upper bound too. Returns the design whose centre v is
+    nearest the target, ``base`` included.
 
     Why not the blade angle alone: the blade-angle change tilts the whole profile, a
     first-order ease-off whose component along the contact ellipse's major axis (the
@@ -1214,15 +1215,23 @@ def _root_relief_height(evaluate: Callable[..., DevelopmentEvaluation],
     if f <= 0.25 * targets.centre_tolerance:
         return base
     lo_r, hi_r = targets.variables["root_relief"]
-    values = base.values | {
-        "relief_start": float(targets.variables["relief_start"][0]),
-        "root_relief": float(np.clip(max(base.values.get("root_relief", 0.0),
-                                         ROOT_HEIGHT_RELIEF), lo_r, hi_r))}
-    b = basic_of(values)
-    e = evaluate(values, "height", lambda: make(b), budget, _bearing_key(values))
-    if e.full is None or not math.isfinite(_centre_v(e)):
-        return base
-    return e if abs(_centre_v(e) - target) < f else base
+    best, asked = base, []
+    for relief in (ROOT_HEIGHT_RELIEF, hi_r):  # the second where the first is still high
+        if abs(_centre_v(best) - target) <= targets.centre_tolerance and best is not base:
+            break
+        values = base.values | {
+            "relief_start": float(targets.variables["relief_start"][0]),
+            "root_relief": float(np.clip(max(base.values.get("root_relief", 0.0), relief),
+                                         lo_r, hi_r))}
+        if values in asked:
+            continue
+        asked.append(values)
+        b = basic_of(values)
+        e = evaluate(values, "height", lambda b=b: make(b), budget, _bearing_key(values))
+        if (e.full is not None and math.isfinite(_centre_v(e))
+                and abs(_centre_v(e) - target) < abs(_centre_v(best) - target)):
+            best = e
+    return best
 
 
 def _target_v(evaluate: Callable[..., DevelopmentEvaluation],
