@@ -620,9 +620,10 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             f"{_fmt(o.te_level * 1e6)} urad at +/-1 pitch (a21 {fs.a21:.4g}), ellipse "
             f"{_fmt(o.ellipse_length)} x b2 at {_fmt(o.approach * 1e3)} um, tip/root "
             f"relief {_fmt(o.tip_relief * 1e3)}/{_fmt(o.root_relief * 1e3)} um from "
-            f"{_fmt(o.relief_start)} of the way to the ends; "
-            + (f"tip relief from {_fmt(o.tip_start)} of the way to the tip; "
-               if o.tip_start != o.relief_start else "")
+            + (f"{_fmt(o.relief_start)} of the way to the ends; "
+               if o.tip_start == o.relief_start else
+               f"{_fmt(o.tip_start)}/{_fmt(o.relief_start)} of the way to the tip/root "
+               "ends; ")
             + (f"blade angle changed by {_fmt(math.degrees(o.blade_angle_change))} deg "
                "about M (step 7a); " if o.blade_angle_change else "")
             + (f"profile crowning {_fmt(o.profile_crowning * 1e3)} um at +/-m_mn from M "
