@@ -535,9 +535,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # coarse search in turn until one meets every target (the coarse LTCA's peak pressure
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
     c_check = time.process_time()
-    best = _checked_best(evals, targets, setup, teeth, say,
-                         functools.partial(_placed_case, basic, flank, memo),
-                         slopes=evaluate.slopes)
+    placed = functools.partial(_placed_case, basic, flank, memo)
+    best = _checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes)
+    best = _checked_te(best, targets, setup, teeth, say, placed, start[TE_NAME])
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = _static_capacity(best, targets, setup, teeth, say)
     developed = with_flank_options(basic, flank, best.values)
@@ -579,6 +579,46 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                root_text)
     say(result.headline())
     return result
+
+
+def _checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
+                placed: Callable[[Mapping[str, float]], Case], level: float
+                ) -> DevelopmentEvaluation:
+    """The TE stage again at the check: where the chosen design misses the LTE target at
+    ``ltca run``'s sampling (the coarse LTCA's LTE is a few µrad low: 38 against 43 µrad
+    on the face-hobbed hypoid 11x43 of tests/data/designs, whose search stopped at its
+    fifth design, every target met coarsely), its ``te_level`` lowered by 20 µrad, then
+    to the lower bound, each design placed and checked at :data:`CHECK_LTCA` and kept
+    where it scores better (:func:`_te_stage`'s steps; at most 2 designs). ``level``: the
+    flank's own TE level [µrad], where the design's values do not give one."""
+    if (TE_NAME not in targets.variables or best.full is None or not best.checked
+            or best.full[1]["lte"] == 0.0):
+        return best
+    lo, hi = targets.variables[TE_NAME]
+    current = float(best.values.get(TE_NAME, level))
+    for x in (max(lo, min(hi, current) - 20.0), lo):
+        if best.full[1]["lte"] == 0.0 or x >= current - 1e-9:
+            break
+        values = best.values | {TE_NAME: float(x)}
+        try:
+            case = placed(values)
+            ms, grid = _analyse(case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
+                                pinion_key=_bearing_key(values))
+        except Exception as exc:  # reported, never fatal: the chosen design stands
+            log.info("development TE check %s failed: %s", values, exc)
+            break
+        full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                                 pressure_limit=grid[4])
+        e = dataclasses.replace(best, values=values, metrics=ms, objective=full[0],
+                                shortfalls=full[1], met=full[2], full=full, case=case,
+                                checked=True, stage="te")
+        say(f"  design {best.index + 1} at {TE_NAME} {x:.3g} urad, at the default "
+            "sampling: " + _line(e, targets.max_evaluations).split(": ", 2)[-1])
+        if (not full[2], full[0]) >= (not best.full[2], best.full[0]):
+            break
+        best, current = e, float(x)
+    return best
 
 
 def _flank_start(options: Any, targets: DevelopmentTargets) -> dict[str, float]:
