@@ -826,3 +826,46 @@ def test_the_te_stage_runs_again_at_the_check_where_the_lte_is_missed(monkeypatc
     met = chosen(25.0)
     assert dev._checked_te(met, targets, setup, None, lines.append, lambda v: dict(v),
                            45.0) is met
+
+
+def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
+    """Where the checked design's light-load pattern is too long, the path angle is turned
+    towards the profile by PATH_STEPS (clipped to its bound) and the ellipse shortened,
+    each design checked and kept where it scores better, ending at the first that meets
+    every target; a design meeting its length and LTE is left alone. Stand-in analyses
+    whose pattern length is ellipse + travel(path): the test is the decisions."""
+    from contact.optimize import development as dev
+
+    def length(values):
+        travel = 0.3 * math.cos(math.radians(values["path_angle"]))  # lengthwise travel
+        return values["ellipse_length"] + travel
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        assert options is dev.CHECK_LTCA
+        n = length(case)
+        return (_metrics(pattern_toe_u=[0.45 - n / 2, 0.1], pattern_heel_u=[0.45 + n / 2, 0.9]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr(dev, "_analyse", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
+
+    def chosen(values):
+        m = fake(values, [], options=dev.CHECK_LTCA)[0]
+        full = development_score(m, targets, centre_v=0.6)
+        return dev.DevelopmentEvaluation(3, values, m, full[0], full[1], full[2], "", 0.0,
+                                         full=full, checked=True)
+
+    lines = []
+    start = chosen({"path_angle": -58.75, "ellipse_length": 0.55})  # 0.71 long
+    assert start.full[1]["length"] > 0.0
+    got = dev._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    # -73.75 deg / 0.5: 0.58 long, every target met: no second design
+    assert got.values == {"path_angle": -73.75, "ellipse_length": 0.5} and got.met
+    assert len(lines) == 1 and got.stage == "path"
+    # the second step is clipped to the bound (-80 deg) and the ellipse's lower bound
+    far = chosen({"path_angle": -70.0, "ellipse_length": 0.75})
+    got = dev._checked_path(far, targets, setup, None, lines.append, lambda v: dict(v))
+    assert got.values["path_angle"] == -80.0
+    ok = chosen({"path_angle": -80.0, "ellipse_length": 0.45})
+    assert dev._checked_path(ok, targets, setup, None, lines.append, lambda v: dict(v)) is ok
