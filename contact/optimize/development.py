@@ -27,15 +27,21 @@ a memo: the coast flank, not varied there, is synthesised once); the **height**
 (:data:`HEIGHT_NAME`, :mod:`geometry.synthesis.blade_change`) found by a 1-D root-find on
 the light-load footprint centre v (:func:`_centre_height`: secant, then regula falsi), with
 the profile crowning (:data:`CROWNING_NAME`) raised where the centred pattern still
-reaches an end of the working depth; then the **relief** (tip and root relief and their
-start), each relief design re-centred by one step of the blade angle with the slope the
-height stage measured (:func:`_recentred`). The height and relief designs are the
+reaches an end of the working depth; then the **relief** (tip and root relief, the root relief's
+start and the tip relief's own, ``tip_relief_start``), each relief design re-centred by one
+step of the blade angle with the slope the height stage measured (:func:`_recentred`);
+the height stage first lowers a high pattern by the root relief
+(:func:`_root_relief_height`), and a **TE stage** (:func:`_te_stage`) lowers the modified
+roll's ``te_level`` where the LTE misses (issue 71; docs/synthesis.md, "What sets the
+pattern and the LTE"). The height and relief designs are the
 synthesis' step 7 alone (steps 3-6 from the memo), ≈ 0.3 s CPU each. Each design is
 analysed on its drive flank by a coarse LTCA (:data:`COARSE_LTCA`: one mesh cycle, 8 roll
 positions, 12 segments per curve, shell compliance with the teeth kept across designs,
 :class:`KeptTeeth`; no root stress) at the light and the design torque, summarised by
 :func:`contact.study.summary.point_summary`. The best designs are then checked at
-``ltca run``'s sampling (:data:`CHECK_LTCA`), and where the chosen one's flank peak
+``ltca run``'s sampling (:data:`CHECK_LTCA`), the chosen one given the TE stage's steps
+again (:func:`_checked_te`) and its path turned towards the profile where it misses its
+length or LTE there (:func:`_checked_path`), and where the chosen one's flank peak
 pressure at the rating's capacity exceeds the static strength the design torque is
 lowered to what the bearing carries (:func:`_static_capacity`): a design never fails its
 own check at its own design torque. Then the **coast flank** (:func:`_coast_development`):
