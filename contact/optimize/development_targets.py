@@ -180,7 +180,8 @@ class DevelopmentTargets:
         only where the coast flank as synthesised misses a target.
     variables : mapping name → (low, high)
         Developed synthesis inputs (``[synthesis]`` names and units); default
-        :data:`VARIABLES`; ``te_level`` and ``approach`` may be added (bearing stage).
+        :data:`VARIABLES` (``te_level`` by the TE stage, :data:`TE_NAME`); ``approach``
+        may be added (bearing stage).
 
     Raises
     ------
