@@ -200,3 +200,49 @@ def test_zero_relief_leaves_the_blade_alone():
 def test_bad_relief_names_the_field(patch, match):
     with pytest.raises(InputError, match=match):
         basic_from_dict(_raw(**patch), fit=False)
+
+
+def test_a_tip_relief_of_its_own_start_moves_only_the_flankrem():
+    """``tip_start`` (the basic file's ``tip_relief_start``) places the flankrem's corner at
+    h_M + tip_start (h_tip − h_M) and leaves the toprem where ``start`` puts it; the relief
+    at the ends is still the prescribed one (:func:`blade_relief`, the inverse, to Brent's
+    tolerance as above); ``tip_start=None`` is ``start`` (the same blade, bit for bit)."""
+    from geometry.machine.relief import relief_heights
+
+    case = _committed()
+    tool, mem = case.pinion.concave, case.pinion
+    kw = dict(tip_relief=0.020, root_relief=0.015, start=0.3)
+    both = relieved_blade(tool.blade, tool.machine, mem.blank, mem.hand, case.gear.blank,
+                          **kw)
+    assert relieved_blade(tool.blade, tool.machine, mem.blank, mem.hand, case.gear.blank,
+                          tip_start=None, **kw) == both
+    short = relieved_blade(tool.blade, tool.machine, mem.blank, mem.hand, case.gear.blank,
+                           tip_start=0.85, **kw)
+    h = relief_heights(tool.blade, tool.machine, mem.blank, mem.hand, case.gear.blank)
+    assert short.flankrem_height == pytest.approx(h.mean + 0.85 * (h.tip - h.mean), rel=1e-12)
+    assert both.flankrem_height == pytest.approx(h.mean + 0.3 * (h.tip - h.mean), rel=1e-12)
+    assert (short.toprem_height, short.toprem_angle) == (both.toprem_height, both.toprem_angle)
+    # the same relief over a shorter ramp: a steeper rem
+    assert short.flankrem_angle > both.flankrem_angle > 0.0
+    got = blade_relief(short, tool.machine, mem.blank, mem.hand, case.gear.blank)
+    np.testing.assert_allclose(1e3 * np.asarray(got), [20.0, 15.0], atol=1e-6)
+    with pytest.raises(InputError, match="tip_relief_start"):
+        relieved_blade(tool.blade, tool.machine, mem.blank, mem.hand, case.gear.blank,
+                       tip_start=1.0, **kw)
+
+
+def test_the_basic_file_reads_tip_relief_start():
+    """``[synthesis] tip_relief_start`` (per flank too) is read, validated with its name,
+    and recorded in the case's ``[synthesis.<flank>]`` only where it differs from
+    ``relief_start`` (the cases of files without it unchanged); without it the flank's
+    prescriptions give ``relief_start`` as the tip relief's start."""
+    from geometry.synthesis.basic_design import flank_option_values
+
+    basic = basic_from_dict(_raw(tip_relief=20.0, relief_start=0.4, tip_relief_start=0.85))
+    assert basic.options.concave.tip_relief_start == 0.85
+    assert basic.options.concave.tip_start == 0.85
+    plain = basic_from_dict(_raw(relief_start=0.4))
+    assert plain.options.concave.tip_relief_start is None
+    assert flank_option_values(plain.options.concave)["tip_relief_start"] == 0.4
+    with pytest.raises(InputError, match=r"synthesis.*tip_relief_start"):
+        basic_from_dict(_raw(tip_relief_start=1.5))

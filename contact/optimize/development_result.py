@@ -194,7 +194,7 @@ class DevelopmentResult:
         designs' syntheses and coarse LTCAs), the final checks and the coast flank (its
         check and development)."""
         out = {st: sum(e.seconds for e in self.evaluations if e.stage == st)
-               for st in ("bearing", "height", "relief")}
+               for st in ("bearing", "height", "relief", "te")}
         return out | {"check": self.check_seconds, "coast": self.coast_seconds}
 
     def summary(self) -> str:

@@ -8,7 +8,8 @@ pattern's footprint centre (:func:`footprint_centre`) and the depth centre aimed
 
 Public names
 ------------
-DevelopmentTargets, targets_from_table, VARIABLES, RELIEF_NAMES, HEIGHT_NAME,
+DevelopmentTargets, targets_from_table, VARIABLES, RELIEF_NAMES, TIP_RELIEF_START,
+TE_NAME, HEIGHT_NAME,
 CROWNING_NAME, FAILED, METRIC_NAMES, STAGE_TERMS, working_depth_centre,
 development_score, footprint_centre
 """
@@ -30,8 +31,9 @@ from geometry.core.validation import known_fields, real
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS
 
 __all__ = ["CROWNING_NAME", "FAILED", "HEIGHT_NAME", "METRIC_NAMES", "RELIEF_NAMES",
-           "STAGE_TERMS", "VARIABLES", "DevelopmentTargets", "development_score",
-           "footprint_centre", "targets_from_table", "working_depth_centre"]
+           "STAGE_TERMS", "TE_NAME", "TIP_RELIEF_START", "VARIABLES", "DevelopmentTargets",
+           "development_score", "footprint_centre", "targets_from_table",
+           "working_depth_centre"]
 
 
 #: The developed synthesis inputs of the drive flank and their default bounds [file
@@ -43,7 +45,9 @@ __all__ = ["CROWNING_NAME", "FAILED", "HEIGHT_NAME", "METRIC_NAMES", "RELIEF_NAM
 #: half-way from M to the ends (the synthesis' default): farther out the rems shorten and
 #: steepen, and on the spiral bevel 13x39 of tests/data/designs a toprem from 0.645 of
 #: the way (corner 1.66 mm above the blade tip, two edge radii) left a fillet the FE tooth
-#: model cannot mesh (contact.compliance.fe: an inverted element). The path angle stays
+#: model cannot mesh (contact.compliance.fe: an inverted element); the tip relief (the
+#: flankrem, which leaves the fillet alone) has its own start, ``tip_relief_start``, up to
+#: 0.9 of the way (:data:`TIP_RELIEF_START`). The path angle stays
 #: on the far side of the conjugate contact line (nearly lengthwise for a Formate pair,
 #: −10° to +25°); the relief within the 10–60 µm of automotive practice (Stadtfeld,
 #: *Handbook of Bevel and Hypoid Gears*, 1993, ch. 3; ``geometry.machine.relief``).
@@ -55,11 +59,38 @@ VARIABLES: Mapping[str, tuple[float, float]] = {
     "relief_start": (0.2, 0.5),
     "blade_angle_change": (-3.0, 3.0),
     "profile_crowning": (0.0, 30.0),
+    "tip_relief_start": (0.5, 0.9),
+    "te_level": (10.0, 45.0),
 }
 
 
 #: the relief inputs (the blade's toprem and flankrem; no new synthesis of steps 3-6)
-RELIEF_NAMES = ("tip_relief", "root_relief", "relief_start")
+RELIEF_NAMES = ("tip_relief", "root_relief", "relief_start", "tip_relief_start")
+
+
+#: the input of the TE stage (the modified roll's parabola, ``te_level`` [µrad at ±1
+#: pitch], :mod:`geometry.synthesis.modified_roll`): not varied by the bearing stage but,
+#: after the relief, lowered from the file's value where the LTE misses its target
+#: (:func:`contact.optimize.development._te_stage`). Once the tip relief is short the
+#: parabola is a large part of what is left of the unloaded TE: on the passenger-car hypoid
+#: 10x43 (its developed bearing, coarse LTCA at 15 % / 100 % of 357 N m) te_level 10 / 25 /
+#: 45 / 80 µrad gave LTE 34 / 36 / 41 / 51 µrad at light load and 31 / 34 / 39 / 47 µrad
+#: at the design torque, the pattern and the edges unchanged
+TE_NAME = "te_level"
+
+
+#: where the development starts the tip relief (``tip_relief_start``, the fraction of the
+#: way from M to the tip end) unless the basic file gives it: a short tip relief near the
+#: tip, as the seed's reference designs (``relief_start`` 0.86 in cases/basic/
+#: kolivand2009_*_reference.toml). The light-load transfer between tooth pairs runs near
+#: the pinion's tip; a tip relief from half-way puts it on the relief's ramp. Measured
+#: (coarse LTCA of the development, docs/synthesis.md "What sets the LTE and the
+#: pattern"): on the passenger-car hypoid 10x43 a 20 µm tip relief from 0.28 / 0.6 / 0.85
+#: of the way gave an unloaded TE of 94 / 57 / 38 µrad, LTE 37 / 31 / 25 µrad at light
+#: load and 2.3 / 1.1 / 0.1 % of the design torque on edges; on the spiral bevel 13x39 a
+#: 15 µm one from 0.2 / 0.5 / 0.7 / 0.85: 165 / 120 / 78 / 40 µrad unloaded, LTE 96 / 85 /
+#: 69 / 46 µrad at light load, edges 2.7 / 1.8 / 1.0 / 0.3 %.
+TIP_RELIEF_START = 0.85
 
 
 #: the input that shortens the pattern in depth (the pinion blade's profile curvature,
@@ -149,7 +180,8 @@ class DevelopmentTargets:
         only where the coast flank as synthesised misses a target.
     variables : mapping name → (low, high)
         Developed synthesis inputs (``[synthesis]`` names and units); default
-        :data:`VARIABLES`; ``te_level`` and ``approach`` may be added (bearing stage).
+        :data:`VARIABLES` (``te_level`` by the TE stage, :data:`TE_NAME`); ``approach``
+        may be added (bearing stage).
 
     Raises
     ------
@@ -270,6 +302,8 @@ STAGE_TERMS = {
                "plastic", "lte", "pressure", "spread"),
     "relief": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
                "plastic", "lte", "pressure", "spread"),
+    "te": ("length", "centre_u", "centre_v", "toe", "heel", "root", "tip", "edge",
+           "plastic", "lte", "pressure", "spread"),
 }
 
 

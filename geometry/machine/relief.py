@@ -373,7 +373,8 @@ def rem_angle(blade: Blade, corner_height: float, end_height: float, relief: flo
 def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: str,
                    mating_blank: Blank, *, tip_relief: float, root_relief: float,
                    start: float = 0.5,
-                   corners: tuple[float | None, float | None] = (None, None)) -> Blade:
+                   corners: tuple[float | None, float | None] = (None, None),
+                   tip_start: float | None = None) -> Blade:
     """The blade with tip relief (flankrem) and root relief (toprem) of a flank.
 
     Parameters
@@ -397,6 +398,11 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
         (``blade.flankrem_height``, ``blade.toprem_height``) makes the same relief the
         same rem again (:func:`blade_relief` is its inverse), so that a variation of the
         relief starts from the blade as it is.
+    tip_start : float or None — [1]
+        Where the tip relief starts, the fraction of the way from M's blade height to the
+        tip end's, in [0, 1); default None: ``start`` (a short tip relief near the tip
+        end takes the tip edge out of contact under load and leaves the light-load
+        transfer on the unrelieved profile, docs/synthesis.md).
 
     Returns
     -------
@@ -420,31 +426,38 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
     root_relief = real("root_relief", root_relief, unit="mm", low=0.0, high=0.2,
                        high_open=True)
     start = real("relief_start", start, unit="1", low=0.0, high=1.0, high_open=True)
+    tip_start = start if tip_start is None else real(
+        "tip_relief_start", tip_start, unit="1", low=0.0, high=1.0, high_open=True)
     plain = Blade(**{**blade.__dict__, "toprem_angle": 0.0, "toprem_height": 0.0,
                      "flankrem_angle": 0.0, "flankrem_height": 0.0})
     if tip_relief == 0.0 and root_relief == 0.0:
         return plain
     h = relief_heights(plain, machine, blank, hand, mating_blank)
 
-    def rem(corner: float, end: float, relief: float) -> float:
+    def rem(corner: float, end: float, relief: float, name: str = "relief_start",
+            at: float = start) -> float:
         try:
             return rem_angle(plain, corner, end, relief)
         except ReliefError as exc:
             shortest, longest = exc.span
             whole = abs(end - h.mean)
             if shortest is not None and shortest < whole:
-                hint = f"relief_start <= {math.floor(100 * (1 - shortest / whole)) / 100:.2f}"
+                hint = f"{name} <= {math.floor(100 * (1 - shortest / whole)) / 100:.2f}"
             elif longest is not None:
-                hint = f"relief_start >= {math.ceil(100 * (1 - longest / whole)) / 100:.2f}"
+                hint = f"{name} >= {math.ceil(100 * (1 - longest / whole)) / 100:.2f}"
             else:
-                hint = f"no relief_start does: lower {exc.field}"
-            raise ReliefError(f"{exc} (relief_start {start:g}; {hint} would work)",
+                hint = f"no {name} does: lower {exc.field}"
+            raise ReliefError(f"{exc} ({name} {at:g}; {hint} would work)",
                               exc.field, exc.span) from None
 
     kw = {}
     if tip_relief > 0.0:
-        hc = corners[0] if corners[0] is not None else h.mean + start * (h.tip - h.mean)
-        kw.update(flankrem_angle=rem(hc, h.tip, tip_relief), flankrem_height=hc)
+        hc = corners[0] if corners[0] is not None else h.mean + tip_start * (h.tip - h.mean)
+        own = tip_start != start and corners[0] is None
+        kw.update(flankrem_angle=rem(hc, h.tip, tip_relief,
+                                     "tip_relief_start" if own else "relief_start",
+                                     tip_start),
+                  flankrem_height=hc)
     if root_relief > 0.0:
         hc = corners[1] if corners[1] is not None else h.mean + start * (h.root - h.mean)
         if hc <= plain.edge_radius:

@@ -399,7 +399,8 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
     try:
         blade = relieved_blade(blade, tools.settings, pair.pinion_blank,
                                pair.pinion_hand, pair.gear_blank, tip_relief=fo.tip_relief,
-                               root_relief=fo.root_relief, start=fo.relief_start)
+                               root_relief=fo.root_relief, start=fo.relief_start,
+                               tip_start=fo.tip_relief_start)
     except ReliefError as exc:  # named as the basic file's per-flank input
         raise ReliefError(f"synthesis.{pf}.{exc} ([synthesis] {exc.field} sets both "
                           "pinion flanks)", exc.field) from None
@@ -619,7 +620,10 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             f"{_fmt(o.te_level * 1e6)} urad at +/-1 pitch (a21 {fs.a21:.4g}), ellipse "
             f"{_fmt(o.ellipse_length)} x b2 at {_fmt(o.approach * 1e3)} um, tip/root "
             f"relief {_fmt(o.tip_relief * 1e3)}/{_fmt(o.root_relief * 1e3)} um from "
-            f"{_fmt(o.relief_start)} of the way to the ends; "
+            + (f"{_fmt(o.relief_start)} of the way to the ends; "
+               if o.tip_start == o.relief_start else
+               f"{_fmt(o.tip_start)}/{_fmt(o.relief_start)} of the way to the tip/root "
+               "ends; ")
             + (f"blade angle changed by {_fmt(math.degrees(o.blade_angle_change))} deg "
                "about M (step 7a); " if o.blade_angle_change else "")
             + (f"profile crowning {_fmt(o.profile_crowning * 1e3)} um at +/-m_mn from M "
@@ -655,6 +659,8 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             "tip_relief_um": round(fs.options.tip_relief * 1e3, 9),
             "root_relief_um": round(fs.options.root_relief * 1e3, 9),
             "relief_start": fs.options.relief_start,
+            **({"tip_relief_start": fs.options.tip_start}
+               if fs.options.tip_start != fs.options.relief_start else {}),
             **({"blade_angle_change_deg": round(math.degrees(fs.options.blade_angle_change), 9)}
                if fs.options.blade_angle_change else {}),
             **({"profile_crowning_um": round(fs.options.profile_crowning * 1e3, 9)}

@@ -1,0 +1,91 @@
+"""What each development lever does to the light-load pattern and the LTE (issue 71;
+docs/synthesis.md, "What sets the pattern and the LTE").
+
+About a bearing given by its prescriptions (``--base``, ``[synthesis]`` file units), each
+design of ``--vary`` (a JSON list of prescription changes) is synthesised (steps 3-6 from a
+memo where only step 7 changes) and analysed with the development's coarse LTCA
+(:data:`~contact.optimize.development.COARSE_LTCA`; ``--check``: ``ltca run``'s sampling,
+tip planes placed) at the light and design torque. One row per design: light-load pattern
+length and ends (u, v), footprint centre v, LTE p-p at both torques, the unloaded TE p-p
+(``/utca``), the mean tooth pairs in contact at both torques, the edge and plastic shares
+at the design torque and the targets missed (:func:`~contact.optimize.development.
+development_score`, default targets).
+
+Usage::
+
+    python benchmarks/development_levers.py tests/data/designs/spiral_bevel_13x39.toml \\
+        --torques 40.62 270.8 \\
+        --base '{"path_angle": -58.8, "ellipse_length": 0.55, "tip_relief": 0,
+                 "root_relief": 0, "relief_start": 0.5, "profile_crowning": 0,
+                 "blade_angle_change": 0, "te_level": 45}' \\
+        --vary '[{}, {"blade_angle_change": -0.1}, {"root_relief": 60, "relief_start": 0.2},
+                 {"tip_relief": 15, "tip_relief_start": 0.85}, {"te_level": 10}]'
+
+(≈ 2 s CPU per design with a new steps 3-6, 0.3 s where only the relief, the blade angle
+or the crowning change.)
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import json
+import time
+
+
+def main(argv: list[str] | None = None) -> None:
+    import numpy as np
+
+    from contact.chain import AnalysisChain
+    from contact.optimize import development as dev
+    from contact.pipeline import run_analysis
+    from geometry.synthesis.basic_design import load_basic, with_flank_options
+    from geometry.synthesis.case_synthesis import synthesize
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("basic")
+    ap.add_argument("--torques", nargs=2, type=float, required=True,
+                    metavar=("LIGHT", "DESIGN"), help="pinion torques [N m]")
+    ap.add_argument("--base", default="{}", help="JSON: the bearing's prescriptions")
+    ap.add_argument("--vary", default="[{}]", help="JSON list of changes to the base")
+    ap.add_argument("--check", action="store_true", help="ltca run's sampling")
+    args = ap.parse_args(argv)
+    basic = load_basic(args.basic)
+    flank = basic.options.drive_flank
+    base = json.loads(args.base)
+    memo, teeth = {}, dev.KeptTeeth()
+    options = dev.CHECK_LTCA if args.check else dev.COARSE_LTCA
+    print(f"{'change':44s} {'len':>4s} {'u':>9s} {'v':>9s} {'cv':>4s} {'LTE l/d':>8s} "
+          f"{'UTE':>4s} {'pairs':>9s} {'edge%':>5s} {'pl%':>4s}  missed [CPU s]")
+    for change in json.loads(args.vary):
+        values = base | change
+        t0 = time.process_time()
+        try:
+            case = synthesize(with_flank_options(basic, flank, values), memo=memo,
+                              tip_planes=args.check)[0]
+            opts = dataclasses.replace(
+                options, compliance=teeth.compliance(dev._bearing_key(values)))
+            tree = run_analysis(case, list(args.torques), flank="drive", options=opts,
+                                deviations=False, steps=AnalysisChain.contact_only())
+        except Exception as exc:  # a design that fails is a row, not the end
+            print(f"{json.dumps(change):44s} failed: {exc}".splitlines()[0])
+            continue
+        m = dev._metrics(tree, case)
+        _, short, _ = dev.development_score(m, dev.DevelopmentTargets(), dev._grid(tree),
+                                            centre_v=dev.working_depth_centre(case),
+                                            pressure_limit=dev.static_strength(tree))
+        pairs = np.asarray(tree["/ltca"]["pairs_in_contact"].values, float).mean(axis=-1)
+        ute = float(tree["/utca"]["peak_to_peak_transmission_error"])
+        lte = m["lte_peak_to_peak"]
+        print(f"{json.dumps(change):44s} {m['pattern_heel_u'][0] - m['pattern_toe_u'][0]:4.2f} "
+              f"{m['pattern_toe_u'][0]:4.2f}-{m['pattern_heel_u'][0]:4.2f} "
+              f"{m['pattern_root_v'][0]:4.2f}-{m['pattern_tip_v'][0]:4.2f} "
+              f"{m['pattern_centre_v'][0]:4.2f} {lte[0]:4.0f}/{lte[1]:<4.0f}{ute:4.0f} "
+              f"{pairs[0]:4.2f}/{pairs[1]:4.2f} {100 * m['edge_load_share'][1]:5.1f} "
+              f"{100 * np.max(m['plastic_share']):4.1f}  "
+              + ",".join(k for k, v in short.items() if v > 0)
+              + f" [{time.process_time() - t0:.1f}]")
+
+
+if __name__ == "__main__":
+    main()
