@@ -611,6 +611,37 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     return result
 
 
+def _check_rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
+    """A checked design's rank: every target met first, then the least objective."""
+    return (not e.full[2], e.full[0])
+
+
+def _checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,
+                     targets: DevelopmentTargets, setup: Mapping[str, Any],
+                     teeth: KeptTeeth, placed: Callable[[Mapping[str, float]], Case], *,
+                     pinion_key: tuple | None = None, flank: str = "drive"
+                     ) -> DevelopmentEvaluation | None:
+    """``base`` with the prescriptions ``values``: its case placed as it is written
+    (``placed``), analysed at :data:`CHECK_LTCA` at the development's torques and scored
+    (:func:`development_score`), recorded as checked at ``stage``. ``pinion_key``: the
+    kept pinion tooth's key (default the design's bearing, :func:`_bearing_key`). None
+    where the synthesis or the analysis failed (logged: the design it would replace
+    stands)."""
+    try:
+        case = placed(values)
+        ms, grid = _analyse(case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
+                            pinion_key=(_bearing_key(values) if pinion_key is None
+                                        else pinion_key), flank=flank)
+    except Exception as exc:  # reported, never fatal
+        log.info("development %s check of %s failed: %s", stage, dict(values), exc)
+        return None
+    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                             pressure_limit=grid[4])
+    return dataclasses.replace(base, values=values, metrics=ms, objective=full[0],
+                               shortfalls=full[1], met=full[2], full=full, case=case,
+                               checked=True, stage=stage)
+
+
 def _checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                 setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
                 placed: Callable[[Mapping[str, float]], Case], level: float
@@ -630,22 +661,13 @@ def _checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     for x in (max(lo, min(hi, current) - 20.0), lo):
         if best.full[1]["lte"] == 0.0 or x >= current - 1e-9:
             break
-        values = best.values | {TE_NAME: float(x)}
-        try:
-            case = placed(values)
-            ms, grid = _analyse(case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
-                                pinion_key=_bearing_key(values))
-        except Exception as exc:  # reported, never fatal: the chosen design stands
-            log.info("development TE check %s failed: %s", values, exc)
+        e = _checked_variant(best, best.values | {TE_NAME: float(x)}, "te", targets, setup,
+                             teeth, placed)
+        if e is None:
             break
-        full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                                 pressure_limit=grid[4])
-        e = dataclasses.replace(best, values=values, metrics=ms, objective=full[0],
-                                shortfalls=full[1], met=full[2], full=full, case=case,
-                                checked=True, stage="te")
         say(f"  design {best.index + 1} at {TE_NAME} {x:.3g} urad, at the default "
             "sampling: " + _line(e, targets.max_evaluations).split(": ", 2)[-1])
-        if (not full[2], full[0]) >= (not best.full[2], best.full[0]):
+        if _check_rank(e) >= _check_rank(best):
             break
         best, current = e, float(x)
     return best
@@ -694,24 +716,15 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if values in tried or all(values[n] == base.values[n] for n in names):
             continue
         tried.append(values)
-        try:
-            case = placed(values)
-            ms, grid = _analyse(case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
-                                pinion_key=_bearing_key(values))
-        except Exception as exc:  # reported, never fatal: the chosen design stands
-            log.info("development path check %s failed: %s", values, exc)
+        e = _checked_variant(best, values, "path", targets, setup, teeth, placed)
+        if e is None:
             continue
-        full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                                 pressure_limit=grid[4])
-        e = dataclasses.replace(best, values=values, metrics=ms, objective=full[0],
-                                shortfalls=full[1], met=full[2], full=full, case=case,
-                                checked=True, stage="path")
         say(f"  design {best.index + 1} with path_angle {values['path_angle']:.3g}, "
             f"ellipse_length {values['ellipse_length']:.3g}, at the default sampling: "
             + _line(e, targets.max_evaluations).split(": ", 2)[-1])
-        if (not full[2], full[0]) < (not best.full[2], best.full[0]):
+        if _check_rank(e) < _check_rank(best):
             best = e
-            if full[2]:
+            if e.met:
                 break
     return best
 
@@ -1537,7 +1550,7 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
     n_max = targets.max_evaluations if n_max is None else n_max
     what = "design" if side == "drive" else f"{side} design"
     ranked = sorted((e for e in evals if e.full is not None),
-                    key=lambda e: (not e.full[2], e.full[0]))
+                    key=_check_rank)
     checked = []
     for e in ranked[:VERIFIED_DESIGNS]:
         try:
@@ -1558,7 +1571,7 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
             + _line(checked[-1], n_max).split(": ", 2)[-1])
         if full[2]:
             break
-    chosen = min(checked or ranked, key=lambda e: (not e.full[2], e.full[0]))
+    chosen = min(checked or ranked, key=_check_rank)
     slope = (slopes or {}).get(_bearing_key(chosen.values))
     if (placed is None or slope is None or not chosen.checked
             or HEIGHT_NAME not in chosen.values or chosen.full[1]["centre_v"] == 0.0
@@ -1570,21 +1583,13 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
     x = float(np.clip(chosen.values[HEIGHT_NAME] - (_centre_v(chosen) - target) / slope,
                       lo, hi))
     values = chosen.values | {HEIGHT_NAME: x}
-    try:
-        case = placed(values)
-        ms, grid = _analyse(case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
-                            pinion_key=(*key_prefix, *_bearing_key(values)), flank=side)
-    except Exception as exc:  # reported, never fatal: the chosen design stands
-        log.info("development re-centring of %s %d failed: %s", what, chosen.index + 1, exc)
+    again = _checked_variant(chosen, values, "re-centred", targets, setup, teeth, placed,
+                             pinion_key=(*key_prefix, *_bearing_key(values)), flank=side)
+    if again is None:
         return chosen
-    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                             pressure_limit=grid[4])
-    again = dataclasses.replace(chosen, values=values, metrics=ms, objective=full[0],
-                                shortfalls=full[1], met=full[2], full=full, case=case,
-                                checked=True, stage="re-centred")
     say(f"  {what} {chosen.index + 1} re-centred at the default sampling, "
         f"{HEIGHT_NAME} {x:.3g}: " + _line(again, n_max).split(": ", 2)[-1])
-    return again if (not full[2], full[0]) < (not chosen.full[2], chosen.full[0]) else chosen
+    return again if _check_rank(again) < _check_rank(chosen) else chosen
 
 
 def _bearing_key(values: Mapping[str, float]) -> tuple:
