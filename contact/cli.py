@@ -218,6 +218,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         # one BLAS thread for the command's computations (its matrices are small,
         # geometry.core.blas), set before NumPy loads: `ltca cases` stays light
         limit_at_start()
+        if getattr(args, "many_analyses", False):
+            # the compiled kernels earn their first-use compile back over many analyses
+            # (geometry.core.kernels: a single analysis runs the NumPy path until cached)
+            from geometry.core.kernels import prefer_compiled
+
+            prefer_compiled()
         return int(args.func(args) or 0)
     except AnalysisFailedError as exc:  # ran, wrote its file, found no certified contact
         print(f"ltca {args.command}: error: {exc}", file=sys.stderr)

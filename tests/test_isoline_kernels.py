@@ -305,3 +305,18 @@ def test_cache_ready_reads_numba_index(tmp_path, monkeypatch):
                          text=True, cwd=Path(__file__).resolve().parents[1])
     assert out.returncode == 0, out.stderr
     assert out.stdout.split() == ["False", "True"]
+
+
+def test_commands_of_many_analyses_ask_for_the_compiled_kernels():
+    """The commands that run many analyses declare it (``many_analyses``, which
+    ``contact.cli.main`` answers with ``prefer_compiled``); a single analysis does not."""
+    import argparse
+
+    from contact.cli import build_parser
+
+    sub = next(a for a in build_parser()._actions
+               if isinstance(a, argparse._SubParsersAction))
+    many = {"synthesize", "sweep", "tolerance", "vh-check", "optimize", "correct", "wear",
+            "friction-study", "efficiency-map"}
+    for name in (*many, "run", "rate", "report", "duty-cycle", "compile"):
+        assert bool(sub.choices[name].get_default("many_analyses")) is (name in many), name

@@ -71,7 +71,7 @@ def register(sub) -> None:
                    help="largest condition number of the settings kept free (default "
                         "%(default)g); the others are held fixed")
     output_option(p, default="<case>_corrected.toml", what="corrected case file (TOML)")
-    p.set_defaults(func=run_correct)
+    p.set_defaults(func=run_correct, many_analyses=True)
 
 
 def _bounds(raw: list[list[str]]) -> dict[str, tuple[float, float]]:
@@ -116,9 +116,6 @@ def _table(c) -> str:
 
 
 def run_correct(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from contact.catalogue import resolve_case
     from contact.commands.synthesize import write_text_atomic
     from contact.utca.deviation_files import read_deviations

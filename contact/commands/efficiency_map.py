@@ -54,7 +54,7 @@ def register(sub) -> None:
                    help="run the torques on a local Dask cluster of N processes "
                         "(default: in this process)")
     progress_option(p)
-    p.set_defaults(func=run)
+    p.set_defaults(func=run, many_analyses=True)
 
 
 #: how each dimension of an efficiency map is written in the table
@@ -137,9 +137,6 @@ def efficiency_map_plan(name: str, args: argparse.Namespace) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from contact.catalogue import resolve_case
     from contact.commands.run import ltca_options, print_wrapped
     from contact.plots import plot_efficiency_map

@@ -67,13 +67,10 @@ def register(sub) -> None:
     p.add_argument("-o", "--output", default="friction_study.nc", metavar="FILE",
                    help="netCDF file to write (default %(default)s)")
     progress_option(p)
-    p.set_defaults(func=run)
+    p.set_defaults(func=run, many_analyses=True)
 
 
 def run(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     import numpy as np
 
     from contact.commands.output_paths import check_output_file

@@ -89,7 +89,7 @@ def register(sub) -> None:
     p.add_argument("--workers", type=count(1, 1024), default=None, metavar="N",
                    help="processes of the local cluster (default one per core)")
     options.progress_option(p)
-    p.set_defaults(func=run_optimize)
+    p.set_defaults(func=run_optimize, many_analyses=True)
 
 
 def _start(arg: str | None):
@@ -161,9 +161,6 @@ def _outcome(result, confirm: int) -> str:
 
 
 def run_optimize(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from tabulate import tabulate
 
     from contact.commands.synthesize import write_text_atomic

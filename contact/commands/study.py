@@ -151,7 +151,7 @@ def register(sub) -> None:
     p.add_argument("--deviation-scale", metavar="RANGE",
                    help="factors on the case's [deviations] (0 theoretical, 1 measured)")
     _root_stress_option(p)
-    p.set_defaults(func=sweep_command, study="sweep")
+    p.set_defaults(func=sweep_command, many_analyses=True, study="sweep")
 
     t = sub.add_parser(
         "tolerance", help="Monte Carlo tolerance analysis of misalignments (Dask)",
@@ -172,7 +172,7 @@ def register(sub) -> None:
     t.add_argument("--seed", type=count(0, 2**32 - 1), default=0,
                    help="random seed (default %(default)s)")
     _root_stress_option(t)
-    t.set_defaults(func=tolerance_command, study="tolerance")
+    t.set_defaults(func=tolerance_command, many_analyses=True, study="tolerance")
 
     v = sub.add_parser(
         "vh-check", help="V-H check: offset (V) and pinion mounting (H) moving the pattern "
@@ -193,7 +193,7 @@ def register(sub) -> None:
     misalignment_options(v, kind="range", extra={
         "dE": "V grid, offset change dE [mm] (default the case's dE +/- 0.4 mm, 9 values)",
         "dP": "H grid, pinion axial dP [mm] (default the case's dP +/- 0.3 mm, 7 values)"})
-    v.set_defaults(func=vh_check_command, study="vh_check")
+    v.set_defaults(func=vh_check_command, many_analyses=True, study="vh_check")
 
 
 def _prepare(args: argparse.Namespace) -> tuple:
@@ -335,9 +335,6 @@ _CAUSE_WORDS = {"plastic_contact": "plastic contact", "flank_above_limit": "flan
 
 
 def sweep_command(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from contact.study import sweep
 
     case, run = _prepare(args)
@@ -367,9 +364,6 @@ def sweep_command(args: argparse.Namespace) -> int:
 
 
 def tolerance_command(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     import numpy as np
     from tabulate import tabulate
 
@@ -443,9 +437,6 @@ def _or_dash(x: float) -> str:
 
 
 def vh_check_command(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from tabulate import tabulate
 
     from contact.study import vh_check

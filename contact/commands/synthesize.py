@@ -42,7 +42,7 @@ def register(sub) -> None:
                         "are, without developing the bearing under load (default: the "
                         "drive flank's path angle, ellipse and relief are developed to the "
                         "[development] targets, contact.optimize.development)")
-    p.set_defaults(func=run_synthesize)
+    p.set_defaults(func=run_synthesize, many_analyses=True)
 
 
 def bundled_basic_names() -> list[str]:
@@ -101,9 +101,6 @@ def write_text_atomic(path: Path, text: str) -> Path:
 
 
 def run_synthesize(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     import dataclasses
     import tomllib
 

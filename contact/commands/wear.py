@@ -58,13 +58,10 @@ def register(sub) -> None:
                    help="also write the worn (pinion, gear) grids of the last step as a "
                    "deviation netCDF (for `ltca run --deviations FILE FILE`)")
     progress_option(p)
-    p.set_defaults(func=run)
+    p.set_defaults(func=run, many_analyses=True)
 
 
 def run(args: argparse.Namespace) -> int:
-    from geometry.core.kernels import prefer_compiled
-
-    prefer_compiled()  # many analyses: the compiled kernels earn their compile back
     from tabulate import tabulate
 
     from contact.commands.run import ltca_options
