@@ -238,12 +238,17 @@ def test_a_study_point_is_the_same_on_both_paths(monkeypatch):
 def test_kernels_choice(monkeypatch):
     """The names, the environment variable, and the errors that name the field."""
     monkeypatch.delenv("LTCA_KERNELS", raising=False)
-    # the default, auto: numba where its cache holds the kernels for this machine
+    assert kernels_module() is numba_kernels  # installed: the default
+    # auto: numba where its cache holds the kernels for this machine
     monkeypatch.setattr(kernels_core, "cache_ready", lambda name: True)
-    assert kernels_module() is numba_kernels
+    monkeypatch.setattr(kernels_core, "_AUTO_CHOICE", {})  # a new process's first choice
+    assert kernels_module("auto") is numba_kernels
     monkeypatch.setattr(kernels_core, "cache_ready", lambda name: False)
-    assert kernels_module() is None  # not compiled yet: one analysis does not pay for it
-    assert kernels_module("auto") is None
+    assert kernels_module("auto") is numba_kernels  # decided once per process: kept
+    monkeypatch.setattr(kernels_core, "_AUTO_CHOICE", {})
+    assert kernels_module("auto") is None  # not compiled yet: one analysis does not pay
+    monkeypatch.setenv("LTCA_KERNELS", "auto")
+    assert kernels_module() is None
     assert kernels_module("numba") is numba_kernels  # asked for: compiled on first use
     monkeypatch.setenv("LTCA_KERNELS", "numba")
     assert kernels_module() is numba_kernels
@@ -260,6 +265,7 @@ def test_kernels_choice(monkeypatch):
     with pytest.raises(InputError, match=r"kernels: 'numba' needs numba installed"):
         kernels_module("numba")
     monkeypatch.delenv("LTCA_KERNELS")
+    monkeypatch.setattr(kernels_core, "_AUTO_CHOICE", {})
     assert kernels_module() is None  # not installed: the NumPy path, silently
 
 

@@ -81,6 +81,28 @@ def test_local_cluster_workers_start_without_malloc_trim():
     assert dict(dask.config.get(key)) == before
 
 
+@pytest.mark.parametrize("ready", [True, False])
+def test_local_cluster_workers_run_the_kernels_this_process_runs(monkeypatch, ready):
+    """A study's workers get this process's resolved kernels choice (``auto`` resolved by
+    numba's cache as this process saw it), so that a point computed on a worker equals the
+    same analysis in this process even when the cache fills in between (the NumPy and
+    numba paths agree to ~1e-11 only; test_study.py compares at 1e-12)."""
+    import dask
+    pytest.importorskip("distributed")
+
+    from geometry.core import kernels
+
+    monkeypatch.setenv("LTCA_KERNELS", "auto")
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: ready)
+    monkeypatch.setattr(kernels, "_AUTO_CHOICE", {})  # this process's first choice
+    key = "distributed.nanny.pre-spawn-environ"
+    with worker_environment():
+        assert dask.config.get(key)["LTCA_KERNELS"] == ("numba" if ready else "numpy")
+    monkeypatch.setenv("LTCA_KERNELS", "numpy")
+    with worker_environment():
+        assert dask.config.get(key)["LTCA_KERNELS"] == "numpy"
+
+
 def test_geometry_group_takes_the_flanks_of_the_memo_and_changes_nothing(case):
     """The pipeline's /geometry group (contact.pipeline.geometry_datasets) takes the four
     flanks from the per-process memo the ease-off reads, so an analysis solves the gear's

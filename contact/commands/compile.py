@@ -16,10 +16,11 @@ def register(sub) -> None:
         help="compile the numba kernels into the cache (a container image, a cluster node)",
         description="Runs the default case's contact analysis (geometry, UTCA, LTCA; no "
         "root stress) with the compiled kernels, so that numba's cache holds them for this "
-        "machine: afterwards every command runs them (by default a single analysis runs "
-        "the NumPy path where the cache does not hold them: it does not earn the ~20 s of "
-        "compiling back). Point numba's cache directory at a shared one to fill it once "
-        "for the nodes of a cluster (docs/environment.md, docs/performance.md).",
+        "machine: the first command after it starts without the ~20 s of compiling "
+        "(and with the opt-in auto choice of kernels, which runs the NumPy path until the "
+        "cache holds them, every command uses them). Point numba's cache directory at a "
+        "shared one to fill it once for the nodes of a cluster (docs/environment.md, "
+        "docs/performance.md).",
     )
     p.set_defaults(func=run)
 

@@ -10,10 +10,10 @@ the shell tooth's point mapping (:mod:`contact.compliance.tooth_map`, kernels
 Each has a NumPy path, batched over the points, and a compiled one (numba, the ``fast``
 extra) that runs the same iterations point by point. This module chooses between them,
 the same way for all: an explicit ``kernels`` argument where a function takes one, else
-the environment variable ``LTCA_KERNELS``, else ``auto``.
+the environment variable ``LTCA_KERNELS``, else numba where it is installed.
 
-``auto`` (the default) runs a module's compiled kernels only where numba's cache already
-holds them for this machine (:func:`cache_ready`), and the NumPy path otherwise. Numba
+``auto`` (opt-in: ``LTCA_KERNELS=auto``) runs the compiled kernels only where numba's
+cache already holds them for this machine (:func:`cache_ready`), and the NumPy path otherwise. Numba
 compiles the four modules in ≈ 22 s of CPU on their first use (the envelope's Newton
 solve 6.3 s, the iso-line seeds 4.5 s, the block pivoting 4.3 s, measured on the 2-core
 machine with ``numba.core.event``), while a warm ``ltca run`` of the default case costs
@@ -22,8 +22,11 @@ time back. A study point (0.24 s against 0.40 s) or a synthesis (50 s against 73
 the 10x43 of tests/data/designs) does, so the commands that run many analyses ask for
 ``numba`` (:func:`prefer_compiled`) and fill the cache; ``ltca compile`` fills it ahead
 (a container image, each node of a cluster, or ``NUMBA_CACHE_DIR`` on a shared file
-system). Both paths give the same numbers to round-off (the kernels' tests). The choice
-is made once per process and module, so one analysis never mixes them.
+system). Both paths give the same numbers to round-off (the kernels' tests). ``auto`` is
+resolved once per process and for the four modules together (:func:`process_choice`),
+and a study's local workers are started with the process's choice
+(``contact.study.engine.worker_environment``), so a study and the analyses of the process
+that started it run the same path.
 
 Public functions
 ----------------
@@ -32,6 +35,7 @@ KERNEL_MODULES    the four compiled kernel modules
 kernels_module    the compiled kernel module to use, or None for the NumPy path
 compiled_module   a compiled kernel module, imported once per process (None without numba)
 cache_ready       whether numba's cache holds a module's kernels for this machine
+process_choice    ``numpy`` or ``numba``: what this process runs (``auto`` resolved)
 prefer_compiled   make ``auto`` mean ``numba`` in this process (commands of many analyses)
 """
 
@@ -46,7 +50,7 @@ from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
 __all__ = ["KERNELS", "KERNEL_MODULES", "cache_ready", "compiled_module", "kernels_module",
-           "prefer_compiled"]
+           "prefer_compiled", "process_choice"]
 
 #: the implementations: ``numpy`` (the reference), ``numba`` (compiled; the ``fast``
 #: extra) and ``auto`` (numba where its cache holds the kernels, :func:`cache_ready`)
@@ -112,6 +116,40 @@ def cache_ready(name: str) -> bool:
     return True
 
 
+#: ``auto``'s choice in this process, made at its first use (:func:`process_choice`) and
+#: kept by :func:`geometry.core.caches.clear_caches` (it is a decision, not a memo of a
+#: value: made again after numba's cache has filled, it would switch the process's path
+#: between two analyses that must agree bit for bit)
+_AUTO_CHOICE: dict[str, str] = {}
+
+
+def process_choice() -> str:
+    """What this process runs: ``LTCA_KERNELS`` where it names ``numpy`` or ``numba``,
+    unset or empty ``numba`` where it is installed, ``auto`` ``numba`` where numba's cache
+    holds every kernel module for this machine (:func:`cache_ready`) and ``numpy``
+    otherwise — the four modules one way, as :func:`kernels_module` runs them, decided
+    at the first call in the process and kept (:data:`_AUTO_CHOICE`; ``clear_caches`` leaves it).
+
+    Returns
+    -------
+    str
+        ``"numpy"`` or ``"numba"`` (an unknown ``LTCA_KERNELS`` is returned as given:
+        :func:`kernels_module` names it in its error).
+    """
+    kernels = os.environ.get("LTCA_KERNELS") or None
+    if kernels is None:
+        return "numba" if compiled_module(KERNEL_MODULES[0]) is not None else "numpy"
+    return _auto_choice() if kernels == "auto" else kernels
+
+
+def _auto_choice() -> str:
+    """``auto`` resolved: made at its first use in the process and kept (:data:`_AUTO_CHOICE`)."""
+    if "auto" not in _AUTO_CHOICE:
+        ready = all(cache_ready(name) for name in KERNEL_MODULES)
+        _AUTO_CHOICE["auto"] = "numba" if ready else "numpy"
+    return _AUTO_CHOICE["auto"]
+
+
 def prefer_compiled() -> None:
     """Make ``auto`` (the default) mean ``numba`` in this process and the processes it
     starts (Dask's local workers): for the commands that run many analyses (a synthesis'
@@ -130,9 +168,10 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     name : str
         The kernel module's import name (e.g. ``"geometry.machine.envelope_numba"``).
     kernels : {"numpy", "numba", "auto"} or None
-        None: the environment variable ``LTCA_KERNELS`` (same values), else ``auto``:
-        numba where its cache holds the module's kernels for this machine
-        (:func:`cache_ready`), else NumPy.
+        None: the environment variable ``LTCA_KERNELS`` (same values), else numba where
+        it is installed and NumPy otherwise. ``auto``: numba where its cache holds the
+        four modules' kernels for this machine (:func:`cache_ready`,
+        :func:`process_choice`), else NumPy.
 
     Returns
     -------
@@ -146,14 +185,16 @@ def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
     """
     source = "kernels"
     if kernels is None:
-        kernels = os.environ.get("LTCA_KERNELS") or "auto"
+        kernels = os.environ.get("LTCA_KERNELS") or None
         source = "LTCA_KERNELS"
+        if kernels is None:  # the default: numba where it is installed
+            return compiled_module(name)
     if kernels not in KERNELS:
         raise InputError(f"{source}: must be one of {', '.join(KERNELS)}, got {kernels!r}")
     if kernels == "numpy":
         return None
     if kernels == "auto":
-        return compiled_module(name) if cache_ready(name) else None
+        return compiled_module(name) if _auto_choice() == "numba" else None
     mod = compiled_module(name)
     if mod is None:
         raise InputError(f"{source}: 'numba' needs numba installed "
