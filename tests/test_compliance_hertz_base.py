@@ -234,3 +234,29 @@ def test_spur_limit_single_stiffness_against_iso_6336():
     c_iso = 0.8 / q
     assert c_iso == pytest.approx(13.11, abs=0.01)
     assert c_prime == pytest.approx(c_iso, rel=0.30)
+
+
+def test_indefinite_sainsot_coupling_is_said_once_per_tooth(caplog):
+    """A ring gear's virtual (Tredgold) tooth has a small root half-angle θ_f (9×41 at
+    Σ 95°: 0.0081 rad), where Sainsot's fit gives an indefinite base coupling: it is
+    logged once per (h_f, θ_f) in a process, not once per compliance built (a development
+    builds the same tooth's compliance for each of its ~36 trials and printed the line
+    ~20 times); another tooth is still said. The compliance itself is unchanged (the
+    same arithmetic both times, compared exactly: no state enters it)."""
+    import logging
+
+    from contact.compliance.foundation import ToothFoundation, foundation_compliance
+
+    def tooth(theta):
+        return ToothFoundation(root_radius=100.0, inner_radius=100.0 / 2.01,
+                               root_half_angle=theta, face_width=30.0,
+                               youngs_modulus=206000.0)
+
+    with caplog.at_level(logging.WARNING, logger="contact.compliance.foundation"):
+        first = foundation_compliance(tooth(0.00813), [1.0, 5.0], [0.1, 0.2])
+        again = foundation_compliance(tooth(0.00813), [1.0, 5.0], [0.1, 0.2])
+        foundation_compliance(tooth(0.00712), [1.0], [0.1])
+    said = [r for r in caplog.records if "indefinite base coupling" in r.getMessage()]
+    assert len(said) == 2
+    assert "theta_f=0.00813" in said[0].getMessage()
+    np.testing.assert_array_equal(first, again)

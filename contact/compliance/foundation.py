@@ -65,6 +65,7 @@ tooth deflection (seed ref. [3.9], not reproduced).
 
 from __future__ import annotations
 
+import functools
 import logging
 import math
 from dataclasses import dataclass
@@ -189,6 +190,17 @@ def sainsot_coefficients(radius_ratio: float, root_half_angle: float) -> dict[st
     }
 
 
+@functools.lru_cache(maxsize=64)
+def _warn_indefinite(radius_ratio: float, root_half_angle: float) -> None:
+    """Say once per process and foundation (h_f, θ_f) that Sainsot's coefficients give an
+    indefinite base coupling: a development builds the same tooth's compliance for each of
+    its dozens of trials, and a line per trial buried its progress lines."""
+    log.warning(
+        "Sainsot coefficients give an indefinite base coupling (h_f=%.3g, theta_f=%.3g): "
+        "the fit (Sainsot et al. 2004) is extrapolated there; said once per tooth",
+        radius_ratio, root_half_angle)
+
+
 def _load_vectors(
     foundation: ToothFoundation, load_height: np.ndarray, load_angle: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -201,11 +213,7 @@ def _load_vectors(
         [[c["L"], 0.5 * c["M"], 0.0], [0.5 * c["M"], c["P"], 0.0], [0.0, 0.0, c["P"] * c["Q"]]]
     )
     if g[0, 0] * g[1, 1] < g[0, 1] ** 2 or g[2, 2] < 0.0:
-        log.warning(
-            "Sainsot coefficients give an indefinite base coupling (h_f=%.3g, theta_f=%.3g)",
-            foundation.radius_ratio,
-            foundation.root_half_angle,
-        )
+        _warn_indefinite(round(foundation.radius_ratio, 3), round(foundation.root_half_angle, 5))
     v = np.cos(a)[:, None] * np.column_stack(
         [u / foundation.root_thickness, np.ones_like(u), np.tan(a)]
     )
