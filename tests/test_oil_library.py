@@ -20,6 +20,7 @@ References, each independent of the code under test:
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import sys
@@ -158,30 +159,46 @@ def test_ltca_oil_list_prints_the_bundled_oils():
     assert bad.returncode == 2 and "--nu40" in bad.stderr
 
 
-def test_a_case_with_a_library_oil_runs_from_another_directory(tmp_path):
-    """``[operating] lubricant = "ISO_VG220_mineral"`` through ``ltca run`` (one torque, a
-    coarse LTCA), the rating and the scuffing step included, from another directory."""
+@pytest.mark.parametrize(("oil", "model"), [("ISO_VG220_mineral", None),
+                                             ("vg220.toml", "thermal_eyring")])
+def test_a_case_with_an_oil_runs_from_another_directory(tmp_path, oil, model):
+    """``[operating] lubricant = "ISO_VG220_mineral"`` (a library oil) or ``"vg220.toml"``
+    (an ISO VG 220 mineral oil's data-sheet file beside the case, issue 74's "Done when",
+    with ``thermal_eyring``) through ``ltca run`` (one torque, a coarse LTCA), the rating
+    and the scuffing step included, from another working directory."""
     from contact.catalogue import bundled_case_path
+    from friction.oil_data_sheet import OilDataSheet, oil_file_mapping
+    from geometry.core.toml_files import dump_toml
 
     text = bundled_case_path().read_text(encoding="utf-8")
     assert 'lubricant = "75W90"' in text
     casedir, elsewhere = tmp_path / "case", tmp_path / "elsewhere"
     casedir.mkdir()
     elsewhere.mkdir()
+    name = oil
+    if oil.endswith(".toml"):
+        name = "VG220_mineral"
+        sheet = OilDataSheet(name=name, kinematic_viscosity_40=220.0,
+                             kinematic_viscosity_100=19.4, density_15=890.0,
+                             base_oil="mineral", fzg_load_stage=12.0,
+                             source="typical ISO VG 220 mineral EP gear oil (class values)")
+        (casedir / oil).write_text(dump_toml(oil_file_mapping(sheet)), encoding="utf-8")
     case = casedir / "mycase.toml"
-    case.write_text(text.replace('lubricant = "75W90"', 'lubricant = "ISO_VG220_mineral"', 1),
+    case.write_text(text.replace('lubricant = "75W90"', f'lubricant = "{oil}"', 1),
                     encoding="utf-8")
     out = elsewhere / "out.nc"
-    done = subprocess.run(
-        [sys.executable, "-m", "contact", "run", str(case), "--torque", "250",
-         "--rolls-per-cycle", "6", "--segments", "12", "--no-root-stress", "--no-progress",
-         "-o", str(out)], capture_output=True, text=True, cwd=elsewhere, check=False,
-        env={**__import__("os").environ, "PYTHONPATH": str(REPO)})
+    cmd = [sys.executable, "-m", "contact", "run", str(case), "--torque", "250",
+           "--rolls-per-cycle", "6", "--segments", "12", "--no-root-stress", "--no-progress",
+           "-o", str(out)]
+    if model:
+        cmd += ["--friction-model", model]
+    done = subprocess.run(cmd, capture_output=True, text=True, cwd=elsewhere, check=False,
+                          env={**os.environ, "PYTHONPATH": str(REPO)})
     assert done.returncode == 0, done.stderr[-2000:]
-    assert "ISO_VG220_mineral at 90 degC" in done.stdout
+    assert f"{name} at 90 degC" in done.stdout
     assert "FZG load stage 12" in done.stdout
     with xr.open_dataset(out, group="friction") as fr:
-        assert fr.attrs["lubricant"] == "ISO_VG220_mineral"
+        assert fr.attrs["lubricant"] == name
         eff = float(fr["efficiency_mean"].values[0])
     assert 0.9 < eff < 1.0
     with xr.open_dataset(out, group="rating") as rating:
