@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import tomllib
 from collections.abc import Mapping
+from dataclasses import dataclass
 from importlib import resources
 from types import MappingProxyType
 from typing import Any
@@ -59,6 +60,7 @@ _CLASS_KEYS = {"description", "viscosity_index", "viscosity_index_source", "dens
                "density_source", "fzg_load_stage", "fzg_source"}
 
 
+@dataclass(frozen=True)
 class LibraryOil:
     """One oil of the library: its data sheet and where each value comes from.
 
@@ -76,16 +78,11 @@ class LibraryOil:
         The class in words.
     """
 
-    __slots__ = ("description", "name", "oil_class", "sheet", "viscosity_index")
-
-    def __init__(self, name: str, sheet: OilDataSheet, viscosity_index: float,
-                 oil_class: str, description: str) -> None:
-        self.name, self.sheet, self.viscosity_index = name, sheet, viscosity_index
-        self.oil_class, self.description = oil_class, description
-
-    def __repr__(self) -> str:
-        return (f"LibraryOil({self.name!r}, nu40={self.sheet.kinematic_viscosity_40:g}, "
-                f"nu100={self.sheet.kinematic_viscosity_100:g}, VI={self.viscosity_index:g})")
+    name: str
+    sheet: OilDataSheet
+    viscosity_index: float
+    oil_class: str
+    description: str
 
 
 def _library_text() -> str:
