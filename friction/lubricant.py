@@ -68,6 +68,7 @@ from geometry.core.validation import known_fields, one_of, real, real_array, sca
 
 __all__ = [
     "BASE_OIL_FACTORS",
+    "LUBRICANT_SCHEMA",
     "VISCOSITY_MODELS",
     "BoundaryFrictionTable",
     "Lubricant",
@@ -1007,28 +1008,43 @@ def boundary_friction_source(lubricant: Lubricant) -> str:
 
 
 # ----------------------------------------------------------------------------- loading
+#: The ``schema`` line of an oil file (``friction/data`` also holds other TOML files: the
+#: fitted coefficients of ``kolivand2009``, which are no oil).
+LUBRICANT_SCHEMA = "hypoid-ltca lubricant 1"
+
+
 def _bundled() -> dict[str, Any]:
     folder = resources.files("friction").joinpath("data")
     return {
         entry.name[: -len(".toml")]: entry
         for entry in folder.iterdir()
         if entry.name.endswith(".toml")
+        and f'schema = "{LUBRICANT_SCHEMA}"' in entry.read_text(encoding="utf-8")
     }
 
 
+def _library_names() -> tuple[str, ...]:
+    from friction.oil_library import library_oil_names  # builds on this module
+
+    return library_oil_names()
+
+
 def available_lubricants() -> tuple[str, ...]:
-    """Names of the lubricants bundled with the toolkit (``friction/data/*.toml``).
+    """Names of the lubricants bundled with the toolkit: the oil files of ``friction/data``
+    (the seed's ``75W90``) and the oil library's grades (:mod:`friction.oil_library`:
+    ``ISO_VG68_mineral`` … ``ISO_VG460_PAG``).
 
     Returns
     -------
     tuple of str
-        Sorted names (file stems), e.g. ``("75W90",)``.
+        The bundled files' names (file stems) sorted, then the library's in its order.
 
     Notes
     -----
-    Source: each file's ``source`` field (75W90: seed Table 5.2).
+    Source: each file's ``source`` field (75W90: seed Table 5.2); the library's in
+    ``friction/data/oils/library.toml``.
     """
-    return tuple(sorted(_bundled()))
+    return (*sorted(_bundled()), *_library_names())
 
 
 def lubricant_from_mapping(data: Mapping[str, Any], origin: str = "<mapping>") -> Lubricant:
@@ -1114,7 +1130,8 @@ def load_lubricant(lubricant: str | Path) -> Lubricant:
     Parameters
     ----------
     lubricant : str or Path
-        A bundled name (case-insensitive; see :func:`available_lubricants`) or the path
+        A bundled name (case-insensitive; see :func:`available_lubricants`: a bundled
+        file's or an oil library grade's, :mod:`friction.oil_library`) or the path
         of a TOML file with the schema of the module docstring (the ``lubricant`` of
         :class:`friction.OperatingConditions`; old name ``path_or_name``, deprecated).
 
@@ -1139,6 +1156,10 @@ def load_lubricant(lubricant: str | Path) -> Lubricant:
     """
     bundled = {k.lower(): v for k, v in _bundled().items()}
     key = str(lubricant).lower()
+    if isinstance(lubricant, str) and key in {n.lower() for n in _library_names()}:
+        from friction.oil_library import library_oil_lubricant
+
+        return library_oil_lubricant(lubricant)
     if isinstance(lubricant, str) and key in bundled:
         text = bundled[key].read_text(encoding="utf-8")
         origin = f"bundled lubricant {lubricant!r}"

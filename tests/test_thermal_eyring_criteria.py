@@ -19,8 +19,17 @@ unless stated, against ISO/TR 14179-2 (Schlenk's correlation of FZG gear measure
   kg/m³: class values) within ±15 % of the 75W90's flank μ at 50 °C (A +13.2 %, B +1.5 %)
   and on A at 90 °C (−10.1 %), Rq 0.8 µm.
 
-Missed, and so not asserted (docs/friction.md, "Asperities from the roughness"): the
-roughness cost at 90 °C (A 2.43 ×, B 2.63 × ISO's) and B's VG 220 at 90 °C (−18.2 %).
+Missed, each written as the issue's test and marked ``xfail(strict=True)`` so that a
+change that meets it fails here until the mark is removed (docs/friction.md, "Why the
+roughness cost grows with temperature"): the roughness cost at 90 °C (A 2.43 ×, B 2.63 ×
+ISO's) and B's VG 220 at 90 °C (−18.2 %). Both come from the asperities' share of the load
+at λ 0.13–0.25 (A, Rq 1.3 µm: 0.95 at 90 °C against 0.40 at 50 °C) carrying μ_b = 0.1
+(``benchmarks/friction_share_map.py``).
+
+The other rows of the "Done when" are tested elsewhere: the 75W90 rebuilt from ν40/ν100
+against Table 5.2 within 5 % (tests/test_oil_data_sheet.py), the VG 220 from its data sheet
+and a library oil through ``ltca run`` with the rating from another working directory
+(tests/test_oil_library.py).
 
 Tolerances: the issue's bounds themselves. At this resolution the efficiencies are within
 0.02 point and the ratios to ISO within 0.04 of the full-resolution LTCAs'
@@ -67,13 +76,26 @@ def _result(lt, **operating):
     return float(mu[AT]), 100.0 * float(fr["efficiency_mean"].values[AT])
 
 
+def _cost_ratio(lt, temperature):
+    cost = {m: _result(lt, friction_model=m, temperature=temperature, roughness=0.1)[1]
+            - _result(lt, friction_model=m, temperature=temperature, roughness=1.3)[1]
+            for m in (MODEL, ISO)}
+    return cost[MODEL] / cost[ISO], cost
+
+
 @pytest.mark.parametrize("case", CASES)
 def test_roughness_cost_at_50_degrees_within_half_to_twice_iso(ltcas, case):
-    lt = ltcas[case]
-    cost = {m: _result(lt, friction_model=m, temperature=50.0, roughness=0.1)[1]
-            - _result(lt, friction_model=m, temperature=50.0, roughness=1.3)[1]
-            for m in (MODEL, ISO)}
-    assert 0.5 <= cost[MODEL] / cost[ISO] <= 2.0, cost
+    ratio, cost = _cost_ratio(ltcas[case], 50.0)
+    assert 0.5 <= ratio <= 2.0, cost
+
+
+@pytest.mark.xfail(strict=True, reason="issue 74 row not met: the roughness cost at 90 degC "
+                   "is 2.43 (A) / 2.63 (B) x ISO/TR 14179-2's (asperity share 0.95 at "
+                   "lambda 0.13 with mu_b 0.1; docs/friction.md)")
+@pytest.mark.parametrize("case", CASES)
+def test_roughness_cost_at_90_degrees_within_half_to_twice_iso(ltcas, case):
+    ratio, cost = _cost_ratio(ltcas[case], 90.0)
+    assert 0.5 <= ratio <= 2.0, cost
 
 
 @pytest.mark.parametrize("case", CASES)
@@ -82,14 +104,19 @@ def test_hot_oil_not_better_on_rough_flanks(ltcas, case):
     hot = _result(lt, friction_model=MODEL, temperature=100.0, roughness=1.3)[1]
     cold = _result(lt, friction_model=MODEL, temperature=50.0, roughness=1.3)[1]
     assert hot <= cold, (hot, cold)
+    # as the correlation on the same segments (−0.17 / −0.28 point)
+    iso = [_result(lt, friction_model=ISO, temperature=t, roughness=1.3)[1]
+           for t in (100.0, 50.0)]
+    assert iso[0] <= iso[1], iso
 
 
 @pytest.mark.parametrize("case", CASES)
 def test_full_film_friction_falls_from_1500_to_6000_rpm(ltcas, case):
     lt = ltcas[case]
-    mu = [_result(lt, friction_model=MODEL, temperature=50.0, roughness=0.1,
-                  pinion_speed=n)[0] for n in (1500.0, 6000.0)]
+    mu, iso = ([_result(lt, friction_model=m, temperature=50.0, roughness=0.1,
+                        pinion_speed=n)[0] for n in (1500.0, 6000.0)] for m in (MODEL, ISO))
     assert mu[1] < mu[0], mu
+    assert iso[1] < iso[0], iso  # the correlation falls too (−24 %)
 
 
 @pytest.mark.parametrize("case", CASES)
@@ -104,10 +131,17 @@ def test_a_ahead_of_b_by_one_to_two_points(ltcas):
     eff = [_result(ltcas[c], friction_model=MODEL, temperature=90.0, roughness=0.8)[1]
            for c in CASES]
     assert 1.0 <= eff[0] - eff[1] <= 2.0, eff
+    # the band is the correlation's on the same segments: ISO/TR 14179-2's μ gives 1.23
+    iso = [_result(ltcas[c], friction_model=ISO, temperature=90.0, roughness=0.8)[1]
+           for c in CASES]
+    assert 1.0 <= iso[0] - iso[1] <= 2.0, iso
 
 
-@pytest.mark.parametrize(("case", "temperature"),
-                         [(CASES[0], 50.0), (CASES[1], 50.0), (CASES[0], 90.0)])
+@pytest.mark.parametrize(("case", "temperature"), [
+    (CASES[0], 50.0), (CASES[1], 50.0), (CASES[0], 90.0),
+    pytest.param(CASES[1], 90.0, marks=pytest.mark.xfail(
+        strict=True, reason="issue 74 row not met: B's VG 220 at 90 degC is -18.2 % (the "
+        "thicker film takes load off the asperities' mu_b; docs/friction.md)"))])
 def test_vg220_mineral_from_its_data_sheet_ranks_within_15_percent(ltcas, case,
                                                                    temperature, tmp_path):
     sheet = OilDataSheet(name="VG220_mineral", kinematic_viscosity_40=220.0,
@@ -119,5 +153,9 @@ def test_vg220_mineral_from_its_data_sheet_ranks_within_15_percent(ltcas, case,
     ref = _result(lt, friction_model=MODEL, temperature=temperature, roughness=0.8)[0]
     vg = _result(lt, friction_model=MODEL, temperature=temperature, roughness=0.8,
                  lubricant=str(path))[0]
-    assert abs(vg / ref - 1.0) <= 0.15, (vg, ref)
     assert np.isfinite(vg)
+    # the correlation ranks the two oils within ±15 % on the same segments (−4 / −2 %)
+    iso = [_result(lt, friction_model=ISO, temperature=temperature, roughness=0.8,
+                   lubricant=oil)[0] for oil in ("75W90", str(path))]
+    assert abs(iso[1] / iso[0] - 1.0) <= 0.15, iso
+    assert abs(vg / ref - 1.0) <= 0.15, (vg, ref)

@@ -19,21 +19,25 @@ def register(sub) -> None:
         "[operating] lubricant) from the values of the oil's data sheet: the viscosity "
         "by ASTM D341 through nu40 and nu100, the density and the pressure-viscosity "
         "coefficient by ISO/TR 15144-1 (mineral, polyalphaolefin, polyglycol; another base "
-        "stock needs --alpha38). docs/oils.md says what each value does.",
+        "stock needs --alpha38). docs/oils.md says what each value does. --list prints "
+        "the bundled oils instead (the seed's 75W90 and the library's ISO VG grades), "
+        "each usable by name as --lubricant or a case's [operating] lubricant.",
     )
-    p.add_argument("--name", required=True, help="the oil's name (results record it)")
-    p.add_argument("--nu40", type=float, required=True, metavar="MM2/S",
+    p.add_argument("--list", action="store_true",
+                   help="list the bundled oils (name, base stock, nu40, nu100, VI, rho15, "
+                   "eta and alpha at 40 and 100 degC) and exit")
+    p.add_argument("--name", help="the oil's name (results record it)")
+    p.add_argument("--nu40", type=float, metavar="MM2/S",
                    help="kinematic viscosity at 40 degC [mm2/s]")
-    p.add_argument("--nu100", type=float, required=True, metavar="MM2/S",
+    p.add_argument("--nu100", type=float, metavar="MM2/S",
                    help="kinematic viscosity at 100 degC [mm2/s]")
-    p.add_argument("--rho15", type=float, required=True, metavar="KG/M3",
+    p.add_argument("--rho15", type=float, metavar="KG/M3",
                    help="density at 15 degC [kg/m3] (a sheet's g/ml x 1000)")
-    p.add_argument("--base-oil", required=True,
+    p.add_argument("--base-oil",
                    help="the base stock: mineral, polyalphaolefin, "
                    "polyglycol_non_water_soluble, polyglycol_water_soluble, phosphate_ester "
                    "or traction_fluid (the last two need --alpha38)")
-    p.add_argument("--source", required=True,
-                   help="the data sheet (maker, product, edition)")
+    p.add_argument("--source", help="the data sheet (maker, product, edition)")
     p.add_argument("--alpha38", type=float, default=None, metavar="1/GPA",
                    help="measured pressure-viscosity coefficient at 38 degC [1/GPa] "
                    "(default: ISO/TR 15144-1's of the base stock)")
@@ -45,9 +49,48 @@ def register(sub) -> None:
     p.add_argument("--lambda-gfp", type=float, default=None,
                    help="permissible specific film thickness from the FVA 54 test "
                    "(micropitting safety)")
-    p.add_argument("-o", "--output", required=True, metavar="FILE.toml",
-                   help="oil file to write")
+    p.add_argument("-o", "--output", metavar="FILE.toml", help="oil file to write")
     p.set_defaults(func=run)
+
+
+#: what a data sheet's oil file needs (all but --list)
+_REQUIRED = (("name", "--name"), ("nu40", "--nu40"), ("nu100", "--nu100"),
+             ("rho15", "--rho15"), ("base_oil", "--base-oil"), ("source", "--source"),
+             ("output", "-o"))
+
+
+def list_oils() -> int:
+    """Print the bundled oils: the oil files' and the library's (friction.oil_library)."""
+    from tabulate import tabulate
+
+    from friction.lubricant import (
+        available_lubricants,
+        kinematic_viscosity,
+        load_lubricant,
+        pressure_viscosity_coefficient,
+        viscosity,
+    )
+    from friction.oil_library import library_oils
+
+    library = library_oils()
+    rows = []
+    for name in available_lubricants():
+        oil = load_lubricant(name)
+        nu = kinematic_viscosity(oil, [40.0, 100.0])
+        entry = library.get(name)
+        rows.append((name, oil.base_oil, float(nu[0]), float(nu[1]),
+                     "" if entry is None else f"{entry.viscosity_index:g}",
+                     "" if entry is None else f"{entry.sheet.density_15:g}",
+                     *(float(viscosity(oil, t)) * 1e3 for t in (40.0, 100.0)),
+                     *(float(pressure_viscosity_coefficient(oil, t)) for t in (40.0, 100.0)),
+                     "bundled file" if entry is None else "library (class values)"))
+    print(tabulate(rows, headers=("name", "base oil", "nu40 [mm2/s]", "nu100 [mm2/s]", "VI",
+                                  "rho15 [kg/m3]", "eta40 [mPa s]", "eta100 [mPa s]",
+                                  "alpha40 [1/GPa]", "alpha100 [1/GPa]", "kind"),
+                   floatfmt=("", "", ".1f", ".2f", "", "", ".1f", ".2f", ".2f", ".2f", "")))
+    print("sources: docs/oils.md, 'The oil library'; each oil's source line "
+          "(friction.lubricant.load_lubricant(name).source)")
+    return 0
 
 
 def run(args: argparse.Namespace) -> int:
@@ -65,6 +108,11 @@ def run(args: argparse.Namespace) -> int:
     from geometry.core.errors import InputError
     from geometry.core.toml_files import dump_toml
 
+    if args.list:
+        return list_oils()
+    missing = [flag for key, flag in _REQUIRED if getattr(args, key) is None]
+    if missing:
+        raise InputError(f"ltca oil: {', '.join(missing)} required (or --list)")
     check_output_file(args.output)
     if not str(args.output).endswith(".toml"):
         raise InputError(f"-o: the oil file must end in .toml, got {args.output!r}")

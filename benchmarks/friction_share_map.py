@@ -1,0 +1,180 @@
+"""Why ``thermal_eyring`` misses two rows of issue 74's "Done when": its flank μ split into
+the asperities' part and the film's, and the boundary friction μ_b those rows would need.
+
+On the seed's Table 5.4 designs A and B (100 / 500 / 1000 N·m; the 500 N·m torque read),
+1500 rpm, run-in flanks, for the bundled 75W90 and the data-sheet ISO VG 220 mineral oil
+(ν40 220, ν100 19.4 mm²/s, ρ15 890 kg/m³: class values, as
+``tests/test_thermal_eyring_criteria.py``), prints per inlet temperature and Rq:
+
+* the flank λ and the load-weighted **asperity share** of the load (γ₂⁻¹ of Johnson,
+  Greenwood & Poon's load sharing with the summits of ``friction.flank_summits``);
+* the flank μ split into the asperities' part μ_b·share and the film's part (the rest),
+  beside ISO/TR 14179-2's μ on the same segments (Schlenk's correlation of FZG gear
+  measurements, ``iso_tr_14179_2``);
+
+then, with the 75W90's μ_b made a table of 0.10 at 50 °C and a value x at 90 °C (held
+outside, the oil file's ``[boundary_friction]`` mechanism of docs/friction.md), the rows of
+the issue that depend on it: the roughness cost (Rq 0.1 → 1.3 µm) over ISO's at 50 and
+90 °C, the level at the seed's point, the VG 220's μ over the 75W90's (its μ_b the same
+table), hot against cold at Rq 1.3 and A − B. **A sensitivity, not a model**: x is what a
+measured μ_b(T) of the oil would have to show; nothing here is adopted (docs/friction.md,
+"Why the roughness cost grows with temperature").
+
+Usage::
+
+    python benchmarks/friction_share_map.py [--rolls 6] [--segments 12]
+
+The default resolution is the criteria test's (one mesh cycle, 6 rolls, 12 segments): its
+ratios to ISO equal the full-resolution map's (``friction_correlation_map.py``, 20 rolls,
+24 segments) to the digits docs/friction.md shows (2.43 / 2.63, +13.2 %, −18.2 %).
+"""
+
+from __future__ import annotations
+
+import argparse
+import inspect
+import sys
+import tempfile
+import tomllib
+import warnings
+from pathlib import Path
+
+from tabulate import tabulate
+
+# the tree this script belongs to, before an installed copy of the package
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from contact.catalogue import resolve_case
+from contact.ltca import LTCAOptions, loaded_tca
+from friction.coefficient import FrictionModelRangeWarning
+from friction.efficiency import efficiency_analysis
+from friction.oil_data_sheet import OilDataSheet, oil_file_mapping
+from friction.operating import OperatingConditions
+from friction.thermal_eyring import _load_sharing, thermal_eyring
+from geometry.core.toml_files import dump_toml
+
+CASES = {"A": "kolivand2009_table54_A_fh", "B": "kolivand2009_table54_B_fh"}
+TORQUES = (100.0, 500.0, 1000.0)
+AT = 1  # 500 N·m
+VG220 = OilDataSheet(name="VG220_mineral", kinematic_viscosity_40=220.0,
+                     kinematic_viscosity_100=19.4, density_15=890.0, base_oil="mineral",
+                     source="typical ISO VG 220 mineral EP gear oil (class values)")
+_SHARING = ("load_per_length", "hertz_pressure", "radius", "e_prime", "entraining_velocity",
+            "sliding_velocity", "viscosity", "pressure_viscosity", "roughness_1",
+            "roughness_2", "thermal_factor", "eyring_stress", "limiting_shear_coefficient",
+            "boundary_friction")
+
+
+def asperity_part(**inputs):
+    """μ_b × the asperity share of ``thermal_eyring``'s load sharing (its default summits),
+    as a model function: the efficiency stage then stores it per segment."""
+    sol = _load_sharing(summits="ground", asperity_density_radius_sigma=0.05,
+                        sigma_over_beta=0.01,
+                        **{k: v for k, v in inputs.items() if k in _SHARING})
+    return sol.boundary_friction
+
+
+asperity_part.__signature__ = inspect.signature(thermal_eyring)
+
+
+def _flank(lt, fr, name):
+    force = lt["force"].fillna(0.0).where(lt["segment_kind"] == "curve", 0.0)
+    dims = ("roll", "pair", "segment")
+    return float(((fr[name].fillna(0.0) * force).sum(dims) / force.sum(dims)).values[AT])
+
+
+def _run(lt, model, oil, temperature, roughness):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FrictionModelRangeWarning)
+        return efficiency_analysis(lt, OperatingConditions(
+            friction_model=model, lubricant=oil, temperature=temperature,
+            roughness=roughness))
+
+
+def split_rows(lts, oils):
+    rows = []
+    for label, lt in lts.items():
+        for oil_label, oil in oils.items():
+            for t, rq in ((50.0, 0.8), (50.0, 1.3), (90.0, 0.8), (90.0, 1.3)):
+                fr = _run(lt, "thermal_eyring", oil, t, rq)
+                mu = _flank(lt, fr, "friction_coefficient")
+                mu_b = float(fr.attrs["boundary_friction"])
+                asp = _flank(lt, _run(lt, asperity_part, oil, t, rq), "friction_coefficient")
+                iso = _flank(lt, _run(lt, "iso_tr_14179_2", oil, t, rq),
+                             "friction_coefficient")
+                rows.append([label, oil_label, t, rq, _flank(lt, fr, "lambda_ratio"),
+                             asp / mu_b, mu, asp, mu - asp, iso, mu / iso])
+    return rows
+
+
+def _with_mu_b(doc, x, folder, tag):
+    d = dict(doc)
+    d["boundary_friction"] = {"temperature": [50.0, 90.0], "value": [0.1, x],
+                              "source": "sensitivity of benchmarks/friction_share_map.py"}
+    path = Path(folder) / f"{tag}_{x:g}.toml"
+    path.write_text(dump_toml(d), encoding="utf-8")
+    return str(path)
+
+
+def sensitivity_rows(lts, folder, values=(0.10, 0.09, 0.085, 0.08, 0.075, 0.07)):
+    from friction.lubricant import _bundled
+
+    w90 = tomllib.loads(_bundled()["75W90"].read_text(encoding="utf-8"))
+    vg = oil_file_mapping(VG220)
+    rows = []
+    for x in values:
+        oil, vgo = _with_mu_b(w90, x, folder, "75W90"), _with_mu_b(vg, x, folder, "vg220")
+        eff = {}
+        row = [x]
+        for label, lt in lts.items():
+            def e(model, t, rq, o=oil, lt=lt):
+                return 100.0 * float(_run(lt, model, o, t, rq)["efficiency_mean"].values[AT])
+
+            def m(model, t, rq, o=oil, lt=lt):
+                return _flank(lt, _run(lt, model, o, t, rq), "friction_coefficient")
+
+            cost = {t: (e("thermal_eyring", t, 0.1) - e("thermal_eyring", t, 1.3))
+                    / (e("iso_tr_14179_2", t, 0.1) - e("iso_tr_14179_2", t, 1.3))
+                    for t in (50.0, 90.0)}
+            level = m("thermal_eyring", 90.0, 0.8) / m("iso_tr_14179_2", 90.0, 0.8)
+            rank = {t: 100.0 * (m("thermal_eyring", t, 0.8, vgo) / m("thermal_eyring", t, 0.8)
+                                - 1.0) for t in (50.0, 90.0)}
+            hot = e("thermal_eyring", 100.0, 1.3) - e("thermal_eyring", 50.0, 1.3)
+            eff[label] = e("thermal_eyring", 90.0, 0.8)
+            row += [f"{cost[50.0]:.2f} / {cost[90.0]:.2f}", f"{level:.2f}",
+                    f"{rank[50.0]:+.1f} / {rank[90.0]:+.1f}", f"{hot:+.2f}"]
+        row.append(f"{eff['A'] - eff['B']:.2f}")
+        rows.append(row)
+    return rows
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--rolls", type=int, default=6)
+    ap.add_argument("--segments", type=int, default=12)
+    args = ap.parse_args(argv)
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=args.rolls, segments=args.segments)
+    lts = {k: loaded_tca(resolve_case(v), list(TORQUES), options=opts)
+           for k, v in CASES.items()}
+    with tempfile.TemporaryDirectory() as folder:
+        vg = Path(folder) / "vg220.toml"
+        vg.write_text(dump_toml(oil_file_mapping(VG220)), encoding="utf-8")
+        print("thermal_eyring's flank mu split (500 N m, 1500 rpm, run-in flanks)")
+        print(tabulate(split_rows(lts, {"75W90": "75W90", "VG220": str(vg)}),
+                       headers=("case", "oil", "degC", "Rq [um]", "lambda", "asperity share",
+                                "mu", "asperity part", "film part", "ISO mu", "mu/ISO"),
+                       floatfmt=("", "", "g", "g", ".3f", ".3f", ".4f", ".4f", ".4f", ".4f",
+                                 ".2f")))
+        print("\nmu_b of the 75W90 and the VG 220: 0.10 at 50 degC, x at 90 degC (a "
+              "sensitivity, not adopted)")
+        print(tabulate(sensitivity_rows(lts, folder),
+                       headers=("x", "A cost/ISO 50/90", "A level", "A VG220 % 50/90",
+                                "A hot-cold Rq1.3", "B cost/ISO 50/90", "B level",
+                                "B VG220 % 50/90", "B hot-cold Rq1.3", "A - B")))
+    print("issue 74's bounds: cost 0.5-2 x ISO at 50 and 90 degC; level 0.7-1.4; VG 220 "
+          "within +-15 %; hot-cold <= 0; A - B 1.0-2.0 points")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
