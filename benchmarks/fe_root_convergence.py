@@ -21,6 +21,11 @@ Variants (``--variants``; the FE options of each are printed):
 * ``mesh/1.5`` — every division / 1.5 (:meth:`FEOptions.refined` with 1/1.5);
 * ``loads11x6`` — the default mesh, unit loads on an 11 × 6 grid (66 instead of 231);
 * ``loads11x6+mesh/1.5`` — both;
+* ``loads15x8``, ``loads15x8+mesh/1.5``, ``face8+loads11x6`` (8 along the face),
+  ``mesh/1.5,root+loads11x6`` (the fillet and half-slot divisions kept) — the other
+  combinations measured;
+* ``loads31x16`` — the default mesh under a finer load grid (496 unit loads): the load
+  grid's own convergence;
 * ``ci`` — the CI tests' coarse model (tests/test_root_stress.py ``COARSE``).
 """
 
@@ -56,6 +61,7 @@ def variants() -> dict:
         "mesh/1.5,root+loads11x6": dataclasses.replace(
             d.refined(1 / 1.5), fillet_divisions=d.fillet_divisions,
             slot_divisions=d.slot_divisions, load_nu=11, load_nv=6),
+        "loads31x16": dataclasses.replace(d, load_nu=31, load_nv=16),
         "ci": FEOptions(face_divisions=4, across_divisions=2, flank_divisions=3,
                         slot_divisions=1, rim_divisions=2, fillet_divisions=2, load_nu=5,
                         load_nv=4),

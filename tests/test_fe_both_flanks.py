@@ -27,9 +27,9 @@ def test_the_other_flank_from_the_same_build_equals_a_build_of_its_own(tmp_path)
     """The gear's drive build with ``other_flank`` leaves its coast entry in the cache
     (its own key and checksum, read back by ``read_cache_entry``), equal to a separate
     coast build in every data variable within 1e-10 of the variable's largest magnitude
-    (round-off of a repeated factorisation; measured 0, bit for bit, with CHOLMOD's AMD
-    ordering) and with the same coordinates; a second call finds both cached and builds
-    nothing. ~10 s of CPU (three coarse builds' worth)."""
+    (the same matrix and loads: what a repeated factorisation may change is round-off)
+    and with the same coordinates; a second call finds both cached and builds nothing.
+    ~10 s of CPU (three coarse builds' worth)."""
     case = _case()
     both, alone = tmp_path / "both", tmp_path / "alone"
     drive = influence_coefficients(case, "gear", "drive", COARSE, cache_dir=both,
