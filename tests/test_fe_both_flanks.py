@@ -70,3 +70,28 @@ def test_without_the_cache_the_other_flank_is_not_built(tmp_path, monkeypatch):
     influence_coefficients(_case(), "gear", "drive", COARSE, cache=False, cache_dir=tmp_path,
                            progress=False, other_flank=True)
     assert calls == [] and list(tmp_path.iterdir()) == []
+
+
+def test_the_development_builds_both_flanks_of_each_member_and_survives_a_failure(
+        monkeypatch, caplog):
+    """``both_flanks_built`` (called by the development before its drive check where the
+    coast flank is checked too) asks each member's default model for its drive flank with
+    ``other_flank``, and a member whose model fails is logged, not raised: its checks then
+    build their own and say why (as before). Milliseconds: the builds are stubbed."""
+    import logging
+
+    import contact.compliance.fe as fe
+    from contact.optimize.development_root import both_flanks_built
+
+    calls = []
+
+    def fake(case, member, flank="drive", options=None, **kw):
+        calls.append((member, flank, options, kw.get("other_flank")))
+        if member == "pinion":
+            raise RuntimeError("mapped fillet inverted")
+
+    monkeypatch.setattr(fe, "influence_coefficients", fake)
+    with caplog.at_level(logging.INFO, logger="contact.optimize.development_root"):
+        both_flanks_built(_case())
+    assert calls == [("pinion", "drive", None, True), ("gear", "drive", None, True)]
+    assert "pinion's FE models of both flanks not built: mapped fillet inverted" in caplog.text
