@@ -4,23 +4,22 @@ factorisation. The reference is a build of that flank of its own: the same solid
 same stiffness and the same loads, so the coefficients must agree to round-off (the
 factorisation is repeated on the same matrix with the same ordering)."""
 
-from pathlib import Path
-
 import numpy as np
 import xarray as xr
 
+from contact.catalogue import bundled_case_path
 from contact.compliance.fe import FEOptions, cache_key, cache_path, influence_coefficients
 from contact.compliance.fe.options import member_flank
 from geometry.case import load_case
 
-ROOT = Path(__file__).resolve().parents[1]
 #: the coarse model of the CI tests (tests/test_fe_tooth.py)
 COARSE = FEOptions(face_divisions=4, across_divisions=2, flank_divisions=3, slot_divisions=1,
                    rim_divisions=2, fillet_divisions=2, load_nu=5, load_nv=4)
 
 
 def _case():
-    return load_case(ROOT / "cases" / "kolivand2009_fm_11x41_reference.toml")
+    """The default case (kolivand2009_fm_11x41_reference)."""
+    return load_case(bundled_case_path())
 
 
 def test_the_other_flank_from_the_same_build_equals_a_build_of_its_own(tmp_path):
