@@ -94,3 +94,26 @@ def test_the_development_builds_both_flanks_of_each_member_and_survives_a_failur
         both_flanks_built(_case())
     assert calls == [("pinion", "drive", None, True), ("gear", "drive", None, True)]
     assert "pinion's FE models of both flanks not built: mapped fillet inverted" in caplog.text
+
+
+def test_a_failing_other_flank_leaves_this_flanks_result_and_cache(tmp_path, monkeypatch,
+                                                                     caplog):
+    """Where the other flank's build fails, the asked flank's coefficients are returned and
+    cached as without ``other_flank`` and the failure is a warning naming the member; no
+    entry of the other flank is left. A coarse build's worth of CPU."""
+    import logging
+
+    import contact.compliance.fe.influence as influence
+
+    def broken(model):
+        raise influence.LTCAError("the other flank's load grid reaches beyond its flank")
+
+    monkeypatch.setattr(influence, "_other_flank_model", broken)
+    case = _case()
+    with caplog.at_level(logging.WARNING, logger="contact.compliance.fe.influence"):
+        ds = influence_coefficients(case, "gear", "drive", COARSE, cache_dir=tmp_path,
+                                    progress=False, other_flank=True)
+    assert ds.attrs["flank"] == member_flank(case, "gear", "drive")
+    assert [p.name for p in tmp_path.glob("fe-*")] == [
+        cache_path(ds.attrs["cache_key"], tmp_path).name]
+    assert "gear: the other flank's influence coefficients not built" in caplog.text

@@ -743,8 +743,10 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     other_flank : bool — where this flank's coefficients are built (not read from the
         cache) and ``cache`` is on, also build and cache the member's other flank's from
         the same solid and factorisation (:func:`_other_flank_model`) unless that entry
-        is cached: the drive and coast flanks of a design for ~1.6 times one flank's
-        build instead of twice (``ltca synthesize`` checks both; docs/fe.md, Cost)
+        is cached: the drive and coast flanks of a design for ~1.5 times one flank's
+        build instead of twice (``ltca synthesize`` checks both; docs/fe.md, Cost). A
+        failure of the other flank's build is logged (a warning), not raised: this
+        flank's coefficients are returned as without it
 
     Returns
     -------
@@ -820,7 +822,12 @@ def influence_coefficients(case, member: str, flank: str = "drive",
         if cache:
             ds = _cached(ds, case, member, path, key, checkpoint)
         if cache and other_flank:
-            _other_flank_entry(model, case, member, opt, cache_dir, progress)
+            try:
+                _other_flank_entry(model, case, member, opt, cache_dir, progress)
+            except Exception as exc:  # this flank's result stands; the other's own build
+                # (when asked for) raises its error where it belongs
+                log.warning("%s %s: the other flank's influence coefficients not built "
+                            "on this factorisation: %s", case.name, member, exc)
     finally:
         model.factor.close()
     progress_line(progress, f"FE {member} influence coefficients built in "
