@@ -100,7 +100,7 @@ def both_flanks_built(case) -> None:
     (:func:`contact.compliance.fe.influence_coefficients` with ``other_flank``: the coast
     flank's coefficients on the drive build's solid and factorisation, the same numbers as
     a build of their own), cached for the drive flank's root-stress check, the coast
-    flank's and ``ltca run`` afterwards: ~1.5 builds per member instead of 2 (issue 75).
+    flank's and ``ltca run`` afterwards: 1.4–1.5 builds per member instead of 2 (issue 75).
     Nothing where both are cached. A failure is logged and not raised: each check then
     builds (or fails to build) its own model and says so, as before."""
     from contact.compliance.fe import influence_coefficients

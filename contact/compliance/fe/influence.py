@@ -743,7 +743,7 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     other_flank : bool — where this flank's coefficients are built (not read from the
         cache) and ``cache`` is on, also build and cache the member's other flank's from
         the same solid and factorisation (:func:`_other_flank_model`) unless that entry
-        is cached: the drive and coast flanks of a design for ~1.5 times one flank's
+        is cached: the drive and coast flanks of a design for ~1.4 times one flank's
         build instead of twice (``ltca synthesize`` checks both; docs/fe.md, Cost). A
         failure of the other flank's build is logged (a warning), not raised: this
         flank's coefficients are returned as without it
