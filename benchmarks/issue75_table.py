@@ -10,7 +10,11 @@ waited for, so the FE build's solver worker counts; the largest of them, not the
 
 * ``design`` — a new design from basic data to its verdict: ``ltca synthesize`` of
   ``tests/data/designs/pc_hypoid_10x43.toml`` and a cold ``ltca run`` of the case it
-  writes (an empty FE cache; the numba cache as this machine has it);
+  writes, both with one FE cache that is empty at the start (a new design: the FE models
+  synthesize builds for its root-stress checks are there for ``ltca run``, as on a user's
+  machine; before 2026-11-25 synthesize used the user's cache and the run an empty one,
+  so the drive models were built twice, or synthesize's not at all where the user's cache
+  held them); the numba cache as this machine has it;
 * ``cold`` — the first ``ltca run`` of the default case on a fresh machine: empty numba
   cache (``NUMBA_CACHE_DIR``) and empty FE cache (``HYPOID_LTCA_CACHE``), both temporary
   directories;
@@ -94,9 +98,13 @@ def _cli(*words) -> list[str]:
 
 def row_design(tmp: Path) -> list[list]:
     case = tmp / "design.toml"
-    s = child(_cli("synthesize", DESIGN, "-o", case, "-q"), log=tmp / "synthesize.log")
-    r = child(_cli("run", case, "-o", tmp / "design.nc", "-q"),
-              env={"HYPOID_LTCA_CACHE": str(tmp / "fe-design")}, log=tmp / "design-run.log")
+    # one empty FE cache for both commands, as on the user's machine: a new design has no
+    # FE model in it, synthesize builds what it checks and ltca run reads what it finds
+    fe = {"HYPOID_LTCA_CACHE": str(tmp / "fe-design")}
+    s = child(_cli("synthesize", DESIGN, "-o", case, "-q"), env=fe,
+              log=tmp / "synthesize.log")
+    r = child(_cli("run", case, "-o", tmp / "design.nc", "-q"), env=fe,
+              log=tmp / "design-run.log")
     return [["new design: synthesize", s[0], s[1], ""],
             ["new design: cold run (empty FE cache)", r[0], r[1], ""],
             ["new design: basic data to verdict", s[0] + r[0], max(s[1], r[1]),

@@ -567,6 +567,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     root_safety, root_text = math.nan, ""
     given = (basic.options.design_torque is not None
              or basic.rating.get("design_torque") is not None)
+    if root_stress and coast.best is not None:
+        from contact.optimize.development_root import both_flanks_built
+
+        both_flanks_built(case)  # the drive and coast checks' FE models, one build each
     if root_stress and not given:
         # the FE root stress of the written case at the design torque (ltca run's FE
         # model, cached: ltca run reads it), the torque lowered to its capacity if below

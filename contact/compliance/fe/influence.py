@@ -470,6 +470,39 @@ def progress_line(progress, text: str) -> None:
         print(text, file=sys.stderr, flush=True)
 
 
+def _other_flank_model(model: InfluenceModel) -> InfluenceModel:
+    """The same member's model loaded on its other flank: the solid, stiffness,
+    factorisation and fillet points of ``model`` shared, the load grid (its profile
+    limits follow that flank, :func:`load_v_limits`), the hat loads and the mid-surface
+    functionals of that flank's side made as :func:`build_influence_model` makes them —
+    so its coefficients are those of a build of their own, without a second solid,
+    assembly and factorisation (issue 75: ``ltca synthesize`` checks both flanks).
+
+    Parameters
+    ----------
+    model : InfluenceModel — built, its factorisation open
+
+    Returns
+    -------
+    InfluenceModel — ``times`` holds the shared phases' times as ``model`` has them and
+        the new loads' own
+    """
+    solid, opt = model.solid, model.solid.options
+    t1 = time.perf_counter()
+    flank = _other(model.flank)
+    grid_v = np.linspace(*load_v_limits(solid.sections, flank, opt), opt.load_nv)
+    side = solid.sections.side_name(flank)
+    loads, centre, area = {}, {}, None
+    for t in model.offsets:
+        loads[t], a, centre[t] = _flank_loads(solid, model.elastic, t, side, model.grid_u,
+                                              grid_v)
+        if t == 0:
+            area = a
+    times = dict(model.times, loads_and_points=time.perf_counter() - t1)
+    return dataclasses.replace(model, flank=flank, side=side, grid_v=grid_v, loads=loads,
+                               centre=centre, hat_area=area, times=times)
+
+
 def influence_dataset(model: InfluenceModel, case, *, progress: bool | str = True,
                       key: str = "", checkpoint=None) -> xr.Dataset:
     """Solve the unit loads of a model and gather the influence coefficients.
@@ -689,7 +722,8 @@ def _grid_positions(model: InfluenceModel) -> np.ndarray:
 def influence_coefficients(case, member: str, flank: str = "drive",
                            options: FEOptions | None = None, *, cache: bool = True,
                            cache_dir: str | os.PathLike[str] | None = None,
-                           progress: bool | str = True, solver: str = "auto") -> xr.Dataset:
+                           progress: bool | str = True, solver: str = "auto",
+                           other_flank: bool = False) -> xr.Dataset:
     """A member's FE influence coefficients, from the cache or built and cached.
 
     Parameters
@@ -706,6 +740,13 @@ def influence_coefficients(case, member: str, flank: str = "drive",
         estimate of the last builds in this cache, then the loads solved with the rate
         and the remaining time, as the studies print when not on a terminal)
     solver : str — ``"auto"`` (CHOLMOD, else PARDISO, else SuperLU) or a solver name
+    other_flank : bool — where this flank's coefficients are built (not read from the
+        cache) and ``cache`` is on, also build and cache the member's other flank's from
+        the same solid and factorisation (:func:`_other_flank_model`) unless that entry
+        is cached: the drive and coast flanks of a design for ~1.4 times one flank's
+        build instead of twice (``ltca synthesize`` checks both; docs/fe.md, Cost). A
+        failure of the other flank's build is logged (a warning), not raised: this
+        flank's coefficients are returned as without it
 
     Returns
     -------
@@ -778,19 +819,50 @@ def influence_coefficients(case, member: str, flank: str = "drive",
         checkpoint = BlockCheckpoint(path, key) if cache else None
         ds = influence_dataset(model, case, progress=progress, key=key,
                                checkpoint=checkpoint)
+        if cache:
+            ds = _cached(ds, case, member, path, key, checkpoint)
+        if cache and other_flank:
+            try:
+                _other_flank_entry(model, case, member, opt, cache_dir, progress)
+            except Exception as exc:  # this flank's result stands; the other's own build
+                # (when asked for) raises its error where it belongs
+                log.warning("%s %s: the other flank's influence coefficients not built "
+                            "on this factorisation: %s", case.name, member, exc)
     finally:
         model.factor.close()
-    if cache:
-        try:
-            ds = write_cache_entry(ds, path, key)
-        except OSError as exc:  # read-only or full: used from memory, said (issue 72)
-            ds = not_written(ds, path, exc)
-        else:
-            checkpoint.clear()
-            log.info("%s %s influence coefficients cached in %s", case.name, member, path)
     progress_line(progress, f"FE {member} influence coefficients built in "
                             f"{time.perf_counter() - t0:.0f} s")
     return ds
+
+
+def _cached(ds: xr.Dataset, case, member: str, path, key: str,
+            checkpoint: BlockCheckpoint) -> xr.Dataset:
+    """``ds`` written to the cache as ``path`` (its block checkpoints removed), or marked
+    as not written where the file system refuses (issue 72)."""
+    try:
+        ds = write_cache_entry(ds, path, key)
+    except OSError as exc:  # read-only or full: used from memory, said (issue 72)
+        return not_written(ds, path, exc)
+    checkpoint.clear()
+    log.info("%s %s influence coefficients cached in %s", case.name, member, path)
+    return ds
+
+
+def _other_flank_entry(model: InfluenceModel, case, member: str, opt: FEOptions,
+                       cache_dir, progress) -> None:
+    """The other flank's coefficients of ``model``'s member built on its factorisation and
+    cached, unless an entry of them is cached already."""
+    name = _other(model.flank)
+    key = cache_key(case.member(member), name, opt)
+    path = cache_path(key, cache_dir)
+    if read_cache_entry(path, key) is not None:
+        return
+    progress_line(progress, f"FE {member} influence coefficients of {case.name} ({name} "
+                            f"flank) on the same factorisation")
+    other = _other_flank_model(model)
+    checkpoint = BlockCheckpoint(path, key)
+    _cached(influence_dataset(other, case, progress=progress, key=key,
+                              checkpoint=checkpoint), case, member, path, key, checkpoint)
 
 
 def _estimate_text(cache_dir) -> str:
