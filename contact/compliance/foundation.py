@@ -65,13 +65,13 @@ tooth deflection (seed ref. [3.9], not reproduced).
 
 from __future__ import annotations
 
-import functools
 import logging
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.validation import broadcast, real, real_array
 
@@ -190,11 +190,12 @@ def sainsot_coefficients(radius_ratio: float, root_half_angle: float) -> dict[st
     }
 
 
-@functools.lru_cache(maxsize=64)
+@memoised(maxsize=64)
 def _warn_indefinite(radius_ratio: float, root_half_angle: float) -> None:
     """Say once per process and foundation (h_f, θ_f) that Sainsot's coefficients give an
     indefinite base coupling: a development builds the same tooth's compliance for each of
-    its dozens of trials, and a line per trial buried its progress lines."""
+    its dozens of trials, and a line per trial buried its progress lines. A memo: after
+    ``clear_caches`` it is said again."""
     log.warning(
         "Sainsot coefficients give an indefinite base coupling (h_f=%.3g, theta_f=%.3g): "
         "the fit (Sainsot et al. 2004) is extrapolated there; said once per tooth",
