@@ -178,6 +178,7 @@ class OperatingConditions:
         Returns
         -------
         friction.lubricant.Lubricant
+            The oil's properties and sources, the same object at every call.
 
         Raises
         ------
