@@ -356,7 +356,7 @@ def _rating_step(method: str) -> Callable[[ChainState], None]:
         if entry is not None and "flash_temperature" in entry.companions:
             flash, why = _flash_temperature_or_reason(
                 rating, state.groups.get("/friction"),
-                None if state.operating is None else state.operating.lubricant)
+                None if state.operating is None else state.operating.oil())
             if flash is not None:  # stored beside the rating it is computed on
                 state.groups["/rating/flash_temperature"] = flash
             else:  # the verdict's "not checked: scuffing_standard" says why
@@ -392,9 +392,10 @@ def load_capacity_without_rating(state: ChainState) -> None:
         return
     from contact.load_capacity.scuffing_micropitting import scuffing_micropitting
 
+    # the oil as the efficiency step read it (read once: OperatingConditions.oil)
     state.groups["/scuffing_micropitting"] = scuffing_micropitting(
         state.groups["/ltca"], friction,
-        lubricant=None if state.operating is None else state.operating.lubricant)
+        lubricant=None if state.operating is None else state.operating.oil())
 
 
 def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None,
@@ -429,7 +430,7 @@ def scuffing_flash_temperature(rating: xr.Dataset, friction: xr.Dataset | None,
 
 
 def _flash_temperature_or_reason(rating: xr.Dataset, friction: xr.Dataset | None,
-                                 lubricant: str | os.PathLike[str] | None
+                                 lubricant: Any
                                  ) -> tuple[xr.Dataset | None, str]:
     """:func:`scuffing_flash_temperature`'s group, or None with the reason it could not be
     computed (the verdict's "not checked" says it: e.g. a virtual transverse contact ratio

@@ -265,7 +265,6 @@ def _warn_switches(**given) -> None:
                       "chain')", DeprecationWarning, stacklevel=4)
 
 
-@blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ...], str]:
     """The pinion torques [N·m] an analysis of ``flank`` runs at by default, and why.
 
@@ -309,6 +308,7 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
                      f"design torque {float(design):g} N m)")
 
 
+@blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
     torque=None,

@@ -177,7 +177,7 @@ def efficiency_analysis(
         friction_model=friction_model,
     )
     e_prime = _effective_modulus(ltca, youngs_modulus, poisson_ratio)
-    oil = _oil_at_inlet(op.lubricant, op.temperature)
+    oil = _oil_at_inlet(op.oil(), op.temperature)
     # the film and μ on the flanks' roughness in their surface state (run-in by default,
     # friction.operating.RUNNING_IN_FACTORS); λ_GF of the durability checks on Rq as given
     rq = op.effective_roughness
@@ -295,9 +295,9 @@ class _Oil(NamedTuple):
     boundary_friction_notes: list[str]
 
 
-def _oil_at_inlet(lubricant: str, temperature: float) -> _Oil:
+def _oil_at_inlet(lubricant, temperature: float) -> _Oil:
     """Name, η₀ [Pa s], α [1/GPa], β [1/K], k [W/(m K)] and the film-traction parameters
-    of the lubricant (bundled name or TOML path) at the inlet temperature [degC] — the
+    of the lubricant (bundled name, TOML path or the oil read) at the inlet temperature [degC] — the
     boundary friction μ_b [1] too, a table's interpolated there
     (:func:`friction.lubricant.boundary_friction_coefficient`; no flash temperature), with
     the range warning where it lies outside the table's measured range."""

@@ -1124,16 +1124,18 @@ def lubricant_from_mapping(data: Mapping[str, Any], origin: str = "<mapping>") -
 
 
 @renamed_keywords(path_or_name="lubricant")
-def load_lubricant(lubricant: str | Path) -> Lubricant:
+def load_lubricant(lubricant: str | Path | Lubricant) -> Lubricant:
     """Load a lubricant by bundled name (e.g. ``"75W90"``) or from a TOML file path.
 
     Parameters
     ----------
-    lubricant : str or Path
+    lubricant : str, Path or Lubricant
         A bundled name (case-insensitive; see :func:`available_lubricants`: a bundled
         file's or an oil library grade's, :mod:`friction.oil_library`) or the path
         of a TOML file with the schema of the module docstring (the ``lubricant`` of
-        :class:`friction.OperatingConditions`; old name ``path_or_name``, deprecated).
+        :class:`friction.OperatingConditions`; old name ``path_or_name``, deprecated);
+        an oil already read is returned as it is (:meth:`friction.OperatingConditions.oil`
+        reads the conditions' oil once for an analysis' steps).
 
     Returns
     -------
@@ -1154,6 +1156,8 @@ def load_lubricant(lubricant: str | Path) -> Lubricant:
     Source: bundled files in ``friction/data`` (75W90: seed Table 5.2, thermal
     conductivity assumed — see the file's header).
     """
+    if isinstance(lubricant, Lubricant):
+        return lubricant
     bundled = {k.lower(): v for k, v in _bundled().items()}
     key = str(lubricant).lower()
     if isinstance(lubricant, str) and key in {n.lower() for n in _library_names()}:

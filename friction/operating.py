@@ -170,6 +170,29 @@ class OperatingConditions:
         :data:`RUNNING_IN_FACTORS` [``surface_state``]."""
         return self.roughness * RUNNING_IN_FACTORS[self.surface_state]
 
+    def oil(self):
+        """The oil :attr:`lubricant` names, read once per conditions object and kept on it
+        (the conditions are frozen): an analysis' efficiency, scuffing and flash-temperature
+        steps read the same oil (:func:`friction.lubricant.load_lubricant`, ~2 ms each).
+
+        Returns
+        -------
+        friction.lubricant.Lubricant
+            The oil's properties and sources, the same object at every call.
+
+        Raises
+        ------
+        InputError, ModelUnavailableError
+            As :func:`friction.lubricant.load_lubricant`.
+        """
+        oil = self.__dict__.get("_oil")
+        if oil is None:
+            from friction.lubricant import load_lubricant
+
+            oil = load_lubricant(self.lubricant)
+            object.__setattr__(self, "_oil", oil)
+        return oil
+
     def check_oil_temperature(self) -> None:
         """Refuse an inlet temperature outside the oil's data range
         (:func:`friction.lubricant.temperature_range`) now, before an analysis, rather than
@@ -181,9 +204,9 @@ class OperatingConditions:
             ``temperature: must be in [5, 140] [degC] for the lubricant '75W90' (its
             data and extrapolation margins), got 150``; an unreadable oil file.
         """
-        from friction.lubricant import load_lubricant, temperature_range
+        from friction.lubricant import temperature_range
 
-        lo, hi = temperature_range(load_lubricant(self.lubricant))
+        lo, hi = temperature_range(self.oil())
         if not lo <= self.temperature <= hi:
             raise InputError(f"temperature: must be in [{lo:g}, {hi:g}] [degC] for the "
                              f"lubricant {str(self.lubricant)!r} (its data and extrapolation "

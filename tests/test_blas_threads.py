@@ -51,6 +51,28 @@ def test_the_environment_chooses(clean_env):
             assert _threads() == before
 
 
+
+def test_run_analysis_runs_with_one_thread(clean_env):
+    """The analysis' own steps see the limit (issue 75: the decorator had slipped onto a
+    helper inserted above ``run_analysis``, and a warm analysis ran its shell products on
+    two spinning threads: 3.5x its CPU on the shared 2-core machine). A user's first step
+    records the threads and stops the run."""
+    from contact import run_analysis
+    from geometry.core.errors import PluginError
+
+    seen = []
+
+    def look(state):
+        seen.append(_threads())
+        raise RuntimeError("stop here")
+
+    with threadpool_limits(limits=2, user_api="blas"):
+        outside = _threads()
+        with pytest.raises(PluginError, match="stop here"):
+            run_analysis(None, [250.0], steps={"geometry": look})
+        assert _threads() == outside
+    assert seen and set(seen[0]) == {1}
+
 @pytest.mark.parametrize("value", ["two", "-1", "1.5"])
 def test_a_bad_variable_is_named(clean_env, value):
     clean_env.setenv("HYPOID_LTCA_BLAS_THREADS", value)

@@ -135,6 +135,25 @@ def test_with_diagonal_is_the_constructors_problem():
         first.with_diagonal(d[:-1], s2)
 
 
+
+def test_renamed_is_the_same_problem_unchecked(monkeypatch):
+    """A repeated roll's problem under its own name: every array and derived value the
+    same (the arrays shared, read-only), no second Cholesky."""
+    import contact.qp.problem as problem_module
+
+    C, s, R, T = _good(6)
+    first = ContactProblem(C, s, R, T, name="roll 3", upper_bound=np.full(6, 1e6))
+    monkeypatch.setattr(problem_module, "_check_positive_definite",
+                        lambda C: pytest.fail("checked again"))
+    got = first.renamed("roll 23")
+    assert (got.name, first.name) == ("roll 23", "roll 3")
+    for name in ("compliance", "separation", "moment_arm", "upper_bound", "bounded"):
+        assert getattr(got, name) is getattr(first, name)
+    assert (got.torque, got.scale, got.asymmetry, got.has_bounds) == (
+        first.torque, first.scale, first.asymmetry, first.has_bounds)
+    with pytest.raises(ValueError):
+        got.compliance[0, 0] = 1.0
+
 def test_with_diagonal_skips_the_cholesky_only_where_weyl_proves_it(monkeypatch):
     """A diagonal nowhere below the (checked) problem's keeps C positive definite (Weyl's
     inequality: λ_min(A + D) ≥ λ_min(A) for D ≥ 0), so no Cholesky is paid; one entry below

@@ -97,3 +97,27 @@ def test_the_command_line_takes_its_defaults_from_the_dataclass():
     assert op.friction_model == DEFAULT_FRICTION_MODEL
     assert OperatingConditions.from_point(OperatingPoint()).friction_model == (
         DEFAULT_FRICTION_MODEL)
+
+
+def test_the_oil_is_read_once_per_conditions(monkeypatch):
+    """OperatingConditions.oil reads the oil once and keeps it (an analysis' efficiency,
+    scuffing and flash-temperature steps share it; issue 75); load_lubricant returns an
+    oil already read as it is; a new conditions object reads its own."""
+    import dataclasses
+
+    import friction.lubricant as lubricant_module
+    from friction import OperatingConditions
+
+    reads = []
+    real = lubricant_module.load_lubricant
+    monkeypatch.setattr(lubricant_module, "load_lubricant",
+                        lambda name: (reads.append(name), real(name))[1])
+    op = OperatingConditions(lubricant="75W90")
+    oil = op.oil()
+    op.check_oil_temperature()
+    assert op.oil() is oil and reads == ["75W90"]
+    assert real(oil) is oil
+    assert oil == real("75W90")
+    other = dataclasses.replace(op, temperature=80.0)
+    assert other.oil() == oil and reads == ["75W90", "75W90"]
+    assert other == dataclasses.replace(op, temperature=80.0)  # the kept oil is no field

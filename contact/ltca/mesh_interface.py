@@ -295,12 +295,18 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     NT, J = ltca.sizes["torque"], ltca.sizes["roll"]
     index = {float(t): i for i, t in enumerate(torques)}
     k_theta = np.full((NT, J), np.nan)
+    # rolls whole mesh cycles apart share their problem's arrays and their solution
+    # (ContactProblem.renamed): condensed once
+    done: dict[tuple[int, int, int], float] = {}
     for rp in problems:
         it = index.get(float(rp.torque))
         if it is None or not 0 <= rp.roll < J:
             raise InputError(f"problems: torque {rp.torque:g} N m, roll {rp.roll} is not "
                              "of this analysis")
-        k_theta[it, rp.roll] = condensed_stiffness(rp.problem, rp.solution)
+        key = (id(rp.problem.compliance), id(rp.problem.moment_arm), id(rp.solution))
+        if key not in done:
+            done[key] = condensed_stiffness(rp.problem, rp.solution)
+        k_theta[it, rp.roll] = done[key]
     ag, og = (np.asarray(ltca.attrs[k], float) for k in ("gear_axis", "gear_origin_mm"))
     ap, op = (np.asarray(ltca.attrs[k], float) for k in ("pinion_axis", "pinion_origin_mm"))
     force = ltca["force"].values

@@ -186,8 +186,8 @@ def _repeat_roll(an: _Analysis, cont: _Continuation, src: int, j: int) -> None:
     for it, T in enumerate(an.setup.torques):
         if an.sink is not None and (it, src) in cont.problems:
             problem, solution = cont.problems[it, src]
-            an.sink(RollProblem(float(T), j, dataclasses.replace(
-                problem, name=f"{an.setup.case.name} roll {j} T {T:g}"), solution))
+            an.sink(RollProblem(float(T), j, problem.renamed(
+                f"{an.setup.case.name} roll {j} T {T:g}"), solution))
 
 
 def _solve_roll(an: _Analysis, cont: _Continuation, j: int, it: int) -> None:

@@ -32,6 +32,7 @@ a backend (:func:`contact_residuals`).
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import logging
 import math
@@ -274,6 +275,28 @@ class ContactProblem:
         object.__setattr__(new, "name", self.name)
         new._set_checked(C, s, self.moment_arm, self.torque, self.upper_bound, self._bounded,
                          asym, skew)
+        return new
+
+    def renamed(self, name: str) -> ContactProblem:
+        """The same problem under another ``name``, without checking it again.
+
+        ``dataclasses.replace(problem, name=…)`` would symmetrise, measure and factorise C
+        once more (a Cholesky per call: the LTCA's rolls whole mesh cycles apart share
+        their problems, issue 75); the checked arrays are read-only and are shared.
+
+        Parameters
+        ----------
+        name : str
+            The new name.
+
+        Returns
+        -------
+        ContactProblem
+            Every field but ``name`` this problem's (:attr:`asymmetry` too: that of the
+            compliance as first given).
+        """
+        new = copy.copy(self)
+        object.__setattr__(new, "name", str(name))
         return new
 
     @property

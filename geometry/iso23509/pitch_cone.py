@@ -628,12 +628,16 @@ def _solve_shape(
         if crosses(g(lo), g(hi)):
             bracket = (lo, hi)
     if bracket is None:
+        # the shapes in order, up to the first crossing (the shapes beyond it are not
+        # needed: each costs a Brent solve of the hypoid state)
         xs = [1e-3 + (1.0 - 2e-3) * i / (_N_SHAPES - 1) for i in range(_N_SHAPES)]
-        gs = [g(x) for x in xs]
-        bracket = next(
-            ((xs[i], xs[i + 1]) for i in range(_N_SHAPES - 1) if crosses(gs[i], gs[i + 1])),
-            None,
-        )
+        g_prev = g(xs[0])
+        for i in range(_N_SHAPES - 1):
+            g_next = g(xs[i + 1])
+            if crosses(g_prev, g_next):
+                bracket = (xs[i], xs[i + 1])
+                break
+            g_prev = g_next
         if bracket is None:
             return None
     x = brentq(g, *bracket, xtol=1e-15, rtol=1e-15, maxiter=200)
