@@ -481,8 +481,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     torque is the rating's capacity (the default) and the chosen design's flank peak
     pressure there exceeds the static strength, the design torque is lowered to the
     bearing's static flank capacity (:func:`_static_capacity`); after the final synthesis,
-    where the written case's FE root stress gives S_F,FE < S_Fmin at the design torque,
-    to its root-stress capacity (:func:`contact.optimize.development_root.root_capacity`;
+    where the written case's FE root stress gives S_F,FE < S_Fmin, or its LTCA peak flank
+    pressure a local pitting safety at long life S_H,loc < S_Hmin, at the design torque,
+    to that capacity (:func:`contact.optimize.development_root.root_capacity`;
     ``root_stress``), the drive and coast flank analysed again at the new torques.
 
     3. **coast flank** (:func:`_coast_development`): the chosen design's coast flank, as
@@ -568,8 +569,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     given = (basic.options.design_torque is not None
              or basic.rating.get("design_torque") is not None)
     if root_stress and not given:
-        # the FE root stress of the written case at the design torque (ltca run's FE
-        # model, cached: ltca run reads it), the torque lowered to its capacity if below
+        # the FE root stress and the local pitting safety of the written case at the
+        # design torque (ltca run's FE model, cached: ltca run reads it), the torque
+        # lowered to its capacity if below (development_root.root_capacity)
         best, root_safety, root_text = _root_capacity(case, best, targets, setup, say)
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
@@ -818,7 +820,7 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
     ``root_stress`` and the ISO 10300 rating of the coast side); ``plastic_limit``: the
     plastic share allowed [1] (the development's ``max_plastic_share``)."""
     from contact.chain import AnalysisChain
-    from contact.optimize.development_root import root_safety
+    from contact.optimize.development_root import pitting_safety, root_safety
     from contact.pipeline import flank_torques, run_analysis
 
     c = _as_run(case, basic, setup, torque)
@@ -832,18 +834,25 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
     lt = tree["/ltca"]
     k = int(np.argmax(lt["torque"].values))
     safety, s_min, member = np.full(len(torques), np.nan), math.nan, ""
+    pit, s_h_min, pit_member = np.full(len(torques), np.nan), math.nan, ""
     if root_stress:
         try:
             safety, s_min, member = root_safety(tree)
         except LookupError as exc:  # the verdict says it; the contact criteria stand
             log.info("development coast root stress not checked: %s", exc)
+        try:  # the local pitting safety at long life (development_root.pitting_safety)
+            pit, s_h_min, pit_member = pitting_safety(tree)
+        except LookupError as exc:
+            log.info("development coast pitting safety not checked: %s", exc)
     grid = (*_grid(tree), static_strength(tree))
     return CoastCheck(float(torques[k]), float(ms["pressure_max_flank"][k]),
                       float(grid[4]), float(np.max(ms["plastic_share"])),
                       float(safety[k]), float(s_min), member,
                       float(safety[1 - k]) if len(torques) == 2 else math.nan,
                       float(torques[1 - k]) if len(torques) == 2 else math.nan,
-                      (ms, grid, tuple(float(t) for t in torques)), plastic_limit)
+                      (ms, grid, tuple(float(t) for t in torques)), plastic_limit,
+                      float(pit[k]), s_h_min, pit_member,
+                      float(pit[1 - k]) if len(torques) == 2 else math.nan)
 
 
 def _coast_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
