@@ -563,7 +563,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     coast = _coast_development(developed, best, targets, coast_setup, teeth, memo, say,
                                make)
     coast_seconds = time.process_time() - c_coast
-    developed = coast.basic
+    pre_coast, developed = developed, coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
     root_safety, root_text = math.nan, ""
     given = (basic.options.design_torque is not None
@@ -583,6 +583,14 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         given_coast = basic.rating.get("coast_design_torque") is not None
         coast, coast_cap = _coast_capacity(case, basic, coast, targets, setup, start,
                                            root_stress, not (given or given_coast), say)
+        again = _coast_at_its_torque(pre_coast, best, targets, setup, teeth, memo, say, make,
+                                     coast, coast_cap, coast_setup["torques"][1])
+        if again is not None:  # the coast flank developed again at its own design torque
+            coast, developed = again, again.basic
+            case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
+            coast, coast_cap = _coast_capacity(case, basic, coast, targets, setup,
+                                               coast_cap.torque, root_stress,
+                                               not (given or given_coast), say)
     coast_seconds += time.process_time() - c_cap
     tolerance = {}
     for lab, mis in _excursions(targets):
@@ -1222,6 +1230,51 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     return _CoastOutcome(basic_of(chosen.values), chosen, evals, "developed", m0, torques)
 
 
+
+
+#: the coast design torque, as a fraction of the torque the coast flank was developed at,
+#: below which :func:`_coast_at_its_torque` develops it again at its own design torque [1]
+COAST_REDEVELOP = 0.9
+
+
+def _coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
+                         targets: DevelopmentTargets, setup: dict[str, Any],
+                         teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                         make: Callable[[BasicDesign], Case], coast: _CoastOutcome,
+                         cap: CoastCapacity | None, developed_at: float
+                         ) -> _CoastOutcome | None:
+    """The coast flank developed again where its design torque was lowered well below the
+    torque it was developed at (below :data:`COAST_REDEVELOP` × ``developed_at``: its own
+    static, plastic, root-stress or local pitting capacity, :func:`_coast_capacity`), now at
+    the torques ``ltca run --flank coast`` analyses (the case's light torque and the new
+    coast design torque): :func:`_coast_development` from the coast flank as synthesised
+    (``pre_coast``, the developed drive flank with the basic file's coast prescriptions),
+    with the budget ``coast_max_evaluations``. Returns its outcome where its chosen design
+    scores better at those torques than the design chosen first does there (``coast``,
+    whose metrics :func:`_coast_capacity` measured at them), else None.
+
+    Why: the relief that keeps a coast bearing elastic at a torque its flank cannot carry
+    costs LTE at the torque it can (issue 71, the e-axle 11×39 at Σ 80°: developed at
+    292.9 N·m with 30 µm tip relief and a −0.3° blade-angle change, its coast LTE p-p was
+    72 µrad at its root-stress capacity 143.8 N·m)."""
+    if (cap is None or not cap.lowered or coast.best is None
+            or cap.torque >= COAST_REDEVELOP * developed_at
+            or targets.coast_max_evaluations == 0):
+        return None
+    say(f"development: coast flank developed again at its own design torque "
+        f"{cap.torque:.4g} N m (it was developed at {developed_at:.4g} N m)")
+    redo_setup = dict(setup, torques=[setup["torques"][0], cap.torque])
+    again = _coast_development(pre_coast, drive, targets, redo_setup, teeth, memo, say, make)
+    old, new = coast.best, again.best
+    if new is None or old.full is None or new.full is None:
+        return None
+    if (not new.full[2], new.full[0]) < (not old.full[2], old.full[0]):
+        say(f"development: coast flank at {cap.torque:.4g} N m: the design developed there "
+            f"(objective {new.full[0]:.3g}) kept, not the first ({old.full[0]:.3g})")
+        return again
+    say(f"development: coast flank at {cap.torque:.4g} N m: the first design kept "
+        f"(objective {old.full[0]:.3g}; developed there {new.full[0]:.3g})")
+    return None
 
 
 def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
