@@ -113,3 +113,29 @@ def test_the_coast_flank_is_capped_at_its_local_pitting_capacity():
     assert why == "pitting" and t == math.floor(10 * 300.0 * (0.99 * 0.9) ** 3) / 10
     cap = coast_capacity(analyse, 300.0)
     assert cap.holds and cap.torque == t and "S_H,loc 1.01 (pinion) >= S_Hmin 1" in cap.reason
+
+
+def test_a_first_step_far_below_the_capacity_is_brought_back_up(monkeypatch):
+    """A peak that grows as T^0.2 at light load and as T^(1/3) (Hertz) above 20 N·m: the
+    exponent measured between the light and the design torque (0.2) makes the first step
+    land far below the capacity, at 100 (0.99 · 0.801)^5 = 32.5 N·m (S_H,loc 1.16); one
+    step back up with the exponent between the two design torques (1/3, exact above
+    20 N·m) reaches T* 0.99³ = 49.9 N·m, which holds: the torque written is what the
+    bearing carries, not an arbitrary torque below it."""
+    def tree(case, torques):
+        out = _tree(torques)
+        t = np.asarray(torques, float)
+        lt = out["/ltca"].to_dataset()
+        lt["pressure_max_flank"] = ("torque", np.where(
+            t > 20.0, 2000.0 * (t / 100.0) ** (1.0 / 3.0), 2000.0 * (t / 100.0) ** 0.2))
+        out["/ltca"] = lt
+        return out
+
+    monkeypatch.setattr(dr, "_root_tree", tree)
+    setup = {"torques": [15.0, 100.0], "source": "the ISO 10300 capacity"}
+    _, _, text = dr.root_capacity(None, setup, 0.15, lambda line: None)
+    s0 = ALLOW / (2000.0 * math.sqrt(K_A * K_V))
+    t = setup["torques"][1]
+    assert t == pytest.approx(100.0 * (0.99 * s0) ** 3, abs=0.1)
+    assert s0 * (100.0 / t) ** (1.0 / 3.0) >= 1.0
+    assert "b = 0.20 measured (S_H,loc ~ T^-b), then one step back up" in text

@@ -283,12 +283,18 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
         slope = {k: _exponent(new, float(new_safe[k][0][-1]), t, float(safe[k][0][-1]),
                               slope[k], *CRITERIA[k][2][:2])
                  for k in new_safe if k in safe}
+        bad = t
         t, safe = new, new_safe
         fails = _failing(safe)
         if not fails:
             break
     if tree is None:  # no lower torque checked
         return None, root_of(safe), ""
+    if not fails:  # back up inside the bracket where the step landed well below
+        up = _back_up(case, light_load, t, bad, safe, slope, say)
+        if up is not None:
+            tree, torques, safe, t = up
+            used = [*used, ("up", math.nan)]
     what = {"root": "its FE root stress gives", "pitting": "its LTCA peak flank pressure "
             "gives the local pitting safety at long life (sigma_HP / (p_max sqrt(K_A "
             "K_v)), ISO 10300 with the bearing's own load distribution)"}
@@ -297,18 +303,52 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     now = ", ".join(f"{CRITERIA[k][1]} ({m}) is {float(s[-1]):.2f}"
                     f"{' (still below)' if k in fails else ''}"
                     for k, (s, _, m) in safe.items())
-    symbols = "; ".join(dict.fromkeys(CRITERIA[k][1] for k, _ in used))
+    symbols = "; ".join(dict.fromkeys(CRITERIA[k][1] for k, _ in used if k in CRITERIA))
+    down = [u for u in used if u[0] in CRITERIA]
+    up = len(down) < len(used)
     name = ("root-stress" if set(first) == {"root"} else
             "local pitting" if set(first) == {"pitting"} else "root-stress and local pitting")
     source = (f"the {name} capacity of the developed bearing: {was} at the design "
               f"torque {torque:.4g} N m ({setup['source'].split(',')[0].split(':')[0]}); "
-              f"T (0.99 S/S_min)^(1/b) in {len(used)} step"
-              f"{'s' if len(used) > 1 else ''}, b = "
-              f"{'/'.join(f'{b:.2f}' for _, b in used)} measured ({symbols} ~ T^-b) -> "
-              f"{t:.4g} N m, where {now}")
+              f"T (0.99 S/S_min)^(1/b) in {len(down)} step"
+              f"{'s' if len(down) > 1 else ''}, b = "
+              f"{'/'.join(f'{b:.2f}' for _, b in down)} measured ({symbols} ~ T^-b)"
+              f"{', then one step back up with b measured between the two' if up else ''}"
+              f" -> {t:.4g} N m, where {now}")
     say(f"  design torque {torque:.4g} -> {t:.4g} N m: {source}")
     setup.update(torques=torques, source=source, lowered=True)
     return tree, root_of(safe), source
+
+
+def _back_up(case, light_load: float, t: float, bad: float,
+             safe: dict[str, tuple[np.ndarray, float, str]], slope: dict[str, float],
+             say: Callable[[str], None]) -> tuple[Any, list[float], dict, float] | None:
+    """One step back up from the torque ``t`` that holds towards ``bad`` (the last that
+    failed): the least :func:`root_capacity_step` over the criteria from ``t``, with the
+    exponents ``slope`` measured between the two, kept a tenth of the bracket's log-width
+    inside it; analysed, and returned (tree, torques, safeties, torque) where every
+    criterion holds there, else None. Not tried where the estimate is within 1 % of ``t``
+    (the step landed at the capacity, to the margin): a design torque written well below
+    what the bearing carries is a judgement as wrong as one above it."""
+    est = min(root_capacity_step(t, float(s[-1]), s_min, exponent=slope.get(k, 1.0))
+              for k, (s, s_min, _) in safe.items() if float(s[-1]) > 0)
+    if not est > 1.01 * t:
+        return None
+    lo, hi = math.log(t), math.log(bad)
+    x = min(max(math.log(est), lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
+    new = float(f"{math.floor(10.0 * math.exp(x)) / 10.0:.4g}")
+    if not t < new < bad:
+        return None
+    try:
+        step = _root_tree(case, [light_load * new, new])
+        new_safe = _safeties(step)
+    except Exception as exc:  # reported, never fatal: the torque that holds is kept
+        log.info("development capacity check at %g N m failed: %s", new, exc)
+        say(f"development: root stress at {new:.4g} N m not computed ({exc})")
+        return None
+    if _failing(new_safe):
+        return None
+    return step, [light_load * new, new], new_safe, new
 
 
 def _exponent(t1: float, s1: float, t2: float, s2: float, default: float = 1.0,
