@@ -60,6 +60,16 @@ DONE_WHEN = {
 }
 
 
+#: issue 71 item 2 (both flanks, one design torque that holds), measured 2026-11-25 with
+#: each flank's design torque capped at its local pitting capacity and the coast flank
+#: developed again at its own design torque (docs/own_gear_set.md, "One design torque that
+#: holds"): "coast_lte60" LTE p-p <= 60 urad on the coast flank at its light and design
+#: torque, "duty" the default duty cycle (`ltca duty-cycle CASE`, the illustrative
+#: spectrum up to the design torque) not FAIL on pitting. Designs not listed were not
+#: re-measured.
+COAST_DONE_WHEN: dict[str, set[str]] = {}
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("basic", DESIGNS, ids=[p.stem for p in DESIGNS])
 def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys):
@@ -112,3 +122,14 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert not fails, fails
     root = tree["/ltca"]["root_stress_max"].values
     assert np.all(np.isfinite(root)) and np.all(root > 0)
+    coast_met = COAST_DONE_WHEN.get(basic.stem, set())
+    if "coast_lte60" in coast_met:  # at the light and the coast design torque
+        lte = tree["/ltca"]["lte_peak_to_peak"].values
+        assert np.all(lte <= 60.0), lte
+    if "duty" in coast_met:  # the default spectrum up to the design torque
+        nc_duty = tmp_path / f"{basic.stem}_duty.nc"
+        main(["duty-cycle", str(case_path), "--scheduler", "synchronous", "-o", str(nc_duty)])
+        duty = xr.open_datatree(nc_duty)
+        pitting = [f.reason for f in verdict(duty).findings
+                   if f.severity == "fail" and f.check == "damage" and "pitting" in f.reason]
+        assert not pitting, pitting

@@ -588,9 +588,15 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         if again is not None:  # the coast flank developed again at its own design torque
             coast, developed = again, again.basic
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-            coast, coast_cap = _coast_capacity(case, basic, coast, targets, setup,
-                                               coast_cap.torque, root_stress,
-                                               not (given or given_coast), say)
+            first = coast_cap
+            coast, second = _coast_capacity(case, basic, coast, targets, setup,
+                                            first.torque, root_stress,
+                                            not (given or given_coast), say)
+            coast_cap = first if second is None else CoastCapacity(
+                second.torque, first.start, first.checks + second.checks,
+                f"{first.reason}; the coast flank developed again at {first.torque:.4g} N m"
+                + (f", then {second.reason}" if second.lowered else ", where it holds"),
+                second.holds)
     coast_seconds += time.process_time() - c_cap
     tolerance = {}
     for lab, mis in _excursions(targets):
