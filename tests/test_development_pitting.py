@@ -139,3 +139,39 @@ def test_a_first_step_far_below_the_capacity_is_brought_back_up(monkeypatch):
     assert t == pytest.approx(100.0 * (0.99 * s0) ** 3, abs=0.1)
     assert s0 * (100.0 / t) ** (1.0 / 3.0) >= 1.0
     assert "b = 0.20 measured (S_H,loc ~ T^-b), then one step back up" in text
+
+
+def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monkeypatch):
+    """:func:`contact.optimize.development._coast_at_its_torque`: no new search where the
+    coast design torque was not lowered or stayed above 0.9 of the torque the coast flank
+    was developed at; below it, a search at the new torques (the case's light torque, the
+    coast design torque), kept only where it scores better there than the first design."""
+    from contact.optimize import development as dev
+    from contact.optimize.development_coast import CoastCapacity
+    from contact.optimize.development_result import DevelopmentEvaluation
+    from contact.optimize.development_targets import DevelopmentTargets
+
+    def ev(objective: float, met: bool = False) -> DevelopmentEvaluation:
+        return DevelopmentEvaluation(0, {}, {}, objective, {}, met, "", 0.0,
+                                     full=(objective, {}, met), checked=True)
+
+    calls = []
+
+    def search(pre, drive, targets, setup, *args):
+        calls.append(tuple(setup["torques"]))
+        return dev._CoastOutcome("again", ev(1.5), [], "developed", None)
+
+    first = dev._CoastOutcome("first", ev(11.2), [], "developed", None)
+    targets = DevelopmentTargets()
+    setup = {"torques": [43.9, 293.2]}
+    monkeypatch.setattr(dev, "_coast_development", search)
+
+    def again(torque, start=292.9, developed_at=292.9, outcome=first):
+        cap = CoastCapacity(torque, start, (), "", True)
+        return dev._coast_at_its_torque(None, None, targets, setup, None, {},
+                                        lambda line: None, None, outcome, cap, developed_at)
+
+    assert again(292.9) is None and again(270.0) is None and calls == []
+    assert again(142.6).basic == "again" and calls == [(43.9, 142.6)]
+    better_first = first._replace(best=ev(0.5, met=True))
+    assert again(142.6, outcome=better_first) is None
