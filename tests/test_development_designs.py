@@ -71,6 +71,7 @@ COAST_DONE_WHEN: dict[str, set[str]] = {
     "eaxle_hypoid_11x39_s80": {"coast_lte60", "duty"},
     "hypoid_10x37_s75": {"coast_lte60", "duty"},
     "hypoid_5x43": {"coast_lte60", "duty"},
+    "pc_hypoid_10x43": {"coast_lte60", "duty"},
 }
 
 
