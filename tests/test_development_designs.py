@@ -72,6 +72,8 @@ COAST_DONE_WHEN: dict[str, set[str]] = {
     "hypoid_10x37_s75": {"coast_lte60", "duty"},
     "hypoid_5x43": {"coast_lte60", "duty"},
     "pc_hypoid_10x43": {"coast_lte60", "duty"},
+    "spiral_bevel_13x39": {"coast_lte60", "duty"},
+    "truck_hypoid_9x37": {"coast_lte60", "duty"},
 }
 
 
