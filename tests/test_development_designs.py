@@ -79,6 +79,9 @@ COAST_DONE_WHEN: dict[str, set[str]] = {
     "pc_hypoid_10x43": {"coast_lte60", "duty"},
     "spiral_bevel_13x39": {"coast_lte60", "duty"},
     "truck_hypoid_9x37": {"coast_lte60", "duty"},
+    "hypoid_6x41": {"coast_lte60", "duty"},
+    "spiral_bevel_15x45_m0": {"coast_lte60", "duty"},
+    "spiral_bevel_14x35_s70_m0": {"duty"},
 }
 
 
