@@ -60,6 +60,31 @@ DONE_WHEN = {
 }
 
 
+#: designs whose ``ltca run`` FAILs, measured 2026-11-25, with the start of the one reason:
+#: the 14x35 at Σ 70° (undercut toe; its drive bearing is developed elsewhere) at the light
+#: torque of its local pitting capacity, 26.8 N·m: LTE spread 0.58
+RUN_FAILS = {"spiral_bevel_14x35_s70_m0": "LTE spread:"}
+
+#: issue 71 item 2 (both flanks, one design torque that holds), measured 2026-11-25 with
+#: each flank's design torque capped at its local pitting capacity and the coast flank
+#: developed again at its own design torque (docs/own_gear_set.md, "One design torque that
+#: holds"): "coast_lte60" LTE p-p <= 60 urad on the coast flank at its light and design
+#: torque, "duty" the default duty cycle (`ltca duty-cycle CASE`, the illustrative
+#: spectrum up to the design torque) not FAIL on pitting. Designs not listed were not
+#: re-measured.
+COAST_DONE_WHEN: dict[str, set[str]] = {
+    "eaxle_hypoid_11x39_s80": {"coast_lte60", "duty"},
+    "hypoid_10x37_s75": {"coast_lte60", "duty"},
+    "hypoid_5x43": {"coast_lte60", "duty"},
+    "pc_hypoid_10x43": {"coast_lte60", "duty"},
+    "spiral_bevel_13x39": {"coast_lte60", "duty"},
+    "truck_hypoid_9x37": {"coast_lte60", "duty"},
+    "hypoid_6x41": {"coast_lte60", "duty"},
+    "spiral_bevel_15x45_m0": {"coast_lte60", "duty"},
+    "spiral_bevel_14x35_s70_m0": {"duty"},
+}
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("basic", DESIGNS, ids=[p.stem for p in DESIGNS])
 def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys):
@@ -84,7 +109,11 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert main(["run", str(case_path), "-o", str(nc)]) == 0
     tree = xr.open_datatree(nc)
     v = verdict(tree)
-    assert v.severity != "fail", [f.reason for f in v.findings]
+    if basic.stem in RUN_FAILS:  # the one known FAIL, and no other
+        fails = [f.reason for f in v.findings if f.severity == "fail"]
+        assert fails and all(r.startswith(RUN_FAILS[basic.stem]) for r in fails), fails
+    else:
+        assert v.severity != "fail", [f.reason for f in v.findings]
     lt = tree["/ltca"]
     root = lt["root_stress_max"].transpose("torque", "member").values
     assert root.shape == (lt.sizes["torque"], 2)  # pinion and gear at every torque
@@ -112,3 +141,14 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert not fails, fails
     root = tree["/ltca"]["root_stress_max"].values
     assert np.all(np.isfinite(root)) and np.all(root > 0)
+    coast_met = COAST_DONE_WHEN.get(basic.stem, set())
+    if "coast_lte60" in coast_met:  # at the light and the coast design torque
+        lte = tree["/ltca"]["lte_peak_to_peak"].values
+        assert np.all(lte <= 60.0), lte
+    if "duty" in coast_met:  # the default spectrum up to the design torque
+        nc_duty = tmp_path / f"{basic.stem}_duty.nc"
+        main(["duty-cycle", str(case_path), "--scheduler", "synchronous", "-o", str(nc_duty)])
+        duty = xr.open_datatree(nc_duty)
+        pitting = [f.reason for f in verdict(duty).findings
+                   if f.severity == "fail" and f.check == "damage" and "pitting" in f.reason]
+        assert not pitting, pitting

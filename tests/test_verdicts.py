@@ -253,6 +253,24 @@ def test_duty_cycle_damage_fails_and_low_safety_wants_attention():
     assert verdict(tree).severity == "fail"
 
 
+def test_a_duty_cycle_lte_spread_says_its_numbers():
+    """The LTE-spread cause (bit 2) of a bin is said with the bin's torque, LTE p-p, its
+    ratio to the mean (96/180 = 0.53, above plausibility's 0.5) and the edge share, so that
+    the finding tells edge contact (bin 1, 2 %) from the tooth pairs' own transfer (bin 0,
+    none): the reason a FAIL of the duty cycle gives is the one that holds."""
+    flagged = _duty().assign(plausibility=("bin", np.array([4, 4], np.int8)),
+                             lte_peak_to_peak=("bin", [96.0, 120.0]),
+                             lte_mean=("bin", [180.0, 200.0]),
+                             edge_load_share=("bin", [0.0, 0.02]))
+    (f,) = [f for f in verdict(flagged).findings if f.check == "implausible"]
+    assert (f.severity, f.check) == ("fail", "implausible")
+    assert f.reason.startswith("lte spread in bins 0, 1 (the cause ltca run warns of")
+    assert ("bin 0 at 250 N m: LTE p-p 96 urad, 0.53 times its mean 180 urad, edge share "
+            "0.0 % (no edge contact: the LTE p-p of the tooth pairs' transfer)") in f.reason
+    assert f.reason.endswith("bin 1 at 500 N m: LTE p-p 120 urad, 0.60 times its mean "
+                             "200 urad, edge share 2.0 %")
+
+
 def _vh(nominal_u: float, heel_vh=(0.2, 0.1), heel_u=0.75) -> xr.Dataset:
     return xr.Dataset(
         {"V": ("position", [0.3, -0.15, heel_vh[0]]),

@@ -9,8 +9,10 @@ edges or overstress the root below it. :func:`coast_capacity` checks the written
 coast flank at ``ltca run --flank coast``'s sampling and torques
 (:func:`contact.pipeline.flank_torques`: the case's light torque and the coast design
 torque) and lowers the coast design torque, one verified step at a time,
-until the flank peak pressure is within the static strength, no segment is plastic and
-the FE root stress's safety S_F,FE is at least S_Fmin (:func:`coast_torque_step`). Every
+until the flank peak pressure is within the static strength, no segment is plastic, the
+FE root stress's safety S_F,FE is at least S_Fmin and the local pitting safety at long
+life S_H,loc (:func:`contact.optimize.development_root.pitting_safety`) at least S_Hmin
+(:func:`coast_torque_step`). Every
 lowering is recorded with its reason (:attr:`CoastCapacity.reason`), which the case's
 ``[rating] source`` and ``ltca synthesize`` print. Imported by
 :mod:`contact.optimize.development`.
@@ -73,6 +75,12 @@ class CoastCheck:
     result : Any — what the analysis returned (its metrics), for the caller
     plastic_limit : float — [1] the plastic share allowed (the development's
         ``max_plastic_share``, default 0: no plastic segment)
+    pitting_safety : float — [1] the local pitting safety at long life S_H,loc of the
+        weaker member at ``torque``
+        (:func:`contact.optimize.development_root.pitting_safety`; NaN: not computed)
+    s_h_min : float — [1] the rating's S_Hmin (NaN: not known)
+    pitting_member : str — the weaker member of ``pitting_safety``
+    light_pitting_safety : float — [1] S_H,loc at the light torque (for the exponent; NaN)
     """
 
     torque: float
@@ -86,6 +94,10 @@ class CoastCheck:
     light_torque: float = math.nan
     result: Any = None
     plastic_limit: float = 0.0
+    pitting_safety: float = math.nan
+    s_h_min: float = math.nan
+    pitting_member: str = ""
+    light_pitting_safety: float = math.nan
 
     @property
     def failures(self) -> dict[str, str]:
@@ -101,6 +113,10 @@ class CoastCheck:
                 and self.root_safety < self.s_min):
             out["root"] = (f"FE root stress S_F,FE {self.root_safety:.2f} ({self.member}) "
                            f"below S_Fmin {self.s_min:g}")
+        if (math.isfinite(self.pitting_safety) and math.isfinite(self.s_h_min)
+                and self.pitting_safety < self.s_h_min):
+            out["pitting"] = (f"local pitting safety S_H,loc {self.pitting_safety:.2f} "
+                              f"({self.pitting_member}) below S_Hmin {self.s_h_min:g}")
         return out
 
 
@@ -156,6 +172,9 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
     * root: :func:`contact.optimize.development_root.root_capacity_step` with
       S_F,FE ∝ T^(−b), b measured between ``previous`` and ``check``, else between the
       light and the design torque of ``check``, else 1, bounded to [0.3, 1];
+    * pitting: :func:`contact.optimize.development_root.root_capacity_step` on the local
+      pitting safety S_H,loc ∝ T^(−b), b measured as for the root stress, else 1/3
+      (Hertz's point contact), bounded to [0.2, 1];
     * plastic: T × :data:`PLASTIC_STEP`.
 
     Rounded down to 0.1 N·m (4 significant digits).
@@ -168,7 +187,8 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
 
     Returns
     -------
-    (torque [N·m], criterion) — criterion one of ``"flank"``, ``"root"``, ``"plastic"``.
+    (torque [N·m], criterion) — criterion one of ``"flank"``, ``"root"``, ``"pitting"``,
+    ``"plastic"``.
 
     Notes
     -----
@@ -195,6 +215,15 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
                           check.root_safety, 1.0, 0.3, 1.0)
         steps["root"] = root_capacity_step(t, check.root_safety, check.s_min, margin,
                                            exponent=b)
+    if "pitting" in fails:
+        if previous is not None and math.isfinite(previous.pitting_safety):
+            b = _exponent(previous.torque, previous.pitting_safety, t, check.pitting_safety,
+                          1.0 / 3.0, 0.2, 1.0)
+        else:
+            b = _exponent(check.light_torque, check.light_pitting_safety, t,
+                          check.pitting_safety, 1.0 / 3.0, 0.2, 1.0)
+        steps["pitting"] = root_capacity_step(t, check.pitting_safety, check.s_h_min,
+                                              margin, exponent=b)
     if "plastic" in fails:
         steps["plastic"] = t * PLASTIC_STEP
     why = min(steps, key=steps.get)
@@ -324,4 +353,7 @@ def _within(c: CoastCheck) -> list[str]:
            f"plastic share {100 * c.plastic:.2g} % within {100 * c.plastic_limit:g} %"]
     if math.isfinite(c.root_safety) and math.isfinite(c.s_min):
         out.append(f"S_F,FE {c.root_safety:.2f} ({c.member}) >= S_Fmin {c.s_min:g}")
+    if math.isfinite(c.pitting_safety) and math.isfinite(c.s_h_min):
+        out.append(f"S_H,loc {c.pitting_safety:.2f} ({c.pitting_member}) >= S_Hmin "
+                   f"{c.s_h_min:g}")
     return out

@@ -250,8 +250,8 @@ class DevelopmentResult:
     def _root_headline(self) -> str:
         if not math.isfinite(self.root_safety):
             return ""
-        why = (" (design torque lowered to the root-stress capacity)" if self.root_text
-               else "")
+        why = (f" (design torque lowered to {self.root_text.split(':')[0]})"
+               if self.root_text else "")
         return (f"; FE root stress S_F,FE {self.root_safety:.2f} at "
                 f"{self.torque[1]:.4g} N m{why}")
 

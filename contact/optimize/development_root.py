@@ -1,15 +1,28 @@
-"""The root-stress capacity of a developed design (issue 71 item 2: one design torque that
-holds).
+"""The root-stress and local pitting capacity of a developed design (issue 71 item 2: one
+design torque that holds).
 
 The development's design torque is by default the ISO 10300 capacity, which rates the root
-by torque-independent factors (Y_Fa·Y_Sa, K_Fβ of a nominal bearing). The verdict judges the
-FE peak root stress of the developed bearing itself (:mod:`contact.study.verdict_checks`,
-"Root stress": S_F,FE = σ_FP / (σ_FE,max·K_A·K_v) against S_Fmin). :func:`root_capacity`
-computes that safety on the written case at ``ltca run``'s sampling with the same FE model
-``ltca run`` builds by default (cached by the members' geometry, so ``ltca run`` afterwards
-reads it) and, where S_F,FE is below S_Fmin at the design torque, lowers the design torque
-to the root-stress capacity :func:`root_capacity_step`. Imported by
-:mod:`contact.optimize.development`.
+by torque-independent factors (Y_Fa·Y_Sa, K_Fβ of a nominal bearing) and the flank by the
+nominal contact stress of the virtual cylindrical gears, whose face load factor
+K_Hβ = 1.5·K_Hβ-be stands for a bearing that covers the face under full load. Two checks
+judge the developed bearing itself, at ``ltca run``'s sampling:
+
+* **root**: the verdict's FE root stress (:mod:`contact.study.verdict_checks`, "Root
+  stress": S_F,FE = σ_FP / (σ_FE,max·K_A·K_v) against S_Fmin), with the same FE model
+  ``ltca run`` builds by default (cached by the members' geometry, so ``ltca run``
+  afterwards reads it);
+* **pitting** (:func:`pitting_safety`): the local flank safety at long life,
+  S_H,loc = σ_HP,∞ / (p_max·√(K_A·K_v)), the LTCA's peak flank pressure in place of
+  ISO 10300-2's σ_H0·√(K_Hβ·K_Hα) — the load distribution along the face and between the
+  tooth pairs taken from the loaded contact (ISO 10300-1:2014 Method A for K_Hβ and K_Hα),
+  the permissible stress σ_HP,∞ = σ_Hlim Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp the rating's own at
+  long life (its knee, the allowable the duty cycle's S–N curve has,
+  :meth:`contact.load_capacity.durability.SNCurve.rated`), against S_Hmin.
+
+:func:`root_capacity` lowers the design torque to the capacity :func:`root_capacity_step`
+of whichever criterion fails, so that the design torque written is one that holds by the
+judgements ``ltca run`` and ``ltca duty-cycle`` apply (a spectrum at or below it stays
+at or below the S–N curve's knee stress). Imported by :mod:`contact.optimize.development`.
 """
 
 from __future__ import annotations
@@ -113,6 +126,98 @@ def both_flanks_built(case) -> None:
                      member, exc)
 
 
+def pitting_safety(tree) -> tuple[np.ndarray, float, str]:
+    """(S_H,loc of the weaker member per torque [1], S_Hmin [1], its member) of an analysis
+    with an ISO 10300 ``/rating`` at the LTCA's torques: the local flank safety at long life.
+
+    S_H,loc = σ_HP,∞ / (p_max √(K_A K_v)), with p_max the LTCA's peak flank (contact-curve)
+    pressure at each torque [MPa] (``/ltca/pressure_max_flank``; edge contact apart, as the
+    duty cycle counts it), K_A and K_v the rating's, and σ_HP,∞ = σ_Hlim Z_X Z_L Z_v Z_R Z_W
+    Z_K Z_Hyp per member [MPa] the rating's permissible stress at long life (Z_NT = 1,
+    whatever ``load_cycles`` says).
+
+    Parameters
+    ----------
+    tree : xarray.DataTree
+        An analysis (:func:`contact.pipeline.run_analysis` with the load-capacity step).
+
+    Returns
+    -------
+    (ndarray (torque,), float, str)
+
+    Raises
+    ------
+    LookupError
+        No ISO 10300 ``/rating`` at the LTCA's torques, or no flank pressure (the reason).
+
+    Notes
+    -----
+    ISO 10300-2:2014 cl. 6 (Method B1): σ_H = σ_H0 √(K_A K_v K_Hβ K_Hα) with σ_H0 the
+    mean-point Hertzian stress of the virtual cylindrical gears (Z_M-B, Z_LS: the decisive
+    point and the sharing between the contact lines) and S_H = σ_HP / σ_H. ISO 10300-1:2014
+    ranks Method A — factors from a comprehensive analysis of the loaded gear pair — above
+    Method B; the LTCA's peak pressure is that analysis' σ_H0 √(K_Hβ K_Hα) of the developed
+    bearing (its load along the face and between the pairs, at the decisive point it
+    finds), so S_H,loc is S_H with the load distribution of the bearing itself; where the
+    LTCA's pressure were σ_H0 √(K_Hβ K_Hα) it is S_H at long life (tested). The strength
+    side keeps every factor of the rating, Z_K and Z_Hyp included (the empirical bevel and
+    hypoid factors of the permissible stress, ISO/TR 10300-30:2024 sample 1); the same
+    allowable is the knee of the duty cycle's S–N curve (ISO 6336-6:2019, Miner's rule on
+    the curves of ISO 6336-2).
+    """
+    lt = tree["/ltca"].to_dataset()
+    if "pressure_max_flank" not in lt:
+        raise LookupError("no flank pressure in /ltca")
+    rt = tree["/rating"].to_dataset() if "/rating" in tree.groups else None
+    need = {"sigma_Hlim", "Z_X", "Z_L", "Z_speed", "Z_R", "Z_W", "Z_K", "Z_Hyp", "K_A", "K_v",
+            "S_Hmin"}
+    if rt is None or not need <= set(rt.variables):
+        raise LookupError("no ISO 10300 rating (a pinion speed and a [rating] material are "
+                          "needed)")
+    p = np.asarray(lt["pressure_max_flank"].values, float)
+    if not np.array_equal(np.asarray(rt["torque"].values, float),
+                          np.asarray(lt["torque"].values, float)):
+        raise LookupError("no ISO 10300 rating at the analysed torques")
+    allow = (rt["sigma_Hlim"] * rt["Z_X"] * rt["Z_L"] * rt["Z_speed"] * rt["Z_R"] * rt["Z_W"]
+             * rt["Z_K"] * rt["Z_Hyp"])
+    members = [str(m) for m in allow["member"].values]
+    k_v = np.broadcast_to(np.asarray(rt["K_v"].values, float), p.shape)
+    load = p * np.sqrt(float(rt["K_A"]) * k_v)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.asarray(allow.values, float)[None, :] / load[:, None]  # (torque, member)
+    j = int(np.nanargmin(s[-1])) if np.any(np.isfinite(s[-1])) else 0
+    return s[:, j], float(rt["S_Hmin"]), members[j]
+
+
+#: the criteria of :func:`root_capacity`: name → (safety of a tree, the safety's symbol,
+#: its exponent's bounds and default: S ∝ T^(−b); the root stress grows about linearly
+#: with the load, the Hertzian pressure as T^(1/3) at a point contact (Johnson 1985,
+#: eq. 4.23) to T^(1/2) at a line contact)
+CRITERIA: dict[str, tuple[Callable[[Any], tuple[np.ndarray, float, str]], str,
+                          tuple[float, float, float]]] = {
+    "root": (root_safety, "S_F,FE", (0.3, 1.0, 1.0)),
+    "pitting": (pitting_safety, "S_H,loc", (0.2, 1.0, 1.0 / 3.0)),
+}
+
+
+def _safeties(tree) -> dict[str, tuple[np.ndarray, float, str]]:
+    """Each criterion of :data:`CRITERIA` the analysis can give (the others said in the
+    log)."""
+    out = {}
+    for name, (fn, _, _) in CRITERIA.items():
+        try:
+            out[name] = fn(tree)
+        except LookupError as exc:
+            log.info("development %s capacity not checked: %s", name, exc)
+    return out
+
+
+def _failing(safe: dict[str, tuple[np.ndarray, float, str]]) -> list[str]:
+    """The criteria whose safety at the design torque (the last) is below its minimum."""
+    return [k for k, (s, s_min, _) in safe.items()
+            if math.isfinite(float(s[-1])) and float(s[-1]) < s_min]
+
+
 def _root_tree(case, torques: list[float]):
     """``ltca run``'s drive-flank analysis of ``case`` at ``torques`` with the root stress
     (its default FE model) and the ISO 10300 rating, without the mesh interface (the
@@ -130,14 +235,16 @@ def _root_tree(case, torques: list[float]):
 
 def root_capacity(case, setup: dict[str, Any], light_load: float,
                   say: Callable[[str], None]) -> tuple[Any, float, str]:
-    """Check the written ``case``'s FE root stress at the design torque
-    (``setup["torques"][1]``) and lower the design torque to its root-stress capacity where
-    S_F,FE < S_Fmin there: T ← :func:`root_capacity_step` with the exponent b of
-    S_F,FE ∝ T^(−b) measured between the light and the design torque, checked at the new
-    light (``light_load`` × T) and design torque and stepped again, b measured between the
-    last two design torques, while still below (at most :data:`ROOT_STEPS`). ``setup``
-    gets the new torques, source and ``lowered`` where lowered. An analysis that fails is
-    said through ``say`` and never raised (the torque last checked is kept).
+    """Check the written ``case`` at the design torque (``setup["torques"][1]``) by the
+    criteria of :data:`CRITERIA` — the FE root stress (S_F,FE >= S_Fmin) and the local
+    pitting safety at long life (:func:`pitting_safety`, S_H,loc >= S_Hmin) — and lower the
+    design torque to the capacity of the criteria that fail there: T ← the least
+    :func:`root_capacity_step` over them, each with its exponent b of S ∝ T^(−b) measured
+    between the light and the design torque, checked at the new light (``light_load`` ×
+    T) and design torque and stepped again, b measured between the last two design
+    torques, while one still fails (at most :data:`ROOT_STEPS`). ``setup`` gets the new
+    torques, source and ``lowered`` where lowered. An analysis that fails is said through
+    ``say`` and never raised (the torque last checked is kept).
 
     Returns
     -------
@@ -150,55 +257,123 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     torques = [float(t) for t in setup["torques"]]
     torque = torques[1]
     try:
-        safety, s_min, member = root_safety(_root_tree(case, torques))
+        safe = _safeties(_root_tree(case, torques))
     except Exception as exc:  # reported, never fatal (ltca run says it)
         log.info("development root stress check not made: %s", exc)
-        say(f"development: root stress not checked ({exc})")
+        say(f"development: root stress not checked ({exc}), nor the local pitting safety")
         return None, math.nan, ""
-    s = float(safety[-1])
-    if not (math.isfinite(s) and s < s_min):
-        say(f"development: FE root stress at {torque:.4g} N m: S_F,FE {s:.2f} ({member}) "
-            f">= S_Fmin {s_min:g}")
-        return None, s, ""
-    # the exponent b of S_F,FE ∝ T^(-b) first from the light and the design torque, then
-    # from the last two design torques (the local slope)
-    first, t, tree, used = (s, torque, member), torque, None, []
-    b = _exponent(torques[0], float(safety[0]), torque, s)
+    if not safe:
+        say("development: root stress and local pitting safety not checked (no FE root "
+            "stress and no ISO 10300 rating)")
+        return None, math.nan, ""
+
+    def root_of(sf: dict) -> float:
+        return float(sf["root"][0][-1]) if "root" in sf else math.nan
+
+    fails = _failing(safe)
+    if not fails:
+        say(f"development: at {torque:.4g} N m " + "; ".join(
+            f"{CRITERIA[k][1]} {float(s[-1]):.2f} ({m}) >= {s_min:g}"
+            for k, (s, s_min, m) in safe.items()))
+        return None, root_of(safe), ""
+    first = {k: (float(safe[k][0][-1]), safe[k][1], safe[k][2]) for k in fails}
+    # the exponent b of S ∝ T^(-b) first from the light and the design torque, then from
+    # the last two design torques (the local slope)
+    slope = {k: _exponent(torques[0], float(s[0]), torque, float(s[-1]),
+                          CRITERIA[k][2][2], *CRITERIA[k][2][:2])
+             for k, (s, _, _) in safe.items()}
+    t, tree, used = torque, None, []
     for _ in range(ROOT_STEPS):
-        new = root_capacity_step(t, s, s_min, exponent=b)
+        steps = {k: root_capacity_step(t, float(safe[k][0][-1]), safe[k][1],
+                                       exponent=slope[k]) for k in fails}
+        why = min(steps, key=steps.get)
+        new = steps[why]
         if new >= t:
             break
         try:
             step = _root_tree(case, [light_load * new, new])
-            safety, s_min, member = root_safety(step)
+            new_safe = _safeties(step)
         except Exception as exc:  # reported, never fatal: the last torque checked is kept
             log.info("development root stress at %g N m failed: %s", new, exc)
             say(f"development: root stress at {new:.4g} N m not computed ({exc})")
             break
-        tree, torques, used = step, [light_load * new, new], [*used, b]
-        b = _exponent(new, float(safety[-1]), t, s, b)
-        t, s = new, float(safety[-1])
-        if s >= s_min:
+        tree, torques, used = step, [light_load * new, new], [*used, (why, slope[why])]
+        slope = {k: _exponent(new, float(new_safe[k][0][-1]), t, float(safe[k][0][-1]),
+                              slope[k], *CRITERIA[k][2][:2])
+                 for k in new_safe if k in safe}
+        bad = t
+        t, safe = new, new_safe
+        fails = _failing(safe)
+        if not fails:
             break
     if tree is None:  # no lower torque checked
-        return None, first[0], ""
-    source = (f"the root-stress capacity of the developed bearing: its FE root stress gives "
-              f"S_F,FE {first[0]:.2f} ({first[2]}) below S_Fmin {s_min:g} at the design "
-              f"torque {first[1]:.4g} N m ({setup['source'].split(',')[0].split(':')[0]}); "
-              f"T (0.99 S_F,FE/S_Fmin)^(1/b) in {len(used)} step"
-              f"{'s' if len(used) > 1 else ''}, b = "
-              f"{'/'.join(f'{x:.2f}' for x in used)} measured (S_F,FE ~ T^-b) -> "
-              f"{t:.4g} N m, where S_F,FE ({member}) is "
-              f"{s:.2f}{'' if s >= s_min else ' (still below)'}")
-    say(f"  design torque {first[1]:.4g} -> {t:.4g} N m: {source}")
+        return None, root_of(safe), ""
+    if not fails:  # back up inside the bracket where the step landed well below
+        up = _back_up(case, light_load, t, bad, safe, slope, say)
+        if up is not None:
+            tree, torques, safe, t = up
+            used = [*used, ("up", math.nan)]
+    what = {"root": "its FE root stress gives", "pitting": "its LTCA peak flank pressure "
+            "gives the local pitting safety at long life (sigma_HP / (p_max sqrt(K_A "
+            "K_v)), ISO 10300 with the bearing's own load distribution)"}
+    was = "; ".join(f"{what[k]} {CRITERIA[k][1]} {s:.2f} ({m}) below {CRITERIA[k][1][:3]}"
+                    f"min {s_min:g}" for k, (s, s_min, m) in first.items())
+    now = ", ".join(f"{CRITERIA[k][1]} ({m}) is {float(s[-1]):.2f}"
+                    f"{' (still below)' if k in fails else ''}"
+                    for k, (s, _, m) in safe.items())
+    symbols = "; ".join(dict.fromkeys(CRITERIA[k][1] for k, _ in used if k in CRITERIA))
+    down = [u for u in used if u[0] in CRITERIA]
+    up = len(down) < len(used)
+    name = ("root-stress" if set(first) == {"root"} else
+            "local pitting" if set(first) == {"pitting"} else "root-stress and local pitting")
+    source = (f"the {name} capacity of the developed bearing: {was} at the design "
+              f"torque {torque:.4g} N m ({setup['source'].split(',')[0].split(':')[0]}); "
+              f"T (0.99 S/S_min)^(1/b) in {len(down)} step"
+              f"{'s' if len(down) > 1 else ''}, b = "
+              f"{'/'.join(f'{b:.2f}' for _, b in down)} measured ({symbols} ~ T^-b)"
+              f"{', then one step back up with b measured between the two' if up else ''}"
+              f" -> {t:.4g} N m, where {now}")
+    say(f"  design torque {torque:.4g} -> {t:.4g} N m: {source}")
     setup.update(torques=torques, source=source, lowered=True)
-    return tree, s, source
+    return tree, root_of(safe), source
 
 
-def _exponent(t1: float, s1: float, t2: float, s2: float, default: float = 1.0) -> float:
-    """b of S_F,FE ∝ T^(−b) between two torques, bounded to [0.3, 1] (``default`` where not
+def _back_up(case, light_load: float, t: float, bad: float,
+             safe: dict[str, tuple[np.ndarray, float, str]], slope: dict[str, float],
+             say: Callable[[str], None]) -> tuple[Any, list[float], dict, float] | None:
+    """One step back up from the torque ``t`` that holds towards ``bad`` (the last that
+    failed): the least :func:`root_capacity_step` over the criteria from ``t``, with the
+    exponents ``slope`` measured between the two, kept a tenth of the bracket's log-width
+    inside it; analysed, and returned (tree, torques, safeties, torque) where every
+    criterion holds there, else None. Not tried where the estimate is within 1 % of ``t``
+    (the step landed at the capacity, to the margin): a design torque written well below
+    what the bearing carries is a judgement as wrong as one above it."""
+    est = min(root_capacity_step(t, float(s[-1]), s_min, exponent=slope.get(k, 1.0))
+              for k, (s, s_min, _) in safe.items() if float(s[-1]) > 0)
+    if not est > 1.01 * t:
+        return None
+    lo, hi = math.log(t), math.log(bad)
+    x = min(max(math.log(est), lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
+    new = float(f"{math.floor(10.0 * math.exp(x)) / 10.0:.4g}")
+    if not t < new < bad:
+        return None
+    try:
+        step = _root_tree(case, [light_load * new, new])
+        new_safe = _safeties(step)
+    except Exception as exc:  # reported, never fatal: the torque that holds is kept
+        log.info("development capacity check at %g N m failed: %s", new, exc)
+        say(f"development: root stress at {new:.4g} N m not computed ({exc})")
+        return None
+    if _failing(new_safe):
+        return None
+    return step, [light_load * new, new], new_safe, new
+
+
+def _exponent(t1: float, s1: float, t2: float, s2: float, default: float = 1.0,
+              low: float = 0.3, high: float = 1.0) -> float:
+    """b of S ∝ T^(−b) between two torques, bounded to [low, high] (``default`` where not
     measurable)."""
     if not (t1 > 0 and t2 > 0 and t1 != t2 and s1 > 0 and s2 > 0
             and math.isfinite(s1 * s2)):
         return default
-    return min(1.0, max(0.3, math.log(s1 / s2) / math.log(t2 / t1)))
+    return min(high, max(low, math.log(s1 / s2) / math.log(t2 / t1)))

@@ -610,6 +610,32 @@ def _analysis(tree: xr.DataTree) -> tuple[list[Finding], list[str]]:
 
 # --------------------------------------------------------------------------- duty cycle
 
+def _spread_numbers(ds: xr.Dataset, cause: str, bins: np.ndarray) -> str:
+    """For the LTE-spread cause of a duty cycle: each flagged bin's torque, LTE
+    peak-to-peak and mean and the share of the torque on edge contact, so that the finding
+    says which of the cause's two readings holds (edge contact, or loss of contact over
+    part of the mesh cycle: an LTE spread without edge share is the tooth pairs' transfer
+    itself, the LTE peak-to-peak of the design); empty for the other causes or without
+    those variables."""
+    need = {"torque", "lte_peak_to_peak", "lte_mean"}
+    if cause != "lte_spread" or not need <= set(ds.variables):
+        return ""
+    edge = (np.nan_to_num(np.asarray(ds["edge_load_share"].values, float))
+            if "edge_load_share" in ds else None)
+    out = []
+    for b in bins:
+        pp, mean = float(ds["lte_peak_to_peak"][b]), float(ds["lte_mean"][b])
+        text = (f"bin {b} at {float(ds['torque'][b]):.4g} N m: LTE p-p {pp:.0f} urad, "
+                f"{pp / mean:.2f} times its mean {mean:.0f} urad")
+        if edge is not None:
+            share = 100.0 * float(edge[b])
+            text += (f", edge share {share:.1f} %" + (
+                " (no edge contact: the LTE p-p of the tooth pairs' transfer)"
+                if share < 100.0 * EDGE_SHARE_MIN else ""))
+        out.append(text)
+    return ": " + "; ".join(out)
+
+
 def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
     findings: list[Finding] = []
     checks = ["damage", "safety", "implausible", "static", "edge_contact", "certification",
@@ -644,7 +670,7 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                     "fail", "implausible",
                     f"{cause.replace('_', ' ')} in bin{'s' * (bad.size > 1)} "
                     f"{', '.join(str(b) for b in bad)} (the cause ltca run warns of; "
-                    "/duty_cycle/plausibility)"))
+                    "/duty_cycle/plausibility)" + _spread_numbers(ds, cause, bad)))
     if int(ds.attrs.get("contact_static_limit_exceeded", 0)):
         findings.append(Finding("fail", "static",
                                 "a flank pressure exceeds the static contact strength of "
