@@ -41,7 +41,8 @@ From a :class:`geometry.synthesis.basic_design.BasicDesign` this module builds a
    transmission error only to second order at M; 6D and 24E put it on the prescribed
    parabola at ±pitch/4: the contact is followed from M in a few roll steps with the
    conventional TCA's system of seed Eq. 2.14 (:class:`geometry.pair.conventional_tca.ToothPair`,
-   scipy Levenberg–Marquardt per roll), with a Newton–Broyden iteration on 6D and 24E.
+   Gauss–Newton on both sides' rolls together), with a Newton–Broyden iteration on 6D and
+   24E (:func:`geometry.synthesis.modified_roll.tune_roll`).
 7. **Profile relief** (:func:`geometry.machine.relief.relieved_blade`): tip and root relief of the
    pinion flank (``tip_relief``, ``root_relief``, from ``relief_start`` of the way from M to
    each end) by the blade's flankrem and toprem, whose corners lie away from M, so that
