@@ -266,7 +266,8 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         pinion flank (mean point, local synthesis, generating tools, modified roll) are
         stored under the design's blank and gear inputs and the flank's path angle, TE
         level, ellipse length, approach and reference gear rotation, and reused when they
-        recur; only the relief (step 7) and the tip plane (step 8) are made again. The
+        recur (and the gear flank's design point, which no prescription moves, whatever
+        they are); only the relief (step 7) and the tip plane (step 8) are made again. The
         result is the same as without a memo (steps 3–6 do not read the relief; the coast
         flank depends on the drive flank only through the mean point's gear rotation,
         which the prescriptions do not move), so a development that varies the drive
@@ -377,7 +378,8 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
             say(f"pinion {pf}: {step} (kept from an earlier synthesis)")
         fs = replace(memo[key], options=fo)
     else:
-        fs = _unrelieved_flank(pair, pf, fo, ref_gear_rotation, conjugate=conjugate, say=say)
+        fs = _unrelieved_flank(pair, pf, fo, ref_gear_rotation, conjugate=conjugate, say=say,
+                               memo=memo)
         if memo is not None:
             memo[key] = fs
     if conjugate:
@@ -410,13 +412,22 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
 
 def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
                       ref_gear_rotation: float | None, *, conjugate: bool,
-                      say: Callable[[str], None]) -> FlankSynthesis:
-    """Steps 3–6 of :func:`_synthesize_flank` (the blade before its relief)."""
+                      say: Callable[[str], None], memo: dict | None = None) -> FlankSynthesis:
+    """Steps 3–6 of :func:`_synthesize_flank` (the blade before its relief). ``memo`` (the
+    design's entries of :func:`synthesize`'s memo): the gear flank's design point kept,
+    which reads only the gear's tools and the blanks (no prescription)."""
     geom, design = pair.geom, pair.geom.design
     z1 = geom.pinion.z
     gblade = pair.gear.blades[_OTHER[pf]]
-    zg, pg = design_point(gblade, pair.gear.settings, pair.gear_blank, pair.pinion_blank,
-                          gear_hand=pair.gear_hand, shaft_angle=design.Sigma, offset=design.a)
+    key = ("design point", pf)
+    if memo is not None and key in memo:
+        zg, pg = memo[key]
+    else:
+        zg, pg = design_point(gblade, pair.gear.settings, pair.gear_blank, pair.pinion_blank,
+                              gear_hand=pair.gear_hand, shaft_angle=design.Sigma,
+                              offset=design.a)
+        if memo is not None:
+            memo[key] = (zg, pg)
     gp = flank_point(gblade, pair.gear.settings, pair.gear_blank, pair.gear_hand, zg, pg)
     say(f"pinion {pf}: mean point and local synthesis")
     mp = mean_point(gp, pair.gear_blank, pair.pinion_blank, pinion_flank=pf,
