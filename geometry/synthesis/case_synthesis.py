@@ -266,8 +266,9 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         pinion flank (mean point, local synthesis, generating tools, modified roll) are
         stored under the design's blank and gear inputs and the flank's path angle, TE
         level, ellipse length, approach and reference gear rotation, and reused when they
-        recur (and the gear flank's design point, which no prescription moves, whatever
-        they are); only the relief (step 7) and the tip plane (step 8) are made again. The
+        recur (and the blanks and the gear flank's design point, which no prescription
+        moves, whatever they are); only the relief (step 7) and the tip plane (step 8) are
+        made again. The
         result is the same as without a memo (steps 3–6 do not read the relief; the coast
         flank depends on the drive flank only through the mean point's gear rotation,
         which the prescriptions do not move), so a development that varies the drive
@@ -309,8 +310,17 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
     """
     say = progress if progress is not None else (lambda _step: None)
     say("blanks (ISO 23509) and the Formate gear")
-    geom = basic.blank()
     opt = basic.options
+    # the memo's entries of this design: every input but the pinion flanks' prescriptions
+    # (basic.blank().design is basic.design)
+    kept = (None if memo is None else memo.setdefault(
+        (basic.design, replace(opt, concave=FlankOptions(), convex=FlankOptions())), {}))
+    if kept is None:
+        geom = basic.blank()
+    elif "blank" in kept:
+        geom = kept["blank"]
+    else:
+        geom = kept["blank"] = basic.blank()
     design = geom.design
     pitch = geom.pitch
     rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
@@ -328,9 +338,6 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
                      gear_hand, pair_kw(design.Sigma, design.a, gear_hand))
     flanks: dict[str, FlankSynthesis] = {}
     ref_gear_rotation = None
-    # the memo's entries of this design: every input but the pinion flanks' prescriptions
-    kept = (None if memo is None else memo.setdefault(
-        (design, replace(opt, concave=FlankOptions(), convex=FlankOptions())), {}))
     for pf in (drive, coast):
         flanks[pf] = _synthesize_flank(pair, pf, opt.flank(pf), ref_gear_rotation,
                                        conjugate=conjugate, say=say, memo=kept)
