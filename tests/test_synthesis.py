@@ -347,6 +347,41 @@ def test_local_synthesis_conjugate_limit(name, flank):
         np.testing.assert_allclose(ls.pinion_shape, w_true, atol=1e-9)
 
 
+def test_modified_roll_warm_start_finds_the_continuation_roots(monkeypatch):
+    """Step 6's later TE evaluations solve ±pitch/4 directly from the contact of the
+    evaluation before (``modified_roll._te_at``'s ``near``) instead of following the contact
+    from M again. Identity: the tune with the continuation at every evaluation finds the
+    same 6D and 24E (both are roots of the same equations; the TE at ±pitch/4 agrees to
+    ~1e-13 rad, and the TE changes by ~9e-6 rad per unit of 6D and ~9e-8 per unit of 24E:
+    6D within 1e-8, 24E within 1e-5), and the warm start evaluates fewer rolls."""
+    from geometry.synthesis import case_synthesis as cs
+    from geometry.synthesis import modified_roll as mr
+
+    calls = []
+    monkeypatch.setattr(cs, "tune_roll", lambda *a, **k: calls.append((a, k)) or mr.tune_roll(
+        *a, **k))
+    synthesize(load_basic(_basic_path("kolivand2009_fm_11x41")))
+    args, kw = calls[0]
+    rolls = []
+    real_solve = mr._solve_rolls
+
+    def counted(pair, phi, x0, guess):
+        rolls.append(len(phi))
+        return real_solve(pair, phi, x0, guess)
+
+    monkeypatch.setattr(mr, "_solve_rolls", counted)
+    warm = mr.tune_roll(*args, **kw).settings.modified_roll
+    n_warm = sum(rolls)
+    real_te = mr._te_at
+    monkeypatch.setattr(mr, "_te_at", lambda *a, near=None, **k: real_te(*a, **k))
+    rolls.clear()
+    cold = mr.tune_roll(*args, **kw).settings.modified_roll
+    assert warm[0] == cold[0] == 0.0
+    assert abs(warm[1] - cold[1]) < 1e-8
+    assert abs(warm[2] - cold[2]) < 1e-5
+    assert n_warm < sum(rolls)
+
+
 def test_shift_roll_origin_turns_the_flank():
     """Identity of the chain: the family generated with the roll origin shifted by q0 is the
     original family at q + q0 turned by φ(q0) about the work axis (1e-9 mm), with modified

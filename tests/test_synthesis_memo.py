@@ -31,12 +31,13 @@ def test_the_memo_keeps_steps_3_to_6_and_changes_nothing():
         return [k for k in entries if k[0] in ("concave", "convex")]
 
     assert len(flanks()) == 2  # its drive (concave) and coast (convex) flank
-    assert len(entries) == 4  # and their tip planes (step 8)
+    assert len(entries) == 7  # their tip planes (step 8), the gear flanks' design points
+    # and the blanks
     relieved = with_flank_options(basic, "concave", {"path_angle": -60.0, "tip_relief": 25.0,
                                                       "relief_start": 0.4})
     kept, _ = synthesize(relieved, memo=memo, progress=lines.append)
     assert len(flanks()) == 2  # only the relief was made again
-    assert len(entries) == 5  # and the drive flank's tip plane: the coast's was kept
+    assert len(entries) == 8  # and the drive flank's tip plane: the coast's was kept
     assert sum("kept from an earlier synthesis" in line for line in lines) == 6
     synthesize(with_flank_options(basic, "concave", {"path_angle": -50.0}), memo=memo)
     assert len(flanks()) == 3  # a new drive flank; the coast flank kept

@@ -297,7 +297,7 @@ class ToothPair:
         """Member → pair transforms (T_p, T_g), each (…, 4, 4), at rotations φ_p, φ_g [rad]."""
         return self._transforms(phi_p, phi_g)
 
-    def residual(self, phi_p, x):
+    def residual(self, phi_p, x, guess=None):
         """Residuals of seed Eq. 2.14 and their Jacobian at K roll positions.
 
         Parameters
@@ -306,6 +306,9 @@ class ToothPair:
             Pinion rotations.
         x : ndarray (K, 5) — [mm, mm, mm, mm, rad]
             (Z_p, P_p, Z_g, P_g, φ_g).
+        guess : ndarray (K, 8), optional
+            Envelope parameters of nearby points (pinion then gear, as the ``params`` of
+            :meth:`newton_params`): the surface solver's start instead of its seed search.
 
         Returns
         -------
@@ -320,7 +323,7 @@ class ToothPair:
             (r_p, r_g, n_p, n_g) (K, 3) in the pair frame and the relative shape operator
             W_p + W_g (K, 3, 3) [1/mm] in the pair frame.
         """
-        return self._residual(phi_p, x)[:4]
+        return self._residual(phi_p, x, guess)[:4]
 
     def _residual(self, phi_p, x, guess=None):
         """As :meth:`residual`, plus the envelope parameters (K, 8) of both flanks.
@@ -362,7 +365,8 @@ class ToothPair:
         """
         return self.newton_params(phi_p, x0, max_iter)[:2]
 
-    def newton_params(self, phi_p, x0, max_iter: int = 15):
+    def newton_params(self, phi_p, x0, max_iter: int = 15, guess=None,
+                      damping: float = _DAMP):
         """Solve seed Eq. 2.14 at K roll positions together by damped Gauss–Newton.
 
         Parameters
@@ -373,6 +377,14 @@ class ToothPair:
             Start (Z_p, P_p, Z_g, P_g, φ_g) of each position.
         max_iter : int
             Largest number of iterations.
+        guess : ndarray (K, 8), optional
+            Envelope parameters (pinion then gear) of points near the starts, e.g. the
+            ``params`` of an earlier solution: the surface solver's first start instead of
+            its seed search (the same solution, found with fewer evaluations).
+        damping : float — [1]
+            μ relative to the largest singular value of J (default ``_DAMP``, 1e-3); 0
+            for Gauss–Newton steps, which converge quadratically where J has full rank (a
+            localised contact) and slide along the contact line where it has not.
 
         Returns
         -------
@@ -403,7 +415,7 @@ class ToothPair:
         scale = np.array([1.0, 1.0, 1.0, 1.0, 1.0 / self.mean_pitch_radius])
         done = np.zeros(k, bool)
         dead = np.zeros(k, bool)
-        f, jac, ok, _, par = self._residual(phi_p, x)
+        f, jac, ok, _, par = self._residual(phi_p, x, guess)
         dead |= ~ok
         prev = np.full(k, np.inf)
         for _ in range(max_iter):
@@ -417,7 +429,7 @@ class ToothPair:
                 break
             js = jac[act] * scale
             u, sv, vt = np.linalg.svd(js, full_matrices=False)
-            mu = _DAMP * sv[:, :1]
+            mu = damping * sv[:, :1]
             inv = sv / (sv * sv + mu * mu)
             du = -np.einsum("kji,kj,klj,kl->ki", vt, inv, u, f[act])
             dx = du * scale
@@ -441,7 +453,7 @@ class ToothPair:
                 dead[trial] = True
         return x, done, par
 
-    def solve_one(self, phi_p: float, x0, *, max_nfev: int = 12) -> np.ndarray:
+    def solve_one(self, phi_p: float, x0, *, max_nfev: int = 12, guess=None) -> np.ndarray:
         """Solve seed Eq. 2.14 at one roll position with scipy's Levenberg–Marquardt.
 
         Parameters
@@ -453,6 +465,9 @@ class ToothPair:
         max_nfev : int
             Largest number of residual evaluations (12: the TCA's last resort after
             :meth:`newton_params`; the synthesis allows more).
+        guess : ndarray (1, 8), optional
+            Envelope parameters (pinion then gear) of a point near the start: the surface
+            solver's first start instead of its seed search.
 
         Returns
         -------
@@ -467,7 +482,7 @@ class ToothPair:
         the envelope solver from the last generated one.
         """
         phi = np.array([phi_p])
-        last = [None]  # surface parameters of the last generated evaluation: the next guess
+        last = [guess]  # surface parameters of the last generated evaluation: the next guess
 
         def fun(xf):
             f, jac, ok, _, par = self._residual(phi, xf[None], last[0])

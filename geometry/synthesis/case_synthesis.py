@@ -41,7 +41,8 @@ From a :class:`geometry.synthesis.basic_design.BasicDesign` this module builds a
    transmission error only to second order at M; 6D and 24E put it on the prescribed
    parabola at ±pitch/4: the contact is followed from M in a few roll steps with the
    conventional TCA's system of seed Eq. 2.14 (:class:`geometry.pair.conventional_tca.ToothPair`,
-   scipy Levenberg–Marquardt per roll), with a Newton–Broyden iteration on 6D and 24E.
+   Gauss–Newton on both sides' rolls together), with a Newton–Broyden iteration on 6D and
+   24E (:func:`geometry.synthesis.modified_roll.tune_roll`).
 7. **Profile relief** (:func:`geometry.machine.relief.relieved_blade`): tip and root relief of the
    pinion flank (``tip_relief``, ``root_relief``, from ``relief_start`` of the way from M to
    each end) by the blade's flankrem and toprem, whose corners lie away from M, so that
@@ -265,7 +266,9 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         pinion flank (mean point, local synthesis, generating tools, modified roll) are
         stored under the design's blank and gear inputs and the flank's path angle, TE
         level, ellipse length, approach and reference gear rotation, and reused when they
-        recur; only the relief (step 7) and the tip plane (step 8) are made again. The
+        recur (and the blanks and the gear flank's design point, which no prescription
+        moves, whatever they are); only the relief (step 7) and the tip plane (step 8) are
+        made again. The
         result is the same as without a memo (steps 3–6 do not read the relief; the coast
         flank depends on the drive flank only through the mean point's gear rotation,
         which the prescriptions do not move), so a development that varies the drive
@@ -307,8 +310,17 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
     """
     say = progress if progress is not None else (lambda _step: None)
     say("blanks (ISO 23509) and the Formate gear")
-    geom = basic.blank()
     opt = basic.options
+    # the memo's entries of this design: every input but the pinion flanks' prescriptions
+    # (basic.blank().design is basic.design)
+    kept = (None if memo is None else memo.setdefault(
+        (basic.design, replace(opt, concave=FlankOptions(), convex=FlankOptions())), {}))
+    if kept is None:
+        geom = basic.blank()
+    elif "blank" in kept:
+        geom = kept["blank"]
+    else:
+        geom = kept["blank"] = basic.blank()
     design = geom.design
     pitch = geom.pitch
     rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
@@ -326,9 +338,6 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
                      gear_hand, pair_kw(design.Sigma, design.a, gear_hand))
     flanks: dict[str, FlankSynthesis] = {}
     ref_gear_rotation = None
-    # the memo's entries of this design: every input but the pinion flanks' prescriptions
-    kept = (None if memo is None else memo.setdefault(
-        (design, replace(opt, concave=FlankOptions(), convex=FlankOptions())), {}))
     for pf in (drive, coast):
         flanks[pf] = _synthesize_flank(pair, pf, opt.flank(pf), ref_gear_rotation,
                                        conjugate=conjugate, say=say, memo=kept)
@@ -376,7 +385,8 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
             say(f"pinion {pf}: {step} (kept from an earlier synthesis)")
         fs = replace(memo[key], options=fo)
     else:
-        fs = _unrelieved_flank(pair, pf, fo, ref_gear_rotation, conjugate=conjugate, say=say)
+        fs = _unrelieved_flank(pair, pf, fo, ref_gear_rotation, conjugate=conjugate, say=say,
+                               memo=memo)
         if memo is not None:
             memo[key] = fs
     if conjugate:
@@ -409,13 +419,22 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
 
 def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
                       ref_gear_rotation: float | None, *, conjugate: bool,
-                      say: Callable[[str], None]) -> FlankSynthesis:
-    """Steps 3–6 of :func:`_synthesize_flank` (the blade before its relief)."""
+                      say: Callable[[str], None], memo: dict | None = None) -> FlankSynthesis:
+    """Steps 3–6 of :func:`_synthesize_flank` (the blade before its relief). ``memo`` (the
+    design's entries of :func:`synthesize`'s memo): the gear flank's design point kept,
+    which reads only the gear's tools and the blanks (no prescription)."""
     geom, design = pair.geom, pair.geom.design
     z1 = geom.pinion.z
     gblade = pair.gear.blades[_OTHER[pf]]
-    zg, pg = design_point(gblade, pair.gear.settings, pair.gear_blank, pair.pinion_blank,
-                          gear_hand=pair.gear_hand, shaft_angle=design.Sigma, offset=design.a)
+    key = ("design point", pf)
+    if memo is not None and key in memo:
+        zg, pg = memo[key]
+    else:
+        zg, pg = design_point(gblade, pair.gear.settings, pair.gear_blank, pair.pinion_blank,
+                              gear_hand=pair.gear_hand, shaft_angle=design.Sigma,
+                              offset=design.a)
+        if memo is not None:
+            memo[key] = (zg, pg)
     gp = flank_point(gblade, pair.gear.settings, pair.gear_blank, pair.gear_hand, zg, pg)
     say(f"pinion {pf}: mean point and local synthesis")
     mp = mean_point(gp, pair.gear_blank, pair.pinion_blank, pinion_flank=pf,
