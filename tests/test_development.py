@@ -974,3 +974,19 @@ def test_the_height_stage_keeps_the_design_before_a_costly_blade_angle(monkeypat
     monkeypatch.setattr(dev, "_centre_height", lambda *a, **k: better)
     assert dev._height_stage(lambda *a: None, base, targets, 36, lambda v: v,
                              lambda b: b) is better
+
+
+def test_a_pattern_on_its_tolerance_bound_meets_it():
+    """A light-load pattern from u 0.20 to 0.80 is 0.6 long, the upper bound of 0.5 ± 0.1
+    (inclusive): met, though 0.8 − 0.2 = 0.6000000000000001 in floating point (the
+    spiral bevel 13x39's check and the hypoid 10x37 at Σ 75° were reported "pattern length
+    0.60 (target 0.5 +/- 0.1)"); 0.2 to 0.83 is missed by (0.63 − 0.6)/0.1 = 0.3."""
+    assert 0.8 - 0.2 > 0.6  # the rounding the score must not count
+    _, short, met = development_score(_metrics(pattern_toe_u=[0.2, 0.15],
+                                               pattern_heel_u=[0.8, 0.85]),
+                                      DevelopmentTargets(), centre_v=0.6)
+    assert met and short["length"] == 0.0
+    _, short, met = development_score(_metrics(pattern_toe_u=[0.2, 0.15],
+                                               pattern_heel_u=[0.83, 0.85]),
+                                      DevelopmentTargets(), centre_v=0.6)
+    assert not met and short["length"] == pytest.approx(0.3, abs=1e-9)
