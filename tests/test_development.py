@@ -951,6 +951,18 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
                             lambda v: dict(v)) is got
     assert len(lines) == 1
 
+    # plastic at a mounting excursion (the uncovered tip edge): not kept
+    def misaligned(case, torques, misalignment=None, **kw):
+        m, grid = fake(case, torques)
+        if misalignment is not None and case["tip_relief"] < 10.0:
+            m["plastic_share"] = np.array([0.0, 0.003])
+        return m, grid
+
+    monkeypatch.setattr(dev, "_analyse", misaligned)
+    assert dev._checked_tip(high, targets, setup, None, lines.append,
+                            lambda v: dict(v)) is high
+    assert "not kept" in lines[-1] and "plastic" in lines[-1]
+
 
 def test_the_height_stage_keeps_the_design_before_a_costly_blade_angle(monkeypatch):
     """Where the blade-angle root-find's centred design scores worse than the design it
