@@ -1005,29 +1005,6 @@ def test_a_pattern_on_its_tolerance_bound_meets_it():
     assert not met and short["length"] == pytest.approx(0.3, abs=1e-9)
 
 
-def test_a_checked_design_the_verdict_fails_ranks_after_one_it_does_not():
-    """At the check a design whose LTE spread fails ``ltca run``'s verdict (the spiral
-    bevel 17x29 at Σ 100°: 125 / 134 µrad, spread 0.56, objective 90) ranks after one
-    that does not, even of a larger objective (57 / 138 µrad, objective 98); among
-    designs the verdict passes, every target met first, then the objective."""
-    from contact.optimize import development as dev
-
-    targets = DevelopmentTargets()
-
-    def checked(lte, spread):
-        m = _metrics(lte_peak_to_peak=lte, lte_spread=spread)
-        full = development_score(m, targets, centre_v=0.6)
-        return dev.DevelopmentEvaluation(0, {}, m, full[0], full[1], full[2], "", 0.0,
-                                         full=full, checked=True)
-
-    fails = checked([125.0, 134.0], [0.56, 0.16])
-    passes = checked([57.0, 138.0], [0.25, 0.17])
-    assert fails.full[0] < passes.full[0]  # the objective alone preferred the failing one
-    assert dev._check_rank(passes) < dev._check_rank(fails)
-    met = checked([20.0, 30.0], [0.1, 0.1])
-    assert dev._check_rank(met) < dev._check_rank(passes)
-
-
 def test_a_check_step_keeps_no_design_that_loses_the_mounting_tolerance(monkeypatch):
     """The path step's better design is kept only where it is tolerant (the spiral bevel
     13x39 at path −80°, ellipse 0.75: LTE 39 µrad met at the design torque, but 1.3 % of

@@ -637,23 +637,9 @@ def _tolerance(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any]
     return tolerance
 
 
-#: the shortfalls whose targets are the verdict's fail criteria at ``ltca run``'s own
-#: sampling (:mod:`contact.ltca.plausibility`: the LTE spread; plastic segments on more
-#: than 5 % of the torque are beyond the plastic target already)
-VERDICT_FAIL_TERMS = ("spread",)
-
-
-def _check_rank(e: DevelopmentEvaluation) -> tuple[bool, bool, float]:
-    """A checked design's rank: one that ``ltca run``'s verdict would not fail on its LTE
-    spread first (:data:`VERDICT_FAIL_TERMS`), then every target met, then the least
-    objective. Why: the objective weighs the spread's excess by 0.05 a unit, so a few µrad
-    of LTE at the design torque outweighed a spread that fails the verdict — the spiral
-    bevel 17x29 at Σ 100° (own design of tests/data/designs; ``ltca run``'s sampling at
-    60.42 / 402.8 N m): path −45°, LTE 125 / 134 µrad, spread 0.56 at light load,
-    objective 90 (``ltca run`` FAIL), was kept against path −60°, ellipse 0.6: 57 / 138
-    µrad, spread within 0.5, objective 98 (2026-11-25)."""
-    return (any(e.full[1].get(k, 0.0) > 0.0 for k in VERDICT_FAIL_TERMS), not e.full[2],
-            e.full[0])
+def _check_rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
+    """A checked design's rank: every target met first, then the least objective."""
+    return (not e.full[2], e.full[0])
 
 
 def _checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,
