@@ -1,4 +1,5 @@
-"""Four user designs from basic data to a rated analysis (issue 60, item 7): slow.
+"""The designs of tests/data/designs from basic data to a rated analysis (issue 60, item 7;
+issue 71): slow.
 
 A spiral bevel without offset, a passenger-car hypoid, a large-offset truck hypoid and a
 face-hobbed hypoid (``tests/data/designs/*.toml``, none bundled, each written from
@@ -41,10 +42,18 @@ DESIGNS = sorted(p for p in (Path(__file__).parent / "data" / "designs").glob("*
 #: (short tip relief, root-relief height design, TE stage; docs/own_gear_set.md, step 2):
 #: "plastic" no plastic segment at any torque, "light_edge" no edge contact at the light
 #: torque (15 % of the design torque), "lte60" LTE p-p <= 60 urad at every torque. Not
-#: yet met: the LTE of the spiral bevel 14x35 at Σ 70° (102/109 urad).
+#: yet met: the LTE of the spiral bevel 14x35 at Σ 70° (102/109 urad). The four own
+#: designs written for issue 71's "designs it has not seen" (spiral bevel 17x29 at Σ 100°,
+#: hypoid 7x45 with a 45 mm offset, face-hobbed spiral bevel 12x37, hypoid 12x41 at
+#: Σ 85°; docs/own_gear_set.md, "The drive flank on designs it has not seen") as measured
+#: 2026-11-25 after the check's changes of that date.
 _ALL = {"plastic", "light_edge", "lte60"}
 DONE_WHEN = {
     "eaxle_hypoid_11x39_s80": _ALL,
+    "fh_spiral_bevel_12x37_m3": _ALL,
+    "hypoid_12x41_s85": _ALL,
+    "hypoid_7x45_a45": _ALL,
+    "spiral_bevel_17x29_s100_m0": {"plastic", "light_edge"},
     "fh_hypoid_10x37_m2": _ALL,
     "fh_hypoid_11x43": _ALL,
     "fh_hypoid_11x46_m3": _ALL,
@@ -60,10 +69,14 @@ DONE_WHEN = {
 }
 
 
-#: designs whose ``ltca run`` FAILs, measured 2026-11-25, with the start of the one reason:
-#: the 14x35 at Σ 70° (undercut toe; its drive bearing is developed elsewhere) at the light
-#: torque of its local pitting capacity, 26.8 N·m: LTE spread 0.58
-RUN_FAILS = {"spiral_bevel_14x35_s70_m0": "LTE spread:"}
+#: designs whose ``ltca run`` FAILs, measured 2026-11-25, with what the one reason says:
+#: the 14x35 at Σ 70° (undercut toe) at the light torque of its local pitting capacity,
+#: 26.8 N·m: LTE spread 0.58; the spiral bevel 17x29 at Σ 100° on its light-load LTE
+#: spread (LTE p-p 125 µrad, 0.56 of its mean; the design torque's 134 µrad is the mesh's
+#: stiffness variation, which no lever of the development lowers: docs/own_gear_set.md,
+#: "The drive flank on designs it has not seen")
+RUN_FAILS = {"spiral_bevel_14x35_s70_m0": "LTE spread",
+             "spiral_bevel_17x29_s100_m0": "LTE spread"}
 
 #: issue 71 item 2 (both flanks, one design torque that holds), measured 2026-11-25 with
 #: each flank's design torque capped at its local pitting capacity and the coast flank
@@ -109,9 +122,9 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert main(["run", str(case_path), "-o", str(nc)]) == 0
     tree = xr.open_datatree(nc)
     v = verdict(tree)
-    if basic.stem in RUN_FAILS:  # the one known FAIL, and no other
+    if basic.stem in RUN_FAILS:  # the measured state: it fails on that alone
         fails = [f.reason for f in v.findings if f.severity == "fail"]
-        assert fails and all(r.startswith(RUN_FAILS[basic.stem]) for r in fails), fails
+        assert fails and all(RUN_FAILS[basic.stem] in r for r in fails), fails
     else:
         assert v.severity != "fail", [f.reason for f in v.findings]
     lt = tree["/ltca"]
