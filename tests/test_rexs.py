@@ -320,8 +320,9 @@ def test_blank_data_from_another_tool_without_custom_attributes(tmp_path):
     want = case.extra["design"]
     for key in ("Sigma", "a", "z1", "z2", "de2", "b2", "beta_m", "rc0", "alpha_dD",
                 "alpha_dC", "c_ham", "k_d", "k_c", "k_t", "theta_a2", "theta_f2",
-                "backlash", "backlash_value"):
+                "backlash_value"):
         assert design[key] == pytest.approx(want[key], rel=RTOL), key
+    assert design["backlash"] == want["backlash"]  # a name ("j_et2"), not for approx
     basic_from_dict({"name": "x", "source": "y", "design": design}, fit=False)
 
 
