@@ -47,6 +47,16 @@ def _metrics(**over):
     return {k: np.asarray(v, float) for k, v in m.items()}
 
 
+def _checked(values, metrics, targets, centre_v):
+    """A design the check chose (index 3, checked at ltca run's sampling): ``values``
+    scored on ``metrics`` against ``targets`` (:func:`development_score`)."""
+    from contact.optimize import development as dev
+
+    full = development_score(metrics, targets, centre_v=centre_v)
+    return dev.DevelopmentEvaluation(3, values, metrics, full[0], full[1], full[2], "", 0.0,
+                                     full=full, checked=True)
+
+
 def test_a_design_meeting_every_target_scores_only_its_lte():
     """Every shortfall 0; the objective is the tie-break 0.1 × LTE(design)/10 µrad."""
     obj, short, met = development_score(_metrics(), DevelopmentTargets(), centre_v=0.6)
@@ -816,11 +826,8 @@ def test_the_te_stage_runs_again_at_the_check_where_the_lte_is_missed(monkeypatc
     targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
 
     def chosen(level):
-        m = _metrics(lte_peak_to_peak=[lte[level]] * 2)
-        full = development_score(m, targets, centre_v=0.6)
-        return dev.DevelopmentEvaluation(3, {"path_angle": -60.0, "te_level": level}, m,
-                                         full[0], full[1], full[2], "", 0.0, full=full,
-                                         checked=True)
+        return _checked({"path_angle": -60.0, "te_level": level},
+                        _metrics(lte_peak_to_peak=[lte[level]] * 2), targets, 0.6)
 
     lines = []
     got = dev._checked_te(chosen(45.0), targets, setup, None, lines.append,
@@ -857,10 +864,8 @@ def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
     targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
 
     def chosen(values):
-        m = fake(values, [], options=dev.CHECK_LTCA)[0]
-        full = development_score(m, targets, centre_v=0.6)
-        return dev.DevelopmentEvaluation(3, values, m, full[0], full[1], full[2], "", 0.0,
-                                         full=full, checked=True)
+        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
+                        0.6)
 
     lines = []
     start = chosen({"path_angle": -58.75, "ellipse_length": 0.55})  # 0.71 long
@@ -896,10 +901,8 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
     targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.6}
 
     def chosen(values):
-        m = fake(values, [], options=dev.CHECK_LTCA)[0]
-        full = development_score(m, targets, centre_v=0.6)
-        return dev.DevelopmentEvaluation(3, values, m, full[0], full[1], full[2], "", 0.0,
-                                         full=full, checked=True)
+        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
+                        0.6)
 
     lines = []
     start = chosen({"path_angle": -51.9, "ellipse_length": 0.65})  # 0.53 long, 50 µrad
@@ -932,10 +935,8 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
     targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.548}
 
     def chosen(values):
-        m = fake(values, [], options=dev.CHECK_LTCA)[0]
-        full = development_score(m, targets, centre_v=0.548)
-        return dev.DevelopmentEvaluation(3, values, m, full[0], full[1], full[2], "", 0.0,
-                                         full=full, checked=True)
+        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
+                        0.548)
 
     lines = []
     high = chosen({"tip_relief": 15.0, "tip_relief_start": 0.85})  # v 0.64, edge 0.1 %

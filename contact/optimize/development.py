@@ -100,6 +100,7 @@ from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_
 from contact.optimize.development_result import (
     COAST_STATUS,
     STATIC_MARGIN,
+    TOLERANCE_KEYS,
     DevelopmentEvaluation,
     DevelopmentResult,
     metrics_text,
@@ -641,11 +642,6 @@ def _both_flanks_built(case: Case, wanted: bool) -> None:
         from contact.optimize.development_root import both_flanks_built
 
         both_flanks_built(case)
-
-
-#: the shortfalls a design must be free of at every mounting excursion to be tolerant
-#: (:attr:`DevelopmentResult.tolerant`)
-TOLERANCE_KEYS = ("toe", "heel", "edge", "plastic")
 
 
 def _tolerance(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],

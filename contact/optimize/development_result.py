@@ -27,8 +27,8 @@ from contact.optimize.development_targets import DevelopmentTargets
 from geometry.case import Case
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS, BasicDesign
 
-__all__ = ["COAST_STATUS", "STATIC_MARGIN", "DevelopmentEvaluation", "DevelopmentResult",
-           "metrics_text"]
+__all__ = ["COAST_STATUS", "STATIC_MARGIN", "TOLERANCE_KEYS", "DevelopmentEvaluation",
+           "DevelopmentResult", "metrics_text"]
 
 
 # --------------------------------------------------------------------------- evaluation
@@ -185,8 +185,8 @@ class DevelopmentResult:
     def tolerant(self) -> bool:
         """At every excursion the pattern stays clear of toe and heel at light load and the
         edges elastic with at most the edge share allowed."""
-        keys = ("toe", "heel", "edge", "plastic")
-        return all(all(s[k] == 0.0 for k in keys) for _, s in self.tolerance.values())
+        return all(all(s[k] == 0.0 for k in TOLERANCE_KEYS)
+                   for _, s in self.tolerance.values())
 
     @property
     def stage_seconds(self) -> dict[str, float]:
@@ -496,6 +496,10 @@ def _values_text(values: Mapping[str, float]) -> str:
                                         if FLANK_OPTION_UNITS[k] != "1" else "")
                      for k, v in values.items())
 
+
+#: the shortfalls a design must be free of at every mounting excursion to be tolerant
+#: (:attr:`DevelopmentResult.tolerant`)
+TOLERANCE_KEYS = ("toe", "heel", "edge", "plastic")
 
 #: margin below the flank's static strength that :func:`_static_capacity` aims at [1]
 STATIC_MARGIN = 0.99

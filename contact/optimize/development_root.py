@@ -290,13 +290,10 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
         new = steps[why]
         if new >= t:
             break
-        try:
-            step = _root_tree(case, [light_load * new, new])
-            new_safe = _safeties(step)
-        except Exception as exc:  # reported, never fatal: the last torque checked is kept
-            log.info("development root stress at %g N m failed: %s", new, exc)
-            say(f"development: root stress at {new:.4g} N m not computed ({exc})")
+        checked = _checked_at(case, light_load, new, say)
+        if checked is None:  # the last torque checked is kept
             break
+        step, new_safe = checked
         tree, torques, used = step, [light_load * new, new], [*used, (why, slope[why])]
         slope = {k: _exponent(new, float(new_safe[k][0][-1]), t, float(safe[k][0][-1]),
                               slope[k], *CRITERIA[k][2][:2])
@@ -357,16 +354,24 @@ def _back_up(case, light_load: float, t: float, bad: float,
     new = float(f"{math.floor(10.0 * math.exp(x)) / 10.0:.4g}")
     if not t < new < bad:
         return None
+    checked = _checked_at(case, light_load, new, say)
+    if checked is None or _failing(checked[1]):  # the torque that holds is kept
+        return None
+    return checked[0], [light_load * new, new], checked[1], new
+
+
+def _checked_at(case, light_load: float, torque: float, say: Callable[[str], None]
+                ) -> tuple[Any, dict[str, tuple[np.ndarray, float, str]]] | None:
+    """The capacity check's analysis of ``case`` at ``torque`` [N·m] and its light torque
+    (``light_load`` × it): (the analysis, its safeties of :data:`CRITERIA`), or None where
+    it failed (logged and said, never raised)."""
     try:
-        step = _root_tree(case, [light_load * new, new])
-        new_safe = _safeties(step)
-    except Exception as exc:  # reported, never fatal: the torque that holds is kept
-        log.info("development capacity check at %g N m failed: %s", new, exc)
-        say(f"development: root stress at {new:.4g} N m not computed ({exc})")
+        tree = _root_tree(case, [light_load * torque, torque])
+        return tree, _safeties(tree)
+    except Exception as exc:  # reported, never fatal
+        log.info("development capacity check at %g N m failed: %s", torque, exc)
+        say(f"development: root stress at {torque:.4g} N m not computed ({exc})")
         return None
-    if _failing(new_safe):
-        return None
-    return step, [light_load * new, new], new_safe, new
 
 
 def _exponent(t1: float, s1: float, t2: float, s2: float, default: float = 1.0,
