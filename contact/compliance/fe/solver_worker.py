@@ -5,7 +5,9 @@
 (``("cholmod", data, indices, indptr, n)``, CSC); the worker factorises it
 (:func:`contact.compliance.fe.cholmod_dense.cholmod_kernel`), answers ``("ready", nnz,
 seconds)`` or ``("error", exception)``, then answers each block of right-hand sides it
-receives with ``("ok", solution)`` until ``None`` or the end of the connection. LABEL is
+receives (a header ``("block", shape, dtype)`` and the raw bytes, :func:`send_array`) with
+``("ok", shape, dtype)`` and the solution's raw bytes until ``None`` or the end of the
+connection. LABEL is
 not read: the words of the parent's command line, so that the worker is recognisable as
 the build's in a process list.
 
@@ -51,11 +53,38 @@ def set_parent_death_signal() -> None:
         pass
 
 
+def send_array(conn, tag: str, array) -> None:
+    """Send a float array as a small pickled header ``(tag, shape, dtype)`` and its bytes
+    raw (:meth:`Connection.send_bytes`): not pickled, so neither side copies it into a
+    pickle buffer (a 42 MB block of 64 right-hand sides on the default pinion model;
+    pickling and unpickling them took ~3 s of CPU and its page faults per development,
+    issue 75). The receiver reads it with :func:`recv_array`."""
+    import numpy as np
+
+    a = np.ascontiguousarray(array)
+    conn.send((tag, a.shape, a.dtype.str))
+    conn.send_bytes(memoryview(a.reshape(-1)).cast("B"))
+
+
+def recv_array(conn, header):
+    """The array whose ``header`` (``(tag, shape, dtype)``, :func:`send_array`) was just
+    received: its bytes read from ``conn`` straight into a new array."""
+    import numpy as np
+
+    out = np.empty(header[1], dtype=np.dtype(header[2]))
+    if out.size:
+        conn.recv_bytes_into(memoryview(out.reshape(-1)).cast("B"))
+    else:
+        conn.recv_bytes()
+    return out
+
+
 def serve(conn, kernel, box: list) -> None:
     """Factorise the matrix in ``box`` with ``kernel`` (its solve and the factor's nonzeros),
     report ``("ready", nnz, seconds)`` or ``("error", exception)``, then answer each block
-    of right-hand sides received on ``conn`` with ``("ok", solution)`` (or ``("error",
-    exception)``) until ``None`` or the end of the connection. The loop of this lean
+    of right-hand sides received on ``conn`` (:func:`send_array`'s header and bytes, or a
+    pickled array) with the solution (:func:`send_array`, tag ``"ok"``) or ``("error",
+    exception)`` until ``None`` or the end of the connection. The loop of this lean
     worker and of the forked one (:func:`contact.compliance.fe.elasticity.factorise`)."""
     try:
         t0 = time.perf_counter()
@@ -72,9 +101,14 @@ def serve(conn, kernel, box: list) -> None:
         if block is None:
             return
         try:
-            conn.send(("ok", solve(block)))
+            if isinstance(block, tuple) and block and block[0] == "block":
+                block = recv_array(conn, block)  # the right-hand sides' raw bytes
+            x = solve(block)
         except Exception as exc:  # the parent raises it
             conn.send(("error", exc))
+            continue
+        del block
+        send_array(conn, "ok", x)
 
 
 def main(argv: list[str]) -> None:
