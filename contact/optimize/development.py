@@ -570,9 +570,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     pre_coast, developed = developed, coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
     root_safety, root_text = math.nan, ""
+    built: list[Case] = []  # the case whose FE models were built last (_both_flanks_built)
     given = (basic.options.design_torque is not None
              or basic.rating.get("design_torque") is not None)
-    _both_flanks_built(case, root_stress and coast.best is not None)
+    _both_flanks_built(case, root_stress and coast.best is not None, built, say)
     if root_stress and not given:
         # the FE root stress and the local pitting safety of the written case at the
         # design torque (ltca run's FE model, cached: ltca run reads it), the torque
@@ -583,7 +584,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             # and its root stress checked again at them (lowered further if below)
             best, developed = again, with_flank_options(developed, flank, again.values)
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-            _both_flanks_built(case, root_stress and coast.best is not None)
+            _both_flanks_built(case, root_stress and coast.best is not None, built, say)
             best, root_safety, text = _root_capacity(case, best, targets, setup, say)
             root_text = text or root_text
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
@@ -601,7 +602,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         if again is not None:  # the coast flank developed again at its own design torque
             coast, developed = again, again.basic
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-            _both_flanks_built(case, root_stress)
+            _both_flanks_built(case, root_stress, built, say)
             first = coast_cap
             coast, second = _coast_capacity(case, basic, coast, targets, setup,
                                             first.torque, root_stress,
@@ -630,18 +631,29 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     return result
 
 
-def _both_flanks_built(case: Case, wanted: bool) -> None:
+def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
+                       say: Callable[[str], None]) -> None:
     """Where ``wanted`` (root stress on, both flanks checked), both members' FE models of
     the case about to be checked, built once for both flanks
     (:func:`contact.optimize.development_root.both_flanks_built`): each re-synthesis after
     the first (the drive flank again at a lowered design torque, the coast flank again at
     its own) changes the pinion, whose drive and coast checks — and ``ltca run`` of the
     case written — would otherwise build its model once per flank (a first ``ltca run``
-    after synthesize rebuilt the drive model for 27 s CPU on a face-hobbed 8x39)."""
+    after synthesize rebuilt the drive model for 27 s CPU on a face-hobbed 8x39). A
+    member of the re-synthesis whose FE solid lies within 1 % of its whole depth of the
+    last built one's keeps that one's coefficients (said through ``say``; ``built`` holds
+    the last case built, updated here)."""
     if wanted:
+        from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION
         from contact.optimize.development_root import both_flanks_built
 
-        both_flanks_built(case)
+        kept = both_flanks_built(case, built[-1] if built else None)
+        for member, deviation in kept.items():
+            say(f"development: the {member}'s FE models (both flanks) kept from the design "
+                f"checked before: its mesh nodes within {1000.0 * deviation:.0f} um of "
+                f"them (<= {100.0 * REUSE_DEPTH_FRACTION:g} % of the whole depth; the FE "
+                f"root stress within 1 %, docs/fe.md)")
+        built[:] = [case]
 
 
 def _tolerance(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],

@@ -1,0 +1,88 @@
+"""An earlier design's FE coefficients kept for a re-synthesis that moves the tooth by
+micrometres (:mod:`contact.compliance.fe.reuse`, issue 71). The reference is the
+re-synthesised member's own build: the kept coefficients must agree with it within the
+error docs/fe.md states for the bound (the FE root stress within 1 %), and a member moved
+farther than the bound must be built, not kept."""
+
+import dataclasses
+
+import numpy as np
+
+from contact.catalogue import bundled_case_path
+from contact.compliance.fe import FEOptions, cache_key, cache_path, influence_coefficients
+from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION, node_deviation, reuse_near_model
+from geometry.case import load_case
+
+#: the coarse model of the CI tests (tests/test_fe_tooth.py)
+COARSE = FEOptions(face_divisions=4, across_divisions=2, flank_divisions=3, slot_divisions=1,
+                   rim_divisions=2, fillet_divisions=2, load_nu=5, load_nv=4)
+
+
+def _moved(case, d_blade: float, d_flankrem: float):
+    """``case`` with its pinion's convex blade turned by ``d_blade`` [rad] and its flank
+    relief angle by ``d_flankrem`` [rad] (a re-synthesis's micro-geometry)."""
+    pinion = case.member("pinion")
+    tool = pinion.convex
+    blade = dataclasses.replace(tool.blade, blade_angle=tool.blade.blade_angle + d_blade,
+                                flankrem_angle=tool.blade.flankrem_angle + d_flankrem)
+    moved = dataclasses.replace(pinion, convex=dataclasses.replace(tool, blade=blade))
+    return dataclasses.replace(case, pinion=moved)
+
+
+def _peak_per_load(ds) -> np.ndarray:
+    """The largest maximum principal fillet stress of each unit load [MPa/N] (load_u,
+    load_v): the root stress a load there gives."""
+    return ds["fillet_max_principal"].max(("tooth", "side", "station", "arc")).values
+
+
+def test_a_near_member_keeps_the_earlier_coefficients_within_the_stated_error(tmp_path):
+    """The pinion's coast (convex) blade turned by 0.05 deg and its flank relief by 0.2 deg:
+    its FE mesh moves by less than the bound (1 % of the whole depth), so the earlier
+    coefficients of both flanks are written under the new keys (with where from and how
+    far); against the moved pinion's own build, the peak fillet stress of the unit loads
+    agrees within 1 % at the loads carrying at least half the largest (where a root
+    stress is decided) and the loaded tooth's own compliance within 1 %. ~15 s of CPU
+    (two coarse builds)."""
+    case = load_case(bundled_case_path())
+    moved = _moved(case, np.radians(0.05), np.radians(0.2))
+    depth = (case.member("pinion").blank.outer_addendum
+             + case.member("pinion").blank.outer_dedendum)
+    kept_dir, own_dir = tmp_path / "kept", tmp_path / "own"
+    influence_coefficients(case, "pinion", "drive", COARSE, cache_dir=kept_dir,
+                           progress=False, other_flank=True)
+    deviation = reuse_near_model(moved, case, "pinion", COARSE, cache_dir=kept_dir)
+    assert deviation is not None and 0.0 < deviation <= REUSE_DEPTH_FRACTION * depth
+    for flank in ("drive", "coast"):
+        kept = influence_coefficients(moved, "pinion", flank, COARSE, cache_dir=kept_dir,
+                                      progress=False)
+        assert kept.attrs["reuse_node_deviation_mm"] == round(deviation, 6)
+        assert kept.attrs["reused_from"] != kept.attrs["cache_key"]
+        own = influence_coefficients(moved, "pinion", flank, COARSE, cache_dir=own_dir,
+                                     progress=False)
+        a, b = _peak_per_load(kept), _peak_per_load(own)
+        heavy = b >= 0.5 * b.max()
+        err = float(np.max(np.abs(a - b)[heavy] / b[heavy]))
+        assert err <= 0.01, (flank, err)
+        ga = kept["compliance"].sel(tooth=0).values
+        gb = own["compliance"].sel(tooth=0).values
+        n = ga.shape[0] * ga.shape[1]
+        da, db = np.diag(ga.reshape(n, n)), np.diag(gb.reshape(n, n))
+        assert float(np.max(np.abs(da - db) / db)) <= 0.01, flank
+
+
+def test_a_member_moved_farther_is_built_not_kept(tmp_path):
+    """The coast blade turned by 3 deg moves the mesh by more than the bound: nothing is
+    written, and a member unchanged keeps its own entries (deviation 0, nothing written).
+    One coarse build."""
+    case = load_case(bundled_case_path())
+    far = _moved(case, np.radians(3.0), 0.0)
+    influence_coefficients(case, "pinion", "drive", COARSE, cache_dir=tmp_path,
+                           progress=False, other_flank=True)
+    before = sorted(p.name for p in tmp_path.iterdir())
+    depth = far.member("pinion").blank.outer_addendum + far.member("pinion").blank.outer_dedendum
+    assert node_deviation(far, case, "pinion", COARSE) > REUSE_DEPTH_FRACTION * depth
+    assert reuse_near_model(far, case, "pinion", COARSE, cache_dir=tmp_path) is None
+    assert reuse_near_model(case, case, "pinion", COARSE, cache_dir=tmp_path) == 0.0
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+    key = cache_key(far.member("pinion"), "convex", COARSE)
+    assert not cache_path(key, tmp_path).exists()
