@@ -517,6 +517,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
 
     t0 = time.process_time()
     targets = targets or targets_from_table(basic.development)
+    basic.blank()  # blanks the basic data cannot make: its own error, before any trial
     say = progress or (lambda line: None)
     flank = basic.options.drive_flank
     start = _flank_start(basic.options.flank(flank), targets)
@@ -538,6 +539,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                  make, targets, start, basic, targets.max_evaluations)
     if not ok:
         reasons = "; ".join(sorted({e.reason for e in evals}))
+        try:  # the basic data as given: its own error is the one to fix, not the bounds
+            synthesize(basic, memo=memo, tip_planes=False)
+        except InputError as err:
+            raise InputError(f"{err} (the basic design as given, before any development; "
+                             "ltca synthesize --no-development says the same)") from err
         raise InputError(f"development: the drive flank could not be synthesised and "
                          f"analysed ({reasons}); change [development] variables bounds")
     # the final check at the default sampling (ltca run's): the best designs of the
