@@ -102,6 +102,20 @@ def boundary_friction_argument(text: str | None, source: str | None):
     """``--boundary-friction``'s value: None, one number, or a table mapping (temperature
     [degC], value [1], source) from ``DEGC:MU_B`` pairs by commas.
 
+    Parameters
+    ----------
+    text : str or None
+        The option's text: ``"0.09"`` or ``"40:0.11,100:0.09"`` (temperatures in degC,
+        μ_b [1]); None when not given.
+    source : str or None
+        ``--boundary-friction-source``: where a table's values were measured.
+
+    Returns
+    -------
+    None, float [1] or dict
+        What :class:`friction.oil_data_sheet.OilDataSheet` takes as ``boundary_friction``
+        (its ranges are checked there: :class:`friction.lubricant.BoundaryFrictionTable`).
+
     Raises
     ------
     InputError
