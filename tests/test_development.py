@@ -565,7 +565,7 @@ def _coast_outcome(monkeypatch, meets, n_max=12):
              _metrics(plastic_share=[0.0, 0.05], edge_load_share=[0.0, 0.05]))
         return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate._analyse", fake)
     monkeypatch.setattr(cs, "synthesize", lambda b, memo=None, **kw: (b, None))
     basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
     drive = dev.DevelopmentEvaluation(0, {"tip_relief": 20.0}, _metrics(), 0.0, {}, True, "",
@@ -640,7 +640,7 @@ def test_design_torque_lowered_to_the_bearings_static_capacity(monkeypatch, expo
         m = {k: v.copy() for k, v in _metrics().items()} | {"pressure_max_flank": p}
         return m, (0.0, 1.0, 0.0, 1.0, limit)
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate._analyse", fake)
     best = dev.DevelopmentEvaluation(0, {"path_angle": -40.0}, fake(None, [0.15 * t0, t0])[0],
                                      0.0, {}, False, "", 0.0)
     setup = {"torques": [0.15 * t0, t0], "source": "the ISO 10300 capacity, the torque",
@@ -822,7 +822,7 @@ def test_the_te_stage_runs_again_at_the_check_where_the_lte_is_missed(monkeypatc
         level = lte[case["te_level"]]
         return _metrics(lte_peak_to_peak=[level, level]), (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate._analyse", fake)
     targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
 
     def chosen(level):
@@ -860,7 +860,7 @@ def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
         return (_metrics(pattern_toe_u=[0.45 - n / 2, 0.1], pattern_heel_u=[0.45 + n / 2, 0.9]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate._analyse", fake)
     targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
 
     def chosen(values):
@@ -897,7 +897,7 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
         return (_metrics(pattern_toe_u=[0.25, 0.1], pattern_heel_u=[0.78, 0.9],
                          lte_peak_to_peak=[20.0, lte]), (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate._analyse", fake)
     targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.6}
 
     def chosen(values):
@@ -931,7 +931,7 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
                          edge_load_share=[0.0, 0.016 - 0.001 * r]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate._analyse", fake)
     targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.548}
 
     def chosen(values):
@@ -960,7 +960,7 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
             m["plastic_share"] = np.array([0.0, 0.003])
         return m, grid
 
-    monkeypatch.setattr(dev, "_analyse", misaligned)
+    monkeypatch.setattr("contact.optimize.development_evaluate._analyse", misaligned)
     assert dev._checked_tip(high, targets, setup, None, lines.append,
                             lambda v: dict(v)) is high
     assert "not kept" in lines[-1] and "plastic" in lines[-1]
@@ -971,12 +971,13 @@ def test_the_height_stage_keeps_the_design_before_a_costly_blade_angle(monkeypat
     started from (the tilt's LTE beyond the centre's shortfall: the spiral bevel 13x39,
     objective 14.2 against 3.65), the height stage goes on from the latter."""
     from contact.optimize import development as dev
+    from contact.optimize import development_stages as stages  # where the stage looks them up
 
     targets = DevelopmentTargets()
     base = _fake_design(6, {"blade_angle_change": 0.0, "profile_crowning": 0.0}, 1.8)
     centred = _fake_design(9, {"blade_angle_change": -0.2, "profile_crowning": 0.0}, 3.7)
-    monkeypatch.setattr(dev, "_root_relief_height", lambda *a: base)
-    monkeypatch.setattr(dev, "_centre_height", lambda *a, **k: centred)
+    monkeypatch.setattr(stages, "_root_relief_height", lambda *a: base)
+    monkeypatch.setattr(stages, "_centre_height", lambda *a, **k: centred)
     for e in (base, centred):  # finite centres, clear of the ends at light load
         e.metrics.update(pattern_centre_v=np.array([0.6, 0.6]),
                          edge_load_share=np.array([0.0, 0.0]))
@@ -985,7 +986,7 @@ def test_the_height_stage_keeps_the_design_before_a_costly_blade_angle(monkeypat
     better = _fake_design(9, {"blade_angle_change": -0.2, "profile_crowning": 0.0}, 0.5)
     better.metrics.update(pattern_centre_v=np.array([0.55, 0.6]),
                           edge_load_share=np.array([0.0, 0.0]))
-    monkeypatch.setattr(dev, "_centre_height", lambda *a, **k: better)
+    monkeypatch.setattr(stages, "_centre_height", lambda *a, **k: better)
     assert dev._height_stage(lambda *a: None, base, targets, 36, lambda v: v,
                              lambda b: b) is better
 
@@ -1021,7 +1022,7 @@ def test_a_check_step_keeps_no_design_that_loses_the_mounting_tolerance(monkeypa
             m["plastic_share"] = np.array([0.0, 0.013])
         return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate._analyse", fake)
     targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.6}
     m = fake({"path_angle": -51.9}, [])[0]
     full = development_score(m, targets, centre_v=0.6)

@@ -1,6 +1,6 @@
 """The development's levers (issue 71): the pinion blade's pressure-angle change and profile
 crowning (geometry.synthesis.blade_change), and the root-find on the pattern's height
-(contact.optimize.development._centre_height).
+(contact.optimize.development_stages._centre_height).
 
 The blade changes are checked against the blade's own geometry (the nominal line's radius
 at the pivot, the circle's sagitta); the lever's effect on the loaded pattern against its
