@@ -43,8 +43,8 @@ positions, 12 segments per curve, shell compliance with the teeth kept across de
 again (:func:`_checked_te`) and its path turned towards the profile where it misses its
 length or LTE there (:func:`_checked_path`), and where the chosen one's flank peak
 pressure at the rating's capacity exceeds the static strength the design torque is
-lowered to what the bearing carries (:func:`_static_capacity`): a design never fails its
-own check at its own design torque. Then the **coast flank** (:func:`_coast_development`):
+lowered to what the bearing carries (:func:`static_capacity`): a design never fails its
+own check at its own design torque. Then the **coast flank** (:func:`coast_development`):
 the chosen design's coast flank, synthesised from its own prescriptions, is checked at
 :data:`CHECK_LTCA` at the same light and design torque against the same targets (it
 carries the full torque in reverse gear), and where it misses one it gets the same
@@ -100,23 +100,19 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-# every name the development's modules took from here stays importable from here
-from contact.optimize.development_check import (  # noqa: F401
+# every public name of the development's modules importable from here, but the seams tests
+# replace (development_evaluate.analyse_design, development_coast_flank.coast_development):
+# those are called through their modules, and patched there
+from contact.optimize import development_coast_flank as coast_flank
+from contact.optimize.development_check import (
     PATH_STEPS,
     VERIFIED_DESIGNS,
-    _check_rank,
-    _check_steps,
-    _checked_best,
-    _checked_path,
-    _checked_te,
-    _checked_tip,
-    _checked_variant,
-    _excursions,
-    _placed_case,
-    _root_capacity,
-    _static_capacity,
-    _tolerance,
-    _tolerant_variant,
+    check_steps,
+    checked_best,
+    checked_root_capacity,
+    placed_case,
+    static_capacity,
+    tolerance_checks,
 )
 from contact.optimize.development_coast import (  # noqa: F401
     CoastCapacity,
@@ -126,26 +122,21 @@ from contact.optimize.development_coast import (  # noqa: F401
 from contact.optimize.development_coast_flank import (  # noqa: F401
     COAST_BEARING_DESIGNS,
     COAST_REDEVELOP,
-    _as_run,
-    _coast_at_its_torque,
-    _coast_capacity,
-    _coast_check,
-    _coast_development,
-    _coast_rated_torque,
-    _CoastOutcome,
+    coast_at_its_torque,
+    coast_flank_capacity,
+    coast_rated_torque,
 )
 from contact.optimize.development_evaluate import (  # noqa: F401
     CHECK_LTCA,
     COARSE_LTCA,
     KeptTeeth,
-    _analyse,
-    _bearing_key,
-    _evaluator,
-    _grid,
-    _line,
-    _metrics,
-    _Stop,
+    StageStop,
+    bearing_key,
+    design_metrics,
     design_torque_of,
+    evaluation_line,
+    evaluator,
+    grid_bounds,
     lte_spread,
     static_strength,
 )
@@ -158,7 +149,6 @@ from contact.optimize.development_result import (  # noqa: F401
     metrics_text,
 )
 from contact.optimize.development_stages import (  # noqa: F401
-    _RECENTRE_DESIGNS,
     CROWNING_STEP,
     HEIGHT_DESIGNS,
     HEIGHT_SLOPE,
@@ -166,23 +156,9 @@ from contact.optimize.development_stages import (  # noqa: F401
     ROOT_HEIGHT_RELIEF,
     SECOND_BEARING_DESIGNS,
     TE_DESIGNS,
-    _best_height,
-    _centre_height,
-    _centre_v,
-    _evaluated,
-    _flank_start,
-    _height_stage,
-    _minimise,
-    _note_slope,
-    _recentred,
-    _relief_bearings,
-    _relief_stage,
-    _root_relief_height,
-    _sample_then_minimise,
-    _search,
-    _start,
-    _target_v,
-    _te_stage,
+    flank_start,
+    footprint_centre_v,
+    search_flank,
 )
 from contact.optimize.development_targets import (
     CROWNING_NAME,
@@ -282,13 +258,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     meets every target) and the chosen one is scored by that check. Where the design
     torque is the rating's capacity (the default) and the chosen design's flank peak
     pressure there exceeds the static strength, the design torque is lowered to the
-    bearing's static flank capacity (:func:`_static_capacity`); after the final synthesis,
+    bearing's static flank capacity (:func:`static_capacity`); after the final synthesis,
     where the written case's FE root stress gives S_F,FE < S_Fmin, or its LTCA peak flank
     pressure a local pitting safety at long life S_H,loc < S_Hmin, at the design torque,
     to that capacity (:func:`contact.optimize.development_root.root_capacity`;
     ``root_stress``), the drive and coast flank analysed again at the new torques.
 
-    3. **coast flank** (:func:`_coast_development`): the chosen design's coast flank, as
+    3. **coast flank** (:func:`coast_development`): the chosen design's coast flank, as
        synthesised from its own prescriptions, analysed at :data:`CHECK_LTCA` at the same
        light and design torque and scored on the same targets — the coast flank carries
        the full torque in reverse gear; where it misses a target and
@@ -320,7 +296,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     targets = targets or targets_from_table(basic.development)
     say = progress or (lambda line: None)
     flank = basic.options.drive_flank
-    start = _flank_start(basic.options.flank(flank), targets)
+    start = flank_start(basic.options.flank(flank), targets)
     evals: list[DevelopmentEvaluation] = []
     setup: dict[str, Any] = {}
     # kept across designs: steps 3-6 of each pinion flank's synthesis (the coast flank is
@@ -333,10 +309,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     def make(b: BasicDesign) -> Case:  # a design of the coarse search: no tip planes
         return synthesize(b, memo=memo, tip_planes=False)[0]
 
-    evaluate = _evaluator(basic, targets, setup, teeth, say, evals, "drive",
-                          targets.max_evaluations)
-    ok = _search(evaluate, evals, lambda values: with_flank_options(basic, flank, values),
-                 make, targets, start, basic, targets.max_evaluations)
+    evaluate = evaluator(basic, targets, setup, teeth, say, evals, "drive",
+                         targets.max_evaluations)
+    ok = search_flank(evaluate, evals, lambda values: with_flank_options(basic, flank, values),
+                      make, targets, start, basic, targets.max_evaluations)
     if not ok:
         reasons = "; ".join(sorted({e.reason for e in evals}))
         raise InputError(f"development: the drive flank could not be synthesised and "
@@ -345,13 +321,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # coarse search in turn until one meets every target (the coarse LTCA's peak pressure
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
     c_check = time.process_time()
-    placed = functools.partial(_placed_case, basic, flank, memo)
-    best = _checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes)
-    steps = functools.partial(_check_steps, targets=targets, setup=setup, teeth=teeth,
+    placed = functools.partial(placed_case, basic, flank, memo)
+    best = checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes)
+    steps = functools.partial(check_steps, targets=targets, setup=setup, teeth=teeth,
                               say=say, placed=placed, level=start[TE_NAME])
     best = steps(best)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
-        best = _static_capacity(best, targets, setup, teeth, say)
+        best = static_capacity(best, targets, setup, teeth, say)
         if setup["lowered"]:  # the steps again at the torques the bearing carries
             best = steps(best)
     developed = with_flank_options(basic, flank, best.values)
@@ -360,13 +336,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     c_coast = time.process_time()
     # at the coast side's own design torque: the smaller of the design torque and the
     # coast side's ISO 10300 capacity (or the basic file's coast_design_torque)
-    coast_iso = _coast_rated_torque(best.case if best.case is not None else None, basic,
-                                    setup["torques"][1])
+    coast_iso = coast_rated_torque(best.case if best.case is not None else None, basic,
+                                   setup["torques"][1])
     # (the light torque the drive's: `ltca run --flank coast` keeps it, flank_torques)
     coast_setup = dict(setup, torques=[setup["torques"][0],
                                        min(setup["torques"][1], coast_iso)])
-    coast = _coast_development(developed, best, targets, coast_setup, teeth, memo, say,
-                               make)
+    coast = coast_flank.coast_development(developed, best, targets, coast_setup, teeth, memo,
+                                          say, make)
     coast_seconds = time.process_time() - c_coast
     pre_coast, developed = developed, coast.basic
     case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
@@ -378,14 +354,14 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         # the FE root stress and the local pitting safety of the written case at the
         # design torque (ltca run's FE model, cached: ltca run reads it), the torque
         # lowered to its capacity if below (development_root.root_capacity)
-        best, root_safety, root_text = _root_capacity(case, best, targets, setup, say)
+        best, root_safety, root_text = checked_root_capacity(case, best, targets, setup, say)
         again = steps(best) if root_text else best
         if again is not best:  # a better drive flank at the lowered torques: written,
             # and its root stress checked again at them (lowered further if below)
             best, developed = again, with_flank_options(developed, flank, again.values)
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
             _both_flanks_built(case, root_stress and coast.best is not None)
-            best, root_safety, text = _root_capacity(case, best, targets, setup, say)
+            best, root_safety, text = checked_root_capacity(case, best, targets, setup, say)
             root_text = text or root_text
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
@@ -393,27 +369,27 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     c_cap = time.process_time()
     coast_cap = None
     if coast.best is not None:
-        start = min(setup["torques"][1], _coast_rated_torque(case, basic, setup["torques"][1]))
+        start = min(setup["torques"][1], coast_rated_torque(case, basic, setup["torques"][1]))
         given_coast = basic.rating.get("coast_design_torque") is not None
-        coast, coast_cap = _coast_capacity(case, basic, coast, targets, setup, start,
-                                           root_stress, not (given or given_coast), say)
-        again = _coast_at_its_torque(pre_coast, best, targets, setup, teeth, memo, say, make,
-                                     coast, coast_cap, coast_setup["torques"][1])
+        coast, coast_cap = coast_flank_capacity(case, basic, coast, targets, setup, start,
+                                                root_stress, not (given or given_coast), say)
+        again = coast_at_its_torque(pre_coast, best, targets, setup, teeth, memo, say, make,
+                                    coast, coast_cap, coast_setup["torques"][1])
         if again is not None:  # the coast flank developed again at its own design torque
             coast, developed = again, again.basic
             case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
             _both_flanks_built(case, root_stress)
             first = coast_cap
-            coast, second = _coast_capacity(case, basic, coast, targets, setup,
-                                            first.torque, root_stress,
-                                            not (given or given_coast), say)
+            coast, second = coast_flank_capacity(case, basic, coast, targets, setup,
+                                                 first.torque, root_stress,
+                                                 not (given or given_coast), say)
             coast_cap = first if second is None else CoastCapacity(
                 second.torque, first.start, first.checks + second.checks,
                 f"{first.reason}; the coast flank developed again at {first.torque:.4g} N m"
                 + (f", then {second.reason}" if second.lowered else ", where it holds"),
                 second.holds)
     coast_seconds += time.process_time() - c_cap
-    tolerance = _tolerance(case, targets, setup, teeth, best.values)
+    tolerance = tolerance_checks(case, targets, setup, teeth, best.values)
     result = DevelopmentResult(developed, case, report, best, tuple(evals),
                                tuple(setup["torques"]), setup["source"], tolerance, targets,
                                time.process_time() - t0,

@@ -3,16 +3,17 @@
 torque capped at the bearing's static flank and FE root-stress capacity, and its mounting
 tolerance.
 
-:func:`_checked_best` checks the best designs in turn until one meets every target (one
-Newton step of the blade angle where it misses the centre v); :func:`_check_steps` then
+:func:`checked_best` checks the best designs in turn until one meets every target (one
+Newton step of the blade angle where it misses the centre v); :func:`check_steps` then
 gives the chosen design the TE stage again (:func:`_checked_te`), its path turned towards
 the profile (:func:`_checked_path`, :data:`PATH_STEPS`) and a shorter tip relief
 (:func:`_checked_tip`), each kept where it scores better and stays tolerant
-(:func:`_tolerant_variant`). :func:`_static_capacity` lowers the design torque to the
-flank's static capacity, :func:`_root_capacity` to the written case's root-stress and
-pitting capacity (:mod:`contact.optimize.development_root`); :func:`_tolerance` analyses
+(:func:`_tolerant_variant`). :func:`static_capacity` lowers the design torque to the
+flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
+pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
 the drive flank at the mounting excursions ΔE, ΔP (:func:`_excursions`). Split out of
-:mod:`contact.optimize.development` (issue 71), which re-exports every name.
+:mod:`contact.optimize.development` (issue 71), which re-exports every public
+name.
 """
 
 from __future__ import annotations
@@ -29,10 +30,10 @@ from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_evaluate import (
     CHECK_LTCA,
     KeptTeeth,
-    _bearing_key,
-    _grid,
-    _line,
-    _metrics,
+    bearing_key,
+    design_metrics,
+    evaluation_line,
+    grid_bounds,
     static_strength,
 )
 from contact.optimize.development_result import (
@@ -40,7 +41,7 @@ from contact.optimize.development_result import (
     TOLERANCE_KEYS,
     DevelopmentEvaluation,
 )
-from contact.optimize.development_stages import _centre_v
+from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import (
     HEIGHT_NAME,
     METRIC_NAMES,
@@ -64,9 +65,9 @@ log = logging.getLogger("contact.optimize.development")
 VERIFIED_DESIGNS = 2
 
 
-def _tolerance(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
-               teeth: KeptTeeth | None, values: Mapping[str, float]
-               ) -> dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]:
+def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
+                     teeth: KeptTeeth | None, values: Mapping[str, float]
+                     ) -> dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]:
     """The drive flank of ``case`` at each mounting excursion (:func:`_excursions`,
     :data:`COARSE_LTCA` at the development's torques): per excursion label, its metrics
     and shortfalls (:func:`development_score`); an analysis that fails counts as missing
@@ -74,8 +75,8 @@ def _tolerance(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any]
     tolerance = {}
     for lab, mis in _excursions(targets):
         try:
-            ms, grid = evaluation._analyse(case, setup["torques"], mis, teeth=teeth,
-                                           pinion_key=_bearing_key(values))
+            ms, grid = evaluation.analyse_design(case, setup["torques"], mis, teeth=teeth,
+                                                 pinion_key=bearing_key(values))
             _, short, _ = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
                                             pressure_limit=grid[4])
         except Exception as exc:  # reported, never fatal
@@ -99,14 +100,14 @@ def _checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], s
     """``base`` with the prescriptions ``values``: its case placed as it is written
     (``placed``), analysed at :data:`CHECK_LTCA` at the development's torques and scored
     (:func:`development_score`), recorded as checked at ``stage``. ``pinion_key``: the
-    kept pinion tooth's key (default the design's bearing, :func:`_bearing_key`). None
+    kept pinion tooth's key (default the design's bearing, :func:`bearing_key`). None
     where the synthesis or the analysis failed (logged: the design it would replace
     stands)."""
     try:
         case = placed(values)
-        ms, grid = evaluation._analyse(
+        ms, grid = evaluation.analyse_design(
             case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
-            pinion_key=_bearing_key(values) if pinion_key is None else pinion_key, flank=flank)
+            pinion_key=bearing_key(values) if pinion_key is None else pinion_key, flank=flank)
     except Exception as exc:  # reported, never fatal
         log.info("development %s check of %s failed: %s", stage, dict(values), exc)
         return None
@@ -141,17 +142,17 @@ def _checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if e is None:
             break
         say(f"  design {best.index + 1} at {TE_NAME} {x:.3g} urad, at the default "
-            "sampling: " + _line(e, targets.max_evaluations).split(": ", 2)[-1])
+            "sampling: " + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
         if _check_rank(e) >= _check_rank(best):
             break
         best, current = e, float(x)
     return best
 
 
-def _check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
-                 setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                 placed: Callable[[Mapping[str, float]], Case], level: float
-                 ) -> DevelopmentEvaluation:
+def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
+                setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
+                placed: Callable[[Mapping[str, float]], Case], level: float
+                ) -> DevelopmentEvaluation:
     """The check's steps on the chosen design at the development's torques
     (``setup["torques"]``): the TE stage again (:func:`_checked_te`), then the path turned
     towards the profile (:func:`_checked_path`); each only where the design misses its LTE
@@ -184,18 +185,18 @@ def _checked_tip(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     0.2): tip relief 15 µm from 0.85 of the way: centre v 0.64–0.65 (target 0.548 ±
     0.08); 8 µm from 0.9: 0.61, LTE 11 / 39 µrad, edge 0.9 %, every target met; none:
     0.58 but 6.5 % of the design torque on the pinion's tip edge (2026-11-25). The
-    design is kept only where it is also tolerant (:func:`_tolerance`: clear of toe and
+    design is kept only where it is also tolerant (:func:`tolerance_checks`: clear of toe and
     heel, its edges elastic within their share at ΔE, ΔP = ± the tolerances): the
     shorter relief uncovers the tip edge, which a misalignment may load (the 13x39 with
     7.5 µm from 0.9 of the way: 0.3 % of the design torque plastic at ΔE +0.05 mm)."""
     names = ("tip_relief", "tip_relief_start")
     if (best.full is None or not best.checked or best.full[1]["centre_v"] == 0.0
             or not all(n in targets.variables and n in best.values for n in names)
-            or not math.isfinite(_centre_v(best))):
+            or not math.isfinite(footprint_centre_v(best))):
         return best
     target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
               else setup["centre_v"])
-    if (_centre_v(best) < target
+    if (footprint_centre_v(best) < target
             or float(best.metrics["edge_load_share"][1]) > 0.5 * targets.max_edge_share):
         return best
     (r_lo, r_hi), (_, s_hi) = (targets.variables[n] for n in names)
@@ -209,7 +210,7 @@ def _checked_tip(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         return best
     say(f"  design {best.index + 1} with tip_relief {values['tip_relief']:.3g} from "
         f"{values['tip_relief_start']:.3g}, at the default sampling: "
-        + _line(e, targets.max_evaluations).split(": ", 2)[-1])
+        + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
     if _check_rank(e) >= _check_rank(best):
         return best
     # the tip edge it uncovers must stay elastic at the mounting excursions too (the
@@ -220,13 +221,13 @@ def _checked_tip(best: DevelopmentEvaluation, targets: DevelopmentTargets,
 def _tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
                       say: Callable[[str], None]) -> bool:
-    """Whether a check step's design is tolerant (:func:`_tolerance`: clear of toe and
+    """Whether a check step's design is tolerant (:func:`tolerance_checks`: clear of toe and
     heel, its edges elastic within their share at every mounting excursion); where not,
     says which it misses. A check step keeps a design only so: a bearing turned or
     relieved for its LTE or height must not lose the assembly's tolerance (the spiral bevel
     13x39 at path −80°, ellipse 0.75: LTE 12 / 39 µrad, every excursion but ΔE +0.05 mm
     elastic, 1.3 % of the design torque plastic there)."""
-    tolerance = _tolerance(e.case, targets, setup, teeth, e.values)
+    tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values)
     missed = sorted({k for _, short in tolerance.values() for k in TOLERANCE_KEYS
                      if short[k] > 0.0})
     if missed:
@@ -295,7 +296,7 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             continue
         say(f"  design {best.index + 1} with path_angle {values['path_angle']:.3g}, "
             f"ellipse_length {values['ellipse_length']:.3g}, at the default sampling: "
-            + _line(e, targets.max_evaluations).split(": ", 2)[-1])
+            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
         if (_check_rank(e) < _check_rank(best)
                 and _tolerant_variant(e, targets, setup, teeth, say)):
             best = e
@@ -304,13 +305,13 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     return best
 
 
-def _root_capacity(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                   setup: dict[str, Any], say: Callable[[str], None]
-                   ) -> tuple[DevelopmentEvaluation, float, str]:
+def checked_root_capacity(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                          setup: dict[str, Any], say: Callable[[str], None]
+                          ) -> tuple[DevelopmentEvaluation, float, str]:
     """The written case's FE root stress at the design torque
     (:func:`contact.optimize.development_root.root_capacity`); where that lowered the
     design torque, the drive flank's metrics are those of its analysis at the new torques
-    (the coast flank is analysed at its own torques afterwards, :func:`_coast_capacity`).
+    (the coast flank is analysed at its own torques afterwards, :func:`coast_flank_capacity`).
     Returns the drive design, S_F,FE at the design torque and the reason the torque was
     lowered (empty where not)."""
     from contact.optimize.development_root import root_capacity
@@ -318,7 +319,7 @@ def _root_capacity(case: Case, best: DevelopmentEvaluation, targets: Development
     tree, safety, text = root_capacity(case, setup, targets.light_load, say)
     if tree is None:
         return best, safety, text
-    ms, grid = _metrics(tree, case), (*_grid(tree), static_strength(tree))
+    ms, grid = design_metrics(tree, case), (*grid_bounds(tree), static_strength(tree))
     full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
                              pressure_limit=grid[4])
     best = dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
@@ -326,9 +327,9 @@ def _root_capacity(case: Case, best: DevelopmentEvaluation, targets: Development
     return best, safety, text
 
 
-def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                     setup: dict[str, Any], teeth: KeptTeeth,
-                     say: Callable[[str], None]) -> DevelopmentEvaluation:
+def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                    setup: dict[str, Any], teeth: KeptTeeth,
+                    say: Callable[[str], None]) -> DevelopmentEvaluation:
     """The design torque lowered to what the developed bearing carries, where the
     chosen design's flank peak pressure at the rating's capacity exceeds the static
     strength (the verdict's fail limit: no life at that torque).
@@ -358,8 +359,8 @@ def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if new == torque:
             break
         torques = [targets.light_load * new, new]
-        ms, grid = evaluation._analyse(best.case, torques, options=CHECK_LTCA, teeth=teeth,
-                                       pinion_key=_bearing_key(best.values))
+        ms, grid = evaluation.analyse_design(best.case, torques, options=CHECK_LTCA, teeth=teeth,
+                                             pinion_key=bearing_key(best.values))
         p_new = float(ms["pressure_max_flank"][1])
         if math.isfinite(p_new) and p_new != p:  # the exponent measured on this bearing
             exponent = min(1.0, max(0.2, math.log(p_new / p) / math.log(new / torque)))
@@ -384,8 +385,8 @@ def _static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                                met=full[2], full=full)
 
 
-def _placed_case(basic: BasicDesign, flank: str, memo: dict,
-                 values: Mapping[str, float]) -> Case:
+def placed_case(basic: BasicDesign, flank: str, memo: dict,
+                values: Mapping[str, float]) -> Case:
     """A design of the coarse search as it is written: its synthesis with step 8, the tip
     planes on the root cone (steps 3-6 and the relief from the memo), so that the design
     checked is the case written, bit for bit."""
@@ -394,12 +395,12 @@ def _placed_case(basic: BasicDesign, flank: str, memo: dict,
     return synthesize(with_flank_options(basic, flank, values), memo=memo)[0]
 
 
-def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets,
-                  setup: Mapping[str, Any], teeth: KeptTeeth,
-                  say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case] | None = None, *,
-                  side: str = "drive", key_prefix: tuple = (), n_max: int | None = None,
-                  slopes: Mapping[tuple, float] | None = None) -> DevelopmentEvaluation:
+def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets,
+                 setup: Mapping[str, Any], teeth: KeptTeeth,
+                 say: Callable[[str], None],
+                 placed: Callable[[Mapping[str, float]], Case] | None = None, *,
+                 side: str = "drive", key_prefix: tuple = (), n_max: int | None = None,
+                 slopes: Mapping[tuple, float] | None = None) -> DevelopmentEvaluation:
     """The chosen design: the best of the coarse search checked in turn at
     :data:`CHECK_LTCA` (at most :data:`VERIFIED_DESIGNS`) until one meets every target
     there, then the best by its checked score (every target met first). ``placed``: the
@@ -421,9 +422,9 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
         try:
             if placed is not None:
                 e = dataclasses.replace(e, case=placed(e.values))
-            ms, grid = evaluation._analyse(e.case, setup["torques"], options=CHECK_LTCA,
-                                           teeth=teeth, flank=side,
-                                           pinion_key=(*key_prefix, *_bearing_key(e.values)))
+            ms, grid = evaluation.analyse_design(e.case, setup["torques"], options=CHECK_LTCA,
+                                                 teeth=teeth, flank=side,
+                                                 pinion_key=(*key_prefix, *bearing_key(e.values)))
         except Exception as exc:  # a design that fails here is not chosen
             log.info("development check of %s %d failed: %s", what, e.index + 1, exc)
             continue
@@ -433,27 +434,27 @@ def _checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTarget
                                            shortfalls=full[1], met=full[2], full=full,
                                            checked=True))
         say(f"  check of {what} {e.index + 1} at the default sampling: "
-            + _line(checked[-1], n_max).split(": ", 2)[-1])
+            + evaluation_line(checked[-1], n_max).split(": ", 2)[-1])
         if full[2]:
             break
     chosen = min(checked or ranked, key=_check_rank)
-    slope = (slopes or {}).get(_bearing_key(chosen.values))
+    slope = (slopes or {}).get(bearing_key(chosen.values))
     if (placed is None or slope is None or not chosen.checked
             or HEIGHT_NAME not in chosen.values or chosen.full[1]["centre_v"] == 0.0
-            or not math.isfinite(_centre_v(chosen))):
+            or not math.isfinite(footprint_centre_v(chosen))):
         return chosen
     lo, hi = targets.variables.get(HEIGHT_NAME, (-3.0, 3.0))
     target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
               else setup["centre_v"])
-    x = float(np.clip(chosen.values[HEIGHT_NAME] - (_centre_v(chosen) - target) / slope,
+    x = float(np.clip(chosen.values[HEIGHT_NAME] - (footprint_centre_v(chosen) - target) / slope,
                       lo, hi))
     values = chosen.values | {HEIGHT_NAME: x}
     again = _checked_variant(chosen, values, "re-centred", targets, setup, teeth, placed,
-                             pinion_key=(*key_prefix, *_bearing_key(values)), flank=side)
+                             pinion_key=(*key_prefix, *bearing_key(values)), flank=side)
     if again is None:
         return chosen
     say(f"  {what} {chosen.index + 1} re-centred at the default sampling, "
-        f"{HEIGHT_NAME} {x:.3g}: " + _line(again, n_max).split(": ", 2)[-1])
+        f"{HEIGHT_NAME} {x:.3g}: " + evaluation_line(again, n_max).split(": ", 2)[-1])
     return again if _check_rank(again) < _check_rank(chosen) else chosen
 
 

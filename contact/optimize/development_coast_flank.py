@@ -1,16 +1,17 @@
 """The coast flank's development: its check as synthesised, its own search where it misses
 a target, and its analysis at its own design torque.
 
-:func:`_coast_development` checks the chosen drive design's coast flank at
+:func:`coast_development` checks the chosen drive design's coast flank at
 :data:`CHECK_LTCA` and, where it misses a target, runs the drive flank's stages and check
 on the coast flank's own prescriptions (:data:`COAST_BEARING_DESIGNS` bearings, budget
-``coast_max_evaluations``). :func:`_coast_rated_torque` is the coast side's rated torque;
+``coast_max_evaluations``). :func:`coast_rated_torque` is the coast side's rated torque;
 :func:`_coast_check` analyses the written case's coast flank as ``ltca run --flank
-coast`` does (:func:`_as_run`) and :func:`_coast_capacity` lowers its design torque to
+coast`` does (:func:`_as_run`) and :func:`coast_flank_capacity` lowers its design torque to
 what it carries (:func:`contact.optimize.development_coast.coast_capacity`);
-:func:`_coast_at_its_torque` develops it again where that fell below
+:func:`coast_at_its_torque` develops it again where that fell below
 :data:`COAST_REDEVELOP` of the torque it was developed at. Split out of
-:mod:`contact.optimize.development` (issue 71), which re-exports every name.
+:mod:`contact.optimize.development` (issue 71), which re-exports every public
+name.
 """
 
 from __future__ import annotations
@@ -25,22 +26,22 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from contact.optimize import development_evaluate as evaluation
-from contact.optimize.development_check import _checked_best
+from contact.optimize.development_check import checked_best
 from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
 from contact.optimize.development_evaluate import (
     CHECK_LTCA,
     KeptTeeth,
-    _bearing_key,
-    _evaluator,
-    _grid,
-    _metrics,
+    bearing_key,
+    design_metrics,
+    evaluator,
+    grid_bounds,
     static_strength,
 )
 from contact.optimize.development_result import (
     DevelopmentEvaluation,
     metrics_text,
 )
-from contact.optimize.development_stages import _search
+from contact.optimize.development_stages import search_flank
 from contact.optimize.development_targets import (
     DevelopmentTargets,
     development_score,
@@ -65,7 +66,7 @@ log = logging.getLogger("contact.optimize.development")
 COAST_BEARING_DESIGNS = 3
 
 
-def _coast_rated_torque(case: Case | None, basic: BasicDesign, design: float) -> float:
+def coast_rated_torque(case: Case | None, basic: BasicDesign, design: float) -> float:
     """The torque [N·m] the coast side is rated for at long life: the basic file's
     ``[rating] coast_design_torque``, else the coast side's ISO 10300 capacity where it is
     below ``design`` (:func:`contact.load_capacity.iso10300.capacity.
@@ -130,7 +131,7 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
         steps = steps.with_root_stress().with_efficiency().with_load_capacity()
     tree = run_analysis(c, torques, flank="coast", options=CHECK_LTCA, deviations=False,
                         steps=steps)
-    ms = _metrics(tree, c)
+    ms = design_metrics(tree, c)
     lt = tree["/ltca"]
     k = int(np.argmax(lt["torque"].values))
     safety, s_min, member = np.full(len(torques), np.nan), math.nan, ""
@@ -144,7 +145,7 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
             pit, s_h_min, pit_member = pitting_safety(tree)
         except LookupError as exc:
             log.info("development coast pitting safety not checked: %s", exc)
-    grid = (*_grid(tree), static_strength(tree))
+    grid = (*grid_bounds(tree), static_strength(tree))
     return CoastCheck(float(torques[k]), float(ms["pressure_max_flank"][k]),
                       float(grid[4]), float(np.max(ms["plastic_share"])),
                       float(safety[k]), float(s_min), member,
@@ -155,10 +156,10 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
                       float(pit[1 - k]) if len(torques) == 2 else math.nan)
 
 
-def _coast_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
-                    targets: DevelopmentTargets, setup: dict[str, Any], start: float,
-                    root_stress: bool, lower: bool, say: Callable[[str], None]
-                    ) -> tuple[_CoastOutcome, CoastCapacity | None]:
+def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
+                         targets: DevelopmentTargets, setup: dict[str, Any], start: float,
+                         root_stress: bool, lower: bool, say: Callable[[str], None]
+                         ) -> tuple[_CoastOutcome, CoastCapacity | None]:
     """The written case's coast flank at its own design torque ``start`` (the smaller of
     the design torque and the coast side's rated torque), as ``ltca run --flank coast``
     analyses it (:func:`_coast_check`), and — where ``lower`` (no design torque given in
@@ -191,11 +192,11 @@ def _coast_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
 
 
 class _CoastOutcome(NamedTuple):
-    """What :func:`_coast_development` did: the basic design with the chosen coast
+    """What :func:`coast_development` did: the basic design with the chosen coast
     prescriptions, the chosen coast design (None where its analysis failed), the designs
     of its search, its status (:data:`COAST_STATUS`) and the coast flank's metrics as
     synthesised where the search ran (else None), and the (light, design) torques [N·m]
-    of its metrics (its own design torque: :func:`_coast_capacity`)."""
+    of its metrics (its own design torque: :func:`coast_flank_capacity`)."""
 
     basic: BasicDesign
     best: DevelopmentEvaluation | None
@@ -205,16 +206,16 @@ class _CoastOutcome(NamedTuple):
     torques: tuple[float, ...] = ()
 
 
-def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
-                       targets: DevelopmentTargets, setup: dict[str, Any],
-                       teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
-                       make: Callable[[BasicDesign], Case]) -> _CoastOutcome:
+def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
+                      targets: DevelopmentTargets, setup: dict[str, Any],
+                      teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                      make: Callable[[BasicDesign], Case]) -> _CoastOutcome:
     """The coast flank of :func:`develop`, after the drive flank ``drive`` is chosen
     (``developed`` carries its prescriptions): analysed as synthesised at
     :data:`CHECK_LTCA` at the same light and design torque; where it misses a target and
     ``targets.coast_max_evaluations`` > 0, the two stages of the drive flank's search
-    (:func:`_search`) on the coast flank's own prescriptions with that budget, the best
-    checked at :data:`CHECK_LTCA` (:func:`_checked_best`) and chosen where it scores
+    (:func:`search_flank`) on the coast flank's own prescriptions with that budget, the best
+    checked at :data:`CHECK_LTCA` (:func:`checked_best`) and chosen where it scores
     better than the flank as synthesised. The drive flank is the same in every design
     (the synthesis places the coast flank against it, never the reverse), so its result
     stands; the coast designs' pinion teeth are kept under the drive's bearing and the
@@ -225,13 +226,13 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
 
     side = "convex" if developed.options.drive_flank == "concave" else "concave"
     start = flank_option_values(developed.options.flank(side))
-    drive_key = _bearing_key(drive.values)
+    drive_key = bearing_key(drive.values)
     torques = tuple(setup["torques"])  # the coast side's own light and design torque
     c0 = time.process_time()
     try:  # the flank as synthesised (its pinion tooth is the drive bearing's: the same)
         case0 = drive.case if drive.checked else synthesize(developed, memo=memo)[0]
-        m0, grid = evaluation._analyse(case0, setup["torques"], options=CHECK_LTCA,
-                                       teeth=teeth, pinion_key=drive_key, flank="coast")
+        m0, grid = evaluation.analyse_design(case0, setup["torques"], options=CHECK_LTCA,
+                                             teeth=teeth, pinion_key=drive_key, flank="coast")
         full = development_score(m0, targets, grid[:4], centre_v=setup["centre_v"],
                                  pressure_limit=grid[4])
     except Exception as exc:  # reported, never fatal
@@ -259,19 +260,19 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
         f"{', '.join(targets.variables)} (at most {n_max} designs, coarse LTCA)")
     evals: list[DevelopmentEvaluation] = []
     prefix = (*drive_key, "coast")
-    evaluate = _evaluator(developed, targets, setup, teeth, say, evals, "coast", n_max,
-                          key_prefix=prefix)
+    evaluate = evaluator(developed, targets, setup, teeth, say, evals, "coast", n_max,
+                         key_prefix=prefix)
 
     def basic_of(values: dict[str, float]) -> BasicDesign:
         return with_flank_options(developed, side, values)
 
     chosen = synthesised
-    if _search(evaluate, evals, basic_of, make, targets, start, developed, n_max,
-               COAST_BEARING_DESIGNS):
-        best = _checked_best(evals, targets, setup, teeth, say,
-                             lambda values: synthesize(basic_of(values), memo=memo)[0],
-                             side="coast", key_prefix=prefix, n_max=n_max,
-                             slopes=evaluate.slopes)
+    if search_flank(evaluate, evals, basic_of, make, targets, start, developed, n_max,
+                    COAST_BEARING_DESIGNS):
+        best = checked_best(evals, targets, setup, teeth, say,
+                            lambda values: synthesize(basic_of(values), memo=memo)[0],
+                            side="coast", key_prefix=prefix, n_max=n_max,
+                            slopes=evaluate.slopes)
         as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
         if (best.checked and not as_synthesised
                 and (not best.full[2], best.full[0]) < (not full[2], full[0])):
@@ -284,25 +285,25 @@ def _coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
 
 
 #: the coast design torque, as a fraction of the torque the coast flank was developed at,
-#: below which :func:`_coast_at_its_torque` develops it again at its own design torque [1]
+#: below which :func:`coast_at_its_torque` develops it again at its own design torque [1]
 COAST_REDEVELOP = 0.9
 
 
-def _coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
-                         targets: DevelopmentTargets, setup: dict[str, Any],
-                         teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
-                         make: Callable[[BasicDesign], Case], coast: _CoastOutcome,
-                         cap: CoastCapacity | None, developed_at: float
-                         ) -> _CoastOutcome | None:
+def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
+                        targets: DevelopmentTargets, setup: dict[str, Any],
+                        teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                        make: Callable[[BasicDesign], Case], coast: _CoastOutcome,
+                        cap: CoastCapacity | None, developed_at: float
+                        ) -> _CoastOutcome | None:
     """The coast flank developed again where its design torque was lowered well below the
     torque it was developed at (below :data:`COAST_REDEVELOP` × ``developed_at``: its own
-    static, plastic, root-stress or local pitting capacity, :func:`_coast_capacity`), now at
+    static, plastic, root-stress or local pitting capacity, :func:`coast_flank_capacity`), now at
     the torques ``ltca run --flank coast`` analyses (the case's light torque and the new
-    coast design torque): :func:`_coast_development` from the coast flank as synthesised
+    coast design torque): :func:`coast_development` from the coast flank as synthesised
     (``pre_coast``, the developed drive flank with the basic file's coast prescriptions),
     with the budget ``coast_max_evaluations``. Returns its outcome where its chosen design
     scores better at those torques than the design chosen first does there (``coast``,
-    whose metrics :func:`_coast_capacity` measured at them), else None.
+    whose metrics :func:`coast_flank_capacity` measured at them), else None.
 
     Why: the relief that keeps a coast bearing elastic at a torque its flank cannot carry
     costs LTE at the torque it can (issue 71, the e-axle 11×39 at Σ 80°: developed at
@@ -315,7 +316,7 @@ def _coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
     say(f"development: coast flank developed again at its own design torque "
         f"{cap.torque:.4g} N m (it was developed at {developed_at:.4g} N m)")
     redo_setup = dict(setup, torques=[setup["torques"][0], cap.torque])
-    again = _coast_development(pre_coast, drive, targets, redo_setup, teeth, memo, say, make)
+    again = coast_development(pre_coast, drive, targets, redo_setup, teeth, memo, say, make)
     old, new = coast.best, again.best
     if new is None or old.full is None or new.full is None:
         return None

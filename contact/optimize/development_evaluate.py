@@ -1,19 +1,19 @@
 """One design of the development analysed and scored: the coarse LTCA of a synthesised
 case at the light and the design torque, its metrics, and the search's objective.
 
-:func:`_analyse` runs the contact-only analysis (:func:`contact.pipeline.run_analysis`)
+:func:`analyse_design` runs the contact-only analysis (:func:`contact.pipeline.run_analysis`)
 of a design's flank, at :data:`COARSE_LTCA` inside the search or :data:`CHECK_LTCA` at the
 check, with the shell teeth kept across designs (:class:`KeptTeeth`), and summarises it
-(:func:`_metrics`: :func:`contact.study.summary.point_summary`, the footprint centre,
+(:func:`design_metrics`: :func:`contact.study.summary.point_summary`, the footprint centre,
 the plastic share, :func:`lte_spread`; the grid and :func:`static_strength`).
-:func:`_evaluator` makes the objective of one side's search from it: each design
+:func:`evaluator` makes the objective of one side's search from it: each design
 synthesised, analysed, scored (:func:`development_score`), recorded and printed, the
-stage ended by :class:`_Stop`. :func:`design_torque_of` is the torque the bearing is
+stage ended by :class:`StageStop`. :func:`design_torque_of` is the torque the bearing is
 checked at. Split out of :mod:`contact.optimize.development` (issue 71), which
-re-exports every name.
+re-exports every public name.
 
-The analysis seam: the other modules of the development call :func:`_analyse` through
-this module (``development_evaluate._analyse``), so that one ``monkeypatch.setattr`` on
+The analysis seam: the other modules of the development call :func:`analyse_design` through
+this module (``development_evaluate.analyse_design``), so that one ``monkeypatch.setattr`` on
 this module replaces the analysis of the search, the check and the coast flank alike.
 """
 
@@ -101,7 +101,13 @@ def static_strength(tree) -> float:
     return float(min(c.allowable * c.static_life_factor for c in curves))
 
 
-def _metrics(tree, case: Case) -> dict[str, np.ndarray]:
+def design_metrics(tree, case: Case) -> dict[str, np.ndarray]:
+    """The development's metrics of one analysis (``tree``, its ``/ltca`` group) of
+    ``case``, per torque (arrays of shape (n_torques,)): those of
+    :func:`contact.study.summary.point_summary` named in :data:`METRIC_NAMES`, the
+    footprint centre ``pattern_centre_u``/``pattern_centre_v`` [1 of the face width /
+    working depth] (:func:`footprint_centre`), ``plastic_share`` [1] (the largest segment's)
+    and ``lte_spread`` [1] (:func:`lte_spread`)."""
     from contact.study.summary import point_summary
 
     s = point_summary(tree, case)
@@ -132,7 +138,9 @@ def lte_spread(ltca) -> np.ndarray:
         return np.where(mean > ute_pp, pp / mean, 0.0)
 
 
-def _grid(tree) -> tuple[float, float, float, float]:
+def grid_bounds(tree) -> tuple[float, float, float, float]:
+    """The ends of an analysis' contact grid: (u first, u last, v first, v last) [1], the
+    face and the working depth the pattern is judged on (:func:`development_score`)."""
     lt = tree["/ltca"]
     u, v = lt["u"].values, lt["v"].values
     return float(u[0]), float(u[-1]), float(v[0]), float(v[-1])
@@ -196,9 +204,16 @@ class KeptTeeth:
                                "designs of a development (contact.optimize.development)")
 
 
-def _analyse(case: Case, torques: list[float], misalignment: Misalignment | None = None,
-             options: LTCAOptions = COARSE_LTCA, teeth: KeptTeeth | None = None,
-             pinion_key: tuple = (), flank: str = "drive"):
+def analyse_design(case: Case, torques: list[float], misalignment: Misalignment | None = None,
+                   options: LTCAOptions = COARSE_LTCA, teeth: KeptTeeth | None = None,
+                   pinion_key: tuple = (), flank: str = "drive"):
+    """One design's ``flank`` (``"drive"`` or ``"coast"``) analysed at ``torques`` [N·m]
+    (contact only, no deviations: :func:`contact.pipeline.run_analysis`), at
+    ``misalignment`` if given, with ``options`` (default :data:`COARSE_LTCA`) and, where
+    ``teeth`` is given, the shell teeth it keeps (the pinion's under ``pinion_key``).
+    Returns the metrics (:func:`design_metrics`) and (u first, u last, v first, v last,
+    static strength [MPa]) (:func:`grid_bounds`, :func:`static_strength`). The analysis
+    seam (module docstring); its errors propagate."""
     from contact.chain import AnalysisChain
     from contact.pipeline import run_analysis
 
@@ -207,22 +222,22 @@ def _analyse(case: Case, torques: list[float], misalignment: Misalignment | None
         options = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
     tree = run_analysis(c, torques, flank=flank, options=options, deviations=False,
                         steps=AnalysisChain.contact_only())
-    return _metrics(tree, c), (*_grid(tree), static_strength(tree))
+    return design_metrics(tree, c), (*grid_bounds(tree), static_strength(tree))
 
 
-class _Stop(Exception):
+class StageStop(Exception):
     """Raised inside the objective when a design meets every target of its stage or the
     stage's budget is spent."""
 
 
-def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],
-               teeth: KeptTeeth, say: Callable[[str], None],
-               evals: list[DevelopmentEvaluation], side: str, n_max: int,
-               key_prefix: tuple = ()) -> Callable[..., DevelopmentEvaluation]:
+def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],
+              teeth: KeptTeeth, say: Callable[[str], None],
+              evals: list[DevelopmentEvaluation], side: str, n_max: int,
+              key_prefix: tuple = ()) -> Callable[..., DevelopmentEvaluation]:
     """The objective of one side's search (:func:`develop`): ``evaluate(values, stage,
     make, budget, pinion_key)`` synthesises a design (``make()``), analyses its ``side``
     flank (``"drive"`` or ``"coast"``) by :data:`COARSE_LTCA` at the light and the design
-    torque, appends it to ``evals``, prints its line and raises :class:`_Stop` where it
+    torque, appends it to ``evals``, prints its line and raises :class:`StageStop` where it
     meets every target of ``stage`` or the stage's ``budget`` is spent. The first design
     of the drive flank fixes ``setup`` (torques, the depth centre aimed at). The pinion
     tooth is kept under ``key_prefix + pinion_key`` (:class:`KeptTeeth`)."""
@@ -234,10 +249,10 @@ def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str,
         key = (stage, *(round(v, 9) for v in values.values()))
         if key in seen:  # a design analysed before (the simplex returns to its start)
             if seen[key].met:
-                raise _Stop
+                raise StageStop
             return seen[key]
         if len(evals) >= budget:
-            raise _Stop
+            raise StageStop
         c0 = time.process_time()
         case = None
         try:
@@ -251,8 +266,8 @@ def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str,
                     f"{setup['torques'][0]:.4g} N m, design {torque:.4g} N m ({source}); "
                     f"varying {', '.join(targets.variables)} (at most "
                     f"{targets.max_evaluations} designs, coarse LTCA)")
-            metrics, grid = _analyse(case, setup["torques"], teeth=teeth,
-                                     pinion_key=(*key_prefix, *pinion_key), flank=side)
+            metrics, grid = analyse_design(case, setup["torques"], teeth=teeth,
+                                           pinion_key=(*key_prefix, *pinion_key), flank=side)
             setup["pressure_limit"] = grid[4]
             obj, short, met = development_score(metrics, targets, grid[:4],
                                                 centre_v=setup["centre_v"], stage=stage,
@@ -275,9 +290,9 @@ def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str,
             seen[("relief", *key[1:])] = dataclasses.replace(e, objective=e.full[0],
                                                              shortfalls=e.full[1],
                                                              met=e.full[2])
-        say(_line(e, n_max, label + stage))
+        say(evaluation_line(e, n_max, label + stage))
         if met:
-            raise _Stop
+            raise StageStop
         return e
 
     evaluate.evals = evals  # type: ignore[attr-defined]  (read by _centre_height)
@@ -286,14 +301,16 @@ def _evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str,
     return evaluate
 
 
-def _bearing_key(values: Mapping[str, float]) -> tuple:
+def bearing_key(values: Mapping[str, float]) -> tuple:
     """The prescriptions of a design that shape its pinion tooth (all but the relief):
     :class:`KeptTeeth`'s key."""
     return tuple(sorted((k, v) for k, v in values.items()
                         if k not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)))
 
 
-def _line(e: DevelopmentEvaluation, n: int, stage: str = "relief") -> str:
+def evaluation_line(e: DevelopmentEvaluation, n: int, stage: str = "relief") -> str:
+    """The progress line of design ``e`` of at most ``n`` at ``stage``: its values, then
+    its metrics and objective (or why it failed) and its CPU seconds."""
     vals = ", ".join(f"{k} {v:.3g}" for k, v in e.values.items())
     if e.reason:
         return f"  {stage} design {e.index + 1}/{n}: {vals}: failed ({e.reason})"

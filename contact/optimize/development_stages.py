@@ -1,5 +1,5 @@
 """The search stages of one flank's development: the bearing, the height, the relief and
-the TE stage (:func:`_search`).
+the TE stage (:func:`search_flank`).
 
 The **bearing** (path angle, ellipse length) by a bounded Nelder–Mead
 (:func:`_minimise`); from the best bearings (:func:`_relief_bearings`), the **height**
@@ -9,9 +9,9 @@ centred pattern reaches an end) and the **relief** (:func:`_relief_stage`: scram
 Sobol points then Nelder–Mead, :func:`_sample_then_minimise`, each design re-centred by
 one step of the blade angle, :func:`_recentred`); then the **TE stage**
 (:func:`_te_stage`: the modified roll's TE level lowered where the LTE misses). Each
-design is an ``evaluate`` call (:func:`contact.optimize.development_evaluate._evaluator`).
+design is an ``evaluate`` call (:func:`contact.optimize.development_evaluate.evaluator`).
 Split out of :mod:`contact.optimize.development` (issue 71), which re-exports every
-name; the sources are in its docstring.
+public name; the sources are in its docstring.
 """
 
 from __future__ import annotations
@@ -23,8 +23,8 @@ from typing import Any
 import numpy as np
 
 from contact.optimize.development_evaluate import (
-    _bearing_key,
-    _Stop,
+    StageStop,
+    bearing_key,
 )
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import (
@@ -90,7 +90,7 @@ def _start(names: list[str], targets: DevelopmentTargets, start: Mapping[str, fl
 def _minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray, low: np.ndarray,
               high: np.ndarray) -> None:
     """Bounded Nelder–Mead on the variables scaled to [0, 1], initial simplex 0.25 wide
-    (towards the middle of each bound); ``fun`` ends it by raising :class:`_Stop`."""
+    (towards the middle of each bound); ``fun`` ends it by raising :class:`StageStop`."""
     from scipy.optimize import minimize
 
     n = len(x0)
@@ -103,7 +103,7 @@ def _minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray, low: np.ndarra
                  method="Nelder-Mead", bounds=[(0.0, 1.0)] * n,
                  options={"initial_simplex": simplex, "maxfev": 10_000, "xatol": 0.02,
                           "fatol": 1e-3})
-    except _Stop:
+    except StageStop:
         pass
 
 
@@ -124,12 +124,12 @@ def _sample_then_minimise(fun: Callable[[np.ndarray], float], x0: np.ndarray,
             for z in pts:
                 x = low + z * (high - low)
                 tried.append((fun(x), x))
-    except _Stop:
+    except StageStop:
         return
     _minimise(fun, min(tried, key=lambda fx: fx[0])[1], low, high)
 
 
-def _flank_start(options: Any, targets: DevelopmentTargets) -> dict[str, float]:
+def flank_start(options: Any, targets: DevelopmentTargets) -> dict[str, float]:
     """A flank's prescriptions as the start of its search [file units]: the basic file's
     (:func:`~geometry.synthesis.basic_design.flank_option_values`), but the tip relief's
     start at :data:`TIP_RELIEF_START` (within its bounds) where the file gives none and
@@ -141,12 +141,12 @@ def _flank_start(options: Any, targets: DevelopmentTargets) -> dict[str, float]:
     return start
 
 
-def _search(evaluate: Callable[..., DevelopmentEvaluation],
-            evals: list[DevelopmentEvaluation],
-            basic_of: Callable[[dict[str, float]], BasicDesign],
-            make: Callable[[BasicDesign], Case], targets: DevelopmentTargets,
-            start: Mapping[str, float], basic: BasicDesign, n_max: int,
-            max_bearings: int = 6) -> bool:
+def search_flank(evaluate: Callable[..., DevelopmentEvaluation],
+                 evals: list[DevelopmentEvaluation],
+                 basic_of: Callable[[dict[str, float]], BasicDesign],
+                 make: Callable[[BasicDesign], Case], targets: DevelopmentTargets,
+                 start: Mapping[str, float], basic: BasicDesign, n_max: int,
+                 max_bearings: int = 6) -> bool:
     """The two stages of one flank's search (:func:`develop`), designs appended to
     ``evals``: the **bearing** (the non-relief variables, at most ``max_bearings``
     designs or half of ``n_max``; a synthesis ``make(basic_of(values))`` each), then the
@@ -170,7 +170,7 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
         values = {n: float(v) for n, v in zip(bearing, x, strict=True)} | fixed
         b = basic_of(values)
         return evaluate(values, "bearing", lambda: make(b), n_bearing,
-                        _bearing_key(values)).objective
+                        bearing_key(values)).objective
 
     x0 = _start(bearing, targets, start, basic)
     if bearing:
@@ -178,7 +178,7 @@ def _search(evaluate: Callable[..., DevelopmentEvaluation],
     else:
         try:
             bearing_design(x0)
-        except _Stop:
+        except StageStop:
             pass
     ok = [e for e in evals if e.case is not None and e.objective < FAILED]
     if not ok:
@@ -229,8 +229,8 @@ def _te_stage(evaluate: Callable[..., DevelopmentEvaluation],
         values = best.values | {TE_NAME: float(x)}
         b = basic_of(values)
         try:
-            e = evaluate(values, "te", lambda b=b: make(b), n_max, _bearing_key(values))
-        except _Stop:
+            e = evaluate(values, "te", lambda b=b: make(b), n_max, bearing_key(values))
+        except StageStop:
             return
         if e.full is None or e.full[0] >= best.full[0]:
             return
@@ -272,7 +272,7 @@ def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
             # tip plane, which keeps the flank, placed for the designs checked later)
             b = basic_of(values)
             e = evaluate(values, "relief", lambda: make(b), budget,
-                         _bearing_key(first.values))
+                         bearing_key(first.values))
             return _recentred(evaluate, e, targets, budget, basic_of, make).objective
 
         n_sample = min(8, max(0, (budget - len(evals) - HEIGHT_DESIGNS // 2) // 2))
@@ -280,8 +280,8 @@ def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
                               low, high, n_sample=n_sample)
         if any(e.met for e in evals if e.stage in ("relief", "height")):
             return
-        key = _bearing_key(first.values)  # this bearing's designs, its own included
-        done = [e for e in evals if e.full is not None and _bearing_key(e.values) == key]
+        key = bearing_key(first.values)  # this bearing's designs, its own included
+        done = [e for e in evals if e.full is not None and bearing_key(e.values) == key]
         if done and HEIGHT_NAME in targets.variables:  # the relief moved it: again
             best = min(done, key=lambda e: e.full[0])
             if best.full[1]["centre_v"] > 0.0 and _centre_height(
@@ -289,7 +289,7 @@ def _relief_stage(evaluate: Callable[..., DevelopmentEvaluation],
                     _RECENTRE_DESIGNS) is None:
                 return
             done = [e for e in evals
-                    if e.full is not None and _bearing_key(e.values) == key]
+                    if e.full is not None and bearing_key(e.values) == key]
         if not done or min(done, key=lambda e: e.full[0]).full[1]["lte"] == 0.0:
             return  # the LTE met: the next bearing is tried for the LTE alone
 
@@ -304,18 +304,18 @@ def _recentred(evaluate: Callable[..., DevelopmentEvaluation], e: DevelopmentEva
     slope its bearing's height stage measured (:func:`_centre_height`) is analysed too
     (the same stage), and the better of the two returned: the relief stage's objective is
     that of the design re-centred, the relief and the height developed together."""
-    slope = getattr(evaluate, "slopes", {}).get(_bearing_key(e.values))
+    slope = getattr(evaluate, "slopes", {}).get(bearing_key(e.values))
     if (slope is None or e.full is None or HEIGHT_NAME not in targets.variables
-            or e.full[1]["centre_v"] == 0.0 or not math.isfinite(_centre_v(e))):
+            or e.full[1]["centre_v"] == 0.0 or not math.isfinite(footprint_centre_v(e))):
         return e
     lo, hi = targets.variables[HEIGHT_NAME]
-    f = _centre_v(e) - _target_v(evaluate, targets)
+    f = footprint_centre_v(e) - _target_v(evaluate, targets)
     x = float(np.clip(e.values[HEIGHT_NAME] - f / slope, lo, hi))
     if abs(x - e.values[HEIGHT_NAME]) < 1e-3:
         return e
     values = e.values | {HEIGHT_NAME: x}
     b = basic_of(values)
-    e2 = evaluate(values, e.stage, lambda: make(b), budget, _bearing_key(values))
+    e2 = evaluate(values, e.stage, lambda: make(b), budget, bearing_key(values))
     return e2 if e2.objective < e.objective else e
 
 
@@ -352,10 +352,10 @@ def _centre_height(evaluate: Callable[..., DevelopmentEvaluation],
         target (the caller stops).
     """
     lo, hi = targets.variables[HEIGHT_NAME]
-    if base.full is None or not math.isfinite(_centre_v(base)):
+    if base.full is None or not math.isfinite(footprint_centre_v(base)):
         return base
     target = _target_v(evaluate, targets)
-    tried = [(float(base.values[HEIGHT_NAME]), _centre_v(base) - target, base)]
+    tried = [(float(base.values[HEIGHT_NAME]), footprint_centre_v(base) - target, base)]
     good = 0.25 * targets.centre_tolerance
     x_prev = None
     for _ in range(n_designs):
@@ -385,16 +385,16 @@ def _centre_height(evaluate: Callable[..., DevelopmentEvaluation],
         b = basic_of(values)
         try:
             e = evaluate(values, "height", lambda b=b: make(b), budget,
-                         _bearing_key(values))
-        except _Stop:
+                         bearing_key(values))
+        except StageStop:
             return None if any(e.met for e in _evaluated(evaluate)) else _best_height(tried)
         x_prev = x0
-        tried.append((x, _centre_v(e) - target, e))
+        tried.append((x, footprint_centre_v(e) - target, e))
         _note_slope(evaluate, tried)
     return _best_height(tried)
 
 
-def _centre_v(e: DevelopmentEvaluation) -> float:
+def footprint_centre_v(e: DevelopmentEvaluation) -> float:
     """The light-load footprint centre v of a design [1]; NaN where it has none."""
     v = e.metrics.get("pattern_centre_v")
     return math.nan if v is None else float(v[0])
@@ -410,7 +410,7 @@ def _note_slope(evaluate: Callable[..., DevelopmentEvaluation],
         return
     slope = (finite[0][1] - finite[1][1]) / (finite[0][0] - finite[1][0])
     if slope > 0.05:
-        evaluate.slopes[_bearing_key(finite[0][2].values)] = slope  # type: ignore[attr-defined]
+        evaluate.slopes[bearing_key(finite[0][2].values)] = slope  # type: ignore[attr-defined]
 
 
 def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
@@ -436,7 +436,7 @@ def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
     target)."""
     try:
         base = _root_relief_height(evaluate, base, targets, budget, basic_of, make)
-    except _Stop:
+    except StageStop:
         if any(x.met for x in _evaluated(evaluate)):
             return None
     e = _centre_height(evaluate, base, targets, budget, basic_of, make)
@@ -448,7 +448,7 @@ def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
         e = base
     for _ in range(2):
         if (e is None or e.full is None or CROWNING_NAME not in targets.variables
-                or not math.isfinite(_centre_v(e))):
+                or not math.isfinite(footprint_centre_v(e))):
             return e
         short, m = e.full[1], e.metrics
         if short["tip"] == 0.0 and short["root"] == 0.0 and m["edge_load_share"][0] <= 0.0:
@@ -461,8 +461,8 @@ def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
         b = basic_of(values)
         try:
             crowned = evaluate(values, "height", lambda b=b: make(b), budget,
-                               _bearing_key(values))
-        except _Stop:
+                               bearing_key(values))
+        except StageStop:
             return None if any(x.met for x in _evaluated(evaluate)) else e
         nxt = _centre_height(evaluate, crowned, targets, budget, basic_of, make,
                              HEIGHT_DESIGNS - 1)
@@ -501,16 +501,16 @@ def _root_relief_height(evaluate: Callable[..., DevelopmentEvaluation],
     (docs/synthesis.md, "What sets the pattern and the LTE")."""
     names = ("root_relief", "relief_start")
     if (base.full is None or not all(n in targets.variables for n in names)
-            or not math.isfinite(_centre_v(base))):
+            or not math.isfinite(footprint_centre_v(base))):
         return base
     target = _target_v(evaluate, targets)
-    f = _centre_v(base) - target
+    f = footprint_centre_v(base) - target
     if f <= 0.25 * targets.centre_tolerance:
         return base
     lo_r, hi_r = targets.variables["root_relief"]
     best, asked = base, []
     for relief in (ROOT_HEIGHT_RELIEF, hi_r):  # the second where the first is still high
-        if abs(_centre_v(best) - target) <= targets.centre_tolerance and best is not base:
+        if abs(footprint_centre_v(best) - target) <= targets.centre_tolerance and best is not base:
             break
         values = base.values | {
             "relief_start": float(targets.variables["relief_start"][0]),
@@ -520,9 +520,9 @@ def _root_relief_height(evaluate: Callable[..., DevelopmentEvaluation],
             continue
         asked.append(values)
         b = basic_of(values)
-        e = evaluate(values, "height", lambda b=b: make(b), budget, _bearing_key(values))
-        if (e.full is not None and math.isfinite(_centre_v(e))
-                and abs(_centre_v(e) - target) < abs(_centre_v(best) - target)):
+        e = evaluate(values, "height", lambda b=b: make(b), budget, bearing_key(values))
+        if (e.full is not None and math.isfinite(footprint_centre_v(e))
+                and abs(footprint_centre_v(e) - target) < abs(footprint_centre_v(best) - target)):
             best = e
     return best
 
@@ -557,7 +557,7 @@ def _relief_bearings(designs: list[DevelopmentEvaluation], n: int
     out: list[DevelopmentEvaluation] = []
     keys: set[tuple] = set()
     for e in sorted(designs, key=lambda e: (not e.met, e.objective)):
-        k = _bearing_key(e.values)
+        k = bearing_key(e.values)
         if k not in keys:
             keys.add(k)
             out.append(e)
