@@ -25,6 +25,20 @@ def test_step_lines_count_and_time_the_steps():
         "synthesize: step 3/3, the case (2 min 5 s)"]
 
 
+def test_step_lines_count_a_second_pass_from_one():
+    """A command that runs its steps again (the development re-synthesising a case)
+    counts them from 1 with the pass named, never ``step 4/3``."""
+    out = io.StringIO()
+    say = StepLines("synthesize", 2, stream=out, clock=lambda: 0.0)
+    for step in ("blanks", "the case", "blanks", "the case", "blanks"):
+        say(step)
+    assert out.getvalue().splitlines() == [
+        "synthesize: step 1/2, blanks (0 s)", "synthesize: step 2/2, the case (0 s)",
+        "synthesize: pass 2, step 1/2, blanks (0 s)",
+        "synthesize: pass 2, step 2/2, the case (0 s)",
+        "synthesize: pass 3, step 1/2, blanks (0 s)"]
+
+
 def test_report_prints_a_line_per_figure_off_a_terminal(tmp_path, capsys):
     """``ltca report`` to a log: one line per figure before ``wrote``, the figures of the
     page all named; ``--no-progress``: none, and the same page."""

@@ -43,9 +43,15 @@ class StepLines:
         self.start = clock()
 
     def __call__(self, step: str) -> None:
-        """Step ``step`` starts: ``<desc>: <unit> k/total, <step> (<elapsed>)``."""
+        """Step ``step`` starts: ``<desc>: <unit> k/total, <step> (<elapsed>)``.
+
+        A command that goes through its steps again (the development bearing
+        re-synthesises a case it has changed) counts them again from 1, the pass named:
+        ``<desc>: pass 2, <unit> 1/total, ...`` — never a step beyond the total."""
         self.done += 1
+        passes, k = divmod(self.done - 1, self.total)
         elapsed = round(self.clock() - self.start)
         took = f"{elapsed} s" if elapsed < 60 else f"{elapsed // 60} min {elapsed % 60} s"
-        print(f"{self.desc}: {self.unit} {self.done}/{self.total}, {step} ({took})",
+        again = f"pass {passes + 1}, " if passes else ""
+        print(f"{self.desc}: {again}{self.unit} {k + 1}/{self.total}, {step} ({took})",
               file=self.stream if self.stream is not None else sys.stderr, flush=True)

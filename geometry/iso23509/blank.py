@@ -610,9 +610,15 @@ def _member(
     hai = ham - (Rm - Ri) * math.tan(theta_a)
     hfi = hfm - (Rm - Ri) * math.tan(theta_f)
     if hai <= 0.0 or hfi <= 0.0:
+        # the mean addendum itself may be what leaves nothing (c_ham 0: a gear without
+        # an addendum); say so beside the angles
+        mean = (f"; its mean addendum h_am = {ham:.4g} mm (c_ham: the gear's share of "
+                "the working depth, 0.5 for equal addenda)" if hai <= 0.0 and ham < 0.5 * hfm
+                else "")
         raise InputError(
             "theta_a2, theta_f2 (or b2): must leave the tooth a depth at the toe, h_ai and h_fi "
-            f"> 0 [mm], got h_ai = {hai:.4g}, h_fi = {hfi:.4g} at the member with {z} teeth"
+            f"> 0 [mm], got h_ai = {hai:.4g}, h_fi = {hfi:.4g} at the member with {z} "
+            f"teeth{mean}"
         )
     s_d, c_d = math.sin(delta), math.cos(delta)
     de, di = 2.0 * Re * s_d, 2.0 * Ri * s_d

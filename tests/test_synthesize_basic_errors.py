@@ -1,0 +1,48 @@
+"""``ltca synthesize`` on basic data that cannot make a blank: the basic data's own error,
+before the development's first trial, naming the field to change — not "change
+[development] variables bounds", which sent a user to the wrong table (found on a miter
+gear 20×20 typed with ``c_ham = 0``: a gear without an addendum, whose toe addendum is
+then negative for any addendum angle)."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from contact.cli import main
+from geometry.core.errors import InputError
+
+DESIGNS = Path(__file__).parent / "data" / "designs"
+
+
+def _without_addendum(tmp_path: Path) -> Path:
+    text = (DESIGNS / "spiral_bevel_13x39.toml").read_text(encoding="utf-8")
+    text, n = re.subn(r"(?m)^c_ham = .*$", "c_ham = 0.0", text)
+    assert n == 1
+    path = tmp_path / "no_addendum.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_develop_refuses_blanks_before_any_trial(tmp_path):
+    """The InputError is the blank's: it names theta_a2/theta_f2 and c_ham with the mean
+    addendum 0, and no design was analysed (no progress line was printed)."""
+    from contact.optimize.development import develop
+    from geometry.synthesis.basic_design import load_basic
+
+    lines: list[str] = []
+    with pytest.raises(InputError, match=r"h_ai = -.*mean addendum h_am = 0 mm \(c_ham"):
+        develop(load_basic(_without_addendum(tmp_path)), progress=lines.append)
+    assert lines == []
+
+
+def test_cli_says_the_basic_data_is_the_cause(tmp_path, capsys):
+    """rc 2 and one error line naming c_ham, nothing about the development's bounds."""
+    rc = main(["synthesize", str(_without_addendum(tmp_path)), "-o",
+               str(tmp_path / "case.toml")])
+    err = capsys.readouterr().err
+    assert rc == 2
+    assert "c_ham" in err and "variables bounds" not in err
+    assert not (tmp_path / "case.toml").exists()
