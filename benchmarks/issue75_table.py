@@ -3,6 +3,7 @@
     python benchmarks/issue75_table.py                    # everything (~5 min of CPU)
     python benchmarks/issue75_table.py --only fe warm     # some rows
     python benchmarks/issue75_table.py --before ace80ff   # the FE build of that commit too
+    python benchmarks/issue75_table.py --only design --design a.toml b.toml  # other designs
 
 Rows (each command in a fresh child process, its CPU time ``ru_utime + ru_stime`` and its
 peak resident memory ``ru_maxrss`` from ``os.wait4``: the process and the children it
@@ -96,19 +97,24 @@ def _cli(*words) -> list[str]:
     return [sys.executable, "-m", "contact", *map(str, words)]
 
 
-def row_design(tmp: Path) -> list[list]:
-    case = tmp / "design.toml"
+def row_design(tmp: Path, design: Path = DESIGN) -> list[list]:
+    """The new-design rows of one basic file (its stem names them where it is not
+    :data:`DESIGN`), in ``tmp/<stem>/``: one FE cache, empty at the start."""
+    here = tmp / design.stem
+    here.mkdir(parents=True, exist_ok=True)
+    case = here / "design.toml"
     # one empty FE cache for both commands, as on the user's machine: a new design has no
     # FE model in it, synthesize builds what it checks and ltca run reads what it finds
-    fe = {"HYPOID_LTCA_CACHE": str(tmp / "fe-design")}
-    s = child(_cli("synthesize", DESIGN, "-o", case, "-q"), env=fe,
-              log=tmp / "synthesize.log")
-    r = child(_cli("run", case, "-o", tmp / "design.nc", "-q"), env=fe,
-              log=tmp / "design-run.log")
-    return [["new design: synthesize", s[0], s[1], ""],
-            ["new design: cold run (empty FE cache)", r[0], r[1], ""],
-            ["new design: basic data to verdict", s[0] + r[0], max(s[1], r[1]),
-             "target 20 s (30 s fresh numba)"]]
+    fe = {"HYPOID_LTCA_CACHE": str(here / "fe-design")}
+    s = child(_cli("synthesize", design, "-o", case, "-q"), env=fe,
+              log=here / "synthesize.log")
+    r = child(_cli("run", case, "-o", here / "design.nc", "-q"), env=fe,
+              log=here / "design-run.log")
+    what = "new design" if design == DESIGN else f"new design {design.stem}"
+    return [[f"{what}: synthesize", s[0], s[1], ""],
+            [f"{what}: cold run (empty FE cache)", r[0], r[1], ""],
+            [f"{what}: basic data to verdict", s[0] + r[0], max(s[1], r[1]),
+             "target 120 s (issue 71), 20 s (issue 75)"]]
 
 
 def row_cold(tmp: Path) -> list[list]:
@@ -218,6 +224,9 @@ def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--only", nargs="+", choices=ROWS, default=list(ROWS))
     ap.add_argument("--before", metavar="REV", help="also the FE build of this commit")
+    ap.add_argument("--design", metavar="BASIC", nargs="+", type=Path, default=[DESIGN],
+                    help="the basic design files of the design row (default "
+                         "tests/data/designs/pc_hypoid_10x43.toml); each its own rows")
     ap.add_argument("--keep", metavar="DIR", help="work in DIR (kept) instead of a temporary "
                                                   "directory")
     args = ap.parse_args(argv)
@@ -233,7 +242,8 @@ def main(argv: list[str] | None = None) -> None:
         rows, stages = [], None
         for name in args.only:
             if name == "design":
-                rows += row_design(tmp)
+                for design in args.design:
+                    rows += row_design(tmp, design.resolve())
             elif name == "cold":
                 rows += row_cold(tmp)
             elif name == "fe":

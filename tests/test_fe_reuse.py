@@ -10,7 +10,7 @@ import numpy as np
 
 from contact.catalogue import bundled_case_path
 from contact.compliance.fe import FEOptions, cache_key, cache_path, influence_coefficients
-from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION, node_deviation, reuse_near_model
+from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION, point_deviation, reuse_near_model
 from geometry.case import load_case
 
 #: the coarse model of the CI tests (tests/test_fe_tooth.py)
@@ -37,7 +37,7 @@ def _peak_per_load(ds) -> np.ndarray:
 
 def test_a_near_member_keeps_the_earlier_coefficients_within_the_stated_error(tmp_path):
     """The pinion's coast (convex) blade turned by 0.05 deg and its flank relief by 0.2 deg:
-    its FE mesh moves by less than the bound (1 % of the whole depth), so the earlier
+    its load and stress points move by less than the bound (1 % of the whole depth), so the earlier
     coefficients of both flanks are written under the new keys (with where from and how
     far); against the moved pinion's own build, the peak fillet stress of the unit loads
     agrees within 1 % at the loads carrying at least half the largest (where a root
@@ -55,7 +55,7 @@ def test_a_near_member_keeps_the_earlier_coefficients_within_the_stated_error(tm
     for flank in ("drive", "coast"):
         kept = influence_coefficients(moved, "pinion", flank, COARSE, cache_dir=kept_dir,
                                       progress=False)
-        assert kept.attrs["reuse_node_deviation_mm"] == round(deviation, 6)
+        assert kept.attrs["reuse_point_deviation_mm"] == round(deviation, 6)
         assert kept.attrs["reused_from"] != kept.attrs["cache_key"]
         own = influence_coefficients(moved, "pinion", flank, COARSE, cache_dir=own_dir,
                                      progress=False)
@@ -71,7 +71,7 @@ def test_a_near_member_keeps_the_earlier_coefficients_within_the_stated_error(tm
 
 
 def test_a_member_moved_farther_is_built_not_kept(tmp_path):
-    """The coast blade turned by 3 deg moves the mesh by more than the bound: nothing is
+    """The coast blade turned by 3 deg moves its points by more than the bound: nothing is
     written, and a member unchanged keeps its own entries (deviation 0, nothing written).
     One coarse build."""
     case = load_case(bundled_case_path())
@@ -80,7 +80,7 @@ def test_a_member_moved_farther_is_built_not_kept(tmp_path):
                            progress=False, other_flank=True)
     before = sorted(p.name for p in tmp_path.iterdir())
     depth = far.member("pinion").blank.outer_addendum + far.member("pinion").blank.outer_dedendum
-    assert node_deviation(far, case, "pinion", COARSE) > REUSE_DEPTH_FRACTION * depth
+    assert point_deviation(far, case, "pinion", COARSE) > REUSE_DEPTH_FRACTION * depth
     assert reuse_near_model(far, case, "pinion", COARSE, cache_dir=tmp_path) is None
     assert reuse_near_model(case, case, "pinion", COARSE, cache_dir=tmp_path) == 0.0
     assert sorted(p.name for p in tmp_path.iterdir()) == before

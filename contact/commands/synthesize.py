@@ -105,6 +105,7 @@ def run_synthesize(args: argparse.Namespace) -> int:
     import tomllib
 
     from contact.commands.step_lines import StepLines
+    from contact.compliance.fe.solver_worker import keep_heap_pages
     from contact.load_capacity.iso10300.capacity import (
         with_coast_design_torque,
         with_design_torque,
@@ -114,6 +115,11 @@ def run_synthesize(args: argparse.Namespace) -> int:
     from geometry.synthesis.basic_design import load_basic
     from geometry.synthesis.case_synthesis import SYNTHESIS_STEPS, synthesize
 
+    # the development's trials and checks allocate and free the same large arrays again
+    # and again: glibc keeps their pages instead of mapping fresh ones each time (the
+    # 9x41 hypoid's synthesize: 26 -> 7 s of system time, the peak memory +0.1 GB;
+    # docs/performance.md)
+    keep_heap_pages()
     source = resolve_basic(args.basic)
     output = args.output or f"{source.stem}.toml"
     check_output_file(output, create_parents=True)

@@ -423,9 +423,9 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     its own) changes the pinion, whose drive and coast checks — and ``ltca run`` of the
     case written — would otherwise build its model once per flank (a first ``ltca run``
     after synthesize rebuilt the drive model for 27 s CPU on a face-hobbed 8x39). A
-    member of the re-synthesis whose FE solid lies within 1 % of its whole depth of the
-    last built one's keeps that one's coefficients (said through ``say``; ``built`` holds
-    the last case built, updated here)."""
+    member of the re-synthesis whose FE load and stress points lie within 1 % of its
+    whole depth of the last built one's keeps that one's coefficients (said through
+    ``say``; ``built`` holds the last case built, updated here)."""
     if wanted:
         from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION
         from contact.optimize.development_root import both_flanks_built
@@ -433,8 +433,8 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
         kept = both_flanks_built(case, built[-1] if built else None)
         for member, deviation in kept.items():
             say(f"development: the {member}'s FE models (both flanks) kept from the design "
-                f"checked before: its mesh nodes within {1000.0 * deviation:.0f} um of "
-                f"them (<= {100.0 * REUSE_DEPTH_FRACTION:g} % of the whole depth; the FE "
-                f"root stress within 1 %, docs/fe.md)")
+                f"checked before: its load and stress points within "
+                f"{1000.0 * deviation:.0f} um of them (<= {100.0 * REUSE_DEPTH_FRACTION:g} % "
+                f"of the whole depth; the FE root stress within 1 %, docs/fe.md)")
         built[:] = [case]
 

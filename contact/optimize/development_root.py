@@ -118,12 +118,11 @@ def both_flanks_built(case, earlier=None) -> dict[str, float]:
     builds (or fails to build) its own model and says so, as before.
 
     ``earlier``: the case whose models were built before (a re-synthesis of it is
-    ``case``): a member that moved by no more than
-    :data:`contact.compliance.fe.reuse.REUSE_DEPTH_FRACTION` of its whole depth node by
-    node keeps the earlier coefficients (:func:`contact.compliance.fe.reuse.
-    reuse_near_model`, written under its new keys, so that ``ltca run`` reads them) instead
-    of a build of its own (~28 s of CPU on a 9x41's pinion; the FE root stress within
-    0.8 %, docs/fe.md).
+    ``case``): a member whose FE load and stress points moved by no more than
+    :data:`contact.compliance.fe.reuse.REUSE_DEPTH_FRACTION` of its whole depth keeps the
+    earlier coefficients (:func:`contact.compliance.fe.reuse.reuse_near_model`, written
+    under its new keys, so that ``ltca run`` reads them) instead of a build of its own
+    (~28 s of CPU on a 9x41's pinion; the FE root stress within 0.8 %, docs/fe.md).
 
     Returns
     -------

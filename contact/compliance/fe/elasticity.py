@@ -364,17 +364,6 @@ WORKER_POLL = 0.1
 #: memory): CHOLMOD's dense block solve takes them all in one pass over the factor
 PIPE_BLOCK = 64
 
-#: the lean worker's glibc allocator (environment variables, read at its start; other C
-#: libraries ignore them): no memory mapped per allocation and none given back until the
-#: worker ends, so that the blocks of right-hand sides and solutions (42 MB each on the
-#: default pinion model), CHOLMOD's workspace and the factor reuse the pages the worker
-#: already has instead of mapping and faulting in fresh zeroed ones each time (each block
-#: is above glibc's largest mmap threshold, 32 MB): the gear's build of the 9x41 hypoid
-#: took 2.4 s of system time in its worker with glibc's defaults, 0.8 s with these, the
-#: same user time and peak memory within 5 % (issue 75, docs/performance.md). The worker
-#: lives for one build, so memory it does not give back is returned when it ends.
-WORKER_MALLOC = {"MALLOC_MMAP_MAX_": "0", "MALLOC_TRIM_THRESHOLD_": str(1 << 40)}
-
 _PENDING: list = []  # the matrix handed to a forked worker (read by it, cleared here)
 _SIGNALS = {signal.SIGINT, signal.SIGTERM}
 
@@ -532,7 +521,7 @@ class _LeanWorker(_Worker):
         try:                                                       # before any handler
             self.proc = _Child(subprocess.Popen(
                 [sys.executable, script, str(fd), *sys.argv], pass_fds=(fd,),
-                stdin=subprocess.DEVNULL, env={**os.environ, **WORKER_MALLOC}))
+                stdin=subprocess.DEVNULL))
         finally:
             os.close(fd)
             try:

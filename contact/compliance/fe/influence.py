@@ -30,6 +30,7 @@ Public names
 ------------
 InfluenceModel         the FE model with its load vectors and stress points
 build_influence_model  build it (solid, stiffness, factorisation, loads, fillet points)
+flank_grid_positions   member-frame points of a load grid on a flank of the sections
 load_v_limits          the profile fractions the load grid covers (follows the flank)
 influence_dataset      solve the unit loads and gather the coefficients
 influence_coefficients the cached entry point: dataset of one member
@@ -82,6 +83,7 @@ __all__ = [
     "COMPONENTS",
     "InfluenceModel",
     "build_influence_model",
+    "flank_grid_positions",
     "hat_weights",
     "influence_coefficients",
     "influence_dataset",
@@ -708,10 +710,25 @@ def _other(flank: str) -> str:
 def _grid_positions(model: InfluenceModel) -> np.ndarray:
     """Member-frame points of the load grid on the loaded tooth's working flank (nu, nv, 3)
     [mm]: the generated flank of the sections (:meth:`ToothSections.flank_angle`)."""
-    sec = model.solid.sections
-    uu, vv = np.meshgrid(model.grid_u, model.grid_v, indexing="ij")
-    phi = sec.flank_angle(model.flank, uu, vv)
-    c = sec.corners
+    return flank_grid_positions(model.solid.sections, model.flank, model.grid_u,
+                                model.grid_v)
+
+
+def flank_grid_positions(sections, flank: str, grid_u: np.ndarray,
+                         grid_v: np.ndarray) -> np.ndarray:
+    """Member-frame points (nu, nv, 3) [mm] of a load grid (fractions ``grid_u`` (nu,),
+    ``grid_v`` (nv,) [1]) on the reference tooth's ``flank`` (a flank name) of
+    ``sections`` (:class:`contact.compliance.fe.section.ToothSections`): the flank angle
+    of the sections (:meth:`~contact.compliance.fe.section.ToothSections.flank_angle`) at
+    the blank's bilinear projection-plane point of each fraction pair.
+
+    Raises
+    ------
+    InputError — a fraction outside the flank's extent (as ``flank_angle``).
+    """
+    uu, vv = np.meshgrid(grid_u, grid_v, indexing="ij")
+    phi = sections.flank_angle(flank, uu, vv)
+    c = sections.corners
     z = (1 - uu) * (1 - vv) * c[0, 0, 0] + uu * (1 - vv) * c[1, 0, 0] \
         + (1 - uu) * vv * c[0, 1, 0] + uu * vv * c[1, 1, 0]
     rho = (1 - uu) * (1 - vv) * c[0, 0, 1] + uu * (1 - vv) * c[1, 0, 1] \

@@ -9,28 +9,31 @@ assembly, factorisation, 2 × 231 unit loads: ~28 s of CPU on a 9x41 hypoid's pi
 for a tooth whose surfaces moved by a few tens of micrometres (relief, crowning, a
 fraction of a degree of blade angle).
 
-:func:`reuse_near_model` compares the two FE solids node by node — the same mesh layout
-(element counts), every node of the re-synthesised member's mesh within
-:data:`REUSE_DEPTH_FRACTION` of the blank's outer whole depth of the same node of the
-earlier one — and where they are that close writes the earlier coefficients of both
-flanks under the new member's keys (a copy of each entry: its own key and checksum, the
-attributes ``reused_from`` and ``reuse_node_deviation_mm`` saying where from and how far),
-so that the development's checks and ``ltca run`` of the written case read them. Any
-other case (another layout, a node farther, an entry missing) builds as before.
+:func:`reuse_near_model` compares the points the coefficients refer to — the load
+grid's points on both working flanks and the stress points along the root fillets and
+slot bottoms of every modelled tooth (:func:`point_deviation`), with the same mesh layout
+(element counts) — and where every one of them lies within :data:`REUSE_DEPTH_FRACTION`
+of the blank's outer whole depth of its counterpart it writes the earlier coefficients of
+both flanks under the new member's keys (a copy of each entry: its own key and checksum,
+the attributes ``reused_from`` and ``reuse_point_deviation_mm`` saying where from and how
+far), so that the development's checks and ``ltca run`` of the written case read them.
+Any other case (another layout, a point farther, an entry missing) builds as before.
 
 What it costs in accuracy (docs/fe.md, "Coefficients kept for a re-synthesis"): on the
-hypoid 9x41 at Sigma 95 deg (its pinion's coast flank developed again: root relief
-15 -> 60 um from v 0.5 -> 0.2 and the bearing's path), whose solids differ by
-:data:`REUSE_DEPTH_FRACTION`'s measured 0.65 % of the depth at most, ``ltca run``'s FE
-root stress of the pinion changed by 0.42 % (drive, 415 N m) and 0.29 % (coast, 238 N m),
-0.8 % at most at the light torque, the peak flank pressure not at all (the LTCA's
-compliance is the shell model's by default): a tenth of the FE model's own mesh
-convergence (5 %, docs/fe.md).
+hypoid 9x41 at Sigma 95 deg, whose pinion's coast flank the development re-synthesised
+(tip relief 51 -> 15 um, profile crowning 11 -> 0 um, blade angle change -0.12 -> 0 deg,
+root relief 56 -> 60 um from v 0.31 -> 0.2), the points moved by 78 um at most (0.70 % of
+the depth): ``ltca run``'s FE root stress of the pinion with the earlier coefficients
+differs from its own build's by 0.42 % (drive, 415 N m) and 0.29 % (coast, 238 N m), 0.8 %
+at most at the light torque, the peak flank pressure not at all (the LTCA's compliance is
+the shell model's by default); on the default pinion (coarse test model), 0.04 mm give
+0.26 % on the peak fillet stress of the heavy unit loads (tests/test_fe_reuse.py). A
+tenth of the FE model's own mesh convergence (5 %, docs/fe.md).
 
 Public names
 ------------
-REUSE_DEPTH_FRACTION  the largest node deviation kept, a fraction of the whole depth
-node_deviation        the largest node distance between two members' FE solids
+REUSE_DEPTH_FRACTION  the largest point deviation kept, a fraction of the whole depth
+point_deviation       the largest distance between two members' load and stress points
 reuse_near_model      an earlier member's coefficients written for a near member
 """
 
@@ -49,25 +52,29 @@ from contact.compliance.fe.cache import (
 )
 from contact.compliance.fe.options import FEOptions
 
-__all__ = ["REUSE_DEPTH_FRACTION", "node_deviation", "reuse_near_model"]
+__all__ = ["REUSE_DEPTH_FRACTION", "point_deviation", "reuse_near_model"]
 
 log = logging.getLogger(__name__)
 
-#: [1] the largest distance between corresponding nodes of two FE solids, as a fraction
-#: of the member's outer whole depth (h_ae + h_fe of the blank), at which the earlier
-#: coefficients are kept: 1 % (0.12 mm on the 9x41's pinion, 0.04 mm on a module-2
-#: pinion); measured 0.65 % -> at most 0.8 % in the FE root stress (module docstring)
+#: [1] the largest distance between corresponding load and stress points of two members'
+#: FE models (:func:`point_deviation`), as a fraction of the member's outer whole depth
+#: (h_ae + h_fe of the blank), at which the earlier coefficients are kept: 1 % (0.11 mm
+#: on the 9x41's pinion, 0.05 mm on a module-2 pinion); measured 0.70 % -> at most 0.8 %
+#: in the FE root stress (module docstring)
 REUSE_DEPTH_FRACTION = 0.01
 
 _FLANKS = ("concave", "convex")
 
 
-def node_deviation(case, earlier, member: str, options: FEOptions | None = None
-                   ) -> float | None:
-    """The largest distance [mm] between corresponding nodes of the FE solids of
-    ``member`` in ``case`` and in ``earlier``
-    (:func:`contact.compliance.fe.solid.build_tooth_solid`, the same options), or None
-    where the two meshes differ in layout (element counts, hence node numbering).
+def point_deviation(case, earlier, member: str, options: FEOptions | None = None
+                    ) -> float | None:
+    """The largest distance [mm] between the points the coefficients of ``member`` refer
+    to in ``case`` and in ``earlier``: the load grid's points on both working flanks (the
+    generated flanks at the grid's fractions, :func:`contact.compliance.fe.influence.
+    flank_grid_positions`; the coefficients' ``flank_position``) and the stress points
+    along both root fillets and slot bottoms of every modelled tooth (their 2 × 2 Gauss
+    points of each root facet of the mesh, as the coefficients' ``fillet_position``).
+    None where the two FE meshes differ in layout (element counts: other points).
 
     Parameters
     ----------
@@ -84,15 +91,34 @@ def node_deviation(case, earlier, member: str, options: FEOptions | None = None
     InputError, LTCAError
         As :func:`contact.compliance.fe.solid.build_tooth_solid`.
     """
+    from contact.compliance.fe.influence import flank_grid_positions, load_v_limits
+    from contact.compliance.fe.mapped_mesh import facet_points
+    from contact.compliance.fe.options import ELEMENTS
     from contact.compliance.fe.solid import build_tooth_solid
 
     opt = options if options is not None else FEOptions()
     new = build_tooth_solid(case, member, opt)
     old = build_tooth_solid(earlier, member, opt)
-    a, b = new.mesh.mesh.doflocs, old.mesh.mesh.doflocs
-    if new.layout != old.layout or a.shape != b.shape:
+    if new.layout != old.layout or new.mesh.mesh.nelements != old.mesh.mesh.nelements:
         return None
-    return float(np.sqrt(((a - b) ** 2).sum(axis=0)).max())
+    grid_u = np.linspace(0.0, 1.0, opt.load_nu)
+    worst = 0.0
+    for flank in _FLANKS:
+        grid_v = np.linspace(*load_v_limits(new.sections, flank, opt), opt.load_nv)
+        a = flank_grid_positions(new.sections, flank, grid_u, grid_v)
+        b = flank_grid_positions(old.sections, flank, grid_u, grid_v)
+        worst = max(worst, float(np.linalg.norm(a - b, axis=-1).max()))
+    element = ELEMENTS[opt.element][0]()
+    k = new.layout.neighbours
+    for t in range(-k, k + 1):
+        for side in ("left", "right"):
+            fa, fb = np.r_[new.fillet_facets(t, side)], np.r_[old.fillet_facets(t, side)]
+            if not np.array_equal(fa, fb):
+                return None
+            a = facet_points(new.mesh, element, fa, 3).x
+            b = facet_points(old.mesh, element, fb, 3).x
+            worst = max(worst, float(np.linalg.norm(a - b, axis=0).max()))
+    return worst
 
 
 def reuse_near_model(case, earlier, member: str, options: FEOptions | None = None, *,
@@ -100,7 +126,7 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
                      fraction: float = REUSE_DEPTH_FRACTION) -> float | None:
     """Write ``earlier``'s cached coefficients of ``member`` (both flanks) under the keys
     of ``case``'s member, where its FE solid lies within ``fraction`` of the whole depth
-    of ``earlier``'s node by node (:func:`node_deviation`).
+    of ``earlier``'s, point by point (:func:`point_deviation`).
 
     Parameters
     ----------
@@ -110,15 +136,15 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
     options : FEOptions, optional — the FE model (default ``FEOptions()``)
     cache_dir : path-like, optional — the cache directory (default
         :func:`contact.compliance.fe.cache.cache_directory`)
-    fraction : float — [1] the largest node deviation kept, of the outer whole depth
+    fraction : float — [1] the largest point deviation kept, of the outer whole depth
         (default :data:`REUSE_DEPTH_FRACTION`)
 
     Returns
     -------
     float or None
-        The node deviation [mm] where the coefficients were written (or the member is
+        The point deviation [mm] where the coefficients were written (or the member is
         the same: 0.0); None where not: ``case``'s entries cached already, one of
-        ``earlier``'s missing, the meshes' layouts differ or a node lies farther. The
+        ``earlier``'s missing, the meshes' layouts differ or a point lies farther. The
         caller then builds as before.
 
     Raises
@@ -137,14 +163,14 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
     if not all(cache_path(k, cache_dir).exists() for k in old_keys.values()):
         return None
     try:
-        deviation = node_deviation(case, earlier, member, opt)
+        deviation = point_deviation(case, earlier, member, opt)
     except Exception as exc:  # the build that follows says what fails
-        log.info("FE %s: the node deviation from the earlier design not measured: %s",
+        log.info("FE %s: the point deviation from the earlier design not measured: %s",
                  member, exc)
         return None
     depth = float(new_m.blank.outer_addendum + new_m.blank.outer_dedendum)
     if deviation is None or not deviation <= fraction * depth:
-        log.info("FE %s: the earlier design's coefficients not kept (node deviation %s "
+        log.info("FE %s: the earlier design's coefficients not kept (point deviation %s "
                  "mm, bound %.3g mm)", member,
                  "n/a (another mesh layout)" if deviation is None else f"{deviation:.4f}",
                  fraction * depth)
@@ -159,8 +185,8 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
         if path.exists():
             continue
         out = ds.assign_attrs(reused_from=old_keys[f],
-                              reuse_node_deviation_mm=round(deviation, 6))
+                              reuse_point_deviation_mm=round(deviation, 6))
         write_cache_entry(out, path, key)
-    log.info("FE %s: the earlier design's coefficients kept (node deviation %.4f mm <= "
+    log.info("FE %s: the earlier design's coefficients kept (point deviation %.4f mm <= "
              "%.3g mm)", member, deviation, fraction * depth)
     return deviation
