@@ -117,8 +117,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
 
     # the development's trials and checks allocate and free the same large arrays again
     # and again: glibc keeps their pages instead of mapping fresh ones each time (the
-    # 9x41 hypoid's synthesize: 26 -> 7 s of system time, the peak memory +0.1 GB;
-    # docs/performance.md)
+    # 9x41 hypoid's synthesize: 26 -> 6 s of system time with the FE worker's, the peak
+    # memory the same; docs/performance.md)
     keep_heap_pages()
     source = resolve_basic(args.basic)
     output = args.output or f"{source.stem}.toml"

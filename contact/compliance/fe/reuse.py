@@ -22,13 +22,14 @@ Any other case (another layout, a point farther, an entry missing) builds as bef
 What it costs in accuracy (docs/fe.md, "Coefficients kept for a re-synthesis"): on the
 hypoid 9x41 at Sigma 95 deg, whose pinion's coast flank the development re-synthesised
 (tip relief 51 -> 15 um, profile crowning 11 -> 0 um, blade angle change -0.12 -> 0 deg,
-root relief 56 -> 60 um from v 0.31 -> 0.2), the points moved by 78 um at most (0.70 % of
+root relief 56 -> 60 um from v 0.31 -> 0.2), the points moved by 83 um at most (0.74 % of
 the depth): ``ltca run``'s FE root stress of the pinion with the earlier coefficients
 differs from its own build's by 0.42 % (drive, 415 N m) and 0.29 % (coast, 238 N m), 0.8 %
 at most at the light torque, the peak flank pressure not at all (the LTCA's compliance is
-the shell model's by default); on the default pinion (coarse test model), 0.04 mm give
-0.26 % on the peak fillet stress of the heavy unit loads (tests/test_fe_reuse.py). A
-tenth of the FE model's own mesh convergence (5 %, docs/fe.md).
+the shell model's by default); on the default pinion (coarse test model), 0.028 mm give
+0.26 % on the peak fillet stress of the heavy unit loads (tests/test_fe_reuse.py); the
+6x41 hypoid's pinion, kept twice at 0.04 mm: 0.15-0.21 %. A fifth of the FE model's own
+mesh convergence (5 %, docs/fe.md) or less.
 
 Public names
 ------------
@@ -59,7 +60,7 @@ log = logging.getLogger(__name__)
 #: [1] the largest distance between corresponding load and stress points of two members'
 #: FE models (:func:`point_deviation`), as a fraction of the member's outer whole depth
 #: (h_ae + h_fe of the blank), at which the earlier coefficients are kept: 1 % (0.11 mm
-#: on the 9x41's pinion, 0.05 mm on a module-2 pinion); measured 0.70 % -> at most 0.8 %
+#: on the 9x41's pinion, 0.05 mm on a module-2 pinion); measured 0.74 % -> at most 0.8 %
 #: in the FE root stress (module docstring)
 REUSE_DEPTH_FRACTION = 0.01
 

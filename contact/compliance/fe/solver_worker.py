@@ -87,8 +87,9 @@ def keep_heap_pages() -> bool:
     mmap threshold of 32 MB) reuse the pages the process has instead of mapping and
     faulting in fresh zeroed ones each time. The worker calls it once its factor is made
     (the factorisation's transient memory mapped and given back as before: the peak
-    unchanged). Measured on the 9x41 hypoid's development: its system time 26 -> 16 s with
-    the worker's blocks kept this way (issue 75, docs/performance.md). True where set."""
+    unchanged). ``ltca synthesize`` calls it at its start too: the 9x41 hypoid's
+    synthesize took 26 s of system time (page faults), 6 s with both, the peak memory the
+    same 1.12 GB (issue 75, docs/performance.md). True where set."""
     if not sys.platform.startswith("linux"):
         return False
     try:
