@@ -72,7 +72,8 @@ def test_a_near_member_keeps_the_earlier_coefficients_within_the_stated_error(tm
 
 def test_a_member_moved_farther_is_built_not_kept(tmp_path):
     """The coast blade turned by 3 deg moves its points by more than the bound: nothing is
-    written, and a member unchanged keeps its own entries (deviation 0, nothing written).
+    written (and why is said), and a member unchanged keeps its own entries (deviation 0,
+    nothing written).
     One coarse build."""
     case = load_case(bundled_case_path())
     far = _moved(case, np.radians(3.0), 0.0)
@@ -81,7 +82,10 @@ def test_a_member_moved_farther_is_built_not_kept(tmp_path):
     before = sorted(p.name for p in tmp_path.iterdir())
     depth = far.member("pinion").blank.outer_addendum + far.member("pinion").blank.outer_dedendum
     assert point_deviation(far, case, "pinion", COARSE) > REUSE_DEPTH_FRACTION * depth
-    assert reuse_near_model(far, case, "pinion", COARSE, cache_dir=tmp_path) is None
+    why: list[str] = []
+    assert reuse_near_model(far, case, "pinion", COARSE, cache_dir=tmp_path,
+                            refused=why) is None
+    assert len(why) == 1 and "mm from the earlier design's, beyond" in why[0]
     assert reuse_near_model(case, case, "pinion", COARSE, cache_dir=tmp_path) == 0.0
     assert sorted(p.name for p in tmp_path.iterdir()) == before
     key = cache_key(far.member("pinion"), "convex", COARSE)

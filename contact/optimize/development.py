@@ -427,14 +427,8 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     whole depth of the last built one's keeps that one's coefficients (said through
     ``say``; ``built`` holds the last case built, updated here)."""
     if wanted:
-        from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION
         from contact.optimize.development_root import both_flanks_built
 
-        kept = both_flanks_built(case, built[-1] if built else None)
-        for member, deviation in kept.items():
-            say(f"development: the {member}'s FE models (both flanks) kept from the design "
-                f"checked before: its load and stress points within "
-                f"{1000.0 * deviation:.0f} um of them (<= {100.0 * REUSE_DEPTH_FRACTION:g} % "
-                f"of the whole depth; the FE root stress within 1 %, docs/fe.md)")
+        both_flanks_built(case, built[-1] if built else None, say)
         built[:] = [case]
 

@@ -108,7 +108,8 @@ def root_safety(tree) -> tuple[np.ndarray, float, str]:
     return s[:, j], float(rt["S_Fmin"]), member_names(rs)[j]
 
 
-def both_flanks_built(case, earlier=None) -> dict[str, float]:
+def both_flanks_built(case, earlier=None,
+                      say: Callable[[str], None] | None = None) -> dict[str, float]:
     """Both members' default FE models of the written ``case`` built once for both flanks
     (:func:`contact.compliance.fe.influence_coefficients` with ``other_flank``: the coast
     flank's coefficients on the drive build's solid and factorisation, the same numbers as
@@ -123,6 +124,7 @@ def both_flanks_built(case, earlier=None) -> dict[str, float]:
     earlier coefficients (:func:`contact.compliance.fe.reuse.reuse_near_model`, written
     under its new keys, so that ``ltca run`` reads them) instead of a build of its own
     (~28 s of CPU on a 9x41's pinion; the FE root stress within 0.8 %, docs/fe.md).
+    ``say`` (optional) gets one line per member compared: kept, or why not.
 
     Returns
     -------
@@ -130,18 +132,27 @@ def both_flanks_built(case, earlier=None) -> dict[str, float]:
         coefficients were kept (empty where none)
     """
     from contact.compliance.fe import influence_coefficients
-    from contact.compliance.fe.reuse import reuse_near_model
+    from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION, reuse_near_model
 
     kept = {}
     for member in ("pinion", "gear"):
         if earlier is not None and earlier is not case:
+            refused: list[str] = []
             try:
-                deviation = reuse_near_model(case, earlier, member)
+                deviation = reuse_near_model(case, earlier, member, refused=refused)
             except Exception as exc:  # built below as before
                 log.info("development: the %s's earlier FE models not kept: %s", member, exc)
                 deviation = None
             if deviation is not None and deviation > 0.0:
                 kept[member] = deviation
+                if say is not None:
+                    say(f"development: the {member}'s FE models (both flanks) kept from the "
+                        f"design checked before: its load and stress points within "
+                        f"{1000.0 * deviation:.0f} um of them (<= "
+                        f"{100.0 * REUSE_DEPTH_FRACTION:g} % of the whole depth; the FE root "
+                        f"stress within 1 %, docs/fe.md)")
+            elif refused and say is not None:
+                say(f"development: the {member}'s FE models built again: {refused[0]}")
         try:
             influence_coefficients(case, member, "drive", progress=False, other_flank=True)
         except Exception as exc:  # the checks build their own and report (never fatal)

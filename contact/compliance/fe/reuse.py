@@ -60,8 +60,8 @@ log = logging.getLogger(__name__)
 #: [1] the largest distance between corresponding load and stress points of two members'
 #: FE models (:func:`point_deviation`), as a fraction of the member's outer whole depth
 #: (h_ae + h_fe of the blank), at which the earlier coefficients are kept: 1 % (0.11 mm
-#: on the 9x41's pinion, 0.05 mm on a module-2 pinion); measured 0.74 % -> at most 0.8 %
-#: in the FE root stress (module docstring)
+#: on the 9x41's pinion, 0.083 mm on the face-hobbed module-2 10x37's); measured 0.74 %
+#: -> at most 0.8 % in the FE root stress (module docstring)
 REUSE_DEPTH_FRACTION = 0.01
 
 _FLANKS = ("concave", "convex")
@@ -124,7 +124,8 @@ def point_deviation(case, earlier, member: str, options: FEOptions | None = None
 
 def reuse_near_model(case, earlier, member: str, options: FEOptions | None = None, *,
                      cache_dir: str | os.PathLike[str] | None = None,
-                     fraction: float = REUSE_DEPTH_FRACTION) -> float | None:
+                     fraction: float = REUSE_DEPTH_FRACTION,
+                     refused: list[str] | None = None) -> float | None:
     """Write ``earlier``'s cached coefficients of ``member`` (both flanks) under the keys
     of ``case``'s member, where its FE solid lies within ``fraction`` of the whole depth
     of ``earlier``'s, point by point (:func:`point_deviation`).
@@ -139,6 +140,9 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
         :func:`contact.compliance.fe.cache.cache_directory`)
     fraction : float — [1] the largest point deviation kept, of the outer whole depth
         (default :data:`REUSE_DEPTH_FRACTION`)
+    refused : list of str, optional — where the two were compared and the coefficients
+        not kept, one phrase saying why is appended (e.g. "its load and stress points
+        0.121 mm from the earlier design's, beyond 0.083 mm (1 % of its whole depth)")
 
     Returns
     -------
@@ -168,6 +172,8 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
     except Exception as exc:  # the build that follows says what fails
         log.info("FE %s: the point deviation from the earlier design not measured: %s",
                  member, exc)
+        if refused is not None:
+            refused.append(f"its distance from the earlier design not measured ({exc})")
         return None
     depth = float(new_m.blank.outer_addendum + new_m.blank.outer_dedendum)
     if deviation is None or not deviation <= fraction * depth:
@@ -175,6 +181,13 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
                  "mm, bound %.3g mm)", member,
                  "n/a (another mesh layout)" if deviation is None else f"{deviation:.4f}",
                  fraction * depth)
+        if refused is not None:
+            refused.append(
+                "another FE mesh layout (element counts) than the earlier design's"
+                if deviation is None else
+                f"its load and stress points {deviation:.3f} mm from the earlier design's, "
+                f"beyond {fraction * depth:.3f} mm ({100.0 * fraction:g} % of its whole "
+                f"depth)")
         return None
     entries = {f: read_cache_entry(cache_path(old_keys[f], cache_dir), old_keys[f])
                for f in _FLANKS}
