@@ -11,7 +11,17 @@ whether every target was met and the design tolerant at the ΔE/ΔP excursions, 
 ``ltca run`` (default sampling) the verdict, the edge share at each torque and the CPU
 seconds of each command (children's user + system time, ``resource.getrusage``).
 
-Usage: ``python benchmarks/development_designs.py [BASIC.toml ...] [--keep DIR]``.
+With ``--done-when`` each design also runs ``ltca run CASE --flank coast`` and ``ltca
+duty-cycle CASE`` (the default spectrum up to the design torque, ``--scheduler
+synchronous``) and a second table gives issue 71's "Done when" per design: every drive
+target of the development met (and tolerant), ``ltca run`` and ``--flank coast`` not FAIL,
+no plastic segment at any torque (either flank), no edge contact at the light torque (15 %
+of the design torque; ``pressure_max_edge`` 0, as tests/test_development_designs.py),
+LTE p-p ≤ 60 µrad at every torque (drive; the coast's beside it), the duty cycle not
+FAIL, and the CPU of synthesize + the first ``ltca run``.
+
+Usage: ``python benchmarks/development_designs.py [BASIC.toml ...] [--keep DIR]
+[--done-when]``.
 """
 
 from __future__ import annotations
@@ -84,6 +94,64 @@ def run_design(basic: Path, work: Path) -> dict:
     return row
 
 
+def done_when(row: dict, work: Path) -> dict:
+    """Issue 71's "Done when" of a design :func:`run_design` synthesised and ran: the coast
+    run and the duty cycle added (subprocesses), each criterion as a boolean."""
+    import numpy as np
+    import xarray as xr
+
+    from contact.study.verdicts import verdict
+
+    stem = row["design"]
+    case, nc = work / f"{stem}.toml", work / f"{stem}.nc"
+    out: dict = {"design": stem, "cpu_new_design": row.get("synth_cpu", np.nan)
+                 + row.get("run_cpu", np.nan)}
+    if "error" in row:
+        out["error"] = row["error"]
+        return out
+
+    def flank(path: Path) -> dict:
+        tree = xr.open_datatree(path)
+        lt = tree["/ltca"]
+        plastic = (np.nan_to_num(lt["plastic_load_share"].values) if "plastic_load_share"
+                   in lt else np.zeros(1))
+        edge = np.nan_to_num(lt["pressure_max_edge"].values)
+        return {"verdict": verdict(tree).severity, "plastic": float(np.max(plastic)),
+                "light_edge": float(edge[0]), "lte": lt["lte_peak_to_peak"].values.tolist()}
+
+    drive = flank(nc)
+    nc_coast = work / f"{stem}_coast.nc"
+    rc, _, _ = _command(["run", str(case), "--flank", "coast", "-o", str(nc_coast),
+                              "--no-progress"])
+    coast = flank(nc_coast) if rc == 0 else {"verdict": f"rc {rc}", "plastic": np.nan,
+                                              "light_edge": np.nan, "lte": [np.nan]}
+    nc_duty = work / f"{stem}_duty.nc"
+    rc, _, _ = _command(["duty-cycle", str(case), "--scheduler", "synchronous", "-o",
+                            str(nc_duty), "--no-progress"])
+    duty = verdict(xr.open_datatree(nc_duty)).severity if rc == 0 else f"rc {rc}"
+    out.update(
+        targets=bool(row["met"]) and bool(row["tolerant"]), run=drive["verdict"],
+        coast=coast["verdict"], duty=duty,
+        plastic=max(drive["plastic"], coast["plastic"]),
+        light_edge=drive["light_edge"], lte=max(drive["lte"]),
+        coast_lte=float(np.nanmax(coast["lte"])))
+    out["all"] = (out["targets"] and "fail" not in (out["run"], out["coast"], out["duty"])
+                  and not str(out["coast"]).startswith("rc") and not str(duty).startswith("rc")
+                  and out["plastic"] == 0.0 and out["light_edge"] == 0.0
+                  and out["lte"] <= 60.0)
+    return out
+
+
+def _fmt_done(d: dict) -> str:
+    if "error" in d:
+        return f"{d['design']:<28} FAILED: {d['error']}"
+    yes = {True: "yes", False: "NO"}
+    return (f"{d['design']:<28} {yes[d['targets']]:<8}{d['run']:<10}{d['coast']:<10}"
+            f"{d['duty']:<10}{100 * d['plastic']:>7.2f} {d['light_edge']:>9.0f} "
+            f"{d['lte']:>7.0f} {d['coast_lte']:>7.0f} {d['cpu_new_design']:>7.0f}  "
+            f"{yes[d['all']]}")
+
+
 def _fmt(row: dict) -> str:
     if "error" in row:
         return f"{row['design']:<22} FAILED: {row['error']}"
@@ -104,6 +172,8 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("basic", nargs="*", type=Path, default=DESIGNS)
     ap.add_argument("--keep", type=Path, default=None, help="keep the cases and files here")
+    ap.add_argument("--done-when", action="store_true",
+                    help="also the coast run and the duty cycle: issue 71's criteria per design")
     args = ap.parse_args(argv)
     work = args.keep or Path(tempfile.mkdtemp(prefix="ltca-dev-"))
     work.mkdir(parents=True, exist_ok=True)
@@ -111,8 +181,15 @@ def main(argv: list[str] | None = None) -> int:
           f"{'edge%':>5} {'LTE':>6}  {'met':<4}{'tol':<5}{'verdict':<10}"
           f"{'run edge % per T':<18}{'run LTE urad':<14}{'RS':<5}{'ISO':<4}"
           f"{'syn s':>6} {'run s':>6}")
+    rows = []
     for basic in args.basic:
-        print(_fmt(run_design(basic, work)), flush=True)
+        rows.append(run_design(basic, work))
+        print(_fmt(rows[-1]), flush=True)
+    if args.done_when:
+        print(f"\n{'design':<28} {'targets':<8}{'run':<10}{'coast':<10}{'duty':<10}"
+              f"{'plastic%':>7} {'edge@15%':>9} {'LTE max':>7} {'coast':>7} {'CPU s':>7}  all")
+        for row in rows:
+            print(_fmt_done(done_when(row, work)), flush=True)
     return 0
 
 

@@ -27,10 +27,19 @@ varied), run-in Rq 0.544 and 0.884 µm (given 0.8 and 1.3): where the model's mi
 begins and ends, against Zhu & Wang's deterministic range (docs/friction.md, "What
 measurements say about μ_b(T) and the asperity share").
 
+``--share-curve --stochastic`` adds, at the same points, the asperity load ratio of the
+toolkit's stochastic mixed-EHL line-contact solver (``friction.ehl.stochastic``: Patir &
+Cheng's average-flow Reynolds equation with statistical elastic–plastic summits of the
+ground profile, solved over the contact — the construction whose regression fits are
+Masjedi & Khonsari's asperity-load formulas, J. Tribol. 134 (2012) 011503; isothermal
+shear, ``thermal=False``, which does not enter the load ratio) and its own λ (Pan–Hamrock
+h_min over the composite Rq): what a relation fitted to that class of model would give
+(docs/friction.md, "Masjedi & Khonsari's asperity-load formulas").
+
 Usage::
 
     python benchmarks/friction_share_map.py [--rolls 6] [--segments 12]
-    python benchmarks/friction_share_map.py --share-curve
+    python benchmarks/friction_share_map.py --share-curve [--stochastic]
 
 The default resolution is the criteria test's (one mesh cycle, 6 rolls, 12 segments): its
 ratios to ISO equal the full-resolution map's (``friction_correlation_map.py``, 20 rolls,
@@ -192,12 +201,62 @@ def share_curve_rows(lambdas=(0.05, 0.09, 0.15, 0.2, 0.28, 0.52, 0.75, 1.2)):
     return rows
 
 
+def stochastic_share_rows(speeds=((0.15, 0.3, 0.6, 1.0, 1.5, 2.5, 5.0, 8.0, 12.0, 20.0),
+                                  (0.3, 0.6, 1.0, 1.5, 2.5, 4.0, 8.0, 12.0, 20.0, 50.0))):
+    """At ``--share-curve``'s flank point, per run-in Rq (0.544, 0.884 µm) and entraining
+    speed [m/s]: rows (Rq, u_e, central λ, JGP share, stochastic solver's asperity load
+    ratio, its Pan–Hamrock λ); NaN where the solver did not converge."""
+    import math
+
+    import numpy as np
+
+    from friction.ehl.complementarity import ConvergenceError
+    from friction.ehl.line_contact import LineContactCondition
+    from friction.ehl.roughness import GroundSurface
+    from friction.ehl.stochastic import StochasticOptions, stochastic_summary
+    from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
+
+    oil = load_lubricant("75W90")
+    eta, alpha = float(viscosity(oil, 90.0)), float(pressure_viscosity_coefficient(oil, 90.0))
+    radius, e_prime, p_h = 15.0, 230e3, 1000.0
+    b = 4.0 * radius * p_h / e_prime
+    w = np.pi * b * p_h / 2.0
+    rows = []
+    for rq, us in zip((0.544, 0.884), speeds, strict=True):
+        u = np.asarray(us, dtype=float)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", FrictionModelRangeWarning)
+            sol = _load_sharing(
+                summits="ground", load_per_length=w, hertz_pressure=p_h, radius=radius,
+                e_prime=e_prime, entraining_velocity=u, sliding_velocity=0.5 * u,
+                viscosity=eta, pressure_viscosity=alpha, roughness_1=rq, roughness_2=rq,
+                thermal_factor=1.0, eyring_stress=5.0, limiting_shear_coefficient=0.08,
+                boundary_friction=0.1, asperity_density_radius_sigma=0.05,
+                sigma_over_beta=0.01)
+        lam = sol.smooth_film_thickness / (math.sqrt(2.0) * rq)
+        for i, ue in enumerate(us):
+            cond = LineContactCondition(load_per_length=w, radius=radius,
+                                        entraining_velocity=ue, slide_to_roll=0.5,
+                                        temperature=90.0, e_prime=e_prime)
+            try:
+                s = stochastic_summary(cond, (GroundSurface(rq, seed=1),
+                                              GroundSurface(rq, seed=2)),
+                                       options=StochasticOptions(thermal=False))
+                st = (s.asperity_load_ratio, s.lambda_ratio)
+            except ConvergenceError:
+                st = (float("nan"), float("nan"))
+            rows.append([rq, ue, float(lam[i]), float(sol.asperity_load_share[i]), *st])
+    return rows
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--rolls", type=int, default=6)
     ap.add_argument("--segments", type=int, default=12)
     ap.add_argument("--share-curve", action="store_true",
                     help="the asperity share against lambda at one flank point and exit")
+    ap.add_argument("--stochastic", action="store_true",
+                    help="with --share-curve: the stochastic solver's load ratio beside it")
     args = ap.parse_args(argv)
     if args.share_curve:
         print("asperity share of thermal_eyring's load sharing at one flank point (p_h 1.0 "
@@ -206,6 +265,14 @@ def main(argv=None) -> int:
         print(tabulate(share_curve_rows(), headers=("lambda", "share, Rq 0.544 um",
                                                     "share, Rq 0.884 um"),
                        floatfmt=("g", ".3f", ".3f")))
+        if args.stochastic:
+            print("\nthe same point: Johnson-Greenwood-Poon share against the stochastic "
+                  "mixed-EHL solver's asperity load ratio (friction.ehl.stochastic)")
+            print(tabulate(stochastic_share_rows(),
+                           headers=("Rq [um]", "u_e [m/s]", "lambda (central, smooth)",
+                                    "JGP share", "stochastic load ratio",
+                                    "its lambda (Pan-Hamrock h_min)"),
+                           floatfmt=("g", "g", ".3f", ".3f", ".3f", ".3f")))
         return 0
     opts = LTCAOptions(cycles=1, rolls_per_cycle=args.rolls, segments=args.segments)
     lts = {k: loaded_tca(resolve_case(v), list(TORQUES), options=opts)
