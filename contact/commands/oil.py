@@ -43,14 +43,14 @@ def register(sub) -> None:
                    "(default: ISO/TR 15144-1's of the base stock)")
     p.add_argument("--fzg-stage", type=float, default=None,
                    help="FZG A/8.3/90 failure load stage (scuffing safety)")
-    p.add_argument("--boundary-friction", default=None, metavar="MU_B",
+    p.add_argument("--boundary-friction", default=None, metavar="MU",
                    help="boundary friction coefficient measured on the oil: one number, or "
-                   "values measured at several oil temperatures as DEGC:MU_B pairs by "
+                   "values measured at several oil temperatures T [degC] as T:MU pairs by "
                    "commas (e.g. 40:0.11,100:0.09; with --boundary-friction-source), "
                    "interpolated linearly in temperature (default the assumed 0.1)")
     p.add_argument("--boundary-friction-source", default=None, metavar="TEXT",
                    help="where the measured boundary friction table comes from (rig, load, "
-                   "speed, slide-to-roll ratio, materials); required with DEGC:MU_B pairs")
+                   "speed, slide-to-roll ratio, materials); required with T:MU pairs")
     p.add_argument("--lambda-gfp", type=float, default=None,
                    help="permissible specific film thickness from the FVA 54 test "
                    "(micropitting safety)")
@@ -100,7 +100,7 @@ def list_oils() -> int:
 
 def boundary_friction_argument(text: str | None, source: str | None):
     """``--boundary-friction``'s value: None, one number, or a table mapping (temperature
-    [degC], value [1], source) from ``DEGC:MU_B`` pairs by commas.
+    [degC], value [1], source) from ``T:MU`` pairs by commas.
 
     Parameters
     ----------
@@ -127,27 +127,27 @@ def boundary_friction_argument(text: str | None, source: str | None):
     if text is None:
         if source is not None:
             raise InputError("--boundary-friction-source: given without a table of "
-                             "--boundary-friction DEGC:MU_B pairs")
+                             "--boundary-friction T:MU pairs")
         return None
     if ":" not in text:
         if source is not None:
-            raise InputError("--boundary-friction-source: goes with a table of DEGC:MU_B "
+            raise InputError("--boundary-friction-source: goes with a table of T:MU "
                              f"pairs, got the single value {text!r}")
         try:
             return float(text)
         except ValueError:
-            raise InputError(f"--boundary-friction: must be a number or DEGC:MU_B pairs by "
+            raise InputError(f"--boundary-friction: must be a number or T:MU pairs by "
                              f"commas (e.g. 40:0.11,100:0.09), got {text!r}") from None
     try:
         pairs = [tuple(float(x) for x in item.split(":")) for item in text.split(",")]
     except ValueError:
         pairs = [()]
     if any(len(p) != 2 for p in pairs):
-        raise InputError(f"--boundary-friction: must be a number or DEGC:MU_B pairs by "
+        raise InputError(f"--boundary-friction: must be a number or T:MU pairs by "
                          f"commas (e.g. 40:0.11,100:0.09), got {text!r}")
     if source is None:
         raise InputError("--boundary-friction-source: required with a table of "
-                         "--boundary-friction DEGC:MU_B pairs (the rig, load, speed, "
+                         "--boundary-friction T:MU pairs (the rig, load, speed, "
                          "slide-to-roll ratio and materials of the measurement)")
     return {"temperature": [p[0] for p in pairs], "value": [p[1] for p in pairs],
             "source": source}

@@ -6,7 +6,10 @@ import argparse
 import logging
 import math
 import os
+import sys
 import textwrap
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 from contact.commands.options import (
@@ -220,7 +223,55 @@ def _chain_of(args: argparse.Namespace, operating, case):
     return chain if method is None else chain.with_load_capacity(method)
 
 
+@contextmanager
+def dask_hidden() -> Iterator[None]:
+    """Keep dask (and distributed) out of the process while the block runs, unless
+    already imported.
+
+    xarray's netCDF writer asks dask for its scheduler and its duck arrays whenever dask
+    is installed, importing dask and distributed for a file of NumPy arrays: ~0.5 s of
+    CPU of a warm ``ltca run`` (docs/performance.md, issue 75 item 4), for nothing the
+    command uses (it runs one analysis, no study). Marked unimportable
+    (``sys.modules["dask"] = None``), xarray takes its path without dask and writes the
+    same file. xarray's memos of dask (its duck-array and module-availability memos,
+    private to xarray) are forgotten on entry, so it asks again, and on exit, after the
+    mark is removed, so a process that goes on (a test calling ``main(["run", ...])``,
+    then a study) finds dask as before.
+    """
+    if "dask" in sys.modules:
+        yield
+        return
+    sys.modules["dask"] = None  # type: ignore[assignment]
+    _forget_dask()  # what xarray found before (dask installed) is asked again
+    try:
+        yield
+    finally:
+        if "dask" in sys.modules and sys.modules["dask"] is None:
+            del sys.modules["dask"]
+        _forget_dask()
+
+
+def _forget_dask() -> None:
+    """Drop xarray's memos of whether dask is installed (its private names, looked up
+    defensively: an xarray without them has nothing to forget)."""
+    for module, name in (("xarray.namedarray.pycompat", "_cached_duck_array_modules"),
+                         ("xarray.namedarray.utils", "module_available"),
+                         ("xarray.namedarray.parallelcompat", "list_chunkmanagers")):
+        memo = getattr(sys.modules.get(module), name, None)
+        if isinstance(memo, dict):
+            memo.pop("dask", None)
+        elif hasattr(memo, "cache_clear"):
+            memo.cache_clear()
+
+
 def run(args: argparse.Namespace) -> int:
+    """``ltca run``: the analysis of a case, its summary and verdict, its file; dask
+    kept out of the process (:func:`dask_hidden`)."""
+    with dask_hidden():
+        return _run(args)
+
+
+def _run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
     from contact.pipeline import operating_conditions, run_analysis
