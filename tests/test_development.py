@@ -394,6 +394,31 @@ def test_lte_spread_is_the_quantity_the_verdicts_plausibility_check_reads(unreli
         assert not met and short["spread"] == pytest.approx(2.0), stage
 
 
+def test_a_design_the_verdict_fails_on_its_spread_ranks_after_every_one_it_passes():
+    """The 17x29 spiral bevel at Sigma 100 deg (tests/data/designs), measured at ltca run's
+    sampling: its long root relief, LTE 125 / 134 urad with the light-load spread 0.56
+    (ltca run FAILs it), scored 90.3 against 98.1 of the same bearing with its path turned
+    to -60 deg (57 / 138 urad, spread 0.36), so the development kept the design that
+    fails. A spread beyond the verdict's limit now adds VERDICT_FAIL_PENALTY: it ranks
+    after the passing design, and after a passing design with edges and plastic far
+    beyond their targets; a design whose analysis failed (FAILED) still ranks last."""
+    from contact.ltca.plausibility import LTE_SPREAD_LIMIT
+    from contact.optimize.development_targets import FAILED, VERDICT_FAIL_PENALTY
+
+    t = DevelopmentTargets()
+    failing = _metrics(lte_peak_to_peak=[125.0, 134.0], lte_spread=[0.56, 0.16])
+    passing = _metrics(lte_peak_to_peak=[57.0, 138.0], lte_spread=[0.36, 0.17])
+    rough = _metrics(lte_peak_to_peak=[57.0, 138.0], lte_spread=[0.36, 0.17],
+                     edge_load_share=[0.02, 0.10], plastic_share=[0.0, 0.04])
+    f, short_f, _ = development_score(failing, t, centre_v=0.6)
+    p, short_p, _ = development_score(passing, t, centre_v=0.6)
+    r, _, _ = development_score(rough, t, centre_v=0.6)
+    assert short_f["spread"] > 0.0 and short_p["spread"] == 0.0
+    assert 0.56 > LTE_SPREAD_LIMIT > 0.36
+    assert p < r < f < FAILED
+    # without the penalty the failing design would have won, as measured
+    assert f - VERDICT_FAIL_PENALTY < p
+
 def test_kept_teeth_give_the_shell_models_own_result(unrelieved_pc):
     """The development's shell teeth kept across designs (KeptTeeth) are the shell model's
     own teeth of the case: the coarse LTCA with them equals the one with the pipeline's
