@@ -64,14 +64,14 @@ def main(argv: list[str] | None = None) -> None:
             case = synthesize(with_flank_options(basic, flank, values), memo=memo,
                               tip_planes=args.check)[0]
             opts = dataclasses.replace(
-                options, compliance=teeth.compliance(dev._bearing_key(values)))
+                options, compliance=teeth.compliance(dev.bearing_key(values)))
             tree = run_analysis(case, list(args.torques), flank="drive", options=opts,
                                 deviations=False, steps=AnalysisChain.contact_only())
         except Exception as exc:  # a design that fails is a row, not the end
             print(f"{json.dumps(change):44s} failed: {exc}".splitlines()[0])
             continue
-        m = dev._metrics(tree, case)
-        _, short, _ = dev.development_score(m, dev.DevelopmentTargets(), dev._grid(tree),
+        m = dev.design_metrics(tree, case)
+        _, short, _ = dev.development_score(m, dev.DevelopmentTargets(), dev.grid_bounds(tree),
                                             centre_v=dev.working_depth_centre(case),
                                             pressure_limit=dev.static_strength(tree))
         pairs = np.asarray(tree["/ltca"]["pairs_in_contact"].values, float).mean(axis=-1)

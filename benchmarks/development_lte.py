@@ -42,13 +42,13 @@ def _analyse(basic, flank, values, torques, memo, teeth, check):
     case = synthesize(with_flank_options(basic, flank, values), memo=memo,
                       tip_planes=check)[0]
     options = dataclasses.replace(dev.CHECK_LTCA if check else dev.COARSE_LTCA,
-                                  compliance=teeth.compliance(dev._bearing_key(values)))
+                                  compliance=teeth.compliance(dev.bearing_key(values)))
     tree = run_analysis(case, list(torques), flank="drive", options=options,
                         deviations=False, geometry=False, operating=False,
                         mesh_interface=False, root_stress=False,
                         steps={"load_capacity": None})
-    m = dev._metrics(tree, case)
-    _, short, _ = dev.development_score(m, dev.DevelopmentTargets(), dev._grid(tree),
+    m = dev.design_metrics(tree, case)
+    _, short, _ = dev.development_score(m, dev.DevelopmentTargets(), dev.grid_bounds(tree),
                                         centre_v=dev.working_depth_centre(case),
                                         pressure_limit=dev.static_strength(tree))
     pairs = np.asarray(tree["/ltca"]["pairs_in_contact"].values, float).mean(axis=-1)

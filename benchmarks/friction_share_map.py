@@ -20,9 +20,17 @@ table), hot against cold at Rq 1.3 and A − B. **A sensitivity, not a model**: 
 measured μ_b(T) of the oil would have to show; nothing here is adopted (docs/friction.md,
 "Why the roughness cost grows with temperature").
 
+``--share-curve`` prints instead the asperity share of that load sharing against the
+smooth-surface central λ at one flank point like A's at 500 N·m (p_h 1.0 GPa, R 15 mm,
+E′ 230 GPa, 75W90 at 90 °C, SR 0.5, no inlet thermal reduction; the entraining speed
+varied), run-in Rq 0.544 and 0.884 µm (given 0.8 and 1.3): where the model's mixed regime
+begins and ends, against Zhu & Wang's deterministic range (docs/friction.md, "What
+measurements say about μ_b(T) and the asperity share").
+
 Usage::
 
     python benchmarks/friction_share_map.py [--rolls 6] [--segments 12]
+    python benchmarks/friction_share_map.py --share-curve
 
 The default resolution is the criteria test's (one mesh cycle, 6 rolls, 12 segments): its
 ratios to ISO equal the full-resolution map's (``friction_correlation_map.py``, 20 rolls,
@@ -148,11 +156,57 @@ def sensitivity_rows(lts, folder, values=(0.10, 0.09, 0.085, 0.08, 0.075, 0.07))
     return rows
 
 
+def share_curve_rows(lambdas=(0.05, 0.09, 0.15, 0.2, 0.28, 0.52, 0.75, 1.2)):
+    """Asperity share at the smooth-surface central λ nearest each of ``lambdas`` (module
+    docstring, ``--share-curve``); rows (λ, share at Rq 0.544, share at Rq 0.884)."""
+    import numpy as np
+
+    from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
+
+    oil = load_lubricant("75W90")
+    eta, alpha = float(viscosity(oil, 90.0)), float(pressure_viscosity_coefficient(oil, 90.0))
+    radius, e_prime, p_h = 15.0, 230e3, 1000.0
+    b = 4.0 * radius * p_h / e_prime  # mm, line-contact Hertz half-width
+    w = np.pi * b * p_h / 2.0  # N/mm
+    u = np.geomspace(0.02, 60.0, 600)
+    cols = []
+    for rq in (0.544, 0.884):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", FrictionModelRangeWarning)
+            sol = _load_sharing(
+                summits="ground", load_per_length=w, hertz_pressure=p_h, radius=radius,
+                e_prime=e_prime, entraining_velocity=u, sliding_velocity=0.5 * u,
+                viscosity=eta, pressure_viscosity=alpha, roughness_1=rq, roughness_2=rq,
+                thermal_factor=1.0, eyring_stress=5.0, limiting_shear_coefficient=0.08,
+                boundary_friction=0.1, asperity_density_radius_sigma=0.05,
+                sigma_over_beta=0.01)
+        lam = sol.smooth_film_thickness / (np.sqrt(2.0) * rq)
+        cols.append((lam, sol.asperity_load_share))
+    rows = []
+    for target in lambdas:
+        row = [target]
+        for lam, share in cols:
+            i = int(np.argmin(abs(lam - target)))
+            row.append(float(share[i]) if abs(lam[i] / target - 1.0) < 0.05 else float("nan"))
+        rows.append(row)
+    return rows
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--rolls", type=int, default=6)
     ap.add_argument("--segments", type=int, default=12)
+    ap.add_argument("--share-curve", action="store_true",
+                    help="the asperity share against lambda at one flank point and exit")
     args = ap.parse_args(argv)
+    if args.share_curve:
+        print("asperity share of thermal_eyring's load sharing at one flank point (p_h 1.0 "
+              "GPa, R 15 mm, 75W90 at 90 degC, SR 0.5) against the smooth-surface central "
+              "lambda")
+        print(tabulate(share_curve_rows(), headers=("lambda", "share, Rq 0.544 um",
+                                                    "share, Rq 0.884 um"),
+                       floatfmt=("g", ".3f", ".3f")))
+        return 0
     opts = LTCAOptions(cycles=1, rolls_per_cycle=args.rolls, segments=args.segments)
     lts = {k: loaded_tca(resolve_case(v), list(TORQUES), options=opts)
            for k, v in CASES.items()}

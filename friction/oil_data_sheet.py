@@ -42,6 +42,7 @@ import numpy as np
 
 from friction.lubricant import (
     BASE_OIL_FACTORS,
+    BoundaryFrictionTable,
     Lubricant,
     fit_walther,
     lubricant_from_mapping,
@@ -110,8 +111,13 @@ class OilDataSheet:
         (:data:`PRESSURE_VISCOSITY_CORRELATIONS`); else None (the correlation).
     fzg_load_stage : float or None — [1]
         FZG A/8.3/90 failure load stage (ISO 14635-1), in [1, 14].
-    boundary_friction : float or None — [1]
-        μ_b measured on the oil (Stribeck plateau), in [0, 1]; None: the assumed 0.1.
+    boundary_friction : float, BoundaryFrictionTable, mapping or None — [1]
+        μ_b measured on the oil (the low-speed plateau of its Stribeck curve on steel): one
+        number in [0, 1], or measured at several oil temperatures — a
+        :class:`friction.lubricant.BoundaryFrictionTable` or a mapping with ``temperature``
+        [degC], ``value`` [1] and ``source`` (made one on construction), written to the oil
+        file as its ``[boundary_friction]`` table (docs/friction.md, "Boundary friction of
+        your oil"); None: the assumed 0.1 at every temperature.
     permissible_specific_film : float or None — [1]
         λ_GFP from the oil's FVA 54 micropitting test, > 0.
     thermal_conductivity : float or None — [W/(m K)]
@@ -126,7 +132,7 @@ class OilDataSheet:
     source: str
     pressure_viscosity_38: float | None = None
     fzg_load_stage: float | None = None
-    boundary_friction: float | None = None
+    boundary_friction: float | BoundaryFrictionTable | Mapping[str, Any] | None = None
     permissible_specific_film: float | None = None
     thermal_conductivity: float | None = None
 
@@ -158,13 +164,20 @@ class OilDataSheet:
         if alpha is not None and not 1.0 <= _finite("pressure_viscosity_38", alpha) <= 60.0:
             raise InputError(f"pressure_viscosity_38: must be in [1, 60] [1/GPa], got "
                              f"{alpha:g}")
-        bounds = {"fzg_load_stage": (1.0, 14.0), "boundary_friction": (0.0, 1.0),
-                  "permissible_specific_film": (1e-6, 10.0),
+        if isinstance(self.boundary_friction, Mapping):
+            object.__setattr__(self, "boundary_friction",
+                               BoundaryFrictionTable.from_mapping(self.boundary_friction))
+        bounds = {"fzg_load_stage": (1.0, 14.0), "permissible_specific_film": (1e-6, 10.0),
                   "thermal_conductivity": (0.05, 0.5)}
         for key, (lo, hi) in bounds.items():
             v = getattr(self, key)
             if v is not None and not lo <= _finite(key, v) <= hi:
                 raise InputError(f"{key}: must be in [{lo:g}, {hi:g}], got {v:g}")
+        mu_b = self.boundary_friction
+        if mu_b is not None and not isinstance(mu_b, BoundaryFrictionTable) \
+                and not 0.0 <= _finite("boundary_friction", mu_b) <= 1.0:
+            raise InputError(f"boundary_friction: must be in [0, 1] or a table of values "
+                             f"measured against temperature, got {mu_b:g}")
 
 
 def _finite(key: str, value: Any) -> float:
@@ -286,11 +299,13 @@ def oil_file_mapping(sheet: OilDataSheet,
                                         else "the data sheet"),
         "eyring_stress": _ASSUMED["eyring_stress"],
         "limiting_shear_coefficient": _ASSUMED["limiting_shear_coefficient"],
-        "boundary_friction": (_ASSUMED["boundary_friction"] if sheet.boundary_friction
-                              is None else sheet.boundary_friction),
+        "boundary_friction": _boundary_friction_entry(sheet.boundary_friction),
         "traction_source": _ASSUMED["traction_source"] + (
             "" if sheet.boundary_friction is None else
-            "; boundary friction measured on the oil (the data sheet's value)"),
+            "; boundary friction measured on the oil (the data sheet's value)"
+            if not isinstance(sheet.boundary_friction, BoundaryFrictionTable) else
+            "; boundary friction measured on the oil against temperature (its "
+            "[boundary_friction] table and source)"),
         "base_oil": sheet.base_oil,
     }
     durability = {k: getattr(sheet, k) for k in ("fzg_load_stage", "permissible_specific_film")
@@ -308,6 +323,18 @@ def oil_file_mapping(sheet: OilDataSheet,
                     "extrapolation": "K"}
     doc["units"].update({k: "1" for k in durability})
     return doc
+
+
+def _boundary_friction_entry(mu_b: float | BoundaryFrictionTable | None
+                             ) -> float | dict[str, Any]:
+    """The oil file's ``boundary_friction``: the assumed number, the given one, or the
+    given table as the file's ``[boundary_friction]`` table."""
+    if mu_b is None:
+        return _ASSUMED["boundary_friction"]
+    if isinstance(mu_b, BoundaryFrictionTable):
+        return {"temperature": [float(t) for t in mu_b.temperature],
+                "value": [float(v) for v in mu_b.value], "source": mu_b.source}
+    return float(mu_b)
 
 
 def lubricant_from_data_sheet(sheet: OilDataSheet) -> Lubricant:

@@ -19,17 +19,20 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from contact.optimize import development_check as dcheck
+from contact.optimize import development_coast_flank as dcoast
+from contact.optimize import development_stages as dstages
 from contact.optimize.development import (
     COARSE_LTCA,
     FAILED,
     STAGE_TERMS,
     DevelopmentTargets,
-    _analyse,
     development_score,
     footprint_centre,
     targets_from_table,
     working_depth_centre,
 )
+from contact.optimize.development_evaluate import analyse_design
 from geometry.core.errors import InputError
 
 DESIGNS = Path(__file__).parent / "data" / "designs"
@@ -177,7 +180,7 @@ def unrelieved_pc():
     tree = run_analysis(case, [50.0, 330.0], options=COARSE_LTCA, deviations=False,
                         geometry=False, operating=False, mesh_interface=False,
                         root_stress=False)
-    metrics, grid = _analyse(case, [50.0, 330.0])
+    metrics, grid = analyse_design(case, [50.0, 330.0])
     return tree, metrics, grid
 
 
@@ -429,13 +432,13 @@ def test_kept_teeth_give_the_shell_models_own_result(unrelieved_pc):
     case = _unrelieved_case()
     _, metrics, _ = unrelieved_pc
     teeth = KeptTeeth()
-    kept, _ = _analyse(case, [50.0, 330.0], teeth=teeth, pinion_key=("a",))
+    kept, _ = analyse_design(case, [50.0, 330.0], teeth=teeth, pinion_key=("a",))
     for k in metrics:
         np.testing.assert_allclose(kept[k], metrics[k], rtol=1e-9, atol=1e-12, err_msg=k)
     assert teeth.built == 2
-    _analyse(case, [50.0], teeth=teeth, pinion_key=("b",))
+    analyse_design(case, [50.0], teeth=teeth, pinion_key=("b",))
     assert teeth.built == 3
-    _analyse(case, [50.0], teeth=teeth, pinion_key=("b",))
+    analyse_design(case, [50.0], teeth=teeth, pinion_key=("b",))
     assert teeth.built == 3
 
 
@@ -489,7 +492,7 @@ def test_the_written_case_is_the_design_checked_and_the_coast_is_checked_at_the_
     assert len(r.evaluations) == 2 and r.best.checked
     assert any("check of design" in line for line in lines)
     assert r.case.to_toml() == r.best.case.to_toml()
-    again, grid = _analyse(r.case, list(r.torque), options=CHECK_LTCA)
+    again, grid = analyse_design(r.case, list(r.torque), options=CHECK_LTCA)
     for k in ("lte_peak_to_peak", "pressure_max_flank"):
         np.testing.assert_allclose(again[k], r.best.metrics[k], rtol=0.01, err_msg=k)
     np.testing.assert_allclose(again["edge_load_share"], r.best.metrics["edge_load_share"],
@@ -562,7 +565,7 @@ def test_the_coast_search_runs_where_the_coast_misses_a_target(short_development
         assert r.case.to_toml() == off.case.to_toml()
     # at the coast flank's own torques (its design torque no higher than the drive's)
     assert r.coast_design_torques[1] <= r.torque[1] + 0.1
-    again, _ = _analyse(r.case, list(r.coast_design_torques), options=CHECK_LTCA,
+    again, _ = analyse_design(r.case, list(r.coast_design_torques), options=CHECK_LTCA,
                         flank="coast")
     for k in ("lte_peak_to_peak", "pressure_max_flank"):
         np.testing.assert_allclose(again[k], r.coast[k], rtol=0.01, err_msg=k)
@@ -572,7 +575,7 @@ def test_the_coast_search_runs_where_the_coast_misses_a_target(short_development
 
 
 def _coast_outcome(monkeypatch, meets, n_max=12):
-    """``_coast_development`` of the passenger-car hypoid (drive concave, coast convex)
+    """``coast_development`` of the passenger-car hypoid (drive concave, coast convex)
     with stand-ins for the synthesis (a design's case is its basic design) and the
     analysis (every target met where ``meets(case)``, else 5 % of the torque on plastic
     edges and 5 % on edges); the drive design's case is the string "as synthesised". The
@@ -590,7 +593,7 @@ def _coast_outcome(monkeypatch, meets, n_max=12):
              _metrics(plastic_share=[0.0, 0.05], edge_load_share=[0.0, 0.05]))
         return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
     monkeypatch.setattr(cs, "synthesize", lambda b, memo=None, **kw: (b, None))
     basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
     drive = dev.DevelopmentEvaluation(0, {"tip_relief": 20.0}, _metrics(), 0.0, {}, True, "",
@@ -598,8 +601,8 @@ def _coast_outcome(monkeypatch, meets, n_max=12):
     setup = {"torques": [50.0, 330.0], "centre_v": 0.6, "source": "s", "lowered": False,
              "pressure_limit": 2400.0}
     lines = []
-    out = dev._coast_development(basic, drive, DevelopmentTargets(coast_max_evaluations=n_max),
-                                 setup, None, {}, lines.append, lambda b: b)
+    out = dcoast.coast_development(basic, drive, DevelopmentTargets(coast_max_evaluations=n_max),
+                                   setup, None, {}, lines.append, lambda b: b)
     return out, basic, flanks, lines
 
 
@@ -665,12 +668,12 @@ def test_design_torque_lowered_to_the_bearings_static_capacity(monkeypatch, expo
         m = {k: v.copy() for k, v in _metrics().items()} | {"pressure_max_flank": p}
         return m, (0.0, 1.0, 0.0, 1.0, limit)
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
     best = dev.DevelopmentEvaluation(0, {"path_angle": -40.0}, fake(None, [0.15 * t0, t0])[0],
                                      0.0, {}, False, "", 0.0)
     setup = {"torques": [0.15 * t0, t0], "source": "the ISO 10300 capacity, the torque",
              "pressure_limit": limit, "centre_v": 0.6, "lowered": False}
-    out = dev._static_capacity(best, DevelopmentTargets(), setup, None, lambda _: None)
+    out = dev.static_capacity(best, DevelopmentTargets(), setup, None, lambda _: None)
     light, design = setup["torques"]
     p = out.metrics["pressure_max_flank"][1]
     assert design < t0 and setup["lowered"]
@@ -681,7 +684,7 @@ def test_design_torque_lowered_to_the_bearings_static_capacity(monkeypatch, expo
     # within the limit: nothing changes
     setup2 = {"torques": [0.15 * t0, t0], "source": "s", "pressure_limit": 2600.0,
               "centre_v": 0.6, "lowered": False}
-    assert dev._static_capacity(best, DevelopmentTargets(), setup2, None,
+    assert dev.static_capacity(best, DevelopmentTargets(), setup2, None,
                                 lambda _: None) is best
     assert setup2["torques"] == [0.15 * t0, t0] and not setup2["lowered"]
 
@@ -718,18 +721,18 @@ def test_the_second_bearing_is_relieved_only_where_the_first_misses_the_lte(
 
     def evaluate(values, stage, make, budget, key):
         if len(evals) >= budget:
-            raise dev._Stop
+            raise dev.StageStop
         e = _fake_design(len(evals), values, lte_short)
         evals.append(e)
         return e
 
-    dev._relief_stage(evaluate, firsts, relief, targets, evals, lambda v: v, lambda b: b)
+    dstages._relief_stage(evaluate, firsts, relief, targets, evals, lambda v: v, lambda b: b)
     on = [sum(1 for e in evals[6:] if e.values["ellipse_length"] == b.values["ellipse_length"])
           for b in firsts]
     assert targets.max_evaluations == 36
     # the first bearing's relief: the budget but the second bearing's and the designs kept
     # for re-centring its pattern after the relief (unused here: the stand-ins are centred)
-    assert on[0] == 36 - 6 - dev.SECOND_BEARING_DESIGNS - dev._RECENTRE_DESIGNS == 22
+    assert on[0] == 36 - 6 - dev.SECOND_BEARING_DESIGNS - dstages._RECENTRE_DESIGNS == 22
     assert on[1] == (dev.SECOND_BEARING_DESIGNS if second_tried else 0)
     assert len(evals) <= targets.max_evaluations
 
@@ -738,7 +741,7 @@ def test_the_relieved_bearings_are_distinct_and_best_first():
     """Two designs of one bearing (same path angle and ellipse, other relief) count once;
     designs meeting the bearing stage's targets rank before lower objectives that do
     not."""
-    from contact.optimize.development import _relief_bearings
+    from contact.optimize.development_stages import _relief_bearings
 
     a = _fake_design(0, {"path_angle": -60.0, "ellipse_length": 0.5, "tip_relief": 15.0}, 0.5)
     a2 = _fake_design(1, {"path_angle": -60.0, "ellipse_length": 0.5, "tip_relief": 30.0}, 0.1)
@@ -760,7 +763,6 @@ def test_the_te_stage_lowers_the_te_level_while_the_lte_is_missed(lte_at, expect
     its lower bound (10 µrad), each only while the LTE target is missed and the last step
     scored better; the other inputs kept. Stand-in designs whose LTE shortfall is a
     function of te_level: the test is the stage's decisions, counted by hand."""
-    from contact.optimize import development as dev
 
     targets = DevelopmentTargets()
     assert targets.variables["te_level"] == (10.0, 45.0)
@@ -775,7 +777,7 @@ def test_the_te_stage_lowers_the_te_level_while_the_lte_is_missed(lte_at, expect
         evals.append(e)
         return e
 
-    dev._te_stage(evaluate, evals, targets, lambda v: v, lambda b: b,
+    dstages._te_stage(evaluate, evals, targets, lambda v: v, lambda b: b,
                   {"te_level": 45.0}, targets.max_evaluations)
     assert asked == expected
 
@@ -806,13 +808,13 @@ def test_a_high_pattern_is_lowered_by_the_root_relief_first():
         return evaluate
 
     high = design(0, values, 0.68)
-    got = dev._root_relief_height(evaluate_to(0.60), high, targets, 36, lambda v: v,
+    got = dstages._root_relief_height(evaluate_to(0.60), high, targets, 36, lambda v: v,
                                   lambda b: b)
     assert asked[-1] == values | {"relief_start": 0.2, "root_relief": dev.ROOT_HEIGHT_RELIEF}
     assert got.metrics["pattern_centre_v"][0] == 0.60
     assert len(asked) == 1  # within the tolerance: no second design
     # farther from the target than before: the design as it was (the upper bound tried too)
-    assert dev._root_relief_height(evaluate_to(0.90), high, targets, 36, lambda v: v,
+    assert dstages._root_relief_height(evaluate_to(0.90), high, targets, 36, lambda v: v,
                                    lambda b: b) is high
     assert [a["root_relief"] for a in asked[1:]] == [dev.ROOT_HEIGHT_RELIEF, 60.0]
 
@@ -821,11 +823,11 @@ def test_a_high_pattern_is_lowered_by_the_root_relief_first():
         asked.append(dict(v))
         return design(1, v, 0.66 if v["root_relief"] < 50.0 else 0.56)
     graded.setup = {"centre_v": 0.55}
-    got = dev._root_relief_height(graded, high, targets, 36, lambda v: v, lambda b: b)
+    got = dstages._root_relief_height(graded, high, targets, 36, lambda v: v, lambda b: b)
     assert asked[-1]["root_relief"] == 60.0 and got.metrics["pattern_centre_v"][0] == 0.56
     # at its height: nothing analysed
     n = len(asked)
-    assert dev._root_relief_height(evaluate_to(0.60), design(0, values, 0.56), targets, 36,
+    assert dstages._root_relief_height(evaluate_to(0.60), design(0, values, 0.56), targets, 36,
                                    lambda v: v, lambda b: b).metrics[
         "pattern_centre_v"][0] == 0.56
     assert len(asked) == n
@@ -847,7 +849,7 @@ def test_the_te_stage_runs_again_at_the_check_where_the_lte_is_missed(monkeypatc
         level = lte[case["te_level"]]
         return _metrics(lte_peak_to_peak=[level, level]), (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
     targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
 
     def chosen(level):
@@ -855,13 +857,13 @@ def test_the_te_stage_runs_again_at_the_check_where_the_lte_is_missed(monkeypatc
                         _metrics(lte_peak_to_peak=[lte[level]] * 2), targets, 0.6)
 
     lines = []
-    got = dev._checked_te(chosen(45.0), targets, setup, None, lines.append,
+    got = dcheck._checked_te(chosen(45.0), targets, setup, None, lines.append,
                           lambda values: dict(values), 45.0)
     # 45 → 25 meets the LTE (39 µrad): kept, and no design at 10
     assert got.values["te_level"] == 25.0 and got.met and got.stage == "te"
     assert len(lines) == 1 and "te_level 25" in lines[0]
     met = chosen(25.0)
-    assert dev._checked_te(met, targets, setup, None, lines.append, lambda v: dict(v),
+    assert dcheck._checked_te(met, targets, setup, None, lines.append, lambda v: dict(v),
                            45.0) is met
 
 
@@ -885,7 +887,7 @@ def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
         return (_metrics(pattern_toe_u=[0.45 - n / 2, 0.1], pattern_heel_u=[0.45 + n / 2, 0.9]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
     targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
 
     def chosen(values):
@@ -895,16 +897,16 @@ def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
     lines = []
     start = chosen({"path_angle": -58.75, "ellipse_length": 0.55})  # 0.71 long
     assert start.full[1]["length"] > 0.0
-    got = dev._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     # -73.75 deg / 0.5: 0.58 long, every target met: no second design
     assert got.values == {"path_angle": -73.75, "ellipse_length": 0.5} and got.met
     assert len(lines) == 1 and got.stage == "path"
     # the second step is clipped to the bound (-80 deg) and the ellipse's lower bound
     far = chosen({"path_angle": -70.0, "ellipse_length": 0.75})
-    got = dev._checked_path(far, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck._checked_path(far, targets, setup, None, lines.append, lambda v: dict(v))
     assert got.values["path_angle"] == -80.0
     ok = chosen({"path_angle": -80.0, "ellipse_length": 0.45})
-    assert dev._checked_path(ok, targets, setup, None, lines.append, lambda v: dict(v)) is ok
+    assert dcheck._checked_path(ok, targets, setup, None, lines.append, lambda v: dict(v)) is ok
 
 
 def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatch):
@@ -922,7 +924,7 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
         return (_metrics(pattern_toe_u=[0.25, 0.1], pattern_heel_u=[0.78, 0.9],
                          lte_peak_to_peak=[20.0, lte]), (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
     targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.6}
 
     def chosen(values):
@@ -932,7 +934,7 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
     lines = []
     start = chosen({"path_angle": -51.9, "ellipse_length": 0.65})  # 0.53 long, 50 µrad
     assert start.full[1]["length"] == 0.0 and start.full[1]["lte"] > 0.0
-    got = dev._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     # -66.9 deg with 0.70 (0.53 + 0.05 <= 0.6): 44 µrad; then -80 deg (clipped) with 0.75:
     # 0.53 + 0.1 > 0.6, the ellipse kept at 0.65 -> 50 µrad, not better
     assert got.values["path_angle"] == -66.9
@@ -956,7 +958,7 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
                          edge_load_share=[0.0, 0.016 - 0.001 * r]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
     targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.548}
 
     def chosen(values):
@@ -966,15 +968,15 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
     lines = []
     high = chosen({"tip_relief": 15.0, "tip_relief_start": 0.85})  # v 0.64, edge 0.1 %
     assert high.full[1]["centre_v"] > 0.0
-    got = dev._checked_tip(high, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck._checked_tip(high, targets, setup, None, lines.append, lambda v: dict(v))
     assert got.values == {"tip_relief": 7.5, "tip_relief_start": 0.9} and got.met
     assert got.stage == "tip" and len(lines) == 1
     # no room on the edges (1.2 % > half of 2 %), or at its height: nothing analysed
     tight = chosen({"tip_relief": 4.0, "tip_relief_start": 0.85})
-    assert dev._checked_tip(dataclasses.replace(
+    assert dcheck._checked_tip(dataclasses.replace(
         tight, full=(1.0, high.full[1], False)), targets, setup, None, lines.append,
         lambda v: dict(v)).values == tight.values
-    assert dev._checked_tip(got, targets, setup, None, lines.append,
+    assert dcheck._checked_tip(got, targets, setup, None, lines.append,
                             lambda v: dict(v)) is got
     assert len(lines) == 1
 
@@ -985,8 +987,8 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
             m["plastic_share"] = np.array([0.0, 0.003])
         return m, grid
 
-    monkeypatch.setattr(dev, "_analyse", misaligned)
-    assert dev._checked_tip(high, targets, setup, None, lines.append,
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", misaligned)
+    assert dcheck._checked_tip(high, targets, setup, None, lines.append,
                             lambda v: dict(v)) is high
     assert "not kept" in lines[-1] and "plastic" in lines[-1]
 
@@ -995,23 +997,22 @@ def test_the_height_stage_keeps_the_design_before_a_costly_blade_angle(monkeypat
     """Where the blade-angle root-find's centred design scores worse than the design it
     started from (the tilt's LTE beyond the centre's shortfall: the spiral bevel 13x39,
     objective 14.2 against 3.65), the height stage goes on from the latter."""
-    from contact.optimize import development as dev
 
     targets = DevelopmentTargets()
     base = _fake_design(6, {"blade_angle_change": 0.0, "profile_crowning": 0.0}, 1.8)
     centred = _fake_design(9, {"blade_angle_change": -0.2, "profile_crowning": 0.0}, 3.7)
-    monkeypatch.setattr(dev, "_root_relief_height", lambda *a: base)
-    monkeypatch.setattr(dev, "_centre_height", lambda *a, **k: centred)
+    monkeypatch.setattr(dstages, "_root_relief_height", lambda *a: base)
+    monkeypatch.setattr(dstages, "_centre_height", lambda *a, **k: centred)
     for e in (base, centred):  # finite centres, clear of the ends at light load
         e.metrics.update(pattern_centre_v=np.array([0.6, 0.6]),
                          edge_load_share=np.array([0.0, 0.0]))
-    got = dev._height_stage(lambda *a: None, base, targets, 36, lambda v: v, lambda b: b)
+    got = dstages._height_stage(lambda *a: None, base, targets, 36, lambda v: v, lambda b: b)
     assert got is base
     better = _fake_design(9, {"blade_angle_change": -0.2, "profile_crowning": 0.0}, 0.5)
     better.metrics.update(pattern_centre_v=np.array([0.55, 0.6]),
                           edge_load_share=np.array([0.0, 0.0]))
-    monkeypatch.setattr(dev, "_centre_height", lambda *a, **k: better)
-    assert dev._height_stage(lambda *a: None, base, targets, 36, lambda v: v,
+    monkeypatch.setattr(dstages, "_centre_height", lambda *a, **k: better)
+    assert dstages._height_stage(lambda *a: None, base, targets, 36, lambda v: v,
                              lambda b: b) is better
 
 
@@ -1046,7 +1047,7 @@ def test_a_check_step_keeps_no_design_that_loses_the_mounting_tolerance(monkeypa
             m["plastic_share"] = np.array([0.0, 0.013])
         return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr(dev, "_analyse", fake)
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
     targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.6}
     m = fake({"path_angle": -51.9}, [])[0]
     full = development_score(m, targets, centre_v=0.6)
@@ -1054,6 +1055,6 @@ def test_a_check_step_keeps_no_design_that_loses_the_mounting_tolerance(monkeypa
                                       full[0], full[1], full[2], "", 0.0, full=full,
                                       checked=True)
     lines = []
-    got = dev._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert got is start
     assert sum("not kept" in line and "plastic" in line for line in lines) == 2

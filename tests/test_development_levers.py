@@ -1,6 +1,6 @@
 """The development's levers (issue 71): the pinion blade's pressure-angle change and profile
 crowning (geometry.synthesis.blade_change), and the root-find on the pattern's height
-(contact.optimize.development._centre_height).
+(contact.optimize.development_stages._centre_height).
 
 The blade changes are checked against the blade's own geometry (the nominal line's radius
 at the pivot, the circle's sagitta); the lever's effect on the loaded pattern against its
@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from contact.optimize import development_stages as dstages
 from geometry.core.errors import InputError
 from geometry.machine.cutter import Blade, blade_profile
 from geometry.synthesis.blade_change import blade_angle_changed, blade_profile_crowned
@@ -116,7 +117,7 @@ def lever():
                                 "profile_crowning": 10.0})
     targets = dev.DevelopmentTargets()
     memo, teeth, setup, evals, lines = {}, dev.KeptTeeth(), {}, [], []
-    evaluate = dev._evaluator(basic, targets, setup, teeth, lines.append, evals, "drive",
+    evaluate = dev.evaluator(basic, targets, setup, teeth, lines.append, evals, "drive",
                               targets.max_evaluations)
 
     def basic_of(values):
@@ -130,7 +131,7 @@ def lever():
         b = basic_of(values)
         try:
             return evaluate(values, "height", lambda: make(b), 100, ())
-        except dev._Stop:  # met every target: the design is the last analysed
+        except dev.StageStop:  # met every target: the design is the last analysed
             return evals[-1]
 
     return dev, evaluate, at, basic_of, make, evals, setup
@@ -158,7 +159,7 @@ def test_the_root_find_puts_the_pattern_at_the_height_aimed_at(lever):
     dev, evaluate, at, basic_of, make, evals, setup = lever
     base = at(0.0)
     n0 = len(evals)
-    out = dev._centre_height(evaluate, base, dev.DevelopmentTargets(), 100, basic_of, make)
+    out = dstages._centre_height(evaluate, base, dev.DevelopmentTargets(), 100, basic_of, make)
     target = setup["centre_v"]
     assert out is not None and len(evals) - n0 <= dev.HEIGHT_DESIGNS
     assert abs(float(out.metrics["pattern_centre_v"][0]) - target) <= 0.08

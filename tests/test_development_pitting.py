@@ -23,6 +23,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
+from contact.optimize import development_coast_flank as dcoast
 from contact.optimize import development_root as dr
 from contact.optimize.development_coast import CoastCheck, coast_capacity, coast_torque_step
 
@@ -142,10 +143,11 @@ def test_a_first_step_far_below_the_capacity_is_brought_back_up(monkeypatch):
 
 
 def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monkeypatch):
-    """:func:`contact.optimize.development._coast_at_its_torque`: no new search where the
-    coast design torque was not lowered or stayed above 0.9 of the torque the coast flank
-    was developed at; below it, a search at the new torques (the case's light torque, the
-    coast design torque), kept only where it scores better there than the first design."""
+    """:func:`contact.optimize.development_coast_flank.coast_at_its_torque`: no new search
+    where the coast design torque was not lowered or stayed above 0.9 of the torque the
+    coast flank was developed at; below it, a search at the new torques (the case's light
+    torque, the coast design torque), kept only where it scores better there than the first
+    design."""
     from contact.optimize import development as dev
     from contact.optimize.development_coast import CoastCapacity
     from contact.optimize.development_result import DevelopmentEvaluation
@@ -159,16 +161,16 @@ def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monke
 
     def search(pre, drive, targets, setup, *args):
         calls.append(tuple(setup["torques"]))
-        return dev._CoastOutcome("again", ev(1.5), [], "developed", None)
+        return dcoast._CoastOutcome("again", ev(1.5), [], "developed", None)
 
-    first = dev._CoastOutcome("first", ev(11.2), [], "developed", None)
+    first = dcoast._CoastOutcome("first", ev(11.2), [], "developed", None)
     targets = DevelopmentTargets()
     setup = {"torques": [43.9, 293.2]}
-    monkeypatch.setattr(dev, "_coast_development", search)
+    monkeypatch.setattr("contact.optimize.development_coast_flank.coast_development", search)
 
     def again(torque, start=292.9, developed_at=292.9, outcome=first):
         cap = CoastCapacity(torque, start, (), "", True)
-        return dev._coast_at_its_torque(None, None, targets, setup, None, {},
+        return dev.coast_at_its_torque(None, None, targets, setup, None, {},
                                         lambda line: None, None, outcome, cap, developed_at)
 
     assert again(292.9) is None and again(270.0) is None and calls == []

@@ -103,6 +103,11 @@ def test_the_correlations_by_hand():
     ({"pressure_viscosity_38": float("nan")}, "pressure_viscosity_38"),
     ({"fzg_load_stage": 20.0}, "fzg_load_stage"),
     ({"source": ""}, "source"),
+    ({"boundary_friction": 1.5}, "boundary_friction"),
+    ({"boundary_friction": {"temperature": [40.0], "value": [0.1], "source": "MTM"}},
+     "boundary_friction.temperature"),
+    ({"boundary_friction": {"temperature": [40.0, 100.0], "value": [0.1, 0.09]}},
+     "boundary_friction.source"),
 ])
 def test_bad_data_sheet_values_are_refused_naming_the_field(kw, field):
     base = {"name": "x", "kinematic_viscosity_40": 220.0, "kinematic_viscosity_100": 19.4,
@@ -133,6 +138,51 @@ def test_ltca_oil_writes_an_oil_file_every_command_reads(tmp_path):
                          text=True, cwd=REPO, check=False)
     assert bad.returncode == 2 and "-o" in bad.stderr
     assert not (tmp_path / "x.txt").exists()
+
+
+def test_a_measured_boundary_friction_table_goes_into_the_oil_file(tmp_path):
+    """μ_b measured at several temperatures (an MTM's Stribeck plateaus, say) given on the
+    data sheet becomes the oil file's ``[boundary_friction]`` table, which the efficiency
+    stage interpolates linearly at the inlet temperature (friction.lubricant, tested there):
+    here read back through ``ltca oil`` and ``load_lubricant`` at the measured points
+    exactly and half-way to 1e-12 (linear interpolation written out)."""
+    from contact.commands.oil import boundary_friction_argument
+    from friction.lubricant import boundary_friction_coefficient, boundary_friction_source
+
+    table = {"temperature": [40.0, 100.0], "value": [0.11, 0.09],
+             "source": "MTM, 30 N, 10 mm/s, SRR 50 %, AISI 52100 (a test's example)"}
+    assert boundary_friction_argument("40:0.11,100:0.09", table["source"]) == table
+    assert boundary_friction_argument("0.09", None) == 0.09
+    assert boundary_friction_argument(None, None) is None
+    for text, source, option in (("40:0.11,100", "s", "--boundary-friction"),
+                                 ("0.1x", None, "--boundary-friction"),
+                                 ("40:0.11,100:0.09", None, "--boundary-friction-source"),
+                                 ("0.09", "s", "--boundary-friction-source"),
+                                 (None, "s", "--boundary-friction-source")):
+        with pytest.raises(InputError, match=option):
+            boundary_friction_argument(text, source)
+    out = tmp_path / "vg220_mub.toml"
+    cmd = [sys.executable, "-m", "contact", "oil", "--name", "VG220_mub", "--nu40", "220",
+           "--nu100", "19.4", "--rho15", "890", "--base-oil", "mineral", "--source",
+           "a data sheet", "--boundary-friction", "40:0.11,100:0.09",
+           "--boundary-friction-source", table["source"], "-o", str(out)]
+    done = subprocess.run(cmd, capture_output=True, text=True, cwd=REPO, check=False)
+    assert done.returncode == 0, done.stderr
+    oil = load_lubricant(out)
+    mu = boundary_friction_coefficient(oil, [40.0, 70.0, 100.0])
+    np.testing.assert_allclose(mu, [0.11, 0.11 + (0.09 - 0.11) * 30.0 / 60.0, 0.09],
+                               rtol=1e-12)
+    assert table["source"] in boundary_friction_source(oil)
+    assert "against temperature" in oil.traction_source
+    # the same from the API, and one number stays one number
+    sheet = OilDataSheet(name="x", kinematic_viscosity_40=220.0, kinematic_viscosity_100=19.4,
+                         density_15=890.0, base_oil="mineral", source="sheet",
+                         boundary_friction=table)
+    assert lubricant_from_data_sheet(sheet).boundary_friction == oil.boundary_friction
+    one = OilDataSheet(name="x", kinematic_viscosity_40=220.0, kinematic_viscosity_100=19.4,
+                       density_15=890.0, base_oil="mineral", source="sheet",
+                       boundary_friction=0.09)
+    assert lubricant_from_data_sheet(one).boundary_friction == 0.09
 
 
 def _case_with_oil(directory: Path, oil: str) -> Path:

@@ -24,7 +24,11 @@ change that meets it fails here until the mark is removed (docs/friction.md, "Wh
 roughness cost grows with temperature"): the roughness cost at 90 °C (A 2.43 ×, B 2.63 ×
 ISO's) and B's VG 220 at 90 °C (−18.2 %). Both come from the asperities' share of the load
 at λ 0.13–0.25 (A, Rq 1.3 µm: 0.95 at 90 °C against 0.40 at 50 °C) carrying μ_b = 0.1
-(``benchmarks/friction_share_map.py``).
+(``benchmarks/friction_share_map.py``). Of the two assumptions, the share is the one a
+sourced relation contradicts: the load sharing turns boundary from λ ≈ 0.1–0.15 where Zhu &
+Wang's (2012) deterministic mixed-EHL range puts it below 0.01–0.05; no measured μ_b(T) of
+a gear oil was found to test the other (docs/friction.md, "What measurements say about
+μ_b(T) and the asperity share").
 
 The other rows of the "Done when" are tested elsewhere: the 75W90 rebuilt from ν40/ν100
 against Table 5.2 within 5 % (tests/test_oil_data_sheet.py), the VG 220 from its data sheet

@@ -43,9 +43,14 @@ def register(sub) -> None:
                    "(default: ISO/TR 15144-1's of the base stock)")
     p.add_argument("--fzg-stage", type=float, default=None,
                    help="FZG A/8.3/90 failure load stage (scuffing safety)")
-    p.add_argument("--boundary-friction", type=float, default=None, metavar="MU_B",
-                   help="boundary friction coefficient measured on the oil (default the "
-                   "assumed 0.1)")
+    p.add_argument("--boundary-friction", default=None, metavar="MU_B",
+                   help="boundary friction coefficient measured on the oil: one number, or "
+                   "values measured at several oil temperatures as DEGC:MU_B pairs by "
+                   "commas (e.g. 40:0.11,100:0.09; with --boundary-friction-source), "
+                   "interpolated linearly in temperature (default the assumed 0.1)")
+    p.add_argument("--boundary-friction-source", default=None, metavar="TEXT",
+                   help="where the measured boundary friction table comes from (rig, load, "
+                   "speed, slide-to-roll ratio, materials); required with DEGC:MU_B pairs")
     p.add_argument("--lambda-gfp", type=float, default=None,
                    help="permissible specific film thickness from the FVA 54 test "
                    "(micropitting safety)")
@@ -93,6 +98,61 @@ def list_oils() -> int:
     return 0
 
 
+def boundary_friction_argument(text: str | None, source: str | None):
+    """``--boundary-friction``'s value: None, one number, or a table mapping (temperature
+    [degC], value [1], source) from ``DEGC:MU_B`` pairs by commas.
+
+    Parameters
+    ----------
+    text : str or None
+        The option's text: ``"0.09"`` or ``"40:0.11,100:0.09"`` (temperatures in degC,
+        μ_b [1]); None when not given.
+    source : str or None
+        ``--boundary-friction-source``: where a table's values were measured.
+
+    Returns
+    -------
+    None, float [1] or dict
+        What :class:`friction.oil_data_sheet.OilDataSheet` takes as ``boundary_friction``
+        (its ranges are checked there: :class:`friction.lubricant.BoundaryFrictionTable`).
+
+    Raises
+    ------
+    InputError
+        A value that is neither a number nor such pairs, a table without
+        ``--boundary-friction-source``, a source without a table (naming the option).
+    """
+    from geometry.core.errors import InputError
+
+    if text is None:
+        if source is not None:
+            raise InputError("--boundary-friction-source: given without a table of "
+                             "--boundary-friction DEGC:MU_B pairs")
+        return None
+    if ":" not in text:
+        if source is not None:
+            raise InputError("--boundary-friction-source: goes with a table of DEGC:MU_B "
+                             f"pairs, got the single value {text!r}")
+        try:
+            return float(text)
+        except ValueError:
+            raise InputError(f"--boundary-friction: must be a number or DEGC:MU_B pairs by "
+                             f"commas (e.g. 40:0.11,100:0.09), got {text!r}") from None
+    try:
+        pairs = [tuple(float(x) for x in item.split(":")) for item in text.split(",")]
+    except ValueError:
+        pairs = [()]
+    if any(len(p) != 2 for p in pairs):
+        raise InputError(f"--boundary-friction: must be a number or DEGC:MU_B pairs by "
+                         f"commas (e.g. 40:0.11,100:0.09), got {text!r}")
+    if source is None:
+        raise InputError("--boundary-friction-source: required with a table of "
+                         "--boundary-friction DEGC:MU_B pairs (the rig, load, speed, "
+                         "slide-to-roll ratio and materials of the measurement)")
+    return {"temperature": [p[0] for p in pairs], "value": [p[1] for p in pairs],
+            "source": source}
+
+
 def run(args: argparse.Namespace) -> int:
     from tabulate import tabulate
 
@@ -120,7 +180,8 @@ def run(args: argparse.Namespace) -> int:
         name=args.name, kinematic_viscosity_40=args.nu40, kinematic_viscosity_100=args.nu100,
         density_15=args.rho15, base_oil=args.base_oil, source=args.source,
         pressure_viscosity_38=args.alpha38, fzg_load_stage=args.fzg_stage,
-        boundary_friction=args.boundary_friction,
+        boundary_friction=boundary_friction_argument(args.boundary_friction,
+                                                    args.boundary_friction_source),
         permissible_specific_film=args.lambda_gfp)
     oil = lubricant_from_data_sheet(sheet)  # validated as an oil file before it is written
     text = ("# Built by `ltca oil` from a data sheet (friction.oil_data_sheet); the source "
@@ -131,5 +192,9 @@ def run(args: argparse.Namespace) -> int:
              float(density(oil, t))) for t in TABLE_TEMPERATURES]
     print(tabulate(rows, headers=("T [degC]", "eta [mPa s]", "alpha [1/GPa]", "rho [kg/m3]"),
                    floatfmt=("g", ".2f", ".2f", ".1f")))
+    if sheet.boundary_friction is not None:
+        from friction.lubricant import boundary_friction_source
+
+        print(f"boundary friction: {boundary_friction_source(oil)}")
     print(f"wrote {args.output}")
     return 0

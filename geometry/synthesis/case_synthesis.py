@@ -241,10 +241,79 @@ def _cutter_table(blades: dict[str, Blade], blade_groups: int,
 SYNTHESIS_STEPS = 10
 
 
+#: the gear pitch angle [deg] below which a Formate (non-generated) gear has been measured
+#: not to synthesise at the standard addenda (docs/synthesis.md, "Limits": 20x20, 18x22,
+#: 16x24 at Σ 90° fail; 14x28 at 63.4°, 17x29 at Σ 100° (δ2 67°) synthesise); an error of a
+#: synthesis below it says so
+FORMATE_PITCH_ANGLE_LIMIT = 63.0
+
+
+def formate_limit_hint(basic: BasicDesign) -> str:
+    """Why a synthesis of a low-ratio pair may have no solution: its Formate gear.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+
+    Returns
+    -------
+    str
+        Empty where the gear pitch angle δ2 is at least :data:`FORMATE_PITCH_ANGLE_LIMIT`
+        (or the blank cannot be made); else a sentence naming δ2, the ratio and what to
+        change.
+
+    Notes
+    -----
+    A Formate gear's flank is its cutter's straight-sided blade copied without roll; the
+    pinion is generated to be conjugate to it. At a small gear pitch angle (a ratio near 1)
+    the deep part of such a working depth never meets the surface of action of the ideal
+    motion (``geometry.pair.design_point``: no roll at which n·v⁽¹²⁾ = 0 there), so the mean
+    point, the path of contact or the pinion's root line have no solution. Practice cuts
+    Formate gears at ratios above about 2.5 and generates both members below it; the
+    toolkit synthesises only the Formate gear / generated pinion pair
+    (:data:`geometry.synthesis.basic_design.PROCESSES`).
+    """
+    try:
+        pitch = basic.blank().pitch
+    except InputError:
+        return ""
+    delta2 = math.degrees(pitch.delta2)
+    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT:
+        return ""
+    d = basic.design
+    return (f"the gear is Formate (non-generated) and its pitch angle is delta2 = "
+            f"{delta2:.1f} deg (ratio z2/z1 = {d.z2 / d.z1:.2f}): below about "
+            f"{FORMATE_PITCH_ANGLE_LIMIT:g} deg the Formate gear's deep working depth does not "
+            "meet the surface of action, and a generated gear (gear_process 'Generate', not "
+            "implemented) is what such a pair needs; a higher ratio, a larger shaft angle or a "
+            "smaller c_ham (the gear's addendum share) moves it within reach "
+            "(docs/synthesis.md, 'Limits')")
+
+
 def synthesize(basic: BasicDesign, *, conjugate: bool = False,
                progress: Callable[[str], None] | None = None,
                memo: dict | None = None,
                tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
+    """Complete face-milled case from basic design data (ISO 23509 blank + local synthesis).
+
+    Parameters and returns: :func:`_synthesize`, which this calls. A step without a
+    solution raises its :class:`InputError`; where the pair's gear pitch angle is below
+    :data:`FORMATE_PITCH_ANGLE_LIMIT` the message adds why (:func:`formate_limit_hint`).
+    """
+    try:
+        return _synthesize(basic, conjugate=conjugate, progress=progress, memo=memo,
+                           tip_planes=tip_planes)
+    except InputError as err:
+        hint = formate_limit_hint(basic)
+        if not hint or hint in str(err):
+            raise
+        raise InputError(f"{err}; {hint}") from err
+
+
+def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
+                progress: Callable[[str], None] | None = None,
+                memo: dict | None = None,
+                tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
     """Complete face-milled case from basic design data (ISO 23509 blank + local synthesis).
 
     Parameters

@@ -1,0 +1,330 @@
+"""The coast flank's development: its check as synthesised, its own search where it misses
+a target, and its analysis at its own design torque.
+
+:func:`coast_development` checks the chosen drive design's coast flank at
+:data:`CHECK_LTCA` and, where it misses a target, runs the drive flank's stages and check
+on the coast flank's own prescriptions (:data:`COAST_BEARING_DESIGNS` bearings, budget
+``coast_max_evaluations``). :func:`coast_rated_torque` is the coast side's rated torque;
+:func:`_coast_check` analyses the written case's coast flank as ``ltca run --flank
+coast`` does (:func:`_as_run`) and :func:`coast_flank_capacity` lowers its design torque to
+what it carries (:func:`contact.optimize.development_coast.coast_capacity`);
+:func:`coast_at_its_torque` develops it again where that fell below
+:data:`COAST_REDEVELOP` of the torque it was developed at. Split out of
+:mod:`contact.optimize.development` (issue 71), which re-exports every public
+name.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+import time
+from collections.abc import Callable
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from contact.optimize import development_evaluate as evaluation
+from contact.optimize.development_check import checked_best
+from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
+from contact.optimize.development_evaluate import (
+    CHECK_LTCA,
+    KeptTeeth,
+    bearing_key,
+    design_metrics,
+    evaluator,
+    grid_bounds,
+    static_strength,
+)
+from contact.optimize.development_result import (
+    DevelopmentEvaluation,
+    metrics_text,
+)
+from contact.optimize.development_stages import search_flank
+from contact.optimize.development_targets import (
+    DevelopmentTargets,
+    development_score,
+)
+from geometry.case import Case
+from geometry.synthesis.basic_design import (
+    BasicDesign,
+    flank_option_values,
+    with_flank_options,
+)
+
+#: the development's one logger, whichever of its modules logs
+log = logging.getLogger("contact.optimize.development")
+
+
+#: most bearings of the coast flank's search (each a synthesis, ≈ 2 s CPU face milled, 4 s
+#: face hobbed): the initial simplex of the path angle and the ellipse. On four designs of
+#: docs/own_gear_set.md (hypoids 12x41, 10x43, 9x37 face milled, 11x43 face hobbed) 6
+#: bearings of 12 designs chose the same coast design as 3 of 10 or of 8, for 40-50 % more
+#: CPU (18.7 against 12.3 s on the 12x41, 28.7 against 20.3 s on the 11x43): the coast
+#: flank's shortfalls are its edges, which its relief answers
+COAST_BEARING_DESIGNS = 3
+
+
+def coast_rated_torque(case: Case | None, basic: BasicDesign, design: float) -> float:
+    """The torque [N·m] the coast side is rated for at long life: the basic file's
+    ``[rating] coast_design_torque``, else the coast side's ISO 10300 capacity where it is
+    below ``design`` (:func:`contact.load_capacity.iso10300.capacity.
+    with_coast_design_torque`), else ``design``."""
+    from contact.load_capacity.iso10300.capacity import (
+        with_coast_design_torque,
+        with_design_torque,
+    )
+
+    given = basic.rating.get("coast_design_torque")
+    if given is not None:
+        return float(given)
+    if case is None:
+        return design
+    try:
+        value = with_coast_design_torque(with_design_torque(case, design)[0])[1]
+    except Exception as exc:  # reported, never fatal: the design torque rates both sides
+        log.info("coast side's ISO capacity not computed: %s", exc)
+        return design
+    return float(value) if math.isfinite(value) and value < design else design
+
+
+def _as_run(case: Case, basic: BasicDesign, setup: dict[str, Any], coast: float) -> Case:
+    """``case`` as ``ltca synthesize`` writes it for the torques in ``setup``: its
+    ``[operating]`` torques the light and the design torque (to 0.1 N·m, rounded down,
+    :meth:`DevelopmentResult.recorded`) where the basic file gives none, ``[rating]
+    design_torque`` the design torque and ``coast_design_torque`` ``coast`` where it is
+    below it — the case whose ``ltca run --flank coast`` runs at
+    :func:`contact.pipeline.flank_torques`."""
+    import json
+    from types import MappingProxyType
+
+    design = float(setup["torques"][1])
+    rating = dict(case.extra.get("rating") or {}) | {"design_torque": design}
+    rating.pop("coast_design_torque", None)
+    if coast < design:
+        rating["coast_design_torque"] = float(coast)
+    more: dict[str, Any] = {}
+    if "torque" not in basic.operating:
+        more["operating"] = dataclasses.replace(
+            case.operating, torque=tuple(math.floor(10.0 * float(t)) / 10.0
+                                         for t in setup["torques"]))
+    extra = json.loads(json.dumps({**case.extra, "rating": rating}))
+    return dataclasses.replace(case, extra=MappingProxyType(extra), **more)
+
+
+def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: float,
+                 root_stress: bool, plastic_limit: float = 0.0) -> CoastCheck:
+    """The coast flank of the written ``case`` analysed as ``ltca run --flank coast``
+    analyses it with the coast design torque ``torque`` (:func:`_as_run`,
+    :func:`contact.pipeline.flank_torques`; :data:`CHECK_LTCA`, the FE root stress where
+    ``root_stress`` and the ISO 10300 rating of the coast side); ``plastic_limit``: the
+    plastic share allowed [1] (the development's ``max_plastic_share``)."""
+    from contact.chain import AnalysisChain
+    from contact.optimize.development_root import pitting_safety, root_safety
+    from contact.pipeline import flank_torques, run_analysis
+
+    c = _as_run(case, basic, setup, torque)
+    torques = list(flank_torques(c, "coast")[0])
+    steps = AnalysisChain.contact_only()
+    if root_stress:
+        steps = steps.with_root_stress().with_efficiency().with_load_capacity()
+    tree = run_analysis(c, torques, flank="coast", options=CHECK_LTCA, deviations=False,
+                        steps=steps)
+    ms = design_metrics(tree, c)
+    lt = tree["/ltca"]
+    k = int(np.argmax(lt["torque"].values))
+    safety, s_min, member = np.full(len(torques), np.nan), math.nan, ""
+    pit, s_h_min, pit_member = np.full(len(torques), np.nan), math.nan, ""
+    if root_stress:
+        try:
+            safety, s_min, member = root_safety(tree)
+        except LookupError as exc:  # the verdict says it; the contact criteria stand
+            log.info("development coast root stress not checked: %s", exc)
+        try:  # the local pitting safety at long life (development_root.pitting_safety)
+            pit, s_h_min, pit_member = pitting_safety(tree)
+        except LookupError as exc:
+            log.info("development coast pitting safety not checked: %s", exc)
+    grid = (*grid_bounds(tree), static_strength(tree))
+    return CoastCheck(float(torques[k]), float(ms["pressure_max_flank"][k]),
+                      float(grid[4]), float(np.max(ms["plastic_share"])),
+                      float(safety[k]), float(s_min), member,
+                      float(safety[1 - k]) if len(torques) == 2 else math.nan,
+                      float(torques[1 - k]) if len(torques) == 2 else math.nan,
+                      (ms, grid, tuple(float(t) for t in torques)), plastic_limit,
+                      float(pit[k]), s_h_min, pit_member,
+                      float(pit[1 - k]) if len(torques) == 2 else math.nan)
+
+
+def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
+                         targets: DevelopmentTargets, setup: dict[str, Any], start: float,
+                         root_stress: bool, lower: bool, say: Callable[[str], None]
+                         ) -> tuple[_CoastOutcome, CoastCapacity | None]:
+    """The written case's coast flank at its own design torque ``start`` (the smaller of
+    the design torque and the coast side's rated torque), as ``ltca run --flank coast``
+    analyses it (:func:`_coast_check`), and — where ``lower`` (no design torque given in
+    the basic file) — the coast design torque lowered to what the developed bearing
+    carries (:func:`contact.optimize.development_coast.coast_capacity`: flank peak within
+    the static strength, no plastic segment, S_F,FE >= S_Fmin). The coast outcome's
+    metrics and torques become those of the last check at the torque kept."""
+    def analyse(torque: float) -> CoastCheck:
+        return _coast_check(case, basic, setup, torque, root_stress,
+                            targets.max_plastic_share)
+
+    try:
+        if lower:
+            cap = coast_capacity(analyse, start, say)
+            check = cap.final
+        else:
+            cap, check = None, analyse(start)
+    except Exception as exc:  # reported, never fatal: the coast search's metrics stay
+        log.info("development coast capacity not checked: %s", exc)
+        say(f"development: coast flank not checked at its design torque ({exc})")
+        return coast, None
+    if check is None or check.result is None:
+        return coast, cap
+    mc, gc, torques = check.result
+    fc = development_score(mc, targets, gc[:4], centre_v=setup["centre_v"],
+                           pressure_limit=gc[4])
+    best = dataclasses.replace(coast.best, metrics=mc, objective=fc[0], shortfalls=fc[1],
+                               met=fc[2], full=fc)
+    return coast._replace(best=best, torques=torques), cap
+
+
+class _CoastOutcome(NamedTuple):
+    """What :func:`coast_development` did: the basic design with the chosen coast
+    prescriptions, the chosen coast design (None where its analysis failed), the designs
+    of its search, its status (:data:`COAST_STATUS`) and the coast flank's metrics as
+    synthesised where the search ran (else None), and the (light, design) torques [N·m]
+    of its metrics (its own design torque: :func:`coast_flank_capacity`)."""
+
+    basic: BasicDesign
+    best: DevelopmentEvaluation | None
+    evaluations: list[DevelopmentEvaluation]
+    status: str
+    before: dict[str, np.ndarray] | None
+    torques: tuple[float, ...] = ()
+
+
+def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
+                      targets: DevelopmentTargets, setup: dict[str, Any],
+                      teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                      make: Callable[[BasicDesign], Case]) -> _CoastOutcome:
+    """The coast flank of :func:`develop`, after the drive flank ``drive`` is chosen
+    (``developed`` carries its prescriptions): analysed as synthesised at
+    :data:`CHECK_LTCA` at the same light and design torque; where it misses a target and
+    ``targets.coast_max_evaluations`` > 0, the two stages of the drive flank's search
+    (:func:`search_flank`) on the coast flank's own prescriptions with that budget, the best
+    checked at :data:`CHECK_LTCA` (:func:`checked_best`) and chosen where it scores
+    better than the flank as synthesised. The drive flank is the same in every design
+    (the synthesis places the coast flank against it, never the reverse), so its result
+    stands; the coast designs' pinion teeth are kept under the drive's bearing and the
+    coast's (:class:`KeptTeeth`). ``make``: the coarse search's synthesis (no tip
+    planes); the designs checked are synthesised as written (with the memo), so the
+    chosen one is the case written, bit for bit."""
+    from geometry.synthesis.case_synthesis import synthesize
+
+    side = "convex" if developed.options.drive_flank == "concave" else "concave"
+    start = flank_option_values(developed.options.flank(side))
+    drive_key = bearing_key(drive.values)
+    torques = tuple(setup["torques"])  # the coast side's own light and design torque
+    c0 = time.process_time()
+    try:  # the flank as synthesised (its pinion tooth is the drive bearing's: the same)
+        case0 = drive.case if drive.checked else synthesize(developed, memo=memo)[0]
+        m0, grid = evaluation.analyse_design(case0, setup["torques"], options=CHECK_LTCA,
+                                             teeth=teeth, pinion_key=drive_key, flank="coast")
+        full = development_score(m0, targets, grid[:4], centre_v=setup["centre_v"],
+                                 pressure_limit=grid[4])
+    except Exception as exc:  # reported, never fatal
+        log.info("development coast check failed: %s", exc)
+        say(f"development: coast flank {side}: not checked (its analysis failed: "
+            f"{type(exc).__name__})")
+        return _CoastOutcome(developed, None, [], "not checked", None, torques)
+    synthesised = DevelopmentEvaluation(-1, {k: start[k] for k in targets.variables}, m0,
+                                        full[0], full[1], full[2], "",
+                                        time.process_time() - c0, case0, full, checked=True,
+                                        stage="synthesised")
+    missed = [k for k, v in full[1].items() if v > 0]
+    head = (f"development: coast flank {side} as synthesised, at the default sampling: "
+            f"{metrics_text(m0)}; ")
+    if full[2]:
+        say(head + "every target met: not developed")
+        return _CoastOutcome(developed, synthesised, [], "met", None, torques)
+    n_max = targets.coast_max_evaluations
+    if n_max == 0:
+        say(head + f"misses {', '.join(missed)}; coast development off "
+            "(coast_max_evaluations = 0)")
+        return _CoastOutcome(developed, synthesised, [], "off", None, torques)
+    say(head + f"misses {', '.join(missed)}; developing it at {torques[0]:.4g}/"
+        f"{torques[1]:.4g} N m (light/design) on the same targets: varying "
+        f"{', '.join(targets.variables)} (at most {n_max} designs, coarse LTCA)")
+    evals: list[DevelopmentEvaluation] = []
+    prefix = (*drive_key, "coast")
+    evaluate = evaluator(developed, targets, setup, teeth, say, evals, "coast", n_max,
+                         key_prefix=prefix)
+
+    def basic_of(values: dict[str, float]) -> BasicDesign:
+        return with_flank_options(developed, side, values)
+
+    chosen = synthesised
+    if search_flank(evaluate, evals, basic_of, make, targets, start, developed, n_max,
+                    COAST_BEARING_DESIGNS):
+        best = checked_best(evals, targets, setup, teeth, say,
+                            lambda values: synthesize(basic_of(values), memo=memo)[0],
+                            side="coast", key_prefix=prefix, n_max=n_max,
+                            slopes=evaluate.slopes)
+        as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
+        if (best.checked and not as_synthesised
+                and (not best.full[2], best.full[0]) < (not full[2], full[0])):
+            chosen = best
+    if chosen is synthesised:
+        say(f"development: coast flank {side}: no design of its search did better than "
+            "as synthesised; kept")
+        return _CoastOutcome(developed, synthesised, evals, "not improved", m0, torques)
+    return _CoastOutcome(basic_of(chosen.values), chosen, evals, "developed", m0, torques)
+
+
+#: the coast design torque, as a fraction of the torque the coast flank was developed at,
+#: below which :func:`coast_at_its_torque` develops it again at its own design torque [1]
+COAST_REDEVELOP = 0.9
+
+
+def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
+                        targets: DevelopmentTargets, setup: dict[str, Any],
+                        teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                        make: Callable[[BasicDesign], Case], coast: _CoastOutcome,
+                        cap: CoastCapacity | None, developed_at: float
+                        ) -> _CoastOutcome | None:
+    """The coast flank developed again where its design torque was lowered well below the
+    torque it was developed at (below :data:`COAST_REDEVELOP` × ``developed_at``: its own
+    static, plastic, root-stress or local pitting capacity, :func:`coast_flank_capacity`), now at
+    the torques ``ltca run --flank coast`` analyses (the case's light torque and the new
+    coast design torque): :func:`coast_development` from the coast flank as synthesised
+    (``pre_coast``, the developed drive flank with the basic file's coast prescriptions),
+    with the budget ``coast_max_evaluations``. Returns its outcome where its chosen design
+    scores better at those torques than the design chosen first does there (``coast``,
+    whose metrics :func:`coast_flank_capacity` measured at them), else None.
+
+    Why: the relief that keeps a coast bearing elastic at a torque its flank cannot carry
+    costs LTE at the torque it can (issue 71, the e-axle 11×39 at Σ 80°: developed at
+    292.9 N·m with 30 µm tip relief and a −0.3° blade-angle change, its coast LTE p-p was
+    72 µrad at its root-stress capacity 143.8 N·m)."""
+    if (cap is None or not cap.lowered or coast.best is None
+            or cap.torque >= COAST_REDEVELOP * developed_at
+            or targets.coast_max_evaluations == 0):
+        return None
+    say(f"development: coast flank developed again at its own design torque "
+        f"{cap.torque:.4g} N m (it was developed at {developed_at:.4g} N m)")
+    redo_setup = dict(setup, torques=[setup["torques"][0], cap.torque])
+    again = coast_development(pre_coast, drive, targets, redo_setup, teeth, memo, say, make)
+    old, new = coast.best, again.best
+    if new is None or old.full is None or new.full is None:
+        return None
+    if (not new.full[2], new.full[0]) < (not old.full[2], old.full[0]):
+        say(f"development: coast flank at {cap.torque:.4g} N m: the design developed there "
+            f"(objective {new.full[0]:.3g}) kept, not the first ({old.full[0]:.3g})")
+        return again
+    say(f"development: coast flank at {cap.torque:.4g} N m: the first design kept "
+        f"(objective {old.full[0]:.3g}; developed there {new.full[0]:.3g})")
+    return None
+

@@ -1,0 +1,320 @@
+"""One design of the development analysed and scored: the coarse LTCA of a synthesised
+case at the light and the design torque, its metrics, and the search's objective.
+
+:func:`analyse_design` runs the contact-only analysis (:func:`contact.pipeline.run_analysis`)
+of a design's flank, at :data:`COARSE_LTCA` inside the search or :data:`CHECK_LTCA` at the
+check, with the shell teeth kept across designs (:class:`KeptTeeth`), and summarises it
+(:func:`design_metrics`: :func:`contact.study.summary.point_summary`, the footprint centre,
+the plastic share, :func:`lte_spread`; the grid and :func:`static_strength`).
+:func:`evaluator` makes the objective of one side's search from it: each design
+synthesised, analysed, scored (:func:`development_score`), recorded and printed, the
+stage ended by :class:`StageStop`. :func:`design_torque_of` is the torque the bearing is
+checked at. Split out of :mod:`contact.optimize.development` (issue 71), which
+re-exports every public name.
+
+The analysis seam: the other modules of the development call :func:`analyse_design` through
+this module (``development_evaluate.analyse_design``), so that one ``monkeypatch.setattr`` on
+this module replaces the analysis of the search, the check and the coast flank alike.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import logging
+import math
+import time
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+
+from contact.ltca import LTCAOptions
+from contact.optimize.development_result import (
+    DevelopmentEvaluation,
+    metrics_text,
+)
+from contact.optimize.development_targets import (
+    CROWNING_NAME,
+    FAILED,
+    HEIGHT_NAME,
+    METRIC_NAMES,
+    RELIEF_NAMES,
+    DevelopmentTargets,
+    development_score,
+    footprint_centre,
+    working_depth_centre,
+)
+from geometry.case import Case
+from geometry.pair.assembly import Misalignment
+from geometry.synthesis.basic_design import BasicDesign
+
+#: the development's one logger, whichever of its modules logs
+log = logging.getLogger("contact.optimize.development")
+
+
+#: LTCA settings inside the loop: one mesh cycle, 8 roll positions, 12 segments per curve
+#: (the default analysis has 2 × 20 and 24); shell compliance, no root stress. On the
+#: passenger-car hypoid of tests/data the pattern ends move by at most one grid node and
+#: the LTE by a few µrad against the default sampling — enough to rank designs; the
+#: developed design is reported with the default sampling by ``ltca run``.
+COARSE_LTCA = LTCAOptions(cycles=1, rolls_per_cycle=8, segments=12)
+
+
+#: LTCA settings of the final check: ``ltca run``'s defaults (2 mesh cycles, 20 roll
+#: positions each, 24 segments per curve, shell compliance)
+CHECK_LTCA = LTCAOptions()
+
+
+def design_torque_of(basic: BasicDesign, case: Case) -> tuple[float, str]:
+    """The pinion torque [N·m] the development checks the bearing at, and where it is from.
+
+    ``[synthesis] design_torque`` of the basic file if given, else the synthesised case's
+    ``[rating] design_torque``, else the ISO 10300 capacity of the case (the torque at
+    which the long-life safety reaches S_H,min or S_F,min;
+    :func:`contact.load_capacity.iso10300.capacity.with_design_torque`); where the rating
+    cannot give one,
+    the largest torque of the case's ``[operating]`` table.
+    """
+    from contact.load_capacity.iso10300.capacity import with_design_torque
+
+    _, torque, why = with_design_torque(case, basic.options.design_torque)
+    if math.isfinite(torque) and torque > 0:
+        return float(torque), why
+    log.info("design torque from the rating unavailable (%s)", why)
+    return float(max(case.operating.torque)), f"largest [operating] torque ({why})"
+
+
+def static_strength(tree) -> float:
+    """The static strength σ_Hlim·Z_NT,static [MPa] of the weaker member's material of an
+    analysis (its ``/ltca`` attributes ``material_pinion``, ``material_gear``) at the
+    verdict's grade (:data:`contact.study.verdicts.GRADE`, ISO 6336-5; the S–N curve's
+    life factor at its static end, ISO 6336-2); inf where the tree names no material."""
+    from contact.load_capacity.durability import sn_curves
+    from contact.study.verdicts import GRADE
+
+    a = tree["/ltca"].attrs
+    names = sorted({a.get("material_pinion"), a.get("material_gear")} - {None})
+    if not names:
+        return math.inf
+    curves = [sn_curves(str(n), GRADE)["contact"] for n in names]
+    return float(min(c.allowable * c.static_life_factor for c in curves))
+
+
+def design_metrics(tree, case: Case) -> dict[str, np.ndarray]:
+    """The development's metrics of one analysis (``tree``, its ``/ltca`` group) of
+    ``case``, per torque (arrays of shape (n_torques,)): those of
+    :func:`contact.study.summary.point_summary` named in :data:`METRIC_NAMES`, the
+    footprint centre ``pattern_centre_u``/``pattern_centre_v`` [1 of the face width /
+    working depth] (:func:`footprint_centre`), ``plastic_share`` [1] (the largest segment's)
+    and ``lte_spread`` [1] (:func:`lte_spread`)."""
+    from contact.study.summary import point_summary
+
+    s = point_summary(tree, case)
+    out = {k: np.asarray(s[k], float) for k in METRIC_NAMES if k in s}
+    lt = tree["/ltca"]
+    # the centre of the footprint, not of the pressure (footprint_centre's notes)
+    env = lt["pressure_envelope"].transpose("torque", "u", "v")
+    out["pattern_centre_u"], out["pattern_centre_v"] = footprint_centre(
+        env.values, lt["u"].values, lt["v"].values)
+    share = (np.nan_to_num(lt["plastic_load_share"].values, nan=0.0)
+             if "plastic_load_share" in lt else np.zeros((len(out["lte_peak_to_peak"]), 1)))
+    out["plastic_share"] = share.max(axis=1)
+    out["lte_spread"] = lte_spread(lt.to_dataset())
+    return out
+
+
+def lte_spread(ltca) -> np.ndarray:
+    """The LTE spread of an ``/ltca`` dataset per torque [1]: LTE peak-to-peak over its
+    mean where the mean exceeds the unloaded TE's peak-to-peak, else 0 — the quantity the
+    verdict's plausibility check compares with
+    :data:`contact.ltca.plausibility.LTE_SPREAD_LIMIT` (its module docstring: seed
+    Table 3.1 gives 0.04–0.12 for a mesh that carries its load on the flanks)."""
+    pp = np.asarray(ltca["lte_peak_to_peak"].values, float)
+    mean = np.asarray(ltca["lte_mean"].values, float)
+    ute = np.asarray(ltca["unloaded_transmission_error"].values, float)
+    ute_pp = float(np.nanmax(ute) - np.nanmin(ute)) if np.any(np.isfinite(ute)) else 0.0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(mean > ute_pp, pp / mean, 0.0)
+
+
+def grid_bounds(tree) -> tuple[float, float, float, float]:
+    """The ends of an analysis' contact grid: (u first, u last, v first, v last) [1], the
+    face and the working depth the pattern is judged on (:func:`development_score`)."""
+    lt = tree["/ltca"]
+    u, v = lt["u"].values, lt["v"].values
+    return float(u[0]), float(u[-1]), float(v[0]), float(v[-1])
+
+
+class KeptTeeth:
+    """The shell tooth models (seed Eq. 3.1–3.11) of a development's designs, each built
+    once: the LTCA's ``"shell"`` compliance with the teeth kept across designs.
+
+    Every design of a development has the same gear (the Formate gear of the basic
+    design's blank; the development varies only the pinion's flanks), so the gear's
+    tooth is measured and its shell factorised once, keyed by the case's pair and gear
+    data. The pinion's tooth is keyed by the caller's ``pinion_key``: the development
+    gives the bearing-stage prescriptions (the coast flank's search: the drive's and the
+    coast's), so the designs of the relief stage (the same
+    flanks but for the blade's toprem and flankrem, ≤ 60 µm of normal ease-off at the
+    flank's ends) share the tooth of their bearing design. The shell's thickness and
+    height are least-squares fits over the whole tooth (a linear thickness from toe to
+    heel and root to tip, :func:`contact.compliance.tooth.shell_tooth_from_case`), which
+    such a relief moves by far less than the fit's own residual; the developed design is
+    analysed with its own teeth by ``ltca run``.
+    """
+
+    def __init__(self) -> None:
+        self._teeth: dict[tuple, Any] = {}
+        self.built = 0
+
+    def _tooth(self, case: Case, member: str, key: tuple, options: LTCAOptions):
+        from contact.compliance.tooth import shell_tooth_from_case
+
+        full = (member, key, options.theory, options.n_height, options.n_face,
+                options.youngs_modulus, options.poisson_ratio)
+        tooth = self._teeth.get(full)
+        if tooth is None:
+            tooth = shell_tooth_from_case(case, member, youngs_modulus=options.youngs_modulus,
+                                          poisson_ratio=options.poisson_ratio)
+            tooth.shell_model(options.theory, options.n_height, options.n_face)
+            self._teeth[full] = tooth
+            self.built += 1
+        return tooth
+
+    def compliance(self, pinion_key: tuple):
+        """The ``"shell"`` compliance model (:mod:`contact.ltca.compliance_models`) with
+        the pinion tooth kept under ``pinion_key`` and the gear tooth of the case's gear."""
+        from contact.ltca.compliance_models import ComplianceModel
+
+        def prepare(case: Case, easeoff: Any, options: LTCAOptions):
+            from contact.compliance.mesh import PairComplianceModel, mesh_compliance_many
+
+            t0 = time.perf_counter()
+            model = PairComplianceModel(
+                pinion=self._tooth(case, "pinion", ("pinion", repr(case.pair), *pinion_key),
+                                   options),
+                gear=self._tooth(case, "gear", ("gear", repr(case.pair), repr(case.gear)),
+                                 options),
+                theory=options.theory, n_height=options.n_height, n_face=options.n_face,
+                build_time=time.perf_counter() - t0)
+            return functools.partial(mesh_compliance_many, case, model=model)
+
+        return ComplianceModel("shell", prepare, "the shell model, teeth kept across the "
+                               "designs of a development (contact.optimize.development)")
+
+
+def analyse_design(case: Case, torques: list[float], misalignment: Misalignment | None = None,
+                   options: LTCAOptions = COARSE_LTCA, teeth: KeptTeeth | None = None,
+                   pinion_key: tuple = (), flank: str = "drive"):
+    """One design's ``flank`` (``"drive"`` or ``"coast"``) analysed at ``torques`` [N·m]
+    (contact only, no deviations: :func:`contact.pipeline.run_analysis`), at
+    ``misalignment`` if given, with ``options`` (default :data:`COARSE_LTCA`) and, where
+    ``teeth`` is given, the shell teeth it keeps (the pinion's under ``pinion_key``).
+    Returns the metrics (:func:`design_metrics`) and (u first, u last, v first, v last,
+    static strength [MPa]) (:func:`grid_bounds`, :func:`static_strength`). The analysis
+    seam (module docstring); its errors propagate."""
+    from contact.chain import AnalysisChain
+    from contact.pipeline import run_analysis
+
+    c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
+    if teeth is not None:
+        options = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
+    tree = run_analysis(c, torques, flank=flank, options=options, deviations=False,
+                        steps=AnalysisChain.contact_only())
+    return design_metrics(tree, c), (*grid_bounds(tree), static_strength(tree))
+
+
+class StageStop(Exception):
+    """Raised inside the objective when a design meets every target of its stage or the
+    stage's budget is spent."""
+
+
+def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, Any],
+              teeth: KeptTeeth, say: Callable[[str], None],
+              evals: list[DevelopmentEvaluation], side: str, n_max: int,
+              key_prefix: tuple = ()) -> Callable[..., DevelopmentEvaluation]:
+    """The objective of one side's search (:func:`develop`): ``evaluate(values, stage,
+    make, budget, pinion_key)`` synthesises a design (``make()``), analyses its ``side``
+    flank (``"drive"`` or ``"coast"``) by :data:`COARSE_LTCA` at the light and the design
+    torque, appends it to ``evals``, prints its line and raises :class:`StageStop` where it
+    meets every target of ``stage`` or the stage's ``budget`` is spent. The first design
+    of the drive flank fixes ``setup`` (torques, the depth centre aimed at). The pinion
+    tooth is kept under ``key_prefix + pinion_key`` (:class:`KeptTeeth`)."""
+    seen: dict[tuple, DevelopmentEvaluation] = {}
+    label = "" if side == "drive" else f"{side} "
+
+    def evaluate(values: dict[str, float], stage: str, make: Callable[[], Case],
+                 budget: int, pinion_key: tuple) -> DevelopmentEvaluation:
+        key = (stage, *(round(v, 9) for v in values.values()))
+        if key in seen:  # a design analysed before (the simplex returns to its start)
+            if seen[key].met:
+                raise StageStop
+            return seen[key]
+        if len(evals) >= budget:
+            raise StageStop
+        c0 = time.process_time()
+        case = None
+        try:
+            case = make()
+            if not setup:
+                torque, source = design_torque_of(basic, case)
+                setup.update(torques=[targets.light_load * torque, torque], source=source,
+                             lowered=False,
+                             centre_v=working_depth_centre(case))
+                say(f"development: drive flank {basic.options.drive_flank}, light "
+                    f"{setup['torques'][0]:.4g} N m, design {torque:.4g} N m ({source}); "
+                    f"varying {', '.join(targets.variables)} (at most "
+                    f"{targets.max_evaluations} designs, coarse LTCA)")
+            metrics, grid = analyse_design(case, setup["torques"], teeth=teeth,
+                                           pinion_key=(*key_prefix, *pinion_key), flank=side)
+            setup["pressure_limit"] = grid[4]
+            obj, short, met = development_score(metrics, targets, grid[:4],
+                                                centre_v=setup["centre_v"], stage=stage,
+                                                pressure_limit=grid[4])
+            reason = ""
+        except Exception as exc:  # one failing design never ends the development
+            log.info("development %sdesign %s failed: %s", label, values, exc)
+            metrics = {k: np.full(2, np.nan) for k in METRIC_NAMES}
+            obj, short, met, grid = FAILED, {}, False, None
+            reason = f"{type(exc).__name__}: {exc}".splitlines()[0]
+        e = DevelopmentEvaluation(len(evals), dict(values), metrics, obj, short, met, reason,
+                                  time.process_time() - c0, case, stage=stage)
+        if grid is not None:  # the full score too: designs of both stages are compared
+            full = development_score(metrics, targets, grid[:4], centre_v=setup["centre_v"],
+                                     pressure_limit=grid[4])
+            e = dataclasses.replace(e, full=full)
+        evals.append(e)
+        seen[key] = e
+        if stage in ("bearing", "height") and grid is not None:  # the relief starts here
+            seen[("relief", *key[1:])] = dataclasses.replace(e, objective=e.full[0],
+                                                             shortfalls=e.full[1],
+                                                             met=e.full[2])
+        say(evaluation_line(e, n_max, label + stage))
+        if met:
+            raise StageStop
+        return e
+
+    evaluate.evals = evals  # type: ignore[attr-defined]  (read by _centre_height)
+    evaluate.setup = setup  # type: ignore[attr-defined]
+    evaluate.slopes = {}  # type: ignore[attr-defined]  (per bearing, _note_slope)
+    return evaluate
+
+
+def bearing_key(values: Mapping[str, float]) -> tuple:
+    """The prescriptions of a design that shape its pinion tooth (all but the relief):
+    :class:`KeptTeeth`'s key."""
+    return tuple(sorted((k, v) for k, v in values.items()
+                        if k not in (*RELIEF_NAMES, HEIGHT_NAME, CROWNING_NAME)))
+
+
+def evaluation_line(e: DevelopmentEvaluation, n: int, stage: str = "relief") -> str:
+    """The progress line of design ``e`` of at most ``n`` at ``stage``: its values, then
+    its metrics and objective (or why it failed) and its CPU seconds."""
+    vals = ", ".join(f"{k} {v:.3g}" for k, v in e.values.items())
+    if e.reason:
+        return f"  {stage} design {e.index + 1}/{n}: {vals}: failed ({e.reason})"
+    return (f"  {stage} design {e.index + 1}/{n}: {vals}: {metrics_text(e.metrics)}; "
+            f"objective {e.objective:.3g}{' (all targets met)' if e.met else ''} "
+            f"[{e.seconds:.0f} s]")
+
