@@ -5,8 +5,7 @@ tolerance.
 
 :func:`checked_best` checks the best designs in turn until one meets every target (one
 Newton step of the blade angle where it misses the centre v); :func:`check_steps` then
-gives the chosen design a failing LTE spread's blade angle taken back
-(:func:`_checked_spread`), the TE stage again (:func:`_checked_te`), its path turned towards
+gives the chosen design the TE stage again (:func:`_checked_te`), its path turned towards
 the profile (:func:`_checked_path`, :data:`PATH_STEPS`) and a shorter tip relief
 (:func:`_checked_tip`), each kept where it scores better and stays tolerant
 (:func:`_tolerant_variant`); :func:`steps_on_each` gives them to the other checked designs
@@ -156,57 +155,18 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
                 placed: Callable[[Mapping[str, float]], Case], level: float
                 ) -> DevelopmentEvaluation:
     """The check's steps on the chosen design at the development's torques
-    (``setup["torques"]``): a failing LTE spread's blade angle taken back
-    (:func:`_checked_spread`), the TE stage again (:func:`_checked_te`), then the path
-    turned towards the profile (:func:`_checked_path`); each only where the design misses
-    its spread, LTE or length there. Run again where the design torque was lowered after them (to the
+    (``setup["torques"]``): the TE stage again (:func:`_checked_te`), then the path turned
+    towards the profile (:func:`_checked_path`); each only where the design misses its LTE
+    or length there. Run again where the design torque was lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
     torque falls (the face-hobbed hypoid 11x43 of tests/data/designs: every target met
     at its ISO capacity 474.2 N m, LTE 43 / 42 µrad at 420.2 N m after the root-stress
     cap, docs/own_gear_set.md). Returns the better design (``best`` itself where no step
     scored better)."""
-    best = _checked_spread(best, targets, setup, teeth, say, placed)
     best = _checked_te(best, targets, setup, teeth, say, placed, level)
     best = _checked_path(best, targets, setup, teeth, say, placed)
     return _checked_tip(best, targets, setup, teeth, say, placed)
-
-
-def _checked_spread(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                    setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                    placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
-    """A light-load LTE spread that fails ``ltca run``'s verdict repaired at its cause, the
-    blade angle: where the checked design misses the spread and its pinion's
-    ``blade_angle_change`` is not 0, the blade angle halved and then 0, each design placed
-    and checked at :data:`CHECK_LTCA`, kept where it scores better and is tolerant
-    (:func:`_tolerant_variant`).
-
-    Why: a blade-angle change about M walks the contact along the ellipse and tilts each
-    tooth pair's TE, which raises the unloaded TE at the transfers; at a light torque the
-    LTE is that TE. Measured on the spiral bevel 14x35 at Σ 70° of tests/data/designs at
-    ``ltca run``'s sampling at 26.6 / 177.9 N m (the light torque of its local pitting
-    capacity): blade angle −0.189° UTE 205 µrad, LTE 125 / 61 µrad, spread over 0.5; −0.1°:
-    124, 109 / 75; 0°: 46, 65 / 64 (2026-11-25). The penalty of a failing spread
-    (:data:`~contact.optimize.development_targets.VERDICT_FAIL_PENALTY`) keeps the centre v
-    the blade angle bought from outweighing it."""
-    if (best.full is None or not best.checked or best.full[1]["spread"] == 0.0
-            or HEIGHT_NAME not in targets.variables
-            or float(best.values.get(HEIGHT_NAME, 0.0)) == 0.0):
-        return best
-    x0 = float(best.values[HEIGHT_NAME])
-    for x in (0.5 * x0, 0.0):
-        if best.full[1]["spread"] == 0.0:
-            break
-        e = _checked_variant(best, best.values | {HEIGHT_NAME: x}, "spread", targets, setup,
-                             teeth, placed)
-        if e is None:
-            continue
-        say(f"  design {best.index + 1} with {HEIGHT_NAME} {x:.3g}, at the default "
-            "sampling: " + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
-        if _check_rank(e) < _check_rank(best) and _tolerant_variant(e, targets, setup,
-                                                                      teeth, say):
-            best = e
-    return best
 
 
 def steps_on_each(chosen: DevelopmentEvaluation, others: list[DevelopmentEvaluation],
