@@ -397,6 +397,31 @@ def test_lte_spread_is_the_quantity_the_verdicts_plausibility_check_reads(unreli
         assert not met and short["spread"] == pytest.approx(2.0), stage
 
 
+def test_a_design_the_verdict_fails_on_its_spread_ranks_after_every_one_it_passes():
+    """The 17x29 spiral bevel at Sigma 100 deg (tests/data/designs), measured at ltca run's
+    sampling: its long root relief, LTE 125 / 134 urad with the light-load spread 0.56
+    (ltca run FAILs it), scored 90.3 against 98.1 of the same bearing with its path turned
+    to -60 deg (57 / 138 urad, spread 0.36), so the development kept the design that
+    fails. A spread beyond the verdict's limit now adds VERDICT_FAIL_PENALTY: it ranks
+    after the passing design, and after a passing design with edges and plastic far
+    beyond their targets; a design whose analysis failed (FAILED) still ranks last."""
+    from contact.ltca.plausibility import LTE_SPREAD_LIMIT
+    from contact.optimize.development_targets import FAILED, VERDICT_FAIL_PENALTY
+
+    t = DevelopmentTargets()
+    failing = _metrics(lte_peak_to_peak=[125.0, 134.0], lte_spread=[0.56, 0.16])
+    passing = _metrics(lte_peak_to_peak=[57.0, 138.0], lte_spread=[0.36, 0.17])
+    rough = _metrics(lte_peak_to_peak=[57.0, 138.0], lte_spread=[0.36, 0.17],
+                     edge_load_share=[0.02, 0.10], plastic_share=[0.0, 0.04])
+    f, short_f, _ = development_score(failing, t, centre_v=0.6)
+    p, short_p, _ = development_score(passing, t, centre_v=0.6)
+    r, _, _ = development_score(rough, t, centre_v=0.6)
+    assert short_f["spread"] > 0.0 and short_p["spread"] == 0.0
+    assert 0.56 > LTE_SPREAD_LIMIT > 0.36
+    assert p < r < f < FAILED
+    # without the penalty the failing design would have won, as measured
+    assert f - VERDICT_FAIL_PENALTY < p
+
 def test_kept_teeth_give_the_shell_models_own_result(unrelieved_pc):
     """The development's shell teeth kept across designs (KeptTeeth) are the shell model's
     own teeth of the case: the coarse LTCA with them equals the one with the pipeline's
@@ -1033,3 +1058,40 @@ def test_a_check_step_keeps_no_design_that_loses_the_mounting_tolerance(monkeypa
     got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
     assert got is start
     assert sum("not kept" in line and "plastic" in line for line in lines) == 2
+
+
+def test_the_checks_steps_repair_a_second_checked_design_the_first_cannot_beat():
+    """steps_on_each: the check's steps on the chosen design and, while the best misses a
+    target, on each other checked design; the best by its checked score wins. The numbers
+    are the 17x29 spiral bevel at Sigma 100 deg's, measured at ltca run's sampling: the
+    first checked design (3.3 % plastic at the design torque) stepped to 2.1 % plastic
+    (objective 601), the second (light-load spread 0.56, a verdict FAIL) stepped to its
+    path at -60 deg (57 / 138 urad, spread 0.36, no plastic): the second's step is kept.
+    Where the first's step meets every target, the others' steps are not run."""
+    from contact.optimize.development_check import steps_on_each
+
+    t, cv = DevelopmentTargets(), 0.6
+    first = _checked({"path_angle": -45.0}, _metrics(
+        plastic_share=[0.0, 0.033], edge_load_share=[0.0, 0.02],
+        lte_peak_to_peak=[83.0, 224.0]), t, cv)
+    second = _checked({"path_angle": -45.5}, _metrics(
+        lte_peak_to_peak=[125.0, 134.0], lte_spread=[0.56, 0.16]), t, cv)
+    stepped = {-45.0: _checked({"path_angle": -80.0}, _metrics(
+        plastic_share=[0.0, 0.021], edge_load_share=[0.0, 0.02],
+        lte_peak_to_peak=[54.0, 163.0]), t, cv),
+        -45.5: _checked({"path_angle": -60.0}, _metrics(
+            lte_peak_to_peak=[57.0, 138.0], lte_spread=[0.36, 0.17]), t, cv)}
+    calls = []
+
+    def steps(e):
+        calls.append(e.values["path_angle"])
+        return stepped[e.values["path_angle"]]
+
+    assert first.objective < second.objective  # the check's rank: the plastic one first
+    best = steps_on_each(first, [second], steps)
+    assert best.values["path_angle"] == -60.0 and calls == [-45.0, -45.5]
+    calls.clear()
+    met = _checked({"path_angle": -70.0}, _metrics(), t, cv)
+    assert met.met
+    stepped[-45.0] = met
+    assert steps_on_each(first, [second], steps) is met and calls == [-45.0]

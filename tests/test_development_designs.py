@@ -42,7 +42,9 @@ DESIGNS = sorted(p for p in (Path(__file__).parent / "data" / "designs").glob("*
 #: (short tip relief, root-relief height design, TE stage; docs/own_gear_set.md, step 2):
 #: "plastic" no plastic segment at any torque, "light_edge" no edge contact at the light
 #: torque (15 % of the design torque), "lte60" LTE p-p <= 60 urad at every torque. Not
-#: yet met: the LTE of the spiral bevel 14x35 at Σ 70° (102/109 urad). The four own
+#: yet met: the LTE of the spiral bevel 14x35 at Σ 70° (134/71 urad) and of the 17x29 at
+#: Σ 100° at its design torque (57/138 urad, docs/own_gear_set.md, "The LTE spread at light
+#: load"). The four own
 #: designs written for issue 71's "designs it has not seen" (spiral bevel 17x29 at Σ 100°,
 #: hypoid 7x45 with a 45 mm offset, face-hobbed spiral bevel 12x37, hypoid 12x41 at
 #: Σ 85°; docs/own_gear_set.md, "The drive flank on designs it has not seen") as measured
@@ -70,13 +72,15 @@ DONE_WHEN = {
 
 
 #: designs whose ``ltca run`` FAILs, measured 2026-11-25, with what the one reason says:
-#: the 14x35 at Σ 70° (undercut toe) at the light torque of its local pitting capacity,
-#: 26.8 N·m: LTE spread 0.58; the spiral bevel 17x29 at Σ 100° on its light-load LTE
-#: spread (LTE p-p 125 µrad, 0.56 of its mean; the design torque's 134 µrad is the mesh's
-#: stiffness variation, which no lever of the development lowers: docs/own_gear_set.md,
-#: "The drive flank on designs it has not seen")
-RUN_FAILS = {"spiral_bevel_14x35_s70_m0": "LTE spread",
-             "spiral_bevel_17x29_s100_m0": "LTE spread"}
+#: the 14x35 at Σ 70° (undercut toe; its Formate gear at δ2 51.7°, below the ≈ 63° the
+#: Formate gear reaches: docs/synthesis.md, "Limits") at the light torque of its local
+#: pitting capacity, 26.6 N·m: LTE spread 0.61 — its pinion's blade angle −0.19° and the
+#: root relief from 0.2 of the way raise the unloaded TE to 197 µrad p-p and one tooth
+#: pair carries the light torque over 75 % of the mesh cycle (docs/own_gear_set.md, "The
+#: LTE spread at light load"). The spiral bevel 17x29 at Σ 100° no longer FAILs (the
+#: check's steps on each checked design, a spread beyond the verdict's limit ranked after
+#: every design the verdict passes: LTE 57 / 138 µrad, spread 0.28, ATTENTION).
+RUN_FAILS = {"spiral_bevel_14x35_s70_m0": "LTE spread"}
 
 #: issue 71 item 2 (both flanks, one design torque that holds), measured 2026-11-25 with
 #: each flank's design torque capped at its local pitting capacity and the coast flank

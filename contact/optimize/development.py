@@ -112,6 +112,7 @@ from contact.optimize.development_check import (
     checked_root_capacity,
     placed_case,
     static_capacity,
+    steps_on_each,
     tolerance_checks,
 )
 from contact.optimize.development_coast import (  # noqa: F401
@@ -328,10 +329,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
     c_check = time.process_time()
     placed = functools.partial(placed_case, basic, flank, memo)
-    best = checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes)
+    others: list = []  # the checked designs not chosen: their steps may repair them
+    best = checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes,
+                        others=others)
     steps = functools.partial(check_steps, targets=targets, setup=setup, teeth=teeth,
                               say=say, placed=placed, level=start[TE_NAME])
-    best = steps(best)
+    best = steps_on_each(best, others, steps)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = static_capacity(best, targets, setup, teeth, say)
         if setup["lowered"]:  # the steps again at the torques the bearing carries
