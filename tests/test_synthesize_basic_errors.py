@@ -65,3 +65,24 @@ def test_low_ratio_synthesis_error_names_the_formate_gear(tmp_path, capsys):
     assert "Formate" in err and "not implemented" in err
     # a design above the limit gets no such sentence (the 13x39: delta2 about 71 deg)
     assert formate_limit_hint(load_basic(DESIGNS / "spiral_bevel_13x39.toml")) == ""
+
+
+def test_low_face_contact_ratio_is_noted(tmp_path, capsys):
+    """``ltca synthesize`` prints ISO 10300-1's contact ratios of the pair it wrote, and a
+    note where the face contact ratio is below 1.25 (the 17x29 at Σ 100°: 0.96, whose
+    light-load LTE the development could only bring to 57/138 µrad). The ratios are the
+    rating's own (``/rating`` eps_va, eps_vb of the same case, to the printed digits)."""
+    from contact.commands.synthesize import FACE_CONTACT_RATIO_NOTE
+    from contact.load_capacity.iso10300.rating import iso10300_rating
+    from geometry.case import load_case
+
+    out = tmp_path / "case.toml"
+    assert main(["synthesize", str(DESIGNS / "spiral_bevel_17x29_s100_m0.toml"),
+                 "--no-development", "--no-progress", "-o", str(out)]) == 0
+    text = capsys.readouterr().out
+    ds = iso10300_rating(load_case(out), torque=[100.0])
+    eps_va, eps_vb = float(ds["eps_va"]), float(ds["eps_vb"])
+    assert eps_vb < FACE_CONTACT_RATIO_NOTE
+    assert (f"profile eps_va {eps_va:.2f}, face eps_vb {eps_vb:.2f}, total "
+            f"{eps_va + eps_vb:.2f}") in text
+    assert f"note: face contact ratio eps_vb {eps_vb:.2f} is below 1.25" in text
