@@ -9,7 +9,10 @@ tip planes placed) at the light and design torque. One row per design: light-loa
 length and ends (u, v), footprint centre v, LTE p-p at both torques, the unloaded TE p-p
 (``/utca``), the mean tooth pairs in contact at both torques, the edge and plastic shares
 at the design torque and the targets missed (:func:`~contact.optimize.development.
-development_score`, default targets).
+development_score`, default targets); ``--tolerance``: under each row, the tolerance
+targets (toe, heel, edge, plastic) missed at each mounting excursion ΔE/ΔP ± 0.05 mm
+(:func:`~contact.optimize.development_check.tolerance_checks`, the development's coarse
+LTCA; ≈ 4 more analyses per design).
 
 Usage::
 
