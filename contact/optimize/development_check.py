@@ -158,10 +158,12 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     """The check's steps on the chosen design at the development's torques
     (``setup["torques"]``): the TE stage again (:func:`_checked_te`), then the path turned
     towards the profile (:func:`_checked_path`), each only where the design misses its LTE
-    or length there; then, where its light-load pattern is above its depth centre's
-    tolerance, a shorter tip relief (:func:`_checked_tip`) and, where that did not
-    centre it, the root relief with a longer ellipse (:func:`_checked_root`). Run again
-    where the design torque was lowered after them (to the
+    or length there; where it still misses a target with a blade-angle change, the
+    height by the root relief instead (:func:`_checked_blade`); then, where its
+    light-load pattern is above its depth centre's tolerance, a shorter tip relief
+    (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
+    longer ellipse (:func:`_checked_root`). Run again where the design torque was
+    lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
     torque falls (the face-hobbed hypoid 11x43 of tests/data/designs: every target met
@@ -170,6 +172,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     scored better)."""
     best = _checked_te(best, targets, setup, teeth, say, placed, level)
     best = _checked_path(best, targets, setup, teeth, say, placed)
+    best = _checked_blade(best, targets, setup, teeth, say, placed)
     best = _checked_tip(best, targets, setup, teeth, say, placed)
     return _checked_root(best, targets, setup, teeth, say, placed)
 
@@ -255,6 +258,42 @@ def _kept_step(e: DevelopmentEvaluation, best: DevelopmentEvaluation,
     if turned is not e or _tolerant_variant(turned, targets, setup, teeth, say):
         return turned
     return best
+
+
+def _checked_blade(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                   setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
+                   placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
+    """The pattern's height by the root relief instead of the blade angle: where the
+    checked design misses a target and carries a blade-angle change, one design without
+    it and with the root relief at its upper bound from the lower bound of
+    ``relief_start`` (the height stage's first lever); placed and checked at
+    :data:`CHECK_LTCA`, given the path step where it misses the length or the LTE, kept
+    where it scores better and is tolerant (:func:`_kept_step`); the tip and root steps
+    after it lower a pattern it leaves high.
+
+    Why: the blade-angle change centres the pattern but walks it towards the heel and
+    costs unloaded TE (docs/own_gear_set.md, "The pattern's height"). Measured on an
+    industrial spiral bevel 12x48 (d_e2 400 mm, b2 60 mm, β_m 35°, Method 0; ``ltca
+    run``'s sampling at 273.45 / 1823 N m, path −75°, ellipse 0.45, 2026-11-25): blade
+    angle −0.177°: centre v 0.55, pattern 0.65 long (0.5 ± 0.1), LTE 30 / 36 µrad,
+    unloaded TE 114 µrad; the ellipse shortened to 0.35 for the length: 54 / 54 µrad; no
+    blade-angle change, root relief 60 µm from 0.2: v 0.62, 0.50 long, LTE 13 / 21 µrad,
+    every target met, tolerant."""
+    names = (HEIGHT_NAME, "root_relief", "relief_start")
+    if (best.full is None or not best.checked or best.met
+            or not all(n in targets.variables and n in best.values for n in names)
+            or best.values[HEIGHT_NAME] == 0.0):
+        return best
+    (_, r_hi), (s_lo, _) = (targets.variables[n] for n in names[1:])
+    values = best.values | {HEIGHT_NAME: 0.0, "root_relief": float(r_hi),
+                            "relief_start": float(s_lo)}
+    e = _checked_variant(best, values, "height", targets, setup, teeth, placed)
+    if e is None:
+        return best
+    say(f"  design {best.index + 1} without its blade-angle change, root_relief "
+        f"{values['root_relief']:.3g} from {values['relief_start']:.3g}, at the default "
+        "sampling: " + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
+    return _kept_step(e, best, targets, setup, teeth, say, placed)
 
 
 #: the check's root relief step (:func:`_checked_root`): the ellipse lengthened by this
