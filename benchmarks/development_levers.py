@@ -9,7 +9,10 @@ tip planes placed) at the light and design torque. One row per design: light-loa
 length and ends (u, v), footprint centre v, LTE p-p at both torques, the unloaded TE p-p
 (``/utca``), the mean tooth pairs in contact at both torques, the edge and plastic shares
 at the design torque and the targets missed (:func:`~contact.optimize.development.
-development_score`, default targets).
+development_score`, default targets); ``--tolerance``: under each row, the tolerance
+targets (toe, heel, edge, plastic) missed at each mounting excursion ΔE/ΔP ± 0.05 mm
+(:func:`~contact.optimize.development_check.tolerance_checks`, the development's coarse
+LTCA; ≈ 4 more analyses per design).
 
 Usage::
 
@@ -38,6 +41,8 @@ def main(argv: list[str] | None = None) -> None:
 
     from contact.chain import AnalysisChain
     from contact.optimize import development as dev
+    from contact.optimize.development_check import tolerance_checks
+    from contact.optimize.development_result import TOLERANCE_KEYS
     from contact.pipeline import run_analysis
     from geometry.synthesis.basic_design import load_basic, with_flank_options
     from geometry.synthesis.case_synthesis import synthesize
@@ -49,6 +54,9 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--base", default="{}", help="JSON: the bearing's prescriptions")
     ap.add_argument("--vary", default="[{}]", help="JSON list of changes to the base")
     ap.add_argument("--check", action="store_true", help="ltca run's sampling")
+    ap.add_argument("--tolerance", action="store_true",
+                    help="also the development's tolerance check (coarse LTCA at "
+                         "dE/dP +/- 0.05 mm): the tolerance targets missed, per excursion")
     args = ap.parse_args(argv)
     basic = load_basic(args.basic)
     flank = basic.options.drive_flank
@@ -85,6 +93,16 @@ def main(argv: list[str] | None = None) -> None:
               f"{100 * np.max(m['plastic_share']):4.1f}  "
               + ",".join(k for k, v in short.items() if v > 0)
               + f" [{time.process_time() - t0:.1f}]")
+        if args.tolerance:
+            setup = {"torques": list(args.torques), "centre_v": dev.working_depth_centre(case)}
+            tol = tolerance_checks(case, dev.DevelopmentTargets(), setup, teeth, values)
+            missed = {lab: [k for k in TOLERANCE_KEYS if short[k] > 0.0]
+                      for lab, (_, short) in tol.items()}
+            print("    tolerance: " + "; ".join(
+                f"{lab} {','.join(ks) or 'ok'}" + (
+                    f" (edge {100 * tol[lab][0]['edge_load_share'][1]:.1f} %, plastic "
+                    f"{100 * np.max(tol[lab][0]['plastic_share']):.1f} %)" if ks else "")
+                for lab, ks in missed.items()))
 
 
 if __name__ == "__main__":

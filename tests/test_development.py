@@ -945,10 +945,12 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
 
 def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
     """At the check, a light-load footprint centre above its tolerance with the design
-    torque's edge share at most half its limit gets one design with half the tip relief
-    from the upper bound of tip_relief_start, kept where it scores better; a pattern at
-    its height, or one whose edges have no room, gets none. Stand-in analyses: the
-    centre v falls with the relief, the edge share rises (the test is the decisions)."""
+    torque's edge share at most half its limit gets designs with 0.8, 2/3, 1/2 of the tip
+    relief from the upper bound of tip_relief_start in turn, the first that meets every
+    target and is tolerant kept; a pattern at its height, or one whose edges have no room,
+    gets none. Stand-in analyses: the centre v falls with the relief (0.58 + 0.004 r:
+    12 µm puts it on its bound 0.548 + 0.08, a rounding-level shortfall), the edge share
+    rises (the test is the decisions)."""
     from contact.optimize import development as dev
 
     def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
@@ -969,7 +971,8 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
     high = chosen({"tip_relief": 15.0, "tip_relief_start": 0.85})  # v 0.64, edge 0.1 %
     assert high.full[1]["centre_v"] > 0.0
     got = dcheck._checked_tip(high, targets, setup, None, lines.append, lambda v: dict(v))
-    assert got.values == {"tip_relief": 7.5, "tip_relief_start": 0.9} and got.met
+    assert got.values == {"tip_relief": pytest.approx(12.0, abs=1e-12),
+                          "tip_relief_start": 0.9} and got.met
     assert got.stage == "tip" and len(lines) == 1
     # no room on the edges (1.2 % > half of 2 %), or at its height: nothing analysed
     tight = chosen({"tip_relief": 4.0, "tip_relief_start": 0.85})
@@ -977,20 +980,117 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
         tight, full=(1.0, high.full[1], False)), targets, setup, None, lines.append,
         lambda v: dict(v)).values == tight.values
     assert dcheck._checked_tip(got, targets, setup, None, lines.append,
-                            lambda v: dict(v)) is got
+                               lambda v: dict(v)) is got
     assert len(lines) == 1
 
-    # plastic at a mounting excursion (the uncovered tip edge): not kept
+    # plastic at a mounting excursion below 13 µm (the uncovered tip edge): none of the
+    # three kept (12, 10, 7.5 µm analysed, each refused)
     def misaligned(case, torques, misalignment=None, **kw):
         m, grid = fake(case, torques)
-        if misalignment is not None and case["tip_relief"] < 10.0:
+        if misalignment is not None and case["tip_relief"] < 13.0:
             m["plastic_share"] = np.array([0.0, 0.003])
         return m, grid
 
     monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", misaligned)
+    lines.clear()
     assert dcheck._checked_tip(high, targets, setup, None, lines.append,
-                            lambda v: dict(v)) is high
+                               lambda v: dict(v)) is high
+    assert [ln.split(" from ")[0].split("with ")[1] for ln in lines
+            if "tip_relief" in ln] == ["tip_relief 12", "tip_relief 10", "tip_relief 7.5"]
     assert "not kept" in lines[-1] and "plastic" in lines[-1]
+
+
+def test_a_high_pattern_left_after_the_tip_step_gets_the_root_relief(monkeypatch):
+    """A checked design still above its centre's tolerance (whatever the tip step did)
+    gets one design with the root relief at its upper bound from the lower bound of
+    relief_start and the ellipse 0.1 longer where the pattern has room for it; kept where
+    it scores better and is tolerant. Stand-in analyses after the hypoid 9x41 at Σ 95°
+    (docs/own_gear_set.md): the root relief lowers the centre (0.64 at 40 µm, 0.61 at
+    60) and raises the design torque's LTE (38 + 0.3 µrad per µm), the longer ellipse
+    lowers it (150 µrad per unit) and lengthens the pattern (0.8 per unit)."""
+    from contact.optimize import development as dev
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        r, el = case["root_relief"], case["ellipse_length"]
+        return (_metrics(pattern_centre_v=[0.64 - 0.0015 * (r - 40.0), 0.6],
+                         pattern_toe_u=[0.25, 0.2],
+                         pattern_heel_u=[0.75 + 0.8 * (el - 0.55), 0.8],
+                         lte_peak_to_peak=[30.0, 38.0 + 0.3 * (r - 40.0)
+                                           - 150.0 * (el - 0.55)]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [62.25, 415.0], "centre_v": 0.542}
+
+    def chosen(values):
+        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
+                        0.542)
+
+    lines = []
+    high = chosen({"root_relief": 40.0, "relief_start": 0.3, "ellipse_length": 0.55,
+                   "path_angle": -58.8})  # v 0.64, 0.5 long, 38 µrad
+    assert high.full[1]["centre_v"] > 0.0 and high.full[1]["lte"] == 0.0
+    got = dcheck._checked_root(high, targets, setup, None, lines.append, lambda v: dict(v))
+    # 60 µm from 0.2 with the ellipse 0.65 (0.5 + 0.1 <= 0.6): v 0.61, 29 µrad
+    assert got.values["root_relief"] == 60.0 and got.values["relief_start"] == 0.2
+    assert got.values["ellipse_length"] == pytest.approx(0.65, abs=1e-12)
+    assert got.met and got.stage == "root" and len(lines) == 1
+    assert dcheck._checked_root(got, targets, setup, None, lines.append,
+                                lambda v: dict(v)) is got  # at its height: nothing
+    # a pattern with no room for a longer ellipse (0.58 long): the root relief alone,
+    # 44 µrad at the design torque, which the path step (LTE missed) then turns
+    lines.clear()
+    long_ = chosen({"root_relief": 40.0, "relief_start": 0.3, "ellipse_length": 0.65,
+                    "path_angle": -58.8})
+    dcheck._checked_root(long_, targets, setup, None, lines.append, lambda v: dict(v))
+    assert "ellipse_length 0.65" in lines[0] and "root_relief 60" in lines[0]
+
+
+def test_a_design_missing_a_target_with_a_blade_angle_gets_the_root_relief_instead(
+        monkeypatch):
+    """A checked design that misses a target and carries a blade-angle change gets one
+    design without it and with the root relief at its upper bound from the lower bound
+    of relief_start, kept where it scores better and is tolerant; a design without a
+    blade-angle change, or one meeting every target, gets none. Stand-in analyses after
+    the industrial spiral bevel 12x48 (docs/own_gear_set.md, "The pattern's height"):
+    the blade angle −0.177° centres the pattern (v 0.55) but makes it 0.65 long; without
+    it and with 60 µm of root relief, v 0.62 and 0.5 long."""
+    from contact.optimize import development as dev
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        tilt = case["blade_angle_change"] != 0.0
+        return (_metrics(pattern_centre_v=[0.55 if tilt else 0.64 - 0.001
+                                           * (case["root_relief"] - 40.0), 0.6],
+                         pattern_toe_u=[0.2 if tilt else 0.25, 0.2],
+                         pattern_heel_u=[0.85 if tilt else 0.75, 0.8]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [273.45, 1823.0], "centre_v": 0.548}
+
+    def chosen(values):
+        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
+                        0.548)
+
+    lines = []
+    tilted = chosen({"blade_angle_change": -0.177, "root_relief": 39.0,
+                     "relief_start": 0.25})
+    assert tilted.full[1]["length"] > 0.0 and not tilted.met
+    got = dcheck._checked_blade(tilted, targets, setup, None, lines.append,
+                                lambda v: dict(v))
+    assert got.values == {"blade_angle_change": 0.0, "root_relief": 60.0,
+                          "relief_start": 0.2}
+    assert got.met and len(lines) == 1 and "without its blade-angle change" in lines[0]
+    # no blade-angle change, or every target met: nothing analysed
+    flat = chosen({"blade_angle_change": 0.0, "root_relief": 40.0, "relief_start": 0.25})
+    assert not flat.met
+    assert dcheck._checked_blade(flat, targets, setup, None, lines.append,
+                                 lambda v: dict(v)) is flat
+    assert dcheck._checked_blade(got, targets, setup, None, lines.append,
+                                 lambda v: dict(v)) is got
+    assert len(lines) == 1
 
 
 def test_the_height_stage_keeps_the_design_before_a_costly_blade_angle(monkeypatch):

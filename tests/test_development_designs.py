@@ -71,6 +71,19 @@ DONE_WHEN = {
 }
 
 
+#: designs whose development meets every drive target of contact.optimize.development
+#: (the first clause of its "development: design ..." line), measured 2026-11-25: the
+#: spiral bevel 13x39 and the hypoid 12x41 at Σ 85° since the check's height steps
+#: (a shorter tip relief at 0.8, 2/3, 1/2, the root relief with a longer ellipse;
+#: docs/own_gear_set.md, "The pattern's height": centre v 0.64 and 0.63 before), the
+#: others on main before them (docs/own_gear_set.md, "The drive flank on designs it has
+#: not seen"), which those steps do not reach (they run only on a pattern above its
+#: centre's tolerance at the check)
+DRIVE_TARGETS_MET = {"eaxle_hypoid_11x39_s80", "fh_hypoid_11x43", "fh_spiral_bevel_12x37_m3",
+                     "hypoid_12x41_s85", "hypoid_7x45_a45", "pc_hypoid_10x43",
+                     "spiral_bevel_13x39", "spiral_bevel_15x45_m0", "truck_hypoid_9x37"}
+
+
 #: designs whose ``ltca run`` FAILs, measured 2026-11-25, with what the one reason says:
 #: the 14x35 at Σ 70° (undercut toe; its Formate gear at δ2 51.7°, below the ≈ 63° the
 #: Formate gear reaches: docs/synthesis.md, "Limits") at the light torque of its local
@@ -117,6 +130,8 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert "flank peak pressure at" in out and "coast" in out
     head = next(line for line in out.splitlines() if "development: design" in line)
     assert ", every target met;" in head or "(limit " in head or "(target " in head, head
+    if basic.stem in DRIVE_TARGETS_MET:  # the drive flank's clause, before the coast's
+        assert head.split(";")[0].endswith(", every target met"), head
     case = tomllib.loads(case_path.read_text(encoding="utf-8"))
     assert "Development bearing" in case["source"]
     dev = case["development"]
