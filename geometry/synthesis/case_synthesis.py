@@ -296,26 +296,6 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
                tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
     """Complete face-milled case from basic design data (ISO 23509 blank + local synthesis).
 
-    Parameters and returns: :func:`_synthesize`, which this calls. A step without a
-    solution raises its :class:`InputError`; where the pair's gear pitch angle is below
-    :data:`FORMATE_PITCH_ANGLE_LIMIT` the message adds why (:func:`formate_limit_hint`).
-    """
-    try:
-        return _synthesize(basic, conjugate=conjugate, progress=progress, memo=memo,
-                           tip_planes=tip_planes)
-    except InputError as err:
-        hint = formate_limit_hint(basic)
-        if not hint or hint in str(err):
-            raise
-        raise InputError(f"{err}; {hint}") from err
-
-
-def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
-                progress: Callable[[str], None] | None = None,
-                memo: dict | None = None,
-                tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
-    """Complete face-milled case from basic design data (ISO 23509 blank + local synthesis).
-
     Parameters
     ----------
     basic : geometry.synthesis.basic_design.BasicDesign
@@ -368,7 +348,9 @@ def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
     Raises
     ------
     InputError
-        If a step has no solution (named in the message).
+        If a step has no solution (named in the message); where the pair's gear pitch
+        angle is below :data:`FORMATE_PITCH_ANGLE_LIMIT`, the message adds why (its
+        Formate gear) and what moves the pair within reach (:func:`formate_limit_hint`).
 
     Notes
     -----
@@ -377,6 +359,21 @@ def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
     so that both flanks bound one tooth whose thickness leaves the ISO mean normal backlash
     j_mn at M).
     """
+    try:
+        return _synthesize(basic, conjugate=conjugate, progress=progress, memo=memo,
+                           tip_planes=tip_planes)
+    except InputError as err:
+        hint = formate_limit_hint(basic)
+        if not hint or hint in str(err):
+            raise
+        raise InputError(f"{err}; {hint}") from err
+
+
+def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
+                progress: Callable[[str], None] | None = None,
+                memo: dict | None = None,
+                tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
+    """The body of :func:`synthesize` (its parameters, returns and steps)."""
     say = progress if progress is not None else (lambda _step: None)
     say("blanks (ISO 23509) and the Formate gear")
     opt = basic.options
