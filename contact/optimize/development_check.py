@@ -121,6 +121,21 @@ def _checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], s
                                checked=True, stage=stage)
 
 
+def _said_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,
+                  label: str, targets: DevelopmentTargets, setup: Mapping[str, Any],
+                  teeth: KeptTeeth, say: Callable[[str], None],
+                  placed: Callable[[Mapping[str, float]], Case]
+                  ) -> DevelopmentEvaluation | None:
+    """A check step's design: :func:`_checked_variant` of ``base`` with ``values``, and
+    where it was analysed one line said, ``design <n> <label>, at the default sampling:
+    <its metrics>``. None where the synthesis or the analysis failed."""
+    e = _checked_variant(base, values, stage, targets, setup, teeth, placed)
+    if e is not None:
+        say(f"  design {base.index + 1} {label}, at the default sampling: "
+            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
+    return e
+
+
 def _checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                 setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
                 placed: Callable[[Mapping[str, float]], Case], level: float
@@ -140,12 +155,10 @@ def _checked_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     for x in (max(lo, min(hi, current) - 20.0), lo):
         if best.full[1]["lte"] == 0.0 or x >= current - 1e-9:
             break
-        e = _checked_variant(best, best.values | {TE_NAME: float(x)}, "te", targets, setup,
-                             teeth, placed)
+        e = _said_variant(best, best.values | {TE_NAME: float(x)}, "te",
+                          f"at {TE_NAME} {x:.3g} urad", targets, setup, teeth, say, placed)
         if e is None:
             break
-        say(f"  design {best.index + 1} at {TE_NAME} {x:.3g} urad, at the default "
-            "sampling: " + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
         if _check_rank(e) >= _check_rank(best):
             break
         best, current = e, float(x)
@@ -256,12 +269,12 @@ def _checked_tip(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if values in tried or all(values[n] == start.values[n] for n in names):
             continue
         tried.append(values)
-        e = _checked_variant(start, values, "tip", targets, setup, teeth, placed)
+        e = _said_variant(start, values, "tip",
+                          f"with tip_relief {values['tip_relief']:.3g} from "
+                          f"{values['tip_relief_start']:.3g}", targets, setup, teeth, say,
+                          placed)
         if e is None:
             continue
-        say(f"  design {start.index + 1} with tip_relief {values['tip_relief']:.3g} from "
-            f"{values['tip_relief_start']:.3g}, at the default sampling: "
-            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
         best = _kept_step(e, best, targets, setup, teeth, say, placed)
         if best.met:
             break
@@ -314,12 +327,12 @@ def _checked_blade(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     (_, r_hi), (s_lo, _) = (targets.variables[n] for n in names[1:])
     values = best.values | {HEIGHT_NAME: 0.0, "root_relief": float(r_hi),
                             "relief_start": float(s_lo)}
-    e = _checked_variant(best, values, "height", targets, setup, teeth, placed)
+    e = _said_variant(best, values, "height",
+                      f"without its blade-angle change, root_relief "
+                      f"{values['root_relief']:.3g} from {values['relief_start']:.3g}",
+                      targets, setup, teeth, say, placed)
     if e is None:
         return best
-    say(f"  design {best.index + 1} without its blade-angle change, root_relief "
-        f"{values['root_relief']:.3g} from {values['relief_start']:.3g}, at the default "
-        "sampling: " + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
     return _kept_step(e, best, targets, setup, teeth, say, placed)
 
 
@@ -372,13 +385,12 @@ def _checked_root(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                                         + (ROOT_STEP_ELLIPSE if room else 0.0), e_lo, e_hi))}
     if all(values[n] == best.values[n] for n in names):
         return best
-    e = _checked_variant(best, values, "root", targets, setup, teeth, placed)
+    e = _said_variant(best, values, "root",
+                      f"with root_relief {values['root_relief']:.3g} from "
+                      f"{values['relief_start']:.3g}, ellipse_length "
+                      f"{values['ellipse_length']:.3g}", targets, setup, teeth, say, placed)
     if e is None:
         return best
-    say(f"  design {best.index + 1} with root_relief {values['root_relief']:.3g} from "
-        f"{values['relief_start']:.3g}, ellipse_length {values['ellipse_length']:.3g}, at "
-        "the default sampling: "
-        + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
     return _kept_step(e, best, targets, setup, teeth, say, placed)
 
 
@@ -455,12 +467,12 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if values in tried or all(values[n] == base.values[n] for n in names):
             continue
         tried.append(values)
-        e = _checked_variant(best, values, "path", targets, setup, teeth, placed)
+        e = _said_variant(best, values, "path",
+                          f"with path_angle {values['path_angle']:.3g}, ellipse_length "
+                          f"{values['ellipse_length']:.3g}", targets, setup, teeth, say,
+                          placed)
         if e is None:
             continue
-        say(f"  design {best.index + 1} with path_angle {values['path_angle']:.3g}, "
-            f"ellipse_length {values['ellipse_length']:.3g}, at the default sampling: "
-            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
         if (_check_rank(e) < _check_rank(best)
                 and _tolerant_variant(e, targets, setup, teeth, say)):
             best = e
