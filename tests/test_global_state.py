@@ -35,6 +35,19 @@ def _sources() -> list[Path]:
     return sorted(p for pkg in PACKAGES for p in (ROOT / pkg).rglob("*.py"))
 
 
+#: every source file's syntax tree, parsed once for the module's tests (each of the
+#: seven source scans parsed the whole toolkit again, ~3 s of CPU each; the trees are
+#: only read)
+_TREES: dict[Path, ast.Module] = {}
+
+
+def _tree(path: Path) -> ast.Module:
+    """The syntax tree of a source file (parsed on first use)."""
+    if path not in _TREES:
+        _TREES[path] = ast.parse(path.read_text(encoding="utf-8"))
+    return _TREES[path]
+
+
 def _rel(path: Path) -> str:
     return path.relative_to(ROOT).as_posix()
 
@@ -105,7 +118,7 @@ def test_library_code_never_chooses_a_backend_nor_imports_pyplot():
     for path in _sources():
         if _rel(path) in CLI_MODULES:
             continue
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in ast.walk(_tree(path)):
             if isinstance(node, ast.Call) and _dotted(node.func) == "matplotlib.use":
                 bad.append(f"{_rel(path)}:{node.lineno}: matplotlib.use")
             elif isinstance(node, ast.Import) and any(
@@ -123,7 +136,7 @@ def _memoised_functions() -> list[tuple[str, str]]:
     """(module path, function name) of every ``@memoised`` function in the source."""
     out = []
     for path in _sources():
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in ast.walk(_tree(path)):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 for dec in node.decorator_list:
                     target = dec.func if isinstance(dec, ast.Call) else dec
@@ -139,7 +152,7 @@ def test_every_cache_goes_through_the_one_registry():
     for path in _sources():
         if _rel(path) == "geometry/core/caches.py":
             continue
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in ast.walk(_tree(path)):
             if isinstance(node, ast.ImportFrom) and node.module == "functools":
                 names = {a.name for a in node.names} & {"lru_cache", "cache"}
                 if names:
@@ -193,7 +206,7 @@ def _environment_reads(path: Path) -> list[tuple[str, int]]:
     """(variable, line) of every environment variable a module reads or sets: the
     argument of ``os.environ.get``, ``os.getenv``, ``os.environ[...]``, resolved through
     the module's constants."""
-    tree = ast.parse(path.read_text(encoding="utf-8"))
+    tree = _tree(path)
     constants = {t.id: node.value.value for node in tree.body if isinstance(node, ast.Assign)
                  and isinstance(node.value, ast.Constant) and isinstance(node.value.value, str)
                  for t in node.targets if isinstance(t, ast.Name)}

@@ -78,9 +78,22 @@ def _module_name(path: Path) -> str:
     return ".".join(parts)
 
 
+#: syntax trees by source text: the checks below walk the whole toolkit four times (each
+#: parse of it ~2 s of CPU); keyed by the text, not the path, so that a probe's text read
+#: through a patched ``Path.read_text`` is parsed as its own (the trees are only read)
+_TREES: dict[str, ast.Module] = {}
+
+
+def _parse(text: str) -> ast.Module:
+    """``ast.parse(text)``, each distinct text parsed once."""
+    if text not in _TREES:
+        _TREES[text] = ast.parse(text)
+    return _TREES[text]
+
+
 def _imports(path: Path) -> list[tuple[str, str, int]]:
     """(imported module, imported name or '', line) of every import in a file."""
-    tree = ast.parse(path.read_text(encoding="utf-8"))
+    tree = _parse(path.read_text(encoding="utf-8"))
     this = _module_name(path)
     package = this if path.name == "__init__.py" else this.rpartition(".")[0]
     out = []
@@ -178,7 +191,7 @@ def _script_violations() -> list[str]:
     """The bundled ``cases/`` scripts import no private name or module of the packages."""
     bad = []
     for path in _case_scripts():
-        tree = ast.parse(path.read_text(encoding="utf-8"))
+        tree = _parse(path.read_text(encoding="utf-8"))
         for node in ast.walk(tree):
             if isinstance(node, ast.ImportFrom) and node.module and \
                     node.module.split(".")[0] in PACKAGES:
@@ -247,7 +260,7 @@ def _load_capacity_reads() -> list[str]:
     friction module reading the load-capacity package's output by name."""
     bad = []
     for path in sorted((ROOT / "friction").rglob("*.py")):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
+        tree = _parse(path.read_text(encoding="utf-8"))
         for node in ast.walk(tree):
             if isinstance(node, ast.Constant) and isinstance(node.value, str):
                 first = node.value.strip("/").split("/")[0]
