@@ -202,10 +202,19 @@ def test_clear_caches_empties_every_cache():
     assert all(v == 0 for v in cache_sizes().values())
 
 
+_READS: dict[Path, list[tuple[str, int]]] = {}
+
+
 def _environment_reads(path: Path) -> list[tuple[str, int]]:
     """(variable, line) of every environment variable a module reads or sets: the
     argument of ``os.environ.get``, ``os.getenv``, ``os.environ[...]``, resolved through
-    the module's constants."""
+    the module's constants (found once per file for the module's four tests)."""
+    if path not in _READS:
+        _READS[path] = _find_environment_reads(path)
+    return list(_READS[path])
+
+
+def _find_environment_reads(path: Path) -> list[tuple[str, int]]:
     tree = _tree(path)
     constants = {t.id: node.value.value for node in tree.body if isinstance(node, ast.Assign)
                  and isinstance(node.value, ast.Constant) and isinstance(node.value.value, str)
