@@ -7,8 +7,11 @@ namespace, as a reader runs them one after the other, from an empty temporary di
 each block asserts the numbers it shows. A block that would be costly at the resolution
 it shows says, in an HTML comment right above its fence, how the test runs it cheaper
 (``<!-- docs-test: replace OLD => NEW -->``: fewer rolls, torques or points, never another
-result), or why it does not run (``<!-- docs-test: skip REASON -->``, reported as a skip
-with its reason, and listed in ``SKIPPED`` so that a new skip is a reviewed change).
+result; or a step whose result the block neither shows nor asserts left out: the root
+stress, an FE build of the page's design, tested in tests/test_root_stress.py and
+tests/test_fe_*.py, as tests/test_readme_walkthrough.py runs ``ltca run``), or why it
+does not run (``<!-- docs-test: skip REASON -->``, reported as a skip with its reason,
+and listed in ``SKIPPED`` so that a new skip is a reviewed change).
 
 The gallery's scripts (``docs/examples/plot_*.py``) are executed by the site's build
 (sphinx-gallery; tests/test_docs_site.py runs the quickest, the published build all).
