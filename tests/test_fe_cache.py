@@ -298,9 +298,11 @@ def test_sigint_during_a_build_leaves_no_entry(tmp_path, monkeypatch):
     """Ctrl-C while ``ltca run`` builds the FE coefficients (root stress is on by default,
     issue 53) into an empty cache: the run stops with the shell's 130 and one line, and the
     cache holds no entry and no temporary file that a later run could trust. The signal is
-    sent when the build has started (the stiffness assembly's log line, read from the pipe:
-    an event, not a time); the default model's build then runs for seconds more (~15 s per
-    member with CHOLMOD), so the signal lands inside it."""
+    sent when the build has started (its first log line, the first member's FE tooth
+    sections, read from the pipe: an event, not a time; the stiffness assembly's line came
+    after the solid, seconds of CPU later, for the same check); the default model's build
+    then runs for seconds more (the solid, the stiffness, ~15 s per member with CHOLMOD),
+    so the signal lands inside it."""
     import os
     import signal
     import subprocess
@@ -321,7 +323,7 @@ def test_sigint_during_a_build_leaves_no_entry(tmp_path, monkeypatch):
     try:
         for line in proc.stderr:   # ends at EOF if the process exits without the line
             seen.append(line)
-            if "stiffness:" in line:
+            if "contact.compliance.fe.section:" in line and " sections; " in line:
                 proc.send_signal(signal.SIGINT)
                 break
         else:
