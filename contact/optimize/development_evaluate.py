@@ -1,11 +1,13 @@
 """One design of the development analysed and scored: the coarse LTCA of a synthesised
 case at the light and the design torque, its metrics, and the search's objective.
 
-:func:`analyse_design` runs the contact-only analysis (:func:`contact.pipeline.run_analysis`)
-of a design's flank, at :data:`COARSE_LTCA` inside the search or :data:`CHECK_LTCA` at the
-check, with the shell teeth kept across designs (:class:`KeptTeeth`), and summarises it
-(:func:`design_metrics`: :func:`contact.study.summary.point_summary`, the footprint centre,
-the plastic share, :func:`lte_spread`; the grid and :func:`static_strength`).
+:func:`analyse_design` runs the contact of a design's flank (the ease-off and the LTCA of
+:func:`contact.pipeline.run_analysis`'s contact-only chain, without its datasets of the
+unloaded TCA and its tree), at :data:`COARSE_LTCA` inside the search or :data:`CHECK_LTCA`
+at the check, with the shell teeth kept across designs (:class:`KeptTeeth`), and summarises
+it (:func:`ltca_metrics`: the LTE, peak pressure, edge share and pattern of
+:func:`contact.study.summary.point_summary`, the footprint centre, the plastic share,
+:func:`lte_spread`; the grid and :func:`static_strength`).
 :func:`evaluator` makes the objective of one side's search from it: each design
 synthesised, analysed, scored (:func:`development_score`), recorded and printed, the
 stage ended by :class:`StageStop`. :func:`design_torque_of` is the torque the bearing is
