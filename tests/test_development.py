@@ -202,6 +202,31 @@ def test_clearance_shortfalls_agree_with_the_verdicts_boundaries(unrelieved_pc):
             assert short[side] < 1.0, side
 
 
+def test_a_trials_analysis_gives_the_chains_metrics_bit_for_bit(unrelieved_pc):
+    """analyse_design runs the ease-off and the LTCA alone (issue 75: no /easeoff, /utca
+    datasets, no tree): its metrics and grid are those of the contact-only chain's tree
+    (run_analysis, design_metrics: the point summary of /utca and /ltca), bit for bit —
+    the same ease-off, the same transitions (the ease-off's own, which /utca carried),
+    the same LTCA."""
+    from contact.optimize.development_evaluate import (
+        design_metrics,
+        grid_bounds,
+        static_strength,
+    )
+    from contact.study.summary import point_summary
+
+    tree, metrics, grid = unrelieved_pc
+    case = _unrelieved_case()
+    chain = design_metrics(tree, case)
+    assert set(chain) == set(metrics)
+    for k in metrics:
+        np.testing.assert_array_equal(metrics[k], chain[k], err_msg=k)
+    summary = point_summary(tree, case)  # what design_metrics read before, for its names
+    for k in set(metrics) & set(summary) - {"pattern_centre_u", "pattern_centre_v"}:
+        np.testing.assert_array_equal(metrics[k], np.asarray(summary[k], float), err_msg=k)
+    assert grid == (*grid_bounds(tree), static_strength(tree))
+
+
 def test_the_development_judges_the_footprint_centre(unrelieved_pc):
     """The centre the development's metrics carry is the footprint centre of the tree's
     pressure envelope (footprint_centre), and lies inside the pattern's extent; the

@@ -7,10 +7,11 @@ section that wins where a place has roots on two sections, and the sign of ∂f/
 undercut test (reason 4) compares with. The ease-off's placement iterations call it about
 ten times per analysis of the default case, each time at a new target. The fast search
 memoises the target-independent part (the generated points of the coarse candidate grid
-per blade section and q range) and runs Newton's method on the candidates of all passes in
-one batch. These tests compare it with the search as it was written before (every pass in
-turn, the candidate grid evaluated afresh: :func:`_seed_reference`, kept here as the
-reference), and the ease-offs that depend on it:
+per blade section and q range) and runs Newton's method on the first pass's candidates,
+then on those of all the other passes in one batch (issue 75). These tests compare it with
+the search as it was written before (every pass in turn, the candidate grid evaluated
+afresh: :func:`_seed_reference`, kept here as the reference), and the ease-offs that
+depend on it:
 
 * the seeds themselves, bit for bit, on targets of every blade section (the profile,
   edge, relief sections; face milling and face hobbing), and the per-process memo of seeds

@@ -138,6 +138,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
     evaluation_line,
     evaluator,
     grid_bounds,
+    ltca_metrics,
     lte_spread,
     static_strength,
 )

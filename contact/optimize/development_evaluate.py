@@ -1,11 +1,13 @@
 """One design of the development analysed and scored: the coarse LTCA of a synthesised
 case at the light and the design torque, its metrics, and the search's objective.
 
-:func:`analyse_design` runs the contact-only analysis (:func:`contact.pipeline.run_analysis`)
-of a design's flank, at :data:`COARSE_LTCA` inside the search or :data:`CHECK_LTCA` at the
-check, with the shell teeth kept across designs (:class:`KeptTeeth`), and summarises it
-(:func:`design_metrics`: :func:`contact.study.summary.point_summary`, the footprint centre,
-the plastic share, :func:`lte_spread`; the grid and :func:`static_strength`).
+:func:`analyse_design` runs the contact of a design's flank (the ease-off and the LTCA of
+:func:`contact.pipeline.run_analysis`'s contact-only chain, without its datasets of the
+unloaded TCA and its tree), at :data:`COARSE_LTCA` inside the search or :data:`CHECK_LTCA`
+at the check, with the shell teeth kept across designs (:class:`KeptTeeth`), and summarises
+it (:func:`ltca_metrics`: the LTE, peak pressure, edge share and pattern of
+:func:`contact.study.summary.point_summary`, the footprint centre, the plastic share,
+:func:`lte_spread`; the grid and :func:`static_strength`).
 :func:`evaluator` makes the objective of one side's search from it: each design
 synthesised, analysed, scored (:func:`development_score`), recorded and printed, the
 stage ended by :class:`StageStop`. :func:`design_torque_of` is the torque the bearing is
@@ -28,6 +30,7 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
+import xarray as xr
 
 from contact.ltca import LTCAOptions
 from contact.optimize.development_result import (
@@ -85,15 +88,21 @@ def design_torque_of(basic: BasicDesign, case: Case) -> tuple[float, str]:
     return float(max(case.operating.torque)), f"largest [operating] torque ({why})"
 
 
+def _ltca(tree):
+    """The ``/ltca`` group of an analysis' tree, or the ``/ltca`` dataset itself."""
+    return tree if isinstance(tree, xr.Dataset) else tree["/ltca"]
+
+
 def static_strength(tree) -> float:
     """The static strength σ_Hlim·Z_NT,static [MPa] of the weaker member's material of an
-    analysis (its ``/ltca`` attributes ``material_pinion``, ``material_gear``) at the
-    verdict's grade (:data:`contact.study.verdicts.GRADE`, ISO 6336-5; the S–N curve's
-    life factor at its static end, ISO 6336-2); inf where the tree names no material."""
+    analysis (the ``/ltca`` attributes ``material_pinion``, ``material_gear`` of its tree or
+    of the ``/ltca`` dataset) at the verdict's grade (:data:`contact.study.verdicts.GRADE`,
+    ISO 6336-5; the S–N curve's life factor at its static end, ISO 6336-2); inf where the
+    tree names no material."""
     from contact.load_capacity.durability import sn_curves
     from contact.study.verdicts import GRADE
 
-    a = tree["/ltca"].attrs
+    a = _ltca(tree).attrs
     names = sorted({a.get("material_pinion"), a.get("material_gear")} - {None})
     if not names:
         return math.inf
@@ -103,24 +112,38 @@ def static_strength(tree) -> float:
 
 def design_metrics(tree, case: Case) -> dict[str, np.ndarray]:
     """The development's metrics of one analysis (``tree``, its ``/ltca`` group) of
-    ``case``, per torque (arrays of shape (n_torques,)): those of
-    :func:`contact.study.summary.point_summary` named in :data:`METRIC_NAMES`, the
-    footprint centre ``pattern_centre_u``/``pattern_centre_v`` [1 of the face width /
-    working depth] (:func:`footprint_centre`), ``plastic_share`` [1] (the largest segment's)
-    and ``lte_spread`` [1] (:func:`lte_spread`)."""
-    from contact.study.summary import point_summary
+    ``case``, per torque (arrays of shape (n_torques,)): :func:`ltca_metrics` of its
+    ``/ltca`` dataset."""
+    return ltca_metrics(tree["/ltca"].to_dataset(), case)
 
-    s = point_summary(tree, case)
+
+def ltca_metrics(ltca, case: Case) -> dict[str, np.ndarray]:
+    """The development's metrics of an ``/ltca`` dataset (:func:`contact.ltca.loaded_tca`)
+    of ``case``, per torque (arrays of shape (n_torques,)): those of
+    :func:`contact.study.summary.point_summary` named in :data:`METRIC_NAMES` (the LTE
+    peak-to-peak and the flank's peak pressure of the dataset, the edge load share,
+    :func:`contact.ltca.summary.edge_load_share`, and the pattern's extent,
+    :func:`contact.study.summary.pattern_dimensions`: what ``point_summary`` gives them
+    from, without its ``/utca`` summaries the development does not score), the footprint
+    centre ``pattern_centre_u``/``pattern_centre_v`` [1 of the face width / working depth]
+    (:func:`footprint_centre`), ``plastic_share`` [1] (the largest segment's) and
+    ``lte_spread`` [1] (:func:`lte_spread`)."""
+    from contact.ltca.summary import edge_load_share
+    from contact.study.summary import pattern_dimensions
+
+    s = {"lte_peak_to_peak": ltca["lte_peak_to_peak"].values,
+         "pressure_max_flank": ltca["pressure_max_flank"].values,
+         "edge_load_share": edge_load_share(ltca), **pattern_dimensions(ltca, case)}
     out = {k: np.asarray(s[k], float) for k in METRIC_NAMES if k in s}
-    lt = tree["/ltca"]
     # the centre of the footprint, not of the pressure (footprint_centre's notes)
-    env = lt["pressure_envelope"].transpose("torque", "u", "v")
+    env = ltca["pressure_envelope"].transpose("torque", "u", "v")
     out["pattern_centre_u"], out["pattern_centre_v"] = footprint_centre(
-        env.values, lt["u"].values, lt["v"].values)
-    share = (np.nan_to_num(lt["plastic_load_share"].values, nan=0.0)
-             if "plastic_load_share" in lt else np.zeros((len(out["lte_peak_to_peak"]), 1)))
+        env.values, ltca["u"].values, ltca["v"].values)
+    share = (np.nan_to_num(ltca["plastic_load_share"].values, nan=0.0)
+             if "plastic_load_share" in ltca
+             else np.zeros((len(out["lte_peak_to_peak"]), 1)))
     out["plastic_share"] = share.max(axis=1)
-    out["lte_spread"] = lte_spread(lt.to_dataset())
+    out["lte_spread"] = lte_spread(ltca)
     return out
 
 
@@ -140,8 +163,9 @@ def lte_spread(ltca) -> np.ndarray:
 
 def grid_bounds(tree) -> tuple[float, float, float, float]:
     """The ends of an analysis' contact grid: (u first, u last, v first, v last) [1], the
-    face and the working depth the pattern is judged on (:func:`development_score`)."""
-    lt = tree["/ltca"]
+    face and the working depth the pattern is judged on (:func:`development_score`);
+    ``tree``: an analysis' tree or its ``/ltca`` dataset."""
+    lt = _ltca(tree)
     u, v = lt["u"].values, lt["v"].values
     return float(u[0]), float(u[-1]), float(v[0]), float(v[-1])
 
@@ -208,21 +232,27 @@ def analyse_design(case: Case, torques: list[float], misalignment: Misalignment 
                    options: LTCAOptions = COARSE_LTCA, teeth: KeptTeeth | None = None,
                    pinion_key: tuple = (), flank: str = "drive"):
     """One design's ``flank`` (``"drive"`` or ``"coast"``) analysed at ``torques`` [N·m]
-    (contact only, no deviations: :func:`contact.pipeline.run_analysis`), at
-    ``misalignment`` if given, with ``options`` (default :data:`COARSE_LTCA`) and, where
-    ``teeth`` is given, the shell teeth it keeps (the pinion's under ``pinion_key``).
-    Returns the metrics (:func:`design_metrics`) and (u first, u last, v first, v last,
-    static strength [MPa]) (:func:`grid_bounds`, :func:`static_strength`). The analysis
-    seam (module docstring); its errors propagate."""
-    from contact.chain import AnalysisChain
-    from contact.pipeline import run_analysis
+    (contact only, no deviations), at ``misalignment`` if given, with ``options`` (default
+    :data:`COARSE_LTCA`) and, where ``teeth`` is given, the shell teeth it keeps (the
+    pinion's under ``pinion_key``). Returns the metrics (:func:`ltca_metrics`) and (u
+    first, u last, v first, v last, static strength [MPa]) (:func:`grid_bounds`,
+    :func:`static_strength`). The analysis seam (module docstring); its errors propagate.
+
+    The ease-off (:func:`contact.utca.easeoff.ease_off`) and the LTCA
+    (:func:`contact.ltca.loaded_tca`, from the ease-off's transitions) of
+    :func:`contact.pipeline.run_analysis`'s contact-only chain, without what the metrics
+    do not read: the ``/easeoff`` and ``/utca`` datasets (the unloaded TCA's contact
+    curves over 30 rolls of 3 pairs) and the analysis tree (issue 75: the same metrics,
+    bit for bit, tests/test_development.py)."""
+    from contact.ltca import loaded_tca
+    from contact.utca.easeoff import ease_off
 
     c = case if misalignment is None else dataclasses.replace(case, misalignment=misalignment)
     if teeth is not None:
         options = dataclasses.replace(options, compliance=teeth.compliance(pinion_key))
-    tree = run_analysis(c, torques, flank=flank, options=options, deviations=False,
-                        steps=AnalysisChain.contact_only())
-    return design_metrics(tree, c), (*grid_bounds(tree), static_strength(tree))
+    eo = ease_off(c, flank=flank)
+    ltca = loaded_tca(c, torques, flank=flank, options=options, easeoff=eo)
+    return ltca_metrics(ltca, c), (*grid_bounds(ltca), static_strength(ltca))
 
 
 class StageStop(Exception):

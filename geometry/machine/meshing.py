@@ -465,43 +465,54 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float):
     The passes in order: the profile section first (the middle of a flank), then the
     others; on each, the reference roll position (q = 0, the settings normally place the
     mean point there), then q in [−0.5, 0.5] rad. The seed is the first pass's root inside
-    its section. Newton runs on the candidates of all passes in one batch (each point's
-    Newton is independent of the batch, so the root is the one the passes run one by one
-    find, bit for bit; a profile-section target costs a few more points per iteration, a
-    relief-section one a single run instead of up to eight); the candidate grids are
-    memoised (:func:`_candidate_grid`), and the seeds too (:func:`_memo_seed`, which
-    the solver calls).
+    its section. Newton runs on the first pass's candidates, then, where they give no
+    seed, on the candidates of all the other passes in one batch (each point's Newton is
+    independent of the batch, so the root is the one the passes run one by one find, bit
+    for bit; a relief-section target costs two runs instead of up to eight); the
+    candidate grids are memoised (:func:`_candidate_grid`), and the seeds too
+    (:func:`_memo_seed`, which the solver calls). The first pass alone (issue 75): its
+    grid has 648 points, a wide pass's 13 608, and a new tool (each trial of a
+    development) built every pass's grid for a seed the first pass gives.
     """
-    x0, ks, passes, sizes = _seed_starts(ctx, z0, p0, depth)
-    n = int(ks.size)
-    x, ok = _newton(ctx, x0, ks, np.full(n, z0), np.full(n, p0))
     sec = ctx.sections
     s_max = sec.s_lo[sec.main] + 4.0 * depth + 5.0
-    at = 0
-    for (k, _), size in zip(passes, sizes, strict=True):
-        sl = slice(at, at + size)
-        at += size
-        row = _pick_seed(ctx, x[sl], ok[sl], k, s_max)
-        if row is not None:
-            return _reference(ctx, x[sl][row], k, z0, p0)
+    passes = _seed_passes(ctx)
+    for group in (passes[:1], passes[1:]):
+        if not group:
+            continue
+        x0, ks, sizes = _seed_starts(ctx, z0, p0, depth, group)
+        n = int(ks.size)
+        x, ok = _newton(ctx, x0, ks, np.full(n, z0), np.full(n, p0))
+        at = 0
+        for (k, _), size in zip(group, sizes, strict=True):
+            sl = slice(at, at + size)
+            at += size
+            row = _pick_seed(ctx, x[sl], ok[sl], k, s_max)
+            if row is not None:
+                return _reference(ctx, x[sl][row], k, z0, p0)
     raise InputError(
         "machine settings: no envelope solution at the middle of the flank "
         f"(axial position {z0:.4g} mm, radius {p0:.4g} mm): the cutter does not generate "
         "a tooth surface inside the blank with these settings")
 
 
-def _seed_starts(ctx: _Context, z0: float, p0: float, depth: float):
-    """The seed search's Newton starts for one target (:func:`_seed`): starts (n, m), their
-    sections (n,), the passes [(section, wide)] in order and the number of starts of
-    each."""
+def _seed_passes(ctx: _Context) -> list[tuple[int, bool]]:
+    """The seed search's passes [(section, wide)] in order (:func:`_seed`)."""
     sec = ctx.sections
     spreads = [False, True] if ctx.generate else [False]
     order = [sec.main] + [k for k in range(len(sec.s_lo)) if k != sec.main]
-    passes = [(k, wide) for k in order for wide in spreads]
+    return [(k, wide) for k in order for wide in spreads]
+
+
+def _seed_starts(ctx: _Context, z0: float, p0: float, depth: float,
+                 passes: list[tuple[int, bool]]):
+    """The seed search's Newton starts for one target (:func:`_seed`) on ``passes``
+    [(section, wide)]: starts (n, m), their sections (n,) and the number of starts of
+    each pass."""
     x0 = [_seed_candidates(ctx, z0, p0, depth, wide, k) for k, wide in passes]
     sizes = [len(a) for a in x0]
     ks = np.repeat([k for k, _ in passes], sizes)
-    return np.concatenate(x0), ks, passes, sizes
+    return np.concatenate(x0), ks, sizes
 
 
 #: seed searches memoised per process (the ease-off's late placement iterations repeat the

@@ -271,8 +271,12 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
                 return line
         return generated_root_line(b, s, blank, hand, u)
 
+    whole: dict = {}  # the whole search's root line of the last (b, s) it searched
+
     def highest(b: Blade, s: MachineSettings) -> tuple[float, float]:
         line = root_line(b, s)
+        whole.clear()
+        whole[(id(b), id(s))] = (b, s, line)
         if not np.all(np.isfinite(line.depth)):
             bad = line.u[~np.isfinite(line.depth)]
             raise InputError(f"{blade.side} blade: its root line is not generated at face "
@@ -331,4 +335,8 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     else:
         raise InputError(f"{blade.side} blade: the tip plane does not converge onto the "
                          f"root cone (highest root-line point {top:.3g} mm below it)")
-    return TipPlacement(b, s, moved, u_top, root_line(b, s))
+    # the placed root line: the last whole search's where it searched this placement
+    # (the same call, the same line), else computed
+    kept = whole.get((id(b), id(s)))
+    line = kept[2] if kept is not None and kept[0] is b and kept[1] is s else root_line(b, s)
+    return TipPlacement(b, s, moved, u_top, line)
