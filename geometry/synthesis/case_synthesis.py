@@ -109,6 +109,8 @@ from geometry.synthesis.gear import (
     case_blank,
     flank_point,
     gear_formate_tools,
+    gear_generate_tools,
+    generating_ratio_of_roll,
     slot_width_at_root,
 )
 from geometry.synthesis.local import LocalSynthesis, local_synthesis
@@ -126,6 +128,7 @@ __all__ = [
     "SYNTHESIS_STEPS",
     "FlankSynthesis",
     "SynthesisReport",
+    "gear_process_of",
     "synthesize",
 ]
 
@@ -248,6 +251,44 @@ SYNTHESIS_STEPS = 10
 FORMATE_PITCH_ANGLE_LIMIT = 63.0
 
 
+def gear_process_of(basic: BasicDesign) -> str:
+    """The gear's process a synthesis of ``basic`` uses: ``"Formate"`` or ``"Generate"``.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+
+    Returns
+    -------
+    str
+        ``basic.options.gear_process`` where it is given as ``"Formate"`` or
+        ``"Generate"``; for ``"auto"`` (the default) ``"Generate"`` where the gear pitch
+        angle δ2 is below :data:`FORMATE_PITCH_ANGLE_LIMIT` and the gear is face milled
+        (z0 = 0), else ``"Formate"`` (so every pair a Formate gear can be made for keeps
+        it, and its synthesis is unchanged).
+
+    Raises
+    ------
+    InputError
+        As :meth:`BasicDesign.blank` (an ISO 23509 blank that cannot be made), for
+        ``"auto"`` only.
+    """
+    given = basic.options.gear_process
+    if given != "auto":
+        return given
+    return _resolved_process(given, basic.blank())
+
+
+def _resolved_process(given: str, geom: BlankGeometry) -> str:
+    """:func:`gear_process_of` for an option value and the pair's blank."""
+    if given != "auto":
+        return given
+    if geom.design.z0:
+        return "Formate"
+    return ("Generate" if math.degrees(geom.pitch.delta2) < FORMATE_PITCH_ANGLE_LIMIT
+            else "Formate")
+
+
 def formate_limit_hint(basic: BasicDesign) -> str:
     """Why a synthesis of a low-ratio pair may have no solution: its Formate gear.
 
@@ -275,19 +316,23 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     """
     try:
         pitch = basic.blank().pitch
+        process = gear_process_of(basic)
     except InputError:
         return ""
     delta2 = math.degrees(pitch.delta2)
-    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT:
+    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT or process != "Formate":
         return ""
     d = basic.design
+    remedy = ("a generated gear (gear_process 'Generate', face milling only) is what such a "
+              "pair needs" if d.z0 else
+              "a generated gear (gear_process 'Generate' or 'auto', the default) is what such "
+              "a pair needs")
     return (f"the gear is Formate (non-generated) and its pitch angle is delta2 = "
             f"{delta2:.1f} deg (ratio z2/z1 = {d.z2 / d.z1:.2f}): below about "
             f"{FORMATE_PITCH_ANGLE_LIMIT:g} deg the Formate gear's deep working depth does not "
-            "meet the surface of action, and a generated gear (gear_process 'Generate', not "
-            "implemented) is what such a pair needs; a higher ratio, a larger shaft angle or a "
-            "smaller c_ham (the gear's addendum share) moves it within reach "
-            "(docs/synthesis.md, 'Limits')")
+            f"meet the surface of action, and {remedy}; a higher ratio, a larger shaft angle "
+            "or a smaller c_ham (the gear's addendum share) moves it within reach "
+            "(docs/synthesis.md, 'Known limits')")
 
 
 def synthesize(basic: BasicDesign, *, conjugate: bool = False,
@@ -375,7 +420,6 @@ def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
                 tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
     """The body of :func:`synthesize` (its parameters, returns and steps)."""
     say = progress if progress is not None else (lambda _step: None)
-    say("blanks (ISO 23509) and the Formate gear")
     opt = basic.options
     # the memo's entries of this design: every input but the pinion flanks' prescriptions
     # (basic.blank().design is basic.design)
@@ -389,15 +433,18 @@ def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
         geom = kept["blank"] = basic.blank()
     design = geom.design
     pitch = geom.pitch
+    process = _resolved_process(opt.gear_process, geom)
+    say(f"blanks (ISO 23509) and the {'Formate' if process == 'Formate' else 'generated'} "
+        "gear")
     rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
     alpha_d = opt.blade_angle_drive if opt.blade_angle_drive is not None else pitch.alpha_nD
     alpha_c = opt.blade_angle_coast if opt.blade_angle_coast is not None else pitch.alpha_nC
     drive = opt.drive_flank
     coast = _OTHER[drive]
-    gear = gear_formate_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
-                              blade_angle_coast=alpha_c, point_width=opt.point_width,
-                              edge_radius=opt.edge_radius, drive_flank=drive,
-                              blade_groups=design.z0)
+    gear_tools = gear_generate_tools if process == "Generate" else gear_formate_tools
+    gear = gear_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
+                      blade_angle_coast=alpha_c, point_width=opt.point_width,
+                      edge_radius=opt.edge_radius, drive_flank=drive, blade_groups=design.z0)
     pinion_hand = design.hand
     gear_hand = "right" if pinion_hand == "left" else "left"
     pair = _PairData(geom, gear, blank(geom.pinion), blank(geom.gear), pinion_hand,
@@ -563,14 +610,41 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
     # to face the pinion (Litvin & Fuentes 2004 ch. 20); face hobbing: the cutter at the
     # spin that cuts M (the work indexes with the spin)
     z0 = pair.gear.blade_groups
-    cg, ug = cutter_pose(pair.gear.settings, 0.0, float(gp.params[1]) if z0 else 0.0)
+    gs = pair.gear.settings
+    generated = gs.process == "Generate"
+    # a generated gear: the gear's cutter where it generates M (roll q_M)
+    q_m = float(gp.params[2]) if generated else 0.0
+    cg, ug = cutter_pose(gs, q_m, float(gp.params[1]) if z0 else 0.0)
     if pair.gear_hand == "left":
         cg, ug = _MIRROR @ cg, _MIRROR @ ug
     cg = mir @ rot.T @ (tg[:3, :3] @ cg + tg[:3, 3] - tp[:3, 3])
     ug = mir @ rot.T @ (tg[:3, :3] @ ug)
     u_p = -ug
-    cradle_point = mir @ rot.T @ (tg[:3, 3] - tp[:3, 3])
-    cradle_axis = -(mir @ rot.T @ tg[:3, 2])
+    ratio_of_roll = geom.gear.z / geom.pinion.z
+    if generated:
+        # the pinion rolled on its own crown gear (Litvin & Fuentes 2004 ch. 20; Stadtfeld
+        # 2014): machine root angle = the pinion root angle, the cradle axis normal to the
+        # plane that touches the root cone along M's root generatrix, its point at the root
+        # apex, ratio of roll cos θ_f1 / sin δ1, an untilted cutter (axis = cradle axis)
+        # touching M, whose blade angle follows from M's normal; the local synthesis's
+        # mismatch by the same three unknowns as for a Formate gear
+        pb = pair.pinion_blank
+        psi = math.atan2(m_loc[1], m_loc[0])
+        df1 = pb.root_angle
+        cradle_axis = np.array([-math.cos(df1) * math.cos(psi),
+                                -math.cos(df1) * math.sin(psi), math.sin(df1)])
+        cradle_point = np.array([0.0, 0.0, -pb.root_apex])
+        ratio_of_roll = generating_ratio_of_roll(geom.pinion)
+        u_p = cradle_axis
+        sin_a = -float(n_loc @ u_p)
+        if not 0.0 < sin_a < 0.9:
+            raise InputError(f"synthesis: the pinion {pf} flank's normal at M makes no blade "
+                             f"angle with its crown gear's cutter axis (sin = {sin_a:.3g})")
+        blade_angle = math.asin(sin_a)
+    else:
+        blade_angle = gblade.blade_angle
+        cradle_point = mir @ rot.T @ (tg[:3, 3] - tp[:3, 3])
+        cradle_axis = -(mir @ rot.T @ tg[:3, 2])
     # tip plane: through the pinion root below M, plus the rise of the gear face over half
     # the face width so that the gear tip clears the pinion root at the heel (the tip
     # plane is not parallel to the pinion root cone)
@@ -583,14 +657,15 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
             m_loc, n_loc, w_loc, side=FLANKS[pf], gear_cutter_centre=cg,
             gear_cutter_axis=ug, gear_edge_direction=mir @ rot.T @ tg[:3, :3] @ gp.r_s,
             tip_height=h_m, cradle_point=cradle_point, cradle_axis=cradle_axis,
-            ratio_of_roll=geom.gear.z / geom.pinion.z, blade_groups=z0,
+            ratio_of_roll=ratio_of_roll, blade_groups=z0,
             pinion_blank=pair.pinion_blank, edge_radius=edge_radius)
     sigma = 1 if FLANKS[pf] == "outside" else -1
+    # the gear cutter's radius at M (a generated gear's at q_M): the start's point radius
     rho_m = float(np.linalg.norm(np.cross(m_loc - cg, ug)))
     return pinion_generate_tools(
-        m_loc, n_loc, w_loc, side=FLANKS[pf], blade_angle=gblade.blade_angle,
+        m_loc, n_loc, w_loc, side=FLANKS[pf], blade_angle=blade_angle,
         cutter_axis=u_p, tip_height=h_m, cradle_point=cradle_point,
-        cradle_axis=cradle_axis, ratio_of_roll=geom.gear.z / geom.pinion.z,
+        cradle_axis=cradle_axis, ratio_of_roll=ratio_of_roll,
         point_radius=rho_m - sigma * h_m * math.tan(gblade.blade_angle),
         pinion_blank=pair.pinion_blank, edge_radius=edge_radius)
 
@@ -674,6 +749,21 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             "roll (cutter centre, blade phase and blade angle solved so that the generating "
             "surface touches M with its normal, cradle shifted to keep M generated at roll "
             "0)")
+    elif gear.settings.process == "Generate":
+        parts.append(
+            "Gear Generate, one spread-blade cutter "
+            "(geometry.synthesis.gear.gear_generate_tools): at roll 0 the Formate gear's "
+            "cutter position (gamma_m = root angle, root apex at the machine centre, "
+            "S_r^2 = R_mf^2 + r_c0^2 - 2 R_mf r_c0 sin(beta_m2), q_c = atan2(r_c0 cos "
+            "beta_m2, R_mf - r_c0 sin beta_m2)), ratio of roll cos(theta_f2)/sin(delta2) "
+            f"= {_fmt(gear.settings.ratio_of_roll, 6)} (the pitch cone rolling on the "
+            f"crown gear), R_mf {_fmt(gear.mean_root_cone_distance, 6)} mm, r_c0 "
+            f"{_fmt(gear.cutter_radius, 6)} mm, point width {_fmt(gear.point_width, 5)} mm.")
+        generating = (
+            "generating gear = the gear's own crown gear (its cradle and cutter where they "
+            "generate M, the cradle axis reversed to face the pinion, ratio of roll "
+            "z2/z1 times the gear's), mismatch by the pinion point radius, a circular blade "
+            "profile and the ratio of roll (cradle shifted to keep M generated at roll 0)")
     else:
         parts.append(
             "Gear Formate, one spread-blade cutter "
@@ -730,7 +820,9 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
                 "the local synthesis; rotations are the member rotations of "
                 "geometry.pair.assembly at which the pair touches at M (pinion frame as "
                 "generated, i.e. turned by -pinion_blank_phase from the design frame)",
-        "method": "Litvin local synthesis (Formate gear, generated pinion)",
+        "method": ("Litvin local synthesis (Formate gear, generated pinion)"
+                   if gear.settings.process == "Formate" else
+                   "Litvin local synthesis (generated gear, generated pinion)"),
         "mean_normal_backlash_mm": geom.j_mn,
     }
     for pf, fs in flanks.items():
@@ -772,7 +864,7 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             "machine": {f: _settings_table(flanks[f].tools.settings) for f in FLANKS},
         },
         "gear": {
-            "process": "Formate", "blank": case_blank(geom.gear),
+            "process": gear.settings.process, "blank": case_blank(geom.gear),
             "cutter": _cutter_table(gear.blades, gear.blade_groups, gear.cutter_radius),
             "machine": {f: _settings_table(gear.settings) for f in FLANKS},
         },
