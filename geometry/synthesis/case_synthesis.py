@@ -8,12 +8,15 @@ From a :class:`geometry.synthesis.basic_design.BasicDesign` this module builds a
 (:class:`geometry.case.Case`):
 
 1. **Blanks** of both members from ISO 23509 (:func:`geometry.iso23509.blank.blank_geometry`).
-2. **Gear, Formate** (:func:`gear_formate_tools`): the cutter surface is the gear's tooth
-   slot. Machine root angle γ_m = root angle δ_f2, root apex at the machine centre, cutter
-   centre from the mean root cone distance R_mf, the mean spiral angle β_m2 and the cutter
-   radius r_c0 (S_r² = R_mf² + r_c0² − 2 R_mf r_c0 sin β_m2, q_c = atan2(r_c0 cos β_m2,
-   R_mf − r_c0 sin β_m2)); point width from the slot width at the mean point; one
-   spread-blade cutter cuts both flanks.
+2. **Gear, Formate** (:func:`gear_formate_tools`; below a gear pitch angle of
+   :data:`FORMATE_PITCH_ANGLE_LIMIT` the generated gear of
+   :func:`geometry.synthesis.gear.gear_generate_tools`, the same cutter position at roll 0
+   rolled at cos θ_f2/sin δ2, ``docs/synthesis.md``, "Generated gear"): the cutter surface
+   is the gear's tooth slot. Machine root angle γ_m = root angle δ_f2, root apex at the
+   machine centre, cutter centre from the mean root cone distance R_mf, the mean spiral
+   angle β_m2 and the cutter radius r_c0 (S_r² = R_mf² + r_c0² − 2 R_mf r_c0 sin β_m2, q_c =
+   atan2(r_c0 cos β_m2, R_mf − r_c0 sin β_m2)); point width from the slot width at the mean
+   point; one spread-blade cutter cuts both flanks.
 3. **Mean point M** of each pinion flank (:func:`design_point`, :func:`mean_point`): on the
    gear flank at the mean cone distance, centred in roll within the working depth (the
    point the ideal motion brings onto the surface of action halfway between the gear tip
@@ -69,6 +72,7 @@ design_point_of_case   the same for a case and pinion flank (from :mod:`geometry
 FlankPoint             flank points with tangents and curvature (from
                        :mod:`geometry.machine.flank_point`)
 gear_formate_tools     Formate gear blades and settings
+gear_process_of        the gear's process of a basic design (Formate or Generate)
 mean_point             mesh position of the gear mean point (surface of action)
 local_synthesis        pinion shape operator at M from the local-synthesis conditions
 pinion_generate_tools  pinion blade and settings that realise a shape operator at M
@@ -299,9 +303,10 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     Returns
     -------
     str
-        Empty where the gear pitch angle δ2 is at least :data:`FORMATE_PITCH_ANGLE_LIMIT`
-        (or the blank cannot be made); else a sentence naming δ2, the ratio and what to
-        change.
+        Empty where the gear pitch angle δ2 is at least :data:`FORMATE_PITCH_ANGLE_LIMIT`,
+        where the gear is generated (:func:`gear_process_of`) or where the blank cannot be
+        made; else (a Formate gear below the limit: forced by ``gear_process =
+        "Formate"``, or face hobbed) a sentence naming δ2, the ratio and what to change.
 
     Notes
     -----
@@ -310,9 +315,8 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     the deep part of such a working depth never meets the surface of action of the ideal
     motion (``geometry.pair.design_point``: no roll at which n·v⁽¹²⁾ = 0 there), so the mean
     point, the path of contact or the pinion's root line have no solution. Practice cuts
-    Formate gears at ratios above about 2.5 and generates both members below it; the
-    toolkit synthesises only the Formate gear / generated pinion pair
-    (:data:`geometry.synthesis.basic_design.PROCESSES`).
+    Formate gears at ratios above about 2.5 and generates both members below it, as
+    ``gear_process = "auto"`` does (face milling; :func:`gear_process_of`).
     """
     try:
         pitch = basic.blank().pitch
