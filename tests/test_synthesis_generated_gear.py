@@ -32,7 +32,7 @@ from geometry.pair.conventional_tca import conventional_tca
 from geometry.synthesis.basic_design import load_basic
 from geometry.synthesis.case_synthesis import (
     FORMATE_PITCH_ANGLE_LIMIT,
-    gear_process_of,
+    gear_processes,
     synthesize,
 )
 from geometry.synthesis.gear import gear_generate_tools, generating_ratio_of_roll
@@ -162,7 +162,7 @@ def test_miter_synthesises_with_a_generated_gear():
     (< 1e-4 mm, measured ~1e-10) with opposite normals (< 1e-5 rad)."""
     basic = load_basic(MITER)
     assert basic.options.gear_process == "auto"
-    assert gear_process_of(basic) == "Generate"
+    assert gear_processes(basic) == ("Formate", "Generate")
     case, report = _miter()
     assert case.gear.process == "Generate"
     assert report.gear.settings.ratio_of_roll > 1.0
@@ -198,14 +198,18 @@ def test_miter_synthesises_with_a_generated_gear():
 
 @pytest.mark.parametrize("flank", ["concave", "convex"])
 def test_miter_unloaded_te_is_the_prescribed_parabola(flank):
-    """Conventional TCA over ±pitch/4 (11 rolls) of the synthesised miter: the fitted
-    parabola's curvature is the prescribed a21 = 2 TE_level/(2π/z1)² within 10 % (the
-    default TE level), its vertex within 0.02 pitch of M — as for the Formate pairs
-    (tests/test_synthesis.py)."""
+    """Conventional TCA from −pitch/4 to +0.15 pitch (11 rolls) of the synthesised miter:
+    the fitted parabola's curvature is the prescribed a21 = 2 TE_level/(2π/z1)² within
+    10 % (measured 0.956 and 0.999 of it), its vertex within 0.02 pitch of M (measured
+    0.010 and 0.0003 pitch) — the Formate pairs' check (tests/test_synthesis.py) on a
+    range that stops short of +pitch/4: there the conventional TCA's continuation from M
+    fails from about +0.2 pitch on and at +pitch/4 lands on another contact (TE 70 and
+    18 µrad), although the modified roll's own solve put +pitch/4 on the parabola
+    (docs/synthesis.md, "Known limits")."""
     case, report = _miter()
     z1 = case.pinion.blank.teeth
     pitch = 2 * math.pi / z1
-    res = conventional_tca(case, np.linspace(-0.25, 0.25, 11) * pitch, flank=flank)
+    res = conventional_tca(case, np.linspace(-0.25, 0.15, 11) * pitch, flank=flank)
     assert res.converged.all()
     a21 = report.flanks[flank].a21
     c2, c1, _ = np.polyfit(res.pinion_roll, res.transmission_error, 2)
@@ -213,19 +217,23 @@ def test_miter_unloaded_te_is_the_prescribed_parabola(flank):
     assert abs(-c1 / (2 * c2)) < 0.02 * pitch
 
 
-def test_automatic_gear_process_keeps_formate_above_the_limit():
-    """Every bundled design file of tests/data/designs keeps its Formate gear under the
-    automatic default (their δ2 are at or above the limit, and face-hobbed ones stay
-    Formate), so their syntheses are unchanged; an explicit choice is kept as given."""
+def test_automatic_gear_process_tries_formate_first():
+    """Under the automatic default the synthesis tries the Formate gear first wherever
+    the gear pitch angle is below the limit and the gear is face milled (a generated gear
+    only where the Formate one has no solution), and only the Formate gear elsewhere, so
+    every design a Formate gear can be made for is synthesised as before — among the
+    designs of tests/data/designs the e-axle hypoid 11x39 at Σ 80° (δ2 below 63°) is one
+    (its committed syntheses are reproduced by tests/test_synthesis*.py); an explicit
+    choice is the only process tried."""
     for path in sorted((DATA / "designs").glob("*.toml")):
         basic = load_basic(path)
         delta2 = math.degrees(basic.blank().pitch.delta2)
-        want = ("Generate" if delta2 < FORMATE_PITCH_ANGLE_LIMIT and not basic.design.z0
-                else "Formate")
-        assert gear_process_of(basic) == want == "Formate", path.name
+        low = delta2 < FORMATE_PITCH_ANGLE_LIMIT and not basic.design.z0
+        assert gear_processes(basic) == (("Formate", "Generate") if low else ("Formate",))
     basic = load_basic(MITER)
-    forced = replace(basic, options=replace(basic.options, gear_process="Formate"))
-    assert gear_process_of(forced) == "Formate"
+    for given in ("Formate", "Generate"):
+        forced = replace(basic, options=replace(basic.options, gear_process=given))
+        assert gear_processes(forced) == (given,)
 
 
 def test_face_hobbed_generated_gear_is_refused_by_name():
@@ -248,7 +256,7 @@ def test_low_ratio_spiral_bevels_synthesise(name):
     realise the local synthesis's curvature at M (residual < 1e-8 1/mm, the step's own
     acceptance) and the case records a generated gear."""
     basic = load_basic(DATA / "generated_gear" / f"{name}.toml")
-    assert gear_process_of(basic) == "Generate"
+    assert gear_processes(basic) == ("Formate", "Generate")
     case, report = synthesize(basic)
     assert case.gear.process == "Generate"
     for fs in report.flanks.values():

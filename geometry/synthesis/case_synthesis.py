@@ -72,7 +72,7 @@ design_point_of_case   the same for a case and pinion flank (from :mod:`geometry
 FlankPoint             flank points with tangents and curvature (from
                        :mod:`geometry.machine.flank_point`)
 gear_formate_tools     Formate gear blades and settings
-gear_process_of        the gear's process of a basic design (Formate or Generate)
+gear_processes         the gear processes a synthesis tries (Formate, then Generate)
 mean_point             mesh position of the gear mean point (surface of action)
 local_synthesis        pinion shape operator at M from the local-synthesis conditions
 pinion_generate_tools  pinion blade and settings that realise a shape operator at M
@@ -132,7 +132,7 @@ __all__ = [
     "SYNTHESIS_STEPS",
     "FlankSynthesis",
     "SynthesisReport",
-    "gear_process_of",
+    "gear_processes",
     "synthesize",
 ]
 
@@ -255,8 +255,8 @@ SYNTHESIS_STEPS = 10
 FORMATE_PITCH_ANGLE_LIMIT = 63.0
 
 
-def gear_process_of(basic: BasicDesign) -> str:
-    """The gear's process a synthesis of ``basic`` uses: ``"Formate"`` or ``"Generate"``.
+def gear_processes(basic: BasicDesign) -> tuple[str, ...]:
+    """The gear processes a synthesis of ``basic`` tries, in order.
 
     Parameters
     ----------
@@ -264,12 +264,13 @@ def gear_process_of(basic: BasicDesign) -> str:
 
     Returns
     -------
-    str
-        ``basic.options.gear_process`` where it is given as ``"Formate"`` or
-        ``"Generate"``; for ``"auto"`` (the default) ``"Generate"`` where the gear pitch
-        angle δ2 is below :data:`FORMATE_PITCH_ANGLE_LIMIT` and the gear is face milled
-        (z0 = 0), else ``"Formate"`` (so every pair a Formate gear can be made for keeps
-        it, and its synthesis is unchanged).
+    tuple of str
+        ``(gear_process,)`` where ``basic.options.gear_process`` is ``"Formate"`` or
+        ``"Generate"``; for ``"auto"`` (the default) ``("Formate", "Generate")`` where the
+        gear pitch angle δ2 is below :data:`FORMATE_PITCH_ANGLE_LIMIT` and the gear is face
+        milled (z0 = 0) — the Formate gear first, the generated gear where the Formate
+        synthesis has no solution — else ``("Formate",)``. Every pair a Formate gear can be
+        made for keeps it, and its synthesis is unchanged.
 
     Raises
     ------
@@ -279,18 +280,11 @@ def gear_process_of(basic: BasicDesign) -> str:
     """
     given = basic.options.gear_process
     if given != "auto":
-        return given
-    return _resolved_process(given, basic.blank())
-
-
-def _resolved_process(given: str, geom: BlankGeometry) -> str:
-    """:func:`gear_process_of` for an option value and the pair's blank."""
-    if given != "auto":
-        return given
-    if geom.design.z0:
-        return "Formate"
-    return ("Generate" if math.degrees(geom.pitch.delta2) < FORMATE_PITCH_ANGLE_LIMIT
-            else "Formate")
+        return (given,)
+    if basic.design.z0:
+        return ("Formate",)
+    delta2 = math.degrees(basic.blank().pitch.delta2)
+    return ("Formate", "Generate") if delta2 < FORMATE_PITCH_ANGLE_LIMIT else ("Formate",)
 
 
 def formate_limit_hint(basic: BasicDesign) -> str:
@@ -304,8 +298,8 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     -------
     str
         Empty where the gear pitch angle δ2 is at least :data:`FORMATE_PITCH_ANGLE_LIMIT`,
-        where the gear is generated (:func:`gear_process_of`) or where the blank cannot be
-        made; else (a Formate gear below the limit: forced by ``gear_process =
+        where a generated gear is tried after it (:func:`gear_processes`) or where the blank
+        cannot be made; else (a Formate gear below the limit: forced by ``gear_process =
         "Formate"``, or face hobbed) a sentence naming δ2, the ratio and what to change.
 
     Notes
@@ -316,15 +310,15 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     motion (``geometry.pair.design_point``: no roll at which n·v⁽¹²⁾ = 0 there), so the mean
     point, the path of contact or the pinion's root line have no solution. Practice cuts
     Formate gears at ratios above about 2.5 and generates both members below it, as
-    ``gear_process = "auto"`` does (face milling; :func:`gear_process_of`).
+    ``gear_process = "auto"`` does (face milling; :func:`gear_processes`).
     """
     try:
         pitch = basic.blank().pitch
-        process = gear_process_of(basic)
+        processes = gear_processes(basic)
     except InputError:
         return ""
     delta2 = math.degrees(pitch.delta2)
-    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT or process != "Formate":
+    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT or processes != ("Formate",):
         return ""
     d = basic.design
     remedy = ("a generated gear (gear_process 'Generate', face milling only) is what such a "
@@ -409,8 +403,8 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
     j_mn at M).
     """
     try:
-        return _synthesize(basic, conjugate=conjugate, progress=progress, memo=memo,
-                           tip_planes=tip_planes)
+        return _synthesize_tried(basic, conjugate=conjugate, progress=progress, memo=memo,
+                                 tip_planes=tip_planes)
     except InputError as err:
         hint = formate_limit_hint(basic)
         if not hint or hint in str(err):
@@ -418,17 +412,53 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         raise InputError(f"{err}; {hint}") from err
 
 
-def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
+def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | None = None,
+                      memo: dict | None = None, **kw: Any) -> tuple[Case, SynthesisReport]:
+    """:func:`_synthesize` with each gear process of :func:`gear_processes` in turn: a
+    Formate gear that has no solution is followed by the generated gear. ``memo``: the
+    process that failed is kept (under the design's key) and not tried again; the
+    progress of a try that may be followed by another is held back until it succeeds."""
+    processes = gear_processes(basic)
+    failed = None
+    if memo is not None:
+        failed = memo.setdefault(("gear processes that failed", basic.design,
+                                  replace(basic.options, concave=FlankOptions(),
+                                          convex=FlankOptions())), set())
+        processes = tuple(p for p in processes if p not in failed) or processes[-1:]
+    for k, process in enumerate(processes):
+        last = k == len(processes) - 1
+        held: list[str] = []
+        try:
+            out = _synthesize(basic, process=process, memo=memo,
+                              progress=progress if last or progress is None else held.append,
+                              **kw)
+        except InputError:
+            if last:
+                raise
+            log.info("synthesis: the %s gear has no solution; trying %s", process,
+                     processes[k + 1])
+            if failed is not None:
+                failed.add(process)
+            continue
+        for line in held:
+            progress(line)
+        return out
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
                 progress: Callable[[str], None] | None = None,
                 memo: dict | None = None,
                 tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
-    """The body of :func:`synthesize` (its parameters, returns and steps)."""
+    """The body of :func:`synthesize` (its parameters, returns and steps) with the gear
+    process ``"Formate"`` or ``"Generate"``."""
     say = progress if progress is not None else (lambda _step: None)
     opt = basic.options
     # the memo's entries of this design: every input but the pinion flanks' prescriptions
     # (basic.blank().design is basic.design)
     kept = (None if memo is None else memo.setdefault(
-        (basic.design, replace(opt, concave=FlankOptions(), convex=FlankOptions())), {}))
+        (basic.design, replace(opt, concave=FlankOptions(), convex=FlankOptions()))
+        + (() if process == "Formate" else (process,)), {}))
     if kept is None:
         geom = basic.blank()
     elif "blank" in kept:
@@ -437,7 +467,6 @@ def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
         geom = kept["blank"] = basic.blank()
     design = geom.design
     pitch = geom.pitch
-    process = _resolved_process(opt.gear_process, geom)
     say(f"blanks (ISO 23509) and the {'Formate' if process == 'Formate' else 'generated'} "
         "gear")
     rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
