@@ -225,7 +225,8 @@ def test_automatic_gear_process_tries_formate_first():
     designs of tests/data/designs the e-axle hypoid 11x39 at Σ 80° (δ2 below 63°) is one
     (its committed syntheses are reproduced by tests/test_synthesis*.py); an explicit
     choice is the only process tried."""
-    for path in sorted((DATA / "designs").glob("*.toml")):
+    for path in sorted(p for p in (DATA / "designs").glob("*.toml")
+                       if not p.stem.endswith("_unrelieved")):  # those are cases
         basic = load_basic(path)
         delta2 = math.degrees(basic.blank().pitch.delta2)
         low = delta2 < FORMATE_PITCH_ANGLE_LIMIT and not basic.design.z0
