@@ -416,15 +416,14 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
                       memo: dict | None = None, **kw: Any) -> tuple[Case, SynthesisReport]:
     """:func:`_synthesize` with each gear process of :func:`gear_processes` in turn: a
     Formate gear that has no solution is followed by the generated gear. ``memo``: the
-    process that failed is kept (under the design's key) and not tried again; the
-    progress of a try that may be followed by another is held back until it succeeds."""
-    processes = gear_processes(basic)
-    failed = None
-    if memo is not None:
-        failed = memo.setdefault(("gear processes that failed", basic.design,
-                                  replace(basic.options, concave=FlankOptions(),
-                                          convex=FlankOptions())), set())
-        processes = tuple(p for p in processes if p not in failed) or processes[-1:]
+    first process that succeeds is kept (under the design's key, whatever the pinion
+    prescriptions) and is the only one tried by later syntheses, so a development's
+    trials keep one gear and a trial that fails fails as before; the progress of a try
+    that may be followed by another is held back until it succeeds."""
+    key = ("gear process", basic.design,
+           replace(basic.options, concave=FlankOptions(), convex=FlankOptions()))
+    decided = None if memo is None else memo.get(key)
+    processes = (decided,) if decided else gear_processes(basic)
     for k, process in enumerate(processes):
         last = k == len(processes) - 1
         held: list[str] = []
@@ -437,9 +436,9 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
                 raise
             log.info("synthesis: the %s gear has no solution; trying %s", process,
                      processes[k + 1])
-            if failed is not None:
-                failed.add(process)
             continue
+        if memo is not None:
+            memo[key] = process
         for line in held:
             progress(line)
         return out
