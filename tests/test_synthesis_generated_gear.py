@@ -263,3 +263,43 @@ def test_low_ratio_spiral_bevels_synthesise(name):
     for fs in report.flanks.values():
         assert fs.tools.shape_error < 1e-8
         assert fs.tools.settings.process == "Generate"
+
+
+def test_auto_tries_formate_then_generate_and_a_memo_keeps_the_first_success(monkeypatch):
+    """The order of the automatic tries and what a memo keeps, with the synthesis body
+    replaced by a stub (no geometry): a Formate failure is followed by the generated gear
+    and its held-back progress is dropped; under a memo the process that succeeded is the
+    only one tried next, and a later failure of it is raised, not switched."""
+    import geometry.synthesis.case_synthesis as cs
+    from geometry.core.errors import InputError
+
+    tried: list[str] = []
+    fail = {"Formate"}
+
+    def body(basic, *, process, progress=None, memo=None, **kw):
+        tried.append(process)
+        if progress is not None:
+            progress(f"step of {process}")
+        if process in fail:
+            raise InputError(f"no {process} solution")
+        return process, None
+
+    monkeypatch.setattr(cs, "_synthesize", body)
+    basic = load_basic(MITER)
+    lines: list[str] = []
+    assert cs.synthesize(basic, progress=lines.append)[0] == "Generate"
+    assert tried == ["Formate", "Generate"] and lines == ["step of Generate"]
+    memo: dict = {}
+    tried.clear()
+    assert cs.synthesize(basic, memo=memo)[0] == "Generate"
+    assert cs.synthesize(basic, memo=memo)[0] == "Generate"
+    assert tried == ["Formate", "Generate", "Generate"]
+    # a memo that kept Formate: a later Formate failure is raised, not switched
+    fail.clear()
+    memo = {}
+    assert cs.synthesize(basic, memo=memo)[0] == "Formate"
+    fail.add("Formate")
+    tried.clear()
+    with pytest.raises(InputError, match="no Formate solution"):
+        cs.synthesize(basic, memo=memo)
+    assert tried == ["Formate"]
