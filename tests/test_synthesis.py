@@ -23,7 +23,7 @@ import pytest
 from contact.cli import main as ltca
 from contact.utca.easeoff import ease_off
 from geometry.case import load_case
-from geometry.core.errors import InputError, ModelUnavailableError
+from geometry.core.errors import InputError
 from geometry.machine.cradle import cutter_pose, roll_angle
 from geometry.machine.curvature import PrincipalCurvatures, relative_curvature, surface_curvatures
 from geometry.machine.family import generated_family
@@ -468,7 +468,7 @@ def test_committed_face_hobbed_cases_are_reproduced(name):
     ({"targets": {"Re3": 1.0}}, InputError, "targets.Re3"),
     ({"synthesis": {"pinion_process": "Formate", "gear_process": "Generate"}}, InputError,
      "process"),
-    ({"synthesis": {"gear_process": "Generate"}}, ModelUnavailableError, "not implemented"),
+    ({"synthesis": {"gear_process": "generated"}}, InputError, "synthesis.gear_process"),
     ({"synthesis": {"method": "FH"}}, InputError, r"synthesis.method: 'FH' needs design.z0"),
     ({"synthesis": {"method": "hob"}}, InputError, "synthesis.method: must be 'FM' or 'FH'"),
 ])

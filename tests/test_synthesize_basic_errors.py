@@ -49,20 +49,27 @@ def test_cli_says_the_basic_data_is_the_cause(tmp_path, capsys):
 
 
 def test_low_ratio_synthesis_error_names_the_formate_gear(tmp_path, capsys):
-    """A miter gear (δ2 45°): the synthesis has no mean point for a Formate gear; rc 2 with
-    the step's own error and why — the Formate gear below the measured pitch-angle limit, a
-    generated gear not implemented — naming what to change (ratio, shaft angle, c_ham)."""
+    """A miter gear (δ2 45°) with its gear forced Formate (``gear_process = "Formate"``):
+    the synthesis has no mean point; rc 2 with the step's own error and why — the Formate
+    gear below the measured pitch-angle limit, the generated gear (the automatic default)
+    being what such a pair needs — naming what else to change (ratio, shaft angle, c_ham).
+    Under the default (``"auto"``) the same file gets a generated gear and no such sentence
+    (its synthesis: tests/test_synthesis_generated_gear.py)."""
     from geometry.synthesis.basic_design import load_basic
     from geometry.synthesis.case_synthesis import FORMATE_PITCH_ANGLE_LIMIT, formate_limit_hint
 
     miter = Path(__file__).parent / "data" / "limits" / "spiral_bevel_20x20_miter.toml"
-    assert "delta2 = 45.0 deg (ratio z2/z1 = 1.00)" in formate_limit_hint(load_basic(miter))
-    rc = main(["synthesize", str(miter), "--no-development", "-o",
+    assert formate_limit_hint(load_basic(miter)) == ""
+    formate = tmp_path / "miter_formate.toml"
+    formate.write_text(miter.read_text(encoding="utf-8")
+                       + '\n[synthesis]\ngear_process = "Formate"\n', encoding="utf-8")
+    assert "delta2 = 45.0 deg (ratio z2/z1 = 1.00)" in formate_limit_hint(load_basic(formate))
+    rc = main(["synthesize", str(formate), "--no-development", "-o",
                str(tmp_path / "case.toml")])
     err = capsys.readouterr().err
     assert rc == 2
     assert f"below about {FORMATE_PITCH_ANGLE_LIMIT:g} deg" in err and "c_ham" in err
-    assert "Formate" in err and "not implemented" in err
+    assert "Formate" in err and "gear_process 'Generate' or 'auto'" in err
     # a design above the limit gets no such sentence (the 13x39: delta2 about 71 deg)
     assert formate_limit_hint(load_basic(DESIGNS / "spiral_bevel_13x39.toml")) == ""
 

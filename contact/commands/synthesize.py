@@ -26,9 +26,11 @@ def register(sub) -> None:
         help="machine settings of a face-milled or face-hobbed pair from basic design data "
              "(case TOML)",
         description="Read a basic design file (cases/basic/*.toml: ISO 23509 inputs, "
-        "targets, synthesis options), compute the blanks, the Formate gear settings and the "
-        "generated pinion by local synthesis, and write a complete case file. The process "
-        "follows the design's blade groups z0: 0 face milling, >= 1 face hobbing.",
+        "targets, synthesis options), compute the blanks, the Formate gear settings (a "
+        "generated gear where a low-ratio pair's Formate gear has no solution, "
+        "[synthesis] gear_process) and the generated pinion by local synthesis, and write a "
+        "complete case file. The process follows the design's blade groups z0: 0 face "
+        "milling, >= 1 face hobbing.",
     )
     p.add_argument("basic", nargs="?", default=None, metavar="BASIC",
                    help="basic design file (TOML, schema in docs/synthesis.md) or the name of "

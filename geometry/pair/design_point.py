@@ -27,7 +27,7 @@ from scipy.optimize import brentq
 from geometry.case import Blank, Case
 from geometry.core.errors import InputError
 from geometry.machine.cradle import MachineSettings
-from geometry.machine.cutter import Blade
+from geometry.machine.cutter import Blade, working_sections
 from geometry.machine.flank import blank_outline
 from geometry.machine.flank_point import flank_points
 from geometry.pair.assembly import member_transform
@@ -176,6 +176,17 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     if not pt.ok.all():
         raise InputError("synthesis: the gear flank is not generated along the working depth "
                          "at the mean cone distance")
+    if gear_settings.process == "Generate":
+        lo = _generated_flank_start(gear_blade, gear_settings, gear_blank, gear_hand, pm, up,
+                                    offs, pt.params[:, 3])
+        if lo > offs[0]:
+            offs = np.linspace(lo, hi, 9)
+            zp = pm + offs[:, None] * up
+            pt = flank_points(gear_blade, gear_settings, gear_blank, gear_hand, zp[:, 0],
+                              zp[:, 1])
+            if not pt.ok.all():
+                raise InputError("synthesis: the gear flank is not generated along the "
+                                 "working depth at the mean cone distance")
     q = action_rotation(pt.r, pt.n, pinion_blank, gear_blank, shaft_angle=shaft_angle,
                         offset=offset, gear_hand=gear_hand)
     if not np.all(np.isfinite(q)) or not (np.all(np.diff(q) > 0) or np.all(np.diff(q) < 0)):
@@ -185,6 +196,33 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     order = np.argsort(q)
     o = float(np.interp(target, q[order], offs[order]))
     return pm + o * up
+
+
+def _generated_flank_start(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
+                           pm: np.ndarray, up: np.ndarray, offs: np.ndarray,
+                           sections: np.ndarray) -> float:
+    """Lowest offset [mm] along the working-depth line ``pm + o up`` that a generated flank's
+    working blade sections cut: a generated gear's fillet (the envelope of the edge radius
+    in roll) rises above a Formate gear's and may reach into the working depth; the mean
+    point is centred on the flank above it. ``offs`` the sampled offsets, ``sections``
+    their blade sections (:func:`geometry.machine.cutter.profile_sections` index)."""
+    work = np.isin(sections, working_sections(blade))
+    if work[0]:
+        return float(offs[0])
+    if not work.any():
+        raise InputError("synthesis: the generated gear flank's fillet covers the working "
+                         "depth at the mean cone distance; give a smaller edge_radius")
+    k = int(np.argmax(work))
+    a, b = float(offs[k - 1]), float(offs[k])
+    for _ in range(30):  # bisection to ~1e-9 of the depth step
+        c = 0.5 * (a + b)
+        z, p = pm + c * up
+        pc = flank_points(blade, settings, blank, hand, [z], [p])
+        if pc.ok[0] and np.isin(pc.params[0, 3], working_sections(blade)):
+            b = c
+        else:
+            a = c
+    return b
 
 
 def design_point_of_case(case: Case, flank: str) -> np.ndarray:

@@ -63,9 +63,12 @@ __all__ = [
     "with_flank_options",
 ]
 
-#: (gear, pinion) processes the synthesis implements
+#: (gear, pinion) processes the synthesis implements; a gear process ``"auto"`` (the
+#: default) is Formate where the gear pitch angle allows it and Generate below
+#: :data:`geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT`
 PROCESSES: dict[tuple[str, str], bool] = {("Formate", "Generate"): True,
-                                          ("Generate", "Generate"): False}
+                                          ("Generate", "Generate"): True,
+                                          ("auto", "Generate"): True}
 
 #: target name → (unit, value read from a blank geometry); angles in degrees
 TARGETS: dict[str, tuple[str, Callable[[BlankGeometry], float]]] = {
@@ -213,7 +216,10 @@ class SynthesisOptions:
     drive_flank : str
         Pinion flank that drives, ``"concave"`` (default) or ``"convex"``.
     gear_process, pinion_process : str
-        ``"Formate"`` and ``"Generate"`` (the only pair implemented).
+        Gear ``"Formate"``, ``"Generate"`` or ``"auto"`` (default: Formate where the gear
+        pitch angle δ2 is at least
+        :data:`geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT` or the gear is
+        face hobbed, Generate below it); pinion ``"Generate"``.
     cutter_radius : float or None — [mm]
         Nominal gear cutter radius r_c0; default the design's ``rc0``.
     blade_angle_drive, blade_angle_coast : float or None — [rad]
@@ -238,7 +244,7 @@ class SynthesisOptions:
     """
 
     drive_flank: str = "concave"
-    gear_process: str = "Formate"
+    gear_process: str = "auto"
     pinion_process: str = "Generate"
     cutter_radius: float | None = None
     blade_angle_drive: float | None = None

@@ -8,12 +8,15 @@ From a :class:`geometry.synthesis.basic_design.BasicDesign` this module builds a
 (:class:`geometry.case.Case`):
 
 1. **Blanks** of both members from ISO 23509 (:func:`geometry.iso23509.blank.blank_geometry`).
-2. **Gear, Formate** (:func:`gear_formate_tools`): the cutter surface is the gear's tooth
-   slot. Machine root angle γ_m = root angle δ_f2, root apex at the machine centre, cutter
-   centre from the mean root cone distance R_mf, the mean spiral angle β_m2 and the cutter
-   radius r_c0 (S_r² = R_mf² + r_c0² − 2 R_mf r_c0 sin β_m2, q_c = atan2(r_c0 cos β_m2,
-   R_mf − r_c0 sin β_m2)); point width from the slot width at the mean point; one
-   spread-blade cutter cuts both flanks.
+2. **Gear, Formate** (:func:`gear_formate_tools`; below a gear pitch angle of
+   :data:`FORMATE_PITCH_ANGLE_LIMIT` the generated gear of
+   :func:`geometry.synthesis.gear.gear_generate_tools`, the same cutter position at roll 0
+   rolled at cos θ_f2/sin δ2, ``docs/synthesis.md``, "Generated gear"): the cutter surface
+   is the gear's tooth slot. Machine root angle γ_m = root angle δ_f2, root apex at the
+   machine centre, cutter centre from the mean root cone distance R_mf, the mean spiral
+   angle β_m2 and the cutter radius r_c0 (S_r² = R_mf² + r_c0² − 2 R_mf r_c0 sin β_m2, q_c =
+   atan2(r_c0 cos β_m2, R_mf − r_c0 sin β_m2)); point width from the slot width at the mean
+   point; one spread-blade cutter cuts both flanks.
 3. **Mean point M** of each pinion flank (:func:`design_point`, :func:`mean_point`): on the
    gear flank at the mean cone distance, centred in roll within the working depth (the
    point the ideal motion brings onto the surface of action halfway between the gear tip
@@ -69,6 +72,7 @@ design_point_of_case   the same for a case and pinion flank (from :mod:`geometry
 FlankPoint             flank points with tangents and curvature (from
                        :mod:`geometry.machine.flank_point`)
 gear_formate_tools     Formate gear blades and settings
+gear_processes         the gear processes a synthesis tries (Formate, then Generate)
 mean_point             mesh position of the gear mean point (surface of action)
 local_synthesis        pinion shape operator at M from the local-synthesis conditions
 pinion_generate_tools  pinion blade and settings that realise a shape operator at M
@@ -109,6 +113,8 @@ from geometry.synthesis.gear import (
     case_blank,
     flank_point,
     gear_formate_tools,
+    gear_generate_tools,
+    generating_ratio_of_roll,
     slot_width_at_root,
 )
 from geometry.synthesis.local import LocalSynthesis, local_synthesis
@@ -126,6 +132,7 @@ __all__ = [
     "SYNTHESIS_STEPS",
     "FlankSynthesis",
     "SynthesisReport",
+    "gear_processes",
     "synthesize",
 ]
 
@@ -248,6 +255,38 @@ SYNTHESIS_STEPS = 10
 FORMATE_PITCH_ANGLE_LIMIT = 63.0
 
 
+def gear_processes(basic: BasicDesign) -> tuple[str, ...]:
+    """The gear processes a synthesis of ``basic`` tries, in order.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+
+    Returns
+    -------
+    tuple of str
+        ``(gear_process,)`` where ``basic.options.gear_process`` is ``"Formate"`` or
+        ``"Generate"``; for ``"auto"`` (the default) ``("Formate", "Generate")`` where the
+        gear pitch angle δ2 is below :data:`FORMATE_PITCH_ANGLE_LIMIT` and the gear is face
+        milled (z0 = 0) — the Formate gear first, the generated gear where the Formate
+        synthesis has no solution — else ``("Formate",)``. Every pair a Formate gear can be
+        made for keeps it, and its synthesis is unchanged.
+
+    Raises
+    ------
+    InputError
+        As :meth:`BasicDesign.blank` (an ISO 23509 blank that cannot be made), for
+        ``"auto"`` only.
+    """
+    given = basic.options.gear_process
+    if given != "auto":
+        return (given,)
+    if basic.design.z0:
+        return ("Formate",)
+    delta2 = math.degrees(basic.blank().pitch.delta2)
+    return ("Formate", "Generate") if delta2 < FORMATE_PITCH_ANGLE_LIMIT else ("Formate",)
+
+
 def formate_limit_hint(basic: BasicDesign) -> str:
     """Why a synthesis of a low-ratio pair may have no solution: its Formate gear.
 
@@ -258,9 +297,10 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     Returns
     -------
     str
-        Empty where the gear pitch angle δ2 is at least :data:`FORMATE_PITCH_ANGLE_LIMIT`
-        (or the blank cannot be made); else a sentence naming δ2, the ratio and what to
-        change.
+        Empty where the gear pitch angle δ2 is at least :data:`FORMATE_PITCH_ANGLE_LIMIT`,
+        where a generated gear is tried after it (:func:`gear_processes`) or where the blank
+        cannot be made; else (a Formate gear below the limit: forced by ``gear_process =
+        "Formate"``, or face hobbed) a sentence naming δ2, the ratio and what to change.
 
     Notes
     -----
@@ -269,25 +309,28 @@ def formate_limit_hint(basic: BasicDesign) -> str:
     the deep part of such a working depth never meets the surface of action of the ideal
     motion (``geometry.pair.design_point``: no roll at which n·v⁽¹²⁾ = 0 there), so the mean
     point, the path of contact or the pinion's root line have no solution. Practice cuts
-    Formate gears at ratios above about 2.5 and generates both members below it; the
-    toolkit synthesises only the Formate gear / generated pinion pair
-    (:data:`geometry.synthesis.basic_design.PROCESSES`).
+    Formate gears at ratios above about 2.5 and generates both members below it, as
+    ``gear_process = "auto"`` does (face milling; :func:`gear_processes`).
     """
     try:
         pitch = basic.blank().pitch
+        processes = gear_processes(basic)
     except InputError:
         return ""
     delta2 = math.degrees(pitch.delta2)
-    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT:
+    if delta2 >= FORMATE_PITCH_ANGLE_LIMIT or processes != ("Formate",):
         return ""
     d = basic.design
+    remedy = ("a generated gear (gear_process 'Generate', face milling only) is what such a "
+              "pair needs" if d.z0 else
+              "a generated gear (gear_process 'Generate' or 'auto', the default) is what such "
+              "a pair needs")
     return (f"the gear is Formate (non-generated) and its pitch angle is delta2 = "
             f"{delta2:.1f} deg (ratio z2/z1 = {d.z2 / d.z1:.2f}): below about "
             f"{FORMATE_PITCH_ANGLE_LIMIT:g} deg the Formate gear's deep working depth does not "
-            "meet the surface of action, and a generated gear (gear_process 'Generate', not "
-            "implemented) is what such a pair needs; a higher ratio, a larger shaft angle or a "
-            "smaller c_ham (the gear's addendum share) moves it within reach "
-            "(docs/synthesis.md, 'Limits')")
+            f"meet the surface of action, and {remedy}; a higher ratio, a larger shaft angle "
+            "or a smaller c_ham (the gear's addendum share) moves it within reach "
+            "(docs/synthesis.md, 'Known limits')")
 
 
 def synthesize(basic: BasicDesign, *, conjugate: bool = False,
@@ -360,8 +403,8 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
     j_mn at M).
     """
     try:
-        return _synthesize(basic, conjugate=conjugate, progress=progress, memo=memo,
-                           tip_planes=tip_planes)
+        return _synthesize_tried(basic, conjugate=conjugate, progress=progress, memo=memo,
+                                 tip_planes=tip_planes)
     except InputError as err:
         hint = formate_limit_hint(basic)
         if not hint or hint in str(err):
@@ -369,18 +412,52 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         raise InputError(f"{err}; {hint}") from err
 
 
-def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
+def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | None = None,
+                      memo: dict | None = None, **kw: Any) -> tuple[Case, SynthesisReport]:
+    """:func:`_synthesize` with each gear process of :func:`gear_processes` in turn: a
+    Formate gear that has no solution is followed by the generated gear. ``memo``: the
+    first process that succeeds is kept (under the design's key, whatever the pinion
+    prescriptions) and is the only one tried by later syntheses, so a development's
+    trials keep one gear and a trial that fails fails as before; the progress of a try
+    that may be followed by another is held back until it succeeds."""
+    key = ("gear process", basic.design,
+           replace(basic.options, concave=FlankOptions(), convex=FlankOptions()))
+    decided = None if memo is None else memo.get(key)
+    processes = (decided,) if decided else gear_processes(basic)
+    for k, process in enumerate(processes):
+        last = k == len(processes) - 1
+        held: list[str] = []
+        try:
+            out = _synthesize(basic, process=process, memo=memo,
+                              progress=progress if last or progress is None else held.append,
+                              **kw)
+        except InputError:
+            if last:
+                raise
+            log.info("synthesis: the %s gear has no solution; trying %s", process,
+                     processes[k + 1])
+            continue
+        if memo is not None and len(processes) > 1:  # (a single candidate needs no entry)
+            memo[key] = process
+        for line in held:
+            progress(line)
+        return out
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
                 progress: Callable[[str], None] | None = None,
                 memo: dict | None = None,
                 tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
-    """The body of :func:`synthesize` (its parameters, returns and steps)."""
+    """The body of :func:`synthesize` (its parameters, returns and steps) with the gear
+    process ``"Formate"`` or ``"Generate"``."""
     say = progress if progress is not None else (lambda _step: None)
-    say("blanks (ISO 23509) and the Formate gear")
     opt = basic.options
     # the memo's entries of this design: every input but the pinion flanks' prescriptions
     # (basic.blank().design is basic.design)
     kept = (None if memo is None else memo.setdefault(
-        (basic.design, replace(opt, concave=FlankOptions(), convex=FlankOptions())), {}))
+        (basic.design, replace(opt, concave=FlankOptions(), convex=FlankOptions()))
+        + (() if process == "Formate" else (process,)), {}))
     if kept is None:
         geom = basic.blank()
     elif "blank" in kept:
@@ -389,15 +466,17 @@ def _synthesize(basic: BasicDesign, *, conjugate: bool = False,
         geom = kept["blank"] = basic.blank()
     design = geom.design
     pitch = geom.pitch
+    say(f"blanks (ISO 23509) and the {'Formate' if process == 'Formate' else 'generated'} "
+        "gear")
     rc0 = opt.cutter_radius if opt.cutter_radius is not None else design.rc0
     alpha_d = opt.blade_angle_drive if opt.blade_angle_drive is not None else pitch.alpha_nD
     alpha_c = opt.blade_angle_coast if opt.blade_angle_coast is not None else pitch.alpha_nC
     drive = opt.drive_flank
     coast = _OTHER[drive]
-    gear = gear_formate_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
-                              blade_angle_coast=alpha_c, point_width=opt.point_width,
-                              edge_radius=opt.edge_radius, drive_flank=drive,
-                              blade_groups=design.z0)
+    gear_tools = gear_generate_tools if process == "Generate" else gear_formate_tools
+    gear = gear_tools(geom, cutter_radius=rc0, blade_angle_drive=alpha_d,
+                      blade_angle_coast=alpha_c, point_width=opt.point_width,
+                      edge_radius=opt.edge_radius, drive_flank=drive, blade_groups=design.z0)
     pinion_hand = design.hand
     gear_hand = "right" if pinion_hand == "left" else "left"
     pair = _PairData(geom, gear, blank(geom.pinion), blank(geom.gear), pinion_hand,
@@ -563,14 +642,41 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
     # to face the pinion (Litvin & Fuentes 2004 ch. 20); face hobbing: the cutter at the
     # spin that cuts M (the work indexes with the spin)
     z0 = pair.gear.blade_groups
-    cg, ug = cutter_pose(pair.gear.settings, 0.0, float(gp.params[1]) if z0 else 0.0)
+    gs = pair.gear.settings
+    generated = gs.process == "Generate"
+    # a generated gear: the gear's cutter where it generates M (roll q_M)
+    q_m = float(gp.params[2]) if generated else 0.0
+    cg, ug = cutter_pose(gs, q_m, float(gp.params[1]) if z0 else 0.0)
     if pair.gear_hand == "left":
         cg, ug = _MIRROR @ cg, _MIRROR @ ug
     cg = mir @ rot.T @ (tg[:3, :3] @ cg + tg[:3, 3] - tp[:3, 3])
     ug = mir @ rot.T @ (tg[:3, :3] @ ug)
     u_p = -ug
-    cradle_point = mir @ rot.T @ (tg[:3, 3] - tp[:3, 3])
-    cradle_axis = -(mir @ rot.T @ tg[:3, 2])
+    ratio_of_roll = geom.gear.z / geom.pinion.z
+    if generated:
+        # the pinion rolled on its own crown gear (Litvin & Fuentes 2004 ch. 20; Stadtfeld
+        # 2014): machine root angle = the pinion root angle, the cradle axis normal to the
+        # plane that touches the root cone along M's root generatrix, its point at the root
+        # apex, ratio of roll cos θ_f1 / sin δ1, an untilted cutter (axis = cradle axis)
+        # touching M, whose blade angle follows from M's normal; the local synthesis's
+        # mismatch by the same three unknowns as for a Formate gear
+        pb = pair.pinion_blank
+        psi = math.atan2(m_loc[1], m_loc[0])
+        df1 = pb.root_angle
+        cradle_axis = np.array([-math.cos(df1) * math.cos(psi),
+                                -math.cos(df1) * math.sin(psi), math.sin(df1)])
+        cradle_point = np.array([0.0, 0.0, -pb.root_apex])
+        ratio_of_roll = generating_ratio_of_roll(geom.pinion)
+        u_p = cradle_axis
+        sin_a = -float(n_loc @ u_p)
+        if not 0.0 < sin_a < 0.9:
+            raise InputError(f"synthesis: the pinion {pf} flank's normal at M makes no blade "
+                             f"angle with its crown gear's cutter axis (sin = {sin_a:.3g})")
+        blade_angle = math.asin(sin_a)
+    else:
+        blade_angle = gblade.blade_angle
+        cradle_point = mir @ rot.T @ (tg[:3, 3] - tp[:3, 3])
+        cradle_axis = -(mir @ rot.T @ tg[:3, 2])
     # tip plane: through the pinion root below M, plus the rise of the gear face over half
     # the face width so that the gear tip clears the pinion root at the heel (the tip
     # plane is not parallel to the pinion root cone)
@@ -583,14 +689,15 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
             m_loc, n_loc, w_loc, side=FLANKS[pf], gear_cutter_centre=cg,
             gear_cutter_axis=ug, gear_edge_direction=mir @ rot.T @ tg[:3, :3] @ gp.r_s,
             tip_height=h_m, cradle_point=cradle_point, cradle_axis=cradle_axis,
-            ratio_of_roll=geom.gear.z / geom.pinion.z, blade_groups=z0,
+            ratio_of_roll=ratio_of_roll, blade_groups=z0,
             pinion_blank=pair.pinion_blank, edge_radius=edge_radius)
     sigma = 1 if FLANKS[pf] == "outside" else -1
+    # the gear cutter's radius at M (a generated gear's at q_M): the start's point radius
     rho_m = float(np.linalg.norm(np.cross(m_loc - cg, ug)))
     return pinion_generate_tools(
-        m_loc, n_loc, w_loc, side=FLANKS[pf], blade_angle=gblade.blade_angle,
+        m_loc, n_loc, w_loc, side=FLANKS[pf], blade_angle=blade_angle,
         cutter_axis=u_p, tip_height=h_m, cradle_point=cradle_point,
-        cradle_axis=cradle_axis, ratio_of_roll=geom.gear.z / geom.pinion.z,
+        cradle_axis=cradle_axis, ratio_of_roll=ratio_of_roll,
         point_radius=rho_m - sigma * h_m * math.tan(gblade.blade_angle),
         pinion_blank=pair.pinion_blank, edge_radius=edge_radius)
 
@@ -674,6 +781,21 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             "roll (cutter centre, blade phase and blade angle solved so that the generating "
             "surface touches M with its normal, cradle shifted to keep M generated at roll "
             "0)")
+    elif gear.settings.process == "Generate":
+        parts.append(
+            "Gear Generate, one spread-blade cutter "
+            "(geometry.synthesis.gear.gear_generate_tools): at roll 0 the Formate gear's "
+            "cutter position (gamma_m = root angle, root apex at the machine centre, "
+            "S_r^2 = R_mf^2 + r_c0^2 - 2 R_mf r_c0 sin(beta_m2), q_c = atan2(r_c0 cos "
+            "beta_m2, R_mf - r_c0 sin beta_m2)), ratio of roll cos(theta_f2)/sin(delta2) "
+            f"= {_fmt(gear.settings.ratio_of_roll, 6)} (the pitch cone rolling on the "
+            f"crown gear), R_mf {_fmt(gear.mean_root_cone_distance, 6)} mm, r_c0 "
+            f"{_fmt(gear.cutter_radius, 6)} mm, point width {_fmt(gear.point_width, 5)} mm.")
+        generating = (
+            "generating gear = the gear's own crown gear (its cradle and cutter where they "
+            "generate M, the cradle axis reversed to face the pinion, ratio of roll "
+            "z2/z1 times the gear's), mismatch by the pinion point radius, a circular blade "
+            "profile and the ratio of roll (cradle shifted to keep M generated at roll 0)")
     else:
         parts.append(
             "Gear Formate, one spread-blade cutter "
@@ -730,7 +852,9 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
                 "the local synthesis; rotations are the member rotations of "
                 "geometry.pair.assembly at which the pair touches at M (pinion frame as "
                 "generated, i.e. turned by -pinion_blank_phase from the design frame)",
-        "method": "Litvin local synthesis (Formate gear, generated pinion)",
+        "method": ("Litvin local synthesis (Formate gear, generated pinion)"
+                   if gear.settings.process == "Formate" else
+                   "Litvin local synthesis (generated gear, generated pinion)"),
         "mean_normal_backlash_mm": geom.j_mn,
     }
     for pf, fs in flanks.items():
@@ -772,7 +896,7 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             "machine": {f: _settings_table(flanks[f].tools.settings) for f in FLANKS},
         },
         "gear": {
-            "process": "Formate", "blank": case_blank(geom.gear),
+            "process": gear.settings.process, "blank": case_blank(geom.gear),
             "cutter": _cutter_table(gear.blades, gear.blade_groups, gear.cutter_radius),
             "machine": {f: _settings_table(gear.settings) for f in FLANKS},
         },

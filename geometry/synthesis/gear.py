@@ -13,17 +13,20 @@ Public functions
 case_blank          ISO 23509 member blank → case blank
 GearTools           the gear's blades, settings and cutter
 gear_formate_tools  Formate gear blades and settings (FM and FH)
+gear_generate_tools generated gear: the Formate gear's cutter and settings with cradle roll
+generating_ratio_of_roll  the generated gear's ratio of roll (pitch cone on the crown gear)
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import NamedTuple
 
 import numpy as np
 
 from geometry.case import Blank
-from geometry.core.errors import InputError
+from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.iso23509.blank import BlankGeometry, MemberBlank
 from geometry.iso23509.pitch_cone import FaceHobbingTrace, face_hobbing_trace
 from geometry.machine.cradle import MachineSettings, indexing_ratio
@@ -35,6 +38,8 @@ __all__ = [
     "GearTools",
     "case_blank",
     "gear_formate_tools",
+    "gear_generate_tools",
+    "generating_ratio_of_roll",
     "mean_root_point",
     "slot_width_at_root",
 ]
@@ -265,6 +270,89 @@ def gear_formate_tools(geom: BlankGeometry, *, cutter_radius: float,
                                 rmf - cutter_radius * math.sin(beta)),
         machine_root_angle=g.delta_f, machine_center_to_back=g.t_zR)
     return GearTools(blades, settings, rmf, point_width, cutter_radius)
+
+
+def generating_ratio_of_roll(member: MemberBlank) -> float:
+    """Ratio of roll R_a of a member generated at the machine root angle γ_m = δ_f.
+
+    Parameters
+    ----------
+    member : geometry.iso23509.blank.MemberBlank — pitch angle δ, root angle δ_f [rad]
+
+    Returns
+    -------
+    float — [1] R_a = cos θ_f / sin δ (work rotation per cradle rotation), θ_f = δ − δ_f the
+    dedendum angle.
+
+    Notes
+    -----
+    With the cutter's tip plane on the root cone (γ_m = δ_f, root apex at the machine centre)
+    the generating crown gear's pitch cone has the half angle 90° − θ_f about the cradle
+    axis and touches the member's pitch cone along its pitch generatrix; the two cones roll
+    without slip when ω_work sin δ = ω_cradle cos θ_f (Litvin & Fuentes 2004, ch. 20, the
+    generating gear's pitch cone; Stadtfeld, *Gleason Bevel Gear Technology*, 2014, the
+    ratio of roll of a generated member, sin δ / cos θ_f as cradle per work rotation). The
+    generated flank then has the blade angle as its pressure angle at the pitch cone, as a
+    rack-generated spur gear has at its pitch circle.
+    """
+    return math.cos(member.delta - member.delta_f) / math.sin(member.delta)
+
+
+def gear_generate_tools(geom: BlankGeometry, *, cutter_radius: float,
+                        blade_angle_drive: float, blade_angle_coast: float,
+                        point_width: float | None, edge_radius: float | None,
+                        drive_flank: str = "concave", blade_groups: int = 0) -> GearTools:
+    """Blades and machine settings of a generated gear (face milling, completing).
+
+    Parameters
+    ----------
+    geom, cutter_radius, blade_angle_drive, blade_angle_coast, point_width, edge_radius,
+    drive_flank :
+        As :func:`gear_formate_tools`.
+    blade_groups : int
+        Must be 0: a face-hobbed generated gear is not implemented.
+
+    Returns
+    -------
+    GearTools
+        The Formate gear's blades (one spread-blade cutter, point width from the slot width
+        at the mean root) and settings (γ_m = δ_f2, X_p = t_zR2, S_r, q_c placing the slot
+        centre line through the mean root point with the spiral angle β_m2), with
+        ``process = "Generate"`` and the ratio of roll :func:`generating_ratio_of_roll`
+        (no modified roll, helical or vertical motion).
+
+    Raises
+    ------
+    ModelUnavailableError
+        For ``blade_groups`` ≥ 1 (face hobbing).
+    InputError
+        As :func:`gear_formate_tools`.
+
+    Notes
+    -----
+    Below a gear pitch angle of about 63° a Formate gear's straight flank does not meet the
+    surface of action over the deep part of its working depth (``docs/synthesis.md``,
+    "Known limits"); practice generates both members of such pairs (Stadtfeld, *Gleason
+    Bevel Gear Technology*, 2014; Litvin & Fuentes 2004, ch. 20, the generated gear of a
+    spiral bevel pair). At roll q = 0 the cutter stands where the Formate gear's does (its
+    tip plane on the root cone, the slot centre line through the mean root point with the
+    spiral angle β_m2); the crown gear it represents rolls on the gear's pitch cone, so the
+    slot width at the pitch cone is the crown gear's tooth thickness there,
+    W + h_fm (tan α_IB + tan α_OB) = π m_mn − s_mn2, and the gear's normal pressure angle
+    at the pitch cone is the blade angle.
+    """
+    if blade_groups:
+        raise ModelUnavailableError(
+            "synthesis.gear_process: 'Generate' is implemented for face milling (z0 = 0) "
+            f"only, got z0 = {blade_groups} blade groups (face hobbing); use gear_process "
+            "'Formate'")
+    tools = gear_formate_tools(geom, cutter_radius=cutter_radius,
+                               blade_angle_drive=blade_angle_drive,
+                               blade_angle_coast=blade_angle_coast, point_width=point_width,
+                               edge_radius=edge_radius, drive_flank=drive_flank)
+    settings = replace(tools.settings, process="Generate",
+                       ratio_of_roll=generating_ratio_of_roll(geom.gear))
+    return tools._replace(settings=settings)
 
 
 def _face_hobbing_gear_tools(g: MemberBlank, rmf: float, rc0: float, a_ob: float,
