@@ -184,9 +184,10 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     Returns
     -------
     str or None
-        E.g. "face contact ratio eps_vb 0.96 below 1.25 (...): a gear face width b2 of
-        30.0 mm (now 24) or a mean spiral angle beta_m of 40.8 deg (now 35), the other
-        kept, reaches 1.25".
+        E.g. "face contact ratio eps_vb 0.96 below 1.25 (...); a gear face width b2 of
+        30.1 mm (now 24, above the usual 0.3 R_e2 = 26.0 mm) or a mean spiral angle
+        beta_m of 42.5 deg (now 35), the other kept, reaches 1.25" (each value rounded up
+        to 0.1).
     """
     from geometry.core.errors import InputError
 
@@ -212,5 +213,5 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     return (f"face contact ratio eps_vb {r.eps_vb:.2f} below {r.target:g}, the least "
             "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
             "hands the load from pair to pair through one pair over much of the mesh cycle, "
-            "and no bearing keeps the LTE low at both light and design torque "
-            f"(docs/own_gear_set.md); {remedy}")
+            "which no bearing lever (TE level, ellipse, relief) changes (docs/own_gear_set.md, "
+            f"'A face contact ratio below 1.25'); {remedy}")
