@@ -419,8 +419,39 @@ def test_a_design_the_verdict_fails_on_its_spread_ranks_after_every_one_it_passe
     assert short_f["spread"] > 0.0 and short_p["spread"] == 0.0
     assert 0.56 > LTE_SPREAD_LIMIT > 0.36
     assert p < r < f < FAILED
-    # without the penalty the failing design would have won, as measured
-    assert f - VERDICT_FAIL_PENALTY < p
+    # without the penalty and with the worst torque's LTE alone weighed (the objective
+    # then) the failing design would have won, as measured; each torque's LTE weighed
+    # (lte_torque_terms) it no longer does
+    from contact.optimize.development_targets import lte_torque_terms
+
+    def worst_only(obj, m, short):
+        return obj - lte_torque_terms(m["lte_peak_to_peak"], t.max_lte) + short["lte"] ** 2
+
+    assert worst_only(f - VERDICT_FAIL_PENALTY, failing, short_f) < worst_only(p, passing,
+                                                                               short_p)
+    assert f - VERDICT_FAIL_PENALTY > p
+
+
+def test_the_lte_target_is_weighed_at_each_torque():
+    """Hand-computed: LTE 100 / 131 µrad against 40 → shortfalls 6.0 and 9.1 per 10 µrad;
+    ``lte`` reports the worst (9.1) and the objective holds both squares (36 + 82.81) plus
+    the tie-break 0.1 × 131/10; a design missing at one torque only scores as before (its
+    one square). The 17x29's measured pair at ``ltca run``'s sampling: 104 / 131 against
+    the longer pattern with the flatter parabola, 61 / 140 — the second wins."""
+    from contact.optimize.development_targets import lte_torque_terms
+
+    t = DevelopmentTargets()
+    obj, short, _ = development_score(_metrics(lte_peak_to_peak=[100.0, 131.0]), t,
+                                      centre_v=0.6)
+    assert short["lte"] == pytest.approx(9.1, rel=1e-12)
+    assert obj == pytest.approx(36.0 + 82.81 + 1.31, rel=1e-12)
+    assert lte_torque_terms(np.array([100.0, 131.0]), 40.0) == pytest.approx(118.81)
+    one, short1, _ = development_score(_metrics(lte_peak_to_peak=[30.0, 50.0]), t,
+                                       centre_v=0.6)
+    assert one == pytest.approx(1.0 + 0.5, rel=1e-12) and short1["lte"] == 1.0
+    base = development_score(_metrics(lte_peak_to_peak=[104.0, 131.0]), t, centre_v=0.6)
+    longer = development_score(_metrics(lte_peak_to_peak=[61.0, 140.0]), t, centre_v=0.6)
+    assert longer[0] < base[0]
 
 def test_kept_teeth_give_the_shell_models_own_result(unrelieved_pc):
     """The development's shell teeth kept across designs (KeptTeeth) are the shell model's
@@ -1045,6 +1076,50 @@ def test_a_high_pattern_left_after_the_tip_step_gets_the_root_relief(monkeypatch
                     "path_angle": -58.8})
     dcheck._checked_root(long_, targets, setup, None, lines.append, lambda v: dict(v))
     assert "ellipse_length 0.65" in lines[0] and "root_relief 60" in lines[0]
+
+
+def test_a_design_still_missing_its_lte_gets_the_longest_pattern_and_flattest_te(
+        monkeypatch):
+    """The check's last step (_checked_overlap): a checked design that still misses the
+    LTE gets one design with the ellipse lengthened in proportion to the pattern up to
+    the length tolerance's upper end (0.5 × 0.6 / 0.37 = 0.81, bounded by 0.75) and the TE
+    level at its lower bound (10 µrad); kept where it scores better. Stand-in analyses
+    fitted to the spiral bevel 17x29 at Σ 100° measured at ltca run's sampling (40.3 /
+    402.8 N m; docs/own_gear_set.md): ellipse 0.5, te 45: 104 / 131 µrad, 0.37 long;
+    0.75 / 25: 66 / 139; 0.75 / 10: 61 / 140 (light = 104 − 125.3 Δe − Δte/3, design =
+    131 + 26.7 Δe + Δte/15, heel 0.70 + 0.52 Δe). A design meeting its LTE gets nothing."""
+    from contact.optimize import development as dev
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        de, dt = case["ellipse_length"] - 0.5, 45.0 - case["te_level"]
+        return (_metrics(pattern_toe_u=[0.33, 0.2], pattern_heel_u=[0.70 + 0.52 * de, 0.8],
+                         pattern_centre_u=[0.5, 0.5],
+                         lte_peak_to_peak=[104.0 - 125.3 * de - dt / 3.0,
+                                           131.0 + 26.7 * de + dt / 15.0]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [40.3, 402.8], "centre_v": 0.6}
+
+    def chosen(values):
+        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
+
+    lines = []
+    base = chosen({"ellipse_length": 0.5, "te_level": 45.0, "path_angle": -58.75})
+    assert base.full[1]["lte"] > 0.0
+    got = dcheck._checked_overlap(base, targets, setup, None, lines.append,
+                                  lambda v: dict(v))
+    assert got is not base and got.stage == "overlap"
+    assert got.values["ellipse_length"] == pytest.approx(0.75, abs=1e-12)
+    assert got.values["te_level"] == 10.0
+    assert "with ellipse_length 0.75, te_level 10 urad" in lines[0]
+    assert got.metrics["lte_peak_to_peak"][0] == pytest.approx(61.0, abs=0.5)
+    # meeting its LTE: no step
+    quiet = _checked({"ellipse_length": 0.5, "te_level": 45.0},
+                     _metrics(lte_peak_to_peak=[30.0, 35.0]), targets, 0.6)
+    assert dcheck._checked_overlap(quiet, targets, setup, None, lines.append,
+                                   lambda v: dict(v)) is quiet
 
 
 def test_a_design_missing_a_target_with_a_blade_angle_gets_the_root_relief_instead(
