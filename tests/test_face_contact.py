@@ -66,7 +66,7 @@ def test_the_17x29s_face_width_and_spiral_angle_reach_the_target():
                    ) == pytest.approx(1.25, abs=1e-4)
     assert 40.0 < r.beta_m_needed < 45.0 and r.b2_needed > r.b2_limit
     text = overlap_text(design)
-    assert "eps_vb 0.96 below 1.25" in text
+    assert "eps_vb 0.96 is below 1.25" in text
     assert f"b2 of {math.ceil(r.b2_needed * 10) / 10:.1f} mm (now 24, above the usual" in text
     assert f"beta_m of {math.ceil(r.beta_m_needed * 10) / 10:.1f} deg (now 35)" in text
 
@@ -103,7 +103,7 @@ def test_the_next_step_of_an_lte_spread_names_the_overlap():
     from geometry.case import load_case
 
     low = overlap_lines(load_case(ROOT / "cases" / "iso10300_30_sample3.toml"))
-    assert len(low) == 1 and "eps_vb 0.86 below 1.25" in low[0]
+    assert len(low) == 1 and "eps_vb 0.86 is below 1.25" in low[0]
     assert "ltca synthesize" in low[0]
     assert overlap_lines(load_case(ROOT / "cases" / "iso10300_30_sample2.toml")) == []
 

@@ -184,7 +184,7 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     Returns
     -------
     str or None
-        E.g. "face contact ratio eps_vb 0.96 below 1.25 (...); a gear face width b2 of
+        E.g. "face contact ratio eps_vb 0.96 is below 1.25 (...); a gear face width b2 of
         30.1 mm (now 24, above the usual 0.3 R_e2 = 26.0 mm) or a mean spiral angle
         beta_m of 42.5 deg (now 35), the other kept, reaches 1.25" (each value rounded up
         to 0.1).
@@ -210,7 +210,7 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
               + f" reaches {r.target:g}" if ways else
               "no face width up to R_e2/2 nor spiral angle up to 50 deg alone reaches "
               f"{r.target:g}")
-    return (f"face contact ratio eps_vb {r.eps_vb:.2f} below {r.target:g}, the least "
+    return (f"face contact ratio eps_vb {r.eps_vb:.2f} is below {r.target:g}, the least "
             "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
             "hands the load from pair to pair through one pair over much of the mesh cycle, "
             "which no bearing lever (TE level, ellipse, relief) changes (docs/own_gear_set.md, "
