@@ -176,9 +176,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     height by the root relief instead (:func:`_checked_blade`); then, where its
     light-load pattern is above its depth centre's tolerance, a shorter tip relief
     (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
-    longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the
-    longest pattern with the flattest TE parabola (:func:`_checked_overlap`). Run again
-    where the design torque was
+    longer ellipse (:func:`_checked_root`). Run again where the design torque was
     lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
@@ -190,8 +188,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = _checked_path(best, targets, setup, teeth, say, placed)
     best = _checked_blade(best, targets, setup, teeth, say, placed)
     best = _checked_tip(best, targets, setup, teeth, say, placed)
-    best = _checked_root(best, targets, setup, teeth, say, placed)
-    return _checked_overlap(best, targets, setup, teeth, say, placed)
+    return _checked_root(best, targets, setup, teeth, say, placed)
 
 
 #: the check's shorter tip reliefs (:func:`_checked_tip`), fractions of the chosen
@@ -392,55 +389,6 @@ def _checked_root(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       f"with root_relief {values['root_relief']:.3g} from "
                       f"{values['relief_start']:.3g}, ellipse_length "
                       f"{values['ellipse_length']:.3g}", targets, setup, teeth, say, placed)
-    if e is None:
-        return best
-    return _kept_step(e, best, targets, setup, teeth, say, placed)
-
-
-def _checked_overlap(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                     setup: Mapping[str, Any], teeth: KeptTeeth,
-                     say: Callable[[str], None],
-                     placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
-    """What a low-overlap design's bearing is given where its LTE is still missed after
-    every other check step: the longest lengthwise pattern the length target leaves (the
-    ellipse lengthened in proportion to the pattern's length up to the upper end of its
-    tolerance, at most the ellipse's upper bound) with the modified roll's TE level at
-    its lower bound; one design (a synthesis of steps 3-6) placed and checked at
-    :data:`CHECK_LTCA`, kept where it scores better and is tolerant (:func:`_kept_step`).
-
-    Why: where the face contact ratio is low the load is handed over through one pair
-    over much of the mesh cycle; a longer pattern (less lengthwise crowning) carries the
-    next pair sooner, and a flatter parabola leaves the unloaded TE no larger than the
-    entry needs (Litvin & Fuentes, *Gear Geometry and Applied Theory*, 2nd ed., §9.4 and
-    ch. 20: the parabolic function's level is a designer's choice, enough to absorb the
-    misalignment's linear TE). Measured at ``ltca run``'s sampling on the spiral bevel
-    17x29 at Σ 100° of tests/data/designs (ε_vβ 0.96; 40.3 / 402.8 N m, path −58.75°, tip
-    relief 17.4 µm from 0.85, root relief 60 µm from 0.2, 2026-11-25): ellipse 0.5,
-    te_level 45 µrad: pattern 0.37 long, LTE 104 / 131 µrad, the light load's LTE spread
-    failing the verdict; ellipse 0.75, te_level 25: 0.50 long, 66 / 139 µrad; te_level 10:
-    61 / 140 µrad, no spread finding. The design torque's LTE stays above 100 µrad over
-    every bearing lever (docs/own_gear_set.md, "A face contact ratio below 1.25")."""
-    names = ("ellipse_length", TE_NAME)
-    if (best.full is None or not best.checked or best.full[1]["lte"] == 0.0
-            or not all(n in targets.variables for n in names)
-            or "ellipse_length" not in best.values):
-        return best
-    (e_lo, e_hi), (t_lo, _) = (targets.variables[n] for n in names)
-    length = float(best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0])
-    ellipse = float(best.values["ellipse_length"])
-    if not (math.isfinite(length) and length > 0.0):
-        return best
-    longest = targets.pattern_length + targets.pattern_length_tolerance
-    values = best.values | {
-        "ellipse_length": float(np.clip(max(ellipse, ellipse * longest / length),
-                                        e_lo, e_hi)),
-        TE_NAME: float(t_lo)}
-    if (values["ellipse_length"] <= ellipse + 1e-9
-            and float(best.values.get(TE_NAME, math.inf)) <= t_lo + 1e-9):
-        return best
-    e = _said_variant(best, values, "overlap",
-                      f"with ellipse_length {values['ellipse_length']:.3g}, {TE_NAME} "
-                      f"{t_lo:.3g} urad", targets, setup, teeth, say, placed)
     if e is None:
         return best
     return _kept_step(e, best, targets, setup, teeth, say, placed)
