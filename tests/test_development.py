@@ -444,8 +444,39 @@ def test_a_design_the_verdict_fails_on_its_spread_ranks_after_every_one_it_passe
     assert short_f["spread"] > 0.0 and short_p["spread"] == 0.0
     assert 0.56 > LTE_SPREAD_LIMIT > 0.36
     assert p < r < f < FAILED
-    # without the penalty the failing design would have won, as measured
-    assert f - VERDICT_FAIL_PENALTY < p
+    # without the penalty and with the worst torque's LTE alone weighed (the objective
+    # then) the failing design would have won, as measured; each torque's LTE weighed
+    # (lte_torque_terms) it no longer does
+    from contact.optimize.development_targets import lte_torque_terms
+
+    def worst_only(obj, m, short):
+        return obj - lte_torque_terms(m["lte_peak_to_peak"], t.max_lte) + short["lte"] ** 2
+
+    assert worst_only(f - VERDICT_FAIL_PENALTY, failing, short_f) < worst_only(p, passing,
+                                                                               short_p)
+    assert f - VERDICT_FAIL_PENALTY > p
+
+
+def test_the_lte_target_is_weighed_at_each_torque():
+    """Hand-computed: LTE 100 / 131 µrad against 40 → shortfalls 6.0 and 9.1 per 10 µrad;
+    ``lte`` reports the worst (9.1) and the objective holds both squares (36 + 82.81) plus
+    the tie-break 0.1 × 131/10; a design missing at one torque only scores as before (its
+    one square). The 17x29's measured pair at ``ltca run``'s sampling: 104 / 131 against
+    the longer pattern with the flatter parabola, 61 / 140 — the second wins."""
+    from contact.optimize.development_targets import lte_torque_terms
+
+    t = DevelopmentTargets()
+    obj, short, _ = development_score(_metrics(lte_peak_to_peak=[100.0, 131.0]), t,
+                                      centre_v=0.6)
+    assert short["lte"] == pytest.approx(9.1, rel=1e-12)
+    assert obj == pytest.approx(36.0 + 82.81 + 1.31, rel=1e-12)
+    assert lte_torque_terms(np.array([100.0, 131.0]), 40.0) == pytest.approx(118.81)
+    one, short1, _ = development_score(_metrics(lte_peak_to_peak=[30.0, 50.0]), t,
+                                       centre_v=0.6)
+    assert one == pytest.approx(1.0 + 0.5, rel=1e-12) and short1["lte"] == 1.0
+    base = development_score(_metrics(lte_peak_to_peak=[104.0, 131.0]), t, centre_v=0.6)
+    longer = development_score(_metrics(lte_peak_to_peak=[61.0, 140.0]), t, centre_v=0.6)
+    assert longer[0] < base[0]
 
 def test_kept_teeth_give_the_shell_models_own_result(unrelieved_pc):
     """The development's shell teeth kept across designs (KeptTeeth) are the shell model's

@@ -120,6 +120,10 @@ COAST_DONE_WHEN: dict[str, set[str]] = {
     "fh_spiral_bevel_12x37_m3": {"coast_lte60", "duty"},
     "hypoid_12x41_s85": {"coast_lte60", "duty"},
     "hypoid_7x45_a45": {"coast_lte60", "duty"},
+    # since the LTE is weighed at each torque (its light torque's LTE 100 -> 70 urad): the
+    # duty cycle's lightest bin, 40.3 N m, spread 0.44 where it was 0.67 (FAIL); measured
+    # 2026-11-25, docs/own_gear_set.md, "A face contact ratio below 1.25"
+    "spiral_bevel_17x29_s100_m0": {"duty"},
 }
 
 

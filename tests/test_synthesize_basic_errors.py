@@ -93,3 +93,7 @@ def test_low_face_contact_ratio_is_noted(tmp_path, capsys):
     assert (f"profile eps_va {eps_va:.2f}, face eps_vb {eps_vb:.2f}, total "
             f"{eps_va + eps_vb:.2f}") in text
     assert f"note: face contact ratio eps_vb {eps_vb:.2f} is below 1.25" in text
+    # the cause and the remedy in numbers (contact.load_capacity.iso10300.face_contact;
+    # its values checked in tests/test_face_contact.py)
+    assert "a gear face width b2 of 30.1 mm (now 24" in text
+    assert "a mean spiral angle beta_m of 42.5 deg (now 35)" in text

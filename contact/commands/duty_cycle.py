@@ -196,7 +196,7 @@ def run(args: argparse.Namespace) -> int:
     from contact.study.verdicts import verdict
 
     fails = [f.check for f in verdict(ds).findings if f.severity == "fail"]
-    for line in duty_cycle_lines(ds, args.case or case.name, args.flank, fails):
+    for line in duty_cycle_lines(ds, args.case or case.name, args.flank, fails, case):
         # under the verdict's findings, as ltca run's; the commands unwrapped, to paste
         print(line if line.startswith("    ltca ") else
               textwrap.fill(line, 100, subsequent_indent="      "))

@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 
-__all__ = ["bearing_lines", "duty_cycle_lines", "optimised_variables",
+__all__ = ["bearing_lines", "duty_cycle_lines", "optimised_variables", "overlap_lines",
            "static_flank_strength"]
 
 #: the wider set offered once the bearing variables' optimisation is the case's own, with
@@ -150,8 +150,46 @@ def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[
             [f"    ltca rate {shown} --torque {torques}"] if rate else [])
 
 
+def overlap_lines(case) -> list[str]:
+    """The next-step line of an LTE-spread FAIL whose cause is the design's own low face
+    contact ratio: ε_vβ below 1.25 and the face width and spiral angle that reach it
+    (:func:`contact.load_capacity.iso10300.face_contact.overlap_text`); no bearing change
+    answers it (docs/own_gear_set.md, "A face contact ratio below 1.25"). Empty where the
+    case has no ``[design]`` table or its ε_vβ meets 1.25.
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+
+    Returns
+    -------
+    list of str
+    """
+    from contact.load_capacity.design_table import design_blank, design_table
+    from contact.load_capacity.iso10300.face_contact import overlap_text
+    from geometry.core.errors import InputError
+
+    try:
+        design = design_blank(design_table(case, "")).design
+    except (InputError, KeyError, ValueError, AttributeError):
+        return []
+    said = overlap_text(design)
+    if said is None:
+        return []
+    return [f"  next, the LTE spread is the design's: {said}; synthesise the basic file again "
+            "with it (ltca synthesize BASIC.toml)"]
+
+
+def _spread_failed(findings) -> bool:
+    """Whether a verdict's findings FAIL on the LTE spread (the plausibility cause
+    ``lte_spread`` of ``ltca run`` or of a duty cycle's bins)."""
+    return any(f.severity == "fail" and f.check == "implausible"
+               and ("LTE spread" in f.reason or "lte spread" in f.reason)
+               for f in findings)
+
+
 def duty_cycle_lines(ds, shown: str, flank: str | None,
-                     fail_checks: Sequence[str]) -> list[str]:
+                     fail_checks: Sequence[str], case=None) -> list[str]:
     """The next-step lines under a FAILed duty cycle (``ltca duty-cycle``).
 
     Parameters
@@ -165,6 +203,9 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
         The analysed flank (``--flank``).
     fail_checks : sequence of str
         The checks of the verdict's failing findings.
+    case : geometry.case.Case, optional
+        The analysed case: where the verdict FAILs on an LTE spread and the case's face
+        contact ratio is below 1.25, :func:`overlap_lines` first.
 
     Returns
     -------
@@ -177,6 +218,12 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
 
     if not fail_checks:
         return []
+    first: list[str] = []
+    if case is not None and "implausible" in fail_checks:
+        from contact.study.verdicts import verdict
+
+        if _spread_failed(verdict(ds).findings):
+            first = overlap_lines(case)
     torque = np.asarray(ds["torque"].values, float)
     flag = f" --flank {flank}" if flank else ""
     worst, why = None, ""
@@ -196,7 +243,8 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
         worst = int(np.argmax(torque))
         why = f"the peak-torque bin {worst} ({torque[worst]:g} N m)"
     t = f"{torque[worst]:g}"
-    return [f"  next: {why}; its bearing at that torque as ltca run analyses it (the verdict "
+    return [*first,
+            f"  next: {why}; its bearing at that torque as ltca run analyses it (the verdict "
             "there prints what answers a high or edge-loaded pattern), then the rating's "
             "capacity — a lower spectrum, or a larger or stronger gear set (docs/rating.md):",
             f"    ltca run {shown}{flag} --torque {t}",

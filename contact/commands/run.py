@@ -508,6 +508,11 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                              else None, rate=not failed & set(CAPACITY_CHECKS))
     if not overloaded:
         out += capacity
+    if "implausible" in failed:  # an LTE spread that is the design's low face contact ratio
+        from contact.commands.next_steps import _spread_failed, overlap_lines
+
+        if _spread_failed(v.findings):
+            out = overlap_lines(case) + out
     if "scuffing" in failed:
         op = case.operating
         out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "

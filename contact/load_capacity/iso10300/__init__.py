@@ -17,7 +17,9 @@ Modules, each a set of plain functions over arrays (one per factor), all under
   and :func:`rate_pair`;
 * :mod:`~.beside` — :func:`analysis_rating` (the rating of an analysis, or why there is
   none) and :func:`rating_beside_ltca` (its stresses beside the LTCA's);
-* :mod:`~.capacity` — the long-life capacity and the design torque.
+* :mod:`~.capacity` — the long-life capacity and the design torque;
+* :mod:`~.face_contact` — the face contact ratio of a basic design and the face width or
+  spiral angle that raise it to 1.25 (:func:`~.face_contact.overlap_text`).
 
 It is the ``iso10300`` method of the load-capacity registry
 (:func:`contact.load_capacity.rate`).

@@ -1,0 +1,217 @@
+"""The face contact ratio of a basic design and what raises it to the least design
+practice asks for (issue 71: the low-overlap designs whose LTE no bearing reaches).
+
+A localised bearing hands the load from pair to pair through one pair over much of the
+mesh cycle where the face contact ratio ε_vβ (ISO 10300-1:2014, Annex A, A.2: ε_vβ =
+b_v,eff sin β_v / (π m_mn)) is low; bevel-gear design practice asks for at least
+:data:`FACE_CONTACT_RATIO_MIN` (AGMA 2005-D03, face contact ratio m_F ≥ 1.25 for a
+quiet spiral bevel pair). Measured on the spiral bevel 17x29 at Σ 100° of
+tests/data/designs (ε_vβ 0.96, docs/own_gear_set.md, "A face contact ratio below 1.25"):
+over 40 bearings of the development's levers (modified-roll level, ellipse length, tip
+and root relief and their starts, path angle, profile crowning), none brought the LTE p-p
+at the design torque below 86 µrad (coarse LTCA), where the target is 60.
+
+:func:`overlap_remedy` finds, from the ISO 23509 blank of the basic data, the gear face
+width b2 and the mean spiral angle β_m that each, the other kept, raise ε_vβ to the
+target (a root of ε_vβ(b2) and of ε_vβ(β_m), Brent's method on the blank and the virtual
+gears of :func:`contact.load_capacity.iso10300.virtual_gears.virtual_gears`);
+:func:`overlap_text` says it in a sentence for ``ltca synthesize``, ``ltca run`` and
+``ltca duty-cycle``.
+
+Public functions
+----------------
+overlap_remedy   ε_vβ of a design and the b2, β_m that reach the target
+overlap_text     that as a sentence, or None where ε_vβ meets the target
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+__all__ = ["FACE_CONTACT_RATIO_MIN", "FACE_WIDTH_LIMIT", "OverlapRemedy", "overlap_remedy",
+           "overlap_text"]
+
+#: the least face contact ratio ε_vβ bevel-gear design practice asks for (AGMA 2005-D03,
+#: face contact ratio m_F); below it ``ltca synthesize`` adds a note and the LTE-spread
+#: findings of ``ltca run`` and ``ltca duty-cycle`` name it
+FACE_CONTACT_RATIO_MIN = 1.25
+
+#: the usual largest gear face width as a fraction of the outer cone distance R_e2
+#: (AGMA 2005-D03 and Gleason practice: b2 ≤ 0.3 R_e2; wider, the toe's teeth become too
+#: small and the pattern's movement under load too large)
+FACE_WIDTH_LIMIT = 0.3
+
+#: the largest mean spiral angle tried [deg] (spiral bevel and hypoid practice stays at or
+#: below 45°; the thrust grows with tan β_m)
+_SPIRAL_ANGLE_MAX = 50.0
+
+
+@dataclass(frozen=True)
+class OverlapRemedy:
+    """The face contact ratio of a design and the changes that reach a target.
+
+    Attributes
+    ----------
+    eps_vb : float — [1]
+        Face contact ratio ε_vβ of the design (ISO 10300-1, drive side).
+    target : float — [1]
+        The ε_vβ aimed at.
+    b2 : float — [mm]
+        The design's gear face width.
+    b2_needed : float — [mm]
+        The gear face width that gives ``target``, β_m kept; NaN where no face width up
+        to half the outer cone distance does (or the blank refuses it).
+    b2_limit : float — [mm]
+        :data:`FACE_WIDTH_LIMIT` × R_e2, the usual largest face width.
+    beta_m : float — [deg]
+        The design's mean spiral angle (the basic file's ``beta_m``).
+    beta_m_needed : float — [deg]
+        The mean spiral angle that gives ``target``, b2 kept; NaN where none up to 50°
+        does.
+    """
+
+    eps_vb: float
+    target: float
+    b2: float
+    b2_needed: float
+    b2_limit: float
+    beta_m: float
+    beta_m_needed: float
+
+
+def _eps_vb(design) -> float:
+    from contact.load_capacity.iso10300.inputs import gear_data_from_blank
+    from contact.load_capacity.iso10300.virtual_gears import virtual_gears
+    from geometry.iso23509.blank import blank_geometry
+
+    return float(virtual_gears(gear_data_from_blank(blank_geometry(design))).eps_vb)
+
+
+def _root(f, x0: float, x1: float, steps: int = 12) -> float:
+    """The first x in [x0, x1] where f(x) = 0 (f(x0) < 0), by a scan of ``steps`` then
+    Brent's method; NaN where f stays negative or the blank refuses every x beyond."""
+    from scipy.optimize import brentq
+
+    from geometry.core.errors import InputError
+
+    def g(x: float) -> float:
+        try:
+            return f(x)
+        except (InputError, ValueError, ZeroDivisionError):
+            return math.nan
+
+    a, fa = x0, g(x0)
+    if not math.isfinite(fa):
+        return math.nan
+    for k in range(1, steps + 1):
+        b = x0 + (x1 - x0) * k / steps
+        fb = g(b)
+        if not math.isfinite(fb):
+            return math.nan
+        if fb >= 0.0:
+            return float(brentq(g, a, b, xtol=1e-3))
+        a, fa = b, fb
+    return math.nan
+
+
+def overlap_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> OverlapRemedy:
+    """The face contact ratio ε_vβ of a basic design and the face width and spiral angle
+    that reach ``target``.
+
+    Parameters
+    ----------
+    design : geometry.iso23509.design_data.BevelGearDesign
+        The basic design data (``[design]`` of a basic file or of a case; lengths [mm],
+        angles [rad]).
+    target : float — [1]
+        The face contact ratio aimed at, in (0, 5]; default :data:`FACE_CONTACT_RATIO_MIN`.
+
+    Returns
+    -------
+    OverlapRemedy
+        ε_vβ of ``design``; the gear face width b2 [mm] (β_m kept) and the mean spiral angle
+        β_m [deg] (b2 kept) at which ε_vβ = ``target`` (to 0.001 mm / 0.001°), each NaN
+        where none up to R_e2/2 or 50° reaches it; where ε_vβ already meets the target,
+        the design's own values.
+
+    Raises
+    ------
+    InputError
+        ``target`` not a number in (0, 5]; a design the ISO 23509 blank refuses (its
+        message, ``design.<field>``).
+
+    Notes
+    -----
+    ε_vβ from the ISO 23509:2016 blank (:func:`geometry.iso23509.blank.blank_geometry`)
+    and ISO 10300-1:2014 Annex A (:func:`contact.load_capacity.iso10300.virtual_gears.
+    virtual_gears`, effective face width 0.85 b2); at a fixed outer pitch diameter a wider
+    face lowers the mean normal module, so ε_vβ grows faster than b2 (the 17x29 of
+    tests/data/designs: 0.96 at 24 mm, 1.25 at 30.0 mm).
+    """
+    from contact.load_capacity.iso10300.inputs import gear_data_from_blank  # noqa: F401
+    from geometry.core.errors import InputError
+    from geometry.iso23509.blank import blank_geometry
+
+    if not (isinstance(target, (int, float)) and math.isfinite(target) and 0.0 < target <= 5.0):
+        raise InputError(f"target: the face contact ratio aimed at must be a number in "
+                         f"(0, 5], got {target!r}")
+    eps = _eps_vb(design)
+    re2 = float(blank_geometry(design).gear.Re)
+    b2, beta = float(design.b2), math.degrees(float(design.beta_m))
+    if eps >= target:
+        return OverlapRemedy(eps, float(target), b2, b2, FACE_WIDTH_LIMIT * re2, beta, beta)
+    b_need = _root(lambda b: _eps_vb(dataclasses.replace(design, b2=b)) - target,
+                   b2, max(b2, 0.5 * re2))
+    beta_need = _root(lambda d: _eps_vb(dataclasses.replace(design, beta_m=math.radians(d)))
+                      - target, beta, max(beta, _SPIRAL_ANGLE_MAX))
+    return OverlapRemedy(eps, float(target), b2, b_need, FACE_WIDTH_LIMIT * re2, beta,
+                         beta_need)
+
+
+def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
+    """The cause and the remedy of a low face contact ratio in one sentence (``ltca
+    synthesize``'s note, the LTE-spread next step of ``ltca run`` and ``ltca duty-cycle``);
+    None where ε_vβ meets ``target`` or the blank cannot be computed.
+
+    Parameters
+    ----------
+    design : geometry.iso23509.design_data.BevelGearDesign
+    target : float — [1]
+        Default :data:`FACE_CONTACT_RATIO_MIN`.
+
+    Returns
+    -------
+    str or None
+        E.g. "face contact ratio eps_vb 0.96 is below 1.25 (...); a gear face width b2 of
+        30.1 mm (now 24, above the usual 0.3 R_e2 = 26.0 mm) or a mean spiral angle
+        beta_m of 42.5 deg (now 35), the other kept, reaches 1.25" (each value rounded up
+        to 0.1).
+    """
+    from geometry.core.errors import InputError
+
+    try:
+        r = overlap_remedy(design, target)
+    except (InputError, ValueError, ZeroDivisionError):
+        return None
+    if r.eps_vb >= r.target:
+        return None
+    ways = []
+    if math.isfinite(r.b2_needed):
+        over = (f", above the usual {FACE_WIDTH_LIMIT:g} R_e2 = {r.b2_limit:.1f} mm"
+                if r.b2_needed > r.b2_limit else "")
+        ways.append(f"a gear face width b2 of {math.ceil(r.b2_needed * 10) / 10:.1f} mm "
+                    f"(now {r.b2:g}{over})")
+    if math.isfinite(r.beta_m_needed):
+        ways.append(f"a mean spiral angle beta_m of {math.ceil(r.beta_m_needed * 10) / 10:.1f}"
+                    f" deg (now {r.beta_m:g})")
+    remedy = (" or ".join(ways) + (", the other kept," if len(ways) > 1 else "")
+              + f" reaches {r.target:g}" if ways else
+              "no face width up to R_e2/2 nor spiral angle up to 50 deg alone reaches "
+              f"{r.target:g}")
+    return (f"face contact ratio eps_vb {r.eps_vb:.2f} is below {r.target:g}, the least "
+            "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
+            "hands the load from pair to pair through one pair over much of the mesh cycle, "
+            "which no bearing lever (TE level, ellipse, relief) changes (docs/own_gear_set.md, "
+            f"'A face contact ratio below 1.25'); {remedy}")

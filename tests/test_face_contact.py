@@ -1,0 +1,135 @@
+"""The face contact ratio of a basic design and the face width / spiral angle that raise
+it to 1.25 (contact.load_capacity.iso10300.face_contact; issue 71, the low-overlap designs
+whose LTE no bearing lever reaches), and where the commands say it.
+
+Fast: a few ISO 23509 blanks per design (≈ 0.3 s)."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from pathlib import Path
+
+import pytest
+
+from contact.load_capacity.iso10300.face_contact import (
+    FACE_CONTACT_RATIO_MIN,
+    overlap_remedy,
+    overlap_text,
+)
+from geometry.core.errors import InputError
+from geometry.synthesis.basic_design import load_basic
+
+ROOT = Path(__file__).resolve().parent.parent
+DESIGNS = ROOT / "tests" / "data" / "designs"
+
+
+def _eps_vb(design) -> float:
+    """ε_vβ = b_v,eff sin β_v / (π m_mn) (ISO 10300-1 A.2) by hand from the virtual gears'
+    own b_v,eff and β_v and the blank's m_mn: the formula, not the module's chain."""
+    from contact.load_capacity.iso10300.inputs import gear_data_from_blank
+    from contact.load_capacity.iso10300.virtual_gears import virtual_gears
+    from geometry.iso23509.blank import blank_geometry
+
+    data = gear_data_from_blank(blank_geometry(design))
+    vg = virtual_gears(data)
+    return vg.b_veff * math.sin(vg.beta_v) / (math.pi * data.m_mn)
+
+
+def test_the_iso_tr_sample_3_ratio_is_the_reports():
+    """ISO/TR 10300-30:2024 sample 3 prints ε_vβ = 0.860 (virtual_gears' docstring); the
+    remedy's ratio is that one, to the TR's last digit."""
+    from contact.load_capacity.iso10300.rating import case_gear_data
+    from geometry.case import load_case
+
+    _, blank = case_gear_data(load_case(ROOT / "cases" / "iso10300_30_sample3.toml"))
+    r = overlap_remedy(blank.design)
+    assert r.eps_vb == pytest.approx(0.860, abs=5e-4)
+
+
+def test_the_17x29s_face_width_and_spiral_angle_reach_the_target():
+    """The spiral bevel 17x29 at Σ 100° (ε_vβ 0.96 at b2 24 mm, β_m 35°): at the face width
+    and at the spiral angle returned, ε_vβ by hand is 1.25 to the root-find's tolerance
+    (0.001 mm / 0.001° moves ε_vβ by < 1e-4); a face width of 30 mm is just short of it
+    and 31 mm beyond (bracketing the root independently); the face width needed is above
+    0.3 R_e2, which the sentence says."""
+    design = load_basic(DESIGNS / "spiral_bevel_17x29_s100_m0.toml").design
+    r = overlap_remedy(design)
+    assert r.eps_vb == pytest.approx(_eps_vb(design), rel=1e-12)
+    assert r.eps_vb == pytest.approx(0.956, abs=1e-3)
+    assert 30.0 < r.b2_needed < 31.0
+    assert _eps_vb(dataclasses.replace(design, b2=30.0)) < FACE_CONTACT_RATIO_MIN
+    assert _eps_vb(dataclasses.replace(design, b2=31.0)) > FACE_CONTACT_RATIO_MIN
+    assert _eps_vb(dataclasses.replace(design, b2=r.b2_needed)) == pytest.approx(1.25,
+                                                                                 abs=1e-4)
+    assert _eps_vb(dataclasses.replace(design, beta_m=math.radians(r.beta_m_needed))
+                   ) == pytest.approx(1.25, abs=1e-4)
+    assert 40.0 < r.beta_m_needed < 45.0 and r.b2_needed > r.b2_limit
+    text = overlap_text(design)
+    assert "eps_vb 0.96 is below 1.25" in text
+    assert f"b2 of {math.ceil(r.b2_needed * 10) / 10:.1f} mm (now 24, above the usual" in text
+    assert f"beta_m of {math.ceil(r.beta_m_needed * 10) / 10:.1f} deg (now 35)" in text
+
+
+def test_a_design_with_overlap_enough_gets_no_sentence():
+    """The passenger-car hypoid 10x43 (ε_vβ 1.44): its own values, no sentence."""
+    design = load_basic(DESIGNS / "pc_hypoid_10x43.toml").design
+    r = overlap_remedy(design)
+    assert r.eps_vb > FACE_CONTACT_RATIO_MIN
+    assert (r.b2_needed, r.beta_m_needed) == (r.b2, r.beta_m)
+    assert overlap_text(design) is None
+
+
+@pytest.mark.parametrize("target", [0.0, -1.0, 6.0, math.nan, "1.25"])
+def test_a_bad_target_is_refused(target):
+    design = load_basic(DESIGNS / "pc_hypoid_10x43.toml").design
+    with pytest.raises(InputError, match="target"):
+        overlap_remedy(design, target)
+
+
+def test_synthesizes_note_threshold_is_the_modules():
+    """``ltca synthesize`` keeps the number without importing the rating (its import
+    light): the two must agree."""
+    from contact.commands.synthesize import FACE_CONTACT_RATIO_NOTE
+
+    assert FACE_CONTACT_RATIO_NOTE == FACE_CONTACT_RATIO_MIN
+
+
+def test_the_next_step_of_an_lte_spread_names_the_overlap():
+    """``ltca run``'s and ``ltca duty-cycle``'s next step under an LTE-spread FAIL: the
+    sentence for a case whose ε_vβ is low (ISO/TR sample 3, 0.86), nothing for one whose
+    is not (sample 2, 2.10)."""
+    from contact.commands.next_steps import overlap_lines
+    from geometry.case import load_case
+
+    low = overlap_lines(load_case(ROOT / "cases" / "iso10300_30_sample3.toml"))
+    assert len(low) == 1 and "eps_vb 0.86 is below 1.25" in low[0]
+    assert "ltca synthesize" in low[0]
+    assert overlap_lines(load_case(ROOT / "cases" / "iso10300_30_sample2.toml")) == []
+
+
+def test_a_duty_cycle_failing_on_its_spread_prints_the_overlap_first(monkeypatch):
+    """duty_cycle_lines with the case: the overlap line first where the verdict FAILs on
+    an LTE spread; not where it FAILs on something else."""
+    import numpy as np
+    import xarray as xr
+
+    from contact.commands import next_steps
+    from contact.study.verdicts import Finding
+    from geometry.case import load_case
+
+    case = load_case(ROOT / "cases" / "iso10300_30_sample3.toml")
+    ds = xr.Dataset({"torque": ("bin", np.array([40.0, 400.0]))})
+
+    class V:
+        def __init__(self, reason):
+            self.findings = [Finding("fail", "implausible", reason)]
+
+    monkeypatch.setattr("contact.study.verdicts.verdict",
+                        lambda d: V("lte spread in bin 0 (the cause ltca run warns of)"))
+    lines = next_steps.duty_cycle_lines(ds, "c.toml", None, ["implausible"], case)
+    assert "eps_vb 0.86" in lines[0] and "ltca run c.toml --torque 400" in lines[2]
+    monkeypatch.setattr("contact.study.verdicts.verdict",
+                        lambda d: V("plastic contact in bin 1"))
+    lines = next_steps.duty_cycle_lines(ds, "c.toml", None, ["implausible"], case)
+    assert not any("eps_vb" in ln for ln in lines)
