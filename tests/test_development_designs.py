@@ -68,6 +68,10 @@ DONE_WHEN = {
     "spiral_bevel_15x45_m0": _ALL,
     "truck_hypoid_8x41_a40": _ALL,
     "truck_hypoid_9x37": _ALL,
+    # designs not seen before (issue 71's last clause), measured 2026-11-25 after the
+    # edge-row shortfall (development_targets.EDGE_ROW_SHORTFALL): 727 MPa on the gear tip
+    # edge at the light torque before it
+    "hypoid_12x37_s105": _ALL,
 }
 
 
@@ -85,7 +89,8 @@ DONE_WHEN = {
 DRIVE_TARGETS_MET = {"eaxle_hypoid_11x39_s80", "fh_hypoid_11x43", "fh_spiral_bevel_12x37_m3",
                      "hypoid_12x41_s85", "hypoid_7x45_a45", "pc_hypoid_10x43",
                      "spiral_bevel_13x39", "spiral_bevel_15x45_m0", "truck_hypoid_9x37",
-                     "hypoid_5x43", "hypoid_6x41", "hypoid_10x37_s75", "fh_hypoid_10x37_m2"}
+                     "hypoid_5x43", "hypoid_6x41", "hypoid_10x37_s75", "fh_hypoid_10x37_m2",
+                     "hypoid_12x37_s105"}
 
 
 #: designs whose ``ltca run`` FAILs, measured 2026-11-25, with what the one reason says:
@@ -120,6 +125,7 @@ COAST_DONE_WHEN: dict[str, set[str]] = {
     "fh_spiral_bevel_12x37_m3": {"coast_lte60", "duty"},
     "hypoid_12x41_s85": {"coast_lte60", "duty"},
     "hypoid_7x45_a45": {"coast_lte60", "duty"},
+    "hypoid_12x37_s105": {"coast_lte60", "duty"},
 }
 
 
