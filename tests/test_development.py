@@ -24,6 +24,7 @@ from contact.optimize import development_coast_flank as dcoast
 from contact.optimize import development_stages as dstages
 from contact.optimize.development import (
     COARSE_LTCA,
+    EDGE_ROW_SHORTFALL,
     FAILED,
     STAGE_TERMS,
     DevelopmentTargets,
@@ -70,7 +71,8 @@ def test_a_design_meeting_every_target_scores_only_its_lte():
 
 def test_each_shortfall_is_the_excess_over_its_tolerance():
     """Hand-computed shortfalls: length 0.75 vs 0.5 ± 0.1 → (0.25 − 0.1)/0.1 = 1.5; toe
-    on the grid's first row with clearance 0.04 → 1; edge 5 % vs 2 % → 6 (per 0.5 %);
+    on the grid's first row (edge contact at light load) → EDGE_ROW_SHORTFALL 3; edge 5 %
+    vs 2 % → 6 (per 0.5 %);
     plastic 0.5 % → 5 (per 0.1 %); LTE 50 µrad vs 40 → 1 (per 10 µrad); centre v 0.8 vs
     0.6 ± 0.08 → 1.5; the objective is their sum of squares plus 0.1 × 50/10."""
     m = _metrics(pattern_toe_u=[0.0, 0.0], pattern_heel_u=[0.75, 0.8],
@@ -78,12 +80,36 @@ def test_each_shortfall_is_the_excess_over_its_tolerance():
                  plastic_share=[0.0, 0.005], lte_peak_to_peak=[20.0, 50.0])
     obj, short, met = development_score(m, DevelopmentTargets(), centre_v=0.6)
     assert not met
-    expect = {"length": 1.5, "toe": 1.0, "edge": 6.0, "plastic": 5.0, "lte": 1.0,
+    expect = {"length": 1.5, "toe": 3.0, "edge": 6.0, "plastic": 5.0, "lte": 1.0,
               "centre_v": 1.5}
     for k, v in expect.items():
         assert short[k] == pytest.approx(v, rel=1e-9), k
     assert all(short[k] == 0.0 for k in short if k not in expect)
     assert obj == pytest.approx(sum(v * v for v in expect.values()) + 0.5, rel=1e-12)
+
+
+def test_a_pattern_on_the_edge_row_outweighs_an_lte_miss():
+    """Edge contact at the light torque (the pattern on the grid's outermost row: tip v
+    1.0) weighs EDGE_ROW_SHORTFALL, not the clearance's 1, so that a design clear of
+    every edge that misses only the LTE ranks first. The two designs of the hypoid 12x37
+    at Σ 105° (tests/data/designs/hypoid_12x37_s105.toml, coarse LTCA at 90.9 / 605.8 N m)
+    the relief stage compared: centre v 0.67 (target 0.545 ± 0.08) with the pattern on
+    the gear tip, LTE 39 / 37 µrad, against centre v 0.59, tip v 0.905, LTE 52 / 50 µrad.
+    With a shortfall of 1 the first scored 1.69 and won (and `ltca run` found 727 MPa on
+    the tip edge at 15 % of the design torque); a pattern one grid row short of the tip
+    (gap 0.0475 > clearance 0.04) keeps no shortfall."""
+    t = DevelopmentTargets()
+    on_tip = _metrics(pattern_tip_v=[1.0, 1.0], pattern_centre_v=[0.672, 0.676],
+                      lte_peak_to_peak=[38.6, 36.7])
+    clear = _metrics(pattern_tip_v=[0.905, 1.0], pattern_centre_v=[0.593, 0.581],
+                     lte_peak_to_peak=[52.2, 50.0])
+    obj_tip, s_tip, _ = development_score(on_tip, t, centre_v=0.545)
+    obj_clear, s_clear, _ = development_score(clear, t, centre_v=0.545)
+    assert s_tip["tip"] == EDGE_ROW_SHORTFALL == 3.0
+    assert s_clear["tip"] == 0.0 and s_clear["lte"] == pytest.approx(1.22, abs=1e-9)
+    assert obj_clear < obj_tip
+    near = _metrics(pattern_tip_v=[0.9525, 0.96])  # one row short of the tip
+    assert development_score(near, t, centre_v=0.6)[1]["tip"] == 0.0
 
 
 def test_the_bearing_stage_leaves_the_edges_to_the_relief():
@@ -95,7 +121,7 @@ def test_the_bearing_stage_leaves_the_edges_to_the_relief():
                                             stage="bearing")
     _, _, met_r = development_score(m, DevelopmentTargets(), centre_v=0.6)
     assert met_b and not met_r
-    assert short["edge"] == pytest.approx(12.0) and short["tip"] == pytest.approx(1.0)
+    assert short["edge"] == pytest.approx(12.0) and short["tip"] == pytest.approx(3.0)
     assert obj_b == pytest.approx(0.3)
 
 
@@ -185,9 +211,10 @@ def unrelieved_pc():
 
 
 def test_clearance_shortfalls_agree_with_the_verdicts_boundaries(unrelieved_pc):
-    """A clearance shortfall is exactly 1 where the verdict (an independent reading of the
-    pressure envelope, contact.study.verdicts) says the light-load pattern reaches that
-    boundary, and below 1 where it does not; this design reaches the gear tip."""
+    """A clearance shortfall is exactly EDGE_ROW_SHORTFALL (edge contact at light load)
+    where the verdict (an independent reading of the pressure envelope,
+    contact.study.verdicts) says the light-load pattern reaches that boundary, and below
+    1 where it does not; this design reaches the gear tip."""
     from contact.study.verdicts import _boundaries
 
     tree, metrics, grid = unrelieved_pc
@@ -197,7 +224,7 @@ def test_clearance_shortfalls_agree_with_the_verdicts_boundaries(unrelieved_pc):
     assert not met
     for side in ("toe", "heel", "root", "tip"):
         if side in reached:
-            assert short[side] == pytest.approx(1.0, abs=1e-12), side
+            assert short[side] == pytest.approx(EDGE_ROW_SHORTFALL, abs=1e-12), side
         else:
             assert short[side] < 1.0, side
 

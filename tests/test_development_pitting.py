@@ -17,7 +17,9 @@ against independent numbers:
 
 from __future__ import annotations
 
+import dataclasses
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -26,6 +28,9 @@ import xarray as xr
 from contact.optimize import development_coast_flank as dcoast
 from contact.optimize import development_root as dr
 from contact.optimize.development_coast import CoastCheck, coast_capacity, coast_torque_step
+from geometry.synthesis.basic_design import load_basic
+
+DESIGNS = Path(__file__).parent / "data" / "designs"
 
 ALLOW = 1500.0 * 0.99 * 0.97 * 0.95 * 1.2  # σ_Hlim Z_L Z_v Z_R Z_K [MPa] (Z_X Z_W Z_Hyp 1)
 K_A, K_V = 1.0, 1.05
@@ -157,10 +162,11 @@ def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monke
         return DevelopmentEvaluation(0, {}, {}, objective, {}, met, "", 0.0,
                                      full=(objective, {}, met), checked=True)
 
-    calls = []
+    calls, given = [], []
 
     def search(pre, drive, targets, setup, *args):
         calls.append(tuple(setup["torques"]))
+        given.append(pre)
         return dcoast._CoastOutcome("again", ev(1.5), [], "developed", None)
 
     first = dcoast._CoastOutcome("first", ev(11.2), [], "developed", None)
@@ -168,12 +174,23 @@ def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monke
     setup = {"torques": [43.9, 293.2]}
     monkeypatch.setattr("contact.optimize.development_coast_flank.coast_development", search)
 
+    basic = load_basic(DESIGNS / "hypoid_12x41_s85.toml")
+    chosen = dataclasses.replace(ev(0.0), values={"path_angle": -80.0, "ellipse_length": 0.5})
+
     def again(torque, start=292.9, developed_at=292.9, outcome=first):
         cap = CoastCapacity(torque, start, (), "", True)
-        return dev.coast_at_its_torque(None, None, targets, setup, None, {},
+        return dev.coast_at_its_torque(basic, chosen, targets, setup, None, {},
                                         lambda line: None, None, outcome, cap, developed_at)
 
     assert again(292.9) is None and again(270.0) is None and calls == []
     assert again(142.6).basic == "again" and calls == [(43.9, 142.6)]
+    # the search's designs carry the chosen drive flank, not the one ``basic`` was made
+    # from (the truck hypoid 8x39 of tests/data/designs wrote a drive flank the root-stress
+    # steps had replaced: LTE 99 / 115 urad in ltca run against 23 / 31 checked)
+    drive = given[0].options.flank(basic.options.drive_flank)
+    assert drive.path_angle == pytest.approx(math.radians(-80.0), abs=1e-12)
+    assert drive.ellipse_length == 0.5
+    before = basic.options.flank(basic.options.drive_flank)
+    assert (before.path_angle, before.ellipse_length) != (drive.path_angle, 0.5)
     better_first = first._replace(best=ev(0.5, met=True))
     assert again(142.6, outcome=better_first) is None

@@ -164,6 +164,7 @@ from contact.optimize.development_stages import (  # noqa: F401
 )
 from contact.optimize.development_targets import (
     CROWNING_NAME,
+    EDGE_ROW_SHORTFALL,
     FAILED,
     HEIGHT_NAME,
     METRIC_NAMES,
@@ -187,7 +188,8 @@ from geometry.synthesis.basic_design import (
 )
 
 __all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNING_STEP",
-           "FAILED", "HEIGHT_DESIGNS", "HEIGHT_NAME", "HEIGHT_SLOPE", "METRIC_NAMES",
+           "EDGE_ROW_SHORTFALL", "FAILED", "HEIGHT_DESIGNS", "HEIGHT_NAME", "HEIGHT_SLOPE",
+           "METRIC_NAMES",
            "PATH_STEPS", "RELIEF_NAMES", "STAGE_TERMS", "TE_DESIGNS", "TE_NAME", "TIP_RELIEF_START",
            "VARIABLES", "VERIFIED_DESIGNS",
            "DevelopmentEvaluation", "DevelopmentResult", "DevelopmentTargets", "KeptTeeth",
