@@ -170,7 +170,9 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     # CellBasis(mesh, elem, intorder=4)'s gradients and area weights, each evaluated
     # once (mapped_mesh.basis_fields: the same numbers, a fraction of the time, issue 75)
     X, W = get_quadrature(mesh.refdom, 4)
-    _, grads, det = basis_fields(mesh, elem, X)  # (nb, 3, E, Q), (E, Q)
+    fields = basis_fields(mesh, elem, X)
+    grads, det = fields.grads, fields.det  # (nb, 3, E, Q), (E, Q)
+    del fields
     nb = grads.shape[0]
     dx = np.abs(det) * np.broadcast_to(W, det.shape)  # (E, Q)
     del det
