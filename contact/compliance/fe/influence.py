@@ -460,7 +460,7 @@ def principal_stresses(tensor: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     which the formula gives accurately), its eigenvector and the 2 × 2 tensor on the plane
     normal to it (:func:`_pair_by_projection`). Vectorised in blocks; ~10× faster than
     ``numpy.linalg.eigvalsh`` on the FE build's millions of tensors and equal to it within
-    1e-10 of the tensor's norm (tests/test_fe_tooth.py).
+    1e-10 of the tensor's norm (tests/test_root_stress.py).
 
     Parameters
     ----------
