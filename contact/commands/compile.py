@@ -19,8 +19,8 @@ def register(sub) -> None:
         "machine: the first command after it starts without the ~20 s of compiling "
         "(and with the auto choice of kernels, ltca run's default, which runs the NumPy "
         "path until the cache holds them, every command uses them). Point numba's cache "
-        "directory at a shared one to fill it once for the nodes of a cluster (docs/environment.md, "
-        "docs/performance.md).",
+        "directory at a shared one to fill it once for the nodes of a cluster "
+        "(docs/environment.md, docs/performance.md).",
     )
     p.set_defaults(func=run)
 
