@@ -183,6 +183,7 @@ def check_option_bounds(args: argparse.Namespace) -> None:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
+    as_process = argv is None  # the console script or python -m contact: the command is the process
     argv = list(sys.argv[1:] if argv is None else argv)
     args = parse_arguments(parser, argv)
     args.argv = argv  # as typed, for the provenance of files a command writes
@@ -224,6 +225,12 @@ def main(argv: Sequence[str] | None = None) -> int:
             from geometry.core.kernels import prefer_compiled
 
             prefer_compiled()
+        elif as_process and getattr(args, "one_analysis", False):
+            # one analysis never earns the compile back: the NumPy path until numba's
+            # cache holds the kernels (geometry.core.kernels.prefer_cached, issue 75)
+            from geometry.core.kernels import prefer_cached
+
+            prefer_cached()
         return int(args.func(args) or 0)
     except AnalysisFailedError as exc:  # ran, wrote its file, found no certified contact
         print(f"ltca {args.command}: error: {exc}", file=sys.stderr)

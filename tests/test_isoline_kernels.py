@@ -326,3 +326,32 @@ def test_commands_of_many_analyses_ask_for_the_compiled_kernels():
             "friction-study", "efficiency-map"}
     for name in (*many, "run", "rate", "report", "duty-cycle", "compile"):
         assert bool(sub.choices[name].get_default("many_analyses")) is (name in many), name
+
+
+def test_ltca_run_as_its_own_process_takes_auto(monkeypatch):
+    """``ltca run`` as the process (the console script, ``python -m contact``: ``main()``
+    without arguments) runs with ``LTCA_KERNELS=auto`` where the user set nothing — one
+    analysis never earns numba's first-use compile back (issue 75) — while the same
+    command called from Python (``main([...])``) leaves the process's default alone (a
+    test session or a script keeps one path for all its analyses), and a user's
+    ``LTCA_KERNELS`` wins. The command's work is replaced by a probe."""
+    import argparse
+    import sys
+
+    import contact.commands.run as run_command
+    from contact.cli import build_parser, main
+
+    sub = next(a for a in build_parser()._actions
+               if isinstance(a, argparse._SubParsersAction))
+    assert sub.choices["run"].get_default("one_analysis") is True
+    assert not sub.choices["synthesize"].get_default("one_analysis")
+    seen = []
+    monkeypatch.setattr(run_command, "run",
+                        lambda args: seen.append(os.environ.get("LTCA_KERNELS")) or 0)
+    monkeypatch.delenv("LTCA_KERNELS", raising=False)
+    assert main(["run", "-q"]) == 0
+    monkeypatch.setattr(sys, "argv", ["ltca", "run", "-q"])
+    assert main() == 0
+    monkeypatch.setenv("LTCA_KERNELS", "numba")
+    assert main() == 0
+    assert seen == [None, "auto", "numba"]

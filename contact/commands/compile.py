@@ -17,10 +17,10 @@ def register(sub) -> None:
         description="Runs the default case's contact analysis (geometry, UTCA, LTCA; no "
         "root stress) with the compiled kernels, so that numba's cache holds them for this "
         "machine: the first command after it starts without the ~20 s of compiling "
-        "(and with the opt-in auto choice of kernels, which runs the NumPy path until the "
-        "cache holds them, every command uses them). Point numba's cache directory at a "
-        "shared one to fill it once for the nodes of a cluster (docs/environment.md, "
-        "docs/performance.md).",
+        "(and with the auto choice of kernels, ltca run's default, which runs the NumPy "
+        "path until the cache holds them, every command uses them). Point numba's cache "
+        "directory at a shared one to fill it once for the nodes of a cluster "
+        "(docs/environment.md, docs/performance.md).",
     )
     p.set_defaults(func=run)
 

@@ -102,7 +102,7 @@ def register(sub) -> None:
                    "[agma2003] table; a plug-in's; default the case's [rating] method, else "
                    "iso10300; an unknown name lists those available)")
     progress_option(p)
-    p.set_defaults(func=run)
+    p.set_defaults(func=run, one_analysis=True)
 
     q = sub.add_parser("plot", help="redraw every plot of an analysis from its netCDF file")
     analysis_file_argument(q)

@@ -12,8 +12,9 @@ extra) that runs the same iterations point by point. This module chooses between
 the same way for all: an explicit ``kernels`` argument where a function takes one, else
 the environment variable ``LTCA_KERNELS``, else numba where it is installed.
 
-``auto`` (opt-in: ``LTCA_KERNELS=auto``) runs the compiled kernels only where numba's
-cache already holds them for this machine (:func:`cache_ready`), and the NumPy path otherwise. Numba
+``auto`` (``LTCA_KERNELS=auto``; the default of ``ltca run`` run as its own process,
+:func:`prefer_cached`) runs the compiled kernels only where numba's cache already holds
+them for this machine (:func:`cache_ready`), and the NumPy path otherwise. Numba
 compiles the four modules in ≈ 22 s of CPU on their first use (the envelope's Newton
 solve 6.3 s, the iso-line seeds 4.5 s, the block pivoting 4.3 s, measured on the 2-core
 machine with ``numba.core.event``), while a warm ``ltca run`` of the default case costs
@@ -37,6 +38,7 @@ compiled_module   a compiled kernel module, imported once per process (None with
 cache_ready       whether numba's cache holds a module's kernels for this machine
 process_choice    ``numpy`` or ``numba``: what this process runs (``auto`` resolved)
 prefer_compiled   make ``auto`` mean ``numba`` in this process (commands of many analyses)
+prefer_cached     make ``auto`` the default in this process (a command of one analysis)
 """
 
 from __future__ import annotations
@@ -50,7 +52,7 @@ from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
 __all__ = ["KERNELS", "KERNEL_MODULES", "cache_ready", "compiled_module", "kernels_module",
-           "prefer_compiled", "process_choice"]
+           "prefer_cached", "prefer_compiled", "process_choice"]
 
 #: the implementations: ``numpy`` (the reference), ``numba`` (compiled; the ``fast``
 #: extra) and ``auto`` (numba where its cache holds the kernels, :func:`cache_ready`)
@@ -158,6 +160,19 @@ def prefer_compiled() -> None:
     is installed; a user's ``LTCA_KERNELS`` wins. Called by the command-line layer only."""
     if not os.environ.get("LTCA_KERNELS") and compiled_module(KERNEL_MODULES[0]) is not None:
         os.environ["LTCA_KERNELS"] = "numba"
+
+
+def prefer_cached() -> None:
+    """Make ``auto`` the choice of this process (and the processes it starts): the
+    compiled kernels where numba's cache holds them (:func:`cache_ready`), the NumPy path
+    otherwise — for a command of one analysis run as its own process (``ltca run``),
+    which never earns numba's ≈ 22 s of first-use compiling back (docs/performance.md,
+    "Compiled kernels"). Sets ``LTCA_KERNELS=auto`` where it is unset; a user's
+    ``LTCA_KERNELS`` wins. Called by the command-line layer only, and only where the
+    command is the process (not for ``contact.cli.main`` called with arguments from
+    Python, whose process keeps one path for all its analyses)."""
+    if not os.environ.get("LTCA_KERNELS"):
+        os.environ["LTCA_KERNELS"] = "auto"
 
 
 def kernels_module(name: str, kernels: str | None = None) -> ModuleType | None:
