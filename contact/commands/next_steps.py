@@ -180,9 +180,25 @@ def overlap_lines(case) -> list[str]:
             "with it (ltca synthesize BASIC.toml)"]
 
 
-def _spread_failed(findings) -> bool:
-    """Whether a verdict's findings FAIL on the LTE spread (the plausibility cause
-    ``lte_spread`` of ``ltca run`` or of a duty cycle's bins)."""
+def spread_failed(findings: Sequence) -> bool:
+    """Whether a verdict's findings FAIL on the LTE spread.
+
+    Parameters
+    ----------
+    findings : sequence of contact.study.verdicts.Finding
+        A verdict's findings (``ltca run``'s or a duty cycle's bins').
+
+    Returns
+    -------
+    bool
+        True where one finding of severity ``fail`` and check ``implausible`` names the
+        LTE spread (the plausibility cause ``lte_spread``, docs/verdicts.md).
+
+    Raises
+    ------
+    AttributeError
+        Where an item has no ``severity``, ``check`` or ``reason``.
+    """
     return any(f.severity == "fail" and f.check == "implausible"
                and ("LTE spread" in f.reason or "lte spread" in f.reason)
                for f in findings)
@@ -222,7 +238,7 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
     if case is not None and "implausible" in fail_checks:
         from contact.study.verdicts import verdict
 
-        if _spread_failed(verdict(ds).findings):
+        if spread_failed(verdict(ds).findings):
             first = overlap_lines(case)
     torque = np.asarray(ds["torque"].values, float)
     flag = f" --flank {flank}" if flank else ""

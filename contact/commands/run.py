@@ -509,9 +509,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     if not overloaded:
         out += capacity
     if "implausible" in failed:  # an LTE spread that is the design's low face contact ratio
-        from contact.commands.next_steps import _spread_failed, overlap_lines
+        from contact.commands.next_steps import overlap_lines, spread_failed
 
-        if _spread_failed(v.findings):
+        if spread_failed(v.findings):
             out = overlap_lines(case) + out
     if "scuffing" in failed:
         op = case.operating
