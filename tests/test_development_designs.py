@@ -107,7 +107,7 @@ DRIVE_TARGETS_MET = {"eaxle_hypoid_11x39_s80", "fh_hypoid_11x43", "fh_spiral_bev
 #: every design the verdict passes: LTE 57 / 138 µrad, spread 0.28, ATTENTION).
 #: Since the LTE is weighed at each torque and a pattern on the edge row outweighs an LTE
 #: miss (2026-11-25, lowcr71 and unseen71 merged), the 14x35's `ltca run` has no FAIL
-#: finding either (the slow run of this test at the merged tree, 2026-11-26 00:0x UTC).
+#: finding either (the slow run of this test at the merged tree, 2026-11-25 23:50 UTC).
 RUN_FAILS: dict[str, str] = {}
 
 #: issue 71 item 2 (both flanks, one design torque that holds), measured 2026-11-25 with
