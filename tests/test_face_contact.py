@@ -133,3 +133,26 @@ def test_a_duty_cycle_failing_on_its_spread_prints_the_overlap_first(monkeypatch
                         lambda d: V("plastic contact in bin 1"))
     lines = next_steps.duty_cycle_lines(ds, "c.toml", None, ["implausible"], case)
     assert not any("eps_vb" in ln for ln in lines)
+
+
+def test_the_duty_cycle_line_names_the_member_of_an_unlabelled_member_dimension():
+    """A duty-cycle dataset whose ``member`` dimension has no labels (its index only)
+    names the member as the toolkit numbers them (pinion 0, gear 1), not "0's"."""
+    import numpy as np
+    import xarray as xr
+
+    from contact.commands import next_steps
+
+    flank = np.zeros((2, 2, 3, 3))  # (bin, member, u, v)
+    flank[1, 1, 2, 1] = 0.7  # the gear's worst point, done by the second bin
+    flank[0, 1, 2, 1] = 0.3
+    ds = xr.Dataset({"torque": ("bin", np.array([40.0, 400.0])),
+                     "flank_damage": (("bin", "member", "u", "v"), flank),
+                     "damage": ("member", np.array([0.1, 1.0]))})
+    ds = ds.transpose("member", "bin", "u", "v")
+    ds["flank_damage"] = ds["flank_damage"].transpose("bin", "member", "u", "v")
+    lines = next_steps.duty_cycle_lines(ds, "c.toml", None, ["damage"])
+    text = "\n".join(lines)
+    assert "gear's flank damage" in text and "0's" not in text and "1's" not in text, text
+    # the share printed is the second bin's 70 % of the point's damage
+    assert "bin 1 (400 N m) does 70 %" in text, text

@@ -251,7 +251,10 @@ def duty_cycle_lines(ds, shown: str, flank: str | None,
             iu, iv = np.unravel_index(int(np.argmax(total)), total.shape)
             per_bin = fd[:, iu, iv]
             worst = int(np.argmax(per_bin))
-            member = str(ds["member"].values[k])
+            member = ds["member"].values[k]
+            # a file whose member dimension has no labels stores its index (pinion 0, gear 1)
+            member = (("pinion", "gear")[int(member)] if np.issubdtype(
+                np.asarray(member).dtype, np.integer) else str(member))
             why = (f"bin {worst} ({torque[worst]:g} N m) does "
                    f"{100 * per_bin[worst] / per_bin.sum():.0f} % of the {member}'s flank "
                    "damage at its first point to fail")
