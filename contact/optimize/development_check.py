@@ -223,6 +223,21 @@ def steps_on_each(chosen: DevelopmentEvaluation, others: list[DevelopmentEvaluat
     return best
 
 
+def _pattern_high(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                  setup: Mapping[str, Any], names: tuple[str, ...]) -> bool:
+    """Whether a height step (:func:`_checked_tip`, :func:`_checked_root`) applies: the
+    design was checked at :data:`CHECK_LTCA` and misses its light-load centre v there,
+    its footprint centre v (finite) at or above the target centre (``pattern_centre_v``,
+    else the setup's ``centre_v``), and every variable of ``names`` is developed."""
+    if (best.full is None or not best.checked or best.full[1]["centre_v"] == 0.0
+            or not all(n in targets.variables and n in best.values for n in names)
+            or not math.isfinite(footprint_centre_v(best))):
+        return False
+    target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
+              else setup["centre_v"])
+    return footprint_centre_v(best) >= target
+
+
 def _checked_tip(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                  setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
                  placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
@@ -251,13 +266,7 @@ def _checked_tip(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     +0.05 mm; 12 µm with the path −75°, ellipse 0.65: every target met, tolerant. The
     single step of half the tip relief before (7.5 µm) uncovered the tip edge on both."""
     names = ("tip_relief", "tip_relief_start")
-    if (best.full is None or not best.checked or best.full[1]["centre_v"] == 0.0
-            or not all(n in targets.variables and n in best.values for n in names)
-            or not math.isfinite(footprint_centre_v(best))):
-        return best
-    target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
-              else setup["centre_v"])
-    if (footprint_centre_v(best) < target
+    if (not _pattern_high(best, targets, setup, names)
             or float(best.metrics["edge_load_share"][1]) > 0.5 * targets.max_edge_share):
         return best
     (r_lo, r_hi), (_, s_hi) = (targets.variables[n] for n in names)
@@ -367,13 +376,7 @@ def _checked_root(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     there), this is the height's lever left: the blade-angle change costs about 1 µrad
     of unloaded TE per 0.001° (39 → 49 → 65 µrad at 0, −0.03°, −0.06°)."""
     names = ("root_relief", "relief_start", "ellipse_length")
-    if (best.full is None or not best.checked or best.full[1]["centre_v"] == 0.0
-            or not all(n in targets.variables and n in best.values for n in names)
-            or not math.isfinite(footprint_centre_v(best))):
-        return best
-    target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
-              else setup["centre_v"])
-    if footprint_centre_v(best) < target:
+    if not _pattern_high(best, targets, setup, names):
         return best
     (_, r_hi), (s_lo, _), (e_lo, e_hi) = (targets.variables[n] for n in names)
     length = best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0]
