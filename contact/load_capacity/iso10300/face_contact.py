@@ -81,12 +81,14 @@ class OverlapRemedy:
     beta_m_needed: float
 
 
-def _eps_vb(design) -> float:
+def _eps_vb(design, blank=None) -> float:
+    """ε_vβ [1] of ``design`` from its ISO 23509 blank (``blank`` where already made)."""
     from contact.load_capacity.iso10300.inputs import gear_data_from_blank
     from contact.load_capacity.iso10300.virtual_gears import virtual_gears
     from geometry.iso23509.blank import blank_geometry
 
-    return float(virtual_gears(gear_data_from_blank(blank_geometry(design))).eps_vb)
+    blank = blank_geometry(design) if blank is None else blank
+    return float(virtual_gears(gear_data_from_blank(blank)).eps_vb)
 
 
 def _root(f, x0: float, x1: float, steps: int = 12) -> float:
@@ -150,15 +152,14 @@ def overlap_remedy(design, target: float = FACE_CONTACT_RATIO_MIN) -> OverlapRem
     face lowers the mean normal module, so ε_vβ grows faster than b2 (the 17x29 of
     tests/data/designs: 0.96 at 24 mm, 1.25 at 30.0 mm).
     """
-    from contact.load_capacity.iso10300.inputs import gear_data_from_blank  # noqa: F401
     from geometry.core.errors import InputError
     from geometry.iso23509.blank import blank_geometry
 
     if not (isinstance(target, (int, float)) and math.isfinite(target) and 0.0 < target <= 5.0):
         raise InputError(f"target: the face contact ratio aimed at must be a number in "
                          f"(0, 5], got {target!r}")
-    eps = _eps_vb(design)
-    re2 = float(blank_geometry(design).gear.Re)
+    blank = blank_geometry(design)
+    eps, re2 = _eps_vb(design, blank), float(blank.gear.Re)
     b2, beta = float(design.b2), math.degrees(float(design.beta_m))
     if eps >= target:
         return OverlapRemedy(eps, float(target), b2, b2, FACE_WIDTH_LIMIT * re2, beta, beta)
