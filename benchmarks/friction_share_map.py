@@ -165,32 +165,49 @@ def sensitivity_rows(lts, folder, values=(0.10, 0.09, 0.085, 0.08, 0.075, 0.07))
     return rows
 
 
+#: the one flank point of ``--share-curve``: radius of relative curvature [mm], E' [MPa],
+#: Hertz pressure [MPa], the 75W90 at 90 degC
+_POINT = {"radius": 15.0, "e_prime": 230e3, "p_h": 1000.0, "temperature": 90.0}
+
+
+def _point_load() -> float:
+    """Load per length [N/mm] of the line contact at :data:`_POINT`'s Hertz pressure."""
+    import numpy as np
+
+    b = 4.0 * _POINT["radius"] * _POINT["p_h"] / _POINT["e_prime"]  # Hertz half-width, mm
+    return float(np.pi * b * _POINT["p_h"] / 2.0)
+
+
+def _point_share(rq: float, u):
+    """(central λ, asperity load share) of thermal_eyring's load sharing at
+    :data:`_POINT`, run-in ground summits of Rq ``rq`` [µm] on both flanks, entraining
+    speeds ``u`` [m/s] (array), slide-to-roll 0.5."""
+    import numpy as np
+
+    from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
+
+    oil, t = load_lubricant("75W90"), _POINT["temperature"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FrictionModelRangeWarning)
+        sol = _load_sharing(
+            summits="ground", load_per_length=_point_load(), hertz_pressure=_POINT["p_h"],
+            radius=_POINT["radius"], e_prime=_POINT["e_prime"], entraining_velocity=u,
+            sliding_velocity=0.5 * u, viscosity=float(viscosity(oil, t)),
+            pressure_viscosity=float(pressure_viscosity_coefficient(oil, t)),
+            roughness_1=rq, roughness_2=rq, thermal_factor=1.0, eyring_stress=5.0,
+            limiting_shear_coefficient=0.08, boundary_friction=0.1,
+            asperity_density_radius_sigma=0.05, sigma_over_beta=0.01)
+    return sol.smooth_film_thickness / (np.sqrt(2.0) * rq), sol.asperity_load_share
+
+
 def share_curve_rows(lambdas=(0.05, 0.09, 0.15, 0.2, 0.28, 0.52, 0.75, 1.2)):
     """Asperity share at the smooth-surface central λ nearest each of ``lambdas`` (module
     docstring, ``--share-curve``); rows (λ, share at Rq 0.544, share at Rq 0.884)."""
     import numpy as np
 
-    from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
 
-    oil = load_lubricant("75W90")
-    eta, alpha = float(viscosity(oil, 90.0)), float(pressure_viscosity_coefficient(oil, 90.0))
-    radius, e_prime, p_h = 15.0, 230e3, 1000.0
-    b = 4.0 * radius * p_h / e_prime  # mm, line-contact Hertz half-width
-    w = np.pi * b * p_h / 2.0  # N/mm
     u = np.geomspace(0.02, 60.0, 600)
-    cols = []
-    for rq in (0.544, 0.884):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", FrictionModelRangeWarning)
-            sol = _load_sharing(
-                summits="ground", load_per_length=w, hertz_pressure=p_h, radius=radius,
-                e_prime=e_prime, entraining_velocity=u, sliding_velocity=0.5 * u,
-                viscosity=eta, pressure_viscosity=alpha, roughness_1=rq, roughness_2=rq,
-                thermal_factor=1.0, eyring_stress=5.0, limiting_shear_coefficient=0.08,
-                boundary_friction=0.1, asperity_density_radius_sigma=0.05,
-                sigma_over_beta=0.01)
-        lam = sol.smooth_film_thickness / (np.sqrt(2.0) * rq)
-        cols.append((lam, sol.asperity_load_share))
+    cols = [_point_share(rq, u) for rq in (0.544, 0.884)]
     rows = []
     for target in lambdas:
         row = [target]
@@ -206,7 +223,6 @@ def stochastic_share_rows(speeds=((0.15, 0.3, 0.6, 1.0, 1.5, 2.5, 5.0, 8.0, 12.0
     """At ``--share-curve``'s flank point, per run-in Rq (0.544, 0.884 µm) and entraining
     speed [m/s]: rows (Rq, u_e, central λ, JGP share, stochastic solver's asperity load
     ratio, its Pan–Hamrock λ); NaN where the solver did not converge."""
-    import math
 
     import numpy as np
 
@@ -214,30 +230,16 @@ def stochastic_share_rows(speeds=((0.15, 0.3, 0.6, 1.0, 1.5, 2.5, 5.0, 8.0, 12.0
     from friction.ehl.line_contact import LineContactCondition
     from friction.ehl.roughness import GroundSurface
     from friction.ehl.stochastic import StochasticOptions, stochastic_summary
-    from friction.lubricant import load_lubricant, pressure_viscosity_coefficient, viscosity
 
-    oil = load_lubricant("75W90")
-    eta, alpha = float(viscosity(oil, 90.0)), float(pressure_viscosity_coefficient(oil, 90.0))
-    radius, e_prime, p_h = 15.0, 230e3, 1000.0
-    b = 4.0 * radius * p_h / e_prime
-    w = np.pi * b * p_h / 2.0
+    radius, e_prime, w = _POINT["radius"], _POINT["e_prime"], _point_load()
     rows = []
     for rq, us in zip((0.544, 0.884), speeds, strict=True):
-        u = np.asarray(us, dtype=float)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", FrictionModelRangeWarning)
-            sol = _load_sharing(
-                summits="ground", load_per_length=w, hertz_pressure=p_h, radius=radius,
-                e_prime=e_prime, entraining_velocity=u, sliding_velocity=0.5 * u,
-                viscosity=eta, pressure_viscosity=alpha, roughness_1=rq, roughness_2=rq,
-                thermal_factor=1.0, eyring_stress=5.0, limiting_shear_coefficient=0.08,
-                boundary_friction=0.1, asperity_density_radius_sigma=0.05,
-                sigma_over_beta=0.01)
-        lam = sol.smooth_film_thickness / (math.sqrt(2.0) * rq)
+        lam, share = _point_share(rq, np.asarray(us, dtype=float))
         for i, ue in enumerate(us):
             cond = LineContactCondition(load_per_length=w, radius=radius,
                                         entraining_velocity=ue, slide_to_roll=0.5,
-                                        temperature=90.0, e_prime=e_prime)
+                                        temperature=_POINT["temperature"],
+                                        e_prime=e_prime)
             try:
                 s = stochastic_summary(cond, (GroundSurface(rq, seed=1),
                                               GroundSurface(rq, seed=2)),
@@ -245,7 +247,7 @@ def stochastic_share_rows(speeds=((0.15, 0.3, 0.6, 1.0, 1.5, 2.5, 5.0, 8.0, 12.0
                 st = (s.asperity_load_ratio, s.lambda_ratio)
             except ConvergenceError:
                 st = (float("nan"), float("nan"))
-            rows.append([rq, ue, float(lam[i]), float(sol.asperity_load_share[i]), *st])
+            rows.append([rq, ue, float(lam[i]), float(share[i]), *st])
     return rows
 
 
