@@ -792,10 +792,12 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             f"crown gear), R_mf {_fmt(gear.mean_root_cone_distance, 6)} mm, r_c0 "
             f"{_fmt(gear.cutter_radius, 6)} mm, point width {_fmt(gear.point_width, 5)} mm.")
         generating = (
-            "generating gear = the gear's own crown gear (its cradle and cutter where they "
-            "generate M, the cradle axis reversed to face the pinion, ratio of roll "
-            "z2/z1 times the gear's), mismatch by the pinion point radius, a circular blade "
-            "profile and the ratio of roll (cradle shifted to keep M generated at roll 0)")
+            "generating gear = the pinion's own crown gear (machine root angle = the pinion "
+            "root angle, the cradle axis normal to the plane touching the root cone along "
+            "M's root generatrix, ratio of roll cos(theta_f1)/sin(delta1) to start, an "
+            "untilted cutter touching M whose blade angle follows from M's normal), "
+            "mismatch by the pinion point radius, a circular blade profile and the ratio "
+            "of roll (cradle shifted to keep M generated at roll 0)")
     else:
         parts.append(
             "Gear Formate, one spread-blade cutter "
