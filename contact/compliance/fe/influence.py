@@ -497,26 +497,24 @@ def _principal_block(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     smin = q + 2.0 * p * np.cos(phi + 2.0 * np.pi / 3.0)
     near = np.flatnonzero(np.abs(r) > 1.0 - _NEAR_DOUBLE)
     if near.size:
-        smax[near], smin[near] = _pair_by_projection(t[near], r[near] >= 0.0)
+        smax[near], smin[near] = _pair_by_projection(t[near], q[near], p[near], r[near])
     return smax, smin
 
 
-def _pair_by_projection(t: np.ndarray, top: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _pair_by_projection(t: np.ndarray, q: np.ndarray, p: np.ndarray, r: np.ndarray
+                        ) -> tuple[np.ndarray, np.ndarray]:
     """Largest and smallest principal values of tensors (n, 6) two of whose values nearly
-    coincide: the separated value μ by the trigonometric formula (the largest where
-    ``top``, else the smallest: accurate there), its eigenvector v (the longest cross
-    product of two rows of σ − μ I) and the other two as the eigenvalues of the 2 × 2
-    tensor on the plane normal to v (stable where they coincide)."""
+    coincide, from their invariants of :func:`_principal_block` (q = tr σ / 3, p, r): the
+    separated value μ by the trigonometric formula (the largest where r ≥ 0, else the
+    smallest: accurate there), its eigenvector v (the longest cross product of two rows of
+    σ − μ I) and the other two as the eigenvalues of the 2 × 2 tensor on the plane normal
+    to v (stable where they coincide)."""
     xx, yy, zz, yz, xz, xy = (t[:, i] for i in range(6))
-    q = (xx + yy + zz) / 3.0
-    bx, by, bz = xx - q, yy - q, zz - q
-    p = np.sqrt((bx * bx + by * by + bz * bz + 2.0 * (yz * yz + xz * xz + xy * xy)) / 6.0)
     inv = 1.0 / np.where(p > 0.0, p, 1.0)
-    bx, by, bz, byz, bxz, bxy = bx * inv, by * inv, bz * inv, yz * inv, xz * inv, xy * inv
-    det = (bx * (by * bz - byz * byz) - bxy * (bxy * bz - byz * bxz)
-           + bxz * (bxy * byz - by * bxz))
-    phi = np.arccos(np.clip(0.5 * det, -1.0, 1.0)) / 3.0
-    mu = 2.0 * np.cos(np.where(top, phi, phi + 2.0 * np.pi / 3.0))
+    bx, by, bz = (xx - q) * inv, (yy - q) * inv, (zz - q) * inv
+    byz, bxz, bxy = yz * inv, xz * inv, xy * inv
+    phi = np.arccos(r) / 3.0
+    mu = 2.0 * np.cos(np.where(r >= 0.0, phi, phi + 2.0 * np.pi / 3.0))
     rows = (np.stack([bx - mu, bxy, bxz]), np.stack([bxy, by - mu, byz]),
             np.stack([bxz, byz, bz - mu]))
     cands = np.stack([np.cross(rows[0], rows[1], axis=0), np.cross(rows[0], rows[2], axis=0),
