@@ -432,6 +432,11 @@ def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTar
     c = max(t.clearance, 1e-3)
     plimit = t.max_flank_pressure if t.max_flank_pressure is not None else pressure_limit
     length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
+    # the light-load pattern's clearance to each end of the grid; a pattern on the grid's
+    # outermost row is edge contact at the light torque, not a clearance a little short
+    # (EDGE_ROW_SHORTFALL)
+    gaps = {"toe": m["pattern_toe_u"][0] - u0, "heel": u1 - m["pattern_heel_u"][0],
+            "root": m["pattern_root_v"][0] - v0, "tip": v1 - m["pattern_tip_v"][0]}
     short = {
         "length": max(0.0, abs(length - t.pattern_length) - t.pattern_length_tolerance)
         / t.pattern_length_tolerance,
@@ -439,10 +444,8 @@ def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTar
                         - t.centre_tolerance) / t.centre_tolerance,
         "centre_v": max(0.0, abs(m["pattern_centre_v"][0] - cv) - t.centre_tolerance)
         / t.centre_tolerance,
-        "toe": max(0.0, c - (m["pattern_toe_u"][0] - u0)) / c,
-        "heel": max(0.0, c - (u1 - m["pattern_heel_u"][0])) / c,
-        "root": max(0.0, c - (m["pattern_root_v"][0] - v0)) / c,
-        "tip": max(0.0, c - (v1 - m["pattern_tip_v"][0])) / c,
+        **{side: EDGE_ROW_SHORTFALL if gap <= _ROUND_OFF else max(0.0, c - gap) / c
+           for side, gap in gaps.items()},
         "edge": max(0.0, m["edge_load_share"][1] - t.max_edge_share) / _EDGE_SCALE,
         "plastic": max(0.0, float(np.max(m["plastic_share"])) - t.max_plastic_share)
         / _PLASTIC_SCALE,
@@ -451,13 +454,6 @@ def development_score(metrics: Mapping[str, np.ndarray], targets: DevelopmentTar
         "spread": max(0.0, float(np.max(m["lte_spread"])) - LTE_SPREAD_LIMIT)
         / _SPREAD_SCALE,
     }
-    # a pattern on the grid's outermost row is edge contact at the light torque, not a
-    # clearance a little short (EDGE_ROW_SHORTFALL)
-    gaps = {"toe": m["pattern_toe_u"][0] - u0, "heel": u1 - m["pattern_heel_u"][0],
-            "root": m["pattern_root_v"][0] - v0, "tip": v1 - m["pattern_tip_v"][0]}
-    for side, gap in gaps.items():
-        if gap <= _ROUND_OFF:
-            short[side] = EDGE_ROW_SHORTFALL
     # a metric on its tolerance's bound meets it: the pattern's ends are grid fractions,
     # and 0.8 − 0.2 is 0.6000000000000001 in floating point (a pattern 0.20–0.80 long
     # was "missed" against 0.5 ± 0.1); a shortfall below _ROUND_OFF is rounding
