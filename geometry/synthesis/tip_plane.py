@@ -271,12 +271,11 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
                 return line
         return generated_root_line(b, s, blank, hand, u)
 
-    whole: dict = {}  # the whole search's root line of the last (b, s) it searched
+    last_search: list = [None]  # (b, s, root line) of the last whole search
 
     def highest(b: Blade, s: MachineSettings) -> tuple[float, float]:
         line = root_line(b, s)
-        whole.clear()
-        whole[(id(b), id(s))] = (b, s, line)
+        last_search[0] = (b, s, line)
         if not np.all(np.isfinite(line.depth)):
             bad = line.u[~np.isfinite(line.depth)]
             raise InputError(f"{blade.side} blade: its root line is not generated at face "
@@ -337,6 +336,6 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
                          f"root cone (highest root-line point {top:.3g} mm below it)")
     # the placed root line: the last whole search's where it searched this placement
     # (the same call, the same line), else computed
-    kept = whole.get((id(b), id(s)))
+    kept = last_search[0]
     line = kept[2] if kept is not None and kept[0] is b and kept[1] is s else root_line(b, s)
     return TipPlacement(b, s, moved, u_top, line)
