@@ -74,6 +74,7 @@ from scipy.optimize import elementwise
 
 from friction.flank_summits import greenwood_tripp_parameters, height_tail_integral
 from friction.mixed_ehl import (
+    _FILM_GAMMA_EXPONENT,
     COS_THETA,
     MIXED_EHL_DEFAULTS,
     W_THETA,
@@ -84,8 +85,9 @@ from friction.mixed_ehl import (
 from geometry.core.errors import InputError
 from geometry.core.validation import real_array, scalar_or_array
 
-__all__ = ["STEEL_EFFUSIVITY", "THERMAL_EYRING_DEFAULTS", "thermal_eyring",
-           "thermal_eyring_film_shear"]
+__all__ = ["LOAD_SHARING_LAWS", "STEEL_EFFUSIVITY", "THERMAL_EYRING_DEFAULTS",
+           "ZHOU_HOEPRICH_CONSTANTS", "thermal_eyring", "thermal_eyring_film_shear",
+           "zhou_hoeprich_share"]
 
 Array = NDArray[np.float64]
 
@@ -114,6 +116,84 @@ THERMAL_EYRING_DEFAULTS = {
         "Greenwood 1980): 1 uniform shear across the film, 0 the surfaces' flash "
         "temperature alone"),
 }
+
+
+#: The asperity load share laws ``thermal_eyring`` takes (``load_sharing``): name → source.
+LOAD_SHARING_LAWS = {
+    "johnson_greenwood_poon": (
+        "Johnson, Greenwood & Poon, Wear 19 (1972) 91: the film and Greenwood & Tripp's "
+        "asperities (the summits of ``summits``) at one mean-plane separation "
+        "(friction.mixed_ehl.mixed_ehl_solution)"),
+    "zhou_hoeprich": (
+        "Zhou, R. S., Hoeprich, M. R., \"Torque of tapered roller bearings\", J. Tribol. 113 "
+        "(1991) 590-597, Eq. 29: N_a/N = exp(-B Λ^C), fitted to deterministic contact "
+        "simulations of measured run-in ground profiles (elastic-perfectly plastic, "
+        "their Fig. 5)"),
+}
+
+#: Zhou & Hoeprich's constants (B, C) of N_a/N = exp(−B Λ^C) for ground steel surfaces, as
+#: printed in Wingertszahn, Koch, Maccioni, Concli & Sauer, "Predicting friction of tapered
+#: roller bearings with detailed multi-body simulation models", Lubricants 11 (2023) 369,
+#: Table 4 ("mixed friction parameters ... according to Zhou and Hoeprich"): name →
+#: (B, C, composite σ [µm] of the surfaces they belong to).
+ZHOU_HOEPRICH_CONSTANTS = {
+    "rib": (1.90, 0.99, 0.24),
+    "raceway": (2.32, 0.97, 0.16),
+}
+
+
+def zhou_hoeprich_share(film_ratio: ArrayLike, constants: str | tuple[float, float] = "rib"
+                        ) -> NDArray[np.float64] | float:
+    """Zhou & Hoeprich's asperity load share N_a/N = exp(−B Λ^C).
+
+    Parameters
+    ----------
+    film_ratio : float or array — [1]
+        Λ ≥ 0, the smooth-surface central film (thermal reduction applied) over the
+        composite RMS roughness σ = √(Rq₁² + Rq₂²) (Zhou & Hoeprich's Eq. 30).
+    constants : str or (float, float)
+        A key of :data:`ZHOU_HOEPRICH_CONSTANTS` (default ``"rib"``: the rougher of the two
+        published ground surfaces, σ 0.24 µm) or (B, C), each > 0 [1].
+
+    Returns
+    -------
+    float or array — [1]
+        The share of the load on the asperities, in (0, 1]; 1 at Λ = 0.
+
+    Raises
+    ------
+    InputError
+        Λ < 0 or not finite; an unknown name or B, C ≤ 0.
+
+    Notes
+    -----
+    Source: Zhou & Hoeprich (1991) Eq. 29 (:data:`LOAD_SHARING_LAWS`), a fit to the
+    load–average-gap relation of deterministic contact simulations of run-in, filtered
+    ground profiles (Lee & Cheng's elastic–perfectly plastic longitudinal-roughness
+    model), so the film is the average gap and the mean planes may overlap; the constants
+    as printed by Wingertszahn et al. (2023) (:data:`ZHOU_HOEPRICH_CONSTANTS`).
+    """
+    b, c = _zhou_hoeprich_constants(constants)
+    lam = real_array("film_ratio", film_ratio, low=0.0, unit="1")
+    return scalar_or_array(np.exp(-b * np.power(lam, c)))
+
+
+def _zhou_hoeprich_constants(constants: str | tuple[float, float]) -> tuple[float, float]:
+    """(B, C) of a name of :data:`ZHOU_HOEPRICH_CONSTANTS` or of a pair, checked."""
+    if isinstance(constants, str):
+        if constants not in ZHOU_HOEPRICH_CONSTANTS:
+            raise InputError(f"asperity_load_constants: {constants!r} is not one of "
+                             f"{sorted(ZHOU_HOEPRICH_CONSTANTS)} or a pair (B, C)")
+        return ZHOU_HOEPRICH_CONSTANTS[constants][:2]
+    try:
+        b, c = (float(v) for v in constants)
+    except (TypeError, ValueError):
+        raise InputError("asperity_load_constants: give a name of ZHOU_HOEPRICH_CONSTANTS "
+                         f"or a pair (B, C) of positive numbers, not {constants!r}") from None
+    if not (b > 0.0 and c > 0.0 and math.isfinite(b) and math.isfinite(c)):
+        raise InputError(f"asperity_load_constants: B and C must be finite and > 0 [1], "
+                         f"got ({b:g}, {c:g})")
+    return b, c
 
 
 def thermal_eyring_film_shear(
@@ -211,6 +291,8 @@ def thermal_eyring(
     asperity_density_radius_sigma: float = MIXED_EHL_DEFAULTS["asperity_density_radius_sigma"][0],
     sigma_over_beta: float = MIXED_EHL_DEFAULTS["sigma_over_beta"][0],
     summits: str = "ground",
+    load_sharing: str = "johnson_greenwood_poon",
+    asperity_load_constants: str | tuple[float, float] = "rib",
 ) -> NDArray[np.float64] | float:
     """Mixed-EHL μ with a thermal Eyring film shear (module docstring).
 
@@ -238,6 +320,16 @@ def thermal_eyring(
         and ``sigma_over_beta`` (``mixed_ehl``'s, issue 74's first version).
     asperity_density_radius_sigma, sigma_over_beta : float
         ηβσ and σ/β [1] of ``summits="fixed"`` (unused otherwise).
+    load_sharing : str
+        The asperities' share of the load (:data:`LOAD_SHARING_LAWS`):
+        ``"johnson_greenwood_poon"`` (default) the film and Greenwood & Tripp's asperities
+        of ``summits`` at one separation; ``"zhou_hoeprich"`` Zhou & Hoeprich's (1991)
+        N_a/N = exp(−B Λ^C) at the smooth-surface central Λ (:func:`zhou_hoeprich_share`;
+        ``summits`` then unused), the film carrying the rest with JGP's γ₁ = 1/(1 − N_a/N)
+        (film pressure p_h/γ₁, film h_c,s γ₁^0.13).
+    asperity_load_constants : str or (float, float)
+        (B, C) of ``"zhou_hoeprich"``: a key of :data:`ZHOU_HOEPRICH_CONSTANTS` (default
+        ``"rib"``) or the pair.
 
     Returns
     -------
@@ -269,8 +361,14 @@ def thermal_eyring(
                            low=0.0, high=1.0, unit="1/K"))
     if summits not in ("ground", "fixed"):
         raise InputError(f"summits: {summits!r} is not 'ground' or 'fixed'")
+    if load_sharing not in LOAD_SHARING_LAWS:
+        raise InputError(f"load_sharing: {load_sharing!r} is not one of "
+                         f"{sorted(LOAD_SHARING_LAWS)}")
+    zh = load_sharing == "zhou_hoeprich"
+    if zh:
+        zh_constants = _zhou_hoeprich_constants(asperity_load_constants)
     sol = _load_sharing(
-        summits=summits,
+        summits="fixed" if zh else summits,
         load_per_length=load_per_length, hertz_pressure=hertz_pressure, radius=radius,
         e_prime=e_prime, entraining_velocity=entraining_velocity,
         sliding_velocity=sliding_velocity, viscosity=viscosity,
@@ -281,6 +379,9 @@ def thermal_eyring(
         asperity_density_radius_sigma=asperity_density_radius_sigma,
         sigma_over_beta=sigma_over_beta,
     )
+    if zh:
+        sol = _zhou_hoeprich_sharing(sol, roughness_1, roughness_2, zh_constants,
+                                     boundary_friction)
     shape = sol.friction_coefficient.shape
     w, ph, u, vs, eta0, alpha = (np.broadcast_to(np.asarray(a, float), shape) for a in (
         load_per_length, hertz_pressure, entraining_velocity, sliding_velocity, viscosity,
@@ -302,6 +403,31 @@ def thermal_eyring(
         pressure_viscosity_temperature=b_a)
     mu_film = b * np.sum(tau * COS_THETA * W_THETA, axis=-1) / w
     return scalar_or_array(mu_film + sol.boundary_friction)
+
+
+def _zhou_hoeprich_sharing(sol: MixedEHL, roughness_1: ArrayLike, roughness_2: ArrayLike,
+                           constants: tuple[float, float], boundary_friction: float
+                           ) -> MixedEHL:
+    """``sol`` (a load-sharing solution, for its smooth-surface film) with Zhou & Hoeprich's
+    asperity share at Λ = h_c,s/σ instead of its own: γ₁ = 1/(1 − N_a/N), the film
+    h_c,s γ₁^0.13 (JGP's scaling of the film with its load), μ_b N_a/N on the asperities.
+    ``friction_coefficient`` and ``film_friction`` are left as the film shear is computed
+    by the caller (set to NaN here so that no one reads ``mixed_ehl``'s)."""
+    shape = sol.smooth_film_thickness.shape
+    sigma = np.broadcast_to(np.hypot(np.asarray(roughness_1, float),
+                                     np.asarray(roughness_2, float)), shape)
+    share = np.asarray(zhou_hoeprich_share(sol.smooth_film_thickness / sigma, constants),
+                       float).reshape(shape)
+    # a share of 1 (Λ = 0) would leave no film: the film's γ₁ is capped as mixed_ehl's
+    share = np.minimum(share, 1.0 - 1e-12)
+    gamma1 = 1.0 / (1.0 - share)
+    h_c = sol.smooth_film_thickness * gamma1**_FILM_GAMMA_EXPONENT
+    nan = np.full(shape, np.nan)
+    return MixedEHL(friction_coefficient=nan, film_friction=nan,
+                    boundary_friction=boundary_friction * share,
+                    asperity_load_share=share, film_thickness=h_c,
+                    smooth_film_thickness=sol.smooth_film_thickness,
+                    lambda_central=h_c / sigma, valid=sol.valid)
 
 
 def _load_sharing(*, summits: str, **inputs) -> MixedEHL:

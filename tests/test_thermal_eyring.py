@@ -185,3 +185,81 @@ def test_efficiency_stage_passes_the_oils_alpha_slope() -> None:
 
     slope = _alpha_temperature_coefficient(load_lubricant("75W90"), 90.0)
     assert slope == pytest.approx(math.log(11.4 / 9.7) / 25.0, rel=1e-9)
+
+
+# --- Zhou & Hoeprich's load share (load_sharing="zhou_hoeprich") ------------------------
+
+
+def test_zhou_hoeprich_share_is_the_published_relation() -> None:
+    from friction.thermal_eyring import ZHOU_HOEPRICH_CONSTANTS, zhou_hoeprich_share
+
+    # Zhou & Hoeprich (1991) Eq. 29, N_a/N = exp(−B Λ^C), with the constants Wingertszahn
+    # et al. (2023) print in their Table 4: B 1.90, C 0.99 (rib, σ 0.24 µm) and B 2.32,
+    # C 0.97 (raceway, σ 0.16 µm); exact to round-off (the formula itself)
+    assert ZHOU_HOEPRICH_CONSTANTS["rib"][:2] == (1.90, 0.99)
+    assert ZHOU_HOEPRICH_CONSTANTS["raceway"][:2] == (2.32, 0.97)
+    lam = np.array([0.0, 0.1, 0.5, 1.0, 2.0])
+    np.testing.assert_allclose(zhou_hoeprich_share(lam), np.exp(-1.90 * lam**0.99),
+                               rtol=1e-14)
+    np.testing.assert_allclose(zhou_hoeprich_share(lam, "raceway"),
+                               np.exp(-2.32 * lam**0.97), rtol=1e-14)
+    assert zhou_hoeprich_share(1.0) == pytest.approx(math.exp(-1.90), rel=1e-14)
+    np.testing.assert_allclose(zhou_hoeprich_share(lam, (1.90, 0.99)), zhou_hoeprich_share(lam),
+                               rtol=0.0)
+    # their Fig. 5 statement: the rougher surface carries asperity load over a wider range
+    # of Λ — the rib's (σ 0.24 µm) share above the raceway's (0.16 µm) at every Λ > 0
+    grid = np.geomspace(0.01, 3.0, 50)
+    assert np.all(zhou_hoeprich_share(grid) > zhou_hoeprich_share(grid, "raceway"))
+
+
+def test_zhou_hoeprich_share_inside_deterministic_mixed_ehl_range() -> None:
+    from friction.thermal_eyring import zhou_hoeprich_share
+
+    # Zhu & Wang, Proc. IMechE J 226 (2012) 1010 (deterministic mixed EHL, abstract): at
+    # λ ≈ 0.05–0.1 the film still carries more than 10–15 % of the load, and the mixed
+    # regime ends at λ ≈ 0.6–1.2 ("little or no asperity contact"). With both published
+    # constant sets: the film carries ≥ 15 % at λ 0.1 and the asperities < 15 % at λ 1.2
+    # (Johnson–Greenwood–Poon's share with the ground summits is ≥ 0.97 at λ 0.1 —
+    # docs/friction.md — the disagreement this law removes)
+    for c in ("rib", "raceway"):
+        assert 1.0 - zhou_hoeprich_share(0.1, c) >= 0.15
+        assert zhou_hoeprich_share(1.2, c) < 0.15
+
+
+def test_zhou_hoeprich_option_in_the_model() -> None:
+    from friction.thermal_eyring import zhou_hoeprich_share
+
+    u = np.array([0.3, 1.0, 2.5, 10.0])
+    kw = dict(SEGMENT, entraining_velocity=u, temperature_viscosity=BETA,
+              pressure_viscosity_temperature=BETA_ALPHA)
+    h_s = mixed_ehl_solution(**dict(SEGMENT, entraining_velocity=u)).smooth_film_thickness
+    share = zhou_hoeprich_share(h_s / math.hypot(0.8, 0.8))
+    # no sliding: no film shear, μ is the asperities' μ_b × the share exactly
+    np.testing.assert_allclose(
+        thermal_eyring(**dict(kw, sliding_velocity=0.0), load_sharing="zhou_hoeprich"),
+        MU_B * share, rtol=1e-12)
+    # sliding: the film carries 1 − share at p_h/γ₁, so its part is ≤ Λ (1 − share)
+    mu = np.asarray(thermal_eyring(**kw, load_sharing="zhou_hoeprich"))
+    film = mu - MU_B * share
+    assert np.all(film > 0.0) and np.all(film <= LAMBDA * (1.0 - share) * (1 + 1e-12))
+    # the share falls as the film grows with speed; summits do not enter
+    assert np.all(np.diff(share) < 0.0)
+    np.testing.assert_allclose(
+        thermal_eyring(**kw, load_sharing="zhou_hoeprich", summits="fixed"), mu, rtol=0.0)
+    # the default load sharing is unchanged (Johnson, Greenwood & Poon)
+    np.testing.assert_allclose(thermal_eyring(**kw),
+                               thermal_eyring(**kw, load_sharing="johnson_greenwood_poon"),
+                               rtol=0.0)
+
+
+def test_zhou_hoeprich_refuses_bad_parameters() -> None:
+    from friction.thermal_eyring import zhou_hoeprich_share
+
+    with pytest.raises(InputError, match="load_sharing"):
+        thermal_eyring(**SEGMENT, load_sharing="persson")
+    for bad in ("flank", (0.0, 1.0), (1.9, -1.0), (1.9,), "x", (float("nan"), 1.0)):
+        with pytest.raises(InputError, match="asperity_load_constants"):
+            thermal_eyring(**SEGMENT, load_sharing="zhou_hoeprich",
+                           asperity_load_constants=bad)
+    with pytest.raises(InputError, match="film_ratio"):
+        zhou_hoeprich_share(-0.1)
