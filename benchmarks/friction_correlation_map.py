@@ -17,7 +17,8 @@ sample 1, ``spiral_bevel_iso23509_s1``; both 50 / 250 / 500 N·m), prints the
   (:mod:`friction.flank_summits`), the same with the surfaces' flash temperature alone
   (``film_heating`` 0, column ``thermal_eyring_s``) and, with ``--fixed-summits``, its
   first version with ``mixed_ehl``'s fixed ηβσ 0.05 and σ/β 0.01 (column
-  ``thermal_eyring_fixed``),
+  ``thermal_eyring_fixed``) and Johnson, Greenwood & Poon's load sharing with the ground
+  summits instead of Zhou & Hoeprich's share (column ``thermal_eyring_jgp``),
 
 over Rq 0.1–1.3 µm × oil inlet 50–100 °C (1500 rpm), pinion speed 100–6000 rpm, torque and
 three oils: the bundled 75W90 (the seed's Table 5.2), an ISO VG 220 mineral gear oil and a
@@ -98,6 +99,10 @@ def models(x_l: float, thermal: bool, fixed_summits: bool = False) -> dict:
         out["thermal_eyring_s"] = functools.partial(thermal_eyring, film_heating=0.0)
         if fixed_summits:
             out["thermal_eyring_fixed"] = functools.partial(thermal_eyring, summits="fixed")
+            # Johnson, Greenwood & Poon's sharing with the ground summits (the model's
+            # default before Zhou & Hoeprich's share, issue 74)
+            out["thermal_eyring_jgp"] = functools.partial(
+                thermal_eyring, load_sharing="johnson_greenwood_poon")
     return out
 
 

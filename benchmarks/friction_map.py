@@ -13,6 +13,8 @@ Usage::
 
     python benchmarks/friction_map.py [--model mixed_ehl] [--summits fixed|profile]
         [--cases default,A,B] [--ltca-cache DIR]
+    python benchmarks/friction_map.py --model thermal_eyring --load-sharing zhou_hoeprich
+        [--asperity-load-constants rib|raceway]
 
 ``--summits profile`` evaluates ``mixed_ehl`` with the summits of the toolkit's ground
 profile scaled in height (:mod:`friction.flank_summits`: McCool's statistics of
@@ -172,6 +174,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--summits", choices=("fixed", "profile"), default="fixed",
                     help="mixed_ehl's σ/β: fixed 0.01 (the model's default) or the ground "
                     "profile's, scaled in height")
+    ap.add_argument("--load-sharing", choices=("johnson_greenwood_poon", "zhou_hoeprich"),
+                    default=None, help="with --model thermal_eyring: its load_sharing "
+                    "(friction.thermal_eyring.LOAD_SHARING_LAWS; default the model's)")
+    ap.add_argument("--asperity-load-constants", choices=("rib", "raceway"), default="rib",
+                    help="with --load-sharing zhou_hoeprich: the published (B, C) set")
     ap.add_argument("--cases", default="default,A,B")
     ap.add_argument("--ltca-cache", type=Path,
                     default=Path.home() / ".cache" / "hypoid-ltca" / "benchmarks")
@@ -181,6 +188,17 @@ def main(argv: list[str] | None = None) -> int:
         model, ebs, bs = profile_summit_model()
         print(f"mixed_ehl with the ground profile's summits: ηβσ {ebs:.4f}, "
               f"σ/β = σ²/{bs:.4f} µm² (σ composite Rq [µm])")
+    if args.load_sharing is not None:
+        if model != "thermal_eyring":
+            ap.error("--load-sharing needs --model thermal_eyring")
+        import functools
+
+        from friction.thermal_eyring import thermal_eyring
+        model = functools.partial(thermal_eyring, load_sharing=args.load_sharing,
+                                  asperity_load_constants=args.asperity_load_constants)
+        print(f"thermal_eyring with load_sharing={args.load_sharing!r}"
+              + (f" ({args.asperity_load_constants})"
+                 if args.load_sharing == "zhou_hoeprich" else ""))
     maps = {}
     for label in args.cases.split(","):
         maps[label] = map_case(label, model, args.ltca_cache)

@@ -25,7 +25,8 @@ smooth-surface central λ at one flank point like A's at 500 N·m (p_h 1.0 GPa, 
 E′ 230 GPa, 75W90 at 90 °C, SR 0.5, no inlet thermal reduction; the entraining speed
 varied), run-in Rq 0.544 and 0.884 µm (given 0.8 and 1.3): where the model's mixed regime
 begins and ends, against Zhu & Wang's deterministic range (docs/friction.md, "What
-measurements say about μ_b(T) and the asperity share").
+measurements say about μ_b(T) and the asperity share"), beside Zhou & Hoeprich's
+exp(−B λ^C) with the two published constant sets (``load_sharing="zhou_hoeprich"``).
 
 ``--share-curve --stochastic`` adds, at the same points, the asperity load ratio of the
 toolkit's stochastic mixed-EHL line-contact solver (``friction.ehl.stochastic``: Patir &
@@ -202,9 +203,11 @@ def _point_share(rq: float, u):
 
 def share_curve_rows(lambdas=(0.05, 0.09, 0.15, 0.2, 0.28, 0.52, 0.75, 1.2)):
     """Asperity share at the smooth-surface central λ nearest each of ``lambdas`` (module
-    docstring, ``--share-curve``); rows (λ, share at Rq 0.544, share at Rq 0.884)."""
+    docstring, ``--share-curve``); rows (λ, share at Rq 0.544, share at Rq 0.884, Zhou &
+    Hoeprich's share with the rib's and the raceway's constants at λ itself)."""
     import numpy as np
 
+    from friction.thermal_eyring import zhou_hoeprich_share
 
     u = np.geomspace(0.02, 60.0, 600)
     cols = [_point_share(rq, u) for rq in (0.544, 0.884)]
@@ -214,7 +217,7 @@ def share_curve_rows(lambdas=(0.05, 0.09, 0.15, 0.2, 0.28, 0.52, 0.75, 1.2)):
         for lam, share in cols:
             i = int(np.argmin(abs(lam - target)))
             row.append(float(share[i]) if abs(lam[i] / target - 1.0) < 0.05 else float("nan"))
-        rows.append(row)
+        rows.append(row + [float(zhou_hoeprich_share(target, c)) for c in ("rib", "raceway")])
     return rows
 
 
@@ -264,9 +267,10 @@ def main(argv=None) -> int:
         print("asperity share of thermal_eyring's load sharing at one flank point (p_h 1.0 "
               "GPa, R 15 mm, 75W90 at 90 degC, SR 0.5) against the smooth-surface central "
               "lambda")
-        print(tabulate(share_curve_rows(), headers=("lambda", "share, Rq 0.544 um",
-                                                    "share, Rq 0.884 um"),
-                       floatfmt=("g", ".3f", ".3f")))
+        print(tabulate(share_curve_rows(), headers=("lambda", "JGP share, Rq 0.544 um",
+                                                    "JGP share, Rq 0.884 um",
+                                                    "Zhou-Hoeprich, rib", "ZH, raceway"),
+                       floatfmt=("g", ".3f", ".3f", ".3f", ".3f")))
         if args.stochastic:
             print("\nthe same point: Johnson-Greenwood-Poon share against the stochastic "
                   "mixed-EHL solver's asperity load ratio (friction.ehl.stochastic)")

@@ -690,8 +690,9 @@ _MODELS: Mapping[str, FrictionModel] = MappingProxyType(
         ),
         "thermal_eyring": _register(
             "thermal_eyring", thermal_eyring,
-            "mixed_ehl's load sharing with a thermal Eyring film shear: Johnson & Greenwood,"
-            " Wear 61 (1980) 353; Jaeger (1942) flash temperature (friction.thermal_eyring);"
+            "Zhou & Hoeprich, J. Tribol. 113 (1991) 590 asperity load share with a thermal"
+            " Eyring film shear: Johnson & Greenwood, Wear 61 (1980) 353; Jaeger (1942)"
+            " flash temperature (friction.thermal_eyring);"
             " opt-in", mixed_ehl_validity,
         ),
     }

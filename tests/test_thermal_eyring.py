@@ -35,19 +35,21 @@ SEGMENT = dict(load_per_length=300.0, hertz_pressure=1000.0, radius=40.0, e_prim
 BETA, K_OIL, BETA_ALPHA = 0.03, 0.135, 0.0065
 LAMBDA = MIXED_EHL_DEFAULTS["limiting_shear_coefficient"][0]
 MU_B = MIXED_EHL_DEFAULTS["boundary_friction"][0]
+JGP, ZH = "johnson_greenwood_poon", "zhou_hoeprich"  # the two load sharings
 
 
 def test_no_temperature_dependence_is_mixed_ehl() -> None:
     # β = 0: the viscosity does not feel the heat, the model is mixed_ehl to round-off
     u = np.array([0.5, 2.5, 10.0])
     kw = dict(SEGMENT, entraining_velocity=u)
+    # (with mixed_ehl's load sharing, Johnson, Greenwood & Poon's)
     np.testing.assert_allclose(thermal_eyring(**kw, temperature_viscosity=0.0,
-                                              summits="fixed"),
+                                              summits="fixed", load_sharing=JGP),
                                mixed_ehl(**kw), rtol=1e-12)
     # with the ground flanks' summits: mixed_ehl with their ηβσ, σ/β and skewed heights
     ebs, sb = greenwood_tripp_parameters(0.8, 0.8)
     np.testing.assert_allclose(
-        thermal_eyring(**kw, temperature_viscosity=0.0),
+        thermal_eyring(**kw, temperature_viscosity=0.0, load_sharing=JGP),
         mixed_ehl_solution(**kw, asperity_density_radius_sigma=ebs, sigma_over_beta=sb,
                            height_integral=lambda t: height_tail_integral(t, 0.8, 0.8)
                            ).friction_coefficient, rtol=1e-12)
@@ -57,11 +59,14 @@ def test_ground_summits_per_roughness_pair() -> None:
     # points of different Rq pairs are solved each with its own summits, as one by one
     rq1, rq2 = np.array([0.1, 0.8, 0.1, 1.3]), np.array([0.1, 0.8, 0.1, 0.4])
     kw = dict(SEGMENT, roughness_1=rq1, roughness_2=rq2)
-    together = np.asarray(thermal_eyring(**kw, temperature_viscosity=BETA))
-    alone = [thermal_eyring(**dict(SEGMENT, roughness_1=a, roughness_2=b),
-                            temperature_viscosity=BETA) for a, b in zip(rq1, rq2, strict=True)]
-    np.testing.assert_allclose(together, alone, rtol=1e-12)
-    assert together[0] == together[2]
+    for sharing in (JGP, ZH):
+        together = np.asarray(thermal_eyring(**kw, temperature_viscosity=BETA,
+                                             load_sharing=sharing))
+        alone = [thermal_eyring(**dict(SEGMENT, roughness_1=a, roughness_2=b),
+                                temperature_viscosity=BETA, load_sharing=sharing)
+                 for a, b in zip(rq1, rq2, strict=True)]
+        np.testing.assert_allclose(together, alone, rtol=1e-12)
+        assert together[0] == together[2]
 
 
 @pytest.mark.parametrize("sliding", [1e-3, 3e-3])
@@ -89,7 +94,8 @@ def test_isothermal_low_sliding_limit(sliding: float) -> None:
     # the film's heat does not depend on how the asperities are described: the fixed
     # summits compare with mixed_ehl's solution as it is
     mu = thermal_eyring(**kw, temperature_viscosity=BETA, oil_thermal_conductivity=K_OIL,
-                        pressure_viscosity_temperature=BETA_ALPHA, summits="fixed")
+                        pressure_viscosity_temperature=BETA_ALPHA, summits="fixed",
+                        load_sharing=JGP)
     film_iso = float(iso.film_friction)
     film = mu - float(iso.boundary_friction)
     assert film <= film_iso * (1 + 1e-12)
@@ -114,7 +120,13 @@ def test_bounded_by_limiting_shear_and_isothermal_and_finite() -> None:
             mu = np.asarray(thermal_eyring(**kw, temperature_viscosity=0.1,
                                            oil_thermal_conductivity=0.1, film_heating=c_f,
                                            pressure_viscosity_temperature=0.02,
-                                           summits="fixed"))
+                                           summits="fixed", load_sharing=JGP))
+        with pytest.warns(Warning):  # Zhou & Hoeprich's share: the same bounds
+            mu_zh = np.asarray(thermal_eyring(**kw, temperature_viscosity=0.1,
+                                              oil_thermal_conductivity=0.1, film_heating=c_f,
+                                              pressure_viscosity_temperature=0.02))
+        assert np.all(np.isfinite(mu_zh)) and np.all(mu_zh <= max(MU_B, LAMBDA) + 1e-12)
+        assert np.all(mu_zh >= 0.0)
         assert np.all(np.isfinite(mu))
         assert np.all(mu <= iso.friction_coefficient * (1 + 1e-9) + 1e-15)
         assert np.all(mu - iso.boundary_friction <= LAMBDA * (1 + 1e-9))
@@ -246,10 +258,8 @@ def test_zhou_hoeprich_option_in_the_model() -> None:
     assert np.all(np.diff(share) < 0.0)
     np.testing.assert_allclose(
         thermal_eyring(**kw, load_sharing="zhou_hoeprich", summits="fixed"), mu, rtol=0.0)
-    # the default load sharing is unchanged (Johnson, Greenwood & Poon)
-    np.testing.assert_allclose(thermal_eyring(**kw),
-                               thermal_eyring(**kw, load_sharing="johnson_greenwood_poon"),
-                               rtol=0.0)
+    # it is the model's default load sharing (issue 74: it meets the rows JGP's missed)
+    np.testing.assert_allclose(thermal_eyring(**kw), mu, rtol=0.0)
 
 
 def test_zhou_hoeprich_refuses_bad_parameters() -> None:
