@@ -6,8 +6,9 @@ On the seed's Table 5.4 designs A and B (100 / 500 / 1000 N·m; the 500 N·m tor
 (ν40 220, ν100 19.4 mm²/s, ρ15 890 kg/m³: class values, as
 ``tests/test_thermal_eyring_criteria.py``), prints per inlet temperature and Rq:
 
-* the flank λ and the load-weighted **asperity share** of the load (γ₂⁻¹ of Johnson,
-  Greenwood & Poon's load sharing with the summits of ``friction.flank_summits``);
+* the flank λ and the load-weighted **asperity share** of the load (of the model's
+  default load sharing: Zhou & Hoeprich's exp(−B λ^C) since issue 74's last step; before
+  it γ₂⁻¹ of Johnson, Greenwood & Poon's with the summits of ``friction.flank_summits``);
 * the flank μ split into the asperities' part μ_b·share and the film's part (the rest),
   beside ISO/TR 14179-2's μ on the same segments (Schlenk's correlation of FZG gear
   measurements, ``iso_tr_14179_2``);
@@ -68,7 +69,7 @@ from friction.coefficient import FrictionModelRangeWarning
 from friction.efficiency import efficiency_analysis
 from friction.oil_data_sheet import OilDataSheet, oil_file_mapping
 from friction.operating import OperatingConditions
-from friction.thermal_eyring import _load_sharing, thermal_eyring
+from friction.thermal_eyring import _load_sharing, _model_sharing, thermal_eyring
 from geometry.core.toml_files import dump_toml
 
 CASES = {"A": "kolivand2009_table54_A_fh", "B": "kolivand2009_table54_B_fh"}
@@ -84,12 +85,20 @@ _SHARING = ("load_per_length", "hertz_pressure", "radius", "e_prime", "entrainin
 
 
 def asperity_part(**inputs):
-    """μ_b × the asperity share of ``thermal_eyring``'s load sharing (its default summits),
-    as a model function: the efficiency stage then stores it per segment."""
-    sol = _load_sharing(summits="ground", asperity_density_radius_sigma=0.05,
-                        sigma_over_beta=0.01,
-                        **{k: v for k, v in inputs.items() if k in _SHARING})
+    """μ_b × the asperity share of ``thermal_eyring``'s load sharing (its defaults: Zhou &
+    Hoeprich's share since issue 74's last step), as a model function: the efficiency
+    stage then stores it per segment."""
+    sol = _model_sharing(load_sharing=_DEFAULT["load_sharing"],
+                         asperity_load_constants=_DEFAULT["asperity_load_constants"],
+                         summits=_DEFAULT["summits"], asperity_density_radius_sigma=0.05,
+                         sigma_over_beta=0.01,
+                         **{k: v for k, v in inputs.items() if k in _SHARING})
     return sol.boundary_friction
+
+
+#: thermal_eyring's default load-sharing keywords
+_DEFAULT = {k: p.default for k, p in inspect.signature(thermal_eyring).parameters.items()
+            if k in ("load_sharing", "asperity_load_constants", "summits")}
 
 
 asperity_part.__signature__ = inspect.signature(thermal_eyring)

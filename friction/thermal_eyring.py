@@ -379,14 +379,9 @@ def thermal_eyring(
                            low=0.0, high=1.0, unit="1/K"))
     if summits not in ("ground", "fixed"):
         raise InputError(f"summits: {summits!r} is not 'ground' or 'fixed'")
-    if load_sharing not in LOAD_SHARING_LAWS:
-        raise InputError(f"load_sharing: {load_sharing!r} is not one of "
-                         f"{sorted(LOAD_SHARING_LAWS)}")
-    zh = load_sharing == "zhou_hoeprich"
-    if zh:
-        zh_constants = _zhou_hoeprich_constants(asperity_load_constants)
-    sol = _load_sharing(
-        summits="fixed" if zh else summits,
+    sol = _model_sharing(
+        load_sharing=load_sharing, asperity_load_constants=asperity_load_constants,
+        summits=summits,
         load_per_length=load_per_length, hertz_pressure=hertz_pressure, radius=radius,
         e_prime=e_prime, entraining_velocity=entraining_velocity,
         sliding_velocity=sliding_velocity, viscosity=viscosity,
@@ -397,9 +392,6 @@ def thermal_eyring(
         asperity_density_radius_sigma=asperity_density_radius_sigma,
         sigma_over_beta=sigma_over_beta,
     )
-    if zh:
-        sol = _zhou_hoeprich_sharing(sol, roughness_1, roughness_2, zh_constants,
-                                     boundary_friction)
     shape = sol.friction_coefficient.shape
     w, ph, u, vs, eta0, alpha = (np.broadcast_to(np.asarray(a, float), shape) for a in (
         load_per_length, hertz_pressure, entraining_velocity, sliding_velocity, viscosity,
@@ -421,6 +413,22 @@ def thermal_eyring(
         pressure_viscosity_temperature=b_a)
     mu_film = b * np.sum(tau * COS_THETA * W_THETA, axis=-1) / w
     return scalar_or_array(mu_film + sol.boundary_friction)
+
+
+def _model_sharing(*, load_sharing: str, asperity_load_constants: str | tuple[float, float],
+                   summits: str, **inputs) -> MixedEHL:
+    """The load sharing ``thermal_eyring`` uses (its ``load_sharing``, ``summits`` and
+    ``asperity_load_constants``; ``inputs`` as :func:`friction.mixed_ehl.
+    mixed_ehl_solution`'s): γ₁ through the share, the film h_c and μ_b × the share."""
+    if load_sharing not in LOAD_SHARING_LAWS:
+        raise InputError(f"load_sharing: {load_sharing!r} is not one of "
+                         f"{sorted(LOAD_SHARING_LAWS)}")
+    if load_sharing == "johnson_greenwood_poon":
+        return _load_sharing(summits=summits, **inputs)
+    constants = _zhou_hoeprich_constants(asperity_load_constants)
+    sol = _load_sharing(summits="fixed", **inputs)
+    return _zhou_hoeprich_sharing(sol, inputs["roughness_1"], inputs["roughness_2"],
+                                  constants, inputs["boundary_friction"])
 
 
 def _zhou_hoeprich_sharing(sol: MixedEHL, roughness_1: ArrayLike, roughness_2: ArrayLike,
