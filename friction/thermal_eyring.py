@@ -151,7 +151,8 @@ LOAD_SHARING_LAWS = {
 #: Zhou & Hoeprich's constants (B, C) of N_a/N = exp(−B Λ^C) for ground steel surfaces, as
 #: printed in Wingertszahn, Koch, Maccioni, Concli & Sauer, "Predicting friction of tapered
 #: roller bearings with detailed multi-body simulation models", Lubricants 11 (2023) 369,
-#: Table 4 ("mixed friction parameters ... according to Zhou and Hoeprich"): name →
+#: Table 4 ("mixed friction parameters ... according to Zhou and Hoeprich", their refs.
+#: Teutsch, PhD thesis, TU Kaiserslautern 2005, and Zhou & Hoeprich 1991): name →
 #: (B, C, composite σ [µm] of the surfaces they belong to).
 ZHOU_HOEPRICH_CONSTANTS = {
     "rib": (1.90, 0.99, 0.24),
