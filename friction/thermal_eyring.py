@@ -176,7 +176,7 @@ def zhou_hoeprich_share(film_ratio: ArrayLike, constants: str | tuple[float, flo
     Returns
     -------
     float or array — [1]
-        The share of the load on the asperities, in (0, 1]; 1 at Λ = 0.
+        The share of the load on the asperities, in [0, 1]; 1 at Λ = 0, decreasing.
 
     Raises
     ------
@@ -191,26 +191,27 @@ def zhou_hoeprich_share(film_ratio: ArrayLike, constants: str | tuple[float, flo
     model), so the film is the average gap and the mean planes may overlap; the constants
     as printed by Wingertszahn et al. (2023) (:data:`ZHOU_HOEPRICH_CONSTANTS`).
     """
-    b, c = _zhou_hoeprich_constants(constants)
+    b, c = _zhou_hoeprich_constants(constants, "constants")
     lam = real_array("film_ratio", film_ratio, low=0.0, unit="1")
     return scalar_or_array(np.exp(-b * np.power(lam, c)))
 
 
-def _zhou_hoeprich_constants(constants: str | tuple[float, float]) -> tuple[float, float]:
-    """(B, C) of a name of :data:`ZHOU_HOEPRICH_CONSTANTS` or of a pair, checked."""
+def _zhou_hoeprich_constants(constants: str | tuple[float, float],
+                             field: str = "asperity_load_constants") -> tuple[float, float]:
+    """(B, C) of a name of :data:`ZHOU_HOEPRICH_CONSTANTS` or of a pair, checked (errors
+    name ``field``)."""
     if isinstance(constants, str):
         if constants not in ZHOU_HOEPRICH_CONSTANTS:
-            raise InputError(f"asperity_load_constants: {constants!r} is not one of "
+            raise InputError(f"{field}: {constants!r} is not one of "
                              f"{sorted(ZHOU_HOEPRICH_CONSTANTS)} or a pair (B, C)")
         return ZHOU_HOEPRICH_CONSTANTS[constants][:2]
     try:
         b, c = (float(v) for v in constants)
     except (TypeError, ValueError):
-        raise InputError("asperity_load_constants: give a name of ZHOU_HOEPRICH_CONSTANTS "
-                         f"or a pair (B, C) of positive numbers, not {constants!r}") from None
+        raise InputError(f"{field}: give a name of ZHOU_HOEPRICH_CONSTANTS or a pair (B, C) "
+                         f"of positive numbers, not {constants!r}") from None
     if not (b > 0.0 and c > 0.0 and math.isfinite(b) and math.isfinite(c)):
-        raise InputError(f"asperity_load_constants: B and C must be finite and > 0 [1], "
-                         f"got ({b:g}, {c:g})")
+        raise InputError(f"{field}: B and C must be finite and > 0 [1], got ({b:g}, {c:g})")
     return b, c
 
 

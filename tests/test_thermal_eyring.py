@@ -273,3 +273,5 @@ def test_zhou_hoeprich_refuses_bad_parameters() -> None:
                            asperity_load_constants=bad)
     with pytest.raises(InputError, match="film_ratio"):
         zhou_hoeprich_share(-0.1)
+    with pytest.raises(InputError, match="constants"):
+        zhou_hoeprich_share(0.5, (2.0, 0.0))
