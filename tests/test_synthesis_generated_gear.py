@@ -256,9 +256,9 @@ def test_realistic_low_ratio_pair_meets_its_local_synthesis_over_the_mesh_cycle(
     −0.5 … +0.4 pitch is the prescribed parabola a21 φ²/2 within 1 µrad (measured 0.2 µrad
     on both flanks; 1 µrad is 2 % of the TE level, far below the LTE's 40 µrad target),
     and the contact leaves M in the prescribed direction (as the miter, within 0.1 % of
-    |v_r2|; measured 0.01 %). The pinion's ratio of roll is not its crown gear's rolling value (the local
-    synthesis's twist is made by it: measured 1.40 / 1.71 concave / convex, rolling
-    1.80; docs/synthesis.md, "Generated gear")."""
+    |v_r2|; measured 0.01 %). The pinion's ratio of roll is not its crown gear's rolling
+    value (the local synthesis's twist is made by it: measured 1.40 / 1.71 concave /
+    convex, rolling 1.80; docs/synthesis.md, "Generated gear")."""
     basic = load_basic(DATA / "generated_gear" / "spiral_bevel_20x30.toml")
     o = basic.options
     bare = {"tip_relief": 0.0, "root_relief": 0.0}
