@@ -50,6 +50,32 @@ def test_teeth_alone_are_solved_once_per_process_and_change_nothing(case):
     assert not np.allclose(np.nan_to_num(a.ease_off_angle), np.nan_to_num(b.ease_off_angle))
 
 
+def test_an_ease_off_is_computed_once_per_teeth_and_misalignment(case):
+    """The ease-off of the same teeth, misalignment and flank (a torque series in one
+    process, an analysis repeated) is computed once: the same object, its arrays
+    read-only, equal bit for bit (NaN where NaN) to a fresh computation; the case's own
+    misalignment and its deviations are not part of the key where the misalignment is
+    given."""
+    from contact.utca.easeoff import _ease_off
+
+    clear_memos()
+    mis = Misalignment(delta_E=0.05, delta_P=-0.02)
+    a = ease_off(case, misalignment=mis)
+    b = ease_off(dataclasses.replace(case, misalignment=Misalignment(delta_G=0.1)),
+                 misalignment=Misalignment(delta_E=0.05, delta_P=-0.02))
+    assert b is a
+    assert ease_off(case, misalignment=Misalignment(delta_E=0.05, delta_P=0.02)) is not a
+    fresh = _ease_off(case, None, mis, None, 0.0, 0.0)
+    for name, value in a._asdict().items():
+        if isinstance(value, np.ndarray):
+            assert not value.flags.writeable, name
+            np.testing.assert_array_equal(value, getattr(fresh, name), err_msg=name)
+        elif name != "kinematics":
+            assert value == getattr(fresh, name), name
+    np.testing.assert_array_equal(a.kinematics.pinion_place, fresh.kinematics.pinion_place)
+    np.testing.assert_array_equal(a.kinematics.gear_place, fresh.kinematics.gear_place)
+
+
 def test_a_case_changed_in_code_is_other_teeth(case):
     """A field the case's TOML does not state (the indexing ratio, derived from the blade
     groups and the teeth when a file is read) changed in code gives another key: the memos
