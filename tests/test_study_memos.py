@@ -42,6 +42,10 @@ def test_teeth_alone_are_solved_once_per_process_and_change_nothing(case):
     # the same case with other deviations or misalignment has the same key
     assert (dataclasses.replace(case, misalignment=Misalignment(delta_P=0.1)).teeth_key()
             == case.teeth_key())
+    # and with another operating point: run_analysis writes the torques run into the case,
+    # and a torque series is of the same teeth
+    assert (dataclasses.replace(case, operating=dataclasses.replace(
+        case.operating, torque=(123.0,), pinion_speed=999.0)).teeth_key() == case.teeth_key())
     clear_memos()
     fresh = ease_off(case, misalignment=Misalignment(delta_E=-0.05, delta_P=0.03))
     for name in ("ease_off_angle", "roll_angle", "gap_curvature", "pinion_u", "pinion_v",
