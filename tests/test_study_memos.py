@@ -80,6 +80,28 @@ def test_an_ease_off_is_computed_once_per_teeth_and_misalignment(case):
     np.testing.assert_array_equal(a.kinematics.gear_place, fresh.kinematics.gear_place)
 
 
+def test_the_unloaded_cycle_of_one_ease_off_is_computed_once(case):
+    """The UTCA of the same ease-off object (a torque series shares the memoised ease-off)
+    computes its unloaded cycle once; its datasets equal those of a fresh computation
+    exactly (xarray's identity: values, attributes, coordinates)."""
+    import xarray as xr
+
+    from contact.utca import unloaded_tca
+    from contact.utca.datasets import _memo_cycle
+
+    clear_memos()
+    eo = ease_off(case)
+    first = unloaded_tca(case, easeoff=eo)
+    second = unloaded_tca(case, easeoff=eo)
+    info = _memo_cycle.cache_info()
+    assert (info.hits, info.misses) == (1, 1)
+    clear_memos()
+    fresh = unloaded_tca(case, easeoff=ease_off(case))
+    for a, b, c in zip(first, second, fresh, strict=True):
+        xr.testing.assert_identical(a, c)
+        xr.testing.assert_identical(b, c)
+
+
 def test_a_case_changed_in_code_is_other_teeth(case):
     """A field the case's TOML does not state (the indexing ratio, derived from the blade
     groups and the teeth when a file is read) changed in code gives another key: the memos
