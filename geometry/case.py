@@ -407,9 +407,12 @@ class Case:
 
     def teeth_key(self) -> TeethKey:
         """The key of the per-process memos of what the teeth alone decide (the tooth
-        models, the ease-off's forward-map points and gear nodes): the case without its
-        misalignment and deviations, compared by its full ``repr`` (every float to the last
-        bit), carrying the case itself for the memo to compute from.
+        models, the ease-off's forward-map points and gear nodes, the ease-off with its
+        misalignment as a key of its own): the case without its misalignment, deviations
+        and operating point (torques, speed, oil: no tooth depends on them, and
+        :func:`contact.run_analysis` writes the torques run into the case, so a torque
+        series would otherwise miss every memo), compared by its full ``repr`` (every
+        float to the last bit), carrying the case itself for the memo to compute from.
 
         Not :meth:`teeth_toml` rebuilt by :func:`case_from_dict`: a case changed in code
         can hold what its TOML does not say (a face-hobbing indexing ratio other than
@@ -418,15 +421,27 @@ class Case:
         Returns
         -------
         TeethKey
+
+        Notes
+        -----
+        Made once per case object and kept on it, as :meth:`to_toml`'s text (the case is
+        frozen): an analysis asks for it at each memo it reads (the tooth models, the
+        ease-off, the forward-map points and flanks), and the ``repr`` of a whole case is
+        ~0.6 ms.
         """
-        teeth = dataclasses.replace(self, misalignment=Misalignment(), deviations=None)
-        return TeethKey(teeth, repr(teeth))
+        key = self.__dict__.get("_teeth_key")
+        if key is None:
+            teeth = dataclasses.replace(self, misalignment=Misalignment(), deviations=None,
+                                        operating=OperatingPoint())
+            key = TeethKey(teeth, repr(teeth))
+            object.__setattr__(self, "_teeth_key", key)
+        return key
 
 
 class TeethKey:
     """A case's teeth as a hashable memo key (:meth:`Case.teeth_key`): equal and hashed by
-    ``text`` (the case's ``repr`` without misalignment and deviations); ``case`` is that
-    case, for the memo to compute from."""
+    ``text`` (the case's ``repr`` without misalignment, deviations and operating point);
+    ``case`` is that case, for the memo to compute from."""
 
     __slots__ = ("case", "text")
 

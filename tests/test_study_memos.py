@@ -42,12 +42,64 @@ def test_teeth_alone_are_solved_once_per_process_and_change_nothing(case):
     # the same case with other deviations or misalignment has the same key
     assert (dataclasses.replace(case, misalignment=Misalignment(delta_P=0.1)).teeth_key()
             == case.teeth_key())
+    # and with another operating point: run_analysis writes the torques run into the case,
+    # and a torque series is of the same teeth
+    assert (dataclasses.replace(case, operating=dataclasses.replace(
+        case.operating, torque=(123.0,), pinion_speed=999.0)).teeth_key() == case.teeth_key())
     clear_memos()
     fresh = ease_off(case, misalignment=Misalignment(delta_E=-0.05, delta_P=0.03))
     for name in ("ease_off_angle", "roll_angle", "gap_curvature", "pinion_u", "pinion_v",
                  "placement_error"):
         np.testing.assert_array_equal(getattr(b, name), getattr(fresh, name), err_msg=name)
     assert not np.allclose(np.nan_to_num(a.ease_off_angle), np.nan_to_num(b.ease_off_angle))
+
+
+def test_an_ease_off_is_computed_once_per_teeth_and_misalignment(case):
+    """The ease-off of the same teeth, misalignment and flank (a torque series in one
+    process, an analysis repeated) is computed once: the same object, its arrays
+    read-only, equal bit for bit (NaN where NaN) to a fresh computation; the case's own
+    misalignment and its deviations are not part of the key where the misalignment is
+    given."""
+    from contact.utca.easeoff import _ease_off
+
+    clear_memos()
+    mis = Misalignment(delta_E=0.05, delta_P=-0.02)
+    a = ease_off(case, misalignment=mis)
+    b = ease_off(dataclasses.replace(case, misalignment=Misalignment(delta_G=0.1)),
+                 misalignment=Misalignment(delta_E=0.05, delta_P=-0.02))
+    assert b is a
+    assert ease_off(case, misalignment=Misalignment(delta_E=0.05, delta_P=0.02)) is not a
+    fresh = _ease_off(case, None, mis, None, 0.0, 0.0)
+    for name, value in a._asdict().items():
+        if isinstance(value, np.ndarray):
+            assert not value.flags.writeable, name
+            np.testing.assert_array_equal(value, getattr(fresh, name), err_msg=name)
+        elif name != "kinematics":
+            assert value == getattr(fresh, name), name
+    np.testing.assert_array_equal(a.kinematics.pinion_place, fresh.kinematics.pinion_place)
+    np.testing.assert_array_equal(a.kinematics.gear_place, fresh.kinematics.gear_place)
+
+
+def test_the_unloaded_cycle_of_one_ease_off_is_computed_once(case):
+    """The UTCA of the same ease-off object (a torque series shares the memoised ease-off)
+    computes its unloaded cycle once; its datasets equal those of a fresh computation
+    exactly (xarray's identity: values, attributes, coordinates)."""
+    import xarray as xr
+
+    from contact.utca import unloaded_tca
+    from contact.utca.datasets import _memo_cycle
+
+    clear_memos()
+    eo = ease_off(case)
+    first = unloaded_tca(case, easeoff=eo)
+    second = unloaded_tca(case, easeoff=eo)
+    info = _memo_cycle.cache_info()
+    assert (info.hits, info.misses) == (1, 1)
+    clear_memos()
+    fresh = unloaded_tca(case, easeoff=ease_off(case))
+    for a, b, c in zip(first, second, fresh, strict=True):
+        xr.testing.assert_identical(a, c)
+        xr.testing.assert_identical(b, c)
 
 
 def test_a_case_changed_in_code_is_other_teeth(case):

@@ -406,7 +406,15 @@ class WeberSegments:
         kb = (self.k1 * _weber_bracket(self.depth_1, b, self.nu1, "depth_1")
               + self.k2 * _weber_bracket(self.depth_2, b, self.nu2, "depth_2"))
         shape = np.broadcast_shapes(w.shape, b.shape)
-        out = tuple(np.broadcast_to(
-            WEBER_COMPLIANCE_KINDS[k](kb, (self.k1 + self.k2) * slope) / self.length,
-            shape).copy() for k in kinds)
+        out = tuple(_shaped(WEBER_COMPLIANCE_KINDS[k](kb, (self.k1 + self.k2) * slope)
+                            / self.length, shape) for k in kinds)
         return out[0] if isinstance(kind, str) else out
+
+
+def _shaped(value: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
+    """``value`` (a quotient just formed, so an array of its own) as an array of ``shape``:
+    itself where it has that shape (the Weber iteration's every call), else broadcast and
+    copied (a registered kind that returns fewer dimensions)."""
+    if isinstance(value, np.ndarray) and value.shape == shape:
+        return value
+    return np.broadcast_to(value, shape).copy()

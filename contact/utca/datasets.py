@@ -44,6 +44,7 @@ from contact.utca.easeoff import EASEOFF_REASONS, EaseOff, ease_off
 from contact.utca.fields import EaseOffFields
 from contact.utca.transitions import transitions
 from geometry import __version__
+from geometry.core.caches import memoised
 from geometry.core.conventions import binary_flag
 from geometry.core.conventions import data_var as _var
 from geometry.core.errors import InputError
@@ -164,9 +165,44 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
     separation = positive("separation", separation, "mm")
     eo = easeoff if easeoff is not None else ease_off(case, flank=flank,
                                                       misalignment=misalignment, grid=grid)
-    cycle = unloaded_cycle(eo, n_roll=rolls_per_cycle, pairs=pairs, method=method, n_point=n_point)
+    cycle = _memo_cycle(_Same(eo), rolls_per_cycle,
+                        _check_cycle_options(rolls_per_cycle, pairs, method, n_point),
+                        method, n_point)
     ds = utca_dataset(eo, cycle, case=case, separation=separation, misalignment=misalignment)
     return easeoff_dataset(eo, case, misalignment=misalignment), ds
+
+
+class _Same:
+    """An object as a memo key compared by identity (an ease-off holds arrays: no hash of
+    its own); the key holds the object, so its ``id`` is not reused while the memo keeps
+    the entry."""
+
+    __slots__ = ("obj",)
+
+    def __init__(self, obj) -> None:
+        self.obj = obj
+
+    def __hash__(self) -> int:
+        return id(self.obj)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _Same) and other.obj is self.obj
+
+
+@memoised(maxsize=8)
+def _memo_cycle(eo: _Same, n_roll: int, pairs: tuple[int, ...], method: str,
+                n_point: int) -> UnloadedCycle:
+    """:func:`unloaded_cycle` of the ease-off ``eo.obj``, memoised per process by the
+    ease-off object itself (arrays read-only): the analyses of a torque series or an
+    analysis repeated in one process share the memoised ease-off
+    (:func:`contact.utca.easeoff.ease_off`), and so its unloaded cycle (seed §2.3.2.2),
+    which depends on the ease-off alone."""
+    cycle = unloaded_cycle(eo.obj, n_roll=n_roll, pairs=pairs, method=method,
+                           n_point=n_point)
+    for a in (cycle.roll, cycle.pairs, cycle.envelope, *cycle.curves):
+        if isinstance(a, np.ndarray):
+            a.flags.writeable = False
+    return cycle
 
 
 def _check_cycle_options(n_roll, pairs, method, n_point) -> tuple[int, ...]:

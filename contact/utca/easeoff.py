@@ -98,6 +98,7 @@ from contact.utca.action_surface import (
     meshing_coefficients,
     to_pair_frame,
 )
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.validation import one_of
 from geometry.machine.curvature import normal_curvature
@@ -107,7 +108,7 @@ from geometry.pair.assembly import Misalignment, rotate_about_axis
 from geometry.pair.pitch_contact import check_pitch_contact
 
 if TYPE_CHECKING:
-    from geometry.case import Case
+    from geometry.case import Case, TeethKey
 from contact.utca.conjugate_map import (
     GearMates,
     Mates,
@@ -383,7 +384,7 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     """
     check_pitch_contact(case)  # pair.offset consistent with the blanks
     try:
-        eo = _ease_off(case, flank, misalignment, grid, pinion_phase, gear_phase)
+        eo = _memo_ease_off(case, flank, misalignment, grid, pinion_phase, gear_phase)
         valid = int(np.count_nonzero(eo.valid))
         why = f"{valid} valid ease-off nodes, at least {MIN_VALID_NODES} needed"
     except InputError as exc:
@@ -480,6 +481,36 @@ def misalignment_range(case: Case, name: str, misalignment: Misalignment, *,
         else:
             hi = mid
     return lo
+
+
+def _memo_ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
+                   grid: dict | None, pinion_phase: float, gear_phase: float) -> EaseOff:
+    """:func:`_ease_off`, memoised per process (:func:`_memoised_ease_off`, arrays
+    read-only): the analyses of one process at the same teeth, misalignment and flank (a
+    torque series, an analysis repeated in a notebook) compute the ease-off once; it is a
+    function of these alone (seed Eq. 2.19–2.20, 4.1–4.2), not of the torque."""
+    mis = case.misalignment if misalignment is None else misalignment
+    g = _grid_options(grid)
+    grid_key = tuple(sorted((k, tuple(v) if isinstance(v, list | tuple) else v)
+                            for k, v in g.items()))
+    # repr: every float to the last bit, -0.0 apart from 0.0 (as Case.teeth_key)
+    return _memoised_ease_off(case.teeth_key(), repr(mis), mis, flank, grid_key,
+                              float(pinion_phase), float(gear_phase))
+
+
+@memoised(maxsize=8)
+def _memoised_ease_off(teeth: TeethKey, mis_text: str, mis: Misalignment, flank: str | None,
+                       grid: tuple, pinion_phase: float, gear_phase: float) -> EaseOff:
+    """:func:`_ease_off` of the case of ``teeth`` (:meth:`~geometry.case.Case.teeth_key`:
+    the ease-off reads neither the case's misalignment, given here, nor its deviations,
+    applied after it) at ``mis`` (``mis_text`` its ``repr``, the key), its arrays
+    read-only. Tested bit for bit against a fresh computation
+    (``tests/test_study_memos.py``)."""
+    eo = _ease_off(teeth.case, flank, mis, dict(grid), pinion_phase, gear_phase)
+    for a in (*eo, *eo.kinematics.__dict__.values()):
+        if isinstance(a, np.ndarray):
+            a.flags.writeable = False
+    return eo
 
 
 def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
