@@ -33,11 +33,8 @@ from pathlib import Path
 def _kernel_module():
     """:mod:`contact.compliance.fe.cholmod_dense` loaded from its file (not through the
     ``contact`` package, whose import pulls in the whole toolkit)."""
-    path = Path(__file__).resolve().with_name("cholmod_dense.py")
-    spec = importlib.util.spec_from_file_location("_fe_cholmod_dense", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return _module_from(Path(__file__).resolve().with_name("cholmod_dense.py"),
+                        "_fe_cholmod_dense")
 
 
 def set_parent_death_signal() -> None:
@@ -79,29 +76,22 @@ def recv_array(conn, header):
     return out
 
 
-def keep_heap_pages() -> bool:
-    """glibc only: from now on, no memory mapped per allocation and none given back to the
-    system (``mallopt(M_MMAP_MAX, 0)``, ``mallopt(M_TRIM_THRESHOLD, 2**31 - 1)``), so that
-    blocks of the same size allocated and freed again and again (the solves' right-hand
-    sides and solutions: 42 MB each on the default pinion model, above glibc's largest
-    mmap threshold of 32 MB) reuse the pages the process has instead of mapping and
-    faulting in fresh zeroed ones each time. The worker calls it once its factor is made
-    (the factorisation's transient memory mapped and given back as before: the peak
-    unchanged). ``ltca synthesize`` calls it at its start too: the 9x41 hypoid's
-    synthesize took 26 s of system time (page faults), 6 s with both, the peak memory the
-    same 1.12 GB (issue 75, docs/performance.md). True where set."""
-    if not sys.platform.startswith("linux"):
-        return False
-    try:
-        import ctypes
+def _module_from(path: Path, name: str):
+    """A module loaded from its file (not through its package, whose import pulls in the
+    whole toolkit)."""
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
-        libc = ctypes.CDLL(None)
-        mallopt = libc.mallopt
-    except (OSError, AttributeError):  # pragma: no cover - not glibc
-        return False
-    mallopt.argtypes, mallopt.restype = [ctypes.c_int, ctypes.c_int], ctypes.c_int
-    m_trim_threshold, m_mmap_max = -1, -4
-    return bool(mallopt(m_mmap_max, 0)) and bool(mallopt(m_trim_threshold, 2**31 - 1))
+
+def keep_heap_pages() -> bool:
+    """:func:`geometry.core.heap.keep_heap_pages`, loaded from its file (this worker
+    imports no package of the toolkit): the solves' blocks reuse the process's pages.
+    The worker calls it once its factor is made; ``ltca synthesize`` and ``ltca run``
+    call it at their start."""
+    path = Path(__file__).resolve().parents[3] / "geometry" / "core" / "heap.py"
+    return _module_from(path, "_fe_heap").keep_heap_pages()
 
 
 def serve(conn, kernel, box: list) -> None:
