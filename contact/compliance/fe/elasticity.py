@@ -325,7 +325,10 @@ class Factorisation:
         vec = b.ndim == 1
         b2 = b[:, None] if vec else b
         out = np.zeros((self.n_dofs, b2.shape[1]))
-        out[self.free] = self._solve(np.ascontiguousarray(b2[self.free]))
+        # the free rows in Fortran order (CHOLMOD's dense blocks: column after column),
+        # one copy (the worker neither transposes them nor its solutions back, issue 75)
+        out[self.free] = self._solve(np.asfortranarray(b2[self.free]) if b2.shape[1] > 1
+                                     else b2[self.free])
         return out[:, 0] if vec else out
 
 
@@ -446,7 +449,7 @@ class _Worker:
         (:func:`contact.compliance.fe.solver_worker.send_array`: no pickle copies)."""
         from contact.compliance.fe.solver_worker import recv_array, send_array
 
-        out = np.empty_like(b)
+        out = np.empty(b.shape, dtype=np.float64, order="F")
         for start in range(0, b.shape[1], PIPE_BLOCK):
             piece = b[:, start:start + PIPE_BLOCK]
             self.busy = True
@@ -459,7 +462,11 @@ class _Worker:
             header = self.receive()
             self.busy = True
             try:
-                out[:, start:start + PIPE_BLOCK] = recv_array(self.conn, header)
+                part = out[:, start:start + PIPE_BLOCK]
+                if len(header) > 3 and header[3] == "F" and part.flags.f_contiguous:
+                    recv_array(self.conn, header, out=part)  # straight into its columns
+                else:
+                    part[...] = recv_array(self.conn, header)
             except BaseException:
                 self.kill()
                 raise
