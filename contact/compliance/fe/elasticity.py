@@ -24,8 +24,10 @@ SOLVERS             solver name → whether it is installed here
 Factorisation       a factorised matrix: solve many right-hand sides
 factorise           factorise the stiffness matrix with its constrained dofs removed
 resolve_solver      the solver "auto" (or a name) stands for here
-lattice_dissection  nested dissection of a structured mesh's node lattice for CHOLMOD
+lattice_dissection  nested dissection of a structured mesh's node lattice for CHOLMOD (the
+                    influence build's ordering)
 nested_dissection   METIS's fill-reducing ordering for CHOLMOD, where pymetis is installed
+                    (not used by the build since the lattice's: as good, no dependency)
 stress_operator     sparse map from displacements to stress components at points
 """
 
@@ -607,6 +609,9 @@ def nested_dissection(element_dofs: np.ndarray, n_nodes: int,
     "Nested dissection of a regular finite element mesh", *SIAM J. Numer. Anal.* 10(2)
     345–363. On the default pinion model (issue 75): the factorisation 4.2 → 2.4 s, the
     solves −15 %, the factor ~100 MB smaller, for 0.6 s of ordering (docs/performance.md).
+    The influence build orders by :func:`lattice_dissection` instead (the same fill or
+    less on the default models, no dependency, 0.2 s); this one is kept for meshes
+    without a lattice.
     """
     try:
         import pymetis
