@@ -9,6 +9,7 @@ are cvxopt's own solve and SciPy's SuperLU, on a meshed cantilever (hex20, 4 × 
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -236,3 +237,19 @@ def test_lattice_dissection_refuses_a_lattice_of_other_nodes():
     lattice = np.array([[0, 2], [0, 0], [0, 0]])
     with pytest.raises(LTCAError, match="not a permutation"):
         lattice_dissection(lattice, np.arange(9))
+
+
+def test_keep_heap_pages_from_the_package_and_from_the_lean_worker():
+    """``geometry.core.heap.keep_heap_pages`` and the lean solver worker's copy of it
+    (loaded from the file, the worker imports no package of the toolkit) set glibc's
+    malloc options where there is glibc (True on Linux) and do nothing elsewhere (False):
+    run in a child process, whose heap alone it changes."""
+    import subprocess
+
+    child = ("import sys\n"
+             "from geometry.core.heap import keep_heap_pages\n"
+             "from contact.compliance.fe import solver_worker\n"
+             "print(keep_heap_pages(), solver_worker.keep_heap_pages(), sys.platform)\n")
+    out = subprocess.run([sys.executable, "-c", child], capture_output=True, text=True,
+                         cwd=Path(__file__).resolve().parents[1], check=True).stdout.split()
+    assert out[0] == out[1] == str(out[2].startswith("linux"))
