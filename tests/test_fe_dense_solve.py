@@ -9,6 +9,7 @@ are cvxopt's own solve and SciPy's SuperLU, on a meshed cantilever (hex20, 4 × 
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -168,3 +169,87 @@ def test_without_pymetis_no_ordering(monkeypatch):
     model, fixed = _cantilever()
     free = np.setdiff1d(np.arange(model.n_dofs), fixed)
     assert nested_dissection(model.basis.element_dofs, model.basis.N, free) is None
+
+
+def _factor_nonzeros(model, fixed, ordering):
+    """Non-zeros of CHOLMOD's factor of K_ff in ``ordering`` (None: its AMD)."""
+    import scipy.sparse as sp
+    from cvxopt import cholmod, matrix, spmatrix
+
+    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
+    low = sp.tril(model.stiffness, format="csr")[free][:, free].tocsc()
+    cols = np.repeat(np.arange(low.shape[1], dtype=np.int64), np.diff(low.indptr))
+    mat = spmatrix(low.data, low.indices.astype(np.int64), cols, size=low.shape)
+    saved = dict(cholmod.options)
+    try:
+        if ordering is None:
+            factor = cholmod.symbolic(mat, uplo="L")
+        else:
+            cholmod.options["nmethods"] = 1
+            factor = cholmod.symbolic(mat, p=matrix(ordering), uplo="L")
+        cholmod.numeric(mat, factor)
+    finally:
+        cholmod.options.clear()
+        cholmod.options.update(saved)
+    return len(cholmod.getfactor(factor).V)
+
+
+def test_lattice_dissection_orders_the_free_dofs_with_less_fill_and_solves_alike():
+    """The nested dissection of the mesh's node lattice (issue 75) is a permutation of the
+    free dofs; its separators are planes of nodes at even lattice coordinates, so the
+    last-eliminated dofs are one such plane's; on a block of 16 × 4 × 8 quadratic
+    elements held at one end CHOLMOD's factor in that order has fewer non-zeros than in
+    its own AMD order (nested dissection's fill, George 1973: O(n^(4/3)) in 3-D against
+    minimum degree's larger on regular grids), and the displacements equal AMD's to
+    round-off (1e-10 of the largest: another elimination order of the same matrix), in
+    process and in the lean worker alike."""
+    from contact.compliance.fe.elasticity import lattice_dissection
+
+    mm = mapped_mesh((16, 4, 8), lambda p: np.vstack([2.0 * p[0], 1.5 * p[1], p[2]]))
+    model = elastic_model(mm.mesh, "hex20", 206000.0, 0.3)
+    n = model.basis.N
+    clamp = mm.nodes_where(lambda p: p[0] < 1e-9)
+    clamp = clamp[clamp < n]
+    fixed = (3 * clamp[:, None] + np.arange(3)).ravel()
+    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
+    lattice = np.rint(2.0 * mm.param_nodes[:, :n]).astype(np.int64)
+    order = lattice_dissection(lattice, free)
+    assert order.dtype == np.int64
+    np.testing.assert_array_equal(np.sort(order), np.arange(free.size))
+    # the last dofs eliminated: the first cut, one plane at an even coordinate
+    last = lattice[:, free[order[-24:]] // 3]
+    assert any(np.all(last[d] == last[d, 0]) and last[d, 0] % 2 == 0 for d in range(3))
+    assert _factor_nonzeros(model, fixed, order) < _factor_nonzeros(model, fixed, None)
+    rhs = np.random.default_rng(15).standard_normal((model.n_dofs, 12))
+    ref = factorise(model.stiffness, fixed, "cholmod").solve(rhs)
+    got = factorise(model.stiffness, fixed, "cholmod", ordering=order).solve(rhs)
+    np.testing.assert_allclose(got, ref, rtol=0, atol=1e-10 * np.abs(ref).max())
+    iso = factorise(model.stiffness, fixed, "cholmod", ordering=order, isolated=True)
+    np.testing.assert_array_equal(iso.solve(rhs), got)
+    iso.close()
+
+
+def test_lattice_dissection_refuses_a_lattice_of_other_nodes():
+    """A lattice of fewer nodes than the free dofs name is refused (not a permutation)."""
+    from contact.compliance.fe.elasticity import lattice_dissection
+    from geometry.core.errors import LTCAError
+
+    lattice = np.array([[0, 2], [0, 0], [0, 0]])
+    with pytest.raises(LTCAError, match="not a permutation"):
+        lattice_dissection(lattice, np.arange(9))
+
+
+def test_keep_heap_pages_from_the_package_and_from_the_lean_worker():
+    """``geometry.core.heap.keep_heap_pages`` and the lean solver worker's copy of it
+    (loaded from the file, the worker imports no package of the toolkit) set glibc's
+    malloc options where there is glibc (True on Linux) and do nothing elsewhere (False):
+    run in a child process, whose heap alone it changes."""
+    import subprocess
+
+    child = ("import sys\n"
+             "from geometry.core.heap import keep_heap_pages\n"
+             "from contact.compliance.fe import solver_worker\n"
+             "print(keep_heap_pages(), solver_worker.keep_heap_pages(), sys.platform)\n")
+    out = subprocess.run([sys.executable, "-c", child], capture_output=True, text=True,
+                         cwd=Path(__file__).resolve().parents[1], check=True).stdout.split()
+    assert out[0] == out[1] == str(out[2].startswith("linux"))

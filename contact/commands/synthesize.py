@@ -130,13 +130,13 @@ def run_synthesize(args: argparse.Namespace) -> int:
     import tomllib
 
     from contact.commands.step_lines import StepLines
-    from contact.compliance.fe.solver_worker import keep_heap_pages
     from contact.load_capacity.iso10300.capacity import (
         with_coast_design_torque,
         with_design_torque,
     )
     from contact.load_capacity.iso10300.inputs import RatingInputs
     from geometry.case import case_from_dict
+    from geometry.core.heap import keep_heap_pages
     from geometry.synthesis.basic_design import load_basic
     from geometry.synthesis.case_synthesis import SYNTHESIS_STEPS, synthesize
 

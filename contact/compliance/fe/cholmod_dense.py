@@ -157,7 +157,9 @@ def dense_solver(factor, reference: Callable[[np.ndarray], np.ndarray]
                 raise RuntimeError("CHOLMOD: cholmod_l_solve returned an unexpected block")
             flat = np.ctypeslib.as_array(ctypes.cast(d.x, ctypes.POINTER(ctypes.c_double)),
                                          shape=(k * d.d,))
-            out = flat.reshape(k, d.d)[:, :n].T.copy()
+            # copied column after column (Fortran order, as CHOLMOD lays it out): no
+            # transposition (~0.05 s per block of 64 on the default pinion model)
+            out = flat.reshape(k, d.d)[:, :n].copy().T
         finally:
             free(ctypes.byref(x), common)
         if not checked:
@@ -198,7 +200,8 @@ def cholmod_kernel(box: list) -> tuple[Callable[[np.ndarray], np.ndarray], int]:
 
     Notes
     -----
-    Supernodal factor; the ordering given (METIS's nested dissection,
+    Supernodal factor; the ordering given (the mesh lattice's nested dissection,
+    :func:`contact.compliance.fe.elasticity.lattice_dissection`, or METIS's,
     :func:`contact.compliance.fe.elasticity.nested_dissection`) or CHOLMOD's AMD (cvxopt's
     CHOLMOD has no METIS of its own). Source: Chen, Davis, Hager, Rajamanickam 2008
     (:func:`dense_solver`).

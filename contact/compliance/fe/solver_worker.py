@@ -5,7 +5,7 @@
 (``("cholmod", data, indices, indptr, n)``, CSC); the worker factorises it
 (:func:`contact.compliance.fe.cholmod_dense.cholmod_kernel`), answers ``("ready", nnz,
 seconds)`` or ``("error", exception)``, then answers each block of right-hand sides it
-receives (a header ``("block", shape, dtype)`` and the raw bytes, :func:`send_array`) with
+receives (a header ``("block", shape, dtype[, "F"])`` and the raw bytes, :func:`send_array`) with
 ``("ok", shape, dtype)`` and the solution's raw bytes until ``None`` or the end of the
 connection. LABEL is
 not read: the words of the parent's command line, so that the worker is recognisable as
@@ -33,11 +33,8 @@ from pathlib import Path
 def _kernel_module():
     """:mod:`contact.compliance.fe.cholmod_dense` loaded from its file (not through the
     ``contact`` package, whose import pulls in the whole toolkit)."""
-    path = Path(__file__).resolve().with_name("cholmod_dense.py")
-    spec = importlib.util.spec_from_file_location("_fe_cholmod_dense", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return _module_from(Path(__file__).resolve().with_name("cholmod_dense.py"),
+                        "_fe_cholmod_dense")
 
 
 def set_parent_death_signal() -> None:
@@ -58,50 +55,59 @@ def send_array(conn, tag: str, array) -> None:
     raw (:meth:`Connection.send_bytes`): not pickled, so neither side copies it into a
     pickle buffer (a 42 MB block of 64 right-hand sides on the default pinion model;
     pickling and unpickling them took ~3 s of CPU and its page faults per development,
-    issue 75). The receiver reads it with :func:`recv_array`."""
+    issue 75). A Fortran-ordered array (CHOLMOD's dense blocks: column after column) is
+    sent as it lies, its header ``(tag, shape, dtype, "F")``, instead of transposed into
+    C order (~0.05 s per such block). The receiver reads it with :func:`recv_array`."""
     import numpy as np
 
-    a = np.ascontiguousarray(array)
+    a = np.asarray(array)
+    if a.ndim > 1 and a.flags.f_contiguous and not a.flags.c_contiguous:
+        conn.send((tag, a.shape, a.dtype.str, "F"))
+        conn.send_bytes(memoryview(a.T.reshape(-1)).cast("B"))  # a.T: C order, a view
+        return
+    a = np.ascontiguousarray(a)
     conn.send((tag, a.shape, a.dtype.str))
     conn.send_bytes(memoryview(a.reshape(-1)).cast("B"))
 
 
-def recv_array(conn, header):
-    """The array whose ``header`` (``(tag, shape, dtype)``, :func:`send_array`) was just
-    received: its bytes read from ``conn`` straight into a new array."""
+def recv_array(conn, header, out=None):
+    """The array whose ``header`` (``(tag, shape, dtype)`` or ``(tag, shape, dtype,
+    "F")``, :func:`send_array`) was just received: its bytes read from ``conn`` straight
+    into a new array of that order, or into ``out`` (an array of that shape, dtype and
+    order, e.g. a block of columns of a Fortran-ordered array)."""
     import numpy as np
 
-    out = np.empty(header[1], dtype=np.dtype(header[2]))
+    fortran = len(header) > 3 and header[3] == "F"
+    if out is None:
+        out = np.empty(header[1], dtype=np.dtype(header[2]), order="F" if fortran else "C")
+    elif (out.shape != tuple(header[1]) or out.dtype != np.dtype(header[2])
+          or not (out.T if fortran else out).flags.c_contiguous):
+        raise ValueError("recv_array: the array given does not fit the header "
+                         f"{header[1:]}")
+    flat = out.T if fortran else out  # C order either way: the bytes' order
     if out.size:
-        conn.recv_bytes_into(memoryview(out.reshape(-1)).cast("B"))
+        conn.recv_bytes_into(memoryview(flat.reshape(-1)).cast("B"))
     else:
         conn.recv_bytes()
     return out
 
 
-def keep_heap_pages() -> bool:
-    """glibc only: from now on, no memory mapped per allocation and none given back to the
-    system (``mallopt(M_MMAP_MAX, 0)``, ``mallopt(M_TRIM_THRESHOLD, 2**31 - 1)``), so that
-    blocks of the same size allocated and freed again and again (the solves' right-hand
-    sides and solutions: 42 MB each on the default pinion model, above glibc's largest
-    mmap threshold of 32 MB) reuse the pages the process has instead of mapping and
-    faulting in fresh zeroed ones each time. The worker calls it once its factor is made
-    (the factorisation's transient memory mapped and given back as before: the peak
-    unchanged). ``ltca synthesize`` calls it at its start too: the 9x41 hypoid's
-    synthesize took 26 s of system time (page faults), 6 s with both, the peak memory the
-    same 1.12 GB (issue 75, docs/performance.md). True where set."""
-    if not sys.platform.startswith("linux"):
-        return False
-    try:
-        import ctypes
+def _module_from(path: Path, name: str):
+    """A module loaded from its file (not through its package, whose import pulls in the
+    whole toolkit)."""
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
-        libc = ctypes.CDLL(None)
-        mallopt = libc.mallopt
-    except (OSError, AttributeError):  # pragma: no cover - not glibc
-        return False
-    mallopt.argtypes, mallopt.restype = [ctypes.c_int, ctypes.c_int], ctypes.c_int
-    m_trim_threshold, m_mmap_max = -1, -4
-    return bool(mallopt(m_mmap_max, 0)) and bool(mallopt(m_trim_threshold, 2**31 - 1))
+
+def keep_heap_pages() -> bool:
+    """:func:`geometry.core.heap.keep_heap_pages`, loaded from its file (this worker
+    imports no package of the toolkit): the solves' blocks reuse the process's pages.
+    The worker calls it once its factor is made; ``ltca synthesize`` and ``ltca run``
+    call it at their start."""
+    path = Path(__file__).resolve().parents[3] / "geometry" / "core" / "heap.py"
+    return _module_from(path, "_fe_heap").keep_heap_pages()
 
 
 def serve(conn, kernel, box: list) -> None:
