@@ -133,3 +133,33 @@ def test_given_design_torque_above_capacity_is_noted(tmp_path, capsys):
     case = load_case(out)
     assert _above_capacity_note(case, 0.5 * capacity) is None
     assert _above_capacity_note(case, float("nan")) is None
+
+
+def test_face_width_too_wide_for_the_toe_names_b2(tmp_path):
+    """A face width that leaves no tooth at the toe is named in the error: the spiral bevel
+    11x27 of tests/data/limits (R_e2 37.8 mm) typed with b2 = 30 mm (0.79 R_e2) makes a
+    blank, but the FE tooth model fits a negative root thickness at the toe; the error
+    said only ``thickness_toe_root -2.09`` and the development's "change [development]
+    variables bounds". It now names design.b2 with b / R_e (the face width of the written
+    gear against its outer cone distance, both from the case's blank)."""
+    from contact.compliance.tooth_measurement import shell_tooth_from_case
+    from geometry.core.errors import LTCAError
+    from geometry.synthesis.basic_design import load_basic
+    from geometry.synthesis.case_synthesis import synthesize
+
+    text = (Path(__file__).parent / "data" / "limits" / "spiral_bevel_11x27_m0.toml"
+            ).read_text(encoding="utf-8")
+    text, n = re.subn(r"(?m)^b2 = .*$", "b2 = 30.0", text)
+    assert n == 1
+    path = tmp_path / "wide.toml"
+    path.write_text(text, encoding="utf-8")
+    # the coarse search's synthesis (no tip planes), as the development's trials
+    case = synthesize(load_basic(path), tip_planes=False)[0]
+    blank = case.member("gear").blank
+    with pytest.raises(LTCAError, match=r"thickness_toe_root") as info:
+        shell_tooth_from_case(case, "gear")
+    said = str(info.value)
+    assert "design.b2" in said
+    assert (f"face width b {blank.face_width:.4g} mm is "
+            f"{blank.face_width / blank.outer_cone_distance:.2f} of the outer cone distance "
+            f"R_e {blank.outer_cone_distance:.4g} mm") in said
