@@ -75,6 +75,9 @@ DONE_WHEN = {
     # and after the coast flank's redevelopment kept the chosen drive flank: LTE 99 / 115
     # urad and a FAIL (spread 0.55) before it, the drive flank written a stale design
     "truck_hypoid_8x39_a45": _ALL,
+    # an unseen hypoid 7x37 (2.5-in cutter, b2 0.33 R_e2) at its user's 60 N m, measured
+    # 2026-11-26 (LTE 21 / 30 urad; docs/own_gear_set.md, "unseen (3)")
+    "hypoid_7x37_rc2p5": _ALL,
 }
 
 
@@ -93,7 +96,7 @@ DRIVE_TARGETS_MET = {"eaxle_hypoid_11x39_s80", "fh_hypoid_11x43", "fh_spiral_bev
                      "hypoid_12x41_s85", "hypoid_7x45_a45", "pc_hypoid_10x43",
                      "spiral_bevel_13x39", "spiral_bevel_15x45_m0", "truck_hypoid_9x37",
                      "hypoid_5x43", "hypoid_6x41", "hypoid_10x37_s75", "fh_hypoid_10x37_m2",
-                     "hypoid_12x37_s105", "truck_hypoid_8x39_a45"}
+                     "hypoid_12x37_s105", "truck_hypoid_8x39_a45", "hypoid_7x37_rc2p5"}
 
 
 #: designs whose ``ltca run`` FAILs, measured 2026-11-25, with what the one reason says:
@@ -137,6 +140,7 @@ COAST_DONE_WHEN: dict[str, set[str]] = {
     "spiral_bevel_17x29_s100_m0": {"duty"},
     "hypoid_12x37_s105": {"coast_lte60", "duty"},
     "truck_hypoid_8x39_a45": {"coast_lte60", "duty"},
+    "hypoid_7x37_rc2p5": {"coast_lte60", "duty"},
 }
 
 

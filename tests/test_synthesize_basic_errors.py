@@ -97,3 +97,69 @@ def test_low_face_contact_ratio_is_noted(tmp_path, capsys):
     # its values checked in tests/test_face_contact.py)
     assert "a gear face width b2 of 30.1 mm (now 24" in text
     assert "a mean spiral angle beta_m of 42.5 deg (now 35)" in text
+
+
+def test_given_design_torque_above_capacity_is_noted(tmp_path, capsys):
+    """A design torque the basic file gives above the pair's ISO 10300 long-life capacity
+    gets a note naming both torques (the hypoid 7x37 of tests/data/designs with 150 N m,
+    meant by its user as "well below capacity": every development target met, then
+    ``ltca run`` FAIL on S_H 0.87). The capacity printed is the rating's own: rated at it,
+    the smaller safety over its minimum is 1 (to the printed 4 digits)."""
+    from contact.commands.synthesize import _above_capacity_note
+    from contact.load_capacity.iso10300.rating import iso10300_rating
+    from geometry.case import load_case
+
+    text = (DESIGNS / "hypoid_7x37_rc2p5.toml").read_text(encoding="utf-8")
+    text, n = re.subn(r"(?m)^design_torque = .*$", "design_torque = 150.0", text)
+    assert n == 1
+    basic = tmp_path / "over.toml"
+    basic.write_text(text, encoding="utf-8")
+    out = tmp_path / "case.toml"
+    assert main(["synthesize", str(basic), "--no-development", "--no-progress", "-o",
+                 str(out)]) == 0
+    printed = capsys.readouterr().out
+    found = re.search(r"note: the design torque 150 N m is above the pair's ISO 10300 "
+                      r"long-life capacity ([0-9.]+) N m", printed)
+    assert found, printed
+    capacity = float(found.group(1))
+    assert 50.0 < capacity < 150.0
+    ds = iso10300_rating(load_case(out), torque=[capacity])
+    ratio = min(float(ds["S_H"].min()) / float(ds["S_Hmin"]),
+                float(ds["S_F"].min()) / float(ds["S_Fmin"]))
+    # 4 printed digits: the torque within 5e-4 relative, a safety (S ~ T^-1/2 .. T^-1)
+    # within 5e-4; 2e-3 leaves the rating's own round-off room
+    assert ratio == pytest.approx(1.0, abs=2e-3)
+    # at or below the capacity, and for a torque that is not finite, no note
+    case = load_case(out)
+    assert _above_capacity_note(case, 0.5 * capacity) is None
+    assert _above_capacity_note(case, float("nan")) is None
+
+
+def test_face_width_too_wide_for_the_toe_names_b2(tmp_path):
+    """A face width that leaves no tooth at the toe is named in the error: the spiral bevel
+    11x27 of tests/data/limits (R_e2 37.8 mm) typed with b2 = 30 mm (0.79 R_e2) makes a
+    blank, but the FE tooth model fits a negative root thickness at the toe; the error
+    said only ``thickness_toe_root -2.09`` and the development's "change [development]
+    variables bounds". It now names design.b2 with b / R_e (the face width of the written
+    gear against its outer cone distance, both from the case's blank)."""
+    from contact.compliance.tooth_measurement import shell_tooth_from_case
+    from geometry.core.errors import LTCAError
+    from geometry.synthesis.basic_design import load_basic
+    from geometry.synthesis.case_synthesis import synthesize
+
+    text = (Path(__file__).parent / "data" / "limits" / "spiral_bevel_11x27_m0.toml"
+            ).read_text(encoding="utf-8")
+    text, n = re.subn(r"(?m)^b2 = .*$", "b2 = 30.0", text)
+    assert n == 1
+    path = tmp_path / "wide.toml"
+    path.write_text(text, encoding="utf-8")
+    # the coarse search's synthesis (no tip planes), as the development's trials
+    case = synthesize(load_basic(path), tip_planes=False)[0]
+    blank = case.member("gear").blank
+    with pytest.raises(LTCAError, match=r"thickness_toe_root") as info:
+        shell_tooth_from_case(case, "gear")
+    said = str(info.value)
+    assert "design.b2" in said
+    assert (f"face width b {blank.face_width:.4g} mm is "
+            f"{blank.face_width / blank.outer_cone_distance:.2f} of the outer cone distance "
+            f"R_e {blank.outer_cone_distance:.4g} mm") in said

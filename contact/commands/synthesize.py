@@ -125,6 +125,34 @@ def _contact_ratios(case) -> tuple[float, float] | None:
     return float(ds["eps_va"]), float(ds["eps_vb"])
 
 
+def _above_capacity_note(case, torque: float) -> str | None:
+    """A note where the design torque the basic file gives (``[synthesis] design_torque``
+    or ``[rating] design_torque``) is above the written pair's ISO 10300 long-life capacity
+    (:func:`contact.load_capacity.iso10300.capacity.capacity_torque`, S_H = S_H,min or
+    S_F = S_F,min at Z_NT = Y_NT = 1, the case's own ``[rating]`` inputs): ``ltca run``
+    rates that torque FAIL at long life, and the user is told before running it. None at
+    or below the capacity, where the torque is not finite, or where the rating cannot give
+    a capacity (said by ``ltca run`` itself). Found on a hypoid 7x37 whose user's 150 N m,
+    meant as "well below capacity", was above its 113 N m: S_H 0.87, ``ltca run`` FAIL
+    with every development target met."""
+    from contact.load_capacity.iso10300.capacity import capacity_torque
+    from geometry.core.errors import InputError
+
+    if not math.isfinite(torque):
+        return None
+    try:
+        capacity = capacity_torque(case)
+    except (InputError, KeyError, ValueError):
+        return None
+    if torque <= capacity * (1.0 + 1e-6):
+        return None
+    return (f"the design torque {torque:.4g} N m is above the pair's ISO 10300 long-life "
+            f"capacity {capacity:.4g} N m (the torque at which S_H or S_F reaches its "
+            "minimum): `ltca run` rates it FAIL at long life; a design torque at or below "
+            "the capacity (the default, without [synthesis] design_torque), or the duty's "
+            "load cycles as [rating] load_cycles, rates it for what it is")
+
+
 def run_synthesize(args: argparse.Namespace) -> int:
     import dataclasses
     import tomllib
@@ -195,6 +223,10 @@ def run_synthesize(args: argparse.Namespace) -> int:
                                   else torque_why))
     if math.isfinite(coast_torque):
         print(f"  coast design torque: {coast_torque:.4g} N m, {coast_why}")
+    given = torque_why.startswith(("[synthesis] design_torque", "[rating] design_torque"))
+    above = _above_capacity_note(case, torque) if given else None
+    if above is not None:
+        print("note: " + above)
     ratios = _contact_ratios(case)
     if ratios is not None:
         print(f"  contact ratios (ISO 10300-1 virtual cylindrical gears): profile eps_va "

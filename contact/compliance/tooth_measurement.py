@@ -261,6 +261,22 @@ def _virtual_gear(member: str, blank, corners, surf: Surface, blades, t_root: fl
     return _VirtualGear(foundation, beta, r_vn, h_fm)
 
 
+def _toe_hint(bad: dict, heel: float, blank) -> str:
+    """The basic data to change where the tooth alone at the toe is not physical (its root
+    thickness, fitted linearly toe → heel, ≤ 0 while the heel's is positive): the face
+    width against the outer cone distance — the toe's pitch shrinks with R_i = R_e − b
+    while the slot the cutter leaves does not. Found on a spiral bevel 11x27 (R_e2 37.8 mm)
+    typed with b2 = 30 mm: "thickness_toe_root -2.09" without a word on b2. The usual
+    face width b ≤ 0.3 R_e is AGMA 2005-D03's (and ISO 23509's samples')."""
+    if set(bad) != {"thickness_toe_root"} or not heel > 0.0:
+        return ""
+    b, re_ = blank.face_width, blank.outer_cone_distance
+    return (f"; the tooth narrows to nothing before the toe: its face width b "
+            f"{b:.4g} mm is {b / re_:.2f} of the outer cone distance R_e {re_:.4g} mm (the "
+            "basic data's design.b2; usual b <= 0.3 R_e), or the point width leaves the "
+            "toe's slot wider than its pitch")
+
+
 def shell_tooth_from_case(
     case: Case,
     member: str,
@@ -428,7 +444,8 @@ def shell_tooth_from_case(
             "thickness_tip": t_tip, "height_toe": h_toe, "height_heel": h_heel}
     bad = {k: val for k, val in dims.items() if not val > 0.0}
     if bad:
-        raise LTCAError(f"{member}: fitted tooth dimensions are not physical: {bad}")
+        raise LTCAError(f"{member}: fitted tooth dimensions are not physical: {bad}"
+                        + _toe_hint(bad, t_heel, blank))
     tooth = ShellTooth.from_face_width(
         **{k: float(val) for k, val in dims.items()}, face_width=length, radius=radius,
         youngs_modulus=e_mod, poisson_ratio=nu_p)

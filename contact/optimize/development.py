@@ -325,8 +325,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         except InputError as err:
             raise InputError(f"{err} (the basic design as given, before any development; "
                              "ltca synthesize --no-development says the same)") from err
+        # a tooth the FE model finds too thin at the toe is the basic data's face width,
+        # which no bounds change (tooth_measurement._toe_hint names it)
+        change = ("change the basic data's design.b2" if "design.b2" in reasons
+                  else "change [development] variables bounds")
         raise InputError(f"development: the drive flank could not be synthesised and "
-                         f"analysed ({reasons}); change [development] variables bounds")
+                         f"analysed ({reasons}); {change}")
     # the final check at the default sampling (ltca run's): the best designs of the
     # coarse search in turn until one meets every target (the coarse LTCA's peak pressure
     # is a few % low: 2387 against 2539 MPa on the spiral bevel 13x39)
