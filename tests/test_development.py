@@ -1329,35 +1329,3 @@ def test_a_design_not_tolerant_on_its_edges_gets_more_relief(monkeypatch):
     assert dcheck.checked_tolerance(top, targets, setup, None, lines.append,
                                     lambda v: dict(v)) is top
     assert len(lines) == 1 and "root_relief 37.5" in lines[0]
-
-
-def test_the_coast_flank_gets_the_check_path_step(monkeypatch):
-    """The coast flank's checked design, too long or over its LTE (the face-hobbed spiral
-    bevel 11x33: path −45°, pattern 0.70 long, LTE 64 µrad at its coast design torque),
-    gets the drive flank's path step on the coast flank: analysed on the coast flank with
-    its pinion tooth kept under the coast prefix, kept on its score alone (no excursion
-    analysed: the mounting tolerance is the drive flank's). Stand-in analyses whose
-    pattern length is ellipse + travel(path): the test is the decisions."""
-    from contact.optimize import development as dev
-
-    calls = []
-
-    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
-             flank="drive"):
-        calls.append((misalignment, flank, pinion_key[:2]))
-        n = case["ellipse_length"] + 0.3 * math.cos(math.radians(case["path_angle"]))
-        return (_metrics(pattern_toe_u=[0.45 - n / 2, 0.1], pattern_heel_u=[0.45 + n / 2, 0.9]),
-                (0.0, 1.0, 0.0, 1.0, 2400.0))
-
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [35.6, 180.8], "centre_v": 0.6}
-    start = _checked({"path_angle": -45.0, "ellipse_length": 0.55},
-                     fake({"path_angle": -45.0, "ellipse_length": 0.55}, [])[0], targets, 0.6)
-    calls.clear()
-    lines = []
-    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v),
-                               flank="coast", key_prefix=("drive", "coast"))
-    # -60 deg / 0.5: 0.65 long, better; -75 deg / 0.45: 0.53, every target met
-    assert got.values == {"path_angle": -75.0, "ellipse_length": pytest.approx(0.45)}
-    assert got.met and calls == [(None, "coast", ("drive", "coast"))] * 2
-    assert lines[0].startswith("  coast design 4 with path_angle -60")

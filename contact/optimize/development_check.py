@@ -124,19 +124,14 @@ def _checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], s
 def _said_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,
                   label: str, targets: DevelopmentTargets, setup: Mapping[str, Any],
                   teeth: KeptTeeth, say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case], *, flank: str = "drive",
-                  key_prefix: tuple = ()) -> DevelopmentEvaluation | None:
+                  placed: Callable[[Mapping[str, float]], Case]
+                  ) -> DevelopmentEvaluation | None:
     """A check step's design: :func:`_checked_variant` of ``base`` with ``values``, and
     where it was analysed one line said, ``design <n> <label>, at the default sampling:
-    <its metrics>``. None where the synthesis or the analysis failed. ``flank``: the
-    flank analysed, its pinion tooth kept under ``key_prefix`` and the design's bearing
-    (the coast flank's, :func:`contact.optimize.development_coast_flank.
-    coast_development`)."""
-    e = _checked_variant(base, values, stage, targets, setup, teeth, placed,
-                         pinion_key=(*key_prefix, *bearing_key(values)), flank=flank)
+    <its metrics>``. None where the synthesis or the analysis failed."""
+    e = _checked_variant(base, values, stage, targets, setup, teeth, placed)
     if e is not None:
-        what = "design" if flank == "drive" else f"{flank} design"
-        say(f"  {what} {base.index + 1} {label}, at the default sampling: "
+        say(f"  design {base.index + 1} {label}, at the default sampling: "
             + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
     return e
 
@@ -498,8 +493,7 @@ PATH_STEPS = ((-15.0, -0.05), (-30.0, -0.1))
 
 def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                   setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case], *, flank: str = "drive",
-                  key_prefix: tuple = ()) -> DevelopmentEvaluation:
+                  placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
     """The chosen design's bearing turned towards the profile at the check: where it
     misses the pattern length or the LTE at ``ltca run``'s sampling, the path angle turned
     by :data:`PATH_STEPS` towards the profile direction (clipped to its bound) and, where
@@ -507,10 +501,7 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     the LTE alone is missed, the ellipse lengthened by as much where the pattern stays
     within its length tolerance by that; each design placed and checked at
     :data:`CHECK_LTCA` and kept where it scores better (at most 2 designs, each a
-    synthesis of steps 3-6). ``flank``, ``key_prefix``: the flank stepped
-    (:func:`_said_variant`); the coast flank's step keeps a design on its score alone
-    (the mounting excursions are the drive flank's, :func:`tolerance_checks`, which a
-    coast design does not change).
+    synthesis of steps 3-6).
 
     Why: the light-load pattern is the ellipse plus the path's lengthwise travel over the
     roll of one tooth pair, and a path nearer the profile both shortens that travel and
@@ -554,11 +545,11 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         e = _said_variant(best, values, "path",
                           f"with path_angle {values['path_angle']:.3g}, ellipse_length "
                           f"{values['ellipse_length']:.3g}", targets, setup, teeth, say,
-                          placed, flank=flank, key_prefix=key_prefix)
+                          placed)
         if e is None:
             continue
         if (_check_rank(e) < _check_rank(best)
-                and (flank != "drive" or _tolerant_variant(e, targets, setup, teeth, say))):
+                and _tolerant_variant(e, targets, setup, teeth, say)):
             best = e
             if e.met:
                 break

@@ -20,13 +20,13 @@ import dataclasses
 import logging
 import math
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from typing import Any, NamedTuple
 
 import numpy as np
 
 from contact.optimize import development_evaluate as evaluation
-from contact.optimize.development_check import _checked_path, checked_best
+from contact.optimize.development_check import checked_best
 from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
 from contact.optimize.development_evaluate import (
     CHECK_LTCA,
@@ -269,16 +269,10 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     chosen = synthesised
     if search_flank(evaluate, evals, basic_of, make, targets, start, developed, n_max,
                     COAST_BEARING_DESIGNS):
-        def placed(values: Mapping[str, float]) -> Case:
-            return synthesize(basic_of(dict(values)), memo=memo)[0]
-
-        best = checked_best(evals, targets, setup, teeth, say, placed, side="coast",
-                            key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
-        # the check's path step, as the drive flank's (a coast search that stays at its
-        # path's bound: the face-hobbed spiral bevel 11x33, path -45 deg, pattern 0.70
-        # long, LTE 51 / 64 urad at 35.6 / 180.8 N m)
-        best = _checked_path(best, targets, setup, teeth, say, placed, flank="coast",
-                            key_prefix=prefix)
+        best = checked_best(evals, targets, setup, teeth, say,
+                            lambda values: synthesize(basic_of(values), memo=memo)[0],
+                            side="coast", key_prefix=prefix, n_max=n_max,
+                            slopes=evaluate.slopes)
         as_synthesised = all(round(v, 9) == round(start[k], 9) for k, v in best.values.items())
         if (best.checked and not as_synthesised
                 and (not best.full[2], best.full[0]) < (not full[2], full[0])):
