@@ -95,6 +95,12 @@ DRIVE_TARGETS_MET = {"eaxle_hypoid_11x39_s80", "fh_hypoid_11x43", "fh_spiral_bev
                      "hypoid_5x43", "hypoid_6x41", "hypoid_10x37_s75", "fh_hypoid_10x37_m2",
                      "hypoid_12x37_s105", "truck_hypoid_8x39_a45"}
 
+#: designs whose developed drive flank is tolerant at the mounting excursions (ΔE, ΔP ±
+#: 0.05 mm; ``[development] tolerant``): the hypoid 12x37 at Σ 105° since the check's
+#: tolerance step (development_check.checked_tolerance, 2026-11-26: 2.8 % on the edges at
+#: ΔE −0.05 mm before it, its tip relief 15 µm; 22.5 µm after)
+TOLERANT = {"hypoid_12x37_s105"}
+
 
 #: designs whose ``ltca run`` FAILs, measured 2026-11-25, with what the one reason says:
 #: the 14x35 at Σ 70° (undercut toe; its Formate gear at δ2 51.7°, below the ≈ 63° the
@@ -157,6 +163,8 @@ def test_user_design_synthesised_developed_run_and_rated(basic, tmp_path, capsys
     assert ", every target met;" in head or "(limit " in head or "(target " in head, head
     if basic.stem in DRIVE_TARGETS_MET:  # the drive flank's clause, before the coast's
         assert head.split(";")[0].endswith(", every target met"), head
+    if basic.stem in TOLERANT:
+        assert "; tolerant at dE" in head, head
     case = tomllib.loads(case_path.read_text(encoding="utf-8"))
     assert "Development bearing" in case["source"]
     dev = case["development"]
