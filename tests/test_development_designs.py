@@ -75,6 +75,10 @@ DONE_WHEN = {
     # and after the coast flank's redevelopment kept the chosen drive flank: LTE 99 / 115
     # urad and a FAIL (spread 0.55) before it, the drive flank written a stale design
     "truck_hypoid_8x39_a45": _ALL,
+    # designs not seen before (3), measured 2026-11-26 (docs/own_gear_set.md, "Issue 71's
+    # criteria on twenty-five designs"): the face-hobbed spiral bevel 11x33 after the coast
+    # redevelopment's pressure bound
+    "fh_spiral_bevel_11x33_m0": _ALL,
 }
 
 
@@ -93,7 +97,7 @@ DRIVE_TARGETS_MET = {"eaxle_hypoid_11x39_s80", "fh_hypoid_11x43", "fh_spiral_bev
                      "hypoid_12x41_s85", "hypoid_7x45_a45", "pc_hypoid_10x43",
                      "spiral_bevel_13x39", "spiral_bevel_15x45_m0", "truck_hypoid_9x37",
                      "hypoid_5x43", "hypoid_6x41", "hypoid_10x37_s75", "fh_hypoid_10x37_m2",
-                     "hypoid_12x37_s105", "truck_hypoid_8x39_a45"}
+                     "hypoid_12x37_s105", "truck_hypoid_8x39_a45", "fh_spiral_bevel_11x33_m0"}
 
 #: designs whose developed drive flank is tolerant at the mounting excursions (ΔE, ΔP ±
 #: 0.05 mm; ``[development] tolerant``): the hypoid 12x37 at Σ 105° since the check's
@@ -143,6 +147,9 @@ COAST_DONE_WHEN: dict[str, set[str]] = {
     "spiral_bevel_17x29_s100_m0": {"duty"},
     "hypoid_12x37_s105": {"coast_lte60", "duty"},
     "truck_hypoid_8x39_a45": {"coast_lte60", "duty"},
+    # the 11x33's coast LTE p-p 64 urad at its coast design torque 180.8 N m (ε_vβ 1.12;
+    # 61 urad at 119.2 N m before the pressure bound)
+    "fh_spiral_bevel_11x33_m0": {"duty"},
 }
 
 
