@@ -10,7 +10,10 @@ the profile (:func:`_checked_path`, :data:`PATH_STEPS`), a shorter tip relief
 (:func:`_checked_tip`, :data:`TIP_FRACTIONS`) and the root relief with a longer ellipse
 (:func:`_checked_root`) for a pattern high on the flank, each kept where it scores better
 and stays tolerant (:func:`_tolerant_variant`); :func:`steps_on_each` gives them to the
-other checked designs too while the best misses a target. :func:`static_capacity` lowers
+other checked designs too while the best misses a target; :func:`checked_tolerance` raises
+the tip, then the root relief of a chosen design that meets every target but not the
+mounting excursions' edges (:func:`final_tolerance` reuses its excursions for the case
+written). :func:`static_capacity` lowers
 the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
