@@ -194,3 +194,47 @@ def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monke
     assert (before.path_angle, before.ellipse_length) != (drive.path_angle, 0.5)
     better_first = first._replace(best=ev(0.5, met=True))
     assert again(142.6, outcome=better_first) is None
+
+
+def test_the_coast_flank_developed_again_must_carry_its_torque(monkeypatch):
+    """The coast flank developed again at its lowered design torque is scored with its
+    flank peak pressure bounded by what that torque allows: p · S_H,loc / S_Hmin of the
+    check that held there (S_H,loc ∝ 1/p), or the flank's static strength where lower. A
+    face-hobbed spiral bevel 11x33 held at 180.8 N m at 1619 MPa with S_H,loc 1.01; the
+    design developed there, scored without it, reached S_H,loc 0.75 and its coast design
+    torque fell to 119.2 N m."""
+    from contact.optimize import development as dev
+    from contact.optimize.development_coast import CoastCapacity, CoastCheck
+    from contact.optimize.development_result import DevelopmentEvaluation
+    from contact.optimize.development_targets import DevelopmentTargets
+
+    def ev(objective: float) -> DevelopmentEvaluation:
+        return DevelopmentEvaluation(0, {}, {}, objective, {}, False, "", 0.0,
+                                     full=(objective, {}, False), checked=True)
+
+    seen = []
+
+    def search(pre, drive, targets, setup, *args):
+        seen.append(targets.max_flank_pressure)
+        return dcoast._CoastOutcome("again", ev(1.5), [], "developed", None)
+
+    monkeypatch.setattr("contact.optimize.development_coast_flank.coast_development", search)
+    basic = load_basic(DESIGNS / "hypoid_12x41_s85.toml")
+    first = dcoast._CoastOutcome("first", ev(11.2), [], "developed", None)
+    held = CoastCheck(180.8, 1619.0, 2400.0, pitting_safety=1.01, s_h_min=1.0)
+    failed = CoastCheck(237.1, 1750.0, 2400.0, pitting_safety=0.91, s_h_min=1.0)
+    cap = CoastCapacity(180.8, 237.1, (failed, held), "", True)
+    assert dcoast.pitting_pressure(cap) == pytest.approx(1619.0 * 1.01, rel=1e-12)
+    for setup, want in (({"torques": [35.5, 237.1], "pressure_limit": 2400.0}, 1619.0 * 1.01),
+                        ({"torques": [35.5, 237.1], "pressure_limit": 1500.0}, 1500.0)):
+        seen.clear()
+        dev.coast_at_its_torque(basic, ev(0.0), DevelopmentTargets(), setup, None, {},
+                                lambda line: None, None, first, cap, 237.1)
+        assert seen == [pytest.approx(want, rel=1e-12)]
+    # no pitting safety at the check: the targets as given
+    seen.clear()
+    bare = CoastCapacity(180.8, 237.1, (CoastCheck(180.8, 1619.0, 2400.0),), "", True)
+    assert math.isnan(dcoast.pitting_pressure(bare))
+    dev.coast_at_its_torque(basic, ev(0.0), DevelopmentTargets(), {"torques": [35.5, 237.1]},
+                            None, {}, lambda line: None, None, first, bare, 237.1)
+    assert seen == [None]

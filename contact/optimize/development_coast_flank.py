@@ -289,6 +289,28 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
 COAST_REDEVELOP = 0.9
 
 
+def pitting_pressure(cap: CoastCapacity) -> float:
+    """[MPa] The coast flank's peak pressure at which its local pitting safety at long life
+    is the rating's S_Hmin, from the check at the coast design torque (``cap.final``):
+    p · S_H,loc / S_Hmin, the safety σ_HP / (p √(K_A K_v)) inversely proportional to the
+    peak pressure p (:func:`contact.optimize.development_root.pitting_safety`). NaN where
+    that check has no finite pressure, safety or S_Hmin.
+
+    Why: the coast flank developed again at its capacity (:func:`coast_at_its_torque`) is
+    scored on its targets, not on the capacity it was developed at. Measured on a
+    face-hobbed spiral bevel 11x33 (Method 0, d_e2 170 mm, b2 26 mm, z0 5; issue 71): the
+    first coast design held at 180.8 N m (1619 MPa, S_H,loc 1.01); the design developed
+    there reached S_H,loc 0.75 at it, and the coast design torque fell to 119.2 N m, with
+    LTE p-p 61 µrad there (2026-11-26)."""
+    c = cap.final
+    if c is None:
+        return math.nan
+    p, s, s_min = float(c.pressure), float(c.pitting_safety), float(c.s_h_min)
+    if not (math.isfinite(p) and math.isfinite(s) and math.isfinite(s_min) and s_min > 0.0):
+        return math.nan
+    return p * s / s_min
+
+
 def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
                         targets: DevelopmentTargets, setup: dict[str, Any],
                         teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
@@ -302,9 +324,10 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
     coast design torque): :func:`coast_development` from the coast flank as synthesised
     (``pre_coast`` with the drive flank of ``drive``, and the basic file's coast
     prescriptions),
-    with the budget ``coast_max_evaluations``. Returns its outcome where its chosen design
-    scores better at those torques than the design chosen first does there (``coast``,
-    whose metrics :func:`coast_flank_capacity` measured at them), else None.
+    with the budget ``coast_max_evaluations``, its flank peak pressure bounded by what the
+    new coast design torque allows (:func:`pitting_pressure`). Returns its outcome where
+    its chosen design scores better at those torques than the design chosen first does
+    there (``coast``, whose metrics :func:`coast_flank_capacity` measured at them), else None.
 
     Why: the relief that keeps a coast bearing elastic at a torque its flank cannot carry
     costs LTE at the torque it can (issue 71, the e-axle 11×39 at Σ 80°: developed at
@@ -317,6 +340,14 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
     say(f"development: coast flank developed again at its own design torque "
         f"{cap.torque:.4g} N m (it was developed at {developed_at:.4g} N m)")
     redo_setup = dict(setup, torques=[setup["torques"][0], cap.torque])
+    # the flank peak pressure the new coast design torque allows (its local pitting
+    # safety at S_Hmin) bounds the redevelopment's: a design developed there must carry
+    # the torque it is developed at
+    limit = pitting_pressure(cap)
+    if math.isfinite(limit):
+        held = (targets.max_flank_pressure if targets.max_flank_pressure is not None
+                else setup.get("pressure_limit", math.inf))
+        targets = dataclasses.replace(targets, max_flank_pressure=float(min(held, limit)))
     # the drive flank of every design is ``drive``'s, whatever design ``pre_coast`` was
     # made from: where the root-stress capacity gave the drive flank the check's steps
     # again after the first coast development (a new drive design at the lowered
