@@ -320,7 +320,8 @@ def family_views(buf: np.ndarray, shape: tuple) -> GeneratedFamily:
 
 
 def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, section=None,
-                     sections: ProfileSections | None = None) -> GeneratedFamily:
+                     sections: ProfileSections | None = None,
+                     links: Chain | None = None) -> GeneratedFamily:
     """Cutter surface carried into the blank frame at roll q, with analytic derivatives.
 
     Parameters
@@ -335,6 +336,10 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
         Cradle rotation (broadcast with s and θ; ignored for Formate).
     section, sections
         See :func:`geometry.machine.cutter.cutter_surface`.
+    links : Chain, optional
+        :func:`chain` of ``settings``, made once by a caller that evaluates the family of
+        one cut many times (a march, a Newton loop): the same folded factors as made here
+        by default, so the same numbers.
 
     Returns
     -------
@@ -356,8 +361,8 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
     if section is not None:
         section = np.broadcast_to(np.asarray(section, dtype=int), q.shape).ravel()
     v = cutter_buffer(blade, sections, s.ravel(), theta.ravel(), section)
-    return family_views(family_buffer(chain(settings), settings, v, q, theta.ravel()),
-                        q.shape)
+    return family_views(family_buffer(chain(settings) if links is None else links, settings,
+                                      v, q, theta.ravel()), q.shape)
 
 
 def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
