@@ -415,11 +415,21 @@ class Case:
         can hold what its TOML does not say (a face-hobbing indexing ratio other than
         −z0/z, say), and the rebuilt case would be another pair's teeth.
 
+        The operating point (``[operating]``: torques, speed, oil) and the ``[rating]``
+        table are left out too: neither changes a tooth (what the memos compute reads the
+        members, the pair and the name alone), and the development's checks analyse one
+        case at several design torques, which each wrote into both (the coast flank's
+        capacity search made the same ease-off and tooth models again at each torque).
+
         Returns
         -------
         TeethKey
         """
-        teeth = dataclasses.replace(self, misalignment=Misalignment(), deviations=None)
+        extra = self.extra
+        if "rating" in extra:
+            extra = MappingProxyType({k: v for k, v in extra.items() if k != "rating"})
+        teeth = dataclasses.replace(self, misalignment=Misalignment(), deviations=None,
+                                    operating=OperatingPoint(), extra=extra)
         return TeethKey(teeth, repr(teeth))
 
 
