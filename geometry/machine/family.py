@@ -357,12 +357,25 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
     products).
     """
     s, theta, q = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (s, theta, q)))
+    return family_views(generated_buffer(blade, settings, s, theta, q, section, sections,
+                                         links), q.shape)
+
+
+def generated_buffer(blade: Blade, settings: MachineSettings, s: np.ndarray,
+                     theta: np.ndarray, q: np.ndarray, section=None,
+                     sections: ProfileSections | None = None,
+                     links: Chain | None = None) -> np.ndarray:
+    """:func:`generated_family`'s buffer (3, 11, n) (:func:`family_buffer`) of ``s``,
+    ``theta``, ``q``, float arrays of one shape (n points): for a caller that also wants
+    :func:`meshing_buffer` of it without :func:`meshing_function` stacking the family's
+    views back into such a buffer (the same numbers). Parameters as
+    :func:`generated_family`'s."""
     sections = profile_sections(blade) if sections is None else sections
     if section is not None:
         section = np.broadcast_to(np.asarray(section, dtype=int), q.shape).ravel()
     v = cutter_buffer(blade, sections, s.ravel(), theta.ravel(), section)
-    return family_views(family_buffer(chain(settings) if links is None else links, settings,
-                                      v, q, theta.ravel()), q.shape)
+    return family_buffer(chain(settings) if links is None else links, settings, v, q,
+                         theta.ravel())
 
 
 def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -33,7 +33,13 @@ import numpy as np
 from geometry.case import Blank
 from geometry.machine.cradle import MachineSettings
 from geometry.machine.cutter import Blade, ProfileSections, profile_sections
-from geometry.machine.family import chain, generated_family, meshing_function
+from geometry.machine.family import (
+    chain,
+    family_views,
+    generated_buffer,
+    generated_family,
+    meshing_buffer,
+)
 from geometry.machine.flank import blank_outline
 from geometry.machine.meshing import EnvelopeSolution, solve_envelope
 
@@ -138,9 +144,12 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
         ok = np.zeros(idx.size, bool)
         for _ in range(NEWTON_ITER):
             th, q, v = xi.T
-            fam = generated_family(blade, settings, s[idx], th,
+            # the family's buffer kept for the meshing function (meshing_function would
+            # stack the views of it back into one)
+            buf = generated_buffer(blade, settings, s[idx], th,
                                    q if gen else np.zeros_like(q), sections=sections,
                                    links=links)
+            fam = family_views(buf, (idx.size,))
             r = fam.r
             rho = np.hypot(r[:, 0], r[:, 1])
             p, pv = projection_point(corners, u[idx], v)
@@ -151,7 +160,8 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
             jac[:, 0, 0], jac[:, 1, 0] = fam.r_theta[:, 2], drho[0]
             jac[:, 0, m - 1], jac[:, 1, m - 1] = -pv[..., 0], -pv[..., 1]
             if gen:
-                f, g = meshing_function(fam, length)
+                f, g = meshing_buffer(buf, length)
+                g = g.T
                 rows.append(f[:, None])
                 jac[:, 0, 1], jac[:, 1, 1] = fam.r_q[:, 2], drho[1]
                 jac[:, 2, 0], jac[:, 2, 1] = g[:, 1], g[:, 2]
