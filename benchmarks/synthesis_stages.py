@@ -18,7 +18,8 @@ after synthesize, as a user runs it) and its CPU is added: the issue's budget.
 CPU is user + system time of this process and of its children (the FE solver worker,
 ``resource.getrusage``); a child's CPU is counted in the stage that waits for it to end.
 CPU, not wall time: the machine may be shared. Also ``--diff DIR``: compare the case files
-written with ``DIR/<design>.toml`` (e.g. an earlier tree's), byte for byte.
+written with ``DIR/<design>.toml`` (e.g. an earlier tree's), line for line but for the
+development's CPU seconds and the basic file's directory, which the file records.
 
 Usage: ``python benchmarks/synthesis_stages.py [BASIC.toml ...] [--keep DIR] [--no-run]
 [--diff DIR]``. One design takes 2–4 min of CPU.
@@ -29,6 +30,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import os
+import re
 import resource
 import subprocess
 import sys
@@ -181,8 +183,22 @@ def print_row(row: dict, diff: Path | None) -> None:
               f"{row['calls'].get(stage, '')} |")
     if diff is not None:
         old = diff / f"{row['design']}.toml"
-        same = (old.is_file() and old.read_bytes() == Path(row["case"]).read_bytes())
-        print(f"case file against {old}: {'identical' if same else 'DIFFERENT or missing'}")
+        same = old.is_file() and _same_numbers(old) == _same_numbers(Path(row["case"]))
+        print(f"case file against {old}: {'identical' if same else 'DIFFERENT or missing'} "
+              "(but for its CPU seconds and the basic file's path)")
+
+
+def _same_numbers(path: Path) -> list[str]:
+    """A case file written by ``ltca synthesize`` without what differs between two runs of
+    the same numbers: the development's CPU seconds (``cpu_seconds``, the table
+    ``[development.cpu_seconds_stages]``) and the basic file's directory as given."""
+    out, skip = [], False
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if line.startswith("["):
+            skip = line.strip() == "[development.cpu_seconds_stages]"
+        if not (skip or line.startswith("cpu_seconds =")):
+            out.append(re.sub(r"[^\s`\"]*/(?=[^/\s`\"]+\.toml)", "", line))
+    return out
 
 
 def main(argv: list[str] | None = None) -> int:
