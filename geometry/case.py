@@ -418,6 +418,12 @@ class Case:
         can hold what its TOML does not say (a face-hobbing indexing ratio other than
         −z0/z, say), and the rebuilt case would be another pair's teeth.
 
+        The operating point (``[operating]``: torques, speed, oil) and the ``[rating]``
+        table are left out too: neither changes a tooth (what the memos compute reads the
+        members, the pair and the name alone), and the development's checks analyse one
+        case at several design torques, which each wrote into both (the coast flank's
+        capacity search made the same ease-off and tooth models again at each torque).
+
         Returns
         -------
         TeethKey
@@ -431,8 +437,11 @@ class Case:
         """
         key = self.__dict__.get("_teeth_key")
         if key is None:
+            extra = self.extra
+            if "rating" in extra:
+                extra = MappingProxyType({k: v for k, v in extra.items() if k != "rating"})
             teeth = dataclasses.replace(self, misalignment=Misalignment(), deviations=None,
-                                        operating=OperatingPoint())
+                                        operating=OperatingPoint(), extra=extra)
             key = TeethKey(teeth, repr(teeth))
             object.__setattr__(self, "_teeth_key", key)
         return key

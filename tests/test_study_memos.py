@@ -100,6 +100,27 @@ def test_the_unloaded_cycle_of_one_ease_off_is_computed_once(case):
     for a, b, c in zip(first, second, fresh, strict=True):
         xr.testing.assert_identical(a, c)
         xr.testing.assert_identical(b, c)
+def test_operating_point_and_rating_are_not_teeth(case):
+    """The development's checks analyse one case at several design torques, each written
+    into its ``[operating]`` and ``[rating]`` tables (issue 71): neither changes a tooth,
+    so the key is the same and the memos compute from the case without them (another
+    table, or another tooth, is still another key)."""
+    from types import MappingProxyType
+
+    rated = dataclasses.replace(
+        case, operating=dataclasses.replace(case.operating, torque=(12.5, 99.0)),
+        extra=MappingProxyType({**case.extra, "rating": {"design_torque": 99.0}}))
+    assert rated.teeth_key() == case.teeth_key()
+    assert rated.teeth_key().case.operating == dataclasses.replace(case).teeth_key().case.operating
+    assert "rating" not in rated.teeth_key().case.extra
+    other = dataclasses.replace(case, extra=MappingProxyType({**case.extra, "fe": {"x": 1}}))
+    assert other.teeth_key() != case.teeth_key()
+    clear_memos()
+    a = ease_off(case)
+    b = ease_off(rated)
+    assert b is a  # the ease-off memo (keyed by the teeth) hit
+    for name in ("ease_off_angle", "roll_angle", "gap_curvature", "placement_error"):
+        np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=name)
 
 
 def test_a_case_changed_in_code_is_other_teeth(case):

@@ -320,7 +320,8 @@ def family_views(buf: np.ndarray, shape: tuple) -> GeneratedFamily:
 
 
 def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, section=None,
-                     sections: ProfileSections | None = None) -> GeneratedFamily:
+                     sections: ProfileSections | None = None,
+                     links: Chain | None = None) -> GeneratedFamily:
     """Cutter surface carried into the blank frame at roll q, with analytic derivatives.
 
     Parameters
@@ -335,6 +336,10 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
         Cradle rotation (broadcast with s and θ; ignored for Formate).
     section, sections
         See :func:`geometry.machine.cutter.cutter_surface`.
+    links : Chain, optional
+        :func:`chain` of ``settings``, made once by a caller that evaluates the family of
+        one cut many times (a march, a Newton loop): the same folded factors as made here
+        by default, so the same numbers.
 
     Returns
     -------
@@ -352,12 +357,25 @@ def generated_family(blade: Blade, settings: MachineSettings, s, theta, q, secti
     products).
     """
     s, theta, q = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (s, theta, q)))
+    return family_views(generated_buffer(blade, settings, s, theta, q, section, sections,
+                                         links), q.shape)
+
+
+def generated_buffer(blade: Blade, settings: MachineSettings, s: np.ndarray,
+                     theta: np.ndarray, q: np.ndarray, section=None,
+                     sections: ProfileSections | None = None,
+                     links: Chain | None = None) -> np.ndarray:
+    """:func:`generated_family`'s buffer (3, 11, n) (:func:`family_buffer`) of ``s``,
+    ``theta``, ``q``, float arrays of one shape (n points): for a caller that also wants
+    :func:`meshing_buffer` of it without :func:`meshing_function` stacking the family's
+    views back into such a buffer (the same numbers). Parameters as
+    :func:`generated_family`'s."""
     sections = profile_sections(blade) if sections is None else sections
     if section is not None:
         section = np.broadcast_to(np.asarray(section, dtype=int), q.shape).ravel()
     v = cutter_buffer(blade, sections, s.ravel(), theta.ravel(), section)
-    return family_views(family_buffer(chain(settings), settings, v, q, theta.ravel()),
-                        q.shape)
+    return family_buffer(chain(settings) if links is None else links, settings, v, q,
+                         theta.ravel())
 
 
 def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:

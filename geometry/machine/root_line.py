@@ -33,7 +33,13 @@ import numpy as np
 from geometry.case import Blank
 from geometry.machine.cradle import MachineSettings
 from geometry.machine.cutter import Blade, ProfileSections, profile_sections
-from geometry.machine.family import generated_family, meshing_function
+from geometry.machine.family import (
+    chain,
+    family_views,
+    generated_buffer,
+    generated_family,
+    meshing_buffer,
+)
 from geometry.machine.flank import blank_outline
 from geometry.machine.meshing import EnvelopeSolution, solve_envelope
 
@@ -115,6 +121,12 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
     """
     gen = settings.process == "Generate"
     length = blank.outer_cone_distance
+    # the blade's sections and the machine chain's folded factors made once for the
+    # march's 2 x steps x Newton evaluations of the family (each made them again: ~7 % of
+    # a face-milled development's synthesis, in the tip planes' root lines; the same
+    # arrays, so the same numbers)
+    sections = profile_sections(blade) if sections is None else sections
+    links = chain(settings)
     k = len(u)
     s_out = np.full((k, steps), np.nan)
     v_out, phi_out = s_out.copy(), s_out.copy()
@@ -132,8 +144,12 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
         ok = np.zeros(idx.size, bool)
         for _ in range(NEWTON_ITER):
             th, q, v = xi.T
-            fam = generated_family(blade, settings, s[idx], th,
-                                   q if gen else np.zeros_like(q), sections=sections)
+            # the family's buffer kept for the meshing function (meshing_function would
+            # stack the views of it back into one)
+            buf = generated_buffer(blade, settings, s[idx], th,
+                                   q if gen else np.zeros_like(q), sections=sections,
+                                   links=links)
+            fam = family_views(buf, (idx.size,))
             r = fam.r
             rho = np.hypot(r[:, 0], r[:, 1])
             p, pv = projection_point(corners, u[idx], v)
@@ -144,7 +160,8 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
             jac[:, 0, 0], jac[:, 1, 0] = fam.r_theta[:, 2], drho[0]
             jac[:, 0, m - 1], jac[:, 1, m - 1] = -pv[..., 0], -pv[..., 1]
             if gen:
-                f, g = meshing_function(fam, length)
+                f, g = meshing_buffer(buf, length)
+                g = g.T
                 rows.append(f[:, None])
                 jac[:, 0, 1], jac[:, 1, 1] = fam.r_q[:, 2], drho[1]
                 jac[:, 2, 0], jac[:, 2, 1] = g[:, 1], g[:, 2]
@@ -172,7 +189,8 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
         gi = idx[good]
         x[gi] = xi[good]
         fam = generated_family(blade, settings, s[gi], x[gi, 0],
-                               x[gi, 1] if gen else np.zeros(gi.size), sections=sections)
+                               x[gi, 1] if gen else np.zeros(gi.size), sections=sections,
+                               links=links)
         pos = fam.r * (MIRROR if mirror else 1.0)
         s_out[gi, j], v_out[gi, j] = s[gi], x[gi, 2]
         phi_out[gi, j] = np.arctan2(pos[:, 1], pos[:, 0])
