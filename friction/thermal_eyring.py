@@ -1,4 +1,4 @@
-"""Thermal Eyring film shear on the mixed-EHL load sharing: an opt-in friction model.
+"""Thermal Eyring film shear on the mixed-EHL load sharing: the default friction model.
 
 ``mixed_ehl`` (:mod:`friction.mixed_ehl`) shears its film isothermally at the inlet oil
 temperature, so its full-film friction settles near the Eyring plateau and *rises* with
@@ -78,8 +78,8 @@ N.S.W. 76 (1942) 203; Carslaw, H. S., Jaeger, J. C., *Conduction of Heat in Soli
 Lubrication, IMechE 2 (1937) 222; Bair, S., Winer, W. O., J. Lubr. Technol. 101 (1979)
 258 (limiting shear stress).
 
-Registered as ``"thermal_eyring"`` in :mod:`friction.coefficient` (opt-in: the default
-model is unchanged).
+Registered as ``"thermal_eyring"`` in :mod:`friction.coefficient`; the toolkit's default
+model since issue 74 (:data:`friction.defaults.DEFAULT_FRICTION_MODEL`).
 """
 
 from __future__ import annotations
