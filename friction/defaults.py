@@ -17,8 +17,8 @@ __all__ = ["DEFAULT_FRICTION_MODEL"]
 #: friction on the asperities and a thermal Eyring film (:mod:`friction.thermal_eyring`).
 #: Chosen by measurement against ISO/TR 14179-2 (Schlenk's FZG gear measurements) and Xu et
 #: al. (2007): it ranks surface finishes, oils and temperatures as those do (all 19 of issue
-#: 74's rows on Table 5.4's A and B, where ``mixed_ehl`` — the default of issues 61–74 —
-#: met 6), and its flank μ on the default case is 0.81–1.40× ISO/TR 14179-2 at 50–90 °C
+#: 74's rows on Table 5.4's A and B, most of which ``mixed_ehl`` — the default of issues
+#: 61–74 — misses), and its flank μ on the default case is 0.81–1.40× ISO/TR 14179-2 at 50–90 °C
 #: (1.54× at 100 °C and 50 N·m), rising with torque (docs/friction.md, "Which model is the
 #: default, and why").
 DEFAULT_FRICTION_MODEL = "thermal_eyring"
