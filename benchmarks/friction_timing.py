@@ -5,9 +5,9 @@ Prints, measured in one run (issue 61):
 1. the efficiency stage (:func:`friction.efficiency.efficiency_analysis`) on the default
    case's LTCA (50 / 250 / 500 N·m, the LTCA computed once and cached as in
    ``benchmarks/friction_anchors.py``) with ``mixed_ehl`` (the default of issues 61–74),
-   ``thermal_eyring`` (the default since issue 74) and ``kolivand2009`` (of issues 34–61): seconds per operating condition (one speed,
-   temperature and roughness over all torques, rolls and segments) and the μ model's own
-   evaluation per loaded segment;
+   ``thermal_eyring`` (the default since issue 74) and ``kolivand2009`` (of issues 34–61):
+   seconds per operating condition (one speed, temperature and roughness over all torques,
+   rolls and segments) and the μ model's own evaluation per loaded segment;
 2. the stochastic mixed-EHL line-contact solver that ``kolivand2009`` is fitted to, on one
    flank-like condition (1 GPa, R 20 mm, 2.2 m/s, SR 0.66, 90 °C, Rq 0.544 µm each): seconds
    per condition;
