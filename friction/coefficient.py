@@ -693,7 +693,7 @@ _MODELS: Mapping[str, FrictionModel] = MappingProxyType(
             "Zhou & Hoeprich, J. Tribol. 113 (1991) 590 asperity load share with a thermal"
             " Eyring film shear: Johnson & Greenwood, Wear 61 (1980) 353; Jaeger (1942)"
             " flash temperature (friction.thermal_eyring);"
-            " opt-in", mixed_ehl_validity,
+            " the default since issue 74", mixed_ehl_validity,
         ),
     }
 )

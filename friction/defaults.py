@@ -12,11 +12,13 @@ __all__ = ["DEFAULT_FRICTION_MODEL"]
 
 #: The efficiency stage's friction-coefficient model where none is named (a case's
 #: ``[operating]`` table without ``friction_model``, ``OperatingConditions()``, ``ltca run``
-#: without ``--friction-model``): ``mixed_ehl`` since issue 61 — Johnson, Greenwood & Poon's
-#: load sharing with Greenwood–Tripp asperities, an Eyring film and boundary friction
-#: (:mod:`friction.mixed_ehl`). Chosen by measurement: on the default case's flanks its μ is
-#: 0.77–0.83× ISO/TR 14179-2's (Schlenk's FZG gear measurements) at 50–500 N·m and rises
-#: with torque as that correlation does, where ``kolivand2009`` (the seed's Eq. 5.11 fitted
-#: to the stochastic solver, the default of issues 34–61) was 1.5–2.5× and fell
-#: (docs/friction.md, "Which model is the default, and why").
-DEFAULT_FRICTION_MODEL = "mixed_ehl"
+#: without ``--friction-model``): ``thermal_eyring`` since issue 74 — Zhou & Hoeprich's
+#: (1991) asperity load share of deterministic contacts of ground profiles, boundary
+#: friction on the asperities and a thermal Eyring film (:mod:`friction.thermal_eyring`).
+#: Chosen by measurement against ISO/TR 14179-2 (Schlenk's FZG gear measurements) and Xu et
+#: al. (2007): it ranks surface finishes, oils and temperatures as those do (all 19 of issue
+#: 74's rows on Table 5.4's A and B, most of which ``mixed_ehl`` — the default of issues
+#: 61–74 — misses), and its flank μ on the default case is 0.81–1.40× ISO/TR 14179-2 at 50–90 °C
+#: (1.54× at 100 °C and 50 N·m), rising with torque (docs/friction.md, "Which model is the
+#: default, and why").
+DEFAULT_FRICTION_MODEL = "thermal_eyring"

@@ -61,6 +61,7 @@ from geometry.core.errors import InputError
 from geometry.core.validation import broadcast, real_array, scalar_or_array
 
 __all__ = [
+    "FILM_GAMMA_EXPONENT",
     "MIXED_EHL_DEFAULTS",
     "MIXED_EHL_VALIDITY",
     "MixedEHL",
@@ -70,6 +71,7 @@ __all__ = [
     "mixed_ehl",
     "mixed_ehl_solution",
     "mixed_ehl_validity",
+    "smooth_film",
 ]
 
 log = logging.getLogger(__name__)
@@ -146,7 +148,8 @@ COS_THETA = np.cos(0.5 * math.pi * _NODES)
 W_THETA = 0.5 * math.pi * _WEIGHTS
 
 #: h_c ∝ γ₁^(p_U − p_G) under the JGP scaling w′ → w′/γ₁, E′ → E′/γ₁ (U → γ₁U, G → G/γ₁).
-_FILM_GAMMA_EXPONENT = DOWSON_TOYODA_EXPONENTS[0] - DOWSON_TOYODA_EXPONENTS[1]
+FILM_GAMMA_EXPONENT = DOWSON_TOYODA_EXPONENTS[0] - DOWSON_TOYODA_EXPONENTS[1]
+_FILM_GAMMA_EXPONENT = FILM_GAMMA_EXPONENT
 
 #: Greenwood–Tripp constant for E′ = 2E*: (16√2/15)π multiplies E* for two rough
 #: surfaces, hence (8√2/15)π with E′ (derived in tests/test_ehl_solver.py from the sum over
@@ -400,6 +403,93 @@ def _share_equation(x: Array, h_s: Array, p_mean: Array, k_e: Array,
     return k_e * f52(separation_of_mean_gap(lam)) - p_mean * (-np.expm1(-x))
 
 
+def smooth_film(*, load_per_length: ArrayLike, hertz_pressure: ArrayLike, radius: ArrayLike,
+                e_prime: ArrayLike, entraining_velocity: ArrayLike,
+                sliding_velocity: ArrayLike, viscosity: ArrayLike,
+                pressure_viscosity: ArrayLike, roughness_1: ArrayLike,
+                roughness_2: ArrayLike, thermal_factor: ArrayLike, eyring_stress: float,
+                limiting_shear_coefficient: float, boundary_friction: float) -> tuple:
+    """The inputs of :func:`mixed_ehl_solution` checked and broadcast, with the composite
+    roughness, the validity flags and the smooth-surface central film.
+
+    Parameters
+    ----------
+    load_per_length … thermal_factor : float or array
+        As :func:`mixed_ehl_solution` ([N/mm], [MPa], [mm], [MPa], [m/s], [m/s], [Pa s],
+        [1/GPa], [µm], [µm], [1]).
+    eyring_stress, limiting_shear_coefficient, boundary_friction : float
+        As :func:`mixed_ehl_solution` ([MPa], [1], [1]).
+
+    Returns
+    -------
+    tuple
+        (w′ [N/mm], p_h [MPa], R [mm], E′ [MPa], u [m/s], V_s [m/s], η₀ [Pa s], α [1/GPa],
+        Rq₁ [µm], Rq₂ [µm], φ_T [1], τ₀ [MPa], Λ [1], μ_b [1], σ [µm], valid [bool],
+        h_c,s [µm]), the arrays broadcast to one shape; h_c,s = φ_T h_DT the
+        smooth-surface central film of Dowson & Toyoda (1979).
+
+    Raises
+    ------
+    InputError
+        An input outside its accepted range (the message names it).
+
+    Warns
+    -----
+    FrictionModelRangeWarning
+        Points outside :data:`MIXED_EHL_VALIDITY`.
+
+    Notes
+    -----
+    Source: Dowson, D., Toyoda, S., "A central film thickness formula for elastohydrodynamic
+    line contacts", Proc. 5th Leeds–Lyon Symposium (1979) 60–65. Shared with
+    ``thermal_eyring``'s Zhou & Hoeprich sharing, which needs the film but not the JGP
+    balance.
+    """
+    w = real_array("load_per_length", load_per_length, low=0.0, low_open=True, unit="N/mm")
+    ph = real_array("hertz_pressure", hertz_pressure, low=0.0, low_open=True, unit="MPa")
+    r = real_array("radius", radius, low=0.0, low_open=True, unit="mm")
+    e = real_array("e_prime", e_prime, low=0.0, low_open=True, unit="MPa")
+    u = real_array("entraining_velocity", entraining_velocity, low=0.0, low_open=True,
+                   unit="m/s")
+    vs = real_array("sliding_velocity", sliding_velocity, low=0.0, unit="m/s")
+    eta0 = real_array("viscosity", viscosity, low=0.0, low_open=True, high=100.0, unit="Pa s")
+    alpha = real_array("pressure_viscosity", pressure_viscosity, low=0.1, high=100.0,
+                       unit="1/GPa")
+    s1 = real_array("roughness_1", roughness_1, low=0.0, high=100.0, unit="µm")
+    s2 = real_array("roughness_2", roughness_2, low=0.0, high=100.0, unit="µm")
+    phi = real_array("thermal_factor", thermal_factor, low=0.0, low_open=True, high=1.0,
+                     unit="1")
+    tau0 = float(real_array("eyring_stress", eyring_stress, low=0.0, low_open=True, unit="MPa"))
+    lam_l = float(real_array("limiting_shear_coefficient", limiting_shear_coefficient,
+                             low=0.0, low_open=True, high=1.0, unit="1"))
+    mu_b = float(real_array("boundary_friction", boundary_friction, low=0.0, high=1.0, unit="1"))
+    w, ph, r, e, u, vs, eta0, alpha, s1, s2, phi = broadcast(
+        load_per_length=w, hertz_pressure=ph, radius=r, e_prime=e, entraining_velocity=u,
+        sliding_velocity=vs, viscosity=eta0, pressure_viscosity=alpha, roughness_1=s1,
+        roughness_2=s2, thermal_factor=phi,
+    )
+    sigma = np.hypot(s1, s2)
+    if np.any(sigma <= 0.0):
+        raise InputError("roughness_1, roughness_2: the composite roughness √(Rq₁² + Rq₂²)"
+                         " must be > 0 [µm] (λ = h/σ is undefined for smooth surfaces)")
+    valid = np.ones(w.shape, dtype=bool)
+    for name, vals in (("hertz_pressure", ph), ("entraining_velocity", u)):
+        lo, hi, units, why = MIXED_EHL_VALIDITY[name]
+        out = (vals < lo) | (vals > hi)
+        if np.any(out):
+            valid &= ~out
+            warnings.warn(
+                f"mixed_ehl: {name} outside [{lo:g}, {hi:g}] [{units}] at"
+                f" {int(np.count_nonzero(out))} of {vals.size} point(s) (e.g."
+                f" {vals[out].flat[0]:g}): {why}; result extrapolated",
+                FrictionModelRangeWarning,
+                stacklevel=3,
+            )
+    h_s = np.asarray(dowson_toyoda_central(u, eta0, alpha, w, r, e), float) * phi  # µm
+    return (w, ph, r, e, u, vs, eta0, alpha, s1, s2, phi, tau0, lam_l, mu_b, sigma, valid,
+            h_s)
+
+
 def mixed_ehl_solution(
     *,
     load_per_length: ArrayLike,
@@ -487,47 +577,15 @@ def mixed_ehl_solution(
     zone; the film's pressure is the Hertz profile scaled by 1/γ₁ (JGP); isothermal
     shear in the film (no flash-temperature correction of η).
     """
-    w = real_array("load_per_length", load_per_length, low=0.0, low_open=True, unit="N/mm")
-    ph = real_array("hertz_pressure", hertz_pressure, low=0.0, low_open=True, unit="MPa")
-    r = real_array("radius", radius, low=0.0, low_open=True, unit="mm")
-    e = real_array("e_prime", e_prime, low=0.0, low_open=True, unit="MPa")
-    u = real_array("entraining_velocity", entraining_velocity, low=0.0, low_open=True,
-                   unit="m/s")
-    vs = real_array("sliding_velocity", sliding_velocity, low=0.0, unit="m/s")
-    eta0 = real_array("viscosity", viscosity, low=0.0, low_open=True, high=100.0, unit="Pa s")
-    alpha = real_array("pressure_viscosity", pressure_viscosity, low=0.1, high=100.0,
-                       unit="1/GPa")
-    s1 = real_array("roughness_1", roughness_1, low=0.0, high=100.0, unit="µm")
-    s2 = real_array("roughness_2", roughness_2, low=0.0, high=100.0, unit="µm")
-    phi = real_array("thermal_factor", thermal_factor, low=0.0, low_open=True, high=1.0,
-                     unit="1")
-    tau0 = float(real_array("eyring_stress", eyring_stress, low=0.0, low_open=True, unit="MPa"))
-    lam_l = float(real_array("limiting_shear_coefficient", limiting_shear_coefficient,
-                             low=0.0, low_open=True, high=1.0, unit="1"))
-    mu_b = float(real_array("boundary_friction", boundary_friction, low=0.0, high=1.0, unit="1"))
-    w, ph, r, e, u, vs, eta0, alpha, s1, s2, phi = broadcast(
-        load_per_length=w, hertz_pressure=ph, radius=r, e_prime=e, entraining_velocity=u,
-        sliding_velocity=vs, viscosity=eta0, pressure_viscosity=alpha, roughness_1=s1,
-        roughness_2=s2, thermal_factor=phi,
-    )
-    sigma = np.hypot(s1, s2)
-    if np.any(sigma <= 0.0):
-        raise InputError("roughness_1, roughness_2: the composite roughness √(Rq₁² + Rq₂²)"
-                         " must be > 0 [µm] (λ = h/σ is undefined for smooth surfaces)")
-    valid = np.ones(w.shape, dtype=bool)
-    for name, vals in (("hertz_pressure", ph), ("entraining_velocity", u)):
-        lo, hi, units, why = MIXED_EHL_VALIDITY[name]
-        out = (vals < lo) | (vals > hi)
-        if np.any(out):
-            valid &= ~out
-            warnings.warn(
-                f"mixed_ehl: {name} outside [{lo:g}, {hi:g}] [{units}] at"
-                f" {int(np.count_nonzero(out))} of {vals.size} point(s) (e.g."
-                f" {vals[out].flat[0]:g}): {why}; result extrapolated",
-                FrictionModelRangeWarning,
-                stacklevel=2,
-            )
-    h_s = np.asarray(dowson_toyoda_central(u, eta0, alpha, w, r, e), float) * phi  # µm
+    (w, ph, _r, e, _u, vs, eta0, alpha, _s1, _s2, _phi, tau0, lam_l, mu_b, sigma, valid,
+     h_s) = smooth_film(
+        load_per_length=load_per_length, hertz_pressure=hertz_pressure, radius=radius,
+        e_prime=e_prime, entraining_velocity=entraining_velocity,
+        sliding_velocity=sliding_velocity, viscosity=viscosity,
+        pressure_viscosity=pressure_viscosity, roughness_1=roughness_1,
+        roughness_2=roughness_2, thermal_factor=thermal_factor, eyring_stress=eyring_stress,
+        limiting_shear_coefficient=limiting_shear_coefficient,
+        boundary_friction=boundary_friction)
     k_e = _roughness_constant(*_roughness_parameters(asperity_density_radius_sigma,
                                                      sigma_over_beta)) * e  # K E′ [MPa]
     p_mean = 0.25 * math.pi * ph

@@ -75,12 +75,14 @@ class OperatingConditions:
         (a FrictionModel, or a model function, checked and wrapped by
         :func:`friction.coefficient.as_friction_model`; results record its name,
         :attr:`friction_model_name`). Default
-        :data:`friction.defaults.DEFAULT_FRICTION_MODEL`, ``"mixed_ehl"`` since issue 61:
-        Johnson, Greenwood & Poon's load sharing with Greenwood–Tripp asperities, an Eyring
-        film and boundary friction, whose flank μ stays within 0.6–1.4× the measured
-        ISO/TR 14179-2 correlation (docs/friction.md, "Which model is the default");
-        ``"kolivand2009"`` (the seed's Eq. 5.11 method fitted to the toolkit's stochastic
-        solver) was the default in issues 34–61 and ``"xu2007"`` before it.
+        :data:`friction.defaults.DEFAULT_FRICTION_MODEL`, ``"thermal_eyring"`` since issue
+        74: Zhou & Hoeprich's asperity load share, boundary friction and a thermal Eyring
+        film, which ranks surface finishes, oils and temperatures as ISO/TR 14179-2 and Xu
+        et al. (2007) do (docs/friction.md, "Which model is the default");
+        ``"mixed_ehl"`` (Johnson, Greenwood & Poon's sharing with an isothermal Eyring
+        film) was the default in issues 61–74, ``"kolivand2009"`` (the seed's Eq. 5.11
+        method fitted to the toolkit's stochastic solver) in issues 34–61 and
+        ``"xu2007"`` before it.
     surface_state : {"run_in", "new"}
         The flanks' state: ``"run_in"`` (default: a gear in service) runs the film and the
         friction model on the run-in roughness Rq × :data:`RUNNING_IN_FACTORS` ["run_in"]

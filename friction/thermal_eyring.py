@@ -1,4 +1,4 @@
-"""Thermal Eyring film shear on the mixed-EHL load sharing: an opt-in friction model.
+"""Thermal Eyring film shear on the mixed-EHL load sharing: the default friction model.
 
 ``mixed_ehl`` (:mod:`friction.mixed_ehl`) shears its film isothermally at the inlet oil
 temperature, so its full-film friction settles near the Eyring plateau and *rises* with
@@ -47,7 +47,8 @@ and
 
 The right side decreases with τ (more shear, more heat, thinner oil), so the equation has
 one root in [0, τ_iso] (τ_iso the isothermal stress), found per node by a bracketing
-root finder. As V_s → 0 the heating vanishes and the model is ``mixed_ehl``; the
+root finder (a safeguarded Newton iteration, :func:`_thermal_root`; half the nodes,
+the others their mirror images). As V_s → 0 the heating vanishes and the model is ``mixed_ehl``; the
 temperature enters through β, β_α and k, which are properties of the oil (its file), so
 oils differ only through their data. Mapped against ISO/TR 14179-2 and Xu et al. (2007)
 in docs/friction.md ("Mapped against the measured correlations", "Zhou & Hoeprich's load
@@ -77,8 +78,8 @@ N.S.W. 76 (1942) 203; Carslaw, H. S., Jaeger, J. C., *Conduction of Heat in Soli
 Lubrication, IMechE 2 (1937) 222; Bair, S., Winer, W. O., J. Lubr. Technol. 101 (1979)
 258 (limiting shear stress).
 
-Registered as ``"thermal_eyring"`` in :mod:`friction.coefficient` (opt-in: the default
-model is unchanged).
+Registered as ``"thermal_eyring"`` in :mod:`friction.coefficient`; the toolkit's default
+model since issue 74 (:data:`friction.defaults.DEFAULT_FRICTION_MODEL`).
 """
 
 from __future__ import annotations
@@ -87,17 +88,17 @@ import math
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import elementwise
 
 from friction.flank_summits import greenwood_tripp_parameters, height_tail_integral
 from friction.mixed_ehl import (
-    _FILM_GAMMA_EXPONENT,
     COS_THETA,
+    FILM_GAMMA_EXPONENT,
     MIXED_EHL_DEFAULTS,
     W_THETA,
     MixedEHL,
     eyring_shear_stress,
     mixed_ehl_solution,
+    smooth_film,
 )
 from geometry.core.errors import InputError
 from geometry.core.validation import real_array, scalar_or_array
@@ -116,6 +117,11 @@ STEEL_EFFUSIVITY = math.sqrt(46.0 * 7850.0 * 470.0)
 #: uniform flux: (4/(3√π)) q √(2b)/(B √u) (the closed form that
 #: :func:`friction.ehl.thermal.flash_temperature` is tested against, averaged)
 _BAND_MEAN = 4.0 / (3.0 * math.sqrt(math.pi))
+
+#: the quadrature's nodes come in mirrored pairs (an even Gauss–Legendre rule)
+_HALF = COS_THETA.size // 2
+if COS_THETA.size % 2 or not np.array_equal(COS_THETA[:_HALF], COS_THETA[_HALF:][::-1]):
+    raise ImportError("friction.thermal_eyring needs mixed_ehl's θ nodes in mirrored pairs")
 
 #: Default parameters beyond mixed_ehl's: name → (value, "[units] meaning; source").
 THERMAL_EYRING_DEFAULTS = {
@@ -262,27 +268,14 @@ def thermal_eyring_film_shear(
     with np.errstate(over="ignore"):
         eta_iso = eta0 * np.exp(ap)
     b_a = pressure_viscosity_temperature
-
-    def stress(tau: Array, e0: Array, a_p: Array, r: Array, k: Array, c: Array) -> Array:
-        # the Eyring law of eyring_shear_stress, written out: the heated viscosity may
-        # underflow to 0 (τ → 0), which that function's input check refuses
-        dt = k * tau
-        with np.errstate(over="ignore", under="ignore"):
-            arg = e0 * np.exp(a_p * np.exp(-b_a * dt) - temperature_viscosity * dt) * r \
-                / (eyring_stress * 1e6)
-        return np.minimum(eyring_stress * np.arcsinh(arg), c)
-
     tau_iso = np.minimum(np.asarray(eyring_shear_stress(eta_iso, rate, eyring_stress)), cap)
     tau = np.array(tau_iso, dtype=float)
     need = (tau_iso > 0.0) & (dt_per_tau * tau_iso * (temperature_viscosity + b_a * ap)
                               > 1e-12)
     if np.any(need):
-        args = (eta0[need], ap[need], rate[need], dt_per_tau[need], cap[need])
-        res = elementwise.find_root(
-            lambda t, e, a, r, k, c: t - stress(t, e, a, r, k, c),
-            (np.zeros(int(need.sum())), tau_iso[need]), args=args,
-            tolerances={"xatol": 1e-12, "xrtol": 1e-10})
-        tau[need] = res.x
+        tau[need] = _thermal_root(
+            tau_iso[need], eta0[need] * rate[need] / (eyring_stress * 1e6), ap[need],
+            dt_per_tau[need], cap[need], eyring_stress, temperature_viscosity, b_a)
     return tau, dt_per_tau * tau
 
 
@@ -405,7 +398,9 @@ def thermal_eyring(
     u2 = np.maximum(u - 0.5 * vs, 0.0)
     flash = _BAND_MEAN * np.sqrt(2.0 * b * 1e-3) / (STEEL_EFFUSIVITY
                                                    * (np.sqrt(u1) + np.sqrt(u2)))
-    p_film = (ph / gamma1)[..., None] * COS_THETA
+    # the nodes are symmetric about the contact's centre (COS_THETA[i] == COS_THETA[-1 - i]
+    # exactly) and so is every input of a node's root: solve the first half, mirror it
+    p_film = (ph / gamma1)[..., None] * COS_THETA[:_HALF]
     tau, _ = thermal_eyring_film_shear(
         pressure=p_film, viscosity=eta0[..., None], pressure_viscosity=alpha[..., None],
         shear_rate_film=(vs / (h_c * 1e-6))[..., None], sliding_velocity=vs[..., None],
@@ -413,6 +408,7 @@ def thermal_eyring(
         eyring_stress=eyring_stress, limiting_shear_coefficient=limiting_shear_coefficient,
         temperature_viscosity=beta, oil_thermal_conductivity=k_oil, film_heating=c_f,
         pressure_viscosity_temperature=b_a)
+    tau = np.concatenate([tau, tau[..., ::-1]], axis=-1)
     mu_film = b * np.sum(tau * COS_THETA * W_THETA, axis=-1) / w
     return scalar_or_array(mu_film + sol.boundary_friction)
 
@@ -428,7 +424,15 @@ def _model_sharing(*, load_sharing: str, asperity_load_constants: str | tuple[fl
     if load_sharing == "johnson_greenwood_poon":
         return _load_sharing(summits=summits, **inputs)
     constants = _zhou_hoeprich_constants(asperity_load_constants)
-    sol = _load_sharing(summits="fixed", **inputs)
+    # the smooth-surface film and the validity flags only: the JGP balance (mixed_ehl's
+    # share, replaced here) is not solved
+    *_, valid, h_s = smooth_film(**{k: v for k, v in inputs.items()
+                                     if k not in ("asperity_density_radius_sigma",
+                                                  "sigma_over_beta")})
+    nan = np.full(h_s.shape, np.nan)
+    sol = MixedEHL(friction_coefficient=nan, film_friction=nan, boundary_friction=nan,
+                   asperity_load_share=nan, film_thickness=nan, smooth_film_thickness=h_s,
+                   lambda_central=nan, valid=valid)
     return _zhou_hoeprich_sharing(sol, inputs["roughness_1"], inputs["roughness_2"],
                                   constants, inputs["boundary_friction"])
 
@@ -449,7 +453,7 @@ def _zhou_hoeprich_sharing(sol: MixedEHL, roughness_1: ArrayLike, roughness_2: A
     # a share of 1 (Λ = 0) would leave no film: the film's γ₁ is capped as mixed_ehl's
     share = np.minimum(share, 1.0 - 1e-12)
     gamma1 = 1.0 / (1.0 - share)
-    h_c = sol.smooth_film_thickness * gamma1**_FILM_GAMMA_EXPONENT
+    h_c = sol.smooth_film_thickness * gamma1**FILM_GAMMA_EXPONENT
     nan = np.full(shape, np.nan)
     return MixedEHL(friction_coefficient=nan, film_friction=nan,
                     boundary_friction=boundary_friction * share,
@@ -502,3 +506,68 @@ def _ground_summits(roughness_1: float, roughness_2: float) -> dict:
 #: mixed_ehl_solution's keyword inputs that are scalars (not broadcast with the points)
 _SCALAR_INPUTS = frozenset({"eyring_stress", "limiting_shear_coefficient",
                             "boundary_friction"})
+
+
+#: Newton iterations of :func:`_thermal_root` before it gives up (it converges in 3–8 on
+#: gear flanks; the bracket's bisection fallback bounds the worst case)
+_ROOT_ITERATIONS = 200
+#: :func:`_thermal_root`'s convergence: 16 ulp of τ (3.6e-15 relative)
+_ROOT_ULPS = 16.0 * np.finfo(float).eps
+
+
+def _thermal_root(tau_hi: Array, shear_number: Array, alpha_p: Array, dt_per_tau: Array,
+                  cap: Array, eyring_stress: float, beta: float, beta_alpha: float) -> Array:
+    """The root τ ∈ [0, τ_hi] [MPa] of τ = min(E(τ), Λp), E(τ) = τ₀ asinh(N exp(α₀p
+    e^(−β_α k τ) − β k τ)) (``shear_number`` N = η₀γ̇/τ₀ [1], ``alpha_p`` α₀p [1],
+    ``dt_per_tau`` k [K/MPa], ``cap`` Λp [MPa], 1-D arrays of one length; τ_hi the
+    isothermal stress).
+
+    τ = Λp where E(Λp) ≥ Λp. Elsewhere the root is that of g(τ) = τ − E(τ): E is
+    decreasing and convex in τ (asinh(e^L) is convex and increasing in L, L convex in τ),
+    so g is increasing (g′ ≥ 1) and concave, and Newton's iteration from τ_hi (g ≥ 0)
+    lands in [0, root] after one step and then rises monotonically to the root; it is
+    stopped when a step or the bracket is below 16 ulp, i.e. at the double-precision root
+    (a bracket kept on the way falls back to bisection where E overflows). Replaces
+    scipy's elementwise bracketing solver (the same root, to its 1e-10 relative tolerance)
+    at a fraction of its overhead (docs/friction.md, "`thermal_eyring`: the model")."""
+    tau = np.array(tau_hi, dtype=float)
+
+    def stress(t: Array, n: Array, a_p: Array, k: Array) -> tuple[Array, Array]:
+        dt = k * t
+        with np.errstate(over="ignore", under="ignore", divide="ignore", invalid="ignore"):
+            fall = np.exp(-beta_alpha * dt)
+            arg = n * np.exp(a_p * fall - beta * dt)
+            e = eyring_stress * np.arcsinh(arg)
+            # dE/dτ = τ₀ arg′/√(1 + arg²), arg′ = −arg (α₀p β_α k e^(−β_α k τ) + β k)
+            de = -eyring_stress * (a_p * beta_alpha * fall + beta) * k \
+                / np.sqrt(1.0 + 1.0 / (arg * arg))
+        return e, de
+
+    e_cap, _ = stress(cap, shear_number, alpha_p, dt_per_tau)
+    todo = np.flatnonzero(~(e_cap >= cap))
+    x = tau[todo]
+    lo, hi = np.zeros_like(x), x.copy()
+    n, a_p, k = shear_number[todo], alpha_p[todo], dt_per_tau[todo]
+    for _ in range(_ROOT_ITERATIONS):
+        if todo.size == 0:
+            return tau
+        e, de = stress(x, n, a_p, k)
+        g = x - e
+        below = g < 0.0
+        lo = np.where(below, x, lo)
+        hi = np.where(below, hi, x)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            step = x - g / (1.0 - de)
+        inside = (step >= lo) & (step <= hi)
+        step = np.where(inside, step, 0.5 * (lo + hi))
+        # converged: a step or the bracket within 16 ulp (g's rounding noise, ~1e-15 of τ,
+        # makes the last steps alternate about the root)
+        tol = _ROOT_ULPS * np.abs(step)
+        done = (np.abs(step - x) <= tol) | (hi - lo <= tol) | (g == 0.0)
+        x = step
+        if np.any(done):
+            tau[todo[done]] = x[done]
+            keep = ~done
+            todo, x, lo, hi, n, a_p, k = (a[keep] for a in (todo, x, lo, hi, n, a_p, k))
+    raise RuntimeError(f"thermal_eyring: the film's shear stress did not converge at "
+                       f"{todo.size} node(s) in {_ROOT_ITERATIONS} iterations")

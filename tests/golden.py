@@ -103,7 +103,12 @@ unchanged (``--check`` listed only new variables, groups and attributes); and fo
 whose run stores the standard's flash temperature method as ``/rating/flash_temperature``
 (the group added, every other group and value kept, the version attribute adopted).
 Issue 63 replaced the netCDF by this text summary, written from a run of the tree of
-that day (whose results the round's other changes had moved).
+that day (whose results the round's other changes had moved). Issue 74 made
+``thermal_eyring`` the default friction model: the entries of ``/friction``,
+``/scuffing_micropitting``, the root's ``summary`` and ``id`` and every ``inputs``
+attribute (the cases' ``friction_model`` line) were taken from a ``--write`` run; every
+other entry was kept as it was (that run reproduced them within the tolerances below, at
+round-off: 1e-16–1e-14 relative), so the diff shows the switch alone.
 
 Usage
 -----

@@ -327,5 +327,5 @@ def test_every_help_has_examples_and_no_internal_constant_names():
             assert argv[0] == name
             p.parse_args(attach_negative_values(argv))
     run = helps["run"]
-    for value in ("1500 rpm", "75W90", "90 degC", "0.8 um", "mixed_ehl"):  # ASCII units
+    for value in ("1500 rpm", "75W90", "90 degC", "0.8 um", "thermal_eyring"):  # ASCII units
         assert value in run, value

@@ -538,7 +538,7 @@ def test_run_warning_says_where_the_model_extrapolated(capsys):
     print_extrapolation_warning(fr)
     printed = capsys.readouterr().out
     assert len(printed.splitlines()) == 1 and len(printed.rstrip("\n")) <= 100
-    # the default model's name (mixed_ehl since issue 61), as the dataset records it
+    # the default model's name (thermal_eyring since issue 74), as the dataset records it
     model = fr.attrs["friction_model"]
     assert printed.startswith(f"WARNING: {model} extrapolated: {n_flank} flank segments")
     assert f"{parts['flank']['load_share']:.2%} of load" in printed

@@ -1,6 +1,6 @@
 """Tests of friction.operating.OperatingConditions: the operating defaults in one place.
 
-The defaults are the toolkit's (1500 rpm, 75W90 at 90 °C, Rq 0.8 µm, kolivand2009); every
+The defaults are the toolkit's (1500 rpm, 75W90 at 90 °C, Rq 0.8 µm, thermal_eyring); every
 refusal names the field; the command line takes its defaults from the dataclass.
 """
 
@@ -18,7 +18,7 @@ from geometry.core.errors import InputError, ModelUnavailableError
 def test_defaults():
     op = OperatingConditions()
     assert (op.pinion_speed, op.lubricant, op.temperature, op.roughness, op.friction_model) == (
-        1500.0, "75W90", 90.0, 0.8, "mixed_ehl")
+        1500.0, "75W90", 90.0, 0.8, "thermal_eyring")
     assert all(type(v) is float for v in (op.pinion_speed, op.temperature, op.roughness))
 
 
