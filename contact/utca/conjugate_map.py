@@ -343,13 +343,13 @@ def clear_memos() -> None:
     """Forget the memoised forward-map points and flank nodes, and the ease-offs computed
     from them with their unloaded cycles (:func:`contact.utca.easeoff.ease_off`'s and
     :func:`contact.utca.unloaded_tca`'s memos; frees memory)."""
-    from contact.utca.datasets import _memo_cycle
-    from contact.utca.easeoff import _memoised_ease_off
+    from contact.utca.datasets import clear_cycle_memo
+    from contact.utca.easeoff import clear_ease_off_memo
 
     _memo_forward_points.cache_clear()
     _memo_flank_nodes.cache_clear()
-    _memoised_ease_off.cache_clear()
-    _memo_cycle.cache_clear()
+    clear_ease_off_memo()
+    clear_cycle_memo()
 
 
 def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:

@@ -205,6 +205,12 @@ def _memo_cycle(eo: _Same, n_roll: int, pairs: tuple[int, ...], method: str,
     return cycle
 
 
+def clear_cycle_memo() -> None:
+    """Forget the unloaded cycles memoised per process by :func:`contact.utca.unloaded_tca`
+    (frees memory; the next call computes afresh)."""
+    _memo_cycle.cache_clear()
+
+
 def _check_cycle_options(n_roll, pairs, method, n_point) -> tuple[int, ...]:
     """The options of :func:`unloaded_cycle` checked; the pairs as a tuple of int."""
     integer("rolls_per_cycle", n_roll, low=4)

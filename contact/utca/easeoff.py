@@ -513,6 +513,12 @@ def _memoised_ease_off(teeth: TeethKey, mis_text: str, mis: Misalignment, flank:
     return eo
 
 
+def clear_ease_off_memo() -> None:
+    """Forget the ease-offs memoised per process by :func:`ease_off` (frees memory; the
+    next call computes afresh)."""
+    _memoised_ease_off.cache_clear()
+
+
 def _ease_off(case: Case, flank: str | None, misalignment: Misalignment | None,
               grid: dict | None, pinion_phase: float, gear_phase: float) -> EaseOff:
     """:func:`ease_off` without the check of the flanks meeting."""
