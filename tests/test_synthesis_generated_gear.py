@@ -463,3 +463,28 @@ def test_generated_gear_developed_only_where_the_formate_design_fails(monkeypatc
     runs.clear()
     forced = replace(basic, options=replace(basic.options, gear_process="Formate"))
     assert with_generated_gear(run, forced) is failing and runs == ["Formate"]
+
+
+@pytest.mark.slow
+def test_20x30_at_every_default_is_written_with_a_generated_gear_run_does_not_fail(
+        tmp_path, capsys):
+    """The spiral bevel 20x30 of tests/data/generated_gear at every default (gear_process
+    'auto'): its Formate gear's development fails (LTE spread 0.58 at 9.6 N m, design
+    torque cut to 64 of 277 N m; docs/synthesis.md, "Generated gear"), so `ltca
+    synthesize` develops the generated gear too and writes it, its source saying so; `ltca
+    run` of the case written does not FAIL (the verdict's own independent check of the
+    developed design). Two developments and a run: several minutes of CPU, hence slow."""
+    import tomllib
+
+    from contact.cli import main
+
+    out = tmp_path / "spiral_bevel_20x30.toml"
+    basic = DATA / "generated_gear" / "spiral_bevel_20x30.toml"
+    assert main(["synthesize", str(basic), "-o", str(out), "--no-progress"]) == 0
+    case = tomllib.loads(out.read_text(encoding="utf-8"))
+    assert case["gear"]["process"] == "Generate"
+    assert "Gear process (auto): generated" in case["source"]
+    capsys.readouterr()
+    assert main(["run", str(out), "-o", str(tmp_path / "run.nc")]) == 0
+    said = capsys.readouterr().out
+    assert "verdict" in said.lower() and "FAIL" not in said
