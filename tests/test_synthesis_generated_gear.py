@@ -487,4 +487,4 @@ def test_20x30_at_every_default_is_written_with_a_generated_gear_run_does_not_fa
     capsys.readouterr()
     assert main(["run", str(out), "-o", str(tmp_path / "run.nc")]) == 0
     said = capsys.readouterr().out
-    assert "verdict" in said.lower() and "FAIL" not in said
+    assert "VERDICT (analysis): " in said and "VERDICT (analysis): FAIL" not in said
