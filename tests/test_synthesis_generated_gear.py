@@ -393,19 +393,19 @@ def test_failed_outcome_names_each_fail_criterion():
     """A developed design fails where ltca run's verdict would FAIL it (LTE spread above
     0.5, plastic share above 5 %, on either flank at either torque) or its design torque
     was cut below half the rated one; the Formate 20x30 of docs/synthesis.md (spread 0.58
-    at 9.6 N m, cut to 64 of 277 N m) fails on both, its generated gear (171 of 277 N m,
-    no FAIL) on neither."""
+    at 9.6 N m, cut to 64 of its ISO capacity 251.4 N m) fails on both, its generated
+    gear (171 of 276.7 N m, no FAIL) on neither."""
     from contact.optimize.development_process import failed_outcome
 
     formate = _outcome("Formate", spread=0.58, torque=64.0, lowered=True)
-    why = failed_outcome(formate, 277.0)
-    assert "drive LTE spread 0.58 at 9.6 N m" in why and "cut to 64 of 277" in why
-    assert failed_outcome(_outcome("Generate", torque=171.0, lowered=True), 277.0) == ""
-    assert "plastic" in failed_outcome(_outcome("Formate", plastic=0.06), 277.0)
+    why = failed_outcome(formate, 251.4)
+    assert "drive LTE spread 0.58 at 9.6 N m" in why and "cut to 64 of 251.4" in why
+    assert failed_outcome(_outcome("Generate", torque=171.0, lowered=True), 251.4) == ""
+    assert "plastic" in failed_outcome(_outcome("Formate", plastic=0.06), 251.4)
     assert "coast LTE spread" in failed_outcome(_outcome("Formate", coast_spread=0.6),
-                                                277.0)
+                                                251.4)
     # a torque not lowered by the development, or a rated torque not known: no cut
-    assert failed_outcome(_outcome("Formate", torque=64.0), 277.0) == ""
+    assert failed_outcome(_outcome("Formate", torque=64.0), 251.4) == ""
     assert failed_outcome(_outcome("Formate", torque=64.0, lowered=True), math.nan) == ""
 
 
@@ -470,7 +470,7 @@ def test_20x30_at_every_default_is_written_with_a_generated_gear_run_does_not_fa
         tmp_path, capsys):
     """The spiral bevel 20x30 of tests/data/generated_gear at every default (gear_process
     'auto'): its Formate gear's development fails (LTE spread 0.58 at 9.6 N m, design
-    torque cut to 64 of 277 N m; docs/synthesis.md, "Generated gear"), so `ltca
+    torque cut to 64.1 of 251.4 N m; docs/synthesis.md, "Generated gear"), so `ltca
     synthesize` develops the generated gear too and writes it, its source saying so; `ltca
     run` of the case written does not FAIL (the verdict's own independent check of the
     developed design). Two developments and a run: several minutes of CPU, hence slow."""

@@ -7,8 +7,8 @@ generated one only where the Formate synthesis has no solution
 of its first successful trial. A low-ratio pair's Formate gear may synthesise and still
 develop into a design its own check fails: the spiral bevel 20x30 of
 tests/data/generated_gear (δ2 56.3°) developed with its Formate gear to an LTE spread of
-0.58 at the light torque (``ltca run`` FAILs it) and a design torque cut to 64 of the ISO
-capacity's 277 N·m, and with a generated gear to 171 N·m, no FAIL (docs/synthesis.md,
+0.58 at the light torque (``ltca run`` FAILs it) and a design torque cut to 64.1 of its
+ISO capacity's 251.4 N·m, and with a generated gear to 171 of 276.7 N·m, no FAIL (docs/synthesis.md,
 "Generated gear"). Here the development is run again with ``gear_process = "Generate"``
 where the first one's outcome fails (:func:`failed_outcome`) and the better of the two kept
 (:func:`better_outcome`); every design whose Formate development does not fail is the
@@ -41,8 +41,8 @@ log = logging.getLogger(__name__)
 
 #: [1] a developed design whose design torque the development cut below this share of the
 #: rated one (the ISO 10300 capacity or the basic file's) is a failed outcome: the bearing
-#: carries less than half of what the blank is rated for. The 20x30's Formate gear: 64 of
-#: 277 N·m (0.23); its generated gear: 171 of 277 N·m (0.62) (docs/synthesis.md)
+#: carries less than half of what the blank is rated for. The 20x30's Formate gear: 64.1 of
+#: 251.4 N·m (0.25); its generated gear: 171 of 276.7 N·m (0.62) (docs/synthesis.md)
 TORQUE_CUT_FRACTION = 0.5
 
 
