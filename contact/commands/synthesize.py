@@ -27,8 +27,9 @@ def register(sub) -> None:
              "(case TOML)",
         description="Read a basic design file (cases/basic/*.toml: ISO 23509 inputs, "
         "targets, synthesis options), compute the blanks, the Formate gear settings (a "
-        "generated gear where a low-ratio pair's Formate gear has no solution, "
-        "[synthesis] gear_process) and the generated pinion by local synthesis, and write a "
+        "generated gear where a low-ratio pair's Formate gear has no solution or its "
+        "developed design fails, [synthesis] gear_process) and the generated pinion by "
+        "local synthesis, and write a "
         "complete case file. The process follows the design's blade groups z0: 0 face "
         "milling, >= 1 face hobbing.",
     )

@@ -202,7 +202,8 @@ __all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNI
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
-            synthesis_progress: Any = None, root_stress: bool = True) -> DevelopmentResult:
+            synthesis_progress: Any = None, root_stress: bool = True,
+            gear_fallback: bool = True) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -223,6 +224,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         torque to its root-stress capacity where S_F,FE < S_Fmin
         (:func:`contact.optimize.development_root.root_capacity`; default True: one FE
         model build, ``ltca run``'s own, which it then reads from the cache).
+    gear_fallback : bool, optional
+        Default True: where ``gear_process = "auto"`` synthesised a Formate gear that it
+        could have generated (face milled, δ2 < 63°) and the developed design fails (a
+        FAIL criterion of ``ltca run``'s verdict, or the design torque cut below half the
+        rated one), the pair is developed with a generated gear too and the better kept
+        (:func:`contact.optimize.development_process.with_generated_gear`). False: the
+        one development.
 
     Returns
     -------
@@ -298,6 +306,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     """
     from geometry.synthesis.case_synthesis import synthesize
 
+    if gear_fallback:  # the generated gear too where the Formate gear's design fails
+        from contact.optimize.development_process import with_generated_gear
+
+        return with_generated_gear(functools.partial(
+            develop, targets=targets, progress=progress, synthesis_progress=synthesis_progress,
+            root_stress=root_stress, gear_fallback=False), basic, progress)
     t0 = time.process_time()
     targets = targets or targets_from_table(basic.development)
     basic.blank()  # blanks the basic data cannot make: its own error, before any trial

@@ -153,6 +153,10 @@ class DevelopmentResult:
         step analysed as ``ltca run --flank coast``); NaN where nothing was lowered.
     coast_capacity_text : str
         Why, in numbers (empty where not lowered).
+    gear_process_text : str
+        Which gear process was kept and why, where ``gear_process = "auto"`` developed the
+        generated gear too (:func:`contact.optimize.development_process.
+        with_generated_gear`); empty where not.
     """
 
     basic: BasicDesign
@@ -180,6 +184,7 @@ class DevelopmentResult:
     coast_torques: tuple[float, ...] = ()
     coast_capacity: float = math.nan
     coast_capacity_text: str = ""
+    gear_process_text: str = ""
 
     @property
     def tolerant(self) -> bool:
@@ -230,7 +235,8 @@ class DevelopmentResult:
             f"Tolerance (dE = +/-{t.offset_tolerance:g} mm, dP = +/-"
             f"{t.mounting_tolerance:g} mm): {tol}"
             f" ({'tolerant' if self.tolerant else 'not tolerant'}). "
-            + self._coast_text().rstrip())
+            + self._coast_text().rstrip()
+            + (f" {self.gear_process_text}" if self.gear_process_text else ""))
 
     def headline(self) -> str:
         """One line: the chosen design, whether it met its targets and is tolerant, and

@@ -219,7 +219,10 @@ class SynthesisOptions:
         Gear ``"Formate"``, ``"Generate"`` or ``"auto"`` (default: Formate where the gear
         pitch angle δ2 is at least
         :data:`geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT` or the gear is
-        face hobbed, Generate below it); pinion ``"Generate"``.
+        face hobbed, Generate below it where the Formate synthesis has no solution, and,
+        under the development, where the Formate gear's developed design fails:
+        :func:`contact.optimize.development_process.with_generated_gear`); pinion
+        ``"Generate"``.
     cutter_radius : float or None — [mm]
         Nominal gear cutter radius r_c0; default the design's ``rc0``.
     blade_angle_drive, blade_angle_coast : float or None — [rad]

@@ -1,0 +1,203 @@
+"""The gear process of a development: the generated gear where the Formate gear's developed
+design fails (:func:`contact.optimize.development.develop`, issue 71).
+
+``[synthesis] gear_process = "auto"`` (the default) synthesises a Formate gear and tries the
+generated one only where the Formate synthesis has no solution
+(:func:`geometry.synthesis.case_synthesis.gear_processes`); a development keeps the process
+of its first successful trial. A low-ratio pair's Formate gear may synthesise and still
+develop into a design its own check fails: the spiral bevel 20x30 of
+tests/data/generated_gear (δ2 56.3°) developed with its Formate gear to an LTE spread of
+0.58 at the light torque (``ltca run`` FAILs it) and a design torque cut to 64.1 of its
+ISO capacity's 251.4 N·m, and with a generated gear to 171 of 276.7 N·m, no FAIL (docs/synthesis.md,
+"Generated gear"). Here the development is run again with ``gear_process = "Generate"``
+where the first one's outcome fails (:func:`failed_outcome`) and the better of the two kept
+(:func:`better_outcome`); every design whose Formate development does not fail is the
+first development's, unchanged.
+
+Public names
+------------
+TORQUE_CUT_FRACTION   design torque below this share of the rated one: a failed outcome
+failed_outcome        why a developed design fails its own check (empty where it does not)
+better_outcome        the better of two developed designs, and which
+with_generated_gear   a development, then the generated gear's where the first one fails
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from contact.ltca.plausibility import LTE_SPREAD_LIMIT, PLASTIC_SHARE_LIMIT
+from geometry.core.errors import InputError
+
+__all__ = ["TORQUE_CUT_FRACTION", "better_outcome", "failed_outcome", "with_generated_gear"]
+
+log = logging.getLogger(__name__)
+
+#: [1] a developed design whose design torque the development cut below this share of the
+#: rated one (the ISO 10300 capacity or the basic file's) is a failed outcome: the bearing
+#: carries less than half of what the blank is rated for. The 20x30's Formate gear: 64.1 of
+#: 251.4 N·m (0.25); its generated gear: 171 of 276.7 N·m (0.62) (docs/synthesis.md)
+TORQUE_CUT_FRACTION = 0.5
+
+
+def _flank_fails(metrics: Any, torques: tuple[float, ...], flank: str) -> list[str]:
+    """The verdict's FAIL criteria a flank's (light, design) metrics meet: the LTE spread
+    and the plastic share beyond :mod:`contact.ltca.plausibility`'s limits."""
+    if metrics is None:
+        return []
+    out = []
+    for name, limit, what in (("lte_spread", LTE_SPREAD_LIMIT, "LTE spread"),
+                              ("plastic_share", PLASTIC_SHARE_LIMIT, "plastic share")):
+        values = np.asarray(metrics.get(name, (math.nan, math.nan)), float)
+        for k, v in enumerate(values):
+            if math.isfinite(v) and v > limit:
+                at = f" at {torques[k]:.4g} N m" if k < len(torques) else ""
+                out.append(f"{flank} {what} {v:.2f}{at} (limit {limit:g})")
+    return out
+
+
+def failed_outcome(result: Any, rated: float) -> str:
+    """Why a developed design fails its own check, empty where it does not.
+
+    Parameters
+    ----------
+    result : DevelopmentResult
+        Its chosen drive design's ``best.metrics`` and its coast flank's ``coast``
+        (:data:`~contact.optimize.development.METRIC_NAMES` at the light and the design
+        torque), ``torque``, ``coast_design_torques`` and ``torque_lowered`` are read.
+    rated : float — [N·m]
+        The design torque before the development lowered it (the ISO 10300 capacity or
+        the basic file's); NaN where not known (then no torque criterion).
+
+    Returns
+    -------
+    str
+        ``"; "``-joined reasons: a FAIL criterion of ``ltca run``'s verdict met by the
+        drive or the coast flank (LTE spread above
+        :data:`~contact.ltca.plausibility.LTE_SPREAD_LIMIT`, plastic share above
+        :data:`~contact.ltca.plausibility.PLASTIC_SHARE_LIMIT`, at either torque), or a
+        design torque lowered below :data:`TORQUE_CUT_FRACTION` × ``rated``.
+    """
+    return "; ".join(r for r in (_verdict_fails(result), _torque_cut(result, rated)) if r)
+
+
+def _verdict_fails(result: Any) -> str:
+    """The verdict's FAIL criteria the drive and coast flank meet (:func:`failed_outcome`)."""
+    out = _flank_fails(result.best.metrics, tuple(result.torque), "drive")
+    return "; ".join(out + _flank_fails(result.coast, result.coast_design_torques, "coast"))
+
+
+def _torque_cut(result: Any, rated: float) -> str:
+    """The design torque lowered below :data:`TORQUE_CUT_FRACTION` × ``rated``, in words."""
+    cut = float(result.torque[1])
+    if result.torque_lowered and math.isfinite(rated) and cut < TORQUE_CUT_FRACTION * rated:
+        return (f"design torque cut to {cut:.4g} of {rated:.4g} N m (below "
+                f"{TORQUE_CUT_FRACTION:g} of it)")
+    return ""
+
+
+def better_outcome(first: Any, second: Any, rated: float) -> tuple[Any, str]:
+    """The better of two developed designs of one pair, and which.
+
+    Parameters
+    ----------
+    first, second : DevelopmentResult
+        ``first`` is kept where the two rank equal.
+    rated : float — [N·m]
+        As :func:`failed_outcome`.
+
+    Returns
+    -------
+    kept : DevelopmentResult
+    which : str
+        ``"first"`` or ``"second"``: the one kept.
+
+    Notes
+    -----
+    Ranked by, in turn: a FAIL criterion of the verdict met (none first), a design torque
+    cut below :data:`TORQUE_CUT_FRACTION` of ``rated`` (none first), the higher design
+    torque, then the development's own objective of the chosen drive design
+    (:func:`~contact.optimize.development.development_score`, lower first).
+    """
+    def rank(r: Any) -> tuple[bool, bool, float, float]:
+        return (bool(_verdict_fails(r)), bool(_torque_cut(r, rated)), -float(r.torque[1]),
+                float(r.best.objective))
+
+    a, b = rank(first), rank(second)
+    return (second, "second") if b < a else (first, "first")
+
+
+def with_generated_gear(run: Callable[[Any], Any], basic: Any,
+                        say: Callable[[str], None] | None = None) -> Any:
+    """A development of ``basic`` (``run(basic)``) and, where its outcome fails with a
+    Formate gear that ``gear_process = "auto"`` could have generated, the development
+    with ``gear_process = "Generate"``, the better of the two kept.
+
+    Parameters
+    ----------
+    run : callable BasicDesign → DevelopmentResult
+        The development itself (:func:`contact.optimize.development.develop` without
+        this fallback).
+    basic : BasicDesign
+    say : callable, optional
+        Called with a line where the generated gear is developed too, and with the
+        choice.
+
+    Returns
+    -------
+    DevelopmentResult
+        The first development's where its gear is not Formate, where ``gear_process`` is
+        not ``"auto"`` or the pair not one ``"auto"`` generates
+        (:func:`geometry.synthesis.case_synthesis.gear_processes`: face milled, δ2 below
+        :data:`~geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT`), or where
+        its outcome does not fail (:func:`failed_outcome`); else the better of the two
+        (:func:`better_outcome`), its ``gear_process_text`` saying which and why.
+
+    Raises
+    ------
+    InputError
+        As the first development (a generated development that fails is logged and the
+        first result kept).
+    """
+    from contact.load_capacity.iso10300.capacity import with_design_torque
+    from geometry.synthesis.case_synthesis import gear_processes
+
+    say = say or (lambda _line: None)
+    first = run(basic)
+    if (gear_processes(basic) != ("Formate", "Generate")
+            or first.report.gear.settings.process != "Formate"):
+        return first
+    rated = with_design_torque(first.case, basic.options.design_torque)[1]
+    why = failed_outcome(first, rated)
+    if not why:
+        return first
+    say(f"development: the Formate gear's design fails ({why}); developing the pair with "
+        "a generated gear too (gear_process 'auto')")
+    generated = dataclasses.replace(
+        basic, options=dataclasses.replace(basic.options, gear_process="Generate"))
+    try:
+        second = run(generated)
+    except InputError as err:
+        log.info("development: the generated gear has no developed design: %s", err)
+        return dataclasses.replace(first, gear_process_text=(
+            f"Gear process (auto): Formate; its design fails ({why}), the generated gear "
+            f"was developed too and failed ({err})."))
+    kept, which = better_outcome(first, second, rated)
+    other = failed_outcome(second, rated)
+    text = (f"Gear process (auto): {'generated' if which == 'second' else 'Formate'}. The "
+            f"Formate gear's developed design fails ({why}) at {first.torque[1]:.4g} N m; "
+            f"the generated gear's "
+            + (f"fails too ({other})" if other else "does not fail")
+            + f" at {second.torque[1]:.4g} N m; kept the "
+            + ("generated" if which == "second" else "Formate")
+            + " gear (contact.optimize.development_process.better_outcome: no FAIL "
+            "criterion, then no torque cut, then the higher design torque, then the "
+            "development's objective).")
+    say("development: " + text)
+    return dataclasses.replace(kept, gear_process_text=text)
