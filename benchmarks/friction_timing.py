@@ -51,12 +51,13 @@ MODELS = ("mixed_ehl", "thermal_eyring", "kolivand2009")
 E_PRIME = 206000.0 / (1.0 - 0.3**2)
 
 
-def _best(fn, repeats: int) -> float:
+def _best(fn, repeats: int, clock=time.perf_counter) -> float:
+    """The least of ``repeats`` timings of ``fn()`` by ``clock`` (wall by default)."""
     best = np.inf
     for _ in range(repeats):
-        t = time.perf_counter()
+        t = clock()
         fn()
-        best = min(best, time.perf_counter() - t)
+        best = min(best, clock() - t)
     return float(best)
 
 
@@ -93,15 +94,6 @@ def stage_rows(cache: Path, repeats: int) -> list[list]:
     return rows
 
 
-def _best_cpu(fn, repeats: int) -> float:
-    best = np.inf
-    for _ in range(repeats):
-        t = time.process_time()
-        fn()
-        best = min(best, time.process_time() - t)
-    return float(best)
-
-
 def segment_rows(repeats: int, n: int = 20000) -> list[list]:
     """CPU seconds of each μ model alone on ``n`` random gear-like flank segments."""
     from friction.efficiency import _alpha_temperature_coefficient
@@ -129,7 +121,8 @@ def segment_rows(repeats: int, n: int = 20000) -> list[list]:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", FrictionModelRangeWarning)
             friction_coefficient(model, **kw)  # warm-up
-            t = _best_cpu(lambda m=model, kw=kw: friction_coefficient(m, **kw), repeats)
+            t = _best(lambda m=model, kw=kw: friction_coefficient(m, **kw), repeats,
+                      clock=time.process_time)
         rows.append([model, n, f"{t:.3f}"])
     return rows
 
