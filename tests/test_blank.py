@@ -429,6 +429,14 @@ def test_offset_with_method0_is_rejected():
         design_from_annex("sample2", method=0)
 
 
+def test_negative_offset_names_the_convention():
+    # a user's hypoid "with the pinion above centre" typed as a = -32 mm (issue 71, unseen
+    # designs): the range, and why a < 0 is not the mirror image the hand gives
+    with pytest.raises(InputError, match=r"^a: must be in \[0, 85\) \[mm\], got -32: a "
+                       r"negative offset \(the pinion spiral angle smaller.*`hand`"):
+        design_from_annex("sample2", a=-32.0)
+
+
 def test_unknown_field_is_rejected():
     with pytest.raises(InputError, match="unknown design field"):
         design_from_annex("sample2", shaft_angle=90.0)

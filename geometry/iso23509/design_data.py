@@ -232,6 +232,16 @@ class BevelGearDesign:
         set_(self, given, d)
         set_(self, "b2", real("b2", self.b2, unit="mm", low=0.0, high=d / 2,
                               low_open=True, high_open=True))
+        if isinstance(self.a, (int, float)) and not isinstance(self.a, bool) and self.a < 0:
+            # ISO 23509's sign convention: a < 0 makes the pinion spiral angle the smaller
+            # one (a left-hand pinion above centre), a pair the pitch cones do not model
+            raise InputError(
+                f"a: must be in [0, {d / 2:.4g}) [mm], got {self.a:g}: a negative offset (the "
+                "pinion spiral angle smaller than the gear's, ISO 23509) is not modelled; the "
+                "usual hypoid has a >= 0 (a left-hand pinion below centre, `hand` = "
+                "\"left\"; its mirror image, a right-hand pinion above centre, `hand` = "
+                "\"right\")"
+            )
         a = real("a", self.a, unit="mm", low=0.0, high=d / 2, high_open=True)
         if method == 0 and a != 0.0:
             raise InputError(f"a: must be 0 for method 0 (use method 1, 2 or 3 for hypoid gears) "
