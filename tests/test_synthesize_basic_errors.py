@@ -163,3 +163,25 @@ def test_face_width_too_wide_for_the_toe_names_b2(tmp_path):
     assert (f"face width b {blank.face_width:.4g} mm is "
             f"{blank.face_width / blank.outer_cone_distance:.2f} of the outer cone distance "
             f"R_e {blank.outer_cone_distance:.4g} mm") in said
+
+
+def test_capacity_note_shows_the_torque_above_the_capacity(monkeypatch):
+    """A user's 265 N m typed for the capacity 264.96 N m that `ltca synthesize` printed as
+    264.9 (a face-hobbed hypoid 9x41, issue 71's unseen designs) read "the design torque
+    265 N m is above the pair's ISO 10300 long-life capacity 265 N m": the capacity is now
+    shown rounded down to 4 digits, as the default design torque is written, and the
+    torque as given."""
+    import contact.load_capacity.iso10300.capacity as capacity_module
+    from contact.commands.synthesize import _above_capacity_note
+
+    monkeypatch.setattr(capacity_module, "capacity_torque", lambda case: 264.9559005774426)
+    note = _above_capacity_note(object(), 265.0)
+    assert note.startswith("the design torque 265 N m is above the pair's ISO 10300 "
+                           "long-life capacity 264.9 N m ")
+    # a torque above by less than the 4th digit: the torque as typed
+    note = _above_capacity_note(object(), 264.96)
+    assert "the design torque 264.96 N m is above the pair's ISO 10300 long-life capacity " \
+           "264.9 N m " in note
+    # at or below the capacity (its own round-off 1e-6 over it included): no note
+    assert _above_capacity_note(object(), 264.9559) is None
+    assert _above_capacity_note(object(), 264.9559005774426 * (1 + 5e-7)) is None

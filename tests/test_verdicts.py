@@ -214,6 +214,21 @@ def test_the_rating_group_joins_with_its_own_minimum_factors():
     assert "S_H 0.99 of the gear at" in f.reason
 
 
+def test_a_safety_just_below_its_minimum_shows_the_digits_that_say_so():
+    """A design torque typed 0.02 % above the ISO capacity (265 N m for 264.96, a
+    face-hobbed hypoid 9x41 of issue 71's unseen designs) rated S_H 0.9998 and read
+    "pitting safety S_H 1.00 of the pinion ... below S_Hmin 1": the safety is now printed
+    with as many decimals as show it below its minimum (2 where they do)."""
+    rt = xr.Dataset({"S_H": (("torque", "member"), [[0.99983, 0.95]]),
+                     "S_F": (("torque", "member"), [[1.3, 1.31]]),
+                     "S_Hmin": ((), 1.0), "S_Fmin": ((), 1.3)},
+                    coords={"torque": [265.0], "member": ["pinion", "gear"]})
+    v = verdict(_tree(ltca=_ltca([700.0]), rating=rt))
+    assert [f.reason for f in v.findings] == [
+        "ISO 10300 pitting safety S_H 0.9998 of the pinion at 265 N·m below S_Hmin 1",
+        "ISO 10300 pitting safety S_H 0.95 of the gear at 265 N·m below S_Hmin 1"]
+
+
 def _duty(**over) -> xr.Dataset:
     ds = xr.Dataset(
         {"hours": ("bin", [1000.0, 1000.0]), "torque": ("bin", [250.0, 500.0]),

@@ -147,11 +147,23 @@ def _above_capacity_note(case, torque: float) -> str | None:
         return None
     if torque <= capacity * (1.0 + 1e-6):
         return None
-    return (f"the design torque {torque:.4g} N m is above the pair's ISO 10300 long-life "
-            f"capacity {capacity:.4g} N m (the torque at which S_H or S_F reaches its "
-            "minimum): `ltca run` rates it FAIL at long life; a design torque at or below "
+    # the capacity rounded down to 4 digits, as the default design torque is written
+    # (below the torque, which is shown as given): a user's 265 N m typed for the 264.96
+    # N m capacity read "265 N m is above ... capacity 265 N m" (issue 71, unseen designs)
+    return (f"the design torque {torque:g} N m is above the pair's ISO 10300 long-life "
+            f"capacity {_floor_digits(capacity, 4):.4g} N m (the torque at which S_H or S_F "
+            "reaches its minimum): `ltca run` rates it FAIL at long life; a design torque at "
+            "or below "
             "the capacity (the default, without [synthesis] design_torque), or the duty's "
             "load cycles as [rating] load_cycles, rates it for what it is")
+
+
+def _floor_digits(value: float, digits: int) -> float:
+    """``value`` > 0 rounded down to ``digits`` significant digits (a capacity shown so
+    that the number read is one the pair carries, as
+    :func:`contact.load_capacity.iso10300.capacity.with_design_torque` writes it)."""
+    step = 10.0 ** (math.floor(math.log10(value)) - (digits - 1))
+    return math.floor(value / step) * step
 
 
 def run_synthesize(args: argparse.Namespace) -> int:

@@ -461,6 +461,16 @@ def _safeties(fr: xr.Dataset) -> list[Finding]:
     return out
 
 
+def _below(value: float, limit: float, decimals: int) -> str:
+    """``value`` < ``limit`` with ``decimals`` decimals or as many more (up to 6) as show it
+    below: a pitting safety 0.9998 under S_Hmin 1 (a design torque typed 0.02 % above the
+    capacity) read "S_H 1.00 ... below S_Hmin 1" (issue 71, unseen designs)."""
+    d = decimals
+    while d < 6 and round(float(value), d) >= limit:
+        d += 1
+    return f"{value:.{d}f}"
+
+
 def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Finding]:
     """The rating's findings from the result contract of the load-capacity methods
     (:mod:`contact.load_capacity.contract`; ``rt`` its view): per torque and member a
@@ -496,7 +506,8 @@ def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Findi
                 if not (np.isfinite(x) and x < smin[j]):
                     continue
                 reason = (f"{standard} {what} safety{' ' + symbol if symbol else ''} "
-                          f"{x:.2f} of the {m} at {_t(t)} below {least_symbol} {smin[j]:g}")
+                          f"{_below(x, smin[j], 2)} of the {m} at {_t(t)} below "
+                          f"{least_symbol} {smin[j]:g}")
                 long_life = cycles is not None and not np.isfinite(cycles[j % cycles.size])
                 n = float(n_ok[i, j])
                 beyond = what == "pitting" and float(t) in flank_static
@@ -656,7 +667,8 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                 d = float(ds[dmg][k]) if dmg in ds else math.nan
                 findings.append(Finding(
                     "attention", "safety",
-                    f"{m}: {symbol} {float(ds[name][k]):.2f} below {DUTY_MIN_SAFETY:g} at the "
+                    f"{m}: {symbol} {_below(float(ds[name][k]), DUTY_MIN_SAFETY, 2)} below "
+                    f"{DUTY_MIN_SAFETY:g} at the "
                     f"peak-torque bin (life factor 1): beyond the endurance limit there; "
                     f"the Miner damage {d:.3g} over the cycle decides the life"))
     if "plausibility" in ds:
