@@ -179,3 +179,32 @@ def test_ltca_run_says_it_limits_the_coast_torques(tmp_path, capsys):
             "[rating] coast_design_torque 80.45 N m") in text
     tree = xr.open_datatree(out)
     assert list(tree["/ltca"]["torque"].values) == [50.0, 80.45]
+
+
+def test_a_coast_design_torque_at_or_below_the_light_torque_is_scored_at_its_one_torque():
+    """Where the coast flank holds only at or below the light torque, ``ltca run --flank
+    coast`` (:func:`contact.pipeline.flank_torques`) analyses that one torque, and the
+    development's coast check scores it as both its light and its design torque (a spiral
+    bevel 19x23 whose Formate coast flank held only below the light torque ended `ltca
+    synthesize` with ``IndexError: index 1 is out of bounds``, issue 71's unseen designs).
+    The bundled case's coast flank at 30 N·m under a light torque of 45 N·m."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from contact.catalogue import bundled_case_path
+    from contact.optimize.development_coast_flank import _coast_check
+    from contact.optimize.development_targets import DevelopmentTargets, development_score
+    from geometry.case import load_case
+
+    case = load_case(bundled_case_path())
+    check = _coast_check(case, SimpleNamespace(operating={}), {"torques": (45.0, 300.0)},
+                         30.0, root_stress=False)
+    metrics, grid, torques = check.result
+    assert torques == (30.0,) and check.torque == 30.0
+    for name, value in metrics.items():  # the one analysis, as light and as design torque
+        assert len(value) == 2, name
+        np.testing.assert_array_equal(value[0], value[1])
+    objective, shortfalls, _ = development_score(metrics, DevelopmentTargets(), grid[:4],
+                                                 pressure_limit=grid[4])
+    assert np.isfinite(objective) and "edge" in shortfalls

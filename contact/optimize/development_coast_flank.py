@@ -131,7 +131,7 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
         steps = steps.with_root_stress().with_efficiency().with_load_capacity()
     tree = run_analysis(c, torques, flank="coast", options=CHECK_LTCA, deviations=False,
                         steps=steps)
-    ms = design_metrics(tree, c)
+    ms = light_and_design(design_metrics(tree, c))
     lt = tree["/ltca"]
     k = int(np.argmax(lt["torque"].values))
     safety, s_min, member = np.full(len(torques), np.nan), math.nan, ""
@@ -154,6 +154,17 @@ def _coast_check(case: Case, basic: BasicDesign, setup: dict[str, Any], torque: 
                       (ms, grid, tuple(float(t) for t in torques)), plastic_limit,
                       float(pit[k]), s_h_min, pit_member,
                       float(pit[1 - k]) if len(torques) == 2 else math.nan)
+
+
+def light_and_design(metrics: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """The development's metrics (each of shape (torque, ...)) at the (light, design)
+    torque the scores read: as given where the analysis ran at two torques; where it ran at
+    one — the coast design torque at or below the light torque, onto which
+    :func:`contact.pipeline.flank_torques` limits both, as ``ltca run --flank coast`` does —
+    that one analysis stands for both (a spiral bevel 19x23 whose Formate coast flank held
+    only below the light torque: ``IndexError`` out of ``ltca synthesize``, issue 71)."""
+    return {name: (np.repeat(np.asarray(v)[:1], 2, axis=0) if np.ndim(v) and len(v) == 1
+                   else v) for name, v in metrics.items()}
 
 
 def coast_flank_capacity(case: Case, basic: BasicDesign, coast: _CoastOutcome,
