@@ -409,6 +409,27 @@ def test_failed_outcome_names_each_fail_criterion():
     assert failed_outcome(_outcome("Formate", torque=64.0, lowered=True), math.nan) == ""
 
 
+def test_a_coast_flank_cut_below_the_light_torque_fails_the_outcome():
+    """A Formate spiral bevel 19x23 (issue 71's unseen designs) whose coast flank held only
+    2.7 N m (edge share 12 % at 416.7 N m) beside a drive design torque of 275 of 507.9
+    N m was kept without the generated gear being tried: a coast flank whose own design
+    torque is below the light torque (the test load its pattern is judged at) now fails
+    the outcome, and ranks so; coast flanks carrying 0.3-0.5 of the rated torque (the
+    hypoid 10x37 at 75 deg: 110 of 363.2 N m) do not."""
+    import dataclasses
+
+    from contact.optimize.development_process import better_outcome, failed_outcome
+
+    formate = dataclasses.replace(_outcome("Formate", torque=275.0, lowered=True),
+                                  coast_capacity=2.7)
+    assert failed_outcome(formate, 507.9) == ("coast design torque cut to 2.7 N m, below the "
+                                              "light torque 41.25 N m")
+    assert failed_outcome(dataclasses.replace(formate, coast_capacity=110.0), 363.2) == ""
+    assert failed_outcome(_outcome("Formate", torque=275.0, lowered=True), 507.9) == ""
+    generated = _outcome("Generate", torque=260.0, lowered=True, objective=50.0)
+    assert better_outcome(formate, generated, 507.9) == (generated, "second")
+
+
 def test_better_outcome_ranks_verdict_then_cut_then_torque_then_score():
     """The rule of docs/synthesis.md: no FAIL criterion first, then no torque cut below
     half the rated one, then the higher design torque, then the lower objective; the first
