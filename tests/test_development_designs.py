@@ -79,7 +79,7 @@ DONE_WHEN = {
     # 2026-11-26 (LTE 21 / 30 urad; docs/own_gear_set.md, "unseen (3)")
     "hypoid_7x37_rc2p5": _ALL,
     # designs not seen before (3), measured 2026-11-26 (docs/own_gear_set.md, "Issue 71's
-    # criteria on twenty-nine designs"): the face-hobbed spiral bevel 11x33 after the coast
+    # criteria on thirty-four designs"): the face-hobbed spiral bevel 11x33 after the coast
     # redevelopment's pressure bound
     "fh_spiral_bevel_11x33_m0": _ALL,
 }
