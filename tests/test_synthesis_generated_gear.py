@@ -486,6 +486,39 @@ def test_generated_gear_developed_only_where_the_formate_design_fails(monkeypatc
     assert with_generated_gear(run, forced) is failing and runs == ["Formate"]
 
 
+def test_a_formate_development_that_stops_is_followed_by_the_generated_gear(monkeypatch):
+    """A pair 'auto' generates whose Formate development raises (a spiral bevel 19x23 at
+    beta_m 46 deg: the pinion tip plane of the design written, issue 71's unseen designs)
+    is developed with the generated gear, the text saying why; where that fails too, or
+    the process is forced, the Formate development's error is given."""
+    from contact.optimize.development_process import with_generated_gear
+    from geometry.core.errors import InputError
+
+    basic = load_basic(DATA / "generated_gear" / "spiral_bevel_20x30.toml")
+    generated = _outcome("Generate", torque=171.0, lowered=True)
+    stopped = InputError("outside blade: its root line is not generated")
+
+    def run(b):
+        if b.options.gear_process == "Generate":
+            return generated
+        raise stopped
+
+    kept = with_generated_gear(run, basic)
+    assert kept.report.gear.settings.process == "Generate"
+    assert kept.gear_process_text.startswith("Gear process (auto): generated. The Formate "
+                                             "gear's development stopped (outside blade")
+
+    def both(b):
+        raise (InputError("generated too") if b.options.gear_process == "Generate"
+               else stopped)
+
+    with pytest.raises(InputError, match=r"^outside blade"):
+        with_generated_gear(both, basic)
+    forced = replace(basic, options=replace(basic.options, gear_process="Formate"))
+    with pytest.raises(InputError, match=r"^outside blade"):
+        with_generated_gear(run, forced)
+
+
 @pytest.mark.slow
 def test_20x30_at_every_default_is_written_with_a_generated_gear_run_does_not_fail(
         tmp_path, capsys):

@@ -176,14 +176,24 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
     Raises
     ------
     InputError
-        As the first development (a generated development that fails is logged and the
-        first result kept).
+        As the first development where the generated gear's fails too or the pair is not
+        one ``"auto"`` generates (a generated development that fails after a Formate one
+        that did not is logged and the first result kept; where the Formate development
+        raises, the generated gear's is returned, its text saying why).
     """
     from contact.load_capacity.iso10300.capacity import with_design_torque
     from geometry.synthesis.case_synthesis import gear_processes
 
     say = say or (lambda _line: None)
-    first = run(basic)
+    try:
+        first = run(basic)
+    except InputError as err:
+        if gear_processes(basic) != ("Formate", "Generate"):
+            raise
+        # the Formate development stopped (a spiral bevel 19x23 at beta_m 46 deg: the
+        # written design's pinion tip plane, issue 71's unseen designs): the pair "auto"
+        # can generate is developed with the generated gear before the error is given
+        return _generated_after_error(run, basic, err, say)
     if (gear_processes(basic) != ("Formate", "Generate")
             or first.report.gear.settings.process != "Formate"):
         return first
@@ -215,3 +225,23 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
             "development's objective).")
     say("development: " + text)
     return dataclasses.replace(kept, gear_process_text=text)
+
+
+def _generated_after_error(run: Callable[[Any], Any], basic: Any, err: InputError,
+                           say: Callable[[str], None]) -> Any:
+    """The development of ``basic`` with ``gear_process = "Generate"`` where its Formate
+    development raised ``err``, the case's ``gear_process_text`` saying so; ``err`` itself
+    where the generated gear's development fails too."""
+    say(f"development: the Formate gear's development stopped ({err}); developing the pair "
+        "with a generated gear (gear_process 'auto')")
+    generated = dataclasses.replace(
+        basic, options=dataclasses.replace(basic.options, gear_process="Generate"))
+    try:
+        second = run(generated)
+    except InputError as again:
+        log.info("development: the generated gear has no developed design: %s", again)
+        raise err from None
+    text = (f"Gear process (auto): generated. The Formate gear's development stopped "
+            f"({err}); the generated gear's developed at {second.torque[1]:.4g} N m.")
+    say("development: " + text)
+    return dataclasses.replace(second, gear_process_text=text)
