@@ -308,6 +308,35 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
                      f"design torque {float(design):g} N m)")
 
 
+def _datatree(groups: dict[str, xr.Dataset]) -> xr.DataTree:
+    """``xr.DataTree.from_dict(groups)``, built from the deepest groups up: each node is
+    made once and its children attached without copies (from_dict copies each node twice
+    more on the way in: ≈ 5 of its 14 ms in a warm analysis, issue 75). The same tree
+    (``identical``, the groups in the same order); a parent no group names is an empty
+    group, as from_dict makes it; anything but Datasets goes to from_dict."""
+    if not all(isinstance(ds, xr.Dataset) for ds in groups.values()):
+        return xr.DataTree.from_dict(groups)
+    norm = {"/" + path.strip("/"): ds for path, ds in groups.items()}
+    if len(norm) != len(groups):
+        return xr.DataTree.from_dict(groups)  # two names of one group: its refusal
+    for path in list(norm):  # parents no group names: empty groups after the named ones
+        while path != "/":
+            path = path.rpartition("/")[0] or "/"
+            norm.setdefault(path, None)
+    made: dict[str, xr.DataTree] = {}
+    children: dict[str, dict[str, xr.DataTree]] = {}
+    # deepest first; sorted() is stable, so siblings keep the order of ``groups``
+    for path in sorted(norm, key=lambda p: p.count("/") - (p == "/"), reverse=True):
+        node = xr.DataTree(dataset=norm[path])
+        if path in children:
+            node.children = children[path]
+        made[path] = node
+        if path != "/":
+            parent, _, name = path.rpartition("/")
+            children.setdefault(parent or "/", {})[name] = node
+    return made["/"]
+
+
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
 def run_analysis(
     case: Case | str | os.PathLike[str] | None = None,
@@ -518,7 +547,7 @@ def run_analysis(
     root.attrs["analysis_status"] = cert.status
     root.attrs["analysis_status_reason"] = cert.reason
     tree["/"] = root
-    out = xr.DataTree.from_dict(tree)
+    out = _datatree(tree)
     out.attrs["inputs"] = c.to_toml()
     if cert.status != "ok":
         log.warning("%s (/ltca status)", cert.reason)
