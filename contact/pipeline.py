@@ -177,9 +177,11 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
         if mi is not None and "mesh_stiffness_mean" in mi:
             text += f"; mesh stiffness {float(mi['mesh_stiffness_mean'].values[i]):.0f} N/um"
         if "root_stress_max" in lt:
-            rs = lt["root_stress_max"].isel(torque=i)
-            text += (f"; peak root stress pinion {float(rs.sel(member='pinion')):.0f} MPa, "
-                     f"gear {float(rs.sel(member='gear')):.0f} MPa")
+            # the variable and the member labels, not DataArray selections (issue 75)
+            rs = lt.variables["root_stress_max"].transpose("torque", "member").values[i]
+            members = [str(m) for m in lt["member"].values]
+            text += (f"; peak root stress pinion {float(rs[members.index('pinion')]):.0f} "
+                     f"MPa, gear {float(rs[members.index('gear')]):.0f} MPa")
         parts.append(text + ".")
     if fr is not None:
         a = fr.attrs
@@ -527,9 +529,9 @@ def run_analysis(
         progress=progress, fe_options=fe_options))
     tree, times = state.groups, state.times
     ltca_ds = tree["/ltca"]
-    for path, ds in tree.items():
-        if "misalignment" in ds.attrs:  # stored once, at the root
-            tree[path] = ds.assign_attrs(misalignment=MISALIGNMENT_REFERENCE)
+    # the misalignment is stored once, at the root: the groups' ``misalignment`` refers to
+    # it (set on the tree's nodes below, whose attributes are the tree's own copies)
+    refer = [path for path, ds in tree.items() if "misalignment" in ds.attrs]
     root = xr.Dataset(
         attrs={
             "title": f"hypoid-ltca analysis of {c.name}",
@@ -548,6 +550,8 @@ def run_analysis(
     root.attrs["analysis_status_reason"] = cert.reason
     tree["/"] = root
     out = _datatree(tree)
+    for path in refer:
+        out[path].attrs["misalignment"] = MISALIGNMENT_REFERENCE
     out.attrs["inputs"] = c.to_toml()
     if cert.status != "ok":
         log.warning("%s (/ltca status)", cert.reason)
