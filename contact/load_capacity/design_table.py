@@ -68,7 +68,14 @@ def design_blank(design: Mapping[str, Any]):
     from geometry.iso23509.pitch_cone import BevelGearDesign
 
     try:
-        return _blank(BevelGearDesign.from_degrees(**design))
+        bevel = BevelGearDesign.from_degrees(**design)
+        try:
+            hash(bevel)
+        except TypeError:  # a field of a type the memo cannot key: computed afresh
+            from geometry.iso23509.blank import blank_geometry
+
+            return blank_geometry(bevel)
+        return _blank(bevel)
     except InputError as exc:
         raise InputError(f"design.{exc}") from None
     except TypeError as exc:
