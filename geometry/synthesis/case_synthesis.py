@@ -437,7 +437,7 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
             log.info("synthesis: the %s gear has no solution; trying %s", process,
                      processes[k + 1])
             continue
-        if memo is not None and len(processes) > 1:  # (a single candidate needs no entry)
+        if memo is not None:  # (a single candidate too: gear_processes makes a blank)
             memo[key] = process
         for line in held:
             progress(line)
