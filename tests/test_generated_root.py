@@ -387,6 +387,46 @@ def test_highest_between_finds_a_flat_maximum_with_few_marches():
     assert (u, d) == (0.2, 0.2)
 
 
+def test_a_placement_from_a_near_start_is_the_same_tip_plane():
+    """``tip_plane_on_root_cone(start=...)`` (the secant from a near cut's placement, as a
+    development's variants of one flank are placed; issue 75) gives the tip plane of the
+    search without it within the placement's tolerance (1e-9 mm; measured 1e-14-3e-12 mm
+    on the 10x37 Sigma 75's variants), with fewer root lines; a start the blade cannot
+    take (the toprem corner below the edge radius) is ignored. The default pinion's
+    concave cut with its tip plane 0.05 mm too deep, started 0.002 mm off the answer."""
+    from geometry.synthesis import tip_plane as tp
+
+    case = _case(DEFAULT)
+    mem = case.pinion
+    tool = mem.flank("concave")
+    blade, settings = tp.move_tip_plane(tool.blade, tool.machine, 0.05)
+    counted = []
+    line = tp.generated_root_line
+
+    def counting(*args, **kwargs):
+        counted.append(1)
+        return line(*args, **kwargs)
+
+    cold = tp.tip_plane_on_root_cone(blade, settings, mem.blank, mem.hand)
+    assert abs(cold.moved + 0.05) <= 1e-6
+    try:
+        tp.generated_root_line = counting
+        warm = tp.tip_plane_on_root_cone(blade, settings, mem.blank, mem.hand,
+                                         start=(cold.moved + 0.002, cold.u_touch))
+        n_warm = len(counted)
+        counted.clear()
+        again = tp.tip_plane_on_root_cone(blade, settings, mem.blank, mem.hand)
+        n_cold = len(counted)
+    finally:
+        tp.generated_root_line = line
+    assert abs(warm.moved - cold.moved) <= 1e-9 and again.moved == cold.moved
+    assert abs(float(warm.root_line.depth.min())) <= 1e-6
+    assert n_warm < n_cold, (n_warm, n_cold)
+    bad = tp.tip_plane_on_root_cone(blade, settings, mem.blank, mem.hand,
+                                    start=(-blade.toprem_height - 1.0, 0.5))
+    assert bad.moved == cold.moved
+
+
 def test_tip_plane_refusals():
     """A move that takes the toprem corner below the edge radius, a depth that is not
     finite and a Formate cut (face milling and face hobbing) are refused by name."""

@@ -258,8 +258,22 @@ class TipPlacement(NamedTuple):
     root_line: RootLine  # of the placed tip plane at the sample fractions
 
 
+def _started(blade: Blade, settings: MachineSettings, start: tuple[float, float] | None
+             ) -> tuple[Blade, MachineSettings, float]:
+    """The cut moved to ``start``'s move Δ [mm] (:func:`tip_plane_on_root_cone`) and Δ;
+    the cut itself and 0.0 where there is no start or the blade cannot take it."""
+    if start is None or not math.isfinite(start[0]) or start[0] == 0.0:
+        return blade, settings, 0.0
+    try:
+        b, s = move_tip_plane(blade, settings, float(start[0]))
+    except InputError:
+        return blade, settings, 0.0
+    return b, s, float(start[0])
+
+
 def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank,
-                           hand: str, *, tol: float = TOUCH_TOLERANCE) -> TipPlacement:
+                           hand: str, *, tol: float = TOUCH_TOLERANCE,
+                           start: tuple[float, float] | None = None) -> TipPlacement:
     """The tip plane whose generated root line touches the blank's root cone from below.
 
     Parameters
@@ -270,6 +284,12 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     hand : str
     tol : float — [mm] accepted distance of the root line's highest point from the
         root cone (default 1e-9 mm)
+    start : (float, float), optional — a near cut's placement (its move Δ [mm] and the
+        fraction where its root line touched): the secant steps start there instead of
+        at the given tip plane's whole search (a development's variants of one flank
+        differ by micrometres; issue 75). The placement found meets ``tol`` and is
+        confirmed by the whole search as without it: the same tip plane within ``tol``.
+        A start the blade cannot take (:func:`move_tip_plane` refuses it) is ignored.
 
     Returns
     -------
@@ -356,10 +376,11 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
         k = int(np.argmin(line.depth))
         return float(line.u[k]), float(line.depth[k])
 
-    moved, (u_top, top) = 0.0, highest(blade, settings)
-    b, s = blade, settings
+    b, s, moved = _started(blade, settings, start)
+    searched = moved == 0.0  # (u_top, top) from the whole search, not from near()
+    u_top, top = (highest(b, s) if searched
+                  else near(b, s, float(np.clip(start[1], 0.0, 1.0))))
     prev = None
-    searched = True  # (u_top, top) from the whole search, not from near()
     for _ in range(16):
         if abs(top) <= tol:
             if searched:
