@@ -453,7 +453,7 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     its own) changes the pinion, whose drive and coast checks — and ``ltca run`` of the
     case written — would otherwise build its model once per flank (a first ``ltca run``
     after synthesize rebuilt the drive model for 27 s CPU on a face-hobbed 8x39). A
-    member of the re-synthesis whose FE load and stress points lie within 1 % of its
+    member of the re-synthesis whose FE load and stress points lie within 2 % of its
     whole depth of the last built one's keeps that one's coefficients (said through
     ``say``; ``built`` holds the last case built, updated here)."""
     if wanted:

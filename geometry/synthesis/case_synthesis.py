@@ -437,7 +437,7 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
             log.info("synthesis: the %s gear has no solution; trying %s", process,
                      processes[k + 1])
             continue
-        if memo is not None and len(processes) > 1:  # (a single candidate needs no entry)
+        if memo is not None:  # (a single candidate too: gear_processes makes a blank)
             memo[key] = process
         for line in held:
             progress(line)
@@ -723,15 +723,21 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
     root cone from below (:func:`tip_plane_on_root_cone`; the flank is unchanged).
     ``memo`` (the design's entries of :func:`synthesize`'s memo): the placement kept under
     its inputs (the blade and settings), so a flank the development does not vary is
-    placed once."""
+    placed once, and a new placement starts from the last of the same blade side
+    (:func:`tip_plane_on_root_cone`'s ``start``)."""
     t = fs.tools
     key = ("tip plane", repr(t.blade), repr(t.settings))
     placed = None if memo is None else memo.get(key)
     if placed is None:
+        # the secant from the last placement of this flank's blade (a development's
+        # variants: the same tip plane within its tolerance, fewer root lines)
+        last = ("tip plane last", t.blade.side)
         placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
-                                        pair.pinion_hand)
+                                        pair.pinion_hand,
+                                        start=None if memo is None else memo.get(last))
         if memo is not None:
             memo[key] = placed
+            memo[last] = (placed.moved, placed.u_touch)
     return replace(fs, tools=t._replace(blade=placed.blade, settings=placed.settings),
                    tip_moved=placed.moved)
 
