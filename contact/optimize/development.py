@@ -77,6 +77,7 @@ Public names
 DevelopmentTargets   the targets (the ``[development]`` table of a basic file)
 targets_from_table   the targets from that table (file units), validated
 VARIABLES            the developed synthesis inputs and their default bounds
+SIZE_SCALED_VARIABLES, scaled_variables   those whose µm bounds follow the tooth size
 RELIEF_NAMES         those of the relief stage
 HEIGHT_NAME, CROWNING_NAME   the height stage's levers (blade angle, profile crowning)
 COAST_STATUS         what the coast flank's development did, in words
