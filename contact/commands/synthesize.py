@@ -154,6 +154,36 @@ def _above_capacity_note(case, torque: float) -> str | None:
             "load cycles as [rating] load_cycles, rates it for what it is")
 
 
+def _size_scale(basic) -> float:
+    """The basic design's :func:`geometry.synthesis.basic_design.size_scale`; 1 where its
+    blank cannot be made (the synthesis then names why)."""
+    from geometry.core.errors import InputError
+
+    try:
+        return basic.size_scale()
+    except InputError:
+        return 1.0
+
+
+def _size_line(basic, targets) -> str | None:
+    """The line saying the µm-sized defaults were scaled to a small module; None at a
+    scale of 1."""
+    from geometry.synthesis.basic_design import REFERENCE_MODULE
+
+    scale = _size_scale(basic)
+    if scale >= 1.0:
+        return None
+    o = basic.options.flank(basic.options.drive_flank)
+    line = (f"  small module: m_mn {scale * REFERENCE_MODULE:.3g} mm below "
+            f"{REFERENCE_MODULE:g} mm, the um-sized defaults x {scale:.3g} (a value the file "
+            f"gives is kept): drive flank approach {1e3 * o.approach:.3g} um, relief "
+            f"{1e3 * o.tip_relief:.3g}/{1e3 * o.root_relief:.3g} um")
+    if targets is not None and "tip_relief" in targets.variables:
+        lo, hi = targets.variables["tip_relief"]
+        line += f", the development's relief bounds {lo:.3g}-{hi:.3g} um"
+    return line + " (docs/synthesis.md)"
+
+
 def run_synthesize(args: argparse.Namespace) -> int:
     import dataclasses
     import tomllib
@@ -184,11 +214,12 @@ def run_synthesize(args: argparse.Namespace) -> int:
         RatingInputs.from_mapping(basic.rating)
     steps = (StepLines("synthesize", SYNTHESIS_STEPS) if getattr(args, "progress", False)
              else None)
-    development = None
+    development = targets = None
     if getattr(args, "development", True):
         from contact.optimize.development import develop, targets_from_table
 
-        targets = targets_from_table(basic.development)  # refused before the work
+        # refused before the work; the µm amounts follow the design's size (size_scale)
+        targets = targets_from_table(basic.development, size_scale=_size_scale(basic))
         development = develop(basic, targets=targets,
                               progress=_say if getattr(args, "progress", False) else None,
                               synthesis_progress=steps)
@@ -232,6 +263,9 @@ def run_synthesize(args: argparse.Namespace) -> int:
     if ratios is not None:
         print(f"  contact ratios (ISO 10300-1 virtual cylindrical gears): profile eps_va "
               f"{ratios[0]:.2f}, face eps_vb {ratios[1]:.2f}, total {sum(ratios):.2f}")
+    size = _size_line(basic, targets)
+    if size is not None:
+        print(size)
     if development is not None:
         print("  " + development.headline())
     print(f"wrote {path}")

@@ -420,7 +420,7 @@ def _tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
 #: the tolerance step's reliefs (:func:`checked_tolerance`): the chosen design's tip, then
 #: root relief raised by this factor, at least by :data:`TOLERANCE_RELIEF_STEP` µm
 TOLERANCE_RELIEF = 1.5
-#: the tolerance step's least raise of a relief [µm]
+#: the tolerance step's least raise of a relief [µm], × the targets' ``size_scale``
 TOLERANCE_RELIEF_STEP = 5.0
 
 
@@ -457,7 +457,8 @@ def checked_tolerance(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             continue
         lo, hi = targets.variables[name]
         x0 = float(best.values[name])
-        x = float(np.clip(max(TOLERANCE_RELIEF * x0, x0 + TOLERANCE_RELIEF_STEP), lo, hi))
+        x = float(np.clip(max(TOLERANCE_RELIEF * x0,
+                              x0 + TOLERANCE_RELIEF_STEP * targets.size_scale), lo, hi))
         if x <= x0:
             continue
         values = best.values | {name: x}
