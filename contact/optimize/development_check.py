@@ -46,6 +46,7 @@ from contact.optimize.development_result import (
     STATIC_MARGIN,
     TOLERANCE_KEYS,
     DevelopmentEvaluation,
+    floor_torque,
 )
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import (
@@ -610,7 +611,7 @@ def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     accepted = None
     for _ in range(3):
         new = torque * (STATIC_MARGIN * limit / p) ** (1.0 / exponent)
-        new = float(f"{math.floor(new * 10.0) / 10.0:.4g}")  # rounded down to 0.1 N·m
+        new = floor_torque(new)  # rounded down to 0.1 N·m (two digits below 1 N·m)
         if new == torque:
             break
         torques = [targets.light_load * new, new]

@@ -39,6 +39,7 @@ from contact.optimize.development_evaluate import (
 )
 from contact.optimize.development_result import (
     DevelopmentEvaluation,
+    floor_torque,
     metrics_text,
 )
 from contact.optimize.development_stages import search_flank
@@ -107,8 +108,7 @@ def _as_run(case: Case, basic: BasicDesign, setup: dict[str, Any], coast: float)
     more: dict[str, Any] = {}
     if "torque" not in basic.operating:
         more["operating"] = dataclasses.replace(
-            case.operating, torque=tuple(math.floor(10.0 * float(t)) / 10.0
-                                         for t in setup["torques"]))
+            case.operating, torque=tuple(floor_torque(t) for t in setup["torques"]))
     extra = json.loads(json.dumps({**case.extra, "rating": rating}))
     return dataclasses.replace(case, extra=MappingProxyType(extra), **more)
 
