@@ -320,9 +320,18 @@ class Factorisation:
             self._close()
             self._close = None
 
-    def solve(self, rhs: np.ndarray) -> np.ndarray:
-        """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N]; the
-        constrained dofs are zero and their loads ignored (reactions)."""
+    def solve(self, rhs: np.ndarray | sp.spmatrix) -> np.ndarray:
+        """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N], dense or
+        sparse (3N, k) (the unit loads: their free rows made dense at once, in the
+        Fortran order the solver takes, issue 75); the constrained dofs are zero and
+        their loads ignored (reactions)."""
+        if sp.issparse(rhs):
+            b_free = sp.csr_matrix(rhs)[self.free].toarray(order="F").astype(float,
+                                                                             copy=False)
+            out = np.zeros((self.n_dofs, b_free.shape[1]))
+            out[self.free] = self._solve(b_free if b_free.shape[1] > 1 else
+                                         np.ascontiguousarray(b_free))
+            return out
         b = np.asarray(rhs, dtype=float)
         vec = b.ndim == 1
         b2 = b[:, None] if vec else b
