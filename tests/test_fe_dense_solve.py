@@ -287,3 +287,26 @@ def test_csc_spmatrix_equals_the_triplets():
         csc_spmatrix(a.data, swapped, a.indptr, 40)
     with pytest.raises(ValueError, match="compressed columns"):
         csc_spmatrix(a.data, a.indices, a.indptr, 41)
+
+
+def test_free_lower_triangle_equals_scipys_slices():
+    """The matrix CHOLMOD is handed (K's free rows and columns, lower triangle, CSC) is
+    built in one pass (issue 75): entry for entry ``sp.tril(K)[free][:, free].tocsc()``,
+    from the whole K and from its lower triangle alike."""
+    import scipy.sparse as sp
+
+    from contact.compliance.fe.elasticity import _free_lower
+
+    mm = mapped_mesh((3, 2, 2), lambda p: np.vstack([10.0 * p[0], 2.0 * p[1] + p[0] * 0.1,
+                                                     2.0 * p[2]]))
+    full = elastic_model(mm.mesh, "hex20", 206000.0, 0.3).stiffness
+    low = elastic_model(mm.mesh, "hex20", 206000.0, 0.3, lower=True).stiffness
+    fixed = np.random.default_rng(5).choice(full.shape[0], 40, replace=False)
+    free = np.setdiff1d(np.arange(full.shape[0]), fixed)
+    want = sp.tril(full, format="csr")[free][:, free].tocsc()
+    for k in (full, low):
+        got = _free_lower(k, free)
+        assert got.shape == want.shape and got.format == "csc"
+        np.testing.assert_array_equal(got.indptr, want.indptr)
+        np.testing.assert_array_equal(got.indices, want.indices)
+        np.testing.assert_array_equal(got.data, want.data)
