@@ -130,8 +130,9 @@ def csc_spmatrix(data: np.ndarray, indices: np.ndarray, indptr: np.ndarray, n: i
     Raises
     ------
     ValueError
-        The arrays are not canonical CSC of an (n, n) matrix (the caller builds from
-        triplets instead).
+        The arrays are not canonical CSC of an (n, n) matrix, or cvxopt's matrix or the C
+        library's ``malloc`` cannot be reached as expected here (Windows; another cvxopt):
+        the caller builds from triplets instead.
     """
     from cvxopt import spmatrix
 
@@ -147,14 +148,20 @@ def csc_spmatrix(data: np.ndarray, indices: np.ndarray, indptr: np.ndarray, n: i
         if indices.min() < 0 or indices.max() >= n or np.any(step <= 0):
             raise ValueError("csc_spmatrix: rows out of range, unsorted or repeated in a "
                              "column")
+    if sys.platform == "win32":  # cvxopt's allocator there need not be one we can reach
+        raise ValueError("csc_spmatrix: not on Windows")
+    try:
+        libc = ctypes.CDLL(None)
+        malloc = libc.malloc
+    except (OSError, TypeError, AttributeError) as exc:  # pragma: no cover - no C library
+        raise ValueError(f"csc_spmatrix: no C library's malloc here ({exc})") from None
+    malloc.restype, malloc.argtypes = ctypes.c_void_p, [ctypes.c_size_t]
     mat = spmatrix([0.0], [0], [0], (n, n))
     ccs = _ccs_of(mat)
     if ccs is None:  # pragma: no cover - another cvxopt
         raise ValueError("csc_spmatrix: cvxopt's sparse matrix is laid out differently")
-    libc = ctypes.CDLL(None)
-    libc.malloc.restype, libc.malloc.argtypes = ctypes.c_void_p, [ctypes.c_size_t]
-    values = libc.malloc(8 * max(nnz, 1))
-    rows = libc.malloc(8 * max(nnz, 1))
+    values = malloc(8 * max(nnz, 1))
+    rows = malloc(8 * max(nnz, 1))
     if not values or not rows:  # pragma: no cover - out of memory
         raise MemoryError("csc_spmatrix: malloc failed")
 
