@@ -320,9 +320,18 @@ class Factorisation:
             self._close()
             self._close = None
 
-    def solve(self, rhs: np.ndarray) -> np.ndarray:
-        """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N]; the
-        constrained dofs are zero and their loads ignored (reactions)."""
+    def solve(self, rhs: np.ndarray | sp.spmatrix) -> np.ndarray:
+        """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N], dense or
+        sparse (3N, k) (the unit loads: their free rows made dense at once, in the
+        Fortran order the solver takes, issue 75); the constrained dofs are zero and
+        their loads ignored (reactions)."""
+        if sp.issparse(rhs):
+            b_free = sp.csr_matrix(rhs)[self.free].toarray(order="F").astype(float,
+                                                                             copy=False)
+            out = np.zeros((self.n_dofs, b_free.shape[1]))
+            out[self.free] = self._solve(b_free if b_free.shape[1] > 1 else
+                                         np.ascontiguousarray(b_free))
+            return out
         b = np.asarray(rhs, dtype=float)
         vec = b.ndim == 1
         b2 = b[:, None] if vec else b
@@ -548,13 +557,17 @@ class _LeanWorker(_Worker):
                 raise
         low, ordering = box.pop()
         self.busy = True
-        try:
-            self.conn.send(("cholmod", low.data, low.indices, low.indptr, low.shape[0],
-                            ordering))
+        try:  # the arrays as raw bytes, not pickled: no copy of the matrix on either side
+            from contact.compliance.fe.solver_worker import send_array
+
+            self.conn.send(("cholmod-raw", low.shape[0], ordering is not None))
+            for array in (low.data, low.indices, low.indptr) + (
+                    (ordering,) if ordering is not None else ()):
+                send_array(self.conn, "array", array)
         except BaseException:
             self.kill()
             raise
-        del low
+        del low, ordering
 
 
 def lean_worker_available() -> bool:
@@ -765,6 +778,29 @@ def resolve_solver(solver: str = "auto") -> str:
     return solver
 
 
+def _free_lower(stiffness: sp.spmatrix, free: np.ndarray) -> sp.csc_matrix:
+    """The lower triangle of K's free rows and columns, (F, F) CSC (what CHOLMOD reads):
+    ``sp.tril(K)[free][:, free].tocsc()`` entry for entry, in one pass over K's
+    non-zeros (renumbered, filtered, counted per row) instead of a copy for the triangle
+    and one for each slice (~0.6 s less per member of the default case, issue 75)."""
+    k = sp.csr_matrix(stiffness)
+    n = k.shape[0]
+    index = np.int32 if n < 2**31 else np.int64
+    renum = np.full(n, -1, dtype=index)
+    renum[free] = np.arange(free.size, dtype=index)
+    rows = np.repeat(renum, np.diff(k.indptr))  # each entry's free row (−1: fixed)
+    cols = renum[k.indices]
+    keep = (cols >= 0) & (rows >= cols)  # a free column on or below the diagonal
+    del cols
+    counts = np.bincount(rows[keep], minlength=free.size)
+    del rows
+    indptr = np.r_[0, np.cumsum(counts)]
+    low = sp.csr_matrix((k.data[keep], renum[k.indices[keep]], indptr),
+                        shape=(free.size, free.size))
+    low.has_sorted_indices = k.has_sorted_indices  # renumbering keeps the order
+    return low.tocsc()
+
+
 def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "auto", *,
               isolated: bool = False, ordering: np.ndarray | None = None) -> Factorisation:
     """Factorise K with the ``fixed_dofs`` removed (homogeneous Dirichlet conditions).
@@ -807,7 +843,7 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     n = stiffness.shape[0]
     free = np.setdiff1d(np.arange(n), fixed)
     if solver == "cholmod":  # its lower triangle only: half the memory of K_ff
-        a = sp.tril(stiffness, format="csr")[free][:, free].tocsc()
+        a = _free_lower(stiffness, free)
     else:
         a = sp.csr_matrix(stiffness)[free][:, free].tocsc()
     # K itself is no longer needed here: a caller that handed over its only reference
