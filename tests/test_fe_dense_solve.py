@@ -153,31 +153,6 @@ def _assert_ordering_solves_alike(model, fixed, order, seed: int, columns: int) 
     iso.close()
 
 
-def test_nested_dissection_orders_the_free_dofs_and_solves_alike():
-    """METIS's nested dissection (pymetis, the ``fe`` extra; issue 75) is a permutation of
-    the free dofs, and CHOLMOD factorising in that order gives the displacements of its own
-    AMD ordering to round-off (1e-10 relative: another elimination order of the same
-    matrix, condition ~1e6), in process and in the lean worker alike."""
-    pytest.importorskip("pymetis")
-    from contact.compliance.fe.elasticity import nested_dissection
-
-    model, fixed = _cantilever()
-    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
-    order = nested_dissection(model.basis.element_dofs, model.basis.N, free)
-    assert order is not None and np.array_equal(np.sort(order), np.arange(free.size))
-    _assert_ordering_solves_alike(model, fixed, order, seed=14, columns=30)
-
-
-def test_without_pymetis_no_ordering(monkeypatch):
-    """Without pymetis the ordering is None: CHOLMOD orders by AMD, as before."""
-    from contact.compliance.fe.elasticity import nested_dissection
-
-    monkeypatch.setitem(sys.modules, "pymetis", None)
-    model, fixed = _cantilever()
-    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
-    assert nested_dissection(model.basis.element_dofs, model.basis.N, free) is None
-
-
 def _factor_nonzeros(model, fixed, ordering):
     """Non-zeros of CHOLMOD's factor of K_ff in ``ordering`` (None: its AMD)."""
     import scipy.sparse as sp

@@ -317,8 +317,7 @@ def cholmod_kernel(box: list) -> tuple[Callable[[np.ndarray], np.ndarray], int]:
     Notes
     -----
     Supernodal factor; the ordering given (the mesh lattice's nested dissection,
-    :func:`contact.compliance.fe.elasticity.lattice_dissection`, or METIS's,
-    :func:`contact.compliance.fe.elasticity.nested_dissection`) or CHOLMOD's AMD (cvxopt's
+    :func:`contact.compliance.fe.elasticity.lattice_dissection`) or CHOLMOD's AMD (cvxopt's
     CHOLMOD has no METIS of its own). Source: Chen, Davis, Hager, Rajamanickam 2008
     (:func:`dense_solver`).
     """

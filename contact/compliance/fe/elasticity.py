@@ -26,7 +26,6 @@ factorise           factorise the stiffness matrix with its constrained dofs rem
 resolve_solver      the solver "auto" (or a name) stands for here
 lattice_dissection  nested dissection of a structured mesh's node lattice for CHOLMOD (the
                     influence build's ordering)
-nested_dissection   METIS's fill-reducing ordering for CHOLMOD, where pymetis is installed
                     (not used by the build since the lattice's: as good, no dependency)
 stress_operator     sparse map from displacements to stress components at points
 """
@@ -68,7 +67,6 @@ __all__ = [
     "isolation_available",
     "lame",
     "lattice_dissection",
-    "nested_dissection",
     "resolve_solver",
     "stress_operator",
 ]
@@ -596,57 +594,6 @@ def isolation_available() -> bool:
             and not multiprocessing.current_process().daemon)
 
 
-def nested_dissection(element_dofs: np.ndarray, n_nodes: int,
-                      free: np.ndarray) -> np.ndarray | None:
-    """A fill-reducing ordering of the free dofs for CHOLMOD: METIS's nested dissection of
-    the mesh's node graph (pymetis, where installed: the ``fe`` extra), each node's three
-    dofs together.
-
-    Parameters
-    ----------
-    element_dofs : ndarray (nb, E) of int — each element's scalar dofs (nodes)
-    n_nodes : int — scalar dofs N
-    free : ndarray (F,) of int — the unconstrained vector dofs (3 n + c), increasing
-
-    Returns
-    -------
-    ndarray (F,) of int64 or None
-        Entry k: the position in ``free`` of the dof eliminated k-th (``factorise``'s
-        ``ordering``); None where pymetis is not installed (CHOLMOD then orders by AMD,
-        cvxopt's CHOLMOD having no METIS of its own).
-
-    Notes
-    -----
-    G. Karypis, V. Kumar 1998, "A fast and high quality multilevel scheme for partitioning
-    irregular graphs", *SIAM J. Sci. Comput.* 20(1) 359–392 (METIS); A. George 1973,
-    "Nested dissection of a regular finite element mesh", *SIAM J. Numer. Anal.* 10(2)
-    345–363. On the default pinion model (issue 75): the factorisation 4.2 → 2.4 s, the
-    solves −15 %, the factor ~100 MB smaller, for 0.6 s of ordering (docs/performance.md).
-    The influence build orders by :func:`lattice_dissection` instead (the same fill or
-    less on the default models, no dependency, 0.2 s); this one is kept for meshes
-    without a lattice.
-    """
-    try:
-        import pymetis
-    except ImportError:
-        return None
-    nb = element_dofs.shape[0]
-    nodes = element_dofs.T
-    graph = sp.csr_matrix((np.ones(nodes.size * nb, dtype=np.int8),
-                           (np.repeat(nodes, nb, axis=1).ravel(),
-                            np.tile(nodes, (1, nb)).ravel())), shape=(n_nodes, n_nodes))
-    graph.setdiag(0)
-    graph.eliminate_zeros()
-    graph.sort_indices()
-    if hasattr(pymetis, "CSRAdjacency"):  # pymetis 2025.2 on
-        order, _ = pymetis.nested_dissection(pymetis.CSRAdjacency(graph.indptr,
-                                                                  graph.indices))
-    else:
-        order, _ = pymetis.nested_dissection(xadj=graph.indptr, adjncy=graph.indices)
-    del graph
-    return _free_ordering(order, n_nodes, free)
-
-
 #: [1] nodes of a part of the lattice ordered without a further cut (:func:`lattice_dissection`)
 LATTICE_LEAF = 32
 #: [1] smallest share of a part's nodes on either side of a cut (:func:`lattice_dissection`)
@@ -820,7 +767,7 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
         other solvers' a fork of this process. The matrix, the right-hand sides and the
         solutions go through a pipe (~40 MB per block of 64, tens of ms).
     ordering : ndarray (F,) of int, optional — CHOLMOD's fill-reducing permutation of the
-        free dofs (:func:`nested_dissection`; entry k: the free dof eliminated k-th);
+        free dofs (:func:`lattice_dissection`; entry k: the free dof eliminated k-th);
         None: CHOLMOD's own (AMD). Ignored by the other solvers. Call
         :meth:`Factorisation.close` when done (the worker also ends with this process).
 
