@@ -1,6 +1,6 @@
 """The face contact ratio of a basic design and the face width / spiral angle that raise
 it to 1.25 (contact.load_capacity.iso10300.face_contact; issue 71, the low-overlap designs
-whose LTE no bearing lever reaches), and where the commands say it.
+whose LTE the bearing levers lower only in part), and where the commands say it.
 
 Fast: a few ISO 23509 blanks per design (≈ 0.3 s)."""
 
