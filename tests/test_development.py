@@ -1446,3 +1446,32 @@ def test_the_long_bearing_brings_a_low_overlap_hypoids_lte_under_60_urad():
     length = got[1]["pattern_heel_u"][0] - got[1]["pattern_toe_u"][0]
     assert abs(length - targets.pattern_length) <= targets.pattern_length_tolerance + 1e-9
     assert float(np.max(got[1]["plastic_share"])) == 0.0
+
+
+def test_a_long_bearing_that_gives_up_a_met_target_is_not_kept(monkeypatch):
+    """The long bearing buys the LTE with the pattern's length alone: after the spiral
+    bevel 17x29's coast flank (LTE 73 / 83 → 50 / 62 µrad, a better objective, but its
+    light-load pattern 0.03–0.98 of the face and 2.7 % of the torque on edges, where it
+    met the clearances and the edge share), the design stays as checked, and the line
+    says which targets it would give up."""
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        if case["relief_start"] == 0.5:
+            return (_metrics(pattern_toe_u=[0.03, 0.0], pattern_heel_u=[0.98, 1.0],
+                             edge_load_share=[0.0, 0.027], lte_peak_to_peak=[50.0, 62.0]),
+                    (0.0, 1.0, 0.0, 1.0, 2400.0))
+        return (_metrics(pattern_toe_u=[0.12, 0.1], pattern_heel_u=[0.85, 0.9],
+                         edge_load_share=[0.0, 0.019], lte_peak_to_peak=[73.0, 83.0]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [60.4, 287.1], "centre_v": 0.6}
+    values = {"ellipse_length": 0.55, "root_relief": 60.0, "relief_start": 0.2}
+    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    lines = []
+    long_values = dcheck.long_bearing(values, targets)
+    assert _checked(long_values, fake(long_values, [])[0], targets, 0.6).objective \
+        < start.objective  # it would win on the objective alone
+    assert dcheck.checked_long(start, targets, setup, None, lines.append, lambda v: dict(v),
+                               flank="coast") is start
+    assert "not kept: the long bearing misses edge, heel, toe" in lines[-1]
