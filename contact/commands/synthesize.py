@@ -126,6 +126,38 @@ def _contact_ratios(case) -> tuple[float, float] | None:
     return float(ds["eps_va"]), float(ds["eps_vb"])
 
 
+def low_overlap_lte(development) -> str:
+    """What the development's bearing did for the LTE of a design whose face contact ratio
+    is below :data:`FACE_CONTACT_RATIO_NOTE`, in numbers (``ltca synthesize``'s note): the
+    LTE p-p of the written drive flank and, where checked, coast flank at their light and
+    design torques (:data:`contact.optimize.development.CHECK_LTCA`, ``ltca run``'s
+    sampling) against the development's target ``max_lte``.
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+
+    Returns
+    -------
+    str
+        E.g. "the developed bearing's LTE p-p: drive 25/52 urad at 27/180 N m, coast 30/48
+        urad at 27/121 N m (light/design), the development's target 40 urad missed".
+    """
+    lte = development.best.metrics["lte_peak_to_peak"]
+    light, design = development.torque
+    parts = [f"drive {lte[0]:.0f}/{lte[1]:.0f} urad at {light:.4g}/{design:.4g} N m"]
+    worst = float(max(lte))
+    if development.coast is not None:
+        c = development.coast["lte_peak_to_peak"]
+        cl, cd = development.coast_design_torques
+        parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at {cl:.4g}/{cd:.4g} N m")
+        worst = max(worst, float(max(c)))
+    target = development.targets.max_lte
+    return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
+            f"development's target {target:g} urad "
+            + ("met" if worst <= target else "missed"))
+
+
 def _above_capacity_note(case, torque: float) -> str | None:
     """A note where the design torque the basic file gives (``[synthesis] design_torque``
     or ``[rating] design_torque``) is above the written pair's ISO 10300 long-life capacity
@@ -279,7 +311,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
                           f"face contact ratio eps_vb {ratios[1]:.2f} is below "
                           f"{FACE_CONTACT_RATIO_NOTE:g}, the least bevel-gear design practice "
                           "asks for (AGMA 2005-D03); a wider face (b2) or a larger spiral "
-                          "angle (beta_m) raises it"))
+                          "angle (beta_m) raises it")
+              + (f"; {low_overlap_lte(development)}" if development is not None else ""))
     if basic.optimize:
         print(f"note: {shown} carries an [optimize] table: the synthesis alone is written; "
               f"`ltca optimize {shown}` also optimises the settings it names (the bundled "
