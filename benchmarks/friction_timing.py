@@ -37,6 +37,8 @@ import numpy as np
 from tabulate import tabulate
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+# this tree, not an installed copy (a non-editable `pip install .` leaves one in site-packages)
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from friction_anchors import CASES, _ltca
 

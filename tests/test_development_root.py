@@ -148,3 +148,32 @@ def test_a_failed_analysis_is_said_not_raised(monkeypatch):
     assert tree is None and text == "" and setup["torques"] == [15.0, 100.0]
     assert s == pytest.approx(FP / (550.0 * K_A * 1.016), rel=1e-12)
     assert "not computed (mesh mapping" in lines[-1]
+
+
+def test_floor_torque_rounds_down_and_never_to_zero():
+    """The development's torques are rounded down for the case it writes: to 0.1 N·m from
+    1 N·m up, to 4 significant digits from 1000 N·m up (the torques of every design of m_mn >= 3 mm unchanged), to two significant
+    digits below, so that a small gear's light torque (a module-1.6 spiral bevel at 2 N·m
+    carries 0.3 N·m at 15 %) is never written, nor analysed, as 0 N·m."""
+    import math
+
+    from contact.optimize.development_result import floor_torque
+
+    # the 0.1 N·m rule as before from 1 N·m up (exact decimal outputs)
+    assert floor_torque(2000.0) == 2000.0
+    assert floor_torque(357.06) == 357.0
+    assert floor_torque(1.75) == 1.7
+    # four significant digits from 1000 N·m up, rounded down (``:.4g`` rounded up before)
+    assert floor_torque(5769.557) == 5769.0
+    # two significant digits below 1 N·m, rounded down, never 0
+    for t, expect in ((0.999, 0.99), (0.0345, 0.034), (0.03, 0.03), (1e-4, 1e-4)):
+        assert math.isclose(floor_torque(t), expect, rel_tol=1e-12)
+    rng = np.random.default_rng(3)
+    for t in 10.0 ** rng.uniform(-5, 4, 500):
+        out = floor_torque(t)
+        assert 0 < out <= t
+        # at most one step of the last kept digit below (0.1 N·m or 1 % relative)
+        assert t - out <= max(0.1, 0.1 * t) + 1e-12
+    for bad in (0.0, -1.0, math.nan, math.inf):
+        with pytest.raises(ValueError, match="torque"):
+            floor_torque(bad)

@@ -1,6 +1,6 @@
 """The face contact ratio of a basic design and the face width / spiral angle that raise
 it to 1.25 (contact.load_capacity.iso10300.face_contact; issue 71, the low-overlap designs
-whose LTE no bearing lever reaches), and where the commands say it.
+whose LTE the bearing levers lower only in part), and where the commands say it.
 
 Fast: a few ISO 23509 blanks per design (≈ 0.3 s)."""
 
@@ -156,3 +156,29 @@ def test_the_duty_cycle_line_names_the_member_of_an_unlabelled_member_dimension(
     assert "gear's flank damage" in text and "0's" not in text and "1's" not in text, text
     # the share printed is the second bin's 70 % of the point's damage
     assert "bin 1 (400 N m) does 70 %" in text, text
+
+
+def test_synthesizes_note_gives_the_developed_lte_in_numbers():
+    """``ltca synthesize``'s low-overlap note ends with the developed bearing's LTE p-p of
+    both flanks at their light and design torques against the development's target, and
+    says whether it was met (a stand-in result with the hypoid 8x41 b2 22's numbers,
+    docs/own_gear_set.md "A face contact ratio below 1.25")."""
+    import types
+
+    import numpy as np
+
+    from contact.commands.synthesize import low_overlap_lte
+    from contact.optimize.development import DevelopmentTargets
+
+    dev = types.SimpleNamespace(
+        best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array([28.1, 49.6])}),
+        torque=(28.8, 192.0), coast={"lte_peak_to_peak": np.array([67.1, 61.7])},
+        coast_design_torques=(28.8, 119.0), targets=DevelopmentTargets())
+    text = low_overlap_lte(dev)
+    assert text == ("the developed bearing's LTE p-p: drive 28/50 urad at 28.8/192 N m, "
+                    "coast 67/62 urad at 28.8/119 N m (light/design), the development's "
+                    "target 40 urad missed")
+    dev.coast = None
+    dev.best.metrics["lte_peak_to_peak"] = np.array([30.0, 38.0])
+    assert low_overlap_lte(dev).endswith("drive 30/38 urad at 28.8/192 N m (light/design), "
+                                         "the development's target 40 urad met")

@@ -153,31 +153,6 @@ def _assert_ordering_solves_alike(model, fixed, order, seed: int, columns: int) 
     iso.close()
 
 
-def test_nested_dissection_orders_the_free_dofs_and_solves_alike():
-    """METIS's nested dissection (pymetis, the ``fe`` extra; issue 75) is a permutation of
-    the free dofs, and CHOLMOD factorising in that order gives the displacements of its own
-    AMD ordering to round-off (1e-10 relative: another elimination order of the same
-    matrix, condition ~1e6), in process and in the lean worker alike."""
-    pytest.importorskip("pymetis")
-    from contact.compliance.fe.elasticity import nested_dissection
-
-    model, fixed = _cantilever()
-    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
-    order = nested_dissection(model.basis.element_dofs, model.basis.N, free)
-    assert order is not None and np.array_equal(np.sort(order), np.arange(free.size))
-    _assert_ordering_solves_alike(model, fixed, order, seed=14, columns=30)
-
-
-def test_without_pymetis_no_ordering(monkeypatch):
-    """Without pymetis the ordering is None: CHOLMOD orders by AMD, as before."""
-    from contact.compliance.fe.elasticity import nested_dissection
-
-    monkeypatch.setitem(sys.modules, "pymetis", None)
-    model, fixed = _cantilever()
-    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
-    assert nested_dissection(model.basis.element_dofs, model.basis.N, free) is None
-
-
 def _factor_nonzeros(model, fixed, ordering):
     """Non-zeros of CHOLMOD's factor of K_ff in ``ordering`` (None: its AMD)."""
     import scipy.sparse as sp
@@ -254,3 +229,59 @@ def test_keep_heap_pages_from_the_package_and_from_the_lean_worker():
     out = subprocess.run([sys.executable, "-c", child], capture_output=True, text=True,
                          cwd=Path(__file__).resolve().parents[1], check=True).stdout.split()
     assert out[0] == out[1] == str(out[2].startswith("linux"))
+
+
+def test_csc_spmatrix_equals_the_triplets():
+    """``csc_spmatrix`` (the compressed columns copied into cvxopt's matrix as they are,
+    issue 75) gives the matrix cvxopt builds from the same entries as triplets, entry for
+    entry (values, rows, columns exactly), empty columns included; arrays that are not
+    canonical CSC are refused (the worker then builds from triplets)."""
+    import scipy.sparse as sp
+    from cvxopt import spmatrix
+
+    from contact.compliance.fe.cholmod_dense import csc_spmatrix
+
+    a = sp.random(40, 40, density=0.1, random_state=np.random.default_rng(3), format="csc")
+    a = sp.tril(a + sp.eye(40), format="csc")
+    keep = np.ones(40)
+    keep[7] = 0.0  # an empty column
+    a = (a @ sp.diags(keep)).tocsc()
+    a.eliminate_zeros()
+    a.sort_indices()
+    cols = np.repeat(np.arange(40, dtype=np.int64), np.diff(a.indptr))
+    ref = spmatrix(a.data, a.indices.astype(np.int64), cols, size=(40, 40))
+    got = csc_spmatrix(a.data, a.indices.astype(np.int32), a.indptr, 40)
+    assert got.size == ref.size == (40, 40)
+    for x, y in ((got.V, ref.V), (got.I, ref.I), (got.J, ref.J)):
+        assert np.array_equal(np.asarray(x), np.asarray(y))
+    del got  # its arrays freed by cvxopt (malloc'd as its own)
+    swapped = a.indices.copy()
+    start = a.indptr[0]
+    swapped[start], swapped[start + 1] = swapped[start + 1], swapped[start]
+    with pytest.raises(ValueError, match="unsorted"):
+        csc_spmatrix(a.data, swapped, a.indptr, 40)
+    with pytest.raises(ValueError, match="compressed columns"):
+        csc_spmatrix(a.data, a.indices, a.indptr, 41)
+
+
+def test_free_lower_triangle_equals_scipys_slices():
+    """The matrix CHOLMOD is handed (K's free rows and columns, lower triangle, CSC) is
+    built in one pass (issue 75): entry for entry ``sp.tril(K)[free][:, free].tocsc()``,
+    from the whole K and from its lower triangle alike."""
+    import scipy.sparse as sp
+
+    from contact.compliance.fe.elasticity import _free_lower
+
+    mm = mapped_mesh((3, 2, 2), lambda p: np.vstack([10.0 * p[0], 2.0 * p[1] + p[0] * 0.1,
+                                                     2.0 * p[2]]))
+    full = elastic_model(mm.mesh, "hex20", 206000.0, 0.3).stiffness
+    low = elastic_model(mm.mesh, "hex20", 206000.0, 0.3, lower=True).stiffness
+    fixed = np.random.default_rng(5).choice(full.shape[0], 40, replace=False)
+    free = np.setdiff1d(np.arange(full.shape[0]), fixed)
+    want = sp.tril(full, format="csr")[free][:, free].tocsc()
+    for k in (full, low):
+        got = _free_lower(k, free)
+        assert got.shape == want.shape and got.format == "csc"
+        np.testing.assert_array_equal(got.indptr, want.indptr)
+        np.testing.assert_array_equal(got.indices, want.indices)
+        np.testing.assert_array_equal(got.data, want.data)

@@ -795,3 +795,39 @@ def _grid_tip_row(model) -> np.ndarray:
     c = secs.corners
     zr = (1 - u)[:, None] * c[0, 1] + u[:, None] * c[1, 1]
     return np.column_stack([zr[:, 1] * np.cos(phi), zr[:, 1] * np.sin(phi), zr[:, 0]])
+
+
+@pytest.mark.parametrize("order", [3, 6])
+def test_facet_points_equal_scikit_fems_facet_basis(order):
+    """``facet_points`` calls the parameter mesh's mapping as scikit-fem's ``FacetBasis``
+    does, without building one (issue 75): its points, elements, normals and areas are
+    those computed from a ``FacetBasis`` of the same facets to the bit, on a distorted
+    mesh and on facets of three different orientations."""
+    mm = mapped_mesh((4, 3, 2), lambda p: np.vstack([
+        10.0 * p[0] + 0.4 * p[1] ** 2, 2.0 * p[1] + 0.2 * p[0] * p[2], 2.0 * p[2] + 0.3 * p[0]]))
+    el = ELEMENTS["hex20"][0]()
+    facets = np.r_[mm.facets_where(lambda p: p[0] > 4 - 1e-9),
+                   mm.facets_where(lambda p: p[1] < 1e-9),
+                   mm.facets_where(lambda p: p[2] > 2 - 1e-9)]
+    got = facet_points(mm, el, facets, order)
+    fp = skfem.FacetBasis(mm.param, skfem.ElementHex1(), facets=facets, intorder=order)
+    pmap = mm.param.mapping()
+    xp = pmap.G(fp.X, find=fp.find)
+    np.testing.assert_array_equal(got.tind, fp.tind)
+    np.testing.assert_array_equal(got.param, xp)
+    ref = pmap.invF(xp, tind=fp.tind)
+    jac = pmap.DF(ref, tind=fp.tind)
+    phys = got.x  # the physical points: the mesh's mapping at the same reference points
+    np.testing.assert_array_equal(phys, mm.mesh.mapping().F(ref, tind=fp.tind))
+    # the normal and area from FacetBasis's parameter normal and weights (Nanson)
+    from contact.compliance.fe.mapped_mesh import basis_fields
+
+    fields = basis_fields(mm.mesh, el, ref, fp.tind)
+    phi = np.einsum("ikfq,kjfq->ijfq", fields.jac, np.moveaxis(np.linalg.inv(np.moveaxis(
+        jac, (0, 1), (-2, -1))), (-2, -1), (0, 1)))
+    inv_t = np.moveaxis(np.linalg.inv(np.moveaxis(phi, (0, 1), (-2, -1))), (-2, -1), (1, 0))
+    det = np.linalg.det(np.moveaxis(phi, (0, 1), (-2, -1)))
+    a = np.einsum("ijfq,jfq->ifq", inv_t, np.asarray(fp.normals))
+    norm = np.linalg.norm(a, axis=0)
+    np.testing.assert_array_equal(got.normal, a / norm)
+    np.testing.assert_array_equal(got.dx, np.abs(det) * norm * fp.dx)

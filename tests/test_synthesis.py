@@ -382,6 +382,50 @@ def test_modified_roll_warm_start_finds_the_continuation_roots(monkeypatch):
     assert n_warm < sum(rolls)
 
 
+def test_the_modified_roll_is_tuned_nearer_m_where_the_contact_leaves_the_flank(monkeypatch):
+    """A hypoid 8x41 with a narrow face (tests/data/limits/hypoid_8x41_b22.toml, ε_vα
+    0.94): at the default prescriptions its concave (drive) flank's contact climbs to
+    the pinion's tip before +pitch/4, where the roll solve stalls (residual 0.09 mm: the
+    synthesis used to stop there). Step 6 then puts the TE on its parabola at ±pitch/6
+    (modified_roll.ROLL_FRACTIONS) and the source says so; the convex flank, followed
+    to ±pitch/4, is tuned there as before. Independent of the tune's own evaluations:
+    the contact of the tuned pair followed from M in 12 steps instead of 4 gives the TE
+    at ±pitch/6 on the prescribed parabola a21 h²/2 within the tune's tolerance (0.5 %
+    of the level), and the same follow to ±pitch/4 fails."""
+    from geometry.synthesis import case_synthesis as cs
+    from geometry.synthesis import modified_roll as mr
+
+    calls, tuned_tools = [], []
+
+    def spy(*a, **k):
+        calls.append((a, k))
+        tuned_tools.append(mr.tune_roll(*a, **k))
+        return tuned_tools[-1]
+
+    monkeypatch.setattr(cs, "tune_roll", spy)
+    path = Path(__file__).parent / "data" / "limits" / "hypoid_8x41_b22.toml"
+    case, report = synthesize(load_basic(path))
+    concave, convex = report.flanks["concave"], report.flanks["convex"]
+    assert concave.roll_fraction == pytest.approx(1.0 / 6.0) and convex.roll_fraction == 0.25
+    assert "modified roll at +/-pitch/6" in case.source
+    assert case.source.count("modified roll at +/-pitch/") == 1
+    # the concave flank's tune: the first call at pitch/4 failed, the second at pitch/6
+    (_, kw), (args6, kw6) = calls[0], calls[1]
+    assert kw.get("fraction") == 0.25 and kw6["fraction"] == pytest.approx(1.0 / 6.0)
+    _, pair, start, rate = args6
+    pitch, a21 = kw6["pitch"], kw6["a21"]
+    assert len(tuned_tools) == 2  # the pitch/4 call raised; pitch/6 (concave), convex
+    tuned = ToothPair(pair.pinion._replace(machine=tuned_tools[0].settings), pair.gear,
+                      pair.transforms)
+    rest = {k: v for k, v in kw6.items() if k not in ("pitch", "a21", "fraction")}
+    h = pitch / 6.0
+    te, _ = mr._te_at(tuned, start, rate, rolls=(h, -h), steps=12, **rest)
+    level = 0.5 * a21 * h * h
+    assert te[h] == pytest.approx(level, rel=5e-3) and te[-h] == pytest.approx(level, rel=5e-3)
+    with pytest.raises(InputError, match="could not be followed"):
+        mr._te_at(tuned, start, rate, rolls=(0.25 * pitch, -0.25 * pitch), steps=12, **rest)
+
+
 def test_shift_roll_origin_turns_the_flank():
     """Identity of the chain: the family generated with the roll origin shifted by q0 is the
     original family at q + q0 turned by φ(q0) about the work axis (1e-9 mm), with modified

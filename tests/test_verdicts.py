@@ -439,3 +439,52 @@ def test_a_failed_fe_model_is_a_finding_not_only_a_console_line():
                                                              np.ones((2, 2)))))
     ok.attrs["root_stress_not_run"] = said
     assert not [f for f in verdict(ok).findings if f.check == "root_stress"]
+
+
+def test_lte_above_its_limit_up_to_the_design_torque_wants_attention():
+    """The ``lte`` check (issue 71: LTE p-p ≤ 60 µrad at every torque): attention above
+    LTE_LIMIT, none at it, none above the rating's design torque (an overload), and a
+    limit of the caller's own; the LTE spread alone passed a 372 µrad p-p (the 11x27)."""
+    from contact.study.verdicts import LTE_LIMIT
+
+    assert LTE_LIMIT == 60.0
+
+    def run(pp, rating=None, **kw) -> Verdict:
+        ds = _ltca([700.0, 700.0], lte_peak_to_peak=("torque", np.asarray(pp, float)))
+        return verdict(_tree(ltca=ds, **({"rating": rating} if rating is not None else {})),
+                       **kw)
+
+    at = run([LTE_LIMIT, LTE_LIMIT])
+    assert at.severity == "pass" and "lte" in at.checks
+    above = run([LTE_LIMIT, LTE_LIMIT + 1e-9])
+    assert [f.check for f in above.findings] == ["lte"]
+    assert above.severity == "attention"
+    assert above.findings[0].reason.startswith("LTE peak-to-peak 60 µrad at 500 N·m above "
+                                               "60 µrad")
+    assert "at every torque" in above.findings[0].reason  # no design torque in the tree
+    both = run([372.0, 80.0])
+    assert [f.reason.split(" above")[0] for f in both.findings] == [
+        "LTE peak-to-peak 372 µrad at 50 N·m", "LTE peak-to-peak 80 µrad at 500 N·m"]
+    # above the design torque the torque is an overload: not judged
+    rating = xr.Dataset({"design_torque": ((), 250.0)})
+    up_to = run([372.0, 80.0], rating=rating)
+    assert [f.check for f in up_to.findings] == ["lte"]
+    assert "at 50 N·m" in up_to.findings[0].reason
+    assert "up to the design torque 250 N·m" in up_to.findings[0].reason
+    assert run([372.0, 80.0], lte_limit=400.0).severity == "pass"
+    # NaN (a failed torque) is the certification check's, not this one's
+    assert run([np.nan, 10.0]).severity == "pass"
+    for bad in (0.0, -1.0, np.nan):
+        with pytest.raises(InputError, match="lte_limit"):
+            run([10.0, 10.0], lte_limit=bad)
+
+
+def test_the_default_case_meets_the_lte_limit(default_tree):
+    """The bundled default case runs at 15-23 µrad (golden file, 50/250/500 N·m): the
+    ``lte`` check is made and finds nothing."""
+    from contact.study.verdicts import LTE_LIMIT
+
+    v = verdict(default_tree)
+    lte = default_tree["ltca"]["lte_peak_to_peak"].values
+    assert np.all(lte < LTE_LIMIT)
+    assert "lte" in v.checks and not [f for f in v.findings if f.check == "lte"]

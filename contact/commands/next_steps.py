@@ -153,9 +153,9 @@ def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[
 def overlap_lines(case) -> list[str]:
     """The next-step line of an LTE-spread FAIL whose cause is the design's own low face
     contact ratio: ε_vβ below 1.25 and the face width and spiral angle that reach it
-    (:func:`contact.load_capacity.iso10300.face_contact.overlap_text`); no bearing change
-    answers it (docs/own_gear_set.md, "A face contact ratio below 1.25"). Empty where the
-    case has no ``[design]`` table or its ε_vβ meets 1.25.
+    (:func:`contact.load_capacity.iso10300.face_contact.overlap_text`); a bearing change
+    offsets it only in part (docs/own_gear_set.md, "A face contact ratio below 1.25").
+    Empty where the case has no ``[design]`` table or its ε_vβ meets 1.25.
 
     Parameters
     ----------

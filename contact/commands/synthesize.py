@@ -126,6 +126,38 @@ def _contact_ratios(case) -> tuple[float, float] | None:
     return float(ds["eps_va"]), float(ds["eps_vb"])
 
 
+def low_overlap_lte(development) -> str:
+    """What the development's bearing did for the LTE of a design whose face contact ratio
+    is below :data:`FACE_CONTACT_RATIO_NOTE`, in numbers (``ltca synthesize``'s note): the
+    LTE p-p of the written drive flank and, where checked, coast flank at their light and
+    design torques (:data:`contact.optimize.development.CHECK_LTCA`, ``ltca run``'s
+    sampling) against the development's target ``max_lte``.
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+
+    Returns
+    -------
+    str
+        E.g. "the developed bearing's LTE p-p: drive 25/52 urad at 27/180 N m, coast 30/48
+        urad at 27/121 N m (light/design), the development's target 40 urad missed".
+    """
+    lte = development.best.metrics["lte_peak_to_peak"]
+    light, design = development.torque
+    parts = [f"drive {lte[0]:.0f}/{lte[1]:.0f} urad at {light:.4g}/{design:.4g} N m"]
+    worst = float(max(lte))
+    if development.coast is not None:
+        c = development.coast["lte_peak_to_peak"]
+        cl, cd = development.coast_design_torques
+        parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at {cl:.4g}/{cd:.4g} N m")
+        worst = max(worst, float(max(c)))
+    target = development.targets.max_lte
+    return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
+            f"development's target {target:g} urad "
+            + ("met" if worst <= target else "missed"))
+
+
 def _above_capacity_note(case, torque: float) -> str | None:
     """A note where the design torque the basic file gives (``[synthesis] design_torque``
     or ``[rating] design_torque``) is above the written pair's ISO 10300 long-life capacity
@@ -166,6 +198,36 @@ def _floor_digits(value: float, digits: int) -> float:
     return math.floor(value / step) * step
 
 
+def _size_scale(basic) -> float:
+    """The basic design's :func:`geometry.synthesis.basic_design.size_scale`; 1 where its
+    blank cannot be made (the synthesis then names why)."""
+    from geometry.core.errors import InputError
+
+    try:
+        return basic.size_scale()
+    except InputError:
+        return 1.0
+
+
+def _size_line(basic, targets) -> str | None:
+    """The line saying the µm-sized defaults were scaled to a small module; None at a
+    scale of 1."""
+    from geometry.synthesis.basic_design import REFERENCE_MODULE
+
+    scale = _size_scale(basic)
+    if scale >= 1.0:
+        return None
+    o = basic.options.flank(basic.options.drive_flank)
+    line = (f"  small module: m_mn {scale * REFERENCE_MODULE:.3g} mm below "
+            f"{REFERENCE_MODULE:g} mm, the um-sized defaults x {scale:.3g} (a value the file "
+            f"gives is kept): drive flank approach {1e3 * o.approach:.3g} um, relief "
+            f"{1e3 * o.tip_relief:.3g}/{1e3 * o.root_relief:.3g} um")
+    if targets is not None and "tip_relief" in targets.variables:
+        lo, hi = targets.variables["tip_relief"]
+        line += f", the development's relief bounds {lo:.3g}-{hi:.3g} um"
+    return line + " (docs/synthesis.md)"
+
+
 def run_synthesize(args: argparse.Namespace) -> int:
     import dataclasses
     import tomllib
@@ -196,11 +258,12 @@ def run_synthesize(args: argparse.Namespace) -> int:
         RatingInputs.from_mapping(basic.rating)
     steps = (StepLines("synthesize", SYNTHESIS_STEPS) if getattr(args, "progress", False)
              else None)
-    development = None
+    development = targets = None
     if getattr(args, "development", True):
         from contact.optimize.development import develop, targets_from_table
 
-        targets = targets_from_table(basic.development)  # refused before the work
+        # refused before the work; the µm amounts follow the design's size (size_scale)
+        targets = targets_from_table(basic.development, size_scale=_size_scale(basic))
         development = develop(basic, targets=targets,
                               progress=_say if getattr(args, "progress", False) else None,
                               synthesis_progress=steps)
@@ -244,6 +307,9 @@ def run_synthesize(args: argparse.Namespace) -> int:
     if ratios is not None:
         print(f"  contact ratios (ISO 10300-1 virtual cylindrical gears): profile eps_va "
               f"{ratios[0]:.2f}, face eps_vb {ratios[1]:.2f}, total {sum(ratios):.2f}")
+    size = _size_line(basic, targets)
+    if size is not None:
+        print(size)
     if development is not None:
         print("  " + development.headline())
     print(f"wrote {path}")
@@ -257,7 +323,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
                           f"face contact ratio eps_vb {ratios[1]:.2f} is below "
                           f"{FACE_CONTACT_RATIO_NOTE:g}, the least bevel-gear design practice "
                           "asks for (AGMA 2005-D03); a wider face (b2) or a larger spiral "
-                          "angle (beta_m) raises it"))
+                          "angle (beta_m) raises it")
+              + (f"; {low_overlap_lte(development)}" if development is not None else ""))
     if basic.optimize:
         print(f"note: {shown} carries an [optimize] table: the synthesis alone is written; "
               f"`ltca optimize {shown}` also optimises the settings it names (the bundled "

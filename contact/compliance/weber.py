@@ -399,6 +399,23 @@ class WeberSegments:
         kinds = _kinds(kind)
         f = real_array("load", load, unit="N", low=0.0)
         floor = positive("load_floor", load_floor, "N/mm")
+        return self._evaluated(f, kinds, floor, isinstance(kind, str))
+
+    def secant_tangent(self, load: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``compliance(load, kind=("secant", "tangent"))`` of loads the caller has already
+        made finite and ≥ 0 (N,) [N] (the Weber iteration's, clipped to [0, cap]): the same
+        arithmetic without checking the loads again at every iteration (issue 75).
+
+        Raises
+        ------
+        InputError
+            A depth too small for Weber's formula at these loads.
+        """
+        return self._evaluated(np.asarray(load, dtype=float), ("secant", "tangent"), 1.0,
+                               False)
+
+    def _evaluated(self, f: np.ndarray, kinds, floor: float, single: bool):
+        """:meth:`compliance`'s arithmetic on checked loads ``f`` [N] and floor [N/mm]."""
         w = np.maximum(f / self.length, floor)
         # Hertz half-width, Johnson Eq. 4.43 (geometry.core.hertz.hertz_line_contact)
         b = np.sqrt(4.0 * w * self.r_eq / (math.pi * self.e_star))
@@ -408,7 +425,7 @@ class WeberSegments:
         shape = np.broadcast_shapes(w.shape, b.shape)
         out = tuple(_shaped(WEBER_COMPLIANCE_KINDS[k](kb, (self.k1 + self.k2) * slope)
                             / self.length, shape) for k in kinds)
-        return out[0] if isinstance(kind, str) else out
+        return out[0] if single else out
 
 
 def _shaped(value: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:

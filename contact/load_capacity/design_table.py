@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 
 __all__ = ["design_blank", "design_table"]
@@ -64,12 +65,28 @@ def design_blank(design: Mapping[str, Any]):
     InputError
         A bad field, named ``design.<field>`` with its accepted range, or an unknown one.
     """
-    from geometry.iso23509.blank import blank_geometry
     from geometry.iso23509.pitch_cone import BevelGearDesign
 
     try:
-        return blank_geometry(BevelGearDesign.from_degrees(**design))
+        bevel = BevelGearDesign.from_degrees(**design)
+        try:
+            hash(bevel)
+        except TypeError:  # a field of a type the memo cannot key: computed afresh
+            from geometry.iso23509.blank import blank_geometry
+
+            return blank_geometry(bevel)
+        return _blank(bevel)
     except InputError as exc:
         raise InputError(f"design.{exc}") from None
     except TypeError as exc:
         raise InputError(f"design: {exc}") from None
+
+
+@memoised(maxsize=32)
+def _blank(design):
+    """:func:`geometry.iso23509.blank.blank_geometry` of a design (frozen, hashable; the
+    blank is frozen too): a warm analysis rates the same design again, and its pitch cone
+    (Method 1's iteration over ``brentq``) cost ≈ 2 % of it (issue 75)."""
+    from geometry.iso23509.blank import blank_geometry
+
+    return blank_geometry(design)

@@ -621,9 +621,17 @@ def _iso_scuffing(oil, eta: float, t_oil: float, cond: ScuffingConditions,
     return theta_s, s_b, "S_B = (theta_S - theta_oil) / (theta_Bmax - theta_oil)"
 
 
-def _dataset(rating, torque, path, x_gamma, rho_n, sliding, across, p_h, half_width, flash,
-             contact, w_bt, mu, flm, bulk, theta_max, theta_s, s_b, comment,
-             attrs) -> xr.Dataset:
+def _dataset(*args) -> xr.Dataset:
+    """The dataset of one :func:`_method` result (its arguments)."""
+    data, coords, attrs = _parts(*args)
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _parts(rating, torque, path, x_gamma, rho_n, sliding, across, p_h, half_width, flash,
+           contact, w_bt, mu, flm, bulk, theta_max, theta_s, s_b, comment,
+           attrs) -> tuple[dict, dict, dict]:
+    """(data variables, coordinates, attributes) of one :func:`_method` result, as
+    ``(dims, values, attrs)`` tuples."""
     tp, t = ("torque", "path"), ("torque",)
     data = {
         "load_sharing_factor": data_var("path", x_gamma, "1", "load sharing factor X_Gamma"),
@@ -660,10 +668,10 @@ def _dataset(rating, torque, path, x_gamma, rho_n, sliding, across, p_h, half_wi
                        {"units": "mm", "long_name": "position along the path of contact "
                         "from A (the gear's tip)"}),
               "member": ("member", ["pinion", "gear"], {"long_name": "gear pair member"})}
-    return xr.Dataset(data, coords=coords, attrs={
+    return data, coords, {
         "title": "scuffing by the standard's flash temperature method",
         "case": str(rating.attrs.get("case", "")),
-        "pitch_point_mm": float(path["pitch"]), "toolkit_version": __version__, **attrs})
+        "pitch_point_mm": float(path["pitch"]), "toolkit_version": __version__, **attrs}
 
 
 #: the variables the lengthwise sliding changes (over ``variant``); the others are shared
@@ -719,9 +727,9 @@ def iso_flash_temperature_variants(
               conditions=conditions, points=points, memo={})
     parts, low, high = [], [], []
     for lengthwise in VARIANTS.values():
-        parts.append(_dataset(*_method(rating, lengthwise_sliding=lengthwise,
-                                       friction_form="iso",
-                                       viscosity_in_scuffing_temperature=False, **kw)))
+        parts.append(_parts(*_method(rating, lengthwise_sliding=lengthwise,
+                                     friction_form="iso",
+                                     viscosity_in_scuffing_temperature=False, **kw)))
         spread = np.stack([np.asarray(_method(
             rating, lengthwise_sliding=lengthwise, friction_form=form,
             viscosity_in_scuffing_temperature=visc, **kw)[_S_B], float)
@@ -729,26 +737,35 @@ def iso_flash_temperature_variants(
         with np.errstate(invalid="ignore"):
             low.append(np.min(spread, axis=0))
             high.append(np.max(spread, axis=0))
-    methods = [str(d.attrs["method"]) for d in parts]
-    ds = xr.concat([d.drop_attrs(deep=False) for d in parts], dim="variant",
-                   data_vars=list(_BY_VARIANT), coords="minimal", compat="override",
-                   join="exact")
-    attrs = {k: v for k, v in parts[0].attrs.items()
-             if k not in ("method", "lengthwise_sliding")}
-    ds = ds.assign_coords(
-        variant=("variant", list(VARIANTS), {"long_name": "variant of the flash temperature "
-                                            "method"}),
-        method=("variant", methods, {"long_name": "what the variant is"}))
+    # one dataset of the variants' variables, as xr.concat over ``variant`` of each
+    # variant's dataset would give (the variables of _BY_VARIANT stacked, the others and
+    # the coordinates the first variant's), without building and aligning those datasets
+    # (issue 75: they were a third of this step's CPU)
+    methods = [str(attrs["method"]) for _, _, attrs in parts]
+    (first, coords, attrs0), others = parts[0], [p[0] for p in parts[1:]]
+    data = {}
+    for name, (dims, values, var_attrs) in first.items():
+        if name in _BY_VARIANT:
+            dims = ("variant", *((dims,) if isinstance(dims, str) else dims))
+            values = np.stack([np.asarray(values)]
+                              + [np.asarray(o[name][1]) for o in others])
+        data[name] = (dims, values, var_attrs)
     note = ("over the mean friction coefficient in ISO/TR 13989-1's form and in DIN "
             "3990-4's (0.060 (w_Bt K_Bgamma/(v_SigmaC rho_redC))^0.2 eta_oil^-0.05 Ra^0.25 "
             "X_L), and the scuffing temperature with X_L alone (the standard's) or X_L "
             "eta_oil^-0.05")
-    ds["scuffing_safety_low"] = (("variant", "torque"), np.stack(low),
-                                 {"units": "1", "long_name": "least scuffing safety factor "
-                                  "S_B of the uncertain constants", "comment": note})
-    ds["scuffing_safety_high"] = (("variant", "torque"), np.stack(high),
-                                  {"units": "1", "long_name": "largest scuffing safety factor "
-                                   "S_B of the uncertain constants", "comment": note})
-    return ds.assign_attrs(
-        attrs, method="; ".join(f"{k}: {m}" for k, m in zip(VARIANTS, methods, strict=True)),
-        friction_form="iso", viscosity_in_scuffing_temperature=0)
+    data["scuffing_safety_low"] = (("variant", "torque"), np.stack(low),
+                                   {"units": "1", "long_name": "least scuffing safety "
+                                    "factor S_B of the uncertain constants", "comment": note})
+    data["scuffing_safety_high"] = (("variant", "torque"), np.stack(high),
+                                    {"units": "1", "long_name": "largest scuffing safety "
+                                     "factor S_B of the uncertain constants", "comment": note})
+    attrs = {k: v for k, v in attrs0.items() if k not in ("method", "lengthwise_sliding")}
+    return xr.Dataset(data, coords={
+        **coords,
+        "variant": ("variant", list(VARIANTS), {"long_name": "variant of the flash "
+                                                "temperature method"}),
+        "method": ("variant", methods, {"long_name": "what the variant is"})}, attrs={
+        **attrs,
+        "method": "; ".join(f"{k}: {m}" for k, m in zip(VARIANTS, methods, strict=True)),
+        "friction_form": "iso", "viscosity_in_scuffing_temperature": 0})

@@ -177,7 +177,7 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
         # tangent compliance at the loads F₀, i.e. compliance c_t and separation
         # s + (c_s − c_t) F₀; the secant alone where c_t is not well positive (b near the
         # depth h) or the load is at the cap (frozen there)
-        cs, ct = segments.compliance(load, kind=("secant", "tangent"))
+        cs, ct = segments.secant_tangent(load)  # the loads are finite, in [0, cap]
         newton = (ct > _TANGENT_SHARE * cs) & (load < cap)
         cw = np.where(newton, ct, cs)
         separation = sel.separation + np.where(newton, (cs - ct) * load, 0.0)

@@ -77,6 +77,7 @@ Public names
 DevelopmentTargets   the targets (the ``[development]`` table of a basic file)
 targets_from_table   the targets from that table (file units), validated
 VARIABLES            the developed synthesis inputs and their default bounds
+SIZE_SCALED_VARIABLES, scaled_variables   those whose µm bounds follow the tooth size
 RELIEF_NAMES         those of the relief stage
 HEIGHT_NAME, CROWNING_NAME   the height stage's levers (blade angle, profile crowning)
 COAST_STATUS         what the coast flank's development did, in words
@@ -171,6 +172,7 @@ from contact.optimize.development_targets import (
     HEIGHT_NAME,
     METRIC_NAMES,
     RELIEF_NAMES,
+    SIZE_SCALED_VARIABLES,
     STAGE_TERMS,
     TE_NAME,
     TIP_RELIEF_START,
@@ -178,6 +180,7 @@ from contact.optimize.development_targets import (
     DevelopmentTargets,
     development_score,
     footprint_centre,
+    scaled_variables,
     targets_from_table,
     working_depth_centre,
 )
@@ -192,11 +195,12 @@ from geometry.synthesis.basic_design import (
 __all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNING_STEP",
            "EDGE_ROW_SHORTFALL", "FAILED", "HEIGHT_DESIGNS", "HEIGHT_NAME", "HEIGHT_SLOPE",
            "METRIC_NAMES",
-           "PATH_STEPS", "RELIEF_NAMES", "STAGE_TERMS", "TE_DESIGNS", "TE_NAME", "TIP_RELIEF_START",
-           "VARIABLES", "VERIFIED_DESIGNS",
+           "PATH_STEPS", "RELIEF_NAMES", "SIZE_SCALED_VARIABLES", "STAGE_TERMS", "TE_DESIGNS",
+           "TE_NAME", "TIP_RELIEF_START", "VARIABLES", "VERIFIED_DESIGNS",
            "DevelopmentEvaluation", "DevelopmentResult", "DevelopmentTargets", "KeptTeeth",
            "design_torque_of", "develop", "development_score", "footprint_centre",
-           "lte_spread", "static_strength", "targets_from_table", "working_depth_centre"]
+           "lte_spread", "scaled_variables", "static_strength", "targets_from_table",
+           "working_depth_centre"]
 
 
 @blas_threads()  # small dense matrices: one BLAS thread (geometry.core.blas)
@@ -213,7 +217,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         The design (its drive flank's ``[synthesis]`` prescriptions are the start where a
         variable's bound allows, else the middle of the bound).
     targets : DevelopmentTargets, optional
-        Default: the basic file's ``[development]`` table (:func:`targets_from_table`).
+        Default: the basic file's ``[development]`` table (:func:`targets_from_table`), its
+        µm amounts following the design's size (``size_scale``,
+        :meth:`geometry.synthesis.basic_design.BasicDesign.size_scale`).
     progress : callable, optional
         Called with one plain line per analysed design (the CLI prints them).
     synthesis_progress : optional
@@ -313,8 +319,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             develop, targets=targets, progress=progress, synthesis_progress=synthesis_progress,
             root_stress=root_stress, gear_fallback=False), basic, progress)
     t0 = time.process_time()
-    targets = targets or targets_from_table(basic.development)
     basic.blank()  # blanks the basic data cannot make: its own error, before any trial
+    targets = targets or targets_from_table(basic.development, size_scale=basic.size_scale())
     say = progress or (lambda line: None)
     flank = basic.options.drive_flank
     start = flank_start(basic.options.flank(flank), targets)
@@ -453,7 +459,7 @@ def _both_flanks_built(case: Case, wanted: bool, built: list[Case],
     its own) changes the pinion, whose drive and coast checks — and ``ltca run`` of the
     case written — would otherwise build its model once per flank (a first ``ltca run``
     after synthesize rebuilt the drive model for 27 s CPU on a face-hobbed 8x39). A
-    member of the re-synthesis whose FE load and stress points lie within 1 % of its
+    member of the re-synthesis whose FE load and stress points lie within 2 % of its
     whole depth of the last built one's keeps that one's coefficients (said through
     ``say``; ``built`` holds the last case built, updated here)."""
     if wanted:

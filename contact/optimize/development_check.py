@@ -46,6 +46,7 @@ from contact.optimize.development_result import (
     STATIC_MARGIN,
     TOLERANCE_KEYS,
     DevelopmentEvaluation,
+    floor_torque,
 )
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import (
@@ -179,7 +180,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     height by the root relief instead (:func:`_checked_blade`); then, where its
     light-load pattern is above its depth centre's tolerance, a shorter tip relief
     (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
-    longer ellipse (:func:`_checked_root`). Run again where the design torque was
+    longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the long
+    bearing (:func:`checked_long`). Run again where the design torque was
     lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
@@ -191,7 +193,94 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = _checked_path(best, targets, setup, teeth, say, placed)
     best = _checked_blade(best, targets, setup, teeth, say, placed)
     best = _checked_tip(best, targets, setup, teeth, say, placed)
-    return _checked_root(best, targets, setup, teeth, say, placed)
+    best = _checked_root(best, targets, setup, teeth, say, placed)
+    return checked_long(best, targets, setup, teeth, say, placed)
+
+
+def long_bearing(values: Mapping[str, float], targets: DevelopmentTargets
+                 ) -> dict[str, float] | None:
+    """The long bearing of :func:`checked_long` for a design's prescriptions ``values``
+    [file units]: the ellipse at the upper bound of ``ellipse_length`` (where that is
+    longer), the root relief's start at the upper bound of ``relief_start``, its depth
+    scaled by (1 − new start)/(1 − old start) so that its slope towards the root is kept
+    (:data:`~contact.optimize.development_targets.VARIABLES`' bounds, clipped to the
+    root relief's). None where the design's values or the targets' variables do not
+    carry these three, or where the values are that bearing already."""
+    names = ("ellipse_length", "relief_start", "root_relief")
+    if not all(n in targets.variables and n in values for n in names):
+        return None
+    (_, e_hi), (_, s_hi), (r_lo, r_hi) = (targets.variables[n] for n in names)
+    start = float(values["relief_start"])
+    depth = float(values["root_relief"]) * (1.0 - s_hi) / max(1.0 - start, 1e-9)
+    new = dict(values) | {
+        "ellipse_length": float(max(values["ellipse_length"], e_hi)),
+        "relief_start": float(max(start, s_hi)),
+        "root_relief": float(np.clip(depth, r_lo, r_hi)) if start < s_hi
+        else float(values["root_relief"])}
+    if all(abs(new[n] - float(values[n])) < 1e-9 for n in names):
+        return None
+    return new
+
+
+def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                 setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                 say: Callable[[str], None],
+                 placed: Callable[[Mapping[str, float]], Case], *,
+                 flank: str = "drive", key_prefix: tuple = ()) -> DevelopmentEvaluation:
+    """An LTE still missed at the check after every other step bought back by a long
+    bearing: the ellipse at its upper bound (the least lengthwise crowning) and the root
+    relief entering at the upper bound of ``relief_start``, its slope kept
+    (:func:`long_bearing`); one design (a synthesis of steps 3-6) placed and checked at
+    :data:`CHECK_LTCA` on ``flank``, kept where it scores better, misses no target the
+    design met but the pattern length (the LTE is bought with the length alone, not with
+    an edge or a clearance) and, on the drive flank, is tolerant
+    (:func:`_tolerant_variant`). ``key_prefix``: the kept pinion tooth's key before the
+    design's bearing (the coast flank's, :func:`checked_best`).
+
+    Why: with a face contact ratio ε_vβ near 1 one tooth pair carries the load over much
+    of the mesh cycle; a gear engineer lowers the LTE of such a pair by a longer bearing
+    and a relief that enters outside the part of the cycle the pair carries alone
+    (Stadtfeld, *Gleason Bevel Gear Technology*, 2014; Litvin & Fuentes 2004 §9.4: the
+    contact path's length and the TE parabola's level). The search's bearing stage
+    ranks the ellipse before the relief, so a longer ellipse whose edges the default
+    root relief (from 0.2 of the way) loads is not kept. Measured at ``ltca run``'s
+    sampling on a hypoid 8x41 with a narrow face (b2 22 mm, β_m1 52°, a 30 mm, Method 1;
+    ε_vβ 1.03, ε_vα 0.94; 27 / 180 N m; its developed bearing path −80°, ellipse 0.6,
+    root relief 60 µm from 0.2, tip relief 15 µm from 0.85, te_level 10 µrad; 2026-11-26):
+    LTE 63 / 74 µrad; the ellipse 0.75 with the root relief 60 µm from 0.5: 26 / 58 µrad
+    but 0.7 % of the design torque plastic at ΔE +0.05 mm; with 40 µm from 0.5: 25 / 52
+    µrad, pattern 0.60 long, tolerant; the ellipse 0.85: 17 / 54 µrad, pattern 0.68 long
+    (beyond 0.5 ± 0.1). On the coast flank, whose search ends at the check of its best
+    designs, it is the only step (:func:`contact.optimize.development_coast_flank.
+    coast_development`)."""
+    if (best.full is None or not best.checked or best.full[1]["lte"] == 0.0):
+        return best
+    values = long_bearing(best.values, targets)
+    if values is None:
+        return best
+    e = _checked_variant(best, values, "long", targets, setup, teeth, placed,
+                         pinion_key=(*key_prefix, *bearing_key(values)), flank=flank)
+    if e is None:
+        return best
+    what = "design" if flank == "drive" else f"{flank} design"
+    say(f"  {what} {best.index + 1} with the long bearing (ellipse_length "
+        f"{values['ellipse_length']:.3g}, root_relief {values['root_relief']:.3g} from "
+        f"{values['relief_start']:.3g}), at the default sampling: "
+        + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
+    if _check_rank(e) >= _check_rank(best):
+        return best
+    # the LTE bought with the pattern's length alone: no other target it met given up
+    # (the spiral bevel 17x29's coast flank: LTE 73 / 83 -> 50 / 62 urad, but its
+    # light-load pattern 0.03-0.98 of the face, on toe and heel, 2.7 % on edges)
+    was = {k for k, v in best.full[1].items() if v > 0.0}
+    lost = sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was
+                  and k != "length")
+    if lost:
+        say(f"  not kept: the long bearing misses {', '.join(lost)}")
+        return best
+    if flank == "drive" and not _tolerant_variant(e, targets, setup, teeth, say):
+        return best
+    return e
 
 
 #: the check's shorter tip reliefs (:func:`_checked_tip`), fractions of the chosen
@@ -420,7 +509,7 @@ def _tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
 #: the tolerance step's reliefs (:func:`checked_tolerance`): the chosen design's tip, then
 #: root relief raised by this factor, at least by :data:`TOLERANCE_RELIEF_STEP` µm
 TOLERANCE_RELIEF = 1.5
-#: the tolerance step's least raise of a relief [µm]
+#: the tolerance step's least raise of a relief [µm], × the targets' ``size_scale``
 TOLERANCE_RELIEF_STEP = 5.0
 
 
@@ -457,7 +546,8 @@ def checked_tolerance(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             continue
         lo, hi = targets.variables[name]
         x0 = float(best.values[name])
-        x = float(np.clip(max(TOLERANCE_RELIEF * x0, x0 + TOLERANCE_RELIEF_STEP), lo, hi))
+        x = float(np.clip(max(TOLERANCE_RELIEF * x0,
+                              x0 + TOLERANCE_RELIEF_STEP * targets.size_scale), lo, hi))
         if x <= x0:
             continue
         values = best.values | {name: x}
@@ -609,7 +699,7 @@ def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     accepted = None
     for _ in range(3):
         new = torque * (STATIC_MARGIN * limit / p) ** (1.0 / exponent)
-        new = float(f"{math.floor(new * 10.0) / 10.0:.4g}")  # rounded down to 0.1 N·m
+        new = floor_torque(new)  # rounded down to 0.1 N·m (two digits below 1 N·m)
         if new == torque:
             break
         torques = [targets.light_load * new, new]

@@ -34,7 +34,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from contact.optimize.development_result import STATIC_MARGIN
+from contact.optimize.development_result import STATIC_MARGIN, floor_torque
 from contact.optimize.development_root import root_capacity_step
 
 __all__ = ["CLOSENESS", "COAST_STEPS", "PLASTIC_STEP", "REFINE_STEPS", "CoastCapacity",
@@ -177,7 +177,8 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
       (Hertz's point contact), bounded to [0.2, 1];
     * plastic: T × :data:`PLASTIC_STEP`.
 
-    Rounded down to 0.1 N·m (4 significant digits).
+    Rounded down (:func:`contact.optimize.development_result.floor_torque`: 0.1 N·m,
+    two significant digits below 1 N·m).
 
     Parameters
     ----------
@@ -227,8 +228,7 @@ def coast_torque_step(check: CoastCheck, previous: CoastCheck | None = None,
     if "plastic" in fails:
         steps["plastic"] = t * PLASTIC_STEP
     why = min(steps, key=steps.get)
-    new = math.floor(10.0 * steps[why]) / 10.0
-    return float(f"{new:.4g}"), why
+    return floor_torque(steps[why]), why
 
 
 def coast_capacity(analyse: Callable[[float], CoastCheck], start: float,
@@ -337,13 +337,13 @@ def _inside(bad: CoastCheck, ok: CoastCheck) -> tuple[float, float]:
     """The capacity estimated between ``ok`` (holds) and ``bad`` (fails) — the step from
     ``bad`` with the exponents measured between the two (:func:`coast_torque_step`;
     plastic: their geometric mean) — and the next torque to check: that estimate kept a
-    tenth of the bracket's log-width from either end, rounded down to 0.1 N·m."""
+    tenth of the bracket's log-width from either end, rounded down (``floor_torque``)."""
     lo, hi = math.log(ok.torque), math.log(bad.torque)
     t, why = coast_torque_step(bad, ok)
     if why == "plastic" or not t > 0:
         t = math.sqrt(ok.torque * bad.torque)
     x = min(max(math.log(t), lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
-    return t, float(f"{math.floor(10.0 * math.exp(x)) / 10.0:.4g}")
+    return t, floor_torque(math.exp(x))
 
 
 def _within(c: CoastCheck) -> list[str]:

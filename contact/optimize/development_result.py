@@ -9,7 +9,8 @@ coast flank's static capacity. Imported through :mod:`contact.optimize.developme
 
 Public names
 ------------
-DevelopmentEvaluation, DevelopmentResult, COAST_STATUS, STATIC_MARGIN, metrics_text
+DevelopmentEvaluation, DevelopmentResult, COAST_STATUS, STATIC_MARGIN, floor_torque,
+metrics_text
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from geometry.case import Case
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS, BasicDesign
 
 __all__ = ["COAST_STATUS", "STATIC_MARGIN", "TOLERANCE_KEYS", "DevelopmentEvaluation",
-           "DevelopmentResult", "metrics_text"]
+           "DevelopmentResult", "floor_torque", "metrics_text"]
 
 
 # --------------------------------------------------------------------------- evaluation
@@ -343,8 +344,7 @@ class DevelopmentResult:
             # capacity by default, at which S_H = S_H,min exactly; rounded up it would fail
             # the rating by round-off)
             more["operating"] = dataclasses.replace(
-                case.operating, torque=tuple(math.floor(10.0 * float(t)) / 10.0
-                                             for t in self.torque))
+                case.operating, torque=tuple(floor_torque(t) for t in self.torque))
         return dataclasses.replace(case, source=case.source.rstrip() + " " + self.summary(),
                                    extra=MappingProxyType(extra), **more)
 
@@ -509,6 +509,42 @@ TOLERANCE_KEYS = ("toe", "heel", "edge", "plastic")
 
 #: margin below the flank's static strength that :func:`_static_capacity` aims at [1]
 STATIC_MARGIN = 0.99
+
+
+def floor_torque(torque: float) -> float:
+    """A development's torque rounded down for the case it writes: to 0.1 N·m from
+    1 N·m up, to four significant digits from 1000 N·m up, below 1 N·m to two
+    significant digits.
+
+    Rounded down because the design torque is the rating's capacity by default, at which
+    S_H = S_H,min exactly (rounded up it would fail the rating by round-off). The
+    earlier ``f"{floor(10 t) / 10:.4g}"`` rounded 5769.55 up to 5770 N·m; the
+    relative rounding below 1 N·m keeps a small gear's torques (a module-1.6 spiral bevel
+    carries ~2 N·m, its light torque 0.3 N·m, a capacity step 0.05 N·m) above zero: the
+    absolute 0.1 N·m alone made them 0 and the analysis refused them.
+
+    Parameters
+    ----------
+    torque : float — [N·m], finite and > 0
+
+    Returns
+    -------
+    float — [N·m], in (0, torque]
+
+    Raises
+    ------
+    ValueError
+        ``torque`` not finite or not > 0.
+    """
+    t = float(torque)
+    if not (math.isfinite(t) and t > 0):
+        raise ValueError(f"torque: must be finite and > 0 [N m], got {torque!r}")
+    e = math.floor(math.log10(t))
+    step = max(-1, e - 3) if t >= 1.0 else e - 1  # decimal exponent of the kept last digit
+    n = math.floor(t / 10.0 ** step * (1.0 + 1e-12))
+    while n > 1 and float(f"{n}e{step}") > t:
+        n -= 1
+    return float(f"{n}e{step}")
 
 
 #: the outcomes of the coast flank's development (``DevelopmentResult.coast_status``)

@@ -42,7 +42,8 @@ from geometry.synthesis.basic_design import (
     flank_option_values,
 )
 
-#: step of the profile crowning in the height stage [µm]
+#: step of the profile crowning in the height stage [µm], × the targets' ``size_scale``
+#: (the tooth size: :func:`geometry.synthesis.basic_design.size_scale`)
 CROWNING_STEP = 10.0
 
 
@@ -454,7 +455,8 @@ def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
         if short["tip"] == 0.0 and short["root"] == 0.0 and m["edge_load_share"][0] <= 0.0:
             return e
         lo, hi = targets.variables[CROWNING_NAME]
-        crown = float(np.clip(e.values[CROWNING_NAME] + CROWNING_STEP, lo, hi))
+        crown = float(np.clip(e.values[CROWNING_NAME] + CROWNING_STEP * targets.size_scale,
+                              lo, hi))
         if crown == e.values[CROWNING_NAME] or len(_evaluated(evaluate)) >= budget:
             return e
         values = e.values | {CROWNING_NAME: crown}
@@ -475,7 +477,7 @@ def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
 
 
 #: the root relief [µm] the height stage first lowers a high pattern with, from the lower
-#: bound of ``relief_start`` (:func:`_root_relief_height`)
+#: bound of ``relief_start`` (:func:`_root_relief_height`), × the targets' ``size_scale``
 ROOT_HEIGHT_RELIEF = 40.0
 
 
@@ -509,7 +511,8 @@ def _root_relief_height(evaluate: Callable[..., DevelopmentEvaluation],
         return base
     lo_r, hi_r = targets.variables["root_relief"]
     best, asked = base, []
-    for relief in (ROOT_HEIGHT_RELIEF, hi_r):  # the second where the first is still high
+    # the second where the first is still high
+    for relief in (ROOT_HEIGHT_RELIEF * targets.size_scale, hi_r):
         if abs(footprint_centre_v(best) - target) <= targets.centre_tolerance and best is not base:
             break
         values = base.values | {

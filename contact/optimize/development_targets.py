@@ -8,8 +8,8 @@ pattern's footprint centre (:func:`footprint_centre`) and the depth centre aimed
 
 Public names
 ------------
-DevelopmentTargets, targets_from_table, VARIABLES, RELIEF_NAMES, TIP_RELIEF_START,
-TE_NAME, HEIGHT_NAME,
+DevelopmentTargets, targets_from_table, VARIABLES, SIZE_SCALED_VARIABLES,
+scaled_variables, RELIEF_NAMES, TIP_RELIEF_START, TE_NAME, HEIGHT_NAME,
 CROWNING_NAME, EDGE_ROW_SHORTFALL, FAILED, METRIC_NAMES, STAGE_TERMS, working_depth_centre,
 development_score, footprint_centre
 """
@@ -19,7 +19,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -31,11 +31,11 @@ from geometry.core.validation import known_fields, real
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS
 
 __all__ = ["CROWNING_NAME", "EDGE_ROW_SHORTFALL", "FAILED", "HEIGHT_NAME", "METRIC_NAMES",
-           "RELIEF_NAMES",
+           "RELIEF_NAMES", "SIZE_SCALED_VARIABLES",
            "STAGE_TERMS", "TE_NAME", "TIP_RELIEF_START", "VARIABLES", "VERDICT_FAIL_PENALTY",
            "DevelopmentTargets",
-           "development_score", "footprint_centre", "lte_torque_terms", "targets_from_table",
-           "working_depth_centre"]
+           "development_score", "footprint_centre", "lte_torque_terms", "scaled_variables",
+           "targets_from_table", "working_depth_centre"]
 
 
 #: The developed synthesis inputs of the drive flank and their default bounds [file
@@ -64,6 +64,20 @@ VARIABLES: Mapping[str, tuple[float, float]] = {
     "tip_relief_start": (0.5, 0.9),
     "te_level": (10.0, 45.0),
 }
+
+
+#: the inputs of :data:`VARIABLES` in µm whose default bounds follow the tooth size
+#: (× ``size_scale``, :func:`scaled_variables`; the reasons:
+#: :func:`geometry.synthesis.basic_design.size_scale`)
+SIZE_SCALED_VARIABLES = ("tip_relief", "root_relief", "profile_crowning")
+
+
+def scaled_variables(scale: float) -> dict[str, tuple[float, float]]:
+    """The default bounds :data:`VARIABLES` with those of :data:`SIZE_SCALED_VARIABLES`
+    (µm) × ``scale`` [1] (:func:`geometry.synthesis.basic_design.size_scale`: 1 at a mean
+    normal module of 3 mm and above, where the bounds are :data:`VARIABLES` exactly)."""
+    return {n: ((scale * lo, scale * hi) if n in SIZE_SCALED_VARIABLES else (lo, hi))
+            for n, (lo, hi) in VARIABLES.items()}
 
 
 #: the relief inputs (the blade's toprem and flankrem; no new synthesis of steps 3-6)
@@ -205,10 +219,21 @@ class DevelopmentTargets:
         bearings, 7 reliefs), in [0, 500]; 0 turns the coast development off (the coast
         flank is synthesised from its own prescriptions and checked once). The search runs
         only where the coast flank as synthesised misses a target.
-    variables : mapping name → (low, high)
-        Developed synthesis inputs (``[synthesis]`` names and units); default
-        :data:`VARIABLES` (``te_level`` by the TE stage, :data:`TE_NAME`); ``approach``
-        may be added (bearing stage).
+    variables : mapping name → (low, high) or None
+        Developed synthesis inputs (``[synthesis]`` names and units); default None:
+        :data:`VARIABLES` with the µm bounds of :data:`SIZE_SCALED_VARIABLES` ×
+        ``size_scale`` (:func:`scaled_variables`; ``te_level`` by the TE stage,
+        :data:`TE_NAME`); ``approach`` may be added (bearing stage). Bounds given are
+        used as given.
+    size_scale : float — [1]
+        The factor the development's µm amounts follow the tooth size by: the default
+        bounds of :data:`SIZE_SCALED_VARIABLES` and the steps
+        :data:`~contact.optimize.development_stages.CROWNING_STEP`,
+        :data:`~contact.optimize.development_stages.ROOT_HEIGHT_RELIEF` and
+        :data:`~contact.optimize.development_check.TOLERANCE_RELIEF_STEP`; in (0, 10].
+        Default 1 here; ``ltca synthesize`` gives the design's
+        :func:`geometry.synthesis.basic_design.size_scale` (m_mn / 3 mm below 3 mm, else
+        1) unless the ``[development]`` table gives it.
 
     Raises
     ------
@@ -236,8 +261,8 @@ class DevelopmentTargets:
     mounting_tolerance: float = 0.05
     max_evaluations: int = 36
     coast_max_evaluations: int = 20
-    variables: Mapping[str, tuple[float, float]] = field(
-        default_factory=lambda: dict(VARIABLES))
+    variables: Mapping[str, tuple[float, float]] | None = None
+    size_scale: float = 1.0
 
     def __post_init__(self) -> None:
         def chk(name, low, high, unit="1", **kw):
@@ -259,6 +284,9 @@ class DevelopmentTargets:
             chk("max_flank_pressure", 0.0, 1e5, unit="MPa", low_open=True)
         chk("offset_tolerance", 0.0, 5.0, unit="mm")
         chk("mounting_tolerance", 0.0, 5.0, unit="mm")
+        chk("size_scale", 0.0, 10.0, low_open=True)
+        if self.variables is None:  # the defaults, µm bounds following the tooth size
+            object.__setattr__(self, "variables", scaled_variables(self.size_scale))
         for name, low in (("max_evaluations", 1), ("coast_max_evaluations", 0)):
             n = getattr(self, name)
             if isinstance(n, bool) or not isinstance(n, int) or not low <= n <= 500:
@@ -284,8 +312,17 @@ class DevelopmentTargets:
         object.__setattr__(self, "variables", out)
 
 
-def targets_from_table(table: Mapping[str, Any] | None) -> DevelopmentTargets:
+def targets_from_table(table: Mapping[str, Any] | None, *,
+                       size_scale: float = 1.0) -> DevelopmentTargets:
     """The targets of a ``[development]`` table (file units as :class:`DevelopmentTargets`).
+
+    Parameters
+    ----------
+    table : mapping or None
+        The basic file's ``[development]`` table.
+    size_scale : float, optional — [1]
+        The design's :func:`geometry.synthesis.basic_design.size_scale` (default 1), used
+        where the table gives no ``size_scale`` of its own.
 
     Raises
     ------
@@ -295,6 +332,7 @@ def targets_from_table(table: Mapping[str, Any] | None) -> DevelopmentTargets:
     table = dict(table or {})
     accepted = [f.name for f in dataclasses.fields(DevelopmentTargets)]
     known_fields("development", table, accepted)
+    table.setdefault("size_scale", size_scale)
     if "variables" in table:
         if not isinstance(table["variables"], Mapping):
             raise InputError("development.variables: must be a table name = [low, high]")

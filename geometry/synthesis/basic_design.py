@@ -27,6 +27,9 @@ basic_from_dict                               the same from a parsed mapping
 fit_design                                    adjust design fields to hit the targets
 flank_option_values, FLANK_OPTION_UNITS       a flank's prescriptions in file units
 with_flank_options                            the design with a flank's prescriptions replaced
+size_scale, REFERENCE_MODULE                  the factor the µm-sized defaults follow the
+                                              tooth size by (small modules)
+SIZE_SCALED_OPTIONS                           the flank prescriptions it scales
 """
 
 from __future__ import annotations
@@ -52,6 +55,8 @@ __all__ = [
     "DEFAULT_RATING",
     "FLANK_OPTION_UNITS",
     "PROCESSES",
+    "REFERENCE_MODULE",
+    "SIZE_SCALED_OPTIONS",
     "TARGETS",
     "BasicDesign",
     "FlankOptions",
@@ -60,6 +65,7 @@ __all__ = [
     "fit_design",
     "flank_option_values",
     "load_basic",
+    "size_scale",
     "with_flank_options",
 ]
 
@@ -103,6 +109,89 @@ DEFAULT_RATING: Mapping[str, Any] = MappingProxyType({
 _ADJUSTABLE = ("de2", "dm2", "b2", "rc0", "beta_m", "theta_a2", "theta_f2", "c_ham")
 _DESIGN_ANGLES = {"Sigma", "beta_m", "alpha_dD", "alpha_dC", "theta_a2", "theta_f2"}
 
+#: [mm] the mean normal module m_mn below which the µm-sized defaults of the synthesis and
+#: the development follow the tooth size (:func:`size_scale`): just below the smallest
+#: m_mn of the designs they were chosen and checked on (3.12 mm, the spiral bevel 15x45 of
+#: tests/data/designs; 3.1-7.4 mm over the table of docs/own_gear_set.md), so that every
+#: one of those designs keeps them bit for bit
+REFERENCE_MODULE = 3.0
+
+#: the flank prescriptions whose defaults :func:`size_scale` scales (lengths of µm: the
+#: elastic approach at which the ellipse is prescribed, the tip and root relief); a value
+#: the basic file gives is used as given
+SIZE_SCALED_OPTIONS = ("approach", "tip_relief", "root_relief")
+
+
+def size_scale(m_mn: float) -> float:
+    """The factor the µm-sized defaults follow the tooth size by: min(1, m_mn / m_ref).
+
+    Parameters
+    ----------
+    m_mn : float — [mm]
+        Mean normal module of the pair (ISO 23509, :attr:`BlankGeometry.m_mn`), > 0.
+
+    Returns
+    -------
+    float — [1]
+        m_mn / :data:`REFERENCE_MODULE` below it, else 1. It multiplies the defaults of
+        :data:`SIZE_SCALED_OPTIONS` (:func:`basic_from_dict`) and the development's µm
+        bounds and steps (``[development] size_scale``,
+        :class:`contact.optimize.development.DevelopmentTargets`).
+
+    Raises
+    ------
+    InputError
+        ``m_mn`` not a positive finite number.
+
+    Notes
+    -----
+    Why the amounts scale with the module. The defaults — the elastic approach δ = 6.3 µm
+    at which the contact ellipse is prescribed (Litvin & Fuentes, *Gear Geometry and
+    Applied Theory*, 2nd ed., §9.4: the curvature gap 2δ/a²), the 15 µm tip and root
+    relief and the development's 0-60 µm relief and 0-30 µm profile-crowning bounds
+    (:data:`contact.optimize.development.VARIABLES`) — are absolute lengths, set and
+    checked on automotive and industrial pairs of m_mn 3.1-7.4 mm. Two pairs alike in
+    every proportion but size (ISO 23509's depths are multiples of m_mn; b2 is 6-10
+    m_mn on the designs of tests/data/designs) loaded to the same contact pressure (the
+    design torque is the ISO 10300 capacity, S_H = 1, which grows as the size cubed)
+    deform alike: the Hertzian semi-axis a and the approach δ = a²/R grow with the size
+    (Johnson, *Contact Mechanics*, 1985, §4.2), and so does a tooth's bending and
+    shear deflection under the same stress. A bearing localised as much relative to its
+    tooth therefore needs an approach and reliefs in proportion to the module: held at
+    6.3 µm on a tooth of m_mn 1.6 mm, the same ellipse fraction is the curvature gap of
+    12 µm on one of 3 mm, a bearing twice as localised, and 15-60 µm of relief a relief
+    twice as deep. Measured on the spiral bevel 11x27 at β_m 43° of
+    tests/data/limits (m_mn 1.62 mm, docs/own_gear_set.md "unseen (3)"): with 6.3 µm the
+    developed bearing's local pitting capacity cut the design torque 11.55 → 1.7 N·m and
+    its light-load pattern was 0.22 of the face; with 3.2 µm (6.3 × 2.6/5) it stayed
+    11.55 N·m with a pattern of 0.47. Above :data:`REFERENCE_MODULE` the factor stays
+    1: the similarity argument would raise the amounts on a truck hypoid (m_mn 6.9),
+    but the designs of that size meet every criterion with the amounts as they are, and
+    a larger amount is not measured. A sourced rule of Gleason or Stadtfeld for the
+    amounts against the module was looked for and not found; the rule here is the
+    similarity above, stated as such.
+    """
+    m = real("m_mn", m_mn, unit="mm", low=0.0, low_open=True)
+    return min(1.0, m / REFERENCE_MODULE)
+
+
+def _size_scaled_defaults(scale: float) -> dict[str, float]:
+    """The defaults of :data:`SIZE_SCALED_OPTIONS` × ``scale`` [FlankOptions units]; none
+    at a scale of 1 (the dataclass' own defaults)."""
+    if scale == 1.0:
+        return {}
+    return {n: scale * f.default for f in fields(FlankOptions) if (n := f.name)
+            in SIZE_SCALED_OPTIONS}
+
+
+def _design_scale(design: BevelGearDesign) -> float:
+    """:func:`size_scale` of a design's blank; 1 where the blank cannot be made (its own
+    error is raised where the blank is first needed, as without the scaling)."""
+    try:
+        return size_scale(blank_geometry(design).m_mn)
+    except InputError:
+        return 1.0
+
 
 @dataclass(frozen=True)
 class FlankOptions:
@@ -126,12 +215,15 @@ class FlankOptions:
         the elastic approach ``approach``. Default 0.275, in (0.02, 0.9).
     approach : float — [mm]
         Elastic approach δ (the separation that bounds the unloaded pattern), default
-        0.0063 mm, in (0, 0.1].
+        0.0063 mm, in (0, 0.1]. A basic file that does not give it gets 0.0063 mm ×
+        :func:`size_scale` (m_mn below :data:`REFERENCE_MODULE`: in proportion to the
+        module).
     tip_relief, root_relief : float — [mm]
         Profile relief of the pinion flank (:mod:`geometry.machine.relief`): normal ease-off added
         at the flank's tip end and at its root end (the lowest point the gear tip reaches),
         at the mean section, by the blade's flankrem and toprem. Default 0.015 mm each (the
-        10–30 µm of automotive practice), in [0, 0.2); the file gives them in µm.
+        10–30 µm of automotive practice), in [0, 0.2); the file gives them in µm. A basic
+        file that does not give them gets 0.015 mm × :func:`size_scale`.
     relief_start : float — [1]
         Where the relief starts, as the fraction of the way from M to each end (blade
         heights); default 0.5, in [0, 1).
@@ -347,6 +439,11 @@ class BasicDesign:
         """ISO 23509 blank geometry of the design (pitch cone and both members)."""
         return blank_geometry(self.design)
 
+    def size_scale(self) -> float:
+        """:func:`size_scale` of the design's mean normal module [1]: the factor its
+        µm-sized defaults were scaled by (InputError where the blank cannot be made)."""
+        return size_scale(self.blank().m_mn)
+
 
 def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
                adjust: tuple[str, ...]) -> BevelGearDesign:
@@ -449,12 +546,13 @@ _FILE_UNITS: dict[str, tuple[str, Callable[[Any], Any], Callable[[Any], Any]]] =
 FLANK_OPTION_UNITS: Mapping[str, str] = {k: u for k, (u, _, _) in _FILE_UNITS.items()}
 
 
-def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None) -> FlankOptions:
+def _flank_options(raw: Mapping, where: str, base: FlankOptions | None = None,
+                   defaults: Mapping[str, float] | None = None) -> FlankOptions:
     unknown = sorted(set(raw) - _FLANK_FIELDS)
     if unknown:
         raise InputError(f"{where}.{unknown[0]}: unknown field; accepted: "
                          f"{sorted(_FLANK_FIELDS)}")
-    kw: dict[str, Any] = {}
+    kw: dict[str, Any] = dict(defaults or {})  # the values given replace these
     for k, v in raw.items():
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise InputError(f"{where}.{k}: must be a number, got {v!r}")
@@ -595,7 +693,9 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
         accepted = _OPTION_FIELDS | _FLANK_FIELDS | {"concave", "convex", "method"}
         raise InputError(f"synthesis.{unknown[0]}: unknown field; accepted: "
                          f"{sorted(accepted)}")
-    common = _flank_options(flank_common, "synthesis")
+    # the µm-sized defaults follow the tooth size (size_scale); a value given wins
+    common = _flank_options(flank_common, "synthesis",
+                            defaults=_size_scaled_defaults(_design_scale(design)))
     per_flank = {f: _flank_options(flank_raw[f], f"synthesis.{f}", common)
                  for f in ("concave", "convex")}
     kw = dict(syn)

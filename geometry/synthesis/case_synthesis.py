@@ -119,7 +119,7 @@ from geometry.synthesis.gear import (
 )
 from geometry.synthesis.local import LocalSynthesis, local_synthesis
 from geometry.synthesis.mean_point import MeanPoint, mean_point, pair_kw
-from geometry.synthesis.modified_roll import nominal_transforms, tune_roll
+from geometry.synthesis.modified_roll import ROLL_FRACTIONS, nominal_transforms, tune_roll
 from geometry.synthesis.pinion import (
     PinionTools,
     pinion_generate_tools,
@@ -172,6 +172,9 @@ class FlankSynthesis:
     local: LocalSynthesis
     tools: PinionTools
     tip_moved: float = 0.0  # [mm] step 8: the tip plane's move along the cutter axis
+    #: [1] the roll, a fraction of the pitch, at which step 6 put the TE on its parabola
+    #: (modified_roll.ROLL_FRACTIONS: ±pitch/4 unless the contact leaves the flank before)
+    roll_fraction: float = 0.25
 
 
 @dataclass(frozen=True, eq=False)
@@ -437,7 +440,7 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
             log.info("synthesis: the %s gear has no solution; trying %s", process,
                      processes[k + 1])
             continue
-        if memo is not None and len(processes) > 1:  # (a single candidate needs no entry)
+        if memo is not None:  # (a single candidate too: gear_processes makes a blank)
             memo[key] = process
         for line in held:
             progress(line)
@@ -618,11 +621,21 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
     start = np.array([pl[2], math.hypot(pl[0], pl[1]), zg, pg, mp.gear_rotation])
     rate = np.array([*rates(vp, pl), *rates(vg, gl), mp.gear_sense * z1 / geom.gear.z])
     say(f"pinion {pf}: modified roll (6D, 24E)")
-    tools = tune_roll(tools, tooth_pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
-                       phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
-                       pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
-                       ratio=z1 / geom.gear.z)
-    return FlankSynthesis(pf, fo, a21, mp, ls, tools)
+    # at ±pitch/4, nearer M where the contact cannot be followed that far (the first
+    # roll's error where none can)
+    first: InputError | None = None
+    for fraction in ROLL_FRACTIONS:
+        try:
+            tuned = tune_roll(tools, tooth_pair, start, rate, a21=a21, pitch=2 * math.pi / z1,
+                              phi_p0=mp.pinion_rotation + hand_sign * tools.blank_phase,
+                              pinion_sense=mp.pinion_sense, gear_sense=mp.gear_sense,
+                              ratio=z1 / geom.gear.z, fraction=fraction)
+        except InputError as err:
+            first = first or err
+            continue
+        return FlankSynthesis(pf, fo, a21, mp, ls, tuned, roll_fraction=fraction)
+    assert first is not None
+    raise first
 
 
 def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
@@ -723,15 +736,21 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
     root cone from below (:func:`tip_plane_on_root_cone`; the flank is unchanged).
     ``memo`` (the design's entries of :func:`synthesize`'s memo): the placement kept under
     its inputs (the blade and settings), so a flank the development does not vary is
-    placed once."""
+    placed once, and a new placement starts from the last of the same blade side
+    (:func:`tip_plane_on_root_cone`'s ``start``)."""
     t = fs.tools
     key = ("tip plane", repr(t.blade), repr(t.settings))
     placed = None if memo is None else memo.get(key)
     if placed is None:
+        # the secant from the last placement of this flank's blade (a development's
+        # variants: the same tip plane within its tolerance, fewer root lines)
+        last = ("tip plane last", t.blade.side)
         placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
-                                        pair.pinion_hand)
+                                        pair.pinion_hand,
+                                        start=None if memo is None else memo.get(last))
         if memo is not None:
             memo[key] = placed
+            memo[last] = (placed.moved, placed.u_touch)
     return replace(fs, tools=t._replace(blade=placed.blade, settings=placed.settings),
                    tip_moved=placed.moved)
 
@@ -837,6 +856,9 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
                "about M (step 7a); " if o.blade_angle_change else "")
             + (f"profile crowning {_fmt(o.profile_crowning * 1e3)} um at +/-m_mn from M "
                "(step 7a); " if o.profile_crowning else "")
+            + (f"modified roll at +/-pitch/{round(1.0 / fs.roll_fraction):d} (the contact "
+               "could not be followed from M to +/-pitch/4); "
+               if fs.roll_fraction != 0.25 else "")
             + f"curvature residual {fs.tools.shape_error:.1g} 1/mm.")
     return " ".join(parts)
 

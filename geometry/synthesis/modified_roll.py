@@ -131,9 +131,22 @@ def _te_at(pair: ToothPair, start: np.ndarray, rate: np.ndarray, *, phi_p0: floa
                       np.stack([v[1] for v in found])))
 
 
+#: the rolls, fractions of the pitch, at which the synthesis' step 6 puts the TE on its
+#: parabola (:func:`tune_roll`'s ``fraction``), tried in turn: ±pitch/4 first; nearer M
+#: where the contact cannot be followed that far (Litvin & Fuentes 2004 §9.4: the
+#: parabolic TE is prescribed by a21 at M; the rolls it is imposed at are the synthesis'
+#: choice). On a hypoid 8x41 with a narrow face (b2 22 mm, β_m1 52°, a 30 mm, ISO 23509
+#: Method 1; ε_vα 0.94) the drive flank's contact at the synthesis' default prescriptions
+#: climbs to the pinion's tip before +pitch/4 (pinion radius 26.2 → 31.2 mm at roll
+#: 0.049 → 0.196 rad) and the roll solve stalls there (residual 0.09 mm at pitch/4,
+#: 0.008 mm at 7/32 of the pitch), while ±pitch/6 is followed to 1e-12 mm
+ROLL_FRACTIONS = (0.25, 1.0 / 6.0, 0.125)
+
+
 def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
-               pitch: float, **kw) -> PinionTools:
-    """Modified roll 6D, 24E that put the TE at ±pitch/4 on the prescribed parabola.
+              pitch: float, fraction: float = 0.25, **kw) -> PinionTools:
+    """Modified roll 6D, 24E that put the TE at ±pitch/4 (``fraction`` × pitch) on the
+    prescribed parabola.
 
     Newton iteration with a finite-difference Jacobian (the TE is nearly linear in 6D and
     24E, which do not change the surface to second order at M, where q = 0); tolerance 0.5 %
@@ -145,7 +158,7 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
     the coefficients within ~1e-6 relative; 0.36 against 1.40 s of CPU per trial
     synthesis of the passenger-car hypoid 10x43, docs/performance.md).
     """
-    h = 0.25 * pitch
+    h = fraction * pitch
     level = 0.5 * a21 * h * h
     rolls = (h, -h)
 

@@ -40,7 +40,6 @@ from dataclasses import replace
 from typing import NamedTuple
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from geometry.case import Blank
 from geometry.core.errors import InputError
@@ -67,6 +66,52 @@ _U_SAMPLES = np.linspace(0.0, 1.0, 11)
 #: smooth root line does not turn twice between two samples 0.1 apart); lower, the
 #: interval is searched (a face-hobbed root line can peak just inside the heel)
 _END_PROBE = 1e-3
+
+
+#: points of each level of :func:`_highest_between`'s search, and its levels: the bracket
+#: of two sample intervals (0.2 of the face) narrowed to 2 of 16 steps per level, then a
+#: parabola through the last level's three highest points
+_REFINE_POINTS = 17
+_REFINE_LEVELS = 2
+
+
+def _highest_between(depth_at, lo: float, hi: float) -> tuple[float, float]:
+    """The lengthwise fraction in [lo, hi] where a root line is highest, and its depth
+    [mm] (least depth below the root cone), from ``depth_at(u)`` (depth (n,) [mm] at the
+    fractions u (n,), NaN where not generated).
+
+    The root line's points are solved by one fillet march for any number of fractions at
+    nearly the cost of one (:func:`geometry.machine.root_line.section_march`), so the
+    search evaluates whole grids: :data:`_REFINE_LEVELS` grids of :data:`_REFINE_POINTS`
+    fractions, each over the two steps either side of the last one's highest point, then
+    the vertex of the parabola through the last grid's highest point and its neighbours
+    (kept where it is higher): 3 marches instead of the ~6 of a bounded scalar search
+    (``scipy.optimize.minimize_scalar``, xatol 1e-4, used before 2026-11-26; issue 75). The
+    vertex lies within ~1e-6 of the maximum on a smooth root line (grid step 1.6e-3 of
+    the face), the depth there within round-off of the highest: the placement's
+    tolerance (:data:`TOUCH_TOLERANCE`) is met as before.
+    """
+    best_u, best_d = math.nan, math.inf
+    u = d = np.empty(0)
+    j = 0
+    for _ in range(_REFINE_LEVELS):
+        u = np.linspace(lo, hi, _REFINE_POINTS)
+        d = np.asarray(depth_at(u), dtype=float)
+        d = np.where(np.isfinite(d), d, np.inf)
+        j = int(np.argmin(d))
+        if d[j] < best_d:
+            best_u, best_d = float(u[j]), float(d[j])
+        lo, hi = float(u[max(j - 1, 0)]), float(u[min(j + 1, u.size - 1)])
+    if 0 < j < u.size - 1 and np.all(np.isfinite(d[j - 1:j + 2])):
+        # the parabola's vertex through (u[j-1], u[j], u[j+1]) (equal steps h)
+        h = float(u[1] - u[0])
+        curv = d[j - 1] - 2.0 * d[j] + d[j + 1]
+        if curv > 0.0:
+            x = float(u[j]) + 0.5 * h * (d[j - 1] - d[j + 1]) / curv
+            dx = float(np.asarray(depth_at(np.array([x])), dtype=float)[0])
+            if np.isfinite(dx) and dx < best_d:
+                best_u, best_d = x, dx
+    return float(best_u), float(best_d)
 
 
 def move_tip_plane(blade: Blade, settings: MachineSettings, depth: float
@@ -213,8 +258,22 @@ class TipPlacement(NamedTuple):
     root_line: RootLine  # of the placed tip plane at the sample fractions
 
 
+def _started(blade: Blade, settings: MachineSettings, start: tuple[float, float] | None
+             ) -> tuple[Blade, MachineSettings, float]:
+    """The cut moved to ``start``'s move Δ [mm] (:func:`tip_plane_on_root_cone`) and Δ;
+    the cut itself and 0.0 where there is no start or the blade cannot take it."""
+    if start is None or not math.isfinite(start[0]) or start[0] == 0.0:
+        return blade, settings, 0.0
+    try:
+        b, s = move_tip_plane(blade, settings, float(start[0]))
+    except InputError:
+        return blade, settings, 0.0
+    return b, s, float(start[0])
+
+
 def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank,
-                           hand: str, *, tol: float = TOUCH_TOLERANCE) -> TipPlacement:
+                           hand: str, *, tol: float = TOUCH_TOLERANCE,
+                           start: tuple[float, float] | None = None) -> TipPlacement:
     """The tip plane whose generated root line touches the blank's root cone from below.
 
     Parameters
@@ -225,6 +284,12 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     hand : str
     tol : float — [mm] accepted distance of the root line's highest point from the
         root cone (default 1e-9 mm)
+    start : (float, float), optional — a near cut's placement (its move Δ [mm] and the
+        fraction where its root line touched): the secant steps start there instead of
+        at the given tip plane's whole search (a development's variants of one flank
+        differ by micrometres; issue 75). The placement found meets ``tol`` and is
+        confirmed by the whole search as without it: the same tip plane within ``tol``.
+        A start the blade cannot take (:func:`move_tip_plane` refuses it) is ignored.
 
     Returns
     -------
@@ -243,7 +308,8 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     member's face cone keeps its clearance there, ISO 23509's whole depth) and should not
     run deeper than that needs (it weakens the tooth): its highest point is put on the
     root cone. Its height over the face is sampled at 11 sections and each sampled local
-    highest point refined by a bounded scalar search between its neighbours, but for an
+    highest point refined between its neighbours (grids of fractions, then a parabola:
+    :func:`_highest_between`), but for an
     end section lying above the point 0.001 inside it, which is its interval's highest (a
     face-hobbed root line can peak a fraction of a µm between the heel section and the
     next: there the point inside is higher and the interval is searched); the move is
@@ -294,12 +360,11 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
                 x = float(line.u[k]) + (_END_PROBE if k == 0 else -_END_PROBE)
                 if float(root_line(b, s, [x]).depth[0]) >= dep[k]:
                     continue
-            res = minimize_scalar(
-                lambda x: float(root_line(b, s, [x]).depth[0]),
-                bounds=(float(line.u[max(k - 1, 0)]), float(line.u[min(k + 1, last)])),
-                method="bounded", options={"xatol": 1e-4})
-            if res.fun < d_best:
-                u_best, d_best = float(res.x), float(res.fun)
+            u_k, d_k = _highest_between(
+                lambda x, b=b, s=s: root_line(b, s, x).depth,
+                float(line.u[max(k - 1, 0)]), float(line.u[min(k + 1, last)]))
+            if d_k < d_best:
+                u_best, d_best = u_k, d_k
         return u_best, d_best
 
     def near(b: Blade, s: MachineSettings, u_last: float) -> tuple[float, float]:
@@ -311,10 +376,11 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
         k = int(np.argmin(line.depth))
         return float(line.u[k]), float(line.depth[k])
 
-    moved, (u_top, top) = 0.0, highest(blade, settings)
-    b, s = blade, settings
+    b, s, moved = _started(blade, settings, start)
+    searched = moved == 0.0  # (u_top, top) from the whole search, not from near()
+    u_top, top = (highest(b, s) if searched
+                  else near(b, s, float(np.clip(start[1], 0.0, 1.0))))
     prev = None
-    searched = True  # (u_top, top) from the whole search, not from near()
     for _ in range(16):
         if abs(top) <= tol:
             if searched:

@@ -26,7 +26,6 @@ factorise           factorise the stiffness matrix with its constrained dofs rem
 resolve_solver      the solver "auto" (or a name) stands for here
 lattice_dissection  nested dissection of a structured mesh's node lattice for CHOLMOD (the
                     influence build's ordering)
-nested_dissection   METIS's fill-reducing ordering for CHOLMOD, where pymetis is installed
                     (not used by the build since the lattice's: as good, no dependency)
 stress_operator     sparse map from displacements to stress components at points
 """
@@ -68,7 +67,6 @@ __all__ = [
     "isolation_available",
     "lame",
     "lattice_dissection",
-    "nested_dissection",
     "resolve_solver",
     "stress_operator",
 ]
@@ -320,9 +318,18 @@ class Factorisation:
             self._close()
             self._close = None
 
-    def solve(self, rhs: np.ndarray) -> np.ndarray:
-        """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N]; the
-        constrained dofs are zero and their loads ignored (reactions)."""
+    def solve(self, rhs: np.ndarray | sp.spmatrix) -> np.ndarray:
+        """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N], dense or
+        sparse (3N, k) (the unit loads: their free rows made dense at once, in the
+        Fortran order the solver takes, issue 75); the constrained dofs are zero and
+        their loads ignored (reactions)."""
+        if sp.issparse(rhs):
+            b_free = sp.csr_matrix(rhs)[self.free].toarray(order="F").astype(float,
+                                                                             copy=False)
+            out = np.zeros((self.n_dofs, b_free.shape[1]))
+            out[self.free] = self._solve(b_free if b_free.shape[1] > 1 else
+                                         np.ascontiguousarray(b_free))
+            return out
         b = np.asarray(rhs, dtype=float)
         vec = b.ndim == 1
         b2 = b[:, None] if vec else b
@@ -548,13 +555,17 @@ class _LeanWorker(_Worker):
                 raise
         low, ordering = box.pop()
         self.busy = True
-        try:
-            self.conn.send(("cholmod", low.data, low.indices, low.indptr, low.shape[0],
-                            ordering))
+        try:  # the arrays as raw bytes, not pickled: no copy of the matrix on either side
+            from contact.compliance.fe.solver_worker import send_array
+
+            self.conn.send(("cholmod-raw", low.shape[0], ordering is not None))
+            for array in (low.data, low.indices, low.indptr) + (
+                    (ordering,) if ordering is not None else ()):
+                send_array(self.conn, "array", array)
         except BaseException:
             self.kill()
             raise
-        del low
+        del low, ordering
 
 
 def lean_worker_available() -> bool:
@@ -581,57 +592,6 @@ def isolation_available() -> bool:
 
     return ("fork" in multiprocessing.get_all_start_methods()
             and not multiprocessing.current_process().daemon)
-
-
-def nested_dissection(element_dofs: np.ndarray, n_nodes: int,
-                      free: np.ndarray) -> np.ndarray | None:
-    """A fill-reducing ordering of the free dofs for CHOLMOD: METIS's nested dissection of
-    the mesh's node graph (pymetis, where installed: the ``fe`` extra), each node's three
-    dofs together.
-
-    Parameters
-    ----------
-    element_dofs : ndarray (nb, E) of int — each element's scalar dofs (nodes)
-    n_nodes : int — scalar dofs N
-    free : ndarray (F,) of int — the unconstrained vector dofs (3 n + c), increasing
-
-    Returns
-    -------
-    ndarray (F,) of int64 or None
-        Entry k: the position in ``free`` of the dof eliminated k-th (``factorise``'s
-        ``ordering``); None where pymetis is not installed (CHOLMOD then orders by AMD,
-        cvxopt's CHOLMOD having no METIS of its own).
-
-    Notes
-    -----
-    G. Karypis, V. Kumar 1998, "A fast and high quality multilevel scheme for partitioning
-    irregular graphs", *SIAM J. Sci. Comput.* 20(1) 359–392 (METIS); A. George 1973,
-    "Nested dissection of a regular finite element mesh", *SIAM J. Numer. Anal.* 10(2)
-    345–363. On the default pinion model (issue 75): the factorisation 4.2 → 2.4 s, the
-    solves −15 %, the factor ~100 MB smaller, for 0.6 s of ordering (docs/performance.md).
-    The influence build orders by :func:`lattice_dissection` instead (the same fill or
-    less on the default models, no dependency, 0.2 s); this one is kept for meshes
-    without a lattice.
-    """
-    try:
-        import pymetis
-    except ImportError:
-        return None
-    nb = element_dofs.shape[0]
-    nodes = element_dofs.T
-    graph = sp.csr_matrix((np.ones(nodes.size * nb, dtype=np.int8),
-                           (np.repeat(nodes, nb, axis=1).ravel(),
-                            np.tile(nodes, (1, nb)).ravel())), shape=(n_nodes, n_nodes))
-    graph.setdiag(0)
-    graph.eliminate_zeros()
-    graph.sort_indices()
-    if hasattr(pymetis, "CSRAdjacency"):  # pymetis 2025.2 on
-        order, _ = pymetis.nested_dissection(pymetis.CSRAdjacency(graph.indptr,
-                                                                  graph.indices))
-    else:
-        order, _ = pymetis.nested_dissection(xadj=graph.indptr, adjncy=graph.indices)
-    del graph
-    return _free_ordering(order, n_nodes, free)
 
 
 #: [1] nodes of a part of the lattice ordered without a further cut (:func:`lattice_dissection`)
@@ -765,6 +725,29 @@ def resolve_solver(solver: str = "auto") -> str:
     return solver
 
 
+def _free_lower(stiffness: sp.spmatrix, free: np.ndarray) -> sp.csc_matrix:
+    """The lower triangle of K's free rows and columns, (F, F) CSC (what CHOLMOD reads):
+    ``sp.tril(K)[free][:, free].tocsc()`` entry for entry, in one pass over K's
+    non-zeros (renumbered, filtered, counted per row) instead of a copy for the triangle
+    and one for each slice (~0.6 s less per member of the default case, issue 75)."""
+    k = sp.csr_matrix(stiffness)
+    n = k.shape[0]
+    index = np.int32 if n < 2**31 else np.int64
+    renum = np.full(n, -1, dtype=index)
+    renum[free] = np.arange(free.size, dtype=index)
+    rows = np.repeat(renum, np.diff(k.indptr))  # each entry's free row (−1: fixed)
+    cols = renum[k.indices]
+    keep = (cols >= 0) & (rows >= cols)  # a free column on or below the diagonal
+    del cols
+    counts = np.bincount(rows[keep], minlength=free.size)
+    del rows
+    indptr = np.r_[0, np.cumsum(counts)]
+    low = sp.csr_matrix((k.data[keep], renum[k.indices[keep]], indptr),
+                        shape=(free.size, free.size))
+    low.has_sorted_indices = k.has_sorted_indices  # renumbering keeps the order
+    return low.tocsc()
+
+
 def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "auto", *,
               isolated: bool = False, ordering: np.ndarray | None = None) -> Factorisation:
     """Factorise K with the ``fixed_dofs`` removed (homogeneous Dirichlet conditions).
@@ -784,7 +767,7 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
         other solvers' a fork of this process. The matrix, the right-hand sides and the
         solutions go through a pipe (~40 MB per block of 64, tens of ms).
     ordering : ndarray (F,) of int, optional — CHOLMOD's fill-reducing permutation of the
-        free dofs (:func:`nested_dissection`; entry k: the free dof eliminated k-th);
+        free dofs (:func:`lattice_dissection`; entry k: the free dof eliminated k-th);
         None: CHOLMOD's own (AMD). Ignored by the other solvers. Call
         :meth:`Factorisation.close` when done (the worker also ends with this process).
 
@@ -807,7 +790,7 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     n = stiffness.shape[0]
     free = np.setdiff1d(np.arange(n), fixed)
     if solver == "cholmod":  # its lower triangle only: half the memory of K_ff
-        a = sp.tril(stiffness, format="csr")[free][:, free].tocsc()
+        a = _free_lower(stiffness, free)
     else:
         a = sp.csr_matrix(stiffness)[free][:, free].tocsc()
     # K itself is no longer needed here: a caller that handed over its only reference

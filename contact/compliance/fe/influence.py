@@ -190,8 +190,8 @@ class InfluenceModel:
         k = self.solid.layout.neighbours
         return list(range(-k, k + 1))
 
-    def solve(self, rhs: np.ndarray) -> np.ndarray:
-        """Displacements [mm] of loads ``rhs`` (3N, k) [N]."""
+    def solve(self, rhs) -> np.ndarray:
+        """Displacements [mm] of loads ``rhs`` (3N, k) [N], dense or sparse."""
         return self.factor.solve(rhs)
 
     def compliance_of(self, disp: np.ndarray) -> np.ndarray:
@@ -639,7 +639,7 @@ def influence_dataset(model: InfluenceModel, case, *, progress: bool | str = Tru
                  "build)", case.name, member, kept, nl)
     bar = _load_progress(progress, nl, kept, f"FE {member} unit loads")
     for lo, hi in todo:
-        disp = model.solve(model.loads[0][:, lo:hi].toarray())
+        disp = model.solve(model.loads[0][:, lo:hi])  # sparse: its free rows made dense
         solved = {"compliance": model.compliance_of(disp),
                   "centreline": model.centreline_of(disp), "stress": model.stress_of(disp)}
         del disp

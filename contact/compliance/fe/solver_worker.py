@@ -2,7 +2,9 @@
 
 ``python solver_worker.py FD [LABEL ...]``: a connection on file descriptor FD
 (:class:`multiprocessing.connection.Connection`) brings the lower triangle of the matrix
-(``("cholmod", data, indices, indptr, n)``, CSC); the worker factorises it
+(``("cholmod-raw", n, ordered)`` followed by data, indices, indptr and, where ordered,
+the ordering, each as :func:`send_array` sends it; or pickled, ``("cholmod", data,
+indices, indptr, n, ordering)``, CSC); the worker factorises it
 (:func:`contact.compliance.fe.cholmod_dense.cholmod_kernel`), answers ``("ready", nnz,
 seconds)`` or ``("error", exception)``, then answers each block of right-hand sides it
 receives (a header ``("block", shape, dtype[, "F"])`` and the raw bytes, :func:`send_array`) with
@@ -157,7 +159,12 @@ def main(argv: list[str]) -> None:
         request = conn.recv()
     except (EOFError, OSError):
         return
-    box = [tuple(request[1:])]
+    if request[0] == "cholmod-raw":  # ("cholmod-raw", n, ordered), then the arrays raw
+        arrays = [recv_array(conn, conn.recv()) for _ in range(4 if request[2] else 3)]
+        box = [(*arrays[:3], request[1], arrays[3] if request[2] else None)]
+        del arrays
+    else:  # ("cholmod", data, indices, indptr, n, ordering), pickled
+        box = [tuple(request[1:])]
     del request
     serve(conn, lambda b: _kernel_module().cholmod_kernel(b), box)
 

@@ -214,5 +214,6 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     return (f"face contact ratio eps_vb {r.eps_vb:.2f} is below {r.target:g}, the least "
             "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
             "hands the load from pair to pair through one pair over much of the mesh cycle, "
-            "which no bearing lever (TE level, ellipse, relief) changes (docs/own_gear_set.md, "
-            f"'A face contact ratio below 1.25'); {remedy}")
+            "which the bearing's levers (a longer ellipse, a relief entering later, a flatter "
+            "TE parabola) offset only in part (docs/own_gear_set.md, 'A face contact ratio "
+            f"below 1.25'); {remedy}")
