@@ -549,8 +549,11 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     edge 0.5 %, no plastic segment; the pattern's heel end jumps to the heel at 0.47 (its
     ease-off falls towards the heel at the tip), so 0.05 per step. At the ISO capacity
     (41.5 / 276.7 N m) −88° / 0.4 gives 30 / 62 µrad, no plastic, and −88° / 0.45 2.1 % of
-    the torque plastic at the heel (docs/synthesis.md, "Why the pattern is short and the
-    LTE high"). Formate designs keep :data:`PATH_STEPS` (their developed cases unchanged)."""
+    the torque plastic at the heel. Its development now writes −88° / 0.4 (``ltca run``
+    at 26.3 / 175.6 N m: 38.7 / 81.7 µrad, against 43.3 / 92.4 at −80°): the 0.45 reaches
+    the heel at the mounting excursions, not kept (docs/synthesis.md, "Why the pattern is
+    short and the LTE high"). Formate designs keep :data:`PATH_STEPS` (their developed
+    cases unchanged)."""
     names = ("path_angle", "ellipse_length")
     if (best.full is None or not best.checked
             or not all(n in targets.variables and n in best.values for n in names)):
