@@ -497,11 +497,11 @@ PATH_STEPS = ((-15.0, -0.05), (-30.0, -0.1))
 
 #: the check's steps of the path angle towards the profile [deg] and of the ellipse [1]
 #: where a **generated** gear's light-load pattern is too short (:func:`_checked_path`):
-#: the turns of :data:`PATH_STEPS` with the ellipse lengthened by 0.05 (not 0.1: that ran
-#: the 20x30's pattern onto the heel) and the far turn without it (at the ISO capacity the
-#: longer ellipse loads the heel edge; after the design torque is lowered the steps run
-#: again, and there it does not)
-GENERATED_PATH_STEPS = ((-15.0, 0.05), (-30.0, 0.0), (-30.0, 0.05))
+#: the turns of :data:`PATH_STEPS` with the ellipse lengthened by 0.04 (0.05 and more
+#: ran the 20x30's pattern onto the heel at the mounting excursions) and the far turn
+#: without it (at the ISO capacity the longer ellipse loads the heel edge; after the
+#: design torque is lowered the steps run again, and there it does not)
+GENERATED_PATH_STEPS = ((-15.0, 0.04), (-30.0, 0.0), (-30.0, 0.04))
 
 
 #: [deg] how far :data:`GENERATED_PATH_STEPS` turn the path where the development's
@@ -547,12 +547,14 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     ``ltca run``'s sampling at 25.65 / 171 N m): path −80° / ellipse 0.4 (the −80° bound
     reached): pattern 0.35–0.73, LTE 45 / 92 µrad; −88° / 0.45: 0.35–0.80, 31 / 53 µrad,
     edge 0.5 %, no plastic segment; the pattern's heel end jumps to the heel at 0.47 (its
-    ease-off falls towards the heel at the tip), so 0.05 per step. At the ISO capacity
+    ease-off falls towards the heel at the tip), so 0.04 per step. At the ISO capacity
     (41.5 / 276.7 N m) −88° / 0.4 gives 30 / 62 µrad, no plastic, and −88° / 0.45 2.1 % of
-    the torque plastic at the heel. Its development now writes −88° / 0.4 (``ltca run``
-    at 26.3 / 175.6 N m: 38.7 / 81.7 µrad, against 43.3 / 92.4 at −80°): the 0.45 reaches
-    the heel at the mounting excursions, not kept (docs/synthesis.md, "Why the pattern is
-    short and the LTE high"). Formate designs keep :data:`PATH_STEPS` (their developed
+    the torque plastic at the heel. With steps of 0.05 its development wrote −88° / 0.4
+    (``ltca run`` at 26.3 / 175.6 N m: 38.7 / 81.7 µrad, against 43.3 / 92.4 at −80°): the
+    0.45 reaches the heel at the mounting excursions, not kept; at those torques −88° /
+    0.44 gives 0.35–0.78, 32 / 58 µrad and stays clear of toe and heel at every
+    excursion (docs/synthesis.md, "Why the pattern is short and the LTE high"). Formate
+    designs keep :data:`PATH_STEPS` (their developed
     cases unchanged)."""
     names = ("path_angle", "ellipse_length")
     if (best.full is None or not best.checked
