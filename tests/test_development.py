@@ -1026,6 +1026,48 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
     assert "ellipse_length 0.65" in lines[1] and "path_angle -80" in lines[1]
 
 
+def test_the_check_lengthens_a_generated_gears_short_bearing_along_the_profile(monkeypatch):
+    """Where a generated gear's checked light-load pattern is too short, the check's path
+    steps are GENERATED_PATH_STEPS: the path turned by 15° with the ellipse 0.04 longer,
+    then by 30° (clipped to GENERATED_PATH_LIMIT, −88°, the default bounds' −80° passed)
+    without and with the longer ellipse, the best kept; a Formate gear's design (or one
+    whose case does not say) keeps PATH_STEPS, its ellipse unchanged for a short pattern
+    and its path clipped at −80°. Stand-in analyses: length = ellipse − 0.1, the LTE
+    falls as the path turns towards the profile (130 µrad + the path angle in degrees;
+    the test is the decisions, the numbers of the generated 20x30 are
+    development_check._checked_path's)."""
+    from types import SimpleNamespace
+
+    from contact.optimize import development as dev
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        n = case["ellipse_length"] - 0.1
+        lte = 130.0 + case["path_angle"]
+        return (_metrics(pattern_toe_u=[0.45 - n / 2, 0.1], pattern_heel_u=[0.45 + n / 2, 0.9],
+                         lte_peak_to_peak=[lte, lte]), (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [25.65, 171.0], "centre_v": 0.6}
+    values = {"path_angle": -58.75, "ellipse_length": 0.4}  # 0.3 long, 71 µrad
+    start = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
+    assert start.full[1]["length"] > 0.0
+    lines = []
+    generated = dataclasses.replace(start, case=SimpleNamespace(
+        gear=SimpleNamespace(process="Generate")))
+    got = dcheck._checked_path(generated, targets, setup, None, lines.append,
+                               lambda v: dict(v))
+    assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
+            for s in lines] == [("-73.8", "0.44"), ("-88", "0.4"), ("-88", "0.44")]
+    assert got.values["path_angle"] == dcheck.GENERATED_PATH_LIMIT == -88.0
+    assert got.values["ellipse_length"] == pytest.approx(0.44, abs=1e-12)
+    lines.clear()
+    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
+            for s in lines] == [("-73.8", "0.4"), ("-80", "0.4")]
+    assert got.values == {"path_angle": -80.0, "ellipse_length": 0.4}
+
+
 def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
     """At the check, a light-load footprint centre above its tolerance with the design
     torque's edge share at most half its limit gets designs with 0.8, 2/3, 1/2 of the tip

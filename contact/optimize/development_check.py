@@ -53,6 +53,7 @@ from contact.optimize.development_targets import (
     HEIGHT_NAME,
     METRIC_NAMES,
     TE_NAME,
+    VARIABLES,
     DevelopmentTargets,
     development_score,
 )
@@ -584,6 +585,23 @@ def final_tolerance(case: Case, targets: DevelopmentTargets, setup: Mapping[str,
 PATH_STEPS = ((-15.0, -0.05), (-30.0, -0.1))
 
 
+#: the check's steps of the path angle towards the profile [deg] and of the ellipse [1]
+#: where a **generated** gear's light-load pattern is too short (:func:`_checked_path`):
+#: the turns of :data:`PATH_STEPS` with the ellipse lengthened by 0.04 (0.05 and more
+#: ran the 20x30's pattern onto the heel at the mounting excursions) and the far turn
+#: without it (at the ISO capacity the longer ellipse loads the heel edge; after the
+#: design torque is lowered the steps run again, and there it does not)
+GENERATED_PATH_STEPS = ((-15.0, 0.04), (-30.0, 0.0), (-30.0, 0.04))
+
+
+#: [deg] how far :data:`GENERATED_PATH_STEPS` turn the path where the development's
+#: ``path_angle`` bounds are the defaults (:data:`~contact.optimize.development_targets.
+#: VARIABLES`, whose −80° the Formate designs' steps keep): nearly along the profile,
+#: where the light-load pattern is the ellipse alone and the most tooth pairs share the
+#: transfer (the 20x30's numbers in :func:`_checked_path`)
+GENERATED_PATH_LIMIT = -88.0
+
+
 def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                   setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
                   placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
@@ -609,7 +627,25 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     design, path −66.9°, ellipse 0.7, ``ltca run``'s sampling at 36.98 / 246.5 N m; LTE
     19 / 50 µrad, pattern 0.53 long) the ellipse 0.75 gave 17 / 44 µrad, 0.55 long, as
     the path −75° did; the earlier rule, the ellipse shortened wherever the pattern was
-    longer than its target's middle, had taken it from 0.75 to 0.7 (2026-11-25)."""
+    longer than its target's middle, had taken it from 0.75 to 0.7 (2026-11-25).
+
+    A **generated** gear's pattern too short (below the target's middle, beyond its
+    tolerance) takes :data:`GENERATED_PATH_STEPS` instead: the ellipse lengthened with the
+    turn, the path turned as far as :data:`GENERATED_PATH_LIMIT` where its bounds are the
+    defaults (at most 3 designs). The generated spiral bevel 20x30 of
+    tests/data/generated_gear (ε_vβ 1.26; its developed relief, ``te_level`` 10 µrad,
+    ``ltca run``'s sampling at 25.65 / 171 N m): path −80° / ellipse 0.4 (the −80° bound
+    reached): pattern 0.35–0.73, LTE 45 / 92 µrad; −88° / 0.45: 0.35–0.80, 31 / 53 µrad,
+    edge 0.5 %, no plastic segment; the pattern's heel end jumps to the heel at 0.47 (its
+    ease-off falls towards the heel at the tip), so 0.04 per step. At the ISO capacity
+    (41.5 / 276.7 N m) −88° / 0.4 gives 30 / 62 µrad, no plastic, and −88° / 0.45 2.1 % of
+    the torque plastic at the heel. With steps of 0.05 its development wrote −88° / 0.4
+    (``ltca run`` at 26.3 / 175.6 N m: 38.7 / 81.7 µrad, against 43.3 / 92.4 at −80°): the
+    0.45 reaches the heel at the mounting excursions, not kept; at those torques −88° /
+    0.44 gives 0.35–0.78, 32 / 58 µrad and stays clear of toe and heel at every
+    excursion (docs/synthesis.md, "Why the pattern is short and the LTE high"). Formate
+    designs keep :data:`PATH_STEPS` (their developed
+    cases unchanged)."""
     names = ("path_angle", "ellipse_length")
     if (best.full is None or not best.checked
             or not all(n in targets.variables and n in best.values for n in names)):
@@ -621,11 +657,18 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     length = best.metrics["pattern_heel_u"][0] - best.metrics["pattern_toe_u"][0]
     longest = targets.pattern_length + targets.pattern_length_tolerance
     base, tried = best, []
-    for turn, shorter in PATH_STEPS:
+    # a generated gear's pattern too short: the ellipse lengthened at each turn, the path
+    # turned nearly along the profile where the bounds are the defaults
+    lengthen = (getattr(getattr(best.case, "gear", None), "process", None) == "Generate"
+                and short["length"] > 0.0 and length < targets.pattern_length)
+    if lengthen and tuple(targets.variables["path_angle"]) == tuple(VARIABLES["path_angle"]):
+        p_lo = min(p_lo, GENERATED_PATH_LIMIT)
+    for turn, shorter in GENERATED_PATH_STEPS if lengthen else PATH_STEPS:
         # the ellipse shortened where the pattern is too long; lengthened where the LTE
         # alone is missed and the pattern has room for it (the lengthwise crowning
         # lowered: more of the face carries the transfer at the design torque)
-        change = (shorter if short["length"] > 0.0 and length > targets.pattern_length
+        change = (shorter if lengthen
+                  else shorter if short["length"] > 0.0 and length > targets.pattern_length
                   else -shorter if short["length"] == 0.0 and length - shorter <= longest
                   else 0.0)
         values = base.values | {
