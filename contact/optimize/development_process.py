@@ -48,14 +48,25 @@ TORQUE_CUT_FRACTION = 0.5
 
 def _flank_fails(metrics: Any, torques: tuple[float, ...], flank: str) -> list[str]:
     """The verdict's FAIL criteria a flank's (light, design) metrics meet: the LTE spread
-    and the plastic share beyond :mod:`contact.ltca.plausibility`'s limits."""
+    and the plastic share beyond :mod:`contact.ltca.plausibility`'s limits — an LTE spread
+    the verdict reads as a quiet mesh's own transfer (no edge share, LTE p-p within its
+    ``lte`` limit: :func:`contact.study.verdicts.quiet_transfer`) an attention there, and
+    no FAIL here."""
+    from contact.study.verdicts import quiet_transfer
+
     if metrics is None:
         return []
     out = []
+    pp = np.asarray(metrics.get("lte_peak_to_peak", (math.nan, math.nan)), float)
+    edge = np.asarray(metrics.get("edge_load_share", (math.nan, math.nan)), float)
+    quiet = (quiet_transfer(pp, edge) if pp.shape == edge.shape and "edge_load_share"
+             in metrics else np.zeros(pp.shape, bool))
     for name, limit, what in (("lte_spread", LTE_SPREAD_LIMIT, "LTE spread"),
                               ("plastic_share", PLASTIC_SHARE_LIMIT, "plastic share")):
         values = np.asarray(metrics.get(name, (math.nan, math.nan)), float)
         for k, v in enumerate(values):
+            if name == "lte_spread" and k < quiet.size and quiet[k]:
+                continue
             if math.isfinite(v) and v > limit:
                 at = f" at {torques[k]:.4g} N m" if k < len(torques) else ""
                 out.append(f"{flank} {what} {v:.2f}{at} (limit {limit:g})")
