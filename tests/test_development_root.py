@@ -152,9 +152,10 @@ def test_a_failed_analysis_is_said_not_raised(monkeypatch):
 
 def test_floor_torque_rounds_down_and_never_to_zero():
     """The development's torques are rounded down for the case it writes: to 0.1 N·m from
-    1 N·m up, to 4 significant digits from 1000 N·m up (the torques of every design of m_mn >= 3 mm unchanged), to two significant
-    digits below, so that a small gear's light torque (a module-1.6 spiral bevel at 2 N·m
-    carries 0.3 N·m at 15 %) is never written, nor analysed, as 0 N·m."""
+    1 N·m up (the torques of every design of m_mn >= 3 mm below 1000 N·m unchanged), to 4
+    significant digits from 1000 N·m up, to two significant digits below 1 N·m, so that a
+    small gear's light torque (a module-1.6 spiral bevel at 2 N·m carries 0.3 N·m at 15 %)
+    is never written, nor analysed, as 0 N·m."""
     import math
 
     from contact.optimize.development_result import floor_torque
