@@ -168,7 +168,7 @@ def _above_capacity_note(case, torque: float) -> str | None:
     a capacity (said by ``ltca run`` itself). Found on a hypoid 7x37 whose user's 150 N m,
     meant as "well below capacity", was above its 113 N m: S_H 0.87, ``ltca run`` FAIL
     with every development target met."""
-    from contact.load_capacity.iso10300.capacity import capacity_torque
+    from contact.load_capacity.iso10300.capacity import capacity_torque, floor_capacity
     from geometry.core.errors import InputError
 
     if not math.isfinite(torque):
@@ -183,19 +183,11 @@ def _above_capacity_note(case, torque: float) -> str | None:
     # (below the torque, which is shown as given): a user's 265 N m typed for the 264.96
     # N m capacity read "265 N m is above ... capacity 265 N m" (issue 71, unseen designs)
     return (f"the design torque {torque:g} N m is above the pair's ISO 10300 long-life "
-            f"capacity {_floor_digits(capacity, 4):.4g} N m (the torque at which S_H or S_F "
+            f"capacity {floor_capacity(capacity):.4g} N m (the torque at which S_H or S_F "
             "reaches its minimum): `ltca run` rates it FAIL at long life; a design torque at "
             "or below "
             "the capacity (the default, without [synthesis] design_torque), or the duty's "
             "load cycles as [rating] load_cycles, rates it for what it is")
-
-
-def _floor_digits(value: float, digits: int) -> float:
-    """``value`` > 0 rounded down to ``digits`` significant digits (a capacity shown so
-    that the number read is one the pair carries, as
-    :func:`contact.load_capacity.iso10300.capacity.with_design_torque` writes it)."""
-    step = 10.0 ** (math.floor(math.log10(value)) - (digits - 1))
-    return math.floor(value / step) * step
 
 
 def _size_scale(basic) -> float:

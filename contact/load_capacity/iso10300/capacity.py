@@ -25,7 +25,7 @@ import numpy as np
 
 from geometry.core.errors import InputError
 
-__all__ = ["capacity_torque", "design_torque", "with_coast_design_torque",
+__all__ = ["capacity_torque", "design_torque", "floor_capacity", "with_coast_design_torque",
            "with_design_torque"]
 
 #: the torques [N·m] the capacity is bracketed on (log-spaced, one rating call)
@@ -195,7 +195,7 @@ def with_design_torque(case, torque: float | None = None):
         return case, float(table["design_torque"]), "[rating] design_torque of the basic file"
     else:
         try:
-            value = _rounded_down(capacity_torque(case))
+            value = floor_capacity(capacity_torque(case))
         except InputError as exc:
             return case, math.nan, f"none: {exc}"
         why = ("the ISO 10300 capacity, the pinion torque at which the long-life safety "
@@ -203,10 +203,24 @@ def with_design_torque(case, torque: float | None = None):
     return _with_rating_field(case, table, "design_torque", value, why), value, why
 
 
-def _rounded_down(exact: float) -> float:
-    """A capacity [N·m] rounded *down* to 4 significant digits: the capacity is where
-    S = S_min exactly, and a design torque rounded up would fail its own rating by
-    round-off."""
+def floor_capacity(exact: float) -> float:
+    """A capacity rounded *down* to 4 significant digits, as the default design torque is
+    written: the capacity is where S = S_min exactly, and a design torque rounded up would
+    fail its own rating by round-off.
+
+    Parameters
+    ----------
+    exact : float — [N·m] the capacity (:func:`capacity_torque`), finite and > 0
+
+    Returns
+    -------
+    float — [N·m], at most ``exact``, 4 significant digits
+
+    Notes
+    -----
+    Source: the rounding rule of this module (no standard's): ISO 10300-1:2014 defines
+    the safety factors, not how a torque is printed.
+    """
     step = 10.0 ** (math.floor(math.log10(exact)) - 3)
     return float(f"{math.floor(exact / step) * step:.4g}")
 
@@ -274,7 +288,7 @@ def with_coast_design_torque(case):
         return case, math.nan
     if exact >= float(design):
         return case, math.nan
-    value = _rounded_down(exact)
+    value = floor_capacity(exact)
     why = ("the ISO 10300 capacity of the coast side (the pinion's convex flank driving), "
            "below the design torque; above it the coast side is rated at a finite life")
     return _with_rating_field(case, table, "coast_design_torque", value, why), value
