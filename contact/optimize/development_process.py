@@ -214,10 +214,8 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
         return first
     say(f"development: the Formate gear's design fails ({why}); developing the pair with "
         "a generated gear too (gear_process 'auto')")
-    generated = dataclasses.replace(
-        basic, options=dataclasses.replace(basic.options, gear_process="Generate"))
     try:
-        second = run(generated)
+        second = run(_generated(basic))
     except InputError as err:
         log.info("development: the generated gear has no developed design: %s", err)
         return dataclasses.replace(first, gear_process_text=(
@@ -238,6 +236,12 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
     return dataclasses.replace(kept, gear_process_text=text)
 
 
+def _generated(basic: Any) -> Any:
+    """``basic`` with ``gear_process = "Generate"``."""
+    return dataclasses.replace(
+        basic, options=dataclasses.replace(basic.options, gear_process="Generate"))
+
+
 def _generated_after_error(run: Callable[[Any], Any], basic: Any, err: InputError,
                            say: Callable[[str], None]) -> Any:
     """The development of ``basic`` with ``gear_process = "Generate"`` where its Formate
@@ -245,10 +249,8 @@ def _generated_after_error(run: Callable[[Any], Any], basic: Any, err: InputErro
     where the generated gear's development fails too."""
     say(f"development: the Formate gear's development stopped ({err}); developing the pair "
         "with a generated gear (gear_process 'auto')")
-    generated = dataclasses.replace(
-        basic, options=dataclasses.replace(basic.options, gear_process="Generate"))
     try:
-        second = run(generated)
+        second = run(_generated(basic))
     except InputError as again:
         log.info("development: the generated gear has no developed design: %s", again)
         raise err from None
