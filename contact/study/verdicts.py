@@ -488,9 +488,9 @@ def _implausible(lt: xr.Dataset, lte_limit: float) -> list[Finding]:
     from contact.ltca.plausibility import plausibility_flags
 
     texts = plausibility_warnings(lt)
-    flagged = plausibility_flags(lt)["lte_spread"]
     quiet = False
-    if np.any(flagged) and "lte_peak_to_peak" in lt:
+    if any(text.startswith("LTE spread") for text in texts):  # its flags read only then
+        flagged = plausibility_flags(lt)["lte_spread"]
         shares = _edge_shares(lt)  # none without the segments' forces: not known quiet
         quiet = bool(shares) and bool(np.all(quiet_transfer(
             lt["lte_peak_to_peak"].values, sum(shares.values()), lte_limit)[flagged]))
