@@ -535,6 +535,11 @@ def floor_torque(torque: float) -> float:
     ------
     ValueError
         ``torque`` not finite or not > 0.
+
+    Notes
+    -----
+    Source: this project's rounding rule (no standard prescribes one); from 1000 N·m up the
+    same 4-digit floor as :func:`contact.load_capacity.iso10300.capacity.floor_capacity`.
     """
     t = float(torque)
     if not (math.isfinite(t) and t > 0):
