@@ -34,7 +34,8 @@ from contact.ltca.discretisation import (
     gear_to_pair,
 )
 from contact.ltca.edges import edge_segments, flank_boundary
-from contact.utca import CURVE_SPACINGS, ContactCurves, EaseOff, EaseOffFields, contact_curves
+from contact.utca import CURVE_SPACINGS, ContactCurves, EaseOff, contact_curves
+from contact.utca.fields import fields_of
 
 __all__ = ["Segments", "roll_phases", "segment_geometry"]
 
@@ -199,7 +200,7 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
     (every roll computed: ``source`` is 0 … J − 1)."""
     # each segment is sampled at its ends and its middle (2S + 1 points along a curve);
     # its fields follow the quadratic through the three (SegmentQuadratic)
-    fields = EaseOffFields(eo)
+    fields = fields_of(eo)  # the unloaded cycle's, where the analysis built it
     cc = contact_curves(eo, target, n_point=2 * segments + 1, spacing=spacing,
                         near_misses=True, fields=fields)
     J, K = target.shape

@@ -341,15 +341,18 @@ def memo_info() -> dict[str, tuple]:
 
 def clear_memos() -> None:
     """Forget the memoised forward-map points and flank nodes, and the ease-offs computed
-    from them with their unloaded cycles (:func:`contact.utca.easeoff.ease_off`'s and
-    :func:`contact.utca.unloaded_tca`'s memos; frees memory)."""
+    from them with their unloaded cycles and fields (:func:`contact.utca.easeoff.ease_off`'s,
+    :func:`contact.utca.unloaded_tca`'s and :func:`contact.utca.fields.fields_of`'s memos;
+    frees memory)."""
     from contact.utca.datasets import clear_cycle_memo
     from contact.utca.easeoff import clear_ease_off_memo
+    from contact.utca.fields import _memo_fields
 
     _memo_forward_points.cache_clear()
     _memo_flank_nodes.cache_clear()
     clear_ease_off_memo()
     clear_cycle_memo()
+    _memo_fields.cache_clear()
 
 
 def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:

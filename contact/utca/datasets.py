@@ -41,7 +41,7 @@ from contact.utca.contact_curves import (
     pair_transmission_error,
 )
 from contact.utca.easeoff import EASEOFF_REASONS, EaseOff, ease_off
-from contact.utca.fields import EaseOffFields
+from contact.utca.fields import EaseOffFields, Same, fields_of
 from contact.utca.transitions import transitions
 from geometry import __version__
 from geometry.core.caches import memoised
@@ -172,21 +172,7 @@ def unloaded_tca(case: Case, *, misalignment: Misalignment | None = None,
     return easeoff_dataset(eo, case, misalignment=misalignment), ds
 
 
-class _Same:
-    """An object as a memo key compared by identity (an ease-off holds arrays: no hash of
-    its own); the key holds the object, so its ``id`` is not reused while the memo keeps
-    the entry."""
-
-    __slots__ = ("obj",)
-
-    def __init__(self, obj) -> None:
-        self.obj = obj
-
-    def __hash__(self) -> int:
-        return id(self.obj)
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, _Same) and other.obj is self.obj
+_Same = Same  # an object as a memo key compared by identity (contact.utca.fields.Same)
 
 
 @memoised(maxsize=8)
@@ -262,7 +248,7 @@ def unloaded_cycle(eo: EaseOff, *, n_roll: int = 30, pairs=(-1, 0, 1),
     reference pair's lowest UTE and M1, M2 are NaN.
     """
     pairs = _check_cycle_options(n_roll, pairs, method, n_point)
-    f = fields if fields is not None else EaseOffFields(eo)
+    f = fields if fields is not None else fields_of(eo)
     p = eo.pitch
     kw = dict(method=method, fields=f, n_point=n_point)
     m1, m2 = transitions(eo, **kw)

@@ -23,6 +23,7 @@ piece of each place's column: :meth:`EaseOffFields.solve_columns`).
 Public functions
 ----------------
 EaseOffFields   splines of an ease-off's fields and the contact region's tests
+fields_of       an ease-off's fields, built once per process and ease-off object
 kernels_module  the iso-line searches' implementation (NumPy, or numba's compiled kernels)
 """
 
@@ -37,11 +38,12 @@ from scipy.interpolate import BSpline, RectBivariateSpline
 from contact.utca.easeoff import EaseOff, fill_missing
 from contact.utca.piecewise import PiecewiseSpline, from_splines, piece_basis
 from contact.utca.spline_group import SplineGroup
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.kernels import KERNELS
 from geometry.core.kernels import kernels_module as select_kernels
 
-__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "kernels_module"]
+__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "fields_of", "kernels_module"]
 
 _KERNEL_MODULE = "contact.utca.isoline_numba"  # the iso-line searches' compiled kernels
 #: the scalar fields of :meth:`EaseOffFields.values` (and ``pos``, ``nrm``: three each)
@@ -538,3 +540,62 @@ class EaseOffFields:
         if miss is not None:
             bad |= miss
         return np.where(bad, np.nan, np.minimum(np.maximum(v, v0), v1))
+
+
+class Same:
+    """An object as a memo key compared by identity (an ease-off holds arrays: no hash of
+    its own); the key holds the object, so its ``id`` is not reused while the memo keeps
+    the entry."""
+
+    __slots__ = ("obj",)
+
+    def __init__(self, obj) -> None:
+        self.obj = obj
+
+    def __hash__(self) -> int:
+        return id(self.obj)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Same) and other.obj is self.obj
+
+
+def fields_of(eo: EaseOff, kernels: str | None = None) -> EaseOffFields:
+    """The :class:`EaseOffFields` of an ease-off, built once per process and ease-off
+    object.
+
+    Parameters
+    ----------
+    eo : contact.utca.easeoff.EaseOff
+        The ease-off (compared by identity: the object the ease-off memo,
+        :func:`contact.utca.easeoff.ease_off`, hands to every step of an analysis).
+    kernels : {"numpy", "numba"} or None
+        As :class:`EaseOffFields` (resolved first: the memo keeps one entry per
+        implementation).
+
+    Returns
+    -------
+    EaseOffFields
+        The same object to every caller with the same ease-off object (its splines are
+        fixed; what it computes lazily, the Q lattices and spline pieces, is the same
+        arithmetic whoever asks first): the unloaded cycle and the LTCA's segment geometry
+        of one analysis share one instead of building one each (~3–4 ms a build on the
+        default case), and the analyses of a torque series share the memoised ease-off's.
+
+    Raises
+    ------
+    InputError, ModelUnavailableError
+        As :class:`EaseOffFields`.
+
+    Notes
+    -----
+    Source: the splines of seed §2.3.2.2 (module docstring); the memo changes no number.
+    """
+    name = "numpy" if kernels_module(kernels) is None else "numba"
+    return _memo_fields(Same(eo), name)
+
+
+@memoised(maxsize=8)
+def _memo_fields(eo: Same, kernels: str) -> EaseOffFields:
+    """:class:`EaseOffFields` of ``eo.obj``, memoised per process by the ease-off object
+    and the kernels' name (:func:`fields_of`)."""
+    return EaseOffFields(eo.obj, kernels)
