@@ -249,11 +249,12 @@ def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str,
         out[name] = np.matmul(d, rot).reshape(p.shape)
     edge = _pinion_edges(ltca)
     if edge is not None and edge.any():
+        # (the pinion edges' segments alone: the same points, a fraction of the work)
         g = ltca["segment_position"].transpose("roll", "pair", "segment", "xyz").values
-        out["gear"] = np.where(edge[None, None, :, None],
-                               _onto_tooth(g, out["gear"],
-                                           2 * np.pi / case.member("gear").blank.teeth),
-                               out["gear"])
+        e = np.flatnonzero(edge)
+        gear = out["gear"]  # (made above: this function's own array)
+        gear[:, :, e] = _onto_tooth(g[:, :, e], gear[:, :, e],
+                                    2 * np.pi / case.member("gear").blank.teeth)
     return out
 
 
@@ -456,8 +457,7 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
     for r0 in range(0, reached.size, ROW_BLOCK):  # a block's temporaries stay in the cache
         block = slice(r0, r0 + ROW_BLOCK)
         # the largest over the sides and the fillet arc
-        smax[reached[block]] = np.where(root, _max_principal(tensor[block]),
-                                        -np.inf).max(axis=(1, 3))
+        smax[reached[block]] = _root_peak(tensor[block], root)
     done = np.ones(nt, bool)
     done[nan_t] = False
     out[done] = smax.reshape(nk, nu, -1)[:, inverse].swapaxes(0, 1).reshape(
@@ -517,6 +517,30 @@ def root_points(coef: xr.Dataset) -> np.ndarray:
     largest."""
     return coef.variables["fillet_in_root"].isel(tooth=0).transpose(
         "side", "station", "arc").values.astype(bool)
+
+
+def _root_peak(t: np.ndarray, root: np.ndarray) -> np.ndarray:
+    """(R, station) [MPa] the largest maximum principal stress over the sides and the
+    fillet arc of stresses ``t`` (R, side, station, arc, 6) in Voigt order, over the root
+    points ``root`` (side, station, arc) alone; −inf at a station without root points.
+
+    The same values as the largest of :func:`_max_principal` over all root points: with
+    q the mean stress and p the deviator's scale of Smith's closed form, every principal
+    value lies in [q − 2p, q + 2p] and the largest in [q + p, q + 2p] (its angle φ/3 ∈
+    [0, π/3]); a point whose q + 2p is below the largest q + p of its station cannot be
+    the station's largest, so the closed form's angles are evaluated only at the others
+    (a margin of 1e-9 of the values keeps round-off from dropping the largest).
+    """
+    q = (t[..., 0] + t[..., 1] + t[..., 2]) / 3.0
+    a, b, c = t[..., 0] - q, t[..., 1] - q, t[..., 2] - q
+    p = np.sqrt((a * a + b * b + c * c
+                 + 2.0 * (t[..., 3] ** 2 + t[..., 4] ** 2 + t[..., 5] ** 2)) / 6.0)
+    low = np.where(root, q + p, -np.inf).max(axis=(1, 3), keepdims=True)
+    high = q + 2.0 * p
+    cand = root & (high + 1e-9 * (np.abs(high) + np.abs(low)) >= low)
+    out = np.full(q.shape, -np.inf)
+    out[cand] = _max_principal(t[cand])
+    return out.max(axis=(1, 3))
 
 
 def _max_principal(t: np.ndarray) -> np.ndarray:
