@@ -100,6 +100,32 @@ def test_the_unloaded_cycle_of_one_ease_off_is_computed_once(case):
     for a, b, c in zip(first, second, fresh, strict=True):
         xr.testing.assert_identical(a, c)
         xr.testing.assert_identical(b, c)
+def test_the_ease_off_fields_are_built_once_per_ease_off(case):
+    """The unloaded cycle and the LTCA's segment geometry of one analysis read the fields
+    of one ease-off object (:func:`contact.utca.fields.fields_of`): one build, the same
+    object to both; another ease-off object, another kernel choice or emptied memos
+    give their own. The fields hold no result of their own (splines and lazily computed
+    lattices of the same arithmetic), so sharing them changes no number: the datasets
+    equal those of fresh fields (tests/test_study_memos.py's cycle test, the golden
+    files)."""
+    from contact.utca.fields import EaseOffFields, _memo_fields, fields_of
+
+    clear_memos()
+    eo = ease_off(case)
+    f = fields_of(eo)
+    assert isinstance(f, EaseOffFields) and f.eo is eo
+    assert fields_of(eo) is f
+    assert fields_of(eo, "numpy") is not f or f.kernels is None
+    from contact.utca.easeoff import clear_ease_off_memo
+
+    clear_ease_off_memo()
+    other = ease_off(case)  # an equal ease-off, another object
+    assert other is not eo and fields_of(other) is not f
+    clear_memos()
+    assert _memo_fields.cache_info().currsize == 0
+    assert fields_of(eo) is not f
+
+
 def test_operating_point_and_rating_are_not_teeth(case):
     """The development's checks analyse one case at several design torques, each written
     into its ``[operating]`` and ``[rating]`` tables (issue 71): neither changes a tooth,
