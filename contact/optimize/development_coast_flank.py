@@ -28,7 +28,7 @@ import numpy as np
 from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_check import (
     checked_best,
-    checked_coast_ellipse,
+    checked_coast_lte,
     checked_long,
 )
 from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
@@ -289,9 +289,9 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
 
         best = checked_best(evals, targets, setup, teeth, say, placed, side="coast",
                             key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
-        # an LTE above the verdict's limit: the ellipse one step longer
-        best = checked_coast_ellipse(best, targets, setup, teeth, say, placed,
-                                     key_prefix=prefix)
+        # an LTE above the verdict's limit: the ellipse longer, the path turned lengthwise
+        best = checked_coast_lte(best, targets, setup, teeth, say, placed,
+                                 key_prefix=prefix)
         # an LTE still missed: the long bearing (the drive flank's last check step)
         best = checked_long(best, targets, setup, teeth, say, placed, flank="coast",
                             key_prefix=prefix)
