@@ -26,6 +26,19 @@ Usage::
 
 (≈ 2 s CPU per design with a new steps 3-6, 0.3 s where only the relief, the blade angle
 or the crowning change.)
+
+``--flank coast --from-case CASE`` varies the **coast** flank of a case ``ltca synthesize``
+wrote from ``BASIC``: both flanks' developed prescriptions are read from the case's
+``[development]`` tables (the drive flank's kept, the coast flank's the base of
+``--vary``; a generated gear as the case's synthesis says), and the coast flank analysed
+at the torques given (its light and coast design torque), e.g.::
+
+    python benchmarks/development_levers.py tests/data/limits/hypoid_8x41_b22.toml \
+        --torques 28.8 119 --flank coast --from-case hypoid_8x41_b22_case.toml --check \
+        --vary '[{}, {"ellipse_length": 0.5}, {"path_angle": -43.75}]'
+
+(the flank peak pressure at the design torque [MPa] and the development's objective are
+printed too; ``--tolerance`` checks the drive flank.)
 """
 
 from __future__ import annotations
@@ -110,7 +123,7 @@ def main(argv: list[str] | None = None) -> None:
         print(f"{json.dumps(change):44s} {m['pattern_heel_u'][0] - m['pattern_toe_u'][0]:4.2f} "
               f"{m['pattern_toe_u'][0]:4.2f}-{m['pattern_heel_u'][0]:4.2f} "
               f"{m['pattern_root_v'][0]:4.2f}-{m['pattern_tip_v'][0]:4.2f} "
-              f"{m['pattern_centre_v'][0]:4.2f} {lte[0]:4.0f}/{lte[1]:<4.0f}{ute:4.0f} "
+              f"{m['pattern_centre_v'][0]:4.2f} {lte[0]:4.1f}/{lte[1]:<5.1f}{ute:4.0f} "
               f"{pairs[0]:4.2f}/{pairs[1]:4.2f} {100 * m['edge_load_share'][1]:5.1f} "
               f"{100 * np.max(m['plastic_share']):4.1f} "
               f"{m['pressure_max_flank'][1]:5.0f}  "
