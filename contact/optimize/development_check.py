@@ -13,7 +13,9 @@ and stays tolerant (:func:`_tolerant_variant`); :func:`steps_on_each` gives them
 other checked designs too while the best misses a target; :func:`checked_tolerance` raises
 the tip, then the root relief of a chosen design that meets every target but not the
 mounting excursions' edges (:func:`final_tolerance` reuses its excursions for the case
-written). :func:`static_capacity` lowers
+written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the verdict's
+60 µrad a longer ellipse, then a path nearer the lengthwise direction
+(:data:`COAST_LTE_STEPS`). :func:`static_capacity` lowers
 the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses

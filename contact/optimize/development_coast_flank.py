@@ -230,8 +230,10 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     :data:`CHECK_LTCA` at the same light and design torque; where it misses a target and
     ``targets.coast_max_evaluations`` > 0, the two stages of the drive flank's search
     (:func:`search_flank`) on the coast flank's own prescriptions with that budget, the best
-    checked at :data:`CHECK_LTCA` (:func:`checked_best`) and chosen where it scores
-    better than the flank as synthesised. The drive flank is the same in every design
+    checked at :data:`CHECK_LTCA` (:func:`checked_best`; where its LTE exceeds the
+    verdict's 60 µrad the coast LTE steps, :func:`checked_coast_lte`, then, where the LTE
+    target is still missed, the long bearing, :func:`checked_long`) and chosen where it
+    scores better than the flank as synthesised. The drive flank is the same in every design
     (the synthesis places the coast flank against it, never the reverse), so its result
     stands; the coast designs' pinion teeth are kept under the drive's bearing and the
     coast's (:class:`KeptTeeth`). ``make``: the coarse search's synthesis (no tip
