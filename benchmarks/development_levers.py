@@ -26,6 +26,19 @@ Usage::
 
 (≈ 2 s CPU per design with a new steps 3-6, 0.3 s where only the relief, the blade angle
 or the crowning change.)
+
+``--flank coast --from-case CASE`` varies the **coast** flank of a case ``ltca synthesize``
+wrote from ``BASIC``: both flanks' developed prescriptions are read from the case's
+``[development]`` tables (the drive flank's kept, the coast flank's the base of
+``--vary``; a generated gear as the case's synthesis says), and the coast flank analysed
+at the torques given (its light and coast design torque), e.g.::
+
+    python benchmarks/development_levers.py tests/data/limits/hypoid_8x41_b22.toml \
+        --torques 28.8 119 --flank coast --from-case hypoid_8x41_b22_case.toml --check \
+        --vary '[{}, {"ellipse_length": 0.5}, {"path_angle": -43.75}]'
+
+(the flank peak pressure at the design torque [MPa] and the development's objective are
+printed too; ``--tolerance`` checks the drive flank.)
 """
 
 from __future__ import annotations
@@ -54,17 +67,39 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--base", default="{}", help="JSON: the bearing's prescriptions")
     ap.add_argument("--vary", default="[{}]", help="JSON list of changes to the base")
     ap.add_argument("--check", action="store_true", help="ltca run's sampling")
+    ap.add_argument("--flank", choices=("drive", "coast"), default="drive",
+                    help="the flank varied and analysed (default the drive flank)")
+    ap.add_argument("--from-case", default=None, metavar="CASE",
+                    help="a case `ltca synthesize` wrote from BASIC: both flanks' developed "
+                         "prescriptions (its [development] tables) under --base")
     ap.add_argument("--tolerance", action="store_true",
                     help="also the development's tolerance check (coarse LTCA at "
                          "dE/dP +/- 0.05 mm): the tolerance targets missed, per excursion")
     args = ap.parse_args(argv)
     basic = load_basic(args.basic)
-    flank = basic.options.drive_flank
-    base = json.loads(args.base)
+    drive = basic.options.drive_flank
+    coast = "convex" if drive == "concave" else "concave"
+    flank = drive if args.flank == "drive" else coast
+    base = {}
+    if args.from_case:
+        import tomllib
+        with open(args.from_case, "rb") as f:
+            written = tomllib.load(f).get("development", {})
+        drive_values = written.get("prescriptions", {})
+        coast_values = written.get("coast", {}).get("prescriptions", {})
+        basic = with_flank_options(basic, drive, drive_values)
+        if coast_values:
+            basic = with_flank_options(basic, coast, coast_values)
+        base = dict(drive_values if args.flank == "drive" else coast_values)
+        if "generated gear" in str(tomllib.loads(open(args.from_case).read())
+                                   .get("synthesis", {}).get("method", "")):
+            basic = dataclasses.replace(
+                basic, options=dataclasses.replace(basic.options, gear_process="Generate"))
+    base |= json.loads(args.base)
     memo, teeth = {}, dev.KeptTeeth()
     options = dev.CHECK_LTCA if args.check else dev.COARSE_LTCA
     print(f"{'change':44s} {'len':>4s} {'u':>9s} {'v':>9s} {'cv':>4s} {'LTE l/d':>8s} "
-          f"{'UTE':>4s} {'pairs':>9s} {'edge%':>5s} {'pl%':>4s}  missed [CPU s]")
+          f"{'UTE':>4s} {'pairs':>9s} {'edge%':>5s} {'pl%':>4s} {'p_max':>5s}  missed [CPU s]")
     for change in json.loads(args.vary):
         values = base | change
         t0 = time.process_time()
@@ -73,26 +108,27 @@ def main(argv: list[str] | None = None) -> None:
                               tip_planes=args.check)[0]
             opts = dataclasses.replace(
                 options, compliance=teeth.compliance(dev.bearing_key(values)))
-            tree = run_analysis(case, list(args.torques), flank="drive", options=opts,
+            tree = run_analysis(case, list(args.torques), flank=args.flank, options=opts,
                                 deviations=False, steps=AnalysisChain.contact_only())
         except Exception as exc:  # a design that fails is a row, not the end
             print(f"{json.dumps(change):44s} failed: {exc}".splitlines()[0])
             continue
         m = dev.design_metrics(tree, case)
-        _, short, _ = dev.development_score(m, dev.DevelopmentTargets(), dev.grid_bounds(tree),
-                                            centre_v=dev.working_depth_centre(case),
-                                            pressure_limit=dev.static_strength(tree))
+        objective, short, _ = dev.development_score(
+            m, dev.DevelopmentTargets(), dev.grid_bounds(tree),
+            centre_v=dev.working_depth_centre(case), pressure_limit=dev.static_strength(tree))
         pairs = np.asarray(tree["/ltca"]["pairs_in_contact"].values, float).mean(axis=-1)
         ute = float(tree["/utca"]["peak_to_peak_transmission_error"])
         lte = m["lte_peak_to_peak"]
         print(f"{json.dumps(change):44s} {m['pattern_heel_u'][0] - m['pattern_toe_u'][0]:4.2f} "
               f"{m['pattern_toe_u'][0]:4.2f}-{m['pattern_heel_u'][0]:4.2f} "
               f"{m['pattern_root_v'][0]:4.2f}-{m['pattern_tip_v'][0]:4.2f} "
-              f"{m['pattern_centre_v'][0]:4.2f} {lte[0]:4.0f}/{lte[1]:<4.0f}{ute:4.0f} "
+              f"{m['pattern_centre_v'][0]:4.2f} {lte[0]:4.1f}/{lte[1]:<5.1f}{ute:4.0f} "
               f"{pairs[0]:4.2f}/{pairs[1]:4.2f} {100 * m['edge_load_share'][1]:5.1f} "
-              f"{100 * np.max(m['plastic_share']):4.1f}  "
+              f"{100 * np.max(m['plastic_share']):4.1f} "
+              f"{m['pressure_max_flank'][1]:5.0f}  "
               + ",".join(k for k, v in short.items() if v > 0)
-              + f" [{time.process_time() - t0:.1f}]")
+              + f" obj {objective:.3g} [{time.process_time() - t0:.1f}]")
         if args.tolerance:
             setup = {"torques": list(args.torques), "centre_v": dev.working_depth_centre(case)}
             tol = tolerance_checks(case, dev.DevelopmentTargets(), setup, teeth, values)

@@ -1432,6 +1432,133 @@ def test_an_lte_still_missed_at_the_check_gets_the_long_bearing(monkeypatch):
     assert coast.stage == "long" and flanks == ["coast"]  # no tolerance check there
 
 
+def test_a_coast_lte_above_the_verdicts_limit_gets_a_longer_ellipse(monkeypatch):
+    """checked_coast_lte: a coast design whose LTE p-p exceeds the verdict's 60 µrad
+    at a torque is checked once more with its ellipse 0.1 longer (the rest kept), on the
+    coast flank, and kept on a better score that gives up no met target but the pattern
+    length; within the limit then, the path step is not tried. Stand-in analyses after
+    the hypoid 8x41 with b2 22 mm's coast flank
+    (benchmarks/development_levers.py --flank coast, ltca run's sampling at 28.8 / 119
+    N m): ellipse 0.4: LTE 67 / 62 µrad, pattern 0.60 long, 1479 MPa; ellipse 0.5:
+    46 / 58 µrad (60 measured; 58 here so that the limit is met), 0.70 long, 1320 MPa.
+    A coast design within 60 µrad at every torque is left as it is (no analysis)."""
+    calls = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        calls.append((flank, case["ellipse_length"], pinion_key))
+        if case["ellipse_length"] > 0.45:
+            return (_metrics(pattern_toe_u=[0.12, 0.1], pattern_heel_u=[0.82, 0.9],
+                             lte_peak_to_peak=[46.0, 58.0],
+                             pressure_max_flank=[800.0, 1320.0]),
+                    (0.0, 1.0, 0.0, 1.0, 2400.0))
+        return (_metrics(pattern_toe_u=[0.18, 0.1], pattern_heel_u=[0.78, 0.9],
+                         lte_peak_to_peak=[67.0, 62.0], pressure_max_flank=[900.0, 1479.0]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [28.8, 119.0], "centre_v": 0.6}
+    values = {"path_angle": -58.75, "ellipse_length": 0.4, "root_relief": 60.0,
+              "relief_start": 0.2}
+    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    calls.clear()
+    lines = []
+    got = dcheck.checked_coast_lte(start, targets, setup, None, lines.append,
+                                   lambda v: dict(v), key_prefix=("d",))
+    assert got.stage == "coast lte"
+    assert got.values == values | {"ellipse_length": pytest.approx(0.5, abs=1e-12)}
+    assert calls == [("coast", pytest.approx(0.5), ("d", *dcheck.bearing_key(got.values)))]
+    assert "ellipse_length 0.5" in lines[0] and not any("not kept" in x for x in lines)
+    # within the limit at every torque: not analysed
+    quiet = _checked(values, _metrics(lte_peak_to_peak=[55.0, 60.0]), targets, 0.6)
+    calls.clear()
+    assert dcheck.checked_coast_lte(quiet, targets, setup, None, lines.append,
+                                    lambda v: dict(v)) is quiet and calls == []
+    # at the ellipse's upper bound already: the path step alone (−58.75° → −43.75°)
+    top = _checked(values | {"ellipse_length": 0.75}, start.metrics, targets, 0.6)
+    got = dcheck.checked_coast_lte(top, targets, setup, None, lines.append,
+                                   lambda v: dict(v))
+    assert [c[:2] for c in calls] == [("coast", 0.75)]
+    assert got.values["path_angle"] == pytest.approx(-43.75)
+
+
+def test_a_longer_coast_ellipse_is_not_kept_at_a_cost(monkeypatch):
+    """The longer ellipse is not kept where it scores worse (the spiral bevel 20x30's
+    generated-gear coast flank: ellipse 0.55 → 0.65 raised its LTE 95 → 115 µrad at
+    175.6 N m), where it gives up a met target other than the length (plastic: the 8x41's
+    ellipse 0.6, 1.1 % of the torque), or where its flank peak pressure rises above the
+    design's with no pressure bound in the targets (the coast design torque, set by its
+    pitting capacity afterwards, would fall); within the targets' ``max_flank_pressure``
+    (the coast redevelopment's pitting bound) a higher peak is kept."""
+    import dataclasses
+
+    def analysed(longer):
+        def fake(case, torques, misalignment=None, options=None, teeth=None,
+                 pinion_key=(), flank="drive"):
+            m = longer if case["ellipse_length"] > 0.6 else {}
+            base = {"lte_peak_to_peak": [51.0, 95.0], "pressure_max_flank": [700.0, 1576.0]}
+            return _metrics(**(base | m)), (0.0, 1.0, 0.0, 1.0, 2400.0)
+        return fake
+
+    targets, setup = DevelopmentTargets(), {"torques": [26.3, 175.6], "centre_v": 0.6}
+    values = {"path_angle": -45.0, "ellipse_length": 0.55}
+    for longer in ({"lte_peak_to_peak": [56.0, 115.0]},
+                   {"lte_peak_to_peak": [33.0, 57.0], "plastic_share": [0.0, 0.011]},
+                   {"lte_peak_to_peak": [44.0, 57.0],
+                    "pressure_max_flank": [700.0, 1586.0]}):
+        monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design",
+                            analysed(longer))
+        start = _checked(values, analysed({})(values, [])[0], targets, 0.6)
+        assert dcheck.checked_coast_lte(start, targets, setup, None, [].append,
+                                        lambda v: dict(v)) is start
+    bounded = dataclasses.replace(targets, max_flank_pressure=1635.0)
+    start = _checked(values, analysed({})(values, [])[0], bounded, 0.6)
+    got = dcheck.checked_coast_lte(start, bounded, setup, None, [].append,
+                                   lambda v: dict(v))
+    assert got.stage == "coast lte" and got.metrics["lte_peak_to_peak"][1] == 57.0
+
+
+def test_a_coast_lte_the_ellipse_does_not_lower_gets_the_path_turned_lengthwise(
+        monkeypatch):
+    """Where the longer ellipse scores worse, the path angle is turned 15° towards the
+    lengthwise direction (−45° → −30°, within the upper bound −25°) and kept on a better
+    score. Stand-in analyses after the generated-gear spiral bevel 20x30's coast flank
+    (benchmarks/development_levers.py --flank coast, ltca run's sampling at 26.3 / 175.6
+    N m): path −45°, ellipse 0.55: LTE 51 / 95 µrad; ellipse 0.65: 56 / 115; path −30°:
+    26 / 55 µrad, 1114 MPa. At the path's bound already nothing is tried."""
+    seen = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        seen.append((case["path_angle"], case["ellipse_length"]))
+        if case["ellipse_length"] > 0.6:
+            lte, p = [56.0, 115.0], 1151.0
+        elif case["path_angle"] > -40.0:
+            lte, p = [26.0, 55.0], 1114.0
+        else:
+            lte, p = [51.0, 95.0], 1170.0
+        return (_metrics(lte_peak_to_peak=lte, pressure_max_flank=[700.0, p]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [26.3, 175.6], "centre_v": 0.6}
+    values = {"path_angle": -45.0, "ellipse_length": 0.55}
+    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    seen.clear()
+    lines = []
+    got = dcheck.checked_coast_lte(start, targets, setup, None, lines.append,
+                                   lambda v: dict(v))
+    assert seen == [(-45.0, pytest.approx(0.65)), (-30.0, 0.55)]
+    assert got.values == {"path_angle": -30.0, "ellipse_length": 0.55}
+    assert got.metrics["lte_peak_to_peak"][1] == 55.0
+    assert "path_angle -30" in lines[1]
+    at_bounds = _checked({"path_angle": -25.0, "ellipse_length": 0.75}, start.metrics,
+                         targets, 0.6)
+    seen.clear()
+    assert dcheck.checked_coast_lte(at_bounds, targets, setup, None, lines.append,
+                                    lambda v: dict(v)) is at_bounds and seen == []
+
+
 def test_a_long_bearing_that_scores_worse_is_not_kept(monkeypatch):
     """The long bearing's design is kept only on a better checked score: after the
     hypoid 13x37 (its light-load pattern reaches the tip with the root relief from 0.5:

@@ -13,7 +13,9 @@ and stays tolerant (:func:`_tolerant_variant`); :func:`steps_on_each` gives them
 other checked designs too while the best misses a target; :func:`checked_tolerance` raises
 the tip, then the root relief of a chosen design that meets every target but not the
 mounting excursions' edges (:func:`final_tolerance` reuses its excursions for the case
-written). :func:`static_capacity` lowers
+written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the verdict's
+60 µrad a longer ellipse, then a path nearer the lengthwise direction
+(:data:`COAST_LTE_STEPS`). :func:`static_capacity` lowers
 the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
@@ -282,6 +284,94 @@ def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if flank == "drive" and not _tolerant_variant(e, targets, setup, teeth, say):
         return best
     return e
+
+
+#: the coast check's steps (:func:`checked_coast_lte`), each a change of one prescription
+#: [file units] from the design kept so far, tried in turn while its LTE exceeds the
+#: verdict's limit: the ellipse longer (less lengthwise crowning), then the path angle
+#: turned towards the lengthwise direction (less negative), each within its bounds
+COAST_LTE_STEPS = (("ellipse_length", 0.1), ("path_angle", 15.0))
+
+
+def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                      setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                      say: Callable[[str], None],
+                      placed: Callable[[Mapping[str, float]], Case], *,
+                      key_prefix: tuple = (), lte_limit: float | None = None
+                      ) -> DevelopmentEvaluation:
+    """A coast flank whose LTE p-p at the check exceeds the verdict's limit at a torque
+    given the bearing steps of :data:`COAST_LTE_STEPS` in turn while it does: the ellipse
+    0.1 longer, then the path angle turned 15° towards the lengthwise direction (each
+    within the bounds of its variable), every other prescription kept; each one design (a
+    synthesis of steps 3-6) placed and checked at :data:`CHECK_LTCA` on the coast flank,
+    kept where it scores better, misses no target the design met but the pattern length
+    (as :func:`checked_long`) and its flank peak pressure at the design torque is no
+    higher than the design's or within the targets' ``max_flank_pressure`` (the coast
+    redevelopment's pitting bound,
+    :func:`contact.optimize.development_coast_flank.pitting_pressure`): the coast design
+    torque, set afterwards by the coast flank's capacity, is not given up for it.
+    ``lte_limit`` [µrad]: the verdict's ``lte`` limit (default
+    :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad); a design within it at every torque
+    is returned as it is, without an analysis. ``key_prefix``: the kept pinion tooth's key
+    before the design's bearing (:func:`checked_best`).
+
+    Why: the coast flank's search has three bearings (the initial simplex of path angle
+    and ellipse, :data:`~contact.optimize.development_coast_flank.COAST_BEARING_DESIGNS`)
+    and its check no step of the bearing but the long bearing, whose root relief from
+    half-way puts its pressure above the coast flank's pitting capacity. A longer contact
+    ellipse (less lengthwise crowning) and a path nearer the lengthwise direction let more
+    of the face share the load as the pairs hand over (Litvin & Fuentes 2004 §9.4;
+    Stadtfeld 2014); the drive flank's path step turns the other way, towards the profile,
+    which raised the coast LTE (the 11x33 below: −60° / −75° gave 84 / 90 and 104 / 120
+    µrad against 62 / 68). Measured at ``ltca run``'s sampling on the coast flanks as
+    written (``benchmarks/development_levers.py --flank coast --from-case``, 2026-11-26;
+    LTE p-p light / design, objective): the hypoid 8x41 with b2 22 mm (28.8 / 119 N m,
+    path −58.75°, ellipse 0.4) 67 / 62 µrad, 12.7; ellipse 0.5: 46 / 60 µrad, pattern 0.70
+    long, flank peak 1479 → 1320 MPa, 6.15 (0.45: 56 / 75; 0.55: 1.1 % plastic; path
+    −48.75°: 1.3 % plastic); the face-hobbed spiral bevel 11x33 (35.6 / 180.8 N m, path
+    −45°, ellipse 0.55) 51 / 64 µrad, 9.55; ellipse 0.65: 44 / 57 µrad, 1576 → 1586 MPa
+    (its redevelopment's pitting bound 1635 MPa), 6.66; path −35°: 43 / 56 µrad but
+    1730 MPa; the generated-gear spiral bevel 20x30 (26.3 / 175.6 N m, path −45°,
+    ellipse 0.55) 51 / 95 µrad, 33.1; ellipse 0.65: 56 / 115; path −40° / −35° / −30°:
+    43 / 81, 36 / 67, 26 / 55 µrad (1170 → 1114 MPa), 3.35."""
+    from contact.study.verdicts import LTE_LIMIT
+
+    limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
+    for name, step in COAST_LTE_STEPS:
+        if (best.full is None or not best.checked
+                or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
+            return best
+        if name not in targets.variables or name not in best.values:
+            continue
+        lo, hi = (float(x) for x in targets.variables[name])
+        now = float(best.values[name])
+        x = float(np.clip(now + step, lo, hi))
+        if abs(x - now) < 1e-9:
+            continue
+        values = dict(best.values) | {name: x}
+        e = _checked_variant(best, values, "coast lte", targets, setup, teeth, placed,
+                             pinion_key=(*key_prefix, *bearing_key(values)), flank="coast")
+        if e is None:
+            continue
+        say(f"  coast design {best.index + 1} with {name} {x:.4g} (its LTE above {limit:g} "
+            "urad), at the default sampling: "
+            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
+        if _check_rank(e) >= _check_rank(best):
+            continue
+        was = {k for k, v in best.full[1].items() if v > 0.0}
+        lost = sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was
+                      and k != "length")
+        p_new = float(e.metrics["pressure_max_flank"][-1])
+        p_old = float(best.metrics["pressure_max_flank"][-1])
+        bound = (float(targets.max_flank_pressure) if targets.max_flank_pressure is not None
+                 else -math.inf)
+        if not p_new <= max(p_old, bound):
+            lost.append(f"pressure ({p_new:.0f} MPa above {max(p_old, bound):.0f})")
+        if lost:
+            say(f"  not kept: the {name} step misses {', '.join(lost)}")
+            continue
+        best = e
+    return best
 
 
 #: the check's shorter tip reliefs (:func:`_checked_tip`), fractions of the chosen

@@ -26,7 +26,11 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from contact.optimize import development_evaluate as evaluation
-from contact.optimize.development_check import checked_best, checked_long
+from contact.optimize.development_check import (
+    checked_best,
+    checked_coast_lte,
+    checked_long,
+)
 from contact.optimize.development_coast import CoastCapacity, CoastCheck, coast_capacity
 from contact.optimize.development_evaluate import (
     CHECK_LTCA,
@@ -226,8 +230,10 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
     :data:`CHECK_LTCA` at the same light and design torque; where it misses a target and
     ``targets.coast_max_evaluations`` > 0, the two stages of the drive flank's search
     (:func:`search_flank`) on the coast flank's own prescriptions with that budget, the best
-    checked at :data:`CHECK_LTCA` (:func:`checked_best`) and chosen where it scores
-    better than the flank as synthesised. The drive flank is the same in every design
+    checked at :data:`CHECK_LTCA` (:func:`checked_best`; where its LTE exceeds the
+    verdict's 60 µrad the coast LTE steps, :func:`checked_coast_lte`, then, where the LTE
+    target is still missed, the long bearing, :func:`checked_long`) and chosen where it
+    scores better than the flank as synthesised. The drive flank is the same in every design
     (the synthesis places the coast flank against it, never the reverse), so its result
     stands; the coast designs' pinion teeth are kept under the drive's bearing and the
     coast's (:class:`KeptTeeth`). ``make``: the coarse search's synthesis (no tip
@@ -285,6 +291,9 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
 
         best = checked_best(evals, targets, setup, teeth, say, placed, side="coast",
                             key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
+        # an LTE above the verdict's limit: the ellipse longer, the path turned lengthwise
+        best = checked_coast_lte(best, targets, setup, teeth, say, placed,
+                                 key_prefix=prefix)
         # an LTE still missed: the long bearing (the drive flank's last check step)
         best = checked_long(best, targets, setup, teeth, say, placed, flank="coast",
                             key_prefix=prefix)
