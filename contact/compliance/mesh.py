@@ -538,6 +538,15 @@ def _map_members(case: Case, segments: list[ContactSegments], model: PairComplia
     return per_roll, mids, both
 
 
+def _block(idx: np.ndarray):
+    """The (rows, columns) index of a block of segments ``idx`` in a matrix: two slices
+    where the segments are consecutive (a view), else ``np.ix_``."""
+    if idx.size and int(idx[-1]) - int(idx[0]) == idx.size - 1:
+        sl = slice(int(idx[0]), int(idx[-1]) + 1)
+        return sl, sl
+    return np.ix_(idx, idx)
+
+
 def _assemble(seg: ContactSegments, model: PairComplianceModel, points: dict, blocks: dict,
               mats: dict, depth: np.ndarray, c_w: np.ndarray) -> tuple[np.ndarray, dict]:
     """The compliance matrices of one roll position from its mapped shell points, its
@@ -546,15 +555,21 @@ def _assemble(seg: ContactSegments, model: PairComplianceModel, points: dict, bl
     n = seg.size
     parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",
                                            "gear_foundation")}
+    # the total summed block by block, in the order of the parts (pinion shell, gear
+    # shell, pinion foundation, gear foundation, Weber): zero between tooth pairs
+    total = np.zeros((n, n))
     asym = 0.0
-    for name in ("pinion", "gear"):
-        for idx, (cm, fm) in zip(blocks.values(), mats[name], strict=True):
-            ix = np.ix_(idx, idx)
-            parts[f"{name}_shell"][ix] = cm.matrix
-            parts[f"{name}_foundation"][ix] = fm
-            asym = max(asym, cm.asymmetry)
+    for k, idx in enumerate(blocks.values()):
+        (cp, fp), (cg, fg) = mats["pinion"][k], mats["gear"][k]
+        ix = _block(idx)
+        parts["pinion_shell"][ix] = cp.matrix
+        parts["gear_shell"][ix] = cg.matrix
+        parts["pinion_foundation"][ix] = fp
+        parts["gear_foundation"][ix] = fg
+        total[ix] = cp.matrix + cg.matrix + fp + fg
+        asym = max(asym, cp.asymmetry, cg.asymmetry)
     parts["weber"] = np.diag(c_w)
-    total = sum(parts.values())
+    total[np.diag_indices(n)] += c_w
     total = 0.5 * (total + total.T)
     info: dict[str, Any] = dict(parts)
     info.update(asymmetry=asym, pinion_points=points["pinion"], gear_points=points["gear"],
