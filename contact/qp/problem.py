@@ -198,13 +198,18 @@ class ContactProblem:
         self._set_checked(C, s, R, T, U, bounded, asym, float(skew))
 
     def _set_checked(self, C: np.ndarray, s: np.ndarray, R: np.ndarray, T: float,
-                     U: np.ndarray, bounded: np.ndarray, asym: float, skew: float) -> None:
+                     U: np.ndarray, bounded: np.ndarray, asym: float, skew: float,
+                     like: ContactProblem | None = None) -> None:
         """Store checked, read-only inputs and what is derived from them: the scale, the
         segments with a limit (asked for at every solve and pivot) and ‖C − Cᵀ‖ [mm/N]
-        of the compliance as given (for :meth:`with_diagonal`)."""
-        f0 = T / float(R[R > 0].sum())
-        d0 = f0 * float(np.mean(np.diag(C)))
-        r0 = float(np.max(np.abs(R)))
+        of the compliance as given (for :meth:`with_diagonal`). ``like``: a problem with
+        the same moment arms and torque, whose reference force and arm are these."""
+        if like is None:
+            f0 = T / float(R[R > 0].sum())
+            r0 = float(np.max(np.abs(R)))
+        else:
+            f0, r0 = like.scale.force, like.scale.arm
+        d0 = f0 * float(np.mean(np.diagonal(C)))
         object.__setattr__(self, "compliance", C)
         object.__setattr__(self, "separation", s)
         object.__setattr__(self, "moment_arm", R)
@@ -274,7 +279,7 @@ class ContactProblem:
         new = object.__new__(ContactProblem)
         object.__setattr__(new, "name", self.name)
         new._set_checked(C, s, self.moment_arm, self.torque, self.upper_bound, self._bounded,
-                         asym, skew)
+                         asym, skew, like=self)
         return new
 
     def renamed(self, name: str) -> ContactProblem:
