@@ -361,6 +361,8 @@ class ShellModel:
         # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
         out_t = np.empty((n_out, self.n_dof))
 
+        stacked: dict[int, np.ndarray] = {}  # the face rows as (groups, G, m), once each
+
         def outer(a: np.ndarray, b: np.ndarray) -> np.ndarray:
             # Σ_g w_g a[k, (n, g)] b[m, (n, g)] as rows n, columns (k, m)
             if wts.size == 1:
@@ -369,9 +371,12 @@ class ShellModel:
             # operands made contiguous first (BLAS's layout: strided views are not)
             aw = np.ascontiguousarray(
                 (a.reshape(a.shape[0], n_out, wts.size) * wts).transpose(1, 0, 2))
-            bt = np.ascontiguousarray(b.reshape(b.shape[0], n_out, wts.size).transpose(1, 2, 0))
-            return np.matmul(aw, bt).reshape(n_out, -1)
+            if id(b) not in stacked:
+                stacked[id(b)] = np.ascontiguousarray(
+                    b.reshape(b.shape[0], n_out, wts.size).transpose(1, 2, 0))
+            return np.matmul(aw, stacked[id(b)]).reshape(n_out, -1)
 
+        plain: list[tuple[int, np.ndarray]] = []  # (column, rows a) of works outer(a, g)
         for fam, off, power, count in self._layout:
             if (power, count) not in heights:
                 heights[(power, count)] = _height_rows(xi, power, count)
@@ -393,7 +398,19 @@ class ShellModel:
             elif scale is None:
                 out_t[:, cols] = 0.0
             else:
-                out_t[:, cols] = outer(f * scale, g)
+                plain.append((off, f * scale))
+        # families outer(a, g) whose columns follow each other: one product for the run
+        # (its rows stacked; each entry the same sum of G products)
+        i = 0
+        while i < len(plain):
+            start, rows = plain[i][0], [plain[i][1]]
+            end = start + rows[0].shape[0] * g.shape[0]
+            while i + 1 < len(plain) and plain[i + 1][0] == end:
+                i += 1
+                rows.append(plain[i][1])
+                end += plain[i][1].shape[0] * g.shape[0]
+            out_t[:, start:end] = outer(rows[0] if len(rows) == 1 else np.concatenate(rows), g)
+            i += 1
         return out_t.T
 
     def solve(self, loads: np.ndarray) -> np.ndarray:
