@@ -411,9 +411,18 @@ def contact_residuals(
     dict of str to float
         Keyed by :data:`RESIDUALS`. Non-finite inputs give ``inf`` residuals, never NaN.
     """
+    return _residuals_and_gaps(problem, force, rotation)[0]
+
+
+def _residuals_and_gaps(problem: ContactProblem, force: np.ndarray, rotation: float
+                       ) -> tuple[dict[str, float], np.ndarray | None]:
+    """:func:`contact_residuals` and the gaps Y = C F + s − R Θ [mm] (N,) they were
+    computed from (:meth:`ContactProblem.gap`'s arithmetic, to the bit), or None where F
+    or Θ is not finite: a solve's certification and its solution's slack from one product
+    C F."""
     F = np.asarray(force, dtype=float)
     if F.shape != (problem.size,) or not np.all(np.isfinite(F)) or not np.isfinite(rotation):
-        return dict.fromkeys(RESIDUALS, math.inf)
+        return dict.fromkeys(RESIDUALS, math.inf), None
     sc = problem.scale
     CF = problem.compliance @ F
     Y = CF + problem.separation - problem.moment_arm * rotation
@@ -446,7 +455,7 @@ def contact_residuals(
         ),
         "equilibrium": abs(float(problem.moment_arm @ F) - problem.torque) / problem.torque,
         "upper_complementarity": upper,
-    }
+    }, Y
 
 
 #: LAPACK's Cholesky factorisation and solve in double precision, called directly: the
