@@ -411,9 +411,9 @@ def mesh_compliance_many(
         raise InputError(f"give either model or model options, not both: {sorted(model_options)}")
     # midpoints may overhang slightly too: the LTCA takes them on the gear side, and the
     # pinion mate differs by the ease-off (≤ tens of µm) along the normal; they are
-    # clipped onto the tooth like segment ends. Midpoints and ends of both members and of
-    # every roll position in one batch (shell_points_many); an end shared by consecutive
-    # segments is mapped once.
+    # clipped onto the tooth like segment ends. Midpoints and ends of every roll position
+    # in one job per member, both members in one batch (shell_points_many); an end shared
+    # by consecutive segments is mapped once.
     if not segments:
         return []
     names = ("pinion", "gear")
