@@ -372,3 +372,71 @@ def test_mesh_compliance_of_several_rolls_in_one_batch_equals_one_by_one():
         np.testing.assert_allclose(C, C1, rtol=1e-12, atol=1e-12 * np.abs(C1).max())
         np.testing.assert_allclose(info["weber_depth"], info1["weber_depth"], rtol=1e-12)
     assert mesh_compliance_many(case, []) == []
+
+
+def _three_rolls():
+    """The segments of three roll positions of the ISO 23509 hypoid as ContactSegments."""
+    from contact.compliance.mesh import ContactSegments
+    from contact.ltca import segment_geometry
+    from contact.utca.easeoff import ease_off
+
+    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
+    eo = ease_off(case)
+    roll = 0.1 + np.arange(3) * eo.pitch / 3
+    pairs = np.array([-1, 0, 1])
+    seg = segment_geometry(case, eo, roll, pairs, 8)
+    batch = []
+    for j in range(roll.size):
+        k, s = np.nonzero(np.isfinite(seg.r_eq[j]) & (seg.length[j] > 0))
+        batch.append(ContactSegments(
+            midpoints=seg.midpoint_pair[j, k, s], ends=seg.ends_pair[j, k, s],
+            normals=seg.normal_pair[j, k, s], length=seg.length[j, k, s],
+            r_eq=seg.r_eq[j, k, s], pair_index=pairs[k], load=seg.length[j, k, s],
+            pinion_rotation=float(seg.pinion_rotation[j]),
+            gear_rotation=float(seg.gear_rotation[j])))
+    return case, batch
+
+
+def test_members_mapped_in_one_job_equal_the_rolls_mapped_one_job_each():
+    """mesh_compliance_many turns every roll's points into the member's frame and maps each
+    member's points of all rolls as one job (issue 75 item 4); the jobs of one roll and
+    member each, with the roll's transform (as before), give every ShellPoints field —
+    x, θ, (u, v), normal, side, offset and the frames back in the pair frame — equal to
+    round-off (1e-12: the same transforms' products and the same per-point iterations)."""
+    from contact.compliance.mesh import _map_members, _map_rolls, pair_compliance_model
+
+    case, batch = _three_rolls()
+    model = pair_compliance_model(case)
+    per_roll, _, both = _map_members(case, batch, model)
+    jobs = _map_rolls(case, batch, model)
+    for r in range(len(batch)):
+        for i, name in enumerate(("pinion", "gear")):
+            ref_mid = jobs[2 * r + i][0]
+            for field in ref_mid._fields:
+                np.testing.assert_allclose(getattr(per_roll[r][name], field),
+                                           getattr(ref_mid, field), rtol=1e-12, atol=1e-12,
+                                           err_msg=f"roll {r} {name} {field}")
+    # the ends in shell_matrices' order: every roll's first ends, then their second ends
+    n = [seg.size for seg in batch]
+    assert both["pinion"].x.shape == (2 * sum(n),)
+    from contact.compliance.mesh import _distinct_ends
+    _, idx = _distinct_ends(batch[1].ends)
+    np.testing.assert_allclose(both["gear"].theta[n[0]:n[0] + n[1]],
+                               jobs[3][1].theta[idx[:n[1]]], rtol=1e-12)
+    np.testing.assert_allclose(both["gear"].theta[sum(n) + n[0]:sum(n) + n[0] + n[1]],
+                               jobs[3][1].theta[idx[n[1]:]], rtol=1e-12)
+
+
+def test_point_off_the_tooth_is_named_within_its_roll():
+    """A midpoint off the tooth in the second roll of a batch: the error names the point's
+    index within that roll (the batch maps again roll by roll to say so)."""
+    import dataclasses
+
+    from contact.compliance.mesh import mesh_compliance_many
+
+    case, batch = _three_rolls()
+    far = batch[1].midpoints.copy()
+    far[2] = far[2] * 3.0  # three times as far from the axes: off the blank
+    batch[1] = dataclasses.replace(batch[1], midpoints=far)
+    with pytest.raises(InputError, match="got point 2 at"):
+        mesh_compliance_many(case, batch)

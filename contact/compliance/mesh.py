@@ -411,23 +411,19 @@ def mesh_compliance_many(
         raise InputError(f"give either model or model options, not both: {sorted(model_options)}")
     # midpoints may overhang slightly too: the LTCA takes them on the gear side, and the
     # pinion mate differs by the ease-off (≤ tens of µm) along the normal; they are
-    # clipped onto the tooth like segment ends. Midpoints and ends of both members and of
-    # every roll position in one batch (shell_points_many); an end shared by consecutive
-    # segments is mapped once.
+    # clipped onto the tooth like segment ends. Midpoints and ends of every roll position
+    # in one job per member, both members in one batch (shell_points_many); an end shared
+    # by consecutive segments is mapped once.
     if not segments:
         return []
     names = ("pinion", "gear")
-    jobs, end_indices = [], []
-    for seg in segments:
-        t_p, t_g = case_transforms(case, seg.pinion_rotation, seg.gear_rotation)
-        ends_flat, end_index = _distinct_ends(seg.ends)
-        end_indices.append(end_index)
-        jobs += [(model.member(name), seg.midpoints, sign * seg.normals, transform, ends_flat)
-                 for name, transform, sign in zip(names, (t_p, t_g), (1.0, -1.0),
-                                                  strict=True)]
-    mapped = shell_points_many(jobs, END_TOLERANCE)
-    points = [{name: mapped[2 * r + i][0] for i, name in enumerate(names)}
-              for r in range(len(segments))]
+    try:
+        points, mids, both = _map_members(case, segments, model)
+    except InputError:
+        # the mapping refused a point: map roll by roll as jobs of their own, whose
+        # message names the point within its roll (raises; the batch's own error if not)
+        _map_rolls(case, segments, model)
+        raise
     # the shell matrices of every tooth pair of every roll position: one set of load
     # vectors and one triangular solve per member (the shell's stiffness does not depend
     # on the roll position), one block per (roll, pair)
@@ -435,18 +431,10 @@ def mesh_compliance_many(
                for pair in np.unique(seg.pair_index)} for seg in segments]
     offsets = np.concatenate([[0], np.cumsum([seg.size for seg in segments])])
     flat_blocks = [offsets[r] + idx for r, b in enumerate(blocks) for idx in b.values()]
-    shell, found, mids = {}, {}, {}
-    for i, name in enumerate(names):
-        mids[name] = _concat([pt[name] for pt in points])
-        # the first ends of all rolls, then their second ends (shell_matrices' order);
-        # end_index lists each roll's first N then second N ends among its distinct ends
-        distinct = [mapped[2 * r + i][1] for r in range(len(segments))]
-        both = _concat(
-            [_take(d, idx[:sg.size]) for d, idx, sg in zip(distinct, end_indices, segments,
-                                                          strict=True)]
-            + [_take(d, idx[sg.size:]) for d, idx, sg in zip(distinct, end_indices, segments,
-                                                            strict=True)])
-        shell[name] = iter(shell_matrices(model.member(name), mids[name], both, model.theory,
+    shell, found = {}, {}
+    for name in names:
+        shell[name] = iter(shell_matrices(model.member(name), mids[name], both[name],
+                                           model.theory,
                                            model.n_height, model.n_face, flat_blocks))
         # the fillet foundation of every tooth of every roll position in one batch
         found[name] = iter(member_foundations(model.member(name), mids[name], flat_blocks))
@@ -475,11 +463,88 @@ def mesh_compliance_many(
     return out
 
 
-def _concat(parts: list[ShellPoints]) -> ShellPoints:
-    """ShellPoints of several sets, one after the other."""
-    return ShellPoints(*(None if any(p[k] is None for p in parts)
-                         else np.concatenate([p[k] for p in parts])
-                         for k in range(len(ShellPoints._fields))))
+def _map_rolls(case: Case, segments: list[ContactSegments],
+               model: PairComplianceModel) -> list[list[ShellPoints]]:
+    """The segments' midpoints and distinct ends mapped onto both shells with one job per
+    (roll, member), each in its own pair → member transform (the checks' messages name
+    the point within its roll)."""
+    jobs = []
+    for seg in segments:
+        t_p, t_g = case_transforms(case, seg.pinion_rotation, seg.gear_rotation)
+        ends_flat, _ = _distinct_ends(seg.ends)
+        jobs += [(model.member(name), seg.midpoints, sign * seg.normals, transform, ends_flat)
+                 for name, transform, sign in zip(("pinion", "gear"), (t_p, t_g), (1.0, -1.0),
+                                                  strict=True)]
+    return shell_points_many(jobs, END_TOLERANCE)
+
+
+def _map_members(case: Case, segments: list[ContactSegments], model: PairComplianceModel
+                 ) -> tuple[list[dict[str, ShellPoints]], dict[str, ShellPoints],
+                            dict[str, ShellPoints]]:
+    """Midpoints and segment ends of every roll position on both members' shells: one
+    job per member (all rolls' points turned into the member's frame first, each roll by
+    its own transform, then mapped in one batch, :func:`shell_points_many`).
+
+    Returns each roll's midpoints per member (ShellPoints, frames in the pair frame), and
+    per member all rolls' midpoints and the ends in :func:`shell_matrices`' order (the
+    first ends of all rolls, then their second ends). The same arithmetic per point as
+    :func:`_map_rolls`' jobs (the transforms' products, the mapping point by point), so
+    the same results to round-off.
+
+    Raises
+    ------
+    InputError
+        A point off its tooth (the message's point index counts over all rolls:
+        the caller maps again roll by roll to name it within its roll).
+    """
+    rolls = len(segments)
+    t_p, t_g = case_transforms(case, np.array([s.pinion_rotation for s in segments]),
+                               np.array([s.gear_rotation for s in segments]))
+    rot = np.stack([t_p[:, :3, :3], t_g[:, :3, :3]])  # (member, roll, 3, 3)
+    if not np.allclose(np.einsum("mrji,mrjk->mrik", rot, rot), np.eye(3), atol=1e-9):
+        raise InputError("transform: must be a rigid motion (orthonormal rotation block)")
+    off = np.stack([t_p[:, :3, 3], t_g[:, :3, 3]])  # (member, roll, 3)
+    distinct = [_distinct_ends(seg.ends) for seg in segments]
+    n_mid = np.array([seg.size for seg in segments])
+    n_end = np.array([d[0].shape[0] for d in distinct])
+    mid_at = np.concatenate([[0], np.cumsum(n_mid)])
+    end_at = np.concatenate([[0], np.cumsum(n_end)])
+    # each roll's first then second ends among all rolls' distinct ends
+    first = np.concatenate([end_at[r] + d[1][:n_mid[r]] for r, d in enumerate(distinct)])
+    second = np.concatenate([end_at[r] + d[1][n_mid[r]:] for r, d in enumerate(distinct)])
+    take = np.concatenate([first, second])
+    jobs = []
+    for i, (name, sign) in enumerate((("pinion", 1.0), ("gear", -1.0))):
+        mid = np.empty((int(mid_at[-1]), 3))
+        nrm = np.empty_like(mid)
+        ends = np.empty((int(end_at[-1]), 3))
+        for r, seg in enumerate(segments):  # (p − o) R: the member frame's coordinates
+            rows, rows_e = slice(mid_at[r], mid_at[r + 1]), slice(end_at[r], end_at[r + 1])
+            mid[rows] = (seg.midpoints - off[i, r]) @ rot[i, r]
+            nrm[rows] = (sign * seg.normals) @ rot[i, r]
+            ends[rows_e] = (distinct[r][0] - off[i, r]) @ rot[i, r]
+        jobs.append((model.member(name), mid, nrm, None, ends))
+    mapped = shell_points_many(jobs, END_TOLERANCE)
+    mids, both = {}, {}
+    per_roll: list[dict[str, ShellPoints]] = [{} for _ in range(rolls)]
+    for i, name in enumerate(("pinion", "gear")):
+        sp_mid, sp_end = mapped[i]
+        # the midpoints' frames back in the pair frame (rows e_x, e_θ, e_z: e R^T)
+        rot_t = np.repeat(np.swapaxes(rot[i], 1, 2), n_mid, axis=0)
+        mids[name] = sp_mid._replace(frame=np.matmul(sp_mid.frame, rot_t))
+        both[name] = _take(sp_end, take)
+        for r in range(rolls):
+            per_roll[r][name] = _take(mids[name], slice(mid_at[r], mid_at[r + 1]))
+    return per_roll, mids, both
+
+
+def _block(idx: np.ndarray):
+    """The (rows, columns) index of a block of segments ``idx`` in a matrix: two slices
+    where the segments are consecutive (a view), else ``np.ix_``."""
+    if idx.size and int(idx[-1]) - int(idx[0]) == idx.size - 1:
+        sl = slice(int(idx[0]), int(idx[-1]) + 1)
+        return sl, sl
+    return np.ix_(idx, idx)
 
 
 def _assemble(seg: ContactSegments, model: PairComplianceModel, points: dict, blocks: dict,
@@ -490,15 +555,21 @@ def _assemble(seg: ContactSegments, model: PairComplianceModel, points: dict, bl
     n = seg.size
     parts = {k: np.zeros((n, n)) for k in ("pinion_shell", "gear_shell", "pinion_foundation",
                                            "gear_foundation")}
+    # the total summed block by block, in the order of the parts (pinion shell, gear
+    # shell, pinion foundation, gear foundation, Weber): zero between tooth pairs
+    total = np.zeros((n, n))
     asym = 0.0
-    for name in ("pinion", "gear"):
-        for idx, (cm, fm) in zip(blocks.values(), mats[name], strict=True):
-            ix = np.ix_(idx, idx)
-            parts[f"{name}_shell"][ix] = cm.matrix
-            parts[f"{name}_foundation"][ix] = fm
-            asym = max(asym, cm.asymmetry)
+    for k, idx in enumerate(blocks.values()):
+        (cp, fp), (cg, fg) = mats["pinion"][k], mats["gear"][k]
+        ix = _block(idx)
+        parts["pinion_shell"][ix] = cp.matrix
+        parts["gear_shell"][ix] = cg.matrix
+        parts["pinion_foundation"][ix] = fp
+        parts["gear_foundation"][ix] = fg
+        total[ix] = cp.matrix + cg.matrix + fp + fg
+        asym = max(asym, cp.asymmetry, cg.asymmetry)
     parts["weber"] = np.diag(c_w)
-    total = sum(parts.values())
+    total[np.diag_indices(n)] += c_w
     total = 0.5 * (total + total.T)
     info: dict[str, Any] = dict(parts)
     info.update(asymmetry=asym, pinion_points=points["pinion"], gear_points=points["gear"],

@@ -691,6 +691,18 @@ def compliance_matrix(
     return compliance_blocks(model, ends, normals, None, n_segment_gauss)[0]
 
 
+def _as_range(idx):
+    """An index array of consecutive integers as the slice it is (a view, not a copy);
+    anything else as it is."""
+    if isinstance(idx, slice):
+        return idx
+    idx = np.asarray(idx)
+    if idx.ndim == 1 and idx.size and idx.dtype.kind in "iu" \
+            and int(idx[-1]) - int(idx[0]) == idx.size - 1 and np.all(np.diff(idx) == 1):
+        return slice(int(idx[0]), int(idx[-1]) + 1)
+    return idx
+
+
 def compliance_blocks(
     model: ShellModel,
     ends: np.ndarray,
@@ -729,10 +741,17 @@ def compliance_blocks(
     # C = Φᵀ K⁻¹ Φ = Yᵀ Y with Y = U⁻ᵀ S Φ (K's scaled Cholesky factor): one triangular
     # product for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
     y = model.half_solve(phi)
+    centres = 0.5 * (p0 + p1)
     out = []
     for idx in [slice(None)] if blocks is None else blocks:
+        idx = _as_range(idx)
         yb = y[:, idx]
         cmat = yb.T @ yb
+        # BLAS's symmetric rank-k product for YᵀY gives C symmetric to the bit; the
+        # measure and the symmetrisation below are for a product that is not
+        if np.array_equal(cmat, cmat.T):
+            out.append(ComplianceMatrix(matrix=cmat, asymmetry=0.0, centres=centres[idx]))
+            continue
         norm = float(np.linalg.norm(cmat))
         asym = float(np.linalg.norm(cmat - cmat.T) / norm) if norm > 0.0 else 0.0
         if asym > ASYMMETRY_LIMIT:
@@ -743,6 +762,5 @@ def compliance_blocks(
         if asym > 1e-8:
             log.warning("shell compliance asymmetry %.3g before symmetrisation", asym)
         cmat = 0.5 * (cmat + cmat.T)
-        out.append(ComplianceMatrix(matrix=cmat, asymmetry=asym,
-                                    centres=0.5 * (p0[idx] + p1[idx])))
+        out.append(ComplianceMatrix(matrix=cmat, asymmetry=asym, centres=centres[idx]))
     return out

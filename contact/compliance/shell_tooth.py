@@ -357,17 +357,26 @@ class ShellModel:
                 raise InputError(f"group_weights: {wts.size} weights do not divide the "
                                  f"{n_pts} points into groups")
         n_out = n_pts // wts.size
-        out = np.empty((self.n_dof, n_out))
+        # filled as (loads, unknowns) and returned transposed: a Fortran-ordered
+        # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
+        out_t = np.empty((n_out, self.n_dof))
+
+        stacked: dict[int, np.ndarray] = {}  # the face rows as (groups, G, m), once each
 
         def outer(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-            # Σ_g w_g a[k, (n, g)] b[m, (n, g)] as rows (k, m), columns n
+            # Σ_g w_g a[k, (n, g)] b[m, (n, g)] as rows n, columns (k, m)
             if wts.size == 1:
-                return (a[:, None, :] * b[None, :, :]).reshape(-1, n_pts)
-            aw = (a.reshape(a.shape[0], n_out, wts.size) * wts).transpose(1, 0, 2)
-            bt = b.reshape(b.shape[0], n_out, wts.size).transpose(1, 2, 0)
-            # one (k × G)(G × m) product per group, stacked over the groups n
-            return np.matmul(aw, bt).transpose(1, 2, 0).reshape(-1, n_out)
+                return (a.T[:, :, None] * b.T[:, None, :]).reshape(n_pts, -1)
+            # one (k × G)(G × m) product per group, stacked over the groups n; the
+            # operands made contiguous first (BLAS's layout: strided views are not)
+            aw = np.ascontiguousarray(
+                (a.reshape(a.shape[0], n_out, wts.size) * wts).transpose(1, 0, 2))
+            if id(b) not in stacked:
+                stacked[id(b)] = np.ascontiguousarray(
+                    b.reshape(b.shape[0], n_out, wts.size).transpose(1, 2, 0))
+            return np.matmul(aw, stacked[id(b)]).reshape(n_out, -1)
 
+        plain: list[tuple[int, np.ndarray]] = []  # (column, rows a) of works outer(a, g)
         for fam, off, power, count in self._layout:
             if (power, count) not in heights:
                 heights[(power, count)] = _height_rows(xi, power, count)
@@ -380,17 +389,29 @@ class ShellModel:
                 scale = comp * zs
             else:
                 scale = None
+            cols = slice(off, off + f.shape[0] * g.shape[0])
             if fam.rotates:  # U_z = −∂W/∂x, V_z = −∂W/∂θ / R at z = 0
                 a_x = zs * d[:, 0] * dxi
                 a_t = zs * d[:, 1] * deta / self.tooth.radius
                 hx = -df * a_x if scale is None else f * scale - df * a_x
-                work = outer(hx, g) - outer(f * a_t, dg)
+                out_t[:, cols] = outer(hx, g) - outer(f * a_t, dg)
             elif scale is None:
-                work = 0.0
+                out_t[:, cols] = 0.0
             else:
-                work = outer(f * scale, g)
-            out[off : off + f.shape[0] * g.shape[0]] = work
-        return out
+                plain.append((off, f * scale))
+        # families outer(a, g) whose columns follow each other: one product for the run
+        # (its rows stacked; each entry the same sum of G products)
+        i = 0
+        while i < len(plain):
+            start, rows = plain[i][0], [plain[i][1]]
+            end = start + rows[0].shape[0] * g.shape[0]
+            while i + 1 < len(plain) and plain[i + 1][0] == end:
+                i += 1
+                rows.append(plain[i][1])
+                end += plain[i][1].shape[0] * g.shape[0]
+            out_t[:, start:end] = outer(rows[0] if len(rows) == 1 else np.concatenate(rows), g)
+            i += 1
+        return out_t.T
 
     def solve(self, loads: np.ndarray) -> np.ndarray:
         """Ritz unknowns ``K⁻¹ F`` for load vectors ``loads`` (n_dof, P) [per N]."""

@@ -169,6 +169,7 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
                               upper_bound=sel.upper_bound)
     except NotPositiveDefiniteError:
         base = None
+    diagonal = np.diagonal(sel.structural)  # the structural part of C's diagonal
     lte_prev = step_prev = None
     sol = problem = None
     n_it = time_used = 0
@@ -182,20 +183,20 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
         cw = np.where(newton, ct, cs)
         separation = sel.separation + np.where(newton, (cs - ct) * load, 0.0)
         if base is not None:
-            problem = base.with_diagonal(np.diag(sel.structural) + cw, separation)
+            problem = base.with_diagonal(diagonal + cw, separation)
         elif problem is None:
             problem = ContactProblem(sel.structural + np.diag(cw), separation,
                                      sel.moment_arm, gear_torque, name=name,
                                      upper_bound=sel.upper_bound)
         else:  # only C's diagonal and s change: the rest was checked at the first
-            problem = problem.with_diagonal(np.diag(sel.structural) + cw, separation)
+            problem = problem.with_diagonal(diagonal + cw, separation)
         sol = solve_contact(problem, options.solver,
                             initial=sol if sol is not None else start)
         time_used += sol.solve_time + sol.build_time
         if not sol.found:
             break
         load = np.minimum(np.maximum(sol.force, 0.0), cap)
-        if np.any(sol.force > cap):
+        if log.isEnabledFor(logging.INFO) and np.any(sol.force > cap):
             log.info("roll %d: Weber load cap reached on %d segments", sel.roll,
                      int(np.sum(sol.force > cap)))
         lte = sol.rotation * 1e6

@@ -198,13 +198,18 @@ class ContactProblem:
         self._set_checked(C, s, R, T, U, bounded, asym, float(skew))
 
     def _set_checked(self, C: np.ndarray, s: np.ndarray, R: np.ndarray, T: float,
-                     U: np.ndarray, bounded: np.ndarray, asym: float, skew: float) -> None:
+                     U: np.ndarray, bounded: np.ndarray, asym: float, skew: float,
+                     like: ContactProblem | None = None) -> None:
         """Store checked, read-only inputs and what is derived from them: the scale, the
         segments with a limit (asked for at every solve and pivot) and ‖C − Cᵀ‖ [mm/N]
-        of the compliance as given (for :meth:`with_diagonal`)."""
-        f0 = T / float(R[R > 0].sum())
-        d0 = f0 * float(np.mean(np.diag(C)))
-        r0 = float(np.max(np.abs(R)))
+        of the compliance as given (for :meth:`with_diagonal`). ``like``: a problem with
+        the same moment arms and torque, whose reference force and arm are these."""
+        if like is None:
+            f0 = T / float(R[R > 0].sum())
+            r0 = float(np.max(np.abs(R)))
+        else:
+            f0, r0 = like.scale.force, like.scale.arm
+        d0 = f0 * float(np.mean(np.diagonal(C)))
         object.__setattr__(self, "compliance", C)
         object.__setattr__(self, "separation", s)
         object.__setattr__(self, "moment_arm", R)
@@ -274,7 +279,7 @@ class ContactProblem:
         new = object.__new__(ContactProblem)
         object.__setattr__(new, "name", self.name)
         new._set_checked(C, s, self.moment_arm, self.torque, self.upper_bound, self._bounded,
-                         asym, skew)
+                         asym, skew, like=self)
         return new
 
     def renamed(self, name: str) -> ContactProblem:
@@ -406,9 +411,18 @@ def contact_residuals(
     dict of str to float
         Keyed by :data:`RESIDUALS`. Non-finite inputs give ``inf`` residuals, never NaN.
     """
+    return _residuals_and_gaps(problem, force, rotation)[0]
+
+
+def _residuals_and_gaps(problem: ContactProblem, force: np.ndarray, rotation: float
+                       ) -> tuple[dict[str, float], np.ndarray | None]:
+    """:func:`contact_residuals` and the gaps Y = C F + s − R Θ [mm] (N,) they were
+    computed from (:meth:`ContactProblem.gap`'s arithmetic, to the bit), or None where F
+    or Θ is not finite: a solve's certification and its solution's slack from one product
+    C F."""
     F = np.asarray(force, dtype=float)
     if F.shape != (problem.size,) or not np.all(np.isfinite(F)) or not np.isfinite(rotation):
-        return dict.fromkeys(RESIDUALS, math.inf)
+        return dict.fromkeys(RESIDUALS, math.inf), None
     sc = problem.scale
     CF = problem.compliance @ F
     Y = CF + problem.separation - problem.moment_arm * rotation
@@ -441,7 +455,7 @@ def contact_residuals(
         ),
         "equilibrium": abs(float(problem.moment_arm @ F) - problem.torque) / problem.torque,
         "upper_complementarity": upper,
-    }
+    }, Y
 
 
 #: LAPACK's Cholesky factorisation and solve in double precision, called directly: the

@@ -31,6 +31,7 @@ from contact.qp.problem import (
     RESIDUALS,
     ContactProblem,
     ContactSolution,
+    _residuals_and_gaps,
     contact_residuals,
     solve_on_contact_set,
 )
@@ -621,7 +622,7 @@ def solve_contact(
             extras,
         )
     F, theta = np.asarray(raw.force, float), float(raw.rotation)
-    res = contact_residuals(problem, F, theta)
+    res, slack = _residuals_and_gaps(problem, F, theta)
     polished = False
     if not _certified(res, tolerance) and polish_solution:
         t0 = time.perf_counter()
@@ -634,6 +635,7 @@ def solve_contact(
             if _certified(res_p, tolerance):
                 extras["raw_residuals"] = res
                 F, theta, res = pol[0], pol[1], res_p
+                slack = None  # of the polished forces: computed below
                 polished = True
     found = _certified(res, tolerance)
     if not found:
@@ -653,7 +655,7 @@ def solve_contact(
     return ContactSolution(
         force=F,
         rotation=theta,
-        slack=problem.gap(F, theta),
+        slack=problem.gap(F, theta) if slack is None else slack,
         found=found,
         status=status,
         solver=solver,
