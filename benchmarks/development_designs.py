@@ -44,10 +44,14 @@ def _cpu() -> float:
     return r.ru_utime + r.ru_stime
 
 
-def _command(args: list[str]) -> tuple[int, float, str]:
+def _command(args: list[str], log: Path | None = None) -> tuple[int, float, str]:
+    """Run one ``ltca`` command; its return code, CPU seconds and output (also written to
+    ``log`` where given: what a user reads, the notes and errors, kept with the files)."""
     c0 = _cpu()
     p = subprocess.run([sys.executable, "-m", "contact", *args], capture_output=True,
                        text=True, check=False)
+    if log is not None:
+        log.write_text(p.stdout + p.stderr, encoding="utf-8")
     return p.returncode, _cpu() - c0, p.stdout + p.stderr
 
 
@@ -62,7 +66,8 @@ def run_design(basic: Path, work: Path) -> dict:
     case = work / f"{basic.stem}.toml"
     nc = work / f"{basic.stem}.nc"
     row: dict = {"design": basic.stem}
-    rc, cpu, text = _command(["synthesize", str(basic), "-o", str(case), "--no-progress"])
+    rc, cpu, text = _command(["synthesize", str(basic), "-o", str(case), "--no-progress"],
+                             work / f"{basic.stem}_synthesize.log")
     row.update(synth_rc=rc, synth_cpu=cpu)
     if rc:
         row["error"] = text.strip().splitlines()[-1] if text.strip() else "?"
@@ -76,7 +81,8 @@ def run_design(basic: Path, work: Path) -> dict:
                dev_edge=a.get("edge_load_share", [np.nan, np.nan])[1],
                dev_lte=a.get("lte_peak_to_peak", [np.nan, np.nan])[1],
                prescriptions=dev.get("prescriptions"))
-    rc, cpu, text = _command(["run", str(case), "-o", str(nc), "--no-progress"])
+    rc, cpu, text = _command(["run", str(case), "-o", str(nc), "--no-progress"],
+                             work / f"{basic.stem}_run.log")
     row.update(run_rc=rc, run_cpu=cpu)
     if rc:
         row["error"] = text.strip().splitlines()[-1] if text.strip() else "?"
@@ -122,12 +128,12 @@ def done_when(row: dict, work: Path) -> dict:
     drive = flank(nc)
     nc_coast = work / f"{stem}_coast.nc"
     rc, _, _ = _command(["run", str(case), "--flank", "coast", "-o", str(nc_coast),
-                              "--no-progress"])
+                         "--no-progress"], work / f"{stem}_coast.log")
     coast = flank(nc_coast) if rc == 0 else {"verdict": f"rc {rc}", "plastic": np.nan,
                                               "light_edge": np.nan, "lte": [np.nan]}
     nc_duty = work / f"{stem}_duty.nc"
     rc, _, _ = _command(["duty-cycle", str(case), "--scheduler", "synchronous", "-o",
-                            str(nc_duty), "--no-progress"])
+                         str(nc_duty), "--no-progress"], work / f"{stem}_duty.log")
     duty = verdict(xr.open_datatree(nc_duty)).severity if rc == 0 else f"rc {rc}"
     out.update(
         targets=bool(row["met"]) and bool(row["tolerant"]), run=drive["verdict"],

@@ -241,3 +241,30 @@ def test_the_coast_design_torque_is_written_with_its_reason_where_below():
     assert m.isnan(ok.coast_static_capacity)
     same, value = ok.with_coast_capacity(case)
     assert same is case and m.isnan(value)
+
+
+def test_a_missed_target_is_said_with_the_decimals_that_show_it_missed():
+    """The face-hobbed spiral bevel 14x43 of ISO 23509 Method 2 (issue 71, unseen (6)):
+    `ltca synthesize` said of its coast flank "not every target met: LTE p-p 40 urad (limit
+    40)" at 40.07 µrad (and the spiral bevel 15x45's coast "edge share 2.0 % (limit 2 %)",
+    docs/own_gear_set.md). The value is printed with the decimals that show it beyond its
+    limit; one well beyond keeps its usual decimals."""
+    from contact.optimize.development_result import _missed
+    from contact.optimize.development_targets import DevelopmentTargets
+
+    t = DevelopmentTargets()
+    base = {"pattern_toe_u": [0.2, 0.1], "pattern_heel_u": [0.8, 0.9],
+            "pattern_centre_u": [0.5, 0.5], "pattern_centre_v": [0.62625, 0.6],
+            "edge_load_share": [0.0, 0.0204], "plastic_share": [0.0, 0.0001],
+            "lte_peak_to_peak": [33.4, 40.068721], "pressure_max_flank": [900.0, 2400.4],
+            "lte_spread": [0.0, 0.5004]}
+    m = {k: np.asarray(v, float) for k, v in base.items()}
+    assert _missed("lte", m, t, 0.543, 2400.0) == "LTE p-p 40.1 urad (limit 40)"
+    assert _missed("edge", m, t, 0.543, 2400.0) == "edge share 2.04 % (limit 2 %)"
+    assert _missed("plastic", m, t, 0.543, 2400.0) == "plastic share 0.01 % (limit 0 %)"
+    assert _missed("pressure", m, t, 0.543, 2400.0) == \
+        "flank peak pressure 2400.4 MPa (limit 2400)"
+    assert _missed("spread", m, t, 0.543, 2400.0).startswith("LTE spread 0.5004 ")
+    assert _missed("centre_v", m, t, 0.543, 2400.0).startswith("centre v 0.63 ")
+    m["lte_peak_to_peak"] = np.asarray([30.0, 55.2])
+    assert _missed("lte", m, t, 0.543, 2400.0) == "LTE p-p 55 urad (limit 40)"

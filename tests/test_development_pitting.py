@@ -238,3 +238,20 @@ def test_the_coast_flank_developed_again_must_carry_its_torque(monkeypatch):
     dev.coast_at_its_torque(basic, ev(0.0), DevelopmentTargets(), {"torques": [35.5, 237.1]},
                             None, {}, lambda line: None, None, first, bare, 237.1)
     assert seen == [None]
+
+
+def test_a_safety_just_below_its_minimum_is_said_with_the_decimals_that_show_it():
+    """The coast capacity search on an unseen hypoid 6x39 at Σ 80° (issue 71, unseen (6))
+    said "at 69.8 N m: local pitting safety S_H,loc 1.00 (pinion) below S_Hmin 1": the
+    safety was 0.998 or so, rounded to two decimals. It is now printed with the decimals
+    that show it below (contact.study.verdicts.shown_below, as the rating's S_H 0.9998);
+    a safety well below keeps two decimals."""
+    from contact.study.verdicts import shown_below
+
+    c = CoastCheck(69.8, 1450.0, 2400.0, pitting_safety=0.9976, s_h_min=1.0,
+                   pitting_member="pinion", root_safety=1.2994, s_min=1.3, member="gear")
+    assert c.failures["pitting"] == "local pitting safety S_H,loc 0.998 (pinion) below S_Hmin 1"
+    assert c.failures["root"] == "FE root stress S_F,FE 1.299 (gear) below S_Fmin 1.3"
+    assert CoastCheck(80.0, 1500.0, 2400.0, pitting_safety=0.91, s_h_min=1.0).failures[
+        "pitting"].startswith("local pitting safety S_H,loc 0.91 ")
+    assert shown_below(0.99999, 1.0) == "0.99999" and shown_below(1.2, 1.3) == "1.20"

@@ -179,3 +179,23 @@ def test_a_root_stress_not_computed_at_a_torque_is_said():
     assert f.severity == "attention"
     assert f.reason == ("root stress of the gear at 500 N·m not checked: not computed (NaN): "
                         "2.1 % of the load lies off its FE load grid.")
+
+
+def test_a_rating_made_outside_the_chain_is_said_so_not_blamed_on_its_method():
+    """A /rating of ISO 10300 put in the tree by hand (``tree["rating"] =
+    contact.iso10300_rating(...)``, as the gallery's own-gear-set example did on an unseen
+    hypoid 9x37, issue 71 unseen (6)) has no flash temperature because the chain's rating
+    step did not run, not because ISO 10300 gives no virtual gears (it does: the chain
+    computes /rating/flash_temperature beside it). The reason names that; a method without
+    the companion keeps the old reason."""
+    rt = _rating([50.0], [800.0, 800.0], 1.0, [1.0], 50.0)
+    rt.attrs["rating_method"] = "iso10300"
+    v = verdict(_tree({"/ltca": _ltca([50.0], [[1.0, 1.0]]), "/rating": rt,
+                       "/friction": xr.Dataset()}))
+    why = dict(v.unchecked)["scuffing_standard"]
+    assert "not written by the analysis chain's rating step" in why
+    assert "gives no virtual gears" not in why
+    rt.attrs["rating_method"] = "agma2003"
+    v = verdict(_tree({"/ltca": _ltca([50.0], [[1.0, 1.0]]), "/rating": rt,
+                       "/friction": xr.Dataset()}))
+    assert dict(v.unchecked)["scuffing_standard"].endswith("gives no virtual gears for it")

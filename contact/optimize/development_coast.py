@@ -102,6 +102,8 @@ class CoastCheck:
     @property
     def failures(self) -> dict[str, str]:
         """What fails at this torque, criterion → phrase with the numbers (empty: holds)."""
+        from contact.study.verdicts import shown_below
+
         out = {}
         if math.isfinite(self.pressure) and self.pressure > self.limit:
             out["flank"] = (f"flank peak pressure {self.pressure:.0f} MPa above the static "
@@ -111,11 +113,13 @@ class CoastCheck:
                               "torque")
         if (math.isfinite(self.root_safety) and math.isfinite(self.s_min)
                 and self.root_safety < self.s_min):
-            out["root"] = (f"FE root stress S_F,FE {self.root_safety:.2f} ({self.member}) "
+            out["root"] = (f"FE root stress S_F,FE "
+                           f"{shown_below(self.root_safety, self.s_min)} ({self.member}) "
                            f"below S_Fmin {self.s_min:g}")
         if (math.isfinite(self.pitting_safety) and math.isfinite(self.s_h_min)
                 and self.pitting_safety < self.s_h_min):
-            out["pitting"] = (f"local pitting safety S_H,loc {self.pitting_safety:.2f} "
+            out["pitting"] = (f"local pitting safety S_H,loc "
+                              f"{shown_below(self.pitting_safety, self.s_h_min)} "
                               f"({self.pitting_member}) below S_Hmin {self.s_h_min:g}")
         return out
 

@@ -461,16 +461,31 @@ def _met_text(full: tuple[float, dict[str, float], bool]) -> str:
 
 def _missed(name: str, m: Mapping[str, np.ndarray], t: DevelopmentTargets,
             centre_v: float, pressure_limit: float) -> str:
-    """One missed target of :func:`development_score` with its value and its limit."""
+    """One missed target of :func:`development_score` with its value and its limit (with
+    the decimals that show it beyond the limit: :func:`contact.study.verdicts.
+    shown_above`, :func:`~contact.study.verdicts.shown_below`)."""
+    from contact.study.verdicts import shown_above, shown_below
+
+    def band(value: float, target: float, tol: float) -> str:
+        if value > target + tol:
+            return shown_above(value, target + tol, 2)
+        return shown_below(value, target - tol, 2)
+
     if name == "length":
         length = m["pattern_heel_u"][0] - m["pattern_toe_u"][0]
-        return (f"pattern length {length:.2f} (target {t.pattern_length:g} +/- "
+        return (f"pattern length "
+                f"{band(length, t.pattern_length, t.pattern_length_tolerance)} (target "
+                f"{t.pattern_length:g} +/- "
                 f"{t.pattern_length_tolerance:g})")
     if name == "centre_u":
-        return (f"centre u {m['pattern_centre_u'][0]:.2f} (target {t.pattern_centre_u:g} "
+        cu = float(m["pattern_centre_u"][0])
+        return (f"centre u {band(cu, t.pattern_centre_u, t.centre_tolerance)} (target "
+                f"{t.pattern_centre_u:g} "
                 f"+/- {t.centre_tolerance:g})")
     if name == "centre_v":
-        return (f"centre v {m['pattern_centre_v'][0]:.2f} (target {centre_v:.3g} +/- "
+        cv = float(m["pattern_centre_v"][0])
+        return (f"centre v {band(cv, centre_v, t.centre_tolerance)} (target "
+                f"{centre_v:.3g} +/- "
                 f"{t.centre_tolerance:g})")
     ends = {"toe": ("pattern_toe_u", "toe u"), "heel": ("pattern_heel_u", "heel u"),
             "root": ("pattern_root_v", "root v"), "tip": ("pattern_tip_v", "tip v")}
@@ -479,20 +494,25 @@ def _missed(name: str, m: Mapping[str, np.ndarray], t: DevelopmentTargets,
         return (f"{name} clearance: pattern {what} {m[key][0]:.2f} (clear of the grid's "
                 f"end by {t.clearance:g})")
     if name == "edge":
-        return (f"edge share {100 * m['edge_load_share'][1]:.1f} % (limit "
+        edge = 100 * float(m["edge_load_share"][1])
+        return (f"edge share {shown_above(edge, 100 * t.max_edge_share, 1)} % (limit "
                 f"{100 * t.max_edge_share:g} %)")
     if name == "plastic":
-        return (f"plastic share {100 * np.max(m['plastic_share']):.1f} % (limit "
+        plastic = 100 * float(np.max(m["plastic_share"]))
+        return (f"plastic share {shown_above(plastic, 100 * t.max_plastic_share, 1)} % ("
+                "limit "
                 f"{100 * t.max_plastic_share:g} %)")
     if name == "lte":
-        return (f"LTE p-p {np.max(m['lte_peak_to_peak']):.0f} urad (limit "
+        lte = float(np.max(m["lte_peak_to_peak"]))
+        return (f"LTE p-p {shown_above(lte, t.max_lte, 0)} urad (limit "
                 f"{t.max_lte:g})")
     if name == "pressure":
         lim = t.max_flank_pressure if t.max_flank_pressure is not None else pressure_limit
-        return (f"flank peak pressure {m['pressure_max_flank'][1]:.0f} MPa (limit "
-                f"{lim:.0f})")
+        p = float(m["pressure_max_flank"][1])
+        return (f"flank peak pressure {shown_above(p, lim, 0)} MPa (limit {lim:.0f})")
     if name == "spread":
-        return (f"LTE spread {np.max(m['lte_spread']):.2f} (limit "
+        spread = float(np.max(m["lte_spread"]))
+        return (f"LTE spread {shown_above(spread, LTE_SPREAD_LIMIT, 2)} (limit "
                 f"{LTE_SPREAD_LIMIT:g})")
     return name
 

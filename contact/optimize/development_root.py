@@ -351,11 +351,15 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
     what = {"root": "its FE root stress gives", "pitting": "its LTCA peak flank pressure "
             "gives the local pitting safety at long life (sigma_HP / (p_max sqrt(K_A "
             "K_v)), ISO 10300 with the bearing's own load distribution)"}
-    was = "; ".join(f"{what[k]} {CRITERIA[k][1]} {s:.2f} ({m}) below {CRITERIA[k][1][:3]}"
+    from contact.study.verdicts import shown_below
+
+    was = "; ".join(f"{what[k]} {CRITERIA[k][1]} {shown_below(s, s_min)} ({m}) below "
+                    f"{CRITERIA[k][1][:3]}"
                     f"min {s_min:g}" for k, (s, s_min, m) in first.items())
-    now = ", ".join(f"{CRITERIA[k][1]} ({m}) is {float(s[-1]):.2f}"
-                    f"{' (still below)' if k in fails else ''}"
-                    for k, (s, _, m) in safe.items())
+    now = ", ".join(f"{CRITERIA[k][1]} ({m}) is "
+                    + (f"{shown_below(float(s[-1]), s_min)} (still below)" if k in fails
+                       else f"{float(s[-1]):.2f}")
+                    for k, (s, s_min, m) in safe.items())
     symbols = "; ".join(dict.fromkeys(CRITERIA[k][1] for k, _ in used if k in CRITERIA))
     down = [u for u in used if u[0] in CRITERIA]
     up = len(down) < len(used)

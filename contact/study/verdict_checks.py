@@ -311,7 +311,21 @@ def unchecked_reason(tree: xr.DataTree, check: str) -> str:
                 + (f" ({said})" if said else ""))
     if "friction" not in tree.children:
         return "no /rating/flash_temperature: the analysis ran without an efficiency stage"
-    why = str(tree["rating"].attrs.get("flash_temperature_not_run", ""))
+    rating_attrs = tree["rating"].attrs
+    why = str(rating_attrs.get("flash_temperature_not_run", ""))
     if why:
         return f"no /rating/flash_temperature: {why}"
+    from contact.load_capacity.methods import METHODS
+
+    method = str(rating_attrs.get("rating_method", ""))
+    entry = METHODS.get(method)
+    if entry is not None and "flash_temperature" in entry.companions:
+        # the method computes it, and the chain records why where it could not: this
+        # /rating was put in the tree without the chain's step (found on the gallery's
+        # "own gear set" example, whose tree["rating"] = contact.iso10300_rating(...)
+        # replaced the chain's rating and its flash temperature)
+        return (f"no /rating/flash_temperature: this /rating ({method}) was not written by "
+                "the analysis chain's rating step, which computes it beside the rating "
+                "(contact.iso10300_rating rates only; run_analysis rates by default, or "
+                "contact.chain.scuffing_flash_temperature(rating, friction))")
     return "no /rating/flash_temperature: the rating method gives no virtual gears for it"

@@ -127,7 +127,8 @@ from geometry.core.errors import InputError
 
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
            "LTE_LIMIT", "MICROPITTING_MIN", "SCUFFING_MIN", "SEVERITIES", "VH_SAME_POSITION",
-           "VH_TARGET_TOLERANCE", "Finding", "Verdict", "quiet_transfer", "verdict"]
+           "VH_TARGET_TOLERANCE", "Finding", "Verdict", "quiet_transfer", "shown_above",
+           "shown_below", "verdict"]
 
 #: the severities, mildest first (a verdict is the worst of its findings)
 SEVERITIES = ("pass", "attention", "fail")
@@ -572,14 +573,57 @@ def _safeties(fr: xr.Dataset) -> list[Finding]:
     return out
 
 
-def _below(value: float, limit: float, decimals: int) -> str:
-    """``value`` < ``limit`` with ``decimals`` decimals or as many more (up to 6) as show it
-    below: a pitting safety 0.9998 under S_Hmin 1 (a design torque typed 0.02 % above the
-    capacity) read "S_H 1.00 ... below S_Hmin 1" (issue 71, unseen designs)."""
+def shown_below(value: float, limit: float, decimals: int = 2) -> str:
+    """A value said to be below its limit, with as many decimals as show it below.
+
+    Parameters
+    ----------
+    value : float — [any unit] the value (a safety, [1], where it is used)
+    limit : float — [the same unit] the limit it is below (S_Hmin, S_Fmin)
+    decimals : int, optional — [1] the decimals normally printed (default 2)
+
+    Returns
+    -------
+    str
+        ``value`` with ``decimals`` decimals, or as many more (up to 6) as show it below
+        ``limit``: a pitting safety 0.9998 under S_Hmin 1 (a design torque typed 0.02 %
+        above the capacity) read "S_H 1.00 ... below S_Hmin 1" (issue 71, unseen designs);
+        so did the development's coast capacity search, "S_H,loc 1.00 (pinion) below
+        S_Hmin 1" (hypoid 6x39 at Σ 80°, issue 71 unseen (6)). A value not below its limit
+        gets ``decimals`` + 4 decimals at most (no source: a presentation rule).
+    """
     d = decimals
     while d < 6 and round(float(value), d) >= limit:
         d += 1
     return f"{value:.{d}f}"
+
+
+def shown_above(value: float, limit: float, decimals: int = 0) -> str:
+    """A value said to be above its limit, with as many decimals as show it above.
+
+    Parameters
+    ----------
+    value : float — [any unit] the value (an LTE p-p [µrad], a share [%], where it is used)
+    limit : float — [the same unit] the limit it exceeds
+    decimals : int, optional — [1] the decimals normally printed (default 0)
+
+    Returns
+    -------
+    str
+        ``value`` with ``decimals`` decimals, or as many more (up to 6) as show it above
+        ``limit`` where it is above: the development's "LTE p-p 40 urad (limit 40)" of a
+        face-hobbed spiral bevel 14x43's coast flank at 40.07 µrad (issue 71, unseen (6))
+        reads "LTE p-p 40.1 urad (limit 40)". A value not above ``limit`` keeps
+        ``decimals``. The twin of :func:`shown_below` (a presentation rule, no source).
+    """
+    d = decimals
+    if float(value) > limit:
+        while d < 6 and round(float(value), d) <= limit:
+            d += 1
+    return f"{value:.{d}f}"
+
+
+_below = shown_below
 
 
 def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Finding]:
