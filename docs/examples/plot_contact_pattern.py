@@ -12,8 +12,9 @@ figure at the full resolution.
 import contact
 
 options = contact.LTCAOptions(rolls_per_cycle=8, segments=12)
-tree = contact.run_analysis(None, [250.0], options=options, operating=False,
-                            geometry=False, mesh_interface=False, root_stress=False)
+steps = contact.AnalysisChain.analysis().without("efficiency", "geometry", "mesh_interface",
+                                                 "root_stress")
+tree = contact.run_analysis(None, [250.0], options=options, steps=steps)
 pattern = contact.contact_pattern_figure(tree["easeoff"].to_dataset(),
                                          tree["utca"].to_dataset(),
                                          tree["ltca"].to_dataset())

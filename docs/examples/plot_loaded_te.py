@@ -12,8 +12,8 @@ import matplotlib.pyplot as plt
 
 import contact
 
-tree = contact.run_analysis(None, [50.0, 250.0, 500.0], operating=False, geometry=False,
-                            mesh_interface=False)
+steps = contact.AnalysisChain.analysis().without("efficiency", "geometry", "mesh_interface")
+tree = contact.run_analysis(None, [50.0, 250.0, 500.0], steps=steps)
 ltca = tree["ltca"].to_dataset()
 
 fig, ax = plt.subplots(figsize=(6, 3.5))
