@@ -314,3 +314,37 @@ def test_stiffness_equals_scikit_fems_assembly(monkeypatch, group):
     assert (got - got.T).count_nonzero() == 0
     low = elastic_model(mm.mesh, "hex20", 206000.0, 0.3, lower=True).stiffness
     assert (low - sp.tril(got)).count_nonzero() == 0
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="memfd_create: Linux")
+@pytest.mark.parametrize("shared", [True, False])
+def test_the_workers_shared_blocks_solve_as_the_connection(monkeypatch, shared):
+    """The lean worker's blocks on shared memory (issue 75, fourth round): a block written
+    into :meth:`Factorisation.rhs_block` and solved in place by :meth:`solve_free`, and
+    more columns than one block through :meth:`Factorisation.solve`, give the in-process
+    factor's displacements (the same factor and ordering in another process: equal to
+    round-off, 1e-12 of the largest); without shared memory (``_shared_blocks`` None)
+    the same through the connection."""
+    from contact.compliance.fe import elasticity
+
+    if not shared:
+        monkeypatch.setattr(elasticity, "_shared_blocks", lambda rows: None)
+    model, fixed = _cantilever()
+    rhs = np.random.default_rng(21).standard_normal((model.n_dofs, 150))
+    ref = factorise(model.stiffness, fixed, "cholmod").solve(rhs)
+    iso = factorise(model.stiffness, fixed, "cholmod", isolated=True)
+    try:
+        assert (iso._shared is not None) == shared
+        scale = np.abs(ref).max()
+        got = iso.solve(rhs)  # 150 columns: three blocks
+        np.testing.assert_allclose(got, ref, rtol=0, atol=1e-12 * scale)
+        block = iso.rhs_block(40)
+        assert block.shape == (iso.free.size, 40) and block.flags.f_contiguous
+        block[...] = rhs[iso.free, :40]
+        x = iso.solve_free(block)
+        np.testing.assert_allclose(x, ref[iso.free, :40], rtol=0, atol=1e-12 * scale)
+        # an array of its own (not the shared block) is solved too
+        y = iso.solve_free(np.ascontiguousarray(rhs[iso.free, 40:45]))
+        np.testing.assert_allclose(y, ref[iso.free, 40:45], rtol=0, atol=1e-12 * scale)
+    finally:
+        iso.close()

@@ -351,6 +351,7 @@ class Factorisation:
     _solve: Callable[[np.ndarray], np.ndarray]
     isolated: bool = False
     _close: Callable[[], None] | None = None
+    _shared: _LeanWorker | None = None  # the worker, where its blocks are shared memory
 
     def close(self) -> None:
         """End the worker process that holds an isolated factor (nothing otherwise); the
@@ -358,6 +359,30 @@ class Factorisation:
         if self._close is not None:
             self._close()
             self._close = None
+        self._shared = None
+
+    def rhs_block(self, k: int) -> np.ndarray:
+        """An array (F, k) [float64, Fortran order] for ``k`` right-hand sides on the
+        free dofs, to be solved by :meth:`solve_free`: the solver worker's shared block
+        where it has one and ``k`` ≤ :data:`PIPE_BLOCK` (the loads are then neither
+        copied nor sent, issue 75), else a new array."""
+        block = self._shared.rhs_block(k) if self._shared is not None else None
+        return block if block is not None else np.empty((self.free.size, k), order="F")
+
+    def solve_free(self, b: np.ndarray) -> np.ndarray:
+        """Displacements of the free dofs (F, k) [mm] for loads ``b`` (F, k) [N] on the
+        free dofs (in the order of :attr:`free`). Where ``b`` is the :meth:`rhs_block`
+        of the worker's shared memory, it is solved in place and the result is a view of
+        the shared solutions (Fortran order), valid until the next solve: use or copy it
+        before."""
+        if self._shared is not None and self._shared.shared is not None:
+            rhs = self._shared.shared.rhs
+            if (b.ndim == 2 and b.shape[0] == rhs.shape[0] and b.shape[1] <= rhs.shape[1]
+                    and b.__array_interface__["data"][0] == rhs.__array_interface__["data"][0]
+                    and b.flags.f_contiguous):
+                return self._shared.solve_shared(b.shape[1])
+        return self._solve(np.asfortranarray(b, dtype=float) if b.ndim == 2 and b.shape[1] > 1
+                           else np.asarray(b, dtype=float))
 
     def solve(self, rhs: np.ndarray | sp.spmatrix) -> np.ndarray:
         """Displacements (3N, k) [mm] for loads ``rhs`` (3N, k) or (3N,) [N], dense or
@@ -581,11 +606,14 @@ class _LeanWorker(_Worker):
         self.conn = Connection(ours.detach())
         self.busy = False
         fd = theirs.detach()
+        low, ordering = box.pop()
+        self.shared = _shared_blocks(low.shape[0])
         script = str(Path(__file__).resolve().with_name("solver_worker.py"))
         mask = signal.pthread_sigmask(signal.SIG_BLOCK, _SIGNALS)  # as _Worker: known
         try:                                                       # before any handler
             self.proc = _Child(subprocess.Popen(
-                [sys.executable, script, str(fd), *sys.argv], pass_fds=(fd,),
+                [sys.executable, script, str(fd), *sys.argv],
+                pass_fds=(fd,) if self.shared is None else (fd, self.shared.fd),
                 stdin=subprocess.DEVNULL))
         finally:
             os.close(fd)
@@ -594,12 +622,12 @@ class _LeanWorker(_Worker):
             except BaseException:
                 self.kill()
                 raise
-        low, ordering = box.pop()
         self.busy = True
         try:  # the arrays as raw bytes, not pickled: no copy of the matrix on either side
             from contact.compliance.fe.solver_worker import send_array
 
-            self.conn.send(("cholmod-raw", low.shape[0], ordering is not None))
+            self.conn.send(("cholmod-raw", low.shape[0], ordering is not None) + (
+                () if self.shared is None else (self.shared.fd, self.shared.columns)))
             for array in (low.data, low.indices, low.indptr) + (
                     (ordering,) if ordering is not None else ()):
                 send_array(self.conn, "array", array)
@@ -607,6 +635,68 @@ class _LeanWorker(_Worker):
             self.kill()
             raise
         del low, ordering
+
+    def rhs_block(self, k: int) -> np.ndarray | None:
+        """The shared block for ``k`` ≤ :data:`PIPE_BLOCK` right-hand sides, (F, k) in
+        Fortran order (write them there, then :meth:`solve_shared`), or None without
+        shared blocks."""
+        if self.shared is None or k > self.shared.columns:
+            return None
+        return self.shared.rhs[:, :k]
+
+    def solve_shared(self, k: int) -> np.ndarray:
+        """Solutions (F, k), Fortran order, of the right-hand sides written to
+        :meth:`rhs_block` ``(k)``: a view of the shared solutions' block, valid until the
+        next solve."""
+        self.busy = True
+        try:
+            self.conn.send(("shared", k))
+        except BaseException:
+            self.kill()
+            raise
+        header = self.receive()
+        if header[:2] != ("shared-ok", k):
+            self.kill()
+            raise LTCAError(f"FE solver worker: unexpected answer {header[:2]!r}")
+        return self.shared.solution[:, :k]
+
+    def solve(self, b: np.ndarray) -> np.ndarray:
+        """As :meth:`_Worker.solve`; through the shared blocks where there are."""
+        if self.shared is None:
+            return super().solve(b)
+        out = np.empty(b.shape, dtype=np.float64, order="F")
+        for start in range(0, b.shape[1], self.shared.columns):
+            k = min(self.shared.columns, b.shape[1] - start)
+            self.shared.rhs[:, :k] = b[:, start:start + k]
+            out[:, start:start + k] = self.solve_shared(k)
+        return out
+
+    def kill(self) -> None:
+        super().kill()
+        if getattr(self, "shared", None) is not None:
+            self.shared.close()
+            os.close(self.shared.fd)
+            self.shared = None
+
+
+def _shared_blocks(rows: int):
+    """Two shared blocks of ``rows`` × :data:`PIPE_BLOCK` float64 for the lean worker
+    (:class:`contact.compliance.fe.solver_worker.SharedBlocks` on a ``memfd_create``
+    file), or None where the platform has no such file or it cannot be made (then the
+    blocks go through the connection, as before)."""
+    if not hasattr(os, "memfd_create"):
+        return None
+    from contact.compliance.fe.solver_worker import SharedBlocks
+
+    try:
+        fd = os.memfd_create("hypoid-ltca-fe-blocks", os.MFD_CLOEXEC)
+    except OSError:
+        return None
+    try:
+        return SharedBlocks(fd, rows, PIPE_BLOCK, create=True)
+    except (OSError, ValueError):
+        os.close(fd)
+        return None
 
 
 def lean_worker_available() -> bool:
@@ -623,7 +713,8 @@ def _isolated(kernel: Callable[[list], tuple], box: list):
     else:
         worker = _Worker(kernel, box)
     _, nnz, _ = worker.receive()
-    return worker.solve, nnz, worker.close
+    return worker.solve, nnz, worker.close, (worker if isinstance(worker, _LeanWorker)
+                                             and worker.shared is not None else None)
 
 
 def isolation_available() -> bool:
@@ -840,7 +931,7 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     t0 = time.perf_counter()
     kernel = {"cholmod": _cholmod, "pardiso": _pardiso, "superlu": _superlu}[solver]
     isolated = isolated and isolation_available()
-    close = None
+    close = shared = None
     log.info("factorising %d unknowns with %s%s", free.size, solver,
              " in a worker process" if isolated else "")
     try:
@@ -848,7 +939,7 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
         box = [(a, ordering)] if solver == "cholmod" else [a]
         del a
         if isolated:
-            solve, nnz, close = _isolated(kernel, box)
+            solve, nnz, close, shared = _isolated(kernel, box)
         else:
             solve, nnz = kernel(box)
     except RuntimeError as exc:  # SuperLU: "Factor is exactly singular"
@@ -857,4 +948,4 @@ def factorise(stiffness: sp.spmatrix, fixed_dofs: np.ndarray, solver: str = "aut
     elapsed = time.perf_counter() - t0
     log.info("factorised %d unknowns with %s: %d non-zeros in the factors, %.1f s", free.size,
              solver, nnz, elapsed)
-    return Factorisation(solver, free, n, nnz, elapsed, solve, isolated, close)
+    return Factorisation(solver, free, n, nnz, elapsed, solve, isolated, close, shared)
