@@ -286,15 +286,14 @@ def test_free_lower_triangle_equals_scipys_slices():
         np.testing.assert_array_equal(got.data, want.data)
 
 
-@pytest.mark.parametrize("group", [1024, 5])
-def test_stiffness_equals_scikit_fems_assembly(monkeypatch, group):
+def test_stiffness_equals_scikit_fems_assembly(monkeypatch):
     """K summed by node pairs (issue 75, fourth round) against scikit-fem's own assembly
     of the same bilinear form (``skfem.models.elasticity.linear_elasticity`` on the same
     basis and quadrature: independent code, the element matrices summed by scikit-fem's
     COO): equal within 1e-13 of K's largest entry (summation order only; the sums' round-
     off is ~1e-16 relative per term, a few tens of terms per entry), exactly symmetric,
-    the lower triangle's ``lower=True``. Blocks of 3 and groups of 5 elements (so that the
-    bincount over several groups is exercised) on a distorted mesh."""
+    the lower triangle's ``lower=True``. Blocks of 3 elements (several blocks adding to
+    the same entries) on a distorted mesh."""
     import scipy.sparse as sp
     import skfem
     from skfem.models.elasticity import linear_elasticity
@@ -302,7 +301,6 @@ def test_stiffness_equals_scikit_fems_assembly(monkeypatch, group):
     from contact.compliance.fe import elasticity
 
     monkeypatch.setattr(elasticity, "_BLOCK", 3)
-    monkeypatch.setattr(elasticity, "_GROUP", group)
     mm = mapped_mesh((4, 3, 2), lambda p: np.vstack([10.0 * p[0] + p[1] ** 2, 2.0 * p[1],
                                                      2.0 * p[2] + 0.3 * p[0] * p[2]]))
     lam, mu = elasticity.lame(206000.0, 0.3)
