@@ -609,7 +609,10 @@ class _LeanWorker(_Worker):
             self.proc = _Child(subprocess.Popen(
                 [sys.executable, script, str(fd), *sys.argv],
                 pass_fds=(fd,) if self.shared is None else (fd, self.shared.fd),
-                stdin=subprocess.DEVNULL))
+                stdin=subprocess.DEVNULL,
+                # its NumPy arrays on ordinary pages (influence.small_pages: no compaction
+                # for huge pages at each fault)
+                env={**os.environ, "NUMPY_MADVISE_HUGEPAGE": "0"}))
         finally:
             os.close(fd)
             try:
