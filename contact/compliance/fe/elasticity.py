@@ -610,7 +610,7 @@ class _LeanWorker(_Worker):
                 [sys.executable, script, str(fd), *sys.argv],
                 pass_fds=(fd,) if self.shared is None else (fd, self.shared.fd),
                 stdin=subprocess.DEVNULL,
-                # its NumPy arrays on ordinary pages (influence.small_pages: no compaction
+                # its NumPy arrays on ordinary pages (influence._small_pages: no compaction
                 # for huge pages at each fault)
                 env={**os.environ, "NUMPY_MADVISE_HUGEPAGE": "0"}))
         finally:

@@ -435,7 +435,7 @@ def build_influence_model(case, member: str, flank: str = "drive",
 
 
 @contextlib.contextmanager
-def small_pages():
+def _small_pages():
     """NumPy's large arrays on ordinary pages while the block runs, the caller's setting
     restored afterwards.
 
@@ -987,7 +987,7 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     progress_line(progress, f"FE {member} influence coefficients of {case.name} ({name} "
                             f"flank): not in the cache, building them"
                             + (_estimate_text(cache_dir) if cache else ""))
-    with small_pages():
+    with _small_pages():
         ds = _build_and_cache(case, member, name, opt, solver, progress, cache, cache_dir,
                               other_flank, path, key, t0)
     progress_line(progress, f"FE {member} influence coefficients built in "
