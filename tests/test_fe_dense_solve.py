@@ -118,9 +118,8 @@ def test_a_dense_solve_that_disagrees_falls_back(monkeypatch, caplog):
 def test_lower_triangle_assembly_equals_the_whole_ks_to_the_bit(monkeypatch):
     """``elastic_model(..., lower=True)`` (what a CHOLMOD build assembles, issue 75) stores
     exactly the lower triangle of the whole K: the same pattern and the same values to the
-    bit (each block's duplicates summed as in the whole K, the blocks' pairwise sums
-    decided on the whole K's sizes), over many blocks (7 elements each) of a distorted
-    mesh, so the FE coefficients do not move."""
+    bit (the whole K is the lower triangle completed by its transpose), over many blocks
+    (7 elements each) of a distorted mesh."""
     import scipy.sparse as sp
 
     from contact.compliance.fe import elasticity
@@ -285,3 +284,65 @@ def test_free_lower_triangle_equals_scipys_slices():
         np.testing.assert_array_equal(got.indptr, want.indptr)
         np.testing.assert_array_equal(got.indices, want.indices)
         np.testing.assert_array_equal(got.data, want.data)
+
+
+def test_stiffness_equals_scikit_fems_assembly(monkeypatch):
+    """K summed by node pairs (issue 75, fourth round) against scikit-fem's own assembly
+    of the same bilinear form (``skfem.models.elasticity.linear_elasticity`` on the same
+    basis and quadrature: independent code, the element matrices summed by scikit-fem's
+    COO): equal within 1e-13 of K's largest entry (summation order only; the sums' round-
+    off is ~1e-16 relative per term, a few tens of terms per entry), exactly symmetric,
+    the lower triangle's ``lower=True``. Blocks of 3 elements (several blocks adding to
+    the same entries) on a distorted mesh."""
+    import scipy.sparse as sp
+    import skfem
+    from skfem.models.elasticity import linear_elasticity
+
+    from contact.compliance.fe import elasticity
+
+    monkeypatch.setattr(elasticity, "_BLOCK", 3)
+    mm = mapped_mesh((4, 3, 2), lambda p: np.vstack([10.0 * p[0] + p[1] ** 2, 2.0 * p[1],
+                                                     2.0 * p[2] + 0.3 * p[0] * p[2]]))
+    lam, mu = elasticity.lame(206000.0, 0.3)
+    basis = skfem.CellBasis(mm.mesh, skfem.ElementVector(skfem.ElementHexS2()), intorder=4)
+    want = skfem.asm(linear_elasticity(lam, mu), basis).tocsr()
+    got = elastic_model(mm.mesh, "hex20", 206000.0, 0.3).stiffness
+    scale = abs(want).max()
+    assert abs(got - want).max() <= 1e-13 * scale
+    assert (got - got.T).count_nonzero() == 0
+    low = elastic_model(mm.mesh, "hex20", 206000.0, 0.3, lower=True).stiffness
+    assert (low - sp.tril(got)).count_nonzero() == 0
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="memfd_create: Linux")
+@pytest.mark.parametrize("shared", [True, False])
+def test_the_workers_shared_blocks_solve_as_the_connection(monkeypatch, shared):
+    """The lean worker's blocks on shared memory (issue 75, fourth round): a block written
+    into :meth:`Factorisation.rhs_block` and solved in place by :meth:`solve_free`, and
+    more columns than one block through :meth:`Factorisation.solve`, give the in-process
+    factor's displacements (the same factor and ordering in another process: equal to
+    round-off, 1e-12 of the largest); without shared memory (``_shared_blocks`` None)
+    the same through the connection."""
+    from contact.compliance.fe import elasticity
+
+    if not shared:
+        monkeypatch.setattr(elasticity, "_shared_blocks", lambda rows: None)
+    model, fixed = _cantilever()
+    rhs = np.random.default_rng(21).standard_normal((model.n_dofs, 150))
+    ref = factorise(model.stiffness, fixed, "cholmod").solve(rhs)
+    iso = factorise(model.stiffness, fixed, "cholmod", isolated=True)
+    try:
+        assert (iso._shared is not None) == shared
+        scale = np.abs(ref).max()
+        got = iso.solve(rhs)  # 150 columns: three blocks
+        np.testing.assert_allclose(got, ref, rtol=0, atol=1e-12 * scale)
+        block = iso.rhs_block(40)
+        assert block.shape == (iso.free.size, 40) and block.flags.f_contiguous
+        block[...] = rhs[iso.free, :40]
+        x = iso.solve_free(block)
+        np.testing.assert_allclose(x, ref[iso.free, :40], rtol=0, atol=1e-12 * scale)
+        # an array of its own (not the shared block) is solved too
+        y = iso.solve_free(np.ascontiguousarray(rhs[iso.free, 40:45]))
+        np.testing.assert_allclose(y, ref[iso.free, 40:45], rtol=0, atol=1e-12 * scale)
+    finally:
+        iso.close()

@@ -221,7 +221,8 @@ def dense_solver(factor, reference: Callable[[np.ndarray], np.ndarray]
     Returns
     -------
     callable or None
-        ``solve(b)``: x (n, k) [float64] of A x = b for b (n, k) — CHOLMOD's
+        ``solve(b, out=None)``: x (n, k) [float64] of A x = b for b (n, k), written
+        into ``out`` where given (float64, Fortran order) — CHOLMOD's
         ``cholmod_l_solve`` (``CHOLMOD_A``) on the whole block (supernodal, BLAS-3); or
         None where CHOLMOD's library cannot be reached here (not Linux, another cvxopt
         build, an unexpected capsule): the caller keeps cvxopt's solves.
@@ -258,11 +259,15 @@ def dense_solver(factor, reference: Callable[[np.ndarray], np.ndarray]
         return None
     checked = []
 
-    def solve(b: np.ndarray) -> np.ndarray:
+    def solve(b: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         rhs = np.asfortranarray(b, dtype=np.float64)
         n, k = rhs.shape
+        if out is not None and (out.shape != (n, k) or out.dtype != np.float64
+                                or not out.flags.f_contiguous):
+            raise ValueError("solve: out must be a float64 array of the block's shape in "
+                             "Fortran order")
         if k == 0:
-            return np.empty((n, 0))
+            return np.empty((n, 0)) if out is None else out
         block = _Dense(n, k, n * k, n, rhs.ctypes.data, None, _REAL, _DOUBLE)
         x = solve_c(0, pointer, ctypes.byref(block), common)  # 0: CHOLMOD_A, A x = b
         if not x:
@@ -274,8 +279,12 @@ def dense_solver(factor, reference: Callable[[np.ndarray], np.ndarray]
             flat = np.ctypeslib.as_array(ctypes.cast(d.x, ctypes.POINTER(ctypes.c_double)),
                                          shape=(k * d.d,))
             # copied column after column (Fortran order, as CHOLMOD lays it out): no
-            # transposition (~0.05 s per block of 64 on the default pinion model)
-            out = flat.reshape(k, d.d)[:, :n].copy().T
+            # transposition (~0.05 s per block of 64 on the default pinion model), into
+            # ``out`` where given (the solver worker's shared block, issue 75)
+            if out is None:
+                out = flat.reshape(k, d.d)[:, :n].copy().T
+            else:
+                np.copyto(out.T, flat.reshape(k, d.d)[:, :n])
         finally:
             free(ctypes.byref(x), common)
         if not checked:
@@ -305,7 +314,8 @@ def cholmod_kernel(box: list) -> tuple[Callable[[np.ndarray], np.ndarray], int]:
     Returns
     -------
     (solve, nnz)
-        ``solve(b)``: x (n, k) of A x = b for b (n, k), dense blocks at once
+        ``solve(b, out=None)``: x (n, k) of A x = b for b (n, k) (into ``out``, an
+        (n, k) float64 array in Fortran order, where given), dense blocks at once
         (:func:`dense_solver`) or, where that cannot be reached, cvxopt's sparse solves;
         ``nnz`` −1 (cvxopt does not report the factor's size).
 
@@ -376,14 +386,17 @@ def cholmod_kernel(box: list) -> tuple[Callable[[np.ndarray], np.ndarray], int]:
     # CHOLMOD's library cannot be reached, or its first solve disagrees, the sparse solves
     dense = [dense_solver(factor, sparse_solve)]
 
-    def solve(b: np.ndarray) -> np.ndarray:
+    def solve(b: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
         if dense[0] is not None:
             try:
-                return dense[0](b)
+                return dense[0](b) if out is None else dense[0](b, out)
             except RuntimeError as exc:
                 log.warning("FE solves: %s; CHOLMOD's sparse solves used instead", exc)
                 dense[0] = None
-        return sparse_solve(b)
+        if out is None:
+            return sparse_solve(b)
+        out[...] = sparse_solve(b)
+        return out
 
     # cvxopt does not report the factor's size without copying it out (getfactor: ~0.8 s
     # and the factor's memory again): -1, "not reported"

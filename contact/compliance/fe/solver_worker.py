@@ -9,7 +9,12 @@ indices, indptr, n, ordering)``, CSC); the worker factorises it
 seconds)`` or ``("error", exception)``, then answers each block of right-hand sides it
 receives (a header ``("block", shape, dtype[, "F"])`` and the raw bytes, :func:`send_array`) with
 ``("ok", shape, dtype)`` and the solution's raw bytes until ``None`` or the end of the
-connection. LABEL is
+connection. Where the request's header carries a shared memory file (``("cholmod-raw", n,
+ordered, fd, columns)``: a descriptor passed to this process, two blocks of n × columns
+float64 in Fortran order, :class:`SharedBlocks`), a block is solved in place: the
+message ``("shared", k)`` says that the first k columns of the right-hand sides' block
+are written, the answer ``("shared-ok", k)`` that the solutions' block holds theirs —
+no block through the connection (issue 75, fourth round). LABEL is
 not read: the words of the parent's command line, so that the worker is recognisable as
 the build's in a process list.
 
@@ -94,6 +99,48 @@ def recv_array(conn, header, out=None):
     return out
 
 
+class SharedBlocks:
+    """Two blocks of ``rows`` × ``columns`` float64 in Fortran order on a shared memory
+    file (Linux's ``memfd_create``), mapped by the FE build and its solver worker: the
+    right-hand sides (``rhs``) and the solutions (``solution``) of a block of unit loads,
+    written and read in place by both processes instead of sent through the connection
+    (two copies through the kernel per block and direction; issue 75, fourth round).
+
+    Parameters
+    ----------
+    fd : int — the file's descriptor (the file sized here where ``create``)
+    rows, columns : int — [1] the blocks' shape
+    create : bool — size the file (the build's side)
+    """
+
+    def __init__(self, fd: int, rows: int, columns: int, *, create: bool = False) -> None:
+        import mmap
+
+        import numpy as np
+
+        size = 2 * rows * columns * 8
+        if create:
+            import os
+
+            os.ftruncate(fd, size)
+        self.fd, self.rows, self.columns = fd, rows, columns
+        self._map = mmap.mmap(fd, size) if size else None
+        blocks = (np.frombuffer(self._map, dtype=np.float64).reshape(2, columns, rows)
+                  if size else np.empty((2, columns, rows)))
+        self.rhs = blocks[0].T  # (rows, columns), Fortran order
+        self.solution = blocks[1].T
+
+    def close(self) -> None:
+        """Unmap the file (the arrays must no longer be used)."""
+        self.rhs = self.solution = None
+        if self._map is not None:
+            try:
+                self._map.close()
+            except BufferError:  # a view still exported: freed with the process
+                pass
+            self._map = None
+
+
 def _module_from(path: Path, name: str):
     """A module loaded from its file (not through its package, whose import pulls in the
     whole toolkit)."""
@@ -112,13 +159,15 @@ def keep_heap_pages() -> bool:
     return _module_from(path, "_fe_heap").keep_heap_pages()
 
 
-def serve(conn, kernel, box: list) -> None:
+def serve(conn, kernel, box: list, shared: SharedBlocks | None = None) -> None:
     """Factorise the matrix in ``box`` with ``kernel`` (its solve and the factor's nonzeros),
     report ``("ready", nnz, seconds)`` or ``("error", exception)``, then answer each block
     of right-hand sides received on ``conn`` (:func:`send_array`'s header and bytes, or a
     pickled array) with the solution (:func:`send_array`, tag ``"ok"``) or ``("error",
-    exception)`` until ``None`` or the end of the connection. The loop of this lean
-    worker and of the forked one (:func:`contact.compliance.fe.elasticity.factorise`)."""
+    exception)`` until ``None`` or the end of the connection; with ``shared`` blocks,
+    ``("shared", k)`` is answered by solving the first k columns of ``shared.rhs`` into
+    ``shared.solution`` and ``("shared-ok", k)``. The loop of this lean worker and of
+    the forked one (:func:`contact.compliance.fe.elasticity.factorise`)."""
     try:
         t0 = time.perf_counter()
         solve, nnz = kernel(box)
@@ -134,6 +183,15 @@ def serve(conn, kernel, box: list) -> None:
             return
         if block is None:
             return
+        if shared is not None and isinstance(block, tuple) and block[:1] == ("shared",):
+            k = int(block[1])
+            try:
+                solve(shared.rhs[:, :k], out=shared.solution[:, :k])
+            except Exception as exc:  # the parent raises it
+                conn.send(("error", exc))
+                continue
+            conn.send(("shared-ok", k))
+            continue
         try:
             if isinstance(block, tuple) and block and block[0] == "block":
                 block = recv_array(conn, block)  # the right-hand sides' raw bytes
@@ -159,14 +217,17 @@ def main(argv: list[str]) -> None:
         request = conn.recv()
     except (EOFError, OSError):
         return
-    if request[0] == "cholmod-raw":  # ("cholmod-raw", n, ordered), then the arrays raw
+    shared = None
+    if request[0] == "cholmod-raw":  # ("cholmod-raw", n, ordered[, fd, columns]), then
         arrays = [recv_array(conn, conn.recv()) for _ in range(4 if request[2] else 3)]
-        box = [(*arrays[:3], request[1], arrays[3] if request[2] else None)]
+        box = [(*arrays[:3], request[1], arrays[3] if request[2] else None)]  # the arrays
         del arrays
+        if len(request) > 3:  # the blocks on a shared memory file (SharedBlocks)
+            shared = SharedBlocks(int(request[3]), int(request[1]), int(request[4]))
     else:  # ("cholmod", data, indices, indptr, n, ordering), pickled
         box = [tuple(request[1:])]
     del request
-    serve(conn, lambda b: _kernel_module().cholmod_kernel(b), box)
+    serve(conn, lambda b: _kernel_module().cholmod_kernel(b), box, shared)
 
 
 if __name__ == "__main__":
