@@ -374,7 +374,8 @@ def test_the_automatic_gear_process_is_decided_with_the_tip_planes(monkeypatch):
     whatever the caller asked: a Formate gear whose pinion root line is not generated has no
     solution only there, and a development's coarse search (``tip_planes=False``) decided the
     Formate gear of the spiral bevel 16x24 for every later trial, whose written case then
-    stopped (issue 71). Once decided, the caller's ``tip_planes`` is passed on (stub body)."""
+    stopped (issue 71). The case returned is made again as asked; once decided, the
+    caller's ``tip_planes`` is passed on (stub body)."""
     import geometry.synthesis.case_synthesis as cs
     from geometry.core.errors import InputError
 
@@ -390,7 +391,8 @@ def test_the_automatic_gear_process_is_decided_with_the_tip_planes(monkeypatch):
     basic = load_basic(DATA / "generated_gear" / "spiral_bevel_16x24.toml")
     memo: dict = {}
     assert cs.synthesize(basic, memo=memo, tip_planes=False)[0] == "Generate"
-    assert calls == [("Formate", True), ("Generate", True)]
+    # decided with the tip planes, then the case made again as asked (without them)
+    assert calls == [("Formate", True), ("Generate", True), ("Generate", False)]
     calls.clear()
     assert cs.synthesize(basic, memo=memo, tip_planes=False)[0] == "Generate"
     assert calls == [("Generate", False)]
