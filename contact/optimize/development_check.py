@@ -71,6 +71,10 @@ log = logging.getLogger("contact.optimize.development")
 #: most designs of the search checked at :data:`CHECK_LTCA`, best first, until one meets
 #: every target
 VERIFIED_DESIGNS = 2
+#: most further designs of the ranking :func:`checked_best` tries, in turn, where none of
+#: the :data:`VERIFIED_DESIGNS` best could be written or analysed (a bound on the CPU of
+#: that path: each try is a synthesis with its tip planes and an analysis)
+FALLBACK_DESIGNS = 8
 #: bisection steps of :func:`cut_variant`'s root relief between 0 and the design's (the
 #: last cuttable one within 1/16 of it)
 CUT_RELIEF_STEPS = 4
@@ -916,7 +920,7 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
         # height or root relief, or their analysis failed): the next ones in turn, so that
         # the design chosen is one the blade cuts (a coarse design's case has no tip planes
         # and its synthesis as written stops; issue 71, the 19x23 at beta_m 46 deg)
-        for e in ranked[VERIFIED_DESIGNS:]:
+        for e in ranked[VERIFIED_DESIGNS:VERIFIED_DESIGNS + FALLBACK_DESIGNS]:
             if check(e) or checked:
                 break
     chosen = min(checked or ranked, key=_check_rank)
