@@ -58,6 +58,7 @@ from contact.optimize.development_targets import (
     development_score,
 )
 from geometry.case import Case
+from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import (
     BasicDesign,
@@ -118,14 +119,13 @@ def cut_variant(placed: Callable[[Mapping[str, float]], Case], values: Mapping[s
     development's relief stage raised it to 46 µm from 0.485 of the way on the spiral
     bevel 19x23 at β_m 46° (δ2 50.4°, a Formate gear below the 63° limit), where the
     turned blade's lower part no longer generates the fillet down to the edge radius at
-    the heel half of the face (its root line not generated at face fractions 0.4–1.0,
-    the tip plane as deep as the toprem allows), so neither the check nor the written
-    synthesis could place that design; the same design with its root relief at 15 µm
-    places (docs/synthesis.md, "Known limits"; issue 71). The design's other prescriptions
-    are kept: the bearing the search chose.
+    the heel half of the face (its root line not generated at face fractions 0.4–1.0, and
+    at 0.8–1.0 still with the tip plane as shallow as the toprem allows), so neither the
+    check nor the written synthesis could place that design; the same design places with
+    its root relief at 15 µm, and at 26 µm by this bisection (docs/synthesis.md,
+    "Generated gear"; issue 71). The design's other prescriptions are kept: the bearing
+    the search chose.
     """
-    from geometry.core.errors import InputError
-
     values = dict(values)
     try:
         return placed(values), values
