@@ -369,56 +369,6 @@ def test_auto_tries_formate_then_generate_and_a_memo_keeps_the_first_success(mon
     assert tried == ["Formate"]
 
 
-def test_the_automatic_gear_process_is_decided_with_the_tip_planes(monkeypatch):
-    """Where more than one gear process is tried, each try places the tip planes (step 8),
-    whatever the caller asked: a Formate gear whose pinion root line is not generated has no
-    solution only there, and a development's coarse search (``tip_planes=False``) decided the
-    Formate gear of the spiral bevel 16x24 for every later trial, whose written case then
-    stopped (issue 71). The case returned is made again as asked; once decided, the
-    caller's ``tip_planes`` is passed on (stub body)."""
-    import geometry.synthesis.case_synthesis as cs
-    from geometry.core.errors import InputError
-
-    calls: list[tuple[str, bool]] = []
-
-    def body(basic, *, process, progress=None, memo=None, tip_planes=True, **kw):
-        calls.append((process, tip_planes))
-        if process == "Formate" and tip_planes:  # its root line not generated
-            raise InputError("outside blade: its root line is not generated")
-        return process, None
-
-    monkeypatch.setattr(cs, "_synthesize", body)
-    basic = load_basic(DATA / "generated_gear" / "spiral_bevel_16x24.toml")
-    memo: dict = {}
-    assert cs.synthesize(basic, memo=memo, tip_planes=False)[0] == "Generate"
-    # decided with the tip planes, then the case made again as asked (without them)
-    assert calls == [("Formate", True), ("Generate", True), ("Generate", False)]
-    calls.clear()
-    assert cs.synthesize(basic, memo=memo, tip_planes=False)[0] == "Generate"
-    assert calls == [("Generate", False)]
-    # a single process: the caller's choice as before
-    forced = replace(basic, options=replace(basic.options, gear_process="Formate"))
-    calls.clear()
-    assert cs.synthesize(forced, tip_planes=False)[0] == "Formate"
-    assert calls == [("Formate", False)]
-
-
-@pytest.mark.slow
-def test_16x24_development_trials_keep_the_generated_gear():
-    """The spiral bevel 16x24 (δ2 56.3°): its Formate gear synthesises without the tip
-    planes but its pinion's outside blade generates no root line (no tip height places
-    it), so the first trial of a development (``tip_planes=False``, under the memo) decides
-    the generated gear, and the trial as written (tip planes placed) synthesises under the
-    same memo (~20 s CPU, hence slow; before: Formate kept, the written case stopped at
-    "its root line is not generated")."""
-    basic = load_basic(DATA / "generated_gear" / "spiral_bevel_16x24.toml")
-    memo: dict = {}
-    case, _ = synthesize(basic, memo=memo, tip_planes=False)
-    assert case.gear.process == "Generate"
-    case, _ = synthesize(basic, memo=memo)
-    assert case.gear.process == "Generate"
-
-
 # ---------------------------------------------------------------- the development's choice
 def _outcome(process, *, spread=0.2, plastic=0.0, torque=200.0, lowered=False,
              objective=10.0, coast_spread=0.2):

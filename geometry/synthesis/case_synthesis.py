@@ -422,23 +422,11 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
     first process that succeeds is kept (under the design's key, whatever the pinion
     prescriptions) and is the only one tried by later syntheses, so a development's
     trials keep one gear and a trial that fails fails as before; the progress of a try
-    that may be followed by another is held back until it succeeds.
-
-    Where more than one process is tried, each try places the tip planes (step 8) whatever
-    ``tip_planes`` asks: a Formate gear whose pinion root line is not generated (the deep
-    working depth of a low-ratio pair, "Known limits" in docs/synthesis.md) has no
-    solution only there, and a decision made on a synthesis without them (a development's
-    coarse search) kept that gear for every later trial, whose checks and written case
-    then stopped at "its root line is not generated" (the spiral bevel 16x24 of
-    tests/data/generated_gear, issue 71). The case returned is then made again as asked,
-    without them (steps 3–6 from the memo, where one is given)."""
+    that may be followed by another is held back until it succeeds."""
     key = ("gear process", basic.design,
            replace(basic.options, concave=FlankOptions(), convex=FlankOptions()))
     decided = None if memo is None else memo.get(key)
     processes = (decided,) if decided else gear_processes(basic)
-    asked = kw.get("tip_planes", True)
-    if len(processes) > 1:
-        kw = kw | {"tip_planes": True}
     for k, process in enumerate(processes):
         last = k == len(processes) - 1
         held: list[str] = []
@@ -456,10 +444,6 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
             memo[key] = process
         for line in held:
             progress(line)
-        if kw.get("tip_planes", True) and not asked:
-            # the case as asked, without tip planes (steps 3-6 from the memo): a trial's
-            # case the same as before wherever the first process has a solution
-            out = _synthesize(basic, process=process, memo=memo, **(kw | {"tip_planes": False}))
         return out
     raise AssertionError("unreachable")  # pragma: no cover
 
