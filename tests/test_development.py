@@ -1595,3 +1595,36 @@ def test_checked_best_goes_on_down_the_ranking_where_none_of_the_best_can_be_wri
                                None, lines.append, placed)
     assert best.checked and best.values["path_angle"] == -60.0 and best.case == "case"
     assert any("check of design 4" in line for line in lines)
+
+
+def test_cut_variant_on_the_19x23_whose_relief_stage_went_beyond_the_blade():
+    """The spiral bevel 19x23 at β_m 46° (benchmarks/data/unseen_designs, Formate gear,
+    δ2 50.4°): the relief stage's design (root relief 46.2 µm from 0.485 of the way,
+    profile crowning 16.8 µm) leaves the pinion's drive root line not generated
+    (``tip_plane_on_root_cone`` refuses it); cut_variant writes the same bearing with the
+    root relief 46.2 (1/2 + 1/16) = 25.99 µm — 0 places, 23.1 places, 34.7 does not, 28.9
+    does not, 26.0 places (the bisection's steps, measured 2026-11-26) — every other
+    prescription kept (~6 s CPU)."""
+    from geometry.synthesis.basic_design import load_basic, with_flank_options
+    from geometry.synthesis.case_synthesis import synthesize
+
+    basic = load_basic(Path(__file__).parent.parent / "benchmarks" / "data" / "unseen_designs"
+                       / "spiral_bevel_19x23_b46.toml")
+    basic = dataclasses.replace(basic, options=dataclasses.replace(basic.options,
+                                                                   gear_process="Formate"))
+    flank = basic.options.drive_flank
+    values = {"path_angle": -45.0, "ellipse_length": 0.55, "tip_relief": 10.3,
+              "root_relief": 46.2, "relief_start": 0.485, "profile_crowning": 16.8,
+              "tip_relief_start": 0.745, "blade_angle_change": 0.0, "te_level": 25.0}
+    memo: dict = {}
+
+    def placed(v):
+        return synthesize(with_flank_options(basic, flank, v), memo=memo)[0]
+
+    with pytest.raises(InputError, match=dcheck.NOT_GENERATED):
+        placed(values)
+    case, kept = dcheck.cut_variant(placed, values)
+    assert kept["root_relief"] == pytest.approx(46.2 * (0.5 + 1 / 16), rel=1e-12)
+    assert {k: v for k, v in kept.items() if k != "root_relief"} == {
+        k: v for k, v in values.items() if k != "root_relief"}
+    assert case.gear.process == "Formate"
