@@ -1644,3 +1644,114 @@ def test_a_long_bearing_that_gives_up_a_met_target_is_not_kept(monkeypatch):
     assert dcheck.checked_long(start, targets, setup, None, lines.append, lambda v: dict(v),
                                flank="coast") is start
     assert "not kept: the long bearing misses edge, heel, toe" in lines[-1]
+
+
+# ----------------------------------------------- designs the blade cannot cut (issue 71)
+def _placed_up_to(limit, calls, error="outside blade: its root line is not generated at "
+                  "face fractions [0.4, 1.0]; no tip height puts it on the root cone"):
+    """A stand-in of the synthesis as written: a case (its values) where the root relief is
+    at most ``limit`` µm, else the tip plane's error ``error``; each call recorded."""
+    def placed(values):
+        calls.append(dict(values))
+        if values.get("root_relief", 0.0) > limit:
+            raise InputError(error)
+        return ("case", dict(values))
+    return placed
+
+
+def test_cut_variant_keeps_a_design_the_blade_cuts():
+    """A design whose tip planes place is its own case, placed once, values unchanged."""
+    calls: list = []
+    values = {"path_angle": -45.0, "root_relief": 15.0}
+    case, kept = dcheck.cut_variant(_placed_up_to(30.0, calls), values)
+    assert kept == values and case == ("case", values) and len(calls) == 1
+
+
+def test_cut_variant_lowers_a_root_relief_the_blade_cannot_cut():
+    """Root line not generated at 46.2 µm, generated up to 20 µm: the relief is tried at 0,
+    then bisected CUT_RELIEF_STEPS times between 0 and 46.2 (23.1 no, 11.55 yes, 17.33 yes,
+    20.21 no): 17.33 µm is kept — the largest cuttable one found, within 46.2/16 of the
+    limit — and every other prescription is the design's."""
+    calls: list = []
+    values = {"path_angle": -45.0, "ellipse_length": 0.55, "root_relief": 46.2}
+    case, kept = dcheck.cut_variant(_placed_up_to(20.0, calls), values)
+    assert kept["root_relief"] == pytest.approx(46.2 * (1 / 4 + 1 / 8), rel=1e-12)
+    assert 20.0 - 46.2 / 16 <= kept["root_relief"] <= 20.0
+    assert {k: v for k, v in kept.items() if k != "root_relief"} == {
+        "path_angle": -45.0, "ellipse_length": 0.55}
+    assert case == ("case", kept)
+    assert [c["root_relief"] for c in calls][:2] == [46.2, 0.0]
+    assert len(calls) == 2 + dcheck.CUT_RELIEF_STEPS
+
+
+def test_cut_variant_raises_what_no_root_relief_mends():
+    """The original error where the root line is not generated without relief either, where
+    the design has no root relief to lower, and any other error as it is."""
+    values = {"root_relief": 40.0}
+    with pytest.raises(InputError, match="root line is not generated"):
+        dcheck.cut_variant(_placed_up_to(-1.0, []), values)
+    with pytest.raises(InputError, match="root line is not generated"):
+        dcheck.cut_variant(_placed_up_to(-1.0, []), {"path_angle": -45.0})
+    calls: list = []
+    with pytest.raises(InputError, match="toprem_height"):
+        dcheck.cut_variant(_placed_up_to(10.0, calls, error="toprem_height: too low"), values)
+    assert len(calls) == 1
+
+
+def test_checked_best_goes_on_down_the_ranking_where_none_of_the_best_can_be_written(
+        monkeypatch):
+    """Where none of the VERIFIED_DESIGNS best designs can be written (their tip planes not
+    placed: here a stand-in that fails for any path angle but −60°), the next designs of the
+    ranking are tried in turn and the first that is written and checked is chosen: never a
+    coarse design without tip planes, whose synthesis as written stops (the spiral bevel
+    19x23 at β_m 46°, issue 71)."""
+    targets = DevelopmentTargets()
+    evals = [_fake_design(i, {"path_angle": p, "root_relief": 0.0}, 0.5 * i)
+             for i, p in enumerate([-45.0, -50.0, -55.0, -60.0, -65.0])]
+
+    def placed(values):
+        if values["path_angle"] != -60.0:
+            raise InputError("outside blade: its root line is not generated")
+        return "case"
+
+    monkeypatch.setattr(dcheck.evaluation, "analyse_design",
+                        lambda case, torques, **kw: (_metrics(), (0.0, 1.0, 0.0, 1.0,
+                                                                  math.inf)))
+    lines: list[str] = []
+    best = dcheck.checked_best(evals, targets, {"torques": [10.0, 100.0], "centre_v": 0.6},
+                               None, lines.append, placed)
+    assert best.checked and best.values["path_angle"] == -60.0 and best.case == "case"
+    assert any("check of design 4" in line for line in lines)
+
+
+def test_cut_variant_on_the_19x23_whose_relief_stage_went_beyond_the_blade():
+    """The spiral bevel 19x23 at β_m 46° (benchmarks/data/unseen_designs, Formate gear,
+    δ2 50.4°): the relief stage's design (root relief 46.2 µm from 0.485 of the way,
+    profile crowning 16.8 µm) leaves the pinion's drive root line not generated
+    (``tip_plane_on_root_cone`` refuses it); cut_variant writes the same bearing with the
+    root relief 46.2 (1/2 + 1/16) = 25.99 µm — 0 places, 23.1 places, 34.7 does not, 28.9
+    does not, 26.0 places (the bisection's steps, measured 2026-11-26) — every other
+    prescription kept (~6 s CPU)."""
+    from geometry.synthesis.basic_design import load_basic, with_flank_options
+    from geometry.synthesis.case_synthesis import synthesize
+
+    basic = load_basic(Path(__file__).parent.parent / "benchmarks" / "data" / "unseen_designs"
+                       / "spiral_bevel_19x23_b46.toml")
+    basic = dataclasses.replace(basic, options=dataclasses.replace(basic.options,
+                                                                   gear_process="Formate"))
+    flank = basic.options.drive_flank
+    values = {"path_angle": -45.0, "ellipse_length": 0.55, "tip_relief": 10.3,
+              "root_relief": 46.2, "relief_start": 0.485, "profile_crowning": 16.8,
+              "tip_relief_start": 0.745, "blade_angle_change": 0.0, "te_level": 25.0}
+    memo: dict = {}
+
+    def placed(v):
+        return synthesize(with_flank_options(basic, flank, v), memo=memo)[0]
+
+    with pytest.raises(InputError, match=dcheck.NOT_GENERATED):
+        placed(values)
+    case, kept = dcheck.cut_variant(placed, values)
+    assert kept["root_relief"] == pytest.approx(46.2 * (0.5 + 1 / 16), rel=1e-12)
+    assert {k: v for k, v in kept.items() if k != "root_relief"} == {
+        k: v for k, v in values.items() if k != "root_relief"}
+    assert case.gear.process == "Formate"

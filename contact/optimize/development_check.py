@@ -60,6 +60,7 @@ from contact.optimize.development_targets import (
     development_score,
 )
 from geometry.case import Case
+from geometry.core.errors import InputError
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import (
     BasicDesign,
@@ -73,6 +74,81 @@ log = logging.getLogger("contact.optimize.development")
 #: most designs of the search checked at :data:`CHECK_LTCA`, best first, until one meets
 #: every target
 VERIFIED_DESIGNS = 2
+#: most further designs of the ranking :func:`checked_best` tries, in turn, where none of
+#: the :data:`VERIFIED_DESIGNS` best could be written or analysed (a bound on the CPU of
+#: that path: each try is a synthesis with its tip planes and an analysis)
+FALLBACK_DESIGNS = 8
+#: bisection steps of :func:`cut_variant`'s root relief between 0 and the design's (the
+#: last cuttable one within 1/16 of it)
+CUT_RELIEF_STEPS = 4
+#: the words of :func:`geometry.synthesis.tip_plane.tip_plane_on_root_cone`'s error where
+#: no tip height places a cut's root line: the blade cannot cut the flank as prescribed
+NOT_GENERATED = "its root line is not generated"
+
+
+def cut_variant(placed: Callable[[Mapping[str, float]], Case], values: Mapping[str, float]
+                ) -> tuple[Case, dict[str, float]]:
+    """The case of a design as it is written (``placed(values)``, its tip planes on the
+    root cone), or, where the pinion's root line is not generated at any tip height
+    (:data:`NOT_GENERATED`) and the design has a root relief, that of the same design with
+    the largest root relief the blade can cut.
+
+    Parameters
+    ----------
+    placed : callable values → Case
+        The synthesis with step 8 (:func:`placed_case`).
+    values : mapping
+        The design's prescriptions (:data:`~contact.optimize.development_targets.VARIABLES`
+        names; ``root_relief`` [µm]).
+
+    Returns
+    -------
+    (Case, dict)
+        The case and the values it was made of (``values`` itself, or with a smaller
+        ``root_relief``: the largest of 0 and a bisection of :data:`CUT_RELIEF_STEPS` steps
+        between 0 and the design's that places).
+
+    Raises
+    ------
+    InputError
+        ``placed``'s error where it is another, where the design has no root relief, or
+        where the root line is not generated without any root relief either.
+
+    Notes
+    -----
+    Why the root relief: the pinion's root relief is the blade's toprem, the blade below
+    its toprem height turned by the toprem angle (:mod:`geometry.machine.relief`); a
+    development's relief stage raised it to 46 µm from 0.485 of the way on the spiral
+    bevel 19x23 at β_m 46° (δ2 50.4°, a Formate gear below the 63° limit), where the
+    turned blade's lower part no longer generates the fillet down to the edge radius at
+    the heel half of the face (its root line not generated at face fractions 0.4–1.0, and
+    at 0.8–1.0 still with the tip plane as shallow as the toprem allows), so neither the
+    check nor the written synthesis could place that design; the same design places with
+    its root relief at 15 µm, and at 26 µm by this bisection (docs/synthesis.md,
+    "Generated gear"; issue 71). The design's other prescriptions are kept: the bearing
+    the search chose.
+    """
+    values = dict(values)
+    try:
+        return placed(values), values
+    except InputError as err:
+        relief = float(values.get("root_relief", 0.0))
+        if NOT_GENERATED not in str(err) or not relief > 0.0:
+            raise
+        first = err
+    try:
+        best = (0.0, placed(values | {"root_relief": 0.0}))
+    except InputError:
+        raise first from None
+    lo, hi = 0.0, relief
+    for _ in range(CUT_RELIEF_STEPS):
+        mid = 0.5 * (lo + hi)
+        try:
+            best = (mid, placed(values | {"root_relief": mid}))
+            lo = mid
+        except InputError:
+            hi = mid
+    return best[1], values | {"root_relief": best[0]}
 
 
 def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
@@ -897,16 +973,26 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
     ranked = sorted((e for e in evals if e.full is not None),
                     key=_check_rank)
     checked = []
-    for e in ranked[:VERIFIED_DESIGNS]:
+
+    def check(e: DevelopmentEvaluation) -> bool:
+        """``e`` placed as written (a root relief the blade cannot cut lowered:
+        :func:`cut_variant`), checked and appended to ``checked``; whether it met every
+        target. False where it fails (not chosen)."""
         try:
             if placed is not None:
-                e = dataclasses.replace(e, case=placed(e.values))
+                case, values = cut_variant(placed, e.values)
+                if values != e.values:
+                    say(f"  {what} {e.index + 1}: its root relief "
+                        f"{e.values['root_relief']:.3g} um leaves the pinion's root line not "
+                        f"generated (the blade cannot cut it); checked at "
+                        f"{values['root_relief']:.3g} um")
+                e = dataclasses.replace(e, case=case, values=values)
             ms, grid = evaluation.analyse_design(e.case, setup["torques"], options=CHECK_LTCA,
                                                  teeth=teeth, flank=side,
                                                  pinion_key=(*key_prefix, *bearing_key(e.values)))
         except Exception as exc:  # a design that fails here is not chosen
             log.info("development check of %s %d failed: %s", what, e.index + 1, exc)
-            continue
+            return False
         full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
                                  pressure_limit=grid[4])
         checked.append(dataclasses.replace(e, metrics=ms, objective=full[0],
@@ -914,8 +1000,19 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
                                            checked=True))
         say(f"  check of {what} {e.index + 1} at the default sampling: "
             + evaluation_line(checked[-1], n_max).split(": ", 2)[-1])
-        if full[2]:
+        return bool(full[2])
+
+    for e in ranked[:VERIFIED_DESIGNS]:
+        if check(e):
             break
+    if placed is not None and not checked:
+        # none of the best could be written (their root line not generated at any tip
+        # height or root relief, or their analysis failed): the next ones in turn, so that
+        # the design chosen is one the blade cuts (a coarse design's case has no tip planes
+        # and its synthesis as written stops; issue 71, the 19x23 at beta_m 46 deg)
+        for e in ranked[VERIFIED_DESIGNS:VERIFIED_DESIGNS + FALLBACK_DESIGNS]:
+            if check(e) or checked:
+                break
     chosen = min(checked or ranked, key=_check_rank)
     if others is not None:
         others.extend(e for e in checked if e is not chosen)

@@ -238,8 +238,32 @@ def _hats(solid: ToothSolid, fb: FacetPoints, grid_u, grid_v):
     area = np.asarray(hats.multiply(fb.dx.ravel()[:, None]).sum(axis=0)).ravel()
     if np.any(area <= 0.0):
         raise LTCAError(f"{solid.member}: a load grid point has no surface around it (the "
-                        "load grid reaches beyond the meshed flank)")
+                        "load grid reaches beyond the meshed flank"
+                        + _uncovered(grid_u, grid_v, area, u, v) + ")")
     return hats.tocsc(), area
+
+
+def _uncovered(grid_u: np.ndarray, grid_v: np.ndarray, area: np.ndarray, u: np.ndarray,
+               v: np.ndarray) -> str:
+    """Where the meshed surface ends below the load grid, in words: the grid's lengthwise
+    fractions with a point of no surface, and how high in v [1] the surface reaches there
+    (the facet points ``u``, ``v`` within half a grid step). Found on the generated-gear
+    spiral bevel 19x23 at β_m 46° (issue 71): its pinion's concave flank is generated only
+    up to v 0.55 at the toe, the grid's points above it had no surface."""
+    nv = len(grid_v)
+    bad = np.flatnonzero(area <= 0.0)
+    rows = np.unique(bad // nv)
+    half = 0.5 * float(np.diff(grid_u).min())
+    parts = []
+    for i in rows[:4]:
+        near = np.abs(u - grid_u[i]) <= half
+        top = f"{float(v[near].max()):.2f}" if np.any(near) else "nowhere"
+        parts.append(f"u {grid_u[i]:.2f}: surface up to v {top}, grid to "
+                     f"{grid_v[bad[bad // nv == i] % nv].max():.2f}")
+    more = ", …" if rows.size > 4 else ""
+    return ("; " + ", ".join(parts) + more + ": the flank's generated surface does not "
+            "cover the blank's working depth there, and the pair's contact is not modelled "
+            "by the FE model beyond it")
 
 
 def _load_order(solid: ToothSolid, facets: np.ndarray, grid_u: np.ndarray,
