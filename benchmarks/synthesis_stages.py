@@ -21,8 +21,12 @@ CPU, not wall time: the machine may be shared. Also ``--diff DIR``: compare the 
 written with ``DIR/<design>.toml`` (e.g. an earlier tree's), line for line but for the
 development's CPU seconds and the basic file's directory, which the file records.
 
+``--cache DIR``: the FE cache ``DIR`` instead of an empty one (a cache already warm for
+the designs: the development's CPU alone, the FE builds read from it; issue 75's split
+of a new design's synthesize into its FE builds and the development).
+
 Usage: ``python benchmarks/synthesis_stages.py [BASIC.toml ...] [--keep DIR] [--no-run]
-[--diff DIR]``. One design takes 2–4 min of CPU.
+[--diff DIR] [--cache DIR]``. One design takes 2–4 min of CPU.
 """
 
 from __future__ import annotations
@@ -141,12 +145,14 @@ def _import_development() -> None:
         importlib.import_module(module)
 
 
-def run_design(basic: Path, work: Path, run: bool = True) -> dict:
-    """Synthesise one design in this process (stages timed), then ``ltca run`` it."""
+def run_design(basic: Path, work: Path, run: bool = True, cache: Path | None = None) -> dict:
+    """Synthesise one design in this process (stages timed), then ``ltca run`` it; with
+    the FE cache ``cache`` (default: an empty one of its own under ``work``)."""
     from contact.cli import main
 
     case = work / f"{basic.stem}.toml"
-    cache = Path(tempfile.mkdtemp(prefix="ltca-fe-", dir=work))
+    if cache is None:
+        cache = Path(tempfile.mkdtemp(prefix="ltca-fe-", dir=work))
     os.environ["HYPOID_LTCA_CACHE"] = str(cache)
     _import_development()
     clock = StageCPU().install()
@@ -210,11 +216,14 @@ def main(argv: list[str] | None = None) -> int:
                     help="synthesize only (no ltca run)")
     ap.add_argument("--diff", type=Path, help="compare each case written with DIR/<design>"
                     ".toml byte for byte")
+    ap.add_argument("--cache", type=Path, help="use this FE cache (warm: the development "
+                    "alone) instead of an empty one per design")
     args = ap.parse_args(argv)
     work = args.keep or Path(tempfile.mkdtemp(prefix="synthesis-stages-"))
     work.mkdir(parents=True, exist_ok=True)
     for basic in args.basic or DESIGNS:
-        print_row(run_design(basic.resolve(), work.resolve(), args.run), args.diff)
+        print_row(run_design(basic.resolve(), work.resolve(), args.run,
+                             None if args.cache is None else args.cache.resolve()), args.diff)
         sys.stdout.flush()
     return 0
 

@@ -1755,3 +1755,38 @@ def test_cut_variant_on_the_19x23_whose_relief_stage_went_beyond_the_blade():
     assert {k: v for k, v in kept.items() if k != "root_relief"} == {
         k: v for k, v in values.items() if k != "root_relief"}
     assert case.gear.process == "Formate"
+
+
+def test_tolerance_checks_stop_at_the_first_miss_and_are_kept(monkeypatch):
+    """tolerance_checks (the mounting excursions dE +/-, dP +/-, a coarse LTCA each):
+    with ``until_missed`` it stops after the first excursion that misses a tolerance key
+    (a check step reads only whether a variant is tolerant); the excursions of a design are
+    kept in the development's ``setup``, so the same case checked again (the chosen
+    variant's tolerance in checked_tolerance) analyses only what was not analysed, and the
+    result is the one every excursion analysed gives, number for number."""
+    analysed = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        analysed.append((case, misalignment))
+        edge = [0.0, 0.05] if misalignment.delta_E > 0 else [0.0, 0.01]  # dE+ misses
+        return _metrics(edge_load_share=edge), (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets = DevelopmentTargets()
+    setup = {"torques": [50.0, 330.0], "centre_v": 0.6}
+    case, values = object(), {"tip_relief": 20.0}
+    first = dcheck.tolerance_checks(case, targets, setup, None, values, until_missed=True)
+    assert list(first) == ["dE+0.05"] and first["dE+0.05"][1]["edge"] > 0.0
+    assert len(analysed) == 1
+    full = dcheck.tolerance_checks(case, targets, setup, None, values)
+    assert list(full) == ["dE+0.05", "dE-0.05", "dP+0.05", "dP-0.05"]
+    assert len(analysed) == 4  # dE+ not analysed again
+    assert dcheck.tolerance_checks(case, targets, setup, None, values) == full
+    assert len(analysed) == 4
+    fresh = dcheck.tolerance_checks(case, targets, {"torques": [50.0, 330.0],
+                                                    "centre_v": 0.6}, None, values)
+    assert len(analysed) == 8 and repr(fresh) == repr(full)
+    # another case object (or other torques) is analysed on its own
+    dcheck.tolerance_checks(object(), targets, setup, None, values)
+    assert len(analysed) == 12

@@ -505,6 +505,52 @@ def test_generated_gear_developed_only_where_the_formate_design_fails(monkeypatc
     assert with_generated_gear(run, forced) is failing and runs == ["Formate"]
 
 
+def test_the_generated_gear_development_stops_once_it_cannot_win(monkeypatch):
+    """Where the Formate design fails by its drive torque cut alone (the spiral bevel 13x37
+    at Sigma 60 deg of benchmarks/data/unseen_designs: 110.4 of 279.2 N m, no FAIL
+    criterion), a generated design lowered below that torque is cut too and ranks below it
+    on the design torque (better_outcome), whatever it does after (a development only
+    lowers its torque): the generated gear's development is given that torque and, where it
+    stops there (Outclassed), the Formate design is kept, the text saying so. Where the
+    Formate design meets a FAIL criterion, or its torque is not cut, no torque is given."""
+    import contact.load_capacity.iso10300.capacity as capacity
+    from contact.optimize.development_process import (
+        Outclassed,
+        better_outcome,
+        outclassing_torque,
+        with_generated_gear,
+    )
+
+    rated = 279.2
+    formate = _outcome("Formate", torque=110.4, lowered=True)
+    assert outclassing_torque(formate, rated) == 110.4
+    # the rule's premise, by better_outcome itself: any design below it loses, one above wins
+    for t, which in ((110.3, "first"), (18.5, "first"), (110.5, "second")):
+        other = _outcome("Generate", torque=t, lowered=True, objective=0.0)
+        assert better_outcome(formate, other, rated)[1] == which
+    assert np.isnan(outclassing_torque(_outcome("Formate", spread=0.58, torque=110.4,
+                                                lowered=True), rated))
+    assert np.isnan(outclassing_torque(_outcome("Formate", torque=150.0, lowered=True), rated))
+    assert np.isnan(outclassing_torque(_outcome("Formate", torque=110.4), rated))
+
+    monkeypatch.setattr(capacity, "with_design_torque", lambda case, t: (case, rated, ""))
+    basic = load_basic(DATA / "generated_gear" / "spiral_bevel_20x30.toml")
+    given: list = []
+
+    def run(b, **kw):
+        given.append(kw)
+        if b.options.gear_process == "Generate":
+            raise Outclassed(18.5)
+        return formate
+
+    lines: list[str] = []
+    kept = with_generated_gear(run, basic, lines.append)
+    assert given == [{}, {"outclassed_below": 110.4}]
+    assert kept.report.gear.settings.process == "Formate"
+    assert kept.gear_process_text.startswith("Gear process (auto): Formate. The Formate gear's")
+    assert "stopped where its design torque fell to 18.5 N m" in kept.gear_process_text
+
+
 def test_a_formate_development_that_stops_is_followed_by_the_generated_gear(monkeypatch):
     """A pair 'auto' generates whose Formate development raises (a spiral bevel 19x23 at
     beta_m 46 deg: the pinion tip plane of the design written, issue 71's unseen designs)

@@ -207,7 +207,8 @@ __all__ = ["CHECK_LTCA", "COARSE_LTCA", "COAST_STATUS", "CROWNING_NAME", "CROWNI
 def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             progress: Callable[[str], None] | None = None,
             synthesis_progress: Any = None, root_stress: bool = True,
-            gear_fallback: bool = True) -> DevelopmentResult:
+            gear_fallback: bool = True, outclassed_below: float = math.nan
+            ) -> DevelopmentResult:
     """Develop the drive flank, then the coast flank, of a basic design to the bearing of
     ``targets``.
 
@@ -237,6 +238,13 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         rated one), the pair is developed with a generated gear too and the better kept
         (:func:`contact.optimize.development_process.with_generated_gear`). False: the
         one development.
+    outclassed_below : float, optional — [N·m]
+        Stop the development (:class:`~contact.optimize.development_process.Outclassed`)
+        as soon as its design torque is lowered below this torque: the design torque is
+        only lowered after that (static, root-stress and pitting capacity), so the
+        outcome could not beat the design it is compared with
+        (:func:`~contact.optimize.development_process.with_generated_gear`, which gives
+        it). Default NaN: never.
 
     Returns
     -------
@@ -250,6 +258,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     ------
     InputError
         Bad targets, or no design could be synthesised and analysed (the reasons).
+    Outclassed
+        The design torque lowered below ``outclassed_below``.
 
     Notes
     -----
@@ -366,6 +376,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     best = steps_on_each(best, others, steps)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = static_capacity(best, targets, setup, teeth, say)
+        _outclassed(setup, outclassed_below)
         if setup["lowered"]:  # the steps again at the torques the bearing carries
             best = steps(best)
     # the chosen design at the mounting excursions; its relief raised where their edges
@@ -406,6 +417,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             _both_flanks_built(case, root_stress and coast.best is not None, built, say)
             best, root_safety, text = checked_root_capacity(case, best, targets, setup, say)
             root_text = text or root_text
+        _outclassed(setup, outclassed_below)
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
     # strength, no plastic segment, root stress) where that is less
@@ -448,6 +460,17 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                coast_cap.reason if coast_cap is not None else "")
     say(result.headline())
     return result
+
+
+def _outclassed(setup: dict[str, Any], below: float) -> None:
+    """Raise :class:`~contact.optimize.development_process.Outclassed` where the
+    development's design torque (``setup["torques"][1]`` [N·m]) was lowered below
+    ``below`` [N·m] (NaN: never)."""
+    from contact.optimize.development_process import Outclassed
+
+    torque = float(setup["torques"][1])
+    if setup["lowered"] and torque < below:
+        raise Outclassed(torque)
 
 
 def _both_flanks_built(case: Case, wanted: bool, built: list[Case],

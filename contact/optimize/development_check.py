@@ -152,25 +152,50 @@ def cut_variant(placed: Callable[[Mapping[str, float]], Case], values: Mapping[s
 
 
 def tolerance_checks(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
-                     teeth: KeptTeeth | None, values: Mapping[str, float]
+                     teeth: KeptTeeth | None, values: Mapping[str, float], *,
+                     until_missed: bool = False
                      ) -> dict[str, tuple[dict[str, np.ndarray], dict[str, float]]]:
     """The drive flank of ``case`` at each mounting excursion (:func:`_excursions`,
     :data:`COARSE_LTCA` at the development's torques): per excursion label, its metrics
     and shortfalls (:func:`development_score`); an analysis that fails counts as missing
-    :data:`TOLERANCE_KEYS` (logged, never raised)."""
-    tolerance = {}
+    :data:`TOLERANCE_KEYS` (logged, never raised). ``until_missed``: stop after the first
+    excursion that misses one of :data:`TOLERANCE_KEYS` (the caller asks only whether
+    the design is tolerant; the excursions after it are not in the result).
+
+    The excursions of every design are kept in ``setup`` (key ``"tolerance_memo"``, by
+    the case object, the torques, the kept pinion tooth's key, the targets and the kept
+    teeth): a design checked
+    again (a check step's tolerant variant chosen, then the chosen design's tolerance,
+    :func:`checked_tolerance`) is not analysed again — the same analyses, the same
+    numbers."""
+    memo = setup.setdefault("tolerance_memo", {}) if isinstance(setup, dict) else {}
+    key = (id(case), tuple(float(t) for t in setup["torques"]), bearing_key(values),
+           repr(targets), id(teeth))
+    kept = memo.get(key)
+    tolerance = dict(kept[1]) if kept is not None and kept[0] is case else {}
     for lab, mis in _excursions(targets):
-        try:
-            ms, grid = evaluation.analyse_design(case, setup["torques"], mis, teeth=teeth,
-                                                 pinion_key=bearing_key(values))
-            _, short, _ = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                                            pressure_limit=grid[4])
-        except Exception as exc:  # reported, never fatal
-            log.info("development tolerance %s failed: %s", lab, exc)
-            ms = {k: np.full(2, np.nan) for k in METRIC_NAMES}
-            short = dict.fromkeys(TOLERANCE_KEYS, math.inf)
-        tolerance[lab] = (ms, short)
-    return tolerance
+        if lab not in tolerance:
+            tolerance[lab] = _excursion(case, targets, setup, teeth, values, lab, mis)
+        if until_missed and any(tolerance[lab][1][k] > 0.0 for k in TOLERANCE_KEYS):
+            break
+    memo[key] = (case, tolerance)  # the case held: its id is not reused while kept
+    return {lab: tolerance[lab] for lab, _ in _excursions(targets) if lab in tolerance}
+
+
+def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any],
+               teeth: KeptTeeth | None, values: Mapping[str, float], lab: str,
+               mis: Misalignment) -> tuple[dict[str, np.ndarray], dict[str, float]]:
+    """One excursion of :func:`tolerance_checks`: metrics and shortfalls."""
+    try:
+        ms, grid = evaluation.analyse_design(case, setup["torques"], mis, teeth=teeth,
+                                             pinion_key=bearing_key(values))
+        _, short, _ = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                                        pressure_limit=grid[4])
+    except Exception as exc:  # reported, never fatal
+        log.info("development tolerance %s failed: %s", lab, exc)
+        ms = {k: np.full(2, np.nan) for k in METRIC_NAMES}
+        short = dict.fromkeys(TOLERANCE_KEYS, math.inf)
+    return ms, short
 
 
 def _check_rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
@@ -665,11 +690,12 @@ def _tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
     relieved for its LTE or height must not lose the assembly's tolerance (the spiral bevel
     13x39 at path −80°, ellipse 0.75: LTE 12 / 39 µrad, every excursion but ΔE +0.05 mm
     elastic, 1.3 % of the design torque plastic there)."""
-    tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values)
+    tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values, until_missed=True)
     missed = sorted({k for _, short in tolerance.values() for k in TOLERANCE_KEYS
                      if short[k] > 0.0})
     if missed:
-        say(f"  not kept: at the mounting excursions it misses {', '.join(missed)}")
+        say(f"  not kept: at the mounting excursion {list(tolerance)[-1]} it misses "
+            f"{', '.join(missed)}")
     return not missed
 
 
@@ -722,11 +748,13 @@ def checked_tolerance(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           targets, setup, teeth, say, placed)
         if e is None or not e.met:
             continue
-        tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values)
+        tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values,
+                                     until_missed=True)
         missed = sorted({k for _, short in tolerance.values() for k in TOLERANCE_KEYS
                          if short[k] > 0.0})
         if missed:
-            say(f"  not kept: at the mounting excursions it misses {', '.join(missed)}")
+            say(f"  not kept: at the mounting excursion {list(tolerance)[-1]} it misses "
+                f"{', '.join(missed)}")
             continue
         setup["tolerance"] = (dict(e.values), tuple(setup["torques"]), tolerance)
         return e

@@ -12,12 +12,16 @@ ISO capacity's 251.4 N·m, and with a generated gear to 171 of 276.7 N·m, no FA
 "Generated gear"). Here the development is run again with ``gear_process = "Generate"``
 where the first one's outcome fails (:func:`failed_outcome`) and the better of the two kept
 (:func:`better_outcome`); every design whose Formate development does not fail is the
-first development's, unchanged.
+first development's, unchanged. Where the Formate design fails by its torque cut alone,
+the generated gear's development stops as soon as its design torque falls below the
+Formate design's (:class:`Outclassed`): it could only rank below it (issue 75).
 
 Public names
 ------------
 TORQUE_CUT_FRACTION   design torque below this share of the rated one: a failed outcome
 failed_outcome        why a developed design fails its own check (empty where it does not)
+outclassing_torque    the design torque below which a second development cannot win
+Outclassed            a development stopped there
 better_outcome        the better of two developed designs, and which
 with_generated_gear   a development, then the generated gear's where the first one fails
 """
@@ -35,7 +39,8 @@ import numpy as np
 from contact.ltca.plausibility import LTE_SPREAD_LIMIT, PLASTIC_SHARE_LIMIT
 from geometry.core.errors import InputError
 
-__all__ = ["TORQUE_CUT_FRACTION", "better_outcome", "failed_outcome", "with_generated_gear"]
+__all__ = ["TORQUE_CUT_FRACTION", "Outclassed", "better_outcome", "failed_outcome",
+           "outclassing_torque", "with_generated_gear"]
 
 log = logging.getLogger(__name__)
 
@@ -127,6 +132,50 @@ def _torque_cut(result: Any, rated: float) -> str:
     return "; ".join(out)
 
 
+class Outclassed(Exception):
+    """A development stopped where its design torque was lowered below the torque of the
+    design it is compared with (``develop(..., outclassed_below=)``, :func:`outclassing_torque`).
+
+    Attributes
+    ----------
+    torque : float — [N·m]
+        Its design torque when it stopped (an upper bound of the one it would have ended
+        at: the development only lowers it from there).
+    """
+
+    def __init__(self, torque: float) -> None:
+        super().__init__(f"design torque lowered to {torque:.4g} N m")
+        self.torque = float(torque)
+
+
+def outclassing_torque(first: Any, rated: float) -> float:
+    """[N·m] The design torque below which a second development of the pair cannot rank
+    above ``first`` (:func:`better_outcome`), NaN where there is none.
+
+    Where ``first`` meets no FAIL criterion of the verdict and its design torque was cut
+    below :data:`TORQUE_CUT_FRACTION` × ``rated``, a second design whose design torque is
+    lowered below ``first``'s is cut too (below the same fraction) and meets at best no
+    FAIL criterion: it ranks equal on the first two keys of :func:`better_outcome` and
+    below on the third, the higher design torque. A development only lowers its design
+    torque once it is lowered (the flank's static capacity, then the root-stress and
+    pitting capacity of the written case), so it can stop there
+    (:class:`Outclassed`). Where ``first`` fails a verdict criterion, or fails by the
+    coast flank's torque alone, a second design of a lower torque may still win: NaN.
+
+    Parameters
+    ----------
+    first : DevelopmentResult
+        Its ``best.metrics``, ``coast``, ``torque``, ``torque_lowered`` are read.
+    rated : float — [N·m]
+        As :func:`failed_outcome`.
+    """
+    torque = float(first.torque[1])
+    if (_verdict_fails(first) or not first.torque_lowered or not math.isfinite(rated)
+            or not torque < TORQUE_CUT_FRACTION * rated):
+        return math.nan
+    return torque
+
+
 def better_outcome(first: Any, second: Any, rated: float) -> tuple[Any, str]:
     """The better of two developed designs of one pair, and which.
 
@@ -214,8 +263,21 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
         return first
     say(f"development: the Formate gear's design fails ({why}); developing the pair with "
         "a generated gear too (gear_process 'auto')")
+    below = outclassing_torque(first, rated)
     try:
-        second = run(_generated(basic))
+        second = (run(_generated(basic)) if not math.isfinite(below)
+                  else run(_generated(basic), outclassed_below=below))
+    except Outclassed as stop:
+        text = (f"Gear process (auto): Formate. The Formate gear's developed design fails "
+                f"({why}) at {first.torque[1]:.4g} N m; the generated gear's development "
+                f"was stopped where its design torque fell to {stop.torque:.4g} N m, below "
+                f"the Formate gear's (it is only lowered from there: "
+                "contact.optimize.development_process.outclassing_torque); kept the Formate "
+                "gear (contact.optimize.development_process.better_outcome: no FAIL "
+                "criterion, then no torque cut, then the higher design torque, then the "
+                "development's objective).")
+        say("development: " + text)
+        return dataclasses.replace(first, gear_process_text=text)
     except InputError as err:
         log.info("development: the generated gear has no developed design: %s", err)
         return dataclasses.replace(first, gear_process_text=(
