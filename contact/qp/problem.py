@@ -63,6 +63,7 @@ __all__ = [
     "ProblemScale",
     "contact_residuals",
     "reduced_kkt",
+    "residuals_and_gaps",
     "schur_floor",
     "solve_on_contact_set",
 ]
@@ -411,15 +412,35 @@ def contact_residuals(
     dict of str to float
         Keyed by :data:`RESIDUALS`. Non-finite inputs give ``inf`` residuals, never NaN.
     """
-    return _residuals_and_gaps(problem, force, rotation)[0]
+    return residuals_and_gaps(problem, force, rotation)[0]
 
 
-def _residuals_and_gaps(problem: ContactProblem, force: np.ndarray, rotation: float
+def residuals_and_gaps(problem: ContactProblem, force: np.ndarray, rotation: float
                        ) -> tuple[dict[str, float], np.ndarray | None]:
-    """:func:`contact_residuals` and the gaps Y = C F + s − R Θ [mm] (N,) they were
-    computed from (:meth:`ContactProblem.gap`'s arithmetic, to the bit), or None where F
-    or Θ is not finite: a solve's certification and its solution's slack from one product
-    C F."""
+    """:func:`contact_residuals` and the gaps they were computed from.
+
+    A solve's certification and its solution's slack from one product C F.
+
+    Parameters
+    ----------
+    problem : ContactProblem
+    force : array, shape (N,) — [N]
+    rotation : float — [rad]
+
+    Returns
+    -------
+    residuals : dict of str to float
+        As :func:`contact_residuals` (keyed by :data:`RESIDUALS`; ``inf`` for non-finite
+        inputs).
+    gaps : ndarray, shape (N,), or None
+        Y = C F + s − R Θ [mm] (:meth:`ContactProblem.gap`'s arithmetic, to the bit); None
+        where F or Θ is not finite or F has the wrong shape.
+
+    Notes
+    -----
+    Source: the gaps of the compatibility condition, seed Eq. 3.13; the residuals of
+    :func:`contact_residuals` (equilibrium, seed Eq. 3.14).
+    """
     F = np.asarray(force, dtype=float)
     if F.shape != (problem.size,) or not np.all(np.isfinite(F)) or not np.isfinite(rotation):
         return dict.fromkeys(RESIDUALS, math.inf), None

@@ -346,13 +346,13 @@ def clear_memos() -> None:
     frees memory)."""
     from contact.utca.datasets import clear_cycle_memo
     from contact.utca.easeoff import clear_ease_off_memo
-    from contact.utca.fields import _memo_fields
+    from contact.utca.fields import clear_fields_memo
 
     _memo_forward_points.cache_clear()
     _memo_flank_nodes.cache_clear()
     clear_ease_off_memo()
     clear_cycle_memo()
-    _memo_fields.cache_clear()
+    clear_fields_memo()
 
 
 def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _ForwardMap:

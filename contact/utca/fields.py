@@ -43,7 +43,8 @@ from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.kernels import KERNELS
 from geometry.core.kernels import kernels_module as select_kernels
 
-__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "fields_of", "kernels_module"]
+__all__ = ["KERNELS", "EaseOffFields", "KernelSplines", "clear_fields_memo", "fields_of",
+           "kernels_module"]
 
 _KERNEL_MODULE = "contact.utca.isoline_numba"  # the iso-line searches' compiled kernels
 #: the scalar fields of :meth:`EaseOffFields.values` (and ``pos``, ``nrm``: three each)
@@ -592,6 +593,12 @@ def fields_of(eo: EaseOff, kernels: str | None = None) -> EaseOffFields:
     """
     name = "numpy" if kernels_module(kernels) is None else "numba"
     return _memo_fields(Same(eo), name)
+
+
+def clear_fields_memo() -> None:
+    """Forget the :class:`EaseOffFields` memoised per process by :func:`fields_of` (frees
+    memory; the next call builds afresh)."""
+    _memo_fields.cache_clear()
 
 
 @memoised(maxsize=8)

@@ -31,8 +31,8 @@ from contact.qp.problem import (
     RESIDUALS,
     ContactProblem,
     ContactSolution,
-    _residuals_and_gaps,
     contact_residuals,
+    residuals_and_gaps,
     solve_on_contact_set,
 )
 from contact.qp.solvers.active_set import block_pivoting
@@ -622,7 +622,7 @@ def solve_contact(
             extras,
         )
     F, theta = np.asarray(raw.force, float), float(raw.rotation)
-    res, slack = _residuals_and_gaps(problem, F, theta)
+    res, slack = residuals_and_gaps(problem, F, theta)
     polished = False
     if not _certified(res, tolerance) and polish_solution:
         t0 = time.perf_counter()
