@@ -326,6 +326,14 @@ def long_bearing(values: Mapping[str, float], targets: DevelopmentTargets
     return new
 
 
+def _lost_but_length(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+    """The targets ``best`` met at its check and its variant ``e`` misses, the pattern
+    length apart (a check step may buy the LTE with the length alone), sorted."""
+    was = {k for k, v in best.full[1].items() if v > 0.0}
+    return sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was
+                  and k != "length")
+
+
 def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                  setup: Mapping[str, Any], teeth: KeptTeeth | None,
                  say: Callable[[str], None],
@@ -376,9 +384,7 @@ def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     # the LTE bought with the pattern's length alone: no other target it met given up
     # (the spiral bevel 17x29's coast flank: LTE 73 / 83 -> 50 / 62 urad, but its
     # light-load pattern 0.03-0.98 of the face, on toe and heel, 2.7 % on edges)
-    was = {k for k, v in best.full[1].items() if v > 0.0}
-    lost = sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was
-                  and k != "length")
+    lost = _lost_but_length(best, e)
     if lost:
         say(f"  not kept: the long bearing misses {', '.join(lost)}")
         return best
@@ -459,9 +465,7 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
         if _check_rank(e) >= _check_rank(best):
             continue
-        was = {k for k, v in best.full[1].items() if v > 0.0}
-        lost = sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was
-                      and k != "length")
+        lost = _lost_but_length(best, e)
         p_new = float(e.metrics["pressure_max_flank"][-1])
         p_old = float(best.metrics["pressure_max_flank"][-1])
         bound = (float(targets.max_flank_pressure) if targets.max_flank_pressure is not None
@@ -681,6 +685,19 @@ def _checked_root(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     return _kept_step(e, best, targets, setup, teeth, say, placed)
 
 
+def _missed_excursion(tolerance: Mapping[str, tuple[dict, dict[str, float]]],
+                      say: Callable[[str], None]) -> list[str]:
+    """The :data:`TOLERANCE_KEYS` missed at the excursions of ``tolerance``
+    (:func:`tolerance_checks` with ``until_missed``: the last excursion is the one that
+    missed), sorted; said as "not kept" where any."""
+    missed = sorted({k for _, short in tolerance.values() for k in TOLERANCE_KEYS
+                     if short[k] > 0.0})
+    if missed:
+        say(f"  not kept: at the mounting excursion {list(tolerance)[-1]} it misses "
+            f"{', '.join(missed)}")
+    return missed
+
+
 def _tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
                       say: Callable[[str], None]) -> bool:
@@ -691,12 +708,7 @@ def _tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
     13x39 at path −80°, ellipse 0.75: LTE 12 / 39 µrad, every excursion but ΔE +0.05 mm
     elastic, 1.3 % of the design torque plastic there)."""
     tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values, until_missed=True)
-    missed = sorted({k for _, short in tolerance.values() for k in TOLERANCE_KEYS
-                     if short[k] > 0.0})
-    if missed:
-        say(f"  not kept: at the mounting excursion {list(tolerance)[-1]} it misses "
-            f"{', '.join(missed)}")
-    return not missed
+    return not _missed_excursion(tolerance, say)
 
 
 #: the tolerance step's reliefs (:func:`checked_tolerance`): the chosen design's tip, then
@@ -750,11 +762,7 @@ def checked_tolerance(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             continue
         tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values,
                                      until_missed=True)
-        missed = sorted({k for _, short in tolerance.values() for k in TOLERANCE_KEYS
-                         if short[k] > 0.0})
-        if missed:
-            say(f"  not kept: at the mounting excursion {list(tolerance)[-1]} it misses "
-                f"{', '.join(missed)}")
+        if _missed_excursion(tolerance, say):
             continue
         setup["tolerance"] = (dict(e.values), tuple(setup["torques"]), tolerance)
         return e
