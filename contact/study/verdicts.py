@@ -623,9 +623,6 @@ def shown_above(value: float, limit: float, decimals: int = 0) -> str:
     return f"{value:.{d}f}"
 
 
-_below = shown_below
-
-
 def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Finding]:
     """The rating's findings from the result contract of the load-capacity methods
     (:mod:`contact.load_capacity.contract`; ``rt`` its view): per torque and member a
@@ -661,7 +658,7 @@ def _rating(rt: xr.Dataset, flank_static: frozenset = frozenset()) -> list[Findi
                 if not (np.isfinite(x) and x < smin[j]):
                     continue
                 reason = (f"{standard} {what} safety{' ' + symbol if symbol else ''} "
-                          f"{_below(x, smin[j], 2)} of the {m} at {_t(t)} below "
+                          f"{shown_below(x, smin[j], 2)} of the {m} at {_t(t)} below "
                           f"{least_symbol} {smin[j]:g}")
                 long_life = cycles is not None and not np.isfinite(cycles[j % cycles.size])
                 n = float(n_ok[i, j])
@@ -826,7 +823,7 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                 d = float(ds[dmg][k]) if dmg in ds else math.nan
                 findings.append(Finding(
                     "attention", "safety",
-                    f"{m}: {symbol} {_below(float(ds[name][k]), DUTY_MIN_SAFETY, 2)} below "
+                    f"{m}: {symbol} {shown_below(float(ds[name][k]), DUTY_MIN_SAFETY, 2)} below "
                     f"{DUTY_MIN_SAFETY:g} at the "
                     f"peak-torque bin (life factor 1): beyond the endurance limit there; "
                     f"the Miner damage {d:.3g} over the cycle decides the life"))
