@@ -346,24 +346,9 @@ def test_mesh_compliance_of_several_rolls_in_one_batch_equals_one_by_one():
     solves all their tooth pairs' shell loads together: each roll's matrices equal
     mesh_compliance of that roll alone to round-off (1e-12 relative: the batched Newton
     and RK4 iterate until the slowest point converges, the triangular solve is the same)."""
-    from contact.compliance.mesh import ContactSegments, mesh_compliance, mesh_compliance_many
-    from contact.ltca import segment_geometry
-    from contact.utca.easeoff import ease_off
+    from contact.compliance.mesh import mesh_compliance, mesh_compliance_many
 
-    case = load_case(ROOT / "cases" / "hypoid_iso23509_s2.toml")
-    eo = ease_off(case)
-    roll = 0.1 + np.arange(3) * eo.pitch / 3
-    pairs = np.array([-1, 0, 1])
-    seg = segment_geometry(case, eo, roll, pairs, 8)
-    batch = []
-    for j in range(roll.size):
-        k, s = np.nonzero(np.isfinite(seg.r_eq[j]) & (seg.length[j] > 0))
-        batch.append(ContactSegments(
-            midpoints=seg.midpoint_pair[j, k, s], ends=seg.ends_pair[j, k, s],
-            normals=seg.normal_pair[j, k, s], length=seg.length[j, k, s],
-            r_eq=seg.r_eq[j, k, s], pair_index=pairs[k], load=seg.length[j, k, s],
-            pinion_rotation=float(seg.pinion_rotation[j]),
-            gear_rotation=float(seg.gear_rotation[j])))
+    case, batch = _three_rolls()
     # a roll with two tooth pairs in mesh: blocks of several pairs per roll are covered
     assert max(len(np.unique(b.pair_index)) for b in batch) >= 2
     many = mesh_compliance_many(case, batch)
