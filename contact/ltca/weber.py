@@ -33,14 +33,21 @@ capacity; seed §3.2 (p. 78) and Eq. 3.12–3.14.
 from __future__ import annotations
 
 import logging
+import math
+import time
 from dataclasses import dataclass
+from types import ModuleType
 
 import numpy as np
 
 from contact.compliance.weber import WeberSegments
 from contact.errors import NotPositiveDefiniteError
 from contact.ltca.options import LTCAOptions
-from contact.qp import ContactProblem, ContactSolution, solve_contact
+from contact.qp import DEFAULT_TOLERANCE, ContactProblem, ContactSolution, solve_contact
+from contact.qp.problem import ProblemScale, residuals_and_gaps
+from contact.qp.solvers import DEFAULT_SOLVER
+from contact.qp.solvers.active_set import PIVOTING_KERNELS, pivoting_thresholds
+from geometry.core.kernels import kernels_module
 
 __all__ = ["RollSelection", "WeberSolution", "even_share", "weber_solve"]
 
@@ -50,6 +57,10 @@ log = logging.getLogger(__name__)
 #: the secant (else the secant: b near the depth h); the same share bounds every
 #: iteration's contact compliance from below (the base problem checked once per roll)
 _TANGENT_SHARE = 0.5
+
+#: the block pivoting's iteration cap (:func:`contact.qp.solve_contact`'s default for the
+#: ``active_set`` backend)
+_PIVOT_ITERATIONS = 50
 
 
 @dataclass(frozen=True, eq=False)
@@ -170,8 +181,15 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     except NotPositiveDefiniteError:
         base = None
     diagonal = np.diagonal(sel.structural)  # the structural part of C's diagonal
+    # the compiled warm solve where the default solver runs compiled (issue 75): each
+    # iteration's problem is the base's with another diagonal and separations, solved from
+    # the last forces, without a ContactProblem and a ContactSolution per iteration; the
+    # last iteration's are made at the end (the general path where it does not certify)
+    warm = _warm_kernels(options.solver) if base is not None else None
     lte_prev = step_prev = None
     sol = problem = None
+    last = None  # the last solve's (diagonal, separation, warm start) where compiled
+    force = start  # the warm start of the next solve: the last solution's forces
     n_it = time_used = 0
     for w_it in range(1, options.max_weber_iterations + 1):
         # Newton on Weber's δ(F): δ ≈ c_s F₀ + c_t (F − F₀), c_s the secant and c_t the
@@ -182,24 +200,33 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
         newton = (ct > _TANGENT_SHARE * cs) & (load < cap)
         cw = np.where(newton, ct, cs)
         separation = sel.separation + np.where(newton, (cs - ct) * load, 0.0)
-        if base is not None:
-            problem = base.with_diagonal(diagonal + cw, separation)
-        elif problem is None:
-            problem = ContactProblem(sel.structural + np.diag(cw), separation,
-                                     sel.moment_arm, gear_torque, name=name,
-                                     upper_bound=sel.upper_bound)
-        else:  # only C's diagonal and s change: the rest was checked at the first
-            problem = problem.with_diagonal(diagonal + cw, separation)
-        sol = solve_contact(problem, options.solver,
-                            initial=sol if sol is not None else start)
-        time_used += sol.solve_time + sol.build_time
-        if not sol.found:
-            break
-        load = np.minimum(np.maximum(sol.force, 0.0), cap)
-        if log.isEnabledFor(logging.INFO) and np.any(sol.force > cap):
+        solved = None
+        if warm is not None and force is not None:
+            solved = _warm_solve(warm, base, diagonal + cw, separation, force)
+        if solved is not None:
+            F, theta, solve_time, last = solved
+            time_used += solve_time
+        else:
+            last = None
+            if base is not None:
+                problem = base.with_diagonal(diagonal + cw, separation)
+            elif problem is None:
+                problem = ContactProblem(sel.structural + np.diag(cw), separation,
+                                         sel.moment_arm, gear_torque, name=name,
+                                         upper_bound=sel.upper_bound)
+            else:  # only C's diagonal and s change: the rest was checked at the first
+                problem = problem.with_diagonal(diagonal + cw, separation)
+            sol = solve_contact(problem, options.solver, initial=force)
+            time_used += sol.solve_time + sol.build_time
+            if not sol.found:
+                break
+            F, theta = sol.force, sol.rotation
+        force = F
+        load = np.minimum(np.maximum(F, 0.0), cap)
+        if log.isEnabledFor(logging.INFO) and np.any(F > cap):
             log.info("roll %d: Weber load cap reached on %d segments", sel.roll,
-                     int(np.sum(sol.force > cap)))
-        lte = sol.rotation * 1e6
+                     int(np.sum(F > cap)))
+        lte = theta * 1e6
         n_it = w_it
         if lte_prev is not None:
             step = abs(lte - lte_prev)
@@ -207,7 +234,64 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
                 break
             step_prev = step
         lte_prev = lte
+    if last is not None:  # the last solve was the compiled one: its problem and solution
+        sol, problem, extra = _warm_solution(options.solver, base, F, theta, *last)
+        time_used += extra
     return WeberSolution(sol, problem, n_it, time_used)
+
+
+def _warm_kernels(solver) -> ModuleType | None:
+    """The compiled warm solve's module where ``solver`` is the default ``active_set``
+    and its block pivoting runs compiled (:func:`geometry.core.kernels.kernels_module`),
+    else None (every solve by :func:`contact.qp.solve_contact`)."""
+    if not (isinstance(solver, str) and solver == DEFAULT_SOLVER):
+        return None
+    return kernels_module(PIVOTING_KERNELS)
+
+
+def _warm_solve(kernels: ModuleType, base: ContactProblem, diagonal: np.ndarray,
+                separation: np.ndarray, start: np.ndarray
+                ) -> tuple[np.ndarray, float, float, tuple] | None:
+    """The problem ``base.with_diagonal(diagonal, separation)`` solved from the forces
+    ``start`` [N] as :func:`contact.qp.solve_contact` solves it with the default solver
+    (the same start sets, block pivoting and certification), compiled
+    (:func:`contact.qp.solvers.pivoting_numba.warm_solve`): (F [N], Θ [rad], time [s],
+    what :func:`_warm_solution` takes), or None where that solve needs the general path
+    (a cold start, the fallback, a polish)."""
+    t0 = time.perf_counter()
+    sc = base.scale
+    # the new problem's scale (ContactProblem.with_diagonal: f₀ and r₀ the base's, δ₀ of
+    # the new diagonal) and its block pivoting's thresholds
+    scale = ProblemScale(force=sc.force, length=sc.force * float(np.mean(diagonal)),
+                         arm=sc.arm)
+    f_tol, y_tol, floor = pivoting_thresholds(scale)
+    F, theta, its, outcome, certified = kernels.warm_solve(
+        base.compliance, diagonal, separation, base.moment_arm, float(base.torque),
+        base.upper_bound, base.bounded, base.has_bounds, f_tol, y_tol, floor, start,
+        DEFAULT_TOLERANCE, scale.force, scale.length, scale.arm, _PIVOT_ITERATIONS)
+    if outcome != kernels.SOLVED or not certified:
+        return None
+    elapsed = time.perf_counter() - t0
+    return F, float(theta), elapsed, (diagonal, separation, start, int(its), elapsed)
+
+
+def _warm_solution(solver: str, base: ContactProblem, F: np.ndarray, theta: float,
+                   diagonal: np.ndarray, separation: np.ndarray, start: np.ndarray,
+                   iterations: int, elapsed: float
+                   ) -> tuple[ContactSolution, ContactProblem, float]:
+    """The last compiled solve's problem and its :class:`ContactSolution`, as
+    :func:`contact.qp.solve_contact` gives them (its residuals, slack, status and
+    extras); solved again by it where its own certification disagrees (a residual within
+    round-off of the tolerance). Returns the solution, the problem and the time [s] of
+    that second solve (0 where none)."""
+    problem = base.with_diagonal(diagonal, separation)
+    res, slack = residuals_and_gaps(problem, F, theta)
+    if not all(math.isfinite(v) and v <= DEFAULT_TOLERANCE for v in res.values()):
+        sol = solve_contact(problem, solver, initial=start)
+        return sol, problem, sol.solve_time + sol.build_time
+    return ContactSolution(F, theta, slack, True, "solved", solver, 0.0, elapsed, res,
+                           DEFAULT_TOLERANCE, iterations,
+                           {"fallback": False, "claimed_success": True}), problem, 0.0
 
 
 def _converged(step: float, step_prev: float | None, tolerance: float, newton: np.ndarray,

@@ -113,6 +113,12 @@ class ProblemScale:
         """Θ₀ = δ₀ / r₀ — [rad]."""
         return self.length / self.arm
 
+    @property
+    def schur_floor(self) -> float:
+        """[mm·N] The smallest Schur complement R_Aᵀ C_AA⁻¹ R_A :func:`reduced_kkt` takes
+        as positive: 1e-14 of its reference r₀² f₀/δ₀ (:func:`schur_floor`)."""
+        return 1e-14 * self.arm**2 / (self.length / self.force)
+
 
 @dataclass(frozen=True, eq=False)
 class ContactProblem:
@@ -442,31 +448,35 @@ def residuals_and_gaps(problem: ContactProblem, force: np.ndarray, rotation: flo
     :func:`contact_residuals` (equilibrium, seed Eq. 3.14).
     """
     F = np.asarray(force, dtype=float)
-    if F.shape != (problem.size,) or not np.all(np.isfinite(F)) or not np.isfinite(rotation):
+    if F.shape != (problem.size,) or not math.isfinite(rotation):
+        return dict.fromkeys(RESIDUALS, math.inf), None
+    # ‖F‖∞ is NaN or inf exactly where some force is not finite (N ≥ 1): one pass for
+    # both (issue 75: this runs at every solve of every Weber iteration)
+    f_abs = float(np.abs(F).max())
+    if not math.isfinite(f_abs):
         return dict.fromkeys(RESIDUALS, math.inf), None
     sc = problem.scale
     CF = problem.compliance @ F
     Y = CF + problem.separation - problem.moment_arm * rotation
-    # (the arrays' max method: np.max's reduction without its dispatch layers)
-    f_ref = max(float(np.abs(F).max()), sc.force)
-    d_ref = max(
-        float(np.abs(CF).max()),
-        abs(rotation) * float(np.abs(problem.moment_arm).max()),
-        sc.length,
-    )
-    negY = np.maximum(-Y, 0.0)  # penetration
+    # (the arrays' max method: np.max's reduction without its dispatch layers; ‖R‖∞ is
+    # the scale's arm r₀, ContactProblem._set_checked)
+    f_ref = max(f_abs, sc.force)
+    d_ref = max(float(np.abs(CF).max()), abs(rotation) * sc.arm, sc.length)
+    # the largest of max(a, b) is the larger of the two largest (max is exact), and
+    # max(−F) is −min(F): the same numbers in fewer array passes
     if problem.has_bounds:
         # F − F_max is −inf without a limit (adds zeros to the max), and the segments with
         # a limit are left out of the dual test and kept in the upper complementarity
         b = problem.bounded
         U = problem.upper_bound
-        primal = float(np.maximum(np.maximum(-F, F - U), 0.0).max()) / f_ref
+        negY = np.maximum(-Y, 0.0)  # penetration
+        primal = max(0.0, -float(F.min()), float((F - U).max())) / f_ref
         dual = float(np.where(b, 0.0, negY).max()) / d_ref
         upper = float(np.where(
             b, np.minimum(np.maximum(U - F, 0.0) / f_ref, negY / d_ref), 0.0).max())
     else:
-        primal = float(np.maximum(-F, 0.0).max()) / f_ref
-        dual = float(negY.max()) / d_ref
+        primal = max(0.0, -float(F.min())) / f_ref
+        dual = max(0.0, -float(Y.min())) / d_ref  # the largest penetration
         upper = 0.0
     return {
         "primal": primal,
@@ -544,8 +554,7 @@ def reduced_kkt(
 def schur_floor(problem: ContactProblem) -> float:
     """[mm·N] The smallest Schur complement R_Aᵀ C_AA⁻¹ R_A :func:`reduced_kkt` takes as
     positive: 1e-14 of its reference r₀² f₀/δ₀ (:class:`ProblemScale`)."""
-    sc = problem.scale
-    return 1e-14 * sc.arm**2 / (sc.length / sc.force)
+    return problem.scale.schur_floor
 
 
 def solve_on_contact_set(

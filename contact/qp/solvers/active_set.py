@@ -42,10 +42,18 @@ import time
 
 import numpy as np
 
-from contact.qp.problem import ContactProblem, reduced_kkt, schur_floor, solve_on_contact_set
+from contact.qp.problem import (
+    ContactProblem,
+    ProblemScale,
+    reduced_kkt,
+    schur_floor,
+    solve_on_contact_set,
+)
 from geometry.core.kernels import kernels_module
 
-_KERNEL_MODULE = "contact.qp.solvers.pivoting_numba"  # the compiled block pivoting
+#: the compiled block pivoting's module (:func:`geometry.core.kernels.kernels_module`)
+PIVOTING_KERNELS = "contact.qp.solvers.pivoting_numba"
+_KERNEL_MODULE = PIVOTING_KERNELS
 
 #: the block pivoting's outcomes (its NumPy and compiled loops): solved, a contact set
 #: visited again, a set that cannot carry the torque, the iteration cap
@@ -53,8 +61,14 @@ SOLVED, CYCLED, CANNOT_CARRY, ITERATION_CAP = 0, 1, 2, 3
 _OUTCOMES = {CYCLED: "cycled (contact set repeated)",
              CANNOT_CARRY: "contact set cannot carry the torque"}
 
-__all__ = ["block_pivoting", "initial_contact_set", "initial_contact_sets",
-           "primal_active_set"]
+__all__ = [
+    "PIVOTING_KERNELS",
+    "block_pivoting",
+    "initial_contact_set",
+    "initial_contact_sets",
+    "pivoting_thresholds",
+    "primal_active_set",
+]
 
 # Sign tests are relative to the problem's reference force f₀ and length δ₀;
 # 1e-12 sits above round-off of the reduced KKT solve (κ ≲ 1e8 → ~1e-8 relative
@@ -64,8 +78,23 @@ _SIGN_TOL = 1e-12
 
 
 def _thresholds(problem: ContactProblem) -> tuple[float, float]:
-    sc = problem.scale
-    return _SIGN_TOL * sc.force, _SIGN_TOL * sc.length
+    return pivoting_thresholds(problem.scale)[:2]
+
+
+def pivoting_thresholds(scale: ProblemScale) -> tuple[float, float, float]:
+    """The block pivoting's thresholds of a problem of this scale: the sign tests' force
+    [N] and gap [mm] (1e-12 of f₀ and δ₀) and the least Schur complement taken as
+    positive [mm·N] (:func:`contact.qp.problem.schur_floor`).
+
+    Parameters
+    ----------
+    scale : contact.qp.problem.ProblemScale
+
+    Returns
+    -------
+    (f_tol, y_tol, floor) : (float, float, float) — [N], [mm], [mm·N]
+    """
+    return _SIGN_TOL * scale.force, _SIGN_TOL * scale.length, scale.schur_floor
 
 
 def initial_contact_set(problem: ContactProblem) -> np.ndarray:

@@ -30,9 +30,14 @@ import numpy as np
 
 from contact.qp.solvers.active_set import CANNOT_CARRY, CYCLED, ITERATION_CAP, SOLVED
 
-__all__ = ["CANNOT_CARRY", "CYCLED", "ITERATION_CAP", "SOLVED", "block_pivoting"]
+__all__ = ["CANNOT_CARRY", "COLD_START", "CYCLED", "ITERATION_CAP", "SOLVED", "block_pivoting",
+           "warm_solve"]
 
-#: the kernel's outcomes, those of the NumPy loop (the wrapper words them)
+#: :func:`warm_solve`'s outcome where the warm start loads no segment that can carry the
+#: torque (the cold start, :func:`contact.qp.solvers.active_set.initial_contact_sets`, is
+#: the caller's); the others are the kernel's outcomes, those of the NumPy loop (the
+#: wrapper words them)
+COLD_START = 4
 
 _jit = numba.njit(cache=True, nogil=True)
 
@@ -212,3 +217,115 @@ def _pivot(active, upper, F, Y, U, bounded, f_tol, y_tol):
             active[i] = True
             moved = True
     return moved
+
+
+@_jit
+def warm_solve(C0, diagonal, s, R, T, U, bounded, has_bounds, f_tol, y_tol, floor, start,
+               tolerance, f0, d0, r0, max_iterations):
+    """One warm-started solve of a problem that differs from a checked one only on C's
+    diagonal and in s (Weber's iteration, :mod:`contact.ltca.weber`), certified: what
+    :func:`contact.qp.solve_contact` does with the ``active_set`` backend, ``initial``
+    forces and the default accuracy, up to its certification, in one compiled call.
+
+    Parameters
+    ----------
+    C0 : ndarray (N, N) — [mm/N]
+        The checked problem's (symmetric) compliance; its diagonal is replaced.
+    diagonal : ndarray (N,) — [mm/N]
+        The new diagonal of C.
+    s, R : ndarray (N,) — [mm]
+        Separations and moment arms.
+    T : float — [N·mm]
+    U : ndarray (N,) — [N], ``inf`` where no limit
+    bounded : bool ndarray (N,)
+        The segments with a limit.
+    has_bounds : bool
+    f_tol, y_tol, floor : float — [N], [mm], [mm·N]
+        The block pivoting's thresholds (:func:`block_pivoting`) of the new problem.
+    start : ndarray (N,) — [N]
+        The warm start's forces (finite).
+    tolerance : float — [1]
+        The certification's relative tolerance on every residual.
+    f0, d0, r0 : float — [N], [mm], [mm]
+        The new problem's scale (:class:`contact.qp.problem.ProblemScale`).
+    max_iterations : int
+
+    Returns
+    -------
+    F (N,) [N], Θ [rad], iterations, outcome (:data:`SOLVED`, :data:`CYCLED`,
+    :data:`CANNOT_CARRY`, :data:`ITERATION_CAP` or :data:`COLD_START`), and whether every
+    residual of :func:`contact.qp.contact_residuals` is within ``tolerance`` (the
+    caller's certification decides what it reports; this one only whether the solve
+    needs the general path's fallback or polish).
+
+    Notes
+    -----
+    The start sets are :func:`contact.qp.solvers.active_set.block_pivoting`'s from
+    ``initial`` forces: loaded where F > 0, at the limit where F ≥ F_max (1 − 1e-9), the
+    loaded ones not at their limit; the iterations are :func:`block_pivoting`'s on the same
+    arrays (the same forces to the bit). The residuals are those of seed Eq. 3.12–3.14
+    (:func:`contact.qp.contact_residuals`), their products summed in order (not BLAS's):
+    equal to round-off, so only a residual within round-off of ``tolerance`` could be
+    judged otherwise.
+    """
+    n = s.size
+    C = C0.copy()
+    for i in range(n):
+        C[i, i] = diagonal[i]
+    active = np.zeros(n, dtype=np.bool_)
+    upper = np.zeros(n, dtype=np.bool_)
+    carries = False
+    for i in range(n):
+        if has_bounds:
+            upper[i] = bounded[i] and start[i] >= U[i] * (1.0 - 1e-9)
+        active[i] = start[i] > 0 and not upper[i]
+        if active[i] and R[i] > 0:
+            carries = True
+    if not carries:
+        return np.zeros(n), 0.0, 0, COLD_START, False
+    F, theta, it, outcome = block_pivoting(C, s, R, T, U, has_bounds, f_tol, y_tol, floor,
+                                           active, upper, max_iterations)
+    if outcome != SOLVED:
+        return F, theta, it, outcome, False
+    return F, theta, it, outcome, _certified(C, s, R, T, U, bounded, has_bounds, F, theta,
+                                             tolerance, f0, d0, r0)
+
+
+@_jit
+def _certified(C, s, R, T, U, bounded, has_bounds, F, theta, tolerance, f0, d0, r0):
+    """Whether the residuals of :func:`contact.qp.contact_residuals` of (F, Θ) are finite
+    and within ``tolerance`` (their arithmetic, the products summed in order)."""
+    n = s.size
+    f_abs = 0.0
+    for i in range(n):
+        f_abs = max(f_abs, abs(F[i]))
+    if not (math.isfinite(f_abs) and math.isfinite(theta)):
+        return False
+    Y = np.empty(n)
+    cf_abs = 0.0
+    rf = 0.0
+    for i in range(n):
+        v = 0.0
+        for j in range(n):
+            v += C[i, j] * F[j]
+        cf_abs = max(cf_abs, abs(v))
+        Y[i] = v + s[i] - R[i] * theta
+        rf += R[i] * F[i]
+    f_ref = max(f_abs, f0)
+    d_ref = max(cf_abs, abs(theta) * r0, d0)
+    primal = 0.0
+    dual = 0.0
+    comp = 0.0
+    upper = 0.0
+    for i in range(n):
+        neg_y = max(-Y[i], 0.0)
+        primal = max(primal, -F[i])
+        if has_bounds:
+            primal = max(primal, F[i] - U[i])
+        if has_bounds and bounded[i]:
+            upper = max(upper, min(max(U[i] - F[i], 0.0) / f_ref, neg_y / d_ref))
+        else:
+            dual = max(dual, neg_y)
+        comp = max(comp, min(max(F[i], 0.0) / f_ref, max(Y[i], 0.0) / d_ref))
+    worst = max(primal / f_ref, dual / d_ref, comp, abs(rf - T) / T, upper)
+    return math.isfinite(worst) and worst <= tolerance
