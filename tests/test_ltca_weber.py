@@ -83,3 +83,33 @@ def test_a_roll_that_cannot_carry_the_torque_is_refused_naming_the_field():
     bad = RollSelection(**{**sel.__dict__, "moment_arm": -sel.moment_arm})
     with pytest.raises(ProblemInputError, match="moment_arm"):
         weber_solve(bad, 1e6, 1.0, LTCAOptions(), MODULUS)
+
+
+@pytest.mark.parametrize("torque", [2e5, 4e6])  # gear torque [N·mm]
+def test_compiled_warm_solves_change_nothing(monkeypatch, torque):
+    """Issue 75: where the block pivoting runs compiled, the iterations after the first
+    solve each problem in one compiled call (contact.qp.solvers.pivoting_numba.warm_solve)
+    and make the problem and solution for the last only. Against every solve by
+    solve_contact (the compiled call switched off): the same iterations, forces, Θ,
+    slack, residuals, status and final problem, to the bit — the same kernel on the same
+    arrays, not an approximation of it."""
+    import contact.ltca.weber as weber
+
+    if weber._warm_kernels("active_set") is None:
+        pytest.skip("the block pivoting runs in NumPy here (no numba or LTCA_KERNELS)")
+    sel = _roll()
+    options = LTCAOptions()
+    first = even_share(torque, sel.moment_arm)
+    prior = np.full(sel.length.size, first)
+    fast = weber_solve(sel, torque, first, options, MODULUS, prior=prior)
+    monkeypatch.setattr(weber, "_warm_kernels", lambda solver: None)
+    plain = weber_solve(sel, torque, first, options, MODULUS, prior=prior)
+    assert fast.iterations == plain.iterations >= 2
+    a, b = fast.solution, plain.solution
+    np.testing.assert_array_equal(a.force, b.force)
+    np.testing.assert_array_equal(a.slack, b.slack)
+    assert a.rotation == b.rotation and a.residuals == b.residuals
+    assert (a.found, a.status, a.solver, a.iterations, dict(a.extras)) == \
+        (b.found, b.status, b.solver, b.iterations, dict(b.extras))
+    np.testing.assert_array_equal(fast.problem.compliance, plain.problem.compliance)
+    np.testing.assert_array_equal(fast.problem.separation, plain.problem.separation)

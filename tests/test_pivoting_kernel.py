@@ -97,3 +97,51 @@ def test_kernel_outcomes_name_the_failure():
         np.zeros(n, dtype=bool), 10)
     assert outcome == kernels.CANNOT_CARRY and it == 1
     assert not np.any(F)  # no solution was found: the forces stay at their start (0)
+
+
+def _warm(problem: ContactProblem, diagonal: np.ndarray, separation: np.ndarray,
+          start: np.ndarray):
+    """pivoting_numba.warm_solve of ``problem`` with another diagonal and separations,
+    with the new problem's scale and thresholds as contact.ltca.weber hands them."""
+    from contact.qp.problem import ProblemScale
+    from contact.qp.solvers.active_set import pivoting_thresholds
+
+    sc = problem.scale
+    scale = ProblemScale(force=sc.force, length=sc.force * float(np.mean(diagonal)),
+                         arm=sc.arm)
+    return kernels.warm_solve(problem.compliance, diagonal, separation, problem.moment_arm,
+                              float(problem.torque), problem.upper_bound, problem.bounded,
+                              problem.has_bounds, *pivoting_thresholds(scale), start, 1e-7,
+                              scale.force, scale.length, scale.arm, 50)
+
+
+@pytest.mark.parametrize("n, seed", [(74, 1), (134, 2)])
+@pytest.mark.parametrize("fraction", [None, 0.6])
+def test_warm_solve_is_solve_contact_to_the_bit(n, seed, fraction):
+    """The Weber iteration's compiled solve (issue 75) against solve_contact on the
+    problem with_diagonal makes: the same start sets and block pivoting, so the same
+    forces, Θ and iterations to the bit (not to round-off: the same kernel on the same
+    arrays), certified where solve_contact certifies."""
+    base = ltca_like_problem(n, seed=seed).problem
+    if fraction is not None:
+        base = _bounded(base, fraction)
+    rng = np.random.default_rng(seed)
+    diagonal = np.diagonal(base.compliance) * (1.0 + rng.uniform(0.0, 0.3, base.size))
+    separation = base.separation + rng.uniform(0.0, 1e-3, base.size)
+    prior = solve_contact(base)
+    problem = base.with_diagonal(diagonal, separation)
+    want = solve_contact(problem, initial=prior)
+    F, theta, its, outcome, certified = _warm(base, diagonal, separation, prior.force)
+    assert outcome == kernels.SOLVED and certified and want.found
+    np.testing.assert_array_equal(F, want.force)
+    assert theta == want.rotation and its == want.iterations
+
+
+def test_warm_solve_leaves_a_cold_start_to_the_caller():
+    """A warm start that loads no segment able to carry the torque: COLD_START, the
+    caller's general path (contact.ltca.weber falls back to solve_contact)."""
+    base = ltca_like_problem(40, seed=4).problem
+    diagonal = np.diagonal(base.compliance).copy()
+    *_, outcome, certified = _warm(base, diagonal, base.separation.copy(),
+                                   np.zeros(base.size))
+    assert outcome == kernels.COLD_START and not certified
