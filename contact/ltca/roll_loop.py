@@ -94,6 +94,9 @@ class _Analysis:
     modulus: float  # [MPa] contact modulus E* of the pair
     sink: Callable[[RollProblem], None] | None
     limits: tuple[float, float] = (np.inf, np.inf)  # [MPa] (edge, flank) pressure limits
+    # [N] (J, K, S) every segment's force limit F_max (inf where its kind has none), or
+    # None where no kind has one (force_limits of all segments at once)
+    bounds: np.ndarray | None = None
 
 
 def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False,
@@ -139,12 +142,14 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False
     J, K, S = seg.shape
     screening = Screening.of(seg, float(torques.max()), setup.easeoff.ratio,
                              opts.separation_limit)
+    modulus = contact_modulus(opts.youngs_modulus, opts.poisson_ratio,
+                              opts.youngs_modulus, opts.poisson_ratio)
+    limits = pressure_limits(setup.case, opts)
+    # each segment's force limit, elementwise: once for all rolls, not per problem
     an = _Analysis(setup, seg, screening, CompliancePool(setup.case, seg, opts, setup.easeoff),
-                   RollResults.empty(torques.size, J, K, S),
-                   contact_modulus(opts.youngs_modulus, opts.poisson_ratio,
-                                   opts.youngs_modulus, opts.poisson_ratio),
-                   None if sink is None else sink.append,
-                   pressure_limits(setup.case, opts))
+                   RollResults.empty(torques.size, J, K, S), modulus,
+                   None if sink is None else sink.append, limits,
+                   force_limits(seg.kind, seg.length, seg.r_eq, limits, modulus))
     cont = _Continuation.empty(torques.size)
     computed = [j for j in range(J) if int(seg.source[j]) == j and screening.usable[j].any()]
     if opts.separation_limit is not None:
@@ -262,7 +267,7 @@ def _selection(an: _Analysis, j: int, sel: np.ndarray) -> RollSelection:
     length, r_eq = seg.length[j, kk, ss], seg.r_eq[j, kk, ss]
     return RollSelection(j, kk, ss, structural, depth, length, r_eq,
                          screening.moment_arm[j, kk, ss], screening.separation[j, kk, ss],
-                         force_limits(seg.kind[ss], length, r_eq, an.limits, an.modulus))
+                         None if an.bounds is None else an.bounds[j, kk, ss])
 
 
 def _first_load(an: _Analysis, j: int, gear_torque: float) -> float:
