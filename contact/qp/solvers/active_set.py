@@ -316,8 +316,12 @@ def block_pivoting(
     active, upper = _start_sets(problem, initial_active_set, initial_upper_set)
     kernels = kernels_module(_KERNEL_MODULE)
     if kernels is not None:  # the same iterations, compiled
+        # C and s as writable copies, R and F_max as the problem's read-only arrays: the
+        # array types (numba specialises on the read-only flag) of the Weber iteration's
+        # compiled warm solve (pivoting_numba.warm_solve), so that the kernel is compiled
+        # once for both, not twice on a fresh numba cache
         F, theta, it, outcome = kernels.block_pivoting(
-            problem.compliance, problem.separation, problem.moment_arm,
+            np.array(problem.compliance), np.array(problem.separation), problem.moment_arm,
             float(problem.torque), problem.upper_bound, problem.has_bounds, f_tol, y_tol,
             floor, active, upper, int(max_iterations))
     else:
