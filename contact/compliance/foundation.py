@@ -69,7 +69,7 @@ below 0.019. So below the range the coefficients are evaluated at its bound:
 2 r_f θ_f, stays the member's own). The held coupling is positive definite for every
 h_f > 1, θ_f in (0, π/2), and continuous across the bound; it omits the logarithmic
 growth of the translations, ≤ 0.58 ln(0.012/θ_f) on P* (19×62's gear: 0.30 on 3.15,
-about 2 % of its base compliance at mid-tooth), and likewise ≤ 0.58 ln(h_f/7) beyond
+2.5 % of its base compliance at u_f/S_f 1, α_m 0.3 rad), and likewise ≤ 0.58 ln(h_f/7) beyond
 h_f 7, where the fit's B_P h_f² grows without bound.
 
 Public API
