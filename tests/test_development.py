@@ -428,9 +428,10 @@ def test_lte_spread_is_the_quantity_the_verdicts_plausibility_check_reads(unreli
     """The spread the objective reads (LTE peak-to-peak / mean where the mean exceeds the
     unloaded TE's peak-to-peak) is computed by hand from the dataset, and exceeds
     LTE_SPREAD_LIMIT exactly where the verdict's plausibility flag (an independent
-    reading, contact.ltca.plausibility) is raised; 0.1 above the limit is a shortfall
-    of 2 (per 0.05)."""
-    from contact.ltca.plausibility import LTE_SPREAD_LIMIT, plausibility_flags
+    reading, contact.ltca.plausibility) is raised, but for a quiet transfer (no edge share,
+    LTE p-p within 60 µrad), flagged by neither; 0.1 above the limit is a shortfall of 2
+    (per 0.05)."""
+    from contact.ltca.plausibility import LTE_SPREAD_LIMIT, plausibility_flags, quiet_transfer
     from contact.optimize.development import lte_spread
 
     tree, metrics, _ = unrelieved_pc
@@ -441,12 +442,41 @@ def test_lte_spread_is_the_quantity_the_verdicts_plausibility_check_reads(unreli
     by_hand = [p / m if m > ute_pp else 0.0 for p, m in zip(pp, mean, strict=True)]
     np.testing.assert_allclose(lte_spread(lt), by_hand, rtol=1e-12)
     np.testing.assert_allclose(metrics["lte_spread"], by_hand, rtol=1e-12)
-    np.testing.assert_array_equal(metrics["lte_spread"] > LTE_SPREAD_LIMIT,
+    quiet = quiet_transfer(metrics["lte_peak_to_peak"], metrics["edge_load_share"])
+    np.testing.assert_array_equal((metrics["lte_spread"] > LTE_SPREAD_LIMIT) & ~quiet,
                                   plausibility_flags(lt)["lte_spread"])
-    m = _metrics(lte_spread=[LTE_SPREAD_LIMIT + 0.1, 0.1])
+    # the spread at a torque with edge contact (0.1 %, above EDGE_SHARE_MIN): not quiet
+    m = _metrics(lte_spread=[LTE_SPREAD_LIMIT + 0.1, 0.1], edge_load_share=[0.001, 0.01])
     for stage in ("bearing", "relief"):
         _, short, met = development_score(m, DevelopmentTargets(), centre_v=0.6, stage=stage)
         assert not met and short["spread"] == pytest.approx(2.0), stage
+
+
+def test_a_quiet_transfer_is_no_spread_in_the_objective():
+    """The objective follows the plausibility check's quiet-transfer rule
+    (contact.ltca.plausibility.quiet_transfer): a light-load spread of 0.53 with no edge
+    share and an LTE p-p of 35 µrad (the hypoid 5x42's light bin, docs/own_gear_set.md)
+    is no shortfall and adds no VERDICT_FAIL_PENALTY; the same spread with edge contact
+    (0.1 % of the torque, above EDGE_SHARE_MIN 0.05 %) or an LTE p-p of 61 µrad (above
+    LTE_LIMIT 60) is a shortfall of (0.53 - 0.5) / 0.05 = 0.6 and is penalised. The quiet
+    design's objective is the passing one's exactly (the same terms: equal LTE)."""
+    from contact.optimize.development_targets import VERDICT_FAIL_PENALTY
+
+    t = DevelopmentTargets(max_lte=70.0)
+    quiet = _metrics(lte_peak_to_peak=[35.0, 30.0], lte_spread=[0.53, 0.1],
+                     edge_load_share=[0.0, 0.0])
+    plain = _metrics(lte_peak_to_peak=[35.0, 30.0], lte_spread=[0.2, 0.1],
+                     edge_load_share=[0.0, 0.0])
+    q, short_q, met_q = development_score(quiet, t, centre_v=0.6)
+    p, _, met_p = development_score(plain, t, centre_v=0.6)
+    assert short_q["spread"] == 0.0 and met_q and met_p
+    assert q == p < VERDICT_FAIL_PENALTY
+    for over in ({"edge_load_share": [0.001, 0.0]}, {"lte_peak_to_peak": [61.0, 30.0]}):
+        loud = _metrics(**{**{"lte_peak_to_peak": [35.0, 30.0], "lte_spread": [0.53, 0.1],
+                              "edge_load_share": [0.0, 0.0]}, **over})
+        o, short, met = development_score(loud, t, centre_v=0.6)
+        assert short["spread"] == pytest.approx(0.6, rel=1e-9) and not met, over
+        assert o > VERDICT_FAIL_PENALTY, over
 
 
 def test_a_design_the_verdict_fails_on_its_spread_ranks_after_every_one_it_passes():

@@ -40,13 +40,50 @@ v_i = cos α_i (u_i/S_f, 1, tan α_i)::
 the deflection along load i due to a unit load j on the same tooth is the
 bilinear form C_ij = v_iᵀ G v_j / (E b): a symmetric matrix of rank ≤ 3 whose
 diagonal is exactly Sainsot's formula. It is positive semi-definite when
-L* P* ≥ (M*/2)² and P* Q* ≥ 0 (checked). Loads on different teeth do not couple
-through this term. The base deflects uniformly along the face width (Sainsot's
-2-D hypothesis): a load near the toe moves the heel as much as itself.
+L* P* ≥ (M*/2)² and P* Q* ≥ 0, which holds wherever the coefficients are held to the
+fit's range (below). Loads on different teeth do not couple through this term. The
+base deflects uniformly along the face width (Sainsot's 2-D hypothesis): a load near
+the toe moves the heel as much as itself.
+
+The fit's range, and the coefficients beyond it
+----------------------------------------------
+The fit is a polynomial in 1/θ_f and h_f; outside its data it is not a model of a
+gear body. The coefficient values it was fitted over are published as ranges
+(L* 6.82–6.94, M* 1.08–3.29, P* 2.56–13.47, Q* 0.141–0.62; the bounds the
+rotordynamics package ROSS warns outside): L* reaches its lower bound 6.82 at
+θ_f = 0.0119–0.0133 rad for every h_f in 1.4–7, M* its upper bound 3.29 at θ_f 0.0120
+(h_f 2), and P*'s upper bound 13.47 is the fit at h_f = 7.0. Below θ_f ≈ 0.012 the
+A/θ_f² terms take over: P* turns down (its maximum is at θ_f = −2A_P/D_P = 0.019),
+becomes negative at θ_f ≈ 0.007 (h_f 2: −0.54), and the coupling G goes indefinite
+(h_f 2: eigenvalues −3.09 … at θ_f 0.007), so the base term *lowered* the tooth's
+compliance of a large gear (virtual tooth count above ~250: an industrial 19×62 gear's
+θ_f is 0.0071, a 5×43 hypoid gear's 0.0058).
+
+A large gear's body tends to a half-plane as θ_f → 0 (tooth small against the body):
+the root section's rotation under a moment stays finite (L*, M* tend to constants), and
+its translations grow only as the logarithm of body depth over tooth width, by
+k = 2(1 − ν²)/π = 0.579 per e-fold of 1/θ_f (Flamant, plane strain, ν = 0.3) — the fit's
+own slope dP*/d ln(1/θ_f) is 0.50–0.70 over θ_f 0.025–0.08, in agreement, and turns
+negative below 0.019. A plane-strain FE of the annulus, fixed at its bore and loaded on
+the root arc (tests/test_foundation_fe.py), gives P* 2.95 and P*Q* 1.59 at h_f 2,
+θ_f 0.05 (the fit: 3.11, 1.70), and below the range keeps growing by k: P* 3.77, 4.09,
+4.28 at θ_f 0.012, 0.007, 0.005 (the bare fit: 3.15, −0.54, −7.47). So below the range
+(:data:`SAINSOT_THETA_F_MIN`) L* and M* are those at the bound and the translations
+continue as the half-plane's: P* = P*_b + k ℓ and P*Q* = (P*Q*)_b + k ℓ, ℓ = ln(θ_b/θ_f)
+(:data:`SAINSOT_LOG_SLOPE`); above h_f 7 (:data:`SAINSOT_H_F_MAX`) the coefficients are
+those at h_f 7 (the fit's B h_f² is the body's wind-up to a bore that shrinks to a point;
+a member that small-bored sits on its shaft). The geometry, S_f = 2 r_f θ_f, stays the
+member's own. The coupling is then positive definite for every h_f > 1 and θ_f in
+(0, π/2), continuous across the bound, and its P* at θ_f 0.007 is FE/1.18 (at the bound
+FE/1.20: the fit's own offset there, carried on).
 
 Public API
 ----------
 SAINSOT_COEFFICIENTS      the coefficient table (A … F for L*, M*, P*, Q*)
+SAINSOT_THETA_F_MIN       the fit's lower bound of θ_f [rad]; below it L*, M* held and the
+                          translations continued as a half-plane's
+SAINSOT_LOG_SLOPE         that continuation's growth per e-fold of 1/θ_f [1]
+SAINSOT_H_F_MAX           the fit's upper bound of h_f [1], coefficients held above it
 ToothFoundation           frozen dataclass: r_f, r_int, θ_f, b, E
 sainsot_coefficients      L*, M*, P*, Q* for given h_f and θ_f
 foundation_compliance     δ_f / F [mm/N] at each load (Sainsot's formula)
@@ -71,12 +108,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.validation import broadcast, real, real_array
 
 __all__ = [
     "SAINSOT_COEFFICIENTS",
+    "SAINSOT_H_F_MAX",
+    "SAINSOT_LOG_SLOPE",
+    "SAINSOT_THETA_F_MIN",
     "ToothFoundation",
     "foundation_compliance",
     "foundation_matrices",
@@ -96,6 +135,20 @@ SAINSOT_COEFFICIENTS: dict[str, tuple[float, float, float, float, float, float]]
     "P": (-50.952e-5, 185.50e-3, 0.0538e-4, 53.300e-3, 0.2895, 0.9236),
     "Q": (-6.2042e-5, 9.0889e-3, -4.0964e-4, 7.8297e-3, -0.1472, 0.6904),
 }
+
+#: [rad] Lower bound of θ_f of Sainsot's fit: L* leaves its published range (≥ 6.82) at
+#: θ_f 0.0119–0.0133 for h_f 1.4–7, M* (≤ 3.29) at 0.0120 for h_f 2 (module docstring).
+#: Below it the coefficients are evaluated at the bound.
+SAINSOT_THETA_F_MIN: float = 0.012
+
+#: [1] k = 2(1 − ν²)/π at ν = 0.3: the growth of the translational coefficients P* and
+#: P* Q* per e-fold of 1/θ_f below :data:`SAINSOT_THETA_F_MIN` (Flamant's half-plane,
+#: plane strain; module docstring)
+SAINSOT_LOG_SLOPE: float = 2.0 * (1.0 - 0.3**2) / math.pi
+
+#: [1] Upper bound of h_f of Sainsot's fit: P*'s published maximum 13.47 is the fit at
+#: h_f = 7.0 (θ_f 0.019). Above it the coefficients are evaluated at the bound.
+SAINSOT_H_F_MAX: float = 7.0
 
 
 def _pos(name: str, value: float, unit: str, upper: float | None = None) -> float:
@@ -158,13 +211,21 @@ class ToothFoundation:
         return 2.0 * self.root_radius * self.root_half_angle
 
 
-def sainsot_coefficients(radius_ratio: float, root_half_angle: float) -> dict[str, float]:
+def sainsot_coefficients(
+    radius_ratio: float, root_half_angle: float, *, extrapolate: bool = False
+) -> dict[str, float]:
     """L*, M*, P*, Q* of Sainsot et al. (2004) [1].
 
     Parameters
     ----------
     radius_ratio : float — [1] h_f = r_f / r_int > 1
     root_half_angle : float — [rad] θ_f in (0, π/2)
+    extrapolate : bool — False (the model): inside the fit's range the polynomial;
+        above h_f :data:`SAINSOT_H_F_MAX` the values at it; below θ_f
+        :data:`SAINSOT_THETA_F_MIN` = θ_b, L* and M* at θ_b and P* = P*_b + k ℓ, P* Q* =
+        (P* Q*)_b + k ℓ, ℓ = ln(θ_b/θ_f), k = :data:`SAINSOT_LOG_SLOPE` (module
+        docstring); True: the bare polynomial at (h_f, θ_f), which goes indefinite below
+        θ_f ≈ 0.01 (for mapping the fit, not for use)
 
     Returns
     -------
@@ -178,28 +239,28 @@ def sainsot_coefficients(radius_ratio: float, root_half_angle: float) -> dict[st
     Notes
     -----
     Sainsot, Velex & Duverger (2004), polynomial fits of the coefficients:
-    X* = A/θ_f² + B h_f² + C h_f/θ_f + D/θ_f + E h_f + F.
+    X* = A/θ_f² + B h_f² + C h_f/θ_f + D/θ_f + E h_f + F. Held at the fit's bounds
+    outside its range (module docstring: the half-plane limit of a large gear's body).
     """
     h = _pos("radius_ratio", radius_ratio, "1")
     if h <= 1.0:
         raise InputError(f"radius_ratio: must be > 1 (r_f > r_int) [1], got {radius_ratio!r}")
     th = _pos("root_half_angle", root_half_angle, "rad", upper=0.5 * math.pi)
-    return {
+    grow = 0.0
+    if not extrapolate:
+        h = min(h, SAINSOT_H_F_MAX)
+        if th < SAINSOT_THETA_F_MIN:
+            grow = SAINSOT_LOG_SLOPE * math.log(SAINSOT_THETA_F_MIN / th)
+            th = SAINSOT_THETA_F_MIN
+    out = {
         k: a / th**2 + b * h**2 + c * h / th + d / th + e * h + f
         for k, (a, b, c, d, e, f) in SAINSOT_COEFFICIENTS.items()
     }
-
-
-@memoised(maxsize=64)
-def _warn_indefinite(radius_ratio: float, root_half_angle: float) -> None:
-    """Say once per process and foundation (h_f, θ_f) that Sainsot's coefficients give an
-    indefinite base coupling: a development builds the same tooth's compliance for each of
-    its dozens of trials, and a line per trial buried its progress lines. A memo: after
-    ``clear_caches`` it is said again."""
-    log.warning(
-        "Sainsot coefficients give an indefinite base coupling (h_f=%.3g, theta_f=%.3g): "
-        "the fit (Sainsot et al. 2004) is extrapolated there; said once per tooth",
-        radius_ratio, root_half_angle)
+    if grow > 0.0:  # the translations of a half-plane below the range (module docstring)
+        p = out["P"] + grow
+        out["Q"] = (out["P"] * out["Q"] + grow) / p
+        out["P"] = p
+    return out
 
 
 def _load_vectors(
@@ -213,8 +274,6 @@ def _load_vectors(
     g = np.array(
         [[c["L"], 0.5 * c["M"], 0.0], [0.5 * c["M"], c["P"], 0.0], [0.0, 0.0, c["P"] * c["Q"]]]
     )
-    if g[0, 0] * g[1, 1] < g[0, 1] ** 2 or g[2, 2] < 0.0:
-        _warn_indefinite(round(foundation.radius_ratio, 3), round(foundation.root_half_angle, 5))
     v = np.cos(a)[:, None] * np.column_stack(
         [u / foundation.root_thickness, np.ones_like(u), np.tan(a)]
     )
@@ -284,8 +343,8 @@ def foundation_matrix(
     The bilinear form of Sainsot's quadratic form (module docstring): the root
     section's rotation (L*), rotation–translation coupling (M*), tangential (P*)
     and radial (P* Q*) translations. Our reading, not stated by Sainsot et al.,
-    who give the diagonal only. If G is not positive semi-definite for the
-    given h_f, θ_f (outside the fit's range), a warning is logged.
+    who give the diagonal only. G is positive definite: outside the fit's range its
+    coefficients are the half-plane continuation of :func:`sainsot_coefficients`.
     """
     v, g = _load_vectors(foundation, load_height, load_angle)
     eb = foundation.youngs_modulus * foundation.face_width

@@ -26,7 +26,14 @@ The checks and their stated thresholds:
   most 0.16 on every bundled case at 50–500 N·m; 0.5 is three times that. The check
   applies where the mean LTE exceeds the unloaded TE's peak-to-peak: at lighter loads the
   LTE is the unloaded TE's own shape — parabolic pair TEs from their common minimum, whose
-  peak-to-peak is 2–3 times their mean — and its ratio says nothing of the mesh.
+  peak-to-peak is 2–3 times their mean — and its ratio says nothing of the mesh. Nor is a
+  **quiet transfer** flagged (:func:`quiet_transfer`): where no edge carries load (below
+  :data:`EDGE_SHARE_MIN` of the torque) and the LTE peak-to-peak is within
+  :data:`LTE_LIMIT`, a spread above 0.5 is the tooth pairs' own hand-over of a localised
+  bearing just above that torque, not edge contact or lost contact (a hypoid 5×42 at 10 %
+  of its design torque: p-p 35 µrad = 0.53 × its mean, no edge, unloaded TE p-p 31 µrad;
+  docs/own_gear_set.md, "unseen (4)"). The verdict (:mod:`contact.study.verdicts`), the
+  development's objective and its outcome read the same rule.
 * **misalignment beyond the blank** — an input, not a result: a displacement ΔE, ΔP or ΔG
   larger than :data:`MISALIGNMENT_LIMIT_FRACTION` (5 %) of the smaller face width, or a
   shaft-angle change ΔΣ that moves the gear's outer cone distance R_e by more than that.
@@ -47,6 +54,9 @@ Public functions
 ----------------
 PLASTIC_SHARE_LIMIT    the torque share at the limit beyond which a run is flagged [1]
 LTE_SPREAD_LIMIT       the LTE peak-to-peak / mean beyond which a run is flagged [1]
+EDGE_SHARE_MIN         the least torque share on the edges that is edge contact [1]
+LTE_LIMIT              the ``lte`` check's default limit of the LTE peak-to-peak [µrad]
+quiet_transfer         where an LTE spread is a quiet mesh's own transfer (not flagged)
 MISALIGNMENT_LIMIT_FRACTION  the misalignment / face width beyond which an input is flagged
 CAUSES                 the causes' names, in the order of their flag bits
 plausibility_flags     the causes of a /ltca dataset, per torque (booleans)
@@ -65,9 +75,10 @@ import xarray as xr
 from geometry.case import Case
 from geometry.pair.assembly import Misalignment
 
-__all__ = ["CAUSES", "LTE_SPREAD_LIMIT", "MISALIGNMENT_LIMIT_FRACTION", "PLASTIC_SHARE_LIMIT",
-           "misalignment_limits", "misalignment_warnings", "plausibility_flags",
-           "plausibility_warnings"]
+__all__ = ["CAUSES", "EDGE_SHARE_MIN", "LTE_LIMIT", "LTE_SPREAD_LIMIT",
+           "MISALIGNMENT_LIMIT_FRACTION", "PLASTIC_SHARE_LIMIT", "misalignment_limits",
+           "misalignment_warnings", "plausibility_flags", "plausibility_warnings",
+           "quiet_transfer"]
 
 #: [1] largest share of the gear torque that segments at their force limit may carry at a
 #: roll position before a run is flagged (module docstring)
@@ -75,6 +86,24 @@ PLASTIC_SHARE_LIMIT = 0.05
 
 #: [1] largest LTE peak-to-peak / mean LTE of a load-dominated run (module docstring)
 LTE_SPREAD_LIMIT = 0.5
+
+#: [1] least share of the torque (Σ F·arm over the mesh cycle) an edge must carry to be a
+#: finding: 0.05 %, a fortieth of what one loaded segment carries on average (the default
+#: analysis' 24 segments on each of two loaded contact curves: 1/48 ≈ 2.1 %). The load of
+#: the segment where a pattern ends depends on where in that segment the end falls, so a
+#: smaller share is the discretisation's, not the design's (docs/verdicts.md)
+EDGE_SHARE_MIN = 5e-4
+
+#: [µrad] largest loaded transmission error peak-to-peak at a torque up to the design
+#: torque before the verdict's ``lte`` check finds it (attention): issue 71's criterion of
+#: a gear one would release ("LTE p-p ≤ 60 µrad at every torque"), above the development's
+#: own target of 40 µrad (contact.optimize.development.DevelopmentTargets.max_lte) by the
+#: margin between a coarse development analysis and ``ltca run``'s sampling. No published
+#: limit for hypoid and spiral bevel sets was found (an NVH target is the vehicle maker's);
+#: the designs of docs/own_gear_set.md that meet every other criterion run at 13-52 µrad,
+#: the bundled default case at 15-23 µrad. Overridden by ``verdict(..., lte_limit=)``;
+#: also the LTE bound of a quiet transfer (:func:`quiet_transfer`)
+LTE_LIMIT = 60.0
 
 #: [1] largest |ΔE|, |ΔP|, |ΔG| as a fraction of the smaller face width, and of |ΔΣ| R_e
 #: (the gear's outer cone distance) likewise, of a plausible mounting (module docstring)
@@ -103,7 +132,47 @@ def _above(values: np.ndarray, limit: float, decimals: int) -> str:
     return "/".join(out)
 
 
-def plausibility_flags(ltca: xr.Dataset) -> dict[str, np.ndarray]:
+def quiet_transfer(lte_peak_to_peak: np.ndarray, edge_share: np.ndarray,
+                   lte_limit: float = LTE_LIMIT) -> np.ndarray:
+    """Where an LTE spread is the tooth pairs' own transfer of a quiet mesh, not a sign of
+    edge contact or lost contact: no edge share and the LTE p-p within the ``lte`` limit.
+
+    The LTE-spread check (peak-to-peak / mean above :data:`LTE_SPREAD_LIMIT`) reads a swing
+    that large as edge contact or loss of contact over part of the cycle. Just above the
+    torque where it starts (the mean LTE equal to the unloaded TE's p-p) a localised
+    bearing of a small pinion hands the load over with a p-p of the order of its mean
+    whatever the contact does: a hypoid 5x42 at 10 % of its design torque, LTE p-p 35 µrad
+    = 0.53 × its mean 66 µrad, no segment on an edge, its unloaded TE p-p 31 µrad
+    (docs/own_gear_set.md, "unseen (4)"). Such a torque is no implausible result and no
+    noisy gear: :func:`plausibility_flags` does not flag it, and the verdict, the
+    development's objective and its outcome read the same rule.
+
+    Parameters
+    ----------
+    lte_peak_to_peak : ndarray (n,) — [µrad] LTE p-p per torque (or duty-cycle bin)
+    edge_share : ndarray (n,) — [1] share of the torque on edge segments at the same
+        torques (NaN read as 0)
+    lte_limit : float — [µrad] the ``lte`` check's limit (:data:`LTE_LIMIT`)
+
+    Returns
+    -------
+    ndarray (n,) of bool
+        True where the edge share is below :data:`EDGE_SHARE_MIN` and the LTE p-p is
+        finite and at most ``lte_limit``.
+
+    Notes
+    -----
+    Source: the check's own reading of the cause (module docstring: "edge contact or loss
+    of contact over part of the mesh cycle") and issue 71's quiet-mesh criterion
+    (:data:`LTE_LIMIT`).
+    """
+    pp = np.asarray(lte_peak_to_peak, float)
+    edge = np.nan_to_num(np.asarray(edge_share, float))
+    with np.errstate(invalid="ignore"):
+        return (edge < EDGE_SHARE_MIN) & np.isfinite(pp) & (pp <= lte_limit)
+
+
+def plausibility_flags(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> dict[str, np.ndarray]:
     """The result causes of the module docstring, per torque.
 
     Parameters
@@ -111,12 +180,17 @@ def plausibility_flags(ltca: xr.Dataset) -> dict[str, np.ndarray]:
     ltca : xarray.Dataset
         The ``/ltca`` dataset of an analysis (:func:`contact.ltca.loaded_tca`). Files
         written before a variable existed simply skip its check (all False).
+    lte_limit : float — [µrad] the LTE p-p bound of a quiet transfer
+        (:func:`quiet_transfer`; default :data:`LTE_LIMIT`, the verdict's ``lte`` limit)
 
     Returns
     -------
     dict of str to ndarray of bool, shape (torque,)
         ``plastic_contact``, ``flank_above_limit``, ``lte_spread`` (the first three of
-        :data:`CAUSES`): True at the torques where the cause occurs.
+        :data:`CAUSES`): True at the torques where the cause occurs. ``lte_spread`` is
+        False at a quiet transfer (:func:`quiet_transfer`; the edge share from the
+        segments' forces, :func:`contact.ltca.summary.edge_load_share`: without them,
+        not known quiet).
 
     Notes
     -----
@@ -139,11 +213,16 @@ def plausibility_flags(ltca: xr.Dataset) -> dict[str, np.ndarray]:
         ute_pp = float(np.nanmax(ute) - np.nanmin(ute)) if np.any(np.isfinite(ute)) else 0.0
         with np.errstate(invalid="ignore", divide="ignore"):
             ratio = pp / mean
-        out["lte_spread"] = (mean > ute_pp) & (ratio > LTE_SPREAD_LIMIT)
+        spread = (mean > ute_pp) & (ratio > LTE_SPREAD_LIMIT)
+        if np.any(spread) and {"force", "moment_arm", "segment_kind"} <= set(ltca.variables):
+            from contact.ltca.summary import edge_load_share
+
+            spread &= ~quiet_transfer(pp, edge_load_share(ltca), lte_limit)
+        out["lte_spread"] = spread
     return out
 
 
-def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
+def plausibility_warnings(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> list[str]:
     """The causes for which a loaded TCA is implausible, one sentence each.
 
     Parameters
@@ -151,6 +230,8 @@ def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
     ltca : xarray.Dataset
         The ``/ltca`` dataset of an analysis (:func:`contact.ltca.loaded_tca`). Files
         written before a variable existed simply skip its check.
+    lte_limit : float — [µrad] the LTE p-p bound of a quiet transfer, which is not a cause
+        (:func:`plausibility_flags`)
 
     Returns
     -------
@@ -166,7 +247,7 @@ def plausibility_warnings(ltca: xr.Dataset) -> list[str]:
     cause).
     """
     out = []
-    flags = plausibility_flags(ltca)
+    flags = plausibility_flags(ltca, lte_limit)
     torque = np.asarray(ltca["torque"].values, float)
     bad = flags["plastic_contact"]
     if np.any(bad):

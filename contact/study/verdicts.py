@@ -23,8 +23,9 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   :func:`contact.ltca.plausibility.plausibility_warnings`, and a misalignment beyond the
   blanks' plausible range (:func:`contact.ltca.plausibility.misalignment_warnings`, from
   the case and misalignment the tree records). An LTE spread without edge contact and
-  with the LTE p-p within ``lte_limit`` at every flagged torque is an attention instead
-  (:func:`quiet_transfer`: a quiet mesh's own transfer, not a lost contact).
+  with the LTE p-p within ``lte_limit`` is no cause there (:func:`quiet_transfer`: a
+  quiet mesh's own transfer, not a lost contact), so neither ``ltca run``'s WARNING nor
+  the verdict names it.
 * ``flank_pressure`` : the flank peak pressure against the allowable contact stress
   number σ_Hlim of the weaker member's material at ISO 6336-5 grade :data:`GRADE`
   (:func:`contact.load_capacity.durability.sn_curves`, ``geometry/core/data/materials.toml``):
@@ -83,8 +84,9 @@ static strength (docs/verdicts.md, "Findings a reader trusts").
   below 1 the peak bin is beyond the endurance limit and the Miner damage, not the factor,
   decides the life.
 * ``implausible`` (fail): bins whose ``plausibility`` flag holds a cause ``ltca run``
-  warns of (as every study point); an LTE spread whose bins all read as
-  :func:`quiet_transfer` an attention.
+  warns of (as every study point, whose flag leaves out a quiet transfer); an LTE spread
+  of a file written before that, whose bins all read as :func:`quiet_transfer`, an
+  attention.
 * ``static`` (fail): a flank pressure above the static strength (the dataset's
   ``contact_static_limit_exceeded``).
 * ``edge_contact``, ``certification`` (attention): bins with edge contact or
@@ -108,8 +110,9 @@ Finding     one finding: severity, check, reason
 Verdict     the findings of one result and its overall severity
 verdict     the verdict of an analysis tree, a duty cycle or a V-H check
 CHECKS      the checks of each kind of result
-LTE_LIMIT   the ``lte`` check's default limit [µrad]
-quiet_transfer  where an LTE spread is a quiet mesh's own transfer (attention, not FAIL)
+LTE_LIMIT   the ``lte`` check's default limit [µrad] (contact.ltca.plausibility's)
+quiet_transfer  where an LTE spread is a quiet mesh's own transfer (no cause;
+            :func:`contact.ltca.plausibility.quiet_transfer`)
 """
 
 from __future__ import annotations
@@ -122,7 +125,13 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
-from contact.ltca.plausibility import PLASTIC_SHARE_LIMIT, plausibility_warnings
+from contact.ltca.plausibility import (
+    EDGE_SHARE_MIN,
+    LTE_LIMIT,
+    PLASTIC_SHARE_LIMIT,
+    plausibility_warnings,
+    quiet_transfer,
+)
 from geometry.core.errors import InputError
 
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
@@ -141,22 +150,7 @@ GRADE = "MQ"
 SCUFFING_MIN = 1.0
 MICROPITTING_MIN = 1.0
 
-#: [1] least share of the torque (Σ F·arm over the mesh cycle) an edge must carry to be a
-#: finding: 0.05 %, a fortieth of what one loaded segment carries on average (the default
-#: analysis' 24 segments on each of two loaded contact curves: 1/48 ≈ 2.1 %). The load of
-#: the segment where a pattern ends depends on where in that segment the end falls, so a
-#: smaller share is the discretisation's, not the design's (docs/verdicts.md)
-EDGE_SHARE_MIN = 5e-4
 
-#: [µrad] largest loaded transmission error peak-to-peak at a torque up to the design
-#: torque before the ``lte`` check finds it (attention): issue 71's criterion of a gear
-#: one would release ("LTE p-p ≤ 60 µrad at every torque"), above the development's own
-#: target of 40 µrad (contact.optimize.development.DevelopmentTargets.max_lte) by the
-#: margin between a coarse development analysis and ``ltca run``'s sampling. No published
-#: limit for hypoid and spiral bevel sets was found (an NVH target is the vehicle maker's);
-#: the designs of docs/own_gear_set.md that meet every other criterion run at 13-52 µrad,
-#: the bundled default case at 15-23 µrad. Overridden by ``verdict(..., lte_limit=)``
-LTE_LIMIT = 60.0
 
 #: the order of the checks within one severity: what makes the other numbers meaningless
 #: first (no solution, an implausible contact), then the load capacity (a gear set too
@@ -442,70 +436,12 @@ def _certification(lt: xr.Dataset) -> list[Finding]:
                     "(their numbers are not certified; /ltca/status)")]
 
 
-def quiet_transfer(lte_peak_to_peak: np.ndarray, edge_share: np.ndarray,
-                   lte_limit: float = LTE_LIMIT) -> np.ndarray:
-    """Where an LTE spread is the tooth pairs' own transfer of a quiet mesh, not a sign of
-    edge contact or lost contact: no edge share and the LTE p-p within the ``lte`` limit.
-
-    The plausibility check's LTE spread (peak-to-peak / mean above 0.5,
-    :mod:`contact.ltca.plausibility`) reads a swing that large as edge contact or loss of
-    contact over part of the cycle. Just above the torque where it starts (the mean LTE
-    equal to the unloaded TE's p-p) a localised bearing of a small pinion hands the load
-    over with a p-p of the order of its mean whatever the contact does: a hypoid 5x42 at
-    10 % of its design torque, LTE p-p 35 µrad = 0.53 × its mean 66 µrad, no segment on an
-    edge, its unloaded TE p-p 31 µrad (docs/own_gear_set.md, "unseen (4)"). Such a torque
-    is no implausible result and no noisy gear; the verdict says so as an attention, and
-    FAILs only where the spread comes with edge contact or an LTE p-p above the limit.
-
-    Parameters
-    ----------
-    lte_peak_to_peak : ndarray (n,) — [µrad] LTE p-p per torque (or duty-cycle bin)
-    edge_share : ndarray (n,) — [1] share of the torque on edge segments at the same
-        torques (NaN read as 0)
-    lte_limit : float — [µrad] the ``lte`` check's limit (:data:`LTE_LIMIT`)
-
-    Returns
-    -------
-    ndarray (n,) of bool
-        True where the edge share is below :data:`EDGE_SHARE_MIN` and the LTE p-p is
-        finite and at most ``lte_limit``.
-
-    Notes
-    -----
-    Source: the plausibility check's own reading of the cause (module docstring of
-    :mod:`contact.ltca.plausibility`: "edge contact or loss of contact over part of the
-    mesh cycle") and issue 71's quiet-mesh criterion (:data:`LTE_LIMIT`).
-    """
-    pp = np.asarray(lte_peak_to_peak, float)
-    edge = np.nan_to_num(np.asarray(edge_share, float))
-    with np.errstate(invalid="ignore"):
-        return (edge < EDGE_SHARE_MIN) & np.isfinite(pp) & (pp <= lte_limit)
-
-
 def _implausible(lt: xr.Dataset, lte_limit: float) -> list[Finding]:
-    """The plausibility warnings of ``lt`` as FAIL findings, except an LTE spread that
-    :func:`quiet_transfer` reads as a quiet mesh's own transfer at every flagged torque:
-    an attention."""
-    from contact.ltca.plausibility import plausibility_flags
-
-    texts = plausibility_warnings(lt)
-    quiet = False
-    if any(text.startswith("LTE spread") for text in texts):  # its flags read only then
-        flagged = plausibility_flags(lt)["lte_spread"]
-        shares = _edge_shares(lt)  # none without the segments' forces: not known quiet
-        quiet = bool(shares) and bool(np.all(quiet_transfer(
-            lt["lte_peak_to_peak"].values, sum(shares.values()), lte_limit)[flagged]))
-    out = []
-    for text in texts:
-        if quiet and text.startswith("LTE spread"):
-            out.append(Finding("attention", "implausible", text.split("; a mesh that")[0]
-                               + f": no edge contact and the LTE p-p within "
-                               f"{lte_limit:g} urad, the tooth pairs' own transfer of a "
-                               "localised bearing near its lightest load, not a loss of "
-                               "contact"))
-        else:
-            out.append(Finding("fail", "implausible", text))
-    return out
+    """The plausibility warnings of ``lt`` as FAIL findings: an LTE spread that is a quiet
+    mesh's own transfer (:func:`contact.ltca.plausibility.quiet_transfer`, the LTE p-p
+    within ``lte_limit``) is no warning, as ``ltca run`` prints them."""
+    return [Finding("fail", "implausible", text)
+            for text in plausibility_warnings(lt, lte_limit)]
 
 
 def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Finding]:
