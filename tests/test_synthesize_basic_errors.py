@@ -185,3 +185,64 @@ def test_capacity_note_shows_the_torque_above_the_capacity(monkeypatch):
     # at or below the capacity (its own round-off 1e-6 over it included): no note
     assert _above_capacity_note(object(), 264.9559) is None
     assert _above_capacity_note(object(), 264.9559005774426 * (1 + 5e-7)) is None
+
+
+_NEAR_MITER = """name = "near_miter_uncut"
+source = "spiral bevel 19x23, de2 140 mm, b2 24 mm, beta_m 46 deg, rc0 76.2 mm, Formate gear"
+
+[design]
+method = 0
+Sigma = 90.0
+a = 0.0
+z1 = 19
+z2 = 23
+de2 = 140.0
+b2 = 24.0
+beta_m = 46.0
+rc0 = 76.2
+alpha_dD = 20.0
+alpha_dC = 20.0
+f_alim = 1.0
+c_ham = 0.25
+k_d = {k_d}
+k_c = 0.125
+k_t = 0.1
+backlash = "j_et2"
+backlash_value = 0.1
+theta_a2 = 1.0
+theta_f2 = 4.0
+hand = "left"
+
+[synthesis]
+gear_process = "Formate"
+
+[synthesis.concave]
+root_relief = 46.0
+relief_start = 0.485
+"""
+
+
+def test_uncut_root_line_names_the_fields_that_cut_it(tmp_path, capsys):
+    """A pinion flank whose root line its blade does not generate (step 8, the tip plane:
+    no tip height places it) — the spiral bevel 19x23 at beta_m 46 deg with the root
+    relief a development gave it (46 um from 0.485 of the way, the blade's toprem; issue
+    71, unseen (4) and (8)): rc 2, the error naming the flank, the basic-file fields
+    ``synthesis.concave.root_relief`` and ``design.k_d`` with their values and accepted
+    ranges. The independent check that they are the levers: the same file with the depth
+    factor the error names lowered (k_d 2.0 -> 1.8) synthesises (so does root relief 30 or
+    15 um, measured: uncut_root_remedy's notes)."""
+    uncut = tmp_path / "uncut.toml"
+    uncut.write_text(_NEAR_MITER.format(k_d=2.0), encoding="utf-8")
+    rc = main(["synthesize", str(uncut), "--no-development", "-o", str(tmp_path / "a.toml")])
+    err = capsys.readouterr().err
+    assert rc == 2
+    assert "its root line is not generated" in err
+    assert "the pinion concave flank" in err
+    assert "synthesis.concave.root_relief (now 46 um, accepted 0 to 200 um" in err
+    assert "design.k_d 2 (the depth factor" in err and "accepted (0, 4]" in err
+    shallower = tmp_path / "shallower.toml"
+    shallower.write_text(_NEAR_MITER.format(k_d=1.8), encoding="utf-8")
+    rc = main(["synthesize", str(shallower), "--no-development", "-o",
+               str(tmp_path / "b.toml")])
+    assert rc == 0, capsys.readouterr().err
+    assert (tmp_path / "b.toml").exists()
