@@ -246,3 +246,29 @@ def test_uncut_root_line_names_the_fields_that_cut_it(tmp_path, capsys):
                str(tmp_path / "b.toml")])
     assert rc == 0, capsys.readouterr().err
     assert (tmp_path / "b.toml").exists()
+
+
+def test_gear_process_note_says_which_gear_auto_kept():
+    """``ltca synthesize`` prints the development's gear-process choice (before: only in the
+    case's ``source``), and where the Formate gear was kept below the pitch-angle limit
+    (the miter 20x20 of issue 71's unseen (8): delta2 45 deg, LTE 855 urad) says so with
+    delta2 and the field that forces the generated gear; nothing without a choice made."""
+    import math
+    from types import SimpleNamespace as NS
+
+    from contact.commands.synthesize import gear_process_note
+    from geometry.synthesis.case_synthesis import FORMATE_PITCH_ANGLE_LIMIT
+
+    def case(process, delta2):
+        return NS(gear=NS(process=process, blank=NS(pitch_angle=math.radians(delta2))))
+
+    dev = NS(gear_process_text="Gear process (auto): Formate. Kept.")
+    note = gear_process_note(dev, case("Formate", 45.0))
+    assert note.startswith("Gear process (auto): Formate. Kept. ")
+    assert (f"delta2 45.0 deg is below about {FORMATE_PITCH_ANGLE_LIMIT:g} deg" in note
+            and "gear_process 'Generate'" in note)
+    # above the limit, or a generated gear kept: the development's text alone
+    assert gear_process_note(dev, case("Formate", 71.0)) == dev.gear_process_text
+    assert gear_process_note(dev, case("Generate", 45.0)) == dev.gear_process_text
+    assert gear_process_note(NS(gear_process_text=""), case("Formate", 45.0)) is None
+    assert gear_process_note(None, case("Formate", 45.0)) is None
