@@ -182,6 +182,8 @@ def gear_process_note(development, case) -> str | None:
     Found on a spiral bevel miter 20x20 (issue 71, unseen (8)): "auto" kept the Formate gear
     at delta2 45 deg (design torque 49.4 of 309.1 N m, LTE p-p 855 urad; the generated
     gear's development stopped at 19.6 N m), and the command's output said nothing of it.
+    The same file with ``gear_process = "Generate"`` is no better: 19.6 N m, LTE p-p
+    309 urad, root stress not computed (docs/own_gear_set.md, "unseen (8)").
     """
     from geometry.synthesis.case_synthesis import FORMATE_PITCH_ANGLE_LIMIT
 
@@ -193,8 +195,10 @@ def gear_process_note(development, case) -> str | None:
     if gear.process == "Formate" and delta2 < FORMATE_PITCH_ANGLE_LIMIT:
         text += (f" The Formate gear's pitch angle delta2 {delta2:.1f} deg is below about "
                  f"{FORMATE_PITCH_ANGLE_LIMIT:g} deg, where its deep working depth lies beyond "
-                 "the surface of action: gear_process 'Generate' forces the generated gear "
-                 "(docs/synthesis.md, 'Known limits').")
+                 "the surface of action; a higher ratio, a larger shaft angle or a smaller "
+                 "c_ham moves it within reach, and gear_process 'Generate' forces the "
+                 "generated gear, whose outcome is said above (docs/synthesis.md, 'Known "
+                 "limits').")
     return text
 
 
