@@ -1754,6 +1754,31 @@ def test_checked_best_goes_on_down_the_ranking_where_none_of_the_best_can_be_wri
     assert any("check of design 4" in line for line in lines)
 
 
+def test_checked_best_says_where_no_design_of_the_ranking_can_be_written(monkeypatch):
+    """Where none of the ranked designs can be written (every tip plane refused), the
+    progress says so in one line naming how many were tried (the written synthesis then
+    stops at the tip plane's error, which names the basic-file fields: issue 71, unseen
+    (8); tests/test_synthesize_basic_errors.py), and the coarse search's best is returned
+    unchecked as before."""
+    targets = DevelopmentTargets()
+    evals = [_fake_design(i, {"path_angle": -45.0 - i, "root_relief": 0.0}, 0.5 * i)
+             for i in range(4)]
+
+    def placed(values):
+        raise InputError("outside blade: its root line is not generated")
+
+    monkeypatch.setattr(dcheck.evaluation, "analyse_design",
+                        lambda case, torques, **kw: (_metrics(), (0.0, 1.0, 0.0, 1.0,
+                                                                  math.inf)))
+    lines: list[str] = []
+    best = dcheck.checked_best(evals, targets, {"torques": [10.0, 100.0], "centre_v": 0.6},
+                               None, lines.append, placed)
+    assert not best.checked
+    assert lines == ["  none of the 4 best designs could be written (the pinion's root line "
+                     "not generated at any tip height or root relief, or their analysis "
+                     "failed)"]
+
+
 def test_cut_variant_on_the_19x23_whose_relief_stage_went_beyond_the_blade():
     """The spiral bevel 19x23 at β_m 46° (benchmarks/data/unseen_designs, Formate gear,
     δ2 50.4°): the relief stage's design (root relief 46.2 µm from 0.485 of the way,

@@ -185,3 +185,90 @@ def test_capacity_note_shows_the_torque_above_the_capacity(monkeypatch):
     # at or below the capacity (its own round-off 1e-6 over it included): no note
     assert _above_capacity_note(object(), 264.9559) is None
     assert _above_capacity_note(object(), 264.9559005774426 * (1 + 5e-7)) is None
+
+
+_NEAR_MITER = """name = "near_miter_uncut"
+source = "spiral bevel 19x23, de2 140 mm, b2 24 mm, beta_m 46 deg, rc0 76.2 mm, Formate gear"
+
+[design]
+method = 0
+Sigma = 90.0
+a = 0.0
+z1 = 19
+z2 = 23
+de2 = 140.0
+b2 = 24.0
+beta_m = 46.0
+rc0 = 76.2
+alpha_dD = 20.0
+alpha_dC = 20.0
+f_alim = 1.0
+c_ham = 0.25
+k_d = {k_d}
+k_c = 0.125
+k_t = 0.1
+backlash = "j_et2"
+backlash_value = 0.1
+theta_a2 = 1.0
+theta_f2 = 4.0
+hand = "left"
+
+[synthesis]
+gear_process = "Formate"
+
+[synthesis.concave]
+root_relief = 46.0
+relief_start = 0.485
+"""
+
+
+def test_uncut_root_line_names_the_fields_that_cut_it(tmp_path, capsys):
+    """A pinion flank whose root line its blade does not generate (step 8, the tip plane:
+    no tip height places it) — the spiral bevel 19x23 at beta_m 46 deg with the root
+    relief a development gave it (46 um from 0.485 of the way, the blade's toprem; issue
+    71, unseen (4) and (8)): rc 2, the error naming the flank, the basic-file fields
+    ``synthesis.concave.root_relief`` and ``design.k_d`` with their values and accepted
+    ranges. The independent check that they are the levers: the same file with the depth
+    factor the error names lowered (k_d 2.0 -> 1.8) synthesises (so does root relief 30 or
+    15 um, measured: uncut_root_remedy's notes)."""
+    uncut = tmp_path / "uncut.toml"
+    uncut.write_text(_NEAR_MITER.format(k_d=2.0), encoding="utf-8")
+    rc = main(["synthesize", str(uncut), "--no-development", "-o", str(tmp_path / "a.toml")])
+    err = capsys.readouterr().err
+    assert rc == 2
+    assert "its root line is not generated" in err
+    assert "the pinion concave flank" in err
+    assert "synthesis.concave.root_relief (now 46 um, accepted 0 to 200 um" in err
+    assert "design.k_d 2 (the depth factor" in err and "accepted (0, 4]" in err
+    shallower = tmp_path / "shallower.toml"
+    shallower.write_text(_NEAR_MITER.format(k_d=1.8), encoding="utf-8")
+    rc = main(["synthesize", str(shallower), "--no-development", "-o",
+               str(tmp_path / "b.toml")])
+    assert rc == 0, capsys.readouterr().err
+    assert (tmp_path / "b.toml").exists()
+
+
+def test_gear_process_note_says_which_gear_auto_kept():
+    """``ltca synthesize`` prints the development's gear-process choice (before: only in the
+    case's ``source``), and where the Formate gear was kept below the pitch-angle limit
+    (the miter 20x20 of issue 71's unseen (8): delta2 45 deg, LTE 855 urad) says so with
+    delta2 and the field that forces the generated gear; nothing without a choice made."""
+    import math
+    from types import SimpleNamespace as NS
+
+    from contact.commands.synthesize import gear_process_note
+    from geometry.synthesis.case_synthesis import FORMATE_PITCH_ANGLE_LIMIT
+
+    def case(process, delta2):
+        return NS(gear=NS(process=process, blank=NS(pitch_angle=math.radians(delta2))))
+
+    dev = NS(gear_process_text="Gear process (auto): Formate. Kept.")
+    note = gear_process_note(dev, case("Formate", 45.0))
+    assert note.startswith("Gear process (auto): Formate. Kept. ")
+    assert (f"delta2 45.0 deg is below about {FORMATE_PITCH_ANGLE_LIMIT:g} deg" in note
+            and "gear_process 'Generate'" in note)
+    # above the limit, or a generated gear kept: the development's text alone
+    assert gear_process_note(dev, case("Formate", 71.0)) == dev.gear_process_text
+    assert gear_process_note(dev, case("Generate", 45.0)) == dev.gear_process_text
+    assert gear_process_note(NS(gear_process_text=""), case("Formate", 45.0)) is None
+    assert gear_process_note(None, case("Formate", 45.0)) is None

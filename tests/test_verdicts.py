@@ -284,6 +284,14 @@ def test_a_duty_cycle_lte_spread_says_its_numbers():
             "0.0 % (no edge contact: the LTE p-p of the tooth pairs' transfer)") in f.reason
     assert f.reason.endswith("bin 1 at 500 N m: LTE p-p 120 urad, 0.60 times its mean "
                              "200 urad, edge share 2.0 %")
+    # a ratio just above 0.5 is said with the decimals that show it above (the instrument
+    # spiral bevel 16x48's bin 0 of issue 71's unseen (8): 40.61 / 80.54 = 0.504 read
+    # "0.50 times its mean", the limit itself)
+    just = _duty().assign(plausibility=("bin", np.array([4, 0], np.int8)),
+                          lte_peak_to_peak=("bin", [40.61, 34.6]),
+                          lte_mean=("bin", [80.54, 149.2]), edge_load_share=("bin", [0.0, 0.0]))
+    (f,) = [f for f in verdict(just).findings if f.check == "implausible"]
+    assert "LTE p-p 41 urad, 0.504 times its mean 81 urad" in f.reason
 
 
 def test_a_quiet_lte_spread_is_attention_not_fail():

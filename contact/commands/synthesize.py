@@ -158,6 +158,50 @@ def low_overlap_lte(development) -> str:
             + ("met" if worst <= target else "missed"))
 
 
+def gear_process_note(development, case) -> str | None:
+    """``ltca synthesize``'s note on the gear process ``gear_process = "auto"`` chose after
+    developing both (the development's ``gear_process_text``, until now only in the case's
+    ``source``), with the gear pitch angle where a Formate gear was kept below
+    :data:`~geometry.synthesis.case_synthesis.FORMATE_PITCH_ANGLE_LIMIT`, whose deep working
+    depth the generated pinion does not cover (docs/synthesis.md, "Known limits").
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult or None
+    case : geometry.case.Case
+        The case written (its gear's ``process`` and blank ``pitch_angle`` [rad]).
+
+    Returns
+    -------
+    str or None
+        None where the development chose no gear process (its ``gear_process_text``
+        empty) or there was no development.
+
+    Notes
+    -----
+    Found on a spiral bevel miter 20x20 (issue 71, unseen (8)): "auto" kept the Formate gear
+    at delta2 45 deg (design torque 49.4 of 309.1 N m, LTE p-p 855 urad; the generated
+    gear's development stopped at 19.6 N m), and the command's output said nothing of it.
+    The same file with ``gear_process = "Generate"`` is no better: 19.6 N m, LTE p-p
+    309 urad, root stress not computed (docs/own_gear_set.md, "unseen (8)").
+    """
+    from geometry.synthesis.case_synthesis import FORMATE_PITCH_ANGLE_LIMIT
+
+    text = getattr(development, "gear_process_text", "") if development is not None else ""
+    if not text:
+        return None
+    gear = case.gear
+    delta2 = math.degrees(float(gear.blank.pitch_angle))
+    if gear.process == "Formate" and delta2 < FORMATE_PITCH_ANGLE_LIMIT:
+        text += (f" The Formate gear's pitch angle delta2 {delta2:.1f} deg is below about "
+                 f"{FORMATE_PITCH_ANGLE_LIMIT:g} deg, where its deep working depth lies beyond "
+                 "the surface of action; a higher ratio, a larger shaft angle or a smaller "
+                 "c_ham moves it within reach, and gear_process 'Generate' forces the "
+                 "generated gear, whose outcome is said above (docs/synthesis.md, 'Known "
+                 "limits').")
+    return text
+
+
 def _above_capacity_note(case, torque: float) -> str | None:
     """A note where the design torque the basic file gives (``[synthesis] design_torque``
     or ``[rating] design_torque``) is above the written pair's ISO 10300 long-life capacity
@@ -304,6 +348,9 @@ def run_synthesize(args: argparse.Namespace) -> int:
         print(size)
     if development is not None:
         print("  " + development.headline())
+    process = gear_process_note(development, case)
+    if process is not None:
+        print("note: " + process)
     print(f"wrote {path}")
     if ratios is not None and ratios[1] < FACE_CONTACT_RATIO_NOTE:
         # the cause and the remedy in numbers: the face width and the spiral angle that

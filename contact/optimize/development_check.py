@@ -1049,6 +1049,11 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
         for e in ranked[VERIFIED_DESIGNS:VERIFIED_DESIGNS + FALLBACK_DESIGNS]:
             if check(e) or checked:
                 break
+        if not checked:  # the written synthesis stops at the first one's tip plane, its
+            # error naming the basic-file fields that let the blade cut it (issue 71)
+            say(f"  none of the {min(len(ranked), VERIFIED_DESIGNS + FALLBACK_DESIGNS)} best "
+                f"{what}s could be written (the pinion's root line not generated at any "
+                "tip height or root relief, or their analysis failed)")
     chosen = min(checked or ranked, key=_check_rank)
     if others is not None:
         others.extend(e for e in checked if e is not chosen)

@@ -720,6 +720,8 @@ def _spread_numbers(ds: xr.Dataset, cause: str, bins: np.ndarray) -> str:
     part of the mesh cycle: an LTE spread without edge share is the tooth pairs' transfer
     itself, the LTE peak-to-peak of the design); empty for the other causes or without
     those variables."""
+    from contact.ltca.plausibility import LTE_SPREAD_LIMIT
+
     need = {"torque", "lte_peak_to_peak", "lte_mean"}
     if cause != "lte_spread" or not need <= set(ds.variables):
         return ""
@@ -729,7 +731,8 @@ def _spread_numbers(ds: xr.Dataset, cause: str, bins: np.ndarray) -> str:
     for b in bins:
         pp, mean = float(ds["lte_peak_to_peak"][b]), float(ds["lte_mean"][b])
         text = (f"bin {b} at {float(ds['torque'][b]):.4g} N m: LTE p-p {pp:.0f} urad, "
-                f"{pp / mean:.2f} times its mean {mean:.0f} urad")
+                f"{shown_above(pp / mean, LTE_SPREAD_LIMIT, 2)} times its mean "
+                f"{mean:.0f} urad")  # 0.504 flagged, not "0.50" (issue 71, unseen (8))
         if edge is not None:
             share = 100.0 * float(edge[b])
             text += (f", edge share {share:.1f} %" + (

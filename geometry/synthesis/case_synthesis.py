@@ -730,6 +730,57 @@ def _coast_in_drive_frame(coast: FlankSynthesis, drive: FlankSynthesis) -> Flank
                                             blank_phase=ct.blank_phase - dphi))
 
 
+#: the words of :func:`tip_plane_on_root_cone`'s error where no tip height places a cut's
+#: root line (the blade cannot cut the flank as prescribed)
+NOT_GENERATED_WORDS = "its root line is not generated"
+
+
+def uncut_root_remedy(flank: str, options: FlankOptions, design: Any) -> str:
+    """What in the basic file lets the blade cut a pinion flank whose root line it does
+    not generate (step 8 has no tip height for it): the sentence added to
+    :func:`tip_plane_on_root_cone`'s error.
+
+    Parameters
+    ----------
+    flank : str
+        The pinion flank, ``"concave"`` or ``"convex"``.
+    options : FlankOptions
+        Its prescriptions (``root_relief`` [mm]).
+    design : geometry.iso23509.design_data.BevelGearDesign
+        The basic data (its depth factor ``k_d``, or ``k_hap`` of depth type I).
+
+    Returns
+    -------
+    str
+        Names the fields ``synthesis.<flank>.root_relief`` (where the flank has a root
+        relief) and ``design.k_d`` (``design.k_hap``) with their values and accepted ranges.
+
+    Notes
+    -----
+    The root relief is the blade's toprem, which turns the blade below its toprem height
+    away from the fillet; the depth factor sets the working depth the blade must reach.
+    Measured on the spiral bevel 19x23 at beta_m 46 deg (Formate gear, root relief 46 um
+    from 0.485 of the way, k_d 2.0; the root line not generated at face fractions
+    0.5-1.0): root relief 30 or 15 um places it, and so does k_d 1.8; a smaller or larger
+    edge radius (0.3, 1.2 mm against 0.917), or the relief starting at 0.7, does not
+    (issue 71, unseen (8); tests/test_synthesize_basic_errors.py).
+    """
+    relief = 1e3 * options.root_relief
+    if design.k_d is not None:
+        depth = (f"design.k_d {design.k_d:g} (the depth factor: working depth k_d m_mn, "
+                 "accepted (0, 4])")
+    else:
+        depth = (f"design.k_hap {design.k_hap:g} (the addendum factor: working depth "
+                 "2 k_hap m_mn)")
+    if relief > 0.0:
+        return (f"the pinion {flank} flank's blade does not reach its root as prescribed: a "
+                f"smaller synthesis.{flank}.root_relief (now {relief:.3g} um, accepted 0 to "
+                "200 um; the development chooses it within [development.variables] "
+                f"root_relief) or a smaller {depth} lets the blade cut it")
+    return (f"the pinion {flank} flank's blade does not reach its root as prescribed (no "
+            f"root relief): a smaller {depth} lets the blade cut it")
+
+
 def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
                       memo: dict | None = None) -> FlankSynthesis:
     """Step 8: the flank's tip plane moved so that its root line touches the pinion's
@@ -745,9 +796,16 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
         # the secant from the last placement of this flank's blade (a development's
         # variants: the same tip plane within its tolerance, fewer root lines)
         last = ("tip plane last", t.blade.side)
-        placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
-                                        pair.pinion_hand,
-                                        start=None if memo is None else memo.get(last))
+        try:
+            placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
+                                            pair.pinion_hand,
+                                            start=None if memo is None else memo.get(last))
+        except InputError as err:
+            if NOT_GENERATED_WORDS not in str(err):
+                raise
+            # the fields of the basic file that let the blade cut it (issue 71)
+            remedy = uncut_root_remedy(fs.flank, fs.options, pair.geom.design)
+            raise InputError(f"{err}; {remedy}") from err
         if memo is not None:
             memo[key] = placed
             memo[last] = (placed.moved, placed.u_touch)
