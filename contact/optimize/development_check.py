@@ -15,7 +15,8 @@ the tip, then the root relief of a chosen design that meets every target but not
 mounting excursions' edges (:func:`final_tolerance` reuses its excursions for the case
 written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the verdict's
 60 µrad a longer ellipse, then a path nearer the lengthwise direction
-(:data:`COAST_LTE_STEPS`). :func:`static_capacity` lowers
+(:data:`COAST_LTE_STEPS`); :func:`checked_relief_lte` a drive design whose LTE still
+exceeds it a shallower root relief (:data:`RELIEF_LTE_FRACTIONS`). :func:`static_capacity` lowers
 the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
@@ -284,8 +285,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     height by the root relief instead (:func:`_checked_blade`); then, where its
     light-load pattern is above its depth centre's tolerance, a shorter tip relief
     (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
-    longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the long
-    bearing (:func:`checked_long`). Run again where the design torque was
+    longer ellipse (:func:`_checked_root`); where the LTE is still missed, the long
+    bearing (:func:`checked_long`); last, where the LTE still exceeds the verdict's
+    60 µrad, a shallower root relief (:func:`checked_relief_lte`). Run again where the design torque was
     lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
