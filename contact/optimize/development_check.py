@@ -280,19 +280,21 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
                 ) -> DevelopmentEvaluation:
     """The check's steps on the chosen design at the development's torques
     (``setup["torques"]``): the TE stage again (:func:`_checked_te`), then the path turned
-    towards the profile (:func:`_checked_path`), each only where the design misses its LTE or
-    length there; where it still misses a target with a blade-angle change, the height by the
-    root relief instead (:func:`_checked_blade`); then, where its light-load pattern is above
-    its depth centre's tolerance, a shorter tip relief (:func:`_checked_tip`) and, where that
-    did not centre it, the root relief with a longer ellipse (:func:`_checked_root`); where the
-    LTE is still missed, the long bearing (:func:`checked_long`); last, where the LTE still
-    exceeds the verdict's 60 µrad, a shallower root relief (:func:`checked_relief_lte`). Run
-    again where the design torque was lowered after them (to the bearing's static flank capacity
-    or its FE root-stress capacity): the light torque follows the design torque (``light_load``
-    × it), and the light-load LTE rises as the torque falls (the face-hobbed hypoid 11x43 of
-    tests/data/designs: every target met at its ISO capacity 474.2 N m, LTE 43 / 42 µrad at
-    420.2 N m after the root-stress cap, docs/own_gear_set.md). Returns the better design
-    (``best`` itself where no step scored better)."""
+    towards the profile (:func:`_checked_path`), each only where the design misses its LTE
+    or length there; where it still misses a target with a blade-angle change, the
+    height by the root relief instead (:func:`_checked_blade`); then, where its
+    light-load pattern is above its depth centre's tolerance, a shorter tip relief
+    (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
+    longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the long
+    bearing (:func:`checked_long`) and a shallower root relief where it exceeds 60 µrad
+    (:func:`checked_relief_lte`). Run again where the design torque was
+    lowered after them (to the
+    bearing's static flank capacity or its FE root-stress capacity): the light torque
+    follows the design torque (``light_load`` × it), and the light-load LTE rises as the
+    torque falls (the face-hobbed hypoid 11x43 of tests/data/designs: every target met
+    at its ISO capacity 474.2 N m, LTE 43 / 42 µrad at 420.2 N m after the root-stress
+    cap, docs/own_gear_set.md). Returns the better design (``best`` itself where no step
+    scored better)."""
     best = _checked_te(best, targets, setup, teeth, say, placed, level)
     best = _checked_path(best, targets, setup, teeth, say, placed)
     best = _checked_blade(best, targets, setup, teeth, say, placed)
