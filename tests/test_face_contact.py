@@ -10,12 +10,17 @@ import dataclasses
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from contact.load_capacity.iso10300.face_contact import (
     FACE_CONTACT_RATIO_MIN,
+    PROFILE_CONTACT_RATIO_MIN,
+    loaded_ratio_text,
+    low_ratio_text,
     overlap_remedy,
     overlap_text,
+    profile_remedy,
 )
 from geometry.core.errors import InputError
 from geometry.synthesis.basic_design import load_basic
@@ -90,9 +95,108 @@ def test_a_bad_target_is_refused(target):
 def test_synthesizes_note_threshold_is_the_modules():
     """``ltca synthesize`` keeps the number without importing the rating (its import
     light): the two must agree."""
-    from contact.commands.synthesize import FACE_CONTACT_RATIO_NOTE
+    from contact.commands.synthesize import FACE_CONTACT_RATIO_NOTE, PROFILE_CONTACT_RATIO_NOTE
 
     assert FACE_CONTACT_RATIO_NOTE == FACE_CONTACT_RATIO_MIN
+    assert PROFILE_CONTACT_RATIO_NOTE == PROFILE_CONTACT_RATIO_MIN
+
+
+def _eps_va(design) -> float:
+    """ε_vα = g_vα / p_vet (ISO 10300-1 A.2) by hand from the virtual gears' own path of
+    contact and transverse base pitch: the formula, not the module's chain."""
+    from contact.load_capacity.iso10300.inputs import gear_data_from_blank
+    from contact.load_capacity.iso10300.virtual_gears import virtual_gears
+    from geometry.iso23509.blank import blank_geometry
+
+    vg = virtual_gears(gear_data_from_blank(blank_geometry(design)))
+    return vg.g_va / vg.p_vet
+
+
+def test_the_19x23s_depth_factor_and_pressure_angle_reach_a_profile_ratio_of_1():
+    """The spiral bevel 19x23 at β_m 46° of benchmarks/data/unseen_designs (ε_vα 0.976,
+    ε_vβ 1.27: the spiral angle that raised its face contact ratio lowered its profile
+    contact ratio below 1): at the depth factor and at the drive pressure angle returned,
+    ε_vα by hand is 1 to the root-find's tolerance (1e-3 in k_d or α_dD moves ε_vα by
+    < 5e-4); k_d 2.05 is just short and 2.06 beyond, α_dD 19.0° short and 18.9° beyond
+    (bracketing the roots independently). The sentence gives both, k_d rounded up to
+    0.01 and α_dD down to 0.1° (each then reaches 1), and no face-width remedy (ε_vβ
+    meets 1.25)."""
+    design = load_basic(ROOT / "benchmarks" / "data" / "unseen_designs"
+                        / "spiral_bevel_19x23_b46.toml").design
+    r = profile_remedy(design)
+    assert r.eps_va == pytest.approx(_eps_va(design), rel=1e-12)
+    assert r.eps_va == pytest.approx(0.976, abs=1e-3)
+    assert (r.k_d, r.alpha_d) == (2.0, pytest.approx(20.0, abs=1e-12))
+    assert 2.05 < r.k_d_needed < 2.06 and 18.9 < r.alpha_d_needed < 19.0
+    assert _eps_va(dataclasses.replace(design, k_d=2.05)) < 1.0
+    assert _eps_va(dataclasses.replace(design, k_d=2.06)) > 1.0
+    assert _eps_va(dataclasses.replace(design, alpha_dD=math.radians(19.0))) < 1.0
+    assert _eps_va(dataclasses.replace(design, alpha_dD=math.radians(18.9))) > 1.0
+    assert _eps_va(dataclasses.replace(design, k_d=r.k_d_needed)) == pytest.approx(1.0,
+                                                                                    abs=5e-4)
+    text = low_ratio_text(design)
+    assert text.startswith("profile contact ratio eps_va 0.98 is below 1")
+    assert "a depth factor k_d of 2.06 (now 2, above the usual 2)" in text
+    assert "a drive pressure angle alpha_dD of 18.9 deg (now 20)" in text
+    assert "eps_vb" not in text
+
+
+def test_both_low_ratios_are_said_and_neither_where_both_meet_their_limits():
+    """The 17x29 at Σ 100° (ε_vβ 0.96, ε_vα 1.20): the face contact ratio's sentence
+    alone (overlap_text's, word for word); the hypoid 10x43 (ε_vβ 1.44, ε_vα 1.03): its
+    own values, no sentence."""
+    design = load_basic(DESIGNS / "spiral_bevel_17x29_s100_m0.toml").design
+    assert profile_remedy(design).eps_va > PROFILE_CONTACT_RATIO_MIN
+    assert low_ratio_text(design) == overlap_text(design)
+    design = load_basic(DESIGNS / "pc_hypoid_10x43.toml").design
+    r = profile_remedy(design)
+    assert (r.k_d_needed, r.alpha_d_needed) == (r.k_d, r.alpha_d)
+    assert low_ratio_text(design) is None
+    with pytest.raises(InputError, match="target"):
+        profile_remedy(design, 0.0)
+
+
+def test_the_loaded_contact_ratio_is_the_mean_of_the_pairs_in_contact():
+    """loaded_ratio_text: the mean of the pairs over the cycle and the share of the rolls
+    with one pair (hand-counted: 1, 1, 1, 2 → 1.25, 75 %), each ratio below its limit
+    said so, NaN rolls left out; without a rating only the loaded ratio."""
+    text = loaded_ratio_text(0.98, 1.27, [1, 1, 1, 2, np.nan])
+    assert text == ("contact ratios eps_va 0.98 (below 1), eps_vb 1.27, total 2.25 (ISO "
+                    "10300-1); loaded contact ratio 1.25 (the mean of the tooth pairs "
+                    "carrying load, one pair alone over 75 % of the mesh cycle)")
+    assert "eps_vb 1.14 (below 1.25)" in loaded_ratio_text(1.11, 1.14, [2, 3])
+    assert loaded_ratio_text(math.nan, math.nan, [2, 2]).startswith("loaded contact ratio 2.00")
+
+
+def test_an_lte_finding_names_the_contact_ratios_and_the_remedy():
+    """``ltca run``'s ``lte`` finding gives the rating's ε_vα, ε_vβ and the LTCA's loaded
+    contact ratio at its torque; under an ATTENTION verdict with an ``lte`` finding the
+    next step is the basic-file remedy of the case's low ratios (ISO/TR sample 3, ε_vβ
+    0.86), none for a case whose ratios meet their limits (sample 2)."""
+    import xarray as xr
+
+    from contact.commands.run import next_steps
+    from contact.study.verdicts import verdict
+    from geometry.case import load_case
+
+    lt = xr.Dataset({"lte_peak_to_peak": ("torque", [100.0, 30.0]),
+                     "pairs_in_contact": (("torque", "roll"), [[1, 1, 1, 2], [2, 2, 2, 2]])},
+                    coords={"torque": [50.0, 500.0]})
+    rating = xr.Dataset({"eps_va": ((), 1.2), "eps_vb": ((), 0.96)})
+    tree = xr.DataTree.from_dict({"/ltca": lt, "/rating": rating})
+    v = verdict(tree)
+    lte = [f for f in v.findings if f.check == "lte"]
+    assert v.severity == "attention" and len(lte) == 1
+    assert lte[0].reason.endswith(
+        "; contact ratios eps_va 1.20, eps_vb 0.96 (below 1.25), total 2.16 (ISO 10300-1); "
+        "loaded contact ratio 1.25 (the mean of the tooth pairs carrying load, one pair "
+        "alone over 75 % of the mesh cycle)")
+    low = next_steps(tree, load_case(ROOT / "cases" / "iso10300_30_sample3.toml"), "c.toml",
+                     None)
+    assert len(low) == 1 and low[0].startswith("  next, the LTE is the design's: face "
+                                               "contact ratio eps_vb 0.86 is below 1.25")
+    assert next_steps(tree, load_case(ROOT / "cases" / "iso10300_30_sample2.toml"),
+                      "c.toml", None) == []
 
 
 def test_the_next_step_of_an_lte_spread_names_the_overlap():
@@ -177,7 +281,7 @@ def test_synthesizes_note_gives_the_developed_lte_in_numbers():
     text = low_overlap_lte(dev)
     assert text == ("the developed bearing's LTE p-p: drive 28/50 urad at 28.8/192 N m, "
                     "coast 67/62 urad at 28.8/119 N m (light/design), the development's "
-                    "target 40 urad missed")
+                    "target 40 urad missed, above the verdict's 60 urad")
     dev.coast = None
     dev.best.metrics["lte_peak_to_peak"] = np.array([30.0, 38.0])
     assert low_overlap_lte(dev).endswith("drive 30/38 urad at 28.8/192 N m (light/design), "

@@ -150,33 +150,37 @@ def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[
             [f"    ltca rate {shown} --torque {torques}"] if rate else [])
 
 
-def overlap_lines(case) -> list[str]:
-    """The next-step line of an LTE-spread FAIL whose cause is the design's own low face
-    contact ratio: ε_vβ below 1.25 and the face width and spiral angle that reach it
-    (:func:`contact.load_capacity.iso10300.face_contact.overlap_text`); a bearing change
+def overlap_lines(case, what: str = "the LTE spread") -> list[str]:
+    """The next-step line of an LTE finding (the LTE-spread FAIL, or ``ltca run``'s ``lte``
+    attention) whose cause is the design's own low contact ratios: ε_vβ below 1.25 and the
+    face width and spiral angle that reach it, ε_vα below 1 and the depth factor and
+    pressure angle that reach it
+    (:func:`contact.load_capacity.iso10300.face_contact.low_ratio_text`); a bearing change
     offsets it only in part (docs/own_gear_set.md, "A face contact ratio below 1.25").
-    Empty where the case has no ``[design]`` table or its ε_vβ meets 1.25.
+    Empty where the case has no ``[design]`` table or both ratios meet their limits.
 
     Parameters
     ----------
     case : geometry.case.Case
+    what : str
+        The finding named: ``"the LTE spread"`` (default) or ``"the LTE"``.
 
     Returns
     -------
     list of str
     """
     from contact.load_capacity.design_table import design_blank, design_table
-    from contact.load_capacity.iso10300.face_contact import overlap_text
+    from contact.load_capacity.iso10300.face_contact import low_ratio_text
     from geometry.core.errors import InputError
 
     try:
         design = design_blank(design_table(case, "")).design
     except (InputError, KeyError, ValueError, AttributeError):
         return []
-    said = overlap_text(design)
+    said = low_ratio_text(design)
     if said is None:
         return []
-    return [f"  next, the LTE spread is the design's: {said}; synthesise the basic file again "
+    return [f"  next, {what} is the design's: {said}; synthesise the basic file again "
             "with it (ltca synthesize BASIC.toml)"]
 
 

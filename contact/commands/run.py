@@ -444,8 +444,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     too small for its load (a failed rating, or a flank pressure above its static
     strength: no bearing change answers that); a scuffing finding the oil, inlet temperature
     and roughness it depends on (ISO/TS 6336-20: the flash temperature and the oil's
-    scuffing temperature), as the same run with those options. Nothing for a verdict
-    that is not FAIL.
+    scuffing temperature), as the same run with those options. For a verdict that is not
+    FAIL only an ``lte`` finding's basic-file remedy where the design's contact ratios are
+    below their limits (:func:`contact.commands.next_steps.overlap_lines`), else nothing.
 
     Parameters
     ----------
@@ -468,6 +469,12 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
 
     v = verdict(tree)
     if v.severity != "fail":
+        # an LTE above the verdict's limit whose cause is the design's low contact ratios:
+        # the basic-file change that raises them (issue 71)
+        if any(f.check == "lte" for f in v.findings):
+            from contact.commands.next_steps import overlap_lines
+
+            return overlap_lines(case, "the LTE")
         return []
     failed = {f.check for f in v.findings}
     shown = case_arg if case_arg is not None else case.name

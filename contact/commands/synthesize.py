@@ -110,6 +110,11 @@ def write_text_atomic(path: Path, text: str) -> Path:
 #: same number as :data:`contact.load_capacity.iso10300.face_contact.FACE_CONTACT_RATIO_MIN`
 #: (tested; not imported here, to keep the command's import light)
 FACE_CONTACT_RATIO_NOTE = 1.25
+#: the profile contact ratio below which ``ltca synthesize`` adds the same note (the
+#: spiral bevel 19x23 at β_m 46°: ε_vα 0.98, its LTE 223 / 118 µrad, one pair alone over
+#: 85 % of the cycle at the light torque); the same number as
+#: :data:`contact.load_capacity.iso10300.face_contact.PROFILE_CONTACT_RATIO_MIN` (tested)
+PROFILE_CONTACT_RATIO_NOTE = 1.0
 
 
 def _contact_ratios(case) -> tuple[float, float] | None:
@@ -152,10 +157,13 @@ def low_overlap_lte(development) -> str:
         cl, cd = development.coast_design_torques
         parts.append(f"coast {c[0]:.0f}/{c[1]:.0f} urad at {cl:.4g}/{cd:.4g} N m")
         worst = max(worst, float(max(c)))
+    from contact.study.verdicts import LTE_LIMIT
+
     target = development.targets.max_lte
     return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
             f"development's target {target:g} urad "
-            + ("met" if worst <= target else "missed"))
+            + ("met" if worst <= target else "missed")
+            + (f", above the verdict's {LTE_LIMIT:g} urad" if worst > LTE_LIMIT else ""))
 
 
 def gear_process_note(development, case) -> str | None:
@@ -352,17 +360,21 @@ def run_synthesize(args: argparse.Namespace) -> int:
     if process is not None:
         print("note: " + process)
     print(f"wrote {path}")
-    if ratios is not None and ratios[1] < FACE_CONTACT_RATIO_NOTE:
+    if ratios is not None and (ratios[1] < FACE_CONTACT_RATIO_NOTE
+                               or ratios[0] < PROFILE_CONTACT_RATIO_NOTE):
         # the cause and the remedy in numbers: the face width and the spiral angle that
-        # reach the least ratio (contact.load_capacity.iso10300.face_contact)
-        from contact.load_capacity.iso10300.face_contact import overlap_text
+        # reach the least face contact ratio, the depth factor and the pressure angle that
+        # reach the least profile contact ratio (contact.load_capacity.iso10300.face_contact)
+        from contact.load_capacity.iso10300.face_contact import low_ratio_text
 
-        said = overlap_text(basic.design, FACE_CONTACT_RATIO_NOTE)
+        said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
+                              PROFILE_CONTACT_RATIO_NOTE)
         print("note: " + (said if said is not None else
-                          f"face contact ratio eps_vb {ratios[1]:.2f} is below "
-                          f"{FACE_CONTACT_RATIO_NOTE:g}, the least bevel-gear design practice "
-                          "asks for (AGMA 2005-D03); a wider face (b2) or a larger spiral "
-                          "angle (beta_m) raises it")
+                          f"contact ratios eps_va {ratios[0]:.2f}, eps_vb {ratios[1]:.2f}: "
+                          f"below {PROFILE_CONTACT_RATIO_NOTE:g} / {FACE_CONTACT_RATIO_NOTE:g}"
+                          ", the least bevel-gear design practice asks for (AGMA 2005-D03); "
+                          "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
+                          "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
               + (f"; {low_overlap_lte(development)}" if development is not None else ""))
     if basic.optimize:
         print(f"note: {shown} carries an [optimize] table: the synthesis alone is written; "

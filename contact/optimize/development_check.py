@@ -15,7 +15,8 @@ the tip, then the root relief of a chosen design that meets every target but not
 mounting excursions' edges (:func:`final_tolerance` reuses its excursions for the case
 written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the verdict's
 60 µrad a longer ellipse, then a path nearer the lengthwise direction
-(:data:`COAST_LTE_STEPS`). :func:`static_capacity` lowers
+(:data:`COAST_LTE_STEPS`); :func:`checked_relief_lte` a drive design whose LTE still
+exceeds it a shallower root relief (:data:`RELIEF_LTE_FRACTIONS`). :func:`static_capacity` lowers
 the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
@@ -285,7 +286,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     light-load pattern is above its depth centre's tolerance, a shorter tip relief
     (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
     longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the long
-    bearing (:func:`checked_long`). Run again where the design torque was
+    bearing (:func:`checked_long`) and a shallower root relief where it exceeds 60 µrad
+    (:func:`checked_relief_lte`). Run again where the design torque was
     lowered after them (to the
     bearing's static flank capacity or its FE root-stress capacity): the light torque
     follows the design torque (``light_load`` × it), and the light-load LTE rises as the
@@ -298,7 +300,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = _checked_blade(best, targets, setup, teeth, say, placed)
     best = _checked_tip(best, targets, setup, teeth, say, placed)
     best = _checked_root(best, targets, setup, teeth, say, placed)
-    return checked_long(best, targets, setup, teeth, say, placed)
+    best = checked_long(best, targets, setup, teeth, say, placed)
+    return checked_relief_lte(best, targets, setup, teeth, say, placed)
 
 
 def long_bearing(values: Mapping[str, float], targets: DevelopmentTargets
@@ -391,6 +394,75 @@ def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if flank == "drive" and not _tolerant_variant(e, targets, setup, teeth, say):
         return best
     return e
+
+
+#: the root relief of :func:`checked_relief_lte`'s designs, as fractions of the design's,
+#: tried in turn (its start and every other prescription kept)
+RELIEF_LTE_FRACTIONS = (0.5, 1.0 / 3.0)
+
+
+def checked_relief_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                       say: Callable[[str], None],
+                       placed: Callable[[Mapping[str, float]], Case], *,
+                       lte_limit: float | None = None) -> DevelopmentEvaluation:
+    """A drive design whose LTE p-p at the check still exceeds the verdict's limit at a
+    torque after every other step given a shallower root relief: the root relief ×
+    :data:`RELIEF_LTE_FRACTIONS` in turn (within its bounds, its start kept), each design
+    (step 7 only: the relief, no new synthesis) placed and checked at :data:`CHECK_LTCA`,
+    kept where it scores better, misses no target the design met (the pattern length
+    included) and is tolerant (:func:`_tolerant_variant`); the first kept within the limit
+    at every torque ends it. ``lte_limit`` [µrad]: the verdict's ``lte`` limit (default
+    :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad); a design within it at every torque,
+    or without a root relief to lower, is returned as it is, without an analysis.
+
+    Why: where the contact ratios are low (ε_vβ ≲ 1.15, ε_vα near 1) the LTE at the design
+    torque is that of the pairs handing over: the root relief takes away the flank where
+    the pinion's root meets the gear's tip, which is where the next pair takes up its
+    load, and a relief deeper than the teeth deflect at the design torque keeps the loaded
+    contact ratio below what the geometry gives (Stadtfeld, *Gleason Bevel Gear
+    Technology*, 2014: the relief sized to the load's deflection; Litvin & Fuentes 2004
+    §9.4). The search's relief stage sets the relief against the edges at the design
+    torque and the mounting excursions, the LTE only as one term of its objective.
+    Measured at ``ltca run``'s sampling on the spiral bevel 17x26 at Σ 120° of
+    benchmarks/data/unseen_designs (ε_vα 1.11, ε_vβ 1.14; 71.7 / 477.7 N m; path −80°,
+    ellipse 0.75, root relief 60 µm from 0.2, tip relief 15 µm from 0.85, te_level 25
+    µrad; ``benchmarks/development_levers.py --check --tolerance``, 2026-11-26): LTE
+    38 / 96 µrad, loaded contact ratio 1.50 / 2.15; root relief 30 µm: 35 / 73; 20 µm:
+    33 / 60, 1.50 / 2.30, edge 0.9 % at the design torque, tolerant; 20 µm from 0.35:
+    25 / 59; none: 39 / 29 µrad but 9.1 % on the edges. ``te_level`` 10 (38 / 95) and the
+    relief starting at 0.5 (26 / 74, 37.5 µm from 0.5: plastic at ΔP +0.05 mm) did less."""
+    from contact.study.verdicts import LTE_LIMIT
+
+    limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
+    name = "root_relief"
+    if (name not in targets.variables or name not in best.values
+            or float(best.values[name]) <= 0.0):
+        return best
+    lo, hi = (float(x) for x in targets.variables[name])
+    now = float(best.values[name])
+    for fraction in RELIEF_LTE_FRACTIONS:
+        if (best.full is None or not best.checked
+                or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
+            return best
+        x = float(np.clip(fraction * now, lo, hi))
+        if abs(x - float(best.values[name])) < 1e-9:
+            continue
+        values = dict(best.values) | {name: x}
+        e = _said_variant(best, values, "relief lte",
+                          f"with {name} {x:.3g} um (its LTE above {limit:g} urad)", targets,
+                          setup, teeth, say, placed)
+        if e is None or _check_rank(e) >= _check_rank(best):
+            continue
+        was = {k for k, v in best.full[1].items() if v > 0.0}
+        lost = sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was)
+        if lost:
+            say(f"  not kept: the shallower root relief misses {', '.join(lost)}")
+            continue
+        if not _tolerant_variant(e, targets, setup, teeth, say):
+            continue
+        best = e
+    return best
 
 
 #: the coast check's steps (:func:`checked_coast_lte`), each a change of one prescription

@@ -460,12 +460,32 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
             continue
         upto = (f"up to the design torque {_t(design)}" if math.isfinite(design)
                 else "at every torque")
+        ratios = _contact_ratios(lt, rating, t)
         out.append(Finding("attention", "lte",
                            f"LTE peak-to-peak {pp:.0f} µrad at {_t(t)} above {limit:g} µrad, "
                            f"the loaded transmission error a quiet bearing keeps {upto}: "
                            "a source of gear whine (the bearing's relief and TE level, or a "
-                           "face contact ratio below 1.25, set it; docs/verdicts.md)"))
+                           "face contact ratio below 1.25, set it; docs/verdicts.md)"
+                           + (f"; {ratios}" if ratios else "")))
     return out
+
+
+def _contact_ratios(lt: xr.Dataset, rating: xr.Dataset | None, torque: float) -> str:
+    """The ``lte`` finding's contact ratios at ``torque``: ISO 10300-1's ε_vα, ε_vβ (the
+    rating's ``eps_va``, ``eps_vb``, where rated) and the LTCA's loaded contact ratio
+    (``pairs_in_contact`` over the mesh cycle) in numbers
+    (:func:`contact.load_capacity.iso10300.face_contact.loaded_ratio_text`); empty where
+    the tree has neither (issue 71: which contact ratio limits the LTE)."""
+    from contact.load_capacity.iso10300.face_contact import loaded_ratio_text
+
+    def scalar(name: str) -> float:
+        if rating is None or name not in rating or rating[name].ndim != 0:
+            return math.nan
+        return float(rating[name])
+
+    pairs = (lt["pairs_in_contact"].sel(torque=torque).values
+             if "pairs_in_contact" in lt and "torque" in lt["pairs_in_contact"].dims else [])
+    return loaded_ratio_text(scalar("eps_va"), scalar("eps_vb"), pairs)
 
 
 def _friction(fr: xr.Dataset) -> list[Finding]:

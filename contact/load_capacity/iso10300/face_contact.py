@@ -18,10 +18,21 @@ gears of :func:`contact.load_capacity.iso10300.virtual_gears.virtual_gears`);
 :func:`overlap_text` says it in a sentence for ``ltca synthesize``, ``ltca run`` and
 ``ltca duty-cycle``.
 
+Where the profile contact ratio ε_vα is below :data:`PROFILE_CONTACT_RATIO_MIN` (a high
+spiral angle lowers it: the spiral bevel 19x23 at β_m 46° of
+benchmarks/data/unseen_designs, ε_vα 0.98), :func:`profile_remedy` finds the depth factor
+k_d and the drive flank's pressure angle α_dD that each raise it to 1, and
+:func:`low_ratio_text` says both remedies in one sentence; :func:`loaded_ratio_text`
+states an analysis' loaded contact ratio (the tooth pairs carrying the torque) beside
+them (``ltca run``'s ``lte`` finding, issue 71).
+
 Public functions
 ----------------
-overlap_remedy   ε_vβ of a design and the b2, β_m that reach the target
-overlap_text     that as a sentence, or None where ε_vβ meets the target
+overlap_remedy     ε_vβ of a design and the b2, β_m that reach the target
+overlap_text       that as a sentence, or None where ε_vβ meets the target
+profile_remedy     ε_vα of a design and the k_d, α_dD that reach the target
+low_ratio_text     the sentence of every contact ratio below its limit, or None
+loaded_ratio_text  the contact ratios and the loaded contact ratio of an analysis
 """
 
 from __future__ import annotations
@@ -30,13 +41,20 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-__all__ = ["FACE_CONTACT_RATIO_MIN", "FACE_WIDTH_LIMIT", "OverlapRemedy", "overlap_remedy",
-           "overlap_text"]
+__all__ = ["FACE_CONTACT_RATIO_MIN", "FACE_WIDTH_LIMIT", "PROFILE_CONTACT_RATIO_MIN",
+           "OverlapRemedy", "ProfileRemedy", "loaded_ratio_text", "low_ratio_text",
+           "overlap_remedy", "overlap_text", "profile_remedy"]
 
 #: the least face contact ratio ε_vβ bevel-gear design practice asks for (AGMA 2005-D03,
 #: face contact ratio m_F); below it ``ltca synthesize`` adds a note and the LTE-spread
 #: findings of ``ltca run`` and ``ltca duty-cycle`` name it
 FACE_CONTACT_RATIO_MIN = 1.25
+
+#: the least profile (transverse) contact ratio ε_vα below which the virtual cylindrical
+#: gears' transverse section has, once per base pitch, no pair in mesh (ISO 10300-1:2014,
+#: Annex A: ε_vα = g_vα / p_vet): the load is handed over only along the face (ε_vβ), which
+#: a localised bearing shortens to the pattern's length
+PROFILE_CONTACT_RATIO_MIN = 1.0
 
 #: the usual largest gear face width as a fraction of the outer cone distance R_e2
 #: (AGMA 2005-D03 and Gleason practice: b2 ≤ 0.3 R_e2; wider, the toe's teeth become too
@@ -46,6 +64,17 @@ FACE_WIDTH_LIMIT = 0.3
 #: the largest mean spiral angle tried [deg] (spiral bevel and hypoid practice stays at or
 #: below 45°; the thrust grows with tan β_m)
 _SPIRAL_ANGLE_MAX = 50.0
+
+#: the usual depth factor k_d of spiral bevel and hypoid teeth (ISO 23509 data type II,
+#: h_mw = k_d m_mn: 2.0 for spiral bevel gears, AGMA 2005-D03 / Gleason); a deeper tooth
+#: narrows its top land
+DEPTH_FACTOR_USUAL = 2.0
+
+#: the largest depth factor and the least pressure angle :func:`profile_remedy` tries
+#: [1], [deg] (a deeper tooth's top land and a smaller pressure angle's undercut of a
+#: small pinion bound them; 14.5° is the least standard pressure angle)
+_DEPTH_FACTOR_MAX = 2.5
+_PRESSURE_ANGLE_MIN = 14.5
 
 
 @dataclass(frozen=True)
@@ -217,3 +246,197 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
             "which the bearing's levers (a longer ellipse, a relief entering later, a flatter "
             "TE parabola) offset only in part (docs/own_gear_set.md, 'A face contact ratio "
             f"below 1.25'); {remedy}")
+
+
+@dataclass(frozen=True)
+class ProfileRemedy:
+    """The profile contact ratio of a design and the changes that reach a target.
+
+    Attributes
+    ----------
+    eps_va : float — [1]
+        Profile (transverse) contact ratio ε_vα of the design (ISO 10300-1, drive side).
+    target : float — [1]
+        The ε_vα aimed at.
+    k_d : float — [1]
+        The design's depth factor (``[design] k_d``, ISO 23509 data type II).
+    k_d_needed : float — [1]
+        The depth factor that gives ``target``, the rest kept; NaN where none up to 2.5
+        does, or the design gives its depth by data type I.
+    alpha_d : float — [deg]
+        The drive flank's design pressure angle (``[design] alpha_dD``).
+    alpha_d_needed : float — [deg]
+        The drive flank's pressure angle that gives ``target``, the rest kept; NaN where
+        none down to 14.5° does.
+    """
+
+    eps_va: float
+    target: float
+    k_d: float
+    k_d_needed: float
+    alpha_d: float
+    alpha_d_needed: float
+
+
+def _eps_va(design) -> float:
+    """ε_vα [1] of ``design`` from its ISO 23509 blank (drive side)."""
+    from contact.load_capacity.iso10300.inputs import gear_data_from_blank
+    from contact.load_capacity.iso10300.virtual_gears import virtual_gears
+    from geometry.iso23509.blank import blank_geometry
+
+    return float(virtual_gears(gear_data_from_blank(blank_geometry(design))).eps_va)
+
+
+def profile_remedy(design, target: float = PROFILE_CONTACT_RATIO_MIN) -> ProfileRemedy:
+    """The profile contact ratio ε_vα of a basic design and the depth factor and drive
+    pressure angle that reach ``target``.
+
+    Parameters
+    ----------
+    design : geometry.iso23509.design_data.BevelGearDesign
+        The basic design data (lengths [mm], angles [rad]).
+    target : float — [1]
+        The profile contact ratio aimed at, in (0, 5]; default
+        :data:`PROFILE_CONTACT_RATIO_MIN`.
+
+    Returns
+    -------
+    ProfileRemedy
+        ε_vα of ``design``; the depth factor k_d [1] (α_dD kept) and the drive flank's
+        pressure angle α_dD [deg] (k_d kept) at which ε_vα = ``target`` (to 1e-3), each NaN
+        where none up to 2.5 / down to 14.5° reaches it; where ε_vα already meets the
+        target, the design's own values.
+
+    Raises
+    ------
+    InputError
+        ``target`` not a number in (0, 5]; a design the ISO 23509 blank refuses.
+
+    Notes
+    -----
+    ε_vα = g_vα / p_vet (ISO 10300-1:2014, Annex A, A.2) of the virtual cylindrical gears
+    (:func:`contact.load_capacity.iso10300.virtual_gears.virtual_gears`): a deeper tooth
+    (h_mw = k_d m_mn, ISO 23509 data type II) lengthens the path of contact g_vα, a
+    smaller pressure angle too; a larger spiral angle lowers ε_vα (the virtual transverse
+    pressure angle grows). The spiral bevel 19x23 of benchmarks/data/unseen_designs at
+    β_m 46°: ε_vα 0.976; k_d 2.2 gives 1.066, α_dD 18° 1.025.
+    """
+    from geometry.core.errors import InputError
+
+    if not (isinstance(target, (int, float)) and math.isfinite(target) and 0.0 < target <= 5.0):
+        raise InputError(f"target: the profile contact ratio aimed at must be a number in "
+                         f"(0, 5], got {target!r}")
+    eps = _eps_va(design)
+    k_d = float(design.k_d) if getattr(design, "k_d", None) is not None else math.nan
+    alpha = math.degrees(float(design.alpha_dD))
+    if eps >= target:
+        return ProfileRemedy(eps, float(target), k_d, k_d, alpha, alpha)
+    k_need = (_root(lambda k: _eps_va(dataclasses.replace(design, k_d=k)) - target,
+                    k_d, max(k_d, _DEPTH_FACTOR_MAX)) if math.isfinite(k_d) else math.nan)
+    drop = _root(lambda d: _eps_va(dataclasses.replace(
+        design, alpha_dD=math.radians(alpha - d))) - target, 0.0,
+        max(0.0, alpha - _PRESSURE_ANGLE_MIN))
+    return ProfileRemedy(eps, float(target), k_d, k_need, alpha, alpha - drop)
+
+
+def _profile_text(r: ProfileRemedy) -> str:
+    """The remedy sentence of a low ε_vα (:func:`low_ratio_text`)."""
+    ways = []
+    if math.isfinite(r.k_d_needed):
+        over = (f", above the usual {DEPTH_FACTOR_USUAL:g}"
+                if r.k_d_needed > DEPTH_FACTOR_USUAL + 1e-9 else "")
+        ways.append(f"a depth factor k_d of {math.ceil(r.k_d_needed * 100) / 100:.2f} "
+                    f"(now {r.k_d:g}{over})")
+    if math.isfinite(r.alpha_d_needed):
+        ways.append(f"a drive pressure angle alpha_dD of "
+                    f"{math.floor(r.alpha_d_needed * 10) / 10:.1f} deg (now {r.alpha_d:g})")
+    remedy = (" or ".join(ways) + (", the other kept," if len(ways) > 1 else "")
+              + f" reaches {r.target:g}" if ways else
+              f"no depth factor up to {_DEPTH_FACTOR_MAX:g} nor pressure angle down to "
+              f"{_PRESSURE_ANGLE_MIN:g} deg alone reaches {r.target:g}")
+    return (f"profile contact ratio eps_va {r.eps_va:.2f} is below {r.target:g}: the "
+            "transverse section has, once per pitch, no pair in mesh and the load passes "
+            "to the next pair only along the face, which a localised bearing shortens; "
+            + remedy)
+
+
+def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
+                   profile_target: float = PROFILE_CONTACT_RATIO_MIN) -> str | None:
+    """The cause and the remedy, in basic-file fields, of every contact ratio of a design
+    below its limit: the face contact ratio (:func:`overlap_text`) and the profile contact
+    ratio (:func:`profile_remedy`: the depth factor ``k_d``, the pressure angle
+    ``alpha_dD``); None where both meet their limits or the blank cannot be computed.
+
+    Parameters
+    ----------
+    design : geometry.iso23509.design_data.BevelGearDesign
+    face_target, profile_target : float — [1]
+        Defaults :data:`FACE_CONTACT_RATIO_MIN`, :data:`PROFILE_CONTACT_RATIO_MIN`.
+
+    Returns
+    -------
+    str or None
+        E.g. "profile contact ratio eps_va 0.98 is below 1: ...; a depth factor k_d of
+        2.05 (now 2, above the usual 2) or a drive pressure angle alpha_dD of 19.0 deg
+        (now 20), the other kept, reaches 1" (k_d rounded up to 0.01, α_dD down to 0.1°).
+    """
+    from geometry.core.errors import InputError
+
+    parts = []
+    face = overlap_text(design, face_target)
+    if face is not None:
+        parts.append(face)
+    try:
+        r = profile_remedy(design, profile_target)
+    except (InputError, ValueError, ZeroDivisionError, AttributeError):
+        r = None
+    if r is not None and r.eps_va < r.target:
+        parts.append(_profile_text(r))
+    return "; and the ".join(parts) if parts else None
+
+
+def loaded_ratio_text(eps_va: float, eps_vb: float, pairs) -> str:
+    """An analysis' contact ratios in one clause: ISO 10300-1's profile, face and total
+    contact ratios of the virtual gears, each below its limit said so, and the loaded
+    contact ratio the LTCA measured at one torque.
+
+    Parameters
+    ----------
+    eps_va, eps_vb : float — [1]
+        ε_vα, ε_vβ (``/rating``'s ``eps_va``, ``eps_vb``; NaN where not rated).
+    pairs : array_like, shape (n_roll,) — [1]
+        The tooth pairs carrying load at each roll position of the mesh cycle at that
+        torque (``/ltca``'s ``pairs_in_contact``).
+
+    Returns
+    -------
+    str
+        E.g. "contact ratios eps_va 1.11, eps_vb 1.14 (below 1.25), total 2.25 (ISO
+        10300-1); loaded contact ratio 2.15 (the mean of the tooth pairs carrying load,
+        one pair alone over 0 % of the mesh cycle)".
+
+    Notes
+    -----
+    The loaded contact ratio is at most the total ε_vγ = ε_vα + ε_vβ of the flanks in
+    mesh (a localised bearing's pattern is shorter than the flank): where it is near 1
+    one pair carries the torque alone over much of the cycle and the LTE follows that
+    pair's compliance and its TE parabola; nearer ε_vγ, the LTE is the stiffness variation
+    of the pairs in mesh, which only more overlap (ε_vβ, ε_vα) lowers.
+    """
+    import numpy as np
+
+    n = np.asarray(pairs, float)
+    n = n[np.isfinite(n)]
+    out = []
+    if math.isfinite(eps_va) and math.isfinite(eps_vb):
+        low_a = (f" (below {PROFILE_CONTACT_RATIO_MIN:g})"
+                 if eps_va < PROFILE_CONTACT_RATIO_MIN else "")
+        low_b = (f" (below {FACE_CONTACT_RATIO_MIN:g})"
+                 if eps_vb < FACE_CONTACT_RATIO_MIN else "")
+        out.append(f"contact ratios eps_va {eps_va:.2f}{low_a}, eps_vb {eps_vb:.2f}{low_b}, "
+                   f"total {eps_va + eps_vb:.2f} (ISO 10300-1)")
+    if n.size:
+        out.append(f"loaded contact ratio {n.mean():.2f} (the mean of the tooth pairs "
+                   f"carrying load, one pair alone over {100 * np.mean(n <= 1):.0f} % of "
+                   "the mesh cycle)")
+    return "; ".join(out)
