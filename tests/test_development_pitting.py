@@ -255,3 +255,14 @@ def test_a_safety_just_below_its_minimum_is_said_with_the_decimals_that_show_it(
     assert CoastCheck(80.0, 1500.0, 2400.0, pitting_safety=0.91, s_h_min=1.0).failures[
         "pitting"].startswith("local pitting safety S_H,loc 0.91 ")
     assert shown_below(0.99999, 1.0) == "0.99999" and shown_below(1.2, 1.3) == "1.20"
+
+
+def test_a_value_above_its_limit_by_less_than_six_decimals_is_shown_above():
+    """A plastic share of 3e-9 % against a limit of 0 % read "0.000000 %" in the
+    development's missed targets (lte71: the 17x29 with b2 30.1 mm): the printed value
+    must show the miss. Exact strings: a presentation rule, no tolerance involved."""
+    from contact.study.verdicts import shown_above
+
+    assert shown_above(3e-9, 0.0, 1) == "3e-09"
+    assert shown_above(40.00000001, 40.0) == "40.000000 (+1e-08)"
+    assert shown_above(40.07, 40.0) == "40.1" and shown_above(39.0, 40.0) == "39"

@@ -570,12 +570,21 @@ def shown_above(value: float, limit: float, decimals: int = 0) -> str:
         ``limit`` where it is above: the development's "LTE p-p 40 urad (limit 40)" of a
         face-hobbed spiral bevel 14x43's coast flank at 40.07 µrad (issue 71, unseen (6))
         reads "LTE p-p 40.1 urad (limit 40)". A value not above ``limit`` keeps
-        ``decimals``. The twin of :func:`shown_below` (a presentation rule, no source).
+        ``decimals``; one above it by less than six decimals show gets two significant digits
+        (a plastic share of 3e-9 % against a limit of 0 % reads "3e-09", not "0.000000"), or,
+        against a nonzero limit, its excess ("40.000000 (+1e-08)").
+        The twin of :func:`shown_below` (a presentation rule, no source).
     """
     d = decimals
     if float(value) > limit:
         while d < 6 and round(float(value), d) <= limit:
             d += 1
+        if round(float(value), d) <= limit:
+            # above its limit by less than six decimals show (a plastic share of 3e-9 %
+            # against 0 % read "0.000000 %"): two significant digits, or the excess
+            if limit == 0:
+                return f"{value:.2g}"
+            return f"{value:.{d}f} (+{value - limit:.1g})"
     return f"{value:.{d}f}"
 
 
