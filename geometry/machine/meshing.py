@@ -571,13 +571,16 @@ _WARM: contextvars.ContextVar[WarmSeeds | None] = contextvars.ContextVar(
     "geometry.machine.meshing.warm_seeds", default=None)
 
 
-#: [mm] farthest target of a warm seed's hint from the target it starts (a step or two of
-#: the ease-off's gear grid on a passenger-car pinion)
-_WARM_REACH = 2.0
+#: [mm] farthest target of a warm seed's hint from the target it starts: the ease-off's
+#: middle targets of one trial and the next lie a grid step or two apart, the edge
+#: curvature's (contact.ltca.edges) up to ~14 mm on the passenger-car hypoid 10x43 of
+#: tests/data/designs (a hint farther off, or whose Newton leaves its section or moves more
+#: than one limited step, gives way to the search: 19 of 315 seeds there)
+_WARM_REACH = 15.0
 
 
 #: hints kept per kind of tool (:meth:`WarmSeeds._kind`)
-_WARM_HINTS = 8
+_WARM_HINTS = 16
 
 
 class WarmSeeds:
