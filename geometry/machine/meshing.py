@@ -622,6 +622,8 @@ class WarmSeeds:
 
     def __init__(self) -> None:
         self._hints: dict[tuple, list[tuple[float, float, np.ndarray, np.ndarray, int]]] = {}
+        #: the seeds given in the block, by tool and target (the last _SEED_MEMO)
+        self._seeds: dict[tuple, tuple] = {}
         self._tokens: list[contextvars.Token] = []
         self.used = 0
         self.searched = 0
@@ -650,6 +652,12 @@ class WarmSeeds:
             Where the search finds no root (as :func:`_seed`).
         """
         z0, p0 = float(z0), float(p0)
+        kernels = "numpy" if ctx.kernel is None else "numba"
+        # a tool's seed at a target asked again (a synthesis' repeated solves, the
+        # ease-off's late placement iterations): as the search's memo does outside a block
+        key = (ctx.blade, ctx.settings, ctx.length_scale, kernels, z0, p0, float(depth))
+        if key in self._seeds:
+            return self._seeds[key]
         kind = self._kind(ctx, depth)
         found = _seed_group(ctx, z0, p0, depth, _seed_passes(ctx)[:1])
         warm = None if found is not None else self._continued(ctx, kind, z0, p0, depth)
@@ -657,14 +665,16 @@ class WarmSeeds:
             found = warm
             self.used += 1
         elif found is None:
-            found = _seed_memoised(ctx.blade, ctx.settings, ctx.length_scale,
-                                   "numpy" if ctx.kernel is None else "numba", z0, p0,
-                                   float(depth))
+            found = _seed_memoised(ctx.blade, ctx.settings, ctx.length_scale, kernels, z0,
+                                   p0, float(depth))
         if warm is None:
             self.searched += 1
         hints = self._hints.setdefault(kind, [])
         hints.append((z0, p0, np.array(found[0]), np.array(found[1]), int(found[2])))
         del hints[:-_WARM_HINTS]
+        self._seeds[key] = found
+        while len(self._seeds) > _SEED_MEMO:
+            del self._seeds[next(iter(self._seeds))]
         return found
 
     def _continued(self, ctx: _Context, kind: tuple, z0: float, p0: float, depth: float):
