@@ -49,6 +49,7 @@ from contact.optimize.development_targets import (
     working_depth_centre,
 )
 from geometry.case import Case
+from geometry.machine.meshing import WarmSeeds
 from geometry.pair.assembly import Misalignment
 from geometry.synthesis.basic_design import BasicDesign
 
@@ -270,9 +271,16 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
     torque, appends it to ``evals``, prints its line and raises :class:`StageStop` where it
     meets every target of ``stage`` or the stage's ``budget`` is spent. The first design
     of the drive flank fixes ``setup`` (torques, the depth centre aimed at). The pinion
-    tooth is kept under ``key_prefix + pinion_key`` (:class:`KeptTeeth`)."""
+    tooth is kept under ``key_prefix + pinion_key`` (:class:`KeptTeeth`). The designs are
+    synthesised and analysed inside one :class:`geometry.machine.meshing.WarmSeeds`: the
+    envelope seeds of each design's tools continued from the earlier designs' (issue 75;
+    a design's metrics as a cold analysis gives them, to the envelope solver's
+    tolerance; the check, :mod:`contact.optimize.development_check`, analyses cold)."""
     seen: dict[tuple, DevelopmentEvaluation] = {}
     label = "" if side == "drive" else f"{side} "
+    # the trials' envelope seeds continued from the earlier trials' (issue 75): a new tool
+    # per trial searched every blade section for the ease-off's seed (≈ 0.2 s each)
+    seeds = WarmSeeds()
 
     def evaluate(values: dict[str, float], stage: str, make: Callable[[], Case],
                  budget: int, pinion_key: tuple) -> DevelopmentEvaluation:
@@ -286,7 +294,8 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
         c0 = time.process_time()
         case = None
         try:
-            case = make()
+            with seeds:
+                case = make()
             if not setup:
                 torque, source = design_torque_of(basic, case)
                 setup.update(torques=[targets.light_load * torque, torque], source=source,
@@ -296,8 +305,10 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
                     f"{setup['torques'][0]:.4g} N m, design {torque:.4g} N m ({source}); "
                     f"varying {', '.join(targets.variables)} (at most "
                     f"{targets.max_evaluations} designs, coarse LTCA)")
-            metrics, grid = analyse_design(case, setup["torques"], teeth=teeth,
-                                           pinion_key=(*key_prefix, *pinion_key), flank=side)
+            with seeds:
+                metrics, grid = analyse_design(case, setup["torques"], teeth=teeth,
+                                               pinion_key=(*key_prefix, *pinion_key),
+                                               flank=side)
             setup["pressure_limit"] = grid[4]
             obj, short, met = development_score(metrics, targets, grid[:4],
                                                 centre_v=setup["centre_v"], stage=stage,

@@ -44,7 +44,7 @@ from geometry.core.kernels import kernels_module
 from geometry.machine.curvature import surface_curvatures
 from geometry.machine.cutter import working_sections
 from geometry.machine.flank import FlankSurface, blank_outline, flank_surface
-from geometry.machine.meshing import solve_envelope
+from geometry.machine.meshing import solve_envelope, warm_seeds_active
 
 if TYPE_CHECKING:
     from geometry.case import Case
@@ -368,9 +368,12 @@ def _forward_map(case: Case, pf: str, kin: MeshKinematics, ref: np.ndarray) -> _
     (:func:`_memo_forward_points`, keyed as the tooth models are, by the case without its
     misalignment and deviations), so the points of a misalignment study are solved once.
     """
-    up, vp, cp, uu, vv, _, _ = _forward_grid(case)
-    fwd, branch = _mates(case, pf, kin, cp, uu, vv, reference=ref,
-                         points=_memo_forward_points(case.teeth_key(), pf))
+    up, vp, cp, uu, vv, z, rho = _forward_grid(case)
+    # inside a development's trial (seeds continued from earlier trials', WarmSeeds) the
+    # points are solved and not memoised: an analysis outside one is computed cold
+    points = (_pinion_points(case, pf, z, rho) if warm_seeds_active()
+              else _memo_forward_points(case.teeth_key(), pf))
+    fwd, branch = _mates(case, pf, kin, cp, uu, vv, reference=ref, points=points)
     ok = fwd.good
     if ok.sum() < 16:
         raise InputError(

@@ -104,6 +104,7 @@ from geometry.core.validation import one_of
 from geometry.machine.curvature import normal_curvature
 from geometry.machine.cutter import working_sections
 from geometry.machine.flank import DEFAULT_GRID, flank_surface
+from geometry.machine.meshing import warm_seeds_active
 from geometry.pair.assembly import Misalignment, rotate_about_axis
 from geometry.pair.pitch_contact import check_pitch_contact
 
@@ -488,7 +489,11 @@ def _memo_ease_off(case: Case, flank: str | None, misalignment: Misalignment | N
     """:func:`_ease_off`, memoised per process (:func:`_memoised_ease_off`, arrays
     read-only): the analyses of one process at the same teeth, misalignment and flank (a
     torque series, an analysis repeated in a notebook) compute the ease-off once; it is a
-    function of these alone (seed Eq. 2.19–2.20, 4.1–4.2), not of the torque."""
+    function of these alone (seed Eq. 2.19–2.20, 4.1–4.2), not of the torque. Inside a
+    :class:`geometry.machine.meshing.WarmSeeds` block (a development's trial, its seeds
+    continued from the earlier trials') computed and not memoised."""
+    if warm_seeds_active():  # a development's trial (seeds continued): not memoised
+        return _ease_off(case, flank, misalignment, grid, pinion_phase, gear_phase)
     mis = case.misalignment if misalignment is None else misalignment
     g = _grid_options(grid)
     grid_key = tuple(sorted((k, tuple(v) if isinstance(v, list | tuple) else v)

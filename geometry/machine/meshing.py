@@ -54,7 +54,9 @@ solve_envelope    solve a batch/grid of projection-plane targets
 
 from __future__ import annotations
 
+import contextvars
 import logging
+import math
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
@@ -77,7 +79,7 @@ from geometry.machine.family import (
 if TYPE_CHECKING:
     from scipy.spatial import cKDTree
 
-__all__ = ["REASONS", "EnvelopeSolution", "solve_envelope"]
+__all__ = ["REASONS", "EnvelopeSolution", "WarmSeeds", "solve_envelope", "warm_seeds_active"]
 
 log = logging.getLogger(__name__)
 
@@ -474,23 +476,43 @@ def _seed(ctx: _Context, z0: float, p0: float, depth: float):
     grid has 648 points, a wide pass's 13 608, and a new tool (each trial of a
     development) built every pass's grid for a seed the first pass gives.
     """
-    sec = ctx.sections
-    s_max = sec.s_lo[sec.main] + 4.0 * depth + 5.0
     passes = _seed_passes(ctx)
     for group in (passes[:1], passes[1:]):
-        if not group:
-            continue
-        x0, ks, sizes = _seed_starts(ctx, z0, p0, depth, group)
-        n = int(ks.size)
-        x, ok = _newton(ctx, x0, ks, np.full(n, z0), np.full(n, p0))
-        at = 0
-        for (k, _), size in zip(group, sizes, strict=True):
-            sl = slice(at, at + size)
-            at += size
-            row = _pick_seed(ctx, x[sl], ok[sl], k, s_max)
-            if row is not None:
-                return _reference(ctx, x[sl][row], k, z0, p0)
-    raise InputError(
+        found = _seed_group(ctx, z0, p0, depth, group)
+        if found is not None:
+            return found
+    raise _no_seed(z0, p0)
+
+
+def _seed_limit(ctx: _Context, depth: float) -> float:
+    """The largest arc length [mm] a seed may have on its section (:func:`_pick_seed`)."""
+    sec = ctx.sections
+    return float(sec.s_lo[sec.main] + 4.0 * depth + 5.0)
+
+
+def _seed_group(ctx: _Context, z0: float, p0: float, depth: float,
+                group: list[tuple[int, bool]]):
+    """The seed of one group of passes of :func:`_seed` (the first pass's root inside its
+    section, passes in order; all passes' Newton in one batch), or None."""
+    if not group:
+        return None
+    s_max = _seed_limit(ctx, depth)
+    x0, ks, sizes = _seed_starts(ctx, z0, p0, depth, group)
+    n = int(ks.size)
+    x, ok = _newton(ctx, x0, ks, np.full(n, z0), np.full(n, p0))
+    at = 0
+    for (k, _), size in zip(group, sizes, strict=True):
+        sl = slice(at, at + size)
+        at += size
+        row = _pick_seed(ctx, x[sl], ok[sl], k, s_max)
+        if row is not None:
+            return _reference(ctx, x[sl][row], k, z0, p0)
+    return None
+
+
+def _no_seed(z0: float, p0: float) -> InputError:
+    """The error of a seed search that finds no root."""
+    return InputError(
         "machine settings: no envelope solution at the middle of the flank "
         f"(axial position {z0:.4g} mm, radius {p0:.4g} mm): the cutter does not generate "
         "a tooth surface inside the blank with these settings")
@@ -524,7 +546,11 @@ def _memo_seed(ctx: _Context, z0: float, p0: float, depth: float):
     """:func:`_seed` of the target (z0, p0), memoised per process by the blade, the machine
     settings, the length scale, the Newton's implementation, the target and ``depth``:
     the search is deterministic, so a repeat returns the same seed bit for bit (read-only
-    arrays). A failing search raises :class:`InputError` each time (not memoised)."""
+    arrays). A failing search raises :class:`InputError` each time (not memoised). Inside
+    a :class:`WarmSeeds` block, :meth:`WarmSeeds.seed` instead."""
+    warm = _WARM.get()
+    if warm is not None:
+        return warm.seed(ctx, z0, p0, depth)
     return _seed_memoised(ctx.blade, ctx.settings, ctx.length_scale,
                           "numpy" if ctx.kernel is None else "numba", float(z0), float(p0),
                           float(depth))
@@ -538,6 +564,142 @@ def _seed_memoised(blade: Blade, settings: MachineSettings, length_scale: float,
     x.setflags(write=False)
     jac.setflags(write=False)
     return x, jac, k
+
+
+#: the :class:`WarmSeeds` whose block the solves run in (None: every seed searched cold)
+_WARM: contextvars.ContextVar[WarmSeeds | None] = contextvars.ContextVar(
+    "geometry.machine.meshing.warm_seeds", default=None)
+
+
+#: [mm] farthest target of a warm seed's hint from the target it starts: the ease-off's
+#: middle targets of one trial and the next lie a grid step or two apart, the edge
+#: curvature's (contact.ltca.edges) up to ~14 mm on the passenger-car hypoid 10x43 of
+#: tests/data/designs (a hint farther off, or whose Newton leaves its section or moves more
+#: than one limited step, gives way to the search: 19 of 315 seeds there)
+_WARM_REACH = 15.0
+
+
+#: hints kept per kind of tool (:meth:`WarmSeeds._kind`)
+_WARM_HINTS = 16
+
+
+class WarmSeeds:
+    """Seed searches of a series of nearby tools continued from each other's seeds (issue
+    75: a development's trials), active inside ``with`` blocks of one instance.
+
+    :func:`solve_envelope` starts its continuation from a seed, the root of the equation of
+    meshing at one target found by a coarse search over the blade sections
+    (:func:`_seed`). The first pass (the profile section at the reference roll, 648 grid
+    points) is cheap; where it gives no root, the other passes build grids of up to
+    13 608 family points each, once per tool (≈ 0.2 s: a development's every trial is a new
+    tool, and the ease-off's placement seeds a target on the tip relief there). Inside a
+    block, a seed the first pass does not give is continued by Newton's method from the
+    nearest seed of an earlier tool of the same kind (blade side, process, sections,
+    depth, length scale, kernels) within :data:`_WARM_REACH`, predicted to first order
+    (x + J⁻¹ (Δz, Δρ, 0)), and kept where it converges inside the hint's section, within
+    one limited Newton step of the prediction and below the seed's arc-length limit (as
+    the search's :func:`_pick_seed`); else the search runs (memoised as outside a block).
+    The seed is the start of the continuation and the reference of its predictions: the
+    roots of the other points are each converged to the solver's tolerance (1e-10 mm), so
+    a warm seed changes a solve by that tolerance, not by a choice, except where a target
+    has roots on two sections inside both (then the search's pass order decides, the warm
+    seed keeps the earlier tool's section). For the development's trials only: the
+    ease-off (:func:`contact.utca.easeoff.ease_off`) and the forward map's pinion points
+    are not memoised inside a block, so the analysis of a design outside one (the
+    development's check) maps its nodes cold; the flanks and syntheses memoised inside a
+    block (a gear flank on its grid, steps 3–6 of a synthesis) hold roots continued from
+    warm seeds: the same roots to the solver's tolerance. On the passenger-car hypoid
+    10x43 of tests/data/designs the ease-offs of its bearing trials came out bit for bit
+    the cold ones (tests/test_warm_seeds.py allows 1e-9 rad).
+
+    Attributes
+    ----------
+    used : int
+        Seeds continued from a hint.
+    searched : int
+        Seeds the search gave (the first pass, or all passes where no hint served).
+    """
+
+    def __init__(self) -> None:
+        self._hints: dict[tuple, list[tuple[float, float, np.ndarray, np.ndarray, int]]] = {}
+        #: the seeds given in the block, by tool and target (the last _SEED_MEMO)
+        self._seeds: dict[tuple, tuple] = {}
+        self._tokens: list[contextvars.Token] = []
+        self.used = 0
+        self.searched = 0
+
+    def __enter__(self) -> WarmSeeds:
+        self._tokens.append(_WARM.set(self))
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        _WARM.reset(self._tokens.pop())
+
+    @staticmethod
+    def _kind(ctx: _Context, depth: float) -> tuple:
+        sec = ctx.sections
+        return (ctx.blade.side, ctx.settings.process, ctx.generate, len(sec.s_lo),
+                int(sec.main), float(depth), ctx.length_scale,
+                ctx.settings.indexing_ratio != 0.0, ctx.kernel is None)
+
+    def seed(self, ctx: _Context, z0: float, p0: float, depth: float):
+        """The seed (x (m,), J (m, m), section) of the target (z0, ρ0) [mm]: the search's
+        first pass, else continued from a hint (class docstring), else the search.
+
+        Raises
+        ------
+        InputError
+            Where the search finds no root (as :func:`_seed`).
+        """
+        z0, p0 = float(z0), float(p0)
+        kernels = "numpy" if ctx.kernel is None else "numba"
+        # a tool's seed at a target asked again (a synthesis' repeated solves, the
+        # ease-off's late placement iterations): as the search's memo does outside a block
+        key = (ctx.blade, ctx.settings, ctx.length_scale, kernels, z0, p0, float(depth))
+        if key in self._seeds:
+            return self._seeds[key]
+        kind = self._kind(ctx, depth)
+        found = _seed_group(ctx, z0, p0, depth, _seed_passes(ctx)[:1])
+        warm = None if found is not None else self._continued(ctx, kind, z0, p0, depth)
+        if warm is not None:
+            found = warm
+            self.used += 1
+        elif found is None:
+            found = _seed_memoised(ctx.blade, ctx.settings, ctx.length_scale, kernels, z0,
+                                   p0, float(depth))
+        if warm is None:
+            self.searched += 1
+        hints = self._hints.setdefault(kind, [])
+        hints.append((z0, p0, np.array(found[0]), np.array(found[1]), int(found[2])))
+        del hints[:-_WARM_HINTS]
+        self._seeds[key] = found
+        while len(self._seeds) > _SEED_MEMO:
+            del self._seeds[next(iter(self._seeds))]
+        return found
+
+    def _continued(self, ctx: _Context, kind: tuple, z0: float, p0: float, depth: float):
+        """The seed continued from the nearest hint of ``kind`` (class docstring), or None."""
+        hints = self._hints.get(kind)
+        if not hints:
+            return None
+        d = [math.hypot(z0 - h[0], p0 - h[1]) for h in hints]
+        i = int(np.argmin(d))
+        if d[i] > _WARM_REACH:
+            return None
+        hz, hp, hx, hjac, k = hints[i]
+        m = hx.size
+        x0 = _predict(hx, hjac, np.array([z0 - hz]), np.array([p0 - hp]))[0]
+        x, ok = _newton(ctx, x0[None], np.array([k]), np.array([z0]), np.array([p0]))
+        near = bool(np.all(np.abs(x[0] - x0) <= _STEP_LIMIT[:m]))
+        if not near or _pick_seed(ctx, x, ok, k, _seed_limit(ctx, depth)) is None:
+            return None
+        return _reference(ctx, x[0], k, z0, p0)
+
+
+def warm_seeds_active() -> bool:
+    """Whether the caller runs inside a :class:`WarmSeeds` block (its results are then not
+    to be memoised as cold ones)."""
+    return _WARM.get() is not None
 
 
 def _predict(x_ref, jac_ref, dz, dp):
