@@ -15,8 +15,8 @@ the tip, then the root relief of a chosen design that meets every target but not
 mounting excursions' edges (:func:`final_tolerance` reuses its excursions for the case
 written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the verdict's
 60 µrad a longer ellipse, then a path nearer the lengthwise direction
-(:data:`COAST_LTE_STEPS`). :func:`static_capacity` lowers
-the design torque to the
+(:data:`COAST_LTE_STEPS`), then its TE level raised back (:func:`checked_coast_te`).
+:func:`static_capacity` lowers the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
 the drive flank at the mounting excursions ΔE, ΔP (:func:`_excursions`). Split out of
@@ -404,8 +404,8 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
                       say: Callable[[str], None],
                       placed: Callable[[Mapping[str, float]], Case], *,
-                      key_prefix: tuple = (), lte_limit: float | None = None
-                      ) -> DevelopmentEvaluation:
+                      key_prefix: tuple = (), lte_limit: float | None = None,
+                      level: float | None = None) -> DevelopmentEvaluation:
     """A coast flank whose LTE p-p at the check exceeds the verdict's limit at a torque
     given the bearing steps of :data:`COAST_LTE_STEPS` in turn while it does: the ellipse
     0.1 longer, then the path angle turned 15° towards the lengthwise direction (each
@@ -420,7 +420,9 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     ``lte_limit`` [µrad]: the verdict's ``lte`` limit (default
     :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad); a design within it at every torque
     is returned as it is, without an analysis. ``key_prefix``: the kept pinion tooth's key
-    before the design's bearing (:func:`checked_best`).
+    before the design's bearing (:func:`checked_best`). Last, where the LTE still exceeds
+    the limit at the design torque, the TE level raised back towards ``level`` (the coast
+    flank's own ``te_level`` [µrad]; :func:`checked_coast_te`).
 
     Why: the coast flank's search has three bearings (the initial simplex of path angle
     and ellipse, :data:`~contact.optimize.development_coast_flank.COAST_BEARING_DESIGNS`)
@@ -463,19 +465,104 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         say(f"  coast design {best.index + 1} with {name} {x:.4g} (its LTE above {limit:g} "
             "urad), at the default sampling: "
             + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
-        if _check_rank(e) >= _check_rank(best):
-            continue
-        lost = _lost_but_length(best, e)
-        p_new = float(e.metrics["pressure_max_flank"][-1])
-        p_old = float(best.metrics["pressure_max_flank"][-1])
-        bound = (float(targets.max_flank_pressure) if targets.max_flank_pressure is not None
-                 else -math.inf)
-        if not p_new <= max(p_old, bound):
-            lost.append(f"pressure ({p_new:.0f} MPa above {max(p_old, bound):.0f})")
-        if lost:
-            say(f"  not kept: the {name} step misses {', '.join(lost)}")
-            continue
-        best = e
+        if _coast_kept(best, e, targets, name, say):
+            best = e
+    return checked_coast_te(best, targets, setup, teeth, say, placed, key_prefix=key_prefix,
+                            limit=limit, level=level)
+
+
+def _coast_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
+                targets: DevelopmentTargets, name: str, say: Callable[[str], None]) -> bool:
+    """Whether a coast LTE step's design ``e`` replaces ``best``: it scores better, misses
+    no target ``best`` met but the pattern length (:func:`_lost_but_length`) and its flank
+    peak pressure at the design torque is no higher than ``best``'s or within the targets'
+    ``max_flank_pressure``; where it scores better but is not kept, one line said."""
+    if _check_rank(e) >= _check_rank(best):
+        return False
+    lost = _lost_but_length(best, e)
+    p_new = float(e.metrics["pressure_max_flank"][-1])
+    p_old = float(best.metrics["pressure_max_flank"][-1])
+    bound = (float(targets.max_flank_pressure) if targets.max_flank_pressure is not None
+             else -math.inf)
+    if not p_new <= max(p_old, bound):
+        lost.append(f"pressure ({p_new:.0f} MPa above {max(p_old, bound):.0f})")
+    if lost:
+        say(f"  not kept: the {name} step misses {', '.join(lost)}")
+        return False
+    return True
+
+
+def crossing_level(x0: float, lte0: tuple[float, float], x1: float,
+                   lte1: tuple[float, float]) -> float | None:
+    """[µrad] The TE level at which the light- and design-torque LTE p-p cross, linear
+    between two designs that differ only in it: ``x0`` with LTE ``lte0`` (light, design)
+    [µrad] and ``x1`` with ``lte1``. None where they do not cross between them (the same
+    order of light and design at both ends, or a NaN). The LTE's larger end is least
+    there where the light LTE rises and the design LTE falls with the level (a deeper
+    parabola of the modified roll is the unloaded TE at light load and absorbs the
+    deflection's transfer at the design torque)."""
+    g0 = float(lte0[1]) - float(lte0[0])  # design − light
+    g1 = float(lte1[1]) - float(lte1[0])
+    if not (np.isfinite(g0) and np.isfinite(g1)) or g0 * g1 >= 0.0:
+        return None
+    return float(x0 + (x1 - x0) * g0 / (g0 - g1))
+
+
+def checked_coast_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                     setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                     say: Callable[[str], None],
+                     placed: Callable[[Mapping[str, float]], Case], *,
+                     key_prefix: tuple = (), limit: float = 60.0,
+                     level: float | None = None) -> DevelopmentEvaluation:
+    """The coast check's last LTE step: a coast design whose LTE p-p still exceeds
+    ``limit`` [µrad] at its design torque, above its light-load LTE, and whose ``te_level``
+    the coarse search's TE stage lowered below ``level`` (the coast flank's own TE level
+    [µrad], :data:`TE_NAME`) gets the TE level raised back: first to ``level`` (within its
+    bounds); where the light and design LTE cross between the two, a second design at
+    their crossing (:func:`crossing_level`). Each one design (a synthesis of steps 3-6)
+    placed and checked at :data:`CHECK_LTCA` on the coast flank and kept on the rules of
+    :func:`checked_coast_lte` (:func:`_coast_kept`); at most 2 designs, none where
+    ``level`` is None.
+
+    Why: the TE stage lowers the level on the coarse LTCA, whose LTE reads low, and
+    flattens the parabola the coast flank hands its pairs over on at the design torque. On
+    the unseen spiral bevel 13x37 at Σ 60° (ε_vβ 1.13; coast 16.5 / 106.3 N m, its search
+    lowered te_level 45 → 25 µrad; ``benchmarks/development_levers.py --flank coast
+    --from-case``, ``ltca run``'s sampling, 2026-11-26) the LTE p-p light / design was 56 /
+    63 µrad at 25, 59.2 / 59.6 at 40 (1405 MPa, objective 8.16 against 8.51), 60.3 / 58.5
+    at 45 (1367 MPa): the light LTE rises with the level and the design LTE falls, their
+    larger least where they cross; the ellipse and path steps before it scored worse or
+    peaked higher there."""
+    if (level is None or best.full is None or not best.checked
+            or TE_NAME not in targets.variables or TE_NAME not in best.values):
+        return best
+    lte = best.metrics["lte_peak_to_peak"]
+    light, design = float(lte[0]), float(lte[-1])
+    if not (design > limit and design > light):
+        return best
+    lo, hi = (float(x) for x in targets.variables[TE_NAME])
+    now = float(best.values[TE_NAME])
+    top = float(np.clip(level, lo, hi))
+    if not top > now + 1.0:
+        return best
+    base, tried = best, [top]
+    while tried:
+        x = tried.pop()
+        values = dict(base.values) | {TE_NAME: x}
+        e = _checked_variant(base, values, "coast lte", targets, setup, teeth, placed,
+                             pinion_key=(*key_prefix, *bearing_key(values)), flank="coast")
+        if e is None:
+            break
+        say(f"  coast design {base.index + 1} with {TE_NAME} {x:.3g} urad (its LTE above "
+            f"{limit:g} urad at the design torque), at the default sampling: "
+            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
+        if _coast_kept(best, e, targets, TE_NAME, say):
+            best = e
+        if x == top and not np.nanmax(e.metrics["lte_peak_to_peak"]) <= limit:
+            lte1 = e.metrics["lte_peak_to_peak"]
+            cross = crossing_level(now, (light, design), top, (float(lte1[0]), float(lte1[-1])))
+            if cross is not None and now + 1.0 < cross < top - 1.0:
+                tried.append(round(cross, 1))
     return best
 
 
