@@ -48,6 +48,7 @@ from contact.optimize.development_result import (
     STATIC_MARGIN,
     TOLERANCE_KEYS,
     DevelopmentEvaluation,
+    case_torques,
     floor_torque,
 )
 from contact.optimize.development_stages import footprint_centre_v
@@ -1034,7 +1035,7 @@ def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         new = floor_torque(new)  # rounded down to 0.1 N·m (two digits below 1 N·m)
         if new == torque:
             break
-        torques = [targets.light_load * new, new]
+        torques = case_torques(targets.light_load, new)
         ms, grid = evaluation.analyse_design(best.case, torques, options=CHECK_LTCA, teeth=teeth,
                                              pinion_key=bearing_key(best.values))
         p_new = float(ms["pressure_max_flank"][1])
