@@ -1225,54 +1225,7 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
         return chosen
     say(f"  {what} {chosen.index + 1} re-centred at the default sampling, "
         f"{HEIGHT_NAME} {x:.3g}: " + evaluation_line(again, n_max).split(": ", 2)[-1])
-    if _check_rank(again) < _check_rank(chosen):
-        return again
-    return _near_edge(chosen, slope, target, targets, setup, teeth, say, placed,
-                      key_prefix=key_prefix, side=side, n_max=n_max)
-
-
-#: where the blade angle that centres the light-load pattern costs more than the centre
-#: gains, :func:`_near_edge` aims the footprint centre v at this fraction of
-#: ``centre_tolerance`` from the target on the side it missed (a quarter of the tolerance
-#: inside the band: the height stage's own "within a quarter", :func:`contact.optimize.
-#: development_stages._centre_height`)
-NEAR_EDGE = 0.75
-
-
-def _near_edge(chosen: DevelopmentEvaluation, slope: float, target: float,
-               targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: KeptTeeth,
-               say: Callable[[str], None], placed: Callable[[Mapping[str, float]], Case],
-               *, key_prefix: tuple, side: str, n_max: int) -> DevelopmentEvaluation:
-    """A chosen design that misses the footprint centre v at the default sampling, whose
-    Newton step onto the target scored worse: the least blade-angle change that meets the
-    band, one Newton step with the bearing's measured ``slope`` [1/deg] onto ``target`` ±
-    :data:`NEAR_EDGE` × ``centre_tolerance`` on the side it missed, placed and checked at
-    :data:`CHECK_LTCA` and kept where it scores better (else ``chosen``).
-
-    Why: the blade-angle change tilts the profile, a first-order ease-off whose unloaded
-    TE the light load carries uncovered where the light torque is small against the tooth
-    (the light torque is ``light_load`` × the design torque, and a user's design torque may
-    be well below the capacity). Measured on the unseen hypoid 10x41 at its user's 100 N m
-    (a third of its ISO capacity; light torque 15 N m; benchmarks/data/unseen_designs/
-    hypoid_10x41_t100.toml, coarse LTCA, 2026-11-26): centre v 0.626 against 0.543 ± 0.08,
-    LTE 42-45 µrad; the blade-angle change −0.13° that centres it (v 0.54) 68-83 µrad,
-    −0.26° (v 0.48) 117 µrad — the centre's target missed by 0.003 for want of a step a
-    quarter of that size."""
-    v = footprint_centre_v(chosen)
-    edge = target + math.copysign(NEAR_EDGE * targets.centre_tolerance, v - target)
-    lo, hi = targets.variables.get(HEIGHT_NAME, (-3.0, 3.0))
-    x = float(np.clip(chosen.values[HEIGHT_NAME] - (v - edge) / slope, lo, hi))
-    if abs(x - chosen.values[HEIGHT_NAME]) < 1e-3:
-        return chosen
-    values = chosen.values | {HEIGHT_NAME: x}
-    e = _checked_variant(chosen, values, "re-centred", targets, setup, teeth, placed,
-                         pinion_key=(*key_prefix, *bearing_key(values)), flank=side)
-    if e is None:
-        return chosen
-    what = "design" if side == "drive" else f"{side} design"
-    say(f"  {what} {chosen.index + 1} moved to its centre's band at the default sampling, "
-        f"{HEIGHT_NAME} {x:.3g}: " + evaluation_line(e, n_max).split(": ", 2)[-1])
-    return e if _check_rank(e) < _check_rank(chosen) else chosen
+    return again if _check_rank(again) < _check_rank(chosen) else chosen
 
 
 def _excursions(t: DevelopmentTargets) -> list[tuple[str, Misalignment]]:
