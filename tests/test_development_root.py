@@ -100,7 +100,10 @@ def test_lowered_torque_holds(monkeypatch, power):
     if power == 1.0:
         assert exact == pytest.approx(FP / 1.3 / 6.875 - 1.6, abs=1e-6)
     assert s >= 1.3 and 0.95 * exact <= t <= exact and setup["lowered"]
-    assert light == pytest.approx(0.15 * t)
+    # the light torque as the case writes it (case_torques: 0.15 t floored to 0.1 N m)
+    from contact.optimize.development_result import floor_torque
+
+    assert light == floor_torque(0.15 * t)
     hand = FP / (550.0 * (t / 100.0) ** power * K_A * (1.0 + 1.6 / t))
     assert s == pytest.approx(hand, rel=1e-12)
     assert "S_F,FE 1.18 (pinion) below S_Fmin 1.3 at the design torque 100 N m" in text

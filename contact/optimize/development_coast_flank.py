@@ -48,6 +48,7 @@ from contact.optimize.development_result import (
 )
 from contact.optimize.development_stages import search_flank
 from contact.optimize.development_targets import (
+    TE_NAME,
     DevelopmentTargets,
     development_score,
 )
@@ -293,7 +294,7 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
                             key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
         # an LTE above the verdict's limit: the ellipse longer, the path turned lengthwise
         best = checked_coast_lte(best, targets, setup, teeth, say, placed,
-                                 key_prefix=prefix)
+                                 key_prefix=prefix, level=start.get(TE_NAME))
         # an LTE still missed: the long bearing (the drive flank's last check step)
         best = checked_long(best, targets, setup, teeth, say, placed, flank="coast",
                             key_prefix=prefix)

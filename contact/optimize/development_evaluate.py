@@ -35,6 +35,7 @@ import xarray as xr
 from contact.ltca import LTCAOptions
 from contact.optimize.development_result import (
     DevelopmentEvaluation,
+    case_torques,
     metrics_text,
 )
 from contact.optimize.development_targets import (
@@ -298,7 +299,8 @@ def evaluator(basic: BasicDesign, targets: DevelopmentTargets, setup: dict[str, 
                 case = make()
             if not setup:
                 torque, source = design_torque_of(basic, case)
-                setup.update(torques=[targets.light_load * torque, torque], source=source,
+                setup.update(torques=case_torques(targets.light_load, torque),
+                             source=source,
                              lowered=False,
                              centre_v=working_depth_centre(case))
                 say(f"development: drive flank {basic.options.drive_flank}, light "

@@ -29,7 +29,7 @@ from geometry.case import Case
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS, BasicDesign
 
 __all__ = ["COAST_STATUS", "STATIC_MARGIN", "TOLERANCE_KEYS", "DevelopmentEvaluation",
-           "DevelopmentResult", "floor_torque", "metrics_text"]
+           "DevelopmentResult", "case_torques", "floor_torque", "metrics_text"]
 
 
 # --------------------------------------------------------------------------- evaluation
@@ -570,6 +570,34 @@ def floor_torque(torque: float) -> float:
     while n > 1 and float(f"{n}e{step}") > t:
         n -= 1
     return float(f"{n}e{step}")
+
+
+def case_torques(light_load: float, torque: float) -> list[float]:
+    """The development's (light, design) torques [N·m] as the case it writes runs them:
+    ``light_load`` × ``torque`` and ``torque``, each rounded down by
+    :func:`floor_torque`, so that the development scores its designs at the very torques
+    ``ltca run`` analyses the case at (before, the light torque was scored unrounded:
+    40.02 N·m where the case ran at 40.0, issue 71).
+
+    Parameters
+    ----------
+    light_load : float — [1], the light torque as a fraction of the design torque, > 0
+    torque : float — [N·m], the design torque, finite and > 0
+
+    Returns
+    -------
+    list[float] — [N·m], [light, design], each in (0, its unrounded value]
+
+    Raises
+    ------
+    ValueError
+        A torque not finite or not > 0 (:func:`floor_torque`).
+
+    Notes
+    -----
+    Source: this project's rounding rule (:func:`floor_torque`).
+    """
+    return [floor_torque(float(light_load) * float(torque)), floor_torque(torque)]
 
 
 #: the outcomes of the coast flank's development (``DevelopmentResult.coast_status``)

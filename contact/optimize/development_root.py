@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from contact.optimize.development_result import STATIC_MARGIN, floor_torque
+from contact.optimize.development_result import STATIC_MARGIN, case_torques, floor_torque
 
 log = logging.getLogger(__name__)
 
@@ -332,7 +332,7 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
         if checked is None:  # the last torque checked is kept
             break
         step, new_safe = checked
-        tree, torques, used = step, [light_load * new, new], [*used, (why, slope[why])]
+        tree, torques, used = step, case_torques(light_load, new), [*used, (why, slope[why])]
         slope = {k: _exponent(new, float(new_safe[k][0][-1]), t, float(safe[k][0][-1]),
                               slope[k], *CRITERIA[k][2][:2])
                  for k in new_safe if k in safe}
@@ -399,7 +399,7 @@ def _back_up(case, light_load: float, t: float, bad: float,
     checked = _checked_at(case, light_load, new, say)
     if checked is None or _failing(checked[1]):  # the torque that holds is kept
         return None
-    return checked[0], [light_load * new, new], checked[1], new
+    return checked[0], case_torques(light_load, new), checked[1], new
 
 
 def _checked_at(case, light_load: float, torque: float, say: Callable[[str], None]
@@ -408,7 +408,7 @@ def _checked_at(case, light_load: float, torque: float, say: Callable[[str], Non
     (``light_load`` × it): (the analysis, its safeties of :data:`CRITERIA`), or None where
     it failed (logged and said, never raised)."""
     try:
-        tree = _root_tree(case, [light_load * torque, torque])
+        tree = _root_tree(case, case_torques(light_load, torque))
         return tree, _safeties(tree)
     except Exception as exc:  # reported, never fatal
         log.info("development capacity check at %g N m failed: %s", torque, exc)
