@@ -745,14 +745,51 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
         # the secant from the last placement of this flank's blade (a development's
         # variants: the same tip plane within its tolerance, fewer root lines)
         last = ("tip plane last", t.blade.side)
-        placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
-                                        pair.pinion_hand,
-                                        start=None if memo is None else memo.get(last))
+        try:
+            placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
+                                            pair.pinion_hand,
+                                            start=None if memo is None else memo.get(last))
+        except InputError as exc:
+            if "toprem_height" not in str(exc) or t.blade.toprem_angle == 0.0:
+                raise
+            raise _toprem_below_edge(fs, pair, exc) from None
         if memo is not None:
             memo[key] = placed
             memo[last] = (placed.moved, placed.u_touch)
     return replace(fs, tools=t._replace(blade=placed.blade, settings=placed.settings),
                    tip_moved=placed.moved)
+
+
+def _toprem_below_edge(fs: FlankSynthesis, pair: _PairData, exc: InputError) -> ReliefError:
+    """Step 8's error where the tip plane's move leaves the root relief's corner (the
+    toprem corner, ``blade.toprem_height`` above the tip) within the blade's edge radius,
+    named as the basic file's field with the range that places it.
+
+    The move Δ that puts the root line on the root cone does not depend on the toprem
+    (the root line is the edge radius' trace at the tip, below the corner): it is found
+    for the blade without one, and the corner, at h_M + s (h_root − h_M) above the given
+    tip (``relief_start`` s, :func:`geometry.machine.relief.relieved_blade`), stays above
+    the edge radius r_e after the move for s < (r_e − Δ − h_M) / (h_root − h_M). Measured
+    on the spiral bevel 13x37 at Σ 60° of benchmarks/data/unseen_designs (synthesis
+    defaults, ``ltca synthesize --no-development``): Δ −1.137 mm, the corner at 0.881 mm
+    against r_e 0.894 mm (issue 71)."""
+    t, pf = fs.tools, fs.flank
+    plain = replace(t.blade, toprem_angle=0.0, toprem_height=0.0)
+    head = (f"synthesis.{pf}.relief_start: the pinion's tip plane, placed so that its "
+            f"root line touches the root cone, leaves the root relief's corner within the "
+            f"blade's edge radius {plain.edge_radius:.4g} mm ({exc})")
+    try:
+        moved = tip_plane_on_root_cone(plain, t.settings, pair.pinion_blank,
+                                       pair.pinion_hand).moved
+        h = relief_heights(plain, t.settings, pair.pinion_blank, pair.pinion_hand,
+                           pair.gear_blank)
+        most = (plain.edge_radius - moved - h.mean) / (h.root - h.mean)
+    except InputError:
+        most = math.nan
+    hint = (f"give relief_start <= {math.floor(100 * most) / 100:.2f} (or root_relief = 0)"
+            if math.isfinite(most) and most > 0.0 else "give root_relief = 0")
+    return ReliefError(f"{head}; {hint} ([synthesis] relief_start sets both pinion flanks)",
+                       "relief_start")
 
 
 def _fmt(v: float, nd: int = 4) -> str:
