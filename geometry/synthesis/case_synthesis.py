@@ -737,7 +737,8 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
     ``memo`` (the design's entries of :func:`synthesize`'s memo): the placement kept under
     its inputs (the blade and settings), so a flank the development does not vary is
     placed once, and a new placement starts from the last of the same blade side
-    (:func:`tip_plane_on_root_cone`'s ``start``)."""
+    (:func:`tip_plane_on_root_cone`'s ``start``); a cut it refuses is kept with its
+    error and that start, and raised again from the same start."""
     t = fs.tools
     key = ("tip plane", repr(t.blade), repr(t.settings))
     placed = None if memo is None else memo.get(key)
@@ -745,14 +746,26 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
         # the secant from the last placement of this flank's blade (a development's
         # variants: the same tip plane within its tolerance, fewer root lines)
         last = ("tip plane last", t.blade.side)
+        start = None if memo is None else memo.get(last)
+        refused = ("tip plane refused", *key[1:], start)
+        if memo is not None and refused in memo:  # tried from this start: the same error
+            raise memo[refused]
         try:
-            placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
-                                            pair.pinion_hand,
-                                            start=None if memo is None else memo.get(last))
+            try:
+                placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
+                                                pair.pinion_hand, start=start)
+            except InputError as exc:
+                if "toprem_height" not in str(exc) or t.blade.toprem_angle == 0.0:
+                    raise
+                raise _toprem_below_edge(fs, pair, exc) from None
         except InputError as exc:
-            if "toprem_height" not in str(exc) or t.blade.toprem_angle == 0.0:
-                raise
-            raise _toprem_below_edge(fs, pair, exc) from None
+            # kept too: a development's check tries a design whose cut cannot be placed
+            # again (its steps from each checked design, the fallbacks down the ranking;
+            # the spiral bevel 19x23 at beta_m 46 deg, issue 71), each try a whole
+            # root-line search
+            if memo is not None:
+                memo[refused] = exc
+            raise
         if memo is not None:
             memo[key] = placed
             memo[last] = (placed.moved, placed.u_touch)
