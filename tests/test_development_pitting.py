@@ -268,3 +268,38 @@ def test_a_value_above_its_limit_by_less_than_six_decimals_is_shown_above():
     assert shown_above(3e-9, 0.0, 1) == "3e-09"
     assert shown_above(40.00000001, 40.0) == "40.000000 (+1e-08)"
     assert shown_above(40.07, 40.0) == "40.1" and shown_above(39.0, 40.0) == "39"
+
+
+def test_pitting_bound_stops_a_second_gear_process(monkeypatch):
+    """A second gear process's development stops before its coast flank where its
+    drive design's local pitting capacity cannot reach the first one's design torque:
+    the bound T (S_H,loc / S_Hmin)^2 (b = 1/2, a line contact's Hertzian exponent, the
+    largest a localised bearing shows) from one analysis without root stress; S_H,loc
+    0.68 at 209.6 N m (the 13x37 at Σ 60°'s generated gear) bounds it at 96.9 N m, below
+    the Formate design's 110.4 N m; a safety at or above S_Hmin or a failed analysis
+    gives no bound (issue 71/75). Stand-in analyses."""
+
+    from contact.optimize import development, development_root
+    from contact.optimize.development_process import Outclassed
+
+    safety = [0.68]
+    monkeypatch.setattr("contact.pipeline.run_analysis", lambda *a, **k: object())
+    monkeypatch.setattr(development_root, "pitting_safety",
+                        lambda tree: (np.array([1.5, safety[0]]), 1.0, "pinion"))
+    bound = development_root.pitting_capacity_bound(object(), [31.44, 209.6])
+    assert bound == pytest.approx(209.6 * 0.68 ** 2)  # 96.9 N m
+    said = []
+    with pytest.raises(Outclassed) as info:
+        development._pitting_outclassed(object(), {"torques": [31.44, 209.6]}, 110.4,
+                                        said.append)
+    assert info.value.torque == pytest.approx(bound) and "below 110.4" in said[0]
+    development._pitting_outclassed(object(), {"torques": [31.44, 209.6]}, 90.0,
+                                    said.append)  # 96.9 >= 90: goes on
+    safety[0] = 1.02
+    assert development_root.pitting_capacity_bound(object(), [31.44, 209.6]) == math.inf
+
+    def fails(*a, **k):
+        raise RuntimeError("no analysis")
+
+    monkeypatch.setattr("contact.pipeline.run_analysis", fails)
+    assert development_root.pitting_capacity_bound(object(), [31.44, 209.6]) == math.inf

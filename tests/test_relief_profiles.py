@@ -256,6 +256,30 @@ def test_root_relief_corner_in_the_edge_radius_names_relief_start():
     relieved_blade(*args, tip_relief=0.0, root_relief=0.015, start=most)
 
 
+def test_tip_plane_leaving_the_root_relief_in_the_edge_radius_names_relief_start():
+    """``ltca synthesize --no-development`` of the spiral bevel 13x37 at Σ 60° of
+    benchmarks/data/unseen_designs (synthesis defaults): step 8 moves the pinion's tip
+    plane 1.137 mm shallower, which leaves the root relief's corner (0.881 mm above the
+    tip at relief_start 0.5) within the edge radius 0.894 mm. The error names the basic
+    file's ``relief_start`` and the largest start that places it, which then synthesises
+    (issue 71; before, "depth: moving the tip plane ... toprem_height" named no field)."""
+    from geometry.synthesis.basic_design import load_basic, with_flank_options
+    from geometry.synthesis.case_synthesis import synthesize
+
+    basic = load_basic(ROOT / "benchmarks" / "data" / "unseen_designs"
+                       / "spiral_bevel_13x37_s60.toml")
+    with pytest.raises(ReliefError, match=r"synthesis\.concave\.relief_start: .* "
+                       r"give relief_start <= ") as info:
+        synthesize(basic)
+    assert info.value.field == "relief_start"
+    most = float(info.value.args[0].split("relief_start <= ")[1].split(" ")[0])
+    assert 0.0 < most < basic.options.concave.relief_start
+    for flank in ("concave", "convex"):
+        basic = with_flank_options(basic, flank, {"relief_start": most})
+    case, _ = synthesize(basic)
+    assert case.pinion.concave.blade.toprem_height > case.pinion.concave.blade.edge_radius
+
+
 def test_root_end_on_the_fillet_is_followed_from_m():
     """spiral_bevel_13x39's concave flank: the depth the gear tip reaches is cut by the
     pinion blade's edge radius (the envelope solver misses it from a cold start); the

@@ -379,6 +379,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         _outclassed(setup, outclassed_below)
         if setup["lowered"]:  # the steps again at the torques the bearing carries
             best = steps(best)
+    if (math.isfinite(outclassed_below) and root_stress and best.case is not None
+            and basic.options.design_torque is None
+            and basic.rating.get("design_torque") is None):
+        # a second gear process: stopped before its coast flank and its FE build where
+        # its local pitting capacity cannot reach the first one's design torque
+        _pitting_outclassed(best.case, setup, outclassed_below, say)
     # the chosen design at the mounting excursions; its relief raised where their edges
     # take more than the design torque's share (the search stops at the first design
     # meeting every target, whose edge share may be just within it)
@@ -471,6 +477,23 @@ def _outclassed(setup: dict[str, Any], below: float) -> None:
     torque = float(setup["torques"][1])
     if setup["lowered"] and torque < below:
         raise Outclassed(torque)
+
+
+def _pitting_outclassed(case: Case, setup: dict[str, Any], below: float,
+                        say: Callable[[str], None]) -> None:
+    """Raise :class:`~contact.optimize.development_process.Outclassed` where the upper
+    estimate of the chosen drive design's local pitting capacity
+    (:func:`contact.optimize.development_root.pitting_capacity_bound`, at the
+    development's torques ``setup["torques"]``) is below ``below`` [N·m]: the root-stress
+    and pitting capacity of the written case would lower the design torque below it."""
+    from contact.optimize.development_process import Outclassed
+    from contact.optimize.development_root import pitting_capacity_bound
+
+    bound = pitting_capacity_bound(case, setup["torques"])
+    if bound < below:
+        say(f"  local pitting capacity at most {bound:.4g} N m (S_H,loc at "
+            f"{float(setup['torques'][1]):.4g} N m), below {below:.4g} N m: stopped")
+        raise Outclassed(bound)
 
 
 def _both_flanks_built(case: Case, wanted: bool, built: list[Case],

@@ -200,6 +200,44 @@ def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any]
     return ms, short
 
 
+def checked_analysis(setup: Mapping[str, Any], placed: Callable[[Mapping[str, float]], Case],
+                     values: Mapping[str, float], teeth: KeptTeeth | None,
+                     pinion_key: tuple, flank: str = "drive", *, case: Case | None = None
+                     ) -> tuple[Case, dict, tuple]:
+    """A design of the check placed as it is written (``placed(values)``) and its
+    ``flank`` analysed at :data:`CHECK_LTCA` at the development's torques
+    (``setup["torques"]`` [N·m]), the pinion tooth kept under ``pinion_key``
+    (:class:`KeptTeeth`): the case, the metrics and the grid bounds of
+    :func:`~contact.optimize.development_evaluate.analyse_design`. Its errors propagate.
+    ``case``: ``placed(values)`` already made (not made again).
+
+    Kept in ``setup`` (key ``"check_memo"``, by ``placed``, the flank, the values, the
+    torques, the pinion key and the kept teeth), an error too: a design the check's
+    steps reach again — the steps of each checked design (:func:`steps_on_each`), a path
+    step after a height step (:func:`_kept_step`), the long bearing of designs that
+    differ only in what it sets — is neither synthesised nor analysed again, the same
+    numbers (issue 71: the spiral bevel 13x37 at Σ 60° checked one long bearing three
+    times, each a synthesis and an ease-off that found too few nodes)."""
+    memo = setup.setdefault("check_memo", {}) if isinstance(setup, dict) else {}
+    key = (id(placed), flank, tuple((k, float(v)) for k, v in values.items()),
+           tuple(float(t) for t in setup["torques"]), tuple(pinion_key), id(teeth))
+    kept = memo.get(key)
+    if kept is not None and kept[0] is placed and kept[1] is teeth:
+        log.debug("development: check of %s at %s N m kept", dict(values), key[3])
+        if isinstance(kept[2], Exception):
+            raise kept[2]
+        return kept[2]
+    try:
+        case = placed(values) if case is None else case
+        ms, grid = evaluation.analyse_design(case, setup["torques"], options=CHECK_LTCA,
+                                             teeth=teeth, pinion_key=pinion_key, flank=flank)
+    except Exception as exc:
+        memo[key] = (placed, teeth, exc)  # held: their ids are not reused while kept
+        raise
+    memo[key] = (placed, teeth, (case, ms, grid))
+    return case, ms, grid
+
+
 def _check_rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
     """A checked design's rank: every target met first, then the least objective."""
     return (not e.full[2], e.full[0])
@@ -217,10 +255,9 @@ def _checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], s
     where the synthesis or the analysis failed (logged: the design it would replace
     stands)."""
     try:
-        case = placed(values)
-        ms, grid = evaluation.analyse_design(
-            case, setup["torques"], options=CHECK_LTCA, teeth=teeth,
-            pinion_key=bearing_key(values) if pinion_key is None else pinion_key, flank=flank)
+        case, ms, grid = checked_analysis(
+            setup, placed, values, teeth,
+            bearing_key(values) if pinion_key is None else pinion_key, flank)
     except Exception as exc:  # reported, never fatal
         log.info("development %s check of %s failed: %s", stage, dict(values), exc)
         return None
@@ -1251,9 +1288,13 @@ def checked_best(evals: list[DevelopmentEvaluation], targets: DevelopmentTargets
                         f"generated (the blade cannot cut it); checked at "
                         f"{values['root_relief']:.3g} um")
                 e = dataclasses.replace(e, case=case, values=values)
-            ms, grid = evaluation.analyse_design(e.case, setup["torques"], options=CHECK_LTCA,
-                                                 teeth=teeth, flank=side,
-                                                 pinion_key=(*key_prefix, *bearing_key(e.values)))
+                _, ms, grid = checked_analysis(setup, placed, e.values, teeth,
+                                               (*key_prefix, *bearing_key(e.values)), side,
+                                               case=case)
+            else:
+                ms, grid = evaluation.analyse_design(
+                    e.case, setup["torques"], options=CHECK_LTCA, teeth=teeth, flank=side,
+                    pinion_key=(*key_prefix, *bearing_key(e.values)))
         except Exception as exc:  # a design that fails here is not chosen
             log.info("development check of %s %d failed: %s", what, e.index + 1, exc)
             return False

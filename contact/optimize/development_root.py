@@ -424,3 +424,44 @@ def _exponent(t1: float, s1: float, t2: float, s2: float, default: float = 1.0,
             and math.isfinite(s1 * s2)):
         return default
     return min(high, max(low, math.log(s1 / s2) / math.log(t2 / t1)))
+
+
+#: [1] the exponent b of S_H,loc ∝ T^(−b) :func:`pitting_capacity_bound` takes: a line
+#: contact's (Hertz: p_max ∝ F^(1/2); a point contact's 1/3 and a pattern that grows
+#: under load give less, hence a lower capacity than the bound)
+BOUND_PITTING_EXPONENT = 0.5
+
+
+def pitting_capacity_bound(case, torques: list[float]) -> float:
+    """[N·m] An upper estimate of the drive flank's local pitting capacity of ``case`` from
+    one analysis at ``torques`` (light, design [N·m]) without the FE root stress (no FE
+    model built): T · (S_H,loc / S_Hmin)^(1/b) with b = :data:`BOUND_PITTING_EXPONENT`
+    where S_H,loc at the design torque T is below S_Hmin (:func:`pitting_safety`), else
+    inf; inf where the analysis fails (logged). :func:`root_capacity` lowers the design
+    torque to at most its own estimate with b measured on the bearing (≤ 1, a lower
+    capacity for b < 1/2) and never raises it above the torque it checked.
+
+    Why: a second gear process's development (``outclassed_below``,
+    :func:`contact.optimize.development_process.outclassing_torque`) stops here before its
+    coast flank, its synthesis and its FE build where it could not end above the first
+    one's design torque. Measured on the spiral bevel 13x37 at Σ 60° of
+    benchmarks/data/unseen_designs (2026-11-26): its generated gear's drive design, S_H,loc
+    0.68 at its static capacity 209.6 N m (bound 96.9 N m), ended at 18 N m after a coast
+    development and an FE build (~70 s of CPU), below the Formate design's 110.4 N m."""
+    from contact.chain import AnalysisChain
+    from contact.optimize.development import CHECK_LTCA
+    from contact.pipeline import run_analysis
+
+    try:
+        tree = run_analysis(case, [float(t) for t in torques], flank="drive",
+                            options=CHECK_LTCA, deviations=False,
+                            steps=AnalysisChain.contact_only().with_efficiency()
+                            .with_load_capacity())
+        safety, s_min, _ = pitting_safety(tree)
+    except Exception as exc:  # no bound: the development goes on
+        log.info("development: no local pitting bound: %s", exc)
+        return math.inf
+    s = float(np.asarray(safety)[-1])
+    if not (math.isfinite(s) and s > 0.0 and s_min > 0.0) or s >= s_min:
+        return math.inf
+    return float(torques[1]) * (s / s_min) ** (1.0 / BOUND_PITTING_EXPONENT)

@@ -788,7 +788,8 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
     ``memo`` (the design's entries of :func:`synthesize`'s memo): the placement kept under
     its inputs (the blade and settings), so a flank the development does not vary is
     placed once, and a new placement starts from the last of the same blade side
-    (:func:`tip_plane_on_root_cone`'s ``start``)."""
+    (:func:`tip_plane_on_root_cone`'s ``start``); a cut it refuses is kept with its
+    error and that start, and raised again from the same start."""
     t = fs.tools
     key = ("tip plane", repr(t.blade), repr(t.settings))
     placed = None if memo is None else memo.get(key)
@@ -796,21 +797,67 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
         # the secant from the last placement of this flank's blade (a development's
         # variants: the same tip plane within its tolerance, fewer root lines)
         last = ("tip plane last", t.blade.side)
+        start = None if memo is None else memo.get(last)
+        refused = ("tip plane refused", *key[1:], start)
+        if memo is not None and refused in memo:  # tried from this start: the same error
+            raise memo[refused]
         try:
-            placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
-                                            pair.pinion_hand,
-                                            start=None if memo is None else memo.get(last))
-        except InputError as err:
-            if NOT_GENERATED_WORDS not in str(err):
-                raise
-            # the fields of the basic file that let the blade cut it (issue 71)
-            remedy = uncut_root_remedy(fs.flank, fs.options, pair.geom.design)
-            raise InputError(f"{err}; {remedy}") from err
+            try:
+                placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
+                                                pair.pinion_hand, start=start)
+            except InputError as exc:
+                if NOT_GENERATED_WORDS in str(exc):
+                    # the fields of the basic file that let the blade cut it (issue 71)
+                    remedy = uncut_root_remedy(fs.flank, fs.options, pair.geom.design)
+                    raise InputError(f"{exc}; {remedy}") from exc
+                if "toprem_height" not in str(exc) or t.blade.toprem_angle == 0.0:
+                    raise
+                raise _toprem_below_edge(fs, pair, exc) from None
+        except InputError as exc:
+            # kept too: a development's check tries a design whose cut cannot be placed
+            # again (its steps from each checked design, the fallbacks down the ranking;
+            # the spiral bevel 19x23 at beta_m 46 deg, issue 71), each try a whole
+            # root-line search
+            if memo is not None:
+                memo[refused] = exc
+            raise
         if memo is not None:
             memo[key] = placed
             memo[last] = (placed.moved, placed.u_touch)
     return replace(fs, tools=t._replace(blade=placed.blade, settings=placed.settings),
                    tip_moved=placed.moved)
+
+
+def _toprem_below_edge(fs: FlankSynthesis, pair: _PairData, exc: InputError) -> ReliefError:
+    """Step 8's error where the tip plane's move leaves the root relief's corner (the
+    toprem corner, ``blade.toprem_height`` above the tip) within the blade's edge radius,
+    named as the basic file's field with the range that places it.
+
+    The move Δ that puts the root line on the root cone does not depend on the toprem
+    (the root line is the edge radius' trace at the tip, below the corner): it is found
+    for the blade without one, and the corner, at h_M + s (h_root − h_M) above the given
+    tip (``relief_start`` s, :func:`geometry.machine.relief.relieved_blade`), stays above
+    the edge radius r_e after the move for s < (r_e − Δ − h_M) / (h_root − h_M). Measured
+    on the spiral bevel 13x37 at Σ 60° of benchmarks/data/unseen_designs (synthesis
+    defaults, ``ltca synthesize --no-development``): Δ −1.137 mm, the corner at 0.881 mm
+    against r_e 0.894 mm (issue 71)."""
+    t, pf = fs.tools, fs.flank
+    plain = replace(t.blade, toprem_angle=0.0, toprem_height=0.0)
+    head = (f"synthesis.{pf}.relief_start: the pinion's tip plane, placed so that its "
+            f"root line touches the root cone, leaves the root relief's corner within the "
+            f"blade's edge radius {plain.edge_radius:.4g} mm ({exc})")
+    try:
+        moved = tip_plane_on_root_cone(plain, t.settings, pair.pinion_blank,
+                                       pair.pinion_hand).moved
+        h = relief_heights(plain, t.settings, pair.pinion_blank, pair.pinion_hand,
+                           pair.gear_blank)
+        most = (plain.edge_radius - moved - h.mean) / (h.root - h.mean)
+    except InputError:
+        most = math.nan
+    hint = (f"give relief_start <= {math.floor(100 * most) / 100:.2f} (or root_relief = 0)"
+            if math.isfinite(most) and most > 0.0 else "give root_relief = 0")
+    return ReliefError(f"{head}; {hint} ([synthesis] relief_start sets both pinion flanks)",
+                       "relief_start")
 
 
 def _fmt(v: float, nd: int = 4) -> str:
