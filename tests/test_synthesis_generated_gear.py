@@ -450,9 +450,9 @@ def test_a_coast_flank_cut_below_the_light_torque_fails_the_outcome():
 
 
 def test_better_outcome_ranks_verdict_then_cut_then_torque_then_score():
-    """The rule of docs/synthesis.md: no FAIL criterion first, then no torque cut below
-    half the rated one, then the higher design torque, then the lower objective; the first
-    kept where they rank equal."""
+    """The rule of docs/synthesis.md: no failed outcome first (no FAIL criterion, no
+    torque cut below half the rated one), then the higher design torque, then the lower
+    objective; the first kept where they rank equal."""
     from contact.optimize.development_process import better_outcome
 
     fail = _outcome("Formate", spread=0.58, torque=250.0, objective=1.0)
@@ -490,7 +490,7 @@ def test_generated_gear_developed_only_where_the_formate_design_fails(monkeypatc
     generated = _outcome("Generate", torque=171.0, lowered=True)
     runs.clear()
 
-    def run(b):
+    def run(b, **kw):  # kw: the torque the generated gear's development may stop at
         runs.append(b.options.gear_process)
         return generated if b.options.gear_process == "Generate" else failing
 
@@ -512,7 +512,7 @@ def test_the_generated_gear_development_stops_once_it_cannot_win(monkeypatch):
     on the design torque (better_outcome), whatever it does after (a development only
     lowers its torque): the generated gear's development is given that torque and, where it
     stops there (Outclassed), the Formate design is kept, the text saying so. Where the
-    Formate design meets a FAIL criterion, or its torque is not cut, no torque is given."""
+    Formate design's torque is not cut, no torque is given."""
     import contact.load_capacity.iso10300.capacity as capacity
     from contact.optimize.development_process import (
         Outclassed,
@@ -528,8 +528,9 @@ def test_the_generated_gear_development_stops_once_it_cannot_win(monkeypatch):
     for t, which in ((110.3, "first"), (18.5, "first"), (110.5, "second")):
         other = _outcome("Generate", torque=t, lowered=True, objective=0.0)
         assert better_outcome(formate, other, rated)[1] == which
-    assert np.isnan(outclassing_torque(_outcome("Formate", spread=0.58, torque=110.4,
-                                                lowered=True), rated))
+    # a FAIL criterion beside the cut: a generated design below it is cut and fails too
+    assert outclassing_torque(_outcome("Formate", spread=0.58, torque=110.4, lowered=True),
+                              rated) == 110.4
     assert np.isnan(outclassing_torque(_outcome("Formate", torque=150.0, lowered=True), rated))
     assert np.isnan(outclassing_torque(_outcome("Formate", torque=110.4), rated))
 
@@ -549,6 +550,50 @@ def test_the_generated_gear_development_stops_once_it_cannot_win(monkeypatch):
     assert kept.report.gear.settings.process == "Formate"
     assert kept.gear_process_text.startswith("Gear process (auto): Formate. The Formate gear's")
     assert "stopped where its design torque fell to 18.5 N m" in kept.gear_process_text
+
+
+def test_where_both_designs_fail_the_higher_design_torque_is_kept(monkeypatch):
+    """The spiral bevel 16x24 of tests/data/generated_gear (issue 71), as measured with
+    `ltca synthesize` on 2026-11-26: its Formate design is cut to 5.8 of its ISO capacity
+    230.8 N m (static, then local pitting capacity; no FAIL criterion of the verdict), its
+    generated design to 112 N m with a coast LTE spread of 0.66 at its light torque 16.8
+    N m (a FAIL criterion). Both fail; the generated gear, which carries 19 times the
+    torque, is kept (a FAIL ranked below a cut kept the Formate gear at 5.8 N m), the text
+    saying why; its development was given the Formate design's torque to stop at (5.8 N m:
+    any generated design lowered below it is cut and ranks below on the torque) and was
+    not stopped. A generated design that fails and carries less than the Formate one's
+    still loses (the 13x37 at Sigma 60: 18.5 with plastic against 110.4 N m)."""
+    import contact.load_capacity.iso10300.capacity as capacity
+    from contact.optimize.development_process import (
+        better_outcome,
+        outclassing_torque,
+        with_generated_gear,
+    )
+
+    rated = 230.8
+    formate = _outcome("Formate", torque=5.8, lowered=True, objective=1.0)
+    generated = _outcome("Generate", torque=112.0, lowered=True, objective=1e5,
+                         coast_spread=0.66)
+    assert better_outcome(formate, generated, rated) == (generated, "second")
+    assert better_outcome(generated, formate, rated) == (generated, "first")
+    weak = _outcome("Generate", torque=5.7, lowered=True, objective=0.0)
+    assert better_outcome(formate, weak, rated)[1] == "first"
+    assert outclassing_torque(formate, rated) == 5.8
+
+    monkeypatch.setattr(capacity, "with_design_torque", lambda case, t: (case, rated, ""))
+    basic = load_basic(DATA / "generated_gear" / "spiral_bevel_16x24.toml")
+    given: list = []
+
+    def run(b, **kw):
+        given.append(kw)
+        return generated if b.options.gear_process == "Generate" else formate
+
+    kept = with_generated_gear(run, basic)
+    assert given == [{}, {"outclassed_below": 5.8}]
+    assert kept.report.gear.settings.process == "Generate"
+    assert kept.gear_process_text.startswith("Gear process (auto): generated. The Formate")
+    assert "coast LTE spread 0.66" in kept.gear_process_text
+    assert "at 112 N m; kept the generated gear" in kept.gear_process_text
 
 
 def test_a_formate_development_that_stops_is_followed_by_the_generated_gear(monkeypatch):

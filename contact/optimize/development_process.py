@@ -12,8 +12,10 @@ ISO capacity's 251.4 N·m, and with a generated gear to 171 of 276.7 N·m, no FA
 "Generated gear"). Here the development is run again with ``gear_process = "Generate"``
 where the first one's outcome fails (:func:`failed_outcome`) and the better of the two kept
 (:func:`better_outcome`); every design whose Formate development does not fail is the
-first development's, unchanged. Where the Formate design fails by its torque cut alone,
-the generated gear's development stops as soon as its design torque falls below the
+first development's, unchanged. Where both fail, the one of the higher design torque is
+kept (a spiral bevel 16x24 kept a Formate gear cut to 5.8 of 230.8 N m beside a generated
+gear at 112 N m whose coast LTE spread failed: issue 71). Where the Formate design's torque
+is cut, the generated gear's development stops as soon as its design torque falls below the
 Formate design's (:class:`Outclassed`): it could only rank below it (issue 75).
 
 Public names
@@ -49,6 +51,10 @@ log = logging.getLogger(__name__)
 #: carries less than half of what the blank is rated for. The 20x30's Formate gear: 64.1 of
 #: 251.4 N·m (0.25); its generated gear: 171 of 276.7 N·m (0.62) (docs/synthesis.md)
 TORQUE_CUT_FRACTION = 0.5
+
+#: the rule of :func:`better_outcome`, as the case's ``gear_process_text`` says it
+_RULE = ("(contact.optimize.development_process.better_outcome: no failed outcome, then the "
+         "higher design torque, then the development's objective).")
 
 
 def _flank_fails(metrics: Any, torques: tuple[float, ...], flank: str) -> list[str]:
@@ -152,25 +158,24 @@ def outclassing_torque(first: Any, rated: float) -> float:
     """[N·m] The design torque below which a second development of the pair cannot rank
     above ``first`` (:func:`better_outcome`), NaN where there is none.
 
-    Where ``first`` meets no FAIL criterion of the verdict and its design torque was cut
-    below :data:`TORQUE_CUT_FRACTION` × ``rated``, a second design whose design torque is
-    lowered below ``first``'s is cut too (below the same fraction) and meets at best no
-    FAIL criterion: it ranks equal on the first two keys of :func:`better_outcome` and
-    below on the third, the higher design torque. A development only lowers its design
-    torque once it is lowered (the flank's static capacity, then the root-stress and
-    pitting capacity of the written case), so it can stop there
-    (:class:`Outclassed`). Where ``first`` fails a verdict criterion, or fails by the
-    coast flank's torque alone, a second design of a lower torque may still win: NaN.
+    Where ``first``'s design torque was cut below :data:`TORQUE_CUT_FRACTION` × ``rated``
+    (whatever else it fails), a second design whose design torque is lowered below
+    ``first``'s is cut too: it fails, as ``first`` does, and ranks below it on the second
+    key of :func:`better_outcome`, the higher design torque. A development only lowers its
+    design torque once it is lowered (the flank's static capacity, then the root-stress
+    and pitting capacity of the written case), so it can stop there (:class:`Outclassed`).
+    Where ``first``'s torque is not cut, a second design of a lower torque may fail
+    nothing and win: NaN.
 
     Parameters
     ----------
     first : DevelopmentResult
-        Its ``best.metrics``, ``coast``, ``torque``, ``torque_lowered`` are read.
+        Its ``torque`` and ``torque_lowered`` are read.
     rated : float — [N·m]
         As :func:`failed_outcome`.
     """
     torque = float(first.torque[1])
-    if (_verdict_fails(first) or not first.torque_lowered or not math.isfinite(rated)
+    if (not first.torque_lowered or not math.isfinite(rated)
             or not torque < TORQUE_CUT_FRACTION * rated):
         return math.nan
     return torque
@@ -194,13 +199,17 @@ def better_outcome(first: Any, second: Any, rated: float) -> tuple[Any, str]:
 
     Notes
     -----
-    Ranked by, in turn: a FAIL criterion of the verdict met (none first), a design torque
-    cut below :data:`TORQUE_CUT_FRACTION` of ``rated`` (none first), the higher design
-    torque, then the development's own objective of the chosen drive design
-    (:func:`~contact.optimize.development.development_score`, lower first).
+    Ranked by, in turn: a failed outcome (:func:`failed_outcome`: a FAIL criterion of the
+    verdict met or a torque cut; none first), the higher design torque (the one the case
+    writes), then the development's own objective of the chosen drive design
+    (:func:`~contact.optimize.development.development_score`, lower first). A verdict FAIL
+    and a torque cut rank alike: where both designs fail, the one that carries more is
+    kept. A spiral bevel 16x24 (tests/data/generated_gear) kept, while a FAIL ranked below
+    a cut, a Formate gear cut to 5.8 of 230.8 N m (LTE 337 µrad) beside its generated gear
+    at 112 N m, whose coast flank's LTE spread 0.66 at the light torque failed (issue 71).
     """
-    def rank(r: Any) -> tuple[bool, bool, float, float]:
-        return (bool(_verdict_fails(r)), bool(_torque_cut(r, rated)), -float(r.torque[1]),
+    def rank(r: Any) -> tuple[bool, float, float]:
+        return (bool(failed_outcome(r, rated)), -float(r.torque[1]),
                 float(r.best.objective))
 
     a, b = rank(first), rank(second)
@@ -273,9 +282,7 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
                 f"was stopped where its design torque fell to {stop.torque:.4g} N m, below "
                 f"the Formate gear's (it is only lowered from there: "
                 "contact.optimize.development_process.outclassing_torque); kept the Formate "
-                "gear (contact.optimize.development_process.better_outcome: no FAIL "
-                "criterion, then no torque cut, then the higher design torque, then the "
-                "development's objective).")
+                "gear " + _RULE)
         say("development: " + text)
         return dataclasses.replace(first, gear_process_text=text)
     except InputError as err:
@@ -291,9 +298,7 @@ def with_generated_gear(run: Callable[[Any], Any], basic: Any,
             + (f"fails too ({other})" if other else "does not fail")
             + f" at {second.torque[1]:.4g} N m; kept the "
             + ("generated" if which == "second" else "Formate")
-            + " gear (contact.optimize.development_process.better_outcome: no FAIL "
-            "criterion, then no torque cut, then the higher design torque, then the "
-            "development's objective).")
+            + " gear " + _RULE)
     say("development: " + text)
     return dataclasses.replace(kept, gear_process_text=text)
 
