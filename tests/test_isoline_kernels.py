@@ -293,7 +293,8 @@ def test_cache_ready_reads_numba_index(tmp_path, monkeypatch):
     """``cache_ready`` is True once numba's cache holds every kernel of a module for this
     machine, False in an empty cache: checked in a child process with its own
     ``NUMBA_CACHE_DIR`` (numba reads the variable at import), compiling the smallest
-    module (the block pivoting's four kernels) by one call of its solver. In the empty
+    module (the block pivoting's kernels and the Weber iteration's warm solve) by one call
+    of each. In the empty
     cache the answer comes without importing numba (no index file of the module there:
     the cold first run's ~1 s of numba's import saved, issue 75)."""
     import subprocess
@@ -309,7 +310,17 @@ def test_cache_ready_reads_numba_index(tmp_path, monkeypatch):
         "from contact.qp.benchmark_problems import ltca_like_problem\n"
         "from contact.qp.solvers.active_set import block_pivoting\n"
         "import os; os.environ['LTCA_KERNELS'] = 'numba'\n"
-        "assert block_pivoting(ltca_like_problem(12, seed=0).problem)['converged']\n"
+        "p = ltca_like_problem(12, seed=0).problem\n"
+        "assert block_pivoting(p)['converged']\n"
+        "from contact.qp.problem import ProblemScale\n"
+        "from contact.qp.solvers import pivoting_numba as k\n"
+        "from contact.qp.solvers.active_set import pivoting_thresholds\n"
+        "d = np.diagonal(p.compliance).copy()\n"
+        "sc = ProblemScale(force=p.scale.force, length=p.scale.force * float(d.mean()),\n"
+        "                  arm=p.scale.arm)\n"
+        "k.warm_solve(p.compliance, d, p.separation, p.moment_arm, float(p.torque),\n"
+        "             p.upper_bound, p.bounded, p.has_bounds, *pivoting_thresholds(sc),\n"
+        "             np.ones(p.size), 1e-7, sc.force, sc.length, sc.arm, 50)\n"
         "kernels.cache_ready.cache_clear()\n"
         "print(before, kernels.cache_ready(name))\n")
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path), LTCA_KERNELS="")
