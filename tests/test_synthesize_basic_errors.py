@@ -272,3 +272,22 @@ def test_gear_process_note_says_which_gear_auto_kept():
     assert gear_process_note(dev, case("Generate", 45.0)) == dev.gear_process_text
     assert gear_process_note(NS(gear_process_text=""), case("Formate", 45.0)) is None
     assert gear_process_note(None, case("Formate", 45.0)) is None
+
+
+def test_an_iso_method_not_available_names_its_basic_file_field(tmp_path):
+    """ISO 23509 Method 3 typed for a face-milled design (z0 = 0) is refused as the other
+    basic-file errors are, by the field's dotted path (``design.method``), with the methods
+    face milling takes (unseen71g: the refusal read "method = 3 is implemented ..." where
+    every other one says "design.<field>")."""
+    from geometry.core.errors import ModelUnavailableError
+    from geometry.synthesis.basic_design import load_basic
+
+    text = (DESIGNS / "spiral_bevel_13x39.toml").read_text(encoding="utf-8")
+    text, n = re.subn(r"(?m)^method = .*$", "method = 3", text)
+    assert n == 1
+    path = tmp_path / "fm_method3.toml"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(ModelUnavailableError,
+                       match=r"^design\.method = 3 is implemented for face hobbing only.*"
+                             r"use method 0 or 1"):
+        load_basic(path)

@@ -666,6 +666,8 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
         design = BevelGearDesign.from_degrees(**des)
     except InputError as exc:
         raise InputError(f"design.{exc}") from None
+    except ModelUnavailableError as exc:  # an ISO method not available (for this process)
+        raise ModelUnavailableError(f"design.{exc}") from None
     for z in (design.z1, design.z2):
         if design.z0 and math.gcd(design.z0, z) != 1:
             raise InputError(
