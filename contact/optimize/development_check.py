@@ -271,14 +271,21 @@ def _checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], s
 def _said_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,
                   label: str, targets: DevelopmentTargets, setup: Mapping[str, Any],
                   teeth: KeptTeeth, say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case]
+                  placed: Callable[[Mapping[str, float]], Case], *,
+                  flank: str = "drive", key_prefix: tuple | None = None
                   ) -> DevelopmentEvaluation | None:
-    """A check step's design: :func:`_checked_variant` of ``base`` with ``values``, and
-    where it was analysed one line said, ``design <n> <label>, at the default sampling:
-    <its metrics>``. None where the synthesis or the analysis failed."""
-    e = _checked_variant(base, values, stage, targets, setup, teeth, placed)
+    """A check step's design: :func:`_checked_variant` of ``base`` with ``values`` on
+    ``flank``, and where it was analysed one line said, ``design <n> <label>, at the
+    default sampling: <its metrics>`` (``<flank> design`` off the drive flank).
+    ``key_prefix``: where given, the kept pinion tooth's key is it followed by the
+    design's bearing (:func:`bearing_key`; default the bearing alone). None where the
+    synthesis or the analysis failed."""
+    key = None if key_prefix is None else (*key_prefix, *bearing_key(values))
+    e = _checked_variant(base, values, stage, targets, setup, teeth, placed,
+                         pinion_key=key, flank=flank)
     if e is not None:
-        say(f"  design {base.index + 1} {label}, at the default sampling: "
+        what = "design" if flank == "drive" else f"{flank} design"
+        say(f"  {what} {base.index + 1} {label}, at the default sampling: "
             + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
     return e
 
@@ -388,8 +395,7 @@ def checked_ellipse(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       say, placed)
     if e is None or _check_rank(e) >= _check_rank(best):
         return best
-    was = {k for k, v in best.full[1].items() if v > 0.0}
-    lost = sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was)
+    lost = _lost_targets(best, e)
     if lost:
         say(f"  not kept: the longer ellipse misses {', '.join(lost)}")
         return best
@@ -423,12 +429,16 @@ def long_bearing(values: Mapping[str, float], targets: DevelopmentTargets
     return new
 
 
-def _lost_but_length(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
-    """The targets ``best`` met at its check and its variant ``e`` misses, the pattern
-    length apart (a check step may buy the LTE with the length alone), sorted."""
+def _lost_targets(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+    """The targets ``best`` met at its check and its variant ``e`` misses, sorted."""
     was = {k for k, v in best.full[1].items() if v > 0.0}
-    return sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was
-                  and k != "length")
+    return sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was)
+
+
+def _lost_but_length(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
+    """:func:`_lost_targets`, the pattern length apart (a check step may buy the LTE with
+    the length alone)."""
+    return [k for k in _lost_targets(best, e) if k != "length"]
 
 
 def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
@@ -467,15 +477,13 @@ def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     values = long_bearing(best.values, targets)
     if values is None:
         return best
-    e = _checked_variant(best, values, "long", targets, setup, teeth, placed,
-                         pinion_key=(*key_prefix, *bearing_key(values)), flank=flank)
+    e = _said_variant(best, values, "long",
+                      f"with the long bearing (ellipse_length {values['ellipse_length']:.3g}"
+                      f", root_relief {values['root_relief']:.3g} from "
+                      f"{values['relief_start']:.3g})", targets, setup, teeth, say, placed,
+                      flank=flank, key_prefix=key_prefix)
     if e is None:
         return best
-    what = "design" if flank == "drive" else f"{flank} design"
-    say(f"  {what} {best.index + 1} with the long bearing (ellipse_length "
-        f"{values['ellipse_length']:.3g}, root_relief {values['root_relief']:.3g} from "
-        f"{values['relief_start']:.3g}), at the default sampling: "
-        + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
     if _check_rank(e) >= _check_rank(best):
         return best
     # the LTE bought with the pattern's length alone: no other target it met given up
@@ -548,8 +556,7 @@ def checked_relief_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           setup, teeth, say, placed)
         if e is None or _check_rank(e) >= _check_rank(best):
             continue
-        was = {k for k, v in best.full[1].items() if v > 0.0}
-        lost = sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was)
+        lost = _lost_targets(best, e)
         if lost:
             say(f"  not kept: the shallower root relief misses {', '.join(lost)}")
             continue
@@ -624,13 +631,11 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if abs(x - now) < 1e-9:
             continue
         values = dict(best.values) | {name: x}
-        e = _checked_variant(best, values, "coast lte", targets, setup, teeth, placed,
-                             pinion_key=(*key_prefix, *bearing_key(values)), flank="coast")
+        e = _said_variant(best, values, "coast lte",
+                          f"with {name} {x:.4g} (its LTE above {limit:g} urad)", targets,
+                          setup, teeth, say, placed, flank="coast", key_prefix=key_prefix)
         if e is None:
             continue
-        say(f"  coast design {best.index + 1} with {name} {x:.4g} (its LTE above {limit:g} "
-            "urad), at the default sampling: "
-            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
         if _coast_kept(best, e, targets, name, say):
             best = e
     return checked_coast_te(best, targets, setup, teeth, say, placed, key_prefix=key_prefix,
@@ -722,13 +727,12 @@ def checked_coast_te(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     while tried:
         x = tried.pop()
         values = dict(base.values) | {TE_NAME: x}
-        e = _checked_variant(base, values, "coast lte", targets, setup, teeth, placed,
-                             pinion_key=(*key_prefix, *bearing_key(values)), flank="coast")
+        e = _said_variant(base, values, "coast lte",
+                          f"with {TE_NAME} {x:.3g} urad (its LTE above {limit:g} urad at "
+                          "the design torque)", targets, setup, teeth, say, placed,
+                          flank="coast", key_prefix=key_prefix)
         if e is None:
             break
-        say(f"  coast design {base.index + 1} with {TE_NAME} {x:.3g} urad (its LTE above "
-            f"{limit:g} urad at the design torque), at the default sampling: "
-            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
         # each against the design before the step (its peak, its met targets); of the
         # two, the one within the limit first (what the step is for: the verdict's
         # limit at every torque, where the objective's sum of squares may prefer 60.3 /

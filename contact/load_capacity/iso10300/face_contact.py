@@ -236,10 +236,8 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     if math.isfinite(r.beta_m_needed):
         ways.append(f"a mean spiral angle beta_m of {math.ceil(r.beta_m_needed * 10) / 10:.1f}"
                     f" deg (now {r.beta_m:g})")
-    remedy = (" or ".join(ways) + (", the other kept," if len(ways) > 1 else "")
-              + f" reaches {r.target:g}" if ways else
-              "no face width up to R_e2/2 nor spiral angle up to 50 deg alone reaches "
-              f"{r.target:g}")
+    remedy = _either(ways, r.target, "no face width up to R_e2/2 nor spiral angle up to 50 "
+                     "deg")
     return (f"face contact ratio eps_vb {r.eps_vb:.2f} is below {r.target:g}, the least "
             "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
             "hands the load from pair to pair through one pair over much of the mesh cycle, "
@@ -339,6 +337,16 @@ def profile_remedy(design, target: float = PROFILE_CONTACT_RATIO_MIN) -> Profile
     return ProfileRemedy(eps, float(target), k_d, k_need, alpha, alpha - drop)
 
 
+def _either(ways: list[str], target: float, none: str) -> str:
+    """A remedy sentence's end: the basic-file changes ``ways`` joined by "or" ("the other
+    kept" where there are two) that reach ``target``, or, with none, "``none`` alone
+    reaches ``target``" (:func:`overlap_text`, :func:`_profile_text`)."""
+    if not ways:
+        return f"{none} alone reaches {target:g}"
+    return (" or ".join(ways) + (", the other kept," if len(ways) > 1 else "")
+            + f" reaches {target:g}")
+
+
 def _profile_text(r: ProfileRemedy) -> str:
     """The remedy sentence of a low ε_vα (:func:`low_ratio_text`)."""
     ways = []
@@ -350,10 +358,8 @@ def _profile_text(r: ProfileRemedy) -> str:
     if math.isfinite(r.alpha_d_needed):
         ways.append(f"a drive pressure angle alpha_dD of "
                     f"{math.floor(r.alpha_d_needed * 10) / 10:.1f} deg (now {r.alpha_d:g})")
-    remedy = (" or ".join(ways) + (", the other kept," if len(ways) > 1 else "")
-              + f" reaches {r.target:g}" if ways else
-              f"no depth factor up to {_DEPTH_FACTOR_MAX:g} nor pressure angle down to "
-              f"{_PRESSURE_ANGLE_MIN:g} deg alone reaches {r.target:g}")
+    remedy = _either(ways, r.target, f"no depth factor up to {_DEPTH_FACTOR_MAX:g} nor "
+                     f"pressure angle down to {_PRESSURE_ANGLE_MIN:g} deg")
     return (f"profile contact ratio eps_va {r.eps_va:.2f} is below {r.target:g}: the "
             "transverse section has, once per pitch, no pair in mesh and the load passes "
             "to the next pair only along the face, which a localised bearing shortens; "
