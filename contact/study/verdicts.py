@@ -150,8 +150,6 @@ GRADE = "MQ"
 SCUFFING_MIN = 1.0
 MICROPITTING_MIN = 1.0
 
-
-
 #: the order of the checks within one severity: what makes the other numbers meaningless
 #: first (no solution, an implausible contact), then the load capacity (a gear set too
 #: small for its load: no bearing change answers it), then the rest
