@@ -372,7 +372,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     best = checked_best(evals, targets, setup, teeth, say, placed, slopes=evaluate.slopes,
                         others=others)
     steps = functools.partial(check_steps, targets=targets, setup=setup, teeth=teeth,
-                              say=say, placed=placed, level=start[TE_NAME])
+                              say=say, placed=placed, level=start[TE_NAME],
+                              slopes=evaluate.slopes)
     best = steps_on_each(best, others, steps)
     if basic.options.design_torque is None and basic.rating.get("design_torque") is None:
         best = static_capacity(best, targets, setup, teeth, say)
