@@ -897,6 +897,48 @@ def test_the_te_stage_lowers_the_te_level_while_the_lte_is_missed(lte_at, expect
     assert asked == expected
 
 
+def test_the_height_root_finds_step_is_continuous_in_the_slope_it_measured():
+    """The height stage's root-find steps with the secant slope it measured, floored at
+    HEIGHT_SLOPE_MIN (not switched: a slope above 0.05 taken, else HEIGHT_SLOPE). Stand-in
+    designs after the spiral bevel 13x37 at Σ 60°'s second bearing (coarse LTCA, centre v
+    0.60 at no change, target 0.549): the first step (HEIGHT_SLOPE) moves v by less than a
+    node row, a secant slope of 0.049 or 0.051 per degree (a 0.2 % change of the light
+    torque apart); the next step is the same for both, 0.051/0.14 beyond the first (the
+    switch made it −0.15° and −0.57°); a slope measured above the floor (0.72) is the
+    one stepped with."""
+    from contact.optimize import development as dev
+
+    targets = DevelopmentTargets(pattern_centre_v=0.549)
+
+    def run(slope_after_first):
+        asked = []
+
+        def evaluate(values, stage, make, budget, key):
+            x = values["blade_angle_change"]
+            asked.append(x)
+            v = 0.60 + slope_after_first * x if len(asked) == 1 else 0.549
+            e = _fake_design(len(asked), values, 0.0)
+            return dataclasses.replace(e, metrics={"pattern_centre_v": np.array([v, v])})
+        evaluate.setup = {"centre_v": 0.549}
+        evaluate.slopes = {}
+        base = dataclasses.replace(
+            _fake_design(0, {"path_angle": -65.6, "blade_angle_change": 0.0}, 0.0),
+            metrics={"pattern_centre_v": np.array([0.60, 0.60])})
+        dstages._centre_height(evaluate, base, targets, 36, lambda v: v, lambda b: b)
+        return asked, evaluate.slopes
+
+    x1 = -(0.60 - 0.549) / dev.HEIGHT_SLOPE
+    (a, slopes_a), (b, _) = run(0.049), run(0.051)
+    assert a[0] == pytest.approx(x1) and b[0] == pytest.approx(x1)
+    f1 = 0.60 + 0.049 * x1 - 0.549
+    assert dstages.HEIGHT_SLOPE_MIN == pytest.approx(0.14)
+    assert a[1] == pytest.approx(x1 - f1 / dstages.HEIGHT_SLOPE_MIN)
+    assert abs(a[1] - b[1]) < 0.01  # a 4 % change of the slope, not a fourfold step
+    assert list(slopes_a.values()) == [pytest.approx(dstages.HEIGHT_SLOPE_MIN)]
+    c, _ = run(0.72)
+    assert c[1] == pytest.approx(x1 - (0.60 + 0.72 * x1 - 0.549) / 0.72)
+
+
 def test_a_high_pattern_is_lowered_by_the_root_relief_first():
     """The height stage's first design (issue 71): a light-load pattern above its target
     gets the root relief's corner at the lower bound of relief_start and at least

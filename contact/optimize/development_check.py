@@ -17,7 +17,9 @@ written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the v
 60 µrad a longer ellipse, then a path nearer the lengthwise direction
 (:data:`COAST_LTE_STEPS`), then its TE level raised back (:func:`checked_coast_te`);
 :func:`checked_relief_lte` a drive design whose LTE still exceeds it a shallower root
-relief (:data:`RELIEF_LTE_FRACTIONS`). :func:`static_capacity` lowers the design torque to the
+relief (:data:`RELIEF_LTE_FRACTIONS`); :func:`checked_near_miss` a drive design that misses
+its light-load centre v and nothing by more than a small margin (:data:`NEAR_MISS`) a small
+blade-angle step with its TE level lowered. :func:`static_capacity` lowers the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
 the drive flank at the mounting excursions ΔE, ΔP (:func:`_excursions`). Split out of

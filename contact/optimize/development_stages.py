@@ -52,6 +52,17 @@ CROWNING_STEP = 10.0
 #: concave flank, the synthesis' default bearing, coarse LTCA at 15 % of 357 N m) a change
 #: of -1/0/+1 deg put the footprint centre at v 0.35/0.68/0.91, i.e. 0.28 per degree
 HEIGHT_SLOPE = 0.28
+#: least d(centre v)/d(blade angle change) [1/deg] the root-find steps with, half of
+#: :data:`HEIGHT_SLOPE`: a secant slope measured below it is taken as it (a continuous
+#: floor, not a switch). The coarse LTCA's footprint centre moves by node rows (about 0.05
+#: of the depth), so two designs a root-find step apart whose centres differ by less than
+#: a row give a slope that is the grid's, not the bearing's; the switch before (a measured
+#: slope above 0.05 taken, else :data:`HEIGHT_SLOPE`) made a 0.2 % change of the light
+#: torque turn a secant of 0.04 into 0.07 per degree and the next step from −0.15° into
+#: −0.57° (the spiral bevel 13x37 at Σ 60° of benchmarks/data/unseen_designs, its second
+#: bearing's height stage: 41.8 against 41.88 N m), after which the two searches went
+#: different ways
+HEIGHT_SLOPE_MIN = 0.5 * HEIGHT_SLOPE
 
 
 #: most designs of one root-find on the pattern's height (each ≈ 0.3 s CPU: steps 3-6
@@ -339,11 +350,12 @@ def _centre_height(evaluate: Callable[..., DevelopmentEvaluation],
     a gear engineer develops the height with (Stadtfeld, *Gleason Bevel Gear Technology*,
     2014; :mod:`geometry.synthesis.blade_change`). The root-find is a secant on
     f(Δα) = v_c(Δα) − v_target, the first step with :data:`HEIGHT_SLOPE`, then with the
-    slope measured, kept in a bracket once f changes sign (regula falsi), Δα clipped to
-    its bounds; it stops within a quarter of ``centre_tolerance``, after ``n_designs``
-    designs or at the stage's ``budget``. A design whose pattern could not be found (NaN
-    centre) halves the last step. Each design is ``evaluate``d (stage ``"height"``: every
-    target, so one that meets them all ends the development).
+    slope measured (at least :data:`HEIGHT_SLOPE_MIN`), kept in a bracket once f changes
+    sign (regula falsi), Δα clipped to its bounds; it stops within a quarter of
+    ``centre_tolerance``, after ``n_designs`` designs or at the stage's ``budget``. A
+    design whose pattern could not be found (NaN centre) halves the last step. Each
+    design is ``evaluate``d (stage ``"height"``: every target, so one that meets them all
+    ends the development).
 
     Returns
     -------
@@ -374,8 +386,8 @@ def _centre_height(evaluate: Callable[..., DevelopmentEvaluation],
             slope = HEIGHT_SLOPE
             if len(finite) >= 2:
                 (xa, fa, _), (xb, fb, _) = sorted(finite, key=lambda t: abs(t[1]))[:2]
-                if xa != xb and (fa - fb) / (xa - xb) > 0.05:
-                    slope = (fa - fb) / (xa - xb)
+                if xa != xb:  # the slope measured, floored (continuous in it)
+                    slope = max((fa - fb) / (xa - xb), HEIGHT_SLOPE_MIN)
             x = x0 - f0 / slope
         if x_prev is not None and not math.isfinite(tried[-1][1]):
             x = 0.5 * (x_prev + tried[-1][0])  # the last design failed: half its step
@@ -404,14 +416,14 @@ def footprint_centre_v(e: DevelopmentEvaluation) -> float:
 def _note_slope(evaluate: Callable[..., DevelopmentEvaluation],
                 tried: list[tuple[float, float, DevelopmentEvaluation]]) -> None:
     """The slope d(centre v)/d(blade-angle change) [1/deg] measured between the two
-    designs of ``tried`` nearest the target, kept per bearing for :func:`_recentred`
-    (where it is positive and not tiny; else :data:`HEIGHT_SLOPE`'s sign is kept)."""
+    designs of ``tried`` nearest the target, kept per bearing for :func:`_recentred`,
+    floored at :data:`HEIGHT_SLOPE_MIN` (as the root-find's steps)."""
     finite = sorted((t for t in tried if math.isfinite(t[1])), key=lambda t: abs(t[1]))
     if len(finite) < 2 or finite[0][0] == finite[1][0]:
         return
     slope = (finite[0][1] - finite[1][1]) / (finite[0][0] - finite[1][0])
-    if slope > 0.05:
-        evaluate.slopes[bearing_key(finite[0][2].values)] = slope  # type: ignore[attr-defined]
+    evaluate.slopes[bearing_key(finite[0][2].values)] = max(  # type: ignore[attr-defined]
+        slope, HEIGHT_SLOPE_MIN)
 
 
 def _height_stage(evaluate: Callable[..., DevelopmentEvaluation],
