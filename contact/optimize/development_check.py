@@ -19,7 +19,9 @@ written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the v
 :func:`checked_relief_lte` a drive design whose LTE still exceeds it a shallower root
 relief (:data:`RELIEF_LTE_FRACTIONS`); :func:`checked_near_miss` a drive design that misses
 its light-load centre v and nothing by more than a small margin (:data:`NEAR_MISS`) a small
-blade-angle step with its TE level lowered. :func:`static_capacity` lowers the design torque to the
+blade-angle step with its TE level lowered; :func:`checked_te_back` the TE level of a design
+still missing a target raised back to the flank's own on the bearing the steps ended at.
+:func:`static_capacity` lowers the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
 the drive flank at the mounting excursions ΔE, ΔP (:func:`_excursions`). Split out of
@@ -335,8 +337,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the
     ellipse a step longer (:func:`checked_ellipse`), then the long bearing
     (:func:`checked_long`) and a shallower root relief where it exceeds 60 µrad
-    (:func:`checked_relief_lte`); last, where it misses its light-load centre v and
-    nothing by more than a small margin, a small blade-angle step with the TE level
+    (:func:`checked_relief_lte`); its TE level raised back to the flank's own where it
+    still misses a target (:func:`checked_te_back`); last, where it misses its light-load
+    centre v and nothing by more than a small margin, a small blade-angle step with the TE level
     lowered (:func:`checked_near_miss`; ``slopes``: the height stage's measured
     d(centre v)/d(blade angle) per bearing). Run again where the design torque was
     lowered after them (to the
@@ -354,6 +357,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = checked_ellipse(best, targets, setup, teeth, say, placed)
     best = checked_long(best, targets, setup, teeth, say, placed)
     best = checked_relief_lte(best, targets, setup, teeth, say, placed)
+    best = checked_te_back(best, targets, setup, teeth, say, placed, level)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 
@@ -571,6 +575,46 @@ def checked_relief_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             continue
         best = e
     return best
+
+
+def checked_te_back(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                    setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                    say: Callable[[str], None],
+                    placed: Callable[[Mapping[str, float]], Case], level: float
+                    ) -> DevelopmentEvaluation:
+    """The TE level re-examined on the bearing the check's steps ended at: where the
+    checked design misses a target and its ``te_level`` is below the flank's own level
+    ``level`` [µrad] (lowered by the coarse search's TE stage or the check's, on the
+    bearing as it was before the steps turned its path, changed its ellipse, its relief
+    or its blade angle), one design at ``level`` (within the bounds of
+    :data:`~contact.optimize.development_targets.TE_NAME`), every other prescription
+    kept; placed and checked at :data:`CHECK_LTCA` and kept where it ranks better
+    (:func:`_check_rank`) and is tolerant (:func:`_tolerant_variant`).
+
+    Why: the TE stage chooses the level for the bearing of its design, the check's steps
+    change the bearing after it and keep the level, and no step raises it back. On the
+    unseen spiral bevel 13x37 at Σ 60° (benchmarks/data/unseen_designs, drive, ``ltca
+    run``'s sampling at 41.8 / 279.2 N m, 2026-11-26) the search with the light torque
+    41.8 N m ran its TE stage on one design (te_level 45 → 10), that with 41.88 N m on
+    another, and the check's steps took both to the same bearing (path −80°, ellipse 0.7,
+    root relief 60 µm from 0.2, no blade-angle change): with te_level 10 the flank peaked
+    at 2779 MPa at the design torque (above the static strength 2400 MPa, so the design
+    torque was lowered to 217.7 N m), with 45 at 2142 MPa (LTE 87 µrad): the outcome
+    followed which design the search's TE stage met, a 0.2 % change of a torque apart."""
+    if (best.full is None or not best.checked or best.met or TE_NAME not in targets.variables
+            or TE_NAME not in best.values):
+        return best
+    lo, hi = (float(x) for x in targets.variables[TE_NAME])
+    now, x = float(best.values[TE_NAME]), float(np.clip(level, lo, hi))
+    if not x > now + 1.0:
+        return best
+    e = _said_variant(best, dict(best.values) | {TE_NAME: x}, "te back",
+                      f"at {TE_NAME} {x:.3g} urad (its own level, on the bearing the "
+                      "steps ended at)", targets, setup, teeth, say, placed)
+    if (e is None or _check_rank(e) >= _check_rank(best)
+            or not _tolerant_variant(e, targets, setup, teeth, say)):
+        return best
+    return e
 
 
 #: the near-miss step (:func:`checked_near_miss`): a missed target is near where its
