@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import logging
 import time
+from collections import OrderedDict
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -524,7 +525,7 @@ def _map_members(case: Case, segments: list[ContactSegments], model: PairComplia
             nrm[rows] = (sign * seg.normals) @ rot[i, r]
             ends[rows_e] = (distinct[r][0] - off[i, r]) @ rot[i, r]
         jobs.append((model.member(name), mid, nrm, None, ends))
-    mapped = shell_points_many(jobs, END_TOLERANCE)
+    mapped = _kept_mapping(jobs)
     mids, both = {}, {}
     per_roll: list[dict[str, ShellPoints]] = [{} for _ in range(rolls)]
     for i, name in enumerate(("pinion", "gear")):
@@ -536,6 +537,111 @@ def _map_members(case: Case, segments: list[ContactSegments], model: PairComplia
         for r in range(rolls):
             per_roll[r][name] = _take(mids[name], slice(mid_at[r], mid_at[r + 1]))
     return per_roll, mids, both
+
+
+class _Identity:
+    """A tooth model as a memo key compared by identity (it holds arrays: no hash of its
+    own); the key holds the model, so its ``id`` is not reused while the memo keeps it."""
+
+    __slots__ = ("obj",)
+
+    def __init__(self, obj) -> None:
+        self.obj = obj
+
+    def __hash__(self) -> int:
+        return id(self.obj)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _Identity) and other.obj is self.obj
+
+
+#: points whose shell coordinates :func:`_kept_mapping` keeps per tooth model (the default
+#: case's analysis maps ~3,000 midpoints and ends a member)
+POINTS_KEPT = 16384
+
+_SHELL_FIELDS = ("x", "theta", "u", "v", "side", "offset", "frame")
+
+
+@memoised(maxsize=4)
+def _point_store(data: _Identity) -> OrderedDict:
+    """The shell coordinates of the points mapped so far onto the tooth model
+    ``data.obj``, by the point's bytes (member frame; a midpoint with its normal): one
+    store per tooth model, emptied with the memo (``clear_caches``); each entry is
+    (ShellPoints of a mapped batch, the point's row in it)."""
+    return OrderedDict()
+
+
+def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
+    """:func:`contact.compliance.tooth.shell_points_many` of jobs (data, midpoints (N, 3),
+    normals (N, 3), None, ends (D, 3)) in their members' frames, each point's shell
+    coordinates kept per process and tooth model (:func:`_point_store`): the analyses of a
+    torque series or one repeated at one misalignment map the same segments (the memoised
+    curve segments, :mod:`contact.ltca.segments`). Only the points not kept are mapped, in
+    one batch as before (a point's coordinates are its own to round-off: the batch
+    iterates until its slowest point converged); a point the mapping refuses raises as
+    there and is not kept."""
+    stores, keys, todo = [], [], []
+    for data, mid, nrm, _, ends in jobs:
+        store = _point_store(_Identity(data))
+        k_mid = [b"m" + r.tobytes()
+                 for r in np.ascontiguousarray(np.concatenate([mid, nrm], axis=1))]
+        k_end = [b"e" + r.tobytes() for r in np.ascontiguousarray(ends)]
+        miss_mid = [i for i, k in enumerate(k_mid) if k not in store]
+        miss_end = [i for i, k in enumerate(k_end) if k not in store]
+        stores.append(store)
+        keys.append((k_mid, k_end))
+        todo.append((miss_mid, miss_end))
+    run = [i for i, (mm, me) in enumerate(todo) if mm or me]
+    if run:
+        new = shell_points_many([(jobs[i][0], jobs[i][1][todo[i][0]], jobs[i][2][todo[i][0]],
+                                  None, jobs[i][4][todo[i][1]]) for i in run], END_TOLERANCE)
+        for i, (sp_mid, sp_end) in zip(run, new, strict=True):
+            for a in (*sp_mid, *sp_end):  # kept: read-only
+                if isinstance(a, np.ndarray):
+                    a.flags.writeable = False
+            store = stores[i]
+            (k_mid, k_end), (miss_mid, miss_end) = keys[i], todo[i]
+            for r, j in enumerate(miss_mid):
+                store[k_mid[j]] = (sp_mid, r)
+            for r, j in enumerate(miss_end):
+                store[k_end[j]] = (sp_end, r)
+    out = []
+    for i in range(len(jobs)):
+        store = stores[i]
+        k_mid, k_end = keys[i]
+        if run and i in run and len(todo[i][0]) == len(k_mid) and len(todo[i][1]) == len(
+                k_end):
+            out.append(list(new[run.index(i)]))  # nothing kept: the batch's own result
+        else:
+            out.append([_gather(store, k_mid, normal=True), _gather(store, k_end,
+                                                                     normal=False)])
+        for k in (*k_mid, *k_end):
+            store.move_to_end(k)
+        while len(store) > POINTS_KEPT:
+            store.popitem(last=False)
+    return out
+
+
+def _gather(store: OrderedDict, keys: list[bytes], normal: bool) -> ShellPoints:
+    """The kept shell coordinates of the points ``keys`` as one ShellPoints (their order)."""
+    entries = [store[k] for k in keys]
+    batch_of: dict[int, tuple[ShellPoints, list[int], list[int]]] = {}
+    for pos, (sp, row) in enumerate(entries):
+        item = batch_of.setdefault(id(sp), (sp, [], []))
+        item[1].append(pos)
+        item[2].append(row)
+    n = len(keys)
+    first = entries[0][0] if entries else None
+    fields = {}
+    for name in (*_SHELL_FIELDS, *(("normal",) if normal else ())):
+        ref = getattr(first, name) if first is not None else np.zeros(0)
+        arr = np.empty((n, *np.shape(ref)[1:]), dtype=np.asarray(ref).dtype)
+        for sp, pos, row in batch_of.values():
+            arr[pos] = getattr(sp, name)[row]
+        fields[name] = arr
+    if not normal:
+        fields["normal"] = None
+    return ShellPoints(**fields)
 
 
 def _block(idx: np.ndarray):
