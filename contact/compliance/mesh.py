@@ -27,9 +27,9 @@ mesh_compliance       C and its parts
 
 from __future__ import annotations
 
+import itertools
 import logging
 import time
-from collections import OrderedDict
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -562,13 +562,74 @@ POINTS_KEPT = 16384
 _SHELL_FIELDS = ("x", "theta", "u", "v", "side", "offset", "frame")
 
 
+class _PointStore:
+    """The shell coordinates kept for one tooth model (:func:`_point_store`): ``rows`` maps
+    a point's key to ``batch << 32 | row`` (its row in a mapped batch), ``batches`` holds
+    those batches' ShellPoints (read-only)."""
+
+    __slots__ = ("batches", "rows", "serial")
+
+    def __init__(self) -> None:
+        self.rows: dict[bytes, int] = {}
+        self.batches: dict[int, ShellPoints] = {}
+        self.serial = 0
+
+    def add(self, sp: ShellPoints, keys: list[bytes]) -> None:
+        """Keep the points ``keys`` (in the order of ``sp``'s rows)."""
+        for a in sp:
+            if isinstance(a, np.ndarray):
+                a.flags.writeable = False
+        self.serial += 1
+        self.batches[self.serial] = sp
+        base = self.serial << 32
+        self.rows.update(zip(keys, range(base, base + len(keys)), strict=True))
+
+    def trim(self, kept: int) -> None:
+        """Drop the oldest points beyond ``kept``, and the batches no point refers to."""
+        if len(self.rows) <= kept:
+            return
+        for k in list(itertools.islice(self.rows, len(self.rows) - kept)):
+            del self.rows[k]
+        used = set(np.unique(np.fromiter(self.rows.values(), dtype=np.int64) >> 32).tolist())
+        for b in [b for b in self.batches if b not in used]:
+            del self.batches[b]
+
+    def gather(self, keys: list[bytes], normal: bool) -> ShellPoints:
+        """The kept shell coordinates of the points ``keys`` as one ShellPoints."""
+        code = np.fromiter((self.rows[k] for k in keys), dtype=np.int64, count=len(keys))
+        batch, row = code >> 32, code & 0xFFFFFFFF
+        names = (*_SHELL_FIELDS, *(("normal",) if normal else ()))
+        fields: dict[str, np.ndarray | None] = {"normal": None}
+        ids = np.unique(batch)
+        for b in ids.tolist():
+            sp = self.batches[b]
+            if ids.size == 1:  # one batch: a take of its rows
+                fields.update({name: getattr(sp, name)[row] for name in names})
+                break
+            sel = batch == b
+            for name in names:
+                part = getattr(sp, name)
+                if name not in fields or fields[name] is None:
+                    fields[name] = np.empty((len(keys), *part.shape[1:]), dtype=part.dtype)
+                fields[name][sel] = part[row[sel]]
+        return ShellPoints(**fields)
+
+
 @memoised(maxsize=4)
-def _point_store(data: _Identity) -> OrderedDict:
+def _point_store(data: _Identity) -> _PointStore:
     """The shell coordinates of the points mapped so far onto the tooth model
     ``data.obj``, by the point's bytes (member frame; a midpoint with its normal): one
-    store per tooth model, emptied with the memo (``clear_caches``); each entry is
-    (ShellPoints of a mapped batch, the point's row in it)."""
-    return OrderedDict()
+    store per tooth model, emptied with the memo (``clear_caches``); the last
+    :data:`POINTS_KEPT` points are kept (the oldest dropped first)."""
+    return _PointStore()
+
+
+def _row_keys(rows: np.ndarray, tag: bytes) -> list[bytes]:
+    """Each row of a 2-D float array as ``tag`` + its bytes (a memo key per row)."""
+    rows = np.ascontiguousarray(rows, dtype=float)
+    raw = rows.tobytes()
+    width = rows.shape[1] * rows.itemsize
+    return [tag + raw[i:i + width] for i in range(0, len(raw), width)]
 
 
 def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
@@ -583,65 +644,30 @@ def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
     stores, keys, todo = [], [], []
     for data, mid, nrm, _, ends in jobs:
         store = _point_store(_Identity(data))
-        k_mid = [b"m" + r.tobytes()
-                 for r in np.ascontiguousarray(np.concatenate([mid, nrm], axis=1))]
-        k_end = [b"e" + r.tobytes() for r in np.ascontiguousarray(ends)]
-        miss_mid = [i for i, k in enumerate(k_mid) if k not in store]
-        miss_end = [i for i, k in enumerate(k_end) if k not in store]
+        k_mid = _row_keys(np.concatenate([mid, nrm], axis=1), b"m")
+        k_end = _row_keys(ends, b"e")
+        todo.append(([i for i, k in enumerate(k_mid) if k not in store.rows],
+                     [i for i, k in enumerate(k_end) if k not in store.rows]))
         stores.append(store)
         keys.append((k_mid, k_end))
-        todo.append((miss_mid, miss_end))
     run = [i for i, (mm, me) in enumerate(todo) if mm or me]
+    fresh: dict[int, list[ShellPoints]] = {}
     if run:
         new = shell_points_many([(jobs[i][0], jobs[i][1][todo[i][0]], jobs[i][2][todo[i][0]],
                                   None, jobs[i][4][todo[i][1]]) for i in run], END_TOLERANCE)
         for i, (sp_mid, sp_end) in zip(run, new, strict=True):
-            for a in (*sp_mid, *sp_end):  # kept: read-only
-                if isinstance(a, np.ndarray):
-                    a.flags.writeable = False
-            store = stores[i]
             (k_mid, k_end), (miss_mid, miss_end) = keys[i], todo[i]
-            for r, j in enumerate(miss_mid):
-                store[k_mid[j]] = (sp_mid, r)
-            for r, j in enumerate(miss_end):
-                store[k_end[j]] = (sp_end, r)
+            stores[i].add(sp_mid, [k_mid[j] for j in miss_mid])
+            stores[i].add(sp_end, [k_end[j] for j in miss_end])
+            if len(miss_mid) == len(k_mid) and len(miss_end) == len(k_end):
+                fresh[i] = [sp_mid, sp_end]  # nothing kept: the batch's own result
     out = []
-    for i in range(len(jobs)):
-        store = stores[i]
+    for i, store in enumerate(stores):
         k_mid, k_end = keys[i]
-        if run and i in run and len(todo[i][0]) == len(k_mid) and len(todo[i][1]) == len(
-                k_end):
-            out.append(list(new[run.index(i)]))  # nothing kept: the batch's own result
-        else:
-            out.append([_gather(store, k_mid, normal=True), _gather(store, k_end,
-                                                                     normal=False)])
-        for k in (*k_mid, *k_end):
-            store.move_to_end(k)
-        while len(store) > POINTS_KEPT:
-            store.popitem(last=False)
+        out.append(fresh[i] if i in fresh else [store.gather(k_mid, normal=True),
+                                                store.gather(k_end, normal=False)])
+        store.trim(POINTS_KEPT)
     return out
-
-
-def _gather(store: OrderedDict, keys: list[bytes], normal: bool) -> ShellPoints:
-    """The kept shell coordinates of the points ``keys`` as one ShellPoints (their order)."""
-    entries = [store[k] for k in keys]
-    batch_of: dict[int, tuple[ShellPoints, list[int], list[int]]] = {}
-    for pos, (sp, row) in enumerate(entries):
-        item = batch_of.setdefault(id(sp), (sp, [], []))
-        item[1].append(pos)
-        item[2].append(row)
-    n = len(keys)
-    first = entries[0][0] if entries else None
-    fields = {}
-    for name in (*_SHELL_FIELDS, *(("normal",) if normal else ())):
-        ref = getattr(first, name) if first is not None else np.zeros(0)
-        arr = np.empty((n, *np.shape(ref)[1:]), dtype=np.asarray(ref).dtype)
-        for sp, pos, row in batch_of.values():
-            arr[pos] = getattr(sp, name)[row]
-        fields[name] = arr
-    if not normal:
-        fields["normal"] = None
-    return ShellPoints(**fields)
 
 
 def _block(idx: np.ndarray):

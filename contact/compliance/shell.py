@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import logging
 import time
-from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -726,12 +725,12 @@ HALF_VECTORS_KEPT = 4096
 
 
 @memoised(maxsize=4)
-def _half_vector_store(model: _Identity) -> OrderedDict:
+def _half_vector_store(model: _Identity) -> dict:
     """The columns of Y = U⁻ᵀ S Φ computed so far for segments on the tooth of the shell
     model ``model.obj``, by the segment's bytes (ends, normal, Gauss points): one store per
     model, emptied with the memo (``clear_caches``); :func:`_half_vectors` keeps the last
-    :data:`HALF_VECTORS_KEPT`."""
-    return OrderedDict()
+    :data:`HALF_VECTORS_KEPT` (the oldest dropped first)."""
+    return {}
 
 
 def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | None,
@@ -750,33 +749,37 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
     rows = [ends.reshape(n_pts, 4)]
     if normals is not None:
         rows.append(np.asarray(normals, dtype=float))
-    rows = np.ascontiguousarray(np.concatenate(rows, axis=1))
+    rows = np.ascontiguousarray(np.concatenate(rows, axis=1), dtype=float)
     tag = ng.to_bytes(2, "little") + (b"n" if normals is not None else b"-")
-    keys = [tag + r.tobytes() for r in rows]
+    keys = _row_keys(rows, tag)
     store = _half_vector_store(_Identity(model))
     miss = [i for i, k in enumerate(keys) if k not in store]
-    if miss:
-        new = _half_vectors_of(model, ends[miss], None if normals is None
-                               else np.asarray(normals, dtype=float)[miss], ng)
-        new.flags.writeable = False  # its columns are kept
-        if len(miss) == n_pts:
-            y = new
-        else:
-            y = np.empty((new.shape[0], n_pts), order="F")
-            y[:, miss] = new
-        for c, i in enumerate(miss):
-            store[keys[i]] = new[:, c]
+    if len(miss) == n_pts:  # nothing kept: the product's own array
+        y = _half_vectors_of(model, ends, normals if normals is None
+                             else np.asarray(normals, dtype=float), ng)
+        y.flags.writeable = False  # its columns are kept
+        store.update(zip(keys, y.T, strict=True))
     else:
         y = np.empty((model.n_dof, n_pts), order="F")
-    if len(miss) < n_pts:
+        if miss:
+            new = _half_vectors_of(model, ends[miss], None if normals is None
+                                   else np.asarray(normals, dtype=float)[miss], ng)
+            new.flags.writeable = False  # its columns are kept
+            y[:, miss] = new
+            store.update(zip([keys[i] for i in miss], new.T, strict=True))
         missed = set(miss)
-        for i, k in enumerate(keys):
-            if i not in missed:
-                y[:, i] = store[k]
-                store.move_to_end(k)
-    while len(store) > HALF_VECTORS_KEPT:
-        store.popitem(last=False)
+        hit = [i for i in range(n_pts) if i not in missed]
+        y[:, hit] = np.stack([store[keys[i]] for i in hit], axis=1)
+    while len(store) > HALF_VECTORS_KEPT:  # the oldest first
+        del store[next(iter(store))]
     return y
+
+
+def _row_keys(rows: np.ndarray, tag: bytes) -> list[bytes]:
+    """Each row of a C-ordered 2-D array as ``tag`` + its bytes (a memo key per row)."""
+    raw = rows.tobytes()
+    width = rows.shape[1] * rows.itemsize
+    return [tag + raw[i:i + width] for i in range(0, len(raw), width)]
 
 
 def _half_vectors_of(model: ShellModel, ends: np.ndarray, normals: np.ndarray | None,
