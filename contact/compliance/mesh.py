@@ -596,7 +596,7 @@ class _PointStore:
 
     def gather(self, keys: list[bytes], normal: bool) -> ShellPoints:
         """The kept shell coordinates of the points ``keys`` as one ShellPoints."""
-        code = np.fromiter((self.rows[k] for k in keys), dtype=np.int64, count=len(keys))
+        code = np.fromiter(map(self.rows.__getitem__, keys), dtype=np.int64, count=len(keys))
         batch, row = code >> 32, code & 0xFFFFFFFF
         names = (*_SHELL_FIELDS, *(("normal",) if normal else ()))
         fields: dict[str, np.ndarray | None] = {"normal": None}
@@ -632,6 +632,12 @@ def _row_keys(rows: np.ndarray, tag: bytes) -> list[bytes]:
     return [tag + raw[i:i + width] for i in range(0, len(raw), width)]
 
 
+def _missing(kept: dict, keys: list[bytes]) -> list[int]:
+    """The indices of the ``keys`` not in ``kept``."""
+    return np.flatnonzero(~np.fromiter(map(kept.__contains__, keys), dtype=bool,
+                                       count=len(keys))).tolist()
+
+
 def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
     """:func:`contact.compliance.tooth.shell_points_many` of jobs (data, midpoints (N, 3),
     normals (N, 3), None, ends (D, 3)) in their members' frames, each point's shell
@@ -646,8 +652,7 @@ def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
         store = _point_store(_Identity(data))
         k_mid = _row_keys(np.concatenate([mid, nrm], axis=1), b"m")
         k_end = _row_keys(ends, b"e")
-        todo.append(([i for i, k in enumerate(k_mid) if k not in store.rows],
-                     [i for i, k in enumerate(k_end) if k not in store.rows]))
+        todo.append((_missing(store.rows, k_mid), _missing(store.rows, k_end)))
         stores.append(store)
         keys.append((k_mid, k_end))
     run = [i for i, (mm, me) in enumerate(todo) if mm or me]

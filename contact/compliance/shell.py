@@ -35,6 +35,7 @@ THEORIES            registry of kinematic theories (seed Mindlin, Mindlin, highe
 
 from __future__ import annotations
 
+import itertools
 import logging
 import time
 from collections.abc import Callable
@@ -753,7 +754,8 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
     tag = ng.to_bytes(2, "little") + (b"n" if normals is not None else b"-")
     keys = _row_keys(rows, tag)
     store = _half_vector_store(_Identity(model))
-    miss = [i for i, k in enumerate(keys) if k not in store]
+    miss = np.flatnonzero(~np.fromiter(map(store.__contains__, keys), dtype=bool,
+                                       count=n_pts)).tolist()
     if len(miss) == n_pts:  # nothing kept: the product's own array
         y = _half_vectors_of(model, ends, normals if normals is None
                              else np.asarray(normals, dtype=float), ng)
@@ -770,8 +772,9 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
         missed = set(miss)
         hit = [i for i in range(n_pts) if i not in missed]
         y[:, hit] = np.stack([store[keys[i]] for i in hit], axis=1)
-    while len(store) > HALF_VECTORS_KEPT:  # the oldest first
-        del store[next(iter(store))]
+    if len(store) > HALF_VECTORS_KEPT:  # the oldest first, in one pass
+        for k in list(itertools.islice(store, len(store) - HALF_VECTORS_KEPT)):
+            del store[k]
     return y
 
 
