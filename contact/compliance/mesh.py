@@ -27,8 +27,10 @@ mesh_compliance       C and its parts
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import logging
+import threading
 import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -53,6 +55,7 @@ from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
+from geometry.machine.meshing import warm_seeds_active
 from geometry.pair.assembly import case_transforms
 
 if TYPE_CHECKING:
@@ -567,9 +570,10 @@ class _PointStore:
     a point's key to ``batch << 32 | row`` (its row in a mapped batch), ``batches`` holds
     those batches' ShellPoints (read-only)."""
 
-    __slots__ = ("batches", "rows", "serial")
+    __slots__ = ("batches", "lock", "rows", "serial")
 
     def __init__(self) -> None:
+        self.lock = threading.Lock()  # (an analysis per thread: one at a time per model)
         self.rows: dict[bytes, int] = {}
         self.batches: dict[int, ShellPoints] = {}
         self.serial = 0
@@ -647,13 +651,22 @@ def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
     one batch as before (a point's coordinates are its own to round-off: the batch
     iterates until its slowest point converged); a point the mapping refuses raises as
     there and is not kept."""
-    stores, keys, todo = [], [], []
-    for data, mid, nrm, _, ends in jobs:
-        store = _point_store(_Identity(data))
+    if warm_seeds_active():  # a development's trial: its teeth are new at every trial
+        return shell_points_many(jobs, END_TOLERANCE)
+    stores = [_point_store(_Identity(job[0])) for job in jobs]
+    with contextlib.ExitStack() as held:
+        for store in {id(st): st for st in stores}.values():
+            held.enter_context(store.lock)
+        return _kept_mapping_held(jobs, stores)
+
+
+def _kept_mapping_held(jobs: list, stores: list[_PointStore]) -> list[list[ShellPoints]]:
+    """:func:`_kept_mapping` with the jobs' stores (their locks held)."""
+    keys, todo = [], []
+    for (_, mid, nrm, _, ends), store in zip(jobs, stores, strict=True):
         k_mid = _row_keys(np.concatenate([mid, nrm], axis=1), b"m")
         k_end = _row_keys(ends, b"e")
         todo.append((_missing(store.rows, k_mid), _missing(store.rows, k_end)))
-        stores.append(store)
         keys.append((k_mid, k_end))
     run = [i for i, (mm, me) in enumerate(todo) if mm or me]
     fresh: dict[int, list[ShellPoints]] = {}
@@ -671,6 +684,7 @@ def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
         k_mid, k_end = keys[i]
         out.append(fresh[i] if i in fresh else [store.gather(k_mid, normal=True),
                                                 store.gather(k_end, normal=False)])
+    for store in stores:
         store.trim(POINTS_KEPT)
     return out
 

@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import itertools
 import logging
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -58,6 +59,7 @@ from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, positive, real_array
+from geometry.machine.meshing import warm_seeds_active
 
 __all__ = [
     "THEORIES",
@@ -725,13 +727,25 @@ class _Identity:
 HALF_VECTORS_KEPT = 4096
 
 
+class _ColumnStore:
+    """The columns of Y kept for one shell model (:func:`_half_vector_store`): ``columns``
+    maps a segment's key to its column (read-only), ``lock`` serialises the threads that
+    use it."""
+
+    __slots__ = ("columns", "lock")
+
+    def __init__(self) -> None:
+        self.columns: dict[bytes, np.ndarray] = {}
+        self.lock = threading.Lock()
+
+
 @memoised(maxsize=4)
-def _half_vector_store(model: _Identity) -> dict:
+def _half_vector_store(model: _Identity) -> _ColumnStore:
     """The columns of Y = U⁻ᵀ S Φ computed so far for segments on the tooth of the shell
     model ``model.obj``, by the segment's bytes (ends, normal, Gauss points): one store per
     model, emptied with the memo (``clear_caches``); :func:`_half_vectors` keeps the last
     :data:`HALF_VECTORS_KEPT` (the oldest dropped first)."""
-    return {}
+    return _ColumnStore()
 
 
 def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | None,
@@ -746,35 +760,37 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
     segments, :mod:`contact.ltca.segments`). The columns computed here are those of the
     segments not kept, in one load-vector build and one triangular product as before; a
     call with none kept gives the same array as that product."""
+    nrm = None if normals is None else np.asarray(normals, dtype=float)
+    if warm_seeds_active():  # a development's trial: its teeth are new at every trial
+        return _half_vectors_of(model, ends, nrm, ng)
     n_pts = ends.shape[0]
-    rows = [ends.reshape(n_pts, 4)]
-    if normals is not None:
-        rows.append(np.asarray(normals, dtype=float))
+    rows = [ends.reshape(n_pts, 4)] + ([] if nrm is None else [nrm])
     rows = np.ascontiguousarray(np.concatenate(rows, axis=1), dtype=float)
-    tag = ng.to_bytes(2, "little") + (b"n" if normals is not None else b"-")
+    tag = ng.to_bytes(2, "little") + (b"n" if nrm is not None else b"-")
     keys = _row_keys(rows, tag)
     store = _half_vector_store(_Identity(model))
-    miss = np.flatnonzero(~np.fromiter(map(store.__contains__, keys), dtype=bool,
-                                       count=n_pts)).tolist()
-    if len(miss) == n_pts:  # nothing kept: the product's own array
-        y = _half_vectors_of(model, ends, normals if normals is None
-                             else np.asarray(normals, dtype=float), ng)
-        y.flags.writeable = False  # its columns are kept
-        store.update(zip(keys, y.T, strict=True))
-    else:
-        y = np.empty((model.n_dof, n_pts), order="F")
-        if miss:
-            new = _half_vectors_of(model, ends[miss], None if normals is None
-                                   else np.asarray(normals, dtype=float)[miss], ng)
-            new.flags.writeable = False  # its columns are kept
-            y[:, miss] = new
-            store.update(zip([keys[i] for i in miss], new.T, strict=True))
-        missed = set(miss)
-        hit = [i for i in range(n_pts) if i not in missed]
-        y[:, hit] = np.stack([store[keys[i]] for i in hit], axis=1)
-    if len(store) > HALF_VECTORS_KEPT:  # the oldest first, in one pass
-        for k in list(itertools.islice(store, len(store) - HALF_VECTORS_KEPT)):
-            del store[k]
+    with store.lock:  # (an analysis per thread: one at a time per model)
+        kept = store.columns
+        miss = np.flatnonzero(~np.fromiter(map(kept.__contains__, keys), dtype=bool,
+                                           count=n_pts)).tolist()
+        if len(miss) == n_pts:  # nothing kept: the product's own array
+            y = _half_vectors_of(model, ends, nrm, ng)
+            y.flags.writeable = False  # its columns are kept
+            kept.update(zip(keys, y.T, strict=True))
+        else:
+            y = np.empty((model.n_dof, n_pts), order="F")
+            if miss:
+                new = _half_vectors_of(model, ends[miss], None if nrm is None else nrm[miss],
+                                       ng)
+                new.flags.writeable = False  # its columns are kept
+                y[:, miss] = new
+                kept.update(zip([keys[i] for i in miss], new.T, strict=True))
+            missed = set(miss)
+            hit = [i for i in range(n_pts) if i not in missed]
+            y[:, hit] = np.stack([kept[keys[i]] for i in hit], axis=1)
+        if len(kept) > HALF_VECTORS_KEPT:  # the oldest first, in one pass
+            for k in list(itertools.islice(kept, len(kept) - HALF_VECTORS_KEPT)):
+                del kept[k]
     return y
 
 
