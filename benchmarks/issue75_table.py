@@ -28,6 +28,8 @@ waited for, so the FE build's solver worker counts; the largest of them, not the
   run`` runs it, root stress read from the FE cache, after one warm-up; median of 5)
   against a 1500² Cholesky (``numpy.linalg.cholesky``, one BLAS thread, median of 5),
   with each stage's CPU (``benchmarks/stage_clock.py``);
+* (with ``warm``) a warm analysis at a torque new to the process, five torques from 0.8 to
+  1.2 × 250 N·m in turn: what a torque series at one misalignment pays per analysis
 * ``study`` — a study point's CPU in this process (:func:`contact.study.engine.
   analyse_point` at 250 N·m, 5 misalignments, median).
 
@@ -188,12 +190,23 @@ def row_warm(tmp: Path) -> tuple[list[list], dict]:
         t0 = time.process_time()
         np.linalg.cholesky(a)
         chol.append(time.process_time() - t0)
+    # a torque series at the case's misalignment: each torque new to the process (the
+    # ease-off, its curve segments and the shell's per-segment work are kept, the edge
+    # segments, the pools' selection, the solves and the root stress are not)
+    series = []
+    for k in range(5):
+        t0 = time.process_time()
+        run_analysis(case, [TORQUE * (0.8 + 0.1 * k) + 1.0])
+        series.append(time.process_time() - t0)
     t, c = statistics.median(times), statistics.median(chol)
+    t_new = statistics.median(series)
     med = {k: statistics.median(s.get(k, 0.0) for s in stages) for k in stages[0]}
     med["rest (chain, datasets, writing groups)"] = t - sum(med.values())
     return ([["warm analysis at 250 N·m (median of 5)", t, None,
               f"{t / c:.1f} × Cholesky 1500² ({c * 1e3:.0f} ms); target 3 ×; seed 45 s: "
-              f"/ {SEED_ANALYSIS_S / t:.0f}"]], med)
+              f"/ {SEED_ANALYSIS_S / t:.0f}"],
+             ["warm analysis at a torque new to the process (median of 5)", t_new, None,
+              f"{t_new / c:.1f} × Cholesky; a torque series at one misalignment"]], med)
 
 
 def row_study() -> list[list]:

@@ -359,6 +359,39 @@ def test_mesh_compliance_of_several_rolls_in_one_batch_equals_one_by_one():
     assert mesh_compliance_many(case, []) == []
 
 
+def test_kept_points_and_columns_equal_a_fresh_assembly():
+    """Each point's shell coordinates and each segment's column of Y kept per tooth model
+    (issue 75 item 4: ``_point_store``, ``_half_vector_store``): a repeat, whose points and
+    columns are all kept, gives the fresh assembly's matrices to the bit (the kept values
+    are that assembly's own); rolls of which only some are kept (the first roll alone
+    first, then all three) agree with it to round-off (1e-12 relative: the kept values come
+    from another batch, whose triangular product and mapping iterations differ in the
+    last bits); so do the matrices after the stores are emptied."""
+    from contact.compliance import mesh as mesh_mod
+    from contact.compliance import shell as shell_mod
+    from contact.compliance.mesh import mesh_compliance_many, pair_compliance_model
+
+    def empty():
+        mesh_mod._point_store.cache_clear()
+        shell_mod._half_vector_store.cache_clear()
+
+    case, batch = _three_rolls()
+    model = pair_compliance_model(case)
+    empty()
+    fresh = mesh_compliance_many(case, batch, model=model)
+    again = mesh_compliance_many(case, batch, model=model)
+    empty()
+    mesh_compliance_many(case, batch[:1], model=model)
+    partly = mesh_compliance_many(case, batch, model=model)
+    for (c0, i0), (c1, i1), (c2, i2) in zip(fresh, again, partly, strict=True):
+        np.testing.assert_array_equal(c1, c0)
+        np.testing.assert_array_equal(i1["weber_depth"], i0["weber_depth"])
+        np.testing.assert_allclose(c2, c0, rtol=1e-12, atol=1e-12 * np.abs(c0).max())
+        np.testing.assert_allclose(i2["weber_depth"], i0["weber_depth"], rtol=1e-12)
+    assert mesh_mod._point_store.cache_info().currsize == 2  # one store per member
+    empty()
+
+
 def _three_rolls():
     """The segments of three roll positions of the ISO 23509 hypoid as ContactSegments."""
     from contact.compliance.mesh import ContactSegments

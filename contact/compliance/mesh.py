@@ -27,7 +27,10 @@ mesh_compliance       C and its parts
 
 from __future__ import annotations
 
+import contextlib
+import itertools
 import logging
+import threading
 import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -52,6 +55,7 @@ from geometry.core.caches import memoised
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
+from geometry.machine.meshing import warm_seeds_active
 from geometry.pair.assembly import case_transforms
 
 if TYPE_CHECKING:
@@ -524,7 +528,7 @@ def _map_members(case: Case, segments: list[ContactSegments], model: PairComplia
             nrm[rows] = (sign * seg.normals) @ rot[i, r]
             ends[rows_e] = (distinct[r][0] - off[i, r]) @ rot[i, r]
         jobs.append((model.member(name), mid, nrm, None, ends))
-    mapped = shell_points_many(jobs, END_TOLERANCE)
+    mapped = _kept_mapping(jobs)
     mids, both = {}, {}
     per_roll: list[dict[str, ShellPoints]] = [{} for _ in range(rolls)]
     for i, name in enumerate(("pinion", "gear")):
@@ -536,6 +540,153 @@ def _map_members(case: Case, segments: list[ContactSegments], model: PairComplia
         for r in range(rolls):
             per_roll[r][name] = _take(mids[name], slice(mid_at[r], mid_at[r + 1]))
     return per_roll, mids, both
+
+
+class _Identity:
+    """A tooth model as a memo key compared by identity (it holds arrays: no hash of its
+    own); the key holds the model, so its ``id`` is not reused while the memo keeps it."""
+
+    __slots__ = ("obj",)
+
+    def __init__(self, obj) -> None:
+        self.obj = obj
+
+    def __hash__(self) -> int:
+        return id(self.obj)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _Identity) and other.obj is self.obj
+
+
+#: points whose shell coordinates :func:`_kept_mapping` keeps per tooth model (the default
+#: case's analysis maps ~3,000 midpoints and ends a member)
+POINTS_KEPT = 16384
+
+_SHELL_FIELDS = ("x", "theta", "u", "v", "side", "offset", "frame")
+
+
+class _PointStore:
+    """The shell coordinates kept for one tooth model (:func:`_point_store`): ``rows`` maps
+    a point's key to ``batch << 32 | row`` (its row in a mapped batch), ``batches`` holds
+    those batches' ShellPoints (read-only)."""
+
+    __slots__ = ("batches", "lock", "rows", "serial")
+
+    def __init__(self) -> None:
+        self.lock = threading.Lock()  # (an analysis per thread: one at a time per model)
+        self.rows: dict[bytes, int] = {}
+        self.batches: dict[int, ShellPoints] = {}
+        self.serial = 0
+
+    def add(self, sp: ShellPoints, keys: list[bytes]) -> None:
+        """Keep the points ``keys`` (in the order of ``sp``'s rows)."""
+        for a in sp:
+            if isinstance(a, np.ndarray):
+                a.flags.writeable = False
+        self.serial += 1
+        self.batches[self.serial] = sp
+        base = self.serial << 32
+        self.rows.update(zip(keys, range(base, base + len(keys)), strict=True))
+
+    def trim(self, kept: int) -> None:
+        """Drop the oldest points beyond ``kept``, and the batches no point refers to."""
+        if len(self.rows) <= kept:
+            return
+        for k in list(itertools.islice(self.rows, len(self.rows) - kept)):
+            del self.rows[k]
+        used = set(np.unique(np.fromiter(self.rows.values(), dtype=np.int64) >> 32).tolist())
+        for b in [b for b in self.batches if b not in used]:
+            del self.batches[b]
+
+    def gather(self, keys: list[bytes], normal: bool) -> ShellPoints:
+        """The kept shell coordinates of the points ``keys`` as one ShellPoints."""
+        code = np.fromiter(map(self.rows.__getitem__, keys), dtype=np.int64, count=len(keys))
+        batch, row = code >> 32, code & 0xFFFFFFFF
+        names = (*_SHELL_FIELDS, *(("normal",) if normal else ()))
+        fields: dict[str, np.ndarray | None] = {"normal": None}
+        ids = np.unique(batch)
+        for b in ids.tolist():
+            sp = self.batches[b]
+            if ids.size == 1:  # one batch: a take of its rows
+                fields.update({name: getattr(sp, name)[row] for name in names})
+                break
+            sel = batch == b
+            for name in names:
+                part = getattr(sp, name)
+                if name not in fields or fields[name] is None:
+                    fields[name] = np.empty((len(keys), *part.shape[1:]), dtype=part.dtype)
+                fields[name][sel] = part[row[sel]]
+        return ShellPoints(**fields)
+
+
+@memoised(maxsize=4)
+def _point_store(data: _Identity) -> _PointStore:
+    """The shell coordinates of the points mapped so far onto the tooth model
+    ``data.obj``, by the point's bytes (member frame; a midpoint with its normal): one
+    store per tooth model, emptied with the memo (``clear_caches``); the last
+    :data:`POINTS_KEPT` points are kept (the oldest dropped first)."""
+    return _PointStore()
+
+
+def _row_keys(rows: np.ndarray, tag: bytes) -> list[bytes]:
+    """Each row of a 2-D float array as ``tag`` + its bytes (a memo key per row)."""
+    rows = np.ascontiguousarray(rows, dtype=float)
+    raw = rows.tobytes()
+    width = rows.shape[1] * rows.itemsize
+    return [tag + raw[i:i + width] for i in range(0, len(raw), width)]
+
+
+def _missing(kept: dict, keys: list[bytes]) -> list[int]:
+    """The indices of the ``keys`` not in ``kept``."""
+    return np.flatnonzero(~np.fromiter(map(kept.__contains__, keys), dtype=bool,
+                                       count=len(keys))).tolist()
+
+
+def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
+    """:func:`contact.compliance.tooth.shell_points_many` of jobs (data, midpoints (N, 3),
+    normals (N, 3), None, ends (D, 3)) in their members' frames, each point's shell
+    coordinates kept per process and tooth model (:func:`_point_store`): the analyses of a
+    torque series or one repeated at one misalignment map the same segments (the memoised
+    curve segments, :mod:`contact.ltca.segments`). Only the points not kept are mapped, in
+    one batch as before (a point's coordinates are its own to round-off: the batch
+    iterates until its slowest point converged); a point the mapping refuses raises as
+    there and is not kept."""
+    if warm_seeds_active():  # a development's trial: its teeth are new at every trial
+        return shell_points_many(jobs, END_TOLERANCE)
+    stores = [_point_store(_Identity(job[0])) for job in jobs]
+    with contextlib.ExitStack() as held:
+        for store in {id(st): st for st in stores}.values():
+            held.enter_context(store.lock)
+        return _kept_mapping_held(jobs, stores)
+
+
+def _kept_mapping_held(jobs: list, stores: list[_PointStore]) -> list[list[ShellPoints]]:
+    """:func:`_kept_mapping` with the jobs' stores (their locks held)."""
+    keys, todo = [], []
+    for (_, mid, nrm, _, ends), store in zip(jobs, stores, strict=True):
+        k_mid = _row_keys(np.concatenate([mid, nrm], axis=1), b"m")
+        k_end = _row_keys(ends, b"e")
+        todo.append((_missing(store.rows, k_mid), _missing(store.rows, k_end)))
+        keys.append((k_mid, k_end))
+    run = [i for i, (mm, me) in enumerate(todo) if mm or me]
+    fresh: dict[int, list[ShellPoints]] = {}
+    if run:
+        new = shell_points_many([(jobs[i][0], jobs[i][1][todo[i][0]], jobs[i][2][todo[i][0]],
+                                  None, jobs[i][4][todo[i][1]]) for i in run], END_TOLERANCE)
+        for i, (sp_mid, sp_end) in zip(run, new, strict=True):
+            (k_mid, k_end), (miss_mid, miss_end) = keys[i], todo[i]
+            stores[i].add(sp_mid, [k_mid[j] for j in miss_mid])
+            stores[i].add(sp_end, [k_end[j] for j in miss_end])
+            if len(miss_mid) == len(k_mid) and len(miss_end) == len(k_end):
+                fresh[i] = [sp_mid, sp_end]  # nothing kept: the batch's own result
+    out = []
+    for i, store in enumerate(stores):
+        k_mid, k_end = keys[i]
+        out.append(fresh[i] if i in fresh else [store.gather(k_mid, normal=True),
+                                                store.gather(k_end, normal=False)])
+    for store in stores:
+        store.trim(POINTS_KEPT)
+    return out
 
 
 def _block(idx: np.ndarray):

@@ -35,7 +35,9 @@ THEORIES            registry of kinematic theories (seed Mindlin, Mindlin, highe
 
 from __future__ import annotations
 
+import itertools
 import logging
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -57,6 +59,7 @@ from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
 from geometry.core.caches import memoised
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, positive, real_array
+from geometry.machine.meshing import warm_seeds_active
 
 __all__ = [
     "THEORIES",
@@ -703,6 +706,119 @@ def _as_range(idx):
     return idx
 
 
+class _Identity:
+    """A shell model as a memo key compared by identity (it holds arrays: no hash of its
+    own); the key holds the model, so its ``id`` is not reused while the memo keeps it."""
+
+    __slots__ = ("obj",)
+
+    def __init__(self, obj) -> None:
+        self.obj = obj
+
+    def __hash__(self) -> int:
+        return id(self.obj)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _Identity) and other.obj is self.obj
+
+
+#: columns of Y kept per shell model by :func:`_half_vectors` (each n_dof floats: 3 kB on
+#: the default 378 unknowns; two analyses of the default case's ~1,500 segments a member)
+HALF_VECTORS_KEPT = 4096
+
+
+class _ColumnStore:
+    """The columns of Y kept for one shell model (:func:`_half_vector_store`): ``columns``
+    maps a segment's key to its column (read-only), ``lock`` serialises the threads that
+    use it."""
+
+    __slots__ = ("columns", "lock")
+
+    def __init__(self) -> None:
+        self.columns: dict[bytes, np.ndarray] = {}
+        self.lock = threading.Lock()
+
+
+@memoised(maxsize=4)
+def _half_vector_store(model: _Identity) -> _ColumnStore:
+    """The columns of Y = U⁻ᵀ S Φ computed so far for segments on the tooth of the shell
+    model ``model.obj``, by the segment's bytes (ends, normal, Gauss points): one store per
+    model, emptied with the memo (``clear_caches``); :func:`_half_vectors` keeps the last
+    :data:`HALF_VECTORS_KEPT` (the oldest dropped first)."""
+    return _ColumnStore()
+
+
+def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | None,
+                  ng: int) -> np.ndarray:
+    """Y = U⁻ᵀ S Φ (n_dof, N), Fortran order, of segments with ``ends`` (N, 2, 2) [mm, rad]
+    on the tooth and ``normals`` (N, 3) or None, Φ their mean load vectors over ``ng``
+    Gauss points (:meth:`ShellModel.load_vectors`, :meth:`ShellModel.half_solve`).
+
+    A segment's column depends on the model, its ends and normal alone, so it is kept per
+    process (:func:`_half_vector_store`) and not computed again: the analyses of a torque
+    series or one repeated at one misalignment map the same segments (the memoised curve
+    segments, :mod:`contact.ltca.segments`). The columns computed here are those of the
+    segments not kept, in one load-vector build and one triangular product as before; a
+    call with none kept gives the same array as that product."""
+    nrm = None if normals is None else np.asarray(normals, dtype=float)
+    if warm_seeds_active():  # a development's trial: its teeth are new at every trial
+        return _half_vectors_of(model, ends, nrm, ng)
+    n_pts = ends.shape[0]
+    rows = [ends.reshape(n_pts, 4)] + ([] if nrm is None else [nrm])
+    rows = np.ascontiguousarray(np.concatenate(rows, axis=1), dtype=float)
+    tag = ng.to_bytes(2, "little") + (b"n" if nrm is not None else b"-")
+    keys = _row_keys(rows, tag)
+    store = _half_vector_store(_Identity(model))
+    with store.lock:  # (an analysis per thread: one at a time per model)
+        kept = store.columns
+        miss = np.flatnonzero(~np.fromiter(map(kept.__contains__, keys), dtype=bool,
+                                           count=n_pts)).tolist()
+        if len(miss) == n_pts:  # nothing kept: the product's own array
+            y = _half_vectors_of(model, ends, nrm, ng)
+            y.flags.writeable = False  # its columns are kept
+            kept.update(zip(keys, y.T, strict=True))
+        else:
+            y = np.empty((model.n_dof, n_pts), order="F")
+            if miss:
+                new = _half_vectors_of(model, ends[miss], None if nrm is None else nrm[miss],
+                                       ng)
+                new.flags.writeable = False  # its columns are kept
+                y[:, miss] = new
+                kept.update(zip([keys[i] for i in miss], new.T, strict=True))
+            missed = set(miss)
+            hit = [i for i in range(n_pts) if i not in missed]
+            y[:, hit] = np.stack([kept[keys[i]] for i in hit], axis=1)
+        if len(kept) > HALF_VECTORS_KEPT:  # the oldest first, in one pass
+            for k in list(itertools.islice(kept, len(kept) - HALF_VECTORS_KEPT)):
+                del kept[k]
+    return y
+
+
+def _row_keys(rows: np.ndarray, tag: bytes) -> list[bytes]:
+    """Each row of a C-ordered 2-D array as ``tag`` + its bytes (a memo key per row)."""
+    raw = rows.tobytes()
+    width = rows.shape[1] * rows.itemsize
+    return [tag + raw[i:i + width] for i in range(0, len(raw), width)]
+
+
+def _half_vectors_of(model: ShellModel, ends: np.ndarray, normals: np.ndarray | None,
+                     ng: int) -> np.ndarray:
+    """Y = U⁻ᵀ S Φ (n_dof, N) of the segments (:func:`_half_vectors`), computed."""
+    tooth = model.tooth
+    # h(θ) is linear, so the developed tooth is convex: a chord between two
+    # on-tooth end points stays on the tooth.
+    s, w = _segment_gauss(ng)
+    p0 = ends[:, 0, :]
+    p1 = ends[:, 1, :]
+    gp = (p0[:, None, :] + s[None, :, None] * (p1 - p0)[:, None, :]).reshape(-1, 2)
+    nrm = None if normals is None else np.repeat(normals, ng, axis=0)
+    d, zs = _flank_loads(tooth, gp[:, 0], gp[:, 1], nrm)
+    # the segments' mean load vectors (n_dof, N): Gauss sums over their G points
+    phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs, group_weights=w)
+    # one triangular product for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
+    return model.half_solve(phi)
+
+
 def compliance_blocks(
     model: ShellModel,
     ends: np.ndarray,
@@ -722,25 +838,15 @@ def compliance_blocks(
     if n_pts == 0:
         raise InputError("points: must hold at least one load, got none")
     ng = integer("n_segment_gauss", n_segment_gauss, 1, 32)
-    tooth = model.tooth
-
-    # h(θ) is linear, so the developed tooth is convex: a chord between two
-    # on-tooth end points stays on the tooth.
-    s, w = _segment_gauss(ng)
-    p0 = ends[:, 0, :]
-    p1 = ends[:, 1, :]
-    gp = (p0[:, None, :] + s[None, :, None] * (p1 - p0)[:, None, :]).reshape(-1, 2)
-    nrm = None if normals is None else np.repeat(np.asarray(normals, dtype=float), ng, axis=0)
     if normals is not None and np.asarray(normals).shape != (n_pts, 3):
         raise InputError(
             f"normals: must be of shape ({n_pts}, 3) [1], got {np.asarray(normals).shape}"
         )
-    d, zs = _flank_loads(tooth, gp[:, 0], gp[:, 1], nrm)
-    # the segments' mean load vectors (n_dof, N): Gauss sums over their G points
-    phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs, group_weights=w)
-    # C = Φᵀ K⁻¹ Φ = Yᵀ Y with Y = U⁻ᵀ S Φ (K's scaled Cholesky factor): one triangular
-    # product for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
-    y = model.half_solve(phi)
+    p0 = ends[:, 0, :]
+    p1 = ends[:, 1, :]
+    # C = Φᵀ K⁻¹ Φ = Yᵀ Y with Y = U⁻ᵀ S Φ (K's scaled Cholesky factor): each segment's
+    # column of Y once per process and shell model (_half_vectors)
+    y = _half_vectors(model, ends, normals, ng)
     centres = 0.5 * (p0 + p1)
     out = []
     for idx in [slice(None)] if blocks is None else blocks:

@@ -21,6 +21,7 @@ from __future__ import annotations
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -33,11 +34,13 @@ from contact.ltca.discretisation import (
     fill_rows,
     gear_to_pair,
 )
-from contact.ltca.edges import edge_segments, flank_boundary
+from contact.ltca.edges import FlankBoundary, edge_segments, flank_boundary
 from contact.utca import CURVE_SPACINGS, ContactCurves, EaseOff, contact_curves
-from contact.utca.fields import fields_of
+from contact.utca.fields import Same, fields_of
+from geometry.core.caches import memoised
+from geometry.machine.meshing import warm_seeds_active
 
-__all__ = ["Segments", "roll_phases", "segment_geometry"]
+__all__ = ["Segments", "clear_segment_memo", "roll_phases", "segment_geometry"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -198,6 +201,96 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
                       edge_limit: float | None = None) -> Segments:
     """:func:`segment_geometry` of roll targets (J, K) [rad] with pinion rotations rp (J,)
     (every roll computed: ``source`` is 0 … J − 1)."""
+    J = target.shape[0]
+    part = _curve_part(case, eo, target, segments, spacing,
+                       None if edges is None else edges[0])
+    found = part.found
+    kind = np.zeros(segments, dtype=np.int8)
+    edge_arm_max = 0.0
+    if edges is not None:
+        bd = part.boundary
+        ute = part.ute
+        ute_env = np.min(np.where(np.isfinite(ute), ute, np.inf), axis=1)
+        radii = tuple(np.broadcast_to(np.asarray(edges[1], dtype=float), (2,)))
+        edge = edge_segments(case, eo, bd, radii, target, part.shift, ute_env, edge_limit,
+                             fields=fields_of(eo))
+        edge_arm_max = float(np.max(bd.normal_arm, initial=0.0))
+        found = found.concatenate(edge)
+        kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
+    return Segments(**found.per_segment(), kind=kind, ute=part.ute.copy(),
+                    pinion_rotation=rp, gear_rotation=eo.gear_phase - rp / eo.ratio,
+                    edge_arm_max=edge_arm_max, source=np.arange(J))
+
+
+class _CurvePart(NamedTuple):
+    """What the segment geometry of roll targets takes from the ease-off alone, not from
+    the torque: the curve segments (J, K, S), each pair's UTE and curve shift (J, K)
+    [rad] (the shift 0 where a pair has no curve) and the flank boundary (None without
+    edge segments)."""
+
+    found: SegmentFields
+    ute: np.ndarray
+    shift: np.ndarray
+    boundary: FlankBoundary | None
+
+
+class _Carried:
+    """A value handed through a memo without being part of its key (every carrier
+    compares equal): the case, whose teeth the key holds as ``Case.teeth_key``."""
+
+    __slots__ = ("value",)
+
+    def __init__(self, value) -> None:
+        self.value = value
+
+    def __hash__(self) -> int:
+        return 0
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _Carried)
+
+
+def _curve_part(case, eo: EaseOff, target: np.ndarray, segments: int, spacing: str,
+                step: float | None) -> _CurvePart:
+    """:func:`_curve_part_of`, memoised per process by the ease-off object, the teeth
+    (``Case.teeth_key``: what the blank measure and the curvatures read of the case), the
+    targets to the last bit, the segment count, spacing and boundary step. The analyses of
+    a torque series (or one repeated) at one misalignment share the memoised ease-off
+    (:func:`contact.utca.ease_off`) and so these, as its unloaded cycle; the edge
+    segments, which depend on the torque's separation limit, are worked out at each
+    call. Not memoised inside a development's trial (its ease-off is not either:
+    :func:`geometry.machine.meshing.warm_seeds_active`)."""
+    if warm_seeds_active():
+        return _curve_part_of(case, eo, target, segments, spacing, step)
+    target = np.ascontiguousarray(target, dtype=float)
+    return _memo_curve_part(Same(eo), case.teeth_key(), _Carried(case), target.shape,
+                            target.tobytes(), int(segments), str(spacing),
+                            None if step is None else float(step))
+
+
+@memoised(maxsize=4)
+def _memo_curve_part(eo: Same, teeth, case: _Carried, shape: tuple[int, int], target: bytes,
+                     segments: int, spacing: str, step: float | None) -> _CurvePart:
+    """:func:`_curve_part_of` memoised (:func:`_curve_part`), its arrays read-only."""
+    part = _curve_part_of(case.value, eo.obj, np.frombuffer(target).reshape(shape),
+                          segments, spacing, step)
+    arrays = [*part.found.per_segment().values(), part.ute, part.shift]
+    if part.boundary is not None:
+        arrays += [a for a in part.boundary if isinstance(a, np.ndarray)]
+    for a in arrays:
+        a.flags.writeable = False
+    return part
+
+
+def clear_segment_memo() -> None:
+    """Forget the curve segments memoised per process by :func:`segment_geometry` (frees
+    memory; the next analysis computes them afresh)."""
+    _memo_curve_part.cache_clear()
+
+
+def _curve_part_of(case, eo: EaseOff, target: np.ndarray, segments: int, spacing: str,
+                   step: float | None) -> _CurvePart:
+    """The torque-independent part of :func:`_segment_geometry` (:class:`_CurvePart`)."""
     # each segment is sampled at its ends and its middle (2S + 1 points along a curve);
     # its fields follow the quadratic through the three (SegmentQuadratic)
     fields = fields_of(eo)  # the unloaded cycle's, where the analysis built it
@@ -205,22 +298,9 @@ def _segment_geometry(case, eo: EaseOff, target: np.ndarray, rp: np.ndarray, seg
                         near_misses=True, fields=fields)
     J, K = target.shape
     found = _curve_segments(case, eo, cc, target, segments, spacing)
-    kind = np.zeros(segments, dtype=np.int8)
-    edge_arm_max = 0.0
-    if edges is not None:
-        bd = flank_boundary(fields, edges[0])
-        shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
-        ute = cc.ute.reshape(J, K)
-        ute_env = np.min(np.where(np.isfinite(ute), ute, np.inf), axis=1)
-        radii = tuple(np.broadcast_to(np.asarray(edges[1], dtype=float), (2,)))
-        edge = edge_segments(case, eo, bd, radii, target, shift, ute_env, edge_limit,
-                             fields=fields)
-        edge_arm_max = float(np.max(bd.normal_arm, initial=0.0))
-        found = found.concatenate(edge)
-        kind = np.r_[kind, 1 + bd.kind].astype(np.int8)
-    return Segments(**found.per_segment(), kind=kind, ute=cc.ute.reshape(J, K),
-                    pinion_rotation=rp, gear_rotation=eo.gear_phase - rp / eo.ratio,
-                    edge_arm_max=edge_arm_max, source=np.arange(J))
+    shift = np.where(np.isfinite(cc.shift), cc.shift, 0.0).reshape(J, K)
+    bd = None if step is None else flank_boundary(fields, step)
+    return _CurvePart(found, cc.ute.reshape(J, K), shift, bd)
 
 
 def _curve_segments(case, eo: EaseOff, cc: ContactCurves, target: np.ndarray, S: int,
