@@ -477,10 +477,10 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
                 else "at every torque")
         ratios = _contact_ratios(lt, rating, t)
         loud = pp > LTE_FAIL_FACTOR * limit
-        above = (f"{shown_above(pp / limit, LTE_FAIL_FACTOR, 1)} times the {limit:g} µrad "
-                 if loud else f"above {limit:g} µrad, ")
+        above = (f", {shown_above(pp / limit, LTE_FAIL_FACTOR, 1)} times the {limit:g} "
+                 "µrad of " if loud else f" above {limit:g} µrad, ")
         out.append(Finding("fail" if loud else "attention", "lte",
-                           f"LTE peak-to-peak {pp:.0f} µrad at {_t(t)} {above}"
+                           f"LTE peak-to-peak {pp:.0f} µrad at {_t(t)}{above}"
                            f"the loaded transmission error a quiet bearing keeps {upto}: "
                            + (f"beyond {LTE_FAIL_FACTOR:g} times it a gear whine 6 dB and "
                               "more above the limit's, no design to release" if loud
