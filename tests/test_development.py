@@ -1570,6 +1570,8 @@ def test_an_lte_above_the_limit_gets_a_flatter_profile_then_a_deeper_te_parabola
     assert (reach["light"], reach["design"]) == (62.0, 70.0)
     assert "profile_crowning 0 um" in reach["what"]
     assert reach["why"] == "not tolerant at dE/dP +/-0.05 mm"
+    assert reach["tried"] == ("the profile crowning flattened",
+                              "the modified roll's TE parabola deepened")
     # within the limit at every torque: not analysed, itself recorded
     calls.clear()
     setup = {"torques": [33.78, 225.2], "centre_v": 0.6}
@@ -1577,7 +1579,8 @@ def test_an_lte_above_the_limit_gets_a_flatter_profile_then_a_deeper_te_parabola
     assert dcheck.checked_crowning_lte(quiet, targets, setup, None, lines.append,
                                        lambda v: dict(v)) is quiet and calls == []
     assert setup["lte_reach"][(33.78, 225.2)] == {
-        "light": 38.0, "design": 60.0, "what": "design 4 as checked", "why": ""}
+        "light": 38.0, "design": 60.0, "what": "design 4 as checked", "why": "",
+        "tried": ()}
 
 
 def test_synthesizes_note_says_the_lte_the_development_reached():
@@ -1594,11 +1597,18 @@ def test_synthesizes_note_says_the_lte_the_development_reached():
     dev = types.SimpleNamespace(
         best=types.SimpleNamespace(metrics={"lte_peak_to_peak": np.array([70.0, 133.1])}),
         lte_reach={"light": 57.6, "design": 120.2,
-                   "what": "design 2 with te_level 80 urad", "why": "it misses length"})
+                   "what": "design 2 with te_level 80 urad", "why": "it misses length",
+                   "tried": ("the modified roll's TE parabola deepened",)})
     text = reach_text(dev, 60.0)
-    assert text.startswith("; the development's least drive LTE p-p 58/120 urad (design 2 "
-                           "with te_level 80 urad, not written: it misses length): LTE p-p "
-                           "<= 60 urad at every torque is out of this basic data's reach")
+    assert text == ("; the development's least drive LTE p-p 58/120 urad (design 2 with "
+                    "te_level 80 urad, not written: it misses length): LTE p-p <= 60 urad "
+                    "at every torque is out of this basic data's reach (the modified roll's "
+                    "TE parabola deepened tried), the contact ratios' change above is the "
+                    "remedy")
+    # nothing left to try (the 17x29: crowning 0, te_level at its bound): said so
+    dev.lte_reach = {"light": 70.0, "design": 133.1, "what": "design 1 as checked",
+                     "why": "", "tried": ()}
+    assert "(no flatter profile or deeper TE parabola left to try)" in reach_text(dev, 60.0)
     dev.lte_reach = {"light": 50.0, "design": 59.0, "what": "design 2 with "
                      "profile_crowning 0 um", "why": "not tolerant at dE/dP +/-0.05 mm"}
     assert reach_text(dev, 60.0).endswith("): within 60 urad, but not written")

@@ -185,9 +185,11 @@ def reach_text(development, limit: float) -> str:
     Returns
     -------
     str
-        E.g. "; the development's least drive LTE p-p 58/120 urad (te_level 80 urad, not
-        written: it misses length): LTE p-p <= 60 urad at every torque is out of this
-        basic data's reach, the contact ratios' change above is the remedy".
+        E.g. "; the development's least drive LTE p-p 109/96 urad (design 35 with
+        profile_crowning 0 um, not written: it scores no better): LTE p-p <= 60 urad at
+        every torque is out of this basic data's reach (the profile crowning flattened
+        tried), the contact ratios' change above is the remedy" (the spiral bevel 19x23 at
+        beta_m 46 deg of benchmarks/data/unseen_designs).
     """
     reach = getattr(development, "lte_reach", None)
     lte = development.best.metrics["lte_peak_to_peak"]
@@ -197,10 +199,12 @@ def reach_text(development, limit: float) -> str:
     why = f", not written: {reach['why']}" if reach.get("why") else ""
     said = (f"; the development's least drive LTE p-p {reach['light']:.0f}/"
             f"{reach['design']:.0f} urad ({reach['what']}{why})")
+    tried = " and ".join(reach.get("tried", ()))
+    tried = (f"{tried} tried" if tried else "no flatter profile or deeper TE parabola "
+             "left to try")
     if least > limit:
         return (said + f": LTE p-p <= {limit:g} urad at every torque is out of this basic "
-                "data's reach (the profile crowning flattened and the modified roll's TE "
-                "parabola deepened tried), the contact ratios' change above is the remedy")
+                f"data's reach ({tried}), the contact ratios' change above is the remedy")
     return said + f": within {limit:g} urad, but not written"
 
 

@@ -586,8 +586,9 @@ def _reached(setup: Mapping[str, Any], e: DevelopmentEvaluation, what: str,
              why: str = "") -> None:
     """Record in ``setup["lte_reach"]`` (by the development's torques) the design of least
     LTE p-p (the larger of light and design torque) :func:`checked_crowning_lte` has seen:
-    ``{"light", "design"}`` [µrad], ``"what"`` it is and ``"why"`` it was not kept (empty
-    where it was, or is the design the step began with)."""
+    ``{"light", "design"}`` [µrad], ``"what"`` it is, ``"why"`` it was not kept (empty
+    where it was, or is the design the step began with) and ``"tried"`` the levers the
+    step analysed (:func:`_tried`)."""
     if not isinstance(setup, dict) or e.metrics is None:
         return
     light, design = _lte_ends(e)
@@ -597,7 +598,17 @@ def _reached(setup: Mapping[str, Any], e: DevelopmentEvaluation, what: str,
     kept = setup.setdefault("lte_reach", {}).get(key)
     if kept is None or max(light, design) < max(kept["light"], kept["design"]) - 1e-9:
         setup["lte_reach"][key] = {"light": light, "design": design, "what": what,
-                                   "why": why}
+                                   "why": why,
+                                   "tried": () if kept is None else kept["tried"]}
+
+
+def _tried(setup: Mapping[str, Any], lever: str) -> None:
+    """Add ``lever`` (a lever's name in words) to the ``"tried"`` of the development's
+    ``setup["lte_reach"]`` record at its torques (:func:`_reached`)."""
+    key = tuple(float(t) for t in setup["torques"])
+    kept = setup.get("lte_reach", {}).get(key) if isinstance(setup, dict) else None
+    if kept is not None and lever not in kept["tried"]:
+        kept["tried"] = (*kept["tried"], lever)
 
 
 def _lte_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
@@ -683,6 +694,7 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
                               teeth, say, placed)
             if e is None:
                 continue
+            _tried(setup, "the profile crowning flattened")
             why = _lte_kept(best, e, targets, setup, teeth, say, "the flatter profile")
             _reached(setup, e, what, why)
             if not why:
@@ -702,6 +714,7 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
                           "torque)", targets, setup, teeth, say, placed)
         if e is None:
             break
+        _tried(setup, "the modified roll's TE parabola deepened")
         why = _lte_kept(best, e, targets, setup, teeth, say, "the deeper TE parabola")
         _reached(setup, e, f"design {base.index + 1} with te_level {x:.3g} urad", why)
         if not why:
