@@ -1603,8 +1603,8 @@ def test_synthesizes_note_says_the_lte_the_development_reached():
     assert text == ("; the development's least drive LTE p-p 58/120 urad (design 2 with "
                     "te_level 80 urad, not written: it misses length): LTE p-p <= 60 urad "
                     "at every torque is out of this basic data's reach (the modified roll's "
-                    "TE parabola deepened tried), the contact ratios' change above is the "
-                    "remedy")
+                    "TE parabola deepened tried): the contact ratios must rise, the change "
+                    "above takes them to their limits")
     # nothing left to try (the 17x29: crowning 0, te_level at its bound): said so
     dev.lte_reach = {"light": 70.0, "design": 133.1, "what": "design 1 as checked",
                      "why": "", "tried": ()}
