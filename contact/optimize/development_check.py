@@ -668,7 +668,11 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
     te_level 25 / 45: 81 / 84, 85 / 79; crowning 0, te_level 10 / 45 / 80: 62 / 64, 60 /
     79, 67 / 73 µrad (1.1-1.2 % of the design torque on the edges, 2.0-2.4 % at ΔE, ΔP
     −0.05 mm) — the crowning the lever, the TE level trading the light against the
-    design LTE, and 60 µrad not reached."""
+    design LTE, and 60 µrad not reached. ``ltca synthesize`` with this step (2026-11-26)
+    writes the 19x23's drive flank as before (crowning 8.4 µm: an LTE spread above 0.5;
+    none: 109 / 96 µrad, the pattern 0.38 long: neither kept), the spiral bevel 18x22's
+    likewise (te_level 45 µrad: 204 / 206 against 192 / 208 µrad, no better score); what
+    it adds there is the least LTE reached, which ``ltca synthesize`` states."""
     from contact.study.verdicts import LTE_LIMIT
 
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
