@@ -197,6 +197,16 @@ def test_an_lte_finding_names_the_contact_ratios_and_the_remedy():
                                                "contact ratio eps_vb 0.86 is below 1.25")
     assert next_steps(tree, load_case(ROOT / "cases" / "iso10300_30_sample2.toml"),
                       "c.toml", None) == []
+    # beyond twice the limit the finding FAILs (verdicts.LTE_FAIL_FACTOR): the same remedy
+    # is the next step, said once
+    loud = xr.DataTree.from_dict({"/ltca": lt.assign(lte_peak_to_peak=("torque",
+                                                                       [855.0, 30.0])),
+                                  "/rating": rating})
+    assert verdict(loud).severity == "fail"
+    steps = next_steps(loud, load_case(ROOT / "cases" / "iso10300_30_sample3.toml"),
+                       "c.toml", None)
+    assert sum(x.startswith("  next, the LTE is the design's: face contact ratio eps_vb "
+                            "0.86 is below 1.25") for x in steps) == 1
 
 
 def test_the_next_step_of_an_lte_spread_names_the_overlap():

@@ -520,9 +520,10 @@ def test_lte_above_its_limit_up_to_the_design_torque_wants_attention():
     assert above.findings[0].reason.startswith("LTE peak-to-peak 60 µrad at 500 N·m above "
                                                "60 µrad")
     assert "at every torque" in above.findings[0].reason  # no design torque in the tree
-    both = run([372.0, 80.0])
+    both = run([100.0, 80.0])
     assert [f.reason.split(" above")[0] for f in both.findings] == [
-        "LTE peak-to-peak 372 µrad at 50 N·m", "LTE peak-to-peak 80 µrad at 500 N·m"]
+        "LTE peak-to-peak 100 µrad at 50 N·m", "LTE peak-to-peak 80 µrad at 500 N·m"]
+    assert both.severity == "attention"
     # above the design torque the torque is an overload: not judged
     rating = xr.Dataset({"design_torque": ((), 250.0)})
     up_to = run([372.0, 80.0], rating=rating)
@@ -535,6 +536,44 @@ def test_lte_above_its_limit_up_to_the_design_torque_wants_attention():
     for bad in (0.0, -1.0, np.nan):
         with pytest.raises(InputError, match="lte_limit"):
             run([10.0, 10.0], lte_limit=bad)
+
+
+def test_lte_beyond_twice_its_limit_fails():
+    """An LTE p-p above LTE_FAIL_FACTOR (2) × the limit at a torque up to the design torque
+    is a FAIL (issue 71: the Formate miter 20x20 of benchmarks/data/unseen_designs at 855
+    µrad was only an attention): the bound itself is an attention (120 µrad, 2 × 60 exactly:
+    the rule is "more than twice"), a µrad above it a FAIL whose reason says how many times
+    the limit; the caller's limit scales it; above the design torque (an overload) it is
+    not judged. Independent of the LTCA: hand-made LTE values against the rule's
+    arithmetic (2 × 60 = 120 µrad; 855 / 60 = 14.25 → "14.2" at one decimal)."""
+    from contact.study.verdicts import LTE_FAIL_FACTOR, LTE_LIMIT
+
+    assert LTE_FAIL_FACTOR == 2.0
+
+    def run(pp, rating=None, **kw) -> Verdict:
+        ds = _ltca([700.0, 700.0], lte_peak_to_peak=("torque", np.asarray(pp, float)))
+        return verdict(_tree(ltca=ds, **({"rating": rating} if rating is not None else {})),
+                       **kw)
+
+    bound = run([2 * LTE_LIMIT, 10.0])
+    assert bound.severity == "attention"
+    beyond = run([2 * LTE_LIMIT + 1.0, 10.0])
+    assert beyond.severity == "fail"
+    assert [(f.severity, f.check) for f in beyond.findings] == [("fail", "lte")]
+    miter = run([855.0, 818.0])
+    assert [f.severity for f in miter.findings] == ["fail", "fail"]
+    assert miter.findings[0].reason.startswith(
+        "LTE peak-to-peak 855 µrad at 50 N·m, 14.2 times the 60 µrad of the loaded "
+        "transmission error a quiet bearing keeps at every torque: beyond 2 times it")
+    assert "6 dB" in miter.findings[0].reason
+    # a caller's limit scales the rule: 855 within 2 x 500, above 500
+    assert run([855.0, 818.0], lte_limit=500.0).severity == "attention"
+    # the light torque fails, the design torque's attention stays an attention
+    mixed = run([200.0, 80.0])
+    assert [f.severity for f in mixed.findings] == ["fail", "attention"]
+    # above the design torque: an overload, not judged
+    rating = xr.Dataset({"design_torque": ((), 250.0)})
+    assert run([90.0, 855.0], rating=rating).severity == "attention"
 
 
 def test_the_default_case_meets_the_lte_limit(default_tree):

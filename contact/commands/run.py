@@ -444,7 +444,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
     too small for its load (a failed rating, or a flank pressure above its static
     strength: no bearing change answers that); a scuffing finding the oil, inlet temperature
     and roughness it depends on (ISO/TS 6336-20: the flash temperature and the oil's
-    scuffing temperature), as the same run with those options. For a verdict that is not
+    scuffing temperature), as the same run with those options; an ``lte`` FAIL (an LTE
+    beyond :data:`contact.study.verdicts.LTE_FAIL_FACTOR` times its limit) the basic-file
+    remedy of an attention's. For a verdict that is not
     FAIL only an ``lte`` finding's basic-file remedy where the design's contact ratios are
     below their limits (:func:`contact.commands.next_steps.overlap_lines`), else nothing.
 
@@ -515,11 +517,13 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                              else None, rate=not failed & set(CAPACITY_CHECKS))
     if not overloaded:
         out += capacity
-    if "implausible" in failed:  # an LTE spread that is the design's low face contact ratio
-        from contact.commands.next_steps import overlap_lines, spread_failed
+    from contact.commands.next_steps import overlap_lines, spread_failed
 
-        if spread_failed(v.findings):
-            out = overlap_lines(case) + out
+    if "implausible" in failed and spread_failed(v.findings):
+        # an LTE spread that is the design's low face contact ratio
+        out = overlap_lines(case) + out
+    elif "lte" in failed:  # an LTE beyond twice its limit: the same remedy, said once
+        out = overlap_lines(case, "the LTE") + out
     if "scuffing" in failed:
         op = case.operating
         out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "

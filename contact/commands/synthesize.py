@@ -163,7 +163,52 @@ def low_overlap_lte(development) -> str:
     return (f"the developed bearing's LTE p-p: {', '.join(parts)} (light/design), the "
             f"development's target {target:g} urad "
             + ("met" if worst <= target else "missed")
-            + (f", above the verdict's {LTE_LIMIT:g} urad" if worst > LTE_LIMIT else ""))
+            + (f", above the verdict's {LTE_LIMIT:g} urad" if worst > LTE_LIMIT else "")
+            + reach_text(development, LTE_LIMIT))
+
+
+def reach_text(development, limit: float) -> str:
+    """What the development's drive designs reached where the written drive flank's LTE
+    p-p exceeds ``limit`` [µrad] (the verdict's): the least LTE p-p its check's last LTE
+    step saw (``development.lte_reach``,
+    :func:`contact.optimize.development_check.checked_crowning_lte`: the profile crowning
+    flattened, the TE parabola deepened), what design that was and why it was not
+    written; beyond ``limit`` the statement that the limit is out of the basic data's
+    reach and the contact ratios must rise (the note's first part gives the change that
+    takes them to their limits). Empty where the
+    drive flank is within ``limit`` or the step did not run.
+
+    Parameters
+    ----------
+    development : contact.optimize.development.DevelopmentResult
+    limit : float — [µrad]
+
+    Returns
+    -------
+    str
+        E.g. "; the development's least drive LTE p-p 109/96 urad (design 35 with
+        profile_crowning 0 um, not written: it scores no better): LTE p-p <= 60 urad at
+        every torque is out of this basic data's reach (the profile crowning flattened
+        tried): the contact ratios must rise, the change above takes them to their
+        limits" (the spiral bevel 19x23 at beta_m 46 deg of benchmarks/data/unseen_designs;
+        the change is no promise of 60 urad: its k_d 2.06, eps_va 1.00, gave 75/107 urad).
+    """
+    reach = getattr(development, "lte_reach", None)
+    lte = development.best.metrics["lte_peak_to_peak"]
+    if not reach or not max(float(lte[0]), float(lte[-1])) > limit:
+        return ""
+    least = max(reach["light"], reach["design"])
+    why = f", not written: {reach['why']}" if reach.get("why") else ""
+    said = (f"; the development's least drive LTE p-p {reach['light']:.0f}/"
+            f"{reach['design']:.0f} urad ({reach['what']}{why})")
+    tried = " and ".join(reach.get("tried", ()))
+    tried = (f"{tried} tried" if tried else "no flatter profile or deeper TE parabola "
+             "left to try")
+    if least > limit:
+        return (said + f": LTE p-p <= {limit:g} urad at every torque is out of this basic "
+                f"data's reach ({tried}): the contact ratios must rise, the change above "
+                "takes them to their limits")
+    return said + f": within {limit:g} urad, but not written"
 
 
 def gear_process_note(development, case) -> str | None:

@@ -464,7 +464,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                root_text, coast.torques,
                                coast_cap.torque if coast_cap is not None and coast_cap.lowered
                                else math.nan,
-                               coast_cap.reason if coast_cap is not None else "")
+                               coast_cap.reason if coast_cap is not None else "",
+                               lte_reach=setup.get("lte_reach", {}).get(
+                                   tuple(float(t) for t in setup["torques"])))
     say(result.headline())
     return result
 

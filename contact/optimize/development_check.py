@@ -17,7 +17,9 @@ written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the v
 60 µrad a longer ellipse, then a path nearer the lengthwise direction
 (:data:`COAST_LTE_STEPS`), then its TE level raised back (:func:`checked_coast_te`);
 :func:`checked_relief_lte` a drive design whose LTE still exceeds it a shallower root
-relief (:data:`RELIEF_LTE_FRACTIONS`); :func:`checked_near_miss` a drive design that misses
+relief (:data:`RELIEF_LTE_FRACTIONS`), :func:`checked_crowning_lte` then less profile
+crowning (:data:`CROWNING_LTE_FRACTIONS`) and a deeper TE parabola, recording the least
+LTE the development reached; :func:`checked_near_miss` a drive design that misses
 its light-load centre v and nothing by more than a small margin (:data:`NEAR_MISS`) a small
 blade-angle step with its TE level lowered; :func:`checked_te_back` the TE level of a design
 still missing a target raised back to the flank's own on the bearing the steps ended at.
@@ -58,6 +60,7 @@ from contact.optimize.development_result import (
 )
 from contact.optimize.development_stages import footprint_centre_v
 from contact.optimize.development_targets import (
+    CROWNING_NAME,
     HEIGHT_NAME,
     METRIC_NAMES,
     TE_NAME,
@@ -337,7 +340,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the
     ellipse a step longer (:func:`checked_ellipse`), then the long bearing
     (:func:`checked_long`) and a shallower root relief where it exceeds 60 µrad
-    (:func:`checked_relief_lte`); its TE level raised back to the flank's own where it
+    (:func:`checked_relief_lte`), then a flatter profile and a deeper TE parabola
+    (:func:`checked_crowning_lte`); its TE level raised back to the flank's own where it
     still misses a target (:func:`checked_te_back`); last, where it misses its light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
     lowered (:func:`checked_near_miss`; ``slopes``: the height stage's measured
@@ -357,6 +361,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = checked_ellipse(best, targets, setup, teeth, say, placed)
     best = checked_long(best, targets, setup, teeth, say, placed)
     best = checked_relief_lte(best, targets, setup, teeth, say, placed)
+    best = checked_crowning_lte(best, targets, setup, teeth, say, placed, level=level)
     best = checked_te_back(best, targets, setup, teeth, say, placed, level)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
@@ -728,6 +733,165 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if not (vb - va) / (xb - xa) > 0.05:
             break  # no slope to step on
         s = (vb - va) / (xb - xa)  # the slope measured: the next design a secant
+    return best
+
+
+#: the profile crowning of :func:`checked_crowning_lte`'s designs, as fractions of the
+#: design's, tried in turn (every other prescription kept)
+CROWNING_LTE_FRACTIONS = (0.5, 0.0)
+
+
+def _lte_ends(e: DevelopmentEvaluation) -> tuple[float, float]:
+    """[µrad] A checked design's LTE p-p at the light and the design torque."""
+    lte = np.asarray(e.metrics["lte_peak_to_peak"], float)
+    return float(lte[0]), float(lte[-1])
+
+
+def _reached(setup: Mapping[str, Any], e: DevelopmentEvaluation, what: str,
+             why: str = "") -> None:
+    """Record in ``setup["lte_reach"]`` (by the development's torques) the design of least
+    LTE p-p (the larger of light and design torque) :func:`checked_crowning_lte` has seen:
+    ``{"light", "design"}`` [µrad], ``"what"`` it is, ``"why"`` it was not kept (empty
+    where it was, or is the design the step began with) and ``"tried"`` the levers the
+    step analysed (:func:`_tried`)."""
+    if not isinstance(setup, dict) or e.metrics is None:
+        return
+    light, design = _lte_ends(e)
+    if not (math.isfinite(light) and math.isfinite(design)):
+        return
+    key = tuple(float(t) for t in setup["torques"])
+    kept = setup.setdefault("lte_reach", {}).get(key)
+    if kept is None or max(light, design) < max(kept["light"], kept["design"]) - 1e-9:
+        setup["lte_reach"][key] = {"light": light, "design": design, "what": what,
+                                   "why": why,
+                                   "tried": () if kept is None else kept["tried"]}
+
+
+def _tried(setup: Mapping[str, Any], lever: str) -> None:
+    """Add ``lever`` (a lever's name in words) to the ``"tried"`` of the development's
+    ``setup["lte_reach"]`` record at its torques (:func:`_reached`)."""
+    key = tuple(float(t) for t in setup["torques"])
+    kept = setup.get("lte_reach", {}).get(key) if isinstance(setup, dict) else None
+    if kept is not None and lever not in kept["tried"]:
+        kept["tried"] = (*kept["tried"], lever)
+
+
+def _lte_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
+              targets: DevelopmentTargets, setup: Mapping[str, Any],
+              teeth: KeptTeeth | None, say: Callable[[str], None], what: str) -> str:
+    """Why :func:`checked_crowning_lte`'s design ``e`` does not replace ``best`` (empty
+    where it does): it scores no better, misses a target ``best`` met (the pattern length
+    included), or is not tolerant (:func:`_tolerant_variant`)."""
+    if _check_rank(e) >= _check_rank(best):
+        return "it scores no better"
+    lost = _lost_targets(best, e)
+    if lost:
+        say(f"  not kept: {what} misses {', '.join(lost)}")
+        return f"it misses {', '.join(lost)}"
+    if not _tolerant_variant(e, targets, setup, teeth, say):
+        return "not tolerant at dE/dP +/-0.05 mm"
+    return ""
+
+
+def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                         setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                         say: Callable[[str], None],
+                         placed: Callable[[Mapping[str, float]], Case], *,
+                         level: float | None = None, lte_limit: float | None = None
+                         ) -> DevelopmentEvaluation:
+    """A drive design whose LTE p-p at the check still exceeds the verdict's limit after
+    every other step given a flatter profile, then a deeper TE parabola: the profile
+    crowning × :data:`CROWNING_LTE_FRACTIONS` in turn (within its bounds), then, where the
+    design torque's LTE is still above the limit and above the light torque's, the
+    ``te_level`` (the modified roll's parabola, :data:`TE_NAME`) at its upper bound and,
+    where the light and design LTE cross between the two, at their crossing
+    (:func:`crossing_level`); each design (a synthesis of steps 3-6) placed and checked at
+    :data:`CHECK_LTCA`, kept where it scores better, misses no target the design met (the
+    pattern length included) and is tolerant (:func:`_tolerant_variant`); at most four
+    designs, none where the design is within the limit at every torque. ``level`` [µrad]:
+    the flank's own TE level, where the design's values do not give one; ``lte_limit``
+    [µrad]: the verdict's ``lte`` limit (default
+    :data:`contact.study.verdicts.LTE_LIMIT`, 60 µrad). Each design's LTE is recorded
+    (``setup["lte_reach"]``, :func:`_reached`): the least the development reached, which
+    ``ltca synthesize`` states where it stays above the limit.
+
+    Why: with low contact ratios (ε_vα near 1, ε_vβ below 1.25) one pair carries the load
+    over much of the mesh cycle and hands it over where the profile crowning has taken
+    its flank away: the light-load LTE is then the crowning's unloaded TE, and the loaded
+    contact ratio at the design torque what the crowning leaves of the profile. Practice
+    for such sets is less profile crowning and a larger parabolic TE of the modified roll,
+    which the pairs' deflection at the design torque takes up (Stadtfeld, *Gleason Bevel
+    Gear Technology*, 2014; Litvin & Fuentes 2004 §9.4, the predesigned parabolic TE).
+    Measured at ``ltca run``'s sampling on the spiral bevel 19x23 at β_m 46° of
+    benchmarks/data/unseen_designs (ε_vα 0.98, ε_vβ 1.27; 33.78 / 225.2 N m; its written
+    bearing path −60°, ellipse 0.7, root relief 20 µm from 0.2, profile crowning 16.8 µm,
+    te_level 10 µrad; ``benchmarks/development_levers.py --check --from-case``,
+    2026-11-26; LTE p-p light / design [µrad], unloaded TE p-p): 221 / 111, 253; crowning
+    8 µm: 169 / 87, 192; 0: 109 / 97, 106 (pattern 0.38 long: the length missed);
+    te_level 45 / 80 µrad: 229 / 113, 236 / 117 (the light LTE up, the design's no
+    lower). About the long bearing (path −80°, ellipse 0.75): 139 / 89; crowning 4 µm,
+    te_level 25 / 45: 81 / 84, 85 / 79; crowning 0, te_level 10 / 45 / 80: 62 / 64, 60 /
+    79, 67 / 73 µrad (1.1-1.2 % of the design torque on the edges, 2.0-2.4 % at ΔE, ΔP
+    −0.05 mm) — the crowning the lever, the TE level trading the light against the
+    design LTE, and 60 µrad not reached. ``ltca synthesize`` with this step (2026-11-26)
+    writes the 19x23's drive flank as before (crowning 8.4 µm: an LTE spread above 0.5;
+    none: 109 / 96 µrad, the pattern 0.38 long: neither kept), the spiral bevel 18x22's
+    likewise (te_level 45 µrad: 204 / 206 against 192 / 208 µrad, no better score); what
+    it adds there is the least LTE reached, which ``ltca synthesize`` states."""
+    from contact.study.verdicts import LTE_LIMIT
+
+    limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
+    if best.full is None or not best.checked or best.metrics is None:
+        return best
+    _reached(setup, best, f"design {best.index + 1} as checked")
+
+    def above(e: DevelopmentEvaluation) -> bool:
+        return bool(np.nanmax(e.metrics["lte_peak_to_peak"]) > limit)
+
+    if not above(best):
+        return best
+    if CROWNING_NAME in targets.variables and CROWNING_NAME in best.values:
+        lo, hi = (float(x) for x in targets.variables[CROWNING_NAME])
+        now = float(best.values[CROWNING_NAME])
+        for fraction in CROWNING_LTE_FRACTIONS:
+            x = float(np.clip(fraction * now, lo, hi))
+            if not above(best) or not x < float(best.values[CROWNING_NAME]) - 1e-9:
+                continue
+            what = f"design {best.index + 1} with profile_crowning {x:.3g} um"
+            e = _said_variant(best, dict(best.values) | {CROWNING_NAME: x}, "crowning lte",
+                              f"with {what} (its LTE above {limit:g} urad)", targets, setup,
+                              teeth, say, placed)
+            if e is None:
+                continue
+            _tried(setup, "the profile crowning flattened")
+            why = _lte_kept(best, e, targets, setup, teeth, say, "the flatter profile")
+            _reached(setup, e, what, why)
+            if not why:
+                best = e
+    if TE_NAME not in targets.variables or not above(best):
+        return best
+    light, design = _lte_ends(best)
+    lo, hi = (float(x) for x in targets.variables[TE_NAME])
+    now = float(best.values.get(TE_NAME, hi if level is None else level))
+    if not (design > limit and design > light and hi > now + 1.0):
+        return best
+    base, tried = best, [hi]
+    while tried:
+        x = tried.pop()
+        e = _said_variant(base, dict(base.values) | {TE_NAME: x}, "te lte",
+                          f"with te_level {x:.3g} urad (its LTE above {limit:g} urad at the design "
+                          "torque)", targets, setup, teeth, say, placed)
+        if e is None:
+            break
+        _tried(setup, "the modified roll's TE parabola deepened")
+        why = _lte_kept(best, e, targets, setup, teeth, say, "the deeper TE parabola")
+        _reached(setup, e, f"design {base.index + 1} with te_level {x:.3g} urad", why)
+        if not why:
+            best = e
+        if x == hi and above(e):
+            cross = crossing_level(now, (light, design), hi, _lte_ends(e))
+            if cross is not None and now + 1.0 < cross < hi - 1.0:
+                tried.append(round(cross, 1))
     return best
 
 

@@ -62,7 +62,11 @@ def _flank_fails(metrics: Any, torques: tuple[float, ...], flank: str) -> list[s
     and the plastic share beyond :mod:`contact.ltca.plausibility`'s limits — an LTE spread
     the verdict reads as a quiet mesh's own transfer (no edge share, LTE p-p within its
     ``lte`` limit: :func:`contact.study.verdicts.quiet_transfer`) an attention there, and
-    no FAIL here."""
+    no FAIL here. The ``lte`` check's FAIL (an LTE p-p beyond
+    :data:`contact.study.verdicts.LTE_FAIL_FACTOR` × its limit) is not counted: it would
+    develop the second gear process on every low-contact-ratio design, whose LTE the
+    contact ratios set, not the gear process (the spiral bevel 16x24: 183 / 152 µrad
+    generated, 337 / 327 µrad Formate, docs/own_gear_set.md)."""
     from contact.study.verdicts import quiet_transfer
 
     if metrics is None:

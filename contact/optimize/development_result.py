@@ -158,6 +158,11 @@ class DevelopmentResult:
         Which gear process was kept and why, where ``gear_process = "auto"`` developed the
         generated gear too (:func:`contact.optimize.development_process.
         with_generated_gear`); empty where not.
+    lte_reach : dict or None
+        The drive design of least LTE p-p the check's last LTE step saw at :attr:`torque`
+        (:func:`contact.optimize.development_check.checked_crowning_lte`): ``"light"``,
+        ``"design"`` [µrad], ``"what"`` it is (its change, or "the design written"),
+        ``"why"`` not kept (empty where kept); None where the step did not run.
     """
 
     basic: BasicDesign
@@ -186,6 +191,7 @@ class DevelopmentResult:
     coast_capacity: float = math.nan
     coast_capacity_text: str = ""
     gear_process_text: str = ""
+    lte_reach: dict | None = None
 
     @property
     def tolerant(self) -> bool:
