@@ -74,6 +74,9 @@ __all__ = [
 log = logging.getLogger(__name__)
 
 _BLOCK = 32  # elements per block of the stiffness contraction (in the CPU's cache: 32 × 81² × 8 B)
+#: elements whose basis gradients are evaluated at once for the stiffness (31 MB on the
+#: quadratic hexahedra; all of them at once took 181 MB on the default pinion model)
+_FIELDS_BLOCK = 32 * _BLOCK
 _VOIGT = ((0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1))  # xx, yy, zz, yz, xz, xy
 
 
@@ -173,21 +176,25 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     # CellBasis(mesh, elem, intorder=4)'s gradients and area weights, each evaluated
     # once (mapped_mesh.basis_fields: the same numbers, a fraction of the time, issue 75)
     X, W = get_quadrature(mesh.refdom, 4)
-    fields = basis_fields(mesh, elem, X)
-    grads, det = fields.grads, fields.det  # (nb, 3, E, Q), (E, Q)
-    del fields
-    nb, _, ne, nq = grads.shape
-    dx = np.abs(det) * np.broadcast_to(W, det.shape)  # (E, Q)
-    del det
     dofs = skfem.assembly.Dofs(mesh, elem)
     dofmap = DofMap(int(dofs.N), dofs.element_dofs)
     pattern = _node_pairs(dofmap)
     n = 3 * dofmap.N
+    ne, nq = mesh.nelements, X.shape[-1]
     data = np.zeros(pattern.nnz + 1)  # the last: where the diagonal blocks' upper go
+    grads = dx = None
     for lo in range(0, ne, _BLOCK):
         hi = min(lo + _BLOCK, ne)
-        g = grads[:, :, lo:hi].transpose(2, 0, 1, 3).reshape(hi - lo, 3 * nb, nq)
-        gg = np.matmul(g * dx[lo:hi, None, :], g.transpose(0, 2, 1))  # (e, a i, b j)
+        if lo % _FIELDS_BLOCK == 0:  # the gradients of the next elements (no values)
+            top = min(lo + _FIELDS_BLOCK, ne)
+            fields = basis_fields(mesh, elem, X, np.arange(lo, top), values=False)
+            grads, dx = fields.grads, np.abs(fields.det) * W  # (nb, 3, e, Q), (e, Q)
+            nb, first = grads.shape[0], lo
+            del fields
+        g = grads[:, :, lo - first:hi - first].transpose(2, 0, 1, 3).reshape(
+            hi - lo, 3 * nb, nq)
+        gg = np.matmul(g * dx[lo - first:hi - first, None, :],
+                       g.transpose(0, 2, 1))  # (e, a i, b j)
         # the blocks G of the element's node pairs kept (node(a) ≥ node(b)), (M, 3, 3)
         big_g = gg.reshape(hi - lo, nb, 3, nb, 3).transpose(0, 1, 3, 2, 4)[
             pattern.kept[lo:hi]]
