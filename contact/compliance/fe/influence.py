@@ -1014,7 +1014,9 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     t0 = time.perf_counter()
     progress_line(progress, f"FE {member} influence coefficients of {case.name} ({name} "
                             f"flank): not in the cache, building them"
-                            + (_estimate_text(cache_dir) if cache else ""))
+                            # the estimate opens cache entries: only where it is printed
+                            + (_estimate_text(cache_dir) if cache and progress == "lines"
+                               else ""))
     with _small_pages():
         ds = _build_and_cache(case, member, name, opt, solver, progress, cache, cache_dir,
                               other_flank, path, key, t0)
