@@ -346,3 +346,43 @@ def test_the_workers_shared_blocks_solve_as_the_connection(monkeypatch, shared):
         np.testing.assert_allclose(y, ref[iso.free, 40:45], rtol=0, atol=1e-12 * scale)
     finally:
         iso.close()
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="memfd_create: Linux")
+@pytest.mark.parametrize("shared", [True, False])
+def test_a_worker_session_factorises_one_matrix_after_another(monkeypatch, shared):
+    """Within ``worker_session`` (issue 75: a pair's two FE builds) a closed factorisation
+    hands its lean worker back and the next one uses the same process — a matrix of other
+    rows too (the shared blocks resized) — and each solves as the in-process factor (equal
+    to round-off, 1e-12 of the largest: the same factor in another process); the worker
+    ends with the session, and without one each factorisation has its own."""
+    from contact.compliance.fe import elasticity
+
+    if not shared:
+        monkeypatch.setattr(elasticity, "_shared_blocks", lambda rows: None)
+    model, fixed = _cantilever()
+    small_fixed = np.r_[fixed, np.arange(model.n_dofs - 30, model.n_dofs)]  # other rows
+    rhs = np.random.default_rng(5).standard_normal((model.n_dofs, 70))
+    pids = []
+    with elasticity.worker_session():
+        for dofs in (fixed, small_fixed, fixed):
+            ref = factorise(model.stiffness, dofs, "cholmod").solve(rhs)
+            iso = factorise(model.stiffness, dofs, "cholmod", isolated=True)
+            try:
+                pids.append(iso._close.__closure__[0].cell_contents.proc.popen.pid)
+                np.testing.assert_allclose(iso.solve(rhs), ref, rtol=0,
+                                           atol=1e-12 * np.abs(ref).max())
+            finally:
+                iso.close()
+        held = elasticity._SESSIONS[0][0]
+        assert held.proc.is_alive()
+    assert len(set(pids)) == 1
+    held.proc.join(5.0)
+    assert not held.proc.is_alive() and not elasticity._SESSIONS
+    outside = [factorise(model.stiffness, fixed, "cholmod", isolated=True) for _ in range(2)]
+    try:
+        assert len({f._close.__closure__[0].cell_contents.proc.popen.pid
+                    for f in outside}) == 2
+    finally:
+        for f in outside:
+            f.close()

@@ -801,8 +801,12 @@ def _grid_tip_row(model) -> np.ndarray:
 def test_facet_points_equal_scikit_fems_facet_basis(order):
     """``facet_points`` calls the parameter mesh's mapping as scikit-fem's ``FacetBasis``
     does, without building one (issue 75): its points, elements, normals and areas are
-    those computed from a ``FacetBasis`` of the same facets to the bit, on a distorted
-    mesh and on facets of three different orientations."""
+    those computed from a ``FacetBasis`` of the same facets, on a distorted mesh and on
+    facets of three different orientations — the elements and parameter points to the
+    bit, the rest to round-off (1e-12 relative: the parameter elements' affine map is
+    inverted in one step and the 3 × 3 inverses taken in closed form, where scikit-fem
+    iterates Newton's method and NumPy calls LAPACK; ≤ 4e-14 here, ≤ 6e-12 on the
+    default models' long thin elements)."""
     mm = mapped_mesh((4, 3, 2), lambda p: np.vstack([
         10.0 * p[0] + 0.4 * p[1] ** 2, 2.0 * p[1] + 0.2 * p[0] * p[2], 2.0 * p[2] + 0.3 * p[0]]))
     el = ELEMENTS["hex20"][0]()
@@ -818,7 +822,8 @@ def test_facet_points_equal_scikit_fems_facet_basis(order):
     ref = pmap.invF(xp, tind=fp.tind)
     jac = pmap.DF(ref, tind=fp.tind)
     phys = got.x  # the physical points: the mesh's mapping at the same reference points
-    np.testing.assert_array_equal(phys, mm.mesh.mapping().F(ref, tind=fp.tind))
+    np.testing.assert_allclose(phys, mm.mesh.mapping().F(ref, tind=fp.tind), rtol=1e-12,
+                               atol=1e-12 * np.abs(phys).max())
     # the normal and area from FacetBasis's parameter normal and weights (Nanson)
     from contact.compliance.fe.mapped_mesh import basis_fields
 
@@ -829,5 +834,5 @@ def test_facet_points_equal_scikit_fems_facet_basis(order):
     det = np.linalg.det(np.moveaxis(phi, (0, 1), (-2, -1)))
     a = np.einsum("ijfq,jfq->ifq", inv_t, np.asarray(fp.normals))
     norm = np.linalg.norm(a, axis=0)
-    np.testing.assert_array_equal(got.normal, a / norm)
-    np.testing.assert_array_equal(got.dx, np.abs(det) * norm * fp.dx)
+    np.testing.assert_allclose(got.normal, a / norm, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(got.dx, np.abs(det) * norm * fp.dx, rtol=1e-12)

@@ -109,6 +109,22 @@ def root_safety(tree) -> tuple[np.ndarray, float, str]:
     return s[:, j], float(rt["S_Fmin"]), member_names(rs)[j]
 
 
+def _in_worker_session(function: Callable) -> Callable:
+    """``function`` run in a :func:`contact.compliance.fe.elasticity.worker_session`: the
+    FE builds it makes share one solver worker (issue 75; imported when called)."""
+    import functools
+
+    @functools.wraps(function)
+    def wrapper(*args, **kwargs):
+        from contact.compliance.fe.elasticity import worker_session
+
+        with worker_session():
+            return function(*args, **kwargs)
+
+    return wrapper
+
+
+@_in_worker_session
 def both_flanks_built(case, earlier=None,
                       say: Callable[[str], None] | None = None) -> dict[str, float]:
     """Both members' default FE models of the written ``case`` built once for both flanks

@@ -67,6 +67,7 @@ import scipy.sparse as sp
 import xarray as xr
 
 from contact.compliance.fe.cache import NOT_WRITTEN_ATTR, cache_key, cache_path, read_cache_entry
+from contact.compliance.fe.elasticity import worker_session
 from contact.compliance.fe.influence import influence_coefficients
 from contact.compliance.fe.options import FEOptions, member_flank
 from contact.compliance.fe.superposition import locate_flank_points
@@ -288,15 +289,16 @@ def pair_coefficients(case: Case, flanks: dict[str, str], options: FEOptions | N
         Coefficients given for another flank than the analysed one (named).
     """
     coef = dict(coefficients or {})
-    for name in _MEMBERS:
-        if name not in coef:
-            coef[name] = shared_coefficients(case, name, flanks[name], options, cache=cache,
-                                             cache_dir=cache_dir, progress=progress,
-                                             solver=solver)
-        elif coef[name].attrs.get("flank") != flanks[name]:
-            raise InputError(f"coefficients: the {name}'s are of its "
-                             f"{coef[name].attrs.get('flank')} flank, the analysis loads its "
-                             f"{flanks[name]} flank")
+    with worker_session():  # both members built in one solver worker (issue 75)
+        for name in _MEMBERS:
+            if name not in coef:
+                coef[name] = shared_coefficients(case, name, flanks[name], options,
+                                                 cache=cache, cache_dir=cache_dir,
+                                                 progress=progress, solver=solver)
+            elif coef[name].attrs.get("flank") != flanks[name]:
+                raise InputError(f"coefficients: the {name}'s are of its "
+                                 f"{coef[name].attrs.get('flank')} flank, the analysis "
+                                 f"loads its {flanks[name]} flank")
     return coef
 
 

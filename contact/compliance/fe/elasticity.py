@@ -28,10 +28,12 @@ lattice_dissection  nested dissection of a structured mesh's node lattice for CH
                     influence build's ordering)
                     (not used by the build since the lattice's: as good, no dependency)
 stress_operator     sparse map from displacements to stress components at points
+worker_session      keep CHOLMOD's solver worker between factorisations (a pair's members)
 """
 
 from __future__ import annotations
 
+import contextlib
 import gc
 import importlib.util
 import logging
@@ -69,11 +71,15 @@ __all__ = [
     "lattice_dissection",
     "resolve_solver",
     "stress_operator",
+    "worker_session",
 ]
 
 log = logging.getLogger(__name__)
 
 _BLOCK = 32  # elements per block of the stiffness contraction (in the CPU's cache: 32 × 81² × 8 B)
+#: elements whose basis gradients are evaluated at once for the stiffness (31 MB on the
+#: quadratic hexahedra; all of them at once took 181 MB on the default pinion model)
+_FIELDS_BLOCK = 32 * _BLOCK
 _VOIGT = ((0, 0), (1, 1), (2, 2), (1, 2), (0, 2), (0, 1))  # xx, yy, zz, yz, xz, xy
 
 
@@ -173,21 +179,25 @@ def elastic_model(mesh: skfem.MeshHex2, element: str, youngs_modulus: float,
     # CellBasis(mesh, elem, intorder=4)'s gradients and area weights, each evaluated
     # once (mapped_mesh.basis_fields: the same numbers, a fraction of the time, issue 75)
     X, W = get_quadrature(mesh.refdom, 4)
-    fields = basis_fields(mesh, elem, X)
-    grads, det = fields.grads, fields.det  # (nb, 3, E, Q), (E, Q)
-    del fields
-    nb, _, ne, nq = grads.shape
-    dx = np.abs(det) * np.broadcast_to(W, det.shape)  # (E, Q)
-    del det
     dofs = skfem.assembly.Dofs(mesh, elem)
     dofmap = DofMap(int(dofs.N), dofs.element_dofs)
     pattern = _node_pairs(dofmap)
     n = 3 * dofmap.N
+    ne, nq = mesh.nelements, X.shape[-1]
     data = np.zeros(pattern.nnz + 1)  # the last: where the diagonal blocks' upper go
+    grads = dx = None
     for lo in range(0, ne, _BLOCK):
         hi = min(lo + _BLOCK, ne)
-        g = grads[:, :, lo:hi].transpose(2, 0, 1, 3).reshape(hi - lo, 3 * nb, nq)
-        gg = np.matmul(g * dx[lo:hi, None, :], g.transpose(0, 2, 1))  # (e, a i, b j)
+        if lo % _FIELDS_BLOCK == 0:  # the gradients of the next elements (no values)
+            top = min(lo + _FIELDS_BLOCK, ne)
+            fields = basis_fields(mesh, elem, X, np.arange(lo, top), values=False)
+            grads, dx = fields.grads, np.abs(fields.det) * W  # (nb, 3, e, Q), (e, Q)
+            nb, first = grads.shape[0], lo
+            del fields
+        g = grads[:, :, lo - first:hi - first].transpose(2, 0, 1, 3).reshape(
+            hi - lo, 3 * nb, nq)
+        gg = np.matmul(g * dx[lo - first:hi - first, None, :],
+                       g.transpose(0, 2, 1))  # (e, a i, b j)
         # the blocks G of the element's node pairs kept (node(a) ≥ node(b)), (M, 3, 3)
         big_g = gg.reshape(hi - lo, nb, 3, nb, 3).transpose(0, 1, 3, 2, 4)[
             pattern.kept[lo:hi]]
@@ -254,18 +264,20 @@ def _node_pairs(dofmap: DofMap) -> _NodePairs:
     indptr = np.zeros(3 * n_nodes + 1, dtype=np.int64)
     np.cumsum(lengths.ravel(), out=indptr[1:])
     nnz = int(indptr[-1])
-    rank = np.arange(blocks.size) - first[row]  # the block's rank in its node row
-    place = (indptr[:-1].reshape(n_nodes, 3)[row] + 3 * rank[:, None])[:, :, None] \
-        + np.arange(3)[None, None, :]  # (blocks, i, j)
+    # the places and columns in 32 bits where they fit (half the memory written: the
+    # pinion's 742 k blocks × 9 and 6.6 M columns, issue 75)
+    index = np.int32 if 3 * n_nodes < 2**31 and nnz < 2**31 else np.int64
+    rank = (np.arange(blocks.size) - first[row]).astype(index)  # rank in its node row
+    place = (indptr[:-1].astype(index).reshape(n_nodes, 3)[row] + 3 * rank[:, None])[
+        :, :, None] + np.arange(3, dtype=index)[None, None, :]  # (blocks, i, j)
     upper = np.triu(np.ones((3, 3), dtype=bool), 1)
     diagonal = row == col
     place[diagonal] = np.where(upper, nnz, place[diagonal])
     place = place.reshape(-1, 9)
-    indices = np.empty(nnz + 1, dtype=np.int64)
-    indices[place.ravel()] = (3 * col[:, None] + np.tile(np.arange(3), 3)[None, :]).ravel()
-    index = np.int32 if 3 * n_nodes < 2**31 and nnz < 2**31 else np.int64
-    return _NodePairs(kept, start, pair, place, indptr.astype(index),
-                      indices[:nnz].astype(index), nnz)
+    indices = np.empty(nnz + 1, dtype=index)
+    indices[place.ravel()] = (3 * col.astype(index)[:, None]
+                              + np.tile(np.arange(3, dtype=index), 3)[None, :]).ravel()
+    return _NodePairs(kept, start, pair, place, indptr.astype(index), indices[:nnz], nnz)
 
 
 def stress_operator(model: ElasticModel, grads: np.ndarray, elements: np.ndarray) -> sp.csr_matrix:
@@ -620,6 +632,10 @@ class _LeanWorker(_Worker):
             except BaseException:
                 self.kill()
                 raise
+        self._send_matrix(low, ordering)
+
+    def _send_matrix(self, low: sp.csc_matrix, ordering: np.ndarray | None) -> None:
+        """Hand the worker a matrix to factorise (its answer: :meth:`receive`)."""
         self.busy = True
         try:  # the arrays as raw bytes, not pickled: no copy of the matrix on either side
             from contact.compliance.fe.solver_worker import send_array
@@ -632,7 +648,35 @@ class _LeanWorker(_Worker):
         except BaseException:
             self.kill()
             raise
-        del low, ordering
+
+    def load(self, box: list) -> None:
+        """Hand this worker, released (:meth:`release`), the next matrix of ``box`` (taken
+        out): the shared blocks resized to its rows (the worker maps them again)."""
+        low, ordering = box.pop()
+        if self.shared is not None and self.shared.rows != low.shape[0]:
+            from contact.compliance.fe.solver_worker import SharedBlocks
+
+            fd = self.shared.fd
+            self.shared.close()
+            self.shared = SharedBlocks(fd, low.shape[0], PIPE_BLOCK, create=True)
+        self._send_matrix(low, ordering)
+
+    def release(self) -> bool:
+        """Free the worker's factor and keep the process for another matrix
+        (:meth:`load`): True where it answered so, else (busy, ended, an error) it is
+        ended and False."""
+        if not self.proc.is_alive() or self.busy:
+            self.close()
+            return False
+        try:
+            self.conn.send(("release",))
+            answer = self.receive()
+        except Exception:  # ended by receive
+            return False
+        if answer[:1] != ("released",):
+            self.kill()
+            return False
+        return True
 
     def rhs_block(self, k: int) -> np.ndarray | None:
         """The shared block for ``k`` ≤ :data:`PIPE_BLOCK` right-hand sides, (F, k) in
@@ -703,16 +747,70 @@ def lean_worker_available() -> bool:
     return os.name == "posix"
 
 
+#: the open sessions of :func:`worker_session`, innermost last: each a list holding its
+#: idle lean worker (or nothing)
+_SESSIONS: list[list] = []
+
+
+@contextlib.contextmanager
+def worker_session():
+    """Within the block, CHOLMOD's lean solver worker is kept between factorisations: a
+    :class:`Factorisation` closed hands its worker back (its factor freed) and the next
+    isolated factorisation uses it — the FE builds of a pair's two members in one worker
+    process, without a second interpreter start and its imports (~0.35 s of CPU) and
+    with the second factor on the pages the first one had (issue 75). The worker left
+    idle at the end of the block is ended. Nested sessions share the outermost's worker.
+    Nothing changes for the forked workers of the other solvers."""
+    holder: list = []
+    _SESSIONS.append(holder)
+    try:
+        yield
+    finally:
+        _SESSIONS.remove(holder)
+        while holder:
+            worker = holder.pop()
+            if _SESSIONS:  # an outer session takes it over
+                _SESSIONS[0].append(worker)
+            else:
+                worker.close()
+
+
+def _session_worker(box: list) -> _LeanWorker:
+    """A lean worker given the matrix of ``box``: the session's idle one where there is
+    one alive (:func:`worker_session`), else a new one."""
+    holder = _SESSIONS[0] if _SESSIONS else []
+    while holder:
+        worker = holder.pop()
+        if worker.proc.is_alive():
+            worker.load(box)
+            return worker
+        worker.kill()
+    return _LeanWorker(box)
+
+
+def _closer(worker: _Worker) -> Callable[[], None]:
+    """What closes a factorisation's worker: hand it back to the session open then (the
+    factor freed, :meth:`_LeanWorker.release`), or end it."""
+    def close() -> None:
+        if isinstance(worker, _LeanWorker) and _SESSIONS and worker.release():
+            _SESSIONS[0].append(worker)
+        else:
+            worker.close()
+
+    return close
+
+
 def _isolated(kernel: Callable[[list], tuple], box: list):
     """``kernel``'s factorisation and solves in a worker process — CHOLMOD's in a
-    :class:`_LeanWorker`, the others in a forked :class:`_Worker`: (solve, nnz, close)."""
+    :class:`_LeanWorker` (a session's where one is open: :func:`worker_session`), the
+    others in a forked :class:`_Worker`: (solve, nnz, close)."""
     if kernel is _cholmod and lean_worker_available():
-        worker = _LeanWorker(box)
+        worker = _session_worker(box)
     else:
         worker = _Worker(kernel, box)
     _, nnz, _ = worker.receive()
-    return worker.solve, nnz, worker.close, (worker if isinstance(worker, _LeanWorker)
-                                             and worker.shared is not None else None)
+    return worker.solve, nnz, _closer(worker), (worker if isinstance(worker, _LeanWorker)
+                                                 and worker.shared is not None else None)
 
 
 def isolation_available() -> bool:

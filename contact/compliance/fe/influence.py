@@ -212,9 +212,12 @@ class InfluenceModel:
         return s.reshape(-1, 6, disp.shape[1])
 
 
-def _facet_points(solid: ToothSolid, facets: np.ndarray, order: int) -> FacetPoints:
-    """Gauss points of ``facets`` with basis values, gradients, normals and areas."""
-    return facet_points(solid.mesh, ELEMENTS[solid.options.element][0](), facets, order)
+def _facet_points(solid: ToothSolid, facets: np.ndarray, order: int, *,
+                  grads: bool = True) -> FacetPoints:
+    """Gauss points of ``facets`` with basis values, gradients (where ``grads``), normals
+    and areas."""
+    return facet_points(solid.mesh, ELEMENTS[solid.options.element][0](), facets, order,
+                        grads=grads)
 
 
 def _trace(fb: FacetPoints, n_dofs: int, weight: np.ndarray) -> sp.csr_matrix:
@@ -289,7 +292,8 @@ def _flank_loads(solid: ToothSolid, elastic: ElasticModel, offset: int, side: st
     of its mid-surface's displacement along each hat's mean inward flank normal
     (3N, nL) [1]."""
     facets = solid.flank_facets(offset, side)
-    fb = _facet_points(solid, facets, _load_order(solid, facets, grid_u, grid_v))
+    fb = _facet_points(solid, facets, _load_order(solid, facets, grid_u, grid_v),
+                       grads=False)
     hats, area = _hats(solid, fb, grid_u, grid_v)
     scaled = hats.multiply(1.0 / area[None, :]).tocsc()  # (FQ, nL): N_a / A_a
     inward = -fb.normal.reshape(3, -1).T  # (FQ, 3)
@@ -304,7 +308,7 @@ def _flank_loads(solid: ToothSolid, elastic: ElasticModel, offset: int, side: st
     a_mid = lay.side_a(offset, "left") + 0.5 * lay.across
     mid = solid.mesh.facets_where(lambda p: (np.abs(p[0] - a_mid) < 1e-9) & (p[1] > lay.rim),
                                   boundary=False)
-    fm = _facet_points(solid, mid, _load_order(solid, mid, grid_u, grid_v))
+    fm = _facet_points(solid, mid, _load_order(solid, mid, grid_u, grid_v), grads=False)
     hm, am = _hats(solid, fm, grid_u, grid_v)
     sm = hm.multiply(1.0 / am[None, :]).tocsc()
     w_mid = sp.vstack([sm.multiply(normal[:, c][None, :]) for c in range(3)]).tocsr()
@@ -1010,7 +1014,9 @@ def influence_coefficients(case, member: str, flank: str = "drive",
     t0 = time.perf_counter()
     progress_line(progress, f"FE {member} influence coefficients of {case.name} ({name} "
                             f"flank): not in the cache, building them"
-                            + (_estimate_text(cache_dir) if cache else ""))
+                            # the estimate opens cache entries: only where it is printed
+                            + (_estimate_text(cache_dir) if cache and progress == "lines"
+                               else ""))
     with _small_pages():
         ds = _build_and_cache(case, member, name, opt, solver, progress, cache, cache_dir,
                               other_flank, path, key, t0)

@@ -180,8 +180,10 @@ def mapped_mesh(shape: tuple[int, int, int], mapping: Callable[[np.ndarray], np.
     if phys.shape != nodes.shape or not np.all(np.isfinite(phys)):
         raise LTCAError("mesh mapping: returned non-finite or misshaped coordinates")
     mesh = dataclasses.replace(quad, doflocs=phys)
-    basis = skfem.CellBasis(mesh, skfem.ElementHex1(), intorder=2)
-    det = mesh.mapping().detDF(basis.X, tind=basis.tind)
+    # the Jacobian at CellBasis(mesh, ElementHex1(), intorder=2)'s points of every
+    # element, without the basis (its global dofs and values: ~0.2 s, issue 75)
+    quad_x, _ = get_quadrature(mesh.refdom, 2)
+    det = mesh.mapping().detDF(quad_x)
     sign = np.sign(np.median(det))
     ratio = sign * det / np.abs(det).mean(axis=1, keepdims=True)
     worst = float(ratio.min())
@@ -199,7 +201,8 @@ class FacetPoints(NamedTuple):
     tind : (F,) the element each facet belongs to (its inside); param, x : (3, F, Q) the
     points in parameter and physical coordinates [mm]; normal : (3, F, Q) the outward
     unit normal; dx : (F, Q) [mm²] area weights (quadrature weight × surface Jacobian);
-    values : (nb, F, Q) and grads : (nb, 3, F, Q) [1/mm] of the element's basis functions;
+    values : (nb, F, Q) and grads : (nb, 3, F, Q) [1/mm] (None where not asked for) of
+    the element's basis functions;
     element_dofs : (nb, F) their global indices (the scalar basis's nodes).
     """
 
@@ -214,7 +217,7 @@ class FacetPoints(NamedTuple):
 
 
 def facet_points(mapped: MappedMesh, element: skfem.Element, facets: np.ndarray,
-                 order: int) -> FacetPoints:
+                 order: int, *, grads: bool = True) -> FacetPoints:
     """Gauss points on boundary facets of a mapped mesh, with everything a load or a
     stress needs there.
 
@@ -232,6 +235,8 @@ def facet_points(mapped: MappedMesh, element: skfem.Element, facets: np.ndarray,
     element : skfem.Element — the scalar element of the basis (e.g. ``ElementHexS2()``)
     facets : ndarray of int — boundary facets
     order : int — quadrature order (3: 2 × 2 Gauss points, 6: 4 × 4)
+    grads : bool — the basis' gradients too (default); False: ``grads`` is None (the
+        hat loads read only the values)
 
     Returns
     -------
@@ -249,18 +254,27 @@ def facet_points(mapped: MappedMesh, element: skfem.Element, facets: np.ndarray,
     quad_x, quad_w = get_quadrature(param.brefdom, order)
     pmap = param.mapping()
     xp = pmap.G(quad_x, find=find)
-    ref = pmap.invF(xp, tind=tind)
-    param_normal = pmap.normals(ref, tind, find, param.t2f)
+    # the parameter elements are unit cubes: their map is affine, so Newton's first step
+    # from the cube's centre (scikit-fem's invF starts there) is its inverse, and its
+    # Jacobian is one matrix per element — taken at the centre once instead of at every
+    # point in each of invF's iterations and the normals' (issue 75; the points agree
+    # with invF's to round-off)
+    half = np.full((3, 1), 0.5)
+    jp_inv = _inverse3(pmap.DF(half, tind=tind))[0]  # (3, 3, F, 1)
+    ref = np.clip(half[:, :, None] + np.einsum("ijfq,jfq->ifq", jp_inv,
+                                                xp - pmap.F(half, tind=tind)), 0.0, 1.0)
+    param_normal = _cube_normals(pmap, jp_inv, tind, find, param.t2f, xp.shape[-1])
     param_dx = np.abs(pmap.detDG(quad_x, find=find)) * np.broadcast_to(
         quad_w, (len(find), quad_w.shape[-1]))
     # the points, d(physical)/d(reference) (3, 3, F, Q) and the basis there, at once
-    fields = basis_fields(mapped.mesh, element, ref, tind)
+    fields = basis_fields(mapped.mesh, element, ref, tind, grads=grads)
     x, jac = fields.x, fields.jac
-    jp = pmap.DF(ref, tind=tind)  # d(parameter)/d(reference)
-    phi = np.einsum("ikfq,kjfq->ijfq", jac, np.moveaxis(np.linalg.inv(np.moveaxis(
-        jp, (0, 1), (-2, -1))), (-2, -1), (0, 1)))  # d(physical)/d(parameter)
-    phi_inv_t = np.moveaxis(np.linalg.inv(np.moveaxis(phi, (0, 1), (-2, -1))), (-2, -1), (1, 0))
-    det = np.linalg.det(np.moveaxis(phi, (0, 1), (-2, -1)))
+    # d(physical)/d(parameter): jac times d(reference)/d(parameter); the 3 × 3 inverses
+    # and determinants in closed form (LAPACK per point through numpy.linalg: ~0.05 s
+    # per call on a flank's 16 points per facet, issue 75)
+    phi = np.einsum("ikfq,kjfq->ijfq", jac, np.broadcast_to(jp_inv, jac.shape))
+    phi_inv, det = _inverse3(phi)
+    phi_inv_t = phi_inv.transpose(1, 0, 2, 3)
     # N outward in parameter space; a normal is a covector, n ∝ Φ⁻ᵀ N, and stays outward
     # (n·dx = N·dX for dx = Φ dX), whatever the sign of det Φ
     a = np.einsum("ijfq,jfq->ifq", phi_inv_t, param_normal)
@@ -271,19 +285,54 @@ def facet_points(mapped: MappedMesh, element: skfem.Element, facets: np.ndarray,
     return FacetPoints(tind, xp, x, normal, dx, fields.values, fields.grads, dofs)
 
 
+def _cube_normals(pmap, jp_inv: np.ndarray, tind: np.ndarray, find: np.ndarray,
+                  t2f: np.ndarray, points: int) -> np.ndarray:
+    """Outward unit normals (3, F, Q) of facets ``find`` of the parameter mesh's elements
+    ``tind``: scikit-fem's ``MappingIsoparametric.normals`` with the element's inverse
+    Jacobian ``jp_inv`` (3, 3, F, 1) of its affine map (the same at every point)."""
+    n_ref = pmap.mesh.elem.refdom.normals
+    normal = np.empty((3, len(find)))
+    for itr in range(n_ref.shape[0]):
+        ix = np.nonzero(t2f[itr, tind] == find)[0]
+        normal[:, ix] = n_ref[itr][:, None]
+    n = np.einsum("ijkl,ik->jkl", jp_inv, normal)
+    n = n / np.sqrt(np.sum(n ** 2, axis=0))
+    return np.broadcast_to(n, (3, len(find), points))
+
+
+def _inverse3(m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Inverses (3, 3, ...) and determinants (...) of 3 × 3 matrices m (3, 3, ...), by the
+    adjugate (Cramer's rule); the determinants must not vanish."""
+    c00 = m[1, 1] * m[2, 2] - m[1, 2] * m[2, 1]
+    c01 = m[1, 2] * m[2, 0] - m[1, 0] * m[2, 2]
+    c02 = m[1, 0] * m[2, 1] - m[1, 1] * m[2, 0]
+    det = m[0, 0] * c00 + m[0, 1] * c01 + m[0, 2] * c02
+    inv = np.empty_like(m)
+    inv[0, 0], inv[1, 0], inv[2, 0] = c00, c01, c02
+    inv[0, 1] = m[0, 2] * m[2, 1] - m[0, 1] * m[2, 2]
+    inv[1, 1] = m[0, 0] * m[2, 2] - m[0, 2] * m[2, 0]
+    inv[2, 1] = m[0, 1] * m[2, 0] - m[0, 0] * m[2, 1]
+    inv[0, 2] = m[0, 1] * m[1, 2] - m[0, 2] * m[1, 1]
+    inv[1, 2] = m[0, 2] * m[1, 0] - m[0, 0] * m[1, 2]
+    inv[2, 2] = m[0, 0] * m[1, 1] - m[0, 1] * m[1, 0]
+    inv /= det
+    return inv, det
+
+
 class BasisFields(NamedTuple):
     """An H¹ element's basis and the isoparametric mapping at reference points of E
     elements, Q per element (:func:`basis_fields`)."""
 
-    values: np.ndarray  # (nb, E, Q) [1]
-    grads: np.ndarray  # (nb, 3, E, Q) [1/mm]
+    values: np.ndarray | None  # (nb, E, Q) [1] (None: not asked for)
+    grads: np.ndarray | None  # (nb, 3, E, Q) [1/mm] (None: not asked for)
     det: np.ndarray  # (E, Q) [mm³] det of d(physical)/d(reference)
     x: np.ndarray  # (3, E, Q) [mm] the points
     jac: np.ndarray  # (3, 3, E, Q) [mm] d(physical)/d(reference)
 
 
 def basis_fields(mesh: skfem.Mesh, element: skfem.Element, X: np.ndarray,
-                 tind: np.ndarray | None = None) -> BasisFields:
+                 tind: np.ndarray | None = None, *, values: bool = True,
+                 grads: bool = True) -> BasisFields:
     """Values and physical gradients of an H¹ element's basis functions, and the mapping
     (points, Jacobian and its determinant), at reference points of the elements of an
     isoparametric mesh.
@@ -303,6 +352,10 @@ def basis_fields(mesh: skfem.Mesh, element: skfem.Element, X: np.ndarray,
     X : ndarray (3, Q) — the same reference points in every element (a quadrature rule),
         or (3, E, Q) — points per element
     tind : ndarray (E,) of int, optional — the elements; None: all of the mesh's
+    values, grads : bool — compute the basis' values, its gradients (default both); a
+        field not computed is None in the result (the stiffness reads no values, the hat
+        loads no gradients: 82 and 245 MB not written on the default pinion model,
+        issue 75)
 
     Returns
     -------
@@ -354,10 +407,12 @@ def basis_fields(mesh: skfem.Mesh, element: skfem.Element, X: np.ndarray,
     del J
     rule = "ijkl,il->jkl" if X.ndim == 2 else "ijkl,ikl->jkl"
     nb = len(element.doflocs)  # one basis function per node (scalar H¹ elements)
-    values = np.empty((nb, ne, X.shape[-1]))
-    grads = np.empty((nb, 3, ne, X.shape[-1]))
-    for j in range(nb):
+    value_out = np.empty((nb, ne, X.shape[-1])) if values else None
+    grad_out = np.empty((nb, 3, ne, X.shape[-1])) if grads else None
+    for j in range(nb if values or grads else 0):
         phi, dphi_j = element.lbasis(X, j)
-        values[j] = np.broadcast_to(phi, (ne, X.shape[-1]))
-        grads[j] = np.einsum(rule, inv, dphi_j)
-    return BasisFields(values, grads, det, x, jac)
+        if values:
+            value_out[j] = np.broadcast_to(phi, (ne, X.shape[-1]))
+        if grads:
+            grad_out[j] = np.einsum(rule, inv, dphi_j)
+    return BasisFields(value_out, grad_out, det, x, jac)

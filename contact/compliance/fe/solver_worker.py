@@ -9,7 +9,9 @@ indices, indptr, n, ordering)``, CSC); the worker factorises it
 seconds)`` or ``("error", exception)``, then answers each block of right-hand sides it
 receives (a header ``("block", shape, dtype[, "F"])`` and the raw bytes, :func:`send_array`) with
 ``("ok", shape, dtype)`` and the solution's raw bytes until ``None`` or the end of the
-connection. Where the request's header carries a shared memory file (``("cholmod-raw", n,
+connection; or, after ``("release",)``, frees the factor, answers ``("released",)`` and
+waits for the next matrix (a parent's session of builds). Where the request's header
+carries a shared memory file (``("cholmod-raw", n,
 ordered, fd, columns)``: a descriptor passed to this process, two blocks of n × columns
 float64 in Fortran order, :class:`SharedBlocks`), a block is solved in place: the
 message ``("shared", k)`` says that the first k columns of the right-hand sides' block
@@ -159,7 +161,32 @@ def keep_heap_pages() -> bool:
     return _module_from(path, "_fe_heap").keep_heap_pages()
 
 
-def serve(conn, kernel, box: list, shared: SharedBlocks | None = None) -> None:
+def heap_pages_back() -> bool:
+    """glibc only: undo :func:`keep_heap_pages` — large blocks mapped per allocation again,
+    freed memory given back to the system (glibc's defaults: ``M_MMAP_MAX`` 65536,
+    ``M_TRIM_THRESHOLD`` 128 KiB) and the free pages held now returned
+    (``malloc_trim(0)``). The worker calls it once a factor is released: the next
+    factorisation's transient memory is mapped and given back as in a new worker, so
+    that its peak is a new worker's (kept, the pages of the factor before fragmented the
+    heap: 0.83 → 0.97 GB on the default case's gear, issue 75). False where not glibc."""
+    if not sys.platform.startswith("linux"):
+        return False
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None)
+        mallopt, trim = libc.mallopt, libc.malloc_trim
+    except (OSError, AttributeError):  # pragma: no cover - not glibc
+        return False
+    mallopt.argtypes, mallopt.restype = [ctypes.c_int, ctypes.c_int], ctypes.c_int
+    trim.argtypes, trim.restype = [ctypes.c_size_t], ctypes.c_int
+    m_trim_threshold, m_mmap_max = -1, -4
+    done = bool(mallopt(m_mmap_max, 65536)) and bool(mallopt(m_trim_threshold, 128 * 1024))
+    trim(0)
+    return done
+
+
+def serve(conn, kernel, box: list, shared: SharedBlocks | None = None) -> str:
     """Factorise the matrix in ``box`` with ``kernel`` (its solve and the factor's nonzeros),
     report ``("ready", nnz, seconds)`` or ``("error", exception)``, then answer each block
     of right-hand sides received on ``conn`` (:func:`send_array`'s header and bytes, or a
@@ -167,7 +194,10 @@ def serve(conn, kernel, box: list, shared: SharedBlocks | None = None) -> None:
     exception)`` until ``None`` or the end of the connection; with ``shared`` blocks,
     ``("shared", k)`` is answered by solving the first k columns of ``shared.rhs`` into
     ``shared.solution`` and ``("shared-ok", k)``. The loop of this lean worker and of
-    the forked one (:func:`contact.compliance.fe.elasticity.factorise`)."""
+    the forked one (:func:`contact.compliance.fe.elasticity.factorise`).
+
+    Returns ``"release"`` where ``("release",)`` ended the loop (the factor is freed on
+    return and the lean worker waits for another matrix: :func:`main`), else ``"end"``."""
     try:
         t0 = time.perf_counter()
         solve, nnz = kernel(box)
@@ -175,14 +205,17 @@ def serve(conn, kernel, box: list, shared: SharedBlocks | None = None) -> None:
         conn.send(("ready", nnz, time.perf_counter() - t0))
     except Exception as exc:  # handed to the parent, which raises it
         conn.send(("error", exc))
-        return
+        return "end"
     while True:
         try:
             block = conn.recv()
         except (EOFError, OSError):
-            return
+            return "end"
         if block is None:
-            return
+            return "end"
+        if isinstance(block, tuple) and block == ("release",):  # the factor freed;
+            # another matrix may follow (main)
+            return "release"
         if shared is not None and isinstance(block, tuple) and block[:1] == ("shared",):
             k = int(block[1])
             try:
@@ -213,21 +246,33 @@ def main(argv: list[str]) -> None:
     set_parent_death_signal()
     gc.disable()  # few objects of its own; the arrays are freed by reference counts
     conn = Connection(int(argv[0]))
-    try:
-        request = conn.recv()
-    except (EOFError, OSError):
-        return
     shared = None
-    if request[0] == "cholmod-raw":  # ("cholmod-raw", n, ordered[, fd, columns]), then
-        arrays = [recv_array(conn, conn.recv()) for _ in range(4 if request[2] else 3)]
-        box = [(*arrays[:3], request[1], arrays[3] if request[2] else None)]  # the arrays
-        del arrays
-        if len(request) > 3:  # the blocks on a shared memory file (SharedBlocks)
-            shared = SharedBlocks(int(request[3]), int(request[1]), int(request[4]))
-    else:  # ("cholmod", data, indices, indptr, n, ordering), pickled
-        box = [tuple(request[1:])]
-    del request
-    serve(conn, lambda b: _kernel_module().cholmod_kernel(b), box, shared)
+    # one matrix after another: a build of both members (a session of the parent,
+    # contact.compliance.fe.elasticity.worker_session) releases a factor and sends the
+    # next matrix to this same process — no second interpreter and its imports, and the
+    # next factor on the pages the last one had (issue 75)
+    while True:
+        try:
+            request = conn.recv()
+        except (EOFError, OSError):
+            return
+        if request is None:
+            return
+        if request[0] == "cholmod-raw":  # ("cholmod-raw", n, ordered[, fd, columns]), then
+            arrays = [recv_array(conn, conn.recv()) for _ in range(4 if request[2] else 3)]
+            box = [(*arrays[:3], request[1], arrays[3] if request[2] else None)]
+            del arrays
+            if len(request) > 3:  # the blocks on a shared memory file (SharedBlocks),
+                if shared is not None:  # resized by the parent for this matrix
+                    shared.close()
+                shared = SharedBlocks(int(request[3]), int(request[1]), int(request[4]))
+        else:  # ("cholmod", data, indices, indptr, n, ordering), pickled
+            box = [tuple(request[1:])]
+        del request
+        if serve(conn, lambda b: _kernel_module().cholmod_kernel(b), box, shared) != "release":
+            return
+        heap_pages_back()  # the factor is freed: the next one starts as in a new worker
+        conn.send(("released",))
 
 
 if __name__ == "__main__":
