@@ -144,6 +144,7 @@ def test_single_bin_reproduces_run_analysis(case, one_bin):
                       ("lte_peak_to_peak", lt["lte_peak_to_peak"].values[0]),
                       ("pressure_max_flank", lt["pressure_max_flank"].values[0]),
                       ("edge_load_share", edge_load_share(lt)[0]),
+                      ("plastic_load_share", np.max(lt["plastic_load_share"].values[0])),
                       ("efficiency", fr["efficiency_mean"].values[0]),
                       ("power_loss", fr["power_loss_mean"].values[0])):
         assert float(ds[name].values[0]) == pytest.approx(float(ref), rel=1e-12, abs=1e-12), name

@@ -268,6 +268,24 @@ def test_duty_cycle_damage_fails_and_low_safety_wants_attention():
     assert verdict(tree).severity == "fail"
 
 
+def test_a_duty_cycle_says_its_plastic_edges():
+    """A bin whose edge segments reach the material's contact-pressure limit carrying a
+    share of the torque up to the 5 % plausibility limit is ``ltca run``'s
+    ``plastic_edges`` attention, with the share and the bin (the industrial spiral bevel
+    21x29 of issue 71's unseen designs, round 9: bin 6 at 1920 N·m, edge peak 5262 MPa =
+    the limit, said only as edge contact); above the limit the bin's plausibility cause
+    says it (``implausible``), not this check; files without the variable: no finding."""
+    assert "plastic_edges" in verdict(_duty()).checks
+    assert not [f for f in verdict(_duty()).findings if f.check == "plastic_edges"]
+    ds = _duty().assign(plastic_load_share=("bin", [0.0, 0.004]))
+    (f,) = [f for f in verdict(ds).findings if f.check == "plastic_edges"]
+    assert f.severity == "attention"
+    assert "0.4 % in bin 1 (500 N·m)" in f.reason and "below the 5 %" in f.reason
+    above = _duty().assign(plastic_load_share=("bin", [0.0, 0.08]),
+                           plausibility=("bin", np.array([0, 1], np.int8)))
+    assert [f.check for f in verdict(above).findings] == ["implausible"]
+
+
 def test_a_duty_cycle_lte_spread_says_its_numbers():
     """The LTE-spread cause (bit 2) of a bin is said with the bin's torque, LTE p-p, its
     ratio to the mean (96/180 = 0.53, above plausibility's 0.5) and the edge share, so that
