@@ -463,7 +463,8 @@ def _lte(lt: xr.Dataset, rating: xr.Dataset | None, limit: float) -> list[Findin
                 else "at every torque")
         ratios = _contact_ratios(lt, rating, t)
         out.append(Finding("attention", "lte",
-                           f"LTE peak-to-peak {pp:.0f} µrad at {_t(t)} above {limit:g} µrad, "
+                           f"LTE peak-to-peak {shown_above(pp, limit)} µrad at {_t(t)} above "
+                           f"{limit:g} µrad, "
                            f"the loaded transmission error a quiet bearing keeps {upto}: "
                            "a source of gear whine (the bearing's relief and TE level, or a "
                            "face contact ratio below 1.25, set it; docs/verdicts.md)"
