@@ -144,13 +144,16 @@ def test_single_bin_reproduces_run_analysis(case, one_bin):
                       ("lte_peak_to_peak", lt["lte_peak_to_peak"].values[0]),
                       ("pressure_max_flank", lt["pressure_max_flank"].values[0]),
                       ("edge_load_share", edge_load_share(lt)[0]),
+                      ("plastic_load_share", np.max(lt["plastic_load_share"].values[0])),
                       ("efficiency", fr["efficiency_mean"].values[0]),
                       ("power_loss", fr["power_loss_mean"].values[0])):
         assert float(ds[name].values[0]) == pytest.approx(float(ref), rel=1e-12, abs=1e-12), name
-    # flank and edge envelopes apart; their larger is the analysis's own envelope (exact:
-    # the same nearest-node rule and maxima)
+    # flank and edge envelopes apart; their larger is the analysis's own envelope (the same
+    # nearest-node rule and maxima; 1e-12 relative, not to the bit: the shell model's columns
+    # kept from an earlier analysis in this process (contact.compliance.shell._half_vectors)
+    # join a triangular product of another batch, which rounds differently)
     both = np.maximum(ds["pressure_envelope"].values[0], ds["edge_pressure_envelope"].values[0])
-    np.testing.assert_array_equal(both, lt["pressure_envelope"].values[0])
+    np.testing.assert_allclose(both, lt["pressure_envelope"].values[0], rtol=1e-12, atol=0.0)
     assert ds["pressure_envelope"].values.max() == pytest.approx(
         float(lt["pressure_max_flank"].values[0]), rel=1e-15)
 

@@ -106,6 +106,40 @@ def test_writer_refuses_non_finite_data(tmp_path):
     assert not path.exists()
 
 
+def test_a_full_disk_said_as_hdf_error_is_a_write_failure(tmp_path, monkeypatch):
+    """The netCDF library reports a full disk as "NetCDF: HDF error" (a RuntimeError, no
+    errno): the writer says it in words as the OSError its callers catch (FileWriteError,
+    so the coefficients are used from memory: ``contact.compliance.fe.cache.not_written``),
+    where the disk has less than FULL_DISK_MARGIN free (checked by
+    geometry.core.atomic_files.write_failure, as tests/test_refusals.py's output files); with
+    room left the library's error stands. Found on a full /tmp (issue 71's unseen designs,
+    round 9): "the other flank's influence coefficients not built on this factorisation:
+    NetCDF: HDF error"."""
+    import shutil
+
+    import geometry.core.atomic_files as af
+    from contact.compliance.fe.cache import NOT_WRITTEN_ATTR, not_written
+    from geometry.core.errors import FileWriteError
+
+    def hdf_error(self, *args, **kwargs):
+        raise RuntimeError("NetCDF: HDF error")
+
+    path = tmp_path / f"fe-{KEY}.nc"
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", hdf_error)
+    monkeypatch.setattr(af.shutil, "disk_usage",
+                        lambda p: shutil._ntuple_diskusage(10**9, 10**9, 1024))
+    with pytest.raises(FileWriteError, match=r"could not write .*: no space left on") as err:
+        write_cache_entry(_tiny(), path, KEY)
+    assert isinstance(err.value, OSError)
+    assert not_written(_tiny(), path, err.value).attrs[NOT_WRITTEN_ATTR].startswith(
+        f"could not write {str(path)!r}: no space left on")
+    monkeypatch.setattr(af.shutil, "disk_usage",
+                        lambda p: shutil._ntuple_diskusage(10**9, 10**8, 10**8))
+    with pytest.raises(RuntimeError, match="NetCDF: HDF error"):
+        write_cache_entry(_tiny(), path, KEY)
+    assert list(tmp_path.iterdir()) == []
+
+
 def _flip_coordinate_bytes(path: Path, ds: xr.Dataset) -> None:
     """Invert a byte inside the stored values of coordinate ``u`` (written uncompressed, so
     its little-endian bytes are in the file): the file stays readable, its data change."""

@@ -95,7 +95,7 @@ def test_low_face_contact_ratio_is_noted(tmp_path, capsys):
     assert f"note: face contact ratio eps_vb {eps_vb:.2f} is below 1.25" in text
     # the cause and the remedy in numbers (contact.load_capacity.iso10300.face_contact;
     # its values checked in tests/test_face_contact.py)
-    assert "a gear face width b2 of 30.1 mm (now 24" in text
+    assert "a gear face width b2 of 30.1 mm, above the usual 0.3 R_e2 = 26.0 mm (now 24)" in text
     assert "a mean spiral angle beta_m of 42.5 deg (now 35)" in text
 
 

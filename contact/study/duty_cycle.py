@@ -68,6 +68,9 @@ BIN_VARIABLES = {
                            "segments"),
     "pressure_max_edge": ("MPa", "peak Hertzian pressure of the edge-contact segments"),
     "edge_load_share": ("1", "share of the gear torque carried by edge contact"),
+    "plastic_load_share": ("1", "largest share of the gear torque that segments at the "
+                           "material's contact-pressure limit (plastic edges) carry at one "
+                           "roll position (/ltca/plastic_load_share; 0 where none)"),
     "efficiency": ("1", "mechanical mesh efficiency, mean over the mesh cycles"),
     "power_loss": ("W", "mesh power loss, mean over the mesh cycles"),
 }
@@ -175,6 +178,9 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
             "pressure_max_flank": ltca["pressure_max_flank"].values[0],
             "pressure_max_edge": ltca["pressure_max_edge"].values[0],
             "edge_load_share": edge_load_share(ltca)[0],
+            "plastic_load_share": (
+                np.max(np.nan_to_num(ltca["plastic_load_share"].values[0], nan=0.0))
+                if "plastic_load_share" in ltca else 0.0),
             "efficiency": fr["efficiency_mean"].values[0],
             "power_loss": fr["power_loss_mean"].values[0],
         }

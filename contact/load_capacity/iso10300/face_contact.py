@@ -215,7 +215,7 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     -------
     str or None
         E.g. "face contact ratio eps_vb 0.96 is below 1.25 (...); a gear face width b2 of
-        30.1 mm (now 24, above the usual 0.3 R_e2 = 26.0 mm) or a mean spiral angle
+        30.1 mm, above the usual 0.3 R_e2 = 26.0 mm (now 24) or a mean spiral angle
         beta_m of 42.5 deg (now 35), the other kept, reaches 1.25" (each value rounded up
         to 0.1).
     """
@@ -231,8 +231,8 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
     if math.isfinite(r.b2_needed):
         over = (f", above the usual {FACE_WIDTH_LIMIT:g} R_e2 = {r.b2_limit:.1f} mm"
                 if r.b2_needed > r.b2_limit else "")
-        ways.append(f"a gear face width b2 of {math.ceil(r.b2_needed * 10) / 10:.1f} mm "
-                    f"(now {r.b2:g}{over})")
+        ways.append(f"a gear face width b2 of {math.ceil(r.b2_needed * 10) / 10:.1f} mm"
+                    f"{over} (now {r.b2:g})")
     if math.isfinite(r.beta_m_needed):
         ways.append(f"a mean spiral angle beta_m of {math.ceil(r.beta_m_needed * 10) / 10:.1f}"
                     f" deg (now {r.beta_m:g})")
@@ -353,8 +353,8 @@ def _profile_text(r: ProfileRemedy) -> str:
     if math.isfinite(r.k_d_needed):
         over = (f", above the usual {DEPTH_FACTOR_USUAL:g}"
                 if r.k_d_needed > DEPTH_FACTOR_USUAL + 1e-9 else "")
-        ways.append(f"a depth factor k_d of {math.ceil(r.k_d_needed * 100) / 100:.2f} "
-                    f"(now {r.k_d:g}{over})")
+        ways.append(f"a depth factor k_d of {math.ceil(r.k_d_needed * 100) / 100:.2f}"
+                    f"{over} (now {r.k_d:g})")
     if math.isfinite(r.alpha_d_needed):
         ways.append(f"a drive pressure angle alpha_dD of "
                     f"{math.floor(r.alpha_d_needed * 10) / 10:.1f} deg (now {r.alpha_d:g})")
@@ -383,7 +383,7 @@ def low_ratio_text(design, face_target: float = FACE_CONTACT_RATIO_MIN,
     -------
     str or None
         E.g. "profile contact ratio eps_va 0.98 is below 1: ...; a depth factor k_d of
-        2.05 (now 2, above the usual 2) or a drive pressure angle alpha_dD of 19.0 deg
+        2.05, above the usual 2 (now 2) or a drive pressure angle alpha_dD of 19.0 deg
         (now 20), the other kept, reaches 1" (k_d rounded up to 0.01, α_dD down to 0.1°).
     """
     from geometry.core.errors import InputError
