@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import types
 from pathlib import Path
 
 import numpy as np
@@ -303,3 +304,63 @@ def test_pitting_bound_stops_a_second_gear_process(monkeypatch):
 
     monkeypatch.setattr("contact.pipeline.run_analysis", fails)
     assert development_root.pitting_capacity_bound(object(), [31.44, 209.6]) == math.inf
+
+
+def test_a_second_gear_process_is_stopped_before_the_checks_steps(monkeypatch):
+    """:func:`contact.optimize.development.develop` with ``outclassed_below``: the
+    checked design's local pitting bound at the rated torque is taken before the check's
+    steps (:func:`steps_on_each`), and a bound below ``outclassed_below`` stops the
+    development there — the bound only falls as the design torque is lowered (S_H,loc ~
+    T^-b with b <= 1/2), so the steps, the static capacity and the steps again could not
+    lift it (the 13x37 at Σ 60°'s generated gear: 59.76 N m at 279.2 N m against the
+    Formate design's 77.9 N m, ~50 s of CPU less, the case written the same but the
+    bound it names). A bound above it goes on to the steps; a first gear process
+    (``outclassed_below`` NaN) never takes it. Stand-ins for the search, the check and
+    the analysis."""
+    from contact.optimize import development, development_root
+    from contact.optimize.development_process import Outclassed
+    from contact.optimize.development_result import DevelopmentEvaluation
+
+    basic = load_basic(DESIGNS / "hypoid_12x41_s85.toml")
+    chosen = DevelopmentEvaluation(0, {}, {}, 1.0, {}, False, "", 0.0, case=object(),
+                                   full=(1.0, {}, False), checked=True)
+    calls: list[str] = []
+
+    def evaluator(basic, targets, setup, *args, **kw):
+        setup.update(torques=[41.88, 279.2], lowered=False, source="ISO", centre_v=0.55)
+        return types.SimpleNamespace(slopes={})
+
+    class Stop(Exception):
+        pass
+
+    def steps_on_each(best, others, steps):
+        calls.append("steps")
+        raise Stop  # past the point under test
+
+    bound = [59.76]
+
+    def pitting_bound(case, torques):
+        calls.append(f"bound at {torques[1]:g}")
+        return bound[0]
+
+    monkeypatch.setattr(development, "evaluator", evaluator)
+    monkeypatch.setattr(development, "search_flank", lambda *a, **k: True)
+    monkeypatch.setattr(development, "checked_best", lambda *a, **k: chosen)
+    monkeypatch.setattr(development, "steps_on_each", steps_on_each)
+    monkeypatch.setattr(development_root, "pitting_capacity_bound", pitting_bound)
+
+    def run(below: float) -> None:
+        development.develop(basic, gear_fallback=False, outclassed_below=below)
+
+    with pytest.raises(Outclassed) as info:
+        run(77.9)
+    assert info.value.torque == pytest.approx(59.76) and calls == ["bound at 279.2"]
+    calls.clear()
+    bound[0] = 96.9  # above: the check's steps follow
+    with pytest.raises(Stop):
+        run(77.9)
+    assert calls == ["bound at 279.2", "steps"]
+    calls.clear()
+    with pytest.raises(Stop):  # a first gear process: no bound taken
+        run(math.nan)
+    assert calls == ["steps"]
