@@ -30,7 +30,13 @@ from geometry.machine.cradle import (
 from geometry.machine.cutter import Blade, placement_vectors
 from geometry.machine.flank_point import flank_points
 from geometry.synthesis.gear import tangent_basis, unit
-from geometry.synthesis.pinion import PinionTools, cradle_for_meshing
+from geometry.synthesis.pinion import (
+    PinionTools,
+    WarmTools,
+    cradle_for_meshing,
+    keep_last,
+    solve_tool_unknowns,
+)
 
 __all__ = [
     "face_hobbing_pinion_tools",
@@ -96,7 +102,7 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
                               gear_cutter_axis, gear_edge_direction, tip_height: float,
                               cradle_point, cradle_axis, ratio_of_roll: float,
                               blade_groups: int, pinion_blank: Blank, edge_radius: float,
-                              start=None) -> PinionTools:
+                              start=None, warm: WarmTools | None = None) -> PinionTools:
     """Face-hobbing blade and Generate settings whose pinion flank has a prescribed shape
     operator at M: the face-hobbing counterpart of :func:`pinion_generate_tools`.
 
@@ -117,6 +123,9 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
         z0 of the cutter head (the gear's); the pinion indexes by κ1 = −z0/z1.
     start : (r_p, κ_pr, R_a), optional
         Start of the solution; default the conjugate generation.
+    warm : geometry.synthesis.pinion.WarmTools, optional
+        As :func:`pinion_generate_tools`: the last synthesis of the same flank in a series,
+        the solution's start (:func:`~geometry.synthesis.pinion.solve_tool_unknowns`).
 
     Returns
     -------
@@ -228,7 +237,12 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
             return None
         last[0] = pt.params
         rz = _rot_z(t.blank_phase)
-        return t, rz @ pt.r[0], rz @ pt.n[0], rz @ pt.shape[0] @ rz.T
+        out = t, rz @ pt.r[0], rz @ pt.n[0], rz @ pt.shape[0] @ rz.T
+        return out
+
+    # a series' last evaluation (the warm root's, read again below); a cold synthesis
+    # evaluates its solution afresh, as before warm starts
+    evaluate = keep_last(evaluate, warm is not None)
 
     def residual(x):
         ev = evaluate(x)
@@ -237,10 +251,8 @@ def face_hobbing_pinion_tools(point, normal, target_shape, *, side: str, gear_cu
         d = tb.T @ (ev[3] - target) @ tb
         return pinion_blank.outer_cone_distance * np.array([d[0, 0], d[0, 1], d[1, 1]])
 
-    sol = least_squares(residual, np.asarray(start, float),
-                        x_scale=np.array([10.0, 1e-3, 0.1]),
-                        xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=200)
-    ev = evaluate(sol.x)
+    x = solve_tool_unknowns(residual, start, np.array([10.0, 1e-3, 0.1]), warm, last)
+    ev = evaluate(x)
     if ev is None:
         raise InputError("synthesis: the face-hobbing pinion settings left the generating "
                          "range")
