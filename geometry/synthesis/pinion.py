@@ -109,6 +109,9 @@ class WarmTools:
         The residual's Jacobian there, per unit of the scaled unknowns (x / x_scale).
     params : ndarray or None
         The envelope parameters of M on the last generated flank (Newton's guess).
+    inner : ndarray or None
+        Face hobbing: the cutter pose unknowns of the last tool evaluated (the next pose
+        solve's start, :func:`~geometry.synthesis.face_hobbing.face_hobbing_pinion_tools`).
     used, cold : int
         Syntheses solved from the last solution / by the least squares.
     """
@@ -117,6 +120,7 @@ class WarmTools:
         self.x: np.ndarray | None = None
         self.jac: np.ndarray | None = None
         self.params: np.ndarray | None = None
+        self.inner: np.ndarray | None = None
         self.used = 0
         self.cold = 0
 
