@@ -175,6 +175,13 @@ class WarmRoll:
     1e-6 to 5e-5 of it on the 10x43: 6D, 24E within 2e-5, 1e-4 there,
     tests/test_synthesis_memo.py). Where the warm iteration fails, the cold one runs.
 
+    Not used by :func:`~geometry.synthesis.case_synthesis.synthesize` (issue 75, helper
+    dev75e): on the default case's development (kolivand2009_fm_11x41) the coast search's
+    first trial, plastic at its design torque, changed its coarse peak flank pressure
+    2577 → 2045 MPa with coefficients ~1e-5 relative off the cold tune's (and so did the
+    tools' 1e-13: that metric is not continuous there), and the coast design torque the
+    development prints moved 69.5 → 109.7 N·m.
+
     Attributes
     ----------
     fraction : float or None
