@@ -608,7 +608,8 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
     # Step 6 is tuned cold: a warm tune (WarmRoll) lands elsewhere within the tune's
     # tolerance (6D, 24E ~1e-5 relative), and on the default case's coast flank, plastic at
     # its design torque, that moved the coarse trial's peak flank pressure 2577 -> 2045 MPa
-    # and the coast design torque the development prints 69.5 -> 109.7 N m
+    # and the coast design torque the development prints 69.5 -> 109.7 N m (the warm
+    # tools alone, 1e-13, move it too: 112.2 N m; docs/performance.md)
     warm_tools = None if memo is None else memo.setdefault(("warm starts", pf), WarmTools())
     tools = _generating_tools(pair, pf, gblade, gp, mp, ls, tp, tg, warm=warm_tools)
     if conjugate:
