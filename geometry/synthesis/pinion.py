@@ -97,9 +97,10 @@ class WarmTools:
     within :data:`_WARM_EVALUATIONS` evaluations the least squares runs
     from the cold start, as without the instance. Either way the solution, its Jacobian and
     the envelope parameters of M are kept for the next synthesis. The root is the least
-    squares' to the residual's noise floor (tests/test_synthesis.py: the machine settings
-    within 1e-9 relative of a cold synthesis'); 5–7 evaluations against the least squares'
-    25–40 on the 10x43's trials.
+    squares' to the residual's noise floor (tests/test_synthesis_memo.py: the machine
+    settings within 1e-9 relative of a cold synthesis', measured 1e-12); 5–8 evaluations
+    against the least squares' 25–40 on the 10x43's trials. Source: Broyden's rank-one
+    update (C. G. Broyden, Math. Comp. 19 (1965) 577).
 
     Attributes
     ----------
@@ -186,7 +187,8 @@ def solve_tool_unknowns(residual, start, x_scale, warm: WarmTools | None = None,
     -------
     ndarray (N,)
         The unknowns: ``scipy.optimize.least_squares`` from ``start`` (tolerances 1e-15,
-        at most 200 evaluations), or the warm iteration's root.
+        at most 200 evaluations), or the warm iteration's root (:class:`WarmTools`; Broyden
+        1965).
     """
     scale = np.asarray(x_scale, float)
     if warm is None:
