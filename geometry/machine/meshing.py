@@ -596,9 +596,11 @@ class WarmSeeds:
     block, a seed the first pass does not give is continued by Newton's method from the
     nearest seed of an earlier tool of the same kind (blade side, process, sections,
     depth, length scale, kernels) within :data:`_WARM_REACH`, predicted to first order
-    (x + J⁻¹ (Δz, Δρ, 0)), and kept where it converges inside the hint's section, within
-    one limited Newton step of the prediction and below the seed's arc-length limit (as
-    the search's :func:`_pick_seed`); else the search runs (memoised as outside a block).
+    (x + J⁻¹ (Δz, Δρ, 0)), and kept where it converges inside the hint's section (or,
+    where its root left that section, a relief or a new tool having moved the section
+    ends, inside the section next to it, Newton run again there), within one limited
+    Newton step of the prediction and below the seed's arc-length limit (as the search's
+    :func:`_pick_seed`); else the search runs (memoised as outside a block).
     The seed is the start of the continuation and the reference of its predictions: the
     roots of the other points are each converged to the solver's tolerance (1e-10 mm), so
     a warm seed changes a solve by that tolerance, not by a choice, except where a target
@@ -690,6 +692,17 @@ class WarmSeeds:
         m = hx.size
         x0 = _predict(hx, hjac, np.array([z0 - hz]), np.array([p0 - hp]))[0]
         x, ok = _newton(ctx, x0[None], np.array([k]), np.array([z0]), np.array([p0]))
+        sec = ctx.sections
+        if ok[0] and not sec.s_lo[k] - 1e-9 <= x[0, 0] <= sec.s_hi[k] + 1e-9:
+            # the root left the hint's section (a relief or a new tool moves the section
+            # ends by micrometres to millimetres): Newton again on the section it entered,
+            # from there, as the search's section moves do (_solve_sections)
+            k = k + (1 if x[0, 0] > sec.s_hi[k] else -1)
+            if not 0 <= k < len(sec.s_lo):
+                return None
+            xs = x.copy()
+            xs[:, 0] = _clamp_to(sec, np.array([k]), xs[:, 0])
+            x, ok = _newton(ctx, xs, np.array([k]), np.array([z0]), np.array([p0]))
         near = bool(np.all(np.abs(x[0] - x0) <= _STEP_LIMIT[:m]))
         if not near or _pick_seed(ctx, x, ok, k, _seed_limit(ctx, depth)) is None:
             return None

@@ -122,6 +122,7 @@ from geometry.synthesis.mean_point import MeanPoint, mean_point, pair_kw
 from geometry.synthesis.modified_roll import ROLL_FRACTIONS, nominal_transforms, tune_roll
 from geometry.synthesis.pinion import (
     PinionTools,
+    WarmTools,
     pinion_generate_tools,
     root_below,
     shift_roll_origin,
@@ -367,7 +368,10 @@ def synthesize(basic: BasicDesign, *, conjugate: bool = False,
         result is the same as without a memo (steps 3–6 do not read the relief; the coast
         flank depends on the drive flank only through the mean point's gear rotation,
         which the prescriptions do not move), so a development that varies the drive
-        flank synthesises the coast flank once. Default None: nothing kept.
+        flank synthesises the coast flank once. A flank whose steps 3–6 are new continues
+        step 5 from the same flank's last synthesis in the memo (issue 75:
+        :class:`~geometry.synthesis.pinion.WarmTools`): the same tools to 1e-12 relative.
+        Default None: nothing kept.
     tip_planes : bool
         Step 8, each pinion cut's tip plane moved onto the root cone (default True).
         False leaves the tip planes where the local synthesis put them: the flanks are the
@@ -599,7 +603,15 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
                          gear_sense=mp.gear_sense, ratio=z1 / geom.gear.z, a21=a21,
                          path_direction=path, curvature_gap=2.0 * fo.approach / semi**2)
     say(f"pinion {pf}: generating tools (point radius, blade profile, ratio of roll)")
-    tools = _generating_tools(pair, pf, gblade, gp, mp, ls, tp, tg)
+    # a series of syntheses (the memo's: a development's trials) continues step 5 from the
+    # flank's last synthesis (issue 75; the same tools to the least squares' noise floor).
+    # Step 6 is tuned cold: a warm tune (WarmRoll) lands elsewhere within the tune's
+    # tolerance (6D, 24E ~1e-5 relative), and on the default case's coast flank, plastic at
+    # its design torque, that moved the coarse trial's peak flank pressure 2577 -> 2045 MPa
+    # and the coast design torque the development prints 69.5 -> 109.7 N m (the warm
+    # tools alone, 1e-13, move it too: 112.2 N m; docs/performance.md)
+    warm_tools = None if memo is None else memo.setdefault(("warm starts", pf), WarmTools())
+    tools = _generating_tools(pair, pf, gblade, gp, mp, ls, tp, tg, warm=warm_tools)
     if conjugate:
         return FlankSynthesis(pf, fo, a21, mp, ls, tools)
     # higher-order roll (6D, 24E): the TE at ±pitch/4 on the prescribed parabola (the
@@ -640,11 +652,12 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
 
 def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
                       mp: MeanPoint, ls: LocalSynthesis, tp: np.ndarray,
-                      tg: np.ndarray) -> PinionTools:
+                      tg: np.ndarray, warm: WarmTools | None = None) -> PinionTools:
     """Step 5 of the module docstring: the pinion blade and Generate settings that realise
     the local synthesis's shape operator at M, with the Formate gear as generating gear
     (``gp`` the gear flank at M in its own frame, ``tp``, ``tg`` the members' transforms at
-    M)."""
+    M; ``warm`` the flank's last synthesis in a series, :class:`~geometry.synthesis.pinion.
+    WarmTools`)."""
     geom = pair.geom
     rot = tp[:3, :3]
     mir = _MIRROR if pair.pinion_hand == "left" else np.eye(3)
@@ -703,7 +716,7 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
             gear_cutter_axis=ug, gear_edge_direction=mir @ rot.T @ tg[:3, :3] @ gp.r_s,
             tip_height=h_m, cradle_point=cradle_point, cradle_axis=cradle_axis,
             ratio_of_roll=ratio_of_roll, blade_groups=z0,
-            pinion_blank=pair.pinion_blank, edge_radius=edge_radius)
+            pinion_blank=pair.pinion_blank, edge_radius=edge_radius, warm=warm)
     sigma = 1 if FLANKS[pf] == "outside" else -1
     # the gear cutter's radius at M (a generated gear's at q_M): the start's point radius
     rho_m = float(np.linalg.norm(np.cross(m_loc - cg, ug)))
@@ -712,7 +725,7 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
         cutter_axis=u_p, tip_height=h_m, cradle_point=cradle_point,
         cradle_axis=cradle_axis, ratio_of_roll=ratio_of_roll,
         point_radius=rho_m - sigma * h_m * math.tan(gblade.blade_angle),
-        pinion_blank=pair.pinion_blank, edge_radius=edge_radius)
+        pinion_blank=pair.pinion_blank, edge_radius=edge_radius, warm=warm)
 
 
 def _coast_in_drive_frame(coast: FlankSynthesis, drive: FlankSynthesis) -> FlankSynthesis:

@@ -41,11 +41,14 @@ _RESIDUAL = 1e-7
 
 class _Followed(NamedTuple):
     """The contact at the target rolls of one TE evaluation (:func:`_te_at`): the next
-    evaluation's start where the modified roll changes a little."""
+    evaluation's start where the modified roll (or, in a series of syntheses, the pinion's
+    tools) changes a little."""
 
     rolls: tuple[float, ...]  # [rad] the target rolls, in this order
     x: np.ndarray  # (R, 5) [mm, mm, mm, mm, rad] solutions (Z_p, P_p, Z_g, P_g, φ_g)
     params: np.ndarray  # (R, 8) envelope parameters of both flanks there
+    start: np.ndarray  # (5,) the contact at M (roll 0) it was followed from
+    rate: np.ndarray  # (5,) its rate per unit roll there
 
 
 def _solve_rolls(pair: ToothPair, phi: np.ndarray, x0: np.ndarray,
@@ -89,11 +92,16 @@ def _te_at(pair: ToothPair, start: np.ndarray, rate: np.ndarray, *, phi_p0: floa
         return ratio * r - gear_sense * (x[4] - start[4])
 
     if near is not None and near.rolls == tuple(rolls):
-        phi = phi_p0 + pinion_sense * np.asarray(rolls, float)
-        x, par, res = _solve_rolls(pair, phi, near.x.copy(), near.params)
+        r = np.asarray(rolls, float)
+        phi = phi_p0 + pinion_sense * r
+        # its contact moved by the change of the first-order prediction from M (nothing
+        # where start and rate are the same: within one tune)
+        x0 = near.x + ((start[None, :] + rate[None, :] * r[:, None])
+                       - (near.start[None, :] + near.rate[None, :] * r[:, None]))
+        x, par, res = _solve_rolls(pair, phi, x0, near.params)
         if np.all(res <= _RESIDUAL):
             return ({r: te(r, x[i]) for i, r in enumerate(rolls)},
-                    _Followed(tuple(rolls), x, par))
+                    _Followed(tuple(rolls), x, par, start, rate))
     # the continuation: per side its grid of rolls (the targets among them), the rolls
     # solved so far, their solutions and the last one's envelope parameters
     sides = []
@@ -128,7 +136,7 @@ def _te_at(pair: ToothPair, start: np.ndarray, rate: np.ndarray, *, phi_p0: floa
     found = [next(v for k, v in solved.items() if abs(k - r) < 1e-15) for r in rolls]
     return ({r: te(r, found[i][0]) for i, r in enumerate(rolls)},
             _Followed(tuple(rolls), np.stack([v[0] for v in found]),
-                      np.stack([v[1] for v in found])))
+                      np.stack([v[1] for v in found]), start, rate))
 
 
 #: the rolls, fractions of the pitch, at which the synthesis' step 6 puts the TE on its
@@ -143,8 +151,66 @@ def _te_at(pair: ToothPair, start: np.ndarray, rate: np.ndarray, *, phi_p0: floa
 ROLL_FRACTIONS = (0.25, 1.0 / 6.0, 0.125)
 
 
+#: the warm tune's tolerance (:class:`WarmRoll`), a fraction of the TE level at the target
+#: rolls: a cold tune's Newton step from its finite-difference Jacobian lands within
+#: 1e-6 to 5e-5 of the level (the TE is nearly linear in 6D and 24E) though it stops at
+#: 0.5 %; the warm tune goes as near, so that its coefficients are near the cold tune's,
+#: not anywhere within 0.5 %
+WARM_ROLL_TOLERANCE = 1e-5
+
+
+class WarmRoll:
+    """The last modified roll of a series of nearby syntheses of one flank (issue 75: a
+    development's trials), continued by the next one (:func:`tune_roll`'s ``warm``).
+
+    With a last tune at the same fraction of the pitch, :func:`tune_roll` starts its
+    Newton–Broyden iteration at the last 6D, 24E with the last Jacobian and solves the
+    target rolls from the last contact there (moved by the change of the first-order
+    prediction from M), instead of the continuation from M at 6D = 24E = 0 and a
+    finite-difference Jacobian: 2 TE evaluations of 2 rolls each against 4 (and the 8 rolls
+    of the continuation) on the passenger-car hypoid 10x43's trials. The coefficients meet
+    a tighter tolerance (:data:`WARM_ROLL_TOLERANCE`) from another start, so they are not
+    a cold tune's to the bit but within the cold tune's own tolerance (the TE at
+    ±pitch/4 within 0.5 % of the prescribed level; the cold Newton step lands within
+    1e-6 to 5e-5 of it on the 10x43: 6D, 24E within 2e-5, 1e-4 there,
+    tests/test_synthesis_memo.py). Where the warm iteration fails, the cold one runs.
+
+    Not used by :func:`~geometry.synthesis.case_synthesis.synthesize` (issue 75, helper
+    dev75e): on the default case's development (kolivand2009_fm_11x41) the coast search's
+    first trial, plastic at its design torque, changed its coarse peak flank pressure
+    2577 → 2045 MPa with coefficients ~1e-5 relative off the cold tune's (and so did the
+    tools' 1e-13: that metric is not continuous there), and the coast design torque the
+    development prints moved 69.5 → 109.7 N·m (112.2 with the warm tools alone).
+
+    Attributes
+    ----------
+    fraction : float or None
+        The last tune's ``fraction`` (the target rolls ±fraction × pitch).
+    coef : ndarray (2,) or None
+        Its (6D, 24E).
+    jac : ndarray (2, 2) or None
+        Its Jacobian of the TE misses at ±pitch·fraction [rad] per unit of (6D, 24E).
+    followed : _Followed or None
+        Its contact at the target rolls.
+    miss : float or None
+        Its max |TE − level| at the target rolls [rad].
+    used, cold : int
+        Tunes continued from the last one / tuned cold.
+    """
+
+    def __init__(self) -> None:
+        self.fraction: float | None = None
+        self.coef: np.ndarray | None = None
+        self.jac: np.ndarray | None = None
+        self.followed: _Followed | None = None
+        self.miss: float | None = None
+        self.used = 0
+        self.cold = 0
+
+
 def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
-              pitch: float, fraction: float = 0.25, **kw) -> PinionTools:
+              pitch: float, fraction: float = 0.25, warm: WarmRoll | None = None,
+              **kw) -> PinionTools:
     """Modified roll 6D, 24E that put the TE at ±pitch/4 (``fraction`` × pitch) on the
     prescribed parabola.
 
@@ -156,7 +222,9 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
     evaluations solve ±pitch/4 directly from the contact of the evaluation before (the
     same roots to the solver's tolerance: the TE within ~1e-13 rad of the continuation's,
     the coefficients within ~1e-6 relative; 0.36 against 1.40 s of CPU per trial
-    synthesis of the passenger-car hypoid 10x43, docs/performance.md).
+    synthesis of the passenger-car hypoid 10x43, docs/performance.md). ``warm``
+    (:class:`WarmRoll`, a series of syntheses of one flank): the iteration starts from
+    the last tune's coefficients, Jacobian and contact, and the tune is kept in it.
     """
     h = fraction * pitch
     level = 0.5 * a21 * h * h
@@ -168,21 +236,41 @@ def tune_roll(tools: PinionTools, pair: ToothPair, start, rate, *, a21: float,
         te, followed = _te_at(tuned, start, rate, rolls=rolls, near=near, **kw)
         return np.array([te[h] - level, te[-h] - level]), followed
 
+    def newton(x, g0, at, jac, tol=5e-3 * level):
+        for _ in range(6):
+            if np.abs(g0).max() < tol:
+                return x, at, jac, float(np.abs(g0).max())
+            dx = np.linalg.solve(jac, -g0)
+            x_new = x + dx
+            g_new, at = g(x_new, at)
+            # Broyden update of the Jacobian
+            jac = jac + np.outer(g_new - g0 - jac @ dx, dx) / (dx @ dx)
+            x, g0 = x_new, g_new
+        raise InputError("synthesis: the modified roll could not put the TE on the "
+                         f"prescribed parabola (miss {np.abs(g0).max() * 1e6:.3g} urad)")
+
+    def kept(x, at, jac, miss):
+        if warm is not None:
+            warm.fraction, warm.coef, warm.jac, warm.followed = fraction, x, jac, at
+            warm.miss = miss
+        return tools._replace(settings=replace(tools.settings, modified_roll=(0.0, *x)))
+
+    if warm is not None and warm.fraction == fraction and warm.coef is not None:
+        try:
+            x0 = warm.coef.copy()
+            g0, at = g(x0, warm.followed)
+            out = newton(x0, g0, at, warm.jac.copy(), WARM_ROLL_TOLERANCE * level)
+        except (InputError, np.linalg.LinAlgError):
+            out = None
+        if out is not None:
+            warm.used += 1
+            return kept(*out)
     x = np.zeros(2)
     g0, at = g(x)
     steps = np.array([0.05, 0.5])
     jac = np.column_stack([(g(x + steps[i] * np.eye(2)[i], at)[0] - g0) / steps[i]
                            for i in range(2)])
-    for _ in range(6):
-        if np.abs(g0).max() < 5e-3 * level:
-            break
-        dx = np.linalg.solve(jac, -g0)
-        x_new = x + dx
-        g_new, at = g(x_new, at)
-        # Broyden update of the Jacobian
-        jac = jac + np.outer(g_new - g0 - jac @ dx, dx) / (dx @ dx)
-        x, g0 = x_new, g_new
-    else:
-        raise InputError("synthesis: the modified roll could not put the TE on the prescribed "
-                         f"parabola (miss {np.abs(g0).max() * 1e6:.3g} urad)")
-    return tools._replace(settings=replace(tools.settings, modified_roll=(0.0, *x)))
+    out = newton(x, g0, at, jac)
+    if warm is not None:
+        warm.cold += 1
+    return kept(*out)
