@@ -364,3 +364,51 @@ def test_a_second_gear_process_is_stopped_before_the_checks_steps(monkeypatch):
     with pytest.raises(Stop):  # a first gear process: no bound taken
         run(math.nan)
     assert calls == ["steps"]
+
+
+def test_a_target_lost_at_the_second_cut_gets_one_step_again():
+    """:func:`contact.optimize.development.step_after_cut`: after the second root-capacity
+    cut (no check step follows it in :func:`develop`), a design that lost a target the
+    steps had met gets one step — the near-miss step where it is a near miss (the 13x37 at
+    Σ 60°: its light-load centre v 0.6301 against the bound 0.6295 after the pitting cut
+    110.4 → 89.6 N m), the full check steps where it misses by more — and the step's
+    design is the one kept; where no target was lost (a target missed before the cut too,
+    or none missed), no step runs. Stand-ins for the steps: they only record the call."""
+    from contact.optimize import development
+    from contact.optimize.development_result import DevelopmentEvaluation
+
+    def design(shortfalls: dict[str, float]) -> DevelopmentEvaluation:
+        met = not any(v > 0.0 for v in shortfalls.values())
+        return DevelopmentEvaluation(0, {}, {}, 1.0, shortfalls, met, "", 0.0,
+                                     case=object(), full=(1.0, shortfalls, met),
+                                     checked=True)
+
+    every = {"centre_v": 0.0, "lte": 0.0, "length": 0.0}
+    before = design(every)
+    calls: list[str] = []
+    stepped = design(every)
+
+    def steps(e):
+        calls.append("steps")
+        return stepped
+
+    def near(e):
+        calls.append("near miss")
+        return stepped
+
+    lines: list[str] = []
+    # the centre v just off its band (0.0006 of the depth / 0.08 tolerance: a near miss)
+    cut = design(every | {"centre_v": 0.0075})
+    assert development.step_after_cut(before, cut, steps, near, lines.append) is stepped
+    assert calls == ["near miss"] and "lost centre_v" in lines[0]
+    calls.clear()
+    # the LTE lost by more than the near-miss margin: the full steps
+    cut = design(every | {"lte": 2.0})
+    assert development.step_after_cut(before, cut, steps, near, lines.append) is stepped
+    assert calls == ["steps"]
+    calls.clear()
+    # no target lost: every target still met, or the one missed was missed before the cut
+    for b, c in ((before, design(every)),
+                 (design(every | {"lte": 0.3}), design(every | {"lte": 0.4}))):
+        assert development.step_after_cut(b, c, steps, near, lines.append) is c
+    assert calls == []
