@@ -392,15 +392,23 @@ def test_a_target_lost_at_the_second_cut_gets_one_step_again():
         calls.append("steps")
         return stepped
 
-    def near(e):
-        calls.append("near miss")
-        return stepped
+    kept = [True]
+
+    def near(e, te_step=None):
+        calls.append("near miss" if te_step is None else f"near miss, TE step {te_step:g}")
+        return stepped if kept[0] else e
 
     lines: list[str] = []
     # the centre v just off its band (0.0006 of the depth / 0.08 tolerance: a near miss)
     cut = design(every | {"centre_v": 0.0075})
     assert development.step_after_cut(before, cut, steps, near, lines.append) is stepped
     assert calls == ["near miss"] and "lost centre_v" in lines[0]
+    calls.clear()
+    # none kept with the TE level lowered: the same at the design's own level, once
+    kept[0] = False
+    assert development.step_after_cut(before, cut, steps, near, lines.append) is cut
+    assert calls == ["near miss", "near miss, TE step 0"]
+    kept[0] = True
     calls.clear()
     # the LTE lost by more than the near-miss margin: the full steps
     cut = design(every | {"lte": 2.0})
