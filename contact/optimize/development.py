@@ -110,11 +110,9 @@ from contact.optimize.development_check import (
     VERIFIED_DESIGNS,
     check_steps,
     checked_best,
-    checked_near_miss,
     checked_root_capacity,
     checked_tolerance,
     final_tolerance,
-    near_miss,
     placed_case,
     static_capacity,
     steps_on_each,
@@ -438,14 +436,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             # the second cut may cost a target the steps had met (no step follows it):
             # one more step where it did, the case written again where it is better, and
             # its root capacity taken once more only where its FE model changed
-            near = functools.partial(checked_near_miss, targets=targets, setup=setup,
-                                     teeth=teeth, say=say, placed=placed,
-                                     level=start[TE_NAME])
-            regained = step_after_cut(
-                before, best, steps,
-                lambda e, **kw: near(e, slope=evaluate.slopes.get(bearing_key(e.values)),
-                                     **kw), say
-            ) if text else best
+            regained = step_after_cut(before, best, steps, say) if text else best
             if regained is not best:
                 best, developed = regained, with_flank_options(developed, flank,
                                                                regained.values)
@@ -532,46 +523,37 @@ def _pitting_outclassed(case: Case, setup: dict[str, Any], below: float,
 
 def step_after_cut(before: DevelopmentEvaluation, cut: DevelopmentEvaluation,
                    steps: Callable[[DevelopmentEvaluation], DevelopmentEvaluation],
-                   near_step: Callable[[DevelopmentEvaluation], DevelopmentEvaluation],
                    say: Callable[[str], None]) -> DevelopmentEvaluation:
     """The drive design after a second root-capacity cut (the check's steps ran at the
     first cut's torques; :func:`develop`): where ``cut`` (``before`` analysed at the lowered
     torques, :func:`~contact.optimize.development_check.checked_root_capacity`) misses a
-    target ``before`` met at its check, the check's step for it once — the near-miss step
-    ``near_step`` (:func:`~contact.optimize.development_check.checked_near_miss`: a small
-    blade-angle step with the TE level lowered, at most
-    :data:`~contact.optimize.development_check.NEAR_MISS_DESIGNS` designs; where none is
-    kept, the same at the design's own TE level, ``near_step(cut, te_step=0.0)``) where
-    ``cut`` is a near miss (:func:`~contact.optimize.development_check.near_miss`: its
-    light-load centre v off and nothing by more than a small margin), else the full
-    ``steps`` (:func:`~contact.optimize.development_check.check_steps`). Returns the step's
-    design where it is better, else ``cut`` itself (also where no target was lost: no
-    step runs).
+    target ``before`` met at its check, the check's steps ``steps``
+    (:func:`~contact.optimize.development_check.check_steps`) once more at the lowered
+    torques. Each step runs only where its target is missed, so a design that lost only its
+    light-load centre v takes the tip and root relief steps for a high pattern and, last,
+    the near-miss step (:func:`~contact.optimize.development_check.checked_near_miss`: a
+    small blade-angle step with the TE level lowered, at most
+    :data:`~contact.optimize.development_check.NEAR_MISS_DESIGNS` designs). Returns the
+    steps' design where it is better, else ``cut`` itself (also where no target was lost:
+    no step runs).
 
     Why: the light torque follows the design torque (``light_load`` × it), and the
     light-load pattern moves as both fall. Measured on the unseen spiral bevel 13x37 at
     Σ 60° (benchmarks/data/unseen_designs, 2026-11-26): the steps met every drive target
     at 110.4 N m; the second (local pitting) cut to 89.6 N m moved the light-load centre
     v to 0.6301, just over its bound 0.6295, and the design was written missing it. There
-    the near-miss step's TE level lowered 25 → 10 µrad raised the light-load LTE to 47–62
-    µrad (target 40) with the centre v back at 0.58–0.61: the lowered level is the 10x41's
-    lever (its blade step raised the LTE), on this bearing it is what misses."""
+    the near-miss step alone kept nothing: its blade-angle steps of −0.035 to −0.077°
+    brought the centre v to 0.58–0.61 but raised the light-load LTE from 38 to 47–64 µrad
+    (target 40), at the TE level lowered 25 → 10 µrad and at 25 alike."""
     if before.full is None or cut.full is None:
         return cut
     lost = sorted(k for k, v in cut.full[1].items()
                   if v > 0.0 and before.full[1].get(k, 1.0) == 0.0)
     if not lost:
         return cut
-    near = near_miss(cut)
-    say(f"  the second cut lost {', '.join(lost)}: the "
-        f"{'near-miss step' if near else 'check steps'} again at the lowered torques")
-    if not near:
-        return steps(cut)
-    stepped = near_step(cut)
-    if stepped is cut:  # the blade-angle step at the design's own TE level
-        say("  the near-miss step at its own TE level")
-        stepped = near_step(cut, te_step=0.0)
-    return stepped
+    say(f"  the second cut lost {', '.join(lost)}: the check's steps again at the lowered "
+        "torques")
+    return steps(cut)
 
 
 def _both_flanks_built(case: Case, wanted: bool, built: list[Case],

@@ -656,8 +656,7 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
                       say: Callable[[str], None],
                       placed: Callable[[Mapping[str, float]], Case], level: float, *,
-                      slope: float | None = None,
-                      te_step: float = NEAR_MISS_TE_STEP) -> DevelopmentEvaluation:
+                      slope: float | None = None) -> DevelopmentEvaluation:
     """A design that misses its targets by a small margin after every other check step,
     its light-load centre v among them (:func:`near_miss`), given a small blade-angle
     step with its TE level lowered: the pinion's blade-angle change
@@ -667,11 +666,10 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     design's bearing where given, else :data:`~contact.optimize.development_stages.
     HEIGHT_SLOPE`), and ``te_level`` lowered by :data:`NEAR_MISS_TE_STEP` (within its
     bounds; ``level`` [µrad]: the flank's own level where the design's values do not
-    give one; ``te_step`` [µrad] in place of that step, 0: the level kept). Each design
-    (a synthesis of steps 3-6) placed and checked at :data:`CHECK_LTCA`; where one is not
-    kept, the next takes the slope measured (a secant: between the design and the first
-    step, then between the last two steps, at the same TE level), towards the same aim.
-    At most
+    give one). Each design (a synthesis of steps 3-6) placed and checked at
+    :data:`CHECK_LTCA`; where one is not kept, the next takes the slope measured (a
+    secant: between the design and the first step, then between the last two steps, at
+    the same TE level), towards the same aim. At most
     :data:`NEAR_MISS_DESIGNS` designs; a design is kept only where it meets more targets,
     gives up none it met and is tolerant (:func:`_tolerant_variant`) — not on the
     objective, whose LTE term may prefer the design as it was.
@@ -702,7 +700,7 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                                  v0 - target)
     te = dict(best.values).get(TE_NAME, level) if TE_NAME in targets.variables else None
     lowered = (None if te is None else
-               float(max(targets.variables[TE_NAME][0], float(te) - te_step)))
+               float(max(targets.variables[TE_NAME][0], float(te) - NEAR_MISS_TE_STEP)))
     if lowered is not None and lowered >= float(te) - 1e-9:
         lowered = None
     s = slope if slope is not None and slope > 0.05 else HEIGHT_SLOPE
