@@ -364,3 +364,40 @@ def test_a_second_gear_process_is_stopped_before_the_checks_steps(monkeypatch):
     with pytest.raises(Stop):  # a first gear process: no bound taken
         run(math.nan)
     assert calls == ["steps"]
+
+
+def test_a_target_lost_at_the_second_cut_gets_the_steps_again():
+    """:func:`contact.optimize.development.step_after_cut`: after the second root-capacity
+    cut (no check step follows it in :func:`develop`), a design that lost a target the
+    steps had met gets the check's steps once more (the 13x37 at Σ 60°: its light-load
+    centre v 0.6301 against the bound 0.6295 after the pitting cut 110.4 → 89.6 N m), and
+    the steps' design is the one returned; where no target was lost (every target still
+    met, or the one missed was missed before the cut too), no step runs. A stand-in for
+    the steps: it only records the call."""
+    from contact.optimize import development
+    from contact.optimize.development_result import DevelopmentEvaluation
+
+    def design(shortfalls: dict[str, float]) -> DevelopmentEvaluation:
+        met = not any(v > 0.0 for v in shortfalls.values())
+        return DevelopmentEvaluation(0, {}, {}, 1.0, shortfalls, met, "", 0.0,
+                                     case=object(), full=(1.0, shortfalls, met),
+                                     checked=True)
+
+    every = {"centre_v": 0.0, "lte": 0.0, "length": 0.0}
+    before, stepped = design(every), design(every)
+    calls: list[object] = []
+
+    def steps(e):
+        calls.append(e)
+        return stepped
+
+    lines: list[str] = []
+    for lost in ({"centre_v": 0.0075}, {"lte": 2.0}):  # a near miss, and more
+        cut = design(every | lost)
+        assert development.step_after_cut(before, cut, steps, lines.append) is stepped
+        assert calls == [cut] and f"lost {next(iter(lost))}" in lines[-1]
+        calls.clear()
+    for b, c in ((before, design(every)),
+                 (design(every | {"lte": 0.3}), design(every | {"lte": 0.4}))):
+        assert development.step_after_cut(b, c, steps, lines.append) is c
+    assert calls == []
