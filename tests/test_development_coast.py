@@ -208,3 +208,149 @@ def test_a_coast_design_torque_at_or_below_the_light_torque_is_scored_at_its_one
     objective, shortfalls, _ = development_score(metrics, DevelopmentTargets(), grid[:4],
                                                  pressure_limit=grid[4])
     assert np.isfinite(objective) and "edge" in shortfalls
+
+
+def _coast_metrics(**over):
+    """Coast metrics at (light, design) torque meeting every default target but those
+    ``over`` changes (stand-ins, no LTCA)."""
+    import numpy as np
+
+    m = {"pattern_toe_u": [0.2, 0.15], "pattern_heel_u": [0.7, 0.8],
+         "pattern_root_v": [0.3, 0.25], "pattern_tip_v": [0.85, 0.9],
+         "pattern_centre_u": [0.45, 0.5], "pattern_centre_v": [0.6, 0.6],
+         "edge_load_share": [0.0, 0.0], "plastic_share": [0.0, 0.0],
+         "lte_peak_to_peak": [20.0, 30.0], "pressure_max_flank": [900.0, 1500.0],
+         "lte_spread": [0.0, 0.1]}
+    return {k: np.asarray(v, float) for k, v in (m | over).items()}
+
+
+def _coast_design(values, metrics, targets):
+    """A checked coast design scored on ``metrics`` (development_score, centre v 0.6)."""
+    from contact.optimize.development_result import DevelopmentEvaluation
+    from contact.optimize.development_targets import development_score
+
+    full = development_score(metrics, targets, centre_v=0.6)
+    return DevelopmentEvaluation(3, dict(values), metrics, full[0], full[1], full[2], "", 0.0,
+                                 full=full, checked=True)
+
+
+#: the unseen spiral bevel 13x37 at Σ 60°'s coast flank as written (13.4 / 89.6 N m):
+#: path −58.75°, ellipse 0.4, tip relief 15 µm from 0.5
+COAST_13X37 = {"path_angle": -58.75, "ellipse_length": 0.4, "tip_relief": 15.0,
+               "tip_relief_start": 0.5}
+
+
+def test_a_coast_lte_the_ellipse_and_path_do_not_lower_gets_a_later_tip_relief(
+        monkeypatch):
+    """checked_coast_lte's last bearing step: the tip relief started later (0.5 → 0.85)
+    with the ellipse 0.3 longer (0.4 → 0.7), tried after the ellipse step (refused for its
+    peak, 1600 MPa above 1389; 3906 MPa at the 279.2 N m the steps first ran at) and the
+    path step (a worse score) and kept on a better
+    score with no met target lost. Stand-ins after the unseen spiral bevel 13x37 at Σ 60°'s
+    coast flank (``python -m contact run --flank coast`` at 13.4 / 89.6 N m, the case as
+    written and edited by hand): LTE 111 / 68 µrad, 1389 MPa; ellipse 0.7 with the tip
+    relief from 0.85: 54 / 38 µrad, 1079 MPa, pattern 0.60 long. A design without tip
+    relief is not given the step (its start means nothing)."""
+    from contact.optimize import development_check as dcheck
+    from contact.optimize.development_targets import DevelopmentTargets
+
+    seen = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        seen.append((flank, case["path_angle"], round(case["ellipse_length"], 9),
+                     round(case["tip_relief_start"], 9)))
+        if case["tip_relief_start"] > 0.8 and case["ellipse_length"] > 0.65:
+            m = {"lte_peak_to_peak": [54.0, 38.0], "pressure_max_flank": [500.0, 1079.0],
+                 "pattern_toe_u": [0.18, 0.1], "pattern_heel_u": [0.78, 0.9]}
+        elif case["ellipse_length"] > 0.45:
+            m = {"lte_peak_to_peak": [61.0, 60.0], "pressure_max_flank": [900.0, 1600.0]}
+        elif case["path_angle"] > -50.0:
+            m = {"lte_peak_to_peak": [130.0, 127.0], "pressure_max_flank": [600.0, 1300.0]}
+        else:
+            m = {"lte_peak_to_peak": [111.0, 68.0], "pressure_max_flank": [600.0, 1389.0]}
+        return _coast_metrics(**m), (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [13.4, 89.6], "centre_v": 0.6}
+    start = _coast_design(COAST_13X37, fake(COAST_13X37, [])[0], targets)
+    seen.clear()
+    lines = []
+    got = dcheck.checked_coast_lte(start, targets, setup, None, lines.append,
+                                   lambda v: dict(v))
+    assert seen == [("coast", -58.75, 0.5, 0.5), ("coast", -43.75, 0.4, 0.5),
+                    ("coast", -58.75, 0.7, 0.85)]
+    assert got.values == COAST_13X37 | {"ellipse_length": pytest.approx(0.7),
+                                        "tip_relief_start": pytest.approx(0.85)}
+    assert list(got.metrics["lte_peak_to_peak"]) == [54.0, 38.0]
+    assert "ellipse_length 0.7, tip_relief_start 0.85" in lines[-1]
+    assert any("misses pressure (1600 MPa above 1389)" in x for x in lines)
+    # from 0.6 the start is clipped to its upper bound 0.9 (0.6 + 0.35)
+    seen.clear()
+    got = dcheck.checked_coast_lte(
+        _coast_design(COAST_13X37 | {"tip_relief_start": 0.6}, start.metrics, targets),
+        targets, setup, None, [].append, lambda v: dict(v))
+    assert seen[-1] == ("coast", -58.75, 0.7, 0.9) and got.values["tip_relief_start"] == 0.9
+    # no tip relief, or its start at the bound already: not tried
+    for values in (COAST_13X37 | {"tip_relief": 0.0}, COAST_13X37 | {"tip_relief_start": 0.9}):
+        seen.clear()
+        dcheck.checked_coast_lte(_coast_design(values, start.metrics, targets), targets,
+                                 setup, None, [].append, lambda v: dict(v))
+        assert [s[3] for s in seen] == [values["tip_relief_start"]] * 2
+
+
+def test_the_coast_lte_steps_run_again_at_a_lowered_coast_torque_only_above_the_limit(
+        monkeypatch):
+    """coast_lte_at_its_torques: the coast LTE steps once more at the coast flank's final
+    torques, only where its design torque fell below 0.9 of the torque its steps ran at
+    and its LTE p-p there exceeds 60 µrad (the 13x37 at Σ 60°: developed at 279.2 N m,
+    written at 13.4 / 89.6 N m with 111 / 68 µrad); the steps get those torques, the
+    pitting bound of the coast capacity's check (p · S_H,loc / S_Hmin) as the peak's bound,
+    and the outcome carries the kept design in its basic design. Nothing is analysed
+    otherwise (the stand-in steps record their calls)."""
+    import dataclasses as dc
+    from pathlib import Path
+
+    from contact.optimize import development_coast_flank as dcoast
+    from contact.optimize.development_coast import CoastCapacity, CoastCheck
+    from contact.optimize.development_targets import DevelopmentTargets
+    from geometry.synthesis.basic_design import load_basic
+
+    calls = []
+    targets = DevelopmentTargets()
+    better = _coast_design(COAST_13X37 | {"ellipse_length": 0.7, "tip_relief_start": 0.85},
+                           _coast_metrics(lte_peak_to_peak=[54.0, 38.0]), targets)
+
+    def steps(best, targets, setup, teeth, say, placed, *, key_prefix=(), level=None,
+              lte_limit=None):
+        calls.append((tuple(setup["torques"]), targets.max_flank_pressure, key_prefix[-1],
+                      level))
+        return better
+
+    monkeypatch.setattr(dcoast, "checked_coast_lte", steps)
+    basic = load_basic(Path(__file__).parent / "data" / "designs" / "hypoid_12x41_s85.toml")
+    drive = dc.replace(better, values={"path_angle": -80.0, "ellipse_length": 0.5})
+    written = _coast_design(COAST_13X37, _coast_metrics(lte_peak_to_peak=[111.0, 68.0]),
+                            targets)
+    coast = dcoast._CoastOutcome(basic, written, [], "developed", None, (13.4, 89.6))
+    held = CoastCheck(89.6, 1389.0, 2400.0, pitting_safety=1.2, s_h_min=1.0)
+    cap = CoastCapacity(89.6, 89.6, (held,), "", True)
+
+    def run(outcome=coast, developed_at=279.2):
+        return dcoast.coast_lte_at_its_torques(basic, drive, targets, {"centre_v": 0.6},
+                                               None, {}, lambda line: None, outcome, cap,
+                                               developed_at, 25.0)
+
+    # not lowered enough (89.6 >= 0.9 x 95), or within 60 urad: nothing run
+    assert run(developed_at=95.0) is None
+    quiet = coast._replace(best=_coast_design(COAST_13X37, _coast_metrics(
+        lte_peak_to_peak=[55.0, 60.0]), targets))
+    assert run(quiet) is None and calls == []
+    got = run()
+    assert calls == [((13.4, 89.6), pytest.approx(1389.0 * 1.2), "coast", 25.0)]
+    assert got.best is better and got.torques == (13.4, 89.6)
+    side = "convex" if basic.options.drive_flank == "concave" else "concave"
+    assert got.basic.options.flank(side).ellipse_length == pytest.approx(0.7)
+    # no step kept: None
+    monkeypatch.setattr(dcoast, "checked_coast_lte", lambda best, *a, **k: best)
+    assert run() is None

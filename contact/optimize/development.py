@@ -189,6 +189,7 @@ from geometry.core.blas import blas_threads
 from geometry.core.errors import InputError
 from geometry.synthesis.basic_design import (
     BasicDesign,
+    flank_option_values,
     with_flank_options,
 )
 
@@ -472,6 +473,19 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 f"{first.reason}; the coast flank developed again at {first.torque:.4g} N m"
                 + (f", then {second.reason}" if second.lowered else ", where it holds"),
                 second.holds)
+        else:  # the coast LTE steps again where its torque was lowered after them
+            side = "convex" if developed.options.drive_flank == "concave" else "concave"
+            level = flank_option_values(pre_coast.options.flank(side)).get(TE_NAME)
+            lte = coast_flank.coast_lte_at_its_torques(
+                developed, best, targets, setup, teeth, memo, say, coast, coast_cap,
+                coast_setup["torques"][1], level)
+            if lte is not None:  # written, and analysed as `ltca run --flank coast` does
+                coast, developed = lte, lte.basic
+                case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
+                _both_flanks_built(case, root_stress, built, say)
+                coast, _ = coast_flank_capacity(case, basic, coast, targets, setup,
+                                                float(coast.torques[1]), root_stress,
+                                                False, say)
     coast_seconds += time.process_time() - c_cap
     tolerance = final_tolerance(case, targets, setup, teeth, best.values)
     result = DevelopmentResult(developed, case, report, best, tuple(evals),

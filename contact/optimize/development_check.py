@@ -901,6 +901,12 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
 #: turned towards the lengthwise direction (less negative), each within its bounds
 COAST_LTE_STEPS = (("ellipse_length", 0.1), ("path_angle", 15.0))
 
+#: the coast check's last bearing step (:func:`checked_coast_lte`), after
+#: :data:`COAST_LTE_STEPS`: the tip relief started later (``tip_relief_start`` towards its
+#: upper bound) with the ellipse longer, both changes [file units] from the design kept
+#: so far, each within its bounds; tried where the design has a tip relief
+COAST_TIP_START_STEP = (("ellipse_length", 0.3), ("tip_relief_start", 0.35))
+
 
 def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
@@ -911,7 +917,10 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     """A coast flank whose LTE p-p at the check exceeds the verdict's limit at a torque
     given the bearing steps of :data:`COAST_LTE_STEPS` in turn while it does: the ellipse
     0.1 longer, then the path angle turned 15° towards the lengthwise direction (each
-    within the bounds of its variable), every other prescription kept; each one design (a
+    within the bounds of its variable), then the tip relief started later with the ellipse
+    longer (:data:`COAST_TIP_START_STEP`: ``tip_relief_start`` 0.35 and ``ellipse_length``
+    0.3 on, each within its bounds; where the design has a tip relief), every other
+    prescription kept; each one design (a
     synthesis of steps 3-6) placed and checked at :data:`CHECK_LTCA` on the coast flank,
     kept where it scores better, misses no target the design met but the pattern length
     (as :func:`checked_long`) and its flank peak pressure at the design torque is no
@@ -944,24 +953,26 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     (its redevelopment's pitting bound 1635 MPa), 6.66; path −35°: 43 / 56 µrad but
     1730 MPa; the generated-gear spiral bevel 20x30 (26.3 / 175.6 N m, path −45°,
     ellipse 0.55) 51 / 95 µrad, 33.1; ellipse 0.65: 56 / 115; path −40° / −35° / −30°:
-    43 / 81, 36 / 67, 26 / 55 µrad (1170 → 1114 MPa), 3.35."""
+    43 / 81, 36 / 67, 26 / 55 µrad (1170 → 1114 MPa), 3.35. A tip relief entering
+    later leaves the tooth tip's share of the hand-over to the longer ellipse instead of
+    lowering it: the unseen spiral bevel 13x37 at Σ 60° (coast 13.4 / 89.6 N m as written,
+    path −58.75°, ellipse 0.4, tip relief from 0.5: LTE 111 / 68 µrad, 1389 MPa); ellipse
+    0.7 with the tip relief from 0.85: 54 / 38 µrad, 1079 MPa, pattern 0.60 long, no edge
+    (``python -m contact run --flank coast`` on the case edited by hand, 2026-11-26)."""
     from contact.study.verdicts import LTE_LIMIT
 
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
-    for name, step in COAST_LTE_STEPS:
+    for changes in (*(((n, s),) for n, s in COAST_LTE_STEPS), COAST_TIP_START_STEP):
         if (best.full is None or not best.checked
                 or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
             return best
-        if name not in targets.variables or name not in best.values:
+        values = _coast_step_values(best.values, targets, changes)
+        if values is None:
             continue
-        lo, hi = (float(x) for x in targets.variables[name])
-        now = float(best.values[name])
-        x = float(np.clip(now + step, lo, hi))
-        if abs(x - now) < 1e-9:
-            continue
-        values = dict(best.values) | {name: x}
+        name = " and ".join(n for n, _ in changes)
+        said = ", ".join(f"{n} {values[n]:.4g}" for n, _ in changes)
         e = _said_variant(best, values, "coast lte",
-                          f"with {name} {x:.4g} (its LTE above {limit:g} urad)", targets,
+                          f"with {said} (its LTE above {limit:g} urad)", targets,
                           setup, teeth, say, placed, flank="coast", key_prefix=key_prefix)
         if e is None:
             continue
@@ -969,6 +980,26 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             best = e
     return checked_coast_te(best, targets, setup, teeth, say, placed, key_prefix=key_prefix,
                             limit=limit, level=level)
+
+
+def _coast_step_values(values: Mapping[str, float], targets: DevelopmentTargets,
+                       changes: tuple[tuple[str, float], ...]) -> dict[str, float] | None:
+    """A coast LTE step's prescriptions: ``values`` with each of ``changes`` (name, step
+    [file units]) added, clipped to the variable's bounds; None where a variable is not
+    varied or not in ``values``, where the last change does not move (at its bound), or
+    where a later tip relief start is asked of a design without tip relief."""
+    out = dict(values)
+    for name, step in changes:
+        if name not in targets.variables or name not in values:
+            return None
+        lo, hi = (float(x) for x in targets.variables[name])
+        out[name] = float(np.clip(float(values[name]) + step, lo, hi))
+    last = changes[-1][0]
+    if abs(out[last] - float(values[last])) < 1e-9:
+        return None
+    if last == "tip_relief_start" and not float(values.get("tip_relief", 1.0)) > 0.0:
+        return None
+    return out
 
 
 def _coast_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation,

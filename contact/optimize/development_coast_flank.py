@@ -394,3 +394,64 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
         f"(objective {old.full[0]:.3g}; developed there {new.full[0]:.3g})")
     return None
 
+
+
+def coast_lte_at_its_torques(developed: BasicDesign, drive: DevelopmentEvaluation,
+                             targets: DevelopmentTargets, setup: dict[str, Any],
+                             teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                             coast: _CoastOutcome, cap: CoastCapacity | None,
+                             developed_at: float, level: float | None = None
+                             ) -> _CoastOutcome | None:
+    """The coast LTE steps (:func:`checked_coast_lte`) once more, at the coast flank's
+    final torques (``coast.torques``, those of :func:`coast_flank_capacity`'s check as
+    ``ltca run --flank coast`` analyses the written case), where its design torque is
+    below :data:`COAST_REDEVELOP` × ``developed_at`` (the torque the coast flank was
+    developed and its LTE steps run at) and its LTE p-p there exceeds the verdict's limit
+    (:data:`contact.study.verdicts.LTE_LIMIT`) at a torque. The coast design ``coast.best``
+    (its metrics at those torques) is the base; the steps' acceptance is theirs
+    (:func:`_coast_kept`), their flank peak pressure bounded as well by what the coast
+    design torque allows (:func:`pitting_pressure` of ``cap``, where finite).
+    ``developed``: the basic design written (both flanks' prescriptions); ``level``: the
+    basic file's coast ``te_level`` [µrad] (:func:`checked_coast_te`); ``drive``: the drive
+    design written (its bearing keys the kept pinion teeth). Returns the outcome with the
+    design kept (its basic design carrying its coast prescriptions) where a step was
+    kept, else None (nothing
+    analysed where the LTE is within the limit or the torque was not lowered).
+
+    Why: the coast LTE steps run at the torque the coast flank is developed at; where the
+    drive's root-stress or pitting capacity lowers the design torque afterwards, a step
+    refused there for its peak pressure can be the one the LTE needs at the torque written.
+    The unseen spiral bevel 13x37 at Σ 60° (issue 71): its coast steps ran at 279.2 N m,
+    where ellipse 0.5 peaked at 3906 MPa and was refused; written at 13.4 / 89.6 N m its
+    coast LTE p-p was 111 / 68 µrad (1389 MPa), with the ellipse 0.7 and the tip relief
+    from 0.85 54 / 38 µrad (1079 MPa)."""
+    from contact.study.verdicts import LTE_LIMIT
+    from geometry.synthesis.case_synthesis import synthesize
+
+    old = coast.best
+    if (old is None or old.full is None or not old.checked or len(coast.torques) != 2
+            or not float(coast.torques[1]) < COAST_REDEVELOP * float(developed_at)
+            or not np.nanmax(old.metrics["lte_peak_to_peak"]) > LTE_LIMIT
+            or targets.coast_max_evaluations == 0):
+        return None
+    limit = pitting_pressure(cap) if cap is not None else math.nan
+    if math.isfinite(limit):
+        held = (targets.max_flank_pressure if targets.max_flank_pressure is not None
+                else setup.get("pressure_limit", math.inf))
+        targets = dataclasses.replace(targets, max_flank_pressure=float(min(held, limit)))
+    side = "convex" if developed.options.drive_flank == "concave" else "concave"
+    base = developed
+    say(f"development: coast flank LTE p-p "
+        f"{np.nanmax(old.metrics['lte_peak_to_peak']):.0f} urad at its own torques "
+        f"{coast.torques[0]:.4g}/{coast.torques[1]:.4g} N m (its LTE steps ran at "
+        f"{developed_at:.4g} N m): the coast LTE steps there")
+
+    def placed(values):
+        return synthesize(with_flank_options(base, side, values), memo=memo)[0]
+
+    got = checked_coast_lte(old, targets, dict(setup, torques=list(coast.torques)), teeth,
+                            say, placed, key_prefix=(*bearing_key(drive.values), "coast"),
+                            level=level)
+    if got is old:
+        return None
+    return coast._replace(basic=with_flank_options(base, side, got.values), best=got)
