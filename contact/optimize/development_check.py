@@ -415,7 +415,7 @@ def checked_ellipse(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if lost:
         say(f"  not kept: the longer ellipse misses {', '.join(lost)}")
         return best
-    if not _tolerant_variant(e, targets, setup, teeth, say, best):
+    if not _tolerant_variant(e, targets, setup, teeth, say):
         return best
     return e
 
@@ -509,7 +509,7 @@ def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     if lost:
         say(f"  not kept: the long bearing misses {', '.join(lost)}")
         return best
-    if flank == "drive" and not _tolerant_variant(e, targets, setup, teeth, say, best):
+    if flank == "drive" and not _tolerant_variant(e, targets, setup, teeth, say):
         return best
     return e
 
@@ -576,7 +576,7 @@ def checked_relief_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if lost:
             say(f"  not kept: the shallower root relief misses {', '.join(lost)}")
             continue
-        if not _tolerant_variant(e, targets, setup, teeth, say, best):
+        if not _tolerant_variant(e, targets, setup, teeth, say):
             continue
         best = e
     return best
@@ -1221,7 +1221,7 @@ def _kept_step(e: DevelopmentEvaluation, best: DevelopmentEvaluation,
     turned = _checked_path(e, targets, setup, teeth, say, placed)
     if _check_rank(turned) >= _check_rank(best):
         return best
-    if turned is not e or _tolerant_variant(turned, targets, setup, teeth, say, best):
+    if turned is not e or _tolerant_variant(turned, targets, setup, teeth, say):
         return turned
     return best
 
@@ -1329,55 +1329,15 @@ def _missed_excursion(tolerance: Mapping[str, tuple[dict, dict[str, float]]],
 
 def _tolerant_variant(e: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
-                      say: Callable[[str], None],
-                      base: DevelopmentEvaluation | None = None) -> bool:
+                      say: Callable[[str], None]) -> bool:
     """Whether a check step's design is tolerant (:func:`tolerance_checks`: clear of toe and
     heel, its edges elastic within their share at every mounting excursion); where not,
     says which it misses. A check step keeps a design only so: a bearing turned or
     relieved for its LTE or height must not lose the assembly's tolerance (the spiral bevel
     13x39 at path −80°, ellipse 0.75: LTE 12 / 39 µrad, every excursion but ΔE +0.05 mm
-    elastic, 1.3 % of the design torque plastic there).
-
-    ``base``: the design the step would replace. Where it is not tolerant itself, there is
-    no tolerance to lose: ``e`` passes where it misses no (excursion, target) that ``base``
-    meets and its check objective plus its excursions' shortfalls (the objective's own
-    units: :func:`development_score`) is no more than ``base``'s. Found on the
-    face-hobbed spiral bevel 15x31 at Σ 97° (issue 71's unseen designs, round 9): its
-    path step's design met every target at the check (LTE 19 / 38 µrad, objective 0.38)
-    and was not kept for 2.18 % on the edges at ΔP +0.05 mm (shortfall 0.36), where the
-    design kept instead (LTE 43 / 58 µrad, the LTE and the tip clearance missed,
-    objective 13) had 2.06 % there (0.11) and a plastic segment at ΔP −0.05 mm."""
+    elastic, 1.3 % of the design torque plastic there)."""
     tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values, until_missed=True)
-    if not any(short[k] > 0.0 for _, short in tolerance.values() for k in TOLERANCE_KEYS):
-        return True
-    if base is not None and base.case is not None:
-        had = tolerance_checks(base.case, targets, setup, teeth, base.values)
-        if _shortfalls(had):
-            now = tolerance_checks(e.case, targets, setup, teeth, e.values)
-            if (set(_shortfalls(now)) <= set(_shortfalls(had))
-                    and e.full is not None and base.full is not None
-                    and e.full[0] + sum(_shortfalls(now).values())
-                    <= base.full[0] + sum(_shortfalls(had).values())):
-                say("  not tolerant, as the design before it: at the mounting excursions "
-                    "it misses no more (" + ", ".join(
-                        f"{lab} {k}" for lab, k in sorted(_shortfalls(now))) + ")")
-                return True
-            say("  not kept: at the mounting excursions it misses " + ", ".join(
-                f"{lab} {k} {v:.3g}" for (lab, k), v in sorted(_shortfalls(now).items()))
-                + ", more than the design before it (" + ", ".join(
-                f"{lab} {k} {v:.3g}" for (lab, k), v in sorted(_shortfalls(had).items()))
-                + ")")
-            return False
-    _missed_excursion(tolerance, say)
-    return False
-
-
-def _shortfalls(tolerance: Mapping[str, tuple[dict, dict[str, float]]]
-                ) -> dict[tuple[str, str], float]:
-    """The (excursion, :data:`TOLERANCE_KEYS` target) pairs a design's excursions miss,
-    with their shortfalls (:func:`tolerance_checks`' second element)."""
-    return {(lab, k): float(short[k]) for lab, (_, short) in tolerance.items()
-            for k in TOLERANCE_KEYS if short[k] > 0.0}
+    return not _missed_excursion(tolerance, say)
 
 
 #: the tolerance step's reliefs (:func:`checked_tolerance`): the chosen design's tip, then
@@ -1556,7 +1516,7 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         if e is None:
             continue
         if (_check_rank(e) < _check_rank(best)
-                and _tolerant_variant(e, targets, setup, teeth, say, best)):
+                and _tolerant_variant(e, targets, setup, teeth, say)):
             best = e
             if e.met:
                 break
