@@ -51,7 +51,7 @@ from contact.compliance.tooth import (
 )
 from contact.compliance.weber import weber_compliance
 from geometry.case import TeethKey
-from geometry.core.caches import memoised
+from geometry.core.caches import Same, memoised
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
@@ -542,22 +542,6 @@ def _map_members(case: Case, segments: list[ContactSegments], model: PairComplia
     return per_roll, mids, both
 
 
-class _Identity:
-    """A tooth model as a memo key compared by identity (it holds arrays: no hash of its
-    own); the key holds the model, so its ``id`` is not reused while the memo keeps it."""
-
-    __slots__ = ("obj",)
-
-    def __init__(self, obj) -> None:
-        self.obj = obj
-
-    def __hash__(self) -> int:
-        return id(self.obj)
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, _Identity) and other.obj is self.obj
-
-
 #: points whose shell coordinates :func:`_kept_mapping` keeps per tooth model (the default
 #: case's analysis maps ~3,000 midpoints and ends a member)
 POINTS_KEPT = 16384
@@ -620,7 +604,7 @@ class _PointStore:
 
 
 @memoised(maxsize=4)
-def _point_store(data: _Identity) -> _PointStore:
+def _point_store(data: Same) -> _PointStore:
     """The shell coordinates of the points mapped so far onto the tooth model
     ``data.obj``, by the point's bytes (member frame; a midpoint with its normal): one
     store per tooth model, emptied with the memo (``clear_caches``); the last
@@ -653,7 +637,7 @@ def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
     there and is not kept."""
     if warm_seeds_active():  # a development's trial: its teeth are new at every trial
         return shell_points_many(jobs, END_TOLERANCE)
-    stores = [_point_store(_Identity(job[0])) for job in jobs]
+    stores = [_point_store(Same(job[0])) for job in jobs]
     with contextlib.ExitStack() as held:
         for store in {id(st): st for st in stores}.values():
             held.enter_context(store.lock)

@@ -57,7 +57,7 @@ from contact.compliance.shell_tooth import (
     Theory,
 )
 from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
-from geometry.core.caches import memoised
+from geometry.core.caches import Same, memoised
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, positive, real_array
 from geometry.machine.meshing import warm_seeds_active
@@ -716,22 +716,6 @@ def _as_range(idx):
     return idx
 
 
-class _Identity:
-    """A shell model as a memo key compared by identity (it holds arrays: no hash of its
-    own); the key holds the model, so its ``id`` is not reused while the memo keeps it."""
-
-    __slots__ = ("obj",)
-
-    def __init__(self, obj) -> None:
-        self.obj = obj
-
-    def __hash__(self) -> int:
-        return id(self.obj)
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, _Identity) and other.obj is self.obj
-
-
 #: columns of Y kept per shell model by :func:`_half_vectors` (each n_dof floats: 3 kB on
 #: the default 378 unknowns; two analyses of the default case's ~1,500 segments a member)
 HALF_VECTORS_KEPT = 4096
@@ -750,7 +734,7 @@ class _ColumnStore:
 
 
 @memoised(maxsize=4)
-def _half_vector_store(model: _Identity) -> _ColumnStore:
+def _half_vector_store(model: Same) -> _ColumnStore:
     """The columns of Y = U⁻ᵀ S Φ computed so far for segments on the tooth of the shell
     model ``model.obj``, by the segment's bytes (ends, normal, Gauss points): one store per
     model, emptied with the memo (``clear_caches``); :func:`_half_vectors` keeps the last
@@ -778,7 +762,7 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
     rows = np.ascontiguousarray(np.concatenate(rows, axis=1), dtype=float)
     tag = ng.to_bytes(2, "little") + (b"n" if nrm is not None else b"-")
     keys = _row_keys(rows, tag)
-    store = _half_vector_store(_Identity(model))
+    store = _half_vector_store(Same(model))
     with store.lock:  # (an analysis per thread: one at a time per model)
         kept = store.columns
         miss = np.flatnonzero(~np.fromiter(map(kept.__contains__, keys), dtype=bool,

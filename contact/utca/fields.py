@@ -38,7 +38,7 @@ from scipy.interpolate import BSpline, RectBivariateSpline
 from contact.utca.easeoff import EaseOff, fill_missing
 from contact.utca.piecewise import PiecewiseSpline, from_splines, piece_basis
 from contact.utca.spline_group import SplineGroup
-from geometry.core.caches import memoised
+from geometry.core.caches import Same, memoised
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.kernels import KERNELS
 from geometry.core.kernels import kernels_module as select_kernels
@@ -541,23 +541,6 @@ class EaseOffFields:
         if miss is not None:
             bad |= miss
         return np.where(bad, np.nan, np.minimum(np.maximum(v, v0), v1))
-
-
-class Same:
-    """An object as a memo key compared by identity (an ease-off holds arrays: no hash of
-    its own); the key holds the object, so its ``id`` is not reused while the memo keeps
-    the entry."""
-
-    __slots__ = ("obj",)
-
-    def __init__(self, obj) -> None:
-        self.obj = obj
-
-    def __hash__(self) -> int:
-        return id(self.obj)
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, Same) and other.obj is self.obj
 
 
 def fields_of(eo: EaseOff, kernels: str | None = None) -> EaseOffFields:

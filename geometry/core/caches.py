@@ -32,7 +32,7 @@ import functools
 from collections.abc import Callable
 from typing import Any, TypeVar
 
-__all__ = ["cache_sizes", "clear_caches", "memoised"]
+__all__ = ["Same", "cache_sizes", "clear_caches", "memoised"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -100,3 +100,20 @@ def cache_sizes() -> dict[str, int]:
         ``module.function`` → entries (``cache_info().currsize``).
     """
     return {name: int(w.cache_info().currsize) for name, w in sorted(_CACHES.items())}
+
+
+class Same:
+    """An object as a memo key compared by identity (an ease-off or a tooth model holds
+    arrays: no hash of its own); the key holds the object, so its ``id`` is not reused
+    while the memo keeps the entry."""
+
+    __slots__ = ("obj",)
+
+    def __init__(self, obj) -> None:
+        self.obj = obj
+
+    def __hash__(self) -> int:
+        return id(self.obj)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Same) and other.obj is self.obj
