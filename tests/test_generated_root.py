@@ -458,3 +458,42 @@ def test_bundled_tip_planes_are_the_derivation_s(capsys):
     spec.loader.exec_module(mod)
     assert mod.main(["--check"]) == 0
     assert "would change 0 case(s)" in capsys.readouterr().out
+
+
+def test_section_targets_stop_short_of_the_member_axis(monkeypatch):
+    """A whole depth under the root cone passes the member axis at the toe of a 5-tooth
+    face-hobbed hypoid at a 50 mm offset (benchmarks/data/unseen_designs/
+    fh_hypoid_5x45_a50.toml: ``ltca synthesize`` stopped with "radius: targets must be
+    > 0 mm"). The section envelope's targets there are moved up to a twentieth of the
+    root cone's radius; every other target is the one of :data:`V_TARGETS` as before."""
+    from types import SimpleNamespace
+
+    from geometry.machine import root_line
+
+    # (z, ρ) [mm] of [toe, heel] x [root, tip]: the toe's root radius 4 mm, a depth of 8
+    corners = np.array([[[10.0, 4.0], [10.0, 12.0]], [[40.0, 20.0], [40.0, 28.0]]])
+    monkeypatch.setattr(root_line, "blank_outline", lambda _b: SimpleNamespace(
+        corners=corners))
+    seen = {}
+
+    def solve(_blade, _settings, z, rho, **_kw):
+        seen["z"], seen["rho"] = z, rho
+        one = np.zeros(z.shape)
+        return SimpleNamespace(reason=np.zeros(z.shape, int), s=one, theta=one, q=one)
+
+    monkeypatch.setattr(root_line, "solve_envelope", solve)
+    blank = SimpleNamespace(outer_cone_distance=50.0, outer_addendum=3.0,
+                            outer_dedendum=5.0)
+    u = np.array([0.0, 0.5, 1.0])
+    _, vv, _ = root_line.section_envelope(None, SimpleNamespace(process="Generate"), blank,
+                                          u)
+    rho = seen["rho"]
+    assert np.all(rho > 0.0)
+    # the toe section: ρ = 4 + 8 v reaches 0 at v = -0.5; its targets below that at
+    # ρ = 0.05 x 4 mm (v = -0.475); the other sections (ρ ≥ 20 - 8 = 12 mm at the
+    # mid-face's v = -1) keep V_TARGETS exactly
+    through = root_line.V_TARGETS <= -0.5
+    np.testing.assert_allclose(rho[0, through], 0.2, rtol=1e-12)
+    np.testing.assert_allclose(vv[0, through], -0.475, rtol=1e-12)
+    np.testing.assert_array_equal(vv[0, ~through], root_line.V_TARGETS[~through])
+    np.testing.assert_array_equal(vv[1:], np.tile(root_line.V_TARGETS, (2, 1)))

@@ -224,6 +224,10 @@ def test_profile_turning_away_faster_than_the_relief_says_what_works():
         rem_angle(blade, 6.0, 8.0, 0.015)
     longest = info.value.span[1]
     assert 0.0 < longest < 2.0
+    # the relief it names, as a number: the profile's own turn over the span
+    least = info.value.least
+    assert f"give tip_relief >= {math.ceil(least * 1e4) / 10:.4g} um" in str(info.value)
+    assert abs(rem_angle(blade, 6.0, 8.0, 1.01 * least)) < math.radians(19.0)
     # a flankrem below the nominal blade angle, but beyond the profile's own turn
     assert abs(rem_angle(blade, 8.0 - 0.99 * longest, 8.0, 0.015)) < math.radians(19.0)
 
@@ -319,3 +323,28 @@ def test_synthesis_with_the_default_relief(path):
         assert blade.flankrem_angle > 0.0 > blade.toprem_angle
         info = case.extra["synthesis"][flank]
         assert info["tip_relief_um"] == info["root_relief_um"] == pytest.approx(15.0)
+
+
+def test_a_default_relief_the_profile_refuses_is_raised_to_what_it_needs():
+    """The spiral bevel 18x27 of benchmarks/data/unseen_designs: the drive (concave)
+    flank's circular profile turns 18.7 µm from its tangent over the default 15 µm tip
+    relief's span, and ``ltca synthesize`` stopped. :func:`relief_for_profile` raises that
+    flank's default relief to 1.05 x the need (0.1 µm up), the other flank and every value
+    the file gives kept; an error without the need is not its to mend."""
+    from geometry.synthesis.basic_design import load_basic
+    from geometry.synthesis.case_synthesis import relief_for_profile
+
+    basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
+    assert basic.options.concave.tip_relief == 0.015  # the default (m_mn above 3 mm)
+    exc = ReliefError("tip_relief: ...", "tip_relief", (None, 2.0), least=0.0187,
+                      flank="concave")
+    raised = relief_for_profile(basic, exc)
+    assert raised.options.concave.tip_relief == pytest.approx(0.0197, abs=1e-12)
+    assert raised.options.convex == basic.options.convex
+    assert raised.options.concave.root_relief == basic.options.concave.root_relief
+    given = dataclasses.replace(basic, options=dataclasses.replace(
+        basic.options, concave=dataclasses.replace(basic.options.concave,
+                                                   tip_relief=0.012)))
+    assert relief_for_profile(given, exc) is None
+    assert relief_for_profile(basic, ReliefError("tip_relief: ...", "tip_relief",
+                                                 flank="concave")) is None

@@ -329,8 +329,13 @@ def run_synthesize(args: argparse.Namespace) -> int:
     from contact.load_capacity.iso10300.inputs import RatingInputs
     from geometry.case import case_from_dict
     from geometry.core.heap import keep_heap_pages
+    from geometry.machine.relief import ReliefError
     from geometry.synthesis.basic_design import load_basic
-    from geometry.synthesis.case_synthesis import SYNTHESIS_STEPS, synthesize
+    from geometry.synthesis.case_synthesis import (
+        SYNTHESIS_STEPS,
+        relief_for_profile,
+        synthesize,
+    )
 
     # the development's trials and checks allocate and free the same large arrays again
     # and again: glibc keeps their pages instead of mapping fresh ones each time (the
@@ -348,17 +353,31 @@ def run_synthesize(args: argparse.Namespace) -> int:
     steps = (StepLines("synthesize", SYNTHESIS_STEPS) if getattr(args, "progress", False)
              else None)
     development = targets = None
-    if getattr(args, "development", True):
-        from contact.optimize.development import develop, targets_from_table
+    raised: list[str] = []  # default reliefs raised to the blade profile's need
+    while True:
+        try:
+            if getattr(args, "development", True):
+                from contact.optimize.development import develop, targets_from_table
 
-        # refused before the work; the µm amounts follow the design's size (size_scale)
-        targets = targets_from_table(basic.development, size_scale=_size_scale(basic))
-        development = develop(basic, targets=targets,
-                              progress=_say if getattr(args, "progress", False) else None,
-                              synthesis_progress=steps)
-        case, report = development.case, development.report
-    else:
-        case, report = synthesize(basic, progress=steps)
+                # refused before the work; the µm amounts follow the design's size
+                targets = targets_from_table(basic.development,
+                                             size_scale=_size_scale(basic))
+                development = develop(basic, targets=targets,
+                                      progress=_say if getattr(args, "progress", False)
+                                      else None, synthesis_progress=steps)
+                case, report = development.case, development.report
+            else:
+                case, report = synthesize(basic, progress=steps)
+            break
+        except ReliefError as exc:
+            adjusted = relief_for_profile(basic, exc)
+            if adjusted is None or len(raised) >= 4:
+                raise
+            value = getattr(adjusted.options.flank(exc.flank), exc.field)
+            raised.append(f"synthesis.{exc.flank}.{exc.field} {1e3 * value:.4g} um (the "
+                          f"default, raised: the blade's circular profile turns "
+                          f"{1e3 * exc.least:.3g} um from its tangent over the relief)")
+            basic = adjusted
     case, torque, torque_why = with_design_torque(case, basic.options.design_torque)
     if development is not None:
         case = development.recorded(case)
@@ -399,6 +418,8 @@ def run_synthesize(args: argparse.Namespace) -> int:
     size = _size_line(basic, targets)
     if size is not None:
         print(size)
+    for line in raised:
+        print("  " + line)
     if development is not None:
         print("  " + development.headline())
     process = gear_process_note(development, case)

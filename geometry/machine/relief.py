@@ -207,14 +207,19 @@ class ReliefError(InputError):
 
     ``span`` is (shortest, longest) blade length [mm] from corner to end that would make
     the relief (None where no bound applies), for :func:`relieved_blade` to turn into a
-    ``relief_start``.
+    ``relief_start``. ``least`` [mm]: the least relief that would work at this corner,
+    where the blade's circular profile already turns that far from its tangent at the
+    corner (None otherwise); ``flank`` the pinion flank where the synthesis names it.
     """
 
     def __init__(self, message: str, field: str,
-                 span: tuple[float | None, float | None] = (None, None)) -> None:
+                 span: tuple[float | None, float | None] = (None, None),
+                 least: float | None = None, flank: str | None = None) -> None:
         super().__init__(message)
         self.field = field
         self.span = span
+        self.least = least
+        self.flank = flank
 
 
 def _rem_limits(blade: Blade) -> tuple[float, float]:
@@ -331,7 +336,7 @@ def rem_angle(blade: Blade, corner_height: float, end_height: float, relief: flo
                 f"{sag * 1e3:.3g} um away from its tangent at the corner over this span, "
                 f"more than the relief, so the {rem} would first add material; give "
                 f"{field} >= {math.ceil(sag * 1e4) / 10:.4g} um or move the corner towards "
-                "the flank end", field, (None, longest))
+                "the flank end", field, (None, longest), least=sag)
         return d_alpha
 
     d0 = closed(relief)
@@ -448,7 +453,7 @@ def relieved_blade(blade: Blade, machine: MachineSettings, blank: Blank, hand: s
             else:
                 hint = f"no {name} does: lower {exc.field}"
             raise ReliefError(f"{exc} ({name} {at:g}; {hint} would work)",
-                              exc.field, exc.span) from None
+                              exc.field, exc.span, least=exc.least) from None
 
     kw = {}
     if tip_relief > 0.0:

@@ -89,7 +89,17 @@ def section_envelope(blade: Blade, settings: MachineSettings, blank: Blank, u: n
     section's fillet march: its lowest generated point (NaN where none)."""
     corners = blank_outline(blank).corners
     uu, vv = np.meshgrid(u, V_TARGETS, indexing="ij")
-    p, _ = projection_point(corners, uu, vv)
+    p, pv = projection_point(corners, uu, vv)
+    through = p[..., 1] <= 0.0
+    if through.any():
+        # a whole depth under the root cone passes the member axis at the toe of a small
+        # pinion (a 5-tooth hypoid at a large offset): those targets are moved up to a
+        # twentieth of the root cone's radius in their section (no slot bottom lies
+        # through the axis; the other targets are kept as they were)
+        rho0 = projection_point(corners, uu, 0.0)[0][..., 1]
+        v_floor = (0.05 * rho0 - rho0) / np.where(pv[..., 1] > 0, pv[..., 1], np.inf)
+        vv = np.where(through, np.maximum(vv, v_floor), vv)
+        p, _ = projection_point(corners, uu, vv)
     seed = (len(u) // 2, int(np.argmin(np.abs(V_TARGETS - 0.5))))
     sol = solve_envelope(blade, settings, p[..., 0], p[..., 1],
                          length_scale=blank.outer_cone_distance,

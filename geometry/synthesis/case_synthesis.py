@@ -86,7 +86,7 @@ from __future__ import annotations
 import logging
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -134,6 +134,7 @@ __all__ = [
     "FlankSynthesis",
     "SynthesisReport",
     "gear_processes",
+    "relief_for_profile",
     "synthesize",
 ]
 
@@ -335,6 +336,59 @@ def formate_limit_hint(basic: BasicDesign) -> str:
             f"meet the surface of action, and {remedy}; a higher ratio, a larger shaft angle "
             "or a smaller c_ham (the gear's addendum share) moves it within reach "
             "(docs/synthesis.md, 'Known limits')")
+
+
+#: [1] margin on the least relief a circular profile needs (:func:`relief_for_profile`):
+#: 5 % above the profile's own turn from its tangent, so that the rem line leaves the
+#: corner clearly on the material side (at the least relief it runs along the tangent)
+RELIEF_PROFILE_MARGIN = 1.05
+
+
+def relief_for_profile(basic: BasicDesign, exc: ReliefError) -> BasicDesign | None:
+    """The basic design with a default relief raised to what the blade's circular profile
+    needs, where :func:`synthesize` refused it for that profile; None where it does not
+    apply.
+
+    Parameters
+    ----------
+    basic : BasicDesign
+    exc : ReliefError
+        The synthesis' error; it applies where it names the pinion flank (``exc.flank``)
+        and the least relief that works (``exc.least`` [mm]: the circular profile already
+        turns that far from its tangent at the relief's corner, so that a smaller relief
+        would first add material), for ``tip_relief`` or ``root_relief``, and that flank's
+        value is the default (:data:`geometry.synthesis.basic_design.SIZE_SCALED_OPTIONS`
+        × the design's size scale; a value the file gives is kept).
+
+    Returns
+    -------
+    BasicDesign or None
+        The flank's relief raised to ``least`` × :data:`RELIEF_PROFILE_MARGIN`, rounded up
+        to 0.1 µm.
+
+    Notes
+    -----
+    Found on a spiral bevel 18×27, m_et 5 (benchmarks/data/unseen_designs, issue 71): the
+    drive flank's blade profile of radius 207 mm turns 18.7 µm from its tangent over the
+    2.6 mm from the relief's corner to the tip end, more than the default 15 µm tip
+    relief, so that ``ltca synthesize`` of the basic data stopped with an error. The
+    relief's role (the edge out of contact under load, docs/synthesis.md) then asks at
+    least the profile's own turn; the development varies the relief from there.
+    """
+    if exc.least is None or exc.flank not in ("concave", "convex") or \
+            exc.field not in ("tip_relief", "root_relief"):
+        return None
+    try:
+        scale = basic.size_scale()
+    except InputError:
+        return None
+    default = scale * {f.name: f.default for f in fields(FlankOptions)}[exc.field]
+    fo = basic.options.flank(exc.flank)
+    if not math.isclose(getattr(fo, exc.field), default, rel_tol=1e-12, abs_tol=1e-15):
+        return None
+    value = math.ceil(exc.least * RELIEF_PROFILE_MARGIN * 1e4) / 1e4
+    fo = replace(fo, **{exc.field: value})
+    return replace(basic, options=replace(basic.options, **{exc.flank: fo}))
 
 
 def synthesize(basic: BasicDesign, *, conjugate: bool = False,
@@ -565,7 +619,8 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
                                tip_start=fo.tip_relief_start)
     except ReliefError as exc:  # named as the basic file's per-flank input
         raise ReliefError(f"synthesis.{pf}.{exc} ([synthesis] {exc.field} sets both "
-                          "pinion flanks)", exc.field) from None
+                          "pinion flanks)", exc.field, exc.span, least=exc.least,
+                          flank=pf) from None
     return replace(fs, tools=tools._replace(blade=blade))
 
 
