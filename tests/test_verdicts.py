@@ -286,6 +286,22 @@ def test_a_duty_cycle_says_its_plastic_edges():
     assert [f.check for f in verdict(above).findings] == ["implausible"]
 
 
+def test_a_duty_cycle_says_its_lte_above_the_limit():
+    """A bin whose LTE peak-to-peak exceeds the 60 µrad limit is an ``lte`` attention of the
+    duty cycle, with the bins and the largest (the spiral bevel 18x27 of issue 71's unseen
+    designs, round 10: 67/93/105 µrad in its three top bins, a duty verdict silent on it;
+    ``ltca run`` said 80 µrad at the design torque). Never a FAIL here (the bins carry the
+    deflection table's misalignment; ``ltca run`` judges the design's own LTE)."""
+    assert "lte" not in [f.check for f in verdict(_duty()).findings]
+    quiet = _duty().assign(lte_peak_to_peak=("bin", [38.0, 60.0]))
+    assert "lte" in verdict(quiet).checks and not verdict(quiet).findings
+    loud = _duty().assign(lte_peak_to_peak=("bin", [67.3, 150.0]))
+    (f,) = [f for f in verdict(loud).findings if f.check == "lte"]
+    assert f.severity == "attention" and verdict(loud).severity == "attention"
+    assert f.reason.startswith("LTE peak-to-peak above 60 µrad in 2 of 2 bins (0, 1), up to "
+                               "150 µrad (bin 1, 500 N·m)")
+
+
 def test_a_duty_cycle_lte_spread_says_its_numbers():
     """The LTE-spread cause (bit 2) of a bin is said with the bin's torque, LTE p-p, its
     ratio to the mean (96/180 = 0.53, above plausibility's 0.5) and the edge share, so that

@@ -817,6 +817,26 @@ def _duty_plastic(ds: xr.Dataset) -> list[Finding]:
                     "running")]
 
 
+def _duty_lte(ds: xr.Dataset, limit: float = LTE_LIMIT) -> list[Finding]:
+    """The duty cycle's ``lte`` check: the bins whose LTE peak-to-peak exceeds ``limit``
+    [µrad], an attention (the bins carry the deflection table's misalignment; ``ltca run``
+    judges the design's own LTE, a FAIL beyond :data:`LTE_FAIL_FACTOR` × the limit). A
+    spiral bevel 18x27 of benchmarks/data/unseen_designs had 67-105 µrad in its three top
+    bins and a duty verdict silent on it (issue 71)."""
+    pp = np.asarray(ds["lte_peak_to_peak"].values, float)
+    bad = np.flatnonzero(np.isfinite(pp) & (pp > limit))
+    if not bad.size:
+        return []
+    i = int(bad[np.argmax(pp[bad])])
+    return [Finding("attention", "lte",
+                    f"LTE peak-to-peak above {limit:g} µrad in {bad.size} of {pp.size} bins "
+                    f"({', '.join(str(b) for b in bad)}), up to "
+                    f"{shown_above(float(pp[i]), limit)} µrad (bin {i}, "
+                    f"{_t(float(ds['torque'].values[i]))}): a source of gear whine where the "
+                    "drive dwells (the bins' misalignment from the deflection table; `ltca "
+                    "run` judges the design's own LTE)")]
+
+
 def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
     findings: list[Finding] = []
     checks = ["damage", "safety", "implausible", "static", "edge_contact", "plastic_edges",
@@ -875,6 +895,9 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                 f"{_t(float(ds['torque'].values[i]))}); its pressure is not counted as "
                 "pitting damage"))
     findings += _duty_plastic(ds)
+    if "lte_peak_to_peak" in ds and "torque" in ds:
+        checks.append("lte")
+        findings += _duty_lte(ds)
     if "certified" in ds:
         bad = np.flatnonzero(np.asarray(ds["certified"].values).reshape(ds.sizes["bin"], -1)
                              .min(axis=1) == 0)
@@ -983,7 +1006,7 @@ CHECKS: Mapping[str, tuple[str, ...]] = {
                  "certification", "lte", "friction_extrapolated", "scuffing", "micropitting",
                  "rating", "root_stress", "scuffing_standard"),
     "duty cycle": ("damage", "safety", "implausible", "static", "edge_contact",
-                   "plastic_edges", "certification", "bending", "illustrative"),
+                   "plastic_edges", "certification", "bending", "illustrative", "lte"),
     "V-H check": ("degenerate", "target", "map"),
 }
 
