@@ -1146,6 +1146,35 @@ def test_the_check_lengthens_a_generated_gears_short_bearing_along_the_profile(m
     assert got.values == {"path_angle": -80.0, "ellipse_length": 0.4}
 
 
+def test_the_check_lengthens_a_short_formate_bearing_whose_path_is_at_its_bound(
+        monkeypatch):
+    """A Formate design whose checked light-load pattern is too short with its path at the
+    bound already (−80°): PATH_STEPS cannot turn it, so each step lengthens the ellipse by
+    its amount (0.05, then 0.1), the best kept (the face-hobbed 5x45 of unseen round 10
+    tried nothing: path −80°, ellipse 0.625, pattern 0.35 long). Stand-in analyses:
+    length = ellipse − 0.28 (the test is the decisions)."""
+    from contact.optimize import development as dev
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        n = case["ellipse_length"] - 0.28
+        return (_metrics(pattern_toe_u=[0.45 - n / 2, 0.1], pattern_heel_u=[0.45 + n / 2, 0.9]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    targets, setup = DevelopmentTargets(), {"torques": [4.6, 30.8], "centre_v": 0.6}
+    values = {"path_angle": -80.0, "ellipse_length": 0.625}  # 0.345 long
+    start = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
+    assert start.full[1]["length"] > 0.0
+    lines = []
+    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    # 0.675: 0.395 long, still short but better; 0.725: 0.445, every target met
+    assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
+            for s in lines] == [("-80", "0.675"), ("-80", "0.725")]
+    assert got.values == {"path_angle": -80.0, "ellipse_length": pytest.approx(0.725)}
+    assert got.met and got.stage == "path"
+
+
 def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
     """At the check, a light-load footprint centre above its tolerance with the design
     torque's edge share at most half its limit gets designs with 0.8, 2/3, 1/2 of the tip
