@@ -296,6 +296,13 @@ def test_synthesizes_note_gives_the_developed_lte_in_numbers():
     assert text == ("the developed bearing's LTE p-p: drive 28/50 urad at 28.8/192 N m, "
                     "coast 67/62 urad at 28.8/119 N m (light/design), the development's "
                     "target 40 urad missed, above the verdict's 60 urad")
+    # one flank within the target, the other not: said which (a face-hobbed 8x37 of
+    # unseen round 10 read "drive 10/20, coast 42/50 ..., target 40 urad missed")
+    dev.best.metrics["lte_peak_to_peak"] = np.array([10.0, 19.7])
+    dev.coast = {"lte_peak_to_peak": np.array([42.0, 50.0])}
+    assert low_overlap_lte(dev).endswith("coast 42/50 urad at 28.8/119 N m (light/design), "
+                                         "the development's target 40 urad met on the "
+                                         "drive flank, missed on the coast")
     dev.coast = None
     dev.best.metrics["lte_peak_to_peak"] = np.array([30.0, 38.0])
     assert low_overlap_lte(dev).endswith("drive 30/38 urad at 28.8/192 N m (light/design), "
