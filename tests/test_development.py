@@ -1173,6 +1173,15 @@ def test_the_check_lengthens_a_short_formate_bearing_whose_path_is_at_its_bound(
             for s in lines] == [("-80", "0.675"), ("-80", "0.725")]
     assert got.values == {"path_angle": -80.0, "ellipse_length": pytest.approx(0.725)}
     assert got.met and got.stage == "path"
+    # the path 14.4° from its bound: the first step turns it to -80° (clipped), the
+    # second, clipped to the same path, lengthens the ellipse by 0.1 instead
+    lines.clear()
+    values = {"path_angle": -65.6, "ellipse_length": 0.625}
+    start = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
+    got = dcheck._checked_path(start, targets, setup, None, lines.append, lambda v: dict(v))
+    assert [re.search(r"path_angle ([-\d.]+), ellipse_length ([\d.]+)", s).groups()
+            for s in lines] == [("-80", "0.625"), ("-80", "0.725")]
+    assert got.values == {"path_angle": -80.0, "ellipse_length": pytest.approx(0.725)}
 
 
 def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):

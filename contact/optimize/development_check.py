@@ -1476,10 +1476,11 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     0.44 gives 0.35–0.78, 32 / 58 µrad and stays clear of toe and heel at every
     excursion (docs/synthesis.md, "Why the pattern is short and the LTE high"). Formate
     designs keep :data:`PATH_STEPS` (their developed
-    cases unchanged); where their pattern is too short and the path already at its bound
-    (no turn left), each step lengthens the ellipse by the step's amount instead (a
-    face-hobbed hypoid 5x45 at a 50 mm offset, benchmarks/data/unseen_designs: path −80°,
-    ellipse 0.625, pattern 0.35 long at 4.6 N m, where nothing was tried)."""
+    cases unchanged); where their pattern is too short and no turn is left (the path at
+    its bound already, or the step's turn clipped to a path tried), the step lengthens the
+    ellipse by its amount instead (a face-hobbed hypoid 5x45 at a 50 mm offset,
+    benchmarks/data/unseen_designs: −65.6° → −80°, ellipse 0.625, pattern 0.35 long at
+    4.6 N m, where nothing more was tried)."""
     names = ("path_angle", "ellipse_length")
     if (best.full is None or not best.checked
             or not all(n in targets.variables and n in best.values for n in names)):
@@ -1506,12 +1507,14 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                   else -shorter if short["length"] == 0.0 and length - shorter <= longest
                   else 0.0)
         path = float(np.clip(base.values["path_angle"] + turn, p_lo, p_hi))
-        if (not lengthen and path == base.values["path_angle"] and short["length"] > 0.0
-                and length < targets.pattern_length):
-            # a Formate design's pattern too short with its path at the bound already:
-            # no turn is left, the ellipse lengthened by as much (less lengthwise
-            # crowning) — the face-hobbed 5x45 of unseen round 10 (path −80°, ellipse
-            # 0.625: pattern 0.35 long at its light torque) tried nothing here
+        if (not lengthen and short["length"] > 0.0 and length < targets.pattern_length
+                and (path == base.values["path_angle"]
+                     or any(t["path_angle"] == path for t in tried))):
+            # a Formate design's pattern too short with no turn left (the path at its
+            # bound already, or the turn clipped to a path tried): the ellipse lengthened
+            # by as much instead (less lengthwise crowning) — the face-hobbed 5x45 of
+            # unseen round 10 (−65.6° → −80°, ellipse 0.625: pattern 0.35 long at its
+            # light torque 4.6 N m) tried nothing more
             change = -shorter
             log.info("check: the pattern %.3g long with the path at its bound %.3g deg: "
                      "the ellipse %.3g longer", length, path, change)
