@@ -57,7 +57,7 @@ from contact.compliance.shell_tooth import (
     Theory,
 )
 from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
-from geometry.core.caches import Same, memoised
+from geometry.core.caches import Same, memoised, row_keys
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, positive, real_array
 from geometry.machine.meshing import warm_seeds_active
@@ -761,7 +761,7 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
     rows = [ends.reshape(n_pts, 4)] + ([] if nrm is None else [nrm])
     rows = np.ascontiguousarray(np.concatenate(rows, axis=1), dtype=float)
     tag = ng.to_bytes(2, "little") + (b"n" if nrm is not None else b"-")
-    keys = _row_keys(rows, tag)
+    keys = row_keys(rows, tag)
     store = _half_vector_store(Same(model))
     with store.lock:  # (an analysis per thread: one at a time per model)
         kept = store.columns
@@ -780,19 +780,14 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
                 y[:, miss] = new
                 kept.update(zip([keys[i] for i in miss], new.T, strict=True))
             missed = set(miss)
-            hit = [i for i in range(n_pts) if i not in missed]
-            y[:, hit] = np.stack([kept[keys[i]] for i in hit], axis=1)
+            yt = y.T  # (C order): a kept column is one contiguous row of it
+            for i in range(n_pts):  # (a row at a time: ~4× faster than np.stack's)
+                if i not in missed:
+                    yt[i] = kept[keys[i]]
         if len(kept) > HALF_VECTORS_KEPT:  # the oldest first, in one pass
             for k in list(itertools.islice(kept, len(kept) - HALF_VECTORS_KEPT)):
                 del kept[k]
     return y
-
-
-def _row_keys(rows: np.ndarray, tag: bytes) -> list[bytes]:
-    """Each row of a C-ordered 2-D array as ``tag`` + its bytes (a memo key per row)."""
-    raw = rows.tobytes()
-    width = rows.shape[1] * rows.itemsize
-    return [tag + raw[i:i + width] for i in range(0, len(raw), width)]
 
 
 def _half_vectors_of(model: ShellModel, ends: np.ndarray, normals: np.ndarray | None,

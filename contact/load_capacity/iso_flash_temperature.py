@@ -118,7 +118,7 @@ from contact.load_capacity.flash_temperature import (
 from contact.load_capacity.micropitting import GAUSSIAN_RA_PER_RQ
 from friction.lubricant import load_lubricant, viscosity
 from geometry import __version__
-from geometry.core.conventions import data_var
+from geometry.core.conventions import data_var, dataset
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import material
 from geometry.core.renamed import renamed_keywords
@@ -405,7 +405,7 @@ def _rating_value(rating: xr.Dataset, name: str) -> np.ndarray:
     if name not in rating:
         raise InputError(f"rating: the dataset has no {name!r} (an ISO 10300 /rating group, "
                          "contact.load_capacity.iso10300, is needed)")
-    return np.asarray(rating[name].values, dtype=float)
+    return np.asarray(rating.variables[name].values, dtype=float)
 
 
 @renamed_keywords(oil_temperature="temperature")
@@ -761,11 +761,11 @@ def iso_flash_temperature_variants(
                                     {"units": "1", "long_name": "largest scuffing safety "
                                      "factor S_B of the uncertain constants", "comment": note})
     attrs = {k: v for k, v in attrs0.items() if k not in ("method", "lengthwise_sliding")}
-    return xr.Dataset(data, coords={
+    return dataset(data, {
         **coords,
         "variant": ("variant", list(VARIANTS), {"long_name": "variant of the flash "
                                                 "temperature method"}),
-        "method": ("variant", methods, {"long_name": "what the variant is"})}, attrs={
+        "method": ("variant", methods, {"long_name": "what the variant is"})}, {
         **attrs,
         "method": "; ".join(f"{k}: {m}" for k, m in zip(VARIANTS, methods, strict=True)),
         "friction_form": "iso", "viscosity_in_scuffing_temperature": 0})
