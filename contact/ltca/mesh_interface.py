@@ -216,9 +216,14 @@ def condensed_stiffness(problem: ContactProblem, solution: ContactSolution) -> f
         return math.nan
     C = np.asarray(problem.compliance, float)[np.ix_(active, active)]
     R = np.asarray(problem.moment_arm, float)[active]
-    try:
-        x = scipy.linalg.cho_solve(scipy.linalg.cho_factor(C), R)
-    except np.linalg.LinAlgError:
+    # LAPACK's Cholesky and its solve as scipy.linalg.cho_factor / cho_solve call them
+    # (the same numbers), without their checks of inputs the problem checked when it was
+    # made (finite, square): a third of this function's time at every roll (issue 75)
+    potrf, potrs = scipy.linalg.get_lapack_funcs(("potrf", "potrs"), (C,))
+    c, info = potrf(C, lower=False, clean=False)
+    if info == 0:
+        x, info = potrs(c, R, lower=False)
+    if info != 0:  # not positive definite on the active set (cho_factor's LinAlgError)
         x = np.linalg.lstsq(C, R, rcond=None)[0]
     return float(R @ x)
 

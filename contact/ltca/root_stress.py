@@ -528,25 +528,28 @@ class RootLayout(NamedTuple):
     coefficients S[a, d] at the P root points alone, component-major (Voigt order), the
     points ordered by face station, then side and fillet arc; station : (P,) int — each
     point's face station; starts : (M,) int — where each of the M stations with root points
-    begins among the P; has_root : (station,) bool — the stations with root points.
+    begins among the P; has_root : (station,) bool — the stations with root points;
+    slot : (P,) int — each point's station among the M.
     """
 
     stress: np.ndarray
     station: np.ndarray
     starts: np.ndarray
     has_root: np.ndarray
+    slot: np.ndarray
 
 
-def _layout_of(root: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """(order, station, starts, has_root) of root points ``root`` (side, station, arc):
-    ``order`` the flat (side, station, arc) indices of the root points ordered by station,
-    then side and arc (:class:`RootLayout`)."""
+def _layout_of(root: np.ndarray) -> tuple[np.ndarray, ...]:
+    """(order, station, starts, has_root, slot) of root points ``root`` (side, station,
+    arc): ``order`` the flat (side, station, arc) indices of the root points ordered by
+    station, then side and arc; the others as in :class:`RootLayout`."""
     by_station = np.moveaxis(root, 1, 0)  # (station, side, arc)
     st, side, arc = np.nonzero(by_station)
     order = np.ravel_multi_index((side, st, arc), root.shape)
     has_root = by_station.any(axis=(1, 2))
     starts = np.searchsorted(st, np.flatnonzero(has_root))
-    return order, st, starts, has_root
+    slot = np.searchsorted(starts, np.arange(st.size), side="right") - 1
+    return order, st, starts, has_root, slot
 
 
 @memoised(maxsize=4)
@@ -560,12 +563,12 @@ def _root_layout(coef: Same) -> RootLayout:
     ds = coef.obj
     s = ds.variables["fillet_stress"].transpose("load_u", "load_v", "tooth", "side",
                                                 "station", "arc", "component").values
-    order, station, starts, has_root = _layout_of(root_points(ds))
+    order, station, starts, has_root, slot = _layout_of(root_points(ds))
     rows = s.shape[0] * s.shape[1] * s.shape[2]  # (load_u, load_v, tooth)
     stress = s.reshape(rows, -1, 6)[:, order, :]  # (row, root point, component)
     stress = np.ascontiguousarray(stress.transpose(0, 2, 1)).reshape(rows, -1)
     stress.flags.writeable = False
-    return RootLayout(stress, station, starts, has_root)
+    return RootLayout(stress, station, starts, has_root, slot)
 
 
 def _root_peak(t: np.ndarray, root: np.ndarray) -> np.ndarray:
@@ -573,9 +576,9 @@ def _root_peak(t: np.ndarray, root: np.ndarray) -> np.ndarray:
     fillet arc of stresses ``t`` (R, side, station, arc, 6) in Voigt order, over the root
     points ``root`` (side, station, arc) alone; −inf at a station without root points
     (:func:`_root_peak_of` on the root points' stresses)."""
-    order, station, starts, has_root = _layout_of(root)
+    order, *layout = _layout_of(root)
     flat = t.reshape(t.shape[0], -1, 6)[:, order, :].transpose(0, 2, 1)
-    return _root_peak_of(flat, RootLayout(np.empty((0, 0)), station, starts, has_root))
+    return _root_peak_of(flat, RootLayout(np.empty((0, 0)), *layout))
 
 
 def _root_peak_of(t: np.ndarray, lay: RootLayout) -> np.ndarray:
@@ -597,8 +600,7 @@ def _root_peak_of(t: np.ndarray, lay: RootLayout) -> np.ndarray:
     out = np.full((t.shape[0], lay.has_root.size), -np.inf)
     if not lay.station.size:
         return out
-    low = np.maximum.reduceat(q + p, lay.starts, axis=1)[:, np.searchsorted(
-        lay.starts, np.arange(lay.station.size), side="right") - 1]
+    low = np.maximum.reduceat(q + p, lay.starts, axis=1)[:, lay.slot]
     high = q + 2.0 * p
     cand = high + 1e-9 * (np.abs(high) + np.abs(low)) >= low
     peak = np.full(q.shape, -np.inf)
