@@ -68,7 +68,7 @@ from friction.lubricant import (
 )
 from friction.operating import OperatingConditions
 from friction.rolling import rolling_traction
-from geometry.core.conventions import binary_flag, data_var
+from geometry.core.conventions import binary_flag, coords_along, data_var, dataset
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL, contact_modulus
 
@@ -664,7 +664,7 @@ def _friction_dataset(
             "each flank's speed across the contact line (through the Hertzian band: the "
             "speeds of Blok's flash temperature)"),
     }
-    coords = {k: ltca.coords[k] for k in ("torque", "roll", "pair", "segment")}
+    coords = coords_along(ltca, ("torque", "roll", "pair", "segment"))
     coords["member"] = ("member", ["pinion", "gear"], {"long_name": "gear pair member"})
     attrs = {
         "title": "mechanical power loss and efficiency",
@@ -684,7 +684,7 @@ def _friction_dataset(
     if used is not None:
         # the μ_b [1] of the asperity junctions the model ran with, at the inlet temperature
         attrs["boundary_friction"], attrs["boundary_friction_source"] = used
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+    return dataset(data, coords, attrs)
 
 
 #: The inputs whose spans :func:`_range_by_contact` reports: name → (symbol, units, digits).

@@ -14,7 +14,7 @@ import pytest
 import xarray as xr
 
 from geometry.core.caches import row_keys
-from geometry.core.conventions import data_var, dataset
+from geometry.core.conventions import coords_along, data_var, dataset
 
 
 def _same(a: xr.Dataset, b: xr.Dataset) -> None:
@@ -73,6 +73,28 @@ def test_dataset_leaves_what_it_does_not_take_to_xarray():
         dataset({"a": ("roll", [1.0, 2.0]), "b": ("roll", [1.0, 2.0, 3.0])})
     with pytest.raises(ValueError):
         xr.Dataset({"a": ("roll", [1.0, 2.0]), "b": ("roll", [1.0, 2.0, 3.0])})
+
+
+def test_coords_along_brings_what_xarrays_dataarray_coordinates_bring():
+    """``coords_along(ds, dims)`` as the coordinates of a new Dataset gives the Dataset
+    that ``{d: ds.coords[d]}`` gives: each dimension coordinate with the coordinates along
+    it alone (``gear_torque`` with ``torque``), in xarray's order; with a scalar
+    coordinate it hands over the DataArrays themselves."""
+    src = xr.Dataset({"force": (("torque", "roll", "segment"), np.ones((2, 3, 4)))}, coords={
+        "torque": ("torque", [50.0, 250.0], {"units": "N m"}),
+        "gear_torque": ("torque", [150.0, 750.0]),
+        "roll": ("roll", np.linspace(0, 1, 3)), "mesh_cycle": ("roll", [0.0, 0.5, 1.0]),
+        "segment": ("segment", np.arange(4)),
+        "segment_kind": ("segment", np.array(["curve", "curve", "gear_tip", "curve"])),
+        "grid": (("roll", "segment"), np.zeros((3, 4)))})
+    dims = ("torque", "roll", "segment")
+    data = {"loss": data_var(("torque", "roll"), np.zeros((2, 3)), "W", "loss")}
+    want = xr.Dataset(data, coords={d: src.coords[d] for d in dims})
+    _same(dataset(data, coords_along(src, dims)), want)
+    scalar = src.assign_coords(step=2.0)
+    got = coords_along(scalar, dims)
+    assert all(isinstance(v, xr.DataArray) for v in got.values())
+    _same(dataset(data, got), xr.Dataset(data, coords={d: scalar.coords[d] for d in dims}))
 
 
 def test_row_keys_are_the_rows_bytes():

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["binary_flag", "data_var", "dataset"]
+__all__ = ["binary_flag", "coords_along", "data_var", "dataset"]
 
 
 def data_var(dims, data, units: str | None, long_name: str, **attrs: Any) -> tuple:
@@ -155,3 +155,34 @@ def _direct_dataset(xr, data: Mapping, coords: Mapping, attrs: Mapping | None):
         return None  # a variable named as a dimension but not along it alone
     return construct(variables, set(coord_vars), sizes, dict(attrs) if attrs else None,
                      indexes=indexes)
+
+
+def coords_along(ds, dims) -> dict[str, tuple]:
+    """The coordinates that ``{d: ds.coords[d] for d in dims}`` brings into a new Dataset,
+    as :func:`dataset`'s tuples, in the order xarray puts them: each dimension coordinate
+    ``d`` followed by the other coordinates of ``ds`` along ``d`` alone (a DataArray
+    coordinate carries them: ``gear_torque`` with ``torque``, ``segment_kind`` with
+    ``segment``).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset — the dataset whose coordinates are taken (``/ltca``)
+    dims : iterable of str — its dimension coordinates to take
+
+    Returns
+    -------
+    dict of str to tuple — ``(dims, values, attrs)`` per coordinate; where ``ds`` has a
+        scalar coordinate (which every one of them would carry), the DataArrays themselves
+        (:func:`dataset` then leaves them to xarray)
+    """
+    dims = list(dims)
+    names = [name for name in ds.coords]
+    if any(ds.variables[name].ndim == 0 for name in names):
+        return {d: ds.coords[d] for d in dims}
+    out: dict[str, tuple] = {}
+    for d in dims:
+        for name in [d] + [n for n in names if n != d and n not in dims]:
+            var = ds.variables[name]
+            if var.dims == (d,) and name not in out:
+                out[name] = (var.dims, var.values, var.attrs)
+    return out
