@@ -239,9 +239,9 @@ def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str,
     """
     if "contact_point" not in ltca.variables:
         raise InputError("ltca: lacks contact_point (not an /ltca dataset)")
-    p = ltca["contact_point"].transpose("roll", "pair", "segment", "xyz").values
-    rp, rg = _roll_rotations(easeoff, np.asarray(ltca["roll"].values, float),
-                             np.asarray(ltca["pair"].values, int))
+    p = ltca.variables["contact_point"].transpose("roll", "pair", "segment", "xyz").values
+    rp, rg = _roll_rotations(easeoff, np.asarray(ltca.variables["roll"].values, float),
+                             np.asarray(ltca.variables["pair"].values, int))
     out = {}
     for name, t in zip(MEMBERS, case_transforms(case, rp, rg), strict=True):
         rot, shift = t[:, :3, :3], t[:, :3, 3]
@@ -251,7 +251,7 @@ def member_contact_points(case, easeoff: EaseOff, ltca: xr.Dataset) -> dict[str,
     edge = _pinion_edges(ltca)
     if edge is not None and edge.any():
         # (the pinion edges' segments alone: the same points, a fraction of the work)
-        g = ltca["segment_position"].transpose("roll", "pair", "segment", "xyz").values
+        g = ltca.variables["segment_position"].transpose("roll", "pair", "segment", "xyz").values
         e = np.flatnonzero(edge)
         gear = out["gear"]  # (made above: this function's own array)
         gear[:, :, e] = _onto_tooth(g[:, :, e], gear[:, :, e],
@@ -264,7 +264,7 @@ def _pinion_edges(ltca: xr.Dataset) -> np.ndarray | None:
     dataset does not say (no ``segment_kind`` or ``segment_position``)."""
     if "segment_kind" not in ltca.variables or "segment_position" not in ltca.variables:
         return None
-    return np.asarray(ltca["segment_kind"].values).astype(str) == "pinion_edge"
+    return np.asarray(ltca.variables["segment_kind"].values).astype(str) == "pinion_edge"
 
 
 def _onto_tooth(ref: np.ndarray, near: np.ndarray, pitch: float) -> np.ndarray:
@@ -338,7 +338,7 @@ class Unplaced(NamedTuple):
 def _grid_excess(coef: xr.Dataset, u: np.ndarray, v: np.ndarray) -> np.ndarray:
     """[1] how far points at fractions (u, v) lie outside the coefficients' load grid (the
     larger of the face and the profile excess; 0 inside)."""
-    gu, gv = coef["u"].values, coef["v"].values
+    gu, gv = coef.variables["u"].values, coef.variables["v"].values
     return np.maximum.reduce([gu[0] - u, u - gu[-1], gv[0] - v, v - gv[-1],
                               np.zeros_like(u)])
 
@@ -384,7 +384,7 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
     # the variable, not a DataArray: its many coordinates cost more than the transpose
     s = coef.variables["fillet_stress"].transpose("load_u", "load_v", "tooth", "side",
                                                   "station", "arc", "component")
-    offsets = np.asarray(coef["tooth"].values, int)
+    offsets = np.asarray(coef.variables["tooth"].values, int)
     nl = s.sizes["load_u"] * s.sizes["load_v"]
     # every segment point located once, for the pairs' teeth and the loads of all torques
     finite = np.all(np.isfinite(pts), axis=-1)  # (J, K, S)
@@ -693,10 +693,10 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
                              cache_dir=cache_dir, progress=progress, solver=solver)
     t1 = time.perf_counter()
     pts = member_contact_points(case, easeoff, ltca)
-    force = ltca["force"].transpose("torque", "roll", "pair", "segment").values
-    pairs = np.asarray(ltca["pair"].values, int)
-    kinds = ltca["segment_kind"].values if "segment_kind" in ltca.variables else None
-    torques = np.asarray(ltca["torque"].values, float)
+    force = ltca.variables["force"].transpose("torque", "roll", "pair", "segment").values
+    pairs = np.asarray(ltca.variables["pair"].values, int)
+    kinds = ltca.variables["segment_kind"].values if "segment_kind" in ltca.variables else None
+    torques = np.asarray(ltca.variables["torque"].values, float)
     parts, notes, left = [], [], []
     for m in MEMBERS:
         st, unplaced = _member_stress(coef[m], pts[m], force, pairs, kinds)
@@ -731,7 +731,7 @@ def root_stress(case, easeoff: EaseOff, ltca: xr.Dataset,
         "fillet_point": ("fillet_point", np.arange(n_st.pop()),
                          {"units": "1", "long_name": "root fillet face station index"}),
         "fillet_u": (("member", "fillet_point"),
-                     np.stack([coef[m]["station"].values for m in MEMBERS]),
+                     np.stack([coef[m].variables["station"].values for m in MEMBERS]),
                      {"units": "1", "long_name": "lengthwise fraction of the fillet face "
                                                  "station (toe 0, heel 1)"}),
     })
