@@ -296,7 +296,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
                             "mesh_period_rad") if k not in ltca.attrs]
     if missing:
         raise InputError(f"ltca: not an /ltca dataset, lacks {', '.join(missing)}")
-    torques = ltca["torque"].values.astype(float)
+    torques = ltca.variables["torque"].values.astype(float)
     NT, J = ltca.sizes["torque"], ltca.sizes["roll"]
     index = {float(t): i for i, t in enumerate(torques)}
     k_theta = np.full((NT, J), np.nan)
@@ -314,10 +314,10 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
         k_theta[it, rp.roll] = done[key]
     ag, og = (np.asarray(ltca.attrs[k], float) for k in ("gear_axis", "gear_origin_mm"))
     ap, op = (np.asarray(ltca.attrs[k], float) for k in ("pinion_axis", "pinion_origin_mm"))
-    force = ltca["force"].values
-    points = ltca["contact_point"].values
-    normals = ltca["contact_normal"].values
-    arms = ltca["moment_arm"].values
+    force = ltca.variables["force"].values
+    points = ltca.variables["contact_point"].values
+    normals = ltca.variables["contact_normal"].values
+    arms = ltca.variables["moment_arm"].values
     # every (torque, roll) reduced at once: a roll's segments flattened, its points,
     # normals and arms the same at every torque
     pts, nrm = points.reshape(J, -1, 3), normals.reshape(J, -1, 3)
@@ -330,7 +330,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     lam_p = np.einsum("trx,x->tr", np.cross(out3["mesh_point"] - op, out3["line_of_action"]),
                       ap)
     k_mesh = k_theta / lam_g**2 * 1e-3  # [N/mm] → [N/µm]
-    lte = ltca["transmission_error"].values.astype(float)
+    lte = ltca.variables["transmission_error"].values.astype(float)
     excitation = lam_g * lte * 1e-3  # [mm]·[µrad] = 1e-6 mm → [µm]: ×1e-3
     opts = _options(ltca)
     cycles = int(opts.get("cycles", 1)) or 1
