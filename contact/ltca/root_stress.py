@@ -281,11 +281,19 @@ def _onto_tooth(ref: np.ndarray, near: np.ndarray, pitch: float) -> np.ndarray:
 def _pair_teeth(coef: xr.Dataset, pts: np.ndarray, pairs: np.ndarray) -> np.ndarray:
     """(K,) the member-frame tooth offset of each pair's tooth, from its segments' points
     (J, K, S, 3); pairs without a point continue the neighbours' step."""
-    finite = np.all(np.isfinite(pts), axis=-1)
+    finite = _finite_points(pts)
     tooth = np.empty(0, int)
     if finite.any():  # one location of every pair's points
         tooth = locate_flank_points(coef, pts[finite], strict=False).tooth
     return _teeth_of_pairs(tooth, np.nonzero(finite)[1], pairs)
+
+
+def _finite_points(pts: np.ndarray) -> np.ndarray:
+    """(...) bool: the points (..., 3) whose three coordinates are finite (the same as
+    ``np.all(np.isfinite(pts), axis=-1)``, whose reduction over an axis of three costs ten
+    times as much)."""
+    f = np.isfinite(pts)
+    return f[..., 0] & f[..., 1] & f[..., 2]
 
 
 def _teeth_of_pairs(tooth: np.ndarray, pair_index: np.ndarray,
@@ -387,7 +395,7 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
     offsets = np.asarray(coef.variables["tooth"].values, int)
     nl = s.sizes["load_u"] * s.sizes["load_v"]
     # every segment point located once, for the pairs' teeth and the loads of all torques
-    finite = np.all(np.isfinite(pts), axis=-1)  # (J, K, S)
+    finite = _finite_points(pts)  # (J, K, S)
     point = np.full(finite.shape, -1)
     point[finite] = np.arange(np.count_nonzero(finite))
     fp = locate_flank_points(coef, pts[finite], strict=False) if finite.any() else None
