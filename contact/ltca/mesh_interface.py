@@ -62,7 +62,7 @@ import xarray as xr
 
 from contact.ltca.roll_loop import RollProblem
 from contact.qp import ContactProblem, ContactSolution
-from geometry.core.conventions import data_var
+from geometry.core.conventions import coords_along, data_var, dataset
 from geometry.core.errors import InputError
 
 __all__ = [
@@ -340,7 +340,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     k_amp, k_phase = _harmonics(k_mesh, cycles, n_h)
     tr = ("torque", "roll")
     th = ("torque", "harmonic")
-    ds = xr.Dataset(
+    ds = dataset(
         {
             "mesh_point": data_var((*tr, "xyz"), out3["mesh_point"], "mm",
                                    "effective mesh point: on the resultant's line, nearest "
@@ -395,15 +395,12 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
                                              "mesh stiffness (cosine, from the first roll "
                                              "position)"),
         },
-        coords={
-            "torque": ltca["torque"],
-            "roll": ltca["roll"],
-            "mesh_cycle": ltca["mesh_cycle"],
-            "xyz": ltca["xyz"],
+        {  # (torque and roll with what they carry: gear_torque, mesh_cycle)
+            **coords_along(ltca, ("torque", "roll", "xyz")),
             "harmonic": data_var("harmonic", np.arange(1, n_h + 1, dtype=np.int32), "1",
                                  "mesh harmonic order"),
         },
-        attrs={
+        {
             "title": "mesh interface for dynamic models",
             "case": ltca.attrs.get("case", ""),
             "gear_axis": ag, "gear_origin_mm": og, "pinion_axis": ap, "pinion_origin_mm": op,
