@@ -98,7 +98,7 @@ def dataset(data: Mapping[str, tuple], coords: Mapping[str, tuple] | None = None
     -----
     Uses xarray's ``Dataset._construct_direct`` (its own constructor's last step, there
     since 2019) and the public ``PandasIndex``; where that is missing, xarray's
-    constructor. tests/test_conventions.py compares the two.
+    constructor. tests/test_dataset_helpers.py compares the two.
     """
     import xarray as xr
 
@@ -153,8 +153,11 @@ def _direct_dataset(xr, data: Mapping, coords: Mapping, attrs: Mapping | None):
                 return None
     if any(dim in variables and dim not in indexes for dim in sizes):
         return None  # a variable named as a dimension but not along it alone
-    return construct(variables, set(coord_vars), sizes, dict(attrs) if attrs else None,
-                     indexes=indexes)
+    try:
+        return construct(variables, set(coord_vars), sizes, dict(attrs) if attrs else None,
+                         indexes=indexes)
+    except TypeError:  # another xarray's private signature: its public constructor
+        return None
 
 
 def coords_along(ds, dims) -> dict[str, tuple]:
