@@ -108,8 +108,7 @@ def test_hertz_line_contact_of_checked_inputs_is_the_same_arithmetic():
     """The LTCA's unchecked Hertz line contact gives the checked one's numbers to the bit
     (zero loads included: p0 = 0 there), with the modulus as a float or an array.
     Milliseconds."""
-    from geometry.core.hertz import (contact_modulus, hertz_line_contact,
-                                     hertz_line_contact_of_checked)
+    from geometry.core.hertz import hertz_line_contact_of_checked
 
     rng = np.random.default_rng(5)
     w = np.concatenate([rng.uniform(0.0, 3000.0, 200), [0.0, 1e-300, 5e4]])
