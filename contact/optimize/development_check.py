@@ -23,6 +23,8 @@ LTE the development reached; :func:`checked_near_miss` a drive design that misse
 its light-load centre v and nothing by more than a small margin (:data:`NEAR_MISS`) a small
 blade-angle step with its TE level lowered; :func:`checked_te_back` the TE level of a design
 still missing a target raised back to the flank's own on the bearing the steps ended at.
+The steps keep a design by one rule, :func:`kept_why` (better, no met target lost,
+tolerant).
 :func:`static_capacity` lowers the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
@@ -894,8 +896,8 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
                 continue
             what = f"design {best.index + 1} with profile_crowning {x:.3g} um"
             e = _said_variant(best, dict(best.values) | {CROWNING_NAME: x}, "crowning lte",
-                              f"with {what} (its LTE above {limit:g} urad)", targets, setup,
-                              teeth, say, placed)
+                              f"with profile_crowning {x:.3g} um (its LTE above {limit:g} "
+                              "urad)", targets, setup, teeth, say, placed)
             if e is None:
                 continue
             _tried(setup, "the profile crowning flattened")
