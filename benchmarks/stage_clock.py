@@ -49,13 +49,14 @@ class StageClock:
         CPU time per stage (exclusive of nested stages).
     """
 
-    def __init__(self) -> None:
+    def __init__(self, extra: tuple[tuple[str, str, str], ...] = ()) -> None:
         self.cpu: dict[str, float] = defaultdict(float)
         self._stack: list[list] = []
         self._patches: list[tuple[object, str, object]] = []
+        self._stages = STAGES + tuple(extra)  # finer stages, nested in STAGES' (as they)
 
     def install(self) -> StageClock:
-        """Wrap every function of :data:`STAGES`.
+        """Wrap every function of :data:`STAGES` and the ``extra`` stages given.
 
         Raises
         ------
@@ -64,7 +65,7 @@ class StageClock:
             stage silently left out would read zero (issue 75: four stages did, after the
             steps moved from ``contact.pipeline`` to ``contact.chain``).
         """
-        for module, attr, stage in STAGES:
+        for module, attr, stage in self._stages:
             owner = importlib.import_module(module)
             *path, name = attr.split(".")
             for part in path:

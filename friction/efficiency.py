@@ -68,7 +68,7 @@ from friction.lubricant import (
 )
 from friction.operating import OperatingConditions
 from friction.rolling import rolling_traction
-from geometry.core.conventions import binary_flag, data_var
+from geometry.core.conventions import binary_flag, coords_along, data_var, dataset
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL, contact_modulus
 
@@ -186,7 +186,7 @@ def efficiency_analysis(
     fric = _film_and_friction(seg, oil, e_prime, sigma, op)
     for note in fric.range_warnings:
         log.info("%s", note)
-    losses = _power_losses(seg, fric, ltca["torque"].values, op.pinion_speed)
+    losses = _power_losses(seg, fric, ltca.variables["torque"].values, op.pinion_speed)
     return uncertified_as_nan(_friction_dataset(ltca, seg, fric, losses, op, oil), ltca)
 
 
@@ -215,10 +215,10 @@ def uncertified_as_nan(friction: xr.Dataset, ltca: xr.Dataset) -> xr.Dataset:
     """
     if "found" not in ltca.variables:
         return friction
-    found = np.asarray(ltca["found"].values) > 0
+    found = np.asarray(ltca.variables["found"].values) > 0
     if found.all():
         return friction
-    torques = np.asarray(ltca["torque"].values, float)
+    torques = np.asarray(ltca.variables["torque"].values, float)
     some = ~found.all(axis=1)
     where = ", ".join(f"T_p {t:g} N m ({int((~found[i]).sum())} of {found.shape[1]})"
                       for i, t in enumerate(torques) if some[i])
@@ -396,12 +396,12 @@ def loaded_segments(ltca: xr.Dataset) -> LoadedSegments:
     The segments of the loaded TCA (seed §3.3); b is the Hertz line contact's (Johnson
     1985, Eq. 4.45), as the LTCA's own ``half_width``.
     """
-    F = ltca["force"].values  # (T, J, K, S)
+    F = ltca.variables["force"].values  # (T, J, K, S)
     loaded = np.isfinite(F) & (F > 0)
     shape = F.shape
-    w = ltca["load_per_length"].values[loaded]
-    p = ltca["pressure_max"].values[loaded]
-    kind = ltca["segment_kind"].values if "segment_kind" in ltca else None
+    w = ltca.variables["load_per_length"].values[loaded]
+    p = ltca.variables["pressure_max"].values[loaded]
+    kind = ltca.variables["segment_kind"].values if "segment_kind" in ltca else None
     edge = (np.broadcast_to(kind != "curve", shape)[loaded] if kind is not None
             else np.zeros(w.shape, bool))
     return LoadedSegments(
@@ -409,8 +409,8 @@ def loaded_segments(ltca: xr.Dataset) -> LoadedSegments:
         force=F[loaded],
         load_per_length=w,
         pressure_max=p,
-        length=np.broadcast_to(ltca["segment_length"].values, shape)[loaded],
-        radius=np.broadcast_to(ltca["equivalent_radius"].values, shape)[loaded],
+        length=np.broadcast_to(ltca.variables["segment_length"].values, shape)[loaded],
+        radius=np.broadcast_to(ltca.variables["equivalent_radius"].values, shape)[loaded],
         # b = 2w/(π p_max) (hertz_half_width, without its checks: a NaN stays NaN here)
         half_width=_half_width(w, p),
         edge=edge,
@@ -427,9 +427,9 @@ def _loaded_segments(ltca: xr.Dataset, pinion_speed: float) -> _Segments:
     seg = loaded_segments(ltca)
     loaded = seg.loaded
     shape = loaded.shape
-    pts = np.broadcast_to(ltca["contact_point"].values, (*shape, 3))
-    nrm = np.broadcast_to(ltca["contact_normal"].values, (*shape, 3))
-    tan = np.broadcast_to(ltca["contact_tangent"].values, (*shape, 3))
+    pts = np.broadcast_to(ltca.variables["contact_point"].values, (*shape, 3))
+    nrm = np.broadcast_to(ltca.variables["contact_normal"].values, (*shape, 3))
+    tan = np.broadcast_to(ltca.variables["contact_tangent"].values, (*shape, 3))
     kin = surface_velocities(
         pts[loaded],
         nrm[loaded],
@@ -664,7 +664,7 @@ def _friction_dataset(
             "each flank's speed across the contact line (through the Hertzian band: the "
             "speeds of Blok's flash temperature)"),
     }
-    coords = {k: ltca.coords[k] for k in ("torque", "roll", "pair", "segment")}
+    coords = coords_along(ltca, ("torque", "roll", "pair", "segment"))
     coords["member"] = ("member", ["pinion", "gear"], {"long_name": "gear pair member"})
     attrs = {
         "title": "mechanical power loss and efficiency",
@@ -684,7 +684,7 @@ def _friction_dataset(
     if used is not None:
         # the μ_b [1] of the asperity junctions the model ran with, at the inlet temperature
         attrs["boundary_friction"], attrs["boundary_friction_source"] = used
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+    return dataset(data, coords, attrs)
 
 
 #: The inputs whose spans :func:`_range_by_contact` reports: name → (symbol, units, digits).
@@ -701,7 +701,7 @@ def _range_by_contact(ltca: xr.Dataset, seg: _Segments, fric: _Friction) -> dict
     (min, max) of p_h [MPa], R_eq [mm], λ, the total slide-to-roll ratio abs(V_s)/V_r [1]
     and u_e [m/s] over the flagged ones: what lies outside the model's range, and where
     (the flag says why)."""
-    kind = ltca["segment_kind"].values if "segment_kind" in ltca else None
+    kind = ltca.variables["segment_kind"].values if "segment_kind" in ltca else None
     is_edge = (np.broadcast_to(kind != "curve", seg.loaded.shape)[seg.loaded]
                if kind is not None else np.zeros(seg.force.shape, bool))
     total = float(np.sum(seg.force)) or 1.0

@@ -102,3 +102,20 @@ def test_deprecated_friction_wrappers_agree_and_warn():
                                    rtol=1e-15)
     with pytest.warns(DeprecationWarning, match=r"hertz_line_contact\(w, R, E\*\)\.half_width"):
         half_width(1.0, 1.0, e_prime)
+
+
+def test_hertz_line_contact_of_checked_inputs_is_the_same_arithmetic():
+    """The LTCA's unchecked Hertz line contact gives the checked one's numbers to the bit
+    (zero loads included: p0 = 0 there), with the modulus as a float or an array.
+    Milliseconds."""
+    from geometry.core.hertz import hertz_line_contact_of_checked
+
+    rng = np.random.default_rng(5)
+    w = np.concatenate([rng.uniform(0.0, 3000.0, 200), [0.0, 1e-300, 5e4]])
+    r = rng.uniform(0.5, 80.0, w.size)
+    e = contact_modulus(210e3, 0.3, 206e3, 0.29)
+    ref = hertz_line_contact(w, r, e)
+    for modulus in (float(e), np.full(w.size, e)):
+        got = hertz_line_contact_of_checked(w, r, modulus)
+        assert np.array_equal(got.half_width, ref.half_width)
+        assert np.array_equal(got.peak_pressure, ref.peak_pressure)

@@ -51,7 +51,7 @@ from contact.compliance.tooth import (
 )
 from contact.compliance.weber import weber_compliance
 from geometry.case import TeethKey
-from geometry.core.caches import Same, memoised
+from geometry.core.caches import Same, memoised, row_keys
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
@@ -612,14 +612,6 @@ def _point_store(data: Same) -> _PointStore:
     return _PointStore()
 
 
-def _row_keys(rows: np.ndarray, tag: bytes) -> list[bytes]:
-    """Each row of a 2-D float array as ``tag`` + its bytes (a memo key per row)."""
-    rows = np.ascontiguousarray(rows, dtype=float)
-    raw = rows.tobytes()
-    width = rows.shape[1] * rows.itemsize
-    return [tag + raw[i:i + width] for i in range(0, len(raw), width)]
-
-
 def _missing(kept: dict, keys: list[bytes]) -> list[int]:
     """The indices of the ``keys`` not in ``kept``."""
     return np.flatnonzero(~np.fromiter(map(kept.__contains__, keys), dtype=bool,
@@ -648,8 +640,8 @@ def _kept_mapping_held(jobs: list, stores: list[_PointStore]) -> list[list[Shell
     """:func:`_kept_mapping` with the jobs' stores (their locks held)."""
     keys, todo = [], []
     for (_, mid, nrm, _, ends), store in zip(jobs, stores, strict=True):
-        k_mid = _row_keys(np.concatenate([mid, nrm], axis=1), b"m")
-        k_end = _row_keys(ends, b"e")
+        k_mid = row_keys(np.concatenate([mid, nrm], axis=1), b"m")
+        k_end = row_keys(ends, b"e")
         todo.append((_missing(store.rows, k_mid), _missing(store.rows, k_end)))
         keys.append((k_mid, k_end))
     run = [i for i, (mm, me) in enumerate(todo) if mm or me]

@@ -57,7 +57,7 @@ from contact.compliance.shell_tooth import (
     Theory,
 )
 from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
-from geometry.core.caches import Same, memoised
+from geometry.core.caches import Same, memoised, row_keys
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, positive, real_array
 from geometry.machine.meshing import warm_seeds_active
@@ -722,15 +722,36 @@ HALF_VECTORS_KEPT = 4096
 
 
 class _ColumnStore:
-    """The columns of Y kept for one shell model (:func:`_half_vector_store`): ``columns``
-    maps a segment's key to its column (read-only), ``lock`` serialises the threads that
-    use it."""
+    """The columns of Y kept for one shell model (:func:`_half_vector_store`): ``rows``
+    maps a segment's key to its column's place, ``batch << 32 | row``, in ``batches``
+    (serial → the (N, n_dof) C-ordered, read-only Yᵀ of one product), so that the columns
+    of a call are gathered a batch at a time, not one by one; ``lock`` serialises the
+    threads that use it."""
 
-    __slots__ = ("columns", "lock")
+    __slots__ = ("batches", "lock", "rows", "serial")
 
     def __init__(self) -> None:
-        self.columns: dict[bytes, np.ndarray] = {}
+        self.rows: dict[bytes, int] = {}
+        self.batches: dict[int, np.ndarray] = {}
+        self.serial = 0
         self.lock = threading.Lock()
+
+    def add(self, yt: np.ndarray, keys: list[bytes]) -> None:
+        """Keep the columns ``yt`` (N, n_dof) (rows of Yᵀ, read-only) under ``keys``."""
+        self.serial += 1
+        self.batches[self.serial] = yt
+        base = self.serial << 32
+        self.rows.update(zip(keys, range(base, base + len(keys)), strict=True))
+
+    def trim(self, kept: int) -> None:
+        """Drop the oldest columns beyond ``kept``, and the batches no column refers to."""
+        if len(self.rows) <= kept:
+            return
+        for k in list(itertools.islice(self.rows, len(self.rows) - kept)):
+            del self.rows[k]
+        used = set(np.unique(np.fromiter(self.rows.values(), dtype=np.int64) >> 32).tolist())
+        for b in [b for b in self.batches if b not in used]:
+            del self.batches[b]
 
 
 @memoised(maxsize=4)
@@ -753,7 +774,8 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
     series or one repeated at one misalignment map the same segments (the memoised curve
     segments, :mod:`contact.ltca.segments`). The columns computed here are those of the
     segments not kept, in one load-vector build and one triangular product as before; a
-    call with none kept gives the same array as that product."""
+    call with none kept gives the same array as that product. The kept columns are copied
+    in a batch at a time (a take of the batch's rows)."""
     nrm = None if normals is None else np.asarray(normals, dtype=float)
     if warm_seeds_active():  # a development's trial: its teeth are new at every trial
         return _half_vectors_of(model, ends, nrm, ng)
@@ -761,38 +783,32 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
     rows = [ends.reshape(n_pts, 4)] + ([] if nrm is None else [nrm])
     rows = np.ascontiguousarray(np.concatenate(rows, axis=1), dtype=float)
     tag = ng.to_bytes(2, "little") + (b"n" if nrm is not None else b"-")
-    keys = _row_keys(rows, tag)
+    keys = row_keys(rows, tag)
     store = _half_vector_store(Same(model))
     with store.lock:  # (an analysis per thread: one at a time per model)
-        kept = store.columns
-        miss = np.flatnonzero(~np.fromiter(map(kept.__contains__, keys), dtype=bool,
-                                           count=n_pts)).tolist()
-        if len(miss) == n_pts:  # nothing kept: the product's own array
+        get = store.rows.get
+        code = np.array([get(k, -1) for k in keys], dtype=np.int64)
+        miss = np.flatnonzero(code < 0)
+        if miss.size == n_pts:  # nothing kept: the product's own array
             y = _half_vectors_of(model, ends, nrm, ng)
             y.flags.writeable = False  # its columns are kept
-            kept.update(zip(keys, y.T, strict=True))
+            store.add(y.T, keys)
         else:
             y = np.empty((model.n_dof, n_pts), order="F")
-            if miss:
+            yt = y.T  # (C order): a kept column is one contiguous row of it
+            if miss.size:
                 new = _half_vectors_of(model, ends[miss], None if nrm is None else nrm[miss],
                                        ng)
                 new.flags.writeable = False  # its columns are kept
-                y[:, miss] = new
-                kept.update(zip([keys[i] for i in miss], new.T, strict=True))
-            missed = set(miss)
-            hit = [i for i in range(n_pts) if i not in missed]
-            y[:, hit] = np.stack([kept[keys[i]] for i in hit], axis=1)
-        if len(kept) > HALF_VECTORS_KEPT:  # the oldest first, in one pass
-            for k in list(itertools.islice(kept, len(kept) - HALF_VECTORS_KEPT)):
-                del kept[k]
+                yt[miss] = new.T
+                store.add(new.T, [keys[i] for i in miss.tolist()])
+            hit = np.flatnonzero(code >= 0)
+            batch, row = code[hit] >> 32, code[hit] & 0xFFFFFFFF
+            for b in np.unique(batch).tolist():
+                sel = batch == b
+                yt[hit[sel]] = store.batches[b][row[sel]]
+        store.trim(HALF_VECTORS_KEPT)  # the oldest first, in one pass
     return y
-
-
-def _row_keys(rows: np.ndarray, tag: bytes) -> list[bytes]:
-    """Each row of a C-ordered 2-D array as ``tag`` + its bytes (a memo key per row)."""
-    raw = rows.tobytes()
-    width = rows.shape[1] * rows.itemsize
-    return [tag + raw[i:i + width] for i in range(0, len(raw), width)]
 
 
 def _half_vectors_of(model: ShellModel, ends: np.ndarray, normals: np.ndarray | None,

@@ -118,7 +118,7 @@ from contact.load_capacity.flash_temperature import (
 from contact.load_capacity.micropitting import GAUSSIAN_RA_PER_RQ
 from friction.lubricant import load_lubricant, viscosity
 from geometry import __version__
-from geometry.core.conventions import data_var
+from geometry.core.conventions import data_var, dataset
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.materials import material
 from geometry.core.renamed import renamed_keywords
@@ -405,7 +405,7 @@ def _rating_value(rating: xr.Dataset, name: str) -> np.ndarray:
     if name not in rating:
         raise InputError(f"rating: the dataset has no {name!r} (an ISO 10300 /rating group, "
                          "contact.load_capacity.iso10300, is needed)")
-    return np.asarray(rating[name].values, dtype=float)
+    return np.asarray(rating.variables[name].values, dtype=float)
 
 
 @renamed_keywords(oil_temperature="temperature")
@@ -501,7 +501,9 @@ def _method(rating: xr.Dataset, *, lubricant: str, temperature: float, roughness
     """:func:`iso_flash_temperature_method`'s arithmetic: the arguments of
     :func:`_dataset` (S_B [1] per torque at :data:`_S_B`), no dataset built (the spread
     of :func:`iso_flash_temperature_variants` reads S_B alone, issue 75); ``memo`` keeps
-    the rating's values and the oil between the calls of one set of variants."""
+    what no variant changes between the calls of one set of variants (the same oil
+    temperature and points): the rating's values, the path of contact and its load
+    sharing, the oil, its viscosity and the materials' effusivities."""
     memo = {} if memo is None else memo
     cond = ScuffingConditions() if conditions is None else conditions
     if not isinstance(cond, ScuffingConditions):
@@ -519,9 +521,12 @@ def _method(rating: xr.Dataset, *, lubricant: str, temperature: float, roughness
         memo["torque"] = np.atleast_1d(_rating_value(rating, "torque"))
     v, torque = memo["v"], memo["torque"]
     alpha, beta_vb = float(v["alpha_vet"]), float(v["beta_vb"])
-    path = path_of_contact(v["d_va"], v["d_vb"], v["d_v"], alpha, points)
-    x_gamma = load_sharing_factor(path["position"], path["length"], float(v["p_vet"]),
-                                  float(v["eps_va"]), float(v["eps_vb"]))
+    if "path" not in memo:  # the path of contact and its load sharing: every variant's
+        path = path_of_contact(v["d_va"], v["d_vb"], v["d_v"], alpha, points)
+        memo["path"] = path, load_sharing_factor(
+            path["position"], path["length"], float(v["p_vet"]), float(v["eps_va"]),
+            float(v["eps_vb"]))
+    path, x_gamma = memo["path"]
     rho_t = path["radius"]
     rho_n = rho_t[0] * rho_t[1] / ((rho_t[0] + rho_t[1]) * math.cos(beta_vb))
     # speeds: the common normal speed v_mn = v_mt1 cos β_m1, in the virtual gears'
@@ -549,7 +554,9 @@ def _method(rating: xr.Dataset, *, lubricant: str, temperature: float, roughness
         raise InputError(f"lubricant: the oil {oil.name} gives no base_oil (X_L of ISO's mean "
                          "friction coefficient; an optional oil-file field of "
                          "friction.lubricant)")
-    eta = float(viscosity(oil, t_oil))
+    if "eta" not in memo:  # (the same oil temperature for every variant)
+        memo["eta"] = float(viscosity(oil, t_oil))
+    eta = memo["eta"]
     pitch_t = np.array([0.5 * v["d_v"][0], 0.5 * v["d_v"][1]]) * math.sin(alpha)
     rho_c = float(pitch_t[0] * pitch_t[1] / (pitch_t.sum() * math.cos(beta_vb)))
     ra = GAUSSIAN_RA_PER_RQ * rq
@@ -557,14 +564,17 @@ def _method(rating: xr.Dataset, *, lubricant: str, temperature: float, roughness
     mu = np.asarray(mean_friction_coefficient(
         w_bt, 2.0 * v_vt * math.sin(alpha), rho_c, eta, ra, oil.base_oil, k_bg,
         form=friction_form), float)
-    names = [n.strip() for n in str(rating.attrs.get("materials", "")).split(",")]
-    if len(names) != 2 or not all(names):
-        raise InputError("rating: the dataset's attribute 'materials' must name the pinion's "
-                         f"and the gear's material, got {rating.attrs.get('materials')!r}")
-    try:
-        b_m = [material(n).thermal_effusivity for n in names]
-    except ModelUnavailableError as exc:
-        raise InputError(f"rating.materials: no thermal properties ({exc})") from None
+    if "b_m" not in memo:  # the materials' effusivities, read once for all the variants
+        names = [n.strip() for n in str(rating.attrs.get("materials", "")).split(",")]
+        if len(names) != 2 or not all(names):
+            raise InputError("rating: the dataset's attribute 'materials' must name the "
+                             "pinion's and the gear's material, got "
+                             f"{rating.attrs.get('materials')!r}")
+        try:
+            memo["b_m"] = [material(n).thermal_effusivity for n in names]
+        except ModelUnavailableError as exc:
+            raise InputError(f"rating.materials: no thermal properties ({exc})") from None
+    b_m = memo["b_m"]
     flash = np.asarray(blok_flash_temperature(
         mu[:, None], p_h, half_width, sliding[None, :], across[0][None, :],
         across[1][None, :], b_m[0], b_m[1]), float)
@@ -761,11 +771,11 @@ def iso_flash_temperature_variants(
                                     {"units": "1", "long_name": "largest scuffing safety "
                                      "factor S_B of the uncertain constants", "comment": note})
     attrs = {k: v for k, v in attrs0.items() if k not in ("method", "lengthwise_sliding")}
-    return xr.Dataset(data, coords={
+    return dataset(data, {
         **coords,
         "variant": ("variant", list(VARIANTS), {"long_name": "variant of the flash "
                                                 "temperature method"}),
-        "method": ("variant", methods, {"long_name": "what the variant is"})}, attrs={
+        "method": ("variant", methods, {"long_name": "what the variant is"})}, {
         **attrs,
         "method": "; ".join(f"{k}: {m}" for k, m in zip(VARIANTS, methods, strict=True)),
         "friction_form": "iso", "viscosity_in_scuffing_temperature": 0})

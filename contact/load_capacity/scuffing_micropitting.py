@@ -55,7 +55,7 @@ from contact.load_capacity.micropitting import (
 )
 from friction.efficiency import loaded_segments, uncertified_as_nan
 from friction.lubricant import Lubricant, load_lubricant, temperature_range
-from geometry.core.conventions import data_var
+from geometry.core.conventions import coords_along, data_var, dataset
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.hertz import STEEL, contact_modulus
 from geometry.core.materials import DEFAULT_MATERIAL, material
@@ -159,7 +159,7 @@ def scuffing_micropitting(
     seg = _contact(ltca, friction)
     e_prime = _effective_modulus(ltca, youngs_modulus, poisson_ratio)
     dur = _surface_durability(ltca, seg, lub, op, cond, e_prime)
-    coords = {k: ltca.coords[k] for k in ("torque", "roll", "pair", "segment")}
+    coords = coords_along(ltca, ("torque", "roll", "pair", "segment"))
     coords["member"] = ("member", ["pinion", "gear"], {"long_name": "gear pair member"})
     attrs = {
         "title": "scuffing and micropitting of the loaded mesh",
@@ -170,7 +170,7 @@ def scuffing_micropitting(
         "roughness_rq_um": op.roughness,
         **dur.attrs,
     }
-    out = xr.Dataset(_durability_variables(dur, seg.loaded), coords=coords, attrs=attrs)
+    out = dataset(_durability_variables(dur, seg.loaded), coords, attrs)
     return uncertified_as_nan(out, ltca)
 
 

@@ -32,7 +32,7 @@ from contact.ltca.transmission_error import transmission_error_summary
 from contact.qp.problem import RESIDUALS
 from contact.qp.solvers import solver_name
 from geometry import __version__
-from geometry.core.conventions import binary_flag
+from geometry.core.conventions import binary_flag, dataset
 from geometry.core.conventions import data_var as _var
 from geometry.core.hertz import contact_modulus
 
@@ -76,8 +76,7 @@ def ltca_dataset(setup: LTCASetup, seg: Segments, screening: Screening,
         **_solution_vars(seg, results),
         **_summary_vars(setup, seg, results, lte),
     }
-    return xr.Dataset(data, coords=_coords(setup, seg),
-                      attrs=_attrs(setup, timing))
+    return dataset(data, _coords(setup, seg), _attrs(setup, timing))
 
 
 def _load_vars(lte: np.ndarray, screening: Screening, results: RollResults) -> dict:

@@ -62,7 +62,7 @@ import xarray as xr
 
 from contact.ltca.roll_loop import RollProblem
 from contact.qp import ContactProblem, ContactSolution
-from geometry.core.conventions import data_var
+from geometry.core.conventions import coords_along, data_var, dataset
 from geometry.core.errors import InputError
 
 __all__ = [
@@ -216,9 +216,14 @@ def condensed_stiffness(problem: ContactProblem, solution: ContactSolution) -> f
         return math.nan
     C = np.asarray(problem.compliance, float)[np.ix_(active, active)]
     R = np.asarray(problem.moment_arm, float)[active]
-    try:
-        x = scipy.linalg.cho_solve(scipy.linalg.cho_factor(C), R)
-    except np.linalg.LinAlgError:
+    # LAPACK's Cholesky and its solve as scipy.linalg.cho_factor / cho_solve call them
+    # (the same numbers), without their checks of inputs the problem checked when it was
+    # made (finite, square): a third of this function's time at every roll (issue 75)
+    potrf, potrs = scipy.linalg.get_lapack_funcs(("potrf", "potrs"), (C,))
+    c, info = potrf(C, lower=False, clean=False)
+    if info == 0:
+        x, info = potrs(c, R, lower=False)
+    if info != 0:  # not positive definite on the active set (cho_factor's LinAlgError)
         x = np.linalg.lstsq(C, R, rcond=None)[0]
     return float(R @ x)
 
@@ -291,7 +296,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
                             "mesh_period_rad") if k not in ltca.attrs]
     if missing:
         raise InputError(f"ltca: not an /ltca dataset, lacks {', '.join(missing)}")
-    torques = ltca["torque"].values.astype(float)
+    torques = ltca.variables["torque"].values.astype(float)
     NT, J = ltca.sizes["torque"], ltca.sizes["roll"]
     index = {float(t): i for i, t in enumerate(torques)}
     k_theta = np.full((NT, J), np.nan)
@@ -309,10 +314,10 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
         k_theta[it, rp.roll] = done[key]
     ag, og = (np.asarray(ltca.attrs[k], float) for k in ("gear_axis", "gear_origin_mm"))
     ap, op = (np.asarray(ltca.attrs[k], float) for k in ("pinion_axis", "pinion_origin_mm"))
-    force = ltca["force"].values
-    points = ltca["contact_point"].values
-    normals = ltca["contact_normal"].values
-    arms = ltca["moment_arm"].values
+    force = ltca.variables["force"].values
+    points = ltca.variables["contact_point"].values
+    normals = ltca.variables["contact_normal"].values
+    arms = ltca.variables["moment_arm"].values
     # every (torque, roll) reduced at once: a roll's segments flattened, its points,
     # normals and arms the same at every torque
     pts, nrm = points.reshape(J, -1, 3), normals.reshape(J, -1, 3)
@@ -325,7 +330,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     lam_p = np.einsum("trx,x->tr", np.cross(out3["mesh_point"] - op, out3["line_of_action"]),
                       ap)
     k_mesh = k_theta / lam_g**2 * 1e-3  # [N/mm] → [N/µm]
-    lte = ltca["transmission_error"].values.astype(float)
+    lte = ltca.variables["transmission_error"].values.astype(float)
     excitation = lam_g * lte * 1e-3  # [mm]·[µrad] = 1e-6 mm → [µm]: ×1e-3
     opts = _options(ltca)
     cycles = int(opts.get("cycles", 1)) or 1
@@ -335,7 +340,7 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
     k_amp, k_phase = _harmonics(k_mesh, cycles, n_h)
     tr = ("torque", "roll")
     th = ("torque", "harmonic")
-    ds = xr.Dataset(
+    ds = dataset(
         {
             "mesh_point": data_var((*tr, "xyz"), out3["mesh_point"], "mm",
                                    "effective mesh point: on the resultant's line, nearest "
@@ -390,15 +395,12 @@ def mesh_interface(ltca: xr.Dataset, problems: Sequence[RollProblem]) -> xr.Data
                                              "mesh stiffness (cosine, from the first roll "
                                              "position)"),
         },
-        coords={
-            "torque": ltca["torque"],
-            "roll": ltca["roll"],
-            "mesh_cycle": ltca["mesh_cycle"],
-            "xyz": ltca["xyz"],
+        {  # (torque and roll with what they carry: gear_torque, mesh_cycle)
+            **coords_along(ltca, ("torque", "roll", "xyz")),
             "harmonic": data_var("harmonic", np.arange(1, n_h + 1, dtype=np.int32), "1",
                                  "mesh harmonic order"),
         },
-        attrs={
+        {
             "title": "mesh interface for dynamic models",
             "case": ltca.attrs.get("case", ""),
             "gear_axis": ag, "gear_origin_mm": og, "pinion_axis": ap, "pinion_origin_mm": op,

@@ -14,7 +14,7 @@ import numpy as np
 
 from contact.qp import ContactSolution
 from contact.qp.problem import RESIDUALS
-from geometry.core.hertz import hertz_line_contact
+from geometry.core.hertz import hertz_line_contact_of_checked
 
 __all__ = ["SEGMENT_STATES", "RollResults"]
 
@@ -120,7 +120,9 @@ class RollResults:
         F = solution.force
         self.rotation[it, j] = solution.rotation
         w = F / length
-        hertz = hertz_line_contact(np.maximum(w, 0.0), r_eq, modulus)
+        # (the solved loads are finite, the radii the selection's, checked: the checks
+        # not made again at every roll)
+        hertz = hertz_line_contact_of_checked(np.maximum(w, 0.0), r_eq, float(modulus))
         at = (it, j, pairs, segments)
         self.force[at] = F
         self.load_per_length[at] = w

@@ -50,8 +50,9 @@ def edge_load_share(ltca: xr.Dataset) -> np.ndarray:
     missing = [k for k in ("force", "moment_arm", "segment_kind") if k not in ltca.variables]
     if missing:
         raise InputError(f"ltca: lacks {', '.join(missing)} (not an /ltca dataset)")
-    moment = np.nan_to_num(ltca["force"].values) * np.nan_to_num(ltca["moment_arm"].values)[None]
-    edge = np.asarray(ltca["segment_kind"].values != "curve")
+    moment = (np.nan_to_num(ltca.variables["force"].values)
+              * np.nan_to_num(ltca.variables["moment_arm"].values)[None])
+    edge = np.asarray(ltca.variables["segment_kind"].values != "curve")
     total = moment.sum(axis=(1, 2, 3))
     on_edges = moment[..., edge].sum(axis=(1, 2, 3))
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -108,10 +109,10 @@ def certification(ltca: xr.Dataset) -> Certification:
     """
     if "found" not in ltca.variables:
         raise InputError("ltca: lacks found (not an /ltca dataset)")
-    found = np.asarray(ltca["found"].values) > 0
+    found = np.asarray(ltca.variables["found"].values) > 0
     found = found.reshape(found.shape[0] if found.ndim > 1 else 1, -1)
-    torques = np.atleast_1d(np.asarray(ltca["torque"].values, float))
-    status = (np.asarray(ltca["status"].values, dtype=object).reshape(found.shape)
+    torques = np.atleast_1d(np.asarray(ltca.variables["torque"].values, float))
+    status = (np.asarray(ltca.variables["status"].values, dtype=object).reshape(found.shape)
               if "status" in ltca.variables else np.full(found.shape, "", dtype=object))
     certified = found.sum(axis=1)
     rolls = found.shape[1]

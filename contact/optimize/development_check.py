@@ -23,6 +23,8 @@ LTE the development reached; :func:`checked_near_miss` a drive design that misse
 its light-load centre v and nothing by more than a small margin (:data:`NEAR_MISS`) a small
 blade-angle step with its TE level lowered; :func:`checked_te_back` the TE level of a design
 still missing a target raised back to the flank's own on the bearing the steps ended at.
+The steps keep a design by one rule, :func:`kept_why` (better, no met target lost,
+tolerant).
 :func:`static_capacity` lowers the design torque to the
 flank's static capacity, :func:`checked_root_capacity` to the written case's root-stress and
 pitting capacity (:mod:`contact.optimize.development_root`); :func:`tolerance_checks` analyses
@@ -409,15 +411,8 @@ def checked_ellipse(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     e = _said_variant(best, best.values | {"ellipse_length": x}, "ellipse",
                       f"with the ellipse {x:.3g} (its LTE missed)", targets, setup, teeth,
                       say, placed)
-    if e is None or _check_rank(e) >= _check_rank(best):
-        return best
-    lost = _lost_targets(best, e)
-    if lost:
-        say(f"  not kept: the longer ellipse misses {', '.join(lost)}")
-        return best
-    if not _tolerant_variant(e, targets, setup, teeth, say):
-        return best
-    return e
+    return best if kept_why(best, e, targets, setup, teeth, say, "the longer ellipse",
+                            lost=_lost_targets) else e
 
 
 def long_bearing(values: Mapping[str, float], targets: DevelopmentTargets
@@ -498,20 +493,11 @@ def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       f", root_relief {values['root_relief']:.3g} from "
                       f"{values['relief_start']:.3g})", targets, setup, teeth, say, placed,
                       flank=flank, key_prefix=key_prefix)
-    if e is None:
-        return best
-    if _check_rank(e) >= _check_rank(best):
-        return best
     # the LTE bought with the pattern's length alone: no other target it met given up
     # (the spiral bevel 17x29's coast flank: LTE 73 / 83 -> 50 / 62 urad, but its
     # light-load pattern 0.03-0.98 of the face, on toe and heel, 2.7 % on edges)
-    lost = _lost_but_length(best, e)
-    if lost:
-        say(f"  not kept: the long bearing misses {', '.join(lost)}")
-        return best
-    if flank == "drive" and not _tolerant_variant(e, targets, setup, teeth, say):
-        return best
-    return e
+    return best if kept_why(best, e, targets, setup, teeth, say, "the long bearing",
+                            lost=_lost_but_length, tolerant=flank == "drive") else e
 
 
 #: the root relief of :func:`checked_relief_lte`'s designs, as fractions of the design's,
@@ -570,15 +556,9 @@ def checked_relief_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         e = _said_variant(best, values, "relief lte",
                           f"with {name} {x:.3g} um (its LTE above {limit:g} urad)", targets,
                           setup, teeth, say, placed)
-        if e is None or _check_rank(e) >= _check_rank(best):
-            continue
-        lost = _lost_targets(best, e)
-        if lost:
-            say(f"  not kept: the shallower root relief misses {', '.join(lost)}")
-            continue
-        if not _tolerant_variant(e, targets, setup, teeth, say):
-            continue
-        best = e
+        if not kept_why(best, e, targets, setup, teeth, say, "the shallower root relief",
+                        lost=_lost_targets):
+            best = e
     return best
 
 
@@ -616,10 +596,7 @@ def checked_te_back(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     e = _said_variant(best, dict(best.values) | {TE_NAME: x}, "te back",
                       f"at {TE_NAME} {x:.3g} urad (its own level, on the bearing the "
                       "steps ended at)", targets, setup, teeth, say, placed)
-    if (e is None or _check_rank(e) >= _check_rank(best)
-            or not _tolerant_variant(e, targets, setup, teeth, say)):
-        return best
-    return e
+    return best if kept_why(best, e, targets, setup, teeth, say) else e
 
 
 #: the near-miss step (:func:`checked_near_miss`): a missed target is near where its
@@ -719,11 +696,9 @@ def checked_near_miss(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           "its band)", targets, setup, teeth, say, placed)
         if e is None:
             break
-        lost = _lost_targets(best, e)
-        if lost:
-            say(f"  not kept: the blade-angle step misses {', '.join(lost)}")
-        elif (_met_count(e) > _met_count(best)
-                and _tolerant_variant(e, targets, setup, teeth, say)):
+        if not kept_why(best, e, targets, setup, teeth, say, "the blade-angle step",
+                        lost=_lost_targets, lost_first=True,
+                        better=lambda b, x: _met_count(x) > _met_count(b)):
             return e
         v = footprint_centre_v(e)
         if not math.isfinite(v):
@@ -776,19 +751,81 @@ def _tried(setup: Mapping[str, Any], lever: str) -> None:
         kept["tried"] = (*kept["tried"], lever)
 
 
-def _lte_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
-              targets: DevelopmentTargets, setup: Mapping[str, Any],
-              teeth: KeptTeeth | None, say: Callable[[str], None], what: str) -> str:
-    """Why :func:`checked_crowning_lte`'s design ``e`` does not replace ``best`` (empty
-    where it does): it scores no better, misses a target ``best`` met (the pattern length
-    included), or is not tolerant (:func:`_tolerant_variant`)."""
-    if _check_rank(e) >= _check_rank(best):
+def _ranks_better(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> bool:
+    """Whether a checked design ``e`` ranks before ``best`` (:func:`_check_rank`)."""
+    return _check_rank(e) < _check_rank(best)
+
+
+def kept_why(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
+             targets: DevelopmentTargets, setup: Mapping[str, Any],
+             teeth: KeptTeeth | None, say: Callable[[str], None], what: str = "", *,
+             better: Callable[[DevelopmentEvaluation, DevelopmentEvaluation], bool]
+             = _ranks_better,
+             lost: Callable[[DevelopmentEvaluation, DevelopmentEvaluation], list[str]]
+             | None = None,
+             lost_first: bool = False, tolerant: bool = True) -> str:
+    """The check steps' one keep rule: why a check step's design ``e`` does not replace
+    ``best``, empty where it does.
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation
+        The design kept so far (checked at :data:`CHECK_LTCA`).
+    e : DevelopmentEvaluation or None
+        The step's design (:func:`_said_variant`); None (its synthesis or analysis failed)
+        is never kept.
+    targets, setup, teeth, say
+        As the check steps'; ``say`` gets the "not kept" lines.
+    what : str
+        The step's change in words, for the "not kept: <what> misses ..." line.
+    better : callable (best, e) → bool, optional
+        Whether ``e`` is better (default: it ranks before ``best``, :func:`_check_rank`:
+        every target met first, then the least objective; the near-miss step counts the
+        targets met, :func:`_met_count`).
+    lost : callable (best, e) → list of str, optional
+        The targets ``best`` met that ``e`` misses (:func:`_lost_targets`, or
+        :func:`_lost_but_length` where the LTE may be bought with the pattern's length);
+        None: not asked.
+    lost_first : bool, optional
+        Ask ``lost`` before ``better`` (the near-miss step says a lost target whether or
+        not the design is better); default False.
+    tolerant : bool, optional
+        Ask last whether ``e`` is tolerant (:func:`_tolerant_variant`: the mounting
+        excursions, up to four coarse analyses, so asked only where every other rule
+        keeps it); default True.
+
+    Returns
+    -------
+    str
+        Empty where ``e`` replaces ``best``; else ``"it could not be analysed"``, ``"it
+        scores no better"``, ``"it misses <targets>"`` or ``"not tolerant at dE/dP
+        +/-0.05 mm"``.
+
+    Notes
+    -----
+    One rule for :func:`checked_ellipse`, :func:`checked_long`,
+    :func:`checked_relief_lte`, :func:`checked_crowning_lte`, :func:`checked_te_back`,
+    :func:`checked_near_miss` and :func:`_checked_path`, each of which wrote its own
+    "better, no met target lost, tolerant" loop before (issue 71); their order of
+    asking is kept, so the lines said and the analyses run are theirs.
+    """
+    if e is None:
+        return "it could not be analysed"
+
+    def missed() -> str:
+        gone = lost(best, e) if lost is not None else []
+        if gone:
+            say(f"  not kept: {what} misses {', '.join(gone)}")
+            return f"it misses {', '.join(gone)}"
+        return ""
+
+    if lost_first and (why := missed()):
+        return why
+    if not better(best, e):
         return "it scores no better"
-    lost = _lost_targets(best, e)
-    if lost:
-        say(f"  not kept: {what} misses {', '.join(lost)}")
-        return f"it misses {', '.join(lost)}"
-    if not _tolerant_variant(e, targets, setup, teeth, say):
+    if not lost_first and (why := missed()):
+        return why
+    if tolerant and not _tolerant_variant(e, targets, setup, teeth, say):
         return "not tolerant at dE/dP +/-0.05 mm"
     return ""
 
@@ -859,12 +896,13 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
                 continue
             what = f"design {best.index + 1} with profile_crowning {x:.3g} um"
             e = _said_variant(best, dict(best.values) | {CROWNING_NAME: x}, "crowning lte",
-                              f"with {what} (its LTE above {limit:g} urad)", targets, setup,
-                              teeth, say, placed)
+                              f"with profile_crowning {x:.3g} um (its LTE above {limit:g} "
+                              "urad)", targets, setup, teeth, say, placed)
             if e is None:
                 continue
             _tried(setup, "the profile crowning flattened")
-            why = _lte_kept(best, e, targets, setup, teeth, say, "the flatter profile")
+            why = kept_why(best, e, targets, setup, teeth, say, "the flatter profile",
+                           lost=_lost_targets)
             _reached(setup, e, what, why)
             if not why:
                 best = e
@@ -884,7 +922,8 @@ def checked_crowning_lte(best: DevelopmentEvaluation, targets: DevelopmentTarget
         if e is None:
             break
         _tried(setup, "the modified roll's TE parabola deepened")
-        why = _lte_kept(best, e, targets, setup, teeth, say, "the deeper TE parabola")
+        why = kept_why(best, e, targets, setup, teeth, say, "the deeper TE parabola",
+                       lost=_lost_targets)
         _reached(setup, e, f"design {base.index + 1} with te_level {x:.3g} urad", why)
         if not why:
             best = e
@@ -1218,7 +1257,7 @@ def _kept_step(e: DevelopmentEvaluation, best: DevelopmentEvaluation,
     the two returned. The tip edge a shorter tip relief uncovers must stay elastic at the
     mounting excursions (the 13x39's 7.5 µm from 0.9: 0.3–1.6 % of the design torque
     plastic at ΔE +0.05 mm)."""
-    turned = _checked_path(e, targets, setup, teeth, say, placed)
+    turned = _checked_path(e, targets, setup, teeth, say, placed, bar=best)
     if _check_rank(turned) >= _check_rank(best):
         return best
     if turned is not e or _tolerant_variant(turned, targets, setup, teeth, say):
@@ -1435,7 +1474,8 @@ GENERATED_PATH_LIMIT = -88.0
 
 def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                   setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
-                  placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
+                  placed: Callable[[Mapping[str, float]], Case], *,
+                  bar: DevelopmentEvaluation | None = None) -> DevelopmentEvaluation:
     """The chosen design's bearing turned towards the profile at the check: where it
     misses the pattern length or the LTE at ``ltca run``'s sampling, the path angle turned
     by :data:`PATH_STEPS` towards the profile direction (clipped to its bound) and, where
@@ -1443,7 +1483,10 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     the LTE alone is missed, the ellipse lengthened by as much where the pattern stays
     within its length tolerance by that; each design placed and checked at
     :data:`CHECK_LTCA` and kept where it scores better (at most 2 designs, each a
-    synthesis of steps 3-6).
+    synthesis of steps 3-6). ``bar``: where given (a height step's design, :func:`_kept_step`),
+    a design is kept only where it also ranks before ``bar``, the design the step's
+    outcome must beat: one that does not is not asked for its tolerance (the mounting
+    excursions, up to four coarse analyses), which could not change the outcome.
 
     Why: the light-load pattern is the ellipse plus the path's lengthwise travel over the
     roll of one tooth pair, and a path nearer the profile both shortens that travel and
@@ -1529,10 +1572,10 @@ def _checked_path(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           f"with path_angle {values['path_angle']:.3g}, ellipse_length "
                           f"{values['ellipse_length']:.3g}", targets, setup, teeth, say,
                           placed)
-        if e is None:
-            continue
-        if (_check_rank(e) < _check_rank(best)
-                and _tolerant_variant(e, targets, setup, teeth, say)):
+        if e is not None and not kept_why(
+                best, e, targets, setup, teeth, say,
+                better=lambda b, x: _ranks_better(b, x) and (bar is None
+                                                             or _ranks_better(bar, x))):
             best = e
             if e.met:
                 break

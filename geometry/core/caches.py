@@ -24,6 +24,7 @@ Public functions
 memoised         decorator: ``functools.lru_cache`` registered with :func:`clear_caches`
 clear_caches     empty every registered cache; returns their names
 cache_sizes      the number of entries each registered cache holds now
+row_keys         each row of a float array as a memo key (its bytes)
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ import functools
 from collections.abc import Callable
 from typing import Any, TypeVar
 
-__all__ = ["Same", "cache_sizes", "clear_caches", "memoised"]
+__all__ = ["Same", "cache_sizes", "clear_caches", "memoised", "row_keys"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -117,3 +118,34 @@ class Same:
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Same) and other.obj is self.obj
+
+
+def row_keys(rows, tag: bytes = b"") -> list[bytes]:
+    """Each row of a 2-D array of floats as ``tag`` + the row's bytes (float64, C order):
+    a memo key per row (a point, a segment) that equal rows share.
+
+    Parameters
+    ----------
+    rows : array_like (N, W) — the values (converted to float64)
+    tag : bytes — a prefix common to every key (what the rows are)
+
+    Returns
+    -------
+    list of bytes — N keys, each ``len(tag) + 8 W`` bytes
+
+    Notes
+    -----
+    The rows are copied once into a byte array with the tag in front and read back as one
+    fixed-width bytes object per row, ~6× faster than slicing the rows' bytes one by one
+    (measured on 1,500 rows of 6 floats: 0.28 against 1.7 ms; issue 75).
+    """
+    import numpy as np
+
+    r = np.ascontiguousarray(rows, dtype=float)
+    if r.ndim != 2:
+        raise ValueError(f"rows: must be a 2-D array, got shape {r.shape}")
+    width = len(tag) + r.shape[1] * r.itemsize
+    buf = np.empty((r.shape[0], width), dtype=np.uint8)
+    buf[:, :len(tag)] = np.frombuffer(tag, dtype=np.uint8)
+    buf[:, len(tag):] = r.view(np.uint8).reshape(r.shape[0], r.shape[1] * r.itemsize)
+    return buf.view(np.dtype((np.void, width))).ravel().tolist()

@@ -10,11 +10,12 @@ checking files (:mod:`geometry.core.io`) sits in the application layer on top.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
-__all__ = ["binary_flag", "data_var"]
+__all__ = ["binary_flag", "coords_along", "data_var", "dataset"]
 
 
 def data_var(dims, data, units: str | None, long_name: str, **attrs: Any) -> tuple:
@@ -63,3 +64,128 @@ def binary_flag(off: str, on: str) -> dict[str, Any]:
         if not word or " " in word:
             raise ValueError(f"a flag meaning is one word without spaces, not {word!r}")
     return {"flag_values": np.array([0, 1], dtype=np.int8), "flag_meanings": f"{off} {on}"}
+
+
+def dataset(data: Mapping[str, tuple], coords: Mapping[str, tuple] | None = None,
+            attrs: Mapping[str, Any] | None = None):
+    """``xarray.Dataset(data, coords=coords, attrs=attrs)`` of plain tuples, made directly.
+
+    The same Dataset (``identical``, the same variables, dtypes, indexes and order) as
+    xarray's constructor makes of ``(dims, values[, attrs])`` tuples, without its merge and
+    alignment of the inputs, which tuples never need: ~3× faster (a flank's 14 variables:
+    0.3 against 1.0 ms), and an analysis builds some twenty result datasets (issue 75).
+    Anything else — a DataArray or a Variable among the values, a data variable named as a
+    dimension, sizes that disagree — is left to ``xarray.Dataset``, which says what is wrong.
+
+    Parameters
+    ----------
+    data : mapping of str to tuple — the data variables, ``(dims, values[, attrs])``
+        (:func:`data_var`)
+    coords : mapping of str to tuple, optional — the coordinates, ``(dims, values[,
+        attrs])``; one along the dimension of its name gets the default (pandas) index
+    attrs : mapping, optional — the dataset's attributes
+
+    Returns
+    -------
+    xarray.Dataset
+
+    Raises
+    ------
+    ValueError, TypeError
+        As ``xarray.Dataset`` (inputs it refuses go to it).
+
+    Notes
+    -----
+    Uses xarray's ``Dataset._construct_direct`` (its own constructor's last step, there
+    since 2019) and the public ``PandasIndex``; where that is missing, xarray's
+    constructor. tests/test_dataset_helpers.py compares the two.
+    """
+    import xarray as xr
+
+    made = _direct_dataset(xr, data, coords or {}, attrs)
+    return made if made is not None else xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def _direct_dataset(xr, data: Mapping, coords: Mapping, attrs: Mapping | None):
+    """:func:`dataset` without xarray's merge, or None where the inputs need it."""
+    construct = getattr(xr.Dataset, "_construct_direct", None)
+    if construct is None:
+        return None
+    import pandas as pd
+    from xarray.indexes import PandasIndex
+
+    def variable(spec):
+        if type(spec) is not tuple or not 2 <= len(spec) <= 3:
+            return None
+        if isinstance(spec[1], (xr.DataArray, xr.Variable, xr.Dataset, pd.Index, pd.Series,
+                                pd.DataFrame)):
+            return None
+        return xr.Variable(*spec)
+
+    variables: dict = {}
+    indexes: dict = {}
+    sizes: dict = {}
+    coord_vars: dict = {}
+    for name, spec in coords.items():
+        var = variable(spec)
+        if var is None or not isinstance(name, str):
+            return None
+        if var.dims == (name,):
+            var = var.to_index_variable()
+            index = PandasIndex.from_variables({name: var}, options={})
+            made = index.create_variables({name: var})
+            coord_vars.update(made)
+            indexes.update(dict.fromkeys(made, index))
+        elif name in var.dims:
+            return None  # (xarray refuses it)
+        else:
+            coord_vars[name] = var.to_base_variable()
+    for name, spec in data.items():
+        var = variable(spec)
+        if var is None or name in coords or var.dims == (name,) \
+                or not isinstance(name, str):
+            return None
+        variables[name] = var
+    variables.update(coord_vars)
+    for var in variables.values():
+        for dim, size in zip(var.dims, var.shape, strict=True):
+            if sizes.setdefault(dim, size) != size:
+                return None
+    if any(dim in variables and dim not in indexes for dim in sizes):
+        return None  # a variable named as a dimension but not along it alone
+    try:
+        return construct(variables, set(coord_vars), sizes, dict(attrs) if attrs else None,
+                         indexes=indexes)
+    except TypeError:  # another xarray's private signature: its public constructor
+        return None
+
+
+def coords_along(ds, dims) -> dict[str, tuple]:
+    """The coordinates that ``{d: ds.coords[d] for d in dims}`` brings into a new Dataset,
+    as :func:`dataset`'s tuples, in the order xarray puts them: each dimension coordinate
+    ``d`` followed by the other coordinates of ``ds`` along ``d`` alone (a DataArray
+    coordinate carries them: ``gear_torque`` with ``torque``, ``segment_kind`` with
+    ``segment``).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset — the dataset whose coordinates are taken (``/ltca``)
+    dims : iterable of str — its dimension coordinates to take
+
+    Returns
+    -------
+    dict of str to tuple — ``(dims, values, attrs)`` per coordinate; where ``ds`` has a
+        scalar coordinate (which every one of them would carry), the DataArrays themselves
+        (:func:`dataset` then leaves them to xarray)
+    """
+    dims = list(dims)
+    names = [name for name in ds.coords]
+    if any(ds.variables[name].ndim == 0 for name in names):
+        return {d: ds.coords[d] for d in dims}
+    out: dict[str, tuple] = {}
+    for d in dims:
+        for name in [d] + [n for n in names if n != d and n not in dims]:
+            var = ds.variables[name]
+            if var.dims == (d,) and name not in out:
+                out[name] = (var.dims, var.values, var.attrs)
+    return out

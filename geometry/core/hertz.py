@@ -39,7 +39,7 @@ import numpy as np
 from geometry.core.validation import broadcast, real, real_array
 
 __all__ = ["STEEL", "HertzLineContact", "contact_modulus", "hertz_line_contact",
-           "hertz_line_load"]
+           "hertz_line_contact_of_checked", "hertz_line_load"]
 
 #: Young's modulus [MPa] and Poisson's ratio [1] of case-hardened gear steel: the default
 #: material of both members everywhere in the toolkit
@@ -118,9 +118,30 @@ def hertz_line_contact(load_per_length, radius, modulus) -> HertzLineContact:
     r = real_array("radius", radius, unit="mm", low=0.0, low_open=True)
     e_star = real_array("modulus", modulus, unit="MPa", low=0.0, low_open=True)
     w, r, e_star = broadcast(load_per_length=w, radius=r, modulus=e_star)
-    b = np.sqrt(4.0 * w * r / (math.pi * e_star))
+    return hertz_line_contact_of_checked(w, r, e_star)
+
+
+def hertz_line_contact_of_checked(load_per_length: np.ndarray, radius: np.ndarray,
+                                  modulus) -> HertzLineContact:
+    """:func:`hertz_line_contact` of inputs the caller has checked: the same arithmetic
+    (the same numbers to the bit), without checking them again — for the LTCA, which
+    records the Hertz contact of every roll's solved loads (a load per length ≥ 0 and
+    radii > 0 of its own; issue 75).
+
+    Parameters
+    ----------
+    load_per_length : ndarray — [N/mm] w′ ≥ 0, finite
+    radius : ndarray — [mm] R > 0, finite, the shape of ``load_per_length``
+    modulus : float or ndarray — [MPa] E* > 0, finite (one value, or that shape)
+
+    Returns
+    -------
+    HertzLineContact — as :func:`hertz_line_contact` (Johnson 1985, Eq. 4.43–4.45)
+    """
+    b = np.sqrt(4.0 * load_per_length * radius / (math.pi * modulus))
     with np.errstate(divide="ignore", invalid="ignore"):
-        p0 = np.where(b > 0.0, 2.0 * w / (math.pi * np.where(b > 0.0, b, 1.0)), 0.0)
+        p0 = np.where(b > 0.0, 2.0 * load_per_length / (math.pi * np.where(b > 0.0, b, 1.0)),
+                      0.0)
     return HertzLineContact(b, p0)
 
 

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 import xarray as xr
 
-from geometry.core.conventions import binary_flag
+from geometry.core.conventions import binary_flag, dataset
 from geometry.core.errors import InputError
 from geometry.core.version import __version__
 from geometry.machine.curvature import surface_curvatures
@@ -481,7 +481,7 @@ def flank_dataset(case: Case, member: str, flank: str, *, surface: FlankSurface 
         # face hobbing: the cutter's blade groups z0 and the indexing ratio -z0/z
         attrs["blade_groups"] = mem.blade_groups
         attrs["indexing_ratio"] = tool.machine.indexing_ratio
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+    return dataset(data, coords, attrs)
 
 
 def geometry_datasets(case: Case, **grid) -> dict[tuple[str, str], xr.Dataset]:

@@ -71,7 +71,7 @@ class FlankPoints(NamedTuple):
 
 
 def _grid(coefficients: xr.Dataset):
-    return coefficients["u"].values, coefficients["v"].values
+    return coefficients.variables["u"].values, coefficients.variables["v"].values
 
 
 def locate_flank_points(coefficients: xr.Dataset, points, *,
@@ -108,7 +108,7 @@ def locate_flank_points(coefficients: xr.Dataset, points, *,
     p = real_array("points", points, unit="mm")
     if p.ndim != 2 or p.shape[1] != 3:
         raise InputError(f"points: must have shape (N, 3), got {p.shape}")
-    corners = coefficients["blank_corners"].values
+    corners = coefficients.variables["blank_corners"].values
     gu, gv = _grid(coefficients)
     rho = np.hypot(p[:, 0], p[:, 1])
     u, v = projection_fractions(corners, p[:, 2], rho)
@@ -121,7 +121,7 @@ def locate_flank_points(coefficients: xr.Dataset, points, *,
                          f"{v[i]:.3f}), outside the load grid [{lo_u:g}, {hi_u:g}] x "
                          f"[{lo_v:g}, {hi_v:g}] of the influence coefficients")
     w = hat_weights(gu, gv, u, v, outside="clip")
-    pos = coefficients["flank_position"].values
+    pos = coefficients.variables["flank_position"].values
     phi_grid = np.arctan2(pos[..., 1], pos[..., 0])
     ref = phi_grid.flat[phi_grid.size // 2]
     phi_grid = ref + np.remainder(phi_grid - ref + math.pi, 2 * math.pi) - math.pi

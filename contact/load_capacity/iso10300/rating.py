@@ -37,7 +37,7 @@ from contact.load_capacity.iso10300.inputs import (
 )
 from contact.load_capacity.iso10300.materials import RatingMaterial, rating_material
 from contact.load_capacity.iso10300.virtual_gears import virtual_gears
-from geometry.core.conventions import data_var
+from geometry.core.conventions import data_var, dataset
 from geometry.core.errors import InputError
 from geometry.core.renamed import renamed_keywords
 from geometry.core.validation import positive, real_array
@@ -535,7 +535,7 @@ def _dataset(torque: np.ndarray, v: dict[str, Any], inputs: RatingInputs, data: 
         "materials": ", ".join(mat.key for mat in materials),
         "toolkit_version": __version__,
     }
-    return xr.Dataset(out, coords=coords, attrs=attrs)
+    return dataset(out, coords, attrs)
 
 
 def case_gear_data(case):

@@ -1,0 +1,126 @@
+"""A study point's CPU time by stage, of this tree and of an earlier commit, in one run.
+
+    python benchmarks/study_point.py                   # this tree, 8 points
+    python benchmarks/study_point.py --before aa62cb2  # and that commit, same points
+    python benchmarks/study_point.py --points 16
+
+Each tree runs in a child process of its own (``git archive`` of ``--before`` into a
+temporary directory, on ``PYTHONPATH``) the points of issue 75's study row
+(``benchmarks/issue75_table.py``: :func:`contact.study.engine.analyse_point` of the
+default case at 250 N·m, each point a new misalignment ΔE, ΔP, so nothing is a memo hit),
+after one warm-up point, with :class:`stage_clock.StageClock` (this tree's, for both)
+adding up the exclusive CPU time of each stage, and prints per stage the mean CPU per
+point [ms] of each tree. CPU time ``time.process_time`` (issue 75's measure: the machine
+is shared, wall times mean little); the point's median and mean over the points.
+
+The stages are those of ``benchmarks/stage_clock.py`` and, nested in them, the parts
+issue 75 item 4 names: the ease-off's node placement (Newton on the exact conjugate map),
+the LTCA's curve and edge segments, the shell mapping (contact points onto the shell
+model's parameters) and the shell matrices. Target (issue 75): a point ≤ 0.12 s.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+ROOT = Path(__file__).resolve().parents[1]
+TORQUE = 250.0
+
+#: the finer stages (module, function, name), nested in the stage clock's
+EXTRA = (
+    ("contact.utca.easeoff", "map_gear_nodes", "ease-off: node placement (Newton)"),
+    ("contact.ltca.segments", "_curve_part_of", "LTCA curve segments"),
+    ("contact.ltca.segments", "edge_segments", "LTCA edge segments"),
+    ("contact.compliance.mesh", "_kept_mapping", "LTCA shell mapping"),
+    ("contact.compliance.mesh", "shell_matrices", "LTCA shell matrices"),
+)
+
+#: the child: the points of one tree with the stage clock; prints one JSON line
+_CHILD = r"""
+import json, statistics, sys, time
+sys.path.insert(0, sys.argv[1])  # this tree's benchmarks/ (stage_clock)
+from stage_clock import StageClock
+from contact.catalogue import bundled_case_path
+from contact.study.engine import analyse_point
+from contact.study.points import StudyInputs
+from geometry.case import load_case
+
+n, torque, extra = int(sys.argv[2]), float(sys.argv[3]), json.loads(sys.argv[4])
+case = load_case(bundled_case_path())
+shared = StudyInputs(case=case, torque=(torque,))
+m = case.misalignment
+analyse_point(shared, 0, {"delta_E": m.delta_E + 0.05, "delta_P": m.delta_P - 0.03})
+clock = StageClock(tuple(map(tuple, extra))).install()
+cpu = []
+for i in range(n):
+    f = (i - (n - 1) / 2) / max(n - 1, 1)  # -1/2 ... 1/2
+    point = {"delta_E": m.delta_E + 0.08 * f, "delta_P": m.delta_P - 0.04 * f}
+    t0 = time.process_time()
+    res = analyse_point(shared, 0, point)
+    cpu.append(time.process_time() - t0)
+    if res.status == 2:
+        raise RuntimeError(f"study point {point} failed: {res.reason}")
+clock.remove()
+print(json.dumps({"cpu": cpu, "stages": {k: v / n for k, v in clock.cpu.items()}}))
+"""
+
+
+def _export(rev: str, tmp: Path) -> Path:
+    """The tree of commit ``rev`` in a directory of its own (``git archive``)."""
+    dest = tmp / f"tree-{rev}"
+    dest.mkdir()
+    archive = subprocess.run(["git", "-C", str(ROOT), "archive", rev], check=True,
+                             capture_output=True).stdout
+    subprocess.run(["tar", "-x", "-C", str(dest)], input=archive, check=True)
+    return dest
+
+
+def measure(tree: Path, points: int) -> dict:
+    """The child's result for one tree: ``cpu`` per point [s], ``stages`` [s per point]."""
+    env = {**os.environ, "PYTHONPATH": str(tree)}
+    out = subprocess.run([sys.executable, "-c", _CHILD, str(ROOT / "benchmarks"), str(points),
+                          str(TORQUE), json.dumps(EXTRA)], cwd=tree, env=env, check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def main(argv: list[str] | None = None) -> None:
+    import statistics
+
+    from tabulate import tabulate
+
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--before", help="also measure this commit (git archive)")
+    ap.add_argument("--points", type=int, default=8, help="study points per tree (8)")
+    args = ap.parse_args(argv)
+    with tempfile.TemporaryDirectory(prefix="study_point_") as tmp:
+        trees = [("this tree", ROOT)]
+        if args.before:
+            trees.insert(0, (args.before, _export(args.before, Path(tmp))))
+        res = {name: measure(tree, args.points) for name, tree in trees}
+    names = [name for name, _ in trees]
+    stages = sorted({s for r in res.values() for s in r["stages"]},
+                    key=lambda s: -res["this tree"]["stages"].get(s, 0.0))
+    rows = [[s, *(1e3 * res[n]["stages"].get(s, 0.0) for n in names)] for s in stages]
+    rows.append(["point, mean", *(1e3 * statistics.mean(res[n]["cpu"]) for n in names)])
+    rows.append(["point, median", *(1e3 * statistics.median(res[n]["cpu"]) for n in names)])
+    if len(names) == 2:
+        for r in rows:
+            r.append(f"{r[2] / r[1]:.2f}" if r[1] else "")
+        names.append("ratio")
+    print(f"a study point's CPU [ms] by stage (exclusive), {args.points} points, "
+          f"{TORQUE:g} N·m; target 120 ms")
+    print(tabulate(rows, headers=["stage", *names], floatfmt=".1f"))
+
+
+if __name__ == "__main__":
+    main()
