@@ -482,7 +482,7 @@ def dense_solver(factor, reference: Callable[[np.ndarray], np.ndarray]
                 z, x = cholmod_solve(_SOLVE_LT, y, n, k)
                 try:
                     del y
-                    out[fw.perm] = z.T  # x = Pᵀ z
+                    out.T[:, fw.perm] = z  # x = Pᵀ z (by columns: contiguous)
                 finally:
                     free(ctypes.byref(x), common)
                 if check("forward", rhs, out):
