@@ -479,3 +479,26 @@ def test_a_worker_session_factorises_one_matrix_after_another(monkeypatch, share
     finally:
         for f in outside:
             f.close()
+
+
+@pytest.mark.parametrize(("env", "expected", "after"), [
+    ({}, "1", "1"),
+    ({"OMP_NUM_THREADS": "4"}, None, None),
+    ({"OPENBLAS_NUM_THREADS": "2"}, None, "2"),
+    ({"HYPOID_LTCA_BLAS_THREADS": "3"}, "3", "3"),
+    ({"HYPOID_LTCA_BLAS_THREADS": "0"}, None, None),
+])
+def test_the_worker_takes_one_blas_thread_unless_told(monkeypatch, env, expected, after):
+    """The solver worker's NumPy BLAS (the forward solves' products) gets the toolkit's
+    thread count before NumPy loads: one thread where the environment names none, the
+    toolkit's own variable first, the user's OpenBLAS/OpenMP/MKL setting left alone."""
+    from contact.compliance.fe.solver_worker import one_blas_thread
+
+    for name in ("HYPOID_LTCA_BLAS_THREADS", "OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS",
+                 "MKL_NUM_THREADS"):
+        monkeypatch.delenv(name, raising=False)
+    for name, value in env.items():
+        monkeypatch.setenv(name, value)
+    assert one_blas_thread() == expected
+    import os
+    assert os.environ.get("OPENBLAS_NUM_THREADS") == after
