@@ -107,7 +107,7 @@ def test_the_coast_design_torque_is_unchanged_by_a_round_off_change_of_the_tools
     (:data:`contact.optimize.development_coast.CLOSENESS`: it stops where the torque that
     holds and the one that fails are within 5 %). Measured: 110.9 and 110.9 N·m; before
     the corner curves were left out of the flank peak, a 1e-13 change of the tools moved
-    it 69.5 ↔ 112.2 N·m (issue 71). ≈ 2 × 50 s CPU."""
+    it 69.5 ↔ 112.2 N·m (issue 71). ≈ 2 min CPU (two developments)."""
     import geometry.synthesis.case_synthesis as cs
     from contact.optimize.development import develop
     from contact.optimize.development_coast import CLOSENESS
