@@ -185,8 +185,10 @@ def pitting_safety(tree) -> tuple[np.ndarray, float, str]:
     with an ISO 10300 ``/rating`` at the LTCA's torques: the local flank safety at long life.
 
     S_H,loc = σ_HP,∞ / (p_max √(K_A K_v)), with p_max the LTCA's peak flank (contact-curve)
-    pressure at each torque [MPa] (``/ltca/pressure_max_flank``; edge contact apart, as the
-    duty cycle counts it), K_A and K_v the rating's, and σ_HP,∞ = σ_Hlim Z_X Z_L Z_v Z_R Z_W
+    pressure at each torque [MPa] (``/ltca/pressure_max_flank`` without the curves shorter
+    than their contact width,
+    :func:`contact.optimize.development_evaluate.flank_peak_pressure`; edge contact apart,
+    as the duty cycle counts it), K_A and K_v the rating's, and σ_HP,∞ = σ_Hlim Z_X Z_L Z_v Z_R Z_W
     Z_K Z_Hyp per member [MPa] the rating's permissible stress at long life (Z_NT = 1,
     whatever ``load_cycles`` says).
 
@@ -228,7 +230,11 @@ def pitting_safety(tree) -> tuple[np.ndarray, float, str]:
     if rt is None or not need <= set(rt.variables):
         raise LookupError("no ISO 10300 rating (a pinion speed and a [rating] material are "
                           "needed)")
-    p = np.asarray(lt["pressure_max_flank"].values, float)
+    from contact.optimize.development_evaluate import flank_peak_pressure
+
+    # the contact curves' peak without those shorter than their contact width, as the
+    # development's metrics read it (flank_peak_pressure: a curve clipped to a corner)
+    p = flank_peak_pressure(lt)
     if not np.array_equal(np.asarray(rt["torque"].values, float),
                           np.asarray(lt["torque"].values, float)):
         raise LookupError("no ISO 10300 rating at the analysed torques")
