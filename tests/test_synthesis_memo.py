@@ -84,15 +84,14 @@ def test_the_memo_keeps_steps_3_to_6_and_changes_nothing():
         return [k for k in entries if k[0] in ("concave", "convex")]
 
     assert len(flanks()) == 2  # its drive (concave) and coast (convex) flank
-    assert len(entries) == 13  # their tip planes (step 8), the gear flanks' design points,
-    # the blanks, each blade side's last placement (the next placement's start) and its
-    # root-line points at the tip (the next placement's root lines start there), and each
+    assert len(entries) == 11  # their tip planes (step 8), the gear flanks' design points,
+    # the blanks, each blade side's last placement (the next placement's start) and each
     # flank's warm start of step 5
     relieved = with_flank_options(basic, "concave", {"path_angle": -60.0, "tip_relief": 25.0,
                                                       "relief_start": 0.4})
     kept, _ = synthesize(relieved, memo=memo, progress=lines.append)
     assert len(flanks()) == 2  # only the relief was made again
-    assert len(entries) == 14  # and the drive flank's tip plane: the coast's was kept
+    assert len(entries) == 12  # and the drive flank's tip plane: the coast's was kept
     assert sum("kept from an earlier synthesis" in line for line in lines) == 6
     other = with_flank_options(basic, "concave", {"path_angle": -50.0})
     warm, _ = synthesize(other, memo=memo, tip_planes=False)

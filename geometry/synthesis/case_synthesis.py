@@ -811,15 +811,13 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
         # variants: the same tip plane within its tolerance, fewer root lines)
         last = ("tip plane last", t.blade.side)
         start = None if memo is None else memo.get(last)
-        # and its root line's points at the tip, the root lines' Newton starts
-        tips = None if memo is None else memo.get(("tip plane tips", t.blade.side))
         refused = ("tip plane refused", *key[1:], start)
         if memo is not None and refused in memo:  # tried from this start: the same error
             raise memo[refused]
         try:
             try:
                 placed = tip_plane_on_root_cone(t.blade, t.settings, pair.pinion_blank,
-                                                pair.pinion_hand, start=start, tips=tips)
+                                                pair.pinion_hand, start=start)
             except InputError as exc:
                 if NOT_GENERATED_WORDS in str(exc):
                     # the fields of the basic file that let the blade cut it (issue 71)
@@ -839,7 +837,6 @@ def _tip_on_root_cone(fs: FlankSynthesis, pair: _PairData,
         if memo is not None:
             memo[key] = placed
             memo[last] = (placed.moved, placed.u_touch)
-            memo[("tip plane tips", t.blade.side)] = placed.tips
     return replace(fs, tools=t._replace(blade=placed.blade, settings=placed.settings),
                    tip_moved=placed.moved)
 

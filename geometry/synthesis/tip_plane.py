@@ -260,9 +260,6 @@ class TipPlacement(NamedTuple):
     moved: float  # [mm] Δ of :func:`move_tip_plane` from the given tip plane
     u_touch: float  # [1] lengthwise fraction where the root line touches the root cone
     root_line: RootLine  # of the placed tip plane at the sample fractions
-    #: (u (n,), (n, 3) θ [rad], q [rad], v [1]) of its last root line over the face at
-    #: s = 0: a near cut's placement solves its root lines from there (``tips``)
-    tips: tuple[np.ndarray, np.ndarray] | None = None
 
 
 def _started(blade: Blade, settings: MachineSettings, start: tuple[float, float] | None
@@ -284,8 +281,7 @@ class _RootLines:
     fractions u (default the samples).
 
     The fillet march's starts are solved once on the given cut's sampled sections (the
-    envelope over a section is a third of a root line's cost; where a march is first
-    needed) and reused, interpolated
+    envelope over a section is a third of a root line's cost) and reused, interpolated
     between the samples, for the moved tip planes and the sections between: the march
     solves each root-line point from them to its Newton tolerance; a line it does not
     complete from them is solved from its own starts. Once a root line over the whole face
@@ -293,20 +289,20 @@ class _RootLines:
     (interpolated between its sections): one Newton solve instead of the march's
     :data:`geometry.machine.root_line.EDGE_STEPS` (issue 75; the same points to the
     Newton tolerance), the march where that solve does not converge within
-    :data:`_TIP_REACH` of its start. ``tips``: such points of a near cut to start from (a
-    development's last placement of the same blade side).
+    :data:`_TIP_REACH` of its start. ``march``: the march in any case — each whole search's
+    line over the samples (:func:`tip_plane_on_root_cone`), whose sections the march does
+    not reach s = 0 on are "not generated" and refused as before: a solve at s = 0 from a
+    near line can converge where the march from the cut's own flank does not (the spiral
+    bevel 19x23's heel sections under a large root relief, whose flank is generated only
+    from the profile section up; tests/test_development.py).
     """
 
-    def __init__(self, blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
-                 tips: tuple[np.ndarray, np.ndarray] | None = None):
-        self.blade, self.settings, self.blank, self.hand = blade, settings, blank, hand
-        self.sampled: np.ndarray | None = None  # the march's starts, made when first needed
-        self.tips = tips  # u (n,), θ q v (n, 3)
+    def __init__(self, blade: Blade, settings: MachineSettings, blank: Blank, hand: str):
+        self.blank, self.hand = blank, hand
+        _, _, self.sampled = section_envelope(blade, settings, blank, _U_SAMPLES)
+        self.tips: tuple[np.ndarray, np.ndarray] | None = None  # u (n,), θ q v (n, 3)
 
     def _marched(self, b: Blade, s: MachineSettings, u: np.ndarray):
-        if self.sampled is None:
-            _, _, self.sampled = section_envelope(self.blade, self.settings, self.blank,
-                                                  _U_SAMPLES)
         blank, hand, sampled = self.blank, self.hand, self.sampled
         if np.all(np.isfinite(sampled)):  # between the samples: interpolated starts
             start = np.column_stack([np.interp(u, _U_SAMPLES, c) for c in sampled.T])
@@ -315,10 +311,11 @@ class _RootLines:
                 return pts, x
         return root_line_points(b, s, blank, hand, u, solution=True)
 
-    def __call__(self, b: Blade, s: MachineSettings, u=_U_SAMPLES) -> RootLine:
+    def __call__(self, b: Blade, s: MachineSettings, u=_U_SAMPLES, *,
+                 march: bool = False) -> RootLine:
         u = np.atleast_1d(np.asarray(u, dtype=float))
         pts = x = None
-        if self.tips is not None:
+        if self.tips is not None and not march:
             x0 = np.column_stack([np.interp(u, self.tips[0], c) for c in self.tips[1].T])
             pts, x = root_line_points(b, s, self.blank, self.hand, u, at_tip=x0,
                                       solution=True)
@@ -336,9 +333,7 @@ class _RootLines:
 
 def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank,
                            hand: str, *, tol: float = TOUCH_TOLERANCE,
-                           start: tuple[float, float] | None = None,
-                           tips: tuple[np.ndarray, np.ndarray] | None = None
-                           ) -> TipPlacement:
+                           start: tuple[float, float] | None = None) -> TipPlacement:
     """The tip plane whose generated root line touches the blank's root cone from below.
 
     Parameters
@@ -355,10 +350,6 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
         differ by micrometres; issue 75). The placement found meets ``tol`` and is
         confirmed by the whole search as without it: the same tip plane within ``tol``.
         A start the blade cannot take (:func:`move_tip_plane` refuses it) is ignored.
-    tips : (ndarray (n,), ndarray (n, 3)), optional — a near cut's root-line points at
-        s = 0 (its :attr:`TipPlacement.tips`): the root lines are solved from there
-        instead of by the fillet march from this cut's envelope (the same points to the
-        Newton tolerance; the march where that does not converge near them).
 
     Returns
     -------
@@ -390,13 +381,17 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
         raise InputError("settings: only a Generate cut's tip plane is placed on the root "
                          "cone (a Formate tip plane holds a root generatrix already)")
 
-    # the root lines of the moved cuts: marched, then solved at the tip (_RootLines)
-    root_line = _RootLines(blade, settings, blank, hand, tips)
+    # the fillet march's starts, solved once on the given cut's sampled sections (the
+    # envelope over a section is a third of a root line's cost) and reused, interpolated
+    # between the samples, for the moved tip planes and the sections between: the march
+    # solves each root-line point from them to its Newton tolerance; a line it does not
+    # complete from them is solved from its own starts
+    root_line = _RootLines(blade, settings, blank, hand)
 
     last_search: list = [None]  # (b, s, root line) of the last whole search
 
     def highest(b: Blade, s: MachineSettings) -> tuple[float, float]:
-        line = root_line(b, s)
+        line = root_line(b, s, march=True)
         last_search[0] = (b, s, line)
         if not np.all(np.isfinite(line.depth)):
             bad = line.u[~np.isfinite(line.depth)]
@@ -460,4 +455,4 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     # (the same call, the same line), else computed
     kept = last_search[0]
     line = kept[2] if kept is not None and kept[0] is b and kept[1] is s else root_line(b, s)
-    return TipPlacement(b, s, moved, u_top, line, root_line.tips)
+    return TipPlacement(b, s, moved, u_top, line)
