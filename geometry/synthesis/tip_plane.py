@@ -375,7 +375,9 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     next: there the point inside is higher and the interval is searched); the move is
     solved by secant steps (the root line moves with the tip plane nearly one to one, and
     nearly as a whole: between the steps only the samples and the last highest point's
-    section are evaluated, and the whole search confirms the converged placement).
+    section are evaluated, and the whole search confirms the converged placement). Each
+    whole search's sample line is the fillet march's; the other root lines are solved at
+    the blade tip from the last line's points (:class:`_RootLines`; issue 75).
     """
     if settings.process != "Generate":
         raise InputError("settings: only a Generate cut's tip plane is placed on the root "
