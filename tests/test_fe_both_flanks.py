@@ -8,7 +8,13 @@ import numpy as np
 import xarray as xr
 
 from contact.catalogue import bundled_case_path
-from contact.compliance.fe import FEOptions, cache_key, cache_path, influence_coefficients
+from contact.compliance.fe import (
+    CACHE_ENV,
+    FEOptions,
+    cache_key,
+    cache_path,
+    influence_coefficients,
+)
 from contact.compliance.fe.options import member_flank
 from geometry.case import load_case
 
@@ -72,7 +78,7 @@ def test_without_the_cache_the_other_flank_is_not_built(tmp_path, monkeypatch):
 
 
 def test_the_development_builds_both_flanks_of_each_member_and_survives_a_failure(
-        monkeypatch, caplog):
+        monkeypatch, caplog, tmp_path):
     """``both_flanks_built`` (called by the development before its drive check where the
     coast flank is checked too) asks each member's default model for its drive flank with
     ``other_flank``, and a member whose model fails is logged, not raised: its checks then
@@ -90,10 +96,34 @@ def test_the_development_builds_both_flanks_of_each_member_and_survives_a_failur
             raise RuntimeError("mapped fillet inverted")
 
     monkeypatch.setattr(fe, "influence_coefficients", fake)
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))  # nothing cached: both built
     with caplog.at_level(logging.INFO, logger="contact.optimize.development_root"):
         both_flanks_built(_case())
     assert calls == [("pinion", "drive", None, True), ("gear", "drive", None, True)]
     assert "pinion's FE models of both flanks not built: mapped fillet inverted" in caplog.text
+
+
+def test_the_development_reads_a_cached_drive_model_once_for_its_checks(monkeypatch,
+                                                                        tmp_path):
+    """Where a member's drive entry is cached, ``both_flanks_built`` reads it through the
+    process's memo that the root-stress checks read it from
+    (``contact_compliance.shared_coefficients``; issue 75: read there and again in the
+    check before), and builds nothing. The reads are stubbed: milliseconds."""
+    import contact.compliance.fe as fe
+    import contact.compliance.fe.contact_compliance as cc
+    from contact.optimize.development_root import both_flanks_built
+
+    case = _case()
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))
+    key = cache_key(case.member("gear"), member_flank(case, "gear", "drive"), FEOptions())
+    cache_path(key).write_bytes(b"")  # the gear's entry exists (its content not read)
+    built, read = [], []
+    monkeypatch.setattr(fe, "influence_coefficients",
+                        lambda case, member, flank="drive", *a, **kw: built.append(member))
+    monkeypatch.setattr(cc, "shared_coefficients",
+                        lambda case, member, flank="drive", *a, **kw: read.append(member))
+    both_flanks_built(case)
+    assert built == ["pinion"] and read == ["gear"]
 
 
 def test_a_failing_other_flank_leaves_this_flanks_result_and_cache(tmp_path, monkeypatch,

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 
 from contact.compliance.fe import cholmod_dense
 from contact.compliance.fe.cholmod_dense import dense_solver
@@ -204,6 +205,98 @@ def test_lattice_dissection_orders_the_free_dofs_with_less_fill_and_solves_alike
     _assert_ordering_solves_alike(model, fixed, order, seed=15, columns=12)
 
 
+def _block_factor():
+    """A block of 16 × 4 × 8 quadratic elements held at one end, its lattice ordering and
+    CHOLMOD's supernodal factor of it as the FE build makes it (``cholmod_kernel``)."""
+    from contact.compliance.fe.elasticity import _free_lower, lattice_dissection
+
+    mm = mapped_mesh((16, 4, 8), lambda p: np.vstack([2.0 * p[0], 1.5 * p[1], p[2]]))
+    model = elastic_model(mm.mesh, "hex20", 206000.0, 0.3, lower=True)
+    n = model.basis.N
+    clamp = mm.nodes_where(lambda p: p[0] < 1e-9)
+    clamp = clamp[clamp < n]
+    fixed = (3 * clamp[:, None] + np.arange(3)).ravel()
+    free = np.setdiff1d(np.arange(model.n_dofs), fixed)
+    order = lattice_dissection(np.rint(2.0 * mm.param_nodes[:, :n]).astype(np.int64), free)
+    low = _free_lower(model.stiffness, free)
+    solve, _ = cholmod_dense.cholmod_kernel([(low.data, low.indices, low.indptr, free.size,
+                                              order)])
+    full = (low + sp.tril(low, -1).T).tocsc()
+    # loads on a patch of the top face near the free end: nodes at z = 8, x >= 26
+    top = mm.nodes_where(lambda p: (p[2] > 8 - 1e-9) & (p[0] > 13 - 1e-9))
+    top = top[top < n]
+    return solve, full, free, top
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="found on Linux only")
+def test_forward_solve_over_the_loaded_supernodes_equals_the_whole_solve(monkeypatch):
+    """Right-hand sides on a few rows (unit loads on a patch of one face, issue 75) are
+    solved forward over the supernodes they reach only (``SupernodalForward``: the
+    ancestors of their rows' supernodes in the elimination tree, Gilbert 1994) and
+    backward by CHOLMOD: the displacements equal SuperLU's of the same matrix to 1e-10 of
+    the largest (another factorisation: round-off of a matrix of condition ~1e6) and
+    CHOLMOD's whole solve of the same factor to 1e-12 (the same triangular factors, the
+    forward sums in another order); dense right-hand sides, which reach more than
+    ``FORWARD_SHARE`` of the factor, take CHOLMOD's whole solve."""
+    import scipy.sparse.linalg as sla
+
+    calls = []
+    real = cholmod_dense.SupernodalForward.__call__
+
+    def counted(self, b, rows, supernodes):
+        calls.append(self.share(supernodes))
+        return real(self, b, rows, supernodes)
+
+    monkeypatch.setattr(cholmod_dense.SupernodalForward, "__call__", counted)
+    solve, full, free, top = _block_factor()
+    position = np.full(3 * (free.max() // 3 + 1), -1)
+    position[free] = np.arange(free.size)
+    rows = position[(3 * top[:, None] + np.arange(3)).ravel()]
+    rows = rows[rows >= 0]
+    rng = np.random.default_rng(17)
+    b = np.zeros((free.size, 24))
+    b[rows] = rng.standard_normal((rows.size, 24))
+    b[:, 5] = 0.0
+    got = solve(b)
+    assert len(calls) == 1 and 0.0 < calls[0] < cholmod_dense.FORWARD_SHARE
+    lu = sla.splu(full)
+    ref = lu.solve(b)
+    scale = np.abs(ref).max()
+    np.testing.assert_allclose(got, ref, rtol=0, atol=1e-10 * scale)
+    assert not got[:, 5].any()
+    monkeypatch.setattr(cholmod_dense, "FORWARD_SHARE", -1.0)  # the whole solve
+    whole = solve(b)
+    assert len(calls) == 1
+    np.testing.assert_allclose(got, whole, rtol=0, atol=1e-12 * scale)
+    monkeypatch.setattr(cholmod_dense, "FORWARD_SHARE", 0.5)
+    dense = rng.standard_normal((free.size, 3))
+    np.testing.assert_allclose(solve(dense), lu.solve(dense), rtol=0,
+                               atol=1e-10 * np.abs(lu.solve(dense)).max())
+    assert len(calls) == 1  # dense right-hand sides reach every supernode
+
+
+def test_supernodal_arrays_refuse_a_simplicial_factor():
+    """A factor that is not supernodal LLᵀ (cvxopt's simplicial default on a small matrix)
+    is not read as one: no forward solve of ours, CHOLMOD's whole solve only."""
+    from cvxopt import cholmod
+
+    model, fixed = _cantilever()
+    saved = dict(cholmod.options)
+    cholmod.options["supernodal"] = 0
+    try:
+        factor, own, free = _factor(model, fixed)
+    finally:
+        cholmod.options.clear()
+        cholmod.options.update(saved)
+    pointer = cholmod_dense._factor_pointer(factor)
+    assert pointer is not None
+    assert cholmod_dense._supernodal_arrays(pointer) is None
+    b = np.zeros((free.size, 2))
+    b[:6] = 1.0
+    np.testing.assert_allclose(dense_solver(factor, own)(b), own(b), rtol=0,
+                               atol=1e-12 * np.abs(own(b)).max())
+
+
 def test_lattice_dissection_refuses_a_lattice_of_other_nodes():
     """A lattice of fewer nodes than the free dofs name is refused (not a permutation)."""
     from contact.compliance.fe.elasticity import lattice_dissection
@@ -386,3 +479,26 @@ def test_a_worker_session_factorises_one_matrix_after_another(monkeypatch, share
     finally:
         for f in outside:
             f.close()
+
+
+@pytest.mark.parametrize(("env", "expected", "after"), [
+    ({}, "1", "1"),
+    ({"OMP_NUM_THREADS": "4"}, None, None),
+    ({"OPENBLAS_NUM_THREADS": "2"}, None, "2"),
+    ({"HYPOID_LTCA_BLAS_THREADS": "3"}, "3", "3"),
+    ({"HYPOID_LTCA_BLAS_THREADS": "0"}, None, None),
+])
+def test_the_worker_takes_one_blas_thread_unless_told(monkeypatch, env, expected, after):
+    """The solver worker's NumPy BLAS (the forward solves' products) gets the toolkit's
+    thread count before NumPy loads: one thread where the environment names none, the
+    toolkit's own variable first, the user's OpenBLAS/OpenMP/MKL setting left alone."""
+    from contact.compliance.fe.solver_worker import one_blas_thread
+
+    for name in ("HYPOID_LTCA_BLAS_THREADS", "OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS",
+                 "MKL_NUM_THREADS"):
+        monkeypatch.delenv(name, raising=False)
+    for name, value in env.items():
+        monkeypatch.setenv(name, value)
+    assert one_blas_thread() == expected
+    import os
+    assert os.environ.get("OPENBLAS_NUM_THREADS") == after

@@ -401,7 +401,7 @@ def test_a_placement_from_a_near_start_is_the_same_tip_plane():
     tool = mem.flank("concave")
     blade, settings = tp.move_tip_plane(tool.blade, tool.machine, 0.05)
     counted = []
-    line = tp.generated_root_line
+    line = tp.root_line_points
 
     def counting(*args, **kwargs):
         counted.append(1)
@@ -410,7 +410,7 @@ def test_a_placement_from_a_near_start_is_the_same_tip_plane():
     cold = tp.tip_plane_on_root_cone(blade, settings, mem.blank, mem.hand)
     assert abs(cold.moved + 0.05) <= 1e-6
     try:
-        tp.generated_root_line = counting
+        tp.root_line_points = counting
         warm = tp.tip_plane_on_root_cone(blade, settings, mem.blank, mem.hand,
                                          start=(cold.moved + 0.002, cold.u_touch))
         n_warm = len(counted)
@@ -418,7 +418,7 @@ def test_a_placement_from_a_near_start_is_the_same_tip_plane():
         again = tp.tip_plane_on_root_cone(blade, settings, mem.blank, mem.hand)
         n_cold = len(counted)
     finally:
-        tp.generated_root_line = line
+        tp.root_line_points = line
     assert abs(warm.moved - cold.moved) <= 1e-9 and again.moved == cold.moved
     assert abs(float(warm.root_line.depth.min())) <= 1e-6
     assert n_warm < n_cold, (n_warm, n_cold)
@@ -426,6 +426,36 @@ def test_a_placement_from_a_near_start_is_the_same_tip_plane():
                                     start=(-blade.toprem_height - 1.0, 0.5))
     assert bad.moved == cold.moved
 
+
+
+@pytest.mark.parametrize("name", [DEFAULT, "kolivand2009_fh_12x41_reference"])
+def test_root_line_solved_at_the_tip_from_a_near_cut_is_the_marched_one(name):
+    """``root_line_points(at_tip=...)`` (Newton's method at s = 0 alone from a nearby
+    cut's root-line points, interpolated between its sections, as the tip-plane placement
+    solves its later root lines; issue 75) gives the points the fillet march gives from
+    the cut's own starts: the cut's tip plane moved 0.3 mm deeper, started from the
+    unmoved cut's points at every other of 11 sections, the 21 sections' v within 1e-9
+    (both solved to the Newton tolerance 1e-10 mm; measured ≤ 5e-12) and φ within 1e-9
+    rad (measured ≤ 2e-13), face milling and face hobbing."""
+    from geometry.machine.root_line import root_line_points
+    from geometry.synthesis.tip_plane import move_tip_plane
+
+    mem = _case(name).pinion
+    for flank in ("concave", "convex"):
+        tool = mem.flank(flank)
+        coarse = np.linspace(0.0, 1.0, 11)
+        _, x0 = root_line_points(tool.blade, tool.machine, mem.blank, mem.hand, coarse,
+                                 solution=True)
+        assert np.all(np.isfinite(x0))
+        blade, settings = move_tip_plane(tool.blade, tool.machine, 0.3)
+        u = np.linspace(0.0, 1.0, 21)
+        start = np.column_stack([np.interp(u, coarse, c) for c in x0.T])
+        marched = root_line_points(blade, settings, mem.blank, mem.hand, u)
+        solved, x = root_line_points(blade, settings, mem.blank, mem.hand, u,
+                                     at_tip=start, solution=True)
+        assert np.all(np.isfinite(marched)) and np.all(np.isfinite(x))
+        np.testing.assert_allclose(solved, marched, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(x[:, 2], solved[:, 0], rtol=0, atol=0)
 
 def test_tip_plane_refusals():
     """A move that takes the toprem corner below the edge radius, a depth that is not

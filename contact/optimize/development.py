@@ -140,6 +140,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
     design_torque_of,
     evaluation_line,
     evaluator,
+    flank_peak_pressure,
     grid_bounds,
     ltca_metrics,
     lte_spread,

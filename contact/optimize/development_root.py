@@ -124,6 +124,21 @@ def _in_worker_session(function: Callable) -> Callable:
     return wrapper
 
 
+def _drive_cached(case, member: str) -> bool:
+    """Whether the member's default FE model of its drive flank has a cache entry (its
+    file exists; :func:`contact.compliance.fe.contact_compliance.shared_coefficients`
+    checks it when it reads it and builds it again where it fails a check)."""
+    from contact.compliance.fe.cache import cache_key, cache_path
+    from contact.compliance.fe.options import FEOptions, member_flank
+
+    try:
+        key = cache_key(case.member(member), member_flank(case, member, "drive"),
+                        FEOptions())
+        return cache_path(key).is_file()
+    except OSError:
+        return False
+
+
 @_in_worker_session
 def both_flanks_built(case, earlier=None,
                       say: Callable[[str], None] | None = None) -> dict[str, float]:
@@ -132,7 +147,9 @@ def both_flanks_built(case, earlier=None,
     flank's coefficients on the drive build's solid and factorisation, the same numbers as
     a build of their own), cached for the drive flank's root-stress check, the coast
     flank's and ``ltca run`` afterwards: 1.4–1.5 builds per member instead of 2 (issue 75).
-    Nothing where both are cached. A failure is logged and not raised: each check then
+    Where the drive flank's entry is cached, it is read into the process's memo the
+    root-stress checks read it from (:func:`contact.compliance.fe.contact_compliance.
+    shared_coefficients`), nothing built. A failure is logged and not raised: each check then
     builds (or fails to build) its own model and says so, as before.
 
     ``earlier``: the case whose models were built before (a re-synthesis of it is
@@ -151,6 +168,7 @@ def both_flanks_built(case, earlier=None,
         coefficients were kept (empty where none)
     """
     from contact.compliance.fe import influence_coefficients
+    from contact.compliance.fe.contact_compliance import shared_coefficients
     from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION, reuse_near_model
 
     kept = {}
@@ -173,7 +191,14 @@ def both_flanks_built(case, earlier=None,
             elif refused and say is not None:
                 say(f"development: the {member}'s FE models built again: {refused[0]}")
         try:
-            influence_coefficients(case, member, "drive", progress=False, other_flank=True)
+            if _drive_cached(case, member):
+                # read once for the root-stress checks that follow (the process's memo of
+                # contact.compliance.fe.contact_compliance.shared_coefficients): read
+                # here and again there, ~0.25 s of CPU per file (issue 75)
+                shared_coefficients(case, member, "drive", progress=False)
+            else:
+                influence_coefficients(case, member, "drive", progress=False,
+                                       other_flank=True)
         except Exception as exc:  # the checks build their own and report (never fatal)
             log.info("development: the %s's FE models of both flanks not built: %s",
                      member, exc)
@@ -185,8 +210,10 @@ def pitting_safety(tree) -> tuple[np.ndarray, float, str]:
     with an ISO 10300 ``/rating`` at the LTCA's torques: the local flank safety at long life.
 
     S_H,loc = σ_HP,∞ / (p_max √(K_A K_v)), with p_max the LTCA's peak flank (contact-curve)
-    pressure at each torque [MPa] (``/ltca/pressure_max_flank``; edge contact apart, as the
-    duty cycle counts it), K_A and K_v the rating's, and σ_HP,∞ = σ_Hlim Z_X Z_L Z_v Z_R Z_W
+    pressure at each torque [MPa] (``/ltca/pressure_max_flank`` without the curves shorter
+    than their contact width,
+    :func:`contact.optimize.development_evaluate.flank_peak_pressure`; edge contact apart,
+    as the duty cycle counts it), K_A and K_v the rating's, and σ_HP,∞ = σ_Hlim Z_X Z_L Z_v Z_R Z_W
     Z_K Z_Hyp per member [MPa] the rating's permissible stress at long life (Z_NT = 1,
     whatever ``load_cycles`` says).
 
@@ -228,7 +255,11 @@ def pitting_safety(tree) -> tuple[np.ndarray, float, str]:
     if rt is None or not need <= set(rt.variables):
         raise LookupError("no ISO 10300 rating (a pinion speed and a [rating] material are "
                           "needed)")
-    p = np.asarray(lt["pressure_max_flank"].values, float)
+    from contact.optimize.development_evaluate import flank_peak_pressure
+
+    # the contact curves' peak without those shorter than their contact width, as the
+    # development's metrics read it (flank_peak_pressure: a curve clipped to a corner)
+    p = flank_peak_pressure(lt)
     if not np.array_equal(np.asarray(rt["torque"].values, float),
                           np.asarray(lt["torque"].values, float)):
         raise LookupError("no ISO 10300 rating at the analysed torques")

@@ -152,7 +152,9 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
             break
         xi = x[idx].copy()
         ok = np.zeros(idx.size, bool)
+        r_at = None  # the family's points at xi where the last evaluation was there
         for _ in range(NEWTON_ITER):
+            r_at = None
             th, q, v = xi.T
             # the family's buffer kept for the meshing function (meshing_function would
             # stack the views of it back into one)
@@ -180,12 +182,14 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
             if gen:
                 err = np.maximum(err, length * np.abs(res[:, 2]))
             ok = err < NEWTON_TOL
+            r_at = r
             if ok.all():
                 break
             try:
                 dx = np.linalg.solve(jac, -res[..., None])[..., 0]
             except np.linalg.LinAlgError:
                 break
+            r_at = None
             lim = STEP_LIMIT[[0, 1, 2] if gen else [0, 2]]
             fac = np.minimum(1.0, np.min(lim / np.maximum(np.abs(dx), 1e-300), axis=1))
             step = fac[:, None] * dx
@@ -198,10 +202,13 @@ def section_march(blade: Blade, settings: MachineSettings, blank: Blank, corners
         alive[idx[~good]] = False
         gi = idx[good]
         x[gi] = xi[good]
-        fam = generated_family(blade, settings, s[gi], x[gi, 0],
-                               x[gi, 1] if gen else np.zeros(gi.size), sections=sections,
-                               links=links)
-        pos = fam.r * (MIRROR if mirror else 1.0)
+        if r_at is None:
+            r_at = generated_family(blade, settings, s[gi], x[gi, 0],
+                                    x[gi, 1] if gen else np.zeros(gi.size),
+                                    sections=sections, links=links).r
+        else:  # the last Newton evaluation was at these points: the same numbers
+            r_at = r_at[good]
+        pos = r_at * (MIRROR if mirror else 1.0)
         s_out[gi, j], v_out[gi, j] = s[gi], x[gi, 2]
         phi_out[gi, j] = np.arctan2(pos[:, 1], pos[:, 0])
     return s_out, v_out, phi_out, np.where(alive[:, None], x, np.nan)
@@ -226,7 +233,8 @@ def tip_sections(blade: Blade) -> ProfileSections:
 
 
 def root_line_points(blade: Blade, settings: MachineSettings, blank: Blank, hand: str,
-                     u, start: np.ndarray | None = None) -> np.ndarray:
+                     u, start: np.ndarray | None = None, *, at_tip: np.ndarray | None = None,
+                     solution: bool = False):
     """(K, 2) v [1], φ [rad] of a cut's root line in the sections ``u`` (K,) [1].
 
     The generated points of the blade's s = 0 point, where its edge radius leaves the tip
@@ -239,15 +247,33 @@ def root_line_points(blade: Blade, settings: MachineSettings, blank: Blank, hand
     reuses them over its iterations); the march solves each of its points to the Newton
     tolerance from there, so the points are the same as from this cut's own starts
     (solved by default) wherever the march reaches s = 0.
+
+    ``at_tip`` (K, 3), optional: θ [rad], q [rad], v [1] near each section's root-line
+    point, e.g. a nearby cut's root line (``solution``) or its neighbours' interpolated:
+    instead of the march, Newton's method at s = 0 alone from there (one step of
+    :func:`section_march` instead of :data:`EDGE_STEPS`; issue 75). The same points to
+    the Newton tolerance where it converges; NaN where not (the caller marches).
+    ``start`` is not used then.
+
+    ``solution``: return also (K, 3) θ, q, v of each root-line point (NaN where none).
     """
     u = np.atleast_1d(np.asarray(u, dtype=float))
     corners = blank_outline(blank).corners
-    if start is None:
-        _, _, start = section_envelope(blade, settings, blank, u)
-    sm, vm, pm, _ = section_march(blade, settings, blank, corners, u, start, hand == "left")
+    if at_tip is not None:
+        start = np.column_stack([np.zeros(u.size), np.asarray(at_tip, dtype=float)])
+        steps = 1
+    else:
+        if start is None:
+            _, _, start = section_envelope(blade, settings, blank, u)
+        steps = EDGE_STEPS
+    sm, vm, pm, last = section_march(blade, settings, blank, corners, u, start,
+                                     hand == "left", steps=steps)
     at0 = np.isfinite(sm[:, -1]) & (np.abs(sm[:, -1]) < 1e-12)
-    return np.column_stack([np.where(at0, vm[:, -1], np.nan),
-                            np.where(at0, pm[:, -1], np.nan)])
+    points = np.column_stack([np.where(at0, vm[:, -1], np.nan),
+                              np.where(at0, pm[:, -1], np.nan)])
+    if solution:
+        return points, np.where(at0[:, None], last, np.nan)
+    return points
 
 
 def below_root_cone(blank_or_corners, u, v) -> np.ndarray:

@@ -73,6 +73,10 @@ _END_PROBE = 1e-3
 #: parabola through the last level's three highest points
 _REFINE_POINTS = 17
 _REFINE_LEVELS = 2
+#: [rad, rad, 1] the farthest a root-line point solved at s = 0 from a nearby root line's
+#: may lie from its start in θ, q and v (the march otherwise): a tip-plane move of ~1 mm
+#: moves them by a few hundredths
+_TIP_REACH = 0.1
 
 
 def _highest_between(depth_at, lo: float, hi: float) -> tuple[float, float]:
@@ -271,6 +275,62 @@ def _started(blade: Blade, settings: MachineSettings, start: tuple[float, float]
     return b, s, float(start[0])
 
 
+class _RootLines:
+    """Root lines of one cut's tip-plane moves (:func:`tip_plane_on_root_cone`):
+    ``self(b, s, u)`` is :func:`generated_root_line` of the moved cut ``b, s`` at the
+    fractions u (default the samples).
+
+    The fillet march's starts are solved once on the given cut's sampled sections (the
+    envelope over a section is a third of a root line's cost) and reused, interpolated
+    between the samples, for the moved tip planes and the sections between: the march
+    solves each root-line point from them to its Newton tolerance; a line it does not
+    complete from them is solved from its own starts. Once a root line over the whole face
+    is known, the next root line's points are solved at s = 0 alone from its θ, q, v
+    (interpolated between its sections): one Newton solve instead of the march's
+    :data:`geometry.machine.root_line.EDGE_STEPS` (issue 75; the same points to the
+    Newton tolerance), the march where that solve does not converge within
+    :data:`_TIP_REACH` of its start. ``march``: the march in any case — each whole search's
+    line over the samples (:func:`tip_plane_on_root_cone`), whose sections the march does
+    not reach s = 0 on are "not generated" and refused as before: a solve at s = 0 from a
+    near line can converge where the march from the cut's own flank does not (the spiral
+    bevel 19x23's heel sections under a large root relief, whose flank is generated only
+    from the profile section up; tests/test_development.py).
+    """
+
+    def __init__(self, blade: Blade, settings: MachineSettings, blank: Blank, hand: str):
+        self.blank, self.hand = blank, hand
+        _, _, self.sampled = section_envelope(blade, settings, blank, _U_SAMPLES)
+        self.tips: tuple[np.ndarray, np.ndarray] | None = None  # u (n,), θ q v (n, 3)
+
+    def _marched(self, b: Blade, s: MachineSettings, u: np.ndarray):
+        blank, hand, sampled = self.blank, self.hand, self.sampled
+        if np.all(np.isfinite(sampled)):  # between the samples: interpolated starts
+            start = np.column_stack([np.interp(u, _U_SAMPLES, c) for c in sampled.T])
+            pts, x = root_line_points(b, s, blank, hand, u, start, solution=True)
+            if np.all(np.isfinite(pts[:, 0])):
+                return pts, x
+        return root_line_points(b, s, blank, hand, u, solution=True)
+
+    def __call__(self, b: Blade, s: MachineSettings, u=_U_SAMPLES, *,
+                 march: bool = False) -> RootLine:
+        u = np.atleast_1d(np.asarray(u, dtype=float))
+        pts = x = None
+        if self.tips is not None and not march:
+            x0 = np.column_stack([np.interp(u, self.tips[0], c) for c in self.tips[1].T])
+            pts, x = root_line_points(b, s, self.blank, self.hand, u, at_tip=x0,
+                                      solution=True)
+            if not (np.all(np.isfinite(x)) and np.abs(x - x0).max() <= _TIP_REACH):
+                pts = None
+        if pts is None:
+            pts, x = self._marched(b, s, u)
+        if (u.size >= _U_SAMPLES.size and u.min() == 0.0 and u.max() == 1.0
+                and np.all(np.isfinite(x))):
+            ku, first = np.unique(u, return_index=True)
+            self.tips = (ku, x[first])
+        v = pts[:, 0]
+        return RootLine(u, v, below_root_cone(self.blank, u, v))
+
+
 def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank,
                            hand: str, *, tol: float = TOUCH_TOLERANCE,
                            start: tuple[float, float] | None = None) -> TipPlacement:
@@ -315,7 +375,9 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     next: there the point inside is higher and the interval is searched); the move is
     solved by secant steps (the root line moves with the tip plane nearly one to one, and
     nearly as a whole: between the steps only the samples and the last highest point's
-    section are evaluated, and the whole search confirms the converged placement).
+    section are evaluated, and the whole search confirms the converged placement). Each
+    whole search's sample line is the fillet march's; the other root lines are solved at
+    the blade tip from the last line's points (:class:`_RootLines`; issue 75).
     """
     if settings.process != "Generate":
         raise InputError("settings: only a Generate cut's tip plane is placed on the root "
@@ -326,21 +388,12 @@ def tip_plane_on_root_cone(blade: Blade, settings: MachineSettings, blank: Blank
     # between the samples, for the moved tip planes and the sections between: the march
     # solves each root-line point from them to its Newton tolerance; a line it does not
     # complete from them is solved from its own starts
-    _, _, sampled = section_envelope(blade, settings, blank, _U_SAMPLES)
-
-    def root_line(b: Blade, s: MachineSettings, u=_U_SAMPLES) -> RootLine:
-        u = np.atleast_1d(np.asarray(u, dtype=float))
-        if np.all(np.isfinite(sampled)):  # between the samples: interpolated starts
-            start = np.column_stack([np.interp(u, _U_SAMPLES, c) for c in sampled.T])
-            line = generated_root_line(b, s, blank, hand, u, start=start)
-            if np.all(np.isfinite(line.depth)):
-                return line
-        return generated_root_line(b, s, blank, hand, u)
+    root_line = _RootLines(blade, settings, blank, hand)
 
     last_search: list = [None]  # (b, s, root line) of the last whole search
 
     def highest(b: Blade, s: MachineSettings) -> tuple[float, float]:
-        line = root_line(b, s)
+        line = root_line(b, s, march=True)
         last_search[0] = (b, s, line)
         if not np.all(np.isfinite(line.depth)):
             bad = line.u[~np.isfinite(line.depth)]

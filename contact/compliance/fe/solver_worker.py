@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import gc
 import importlib.util
+import os
 import signal
 import sys
 import time
@@ -236,10 +237,35 @@ def serve(conn, kernel, box: list, shared: SharedBlocks | None = None) -> str:
         send_array(conn, "ok", x)
 
 
+def one_blas_thread() -> str | None:
+    """NumPy's BLAS in this worker with the toolkit's thread count, set before NumPy is
+    imported: CHOLMOD's own BLAS (cvxopt's OpenBLAS) is single-threaded, and NumPy's
+    serves the forward solves' products here
+    (:class:`contact.compliance.fe.cholmod_dense.SupernodalForward`), which a second
+    thread would only spin on (docs/performance.md, "One BLAS thread").
+    ``HYPOID_LTCA_BLAS_THREADS`` first (``0``: as the library has it), else one thread
+    where neither ``OPENBLAS_NUM_THREADS``, ``OMP_NUM_THREADS`` nor ``MKL_NUM_THREADS``
+    is set (the parent's ``ltca`` command has set them already). Returns the count set,
+    or None where the environment's stands."""
+    given = (os.environ.get("HYPOID_LTCA_BLAS_THREADS") or "").strip()
+    if given:
+        if given == "0" or not given.isdigit():
+            return None
+        os.environ["OPENBLAS_NUM_THREADS"] = given
+        return given
+    if ((os.environ.get("OPENBLAS_NUM_THREADS") or "").strip()
+            or (os.environ.get("OMP_NUM_THREADS") or "").strip()
+            or (os.environ.get("MKL_NUM_THREADS") or "").strip()):
+        return None
+    os.environ["OPENBLAS_NUM_THREADS"] = "1"
+    return "1"
+
+
 def main(argv: list[str]) -> None:
     """Serve the connection on file descriptor ``argv[0]`` (module docstring)."""
     from multiprocessing.connection import Connection
 
+    one_blas_thread()  # before NumPy is imported
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})
