@@ -60,6 +60,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.hertz import contact_modulus, hertz_line_contact
 from geometry.core.validation import positive, real, real_array
@@ -368,6 +369,15 @@ class WeberSegments:
         InputError
             Non-positive or non-finite lengths, depths or radii; bad material constants.
         """
+        arrays = (length, depth_1, depth_2, r_eq)
+        if (all(type(a) is np.ndarray and a.dtype == np.float64 for a in arrays)
+                and all(type(m) is float for m in (e1, nu1, e2, nu2))):
+            # the LTCA's every roll (issue 75): float arrays, checked finite and > 0 in one
+            # pass each and copied, as real_array would; any failing goes the named way
+            both = np.concatenate([a.ravel() for a in arrays])
+            if bool(np.all((both > 0.0) & (both < np.inf))):
+                e_star, nu1f, nu2f, k1, k2 = _materials(e1, nu1, e2, nu2)
+                return cls(*(a.copy() for a in arrays), e_star, nu1f, nu2f, k1, k2)
         length_a = real_array("length", length, unit="mm", low=0.0, low_open=True)
         e1f, nu1f = _modulus("e1", e1), _poisson("nu1", nu1)
         e2f, nu2f = _modulus("e2", e2), _poisson("nu2", nu2)
@@ -441,6 +451,17 @@ class WeberSegments:
         out = tuple(_shaped(WEBER_COMPLIANCE_KINDS[k](kb, (self.k1 + self.k2) * slope)
                             / self.length, shape) for k in kinds)
         return out[0] if single else out
+
+
+@memoised(maxsize=8)
+def _materials(e1: float, nu1: float, e2: float, nu2: float
+               ) -> tuple[float, float, float, float, float]:
+    """(E* [MPa], ν₁, ν₂, k₁, k₂ [mm²/N]) of :meth:`WeberSegments.of`'s materials, checked
+    (InputError naming the bad one) and worked out once per process for each set."""
+    e1f, nu1f = _modulus("e1", e1), _poisson("nu1", nu1)
+    e2f, nu2f = _modulus("e2", e2), _poisson("nu2", nu2)
+    return (float(contact_modulus(e1f, nu1f, e2f, nu2f)), nu1f, nu2f,
+            2.0 * (1.0 - nu1f**2) / (math.pi * e1f), 2.0 * (1.0 - nu2f**2) / (math.pi * e2f))
 
 
 def _shaped(value: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:

@@ -160,7 +160,7 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     length, r_eq, depth = sel.length, sel.r_eq, sel.depth
     cap = np.pi * modulus * np.min(depth, axis=1) ** 2 / (4 * r_eq) * length  # [N]
     load = np.minimum(np.full(length.size, first_load), cap)
-    start = None if prior is None else np.nan_to_num(prior)
+    start = None if prior is None else _nan_to_zero(prior)
     # the segments' lengths, depths and radii are the same at every iteration: validated
     # once, evaluated at each iteration's loads
     segments = WeberSegments.of(length, depth[:, 0], depth[:, 1], e1=e, nu1=nu, e2=e, nu2=nu,
@@ -173,7 +173,8 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     # inequality (ContactProblem.with_diagonal), where a Cholesky per iteration cost 60 %
     # of an LTCA's time (issue 60's CPU budget). Where the base is not positive definite,
     # each problem is made and checked as before.
-    floor = _TANGENT_SHARE * segments.compliance(cap, kind="secant")
+    # (the secant at the cap: finite loads ≥ 0, Weber's secant as compliance(cap) has it)
+    floor = _TANGENT_SHARE * segments.secant_tangent(cap)[0]
     try:
         base = ContactProblem(sel.structural + np.diag(floor), sel.separation,
                               sel.moment_arm, gear_torque, name=name,
@@ -238,6 +239,19 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
         sol, problem, extra = _warm_solution(options.solver, base, F, theta, *last)
         time_used += extra
     return WeberSolution(sol, problem, n_it, time_used)
+
+
+def _nan_to_zero(prior: np.ndarray) -> np.ndarray:
+    """``np.nan_to_num(prior)`` (a new array, NaN → 0) in fewer passes where ``prior`` is
+    a float64 array with no infinity (the LTCA's warm starts)."""
+    if not (isinstance(prior, np.ndarray) and prior.dtype == np.float64):
+        return np.nan_to_num(prior)
+    out = prior.copy()
+    nan = np.isnan(out)
+    out[nan] = 0.0
+    if np.isinf(out).any():
+        return np.nan_to_num(prior)
+    return out
 
 
 def _warm_kernels(solver) -> ModuleType | None:
