@@ -359,6 +359,13 @@ class WeberSegments:
     k1: float
     k2: float
 
+    def __post_init__(self) -> None:
+        # what secant_tangent takes at every Weber iteration, formed once: 2 h_i (exact,
+        # a power of two) and ν_i/(2(1 − ν_i))
+        object.__setattr__(self, "_twice_depth", (2.0 * self.depth_1, 2.0 * self.depth_2))
+        object.__setattr__(self, "_poisson_terms", (self.nu1 / (2.0 * (1.0 - self.nu1)),
+                                                    self.nu2 / (2.0 * (1.0 - self.nu2))))
+
     @classmethod
     def of(cls, length, depth_1, depth_2, *, e1: float, nu1: float, e2: float, nu2: float,
            r_eq) -> WeberSegments:
@@ -430,9 +437,10 @@ class WeberSegments:
         # kb + 0·ks is kb, and ks = (k₁ + k₂)·½ for every segment (a scalar here)
         w = np.maximum(f / self.length, 1.0)
         b = np.sqrt(4.0 * w * self.r_eq / (math.pi * self.e_star))
-        c1, c2 = self.nu1 / (2.0 * (1.0 - self.nu1)), self.nu2 / (2.0 * (1.0 - self.nu2))
-        bracket_1 = np.log(2.0 * self.depth_1 / b) - c1
-        bracket_2 = np.log(2.0 * self.depth_2 / b) - c2
+        c1, c2 = self._poisson_terms
+        twice_1, twice_2 = self._twice_depth
+        bracket_1 = np.log(twice_1 / b) - c1
+        bracket_2 = np.log(twice_2 / b) - c2
         if not (bracket_1.min() > 0.0 and bracket_2.min() > 0.0):
             _weber_bracket(self.depth_1, b, self.nu1, "depth_1")  # raises, naming it
             _weber_bracket(self.depth_2, b, self.nu2, "depth_2")

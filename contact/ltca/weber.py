@@ -44,7 +44,7 @@ from contact.compliance.weber import WeberSegments
 from contact.errors import NotPositiveDefiniteError
 from contact.ltca.options import LTCAOptions
 from contact.qp import DEFAULT_TOLERANCE, ContactProblem, ContactSolution, solve_contact
-from contact.qp.problem import ProblemScale, residuals_and_gaps
+from contact.qp.problem import ProblemScale, mean_of, residuals_and_gaps
 from contact.qp.solvers import DEFAULT_SOLVER
 from contact.qp.solvers.active_set import PIVOTING_KERNELS, pivoting_thresholds
 from geometry.core.kernels import kernels_module
@@ -276,7 +276,7 @@ def _warm_solve(kernels: ModuleType, base: ContactProblem, diagonal: np.ndarray,
     sc = base.scale
     # the new problem's scale (ContactProblem.with_diagonal: f₀ and r₀ the base's, δ₀ of
     # the new diagonal) and its block pivoting's thresholds
-    scale = ProblemScale(force=sc.force, length=sc.force * float(np.mean(diagonal)),
+    scale = ProblemScale(force=sc.force, length=sc.force * mean_of(diagonal),
                          arm=sc.arm)
     f_tol, y_tol, floor = pivoting_thresholds(scale)
     F, theta, its, outcome, certified = kernels.warm_solve(
