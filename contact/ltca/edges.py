@@ -478,7 +478,7 @@ def _edge_r_eq_of(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
                            which.tobytes()).copy()
 
 
-@memoised(maxsize=16)
+@memoised(maxsize=8)  # each entry holds its ease-off: as many as the ease-off memo keeps
 def _memo_edge_r_eq(eo: Same, bd: Same, teeth, case: Carried, radii: tuple[float, float],
                     which: bytes) -> np.ndarray:
     """:func:`edge_r_eq` memoised (:func:`_edge_r_eq_of`), its array read-only."""
