@@ -60,6 +60,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from geometry.core.caches import memoised
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.hertz import contact_modulus, hertz_line_contact
 from geometry.core.validation import positive, real, real_array
@@ -358,6 +359,13 @@ class WeberSegments:
     k1: float
     k2: float
 
+    def __post_init__(self) -> None:
+        # what secant_tangent takes at every Weber iteration, formed once: 2 h_i (exact,
+        # a power of two) and ν_i/(2(1 − ν_i))
+        object.__setattr__(self, "_twice_depth", (2.0 * self.depth_1, 2.0 * self.depth_2))
+        object.__setattr__(self, "_poisson_terms", (self.nu1 / (2.0 * (1.0 - self.nu1)),
+                                                    self.nu2 / (2.0 * (1.0 - self.nu2))))
+
     @classmethod
     def of(cls, length, depth_1, depth_2, *, e1: float, nu1: float, e2: float, nu2: float,
            r_eq) -> WeberSegments:
@@ -368,6 +376,15 @@ class WeberSegments:
         InputError
             Non-positive or non-finite lengths, depths or radii; bad material constants.
         """
+        arrays = (length, depth_1, depth_2, r_eq)
+        if (all(type(a) is np.ndarray and a.dtype == np.float64 for a in arrays)
+                and all(type(m) is float for m in (e1, nu1, e2, nu2))):
+            # the LTCA's every roll (issue 75): float arrays, checked finite and > 0 in one
+            # pass each and copied, as real_array would; any failing goes the named way
+            both = np.concatenate([a.ravel() for a in arrays])
+            if bool(np.all((both > 0.0) & (both < np.inf))):
+                e_star, nu1f, nu2f, k1, k2 = _materials(e1, nu1, e2, nu2)
+                return cls(*(a.copy() for a in arrays), e_star, nu1f, nu2f, k1, k2)
         length_a = real_array("length", length, unit="mm", low=0.0, low_open=True)
         e1f, nu1f = _modulus("e1", e1), _poisson("nu1", nu1)
         e2f, nu2f = _modulus("e2", e2), _poisson("nu2", nu2)
@@ -420,9 +437,10 @@ class WeberSegments:
         # kb + 0·ks is kb, and ks = (k₁ + k₂)·½ for every segment (a scalar here)
         w = np.maximum(f / self.length, 1.0)
         b = np.sqrt(4.0 * w * self.r_eq / (math.pi * self.e_star))
-        c1, c2 = self.nu1 / (2.0 * (1.0 - self.nu1)), self.nu2 / (2.0 * (1.0 - self.nu2))
-        bracket_1 = np.log(2.0 * self.depth_1 / b) - c1
-        bracket_2 = np.log(2.0 * self.depth_2 / b) - c2
+        c1, c2 = self._poisson_terms
+        twice_1, twice_2 = self._twice_depth
+        bracket_1 = np.log(twice_1 / b) - c1
+        bracket_2 = np.log(twice_2 / b) - c2
         if not (bracket_1.min() > 0.0 and bracket_2.min() > 0.0):
             _weber_bracket(self.depth_1, b, self.nu1, "depth_1")  # raises, naming it
             _weber_bracket(self.depth_2, b, self.nu2, "depth_2")
@@ -441,6 +459,17 @@ class WeberSegments:
         out = tuple(_shaped(WEBER_COMPLIANCE_KINDS[k](kb, (self.k1 + self.k2) * slope)
                             / self.length, shape) for k in kinds)
         return out[0] if single else out
+
+
+@memoised(maxsize=8)
+def _materials(e1: float, nu1: float, e2: float, nu2: float
+               ) -> tuple[float, float, float, float, float]:
+    """(E* [MPa], ν₁, ν₂, k₁, k₂ [mm²/N]) of :meth:`WeberSegments.of`'s materials, checked
+    (InputError naming the bad one) and worked out once per process for each set."""
+    e1f, nu1f = _modulus("e1", e1), _poisson("nu1", nu1)
+    e2f, nu2f = _modulus("e2", e2), _poisson("nu2", nu2)
+    return (float(contact_modulus(e1f, nu1f, e2f, nu2f)), nu1f, nu2f,
+            2.0 * (1.0 - nu1f**2) / (math.pi * e1f), 2.0 * (1.0 - nu2f**2) / (math.pi * e2f))
 
 
 def _shaped(value: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:

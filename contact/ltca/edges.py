@@ -65,7 +65,9 @@ from contact.ltca.discretisation import (
     gear_to_pair,
 )
 from contact.utca import EaseOff, EaseOffFields
+from geometry.core.caches import Carried, Same, memoised
 from geometry.core.errors import InputError
+from geometry.machine.meshing import warm_seeds_active
 from geometry.pair.assembly import rotate_about_axis
 
 __all__ = ["EDGE_KINDS", "FlankBoundary", "edge_r_eq", "edge_segments", "flank_boundary",
@@ -290,7 +292,7 @@ def edge_segments(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float
     # R_eq of the boundary segments in edge contact somewhere
     used = np.unique(ee[inside])
     r_eq = np.full(E, np.nan)
-    r_eq[used] = edge_r_eq(case, eo, bd, edge_radius, used)
+    r_eq[used] = _edge_r_eq_of(case, eo, bd, edge_radius, used)
     nrm = quad.at(bd.normal[ee], c1, vector=True)[:, 0]
     nrm = nrm / np.linalg.norm(nrm, axis=-1, keepdims=True)
     u_c, v_c = quad.at(bd.u[ee], c1)[:, 0], quad.at(bd.v[ee], c1)[:, 0]
@@ -420,7 +422,9 @@ def _edge_candidates(bd: FlankBoundary, target: np.ndarray, shift: np.ndarray,
     # (flattened to n candidates), the rest stay NaN (no edge contact)
     outside = ((bd.roll_angle[None, None] - (target + shift)[..., None, None])
                * bd.inward_slope)  # (J, K, E, 3)
-    cand = np.any(outside >= 0, axis=-1)
+    # (reductions over the three samples as element-wise ops on the three: the same
+    # values, without numpy's slow reduction along a length-3 last axis)
+    cand = (outside[..., 0] >= 0) | (outside[..., 1] >= 0) | (outside[..., 2] >= 0)
     # Φ_q = ε + ½ K (Q − q)² at the samples of every boundary segment [rad]
     phi_s = (bd.ease_off_angle + 0.5 * bd.gap_curvature
              * (bd.roll_angle - target[..., None, None]) ** 2)  # (J, K, E, 3)
@@ -429,7 +433,8 @@ def _edge_candidates(bd: FlankBoundary, target: np.ndarray, shift: np.ndarray,
         # difference (its dip below the samples is at most a quarter of that), times
         # the least normal arm
         dip = np.abs(phi_s[..., 0] - 2.0 * phi_s[..., 1] + phi_s[..., 2])
-        low = np.min(phi_s, axis=-1) - dip - ute_env[:, None, None]
+        least = np.minimum(np.minimum(phi_s[..., 0], phi_s[..., 1]), phi_s[..., 2])
+        low = least - dip - ute_env[:, None, None]
         cand &= ~(np.min(bd.normal_arm, axis=-1) * low > limit)
     return cand, outside, phi_s
 
@@ -454,6 +459,32 @@ def _edge_contact_points(eo: EaseOff, bd: FlankBoundary, q: np.ndarray, ee: np.n
         pts[~g] = rotate_about_axis(kin.pinion_axis, turn, mate - kin.pinion_origin) + \
             kin.pinion_origin
     return pts, phi, psi, g
+
+
+def _edge_r_eq_of(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],
+                  which: np.ndarray) -> np.ndarray:
+    """:func:`edge_r_eq`, memoised per process by the ease-off and boundary objects, the
+    teeth (``Case.teeth_key``: what the curvatures read of the case), the edge radii and
+    the boundary segments ``which`` (M,): the same R_eq, computed once for the analyses
+    of one case repeated or of a torque series whose edge contact uses the same boundary
+    segments (issue 75: ~5 ms of curvatures a warm analysis). Not memoised inside a
+    development's trial (its ease-off is not either:
+    :func:`geometry.machine.meshing.warm_seeds_active`). A copy is returned."""
+    if warm_seeds_active():
+        return edge_r_eq(case, eo, bd, edge_radius, which)
+    which = np.ascontiguousarray(which, dtype=np.intp)
+    radii = (float(edge_radius[0]), float(edge_radius[1]))
+    return _memo_edge_r_eq(Same(eo), Same(bd), case.teeth_key(), Carried(case), radii,
+                           which.tobytes()).copy()
+
+
+@memoised(maxsize=8)  # each entry holds its ease-off: as many as the ease-off memo keeps
+def _memo_edge_r_eq(eo: Same, bd: Same, teeth, case: Carried, radii: tuple[float, float],
+                    which: bytes) -> np.ndarray:
+    """:func:`edge_r_eq` memoised (:func:`_edge_r_eq_of`), its array read-only."""
+    out = edge_r_eq(case.value, eo.obj, bd.obj, radii, np.frombuffer(which, dtype=np.intp))
+    out.flags.writeable = False
+    return out
 
 
 def edge_r_eq(case, eo: EaseOff, bd: FlankBoundary, edge_radius: tuple[float, float],

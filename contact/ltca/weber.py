@@ -44,7 +44,7 @@ from contact.compliance.weber import WeberSegments
 from contact.errors import NotPositiveDefiniteError
 from contact.ltca.options import LTCAOptions
 from contact.qp import DEFAULT_TOLERANCE, ContactProblem, ContactSolution, solve_contact
-from contact.qp.problem import ProblemScale, residuals_and_gaps
+from contact.qp.problem import ProblemScale, mean_of, residuals_and_gaps
 from contact.qp.solvers import DEFAULT_SOLVER
 from contact.qp.solvers.active_set import PIVOTING_KERNELS, pivoting_thresholds
 from geometry.core.kernels import kernels_module
@@ -160,7 +160,7 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     length, r_eq, depth = sel.length, sel.r_eq, sel.depth
     cap = np.pi * modulus * np.min(depth, axis=1) ** 2 / (4 * r_eq) * length  # [N]
     load = np.minimum(np.full(length.size, first_load), cap)
-    start = None if prior is None else np.nan_to_num(prior)
+    start = None if prior is None else _nan_to_zero(prior)
     # the segments' lengths, depths and radii are the same at every iteration: validated
     # once, evaluated at each iteration's loads
     segments = WeberSegments.of(length, depth[:, 0], depth[:, 1], e1=e, nu1=nu, e2=e, nu2=nu,
@@ -173,7 +173,8 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     # inequality (ContactProblem.with_diagonal), where a Cholesky per iteration cost 60 %
     # of an LTCA's time (issue 60's CPU budget). Where the base is not positive definite,
     # each problem is made and checked as before.
-    floor = _TANGENT_SHARE * segments.compliance(cap, kind="secant")
+    # (the secant at the cap: finite loads ≥ 0, Weber's secant as compliance(cap) has it)
+    floor = _TANGENT_SHARE * segments.secant_tangent(cap)[0]
     try:
         base = ContactProblem(sel.structural + np.diag(floor), sel.separation,
                               sel.moment_arm, gear_torque, name=name,
@@ -240,6 +241,19 @@ def weber_solve(sel: RollSelection, gear_torque: float, first_load: float,
     return WeberSolution(sol, problem, n_it, time_used)
 
 
+def _nan_to_zero(prior: np.ndarray) -> np.ndarray:
+    """``np.nan_to_num(prior)`` (a new array, NaN → 0) in fewer passes where ``prior`` is
+    a float64 array with no infinity (the LTCA's warm starts)."""
+    if not (isinstance(prior, np.ndarray) and prior.dtype == np.float64):
+        return np.nan_to_num(prior)
+    out = prior.copy()
+    nan = np.isnan(out)
+    out[nan] = 0.0
+    if np.isinf(out).any():
+        return np.nan_to_num(prior)
+    return out
+
+
 def _warm_kernels(solver) -> ModuleType | None:
     """The compiled warm solve's module where ``solver`` is the default ``active_set``
     and its block pivoting runs compiled (:func:`geometry.core.kernels.kernels_module`),
@@ -262,7 +276,7 @@ def _warm_solve(kernels: ModuleType, base: ContactProblem, diagonal: np.ndarray,
     sc = base.scale
     # the new problem's scale (ContactProblem.with_diagonal: f₀ and r₀ the base's, δ₀ of
     # the new diagonal) and its block pivoting's thresholds
-    scale = ProblemScale(force=sc.force, length=sc.force * float(np.mean(diagonal)),
+    scale = ProblemScale(force=sc.force, length=sc.force * mean_of(diagonal),
                          arm=sc.arm)
     f_tol, y_tol, floor = pivoting_thresholds(scale)
     F, theta, its, outcome, certified = kernels.warm_solve(

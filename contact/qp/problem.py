@@ -166,9 +166,18 @@ class ContactProblem:
     scale: ProblemScale = field(init=False)
 
     def __post_init__(self) -> None:
-        C = _problem_input(real_array, "compliance", self.compliance, unit="mm/N", ndim=2)
-        s = _problem_input(real_array, "separation", self.separation, unit="mm", ndim=1)
-        R = _problem_input(real_array, "moment_arm", self.moment_arm, unit="mm", ndim=1)
+        C, s, R = self.compliance, self.separation, self.moment_arm
+        if (_float_array(C, 2) and C.flags.c_contiguous and _float_array(s, 1)
+                and _float_array(R, 1) and np.isfinite(C).all() and np.isfinite(s).all()
+                and np.isfinite(R).all()):
+            # finite float arrays of the right rank (the LTCA's each roll, issue 75): what
+            # real_array checks, without its conversions; s and R copied as it copies
+            # (C is not kept: its symmetric part below is a new array)
+            s, R = s.copy(), R.copy()
+        else:
+            C = _problem_input(real_array, "compliance", C, unit="mm/N", ndim=2)
+            s = _problem_input(real_array, "separation", s, unit="mm", ndim=1)
+            R = _problem_input(real_array, "moment_arm", R, unit="mm", ndim=1)
         n = s.size
         if n == 0:
             raise ProblemInputError("separation: needs at least one segment, got 0")
@@ -216,7 +225,7 @@ class ContactProblem:
             r0 = float(np.max(np.abs(R)))
         else:
             f0, r0 = like.scale.force, like.scale.arm
-        d0 = f0 * float(np.mean(np.diagonal(C)))
+        d0 = f0 * mean_of(np.diagonal(C))
         object.__setattr__(self, "compliance", C)
         object.__setattr__(self, "separation", s)
         object.__setattr__(self, "moment_arm", R)
@@ -357,6 +366,18 @@ class ContactProblem:
     def with_torque(self, torque: float) -> ContactProblem:
         """The same contact with another torque [N·mm]."""
         return dataclasses.replace(self, torque=torque)
+
+
+def mean_of(values: np.ndarray) -> float:
+    """``float(np.mean(values))`` of a float64 array, the same arithmetic (numpy's sum
+    divided by the count) without ``np.mean``'s overhead on a small array (called at
+    every Weber iteration's solve, issue 75)."""
+    return float(np.add.reduce(values, axis=None) / values.size)
+
+
+def _float_array(a, ndim: int) -> bool:
+    """Whether ``a`` is a float64 ndarray (not a subclass) of ``ndim`` dimensions."""
+    return type(a) is np.ndarray and a.dtype == np.float64 and a.ndim == ndim
 
 
 def _check_positive_definite(C: np.ndarray) -> None:

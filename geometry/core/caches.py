@@ -120,6 +120,22 @@ class Same:
         return isinstance(other, Same) and other.obj is self.obj
 
 
+class Carried:
+    """A value handed through a memo without being part of its key (every carrier
+    compares equal): e.g. the case, whose teeth the key holds as ``Case.teeth_key``."""
+
+    __slots__ = ("value",)
+
+    def __init__(self, value) -> None:
+        self.value = value
+
+    def __hash__(self) -> int:
+        return 0
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Carried)
+
+
 def row_keys(rows, tag: bytes = b"") -> list[bytes]:
     """Each row of a 2-D array of floats as ``tag`` + the row's bytes (float64, C order):
     a memo key per row (a point, a segment) that equal rows share.
