@@ -190,7 +190,9 @@ def plausibility_flags(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> dict[s
         :data:`CAUSES`): True at the torques where the cause occurs. ``lte_spread`` is
         False at a quiet transfer (:func:`quiet_transfer`; the edge share from the
         segments' forces, :func:`contact.ltca.summary.edge_load_share`: without them,
-        not known quiet).
+        not known quiet). ``flank_above_limit`` reads the flank peak of
+        :func:`contact.ltca.summary.flank_peak_pressure` (without the contact curves
+        shorter than their own contact width: a corner's, no line contact).
 
     Notes
     -----

@@ -32,7 +32,12 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   (:func:`contact.load_capacity.durability.sn_curves`, ``geometry/core/data/materials.toml``):
   attention above σ_Hlim (beyond the endurance limit: a finite life, which
   ``ltca duty-cycle`` counts), fail above the static strength σ_Hlim·Z_NT,static (the
-  S–N curve's life factor at its static end, ISO 6336-2: no life at all).
+  S–N curve's life factor at its static end, ISO 6336-2: no life at all). The peak is
+  :func:`contact.ltca.summary.flank_peak`'s, the development's: the dataset's
+  ``pressure_max_flank`` without the contact curves shorter than their own Hertz contact
+  width (clipped into a flank corner: no line contact); where they differ, the finding
+  names the dataset's number, and where only such curves exceed σ_Hlim a note
+  (:attr:`Verdict.notes`) does.
 * ``edge_contact`` (attention): per torque, the edges that carry load (gear heel, toe,
   tip, pinion edge; their share of the torque, Σ F·arm as
   :func:`contact.ltca.summary.edge_load_share`) and the tooth boundaries the loaded
@@ -251,7 +256,8 @@ class Verdict:
 
     def lines(self, limit: int | None = None, rest: str | None = None) -> list[str]:
         """The verdict as text lines: ``VERDICT: <severity>`` with the count, then one
-        line per finding (``  fail: <reason>``); at most ``limit`` findings, the rest
+        line per finding (``  fail: <reason>``), one per note (``  note: <note>``,
+        :attr:`notes`); at most ``limit`` findings, the rest
         counted, with ``rest`` saying where they are listed (default: the report); a
         line ``  not checked: <checks> (<why>)`` per reason some checks could not be made
         (:attr:`unchecked`)."""
