@@ -190,7 +190,9 @@ def plausibility_flags(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> dict[s
         :data:`CAUSES`): True at the torques where the cause occurs. ``lte_spread`` is
         False at a quiet transfer (:func:`quiet_transfer`; the edge share from the
         segments' forces, :func:`contact.ltca.summary.edge_load_share`: without them,
-        not known quiet).
+        not known quiet). ``flank_above_limit`` reads the flank peak of
+        :func:`contact.ltca.summary.flank_peak_pressure` (without the contact curves
+        shorter than their own contact width: a corner's, no line contact).
 
     Notes
     -----
@@ -205,7 +207,10 @@ def plausibility_flags(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> dict[s
     limit = float(ltca.attrs.get("edge_pressure_limit_MPa", np.nan))
     flank_limit = float(ltca.attrs.get("flank_pressure_limit_MPa", np.nan))
     if "pressure_max_flank" in ltca and np.isfinite(limit) and not np.isfinite(flank_limit):
-        out["flank_above_limit"] = np.asarray(ltca["pressure_max_flank"].values, float) > limit
+        # the flank peak the verdict judges: without the curves clipped into a corner
+        from contact.ltca.summary import flank_peak_pressure
+
+        out["flank_above_limit"] = flank_peak_pressure(ltca) > limit
     if {"lte_peak_to_peak", "lte_mean", "unloaded_transmission_error"} <= set(ltca):
         pp = np.asarray(ltca["lte_peak_to_peak"].values, float)
         mean = np.asarray(ltca["lte_mean"].values, float)
@@ -261,7 +266,9 @@ def plausibility_warnings(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> lis
     bad = flags["flank_above_limit"]
     if np.any(bad):
         limit = float(ltca.attrs["edge_pressure_limit_MPa"])
-        p = np.asarray(ltca["pressure_max_flank"].values, float)
+        from contact.ltca.summary import flank_peak_pressure
+
+        p = flank_peak_pressure(ltca)
         out.append(
             f"flank above the material's limit: flank peak pressure "
             f"{_slashed(p[bad], '{:.0f}')} MPa at {_slashed(torque[bad])} N·m, above the "

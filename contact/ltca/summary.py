@@ -3,12 +3,16 @@
 Public functions
 ----------------
 edge_load_share   the share of the gear torque the edge segments carry, per torque
+flank_peak        the flank's peak Hertzian pressure per torque without the contact curves
+                  shorter than their own contact width, and how many were left out
+flank_peak_pressure  its pressure alone (the development's and ``ltca run``'s verdict's)
 certification     whether every roll position of every torque has a certified contact
                   solution: the analysis' status and the sentence that says why not
 """
 
 from __future__ import annotations
 
+import logging
 from typing import NamedTuple
 
 import numpy as np
@@ -16,12 +20,108 @@ import xarray as xr
 
 from geometry.core.errors import InputError
 
-__all__ = ["ANALYSIS_STATUS", "Certification", "certification", "edge_load_share"]
+__all__ = ["ANALYSIS_STATUS", "Certification", "FlankPeak", "certification",
+           "edge_load_share", "flank_peak", "flank_peak_pressure"]
+
+log = logging.getLogger(__name__)
 
 #: an analysis' ``analysis_status`` (root attribute of its file, :func:`certification`):
 #: every roll position of every torque certified; some torque with rolls uncertified; some
 #: torque without one certified roll (no contact solution at that torque: the analysis failed)
 ANALYSIS_STATUS = ("ok", "uncertified", "failed")
+
+
+class FlankPeak(NamedTuple):
+    """The flank's peak pressure a verdict judges (:func:`flank_peak`).
+
+    Attributes
+    ----------
+    pressure : ndarray (torque,) — [MPa] the peak over the contact curves that are line
+        contacts; 0 where none carries load
+    dataset : ndarray (torque,) — [MPa] the dataset's ``pressure_max_flank`` as written
+    corner_curves : ndarray of int (torque,) — the loaded contact curves (one per roll
+        position and pair) left out: shorter than their contact width 2b
+    """
+
+    pressure: np.ndarray
+    dataset: np.ndarray
+    corner_curves: np.ndarray
+
+
+def flank_peak(ltca: xr.Dataset) -> FlankPeak:
+    """The peak Hertzian pressure on the contact curves per torque [MPa], without the
+    curves that are no line contact — a (roll, pair)'s contact curve whose length (the sum
+    of its curve segments' ``segment_length``) is below the contact width 2b of its most
+    loaded segment, b = 2w/(π p₀) of its Hertz line load w and peak pressure p₀ — beside
+    the dataset's ``pressure_max_flank`` and the number of curves left out.
+
+    The one rule of the flank peak that the development
+    (:mod:`contact.optimize.development_evaluate`) and ``ltca run``'s verdict
+    (:mod:`contact.study.verdicts`, :func:`contact.ltca.plausibility.plausibility_flags`)
+    judge; the dataset's ``pressure_max_flank`` keeps every curve (what users read).
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        ``/ltca`` of :func:`contact.ltca.loaded_tca`: ``pressure_max_flank`` (torque)
+        [MPa], ``pressure_max`` (torque, roll, pair, segment) [MPa], ``half_width`` (same)
+        [mm], ``segment_length`` (roll, pair, segment) [mm] and the coordinate
+        ``segment_kind`` (segment); without the last four, the dataset's
+        ``pressure_max_flank`` as it is (no curve left out).
+
+    Returns
+    -------
+    FlankPeak
+        ``pressure`` and ``dataset`` (torque,) [MPa], ``corner_curves`` (torque,) [1].
+
+    Raises
+    ------
+    KeyError
+        ``pressure_max_flank`` absent where the segment data are too.
+
+    Notes
+    -----
+    Hertz's line contact (Johnson, *Contact Mechanics*, 1985, §4.3 and Eq. 4.43–4.45)
+    holds for a contact much longer than its width; a curve clipped to a corner of the
+    flank, a few µm long, is a point touching the corner, whose load per length F/L is
+    the ratio of two vanishing numbers. Why (issue 71): on the bundled FM 11×41
+    (cases/basic/kolivand2009_fm_11x41.toml) the coast search's first trial (coarse LTCA,
+    392.1 N·m) read 2577 MPa from such a curve at the toe-tip corner (4 segments of 1e-5
+    mm, 0.26 N in all, w 1787 N/mm) and 2045 MPa with the pinion's machine settings
+    changed by 1e-13 relative (the curve gone); the coast design torque the development
+    wrote moved 69.5 ↔ 112.2 N·m with it. Tested in tests/test_development_roundoff.py
+    and tests/test_verdicts.py (synthetic datasets).
+    """
+    need = {"pressure_max", "half_width", "segment_length", "segment_kind"}
+    if not need <= set(ltca.variables):
+        raw = np.asarray(ltca["pressure_max_flank"].values, float)
+        return FlankPeak(raw, raw, np.zeros(raw.shape, int))
+    curve = np.asarray(ltca["segment_kind"].values) == "curve"
+    p = np.nan_to_num(np.asarray(ltca["pressure_max"].values, float)[..., curve])
+    b = np.nan_to_num(np.asarray(ltca["half_width"].values, float)[..., curve])
+    length = np.nan_to_num(np.asarray(ltca["segment_length"].values, float)[..., curve])
+    total = length.sum(axis=-1)  # (roll, pair): each curve's length
+    line = total[None] >= 2.0 * b.max(axis=-1)  # (torque, roll, pair)
+    nt = p.shape[0]
+    if p.size:
+        peak = np.where(line[..., None], p, 0.0).max(axis=(1, 2, 3))
+        corner = ((~line) & (p.max(axis=-1) > 0.0)).sum(axis=(1, 2))
+    else:
+        peak, corner = np.zeros(nt), np.zeros(nt, int)
+    raw = (np.asarray(ltca["pressure_max_flank"].values, float)
+           if "pressure_max_flank" in ltca else (p.max(axis=(1, 2, 3)) if p.size else peak))
+    if np.any(peak != raw):
+        log.info("flank peak pressure: contact curves shorter than their contact width left "
+                 "out, %s -> %s MPa", np.round(raw), np.round(peak))
+    return FlankPeak(peak, raw, corner.astype(int))
+
+
+def flank_peak_pressure(ltca: xr.Dataset) -> np.ndarray:
+    """The peak Hertzian pressure on the contact curves per torque [MPa] (NT,): the
+    ``/ltca`` dataset's ``pressure_max_flank`` without the curves that are no line
+    contact (shorter than their own contact width 2b): :func:`flank_peak`'s
+    ``pressure`` (its parameters, notes and source). 0 where no curve carries load."""
+    return flank_peak(ltca).pressure
 
 
 def edge_load_share(ltca: xr.Dataset) -> np.ndarray:

@@ -33,6 +33,7 @@ import numpy as np
 import xarray as xr
 
 from contact.ltca import LTCAOptions
+from contact.ltca.summary import flank_peak_pressure  # re-exported: the development's name
 from contact.optimize.development_result import (
     DevelopmentEvaluation,
     case_torques,
@@ -149,55 +150,6 @@ def ltca_metrics(ltca, case: Case) -> dict[str, np.ndarray]:
     out["plastic_share"] = share.max(axis=1)
     out["lte_spread"] = lte_spread(ltca)
     return out
-
-
-def flank_peak_pressure(ltca) -> np.ndarray:
-    """The peak Hertzian pressure on the contact curves per torque [MPa] (NT,): the
-    ``/ltca`` dataset's ``pressure_max_flank`` without the curves that are no line
-    contact — a (roll, pair)'s contact curve whose length (the sum of its curve segments'
-    ``segment_length``) is below the contact width 2b of its most loaded segment, b =
-    2w/(π p₀) of its Hertz line load w and peak pressure p₀. 0 where no curve carries load.
-
-    Parameters
-    ----------
-    ltca : xarray.Dataset
-        ``/ltca`` of :func:`contact.ltca.loaded_tca`: ``pressure_max`` (torque, roll, pair,
-        segment) [MPa], ``half_width`` (same) [mm], ``segment_length`` (roll, pair,
-        segment) [mm] and the coordinate ``segment_kind`` (segment); without them, the
-        dataset's ``pressure_max_flank`` as it is.
-
-    Returns
-    -------
-    ndarray (torque,) — [MPa]
-
-    Notes
-    -----
-    Hertz's line contact (Johnson, *Contact Mechanics*, 1985, §4.3 and Eq. 4.43–4.45)
-    holds for a contact much longer than its width; a curve clipped to a corner of the
-    flank, a few µm long, is a point touching the corner, whose load per length F/L is
-    the ratio of two vanishing numbers. Why (issue 71): on the bundled FM 11×41
-    (cases/basic/kolivand2009_fm_11x41.toml) the coast search's first trial (coarse LTCA,
-    392.1 N·m) read 2577 MPa from such a curve at the toe-tip corner (4 segments of 1e-5
-    mm, 0.26 N in all, w 1787 N/mm) and 2045 MPa with the pinion's machine settings
-    changed by 1e-13 relative (the curve gone); the coast design torque the development
-    wrote moved 69.5 ↔ 112.2 N·m with it.
-    """
-    need = {"pressure_max", "half_width", "segment_length", "segment_kind"}
-    if not need <= set(ltca.variables):
-        return np.asarray(ltca["pressure_max_flank"].values, float)
-    curve = np.asarray(ltca["segment_kind"].values) == "curve"
-    p = np.nan_to_num(np.asarray(ltca["pressure_max"].values, float)[..., curve])
-    b = np.nan_to_num(np.asarray(ltca["half_width"].values, float)[..., curve])
-    length = np.nan_to_num(np.asarray(ltca["segment_length"].values, float)[..., curve])
-    total = length.sum(axis=-1)  # (roll, pair): each curve's length
-    line = total[None] >= 2.0 * b.max(axis=-1)  # (torque, roll, pair)
-    peak = (np.where(line[..., None], p, 0.0).max(axis=(1, 2, 3)) if p.size
-            else np.zeros(p.shape[0]))
-    raw = p.max(axis=(1, 2, 3)) if p.size else peak
-    if np.any(peak != raw):
-        log.info("flank peak pressure: contact curves shorter than their contact width left "
-                 "out, %s -> %s MPa", np.round(raw), np.round(peak))
-    return peak
 
 
 def lte_spread(ltca) -> np.ndarray:

@@ -501,15 +501,16 @@ def _operating(tree: xr.DataTree, lt, fr, eo) -> list[tuple[str, str]]:
 
 
 def _verdict(tree: xr.DataTree) -> dict:
-    """The verdict box: severity, findings (severity, check, reason) and the checks run
-    (:func:`contact.study.verdicts.verdict`)."""
+    """The verdict box: severity, findings (severity, check, reason), the checks run and
+    the notes (:func:`contact.study.verdicts.verdict`)."""
     from contact.study.verdicts import verdict
 
     v = verdict(tree)
     return {"severity": v.severity,
             "findings": [{"severity": f.severity, "check": f.check, "reason": f.reason}
                          for f in v.findings],
-            "checks": [c.replace("_", " ") for c in v.checks]}
+            "checks": [c.replace("_", " ") for c in v.checks],
+            "notes": list(v.notes)}  # what a check left out (a flank corner's curve)
 
 
 def _pattern(lt: xr.Dataset | None, inputs_text: str) -> list[dict] | None:

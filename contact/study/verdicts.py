@@ -32,7 +32,12 @@ The checks and their thresholds, per kind of result (:data:`CHECKS`):
   (:func:`contact.load_capacity.durability.sn_curves`, ``geometry/core/data/materials.toml``):
   attention above σ_Hlim (beyond the endurance limit: a finite life, which
   ``ltca duty-cycle`` counts), fail above the static strength σ_Hlim·Z_NT,static (the
-  S–N curve's life factor at its static end, ISO 6336-2: no life at all).
+  S–N curve's life factor at its static end, ISO 6336-2: no life at all). The peak is
+  :func:`contact.ltca.summary.flank_peak`'s, the development's: the dataset's
+  ``pressure_max_flank`` without the contact curves shorter than their own Hertz contact
+  width (clipped into a flank corner: no line contact); where they differ, the finding
+  names the dataset's number, and where only such curves exceed σ_Hlim a note
+  (:attr:`Verdict.notes`) does.
 * ``edge_contact`` (attention): per torque, the edges that carry load (gear heel, toe,
   tip, pinion edge; their share of the torque, Σ F·arm as
   :func:`contact.ltca.summary.edge_load_share`) and the tooth boundaries the loaded
@@ -142,6 +147,7 @@ from contact.ltca.plausibility import (
     plausibility_warnings,
     quiet_transfer,
 )
+from contact.ltca.summary import flank_peak
 from geometry.core.errors import InputError
 
 __all__ = ["CHECKS", "CHECK_ORDER", "DUTY_MIN_SAFETY", "EDGE_SHARE_MIN", "GRADE",
@@ -230,12 +236,17 @@ class Verdict:
         The checks of the kind (:data:`CHECKS`) that could not be made, each with why
         (the group its data lives in is absent: an analysis tree without ``/ltca`` makes
         none of the contact checks); a verdict is only as complete as its checks.
+    notes : tuple of str
+        What a check left out and why, where no finding says it: a flank peak pressure
+        above σ_Hlim in the dataset only through contact curves clipped into a flank
+        corner (:func:`contact.ltca.summary.flank_peak`).
     """
 
     kind: str
     findings: tuple[Finding, ...]
     checks: tuple[str, ...]
     unchecked: tuple[tuple[str, str], ...] = ()
+    notes: tuple[str, ...] = ()
 
     @property
     def severity(self) -> str:
@@ -245,7 +256,8 @@ class Verdict:
 
     def lines(self, limit: int | None = None, rest: str | None = None) -> list[str]:
         """The verdict as text lines: ``VERDICT: <severity>`` with the count, then one
-        line per finding (``  fail: <reason>``); at most ``limit`` findings, the rest
+        line per finding (``  fail: <reason>``), one per note (``  note: <note>``,
+        :attr:`notes`); at most ``limit`` findings, the rest
         counted, with ``rest`` saying where they are listed (default: the report); a
         line ``  not checked: <checks> (<why>)`` per reason some checks could not be made
         (:attr:`unchecked`)."""
@@ -255,6 +267,7 @@ class Verdict:
                    f", no finding in {len(self.checks)} checks"))
         shown = self.findings if limit is None else self.findings[:limit]
         out = [head] + [f"  {f.severity}: {f.reason}" for f in shown]
+        out += [f"  note: {n}" for n in self.notes]
         whys: dict[str, list[str]] = {}
         for check, why in self.unchecked:
             whys.setdefault(why, []).append(check)
@@ -299,8 +312,17 @@ def _flank_static_torques(lt: xr.Dataset | None) -> frozenset:
                key=lambda c: c.allowable)
     static = weak.allowable * weak.static_life_factor
     return frozenset(float(t) for t, p in zip(lt["torque"].values,
-                                              lt["pressure_max_flank"].values, strict=True)
+                                              flank_peak(lt).pressure, strict=True)
                      if np.isfinite(p) and p > static)
+
+
+def _corner_words(raw: float, n: int) -> str:
+    """What the flank peak left out at one torque (:func:`contact.ltca.summary.flank_peak`)."""
+    n = int(n)
+    return (f"/ltca pressure_max_flank reads {raw:.0f} MPa with {n} contact "
+            f"curve{'s' * (n != 1)} shorter than {'their' if n != 1 else 'its'} Hertz contact "
+            "width 2b (clipped into a flank corner: no line contact), left out as the "
+            "development leaves them out")
 
 
 def _flank_pressure(lt: xr.Dataset, static_torques: frozenset = frozenset()
@@ -315,28 +337,54 @@ def _flank_pressure(lt: xr.Dataset, static_torques: frozenset = frozenset()
     limit, static = weak.allowable, weak.allowable * weak.static_life_factor
     mat = sorted(names)[[c.allowable for c in curves].index(weak.allowable)]
     out = []
-    for t, p in zip(lt["torque"].values, lt["pressure_max_flank"].values, strict=True):
+    fp = flank_peak(lt)
+    for t, p, raw, n in zip(lt["torque"].values, fp.pressure, fp.dataset, fp.corner_curves,
+                            strict=True):
         if not np.isfinite(p) or p <= limit:
             continue
+        # the peak judged is the line contacts' (flank_peak); the dataset's, where it
+        # differs, is named
+        left = f" ({_corner_words(raw, n)})" if n and raw != p else ""
         if p > static:
             out.append(Finding("fail", "flank_pressure",
-                               f"flank peak pressure {p:.0f} MPa at {_t(t)} above the static "
-                               f"strength {static:.0f} MPa (σ_Hlim {limit:.0f} MPa × "
+                               f"flank peak pressure {p:.0f} MPa at {_t(t)}{left} above the "
+                               f"static strength {static:.0f} MPa (σ_Hlim {limit:.0f} MPa × "
                                f"Z_NT {weak.static_life_factor:g}, {mat}, grade {GRADE}): "
                                "no life at this torque"))
         elif float(t) in static_torques:  # the rating's finding says what life there is
             out.append(Finding("attention", "flank_pressure",
-                               f"flank peak pressure {p:.0f} MPa at {_t(t)} above σ_Hlim "
-                               f"{limit:.0f} MPa ({mat}, ISO 6336-5 grade {GRADE}), below its "
-                               f"static strength {static:.0f} MPa; the rating at this torque "
-                               "exceeds the static strength (its finding)"))
+                               f"flank peak pressure {p:.0f} MPa at {_t(t)}{left} above "
+                               f"σ_Hlim {limit:.0f} MPa ({mat}, ISO 6336-5 grade {GRADE}), "
+                               f"below its static strength {static:.0f} MPa; the rating at "
+                               "this torque exceeds the static strength (its finding)"))
         else:
             out.append(Finding("attention", "flank_pressure",
-                               f"flank peak pressure {p:.0f} MPa at {_t(t)} above σ_Hlim "
-                               f"{limit:.0f} MPa ({mat}, ISO 6336-5 grade {GRADE}): beyond "
-                               "the endurance limit, a finite life at this torque "
+                               f"flank peak pressure {p:.0f} MPa at {_t(t)}{left} above "
+                               f"σ_Hlim {limit:.0f} MPa ({mat}, ISO 6336-5 grade {GRADE}): "
+                               "beyond the endurance limit, a finite life at this torque "
                                "(ltca duty-cycle counts the damage)"))
     return out
+
+
+def _flank_notes(lt: xr.Dataset | None) -> list[str]:
+    """The torques whose dataset ``pressure_max_flank`` is above σ_Hlim only through contact
+    curves shorter than their contact width (:func:`contact.ltca.summary.flank_peak`): no
+    finding, but a note saying why the verdict holds what the dataset's number alone would
+    not."""
+    from contact.load_capacity.durability import sn_curves
+
+    if lt is None or "pressure_max_flank" not in lt:
+        return []
+    names = {lt.attrs.get("material_pinion"), lt.attrs.get("material_gear")} - {None}
+    if not names:
+        return []
+    limit = min(sn_curves(str(m), GRADE)["contact"].allowable for m in sorted(names))
+    fp = flank_peak(lt)
+    return [f"flank_pressure: flank peak pressure {p:.0f} MPa at {_t(t)}, within σ_Hlim "
+            f"{limit:.0f} MPa; {_corner_words(raw, n)}"
+            for t, p, raw, n in zip(lt["torque"].values, fp.pressure, fp.dataset,
+                                    fp.corner_curves, strict=True)
+            if n and np.isfinite(raw) and raw > limit >= p]
 
 
 #: edge kinds as the findings name them
@@ -1048,8 +1096,10 @@ def verdict(result: xr.DataTree | xr.Dataset, *, lte_limit: float = LTE_LIMIT) -
     lte_limit = real("lte_limit", lte_limit, unit="urad", low=0.0, low_open=True)
     kind = _kind(result)
     findings, checks = _KINDS[kind](result, lte_limit=lte_limit)
+    notes = (_flank_notes(_group(result, "ltca"))
+             if kind == "analysis" and isinstance(result, xr.DataTree) else [])
     return Verdict(kind, _worst_first(findings), tuple(checks),
-                   _unchecked(result, kind, checks))
+                   _unchecked(result, kind, checks), tuple(notes))
 
 
 #: the group an analysis check reads and why it is missing when the group is
