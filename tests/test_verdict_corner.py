@@ -105,3 +105,25 @@ def test_a_corner_curve_long_enough_is_a_line_contact_and_fails():
     """The same curve 4 × 0.25 mm long (1 mm ≥ 2b = 0.88 mm) is a line contact: FAIL."""
     v = verdict(_tree(1400.0, 2600.0, corner_length=0.25))
     assert v.severity == "fail" and "2600 MPa at 500 N·m" in v.findings[0].reason
+
+
+@pytest.mark.parametrize(("corner_force", "left_out"), [(0.26, True), (242.0, False)])
+def test_a_short_curve_is_left_out_only_where_its_load_vanishes(corner_force, left_out):
+    # The rule's premise (load per length a ratio of vanishing numbers) holds for a corner
+    # clip carrying ~1e-5 of the roll's load (0.26 N on the 11x41), not for a short curve
+    # carrying a share of it (the default case's entering curve at 500 N·m: 0.38 mm under
+    # its 2b 0.50 mm, 242 N ~ 4 %): that is a concentrated contact and stays in the peak.
+    # The limit is contact.ltca.summary.CORNER_LOAD_SHARE (1 %); 0.26 / 6000 and
+    # 242 / 6000 lie on either side of it by more than a factor 4.
+    from contact.ltca.summary import CORNER_LOAD_SHARE
+
+    ds = _tree(1400.0, 2600.0, corner_length=1e-5)["ltca"].to_dataset()
+    force = np.zeros((1, 1, 2, 4))
+    force[0, 0, 0] = 6000.0 / 4
+    force[0, 0, 1] = corner_force / 4
+    ds["force"] = (("torque", "roll", "pair", "segment"), force)
+    assert (corner_force / 6000.0 < CORNER_LOAD_SHARE) == left_out
+    fp = flank_peak(ds)
+    # exact: the peak is one of the two pressures put in
+    assert fp.pressure[0] == (1400.0 if left_out else 2600.0)
+    assert fp.corner_curves[0] == int(left_out)

@@ -63,8 +63,9 @@ def test_the_default_case_is_flagged_for_its_flank_pressure_and_heel_contact(def
     flank = [f for f in v.findings if f.check == "flank_pressure"]
     # the verdict judges the development's peak (contact.ltca.summary.flank_peak, tested
     # on its own in tests/test_verdict_corner.py): at 500 N·m a contact curve 0.38 mm long
-    # under its 2b = 0.50 mm (1745 MPa, 242 N) is no line contact, left out (1695 MPa);
-    # the reason names the dataset's number beside it
+    # under its 2b = 0.50 mm (1745 MPa) carries 242 N (~4 % of the roll's load, above
+    # CORNER_LOAD_SHARE): a concentrated contact, kept; where a curve is left out, the
+    # reason names the dataset's number beside it
     judged = float(flank_peak_pressure(lt)[1])
     assert sigma_hlim < judged <= p500
     assert len(flank) == 1 and f"{judged:.0f} MPa at 500 N·m" in flank[0].reason
