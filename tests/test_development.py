@@ -18,6 +18,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from development_stand_ins import checked as _checked
+from development_stand_ins import metrics as _metrics
+from development_stand_ins import stand_in
 
 from contact.optimize import development_check as dcheck
 from contact.optimize import development_coast_flank as dcoast
@@ -37,28 +40,6 @@ from contact.optimize.development_evaluate import analyse_design
 from geometry.core.errors import InputError
 
 DESIGNS = Path(__file__).parent / "data" / "designs"
-
-
-def _metrics(**over):
-    """Metrics at (light, design) torque of a design meeting every default target."""
-    m = {"pattern_toe_u": [0.2, 0.15], "pattern_heel_u": [0.7, 0.8],
-         "pattern_root_v": [0.3, 0.25], "pattern_tip_v": [0.85, 0.9],
-         "pattern_centre_u": [0.45, 0.5], "pattern_centre_v": [0.6, 0.6],
-         "edge_load_share": [0.0, 0.01], "plastic_share": [0.0, 0.0],
-         "lte_peak_to_peak": [20.0, 30.0], "pressure_max_flank": [900.0, 1500.0],
-         "lte_spread": [0.0, 0.1]}
-    m.update(over)
-    return {k: np.asarray(v, float) for k, v in m.items()}
-
-
-def _checked(values, metrics, targets, centre_v):
-    """A design the check chose (index 3, checked at ltca run's sampling): ``values``
-    scored on ``metrics`` against ``targets`` (:func:`development_score`)."""
-    from contact.optimize import development as dev
-
-    full = development_score(metrics, targets, centre_v=centre_v)
-    return dev.DevelopmentEvaluation(3, values, metrics, full[0], full[1], full[2], "", 0.0,
-                                     full=full, checked=True)
 
 
 def test_a_design_meeting_every_target_scores_only_its_lte():
@@ -1010,8 +991,7 @@ def test_the_te_stage_runs_again_at_the_check_where_the_lte_is_missed(monkeypatc
         level = lte[case["te_level"]]
         return _metrics(lte_peak_to_peak=[level, level]), (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
+    targets, setup, _ = stand_in(monkeypatch, fake, [50.0, 330.0])
 
     def chosen(level):
         return _checked({"path_angle": -60.0, "te_level": level},
@@ -1048,12 +1028,8 @@ def test_the_check_turns_a_long_bearing_towards_the_profile(monkeypatch):
         return (_metrics(pattern_toe_u=[0.45 - n / 2, 0.1], pattern_heel_u=[0.45 + n / 2, 0.9]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [50.0, 330.0], "centre_v": 0.6}
-
-    def chosen(values):
-        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
-                        0.6)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [50.0, 330.0],
+                                      options=dev.CHECK_LTCA)
 
     lines = []
     start = chosen({"path_angle": -58.75, "ellipse_length": 0.55})  # 0.71 long
@@ -1085,12 +1061,8 @@ def test_the_check_lengthens_the_ellipse_where_only_the_lte_is_missed(monkeypatc
         return (_metrics(pattern_toe_u=[0.25, 0.1], pattern_heel_u=[0.78, 0.9],
                          lte_peak_to_peak=[20.0, lte]), (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.6}
-
-    def chosen(values):
-        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
-                        0.6)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [37.0, 246.5],
+                                      options=dev.CHECK_LTCA)
 
     lines = []
     start = chosen({"path_angle": -51.9, "ellipse_length": 0.65})  # 0.53 long, 50 µrad
@@ -1125,10 +1097,9 @@ def test_the_check_lengthens_a_generated_gears_short_bearing_along_the_profile(m
         return (_metrics(pattern_toe_u=[0.45 - n / 2, 0.1], pattern_heel_u=[0.45 + n / 2, 0.9],
                          lte_peak_to_peak=[lte, lte]), (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [25.65, 171.0], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [25.65, 171.0], options=dev.CHECK_LTCA)
     values = {"path_angle": -58.75, "ellipse_length": 0.4}  # 0.3 long, 71 µrad
-    start = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
+    start = chosen(values)
     assert start.full[1]["length"] > 0.0
     lines = []
     generated = dataclasses.replace(start, case=SimpleNamespace(
@@ -1201,12 +1172,8 @@ def test_a_high_pattern_at_the_check_gets_a_shorter_tip_relief(monkeypatch):
                          edge_load_share=[0.0, 0.016 - 0.001 * r]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.548}
-
-    def chosen(values):
-        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
-                        0.548)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [37.0, 246.5], centre_v=0.548,
+                                      options=dev.CHECK_LTCA)
 
     lines = []
     high = chosen({"tip_relief": 15.0, "tip_relief_start": 0.85})  # v 0.64, edge 0.1 %
@@ -1261,12 +1228,8 @@ def test_a_high_pattern_left_after_the_tip_step_gets_the_root_relief(monkeypatch
                                            - 150.0 * (el - 0.55)]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [62.25, 415.0], "centre_v": 0.542}
-
-    def chosen(values):
-        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
-                        0.542)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [62.25, 415.0], centre_v=0.542,
+                                      options=dev.CHECK_LTCA)
 
     lines = []
     high = chosen({"root_relief": 40.0, "relief_start": 0.3, "ellipse_length": 0.55,
@@ -1308,12 +1271,8 @@ def test_a_design_missing_a_target_with_a_blade_angle_gets_the_root_relief_inste
                          pattern_heel_u=[0.85 if tilt else 0.75, 0.8]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [273.45, 1823.0], "centre_v": 0.548}
-
-    def chosen(values):
-        return _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets,
-                        0.548)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [273.45, 1823.0], centre_v=0.548,
+                                      options=dev.CHECK_LTCA)
 
     lines = []
     tilted = chosen({"blade_angle_change": -0.177, "root_relief": 39.0,
@@ -1388,8 +1347,7 @@ def test_a_check_step_keeps_no_design_that_loses_the_mounting_tolerance(monkeypa
             m["plastic_share"] = np.array([0.0, 0.013])
         return m, (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [37.0, 246.5], "centre_v": 0.6}
+    targets, setup, _ = stand_in(monkeypatch, fake, [37.0, 246.5])
     m = fake({"path_angle": -51.9}, [])[0]
     full = development_score(m, targets, centre_v=0.6)
     start = dev.DevelopmentEvaluation(3, {"path_angle": -51.9, "ellipse_length": 0.6}, m,
@@ -1458,12 +1416,11 @@ def test_a_design_not_tolerant_on_its_edges_gets_more_relief(monkeypatch):
                          lte_peak_to_peak=[20.0, 30.0 + (case["root_relief"] - 25.0)]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [90.87, 605.8], "centre_v": 0.6}
+    targets, setup, scored = stand_in(monkeypatch, fake, [90.87, 605.8],
+                                      options=dev.CHECK_LTCA)
 
     def chosen(values):
-        e = _checked(values, fake(values, [], options=dev.CHECK_LTCA)[0], targets, 0.6)
-        return dataclasses.replace(e, case=dict(values))
+        return dataclasses.replace(scored(values), case=dict(values))
 
     lines = []
     start = chosen({"tip_relief": 15.0, "root_relief": 25.0})
@@ -1526,11 +1483,10 @@ def test_an_lte_still_missed_at_the_check_gets_the_long_bearing(monkeypatch):
                          lte_peak_to_peak=[25.0, 52.0] if long_ else [63.0, 74.0]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [27.0, 180.0], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [27.0, 180.0])
     values = {"path_angle": -80.0, "ellipse_length": 0.6, "root_relief": 60.0,
               "relief_start": 0.2}
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     assert start.full[1]["lte"] > 0.0
     lines = []
     got = dcheck.checked_long(start, targets, setup, None, lines.append, lambda v: dict(v))
@@ -1567,11 +1523,10 @@ def test_an_lte_above_the_verdicts_limit_gets_a_shallower_root_relief(monkeypatc
         return (_metrics(lte_peak_to_peak=lte[case["root_relief"]]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [71.7, 477.7], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [71.7, 477.7])
     values = {"path_angle": -80.0, "ellipse_length": 0.75, "root_relief": 60.0,
               "relief_start": 0.2}
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     calls.clear()
     lines = []
     got = dcheck.checked_relief_lte(start, targets, setup, None, lines.append,
@@ -1625,15 +1580,13 @@ def test_a_te_level_lowered_on_another_bearing_is_raised_back_where_a_target_is_
                          pressure_max_flank=[1200.0, 2779.0 if low else 2142.0]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets = DevelopmentTargets(max_flank_pressure=2400.0)
-    setup = {"torques": [41.8, 279.2], "centre_v": 0.6}
+    targets, setup, scored = stand_in(monkeypatch, fake, [41.8, 279.2],
+                                      targets=DevelopmentTargets(max_flank_pressure=2400.0))
     values = {"path_angle": -80.0, "ellipse_length": 0.7, "root_relief": 60.0,
               "te_level": 10.0}
 
     def chosen(v, metrics=None):
-        m = fake(v, [])[0] if metrics is None else metrics
-        return _checked(v, m, targets, 0.6)
+        return scored(v) if metrics is None else _checked(v, metrics, targets, 0.6)
 
     start = chosen(values)
     assert start.full[1]["pressure"] > 0.0 and start.full[1]["lte"] > 0.0
@@ -1683,11 +1636,10 @@ def test_a_centre_v_just_off_its_band_gets_a_blade_step_with_the_te_level(monkey
     more than NEAR_MISS (0.057 beyond the band), one missing only its LTE."""
     calls = []
     fake = _near_miss_fake(calls)
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [15.0, 100.0], "centre_v": 0.543}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [15.0, 100.0], centre_v=0.543)
     values = {"path_angle": -60.0, "ellipse_length": 0.6, "blade_angle_change": 0.0,
               "te_level": 45.0}
-    start = _checked(values, fake(values, [])[0], targets, 0.543)
+    start = chosen(values)
     assert not start.met and [k for k, v in start.full[1].items() if v > 0] == ["centre_v"]
     assert dcheck.near_miss(start)
     calls.clear()
@@ -1732,10 +1684,9 @@ def test_a_blade_step_that_gives_up_a_met_target_is_not_kept(monkeypatch):
     designs; a design whose TE level is at its lower bound is stepped without it."""
     calls = []
     fake = _near_miss_fake(calls, lte_per_deg=1900.0)
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [15.0, 100.0], "centre_v": 0.543}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [15.0, 100.0], centre_v=0.543)
     values = {"path_angle": -60.0, "blade_angle_change": 0.0, "te_level": 45.0}
-    start = _checked(values, fake(values, [])[0], targets, 0.543)
+    start = chosen(values)
     calls.clear()
     lines = []
     assert dcheck.checked_near_miss(start, targets, setup, None, lines.append,
@@ -1777,12 +1728,10 @@ def test_an_lte_above_the_limit_gets_a_flatter_profile_then_a_deeper_te_parabola
         return (_metrics(lte_peak_to_peak=lte[key], edge_load_share=[0.0, edge]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets = DevelopmentTargets()
-    setup = {"torques": [33.78, 225.2], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [33.78, 225.2])
     values = {"path_angle": -80.0, "ellipse_length": 0.75, "root_relief": 20.0,
               "relief_start": 0.5, "profile_crowning": 4.0, "te_level": 25.0}
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     calls.clear()
     lines = []
     got = dcheck.checked_crowning_lte(start, targets, setup, None, lines.append,
@@ -1869,10 +1818,9 @@ def test_an_lte_missed_at_the_check_gets_the_ellipse_a_step_longer(monkeypatch):
                          lte_peak_to_peak=[36.0 - 18.0 * f, 44.0 - 18.0 * f]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [1013.0, 6759.0], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [1013.0, 6759.0])
     values = {"path_angle": -45.0, "ellipse_length": 0.4, "te_level": 10.0}
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     assert start.full[1]["lte"] > 0.0 and start.full[1]["length"] == 0.0
     seen.clear()
     lines = []
@@ -1922,11 +1870,10 @@ def test_a_coast_lte_above_the_verdicts_limit_gets_a_longer_ellipse(monkeypatch)
                          lte_peak_to_peak=[67.0, 62.0], pressure_max_flank=[900.0, 1479.0]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [28.8, 119.0], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [28.8, 119.0])
     values = {"path_angle": -58.75, "ellipse_length": 0.4, "root_relief": 60.0,
               "relief_start": 0.2}
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     calls.clear()
     lines = []
     got = dcheck.checked_coast_lte(start, targets, setup, None, lines.append,
@@ -2006,10 +1953,9 @@ def test_a_coast_lte_the_ellipse_does_not_lower_gets_the_path_turned_lengthwise(
         return (_metrics(lte_peak_to_peak=lte, pressure_max_flank=[700.0, p]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [26.3, 175.6], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [26.3, 175.6])
     values = {"path_angle": -45.0, "ellipse_length": 0.55}
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     seen.clear()
     lines = []
     got = dcheck.checked_coast_lte(start, targets, setup, None, lines.append,
@@ -2059,10 +2005,9 @@ def test_a_coast_lte_above_the_limit_at_its_design_torque_gets_its_te_level_back
         return (_metrics(lte_peak_to_peak=lte, pressure_max_flank=[700.0, 1480.0 - 113.0 * f]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [16.5, 106.3], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [16.5, 106.3])
     values = {"ellipse_length": 0.75, "path_angle": -25.0, "te_level": 25.0}  # at bounds
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     seen.clear()
     lines = []
     got = dcheck.checked_coast_lte(start, targets, setup, None, lines.append,
@@ -2109,10 +2054,9 @@ def test_a_long_bearing_that_scores_worse_is_not_kept(monkeypatch):
                              lte_peak_to_peak=[32.0, 20.0]), (0.0, 1.0, 0.0, 1.0, 2400.0))
         return _metrics(lte_peak_to_peak=[14.0, 44.0]), (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [78.4, 522.3], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [78.4, 522.3])
     values = {"ellipse_length": 0.7, "root_relief": 40.0, "relief_start": 0.2}
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     assert dcheck.checked_long(start, targets, setup, None, [].append,
                                lambda v: dict(v)) is start
 
@@ -2172,13 +2116,12 @@ def test_a_long_bearing_that_gives_up_a_met_target_is_not_kept(monkeypatch):
                          edge_load_share=[0.0, 0.019], lte_peak_to_peak=[73.0, 83.0]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [60.4, 287.1], "centre_v": 0.6}
+    targets, setup, chosen = stand_in(monkeypatch, fake, [60.4, 287.1])
     values = {"ellipse_length": 0.55, "root_relief": 60.0, "relief_start": 0.2}
-    start = _checked(values, fake(values, [])[0], targets, 0.6)
+    start = chosen(values)
     lines = []
     long_values = dcheck.long_bearing(values, targets)
-    assert _checked(long_values, fake(long_values, [])[0], targets, 0.6).objective \
+    assert chosen(long_values).objective \
         < start.objective  # it would win on the objective alone
     assert dcheck.checked_long(start, targets, setup, None, lines.append, lambda v: dict(v),
                                flank="coast") is start

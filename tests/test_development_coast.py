@@ -9,6 +9,7 @@ import math
 from types import MappingProxyType
 
 import pytest
+from development_stand_ins import stand_in
 
 from contact.optimize.development_coast import (
     CLOSENESS,
@@ -252,7 +253,6 @@ def test_a_coast_lte_the_ellipse_and_path_do_not_lower_gets_a_later_tip_relief(
     relief from 0.85: 54 / 38 µrad, 1079 MPa, pattern 0.60 long. A design without tip
     relief is not given the step (its start means nothing)."""
     from contact.optimize import development_check as dcheck
-    from contact.optimize.development_targets import DevelopmentTargets
 
     seen = []
 
@@ -271,9 +271,8 @@ def test_a_coast_lte_the_ellipse_and_path_do_not_lower_gets_a_later_tip_relief(
             m = {"lte_peak_to_peak": [111.0, 68.0], "pressure_max_flank": [600.0, 1389.0]}
         return _coast_metrics(**m), (0.0, 1.0, 0.0, 1.0, 2400.0)
 
-    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
-    targets, setup = DevelopmentTargets(), {"torques": [13.4, 89.6], "centre_v": 0.6}
-    start = _coast_design(COAST_13X37, fake(COAST_13X37, [])[0], targets)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [13.4, 89.6])
+    start = chosen(dict(COAST_13X37))
     seen.clear()
     lines = []
     got = dcheck.checked_coast_lte(start, targets, setup, None, lines.append,

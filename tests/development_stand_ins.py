@@ -1,0 +1,89 @@
+"""Stand-in analyses for the development's check steps (tests/test_development.py,
+tests/test_development_coast.py): the setup those tests share.
+
+A check step (contact.optimize.development_check) analyses each design it tries with
+``contact.optimize.development_evaluate.analyse_design``; the tests replace it by a
+stand-in ``fake(case, torques, misalignment=None, options=None, teeth=None,
+pinion_key=(), flank="drive")`` whose metrics follow a law the test states (numbers
+measured on a real design, cited in each test), so that a step's choices are checked
+without an LTCA. :func:`stand_in` installs the stand-in and returns the targets, the
+development setup (light and design torque, centre v) and a scorer of the design the
+check chose, the start a step is handed.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from typing import Any
+
+import numpy as np
+
+from contact.optimize import development as dev
+from contact.optimize.development import DevelopmentTargets, development_score
+
+#: what the check steps call for each design they analyse (replaced by the stand-in)
+ANALYSE = "contact.optimize.development_evaluate.analyse_design"
+
+
+def metrics(**over) -> dict[str, np.ndarray]:
+    """Metrics at (light, design) torque of a design meeting every default target; the
+    keyword arguments replace single metrics (each a pair, light then design torque)."""
+    m = {"pattern_toe_u": [0.2, 0.15], "pattern_heel_u": [0.7, 0.8],
+         "pattern_root_v": [0.3, 0.25], "pattern_tip_v": [0.85, 0.9],
+         "pattern_centre_u": [0.45, 0.5], "pattern_centre_v": [0.6, 0.6],
+         "edge_load_share": [0.0, 0.01], "plastic_share": [0.0, 0.0],
+         "lte_peak_to_peak": [20.0, 30.0], "pressure_max_flank": [900.0, 1500.0],
+         "lte_spread": [0.0, 0.1]}
+    m.update(over)
+    return {k: np.asarray(v, float) for k, v in m.items()}
+
+
+def checked(values, metrics, targets, centre_v) -> dev.DevelopmentEvaluation:
+    """A design the check chose (index 3, checked at ltca run's sampling): ``values``
+    scored on ``metrics`` against ``targets`` (:func:`development_score`)."""
+    full = development_score(metrics, targets, centre_v=centre_v)
+    return dev.DevelopmentEvaluation(3, values, metrics, full[0], full[1], full[2], "", 0.0,
+                                     full=full, checked=True)
+
+
+def stand_in(monkeypatch, fake: Callable[..., Any], torques: Iterable[float],
+             centre_v: float = 0.6, targets: DevelopmentTargets | None = None,
+             options: Any = None):
+    """Install ``fake`` as the development's analysis and return what a check step takes.
+
+    Parameters
+    ----------
+    monkeypatch : pytest.MonkeyPatch
+        The test's, which undoes the replacement after it.
+    fake : callable
+        The stand-in for ``analyse_design``: ``fake(case, torques, ...)`` returns
+        ``(metrics, limits)``.
+    torques : iterable of float
+        The development's light and design torque, N·m (the setup's ``"torques"``).
+    centre_v : float
+        The pattern centre's target height (fraction of the working depth) the setup
+        carries and the start is scored at.
+    targets : DevelopmentTargets, optional
+        The development targets; the defaults when not given.
+    options : optional
+        Passed to ``fake`` as ``options=`` when the start is scored (e.g. the check's
+        sampling, ``development.CHECK_LTCA``); not passed when None.
+
+    Returns
+    -------
+    targets : DevelopmentTargets
+    setup : dict
+        ``{"torques": [...], "centre_v": centre_v}``.
+    chosen : callable
+        ``chosen(values)``: the design with bearing ``values`` as the check chose it,
+        scored (:func:`checked`) on the stand-in's metrics at ``values``.
+    """
+    monkeypatch.setattr(ANALYSE, fake)
+    targets = DevelopmentTargets() if targets is None else targets
+    setup = {"torques": list(torques), "centre_v": centre_v}
+    extra = {} if options is None else {"options": options}
+
+    def chosen(values):
+        return checked(values, fake(values, [], **extra)[0], targets, centre_v)
+
+    return targets, setup, chosen
