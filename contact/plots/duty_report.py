@@ -166,14 +166,15 @@ def duty_report_context(result: xr.DataTree | xr.Dataset, *, figures: bool = Tru
 
 def _verdict(ds: xr.Dataset) -> dict[str, Any]:
     """The verdict box of the page (:func:`contact.study.verdicts.verdict` of the duty
-    cycle): severity, findings, checks."""
+    cycle): severity, findings, checks, notes."""
     from contact.study.verdicts import verdict
 
     v = verdict(ds)
     return {"severity": v.severity,
             "findings": [{"severity": f.severity, "check": f.check, "reason": f.reason}
                          for f in v.findings],
-            "checks": [c.replace("_", " ") for c in v.checks]}
+            "checks": [c.replace("_", " ") for c in v.checks],
+            "notes": list(v.notes)}  # what a check left out (a flank corner's curve)
 
 
 def render_duty_report(result: xr.DataTree | xr.Dataset, *, figures: bool = True) -> str:

@@ -67,6 +67,13 @@ BIN_VARIABLES = {
     "pressure_max_flank": ("MPa", "peak Hertzian pressure of the flank (contact-curve) "
                            "segments"),
     "pressure_max_edge": ("MPa", "peak Hertzian pressure of the edge-contact segments"),
+    "flank_peak_pressure": ("MPa", "peak Hertzian pressure of the flank's line contacts: "
+                            "pressure_max_flank without the contact curves shorter than "
+                            "their Hertz contact width 2b carrying <= 1 % of their roll's "
+                            "load (contact.ltca.summary.flank_peak); what the static check "
+                            "and ltca run's verdict judge"),
+    "flank_corner_curves": ("1", "contact curves left out of flank_peak_pressure (clipped "
+                            "into a flank corner: no line contact)"),
     "edge_load_share": ("1", "share of the gear torque carried by edge contact"),
     "plastic_load_share": ("1", "largest share of the gear torque that segments at the "
                            "material's contact-pressure limit (plastic edges) carry at one "
@@ -149,7 +156,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     speed and oil temperature.
     """
     from contact.chain import AnalysisChain
-    from contact.ltca.summary import edge_load_share
+    from contact.ltca.summary import edge_load_share, flank_peak
     from contact.pipeline import operating_conditions, run_analysis
     from contact.study.summary import plausibility_bits
     from friction.efficiency import efficiency_analysis
@@ -172,11 +179,14 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         op = operating_conditions(case, pinion_speed=float(duty.pinion_speed[index]),
                                   temperature=temp)
         fr = efficiency_analysis(ltca, op)
+        fp = flank_peak(ltca)  # the peak the static check judges, as ltca run's verdict
         vals = {
             "lte_mean": ltca["lte_mean"].values[0],
             "lte_peak_to_peak": ltca["lte_peak_to_peak"].values[0],
             "pressure_max_flank": ltca["pressure_max_flank"].values[0],
             "pressure_max_edge": ltca["pressure_max_edge"].values[0],
+            "flank_peak_pressure": fp.pressure[0],
+            "flank_corner_curves": fp.corner_curves[0],
             "edge_load_share": edge_load_share(ltca)[0],
             "plastic_load_share": (
                 np.max(np.nan_to_num(ltca["plastic_load_share"].values[0], nan=0.0))
@@ -361,8 +371,14 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset,
         out[f"contact_safety_{m}"] = (_peak(contact, peak_bin).allowable
                                       / float(env[peak_bin].max()))
         out[f"contact_allowable_{m}"] = _peak(contact, peak_bin).allowable
-        out[f"static_exceeded_{m}"] = bool(any(
-            np.any(_peak(contact, b).beyond_static(env[b])) for b in range(env.shape[0])))
+        # the static check judges the bin's flank peak as ltca run's verdict does
+        # (contact.ltca.summary.flank_peak: no contact curve clipped into a flank corner);
+        # bins of a run before it (no flank_peak_pressure) their envelope's peak
+        judged = (np.asarray(ds["flank_peak_pressure"].values, float)
+                  if "flank_peak_pressure" in ds else env.reshape(env.shape[0], -1).max(-1))
+        strength = np.array([_peak(contact, b).static_stress for b in range(env.shape[0])])
+        out[f"static_strength_{m}"] = strength
+        out[f"static_exceeded_{m}"] = bool(np.any(np.nan_to_num(judged) > strength))
         if "root_stress_peak" in ds:
             root = ds["root_stress_peak"].values[:, k, :]
             rd = cumulative_damage(root, cycles[m], bend, duty.miner_rule)
@@ -504,6 +520,11 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
     out["life_v"] = data_var(("member",), np.array(
         [dur[f"flank_location_{m}"][1] for m in members]), "1",
         "gear profile fraction of the flank point first reaching damage 1")
+    out["contact_static_strength"] = data_var(
+        ("bin", "member"), np.stack([dur[f"static_strength_{m}"] for m in members], -1),
+        "MPa", "static contact strength of the bin: the S-N curve's static end (sigma_Hlim "
+        "x Z_NT, on the bin's rating where there is one), which the static check holds "
+        "flank_peak_pressure against")
     out["contact_safety_factor"] = data_var(("member",), np.array(
         [dur[f"contact_safety_{m}"] for m in members]), "1",
         "allowable at long life (the rating's sigma_HP/Z_NT of the bin, else sigma_Hlim; "
@@ -549,6 +570,11 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
                     "or life is reported"),
         "contact_static_limit_exceeded": int(any(dur[f"static_exceeded_{m}"]
                                                  for m in members)),
+        "contact_static_check": (
+            "the bins' flank_peak_pressure (pressure_max_flank without contact curves "
+            "clipped into a flank corner, contact.ltca.summary.flank_peak) against "
+            "contact_static_strength" if "flank_peak_pressure" in ds else
+            "the bins' pressure_envelope peak against contact_static_strength"),
         "edge_contact": "edge-contact pressures (edge_pressure_envelope, pressure_max_edge) "
                         "are not counted in the pitting damage: the S-N curve of ISO 6336-2 "
                         "is of Hertzian flank contact; the LTCA bounds edge pressures by the "

@@ -98,8 +98,13 @@ static strength (docs/verdicts.md, "Findings a reader trusts").
   warns of (as every study point, whose flag leaves out a quiet transfer); an LTE spread
   of a file written before that, whose bins all read as :func:`quiet_transfer`, an
   attention.
-* ``static`` (fail): a flank pressure above the static strength (the dataset's
-  ``contact_static_limit_exceeded``).
+* ``static`` (fail): a bin's flank peak pressure above the static strength of the
+  weaker member (``flank_peak_pressure`` against ``contact_static_strength``): the peak
+  ``ltca run``'s ``flank_pressure`` check judges
+  (:func:`contact.ltca.summary.flank_peak`), the finding naming the bin's
+  ``pressure_max_flank`` where it differs and a note (:attr:`Verdict.notes`) where only
+  curves clipped into a flank corner exceed it; a file written before those variables by
+  its ``contact_static_limit_exceeded``.
 * ``edge_contact``, ``certification`` (attention): bins with edge contact or
   uncertified roll positions; ``plastic_edges`` (attention) bins whose segments at the
   material's contact-pressure limit carry a share of the torque up to
@@ -239,7 +244,8 @@ class Verdict:
     notes : tuple of str
         What a check left out and why, where no finding says it: a flank peak pressure
         above σ_Hlim in the dataset only through contact curves clipped into a flank
-        corner (:func:`contact.ltca.summary.flank_peak`).
+        corner (:func:`contact.ltca.summary.flank_peak`); a duty-cycle bin's above the
+        static strength only through them (the ``static`` check).
     """
 
     kind: str
@@ -316,10 +322,11 @@ def _flank_static_torques(lt: xr.Dataset | None) -> frozenset:
                      if np.isfinite(p) and p > static)
 
 
-def _corner_words(raw: float, n: int) -> str:
-    """What the flank peak left out at one torque (:func:`contact.ltca.summary.flank_peak`)."""
+def _corner_words(raw: float, n: int, name: str = "/ltca pressure_max_flank") -> str:
+    """What the flank peak left out at one torque (:func:`contact.ltca.summary.flank_peak`);
+    ``name`` the variable that holds ``raw`` (a duty cycle's bin: its own)."""
     n = int(n)
-    return (f"/ltca pressure_max_flank reads {raw:.0f} MPa with {n} contact "
+    return (f"{name} reads {raw:.0f} MPa with {n} contact "
             f"curve{'s' * (n != 1)} shorter than {'their' if n != 1 else 'its'} Hertz contact "
             "width 2b (clipped into a flank corner: no line contact), left out as the "
             "development leaves them out")
@@ -843,6 +850,41 @@ def _spread_numbers(ds: xr.Dataset, cause: str, bins: np.ndarray) -> str:
     return ": " + "; ".join(out)
 
 
+def _duty_static(ds: xr.Dataset) -> tuple[list[Finding], list[str]] | None:
+    """The duty cycle's ``static`` check on the bins' ``flank_peak_pressure`` (the peak
+    ``ltca run``'s verdict judges, :func:`contact.ltca.summary.flank_peak`) against each
+    bin's ``contact_static_strength`` of the weaker member: a fail per bin above it, the
+    dataset's ``pressure_max_flank`` named where it differs (:func:`_corner_words`, as the
+    ``flank_pressure`` finding), and a note per bin above it only through contact curves
+    clipped into a flank corner. None for a file without those variables (written before
+    them: the attribute ``contact_static_limit_exceeded`` alone judges)."""
+    need = {"flank_peak_pressure", "contact_static_strength", "pressure_max_flank", "torque"}
+    if not need <= set(ds.variables):
+        return None
+    p = np.asarray(ds["flank_peak_pressure"].values, float)
+    raw = np.asarray(ds["pressure_max_flank"].values, float)
+    n = (np.nan_to_num(np.asarray(ds["flank_corner_curves"].values, float)).astype(int)
+         if "flank_corner_curves" in ds else np.zeros(p.shape, int))
+    strength = np.asarray(ds["contact_static_strength"].values, float).min(axis=-1)
+    torque = np.asarray(ds["torque"].values, float)
+    findings, notes = [], []
+    where = "/duty_cycle pressure_max_flank"
+    for i in range(p.size):
+        if np.isfinite(p[i]) and p[i] > strength[i]:
+            left = (f" ({_corner_words(raw[i], n[i], where)})" if n[i] and raw[i] != p[i]
+                    else "")
+            findings.append(Finding(
+                "fail", "static",
+                f"flank peak pressure {p[i]:.0f} MPa in bin {i} ({_t(torque[i])}){left} "
+                f"above the static contact strength {strength[i]:.0f} MPa (σ_Hlim × Z_NT "
+                "at the S–N curve's static end, the weaker member): no life there"))
+        elif n[i] and np.isfinite(raw[i]) and raw[i] > strength[i]:
+            notes.append(f"static: flank peak pressure {p[i]:.0f} MPa in bin {i} "
+                         f"({_t(torque[i])}), within the static contact strength "
+                         f"{strength[i]:.0f} MPa; {_corner_words(raw[i], n[i], where)}")
+    return findings, notes
+
+
 def _duty_plastic(ds: xr.Dataset) -> list[Finding]:
     """The bins whose plastic edges carry a share of the torque up to the plausibility
     limit (above it the bin's ``plastic_contact`` cause is ``implausible``): ``ltca
@@ -926,8 +968,11 @@ def _duty(ds: xr.Dataset) -> tuple[list[Finding], list[str]]:
                     f"{cause.replace('_', ' ')} in bin{'s' * (bad.size > 1)} "
                     f"{', '.join(str(b) for b in bad)} (the cause ltca run warns of; "
                     "/duty_cycle/plausibility)" + _spread_numbers(ds, cause, bad)))
-    if int(ds.attrs.get("contact_static_limit_exceeded", 0)):
-        findings.append(Finding("fail", "static",
+    judged = _duty_static(ds)
+    if judged is not None:
+        findings += judged[0]
+    elif int(ds.attrs.get("contact_static_limit_exceeded", 0)):  # a file before the bins'
+        findings.append(Finding("fail", "static",             # flank_peak_pressure
                                 "a flank pressure exceeds the static contact strength of "
                                 "the material (σ_Hlim × Z_NT at the S–N curve's static "
                                 "end) in some bin: no life there"))
@@ -1096,8 +1141,12 @@ def verdict(result: xr.DataTree | xr.Dataset, *, lte_limit: float = LTE_LIMIT) -
     lte_limit = real("lte_limit", lte_limit, unit="urad", low=0.0, low_open=True)
     kind = _kind(result)
     findings, checks = _KINDS[kind](result, lte_limit=lte_limit)
-    notes = (_flank_notes(_group(result, "ltca"))
-             if kind == "analysis" and isinstance(result, xr.DataTree) else [])
+    notes: list[str] = []
+    if kind == "analysis" and isinstance(result, xr.DataTree):
+        notes = _flank_notes(_group(result, "ltca"))
+    elif kind == "duty cycle":
+        ds = result["duty_cycle"].to_dataset() if isinstance(result, xr.DataTree) else result
+        notes = (_duty_static(ds) or ([], []))[1]
     return Verdict(kind, _worst_first(findings), tuple(checks),
                    _unchecked(result, kind, checks), tuple(notes))
 
