@@ -131,7 +131,7 @@ def one_bin(case):
 def test_single_bin_reproduces_run_analysis(case, one_bin):
     """One bin at the case's own misalignment is one run_analysis (1e-12 relative: the same
     arithmetic; the engine only moves it to a worker)."""
-    from contact.ltca.summary import edge_load_share
+    from contact.ltca.summary import edge_load_share, flank_peak
     from contact.pipeline import operating_conditions, run_analysis
     from friction.efficiency import efficiency_analysis
 
@@ -143,6 +143,9 @@ def test_single_bin_reproduces_run_analysis(case, one_bin):
     for name, ref in (("lte_mean", lt["lte_mean"].values[0]),
                       ("lte_peak_to_peak", lt["lte_peak_to_peak"].values[0]),
                       ("pressure_max_flank", lt["pressure_max_flank"].values[0]),
+                      # the peak the static check judges: ltca run's verdict's
+                      ("flank_peak_pressure", flank_peak(lt).pressure[0]),
+                      ("flank_corner_curves", flank_peak(lt).corner_curves[0]),
                       ("edge_load_share", edge_load_share(lt)[0]),
                       ("plastic_load_share", np.max(lt["plastic_load_share"].values[0])),
                       ("efficiency", fr["efficiency_mean"].values[0]),
