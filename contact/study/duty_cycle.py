@@ -630,7 +630,10 @@ def run_duty_cycle(case: Case | str | os.PathLike[str] | None, duty: DutyCycle,
         ``lte_harmonics`` [µrad], misalignment, ``power_in`` [W], ``energy_in``,
         ``energy_lost`` [kW h], ``flank_damage`` [1]; over the cycle ``cycle_energy_in``,
         ``cycle_energy_lost``, ``cycle_efficiency``, ``damage`` [1] and ``life`` [h] per
-        member with its location ``life_u``, ``life_v``, ``contact_safety_factor``; with
+        member with its location ``life_u``, ``life_v``, ``contact_safety_factor``;
+        ``contact_static_strength`` [MPa] per bin and member, against which the static
+        check (attribute ``contact_static_limit_exceeded``) holds the bins'
+        ``flank_peak_pressure`` (:func:`contact.ltca.summary.flank_peak`); with
         root stress in the analysis ``root_damage``, ``root_life`` [h],
         ``bending_safety_factor``; else the attribute ``bending`` says it is unavailable.
 
