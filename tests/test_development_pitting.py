@@ -195,8 +195,13 @@ def test_the_coast_flank_is_developed_again_only_where_its_torque_fell_far(monke
     assert drive.ellipse_length == 0.5
     before = basic.options.flank(basic.options.drive_flank)
     assert (before.path_angle, before.ellipse_length) != (drive.path_angle, 0.5)
+    # a first design meeting every target at the new torques (coast_flank_capacity's
+    # analysis there) is kept without a search: a searched design would replace it only
+    # where it met every target too (the spiral bevel 18x27 of benchmarks/data/
+    # unseen_designs developed its coast flank again at each cut of its torque)
     better_first = first._replace(best=ev(0.5, met=True))
-    assert again(142.6, outcome=better_first) is None
+    calls.clear()
+    assert again(142.6, outcome=better_first) is None and calls == []
 
 
 def test_the_coast_flank_developed_again_must_carry_its_torque(monkeypatch):

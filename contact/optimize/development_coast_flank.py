@@ -362,6 +362,14 @@ def coast_at_its_torque(pre_coast: BasicDesign, drive: DevelopmentEvaluation,
             or cap.torque >= COAST_REDEVELOP * developed_at
             or targets.coast_max_evaluations == 0):
         return None
+    if coast.best.full is not None and coast.best.full[2]:
+        # the first design meets every target at the new torques (coast_flank_capacity
+        # analysed it there as `ltca run --flank coast` does): that one analysis stands for
+        # a search, whose design would replace it only where it met every target as well
+        say(f"development: coast flank at its own design torque {cap.torque:.4g} N m (it "
+            f"was developed at {developed_at:.4g} N m): every target met there; not "
+            "developed again")
+        return None
     say(f"development: coast flank developed again at its own design torque "
         f"{cap.torque:.4g} N m (it was developed at {developed_at:.4g} N m)")
     redo_setup = dict(setup, torques=[setup["torques"][0], cap.torque])
