@@ -104,20 +104,18 @@ DRIVE_TARGETS_MET = {"eaxle_hypoid_11x39_s80", "fh_hypoid_11x43", "fh_spiral_bev
                      "fh_spiral_bevel_11x33_m0"}
 
 #: designs whose developed drive flank is tolerant at the mounting excursions (ΔE, ΔP ±
-#: 0.05 mm; ``[development] tolerant``). None now: the hypoid 12x37 at Σ 105° was, since
-#: the check's tolerance step (development_check.checked_tolerance, 2026-11-26 01:31: 2.8 %
-#: on the edges at ΔE −0.05 mm before it, its tip relief 15 µm; 22.5 µm after), until the
-#: Sainsot base compliance held at its fit's range (merge 4edff8f, phys71, 2026-11-26
-#: 10:01; bisected by synthesizing at first-parent commits: b73a83d tolerant, 4edff8f
-#: not) moved every analysis of its development (design 5: LTE 32/28 → 20/28 µrad): the
-#: chosen design (tip relief 15 µm, root relief 25 µm from 0.2, te_level 25) meets every
-#: drive target but misses the edge share at ΔE −0.05 mm (2.4 %) and ΔP −0.05 mm (2.03 %;
-#: limit 2 %), and the tolerance step's variants are not kept because each gives up a met
-#: target: tip relief 22.5 µm edge 0.9 % but centre v 0.63 (band 0.545 ± 0.08), root
-#: relief 37.5 µm LTE 29 / 48 µrad (target 40). The model's verdict, not a fault of the
-#: development (measured 2026-11-26, branch slow71; docs/own_gear_set.md, "The bundled
-#: designs on the tree of 2026-11-26").
-TOLERANT: set[str] = set()
+#: 0.05 mm; ``[development] tolerant``): the hypoid 12x37 at Σ 105°, since the check's
+#: tolerance step (development_check.checked_tolerance, 2026-11-26 01:31: 2.8 % on the
+#: edges at ΔE −0.05 mm before it, its tip relief 15 µm; 22.5 µm after). The Sainsot base
+#: compliance held at its fit's range (merge 4edff8f, phys71, 2026-11-26 10:01) moved its
+#: development (chosen: tip relief 15 µm, root relief 25 µm from 0.2, te_level 25; 2.4 %
+#: at ΔE −0.05 mm, 2.03 % at ΔP −0.05 mm, limit 2 %), and the step's full raises each gave
+#: up a met target (tip relief 22.5 µm the centre v, 0.63 against 0.545 ± 0.08; root relief
+#: 37.5 µm the LTE, 29 / 48 µrad); since the raise is also tried at 2/3 and 1/3
+#: (TOLERANCE_RAISE_FRACTIONS, branch tol71b) the tip relief 17.5 µm meets every target and
+#: is tolerant again (edges 1.5 / 1.5 / 1.4 / 1.2 % at ΔE ± / ΔP ± 0.05 mm;
+#: docs/own_gear_set.md, "The bundled designs on the tree of 2026-11-26").
+TOLERANT: set[str] = {"hypoid_12x37_s105"}
 
 
 #: designs whose ``ltca run`` FAILs, measured 2026-11-25, with what the one reason says:
