@@ -28,9 +28,7 @@ mesh_compliance       C and its parts
 from __future__ import annotations
 
 import contextlib
-import itertools
 import logging
-import threading
 import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -51,7 +49,7 @@ from contact.compliance.tooth import (
 )
 from contact.compliance.weber import weber_compliance
 from geometry.case import TeethKey
-from geometry.core.caches import Same, memoised, row_keys
+from geometry.core.caches import BatchedRows, Same, memoised, row_keys
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
@@ -549,38 +547,18 @@ POINTS_KEPT = 16384
 _SHELL_FIELDS = ("x", "theta", "u", "v", "side", "offset", "frame")
 
 
-class _PointStore:
-    """The shell coordinates kept for one tooth model (:func:`_point_store`): ``rows`` maps
-    a point's key to ``batch << 32 | row`` (its row in a mapped batch), ``batches`` holds
-    those batches' ShellPoints (read-only)."""
+class _PointStore(BatchedRows):
+    """The shell coordinates kept for one tooth model (:func:`_point_store`): a
+    :class:`~geometry.core.caches.BatchedRows` whose batches are ShellPoints (read-only)."""
 
-    __slots__ = ("batches", "lock", "rows", "serial")
-
-    def __init__(self) -> None:
-        self.lock = threading.Lock()  # (an analysis per thread: one at a time per model)
-        self.rows: dict[bytes, int] = {}
-        self.batches: dict[int, ShellPoints] = {}
-        self.serial = 0
+    __slots__ = ()
 
     def add(self, sp: ShellPoints, keys: list[bytes]) -> None:
-        """Keep the points ``keys`` (in the order of ``sp``'s rows)."""
+        """Keep the points ``keys`` (in the order of ``sp``'s rows), made read-only."""
         for a in sp:
             if isinstance(a, np.ndarray):
                 a.flags.writeable = False
-        self.serial += 1
-        self.batches[self.serial] = sp
-        base = self.serial << 32
-        self.rows.update(zip(keys, range(base, base + len(keys)), strict=True))
-
-    def trim(self, kept: int) -> None:
-        """Drop the oldest points beyond ``kept``, and the batches no point refers to."""
-        if len(self.rows) <= kept:
-            return
-        for k in list(itertools.islice(self.rows, len(self.rows) - kept)):
-            del self.rows[k]
-        used = set(np.unique(np.fromiter(self.rows.values(), dtype=np.int64) >> 32).tolist())
-        for b in [b for b in self.batches if b not in used]:
-            del self.batches[b]
+        super().add(sp, keys)
 
     def gather(self, keys: list[bytes], normal: bool) -> ShellPoints:
         """The kept shell coordinates of the points ``keys`` as one ShellPoints."""

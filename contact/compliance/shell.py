@@ -35,10 +35,8 @@ THEORIES            registry of kinematic theories (seed Mindlin, Mindlin, highe
 
 from __future__ import annotations
 
-import itertools
 import logging
 import math
-import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -57,7 +55,7 @@ from contact.compliance.shell_tooth import (
     Theory,
 )
 from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
-from geometry.core.caches import Same, memoised, row_keys
+from geometry.core.caches import BatchedRows, Same, memoised, row_keys
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, positive, real_array
 from geometry.machine.meshing import warm_seeds_active
@@ -721,37 +719,12 @@ def _as_range(idx):
 HALF_VECTORS_KEPT = 4096
 
 
-class _ColumnStore:
-    """The columns of Y kept for one shell model (:func:`_half_vector_store`): ``rows``
-    maps a segment's key to its column's place, ``batch << 32 | row``, in ``batches``
-    (serial → the (N, n_dof) C-ordered, read-only Yᵀ of one product), so that the columns
-    of a call are gathered a batch at a time, not one by one; ``lock`` serialises the
-    threads that use it."""
+class _ColumnStore(BatchedRows):
+    """The columns of Y kept for one shell model (:func:`_half_vector_store`): a
+    :class:`~geometry.core.caches.BatchedRows` whose batches are the (N, n_dof) C-ordered,
+    read-only Yᵀ of one product each."""
 
-    __slots__ = ("batches", "lock", "rows", "serial")
-
-    def __init__(self) -> None:
-        self.rows: dict[bytes, int] = {}
-        self.batches: dict[int, np.ndarray] = {}
-        self.serial = 0
-        self.lock = threading.Lock()
-
-    def add(self, yt: np.ndarray, keys: list[bytes]) -> None:
-        """Keep the columns ``yt`` (N, n_dof) (rows of Yᵀ, read-only) under ``keys``."""
-        self.serial += 1
-        self.batches[self.serial] = yt
-        base = self.serial << 32
-        self.rows.update(zip(keys, range(base, base + len(keys)), strict=True))
-
-    def trim(self, kept: int) -> None:
-        """Drop the oldest columns beyond ``kept``, and the batches no column refers to."""
-        if len(self.rows) <= kept:
-            return
-        for k in list(itertools.islice(self.rows, len(self.rows) - kept)):
-            del self.rows[k]
-        used = set(np.unique(np.fromiter(self.rows.values(), dtype=np.int64) >> 32).tolist())
-        for b in [b for b in self.batches if b not in used]:
-            del self.batches[b]
+    __slots__ = ()
 
 
 @memoised(maxsize=4)

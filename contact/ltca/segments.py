@@ -37,7 +37,7 @@ from contact.ltca.discretisation import (
 from contact.ltca.edges import FlankBoundary, edge_segments, flank_boundary
 from contact.utca import CURVE_SPACINGS, ContactCurves, EaseOff, contact_curves
 from contact.utca.fields import Same, fields_of
-from geometry.core.caches import memoised
+from geometry.core.caches import Carried, memoised
 from geometry.machine.meshing import warm_seeds_active
 
 __all__ = ["Segments", "clear_segment_memo", "roll_phases", "segment_geometry"]
@@ -234,22 +234,6 @@ class _CurvePart(NamedTuple):
     boundary: FlankBoundary | None
 
 
-class _Carried:
-    """A value handed through a memo without being part of its key (every carrier
-    compares equal): the case, whose teeth the key holds as ``Case.teeth_key``."""
-
-    __slots__ = ("value",)
-
-    def __init__(self, value) -> None:
-        self.value = value
-
-    def __hash__(self) -> int:
-        return 0
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, _Carried)
-
-
 def _curve_part(case, eo: EaseOff, target: np.ndarray, segments: int, spacing: str,
                 step: float | None) -> _CurvePart:
     """:func:`_curve_part_of`, memoised per process by the ease-off object, the teeth
@@ -263,13 +247,13 @@ def _curve_part(case, eo: EaseOff, target: np.ndarray, segments: int, spacing: s
     if warm_seeds_active():
         return _curve_part_of(case, eo, target, segments, spacing, step)
     target = np.ascontiguousarray(target, dtype=float)
-    return _memo_curve_part(Same(eo), case.teeth_key(), _Carried(case), target.shape,
+    return _memo_curve_part(Same(eo), case.teeth_key(), Carried(case), target.shape,
                             target.tobytes(), int(segments), str(spacing),
                             None if step is None else float(step))
 
 
 @memoised(maxsize=4)
-def _memo_curve_part(eo: Same, teeth, case: _Carried, shape: tuple[int, int], target: bytes,
+def _memo_curve_part(eo: Same, teeth, case: Carried, shape: tuple[int, int], target: bytes,
                      segments: int, spacing: str, step: float | None) -> _CurvePart:
     """:func:`_curve_part_of` memoised (:func:`_curve_part`), its arrays read-only."""
     part = _curve_part_of(case.value, eo.obj, np.frombuffer(target).reshape(shape),

@@ -30,6 +30,8 @@ row_keys         each row of a float array as a memo key (its bytes)
 from __future__ import annotations
 
 import functools
+import itertools
+import threading
 from collections.abc import Callable
 from typing import Any, TypeVar
 
@@ -134,6 +136,42 @@ class Carried:
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, Carried)
+
+
+class BatchedRows:
+    """A bounded store of rows kept a batch at a time: ``rows`` maps a row's key (bytes)
+    to ``batch << 32 | row`` (its row in a kept batch), ``batches`` the batch serial to
+    the batch (any object its user indexes by row), ``lock`` serialises the threads that
+    use it. The shell model's columns of Y (:mod:`contact.compliance.shell`) and the tooth
+    model's mapped points (:mod:`contact.compliance.mesh`) are kept so: a call's rows are
+    gathered a batch at a time, not one by one."""
+
+    __slots__ = ("batches", "lock", "rows", "serial")
+
+    def __init__(self) -> None:
+        self.rows: dict[bytes, int] = {}
+        self.batches: dict[int, Any] = {}
+        self.serial = 0
+        self.lock = threading.Lock()
+
+    def add(self, batch: Any, keys: list[bytes]) -> None:
+        """Keep ``batch`` (its rows in the order of ``keys``) under ``keys``."""
+        self.serial += 1
+        self.batches[self.serial] = batch
+        base = self.serial << 32
+        self.rows.update(zip(keys, range(base, base + len(keys)), strict=True))
+
+    def trim(self, kept: int) -> None:
+        """Drop the oldest rows beyond ``kept``, and the batches no row refers to."""
+        if len(self.rows) <= kept:
+            return
+        import numpy as np
+
+        for k in list(itertools.islice(self.rows, len(self.rows) - kept)):
+            del self.rows[k]
+        used = set(np.unique(np.fromiter(self.rows.values(), dtype=np.int64) >> 32).tolist())
+        for b in [b for b in self.batches if b not in used]:
+            del self.batches[b]
 
 
 def row_keys(rows, tag: bytes = b"") -> list[bytes]:
