@@ -127,7 +127,7 @@ def row_cold(tmp: Path) -> list[list]:
              "target 25 s, 1.0 GB"]]
 
 
-def _export(rev: str, tmp: Path) -> Path:
+def export_tree(rev: str, tmp: Path) -> Path:
     """The tree of commit ``rev`` in a directory of its own (``git archive``)."""
     dest = tmp / f"tree-{rev}"
     dest.mkdir()
@@ -142,7 +142,7 @@ def row_fe(tmp: Path, before: str | None) -> list[list]:
 
     trees = [("this tree", ROOT)]
     if before:
-        trees.insert(0, (before, _export(before, tmp)))
+        trees.insert(0, (before, export_tree(before, tmp)))
     rows, peaks = [], {}
     for name, tree in trees:
         out = tmp / f"fe-out-{len(rows)}"

@@ -29,6 +29,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from issue75_table import export_tree  # this script's folder is on sys.path
+
 for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
 
@@ -74,16 +76,6 @@ print(json.dumps({"cpu": cpu, "stages": {k: v / n for k, v in clock.cpu.items()}
 """
 
 
-def _export(rev: str, tmp: Path) -> Path:
-    """The tree of commit ``rev`` in a directory of its own (``git archive``)."""
-    dest = tmp / f"tree-{rev}"
-    dest.mkdir()
-    archive = subprocess.run(["git", "-C", str(ROOT), "archive", rev], check=True,
-                             capture_output=True).stdout
-    subprocess.run(["tar", "-x", "-C", str(dest)], input=archive, check=True)
-    return dest
-
-
 def measure(tree: Path, points: int) -> dict:
     """The child's result for one tree: ``cpu`` per point [s], ``stages`` [s per point]."""
     env = {**os.environ, "PYTHONPATH": str(tree)}
@@ -105,7 +97,7 @@ def main(argv: list[str] | None = None) -> None:
     with tempfile.TemporaryDirectory(prefix="study_point_") as tmp:
         trees = [("this tree", ROOT)]
         if args.before:
-            trees.insert(0, (args.before, _export(args.before, Path(tmp))))
+            trees.insert(0, (args.before, export_tree(args.before, Path(tmp))))
         res = {name: measure(tree, args.points) for name, tree in trees}
     names = [name for name, _ in trees]
     stages = sorted({s for r in res.values() for s in r["stages"]},

@@ -9,6 +9,7 @@ import math
 from types import MappingProxyType
 
 import pytest
+from development_stand_ins import metrics as _metrics
 from development_stand_ins import stand_in
 
 from contact.optimize.development_coast import (
@@ -213,16 +214,8 @@ def test_a_coast_design_torque_at_or_below_the_light_torque_is_scored_at_its_one
 
 def _coast_metrics(**over):
     """Coast metrics at (light, design) torque meeting every default target but those
-    ``over`` changes (stand-ins, no LTCA)."""
-    import numpy as np
-
-    m = {"pattern_toe_u": [0.2, 0.15], "pattern_heel_u": [0.7, 0.8],
-         "pattern_root_v": [0.3, 0.25], "pattern_tip_v": [0.85, 0.9],
-         "pattern_centre_u": [0.45, 0.5], "pattern_centre_v": [0.6, 0.6],
-         "edge_load_share": [0.0, 0.0], "plastic_share": [0.0, 0.0],
-         "lte_peak_to_peak": [20.0, 30.0], "pressure_max_flank": [900.0, 1500.0],
-         "lte_spread": [0.0, 0.1]}
-    return {k: np.asarray(v, float) for k, v in (m | over).items()}
+    ``over`` changes (stand-ins, no LTCA): the drive's stand-in metrics without edge load."""
+    return _metrics(**({"edge_load_share": [0.0, 0.0]} | over))
 
 
 def _coast_design(values, metrics, targets):

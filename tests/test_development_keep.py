@@ -9,30 +9,16 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+from development_stand_ins import checked as _checked
+from development_stand_ins import metrics as _metrics
 
 from contact.optimize import development_check as dcheck
-from contact.optimize.development import DevelopmentTargets, development_score
-from contact.optimize.development_result import DevelopmentEvaluation
-
-
-def _metrics(**over):
-    """Metrics at (light, design) torque of a design meeting every default target."""
-    m = {"pattern_toe_u": [0.2, 0.15], "pattern_heel_u": [0.7, 0.8],
-         "pattern_root_v": [0.3, 0.25], "pattern_tip_v": [0.85, 0.9],
-         "pattern_centre_u": [0.45, 0.5], "pattern_centre_v": [0.6, 0.6],
-         "edge_load_share": [0.0, 0.01], "plastic_share": [0.0, 0.0],
-         "lte_peak_to_peak": [20.0, 30.0], "pressure_max_flank": [900.0, 1500.0],
-         "lte_spread": [0.0, 0.1]}
-    m.update(over)
-    return {k: np.asarray(v, float) for k, v in m.items()}
+from contact.optimize.development import DevelopmentTargets
 
 
 def _design(values, metrics, targets=None):
     """A checked design scored on ``metrics`` (:func:`development_score`, centre v 0.6)."""
-    full = development_score(metrics, targets or DevelopmentTargets(), centre_v=0.6)
-    return DevelopmentEvaluation(3, dict(values), metrics, full[0], full[1], full[2], "",
-                                 0.0, full=full, checked=True)
+    return _checked(dict(values), metrics, targets or DevelopmentTargets(), 0.6)
 
 
 def test_the_keep_rule_asks_better_then_lost_then_tolerant(monkeypatch):
