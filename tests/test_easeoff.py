@@ -232,6 +232,91 @@ def test_nearest_node_is_the_full_search(repeated):
     np.testing.assert_array_equal(_nearest_node(zt, rt, zn, rn), full)
 
 
+def test_spline_start_settled_nodes_step_no_more():
+    """The placement's spline start (conjugate_map._spline_start) stops stepping the nodes
+    whose Newton step left them where they were; the places are those of all
+    _SPLINE_ITER steps on every node, bit for bit (default case, drive side, at the case's
+    misalignment and at ΔE +0.04 mm, ΔP −0.02 mm). The reference here is that plain
+    loop; a node at a fixed point stays there, and the 861 nodes include ones that
+    alternate in the last bit to the end (they run all steps), which the check covers."""
+    from contact.catalogue import resolve_case
+    from contact.utca import conjugate_map as cm
+    from contact.utca.easeoff import working_flanks
+    from geometry.machine.flank import DEFAULT_GRID
+
+    case = resolve_case(None)
+    pf, gf = working_flanks(case, None)
+    gs = cm.gear_nodes(case, gf, dict(DEFAULT_GRID))
+    zt, rt = gs.grid.axial, gs.grid.radius
+    m = case.misalignment
+    alternating = 0
+    for mis in (m, dataclasses.replace(m, delta_E=m.delta_E + 0.04,
+                                       delta_P=m.delta_P - 0.02)):
+        kin = mesh_kinematics(case, mis)
+        fm = cm._forward_map(case, pf, kin, cm.gear_reference(case, kin))
+        ok, img = fm.nodes.good, fm.nodes.image
+        uu, vv = np.meshgrid(fm.u, fm.v, indexing="ij")
+        k = cm._nearest_node(zt.ravel(), rt.ravel(), img[..., 0][ok], img[..., 1][ok])
+        u, v = uu[ok][k].reshape(zt.shape), vv[ok][k].reshape(zt.shape)
+        target = np.stack([zt, rt], -1)
+        for it in range(cm._SPLINE_ITER):
+            un, vn = fm.newton_step(fm.jacobian(u, v), u, v, target - fm.image(u, v))
+            if it == cm._SPLINE_ITER - 1:
+                alternating += int(((un != u) | (vn != v)).sum())
+            u, v = un, vn
+        got = cm._spline_start(fm, zt, rt)
+        assert got[0].tobytes() == u.tobytes() and got[1].tobytes() == v.tobytes()
+    assert alternating > 0  # some nodes still move at the last step: both paths exercised
+
+
+def test_envelope_batch_subset_keeping_its_seed_is_identical(monkeypatch):
+    """solve_envelope with a guess on 1-D targets: a point's solution depends on the rest
+    of its batch only through the seed target (its section wins at a blade junction), so
+    any subset of the targets that keeps the seed target, named by ``seed_index``, gives
+    its points' solutions bit for bit (s, θ, q, section, reason, position, normal): the
+    identity a regrouping of the placement's solves needs. Checked on the default case's
+    placement calls (exact iterations, 1-D); a subset without the seed target changes some
+    points' sections there (the batch dependence, docs/performance.md "A per-point
+    section rule at blade junctions"), which the second count shows is exercised."""
+    from contact.catalogue import resolve_case
+    from contact.utca import conjugate_map as cm
+
+    calls = []
+
+    def recording(blade, settings, z, p, **kw):
+        calls.append((blade, settings, np.array(z), np.array(p), kw))
+        return solve_envelope(blade, settings, z, p, **kw)
+
+    monkeypatch.setattr(cm, "solve_envelope", recording)
+    cm.clear_memos()
+    ease_off(resolve_case(None))
+    monkeypatch.undo()
+    fields = ("s", "theta", "q", "section", "reason", "position", "normal")
+    rng = np.random.default_rng(1)
+    checked = unpinned_differs = 0
+    for blade, settings, z, p, kw in calls:
+        if z.ndim != 1 or kw.get("guess") is None:
+            continue
+        full = solve_envelope(blade, settings, z, p, **kw)
+        n = z.size
+        seed = n // 2
+        sub = np.union1d(rng.choice(n, size=n // 3, replace=False), [seed])
+        guess = tuple(np.asarray(a)[sub] for a in kw["guess"])
+        at = int(np.flatnonzero(sub == seed)[0])
+        part = solve_envelope(blade, settings, z[sub], p[sub],
+                              **{**kw, "guess": guess, "seed_index": (at,)})
+        for f in fields:
+            assert np.asarray(getattr(part, f)).tobytes() == \
+                np.asarray(getattr(full, f))[sub].tobytes(), (n, f)
+        checked += 1
+        rest = np.setdiff1d(sub, [seed])
+        alone = solve_envelope(blade, settings, z[rest], p[rest], **{**kw, "guess": tuple(
+            np.asarray(a)[rest] for a in kw["guess"])})
+        unpinned_differs += int(np.any(alone.section != full.section[rest]))
+    assert checked >= 8
+    assert unpinned_differs > 0
+
+
 def test_pinion_corner_holes_continue_the_corner_column():
     """Gear nodes whose conjugate lies on the pinion blade's flankrem corner (no mate on
     either section, ``no_conjugate_mate``) are filled by :func:`ease_off` from the two

@@ -1058,7 +1058,12 @@ def solve_envelope(blade: Blade, settings: MachineSettings, axial, radius, *,
     the system is 3×3 in (s, θ, q) (2×2 in (s, θ) for Formate). Solved to |Δz|, |Δρ| <
     1e-10 mm and |f| < 1e-12. With a guess, the undercut test (reason 4) compares ∂f/∂q
     with its sign at the seed target's solution, as without one; the seed search runs only
-    if the seed target or some other point does not converge from its guess.
+    if the seed target or some other point does not converge from its guess. On 1-D
+    targets a point's solution depends on the other targets only through the seed target
+    (its section wins at a blade-section junction where the point has roots on two): a
+    subset of the targets that keeps the seed target, named by ``seed_index``, gives its
+    points' solutions bit for bit (``tests/test_easeoff.py``); a subset without it may
+    take another section at a junction.
     """
     z = np.asarray(axial, dtype=float)
     p = np.asarray(radius, dtype=float)
