@@ -197,26 +197,12 @@ def test_an_lte_finding_names_the_contact_ratios_and_the_remedy():
         "alone over 75 % of the mesh cycle)")
     low = next_steps(tree, load_case(ROOT / "cases" / "iso10300_30_sample3.toml"), "c.toml",
                      None)
-    # one pair alone over 75 % of the cycle at 50 N m: the face width that reaches eps_vb
-    # 1.25 (eps_vg 2.04 -> 2.43) is estimated to leave 1.49 pairs: no remedy, said why
-    assert len(low) == 1 and low[0].startswith("  next, the LTE: face contact ratio eps_vb "
-                                               "0.86 is below 1.25")
-    assert ("but that is not estimated to lower it: at 50 N m one tooth pair carries the "
-            "load alone over 75 % of the mesh cycle (loaded contact ratio 1.25), and the "
-            "change raises the total contact ratio eps_vg 2.04 only to 2.43: an estimated "
-            "loaded contact ratio 1.49") in low[0]
-    assert "ltca synthesize" not in low[0]
-    # one pair alone over a quarter of it: the same change estimated to give two pairs
-    # throughout (1.75 x 2.43 / 2.04 = 2.09): printed as the remedy
-    some = xr.DataTree.from_dict({"/ltca": lt.assign(pairs_in_contact=(
-        ("torque", "roll"), [[1, 2, 2, 2], [2, 2, 2, 2]])), "/rating": rating})
-    low = next_steps(some, load_case(ROOT / "cases" / "iso10300_30_sample3.toml"), "c.toml",
-                     None)
-    assert len(low) == 1 and low[0].startswith("  next, the LTE is the design's: face "
+    assert len(low) == 1 and low[0].startswith("  next, the LTE may be the design's: face "
                                                "contact ratio eps_vb 0.86 is below 1.25")
-    assert "an estimated loaded contact ratio 2.09, two pairs" in low[0]
-    assert low[0].endswith("synthesise the basic file again with it (ltca synthesize "
-                           "BASIC.toml)")
+    # a trial, not a remedy: no estimate from the basic data supports one
+    assert "whether that lowers the LTE is not estimated from the basic data" in low[0]
+    assert low[0].endswith("a trial: ltca synthesize BASIC.toml with it, then ltca run of "
+                           "the case it writes")
     assert next_steps(tree, load_case(ROOT / "cases" / "iso10300_30_sample2.toml"),
                       "c.toml", None) == []
     # beyond twice the limit the finding FAILs (verdicts.LTE_FAIL_FACTOR): the same remedy
@@ -227,8 +213,8 @@ def test_an_lte_finding_names_the_contact_ratios_and_the_remedy():
     assert verdict(loud).severity == "fail"
     steps = next_steps(loud, load_case(ROOT / "cases" / "iso10300_30_sample3.toml"),
                        "c.toml", None)
-    assert sum(x.startswith("  next, the LTE: face contact ratio eps_vb 0.86 is below "
-                            "1.25") for x in steps) == 1
+    assert sum(x.startswith("  next, the LTE may be the design's: face contact ratio "
+                            "eps_vb 0.86 is below 1.25") for x in steps) == 1
 
 
 def test_the_next_step_of_an_lte_spread_names_the_overlap():
@@ -240,8 +226,7 @@ def test_the_next_step_of_an_lte_spread_names_the_overlap():
 
     low = overlap_lines(load_case(ROOT / "cases" / "iso10300_30_sample3.toml"))
     assert len(low) == 1 and "eps_vb 0.86 is below 1.25" in low[0]
-    # no analysis to estimate from: the change, said not estimated
-    assert "ltca synthesize" in low[0] and "not estimated here whether it lowers" in low[0]
+    assert "ltca synthesize" in low[0] and "not estimated" in low[0]
     assert overlap_lines(load_case(ROOT / "cases" / "iso10300_30_sample2.toml")) == []
 
 
@@ -326,47 +311,3 @@ def test_synthesizes_note_gives_the_developed_lte_in_numbers():
     dev.best.metrics["lte_peak_to_peak"] = np.array([30.0, 38.0])
     assert low_overlap_lte(dev).endswith("drive 30/38 urad at 28.8/192 N m (light/design), "
                                          "the development's target 40 urad met")
-
-
-def test_the_overlap_estimate_scales_the_loaded_pairs_by_the_total_contact_ratio():
-    """loaded_pairs_estimate: the remedy design's ε_vγ is its ε_vα (the ISO 23509 blank at
-    the face width overlap_remedy found) plus the target 1.25 (the root's, to its 1e-3 mm
-    tolerance: 1e-3 in ε_vβ), the estimate the measured mean × ε_vγ ratio (hand-computed
-    from the pairs put in), the single-pair share 2 − that, floored at 0; supported only
-    where one pair is alone now and none after; None where ε_vβ meets the target."""
-    import dataclasses
-
-    from contact.load_capacity.design_table import design_blank, design_table
-    from contact.load_capacity.iso10300.face_contact import (
-        loaded_pairs_estimate,
-        low_ratio_text,
-    )
-    from contact.load_capacity.iso10300.inputs import gear_data_from_blank
-    from contact.load_capacity.iso10300.virtual_gears import virtual_gears
-    from geometry.case import load_case
-    from geometry.iso23509.blank import blank_geometry
-
-    def ratios(d):
-        vg = virtual_gears(gear_data_from_blank(blank_geometry(d)))
-        return float(vg.eps_va), float(vg.eps_vb)
-
-    design = design_blank(design_table(
-        load_case(ROOT / "cases" / "iso10300_30_sample3.toml"), "")).design
-    r = overlap_remedy(design)
-    a0, b0 = ratios(design)
-    a1, b1 = ratios(dataclasses.replace(design, b2=r.b2_needed))
-    assert b1 == pytest.approx(1.25, abs=1e-3)
-    est = loaded_pairs_estimate(design, [1, 1, 1, 2, np.nan])
-    assert (est.pairs, est.single) == (1.25, 0.75)
-    assert est.eps_vg == pytest.approx(a0 + b0, rel=1e-12)
-    eps1, m1, one = est.ways["b2"]
-    assert eps1 == pytest.approx(a1 + b1, rel=1e-12)
-    assert m1 == pytest.approx(1.25 * (a1 + b1) / (a0 + b0), rel=1e-12)
-    assert one == pytest.approx(2.0 - m1, rel=1e-12) and est.supported() == []
-    assert loaded_pairs_estimate(design, [1, 2, 2, 2]).supported() == ["b2"]
-    # two pairs throughout already: the LTE is no one-pair stretch, nothing supported
-    assert loaded_pairs_estimate(design, [2, 2, 3]).supported() == []
-    assert loaded_pairs_estimate(design, [np.nan, 0]) is None
-    enough = design_blank(design_table(
-        load_case(ROOT / "cases" / "iso10300_30_sample2.toml"), "")).design
-    assert low_ratio_text(enough) is None and loaded_pairs_estimate(enough, [1, 2]) is None

@@ -150,32 +150,27 @@ def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[
             [f"    ltca rate {shown} --torque {torques}"] if rate else [])
 
 
-def overlap_lines(case, what: str = "the LTE spread", ltca=None) -> list[str]:
+def overlap_lines(case, what: str = "the LTE spread") -> list[str]:
     """The next-step line of an LTE finding (the LTE-spread FAIL, or ``ltca run``'s ``lte``
-    attention) whose cause may be the design's own low contact ratios: ε_vβ below 1.25 and
-    the face width and spiral angle that reach it, ε_vα below 1 and the depth factor and
+    attention) whose cause may be the design's own low contact ratios: ε_vβ below 1.25 and the
+    face width and spiral angle that reach it, ε_vα below 1 and the depth factor and
     pressure angle that reach it
     (:func:`contact.load_capacity.iso10300.face_contact.low_ratio_text`); a bearing change
     offsets it only in part (docs/own_gear_set.md, "A face contact ratio below 1.25").
     Empty where the case has no ``[design]`` table or both ratios meet their limits.
 
-    Where the analysis is given, the face-width and spiral-angle change is printed as the
-    remedy (with "synthesise the basic file again") only where an estimate supports it
-    (:func:`contact.load_capacity.iso10300.face_contact.loaded_pairs_estimate` at the
-    torque of the largest LTE p-p: one pair alone over part of the cycle now, two pairs
-    over all of it estimated after); else the line says what the basic data's change
-    reaches and why it is not estimated to lower the LTE (issue 71: the 18×27's printed
-    β_m 39.5° left its LTE at 81 µrad).
+    The change is printed as a trial, never as the LTE's remedy: no estimate from the basic
+    data supports one (the LTE is the bearing the development finds on the new blank; the
+    loaded contact ratio scaled by the total contact ratio predicted neither outcome
+    measured): the 21×29 at β_m 35 → 38.5° went 135/93 → 46/47 µrad at 288/1920 N·m, the
+    18×27 at β_m 35 → 39.5° 80 → 81 µrad at its design torque, with two pairs over the whole
+    cycle after (docs/own_gear_set.md, "The overlap change is a trial").
 
     Parameters
     ----------
     case : geometry.case.Case
     what : str
         The finding named: ``"the LTE spread"`` (default) or ``"the LTE"``.
-    ltca : xarray.Dataset, optional
-        ``/ltca`` of the analysis (``lte_peak_to_peak`` (torque) [µrad],
-        ``pairs_in_contact`` (torque, roll) [1]); without it the remedy as before, said
-        not estimated.
 
     Returns
     -------
@@ -192,65 +187,12 @@ def overlap_lines(case, what: str = "the LTE spread", ltca=None) -> list[str]:
     said = low_ratio_text(design)
     if said is None:
         return []
-    estimate = _pairs_estimate(design, ltca)
-    if estimate is None or "profile contact ratio" in said:
-        # no analysis to estimate from (or a low eps_va, whose own remedy is not
-        # estimated): the change the basic data allows, not promised to lower the LTE
-        return [f"  next, {what} may be the design's: {said}; synthesise the basic file "
-                "again with it (ltca synthesize BASIC.toml): not estimated here whether it "
-                "lowers the LTE (ltca run of the case estimates it from its loaded contact "
-                "ratio)"]
-    torque, est = estimate
-    ways = est.supported()
-    pairs = (f"at {torque:g} N m one tooth pair carries the load alone over "
-             f"{100 * est.single:.0f} % of the mesh cycle (loaded contact ratio "
-             f"{est.pairs:.2f})")
-    after = " / ".join(f"{w[0]:.2f}" for w in est.ways.values())
-    loaded = " / ".join(f"{w[1]:.2f}" for w in est.ways.values())
-    if ways:
-        return [f"  next, {what} is the design's: {said}; {pairs}, and the change raises "
-                f"the total contact ratio eps_vg {est.eps_vg:.2f} to {after}: an estimated "
-                f"loaded contact ratio {loaded}, two pairs over the whole cycle "
-                "(face_contact.loaded_pairs_estimate); synthesise the basic file again with "
-                "it (ltca synthesize BASIC.toml)"]
-    if est.single <= 0.0:
-        why = (f"at {torque:g} N m two or more tooth pairs carry the load over the whole "
-               f"mesh cycle (loaded contact ratio {est.pairs:.2f}): the LTE p-p there is the "
-               "stiffness variation of the pairs in mesh and the bearing's TE, not a "
-               "stretch of one pair alone that a higher eps_vb removes")
-    else:
-        why = (f"{pairs}, and the change raises the total contact ratio eps_vg "
-               f"{est.eps_vg:.2f} only to {after}: an estimated loaded contact ratio "
-               f"{loaded}, one pair still alone over part of the cycle, whose deflection the "
-               "LTE p-p is")
-    return [f"  next, {what}: {said}, but that is not estimated to lower it: {why} "
-            "(contact.load_capacity.iso10300.face_contact.loaded_pairs_estimate; "
-            "docs/own_gear_set.md, 'An overlap remedy that is estimated'); the basic data's "
-            "face width and spiral angle within their usual limits do not reach the LTE "
-            "limit on their own"]
-
-
-def _pairs_estimate(design, ltca):
-    """(torque [N·m], :class:`~contact.load_capacity.iso10300.face_contact.PairsEstimate`)
-    at the analysis' torque of the largest LTE p-p, or None (no analysis, no pairs, no
-    estimate)."""
-    import numpy as np
-
-    from contact.load_capacity.iso10300.face_contact import loaded_pairs_estimate
-    from geometry.core.errors import InputError
-
-    if ltca is None or not {"pairs_in_contact", "lte_peak_to_peak"} <= set(ltca.variables):
-        return None
-    pp = np.nan_to_num(np.asarray(ltca["lte_peak_to_peak"].values, float), nan=-1.0)
-    if pp.ndim != 1 or not pp.size or "torque" not in ltca["pairs_in_contact"].dims:
-        return None
-    k = int(np.argmax(pp))
-    torque = float(ltca["torque"].values[k])
-    try:
-        est = loaded_pairs_estimate(design, ltca["pairs_in_contact"].isel(torque=k).values)
-    except (InputError, ValueError, ZeroDivisionError):
-        return None
-    return None if est is None else (torque, est)
+    return [f"  next, {what} may be the design's: {said}; whether that lowers the LTE is "
+            "not estimated from the basic data: the LTE is the bearing developed on the new "
+            "blank (measured: a 21x29 at beta_m 35 -> 38.5 deg 135/93 -> 46/47 urad, an 18x27 "
+            "at 35 -> 39.5 deg 80 -> 81 urad; docs/own_gear_set.md, 'The overlap change is a "
+            "trial'); a trial: ltca synthesize BASIC.toml with it, then ltca run of the case "
+            "it writes"]
 
 
 def spread_failed(findings: Sequence) -> bool:

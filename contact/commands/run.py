@@ -476,7 +476,7 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
         if any(f.check == "lte" for f in v.findings):
             from contact.commands.next_steps import overlap_lines
 
-            return overlap_lines(case, "the LTE", _ltca_of(tree))
+            return overlap_lines(case, "the LTE")
         return []
     failed = {f.check for f in v.findings}
     shown = case_arg if case_arg is not None else case.name
@@ -521,9 +521,9 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
 
     if "implausible" in failed and spread_failed(v.findings):
         # an LTE spread that is the design's low face contact ratio
-        out = overlap_lines(case, ltca=_ltca_of(tree)) + out
+        out = overlap_lines(case) + out
     elif "lte" in failed:  # an LTE beyond twice its limit: the same remedy, said once
-        out = overlap_lines(case, "the LTE", _ltca_of(tree)) + out
+        out = overlap_lines(case, "the LTE") + out
     if "scuffing" in failed:
         op = case.operating
         out += ["  next, scuffing: the flash temperature falls with a cooler oil inlet, smoother "
@@ -534,12 +534,6 @@ def next_steps(tree, case, case_arg: str | None, flank: str | None) -> list[str]
                 f"    ltca run {shown} --flank {side} --torque {torques} --temperature "
                 f"{op.temperature - 20.0:g} --roughness {op.roughness / 2.0:g}"]
     return out
-
-
-def _ltca_of(tree):
-    """The tree's ``/ltca`` as a dataset (None without one): what the overlap remedy's
-    estimate reads (:func:`contact.commands.next_steps.overlap_lines`)."""
-    return tree["ltca"].to_dataset() if "ltca" in tree.children else None
 
 
 def check_certified(tree, path) -> None:

@@ -33,7 +33,6 @@ overlap_text       that as a sentence, or None where ε_vβ meets the target
 profile_remedy     ε_vα of a design and the k_d, α_dD that reach the target
 low_ratio_text     the sentence of every contact ratio below its limit, or None
 loaded_ratio_text  the contact ratios and the loaded contact ratio of an analysis
-loaded_pairs_estimate  the loaded contact ratio an overlap remedy is estimated to reach
 """
 
 from __future__ import annotations
@@ -43,9 +42,8 @@ import math
 from dataclasses import dataclass
 
 __all__ = ["FACE_CONTACT_RATIO_MIN", "FACE_WIDTH_LIMIT", "PROFILE_CONTACT_RATIO_MIN",
-           "OverlapRemedy", "PairsEstimate", "ProfileRemedy", "loaded_pairs_estimate",
-           "loaded_ratio_text", "low_ratio_text", "overlap_remedy", "overlap_text",
-           "profile_remedy"]
+           "OverlapRemedy", "ProfileRemedy", "loaded_ratio_text", "low_ratio_text",
+           "overlap_remedy", "overlap_text", "profile_remedy"]
 
 #: the least face contact ratio ε_vβ bevel-gear design practice asks for (AGMA 2005-D03,
 #: face contact ratio m_F); below it ``ltca synthesize`` adds a note and the LTE-spread
@@ -448,111 +446,3 @@ def loaded_ratio_text(eps_va: float, eps_vb: float, pairs) -> str:
                    f"carrying load, one pair alone over {100 * np.mean(n <= 1):.0f} % of "
                    "the mesh cycle)")
     return "; ".join(out)
-
-
-@dataclass(frozen=True)
-class PairsEstimate:
-    """What an overlap remedy (:func:`overlap_remedy`) is estimated to do to the tooth
-    pairs an analysis measured (:func:`loaded_pairs_estimate`).
-
-    Attributes
-    ----------
-    pairs : float — [1]
-        The loaded contact ratio measured: the mean of the tooth pairs carrying load over
-        the mesh cycle (``/ltca``'s ``pairs_in_contact`` at one torque).
-    single : float — [1]
-        The share of the mesh cycle one pair carries alone (pairs ≤ 1), measured.
-    eps_vg : float — [1]
-        The design's total contact ratio ε_vγ = ε_vα + ε_vβ (ISO 10300-1, drive side).
-    ways : dict of str to (float, float, float)
-        Per remedy way (``"b2"``, ``"beta_m"``: the value :func:`overlap_remedy` found)
-        the remedy design's ε_vγ, the loaded contact ratio estimated for it (``pairs``
-        × its ε_vγ / ``eps_vg``) and the single-pair share estimated (max(0, 2 − that),
-        the cycle changing between one and two pairs).
-    """
-
-    pairs: float
-    single: float
-    eps_vg: float
-    ways: dict
-
-    def supported(self) -> list[str]:
-        """The ways estimated to leave no single-pair stretch (estimated loaded contact
-        ratio ≥ 2) where one pair now carries part of the cycle alone: the only ways the
-        estimate supports as a remedy of an LTE set by the pair hand-over."""
-        if self.single <= 0.0:
-            return []
-        return [k for k, (_, _, one) in self.ways.items() if one <= 0.0]
-
-
-def loaded_pairs_estimate(design, pairs, target: float = FACE_CONTACT_RATIO_MIN
-                          ) -> PairsEstimate | None:
-    """The loaded contact ratio each overlap remedy (:func:`overlap_remedy`: the face
-    width, the spiral angle that raise ε_vβ to ``target``) is estimated to reach, from
-    the one an analysis measured.
-
-    Parameters
-    ----------
-    design : geometry.iso23509.design_data.BevelGearDesign
-        The basic design data the analysis' case was synthesised from.
-    pairs : array_like, shape (n_roll,) — [1]
-        The tooth pairs carrying load at each roll position of the mesh cycle at one
-        torque (``/ltca``'s ``pairs_in_contact``), NaN ignored.
-    target : float — [1]
-        The ε_vβ aimed at; default :data:`FACE_CONTACT_RATIO_MIN`.
-
-    Returns
-    -------
-    PairsEstimate or None
-        None where ε_vβ already meets ``target``, no roll position carries load, or the
-        blank cannot be computed.
-
-    Raises
-    ------
-    InputError
-        ``target`` not a number in (0, 5] (:func:`overlap_remedy`).
-
-    Notes
-    -----
-    The LTE p-p of a localised bearing that changes between one and two loaded pairs is
-    the deflection of that change: it lasts while any stretch of the cycle has one pair
-    alone, whatever its length (docs/own_gear_set.md, "A face contact ratio below 1.25":
-    on the spiral bevel 17×29 no bearing lever brought it below 80 µrad at mean pairs
-    1.75–2.1). The estimate scales the measured loaded contact ratio with the total
-    contact ratio ε_vγ of ISO 10300-1 (the bearing's share of the flank kept), the pair
-    count's geometric bound; a remedy is supported only where the estimate reaches two
-    pairs over the whole cycle. Checked on the two remedies measured
-    (tests/test_face_contact.py): the spiral bevel 18×27 at β_m 35 → 39.5° and the
-    industrial 21×29 at β_m 35 → 38.5°, ε_vγ +4 % and +3 %, the single-pair stretch kept,
-    and their LTE p-p at the design torque 80 → 81 and 135 → 60 µrad (the 21×29 at a
-    design torque lowered 35 % by its local pitting capacity).
-    """
-    import numpy as np
-
-    from geometry.core.errors import InputError
-
-    n = np.asarray(pairs, float)
-    n = n[np.isfinite(n)]
-    if not n.size or not np.any(n > 0):
-        return None
-    r = overlap_remedy(design, target)
-    if r.eps_vb >= r.target:
-        return None
-    try:
-        eps0 = _eps_va(design) + r.eps_vb
-    except (InputError, ValueError, ZeroDivisionError, AttributeError):
-        return None
-    m = float(n.mean())
-    ways = {}
-    for key, change in (("b2", {"b2": r.b2_needed}),
-                        ("beta_m", {"beta_m": math.radians(r.beta_m_needed)})):
-        if not math.isfinite(next(iter(change.values()))):
-            continue
-        d = dataclasses.replace(design, **change)
-        try:
-            eps1 = _eps_va(d) + _eps_vb(d)
-        except (InputError, ValueError, ZeroDivisionError, AttributeError):
-            continue
-        m1 = m * eps1 / eps0
-        ways[key] = (eps1, m1, max(0.0, 2.0 - m1))
-    return PairsEstimate(m, float(np.mean(n <= 1)), eps0, ways)
