@@ -25,7 +25,7 @@ from contact.catalogue import resolve_case
 from contact.ltca import LTCAOptions
 from contact.ltca.summary import flank_peak
 from contact.plots.duty_report import render_duty_report
-from contact.study.duty_cycle import DutyInputs, duty_cycle_result
+from contact.study.duty_cycle import DutyInputs, bin_envelopes, duty_cycle_result
 from contact.study.duty_cycle_inputs import DutyCycle
 from contact.study.verdicts import verdict
 
@@ -61,13 +61,28 @@ def _ltca(p_long: float, p_corner: float) -> xr.Dataset:
         coords={"torque": [TORQUE], "segment_kind": ("segment", np.array(["curve"] * 4))})
 
 
+def _placed(p_long: float, p_corner: float) -> xr.Dataset:
+    """:func:`_ltca` with its segments on a 3×3 gear grid: the line contact's 4 segments
+    on the middle node (u, v 0.5), the corner clip's on the toe-tip node (u 0, v 1)."""
+    lt = _ltca(p_long, p_corner)
+    su, sv = np.zeros((1, 2, 4)), np.zeros((1, 2, 4))
+    su[0, 0], sv[0, 0] = 0.5, 0.5
+    su[0, 1], sv[0, 1] = 0.0, 1.0
+    grid = np.linspace(0.0, 1.0, 3)
+    return lt.assign({"segment_u": (("roll", "pair", "segment"), su),
+                      "segment_v": (("roll", "pair", "segment"), sv)}).assign_coords(
+        u=grid, v=grid)
+
+
 def _cycle(case, p_long: float, p_corner: float) -> xr.Dataset:
     """The /duty_cycle of one bin whose flank reads these peaks (the corner clip's on the
-    grid's toe-tip node, the line contact's in the middle)."""
-    fp = flank_peak(_ltca(p_long, p_corner))
+    grid's toe-tip node, the line contact's in the middle), its envelopes as
+    :func:`contact.study.duty_cycle.analyse_bin` makes them."""
+    lt = _placed(p_long, p_corner)
+    fp = flank_peak(lt)
     u = v = np.linspace(0.0, 1.0, 3)
-    env = np.zeros((1, 3, 3))
-    env[0, 1, 1], env[0, 0, 2] = p_long, p_corner
+    line, corner, edge = bin_envelopes(lt, fp)
+    env = line[None]
     one = ("bin",)
     bins = xr.Dataset(
         {"lte_mean": (one, [10.0]), "lte_peak_to_peak": (one, [5.0]),
@@ -78,7 +93,8 @@ def _cycle(case, p_long: float, p_corner: float) -> xr.Dataset:
          "efficiency": (one, [0.99]), "power_loss": (one, [100.0]),
          "lte_harmonics": (("bin", "harmonic"), [[1.0, 0.5, 0.2]]),
          "pressure_envelope": (("bin", "u", "v"), env),
-         "edge_pressure_envelope": (("bin", "u", "v"), np.zeros((1, 3, 3))),
+         "edge_pressure_envelope": (("bin", "u", "v"), edge[None]),
+         "corner_pressure_envelope": (("bin", "u", "v"), corner[None]),
          "plausibility": (one, np.zeros(1, np.int8)),
          "status": (one, np.zeros(1, np.int8)), "reason": (one, np.array([""], object))},
         coords={"u": u, "v": v})
@@ -142,3 +158,44 @@ def test_a_file_before_the_flank_peak_is_judged_by_its_attribute(case, strength)
     assert f.reason.startswith("a flank pressure exceeds the static contact strength")
     out.attrs["contact_static_limit_exceeded"] = 0
     assert not _static(verdict(out))
+
+
+def test_the_bin_envelopes_split_the_flank_by_the_flank_peak_rule():
+    """The line contacts' envelope peaks at the flank peak (the rule's identity), the
+    corner clip's lands on its own node, and the largest of the three is the envelope of
+    every segment (:func:`contact.load_capacity.durability.pressure_envelopes`, the rule of
+    ``/ltca/pressure_envelope``): no segment is lost, none counted twice."""
+    from contact.load_capacity.durability import pressure_envelopes
+
+    lt = _placed(900.0, 2500.0)
+    line, corner, edge = bin_envelopes(lt)
+    assert line.max() == flank_peak(lt).pressure[0] == 900.0
+    assert (line[1, 1], corner[0, 2]) == (900.0, 2500.0)
+    assert corner.sum() == 2500.0 and not edge.any()
+    every, _ = pressure_envelopes(lt["pressure_max"].values[0], lt["segment_u"].values,
+                                  lt["segment_v"].values, np.zeros(4, bool), lt["u"].values,
+                                  lt["v"].values)
+    np.testing.assert_array_equal(np.maximum(line, corner), every)
+    # a short curve that carries a share of its roll's load is a contact: it stays in
+    heavy = _placed(900.0, 2500.0)
+    heavy["force"][0, 0, 1] = 100.0  # 100 N per segment: 9 % of the roll's 4.4 kN
+    line, corner, _ = bin_envelopes(heavy)
+    assert line[0, 2] == 2500.0 and not corner.any()
+
+
+def test_a_corner_clip_sets_no_damage_and_no_safety(case, strength):
+    """The damage, the life, S_H at the peak bin and the local S_H of a bin with a corner
+    clip far above the static strength are those of the same bin without it, to the bit
+    (the clip is in no number the flank is judged by); the clip stays readable in the
+    cycle's ``corner_pressure_envelope`` and ``pressure_max_flank``."""
+    line, corner = 0.9 * strength, 1.3 * strength
+    with_clip, without = _cycle(case, line, corner), _cycle(case, line, 0.0)
+    for name in ("flank_damage", "damage", "life", "contact_safety_factor",
+                 "local_contact_safety"):
+        np.testing.assert_array_equal(with_clip[name].values, without[name].values,
+                                      err_msg=name)
+    assert float(with_clip["flank_damage"].sel(member="pinion").values[0, 0, 2]) == 0.0
+    assert float(with_clip["flank_damage"].sel(member="pinion").values[0, 1, 1]) > 0.0
+    assert float(with_clip["corner_pressure_envelope"].values[0, 0, 2]) == corner
+    assert float(with_clip["pressure_max_flank"][0]) == corner
+    assert "corner_pressure_envelope" in with_clip.attrs["flank_damage_curves"]

@@ -152,12 +152,19 @@ def bearing_lines(case, shown: str, side: str, torques: str, variables: Mapping[
 
 def overlap_lines(case, what: str = "the LTE spread") -> list[str]:
     """The next-step line of an LTE finding (the LTE-spread FAIL, or ``ltca run``'s ``lte``
-    attention) whose cause is the design's own low contact ratios: ε_vβ below 1.25 and the
+    attention) whose cause may be the design's own low contact ratios: ε_vβ below 1.25 and the
     face width and spiral angle that reach it, ε_vα below 1 and the depth factor and
     pressure angle that reach it
     (:func:`contact.load_capacity.iso10300.face_contact.low_ratio_text`); a bearing change
     offsets it only in part (docs/own_gear_set.md, "A face contact ratio below 1.25").
     Empty where the case has no ``[design]`` table or both ratios meet their limits.
+
+    The change is printed as a trial, never as the LTE's remedy: no estimate from the basic
+    data supports one (the LTE is the bearing the development finds on the new blank; the
+    loaded contact ratio scaled by the total contact ratio predicted neither outcome
+    measured): the 21×29 at β_m 35 → 38.5° went 135/93 → 46/47 µrad at 288/1920 N·m, the
+    18×27 at β_m 35 → 39.5° 80 → 81 µrad at its design torque, with two pairs over the whole
+    cycle after (docs/own_gear_set.md, "The overlap change is a trial").
 
     Parameters
     ----------
@@ -180,8 +187,12 @@ def overlap_lines(case, what: str = "the LTE spread") -> list[str]:
     said = low_ratio_text(design)
     if said is None:
         return []
-    return [f"  next, {what} is the design's: {said}; synthesise the basic file again "
-            "with it (ltca synthesize BASIC.toml)"]
+    return [f"  next, {what} may be the design's: {said}; whether that lowers the LTE is "
+            "not estimated from the basic data: the LTE is the bearing developed on the new "
+            "blank (measured: a 21x29 at beta_m 35 -> 38.5 deg 135/93 -> 46/47 urad, an 18x27 "
+            "at 35 -> 39.5 deg 80 -> 81 urad; docs/own_gear_set.md, 'The overlap change is a "
+            "trial'); a trial: ltca synthesize BASIC.toml with it, then ltca run of the case "
+            "it writes"]
 
 
 def spread_failed(findings: Sequence) -> bool:

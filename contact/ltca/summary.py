@@ -41,11 +41,16 @@ class FlankPeak(NamedTuple):
     dataset : ndarray (torque,) — [MPa] the dataset's ``pressure_max_flank`` as written
     corner_curves : ndarray of int (torque,) — the loaded contact curves (one per roll
         position and pair) left out: shorter than their contact width 2b
+    line : ndarray of bool (torque, roll, pair) — the contact curves kept (line
+        contacts, or curves without load); False for the curves left out. What the duty
+        cycle's damage and local S_H read the same rule by
+        (:func:`contact.study.duty_cycle.analyse_bin`)
     """
 
     pressure: np.ndarray
     dataset: np.ndarray
     corner_curves: np.ndarray
+    line: np.ndarray
 
 
 #: [1] Largest share of a roll position's load a contact curve shorter than its Hertz
@@ -65,9 +70,11 @@ def flank_peak(ltca: xr.Dataset) -> FlankPeak:
     the dataset's ``pressure_max_flank`` and the number of curves left out.
 
     The one rule of the flank peak that the development
-    (:mod:`contact.optimize.development_evaluate`) and ``ltca run``'s verdict
+    (:mod:`contact.optimize.development_evaluate`), ``ltca run``'s verdict
     (:mod:`contact.study.verdicts`, :func:`contact.ltca.plausibility.plausibility_flags`)
-    judge; the dataset's ``pressure_max_flank`` keeps every curve (what users read).
+    and the duty cycle's static check, damage and local S_H
+    (:mod:`contact.study.duty_cycle`, by ``line``) judge; the dataset's
+    ``pressure_max_flank`` keeps every curve (what users read).
 
     Parameters
     ----------
@@ -82,7 +89,8 @@ def flank_peak(ltca: xr.Dataset) -> FlankPeak:
     Returns
     -------
     FlankPeak
-        ``pressure`` and ``dataset`` (torque,) [MPa], ``corner_curves`` (torque,) [1].
+        ``pressure`` and ``dataset`` (torque,) [MPa], ``corner_curves`` (torque,) [1],
+        ``line`` (torque, roll, pair) bool (without the segment data (torque, 0, 0)).
 
     Raises
     ------
@@ -105,7 +113,7 @@ def flank_peak(ltca: xr.Dataset) -> FlankPeak:
     need = {"pressure_max", "half_width", "segment_length", "segment_kind"}
     if not need <= set(ltca.variables):
         raw = np.asarray(ltca["pressure_max_flank"].values, float)
-        return FlankPeak(raw, raw, np.zeros(raw.shape, int))
+        return FlankPeak(raw, raw, np.zeros(raw.shape, int), np.ones((*raw.shape, 0, 0), bool))
     curve = np.asarray(ltca["segment_kind"].values) == "curve"
     p = np.nan_to_num(np.asarray(ltca["pressure_max"].values, float)[..., curve])
     b = np.nan_to_num(np.asarray(ltca["half_width"].values, float)[..., curve])
@@ -130,7 +138,9 @@ def flank_peak(ltca: xr.Dataset) -> FlankPeak:
     if np.any(peak != raw):
         log.info("flank peak pressure: contact curves shorter than their contact width left "
                  "out, %s -> %s MPa", np.round(raw), np.round(peak))
-    return FlankPeak(peak, raw, corner.astype(int))
+    # a curve without load is no corner clip: kept (it adds nothing to a peak either way)
+    kept = line | ~(p.max(axis=-1) > 0.0) if p.size else line
+    return FlankPeak(peak, raw, corner.astype(int), kept)
 
 
 def flank_peak_pressure(ltca: xr.Dataset) -> np.ndarray:

@@ -13,6 +13,7 @@ Public names
 ------------
 DutyInputs       what every bin shares (case, duty cycle, options)
 analyse_bin      one bin's results (runs on a worker)
+bin_envelopes    a bin's pressure envelopes: line contacts, corner clips left out, edges
 duty_cycle_result  the /duty_cycle dataset from the bins' results
 bin_table        the rows of the per-bin table the CLI prints
 run_duty_cycle   the whole duty cycle: per-bin results, cycle totals, damage and life
@@ -29,7 +30,7 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import xarray as xr
@@ -55,8 +56,11 @@ from geometry.case import Case
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 
-__all__ = ["BIN_VARIABLES", "DutyInputs", "analyse_bin", "bin_table", "duty_cycle_result",
-           "run_duty_cycle"]
+if TYPE_CHECKING:
+    from contact.ltca.summary import FlankPeak
+
+__all__ = ["BIN_VARIABLES", "DutyInputs", "analyse_bin", "bin_envelopes", "bin_table",
+           "duty_cycle_result", "run_duty_cycle"]
 
 log = logging.getLogger(__name__)
 
@@ -128,6 +132,58 @@ class DutyInputs:
         return hashlib.sha256(text.encode()).hexdigest()
 
 
+def bin_envelopes(ltca: xr.Dataset, peak: FlankPeak | None = None
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A bin's pressure envelopes on the gear grid: the flank's line contacts (what the
+    damage and the local S_H read), the contact curves the flank peak leaves out, the edge
+    segments.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        ``/ltca`` of one torque: ``pressure_max`` (torque, roll, pair, segment) [MPa],
+        ``segment_u``, ``segment_v`` (roll, pair, segment) [1], the coordinates ``u``,
+        ``v`` [1] and ``segment_kind`` (segment), and what
+        :func:`contact.ltca.summary.flank_peak` reads.
+    peak : contact.ltca.summary.FlankPeak, optional
+        ``flank_peak(ltca)`` where the caller has it.
+
+    Returns
+    -------
+    line, corner, edge : ndarray (u, v) — [MPa]
+        The largest pressure landing on each node (the nearest-node rule of
+        :func:`contact.load_capacity.durability.pressure_envelopes`) of the contact curves
+        the flank peak keeps (``line``: its peak is ``flank_peak(ltca).pressure[0]``), of
+        those it leaves out (shorter than their Hertz contact width 2b, carrying at most
+        :data:`contact.ltca.summary.CORNER_LOAD_SHARE` of their roll's load), and of the
+        edge segments; 0 where none. Their largest is ``/ltca/pressure_envelope``.
+
+    Raises
+    ------
+    KeyError
+        A variable above absent.
+
+    Notes
+    -----
+    One rule judges a flank (issue 71): the static check, ``ltca run``'s verdict and the
+    development leave out a curve clipped into a flank corner, whose load per length is a
+    ratio of two vanishing numbers (:func:`contact.ltca.summary.flank_peak`, Johnson,
+    *Contact Mechanics*, 1985, §4.3); the damage on the ISO 6336-2 S–N curve leaves it out
+    too, else the same bin's flank would be judged two ways.
+    """
+    from contact.ltca.summary import flank_peak
+
+    fp = flank_peak(ltca) if peak is None else peak
+    edge = np.asarray(ltca["segment_kind"].values) != "curve"
+    corner = (~fp.line[0])[..., None] & ~edge  # (roll, pair, segment)
+    pmax = np.asarray(ltca["pressure_max"].values[0], float)
+    su, sv = ltca["segment_u"].values, ltca["segment_v"].values
+    u, v = ltca["u"].values, ltca["v"].values
+    line, edge_env = pressure_envelopes(np.where(corner, np.nan, pmax), su, sv, edge, u, v)
+    left_out, _ = pressure_envelopes(np.where(corner, pmax, np.nan), su, sv, edge, u, v)
+    return line, left_out, edge_env
+
+
 def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     """Analyse one bin (the function Dask runs on a worker).
 
@@ -142,8 +198,11 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
     xarray.Dataset
         Over a ``point`` dim of length 1 (the bin; the store's dim): the
         :data:`BIN_VARIABLES`, ``lte_harmonics`` (harmonic) [µrad], ``pressure_envelope``
-        (u, v) [MPa] of the flank (contact-curve) segments and ``edge_pressure_envelope``
-        of the edge segments (their larger is ``/ltca/pressure_envelope``) and, when the
+        (u, v) [MPa] of the flank's line contacts (the contact curves
+        :func:`contact.ltca.summary.flank_peak` keeps: what the damage and the local S_H
+        read, whose peak is ``flank_peak_pressure``), ``corner_pressure_envelope`` of the
+        curves it leaves out and ``edge_pressure_envelope`` of the edge segments (the
+        largest of the three is ``/ltca/pressure_envelope``) and, when the
         analysis has ``root_stress``, ``root_stress_peak`` (member, fillet_point) [MPa];
         ``status`` 0 ok, 1 uncertified rolls, 2 failed (``reason``); ``plausibility``, the
         CF flag of the causes ``ltca run`` warns of (:func:`contact.study.summary.
@@ -200,9 +259,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
             status, reason = 2, str(tree.attrs["analysis_status_reason"])
         harm = ltca["lte_harmonics"].values[0]
         u, v = ltca["u"].values, ltca["v"].values
-        env, edge_env = pressure_envelopes(
-            ltca["pressure_max"].values[0], ltca["segment_u"].values,
-            ltca["segment_v"].values, ltca["segment_kind"].values != "curve", u, v)
+        env, corner_env, edge_env = bin_envelopes(ltca, fp)
         root = (peak_fillet_stress(ltca["root_stress"].values[0])
                 if "root_stress" in ltca else None)
         fillet_u = ltca["fillet_u"].values if "root_stress" in ltca else None
@@ -211,7 +268,7 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         status, reason = 2, f"{type(exc).__name__}: {exc}".splitlines()[0]
         vals = dict.fromkeys(BIN_VARIABLES, np.nan)
         harm, u, v, root, fillet_u = np.full(3, np.nan), [0.0], [0.0], None, None
-        env = edge_env = np.full((1, 1), np.nan)
+        env = edge_env = corner_env = np.full((1, 1), np.nan)
         ltca = None  # the input alone is judged
     data = {k: data_var(("point",), np.array([float(x)]), *BIN_VARIABLES[k])
             for k, x in vals.items()}
@@ -236,6 +293,11 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
         ("point", "u", "v"), np.asarray(edge_env, float)[None], "MPa",
         "peak contact pressure of the edge-contact segments of a tooth mesh on the gear's "
         "contact grid")
+    data["corner_pressure_envelope"] = data_var(
+        ("point", "u", "v"), np.asarray(corner_env, float)[None], "MPa",
+        "peak contact pressure of the contact curves left out of the flank peak (shorter "
+        "than their Hertz contact width, <= 1 % of their roll's load: "
+        "contact.ltca.summary.flank_peak) on the gear's contact grid; 0 where none")
     if root is not None:
         data["root_stress_peak"] = data_var(
             ("point", "member", "fillet_point"), root[None], "MPa",
@@ -259,12 +321,13 @@ def analyse_bin(shared: DutyInputs, index: int) -> xr.Dataset:
 #: the data variables of a bin's chunk (:func:`analyse_bin`; ``root_stress_peak`` only
 #: with the root stress, at the bins that did not fail)
 _BIN_CHUNK_VARIABLES = (*BIN_VARIABLES, "lte_harmonics", "pressure_envelope",
-                        "edge_pressure_envelope", "plausibility", "status", "reason")
+                        "edge_pressure_envelope", "corner_pressure_envelope", "plausibility",
+                        "status", "reason")
 
 #: finite at every bin whose ``status`` is 0 (every roll certified: the LTE is defined;
 #: the envelopes are 0 where no segment lands): NaN there is a damaged chunk
 _FINITE_WHEN_OK = ("lte_mean", "lte_peak_to_peak", "pressure_envelope",
-                   "edge_pressure_envelope")
+                   "edge_pressure_envelope", "corner_pressure_envelope")
 
 
 def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
@@ -424,7 +487,10 @@ def _iso_rating(shared: DutyInputs, ds: xr.Dataset, members: list[str],
     f_f = (iso["bending_allowable_factor"].values if iso is not None
            else np.ones((duty.n_bins, len(members))))
     which = ("the rating's sigma_HP/Z_NT of the bin" if iso is not None else "sigma_Hlim")
-    p = np.asarray(ds["pressure_max_flank"].values, float)
+    # the flank peak the static check and the damage judge (contact.ltca.summary.
+    # flank_peak: no curve clipped into a flank corner); bins before it the dataset's
+    p = np.asarray(ds["flank_peak_pressure" if "flank_peak_pressure" in ds
+                      else "pressure_max_flank"].values, float)
     out = {"local_contact_safety": data_var(bm, np.stack(
         [c["contact"].allowable for c in curves])[None, :] * f_h / p[:, None], "1",
         f"{which} / peak flank contact pressure of the bin (life factor 1)")}
@@ -473,7 +539,8 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
     dur = _durability(case, duty, ds, rated[0])
     members = ["pinion", "gear"]
     out = ds.drop_vars([v for v in ("pressure_envelope", "edge_pressure_envelope",
-                                     "root_stress_peak") if v in ds])
+                                     "corner_pressure_envelope", "root_stress_peak")
+                        if v in ds])
     out = out.assign_coords(member=("member", members, {"long_name": "gear member"}))
     bin_ = ("bin",)
     out["torque"] = data_var(bin_, duty.torque, "N m", "pinion torque of the bin")
@@ -509,6 +576,8 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
         units="1", long_name="cumulative Miner damage of the flank points over the cycle")
     out["pressure_envelope"] = ds["pressure_envelope"]
     out["edge_pressure_envelope"] = ds["edge_pressure_envelope"]
+    if "corner_pressure_envelope" in ds:  # the curves the damage leaves out, kept to read
+        out["corner_pressure_envelope"] = ds["corner_pressure_envelope"]
     out["damage"] = data_var(("member",), np.array(
         [float(out["flank_damage_total"].sel(member=m).max()) for m in members]), "1",
         "largest cumulative flank (pitting) damage of the duty cycle")
@@ -575,6 +644,13 @@ def duty_cycle_result(shared: DutyInputs, ds: xr.Dataset) -> xr.Dataset:
             "clipped into a flank corner, contact.ltca.summary.flank_peak) against "
             "contact_static_strength" if "flank_peak_pressure" in ds else
             "the bins' pressure_envelope peak against contact_static_strength"),
+        "flank_damage_curves": (
+            "the flank damage, contact_safety and local_contact_safety read the contact "
+            "curves the static check judges (pressure_envelope, flank_peak_pressure: "
+            "without the curves shorter than their Hertz contact width that carry <= 1 % "
+            "of their roll's load, contact.ltca.summary.flank_peak; those in "
+            "corner_pressure_envelope)" if "corner_pressure_envelope" in ds else
+            "the flank damage reads every contact curve (pressure_envelope)"),
         "edge_contact": "edge-contact pressures (edge_pressure_envelope, pressure_max_edge) "
                         "are not counted in the pitting damage: the S-N curve of ISO 6336-2 "
                         "is of Hertzian flank contact; the LTCA bounds edge pressures by the "
