@@ -608,7 +608,7 @@ def print_plausibility_warnings(ltca, case=None, misalignment=None) -> None:
     studies refuse it without ``--force``)."""
     from contact.ltca.plausibility import misalignment_warnings, plausibility_warnings
 
-    texts = plausibility_warnings(ltca)
+    texts = plausibility_warnings(ltca, edge_free_spread=False)  # the verdict's lte judges
     if case is not None and misalignment is not None:
         texts += misalignment_warnings(case, misalignment)
     for text in texts:

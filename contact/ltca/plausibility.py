@@ -172,7 +172,8 @@ def quiet_transfer(lte_peak_to_peak: np.ndarray, edge_share: np.ndarray,
         return (edge < EDGE_SHARE_MIN) & np.isfinite(pp) & (pp <= lte_limit)
 
 
-def plausibility_flags(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> dict[str, np.ndarray]:
+def plausibility_flags(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT,
+                       edge_free_spread: bool = True) -> dict[str, np.ndarray]:
     """The result causes of the module docstring, per torque.
 
     Parameters
@@ -182,6 +183,12 @@ def plausibility_flags(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> dict[s
         written before a variable existed simply skip its check (all False).
     lte_limit : float — [µrad] the LTE p-p bound of a quiet transfer
         (:func:`quiet_transfer`; default :data:`LTE_LIMIT`, the verdict's ``lte`` limit)
+    edge_free_spread : bool
+        False leaves out of ``lte_spread`` every torque without edge contact (below
+        :data:`EDGE_SHARE_MIN`), whatever its LTE p-p: the tooth pairs' transfer, quiet
+        or loud, which the verdict's ``lte`` check judges by its LTE p-p
+        (:mod:`contact.study.verdicts`); True (the default) flags a loud one (above
+        ``lte_limit``), as the development's objective and the studies' flag read it.
 
     Returns
     -------
@@ -222,12 +229,16 @@ def plausibility_flags(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> dict[s
         if np.any(spread) and {"force", "moment_arm", "segment_kind"} <= set(ltca.variables):
             from contact.ltca.summary import edge_load_share
 
-            spread &= ~quiet_transfer(pp, edge_load_share(ltca), lte_limit)
+            edge = edge_load_share(ltca)
+            spread &= ~quiet_transfer(pp, edge, lte_limit)
+            if not edge_free_spread:
+                spread &= np.nan_to_num(np.asarray(edge, float)) >= EDGE_SHARE_MIN
         out["lte_spread"] = spread
     return out
 
 
-def plausibility_warnings(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> list[str]:
+def plausibility_warnings(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT,
+                          edge_free_spread: bool = True) -> list[str]:
     """The causes for which a loaded TCA is implausible, one sentence each.
 
     Parameters
@@ -237,6 +248,9 @@ def plausibility_warnings(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> lis
         written before a variable existed simply skip its check.
     lte_limit : float — [µrad] the LTE p-p bound of a quiet transfer, which is not a cause
         (:func:`plausibility_flags`)
+    edge_free_spread : bool
+        False: no sentence for an LTE spread without edge contact
+        (:func:`plausibility_flags`; the verdicts judge its LTE p-p by the ``lte`` check)
 
     Returns
     -------
@@ -252,7 +266,7 @@ def plausibility_warnings(ltca: xr.Dataset, lte_limit: float = LTE_LIMIT) -> lis
     cause).
     """
     out = []
-    flags = plausibility_flags(ltca, lte_limit)
+    flags = plausibility_flags(ltca, lte_limit, edge_free_spread)
     torque = np.asarray(ltca["torque"].values, float)
     bad = flags["plastic_contact"]
     if np.any(bad):

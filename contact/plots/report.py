@@ -622,7 +622,7 @@ def report_context(tree: xr.DataTree,
     if lt is not None:
         from contact.ltca.plausibility import plausibility_warnings
 
-        plausibility = plausibility_warnings(lt)
+        plausibility = plausibility_warnings(lt, edge_free_spread=False)
     return {
         "case": {"name": name,
                  "source": tree.attrs.get("case_source") or case.get("source", ""),
