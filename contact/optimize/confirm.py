@@ -126,6 +126,7 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
     deviations are not applied (as in the optimisation). The verdict is
     :func:`contact.study.verdicts.verdict` of each analysis (docs/verdicts.md).
     """
+    from contact.chain import AnalysisChain
     from contact.compliance.fe import FEOptions
     from contact.compliance.fe.solid import build_tooth_solid
     from contact.ltca import LTCAOptions
@@ -166,7 +167,9 @@ def confirm_design(shared, ev: Evaluation, *, root_stress_options=None) -> Confi
         for im, mis in enumerate(problem.misalignments):
             c = dataclasses.replace(case, misalignment=mis)
             tree = run_analysis(c, list(problem.torque), flank=problem.flank, options=opts,
-                                deviations=False, geometry=False, root_stress=False)
+                                deviations=False,
+                                steps=AnalysisChain.analysis().without("geometry",
+                                                                       "root_stress"))
             s = point_summary(tree, c)
             for k in METRICS:
                 metrics[k][im] = s[k]

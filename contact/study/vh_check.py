@@ -209,8 +209,9 @@ def vh_check(
                                                        delta_G=mis.delta_G,
                                                        delta_Sigma=mis.delta_Sigma),
             flank=flank, options=shared.options, deviations=shared.deviations_at(None),
-            geometry=False, theoretical=False, operating=False, root_stress=False,
-            steps={"load_capacity": None})
+            theoretical=False,
+            steps=AnalysisChain.analysis().without("geometry", "root_stress", "efficiency",
+                                                   "load_capacity"))
         s = point_summary(tree, c)
         centres.append((float(s["pattern_centre_u"][0]), float(s["pattern_centre_v"][0])))
         envelopes.append(tree["/ltca"]["pressure_envelope"].values[0])
