@@ -235,6 +235,40 @@ def test_generated_surfaces_and_mesh():
     assert 2.5 < sec.slot_depth < 4.0
 
 
+@pytest.mark.parametrize("name, member", [(DEFAULT, "pinion"), (DEFAULT, "gear"),
+                                          (FACE_HOBBED, "pinion")])
+def test_neighbours_loads_are_the_loaded_tooths_turned(name, member):
+    """The neighbour teeth's flank loads and mid-surface functionals, the loaded tooth's
+    turned by their pitches (issue 75: computed once instead of three times), equal those
+    computed on the neighbours' own facets on both flanks: every entry within 1e-12 of the
+    largest (round-off of the turned node coordinates; the same sparsity where above
+    that), so the coefficients are those of before to round-off."""
+    from contact.compliance.fe.influence import _flank_loads, _teeth_flank_loads, _turned_rows
+
+    model, _ = _model(member, name)
+    solid, elastic = model.solid, model.elastic
+    k = solid.layout.neighbours
+    assert k >= 1
+    for side in ("left", "right"):
+        loads, centre, area = _teeth_flank_loads(solid, elastic, range(-k, k + 1), side,
+                                                 model.grid_u, model.grid_v)
+        assert list(loads) == list(range(-k, k + 1))
+        nodes = np.unique(np.r_[loads[0].nonzero()[0], centre[0].nonzero()[0]] // 3)
+        for t in (-k, k):  # turned, not computed (the mesh is one tooth turned)
+            assert _turned_rows(solid, elastic.n_dofs // 3, t, nodes) is not None
+        for t in range(-k, k + 1):
+            own, own_area, own_centre = _flank_loads(solid, elastic, t, side, model.grid_u,
+                                                     model.grid_v)
+            for got, ref in ((loads[t], own), (centre[t], own_centre)):
+                scale = abs(ref).max()
+                assert abs(got - ref).max() <= 1e-12 * scale, (side, t)
+                # the turned functional sits on the neighbour's own nodes
+                big = abs(ref) > 1e-9 * scale
+                assert (abs(got) > 1e-9 * scale).nnz == big.nnz
+            if t == 0:
+                np.testing.assert_array_equal(area, own_area)
+
+
 def test_face_hobbed_members():
     """A face-hobbed pair (FH_CASE) through the same code: both members mesh, their flank
     lies on the generated flank (5 µm), the compliance is symmetric positive definite and

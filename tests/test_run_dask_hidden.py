@@ -1,4 +1,5 @@
-"""``ltca run`` keeps dask out of its process (issue 75 item 4) and leaves it as it was.
+"""``ltca run`` and ``ltca synthesize`` keep dask out of their process (issue 75) and leave
+it as it was.
 
 xarray's netCDF writer imports dask and distributed (~0.5 s of CPU) whenever dask is
 installed; :func:`contact.commands.run.dask_hidden` marks dask unimportable while the
@@ -63,7 +64,30 @@ print("ok")
 """
 
 
-@pytest.mark.parametrize("code", [_HIDDEN, _ALREADY], ids=["hidden", "already-imported"])
+# ``ltca synthesize`` runs its body with dask hidden (issue 75: only the FE build's
+# datasets and cache writes imported it); its body replaced by one that tries the import
+_SYNTHESIZE = r"""
+import sys
+import contact.commands.synthesize as synthesize
+
+def body(args):
+    try:
+        import dask  # noqa: F401
+    except ImportError:
+        return 7
+    return 1
+
+synthesize._run_synthesize = body
+assert "dask" not in sys.modules
+assert synthesize.run_synthesize(None) == 7
+assert "dask" not in sys.modules
+import dask  # noqa: F401  (importable again after the command)
+print("ok")
+"""
+
+
+@pytest.mark.parametrize("code", [_HIDDEN, _ALREADY, _SYNTHESIZE],
+                         ids=["hidden", "already-imported", "synthesize"])
 def test_dask_hidden(code: str, tmp_path: Path) -> None:
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     out = subprocess.run([sys.executable, "-c", code, str(tmp_path / "t.nc")],

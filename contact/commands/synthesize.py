@@ -329,6 +329,21 @@ def _size_line(basic, targets) -> str | None:
 
 
 def run_synthesize(args: argparse.Namespace) -> int:
+    """``ltca synthesize``: the case of a basic design file, developed and checked; dask
+    kept out of the process (:func:`contact.commands.run.dask_hidden`).
+
+    The command uses no dask: what imported it was the FE build of a new design's
+    root-stress checks, whose datasets and cache entries xarray builds and writes with
+    a look for dask's arrays and scheduler (dask.array and distributed imported, ~0.6 s
+    of CPU per new design on the 2-core machine, issue 75; a design whose FE models are
+    cached imported neither)."""
+    from contact.commands.run import dask_hidden
+
+    with dask_hidden():
+        return _run_synthesize(args)
+
+
+def _run_synthesize(args: argparse.Namespace) -> int:
     import dataclasses
     import tomllib
 

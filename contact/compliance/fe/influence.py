@@ -317,6 +317,71 @@ def _flank_loads(solid: ToothSolid, elastic: ElasticModel, offset: int, side: st
     return loads, area, centre
 
 
+def _turned_rows(solid: ToothSolid, n_nodes: int, offset: int, nodes: np.ndarray
+                 ) -> sp.csr_matrix | None:
+    """The (3N, 3N) map that carries a field on the dofs of ``nodes`` (loaded-tooth nodes)
+    to the tooth at ``offset``: each node to the one ``offset`` cells along the parameter
+    A, its three components turned by ``offset`` pitches about the member axis. None
+    where a node has no counterpart or the counterpart is not where the turn puts it
+    (within 1e-9 of the solid's size): the caller computes that tooth's field itself.
+
+    The solid's teeth are one tooth's nodes turned by whole pitches
+    (:func:`contact.compliance.fe.solid.build_tooth_solid`: every node at its section's
+    (v, φ + offset × pitch)), so a neighbour's flank loads and mid-surface functionals are
+    the loaded tooth's turned (issue 75)."""
+    lattice = np.rint(2.0 * solid.mesh.param_nodes[:, :n_nodes]).astype(np.int64)
+    span = lattice.max(axis=1) + 1
+    code = (lattice[0] * span[1] + lattice[1]) * span[2] + lattice[2]
+    order = np.argsort(code)
+    shift = round(2.0 * offset * solid.layout.cell)
+    want = ((lattice[0, nodes] + shift) * span[1] + lattice[1, nodes]) * span[2] \
+        + lattice[2, nodes]
+    at = np.minimum(np.searchsorted(code, want, sorter=order), code.size - 1)
+    target = order[at]
+    if not np.array_equal(code[target], want):
+        return None
+    angle = offset * solid.pitch
+    turn = np.array([[math.cos(angle), -math.sin(angle), 0.0],
+                     [math.sin(angle), math.cos(angle), 0.0], [0.0, 0.0, 1.0]])
+    x = solid.mesh.mesh.doflocs
+    if np.abs(x[:, target] - turn @ x[:, nodes]).max() > 1e-9 * np.abs(x).max():
+        return None
+    rows = (3 * target[:, None, None] + np.arange(3)[None, :, None]).repeat(3, axis=2)
+    cols = (3 * nodes[:, None, None] + np.arange(3)[None, None, :]).repeat(3, axis=1)
+    vals = np.broadcast_to(turn, (nodes.size, 3, 3))
+    return sp.csr_matrix((vals.ravel(), (rows.ravel(), cols.ravel())),
+                         shape=(3 * n_nodes, 3 * n_nodes))
+
+
+def _teeth_flank_loads(solid: ToothSolid, elastic: ElasticModel, offsets, side: str,
+                       grid_u: np.ndarray, grid_v: np.ndarray):
+    """:func:`_flank_loads` of every tooth at ``offsets``: the loaded tooth's (offset 0)
+    computed, its neighbours' the loaded tooth's turned by their pitches
+    (:func:`_turned_rows`; computed where the mesh is not one tooth turned). The turned
+    functionals equal the computed ones to round-off (≤ 1e-13 of their largest entry,
+    tests/test_fe_tooth.py) and cost a sparse product instead of the facet points, hats
+    and traces of two more teeth (issue 75). Returns the dicts offset → loads and offset
+    → mid-surface functionals, and the loaded tooth's hat areas."""
+    loads, a0, c0 = _flank_loads(solid, elastic, 0, side, grid_u, grid_v)
+    out_loads, out_centre = {0: loads}, {0: c0}
+    n_nodes = elastic.n_dofs // 3
+    rows = np.union1d(np.flatnonzero(np.diff(loads.indptr)),
+                      np.flatnonzero(np.diff(c0.indptr)))
+    nodes = np.unique(rows // 3)
+    for t in offsets:
+        if t == 0:
+            continue
+        turn = _turned_rows(solid, n_nodes, t, nodes)
+        if turn is None:
+            out_loads[t], _, out_centre[t] = _flank_loads(solid, elastic, t, side, grid_u,
+                                                          grid_v)
+            continue
+        out_loads[t] = (turn @ loads).tocsr()
+        out_centre[t] = (turn @ c0).tocsr()
+    return ({t: out_loads[t] for t in sorted(out_loads)},
+            {t: out_centre[t] for t in sorted(out_centre)}, a0)
+
+
 def _fillet_points(solid: ToothSolid, elastic: ElasticModel, offsets: list[int]) -> _FilletPoints:
     """Stress points (2 × 2 Gauss points of each facet) along both roots of every tooth."""
     lay = solid.layout
@@ -451,11 +516,9 @@ def build_influence_model(case, member: str, flank: str = "drive",
     times["factorisation"] = factor.factor_time
     t1 = time.perf_counter()
     side = solid.sections.side_name(name)
-    loads, centre, area = {}, {}, None
-    for t in range(-solid.layout.neighbours, solid.layout.neighbours + 1):
-        loads[t], a, centre[t] = _flank_loads(solid, elastic, t, side, grid_u, grid_v)
-        if t == 0:
-            area = a
+    loads, centre, area = _teeth_flank_loads(
+        solid, elastic, range(-solid.layout.neighbours, solid.layout.neighbours + 1), side,
+        grid_u, grid_v)
     fillet = _fillet_points(solid, elastic, sorted(loads))
     times["loads_and_points"] = time.perf_counter() - t1
     return InfluenceModel(solid, elastic, factor, name, side, grid_u, grid_v, loads, centre,
@@ -642,12 +705,8 @@ def _other_flank_model(model: InfluenceModel) -> InfluenceModel:
     flank = _other(model.flank)
     grid_v = np.linspace(*load_v_limits(solid.sections, flank, opt), opt.load_nv)
     side = solid.sections.side_name(flank)
-    loads, centre, area = {}, {}, None
-    for t in model.offsets:
-        loads[t], a, centre[t] = _flank_loads(solid, model.elastic, t, side, model.grid_u,
-                                              grid_v)
-        if t == 0:
-            area = a
+    loads, centre, area = _teeth_flank_loads(solid, model.elastic, model.offsets, side,
+                                             model.grid_u, grid_v)
     times = dict(model.times, loads_and_points=time.perf_counter() - t1)
     return dataclasses.replace(model, flank=flank, side=side, grid_v=grid_v, loads=loads,
                                centre=centre, hat_area=area, times=times)
