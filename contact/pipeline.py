@@ -311,9 +311,11 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
 
 
 def _datatree(groups: dict[str, xr.Dataset]) -> xr.DataTree:
-    """``xr.DataTree.from_dict(groups)``, built from the deepest groups up: each node is
-    made once and its children attached without copies (from_dict copies each node twice
-    more on the way in: ≈ 5 of its 14 ms in a warm analysis, issue 75). The same tree
+    """``xr.DataTree.from_dict(groups)``, built node by node: each node is made once and
+    the children attached to their parents from the root down, without copies (from_dict
+    copies each node twice more on the way in: ≈ 5 of its 14 ms in a warm analysis, issue
+    75), each node's alignment with its parents checked once (attached from the deepest
+    up, a subtree's nodes are checked again at every level above them). The same tree
     (``identical``, the groups in the same order); a parent no group names is an empty
     group, as from_dict makes it; anything but Datasets goes to from_dict."""
     if not all(isinstance(ds, xr.Dataset) for ds in groups.values()):
@@ -325,17 +327,18 @@ def _datatree(groups: dict[str, xr.Dataset]) -> xr.DataTree:
         while path != "/":
             path = path.rpartition("/")[0] or "/"
             norm.setdefault(path, None)
-    made: dict[str, xr.DataTree] = {}
+    made = {path: xr.DataTree(dataset=ds) for path, ds in norm.items()}
     children: dict[str, dict[str, xr.DataTree]] = {}
-    # deepest first; sorted() is stable, so siblings keep the order of ``groups``
+    # siblings in the order of ``groups`` (sorted() is stable; a level's paths all have
+    # the same depth)
     for path in sorted(norm, key=lambda p: p.count("/") - (p == "/"), reverse=True):
-        node = xr.DataTree(dataset=norm[path])
-        if path in children:
-            node.children = children[path]
-        made[path] = node
         if path != "/":
             parent, _, name = path.rpartition("/")
-            children.setdefault(parent or "/", {})[name] = node
+            children.setdefault(parent or "/", {})[name] = made[path]
+    # the root first: a node attached to a parent in the tree is checked against it and
+    # the parents above once, and it has no children yet to check again
+    for path in sorted(children, key=lambda p: p.count("/") - (p == "/")):
+        made[path].children = children[path]
     return made["/"]
 
 
