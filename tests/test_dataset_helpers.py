@@ -51,6 +51,8 @@ COORDS = {
     "gear_torque": ("torque", np.array([150.0, 750.0])),
     "fillet_u": (("member", "roll"), np.zeros((2, 3))),
     "step": ((), 2),
+    "pair": ("pair", np.array([-1, 0, 1]), {"units": "1"}),
+    "kind": ("kind", np.array(["curve", "edge"], dtype=object)),
 }
 
 
