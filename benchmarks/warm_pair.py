@@ -135,6 +135,10 @@ def main(argv: list[str] | None = None) -> None:
     keys = list(dict.fromkeys(k for n in names for s in stages[n] for k in s))
     rows = [[k, *(1e3 * statistics.median(s.get(k, 0.0) for s in stages[n])
                   for n in names)] for k in keys]
+    rows.append(["rest (chain, attributes, summary, merges)",
+                 *(1e3 * statistics.median(t - sum(s.values())
+                                           for t, s in zip(cpu[n], stages[n], strict=True))
+                   for n in names)])
     rows.append(["analysis (median)", *(1e3 * statistics.median(cpu[n]) for n in names)])
     rows.append(["× Cholesky 1500²", *(statistics.median(cpu[n]) / chol for n in names)])
     diff = [b - a for b, a in zip(cpu[names[0]], cpu[names[1]], strict=True)]

@@ -165,21 +165,26 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
     mi = groups.get("/mesh_interface")
     parts = [f"Loaded tooth contact analysis of {name} (hypoid-ltca)."]
     share = edge_load_share(lt) if "segment_kind" in lt.variables else None
-    for i, t in enumerate(lt["torque"].values):
-        text = (f"T_p {t:g} N m: LTE mean {float(lt['lte_mean'].values[i]):.1f} urad, "
-                f"peak-to-peak {float(lt['lte_peak_to_peak'].values[i]):.1f} urad; peak "
-                f"pressure flank {float(lt['pressure_max_flank'].values[i]):.0f} MPa, edge "
-                f"{float(lt['pressure_max_edge'].values[i]):.0f} MPa")
+    # the variables' values, not DataArrays (each filters /ltca's 15 coordinates; issue 75)
+    val = {k: lt.variables[k].values for k in ("lte_mean", "lte_peak_to_peak",
+                                               "pressure_max_flank", "pressure_max_edge")}
+    for i, t in enumerate(lt.variables["torque"].values):
+        text = (f"T_p {t:g} N m: LTE mean {float(val['lte_mean'][i]):.1f} urad, "
+                f"peak-to-peak {float(val['lte_peak_to_peak'][i]):.1f} urad; peak "
+                f"pressure flank {float(val['pressure_max_flank'][i]):.0f} MPa, edge "
+                f"{float(val['pressure_max_edge'][i]):.0f} MPa")
         if share is not None:
             text += f", edges carry {100 * share[i]:.1f} % of the torque"
         if fr is not None and "efficiency_mean" in fr:
-            text += f"; efficiency {100 * float(fr['efficiency_mean'].values[i]):.2f} %"
+            eff = float(fr.variables["efficiency_mean"].values[i])
+            text += f"; efficiency {100 * eff:.2f} %"
         if mi is not None and "mesh_stiffness_mean" in mi:
-            text += f"; mesh stiffness {float(mi['mesh_stiffness_mean'].values[i]):.0f} N/um"
+            text += (f"; mesh stiffness {float(mi.variables['mesh_stiffness_mean'].values[i]):.0f}"
+                     " N/um")
         if "root_stress_max" in lt:
             # the variable and the member labels, not DataArray selections (issue 75)
             rs = lt.variables["root_stress_max"].transpose("torque", "member").values[i]
-            members = [str(m) for m in lt["member"].values]
+            members = [str(m) for m in lt.variables["member"].values]
             text += (f"; peak root stress pinion {float(rs[members.index('pinion')]):.0f} "
                      f"MPa, gear {float(rs[members.index('gear')]):.0f} MPa")
         parts.append(text + ".")
