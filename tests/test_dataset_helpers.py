@@ -131,9 +131,13 @@ def test_assigned_is_xarrays_assign():
     coords = {"point": xr.Variable("point", np.arange(4), {"units": "1"}),
               "point_u": xr.Variable(("member", "point"), np.zeros((2, 4))),
               "tooth": xr.IndexVariable("tooth", [-1, 0, 1])}
-    _same(assigned(ds, data, coords), ds.assign_coords(coords).assign(data))
+    got = assigned(ds, data, coords)
+    _same(got, ds.assign_coords(coords).assign(data))
     _same(assigned(ds, data), ds.assign(data))
     _same(ds, before)
+    got["stress"].attrs["units"] = "Pa"  # its own variables, as xarray's (not the inputs)
+    got["point_u"].attrs["units"] = "1"
+    assert data["stress"].attrs == {"units": "MPa"} and coords["point_u"].attrs == {}
 
 
 def test_assigned_leaves_what_it_does_not_take_to_xarray():

@@ -189,8 +189,9 @@ def assigned(ds, data: Mapping[str, Any], coords: Mapping[str, Any] | None = Non
 
     Returns
     -------
-    xarray.Dataset — a new dataset; ``ds``'s variables are shallow copies (their arrays
-        shared, as ``Dataset.copy`` makes them)
+    xarray.Dataset — a new dataset; its variables are shallow copies of ``ds``'s and of
+        the new ones (their arrays shared, as ``Dataset.copy`` and xarray's merge make
+        them)
 
     Raises
     ------
@@ -237,9 +238,13 @@ def _direct_assigned(xr, ds, data: Mapping, coords: Mapping):
                     indexes[name] = index
                 elif name in var.dims:
                     return None  # (xarray refuses it)
+                else:
+                    var = var.copy(deep=False)  # (xarray's merge takes a shallow copy)
                 coord_names.add(name)
             elif name in var.dims:
                 return None  # a data variable named as a dimension: xarray's way
+            else:
+                var = var.copy(deep=False)
             new[name] = var
     sizes = dict(ds.sizes)
     for var in new.values():
