@@ -44,6 +44,7 @@ import xarray as xr
 
 from contact.utca.conjugate_map import flank_nodes
 from geometry.case import Case
+from geometry.core.conventions import assigned
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.machine.flank import DEFAULT_GRID, flank_dataset
 
@@ -279,8 +280,13 @@ def root_stress_fe(state: ChainState) -> None:
         state.not_run["root_stress"] = (f"root stress not computed: the FE model failed "
                                         f"({exc})")
         return
-    state.groups["/ltca"] = lt.assign(root_stress=rs["root_stress"],
-                                      root_stress_max=rs["root_stress_max"])
+    # lt.assign(root_stress=rs["root_stress"], root_stress_max=rs["root_stress_max"]):
+    # the same dataset (the DataArrays bring their coordinates /ltca lacks, in their
+    # order; torque and roll are /ltca's own), without the merge (issue 75)
+    new_coords = [c for c in rs["root_stress"].coords if c not in lt.variables]
+    state.groups["/ltca"] = assigned(
+        lt, {name: rs.variables[name] for name in ("root_stress", "root_stress_max")},
+        {c: rs.variables[c] for c in new_coords})
 
 
 def mesh_interface_linearised(state: ChainState) -> None:

@@ -165,21 +165,26 @@ def result_summary(name: str, groups: dict[str, xr.Dataset]) -> str:
     mi = groups.get("/mesh_interface")
     parts = [f"Loaded tooth contact analysis of {name} (hypoid-ltca)."]
     share = edge_load_share(lt) if "segment_kind" in lt.variables else None
-    for i, t in enumerate(lt["torque"].values):
-        text = (f"T_p {t:g} N m: LTE mean {float(lt['lte_mean'].values[i]):.1f} urad, "
-                f"peak-to-peak {float(lt['lte_peak_to_peak'].values[i]):.1f} urad; peak "
-                f"pressure flank {float(lt['pressure_max_flank'].values[i]):.0f} MPa, edge "
-                f"{float(lt['pressure_max_edge'].values[i]):.0f} MPa")
+    # the variables' values, not DataArrays (each filters /ltca's 15 coordinates; issue 75)
+    val = {k: lt.variables[k].values for k in ("lte_mean", "lte_peak_to_peak",
+                                               "pressure_max_flank", "pressure_max_edge")}
+    for i, t in enumerate(lt.variables["torque"].values):
+        text = (f"T_p {t:g} N m: LTE mean {float(val['lte_mean'][i]):.1f} urad, "
+                f"peak-to-peak {float(val['lte_peak_to_peak'][i]):.1f} urad; peak "
+                f"pressure flank {float(val['pressure_max_flank'][i]):.0f} MPa, edge "
+                f"{float(val['pressure_max_edge'][i]):.0f} MPa")
         if share is not None:
             text += f", edges carry {100 * share[i]:.1f} % of the torque"
         if fr is not None and "efficiency_mean" in fr:
-            text += f"; efficiency {100 * float(fr['efficiency_mean'].values[i]):.2f} %"
+            eff = float(fr.variables["efficiency_mean"].values[i])
+            text += f"; efficiency {100 * eff:.2f} %"
         if mi is not None and "mesh_stiffness_mean" in mi:
-            text += f"; mesh stiffness {float(mi['mesh_stiffness_mean'].values[i]):.0f} N/um"
+            text += (f"; mesh stiffness {float(mi.variables['mesh_stiffness_mean'].values[i]):.0f}"
+                     " N/um")
         if "root_stress_max" in lt:
             # the variable and the member labels, not DataArray selections (issue 75)
             rs = lt.variables["root_stress_max"].transpose("torque", "member").values[i]
-            members = [str(m) for m in lt["member"].values]
+            members = [str(m) for m in lt.variables["member"].values]
             text += (f"; peak root stress pinion {float(rs[members.index('pinion')]):.0f} "
                      f"MPa, gear {float(rs[members.index('gear')]):.0f} MPa")
         parts.append(text + ".")
@@ -311,9 +316,11 @@ def flank_torques(case: Case, flank: str | None = None) -> tuple[tuple[float, ..
 
 
 def _datatree(groups: dict[str, xr.Dataset]) -> xr.DataTree:
-    """``xr.DataTree.from_dict(groups)``, built from the deepest groups up: each node is
-    made once and its children attached without copies (from_dict copies each node twice
-    more on the way in: ≈ 5 of its 14 ms in a warm analysis, issue 75). The same tree
+    """``xr.DataTree.from_dict(groups)``, built node by node: each node is made once and
+    the children attached to their parents from the root down, without copies (from_dict
+    copies each node twice more on the way in: ≈ 5 of its 14 ms in a warm analysis, issue
+    75), each node's alignment with its parents checked once (attached from the deepest
+    up, a subtree's nodes are checked again at every level above them). The same tree
     (``identical``, the groups in the same order); a parent no group names is an empty
     group, as from_dict makes it; anything but Datasets goes to from_dict."""
     if not all(isinstance(ds, xr.Dataset) for ds in groups.values()):
@@ -325,17 +332,18 @@ def _datatree(groups: dict[str, xr.Dataset]) -> xr.DataTree:
         while path != "/":
             path = path.rpartition("/")[0] or "/"
             norm.setdefault(path, None)
-    made: dict[str, xr.DataTree] = {}
+    made = {path: xr.DataTree(dataset=ds) for path, ds in norm.items()}
     children: dict[str, dict[str, xr.DataTree]] = {}
-    # deepest first; sorted() is stable, so siblings keep the order of ``groups``
+    # siblings in the order of ``groups`` (sorted() is stable; a level's paths all have
+    # the same depth)
     for path in sorted(norm, key=lambda p: p.count("/") - (p == "/"), reverse=True):
-        node = xr.DataTree(dataset=norm[path])
-        if path in children:
-            node.children = children[path]
-        made[path] = node
         if path != "/":
             parent, _, name = path.rpartition("/")
-            children.setdefault(parent or "/", {})[name] = node
+            children.setdefault(parent or "/", {})[name] = made[path]
+    # the root first: a node attached to a parent in the tree is checked against it and
+    # the parents above once, and it has no children yet to check again
+    for path in sorted(children, key=lambda p: p.count("/") - (p == "/")):
+        made[path].children = children[path]
     return made["/"]
 
 

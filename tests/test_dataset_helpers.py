@@ -3,7 +3,10 @@
 :func:`geometry.core.conventions.dataset` must make the very Dataset ``xarray.Dataset``
 makes of the same ``(dims, values, attrs)`` tuples (its variables, their order, dtypes
 and classes, its indexes and attributes), and hand every input it does not take to
-xarray, which refuses what is wrong; :func:`geometry.core.caches.row_keys` must give each
+xarray, which refuses what is wrong; :func:`geometry.core.conventions.assigned` the
+Dataset xarray's ``assign_coords`` and ``assign`` make; the result tree of
+:func:`contact.pipeline.run_analysis` (``contact.pipeline._datatree``) the tree
+``xarray.DataTree.from_dict`` makes; :func:`geometry.core.caches.row_keys` must give each
 row's bytes behind the tag, as the slices of the rows' bytes do. Milliseconds.
 """
 
@@ -14,7 +17,7 @@ import pytest
 import xarray as xr
 
 from geometry.core.caches import row_keys
-from geometry.core.conventions import coords_along, data_var, dataset
+from geometry.core.conventions import assigned, coords_along, data_var, dataset
 
 
 def _same(a: xr.Dataset, b: xr.Dataset) -> None:
@@ -48,6 +51,8 @@ COORDS = {
     "gear_torque": ("torque", np.array([150.0, 750.0])),
     "fillet_u": (("member", "roll"), np.zeros((2, 3))),
     "step": ((), 2),
+    "pair": ("pair", np.array([-1, 0, 1]), {"units": "1"}),
+    "kind": ("kind", np.array(["curve", "edge"], dtype=object)),
 }
 
 
@@ -110,3 +115,57 @@ def test_row_keys_are_the_rows_bytes():
     assert row_keys(np.empty((0, 3)), b"x") == []
     with pytest.raises(ValueError):
         row_keys(np.zeros(3))
+
+
+def test_assigned_is_xarrays_assign():
+    """New data variables and coordinates (along their own dimension, with an index, or
+    along others; new dimensions among them) added as xarray's ``assign_coords`` and
+    ``assign`` add them: the same Dataset, variable for variable and in the same order;
+    the dataset itself unchanged."""
+    ds = xr.Dataset(DATA, coords=COORDS, attrs={"title": "t"})
+    ds.encoding["unlimited_dims"] = {"torque"}
+    before = ds.copy()
+    data = {"stress": xr.Variable(("torque", "member", "point"), np.ones((2, 2, 4)),
+                                  {"units": "MPa"}),
+            "peak": xr.Variable(("torque",), [1.0, 2.0])}
+    coords = {"point": xr.Variable("point", np.arange(4), {"units": "1"}),
+              "point_u": xr.Variable(("member", "point"), np.zeros((2, 4))),
+              "tooth": xr.IndexVariable("tooth", [-1, 0, 1])}
+    got = assigned(ds, data, coords)
+    _same(got, ds.assign_coords(coords).assign(data))
+    _same(assigned(ds, data), ds.assign(data))
+    _same(ds, before)
+    got["stress"].attrs["units"] = "Pa"  # its own variables, as xarray's (not the inputs)
+    got["point_u"].attrs["units"] = "1"
+    assert data["stress"].attrs == {"units": "MPa"} and coords["point_u"].attrs == {}
+
+
+def test_assigned_leaves_what_it_does_not_take_to_xarray():
+    """A DataArray among the values, a name the dataset holds and sizes that disagree go
+    to xarray: the same Dataset, or xarray's own error."""
+    ds = xr.Dataset(DATA, coords=COORDS)
+    da = xr.DataArray([1.0, 2.0], dims="torque", coords={"torque": [50.0, 250.0]})
+    _same(assigned(ds, {"f": da}), ds.assign({"f": da}))
+    again = {"force": xr.Variable(("torque", "roll"), np.zeros((2, 3)))}
+    _same(assigned(ds, again), ds.assign(again))
+    with pytest.raises(ValueError):
+        assigned(ds, {"bad": xr.Variable("roll", [1.0, 2.0])})
+
+
+def test_result_tree_is_xarrays_from_dict():
+    """The analysis' tree of groups — nested ones, parents no group names, a child
+    group whose coordinates its parent holds (``/rating/flash_temperature``), siblings
+    in the order given — is the tree ``DataTree.from_dict`` makes of them."""
+    from contact.pipeline import _datatree
+
+    ds = xr.Dataset(DATA, coords=COORDS)
+    child = xr.Dataset({"theta": (("torque", "member"), np.ones((2, 2)))},
+                       coords={"torque": COORDS["torque"], "member": COORDS["member"]})
+    groups = {"/geometry/pinion/concave": ds, "/geometry/gear/convex": ds.copy(),
+              "/ltca": ds.drop_vars("flag"), "/rating": ds, "/rating/flash_temperature":
+              child, "/": xr.Dataset(attrs={"case": "c"})}
+    got, want = _datatree(groups), xr.DataTree.from_dict(groups)
+    assert got.identical(want)
+    assert [n.path for n in got.subtree] == [n.path for n in want.subtree]
+    for a, b in zip(got.subtree, want.subtree, strict=True):
+        _same(a.to_dataset(inherit=False), b.to_dataset(inherit=False))

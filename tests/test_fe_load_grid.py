@@ -25,3 +25,34 @@ def test_a_grid_point_without_surface_is_named_with_the_surface_height_there():
     text = _uncovered(grid_u, grid_v, area, u, v)
     assert "u 0.00: surface up to v 0.40, grid to 1.00" in text
     assert "u 0.50" not in text
+
+
+def test_hat_weights_are_the_canonical_csr_of_the_four_corners():
+    """The hat weights' sparse matrix made directly as canonical CSR holds the arrays the
+    COO constructor makes of each point's four corner weights (its sort, no duplicates;
+    issue 75): the same indices, entries and row pointers, so the same products; each row
+    sums to 1, a point outside has the boundary's weights (``clip``) or none (``zero``)."""
+    import scipy.sparse as sp
+
+    rng = np.random.default_rng(3)
+    gu, gv = np.linspace(0.0, 1.0, 7), np.array([0.0, 0.3, 0.5, 1.0])
+    u, v = rng.uniform(-0.1, 1.1, 500), rng.uniform(-0.1, 1.1, 500)
+    for outside in ("clip", "zero"):
+        got = hat_weights(gu, gv, u, v, outside=outside)
+        iu = np.clip(np.searchsorted(gu, u, side="right") - 1, 0, gu.size - 2)
+        iv = np.clip(np.searchsorted(gv, v, side="right") - 1, 0, gv.size - 2)
+        tu = np.clip((u - gu[iu]) / (gu[iu + 1] - gu[iu]), 0.0, 1.0)
+        tv = np.clip((v - gv[iv]) / (gv[iv + 1] - gv[iv]), 0.0, 1.0)
+        w = np.stack([(1 - tu) * (1 - tv), tu * (1 - tv), (1 - tu) * tv, tu * tv], axis=1)
+        out = (u < 0) | (u > 1) | (v < 0) | (v > 1)
+        if outside == "zero":
+            w[out] = 0.0
+        cols = np.stack([iu * gv.size + iv, (iu + 1) * gv.size + iv, iu * gv.size + iv + 1,
+                         (iu + 1) * gv.size + iv + 1], axis=1)
+        want = sp.csr_matrix((w.ravel(), (np.repeat(np.arange(u.size), 4), cols.ravel())),
+                             shape=(u.size, gu.size * gv.size))
+        for name in ("indptr", "indices", "data"):
+            assert np.array_equal(getattr(got, name), getattr(want, name)), name
+        assert got.has_canonical_format and got.shape == want.shape
+        rows = np.asarray(got.sum(axis=1)).ravel()
+        assert np.allclose(rows[~out], 1.0) and np.allclose(rows[out], outside == "clip")

@@ -46,6 +46,7 @@ from collections.abc import Mapping
 import numpy as np
 import xarray as xr
 
+from geometry.core.conventions import assigned
 from geometry.core.errors import PluginError
 
 __all__ = ["MODES", "OPTIONAL", "REQUIRED", "check_result", "contract_variables", "safeties"]
@@ -211,7 +212,7 @@ def contract_variables(ds: xr.Dataset, *, pitting: tuple[str, str, str, str],
             out[key] = copied(name, ("torque", "member"), units="MPa",
                               long_name=f"the standard's {key.replace('_', ' ')} ({name})",
                               symbol=name, source=f"{name} (the method's own)")
-    return ds.assign(out)
+    return assigned(ds, out)  # ds.assign(out), without its merge (issue 75)
 
 
 def safeties(ds: xr.Dataset | None) -> tuple[xr.Dataset | None, str]:

@@ -45,7 +45,7 @@ from contact.utca.fields import EaseOffFields, Same, fields_of
 from contact.utca.transitions import transitions
 from geometry import __version__
 from geometry.core.caches import memoised
-from geometry.core.conventions import binary_flag
+from geometry.core.conventions import binary_flag, dataset
 from geometry.core.conventions import data_var as _var
 from geometry.core.errors import InputError
 from geometry.core.renamed import renamed_keywords
@@ -375,8 +375,8 @@ def utca_dataset(eo: EaseOff, cycle: UnloadedCycle, *, case: Case,
         **_cycle_variables(cycle, separation),
     }
     n_point = cc.u.shape[-1]
-    return xr.Dataset(data, coords=_utca_coords(cycle, n_point),
-                      attrs=_utca_attrs(eo, case, mis, cycle.method))
+    # (xarray's Dataset of these tuples, made directly: issue 75)
+    return dataset(data, _utca_coords(cycle, n_point), _utca_attrs(eo, case, mis, cycle.method))
 
 
 def _plane_places(eo: EaseOff):
@@ -603,8 +603,7 @@ def easeoff_dataset(eo: EaseOff, case: Case, *,
         "v": ("v", eo.v, {"units": "1", "long_name": "gear profile fraction, root 0 to tip 1"}),
         "xyz": ("xyz", np.array(["x", "y", "z"]), {"long_name": "gear-frame component"}),
     }
-    return xr.Dataset(_easeoff_variables(eo), coords=coords,
-                      attrs=_easeoff_attrs(eo, case, mis))
+    return dataset(_easeoff_variables(eo), coords, _easeoff_attrs(eo, case, mis))
 
 
 def _easeoff_variables(eo: EaseOff) -> dict:

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["binary_flag", "coords_along", "data_var", "dataset"]
+__all__ = ["assigned", "binary_flag", "coords_along", "data_var", "dataset"]
 
 
 def data_var(dims, data, units: str | None, long_name: str, **attrs: Any) -> tuple:
@@ -117,8 +117,14 @@ def _direct_dataset(xr, data: Mapping, coords: Mapping, attrs: Mapping | None):
     def variable(spec):
         if type(spec) is not tuple or not 2 <= len(spec) <= 3:
             return None
-        if isinstance(spec[1], (xr.DataArray, xr.Variable, xr.Dataset, pd.Index, pd.Series,
-                                pd.DataFrame)):
+        values = spec[1]
+        if type(values) is np.ndarray and values.dtype.kind not in "OMm":
+            # a plain array of numbers, text or flags, which xarray's conversions
+            # (np.asarray, objects and times) leave as it is: taken as it is (~3 us each)
+            return xr.Variable(spec[0], values, spec[2] if len(spec) == 3 else None,
+                               fastpath=True)
+        if isinstance(values, (xr.DataArray, xr.Variable, xr.Dataset, pd.Index, pd.Series,
+                               pd.DataFrame)):
             return None
         return xr.Variable(*spec)
 
@@ -131,7 +137,8 @@ def _direct_dataset(xr, data: Mapping, coords: Mapping, attrs: Mapping | None):
         if var is None or not isinstance(name, str):
             return None
         if var.dims == (name,):
-            var = var.to_index_variable()
+            # the index of the plain variable: the same pandas index (and dtype) as of its
+            # index variable, whose own pandas index (~30 us) create_variables replaces
             index = PandasIndex.from_variables({name: var}, options={})
             made = index.create_variables({name: var})
             coord_vars.update(made)
@@ -157,6 +164,101 @@ def _direct_dataset(xr, data: Mapping, coords: Mapping, attrs: Mapping | None):
         return construct(variables, set(coord_vars), sizes, dict(attrs) if attrs else None,
                          indexes=indexes)
     except TypeError:  # another xarray's private signature: its public constructor
+        return None
+
+
+def assigned(ds, data: Mapping[str, Any], coords: Mapping[str, Any] | None = None):
+    """``ds.assign_coords(coords).assign(data)`` of plain ``xarray.Variable`` values, made
+    directly.
+
+    The same Dataset (``identical``, the same variables in the same order: ``ds``'s, then
+    the new coordinates, then the new data variables; the same indexes and attributes) as
+    xarray's ``assign_coords`` and ``assign`` make, without their copy, merge and alignment
+    of the dataset's own variables, which new Variables never need: an analysis adds its
+    root stress to ``/ltca`` (56 variables) and the rating's contract variables to
+    ``/rating`` (111) so (issue 75). Anything else — a DataArray among the values, a name
+    ``ds`` holds already, a coordinate named as a dimension but not along it alone, sizes
+    that disagree — is left to xarray, which merges, aligns or refuses it.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset — the dataset (not changed)
+    data : mapping of str to xarray.Variable — the data variables to add
+    coords : mapping of str to xarray.Variable, optional — the coordinates to add; one
+        along the dimension of its name gets the default (pandas) index
+
+    Returns
+    -------
+    xarray.Dataset — a new dataset; its variables are shallow copies of ``ds``'s and of
+        the new ones (their arrays shared, as ``Dataset.copy`` and xarray's merge make
+        them)
+
+    Raises
+    ------
+    ValueError, TypeError
+        As xarray's ``assign_coords`` and ``assign`` (inputs it refuses go to them).
+
+    Notes
+    -----
+    Uses xarray's ``Dataset._construct_direct``, as :func:`dataset` does; where that is
+    missing, xarray's methods. tests/test_dataset_helpers.py compares the two.
+    """
+    import xarray as xr
+
+    coords = coords or {}
+    made = _direct_assigned(xr, ds, data, coords)
+    if made is not None:
+        return made
+    return (ds.assign_coords(coords) if coords else ds).assign(data)
+
+
+def _direct_assigned(xr, ds, data: Mapping, coords: Mapping):
+    """:func:`assigned` without xarray's merge, or None where the inputs need it."""
+    construct = getattr(xr.Dataset, "_construct_direct", None)
+    if construct is None or type(ds) is not xr.Dataset:
+        return None
+    from xarray.indexes import PandasIndex
+
+    new: dict = {}
+    indexes = dict(ds.xindexes)
+    coord_names = set(ds.coords)
+    for group in (coords, data):
+        for name, var in group.items():
+            if not isinstance(name, str) or name in ds.variables or name in new \
+                    or name in ds.dims:
+                return None
+            if type(var) is not xr.Variable and not (
+                    group is coords and type(var) is xr.IndexVariable
+                    and var.dims == (name,)):
+                return None  # (a DataArray, or an index variable as a data variable)
+            if group is coords:
+                if var.dims == (name,):
+                    index = PandasIndex.from_variables({name: var}, options={})
+                    var = index.create_variables({name: var})[name]
+                    indexes[name] = index
+                elif name in var.dims:
+                    return None  # (xarray refuses it)
+                else:
+                    var = var.copy(deep=False)  # (xarray's merge takes a shallow copy)
+                coord_names.add(name)
+            elif name in var.dims:
+                return None  # a data variable named as a dimension: xarray's way
+            else:
+                var = var.copy(deep=False)
+            new[name] = var
+    sizes = dict(ds.sizes)
+    for var in new.values():
+        for dim, size in zip(var.dims, var.shape, strict=True):
+            if sizes.setdefault(dim, size) != size:
+                return None
+    if any(dim in new and dim not in indexes for dim in sizes):
+        return None
+    variables = {name: var.copy(deep=False) for name, var in ds.variables.items()}
+    variables.update(new)
+    try:
+        return construct(variables, coord_names, sizes, dict(ds.attrs), indexes=indexes,
+                         encoding=dict(ds.encoding))
+    except TypeError:  # another xarray's private signature: its public methods
         return None
 
 

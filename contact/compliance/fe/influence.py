@@ -133,10 +133,16 @@ def hat_weights(grid_u: np.ndarray, grid_v: np.ndarray, u, v, *,
     w = np.stack([(1 - tu) * (1 - tv), tu * (1 - tv), (1 - tu) * tv, tu * tv], axis=1)
     if outside == "zero":
         w[~inside] = 0.0
-    cols = np.stack([iu * nv + iv, (iu + 1) * nv + iv, iu * nv + iv + 1,
-                     (iu + 1) * nv + iv + 1], axis=1)
-    rows = np.repeat(np.arange(u.size), 4)
-    return sp.csr_matrix((w.ravel(), (rows, cols.ravel())), shape=(u.size, nu * nv))
+    # each row's four columns (distinct: nu, nv ≥ 2) in increasing order, i.e. the
+    # canonical CSR that the COO constructor makes of them (its sort and duplicate sum,
+    # ~2/3 of this function, left out): the same arrays, entries and products
+    a = iu * nv + iv
+    cols = np.stack([a, a + 1, a + nv, a + nv + 1], axis=1)
+    w = w[:, [0, 2, 1, 3]]
+    m = sp.csr_matrix((w.ravel(), cols.ravel(), np.arange(0, 4 * u.size + 1, 4)),
+                      shape=(u.size, nu * nv))
+    m.has_canonical_format = True  # sorted, no duplicates (above)
+    return m
 
 
 @dataclass(frozen=True, eq=False)

@@ -1,0 +1,155 @@
+"""One warm analysis of this tree and of an earlier commit, alternated in one process.
+
+    python benchmarks/warm_pair.py --before 0bca452            # 30 analyses each
+    python benchmarks/warm_pair.py --before 0bca452 --runs 50 --torque 500
+    python benchmarks/warm_pair.py --before /tmp/tree-0bca452  # a tree exported before
+
+Both trees are imported into this one process, each with its own modules (``git
+archive`` of ``--before`` into a temporary directory, or a directory given, whose numba
+cache a first run has filled; the modules of ``contact``,
+``geometry`` and ``friction`` are swapped in ``sys.modules`` before each analysis, so each
+tree runs its own code and keeps its own memos), and their analyses are alternated
+(before, after, after, before, …): ``run_analysis`` of the default case at one torque (as
+``ltca run`` runs it, root stress from the FE cache), after two warm-ups per tree. Each
+analysis' CPU time (``time.process_time``) and its stages (:class:`stage_clock.StageClock`,
+one clock per tree, with the result tree's build as a stage of its own) are recorded;
+printed are the medians per tree, the median of the paired differences, and both against a
+1500² Cholesky (``numpy.linalg.cholesky``, one BLAS thread, median of 5) in the same
+process, issue 75's measure. On the shared machine, where another process's load moves a
+lone measurement by tens of percent, the two trees then see the same load: the paired
+difference is what a change buys (helper warm75h; separate processes, as
+``benchmarks/issue75_table.py`` measures one tree, read 150–205 ms for the same tree).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGES = ("contact", "geometry", "friction")
+#: the result tree's build, a stage of its own (nested in none of stage_clock's)
+EXTRA = (("contact.pipeline", "_datatree", "result tree (DataTree)"),)
+
+
+def _ours(name: str) -> bool:
+    return name.split(".")[0] in PACKAGES
+
+
+class Tree:
+    """One tree's modules, run_analysis, case and stage clock, in this process."""
+
+    def __init__(self, path: Path) -> None:
+        from stage_clock import StageClock  # this tree's benchmarks/, on sys.path
+
+        self.path = str(path)
+        for name in [n for n in sys.modules if _ours(n)]:
+            del sys.modules[name]
+        sys.path.insert(0, self.path)
+        try:
+            from contact.catalogue import bundled_case_path
+            from contact.pipeline import run_analysis
+            from geometry.case import load_case
+
+            self.case = load_case(bundled_case_path())
+            self.run_analysis = run_analysis
+            self.clock = StageClock(EXTRA).install()
+        finally:
+            sys.path.remove(self.path)
+        self.modules = {n: m for n, m in sys.modules.items() if _ours(n)}
+        self._check()
+
+    def _check(self) -> None:
+        stray = [n for n, m in self.modules.items()
+                 if getattr(m, "__file__", None) and not m.__file__.startswith(self.path)]
+        if stray:
+            raise RuntimeError(f"modules of another tree in {self.path}: {stray[:3]}")
+
+    def analyse(self, torque: float) -> tuple[float, dict[str, float]]:
+        """CPU seconds of one analysis and its stages [s]."""
+        for name in [n for n in sys.modules if _ours(n)]:
+            del sys.modules[name]
+        sys.modules.update(self.modules)  # a module imported lazily: this tree's
+        sys.path.insert(0, self.path)
+        self.clock.reset()
+        try:
+            t0 = time.process_time()
+            self.run_analysis(self.case, [torque])
+            cpu = time.process_time() - t0
+        finally:
+            sys.path.remove(self.path)
+        self.modules.update({n: m for n, m in sys.modules.items() if _ours(n)})
+        self._check()
+        return cpu, dict(self.clock.cpu)
+
+
+def cholesky_seconds() -> float:
+    """Median CPU seconds of five 1500² Cholesky factorisations (one BLAS thread)."""
+    import numpy as np
+
+    a = np.random.default_rng(0).standard_normal((1500, 1500))
+    a = a @ a.T + 1500 * np.eye(1500)
+    times = []
+    for _ in range(5):
+        t0 = time.process_time()
+        np.linalg.cholesky(a)
+        times.append(time.process_time() - t0)
+    return statistics.median(times)
+
+
+def main(argv: list[str] | None = None) -> None:
+    from issue75_table import export_tree  # this script's folder is on sys.path
+    from tabulate import tabulate
+
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--before", required=True,
+                    help="the earlier commit (git archive), or the directory of its tree")
+    ap.add_argument("--runs", type=int, default=30, help="analyses per tree (30)")
+    ap.add_argument("--torque", type=float, default=250.0, help="pinion torque [N m]")
+    args = ap.parse_args(argv)
+    with tempfile.TemporaryDirectory(prefix="warm_pair_") as tmp:
+        before = Path(args.before)
+        if not before.is_dir():
+            before = export_tree(args.before, Path(tmp))
+        trees = {args.before: Tree(before), "this tree": Tree(ROOT)}
+        names = list(trees)
+        for tree in trees.values():  # two warm-ups each
+            tree.analyse(args.torque)
+            tree.analyse(args.torque)
+        cpu: dict[str, list[float]] = {n: [] for n in names}
+        stages: dict[str, list[dict]] = {n: [] for n in names}
+        for i in range(args.runs):
+            for name in names if i % 2 == 0 else names[::-1]:
+                t, s = trees[name].analyse(args.torque)
+                cpu[name].append(t)
+                stages[name].append(s)
+    chol = cholesky_seconds()
+    keys = list(dict.fromkeys(k for n in names for s in stages[n] for k in s))
+    rows = [[k, *(1e3 * statistics.median(s.get(k, 0.0) for s in stages[n])
+                  for n in names)] for k in keys]
+    rows.append(["rest (chain, attributes, summary, merges)",
+                 *(1e3 * statistics.median(t - sum(s.values())
+                                           for t, s in zip(cpu[n], stages[n], strict=True))
+                   for n in names)])
+    rows.append(["analysis (median)", *(1e3 * statistics.median(cpu[n]) for n in names)])
+    rows.append(["× Cholesky 1500²", *(statistics.median(cpu[n]) / chol for n in names)])
+    diff = [b - a for b, a in zip(cpu[names[0]], cpu[names[1]], strict=True)]
+    print(f"warm analysis at {args.torque:g} N·m, CPU [ms], {args.runs} alternated "
+          f"analyses per tree; Cholesky 1500² {1e3 * chol:.0f} ms; load "
+          f"{os.getloadavg()[0]:.1f}")
+    print(tabulate(rows, headers=["stage (exclusive, median)", *names], floatfmt=".1f"))
+    print(f"paired difference ({names[0]} − this tree): median "
+          f"{1e3 * statistics.median(diff):.1f} ms, mean {1e3 * statistics.mean(diff):.1f} "
+          f"± {1e3 * statistics.stdev(diff) / len(diff) ** 0.5:.1f} ms (standard error)")
+
+
+if __name__ == "__main__":
+    main()
