@@ -482,3 +482,19 @@ def test_in_degrees_converts_only_angles(geometries):
     assert d["design"]["Sigma"] == pytest.approx(90.0, rel=1e-15)
     with pytest.raises(InputError, match="obj"):
         in_degrees(3.0)
+
+
+def test_gear_face_angle_beyond_90_names_the_addendum_angle():
+    # a spiral bevel 12x35 at Σ 110° (issue 71, unseen (11)): δ2 89.95°, θ_a2 1° put the
+    # gear's face angle at 90.95°, which stopped `ltca synthesize` with the case blank's
+    # "face_angle: must be in (0, 90]"; the basic data's field and its range are named
+    design = design_from_annex("sample1", method=0, a=0.0, Sigma=110.0, z1=12, z2=35,
+                               theta_a2=1.0, theta_f2=4.0)
+    d2 = math.degrees(pitch_cone(design).delta2)
+    assert 89.9 < d2 < 90.0  # the pitch angle alone is within the plane
+    with pytest.raises(InputError, match=r"^theta_a2: must be in \[0, 90° − δ2\] = \[0, "
+                       r"0\.0[0-9]*\] \[deg\].*got 1: δ2 89\.9[0-9]*° \(Σ 110°"):
+        blank_geometry(design)
+    g = blank_geometry(design_from_annex("sample1", method=0, a=0.0, Sigma=110.0, z1=12,
+                                         z2=35, theta_a2=0.0, theta_f2=4.0))
+    assert g.gear.delta_a == pytest.approx(math.radians(d2), abs=1e-12)

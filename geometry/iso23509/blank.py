@@ -535,6 +535,20 @@ def gear_dimensions(design: BevelGearDesign, pitch: PitchCone | None = None) -> 
             f"theta_f2: must be in [0, δ2) = [0, {math.degrees(d2):.4g}) [deg], got "
             f"{math.degrees(th_f2):g}"
         )
+    if da2 > 0.5 * math.pi + 1e-12:
+        # a face cone past the plane of the gear's back is an internal bevel gear's, which
+        # the case's blank (geometry.case, face_angle in (0, 90] deg) does not describe;
+        # said here in the basic data's terms (issue 71, unseen (11): a spiral bevel 12x35
+        # at Σ 110°, δ2 89.95°, θ_a2 1° stopped with "face_angle: must be in (0, 90]")
+        raise InputError(
+            f"theta_a2: must be in [0, 90° − δ2] = [0, {max(90.0 - math.degrees(d2), 0.0):.4g}]"
+            f" [deg] for the gear's face angle δ_a2 = δ2 + θ_a2 to stay within 90° (a face "
+            "cone beyond the plane is an internal bevel gear's, not modelled), got "
+            f"{math.degrees(th_a2):g}: δ2 {math.degrees(d2):.4g}° (Σ "
+            f"{math.degrees(sigma):g}°, z2/z1 {design.z2}/{design.z1}) makes the gear nearly "
+            "a crown gear; give theta_a2 within that range (uniform depth: theta_a2 = "
+            "theta_f2 = 0), or a smaller Sigma"
+        )
     t_zF2 = p.t_z2 - (Rm2 * math.sin(th_a2) - ham2 * math.cos(th_a2)) / math.sin(da2)
     t_zR2 = p.t_z2 + (Rm2 * math.sin(th_f2) - hfm2 * math.cos(th_f2)) / math.sin(df2)
 
