@@ -399,8 +399,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # the chosen design at the mounting excursions; its relief raised where their edges
     # take more than the design torque's share (the search stops at the first design
     # meeting every target, whose edge share may be just within it)
-    best = checked_tolerance(best, targets, setup, teeth, say, placed,
-                             slopes=evaluate.slopes)
+    best = checked_tolerance(best, targets, setup, teeth, say, placed)
     developed = with_flank_options(basic, flank, best.values)
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target

@@ -1394,8 +1394,7 @@ TOLERANCE_RAISE_FRACTIONS = (1.0, 2.0 / 3.0, 1.0 / 3.0)
 def checked_tolerance(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       setup: dict[str, Any], teeth: KeptTeeth | None,
                       say: Callable[[str], None],
-                      placed: Callable[[Mapping[str, float]], Case], *,
-                      slopes: Mapping[tuple, float] | None = None
+                      placed: Callable[[Mapping[str, float]], Case]
                       ) -> DevelopmentEvaluation:
     """The chosen design made tolerant where it meets every target but not the mounting
     excursions' edges: where its drive flank at an excursion (:func:`tolerance_checks`)
@@ -1406,9 +1405,7 @@ def checked_tolerance(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     larger gives up a target the design met; each design placed and checked at
     :data:`CHECK_LTCA` and kept where it still meets every target and is tolerant
     (:func:`_tolerant_variant`), the first such (at most 6 designs; 4 excursions each
-    that meets every target). Where no relief makes it tolerant, the pattern centred
-    (:func:`_tolerance_blade`; ``slopes``: the height stage's measured d(centre v)/d(blade
-    angle) per bearing). ``setup["tolerance"]`` gets the excursions' result of the design
+    that meets every target). ``setup["tolerance"]`` gets the excursions' result of the design
     returned, with its values and torques, for the final check to reuse.
 
     Why: the search stops at the first design meeting every target, so a design whose
@@ -1458,77 +1455,6 @@ def checked_tolerance(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                 break  # a smaller raise loads the edges more
             setup["tolerance"] = (dict(e.values), tuple(setup["torques"]), tolerance)
             return e
-    return _tolerance_blade(best, targets, setup, teeth, say, placed,
-                            slope=(slopes or {}).get(bearing_key(best.values)))
-
-
-#: the tolerance step's blade-angle steps (:func:`_tolerance_blade`), as fractions of the
-#: step that puts the light-load centre v on its target, tried largest first
-TOLERANCE_BLADE_FRACTIONS = (1.0, 0.5, 0.25)
-#: [1] the least distance of the centre v from its target for which
-#: :func:`_tolerance_blade` steps (a centred pattern has nothing to give)
-TOLERANCE_BLADE_MIN = 0.01
-
-
-def _tolerance_blade(best: DevelopmentEvaluation, targets: DevelopmentTargets,
-                     setup: dict[str, Any], teeth: KeptTeeth | None,
-                     say: Callable[[str], None],
-                     placed: Callable[[Mapping[str, float]], Case], *,
-                     slope: float | None = None) -> DevelopmentEvaluation:
-    """The tolerance step's last lever: a chosen design that meets every target but is
-    not tolerant after the reliefs (:func:`checked_tolerance`) gets its light-load pattern
-    centred in depth by the pinion's blade-angle change
-    (:data:`~contact.optimize.development_targets.HEIGHT_NAME`): the step that moves the
-    centre v onto its target (linear, ``slope`` [1/deg]: the height stage's measured slope
-    on this bearing where above 0.05, else :data:`~contact.optimize.development_stages.
-    HEIGHT_SLOPE`), then :data:`TOLERANCE_BLADE_FRACTIONS` of it; each design placed and
-    checked at :data:`CHECK_LTCA`, the first that meets every target and is tolerant at
-    every excursion kept (at most 3 designs). Nothing where the centre v is within
-    :data:`TOLERANCE_BLADE_MIN` of its target or the design has no blade-angle lever.
-
-    Why: the search stops at the first design meeting every target, whose centre v may sit
-    anywhere in its band; a pattern off the centre meets the flank's edge first when the
-    mounting moves it (Stadtfeld, *Gleason Bevel Gear Technology*, 2014: the pressure
-    angle for the pattern's height). Measured on the truck hypoid 13x43 at Σ 95°
-    (benchmarks/data/unseen_designs, 379.3 / 2529 N m, its ISO capacity, ``ltca run``'s
-    sampling, ``benchmarks/development_levers.py --check --tolerance``, 2026-11-26):
-    centre v 0.59 (target 0.543 ± 0.08), every target met, 0.6 % of the torque plastic
-    on the gear's tip edge at ΔE +0.05 mm; the tip relief raised gave up a target, the
-    root relief 58.6 µm (its bound 60) left the plastic; blade angle −0.05°: centre v
-    0.56, LTE 30.5 / 31.9 µrad, every target met, tolerant at every excursion; −0.1°:
-    v 0.55, the pattern 0.65 long (0.5 ± 0.1)."""
-    from contact.optimize.development_stages import HEIGHT_SLOPE
-
-    if (best.full is None or not best.checked or not best.met or best.case is None
-            or HEIGHT_NAME not in targets.variables or HEIGHT_NAME not in best.values
-            or not math.isfinite(footprint_centre_v(best))):
-        return best
-    target = (targets.pattern_centre_v if targets.pattern_centre_v is not None
-              else setup["centre_v"])
-    v0, x0 = footprint_centre_v(best), float(best.values[HEIGHT_NAME])
-    if abs(v0 - target) < TOLERANCE_BLADE_MIN:
-        return best
-    lo, hi = (float(x) for x in targets.variables[HEIGHT_NAME])
-    s = slope if slope is not None and slope > 0.05 else HEIGHT_SLOPE
-    tried: list[float] = []
-    for fraction in TOLERANCE_BLADE_FRACTIONS:
-        x = float(np.clip(x0 - fraction * (v0 - target) / s, lo, hi))
-        if abs(x - x0) < 1e-4 or any(abs(x - t) < 1e-4 for t in tried):
-            continue
-        tried.append(x)
-        e = _said_variant(best, best.values | {HEIGHT_NAME: x}, "tolerance",
-                          f"with {HEIGHT_NAME} {x:.3g} deg (tolerance: the pattern to its "
-                          "centre v)", targets, setup, teeth, say, placed)
-        if e is None:
-            break
-        if not e.met:
-            continue  # a smaller step may keep the target this one gives up
-        tolerance = tolerance_checks(e.case, targets, setup, teeth, e.values,
-                                     until_missed=True)
-        if _missed_excursion(tolerance, say):
-            continue
-        setup["tolerance"] = (dict(e.values), tuple(setup["torques"]), tolerance)
-        return e
     return best
 
 
