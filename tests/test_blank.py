@@ -28,6 +28,7 @@ from geometry.iso23509.blank import (
     BlankGeometry,
     blank_dataset,
     blank_geometry,
+    check_face_angles,
     in_degrees,
     pinion_spiral_angle_at,
     spiral_angle_at,
@@ -482,3 +483,39 @@ def test_in_degrees_converts_only_angles(geometries):
     assert d["design"]["Sigma"] == pytest.approx(90.0, rel=1e-15)
     with pytest.raises(InputError, match="obj"):
         in_degrees(3.0)
+
+
+def test_gear_face_angle_beyond_90_names_the_addendum_angle():
+    # a spiral bevel 12x35 at Σ 110° (issue 71, unseen (11)): δ2 89.95°, θ_a2 1° put the
+    # gear's face angle at 90.95°, which stopped `ltca synthesize` with the case blank's
+    # "face_angle: must be in (0, 90]"; the ISO blank itself is made (its formulas hold for
+    # any pitch angle), and the check a case's blank needs names the basic field and range
+    design = design_from_annex("sample1", method=0, a=0.0, Sigma=110.0, z1=12, z2=35,
+                               theta_a2=1.0, theta_f2=4.0)
+    g = blank_geometry(design)
+    d2 = math.degrees(g.gear.delta)
+    assert 89.9 < d2 < 90.0  # the pitch angle alone is within the plane
+    assert math.degrees(g.gear.delta_a) == pytest.approx(d2 + 1.0, abs=1e-12)
+    with pytest.raises(InputError, match=r"^theta_a2: must be in \[0, 90° − δ2\] = \[0, "
+                       r"0\.0[0-9]*\] \[deg\].*got 1: δ2 89\.9[0-9]*° \(Σ 110°"):
+        check_face_angles(g)
+    ok = blank_geometry(design_from_annex("sample1", method=0, a=0.0, Sigma=110.0, z1=12,
+                                          z2=35, theta_a2=0.0, theta_f2=4.0))
+    assert check_face_angles(ok) is ok
+    assert ok.gear.delta_a == pytest.approx(math.radians(d2), abs=1e-12)
+
+
+def test_basic_design_blank_checks_face_angles():
+    # the synthesis' blank (BasicDesign.blank) is the checked one: the same 12x35 basic
+    # file as a user types it stops with the basic field, not the case blank's
+    from geometry.synthesis.basic_design import basic_from_dict
+
+    raw = {"name": "sb12x35", "source": "test: spiral bevel 12x35 at Sigma 110 deg", "design": {
+        "method": 0, "Sigma": 110.0, "a": 0.0, "z1": 12, "z2": 35, "de2": 180.0, "b2": 27.0,
+        "beta_m": 35.0, "rc0": 57.15, "alpha_dD": 20.0, "alpha_dC": 20.0, "f_alim": 1.0,
+        "c_ham": 0.25, "k_d": 2.0, "k_c": 0.125, "k_t": 0.1, "backlash": "j_et2",
+        "backlash_value": 0.12, "theta_a2": 1.0, "theta_f2": 4.0, "hand": "left"}}
+    with pytest.raises(InputError, match=r"^theta_a2: must be in \[0, 90° − δ2\]"):
+        basic_from_dict(raw).blank()
+    raw["design"]["theta_a2"] = 0.0
+    assert math.degrees(basic_from_dict(raw).blank().gear.delta_a) < 90.0

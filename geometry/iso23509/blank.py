@@ -80,6 +80,7 @@ __all__ = [
     "MemberBlank",
     "blank_dataset",
     "blank_geometry",
+    "check_face_angles",
     "gear_dimensions",
     "in_degrees",
     "pinion_spiral_angle_at",
@@ -632,6 +633,49 @@ def _member(
         t_z=t_z, t_zF=t_zF, t_zR=t_zR,
         txo=Re * c_d - hae * s_d - t_z, txi=Ri * c_d - hai * s_d - t_z, smn=smn,
     )
+
+
+def check_face_angles(geom: BlankGeometry) -> BlankGeometry:
+    """A blank whose members' face angles stay within 90°, as a case's blank must.
+
+    Parameters
+    ----------
+    geom : BlankGeometry
+        Both members' ISO 23509 blanks (:func:`blank_geometry`); angles [rad].
+
+    Returns
+    -------
+    BlankGeometry
+        ``geom`` itself.
+
+    Raises
+    ------
+    InputError
+        Naming ``theta_a2`` and its range [0, 90° − δ2] [deg] where the gear's face angle
+        δ_a2 = δ2 + θ_a2 passes 90° (the pinion's, an arcsine of the gear's cones
+        (:func:`gear_dimensions`), cannot).
+
+    Notes
+    -----
+    ISO 23509:2016 cl. 6 gives δ_a2 = δ2 + θ_a2 for any pitch angle; a face cone beyond
+    the plane of the member's back is an internal bevel gear's, which the case blank
+    (:class:`geometry.case.Blank`, face angle in (0, 90] deg) does not describe. Said here
+    in the basic data's terms (issue 71, unseen (11): a spiral bevel 12x35 at Σ 110°, δ2
+    89.95°, θ_a2 1° stopped ``ltca synthesize`` with "face_angle: must be in (0, 90]").
+    """
+    design, limit = geom.design, 0.5 * math.pi + 1e-12
+    d2, th_a2 = geom.gear.delta, geom.gear.theta_a
+    if geom.gear.delta_a > limit:
+        raise InputError(
+            f"theta_a2: must be in [0, 90° − δ2] = [0, {max(90.0 - math.degrees(d2), 0.0):.4g}]"
+            f" [deg] for the gear's face angle δ_a2 = δ2 + θ_a2 to stay within 90° (a face "
+            "cone beyond the plane is an internal bevel gear's, not modelled), got "
+            f"{math.degrees(th_a2):.4g}: δ2 {math.degrees(d2):.4g}° (Σ "
+            f"{math.degrees(design.Sigma):g}°, z2/z1 {design.z2}/{design.z1}) makes the gear "
+            "nearly a crown gear; give theta_a2 within that range (uniform depth: theta_a2 = "
+            "theta_f2 = 0), or a smaller Sigma"
+        )
+    return geom
 
 
 def blank_geometry(design: BevelGearDesign) -> BlankGeometry:

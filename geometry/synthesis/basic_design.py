@@ -48,7 +48,7 @@ from geometry.case import operating_from_dict
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.toml_files import read_toml
 from geometry.core.validation import real
-from geometry.iso23509.blank import BlankGeometry, blank_geometry
+from geometry.iso23509.blank import BlankGeometry, blank_geometry, check_face_angles
 from geometry.iso23509.pitch_cone import BevelGearDesign
 
 __all__ = [
@@ -436,8 +436,10 @@ class BasicDesign:
     development: Mapping[str, Any] = field(default_factory=dict)
 
     def blank(self) -> BlankGeometry:
-        """ISO 23509 blank geometry of the design (pitch cone and both members)."""
-        return blank_geometry(self.design)
+        """ISO 23509 blank geometry of the design (pitch cone and both members), its face
+        angles within 90° (:func:`~geometry.iso23509.blank.check_face_angles`: a case's
+        blank; InputError naming the basic field where not)."""
+        return check_face_angles(blank_geometry(self.design))
 
     def size_scale(self) -> float:
         """:func:`size_scale` of the design's mean normal module [1]: the factor its
