@@ -17,7 +17,11 @@ after synthesize, as a user runs it) and its CPU is added: the issue's budget.
 
 CPU is user + system time of this process and of its children (the FE solver worker,
 ``resource.getrusage``); a child's CPU is counted in the stage that waits for it to end.
-CPU, not wall time: the machine may be shared. Also ``--diff DIR``: compare the case files
+CPU, not wall time: the machine may be shared. The numba cache must be warm for the tree
+run (a first run of a new worktree or environment compiles the kernels inside the first
+trials: 34–37 s more on the spiral bevels 19x23 at beta_m 46 deg, 18x27 and the miter
+20x20, docs/own_gear_set.md "Where the slowest designs' synthesize goes"): run a tree
+once before comparing it. Also ``--diff DIR``: compare the case files
 written with ``DIR/<design>.toml`` (e.g. an earlier tree's), line for line but for the
 development's CPU seconds and the basic file's directory, which the file records.
 
