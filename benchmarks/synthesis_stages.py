@@ -17,7 +17,11 @@ after synthesize, as a user runs it) and its CPU is added: the issue's budget.
 
 CPU is user + system time of this process and of its children (the FE solver worker,
 ``resource.getrusage``); a child's CPU is counted in the stage that waits for it to end.
-CPU, not wall time: the machine may be shared. Also ``--diff DIR``: compare the case files
+CPU, not wall time: the machine may be shared. The numba cache must be warm for the tree
+run (a first run of a new worktree or environment compiles the kernels inside the first
+trials: 34–37 s more on the spiral bevels 19x23 at beta_m 46 deg, 18x27 and the miter
+20x20, docs/own_gear_set.md "Where the slowest designs' synthesize goes"): run a tree
+once before comparing it. Also ``--diff DIR``: compare the case files
 written with ``DIR/<design>.toml`` (e.g. an earlier tree's), line for line but for the
 development's CPU seconds and the basic file's directory, which the file records.
 
@@ -26,7 +30,7 @@ the designs: the development's CPU alone, the FE builds read from it; issue 75's
 of a new design's synthesize into its FE builds and the development).
 
 Usage: ``python benchmarks/synthesis_stages.py [BASIC.toml ...] [--keep DIR] [--no-run]
-[--diff DIR] [--cache DIR]``. One design takes 2–4 min of CPU.
+[--diff DIR] [--cache DIR] [--progress]``. One design takes 2–4 min of CPU.
 """
 
 from __future__ import annotations
@@ -88,10 +92,13 @@ def _cpu() -> float:
 
 
 class StageCPU:
-    """Exclusive CPU seconds and calls per stage of :data:`STAGES` while installed."""
+    """Exclusive CPU seconds and calls per stage of :data:`STAGES` while installed, and
+    each stage's inclusive CPU (its outermost calls, the stages nested in them included:
+    the coast flank developed again at its torque with its search and checks)."""
 
     def __init__(self) -> None:
         self.cpu: dict[str, float] = defaultdict(float)
+        self.inclusive: dict[str, float] = defaultdict(float)
         self.calls: dict[str, int] = defaultdict(int)
         self._stack: list[list] = []
         self._patches: list[tuple[object, str, object]] = []
@@ -122,14 +129,17 @@ class StageCPU:
             now = _cpu()
             if clock._stack:
                 clock.cpu[clock._stack[-1][0]] += now - clock._stack[-1][1]
-            clock._stack.append([stage, now])
+            outer = all(st != stage for st, _, _ in clock._stack)
+            clock._stack.append([stage, now, now])
             clock.calls[stage] += 1
             try:
                 return fn(*args, **kwargs)
             finally:
                 now = _cpu()
-                st, start = clock._stack.pop()
+                st, start, entered = clock._stack.pop()
                 clock.cpu[st] += now - start
+                if outer:
+                    clock.inclusive[st] += now - entered
                 if clock._stack:
                     clock._stack[-1][1] = now
 
@@ -145,9 +155,11 @@ def _import_development() -> None:
         importlib.import_module(module)
 
 
-def run_design(basic: Path, work: Path, run: bool = True, cache: Path | None = None) -> dict:
+def run_design(basic: Path, work: Path, run: bool = True, cache: Path | None = None,
+               progress: bool = False) -> dict:
     """Synthesise one design in this process (stages timed), then ``ltca run`` it; with
-    the FE cache ``cache`` (default: an empty one of its own under ``work``)."""
+    the FE cache ``cache`` (default: an empty one of its own under ``work``);
+    ``progress``: the development's progress lines on standard error."""
     from contact.cli import main
 
     case = work / f"{basic.stem}.toml"
@@ -158,12 +170,13 @@ def run_design(basic: Path, work: Path, run: bool = True, cache: Path | None = N
     clock = StageCPU().install()
     c0, w0 = _cpu(), time.perf_counter()
     try:
-        rc = main(["synthesize", str(basic), "-o", str(case), "--no-progress"])
+        rc = main(["synthesize", str(basic), "-o", str(case),
+                   *(() if progress else ("--no-progress",))])
     finally:
         clock.remove()
     row = {"design": basic.stem, "rc": rc, "synth_cpu": _cpu() - c0,
            "synth_wall": time.perf_counter() - w0, "stages": dict(clock.cpu),
-           "calls": dict(clock.calls), "case": case}
+           "inclusive": dict(clock.inclusive), "calls": dict(clock.calls), "case": case}
     row["stages"]["development other (develop, final syntheses, records)"] = (
         row["synth_cpu"] - sum(clock.cpu.values()))
     if run and rc == 0:
@@ -182,11 +195,12 @@ def print_row(row: dict, diff: Path | None) -> None:
           + (f" + first ltca run {row['run_cpu']:.1f} s = "
              f"{row['synth_cpu'] + row['run_cpu']:.1f} s (budget {BUDGET:g})"
              if "run_cpu" in row else "") + ("" if row["rc"] == 0 else " (synthesize failed)"))
-    print("| stage | CPU [s] | share | calls |\n|---|---|---|---|")
+    print("| stage | CPU [s] | share | inclusive [s] | calls |\n|---|---|---|---|---|")
     total = row["synth_cpu"]
     for stage, cpu in sorted(row["stages"].items(), key=lambda kv: -kv[1]):
+        inc = row.get("inclusive", {}).get(stage)
         print(f"| {stage} | {cpu:.1f} | {100 * cpu / total:.0f} % | "
-              f"{row['calls'].get(stage, '')} |")
+              f"{'' if inc is None else f'{inc:.1f}'} | {row['calls'].get(stage, '')} |")
     if diff is not None:
         old = diff / f"{row['design']}.toml"
         same = old.is_file() and _same_numbers(old) == _same_numbers(Path(row["case"]))
@@ -216,6 +230,8 @@ def main(argv: list[str] | None = None) -> int:
                     help="synthesize only (no ltca run)")
     ap.add_argument("--diff", type=Path, help="compare each case written with DIR/<design>"
                     ".toml byte for byte")
+    ap.add_argument("--progress", action="store_true", help="the development's progress "
+                    "lines on standard error (which designs each stage analysed)")
     ap.add_argument("--cache", type=Path, help="use this FE cache (warm: the development "
                     "alone) instead of an empty one per design")
     args = ap.parse_args(argv)
@@ -223,7 +239,8 @@ def main(argv: list[str] | None = None) -> int:
     work.mkdir(parents=True, exist_ok=True)
     for basic in args.basic or DESIGNS:
         print_row(run_design(basic.resolve(), work.resolve(), args.run,
-                             None if args.cache is None else args.cache.resolve()), args.diff)
+                             None if args.cache is None else args.cache.resolve(),
+                             args.progress), args.diff)
         sys.stdout.flush()
     return 0
 
