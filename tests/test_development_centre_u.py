@@ -59,20 +59,27 @@ def test_m_placed_off_the_mean_cone_distance_moves_along_the_pitch_generatrix():
     assert FlankOptions().mean_point_shift == 0.0
 
 
-def _centre_u_fake(calls, toe0=0.4, v_per_shift=0.0):
+def _centre_u_fake(calls, toe0=0.4, v_per_shift=0.0, lte0=20.0, lte_per_shift=0.0, u0=0.675,
+                   plastic_below=None):
     """Stand-in analyses after the bundled 11x41's check (its development's design 35 at
     path −70°, ellipse 0.6, ``ltca run``'s sampling at 61.9 N m; docs/own_gear_set.md): the
     light-load centre u 0.675 + 0.97 per unit of M's shift (0.578 at −0.1), the pattern's
     toe and heel moving with it (toe ``toe0`` + shift, heel 0.9 + shift: 0.5 long), the
     light-load centre v 0.60 + ``v_per_shift`` per unit (measured −0.156: 0.63 at −0.192),
-    every other metric a design meeting its targets."""
+    the light-load LTE ``lte0`` + ``lte_per_shift`` per unit [µrad], every other metric a
+    design meeting its targets; ``u0`` the centre u at no shift; ``plastic_below``: a
+    shift below which the mounting excursions carry 0.3 % of the torque plastic."""
 
     def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
              flank="drive"):
         x = case.get("mean_point_shift", 0.0)
         calls.append((x, misalignment is not None))
-        return (_metrics(pattern_centre_u=[0.675 + 0.97 * x, 0.61 + 0.56 * x],
+        plastic = (0.003 if plastic_below is not None and misalignment is not None
+                   and x < plastic_below else 0.0)
+        return (_metrics(pattern_centre_u=[u0 + 0.97 * x, 0.61 + 0.56 * x],
+                         plastic_share=[0.0, plastic],
                          pattern_centre_v=[0.6 + v_per_shift * x, 0.6],
+                         lte_peak_to_peak=[lte0 + lte_per_shift * x, 30.0],
                          pattern_toe_u=[toe0 + x, 0.15], pattern_heel_u=[0.9 + x, 0.9]),
                 (0.0, 1.0, 0.0, 1.0, 2400.0))
     return fake
@@ -179,3 +186,37 @@ def test_the_mounting_excursions_are_taken_from_the_cases_own_mounting(monkeypat
     dcheck.tolerance_checks(SimpleNamespace(misalignment=Misalignment()), targets, setup,
                             None, {"path_angle": -70.0})
     assert seen == [(0.05, 0.0), (-0.05, 0.0), (0.0, 0.05), (0.0, -0.05)]
+
+
+def test_m_placed_is_kept_where_it_meets_more_targets_though_it_scores_worse(monkeypatch):
+    """A design that misses its centre u and its LTE (45 µrad against 40), whose M placed
+    towards the toe costs LTE (the bundled 11x41 at the check's second M step: 65 / 58 →
+    59 / 68 µrad, objective 12.2 → 12.3): kept though its objective is higher, since it
+    meets one target more (the centre u) and gives up none (as checked_near_miss counts)."""
+    calls = []
+    fake = _centre_u_fake(calls, lte0=45.0, lte_per_shift=-100.0)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [61.9, 412.9])
+    start = chosen({"path_angle": -70.0})
+    assert sorted(k for k, v in start.full[1].items() if v > 0) == ["centre_u", "lte"]
+    got = dcheck.checked_centre_u(start, targets, setup, None, [].append, lambda v: dict(v))
+    assert got is not start and got.objective > start.objective
+    assert [k for k, v in got.full[1].items() if v > 0] == ["lte"]
+
+
+def test_m_placed_too_far_for_the_tolerance_is_followed_by_half_the_step(monkeypatch):
+    """A design just off its band (u 0.54, as the bundled 11x41 after the check's later
+    steps) whose M step to the aim (−0.0526, u 0.489) is not tolerant (plastic at the
+    excursions below −0.04): M half-way back (−0.0263, u 0.514, still within the band by
+    the law) is tried and kept — the 11x41's second M step (−0.137 → −0.192 not tolerant)."""
+    calls = []
+    fake = _centre_u_fake(calls, u0=0.54, plastic_below=-0.04)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [61.9, 412.9])
+    start = chosen({"path_angle": -70.0})
+    calls.clear()
+    lines = []
+    got = dcheck.checked_centre_u(start, targets, setup, None, lines.append,
+                                  lambda v: dict(v))
+    nominal = [c[0] for c in calls if not c[1]]
+    assert nominal == [pytest.approx(-0.0526), pytest.approx(-0.0263)]
+    assert got.met and got.values["mean_point_shift"] == pytest.approx(-0.0263)
+    assert any("not kept: at the mounting excursion" in x for x in lines)

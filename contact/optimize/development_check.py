@@ -790,7 +790,10 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     :data:`CENTRE_U_AIM` of the tolerance inside the band on the side it missed, at most
     :data:`CENTRE_U_DESIGNS` designs, each placed and checked at :data:`CHECK_LTCA`
     (a synthesis of steps 3-6: the local synthesis at the new M) and kept by
-    :func:`kept_why` (better, no met target lost but the centre v, tolerant). The centre
+    :func:`kept_why` (better — it ranks before the design, or it meets more targets, as
+    :func:`checked_near_miss` counts them: the objective's LTE terms may prefer a pattern
+    off its centre to one a few µrad louder — no met target lost but the centre v,
+    tolerant). The centre
     v may be lost: M is centred in roll within the working depth at its new cone
     distance, which moves the pattern's height a little, and the height steps after this
     one (:func:`_checked_tip`, :func:`_checked_root`, :func:`checked_near_miss`) take a
@@ -813,7 +816,11 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     v 0.60, LTE 47 / 53 µrad, 0.4 % plastic, objective 25.8) with M placed −0.192 of the
     face: u 0.50, v 0.63 (band 0.543 ± 0.08), LTE 45 / 59 µrad, no plastic segment,
     objective 4.41; the same M with the blade angle stepped 0.0415 → −0.113° to bring v
-    back: v 0.55 but LTE 86 / 81 µrad and 0.1 % plastic, objective 41.2."""
+    back: v 0.55 but LTE 86 / 81 µrad and 0.1 % plastic, objective 41.2. A design whose
+    centre u is met but which is not kept (not tolerant, or a target given up) is followed
+    by M half-way back to the design kept, where the pattern, linear in M, still meets its
+    band: the 11x41's second M step, from −0.137 (u 0.54) to −0.192 (u 0.49), was not
+    tolerant (a plastic segment at ΔP −0.05 mm)."""
     if best.full is None or not best.checked or best.full[1].get("centre_u", 0.0) == 0.0:
         return best
     u0 = centre_u_of(best)
@@ -824,10 +831,11 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     aim = targets.pattern_centre_u + math.copysign(
         (1.0 - CENTRE_U_AIM) * targets.centre_tolerance, u0 - targets.pattern_centre_u)
     start, s = best, CENTRE_U_SLOPE
+    kept = (x0, u0)  # (shift, centre u) of the design kept so far
     steps: list[tuple[float, float]] = []  # (shift, centre u) of each design
+    x = float(np.clip(x0 - (u0 - aim) / s, lo, hi))
     for _ in range(CENTRE_U_DESIGNS):
-        xa, ua = steps[-1] if steps else (x0, u0)
-        x = round(float(np.clip(xa - (ua - aim) / s, lo, hi)), 4)
+        x = round(x, 4)
         if abs(x - x0) < 1e-3 or any(abs(x - t) < 1e-3 for t, _ in steps):
             break
         side = "toe" if x < x0 else "heel"
@@ -839,19 +847,32 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           targets, setup, teeth, say, placed)
         if e is None:
             break
-        if not kept_why(best, e, targets, setup, teeth, say, "M's place",
-                        lost=_lost_but_depth):
-            best = e
+        u = centre_u_of(e)
+        why = kept_why(best, e, targets, setup, teeth, say, "M's place",
+                       lost=_lost_but_depth,
+                       better=lambda b, x: _ranks_better(b, x)
+                       or _met_count(x) > _met_count(b))
+        if not why:
+            best, kept = e, (x, u)
             if e.full[1]["centre_u"] == 0.0:
                 break
-        u = centre_u_of(e)
-        if not math.isfinite(u) or abs(u - aim) < CENTRE_U_CLOSE:
-            break  # no pattern to step from, or a step on would move it less than a node
+        if not math.isfinite(u):
+            break  # no pattern to step from
         steps.append((x, u))
+        if why and e.full[1]["centre_u"] == 0.0:
+            # its centre met, but not kept (not tolerant, or a target given up): M half-way
+            # back to the design kept, where the pattern (linear) still meets its band
+            if abs(0.5 * (u + kept[1]) - targets.pattern_centre_u) >= targets.centre_tolerance:
+                break
+            x = 0.5 * (x + kept[0])
+            continue
+        if abs(u - aim) < CENTRE_U_CLOSE:
+            break  # a step on would move the pattern less than a node
         (xa, ua), (xb, ub) = ((x0, u0), steps[0]) if len(steps) == 1 else steps[-2:]
         if not (ub - ua) / (xb - xa) > CENTRE_U_LEAST_SLOPE:
             break  # the pattern did not follow M
         s = (ub - ua) / (xb - xa)  # the slope measured: the next design a secant
+        x = float(np.clip(xb - (ub - aim) / s, lo, hi))
     return best
 
 
