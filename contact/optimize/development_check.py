@@ -202,7 +202,7 @@ def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any]
     "the nominal mounting: the case's own"); before, it replaced that mounting, and the
     bundled 11x41 (ΔE −0.15, ΔP +0.12 mm in its basic file) was judged at ΔE ±0.05 mm
     from no misalignment — 0.1-0.2 mm from its own assembly, every excursion moving its
-    light-load pattern 0.13-0.25 of the face to the toe (docs/own_gear_set.md, "The
+    light-load pattern 0.12-0.25 of the face to the toe (docs/own_gear_set.md, "The
     pattern's centre along the face")."""
     own = getattr(case, "misalignment", None)  # (a test's stand-in case has none)
     if own is not None:
