@@ -169,6 +169,33 @@ def test_the_root_find_puts_the_pattern_at_the_height_aimed_at(lever):
     assert slopes and all(s > 0.05 for s in slopes.values())
 
 
+def test_m_placed_towards_the_toe_moves_the_pattern_towards_the_toe(lever):
+    """The lever of the pattern's centre along the face (issue 71; contact.optimize.
+    development_check.checked_centre_u): the mean point M placed −0.1, 0, +0.1 of the face
+    width off the mean cone distance (FlankOptions ``mean_point_shift``, steps 3-6 again):
+    the light-load footprint centre u rises monotonically with M, by at least two nodes of
+    the coarse grid (2 × 0.025 of the face) per tenth of the face — the pattern follows M
+    along the face, as measured on the bundled 11x41 (0.96 per unit of shift,
+    CENTRE_U_SLOPE) — and moves more along the face than in depth."""
+    dev, evaluate, _, basic_of, make, evals, _ = lever
+
+    def at(shift):
+        values = {"mean_point_shift": shift}
+        b = basic_of(values)
+        try:
+            # the pinion tooth kept under its own M (a new tooth: steps 3-6 again)
+            return evaluate(values, "height", lambda: make(b), 100, (shift,))
+        except dev.StageStop:
+            return evals[-1]
+
+    es = [at(x) for x in (-0.1, 0.0, 0.1)]
+    assert not any(e.reason for e in es), [e.reason for e in es]
+    u = [float(e.metrics["pattern_centre_u"][0]) for e in es]
+    v = [float(e.metrics["pattern_centre_v"][0]) for e in es]
+    assert u[0] + 0.05 <= u[1] and u[1] + 0.05 <= u[2], u
+    assert abs(v[2] - v[0]) < u[2] - u[0], (u, v)
+
+
 def _result(coast_pressure: float, design_torque: float = 300.0):
     """A DevelopmentResult made by hand (no analysis): the drive design misses the LTE
     (55 µrad) and the length; the coast flank peaks at ``coast_pressure`` at the design

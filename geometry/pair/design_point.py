@@ -26,6 +26,7 @@ from scipy.optimize import brentq
 
 from geometry.case import Blank, Case
 from geometry.core.errors import InputError
+from geometry.core.validation import real
 from geometry.machine.cradle import MachineSettings
 from geometry.machine.cutter import Blade, working_sections
 from geometry.machine.flank import blank_outline
@@ -127,7 +128,7 @@ def action_rotation(points, normals, pinion_blank: Blank, gear_blank: Blank, *,
 
 def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: Blank,
                  pinion_blank: Blank, *, gear_hand: str, shaft_angle: float,
-                 offset: float) -> np.ndarray:
+                 offset: float, shift: float = 0.0) -> np.ndarray:
     """Projection-plane place (z, ρ) [mm] of the mean contact point M on a gear flank.
 
     Parameters
@@ -142,11 +143,19 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
         Σ.
     offset : float — [mm]
         Hypoid offset E (ISO 23509 sign).
+    shift : float, optional — [1]
+        M placed off the mean cone distance by ``shift`` × the gear face width along the
+        pitch generatrix, > 0 towards the heel (default 0: at the mean cone distance);
+        in (−0.5, 0.5). The local synthesis' M may lie anywhere on the flank (Litvin &
+        Fuentes 2004 §9.2); placed towards the toe it moves the bearing towards the toe
+        (the development's lever for the pattern's centre along the face,
+        ``mean_point_shift`` of :class:`geometry.synthesis.basic_design.FlankOptions`).
 
     Returns
     -------
     ndarray (2,) — [mm]
-        On the normal to the pitch cone at the gear's mean cone distance, between the gear
+        On the normal to the pitch cone at the gear's mean cone distance (moved by
+        ``shift``), between the gear
         tip (h_am2 above the pitch cone) and the lowest point the pinion tip reaches (h_am1
         below it; h_am the mean addenda), the point that the ideal motion brings onto the
         surface of action at the middle of the roll range of that working depth.
@@ -154,7 +163,8 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     Raises
     ------
     InputError
-        If the working-depth line is not generated or never meets the surface of action.
+        If the working-depth line is not generated or never meets the surface of action,
+        or ``shift`` is out of range.
 
     Notes
     -----
@@ -166,9 +176,13 @@ def design_point(gear_blade: Blade, gear_settings: MachineSettings, gear_blank: 
     rotation at which it meets the surface of action of the ideal motion (n·v⁽¹²⁾ = 0,
     Litvin & Fuentes 2004 ch. 6), interpolated over nine points of the line.
     """
+    shift = real("mean_point_shift", shift, unit="1, fraction of the face width", low=-0.5,
+                 high=0.5, low_open=True, high_open=True)
     pm = blank_outline(gear_blank).mean_point
     d = gear_blank.pitch_angle
     up = np.array([-math.sin(d), math.cos(d)])
+    if shift:
+        pm = pm + shift * gear_blank.face_width * np.array([math.cos(d), math.sin(d)])
     lo, hi = -mean_addendum(pinion_blank), mean_addendum(gear_blank)
     offs = np.linspace(lo, hi, 9)
     zp = pm + offs[:, None] * up

@@ -248,6 +248,11 @@ class FlankOptions:
         ease-off at ±m_mn of blade height from M, > 0 crowned; applied after steps 4–6,
         the lever that shortens the bearing in depth. Default 0, in (−100, 100) µm; the
         file gives it in µm.
+    mean_point_shift : float — [1]
+        The mean point M placed off the gear's mean cone distance by this fraction of the
+        gear face width, > 0 towards the heel (:func:`geometry.pair.design_point.design_point`,
+        step 3): the local synthesis then makes the bearing about M there, the lever that
+        moves the pattern along the face (toe–heel). Default 0, in (−0.25, 0.25).
     """
 
     path_angle: float = math.radians(-45.0)
@@ -260,6 +265,7 @@ class FlankOptions:
     blade_angle_change: float = 0.0
     profile_crowning: float = 0.0
     tip_relief_start: float | None = None
+    mean_point_shift: float = 0.0
 
     @property
     def tip_start(self) -> float:
@@ -297,6 +303,9 @@ class FlankOptions:
             "profile_crowning", 1e3 * real("profile_crowning", self.profile_crowning,
                                            unit="mm"),
             unit="um", low=-100.0, high=100.0, low_open=True, high_open=True))
+        object.__setattr__(self, "mean_point_shift", real(
+            "mean_point_shift", self.mean_point_shift, unit="1, fraction of the face width",
+            low=-0.25, high=0.25, low_open=True, high_open=True))
 
 
 @dataclass(frozen=True)
@@ -543,6 +552,7 @@ _FILE_UNITS: dict[str, tuple[str, Callable[[Any], Any], Callable[[Any], Any]]] =
     "blade_angle_change": ("deg", math.radians, math.degrees),
     "profile_crowning": ("um", lambda v: v * 1e-3, lambda v: 1e3 * v),
     "tip_relief_start": ("1", _same, _same),
+    "mean_point_shift": ("1", _same, _same),
 }
 #: file units of the flank prescriptions (``[synthesis]`` of a basic file)
 FLANK_OPTION_UNITS: Mapping[str, str] = {k: u for k, (u, _, _) in _FILE_UNITS.items()}

@@ -584,7 +584,8 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
     :func:`synthesize`'s memo): steps 3–6 reused where the prescriptions they read
     recur."""
     key = (pf, fo.path_angle, fo.te_level, fo.ellipse_length, fo.approach,
-           ref_gear_rotation, conjugate)
+           ref_gear_rotation, conjugate) + ((fo.mean_point_shift,) if fo.mean_point_shift
+                                            else ())
     if memo is not None and key in memo:
         for step in ("mean point and local synthesis", "generating tools (point radius, "
                      "blade profile, ratio of roll)", "modified roll (6D, 24E)"):
@@ -633,13 +634,13 @@ def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
     geom, design = pair.geom, pair.geom.design
     z1 = geom.pinion.z
     gblade = pair.gear.blades[_OTHER[pf]]
-    key = ("design point", pf)
+    key = ("design point", pf) + ((fo.mean_point_shift,) if fo.mean_point_shift else ())
     if memo is not None and key in memo:
         zg, pg = memo[key]
     else:
         zg, pg = design_point(gblade, pair.gear.settings, pair.gear_blank, pair.pinion_blank,
                               gear_hand=pair.gear_hand, shaft_angle=design.Sigma,
-                              offset=design.a)
+                              offset=design.a, shift=fo.mean_point_shift)
         if memo is not None:
             memo[key] = (zg, pg)
     gp = flank_point(gblade, pair.gear.settings, pair.gear_blank, pair.gear_hand, zg, pg)
@@ -1018,7 +1019,11 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
         o = fs.options
         parts.append(
             f"Pinion {pf}: path angle {_fmt(math.degrees(o.path_angle))} deg, TE "
-            f"{_fmt(o.te_level * 1e6)} urad at +/-1 pitch (a21 {fs.a21:.4g}), ellipse "
+            f"{_fmt(o.te_level * 1e6)} urad at +/-1 pitch (a21 {fs.a21:.4g}), "
+            + (f"M placed {_fmt(o.mean_point_shift)} x b2 off the mean cone distance "
+               "(towards the " + ("heel" if o.mean_point_shift > 0 else "toe") + "), "
+               if o.mean_point_shift else "")
+            + "ellipse "
             f"{_fmt(o.ellipse_length)} x b2 at {_fmt(o.approach * 1e3)} um, tip/root "
             f"relief {_fmt(o.tip_relief * 1e3)}/{_fmt(o.root_relief * 1e3)} um from "
             + (f"{_fmt(o.relief_start)} of the way to the ends; "
@@ -1071,6 +1076,8 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
                if fs.options.blade_angle_change else {}),
             **({"profile_crowning_um": round(fs.options.profile_crowning * 1e3, 9)}
                if fs.options.profile_crowning else {}),
+            **({"mean_point_shift": fs.options.mean_point_shift}
+               if fs.options.mean_point_shift else {}),
             "gear_rotation_deg": math.degrees(mp.gear_rotation),
             "pinion_rotation_deg": math.degrees(mp.pinion_rotation),
             "pinion_blank_phase_deg": math.degrees(fs.tools.blank_phase),
