@@ -161,8 +161,22 @@ def row_fe(tmp: Path, before: str | None) -> list[list]:
     return rows
 
 
-def row_warm(tmp: Path) -> tuple[list[list], dict]:
+def cholesky_seconds() -> float:
+    """Median CPU seconds of five 1500² Cholesky factorisations (one BLAS thread): the
+    reference the warm analysis is measured against (also benchmarks/warm_pair.py)."""
     import numpy as np
+
+    a = np.random.default_rng(0).standard_normal((1500, 1500))
+    a = a @ a.T + 1500 * np.eye(1500)
+    times = []
+    for _ in range(5):
+        t0 = time.process_time()
+        np.linalg.cholesky(a)
+        times.append(time.process_time() - t0)
+    return statistics.median(times)
+
+
+def row_warm(tmp: Path) -> tuple[list[list], dict]:
     from stage_clock import StageClock
 
     from contact.catalogue import bundled_case_path
@@ -183,13 +197,7 @@ def row_warm(tmp: Path) -> tuple[list[list], dict]:
             stages.append(dict(clock.cpu))
     finally:
         clock.remove()
-    a = np.random.default_rng(0).standard_normal((1500, 1500))
-    a = a @ a.T + 1500 * np.eye(1500)
-    chol = []
-    for _ in range(5):
-        t0 = time.process_time()
-        np.linalg.cholesky(a)
-        chol.append(time.process_time() - t0)
+    c = cholesky_seconds()
     # a torque series at the case's misalignment: each torque new to the process (the
     # ease-off, its curve segments and the shell's per-segment work are kept, the edge
     # segments, the pools' selection, the solves and the root stress are not)
@@ -198,7 +206,7 @@ def row_warm(tmp: Path) -> tuple[list[list], dict]:
         t0 = time.process_time()
         run_analysis(case, [TORQUE * (0.8 + 0.1 * k) + 1.0])
         series.append(time.process_time() - t0)
-    t, c = statistics.median(times), statistics.median(chol)
+    t = statistics.median(times)
     t_new = statistics.median(series)
     med = {k: statistics.median(s.get(k, 0.0) for s in stages) for k in stages[0]}
     med["rest (chain, datasets, writing groups)"] = t - sum(med.values())

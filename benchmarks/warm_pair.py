@@ -91,22 +91,8 @@ class Tree:
         return cpu, dict(self.clock.cpu)
 
 
-def cholesky_seconds() -> float:
-    """Median CPU seconds of five 1500² Cholesky factorisations (one BLAS thread)."""
-    import numpy as np
-
-    a = np.random.default_rng(0).standard_normal((1500, 1500))
-    a = a @ a.T + 1500 * np.eye(1500)
-    times = []
-    for _ in range(5):
-        t0 = time.process_time()
-        np.linalg.cholesky(a)
-        times.append(time.process_time() - t0)
-    return statistics.median(times)
-
-
 def main(argv: list[str] | None = None) -> None:
-    from issue75_table import export_tree  # this script's folder is on sys.path
+    from issue75_table import cholesky_seconds, export_tree  # this script's folder
     from tabulate import tabulate
 
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
