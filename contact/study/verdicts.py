@@ -866,12 +866,11 @@ def _edge_spread_bins(ds: xr.Dataset, bins: np.ndarray) -> np.ndarray:
     if not {"edge_load_share", "lte_peak_to_peak"} <= set(ds.variables):
         return bins
     edge = np.nan_to_num(np.asarray(ds["edge_load_share"].values, float))[bins]
-    quiet_or_loud = edge < EDGE_SHARE_MIN
     pp = np.asarray(ds["lte_peak_to_peak"].values, float)[bins]
     # a quiet transfer (within the limit) of a file written before the bits left it out
     # stays an attention of its own (below); a loud one goes to the lte check
-    keep = ~quiet_or_loud | (np.isfinite(pp) & (pp <= LTE_LIMIT))
-    return bins[keep]
+    loud = (edge < EDGE_SHARE_MIN) & ~quiet_transfer(pp, edge)
+    return bins[~loud]
 
 
 def _duty_static(ds: xr.Dataset) -> tuple[list[Finding], list[str]] | None:
