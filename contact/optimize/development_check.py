@@ -206,10 +206,7 @@ def _excursion(case: Case, targets: DevelopmentTargets, setup: Mapping[str, Any]
     pattern's centre along the face")."""
     own = getattr(case, "misalignment", None)  # (a test's stand-in case has none)
     if own is not None:
-        mis = Misalignment(delta_E=own.delta_E + mis.delta_E,
-                           delta_P=own.delta_P + mis.delta_P,
-                           delta_G=own.delta_G + mis.delta_G,
-                           delta_Sigma=own.delta_Sigma + mis.delta_Sigma)
+        mis = own.plus(mis)
     try:
         ms, grid = evaluation.analyse_design(case, setup["torques"], mis, teeth=teeth,
                                              pinion_key=bearing_key(values))

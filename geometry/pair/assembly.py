@@ -95,6 +95,30 @@ class Misalignment:
             raise InputError(
                 f"delta_Sigma: must be in (-10, 10) deg, got {math.degrees(self.delta_Sigma):.6g}")
 
+    def plus(self, other: Misalignment) -> Misalignment:
+        """This mounting displaced by ``other``, component by component (an excursion or a
+        deflection taken from an assembly's own misalignment, as the V-H check takes it).
+
+        Parameters
+        ----------
+        other : Misalignment
+            The displacement: ΔE, ΔP, ΔG [mm], ΔΣ [rad].
+
+        Returns
+        -------
+        Misalignment
+            The sums of the four components.
+
+        Raises
+        ------
+        InputError
+            The summed ΔΣ out of range (the constructor's check).
+        """
+        return Misalignment(delta_E=self.delta_E + other.delta_E,
+                            delta_P=self.delta_P + other.delta_P,
+                            delta_G=self.delta_G + other.delta_G,
+                            delta_Sigma=self.delta_Sigma + other.delta_Sigma)
+
     def labelled(self) -> dict[str, float]:
         """The misalignment as stored in files and printed: names that carry their units.
 
