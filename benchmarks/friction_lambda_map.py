@@ -7,15 +7,15 @@ and inside the band above. This script maps where that comes from on the default
 on the LTCA's own loaded flank segments (edge contacts apart, load-weighted):
 
 * **λ by speed** — the pinion speed from 25 to 24 000 rpm (the film over the run-in Rq 0.8
-  µm flanks, λ_c ≈ 0.02–1.7): μ of ``thermal_eyring`` split into its asperity part
-  μ_b N_a/N and its film part, Zhou & Hoeprich's asperity load share N_a/N, the
-  smooth-surface central λ_c (the one the share takes) and the stored λ = h_min/σ, beside
-  ISO/TR 14179-2 (Schlenk's FZG gear correlation), Benedict & Kelley (roller tests),
-  ``xu2007`` (a regression of an EHL model) and ``mixed_ehl`` (Johnson, Greenwood & Poon's
-  sharing) on the same segments;
+  µm flanks, λ_c ≈ 0.02–1.1: the inlet's thermal reduction caps it): μ of
+  ``thermal_eyring`` split into its asperity part μ_b N_a/N and its film part, Zhou &
+  Hoeprich's asperity load share N_a/N, the smooth-surface central λ_c (the one the
+  share takes) and the stored λ = h_min/σ, beside ISO/TR 14179-2 (Schlenk's FZG gear
+  correlation), Benedict & Kelley (roller tests), ``xu2007`` (a regression of an EHL
+  model) and ``mixed_ehl`` (Johnson, Greenwood & Poon's sharing) on the same segments;
 * **λ by roughness** — the flanks' Ra from 0.05 to 1.0 µm at 1500 rpm (the given Rq =
   Ra/√(2/π) of each flank, run in to 0.68 × as every run; the columns' Ra is the run-in
-  one the film and the correlations see), λ_c ≈ 0.2–4;
+  one the film and the correlations see), λ_c ≈ 0.1–3.2;
 * **surface finishes** — the mesh efficiency and flank μ at the three torques for ground
   (Ra 0.8 µm), fine-ground (0.4), lapped/honed (0.2) and superfinished (0.1) flanks with
   each model, and the change from Ra 0.8 to 0.2 against the correlations' and the
