@@ -436,11 +436,14 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
     where step 1 stops fitting, and step 2 takes over from that tenth. Until issue 71 step
     2 was missing and such crossings were left sharp: on the spiral bevel 18×27 β_m 39.5°
     (benchmarks/data/unseen_designs) the coast pinion's root stress peaked at those
-    sections and grew 21.6 % with the face divisions doubled (12 → 24), and on the bundled
-    ``hypoid_iso23509_s2`` the coast pinion read FE/σ_F 3.6–6.4 (docs/fe.md, "A crease
-    left sharp"). The rounding is this model's reading of the crossing (itself a reading:
-    the module docstring), not a cut blade's shape: the blades' far-side corners that
-    shape the real slot are not case data. Only a crossing above the last fillet sample (a
+    sections and grew 15–22 % with the face divisions doubled (12 → 24; rounded: +1.9 %),
+    and on the bundled ``hypoid_iso23509_s2`` the coast pinion read FE/σ_F 3.6–6.4
+    (docs/fe.md, "A crease left sharp", "The crease rounded into the fillet"). The
+    rounding is this model's reading of the crossing (itself a reading: the module
+    docstring), not a cut blade's shape: the blades' far-side corners that shape the real
+    slot are not case data, and the converged stress there depends on the radius as a
+    notch's (the 18×27's coast peak 385 / 323 / 263 MPa at 0.5 / 1 / 2 × step 2's cap).
+    Only a crossing above the last fillet sample (a
     tip meeting the other side's flank: no fillet left to keep) stays sharp (kind
     "…, sharp", a warning of :func:`tooth_sections`). Where the two sides do not cross,
     the bottom is straight between their ends. ``s_junction``: the blade arc lengths of
