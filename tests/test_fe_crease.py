@@ -201,7 +201,8 @@ def test_the_coast_root_stress_at_the_rounded_crossing_converges():
     307 / 323 MPa at u 0.32–0.48); with the crossing left sharp (the rule before) 474.1 →
     544.5 MPa (+14.9 %), alternating by ±20 % between neighbouring stations. The gear's
     peak (its slot bottoms straight Formate ones) 134.0 → 134.2 MPa, < 1 %. Four default
-    FE models (~1–2 min each cold on the 2-core machine), then read from the cache."""
+    FE models: 2.7 min, 50 s CPU with a cold cache (load ~10 on the 2-core machine), then
+    read from the cache."""
     from contact.chain import AnalysisChain
     from contact.compliance.fe import FEOptions
     from contact.pipeline import run_analysis
