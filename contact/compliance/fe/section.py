@@ -32,12 +32,14 @@ before, on the default pinion); where the two cut boundaries cross — two fille
 under each other, or a tip meeting the other fillet — that is the bottom, rounded by an
 arc tangent to both (a sharp crease is a notch
 with a singular elastic stress) of the blades' edge radius, or of the largest smaller
-radius that leaves both fillets in place; where they do not cross, the bottom is straight
-between the s = 0 points. Every crease is rounded, whatever its angle, so the bottom
-varies continuously along the face as the generated sides do (rounding only creases of
-more than 30°, with the radius halved until it fitted, left some sections sharp and others
-round, and the stress at the crossing changed with the face division). Each side is
-then cut at the slot bottom.
+radius down to a tenth of it that leaves both fillets in place, or, where none does (a tip
+crossing the other fillet near its top), of the largest radius up to that tenth that
+leaves some of each fillet (issue 71: such crossings were left sharp); where they do not
+cross, the bottom is straight between the s = 0 points. Every crease is rounded, whatever
+its angle, so the bottom varies continuously along the face as the generated sides do
+(rounding only creases of more than 30°, with the radius halved until it fitted, left some
+sections sharp and others round, and the stress at the crossing changed with the face
+division). Each side is then cut at the slot bottom.
 
 Taking the crossing keeps what only one of the two cuts removed: it is this model's
 reading, not the union of the two cuts. The union needs the blades' point widths (case
@@ -84,6 +86,12 @@ _SPLIT_SLOPE = math.radians(45.0)  # the fillet is split where it leans 45° in 
 _SPLIT_RANGE = (0.2, 0.8)  # ... clamped to this fraction of its arc from the slot bottom
 _CREASE_ANGLE = 1.0  # [deg] slot-bottom creases sharper than this are rounded
 _BLEND_BISECTIONS = 8  # bisections of the rounding radius (to 0.4 % of its range)
+#: a rounding keeps a side's fillet *whole* where a generated sample below this fraction
+#: of the edge radius's blade arc length is left on that side
+_KEEP_WHOLE = 0.9
+#: ... and *some* of it where one below this fraction is (the fallback rounding of a
+#: crossing that no radius ≥ a tenth of the edge radius rounds whole: issue 71)
+_KEEP_SOME = 0.999
 
 
 @dataclass(frozen=True, eq=False)
@@ -393,12 +401,14 @@ def _cut(curve, i: int, t: float, head=None, rho_ref: float = 1.0, length_v: flo
             np.r_[np.full(hv.size + 1, np.nan), s[i + 1:]])
 
 
-def _keeps_fillet(curve, where: tuple[int, float], s_junction: float) -> bool:
-    """Whether a side (v, φ, s) cut at ``where`` (segment, fraction) keeps some of its
-    fillet: a sample generated below 90 % of the edge radius's arc length."""
+def _keeps_fillet(curve, where: tuple[int, float], s_junction: float,
+                  keep: float = _KEEP_WHOLE) -> bool:
+    """Whether a side (v, φ, s) cut at ``where`` (segment, fraction) keeps its fillet: a
+    sample generated below ``keep`` × the edge radius's blade arc length ``s_junction``
+    (:data:`_KEEP_WHOLE`: the fillet kept whole, :data:`_KEEP_SOME`: some of it)."""
     rest = curve[2][where[0] + 1:]
     rest = rest[np.isfinite(rest)]
-    return bool(rest.size and rest.min() < 0.9 * s_junction)
+    return bool(rest.size and rest.min() < keep * s_junction)
 
 
 def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: float,
@@ -408,15 +418,39 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
 
     Each side of separate cuts runs down along its blade's flat tip (generated, s < 0, to
     the far end of the point width: :func:`_flank_samples`); where the two sides cross,
-    the slot bottom is their crossing,
-    rounded by an arc tangent to both when they meet at more than :data:`_CREASE_ANGLE`
-    (a sharp crease is a notch, where the elastic stress is singular): of ``radius``, or
-    of the largest radius down to a tenth of it (bisection) that leaves each side's fillet
-    in place; where they do not cross, it is straight between their ends. ``s_junction``:
-    the blade arc lengths of the two sides' fillet tops. ``one_cut``: both sides are cut
-    by one head in one setting (spread-blade Formate, face-hobbing completing), whose tip
-    plane joins their ends: the sides end at s = 0 (between the ends the plane's section
-    is straight within a few µm).
+    the slot bottom is their crossing, rounded by an arc tangent to both when they meet at
+    more than :data:`_CREASE_ANGLE` (a sharp crease is a re-entrant corner, a notch where
+    the elastic stress is singular: the FE root stress there grows with the mesh), of the
+    largest radius that fits, in this order:
+
+    1. ``radius`` (the blades' edge radius), or the largest radius down to a tenth of it
+       (bisection) that keeps both fillets *whole* (a sample generated below
+       :data:`_KEEP_WHOLE` of the fillet's blade arc length left on each side);
+    2. where none does — a blade's flat tip crossing the other side's fillet near its top,
+       so that any arc of a tenth of the edge radius or more reaches past 90 % of that
+       fillet — the largest radius up to that tenth which keeps *some* of each fillet (a
+       sample below :data:`_KEEP_SOME` of it): the crossing is rounded anyway, at the
+       cost of part of the fillet (kind "…, rounded into a fillet").
+
+    The radius is thus continuous along the face: it falls to a tenth of the edge radius
+    where step 1 stops fitting, and step 2 takes over from that tenth. Until issue 71 step
+    2 was missing and such crossings were left sharp: on the spiral bevel 18×27 β_m 39.5°
+    (benchmarks/data/unseen_designs) the coast pinion's root stress peaked at those
+    sections and grew 15–22 % with the face divisions doubled (12 → 24; rounded: +1.9 %),
+    and on the bundled ``hypoid_iso23509_s2`` the coast pinion read FE/σ_F 3.6–6.4
+    (docs/fe.md, "A crease left sharp", "The crease rounded into the fillet"). The
+    rounding is this model's reading of the crossing (itself a reading: the module
+    docstring), not a cut blade's shape: the blades' far-side corners that shape the real
+    slot are not case data, and the converged stress there depends on the radius as a
+    notch's (the 18×27's coast peak 385 / 323 / 263 MPa at 0.5 / 1 / 2 × step 2's cap).
+    Only a crossing above the last fillet sample (a
+    tip meeting the other side's flank: no fillet left to keep) stays sharp (kind
+    "…, sharp", a warning of :func:`tooth_sections`). Where the two sides do not cross,
+    the bottom is straight between their ends. ``s_junction``: the blade arc lengths of
+    the two sides' fillet tops. ``one_cut``: both sides are cut by one head in one setting
+    (spread-blade Formate, face-hobbing completing), whose tip plane joins their ends: the
+    sides end at s = 0 (between the ends the plane's section is straight within a few
+    µm).
     """
     ra, lb = right, left_next
     a, b = _xy(rho_ref, length_v, ra[0], ra[1]), _xy(rho_ref, length_v, lb[0], lb[1])
@@ -431,37 +465,56 @@ def _slot_bottom(right, left_next, rho_ref: float, length_v: float, radius: floa
     on_tip = [float(np.nan_to_num(c[2][k + 1], nan=1.0)) < 0.0 for c, k in ((ra, i), (lb, j))]
     kind = ("tips cross" if all(on_tip) else "tip meets fillet" if any(on_tip)
             else "fillets cross")
-    blend = None
-    if angle > _CREASE_ANGLE:
-        def fits(r: float):
+    blend, whole = None, True
+    if angle > _CREASE_ANGLE and radius > 0.0:
+        def fits(r: float, keep: float = _KEEP_WHOLE):
             arc = _blend(a, b, r, _point_on(a, i, t))
-            if arc is not None and _keeps_fillet(ra, arc[1], s_junction[0]) \
-                    and _keeps_fillet(lb, arc[3], s_junction[1]):
+            if arc is not None and _keeps_fillet(ra, arc[1], s_junction[0], keep) \
+                    and _keeps_fillet(lb, arc[3], s_junction[1], keep):
                 return arc
             return None
 
-        blend = fits(radius)
-        lo, hi = 0.1 * radius, radius
-        if blend is None and radius > 0.0 and (low := fits(lo)) is not None:
-            # the largest radius that keeps both fillets (bisection): the bottom then
-            # varies continuously along the face, as the generated sides do
-            blend = low
-            for _ in range(_BLEND_BISECTIONS):
-                mid = 0.5 * (lo + hi)
-                arc = fits(mid)
-                if arc is None:
-                    hi = mid
-                else:
-                    lo, blend = mid, arc
+        # the edge radius, else the largest radius that keeps both fillets whole down to
+        # a tenth of it (bisection): the bottom then varies continuously along the face,
+        # as the generated sides do
+        blend = _largest_fit(fits, 0.1 * radius, radius)
+        if blend is None:
+            # none does (a tip crossing a fillet near its top): the largest radius up to a
+            # tenth of the edge radius that keeps some of each fillet, which continues the
+            # radius above where it reaches that tenth (issue 71: left sharp, the crossing
+            # was a re-entrant corner)
+            blend = _largest_fit(lambda r: fits(r, _KEEP_SOME), 0.0, 0.1 * radius)
+            whole = False
     if blend is None:
         ra, lb = _cut(ra, i, t), _cut(lb, j, w)
         pt = (ra[0][0], ra[1][0])
-        return ra, lb, np.array([pt, pt]), kind
+        return ra, lb, np.array([pt, pt]), kind + (", sharp" if angle > _CREASE_ANGLE
+                                                   else "")
     arc_a, (i, t), arc_b, (j, w) = blend
     ra = _cut(ra, i, t, arc_a, rho_ref, length_v)
     lb = _cut(lb, j, w, arc_b, rho_ref, length_v)
     pt = (ra[0][0], ra[1][0])
-    return ra, lb, np.array([pt, pt]), kind + ", rounded"
+    return ra, lb, np.array([pt, pt]), kind + (", rounded" if whole
+                                               else ", rounded into a fillet")
+
+
+def _largest_fit(fits, lo: float, hi: float):
+    """The arc ``fits(r)`` (or None) of the largest radius r in [lo, hi] for which it is
+    not None, by :data:`_BLEND_BISECTIONS` bisections from ``hi`` down: ``fits(hi)``
+    where that fits, None where neither ``hi`` nor any radius above ``lo`` (nor ``lo``
+    itself, where it is > 0) does."""
+    if (best := fits(hi)) is not None:
+        return best
+    if lo > 0.0 and (best := fits(lo)) is None:
+        return None
+    for _ in range(_BLEND_BISECTIONS):
+        mid = 0.5 * (lo + hi)
+        arc = fits(mid)
+        if arc is None:
+            hi = mid
+        else:
+            lo, best = mid, arc
+    return best
 
 
 #: [mm] a fold of a side's samples less deep than this is left as it is: sampling noise
@@ -665,6 +718,11 @@ def tooth_sections(case, member: str, u) -> ToothSections:
         depth = max(depth, float(np.max(_below_root(corners, ui, bottom[:, 0]))))
     log.info("%s: %d sections; slot bottoms %s; deepest %.3f mm under the root cone",
              member, len(u), {k: kinds.count(k) for k in set(kinds)}, depth)
+    sharp = [f"{ui:.3f}" for ui, k in zip(u, kinds, strict=True) if k.endswith(", sharp")]
+    if sharp:
+        log.warning("%s: the slot bottom is a sharp crease at u = %s (a blade tip meets the "
+                    "other side above its fillet): the FE root stress there is singular "
+                    "and grows with the mesh", member, ", ".join(sharp))
     root_line = {f: samples[f].root for f in edge}
     return ToothSections(member, u, tuple(sections), pitch, shift, left_flank, corners,
                          depth, edge, bool(one_cut), root_line,
