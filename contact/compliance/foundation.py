@@ -364,8 +364,9 @@ def foundation_matrices(
     foundation : ToothFoundation
     load_height : ndarray (N,) — [mm] u_f of every load (all teeth, all roll positions)
     load_angle : ndarray (N,) — [rad] α_m of every load
-    blocks : list of int ndarray
-        The loads on one tooth at one roll position each (indices into the N loads).
+    blocks : list of int ndarray or slice
+        The loads on one tooth at one roll position each (indices into the N loads, or
+        their slice where they are consecutive: a view of the load vectors, not a copy).
 
     Returns
     -------

@@ -432,7 +432,13 @@ def mesh_compliance_many(
     blocks = [{int(pair): np.flatnonzero(seg.pair_index == pair)
                for pair in np.unique(seg.pair_index)} for seg in segments]
     offsets = np.concatenate([[0], np.cumsum([seg.size for seg in segments])])
-    flat_blocks = [offsets[r] + idx for r, b in enumerate(blocks) for idx in b.values()]
+    # a block's segments are consecutive (a roll's segments ordered by pair): its slice,
+    # whose rows the shell and foundation products take as views, not copies
+    flat_blocks = []
+    for r, b in enumerate(blocks):
+        for idx in b.values():
+            rows, _ = _block(offsets[r] + idx)
+            flat_blocks.append(rows if isinstance(rows, slice) else offsets[r] + idx)
     shell, found = {}, {}
     for name in names:
         shell[name] = iter(shell_matrices(model.member(name), mids[name], both[name],

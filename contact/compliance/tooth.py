@@ -561,7 +561,8 @@ def member_foundations(data: ToothModelData, shell_points: ShellPoints,
     ----------
     data : ToothModelData
     shell_points : ShellPoints — with normals, the loads of all blocks
-    blocks : list of int ndarray — the loads on one tooth (at one roll position) each
+    blocks : list of int ndarray or slice — the loads on one tooth (at one roll position)
+        each
 
     Returns
     -------

@@ -288,6 +288,17 @@ def _pair_teeth(coef: xr.Dataset, pts: np.ndarray, pairs: np.ndarray) -> np.ndar
     return _teeth_of_pairs(tooth, np.nonzero(finite)[1], pairs)
 
 
+def _distinct_rolls(pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The first of each distinct roll's points (J, ...) (rolls whose points are equal bit
+    for bit, NaN included, are one) and each roll's index among those firsts: ``pts[first]
+    [roll_of]`` is ``pts``."""
+    seen: dict[bytes, int] = {}
+    roll_of = np.array([seen.setdefault(np.ascontiguousarray(r).tobytes(), len(seen))
+                        for r in pts], dtype=int)
+    first = np.unique(roll_of, return_index=True)[1]
+    return first, roll_of
+
+
 def _finite_points(pts: np.ndarray) -> np.ndarray:
     """(...) bool: the points (..., 3) whose three coordinates are finite (the same as
     ``np.all(np.isfinite(pts), axis=-1)``, whose reduction over an axis of three costs ten
@@ -394,13 +405,19 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
                                                   "station", "arc", "component")
     offsets = np.asarray(coef.variables["tooth"].values, int)
     nl = s.sizes["load_u"] * s.sizes["load_v"]
-    # every segment point located once, for the pairs' teeth and the loads of all torques
-    finite = _finite_points(pts)  # (J, K, S)
-    point = np.full(finite.shape, -1)
-    point[finite] = np.arange(np.count_nonzero(finite))
-    fp = locate_flank_points(coef, pts[finite], strict=False) if finite.any() else None
-    tooth_of_pair = _teeth_of_pairs(fp.tooth if fp is not None else np.empty(0, int),
-                                    np.nonzero(finite)[1], pairs)
+    # every segment point located once, for the pairs' teeth and the loads of all torques:
+    # the points of the distinct rolls alone (a roll whole mesh cycles after another has
+    # its points, bit for bit: _roll_rotations), each roll's taken from its first
+    first, roll_of = _distinct_rolls(pts)
+    finite_u = _finite_points(pts[first])  # (J', K, S)
+    point_u = np.full(finite_u.shape, -1)
+    point_u[finite_u] = np.arange(np.count_nonzero(finite_u))
+    point = point_u[roll_of]  # (J, K, S): each point's index among the located ones
+    finite = point >= 0
+    fp = locate_flank_points(coef, pts[first][finite_u], strict=False) \
+        if finite_u.any() else None
+    tooth_of_pair = _teeth_of_pairs(fp.tooth[point[finite]] if fp is not None
+                                    else np.empty(0, int), np.nonzero(finite)[1], pairs)
     f = np.nan_to_num(force)
     t, j, k, m = np.nonzero(f > 0)  # the loaded segments of every torque
     out = np.zeros((nt, nj, nk, s.sizes["station"]))
@@ -454,16 +471,20 @@ def _member_stress(coef: xr.Dataset, pts: np.ndarray, force: np.ndarray,
                 lr.append(kk * nu + r[sel])
                 lc.append(a[sel] * offsets.size + i)
                 lv.append(load[sel])
-    loads = sp.csr_matrix((np.concatenate(lv), (np.concatenate(lr), np.concatenate(lc))),
-                          shape=(nk * nu, nl * offsets.size))
+    rows_of = np.concatenate(lr)
+    # a row without loads (a pair the loads' neighbours do not reach) has no stress
+    reached, row = np.unique(rows_of, return_inverse=True)
+    # column-major: each coefficient row S[a, d] read once from memory (the 20–30 MB of
+    # a member's coefficients do not stay in the cache), the same sums in the same order
+    # as the row-major product (for each output, its loads by increasing column)
+    loads = sp.csc_matrix((np.concatenate(lv), (row, np.concatenate(lc))),
+                          shape=(reached.size, nl * offsets.size))
     # the coefficients' columns at the root points alone, component-major (the flank
     # above the fillet, whose stress the peak leaves out, is never superposed)
     lay = _root_layout(Same(coef))
-    # a row without loads (a pair the loads' neighbours do not reach) has no stress
     smax = np.broadcast_to(np.where(lay.has_root, 0.0, -np.inf),
                            (nk * nu, lay.has_root.size)).copy()
-    reached = np.flatnonzero(np.diff(loads.indptr))
-    tensor = (loads[reached] @ lay.stress).reshape(reached.size, 6, -1)  # [MPa]
+    tensor = (loads @ lay.stress).reshape(reached.size, 6, -1)  # [MPa]
     for r0 in range(0, reached.size, ROW_BLOCK):  # a block's temporaries stay in the cache
         block = slice(r0, r0 + ROW_BLOCK)
         # the largest over the sides and the fillet arc
