@@ -16,7 +16,11 @@ is shared, wall times mean little); the point's median and mean over the points.
 The stages are those of ``benchmarks/stage_clock.py`` and, nested in them, the parts
 issue 75 item 4 names: the ease-off's node placement (Newton on the exact conjugate map),
 the LTCA's curve and edge segments, the shell mapping (contact points onto the shell
-model's parameters) and the shell matrices. Target (issue 75): a point ≤ 0.12 s.
+model's parameters) and the shell matrices; the result datasets a point builds (the
+``/utca`` and ``/ltca`` Datasets, the result tree). Below the stages, the cyclic garbage
+collector's CPU per point (``gc.callbacks``; it runs inside the stages, so it is part of
+their times, not added to them), young generations and full collections apart: a full
+collection visits every tracked object of the process. Target (issue 75): a point ≤ 0.12 s.
 """
 
 from __future__ import annotations
@@ -44,11 +48,14 @@ EXTRA = (
     ("contact.ltca.segments", "edge_segments", "LTCA edge segments"),
     ("contact.compliance.mesh", "_kept_mapping", "LTCA shell mapping"),
     ("contact.compliance.mesh", "shell_matrices", "LTCA shell matrices"),
+    ("contact.utca.datasets", "utca_dataset", "UTCA dataset"),
+    ("contact.ltca.roll_loop", "ltca_dataset", "LTCA dataset"),
+    ("contact.pipeline", "_datatree", "result tree"),
 )
 
 #: the child: the points of one tree with the stage clock; prints one JSON line
 _CHILD = r"""
-import json, statistics, sys, time
+import gc, json, statistics, sys, time
 sys.path.insert(0, sys.argv[1])  # this tree's benchmarks/ (stage_clock)
 from stage_clock import StageClock
 from contact.catalogue import bundled_case_path
@@ -62,6 +69,17 @@ shared = StudyInputs(case=case, torque=(torque,))
 m = case.misalignment
 analyse_point(shared, 0, {"delta_E": m.delta_E + 0.05, "delta_P": m.delta_P - 0.03})
 clock = StageClock(tuple(map(tuple, extra))).install()
+gcs = {"young": 0.0, "oldest": 0.0, "n_oldest": 0, "t0": 0.0}
+
+def on_gc(phase, info):  # the cyclic collector's CPU, by generation (nested in the stages)
+    if phase == "start":
+        gcs["t0"] = time.process_time()
+    else:
+        key = "oldest" if info["generation"] == 2 else "young"
+        gcs[key] += time.process_time() - gcs["t0"]
+        gcs["n_oldest"] += info["generation"] == 2
+
+gc.callbacks.append(on_gc)
 cpu = []
 for i in range(n):
     f = (i - (n - 1) / 2) / max(n - 1, 1)  # -1/2 ... 1/2
@@ -72,7 +90,10 @@ for i in range(n):
     if res.status == 2:
         raise RuntimeError(f"study point {point} failed: {res.reason}")
 clock.remove()
-print(json.dumps({"cpu": cpu, "stages": {k: v / n for k, v in clock.cpu.items()}}))
+gc.callbacks.remove(on_gc)
+print(json.dumps({"cpu": cpu, "stages": {k: v / n for k, v in clock.cpu.items()},
+                  "gc": {"young": gcs["young"] / n, "oldest": gcs["oldest"] / n,
+                         "n_oldest": gcs["n_oldest"], "objects": len(gc.get_objects())}}))
 """
 
 
@@ -105,6 +126,11 @@ def main(argv: list[str] | None = None) -> None:
     rows = [[s, *(1e3 * res[n]["stages"].get(s, 0.0) for n in names)] for s in stages]
     rows.append(["point, mean", *(1e3 * statistics.mean(res[n]["cpu"]) for n in names)])
     rows.append(["point, median", *(1e3 * statistics.median(res[n]["cpu"]) for n in names)])
+    gc_rows = [["of which cyclic GC, young generations", *(1e3 * res[n]["gc"]["young"]
+                                                            for n in names)],
+               ["of which cyclic GC, full collections", *(1e3 * res[n]["gc"]["oldest"]
+                                                          for n in names)]]
+    rows += gc_rows
     if len(names) == 2:
         for r in rows:
             r.append(f"{r[2] / r[1]:.2f}" if r[1] else "")
@@ -112,6 +138,9 @@ def main(argv: list[str] | None = None) -> None:
     print(f"a study point's CPU [ms] by stage (exclusive), {args.points} points, "
           f"{TORQUE:g} N·m; target 120 ms")
     print(tabulate(rows, headers=["stage", *names], floatfmt=".1f"))
+    print("full collections in the run: " + ", ".join(
+        f"{n} {res[n]['gc']['n_oldest']} (tracked objects {res[n]['gc']['objects']})"
+        for n in names[:len(trees)]))
 
 
 if __name__ == "__main__":
