@@ -2,6 +2,8 @@
 
     python benchmarks/fe_mesh_convergence.py CASE.toml [CASE.toml ...]
         [--levels reference default face8 ...] [--cache DIR] [--flanks drive coast]
+        [--json FILE.jsonl]
+    python benchmarks/fe_mesh_convergence.py --table FILE.jsonl [...]   # the docs' table
 
 For each case and each mesh level: the FE build of both members (both flanks from one
 factorisation, ``influence_coefficients(..., other_flank=True)``, as ``ltca synthesize``
@@ -92,7 +94,7 @@ for member in ("pinion", "gear"):
                                 progress=False, other_flank=True)
     out[member] = {k: ds.attrs[f"cost_{k}"] for k in ("n_unknowns", "n_elements",
                                                          "n_loads", "time_total_s")}
-print("COST " + json.dumps(out))
+print("COST " + json.dumps(out, default=float))
 """
 
 
@@ -120,13 +122,18 @@ def main(argv: list[str] | None = None) -> None:
 
     table = levels()
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("cases", nargs="+", type=Path)
+    ap.add_argument("cases", nargs="*", type=Path)
+    ap.add_argument("--table", nargs="+", type=Path, metavar="JSONL",
+                    help="print the markdown table of earlier runs' --json files and stop")
     ap.add_argument("--cache", type=Path, default=Path("/tmp/fe_mesh_convergence"))
     ap.add_argument("--levels", nargs="+", default=list(table), choices=list(table))
     ap.add_argument("--flanks", nargs="+", default=["drive", "coast"],
                     choices=("drive", "coast"))
     ap.add_argument("--json", type=Path, help="append each case's numbers to this file")
     args = ap.parse_args(argv)
+    if args.table:
+        print(markdown_table(args.table))
+        return
     names = list(dict.fromkeys(["default", *args.levels]))
     print("levels: " + "; ".join(f"{n}: {table[n]}" for n in names), flush=True)
     worst: dict[str, float] = {n: 0.0 for n in names}
@@ -171,6 +178,49 @@ def main(argv: list[str] | None = None) -> None:
     print("\nlargest |difference to the default| over all cases, flanks, members, torques:")
     for name in names:
         print(f"  {name:16s} {worst[name]:.2%}")
+
+
+def markdown_table(paths: list[Path]) -> str:
+    """The markdown table of the records (``--json`` files): per level, each design's
+    build CPU relative to its default level's, and the peak root stress at each flank's
+    design torque (the largest) relative to the default level's, pinion/gear drive,
+    pinion/gear coast; the default level's row gives its CPU [s], peak RSS and MPa."""
+    recs: dict[str, dict] = {}
+    for path in paths:
+        for line in Path(path).read_text().splitlines():
+            r = json.loads(line)
+            old = recs.setdefault(r["case"], {"cost": {}, "peaks": {}})
+            old["cost"].update(r["cost"])
+            for fl, p in r["peaks"].items():
+                old["peaks"].setdefault(fl, {}).update(p)
+    names = list(dict.fromkeys(n for r in recs.values() for n in r["cost"]))
+    cases = list(recs)
+    out = ["| level | " + " | ".join(cases) + " |", "|---" * (len(cases) + 1) + "|"]
+    for name in names:
+        cells = []
+        for c in cases:
+            r = recs[c]
+            if name not in r["cost"]:
+                cells.append("")
+                continue
+            cpu, rss, _ = r["cost"][name]
+            d_cpu = r["cost"]["default"][0]
+            bits = []
+            for fl in ("drive", "coast"):
+                p = r["peaks"].get(fl, {})
+                if name not in p:
+                    continue
+                v, d = p[name][-1], p["default"][-1]
+                if name == "default":
+                    bits.append(f"{v[0]:.0f}/{v[1]:.0f}")
+                else:
+                    bits.append("/".join(f"{x / y - 1.0:+.1%}" for x, y in zip(v, d,
+                                                                                strict=True)))
+            head = (f"{cpu:.1f} s, {rss:.2f} GB" if name == "default"
+                    else f"CPU ×{cpu / d_cpu:.2f}")
+            cells.append(f"{head}; " + ", ".join(bits))
+        out.append(f"| {name} | " + " | ".join(cells) + " |")
+    return "\n".join(out)
 
 
 def rel_txt(x) -> str:
