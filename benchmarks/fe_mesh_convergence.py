@@ -25,10 +25,13 @@ default's divisions along the face and 1.5 times in the depth (fillet, flank, ha
 rim; the elements across the tooth follow, :func:`contact.compliance.fe.solid.mesh_layout`);
 ``reference2`` twice in both (~8 times the unknowns, > 6 GB and many minutes per member);
 ``default`` — :class:`contact.compliance.fe.FEOptions` as ``ltca run`` builds it; coarser:
-``face8``, ``face6`` (elements along the face), ``depth/1.5`` (fillet, flank, half-slot
+``face10``, ``face8``, ``face6`` (elements along the face), ``depth/1.5`` (fillet, flank, half-slot
 and rim divisions / 1.5), ``loads11`` / ``loads15`` (11 or 15 columns of unit loads along
 the face instead of 21, the 11 rows kept: the coefficients between the columns
 interpolated by the hat functions as everywhere between load points), and combinations.
+Measured 2026-11-26 on six designs: docs/fe.md, "Mesh levels on six designs" (the runs of
+a design at several times share its cache directory: a level already built is read back,
+its CPU then the read's, and ``--table`` keeps the cold build's).
 """
 
 from __future__ import annotations
@@ -74,7 +77,6 @@ def levels() -> dict:
         "face8+loads15": rep(d, face_divisions=8, load_nu=15),
         "face8+loads11": rep(d, face_divisions=8, load_nu=11),
         "face8+depth/1.5": depth(rep(d, face_divisions=8), 1 / 1.5),
-        "face9": rep(d, face_divisions=9),
         "face10": rep(d, face_divisions=10),
     }
 
