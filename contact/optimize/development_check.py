@@ -12,8 +12,11 @@ the profile (:func:`_checked_path`, :data:`PATH_STEPS`), a shorter tip relief
 and stays tolerant (:func:`_tolerant_variant`); :func:`steps_on_each` gives them to the
 other checked designs too while the best misses a target; :func:`checked_tolerance` raises
 the tip, then the root relief of a chosen design that meets every target but not the
-mounting excursions' edges (:func:`final_tolerance` reuses its excursions for the case
-written); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the verdict's
+mounting excursions' edges, and where that does not make it tolerant
+:func:`checked_tolerance_height` searches the pattern's height for a tolerant window
+(:func:`final_tolerance` reuses its excursions for the case written; where the design
+written is still not tolerant, :func:`tolerant_torque` finds the torque up to which it
+is); :func:`checked_coast_lte` gives a coast design whose LTE exceeds the verdict's
 60 µrad a longer ellipse, then a path nearer the lengthwise direction
 (:data:`COAST_LTE_STEPS`), then its TE level raised back (:func:`checked_coast_te`);
 :func:`checked_relief_lte` a drive design whose LTE still exceeds it a shallower root
