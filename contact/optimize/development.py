@@ -117,6 +117,7 @@ from contact.optimize.development_check import (
     static_capacity,
     steps_on_each,
     tolerance_checks,  # noqa: F401  (re-exported)
+    tolerant_torque,
 )
 from contact.optimize.development_coast import (  # noqa: F401
     CoastCapacity,
@@ -309,7 +310,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     The chosen design is synthesised once more with both flanks' prescriptions (the
     written case, the very design checked on either flank; the memo makes this its relief
     alone), and its drive flank is checked at the excursions ΔE = ±``offset_tolerance``,
-    ΔP = ±``mounting_tolerance``.
+    ΔP = ±``mounting_tolerance``; where its edges fail there, the torque up to which they
+    hold is found and stated (:func:`~contact.optimize.development_check.tolerant_torque`),
+    the design torque kept.
 
     Sources: the varied inputs are the prescriptions of Litvin's local synthesis at the
     mean point (Litvin & Fuentes 2004, §9.4–9.5;
@@ -399,7 +402,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     # the chosen design at the mounting excursions; its relief raised where their edges
     # take more than the design torque's share (the search stops at the first design
     # meeting every target, whose edge share may be just within it)
-    best = checked_tolerance(best, targets, setup, teeth, say, placed)
+    best = checked_tolerance(best, targets, setup, teeth, say, placed,
+                             slope=evaluate.slopes.get(bearing_key(best.values)))
     developed = with_flank_options(basic, flank, best.values)
     # the coast flank, after the drive flank is chosen (which it does not change): checked
     # at the default sampling as synthesised, developed where it misses a target
@@ -494,6 +498,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                                 False, say)
     coast_seconds += time.process_time() - c_cap
     tolerance = final_tolerance(case, targets, setup, teeth, best.values)
+    # not tolerant at the design torque: the torque up to which it is, stated (the design
+    # torque is not cut for it)
+    upto = tolerant_torque(case, targets, setup, teeth, best.values, tolerance)
     result = DevelopmentResult(developed, case, report, best, tuple(evals),
                                tuple(setup["torques"]), setup["source"], tolerance, targets,
                                time.process_time() - t0,
@@ -508,7 +515,8 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                else math.nan,
                                coast_cap.reason if coast_cap is not None else "",
                                lte_reach=setup.get("lte_reach", {}).get(
-                                   tuple(float(t) for t in setup["torques"])))
+                                   tuple(float(t) for t in setup["torques"])),
+                               tolerant_torque=upto)
     say(result.headline())
     return result
 

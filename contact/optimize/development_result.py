@@ -163,6 +163,12 @@ class DevelopmentResult:
         (:func:`contact.optimize.development_check.checked_crowning_lte`): ``"light"``,
         ``"design"`` [µrad], ``"what"`` it is (its change, or "the design written"),
         ``"why"`` not kept (empty where kept); None where the step did not run.
+    tolerant_torque : (float, float) — [N·m]
+        Where the design is not tolerant at its design torque on the edges: the largest
+        torque found at which every mounting excursion's edges hold and the least at which
+        one does not (:func:`contact.optimize.development_check.tolerant_torque`); NaN
+        where not found (tolerant, a clearance missed, or the edges failing at the light
+        torque: then the second is the light torque).
     """
 
     basic: BasicDesign
@@ -192,6 +198,7 @@ class DevelopmentResult:
     coast_capacity_text: str = ""
     gear_process_text: str = ""
     lte_reach: dict | None = None
+    tolerant_torque: tuple[float, float] = (math.nan, math.nan)
 
     @property
     def tolerant(self) -> bool:
@@ -241,7 +248,8 @@ class DevelopmentResult:
             f"{m['pressure_max_flank'][1]:.0f} MPa (light/design); {self._met_text()}. "
             f"Tolerance (dE = +/-{t.offset_tolerance:g} mm, dP = +/-"
             f"{t.mounting_tolerance:g} mm): {tol}"
-            f" ({'tolerant' if self.tolerant else 'not tolerant'}). "
+            f" ({'tolerant' if self.tolerant else 'not tolerant'}"
+            f"{self._tolerant_torque_text()}). "
             + self._coast_text().rstrip()
             + (f" {self.gear_process_text}" if self.gear_process_text else ""))
 
@@ -278,7 +286,21 @@ class DevelopmentResult:
             parts.append(f"{lab}: " + ", ".join(
                 _missed(k, ms, self.targets, self.centre_v, self.pressure_limit)
                 for k in missed))
-        return f" ({'; '.join(parts)})" if parts else ""
+        return (f" ({'; '.join(parts)})" if parts else "") + self._tolerant_torque_text()
+
+    def _tolerant_torque_text(self) -> str:
+        """Where the design is not tolerant on its edges at the design torque, the torque
+        up to which it is (:attr:`tolerant_torque`), the design torque said kept; "" where
+        not found."""
+        holds, fails = self.tolerant_torque
+        t = self.targets
+        at = f"at dE/dP +/-{t.offset_tolerance:g}/{t.mounting_tolerance:g} mm"
+        if math.isfinite(holds):
+            return (f"; tolerant up to {holds:.4g} N m {at} (not at {fails:.4g} N m; the "
+                    f"design torque {self.torque[1]:.4g} N m kept)")
+        if math.isfinite(fails):
+            return f"; not tolerant {at} at the light torque {fails:.4g} N m either"
+        return ""
 
     def _root_headline(self) -> str:
         if not math.isfinite(self.root_safety):
@@ -449,6 +471,8 @@ class DevelopmentResult:
             "prescriptions": {k: float(v) for k, v in b.values.items()},
             "targets_met": int(b.full[2]),
             "tolerant": int(self.tolerant),
+            **({"tolerant_up_to_Nm": float(self.tolerant_torque[0])}
+               if math.isfinite(self.tolerant_torque[0]) else {}),
             "evaluations": len(self.evaluations),
             "cpu_seconds": round(self.seconds, 1),
             "cpu_seconds_stages": {k: round(v, 1) for k, v in self.stage_seconds.items()},
