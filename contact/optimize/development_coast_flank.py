@@ -28,6 +28,7 @@ import numpy as np
 from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_check import (
     checked_best,
+    checked_centre_u,
     checked_coast_lte,
     checked_long,
 )
@@ -292,6 +293,10 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
 
         best = checked_best(evals, targets, setup, teeth, say, placed, side="coast",
                             key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
+        # a pattern off its centre along the face: the coast flank's own M placed off the
+        # mean cone distance (the drive flank's M stays where it is)
+        best = checked_centre_u(best, targets, setup, teeth, say, placed, flank="coast",
+                                key_prefix=prefix)
         # an LTE above the verdict's limit: the ellipse longer, the path turned lengthwise
         best = checked_coast_lte(best, targets, setup, teeth, say, placed,
                                  key_prefix=prefix, level=start.get(TE_NAME))
