@@ -463,3 +463,64 @@ def test_the_coast_flank_gets_its_own_m_placed_without_the_drive_tolerance(monke
     assert dcheck.checked_centre_u(start, targets, setup, None, lines.append,
                                    lambda v: dict(v), flank="coast") is start
     assert any("not kept: M's place misses pressure" in x for x in lines)
+
+
+#: the unseen hypoid 6x45's coast flank as written (tip relief 51 µm from 0.556, root
+#: relief 56 µm from 0.31, ellipse 0.4)
+COAST_6X45 = {"path_angle": -45.0, "ellipse_length": 0.4, "tip_relief": 51.04,
+              "root_relief": 55.88, "relief_start": 0.3088, "tip_relief_start": 0.556}
+
+
+def test_a_coast_peak_that_set_the_coast_torque_gets_a_lighter_tip_relief(monkeypatch):
+    """checked_coast_peak: the 6x45's coast flank, whose peak 1588 MPa at the drive's
+    76.4 N m set its coast design torque (S_H,loc 0.87), gets its tip relief halved (51 →
+    25.5 µm: 1474 MPa) and started 0.2 later (0.556 → 0.756: 1469 MPa), each analysed on
+    the coast flank at the light torque and 76.4 N m (stand-ins after ``benchmarks/
+    development_levers.py --flank coast --from-case --check``, 2026-11-26); the lower
+    peak kept. A step that loses a target met (the tip clearance) or whose LTE exceeds
+    the bound is not kept; a drop under COAST_PEAK_GAIN is none; no tip relief, nothing
+    analysed."""
+    from contact.optimize import development_check as dcheck
+
+    seen = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        seen.append((flank, tuple(torques), round(case["tip_relief"], 4),
+                     round(case["tip_relief_start"], 4)))
+        p = 1588.0
+        if case["tip_relief"] < 40.0:
+            p = 1474.0
+        elif case["tip_relief_start"] > 0.7:
+            p = 1469.0
+        return (_coast_metrics(pressure_max_flank=[800.0, p], lte_peak_to_peak=[20.0, 22.0]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    targets, setup, chosen = stand_in(monkeypatch, fake, [11.4, 76.4])
+    start = chosen(dict(COAST_6X45))
+    met = {k for k, v in start.full[1].items() if v == 0.0}
+    seen.clear()
+    lines = []
+    got = dcheck.checked_coast_peak(start, targets, setup, None, lines.append,
+                                    lambda v: dict(v), peak=1588.0, met=met, lte=60.0)
+    assert seen == [("coast", (11.4, 76.4), 25.52, 0.556), ("coast", (11.4, 76.4), 51.04,
+                                                            0.756)]
+    assert got.values == COAST_6X45 | {"tip_relief_start": pytest.approx(0.756)}
+    assert float(got.metrics["pressure_max_flank"][-1]) == 1469.0
+    # a drop under COAST_PEAK_GAIN: none kept
+    assert dcheck.checked_coast_peak(start, targets, setup, None, [].append,
+                                     lambda v: dict(v), peak=1500.0, met=met,
+                                     lte=60.0) is None
+    # the LTE above the bound: not kept, said
+    lines.clear()
+    assert dcheck.checked_coast_peak(start, targets, setup, None, lines.append,
+                                     lambda v: dict(v), peak=1588.0, met=met,
+                                     lte=21.0) is None
+    assert any("LTE (above 21 urad)" in x for x in lines)
+    # no tip relief: nothing analysed
+    seen.clear()
+    none = _coast_design(COAST_6X45 | {"tip_relief": 0.0}, start.metrics, targets)
+    assert dcheck.checked_coast_peak(none, targets, setup, None, [].append,
+                                     lambda v: dict(v), peak=1588.0, met=met,
+                                     lte=60.0) is None
+    assert seen == []

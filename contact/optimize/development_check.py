@@ -1286,6 +1286,75 @@ def checked_coast_relief(best: DevelopmentEvaluation, targets: DevelopmentTarget
     return best
 
 
+#: the coast capacity step's lighter tip reliefs (:func:`checked_coast_peak`), each a
+#: change [file units] of the written coast design: the tip relief halved, then started
+#: 0.2 later (towards the tip), each within its variable's bounds
+COAST_PEAK_STEPS = (("tip_relief", 0.5), ("tip_relief_start", 0.2))
+#: least relative drop of the coast flank's peak pressure at the torque its capacity
+#: search started at for :func:`checked_coast_peak` to keep a step [1]: the local pitting
+#: safety is inversely proportional to it, and a drop below a node's worth of the
+#: LTCA's pressure is not a capacity gained
+COAST_PEAK_GAIN = 0.03
+
+
+def checked_coast_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                       say: Callable[[str], None],
+                       placed: Callable[[Mapping[str, float]], Case], *, peak: float,
+                       met: set[str], lte: float, key_prefix: tuple = ()
+                       ) -> DevelopmentEvaluation | None:
+    """The coast flank's lighter tip relief where its peak pressure set its design torque:
+    the written coast design ``best`` with each step of :data:`COAST_PEAK_STEPS` (the tip
+    relief halved; started 0.2 later), placed (step 7 only: no new local synthesis) and
+    checked at :data:`CHECK_LTCA` on the coast flank at ``setup["torques"]`` (the light
+    torque and the torque the coast capacity search started at). A step is kept where its
+    flank peak pressure at that torque is at least :data:`COAST_PEAK_GAIN` below
+    ``peak`` [MPa] (the capacity search's there) and below the steps' before, it meets
+    every target in ``met`` (those the written design meets at its own torques) and its LTE
+    p-p is within ``lte`` [µrad] at both torques. Returns the design of least peak kept,
+    None where none is (nothing analysed where the design has no tip relief).
+
+    Why: the coast flank's relief stage sets its tip relief against the edges at the
+    torque it is developed at, and a deep relief from half-way narrows the profile band
+    that carries the load: the coast design torque, which its local pitting safety then
+    sets, falls with it. Measured on the unseen hypoid 6x45 (a 44 mm; benchmarks/data/
+    unseen_designs), its coast flank as written at 11.4 / 76.4 N m (the drive's design
+    torque; tip relief 51 µm from 0.556, root relief 56 µm from 0.31, ellipse 0.4;
+    ``benchmarks/development_levers.py --flank coast --from-case --check``, 2026-11-26):
+    flank peak 1588 MPa (S_H,loc 0.87: coast design torque 41.8 N m, 55 % of the drive's);
+    tip relief 25.5 µm: 1474 MPa; from 0.75: 1469 MPa; each with every target met, no
+    edge, LTE 20 / 22 µrad; the root relief halved or started earlier left it at 1584-1591
+    MPa."""
+    if (best.full is None or not float(best.values.get("tip_relief", 0.0)) > 0.0
+            or not math.isfinite(peak)):
+        return None
+    chosen, least = None, (1.0 - COAST_PEAK_GAIN) * float(peak)
+    for name, step in COAST_PEAK_STEPS:
+        if name not in targets.variables or name not in best.values:
+            continue
+        lo, hi = (float(x) for x in targets.variables[name])
+        now = float(best.values[name])
+        x = float(np.clip(now * step if name == "tip_relief" else now + step, lo, hi))
+        if abs(x - now) < 1e-9:
+            continue
+        e = _said_variant(best, dict(best.values) | {name: x}, "coast capacity",
+                          f"with {name} {x:.3g} (its peak {peak:.0f} MPa set the coast "
+                          "design torque)", targets, setup, teeth, say, placed,
+                          flank="coast", key_prefix=key_prefix)
+        if e is None:
+            continue
+        p = float(e.metrics["pressure_max_flank"][-1])
+        lost = sorted(k for k in met if e.full[1].get(k, 0.0) > 0.0)
+        loud = not np.nanmax(e.metrics["lte_peak_to_peak"]) <= lte
+        if lost or loud:
+            say(f"  not kept: the {name} step misses "
+                + ", ".join(lost + ([f"LTE (above {lte:.0f} urad)"] if loud else [])))
+            continue
+        if p < least:
+            chosen, least = e, p
+    return chosen
+
+
 def _coast_step_values(values: Mapping[str, float], targets: DevelopmentTargets,
                        changes: tuple[tuple[str, float], ...]) -> dict[str, float] | None:
     """A coast LTE step's prescriptions: ``values`` with each of ``changes`` (name, step
