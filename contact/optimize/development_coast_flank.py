@@ -9,7 +9,8 @@ on the coast flank's own prescriptions (:data:`COAST_BEARING_DESIGNS` bearings, 
 coast`` does (:func:`_as_run`) and :func:`coast_flank_capacity` lowers its design torque to
 what it carries (:func:`contact.optimize.development_coast.coast_capacity`);
 :func:`coast_at_its_torque` develops it again where that fell below
-:data:`COAST_REDEVELOP` of the torque it was developed at. Split out of
+:data:`COAST_REDEVELOP` of the torque it was developed at; :func:`coast_peak_relief` gives
+it a lighter tip relief where its peak pressure set its design torque. Split out of
 :mod:`contact.optimize.development` (issue 71), which re-exports every public
 name.
 """
