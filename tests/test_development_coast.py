@@ -346,3 +346,181 @@ def test_the_coast_lte_steps_run_again_at_a_lowered_coast_torque_only_above_the_
     # no step kept: None
     monkeypatch.setattr(dcoast, "checked_coast_lte", lambda best, *a, **k: best)
     assert run() is None
+
+
+#: the unseen face-hobbed spiral bevel 9x33's coast flank as written (15.4 / 79.9 N m):
+#: path −45°, ellipse 0.75, root relief 40 µm from 0.2, tip relief 15 µm from 0.85
+COAST_9X33 = {"path_angle": -45.0, "ellipse_length": 0.75, "tip_relief": 15.0,
+              "root_relief": 40.0, "relief_start": 0.2, "tip_relief_start": 0.85,
+              "te_level": 45.0}
+
+
+def _relief_fake(seen):
+    """Stand-in coast analyses after the 9x33's coast flank (``benchmarks/
+    development_levers.py --flank coast --from-case --check`` at 15.4 / 79.9 N m,
+    2026-11-26): root relief 40 µm LTE 29.0 / 63.9 µrad, 1369 MPa; 20 µm 25.3 / 59.7,
+    1272 MPa; 13.3 µm 25.6 / 56.6, 1230 MPa with the centre v 0.64 off its band."""
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        seen.append((flank, round(case["root_relief"], 6), misalignment is not None))
+        r = case["root_relief"]
+        if r > 30.0:
+            m = {"lte_peak_to_peak": [29.0, 63.9], "pressure_max_flank": [700.0, 1369.0]}
+        elif r > 15.0:
+            m = {"lte_peak_to_peak": [25.3, 59.7], "pressure_max_flank": [680.0, 1272.0]}
+        else:
+            m = {"lte_peak_to_peak": [25.6, 56.6], "pressure_max_flank": [670.0, 1230.0],
+                 "pattern_centre_v": [0.7, 0.7]}
+        return _coast_metrics(**m), (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    return fake
+
+
+def test_a_coast_lte_above_the_limit_gets_a_shallower_root_relief(monkeypatch):
+    """checked_coast_relief: the coast flank's root relief halved (40 → 20 µm, its start
+    kept) where its LTE p-p exceeds 60 µrad at a torque, analysed on the coast flank at
+    the check (no mounting excursion: the tolerance is the drive flank's) and kept for its
+    better score, no target lost and a lower peak: 59.7 µrad, within the limit, so the
+    third (13.3 µm, which would lose the centre v) is not tried. A design within the
+    limit, or without root relief, is returned without an analysis."""
+    from contact.optimize import development_check as dcheck
+
+    seen = []
+    targets, setup, chosen = stand_in(monkeypatch, _relief_fake(seen), [15.4, 79.9])
+    start = chosen(dict(COAST_9X33))
+    seen.clear()
+    lines = []
+    got = dcheck.checked_coast_relief(start, targets, setup, None, lines.append,
+                                      lambda v: dict(v), key_prefix=("drive",))
+    assert seen == [("coast", 20.0, False)]
+    assert got.values == COAST_9X33 | {"root_relief": 20.0}
+    assert list(got.metrics["lte_peak_to_peak"]) == [25.3, 59.7]
+    assert "root_relief 20 um" in lines[-1]
+    # within the limit, or no root relief: nothing analysed
+    seen.clear()
+    assert dcheck.checked_coast_relief(got, targets, setup, None, [].append,
+                                       lambda v: dict(v)) is got
+    none = _coast_design(COAST_9X33 | {"root_relief": 0.0}, start.metrics, targets)
+    assert dcheck.checked_coast_relief(none, targets, setup, None, [].append,
+                                       lambda v: dict(v)) is none
+    assert seen == []
+    # a step that gives up a met target is not kept: with the half not better, the
+    # third's centre v off its band refuses it too
+    seen.clear()
+    worse = _coast_design(COAST_9X33, _coast_metrics(lte_peak_to_peak=[29.0, 63.9],
+                                                     pressure_max_flank=[700.0, 1200.0]),
+                          targets)
+    lines.clear()
+    assert dcheck.checked_coast_relief(worse, targets, setup, None, lines.append,
+                                       lambda v: dict(v)) is worse
+    assert [s[1] for s in seen] == [20.0, pytest.approx(40.0 / 3.0)]
+    assert any("pressure (1272 MPa above 1200)" in x for x in lines)
+    assert any("misses centre_v" in x for x in lines)
+
+
+def test_the_coast_flank_gets_its_own_m_placed_without_the_drive_tolerance(monkeypatch):
+    """checked_centre_u on the coast flank (``flank="coast"``): the bundled 11x41's coast
+    pattern at the toe (light-load centre u 0.33, target 0.45 ± 0.08; ``ltca synthesize``
+    2026-11-26) gets the coast flank's M placed towards the heel, the design analysed on
+    the coast flank under the kept pinion tooth's coast key, no mounting excursion asked
+    (the tolerance is the drive flank's), kept where it centres the pattern with no
+    higher peak; refused where its peak at the design torque rises above the design's
+    (the coast design torque, set afterwards by the flank's capacity, not given up)."""
+    from contact.optimize import development_check as dcheck
+
+    def make(rise):
+        seen = []
+
+        def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+                 flank="drive"):
+            x = case.get("mean_point_shift", 0.0)
+            seen.append((flank, round(x, 4), misalignment is not None, pinion_key[:1]))
+            return (_coast_metrics(pattern_centre_u=[0.33 + 0.97 * x, 0.4],
+                                   pattern_toe_u=[0.08 + x, 0.1],
+                                   pattern_heel_u=[0.58 + x, 0.8],
+                                   pressure_max_flank=[800.0, 1500.0 + rise * x]),
+                    (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+        return seen, fake
+
+    seen, fake = make(-400.0)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [61.9, 128.2])
+    start = chosen({"path_angle": -55.0, "ellipse_length": 0.4})
+    assert [k for k, v in start.full[1].items() if v > 0] == ["centre_u"]
+    seen.clear()
+    lines = []
+    got = dcheck.checked_centre_u(start, targets, setup, None, lines.append,
+                                  lambda v: dict(v), flank="coast", key_prefix=("drive",))
+    assert got.met and got.stage == "centre u" and got.values["mean_point_shift"] > 0.0
+    assert seen and all(s[0] == "coast" and not s[2] and s[3] == ("drive",) for s in seen)
+    assert "coast design" in lines[0] and "towards the heel" in lines[0]
+    # the peak rising with M: not kept
+    seen, fake = make(400.0)
+    targets, setup, chosen = stand_in(monkeypatch, fake, [61.9, 128.2])
+    start = chosen({"path_angle": -55.0, "ellipse_length": 0.4})
+    lines.clear()
+    assert dcheck.checked_centre_u(start, targets, setup, None, lines.append,
+                                   lambda v: dict(v), flank="coast") is start
+    assert any("not kept: M's place misses pressure" in x for x in lines)
+
+
+#: the unseen hypoid 6x45's coast flank as written (tip relief 51 µm from 0.556, root
+#: relief 56 µm from 0.31, ellipse 0.4)
+COAST_6X45 = {"path_angle": -45.0, "ellipse_length": 0.4, "tip_relief": 51.04,
+              "root_relief": 55.88, "relief_start": 0.3088, "tip_relief_start": 0.556}
+
+
+def test_a_coast_peak_that_set_the_coast_torque_gets_a_lighter_tip_relief(monkeypatch):
+    """checked_coast_peak: the 6x45's coast flank, whose peak 1588 MPa at the drive's
+    76.4 N m set its coast design torque (S_H,loc 0.87), gets its tip relief halved (51 →
+    25.5 µm: 1474 MPa) and started 0.2 later (0.556 → 0.756: 1469 MPa), each analysed on
+    the coast flank at the light torque and 76.4 N m (stand-ins after ``benchmarks/
+    development_levers.py --flank coast --from-case --check``, 2026-11-26); the lower
+    peak kept. A step that loses a target met (the tip clearance) or whose LTE exceeds
+    the bound is not kept; a drop under COAST_PEAK_GAIN is none; no tip relief, nothing
+    analysed."""
+    from contact.optimize import development_check as dcheck
+
+    seen = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        seen.append((flank, tuple(torques), round(case["tip_relief"], 4),
+                     round(case["tip_relief_start"], 4)))
+        p = 1588.0
+        if case["tip_relief"] < 40.0:
+            p = 1474.0
+        elif case["tip_relief_start"] > 0.7:
+            p = 1469.0
+        return (_coast_metrics(pressure_max_flank=[800.0, p], lte_peak_to_peak=[20.0, 22.0]),
+                (0.0, 1.0, 0.0, 1.0, 2400.0))
+
+    targets, setup, chosen = stand_in(monkeypatch, fake, [11.4, 76.4])
+    start = chosen(dict(COAST_6X45))
+    met = {k for k, v in start.full[1].items() if v == 0.0}
+    seen.clear()
+    lines = []
+    got = dcheck.checked_coast_peak(start, targets, setup, None, lines.append,
+                                    lambda v: dict(v), peak=1588.0, met=met, lte=60.0)
+    assert seen == [("coast", (11.4, 76.4), 25.52, 0.556), ("coast", (11.4, 76.4), 51.04,
+                                                            0.756)]
+    assert got.values == COAST_6X45 | {"tip_relief_start": pytest.approx(0.756)}
+    assert float(got.metrics["pressure_max_flank"][-1]) == 1469.0
+    # a drop under COAST_PEAK_GAIN: none kept
+    assert dcheck.checked_coast_peak(start, targets, setup, None, [].append,
+                                     lambda v: dict(v), peak=1500.0, met=met,
+                                     lte=60.0) is None
+    # the LTE above the bound: not kept, said
+    lines.clear()
+    assert dcheck.checked_coast_peak(start, targets, setup, None, lines.append,
+                                     lambda v: dict(v), peak=1588.0, met=met,
+                                     lte=21.0) is None
+    assert any("LTE (above 21 urad)" in x for x in lines)
+    # no tip relief: nothing analysed
+    seen.clear()
+    none = _coast_design(COAST_6X45 | {"tip_relief": 0.0}, start.metrics, targets)
+    assert dcheck.checked_coast_peak(none, targets, setup, None, [].append,
+                                     lambda v: dict(v), peak=1588.0, met=met,
+                                     lte=60.0) is None
+    assert seen == []

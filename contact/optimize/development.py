@@ -483,7 +483,33 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                 f"{first.reason}; the coast flank developed again at {first.torque:.4g} N m"
                 + (f", then {second.reason}" if second.lowered else ", where it holds"),
                 second.holds)
-        else:  # the coast LTE steps again where its torque was lowered after them
+        else:
+            # a lighter coast tip relief where the flank's peak set its design torque:
+            # written and its capacity searched again, kept where that is higher
+            relieved = coast_flank.coast_peak_relief(developed, best, targets, setup, teeth,
+                                                     memo, say, coast, coast_cap)
+            if relieved is not None:
+                held = (coast, developed, case, report)
+                coast, developed = relieved, relieved.basic
+                case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
+                _both_flanks_built(case, root_stress, built, say)
+                coast, again_cap = coast_flank_capacity(case, basic, coast, targets, setup,
+                                                        coast_cap.start, root_stress,
+                                                        not (given or given_coast), say)
+                if (again_cap is not None and again_cap.holds
+                        and again_cap.torque > coast_cap.torque):
+                    say(f"development: coast design torque {coast_cap.torque:.4g} -> "
+                        f"{again_cap.torque:.4g} N m with the lighter tip relief")
+                    coast_cap = CoastCapacity(
+                        again_cap.torque, coast_cap.start, coast_cap.checks + again_cap.checks,
+                        f"{again_cap.reason or 'it holds there'} (the coast tip relief "
+                        f"made lighter: {coast_cap.torque:.4g} N m before)", True)
+                else:
+                    say("development: the lighter coast tip relief carries no more; the "
+                        "coast design kept")
+                    coast, developed, case, report = held
+                    _both_flanks_built(case, root_stress, built, say)
+            # the coast LTE steps again where its torque was lowered after them
             side = "convex" if developed.options.drive_flank == "concave" else "concave"
             level = flank_option_values(pre_coast.options.flank(side)).get(TE_NAME)
             lte = coast_flank.coast_lte_at_its_torques(

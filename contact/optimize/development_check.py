@@ -785,7 +785,9 @@ def centre_u_of(e: DevelopmentEvaluation) -> float:
 def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                      setup: Mapping[str, Any], teeth: KeptTeeth | None,
                      say: Callable[[str], None],
-                     placed: Callable[[Mapping[str, float]], Case]) -> DevelopmentEvaluation:
+                     placed: Callable[[Mapping[str, float]], Case], *,
+                     flank: str = "drive", key_prefix: tuple | None = None
+                     ) -> DevelopmentEvaluation:
     """The pattern's centre along the face by the mean point's place: where the chosen
     design misses its light-load centre u at the check, M placed off the mean cone
     distance (:data:`SHIFT_NAME`, within ``targets.variables``' bounds where given, else
@@ -797,7 +799,9 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     :func:`kept_why` (better — it ranks before the design, or it meets more targets, as
     :func:`checked_near_miss` counts them: the objective's LTE terms may prefer a pattern
     off its centre to one a few µrad louder — no met target lost but the centre v,
-    tolerant). The centre
+    tolerant). ``flank``: the flank analysed (``"coast"``: the coast flank's own M,
+    :func:`_coast_centre_kept`'s rule; ``key_prefix`` its kept pinion tooth's key before
+    the design's bearing, as :func:`checked_coast_lte`'s). The centre
     v may be lost: M is centred in roll within the working depth at its new cone
     distance, which moves the pattern's height a little, and the height steps after this
     one (:func:`_checked_tip`, :func:`_checked_root`, :func:`checked_near_miss`) take a
@@ -848,14 +852,18 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           f"with M placed {x:+.3g} of the face off the mean cone distance "
                           f"(towards the {side}: its centre u {u0:.2f} off "
                           f"{targets.pattern_centre_u:g} ± {targets.centre_tolerance:g})",
-                          targets, setup, teeth, say, placed)
+                          targets, setup, teeth, say, placed, flank=flank,
+                          key_prefix=key_prefix)
         if e is None:
             break
         u = centre_u_of(e)
-        why = kept_why(best, e, targets, setup, teeth, say, "M's place",
-                       lost=_lost_but_depth,
-                       better=lambda b, x: _ranks_better(b, x)
-                       or _met_count(x) > _met_count(b))
+        if flank == "drive":
+            why = kept_why(best, e, targets, setup, teeth, say, "M's place",
+                           lost=_lost_but_depth,
+                           better=lambda b, x: _ranks_better(b, x)
+                           or _met_count(x) > _met_count(b))
+        else:
+            why = _coast_centre_kept(best, e, targets, say)
         if not why:
             best, kept = e, (x, u)
             if e.full[1]["centre_u"] == 0.0:
@@ -878,6 +886,45 @@ def checked_centre_u(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         s = (ub - ua) / (xb - xa)  # the slope measured: the next design a secant
         x = float(np.clip(xb - (ub - aim) / s, lo, hi))
     return best
+
+
+def _coast_centre_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation | None,
+                       targets: DevelopmentTargets, say: Callable[[str], None]) -> str:
+    """:func:`checked_centre_u`'s keep rule on the coast flank: why ``e`` does not replace
+    ``best``, empty where it does. Kept where it is better (it ranks before ``best`` or
+    meets more targets, as on the drive flank), gives up no target ``best`` met
+    (:func:`_lost_targets`: no height step follows on the coast flank to re-centre the
+    depth) and its flank peak pressure at the design torque is no higher than ``best``'s
+    or within the targets' ``max_flank_pressure`` (:func:`_pressure_raised`: the coast
+    design torque, set afterwards by the coast flank's capacity, is not given up for it).
+    No mounting excursion is analysed (the development's tolerance is the drive
+    flank's)."""
+    if e is None:
+        return "it could not be analysed"
+    if not (_ranks_better(best, e) or _met_count(e) > _met_count(best)):
+        return "it scores no better"
+    lost = _lost_targets(best, e)
+    raised = _pressure_raised(best, e, targets)
+    if raised:
+        lost.append(raised)
+    if lost:
+        say(f"  not kept: M's place misses {', '.join(lost)}")
+        return f"it misses {', '.join(lost)}"
+    return ""
+
+
+def _pressure_raised(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
+                     targets: DevelopmentTargets) -> str:
+    """``"pressure (<p> MPa above <bound>)"`` where ``e``'s flank peak pressure at the
+    design torque exceeds both ``best``'s and the targets' ``max_flank_pressure``, else
+    empty (:func:`_coast_kept`, :func:`_coast_centre_kept`)."""
+    p_new = float(e.metrics["pressure_max_flank"][-1])
+    p_old = float(best.metrics["pressure_max_flank"][-1])
+    bound = (float(targets.max_flank_pressure) if targets.max_flank_pressure is not None
+             else -math.inf)
+    if not p_new <= max(p_old, bound):
+        return f"pressure ({p_new:.0f} MPa above {max(p_old, bound):.0f})"
+    return ""
 
 
 #: the profile crowning of :func:`checked_crowning_lte`'s designs, as fractions of the
@@ -1141,7 +1188,8 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     is returned as it is, without an analysis. ``key_prefix``: the kept pinion tooth's key
     before the design's bearing (:func:`checked_best`). Last, where the LTE still exceeds
     the limit at the design torque, the TE level raised back towards ``level`` (the coast
-    flank's own ``te_level`` [µrad]; :func:`checked_coast_te`).
+    flank's own ``te_level`` [µrad]; :func:`checked_coast_te`); then, where it exceeds
+    the limit at a torque, a shallower root relief (:func:`checked_coast_relief`).
 
     Why: the coast flank's search has three bearings (the initial simplex of path angle
     and ellipse, :data:`~contact.optimize.development_coast_flank.COAST_BEARING_DESIGNS`)
@@ -1186,8 +1234,132 @@ def checked_coast_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             continue
         if _coast_kept(best, e, targets, name, say):
             best = e
-    return checked_coast_te(best, targets, setup, teeth, say, placed, key_prefix=key_prefix,
+    best = checked_coast_te(best, targets, setup, teeth, say, placed, key_prefix=key_prefix,
                             limit=limit, level=level)
+    return checked_coast_relief(best, targets, setup, teeth, say, placed,
+                                key_prefix=key_prefix, limit=limit)
+
+
+def checked_coast_relief(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                         setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                         say: Callable[[str], None],
+                         placed: Callable[[Mapping[str, float]], Case], *,
+                         key_prefix: tuple = (), limit: float = 60.0
+                         ) -> DevelopmentEvaluation:
+    """The coast check's shallower root relief, after its other LTE steps
+    (:func:`checked_coast_lte`): a coast design whose LTE p-p still exceeds ``limit``
+    [µrad] at a torque gets its root relief × :data:`RELIEF_LTE_FRACTIONS` in turn (within
+    its bounds, its start kept: step 7 only, no new local synthesis), each placed and
+    checked at :data:`CHECK_LTCA` on the coast flank and kept on the rule of the coast
+    LTE steps (:func:`_coast_kept`: it scores better, misses no target the design met but
+    the pattern length, and its flank peak pressure at the design torque is no higher than
+    the design's or within the targets' ``max_flank_pressure``); the first kept within
+    ``limit`` at every torque ends it. A design within ``limit`` or without a root relief
+    is returned as it is, without an analysis.
+
+    Why: the drive flank's :func:`checked_relief_lte` for the coast flank. The coast
+    flank's search sets its root relief against the edges and the pattern's height at the
+    torque it is developed at, and a relief deeper than the teeth deflect keeps the loaded
+    contact ratio below what the geometry gives (Stadtfeld, *Gleason Bevel Gear
+    Technology*, 2014: the relief sized to the load's deflection). Measured on the unseen
+    face-hobbed spiral bevel 9x33 (Method 1; benchmarks/data/unseen_designs), its coast
+    flank as written at 15.4 / 79.9 N m (path −45°, ellipse 0.75, root relief 40 µm from
+    0.2, tip relief 15 µm from 0.85, te_level 45; ``benchmarks/development_levers.py
+    --flank coast --from-case --check``, 2026-11-26): LTE p-p 29.0 / 63.9 µrad, flank peak
+    1369 MPa, objective 6.92; root relief 20 µm: 25.3 / 59.7 µrad, 1272 MPa, 5.03, no
+    target lost; 13.3 µm: 25.6 / 56.6 µrad, 1230 MPa, but the centre v 0.64 off its band;
+    none: 32 / 47 µrad with 1.6 % on the edges and 2482 MPa. The path (−35°: 26 / 61,
+    1555 MPa), M's place (±0.05 of the face: 30 / 70, 27 / 63) and the profile crowning
+    (5 µm: 41 / 68) did less."""
+    name = "root_relief"
+    if (name not in targets.variables or name not in best.values
+            or not float(best.values[name]) > 0.0):
+        return best
+    lo, hi = (float(x) for x in targets.variables[name])
+    now = float(best.values[name])
+    for fraction in RELIEF_LTE_FRACTIONS:
+        if (best.full is None or not best.checked
+                or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
+            return best
+        x = float(np.clip(fraction * now, lo, hi))
+        if abs(x - float(best.values[name])) < 1e-9:
+            continue
+        values = dict(best.values) | {name: x}
+        e = _said_variant(best, values, "coast lte",
+                          f"with {name} {x:.3g} um (its LTE above {limit:g} urad)", targets,
+                          setup, teeth, say, placed, flank="coast", key_prefix=key_prefix)
+        if e is not None and _coast_kept(best, e, targets, "shallower root relief", say):
+            best = e
+    return best
+
+
+#: the coast capacity step's lighter tip reliefs (:func:`checked_coast_peak`), each a
+#: change [file units] of the written coast design: the tip relief halved, then started
+#: 0.2 later (towards the tip), each within its variable's bounds
+COAST_PEAK_STEPS = (("tip_relief", 0.5), ("tip_relief_start", 0.2))
+#: least relative drop of the coast flank's peak pressure at the torque its capacity
+#: search started at for :func:`checked_coast_peak` to keep a step [1]: the local pitting
+#: safety is inversely proportional to it, and a drop below a node's worth of the
+#: LTCA's pressure is not a capacity gained
+COAST_PEAK_GAIN = 0.03
+
+
+def checked_coast_peak(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                       setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                       say: Callable[[str], None],
+                       placed: Callable[[Mapping[str, float]], Case], *, peak: float,
+                       met: set[str], lte: float, key_prefix: tuple = ()
+                       ) -> DevelopmentEvaluation | None:
+    """The coast flank's lighter tip relief where its peak pressure set its design torque:
+    the written coast design ``best`` with each step of :data:`COAST_PEAK_STEPS` (the tip
+    relief halved; started 0.2 later), placed (step 7 only: no new local synthesis) and
+    checked at :data:`CHECK_LTCA` on the coast flank at ``setup["torques"]`` (the light
+    torque and the torque the coast capacity search started at). A step is kept where its
+    flank peak pressure at that torque is at least :data:`COAST_PEAK_GAIN` below
+    ``peak`` [MPa] (the capacity search's there) and below the steps' before, it meets
+    every target in ``met`` (those the written design meets at its own torques) and its LTE
+    p-p is within ``lte`` [µrad] at both torques. Returns the design of least peak kept,
+    None where none is (nothing analysed where the design has no tip relief).
+
+    Why: the coast flank's relief stage sets its tip relief against the edges at the
+    torque it is developed at, and a deep relief from half-way narrows the profile band
+    that carries the load: the coast design torque, which its local pitting safety then
+    sets, falls with it. Measured on the unseen hypoid 6x45 (a 44 mm; benchmarks/data/
+    unseen_designs), its coast flank as written at 11.4 / 76.4 N m (the drive's design
+    torque; tip relief 51 µm from 0.556, root relief 56 µm from 0.31, ellipse 0.4;
+    ``benchmarks/development_levers.py --flank coast --from-case --check``, 2026-11-26):
+    flank peak 1588 MPa (S_H,loc 0.87: coast design torque 41.8 N m, 55 % of the drive's);
+    tip relief 25.5 µm: 1474 MPa; from 0.75: 1469 MPa; each with every target met, no
+    edge, LTE 20 / 22 µrad; the root relief halved or started earlier left it at 1584-1591
+    MPa."""
+    if (best.full is None or not float(best.values.get("tip_relief", 0.0)) > 0.0
+            or not math.isfinite(peak)):
+        return None
+    chosen, least = None, (1.0 - COAST_PEAK_GAIN) * float(peak)
+    for name, step in COAST_PEAK_STEPS:
+        if name not in targets.variables or name not in best.values:
+            continue
+        lo, hi = (float(x) for x in targets.variables[name])
+        now = float(best.values[name])
+        x = float(np.clip(now * step if name == "tip_relief" else now + step, lo, hi))
+        if abs(x - now) < 1e-9:
+            continue
+        e = _said_variant(best, dict(best.values) | {name: x}, "coast capacity",
+                          f"with {name} {x:.3g} (its peak {peak:.0f} MPa set the coast "
+                          "design torque)", targets, setup, teeth, say, placed,
+                          flank="coast", key_prefix=key_prefix)
+        if e is None:
+            continue
+        p = float(e.metrics["pressure_max_flank"][-1])
+        lost = sorted(k for k in met if e.full[1].get(k, 0.0) > 0.0)
+        loud = not np.nanmax(e.metrics["lte_peak_to_peak"]) <= lte
+        if lost or loud:
+            say(f"  not kept: the {name} step misses "
+                + ", ".join(lost + ([f"LTE (above {lte:.0f} urad)"] if loud else [])))
+            continue
+        if p < least:
+            chosen, least = e, p
+    return chosen
 
 
 def _coast_step_values(values: Mapping[str, float], targets: DevelopmentTargets,
@@ -1219,12 +1391,9 @@ def _coast_kept(best: DevelopmentEvaluation, e: DevelopmentEvaluation,
     if _check_rank(e) >= _check_rank(best):
         return False
     lost = _lost_but_length(best, e)
-    p_new = float(e.metrics["pressure_max_flank"][-1])
-    p_old = float(best.metrics["pressure_max_flank"][-1])
-    bound = (float(targets.max_flank_pressure) if targets.max_flank_pressure is not None
-             else -math.inf)
-    if not p_new <= max(p_old, bound):
-        lost.append(f"pressure ({p_new:.0f} MPa above {max(p_old, bound):.0f})")
+    raised = _pressure_raised(best, e, targets)
+    if raised:
+        lost.append(raised)
     if lost:
         say(f"  not kept: the {name} step misses {', '.join(lost)}")
         return False

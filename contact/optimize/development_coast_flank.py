@@ -9,7 +9,8 @@ on the coast flank's own prescriptions (:data:`COAST_BEARING_DESIGNS` bearings, 
 coast`` does (:func:`_as_run`) and :func:`coast_flank_capacity` lowers its design torque to
 what it carries (:func:`contact.optimize.development_coast.coast_capacity`);
 :func:`coast_at_its_torque` develops it again where that fell below
-:data:`COAST_REDEVELOP` of the torque it was developed at. Split out of
+:data:`COAST_REDEVELOP` of the torque it was developed at; :func:`coast_peak_relief` gives
+it a lighter tip relief where its peak pressure set its design torque. Split out of
 :mod:`contact.optimize.development` (issue 71), which re-exports every public
 name.
 """
@@ -28,6 +29,7 @@ import numpy as np
 from contact.optimize import development_evaluate as evaluation
 from contact.optimize.development_check import (
     checked_best,
+    checked_centre_u,
     checked_coast_lte,
     checked_long,
 )
@@ -292,6 +294,10 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
 
         best = checked_best(evals, targets, setup, teeth, say, placed, side="coast",
                             key_prefix=prefix, n_max=n_max, slopes=evaluate.slopes)
+        # a pattern off its centre along the face: the coast flank's own M placed off the
+        # mean cone distance (the drive flank's M stays where it is)
+        best = checked_centre_u(best, targets, setup, teeth, say, placed, flank="coast",
+                                key_prefix=prefix)
         # an LTE above the verdict's limit: the ellipse longer, the path turned lengthwise
         best = checked_coast_lte(best, targets, setup, teeth, say, placed,
                                  key_prefix=prefix, level=start.get(TE_NAME))
@@ -463,3 +469,53 @@ def coast_lte_at_its_torques(developed: BasicDesign, drive: DevelopmentEvaluatio
     if got is old:
         return None
     return coast._replace(basic=with_flank_options(base, side, got.values), best=got)
+
+
+def coast_peak_relief(developed: BasicDesign, drive: DevelopmentEvaluation,
+                      targets: DevelopmentTargets, setup: dict[str, Any],
+                      teeth: KeptTeeth, memo: dict, say: Callable[[str], None],
+                      coast: _CoastOutcome, cap: CoastCapacity | None
+                      ) -> _CoastOutcome | None:
+    """The coast flank's lighter tip relief where its peak pressure lowered its design
+    torque: where the coast capacity search (``cap``, :func:`coast_flank_capacity`)
+    lowered it for the flank's static strength or its local pitting safety at the torque
+    it started at, :func:`~contact.optimize.development_check.checked_coast_peak` on the
+    written coast design (``coast.best``) at the light torque and that one, its peak
+    there the search's, the targets the written design meets at its own torques kept and
+    its LTE p-p within the verdict's limit (or the written design's, where above).
+    ``developed``: the basic design written (both flanks' prescriptions); ``drive``: the
+    drive design written (its bearing keys the kept pinion teeth). Returns the outcome
+    with the step's design (its basic design carrying its coast prescriptions; the caller
+    writes it and searches its capacity again, keeping it only where that is higher),
+    else None (nothing analysed where the torque was not lowered for the peak).
+
+    Why: :func:`~contact.optimize.development_check.checked_coast_peak` (the unseen hypoid
+    6x45 at a 44 mm offset: its coast design torque 55 % of the drive's, set by the
+    pinion's local pitting safety 0.87 at 76.4 N m under a 51 µm tip relief from half-way)."""
+    from contact.optimize.development_check import checked_coast_peak
+    from contact.study.verdicts import LTE_LIMIT
+    from geometry.synthesis.case_synthesis import synthesize
+
+    old = coast.best
+    if (cap is None or not cap.lowered or old is None or old.full is None
+            or not old.checked or targets.coast_max_evaluations == 0):
+        return None
+    first = next((c for c in cap.checks if c.torque == cap.start), None)
+    if first is None or not {"flank", "pitting"} & set(first.failures):
+        return None
+    side = "convex" if developed.options.drive_flank == "concave" else "concave"
+    met = {k for k, v in old.full[1].items() if v == 0.0}
+    lte = max(LTE_LIMIT, float(np.nanmax(old.metrics["lte_peak_to_peak"])))
+    say(f"development: coast flank's peak {first.pressure:.0f} MPa at {cap.start:.4g} N m "
+        f"set its design torque {cap.torque:.4g} N m: a lighter tip relief")
+
+    def placed(values):
+        return synthesize(with_flank_options(developed, side, values), memo=memo)[0]
+
+    got = checked_coast_peak(old, targets, dict(setup, torques=[setup["torques"][0],
+                                                                cap.start]),
+                             teeth, say, placed, peak=first.pressure, met=met, lte=lte,
+                             key_prefix=(*bearing_key(drive.values), "coast"))
+    if got is None:
+        return None
+    return coast._replace(basic=with_flank_options(developed, side, got.values), best=got)
