@@ -12,7 +12,10 @@ at the design torque and the targets missed (:func:`~contact.optimize.developmen
 development_score`, default targets); ``--tolerance``: under each row, the tolerance
 targets (toe, heel, edge, plastic) missed at each mounting excursion ΔE/ΔP ± 0.05 mm
 (:func:`~contact.optimize.development_check.tolerance_checks`, the development's coarse
-LTCA; ≈ 4 more analyses per design).
+LTCA; ≈ 4 more analyses per design); ``--floor N``: under each row, the LTE floor of the
+design's load sharing from the mesh stiffness at N torques from the light to the design
+torque (:func:`floor_line`; docs/synthesis.md, "The LTE floor of a face contact ratio
+near 1").
 
 Usage::
 
@@ -72,6 +75,10 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--from-case", default=None, metavar="CASE",
                     help="a case `ltca synthesize` wrote from BASIC: both flanks' developed "
                          "prescriptions (its [development] tables) under --base")
+    ap.add_argument("--floor", type=int, default=0, metavar="N",
+                    help="also the LTE floor of each design's load sharing: N >= 2 torques "
+                         "from LIGHT to DESIGN with the mesh stiffness, half the p-p of "
+                         "the deflection between them (docs/synthesis.md, 'The LTE floor')")
     ap.add_argument("--tolerance", action="store_true",
                     help="also the development's tolerance check (coarse LTCA at "
                          "dE/dP +/- 0.05 mm): the tolerance targets missed, per excursion")
@@ -129,6 +136,9 @@ def main(argv: list[str] | None = None) -> None:
               f"{m['pressure_max_flank'][1]:5.0f}  "
               + ",".join(k for k, v in short.items() if v > 0)
               + f" obj {objective:.3g} [{time.process_time() - t0:.1f}]")
+        if args.floor >= 2:
+            print("    " + floor_line(case, np.linspace(*args.torques, args.floor), opts,
+                                      args.flank))
         if args.tolerance:
             setup = {"torques": list(args.torques), "centre_v": dev.working_depth_centre(case)}
             tol = tolerance_checks(case, dev.DevelopmentTargets(), setup, teeth, values)
@@ -139,6 +149,40 @@ def main(argv: list[str] | None = None) -> None:
                     f" (edge {100 * tol[lab][0]['edge_load_share'][1]:.1f} %, plastic "
                     f"{100 * np.max(tol[lab][0]['plastic_share']):.1f} %)" if ks else "")
                 for lab, ks in missed.items()))
+
+
+def floor_line(case, torques, options, flank: str) -> str:
+    """The LTE floor of a design's load sharing between the first and the last of
+    ``torques`` [N m, pinion], in words.
+
+    The LTE at a torque is the p-p over the roll φ of UTE(φ) + δ(φ, T), the unloaded TE
+    plus the mesh deflection δ = ∫ dT_g / k_Θ(φ, T_g) (k_Θ the torsional mesh stiffness of
+    :mod:`contact.ltca.mesh_interface`, T_g the gear torque); the unloaded TE is the same at
+    both ends, so p-p(δ_last − δ_first) ≤ LTE_first + LTE_last and max(LTE_first,
+    LTE_last) ≥ ½ p-p(δ_last − δ_first), whatever the TE parabola or the relief (as long as
+    they leave the load sharing as it is). The integral by the trapezoid rule over
+    ``torques``; beside it the same bound from the LTCA's own TE at the two ends (the
+    integral exactly, the unloaded TE cancelling)."""
+    import numpy as np
+
+    from contact.chain import AnalysisChain
+    from contact.pipeline import run_analysis
+
+    tree = run_analysis(case, [float(t) for t in torques], flank=flank, options=options,
+                        deviations=False,
+                        steps=AnalysisChain.contact_only().with_steps(
+                            mesh_interface="linearised"))
+    lt = tree["/ltca"]
+    k = np.asarray(tree["/mesh_interface"]["torsional_mesh_stiffness"].values, float)
+    g = np.asarray(lt["gear_torque"].values, float)
+    te = np.asarray(lt["transmission_error"].values, float)
+    deflection = np.trapezoid(1e6 / k, g, axis=0)  # [µrad]: N m / (N m/rad)
+    lte = np.asarray(lt["lte_peak_to_peak"].values, float)
+    return (f"floor: 1/2 p-p of the deflection {torques[0]:.1f} -> {torques[-1]:.1f} N m "
+            f"{0.5 * np.ptp(deflection):.1f} urad from k_theta (mean {np.mean(k[0]) / 1e6:.2f}"
+            f" / {np.mean(k[-1]) / 1e6:.2f} MN m/rad), {0.5 * np.ptp(te[-1] - te[0]):.1f} "
+            f"urad from the TE; LTE p-p at each torque "
+            + " / ".join(f"{x:.0f}" for x in lte))
 
 
 if __name__ == "__main__":

@@ -363,7 +363,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     (:func:`checked_relief_lte`), then a flatter profile and a deeper TE parabola
     (:func:`checked_crowning_lte`); its TE level raised back to the flank's own where it
     still misses a target (:func:`checked_te_back`); M placed again where those steps
-    moved the centre u off its band (:func:`checked_centre_u`); last, where it misses its
+    moved the centre u off its band (:func:`checked_centre_u`); where it still misses the
+    development's own LTE target, a longer, flatter bearing with M placed again
+    (:func:`checked_overlap_lte`); last, where it misses its
     light-load
     centre v and nothing by more than a small margin, a small blade-angle step with the TE level
     lowered (:func:`checked_near_miss`; ``slopes``: the height stage's measured
@@ -389,6 +391,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     # the steps since may have moved the centre u off its band again (the bundled 11x41:
     # 0.49 → 0.54 by the root relief 20 µm and the TE level raised back)
     best = checked_centre_u(best, targets, setup, teeth, say, placed)
+    best = checked_overlap_lte(best, targets, setup, teeth, say, placed)
     return checked_near_miss(best, targets, setup, teeth, say, placed, level,
                              slope=(slopes or {}).get(bearing_key(best.values)))
 
@@ -627,6 +630,75 @@ def checked_te_back(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                       f"at {TE_NAME} {x:.3g} urad (its own level, on the bearing the "
                       "steps ended at)", targets, setup, teeth, say, placed)
     return best if kept_why(best, e, targets, setup, teeth, say) else e
+
+
+def checked_overlap_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                        setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                        say: Callable[[str], None],
+                        placed: Callable[[Mapping[str, float]], Case]
+                        ) -> DevelopmentEvaluation:
+    """A drive design that still misses the development's own LTE target
+    (``targets.max_lte``) after every other step given less crowning both ways: the ellipse
+    :data:`ELLIPSE_STEP` longer (less lengthwise crowning) and the profile crowning at the
+    lower bound of its variable, in one design (a synthesis of steps 3-6), and — where that
+    moved the light-load centre u off the band the design met — M placed again
+    (:func:`checked_centre_u` on it); the result placed and checked at :data:`CHECK_LTCA`
+    and kept where it ranks better (:func:`_check_rank`), misses no target the design met
+    (the pattern length and centre u included) and is tolerant
+    (:func:`_tolerant_variant`). A design that meets its LTE target or its pattern
+    length's upper tolerance (no room for a longer ellipse) is returned as it is, without
+    an analysis.
+
+    Why: with a face contact ratio near 1 the LTE at both torques together has a floor
+    that no unloaded TE reaches. The LTE p-p at a torque T is that of UTE(φ) + δ(φ, T),
+    the unloaded TE plus the mesh deflection δ = ∫ dT_g / k_Θ(φ, T_g) (k_Θ the torsional
+    mesh stiffness at the roll φ, :mod:`contact.ltca.mesh_interface`); the unloaded TE
+    (the modified roll's parabola, the reliefs) is the same at both torques, so
+    p-p(TE_design − TE_light) = p-p(δ_design − δ_light) ≤ LTE_light + LTE_design, and
+    max(LTE_light, LTE_design) ≥ ½ p-p(δ_design − δ_light): the part of the deflection
+    that changes with the number of pairs sharing the load between the two torques. It is
+    the bearing's load sharing that lowers it — a longer, flatter contact that lets the
+    next pair take up load earlier — not ``te_level`` or the relief, which move the
+    unloaded TE and trade one torque's LTE against the other's. Measured at ``ltca run``'s
+    sampling on the bundled basic file cases/basic/kolivand2009_fm_11x41.toml (ε_vα 1.06,
+    ε_vβ 1.13; 61.9 / 412.9 N m; its developed bearing path −80°, ellipse 0.55, profile
+    crowning 2.6 µm, root relief 20 µm from 0.2, tip relief 24.6 µm from 0.89, te_level
+    10 µrad, M −0.164 of the face; 2026-11-26, docs/synthesis.md "The LTE floor of a face
+    contact ratio near 1"): LTE 49 / 58 µrad, loaded contact ratio 1.45 / 2.25, the bound
+    ½ p-p(δ_design − δ_light) 47 µrad — 40 out of reach on that bearing whatever its
+    TE level (te_level 5 / 20 / 30 / 45: 47 / 57, 45 / 59, 57 / 60, 57 / 56 µrad); the
+    ellipse 0.6 with no profile crowning and M −0.2: 37 / 38.5 µrad, 1.50 / 2.30, the
+    bound 33 µrad, every target met, tolerant. Each alone did less (ellipse 0.6: 43 / 43
+    µrad, centre u missed; no crowning: 43 / 51 µrad, centre v missed)."""
+    if (best.full is None or not best.checked or best.full[1]["lte"] == 0.0
+            or best.full[1]["length"] > 0.0):
+        return best
+    values = dict(best.values)
+    if "ellipse_length" in targets.variables and "ellipse_length" in values:
+        lo, hi = (float(x) for x in targets.variables["ellipse_length"])
+        values["ellipse_length"] = round(float(np.clip(float(values["ellipse_length"])
+                                                       + ELLIPSE_STEP, lo, hi)), 4)
+    if CROWNING_NAME in targets.variables and CROWNING_NAME in values:
+        values[CROWNING_NAME] = float(targets.variables[CROWNING_NAME][0])
+    if all(abs(float(values[k]) - float(best.values[k])) < 1e-9 for k in values):
+        return best
+    e = _said_variant(best, values, "overlap lte",
+                      "with less crowning both ways (ellipse_length "
+                      f"{values.get('ellipse_length', math.nan):.3g}, {CROWNING_NAME} "
+                      f"{values.get(CROWNING_NAME, math.nan):.3g} um; its LTE above "
+                      f"{targets.max_lte:g} urad)", targets, setup, teeth, say, placed)
+    if e is None:
+        return best
+    placed_again = e
+    if best.full[1].get("centre_u", 0.0) == 0.0 and e.full[1].get("centre_u", 0.0) > 0.0:
+        placed_again = checked_centre_u(e, targets, setup, teeth, say, placed)
+    # a design checked_centre_u kept was found tolerant there
+    why = kept_why(best, placed_again, targets, setup, teeth, say,
+                   "the longer, flatter bearing", lost=_lost_targets,
+                   tolerant=placed_again is e)
+    _reached(setup, placed_again, f"design {best.index + 1} with less crowning both ways",
+             why)
+    return best if why else placed_again
 
 
 #: the near-miss step (:func:`checked_near_miss`): a missed target is near where its
@@ -941,7 +1013,8 @@ def _lte_ends(e: DevelopmentEvaluation) -> tuple[float, float]:
 def _reached(setup: Mapping[str, Any], e: DevelopmentEvaluation, what: str,
              why: str = "") -> None:
     """Record in ``setup["lte_reach"]`` (by the development's torques) the design of least
-    LTE p-p (the larger of light and design torque) :func:`checked_crowning_lte` has seen:
+    LTE p-p (the larger of light and design torque) :func:`checked_crowning_lte` and
+    :func:`checked_overlap_lte` have seen:
     ``{"light", "design"}`` [µrad], ``"what"`` it is, ``"why"`` it was not kept (empty
     where it was, or is the design the step began with) and ``"tried"`` the levers the
     step analysed (:func:`_tried`)."""
