@@ -355,13 +355,15 @@ def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
     kept = stream_tasks(analyse_bin, shared, todo, lambda ds: ds, store=store,
                         progress=run.progress, desc="duty cycle", unit="bin", total=n,
                         initial=len(done), scheduler=run.scheduler, n_workers=run.n_workers)
-    parts = [store.combined()] if store is not None else kept
+    # coords "minimal": a failed bin has no ``fillet_u`` (no root stress), the others
+    # share it; the failed bin is then named by the damage (_durability), not a traceback
+    parts = [store.combined(coords="minimal")] if store is not None else kept
     if store is not None and parts[0].sizes["point"] != n:
         raise InputError(f"output: {parts[0].sizes['point']} of {n} bins in "
                          f"{str(store.parts)!r} after the run (a chunk failed its check, "
                          "see the warning); start the duty cycle again to analyse the "
                          "missing bins")
-    ds = xr.concat(parts, dim="point", join="outer")
+    ds = xr.concat(parts, dim="point", join="outer", coords="minimal")
     ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
     ds.attrs["bins_resumed"] = len(done)
     return ds.rename(point="bin")
