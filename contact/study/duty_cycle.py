@@ -411,9 +411,19 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset,
         bad = int(np.argmax(ds["status"].values == 2))
         from contact.errors import AnalysisFailedError
 
+        reason = str(ds["reason"].values[bad])
+        where = ""
+        if duty.deflection is not None and reason.startswith("InputError: misalignment"):
+            # the reason names ltca run's options; here the deflection table set them
+            where = (f"; bin {bad}'s misalignment is the [duty_cycle] deflection table's "
+                     f"at its {float(duty.torque[bad]):.4g} N m plus the case's own")
+            if duty.illustrative:
+                where += (" — the ILLUSTRATIVE table of `ltca duty-cycle` without --duty "
+                          "(at the top torque dE 0.05, dP -0.03, dG 0.03 mm, dSigma "
+                          "0.01 deg, whatever the gear's size): give this design's "
+                          "deflections (--duty FILE, docs/cases.md)")
         raise AnalysisFailedError(f"duty_cycle bin {bad}: its analysis failed "
-                                  f"({ds['reason'].values[bad]}); no damage without every "
-                                  "bin")
+                                  f"({reason}); no damage without every bin{where}")
     out: dict[str, Any] = {}
     cycles = member_cycles(duty.revolutions, case.pinion.blank.teeth, case.gear.blank.teeth)
     members = ("pinion", "gear")
