@@ -251,3 +251,37 @@ def test_refusals_with_ranges():
     assert 0.0 < bound < 10.0
     eo = ease_off(case, misalignment=Misalignment(delta_G=0.98 * bound))
     assert int(eo.valid.sum()) >= MIN_VALID_NODES
+
+
+def test_a_synthesised_pair_that_does_not_mesh_is_not_blamed_on_the_user(monkeypatch):
+    """Issue 71, unseen (12): a spiral bevel 16x16 synthesised from basic data (a probe,
+    `--no-development`) met at one ease-off node, and `ltca run` told the user to "check
+    the pair offset, the mounting distances and the blanks" — settings the synthesis
+    wrote. A case with ``synthesised`` fields says so and names the changes of basic data
+    to try; a hand-made case keeps the old words. The ease-off is stubbed to 3 valid
+    nodes (what the probe's case gives is slow to build here): milliseconds."""
+    import dataclasses
+    from types import SimpleNamespace
+
+    import contact.utca.easeoff as easeoff
+    from contact.catalogue import resolve_case
+    from geometry.core.errors import InputError
+
+    monkeypatch.setattr(easeoff, "_memo_ease_off",
+                        lambda *a, **k: SimpleNamespace(valid=np.array([True] * 3)))
+    from geometry.pair.assembly import Misalignment
+
+    synth = dataclasses.replace(resolve_case(None), misalignment=Misalignment())
+    # (the default case is synthesised too; its own misalignment set to none)
+    assert "pinion.machine.concave" in synth.synthesised
+    hand = dataclasses.replace(synth, synthesised=())
+    with pytest.raises(InputError, match=r"only 3 valid ease-off nodes, at least "
+                       r"\d+ needed with no misalignment \(check the pair offset"):
+        easeoff.ease_off(hand)
+    with pytest.raises(InputError) as info:
+        easeoff.ease_off(synth)
+    msg = str(info.value)
+    assert ("with no misalignment: this case's machine settings were synthesised from "
+            "basic data") in msg and "a ratio further from 1" in msg and "beta_m, b2" in msg
+    assert msg.endswith("; edited, check the pair offset, the mounting distances and the "
+                        "blanks")

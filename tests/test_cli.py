@@ -265,3 +265,31 @@ def test_binary_input_files_are_refused_in_one_line(argv, message, tmp_path, cap
     err = capsys.readouterr().err.strip()
     assert err.startswith(f"ltca {argv[0]}: error: {message.format(**subs)}")
     assert err.count("\n") == 0
+
+
+def test_synthesize_never_writes_its_case_over_the_basic_file(tmp_path, monkeypatch, capsys):
+    """Issue 71, unseen (12): ``ltca synthesize my.toml`` run in the directory of
+    ``my.toml`` wrote the case to ``my.toml`` (the default, the file's stem) — the user's
+    basic file replaced by the case. ``-o`` naming the basic file is refused before any
+    work (exit 2, the file untouched); the default there is ``<stem>_case.toml``, and
+    ``<stem>.toml`` of this directory elsewhere (as before)."""
+    from contact.commands.synthesize import synthesize_output
+
+    basic = tmp_path / "my.toml"
+    text = Path(_FM_BASIC).read_text(encoding="utf-8")
+    basic.write_text(text, encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    for given in ("my.toml", str(basic), f"{tmp_path}/./my.toml"):
+        assert main(["synthesize", "my.toml", "-o", given]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err == (f"ltca synthesize: error: -o: {given!r} is the basic design file "
+                       "being read; the case would replace it: give another file (e.g. "
+                       "my_case.toml)")
+    assert basic.read_text(encoding="utf-8") == text
+    assert synthesize_output(Path("my.toml"), None) == Path("my_case.toml")
+    assert synthesize_output(basic, None) == Path("my_case.toml")
+    assert synthesize_output(basic, "c.toml") == Path("c.toml")
+    (tmp_path / "elsewhere").mkdir()
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    assert synthesize_output(basic, None) == Path("my.toml")
+    assert synthesize_output(Path(_FM_BASIC), None) == Path("kolivand2009_fm_11x41.toml")

@@ -80,6 +80,18 @@ def test_the_17x29s_face_width_and_spiral_angle_reach_the_target():
     assert f"beta_m of {math.ceil(r.beta_m_needed * 10) / 10:.1f} deg (now 35)" in text
 
 
+def test_a_ratio_just_below_its_limit_is_printed_below_it():
+    """Issue 71, unseen (12): the face-hobbed 7x39 at Sigma 85 deg (ε_vβ 1.2465, its own
+    value by the ISO 10300 virtual gears) read "eps_vb 1.25 is below 1.25"; the number
+    gets the decimals that show it below the limit (1.247), and 2 where those do (the
+    17x29's 0.96 above)."""
+    design = load_basic(ROOT / "benchmarks" / "data" / "unseen_designs"
+                        / "fh_hypoid_7x39_s85_a30.toml").design
+    eps = overlap_remedy(design).eps_vb
+    assert eps == pytest.approx(_eps_vb(design), rel=1e-12) and round(eps, 2) == 1.25
+    assert overlap_text(design).startswith("face contact ratio eps_vb 1.247 is below 1.25, ")
+
+
 def test_a_design_with_overlap_enough_gets_no_sentence():
     """The passenger-car hypoid 10x43 (ε_vβ 1.44): its own values, no sentence."""
     design = load_basic(DESIGNS / "pc_hypoid_10x43.toml").design

@@ -223,3 +223,34 @@ def test_a_duty_cycle_with_a_failed_bin_ends_in_analysis_failed():
                                                   r"\(no certified contact solution at T_p "
                                                   r"250 N m"):
         _durability(resolve_case(None), duty, bins)
+
+
+def test_a_failed_bin_of_the_illustrative_spectrum_names_its_deflection_table():
+    """Issue 71, unseen (12): a bin of the bundled spectrum whose misalignment separates
+    the flanks (a 16x16 spiral bevel at Sigma 60 deg of d_e2 120 mm: its illustrative
+    deflections at 3.5 N m) said only the bounds of ``ltca run``'s --dE/--dP options;
+    the message now says the misalignment is the ILLUSTRATIVE deflection table's at the
+    bin's torque and how to give the design's own. A reason of another kind gets no
+    such sentence."""
+    import xarray as xr
+
+    from contact.catalogue import resolve_case
+    from contact.errors import AnalysisFailedError
+    from contact.study.duty_cycle import _durability
+    from contact.study.duty_cycle_inputs import example_duty_cycle
+
+    duty = example_duty_cycle(13.9, bins=2)
+    why = ("InputError: misalignment: separates the flanks (the pinion meets the gear "
+           "inside both blanks at too few points: 8 valid ease-off nodes, at least 16 needed)")
+    bins = xr.Dataset({"status": ("bin", np.array([0, 2], np.int8)),
+                       "reason": ("bin", np.array(["", why], dtype=object))})
+    with pytest.raises(AnalysisFailedError, match=r"^duty_cycle bin 1: its analysis failed "
+                       r"\(InputError: misalignment: separates .*; no damage without every "
+                       r"bin; bin 1's misalignment is the \[duty_cycle\] deflection table's "
+                       r"at its 3.475 N m plus the case's own — the ILLUSTRATIVE table of "
+                       r"`ltca duty-cycle` without --duty .*\(--duty FILE, docs/cases.md\)$"):
+        _durability(resolve_case(None), duty, bins)
+    bins["reason"] = ("bin", np.array(["", "no certified contact solution"], dtype=object))
+    with pytest.raises(AnalysisFailedError, match=r"no certified contact solution\); no "
+                                                  r"damage without every bin$"):
+        _durability(resolve_case(None), duty, bins)

@@ -20,6 +20,7 @@ import math
 
 import numpy as np
 import pytest
+import xarray as xr
 
 from contact.catalogue import resolve_case
 from contact.compliance.fe import (
@@ -301,6 +302,56 @@ def test_duty_cycle_bending_side_reads_the_bins_root_stress(tmp_path, monkeypatc
     k = ctx["durability_columns"].index("S_F [1]")
     assert ctx["durability"][1]["cells"][k] == \
         f"{float(out['bending_safety_factor'].sel(member='gear')):.2f}"
+
+
+@pytest.mark.parametrize("streamed", [True, False])
+def test_duty_cycle_with_a_failed_bin_and_root_stress_names_the_bin(tmp_path, monkeypatch,
+                                                                    streamed):
+    """Issue 71, unseen (12): `ltca duty-cycle` of a spiral bevel 16x16 at Sigma 60 deg
+    stopped with xarray's "ValueError: 'fillet_u' not present in all datasets" — two of
+    its seven bins, whose deflection-table misalignment separated the flanks, had no root
+    stress (no ``fillet_u``), the others had. A failed bin beside bins with root stress is named
+    with its reason (AnalysisFailedError, as without root stress), streamed to disk or
+    not; the parts keep the good bin's root stress and its ``fillet_u``."""
+    from contact.compliance.fe import CACHE_ENV, cache_key, cache_path
+    from contact.compliance.fe.cache import write_cache_entry
+    from contact.errors import AnalysisFailedError
+    from contact.study import StudyRun
+    from contact.study.duty_cycle import run_duty_cycle
+    from contact.study.duty_cycle_inputs import DeflectionTable, DutyCycle
+    from contact.study.store import ResultStore
+
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))
+    case = resolve_case(None)
+    for member, ds in _coefficients().items():
+        key = cache_key(case.member(member), ds.attrs["flank"], COARSE)
+        write_cache_entry(ds, cache_path(key), key)
+    # bin 2 at 50 mm of offset change: the flanks no longer meet (tests/test_study.py);
+    # two good bins with root stress (with one, xarray's concat let the coordinate pass)
+    table = DeflectionTable(torque=[0.0, 150.0, 250.0], delta_E=[0.0, 0.0, 50.0],
+                            delta_P=[0.0, 0.0, 0.0], delta_G=[0.0, 0.0, 0.0],
+                            delta_Sigma=[0.0, 0.0, 0.0])
+    duty = DutyCycle(torque=[100.0, 150.0, 250.0], pinion_speed=[2000.0, 1500.0, 1000.0],
+                     revolutions=[1e7, 3e6, 1e6], deflection=table)
+    out = tmp_path / "d.nc" if streamed else None
+    run = StudyRun(options=SMALL, scheduler="synchronous", output=out)
+    with pytest.raises(AnalysisFailedError, match=r"duty_cycle bin 2: its analysis failed "
+                       r"\(InputError: misalignment: separates the flanks"):
+        run_duty_cycle(case, duty, run, root_stress=COARSE)
+    if streamed:
+        # the misalignment's origin said: the deflection table at the bin's torque
+        with pytest.raises(AnalysisFailedError, match=r"no damage without every bin; bin 2's "
+                           r"misalignment is the \[duty_cycle\] deflection table's at its "
+                           r"250 N m plus the case's own$"):
+            run_duty_cycle(case, duty, run, root_stress=COARSE)  # resumed: no analysis
+        chunks = [xr.load_dataset(f) for f in
+                  sorted(ResultStore.parts_dir(out).glob("chunk-*.nc"))]
+        assert "fillet_u" not in chunks[2].coords  # what broke xarray's concat
+        parts = xr.concat(chunks, dim="point", join="outer", coords="minimal")
+        assert parts["status"].values.tolist() == [0, 0, 2]
+        assert np.all(np.isfinite(parts["root_stress_peak"].isel(point=[0, 1]).values))
+        assert np.all(np.isnan(parts["root_stress_peak"].isel(point=2).values))
+        assert parts["fillet_u"].dims == ("member", "fillet_point")
 
 
 def test_bad_input_is_refused_naming_the_field():

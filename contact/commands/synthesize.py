@@ -38,7 +38,8 @@ def register(sub) -> None:
                         "a bundled one (cases/basic/: "
                         + ", ".join(bundled_basic_names()) + "); default the default case's, "
                         "kolivand2009_fm_11x41_reference")
-    output_option(p, default="<name>.toml, the design's name", what="case file (TOML)")
+    output_option(p, default="<stem>.toml of BASIC in this directory; <stem>_case.toml "
+                  "where that is BASIC itself", what="case file (TOML)")
     progress_option(p)
     p.add_argument("--no-development", dest="development", action="store_false",
                    help="write the local synthesis of the [synthesis] prescriptions as they "
@@ -54,6 +55,43 @@ def bundled_basic_names() -> list[str]:
 
     root = bundled_case_path().parent / "basic"
     return sorted(p.stem for p in root.glob("*.toml")) if root.is_dir() else []
+
+
+def synthesize_output(source: Path, output: str | None) -> Path:
+    """The case file ``ltca synthesize`` writes: ``-o`` as given, else ``<stem>.toml`` of
+    the basic file in the working directory, or ``<stem>_case.toml`` where that is the
+    basic file itself (run beside its basic file, the command wrote the case over it:
+    issue 71, unseen (12)).
+
+    Parameters
+    ----------
+    source : pathlib.Path
+        The basic design file read (:func:`resolve_basic`).
+    output : str or None
+        ``-o``, or None for the default.
+
+    Returns
+    -------
+    pathlib.Path
+
+    Raises
+    ------
+    InputError
+        ``-o`` names the basic design file being read.
+    """
+    from geometry.core.errors import InputError
+
+    def same(path: Path) -> bool:
+        return path.resolve() == source.resolve()
+
+    if output is not None:
+        if same(Path(output)):
+            raise InputError(f"-o: {output!r} is the basic design file being read; the "
+                             "case would replace it: give another file (e.g. "
+                             f"{source.stem}_case.toml)")
+        return Path(output)
+    default = Path(f"{source.stem}.toml")
+    return Path(f"{source.stem}_case.toml") if same(default) else default
 
 
 def resolve_basic(arg: str | None) -> Path:
@@ -369,7 +407,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     # memory the same; docs/performance.md)
     keep_heap_pages()
     source = resolve_basic(args.basic)
-    output = args.output or f"{source.stem}.toml"
+    output = synthesize_output(source, args.output)
     check_output_file(output, create_parents=True)
     shown = (f"cases/basic/{source.name}" if args.basic is None or not Path(args.basic).is_file()
              else Path(args.basic).as_posix())

@@ -160,7 +160,10 @@ def both_flanks_built(case, earlier=None,
     (~28 s of CPU on a 9x41's pinion; the FE root stress within 0.8 % measured on four
     designs, docs/fe.md,
     "Coefficients kept for a re-synthesis").
-    ``say`` (optional) gets one line per member compared: kept, or why not.
+    ``say`` (optional) gets one line per member compared: kept, or why not; and one
+    before each member's build (a cold build is the longest stretch of ``ltca
+    synthesize`` without a line: 85-138 s of wall time on a 9-fold loaded machine,
+    docs/own_gear_set.md "Round 12").
 
     Returns
     -------
@@ -197,6 +200,10 @@ def both_flanks_built(case, earlier=None,
                 # here and again there, ~0.25 s of CPU per file (issue 75)
                 shared_coefficients(case, member, "drive", progress=False)
             else:
+                if say is not None:  # the longest stretch of a new design without a line
+                    say(f"development: building the {member}'s FE models (both flanks) for "
+                        "the root-stress checks, once per design and cached for `ltca "
+                        "run` (~15-20 s of CPU per member, docs/fe.md)")
                 influence_coefficients(case, member, "drive", progress=False,
                                        other_flank=True)
         except Exception as exc:  # the checks build their own and report (never fatal)

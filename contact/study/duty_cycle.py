@@ -355,13 +355,15 @@ def _bins(shared: DutyInputs, run: StudyRun) -> xr.Dataset:
     kept = stream_tasks(analyse_bin, shared, todo, lambda ds: ds, store=store,
                         progress=run.progress, desc="duty cycle", unit="bin", total=n,
                         initial=len(done), scheduler=run.scheduler, n_workers=run.n_workers)
-    parts = [store.combined()] if store is not None else kept
+    # coords "minimal": a failed bin has no ``fillet_u`` (no root stress), the others
+    # share it; the failed bin is then named by the damage (_durability), not a traceback
+    parts = [store.combined(coords="minimal")] if store is not None else kept
     if store is not None and parts[0].sizes["point"] != n:
         raise InputError(f"output: {parts[0].sizes['point']} of {n} bins in "
                          f"{str(store.parts)!r} after the run (a chunk failed its check, "
                          "see the warning); start the duty cycle again to analyse the "
                          "missing bins")
-    ds = xr.concat(parts, dim="point", join="outer")
+    ds = xr.concat(parts, dim="point", join="outer", coords="minimal")
     ds = ds.isel(point=np.argsort(ds["point"].values, kind="stable"))
     ds.attrs["bins_resumed"] = len(done)
     return ds.rename(point="bin")
@@ -409,9 +411,19 @@ def _durability(case: Case, duty: DutyCycle, ds: xr.Dataset,
         bad = int(np.argmax(ds["status"].values == 2))
         from contact.errors import AnalysisFailedError
 
+        reason = str(ds["reason"].values[bad])
+        where = ""
+        if duty.deflection is not None and reason.startswith("InputError: misalignment"):
+            # the reason names ltca run's options; here the deflection table set them
+            where = (f"; bin {bad}'s misalignment is the [duty_cycle] deflection table's "
+                     f"at its {float(duty.torque[bad]):.4g} N m plus the case's own")
+            if duty.illustrative:
+                where += (" — the ILLUSTRATIVE table of `ltca duty-cycle` without --duty "
+                          "(at the top torque dE 0.05, dP -0.03, dG 0.03 mm, dSigma "
+                          "0.01 deg, whatever the gear's size): give this design's "
+                          "deflections (--duty FILE, docs/cases.md)")
         raise AnalysisFailedError(f"duty_cycle bin {bad}: its analysis failed "
-                                  f"({ds['reason'].values[bad]}); no damage without every "
-                                  "bin")
+                                  f"({reason}); no damage without every bin{where}")
     out: dict[str, Any] = {}
     cycles = member_cycles(duty.revolutions, case.pinion.blank.teeth, case.gear.blank.teeth)
     members = ("pinion", "gear")

@@ -302,9 +302,18 @@ class ResultStore:
         self._buffer.clear()
         self._since = time.monotonic()
 
-    def combined(self) -> xr.Dataset:
+    def combined(self, coords: str = "different") -> xr.Dataset:
         """All points on disk in point order (after :meth:`flush`), from the chunks that
         pass the checks.
+
+        Parameters
+        ----------
+        coords : {"different", "minimal"}
+            ``xarray.concat``'s ``coords``: "different" (default) concatenates over
+            ``point`` every coordinate that differs between chunks; "minimal" only those
+            along ``point``, the others shared (equal where present, kept from the chunks
+            that have them: a failed point's chunk may lack a coordinate of the analysis,
+            as a duty-cycle bin without its root stress lacks ``fillet_u``).
 
         Returns
         -------
@@ -321,7 +330,7 @@ class ResultStore:
         parts = [ds for _, ds in self.trusted()]
         if not parts:
             raise InputError(f"output: no finished points in {str(self.parts)!r}")
-        ds = xr.concat(parts, dim="point")
+        ds = xr.concat(parts, dim="point", join="outer", coords=coords)
         order = np.argsort(ds["point"].values, kind="stable")
         return ds.isel(point=order)
 

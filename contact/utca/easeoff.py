@@ -397,6 +397,16 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
     if not given:
         if eo is None:
             raise InputError(why)
+        if case.synthesised:  # settings the user never set: say whose they are
+            raise InputError(
+                f"case: the flanks meet at only {why} with no misalignment: this case's "
+                "machine settings were synthesised from basic data (its 'synthesised' "
+                "fields); not edited since, the synthesised flanks do not mesh, a limit "
+                "of the local synthesis seen on spiral bevels near ratio 1 "
+                "(docs/own_gear_set.md, 'Round 12'): a ratio further from 1, or a face "
+                "contact ratio of 1.25 (beta_m, b2: `ltca synthesize`'s note), are the "
+                "changes to try; edited, check the pair offset, the mounting distances "
+                "and the blanks")
         raise InputError(f"case: the flanks meet at only {why} with no misalignment (check "
                          "the pair offset, the mounting distances and the blanks)")
     ranges = []

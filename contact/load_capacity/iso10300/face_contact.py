@@ -238,7 +238,8 @@ def overlap_text(design, target: float = FACE_CONTACT_RATIO_MIN) -> str | None:
                     f" deg (now {r.beta_m:g})")
     remedy = _either(ways, r.target, "no face width up to R_e2/2 nor spiral angle up to 50 "
                      "deg")
-    return (f"face contact ratio eps_vb {r.eps_vb:.2f} is below {r.target:g}, the least "
+    return (f"face contact ratio eps_vb {_below(r.eps_vb, r.target)} is below {r.target:g}, "
+            "the least "
             "bevel-gear design practice asks for (AGMA 2005-D03): a localised bearing then "
             "hands the load from pair to pair through one pair over much of the mesh cycle, "
             "which the bearing's levers (a longer ellipse, a relief entering later, a flatter "
@@ -337,6 +338,15 @@ def profile_remedy(design, target: float = PROFILE_CONTACT_RATIO_MIN) -> Profile
     return ProfileRemedy(eps, float(target), k_d, k_need, alpha, alpha - drop)
 
 
+def _below(value: float, limit: float) -> str:
+    """``value`` [1] with 2 decimals, more where 2 would print it at ``limit`` or above
+    (ε_vβ 1.2497 "is below 1.25", not "1.25 is below 1.25"; at most 6)."""
+    digits = 2
+    while digits < 6 and round(value, digits) >= limit:
+        digits += 1
+    return f"{value:.{digits}f}"
+
+
 def _either(ways: list[str], target: float, none: str) -> str:
     """A remedy sentence's end: the basic-file changes ``ways`` joined by "or" ("the other
     kept" where there are two) that reach ``target``, or, with none, "``none`` alone
@@ -360,7 +370,8 @@ def _profile_text(r: ProfileRemedy) -> str:
                     f"{math.floor(r.alpha_d_needed * 10) / 10:.1f} deg (now {r.alpha_d:g})")
     remedy = _either(ways, r.target, f"no depth factor up to {_DEPTH_FACTOR_MAX:g} nor "
                      f"pressure angle down to {_PRESSURE_ANGLE_MIN:g} deg")
-    return (f"profile contact ratio eps_va {r.eps_va:.2f} is below {r.target:g}: the "
+    return (f"profile contact ratio eps_va {_below(r.eps_va, r.target)} is below "
+            f"{r.target:g}: the "
             "transverse section has, once per pitch, no pair in mesh and the load passes "
             "to the next pair only along the face, which a localised bearing shortens; "
             + remedy)
