@@ -109,10 +109,12 @@ def not_written(ds: xr.Dataset, path: str | os.PathLike[str], exc: OSError) -> x
 CACHE_ENV = "HYPOID_LTCA_CACHE"
 #: version of the cached files' layout and of the model that made them (2: the slot
 #: bottoms rounded continuously along the face, element counts from the root size;
-#: 3: fillet_in_root; 4: the data checksum ``data_sha256``); part of every key, so the
+#: 3: fillet_in_root; 4: the data checksum ``data_sha256``; 5: a crossing of the slot
+#: bottom's cuts rounded into the fillet where no blend keeps both fillets whole, which
+#: changes the sections of a few pinions, e.g. ISO 23509 sample 2's); part of every key, so the
 #: entries of an older format simply miss (another file name) and are built again (the
 #: old files are left where they are, never read)
-FORMAT_VERSION = 4
+FORMAT_VERSION = 5
 #: global attribute of an entry holding the SHA-256 (hex) of its data (:func:`data_checksum`)
 CHECKSUM_ATTR = "data_sha256"
 #: the suffix before the UTC time of an entry set aside (``fe-<key>.nc.corrupt-<time>``)
