@@ -46,8 +46,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(1, str(Path(__file__).resolve().parents[1]))
 
 from friction_anchors import _ltca
+from thermal_eyring_level import efficiency_inputs
 
-import friction.efficiency as eff_mod
 from friction.coefficient import (
     STANDARD_INPUTS,
     FrictionModelRangeWarning,
@@ -66,25 +66,6 @@ FINISHES = (("ground", 0.8), ("fine ground", 0.4), ("lapped / honed", 0.2),
             ("superfinished", 0.1))  # the given (as-made) Ra [µm]
 _RA_OVER_RQ = math.sqrt(2.0 / math.pi)
 _RUN_IN = 0.68  # OperatingConditions' run-in factor (AGMA 925-A03, docs/friction.md)
-
-
-def _inputs(lt: xr.Dataset, op: OperatingConditions) -> tuple[dict, xr.Dataset]:
-    """The inputs the efficiency stage gives the default model, and its /friction."""
-    seen: dict = {}
-    original = eff_mod.friction_coefficient
-
-    def spy(name, **inputs):
-        seen.update(inputs)
-        return original(name, **inputs)
-
-    eff_mod.friction_coefficient = spy
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", FrictionModelRangeWarning)
-            fr = efficiency_analysis(lt, op)
-    finally:
-        eff_mod.friction_coefficient = original
-    return seen, fr
 
 
 def _sharing(inp: dict):
@@ -106,7 +87,7 @@ def evaluate(lt: xr.Dataset, op: OperatingConditions, efficiency: bool = False) 
     """Per torque, flank load-weighted: λ_c, λ, share, the default's μ and its parts, each
     anchor's μ on the same segments (and with ``efficiency`` each model's mesh efficiency)."""
     seg = loaded_segments(lt)
-    inp, fr = _inputs(lt, op)
+    inp, fr = efficiency_inputs(lt, op)
     sol = _sharing(inp)
     std = {k: v for k, v in inp.items() if k in STANDARD_INPUTS}
     with warnings.catch_warnings():

@@ -45,8 +45,10 @@ _SHARING = ("load_per_length", "hertz_pressure", "radius", "e_prime", "entrainin
             "roughness_2", "thermal_factor")
 
 
-def _inputs(lt, temperature: float, model: str = "thermal_eyring") -> dict:
-    """The inputs the efficiency stage gives ``model`` (1-D over the loaded segments)."""
+def efficiency_inputs(lt, op: OperatingConditions) -> tuple[dict, object]:
+    """The inputs the efficiency stage gives ``op``'s friction model (1-D over the loaded
+    segments, caught at its call of ``friction_coefficient``) and the stage's /friction
+    Dataset; the model's range warnings silenced."""
     seen: dict = {}
     original = eff_mod.friction_coefficient
 
@@ -58,11 +60,16 @@ def _inputs(lt, temperature: float, model: str = "thermal_eyring") -> dict:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", FrictionModelRangeWarning)
-            efficiency_analysis(lt, OperatingConditions(temperature=temperature,
-                                                        friction_model=model))
+            fr = efficiency_analysis(lt, op)
     finally:
         eff_mod.friction_coefficient = original
-    return seen
+    return seen, fr
+
+
+def _inputs(lt, temperature: float, model: str = "thermal_eyring") -> dict:
+    """The inputs the efficiency stage gives ``model`` (1-D over the loaded segments)."""
+    return efficiency_inputs(lt, OperatingConditions(temperature=temperature,
+                                                     friction_model=model))[0]
 
 
 def split(lt, temperature: float) -> dict:
