@@ -572,9 +572,34 @@ def checked_relief_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     from contact.study.verdicts import LTE_LIMIT
 
     limit = LTE_LIMIT if lte_limit is None else float(lte_limit)
+
+    def tried(best: DevelopmentEvaluation, values: dict[str, float],
+              said: str) -> DevelopmentEvaluation:
+        e = _said_variant(best, values, "relief lte", said, targets, setup, teeth, say,
+                          placed)
+        if not kept_why(best, e, targets, setup, teeth, say, "the shallower root relief",
+                        lost=_lost_targets):
+            return e
+        return best
+
+    return _shallower_root_relief(best, targets, limit, tried)
+
+
+def _shallower_root_relief(
+        best: DevelopmentEvaluation, targets: DevelopmentTargets, limit: float,
+        tried: Callable[[DevelopmentEvaluation, dict[str, float], str],
+                        DevelopmentEvaluation]) -> DevelopmentEvaluation:
+    """The shallower-root-relief loop both flanks' LTE checks share
+    (:func:`checked_relief_lte`, :func:`checked_coast_relief`): while the checked design's
+    LTE p-p exceeds ``limit`` [µrad] at a torque, its root relief × each of
+    :data:`RELIEF_LTE_FRACTIONS` of the starting design's (clipped to its bounds; a step
+    that changes nothing skipped) is handed to ``tried(best, values, said)``, which
+    analyses it on its flank and returns the design kept (``best`` where its flank's keep
+    rule refuses it). A design without a positive root relief, or within ``limit``, is
+    returned as it is."""
     name = "root_relief"
     if (name not in targets.variables or name not in best.values
-            or float(best.values[name]) <= 0.0):
+            or not float(best.values[name]) > 0.0):
         return best
     lo, hi = (float(x) for x in targets.variables[name])
     now = float(best.values[name])
@@ -585,13 +610,8 @@ def checked_relief_lte(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         x = float(np.clip(fraction * now, lo, hi))
         if abs(x - float(best.values[name])) < 1e-9:
             continue
-        values = dict(best.values) | {name: x}
-        e = _said_variant(best, values, "relief lte",
-                          f"with {name} {x:.3g} um (its LTE above {limit:g} urad)", targets,
-                          setup, teeth, say, placed)
-        if not kept_why(best, e, targets, setup, teeth, say, "the shallower root relief",
-                        lost=_lost_targets):
-            best = e
+        best = tried(best, dict(best.values) | {name: x},
+                     f"with {name} {x:.3g} um (its LTE above {limit:g} urad)")
     return best
 
 
@@ -1344,26 +1364,16 @@ def checked_coast_relief(best: DevelopmentEvaluation, targets: DevelopmentTarget
     none: 32 / 47 µrad with 1.6 % on the edges and 2482 MPa. The path (−35°: 26 / 61,
     1555 MPa), M's place (±0.05 of the face: 30 / 70, 27 / 63) and the profile crowning
     (5 µm: 41 / 68) did less."""
-    name = "root_relief"
-    if (name not in targets.variables or name not in best.values
-            or not float(best.values[name]) > 0.0):
-        return best
-    lo, hi = (float(x) for x in targets.variables[name])
-    now = float(best.values[name])
-    for fraction in RELIEF_LTE_FRACTIONS:
-        if (best.full is None or not best.checked
-                or not np.nanmax(best.metrics["lte_peak_to_peak"]) > limit):
-            return best
-        x = float(np.clip(fraction * now, lo, hi))
-        if abs(x - float(best.values[name])) < 1e-9:
-            continue
-        values = dict(best.values) | {name: x}
-        e = _said_variant(best, values, "coast lte",
-                          f"with {name} {x:.3g} um (its LTE above {limit:g} urad)", targets,
-                          setup, teeth, say, placed, flank="coast", key_prefix=key_prefix)
+
+    def tried(best: DevelopmentEvaluation, values: dict[str, float],
+              said: str) -> DevelopmentEvaluation:
+        e = _said_variant(best, values, "coast lte", said, targets, setup, teeth, say,
+                          placed, flank="coast", key_prefix=key_prefix)
         if e is not None and _coast_kept(best, e, targets, "shallower root relief", say):
-            best = e
-    return best
+            return e
+        return best
+
+    return _shallower_root_relief(best, targets, limit, tried)
 
 
 #: the coast capacity step's lighter tip reliefs (:func:`checked_coast_peak`), each a
