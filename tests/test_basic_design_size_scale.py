@@ -15,6 +15,7 @@ import tomllib
 from dataclasses import replace
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from contact.optimize.development import (
@@ -106,3 +107,62 @@ def test_development_bounds_scaled():
     assert t.variables == {"tip_relief": (0.0, 60.0), "path_angle": (-80.0, -25.0)}
     with pytest.raises(InputError, match=r"development\.size_scale"):
         targets_from_table({"size_scale": 0.0})
+
+
+def test_mounting_excursions_follow_the_tooth():
+    """The tolerance check's default excursions ΔE, ΔP are 0.05 mm × size_scale
+    (development_targets.scaled_tolerance), to 0.1 µm: a pair of m_mn 1.18 mm (the unseen spiral
+    bevel 14x33 of issue 71) was judged at ±0.05 mm, 2.5 times its tooth's share of a
+    3 mm pair's, and its development kept a high, short bearing that `ltca run` failed.
+    Checked against the rule as stated (one product); a given value and a module of 3 mm
+    and above keep 0.05 mm exactly."""
+    from contact.optimize.development_targets import MOUNTING_EXCURSION, scaled_tolerance
+
+    assert MOUNTING_EXCURSION == 0.05
+    basic = load_basic(SMALL)
+    scale = basic.blank().m_mn / REFERENCE_MODULE
+    t = targets_from_table(basic.development, size_scale=basic.size_scale())
+    assert t.offset_tolerance == pytest.approx(0.05 * scale, abs=0.5e-4)  # to 0.1 um
+    assert t.offset_tolerance == round(t.offset_tolerance, 4) == t.mounting_tolerance
+    assert scaled_tolerance(1.0) == 0.05 and DevelopmentTargets().offset_tolerance == 0.05
+    given = targets_from_table({"offset_tolerance": 0.05, "mounting_tolerance": 0.0},
+                               size_scale=scale)
+    assert (given.offset_tolerance, given.mounting_tolerance) == (0.05, 0.0)
+    for bad in (0.0, math.nan, 11.0):
+        with pytest.raises(InputError, match="size_scale"):
+            scaled_tolerance(bad)
+    with pytest.raises(InputError, match=r"development\.offset_tolerance"):
+        targets_from_table({"offset_tolerance": -0.01})
+
+
+def test_tolerance_check_analyses_the_scaled_excursions(monkeypatch):
+    """The development's tolerance check (development_check.tolerance_checks) analyses a
+    small pair at its scaled excursions: ΔE = ±0.05·s and ΔP = ±0.05·s mm, one at a time
+    (a stand-in analysis records the misalignments it is given)."""
+    from contact.optimize import development_check as dcheck
+    from contact.optimize.development_targets import METRIC_NAMES
+
+    seen = []
+
+    def fake(case, torques, misalignment=None, options=None, teeth=None, pinion_key=(),
+             flank="drive"):
+        seen.append(misalignment)
+        one = {n: np.array([0.5, 0.5]) for n in METRIC_NAMES}
+        one |= {"pattern_toe_u": np.array([0.25, 0.2]), "pattern_heel_u":
+                np.array([0.75, 0.8]), "pattern_root_v": np.array([0.25, 0.2]),
+                "pattern_tip_v": np.array([0.75, 0.8]), "edge_load_share": np.zeros(2),
+                "plastic_share": np.zeros(2), "lte_peak_to_peak": np.array([20.0, 20.0]),
+                "pressure_max_flank": np.array([900.0, 1500.0]),
+                "lte_spread": np.array([0.1, 0.1])}
+        return one, (0.0, 1.0, 0.0, 1.0, 2400.0)
+
+    monkeypatch.setattr("contact.optimize.development_evaluate.analyse_design", fake)
+    scale = 0.395
+    targets = targets_from_table({}, size_scale=scale)
+    tol = dcheck.tolerance_checks(object(), targets, {"torques": [1.1, 7.45],
+                                                      "centre_v": 0.55}, None, {})
+    step = 0.0198  # 0.05 mm x 0.395 = 0.01975 mm, to 0.1 um
+    assert list(tol) == [f"dE{step:+g}", f"dE{-step:+g}", f"dP{step:+g}", f"dP{-step:+g}"]
+    got = [x for m in seen for x in (m.delta_E, m.delta_P, m.delta_G, m.delta_Sigma)]
+    want = [step, 0, 0, 0, -step, 0, 0, 0, 0, step, 0, 0, 0, -step, 0, 0]
+    assert got == pytest.approx(want, rel=1e-12, abs=0.0)

@@ -363,6 +363,9 @@ def _size_line(basic, targets) -> str | None:
     if targets is not None and "tip_relief" in targets.variables:
         lo, hi = targets.variables["tip_relief"]
         line += f", the development's relief bounds {lo:.3g}-{hi:.3g} um"
+    if targets is not None:
+        line += (f", its mounting excursions dE/dP +/-{targets.offset_tolerance:.3g}/"
+                 f"{targets.mounting_tolerance:.3g} mm")
     return line + " (docs/synthesis.md)"
 
 

@@ -9,9 +9,10 @@ pattern's footprint centre (:func:`footprint_centre`) and the depth centre aimed
 Public names
 ------------
 DevelopmentTargets, targets_from_table, VARIABLES, SIZE_SCALED_VARIABLES,
-scaled_variables, RELIEF_NAMES, TIP_RELIEF_START, TE_NAME, HEIGHT_NAME,
-CROWNING_NAME, EDGE_ROW_SHORTFALL, FAILED, METRIC_NAMES, STAGE_TERMS, working_depth_centre,
-development_score, footprint_centre
+scaled_variables, MOUNTING_EXCURSION, SIZE_SCALED_TOLERANCES, scaled_tolerance,
+RELIEF_NAMES, TIP_RELIEF_START, TE_NAME, HEIGHT_NAME, CROWNING_NAME, EDGE_ROW_SHORTFALL,
+FAILED, METRIC_NAMES, STAGE_TERMS, working_depth_centre, development_score,
+footprint_centre
 """
 
 from __future__ import annotations
@@ -31,10 +32,12 @@ from geometry.core.validation import known_fields, real
 from geometry.synthesis.basic_design import FLANK_OPTION_UNITS
 
 __all__ = ["CROWNING_NAME", "EDGE_ROW_SHORTFALL", "FAILED", "HEIGHT_NAME", "METRIC_NAMES",
-           "RELIEF_NAMES", "SIZE_SCALED_VARIABLES",
+           "MOUNTING_EXCURSION", "RELIEF_NAMES", "SIZE_SCALED_TOLERANCES",
+           "SIZE_SCALED_VARIABLES",
            "STAGE_TERMS", "TE_NAME", "TIP_RELIEF_START", "VARIABLES", "VERDICT_FAIL_PENALTY",
            "DevelopmentTargets",
-           "development_score", "footprint_centre", "lte_torque_terms", "scaled_variables",
+           "development_score", "footprint_centre", "lte_torque_terms", "scaled_tolerance",
+           "scaled_variables",
            "targets_from_table", "working_depth_centre"]
 
 
@@ -78,6 +81,50 @@ def scaled_variables(scale: float) -> dict[str, tuple[float, float]]:
     normal module of 3 mm and above, where the bounds are :data:`VARIABLES` exactly)."""
     return {n: ((scale * lo, scale * hi) if n in SIZE_SCALED_VARIABLES else (lo, hi))
             for n, (lo, hi) in VARIABLES.items()}
+
+
+#: [mm] the mounting excursions ΔE = ±V, ΔP = ±H of the development's tolerance check at
+#: a mean normal module of 3 mm and above (``offset_tolerance``, ``mounting_tolerance`` of
+#: :class:`DevelopmentTargets`): a careful axle assembly, well inside the V-H check's
+#: ±0.4/±0.3 mm grid
+MOUNTING_EXCURSION = 0.05
+
+
+#: the tolerance check's excursions [mm] whose defaults follow the tooth size
+#: (:func:`scaled_tolerance`)
+SIZE_SCALED_TOLERANCES = ("offset_tolerance", "mounting_tolerance")
+
+
+def scaled_tolerance(scale: float) -> float:
+    """The default mounting excursion of the tolerance check [mm]:
+    :data:`MOUNTING_EXCURSION` × ``scale`` [1], rounded to 0.1 µm
+    (:func:`geometry.synthesis.basic_design.size_scale`: 1 at a mean normal module of
+    3 mm and above, where it is 0.05 mm exactly).
+
+    Why with the size: a displacement of the pinion (ΔP) or of the offset (ΔE) moves the
+    contact pattern by an amount in proportion to it, across a tooth whose face width and
+    depth are in proportion to the module; the bearing's reliefs, crowning and approach that
+    absorb the move follow the module (:data:`SIZE_SCALED_VARIABLES`), so an excursion
+    held at 0.05 mm is 2.5 times as large, relative to the tooth, on a pair of m_mn 1.2 mm
+    as on one of 3 mm. The displacements an assembly has to tolerate grow with the size
+    as well (the shafts' and housing's deflections at the same stress, Johnson, *Contact
+    Mechanics*, 1985, §4.2, the similarity of
+    :func:`geometry.synthesis.basic_design.size_scale`; ISO 17485's tolerances grow with
+    the module). Measured on the spiral bevel 14×33 of m_mn 1.18 mm of
+    benchmarks/data/unseen_designs: at ±0.05 mm the development kept a high, short
+    bearing that `ltca run` failed (edge contact at 15 % of the design torque) and the
+    design torque was cut 7.45 → 2.0 N·m; at ±0.0197 mm (× 0.395) the development kept a
+    centred bearing, the design torque stayed 7.45 N·m and `ltca run` passed — as the
+    same pair at three times the size (m_mn 3.55 mm, amounts × 3) developed at ±0.05 mm
+    (docs/synthesis.md, "Small modules: the mounting excursions follow the tooth").
+
+    Raises
+    ------
+    InputError
+        ``scale`` not a finite number in (0, 10].
+    """
+    s = real("size_scale", scale, unit="1", low=0.0, high=10.0, low_open=True)
+    return round(MOUNTING_EXCURSION * s, 4)  # to 0.1 µm, as the result lines print it
 
 
 #: the relief inputs (the blade's toprem and flankrem; no new synthesis of steps 3-6)
@@ -203,10 +250,12 @@ class DevelopmentTargets:
         strength σ_Hlim·Z_NT,static of the weaker member's material at grade MQ, the limit
         above which the verdict finds "no life at this torque"
         (:mod:`contact.study.verdicts`, ISO 6336-2/-5).
-    offset_tolerance, mounting_tolerance : float — [mm]
+    offset_tolerance, mounting_tolerance : float or None — [mm]
         The excursions ΔE = ±V and ΔP = ±H of the tolerance check (the V-H check's
-        directions); default 0.05 mm each (a careful axle assembly, well inside the V-H
-        check's ±0.4/±0.3 mm grid).
+        directions); default None: :data:`MOUNTING_EXCURSION` (0.05 mm, a careful axle
+        assembly, well inside the V-H check's ±0.4/±0.3 mm grid) × ``size_scale``
+        (:func:`scaled_tolerance`: the excursion follows the tooth size as the µm amounts
+        do). A value given is used as given.
     max_evaluations : int
         Most designs analysed; default 22, at most 6 of them in the bearing stage (each a
         synthesis, ≈ 2 s CPU), the rest in the relief stage (each ≈ 0.3 s): 10 on the best
@@ -230,7 +279,9 @@ class DevelopmentTargets:
         bounds of :data:`SIZE_SCALED_VARIABLES` and the steps
         :data:`~contact.optimize.development_stages.CROWNING_STEP`,
         :data:`~contact.optimize.development_stages.ROOT_HEIGHT_RELIEF` and
-        :data:`~contact.optimize.development_check.TOLERANCE_RELIEF_STEP`; in (0, 10].
+        :data:`~contact.optimize.development_check.TOLERANCE_RELIEF_STEP`, and the
+        default excursions ``offset_tolerance``, ``mounting_tolerance``
+        (:func:`scaled_tolerance`); in (0, 10].
         Default 1 here; ``ltca synthesize`` gives the design's
         :func:`geometry.synthesis.basic_design.size_scale` (m_mn / 3 mm below 3 mm, else
         1) unless the ``[development]`` table gives it.
@@ -257,8 +308,8 @@ class DevelopmentTargets:
     max_plastic_share: float = 0.0
     max_lte: float = 40.0
     max_flank_pressure: float | None = None
-    offset_tolerance: float = 0.05
-    mounting_tolerance: float = 0.05
+    offset_tolerance: float | None = None
+    mounting_tolerance: float | None = None
     max_evaluations: int = 36
     coast_max_evaluations: int = 20
     variables: Mapping[str, tuple[float, float]] | None = None
@@ -282,9 +333,11 @@ class DevelopmentTargets:
         chk("max_lte", 0.0, 1000.0, unit="urad", low_open=True)
         if self.max_flank_pressure is not None:
             chk("max_flank_pressure", 0.0, 1e5, unit="MPa", low_open=True)
-        chk("offset_tolerance", 0.0, 5.0, unit="mm")
-        chk("mounting_tolerance", 0.0, 5.0, unit="mm")
         chk("size_scale", 0.0, 10.0, low_open=True)
+        for name in SIZE_SCALED_TOLERANCES:  # the defaults follow the tooth size
+            if getattr(self, name) is None:
+                object.__setattr__(self, name, scaled_tolerance(self.size_scale))
+            chk(name, 0.0, 5.0, unit="mm")
         if self.variables is None:  # the defaults, µm bounds following the tooth size
             object.__setattr__(self, "variables", scaled_variables(self.size_scale))
         for name, low in (("max_evaluations", 1), ("coast_max_evaluations", 0)):
