@@ -12,9 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from development_stand_ins import checked
+from development_stand_ins import checked, stand_in
 from development_stand_ins import metrics as _metrics
-from development_stand_ins import stand_in
 
 from contact.optimize import development_check as dcheck
 
