@@ -600,7 +600,11 @@ def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     torque. The 7x39 at Σ 85° (ε_vβ 1.247, 23.8 / 159.2 N m, path −80°, ``te_level`` 25):
     the long bearing's ellipse 0.75: 0.70 long, LTE 16 / 20 µrad; 0.65: 0.62, 29 / 31;
     0.605: 0.62; 0.6: 0.60, 38 / 40.5 (the LTE target 40 missed); 0.59: 0.58, 40 / 43;
-    0.6 with ``te_level`` 15: 0.60, 36 / 38 µrad, every target met."""
+    0.6 with ``te_level`` 15: 0.60, 36 / 38 µrad, every target met. The step on it in
+    ``ltca synthesize``: 0.625 (0.63 long), 0.562 (0.57, 46 / 49 µrad), 0.594 (0.57, 39 /
+    42), 0.594 with ``te_level`` 15 (37 / 39 µrad, every target met, tolerant, kept); on
+    the 6x61 one design, 0.717 (docs/synthesis.md, "The pattern's length at the
+    check")."""
     name = "ellipse_length"
     if (best.full is None or not best.checked or best.full[1]["length"] == 0.0
             or name not in targets.variables or name not in best.values):
