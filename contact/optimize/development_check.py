@@ -359,7 +359,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
     longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the
     ellipse a step longer (:func:`checked_ellipse`), then the long bearing
-    (:func:`checked_long`) and a shallower root relief where it exceeds 60 µrad
+    (:func:`checked_long`), the ellipse searched for a pattern length still missed
+    (:func:`checked_length`), a shallower root relief where the LTE exceeds 60 µrad
     (:func:`checked_relief_lte`), then a flatter profile and a deeper TE parabola
     (:func:`checked_crowning_lte`); its TE level raised back to the flank's own where it
     still misses a target (:func:`checked_te_back`); M placed again where those steps
@@ -385,6 +386,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = _checked_root(best, targets, setup, teeth, say, placed)
     best = checked_ellipse(best, targets, setup, teeth, say, placed)
     best = checked_long(best, targets, setup, teeth, say, placed)
+    best = checked_length(best, targets, setup, teeth, say, placed, level=level)
     best = checked_relief_lte(best, targets, setup, teeth, say, placed)
     best = checked_crowning_lte(best, targets, setup, teeth, say, placed, level=level)
     best = checked_te_back(best, targets, setup, teeth, say, placed, level)
@@ -531,6 +533,136 @@ def checked_long(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     # light-load pattern 0.03-0.98 of the face, on toe and heel, 2.7 % on edges)
     return best if kept_why(best, e, targets, setup, teeth, say, "the long bearing",
                             lost=_lost_but_length, tolerant=flank == "drive") else e
+
+
+#: the check's pattern-length step (:func:`checked_length`): most designs of its search on
+#: the ellipse (each a synthesis of steps 3-6 and a check)
+LENGTH_DESIGNS = 4
+#: [1 of the face per unit of ``ellipse_length``] the least slope d(length)/d(ellipse) the
+#: step's secant takes (the light-load pattern moves by nodes of 0.025 of the face, so a
+#: secant over less than a node is the grid's); measured 0.5 on the face-hobbed 6x61 at
+#: its light torque, 0.6-0.8 on the 7x39, 0.9 on face-milled pairs
+LENGTH_SLOPE_MIN = 0.3
+#: [1 of the face] how far inside the length's band the step aims a pattern too long: half
+#: a node of the check's grid along the face (the longest ellipse within the band is the
+#: one with the least LTE); a pattern too short is aimed at the band's middle
+LENGTH_AIM_MARGIN = 0.0125
+#: [µrad] ``te_level`` lowered by this (within its bounds) on the step's design that meets
+#: the length and misses, of the targets the design met, the LTE alone and by at most
+#: :data:`NEAR_MISS` of its unit (5 µrad): measured 2.3-2.4 µrad less LTE at both torques
+#: for ``te_level`` 25 → 15 on the 7x39 (:func:`checked_length`)
+LENGTH_TE_STEP = 10.0
+
+
+def _pattern_length(e: DevelopmentEvaluation) -> float:
+    """[1 of the face] A checked design's light-load pattern length."""
+    return float(e.metrics["pattern_heel_u"][0] - e.metrics["pattern_toe_u"][0])
+
+
+def length_aim(length: float, targets: DevelopmentTargets) -> float:
+    """[1 of the face] The light-load pattern length :func:`checked_length` aims a
+    pattern of ``length`` [1] at: a pattern too long just inside the band's upper edge
+    (:data:`LENGTH_AIM_MARGIN`: the longest ellipse within the band has the least LTE), one
+    too short at the band's middle (``targets.pattern_length``: a longer ellipse lowers
+    the LTE too)."""
+    hi = targets.pattern_length + targets.pattern_length_tolerance
+    return hi - LENGTH_AIM_MARGIN if length > hi else targets.pattern_length
+
+
+def checked_length(best: DevelopmentEvaluation, targets: DevelopmentTargets,
+                   setup: Mapping[str, Any], teeth: KeptTeeth | None,
+                   say: Callable[[str], None],
+                   placed: Callable[[Mapping[str, float]], Case], *,
+                   level: float = math.nan) -> DevelopmentEvaluation:
+    """A pattern length missed at the check after the LTE steps, found by the ellipse
+    (the lengthwise crowning): a secant search on ``ellipse_length`` for the light-load
+    pattern length, aimed by :func:`length_aim` (first step at
+    :data:`LENGTH_PER_ELLIPSE`, then the measured slope, at least
+    :data:`LENGTH_SLOPE_MIN`), bisecting once a design has met the length or overshot it
+    and one has not, at most :data:`LENGTH_DESIGNS` designs (each a synthesis of steps 3-6
+    placed and checked at :data:`CHECK_LTCA`, every other prescription kept). The first
+    design that meets the length, scores better, misses no target the design met and is
+    tolerant is kept (:func:`kept_why`); where one meets the length and gives up the LTE
+    alone, by at most :data:`NEAR_MISS` of its unit, it is tried once more with
+    ``te_level`` :data:`LENGTH_TE_STEP` lower (``level`` [µrad]: the flank's own, where
+    the design's values carry none) before the search goes on.
+
+    Why: no other check step moves a pattern into its length band. The path step turns
+    the path (and shortens the ellipse only with a turn, lengthens it only where no turn
+    is left), :func:`checked_ellipse` lengthens it by one step where only the LTE is
+    missed, and :func:`checked_long` takes it to its upper bound, giving up the length for
+    the LTE. On face-hobbed hypoids of benchmarks/data/unseen_designs (``benchmarks/
+    development_levers.py --check --from-case``, 2026-11-27): the 6x61 at a 40 mm offset,
+    its design torque lowered to its local pitting capacity (131 → 60.3 N m) after the
+    search, so its light torque 19.6 → 9.0 N m: ellipse 0.55 at path −80°: pattern 0.35
+    long (0.40 at path −58.8°, unchanged by the turn), 0.65: 0.40, 0.717: 0.43 (LTE 13 /
+    13 µrad, tolerant), 0.75: 0.45 — 0.5 of the face per unit of ellipse at that light
+    torque. The 7x39 at Σ 85° (ε_vβ 1.247, 23.8 / 159.2 N m, path −80°, ``te_level`` 25):
+    the long bearing's ellipse 0.75: 0.70 long, LTE 16 / 20 µrad; 0.65: 0.62, 29 / 31;
+    0.605: 0.62; 0.6: 0.60, 38 / 40.5 (the LTE target 40 missed); 0.59: 0.58, 40 / 43;
+    0.6 with ``te_level`` 15: 0.60, 36 / 38 µrad, every target met. The step on it in
+    ``ltca synthesize``: 0.625 (0.63 long), 0.562 (0.57, 46 / 49 µrad), 0.594 (0.57, 39 /
+    42), 0.594 with ``te_level`` 15 (37 / 39 µrad, every target met, tolerant, kept); on
+    the 6x61 one design, 0.717 (docs/synthesis.md, "The pattern's length at the
+    check")."""
+    name = "ellipse_length"
+    if (best.full is None or not best.checked or best.full[1]["length"] == 0.0
+            or name not in targets.variables or name not in best.values):
+        return best
+    lo, hi = (float(x) for x in targets.variables[name])
+    x0, length0 = float(best.values[name]), _pattern_length(best)
+    band_hi = targets.pattern_length + targets.pattern_length_tolerance
+    too_long = length0 > band_hi
+    aim = length_aim(length0, targets)
+    far = [(x0, length0)]  # designs whose pattern misses the length as the design's does
+    near: float | None = None  # the nearest ellipse that met the length or overshot it
+    for _ in range(LENGTH_DESIGNS):
+        fx, fl = far[-1]
+        if near is None:
+            slope = LENGTH_PER_ELLIPSE
+            if len(far) > 1 and far[-1][0] != far[-2][0]:
+                measured = abs((far[-1][1] - far[-2][1]) / (far[-1][0] - far[-2][0]))
+                slope = max(LENGTH_SLOPE_MIN, measured) if math.isfinite(measured) else slope
+            step = (aim - fl) / slope
+            step = math.copysign(max(abs(step), SHORTER_ELLIPSE_STEP), step)
+            x = float(np.clip(fx + step, lo, hi))
+        else:
+            x = 0.5 * (fx + near)
+        x = round(x, 4)
+        if abs(x - fx) < 1e-9 or any(abs(x - t) < 1e-9 for t, _ in far):
+            break
+        e = _said_variant(best, best.values | {name: x}, "length",
+                          f"with the ellipse {x:.3g} (its pattern {length0:.2f} long)",
+                          targets, setup, teeth, say, placed)
+        if e is None:
+            break
+        length = _pattern_length(e)
+        if e.full[1]["length"] > 0.0 and (length > band_hi) == too_long:
+            far.append((x, length))
+            continue
+        if e.full[1]["length"] > 0.0:  # overshot the band
+            near = x
+            continue
+        why = kept_why(best, e, targets, setup, teeth, say, "the ellipse for the length",
+                       lost=_lost_targets)
+        if not why:
+            return e
+        near = x
+        if (_lost_targets(best, e) == ["lte"] and e.full[1]["lte"] <= NEAR_MISS
+                and TE_NAME in targets.variables):
+            t_lo = float(targets.variables[TE_NAME][0])
+            now = float(e.values.get(TE_NAME, level))
+            level = max(t_lo, now - LENGTH_TE_STEP)
+            if math.isfinite(now) and level < now - 1e-9:
+                f = _said_variant(best, e.values | {TE_NAME: level}, "length",
+                                  f"with the ellipse {x:.3g} at {TE_NAME} {level:.3g} urad "
+                                  "(the length met, its LTE missed)",
+                                  targets, setup, teeth, say, placed)
+                if not kept_why(best, f, targets, setup, teeth, say,
+                                "the ellipse for the length with the lower TE level",
+                                lost=_lost_targets):
+                    return f
+    return best
 
 
 #: the root relief of :func:`checked_relief_lte`'s designs, as fractions of the design's,
