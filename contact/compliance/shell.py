@@ -799,7 +799,7 @@ def _half_vectors_of(model: ShellModel, ends: np.ndarray, normals: np.ndarray | 
     # the segments' mean load vectors (n_dof, N): Gauss sums over their G points
     phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs, group_weights=w)
     # one triangular product for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
-    return model.half_solve(phi)
+    return model.half_solve(phi, overwrite_loads=True)  # (phi is this call's own)
 
 
 def compliance_blocks(
