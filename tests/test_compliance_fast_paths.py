@@ -416,6 +416,41 @@ def test_kept_points_and_columns_equal_a_fresh_assembly():
     empty()
 
 
+def test_rows_not_kept_compute_as_a_process_that_kept_none():
+    """Inside ``rows_not_kept`` (a study point, issue 75 item 4) the stores of mapped points
+    and columns are neither read nor filled: with rows of the first roll kept before, the
+    block's matrices are the fresh assembly's bit for bit (all rows in one batch, as with
+    empty stores), and the stores hold what they held before the block."""
+    from contact.compliance import mesh as mesh_mod
+    from contact.compliance import shell as shell_mod
+    from contact.compliance.mesh import mesh_compliance_many, pair_compliance_model
+    from geometry.core.caches import Same, rows_kept, rows_not_kept
+
+    def empty():
+        mesh_mod._point_store.cache_clear()
+        shell_mod._half_vector_store.cache_clear()
+
+    case, batch = _three_rolls()
+    model = pair_compliance_model(case)
+    empty()
+    fresh = mesh_compliance_many(case, batch, model=model)
+    empty()
+    mesh_compliance_many(case, batch[:1], model=model)  # the first roll's rows kept
+    stores = [mesh_mod._point_store(Same(model.member(m))) for m in ("pinion", "gear")]
+    before = [dict(st.rows) for st in stores]
+    assert all(before)  # (the stores the assembly uses, each holding the first roll's)
+    assert rows_kept()
+    with rows_not_kept():
+        assert not rows_kept()
+        inside = mesh_compliance_many(case, batch, model=model)
+    assert rows_kept()
+    assert [dict(st.rows) for st in stores] == before
+    for (c0, i0), (c1, i1) in zip(fresh, inside, strict=True):
+        np.testing.assert_array_equal(c1, c0)
+        np.testing.assert_array_equal(i1["weber_depth"], i0["weber_depth"])
+    empty()
+
+
 def _three_rolls():
     """The segments of three roll positions of the ISO 23509 hypoid as ContactSegments."""
     from contact.compliance.mesh import ContactSegments
