@@ -10,7 +10,10 @@ temporary directory, on ``PYTHONPATH``) the points of issue 75's study row
 default case at 250 N·m, each point a new misalignment ΔE, ΔP, so nothing is a memo hit),
 after one warm-up point, with :class:`stage_clock.StageClock` (this tree's, for both)
 adding up the exclusive CPU time of each stage, and prints per stage the mean CPU per
-point [ms] of each tree. CPU time ``time.process_time`` (issue 75's measure: the machine
+point [ms] of each tree. With two trees the children run side by side and take the points
+in turn, point by point (each tree first every other point), so the machine's load moves
+both columns alike; the ratio row of the point is then also the median of the per-point
+ratios. CPU time ``time.process_time`` (issue 75's measure: the machine
 is shared, wall times mean little); the point's median and mean over the points.
 
 The stages are those of ``benchmarks/stage_clock.py`` and, nested in them, the parts
@@ -81,7 +84,9 @@ def on_gc(phase, info):  # the cyclic collector's CPU, by generation (nested in 
 
 gc.callbacks.append(on_gc)
 cpu = []
-for i in range(n):
+print("ready", flush=True)
+for line in sys.stdin:  # the parent's turn: the index of the next point
+    i = int(line)
     f = (i - (n - 1) / 2) / max(n - 1, 1)  # -1/2 ... 1/2
     point = {"delta_E": m.delta_E + 0.08 * f, "delta_P": m.delta_P - 0.04 * f}
     t0 = time.process_time()
@@ -89,6 +94,7 @@ for i in range(n):
     cpu.append(time.process_time() - t0)
     if res.status == 2:
         raise RuntimeError(f"study point {point} failed: {res.reason}")
+    print(cpu[-1], flush=True)
 clock.remove()
 gc.callbacks.remove(on_gc)
 print(json.dumps({"cpu": cpu, "stages": {k: v / n for k, v in clock.cpu.items()},
@@ -97,13 +103,35 @@ print(json.dumps({"cpu": cpu, "stages": {k: v / n for k, v in clock.cpu.items()}
 """
 
 
-def measure(tree: Path, points: int) -> dict:
-    """The child's result for one tree: ``cpu`` per point [s], ``stages`` [s per point]."""
-    env = {**os.environ, "PYTHONPATH": str(tree)}
-    out = subprocess.run([sys.executable, "-c", _CHILD, str(ROOT / "benchmarks"), str(points),
-                          str(TORQUE), json.dumps(EXTRA)], cwd=tree, env=env, check=True,
-                         capture_output=True, text=True).stdout
-    return json.loads(out.strip().splitlines()[-1])
+def measure(trees: list[Path], points: int) -> list[dict]:
+    """The children's results, one per tree: ``cpu`` per point [s], ``stages`` [s per
+    point]; the trees' children take the points in turn (each first every other point)."""
+    procs = [subprocess.Popen([sys.executable, "-c", _CHILD, str(ROOT / "benchmarks"),
+                               str(points), str(TORQUE), json.dumps(EXTRA)], cwd=tree,
+                              env={**os.environ, "PYTHONPATH": str(tree)},
+                              stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+             for tree in trees]
+    try:
+        for p in procs:
+            if p.stdout.readline().strip() != "ready":
+                raise RuntimeError("a study point child failed before its points")
+        for i in range(points):
+            for p in procs if i % 2 == 0 else procs[::-1]:
+                p.stdin.write(f"{i}\n")
+                p.stdin.flush()
+                if not p.stdout.readline():
+                    raise RuntimeError(f"a study point child failed at point {i}")
+        out = []
+        for p in procs:
+            p.stdin.close()
+            out.append(json.loads(p.stdout.read().strip().splitlines()[-1]))
+            if p.wait() != 0:
+                raise RuntimeError("a study point child failed")
+        return out
+    finally:
+        for p in procs:
+            if p.poll() is None:
+                p.kill()
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -119,7 +147,8 @@ def main(argv: list[str] | None = None) -> None:
         trees = [("this tree", ROOT)]
         if args.before:
             trees.insert(0, (args.before, export_tree(args.before, Path(tmp))))
-        res = {name: measure(tree, args.points) for name, tree in trees}
+        res = dict(zip([name for name, _ in trees],
+                       measure([tree for _, tree in trees], args.points), strict=True))
     names = [name for name, _ in trees]
     stages = sorted({s for r in res.values() for s in r["stages"]},
                     key=lambda s: -res["this tree"]["stages"].get(s, 0.0))
@@ -133,8 +162,12 @@ def main(argv: list[str] | None = None) -> None:
     rows += gc_rows
     if len(names) == 2:
         for r in rows:
-            r.append(f"{r[2] / r[1]:.2f}" if r[1] else "")
+            r.append(f"{r[2] / r[1]:.2f} ×" if r[1] else "")
         names.append("ratio")
+        pairs = [b / a for a, b in zip(res[names[0]]["cpu"], res[names[1]]["cpu"],
+                                       strict=True)]
+        rows.append(["point, median of the per-point ratios", None, None,
+                     f"{statistics.median(pairs):.2f} ×"])
     print(f"a study point's CPU [ms] by stage (exclusive), {args.points} points, "
           f"{TORQUE:g} N·m; target 120 ms")
     print(tabulate(rows, headers=["stage", *names], floatfmt=".1f"))

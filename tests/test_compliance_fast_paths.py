@@ -24,6 +24,7 @@ import numpy as np
 import pytest
 
 from contact.compliance.shell import ShellTooth, build_shell_model, compliance_blocks
+from contact.compliance.shell_tooth import THEORIES
 from contact.compliance.tooth import _PROJ_ITER, _project_to_mid, shell_tooth_from_case
 from contact.compliance.tooth_map import _TRAJ_STEPS, KERNEL_MODULE, _mid_rows, stack_surfaces
 from contact.compliance.tooth_map import angle_rows as _angle_rows
@@ -218,15 +219,38 @@ def test_half_solve_compliance_equals_cho_solve(modes):
                                    atol=1e-12 * np.abs(ref).max())
 
 
-def test_grouped_load_vectors_equal_the_weighted_sums():
-    """load_vectors(..., group_weights=w): each group's Σ w_g φ_g, as the per-point
-    vectors summed (the same products in another order: round-off, 1e-13 of the
-    largest entry); a group size that does not divide the points is refused."""
+def test_half_solve_in_place_equals_the_copy():
+    """half_solve(F, overwrite_loads=True): the same Y bit for bit as with a copy, written
+    into F where F is a Fortran-ordered float array (no copy), and F left as it was where
+    it is not (a C-ordered array is copied as without the flag)."""
     tooth = ShellTooth.from_face_width(thickness_toe_root=8.0, thickness_heel_root=10.0,
                                        thickness_tip=3.0, height_toe=9.0, height_heel=11.0,
                                        face_width=40.0, radius=80.0, youngs_modulus=206000.0,
                                        poisson_ratio=0.3)
     model = build_shell_model(tooth, 5, 9)
+    loads = np.random.default_rng(3).normal(size=(model.n_dof, 11))
+    want = model.half_solve(loads)
+    for order, in_place in (("F", True), ("C", False)):
+        f = np.array(loads, order=order)
+        got = model.half_solve(f, overwrite_loads=True)
+        np.testing.assert_array_equal(got, want)
+        assert np.shares_memory(got, f) is in_place
+        if not in_place:
+            np.testing.assert_array_equal(f, loads)
+
+
+@pytest.mark.parametrize("theory", sorted(THEORIES))
+def test_grouped_load_vectors_equal_the_weighted_sums(theory):
+    """load_vectors(..., group_weights=w): each group's Σ w_g φ_g, as the per-point
+    vectors summed (the same products in another order: round-off, 1e-13 of the
+    largest entry), for every theory (a rotating family's ∂W/∂θ term, families without
+    work of a force: the one stacked product of every family); a group size that does not
+    divide the points is refused."""
+    tooth = ShellTooth.from_face_width(thickness_toe_root=8.0, thickness_heel_root=10.0,
+                                       thickness_tip=3.0, height_toe=9.0, height_heel=11.0,
+                                       face_width=40.0, radius=80.0, youngs_modulus=206000.0,
+                                       poisson_ratio=0.3)
+    model = build_shell_model(tooth, 5, 9, theory=theory)
     rng = np.random.default_rng(8)
     n, g = 7, 3
     theta = rng.uniform(0.05, 0.9, n * g) * tooth.subtended_angle
@@ -389,6 +413,41 @@ def test_kept_points_and_columns_equal_a_fresh_assembly():
         np.testing.assert_allclose(c2, c0, rtol=1e-12, atol=1e-12 * np.abs(c0).max())
         np.testing.assert_allclose(i2["weber_depth"], i0["weber_depth"], rtol=1e-12)
     assert mesh_mod._point_store.cache_info().currsize == 2  # one store per member
+    empty()
+
+
+def test_rows_not_kept_compute_as_a_process_that_kept_none():
+    """Inside ``rows_not_kept`` (a study point, issue 75 item 4) the stores of mapped points
+    and columns are neither read nor filled: with rows of the first roll kept before, the
+    block's matrices are the fresh assembly's bit for bit (all rows in one batch, as with
+    empty stores), and the stores hold what they held before the block."""
+    from contact.compliance import mesh as mesh_mod
+    from contact.compliance import shell as shell_mod
+    from contact.compliance.mesh import mesh_compliance_many, pair_compliance_model
+    from geometry.core.caches import Same, rows_kept, rows_not_kept
+
+    def empty():
+        mesh_mod._point_store.cache_clear()
+        shell_mod._half_vector_store.cache_clear()
+
+    case, batch = _three_rolls()
+    model = pair_compliance_model(case)
+    empty()
+    fresh = mesh_compliance_many(case, batch, model=model)
+    empty()
+    mesh_compliance_many(case, batch[:1], model=model)  # the first roll's rows kept
+    stores = [mesh_mod._point_store(Same(model.member(m))) for m in ("pinion", "gear")]
+    before = [dict(st.rows) for st in stores]
+    assert all(before)  # (the stores the assembly uses, each holding the first roll's)
+    assert rows_kept()
+    with rows_not_kept():
+        assert not rows_kept()
+        inside = mesh_compliance_many(case, batch, model=model)
+    assert rows_kept()
+    assert [dict(st.rows) for st in stores] == before
+    for (c0, i0), (c1, i1) in zip(fresh, inside, strict=True):
+        np.testing.assert_array_equal(c1, c0)
+        np.testing.assert_array_equal(i1["weber_depth"], i0["weber_depth"])
     empty()
 
 

@@ -49,7 +49,7 @@ from contact.compliance.tooth import (
 )
 from contact.compliance.weber import weber_compliance
 from geometry.case import TeethKey
-from geometry.core.caches import BatchedRows, Same, memoised, row_keys
+from geometry.core.caches import BatchedRows, Same, memoised, row_keys, rows_kept
 from geometry.core.errors import InputError
 from geometry.core.hertz import STEEL
 from geometry.core.validation import integer, real, real_array
@@ -611,7 +611,9 @@ def _kept_mapping(jobs: list) -> list[list[ShellPoints]]:
     one batch as before (a point's coordinates are its own to round-off: the batch
     iterates until its slowest point converged); a point the mapping refuses raises as
     there and is not kept."""
-    if warm_seeds_active():  # a development's trial: its teeth are new at every trial
+    # a development's trial (its teeth new at every trial), a study point (its segments
+    # new at every point, geometry.core.caches.rows_not_kept): nothing kept
+    if warm_seeds_active() or not rows_kept():
         return shell_points_many(jobs, END_TOLERANCE)
     stores = [_point_store(Same(job[0])) for job in jobs]
     with contextlib.ExitStack() as held:

@@ -55,7 +55,7 @@ from contact.compliance.shell_tooth import (
     Theory,
 )
 from contact.errors import ASYMMETRY_LIMIT, AsymmetricComplianceError
-from geometry.core.caches import BatchedRows, Same, memoised, row_keys
+from geometry.core.caches import BatchedRows, Same, memoised, row_keys, rows_kept
 from geometry.core.errors import InputError, LTCAError, ModelUnavailableError
 from geometry.core.validation import integer, one_of, positive, real_array
 from geometry.machine.meshing import warm_seeds_active
@@ -750,7 +750,9 @@ def _half_vectors(model: ShellModel, ends: np.ndarray, normals: np.ndarray | Non
     call with none kept gives the same array as that product. The kept columns are copied
     in a batch at a time (a take of the batch's rows)."""
     nrm = None if normals is None else np.asarray(normals, dtype=float)
-    if warm_seeds_active():  # a development's trial: its teeth are new at every trial
+    # a development's trial (its teeth new at every trial), a study point (its segments
+    # new at every point, geometry.core.caches.rows_not_kept): nothing kept
+    if warm_seeds_active() or not rows_kept():
         return _half_vectors_of(model, ends, nrm, ng)
     n_pts = ends.shape[0]
     rows = [ends.reshape(n_pts, 4)] + ([] if nrm is None else [nrm])
@@ -799,7 +801,7 @@ def _half_vectors_of(model: ShellModel, ends: np.ndarray, normals: np.ndarray | 
     # the segments' mean load vectors (n_dof, N): Gauss sums over their G points
     phi = model.load_vectors(gp[:, 0], gp[:, 1], d, zs, group_weights=w)
     # one triangular product for all segments (same matrix to round-off as Φᵀ (K⁻¹ Φ))
-    return model.half_solve(phi)
+    return model.half_solve(phi, overwrite_loads=True)  # (phi is this call's own)
 
 
 def compliance_blocks(

@@ -68,6 +68,7 @@ from contact.study.summary import (
     summary_variable,
 )
 from geometry import __version__
+from geometry.core.caches import rows_not_kept
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError
 
@@ -119,7 +120,11 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
     a point) and
     :func:`friction.efficiency.efficiency_analysis` of its ``/ltca`` at each speed, so a
     study's numbers equal those of single analyses at the same inputs (but for the order
-    of floating-point sums: ≈ 1e-15 relative).
+    of floating-point sums: ≈ 1e-15 relative). The analysis runs inside
+    :func:`geometry.core.caches.rows_not_kept`: its contact segments are new, so the
+    compliance's mapped points and columns are computed as in a process that kept none
+    (a point no longer depends, at round-off, on the rows earlier points left in the
+    stores), without the stores' bookkeeping.
     """
     from contact.chain import AnalysisChain
     from contact.pipeline import run_analysis
@@ -131,12 +136,16 @@ def analyse_point(shared: StudyInputs, index: int, point: Mapping[str, float]) -
 
         prime_cache(shared.coefficients)
     try:
-        tree = run_analysis(
-            dataclasses.replace(case, misalignment=misalignment_of(case.misalignment, point)),
-            list(shared.torque), flank=shared.flank, options=shared.options,
-            deviations=shared.deviations_at(point.get("deviation_scale")),
-            theoretical=False,
-            steps=AnalysisChain.contact_only().with_root_stress(shared.root_stress))
+        # a point's contact segments are new (its own misalignment, deviations): the
+        # compliance's stores of mapped points and columns would keep nothing it reads
+        with rows_not_kept():
+            tree = run_analysis(
+                dataclasses.replace(case,
+                                    misalignment=misalignment_of(case.misalignment, point)),
+                list(shared.torque), flank=shared.flank, options=shared.options,
+                deviations=shared.deviations_at(point.get("deviation_scale")),
+                theoretical=False,
+                steps=AnalysisChain.contact_only().with_root_stress(shared.root_stress))
         friction = []
         if shared.speed:
             ltca = tree["/ltca"].to_dataset()

@@ -25,17 +25,22 @@ memoised         decorator: ``functools.lru_cache`` registered with :func:`clear
 clear_caches     empty every registered cache; returns their names
 cache_sizes      the number of entries each registered cache holds now
 row_keys         each row of a float array as a memo key (its bytes)
+rows_not_kept    context: the stores of rows (BatchedRows) bypassed inside it
+rows_kept        whether the stores of rows are in use here (not inside rows_not_kept)
 """
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import functools
 import itertools
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any, TypeVar
 
-__all__ = ["Same", "cache_sizes", "clear_caches", "memoised", "row_keys"]
+__all__ = ["Same", "cache_sizes", "clear_caches", "memoised", "row_keys", "rows_kept",
+           "rows_not_kept"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -172,6 +177,46 @@ class BatchedRows:
         used = set(np.unique(np.fromiter(self.rows.values(), dtype=np.int64) >> 32).tolist())
         for b in [b for b in self.batches if b not in used]:
             del self.batches[b]
+
+
+#: False inside :func:`rows_not_kept` (this thread or task's context only)
+_ROWS_KEPT: contextvars.ContextVar[bool] = contextvars.ContextVar("rows_kept", default=True)
+
+
+@contextlib.contextmanager
+def rows_not_kept() -> Iterator[None]:
+    """Inside this block the stores of rows (:class:`BatchedRows`: the shell model's
+    columns of Y, the tooth model's mapped points) are neither read nor filled: each call
+    computes all its rows in one batch, as in a process that kept none.
+
+    For work whose rows are new at every call: a study point (each a new misalignment or
+    deviation, so new contact segments; one analysis maps all its torques' segments in two
+    calls) paid the stores' keys, look-ups, copies and trims (5–7 % of its CPU) for the
+    few rows it shared with its own first call. The rows a block computes are those of a
+    process that kept none (bit for bit); outside it, a row found in a store replaces the
+    row a batch would give, equal to round-off. The block is per thread and per task
+    (:mod:`contextvars`): other analyses of the process keep their rows.
+
+    Yields
+    ------
+    None
+    """
+    token = _ROWS_KEPT.set(False)
+    try:
+        yield
+    finally:
+        _ROWS_KEPT.reset(token)
+
+
+def rows_kept() -> bool:
+    """Whether the stores of rows are in use here.
+
+    Returns
+    -------
+    bool
+        False inside a :func:`rows_not_kept` block, else True.
+    """
+    return _ROWS_KEPT.get()
 
 
 def row_keys(rows, tag: bytes = b"") -> list[bytes]:
