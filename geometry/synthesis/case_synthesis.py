@@ -95,7 +95,7 @@ from scipy.optimize import brentq
 from geometry.case import FLANKS, Blank, Case, case_from_dict
 from geometry.core.errors import InputError
 from geometry.iso23509.blank import BlankGeometry
-from geometry.machine.cradle import MachineSettings, cutter_pose, roll_angle
+from geometry.machine.cradle import MachineSettings, cradle_pose, cutter_pose, roll_angle
 from geometry.machine.cutter import Blade
 from geometry.machine.flank_point import FlankPoint, MemberFlank
 from geometry.machine.relief import ReliefError, relief_heights, relieved_blade
@@ -144,6 +144,13 @@ _MIRROR = np.diag([1.0, -1.0, 1.0])
 
 
 _OTHER = {"concave": "convex", "convex": "concave"}
+
+#: a generated gear's pinion machines, tried in this order (:func:`_generating_tools`):
+#: on the gear's own generating crown gear (the complementary crown gear, whose start is
+#: the gear's conjugate), then on the pinion's own crown gear (machine root angle δ_f1)
+#: where the first has no solution (the 20x20 miter of tests/data/limits, ε_vβ 0.64: its
+#: concave flank's relief finds no ordered blade heights)
+PINION_CROWNS = ("gear", "own")
 
 
 # --------------------------------------------------------------------------- driver
@@ -484,22 +491,26 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
     key = ("gear process", basic.design,
            replace(basic.options, concave=FlankOptions(), convex=FlankOptions()))
     decided = None if memo is None else memo.get(key)
-    processes = (decided,) if decided else gear_processes(basic)
-    for k, process in enumerate(processes):
-        last = k == len(processes) - 1
+    # a generated gear's pinion on the gear's own crown gear first, on its own crown gear
+    # where that has no solution (:func:`_generating_tools`)
+    tries = ((decided,) if decided else tuple(
+        (p, crown) for p in gear_processes(basic)
+        for crown in (PINION_CROWNS if p == "Generate" else ("gear",))))
+    for k, (process, crown) in enumerate(tries):
+        last = k == len(tries) - 1
         held: list[str] = []
         try:
             out = _synthesize(basic, process=process, memo=memo,
                               progress=progress if last or progress is None else held.append,
-                              **kw)
-        except InputError:
+                              **({"pinion_crown": crown} if crown != "gear" else {}), **kw)
+        except InputError as exc:
             if last:
                 raise
-            log.info("synthesis: the %s gear has no solution; trying %s", process,
-                     processes[k + 1])
+            log.info("synthesis: the %s gear (pinion on the %s crown gear) has no solution "
+                     "(%s); trying %s", process, crown, exc, tries[k + 1])
             continue
         if memo is not None:  # (a single candidate too: gear_processes makes a blank)
-            memo[key] = process
+            memo[key] = (process, crown)
         for line in held:
             progress(line)
         return out
@@ -509,16 +520,19 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
 def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
                 progress: Callable[[str], None] | None = None,
                 memo: dict | None = None,
-                tip_planes: bool = True) -> tuple[Case, SynthesisReport]:
+                tip_planes: bool = True,
+                pinion_crown: str = "gear") -> tuple[Case, SynthesisReport]:
     """The body of :func:`synthesize` (its parameters, returns and steps) with the gear
-    process ``"Formate"`` or ``"Generate"``."""
+    process ``"Formate"`` or ``"Generate"``; ``pinion_crown`` (a generated gear's, one of
+    :data:`PINION_CROWNS`): the pinion generated on the gear's crown gear or its own."""
     say = progress if progress is not None else (lambda _step: None)
     opt = basic.options
     # the memo's entries of this design: every input but the pinion flanks' prescriptions
     # (basic.blank().design is basic.design)
     kept = (None if memo is None else memo.setdefault(
         (basic.design, replace(opt, concave=FlankOptions(), convex=FlankOptions()))
-        + (() if process == "Formate" else (process,)), {}))
+        + (() if process == "Formate" else (process,))
+        + (() if pinion_crown == "gear" else (pinion_crown,)), {}))
     if kept is None:
         geom = basic.blank()
     elif "blank" in kept:
@@ -541,7 +555,7 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
     pinion_hand = design.hand
     gear_hand = "right" if pinion_hand == "left" else "left"
     pair = _PairData(geom, gear, blank(geom.pinion), blank(geom.gear), pinion_hand,
-                     gear_hand, pair_kw(design.Sigma, design.a, gear_hand))
+                     gear_hand, pair_kw(design.Sigma, design.a, gear_hand), pinion_crown)
     flanks: dict[str, FlankSynthesis] = {}
     ref_gear_rotation = None
     for pf in (drive, coast):
@@ -554,7 +568,8 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
     if tip_planes:
         flanks = {pf: _tip_on_root_cone(fs, pair, kept) for pf, fs in flanks.items()}
     say("the case")
-    case = _assemble(basic, geom, gear, flanks, pinion_hand, gear_hand)
+    case = _assemble(basic, geom, gear, flanks, pinion_hand, gear_hand,
+                     pinion_crown=pinion_crown)
     return case, SynthesisReport(geom, gear, flanks)
 
 
@@ -569,6 +584,7 @@ class _PairData(NamedTuple):
     pinion_hand: str
     gear_hand: str
     kw: dict[str, Any]
+    pinion_crown: str = "gear"  # a generated gear's: the pinion on "gear" or "own" crown gear
 
 
 def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
@@ -735,7 +751,28 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
     ug = mir @ rot.T @ (tg[:3, :3] @ ug)
     u_p = -ug
     ratio_of_roll = geom.gear.z / geom.pinion.z
-    if generated:
+    blade_angle = gblade.blade_angle
+    if generated and pair.pinion_crown == "gear":
+        # the pinion rolled on the gear's own generating crown gear, the cutter turned to
+        # face the pinion (the complementary crown gear; Litvin & Fuentes 2004 ch. 20,
+        # "generation by the same tool surface"): its cradle axis is the gear machine's at
+        # the roll q_M that generates M, carried into the pinion frame and reversed (the
+        # pinion lies on the other side of the crown gear), and the pinion rolls at
+        # R_a2 z2/z1 (ω1/ω_c = ω1/ω2 · ω2/ω_c), so that the start generates the gear's
+        # conjugate as the Formate gear's copy does; the local synthesis's mismatch by the
+        # same three unknowns. (Before: the pinion on its own crown gear, machine root
+        # angle δ_f1, whose start is conjugate to the gear only to second order at M: its
+        # "conjugate" synthesis carried 100-540 um of ease-off, 527 um on the 16x16 at
+        # Sigma 60 deg, 0-31 um now; where its synthesis has no solution, the own crown
+        # gear below, :func:`_synthesize_tried`; docs/synthesis.md, "The generated gear's
+        # pinion on the gear's crown gear".)
+        cpg, cag = cradle_pose(gs, q_m)
+        if pair.gear_hand == "left":
+            cpg, cag = _MIRROR @ cpg, _MIRROR @ cag
+        cradle_point = mir @ rot.T @ (tg[:3, :3] @ cpg + tg[:3, 3] - tp[:3, 3])
+        cradle_axis = -(mir @ rot.T @ (tg[:3, :3] @ cag))
+        ratio_of_roll = gs.ratio_of_roll * geom.gear.z / geom.pinion.z
+    elif generated:
         # the pinion rolled on its own crown gear (Litvin & Fuentes 2004 ch. 20; Stadtfeld
         # 2014): machine root angle = the pinion root angle, the cradle axis normal to the
         # plane that touches the root cone along M's root generatrix, its point at the root
@@ -756,7 +793,6 @@ def _generating_tools(pair: _PairData, pf: str, gblade: Blade, gp: FlankPoint,
                              f"angle with its crown gear's cutter axis (sin = {sin_a:.3g})")
         blade_angle = math.asin(sin_a)
     else:
-        blade_angle = gblade.blade_angle
         cradle_point = mir @ rot.T @ (tg[:3, 3] - tp[:3, 3])
         cradle_axis = -(mir @ rot.T @ tg[:3, 2])
     # tip plane: through the pinion root below M, plus the rise of the gear face over half
@@ -934,7 +970,7 @@ def _fmt(v: float, nd: int = 4) -> str:
 
 
 def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
-            flanks: dict[str, FlankSynthesis]) -> str:
+            flanks: dict[str, FlankSynthesis], *, pinion_crown: str = "gear") -> str:
     from geometry.synthesis.basic_design import TARGETS
 
     d = geom.design
@@ -985,7 +1021,13 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
             f"crown gear), R_mf {_fmt(gear.mean_root_cone_distance, 6)} mm, r_c0 "
             f"{_fmt(gear.cutter_radius, 6)} mm, point width {_fmt(gear.point_width, 5)} mm.")
         generating = (
-            "generating gear = the pinion's own crown gear (machine root angle = the pinion "
+            "generating gear = the gear's own crown gear turned to face the pinion (the "
+            "gear machine's cradle axis at the roll that generates M, reversed; ratio of "
+            "roll R_a2 z2/z1 to start: the gear's conjugate), mismatch by the pinion point "
+            "radius, a circular blade profile and the ratio of roll (cradle shifted to keep "
+            "M generated at roll 0)") if pinion_crown == "gear" else (
+            "generating gear = the pinion's own crown gear (its synthesis on the gear's "
+            "crown gear had no solution; machine root angle = the pinion "
             "root angle, the cradle axis normal to the plane touching the root cone along "
             "M's root generatrix, ratio of roll cos(theta_f1)/sin(delta1) to start, an "
             "untilted cutter touching M whose blade angle follows from M's normal), "
@@ -1042,7 +1084,8 @@ def _source(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
 
 
 def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
-              flanks: dict[str, FlankSynthesis], pinion_hand: str, gear_hand: str) -> Case:
+              flanks: dict[str, FlankSynthesis], pinion_hand: str, gear_hand: str, *,
+              pinion_crown: str = "gear") -> Case:
     d = geom.design
     opt = basic.options
     synth = [f"{m}.{t}.{f}" for m in ("pinion", "gear") for t in ("cutter", "machine")
@@ -1087,7 +1130,7 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
         }
     doc = {
         "name": basic.name,
-        "source": _source(basic, geom, gear, flanks),
+        "source": _source(basic, geom, gear, flanks, pinion_crown=pinion_crown),
         "synthesised": synth,
         "pair": {"shaft_angle": math.degrees(d.Sigma), "offset": d.a,
                  "method": "FH" if gear.blade_groups else "FM",
