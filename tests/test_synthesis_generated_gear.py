@@ -788,3 +788,37 @@ def test_a_pinion_the_gears_crown_gear_cannot_make_falls_back_to_its_own():
            "solution" in case.source
     ra = [report.flanks[f].tools.settings.ratio_of_roll for f in ("concave", "convex")]
     assert ra == pytest.approx([0.776, 1.514], abs=2e-3)
+
+
+def test_the_pinion_crown_gears_are_tried_in_order_and_a_relief_error_is_raised(monkeypatch):
+    """With the synthesis body replaced by a stub (no geometry): a generated gear's pinion
+    is tried on the gear's crown gear, then on its own where that has no solution; a
+    relief the blade cannot make on the gear's crown gear is raised, not switched (the
+    caller, ``ltca synthesize``, raises the default relief and tries again)."""
+    import geometry.synthesis.case_synthesis as cs
+    from geometry.core.errors import InputError
+    from geometry.machine.relief import ReliefError
+
+    tried: list[tuple[str, str]] = []
+    error: dict = {}
+
+    def body(basic, *, process, pinion_crown="gear", progress=None, memo=None, **kw):
+        tried.append((process, pinion_crown))
+        if process == "Formate":
+            raise InputError("no Formate solution")
+        if pinion_crown in error:
+            raise error[pinion_crown]
+        return pinion_crown, None
+
+    monkeypatch.setattr(cs, "_synthesize", body)
+    basic = load_basic(MITER)
+    assert cs.synthesize(basic)[0] == "gear"
+    error["gear"] = InputError("relief: the flank is not generated at its M")
+    tried.clear()
+    assert cs.synthesize(basic)[0] == "own"
+    assert tried == [("Formate", "gear"), ("Generate", "gear"), ("Generate", "own")]
+    error["gear"] = ReliefError("tip_relief: 15 um over 4 mm", "tip_relief")
+    tried.clear()
+    with pytest.raises(ReliefError):
+        cs.synthesize(basic)
+    assert tried == [("Formate", "gear"), ("Generate", "gear")]

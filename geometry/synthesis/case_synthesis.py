@@ -507,7 +507,10 @@ def _synthesize_tried(basic: BasicDesign, *, progress: Callable[[str], None] | N
                               progress=progress if last or progress is None else held.append,
                               **({"pinion_crown": crown} if crown != "gear" else {}), **kw)
         except InputError as exc:
-            if last:
+            # a relief the blade's profile cannot make is the caller's to raise (`ltca
+            # synthesize` raises the default relief and tries again), not a reason to
+            # leave the gear's crown gear
+            if last or (isinstance(exc, ReliefError) and process == tries[k + 1][0]):
                 raise
             log.info("synthesis: the %s gear (pinion on the %s crown gear) has no solution "
                      "(%s); trying %s", process, crown, exc, tries[k + 1])
