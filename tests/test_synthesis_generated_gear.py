@@ -253,12 +253,15 @@ def test_realistic_low_ratio_pair_meets_its_local_synthesis_over_the_mesh_cycle(
     """The spiral bevel 20×30 of tests/data/generated_gear (δ2 56.3°, b2 0.31 R_e, β_m
     35°, ε_vβ 1.26: a low-ratio pair a user would write) with its gear generated and the
     relief left out (~25 s CPU, hence slow): the unloaded TE of the conventional TCA over
-    −0.5 … +0.4 pitch is the prescribed parabola a21 φ²/2 within 1 µrad (measured 0.2 µrad
-    on both flanks; 1 µrad is 2 % of the TE level, far below the LTE's 40 µrad target),
-    and the contact leaves M in the prescribed direction (as the miter, within 0.1 % of
-    |v_r2|; measured 0.01 %). The pinion's ratio of roll is not its crown gear's rolling
-    value (the local synthesis's twist is made by it: measured 1.40 / 1.71 concave /
-    convex, rolling 1.80; docs/synthesis.md, "Generated gear")."""
+    −0.5 … +0.4 pitch is the prescribed parabola a21 φ²/2 within 1.5 µrad (measured 1.0
+    µrad at −0.5 pitch with the pinion on the gear's crown gear, 0.2 µrad on its own crown
+    gear before; 1.5 µrad is 3 % of the TE level, far below the LTE's 40 µrad target: the
+    modified roll puts the TE on the parabola at ±pitch/4, beyond it the fifth-order
+    remainder grows), and the contact leaves M in the prescribed direction (as the miter,
+    within 0.1 % of |v_r2|; measured 0.01 %). The pinion's ratio of roll is not its crown
+    gear's rolling value (the local synthesis's twist is made by it: measured 1.57 / 1.66
+    concave / convex against the gear's crown gear's R_a2 z2/z1 = 1.80, 1.40 / 1.71 on its
+    own crown gear before; docs/synthesis.md, "Generated gear")."""
     basic = load_basic(DATA / "generated_gear" / "spiral_bevel_20x30.toml")
     o = basic.options
     bare = {"tip_relief": 0.0, "root_relief": 0.0}
@@ -276,7 +279,7 @@ def test_realistic_low_ratio_pair_meets_its_local_synthesis_over_the_mesh_cycle(
         res = conventional_tca(case, rolls, flank=flank)
         assert res.converged.all()
         parabola = 0.5 * fs.a21 * rolls**2
-        assert np.abs(res.transmission_error - parabola).max() < 1e-6
+        assert np.abs(res.transmission_error - parabola).max() < 1.5e-6
         rate, prescribed, speed = _path_rates(case, fs, kw, flank, pitch)
         assert np.linalg.norm(rate - prescribed) < 1e-3 * speed
 
@@ -654,10 +657,13 @@ def test_20x30_at_every_default_is_written_with_a_generated_gear_run_does_not_fa
     assert "VERDICT (analysis): " in said and "VERDICT (analysis): FAIL" not in said
 
 
-#: the drive (concave) prescriptions the development writes for the generated 20x30 at
+#: the drive (concave) prescriptions the development wrote for the generated 20x30 at
 #: every default (`ltca synthesize`, docs/synthesis.md "Why the pattern is short and the
 #: LTE high": the check's path turned along the profile, development_check.
-#: GENERATED_PATH_STEPS) and the torques it writes [N·m]
+#: GENERATED_PATH_STEPS) and the torques it wrote [N·m], with the pinion on its own crown
+#: gear; with the pinion on the gear's crown gear it writes path −66.9°, ellipse 0.75 at
+#: 41.5 / 276.7 N·m (docs/synthesis.md, "The generated gear's pinion on the gear's crown
+#: gear"), and the test keeps the profile path's comparison at these
 DEVELOPED_20X30 = {"path_angle": -88.0, "ellipse_length": 0.44, "tip_relief": 30.0,
                    "root_relief": 40.0, "relief_start": 0.2, "tip_relief_start": 0.85,
                    "te_level": 10.0}
@@ -704,11 +710,12 @@ def test_generated_20x30_bearing_along_the_profile_holds_its_synthesis_and_lower
       hold on a path the default bounds (−80°) did not reach;
     * at ``ltca run``'s sampling at the torques the development writes, against the design
       written before (−80°, ellipse 0.4: the bound the check stopped at, docs/synthesis.md):
-      the LTE p-p read from the TE trace lower at both torques, by at least 20 µrad at the
-      design torque (measured 31.9 / 57.8 against 44.6 / 91.7 µrad; the written case, with
-      its tip planes, 35.1 / 63.1 in `ltca run`), and the light-load pattern read from the
-      loaded segments' own positions longer by at least one gear-grid column, 0.025 of the
-      face (measured 0.428 against 0.374)."""
+      the LTE p-p read from the TE trace lower at both torques, by at least 10 µrad
+      (measured 66.9 / 99.7 against 102.5 / 112.4 µrad with the pinion on the gear's crown
+      gear; 31.9 / 57.8 against 44.6 / 91.7 on its own crown gear before, when the limit was
+      20 µrad at the design torque), and the light-load pattern read from the loaded
+      segments' own positions longer by at least one gear-grid column, 0.025 of the face
+      (measured 0.375 against 0.324; before 0.428 against 0.374)."""
     bare, report = _developed_20x30(tip_relief=0.0, root_relief=0.0)
     assert bare.gear.process == "Generate"
     pitch = 2 * math.pi / bare.pinion.blank.teeth
@@ -721,6 +728,97 @@ def test_generated_20x30_bearing_along_the_profile_holds_its_synthesis_and_lower
 
     lte, length = _lte_and_length(_developed_20x30()[0])
     lte80, length80 = _lte_and_length(_developed_20x30(path_angle=-80.0, ellipse_length=0.4)[0])
-    assert np.all(lte < lte80)
-    assert lte[1] <= lte80[1] - 20.0
+    assert np.all(lte <= lte80 - 10.0)
     assert length >= length80 + 0.025
+
+
+# ------------------------------------------------- the pinion on the gear's own crown gear
+def test_cradle_pose_inverts_settings_from_poses():
+    """:func:`cradle_pose` at roll 0 gives back the cradle axis :func:`settings_from_poses`
+    was given (a point on it, its direction), in the generated member's frame turned by the
+    blank phase."""
+    from geometry.machine.cradle import cradle_pose, settings_from_poses
+
+    axis = np.array([0.3, -0.2, 0.9])
+    axis /= np.linalg.norm(axis)
+    point = np.array([4.0, -7.0, -30.0])
+    ps = settings_from_poses(cradle_point=point, cradle_axis=axis,
+                             cutter_centre=np.array([60.0, 10.0, -5.0]),
+                             cutter_axis=np.array([0.1, 0.2, 0.97]), process="Generate",
+                             ratio_of_roll=1.7)
+    p, a = cradle_pose(ps.settings, 0.0)
+    c, s = math.cos(ps.blank_phase), math.sin(ps.blank_phase)
+    rz = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    p, a = rz @ p, rz @ a
+    assert np.allclose(a, axis, atol=1e-12)
+    assert np.linalg.norm(np.cross(p - point, axis)) < 1e-9  # on the same axis
+
+
+@pytest.mark.parametrize(("name", "limit_um"), [("spiral_bevel_20x30", 0.1),
+                                                ("spiral_bevel_16x16_s60", 15.0)])
+def test_conjugate_pinion_of_a_generated_gear_is_conjugate(name, limit_um):
+    """``synthesize(conjugate=True)`` with a generated gear: the pinion generated on the
+    gear's own crown gear (turned to face it) at R_a2 z2/z1 meshes with the gear with
+    (almost) no ease-off. On its own crown gear (before, issue 71) the same call left
+    103 um (20x30) and 527 um (16x16 at Sigma 60, ratio 1) of ease-off over the flank:
+    the start was conjugate only to second order at M. Measured now 0.0 / 10.8 um (the
+    16x16's gear cradle axis passes through the gear's root apex, not the pitch apex, so
+    the three axes do not meet in one point and a small mismatch remains); the limits
+    are those measurements' order."""
+    from contact.utca.easeoff import ease_off
+
+    basic = load_basic(DATA / "generated_gear" / f"{name}.toml")
+    basic = replace(basic, options=replace(basic.options, gear_process="Generate"))
+    case, report = synthesize(basic, conjugate=True, tip_planes=False)
+    assert report.gear.settings.process == "Generate"
+    assert "the gear's own crown gear turned to face the pinion" in case.source
+    for flank in ("drive", "coast"):
+        eo = ease_off(case, flank=flank)
+        assert eo.valid.mean() > 0.6
+        assert 1e3 * float(np.nanmax(np.where(eo.valid, eo.ease_off, np.nan))) < limit_um
+
+
+def test_a_pinion_the_gears_crown_gear_cannot_make_falls_back_to_its_own():
+    """The 20x20 miter of tests/data/limits (ε_vβ 0.64): on the gear's crown gear its
+    concave flank's relief finds no ordered blade heights (the ratio of roll moved 1.41 ->
+    0.86 by the local synthesis); the synthesis falls back to the pinion's own crown gear
+    (its R_a 0.776 / 1.514, as before) and the source says which."""
+    case, report = _miter()
+    assert "the pinion's own crown gear (its synthesis on the gear's crown gear had no " \
+           "solution" in case.source
+    ra = [report.flanks[f].tools.settings.ratio_of_roll for f in ("concave", "convex")]
+    assert ra == pytest.approx([0.776, 1.514], abs=2e-3)
+
+
+def test_the_pinion_crown_gears_are_tried_in_order_and_a_relief_error_is_raised(monkeypatch):
+    """With the synthesis body replaced by a stub (no geometry): a generated gear's pinion
+    is tried on the gear's crown gear, then on its own where that has no solution; a
+    relief the blade cannot make on the gear's crown gear is raised, not switched (the
+    caller, ``ltca synthesize``, raises the default relief and tries again)."""
+    import geometry.synthesis.case_synthesis as cs
+    from geometry.core.errors import InputError
+    from geometry.machine.relief import ReliefError
+
+    tried: list[tuple[str, str]] = []
+    error: dict = {}
+
+    def body(basic, *, process, pinion_crown="gear", progress=None, memo=None, **kw):
+        tried.append((process, pinion_crown))
+        if process == "Formate":
+            raise InputError("no Formate solution")
+        if pinion_crown in error:
+            raise error[pinion_crown]
+        return pinion_crown, None
+
+    monkeypatch.setattr(cs, "_synthesize", body)
+    basic = load_basic(MITER)
+    assert cs.synthesize(basic)[0] == "gear"
+    error["gear"] = InputError("relief: the flank is not generated at its M")
+    tried.clear()
+    assert cs.synthesize(basic)[0] == "own"
+    assert tried == [("Formate", "gear"), ("Generate", "gear"), ("Generate", "own")]
+    error["gear"] = ReliefError("tip_relief: 15 um over 4 mm", "tip_relief")
+    tried.clear()
+    with pytest.raises(ReliefError):
+        cs.synthesize(basic)
+    assert tried == [("Formate", "gear"), ("Generate", "gear")]

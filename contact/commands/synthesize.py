@@ -304,6 +304,53 @@ def gear_process_note(development, case) -> str | None:
     return text
 
 
+def _lte_notes(basic, case, development, ratios) -> None:
+    """Print ``ltca synthesize``'s notes on the written drive flank's LTE: flanks far from
+    conjugate (:func:`_conjugacy_notes`) or else low contact ratios, and a coarse trial the
+    check contradicts."""
+    far, misjudged = _conjugacy_notes(case, development, ratios)
+    if far is not None:
+        print("note: " + far)
+    elif ratios is not None and (ratios[1] < FACE_CONTACT_RATIO_NOTE
+                                 or ratios[0] < PROFILE_CONTACT_RATIO_NOTE):
+        # the cause and the remedy in numbers: the face width and the spiral angle that
+        # reach the least face contact ratio, the depth factor and the pressure angle that
+        # reach the least profile contact ratio (contact.load_capacity.iso10300.face_contact)
+        from contact.load_capacity.iso10300.face_contact import low_ratio_text
+
+        said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
+                              PROFILE_CONTACT_RATIO_NOTE)
+        print("note: " + (said if said is not None else
+                          f"contact ratios eps_va {ratios[0]:.2f}, eps_vb {ratios[1]:.2f}: "
+                          f"below {PROFILE_CONTACT_RATIO_NOTE:g} / {FACE_CONTACT_RATIO_NOTE:g}"
+                          ", the least bevel-gear design practice asks for (AGMA 2005-D03); "
+                          "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
+                          "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
+              + (f"; {low_overlap_lte(development)}" if development is not None else ""))
+    if misjudged is not None:
+        print("note: " + misjudged)
+
+
+def _conjugacy_notes(case, development, ratios) -> tuple[str | None, str | None]:
+    """(flanks far from conjugate, coarse trial misjudged): ``ltca synthesize``'s notes of
+    a developed case whose drive LTE p-p is above the verdict's limit
+    (:mod:`contact.optimize.development_conjugacy`: the criteria and their calibration),
+    each None where it does not apply; the first replaces the contact-ratio note."""
+    if development is None:
+        return None, None
+    from contact.optimize.development_conjugacy import (
+        conjugacy,
+        misjudged_trial_text,
+        non_conjugate_text,
+    )
+    from contact.study.verdicts import LTE_LIMIT
+
+    far = None
+    if float(max(development.best.metrics["lte_peak_to_peak"])) > LTE_LIMIT:
+        far = non_conjugate_text(conjugacy(case), ratios)
+    return far, misjudged_trial_text(development)
+
+
 def _above_capacity_note(case, torque: float) -> str | None:
     """A note where the design torque the basic file gives (``[synthesis] design_torque``
     or ``[rating] design_torque``) is above the written pair's ISO 10300 long-life capacity
@@ -493,22 +540,7 @@ def _run_synthesize(args: argparse.Namespace) -> int:
     if process is not None:
         print("note: " + process)
     print(f"wrote {path}")
-    if ratios is not None and (ratios[1] < FACE_CONTACT_RATIO_NOTE
-                               or ratios[0] < PROFILE_CONTACT_RATIO_NOTE):
-        # the cause and the remedy in numbers: the face width and the spiral angle that
-        # reach the least face contact ratio, the depth factor and the pressure angle that
-        # reach the least profile contact ratio (contact.load_capacity.iso10300.face_contact)
-        from contact.load_capacity.iso10300.face_contact import low_ratio_text
-
-        said = low_ratio_text(basic.design, FACE_CONTACT_RATIO_NOTE,
-                              PROFILE_CONTACT_RATIO_NOTE)
-        print("note: " + (said if said is not None else
-                          f"contact ratios eps_va {ratios[0]:.2f}, eps_vb {ratios[1]:.2f}: "
-                          f"below {PROFILE_CONTACT_RATIO_NOTE:g} / {FACE_CONTACT_RATIO_NOTE:g}"
-                          ", the least bevel-gear design practice asks for (AGMA 2005-D03); "
-                          "a wider face (b2) or a larger spiral angle (beta_m) raises eps_vb, "
-                          "a deeper tooth (k_d) or a smaller pressure angle (alpha_dD) eps_va")
-              + (f"; {low_overlap_lte(development)}" if development is not None else ""))
+    _lte_notes(basic, case, development, ratios)
     if basic.optimize:
         print(f"note: {shown} carries an [optimize] table: the synthesis alone is written; "
               f"`ltca optimize {shown}` also optimises the settings it names (the bundled "

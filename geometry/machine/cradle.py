@@ -73,6 +73,7 @@ __all__ = [
     "PROCESSES",
     "MachineSettings",
     "PoseSettings",
+    "cradle_pose",
     "cutter_pose",
     "indexing_ratio",
     "machine_transform",
@@ -494,6 +495,40 @@ def cutter_pose(settings: MachineSettings, q=0.0, theta=0.0):
     """
     m, _, _ = machine_transform(settings, q, theta)
     return m[..., :3, 3], m[..., :3, 2]
+
+
+def cradle_pose(settings: MachineSettings, q=0.0) -> tuple[np.ndarray, np.ndarray]:
+    """A point of the cradle axis and its direction (towards the work) in the blank frame.
+
+    Parameters
+    ----------
+    settings : MachineSettings
+        Face-milling settings (the cradle does not move with the cutter spin).
+    q : float — [rad]
+        Cradle rotation from the reference position: the blank frame turns with the
+        work's roll φ(q) (0 for Formate).
+
+    Returns
+    -------
+    point : ndarray (3,) — [mm]
+        The machine centre O_m's image: the cradle axis's point level with the sliding base.
+    axis : ndarray (3,) — [1]
+        Unit direction z_m of the cradle axis, from the cradle towards the work.
+
+    Notes
+    -----
+    The first four factors of :func:`machine_transform` (seed Eq. 2.7a–e), R_z(−φ)
+    T(0,0,−X_p) R_y(γ_m − π/2) T(0,−E_m,X_b): the frame the cradle turns in (the inverse
+    of :func:`settings_from_poses`' cradle pose; tested against it).
+    """
+    if settings.process == "Formate":
+        q = 0.0
+    phi = float(work_rotation(settings, np.asarray(float(q)))[0])
+    xb = float(taylor_motion(settings.sliding_base, settings.helical_motion, float(q))[0])
+    em = float(taylor_motion(settings.blank_offset, settings.vertical_motion, float(q))[0])
+    m = (rot("z", -phi) @ trans([0.0, 0.0, -settings.machine_center_to_back])
+         @ rot("y", settings.machine_root_angle - 0.5 * math.pi) @ trans([0.0, -em, xb]))
+    return m[:3, 3].copy(), m[:3, 2].copy()
 
 
 class PoseSettings(NamedTuple):
