@@ -401,12 +401,14 @@ def ease_off(case: Case, *, flank: str | None = None, misalignment: Misalignment
             raise InputError(
                 f"case: the flanks meet at only {why} with no misalignment: this case's "
                 "machine settings were synthesised from basic data (its 'synthesised' "
-                "fields); not edited since, the synthesised flanks do not mesh, a limit "
-                "of the local synthesis seen on spiral bevels near ratio 1 "
-                "(docs/own_gear_set.md, 'Round 12'): a ratio further from 1, or a face "
-                "contact ratio of 1.25 (beta_m, b2: `ltca synthesize`'s note), are the "
-                "changes to try; edited, check the pair offset, the mounting distances "
-                "and the blanks")
+                "fields); not edited since, the synthesised flanks do not mesh: where "
+                "its 'source' says the pinion fell back to its own crown gear (a "
+                "generated gear whose crown-gear synthesis had no solution, "
+                "docs/synthesis.md 'The generated gear's pinion on the gear's crown "
+                "gear'), the flanks match at the mean point only; the other gear process "
+                "(`gear_process`), or a face contact ratio of 1.25 (beta_m, b2: `ltca "
+                "synthesize`'s note), are the changes to try; edited, check the pair "
+                "offset, the mounting distances and the blanks")
         raise InputError(f"case: the flanks meet at only {why} with no misalignment (check "
                          "the pair offset, the mounting distances and the blanks)")
     ranges = []
