@@ -315,3 +315,23 @@ def test_the_coast_flank_default_output_does_not_replace_the_drive_one(argv, exp
     args = build_parser().parse_args(argv)
     suffix = {"run": ".nc", "duty-cycle": "_duty_cycle.nc", "utca": "_utca.nc"}[argv[0]]
     assert default_output(args, suffix) == expected
+
+
+def test_a_command_of_many_analyses_says_before_numba_compiles(monkeypatch):
+    """The first ``ltca synthesize`` of a fresh tree printed nothing for 98 s of wall time
+    (numba compiling its kernels; issue 71, round 13): a line says so first, where the
+    compiled kernels run and numba's cache lacks them; none where they are cached or the
+    NumPy path runs."""
+    import contact.cli
+    import geometry.core.kernels as kernels
+
+    monkeypatch.setenv("LTCA_KERNELS", "numba")
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: False)
+    note = contact.cli.compile_note()
+    assert note is not None and "compiling the numba kernels" in note
+    assert "ltca compile" in note
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: True)
+    assert contact.cli.compile_note() is None
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: False)
+    monkeypatch.setenv("LTCA_KERNELS", "numpy")
+    assert contact.cli.compile_note() is None
