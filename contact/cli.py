@@ -180,6 +180,28 @@ def check_option_bounds(args: argparse.Namespace) -> None:
             check_bound(bound, v, field=f"--{dest}", positive=dest == "roughness")
 
 
+def compile_note() -> str | None:
+    """The line a command that runs the compiled kernels prints before numba compiles them
+    (its cache holds no kernels for this machine yet: a fresh install or source tree), or
+    None (the NumPy path, or the kernels cached).
+
+    The first ``ltca synthesize`` of a fresh tree said nothing for 98 s of wall time at a
+    load of 14 (the compiling, ≈ 20 s of CPU on an idle machine) and then 150 s more before
+    its first trial (issue 71, round 13; docs/performance.md, "Compiled kernels").
+
+    Returns
+    -------
+    str or None
+    """
+    from geometry.core.kernels import KERNEL_MODULES, cache_ready, process_choice
+
+    if process_choice() != "numba" or all(cache_ready(name) for name in KERNEL_MODULES):
+        return None
+    return ("note: compiling the numba kernels for this machine, once (about 20 s of CPU "
+            "before the first lines, longer on a loaded machine; later runs read them from "
+            "numba's cache; `ltca compile` compiles them ahead, docs/environment.md)")
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``ltca`` console script and ``python -m contact``."""
     parser = build_parser()
@@ -225,6 +247,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             from geometry.core.kernels import prefer_compiled
 
             prefer_compiled()
+            note = compile_note()
+            if note is not None and not args.quiet:
+                print(note, file=sys.stderr, flush=True)
         elif as_process and getattr(args, "one_analysis", False):
             # one analysis never earns the compile back: the NumPy path until numba's
             # cache holds the kernels (geometry.core.kernels.prefer_cached, issue 75)

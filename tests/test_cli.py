@@ -293,3 +293,45 @@ def test_synthesize_never_writes_its_case_over_the_basic_file(tmp_path, monkeypa
     monkeypatch.chdir(tmp_path / "elsewhere")
     assert synthesize_output(basic, None) == Path("my.toml")
     assert synthesize_output(Path(_FM_BASIC), None) == Path("kolivand2009_fm_11x41.toml")
+
+
+@pytest.mark.parametrize("argv, expected", [
+    (["run", "my_case.toml"], "my_case.nc"),
+    (["run", "my_case.toml", "--flank", "drive"], "my_case.nc"),
+    (["run", "my_case.toml", "--flank", "coast"], "my_case_coast.nc"),
+    (["run", "my_case.toml", "--flank", "convex"], "my_case_convex.nc"),
+    (["run", "my_case.toml", "--flank", "coast", "-o", "x.nc"], "x.nc"),
+    (["duty-cycle", "my_case.toml", "--flank", "coast"], "my_case_coast_duty_cycle.nc"),
+    (["utca", "my_case.toml"], "my_case_utca.nc"),
+    (["utca", "my_case.toml", "--flank", "coast"], "my_case_coast_utca.nc"),
+])
+def test_the_coast_flank_default_output_does_not_replace_the_drive_one(argv, expected):
+    """``ltca run CASE`` then ``ltca run CASE --flank coast``, every default, wrote both to
+    ``CASE.nc``, the coast's over the drive's with the same "wrote" line (issue 71, round
+    13, on the unseen 5×39 hypoid): a flank other than the drive's is in the name."""
+    from contact.cli import build_parser
+    from contact.commands.options import default_output
+
+    args = build_parser().parse_args(argv)
+    suffix = {"run": ".nc", "duty-cycle": "_duty_cycle.nc", "utca": "_utca.nc"}[argv[0]]
+    assert default_output(args, suffix) == expected
+
+
+def test_a_command_of_many_analyses_says_before_numba_compiles(monkeypatch):
+    """The first ``ltca synthesize`` of a fresh tree printed nothing for 98 s of wall time
+    (numba compiling its kernels; issue 71, round 13): a line says so first, where the
+    compiled kernels run and numba's cache lacks them; none where they are cached or the
+    NumPy path runs."""
+    import contact.cli
+    import geometry.core.kernels as kernels
+
+    monkeypatch.setenv("LTCA_KERNELS", "numba")
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: False)
+    note = contact.cli.compile_note()
+    assert note is not None and "compiling the numba kernels" in note
+    assert "ltca compile" in note
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: True)
+    assert contact.cli.compile_note() is None
+    monkeypatch.setattr(kernels, "cache_ready", lambda name: False)
+    monkeypatch.setenv("LTCA_KERNELS", "numpy")
+    assert contact.cli.compile_note() is None

@@ -328,6 +328,10 @@ def test_the_developed_case_records_what_was_achieved_and_round_trips():
             "(limit 2 %))") in line
     assert "edge share 5.0 % and LTE p-p 30 urad at 330 N m" in line
     assert "tolerant up to" not in line and "tolerant_up_to_Nm" not in result.table()
+    # no coast result (its analysis failed): its peak is not "nan MPa" (the unseen
+    # industrial 11x43 of m_mn 12 printed "coast nan MPa at its design torque 1.486e+04
+    # N m"; issue 71, round 13)
+    assert "nan" not in line and "coast not analysed" in line
     # the torque up to which it is tolerant, where found: stated, the design torque kept
     upto = dataclasses.replace(result, tolerant_torque=(245.3, 262.1))
     assert ("(limit 2 %)); tolerant up to 245.3 N m at dE/dP +/-0.05/0.05 mm (not at "
@@ -346,6 +350,37 @@ def test_the_developed_case_records_what_was_achieved_and_round_trips():
     assert "torque" not in basic.operating
     assert out.operating.torque == back.operating.torque == (50.0, 330.0)
     assert "Coast flank: not checked" in out.source  # no coast result given
+
+
+def test_a_failed_coast_check_says_why(monkeypatch):
+    """The coast check's failure line gives the torques and the error's message: on the
+    unseen industrial 11×43 of m_mn 12 it said only "not checked (its analysis failed:
+    InputError)" (issue 71, round 13; the cause, the screening's generous limit, is
+    fixed in contact.ltca.roll_loop). Here the analysis is a stand-in that raises."""
+    from contact.optimize import development_coast_flank as coast_flank
+    from contact.optimize.development import DevelopmentEvaluation
+    from geometry.case import load_case
+    from geometry.core.errors import InputError
+    from geometry.synthesis.basic_design import load_basic
+
+    def refuse(*args, **kwargs):
+        raise InputError("torque: 14860 N m is beyond what the tooth model carries")
+
+    monkeypatch.setattr(coast_flank.evaluation, "analyse_design", refuse)
+    case = load_case(DESIGNS / "pc_hypoid_10x43_unrelieved.toml")
+    basic = load_basic(DESIGNS / "pc_hypoid_10x43.toml")
+    t = DevelopmentTargets()
+    m = _metrics()
+    full = development_score(m, t, centre_v=0.6)
+    drive = DevelopmentEvaluation(0, {"tip_relief": 20.0}, m, full[0], full[1], full[2], "",
+                                  1.0, case, full, checked=True)
+    said: list[str] = []
+    out = coast_flank.coast_development(basic, drive, t, {"torques": [2001.0, 14860.0]},
+                                        None, {}, said.append, None)
+    assert out.status == "not checked" and out.best is None
+    assert said == ["development: coast flank convex: not checked (its analysis at "
+                    "2001/1.486e+04 N m failed: InputError: torque: 14860 N m is beyond "
+                    "what the tooth model carries)"]
 
 
 def test_the_case_says_what_the_coast_development_did():

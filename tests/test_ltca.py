@@ -258,6 +258,37 @@ def test_too_wide_fixed_separation_limit_is_named():
                                                       separation_limit=1.0))
 
 
+def test_a_generous_limit_off_the_mating_teeth_narrows_to_what_maps(monkeypatch):
+    """The first roll's pool is bounded by the generous limit, which grows with the torque
+    alone (0.05 mm + 0.15 mm per kN·m of gear torque): 9.4 mm at 16 kN·m on the unseen
+    industrial hypoid 11×43 of m_mn 12 (tests/data/industrial_hypoid_11x43_m12_case.toml,
+    its ISO capacity 15.8 kN·m), whose teeth approach by 0.13 mm there. On its coast flank
+    far pairs' segments within that limit lie off their mating tooth (a pinion point 21.6
+    mm from the tooth's mid-surface), and the analysis stopped: "beyond what the tooth
+    model of this case carries" (the development's coast check and 8 of its drive trials
+    too; issue 71, round 13). The pool is now the largest limit that maps, and the
+    screening adds what the solution closes: the same solution as with a 1 mm limit, which
+    maps from the start (equal to round-off), and the contact identities hold."""
+    import contact.ltca.screening as screening
+
+    case = load_case(ROOT / "tests" / "data" / "industrial_hypoid_11x43_m12_case.toml")
+    opts = LTCAOptions(cycles=1, rolls_per_cycle=4)
+    wide = loaded_tca(case, [16000.0], options=opts, flank="coast")
+    assert wide["found"].all()
+    assert_equilibrium_and_complementarity(wide, case)
+    approach = float((wide["moment_arm"] * wide["loaded_rotation"] * 1e-6).max())  # [mm]
+    assert approach < 0.2 < screening.generous_limit(16000.0, 43 / 11)
+    monkeypatch.setattr(screening, "generous_limit", lambda torque, ratio: 1.0)
+    narrow = loaded_tca(case, [16000.0], options=opts, flank="coast")
+    np.testing.assert_allclose(wide["transmission_error"], narrow["transmission_error"],
+                               rtol=0, atol=1e-9)
+    for kind in np.unique(narrow["segment_kind"].values):
+        a = wide["force"].where(wide["segment_kind"] == kind).fillna(0.0)
+        b = narrow["force"].where(narrow["segment_kind"] == kind).fillna(0.0)
+        np.testing.assert_allclose(a.sum("segment"), b.sum("segment"), rtol=0,
+                                   atol=1e-9 * float(b.max()))
+
+
 def test_weber_linearisation_converges_and_matters():
     # Weber's contact compliance is load dependent; the LTCA linearises it about the
     # current loads (Newton) and iterates. One solve (at the even-share reference load)

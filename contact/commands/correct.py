@@ -70,7 +70,8 @@ def register(sub) -> None:
     p.add_argument("--cond-max", type=float, default=COND_MAX, metavar="KAPPA",
                    help="largest condition number of the settings kept free (default "
                         "%(default)g); the others are held fixed")
-    output_option(p, default="<case>_corrected.toml", what="corrected case file (TOML)")
+    output_option(p, default="<case>_corrected.toml; --flank coast: "
+                             "<case>_coast_corrected.toml", what="corrected case file (TOML)")
     p.set_defaults(func=run_correct, many_analyses=True)
 
 

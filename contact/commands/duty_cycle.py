@@ -53,7 +53,8 @@ def register(sub) -> None:
     solver_option(p)
     rolls_per_cycle_option(p)
     segments_option(p)
-    output_option(p, default="<case>_duty_cycle.nc", what="netCDF file with /duty_cycle")
+    output_option(p, default="<case>_duty_cycle.nc; --flank coast: "
+                             "<case>_coast_duty_cycle.nc", what="netCDF file with /duty_cycle")
     plots_option(p)
     p.add_argument("--report", default=None, metavar="HTML",
                    help="also write the duty-cycle report page (as `ltca report` of the "

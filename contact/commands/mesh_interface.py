@@ -45,7 +45,8 @@ def register(sub) -> None:
     flank_option(p)
     rolls_per_cycle_option(p)
     segments_option(p)
-    output_option(p, default="<case>_mesh_interface.csv", what="CSV file")
+    output_option(p, default="<case>_mesh_interface.csv; --flank coast: "
+                             "<case>_coast_mesh_interface.csv", what="CSV file")
     plots_option(p)
     progress_option(p)
     p.set_defaults(func=run)

@@ -456,8 +456,15 @@ def case_stem(case: str | None) -> str:
 
 def default_output(args: argparse.Namespace, suffix: str = ".nc") -> str:
     """``-o`` if given, else the file named after the case: ``<case><suffix>``
-    (:func:`case_stem` of ``args.case``)."""
-    return args.output if args.output else f"{case_stem(args.case)}{suffix}"
+    (:func:`case_stem` of ``args.case``); of a command run on another flank than the
+    drive (``--flank coast``, or a pinion flank by name), ``<case>_<flank><suffix>``, so
+    that ``ltca run CASE --flank coast`` does not replace the drive's ``<case>.nc`` of
+    ``ltca run CASE`` (issue 71, round 13: it did, with the same "wrote" line)."""
+    if args.output:
+        return args.output
+    flank = getattr(args, "flank", None)
+    named = f"_{flank}" if flank not in (None, "drive") else ""
+    return f"{case_stem(args.case)}{named}{suffix}"
 
 
 def checked_outputs(args: argparse.Namespace, suffix: str = ".nc",

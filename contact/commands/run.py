@@ -84,7 +84,8 @@ def register(sub) -> None:
         action="store_true",
         help="ignore the case's [deviations] table (theoretical surfaces only)",
     )
-    output_option(p, default="<case>.nc, e.g. kolivand2009_fm_11x41_reference.nc")
+    output_option(p, default="<case>.nc, e.g. kolivand2009_fm_11x41_reference.nc; "
+                     "with --flank coast <case>_coast.nc")
     plots_option(p)
     p.add_argument("--report", default=None, metavar="HTML",
                    help="write the one-page HTML report (as `ltca report`) to HTML")

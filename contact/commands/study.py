@@ -117,7 +117,8 @@ def _common(p: argparse.ArgumentParser, *, many_torques: bool = True) -> None:
     flank_option(p)
     rolls_per_cycle_option(p)
     compliance_option(p)
-    output_option(p, default="<case>_<study>.nc; finished points stream to FILE.parts/ and "
+    output_option(p, default="<case>_<study>.nc (--flank coast: "
+                             "<case>_coast_<study>.nc); finished points stream to FILE.parts/ and "
                   "a killed study started again resumes")
     plots_option(p)
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",

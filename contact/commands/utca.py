@@ -37,7 +37,8 @@ def register(sub) -> None:
     misalignment_options(p)
     flank_option(p, default="drive")
     rolls_per_cycle_option(p, default=30, alias="--n-roll")
-    output_option(p, default="<case>_utca.nc", what="netCDF file (groups /easeoff, /utca)")
+    output_option(p, default="<case>_utca.nc; --flank coast: "
+                             "<case>_coast_utca.nc", what="netCDF file (groups /easeoff, /utca)")
     plots_option(p)
     p.add_argument("--separation", type=float, default=6.3,
                    help="separation bounding the contact lines [um] (default 6.3)")

@@ -32,7 +32,7 @@ from contact.ltca.options import LTCASetup
 from contact.ltca.plastic import force_limits, pressure_limits
 from contact.ltca.pool import CompliancePool
 from contact.ltca.results import RollResults
-from contact.ltca.screening import SCREEN_ROUNDS, Screening, carried_torque
+from contact.ltca.screening import SCREEN_ROUNDS, Screening
 from contact.ltca.segments import Segments
 from contact.ltca.weber import RollSelection, WeberSolution, even_share, weber_solve
 from contact.qp import ContactProblem, ContactSolution
@@ -155,7 +155,7 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False
     if opts.separation_limit is not None:
         an.pool.assemble([(j, screening.first_pool(j)) for j in computed])
     elif computed:
-        _assemble_first_pool(an, computed[0])
+        an = _assemble_first_pool(an, computed[0])
     bar = None
     if progress:  # a tqdm bar, or plain lines off a terminal ("lines", as the studies)
         from geometry.core.progress import progress_reporter
@@ -179,7 +179,7 @@ def solve_rolls(setup: LTCASetup, seg: Segments, *, progress: bool | str = False
     timing = {**timing, "compliance_asymmetry": an.pool.asymmetry}
     # the segment axis keeps the curve segments and the edge segments in some problem
     keep = (seg.kind == 0) | np.any(results.in_problem > 0, axis=(0, 1, 2))
-    kept = dataclasses.replace(screening, separation=screening.separation[..., keep])
+    kept = dataclasses.replace(an.screening, separation=screening.separation[..., keep])
     reach = float(seg.edge_arm_max) * float(np.nanmax(results.rotation, initial=0.0))
     return ltca_dataset(setup, seg.keep(keep), kept, results.keep(keep), timing), reach
 
@@ -219,7 +219,16 @@ def _solve_roll(an: _Analysis, cont: _Continuation, j: int, it: int) -> None:
     prior = None if cont.force[it] is None else cont.force[it][sel]
     for _round in range(SCREEN_ROUNDS):
         if np.any(sel & ~pool.mask(j)):
-            pool.assemble([(j, pool.mask(j) | sel)])
+            try:
+                pool.assemble([(j, pool.mask(j) | sel)])
+            except ComplianceModelError:  # the model's fault, not the torque's
+                raise
+            except InputError as exc:  # a segment the rotation closes has no mate
+                raise InputError(
+                    f"torque: {T:g} N m is beyond what the tooth model of this case "
+                    f"carries: at roll {j} its loaded rotation closes segments of far "
+                    "tooth pairs that lie off their mating tooth (the teeth deflect beyond "
+                    f"the model's pairs; {exc})") from exc
         selection = _selection(an, j, sel)
         try:
             ws = weber_solve(selection, gear_torque, _first_load(an, j, gear_torque),
@@ -323,24 +332,35 @@ def _assemble_other_pools(an: _Analysis, j: int, others: list[int]) -> None:
         an.pool.assemble(jobs)
 
 
-def _assemble_first_pool(an: _Analysis, j: int) -> None:
+def _assemble_first_pool(an: _Analysis, j: int) -> _Analysis:
     """The first computed roll's pool: the segments within the generous limit of the
     largest torque (:func:`contact.ltca.screening.generous_limit`, 0.05 mm + 0.15 mm per
     kN·m of gear torque, a bound of the loaded approach).
 
+    Where that limit takes in segments of far tooth pairs that lie off their mating tooth
+    (the bound grows with the torque alone, not with the teeth's size: 9.3 mm at the
+    15.8 kN·m ISO capacity of a hypoid of m_mn 12, whose teeth approach by about a tenth of
+    a millimetre there), the pool is the largest limit that keeps every segment on its
+    mating tooth (found by bisection over the segments' separations). The limit only
+    bounds the pool: each roll's screening adds every segment whose gap the solution would
+    close (:meth:`contact.ltca.screening.Screening.missed`), so the solution does not
+    depend on it (:func:`_solve_roll` says so where such a segment has no mate).
+
+    Returns
+    -------
+    _Analysis
+        ``an``, or ``an`` with the screening's generous limit narrowed to the largest that
+        maps (the other rolls' pools before their first solution are bounded by it too).
+
     Raises
     ------
     InputError
-        ``torque``: the limit takes in segments of far tooth pairs that lie off their
-        mating tooth — the torque deflects the teeth beyond what the tooth model carries.
-        The message gives the largest pinion torque whose limit keeps every segment on its
-        mating tooth at this roll (found by bisection over the segments' separations;
-        :func:`contact.ltca.screening.carried_torque`).
+        ``torque``: not even the roll's nearest segments lie on their mating teeth.
     """
     screening = an.screening
     try:
         an.pool.assemble([(j, screening.first_pool(j))])
-        return
+        return an
     except ComplianceModelError:  # the model's fault, not the torque's
         raise
     except InputError as exc:
@@ -355,11 +375,18 @@ def _assemble_first_pool(an: _Analysis, j: int) -> None:
                 lo = mid
             except InputError:
                 hi = mid
-        ratio = float(an.setup.easeoff.ratio)
-        carried = carried_torque(float(seps[lo]), ratio) if lo >= 0 else 0.0
-        raise InputError(
-            f"torque: {torque:g} N m is beyond what the tooth model of this case carries: "
-            "the loaded approach it may reach takes in segments of far tooth pairs that lie "
-            f"off their mating tooth; this case carries pinion torques up to about "
-            f"{carried:.3g} N m (the approach bounded by 0.05 mm + 0.15 mm per kN m of gear "
-            "torque)") from exc
+        if lo < 0:
+            raise InputError(
+                f"torque: {torque:g} N m is beyond what the tooth model of this case "
+                f"carries: at roll {j} even the nearest segments of its tooth pairs lie off "
+                "their mating tooth") from exc
+    limit = float(seps[lo])
+    narrowed = dataclasses.replace(screening, generous=limit)
+    mask = narrowed.first_pool(j)
+    if not np.array_equal(an.pool.mask(j), mask):  # (the bisection's last success is it)
+        an.pool.assemble([(j, mask)])
+    log.info("torque %g N m: the generous separation limit %.3g mm takes in segments off "
+             "their mating tooth; the pool is bounded by %.3g mm instead (each roll's "
+             "screening adds any segment the solution closes)", torque, screening.generous,
+             limit)
+    return dataclasses.replace(an, screening=narrowed)

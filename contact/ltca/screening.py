@@ -20,7 +20,6 @@ Public functions
 ----------------
 Screening        the separations of an analysis' segments and the selection rules
 generous_limit   a separation limit that holds every loaded segment, before any rotation
-carried_torque   the largest torque whose generous limit is a given separation
 """
 
 from __future__ import annotations
@@ -32,7 +31,7 @@ import numpy as np
 from contact.ltca.segments import Segments
 from geometry.core.errors import InputError
 
-__all__ = ["SCREEN_MARGIN", "SCREEN_PAD", "SCREEN_ROUNDS", "Screening", "carried_torque",
+__all__ = ["SCREEN_MARGIN", "SCREEN_PAD", "SCREEN_ROUNDS", "Screening",
            "generous_limit"]
 
 #: segment screening (LTCAOptions.separation_limit None): a roll's problem takes the
@@ -62,22 +61,6 @@ def generous_limit(torque: float, ratio: float) -> float:
         it against the solution's R Θ and repeats with a wider one if it was too tight).
     """
     return 0.05 + 0.15 * torque * ratio / 1000.0
-
-
-def carried_torque(limit: float, ratio: float) -> float:
-    """The largest pinion torque [N·m] whose :func:`generous_limit` is ``limit`` [mm]: the
-    inverse of the bound, 0 below its 0.05 mm floor.
-
-    Used to say which torques a case carries: the LTCA takes in the segments up to the
-    generous limit, which must all lie on their mating teeth (:func:`contact.ltca.
-    roll_loop.solve_rolls` finds the largest such limit when a torque breaks it).
-
-    Notes
-    -----
-    Source: the screening rule of the module docstring (complementarity of the seed's Eq.
-    3.12–3.13: a segment whose gap stays open carries nothing).
-    """
-    return max(0.0, (limit - 0.05) * 1000.0 / (0.15 * ratio))
 
 
 @dataclass(frozen=True, eq=False)

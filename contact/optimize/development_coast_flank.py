@@ -257,8 +257,10 @@ def coast_development(developed: BasicDesign, drive: DevelopmentEvaluation,
                                  pressure_limit=grid[4])
     except Exception as exc:  # reported, never fatal
         log.info("development coast check failed: %s", exc)
-        say(f"development: coast flank {side}: not checked (its analysis failed: "
-            f"{type(exc).__name__})")
+        # the reason itself, not only its type: "InputError" alone named no cause (the
+        # unseen industrial 11x43 of m_mn 12, issue 71 round 13)
+        say(f"development: coast flank {side}: not checked (its analysis at "
+            f"{torques[0]:.4g}/{torques[1]:.4g} N m failed: {type(exc).__name__}: {exc})")
         return _CoastOutcome(developed, None, [], "not checked", None, torques)
     synthesised = DevelopmentEvaluation(-1, {k: start[k] for k in targets.variables}, m0,
                                         full[0], full[1], full[2], "",

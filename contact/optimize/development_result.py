@@ -365,8 +365,12 @@ class DevelopmentResult:
                if math.isfinite(self.pressure_limit) else "")
         tc = self.coast_design_torques[1]
         at = "" if tc == self.torque[1] else f" at its design torque {tc:.4g} N m"
+        # a coast flank whose analysis failed has no peak: said so, not "coast nan MPa"
+        # (the unseen industrial 11x43 of m_mn 12, issue 71 round 13)
+        said = (f"coast {coast:.0f} MPa{at}" if math.isfinite(coast)
+                else f"coast not analysed{at}")
         return (f"flank peak pressure at {self.torque[1]:.4g} N m drive {drive:.0f} MPa, "
-                f"coast {coast:.0f} MPa{at}{lim}")
+                f"{said}{lim}")
 
     def recorded(self, case: Case) -> Case:
         """``case`` (the developed case, maybe with its rating's design torque set) with
