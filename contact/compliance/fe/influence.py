@@ -75,7 +75,7 @@ from contact.compliance.fe.elasticity import (
 )
 from contact.compliance.fe.mapped_mesh import FacetPoints, facet_points
 from contact.compliance.fe.options import ELEMENTS, FEOptions, member_flank
-from contact.compliance.fe.solid import ToothSolid, build_tooth_solid
+from contact.compliance.fe.solid import ToothSolid, kept_tooth_solid
 from geometry import __version__
 from geometry.core.conventions import data_var
 from geometry.core.errors import InputError, LTCAError
@@ -495,7 +495,9 @@ def build_influence_model(case, member: str, flank: str = "drive",
     name = member_flank(case, member, flank)
     times = {}
     t0 = time.perf_counter()
-    solid = build_tooth_solid(case, member, opt)
+    # kept for a re-synthesis's reuse check, which compares the next design's solid with
+    # this one (contact.compliance.fe.reuse.point_deviation)
+    solid = kept_tooth_solid(case, member, opt)
     grid_u = np.linspace(0.0, 1.0, opt.load_nu)
     grid_v = np.linspace(*load_v_limits(solid.sections, name, opt), opt.load_nv)
     times["solid"] = time.perf_counter() - t0

@@ -102,11 +102,13 @@ def point_deviation(case, earlier, member: str, options: FEOptions | None = None
     from contact.compliance.fe.influence import flank_grid_positions, load_v_limits
     from contact.compliance.fe.mapped_mesh import facet_points
     from contact.compliance.fe.options import ELEMENTS
-    from contact.compliance.fe.solid import build_tooth_solid
+    from contact.compliance.fe.solid import kept_tooth_solid
 
     opt = options if options is not None else FEOptions()
-    new = build_tooth_solid(case, member, opt)
-    old = build_tooth_solid(earlier, member, opt)
+    # the earlier design's solid first: the one its FE build has just made, kept
+    # (kept_tooth_solid); the new one is kept for the build that follows a refusal
+    old = kept_tooth_solid(earlier, member, opt)
+    new = kept_tooth_solid(case, member, opt)
     if new.layout != old.layout or new.mesh.mesh.nelements != old.mesh.mesh.nelements:
         return None
     grid_u = np.linspace(0.0, 1.0, opt.load_nu)

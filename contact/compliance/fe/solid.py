@@ -28,6 +28,8 @@ Public names
 SolidLayout        element counts and parameter ranges of the blocks
 ToothSolid         the meshed solid with its sections and layout
 build_tooth_solid  build it from a case
+kept_tooth_solid   the same, the last four solids of the process kept (a re-synthesis's FE
+                   reuse check and the build that may follow)
 mesh_layout        the element counts: the options' divisions raised to keep the root fine
 """
 
@@ -51,10 +53,11 @@ from contact.compliance.fe.mapped_mesh import (
 )
 from contact.compliance.fe.options import FEOptions
 from contact.compliance.fe.section import ToothSection, ToothSections, tooth_sections
+from geometry.core.caches import Carried, memoised
 from geometry.core.errors import InputError
 
 __all__ = ["SOLID_CORE_FRACTION", "SolidLayout", "ToothSolid", "build_tooth_solid",
-           "default_rim_depth", "mesh_layout"]
+           "default_rim_depth", "kept_tooth_solid", "mesh_layout"]
 
 log = logging.getLogger(__name__)
 
@@ -614,3 +617,50 @@ def build_tooth_solid(case, member: str, options: FEOptions | None = None) -> To
              mesh.min_jacobian, elapsed)
     return ToothSolid(case.name, member, opt, lay, sections, rim_v, float(np.min(depth)),
                       min(fillet_rows, lay.flank), junction_rows, mesh, elapsed)
+
+
+@memoised(maxsize=4)
+def _kept_solid(member: str, key: str, name: str, case: Carried, options: Carried
+                ) -> ToothSolid:
+    """:func:`build_tooth_solid` of ``case.value``'s ``member`` with ``options.value``,
+    memoised by the member's FE key ``key`` and the case's ``name``."""
+    return build_tooth_solid(case.value, member, options.value)
+
+
+def kept_tooth_solid(case, member: str, options: FEOptions | None = None) -> ToothSolid:
+    """:func:`build_tooth_solid`, the last four solids of the process kept (read-only: the
+    same object to every caller).
+
+    Parameters
+    ----------
+    case : geometry.case.Case — a loaded case (face milling or face hobbing)
+    member : str — ``"pinion"`` or ``"gear"``
+    options : FEOptions, optional — solid, mesh and material (default ``FEOptions()``)
+
+    Returns
+    -------
+    ToothSolid — as :func:`build_tooth_solid` returns it (its ``build_time`` the first
+        build's [s])
+
+    Raises
+    ------
+    InputError, LTCAError
+        As :func:`build_tooth_solid`.
+
+    Notes
+    -----
+    Keyed by the member's data and the options as the FE cache keys its coefficients
+    (:func:`contact.compliance.fe.cache.cache_key`: blank, blades, machine settings, hand,
+    process; the solid depends on nothing else of the case, :func:`contact.compliance.fe.
+    section.tooth_sections`) and by the case's name (the solid's ``case_name``). Why: a
+    re-synthesis's reuse check (:func:`contact.compliance.fe.reuse.point_deviation`) compares
+    the new member's solid with the one the FE build of the design before has just made
+    (0.5-1.0 s of CPU each on the 10x43 hypoid's pinion, issue 75), and where it refuses,
+    the new member's build meshes the same solid again. The solid of a member is the same
+    for both working flanks (both are modelled).
+    """
+    from contact.compliance.fe.cache import cache_key
+
+    opt = options if options is not None else FEOptions()
+    key = cache_key(case.member(member), "solid", opt)
+    return _kept_solid(member, key, str(case.name), Carried(case), Carried(opt))
