@@ -19,6 +19,7 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
+import time
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
@@ -101,6 +102,7 @@ def _checked(best: DevelopmentEvaluation, values: Mapping[str, float], label: st
     analysed at ``ltca run``'s sampling at the development's torques
     (:func:`~contact.optimize.development_check.checked_analysis`), scored and said in one
     line as the check's other steps say theirs; None where that failed (logged)."""
+    c0 = time.process_time()
     try:
         case, ms, grid = checked_analysis(setup, placed, values, teeth, bearing_key(values))
     except Exception as exc:  # reported, never fatal: the design it would replace stands
@@ -110,7 +112,8 @@ def _checked(best: DevelopmentEvaluation, values: Mapping[str, float], label: st
                              pressure_limit=grid[4])
     e = dataclasses.replace(best, values=dict(values), metrics=ms, objective=full[0],
                             shortfalls=full[1], met=full[2], full=full, case=case,
-                            checked=True, stage="pitting")
+                            checked=True, stage="pitting",
+                            seconds=time.process_time() - c0)
     say(f"  design {best.index + 1} {label}, at the default sampling: "
         + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1]
         + f"; peak {_peak(e):.0f} MPa")
@@ -216,6 +219,7 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
     say(f"development: flank peak {p:.0f} MPa at {torque:.4g} N m above its local pitting "
         f"limit {limit:.0f} MPa (S_H,loc {limit / p:.2f} of S_Hmin): a longer pattern, "
         "centred lower")
+    c0 = time.process_time()
     s0 = slope if slope is not None and abs(slope) >= HEIGHT_SLOPE_MIN else HEIGHT_SLOPE
     seen: dict[str, float] = {}
     chosen = best
@@ -228,10 +232,11 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
             break
     if chosen is best:
         say(f"development: no longer or lower pattern lowers the peak {p:.0f} MPa and "
-            "keeps the targets; the design kept")
+            f"keeps the targets; the design kept [{time.process_time() - c0:.0f} s]")
     else:
         say(f"development: the pitting step's design kept, peak {_peak(chosen):.0f} MPa at "
-            f"{torque:.4g} N m ({p:.0f} before; local pitting limit {limit:.0f} MPa)")
+            f"{torque:.4g} N m ({p:.0f} before; local pitting limit {limit:.0f} MPa) "
+            f"[{time.process_time() - c0:.0f} s]")
     return chosen
 
 
@@ -247,7 +252,9 @@ def _pitting_round(best: DevelopmentEvaluation, limit: float, targets: Developme
     p = _peak(best)
     worse = {k for k, v in best.full[1].items() if v > 0.0}
     found: list[tuple[float, int, DevelopmentEvaluation]] = []
-    for n, (values, label) in enumerate(_variants(best, targets, setup["centre_v"],
+    centre = (targets.pattern_centre_v if targets.pattern_centre_v is not None
+              else setup["centre_v"])  # the depth centre development_score aims at
+    for n, (values, label) in enumerate(_variants(best, targets, centre,
                                                   seen.get("slope", slope),
                                                   lambda: seen.get("slope"))):
         e = _checked(best, values, label, targets, setup, teeth, say, placed)
@@ -257,7 +264,7 @@ def _pitting_round(best: DevelopmentEvaluation, limit: float, targets: Developme
         if n == 0 and db != 0.0 and values.get("ellipse_length") == best.values.get(
                 "ellipse_length"):  # the first design is the pattern lowered alone
             dv = float(e.metrics["pattern_centre_v"][0]) - v0
-            if dv * db > 0.0 and abs(dv / db) >= HEIGHT_SLOPE_MIN:
+            if abs(dv / db) >= HEIGHT_SLOPE_MIN:
                 seen["slope"] = dv / db
         pe = _peak(e)
         if not (pe <= limit or pe < (1.0 - PITTING_GAIN) * p):
