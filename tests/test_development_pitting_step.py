@@ -142,3 +142,21 @@ def test_a_lower_peak_is_kept_short_of_the_limit_and_none_sought_within_it(stubb
     assert dp.checked_pitting(best_low, targets, dict(SETUP), None, lines.append,
                               placed=lambda v: None) is best_low
     assert len(stubbed) == 1
+
+
+def test_where_none_is_kept_the_note_says_what_the_lowered_peak_missed(stubbed):
+    """The ellipse at its bound, the pattern lowered at the given slope 0.15 per degree
+    (−0.4°: v 0.38, 1496 MPa, the centre v missed): none kept, the design returned as it
+    was and the note for the design torque's source says the peak, the limit and the
+    target missed."""
+    targets = DevelopmentTargets(variables={"ellipse_length": (0.15, 0.55),
+                                            HEIGHT_NAME: (-1.0, 1.0)})
+    best = _evaluation({"ellipse_length": 0.55, HEIGHT_NAME: 0.0})
+    setup = dict(SETUP)
+    kept = dp.checked_pitting(best, targets, setup, None, lambda line: None,
+                              placed=lambda v: None, slope=0.15)
+    assert kept is best and len(stubbed) == 1
+    assert setup["pitting_tried"] == (
+        "before any cut, a pattern longer and centred lower was tried at 100 N m, where the "
+        "bearing peaked at 1700 MPa against its local pitting limit 1550 MPa: none kept "
+        "(each lowered peak missed centre_v)")

@@ -469,6 +469,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                                                     setup, say)
                     root_text = text or root_text
         _outclassed(setup, outclassed_below)
+        if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
+            # a torque cut for the local pitting capacity says what was tried before it
+            setup["source"] = f"{setup['source']}; {setup['pitting_tried']}"
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
     # strength, no plastic segment, root stress) where that is less

@@ -221,7 +221,7 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         "centred lower")
     c0 = time.process_time()
     s0 = slope if slope is not None and abs(slope) >= HEIGHT_SLOPE_MIN else HEIGHT_SLOPE
-    seen: dict[str, float] = {}
+    seen: dict[str, Any] = {"missed": set()}
     chosen = best
     for _ in range(PITTING_ROUNDS):
         kept = _pitting_round(chosen, limit, targets, setup, teeth, say, placed, s0, seen)
@@ -230,24 +230,34 @@ def checked_pitting(best: DevelopmentEvaluation, targets: DevelopmentTargets,
         chosen = kept
         if _peak(chosen) <= limit:
             break
+    tried = (f"before any cut, a pattern longer and centred lower was tried at {torque:.4g} "
+             f"N m, where the bearing peaked at {p:.0f} MPa against its local pitting "
+             f"limit {limit:.0f} MPa: ")
     if chosen is best:
+        missed = sorted(seen["missed"])
+        tried += "none kept" + (f" (each lowered peak missed {', '.join(missed)})"
+                                if missed else " (none lowered the peak)")
         say(f"development: no longer or lower pattern lowers the peak {p:.0f} MPa and "
             f"keeps the targets; the design kept [{time.process_time() - c0:.0f} s]")
     else:
+        tried += f"kept, {_peak(chosen):.0f} MPa"
         say(f"development: the pitting step's design kept, peak {_peak(chosen):.0f} MPa at "
             f"{torque:.4g} N m ({p:.0f} before; local pitting limit {limit:.0f} MPa) "
             f"[{time.process_time() - c0:.0f} s]")
+    if isinstance(setup, dict):  # for the design torque's source where it is cut after
+        setup["pitting_tried"] = tried
     return chosen
 
 
 def _pitting_round(best: DevelopmentEvaluation, limit: float, targets: DevelopmentTargets,
                    setup: Mapping[str, Any], teeth: KeptTeeth, say: Callable[[str], None],
                    placed: Callable[[Mapping[str, float]], Case], slope: float,
-                   seen: dict[str, float]) -> DevelopmentEvaluation | None:
+                   seen: dict[str, Any]) -> DevelopmentEvaluation | None:
     """One round of :func:`checked_pitting` from ``best``: its variants (:func:`_variants`)
     checked in turn until one is within ``limit`` [MPa]; the tolerant one of the lowest
     peak among those that count, or None. ``seen["slope"]``: d(centre v)/d(blade angle)
-    [1/deg] measured on the first variant (kept across rounds), else ``slope``."""
+    [1/deg] measured on the first variant (kept across rounds), else ``slope``;
+    ``seen["missed"]`` gets the targets of the designs not kept for them."""
     v0 = float(best.metrics["pattern_centre_v"][0])
     p = _peak(best)
     worse = {k for k, v in best.full[1].items() if v > 0.0}
@@ -272,6 +282,7 @@ def _pitting_round(best: DevelopmentEvaluation, limit: float, targets: Developme
         gone = sorted(k for k, v in e.full[1].items()
                       if v > 0.0 and (k not in worse or v > best.full[1][k] + 1e-9))
         if gone:
+            seen.setdefault("missed", set()).update(gone)
             say(f"  not kept: {label} misses {', '.join(gone)}")
             continue
         found.append((pe, n, e))
