@@ -44,7 +44,9 @@ again (:func:`_checked_te`) and its path turned towards the profile where it mis
 length or LTE there (:func:`_checked_path`), and where the chosen one's flank peak
 pressure at the rating's capacity exceeds the static strength the design torque is
 lowered to what the bearing carries (:func:`static_capacity`): a design never fails its
-own check at its own design torque. Then the **coast flank** (:func:`coast_development`):
+own check at its own design torque; where it exceeds the local pitting limit, a longer
+pattern and one centred lower are tried first
+(:mod:`contact.optimize.development_pitting`). Then the **coast flank** (:func:`coast_development`):
 the chosen design's coast flank, synthesised from its own prescriptions, is checked at
 :data:`CHECK_LTCA` at the same light and design torque against the same targets (it
 carries the full torque in reverse gear), and where it misses one it gets the same
@@ -147,6 +149,7 @@ from contact.optimize.development_evaluate import (  # noqa: F401
     lte_spread,
     static_strength,
 )
+from contact.optimize.development_pitting import checked_pitting
 from contact.optimize.development_result import (  # noqa: F401
     COAST_STATUS,
     STATIC_MARGIN,
@@ -291,7 +294,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     meets every target) and the chosen one is scored by that check. Where the design
     torque is the rating's capacity (the default) and the chosen design's flank peak
     pressure there exceeds the static strength, the design torque is lowered to the
-    bearing's static flank capacity (:func:`static_capacity`); after the final synthesis,
+    bearing's static flank capacity (:func:`static_capacity`); where it is not and the
+    peak exceeds the local pitting limit at that torque, a longer pattern and one centred
+    lower are tried and the lowest peak that keeps the targets kept
+    (:func:`~contact.optimize.development_pitting.checked_pitting`); after the final synthesis,
     where the written case's FE root stress gives S_F,FE < S_Fmin, or its LTCA peak flank
     pressure a local pitting safety at long life S_H,loc < S_Hmin, at the design torque,
     to that capacity (:func:`contact.optimize.development_root.root_capacity`;
@@ -395,6 +401,11 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         _outclassed(setup, outclassed_below)
         if setup["lowered"]:  # the steps again at the torques the bearing carries
             best = steps(best)
+        else:  # at the ISO capacity: its peak within the local pitting limit where a
+            # longer pattern or one centred lower does it (the pitting capacity of the
+            # written case would else cut the design torque, development_root)
+            best = checked_pitting(best, targets, setup, teeth, say, placed,
+                                   slope=evaluate.slopes.get(bearing_key(best.values)))
     if outclassable and best.case is not None:
         # a second gear process: stopped before its coast flank and its FE build where
         # its local pitting capacity cannot reach the first one's design torque
@@ -458,6 +469,9 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                                                     setup, say)
                     root_text = text or root_text
         _outclassed(setup, outclassed_below)
+        if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
+            # a torque cut for the local pitting capacity says what was tried before it
+            setup["source"] = f"{setup['source']}; {setup['pitting_tried']}"
     # the coast flank at its own design torque as `ltca run --flank coast` analyses it,
     # the coast design torque lowered to what its developed bearing carries (flank static
     # strength, no plastic segment, root stress) where that is less
