@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import tomllib
-from dataclasses import replace
+from dataclasses import fields, replace
 from pathlib import Path
 
 import numpy as np
@@ -166,3 +166,32 @@ def test_tolerance_check_analyses_the_scaled_excursions(monkeypatch):
     got = [x for m in seen for x in (m.delta_E, m.delta_P, m.delta_G, m.delta_Sigma)]
     want = [step, 0, 0, 0, -step, 0, 0, 0, 0, step, 0, 0, 0, -step, 0, 0]
     assert got == pytest.approx(want, rel=1e-12, abs=0.0)
+
+
+def test_edge_break_follows_the_tooth():
+    """A case written from basic data gets the blank's edge break radius 0.5 mm ×
+    size_scale, to 0.1 µm (issue 71: the 14x33 of m_mn 1.18 mm had an edge 2.5 times
+    blunter than a 3 mm tooth's, and its edge pressure was 0 where its 3x copy's was 905
+    MPa); a value the file gives is kept; at m_mn >= 3 mm nothing is set and the case keeps
+    the blank's own default. Checked against the rule as stated (one product)."""
+    from geometry.case import Blank
+    from geometry.synthesis.basic_design import EDGE_BREAK_RADIUS
+    from geometry.synthesis.case_synthesis import synthesize
+
+    assert EDGE_BREAK_RADIUS == 0.5
+    assert next(f.default for f in fields(Blank) if f.name == "edge_break_radius") == 0.5
+    basic = load_basic(SMALL)
+    scale = basic.blank().m_mn / REFERENCE_MODULE
+    r = basic.options.edge_break_radius
+    assert r == pytest.approx(0.5 * scale, abs=0.5e-4) and r == round(r, 4)
+    case, _ = synthesize(basic)
+    assert case.pinion.blank.edge_break_radius == case.gear.blank.edge_break_radius == r
+    raw = tomllib.loads(SMALL.read_text(encoding="utf-8"))
+    raw["synthesis"] = {"edge_break_radius": 0.5}
+    assert basic_from_dict(raw).options.edge_break_radius == 0.5
+    for bad in (0.0, -0.1, 25.0):
+        raw["synthesis"] = {"edge_break_radius": bad}
+        with pytest.raises(InputError, match=r"synthesis\.edge_break_radius"):
+            basic_from_dict(raw)
+    big = load_basic(DATA / "designs" / "spiral_bevel_15x45_m0.toml")
+    assert big.size_scale() == 1.0 and big.options.edge_break_radius is None

@@ -407,6 +407,8 @@ def _size_line(basic, targets) -> str | None:
             f"{REFERENCE_MODULE:g} mm, the um-sized defaults x {scale:.3g} (a value the file "
             f"gives is kept): drive flank approach {1e3 * o.approach:.3g} um, relief "
             f"{1e3 * o.tip_relief:.3g}/{1e3 * o.root_relief:.3g} um")
+    if basic.options.edge_break_radius is not None:
+        line += f", edge break radius {basic.options.edge_break_radius:.3g} mm"
     if targets is not None and "tip_relief" in targets.variables:
         lo, hi = targets.variables["tip_relief"]
         line += f", the development's relief bounds {lo:.3g}-{hi:.3g} um"

@@ -44,7 +44,7 @@ from typing import Any
 
 from scipy.optimize import least_squares
 
-from geometry.case import operating_from_dict
+from geometry.case import Blank, operating_from_dict
 from geometry.core.errors import InputError, ModelUnavailableError
 from geometry.core.toml_files import read_toml
 from geometry.core.validation import real
@@ -53,6 +53,7 @@ from geometry.iso23509.pitch_cone import BevelGearDesign
 
 __all__ = [
     "DEFAULT_RATING",
+    "EDGE_BREAK_RADIUS",
     "FLANK_OPTION_UNITS",
     "PROCESSES",
     "REFERENCE_MODULE",
@@ -121,6 +122,13 @@ REFERENCE_MODULE = 3.0
 #: the basic file gives is used as given
 SIZE_SCALED_OPTIONS = ("approach", "tip_relief", "root_relief")
 
+#: [mm] the case blank's edge break radius (:class:`geometry.case.Blank`, default 0.5 mm)
+#: that a case written from basic data gets × :func:`size_scale` where ``[synthesis]
+#: edge_break_radius`` is not given (issue 71: on a tooth of m_mn 1.18 mm the 0.5 mm of a
+#: 3 mm tooth is an edge 2.5 times blunter relative to it, and its edge pressure is
+#: optimistic)
+EDGE_BREAK_RADIUS = next(f.default for f in fields(Blank) if f.name == "edge_break_radius")
+
 
 def size_scale(m_mn: float) -> float:
     """The factor the µm-sized defaults follow the tooth size by: min(1, m_mn / m_ref).
@@ -182,6 +190,15 @@ def _size_scaled_defaults(scale: float) -> dict[str, float]:
         return {}
     return {n: scale * f.default for f in fields(FlankOptions) if (n := f.name)
             in SIZE_SCALED_OPTIONS}
+
+
+def _scaled_edge_break(scale: float) -> dict[str, float]:
+    """``edge_break_radius`` = :data:`EDGE_BREAK_RADIUS` × ``scale`` [mm], rounded to 0.1 µm
+    as the development's scaled mounting excursions; none at a scale of 1 (the case blank's
+    own default)."""
+    if scale == 1.0:
+        return {}
+    return {"edge_break_radius": round(scale * EDGE_BREAK_RADIUS, 4)}
 
 
 def _design_scale(design: BevelGearDesign) -> float:
@@ -335,6 +352,13 @@ class SynthesisOptions:
         W = π m_mn − s_mn2 − h_fm2 (tan α_D + tan α_C).
     edge_radius : float or None — [mm]
         Blade edge radius of both members; default min(0.25 m_mn, 0.4 W).
+    edge_break_radius : float or None — [mm]
+        Edge break (rounding) radius of both members' tooth edges, written into the case's
+        ``[<member>.blank] edge_break_radius`` (:class:`geometry.case.Blank`; the radius of
+        the Hertz line contact of an edge, :mod:`contact.ltca.edges`), in (0, 20]. Default
+        None: the case blank's own 0.5 mm (:data:`EDGE_BREAK_RADIUS`); a basic file that
+        does not give it gets 0.5 mm × :func:`size_scale` (m_mn below
+        :data:`REFERENCE_MODULE`: in proportion to the module, written into the case).
     design_torque : float or None — [N·m]
         Pinion torque at which the development bearing is checked under load (no edge
         contact beyond a small share, no plastic edge; ``docs/synthesis.md``), in
@@ -356,6 +380,7 @@ class SynthesisOptions:
     point_width: float | None = None
     edge_radius: float | None = None
     design_torque: float | None = None
+    edge_break_radius: float | None = None
     concave: FlankOptions = field(default_factory=FlankOptions)
     convex: FlankOptions = field(default_factory=FlankOptions)
 
@@ -374,6 +399,7 @@ class SynthesisOptions:
         for name, lo, hi, unit in (("cutter_radius", 0.0, 1e4, "mm"),
                                    ("point_width", 0.0, 100.0, "mm"),
                                    ("edge_radius", 0.0, 20.0, "mm"),
+                                   ("edge_break_radius", 0.0, 20.0, "mm"),
                                    ("design_torque", 0.0, 1e6, "N m")):
             v = getattr(self, name)
             if v is not None:
@@ -529,7 +555,7 @@ def fit_design(design: BevelGearDesign, targets: Mapping[str, float],
 
 _OPTION_FIELDS = {"drive_flank", "gear_process", "pinion_process", "cutter_radius",
                   "blade_angle_drive", "blade_angle_coast", "point_width", "edge_radius",
-                  "design_torque"}
+                  "design_torque", "edge_break_radius"}
 _FLANK_FIELDS = {f.name for f in fields(FlankOptions)}
 _TOP = {"name", "source", "design", "targets", "synthesis", "notes", "operating", "optimize",
         "rating", "development"}
@@ -707,9 +733,11 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
         accepted = _OPTION_FIELDS | _FLANK_FIELDS | {"concave", "convex", "method"}
         raise InputError(f"synthesis.{unknown[0]}: unknown field; accepted: "
                          f"{sorted(accepted)}")
-    # the µm-sized defaults follow the tooth size (size_scale); a value given wins
+    # the µm-sized defaults and the edge break follow the tooth size (size_scale); a value
+    # given wins
+    scale = _design_scale(design)
     common = _flank_options(flank_common, "synthesis",
-                            defaults=_size_scaled_defaults(_design_scale(design)))
+                            defaults=_size_scaled_defaults(scale))
     per_flank = {f: _flank_options(flank_raw[f], f"synthesis.{f}", common)
                  for f in ("concave", "convex")}
     kw = dict(syn)
@@ -719,7 +747,7 @@ def basic_from_dict(raw: Mapping[str, Any], *, fit: bool = True) -> BasicDesign:
             if isinstance(v, bool) or not isinstance(v, (int, float)):
                 raise InputError(f"synthesis.{name}: must be a number [deg], got {v!r}")
             kw[name] = math.radians(v)
-    options = SynthesisOptions(**kw, **per_flank)
+    options = SynthesisOptions(**(_scaled_edge_break(scale) | kw), **per_flank)
     notes = raw.get("notes", {})
     if not isinstance(notes, Mapping) or not all(isinstance(v, str) for v in notes.values()):
         raise InputError(f"notes: must be a table of strings, got {notes!r}")

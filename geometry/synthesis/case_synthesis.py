@@ -1155,6 +1155,9 @@ def _assemble(basic: BasicDesign, geom: BlankGeometry, gear: GearTools,
         },
         "synthesis": info,
     }
+    if opt.edge_break_radius is not None:  # given, or scaled below REFERENCE_MODULE
+        for member in ("pinion", "gear"):
+            doc[member]["blank"]["edge_break_radius"] = opt.edge_break_radius
     if basic.operating:
         doc["operating"] = dict(basic.operating)
     # the ISO 10300 rating's inputs: the (fitted) basic design data and the rating table
