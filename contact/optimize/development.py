@@ -97,6 +97,7 @@ design_torque_of     the torque the bearing is checked at
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 import time
@@ -440,6 +441,7 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         # the FE root stress and the local pitting safety of the written case at the
         # design torque (ltca run's FE model, cached: ltca run reads it), the torque
         # lowered to its capacity if below (development_root.root_capacity)
+        ceiling = float(setup["torques"][1])  # the torque before a capacity cut
         best, root_safety, root_text = checked_root_capacity(case, best, targets, setup, say)
         # a second gear process cut below the first one's design torque stops here, not
         # after the steps again, a re-synthesis and its FE build (the torque is only
@@ -455,6 +457,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
             before = best
             best, root_safety, text = checked_root_capacity(case, best, targets, setup, say)
             root_text = text or root_text
+            if not text:  # the bearing developed at the cut torques may carry more
+                best, root_text, root_safety = _regained(case, best, targets, setup,
+                                                         ceiling, root_text, root_safety,
+                                                         say)
             # the second cut may cost a target the steps had met (no step follows it):
             # one more step where it did, the case written again where it is better, and
             # its root capacity taken once more only where its FE model changed
@@ -559,6 +565,40 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
                                tolerant_torque=upto)
     say(result.headline())
     return result
+
+
+def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
+              setup: dict[str, Any], ceiling: float, root_text: str, root_safety: float,
+              say: Callable[[str], None]) -> tuple[DevelopmentEvaluation, str, float]:
+    """The design torque raised back towards ``ceiling`` [N·m] on the bearing developed
+    after a capacity cut (:func:`contact.optimize.development_root.regained_capacity`),
+    kept only where the drive design re-scored at the new torques loses no target it met
+    at the cut ones; ``setup``'s torques and source updated where kept. Returns the
+    design, the case's torque phrase and S_F,FE at the design torque."""
+    from contact.optimize.development_root import regained_capacity
+
+    torque = float(setup["torques"][1])
+    up = regained_capacity(case, setup, targets.light_load, ceiling, say)
+    if up is None:
+        return best, root_text, root_safety
+    tree, torques, new, safety = up
+    ms, grid = design_metrics(tree, case), (*grid_bounds(tree), static_strength(tree))
+    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                             pressure_limit=grid[4])
+    lost = sorted(k for k, v in full[1].items()
+                  if v > 0 and not (best.shortfalls or {}).get(k, 0.0) > 0)
+    if lost:
+        say(f"  design torque not raised {torque:.4g} -> {new:.4g} N m on the bearing "
+            f"developed at it: it would miss {', '.join(lost)}")
+        return best, root_text, root_safety
+    source = (f"{setup['source']}; on the bearing developed at {torque:.4g} N m, "
+              f"raised back to {new:.4g} N m (of {ceiling:.4g}), where every capacity "
+              "criterion holds")
+    say(f"  design torque {torque:.4g} -> {new:.4g} N m: the bearing developed at the "
+        f"lowered torque carries it (S_F,FE and S_H,loc at or above their minima)")
+    setup.update(torques=torques, source=source)
+    return (dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
+                                met=full[2], full=full), source, safety)
 
 
 def _outclassed(setup: dict[str, Any], below: float) -> None:

@@ -359,15 +359,12 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
             "stress and no ISO 10300 rating)")
         return None, math.nan, ""
 
-    def root_of(sf: dict) -> float:
-        return float(sf["root"][0][-1]) if "root" in sf else math.nan
-
     fails = _failing(safe)
     if not fails:
         say(f"development: at {torque:.4g} N m " + "; ".join(
             f"{CRITERIA[k][1]} {float(s[-1]):.2f} ({m}) >= {s_min:g}"
             for k, (s, s_min, m) in safe.items()))
-        return None, root_of(safe), ""
+        return None, _root_of(safe), ""
     first = {k: (float(safe[k][0][-1]), safe[k][1], safe[k][2]) for k in fails}
     # the exponent b of S ∝ T^(-b) first from the light and the design torque, then from
     # the last two design torques (the local slope)
@@ -396,7 +393,7 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
         if not fails:
             break
     if tree is None:  # no lower torque checked
-        return None, root_of(safe), ""
+        return None, _root_of(safe), ""
     if not fails:  # back up inside the bracket where the step landed well below
         up = _back_up(case, light_load, t, bad, safe, slope, say)
         if up is not None:
@@ -428,7 +425,91 @@ def root_capacity(case, setup: dict[str, Any], light_load: float,
               f" -> {t:.4g} N m, where {now}")
     say(f"  design torque {torque:.4g} -> {t:.4g} N m: {source}")
     setup.update(torques=torques, source=source, lowered=True)
-    return tree, root_of(safe), source
+    return tree, _root_of(safe), source
+
+
+def regained_capacity(case, setup: dict[str, Any], light_load: float, ceiling: float,
+                      say: Callable[[str], None]
+                      ) -> tuple[Any, list[float], float, float] | None:
+    """The design torque raised back towards ``ceiling`` [N·m] where the written ``case``
+    is a bearing developed *after* a capacity cut (:func:`root_capacity`): the cut was
+    measured on the bearing before it, and the steps that followed at the lowered torques
+    may have made one that carries more (the unseen hypoid 5×39 at a = 0.275 d_e2: cut
+    72.2 → 47.4 N·m for local pitting, the bearing developed at 47.4 N·m then peaks at
+    1095 MPa at 72.2 N·m against its local pitting limit 1089 MPa — S_H,loc 0.995, so it
+    carries ≈ 70 N·m, not 47.4).
+
+    The case is checked at ``ceiling`` by :data:`CRITERIA` (S_F,FE >= S_Fmin, S_H,loc >=
+    S_Hmin); where every criterion holds there, the design torque is ``ceiling``. Else
+    each failing criterion's exponent b of S ∝ T^(−b) is measured between the design
+    torque (``setup["torques"][1]``) and ``ceiling`` (:func:`_exponent`, its bounds), the
+    capacity estimated from ``ceiling`` by :func:`root_capacity_step` (margin 0.99) and
+    checked there: kept where every criterion holds and it is above 1.01 × the design
+    torque, else None (the torque written stays). At most three analyses; an analysis
+    that fails is said through ``say``, never raised. ``setup`` is not changed: the caller
+    re-scores the drive targets at the new torques and keeps them only where no target is
+    lost.
+
+    Parameters
+    ----------
+    case : Case — the written case (its FE models built: ``ltca run``'s)
+    setup : dict — the development's state; ``setup["torques"]`` [N·m] (light, design)
+    light_load : float — [1] the light torque's share of the design torque
+    ceiling : float — [N·m] the torque before the cut (the rating's capacity or the
+        static capacity), > the design torque
+
+    Returns
+    -------
+    (tree, torques, torque, S_F,FE) or None
+        The analysis at the new (light, design) torques [N·m], the design torque [N·m]
+        and the weaker member's S_F,FE there [1] (NaN where not computed); None where the
+        torque is not raised.
+
+    Source: ISO 10300-2:2014 (S_H) and the FE root stress (S_F,FE), with the capacity
+    step of :func:`root_capacity` (the issue-71 development, docs/synthesis.md
+    "The design torque raised back on the final bearing").
+    """
+    torque = float(setup["torques"][1])
+    if not (math.isfinite(ceiling) and ceiling > 1.01 * torque):
+        return None
+    high = _checked_at(case, light_load, ceiling, say)
+    if high is None:
+        return None
+    tree_hi, safe_hi = high
+    if not safe_hi:
+        return None
+    fails = _failing(safe_hi)
+    if not fails:
+        return tree_hi, case_torques(light_load, ceiling), ceiling, _root_of(safe_hi)
+    low = _checked_at(case, light_load, torque, say)
+    if low is None:
+        return None
+    _, safe_lo = low
+    if _failing(safe_lo):  # the written torque does not hold either: not this step's
+        return None
+    est = math.inf
+    for k in fails:
+        if k not in safe_lo:
+            return None
+        s_hi, s_min, _ = safe_hi[k]
+        if not (float(s_hi[-1]) > 0 and math.isfinite(float(s_hi[-1]))):
+            return None
+        b = _exponent(torque, float(safe_lo[k][0][-1]), ceiling, float(s_hi[-1]),
+                      CRITERIA[k][2][2], *CRITERIA[k][2][:2])
+        est = min(est, root_capacity_step(ceiling, float(s_hi[-1]), s_min, exponent=b))
+    new = floor_torque(min(est, ceiling))
+    if not (1.01 * torque < new < ceiling):
+        return None
+    checked = _checked_at(case, light_load, new, say)
+    if checked is None or not checked[1] or _failing(checked[1]):
+        return None
+    return checked[0], case_torques(light_load, new), new, _root_of(checked[1])
+
+
+def _root_of(safe: dict) -> float:
+    """The weaker member's S_F,FE at the design torque [1] of a safeties dict (NaN where
+    the root stress was not computed)."""
+    return float(safe["root"][0][-1]) if "root" in safe else math.nan
 
 
 def _back_up(case, light_load: float, t: float, bad: float,
