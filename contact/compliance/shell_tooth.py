@@ -363,34 +363,17 @@ class ShellModel:
         # (unknowns, loads) array, the layout half_solve's BLAS product takes as it is
         out_t = np.empty((n_out, self.n_dof))
 
-        stacked: dict[int, np.ndarray] = {}  # the face rows as (groups, G, m), once each
-
         def outer(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-            # Σ_g w_g a[k, (n, g)] b[m, (n, g)] as rows n, columns (k, m)
-            if wts.size == 1:
-                return (a.T[:, :, None] * b.T[:, None, :]).reshape(n_pts, -1)
-            # one (k × G)(G × m) product per group, stacked over the groups n; the
-            # operands made contiguous first (BLAS's layout: strided views are not)
-            aw = np.ascontiguousarray(
-                (a.reshape(a.shape[0], n_out, wts.size) * wts).transpose(1, 0, 2))
-            if id(b) not in stacked:
-                stacked[id(b)] = np.ascontiguousarray(
-                    b.reshape(b.shape[0], n_out, wts.size).transpose(1, 2, 0))
-            return np.matmul(aw, stacked[id(b)]).reshape(n_out, -1)
+            # a[k, n] b[m, n] as rows n, columns (k, m) (one point a load: groups of G > 1
+            # are _grouped_load_vectors')
+            return (a.T[:, :, None] * b.T[:, None, :]).reshape(n_pts, -1)
 
         plain: list[tuple[int, np.ndarray]] = []  # (column, rows a) of works outer(a, g)
         for fam, off, power, count in self._layout:
             if (power, count) not in heights:
                 heights[(power, count)] = _height_rows(xi, power, count)
             f, df = heights[(power, count)]
-            comp = d[:, fam.component]
-            # work of the force on the family's field at the point (see the docstring)
-            if fam.z_power == 0:
-                scale = comp
-            elif fam.z_power == 1 and fam.component != _W:
-                scale = comp * zs
-            else:
-                scale = None
+            scale = _work_scale(fam, d, zs)
             cols = slice(off, off + f.shape[0] * g.shape[0])
             if fam.rotates:  # U_z = −∂W/∂x, V_z = −∂W/∂θ / R at z = 0
                 a_x = zs * d[:, 0] * dxi
@@ -447,14 +430,7 @@ class ShellModel:
             if (power, count) not in heights:
                 heights[(power, count)] = _height_rows(xi, power, count)
             f, df = heights[(power, count)]
-            comp = d[:, fam.component]
-            # work of the force on the family's field at the point (see load_vectors)
-            if fam.z_power == 0:
-                scale = comp
-            elif fam.z_power == 1 and fam.component != _W:
-                scale = comp * zs
-            else:
-                scale = None
+            scale = _work_scale(fam, d, zs)
             r0 = off // n_face
             if fam.rotates:  # U_z = −∂W/∂x, V_z = −∂W/∂θ / R at z = 0
                 a_x = zs * d[:, 0] * dxi
@@ -527,6 +503,20 @@ def _legendre_rows(t: np.ndarray, count: int) -> tuple[np.ndarray, np.ndarray]:
         p[k + 1] = ((2 * k + 1) * t * p[k] - k * p[k - 1]) / (k + 1)
         dp[k + 1] = dp[k - 1] + (2 * k + 1) * p[k]
     return p, dp
+
+
+def _work_scale(fam, d: np.ndarray, zs: np.ndarray) -> np.ndarray | None:
+    """The multiplier of a shell family's height rows f_k in the work of unit forces
+    ``d`` (P, 3) [1] applied at z = ``zs`` (P,) [mm] (:meth:`ShellTooth.load_vectors`'
+    docstring): the force component itself for a field that does not vary through the
+    thickness, the component times z for a linear in-plane field, None where the force
+    does no work on the family but through its rotation (a rotating family's ∂W terms)."""
+    comp = d[:, fam.component]
+    if fam.z_power == 0:
+        return comp
+    if fam.z_power == 1 and fam.component != _W:
+        return comp * zs
+    return None
 
 
 def _height_rows(xi: np.ndarray, power: int, count: int) -> tuple[np.ndarray, np.ndarray]:
