@@ -28,6 +28,7 @@ import numpy as np
 from contact.optimize.development_check import checked_analysis, kept_why
 from contact.optimize.development_evaluate import KeptTeeth, bearing_key, evaluation_line
 from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_root import long_life_contact_allowable
 from contact.optimize.development_stages import HEIGHT_SLOPE, HEIGHT_SLOPE_MIN
 from contact.optimize.development_targets import (
     HEIGHT_NAME,
@@ -87,8 +88,7 @@ def pitting_pressure_limit(case: Case, torque: float) -> float:
     speed = case.operating.pinion_speed or OPERATING_DEFAULTS["pinion_speed"]
     ds = iso10300_rating(case, torque=np.atleast_1d(float(torque)), pinion_speed=speed,
                          rating=table)
-    allow = (ds["sigma_Hlim"] * ds["Z_X"] * ds["Z_L"] * ds["Z_speed"] * ds["Z_R"] * ds["Z_W"]
-             * ds["Z_K"] * ds["Z_Hyp"])
+    allow = long_life_contact_allowable(ds)
     k_v = float(np.ravel(np.asarray(ds["K_v"].values, float))[-1])
     return float(np.min(np.asarray(allow.values, float))) / (
         float(ds["S_Hmin"]) * math.sqrt(float(ds["K_A"]) * k_v))

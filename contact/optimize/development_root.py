@@ -212,6 +212,37 @@ def both_flanks_built(case, earlier=None,
     return kept
 
 
+def long_life_contact_allowable(rating):
+    """σ_HP,∞ = σ_Hlim Z_X Z_L Z_v Z_R Z_W Z_K Z_Hyp [MPa] per member: the permissible
+    contact stress at long life (Z_NT = 1) of an ISO 10300 rating dataset, the strength
+    side of :func:`pitting_safety` and of
+    :func:`contact.optimize.development_pitting.pitting_pressure_limit`.
+
+    Parameters
+    ----------
+    rating : xarray.Dataset
+        An ISO 10300 ``/rating`` (:func:`contact.load_capacity.iso10300.rating.iso10300_rating`)
+        with ``sigma_Hlim`` [MPa] and the factors ``Z_X, Z_L, Z_speed, Z_R, Z_W, Z_K,
+        Z_Hyp`` [1].
+
+    Returns
+    -------
+    xarray.DataArray — [MPa], over ``member`` (and the factors' other dimensions)
+
+    Raises
+    ------
+    KeyError
+        A factor missing from ``rating``.
+
+    Notes
+    -----
+    Source: ISO 10300-2:2014 cl. 6 (Method B1), σ_HP = σ_Hlim Z_NT Z_X Z_L Z_v Z_R Z_W Z_K
+    Z_Hyp with Z_NT = 1 (ISO/TR 10300-30:2024 sample 1 checks the factors).
+    """
+    return (rating["sigma_Hlim"] * rating["Z_X"] * rating["Z_L"] * rating["Z_speed"]
+            * rating["Z_R"] * rating["Z_W"] * rating["Z_K"] * rating["Z_Hyp"])
+
+
 def pitting_safety(tree) -> tuple[np.ndarray, float, str]:
     """(S_H,loc of the weaker member per torque [1], S_Hmin [1], its member) of an analysis
     with an ISO 10300 ``/rating`` at the LTCA's torques: the local flank safety at long life.
@@ -270,8 +301,7 @@ def pitting_safety(tree) -> tuple[np.ndarray, float, str]:
     if not np.array_equal(np.asarray(rt["torque"].values, float),
                           np.asarray(lt["torque"].values, float)):
         raise LookupError("no ISO 10300 rating at the analysed torques")
-    allow = (rt["sigma_Hlim"] * rt["Z_X"] * rt["Z_L"] * rt["Z_speed"] * rt["Z_R"] * rt["Z_W"]
-             * rt["Z_K"] * rt["Z_Hyp"])
+    allow = long_life_contact_allowable(rt)
     members = [str(m) for m in allow["member"].values]
     k_v = np.broadcast_to(np.asarray(rt["K_v"].values, float), p.shape)
     load = p * np.sqrt(float(rt["K_A"]) * k_v)
