@@ -97,7 +97,6 @@ design_torque_of     the torque the bearing is checked at
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import math
 import time
@@ -117,6 +116,7 @@ from contact.optimize.development_check import (
     checked_tolerance,
     final_tolerance,
     placed_case,
+    rescored,
     static_capacity,
     steps_on_each,
     tolerance_checks,  # noqa: F401  (re-exported)
@@ -582,10 +582,8 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     if up is None:
         return best, root_text, root_safety
     tree, torques, new, safety = up
-    ms, grid = design_metrics(tree, case), (*grid_bounds(tree), static_strength(tree))
-    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                             pressure_limit=grid[4])
-    lost = sorted(k for k, v in full[1].items()
+    raised = rescored(best, tree, case, targets, setup)
+    lost = sorted(k for k, v in raised.shortfalls.items()
                   if v > 0 and not (best.shortfalls or {}).get(k, 0.0) > 0)
     if lost:
         say(f"  design torque not raised {torque:.4g} -> {new:.4g} N m on the bearing "
@@ -597,8 +595,7 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
     say(f"  design torque {torque:.4g} -> {new:.4g} N m: the bearing developed at the "
         f"lowered torque carries it (S_F,FE and S_H,loc at or above their minima)")
     setup.update(torques=torques, source=source)
-    return (dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
-                                met=full[2], full=full), source, safety)
+    return raised, source, safety
 
 
 def _outclassed(setup: dict[str, Any], below: float) -> None:

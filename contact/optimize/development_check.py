@@ -2540,12 +2540,43 @@ def checked_root_capacity(case: Case, best: DevelopmentEvaluation, targets: Deve
     tree, safety, text = root_capacity(case, setup, targets.light_load, say)
     if tree is None:
         return best, safety, text
+    return rescored(best, tree, case, targets, setup), safety, text
+
+
+def rescored(best: DevelopmentEvaluation, tree, case: Case, targets: DevelopmentTargets,
+             setup: Mapping[str, Any]) -> DevelopmentEvaluation:
+    """``best`` with its drive metrics and score those of the analysis ``tree`` of the
+    written ``case`` (at the torques a capacity step moved the design torque to):
+    :func:`~contact.optimize.development_evaluate.design_metrics` scored by
+    :func:`~contact.optimize.development_targets.development_score` on the tree's grid and
+    static strength [MPa].
+
+    Parameters
+    ----------
+    best : DevelopmentEvaluation — the drive design
+    tree : xarray.DataTree — its analysis (``/ltca`` at the development's torques [N·m])
+    case : geometry.case.Case — the case analysed
+    targets : DevelopmentTargets
+    setup : mapping — the development's state (its ``centre_v`` [1])
+
+    Returns
+    -------
+    DevelopmentEvaluation
+
+    Raises
+    ------
+    KeyError
+        An analysis without the metrics' variables.
+
+    Notes
+    -----
+    Source: the issue-71 development's targets (docs/synthesis.md, "Development bearing").
+    """
     ms, grid = design_metrics(tree, case), (*grid_bounds(tree), static_strength(tree))
     full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
                              pressure_limit=grid[4])
-    best = dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
+    return dataclasses.replace(best, metrics=ms, objective=full[0], shortfalls=full[1],
                                met=full[2], full=full)
-    return best, safety, text
 
 
 def static_capacity(best: DevelopmentEvaluation, targets: DevelopmentTargets,
