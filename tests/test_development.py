@@ -2058,7 +2058,8 @@ def test_an_lte_missed_at_the_check_gets_the_ellipse_a_step_longer(monkeypatch):
     assert len(seen) > 1 and all(m is not None for _, m in seen[1:])  # its tolerance
     assert "ellipse 0.45" in lines[0]
     # a step that overshoots the length is not kept (0.5: 0.62 long)
-    monkeypatch.setattr(dcheck, "ELLIPSE_STEP", 0.1)
+    # checked_ellipse looks its step up in its own module (development_lte_steps)
+    monkeypatch.setattr("contact.optimize.development_lte_steps.ELLIPSE_STEP", 0.1)
     assert dcheck.checked_ellipse(start, targets, setup, None, lines.append,
                                   lambda v: dict(v)) is start
     assert "not kept: the longer ellipse misses length" in lines[-1]

@@ -66,7 +66,11 @@ LTCA, its metrics, the search's objective, the kept teeth) in
 :mod:`contact.optimize.development_evaluate`; the search's stages (bearing, height, relief,
 TE) in :mod:`contact.optimize.development_stages`; the final check at ``ltca run``'s
 sampling (its steps, the static and root-stress capacity, the mounting tolerance) in
-:mod:`contact.optimize.development_check`; the coast flank's development in
+:mod:`contact.optimize.development_check` and the modules it is split into (a step's
+design in ``development_variant``, the keep rule in ``development_keep``, the tolerance
+in ``development_tolerance``, the pattern, LTE and coast steps in
+``development_pattern_steps``, ``development_lte_steps``, ``development_coast_steps``);
+the coast flank's development in
 :mod:`contact.optimize.development_coast_flank` and its design torque in
 :mod:`contact.optimize.development_coast`; the root-stress and pitting capacity in
 :mod:`contact.optimize.development_root`; one design and the result (its text and its

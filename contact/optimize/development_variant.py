@@ -1,0 +1,192 @@
+"""A check step's design: placed as it is written, analysed at ``ltca run``'s sampling
+(:data:`~contact.optimize.development_evaluate.CHECK_LTCA`) and scored.
+
+:func:`checked_analysis` places and analyses a design of the check (kept in the
+development's ``setup``: a design the steps reach again is neither synthesised nor
+analysed again); :func:`checked_variant` scores it as a variant of a checked design,
+:func:`said_variant` also says its line; :func:`check_rank` ranks checked designs (every
+target met first). The lowest of the final check's modules (issue 71, Deliver 5: split
+out of :mod:`contact.optimize.development_check`, which re-exports every public name;
+the bodies moved unchanged).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+from collections.abc import Callable, Mapping
+from typing import Any
+
+from contact.optimize import development_evaluate as evaluation
+from contact.optimize.development_evaluate import (
+    CHECK_LTCA,
+    KeptTeeth,
+    bearing_key,
+    evaluation_line,
+)
+from contact.optimize.development_result import DevelopmentEvaluation
+from contact.optimize.development_targets import DevelopmentTargets, development_score
+from geometry.case import Case
+
+#: the development's one logger, whichever of its modules logs
+log = logging.getLogger("contact.optimize.development")
+
+
+def checked_analysis(setup: Mapping[str, Any], placed: Callable[[Mapping[str, float]], Case],
+                     values: Mapping[str, float], teeth: KeptTeeth | None,
+                     pinion_key: tuple, flank: str = "drive", *, case: Case | None = None
+                     ) -> tuple[Case, dict, tuple]:
+    """A design of the check placed as it is written (``placed(values)``) and its
+    ``flank`` analysed at :data:`CHECK_LTCA` at the development's torques
+    (``setup["torques"]`` [N·m]), the pinion tooth kept under ``pinion_key``
+    (:class:`KeptTeeth`): the case, the metrics and the grid bounds of
+    :func:`~contact.optimize.development_evaluate.analyse_design`. Its errors propagate.
+    ``case``: ``placed(values)`` already made (not made again).
+
+    Kept in ``setup`` (key ``"check_memo"``, by ``placed``, the flank, the values, the
+    torques, the pinion key and the kept teeth), an error too: a design the check's
+    steps reach again — the steps of each checked design (:func:`steps_on_each`), a path
+    step after a height step (:func:`_kept_step`), the long bearing of designs that
+    differ only in what it sets — is neither synthesised nor analysed again, the same
+    numbers (issue 71: the spiral bevel 13x37 at Σ 60° checked one long bearing three
+    times, each a synthesis and an ease-off that found too few nodes)."""
+    memo = setup.setdefault("check_memo", {}) if isinstance(setup, dict) else {}
+    key = (id(placed), flank, tuple((k, float(v)) for k, v in values.items()),
+           tuple(float(t) for t in setup["torques"]), tuple(pinion_key), id(teeth))
+    kept = memo.get(key)
+    if kept is not None and kept[0] is placed and kept[1] is teeth:
+        log.debug("development: check of %s at %s N m kept", dict(values), key[3])
+        if isinstance(kept[2], Exception):
+            raise kept[2]
+        return kept[2]
+    try:
+        case = placed(values) if case is None else case
+        ms, grid = evaluation.analyse_design(case, setup["torques"], options=CHECK_LTCA,
+                                             teeth=teeth, pinion_key=pinion_key, flank=flank)
+    except Exception as exc:
+        memo[key] = (placed, teeth, exc)  # held: their ids are not reused while kept
+        raise
+    memo[key] = (placed, teeth, (case, ms, grid))
+    return case, ms, grid
+
+
+def check_rank(e: DevelopmentEvaluation) -> tuple[bool, float]:
+    """A checked design's rank: every target met first, then the least objective.
+
+    Parameters
+    ----------
+    e : DevelopmentEvaluation
+        A design scored (its ``full``: objective [1], shortfalls, every target met).
+
+    Returns
+    -------
+    (bool, float)
+        Sorts first the design that meets every target, then the least objective [1].
+
+    Notes
+    -----
+    Source: the issue-71 development's check (docs/synthesis.md, "Development bearing").
+    """
+    return (not e.full[2], e.full[0])
+
+
+def checked_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,
+                    targets: DevelopmentTargets, setup: Mapping[str, Any],
+                    teeth: KeptTeeth, placed: Callable[[Mapping[str, float]], Case], *,
+                    pinion_key: tuple | None = None, flank: str = "drive",
+                    case: Case | None = None) -> DevelopmentEvaluation | None:
+    """``base`` with the prescriptions ``values``: its case placed as it is written
+    (``placed``; ``case``: that case already made), analysed at :data:`CHECK_LTCA` at the
+    development's torques and scored (:func:`development_score`), recorded as checked at
+    ``stage``. ``pinion_key``: the kept pinion tooth's key (default the design's bearing,
+    :func:`bearing_key`). None where the synthesis or the analysis failed (logged: the
+    design it would replace stands).
+
+    Parameters
+    ----------
+    base : DevelopmentEvaluation
+        The design varied (its index and other fields kept).
+    values : mapping
+        The variant's prescriptions [file units, :data:`~contact.optimize.
+        development_targets.VARIABLES`].
+    stage : str
+        The check step recorded as the variant's stage.
+    targets : DevelopmentTargets
+        The development's targets.
+    setup : mapping
+        The development's state (``torques`` [N·m], ``centre_v`` [1], the memos).
+    teeth : KeptTeeth
+        The kept pinion teeth.
+    placed : callable values → Case
+        The synthesis as written (:func:`~contact.optimize.development_check.placed_case`).
+    pinion_key : tuple, optional
+        The kept pinion tooth's key; default the design's bearing.
+    flank : str, optional
+        ``"drive"`` (default) or ``"coast"``.
+    case : Case, optional
+        ``placed(values)`` already made.
+
+    Returns
+    -------
+    DevelopmentEvaluation or None
+        The variant, checked at :data:`CHECK_LTCA`; None where it failed.
+
+    Notes
+    -----
+    Source: the issue-71 development's check (docs/synthesis.md, "Development bearing").
+    """
+    try:
+        case, ms, grid = checked_analysis(
+            setup, placed, values, teeth,
+            bearing_key(values) if pinion_key is None else pinion_key, flank, case=case)
+    except Exception as exc:  # reported, never fatal
+        log.info("development %s check of %s failed: %s", stage, dict(values), exc)
+        return None
+    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
+                             pressure_limit=grid[4])
+    return dataclasses.replace(base, values=values, metrics=ms, objective=full[0],
+                               shortfalls=full[1], met=full[2], full=full, case=case,
+                               checked=True, stage=stage)
+
+
+def said_variant(base: DevelopmentEvaluation, values: Mapping[str, float], stage: str,
+                 label: str, targets: DevelopmentTargets, setup: Mapping[str, Any],
+                 teeth: KeptTeeth, say: Callable[[str], None],
+                 placed: Callable[[Mapping[str, float]], Case], *,
+                 flank: str = "drive", key_prefix: tuple | None = None,
+                 case: Case | None = None) -> DevelopmentEvaluation | None:
+    """A check step's design: :func:`checked_variant` of ``base`` with ``values`` on
+    ``flank`` (``case``: its case already placed), and where it was analysed one line
+    said, ``design <n> <label>, at the default sampling: <its metrics>`` (``<flank>
+    design`` off the drive flank). ``key_prefix``: where given, the kept pinion tooth's
+    key is it followed by the design's bearing (:func:`bearing_key`; default the bearing
+    alone). None where the synthesis or the analysis failed.
+
+    Parameters
+    ----------
+    base, values, stage, targets, setup, teeth, placed, flank, case
+        As :func:`checked_variant`'s (``values`` [file units]).
+    label : str
+        The variant's change in words, for the line said.
+    say : callable str → None
+        Where the line goes.
+    key_prefix : tuple, optional
+        The kept pinion tooth's key before the design's bearing.
+
+    Returns
+    -------
+    DevelopmentEvaluation or None
+        The variant, checked at :data:`CHECK_LTCA`; None where it failed.
+
+    Notes
+    -----
+    Source: the issue-71 development's check (docs/synthesis.md, "Development bearing").
+    """
+    key = None if key_prefix is None else (*key_prefix, *bearing_key(values))
+    e = checked_variant(base, values, stage, targets, setup, teeth, placed,
+                        pinion_key=key, flank=flank, case=case)
+    if e is not None:
+        what = "design" if flank == "drive" else f"{flank} design"
+        say(f"  {what} {base.index + 1} {label}, at the default sampling: "
+            + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
+    return e
