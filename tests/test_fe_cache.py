@@ -328,6 +328,32 @@ def test_shared_coefficients_rebuilds_a_corrupt_entry_once(fake_build, tmp_path,
     _read_cached.cache_clear()
 
 
+def test_a_built_entry_is_kept_in_the_memo_as_written(fake_build, tmp_path, monkeypatch):
+    # shared_coefficients after a build (issue 75: the root-stress checks of `ltca
+    # synthesize` after its FE build): the entry just written is the memo's, not read back
+    # from disk; it is what the file reads back as (values, key, checksum); a file
+    # replaced afterwards (another inode, size or time) is read as before
+    import contact.compliance.fe.contact_compliance as cc
+
+    builds, case, path, key = fake_build
+    cc._read_cached.cache_clear()
+    reads = []
+    monkeypatch.setattr(cc, "read_cache_entry",
+                        lambda p, k: reads.append(p) or read_cache_entry(p, k))
+    built = cc.shared_coefficients(case, "gear", cache_dir=tmp_path)
+    assert builds.count == 1 and reads == []
+    assert cc.shared_coefficients(case, "gear", cache_dir=tmp_path) is built
+    assert reads == [] and builds.count == 1
+    again = read_cache_entry(path, key)
+    xr.testing.assert_identical(again, built)
+    assert again.attrs[CHECKSUM_ATTR] == built.attrs[CHECKSUM_ATTR] == data_checksum(built)
+    write_cache_entry(_tiny(seed=9), path, key)  # replaced: another file version
+    other = cc.shared_coefficients(case, "gear", cache_dir=tmp_path)
+    assert len(reads) == 1 and builds.count == 1
+    xr.testing.assert_identical(other, read_cache_entry(path, key))
+    cc._read_cached.cache_clear()
+
+
 def test_sigint_during_a_build_leaves_no_entry(tmp_path, monkeypatch):
     """Ctrl-C while ``ltca run`` builds the FE coefficients (root stress is on by default,
     issue 53) into an empty cache: the run stops with the shell's 130 and one line, and the

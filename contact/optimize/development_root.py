@@ -171,7 +171,11 @@ def both_flanks_built(case, earlier=None,
         coefficients were kept (empty where none)
     """
     from contact.compliance.fe import influence_coefficients
-    from contact.compliance.fe.contact_compliance import shared_coefficients
+    from contact.compliance.fe.contact_compliance import (
+        cached_entry,
+        remember_written,
+        shared_coefficients,
+    )
     from contact.compliance.fe.reuse import REUSE_DEPTH_FRACTION, reuse_near_model
 
     kept = {}
@@ -179,7 +183,10 @@ def both_flanks_built(case, earlier=None,
         if earlier is not None and earlier is not case:
             refused: list[str] = []
             try:
-                deviation = reuse_near_model(case, earlier, member, refused=refused)
+                # the earlier entries through the process's memo (built or read by the
+                # first pass), the new ones kept there as written (issue 75)
+                deviation = reuse_near_model(case, earlier, member, refused=refused,
+                                             read=cached_entry, written=remember_written)
             except Exception as exc:  # built below as before
                 log.info("development: the %s's earlier FE models not kept: %s", member, exc)
                 deviation = None
@@ -204,8 +211,10 @@ def both_flanks_built(case, earlier=None,
                     say(f"development: building the {member}'s FE models (both flanks) for "
                         "the root-stress checks, once per design and cached for `ltca "
                         "run` (~15-20 s of CPU per member, docs/fe.md)")
+                # the four entries kept in the process's memo as written: the checks
+                # that follow read none of them back from disk (issue 75)
                 influence_coefficients(case, member, "drive", progress=False,
-                                       other_flank=True)
+                                       other_flank=True, written=remember_written)
         except Exception as exc:  # the checks build their own and report (never fatal)
             log.info("development: the %s's FE models of both flanks not built: %s",
                      member, exc)

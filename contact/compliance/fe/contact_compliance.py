@@ -49,6 +49,8 @@ FE_VARIABLES              which FE compliance: name → variable of the coeffici
 FEPairModel               both members' coefficients and the tooth measurement for Weber
 fe_pair_model             build it (the coefficients from the disk cache, built if absent)
 shared_coefficients       a member's coefficients, a cache file read once per process
+cached_entry              a cache file through the same memo, by path and key
+remember_written          coefficients just written to the cache kept as if read back
 pair_coefficients         both members' coefficients of the analysed flanks, given or shared
 segment_weights           the hat weights of uniform line loads over straight segments
 interpolated_compliance   a member's compliance between weighted loads (unsymmetrised)
@@ -60,6 +62,7 @@ from __future__ import annotations
 import logging
 import time
 from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -74,7 +77,7 @@ from contact.compliance.fe.superposition import locate_flank_points
 from contact.compliance.mesh import ContactSegments, PairComplianceModel
 from contact.compliance.tooth import END_TOLERANCE, shell_points_many, weber_depth
 from contact.compliance.weber import weber_compliance
-from geometry.core.caches import memoised
+from geometry.core.caches import Carried, memoised
 from geometry.core.errors import InputError
 from geometry.pair.assembly import case_transforms
 
@@ -85,10 +88,12 @@ __all__ = [
     "FE_VARIABLES",
     "OFF_FLANK_LIMIT",
     "FEPairModel",
+    "cached_entry",
     "fe_mesh_compliance_many",
     "fe_pair_model",
     "interpolated_compliance",
     "pair_coefficients",
+    "remember_written",
     "segment_weights",
     "shared_coefficients",
 ]
@@ -125,14 +130,69 @@ _UNWRITTEN: dict[tuple[str, str], xr.Dataset] = {}
 
 
 @memoised(maxsize=_MEMO_SIZE)
-def _read_cached(path: str, stamp: tuple[int, int, int], key: str) -> xr.Dataset | None:
+def _read_cached(path: str, stamp: tuple[int, int, int], key: str,
+                 written: Carried) -> xr.Dataset | None:
     """A cache file's coefficients, read and checked once per process and file version
     (path, and the file's inode, size and modification time: a study's worker analyses
     many points of one design). None if the entry fails a check of
     :func:`contact.compliance.fe.cache.read_cache_entry` (which sets it aside and logs
     why; then the caller goes through :func:`influence_coefficients`, which rebuilds it)
-    or vanished meanwhile."""
+    or vanished meanwhile. ``written`` (not part of the key: every
+    :class:`~geometry.core.caches.Carried` compares equal) carries the dataset this
+    process has just written as that file version (:func:`remember_written`), or None."""
+    if written.value is not None:
+        return written.value
     return read_cache_entry(path, key)
+
+
+def _stamp(path) -> tuple[int, int, int]:
+    st = path.stat()
+    return st.st_ino, st.st_size, st.st_mtime_ns
+
+
+def cached_entry(path, key: str) -> xr.Dataset | None:
+    """A cache entry through the process's memo of the files read (:func:`shared_coefficients`):
+    :func:`contact.compliance.fe.cache.read_cache_entry` of ``path`` once per file
+    version, the same object afterwards (read-only).
+
+    Parameters
+    ----------
+    path : path-like — the entry's file
+    key : str — its cache key
+
+    Returns
+    -------
+    xarray.Dataset or None — None where the file is missing or fails a check (set
+        aside and logged by ``read_cache_entry``)
+    """
+    try:
+        stamp = _stamp(Path(path))
+    except OSError:
+        return None
+    return _read_cached(str(path), stamp, key, Carried(None))
+
+
+def remember_written(path, key: str, ds: xr.Dataset) -> None:
+    """Keep coefficients this process has just written to the cache as ``path`` in the
+    memo of the files read (:func:`shared_coefficients`), as if read back: the
+    root-stress checks of ``ltca synthesize`` that follow its FE build read the four
+    entries it wrote without reading them from disk (~0.07-0.1 s of CPU each on the
+    10x43 hypoid's models, issue 75). What :func:`contact.compliance.fe.
+    influence_coefficients` hands its ``written`` callback.
+
+    Parameters
+    ----------
+    path : path-like — the entry's file, just written
+    key : str — its cache key
+    ds : xarray.Dataset — the dataset written (:func:`contact.compliance.fe.cache.
+        write_cache_entry`'s return: its key and checksum attributes set, the values
+        read back bit for bit)
+    """
+    try:
+        stamp = _stamp(Path(path))
+    except OSError:  # gone meanwhile: nothing to remember
+        return
+    _read_cached(str(path), stamp, key, Carried(ds))
 
 
 def shared_coefficients(case, member: str, flank: str = "drive",
@@ -174,18 +234,19 @@ def shared_coefficients(case, member: str, flank: str = "drive",
         key = cache_key(case.member(member), member_flank(case, member, flank), opt)
         path = cache_path(key, cache_dir)
         try:
-            st = path.stat()
+            stamp = _stamp(path)
         except OSError:  # no entry, or a cache directory that cannot be reached
             pass
         else:
-            ds = _read_cached(str(path), (st.st_ino, st.st_size, st.st_mtime_ns), key)
+            ds = _read_cached(str(path), stamp, key, Carried(None))
             if ds is not None:
                 return ds
         kept = _UNWRITTEN.get((str(path), key))
         if kept is not None:
             return kept
     ds = influence_coefficients(case, member, flank, options, cache=cache,
-                                cache_dir=cache_dir, progress=progress, solver=solver)
+                                cache_dir=cache_dir, progress=progress, solver=solver,
+                                written=remember_written)
     if cache and isinstance(opt, FEOptions) and NOT_WRITTEN_ATTR in ds.attrs:
         _UNWRITTEN[(str(path), key)] = ds
         while len(_UNWRITTEN) > _MEMO_SIZE:

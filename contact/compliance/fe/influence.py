@@ -49,7 +49,9 @@ import math
 import os
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import scipy.sparse as sp
@@ -1000,7 +1002,9 @@ def influence_coefficients(case, member: str, flank: str = "drive",
                            options: FEOptions | None = None, *, cache: bool = True,
                            cache_dir: str | os.PathLike[str] | None = None,
                            progress: bool | str = True, solver: str = "auto",
-                           other_flank: bool = False) -> xr.Dataset:
+                           other_flank: bool = False,
+                           written: Callable[[Path, str, xr.Dataset], None] | None = None
+                           ) -> xr.Dataset:
     """A member's FE influence coefficients, from the cache or built and cached.
 
     Parameters
@@ -1024,6 +1028,12 @@ def influence_coefficients(case, member: str, flank: str = "drive",
         build instead of twice (``ltca synthesize`` checks both; docs/fe.md, Cost). A
         failure of the other flank's build is logged (a warning), not raised: this
         flank's coefficients are returned as without it
+    written : callable, optional — called as ``written(path, key, ds)`` with each entry
+        this call builds and writes to the cache (this flank's and, with
+        ``other_flank``, the other's): the dataset :func:`contact.compliance.fe.cache.
+        read_cache_entry` would read back from ``path`` (the same values, key and
+        checksum), so that a caller's memo of the files read holds it without reading it
+        (:func:`contact.compliance.fe.contact_compliance.shared_coefficients`; issue 75)
 
     Returns
     -------
@@ -1089,7 +1099,7 @@ def influence_coefficients(case, member: str, flank: str = "drive",
                                else ""))
     with _small_pages():
         ds = _build_and_cache(case, member, name, opt, solver, progress, cache, cache_dir,
-                              other_flank, path, key, t0)
+                              other_flank, path, key, t0, written)
     progress_line(progress, f"FE {member} influence coefficients built in "
                             f"{time.perf_counter() - t0:.0f} s")
     return ds
@@ -1097,7 +1107,7 @@ def influence_coefficients(case, member: str, flank: str = "drive",
 
 def _build_and_cache(case, member: str, name: str, opt: FEOptions, solver: str, progress,
                      cache: bool, cache_dir, other_flank: bool, path, key: str,
-                     t0: float) -> xr.Dataset:
+                     t0: float, written=None) -> xr.Dataset:
     """The build of :func:`influence_coefficients` once the cache missed: the model, its
     dataset, the cache entry and, where asked, the other flank's."""
     # the factor in a worker process: a signal is honoured at once (issue 64)
@@ -1112,10 +1122,10 @@ def _build_and_cache(case, member: str, name: str, opt: FEOptions, solver: str, 
         ds = influence_dataset(model, case, progress=progress, key=key,
                                checkpoint=checkpoint)
         if cache:
-            ds = _cached(ds, case, member, path, key, checkpoint)
+            ds = _cached(ds, case, member, path, key, checkpoint, written)
         if cache and other_flank:
             try:
-                _other_flank_entry(model, case, member, opt, cache_dir, progress)
+                _other_flank_entry(model, case, member, opt, cache_dir, progress, written)
             except Exception as exc:  # this flank's result stands; the other's own build
                 # (when asked for) raises its error where it belongs
                 log.warning("%s %s: the other flank's influence coefficients not built "
@@ -1126,20 +1136,23 @@ def _build_and_cache(case, member: str, name: str, opt: FEOptions, solver: str, 
 
 
 def _cached(ds: xr.Dataset, case, member: str, path, key: str,
-            checkpoint: BlockCheckpoint) -> xr.Dataset:
-    """``ds`` written to the cache as ``path`` (its block checkpoints removed), or marked
-    as not written where the file system refuses (issue 72)."""
+            checkpoint: BlockCheckpoint, written=None) -> xr.Dataset:
+    """``ds`` written to the cache as ``path`` (its block checkpoints removed) and handed
+    to ``written`` (where given), or marked as not written where the file system refuses
+    (issue 72)."""
     try:
         ds = write_cache_entry(ds, path, key)
     except OSError as exc:  # read-only or full: used from memory, said (issue 72)
         return not_written(ds, path, exc)
     checkpoint.clear()
     log.info("%s %s influence coefficients cached in %s", case.name, member, path)
+    if written is not None:
+        written(Path(path), key, ds)
     return ds
 
 
 def _other_flank_entry(model: InfluenceModel, case, member: str, opt: FEOptions,
-                       cache_dir, progress) -> None:
+                       cache_dir, progress, written=None) -> None:
     """The other flank's coefficients of ``model``'s member built on its factorisation and
     cached, unless an entry of them is cached already."""
     name = _other(model.flank)
@@ -1152,7 +1165,8 @@ def _other_flank_entry(model: InfluenceModel, case, member: str, opt: FEOptions,
     other = _other_flank_model(model)
     checkpoint = BlockCheckpoint(path, key)
     _cached(influence_dataset(other, case, progress=progress, key=key,
-                              checkpoint=checkpoint), case, member, path, key, checkpoint)
+                              checkpoint=checkpoint), case, member, path, key, checkpoint,
+            written)
 
 
 def _estimate_text(cache_dir) -> str:

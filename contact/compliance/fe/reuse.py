@@ -47,8 +47,10 @@ from __future__ import annotations
 
 import logging
 import os
+from collections.abc import Callable
 
 import numpy as np
+import xarray as xr
 
 from contact.compliance.fe.cache import (
     cache_key,
@@ -134,7 +136,9 @@ def point_deviation(case, earlier, member: str, options: FEOptions | None = None
 def reuse_near_model(case, earlier, member: str, options: FEOptions | None = None, *,
                      cache_dir: str | os.PathLike[str] | None = None,
                      fraction: float = REUSE_DEPTH_FRACTION,
-                     refused: list[str] | None = None) -> float | None:
+                     refused: list[str] | None = None,
+                     read: Callable[..., xr.Dataset | None] = read_cache_entry,
+                     written: Callable[..., None] | None = None) -> float | None:
     """Write ``earlier``'s cached coefficients of ``member`` (both flanks) under the keys
     of ``case``'s member, where its FE solid lies within ``fraction`` of the whole depth
     of ``earlier``'s, point by point (:func:`point_deviation`).
@@ -152,6 +156,13 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
     refused : list of str, optional — where the two were compared and the coefficients
         not kept, one phrase saying why is appended (e.g. "its load and stress points
         0.221 mm from the earlier design's, beyond 0.165 mm (2 % of its whole depth)")
+    read : callable, optional — ``read(path, key)``: the earlier design's entries
+        (default :func:`contact.compliance.fe.cache.read_cache_entry`; the development
+        passes the process's memo of the files read, :func:`contact.compliance.fe.
+        contact_compliance.cached_entry`, which holds them where its first pass built or
+        read them: issue 75)
+    written : callable, optional — called as ``written(path, key, ds)`` with each entry
+        written (as :func:`contact.compliance.fe.influence_coefficients`'s ``written``)
 
     Returns
     -------
@@ -198,8 +209,7 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
                 f"beyond {fraction * depth:.3f} mm ({100.0 * fraction:g} % of its whole "
                 f"depth)")
         return None
-    entries = {f: read_cache_entry(cache_path(old_keys[f], cache_dir), old_keys[f])
-               for f in _FLANKS}
+    entries = {f: read(cache_path(old_keys[f], cache_dir), old_keys[f]) for f in _FLANKS}
     if any(ds is None for ds in entries.values()):
         return None
     for f, ds in entries.items():
@@ -209,7 +219,9 @@ def reuse_near_model(case, earlier, member: str, options: FEOptions | None = Non
             continue
         out = ds.assign_attrs(reused_from=old_keys[f],
                               reuse_point_deviation_mm=round(deviation, 6))
-        write_cache_entry(out, path, key)
+        out = write_cache_entry(out, path, key)
+        if written is not None:
+            written(path, key, out)
     log.info("FE %s: the earlier design's coefficients kept (point deviation %.4f mm <= "
              "%.3g mm)", member, deviation, fraction * depth)
     return deviation
