@@ -329,6 +329,43 @@ def _lte_notes(basic, case, development, ratios) -> None:
               + (f"; {low_overlap_lte(development)}" if development is not None else ""))
     if misjudged is not None:
         print("note: " + misjudged)
+    if far is None and development is not None:
+        said = _deflection_note(case, development)
+        if said is not None:
+            print("note: " + said)
+
+
+def _deflection_note(case, development) -> str | None:
+    """What sets the written drive flank's LTE at the design torque, where it exceeds the
+    verdict's limit: the teeth's mean deflection, the LTE's share of it and the torque up
+    to which the written bearing keeps the limit
+    (:mod:`contact.optimize.development_deflection`: the written case analysed at its
+    :data:`~contact.optimize.development_deflection.LTE_TORQUES` torques, ``ltca run``'s
+    sampling); None where it keeps the limit at the design torque or the case cannot be
+    analysed (said in the log)."""
+    from contact.optimize.development_deflection import (
+        analysed,
+        curvature_ratio,
+        deflection_text,
+    )
+    from contact.study.verdicts import LTE_LIMIT
+    from geometry.core.errors import InputError
+
+    lte = development.best.metrics["lte_peak_to_peak"]
+    if not float(lte[-1]) > LTE_LIMIT:
+        return None
+    light, design = (float(t) for t in development.torque)
+    try:
+        found = analysed(case, light, design)
+    except (InputError, ValueError, KeyError) as exc:
+        import logging
+
+        logging.getLogger(__name__).info("the LTE's deflection note not made: %s", exc)
+        return None
+    pinion, gear = case.pinion.blank, case.gear.blank
+    return deflection_text(found, curvature_ratio(pinion.teeth, gear.teeth,
+                                                  float(pinion.pitch_angle),
+                                                  float(gear.pitch_angle)))
 
 
 def _conjugacy_notes(case, development, ratios) -> tuple[str | None, str | None]:

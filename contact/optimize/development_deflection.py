@@ -1,0 +1,308 @@
+"""The drive LTE at the design torque against the teeth's mean deflection there (issue 71:
+the ratio-1 spiral bevel 16x16 at Σ 60°, which FAILs on its LTE at its ISO capacity with
+conjugate flanks).
+
+The loaded TE of a pair at a torque is its unloaded TE plus the mesh deflection (the gear's
+lag under load); its peak-to-peak, the LTE, is the part of that sum which varies over the
+mesh cycle. At a given bearing the LTE at the design torque is thus a share — the *spread*
+of the deflection — of the mean deflection there, and the mean deflection is set by the
+design torque and the teeth's compliance, not by the bearing's levers. Measured at ``ltca
+run``'s sampling on the written cases of ``ltca synthesize`` with every default
+(2026-11-27; docs/synthesis.md, "The LTE at the design torque: the teeth's deflection"):
+
+* spiral bevel 13x39 (ratio 3, every target met): mean deflection 492 µrad at its design
+  torque 246.5 N m, LTE p-p 38 µrad, 7.7 % of it;
+* spiral bevel 16x16 at Σ 60° (ratio 1, ε_vβ 0.93): 922 µrad at 649.4 N m, 122 µrad,
+  13.2 %; every bearing lever tried on it (TE level 10–80 µrad, profile crowning 0, the
+  ellipse up to 0.89 of the face, path −50° to −80°, no relief) left 90–126 µrad there.
+
+A ratio-1 pair at its ISO 10300 capacity deflects about twice as far in gear angle as a
+ratio-3 pair: the line load its pitting capacity allows follows the flanks' relative
+curvature radius ρ_red, and the gear angle is the deflection over the gear's mean radius
+(ρ_red / r_m2 0.58 on the 16x16, 0.32 on the 13x39, :func:`curvature_ratio`; their line
+loads 390 and 354 N/mm, linear deflections 48 and 38 µm on gears of 52 and 77 mm mean
+radius). Within 60 µrad its LTE would need a spread of 60 / 922 = 6.5 %, below even the
+ratio-3 pair's. Measured remedies (the 16x16's basic file changed, ``ltca synthesize`` and
+``ltca run`` with every default): the design torque 300 N m (LTE p-p 57 / 55 µrad, drive
+ATTENTION without an LTE finding); 24x24 teeth on the same d_e2 (ε_vα 1.22, ε_vβ 1.40:
+19 / 32 µrad at 69 / 460.5 N m, its local pitting capacity; 5.2 % of 616 µrad); not a
+wider face or a larger spiral angle (β_m 43.5°, ε_vβ 1.26: 92 µrad at 676.6 N m; b2 36 mm
+with β_m 40°, ε_vβ 1.28: 114 µrad at 729.6 N m — the ISO capacity and the deflection rise
+with them). :func:`deflection_text` says so in numbers where the written
+design's LTE exceeds the verdict's limit: the mean deflection, the LTE's share of it and
+the share the limit needs, and the torque up to which the written bearing keeps the LTE
+within the limit (analysed at :data:`LTE_TORQUES` torques from the light to the design
+torque).
+
+Public names
+------------
+LTE_TORQUES, CURVATURE_RATIO_NOTE, DeflectionLTE, deflection_lte, within_torque, analysed,
+curvature_ratio, deflection_text
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import NamedTuple
+
+import numpy as np
+import xarray as xr
+
+from geometry.case import Case
+
+__all__ = ["CURVATURE_RATIO_NOTE", "LTE_TORQUES", "DeflectionLTE", "analysed",
+           "curvature_ratio", "deflection_lte", "deflection_text", "within_torque"]
+
+#: the virtual gears' relative curvature radius over the gear's mean radius [1]
+#: (:func:`curvature_ratio`) above which :func:`deflection_text` says the pair deflects the
+#: more for it: 0.58 on the 16x16 at Σ 60°, 0.71 on a miter, 0.55 at a ratio of 1.5 at
+#: Σ 90°, 0.32 on the 13x39 (ratio 3) whose deflection at its ISO capacity is half the
+#: 16x16's in gear angle
+CURVATURE_RATIO_NOTE = 0.45
+
+#: torques [1] analysed from the light to the design torque (both included, evenly
+#: spaced) to find the torque up to which the written bearing's LTE keeps its limit: on
+#: the 16x16 at Σ 60° the LTE p-p 45 / 47 / 111 / 122 µrad at 97.4 / 281 / 465 / 649.4 N m
+#: (1.5-3 s CPU with the written case's compliance cached)
+LTE_TORQUES = 4
+
+
+class DeflectionLTE(NamedTuple):
+    """The LTE and the mean mesh deflection of one flank at several torques
+    (:func:`deflection_lte`)."""
+
+    torques: tuple[float, ...]  # [N·m] pinion torques, ascending
+    lte: tuple[float, ...]  # [µrad] LTE peak-to-peak at each
+    deflection: tuple[float, ...]  # [µrad] mean loaded TE less mean unloaded TE at each
+    limit: float  # [µrad] the verdict's LTE limit
+
+    @property
+    def share(self) -> float:
+        """LTE p-p over the mean deflection [1] at the last (design) torque."""
+        d = self.deflection[-1]
+        return self.lte[-1] / d if d > 0.0 else math.nan
+
+    @property
+    def share_needed(self) -> float:
+        """The share [1] of the mean deflection at the last torque the limit allows."""
+        d = self.deflection[-1]
+        return self.limit / d if d > 0.0 else math.nan
+
+    @property
+    def within(self) -> float:
+        """The torque [N·m] up to which the LTE p-p keeps the limit (:func:`within_torque`)."""
+        return within_torque(self.torques, self.lte, self.limit)
+
+
+def within_torque(torques: Sequence[float], lte: Sequence[float], limit: float) -> float:
+    """The largest torque up to which an LTE p-p keeps a limit, from its values at a few
+    torques.
+
+    Parameters
+    ----------
+    torques : sequence of float, shape (n,) — [N·m]
+        Ascending torques.
+    lte : sequence of float, shape (n,) — [µrad]
+        The LTE peak-to-peak at each.
+    limit : float — [µrad]
+
+    Returns
+    -------
+    float — [N·m]
+        The first torque's crossing of ``limit`` from below, linear between the two torques
+        that bracket it; the last torque where the LTE keeps the limit at each; NaN where it
+        exceeds the limit at the first torque already, or a value is not finite.
+
+    Raises
+    ------
+    ValueError
+        ``torques`` and ``lte`` of different lengths, or empty.
+
+    Notes
+    -----
+    Linear interpolation between analysed torques (the LTE p-p of a localised bearing is
+    no smooth function of the torque: on the 16x16 at Σ 60° it stays at 45-47 µrad up to
+    281 N m and jumps to 111 at 465 N m, so the crossing is only as close as the torques
+    analysed: :data:`LTE_TORQUES`).
+    """
+    t = np.asarray(torques, float)
+    y = np.asarray(lte, float)
+    if t.shape != y.shape or t.size == 0:
+        raise ValueError(f"within_torque: {t.size} torques and {y.size} LTE values")
+    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(y))) or y[0] > limit:
+        return math.nan
+    above = np.flatnonzero(y > limit)
+    if above.size == 0:
+        return float(t[-1])
+    i = int(above[0])
+    return float(t[i - 1] + (limit - y[i - 1]) / (y[i] - y[i - 1]) * (t[i] - t[i - 1]))
+
+
+def deflection_lte(ltca: xr.Dataset, limit: float | None = None) -> DeflectionLTE:
+    """The LTE p-p and the mean mesh deflection at each torque of an LTCA result.
+
+    Parameters
+    ----------
+    ltca : xarray.Dataset
+        ``/ltca`` of :func:`contact.pipeline.run_analysis`: ``transmission_error`` (torque,
+        roll) [µrad], ``unloaded_transmission_error`` (roll) [µrad], ``lte_peak_to_peak``
+        (torque) [µrad], coordinate ``torque`` [N·m].
+    limit : float, optional — [µrad]
+        Default :data:`contact.study.verdicts.LTE_LIMIT` (60 µrad).
+
+    Returns
+    -------
+    DeflectionLTE
+
+    Raises
+    ------
+    KeyError
+        A variable named above missing.
+
+    Notes
+    -----
+    The mean deflection is the mean over the roll positions of the loaded TE less the
+    unloaded TE (the loaded TE is the unloaded TE plus the gear's lag under load,
+    :mod:`contact.ltca`), the quantity whose spread over the mesh cycle the LTE is.
+    """
+    if limit is None:
+        from contact.study.verdicts import LTE_LIMIT
+
+        limit = LTE_LIMIT
+    te = np.asarray(ltca["transmission_error"].values, float)
+    ute = np.asarray(ltca["unloaded_transmission_error"].values, float)
+    deflection = np.nanmean(te - ute, axis=-1)
+    order = np.argsort(np.asarray(ltca["torque"].values, float))
+    return DeflectionLTE(
+        tuple(float(x) for x in np.asarray(ltca["torque"].values, float)[order]),
+        tuple(float(x) for x in np.asarray(ltca["lte_peak_to_peak"].values, float)[order]),
+        tuple(float(x) for x in deflection[order]), float(limit))
+
+
+def curvature_ratio(z1: int, z2: int, delta1: float, delta2: float) -> float:
+    """The relative curvature radius of a bevel pair's virtual cylindrical gears over the
+    gear's mean pitch radius.
+
+    Parameters
+    ----------
+    z1, z2 : int
+        Pinion and gear teeth.
+    delta1, delta2 : float — [rad]
+        Pitch angles.
+
+    Returns
+    -------
+    float — [1]
+        ρ_red / r_m2 = r_v1 r_v2 / ((r_v1 + r_v2) r_m2), r_vi = r_mi / cos δ_i, r_m1 / r_m2
+        = z1 / z2 (the pressure angle's sine, common to both, left out).
+
+    Raises
+    ------
+    ValueError
+        Teeth not positive or a pitch angle outside (0, π/2).
+
+    Notes
+    -----
+    ISO 10300-1:2014 §6.2 (the virtual cylindrical gears' reference radii r_v = r_m /
+    cos δ); the flank's relative curvature radius at the pitch point is ρ_red sin α
+    (Hertz's line contact of the two virtual involutes). At the pitting capacity the line
+    load is ∝ ρ_red (σ_H² ∝ F/(b ρ_red)), the teeth's deflection ∝ the line load, and the
+    deflection in gear angle ∝ ρ_red / r_m2.
+    """
+    if z1 <= 0 or z2 <= 0:
+        raise ValueError(f"curvature_ratio: teeth must be positive, got {z1}, {z2}")
+    if not (0.0 < delta1 < 0.5 * math.pi and 0.0 < delta2 < 0.5 * math.pi):
+        raise ValueError(f"curvature_ratio: pitch angles must be in (0, pi/2) rad, got "
+                         f"{delta1}, {delta2}")
+    rv1 = (z1 / z2) / math.cos(delta1)
+    rv2 = 1.0 / math.cos(delta2)
+    return rv1 * rv2 / (rv1 + rv2)
+
+
+def analysed(case: Case, light: float, design: float, flank: str = "drive",
+             n: int = LTE_TORQUES) -> DeflectionLTE:
+    """:func:`deflection_lte` of a written case at ``n`` torques from ``light`` to
+    ``design``, analysed as ``ltca run`` does (its default LTCA sampling and compliance;
+    the contact analysis alone).
+
+    Parameters
+    ----------
+    case : geometry.case.Case
+    light, design : float — [N·m]
+        The development's light and design pinion torques.
+    flank : str
+        ``"drive"`` (default) or ``"coast"``.
+    n : int
+        Torques analysed, ≥ 2 (default :data:`LTE_TORQUES`).
+
+    Returns
+    -------
+    DeflectionLTE
+
+    Raises
+    ------
+    InputError
+        From the analysis (a case it cannot analyse).
+    ValueError
+        ``n`` below 2.
+    """
+    from contact.chain import AnalysisChain
+    from contact.pipeline import run_analysis
+
+    if n < 2:
+        raise ValueError(f"analysed: n must be >= 2, got {n}")
+    torques = [float(t) for t in np.linspace(float(light), float(design), int(n))]
+    tree = run_analysis(case, torques, flank=flank, deviations=False,
+                        steps=AnalysisChain.contact_only())
+    return deflection_lte(tree["/ltca"].to_dataset())
+
+
+def deflection_text(found: DeflectionLTE, curvature: float = math.nan) -> str | None:
+    """``ltca synthesize``'s note where the written drive flank's LTE p-p at the design
+    torque exceeds the limit: what sets it, in numbers, and the torque the bearing keeps
+    it to.
+
+    Parameters
+    ----------
+    found : DeflectionLTE
+        The written drive flank's (:func:`analysed`), its last torque the design torque.
+    curvature : float, optional — [1]
+        The pair's :func:`curvature_ratio`; above :data:`CURVATURE_RATIO_NOTE` the note says
+        that it makes the deflection large (default NaN: not said).
+
+    Returns
+    -------
+    str or None
+        None where the LTE at the last torque keeps the limit or the deflection is not
+        positive.
+    """
+    if not found.lte[-1] > found.limit or not found.deflection[-1] > 0.0:
+        return None
+    torque = found.torques[-1]
+    within = found.within
+    shown = " / ".join(f"{x:.0f}" for x in found.lte)
+    at = " / ".join(f"{t:.4g}" for t in found.torques)
+    up_to = ("" if not math.isfinite(within) else
+             f"; the written bearing keeps it within {found.limit:g} urad up to about "
+             f"{within:.4g} N m ({100 * within / torque:.0f} % of the design torque; LTE p-p "
+             f"{shown} urad at {at} N m): a design torque at or below it ([synthesis] "
+             "design_torque) is the step that keeps the limit (measured: that 16x16 at "
+             "300 N m, LTE p-p 57/55 urad at 45/300 N m)")
+    return (f"what sets the drive LTE at the design torque: the teeth deflect "
+            f"{found.deflection[-1]:.0f} urad on average at {torque:.4g} N m (the gear's lag "
+            f"under load, the mean loaded TE less the unloaded), and the LTE p-p "
+            f"{found.lte[-1]:.0f} urad is {100 * found.share:.1f} % of it; within "
+            f"{found.limit:g} urad it would be {100 * found.share_needed:.1f} % (a ratio-3 "
+            "spiral bevel 13x39 whose every target is met: 7.7 % of 492 urad)"
+            + (f"; its flanks' relative curvature radius is {curvature:.2f} of the gear's "
+               "mean radius (0.32 on that 13x39, 0.58 on a 16x16 at a shaft angle of 60 deg: "
+               "a ratio near 1), and the line load the pitting capacity allows, hence the "
+               "deflection in gear angle at the ISO capacity, follows it; more teeth on the "
+               "same gear size (a smaller module) raise both contact ratios and share the "
+               "load (measured: that 16x16 as 24x24, eps_va 1.22, eps_vb 1.40, LTE p-p 19/32 "
+               "urad at 69/460.5 N m, its local pitting capacity; a wider face or a larger "
+               "spiral angle to eps_vb 1.26-1.28 kept 92-114 urad at 677-730 N m)"
+               if curvature > CURVATURE_RATIO_NOTE
+               else "") + up_to
+            + " (docs/synthesis.md, 'The LTE at the design torque: the teeth's deflection')")
