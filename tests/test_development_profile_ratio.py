@@ -65,7 +65,7 @@ def _thirteen_by_29(case, torques, misalignment=None, options=None, teeth=None,
 def test_a_low_profile_ratio_gets_the_long_bearing_on_the_profile_path(monkeypatch):
     """ε_vα 0.91, LTE 518 µrad: one design at path −80° (the bound), the ellipse 0.75, the
     root relief from 0.5 with its slope kept and no crowning (kept, tolerant), then its tip
-    relief halved (kept: within 60 µrad at both torques)."""
+    relief halved, entering at 0.9 (the bound; kept: within 60 µrad at both torques)."""
     seen = []
 
     def fake(case, torques, misalignment=None, **kw):
@@ -86,7 +86,8 @@ def test_a_low_profile_ratio_gets_the_long_bearing_on_the_profile_path(monkeypat
                        "profile_crowning": 0.0}
     assert len(seen) == 2
     assert seen[0] == first
-    assert seen[1] == first | {"tip_relief": pytest.approx(0.5 * 24.65)}
+    assert seen[1] == first | {"tip_relief": pytest.approx(0.5 * 24.65),
+                               "tip_relief_start": 0.9}
     assert got.stage == dpr.STAGE and got.values == seen[1]
     assert max(got.metrics["lte_peak_to_peak"]) <= 60.0
     assert "profile contact ratio 0.91 below 1" in lines[0]
@@ -123,12 +124,29 @@ def test_nothing_is_tried_within_the_limit_or_on_that_bearing_already(monkeypatc
         return _thirteen_by_29(case, torques, misalignment, **kw)
 
     targets, setup, chosen = stand_in(monkeypatch, fake, [45.9, 306.3])
-    quiet = chosen(dpr.profile_ratio_bearing(WRITTEN, targets) | {"tip_relief": 12.3})
+    quiet = chosen(dpr.lighter_tip_relief(dpr.profile_ratio_bearing(WRITTEN, targets),
+                                          targets))
     seen.clear()
     assert dpr.checked_profile_ratio(quiet, targets, setup, None, print,
                                      lambda v: dict(v)) is quiet
     assert seen == []
     assert dpr.profile_ratio_bearing(quiet.values, targets) is None
+    assert quiet.values["tip_relief_start"] == 0.9
+
+
+def test_the_lighter_tip_relief_keeps_its_bounds():
+    """Half the tip relief within its variable's bounds, its start at the upper bound
+    unless it is later already; none where the design has no tip relief or its half is
+    below the lower bound."""
+    from contact.optimize.development import DevelopmentTargets
+
+    targets = DevelopmentTargets()
+    lo, _ = targets.variables["tip_relief"]
+    got = dpr.lighter_tip_relief(WRITTEN, targets)
+    assert got == WRITTEN | {"tip_relief": 0.5 * 24.65, "tip_relief_start": 0.9}
+    assert dpr.lighter_tip_relief(WRITTEN | {"tip_relief": 0.0}, targets) is None
+    if lo > 0.0:
+        assert dpr.lighter_tip_relief(WRITTEN | {"tip_relief": lo}, targets) is None
 
 
 def test_a_bearing_that_gives_up_a_met_target_is_not_kept(monkeypatch):

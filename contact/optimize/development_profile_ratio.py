@@ -7,9 +7,10 @@ lets the face overlap bridge the profile's shortfall: the contact path turned to
 profile bound of its variable together with the long bearing (the ellipse at its upper
 bound, the root relief entering at the upper bound of its start, its slope kept,
 :func:`~contact.optimize.development_check.long_bearing`) and no profile crowning; then,
-where that is kept and the LTE is still above the limit, its tip relief halved. Each design
-is kept on the check steps' one rule (:func:`~contact.optimize.development_check.kept_why`:
-better, no met target lost, tolerant at the mounting excursions). A design within the
+where that is kept and the LTE is still above the limit, its tip relief halved and entering
+at the upper bound of its start. Each design is kept on the check steps' one rule
+(:func:`~contact.optimize.development_check.kept_why`: better, no met target lost,
+tolerant at the mounting excursions). A design within the
 limit, or of ε_vα ≥ 1, is returned as it is, without an analysis: the step changes
 nothing the development writes for such designs.
 """
@@ -42,8 +43,9 @@ log = logging.getLogger("contact.optimize.development")
 PROFILE_RATIO_MIN = 1.0
 
 #: [1] the tip relief of :func:`checked_profile_ratio`'s second design, a fraction of the
-#: first's (its start kept): the first of the root relief's fractions of the drive LTE
-#: step (:data:`~contact.optimize.development_check.RELIEF_LTE_FRACTIONS`)
+#: first's (entering at the upper bound of its start, :func:`lighter_tip_relief`): the
+#: first of the root relief's fractions of the drive LTE step
+#: (:data:`~contact.optimize.development_check.RELIEF_LTE_FRACTIONS`)
 TIP_RELIEF_FRACTION = 0.5
 
 #: the check stage of the step's designs (:attr:`DevelopmentEvaluation.stage`)
@@ -110,6 +112,26 @@ def profile_ratio_bearing(values: Mapping[str, float], targets: DevelopmentTarge
     return new
 
 
+def lighter_tip_relief(values: Mapping[str, float], targets: DevelopmentTargets
+                       ) -> dict[str, float] | None:
+    """The second design of :func:`checked_profile_ratio` for a design's prescriptions
+    ``values`` [file units]: the tip relief × :data:`TIP_RELIEF_FRACTION` (within its
+    variable's bounds) entering at the upper bound of ``tip_relief_start`` (where that is
+    later than the design's), every other prescription kept. None where the targets do
+    not vary the tip relief, the design has none, or it would not be lighter."""
+    name, start = "tip_relief", "tip_relief_start"
+    if name not in targets.variables or not float(values.get(name, 0.0)) > 0.0:
+        return None
+    lo, hi = (float(x) for x in targets.variables[name])
+    x = float(np.clip(TIP_RELIEF_FRACTION * float(values[name]), lo, hi))
+    if not x < float(values[name]) - 1e-9:
+        return None
+    new = dict(values) | {name: x}
+    if start in targets.variables and start in values:
+        new[start] = float(max(float(values[start]), max(targets.variables[start])))
+    return new
+
+
 def _lost(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
     """The targets ``best`` met at its check and ``e`` misses, sorted (the check steps'
     rule: no met target given up, the pattern length included)."""
@@ -150,7 +172,8 @@ def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTarge
     exceeds the verdict's limit at a torque, given the bearing that hands the load over
     along the face: :func:`profile_ratio_bearing` (the path at its profile bound, the long
     bearing, no profile crowning), then, where that design is kept and its LTE is still
-    above the limit, its tip relief × :data:`TIP_RELIEF_FRACTION` (its start kept). Each
+    above the limit, its tip relief × :data:`TIP_RELIEF_FRACTION` entering at the upper
+    bound of ``tip_relief_start`` (:func:`lighter_tip_relief`). Each
     design (a synthesis of steps 3-6) placed and checked at ``ltca run``'s sampling and kept
     where it scores better, misses no target the design met (the pattern length included)
     and is tolerant at ΔE/ΔP ± 0.05 mm (:func:`~contact.optimize.development_check.
@@ -188,12 +211,14 @@ def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTarge
     lays each instantaneous contact line (the ellipse's long axis, normal to the path)
     along the face; the longest ellipse, a root relief entering outside the part of the
     cycle one pair carries alone, and no profile crowning keep the flank where the pairs
-    hand over (Stadtfeld, *Gleason Bevel Gear Technology*, 2014: the long bearing and the
-    relief sized to the load's deflection; Litvin & Fuentes, *Gear Geometry and Applied
-    Theory*, 2nd ed., 2004, §9.4). The check's other steps reach neither change alone:
-    the path turn alone and the ellipse alone each leave one pair alone over most of the
-    light torque's cycle, an LTE spread above the verdict's plausibility limit, which the
-    objective ranks after a design of ten times their LTE but no spread.
+    hand over, and the bearing's lower flank peak needs less tip relief, entering as late
+    as the root relief does (Stadtfeld, *Gleason Bevel Gear Technology*, 2014: the long
+    bearing and the relief sized to the load's deflection; Litvin & Fuentes, *Gear
+    Geometry and Applied Theory*, 2nd ed., 2004, §9.4). The check's other steps reach
+    neither change alone: the path turn alone and the ellipse alone each leave one pair
+    alone over most of the light torque's cycle, an LTE spread above the verdict's
+    plausibility limit, which the objective ranks after a design of ten times their LTE
+    but no spread.
 
     Measured at ``ltca run``'s sampling on the face-hobbed hypoid 13x29 by ISO 23509
     Method 2 of benchmarks/data/unseen_designs (ε_vα 0.91, ε_vβ 1.27; 45.9 / 306.3 N m;
@@ -204,9 +229,10 @@ def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTarge
     −80°: 237 / 113 (spread); the ellipse 0.75 alone: 183 / 59 (spread); path −80° with
     the long bearing (ellipse 0.75, root relief 16.1 µm from 0.5): 65 / 67, 0.55 long,
     tolerant; with no crowning: 61 / 62; with the tip relief 12.3 µm too: 59 / 60,
-    tolerant; 5 µm or none: edge contact at the mounting excursions. At 68.3 / 455.7 N m
-    (its ISO capacity): 516 / 363 → 51 / 73 µrad (no crowning), flank peak 1666 → 1184
-    MPa.
+    tolerant; 5 µm or none from 0.9: edge contact at the mounting excursions. At 68.3 /
+    455.7 N m (its ISO capacity): 516 / 363 → 51 / 73 µrad (no crowning), flank peak 1666
+    → 1184 MPa. At 41.3 / 275.5 N m (the design torque its developed bearing carries):
+    the tip relief 12.3 µm from 0.89: 60.4 / 56.0 µrad; from 0.9: 59.2 / 55.7, tolerant.
     """
     from contact.study.verdicts import LTE_LIMIT
 
@@ -235,17 +261,15 @@ def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTarge
                 lost=_lost):
         return best
     best = e
-    name = "tip_relief"
-    if (not above(best) or name not in targets.variables
-            or not float(best.values.get(name, 0.0)) > 0.0):
+    if not above(best):
         return best
-    lo, hi = (float(x) for x in targets.variables[name])
-    x = float(np.clip(TIP_RELIEF_FRACTION * float(best.values[name]), lo, hi))
-    if not x < float(best.values[name]) - 1e-9:
+    values = lighter_tip_relief(best.values, targets)
+    if values is None:
         return best
-    e = _variant(best, dict(best.values) | {name: x},
-                 f"with {name} {x:.3g} um (its LTE above {limit:g} urad)",
-                 targets, setup, teeth, say, placed)
+    e = _variant(best, values,
+                 f"with tip_relief {values['tip_relief']:.3g} um from "
+                 f"{values.get('tip_relief_start', math.nan):.3g} (its LTE above "
+                 f"{limit:g} urad)", targets, setup, teeth, say, placed)
     return best if kept_why(best, e, targets, setup, teeth, say,
                             "the profile-ratio bearing's lighter tip relief",
                             lost=_lost) else e
