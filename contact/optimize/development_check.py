@@ -303,7 +303,9 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     (:func:`_checked_tip`) and, where that did not centre it, the root relief with a
     longer ellipse (:func:`_checked_root`); last, where the LTE is still missed, the
     ellipse a step longer (:func:`checked_ellipse`), then the long bearing
-    (:func:`checked_long`), the ellipse searched for a pattern length still missed
+    (:func:`checked_long`), on a pair of profile contact ratio below 1 the long bearing
+    on a path at its profile bound (:func:`contact.optimize.development_profile_ratio.
+    checked_profile_ratio`), the ellipse searched for a pattern length still missed
     (:func:`checked_length`), a shallower root relief where the LTE exceeds 60 µrad
     (:func:`checked_relief_lte`), then a flatter profile and a deeper TE parabola
     (:func:`checked_crowning_lte`); its TE level raised back to the flank's own where it
@@ -322,6 +324,8 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     at its ISO capacity 474.2 N m, LTE 43 / 42 µrad at 420.2 N m after the root-stress
     cap, docs/own_gear_set.md). Returns the better design (``best`` itself where no step
     scored better)."""
+    from contact.optimize.development_profile_ratio import checked_profile_ratio
+
     best = _checked_te(best, targets, setup, teeth, say, placed, level)
     best = _checked_path(best, targets, setup, teeth, say, placed)
     best = checked_centre_u(best, targets, setup, teeth, say, placed)
@@ -330,6 +334,7 @@ def check_steps(best: DevelopmentEvaluation, *, targets: DevelopmentTargets,
     best = _checked_root(best, targets, setup, teeth, say, placed)
     best = checked_ellipse(best, targets, setup, teeth, say, placed)
     best = checked_long(best, targets, setup, teeth, say, placed)
+    best = checked_profile_ratio(best, targets, setup, teeth, say, placed)
     best = checked_length(best, targets, setup, teeth, say, placed, level=level)
     best = checked_relief_lte(best, targets, setup, teeth, say, placed)
     best = checked_crowning_lte(best, targets, setup, teeth, say, placed, level=level)
