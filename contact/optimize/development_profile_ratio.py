@@ -17,7 +17,6 @@ nothing the development writes for such designs.
 
 from __future__ import annotations
 
-import dataclasses
 import logging
 import math
 from collections.abc import Callable, Mapping
@@ -25,14 +24,15 @@ from typing import Any
 
 import numpy as np
 
-from contact.optimize.development_check import checked_analysis, kept_why, long_bearing
-from contact.optimize.development_evaluate import KeptTeeth, bearing_key, evaluation_line
+from contact.optimize.development_check import long_bearing
+from contact.optimize.development_evaluate import KeptTeeth
+from contact.optimize.development_keep import kept_why, lost_targets
 from contact.optimize.development_result import DevelopmentEvaluation
 from contact.optimize.development_targets import (
     CROWNING_NAME,
     DevelopmentTargets,
-    development_score,
 )
+from contact.optimize.development_variant import said_variant
 from geometry.case import Case
 
 log = logging.getLogger("contact.optimize.development")
@@ -132,36 +132,6 @@ def lighter_tip_relief(values: Mapping[str, float], targets: DevelopmentTargets
     return new
 
 
-def _lost(best: DevelopmentEvaluation, e: DevelopmentEvaluation) -> list[str]:
-    """The targets ``best`` met at its check and ``e`` misses, sorted (the check steps'
-    rule: no met target given up, the pattern length included)."""
-    was = {k for k, v in best.full[1].items() if v > 0.0}
-    return sorted(k for k, v in e.full[1].items() if v > 0.0 and k not in was)
-
-
-def _variant(best: DevelopmentEvaluation, values: Mapping[str, float], label: str,
-             targets: DevelopmentTargets, setup: Mapping[str, Any], teeth: KeptTeeth | None,
-             say: Callable[[str], None], placed: Callable[[Mapping[str, float]], Case]
-             ) -> DevelopmentEvaluation | None:
-    """``best`` with the prescriptions ``values``, placed and analysed at ``ltca run``'s
-    sampling at the development's torques (:func:`~contact.optimize.development_check.
-    checked_analysis`), scored and said as every check step's design is; None where its
-    synthesis or analysis failed (logged: the design it would replace stands)."""
-    try:
-        case, ms, grid = checked_analysis(setup, placed, values, teeth, bearing_key(values))
-    except Exception as exc:  # reported, never fatal
-        log.info("development %s check of %s failed: %s", STAGE, dict(values), exc)
-        return None
-    full = development_score(ms, targets, grid[:4], centre_v=setup["centre_v"],
-                             pressure_limit=grid[4])
-    e = dataclasses.replace(best, values=dict(values), metrics=ms, objective=full[0],
-                            shortfalls=full[1], met=full[2], full=full, case=case,
-                            checked=True, stage=STAGE)
-    say(f"  design {best.index + 1} {label}, at the default sampling: "
-        + evaluation_line(e, targets.max_evaluations).split(": ", 2)[-1])
-    return e
-
-
 def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTargets,
                           setup: Mapping[str, Any], teeth: KeptTeeth | None,
                           say: Callable[[str], None],
@@ -249,7 +219,7 @@ def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTarge
     ratio = profile_ratio(best.case) if eps_va is None else float(eps_va)
     if not ratio < PROFILE_RATIO_MIN:  # NaN too: no ratio read, nothing tried
         return best
-    e = _variant(best, values,
+    e = said_variant(best, values, STAGE,
                  f"with the bearing of a profile contact ratio {ratio:.2f} below 1 "
                  f"(path_angle {values['path_angle']:.3g}, ellipse_length "
                  f"{values['ellipse_length']:.3g}, root_relief "
@@ -258,7 +228,7 @@ def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTarge
                  f"{values.get(CROWNING_NAME, math.nan):.3g} um; its LTE above {limit:g} urad)",
                  targets, setup, teeth, say, placed)
     if kept_why(best, e, targets, setup, teeth, say, "the profile-ratio bearing",
-                lost=_lost):
+                lost=lost_targets):
         return best
     best = e
     if not above(best):
@@ -266,10 +236,10 @@ def checked_profile_ratio(best: DevelopmentEvaluation, targets: DevelopmentTarge
     values = lighter_tip_relief(best.values, targets)
     if values is None:
         return best
-    e = _variant(best, values,
+    e = said_variant(best, values, STAGE,
                  f"with tip_relief {values['tip_relief']:.3g} um from "
                  f"{values.get('tip_relief_start', math.nan):.3g} (its LTE above "
                  f"{limit:g} urad)", targets, setup, teeth, say, placed)
     return best if kept_why(best, e, targets, setup, teeth, say,
                             "the profile-ratio bearing's lighter tip relief",
-                            lost=_lost) else e
+                            lost=lost_targets) else e
