@@ -302,7 +302,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     where the written case's FE root stress gives S_F,FE < S_Fmin, or its LTCA peak flank
     pressure a local pitting safety at long life S_H,loc < S_Hmin, at the design torque,
     to that capacity (:func:`contact.optimize.development_root.root_capacity`;
-    ``root_stress``), the drive and coast flank analysed again at the new torques.
+    ``root_stress``), the drive and coast flank analysed again at the new torques; the
+    check's steps then run at them and, where they write another bearing whose capacity
+    holds, the torque is raised back as far as its capacity, its drive targets and its
+    mounting tolerance hold (:func:`_rewritten_after_cut`).
 
     3. **coast flank** (:func:`coast_development`): the chosen design's coast flank, as
        synthesised from its own prescriptions, analysed at :data:`CHECK_LTCA` at the same
