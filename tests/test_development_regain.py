@@ -194,9 +194,9 @@ def test_the_raise_also_after_a_second_cut(monkeypatch, rebuilt):
     """``development._rewritten_after_cut``: the steps' design at the cut torques written
     and checked; where its check holds, raised back (``_regained``); where it is cut a
     second time and the step after it writes another bearing, that one is written,
-    checked where its FE model changed and, where it holds, raised back too — not where
-    its FE model was kept (its capacity not checked again), nor where no step followed
-    the second cut. Stand-ins record the calls."""
+    checked where its FE model changed and, where it holds (or where its FE model was
+    kept: the raise checks the cut torque itself), raised back too — not where no step
+    followed the second cut. Stand-ins record the calls."""
     from contact.optimize.development_result import DevelopmentEvaluation
 
     def design(tag):
@@ -219,9 +219,7 @@ def test_the_raise_also_after_a_second_cut(monkeypatch, rebuilt):
     monkeypatch.setattr(dev, "with_flank_options", lambda basic, flank, values: values)
     stepped = design("stepped")
     for cut_again, step_writes, raised in (("", False, ("raise", "case1", CEILING)),
-                                           ("second cut", True,
-                                            ("raise", "case2", CEILING) if rebuilt
-                                            else None),
+                                           ("second cut", True, ("raise", "case2", CEILING)),
                                            ("second cut", False, None)):
         log.clear()
         texts[:] = [cut_again, ""]
@@ -236,7 +234,19 @@ def test_the_raise_also_after_a_second_cut(monkeypatch, rebuilt):
             lambda case: rebuilt)
         raises = [e for e in log if e[0] == "raise"]
         assert raises == ([raised] if raised else [])
+        checks = [e for e in log if e[0] == "check"]
+        assert len(checks) == 1 + (bool(cut_again and step_writes) and rebuilt)
         if raised:
             assert out[4] == "raised" and out[5] == 2.0
         if cut_again and step_writes:
             assert out[0] is stepped and out[2] == "case2"
+    # cut a third time at the step's case: nothing raised
+    log.clear()
+    texts[:] = ["second cut", "third cut"]
+    cases = iter(["case1", "case2"])
+    monkeypatch.setattr(dev, "step_after_cut", lambda before, cut, steps, say: stepped)
+    out = dev._rewritten_after_cut(
+        design("again"), {"tag": "again"}, "concave", lambda e: e, None, {}, None, CEILING,
+        "first cut", lambda line: None, lambda basic: (next(cases), "report"),
+        lambda case: True)
+    assert [e[0] for e in log] == ["check", "check"] and out[4] == "third cut"

@@ -579,10 +579,12 @@ def _rewritten_after_cut(best: DevelopmentEvaluation, developed: BasicDesign, fl
     developed at the second cut's torques, which were measured on the bearing before it —
     the premise of the raise after the first cut (docs/synthesis.md, "The raised design
     torque's mounting tolerance"); the raise keeps the same judgements (each capacity
-    criterion at the new torque, no drive target lost, the mounting tolerance kept). It is
-    not tried where no step follows the second cut (the bearing is the one the cut
-    measured, at its capacity to the cut's margin), nor where the step's case keeps the
-    FE model (its capacity not checked again)."""
+    criterion at the new torque, no drive target lost, the mounting tolerance kept; where
+    the step's case keeps the FE model, so that its capacity is not checked again, the
+    raise's own check at the cut torque stands for it:
+    :func:`~contact.optimize.development_root.regained_capacity` raises nothing where the
+    cut torque fails). It is not tried where no step follows the second cut (the bearing
+    is the one the cut measured, at its capacity to the cut's margin)."""
     case, report = synthesise(developed)
     built(case)
     before = best
@@ -600,12 +602,14 @@ def _rewritten_after_cut(best: DevelopmentEvaluation, developed: BasicDesign, fl
         return best, developed, case, report, root_text, root_safety
     best, developed = regained, with_flank_options(developed, flank, regained.values)
     case, report = synthesise(developed)
+    text = ""
     if built(case):
         best, root_safety, text = checked_root_capacity(case, best, targets, setup, say)
         root_text = text or root_text
-        if not text:  # developed at the second cut's torques: it may carry more
-            best, root_text, root_safety = _regained(case, best, targets, setup, teeth,
-                                                     ceiling, root_text, root_safety, say)
+    if not text:  # developed at the second cut's torques: it may carry more (where its
+        # FE model was kept, the raise checks the cut torque itself before it raises)
+        best, root_text, root_safety = _regained(case, best, targets, setup, teeth, ceiling,
+                                                 root_text, root_safety, say)
     return best, developed, case, report, root_text, root_safety
 
 
