@@ -26,7 +26,6 @@ import math
 import tomllib
 from functools import cache
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -269,33 +268,35 @@ def test_tip_plane_leaving_the_root_relief_in_the_edge_radius_names_relief_start
     synthesises (issue 71; before, "depth: moving the tip plane ... toprem_height" named no
     field). With its default relief_start 0.5 the corner sat at 0.881 mm until the generated
     gear's pinion was cut on the gear's own crown gear (session 14): that pinion's corner
-    clears the edge radius up to relief_start 0.89 (measured), so 0.95 is asked here."""
+    clears the blade's edge radius up to relief_start 0.89 and step 8's placed tip plane up
+    to 0.85 (measured), so 0.95 (beyond both) and 0.87 (beyond step 8's alone) are asked
+    here. The bound printed is the one that synthesises, at the first try: at 0.95 step 7
+    printed the blade's own 0.89 before, which step 8 then refused with 0.85 (two rounds
+    for a user who follows it); step 7's message now takes step 8's move into account
+    (``case_synthesis._relief_start_placed``), and both name the same start."""
     from geometry.synthesis.basic_design import load_basic, with_flank_options
     from geometry.synthesis.case_synthesis import synthesize
 
-    basic = load_basic(ROOT / "benchmarks" / "data" / "unseen_designs"
+    given = load_basic(ROOT / "benchmarks" / "data" / "unseen_designs"
                        / "spiral_bevel_13x37_s60.toml")
-    for flank in ("concave", "convex"):
-        basic = with_flank_options(basic, flank, {"relief_start": 0.95})
-    with pytest.raises(ReliefError, match=r"synthesis\.concave\.relief_start: .* "
-                       r"give relief_start <= ") as info:
-        synthesize(basic)
-    # Following the printed start synthesises within two more tries: the first bound is
-    # the blade's own (0.89 here), step 8 then moves the tip plane and names its own
-    # (0.85); each is below the start it refused.
-    case = None
-    for _ in range(3):
+    printed = []
+    for start, words in ((0.95, "lies within the blade's edge radius .* moves it by "),
+                         (0.87, "the pinion's tip plane, placed so that its root line "
+                                "touches the root cone, leaves")):
+        basic = given
+        for flank in ("concave", "convex"):
+            basic = with_flank_options(basic, flank, {"relief_start": start})
+        with pytest.raises(ReliefError, match=r"synthesis\.concave\.relief_start: .*"
+                           + words + r".* give relief_start <= ") as info:
+            synthesize(basic)
         assert info.value.field == "relief_start"
         most = float(info.value.args[0].split("relief_start <= ")[1].split(" ")[0])
-        assert 0.0 < most < basic.options.concave.relief_start
-        for flank in ("concave", "convex"):
-            basic = with_flank_options(basic, flank, {"relief_start": most})
-        try:
-            case, _ = synthesize(basic)
-            break
-        except ReliefError as exc:
-            info = SimpleNamespace(value=exc)
-    assert case is not None, "the printed relief_start never synthesised"
+        assert 0.0 < most < start
+        printed.append(most)
+    assert printed[0] == printed[1]  # step 7's bound is step 8's: the one that places
+    for flank in ("concave", "convex"):
+        basic = with_flank_options(basic, flank, {"relief_start": printed[0]})
+    case, _ = synthesize(basic)  # the printed relief_start synthesises, first try
     assert case.pinion.concave.blade.toprem_height > case.pinion.concave.blade.edge_radius
 
 

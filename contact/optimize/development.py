@@ -306,7 +306,10 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     where the written case's FE root stress gives S_F,FE < S_Fmin, or its LTCA peak flank
     pressure a local pitting safety at long life S_H,loc < S_Hmin, at the design torque,
     to that capacity (:func:`contact.optimize.development_root.root_capacity`;
-    ``root_stress``), the drive and coast flank analysed again at the new torques.
+    ``root_stress``), the drive and coast flank analysed again at the new torques; the
+    check's steps then run at them and, where they write another bearing whose capacity
+    holds, the torque is raised back as far as its capacity, its drive targets and its
+    mounting tolerance hold (:func:`_rewritten_after_cut`).
 
     3. **coast flank** (:func:`coast_development`): the chosen design's coast flank, as
        synthesised from its own prescriptions, analysed at :data:`CHECK_LTCA` at the same
@@ -455,29 +458,12 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
         again = steps(best) if root_text else best
         if again is not best:  # a better drive flank at the lowered torques: written,
             # and its root stress checked again at them (lowered further if below)
-            best, developed = again, with_flank_options(developed, flank, again.values)
-            case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-            _both_flanks_built(case, root_stress and coast.best is not None, built, say)
-            before = best
-            best, root_safety, text = checked_root_capacity(case, best, targets, setup, say)
-            root_text = text or root_text
-            if not text:  # the bearing developed at the cut torques may carry more
-                best, root_text, root_safety = _regained(case, best, targets, setup,
-                                                         ceiling, root_text, root_safety,
-                                                         say)
-            # the second cut may cost a target the steps had met (no step follows it):
-            # one more step where it did, the case written again where it is better, and
-            # its root capacity taken once more only where its FE model changed
-            regained = step_after_cut(before, best, steps, say) if text else best
-            if regained is not best:
-                best, developed = regained, with_flank_options(developed, flank,
-                                                               regained.values)
-                case, report = synthesize(developed, progress=synthesis_progress, memo=memo)
-                if _both_flanks_built(case, root_stress and coast.best is not None, built,
-                                      say):
-                    best, root_safety, text = checked_root_capacity(case, best, targets,
-                                                                    setup, say)
-                    root_text = text or root_text
+            best, developed, case, report, root_text, root_safety = _rewritten_after_cut(
+                again, with_flank_options(developed, flank, again.values), flank, steps,
+                targets, setup, teeth, ceiling, root_text, say,
+                functools.partial(synthesize, progress=synthesis_progress, memo=memo),
+                functools.partial(_both_flanks_built, wanted=root_stress
+                                  and coast.best is not None, built=built, say=say))
         _outclassed(setup, outclassed_below)
         if root_text and setup.get("pitting_tried") and "pitting" in setup["source"]:
             # a torque cut for the local pitting capacity says what was tried before it
@@ -571,14 +557,80 @@ def develop(basic: BasicDesign, *, targets: DevelopmentTargets | None = None,
     return result
 
 
+def _rewritten_after_cut(best: DevelopmentEvaluation, developed: BasicDesign, flank: str,
+                         steps: Callable[[DevelopmentEvaluation], DevelopmentEvaluation],
+                         targets: DevelopmentTargets, setup: dict[str, Any],
+                         teeth: KeptTeeth | None, ceiling: float, root_text: str,
+                         say: Callable[[str], None],
+                         synthesise: Callable[[BasicDesign], tuple[Case, Any]],
+                         built: Callable[[Case], bool]
+                         ) -> tuple[DevelopmentEvaluation, BasicDesign, Case, Any, str, float]:
+    """The drive design the check's steps made at the torques of a capacity cut
+    (``best``, its basic design ``developed``), written and its capacity checked again at
+    them (:func:`~contact.optimize.development_check.checked_root_capacity`): where it
+    holds, the design torque raised back towards ``ceiling`` [N·m] (:func:`_regained`);
+    where it is cut a second time and that costs a target the steps had met, one more
+    step (:func:`step_after_cut`), the case written again where it is better, its
+    capacity checked once more where its FE model changed and, where that holds, the
+    torque raised back as after the first cut.
+
+    ``synthesise`` (basic design → (case, report)) writes a design; ``built`` (case →
+    whether its FE model changed, :func:`_both_flanks_built`) builds both members' FE
+    models. Returns the drive design, its basic design, the case and its synthesis report,
+    the case's torque phrase and S_F,FE at the design torque (NaN where not computed).
+
+    Why the raise after the second cut too: the bearing the step after it writes was
+    developed at the second cut's torques, which were measured on the bearing before it —
+    the premise of the raise after the first cut (docs/synthesis.md, "The raised design
+    torque's mounting tolerance"); the raise keeps the same judgements (each capacity
+    criterion at the new torque, no drive target lost, the mounting tolerance kept; where
+    the step's case keeps the FE model, so that its capacity is not checked again, the
+    raise's own check at the cut torque stands for it:
+    :func:`~contact.optimize.development_root.regained_capacity` raises nothing where the
+    cut torque fails). It is not tried where no step follows the second cut (the bearing
+    is the one the cut measured, at its capacity to the cut's margin)."""
+    case, report = synthesise(developed)
+    built(case)
+    before = best
+    best, root_safety, text = checked_root_capacity(case, best, targets, setup, say)
+    root_text = text or root_text
+    if not text:  # the bearing developed at the cut torques may carry more
+        best, root_text, root_safety = _regained(case, best, targets, setup, teeth, ceiling,
+                                                 root_text, root_safety, say)
+        return best, developed, case, report, root_text, root_safety
+    # the second cut may cost a target the steps had met (no step follows it): one more
+    # step where it did, the case written again where it is better, and its root capacity
+    # taken once more only where its FE model changed
+    regained = step_after_cut(before, best, steps, say)
+    if regained is best:
+        return best, developed, case, report, root_text, root_safety
+    best, developed = regained, with_flank_options(developed, flank, regained.values)
+    case, report = synthesise(developed)
+    text = ""
+    if built(case):
+        best, root_safety, text = checked_root_capacity(case, best, targets, setup, say)
+        root_text = text or root_text
+    if not text:  # developed at the second cut's torques: it may carry more (where its
+        # FE model was kept, the raise checks the cut torque itself before it raises)
+        best, root_text, root_safety = _regained(case, best, targets, setup, teeth, ceiling,
+                                                 root_text, root_safety, say)
+    return best, developed, case, report, root_text, root_safety
+
+
 def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTargets,
-              setup: dict[str, Any], ceiling: float, root_text: str, root_safety: float,
+              setup: dict[str, Any], teeth: KeptTeeth | None, ceiling: float,
+              root_text: str, root_safety: float,
               say: Callable[[str], None]) -> tuple[DevelopmentEvaluation, str, float]:
     """The design torque raised back towards ``ceiling`` [N·m] on the bearing developed
     after a capacity cut (:func:`contact.optimize.development_root.regained_capacity`),
     kept only where the drive design re-scored at the new torques loses no target it met
-    at the cut ones; ``setup``'s torques and source updated where kept. Returns the
-    design, the case's torque phrase and S_F,FE at the design torque."""
+    at the cut ones, and only as far as the written case keeps the mounting tolerance it
+    had at the cut torque (:func:`contact.optimize.development_regain.tolerant_raise`: the
+    excursions ΔE/ΔP at the raised torques, the highest torque that keeps them bisected
+    where they do not; that torque's capacity and targets checked again); ``setup``'s
+    torques and source updated where kept. Returns the design, the case's torque phrase
+    and S_F,FE at the design torque."""
+    from contact.optimize.development_regain import tolerant_raise
     from contact.optimize.development_root import regained_capacity
 
     torque = float(setup["torques"][1])
@@ -587,19 +639,54 @@ def _regained(case: Case, best: DevelopmentEvaluation, targets: DevelopmentTarge
         return best, root_text, root_safety
     tree, torques, new, safety = up
     raised = rescored(best, tree, case, targets, setup)
-    lost = sorted(k for k, v in raised.shortfalls.items()
-                  if v > 0 and not (best.shortfalls or {}).get(k, 0.0) > 0)
+    lost = _lost_at(best, raised)
     if lost:
         say(f"  design torque not raised {torque:.4g} -> {new:.4g} N m on the bearing "
             f"developed at it: it would miss {', '.join(lost)}")
         return best, root_text, root_safety
+    held = tolerant_raise(case, targets, setup, teeth, best.values, new, say)
+    tolerance = ""
+    if not held.holds:
+        if held.why or not held.torque > 1.01 * torque:
+            why = held.why or (f"the mounting tolerance it has at {torque:.4g} N m holds "
+                               f"up to {held.torque:.4g} N m only (not at "
+                               f"{held.fails:.4g}; at {new:.4g} N m "
+                               f"{'; '.join(held.lost)})")
+            say(f"  design torque not raised {torque:.4g} -> {new:.4g} N m on the bearing "
+                f"developed at it: {why}")
+            return best, root_text, root_safety
+        # below the capacity found: every criterion holds there (S falls with T)
+        up = regained_capacity(case, setup, targets.light_load, held.torque, say)
+        if up is None:
+            return best, root_text, root_safety
+        tree, torques, capacity, safety = up
+        raised = rescored(best, tree, case, targets, setup)
+        lost = _lost_at(best, raised)
+        if lost:
+            say(f"  design torque not raised {torque:.4g} -> {capacity:.4g} N m (the "
+                f"mounting tolerance's) on the bearing developed at it: it would miss "
+                f"{', '.join(lost)}")
+            return best, root_text, root_safety
+        tolerance = (f" — its capacity {new:.4g} N m, the mounting tolerance it has at "
+                     f"{torque:.4g} N m held up to {held.torque:.4g} N m (not at "
+                     f"{held.fails:.4g}; at {new:.4g} N m {'; '.join(held.lost)})")
+        new = capacity
     source = (f"{setup['source']}; on the bearing developed at {torque:.4g} N m, "
               f"raised back to {new:.4g} N m (of {ceiling:.4g}), where every capacity "
-              "criterion holds")
+              f"criterion holds{tolerance}")
     say(f"  design torque {torque:.4g} -> {new:.4g} N m: the bearing developed at the "
-        f"lowered torque carries it (S_F,FE and S_H,loc at or above their minima)")
+        f"lowered torque carries it (S_F,FE and S_H,loc at or above their minima"
+        + (f"; the mounting tolerance holds to it{tolerance}" if tolerance else
+           ", the mounting tolerance kept") + ")")
     setup.update(torques=torques, source=source)
     return raised, source, safety
+
+
+def _lost_at(best: DevelopmentEvaluation, raised: DevelopmentEvaluation) -> list[str]:
+    """The drive targets ``raised`` (re-scored at a raised torque) misses that ``best``
+    met, sorted."""
+    return sorted(k for k, v in raised.shortfalls.items()
+                  if v > 0 and not (best.shortfalls or {}).get(k, 0.0) > 0)
 
 
 def _outclassed(setup: dict[str, Any], below: float) -> None:

@@ -566,7 +566,8 @@ def _synthesize(basic: BasicDesign, *, process: str, conjugate: bool = False,
     ref_gear_rotation = None
     for pf in (drive, coast):
         flanks[pf] = _synthesize_flank(pair, pf, opt.flank(pf), ref_gear_rotation,
-                                       conjugate=conjugate, say=say, memo=kept)
+                                       conjugate=conjugate, say=say, memo=kept,
+                                       tip_plane=tip_planes)
         if ref_gear_rotation is None:
             ref_gear_rotation = flanks[pf].mean.gear_rotation
     flanks[coast] = _coast_in_drive_frame(flanks[coast], flanks[drive])
@@ -597,14 +598,15 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
                       ref_gear_rotation: float | None, *,
                       conjugate: bool = False,
                       say: Callable[[str], None] = lambda _step: None,
-                      memo: dict | None = None) -> FlankSynthesis:
+                      memo: dict | None = None, tip_plane: bool = False) -> FlankSynthesis:
     """Steps 3–7 of the module docstring for pinion flank ``pf``: mean point, local
     synthesis, generating tools, the higher-order roll and the relief. The second flank is
     placed with the ISO mean normal backlash against the first's gear rotation
     ``ref_gear_rotation`` [rad] (None for the first). ``conjugate``: no mismatch (a21 = 0,
     zero curvature gap, no higher-order roll). ``memo`` (the design's entries of
     :func:`synthesize`'s memo): steps 3–6 reused where the prescriptions they read
-    recur."""
+    recur. ``tip_plane``: step 8 follows (its tip plane's move is in the bound a
+    ``relief_start`` error names, :func:`_relief_start_placed`)."""
     key = (pf, fo.path_angle, fo.te_level, fo.ellipse_length, fo.approach,
            ref_gear_rotation, conjugate) + ((fo.mean_point_shift,) if fo.mean_point_shift
                                             else ())
@@ -641,10 +643,54 @@ def _synthesize_flank(pair: _PairData, pf: str, fo: FlankOptions,
                                root_relief=fo.root_relief, start=fo.relief_start,
                                tip_start=fo.tip_relief_start)
     except ReliefError as exc:  # named as the basic file's per-flank input
+        if tip_plane and exc.field == "relief_start":  # the bound step 8 keeps too
+            exc = _relief_start_placed(blade, tools.settings, pair, fo, exc)
         raise ReliefError(f"synthesis.{pf}.{exc} ([synthesis] {exc.field} sets both "
                           "pinion flanks)", exc.field, exc.span, least=exc.least,
                           flank=pf) from None
     return replace(fs, tools=tools._replace(blade=blade))
+
+
+def _relief_start_placed(blade: Blade, settings: MachineSettings, pair: _PairData,
+                         fo: FlankOptions, exc: ReliefError) -> ReliefError:
+    """Step 7's error where the root relief's corner lies within the blade's edge radius
+    (:func:`geometry.machine.relief.relieved_blade`, ``field`` ``relief_start``), its
+    bound on ``relief_start`` made the one that synthesises with step 8 too: the corner at
+    h_M + s (h_root − h_M) above the tip stays above the edge radius r_e for
+    s < (r_e − h_M) / (h_root − h_M), and after step 8 moves the tip plane by Δ
+    (:func:`_toprem_below_edge`: Δ does not depend on the toprem, found for the blade
+    without one) for s < (r_e − Δ − h_M) / (h_root − h_M); the smaller is printed. ``exc``
+    itself where the move cannot be found (its bound, the blade's own, stands).
+
+    Why: on the spiral bevel 13x37 at Σ 60° of benchmarks/data/unseen_designs with
+    relief_start 0.95, step 7 printed relief_start <= 0.89 (the blade's own bound), and
+    0.89 then failed at step 8 (Δ −0.1326 mm), which printed 0.85: two rounds for a user
+    who follows the message (issue 71)."""
+    plain = Blade(**{**blade.__dict__, "toprem_angle": 0.0, "toprem_height": 0.0,
+                     "flankrem_angle": 0.0, "flankrem_height": 0.0})
+    try:
+        h = relief_heights(plain, settings, pair.pinion_blank, pair.pinion_hand,
+                           pair.gear_blank)
+        own = (plain.edge_radius - h.mean) / (h.root - h.mean)
+        tipped = relieved_blade(blade, settings, pair.pinion_blank, pair.pinion_hand,
+                                pair.gear_blank, tip_relief=fo.tip_relief, root_relief=0.0,
+                                start=fo.relief_start, tip_start=fo.tip_relief_start)
+        moved = tip_plane_on_root_cone(tipped, settings, pair.pinion_blank,
+                                       pair.pinion_hand).moved
+        h = relief_heights(tipped, settings, pair.pinion_blank, pair.pinion_hand,
+                           pair.gear_blank)
+        placed = (plain.edge_radius - moved - h.mean) / (h.root - h.mean)
+    except InputError as err:
+        log.info("synthesis: step 8's bound on relief_start not found (%s)", err)
+        return exc
+    most = min(own, placed)
+    if not (math.isfinite(most) and most > 0.0):
+        return exc
+    head = str(exc).split("; give relief_start")[0]
+    return ReliefError(f"{head}, and the pinion's tip plane, placed so that its root line "
+                       f"touches the root cone, moves it by {moved:+.4g} mm; give "
+                       f"relief_start <= {math.floor(100 * most) / 100:.2f} (or root_relief "
+                       "= 0)", exc.field, exc.span, least=exc.least, flank=exc.flank)
 
 
 def _unrelieved_flank(pair: _PairData, pf: str, fo: FlankOptions,
